@@ -1,0 +1,146 @@
+// A parsed case: the scene, the rays, the pipeline with its stage programs, and
+// what to keep. Produced by case/parse_case (from YAML); consumed by the plan,
+// the GLSL generator, the Vulkan backend and the model. No expected values.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "case/source_loc.h"
+#include "program/program.h"
+
+namespace rayspec {
+
+using Vec3 = std::array<float, 3>;
+// Row-major 3x4 affine transform, as VkTransformMatrixKHR.
+using Transform = std::array<float, 12>;
+constexpr Transform kIdentity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+
+// Vulkan geometry flags (VkGeometryFlagBitsKHR values).
+enum GeometryFlag : uint32_t {
+  kGeometryOpaque = 0x1,               // "opaque"
+  kGeometryNoDuplicateAnyHit = 0x2,    // "no_duplicate_any_hit"
+};
+
+// Vulkan instance flags (VkGeometryInstanceFlagBitsKHR values).
+enum InstanceFlag : uint32_t {
+  kInstanceFacingCullDisable = 0x1,    // "triangle_facing_cull_disable"
+  kInstanceFlipFacing = 0x2,           // "triangle_flip_facing"
+  kInstanceForceOpaque = 0x4,          // "force_opaque"
+  kInstanceForceNoOpaque = 0x8,        // "force_no_opaque"
+};
+
+// Vulkan ray flags (gl_RayFlags*EXT values), written in cases by the names
+// opaque, no_opaque, terminate_on_first_hit, skip_closest_hit, cull_back_facing,
+// cull_front_facing, cull_opaque, cull_no_opaque, skip_triangles, skip_aabbs.
+enum RayFlag : uint32_t {
+  kRayOpaque = 0x1, kRayNoOpaque = 0x2, kRayTerminateOnFirstHit = 0x4,
+  kRaySkipClosestHit = 0x8, kRayCullBackFacing = 0x10, kRayCullFrontFacing = 0x20,
+  kRayCullOpaque = 0x40, kRayCullNoOpaque = 0x80, kRaySkipTriangles = 0x100,
+  kRaySkipAabbs = 0x200,
+};
+
+struct Geometry {
+  enum class Kind { Triangles, Aabbs };
+  Kind kind = Kind::Triangles;
+  uint32_t flags = 0;                  // GeometryFlag bits
+  // Triangles: vertices (float32, NaN allowed), indices (uint32) or empty for
+  // non-indexed (each 3 consecutive vertices one triangle).
+  std::vector<Vec3> vertices;
+  std::vector<uint32_t> indices;
+  std::optional<Transform> transform;  // optional geometry transform (triangles)
+  // Aabbs: min x,y,z, max x,y,z per primitive.
+  std::vector<std::array<float, 6>> aabbs;
+  SourceLoc loc;
+  uint32_t primitiveCount() const {
+    if (kind == Kind::Aabbs) return static_cast<uint32_t>(aabbs.size());
+    return static_cast<uint32_t>((indices.empty() ? vertices.size() : indices.size()) / 3);
+  }
+};
+
+struct Blas {
+  std::string name;
+  std::vector<Geometry> geometries;  // all Triangles or all Aabbs
+  SourceLoc loc;
+};
+
+struct Instance {
+  std::optional<uint32_t> blas;  // index into Scene::blases; empty = null reference (inactive)
+  Transform transform = kIdentity;
+  uint32_t mask = 0xFF;          // 8 bits
+  uint32_t custom_index = 0;     // 24 bits
+  uint32_t sbt_offset = 0;       // 24 bits
+  uint32_t flags = 0;            // InstanceFlag bits
+  SourceLoc loc;
+};
+
+struct Scene {
+  std::vector<Blas> blases;
+  std::vector<Instance> instances;
+};
+
+// One ray of the launch, exactly as uploaded to the device (float32).
+struct Ray {
+  Vec3 origin{}, direction{};
+  float tmin = 0.0f, tmax = 1e30f;
+  uint32_t flags = 0, cull_mask = 0xFF, sbt_offset = 0, sbt_stride = 1, miss = 0;
+};
+
+struct Rays {
+  uint32_t width = 1, height = 1;  // launch size; width*height == rays.size()
+  std::vector<Ray> rays;           // row-major, index = y * width + x
+  Ray defaults;                    // tmin/tmax/flags/... used for camera rays and nested traces
+};
+
+// One record of an SBT region: a group index, or all-zero, plus record data.
+struct SbtRecord {
+  std::optional<uint32_t> group;     // empty = all-zero record (R-SBT-ZERO)
+  std::vector<uint32_t> data;        // up to 8 words of shader record data
+};
+
+struct HitGroup {
+  std::optional<Program> closest_hit, any_hit, intersection;
+  SourceLoc loc;
+};
+
+struct Pipeline {
+  uint32_t max_recursion = 1;
+  uint32_t flags = 0;                       // pipeline flags: skip_triangles / skip_aabbs (VkPipelineCreateFlags values 0x1000 / 0x2000)
+  Program raygen;                           // default: [trace: {}]
+  std::vector<uint32_t> raygen_data;        // raygen shader record data
+  std::vector<Program> miss;
+  std::vector<HitGroup> hit_groups;
+  std::vector<Program> callables;
+  // SBT regions. Default when not written: one record per shader / group, in order.
+  std::vector<SbtRecord> sbt_miss, sbt_hit, sbt_callable;
+};
+
+struct ImageOutput {
+  std::string name;
+  std::string field;  // a record field: Uint fields -> r32ui, Float fields -> rgba32f
+  SourceLoc loc;
+};
+
+struct Outputs {
+  std::vector<std::string> counters;  // every counter a `count` statement names
+  std::vector<std::string> per_ray;   // every field a `record` statement writes
+  std::vector<ImageOutput> images;
+};
+
+struct Case {
+  std::string name;                // e.g. "anyhit/ignore-odd-primitives"
+  std::string file;                // path of the YAML file
+  std::string family;              // first path component of name ("anyhit")
+  std::vector<std::string> rules;  // rule labels of spec-rules.md
+  std::string description;
+  Scene scene;
+  Rays rays;
+  Pipeline pipeline;
+  Outputs outputs;
+};
+
+}  // namespace rayspec

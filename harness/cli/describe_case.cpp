@@ -1,0 +1,76 @@
+#include "cli/describe_case.h"
+
+#include <sstream>
+
+namespace rayspec {
+namespace {
+
+std::string hex(uint32_t v) {
+  std::ostringstream s;
+  s << "0x" << std::hex << v;
+  return s.str();
+}
+
+size_t statementCount(const Program& p) {
+  size_t n = 0;
+  for (const Stmt& s : p) n += 1 + statementCount(s.then_) + statementCount(s.else_);
+  return n;
+}
+
+void describeRecords(std::ostringstream& s, const char* region, const std::vector<SbtRecord>& records) {
+  s << "  sbt " << region << ":";
+  for (const SbtRecord& r : records) {
+    s << ' ' << (r.group ? "group " + std::to_string(*r.group) : std::string("zero"));
+    if (!r.data.empty()) s << "+" << r.data.size() << "w";
+  }
+  s << '\n';
+}
+
+}  // namespace
+
+std::string describeCase(const Case& c) {
+  std::ostringstream s;
+  s << "Case " << c.name << "  (" << c.file << ")\n";
+  s << "  family: " << c.family << "\n  rules:";
+  for (const auto& r : c.rules) s << ' ' << r;
+  s << '\n';
+  if (!c.description.empty()) s << "  " << c.description << '\n';
+  s << "Scene:\n";
+  for (const Blas& b : c.scene.blases) {
+    s << "  blas " << b.name << ":\n";
+    for (size_t g = 0; g < b.geometries.size(); ++g) {
+      const Geometry& geo = b.geometries[g];
+      s << "    geometry " << g << ": " << geo.primitiveCount()
+        << (geo.kind == Geometry::Kind::Triangles ? " triangles" : " aabbs") << ", flags " << hex(geo.flags)
+        << (geo.transform ? ", geometry transform" : "") << '\n';
+    }
+  }
+  for (size_t i = 0; i < c.scene.instances.size(); ++i) {
+    const Instance& in = c.scene.instances[i];
+    s << "  instance " << i << ": blas " << (in.blas ? c.scene.blases[*in.blas].name : std::string("null"))
+      << ", mask " << hex(in.mask) << ", custom " << in.custom_index << ", sbt offset " << in.sbt_offset
+      << ", flags " << hex(in.flags) << '\n';
+  }
+  s << "Rays: " << c.rays.width << " x " << c.rays.height << " (" << c.rays.rays.size() << " rays), defaults tmin "
+    << c.rays.defaults.tmin << " tmax " << c.rays.defaults.tmax << " flags " << hex(c.rays.defaults.flags) << '\n';
+  const Pipeline& p = c.pipeline;
+  s << "Pipeline: max recursion " << p.max_recursion << ", flags " << hex(p.flags) << '\n';
+  s << "  raygen: " << statementCount(p.raygen) << " statements\n";
+  for (size_t i = 0; i < p.miss.size(); ++i) s << "  miss " << i << ": " << statementCount(p.miss[i]) << " statements\n";
+  for (size_t i = 0; i < p.hit_groups.size(); ++i) {
+    const HitGroup& g = p.hit_groups[i];
+    s << "  hit group " << i << ":";
+    if (g.closest_hit) s << " closest-hit(" << statementCount(*g.closest_hit) << ")";
+    if (g.any_hit) s << " any-hit(" << statementCount(*g.any_hit) << ")";
+    if (g.intersection) s << " intersection(" << statementCount(*g.intersection) << ")";
+    s << '\n';
+  }
+  for (size_t i = 0; i < p.callables.size(); ++i)
+    s << "  callable " << i << ": " << statementCount(p.callables[i]) << " statements\n";
+  describeRecords(s, "miss", p.sbt_miss);
+  describeRecords(s, "hit", p.sbt_hit);
+  describeRecords(s, "callable", p.sbt_callable);
+  return s.str();
+}
+
+}  // namespace rayspec

@@ -1,0 +1,43 @@
+// rayspec: runs Vulkan ray tracing conformance cases on a device and on the
+// Embree reference model, and compares what happened.
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"rayspec: Vulkan ray tracing pipeline conformance, device against a CPU reference model"};
+  app.require_subcommand(1);
+
+  auto* devices = app.add_subcommand("devices", "List Vulkan devices and their ray tracing limits");
+  rayspec::DevicesOptions devices_opt;
+  devices->add_flag("--no-validation", devices_opt.no_validation, "Do not load the Khronos validation layer");
+
+  auto* run = app.add_subcommand("run", "Run cases on a device and on the model");
+  rayspec::RunOptions run_opt;
+  run->add_option("--device", run_opt.device, "Vulkan device name (substring); default: first with ray tracing");
+  run->add_option("--filter", run_opt.filter, "Run only cases whose name matches this glob (e.g. 'anyhit/*')");
+  run->add_option("--out", run_opt.out, "Folder for results bundles and reports")->capture_default_str();
+  run->add_option("--cases", run_opt.cases_dir, "Folder of case files")->capture_default_str();
+  run->add_option("--case", run_opt.case_files, "Run these case files (instead of --cases)");
+  run->add_option("--model", run_opt.model_tier, "Model precision tier: fast, robust or exact")
+      ->check(CLI::IsMember({"fast", "robust", "exact"}))->capture_default_str();
+  run->add_flag("--no-model", run_opt.no_model, "Run the device only");
+  run->add_flag("--no-device", run_opt.no_device, "Run the model only");
+  run->add_flag("--no-validation", run_opt.no_validation, "Do not load the Khronos validation layer");
+  run->add_flag("--strict-validation", run_opt.strict_validation,
+                "Fail when the validation layer is not installed (ctest sets this)");
+  run->add_option("--threads", run_opt.threads, "Model threads (0: all cores)")->capture_default_str();
+
+  auto* show = app.add_subcommand("show", "Print a parsed case, its plan and its generated GLSL");
+  rayspec::ShowOptions show_opt;
+  show->add_option("case", show_opt.case_file, "Case file (or case name under cases/)");
+  show->add_flag("--no-glsl", show_opt.no_glsl, "Leave out the generated GLSL");
+  show->add_flag("--vocabulary", show_opt.vocabulary, "List the built-ins and operators of the stage vocabulary");
+  show->add_option("--cases", show_opt.cases_dir, "Folder of case files")->capture_default_str();
+
+  CLI11_PARSE(app, argc, argv);
+  if (*devices) return rayspec::runDevices(devices_opt);
+  if (*run) return rayspec::runCases(run_opt);
+  if (*show) return rayspec::runShow(show_opt);
+  return 2;
+}

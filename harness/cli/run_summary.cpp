@@ -1,0 +1,64 @@
+#include "cli/run_summary.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+namespace rayspec {
+
+void RunSummary::add(const CaseOutcome& o) {
+  outcomes_.push_back(o);
+  std::printf("[%zu/%zu] %-44s %-14s device %7.3f s  model %7.3f s\n", outcomes_.size(), total_, o.name.c_str(),
+              statusName(o.status), o.device_seconds, o.model_seconds);
+  if (o.status != Status::Pass) std::printf("        %s\n", o.headline.c_str());
+  std::fflush(stdout);
+}
+
+void RunSummary::addTeardownError(const std::string& m) { teardown_errors_.push_back(m); }
+
+bool RunSummary::failed() const {
+  if (!teardown_errors_.empty()) return true;
+  for (const CaseOutcome& o : outcomes_)
+    if (o.status == Status::Fail || o.status == Status::Crash || o.status == Status::Timeout) return true;
+  return false;
+}
+
+bool RunSummary::allNotSupported() const {
+  for (const CaseOutcome& o : outcomes_)
+    if (o.status != Status::NotSupported) return false;
+  return !outcomes_.empty();
+}
+
+void RunSummary::print() const {
+  std::map<Status, int> counts;
+  for (const CaseOutcome& o : outcomes_) ++counts[o.status];
+  std::printf("\n==== rayspec summary: %zu cases ====\n", outcomes_.size());
+  for (Status s : {Status::Pass, Status::Fail, Status::QualityWarning, Status::NotSupported, Status::Crash,
+                   Status::Timeout})
+    std::printf("  %-15s %d\n", statusName(s), counts[s]);
+  bool header = false;
+  for (const CaseOutcome& o : outcomes_) {
+    if (o.status == Status::Pass) continue;
+    if (!header) std::printf("Not passing:\n");
+    header = true;
+    std::printf("  %-44s %s\n", o.name.c_str(), o.headline.c_str());
+  }
+  for (const std::string& m : teardown_errors_) std::printf("  validation error at device teardown: %s\n", m.c_str());
+}
+
+std::string RunSummary::write(const std::string& dir) const {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return "cannot create " + dir + ": " + ec.message();
+  std::ofstream csv(dir + "/results.csv");
+  for (const CaseOutcome& o : outcomes_) csv << o.name << ',' << statusName(o.status) << ',' << o.seconds << '\n';
+  std::ofstream txt(dir + "/summary.txt");
+  for (const CaseOutcome& o : outcomes_) {
+    txt << o.name << ": " << o.headline << '\n';
+    for (const Finding& f : o.verdict.findings) txt << "    [" << statusName(f.status) << "] " << f.rule << ": " << f.message << '\n';
+  }
+  return {};
+}
+
+}  // namespace rayspec

@@ -1,0 +1,28 @@
+// The parts of compareResults, one file each (internal to compare/).
+#pragma once
+
+#include <set>
+
+#include "compare/compare_results.h"
+
+namespace rayspec {
+
+void compareCounters(const Case& c, const Results& device, const Results& model, size_t ambiguous_rays,
+                     Verdict& v);
+void compareRecords(const Case& c, const Plan& plan, const Results& device, const Results& model, Verdict& v);
+void compareImages(const Results& device, const Results& model, const std::set<uint32_t>& ambiguous_rays,
+                   Verdict& v);
+
+// Collects the rays breaking one rule into one finding.
+struct FindingBuilder {
+  Finding finding;
+  void addRay(uint32_t ray) {
+    ++finding.ray_count;
+    if (finding.rays.size() < kFirstRays) finding.rays.push_back(ray);
+  }
+  void flush(Verdict& v) {
+    if (finding.ray_count) v.add(finding);
+  }
+};
+
+}  // namespace rayspec

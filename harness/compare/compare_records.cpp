@@ -1,0 +1,116 @@
+#include <cstring>
+#include <map>
+
+#include "compare/compare_parts.h"
+#include "compare/tolerances.h"
+#include "results/record_layout.h"
+
+namespace rayspec {
+namespace {
+
+// The rule a mismatch of a field points at first.
+std::string ruleForField(const std::string& field) {
+  static const std::map<std::string, std::string> rules = {
+      {"hit", "R-MISS-XOR-CHIT"}, {"miss_runs", "R-MISS-XOR-CHIT"}, {"closest_hit_runs", "R-MISS-XOR-CHIT"},
+      {"callable_runs", "R-CALLABLE"}, {"raygen_runs", "R-BUILTIN"}, {"hit_kind", "R-HITKIND-TRI"},
+      {"hit_t", "R-PREC"}, {"color", "R-PAYLOAD"}, {"value", "R-PAYLOAD"}, {"ray_tmax", "R-TMAX-VIEW"},
+      {"ray_tmin", "R-TMAX-VIEW"}, {"depth", "R-RECURSION"}};
+  const auto it = rules.find(field);
+  return it == rules.end() ? "R-BUILTIN" : it->second;
+}
+
+float asFloat(uint32_t w) {
+  float f;
+  std::memcpy(&f, &w, 4);
+  return f;
+}
+
+bool written(const uint32_t* rec, int field_index) { return (rec[kRecordWrittenMaskWord] >> field_index) & 1u; }
+
+uint32_t fieldWord(const uint32_t* rec, const char* name) { return rec[findRecordField(name)->offset]; }
+
+// The device's answer for an ambiguous ray, checked against the legal set.
+void checkAmbiguous(const RayAmbiguity& a, const uint32_t* rec, FindingBuilder& wrong, FindingBuilder& leak) {
+  const bool device_hit = fieldWord(rec, "closest_hit_runs") > 0 ||
+                          (written(rec, recordFieldIndex("hit")) && fieldWord(rec, "hit") == 1);
+  const int prim = recordFieldIndex("primitive_id"), inst = recordFieldIndex("instance_id"),
+            geom = recordFieldIndex("geometry_index");
+  bool legal = false, miss_legal = false;
+  for (const Candidate& c : a.candidates) {
+    if (!c.hit) {
+      miss_legal = true;
+      continue;
+    }
+    if (!device_hit) continue;
+    const bool same = (!written(rec, prim) || fieldWord(rec, "primitive_id") == c.primitive) &&
+                      (!written(rec, inst) || fieldWord(rec, "instance_id") == c.instance) &&
+                      (!written(rec, geom) || fieldWord(rec, "geometry_index") == c.geometry);
+    legal = legal || same;
+  }
+  if (!device_hit) {
+    if (!miss_legal) leak.addRay(a.ray);
+    return;
+  }
+  if (!legal) wrong.addRay(a.ray);
+}
+
+}  // namespace
+
+void compareRecords(const Case& c, const Plan& plan, const Results& device, const Results& model, Verdict& v) {
+  (void)c;
+  const uint32_t words = recordWords();
+  const size_t rays = device.records.size() / words;
+  std::map<uint32_t, const RayAmbiguity*> ambiguous;
+  for (const RayAmbiguity& a : model.ambiguous) ambiguous[a.ray] = &a;
+
+  std::vector<const RecordField*> fields;
+  for (const std::string& name : plan.record_fields)
+    if (const RecordField* f = findRecordField(name)) fields.push_back(f);
+  for (const RecordField& f : recordFields())
+    if (f.automatic && f.name != std::string("any_hit_runs") && f.name != std::string("intersection_runs"))
+      fields.push_back(&f);
+
+  std::map<std::string, FindingBuilder> mismatches;
+  FindingBuilder wrong, leak;
+  wrong.finding = {Status::Fail, "R-WATERTIGHT", "ambiguous ray hit a primitive that is not one of the legal candidates"};
+  leak.finding = {Status::QualityWarning, "R-WATERTIGHT", "ray on a shared edge or vertex leaked (missed every candidate)"};
+
+  for (size_t i = 0; i < rays; ++i) {
+    const uint32_t* d = &device.records[i * words];
+    const uint32_t* m = &model.records[i * words];
+    const uint32_t ray = static_cast<uint32_t>(i);
+    if (const auto it = ambiguous.find(ray); it != ambiguous.end()) {
+      checkAmbiguous(*it->second, d, wrong, leak);
+      continue;
+    }
+    for (const RecordField* f : fields) {
+      const int index = recordFieldIndex(f->name);
+      bool same = true;
+      if (!f->automatic && written(d, index) != written(m, index)) {
+        same = false;
+      } else if (f->automatic || written(d, index)) {
+        const Tolerance tol = toleranceFor(f->name);
+        for (uint32_t k = 0; k < f->words && same; ++k) {
+          const uint32_t dw = d[f->offset + k], mw = m[f->offset + k];
+          same = f->type == FieldType::Uint ? dw == mw : tol.matches(asFloat(dw), asFloat(mw));
+        }
+      }
+      if (same) continue;
+      FindingBuilder& b = mismatches[f->name];
+      if (b.finding.message.empty())
+        b.finding = {Status::Fail, ruleForField(f->name),
+                     std::string("per-ray field '") + f->name + "' differs from the model on clear rays"};
+      b.addRay(ray);
+    }
+  }
+  for (auto& [name, b] : mismatches) b.flush(v);
+  wrong.flush(v);
+  leak.flush(v);
+  if (!ambiguous.empty()) {
+    Finding note{Status::Pass, "R-PREC",
+                 std::to_string(ambiguous.size()) + " numerically ambiguous rays checked against their legal answers"};
+    v.add(note);
+  }
+}
+
+}  // namespace rayspec

@@ -1,0 +1,22 @@
+// Turns the device's results and the model's into a verdict under the rules
+// of the specification: counters by their mode, per-ray records exactly on
+// clear rays and by the rule on ambiguous ones, images texel by texel.
+#pragma once
+
+#include "case/case.h"
+#include "compare/verdict.h"
+#include "plan/plan.h"
+#include "results/results.h"
+
+namespace rayspec {
+
+// At most this many ray indices are kept per finding.
+constexpr size_t kFirstRays = 8;
+
+Verdict compareResults(const Case& c, const Plan& plan, const Results& device, const Results& model);
+
+// The status a backend reported ("ok", "NotSupported: ...", "Crash: ...")
+// as a verdict of its own; Pass for "ok".
+Verdict backendVerdict(const Results& r);
+
+}  // namespace rayspec

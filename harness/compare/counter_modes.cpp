@@ -1,0 +1,32 @@
+#include "compare/counter_modes.h"
+
+#include "plan/walk_program.h"
+
+namespace rayspec {
+
+const char* counterModeName(CounterMode m) {
+  switch (m) {
+    case CounterMode::Exact: return "exact";
+    case CounterMode::AtLeast: return "at_least";
+    case CounterMode::AtMost: return "at_most";
+    case CounterMode::Informational: return "informational";
+  }
+  return "informational";
+}
+
+std::map<std::string, CounterMode> counterModes(const Case& c) {
+  std::map<std::string, CounterMode> modes;
+  for (const std::string& name : c.outputs.counters) modes[name] = CounterMode::Exact;
+  auto traversalDependent = [&](const Program& p) {
+    walkStatements(p, [&](const Stmt& s) {
+      if (s.kind == Stmt::Kind::Count) modes[s.counter] = CounterMode::Informational;
+    });
+  };
+  for (const HitGroup& g : c.pipeline.hit_groups) {
+    if (g.any_hit) traversalDependent(*g.any_hit);
+    if (g.intersection) traversalDependent(*g.intersection);
+  }
+  return modes;
+}
+
+}  // namespace rayspec

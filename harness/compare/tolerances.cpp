@@ -1,0 +1,21 @@
+#include "compare/tolerances.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rayspec {
+
+bool Tolerance::matches(float device, float model) const {
+  if (std::isnan(device) || std::isnan(model)) return std::isnan(device) && std::isnan(model);
+  if (device == model) return true;  // also equal infinities
+  const double diff = std::fabs(static_cast<double>(device) - model);
+  return diff <= abs + rel * std::max(std::fabs(static_cast<double>(model)), 1.0);
+}
+
+Tolerance toleranceFor(const std::string& field) {
+  if (field == "barycentrics") return {1e-4, 0.0};
+  if (field == "color") return {1e-4, 1e-4};
+  return {1e-5, 1e-5};
+}
+
+}  // namespace rayspec

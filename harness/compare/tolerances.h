@@ -1,0 +1,22 @@
+// Documented tolerances for float fields (R-PREC: the specification promises
+// no numeric bound, so the suite states its own). A device value d matches the
+// model value m when |d - m| <= abs + rel * max(|m|, 1).
+//   hit_t, ray_tmin, ray_tmax       abs 1e-5, rel 1e-5
+//   barycentrics                    abs 1e-4 (float32 edge functions on a
+//                                   unit-size triangle)
+//   positions and directions        abs 1e-5, rel 1e-5
+//   color                           abs 1e-4, rel 1e-4 (lights divide by d^2)
+#pragma once
+
+#include <string>
+
+namespace rayspec {
+
+struct Tolerance {
+  double abs = 0.0, rel = 0.0;
+  bool matches(float device, float model) const;
+};
+
+Tolerance toleranceFor(const std::string& field);
+
+}  // namespace rayspec

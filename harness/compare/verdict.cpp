@@ -1,0 +1,70 @@
+#include "compare/verdict.h"
+
+#include <sstream>
+
+namespace rayspec {
+namespace {
+
+int severity(Status s) {
+  switch (s) {
+    case Status::Pass: return 0;
+    case Status::NotSupported: return 1;
+    case Status::QualityWarning: return 2;
+    case Status::Fail: return 3;
+    case Status::Timeout: return 4;
+    case Status::Crash: return 5;
+  }
+  return 5;
+}
+
+}  // namespace
+
+const char* statusName(Status s) {
+  switch (s) {
+    case Status::Pass: return "Pass";
+    case Status::Fail: return "Fail";
+    case Status::QualityWarning: return "QualityWarning";
+    case Status::NotSupported: return "NotSupported";
+    case Status::Crash: return "Crash";
+    case Status::Timeout: return "Timeout";
+  }
+  return "Crash";
+}
+
+bool parseStatus(const std::string& name, Status* out) {
+  for (Status s : {Status::Pass, Status::Fail, Status::QualityWarning, Status::NotSupported, Status::Crash,
+                   Status::Timeout})
+    if (name == statusName(s)) {
+      *out = s;
+      return true;
+    }
+  return false;
+}
+
+Status worse(Status a, Status b) { return severity(a) >= severity(b) ? a : b; }
+
+void Verdict::add(Finding f) {
+  status = worse(status, f.status);
+  findings.push_back(std::move(f));
+}
+
+std::string Verdict::headline() const {
+  const Finding* worst = nullptr;
+  for (const Finding& f : findings)
+    if (f.status == status && f.status != Status::Pass) {
+      worst = &f;
+      break;
+    }
+  std::ostringstream s;
+  s << statusName(status);
+  if (!worst) return s.str();
+  s << ": " << (worst->rule.empty() ? "" : worst->rule + ": ") << worst->message;
+  if (!worst->rays.empty()) {
+    s << " (" << worst->ray_count << " rays; first:";
+    for (uint32_t r : worst->rays) s << ' ' << r;
+    s << ')';
+  }
+  return s.str();
+}
+
+}  // namespace rayspec

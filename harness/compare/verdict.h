@@ -1,0 +1,34 @@
+// The outcome of comparing a device's results with the model's: a status with
+// a stable name, and findings that name the rule broken and the first rays.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rayspec {
+
+// Stable names: baselines and results.csv refer to them.
+enum class Status { Pass, Fail, QualityWarning, NotSupported, Crash, Timeout };
+const char* statusName(Status s);
+bool parseStatus(const std::string& name, Status* out);
+// The worse of two statuses (Crash > Timeout > Fail > QualityWarning > NotSupported > Pass).
+Status worse(Status a, Status b);
+
+struct Finding {
+  Status status = Status::Fail;
+  std::string rule;                // spec-rules.md label, e.g. "R-MISS-XOR-CHIT"
+  std::string message;             // what differed
+  std::vector<uint32_t> rays;      // first rays that broke it (launch index)
+  uint32_t ray_count = 0;          // how many rays broke it in all
+};
+
+struct Verdict {
+  Status status = Status::Pass;
+  std::vector<Finding> findings;   // Pass findings are informational notes
+  void add(Finding f);
+  // One line: "Fail: R-IGNORE: ... (rays 3, 17, ...)" of the worst finding.
+  std::string headline() const;
+};
+
+}  // namespace rayspec

@@ -1,0 +1,35 @@
+// GLSL for every stage of a case, generated from its stage programs plus the
+// shared pieces of shaders/. Binding numbers, the ray and record layouts and
+// counter indices come from C++ tables (glsl/bindings.h,
+// results/record_layout.h), never retyped in GLSL.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "case/case.h"
+#include "plan/plan.h"
+
+namespace rayspec {
+
+struct GeneratedShader {
+  Stage stage;
+  std::string name;  // "raygen", "miss0", "hit1.any_hit", "callable2"
+  std::string glsl;
+};
+
+struct GeneratedGroup {
+  std::optional<GeneratedShader> closest_hit, any_hit, intersection;
+};
+
+struct GeneratedPipeline {
+  GeneratedShader raygen;
+  std::vector<GeneratedShader> miss;
+  std::vector<GeneratedGroup> hit_groups;  // parallel to Pipeline::hit_groups
+  std::vector<GeneratedShader> callables;
+};
+
+GeneratedPipeline generateGlsl(const Case& c, const Plan& plan);
+
+}  // namespace rayspec

@@ -1,0 +1,164 @@
+#include "plan/plan.h"
+
+#include <algorithm>
+
+#include "plan/walk_program.h"
+
+namespace rayspec {
+namespace {
+
+struct StageProgram {
+  Stage stage;
+  const Program* program;
+};
+
+std::vector<StageProgram> allPrograms(const Pipeline& p) {
+  std::vector<StageProgram> out{{Stage::Raygen, &p.raygen}};
+  for (const Program& m : p.miss) out.push_back({Stage::Miss, &m});
+  for (const HitGroup& g : p.hit_groups) {
+    if (g.closest_hit) out.push_back({Stage::ClosestHit, &*g.closest_hit});
+    if (g.any_hit) out.push_back({Stage::AnyHit, &*g.any_hit});
+    if (g.intersection) out.push_back({Stage::Intersection, &*g.intersection});
+  }
+  for (const Program& c : p.callables) out.push_back({Stage::Callable, &c});
+  return out;
+}
+
+// The ray flags a trace can use: the literal flags, or all bits when they are
+// computed at run time.
+uint32_t possibleFlags(const Stmt& trace, const Rays& rays) {
+  if (trace.trace.flags.empty()) return 0;
+  const Expr& f = trace.trace.flags.front();
+  if (f.kind == Expr::Kind::Literal && !f.literal.empty()) return static_cast<uint32_t>(f.literal[0]);
+  (void)rays;
+  return 0xFFFFFFFFu;
+}
+
+}  // namespace
+
+Plan derivePlan(const Case& c) {
+  Plan plan;
+  const Scene& scene = c.scene;
+  const Pipeline& pipe = c.pipeline;
+  const auto programs = allPrograms(pipe);
+
+  // Ray flags every trace may use (OR), and those every trace surely uses (AND).
+  uint32_t any_flags = 0, all_flags = 0xFFFFFFFFu;
+  uint32_t any_mask_bits_clear = 0;
+  auto addRay = [&](uint32_t flags, uint32_t mask) {
+    any_flags |= flags;
+    all_flags &= flags;
+    if ((mask & 0xFF) != 0xFF) any_mask_bits_clear = 1;
+  };
+  for (const Ray& r : c.rays.rays) addRay(r.flags, r.cull_mask);
+  for (const auto& sp : programs)
+    walkStatements(*sp.program, [&](const Stmt& s) {
+      if (s.kind != Stmt::Kind::Trace) return;
+      // Nested traces take the case defaults unless they say otherwise.
+      uint32_t flags = s.trace.flags.empty() ? (sp.stage == Stage::Raygen ? 0 : c.rays.defaults.flags)
+                                             : possibleFlags(s, c.rays);
+      uint32_t mask = c.rays.defaults.cull_mask;
+      if (!s.trace.cull_mask.empty()) mask = 0;  // conservatively: may clear bits
+      if (sp.stage == Stage::Raygen && s.trace.flags.empty()) return;  // the launch's rays, added above
+      addRay(flags, mask);
+    });
+  const uint32_t pipeline_skips = pipe.flags;  // 0x1000 skip triangles, 0x2000 skip aabbs
+
+  // Geometry reached by instances.
+  bool non_opaque_geometry = false;
+  for (const Instance& inst : scene.instances) {
+    if (!inst.blas) continue;
+    const Blas& b = scene.blases[*inst.blas];
+    for (const Geometry& g : b.geometries) {
+      if (g.primitiveCount() == 0) continue;
+      if (g.kind == Geometry::Kind::Triangles) plan.triangles = true; else plan.aabbs = true;
+      bool opaque = (g.flags & kGeometryOpaque) != 0;
+      if (inst.flags & kInstanceForceOpaque) opaque = true;
+      if (inst.flags & kInstanceForceNoOpaque) opaque = false;
+      if (!opaque) non_opaque_geometry = true;
+    }
+    if (inst.flags & (kInstanceFacingCullDisable | kInstanceFlipFacing)) plan.facing_culls = true;
+    if (inst.flags & (kInstanceForceOpaque | kInstanceForceNoOpaque)) plan.opacity_flags = true;
+    if ((inst.mask & 0xFF) != 0xFF) plan.masks = true;
+  }
+  if ((pipeline_skips & 0x1000) || (all_flags & kRaySkipTriangles)) plan.triangles = false;
+  if ((pipeline_skips & 0x2000) || (all_flags & kRaySkipAabbs)) plan.aabbs = false;
+  if (any_mask_bits_clear) plan.masks = true;
+  if (any_flags & (kRayCullBackFacing | kRayCullFrontFacing)) plan.facing_culls = true;
+  if (any_flags & (kRayOpaque | kRayNoOpaque | kRayCullOpaque | kRayCullNoOpaque)) plan.opacity_flags = true;
+
+  // Stages.
+  bool group_any_hit = false, group_intersection = false;
+  for (const HitGroup& g : pipe.hit_groups) {
+    if (g.any_hit) group_any_hit = true;
+    if (g.intersection) group_intersection = true;
+    if (g.closest_hit) plan.closest_hit = true;
+  }
+  plan.miss = !pipe.miss.empty();
+  const bool every_ray_opaque = (all_flags & kRayOpaque) != 0;
+  const bool can_be_non_opaque = (non_opaque_geometry || (any_flags & kRayNoOpaque)) && !every_ray_opaque;
+  plan.any_hit = group_any_hit && can_be_non_opaque && (plan.triangles || plan.aabbs);
+  plan.intersection = group_intersection && plan.aabbs;
+
+  for (const auto& sp : programs) {
+    walkStatements(*sp.program, [&](const Stmt& s) {
+      if (s.kind == Stmt::Kind::Call) plan.callables = true;
+      if (s.kind == Stmt::Kind::Trace && sp.stage != Stage::Raygen) plan.nested_trace = true;
+    });
+    if (sp.stage == Stage::Intersection)
+      walkExpressions(*sp.program, [&](const Expr& e) {
+        if (e.name == "aabb_min" || e.name == "aabb_max" || e.name.rfind("sphere_", 0) == 0)
+          plan.scene_data = true;
+      });
+  }
+  plan.trace_depth = plan.nested_trace ? std::max<uint32_t>(pipe.max_recursion, 1) : 1;
+
+  auto hasData = [](const std::vector<SbtRecord>& v) {
+    return std::any_of(v.begin(), v.end(), [](const SbtRecord& r) { return !r.data.empty(); });
+  };
+  auto hasZero = [](const std::vector<SbtRecord>& v) {
+    return std::any_of(v.begin(), v.end(), [](const SbtRecord& r) { return !r.group; });
+  };
+  plan.shader_record_data = !pipe.raygen_data.empty() || hasData(pipe.sbt_miss) ||
+                            hasData(pipe.sbt_hit) || hasData(pipe.sbt_callable);
+  plan.zero_records = hasZero(pipe.sbt_miss) || hasZero(pipe.sbt_hit) || hasZero(pipe.sbt_callable);
+
+  plan.counters = c.outputs.counters;
+  plan.record_fields = c.outputs.per_ray;
+  plan.images = c.outputs.images;
+  // The automatic per-ray stage counts are always kept: they are how the
+  // comparison checks miss-xor-closest-hit and any-hit counts per ray.
+  plan.records = true;
+  return plan;
+}
+
+std::vector<std::string> Plan::describe() const {
+  std::vector<std::string> lines;
+  auto line = [&](bool on, const std::string& what) { lines.push_back(std::string(on ? "  [x] " : "  [ ] ") + what); };
+  line(triangles, "triangle geometry (BLAS of triangles)");
+  line(aabbs, "procedural geometry (BLAS of AABBs)");
+  line(any_hit, "any-hit can run (filter on non-opaque candidates)");
+  line(intersection, "intersection shaders (user geometry)");
+  line(closest_hit, "closest-hit shaders");
+  line(miss, "miss shaders");
+  line(callables, "callable shaders");
+  line(nested_trace, "nested traces (recursion), depth " + std::to_string(trace_depth));
+  line(facing_culls, "facing culls / facing instance flags");
+  line(masks, "instance masks / cull masks");
+  line(opacity_flags, "opacity ray / instance flags");
+  line(scene_data, "scene data buffer (AABBs read by intersection programs)");
+  line(shader_record_data, "shader record data");
+  line(zero_records, "all-zero SBT records");
+  std::string counters_line = "counters:";
+  for (const auto& c : counters) counters_line += " " + c;
+  lines.push_back("  " + counters_line);
+  std::string fields_line = "per-ray fields:";
+  for (const auto& f : record_fields) fields_line += " " + f;
+  lines.push_back("  " + fields_line + " (+ automatic stage run counts)");
+  std::string images_line = "images:";
+  for (const auto& i : images) images_line += " " + i.name + "(" + i.field + ")";
+  lines.push_back("  " + images_line);
+  return lines;
+}
+
+}  // namespace rayspec

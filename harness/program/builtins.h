@@ -1,0 +1,53 @@
+// The built-in values a stage program may read, with their type and the stages
+// that may read them. Both backends give each name the meaning written here.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "program/program.h"
+
+namespace rayspec {
+
+// Bit set of stages (1u << int(Stage)).
+using StageMask = unsigned;
+constexpr StageMask stageBit(Stage s) { return 1u << static_cast<unsigned>(s); }
+constexpr StageMask kAllStages = 0x3F;
+
+struct BuiltinInfo {
+  const char* name;
+  ValueType type;
+  StageMask stages;
+  const char* meaning;  // one line, shown by `rayspec show` and in errors
+};
+
+// Table of all built-ins:
+//   launch_id_x, launch_id_y, launch_size_x, launch_size_y (Uint, all stages)
+//   primitive_id, instance_id, instance_custom_index, geometry_index
+//       (Uint; intersection, any-hit, closest-hit)
+//   hit_kind (Uint; any-hit, closest-hit)
+//   hit_t (Float; any-hit: candidate t; closest-hit: the hit's t)
+//   hit (Uint; closest-hit 1, miss 0)
+//   ray_tmin, ray_tmax (Float), incoming_ray_flags (Uint),
+//   world_ray_origin, world_ray_direction (Vec3)
+//       (intersection, any-hit, closest-hit, miss)
+//   object_ray_origin, object_ray_direction (Vec3; intersection, any-hit, closest-hit)
+//   barycentrics (Vec2; any-hit, closest-hit: the hit attribute; triangle
+//       barycentrics (b1, b2), or what the intersection shader reported)
+//   hit_position (Vec3; any-hit, closest-hit: world origin + hit_t * world direction)
+//   aabb_min, aabb_max (Vec3; intersection: the primitive's box, object space)
+//   payload.color (Vec4), payload.value (Uint): the incoming payload in miss,
+//       closest-hit and any-hit; in raygen, the payload of its last trace
+//   depth (Uint; miss, closest-hit, any-hit: 1 for a trace from raygen, +1 per
+//       nested trace)
+//   child.color (Vec4), child.value (Uint): the payload of this stage's last
+//       nested trace (closest-hit, miss)
+//   call.position, call.normal (Vec3), call.color (Vec4), call.value (Uint):
+//       the incoming callable data (callable)
+//   callee.color (Vec4), callee.value (Uint): the callable data after this
+//       stage's last call (raygen, closest-hit, miss, callable)
+const std::vector<BuiltinInfo>& builtins();
+const BuiltinInfo* findBuiltin(const std::string& name);
+
+}  // namespace rayspec

@@ -1,0 +1,59 @@
+// The operators of the stage vocabulary: name, arity and typing rule. Both
+// backends give each op the meaning written here.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "program/builtins.h"
+#include "program/program.h"
+
+namespace rayspec {
+
+struct OpInfo {
+  const char* name;
+  int min_args, max_args;
+  StageMask stages;
+  const char* meaning;
+};
+
+// Ops:
+//   add, sub, mul, div    numeric; both args the same type, or a Float scalar
+//                         with a vector (either side). Uint div truncates; Uint
+//                         div by 0 is a case error only when both are literals.
+//   mod                   Uint % Uint
+//   min, max              same numeric type
+//   eq, ne, lt, le, gt, ge -> Bool; args the same scalar type
+//   and, or (2+ Bool args), not (1 Bool)
+//   odd, even             Uint -> Bool
+//   float (Uint -> Float), uint (Float -> Uint, truncation toward zero)
+//   vec2, vec3, vec4      Float scalars -> vector (a single Float splats)
+//   x, y, z, w            component of a vector -> Float
+//   dot (2 same vectors -> Float), length (vector -> Float),
+//   normalize (vector -> same)
+//   sphere_hit (no args -> Bool), sphere_near, sphere_far (no args -> Float):
+//       intersection only. The sphere inscribed in the primitive's AABB
+//       (center = (min+max)/2, radius = smallest half extent), against the
+//       object-space ray o + t d (d not normalised): roots of
+//       |o + t d - c|^2 = r^2, near <= far; sphere_hit = discriminant >= 0.
+//       Computed in float with the formula in shaders/sphere.glsl and its
+//       model counterpart.
+//   shader_record_uint (1 Uint literal i in 0..7 -> Uint),
+//   shader_record_float (same -> Float): word i of this stage's own shader
+//       record data (raygen, miss, hit groups, callables).
+const std::vector<OpInfo>& ops();
+const OpInfo* findOp(const std::string& name);
+
+// Fills Expr::type for e and its arguments; returns an error message (empty
+// when fine). `stage` decides which built-ins and ops are allowed.
+std::string typeCheck(Expr& e, Stage stage);
+
+// Checks a whole program for a stage (statement kinds allowed in the stage,
+// expression types, field names); returns the first error with its location.
+struct ProgramError { std::string message; SourceLoc loc; };
+std::optional<ProgramError> checkProgram(Program& p, Stage stage,
+                                         const std::vector<std::string>& counters,
+                                         const std::vector<std::string>& per_ray_fields);
+
+}  // namespace rayspec

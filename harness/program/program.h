@@ -1,0 +1,83 @@
+// The stage vocabulary: what an any-hit, closest-hit, miss, intersection,
+// callable or ray generation stage does, as a small typed tree. The Vulkan side
+// turns it into GLSL (harness/glsl); the model interprets it (harness/model).
+// The meaning of every node is defined here, once; both executions follow it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "case/source_loc.h"
+
+namespace rayspec {
+
+enum class Stage { Raygen, Miss, ClosestHit, AnyHit, Intersection, Callable };
+const char* stageName(Stage s);  // "raygen", "miss", "closest_hit", ...
+
+// Value types of expressions. Bool only appears in conditions.
+enum class ValueType { Bool, Uint, Float, Vec2, Vec3, Vec4 };
+const char* valueTypeName(ValueType t);
+int componentCount(ValueType t);  // Bool/Uint/Float 1, Vec2 2, ...
+
+// An expression, written in YAML as
+//   a number            -> literal (Uint if written without '.', 'e', or sign
+//                          and >= 0; otherwise Float), or a list of 2..4
+//                          numbers -> Vec2/Vec3/Vec4 literal;
+//   true / false        -> Bool literal;
+//   a built-in name     -> Builtin (see builtins.h: "primitive_id", "hit_t",
+//                          "payload.color", ...);
+//   {op: arg} / {op: [args]} -> Op (see ops.h: add, eq, odd, sphere_near, ...).
+struct Expr {
+  enum class Kind { Literal, Builtin, Op };
+  Kind kind = Kind::Literal;
+  ValueType type = ValueType::Uint;  // filled by the type checker
+  std::vector<double> literal;       // Literal: 1..4 components
+  std::string name;                  // Builtin or Op name
+  std::vector<Expr> args;            // Op arguments
+  SourceLoc loc;
+};
+
+// The arguments of a traceRayEXT call. Every field is optional: an empty Expr
+// list means "take it from the case's ray for this launch" in raygen, and is an
+// error elsewhere for origin/direction; flags/cull_mask/sbt_* /miss/tmin/tmax
+// default to the case's ray defaults (rays.defaults) outside raygen.
+struct TraceArgs {
+  std::vector<Expr> origin, direction, tmin, tmax;  // 0 or 1 element each
+  std::vector<Expr> flags, cull_mask, sbt_offset, sbt_stride, miss;
+};
+
+struct Stmt {
+  enum class Kind {
+    Count,       // counter += 1 (global, atomic), name in `counter`
+    Record,      // per-ray record fields of this launch: assigns[i] = (field, value)
+    SetPayload,  // incoming payload (hit/miss/any-hit) fields: "color", "value"
+    SetCall,     // incoming callable data (callable stage): "color", "value"
+    Ignore,      // ignoreIntersectionEXT (any-hit only)
+    Terminate,   // terminateRayEXT (any-hit only)
+    Report,      // reportIntersectionEXT(t, kind) (intersection only);
+                 // then_ runs if it returned true, else_ if false
+    Trace,       // traceRayEXT with `trace`; payload result readable as child.*
+    Call,        // executeCallableEXT(call_index) with data fields `assigns`
+                 // ("position", "normal", "value", "color"); result as callee.*
+    Light,       // callable only: call.color = light_<light>(call.position,
+                 // call.normal, shader record floats) from shaders/lights.glsl
+    If,          // if (cond) then_ else else_
+  };
+  Kind kind = Kind::Count;
+  std::string counter;                                  // Count
+  std::vector<std::pair<std::string, Expr>> assigns;    // Record/SetPayload/SetCall/Call
+  Expr cond;                                            // If
+  Expr t, hit_kind;                                     // Report
+  std::vector<Expr> attribute;                          // Report: optional Vec2 hit
+                                                        // attribute; vec2(0) when absent
+  Expr call_index;                                      // Call
+  std::string light;                                    // Light: point|spot|directional
+  TraceArgs trace;                                      // Trace
+  std::vector<Stmt> then_, else_;                       // If, Report
+  SourceLoc loc;
+};
+
+using Program = std::vector<Stmt>;
+
+}  // namespace rayspec

@@ -1,0 +1,18 @@
+// Viewable image files (PNG, and EXR for float images) written through
+// OpenImageIO. A run-only build without OpenImageIO writes none (the raw
+// texels in the bundle stay the reference).
+#pragma once
+
+#include <string>
+
+#include "results/results.h"
+
+namespace rayspec {
+
+// Writes dir/NAME.png (and dir/NAME.exr for float images). Returns an error
+// message, empty on success or when built without OpenImageIO.
+std::string writeImageFiles(const Image& image, const std::string& dir);
+
+bool imageFilesSupported();
+
+}  // namespace rayspec

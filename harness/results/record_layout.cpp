@@ -1,0 +1,69 @@
+#include "results/record_layout.h"
+
+namespace rayspec {
+namespace {
+
+std::vector<RecordField> buildFields() {
+  struct Decl { const char* name; FieldType type; uint32_t words; bool automatic; };
+  const Decl decls[] = {
+      {"hit", FieldType::Uint, 1, false},
+      {"instance_id", FieldType::Uint, 1, false},
+      {"instance_custom_index", FieldType::Uint, 1, false},
+      {"geometry_index", FieldType::Uint, 1, false},
+      {"primitive_id", FieldType::Uint, 1, false},
+      {"hit_kind", FieldType::Uint, 1, false},
+      {"hit_t", FieldType::Float, 1, false},
+      {"barycentrics", FieldType::Float, 2, false},
+      {"ray_tmin", FieldType::Float, 1, false},
+      {"ray_tmax", FieldType::Float, 1, false},
+      {"incoming_ray_flags", FieldType::Uint, 1, false},
+      {"world_ray_origin", FieldType::Float, 3, false},
+      {"world_ray_direction", FieldType::Float, 3, false},
+      {"object_ray_origin", FieldType::Float, 3, false},
+      {"object_ray_direction", FieldType::Float, 3, false},
+      {"hit_position", FieldType::Float, 3, false},
+      {"depth", FieldType::Uint, 1, false},
+      {"value", FieldType::Uint, 1, false},
+      {"color", FieldType::Float, 4, false},
+      {"raygen_runs", FieldType::Uint, 1, true},
+      {"miss_runs", FieldType::Uint, 1, true},
+      {"closest_hit_runs", FieldType::Uint, 1, true},
+      {"any_hit_runs", FieldType::Uint, 1, true},
+      {"intersection_runs", FieldType::Uint, 1, true},
+      {"callable_runs", FieldType::Uint, 1, true},
+  };
+  std::vector<RecordField> fields;
+  uint32_t offset = kRecordWrittenMaskWord + 1;
+  for (const Decl& d : decls) {
+    fields.push_back({d.name, d.type, d.words, offset, d.automatic});
+    offset += d.words;
+  }
+  return fields;
+}
+
+}  // namespace
+
+const std::vector<RecordField>& recordFields() {
+  static const std::vector<RecordField> fields = buildFields();
+  return fields;
+}
+
+const RecordField* findRecordField(const std::string& name) {
+  for (const RecordField& f : recordFields())
+    if (name == f.name) return &f;
+  return nullptr;
+}
+
+int recordFieldIndex(const std::string& name) {
+  const auto& fields = recordFields();
+  for (size_t i = 0; i < fields.size(); ++i)
+    if (name == fields[i].name) return static_cast<int>(i);
+  return -1;
+}
+
+uint32_t recordWords() {
+  const RecordField& last = recordFields().back();
+  return last.offset + last.words;
+}
+
+}  // namespace rayspec

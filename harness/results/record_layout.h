@@ -1,0 +1,33 @@
+// The per-ray record: one fixed layout of 32-bit words, used by the device
+// (the GLSL struct offsets are generated from this table, see glsl/) and by the
+// model and the results reader. The only place the layout is written down.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rayspec {
+
+enum class FieldType { Uint, Float };
+
+struct RecordField {
+  const char* name;   // as written in cases: record: {hit_t: ...}
+  FieldType type;
+  uint32_t words;     // 1..4 components
+  uint32_t offset;    // word offset inside one record
+  bool automatic;     // maintained by the harness, never written by `record`
+};
+
+// Word 0: bit mask of the recordable fields written (bit = field index).
+// Then the recordable fields, then the automatic per-ray stage run counts.
+const std::vector<RecordField>& recordFields();
+const RecordField* findRecordField(const std::string& name);
+int recordFieldIndex(const std::string& name);  // -1 when unknown
+constexpr uint32_t kRecordWrittenMaskWord = 0;
+uint32_t recordWords();  // words per ray
+
+// Names of the automatic counters, in the order of the fields that hold them.
+//   raygen_runs, miss_runs, closest_hit_runs, any_hit_runs,
+//   intersection_runs, callable_runs
+}  // namespace rayspec

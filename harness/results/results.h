@@ -1,0 +1,49 @@
+// What one execution of a case produced, device or model, in one schema.
+// A results bundle on disk is a folder: results.json (everything below but the
+// image pixels), records.bin (the raw per-ray words), and one NAME.raw per
+// image (raw little-endian 32-bit texels) plus NAME.png / NAME.exr when the
+// binary is built with OpenImageIO. See results/results_io.h.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace rayspec {
+
+struct Image {
+  std::string name;
+  std::string field;        // record field it shows
+  uint32_t width = 0, height = 0, channels = 1;
+  bool is_float = false;    // rgba32f (channels 4) or r32ui (channels 1)
+  std::vector<uint32_t> texels;  // width*height*channels words (float bits when is_float)
+};
+
+// A ray the model's exact tier found numerically ambiguous, with the answers
+// the specification allows for it.
+struct Candidate {
+  bool hit = false;          // false: a miss is a legal answer
+  uint32_t instance = 0, geometry = 0, primitive = 0;
+};
+struct RayAmbiguity {
+  uint32_t ray = 0;          // launch index y * width + x
+  std::string reason;        // "edge", "vertex", "tmax-tie", "tmin-tie", "aabb-face"
+  std::vector<Candidate> candidates;
+};
+
+struct Results {
+  std::string case_name;
+  std::string backend;      // "vulkan" or "model"
+  std::string device;       // Vulkan device name, or "embree-<tier>"
+  std::string status;       // "ok", or "NotSupported: ..." / "Crash: ..." from the backend
+  uint32_t width = 0, height = 0;
+  std::map<std::string, uint64_t> counters;
+  std::vector<uint32_t> records;  // width*height*recordWords() words
+  std::vector<Image> images;
+  std::vector<RayAmbiguity> ambiguous;  // model, exact tier: rays that are not clear
+  std::vector<std::string> validation_messages;  // validation-layer errors (device)
+  double seconds = 0.0;     // wall time of the execution (setup + trace + read-back)
+};
+
+}  // namespace rayspec

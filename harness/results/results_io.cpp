@@ -1,0 +1,197 @@
+#include "results/results_io.h"
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "results/image_files.h"
+#include "results/record_layout.h"
+
+namespace rayspec {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+bool writeWords(const fs::path& path, const std::vector<uint32_t>& words) {
+  std::ofstream out(path, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(words.data()), static_cast<std::streamsize>(words.size() * 4));
+  return static_cast<bool>(out);
+}
+
+bool readWords(const fs::path& path, std::vector<uint32_t>& words) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) return false;
+  const auto size = static_cast<size_t>(in.tellg());
+  words.resize(size / 4);
+  in.seekg(0);
+  in.read(reinterpret_cast<char*>(words.data()), static_cast<std::streamsize>(words.size() * 4));
+  return static_cast<bool>(in);
+}
+
+std::string fieldText(const RecordField& f, const uint32_t* rec) {
+  std::ostringstream s;
+  s.precision(9);
+  for (uint32_t i = 0; i < f.words; ++i) {
+    if (i) s << ' ';
+    const uint32_t w = rec[f.offset + i];
+    if (f.type == FieldType::Float) {
+      float v;
+      std::memcpy(&v, &w, 4);
+      s << v;
+    } else {
+      s << w;
+    }
+  }
+  return s.str();
+}
+
+void writeRecordsCsv(const Results& r, const fs::path& path, const std::vector<std::string>& kept) {
+  std::ofstream out(path);
+  std::vector<const RecordField*> fields;
+  for (const auto& name : kept)
+    if (const RecordField* f = findRecordField(name)) fields.push_back(f);
+  for (const RecordField& f : recordFields())
+    if (f.automatic) fields.push_back(&f);
+  out << "x,y";
+  for (const RecordField* f : fields) out << ',' << f->name;
+  out << '\n';
+  const uint32_t words = recordWords();
+  const size_t rays = r.records.size() / words;
+  for (size_t i = 0; i < rays; ++i) {
+    const uint32_t* rec = &r.records[i * words];
+    out << (r.width ? i % r.width : i) << ',' << (r.width ? i / r.width : 0);
+    for (const RecordField* f : fields) {
+      const int bit = recordFieldIndex(f->name);
+      const bool written = f->automatic || (rec[kRecordWrittenMaskWord] >> bit) & 1u;
+      out << ',' << (written ? fieldText(*f, rec) : std::string());
+    }
+    out << '\n';
+  }
+}
+
+}  // namespace
+
+std::string writeResults(const Results& r, const std::string& dir_name,
+                         const std::vector<std::string>& kept_fields) {
+  const fs::path dir(dir_name);
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) return "cannot create " + dir.string() + ": " + ec.message();
+
+  json j;
+  j["case"] = r.case_name;
+  j["backend"] = r.backend;
+  j["device"] = r.device;
+  j["status"] = r.status;
+  j["width"] = r.width;
+  j["height"] = r.height;
+  j["seconds"] = r.seconds;
+  j["record_words"] = recordWords();
+  j["counters"] = r.counters;
+  j["validation_messages"] = r.validation_messages;
+  j["images"] = json::array();
+  for (const Image& im : r.images) {
+    j["images"].push_back({{"name", im.name}, {"field", im.field}, {"width", im.width},
+                           {"height", im.height}, {"channels", im.channels}, {"float", im.is_float}});
+    if (!writeWords(dir / (im.name + ".raw"), im.texels)) return "cannot write image " + im.name;
+    const std::string err = writeImageFiles(im, dir.string());
+    if (!err.empty()) return err;
+  }
+  j["ambiguous"] = json::array();
+  for (const RayAmbiguity& a : r.ambiguous) {
+    json cands = json::array();
+    for (const Candidate& c : a.candidates)
+      cands.push_back({{"hit", c.hit}, {"instance", c.instance}, {"geometry", c.geometry}, {"primitive", c.primitive}});
+    j["ambiguous"].push_back({{"ray", a.ray}, {"reason", a.reason}, {"candidates", cands}});
+  }
+  std::ofstream(dir / "results.json") << j.dump(1) << '\n';
+  if (!writeWords(dir / "records.bin", r.records)) return "cannot write records.bin in " + dir.string();
+  writeRecordsCsv(r, dir / "records.csv", kept_fields);
+  return {};
+}
+
+Results readResults(const std::string& dir_name, std::string* error) {
+  Results r;
+  const fs::path dir(dir_name);
+  std::ifstream in(dir / "results.json");
+  if (!in) {
+    *error = "no results.json in " + dir.string();
+    return r;
+  }
+  json j;
+  try {
+    j = json::parse(in);
+    r.case_name = j.at("case");
+    r.backend = j.at("backend");
+    r.device = j.at("device");
+    r.status = j.at("status");
+    r.width = j.at("width");
+    r.height = j.at("height");
+    r.seconds = j.at("seconds");
+    r.counters = j.at("counters").get<std::map<std::string, uint64_t>>();
+    r.validation_messages = j.at("validation_messages").get<std::vector<std::string>>();
+    if (j.at("record_words").get<uint32_t>() != recordWords()) {
+      *error = dir.string() + ": record layout differs from this build";
+      return r;
+    }
+    for (const json& ji : j.at("images")) {
+      Image im;
+      im.name = ji.at("name");
+      im.field = ji.at("field");
+      im.width = ji.at("width");
+      im.height = ji.at("height");
+      im.channels = ji.at("channels");
+      im.is_float = ji.at("float");
+      if (!readWords(dir / (im.name + ".raw"), im.texels)) {
+        *error = "cannot read image " + (dir / (im.name + ".raw")).string();
+        return r;
+      }
+      r.images.push_back(std::move(im));
+    }
+    for (const json& ja : j.at("ambiguous")) {
+      RayAmbiguity a;
+      a.ray = ja.at("ray");
+      a.reason = ja.at("reason");
+      for (const json& jc : ja.at("candidates"))
+        a.candidates.push_back({jc.at("hit"), jc.at("instance"), jc.at("geometry"), jc.at("primitive")});
+      r.ambiguous.push_back(std::move(a));
+    }
+  } catch (const std::exception& e) {
+    *error = (dir / "results.json").string() + ": " + e.what();
+    return r;
+  }
+  if (!readWords(dir / "records.bin", r.records)) *error = "cannot read " + (dir / "records.bin").string();
+  return r;
+}
+
+std::vector<uint8_t> previewPixels(const Image& im) {
+  std::vector<uint8_t> px(static_cast<size_t>(im.width) * im.height * 4);
+  for (size_t i = 0; i < static_cast<size_t>(im.width) * im.height; ++i) {
+    uint8_t* p = &px[i * 4];
+    if (im.is_float) {
+      for (uint32_t c = 0; c < 4; ++c) {
+        float v = 0.0f;
+        if (c < im.channels) std::memcpy(&v, &im.texels[i * im.channels + c], 4);
+        if (c == 3 && im.channels < 4) v = 1.0f;
+        v = v != v ? 0.0f : std::min(std::max(v, 0.0f), 1.0f);
+        p[c] = static_cast<uint8_t>(v * 255.0f + 0.5f);
+      }
+    } else {
+      // Distinct colours for small ids (hash), black for 0.
+      const uint32_t v = im.texels[i * im.channels];
+      uint32_t h = v * 2654435761u;
+      p[0] = v ? static_cast<uint8_t>(64 + (h >> 24) % 192) : 0;
+      p[1] = v ? static_cast<uint8_t>(64 + (h >> 16) % 192) : 0;
+      p[2] = v ? static_cast<uint8_t>(64 + (h >> 8) % 192) : 0;
+      p[3] = 255;
+    }
+  }
+  return px;
+}
+
+}  // namespace rayspec

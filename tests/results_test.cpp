@@ -1,0 +1,104 @@
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "results/image_files.h"
+#include "results/record_layout.h"
+#include "results/results_io.h"
+
+namespace rayspec {
+namespace {
+
+TEST(RecordLayout, FieldsAreContiguousUniqueAndFitTheWrittenMask) {
+  std::set<std::string> names;
+  uint32_t next = kRecordWrittenMaskWord + 1;
+  for (const RecordField& f : recordFields()) {
+    EXPECT_TRUE(names.insert(f.name).second) << f.name;
+    EXPECT_EQ(f.offset, next) << f.name;
+    EXPECT_GE(f.words, 1u);
+    EXPECT_LE(f.words, 4u);
+    next += f.words;
+  }
+  EXPECT_EQ(recordWords(), next);
+  EXPECT_LE(recordFields().size(), 32u) << "the written mask is one 32-bit word";
+  EXPECT_EQ(recordFieldIndex("hit"), 0);
+  EXPECT_EQ(findRecordField("nonsense"), nullptr);
+  EXPECT_TRUE(findRecordField("any_hit_runs")->automatic);
+  EXPECT_FALSE(findRecordField("hit_t")->automatic);
+}
+
+Results sampleResults() {
+  Results r;
+  r.case_name = "family/sample";
+  r.backend = "vulkan";
+  r.device = "test device";
+  r.status = "ok";
+  r.width = 3;
+  r.height = 2;
+  r.seconds = 0.25;
+  r.counters = {{"miss", 4}, {"closesthit", 2}};
+  r.records.assign(6 * recordWords(), 0);
+  const RecordField* t = findRecordField("hit_t");
+  float value = 1.5f;
+  std::memcpy(&r.records[recordWords() + t->offset], &value, 4);
+  r.records[recordWords() + kRecordWrittenMaskWord] = 1u << recordFieldIndex("hit_t");
+  Image im{"primitive", "primitive_id", 3, 2, 1, false, {0, 1, 2, 3, 4, 5}};
+  r.images.push_back(im);
+  Image color{"color", "color", 3, 2, 4, true, std::vector<uint32_t>(24, 0x3f800000u)};
+  r.images.push_back(color);
+  r.ambiguous.push_back({4, "edge", {{true, 0, 0, 1}, {true, 0, 0, 2}}});
+  return r;
+}
+
+TEST(ResultsIo, BundleRoundTripsEveryField) {
+  const std::string dir = testing::TempDir() + "/rayspec-results-io";
+  std::filesystem::remove_all(dir);
+  const Results r = sampleResults();
+  ASSERT_EQ(writeResults(r, dir, {"hit_t"}), "");
+  std::string error;
+  const Results back = readResults(dir, &error);
+  ASSERT_EQ(error, "");
+  EXPECT_EQ(back.case_name, r.case_name);
+  EXPECT_EQ(back.device, r.device);
+  EXPECT_EQ(back.counters, r.counters);
+  EXPECT_EQ(back.records, r.records);
+  ASSERT_EQ(back.images.size(), 2u);
+  EXPECT_EQ(back.images[0].texels, r.images[0].texels);
+  EXPECT_TRUE(back.images[1].is_float);
+  ASSERT_EQ(back.ambiguous.size(), 1u);
+  EXPECT_EQ(back.ambiguous[0].candidates.size(), 2u);
+  EXPECT_EQ(back.ambiguous[0].candidates[1].primitive, 2u);
+  // records.csv: header + one row per ray, the written hit_t shown, unwritten empty.
+  std::ifstream csv(dir + "/records.csv");
+  std::string header, row0, row1;
+  std::getline(csv, header);
+  std::getline(csv, row0);
+  std::getline(csv, row1);
+  EXPECT_EQ(header.rfind("x,y,hit_t,", 0), 0u) << header;
+  EXPECT_EQ(row0.rfind("0,0,,", 0), 0u) << row0;
+  EXPECT_EQ(row1.rfind("1,0,1.5,", 0), 0u) << row1;
+  if (imageFilesSupported()) {
+    EXPECT_TRUE(std::filesystem::exists(dir + "/primitive.png"));
+    EXPECT_TRUE(std::filesystem::exists(dir + "/color.exr"));
+  }
+}
+
+TEST(ResultsIo, MissingBundleIsAnError) {
+  std::string error;
+  readResults("/nonexistent/rayspec", &error);
+  EXPECT_NE(error.find("results.json"), std::string::npos);
+}
+
+TEST(ResultsIo, PreviewGivesDistinctColoursToIdsAndBlackToZero) {
+  Image im{"p", "primitive_id", 3, 1, 1, false, {0, 1, 2}};
+  const auto px = previewPixels(im);
+  ASSERT_EQ(px.size(), 12u);
+  EXPECT_EQ(px[0] + px[1] + px[2], 0);
+  EXPECT_NE(std::memcmp(&px[4], &px[8], 3), 0);
+}
+
+}  // namespace
+}  // namespace rayspec

@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds, and runs every case on lavapipe and on the
+# model, printing a summary. Extra arguments go to `rayspec run`.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash tools/setup.sh
+cmake --preset default >/dev/null
+cmake --build --preset default -j"$(nproc)"
+export MESA_SHADER_CACHE_DIR="$PWD/build/mesa-shader-cache"
+exec ./build/rayspec run --out build/results "$@"
