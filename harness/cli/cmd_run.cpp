@@ -1,15 +1,21 @@
 #include <chrono>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <memory>
+#include <set>
 
 #include "case/parse_case.h"
 #include "cli/case_discovery.h"
 #include "cli/commands.h"
-#include "cli/run_summary.h"
+#include "cli/failing_rays.h"
 #include "compare/compare_results.h"
 #include "model/model_backend.h"
 #include "plan/plan.h"
+#include "report/rule_catalog.h"
+#include "report/run_summary.h"
+#include "report/write_reports.h"
+#include "results/image_files.h"
 #include "results/results_io.h"
 #include "vulkan/vulkan_backend.h"
 
@@ -19,17 +25,41 @@ namespace {
 constexpr int kExitNotSupported = 77;  // ctest's SKIP_RETURN_CODE for a single case
 
 bool validationLayerInstalled() {
+  if (const char* path = std::getenv("VK_LAYER_PATH"))
+    if (std::filesystem::exists(std::string(path) + "/VkLayer_khronos_validation.json")) return true;
   for (const char* dir : {"/usr/share/vulkan/explicit_layer.d", "/usr/local/share/vulkan/explicit_layer.d",
                           "/etc/vulkan/explicit_layer.d"})
     if (std::filesystem::exists(std::string(dir) + "/VkLayer_khronos_validation.json")) return true;
   return false;
 }
 
+std::string now() {
+  char text[64];
+  const std::time_t t = std::time(nullptr);
+  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M:%S UTC", std::gmtime(&t));
+  return text;
+}
+
+// Rule labels a case names that the catalog lacks are case errors.
+std::string unknownRules(const Case& c, const std::vector<Rule>& catalog) {
+  std::string unknown;
+  for (const std::string& label : c.rules) {
+    bool known = false;
+    for (const Rule& r : catalog) known = known || r.label == label;
+    if (!known) unknown += (unknown.empty() ? "" : ", ") + label;
+  }
+  return unknown;
+}
+
 // Runs one parsed case on the selected backends and compares.
 CaseOutcome runOne(const Case& c, const RunOptions& opt, VulkanBackend* backend, const std::string& backend_error) {
-  CaseOutcome out{c.name, Status::Pass, ""};
+  CaseOutcome out;
+  out.name = c.name;
+  out.rules = c.rules;
   const Plan plan = derivePlan(c);
   const std::string dir = opt.out + "/" + c.name;
+  std::error_code ec;
+  std::filesystem::remove_all(dir, ec);  // no stale bundle from an earlier run
   Results device, model;
   const bool want_device = !opt.no_device, want_model = !opt.no_model;
   if (want_device) {
@@ -57,12 +87,17 @@ CaseOutcome runOne(const Case& c, const RunOptions& opt, VulkanBackend* backend,
   Verdict v;
   if (want_device && want_model) {
     v = compareResults(c, plan, device, model);
+    for (const Image& di : device.images)
+      for (const Image& mi : model.images)
+        if (di.name == mi.name && di.texels != mi.texels) writeDiffImage(di, mi, dir + "/diff");
+    out.failing_rays = failingRays(v, plan, device, model);
   } else {
     // One side only: its own status, validation errors included; never more than that.
     const Results& only = want_device ? device : model;
     v = backendVerdict(only);
     for (const std::string& m : only.validation_messages) v.add({Status::Fail, "validation", m, {}, 0});
   }
+  for (const ImageOutput& im : plan.images) out.images.push_back(im.name);
   out.status = v.status;
   out.headline = v.headline();
   out.verdict = v;
@@ -88,6 +123,12 @@ int runCases(const RunOptions& opt) {
                          "run tools/setup.sh\n");
     return 2;
   }
+  RunInfo info;
+  info.started = now();
+  info.model_tier = opt.no_model ? "none" : opt.model_tier;
+  std::string catalog_error;
+  info.catalog = loadRuleCatalog(opt.rules_file, &catalog_error);
+  if (!catalog_error.empty()) std::fprintf(stderr, "rayspec run: %s\n", catalog_error.c_str());
 
   std::unique_ptr<VulkanBackend> backend;
   std::string backend_error;
@@ -96,35 +137,50 @@ int runCases(const RunOptions& opt) {
     vopt.device_filter = opt.device;
     vopt.validation = validation;
     backend = VulkanBackend::create(vopt, &backend_error);
-    if (backend)
-      std::printf("Device: %s (%s)%s\n", backend->device().name.c_str(), backend->device().driver_info.c_str(),
-                  backend->validationEnabled() ? ", validation layer on" : ", validation layer OFF");
-    else
+    if (backend) {
+      info.device = backend->device().name + " (" + backend->device().driver_info + ")";
+      info.validation = backend->validationEnabled();
+      std::printf("Device: %s%s\n", info.device.c_str(),
+                  info.validation ? ", validation layer on" : ", validation layer OFF");
+    } else {
+      info.device = "none";
       std::printf("Device: none (%s)\n", backend_error.c_str());
+    }
   }
   if (!opt.no_model) std::printf("Model: embree, %s tier\n", opt.model_tier.c_str());
 
   RunSummary summary(files.size());
+  std::vector<std::pair<std::string, std::vector<std::string>>> case_rules;
   for (const CaseFile& f : files) {
     const auto start = std::chrono::steady_clock::now();
     ParseResult parsed = parseCaseFile(f.path, opt.cases_dir);
-    CaseOutcome outcome{f.name, Status::Fail, ""};
-    if (!parsed.value || !parsed.errors.empty()) {
-      std::string message;
-      for (const CaseError& e : parsed.errors) message += (message.empty() ? "" : "\n  ") + e.format();
+    CaseOutcome outcome;
+    outcome.name = f.name;
+    outcome.status = Status::Fail;
+    std::string message;
+    for (const CaseError& e : parsed.errors) message += (message.empty() ? "" : "\n  ") + e.format();
+    if (parsed.value && message.empty() && !info.catalog.empty()) {
+      const std::string unknown = unknownRules(*parsed.value, info.catalog);
+      if (!unknown.empty()) message = f.path + ": rules: unknown rule label(s) " + unknown;
+    }
+    if (!parsed.value || !message.empty()) {
       outcome.headline = "Fail: case file error: " + message;
+      outcome.verdict.add({Status::Fail, "case-file", message, {}, 0});
     } else {
       outcome = runOne(*parsed.value, opt, backend.get(), backend_error);
+      case_rules.push_back({outcome.name, outcome.rules});
     }
     outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     summary.add(outcome);
   }
-  if (backend) {
+  if (backend)
     for (const std::string& m : backend->close()) summary.addTeardownError(m);
-  }
+  info.teardown_errors = summary.teardownErrors();
+  info.coverage = ruleCoverage(info.catalog, case_rules);
   summary.print();
-  const std::string err = summary.write(opt.out);
+  const std::string err = writeReports(summary.outcomes(), info, opt.out);
   if (!err.empty()) std::fprintf(stderr, "%s\n", err.c_str());
+  std::printf("Reports: %s/report.html, results.csv, junit.xml, summary.json\n", opt.out.c_str());
   if (summary.failed()) return 1;
   if (files.size() == 1 && summary.allNotSupported()) return kExitNotSupported;
   return 0;

@@ -26,6 +26,7 @@ struct RunOptions {
   bool no_validation = false;
   bool strict_validation = false;
   unsigned threads = 0;
+  std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
 };
 
 struct ShowOptions {

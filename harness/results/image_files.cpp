@@ -1,5 +1,10 @@
 #include "results/image_files.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+
 #include "results/results_io.h"
 
 #ifdef RAYSPEC_WITH_OIIO
@@ -31,11 +36,43 @@ std::string writeImageFiles(const Image& im, const std::string& dir) {
   return writeOne(dir + "/" + im.name + ".exr", exr, im.texels.data());
 }
 
+std::string writeDiffImage(const Image& a, const Image& b, const std::string& dir) {
+  if (a.texels.size() != b.texels.size() || a.width != b.width || a.height != b.height) return {};
+  std::vector<uint8_t> px(static_cast<size_t>(a.width) * a.height * 4, 0);
+  for (size_t p = 0; p < static_cast<size_t>(a.width) * a.height; ++p) {
+    double diff = 0.0;
+    for (uint32_t c = 0; c < a.channels; ++c) {
+      const uint32_t wa = a.texels[p * a.channels + c], wb = b.texels[p * a.channels + c];
+      if (wa == wb) continue;
+      if (a.is_float) {
+        float fa, fb;
+        std::memcpy(&fa, &wa, 4);
+        std::memcpy(&fb, &wb, 4);
+        diff = std::max(diff, std::fabs(static_cast<double>(fa) - fb));
+      } else {
+        diff = 1.0;
+      }
+    }
+    uint8_t* out = &px[p * 4];
+    if (diff > 0) {
+      out[0] = static_cast<uint8_t>(128 + 127 * std::min(diff * 10.0, 1.0));
+    } else {
+      out[0] = out[1] = out[2] = 40;
+    }
+    out[3] = 255;
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  OIIO::ImageSpec png(static_cast<int>(a.width), static_cast<int>(a.height), 4, OIIO::TypeDesc::UINT8);
+  return writeOne(dir + "/" + a.name + ".png", png, px.data());
+}
+
 bool imageFilesSupported() { return true; }
 
 #else
 
 std::string writeImageFiles(const Image&, const std::string&) { return {}; }
+std::string writeDiffImage(const Image&, const Image&, const std::string&) { return {}; }
 bool imageFilesSupported() { return false; }
 
 #endif

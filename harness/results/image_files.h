@@ -13,6 +13,10 @@ namespace rayspec {
 // message, empty on success or when built without OpenImageIO.
 std::string writeImageFiles(const Image& image, const std::string& dir);
 
+// Writes dir/NAME.png showing where two images of the same size differ: red
+// where texels differ (brighter for larger float differences), grey where equal.
+std::string writeDiffImage(const Image& device, const Image& model, const std::string& dir);
+
 bool imageFilesSupported();
 
 }  // namespace rayspec

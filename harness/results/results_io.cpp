@@ -65,11 +65,7 @@ void writeRecordsCsv(const Results& r, const fs::path& path, const std::vector<s
   for (size_t i = 0; i < rays; ++i) {
     const uint32_t* rec = &r.records[i * words];
     out << (r.width ? i % r.width : i) << ',' << (r.width ? i / r.width : 0);
-    for (const RecordField* f : fields) {
-      const int bit = recordFieldIndex(f->name);
-      const bool written = f->automatic || (rec[kRecordWrittenMaskWord] >> bit) & 1u;
-      out << ',' << (written ? fieldText(*f, rec) : std::string());
-    }
+    for (const RecordField* f : fields) out << ',' << formatField(f->name, rec);
     out << '\n';
   }
 }
@@ -167,6 +163,13 @@ Results readResults(const std::string& dir_name, std::string* error) {
   }
   if (!readWords(dir / "records.bin", r.records)) *error = "cannot read " + (dir / "records.bin").string();
   return r;
+}
+
+std::string formatField(const std::string& name, const uint32_t* rec) {
+  const RecordField* f = findRecordField(name);
+  if (!f) return {};
+  const bool written = f->automatic || (rec[kRecordWrittenMaskWord] >> recordFieldIndex(name)) & 1u;
+  return written ? fieldText(*f, rec) : std::string();
 }
 
 std::vector<uint8_t> previewPixels(const Image& im) {

@@ -24,6 +24,10 @@ std::string writeResults(const Results& r, const std::string& dir,
 // Reads a bundle back; error set on failure.
 Results readResults(const std::string& dir, std::string* error);
 
+// One field of one record as text ("1.5", "0.25 0.5"); empty when the field
+// is recordable and was not written.
+std::string formatField(const std::string& field, const uint32_t* record);
+
 // The viewable 8-bit RGBA picture of an image (ids get distinct colours,
 // floats are clamped to [0, 1]), as written to NAME.png.
 std::vector<uint8_t> previewPixels(const Image& image);

@@ -1,22 +1,13 @@
 // The console side of a run: a progress line per case while it goes, and a
 // readable summary at the end (counts per status, the failing cases first).
-// Also writes OUT/summary.txt and OUT/results.csv (case,Status,duration).
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "compare/verdict.h"
+#include "report/case_outcome.h"
 
 namespace rayspec {
-
-struct CaseOutcome {
-  std::string name;
-  Status status = Status::Pass;
-  std::string headline;
-  double seconds = 0.0, device_seconds = 0.0, model_seconds = 0.0;
-  Verdict verdict;
-};
 
 class RunSummary {
  public:
@@ -24,7 +15,8 @@ class RunSummary {
   void add(const CaseOutcome& outcome);          // prints the progress line
   void addTeardownError(const std::string& m);   // validation errors at device destruction
   void print() const;
-  std::string write(const std::string& dir) const;
+  const std::vector<CaseOutcome>& outcomes() const { return outcomes_; }
+  const std::vector<std::string>& teardownErrors() const { return teardown_errors_; }
   bool failed() const;
   bool allNotSupported() const;
 

@@ -1,8 +1,6 @@
-#include "cli/run_summary.h"
+#include "report/run_summary.h"
 
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <map>
 
 namespace rayspec {
@@ -45,20 +43,6 @@ void RunSummary::print() const {
     std::printf("  %-44s %s\n", o.name.c_str(), o.headline.c_str());
   }
   for (const std::string& m : teardown_errors_) std::printf("  validation error at device teardown: %s\n", m.c_str());
-}
-
-std::string RunSummary::write(const std::string& dir) const {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) return "cannot create " + dir + ": " + ec.message();
-  std::ofstream csv(dir + "/results.csv");
-  for (const CaseOutcome& o : outcomes_) csv << o.name << ',' << statusName(o.status) << ',' << o.seconds << '\n';
-  std::ofstream txt(dir + "/summary.txt");
-  for (const CaseOutcome& o : outcomes_) {
-    txt << o.name << ": " << o.headline << '\n';
-    for (const Finding& f : o.verdict.findings) txt << "    [" << statusName(f.status) << "] " << f.rule << ": " << f.message << '\n';
-  }
-  return {};
 }
 
 }  // namespace rayspec

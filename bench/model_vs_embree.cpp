@@ -1,0 +1,173 @@
+// The model against a bare loop of rtcIntersect1, in one process: the same
+// scene (a TLAS with one instance of a triangle grid BLAS, opaque, no any-hit)
+// and the same rays. Both sides include building the Embree scene; the model
+// also interprets raygen / closest-hit / miss and writes the per-ray records.
+// Counter "rays_per_second" for both; single thread and all cores.
+#include <benchmark/benchmark.h>
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <atomic>
+#include <thread>
+#include <vector>
+
+#include "model/model_backend.h"
+#include "plan/plan.h"
+
+namespace rayspec {
+namespace {
+
+constexpr int kCells = 128;   // 2 * 128 * 128 triangles
+constexpr uint32_t kSize = 1024;  // 1024 x 1024 rays
+
+Case benchCase() {
+  Case c;
+  c.name = "bench/grid";
+  Geometry g;
+  g.flags = kGeometryOpaque;
+  const int n = kCells;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) g.vertices.push_back({-1 + 2.0f * i / n, -1 + 2.0f * j / n, 0.1f * std::sin(i * 0.3f) * std::cos(j * 0.2f)});
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      uint32_t a = j * (n + 1) + i, b = a + 1, cc = a + n + 2, d = a + n + 1;
+      g.indices.insert(g.indices.end(), {a, b, cc, a, cc, d});
+    }
+  Blas blas;
+  blas.name = "grid";
+  blas.geometries.push_back(g);
+  c.scene.blases.push_back(blas);
+  Instance inst;
+  inst.blas = 0;
+  c.scene.instances.push_back(inst);
+  c.rays.width = c.rays.height = kSize;
+  for (uint32_t y = 0; y < kSize; ++y)
+    for (uint32_t x = 0; x < kSize; ++x) {
+      Ray r;
+      r.origin = {0, 0, 3};
+      r.direction = {-1.2f + 2.4f * (x + 0.5f) / kSize, -1.2f + 2.4f * (y + 0.5f) / kSize, -3};
+      r.tmin = 0.001f;
+      r.tmax = 100;
+      c.rays.rays.push_back(r);
+    }
+  Stmt trace;
+  trace.kind = Stmt::Kind::Trace;
+  c.pipeline.raygen = {trace};
+  auto rec = [](const char* f, ValueType t) {
+    Expr e; e.kind = Expr::Kind::Builtin; e.name = f; e.type = t;
+    return std::pair<std::string, Expr>(f, e);
+  };
+  Stmt miss; miss.kind = Stmt::Kind::Record;
+  Expr zero; zero.type = ValueType::Uint; zero.literal = {0};
+  miss.assigns = {{"hit", zero}};
+  c.pipeline.miss = {{miss}};
+  Stmt chit; chit.kind = Stmt::Kind::Record;
+  chit.assigns = {rec("hit", ValueType::Uint), rec("primitive_id", ValueType::Uint), rec("hit_t", ValueType::Float)};
+  HitGroup hg;
+  hg.closest_hit = Program{chit};
+  c.pipeline.hit_groups = {hg};
+  c.outputs.per_ray = {"hit", "primitive_id", "hit_t"};
+  return c;
+}
+
+const Case& theCase() {
+  static const Case c = benchCase();
+  return c;
+}
+
+unsigned threadsOf(const benchmark::State& s) {
+  return s.range(0) ? static_cast<unsigned>(s.range(0)) : std::max(1u, std::thread::hardware_concurrency());
+}
+
+// The bare loop: build the same two-level scene, rtcIntersect1 every ray,
+// keep primitive and t.
+void BM_BareEmbree(benchmark::State& state) {
+  const Case& c = theCase();
+  const unsigned threads = threadsOf(state);
+  const Geometry& g = c.scene.blases[0].geometries[0];
+  std::vector<uint32_t> prim(c.rays.rays.size());
+  std::vector<float> tout(c.rays.rays.size());
+  for (auto _ : state) {
+    RTCDevice dev = rtcNewDevice(nullptr);
+    RTCScene blas = rtcNewScene(dev);
+    RTCGeometry geom = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
+    rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, g.vertices.data(), 0,
+                               sizeof(Vec3), g.vertices.size());
+    rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, g.indices.data(), 0,
+                               3 * sizeof(uint32_t), g.indices.size() / 3);
+    rtcCommitGeometry(geom);
+    rtcAttachGeometry(blas, geom);
+    rtcReleaseGeometry(geom);
+    rtcCommitScene(blas);
+    RTCScene top = rtcNewScene(dev);
+    RTCGeometry ig = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(ig, blas);
+    rtcSetGeometryTransform(ig, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, c.scene.instances[0].transform.data());
+    rtcCommitGeometry(ig);
+    rtcAttachGeometry(top, ig);
+    rtcReleaseGeometry(ig);
+    rtcCommitScene(top);
+    std::atomic<size_t> next{0};
+    const size_t n = c.rays.rays.size();
+    auto work = [&] {
+      RTCIntersectContext ctx;
+      rtcInitIntersectContext(&ctx);
+      for (;;) {
+        const size_t b = next.fetch_add(256);
+        if (b >= n) break;
+        for (size_t i = b; i < std::min(n, b + 256); ++i) {
+          const Ray& r = c.rays.rays[i];
+          RTCRayHit rh;
+          rh.ray.org_x = r.origin[0]; rh.ray.org_y = r.origin[1]; rh.ray.org_z = r.origin[2];
+          rh.ray.dir_x = r.direction[0]; rh.ray.dir_y = r.direction[1]; rh.ray.dir_z = r.direction[2];
+          rh.ray.tnear = r.tmin; rh.ray.tfar = r.tmax; rh.ray.time = 0; rh.ray.mask = 0xFFFFFFFF;
+          rh.ray.id = 0; rh.ray.flags = 0;
+          rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+          rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+          rtcIntersect1(top, &ctx, &rh);
+          prim[i] = rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? ~0u : rh.hit.primID;
+          tout[i] = rh.ray.tfar;
+        }
+      }
+    };
+    if (threads == 1) work();
+    else {
+      std::vector<std::thread> pool;
+      for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work);
+      for (auto& t : pool) t.join();
+    }
+    benchmark::DoNotOptimize(prim.data());
+    rtcReleaseScene(top);
+    rtcReleaseScene(blas);
+    rtcReleaseDevice(dev);
+  }
+  state.counters["rays_per_second"] =
+      benchmark::Counter(double(c.rays.rays.size()) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["threads"] = threads;
+}
+
+void BM_Model(benchmark::State& state, ModelTier tier) {
+  const Case& c = theCase();
+  const Plan plan = derivePlan(c);
+  ModelOptions o;
+  o.tier = tier;
+  o.threads = threadsOf(state);
+  for (auto _ : state) {
+    Results r = runOnModel(c, plan, o);
+    if (r.status != "ok") state.SkipWithError(r.status.c_str());
+    benchmark::DoNotOptimize(r.records.data());
+  }
+  state.counters["rays_per_second"] =
+      benchmark::Counter(double(c.rays.rays.size()) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["threads"] = o.threads;
+}
+
+BENCHMARK(BM_BareEmbree)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Model, fast, ModelTier::Fast)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Model, robust, ModelTier::Robust)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Model, exact, ModelTier::Exact)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+}  // namespace rayspec
+
+BENCHMARK_MAIN();

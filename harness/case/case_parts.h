@@ -1,0 +1,32 @@
+// Internal to the case module: the readers of each section of a case file.
+// Each records its problems in the YamlReader and fills what it could read.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "case/case.h"
+#include "case/yaml_reader.h"
+
+namespace rayspec {
+
+void parseScene(YamlReader& r, const YAML::Node& n, Scene& scene);
+void parseRays(YamlReader& r, const YAML::Node& n, Rays& rays);
+void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& pipeline);
+void parseOutputs(YamlReader& r, const YAML::Node& n, Outputs& outputs);
+
+// identity | 12 numbers | {translate, scale, rotate: {axis, degrees}}
+std::optional<Transform> parseTransform(YamlReader& r, const YAML::Node& n, const std::string& field);
+
+// {uints: [..]} | {floats: [..]}, at most 8 words.
+std::optional<std::vector<uint32_t>> parseRecordData(YamlReader& r, const YAML::Node& n,
+                                                     const std::string& field);
+
+// A stage program (a list of statements); false when something failed.
+bool parseProgram(YamlReader& r, const YAML::Node& n, const std::string& field, Program& out);
+bool parseExpr(YamlReader& r, const YAML::Node& n, const std::string& field, Expr& out);
+
+// Checks every program of the pipeline for its stage (program/ops.h checkProgram).
+void checkPrograms(YamlReader& r, Case& c, const YAML::Node& pipeline_node);
+
+}  // namespace rayspec

@@ -1,0 +1,51 @@
+// Runs checkProgram (program/ops.h) on every stage program of a case, and the
+// checks that need the whole pipeline (recursion depth of nested traces).
+#include "case/case_parts.h"
+#include "program/ops.h"
+
+namespace rayspec {
+namespace {
+
+const Stmt* findTrace(const std::vector<Stmt>& block) {
+  for (const Stmt& s : block) {
+    if (s.kind == Stmt::Kind::Trace) return &s;
+    if (const Stmt* t = findTrace(s.then_)) return t;
+    if (const Stmt* t = findTrace(s.else_)) return t;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+void checkPrograms(YamlReader& r, Case& c, const YAML::Node& /*pipeline_node*/) {
+  Pipeline& p = c.pipeline;
+  auto check = [&](Program& prog, Stage stage, const std::string& field) {
+    if (r.isBadProgram(field)) return;
+    if (auto e = checkProgram(prog, stage, c.outputs.counters, c.outputs.per_ray)) {
+      SourceLoc loc = e->loc;
+      if (loc.file.empty()) loc.file = r.file();
+      if (loc.field.empty()) loc.field = field;
+      r.error(loc, e->message);
+      return;
+    }
+    if (stage == Stage::Miss || stage == Stage::ClosestHit)
+      if (const Stmt* t = findTrace(prog); t && p.max_recursion < 2)
+        r.error(t->loc, std::string("a trace in ") + stageName(stage) +
+                            " needs pipeline.max_recursion >= 2 (it is " +
+                            std::to_string(p.max_recursion) + ")");
+  };
+  check(p.raygen, Stage::Raygen, "pipeline.raygen");
+  for (size_t i = 0; i < p.miss.size(); ++i)
+    check(p.miss[i], Stage::Miss, "pipeline.miss[" + std::to_string(i) + "]");
+  for (size_t i = 0; i < p.hit_groups.size(); ++i) {
+    HitGroup& g = p.hit_groups[i];
+    const std::string f = "pipeline.hit_groups[" + std::to_string(i) + "].";
+    if (g.closest_hit) check(*g.closest_hit, Stage::ClosestHit, f + "closest_hit");
+    if (g.any_hit) check(*g.any_hit, Stage::AnyHit, f + "any_hit");
+    if (g.intersection) check(*g.intersection, Stage::Intersection, f + "intersection");
+  }
+  for (size_t i = 0; i < p.callables.size(); ++i)
+    check(p.callables[i], Stage::Callable, "pipeline.callables[" + std::to_string(i) + "]");
+}
+
+}  // namespace rayspec

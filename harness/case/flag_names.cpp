@@ -1,0 +1,42 @@
+// Names of the Vulkan flag bits as written in cases.
+#include "case/flag_names.h"
+
+#include "case/case.h"
+
+namespace rayspec {
+
+const FlagTable& geometryFlagNames() {
+  static const FlagTable t = {{"opaque", kGeometryOpaque},
+                              {"no_duplicate_any_hit", kGeometryNoDuplicateAnyHit}};
+  return t;
+}
+
+const FlagTable& instanceFlagNames() {
+  static const FlagTable t = {{"triangle_facing_cull_disable", kInstanceFacingCullDisable},
+                              {"triangle_flip_facing", kInstanceFlipFacing},
+                              {"force_opaque", kInstanceForceOpaque},
+                              {"force_no_opaque", kInstanceForceNoOpaque}};
+  return t;
+}
+
+const FlagTable& rayFlagNames() {
+  static const FlagTable t = {{"opaque", kRayOpaque},
+                              {"no_opaque", kRayNoOpaque},
+                              {"terminate_on_first_hit", kRayTerminateOnFirstHit},
+                              {"skip_closest_hit", kRaySkipClosestHit},
+                              {"cull_back_facing", kRayCullBackFacing},
+                              {"cull_front_facing", kRayCullFrontFacing},
+                              {"cull_opaque", kRayCullOpaque},
+                              {"cull_no_opaque", kRayCullNoOpaque},
+                              {"skip_triangles", kRaySkipTriangles},
+                              {"skip_aabbs", kRaySkipAabbs}};
+  return t;
+}
+
+const FlagTable& pipelineFlagNames() {
+  static const FlagTable t = {{"skip_triangles", kPipelineSkipTriangles},
+                              {"skip_aabbs", kPipelineSkipAabbs}};
+  return t;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,92 @@
+// outputs: counters, per-ray fields, images.
+#include <algorithm>
+#include <cctype>
+
+#include "case/case_parts.h"
+#include "results/record_layout.h"
+
+namespace rayspec {
+namespace {
+
+bool isIdentifier(const std::string& s) {
+  if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
+  return std::all_of(s.begin(), s.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+  });
+}
+
+bool contains(const std::vector<std::string>& v, const std::string& s) {
+  return std::find(v.begin(), v.end(), s) != v.end();
+}
+
+void parseNames(YamlReader& r, const YAML::Node& n, const std::string& field, bool record_fields,
+                std::vector<std::string>& out) {
+  if (!r.expectSeq(n, field)) return;
+  for (size_t i = 0; i < n.size(); ++i) {
+    const std::string f = field + "[" + std::to_string(i) + "]";
+    auto name = r.string(n[i], f);
+    if (!name) continue;
+    if (!isIdentifier(*name)) {
+      r.error(n[i], f, "'" + *name + "' is not a valid name");
+      continue;
+    }
+    if (contains(out, *name)) {
+      r.error(n[i], f, "'" + *name + "' is declared twice");
+      continue;
+    }
+    if (record_fields) {
+      const RecordField* rf = findRecordField(*name);
+      if (!rf) {
+        std::string list;
+        for (const RecordField& x : recordFields())
+          if (!x.automatic) list += std::string(list.empty() ? "" : ", ") + x.name;
+        r.error(n[i], f, "unknown per-ray field '" + *name + "' (recordable: " + list + ")");
+        continue;
+      }
+      if (rf->automatic) {
+        r.error(n[i], f, "per-ray field '" + *name + "' is kept automatically; do not declare it");
+        continue;
+      }
+    }
+    out.push_back(*name);
+  }
+}
+
+}  // namespace
+
+void parseOutputs(YamlReader& r, const YAML::Node& n, Outputs& o) {
+  if (!r.expectMap(n, "outputs", {"counters", "per_ray", "images"})) return;
+  if (auto v = YamlReader::get(n, "counters"); v.IsDefined())
+    parseNames(r, v, "outputs.counters", false, o.counters);
+  if (auto v = YamlReader::get(n, "per_ray"); v.IsDefined())
+    parseNames(r, v, "outputs.per_ray", true, o.per_ray);
+  const YAML::Node images = YamlReader::get(n, "images");
+  if (!images.IsDefined() || !r.expectSeq(images, "outputs.images")) return;
+  for (size_t i = 0; i < images.size(); ++i) {
+    const std::string f = "outputs.images[" + std::to_string(i) + "]";
+    const YAML::Node img = images[i];
+    if (!r.expectMap(img, f, {"name", "from"}) || !(r.require(img, f, "name") & r.require(img, f, "from")))
+      continue;
+    ImageOutput out;
+    out.loc = r.loc(img, f);
+    auto name = r.string(YamlReader::get(img, "name"), f + ".name");
+    auto from = r.string(YamlReader::get(img, "from"), f + ".from");
+    if (!name || !from) continue;
+    if (name->empty() || name->find_first_of("/\\ \t") != std::string::npos) {
+      r.error(YamlReader::get(img, "name"), f + ".name", "an image name is a plain name (no path)");
+      continue;
+    }
+    for (const ImageOutput& other : o.images)
+      if (other.name == *name) r.error(YamlReader::get(img, "name"), f + ".name", "duplicate image name");
+    if (!contains(o.per_ray, *from)) {
+      r.error(YamlReader::get(img, "from"), f + ".from",
+              "field '" + *from + "' is not declared in outputs.per_ray");
+      continue;
+    }
+    out.name = *name;
+    out.field = *from;
+    o.images.push_back(out);
+  }
+}
+
+}  // namespace rayspec

@@ -1,0 +1,129 @@
+// pipeline: recursion, flags, the stage programs and the shader binding table.
+#include "case/case_parts.h"
+#include "case/flag_names.h"
+
+namespace rayspec {
+namespace {
+
+// One SBT region: a group index, `zero`, or {group, data}.
+void parseSbtRegion(YamlReader& r, const YAML::Node& n, const std::string& field, size_t groups,
+                    const char* what, std::vector<SbtRecord>& out) {
+  if (!r.expectSeq(n, field)) return;
+  for (size_t i = 0; i < n.size(); ++i) {
+    const std::string f = field + "[" + std::to_string(i) + "]";
+    const YAML::Node item = n[i];
+    SbtRecord rec;
+    if (item.IsMap() && (!r.expectMap(item, f, {"group", "data"}) || !r.require(item, f, "group")))
+      continue;
+    // (yaml-cpp: assigning to a Node writes through to the node it refers to,
+    // so the group node is bound once here.)
+    const YAML::Node group = item.IsMap() ? YamlReader::get(item, "group") : item;
+    if (item.IsMap()) {
+      if (auto d = YamlReader::get(item, "data"); d.IsDefined())
+        if (auto words = parseRecordData(r, d, f + ".data")) rec.data = *words;
+    }
+    if (group.IsScalar() && group.Scalar() == "zero") {
+      if (!rec.data.empty()) r.error(item, f, "an all-zero record carries no data");
+    } else if (auto g = r.uint(group, item.IsMap() ? f + ".group" : f)) {
+      if (*g >= groups)
+        r.error(group, item.IsMap() ? f + ".group" : f,
+                "no " + std::string(what) + " " + std::to_string(*g) + " (there are " +
+                    std::to_string(groups) + ")");
+      rec.group = *g;
+    }
+    out.push_back(std::move(rec));
+  }
+}
+
+std::vector<SbtRecord> defaultRegion(size_t n) {
+  std::vector<SbtRecord> region(n);
+  for (size_t i = 0; i < n; ++i) region[i].group = static_cast<uint32_t>(i);
+  return region;
+}
+
+void parsePrograms(YamlReader& r, const YAML::Node& n, const std::string& field,
+                   std::vector<Program>& out) {
+  if (!r.expectSeq(n, field)) return;
+  for (size_t i = 0; i < n.size(); ++i) {
+    Program p;
+    parseProgram(r, n[i], field + "[" + std::to_string(i) + "]", p);
+    out.push_back(std::move(p));
+  }
+}
+
+void parseHitGroups(YamlReader& r, const YAML::Node& n, std::vector<HitGroup>& out) {
+  if (!r.expectSeq(n, "pipeline.hit_groups")) return;
+  for (size_t i = 0; i < n.size(); ++i) {
+    const std::string f = "pipeline.hit_groups[" + std::to_string(i) + "]";
+    HitGroup g;
+    g.loc = r.loc(n[i], f);
+    if (n[i].IsNull()) {  // `- {}` or `- ~`: a group with no shaders
+      out.push_back(std::move(g));
+      continue;
+    }
+    if (r.expectMap(n[i], f, {"closest_hit", "any_hit", "intersection"})) {
+      struct Slot { const char* key; std::optional<Program>* prog; };
+      for (Slot s : {Slot{"closest_hit", &g.closest_hit}, Slot{"any_hit", &g.any_hit},
+                     Slot{"intersection", &g.intersection}}) {
+        const YAML::Node p = YamlReader::get(n[i], s.key);
+        if (!p.IsDefined()) continue;
+        Program prog;
+        parseProgram(r, p, f + "." + s.key, prog);
+        *s.prog = std::move(prog);
+      }
+    }
+    out.push_back(std::move(g));
+  }
+}
+
+}  // namespace
+
+void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
+  p.raygen.clear();
+  Stmt trace;
+  trace.kind = Stmt::Kind::Trace;
+  trace.loc = r.loc(n, "pipeline.raygen");
+  p.raygen.push_back(trace);  // default raygen: [trace: {}]
+  if (!n.IsDefined()) return;
+  if (!r.expectMap(n, "pipeline", {"max_recursion", "flags", "raygen", "raygen_data", "miss",
+                                   "hit_groups", "callables", "sbt"}))
+    return;
+  if (auto v = YamlReader::get(n, "max_recursion"); v.IsDefined())
+    if (auto x = r.uint(v, "pipeline.max_recursion", 31)) {
+      if (*x == 0) r.error(v, "pipeline.max_recursion", "must be at least 1 (raygen traces)");
+      p.max_recursion = *x;
+    }
+  if (auto v = YamlReader::get(n, "flags"); v.IsDefined())
+    if (auto x = r.flags(v, "pipeline.flags", pipelineFlagNames())) p.flags = *x;
+  if (auto v = YamlReader::get(n, "raygen"); v.IsDefined()) {
+    p.raygen.clear();
+    parseProgram(r, v, "pipeline.raygen", p.raygen);
+  }
+  if (auto v = YamlReader::get(n, "raygen_data"); v.IsDefined())
+    if (auto words = parseRecordData(r, v, "pipeline.raygen_data")) p.raygen_data = *words;
+  if (auto v = YamlReader::get(n, "miss"); v.IsDefined()) parsePrograms(r, v, "pipeline.miss", p.miss);
+  if (auto v = YamlReader::get(n, "hit_groups"); v.IsDefined()) parseHitGroups(r, v, p.hit_groups);
+  if (auto v = YamlReader::get(n, "callables"); v.IsDefined())
+    parsePrograms(r, v, "pipeline.callables", p.callables);
+
+  p.sbt_miss = defaultRegion(p.miss.size());
+  p.sbt_hit = defaultRegion(p.hit_groups.size());
+  p.sbt_callable = defaultRegion(p.callables.size());
+  const YAML::Node sbt = YamlReader::get(n, "sbt");
+  if (!sbt.IsDefined()) return;
+  if (!r.expectMap(sbt, "pipeline.sbt", {"miss", "hit", "callable"})) return;
+  if (auto v = YamlReader::get(sbt, "miss"); v.IsDefined()) {
+    p.sbt_miss.clear();
+    parseSbtRegion(r, v, "pipeline.sbt.miss", p.miss.size(), "miss shader", p.sbt_miss);
+  }
+  if (auto v = YamlReader::get(sbt, "hit"); v.IsDefined()) {
+    p.sbt_hit.clear();
+    parseSbtRegion(r, v, "pipeline.sbt.hit", p.hit_groups.size(), "hit group", p.sbt_hit);
+  }
+  if (auto v = YamlReader::get(sbt, "callable"); v.IsDefined()) {
+    p.sbt_callable.clear();
+    parseSbtRegion(r, v, "pipeline.sbt.callable", p.callables.size(), "callable", p.sbt_callable);
+  }
+}
+
+}  // namespace rayspec

@@ -1,0 +1,228 @@
+// Stage programs: a list of statements (table in cases/README.md).
+#include "case/case_parts.h"
+#include "case/flag_names.h"
+#include "program/builtins.h"
+
+namespace rayspec {
+namespace {
+
+bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt& s);
+
+bool parseBlock(YamlReader& r, const YAML::Node& n, const std::string& field, std::vector<Stmt>& out) {
+  if (n.IsNull()) return true;
+  if (!r.expectSeq(n, field)) return false;
+  bool ok = true;
+  for (size_t i = 0; i < n.size(); ++i) {
+    Stmt s;
+    ok = parseStmt(r, n[i], field + "[" + std::to_string(i) + "]", s) && ok;
+    out.push_back(std::move(s));
+  }
+  return ok;
+}
+
+// {name: expr, ...} with names from `allowed`, into s.assigns.
+bool parseAssigns(YamlReader& r, const YAML::Node& n, const std::string& field,
+                  std::initializer_list<const char*> allowed, Stmt& s) {
+  if (!r.expectMap(n, field, allowed)) return false;
+  bool ok = true;
+  for (auto it = n.begin(); it != n.end(); ++it) {
+    const std::string name = it->first.Scalar();
+    bool known = false;
+    for (const char* a : allowed) known = known || name == a;
+    if (!known) { ok = false; continue; }
+    Expr e;
+    ok = parseExpr(r, it->second, field + "." + name, e) && ok;
+    s.assigns.emplace_back(name, std::move(e));
+  }
+  return ok;
+}
+
+bool parseRecord(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::Record;
+  if (v.IsMap()) {
+    bool ok = true;
+    for (auto it = v.begin(); it != v.end(); ++it) {
+      const std::string name = it->first.IsScalar() ? it->first.Scalar() : "?";
+      Expr e;
+      ok = parseExpr(r, it->second, f + "." + name, e) && ok;
+      s.assigns.emplace_back(name, std::move(e));
+    }
+    return ok;
+  }
+  if (!v.IsSequence()) {
+    r.error(v, f, "expected [field, ...] or {field: expr, ...}");
+    return false;
+  }
+  bool ok = true;
+  for (size_t i = 0; i < v.size(); ++i) {
+    const std::string fi = f + "[" + std::to_string(i) + "]";
+    auto name = r.string(v[i], fi);
+    if (!name) { ok = false; continue; }
+    if (!findBuiltin(*name)) {
+      r.error(v[i], fi, "record: [" + *name + "] needs a built-in named '" + *name +
+                            "'; write record: {" + *name + ": EXPR}");
+      ok = false;
+      continue;
+    }
+    Expr e;
+    e.kind = Expr::Kind::Builtin;
+    e.name = *name;
+    e.loc = r.loc(v[i], f + "." + *name);
+    s.assigns.emplace_back(*name, std::move(e));
+  }
+  return ok;
+}
+
+bool parseTrace(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::Trace;
+  if (v.IsNull()) return true;
+  if (!r.expectMap(v, f, {"origin", "direction", "tmin", "tmax", "flags", "cull_mask", "sbt_offset",
+                          "sbt_stride", "miss"}))
+    return false;
+  TraceArgs& t = s.trace;
+  struct Slot { const char* key; std::vector<Expr>* exprs; };
+  const Slot slots[] = {{"origin", &t.origin},         {"direction", &t.direction},
+                        {"tmin", &t.tmin},             {"tmax", &t.tmax},
+                        {"flags", &t.flags},           {"cull_mask", &t.cull_mask},
+                        {"sbt_offset", &t.sbt_offset}, {"sbt_stride", &t.sbt_stride},
+                        {"miss", &t.miss}};
+  bool ok = true;
+  for (const Slot& slot : slots) {
+    const YAML::Node a = YamlReader::get(v, slot.key);
+    if (!a.IsDefined()) continue;
+    const std::string fa = f + "." + slot.key;
+    Expr e;
+    if (std::string(slot.key) == "flags" && a.IsSequence()) {
+      // A list of ray flag names is a Uint literal.
+      auto bits = r.flags(a, fa, rayFlagNames());
+      if (!bits) { ok = false; continue; }
+      e.kind = Expr::Kind::Literal;
+      e.type = ValueType::Uint;
+      e.literal = {static_cast<double>(*bits)};
+      e.loc = r.loc(a, fa);
+    } else if (!parseExpr(r, a, fa, e)) {
+      ok = false;
+      continue;
+    }
+    slot.exprs->push_back(std::move(e));
+  }
+  return ok;
+}
+
+bool parseReport(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::Report;
+  if (!r.expectMap(v, f, {"t", "kind", "attribute", "accepted", "rejected"})) return false;
+  if (!(r.require(v, f, "t") & r.require(v, f, "kind"))) return false;
+  bool ok = parseExpr(r, YamlReader::get(v, "t"), f + ".t", s.t);
+  ok = parseExpr(r, YamlReader::get(v, "kind"), f + ".kind", s.hit_kind) && ok;
+  if (auto a = YamlReader::get(v, "attribute"); a.IsDefined()) {
+    Expr e;
+    ok = parseExpr(r, a, f + ".attribute", e) && ok;
+    s.attribute.push_back(std::move(e));
+  }
+  if (auto a = YamlReader::get(v, "accepted"); a.IsDefined())
+    ok = parseBlock(r, a, f + ".accepted", s.then_) && ok;
+  if (auto a = YamlReader::get(v, "rejected"); a.IsDefined())
+    ok = parseBlock(r, a, f + ".rejected", s.else_) && ok;
+  return ok;
+}
+
+bool parseCall(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::Call;
+  if (!r.expectMap(v, f, {"index", "position", "normal", "value", "color"})) return false;
+  if (!r.require(v, f, "index")) return false;
+  bool ok = parseExpr(r, YamlReader::get(v, "index"), f + ".index", s.call_index);
+  for (const char* key : {"position", "normal", "value", "color"}) {
+    const YAML::Node a = YamlReader::get(v, key);
+    if (!a.IsDefined()) continue;
+    Expr e;
+    ok = parseExpr(r, a, f + "." + key, e) && ok;
+    s.assigns.emplace_back(key, std::move(e));
+  }
+  return ok;
+}
+
+bool parseIf(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt& s) {
+  s.kind = Stmt::Kind::If;
+  if (!r.expectMap(n, field, {"if", "then", "else"})) return false;
+  bool ok = parseExpr(r, YamlReader::get(n, "if"), field + ".if", s.cond);
+  if (auto t = YamlReader::get(n, "then"); t.IsDefined()) ok = parseBlock(r, t, field + ".then", s.then_) && ok;
+  if (auto e = YamlReader::get(n, "else"); e.IsDefined()) ok = parseBlock(r, e, field + ".else", s.else_) && ok;
+  return ok;
+}
+
+bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt& s) {
+  s.loc = r.loc(n, field);
+  if (n.IsScalar()) {
+    if (n.Scalar() == "ignore") { s.kind = Stmt::Kind::Ignore; return true; }
+    if (n.Scalar() == "terminate") { s.kind = Stmt::Kind::Terminate; return true; }
+    r.error(n, field, "unknown statement '" + n.Scalar() + "'");
+    return false;
+  }
+  if (!n.IsMap() || n.size() == 0) {
+    r.error(n, field, "expected a statement ({count: NAME}, {record: ...}, ignore, ...)");
+    return false;
+  }
+  if (YamlReader::has(n, "if")) {
+    s.loc = r.loc(n, field + ".if");
+    return parseIf(r, n, field, s);
+  }
+  if (n.size() != 1) {
+    r.error(n, field, "one statement per list item (or if/then/else)");
+    return false;
+  }
+  auto it = n.begin();
+  const std::string key = it->first.IsScalar() ? it->first.Scalar() : "?";
+  const YAML::Node v = it->second;
+  const std::string f = field + "." + key;
+  s.loc = r.loc(it->first, f);
+  if (key == "count") {
+    s.kind = Stmt::Kind::Count;
+    auto name = r.string(v, f);
+    if (name) s.counter = *name;
+    return name.has_value();
+  }
+  if (key == "record") return parseRecord(r, v, f, s);
+  if (key == "payload") {
+    s.kind = Stmt::Kind::SetPayload;
+    return parseAssigns(r, v, f, {"color", "value"}, s);
+  }
+  if (key == "call_data") {
+    s.kind = Stmt::Kind::SetCall;
+    return parseAssigns(r, v, f, {"color", "value"}, s);
+  }
+  if (key == "report") return parseReport(r, v, f, s);
+  if (key == "trace") return parseTrace(r, v, f, s);
+  if (key == "call") return parseCall(r, v, f, s);
+  if (key == "light") {
+    s.kind = Stmt::Kind::Light;
+    auto name = r.string(v, f);
+    if (!name) return false;
+    s.light = *name;
+    if (s.light != "point" && s.light != "spot" && s.light != "directional") {
+      r.error(v, f, "unknown light '" + s.light + "' (point, spot, directional)");
+      return false;
+    }
+    return true;
+  }
+  r.error(it->first, f,
+          "unknown statement '" + key +
+              "' (count, record, payload, call_data, ignore, terminate, report, trace, call, light, if)");
+  return false;
+}
+
+}  // namespace
+
+bool parseProgram(YamlReader& r, const YAML::Node& n, const std::string& field, Program& out) {
+  out.clear();
+  if (!n.IsSequence()) {
+    r.error(n, field, "a stage program is a list of statements");
+    r.markBadProgram(field);
+    return false;
+  }
+  const bool ok = parseBlock(r, n, field, out);
+  if (!ok) r.markBadProgram(field);
+  return ok;
+}
+
+}  // namespace rayspec

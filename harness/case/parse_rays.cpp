@@ -1,0 +1,150 @@
+// rays: defaults, then exactly one of camera / grid / list.
+#include "case/camera_rays.h"
+#include "case/case_parts.h"
+#include "case/flag_names.h"
+
+namespace rayspec {
+namespace {
+
+// Reads the per-ray fields shared by the defaults and list entries.
+void parseRayFields(YamlReader& r, const YAML::Node& n, const std::string& field, Ray& ray) {
+  auto get = [&](const char* key) { return YamlReader::get(n, key); };
+  auto f = [&](const char* key) { return field.empty() ? std::string(key) : field + "." + key; };
+  // Non-finite and out-of-range values are allowed: they are R-UB robustness probes.
+  if (auto v = get("tmin"); v.IsDefined())
+    if (auto x = r.number(v, f("tmin"), true)) ray.tmin = static_cast<float>(*x);
+  if (auto v = get("tmax"); v.IsDefined())
+    if (auto x = r.number(v, f("tmax"), true)) ray.tmax = static_cast<float>(*x);
+  if (auto v = get("flags"); v.IsDefined())
+    if (auto x = r.flags(v, f("flags"), rayFlagNames())) ray.flags = *x;
+  // Full 32-bit values: the rules on the low bits (R-MASK, R-SBT-*) are tested with them.
+  if (auto v = get("cull_mask"); v.IsDefined())
+    if (auto x = r.uint(v, f("cull_mask"))) ray.cull_mask = *x;
+  if (auto v = get("sbt_offset"); v.IsDefined())
+    if (auto x = r.uint(v, f("sbt_offset"))) ray.sbt_offset = *x;
+  if (auto v = get("sbt_stride"); v.IsDefined())
+    if (auto x = r.uint(v, f("sbt_stride"))) ray.sbt_stride = *x;
+  if (auto v = get("miss"); v.IsDefined())
+    if (auto x = r.uint(v, f("miss"))) ray.miss = *x;
+}
+
+std::optional<std::array<uint32_t, 2>> parseSize(YamlReader& r, const YAML::Node& n,
+                                                 const std::string& field) {
+  if (!n.IsSequence() || n.size() != 2) {
+    r.error(n, field, "expected [width, height]");
+    return std::nullopt;
+  }
+  auto w = r.uint(n[0], field + "[0]", 1u << 14), h = r.uint(n[1], field + "[1]", 1u << 14);
+  if (!w || !h) return std::nullopt;
+  if (*w == 0 || *h == 0) {
+    r.error(n, field, "width and height must be at least 1");
+    return std::nullopt;
+  }
+  if (uint64_t(*w) * *h > (1u << 24)) {
+    r.error(n, field, "at most 2^24 rays in a launch");
+    return std::nullopt;
+  }
+  return std::array<uint32_t, 2>{*w, *h};
+}
+
+void parseCamera(YamlReader& r, const YAML::Node& n, Rays& rays) {
+  const std::string field = "rays.camera";
+  if (!r.expectMap(n, field, {"size", "origin", "look_at", "up", "fov"})) return;
+  bool ok = r.require(n, field, "size") & r.require(n, field, "origin") &
+            r.require(n, field, "look_at") & r.require(n, field, "fov");
+  if (!ok) return;
+  CameraSpec cam;
+  auto size = parseSize(r, YamlReader::get(n, "size"), field + ".size");
+  auto origin = r.numbers<3>(YamlReader::get(n, "origin"), field + ".origin");
+  auto look_at = r.numbers<3>(YamlReader::get(n, "look_at"), field + ".look_at");
+  auto fov = r.number(YamlReader::get(n, "fov"), field + ".fov");
+  std::optional<std::array<double, 3>> up = cam.up;
+  if (YamlReader::has(n, "up")) up = r.numbers<3>(YamlReader::get(n, "up"), field + ".up");
+  if (!size || !origin || !look_at || !fov || !up) return;
+  if (!(*fov > 0 && *fov < 180)) {
+    r.error(YamlReader::get(n, "fov"), field + ".fov", "fov must be in (0, 180) degrees");
+    return;
+  }
+  cam.width = (*size)[0];
+  cam.height = (*size)[1];
+  cam.origin = *origin;
+  cam.look_at = *look_at;
+  cam.up = *up;
+  cam.fov_degrees = *fov;
+  rays.width = cam.width;
+  rays.height = cam.height;
+  rays.rays = cameraRays(cam, rays.defaults);
+  if (rays.rays.empty())
+    r.error(n, field, "degenerate camera (look_at equals origin, or up is parallel to the view)");
+}
+
+void parseGrid(YamlReader& r, const YAML::Node& n, Rays& rays) {
+  const std::string field = "rays.grid";
+  if (!r.expectMap(n, field, {"size", "origin", "du", "dv", "direction"})) return;
+  bool ok = r.require(n, field, "size") & r.require(n, field, "origin") & r.require(n, field, "du") &
+            r.require(n, field, "dv") & r.require(n, field, "direction");
+  if (!ok) return;
+  auto size = parseSize(r, YamlReader::get(n, "size"), field + ".size");
+  auto origin = r.numbers<3>(YamlReader::get(n, "origin"), field + ".origin");
+  auto du = r.numbers<3>(YamlReader::get(n, "du"), field + ".du");
+  auto dv = r.numbers<3>(YamlReader::get(n, "dv"), field + ".dv");
+  auto dir = r.numbers<3>(YamlReader::get(n, "direction"), field + ".direction");
+  if (!size || !origin || !du || !dv || !dir) return;
+  GridSpec g;
+  g.width = (*size)[0];
+  g.height = (*size)[1];
+  g.origin = *origin;
+  g.du = *du;
+  g.dv = *dv;
+  g.direction = *dir;
+  rays.width = g.width;
+  rays.height = g.height;
+  rays.rays = gridRays(g, rays.defaults);
+}
+
+void parseList(YamlReader& r, const YAML::Node& n, Rays& rays) {
+  const std::string field = "rays.list";
+  if (!r.expectSeq(n, field)) return;
+  if (n.size() == 0) {
+    r.error(n, field, "no rays");
+    return;
+  }
+  for (size_t i = 0; i < n.size(); ++i) {
+    const std::string f = field + "[" + std::to_string(i) + "]";
+    const YAML::Node item = n[i];
+    Ray ray = rays.defaults;
+    if (r.expectMap(item, f, {"origin", "direction", "tmin", "tmax", "flags", "cull_mask",
+                              "sbt_offset", "sbt_stride", "miss"}) &&
+        (r.require(item, f, "origin") & r.require(item, f, "direction"))) {
+      auto o = r.numbers<3>(YamlReader::get(item, "origin"), f + ".origin", true);
+      auto d = r.numbers<3>(YamlReader::get(item, "direction"), f + ".direction", true);
+      for (int k = 0; k < 3; ++k) {
+        if (o) ray.origin[k] = static_cast<float>((*o)[k]);
+        if (d) ray.direction[k] = static_cast<float>((*d)[k]);
+      }
+      parseRayFields(r, item, f, ray);
+    }
+    rays.rays.push_back(ray);
+  }
+  rays.width = static_cast<uint32_t>(rays.rays.size());
+  rays.height = 1;
+}
+
+}  // namespace
+
+void parseRays(YamlReader& r, const YAML::Node& n, Rays& rays) {
+  if (!r.expectMap(n, "rays", {"camera", "grid", "list", "tmin", "tmax", "flags", "cull_mask",
+                               "sbt_offset", "sbt_stride", "miss"}))
+    return;
+  parseRayFields(r, n, "rays", rays.defaults);
+  const int forms = YamlReader::has(n, "camera") + YamlReader::has(n, "grid") + YamlReader::has(n, "list");
+  if (forms != 1) {
+    r.error(n, "rays", "exactly one of camera, grid or list is required");
+    return;
+  }
+  if (YamlReader::has(n, "camera")) parseCamera(r, YamlReader::get(n, "camera"), rays);
+  else if (YamlReader::has(n, "grid")) parseGrid(r, YamlReader::get(n, "grid"), rays);
+  else parseList(r, YamlReader::get(n, "list"), rays);
+}
+
+}  // namespace rayspec

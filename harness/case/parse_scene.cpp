@@ -1,0 +1,207 @@
+// scene: blas (name -> geometries) and instances.
+#include <cmath>
+
+#include "case/case_parts.h"
+#include "case/flag_names.h"
+#include "case/triangle_grid.h"
+#include "case/transform.h"
+
+namespace rayspec {
+namespace {
+
+bool parseTriangles(YamlReader& r, const YAML::Node& n, const std::string& field, Geometry& g) {
+  g.kind = Geometry::Kind::Triangles;
+  if (!r.expectMap(n, field, {"grid", "vertices", "indices"})) return false;
+  const YAML::Node grid = YamlReader::get(n, "grid");
+  if (grid.IsDefined()) {
+    if (YamlReader::has(n, "vertices") || YamlReader::has(n, "indices")) {
+      r.error(n, field, "a grid takes no vertices or indices");
+      return false;
+    }
+    const std::string f = field + ".grid";
+    if (!r.expectMap(grid, f, {"cells", "size", "center"}) || !r.require(grid, f, "cells") ||
+        !r.require(grid, f, "size"))
+      return false;
+    const YAML::Node cells = YamlReader::get(grid, "cells");
+    if (!cells.IsSequence() || cells.size() != 2) {
+      r.error(cells, f + ".cells", "expected [x, y] cell counts");
+      return false;
+    }
+    auto cx = r.uint(cells[0], f + ".cells[0]", 4096);
+    auto cy = r.uint(cells[1], f + ".cells[1]", 4096);
+    auto size = r.numbers<2>(YamlReader::get(grid, "size"), f + ".size");
+    std::optional<std::array<double, 3>> center = std::array<double, 3>{0, 0, 0};
+    if (YamlReader::has(grid, "center")) center = r.numbers<3>(YamlReader::get(grid, "center"), f + ".center");
+    if (!cx || !cy || !size || !center) return false;
+    if (*cx == 0 || *cy == 0 || uint64_t(*cx) * *cy > (1u << 22)) {
+      r.error(cells, f + ".cells", "cell counts must be at least 1, at most 2^22 cells in all");
+      return false;
+    }
+    makeTriangleGrid(*cx, *cy, *size, *center, g);
+    return true;
+  }
+  if (!r.require(n, field, "vertices")) return false;
+  const YAML::Node verts = YamlReader::get(n, "vertices");
+  if (!r.expectSeq(verts, field + ".vertices")) return false;
+  bool ok = true;
+  for (size_t i = 0; i < verts.size(); ++i) {
+    auto v = r.numbers<3>(verts[i], field + ".vertices[" + std::to_string(i) + "]", true);
+    if (!v) { ok = false; continue; }
+    g.vertices.push_back({static_cast<float>((*v)[0]), static_cast<float>((*v)[1]),
+                          static_cast<float>((*v)[2])});
+  }
+  if (!ok) return false;
+  const YAML::Node idx = YamlReader::get(n, "indices");
+  if (idx.IsDefined()) {
+    if (!r.expectSeq(idx, field + ".indices")) return false;
+    for (size_t i = 0; i < idx.size(); ++i) {
+      const std::string f = field + ".indices[" + std::to_string(i) + "]";
+      auto v = r.uint(idx[i], f);
+      if (!v) { ok = false; continue; }
+      if (*v >= g.vertices.size()) {
+        r.error(idx[i], f, "index " + std::to_string(*v) + " is past the last vertex (" +
+                               std::to_string(g.vertices.size()) + " vertices)");
+        ok = false;
+      }
+      g.indices.push_back(*v);
+    }
+    if (ok && g.indices.size() % 3 != 0) {
+      r.error(idx, field + ".indices", "the index count is not a multiple of 3");
+      ok = false;
+    }
+    if (ok && g.indices.empty()) {
+      r.error(idx, field + ".indices", "no triangles");
+      ok = false;
+    }
+  } else if (g.vertices.size() % 3 != 0 || g.vertices.empty()) {
+    r.error(verts, field + ".vertices", "without indices, the vertex count must be a non-zero multiple of 3");
+    ok = false;
+  }
+  return ok;
+}
+
+bool parseAabbs(YamlReader& r, const YAML::Node& n, const std::string& field, Geometry& g) {
+  g.kind = Geometry::Kind::Aabbs;
+  if (!r.expectSeq(n, field)) return false;
+  if (n.size() == 0) {
+    r.error(n, field, "no AABBs");
+    return false;
+  }
+  bool ok = true;
+  for (size_t i = 0; i < n.size(); ++i) {
+    const std::string f = field + "[" + std::to_string(i) + "]";
+    auto v = r.numbers<6>(n[i], f, true);
+    if (!v) { ok = false; continue; }
+    std::array<float, 6> box;
+    for (int k = 0; k < 6; ++k) box[k] = static_cast<float>((*v)[k]);
+    for (int k = 0; k < 3; ++k)
+      if (box[k] > box[k + 3]) {  // false for NaN: inactive boxes are allowed
+        r.error(n[i], f, "min is greater than max (component " + std::to_string(k) + ")");
+        ok = false;
+        break;
+      }
+    g.aabbs.push_back(box);
+  }
+  return ok;
+}
+
+void parseGeometry(YamlReader& r, const YAML::Node& n, const std::string& field, Geometry& g) {
+  g.loc = r.loc(n, field);
+  if (!r.expectMap(n, field, {"triangles", "aabbs", "flags", "transform"})) return;
+  const bool tri = YamlReader::has(n, "triangles"), box = YamlReader::has(n, "aabbs");
+  if (tri == box) {
+    r.error(n, field, "a geometry needs exactly one of 'triangles' or 'aabbs'");
+    return;
+  }
+  if (tri) parseTriangles(r, YamlReader::get(n, "triangles"), field + ".triangles", g);
+  else parseAabbs(r, YamlReader::get(n, "aabbs"), field + ".aabbs", g);
+  if (auto f = YamlReader::get(n, "flags"); f.IsDefined())
+    if (auto bits = r.flags(f, field + ".flags", geometryFlagNames())) g.flags = *bits;
+  if (auto t = YamlReader::get(n, "transform"); t.IsDefined()) {
+    if (box) r.error(t, field + ".transform", "a geometry transform applies to triangles only");
+    else g.transform = parseTransform(r, t, field + ".transform");
+  }
+}
+
+void parseBlases(YamlReader& r, const YAML::Node& n, Scene& scene) {
+  if (!n.IsMap()) {
+    r.error(n, "scene.blas", "expected a map of name -> list of geometries");
+    return;
+  }
+  for (auto it = n.begin(); it != n.end(); ++it) {
+    Blas b;
+    b.name = it->first.IsScalar() ? it->first.Scalar() : "?";
+    const std::string field = "scene.blas." + b.name;
+    b.loc = r.loc(it->first, field);
+    const YAML::Node geoms = it->second;
+    if (r.expectSeq(geoms, field)) {
+      if (geoms.size() == 0) r.error(geoms, field, "a BLAS needs at least one geometry");
+      for (size_t i = 0; i < geoms.size(); ++i) {
+        Geometry g;
+        parseGeometry(r, geoms[i], field + "[" + std::to_string(i) + "]", g);
+        b.geometries.push_back(std::move(g));
+      }
+      for (size_t i = 1; i < b.geometries.size(); ++i)
+        if (b.geometries[i].kind != b.geometries[0].kind) {
+          r.error(geoms[i], field + "[" + std::to_string(i) + "]",
+                  "a BLAS holds only triangles or only aabbs, not both");
+          break;
+        }
+    }
+    for (const Blas& other : scene.blases)
+      if (other.name == b.name) r.error(it->first, field, "duplicate BLAS name '" + b.name + "'");
+    scene.blases.push_back(std::move(b));
+  }
+}
+
+void parseInstance(YamlReader& r, const YAML::Node& n, const std::string& field, Scene& scene,
+                   Instance& inst) {
+  inst.loc = r.loc(n, field);
+  if (!r.expectMap(n, field, {"blas", "transform", "mask", "custom_index", "sbt_offset", "flags"}) ||
+      !r.require(n, field, "blas"))
+    return;
+  const YAML::Node b = YamlReader::get(n, "blas");
+  if (!b.IsNull()) {
+    if (auto name = r.string(b, field + ".blas")) {
+      bool found = false;
+      for (size_t i = 0; i < scene.blases.size(); ++i)
+        if (scene.blases[i].name == *name) {
+          inst.blas = static_cast<uint32_t>(i);
+          found = true;
+        }
+      if (!found) r.error(b, field + ".blas", "unknown BLAS '" + *name + "'");
+    }
+  }
+  if (auto t = YamlReader::get(n, "transform"); t.IsDefined()) {
+    if (auto tr = parseTransform(r, t, field + ".transform")) {
+      inst.transform = *tr;
+      if (!(std::fabs(linearDeterminant(*tr)) > 0))
+        r.error(t, field + ".transform", "the transform is not invertible");
+    }
+  }
+  if (auto m = YamlReader::get(n, "mask"); m.IsDefined())
+    if (auto v = r.uint(m, field + ".mask", 0xFF)) inst.mask = *v;
+  if (auto m = YamlReader::get(n, "custom_index"); m.IsDefined())
+    if (auto v = r.uint(m, field + ".custom_index", 0xFFFFFF)) inst.custom_index = *v;
+  if (auto m = YamlReader::get(n, "sbt_offset"); m.IsDefined())
+    if (auto v = r.uint(m, field + ".sbt_offset", 0xFFFFFF)) inst.sbt_offset = *v;
+  if (auto f = YamlReader::get(n, "flags"); f.IsDefined())
+    if (auto bits = r.flags(f, field + ".flags", instanceFlagNames())) inst.flags = *bits;
+}
+
+}  // namespace
+
+void parseScene(YamlReader& r, const YAML::Node& n, Scene& scene) {
+  if (!r.expectMap(n, "scene", {"blas", "instances"})) return;
+  if (auto b = YamlReader::get(n, "blas"); b.IsDefined() && !b.IsNull()) parseBlases(r, b, scene);
+  const YAML::Node insts = YamlReader::get(n, "instances");
+  if (!insts.IsDefined() || insts.IsNull()) return;
+  if (!r.expectSeq(insts, "scene.instances")) return;
+  for (size_t i = 0; i < insts.size(); ++i) {
+    Instance inst;
+    parseInstance(r, insts[i], "scene.instances[" + std::to_string(i) + "]", scene, inst);
+    scene.instances.push_back(inst);
+  }
+}
+
+}  // namespace rayspec

@@ -1,0 +1,129 @@
+#include "glsl/emit_expr.h"
+
+#include <cctype>
+#include <map>
+
+#include "glsl/glsl_literal.h"
+
+namespace rayspec {
+namespace {
+
+std::string problem(const std::string& what) {
+  std::string id = "rayspec_error_";
+  for (char ch : what) id += (std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_');
+  return id + "()";
+}
+
+std::string literal(const Expr& e) {
+  if (e.literal.empty()) return problem("empty literal");
+  auto f = [&](size_t i) { return glslFloat(static_cast<float>(e.literal[i < e.literal.size() ? i : 0])); };
+  switch (e.type) {
+    case ValueType::Bool: return e.literal[0] != 0 ? "true" : "false";
+    case ValueType::Uint: return glslUint(static_cast<uint32_t>(e.literal[0]));
+    case ValueType::Float: return f(0);
+    case ValueType::Vec2: return "vec2(" + f(0) + ", " + f(1) + ")";
+    case ValueType::Vec3: return "vec3(" + f(0) + ", " + f(1) + ", " + f(2) + ")";
+    case ValueType::Vec4: return "vec4(" + f(0) + ", " + f(1) + ", " + f(2) + ", " + f(3) + ")";
+  }
+  return problem("literal type");
+}
+
+std::string builtin(const std::string& name, Stage stage) {
+  static const std::map<std::string, std::string> table = {
+      {"launch_id_x", "gl_LaunchIDEXT.x"},
+      {"launch_id_y", "gl_LaunchIDEXT.y"},
+      {"launch_size_x", "gl_LaunchSizeEXT.x"},
+      {"launch_size_y", "gl_LaunchSizeEXT.y"},
+      {"primitive_id", "uint(gl_PrimitiveID)"},
+      {"instance_id", "uint(gl_InstanceID)"},
+      {"instance_custom_index", "uint(gl_InstanceCustomIndexEXT)"},
+      {"geometry_index", "uint(gl_GeometryIndexEXT)"},
+      {"hit_kind", "gl_HitKindEXT"},
+      {"hit_t", "gl_HitTEXT"},
+      {"ray_tmin", "gl_RayTminEXT"},
+      {"ray_tmax", "gl_RayTmaxEXT"},
+      {"incoming_ray_flags", "gl_IncomingRayFlagsEXT"},
+      {"world_ray_origin", "gl_WorldRayOriginEXT"},
+      {"world_ray_direction", "gl_WorldRayDirectionEXT"},
+      {"object_ray_origin", "gl_ObjectRayOriginEXT"},
+      {"object_ray_direction", "gl_ObjectRayDirectionEXT"},
+      {"barycentrics", "rs_attr"},
+      {"hit_position", "(gl_WorldRayOriginEXT + gl_HitTEXT * gl_WorldRayDirectionEXT)"},
+      {"aabb_min", "rs_aabb_min()"},
+      {"aabb_max", "rs_aabb_max()"},
+      {"payload.color", "payload.color"},
+      {"payload.value", "payload.value"},
+      {"depth", "payload.depth"},
+      {"child.color", "child.color"},
+      {"child.value", "child.value"},
+      {"call.position", "call.position"},
+      {"call.normal", "call.normal"},
+      {"call.color", "call.color"},
+      {"call.value", "call.value"},
+      {"callee.color", "callee.color"},
+      {"callee.value", "callee.value"},
+  };
+  if (name == "hit") {
+    if (stage == Stage::ClosestHit) return "1u";
+    if (stage == Stage::Miss) return "0u";
+    return problem("hit outside closest_hit and miss");
+  }
+  auto it = table.find(name);
+  return it != table.end() ? it->second : problem("unknown builtin " + name);
+}
+
+std::string op(const Expr& e, const StageContext& ctx) {
+  std::vector<std::string> a;
+  for (const Expr& arg : e.args) a.push_back(emitExpr(arg, ctx));
+  const std::string& n = e.name;
+  auto need = [&](size_t count) { return a.size() >= count; };
+  auto join = [&](const char* sep) {
+    std::string s = "(";
+    for (size_t i = 0; i < a.size(); ++i) s += (i ? sep : "") + a[i];
+    return s + ")";
+  };
+  static const std::map<std::string, const char*> binary = {
+      {"add", " + "}, {"sub", " - "}, {"mul", " * "}, {"div", " / "}, {"mod", " % "},
+      {"eq", " == "}, {"ne", " != "}, {"lt", " < "},  {"le", " <= "}, {"gt", " > "},
+      {"ge", " >= "}, {"and", " && "}, {"or", " || "}};
+  if (auto it = binary.find(n); it != binary.end() && need(2)) return join(it->second);
+  if ((n == "min" || n == "max" || n == "dot") && need(2)) return n + "(" + a[0] + ", " + a[1] + ")";
+  if (n == "not" && need(1)) return "(!" + a[0] + ")";
+  if (n == "odd" && need(1)) return "((" + a[0] + " & 1u) != 0u)";
+  if (n == "even" && need(1)) return "((" + a[0] + " & 1u) == 0u)";
+  if ((n == "float" || n == "uint" || n == "length" || n == "normalize") && need(1))
+    return n + "(" + a[0] + ")";
+  if (n == "vec2" || n == "vec3" || n == "vec4") return n + join(", ");
+  if ((n == "x" || n == "y" || n == "z" || n == "w") && need(1)) return a[0] + "." + n;
+  if (n == "sphere_hit") return "rs_sphere_current().hit";
+  if (n == "sphere_near") return "rs_sphere_current().t_near";
+  if (n == "sphere_far") return "rs_sphere_current().t_far";
+  if (n == "shader_record_uint" && need(1)) return "rs_shader_record_uint(" + a[0] + ")";
+  if (n == "shader_record_float" && need(1)) return "rs_shader_record_float(" + a[0] + ")";
+  return problem("op " + n + " with " + std::to_string(a.size()) + " args");
+}
+
+}  // namespace
+
+std::string emitExpr(const Expr& e, const StageContext& ctx) {
+  switch (e.kind) {
+    case Expr::Kind::Literal: return literal(e);
+    case Expr::Kind::Builtin: return builtin(e.name, ctx.stage);
+    case Expr::Kind::Op: return op(e, ctx);
+  }
+  return problem("expression kind");
+}
+
+const char* glslType(ValueType t) {
+  switch (t) {
+    case ValueType::Bool: return "bool";
+    case ValueType::Uint: return "uint";
+    case ValueType::Float: return "float";
+    case ValueType::Vec2: return "vec2";
+    case ValueType::Vec3: return "vec3";
+    case ValueType::Vec4: return "vec4";
+  }
+  return "uint";
+}
+
+}  // namespace rayspec

@@ -1,0 +1,19 @@
+// One expression of the stage vocabulary as GLSL (harness/program/builtins.h
+// and ops.h give the meaning; this file gives the spelling).
+#pragma once
+
+#include <string>
+
+#include "glsl/stage_context.h"
+
+namespace rayspec {
+
+// GLSL for e. An expression this stage cannot evaluate becomes a call of an
+// undeclared function named after the problem, so glslang reports it with the
+// line (the type checker of harness/program rejects such cases first).
+std::string emitExpr(const Expr& e, const StageContext& ctx);
+
+// GLSL type name of a value type ("uint", "vec3", ...).
+const char* glslType(ValueType t);
+
+}  // namespace rayspec

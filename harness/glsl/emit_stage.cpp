@@ -1,0 +1,172 @@
+#include "glsl/emit_stage.h"
+
+#include "glsl/bindings.h"
+#include "glsl/embedded_shaders.h"
+#include "glsl/emit_stmt.h"
+#include "glsl/glsl_writer.h"
+#include "glsl/stage_context.h"
+#include "results/record_layout.h"
+
+namespace rayspec {
+namespace {
+
+std::string define(const std::string& name, uint32_t value) {
+  return "#define " + name + " " + std::to_string(value);
+}
+
+// The automatic run-count field a stage bumps.
+const char* runsField(Stage s) {
+  switch (s) {
+    case Stage::Raygen: return "raygen_runs";
+    case Stage::Miss: return "miss_runs";
+    case Stage::ClosestHit: return "closest_hit_runs";
+    case Stage::AnyHit: return "any_hit_runs";
+    case Stage::Intersection: return "intersection_runs";
+    case Stage::Callable: return "callable_runs";
+  }
+  return "raygen_runs";
+}
+
+void include(const std::string& file, GlslWriter& out) {
+  const auto& shaders = embeddedShaders();
+  auto it = shaders.find(file);
+  out.line("");
+  out.line("// ---- shaders/" + file + " ----");
+  if (it == shaders.end()) {
+    out.raw("#error rayspec: shaders/" + file + " is not embedded\n");
+    return;
+  }
+  out.raw(it->second);
+  if (!it->second.empty() && it->second.back() != '\n') out.raw("\n");
+  out.line("// ---- end of shaders/" + file + " ----");
+}
+
+void defines(const StageContext& ctx, GlslWriter& out) {
+  const StageUses& u = ctx.uses;
+  const bool raygen = ctx.stage == Stage::Raygen;
+  out.line("// Bindings and layouts from harness/glsl/bindings.h and results/record_layout.h.");
+  out.line(define("RS_BINDING_TLAS", kBindingTlas));
+  out.line(define("RS_BINDING_RAYS", kBindingRays));
+  out.line(define("RS_BINDING_RECORDS", kBindingRecords));
+  out.line(define("RS_BINDING_COUNTERS", kBindingCounters));
+  out.line(define("RS_BINDING_SCENE", kBindingScene));
+  out.line(define("RS_RAY_WORDS", kRayWords));
+  out.line(define("RS_RECORD_WORDS", recordWords()));
+  if (ctx.plan.records)
+    for (int index : u.record_fields) {
+      const RecordField& f = recordFields()[index];
+      out.line(define(fieldOffsetMacro(f.name), f.offset) + "u");
+      out.line(define(fieldBitMacro(f.name), static_cast<uint32_t>(index)) + "u");
+    }
+  if (raygen && ctx.plan.records)
+    for (size_t i = 0; i < ctx.plan.images.size(); ++i)
+      out.line(define("RS_BINDING_IMAGE_" + std::to_string(i), kBindingFirstImage + static_cast<uint32_t>(i)));
+  if (raygen && u.launch_ray) out.line("#define RS_USE_RAYS");
+  if (u.trace) out.line("#define RS_USE_TLAS");
+  if (ctx.plan.records) out.line("#define RS_USE_RECORDS");
+  if (u.counters) out.line("#define RS_USE_COUNTERS");
+  if (u.shader_record) out.line("#define RS_USE_SHADER_RECORD");
+}
+
+void interfaceVariables(const StageContext& ctx, GlslWriter& out) {
+  const StageUses& u = ctx.uses;
+  const Stage s = ctx.stage;
+  out.line("");
+  out.line("// ---- interface of this stage ----");
+  if (s == Stage::Raygen) out.line("layout(location = 0) rayPayloadEXT RsPayload payload;");
+  if (s == Stage::Miss || s == Stage::ClosestHit || s == Stage::AnyHit)
+    out.line("layout(location = 0) rayPayloadInEXT RsPayload payload;");
+  if (u.trace && (s == Stage::Miss || s == Stage::ClosestHit))
+    out.line("layout(location = 1) rayPayloadEXT RsPayload child;");
+  if (s == Stage::Callable) out.line("layout(location = 0) callableDataInEXT RsCallData call;");
+  if (u.call)
+    out.line("layout(location = " + std::to_string(calleeLocation(s)) + ") callableDataEXT RsCallData callee;");
+  if (u.hit_attribute && (s == Stage::ClosestHit || s == Stage::AnyHit || s == Stage::Intersection))
+    out.line("hitAttributeEXT vec2 rs_attr;");
+  if (s == Stage::Raygen && ctx.plan.records) {
+    for (size_t i = 0; i < ctx.plan.images.size(); ++i) {
+      const ImageOutput& img = ctx.plan.images[i];
+      const RecordField* f = findRecordField(img.field);
+      const bool is_float = f && f->type == FieldType::Float;
+      out.line("layout(set = 0, binding = RS_BINDING_IMAGE_" + std::to_string(i) + ", " +
+               (is_float ? "rgba32f) uniform writeonly image2D" : "r32ui) uniform writeonly uimage2D") +
+               " rs_image_" + std::to_string(i) + ";  // image \"" + img.name + "\" from " + img.field);
+    }
+  }
+}
+
+// Raygen, after the program: each image gets this launch's record field.
+// r32ui: uvec4(word, 0, 0, 0). rgba32f: the field's float components, missing
+// components 0, alpha 1 unless the field has 4 components.
+void imageStores(const StageContext& ctx, GlslWriter& out) {
+  if (ctx.stage != Stage::Raygen || !ctx.plan.records) return;
+  for (size_t i = 0; i < ctx.plan.images.size(); ++i) {
+    const ImageOutput& img = ctx.plan.images[i];
+    const RecordField* f = findRecordField(img.field);
+    const std::string image = "rs_image_" + std::to_string(i);
+    if (!f) {
+      out.raw("#error rayspec: image \"" + img.name + "\" from unknown field " + img.field + "\n");
+      continue;
+    }
+    const std::string off = fieldOffsetMacro(f->name);
+    auto word = [&](uint32_t k) { return "rs_record_word(" + off + ", " + std::to_string(k) + "u)"; };
+    std::string value;
+    if (f->type == FieldType::Uint) {
+      value = "uvec4(" + word(0) + ", 0u, 0u, 0u)";
+    } else {
+      value = "vec4(";
+      for (uint32_t k = 0; k < 4; ++k) {
+        if (k) value += ", ";
+        value += k < f->words ? "uintBitsToFloat(" + word(k) + ")" : (k == 3 ? "1.0" : "0.0");
+      }
+      value += ")";
+    }
+    out.line("imageStore(" + image + ", ivec2(gl_LaunchIDEXT.xy), " + value + ");");
+  }
+}
+
+}  // namespace
+
+GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const std::string& name,
+                          const Program& program) {
+  StageContext ctx{c, plan, stage, name, findStageUses(program, stage, plan)};
+  if (plan.records) ctx.uses.record_fields.insert(recordFieldIndex(runsField(stage)));
+  const StageUses& u = ctx.uses;
+  GlslWriter out;
+  out.line("#version 460");
+  out.line("#extension GL_EXT_ray_tracing : require");
+  out.line("// rayspec case: " + (c.name.empty() ? std::string("(unnamed)") : c.name));
+  out.line("// stage: " + std::string(stageName(stage)) + " (" + name + "), generated by harness/glsl");
+  out.line("");
+  defines(ctx, out);
+  include("common.glsl", out);
+  include("payload.glsl", out);
+  if (u.scene && stage == Stage::Intersection) include("scene.glsl", out);
+  if (u.sphere && stage == Stage::Intersection) include("sphere.glsl", out);
+  if (u.light) include("lights.glsl", out);
+  interfaceVariables(ctx, out);
+
+  out.line("");
+  out.open("void main() {");
+  if (plan.records) out.line("rs_bump_runs(" + fieldOffsetMacro(runsField(stage)) + ");");
+  if (stage == Stage::Raygen) {
+    if (u.launch_ray) out.line("RsRay rs_ray = rs_load_ray(rs_launch_index());");
+    out.line("payload.color = vec4(0.0);");
+    out.line("payload.value = 0u;");
+    out.line("payload.depth = 1u;");
+  }
+  if (u.trace && (stage == Stage::Miss || stage == Stage::ClosestHit))
+    out.line("child.color = vec4(0.0);  child.value = 0u;  child.depth = payload.depth + 1u;");
+  if (u.call)
+    out.line("callee = RsCallData(vec4(0.0), vec3(0.0), 0u, vec3(0.0), 0u);");
+  out.line("// ---- program ----");
+  emitProgram(program, ctx, out);
+  if (stage == Stage::Raygen && !plan.images.empty()) {
+    out.line("// ---- images ----");
+    imageStores(ctx, out);
+  }
+  out.close();
+  return {stage, name, out.text()};
+}
+
+}  // namespace rayspec

@@ -1,0 +1,126 @@
+#include "glsl/emit_stmt.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "glsl/emit_expr.h"
+#include "glsl/emit_trace.h"
+#include "results/record_layout.h"
+
+namespace rayspec {
+namespace {
+
+std::string upper(const std::string& s) {
+  std::string u = s;
+  for (char& ch : u) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  return u;
+}
+
+std::string quoted(const std::string& s) { return "\"" + s + "\""; }
+
+void count(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
+  const auto& names = ctx.plan.counters;
+  auto it = std::find(names.begin(), names.end(), s.counter);
+  if (it == names.end()) {
+    out.line("// count " + quoted(s.counter) + ": not kept by the plan");
+    return;
+  }
+  out.line("rs_count(" + std::to_string(it - names.begin()) + "u);  // count " + quoted(s.counter));
+}
+
+void record(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
+  for (const auto& [field, value] : s.assigns) {
+    const int index = recordFieldIndex(field);
+    if (index < 0 || !ctx.uses.record_fields.count(index)) {
+      out.line("// record " + field + ": not kept by the plan");
+      continue;
+    }
+    const RecordField& f = recordFields()[index];
+    const char* fn = f.type == FieldType::Uint ? "rs_record_uint"
+                     : f.words == 1           ? "rs_record_float"
+                     : f.words == 2           ? "rs_record_vec2"
+                     : f.words == 3           ? "rs_record_vec3"
+                                              : "rs_record_vec4";
+    std::string v = emitExpr(value, ctx);
+    if (f.type == FieldType::Uint && value.type == ValueType::Bool) v = "uint(" + v + ")";
+    out.line(std::string(fn) + "(" + fieldOffsetMacro(field) + ", " + fieldBitMacro(field) + ", " + v +
+             ");");
+  }
+}
+
+// payload.x = ... / call.x = ..., in the order written.
+void assignFields(const Stmt& s, const std::string& target, const StageContext& ctx,
+                  GlslWriter& out) {
+  for (const auto& [field, value] : s.assigns)
+    out.line(target + "." + field + " = " + emitExpr(value, ctx) + ";");
+}
+
+void report(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
+  out.line("rs_attr = " + (s.attribute.empty() ? std::string("vec2(0.0)") : emitExpr(s.attribute[0], ctx)) +
+           ";");
+  const std::string call = "reportIntersectionEXT(" + emitExpr(s.t, ctx) + ", " + emitExpr(s.hit_kind, ctx) + ")";
+  if (s.then_.empty() && s.else_.empty()) {
+    out.line(call + ";");
+    return;
+  }
+  out.open("if (" + call + ") {");
+  emitProgram(s.then_, ctx, out);
+  if (!s.else_.empty()) {
+    out.reopen("} else {");
+    emitProgram(s.else_, ctx, out);
+  }
+  out.close();
+}
+
+void ifStmt(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
+  out.open("if (" + emitExpr(s.cond, ctx) + ") {");
+  emitProgram(s.then_, ctx, out);
+  if (!s.else_.empty()) {
+    out.reopen("} else {");
+    emitProgram(s.else_, ctx, out);
+  }
+  out.close();
+}
+
+void light(const Stmt& s, GlslWriter& out) {
+  if (s.light != "point" && s.light != "spot" && s.light != "directional") {
+    out.raw("#error rayspec: unknown light " + quoted(s.light) + "\n");
+    return;
+  }
+  out.line("call.color = rs_light_" + s.light + "(call.position, call.normal);");
+}
+
+void terminator(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
+  const bool ignore = s.kind == Stmt::Kind::Ignore;
+  if (ctx.stage != Stage::AnyHit) {
+    out.raw(std::string("#error rayspec: ") + (ignore ? "ignore" : "terminate") +
+            " is only allowed in any_hit\n");
+    return;
+  }
+  out.line(ignore ? "ignoreIntersectionEXT;" : "terminateRayEXT;");
+}
+
+}  // namespace
+
+std::string fieldOffsetMacro(const std::string& field) { return "RS_FIELD_" + upper(field); }
+std::string fieldBitMacro(const std::string& field) { return "RS_BIT_" + upper(field); }
+
+void emitProgram(const Program& program, const StageContext& ctx, GlslWriter& out) {
+  for (const Stmt& s : program) {
+    switch (s.kind) {
+      case Stmt::Kind::Count: count(s, ctx, out); break;
+      case Stmt::Kind::Record: record(s, ctx, out); break;
+      case Stmt::Kind::SetPayload: assignFields(s, "payload", ctx, out); break;
+      case Stmt::Kind::SetCall: assignFields(s, "call", ctx, out); break;
+      case Stmt::Kind::Ignore:
+      case Stmt::Kind::Terminate: terminator(s, ctx, out); break;
+      case Stmt::Kind::Report: report(s, ctx, out); break;
+      case Stmt::Kind::Trace: emitTrace(s, ctx, out); break;
+      case Stmt::Kind::Call: emitCall(s, ctx, out); break;
+      case Stmt::Kind::Light: light(s, out); break;
+      case Stmt::Kind::If: ifStmt(s, ctx, out); break;
+    }
+  }
+}
+
+}  // namespace rayspec

@@ -1,0 +1,81 @@
+#include "glsl/emit_trace.h"
+
+#include "glsl/emit_expr.h"
+#include "glsl/glsl_literal.h"
+
+namespace rayspec {
+namespace {
+
+// One trace argument: the case's expression, else the default.
+struct Arg {
+  const char* type;
+  const char* local;
+  const std::vector<Expr>* given;
+  std::string fallback;  // GLSL; empty = required
+};
+
+}  // namespace
+
+void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
+  const bool raygen = ctx.stage == Stage::Raygen;
+  if (!raygen && ctx.stage != Stage::ClosestHit && ctx.stage != Stage::Miss) {
+    out.raw(std::string("#error rayspec: trace is not allowed in ") + stageName(ctx.stage) + "\n");
+    return;
+  }
+  const TraceArgs& t = s.trace;
+  const Ray& d = ctx.c.rays.defaults;
+  auto def = [&](const std::string& launch, const std::string& nested) { return raygen ? launch : nested; };
+  const Arg args[] = {
+      {"uint", "rs_flags", &t.flags, def("rs_ray.flags", glslUint(d.flags))},
+      {"uint", "rs_cull_mask", &t.cull_mask, def("rs_ray.cull_mask", glslUint(d.cull_mask))},
+      {"uint", "rs_sbt_offset", &t.sbt_offset, def("rs_ray.sbt_offset", glslUint(d.sbt_offset))},
+      {"uint", "rs_sbt_stride", &t.sbt_stride, def("rs_ray.sbt_stride", glslUint(d.sbt_stride))},
+      {"uint", "rs_miss", &t.miss, def("rs_ray.miss", glslUint(d.miss))},
+      {"vec3", "rs_origin", &t.origin, def("rs_ray.origin", "")},
+      {"float", "rs_tmin", &t.tmin, def("rs_ray.tmin", glslFloat(d.tmin))},
+      {"vec3", "rs_direction", &t.direction, def("rs_ray.direction", "")},
+      {"float", "rs_tmax", &t.tmax, def("rs_ray.tmax", glslFloat(d.tmax))},
+  };
+  out.open("{  // trace");
+  for (const Arg& a : args) {
+    std::string value = a.given->empty() ? a.fallback : emitExpr(a.given->front(), ctx);
+    if (value.empty()) {
+      out.raw(std::string("#error rayspec: a trace outside raygen needs ") + (a.local + 3) + "\n");
+      value = "vec3(0.0)";
+    }
+    out.line(std::string(a.type) + " " + a.local + " = " + value + ";");
+  }
+  const std::string p = raygen ? "payload" : "child";
+  out.line(p + ".color = vec4(0.0);");
+  out.line(p + ".value = 0u;");
+  out.line(p + ".depth = " + (raygen ? std::string("1u") : "payload.depth + 1u") + ";");
+  out.line("traceRayEXT(rs_tlas, rs_flags, rs_cull_mask, rs_sbt_offset, rs_sbt_stride, rs_miss,");
+  out.line("            rs_origin, rs_tmin, rs_direction, rs_tmax, " + std::string(raygen ? "0" : "1") +
+           ");");
+  out.close();
+}
+
+void emitCall(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
+  if (ctx.stage == Stage::AnyHit || ctx.stage == Stage::Intersection) {
+    out.raw(std::string("#error rayspec: call is not allowed in ") + stageName(ctx.stage) + "\n");
+    return;
+  }
+  struct Field { const char* name; const char* zero; };
+  const Field fields[] = {{"color", "vec4(0.0)"}, {"position", "vec3(0.0)"}, {"value", "0u"},
+                          {"normal", "vec3(0.0)"}};
+  out.open("{  // call");
+  out.line("RsCallData rs_data;");
+  for (const Field& f : fields) {
+    std::string value = f.zero;
+    for (const auto& [name, expr] : s.assigns)
+      if (name == f.name) value = emitExpr(expr, ctx);
+    out.line(std::string("rs_data.") + f.name + " = " + value + ";");
+  }
+  out.line("rs_data.pad = 0u;");
+  out.line("uint rs_index = " + emitExpr(s.call_index, ctx) + ";");
+  out.line("callee = rs_data;");
+  out.line("executeCallableEXT(rs_index, " + std::to_string(calleeLocation(ctx.stage)) + ");");
+  out.close();
+}
+
+}  // namespace rayspec

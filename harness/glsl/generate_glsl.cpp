@@ -1,0 +1,34 @@
+#include "glsl/generate_glsl.h"
+
+#include "glsl/emit_stage.h"
+
+namespace rayspec {
+
+// Stages the plan says cannot run are left out: an any-hit when no candidate
+// can be non-opaque (plan.any_hit), an intersection when no AABB is reached
+// (plan.intersection). Everything else present in the case is generated.
+GeneratedPipeline generateGlsl(const Case& c, const Plan& plan) {
+  const Pipeline& p = c.pipeline;
+  GeneratedPipeline g;
+  g.raygen = emitStage(c, plan, Stage::Raygen, "raygen", p.raygen);
+  for (size_t i = 0; i < p.miss.size(); ++i)
+    g.miss.push_back(emitStage(c, plan, Stage::Miss, "miss" + std::to_string(i), p.miss[i]));
+  for (size_t i = 0; i < p.hit_groups.size(); ++i) {
+    const HitGroup& h = p.hit_groups[i];
+    const std::string prefix = "hit" + std::to_string(i) + ".";
+    GeneratedGroup group;
+    if (h.closest_hit)
+      group.closest_hit = emitStage(c, plan, Stage::ClosestHit, prefix + "closest_hit", *h.closest_hit);
+    if (h.any_hit && plan.any_hit)
+      group.any_hit = emitStage(c, plan, Stage::AnyHit, prefix + "any_hit", *h.any_hit);
+    if (h.intersection && plan.intersection)
+      group.intersection = emitStage(c, plan, Stage::Intersection, prefix + "intersection", *h.intersection);
+    g.hit_groups.push_back(std::move(group));
+  }
+  for (size_t i = 0; i < p.callables.size(); ++i)
+    g.callables.push_back(
+        emitStage(c, plan, Stage::Callable, "callable" + std::to_string(i), p.callables[i]));
+  return g;
+}
+
+}  // namespace rayspec

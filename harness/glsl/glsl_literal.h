@@ -1,0 +1,15 @@
+// GLSL spellings of constants: exact float literals, uint literals.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace rayspec {
+
+// Shortest decimal that reads back as exactly f (whether the compiler parses
+// it straight to float or through double), e.g. "0.1", "1.0", "1e+30";
+// negatives in parentheses; NaN / infinity as uintBitsToFloat(0x...u).
+std::string glslFloat(float f);
+std::string glslUint(uint32_t u);  // "42u"
+
+}  // namespace rayspec

@@ -1,0 +1,40 @@
+// What the GLSL of one stage needs to know while it is being written: the
+// case, the plan, the stage, and what the stage's program uses.
+#pragma once
+
+#include <set>
+#include <string>
+
+#include "case/case.h"
+#include "plan/plan.h"
+
+namespace rayspec {
+
+// What a stage program uses, found by walking it once.
+struct StageUses {
+  bool trace = false;           // a traceRayEXT (raygen: payload; else: child)
+  bool launch_ray = false;      // raygen: some trace takes a field from this launch's ray
+  bool call = false;            // executeCallableEXT
+  bool light = false;           // light: -> lights.glsl
+  bool shader_record = false;   // shader_record_* or light
+  bool scene = false;           // aabb_min / aabb_max / sphere_*
+  bool sphere = false;          // sphere_*
+  bool hit_attribute = false;   // barycentrics read, or a report written
+  bool counters = false;        // a count of a kept counter
+  std::set<int> record_fields;  // indices (recordFields()) of fields written
+};
+
+StageUses findStageUses(const Program& program, Stage stage, const Plan& plan);
+
+struct StageContext {
+  const Case& c;
+  const Plan& plan;
+  Stage stage;
+  std::string name;  // "raygen", "miss0", "hit1.any_hit", ...
+  StageUses uses;
+};
+
+// The location of the callable data this stage passes to executeCallableEXT.
+inline int calleeLocation(Stage s) { return s == Stage::Callable ? 1 : 0; }
+
+}  // namespace rayspec

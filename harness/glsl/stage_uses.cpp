@@ -1,0 +1,95 @@
+#include <algorithm>
+
+#include "glsl/stage_context.h"
+#include "results/record_layout.h"
+
+namespace rayspec {
+namespace {
+
+bool kept(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+void visitExpr(const Expr& e, StageUses& u) {
+  if (e.kind == Expr::Kind::Builtin) {
+    if (e.name == "aabb_min" || e.name == "aabb_max") u.scene = true;
+    if (e.name == "barycentrics") u.hit_attribute = true;
+  } else if (e.kind == Expr::Kind::Op) {
+    if (e.name.rfind("sphere_", 0) == 0) u.scene = u.sphere = true;
+    if (e.name.rfind("shader_record_", 0) == 0) u.shader_record = true;
+  }
+  for (const Expr& a : e.args) visitExpr(a, u);
+}
+
+void visitExprs(const std::vector<Expr>& v, StageUses& u) {
+  for (const Expr& e : v) visitExpr(e, u);
+}
+
+void visitProgram(const Program& p, Stage stage, const Plan& plan, StageUses& u) {
+  for (const Stmt& s : p) {
+    switch (s.kind) {
+      case Stmt::Kind::Count:
+        if (kept(plan.counters, s.counter)) u.counters = true;
+        break;
+      case Stmt::Kind::Record:
+        for (const auto& [field, value] : s.assigns) {
+          visitExpr(value, u);
+          const int index = recordFieldIndex(field);
+          if (plan.records && index >= 0 && kept(plan.record_fields, field))
+            u.record_fields.insert(index);
+        }
+        break;
+      case Stmt::Kind::SetPayload:
+      case Stmt::Kind::SetCall:
+        for (const auto& a : s.assigns) visitExpr(a.second, u);
+        break;
+      case Stmt::Kind::Call:
+        u.call = true;
+        visitExpr(s.call_index, u);
+        for (const auto& a : s.assigns) visitExpr(a.second, u);
+        break;
+      case Stmt::Kind::Light:
+        u.light = u.shader_record = true;
+        break;
+      case Stmt::Kind::Report:
+        u.hit_attribute = true;
+        visitExpr(s.t, u);
+        visitExpr(s.hit_kind, u);
+        visitExprs(s.attribute, u);
+        break;
+      case Stmt::Kind::Trace: {
+        u.trace = true;
+        const TraceArgs& t = s.trace;
+        for (const auto* v : {&t.origin, &t.direction, &t.tmin, &t.tmax, &t.flags, &t.cull_mask,
+                              &t.sbt_offset, &t.sbt_stride, &t.miss}) {
+          visitExprs(*v, u);
+          if (v->empty() && stage == Stage::Raygen) u.launch_ray = true;
+        }
+        break;
+      }
+      case Stmt::Kind::If:
+        visitExpr(s.cond, u);
+        break;
+      case Stmt::Kind::Ignore:
+      case Stmt::Kind::Terminate:
+        break;
+    }
+    visitProgram(s.then_, stage, plan, u);
+    visitProgram(s.else_, stage, plan, u);
+  }
+}
+
+}  // namespace
+
+StageUses findStageUses(const Program& program, Stage stage, const Plan& plan) {
+  StageUses u;
+  visitProgram(program, stage, plan, u);
+  if (stage == Stage::Raygen && plan.records) {
+    // Raygen copies the image fields from the record into the images.
+    for (const ImageOutput& img : plan.images)
+      if (int index = recordFieldIndex(img.field); index >= 0) u.record_fields.insert(index);
+  }
+  return u;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,148 @@
+#include "model/model_backend.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstring>
+#include <exception>
+#include <stdexcept>
+#include <thread>
+
+#include "model/model_machine.h"
+#include "model/model_scene.h"
+#include "results/record_layout.h"
+
+namespace rayspec {
+namespace {
+
+// Does any trace need the model to see every candidate (rather than Embree's
+// own closest hit)?
+bool needsCandidates(const Case& c, const Plan& plan, ModelTier tier) {
+  if (tier == ModelTier::Exact) return true;
+  if (plan.any_hit || plan.aabbs || plan.intersection) return true;
+  if (plan.facing_culls || plan.opacity_flags) return true;  // culls decided per candidate
+  for (const Blas& b : c.scene.blases)
+    for (const Geometry& g : b.geometries)
+      if (g.kind == Geometry::Kind::Aabbs) return true;
+  return false;
+}
+
+bool hasOwnTriangles(const ModelScene& s) {
+  for (const ModelBlas& b : s.blases)
+    for (const ModelGeometry& g : b.geometries)
+      if (g.own_triangles) return true;
+  return false;
+}
+
+void fillImages(Results& r, const Plan& plan) {
+  const uint32_t words = recordWords();
+  const size_t n = static_cast<size_t>(r.width) * r.height;
+  for (const ImageOutput& io : plan.images) {
+    const RecordField* f = findRecordField(io.field);
+    Image img;
+    img.name = io.name;
+    img.field = io.field;
+    img.width = r.width;
+    img.height = r.height;
+    if (!f) continue;
+    img.is_float = f->type == FieldType::Float;
+    img.channels = img.is_float ? 4 : 1;
+    img.texels.assign(n * img.channels, 0);
+    const float one = 1.0f;
+    uint32_t oneBits;
+    std::memcpy(&oneBits, &one, 4);
+    for (size_t i = 0; i < n; ++i) {
+      const uint32_t* rec = r.records.data() + i * words;
+      if (!img.is_float) {
+        img.texels[i] = rec[f->offset];
+        continue;
+      }
+      for (uint32_t k = 0; k < 4; ++k)
+        img.texels[i * 4 + k] = k < f->words ? rec[f->offset + k] : (k == 3 ? oneBits : 0u);
+    }
+    r.images.push_back(std::move(img));
+  }
+}
+
+}  // namespace
+
+ModelTier parseModelTier(const std::string& name) {
+  if (name == "fast") return ModelTier::Fast;
+  if (name == "robust") return ModelTier::Robust;
+  if (name == "exact") return ModelTier::Exact;
+  throw std::invalid_argument("unknown model tier '" + name + "' (fast|robust|exact)");
+}
+
+const char* modelTierName(ModelTier t) {
+  switch (t) {
+    case ModelTier::Fast: return "fast";
+    case ModelTier::Robust: return "robust";
+    case ModelTier::Exact: return "exact";
+  }
+  return "?";
+}
+
+Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
+  const auto start = std::chrono::steady_clock::now();
+  Results r;
+  r.case_name = c.name;
+  r.backend = "model";
+  r.device = std::string("embree-") + modelTierName(opt.tier);
+  r.status = "ok";
+  r.width = c.rays.width;
+  r.height = c.rays.height;
+  for (const std::string& name : plan.counters) r.counters[name] = 0;
+  const size_t n = static_cast<size_t>(c.rays.width) * c.rays.height;
+  if (c.rays.rays.size() != n) {
+    r.status = "Crash: the case has " + std::to_string(c.rays.rays.size()) + " rays for a " +
+               std::to_string(c.rays.width) + "x" + std::to_string(c.rays.height) + " launch";
+    return r;
+  }
+  try {
+    ModelScene scene;
+    buildModelScene(scene, c, opt.tier, needsCandidates(c, plan, opt.tier));
+    ModelShared shared;
+    shared.c = &c;
+    shared.plan = &plan;
+    shared.scene = &scene;
+    shared.direct = !scene.filters && !hasOwnTriangles(scene);
+    if (plan.records) r.records.assign(n * recordWords(), 0);
+    uint32_t* records = plan.records ? r.records.data() : nullptr;
+
+    unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+    threads = static_cast<unsigned>(std::min<size_t>(threads, std::max<size_t>(1, n / 64)));
+    std::vector<std::unique_ptr<Machine>> machines;
+    for (unsigned t = 0; t < threads; ++t) machines.push_back(std::make_unique<Machine>(shared, records));
+    std::atomic<size_t> next{0};
+    constexpr size_t kBlock = 256;
+    auto work = [&](Machine& m) {
+      for (;;) {
+        const size_t begin = next.fetch_add(kBlock);
+        if (begin >= n) break;
+        const size_t end = std::min(n, begin + kBlock);
+        for (size_t i = begin; i < end; ++i) m.runRay(static_cast<uint32_t>(i));
+      }
+    };
+    if (threads == 1) {
+      work(*machines[0]);
+    } else {
+      std::vector<std::thread> pool;
+      for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work, std::ref(*machines[t]));
+      for (std::thread& t : pool) t.join();
+    }
+    for (auto& m : machines) {
+      for (size_t k = 0; k < plan.counters.size(); ++k) r.counters[plan.counters[k]] += m->counters[k];
+      r.ambiguous.insert(r.ambiguous.end(), m->ambiguous.begin(), m->ambiguous.end());
+      if (!m->error.empty() && r.status == "ok") r.status = m->error;
+    }
+    std::sort(r.ambiguous.begin(), r.ambiguous.end(),
+              [](const RayAmbiguity& a, const RayAmbiguity& b) { return a.ray < b.ray; });
+    if (plan.records) fillImages(r, plan);
+  } catch (const std::exception& e) {
+    r.status = std::string("Crash: model: ") + e.what();
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,33 @@
+// The CPU reference model: runs a case on Embree with the Vulkan meaning of
+// every rule (../shared/spec-rules.md) and produces Results in the same schema
+// as the device (results/results.h, results/record_layout.h).
+//
+// Candidate order (R-ORDER-UNSPEC): wherever a stage program can observe the
+// order (any-hit, intersection programs, culls, the exact tier), the model
+// first lets Embree enumerate every candidate of the trace, then processes
+// them in ascending distance (triangles: their t; AABBs: where the ray enters
+// the box, clamped to tmin), ties broken by (instance, geometry, primitive).
+// Only a trace without any-hit, intersection, culls or special triangles in
+// the fast/robust tiers uses rtcIntersect1 directly (Embree's closest hit).
+#pragma once
+
+#include <string>
+
+#include "case/case.h"
+#include "plan/plan.h"
+#include "results/results.h"
+
+namespace rayspec {
+
+enum class ModelTier { Fast, Robust, Exact };
+ModelTier parseModelTier(const std::string& name);  // fast|robust|exact; throws std::invalid_argument
+const char* modelTierName(ModelTier t);
+
+struct ModelOptions {
+  ModelTier tier = ModelTier::Exact;
+  unsigned threads = 0;  // 0 = all cores
+};
+
+Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt);
+
+}  // namespace rayspec

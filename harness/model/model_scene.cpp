@@ -1,0 +1,291 @@
+#include "model/model_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "model/model_trace_context.h"
+#include "model/watertight.h"
+
+namespace rayspec {
+namespace {
+
+constexpr float kEmbreeLarge = 1.0e18f;  // Embree drops bounds beyond ~1.8e18
+
+std::array<double, 12> invert(const Transform& m) {
+  const double a = m[0], b = m[1], c = m[2], d = m[4], e = m[5], f = m[6], g = m[8], h = m[9],
+               i = m[10];
+  const double A = e * i - f * h, B = -(d * i - f * g), C = d * h - e * g;
+  const double det = a * A + b * B + c * C;
+  std::array<double, 12> r{};
+  if (det == 0.0 || std::isnan(det)) return r;
+  const double inv = 1.0 / det;
+  const double l[9] = {A * inv, -(b * i - c * h) * inv, (b * f - c * e) * inv,
+                       B * inv, (a * i - c * g) * inv,  -(a * f - c * d) * inv,
+                       C * inv, -(a * h - b * g) * inv, (a * e - b * d) * inv};
+  for (int row = 0; row < 3; ++row) {
+    r[row * 4 + 0] = l[row * 3 + 0];
+    r[row * 4 + 1] = l[row * 3 + 1];
+    r[row * 4 + 2] = l[row * 3 + 2];
+    r[row * 4 + 3] = -(l[row * 3 + 0] * m[3] + l[row * 3 + 1] * m[7] + l[row * 3 + 2] * m[11]);
+  }
+  return r;
+}
+
+Vec3 applyTransform(const Transform& m, const Vec3& v) {
+  Vec3 r;
+  for (int row = 0; row < 3; ++row)
+    r[row] = m[row * 4 + 0] * v[0] + m[row * 4 + 1] * v[1] + m[row * 4 + 2] * v[2] + m[row * 4 + 3];
+  return r;
+}
+
+void setInvalidBounds(RTCBounds& b) {
+  b.lower_x = b.lower_y = b.lower_z = 1.0f;
+  b.upper_x = b.upper_y = b.upper_z = -1.0f;
+}
+
+float clampLarge(float x) { return std::clamp(x, -kEmbreeLarge, kEmbreeLarge); }
+
+void ownTriangleBounds(const RTCBoundsFunctionArguments* args) {
+  const auto* g = static_cast<const ModelGeometry*>(args->geometryUserPtr);
+  const auto& tri = g->triangles[args->primID];
+  RTCBounds& b = *args->bounds_o;
+  float lo[3], hi[3];
+  for (int k = 0; k < 3; ++k) {
+    lo[k] = std::min({tri[0][k], tri[1][k], tri[2][k]});
+    hi[k] = std::max({tri[0][k], tri[1][k], tri[2][k]});
+    if (std::isnan(tri[0][k]) || std::isnan(tri[1][k]) || std::isnan(tri[2][k])) {
+      setInvalidBounds(b);  // never hit (see model_trace.cpp): no candidate needed
+      return;
+    }
+  }
+  // Enlarged so that rays within the ambiguity bound of an edge are enumerated.
+  for (int k = 0; k < 3; ++k) {
+    const float m = std::max({std::fabs(lo[k]), std::fabs(hi[k]), hi[k] - lo[k], 1e-30f});
+    const float pad = m * 1e-5f;
+    lo[k] = clampLarge(lo[k] - pad);
+    hi[k] = clampLarge(hi[k] + pad);
+  }
+  b.lower_x = lo[0]; b.lower_y = lo[1]; b.lower_z = lo[2];
+  b.upper_x = hi[0]; b.upper_y = hi[1]; b.upper_z = hi[2];
+}
+
+void aabbBounds(const RTCBoundsFunctionArguments* args) {
+  const auto* g = static_cast<const ModelGeometry*>(args->geometryUserPtr);
+  const auto& a = g->aabbs[args->primID];
+  RTCBounds& b = *args->bounds_o;
+  if (std::isnan(a[0])) { setInvalidBounds(b); return; }  // R-INACTIVE
+  float v[6];
+  for (int k = 0; k < 6; ++k) v[k] = std::isnan(a[k]) ? (k < 3 ? -kEmbreeLarge : kEmbreeLarge) : a[k];
+  for (int k = 0; k < 3; ++k) {
+    // Conservative (R-AABB-CONS): a little slack, so grazing rays are enumerated.
+    const float pad = std::max({std::fabs(v[k]), std::fabs(v[k + 3]), 1e-30f}) * 1e-6f;
+    v[k] = clampLarge(v[k] - pad);
+    v[k + 3] = clampLarge(v[k + 3] + pad);
+  }
+  b.lower_x = v[0]; b.lower_y = v[1]; b.lower_z = v[2];
+  b.upper_x = v[3]; b.upper_y = v[4]; b.upper_z = v[5];
+}
+
+TraceContext* traceContext(RTCIntersectContext* ctx) { return reinterpret_cast<TraceContext*>(ctx); }
+
+DVec3 toObject(const std::array<double, 12>& m, const DVec3& v, double w) {
+  DVec3 r;
+  for (int row = 0; row < 3; ++row)
+    r[row] = m[row * 4] * v[0] + m[row * 4 + 1] * v[1] + m[row * 4 + 2] * v[2] + m[row * 4 + 3] * w;
+  return r;
+}
+
+void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
+  if (!args->valid[0]) return;
+  const auto* g = static_cast<const ModelGeometry*>(args->geometryUserPtr);
+  TraceContext* tc = traceContext(args->context);
+  const uint32_t inst = args->context->instID[0];
+  const auto& mi = tc->scene->instances[inst];
+  const DVec3 o = toObject(mi.inverse, tc->origin, 1.0);
+  const DVec3 d = toObject(mi.inverse, tc->direction, 0.0);
+  const auto& tri = g->triangles[args->primID];
+  auto dv = [](const Vec3& v) { return DVec3{v[0], v[1], v[2]}; };
+  WatertightHit h = watertightIntersect(o, d, dv(tri[0]), dv(tri[1]), dv(tri[2]));
+  if (!h.valid) return;
+  if (!h.hit && h.ambiguity == TriAmbiguity::None) return;
+  if (g->tier != ModelTier::Exact && !h.hit) return;
+  ModelCandidate c;
+  c.t = h.t;
+  c.instance = inst;
+  c.geometry = args->geomID;
+  c.primitive = args->primID;
+  c.hit = h.hit;
+  c.b1 = static_cast<float>(h.b1);
+  c.b2 = static_cast<float>(h.b2);
+  c.ambiguity = g->tier == ModelTier::Exact ? h.ambiguity : TriAmbiguity::None;
+  tc->candidates->push_back(c);
+}
+
+void aabbIntersect(const RTCIntersectFunctionNArguments* args) {
+  if (!args->valid[0]) return;
+  const auto* g = static_cast<const ModelGeometry*>(args->geometryUserPtr);
+  TraceContext* tc = traceContext(args->context);
+  RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
+  const double o[3] = {RTCRayN_org_x(ray, args->N, 0), RTCRayN_org_y(ray, args->N, 0),
+                       RTCRayN_org_z(ray, args->N, 0)};
+  const double d[3] = {RTCRayN_dir_x(ray, args->N, 0), RTCRayN_dir_y(ray, args->N, 0),
+                       RTCRayN_dir_z(ray, args->N, 0)};
+  const auto& a = g->aabbs[args->primID];
+  double t0 = -INFINITY, t1 = INFINITY;
+  for (int k = 0; k < 3; ++k) {
+    const double lo = a[k], hi = a[k + 3];
+    const double slack = 1e-6 * std::max({std::fabs(lo), std::fabs(hi), 1e-30});
+    if (d[k] == 0.0) {
+      if (o[k] < lo - slack || o[k] > hi + slack) return;
+      continue;
+    }
+    double ta = (lo - slack - o[k]) / d[k], tb = (hi + slack - o[k]) / d[k];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+  }
+  if (t0 > t1 || t1 < tc->tmin || t0 > tc->tmax) return;
+  ModelCandidate c;
+  c.aabb = true;
+  c.t = std::max(t0, tc->tmin);
+  c.instance = args->context->instID[0];
+  c.geometry = args->geomID;
+  c.primitive = args->primID;
+  tc->candidates->push_back(c);
+}
+
+void triangleFilter(const RTCFilterFunctionNArguments* args) {
+  TraceContext* tc = traceContext(args->context);
+  ModelCandidate c;
+  c.t = RTCRayN_tfar(args->ray, args->N, 0);
+  c.instance = RTCHitN_instID(args->hit, args->N, 0, 0);
+  c.geometry = RTCHitN_geomID(args->hit, args->N, 0);
+  c.primitive = RTCHitN_primID(args->hit, args->N, 0);
+  c.b1 = RTCHitN_u(args->hit, args->N, 0);
+  c.b2 = RTCHitN_v(args->hit, args->N, 0);
+  tc->candidates->push_back(c);
+  args->valid[0] = 0;  // keep enumerating: the model decides afterwards
+}
+
+}  // namespace
+
+bool triangleInactive(const std::array<Vec3, 3>& tri) {
+  return std::isnan(tri[0][0]) || std::isnan(tri[1][0]) || std::isnan(tri[2][0]);
+}
+
+bool needsOwnTriangleTest(const std::array<Vec3, 3>& tri) {
+  if (triangleInactive(tri)) return false;
+  for (const Vec3& v : tri)
+    for (float x : v)
+      if (std::isnan(x) || std::fabs(x) > kEmbreeLarge) return true;
+  return false;
+}
+
+ModelScene::~ModelScene() {
+  if (top) rtcReleaseScene(top);
+  for (ModelBlas& b : blases)
+    if (b.scene) rtcReleaseScene(b.scene);
+  if (device) rtcReleaseDevice(device);
+}
+
+void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters) {
+  s.tier = tier;
+  s.filters = filters;
+  s.device = rtcNewDevice(nullptr);
+  if (!s.device) throw std::runtime_error("rtcNewDevice failed");
+  const RTCSceneFlags sceneFlags = tier == ModelTier::Fast ? RTC_SCENE_FLAG_NONE : RTC_SCENE_FLAG_ROBUST;
+  s.blases.resize(c.scene.blases.size());
+  for (size_t bi = 0; bi < c.scene.blases.size(); ++bi) {
+    const Blas& src = c.scene.blases[bi];
+    ModelBlas& mb = s.blases[bi];
+    mb.geometries.resize(src.geometries.size());
+    for (size_t gi = 0; gi < src.geometries.size(); ++gi) {
+      const Geometry& g = src.geometries[gi];
+      ModelGeometry& mg = mb.geometries[gi];
+      mg.kind = g.kind;
+      mg.flags = g.flags;
+      mg.blas = static_cast<uint32_t>(bi);
+      mg.index = static_cast<uint32_t>(gi);
+      mg.tier = tier;
+      if (g.kind == Geometry::Kind::Aabbs) {
+        mg.aabbs = g.aabbs;
+        continue;
+      }
+      mb.triangles = true;
+      const uint32_t n = g.primitiveCount();
+      mg.triangles.resize(n);
+      for (uint32_t p = 0; p < n; ++p)
+        for (int k = 0; k < 3; ++k) {
+          const uint32_t idx = g.indices.empty() ? p * 3 + k : g.indices[p * 3 + k];
+          Vec3 v = idx < g.vertices.size() ? g.vertices[idx] : Vec3{NAN, NAN, NAN};
+          mg.triangles[p][k] = g.transform ? applyTransform(*g.transform, v) : v;
+        }
+      mg.own_triangles = tier == ModelTier::Exact;
+      for (const auto& tri : mg.triangles)
+        if (needsOwnTriangleTest(tri)) mg.own_triangles = true;
+    }
+    mb.scene = rtcNewScene(s.device);
+    rtcSetSceneFlags(mb.scene, sceneFlags);
+    for (ModelGeometry& mg : mb.geometries) {
+      const uint32_t n = mg.kind == Geometry::Kind::Aabbs ? static_cast<uint32_t>(mg.aabbs.size())
+                                                          : static_cast<uint32_t>(mg.triangles.size());
+      if (n == 0) continue;
+      RTCGeometry geom;
+      if (mg.kind == Geometry::Kind::Triangles && !mg.own_triangles) {
+        geom = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                               RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * n));
+        auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0,
+                                                                  RTC_FORMAT_UINT3, 3 * sizeof(unsigned), n));
+        for (uint32_t p = 0; p < n; ++p)
+          for (int k = 0; k < 3; ++k) {
+            for (int a = 0; a < 3; ++a) vb[(p * 3 + k) * 3 + a] = mg.triangles[p][k][a];
+            ib[p * 3 + k] = p * 3 + k;
+          }
+        rtcSetGeometryMask(geom, kMaskTriangles);
+        if (filters) rtcSetGeometryIntersectFilterFunction(geom, triangleFilter);
+      } else {
+        geom = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_USER);
+        rtcSetGeometryUserPrimitiveCount(geom, n);
+        rtcSetGeometryUserData(geom, &mg);
+        if (mg.kind == Geometry::Kind::Aabbs) {
+          rtcSetGeometryBoundsFunction(geom, aabbBounds, nullptr);
+          rtcSetGeometryIntersectFunction(geom, aabbIntersect);
+          rtcSetGeometryMask(geom, kMaskAabbs);
+        } else {
+          rtcSetGeometryBoundsFunction(geom, ownTriangleBounds, nullptr);
+          rtcSetGeometryIntersectFunction(geom, ownTriangleIntersect);
+          rtcSetGeometryMask(geom, kMaskTriangles);
+        }
+      }
+      rtcCommitGeometry(geom);
+      rtcAttachGeometryByID(mb.scene, geom, mg.index);
+      rtcReleaseGeometry(geom);
+    }
+    rtcCommitScene(mb.scene);
+  }
+  s.top = rtcNewScene(s.device);
+  rtcSetSceneFlags(s.top, sceneFlags);
+  s.instances.resize(c.scene.instances.size());
+  for (size_t ii = 0; ii < c.scene.instances.size(); ++ii) {
+    const Instance& inst = c.scene.instances[ii];
+    ModelInstance& mi = s.instances[ii];
+    mi.src = &inst;
+    mi.inverse = invert(inst.transform);
+    for (int k = 0; k < 12; ++k) mi.inverse_f[k] = static_cast<float>(mi.inverse[k]);
+    if (!inst.blas || *inst.blas >= s.blases.size()) continue;  // R-INACTIVE: null BLAS
+    mi.blas = static_cast<int>(*inst.blas);
+    RTCGeometry geom = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(geom, s.blases[mi.blas].scene);
+    rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, inst.transform.data());
+    rtcSetGeometryMask(geom, inst.mask & 0xFF);
+    rtcCommitGeometry(geom);
+    rtcAttachGeometryByID(s.top, geom, static_cast<unsigned>(ii));
+    rtcReleaseGeometry(geom);
+  }
+  rtcCommitScene(s.top);
+}
+
+}  // namespace rayspec

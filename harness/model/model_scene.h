@@ -1,0 +1,72 @@
+// The Embree scene of a case: one Embree scene per BLAS, instanced by a top
+// scene (instance index = geometry ID there, geometry index = geometry ID in
+// the BLAS scene). Triangles are Embree triangles, except in the exact tier
+// and for triangles Embree would drop although Vulkan keeps them active (NaN
+// in Y/Z only, coordinates beyond ~1.8e18): those become user geometry decided
+// by the model's own test. AABBs are always user geometry.
+#pragma once
+
+#include <embree3/rtcore.h>
+
+#include <array>
+#include <vector>
+
+#include "case/case.h"
+#include "model/model_backend.h"
+
+namespace rayspec {
+
+struct TraceState;  // model_trace.h
+
+struct ModelGeometry {
+  Geometry::Kind kind = Geometry::Kind::Triangles;
+  uint32_t flags = 0;
+  bool own_triangles = false;                  // user geometry with the model's test
+  std::vector<std::array<Vec3, 3>> triangles;  // per primitive, geometry transform applied
+  std::vector<std::array<float, 6>> aabbs;
+  uint32_t blas = 0, index = 0;
+  ModelTier tier = ModelTier::Exact;
+};
+
+struct ModelBlas {
+  std::vector<ModelGeometry> geometries;
+  bool triangles = false;
+  RTCScene scene = nullptr;
+};
+
+struct ModelInstance {
+  const Instance* src = nullptr;
+  int blas = -1;                    // -1: inactive (null BLAS)
+  std::array<double, 12> inverse{}; // world -> object, row-major 3x4
+  std::array<float, 12> inverse_f{};
+};
+
+struct ModelScene {
+  ModelTier tier = ModelTier::Exact;
+  bool filters = false;  // Embree triangles report every candidate to the model
+  RTCDevice device = nullptr;
+  RTCScene top = nullptr;
+  std::vector<ModelBlas> blases;
+  std::vector<ModelInstance> instances;
+
+  ModelScene() = default;
+  ModelScene(const ModelScene&) = delete;
+  ModelScene& operator=(const ModelScene&) = delete;
+  ~ModelScene();
+};
+
+// Mask bits: instance masks use the low 8 bits; triangle geometries carry
+// kMaskTriangles and AABB geometries kMaskAabbs, which a ray keeps unless it
+// skips that kind.
+constexpr unsigned kMaskTriangles = 0x100, kMaskAabbs = 0x200;
+
+// Builds the scene. `filters`: every triangle candidate goes to the model
+// (collect-then-process path); otherwise Embree's closest hit is used.
+void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters);
+
+// True when Embree would drop this triangle although Vulkan keeps it active.
+bool needsOwnTriangleTest(const std::array<Vec3, 3>& tri);
+// R-INACTIVE: NaN in the X component of any vertex.
+bool triangleInactive(const std::array<Vec3, 3>& tri);
+
+}  // namespace rayspec

@@ -1,0 +1,69 @@
+#include "model/model_shading.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace rayspec {
+namespace {
+
+float recordFloat(const std::vector<uint32_t>& r, uint32_t i) {
+  const uint32_t w = i < r.size() ? r[i] : 0u;
+  float f;
+  std::memcpy(&f, &w, 4);
+  return f;
+}
+float dot3(const F3& a, const F3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+F3 sub3(const F3& a, const F3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+F3 div3(const F3& a, float s) { return {a[0] / s, a[1] / s, a[2] / s}; }
+F3 normalize3(const F3& v) { return div3(v, std::sqrt(dot3(v, v))); }
+
+}  // namespace
+
+F4 lightColor(const std::string& kind, const F3& P, const F3& N, const std::vector<uint32_t>& rec) {
+  auto f = [&](uint32_t i) { return recordFloat(rec, i); };
+  if (kind == "point") {
+    const F3 L = sub3({f(0), f(1), f(2)}, P);
+    const float d2 = dot3(L, L);
+    const F3 l = div3(L, std::sqrt(d2));
+    const float k = std::max(dot3(N, l), 0.0f) / d2;
+    return {k * f(3), k * f(4), k * f(5), 1.0f};
+  }
+  if (kind == "spot") {
+    const F3 L = sub3({f(0), f(1), f(2)}, P);
+    const float d = std::sqrt(dot3(L, L));
+    const F3 l = div3(L, d);
+    const F3 nl = {-l[0], -l[1], -l[2]};
+    const float cosang = dot3(nl, normalize3({f(3), f(4), f(5)}));
+    const float s = cosang >= f(6) ? 1.0f : 0.0f;
+    const float c = f(7) * s * std::max(dot3(N, l), 0.0f) / (d * d);
+    return {c, c, c, 1.0f};
+  }
+  // directional
+  const F3 n = normalize3({f(0), f(1), f(2)});
+  const F3 l = {-n[0], -n[1], -n[2]};
+  const float k = std::max(dot3(N, l), 0.0f);
+  return {k * f(3), k * f(4), k * f(5), 1.0f};
+}
+
+SphereRoots sphereRoots(const F3& bmin, const F3& bmax, const F3& o, const F3& d) {
+  F3 c, h;
+  for (int k = 0; k < 3; ++k) {
+    c[k] = (bmin[k] + bmax[k]) * 0.5f;
+    h[k] = (bmax[k] - bmin[k]) * 0.5f;
+  }
+  const float r = std::min(std::min(h[0], h[1]), h[2]);
+  const F3 oc = sub3(o, c);
+  const float a = dot3(d, d);
+  const float b = dot3(oc, d);
+  const float cc = dot3(oc, oc) - r * r;
+  const float disc = b * b - a * cc;
+  const float s = std::sqrt(std::max(disc, 0.0f));
+  SphereRoots sp;
+  sp.hit = disc >= 0.0f;
+  sp.t_near = (-b - s) / a;
+  sp.t_far = (-b + s) / a;
+  return sp;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,25 @@
+// Model counterparts of shaders/lights.glsl and shaders/sphere.glsl: the same
+// formulas, operation by operation, in float.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rayspec {
+
+using F3 = std::array<float, 3>;
+using F4 = std::array<float, 4>;
+
+// `light: point|spot|directional`: P = call.position, N = call.normal,
+// record = the callable's shader record words (floats as bits).
+F4 lightColor(const std::string& kind, const F3& P, const F3& N, const std::vector<uint32_t>& record);
+
+struct SphereRoots {
+  bool hit = false;
+  float t_near = 0, t_far = 0;
+};
+SphereRoots sphereRoots(const F3& bmin, const F3& bmax, const F3& o, const F3& d);
+
+}  // namespace rayspec

@@ -1,0 +1,33 @@
+// What Embree's callbacks hand to the model during one traversal: every
+// candidate of the trace is collected here and decided later, in order.
+#pragma once
+
+#include <embree3/rtcore.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "model/watertight.h"
+
+namespace rayspec {
+
+struct ModelScene;
+
+struct ModelCandidate {
+  double t = 0;      // triangles: hit t; AABBs: box entry, clamped to tmin
+  uint32_t instance = 0, geometry = 0, primitive = 0;
+  bool aabb = false;
+  bool hit = true;   // triangles: the model's decision (false: kept only as ambiguous)
+  float b1 = 0, b2 = 0;
+  TriAmbiguity ambiguity = TriAmbiguity::None;
+};
+
+struct TraceContext {
+  RTCIntersectContext rtc;  // first member: Embree hands back its address
+  const ModelScene* scene = nullptr;
+  DVec3 origin{}, direction{};  // world ray
+  double tmin = 0, tmax = 0;
+  std::vector<ModelCandidate>* candidates = nullptr;
+};
+
+}  // namespace rayspec

@@ -1,0 +1,70 @@
+// The table of built-ins, as documented in builtins.h.
+#include "program/builtins.h"
+
+namespace rayspec {
+namespace {
+
+constexpr StageMask R = stageBit(Stage::Raygen);
+constexpr StageMask M = stageBit(Stage::Miss);
+constexpr StageMask C = stageBit(Stage::ClosestHit);
+constexpr StageMask A = stageBit(Stage::AnyHit);
+constexpr StageMask I = stageBit(Stage::Intersection);
+constexpr StageMask K = stageBit(Stage::Callable);
+
+}  // namespace
+
+const std::vector<BuiltinInfo>& builtins() {
+  static const std::vector<BuiltinInfo> table = {
+      {"launch_id_x", ValueType::Uint, kAllStages, "x of gl_LaunchIDEXT"},
+      {"launch_id_y", ValueType::Uint, kAllStages, "y of gl_LaunchIDEXT"},
+      {"launch_size_x", ValueType::Uint, kAllStages, "x of gl_LaunchSizeEXT"},
+      {"launch_size_y", ValueType::Uint, kAllStages, "y of gl_LaunchSizeEXT"},
+      {"primitive_id", ValueType::Uint, I | A | C, "gl_PrimitiveID"},
+      {"instance_id", ValueType::Uint, I | A | C, "gl_InstanceID"},
+      {"instance_custom_index", ValueType::Uint, I | A | C, "gl_InstanceCustomIndexEXT"},
+      {"geometry_index", ValueType::Uint, I | A | C, "gl_GeometryIndexEXT"},
+      {"hit_kind", ValueType::Uint, A | C, "gl_HitKindEXT"},
+      {"hit_t", ValueType::Float, A | C,
+       "gl_HitTEXT: in any-hit the candidate's t, in closest-hit the hit's t"},
+      {"hit", ValueType::Uint, C | M, "1 in closest-hit, 0 in miss"},
+      {"ray_tmin", ValueType::Float, I | A | C | M, "gl_RayTminEXT"},
+      {"ray_tmax", ValueType::Float, I | A | C | M, "gl_RayTmaxEXT"},
+      {"incoming_ray_flags", ValueType::Uint, I | A | C | M, "gl_IncomingRayFlagsEXT"},
+      {"world_ray_origin", ValueType::Vec3, I | A | C | M, "gl_WorldRayOriginEXT"},
+      {"world_ray_direction", ValueType::Vec3, I | A | C | M, "gl_WorldRayDirectionEXT"},
+      {"object_ray_origin", ValueType::Vec3, I | A | C, "gl_ObjectRayOriginEXT"},
+      {"object_ray_direction", ValueType::Vec3, I | A | C, "gl_ObjectRayDirectionEXT"},
+      {"barycentrics", ValueType::Vec2, A | C,
+       "the hit attribute: triangle barycentrics (b1, b2), or what the intersection "
+       "shader reported"},
+      {"hit_position", ValueType::Vec3, A | C,
+       "world ray origin + hit_t * world ray direction"},
+      {"aabb_min", ValueType::Vec3, I, "min corner of the primitive's AABB (object space)"},
+      {"aabb_max", ValueType::Vec3, I, "max corner of the primitive's AABB (object space)"},
+      {"payload.color", ValueType::Vec4, M | C | A | R,
+       "color of the incoming payload; in raygen the payload of its last trace"},
+      {"payload.value", ValueType::Uint, M | C | A | R,
+       "value of the incoming payload; in raygen the payload of its last trace"},
+      {"depth", ValueType::Uint, M | C | A,
+       "trace depth: 1 for a trace from raygen, +1 per nested trace"},
+      {"child.color", ValueType::Vec4, C | M, "color of the payload of this stage's last trace"},
+      {"child.value", ValueType::Uint, C | M, "value of the payload of this stage's last trace"},
+      {"call.position", ValueType::Vec3, K, "position of the incoming callable data"},
+      {"call.normal", ValueType::Vec3, K, "normal of the incoming callable data"},
+      {"call.color", ValueType::Vec4, K, "color of the incoming callable data"},
+      {"call.value", ValueType::Uint, K, "value of the incoming callable data"},
+      {"callee.color", ValueType::Vec4, R | C | M | K,
+       "color of the callable data after this stage's last call"},
+      {"callee.value", ValueType::Uint, R | C | M | K,
+       "value of the callable data after this stage's last call"},
+  };
+  return table;
+}
+
+const BuiltinInfo* findBuiltin(const std::string& name) {
+  for (const BuiltinInfo& b : builtins())
+    if (name == b.name) return &b;
+  return nullptr;
+}
+
+}  // namespace rayspec

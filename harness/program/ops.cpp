@@ -1,0 +1,63 @@
+// The table of operators, as documented in ops.h. Typing rules are in
+// type_check.cpp.
+#include "program/ops.h"
+
+namespace rayspec {
+namespace {
+
+constexpr StageMask kIsect = stageBit(Stage::Intersection);
+constexpr int kMany = 16;  // and/or take 2 or more arguments
+
+}  // namespace
+
+const std::vector<OpInfo>& ops() {
+  static const std::vector<OpInfo> table = {
+      {"add", 2, 2, kAllStages, "a + b (same numeric type, or Float scalar with a vector)"},
+      {"sub", 2, 2, kAllStages, "a - b (same numeric type, or Float scalar with a vector)"},
+      {"mul", 2, 2, kAllStages, "a * b (same numeric type, or Float scalar with a vector)"},
+      {"div", 2, 2, kAllStages, "a / b (Uint division truncates)"},
+      {"mod", 2, 2, kAllStages, "a % b (Uint)"},
+      {"min", 2, 2, kAllStages, "smaller of a and b (same numeric type)"},
+      {"max", 2, 2, kAllStages, "larger of a and b (same numeric type)"},
+      {"eq", 2, 2, kAllStages, "a == b (same scalar type) -> Bool"},
+      {"ne", 2, 2, kAllStages, "a != b (same scalar type) -> Bool"},
+      {"lt", 2, 2, kAllStages, "a < b (same scalar type) -> Bool"},
+      {"le", 2, 2, kAllStages, "a <= b (same scalar type) -> Bool"},
+      {"gt", 2, 2, kAllStages, "a > b (same scalar type) -> Bool"},
+      {"ge", 2, 2, kAllStages, "a >= b (same scalar type) -> Bool"},
+      {"and", 2, kMany, kAllStages, "all arguments true (Bool)"},
+      {"or", 2, kMany, kAllStages, "any argument true (Bool)"},
+      {"not", 1, 1, kAllStages, "negation (Bool)"},
+      {"odd", 1, 1, kAllStages, "Uint is odd -> Bool"},
+      {"even", 1, 1, kAllStages, "Uint is even -> Bool"},
+      {"float", 1, 1, kAllStages, "Uint -> Float"},
+      {"uint", 1, 1, kAllStages, "Float -> Uint, truncation toward zero"},
+      {"vec2", 1, 2, kAllStages, "Float scalars -> Vec2 (a single Float splats)"},
+      {"vec3", 1, 3, kAllStages, "Float scalars -> Vec3 (a single Float splats)"},
+      {"vec4", 1, 4, kAllStages, "Float scalars -> Vec4 (a single Float splats)"},
+      {"x", 1, 1, kAllStages, "first component of a vector -> Float"},
+      {"y", 1, 1, kAllStages, "second component of a vector -> Float"},
+      {"z", 1, 1, kAllStages, "third component of a vector -> Float"},
+      {"w", 1, 1, kAllStages, "fourth component of a vector -> Float"},
+      {"dot", 2, 2, kAllStages, "dot product of two vectors of the same size -> Float"},
+      {"length", 1, 1, kAllStages, "length of a vector -> Float"},
+      {"normalize", 1, 1, kAllStages, "vector / its length"},
+      {"sphere_hit", 0, 0, kIsect,
+       "the object-space ray meets the sphere inscribed in the AABB (discriminant >= 0)"},
+      {"sphere_near", 0, 0, kIsect, "near root t of the ray against the inscribed sphere"},
+      {"sphere_far", 0, 0, kIsect, "far root t of the ray against the inscribed sphere"},
+      {"shader_record_uint", 1, 1, kAllStages,
+       "word i (Uint literal 0..7) of this stage's shader record data, as Uint"},
+      {"shader_record_float", 1, 1, kAllStages,
+       "word i (Uint literal 0..7) of this stage's shader record data, as Float"},
+  };
+  return table;
+}
+
+const OpInfo* findOp(const std::string& name) {
+  for (const OpInfo& o : ops())
+    if (name == o.name) return &o;
+  return nullptr;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,115 @@
+// results.csv, junit.xml, summary.json and summary.txt.
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "report/escape.h"
+#include "report/write_reports.h"
+
+namespace rayspec {
+
+const char* deqpStatusName(Status s) {
+  switch (s) {
+    case Status::Pass: return "Pass";
+    case Status::Fail: return "Fail";
+    case Status::QualityWarning: return "Warn";
+    case Status::NotSupported: return "Skip";
+    case Status::Crash: return "Crash";
+    case Status::Timeout: return "Timeout";
+  }
+  return "Crash";
+}
+
+std::string writeResultsCsv(const std::vector<CaseOutcome>& outcomes, const std::string& path) {
+  std::ofstream out(path);
+  for (const CaseOutcome& o : outcomes) out << o.name << ',' << deqpStatusName(o.status) << ',' << o.seconds << '\n';
+  return out ? std::string() : "cannot write " + path;
+}
+
+std::string writeJunitXml(const std::vector<CaseOutcome>& outcomes, const std::string& path) {
+  int failures = 0, skipped = 0, errors = 0;
+  double total = 0;
+  for (const CaseOutcome& o : outcomes) {
+    failures += o.status == Status::Fail || o.status == Status::QualityWarning;
+    errors += o.status == Status::Crash || o.status == Status::Timeout;
+    skipped += o.status == Status::NotSupported;
+    total += o.seconds;
+  }
+  std::ofstream out(path);
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out << "<testsuites><testsuite name=\"rayspec\" tests=\"" << outcomes.size() << "\" failures=\"" << failures
+      << "\" errors=\"" << errors << "\" skipped=\"" << skipped << "\" time=\"" << total << "\">\n";
+  for (const CaseOutcome& o : outcomes) {
+    const std::string family = o.name.substr(0, o.name.find('/'));
+    out << "  <testcase classname=\"rayspec." << xmlEscape(family) << "\" name=\"" << xmlEscape(o.name)
+        << "\" time=\"" << o.seconds << "\">";
+    switch (o.status) {
+      case Status::Pass: break;
+      case Status::NotSupported: out << "<skipped message=\"" << xmlEscape(o.headline) << "\"/>"; break;
+      case Status::Crash:
+      case Status::Timeout:
+        out << "<error type=\"" << statusName(o.status) << "\" message=\"" << xmlEscape(o.headline) << "\"/>";
+        break;
+      default:
+        out << "<failure type=\"" << statusName(o.status) << "\" message=\"" << xmlEscape(o.headline) << "\"/>";
+    }
+    out << "</testcase>\n";
+  }
+  out << "</testsuite></testsuites>\n";
+  return out ? std::string() : "cannot write " + path;
+}
+
+std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const RunInfo& info, const std::string& path) {
+  nlohmann::json j;
+  j["device"] = info.device;
+  j["model_tier"] = info.model_tier;
+  j["started"] = info.started;
+  j["validation"] = info.validation;
+  j["teardown_validation_errors"] = info.teardown_errors;
+  std::map<std::string, int> counts;
+  for (Status s : {Status::Pass, Status::Fail, Status::QualityWarning, Status::NotSupported, Status::Crash,
+                   Status::Timeout})
+    counts[statusName(s)] = 0;
+  j["cases"] = nlohmann::json::array();
+  for (const CaseOutcome& o : outcomes) {
+    ++counts[statusName(o.status)];
+    nlohmann::json c{{"name", o.name}, {"status", statusName(o.status)}, {"headline", o.headline},
+                     {"seconds", o.seconds}, {"device_seconds", o.device_seconds},
+                     {"model_seconds", o.model_seconds}, {"rules", o.rules}};
+    c["findings"] = nlohmann::json::array();
+    for (const Finding& f : o.verdict.findings)
+      c["findings"].push_back({{"status", statusName(f.status)}, {"rule", f.rule}, {"message", f.message},
+                               {"rays", f.rays}, {"ray_count", f.ray_count}});
+    j["cases"].push_back(c);
+  }
+  j["counts"] = counts;
+  std::ofstream out(path);
+  out << j.dump(1) << '\n';
+  return out ? std::string() : "cannot write " + path;
+}
+
+std::string writeSummaryText(const std::vector<CaseOutcome>& outcomes, const std::string& path) {
+  std::ofstream out(path);
+  for (const CaseOutcome& o : outcomes) {
+    out << o.name << ": " << o.headline << '\n';
+    for (const Finding& f : o.verdict.findings)
+      out << "    [" << statusName(f.status) << "] " << f.rule << ": " << f.message << '\n';
+  }
+  return out ? std::string() : "cannot write " + path;
+}
+
+std::string writeReports(const std::vector<CaseOutcome>& outcomes, const RunInfo& info, const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) return "cannot create " + dir + ": " + ec.message();
+  for (const std::string& err :
+       {writeResultsCsv(outcomes, dir + "/results.csv"), writeJunitXml(outcomes, dir + "/junit.xml"),
+        writeSummaryJson(outcomes, info, dir + "/summary.json"), writeSummaryText(outcomes, dir + "/summary.txt"),
+        writeReportHtml(outcomes, info, dir + "/report.html")})
+    if (!err.empty()) return err;
+  return {};
+}
+
+}  // namespace rayspec

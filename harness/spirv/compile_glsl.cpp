@@ -1,0 +1,99 @@
+// GLSL -> SPIR-V: glslang as a library, SPIRV-Tools validation, and a cache
+// keyed by a content hash (memory, plus <dir>/<hash>.spv when a folder is set).
+#include "spirv/compile_glsl.h"
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+
+#include <spirv-tools/libspirv.hpp>
+
+#include <map>
+#include <mutex>
+
+#include "spirv/glsl_error_lines.h"
+#include "spirv/spirv_cache.h"
+#include "spirv/spirv_stage.h"
+
+namespace rayspec {
+namespace {
+
+void initializeOnce() {
+  static std::once_flag flag;
+  std::call_once(flag, [] { glslang::InitializeProcess(); });
+}
+
+// glslang front end + SPIR-V back end. Fills words, or error (quoting lines).
+void glslToSpirv(const std::string& glsl, Stage stage, std::vector<uint32_t>& words,
+                 std::string& error) {
+  const EShLanguage lang = glslangStage(stage);
+  glslang::TShader shader(lang);
+  const char* text = glsl.c_str();
+  shader.setStrings(&text, 1);
+  shader.setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientVulkan, 100);
+  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_2);
+  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_4);
+  shader.setEntryPoint("main");
+  const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules);
+  if (!shader.parse(GetDefaultResources(), 460, false, messages)) {
+    error = "glslang: " + quoteGlslLines(shader.getInfoLog(), glsl);
+    return;
+  }
+  glslang::TProgram program;
+  program.addShader(&shader);
+  if (!program.link(messages)) {
+    error = "glslang link: " + quoteGlslLines(program.getInfoLog(), glsl);
+    return;
+  }
+  glslang::SpvOptions options;
+  options.validate = false;  // SPIRV-Tools runs below, with its messages kept
+  spv::SpvBuildLogger logger;
+  std::vector<unsigned int> spirv;
+  glslang::GlslangToSpv(*program.getIntermediate(lang), spirv, &logger, &options);
+  const std::string log = logger.getAllMessages();
+  if (spirv.empty()) {
+    error = "glslang SPIR-V back end produced nothing: " + log;
+    return;
+  }
+  words.assign(spirv.begin(), spirv.end());
+}
+
+// SPIRV-Tools validation for Vulkan 1.2; returns the messages (empty = valid).
+std::string validate(const std::vector<uint32_t>& words) {
+  spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_2);
+  std::string messages;
+  tools.SetMessageConsumer([&messages](spv_message_level_t, const char*,
+                                       const spv_position_t& pos, const char* msg) {
+    messages += "spirv-val (word " + std::to_string(pos.index) + "): " + msg + "\n";
+  });
+  if (tools.Validate(words)) return {};
+  if (messages.empty()) messages = "spirv-val: invalid module\n";
+  return messages;
+}
+
+}  // namespace
+
+SpirvResult compileGlsl(const std::string& glsl, Stage stage) {
+  SpirvResult result;
+  const uint64_t key = spirvCacheKey(glsl, stage);
+  if (spirvCacheLookup(key, result.words)) {
+    result.from_cache = true;
+    return result;
+  }
+  initializeOnce();
+  glslToSpirv(glsl, stage, result.words, result.error);
+  if (!result.error.empty()) {
+    result.words.clear();
+    return result;
+  }
+  const std::string invalid = validate(result.words);
+  if (!invalid.empty()) {
+    result.error = invalid + describeSpirvFailure(glsl, stage);
+    result.words.clear();
+    return result;
+  }
+  spirvCacheStore(key, result.words);
+  return result;
+}
+
+}  // namespace rayspec

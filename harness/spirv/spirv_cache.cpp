@@ -1,0 +1,131 @@
+#include "spirv/spirv_cache.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <thread>
+#include <unordered_map>
+
+#include <unistd.h>
+
+#include "spirv/compile_glsl.h"
+
+namespace rayspec {
+namespace {
+
+// Bump when the compile options change, so old cache files are not reused.
+constexpr char kCacheVersion[] = "rayspec-spirv-1:vk1.2:spv1.4";
+constexpr uint32_t kSpirvMagic = 0x07230203;
+
+struct Cache {
+  std::mutex mutex;
+  std::unordered_map<uint64_t, std::vector<uint32_t>> memory;
+  std::string dir;
+};
+
+Cache& cache() {
+  static Cache c;
+  return c;
+}
+
+uint64_t fnv1a(uint64_t h, const void* data, size_t n) {
+  const auto* p = static_cast<const unsigned char*>(data);
+  for (size_t i = 0; i < n; ++i) {
+    h ^= p[i];
+    h *= 0x100000001b3ull;
+  }
+  return h;
+}
+
+bool readFile(const std::filesystem::path& path, std::vector<uint32_t>& words) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) return false;
+  const std::streamsize size = in.tellg();
+  if (size < 20 || size % 4 != 0) return false;
+  std::vector<uint32_t> data(static_cast<size_t>(size) / 4);
+  in.seekg(0);
+  if (!in.read(reinterpret_cast<char*>(data.data()), size)) return false;
+  if (data[0] != kSpirvMagic) return false;
+  words = std::move(data);
+  return true;
+}
+
+void writeFile(const std::filesystem::path& path, const std::vector<uint32_t>& words) {
+  // Write to a temporary name, then rename: readers never see half a file.
+  std::filesystem::path tmp = path;
+  tmp += ".tmp" + std::to_string(::getpid()) + "-" +
+         std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id()));
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) return;
+    out.write(reinterpret_cast<const char*>(words.data()),
+              static_cast<std::streamsize>(words.size() * 4));
+    if (!out) return;
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) std::filesystem::remove(tmp, ec);
+}
+
+}  // namespace
+
+uint64_t spirvCacheKey(const std::string& glsl, Stage stage) {
+  uint64_t h = 0xcbf29ce484222325ull;
+  h = fnv1a(h, kCacheVersion, sizeof(kCacheVersion));
+  const unsigned char s = static_cast<unsigned char>(stage);
+  h = fnv1a(h, &s, 1);
+  return fnv1a(h, glsl.data(), glsl.size());
+}
+
+std::string spirvCacheFileName(uint64_t key) {
+  char name[32];
+  std::snprintf(name, sizeof(name), "%016llx.spv", static_cast<unsigned long long>(key));
+  return name;
+}
+
+bool spirvCacheLookup(uint64_t key, std::vector<uint32_t>& words) {
+  Cache& c = cache();
+  std::string dir;
+  {
+    std::lock_guard<std::mutex> lock(c.mutex);
+    auto it = c.memory.find(key);
+    if (it != c.memory.end()) {
+      words = it->second;
+      return true;
+    }
+    dir = c.dir;
+  }
+  if (dir.empty()) return false;
+  if (!readFile(std::filesystem::path(dir) / spirvCacheFileName(key), words)) return false;
+  std::lock_guard<std::mutex> lock(c.mutex);
+  c.memory.emplace(key, words);
+  return true;
+}
+
+void spirvCacheStore(uint64_t key, const std::vector<uint32_t>& words) {
+  Cache& c = cache();
+  std::string dir;
+  {
+    std::lock_guard<std::mutex> lock(c.mutex);
+    c.memory[key] = words;
+    dir = c.dir;
+  }
+  if (!dir.empty()) writeFile(std::filesystem::path(dir) / spirvCacheFileName(key), words);
+}
+
+void clearSpirvMemoryCache() {
+  std::lock_guard<std::mutex> lock(cache().mutex);
+  cache().memory.clear();
+}
+
+void setSpirvCacheDir(const std::string& dir) {
+  if (!dir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+  }
+  std::lock_guard<std::mutex> lock(cache().mutex);
+  cache().dir = dir;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,242 @@
+#include "vulkan/acceleration_structure.h"
+
+#include <cstring>
+#include <vector>
+
+#include "vulkan/memory.h"
+#include "vulkan/vk_check.h"
+
+namespace rayspec {
+namespace {
+
+constexpr VkBufferUsageFlags kInputUsage =
+    VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
+    VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
+
+// Host bytes of every BLAS build input (vertices, indices, transforms, boxes),
+// each piece at a 16-byte aligned offset, uploaded as one buffer.
+class InputPacker {
+ public:
+  uint64_t add(const void* data, size_t bytes) {
+    uint64_t at = (bytes_.size() + 15) / 16 * 16;
+    bytes_.resize(at + bytes);
+    if (bytes) std::memcpy(bytes_.data() + at, data, bytes);
+    return at;
+  }
+  const std::vector<uint8_t>& bytes() const { return bytes_; }
+
+ private:
+  std::vector<uint8_t> bytes_;
+};
+
+struct BlasBuild {
+  std::vector<VkAccelerationStructureGeometryKHR> geometries;
+  std::vector<VkAccelerationStructureBuildRangeInfoKHR> ranges;
+  std::vector<uint32_t> max_primitives;
+  std::vector<uint64_t> offsets;  // per geometry: data, index, transform (packer offsets)
+  VkAccelerationStructureKHR handle = VK_NULL_HANDLE;
+  VkDeviceAddress address = 0;
+};
+
+constexpr uint64_t kNone = ~0ull;
+
+// First pass: pack the inputs and fill the geometry descriptions with packer
+// offsets; addresses are patched once the input buffer exists.
+void describeBlas(const Blas& blas, InputPacker& packer, BlasBuild& b) {
+  for (const Geometry& g : blas.geometries) {
+    VkAccelerationStructureGeometryKHR geo{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
+    geo.flags = g.flags;
+    uint32_t primitives = g.primitiveCount();
+    uint64_t data = kNone, index = kNone, transform = kNone;
+    if (g.kind == Geometry::Kind::Triangles) {
+      geo.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
+      auto& t = geo.geometry.triangles;
+      t.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR;
+      t.vertexFormat = VK_FORMAT_R32G32B32_SFLOAT;
+      t.vertexStride = sizeof(Vec3);
+      t.maxVertex = g.vertices.empty() ? 0 : static_cast<uint32_t>(g.vertices.size() - 1);
+      data = packer.add(g.vertices.data(), g.vertices.size() * sizeof(Vec3));
+      t.indexType = g.indices.empty() ? VK_INDEX_TYPE_NONE_KHR : VK_INDEX_TYPE_UINT32;
+      if (!g.indices.empty()) index = packer.add(g.indices.data(), g.indices.size() * 4);
+      if (g.transform) {
+        static_assert(sizeof(VkTransformMatrixKHR) == sizeof(Transform));
+        transform = packer.add(g.transform->data(), sizeof(Transform));
+      }
+    } else {
+      geo.geometryType = VK_GEOMETRY_TYPE_AABBS_KHR;
+      auto& a = geo.geometry.aabbs;
+      a.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_AABBS_DATA_KHR;
+      a.stride = sizeof(VkAabbPositionsKHR);
+      static_assert(sizeof(VkAabbPositionsKHR) == sizeof(std::array<float, 6>));
+      data = packer.add(g.aabbs.data(), g.aabbs.size() * sizeof(VkAabbPositionsKHR));
+    }
+    b.geometries.push_back(geo);
+    b.offsets.insert(b.offsets.end(), {data, index, transform});
+    VkAccelerationStructureBuildRangeInfoKHR range{};
+    range.primitiveCount = primitives;
+    b.ranges.push_back(range);
+    b.max_primitives.push_back(primitives);
+  }
+}
+
+void patchAddresses(BlasBuild& b, VkDeviceAddress base) {
+  for (size_t i = 0; i < b.geometries.size(); ++i) {
+    auto at = [&](uint64_t off) { return off == kNone ? VkDeviceAddress(0) : base + off; };
+    VkAccelerationStructureGeometryKHR& geo = b.geometries[i];
+    if (geo.geometryType == VK_GEOMETRY_TYPE_TRIANGLES_KHR) {
+      geo.geometry.triangles.vertexData.deviceAddress = at(b.offsets[3 * i]);
+      geo.geometry.triangles.indexData.deviceAddress = at(b.offsets[3 * i + 1]);
+      geo.geometry.triangles.transformData.deviceAddress = at(b.offsets[3 * i + 2]);
+    } else {
+      geo.geometry.aabbs.data.deviceAddress = at(b.offsets[3 * i]);
+    }
+  }
+}
+
+VkAccelerationStructureBuildGeometryInfoKHR buildInfo(VkAccelerationStructureTypeKHR type,
+                                                      const std::vector<VkAccelerationStructureGeometryKHR>& geos) {
+  VkAccelerationStructureBuildGeometryInfoKHR info{
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
+  info.type = type;
+  info.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR;
+  info.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
+  info.geometryCount = static_cast<uint32_t>(geos.size());
+  info.pGeometries = geos.data();
+  return info;
+}
+
+// Creates the structure's storage buffer and the structure; returns its
+// build scratch size.
+VkAccelerationStructureKHR createStructure(const VulkanContext& ctx, VkAccelerationStructureTypeKHR type,
+                                           VkDeviceSize size, Cleanup& cleanup) {
+  Buffer storage = createBuffer(ctx, size,
+                                VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR |
+                                    VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                                MemoryUse::Device, cleanup);
+  VkAccelerationStructureCreateInfoKHR info{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR};
+  info.buffer = storage.buffer;
+  info.size = size;
+  info.type = type;
+  VkAccelerationStructureKHR as = VK_NULL_HANDLE;
+  vkCheck(ctx.fn.createAccelerationStructure(ctx.device, &info, nullptr, &as),
+          "vkCreateAccelerationStructureKHR");
+  VkDevice device = ctx.device;
+  auto destroy = ctx.fn.destroyAccelerationStructure;
+  cleanup.add([device, destroy, as] { destroy(device, as, nullptr); });
+  return as;
+}
+
+void barrier(VkCommandBuffer cmd, VkPipelineStageFlags dst_stage) {
+  VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  mb.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
+  mb.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, dst_stage, 0, 1,
+                       &mb, 0, nullptr, 0, nullptr);
+}
+
+}  // namespace
+
+VkAccelerationStructureKHR recordSceneBuild(const VulkanContext& ctx, const Scene& scene,
+                                            VkCommandBuffer cmd, Cleanup& cleanup) {
+  const VkDeviceSize scratch_align = ctx.as_props.minAccelerationStructureScratchOffsetAlignment;
+
+  // Which BLASes some instance reaches.
+  std::vector<bool> used(scene.blases.size(), false);
+  for (const Instance& inst : scene.instances)
+    if (inst.blas && *inst.blas < scene.blases.size()) used[*inst.blas] = true;
+
+  InputPacker packer;
+  std::vector<BlasBuild> builds(scene.blases.size());
+  for (size_t i = 0; i < scene.blases.size(); ++i)
+    if (used[i]) describeBlas(scene.blases[i], packer, builds[i]);
+
+  Buffer inputs;
+  if (!packer.bytes().empty())
+    inputs = createUploadBuffer(ctx, packer.bytes().data(), packer.bytes().size(), kInputUsage, cleanup);
+
+  // Sizes, structures and scratch offsets of the BLASes.
+  std::vector<VkAccelerationStructureBuildGeometryInfoKHR> infos;
+  std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
+  std::vector<VkDeviceSize> scratch_offsets;
+  VkDeviceSize scratch_total = 0;
+  for (size_t i = 0; i < builds.size(); ++i) {
+    if (!used[i]) continue;
+    BlasBuild& b = builds[i];
+    patchAddresses(b, inputs.address);
+    VkAccelerationStructureBuildGeometryInfoKHR info =
+        buildInfo(VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, b.geometries);
+    VkAccelerationStructureBuildSizesInfoKHR sizes{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
+    ctx.fn.getAccelerationStructureBuildSizes(ctx.device, VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
+                                              &info, b.max_primitives.data(), &sizes);
+    b.handle = createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR,
+                               sizes.accelerationStructureSize, cleanup);
+    info.dstAccelerationStructure = b.handle;
+    VkAccelerationStructureDeviceAddressInfoKHR ai{
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_DEVICE_ADDRESS_INFO_KHR};
+    ai.accelerationStructure = b.handle;
+    b.address = ctx.fn.getAccelerationStructureDeviceAddress(ctx.device, &ai);
+    scratch_total = alignUp(scratch_total, scratch_align);
+    scratch_offsets.push_back(scratch_total);
+    scratch_total += sizes.buildScratchSize;
+    infos.push_back(info);
+    ranges.push_back(b.ranges.data());
+  }
+
+  // The TLAS: its instances and sizes.
+  std::vector<VkAccelerationStructureInstanceKHR> instances;
+  for (const Instance& inst : scene.instances) {
+    VkAccelerationStructureInstanceKHR vi{};
+    std::memcpy(&vi.transform, inst.transform.data(), sizeof(vi.transform));
+    vi.instanceCustomIndex = inst.custom_index & 0xFFFFFF;
+    vi.mask = inst.mask & 0xFF;
+    vi.instanceShaderBindingTableRecordOffset = inst.sbt_offset & 0xFFFFFF;
+    vi.flags = inst.flags & 0xFF;
+    vi.accelerationStructureReference =
+        inst.blas && *inst.blas < builds.size() ? builds[*inst.blas].address : 0;
+    instances.push_back(vi);
+  }
+  Buffer instance_buffer = createUploadBuffer(ctx, instances.data(),
+                                              instances.size() * sizeof(VkAccelerationStructureInstanceKHR),
+                                              kInputUsage, cleanup);
+  std::vector<VkAccelerationStructureGeometryKHR> tlas_geo(1);
+  tlas_geo[0].sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR;
+  tlas_geo[0].geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
+  tlas_geo[0].geometry.instances.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
+  tlas_geo[0].geometry.instances.arrayOfPointers = VK_FALSE;
+  tlas_geo[0].geometry.instances.data.deviceAddress = instance_buffer.address;
+  VkAccelerationStructureBuildGeometryInfoKHR tlas_info =
+      buildInfo(VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, tlas_geo);
+  uint32_t instance_count = static_cast<uint32_t>(instances.size());
+  VkAccelerationStructureBuildSizesInfoKHR tlas_sizes{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
+  ctx.fn.getAccelerationStructureBuildSizes(ctx.device, VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
+                                            &tlas_info, &instance_count, &tlas_sizes);
+  VkAccelerationStructureKHR tlas = createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
+                                                    tlas_sizes.accelerationStructureSize, cleanup);
+  tlas_info.dstAccelerationStructure = tlas;
+  scratch_total = alignUp(scratch_total, scratch_align);
+  VkDeviceSize tlas_scratch = scratch_total;
+  scratch_total += tlas_sizes.buildScratchSize;
+
+  // One scratch buffer; its address aligned up to the scratch alignment.
+  Buffer scratch = createBuffer(ctx, scratch_total + scratch_align,
+                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                                MemoryUse::Device, cleanup);
+  VkDeviceAddress scratch_base = alignUp(scratch.address, scratch_align);
+  for (size_t i = 0; i < infos.size(); ++i)
+    infos[i].scratchData.deviceAddress = scratch_base + scratch_offsets[i];
+  tlas_info.scratchData.deviceAddress = scratch_base + tlas_scratch;
+
+  if (!infos.empty()) {
+    ctx.fn.cmdBuildAccelerationStructures(cmd, static_cast<uint32_t>(infos.size()), infos.data(),
+                                          ranges.data());
+    barrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR);
+  }
+  VkAccelerationStructureBuildRangeInfoKHR tlas_range{};
+  tlas_range.primitiveCount = instance_count;
+  const VkAccelerationStructureBuildRangeInfoKHR* tlas_ranges = &tlas_range;
+  ctx.fn.cmdBuildAccelerationStructures(cmd, 1, &tlas_info, &tlas_ranges);
+  barrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
+  return tlas;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,116 @@
+#include "vulkan/case_buffers.h"
+
+#include <cstring>
+#include <string>
+
+#include "glsl/bindings.h"
+#include "results/record_layout.h"
+#include "vulkan/vk_check.h"
+
+namespace rayspec {
+namespace {
+
+constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+
+bool isFloatField(const std::string& field) {
+  const RecordField* f = findRecordField(field);
+  return f && f->type == FieldType::Float;
+}
+
+}  // namespace
+
+std::set<uint32_t> caseBindings(const Plan& plan, const std::set<uint32_t>& declared) {
+  std::set<uint32_t> b = {kBindingTlas, kBindingRays};
+  if (plan.records) b.insert(kBindingRecords);
+  if (!plan.counters.empty()) b.insert(kBindingCounters);
+  if (plan.scene_data) b.insert(kBindingScene);
+  for (size_t i = 0; i < plan.images.size(); ++i) b.insert(kBindingFirstImage + static_cast<uint32_t>(i));
+  for (uint32_t d : declared) {
+    if (d >= kBindingFirstImage + plan.images.size())
+      throw VulkanError("shaders declare binding " + std::to_string(d) +
+                        " that no plan output backs: VK_ERROR_UNKNOWN");
+    b.insert(d);
+  }
+  return b;
+}
+
+CaseBuffers createCaseBuffers(const VulkanContext& ctx, const Case& c, const Plan& plan,
+                              const std::set<uint32_t>& bindings, Cleanup& cleanup) {
+  CaseBuffers out;
+  out.bindings = bindings;
+  const uint64_t rays = static_cast<uint64_t>(c.rays.width) * c.rays.height;
+  std::vector<uint32_t> packed = packRays(c.rays);
+  out.rays = createUploadBuffer(ctx, packed.data(), packed.size() * 4, kStorage, cleanup);
+  if (bindings.count(kBindingRecords)) {
+    uint64_t bytes = rays * recordWords() * 4;
+    out.records = createBuffer(ctx, bytes, kStorage, MemoryUse::Host, cleanup);
+    std::memset(out.records.mapped, 0, bytes);
+  }
+  if (bindings.count(kBindingCounters)) {
+    uint64_t bytes = (plan.counters.empty() ? 1 : plan.counters.size()) * 4;
+    out.counters = createBuffer(ctx, bytes, kStorage, MemoryUse::Host, cleanup);
+    std::memset(out.counters.mapped, 0, bytes);
+  }
+  if (bindings.count(kBindingScene)) {
+    std::vector<uint32_t> scene = packSceneData(c.scene);
+    out.scene = createUploadBuffer(ctx, scene.data(), scene.size() * 4, kStorage, cleanup);
+  }
+  for (const ImageOutput& img : plan.images) {
+    bool is_float = isFloatField(img.field);
+    out.image_float.push_back(is_float);
+    out.images.push_back(createStorageImage(ctx, c.rays.width, c.rays.height,
+                                            is_float ? VK_FORMAT_R32G32B32A32_SFLOAT : VK_FORMAT_R32_UINT,
+                                            cleanup));
+    out.image_readback.push_back(createBuffer(ctx, rays * (is_float ? 16 : 4),
+                                              VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Host, cleanup));
+  }
+  return out;
+}
+
+std::vector<DescriptorItem> descriptorItems(const CaseBuffers& b, VkAccelerationStructureKHR tlas) {
+  std::vector<DescriptorItem> items;
+  for (uint32_t binding : b.bindings) {
+    DescriptorItem it;
+    it.binding = binding;
+    if (binding == kBindingTlas) {
+      it.type = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+      it.tlas = tlas;
+    } else if (binding >= kBindingFirstImage) {
+      it.type = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+      it.view = b.images.at(binding - kBindingFirstImage).view;
+    } else {
+      it.buffer = binding == kBindingRays       ? b.rays.buffer
+                  : binding == kBindingRecords  ? b.records.buffer
+                  : binding == kBindingCounters ? b.counters.buffer
+                                                : b.scene.buffer;
+    }
+    items.push_back(it);
+  }
+  return items;
+}
+
+void readResults(const CaseBuffers& b, const Plan& plan, uint32_t width, uint32_t height, Results& r) {
+  const uint64_t rays = static_cast<uint64_t>(width) * height;
+  if (b.records.mapped) {
+    const uint32_t* words = static_cast<const uint32_t*>(b.records.mapped);
+    r.records.assign(words, words + rays * recordWords());
+  }
+  if (b.counters.mapped) {
+    const uint32_t* words = static_cast<const uint32_t*>(b.counters.mapped);
+    for (size_t i = 0; i < plan.counters.size(); ++i) r.counters[plan.counters[i]] = words[i];
+  }
+  for (size_t i = 0; i < b.images.size(); ++i) {
+    Image img;
+    img.name = plan.images[i].name;
+    img.field = plan.images[i].field;
+    img.width = width;
+    img.height = height;
+    img.is_float = b.image_float[i];
+    img.channels = img.is_float ? 4 : 1;
+    const uint32_t* texels = static_cast<const uint32_t*>(b.image_readback[i].mapped);
+    img.texels.assign(texels, texels + rays * img.channels);
+    r.images.push_back(std::move(img));
+  }
+}
+
+}  // namespace rayspec

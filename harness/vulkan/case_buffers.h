@@ -1,0 +1,44 @@
+// The buffers and images behind the descriptor bindings of one case
+// (glsl/bindings.h), and turning them back into Results after the trace.
+#pragma once
+
+#include <set>
+#include <vector>
+
+#include "case/case.h"
+#include "plan/plan.h"
+#include "results/results.h"
+#include "vulkan/cleanup.h"
+#include "vulkan/context.h"
+#include "vulkan/descriptors.h"
+#include "vulkan/memory.h"
+
+namespace rayspec {
+
+struct CaseBuffers {
+  std::set<uint32_t> bindings;  // the bindings in use
+  Buffer rays, records, counters, scene;
+  std::vector<StorageImage> images;   // parallel to plan.images
+  std::vector<bool> image_float;      // rgba32f (else r32ui)
+  std::vector<Buffer> image_readback; // host copies of the images
+};
+
+// The bindings the plan needs (TLAS and rays always; records when
+// plan.records; counters when the plan keeps some; scene data when
+// plan.scene_data; one image each) united with those the shaders declare.
+// Throws VulkanError for a declared binding nothing can back.
+std::set<uint32_t> caseBindings(const Plan& plan, const std::set<uint32_t>& declared);
+
+// Host buffers filled (rays, scene data) or zeroed (records, counters), and
+// the storage images. Only for the bindings given.
+CaseBuffers createCaseBuffers(const VulkanContext& ctx, const Case& c, const Plan& plan,
+                              const std::set<uint32_t>& bindings, Cleanup& cleanup);
+
+// The descriptor items of the bindings (the TLAS at kBindingTlas).
+std::vector<DescriptorItem> descriptorItems(const CaseBuffers& b, VkAccelerationStructureKHR tlas);
+
+// records, counters (by plan.counters name) and images into r, after the
+// trace finished.
+void readResults(const CaseBuffers& b, const Plan& plan, uint32_t width, uint32_t height, Results& r);
+
+}  // namespace rayspec

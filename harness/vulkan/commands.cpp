@@ -1,0 +1,43 @@
+#include "vulkan/commands.h"
+
+#include "vulkan/vk_check.h"
+
+namespace rayspec {
+
+VkCommandBuffer beginCommands(const VulkanContext& ctx, Cleanup& cleanup) {
+  VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  pool_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+  pool_info.queueFamilyIndex = ctx.queue_family;
+  VkCommandPool pool = VK_NULL_HANDLE;
+  vkCheck(vkCreateCommandPool(ctx.device, &pool_info, nullptr, &pool), "vkCreateCommandPool");
+  VkDevice device = ctx.device;
+  cleanup.add([device, pool] { vkDestroyCommandPool(device, pool, nullptr); });
+
+  VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  alloc.commandPool = pool;
+  alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  alloc.commandBufferCount = 1;
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  vkCheck(vkAllocateCommandBuffers(ctx.device, &alloc, &cmd), "vkAllocateCommandBuffers");
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  vkCheck(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
+  return cmd;
+}
+
+void submitAndWait(const VulkanContext& ctx, VkCommandBuffer cmd, uint64_t timeout_ns) {
+  vkCheck(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+  VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  VkFence fence = VK_NULL_HANDLE;
+  vkCheck(vkCreateFence(ctx.device, &fence_info, nullptr, &fence), "vkCreateFence");
+  Cleanup local;
+  VkDevice device = ctx.device;
+  local.add([device, fence] { vkDestroyFence(device, fence, nullptr); });
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &cmd;
+  vkCheck(vkQueueSubmit(ctx.queue, 1, &submit, fence), "vkQueueSubmit");
+  vkCheck(vkWaitForFences(ctx.device, 1, &fence, VK_TRUE, timeout_ns), "vkWaitForFences");
+}
+
+}  // namespace rayspec

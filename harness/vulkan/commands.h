@@ -1,0 +1,17 @@
+// One primary command buffer per case, submitted once and waited on.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include "vulkan/cleanup.h"
+#include "vulkan/context.h"
+
+namespace rayspec {
+
+// A command pool + command buffer (destroyed through cleanup), begun for one submit.
+VkCommandBuffer beginCommands(const VulkanContext& ctx, Cleanup& cleanup);
+// vkEndCommandBuffer, vkQueueSubmit with a fence, wait (timeout_ns); throws
+// VulkanError (VK_TIMEOUT when the device did not finish in time).
+void submitAndWait(const VulkanContext& ctx, VkCommandBuffer cmd, uint64_t timeout_ns);
+
+}  // namespace rayspec

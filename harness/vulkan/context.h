@@ -1,0 +1,51 @@
+// The long-lived Vulkan objects of a backend (instance, device, queue) and the
+// device properties the per-case code needs. Internal to harness/vulkan.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <memory>
+
+#include "vulkan/debug_messenger.h"
+#include "vulkan/device_functions.h"
+#include "vulkan/vulkan_backend.h"
+
+namespace rayspec {
+
+struct VulkanContext {
+  VkInstance instance = VK_NULL_HANDLE;
+  bool validation = false;
+  std::unique_ptr<DebugCapture> capture = std::make_unique<DebugCapture>();
+  VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+
+  VkPhysicalDevice physical = VK_NULL_HANDLE;
+  DeviceInfo info;
+  VkPhysicalDeviceRayTracingPipelinePropertiesKHR rt_props{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_PROPERTIES_KHR};
+  VkPhysicalDeviceAccelerationStructurePropertiesKHR as_props{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_PROPERTIES_KHR};
+  VkPhysicalDeviceProperties props{};
+  VkPhysicalDeviceMemoryProperties memory{};
+  bool primitive_culling = false;  // rayTraversalPrimitiveCulling enabled
+
+  VkDevice device = VK_NULL_HANDLE;
+  uint32_t queue_family = 0;
+  VkQueue queue = VK_NULL_HANDLE;
+  DeviceFunctions fn;
+};
+
+// instance.cpp: creates ctx.instance (+ validation layer and messenger when
+// asked for and installed). Throws VulkanError.
+void createInstance(VulkanContext& ctx, bool want_validation);
+void destroyInstance(VulkanContext& ctx);
+
+// device_select.cpp
+DeviceInfo describeDevice(VkPhysicalDevice physical, uint32_t index);
+// Picks ctx.physical / ctx.info; returns false with *error when none fits.
+bool selectDevice(VulkanContext& ctx, const std::string& filter, std::string* error);
+
+// device.cpp: creates ctx.device, ctx.queue and loads ctx.fn. Throws VulkanError.
+void createDevice(VulkanContext& ctx);
+void destroyDevice(VulkanContext& ctx);
+
+}  // namespace rayspec

@@ -1,0 +1,29 @@
+// Descriptor set 0 of a case: only the bindings of glsl/bindings.h the case
+// uses (TLAS, rays, records, counters, scene data, one storage image each).
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <vector>
+
+#include "vulkan/cleanup.h"
+#include "vulkan/context.h"
+
+namespace rayspec {
+
+struct DescriptorItem {
+  uint32_t binding = 0;
+  VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  VkBuffer buffer = VK_NULL_HANDLE;                  // STORAGE_BUFFER (whole buffer)
+  VkAccelerationStructureKHR tlas = VK_NULL_HANDLE;  // ACCELERATION_STRUCTURE_KHR
+  VkImageView view = VK_NULL_HANDLE;                 // STORAGE_IMAGE (layout GENERAL)
+};
+
+// Every item visible to all ray tracing stages.
+VkDescriptorSetLayout createSetLayout(const VulkanContext& ctx, const std::vector<DescriptorItem>& items,
+                                      Cleanup& cleanup);
+// A pool sized for items, one set from it, written.
+VkDescriptorSet createDescriptorSet(const VulkanContext& ctx, VkDescriptorSetLayout layout,
+                                    const std::vector<DescriptorItem>& items, Cleanup& cleanup);
+
+}  // namespace rayspec

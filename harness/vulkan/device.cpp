@@ -1,0 +1,84 @@
+// Logical device: one compute-capable queue, the ray tracing extensions and
+// the features listed in vulkan_backend.h.
+#include <vector>
+
+#include "vulkan/context.h"
+#include "vulkan/vk_check.h"
+
+namespace rayspec {
+
+void createDevice(VulkanContext& ctx) {
+  uint32_t count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(ctx.physical, &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(ctx.physical, &count, families.data());
+  bool found = false;
+  for (uint32_t i = 0; i < count && !found; ++i) {
+    if (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) {
+      ctx.queue_family = i;
+      found = true;
+    }
+  }
+  if (!found) throw VulkanError("no compute queue family: VK_ERROR_FEATURE_NOT_PRESENT");
+
+  // What the device supports.
+  VkPhysicalDeviceRayTracingPipelineFeaturesKHR rt{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
+  VkPhysicalDeviceAccelerationStructureFeaturesKHR as{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
+  VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+  VkPhysicalDeviceFeatures2 have{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  have.pNext = &v12;
+  v12.pNext = &rt;
+  rt.pNext = &as;
+  vkGetPhysicalDeviceFeatures2(ctx.physical, &have);
+
+  // What we enable.
+  VkPhysicalDeviceRayTracingPipelineFeaturesKHR rt_on{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
+  rt_on.rayTracingPipeline = VK_TRUE;
+  rt_on.rayTraversalPrimitiveCulling = rt.rayTraversalPrimitiveCulling;
+  VkPhysicalDeviceAccelerationStructureFeaturesKHR as_on{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
+  as_on.accelerationStructure = VK_TRUE;
+  VkPhysicalDeviceVulkan12Features v12_on{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+  if (!v12.bufferDeviceAddress)
+    throw VulkanError("bufferDeviceAddress not supported: VK_ERROR_FEATURE_NOT_PRESENT");
+  v12_on.bufferDeviceAddress = VK_TRUE;
+  v12_on.scalarBlockLayout = v12.scalarBlockLayout;
+  v12_on.vulkanMemoryModel = v12.vulkanMemoryModel;
+  v12_on.vulkanMemoryModelDeviceScope = v12.vulkanMemoryModelDeviceScope;
+  VkPhysicalDeviceFeatures2 on{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  on.features.shaderInt64 = have.features.shaderInt64;
+  on.pNext = &v12_on;
+  v12_on.pNext = &rt_on;
+  rt_on.pNext = &as_on;
+  ctx.primitive_culling = rt.rayTraversalPrimitiveCulling == VK_TRUE;
+
+  const char* extensions[] = {VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
+                              VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
+                              VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
+  float priority = 1.0f;
+  VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  queue.queueFamilyIndex = ctx.queue_family;
+  queue.queueCount = 1;
+  queue.pQueuePriorities = &priority;
+  VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
+  info.pNext = &on;
+  info.queueCreateInfoCount = 1;
+  info.pQueueCreateInfos = &queue;
+  info.enabledExtensionCount = 3;
+  info.ppEnabledExtensionNames = extensions;
+  vkCheck(vkCreateDevice(ctx.physical, &info, nullptr, &ctx.device), "vkCreateDevice");
+  vkGetDeviceQueue(ctx.device, ctx.queue_family, 0, &ctx.queue);
+  ctx.fn = loadDeviceFunctions(ctx.device);
+}
+
+void destroyDevice(VulkanContext& ctx) {
+  if (!ctx.device) return;
+  vkDeviceWaitIdle(ctx.device);
+  vkDestroyDevice(ctx.device, nullptr);
+  ctx.device = VK_NULL_HANDLE;
+}
+
+}  // namespace rayspec

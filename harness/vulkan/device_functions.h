@@ -1,0 +1,23 @@
+// Extension entry points, loaded with vkGetDeviceProcAddr (the loader does
+// not export them).
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+namespace rayspec {
+
+struct DeviceFunctions {
+  PFN_vkCreateAccelerationStructureKHR createAccelerationStructure = nullptr;
+  PFN_vkDestroyAccelerationStructureKHR destroyAccelerationStructure = nullptr;
+  PFN_vkGetAccelerationStructureBuildSizesKHR getAccelerationStructureBuildSizes = nullptr;
+  PFN_vkGetAccelerationStructureDeviceAddressKHR getAccelerationStructureDeviceAddress = nullptr;
+  PFN_vkCmdBuildAccelerationStructuresKHR cmdBuildAccelerationStructures = nullptr;
+  PFN_vkCreateRayTracingPipelinesKHR createRayTracingPipelines = nullptr;
+  PFN_vkGetRayTracingShaderGroupHandlesKHR getRayTracingShaderGroupHandles = nullptr;
+  PFN_vkCmdTraceRaysKHR cmdTraceRays = nullptr;
+};
+
+// Throws VulkanError naming the first entry point the device does not give.
+DeviceFunctions loadDeviceFunctions(VkDevice device);
+
+}  // namespace rayspec

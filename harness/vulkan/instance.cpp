@@ -1,0 +1,72 @@
+#include <cstring>
+#include <vector>
+
+#include "vulkan/context.h"
+#include "vulkan/vk_check.h"
+
+namespace rayspec {
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+bool hasLayer(const char* name) {
+  uint32_t count = 0;
+  if (vkEnumerateInstanceLayerProperties(&count, nullptr) != VK_SUCCESS) return false;
+  std::vector<VkLayerProperties> layers(count);
+  if (vkEnumerateInstanceLayerProperties(&count, layers.data()) != VK_SUCCESS) return false;
+  for (const VkLayerProperties& l : layers)
+    if (std::strcmp(l.layerName, name) == 0) return true;
+  return false;
+}
+
+bool hasInstanceExtension(const char* name, const char* layer) {
+  uint32_t count = 0;
+  if (vkEnumerateInstanceExtensionProperties(layer, &count, nullptr) != VK_SUCCESS) return false;
+  std::vector<VkExtensionProperties> exts(count);
+  if (vkEnumerateInstanceExtensionProperties(layer, &count, exts.data()) != VK_SUCCESS) return false;
+  for (const VkExtensionProperties& e : exts)
+    if (std::strcmp(e.extensionName, name) == 0) return true;
+  return false;
+}
+
+}  // namespace
+
+void createInstance(VulkanContext& ctx, bool want_validation) {
+  ctx.validation = want_validation && hasLayer(kValidationLayer) &&
+                   (hasInstanceExtension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME, nullptr) ||
+                    hasInstanceExtension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME, kValidationLayer));
+
+  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+  app.pApplicationName = "rayspec";
+  app.applicationVersion = VK_MAKE_API_VERSION(0, 0, 1, 0);
+  app.pEngineName = "rayspec";
+  app.apiVersion = VK_API_VERSION_1_3;
+
+  std::vector<const char*> layers, extensions;
+  VkDebugUtilsMessengerCreateInfoEXT messenger_info{};
+  VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  info.pApplicationInfo = &app;
+  if (ctx.validation) {
+    layers.push_back(kValidationLayer);
+    extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    // Also catch messages of vkCreateInstance / vkDestroyInstance themselves.
+    messenger_info = ctx.capture->createInfo();
+    info.pNext = &messenger_info;
+  }
+  info.enabledLayerCount = static_cast<uint32_t>(layers.size());
+  info.ppEnabledLayerNames = layers.data();
+  info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
+  vkCheck(vkCreateInstance(&info, nullptr, &ctx.instance), "vkCreateInstance");
+  if (ctx.validation) ctx.messenger = createDebugMessenger(ctx.instance, ctx.capture.get());
+}
+
+void destroyInstance(VulkanContext& ctx) {
+  if (!ctx.instance) return;
+  destroyDebugMessenger(ctx.instance, ctx.messenger);
+  ctx.messenger = VK_NULL_HANDLE;
+  vkDestroyInstance(ctx.instance, nullptr);
+  ctx.instance = VK_NULL_HANDLE;
+}
+
+}  // namespace rayspec

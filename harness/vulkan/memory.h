@@ -1,0 +1,47 @@
+// The small allocator of the backend: one VkDeviceMemory per buffer or image
+// (a case creates a few dozen at most), destroyed through the case's Cleanup.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+
+#include "vulkan/cleanup.h"
+#include "vulkan/context.h"
+
+namespace rayspec {
+
+enum class MemoryUse {
+  Host,    // HOST_VISIBLE | HOST_COHERENT, persistently mapped
+  Device,  // DEVICE_LOCAL when the device has it, else any type that fits
+};
+
+struct Buffer {
+  VkBuffer buffer = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VkDeviceSize size = 0;           // as asked for (the buffer is at least 16 bytes)
+  VkDeviceAddress address = 0;     // when usage has SHADER_DEVICE_ADDRESS
+  void* mapped = nullptr;          // MemoryUse::Host
+};
+
+// A zero size gives a 16-byte buffer (Vulkan forbids empty buffers).
+Buffer createBuffer(const VulkanContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
+                    MemoryUse use, Cleanup& cleanup);
+// Host buffer holding a copy of data[0..bytes).
+Buffer createUploadBuffer(const VulkanContext& ctx, const void* data, VkDeviceSize bytes,
+                          VkBufferUsageFlags usage, Cleanup& cleanup);
+
+struct StorageImage {
+  VkImage image = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VkImageView view = VK_NULL_HANDLE;
+  VkFormat format = VK_FORMAT_UNDEFINED;
+};
+
+// 2D, optimal tiling, usage STORAGE | TRANSFER_SRC | TRANSFER_DST, layout UNDEFINED.
+StorageImage createStorageImage(const VulkanContext& ctx, uint32_t width, uint32_t height,
+                                VkFormat format, Cleanup& cleanup);
+
+inline VkDeviceSize alignUp(VkDeviceSize v, VkDeviceSize a) { return a ? (v + a - 1) / a * a : v; }
+
+}  // namespace rayspec

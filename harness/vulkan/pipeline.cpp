@@ -1,0 +1,142 @@
+#include "vulkan/pipeline.h"
+
+#include "spirv/compile_glsl.h"
+#include "vulkan/vk_check.h"
+
+namespace rayspec {
+namespace {
+
+CompiledShader compileOne(const GeneratedShader& g) {
+  SpirvResult r = compileGlsl(g.glsl, g.stage);
+  if (r.words.empty())
+    throw ShaderCompileError(g.name + ": " + (r.error.empty() ? "no SPIR-V" : r.error));
+  return {g.stage, g.name, std::move(r.words)};
+}
+
+VkShaderStageFlagBits vkStage(Stage s) {
+  switch (s) {
+    case Stage::Raygen: return VK_SHADER_STAGE_RAYGEN_BIT_KHR;
+    case Stage::Miss: return VK_SHADER_STAGE_MISS_BIT_KHR;
+    case Stage::ClosestHit: return VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR;
+    case Stage::AnyHit: return VK_SHADER_STAGE_ANY_HIT_BIT_KHR;
+    case Stage::Intersection: return VK_SHADER_STAGE_INTERSECTION_BIT_KHR;
+    case Stage::Callable: return VK_SHADER_STAGE_CALLABLE_BIT_KHR;
+  }
+  return VK_SHADER_STAGE_RAYGEN_BIT_KHR;
+}
+
+// Shader modules and stage infos; the modules die with `local` once the
+// pipeline exists.
+class StageList {
+ public:
+  StageList(const VulkanContext& ctx, Cleanup& local) : ctx_(ctx), local_(local) {}
+  uint32_t add(const CompiledShader& s) {
+    VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    info.codeSize = s.spirv.size() * 4;
+    info.pCode = s.spirv.data();
+    VkShaderModule module = VK_NULL_HANDLE;
+    vkCheck(vkCreateShaderModule(ctx_.device, &info, nullptr, &module), "vkCreateShaderModule");
+    VkDevice device = ctx_.device;
+    local_.add([device, module] { vkDestroyShaderModule(device, module, nullptr); });
+    VkPipelineShaderStageCreateInfo stage{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    stage.stage = vkStage(s.stage);
+    stage.module = module;
+    stage.pName = "main";
+    stages_.push_back(stage);
+    return static_cast<uint32_t>(stages_.size() - 1);
+  }
+  uint32_t add(const std::optional<CompiledShader>& s) { return s ? add(*s) : VK_SHADER_UNUSED_KHR; }
+  const std::vector<VkPipelineShaderStageCreateInfo>& stages() const { return stages_; }
+
+ private:
+  const VulkanContext& ctx_;
+  Cleanup& local_;
+  std::vector<VkPipelineShaderStageCreateInfo> stages_;
+};
+
+VkRayTracingShaderGroupCreateInfoKHR group(VkRayTracingShaderGroupTypeKHR type) {
+  VkRayTracingShaderGroupCreateInfoKHR g{VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR};
+  g.type = type;
+  g.generalShader = g.closestHitShader = g.anyHitShader = g.intersectionShader = VK_SHADER_UNUSED_KHR;
+  return g;
+}
+
+}  // namespace
+
+CompiledPipeline compilePipeline(const GeneratedPipeline& generated) {
+  CompiledPipeline out;
+  out.raygen = compileOne(generated.raygen);
+  for (const GeneratedShader& s : generated.miss) out.miss.push_back(compileOne(s));
+  for (const GeneratedGroup& g : generated.hit_groups) {
+    CompiledGroup cg;
+    if (g.closest_hit) cg.closest_hit = compileOne(*g.closest_hit);
+    if (g.any_hit) cg.any_hit = compileOne(*g.any_hit);
+    if (g.intersection) cg.intersection = compileOne(*g.intersection);
+    out.hit_groups.push_back(std::move(cg));
+  }
+  for (const GeneratedShader& s : generated.callables) out.callables.push_back(compileOne(s));
+  return out;
+}
+
+VkPipelineLayout createPipelineLayout(const VulkanContext& ctx, VkDescriptorSetLayout set_layout,
+                                      Cleanup& cleanup) {
+  VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  info.setLayoutCount = 1;
+  info.pSetLayouts = &set_layout;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  vkCheck(vkCreatePipelineLayout(ctx.device, &info, nullptr, &layout), "vkCreatePipelineLayout");
+  VkDevice device = ctx.device;
+  cleanup.add([device, layout] { vkDestroyPipelineLayout(device, layout, nullptr); });
+  return layout;
+}
+
+VkPipeline createRayTracingPipeline(const VulkanContext& ctx, const CompiledPipeline& compiled,
+                                    VkPipelineLayout layout, uint32_t max_recursion,
+                                    VkPipelineCreateFlags flags, Cleanup& cleanup) {
+  Cleanup modules;
+  StageList stages(ctx, modules);
+  std::vector<VkRayTracingShaderGroupCreateInfoKHR> groups;
+  auto general = [&](const CompiledShader& s) {
+    VkRayTracingShaderGroupCreateInfoKHR g = group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR);
+    g.generalShader = stages.add(s);
+    groups.push_back(g);
+  };
+  general(compiled.raygen);
+  for (const CompiledShader& s : compiled.miss) general(s);
+  for (const CompiledGroup& cg : compiled.hit_groups) {
+    VkRayTracingShaderGroupCreateInfoKHR g =
+        group(cg.intersection ? VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR
+                              : VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR);
+    g.closestHitShader = stages.add(cg.closest_hit);
+    g.anyHitShader = stages.add(cg.any_hit);
+    g.intersectionShader = stages.add(cg.intersection);
+    groups.push_back(g);
+  }
+  for (const CompiledShader& s : compiled.callables) general(s);
+
+  VkRayTracingPipelineCreateInfoKHR info{VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR};
+  info.flags = flags;
+  info.stageCount = static_cast<uint32_t>(stages.stages().size());
+  info.pStages = stages.stages().data();
+  info.groupCount = static_cast<uint32_t>(groups.size());
+  info.pGroups = groups.data();
+  info.maxPipelineRayRecursionDepth = max_recursion;
+  info.layout = layout;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  vkCheck(ctx.fn.createRayTracingPipelines(ctx.device, VK_NULL_HANDLE, VK_NULL_HANDLE, 1, &info,
+                                           nullptr, &pipeline),
+          "vkCreateRayTracingPipelinesKHR");
+  VkDevice device = ctx.device;
+  cleanup.add([device, pipeline] { vkDestroyPipeline(device, pipeline, nullptr); });
+  return pipeline;
+}
+
+std::vector<uint8_t> groupHandles(const VulkanContext& ctx, VkPipeline pipeline, uint32_t group_count) {
+  std::vector<uint8_t> handles(static_cast<size_t>(group_count) * ctx.rt_props.shaderGroupHandleSize);
+  vkCheck(ctx.fn.getRayTracingShaderGroupHandles(ctx.device, pipeline, 0, group_count, handles.size(),
+                                                 handles.data()),
+          "vkGetRayTracingShaderGroupHandlesKHR");
+  return handles;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,82 @@
+#include "vulkan/run_case.h"
+
+#include "glsl/generate_glsl.h"
+#include "vulkan/acceleration_structure.h"
+#include "vulkan/case_buffers.h"
+#include "vulkan/commands.h"
+#include "vulkan/descriptors.h"
+#include "vulkan/pipeline.h"
+#include "vulkan/sbt_buffer.h"
+#include "vulkan/trace.h"
+#include "vulkan/vk_check.h"
+
+namespace rayspec {
+namespace {
+
+constexpr uint64_t kTraceTimeoutNs = 240ull * 1000 * 1000 * 1000;
+constexpr uint32_t kPipelineSkipTriangles = 0x1000;  // VK_PIPELINE_CREATE_RAY_TRACING_SKIP_TRIANGLES_BIT_KHR
+constexpr uint32_t kPipelineSkipAabbs = 0x2000;      // VK_PIPELINE_CREATE_RAY_TRACING_SKIP_AABBS_BIT_KHR
+
+// Waits for the device before destroying the case's objects, on every path.
+struct CaseScope {
+  explicit CaseScope(VkDevice d) : device(d) {}
+  ~CaseScope() {
+    vkDeviceWaitIdle(device);
+    cleanup.run();
+  }
+  VkDevice device;
+  Cleanup cleanup;
+};
+
+bool usesSkipRayFlags(const Rays& rays) {
+  const uint32_t skip = kRaySkipTriangles | kRaySkipAabbs;
+  if (rays.defaults.flags & skip) return true;
+  for (const Ray& r : rays.rays)
+    if (r.flags & skip) return true;
+  return false;
+}
+
+void checkSupport(const VulkanContext& ctx, const Case& c) {
+  const DeviceInfo& d = ctx.info;
+  if (c.pipeline.max_recursion > d.max_ray_recursion_depth)
+    throw NotSupportedError("max_recursion " + std::to_string(c.pipeline.max_recursion) +
+                            " > device maxRayRecursionDepth " + std::to_string(d.max_ray_recursion_depth));
+  uint64_t launch = static_cast<uint64_t>(c.rays.width) * c.rays.height;
+  if (launch > d.max_ray_dispatch_invocation_count)
+    throw NotSupportedError("launch of " + std::to_string(launch) + " rays > maxRayDispatchInvocationCount " +
+                            std::to_string(d.max_ray_dispatch_invocation_count));
+  if (!ctx.primitive_culling &&
+      ((c.pipeline.flags & (kPipelineSkipTriangles | kPipelineSkipAabbs)) || usesSkipRayFlags(c.rays)))
+    throw NotSupportedError("skip_triangles / skip_aabbs need rayTraversalPrimitiveCulling");
+}
+
+}  // namespace
+
+void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results& r) {
+  checkSupport(ctx, c);
+  CompiledPipeline compiled = compilePipeline(generateGlsl(c, plan));
+
+  CaseScope scope(ctx.device);
+  Cleanup& cleanup = scope.cleanup;
+  CaseBuffers buffers =
+      createCaseBuffers(ctx, c, plan, caseBindings(plan, declaredBindings(compiled)), cleanup);
+
+  VkCommandBuffer cmd = beginCommands(ctx, cleanup);
+  VkAccelerationStructureKHR tlas = recordSceneBuild(ctx, c.scene, cmd, cleanup);
+
+  std::vector<DescriptorItem> items = descriptorItems(buffers, tlas);
+  VkDescriptorSetLayout set_layout = createSetLayout(ctx, items, cleanup);
+  VkPipelineLayout pipeline_layout = createPipelineLayout(ctx, set_layout, cleanup);
+  VkPipeline pipeline = createRayTracingPipeline(ctx, compiled, pipeline_layout, c.pipeline.max_recursion,
+                                                 c.pipeline.flags, cleanup);
+  SbtBuffer sbt = createSbtBuffer(ctx, c.pipeline, pipeline, cleanup);
+  VkDescriptorSet set = createDescriptorSet(ctx, set_layout, items, cleanup);
+
+  recordImageClears(cmd, buffers.images);
+  recordTrace(ctx, cmd, pipeline, pipeline_layout, set, sbt.layout, sbt.base, c.rays.width, c.rays.height);
+  recordReadback(cmd, buffers.images, buffers.image_readback, c.rays.width, c.rays.height);
+  submitAndWait(ctx, cmd, kTraceTimeoutNs);
+  readResults(buffers, plan, c.rays.width, c.rays.height, r);
+}
+
+}  // namespace rayspec

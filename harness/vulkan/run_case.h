@@ -1,0 +1,16 @@
+// One case on the device, from the generated GLSL to the read-back Results.
+#pragma once
+
+#include "case/case.h"
+#include "plan/plan.h"
+#include "results/results.h"
+#include "vulkan/context.h"
+
+namespace rayspec {
+
+// Fills r's outputs; throws ShaderCompileError, NotSupportedError or
+// VulkanError (VulkanBackend::run turns them into the status). Every object
+// it creates is destroyed before it returns or throws.
+void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results& r);
+
+}  // namespace rayspec

@@ -1,0 +1,39 @@
+#include "vulkan/sbt_buffer.h"
+
+#include <cstring>
+
+#include "vulkan/memory.h"
+#include "vulkan/pipeline.h"
+#include "vulkan/vk_check.h"
+
+namespace rayspec {
+
+SbtLimits deviceSbtLimits(const VulkanContext& ctx) {
+  SbtLimits l;
+  l.handle_size = ctx.rt_props.shaderGroupHandleSize;
+  l.handle_alignment = ctx.rt_props.shaderGroupHandleAlignment;
+  l.base_alignment = ctx.rt_props.shaderGroupBaseAlignment;
+  l.max_stride = ctx.rt_props.maxShaderGroupStride;
+  return l;
+}
+
+SbtBuffer createSbtBuffer(const VulkanContext& ctx, const Pipeline& p, VkPipeline pipeline, Cleanup& cleanup) {
+  SbtLimits limits = deviceSbtLimits(ctx);
+  SbtBuffer out;
+  out.layout = computeSbtLayout(limits, p);
+  std::string error;
+  if (!checkSbtLayout(out.layout, limits, &error)) throw NotSupportedError(error);
+  std::vector<uint8_t> handles = groupHandles(ctx, pipeline, sbtGroupCount(p));
+  std::vector<uint8_t> bytes;
+  if (!writeSbt(out.layout, limits, p, handles, &bytes, &error))
+    throw VulkanError(error + ": VK_ERROR_UNKNOWN");
+  Buffer buffer = createBuffer(ctx, bytes.size() + limits.base_alignment,
+                               VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR |
+                                   VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                               MemoryUse::Host, cleanup);
+  out.base = alignUp(buffer.address, limits.base_alignment);
+  std::memcpy(static_cast<uint8_t*>(buffer.mapped) + (out.base - buffer.address), bytes.data(), bytes.size());
+  return out;
+}
+
+}  // namespace rayspec

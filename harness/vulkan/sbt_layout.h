@@ -1,0 +1,72 @@
+// The shader binding table layout: a pure computation (no Vulkan calls), so
+// it can be unit-tested with any device's numbers.
+//
+// Group order in the pipeline, and so in the handle array of
+// vkGetRayTracingShaderGroupHandlesKHR:
+//   group 0                  raygen
+//   groups 1 .. M            miss shaders, in case order        (M = miss count)
+//   groups M+1 .. M+H        hit groups, in case order          (H = hit group count)
+//   groups M+H+1 .. M+H+C    callables, in case order           (C = callable count)
+//
+// Every record is the group handle followed by kSbtRecordDataBytes of shader
+// record data (zero unless the case gives data), so one stride fits all
+// records: alignUp(handleSize + 32, handleAlignment). Regions start at
+// multiples of shaderGroupBaseAlignment in the order raygen, miss, hit,
+// callable; the raygen region's stride equals its size (one record).
+// An empty region has offset, stride and size 0 (device address 0).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "case/case.h"
+
+namespace rayspec {
+
+constexpr uint32_t kSbtRecordDataBytes = 32;  // 8 words
+
+struct SbtLimits {
+  uint32_t handle_size = 32;
+  uint32_t handle_alignment = 32;
+  uint32_t base_alignment = 64;
+  uint32_t max_stride = 4096;  // maxShaderGroupStride
+};
+
+struct SbtRegion {
+  uint64_t offset = 0, stride = 0, size = 0;  // bytes from the table start
+  uint32_t count = 0;                         // records
+};
+
+struct SbtLayout {
+  SbtRegion raygen, miss, hit, callable;
+  uint64_t total_size = 0;  // bytes; the table's address must be base-aligned
+};
+
+// Pipeline group index of each shader / group (see the order above).
+uint32_t sbtGroupCount(const Pipeline& p);
+uint32_t sbtMissGroup(const Pipeline& p, uint32_t miss_index);
+uint32_t sbtHitGroup(const Pipeline& p, uint32_t hit_group_index);
+uint32_t sbtCallableGroup(const Pipeline& p, uint32_t callable_index);
+
+// The records of each region: the case's list, or when it gives none, one
+// record per shader / group in order (the case format's default).
+std::vector<SbtRecord> sbtMissRecords(const Pipeline& p);
+std::vector<SbtRecord> sbtHitRecords(const Pipeline& p);
+std::vector<SbtRecord> sbtCallableRecords(const Pipeline& p);
+
+SbtLayout computeSbtLayout(const SbtLimits& limits, const Pipeline& p);
+
+// Checks the layout against the rules of vkCmdTraceRaysKHR (strides multiple of
+// the handle alignment and <= maxShaderGroupStride, offsets multiple of the
+// base alignment, raygen size == stride). false with *error naming the rule.
+bool checkSbtLayout(const SbtLayout& layout, const SbtLimits& limits, std::string* error);
+
+// The table bytes (layout.total_size): per record the handle of its group
+// (handles: sbtGroupCount(p) * handle_size bytes, as the device returns them),
+// then its data words; all-zero records stay zero. false with *error for a
+// group index out of range or more than 8 data words.
+bool writeSbt(const SbtLayout& layout, const SbtLimits& limits, const Pipeline& p,
+              const std::vector<uint8_t>& handles, std::vector<uint8_t>* out, std::string* error);
+
+}  // namespace rayspec

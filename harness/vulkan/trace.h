@@ -1,0 +1,29 @@
+// Recording of the launch: storage image preparation, vkCmdTraceRaysKHR, and
+// the copies and barriers that make the outputs readable on the host.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <vector>
+
+#include "vulkan/context.h"
+#include "vulkan/memory.h"
+#include "vulkan/sbt_layout.h"
+
+namespace rayspec {
+
+// UNDEFINED -> GENERAL, cleared to zero, visible to ray tracing shaders.
+void recordImageClears(VkCommandBuffer cmd, const std::vector<StorageImage>& images);
+
+// Binds the pipeline and set 0, traces width x height x 1 with the SBT at
+// sbt_base (base-aligned) laid out as layout.
+void recordTrace(const VulkanContext& ctx, VkCommandBuffer cmd, VkPipeline pipeline,
+                 VkPipelineLayout layout, VkDescriptorSet set, const SbtLayout& sbt,
+                 VkDeviceAddress sbt_base, uint32_t width, uint32_t height);
+
+// Shader writes -> host reads, and each image copied into its host buffer
+// (tightly packed rows).
+void recordReadback(VkCommandBuffer cmd, const std::vector<StorageImage>& images,
+                    const std::vector<Buffer>& image_buffers, uint32_t width, uint32_t height);
+
+}  // namespace rayspec

@@ -1,0 +1,73 @@
+#include "vulkan/vulkan_backend.h"
+
+#include <chrono>
+
+#include "vulkan/context.h"
+#include "vulkan/pipeline.h"
+#include "vulkan/run_case.h"
+#include "vulkan/vk_check.h"
+
+namespace rayspec {
+
+VulkanBackend::VulkanBackend() : ctx_(std::make_unique<VulkanContext>()) {}
+
+VulkanBackend::~VulkanBackend() { close(); }
+
+std::unique_ptr<VulkanBackend> VulkanBackend::create(const VulkanOptions& options, std::string* error) {
+  std::unique_ptr<VulkanBackend> backend(new VulkanBackend());
+  VulkanContext& ctx = *backend->ctx_;
+  try {
+    createInstance(ctx, options.validation);
+    if (!selectDevice(ctx, options.device_filter, error)) return nullptr;
+    createDevice(ctx);
+  } catch (const std::exception& e) {
+    if (error) *error = e.what();
+    return nullptr;  // the destructor releases what exists
+  }
+  return backend;
+}
+
+const DeviceInfo& VulkanBackend::device() const { return ctx_->info; }
+
+bool VulkanBackend::validationEnabled() const { return ctx_->validation; }
+
+Results VulkanBackend::run(const Case& c, const Plan& plan) {
+  auto start = std::chrono::steady_clock::now();
+  Results r;
+  r.case_name = c.name;
+  r.backend = "vulkan";
+  r.device = ctx_->info.name;
+  r.width = c.rays.width;
+  r.height = c.rays.height;
+  r.status = "ok";
+  ctx_->capture->take();  // messages from before this run are not its own
+  try {
+    runCase(*ctx_, c, plan, r);
+  } catch (const ShaderCompileError& e) {
+    r.status = std::string("Crash: shader compile: ") + e.what();
+  } catch (const NotSupportedError& e) {
+    r.status = std::string("NotSupported: ") + e.what();
+  } catch (const std::exception& e) {
+    r.status = std::string("Crash: ") + e.what();
+  } catch (...) {
+    r.status = "Crash: unknown exception";
+  }
+  if (r.status != "ok") {
+    r.records.clear();
+    r.counters.clear();
+    r.images.clear();
+  }
+  r.validation_messages = ctx_->capture->take();
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+std::vector<std::string> VulkanBackend::close() {
+  if (!ctx_) return {};
+  ctx_->capture->take();
+  destroyDevice(*ctx_);
+  destroyInstance(*ctx_);
+  return ctx_->capture->take();
+}
+
+}  // namespace rayspec

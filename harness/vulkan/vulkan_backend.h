@@ -1,0 +1,70 @@
+// The Vulkan backend: runs one case on a Vulkan ray tracing device and returns
+// its Results. One VkInstance / VkDevice lives as long as the backend and is
+// reused across cases; everything else (acceleration structures, pipeline,
+// descriptors, SBT, buffers, images) is created and destroyed inside run().
+//
+// Device features enabled (see device.cpp): rayTracingPipeline,
+// accelerationStructure, bufferDeviceAddress (all required), and when the
+// device has them: rayTraversalPrimitiveCulling, scalarBlockLayout,
+// vulkanMemoryModel (+ device scope), shaderInt64.
+// Device extensions: VK_KHR_ray_tracing_pipeline, VK_KHR_acceleration_structure,
+// VK_KHR_deferred_host_operations.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "case/case.h"
+#include "plan/plan.h"
+#include "results/results.h"
+
+namespace rayspec {
+
+struct VulkanOptions {
+  std::string device_filter;  // substring of the device name (case-insensitive);
+                              // empty = first device with VK_KHR_ray_tracing_pipeline
+  bool validation = true;     // enable VK_LAYER_KHRONOS_validation when installed
+};
+
+struct DeviceInfo {
+  uint32_t index = 0;  // position in vkEnumeratePhysicalDevices
+  std::string name, driver_name, driver_info, api_version;
+  bool ray_tracing_pipeline = false, acceleration_structure = false;
+  uint32_t shader_group_handle_size = 0, shader_group_handle_alignment = 0,
+           shader_group_base_alignment = 0, max_ray_recursion_depth = 0,
+           max_ray_hit_attribute_size = 0, max_shader_group_stride = 0,
+           max_ray_dispatch_invocation_count = 0;
+  bool acceleration_structure_host_commands = false;
+};
+
+// Every physical device the loader sees (with or without ray tracing).
+std::vector<DeviceInfo> listDevices(std::string* error);
+
+struct VulkanContext;  // internal (vulkan/context.h)
+
+class VulkanBackend {
+ public:
+  // nullptr (and *error set) when no instance, no matching ray tracing device,
+  // or device creation failed.
+  static std::unique_ptr<VulkanBackend> create(const VulkanOptions& options, std::string* error);
+  ~VulkanBackend();
+
+  const DeviceInfo& device() const;
+  bool validationEnabled() const;
+
+  // Never throws. status: "ok", "NotSupported: <why>" or "Crash: <why>".
+  Results run(const Case& c, const Plan& plan);
+
+  // Destroys the device and the instance now (the destructor does it too) and
+  // returns the validation errors reported while doing so (e.g. leaked
+  // objects, which the layer reports at vkDestroyDevice).
+  std::vector<std::string> close();
+
+ private:
+  VulkanBackend();
+  std::unique_ptr<VulkanContext> ctx_;
+};
+
+}  // namespace rayspec

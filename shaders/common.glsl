@@ -1,0 +1,138 @@
+// rayspec shared GLSL: buffers and helpers of set 0 (see harness/glsl/bindings.h).
+// Every number below comes from #defines the generator writes before this
+// file (RS_BINDING_*, RS_RAY_WORDS, RS_RECORD_WORDS, RS_FIELD_<NAME> word
+// offsets, RS_BIT_<NAME> written-mask bits); none is retyped here.
+// Optional parts, switched on by the generator only where the stage needs them:
+//   RS_USE_RAYS           the rays buffer (raygen)
+//   RS_USE_TLAS           the acceleration structure (stages that trace)
+//   RS_USE_RECORDS        the per-ray record buffer
+//   RS_USE_COUNTERS       the counter buffer
+//   RS_USE_SHADER_RECORD  this stage's shader record data (8 words)
+// Model counterpart: harness/model (records, counters, shader record data).
+
+// Launch index of this ray: y * width + x.
+uint rs_launch_index() {
+  return gl_LaunchIDEXT.y * gl_LaunchSizeEXT.x + gl_LaunchIDEXT.x;
+}
+
+#ifdef RS_USE_TLAS
+layout(set = 0, binding = RS_BINDING_TLAS) uniform accelerationStructureEXT rs_tlas;
+#endif
+
+#ifdef RS_USE_RAYS
+layout(set = 0, binding = RS_BINDING_RAYS, std430) readonly buffer RsRays {
+  uint rs_rays[];
+};
+
+// One ray of the launch, as packed by packRays (RS_RAY_WORDS words).
+struct RsRay {
+  vec3 origin;
+  float tmin;
+  vec3 direction;
+  float tmax;
+  uint flags, cull_mask, sbt_offset, sbt_stride, miss;
+};
+
+RsRay rs_load_ray(uint index) {
+  uint w = index * RS_RAY_WORDS;
+  RsRay r;
+  r.origin = vec3(uintBitsToFloat(rs_rays[w + 0u]), uintBitsToFloat(rs_rays[w + 1u]),
+                  uintBitsToFloat(rs_rays[w + 2u]));
+  r.tmin = uintBitsToFloat(rs_rays[w + 3u]);
+  r.direction = vec3(uintBitsToFloat(rs_rays[w + 4u]), uintBitsToFloat(rs_rays[w + 5u]),
+                     uintBitsToFloat(rs_rays[w + 6u]));
+  r.tmax = uintBitsToFloat(rs_rays[w + 7u]);
+  r.flags = rs_rays[w + 8u];
+  r.cull_mask = rs_rays[w + 9u];
+  r.sbt_offset = rs_rays[w + 10u];
+  r.sbt_stride = rs_rays[w + 11u];
+  r.miss = rs_rays[w + 12u];
+  return r;
+}
+#endif
+
+#ifdef RS_USE_RECORDS
+layout(set = 0, binding = RS_BINDING_RECORDS, std430) buffer RsRecords {
+  uint rs_records[];
+};
+
+// First word of this launch's record.
+uint rs_record_base() {
+  return rs_launch_index() * RS_RECORD_WORDS;
+}
+
+// Word 0 of a record: bit mask of the fields written.
+void rs_mark_written(uint bit) {
+  atomicOr(rs_records[rs_record_base()], 1u << bit);
+}
+
+void rs_record_uint(uint offset, uint bit, uint v) {
+  rs_records[rs_record_base() + offset] = v;
+  rs_mark_written(bit);
+}
+
+void rs_record_float(uint offset, uint bit, float v) {
+  rs_records[rs_record_base() + offset] = floatBitsToUint(v);
+  rs_mark_written(bit);
+}
+
+void rs_record_vec2(uint offset, uint bit, vec2 v) {
+  uint w = rs_record_base() + offset;
+  rs_records[w + 0u] = floatBitsToUint(v.x);
+  rs_records[w + 1u] = floatBitsToUint(v.y);
+  rs_mark_written(bit);
+}
+
+void rs_record_vec3(uint offset, uint bit, vec3 v) {
+  uint w = rs_record_base() + offset;
+  rs_records[w + 0u] = floatBitsToUint(v.x);
+  rs_records[w + 1u] = floatBitsToUint(v.y);
+  rs_records[w + 2u] = floatBitsToUint(v.z);
+  rs_mark_written(bit);
+}
+
+void rs_record_vec4(uint offset, uint bit, vec4 v) {
+  uint w = rs_record_base() + offset;
+  rs_records[w + 0u] = floatBitsToUint(v.x);
+  rs_records[w + 1u] = floatBitsToUint(v.y);
+  rs_records[w + 2u] = floatBitsToUint(v.z);
+  rs_records[w + 3u] = floatBitsToUint(v.w);
+  rs_mark_written(bit);
+}
+
+// Reads word i of a field of this launch's record (raygen, for images).
+uint rs_record_word(uint offset, uint i) {
+  return rs_records[rs_record_base() + offset + i];
+}
+
+// Automatic per-ray stage run count (raygen_runs, miss_runs, ...): +1.
+void rs_bump_runs(uint offset) {
+  atomicAdd(rs_records[rs_record_base() + offset], 1u);
+}
+#endif
+
+#ifdef RS_USE_COUNTERS
+layout(set = 0, binding = RS_BINDING_COUNTERS, std430) buffer RsCounters {
+  uint rs_counters[];
+};
+
+// Global counter `index` (position of its name in the plan's counters): +1.
+void rs_count(uint index) {
+  atomicAdd(rs_counters[index], 1u);
+}
+#endif
+
+#ifdef RS_USE_SHADER_RECORD
+// Every SBT record carries 8 data words (all zero unless the case sets them).
+layout(shaderRecordEXT, std430) buffer RsShaderRecord {
+  uint words[8];
+} rs_shader_record;
+
+uint rs_shader_record_uint(uint i) {
+  return rs_shader_record.words[i];
+}
+
+float rs_shader_record_float(uint i) {
+  return uintBitsToFloat(rs_shader_record.words[i]);
+}
+#endif

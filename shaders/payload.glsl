@@ -1,0 +1,22 @@
+// rayspec shared GLSL: the ray payload and the callable data.
+// Model counterpart: harness/model (the same fields, the same start values).
+
+// Payload of every trace (location 0 in raygen and as the incoming payload;
+// location 1 for a nested trace). A trace starts with color 0, value 0 and
+// depth = 1 from raygen, the caller's depth + 1 from a nested trace.
+struct RsPayload {
+  vec4 color;
+  uint value;
+  uint depth;
+};
+
+// Callable data (location 0 in raygen / closest-hit / miss, location 1 inside
+// a callable, whose incoming data is at location 0). Fields a `call` does not
+// give are zero.
+struct RsCallData {
+  vec4 color;
+  vec3 position;
+  uint value;
+  vec3 normal;
+  uint pad;
+};

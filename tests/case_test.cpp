@@ -1,0 +1,639 @@
+// Tests of the case reader: values of good cases, and errors (line + field)
+// for bad ones.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "case/camera_rays.h"
+#include "case/parse_case.h"
+#include "case/transform.h"
+
+namespace rayspec {
+namespace {
+
+ParseResult parse(const std::string& text) { return parseCaseText(text, "t.yaml", "family/t"); }
+
+std::string allErrors(const ParseResult& r) {
+  std::string s;
+  for (const CaseError& e : r.errors) s += e.format() + "\n";
+  return s;
+}
+
+// Expects an error on `line` whose field contains `field` and message contains `text`.
+void expectError(const ParseResult& r, int line, const std::string& field, const std::string& text = "") {
+  EXPECT_FALSE(r.value.has_value());
+  for (const CaseError& e : r.errors)
+    if (e.loc.line == line && e.loc.field.find(field) != std::string::npos &&
+        e.message.find(text) != std::string::npos)
+      return;
+  ADD_FAILURE() << "no error at line " << line << " field " << field << " (" << text << "); got:\n"
+                << allErrors(r);
+}
+
+const char* kGood = R"(rules: [R-IGNORE, R-MISS-XOR-CHIT]
+description: a quad and an inactive instance
+scene:
+  blas:
+    quad:
+      - triangles:
+          vertices: [[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]]
+          indices: [0, 1, 2, 0, 2, 3]
+        flags: [opaque, no_duplicate_any_hit]
+    balls:
+      - aabbs: [[-1, -1, -1, 1, 1, 1], [.nan, 0, 0, 1, 1, 1]]
+  instances:
+    - blas: quad
+      transform: {translate: [1, 2, 3], scale: 2, rotate: {axis: [0, 0, 1], degrees: 90}}
+      mask: 0x0F
+      custom_index: 7
+      sbt_offset: 1
+      flags: [triangle_flip_facing, force_opaque]
+    - blas: null
+    - blas: balls
+      transform: [1, 0, 0, 5, 0, 1, 0, 0, 0, 0, 1, 0]
+rays:
+  camera: {size: [2, 2], origin: [0, 0, 5], look_at: [0, 0, 0], up: [0, 1, 0], fov: 90}
+  tmin: 0.001
+  tmax: 100
+  flags: [cull_back_facing, skip_aabbs]
+  cull_mask: 0x1FF
+pipeline:
+  miss:
+    - [count: miss, record: {hit: 0}]
+  hit_groups:
+    - closest_hit: [count: closesthit, record: [primitive_id, hit_t]]
+    - any_hit:
+        - if: {odd: primitive_id}
+          then: [ignore]
+      intersection:
+        - if: sphere_hit
+          then:
+            - report: {t: sphere_near, kind: 3, accepted: [count: reported]}
+outputs:
+  counters: [miss, closesthit, reported]
+  per_ray: [hit, primitive_id, hit_t]
+  images:
+    - {name: primitive, from: primitive_id}
+)";
+
+TEST(ParseCase, GoodCaseValues) {
+  ParseResult r = parse(kGood);
+  ASSERT_TRUE(r.errors.empty()) << allErrors(r);
+  ASSERT_TRUE(r.value);
+  const Case& c = *r.value;
+  EXPECT_EQ(c.name, "family/t");
+  EXPECT_EQ(c.family, "family");
+  EXPECT_EQ(c.rules, (std::vector<std::string>{"R-IGNORE", "R-MISS-XOR-CHIT"}));
+  EXPECT_EQ(c.description, "a quad and an inactive instance");
+
+  ASSERT_EQ(c.scene.blases.size(), 2u);
+  const Geometry& quad = c.scene.blases[0].geometries.at(0);
+  EXPECT_EQ(quad.kind, Geometry::Kind::Triangles);
+  EXPECT_EQ(quad.primitiveCount(), 2u);
+  EXPECT_EQ(quad.flags, kGeometryOpaque | kGeometryNoDuplicateAnyHit);
+  EXPECT_EQ(quad.loc.line, 6);
+  const Geometry& balls = c.scene.blases[1].geometries.at(0);
+  EXPECT_EQ(balls.kind, Geometry::Kind::Aabbs);
+  ASSERT_EQ(balls.aabbs.size(), 2u);
+  EXPECT_TRUE(std::isnan(balls.aabbs[1][0]));
+
+  ASSERT_EQ(c.scene.instances.size(), 3u);
+  const Instance& i0 = c.scene.instances[0];
+  EXPECT_EQ(i0.blas, 0u);
+  EXPECT_EQ(i0.mask, 0x0Fu);
+  EXPECT_EQ(i0.custom_index, 7u);
+  EXPECT_EQ(i0.sbt_offset, 1u);
+  EXPECT_EQ(i0.flags, kInstanceFlipFacing | kInstanceForceOpaque);
+  const float expect[12] = {0, -2, 0, 1, 2, 0, 0, 2, 0, 0, 2, 3};  // T * R(z, 90) * S(2)
+  for (int k = 0; k < 12; ++k) EXPECT_NEAR(i0.transform[k], expect[k], 1e-6) << k;
+  EXPECT_FALSE(c.scene.instances[1].blas.has_value());
+  EXPECT_EQ(c.scene.instances[1].mask, 0xFFu);
+  EXPECT_EQ(c.scene.instances[2].blas, 1u);
+  EXPECT_EQ(c.scene.instances[2].transform[3], 5.0f);
+
+  EXPECT_EQ(c.rays.width, 2u);
+  EXPECT_EQ(c.rays.height, 2u);
+  ASSERT_EQ(c.rays.rays.size(), 4u);
+  EXPECT_EQ(c.rays.defaults.flags, kRayCullBackFacing | kRaySkipAabbs);
+  EXPECT_EQ(c.rays.rays[3].flags, kRayCullBackFacing | kRaySkipAabbs);
+  EXPECT_EQ(c.rays.rays[0].cull_mask, 0x1FFu);
+  EXPECT_FLOAT_EQ(c.rays.rays[0].tmin, 0.001f);
+  EXPECT_FLOAT_EQ(c.rays.rays[0].tmax, 100.0f);
+
+  // Default raygen and default SBT.
+  ASSERT_EQ(c.pipeline.raygen.size(), 1u);
+  EXPECT_EQ(c.pipeline.raygen[0].kind, Stmt::Kind::Trace);
+  EXPECT_EQ(c.pipeline.max_recursion, 1u);
+  ASSERT_EQ(c.pipeline.sbt_miss.size(), 1u);
+  EXPECT_EQ(c.pipeline.sbt_miss[0].group, 0u);
+  ASSERT_EQ(c.pipeline.sbt_hit.size(), 2u);
+  EXPECT_EQ(c.pipeline.sbt_hit[1].group, 1u);
+  EXPECT_TRUE(c.pipeline.sbt_callable.empty());
+
+  // Programs.
+  ASSERT_EQ(c.pipeline.miss.size(), 1u);
+  const Stmt& rec = c.pipeline.miss[0][1];
+  EXPECT_EQ(rec.kind, Stmt::Kind::Record);
+  ASSERT_EQ(rec.assigns.size(), 1u);
+  EXPECT_EQ(rec.assigns[0].first, "hit");
+  EXPECT_EQ(rec.assigns[0].second.type, ValueType::Uint);
+  const HitGroup& g0 = c.pipeline.hit_groups[0];
+  ASSERT_TRUE(g0.closest_hit);
+  EXPECT_FALSE(g0.any_hit);
+  const Stmt& rec2 = (*g0.closest_hit)[1];
+  ASSERT_EQ(rec2.assigns.size(), 2u);
+  EXPECT_EQ(rec2.assigns[1].first, "hit_t");
+  EXPECT_EQ(rec2.assigns[1].second.kind, Expr::Kind::Builtin);
+  EXPECT_EQ(rec2.assigns[1].second.type, ValueType::Float);
+  const HitGroup& g1 = c.pipeline.hit_groups[1];
+  ASSERT_TRUE(g1.any_hit && g1.intersection);
+  const Stmt& cond = (*g1.any_hit)[0];
+  EXPECT_EQ(cond.kind, Stmt::Kind::If);
+  EXPECT_EQ(cond.cond.kind, Expr::Kind::Op);
+  EXPECT_EQ(cond.cond.name, "odd");
+  EXPECT_EQ(cond.cond.type, ValueType::Bool);
+  EXPECT_EQ(cond.then_.at(0).kind, Stmt::Kind::Ignore);
+  const Stmt& report = (*g1.intersection)[0].then_.at(0);
+  EXPECT_EQ(report.kind, Stmt::Kind::Report);
+  EXPECT_EQ(report.t.kind, Expr::Kind::Op);
+  EXPECT_EQ(report.t.name, "sphere_near");
+  EXPECT_EQ(report.hit_kind.literal, std::vector<double>{3});
+  EXPECT_EQ(report.then_.at(0).counter, "reported");
+
+  EXPECT_EQ(c.outputs.counters, (std::vector<std::string>{"miss", "closesthit", "reported"}));
+  ASSERT_EQ(c.outputs.images.size(), 1u);
+  EXPECT_EQ(c.outputs.images[0].field, "primitive_id");
+}
+
+TEST(ParseCase, CameraRayDirections2x2) {
+  ParseResult r = parse(kGood);
+  ASSERT_TRUE(r.value) << allErrors(r);
+  const auto& rays = r.value->rays.rays;
+  // fov 90, aspect 1: pixel centres at +-0.5 on the image plane at distance 1;
+  // row 0 is the top (+y).
+  const float s = static_cast<float>(1 / std::sqrt(1.5));
+  const float expect[4][3] = {{-0.5f * s, 0.5f * s, -s}, {0.5f * s, 0.5f * s, -s},
+                              {-0.5f * s, -0.5f * s, -s}, {0.5f * s, -0.5f * s, -s}};
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(rays[i].origin, (Vec3{0, 0, 5}));
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(rays[i].direction[k], expect[i][k], 1e-7) << i << "," << k;
+  }
+}
+
+TEST(CameraRays, AspectAndDegenerate) {
+  CameraSpec cam;
+  cam.width = 4;
+  cam.height = 2;
+  cam.origin = {0, 0, 0};
+  cam.look_at = {0, 0, -1};
+  cam.fov_degrees = 90;
+  auto rays = cameraRays(cam, Ray{});
+  ASSERT_EQ(rays.size(), 8u);
+  // pixel (0, 0): u = -0.75 * 2 (aspect 2), v = 0.5
+  const double len = std::sqrt(1.5 * 1.5 + 0.25 + 1);
+  EXPECT_NEAR(rays[0].direction[0], -1.5 / len, 1e-7);
+  EXPECT_NEAR(rays[0].direction[1], 0.5 / len, 1e-7);
+  cam.up = {0, 0, 1};  // parallel to the view direction
+  EXPECT_TRUE(cameraRays(cam, Ray{}).empty());
+}
+
+TEST(ParseCase, GridAndListRays) {
+  const std::string grid = R"(rules: [R-MASK]
+rays:
+  grid: {size: [2, 1], origin: [0, 0, 1], du: [1, 0, 0], dv: [0, 2, 0], direction: [0, 0, -1]}
+  tmax: 10
+  miss: 1
+)";
+  ParseResult r = parse(grid);
+  ASSERT_TRUE(r.value) << allErrors(r);
+  ASSERT_EQ(r.value->rays.rays.size(), 2u);
+  EXPECT_EQ(r.value->rays.rays[1].origin, (Vec3{1.5f, 1.0f, 1.0f}));
+  EXPECT_EQ(r.value->rays.rays[1].direction, (Vec3{0, 0, -1}));
+  EXPECT_EQ(r.value->rays.rays[1].tmax, 10.0f);
+  EXPECT_EQ(r.value->rays.rays[1].miss, 1u);
+
+  const std::string list = R"(rules: [R-MASK]
+rays:
+  list:
+    - {origin: [0, 0, 1], direction: [0, 0, -1]}
+    - {origin: [0, 0, 1], direction: [0, 0, -1], flags: [opaque, terminate_on_first_hit], cull_mask: 0x80, tmin: .nan}
+  tmin: 0.5
+)";
+  r = parse(list);
+  ASSERT_TRUE(r.value) << allErrors(r);
+  ASSERT_EQ(r.value->rays.width, 2u);
+  EXPECT_EQ(r.value->rays.height, 1u);
+  EXPECT_EQ(r.value->rays.rays[0].tmin, 0.5f);
+  EXPECT_EQ(r.value->rays.rays[1].flags, kRayOpaque | kRayTerminateOnFirstHit);
+  EXPECT_EQ(r.value->rays.rays[1].cull_mask, 0x80u);
+  EXPECT_TRUE(std::isnan(r.value->rays.rays[1].tmin));
+}
+
+TEST(ParseCase, TriangleGridGenerator) {
+  ParseResult r = parse(R"(rules: [R-WATERTIGHT]
+scene:
+  blas:
+    grid:
+      - triangles: {grid: {cells: [2, 3], size: [2, 3], center: [0, 0, -1]}}
+  instances: [{blas: grid}]
+rays:
+  list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]
+)");
+  ASSERT_TRUE(r.value) << allErrors(r);
+  const Geometry& g = r.value->scene.blases[0].geometries[0];
+  EXPECT_EQ(g.vertices.size(), 12u);
+  EXPECT_EQ(g.primitiveCount(), 12u);
+  EXPECT_EQ(g.vertices[0], (Vec3{-1, -1.5f, -1}));
+  EXPECT_EQ(g.vertices[11], (Vec3{1, 1.5f, -1}));
+  // primitive 0 is counter-clockwise seen from +z
+  const Vec3 &a = g.vertices[g.indices[0]], &b = g.vertices[g.indices[1]], &c = g.vertices[g.indices[2]];
+  const float nz = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+  EXPECT_GT(nz, 0);
+}
+
+TEST(ParseCase, ExplicitSbtRaygenAndTrace) {
+  const std::string text = R"(rules: [R-SBT-ZERO]
+rays:
+  list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]
+pipeline:
+  max_recursion: 2
+  raygen:
+    - trace: {flags: [opaque, skip_closest_hit], cull_mask: 0xF0, miss: 1}
+    - record: {value: payload.value, color: {vec4: [1, {float: launch_id_x}, 0, 1]}}
+  raygen_data: {uints: [1, 0xFFFFFFFF]}
+  miss:
+    - [payload: {value: 1}]
+    - []
+  hit_groups:
+    - closest_hit:
+        - trace: {origin: hit_position, direction: world_ray_direction, tmin: 0.01}
+        - payload: {value: child.value}
+  callables:
+    - [light: point]
+  sbt:
+    miss: [1, zero]
+    hit: [{group: 0, data: {floats: [1, 2]}}, zero]
+outputs:
+  per_ray: [value, color]
+)";
+  ParseResult r = parse(text);
+  ASSERT_TRUE(r.value) << allErrors(r);
+  const Pipeline& p = r.value->pipeline;
+  EXPECT_EQ(p.max_recursion, 2u);
+  ASSERT_EQ(p.raygen.size(), 2u);
+  const TraceArgs& t = p.raygen[0].trace;
+  ASSERT_EQ(t.flags.size(), 1u);
+  EXPECT_EQ(t.flags[0].kind, Expr::Kind::Literal);
+  EXPECT_EQ(t.flags[0].type, ValueType::Uint);
+  EXPECT_EQ(t.flags[0].literal[0], double(kRayOpaque | kRaySkipClosestHit));
+  EXPECT_EQ(t.cull_mask.at(0).literal[0], 0xF0);
+  EXPECT_TRUE(t.origin.empty());
+  EXPECT_EQ(p.raygen[1].assigns[1].second.type, ValueType::Vec4);
+  EXPECT_EQ(p.raygen_data, (std::vector<uint32_t>{1, 0xFFFFFFFFu}));
+  ASSERT_EQ(p.sbt_miss.size(), 2u);
+  EXPECT_EQ(p.sbt_miss[0].group, 1u);
+  EXPECT_FALSE(p.sbt_miss[1].group.has_value());
+  ASSERT_EQ(p.sbt_hit.size(), 2u);
+  EXPECT_EQ(p.sbt_hit[0].group, 0u);
+  uint32_t one;
+  const float f1 = 1.0f;
+  std::memcpy(&one, &f1, 4);
+  ASSERT_EQ(p.sbt_hit[0].data.size(), 2u);
+  EXPECT_EQ(p.sbt_hit[0].data[0], one);
+  EXPECT_FALSE(p.sbt_hit[1].group.has_value());
+  ASSERT_EQ(p.sbt_callable.size(), 1u);  // default region
+  EXPECT_EQ(p.callables[0][0].light, "point");
+}
+
+TEST(ParseCase, ExpressionLiterals) {
+  const std::string text = R"(rules: [R-PAYLOAD]
+rays:
+  list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]
+pipeline:
+  miss:
+    - - record: {value: 0xFF}
+      - record: {value: {uint: -1}}
+      - record: {value: {uint: {length: [3, 4]}}}
+      - record: {color: [1, 2, 3.5, 1e2]}
+      - if: {and: [{lt: [ray_tmax, 2]}, {not: false}]}
+outputs:
+  per_ray: [value, color]
+)";
+  ParseResult r = parse(text);
+  ASSERT_TRUE(r.value) << allErrors(r);
+  const Program& m = r.value->pipeline.miss.at(0);
+  const Expr& hex = m[0].assigns[0].second;
+  EXPECT_EQ(hex.type, ValueType::Uint);
+  EXPECT_EQ(hex.literal[0], 255);
+  const Expr& neg = m[1].assigns[0].second.args.at(0);
+  EXPECT_EQ(neg.type, ValueType::Float);  // a sign makes it a Float
+  EXPECT_EQ(neg.literal[0], -1);
+  const Expr& len = m[2].assigns[0].second.args.at(0);
+  EXPECT_EQ(len.name, "length");
+  ASSERT_EQ(len.args.size(), 1u);  // [3, 4] is one Vec2 argument
+  EXPECT_EQ(len.args[0].type, ValueType::Vec2);
+  const Expr& color = m[3].assigns[0].second;
+  EXPECT_EQ(color.type, ValueType::Vec4);
+  EXPECT_EQ(color.literal, (std::vector<double>{1, 2, 3.5, 100}));
+  const Expr& lt = m[4].cond.args.at(0);
+  EXPECT_EQ(lt.args.at(1).type, ValueType::Float);  // 2 promoted next to a Float
+  EXPECT_EQ(m[4].cond.args.at(1).args.at(0).type, ValueType::Bool);
+
+  std::string big = text;
+  big.replace(big.find("0xFF"), 4, "4294967296");
+  expectError(parse(big), 6, "pipeline.miss[0][0].record.value", "32 bits");
+  std::string unknown = text;
+  unknown.replace(unknown.find("ray_tmax"), 8, "ray_tmux");
+  expectError(parse(unknown), 10, "pipeline.miss[0][4].if.and[0].lt[0]", "unknown name 'ray_tmux'");
+}
+
+// ---- errors: line and field ----
+
+TEST(ParseCaseErrors, UnknownKey) {
+  const std::string text = R"(rules: [R-MASK]
+scene:
+  instancess: []
+rays:
+  list: [{origin: [0, 0, 1], direction: [0, 0, -1], tmaxx: 3}]
+)";
+  ParseResult r = parse(text);
+  expectError(r, 3, "scene.instancess", "unknown key");
+  expectError(r, 5, "rays.list[0].tmaxx", "unknown key");
+  EXPECT_EQ(r.errors.size(), 2u) << allErrors(r);
+  EXPECT_EQ(r.errors[0].format(),
+            "t.yaml:3:3: scene.instancess: unknown key 'instancess' (expected one of: blas, instances)");
+}
+
+const char* kScene = R"(rules: [R-MASK]
+scene:
+  blas:
+    quad:
+      - triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}
+  instances:
+    - blas: quad
+      mask: @MASK@
+      custom_index: @CUSTOM@
+    - blas: @BLAS@
+rays:
+  list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]
+)";
+
+std::string sceneWith(const std::string& mask, const std::string& custom, const std::string& blas) {
+  std::string s = kScene;
+  s.replace(s.find("@MASK@"), 6, mask);
+  s.replace(s.find("@CUSTOM@"), 8, custom);
+  s.replace(s.find("@BLAS@"), 6, blas);
+  return s;
+}
+
+TEST(ParseCaseErrors, BitWidths) {
+  EXPECT_TRUE(parse(sceneWith("0xFF", "0xFFFFFF", "quad")).value);
+  ParseResult r = parse(sceneWith("0x1FF", "0x1000000", "quad"));
+  expectError(r, 8, "scene.instances[0].mask", "out of range");
+  expectError(r, 9, "scene.instances[0].custom_index", "out of range");
+  r = parse(sceneWith("-1", "0", "quad"));
+  expectError(r, 8, "scene.instances[0].mask", "unsigned integer");
+}
+
+TEST(ParseCaseErrors, UnknownBlas) {
+  ParseResult r = parse(sceneWith("1", "0", "sphere"));
+  expectError(r, 10, "scene.instances[1].blas", "unknown BLAS 'sphere'");
+}
+
+TEST(ParseCaseErrors, MixedBlasAndBadGeometry) {
+  const std::string text = R"(rules: [R-MASK]
+scene:
+  blas:
+    mixed:
+      - triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]], indices: [0, 1, 3]}
+      - aabbs: [[0, 0, 0, 1, 1, 1]]
+      - aabbs: [[0, 0, 0, -1, 1, 1]]
+      - triangles: {vertices: [[0, 0, 0], [1, 0, 0]]}
+rays:
+  list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]
+)";
+  ParseResult r = parse(text);
+  expectError(r, 5, "scene.blas.mixed[0].triangles.indices[2]", "past the last vertex");
+  expectError(r, 6, "scene.blas.mixed[1]", "only triangles or only aabbs");
+  expectError(r, 7, "scene.blas.mixed[2].aabbs[0]", "min is greater than max");
+  expectError(r, 8, "scene.blas.mixed[3].triangles.vertices", "multiple of 3");
+}
+
+const char* kProgramCase = R"(rules: [R-IGNORE]
+rays:
+  list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]
+pipeline:
+  miss:
+    - [count: miss]
+  hit_groups:
+    - closest_hit:
+        - count: closesthit
+        - BODY
+outputs:
+  counters: [closesthit]
+  per_ray: [hit, primitive_id]
+)";
+
+ParseResult programCase(const std::string& body) {
+  std::string s = kProgramCase;
+  s.replace(s.find("BODY"), 4, body);
+  return parse(s);
+}
+
+TEST(ParseCaseErrors, UndeclaredCounter) {
+  ParseResult r = programCase("record: [primitive_id]");
+  expectError(r, 6, "pipeline.miss[0][0].count", "'miss' is not declared in outputs.counters");
+}
+
+TEST(ParseCaseErrors, IgnoreInClosestHit) {
+  std::string s = kProgramCase;
+  s.replace(s.find("[count: miss]"), 13, "[]");
+  s.replace(s.find("BODY"), 4, "ignore");
+  ParseResult r = parse(s);
+  ASSERT_EQ(r.errors.size(), 1u) << allErrors(r);
+  expectError(r, 10, "pipeline.hit_groups[0].closest_hit[1]", "'ignore' is not allowed in closest_hit");
+}
+
+TEST(ParseCaseErrors, TypeErrorInOp) {
+  std::string s = kProgramCase;
+  s.replace(s.find("[count: miss]"), 13, "[]");
+  s.replace(s.find("BODY"), 4, "if: {and: [{odd: hit_t}, true]}\n          then: [count: closesthit]");
+  ParseResult r = parse(s);
+  ASSERT_EQ(r.errors.size(), 1u) << allErrors(r);
+  expectError(r, 10, "pipeline.hit_groups[0].closest_hit[1].if.and[0]", "need Uint");
+  EXPECT_EQ(r.errors[0].loc.column, 22);
+}
+
+TEST(ParseCaseErrors, RecordChecks) {
+  std::string s = kProgramCase;
+  s.replace(s.find("[count: miss]"), 13, "[]");
+  std::string a = s, b = s, c = s, d = s;
+  a.replace(a.find("BODY"), 4, "record: [hit_t]");  // not declared
+  expectError(parse(a), 10, "closest_hit[1].record.hit_t", "not declared in outputs.per_ray");
+  b.replace(b.find("BODY"), 4, "record: [value]");  // no built-in named value
+  expectError(parse(b), 10, "closest_hit[1].record[0]", "needs a built-in named 'value'");
+  c.replace(c.find("BODY"), 4, "record: {primitive_id: hit_t}");
+  expectError(parse(c), 10, "closest_hit[1].record.primitive_id", "expected Uint, got Float");
+  d.replace(d.find("BODY"), 4, "frobnicate: 1");
+  expectError(parse(d), 10, "closest_hit[1].frobnicate", "unknown statement");
+}
+
+TEST(ParseCaseErrors, NestedTraceNeedsRecursion) {
+  std::string s = kProgramCase;
+  s.replace(s.find("[count: miss]"), 13, "[]");
+  s.replace(s.find("BODY"), 4, "trace: {origin: hit_position, direction: [0, 0, 1]}");
+  expectError(parse(s), 10, "closest_hit[1].trace", "max_recursion >= 2");
+}
+
+TEST(ParseCaseErrors, SbtIndexOutOfRange) {
+  const std::string text = R"(rules: [R-SBT-MISS]
+rays:
+  list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]
+pipeline:
+  miss: [[]]
+  sbt:
+    miss: [0, 1]
+    hit: [{group: 0, data: {uints: [1, 2, 3, 4, 5, 6, 7, 8, 9]}}]
+)";
+  ParseResult r = parse(text);
+  expectError(r, 7, "pipeline.sbt.miss[1]", "no miss shader 1");
+  expectError(r, 8, "pipeline.sbt.hit[0].data.uints", "at most 8 words");
+  expectError(r, 8, "pipeline.sbt.hit[0].group", "no hit group 0");
+}
+
+TEST(ParseCaseErrors, MissingAndMisc) {
+  ParseResult r = parse("description: no rules, no rays\n");
+  expectError(r, 1, "rules", "missing");
+  expectError(r, 1, "rays", "missing");
+  r = parse("rules: [not-a-rule]\nrays: {list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]}\n");
+  expectError(r, 1, "rules[0]", "not a rule label");
+  r = parse("rules: [R-MASK]\nrays: {camera: {size: [2, 2], origin: [0, 0, 0], look_at: [0, 0, 0], fov: 40}}\n");
+  expectError(r, 2, "rays.camera", "degenerate");
+  r = parse("rules: [R-MASK]\nrays: {list: [{origin: [0, 0, 1], direction: [0, 0, -1]}], grid: {}}\n");
+  expectError(r, 2, "rays", "exactly one of camera, grid or list");
+  r = parse("rules: [R-MASK]\nrays: {list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]}\n"
+            "outputs: {per_ray: [miss_runs, colour], images: [{name: x, from: hit}]}\n");
+  expectError(r, 3, "outputs.per_ray[0]", "automatic");
+  expectError(r, 3, "outputs.per_ray[1]", "unknown per-ray field");
+  expectError(r, 3, "outputs.images[0].from", "not declared");
+}
+
+TEST(ParseCaseErrors, MalformedYaml) {
+  ParseResult r = parse("rules: [R-MASK\nscene: {}\nrays: x\n");
+  ASSERT_FALSE(r.errors.empty());
+  EXPECT_FALSE(r.value);
+  EXPECT_GE(r.errors[0].loc.line, 1);
+  EXPECT_LE(r.errors[0].loc.line, 3);
+  EXPECT_NE(r.errors[0].format().find("t.yaml:"), std::string::npos);
+  r = parse("rules: [R-MASK]\nrays:\n  list: [\n   - {origin\n");
+  ASSERT_FALSE(r.errors.empty());
+  r = parse("");
+  ASSERT_FALSE(r.errors.empty());
+  r = parse("- just\n- a list\n");
+  ASSERT_FALSE(r.errors.empty());
+}
+
+// Every prefix and every single-line deletion of a good case must parse or
+// fail cleanly: never crash, never throw.
+TEST(ParseCaseErrors, NeverCrashesOnMangledInput) {
+  const std::string good = kGood;
+  std::vector<std::string> lines;
+  size_t start = 0;
+  for (size_t p; (p = good.find('\n', start)) != std::string::npos; start = p + 1)
+    lines.push_back(good.substr(start, p + 1 - start));
+  for (size_t cut = 0; cut < lines.size(); ++cut) {
+    std::string prefix, without;
+    for (size_t i = 0; i < lines.size(); ++i) {
+      if (i < cut) prefix += lines[i];
+      if (i != cut) without += lines[i];
+    }
+    ParseResult a = parse(prefix), b = parse(without);
+    EXPECT_TRUE(a.value || !a.errors.empty());
+    EXPECT_TRUE(b.value || !b.errors.empty());
+    for (const CaseError& e : b.errors) EXPECT_FALSE(e.message.empty());
+  }
+}
+
+TEST(ParseCaseFile, NameFamilyAndBadFiles) {
+  const std::string root = std::string(RAYSPEC_SOURCE_DIR) + "/tests/data";
+  ParseResult r = parseCaseFile(root + "/bad/unknown-key.yaml", root);
+  expectError(r, 8, "scene.instancess", "unknown key");
+  EXPECT_EQ(r.errors.at(0).loc.file, root + "/bad/unknown-key.yaml");
+  r = parseCaseFile(root + "/bad/ignore-in-closest-hit.yaml", root);
+  expectError(r, 15, "pipeline.hit_groups[0].closest_hit[1]", "not allowed in closest_hit");
+  r = parseCaseFile(root + "/bad/malformed.yaml", root);
+  ASSERT_FALSE(r.errors.empty());
+  EXPECT_GE(r.errors[0].loc.line, 2);
+  r = parseCaseFile(root + "/bad/does-not-exist.yaml", root);
+  ASSERT_EQ(r.errors.size(), 1u);
+  EXPECT_NE(r.errors[0].message.find("cannot open"), std::string::npos);
+}
+
+TEST(ParseCaseFile, NameIsPathUnderRoot) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "rayspec_case_test" / "anyhit";
+  fs::create_directories(dir);
+  const fs::path file = dir / "ignore-odd.yaml";
+  {
+    std::ofstream out(file);
+    out << "rules: [R-IGNORE]\nrays: {list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]}\n";
+  }
+  ParseResult r = parseCaseFile(file.string(), dir.parent_path().string());
+  ASSERT_TRUE(r.value) << allErrors(r);
+  EXPECT_EQ(r.value->name, "anyhit/ignore-odd");
+  EXPECT_EQ(r.value->family, "anyhit");
+  EXPECT_EQ(r.value->file, file.string());
+  fs::remove_all(dir.parent_path());
+}
+
+TEST(Transform, ComposeAndDeterminant) {
+  TransformParts p;
+  p.translate = {1, 2, 3};
+  p.scale = {1, 2, 3};
+  Transform t = composeTransform(p);
+  EXPECT_EQ(t, (Transform{1, 0, 0, 1, 0, 2, 0, 2, 0, 0, 3, 3}));
+  EXPECT_DOUBLE_EQ(linearDeterminant(t), 6);
+  p.axis = {1, 0, 0};
+  p.degrees = 180;
+  p.scale = {1, 1, 1};
+  t = composeTransform(p);
+  EXPECT_NEAR(t[5], -1, 1e-7);
+  EXPECT_NEAR(t[10], -1, 1e-7);
+  EXPECT_NEAR(linearDeterminant(t), 1, 1e-6);
+}
+
+TEST(ParseCaseErrors, SingularInstanceTransform) {
+  ParseResult r = parse(R"(rules: [R-INST-XFORM]
+scene:
+  blas:
+    quad:
+      - triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}
+  instances:
+    - {blas: quad, transform: {scale: [1, 0, 1]}}
+rays:
+  list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]
+)");
+  expectError(r, 7, "scene.instances[0].transform", "not invertible");
+}
+
+// Every case of the suite parses without errors.
+TEST(Suite, AllCasesParse) {
+  namespace fs = std::filesystem;
+  const fs::path root = fs::path(RAYSPEC_SOURCE_DIR) / "cases";
+  int count = 0;
+  if (fs::exists(root))
+    for (const auto& entry : fs::recursive_directory_iterator(root)) {
+      if (entry.path().extension() != ".yaml") continue;
+      ++count;
+      ParseResult r = parseCaseFile(entry.path().string(), root.string());
+      EXPECT_TRUE(r.value.has_value()) << allErrors(r);
+      EXPECT_TRUE(r.errors.empty()) << entry.path();
+    }
+  if (count == 0) GTEST_SKIP() << "no cases in " << root;
+}
+
+}  // namespace
+}  // namespace rayspec

@@ -1,0 +1,529 @@
+// Unit tests of the CPU reference model: hand-built cases per rule family,
+// outcomes derived from the geometry.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+
+#include "case/parse_case.h"
+#include "model/model_backend.h"
+#include "model/model_scene.h"
+#include "model/watertight.h"
+#include "plan/plan.h"
+#include "program/ops.h"
+#include "results/record_layout.h"
+
+namespace rayspec {
+namespace {
+
+// ---- building cases -------------------------------------------------------
+
+Expr lit(uint32_t v) { Expr e; e.kind = Expr::Kind::Literal; e.type = ValueType::Uint; e.literal = {double(v)}; return e; }
+Expr litf(double v) { Expr e; e.kind = Expr::Kind::Literal; e.type = ValueType::Float; e.literal = {v}; return e; }
+Expr vec3(double x, double y, double z) {
+  Expr e; e.kind = Expr::Kind::Literal; e.type = ValueType::Vec3; e.literal = {x, y, z}; return e;
+}
+Expr bi(const std::string& n) { Expr e; e.kind = Expr::Kind::Builtin; e.name = n; return e; }
+Expr op(const std::string& n, std::vector<Expr> args) {
+  Expr e; e.kind = Expr::Kind::Op; e.name = n; e.args = std::move(args); return e;
+}
+Stmt count(const std::string& n) { Stmt s; s.kind = Stmt::Kind::Count; s.counter = n; return s; }
+Stmt recordBuiltins(const std::vector<std::string>& fields) {
+  Stmt s; s.kind = Stmt::Kind::Record;
+  for (const auto& f : fields) s.assigns.push_back({f, bi(f)});
+  return s;
+}
+Stmt recordExpr(const std::string& f, Expr e) { Stmt s; s.kind = Stmt::Kind::Record; s.assigns.push_back({f, e}); return s; }
+Stmt simple(Stmt::Kind k) { Stmt s; s.kind = k; return s; }
+Stmt ifThen(Expr cond, Program then_, Program else_ = {}) {
+  Stmt s; s.kind = Stmt::Kind::If; s.cond = cond; s.then_ = then_; s.else_ = else_; return s;
+}
+Stmt traceStmt() { Stmt s; s.kind = Stmt::Kind::Trace; return s; }
+
+Geometry quad(float z = 0, uint32_t flags = kGeometryOpaque) {
+  Geometry g;
+  g.vertices = {{-1, -1, z}, {1, -1, z}, {1, 1, z}, {-1, 1, z}};
+  g.indices = {0, 1, 2, 0, 2, 3};
+  g.flags = flags;
+  return g;
+}
+
+// n x n cells on [-1,1]^2 at z = 0, two triangles a cell.
+Geometry grid(int n, uint32_t flags) {
+  Geometry g;
+  g.flags = flags;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) g.vertices.push_back({-1 + 2.0f * i / n, -1 + 2.0f * j / n, 0});
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      uint32_t a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+      g.indices.insert(g.indices.end(), {a, b, c, a, c, d});
+    }
+  return g;
+}
+
+Ray downRay(float x, float y, float z = 5) {
+  Ray r; r.origin = {x, y, z}; r.direction = {0, 0, -1}; r.tmin = 0.001f; r.tmax = 100; return r;
+}
+
+// A case with one BLAS "b" of the given geometries, one identity instance,
+// a miss recording hit 0 and one hit group recording the usual fields.
+Case baseCase(std::vector<Geometry> geoms, std::vector<Ray> rays, uint32_t width = 0) {
+  Case c;
+  c.name = "model-test";
+  Blas b; b.name = "b"; b.geometries = std::move(geoms);
+  c.scene.blases.push_back(b);
+  c.scene.instances.push_back(Instance{});
+  c.scene.instances[0].blas = 0;
+  c.rays.width = width ? width : static_cast<uint32_t>(rays.size());
+  c.rays.height = static_cast<uint32_t>(rays.size()) / c.rays.width;
+  c.rays.rays = std::move(rays);
+  c.rays.defaults.tmin = 0.001f;
+  c.rays.defaults.tmax = 100;
+  c.pipeline.raygen = {traceStmt()};
+  c.pipeline.miss = {{count("miss"), recordExpr("hit", lit(0))}};
+  HitGroup g;
+  g.closest_hit = Program{count("closesthit"), recordBuiltins({"hit", "primitive_id", "hit_t", "hit_kind", "instance_id", "geometry_index"})};
+  c.pipeline.hit_groups = {g};
+  c.outputs.counters = {"miss", "closesthit", "anyhit", "ignored", "far_accepted", "near_accepted", "calls"};
+  c.outputs.per_ray = {"hit", "primitive_id", "hit_t", "hit_kind", "instance_id", "geometry_index", "value", "depth", "ray_tmax"};
+  return c;
+}
+
+void checkAll(Case& c) {
+  auto check = [&](Program& p, Stage s) {
+    auto err = checkProgram(p, s, c.outputs.counters, c.outputs.per_ray);
+    ASSERT_FALSE(err) << stageName(s) << ": " << err->message;
+  };
+  check(c.pipeline.raygen, Stage::Raygen);
+  for (auto& m : c.pipeline.miss) check(m, Stage::Miss);
+  for (auto& g : c.pipeline.hit_groups) {
+    if (g.closest_hit) check(*g.closest_hit, Stage::ClosestHit);
+    if (g.any_hit) check(*g.any_hit, Stage::AnyHit);
+    if (g.intersection) check(*g.intersection, Stage::Intersection);
+  }
+  for (auto& k : c.pipeline.callables) check(k, Stage::Callable);
+}
+
+Results run(Case& c, ModelTier tier, unsigned threads = 2) {
+  checkAll(c);
+  Plan plan = derivePlan(c);
+  ModelOptions o; o.tier = tier; o.threads = threads;
+  return runOnModel(c, plan, o);
+}
+
+uint32_t word(const Results& r, uint32_t ray, const char* field, uint32_t k = 0) {
+  return r.records[static_cast<size_t>(ray) * recordWords() + findRecordField(field)->offset + k];
+}
+float fword(const Results& r, uint32_t ray, const char* field, uint32_t k = 0) {
+  uint32_t w = word(r, ray, field, k); float f; std::memcpy(&f, &w, 4); return f;
+}
+bool written(const Results& r, uint32_t ray, const char* field) {
+  return (r.records[static_cast<size_t>(ray) * recordWords()] >> recordFieldIndex(field)) & 1u;
+}
+
+const ModelTier kTiers[] = {ModelTier::Fast, ModelTier::Robust, ModelTier::Exact};
+
+// ---- tests ----------------------------------------------------------------
+
+TEST(ModelTier, Parses) {
+  EXPECT_EQ(parseModelTier("fast"), ModelTier::Fast);
+  EXPECT_EQ(parseModelTier("robust"), ModelTier::Robust);
+  EXPECT_EQ(parseModelTier("exact"), ModelTier::Exact);
+  EXPECT_THROW(parseModelTier("slow"), std::invalid_argument);
+}
+
+TEST(Watertight, InsideOutsideEdge) {
+  DVec3 v0{-1, -1, 0}, v1{1, -1, 0}, v2{1, 1, 0};
+  auto h = watertightIntersect({0.5, -0.5, 5}, {0, 0, -1}, v0, v1, v2);
+  EXPECT_TRUE(h.hit);
+  EXPECT_NEAR(h.t, 5.0, 1e-12);
+  EXPECT_EQ(h.ambiguity, TriAmbiguity::None);
+  EXPECT_FALSE(watertightIntersect({-0.5, 0.5, 5}, {0, 0, -1}, v0, v1, v2).hit);
+  auto e = watertightIntersect({0.25, 0.25, 5}, {0, 0, -1}, v0, v1, v2);  // on the diagonal
+  EXPECT_TRUE(e.hit);
+  EXPECT_EQ(e.ambiguity, TriAmbiguity::Edge);
+  auto v = watertightIntersect({1, 1, 5}, {0, 0, -1}, v0, v1, v2);
+  EXPECT_EQ(v.ambiguity, TriAmbiguity::Vertex);
+  // degenerate (line) triangle never hits
+  EXPECT_FALSE(watertightIntersect({0, 0, 5}, {0, 0, -1}, {-1, 0, 0}, {0, 0, 0}, {1, 0, 0}).hit);
+}
+
+TEST(Model, QuadCenterHitsThePrimitiveContainingIt) {
+  for (ModelTier tier : kTiers) {
+    Case c = baseCase({quad()}, {downRay(0.5f, -0.5f), downRay(-0.5f, 0.5f), downRay(3, 3)});
+    Results r = run(c, tier);
+    ASSERT_EQ(r.status, "ok");
+    EXPECT_EQ(r.backend, "model");
+    EXPECT_EQ(r.device, std::string("embree-") + modelTierName(tier));
+    EXPECT_EQ(word(r, 0, "hit"), 1u);
+    EXPECT_EQ(word(r, 0, "primitive_id"), 0u);
+    EXPECT_EQ(word(r, 1, "primitive_id"), 1u);
+    EXPECT_NEAR(fword(r, 0, "hit_t"), 5.0f, 1e-5);
+    EXPECT_EQ(word(r, 0, "hit_kind"), 0xFEu);  // seen from +z: front
+    EXPECT_EQ(word(r, 2, "hit"), 0u);
+    EXPECT_TRUE(written(r, 2, "hit"));
+    EXPECT_FALSE(written(r, 2, "primitive_id"));
+    EXPECT_EQ(r.counters["miss"], 1u);
+    EXPECT_EQ(r.counters["closesthit"], 2u);
+    EXPECT_EQ(word(r, 0, "closest_hit_runs"), 1u);
+    EXPECT_EQ(word(r, 2, "miss_runs"), 1u);
+    EXPECT_EQ(word(r, 0, "raygen_runs"), 1u);
+  }
+}
+
+Case anyHitGridCase() {
+  std::vector<Ray> rays;
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 32; ++x) rays.push_back(downRay(-0.97f + x * 0.0613f, -0.97f + y * 0.0613f));
+  Case c = baseCase({grid(4, 0)}, rays, 32);
+  c.pipeline.hit_groups[0].any_hit =
+      Program{count("anyhit"), ifThen(op("odd", {bi("primitive_id")}), {count("ignored"), simple(Stmt::Kind::Ignore)})};
+  return c;
+}
+
+TEST(Model, AnyHitIgnoringOddPrimitivesLeavesOnlyEven) {
+  for (ModelTier tier : kTiers) {
+    Case c = anyHitGridCase();
+    Results r = run(c, tier);
+    ASSERT_EQ(r.status, "ok");
+    uint32_t hits = 0, misses = 0;
+    for (uint32_t i = 0; i < 32 * 32; ++i) {
+      EXPECT_EQ(word(r, i, "closest_hit_runs") + word(r, i, "miss_runs"), 1u);
+      if (word(r, i, "hit")) {
+        ++hits;
+        EXPECT_EQ(word(r, i, "primitive_id") % 2, 0u) << "ray " << i;
+      } else {
+        ++misses;
+      }
+      EXPECT_GE(word(r, i, "any_hit_runs"), 1u);
+    }
+    EXPECT_GT(hits, 300u);
+    EXPECT_GT(misses, 300u);
+    EXPECT_EQ(r.counters["ignored"], misses);
+    EXPECT_EQ(r.counters["closesthit"], hits);
+  }
+}
+
+TEST(Model, OpaqueGeometrySkipsAnyHit) {
+  Case c = anyHitGridCase();
+  c.scene.blases[0].geometries[0].flags = kGeometryOpaque;
+  Results r = run(c, ModelTier::Exact);
+  EXPECT_EQ(r.counters["anyhit"], 0u);
+  EXPECT_EQ(r.counters["miss"], 0u);
+  // force_no_opaque on the instance brings it back; the ray flag opaque wins over it.
+  c.scene.instances[0].flags = kInstanceForceNoOpaque;
+  EXPECT_GT(run(c, ModelTier::Fast).counters["anyhit"], 0u);
+  for (Ray& ray : c.rays.rays) ray.flags = kRayOpaque;
+  EXPECT_EQ(run(c, ModelTier::Fast).counters["anyhit"], 0u);
+}
+
+TEST(Model, ThreadCountDoesNotChangeResults) {
+  for (ModelTier tier : kTiers) {
+    Case c = anyHitGridCase();
+    Results a = run(c, tier, 1), b = run(c, tier, 4);
+    EXPECT_EQ(a.records, b.records);
+    EXPECT_EQ(a.counters, b.counters);
+    EXPECT_EQ(a.ambiguous.size(), b.ambiguous.size());
+  }
+}
+
+TEST(Model, FacingCullsFlipAndDisable) {
+  Ray up = downRay(0.5f, -0.5f, -5); up.direction = {0, 0, 1};
+  for (ModelTier tier : kTiers) {
+    Case c = baseCase({quad()}, {downRay(0.5f, -0.5f), up});
+    Results r = run(c, tier);
+    EXPECT_EQ(word(r, 0, "hit_kind"), 0xFEu);
+    EXPECT_EQ(word(r, 1, "hit_kind"), 0xFFu);
+    for (Ray& ray : c.rays.rays) ray.flags = kRayCullBackFacing;
+    r = run(c, tier);
+    EXPECT_EQ(word(r, 0, "hit"), 1u);
+    EXPECT_EQ(word(r, 1, "hit"), 0u);
+    c.scene.instances[0].flags = kInstanceFlipFacing;
+    r = run(c, tier);
+    EXPECT_EQ(word(r, 0, "hit"), 0u);
+    EXPECT_EQ(word(r, 1, "hit"), 1u);
+    EXPECT_EQ(word(r, 1, "hit_kind"), 0xFEu);
+    c.scene.instances[0].flags = kInstanceFlipFacing | kInstanceFacingCullDisable;
+    r = run(c, tier);
+    EXPECT_EQ(word(r, 0, "hit"), 1u);
+    EXPECT_EQ(word(r, 0, "hit_kind"), 0xFFu);
+  }
+}
+
+TEST(Model, MasksAndSkipFlags) {
+  for (ModelTier tier : kTiers) {
+    Case c = baseCase({quad()}, {downRay(0.5f, -0.5f), downRay(0.5f, -0.5f), downRay(0.5f, -0.5f), downRay(0.5f, -0.5f)});
+    c.scene.instances[0].mask = 0x01;
+    c.rays.rays[0].cull_mask = 0x02;
+    c.rays.rays[1].cull_mask = 0x103;  // only the low 8 bits count
+    c.rays.rays[2].flags = kRaySkipTriangles;
+    c.rays.rays[3].flags = kRaySkipAabbs;
+    Results r = run(c, tier);
+    EXPECT_EQ(word(r, 0, "hit"), 0u);
+    EXPECT_EQ(word(r, 1, "hit"), 1u);
+    EXPECT_EQ(word(r, 2, "hit"), 0u);
+    EXPECT_EQ(word(r, 3, "hit"), 1u);
+    c.pipeline.flags = 0x1000;  // pipeline skip triangles
+    r = run(c, tier);
+    EXPECT_EQ(word(r, 1, "hit"), 0u);
+  }
+}
+
+TEST(Model, SbtHitIndexUsesLowBitsOfOffsetAndStride) {
+  for (ModelTier tier : {ModelTier::Fast, ModelTier::Exact}) {
+    Geometry far = quad(-1);
+    Geometry near = quad(0);
+    Ray ray = downRay(0.5f, -0.5f);
+    ray.sbt_offset = 0x11;  // low 4 bits: 1
+    ray.sbt_stride = 0x12;  // low 4 bits: 2
+    Case c = baseCase({far, near}, {ray});
+    c.scene.instances[0].sbt_offset = 1;
+    c.pipeline.hit_groups.clear();
+    for (uint32_t k = 0; k < 6; ++k) {
+      HitGroup g;
+      g.closest_hit = Program{recordExpr("value", lit(k)), recordBuiltins({"geometry_index"})};
+      c.pipeline.hit_groups.push_back(g);
+    }
+    Results r = run(c, tier);
+    EXPECT_EQ(word(r, 0, "geometry_index"), 1u);
+    EXPECT_EQ(word(r, 0, "value"), 1u + 1u * 2u + 1u);
+    // An all-zero record: no closest-hit runs, and no miss either.
+    c.pipeline.sbt_hit = {{0, {}}, {1, {}}, {2, {}}, {3, {}}, {std::nullopt, {}}, {5, {}}};
+    r = run(c, tier);
+    EXPECT_EQ(word(r, 0, "closest_hit_runs"), 0u);
+    EXPECT_EQ(word(r, 0, "miss_runs"), 0u);
+  }
+}
+
+TEST(Model, ShaderRecordDataAndMissIndex) {
+  Ray ray = downRay(5, 5);
+  ray.miss = 0x10001;  // low 16 bits: 1
+  Case c = baseCase({quad()}, {ray});
+  c.pipeline.miss.push_back({recordExpr("value", op("shader_record_uint", {lit(2)}))});
+  c.pipeline.sbt_miss = {{0, {}}, {1, {7, 8, 9}}};
+  Results r = run(c, ModelTier::Exact);
+  EXPECT_EQ(word(r, 0, "value"), 9u);
+  EXPECT_EQ(r.counters["miss"], 0u);
+}
+
+TEST(Model, SphereIntersectionReportsBothRoots) {
+  for (ModelTier tier : kTiers) {
+    Geometry g;
+    g.kind = Geometry::Kind::Aabbs;
+    g.aabbs = {{-1, -1, -1, 1, 1, 1}};
+    g.flags = kGeometryOpaque;
+    Case c = baseCase({g}, {downRay(0, 0), downRay(0.9f, 0.9f)});
+    Stmt far; far.kind = Stmt::Kind::Report; far.t = op("sphere_far", {}); far.hit_kind = lit(2);
+    far.then_ = {count("far_accepted")};
+    Stmt near = far; near.t = op("sphere_near", {}); near.hit_kind = lit(1);
+    near.then_ = {count("near_accepted")};
+    c.pipeline.hit_groups[0].intersection = Program{ifThen(op("sphere_hit", {}), {far, near})};
+    c.pipeline.hit_groups[0].closest_hit->push_back(recordBuiltins({"ray_tmax"}));
+    Results r = run(c, tier);
+    ASSERT_EQ(r.status, "ok");
+    EXPECT_EQ(word(r, 0, "hit"), 1u);
+    EXPECT_NEAR(fword(r, 0, "hit_t"), 4.0f, 1e-5);
+    EXPECT_EQ(word(r, 0, "hit_kind"), 1u);
+    EXPECT_FLOAT_EQ(fword(r, 0, "ray_tmax"), fword(r, 0, "hit_t"));
+    EXPECT_EQ(word(r, 0, "intersection_runs"), 1u);
+    EXPECT_EQ(word(r, 1, "hit"), 0u);  // corner of the box: outside the sphere
+    EXPECT_EQ(word(r, 1, "intersection_runs"), 1u);
+    EXPECT_EQ(r.counters["far_accepted"], 1u);
+    EXPECT_EQ(r.counters["near_accepted"], 1u);
+  }
+}
+
+TEST(Model, InactiveAabbAndNullInstance) {
+  Geometry g;
+  g.kind = Geometry::Kind::Aabbs;
+  g.aabbs = {{NAN, -1, -1, 1, 1, 1}};
+  Case c = baseCase({g}, {downRay(0, 0)});
+  Stmt rep; rep.kind = Stmt::Kind::Report; rep.t = litf(1.0); rep.hit_kind = lit(0);
+  c.pipeline.hit_groups[0].intersection = Program{rep};
+  Results r = run(c, ModelTier::Exact);
+  EXPECT_EQ(word(r, 0, "hit"), 0u);
+  EXPECT_EQ(word(r, 0, "intersection_runs"), 0u);
+  Case q = baseCase({quad()}, {downRay(0.5f, -0.5f)});
+  q.scene.instances[0].blas.reset();
+  EXPECT_EQ(word(run(q, ModelTier::Fast), 0, "hit"), 0u);
+}
+
+TEST(Model, CallableDataFlowsBack) {
+  Case c = baseCase({quad()}, {downRay(0.5f, -0.5f)});
+  Stmt call; call.kind = Stmt::Kind::Call; call.call_index = lit(1);
+  call.assigns = {{"value", lit(41)}};
+  c.pipeline.hit_groups[0].closest_hit = Program{call, recordExpr("value", bi("callee.value"))};
+  Stmt set; set.kind = Stmt::Kind::SetCall; set.assigns = {{"value", op("add", {bi("call.value"), lit(1)})}};
+  c.pipeline.callables = {{count("calls")}, {count("calls"), set}};
+  Results r = run(c, ModelTier::Exact);
+  EXPECT_EQ(word(r, 0, "value"), 42u);
+  EXPECT_EQ(word(r, 0, "callable_runs"), 1u);
+  EXPECT_EQ(r.counters["calls"], 1u);
+}
+
+TEST(Model, PointLightFormula) {
+  Case c = baseCase({quad()}, {downRay(0.5f, -0.5f)});
+  Stmt call; call.kind = Stmt::Kind::Call; call.call_index = lit(0);
+  call.assigns = {{"position", bi("hit_position")}, {"normal", vec3(0, 0, 1)}};
+  c.pipeline.hit_groups[0].closest_hit = Program{call, recordExpr("color", bi("callee.color"))};
+  Stmt light; light.kind = Stmt::Kind::Light; light.light = "point";
+  c.pipeline.callables = {{light}};
+  auto bits = [](float f) { uint32_t u; std::memcpy(&u, &f, 4); return u; };
+  c.pipeline.sbt_callable = {{0, {bits(0.5f), bits(-0.5f), bits(2.0f), bits(1.0f), bits(0.5f), bits(0.25f)}}};
+  c.outputs.per_ray.push_back("color");
+  Results r = run(c, ModelTier::Fast);
+  // Light straight above at distance 2: cos 1, 1/d^2 = 0.25.
+  EXPECT_NEAR(fword(r, 0, "color", 0), 0.25f, 1e-6);
+  EXPECT_NEAR(fword(r, 0, "color", 1), 0.125f, 1e-6);
+  EXPECT_NEAR(fword(r, 0, "color", 3), 1.0f, 0);
+}
+
+TEST(Model, RecursionDepth) {
+  Case c = baseCase({quad()}, {downRay(0.5f, -0.5f)});
+  Stmt nested = traceStmt();
+  nested.trace.origin = {vec3(5, 5, 5)};
+  nested.trace.direction = {vec3(0, 0, -1)};
+  c.pipeline.hit_groups[0].closest_hit = Program{traceStmt()};
+  c.pipeline.hit_groups[0].closest_hit->back() = nested;
+  c.pipeline.miss = {{recordBuiltins({"depth"})}};
+  c.pipeline.max_recursion = 2;
+  Results r = run(c, ModelTier::Exact);
+  EXPECT_EQ(r.status, "ok");
+  EXPECT_EQ(word(r, 0, "depth"), 2u);
+  EXPECT_EQ(word(r, 0, "miss_runs"), 1u);
+  c.pipeline.max_recursion = 1;
+  r = run(c, ModelTier::Exact);
+  EXPECT_NE(r.status.find("Crash"), std::string::npos);
+}
+
+TEST(Model, SharedEdgeIsAmbiguousInExactTierAndNeverLeaks) {
+  std::vector<Ray> rays;
+  for (int i = 0; i < 64; ++i) {
+    float s = -0.9f + i * (1.8f / 63);
+    rays.push_back(downRay(s, s));  // exactly on the diagonal shared by both triangles
+  }
+  rays.push_back(downRay(0.5f, -0.5f));  // clear
+  Case c = baseCase({quad()}, rays);
+  Results r = run(c, ModelTier::Exact);
+  ASSERT_EQ(r.status, "ok");
+  for (uint32_t i = 0; i < 64; ++i) {
+    EXPECT_EQ(word(r, i, "hit"), 1u) << "leak at ray " << i;
+    EXPECT_EQ(word(r, i, "primitive_id"), 0u) << "tie-break: smallest primitive";
+  }
+  ASSERT_EQ(r.ambiguous.size(), 64u);
+  for (const RayAmbiguity& a : r.ambiguous) {
+    EXPECT_LT(a.ray, 64u);
+    bool p0 = false, p1 = false;
+    for (const Candidate& k : a.candidates) {
+      p0 |= k.hit && k.primitive == 0;
+      p1 |= k.hit && k.primitive == 1;
+    }
+    EXPECT_TRUE(p0 && p1) << a.reason;
+  }
+  EXPECT_EQ(r.ambiguous[0].reason, "edge");
+}
+
+TEST(Model, TriangleIntervalIsOpen) {
+  for (ModelTier tier : kTiers) {
+    Ray a = downRay(0.5f, -0.5f); a.tmax = 5;    // hit exactly at tmax: no
+    Ray b = downRay(0.5f, -0.5f); b.tmin = 5;    // exactly at tmin: no
+    Ray d = downRay(0.5f, -0.5f); d.tmax = 5.001f;
+    Case c = baseCase({quad()}, {a, b, d});
+    Results r = run(c, tier);
+    EXPECT_EQ(word(r, 0, "hit"), 0u) << modelTierName(tier);
+    EXPECT_EQ(word(r, 1, "hit"), 0u) << modelTierName(tier);
+    EXPECT_EQ(word(r, 2, "hit"), 1u) << modelTierName(tier);
+  }
+}
+
+TEST(Model, NanInYTriangleStaysActiveAndHugeTrianglesAreHit) {
+  std::array<Vec3, 3> nanY = {Vec3{0, NAN, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}};
+  std::array<Vec3, 3> nanX = {Vec3{NAN, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}};
+  EXPECT_FALSE(triangleInactive(nanY));
+  EXPECT_TRUE(needsOwnTriangleTest(nanY));
+  EXPECT_TRUE(triangleInactive(nanX));
+  for (ModelTier tier : kTiers) {
+    Geometry g;
+    g.flags = kGeometryOpaque;
+    // primitive 0: NaN in Y (active, Embree would drop it); 1: a normal triangle;
+    // 2: huge (beyond Embree's 1.8e18 limit) far below.
+    g.vertices = {{10, NAN, 0}, {11, 0, 0}, {10, 1, 0},
+                  {-1, -1, 0}, {1, -1, 0}, {1, 1, 0},
+                  {-4e18f, -4e18f, -10}, {4e18f, -4e18f, -10}, {0, 4e18f, -10}};
+    Case c = baseCase({g}, {downRay(0.5f, -0.5f), downRay(-0.5f, 0.5f), downRay(10.2f, 0.2f)});
+    Results r = run(c, tier);
+    ASSERT_EQ(r.status, "ok");
+    EXPECT_EQ(word(r, 0, "primitive_id"), 1u);
+    EXPECT_EQ(word(r, 1, "hit"), 1u) << "huge triangle dropped in " << modelTierName(tier);
+    EXPECT_EQ(word(r, 1, "primitive_id"), 2u);
+    EXPECT_NEAR(fword(r, 1, "hit_t"), 15.0f, 1e-4);
+    EXPECT_EQ(word(r, 2, "primitive_id"), 2u) << "a NaN plane is never hit; behind it the huge one";
+  }
+}
+
+TEST(Model, ImagesFollowTheRecord) {
+  Case c = baseCase({quad()}, {downRay(0.5f, -0.5f), downRay(3, 3)}, 2);
+  c.outputs.images = {{"prim", "primitive_id", {}}, {"t", "hit_t", {}}};
+  Results r = run(c, ModelTier::Fast);
+  ASSERT_EQ(r.images.size(), 2u);
+  EXPECT_FALSE(r.images[0].is_float);
+  EXPECT_EQ(r.images[0].channels, 1u);
+  EXPECT_TRUE(r.images[1].is_float);
+  ASSERT_EQ(r.images[1].texels.size(), 8u);
+  float t, a;
+  std::memcpy(&t, &r.images[1].texels[0], 4);
+  std::memcpy(&a, &r.images[1].texels[3], 4);
+  EXPECT_NEAR(t, 5.0f, 1e-5);
+  EXPECT_EQ(a, 1.0f);
+  EXPECT_EQ(r.images[1].texels[1], 0u);
+}
+
+TEST(Model, EveryCaseFileRunsInEveryTier) {
+  namespace fs = std::filesystem;
+  const fs::path root = fs::path(RAYSPEC_SOURCE_DIR) / "cases";
+  int ran = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(root)) {
+    if (entry.path().extension() != ".yaml") continue;
+    ParseResult p = parseCaseFile(entry.path().string(), root.string());
+    if (!p.value) {
+      std::cerr << "skipping " << entry.path() << ": " << (p.errors.empty() ? "" : p.errors[0].format()) << "\n";
+      continue;
+    }
+    const Case& c = *p.value;
+    const Plan plan = derivePlan(c);
+    std::vector<uint32_t> fastRecords;
+    for (ModelTier tier : kTiers) {
+      Results r = runOnModel(c, plan, ModelOptions{tier, 2});
+      EXPECT_EQ(r.status, "ok") << c.name << " " << modelTierName(tier);
+      ASSERT_EQ(r.records.size(), size_t(c.rays.width) * c.rays.height * recordWords()) << c.name;
+      EXPECT_EQ(r.images.size(), plan.images.size()) << c.name;
+      for (const std::string& name : plan.counters) EXPECT_EQ(r.counters.count(name), 1u) << name;
+      for (uint32_t i = 0; i < c.rays.width * c.rays.height; ++i)
+        EXPECT_LE(word(r, i, "closest_hit_runs") + word(r, i, "miss_runs"), 1u) << c.name << " ray " << i;
+      if (tier != ModelTier::Exact) continue;
+      // Rays the exact tier calls clear agree with the fast tier.
+      if (fastRecords.empty()) {
+        fastRecords = runOnModel(c, plan, ModelOptions{ModelTier::Fast, 1}).records;
+        std::vector<bool> amb(c.rays.width * c.rays.height, false);
+        for (const RayAmbiguity& a : r.ambiguous) amb[a.ray] = true;
+        uint32_t differ = 0;
+        const uint32_t words = recordWords();
+        for (uint32_t i = 0; i < c.rays.width * c.rays.height; ++i) {
+          if (amb[i]) continue;
+          if (word(r, i, "hit") != fastRecords[i * words + findRecordField("hit")->offset] ||
+              word(r, i, "primitive_id") != fastRecords[i * words + findRecordField("primitive_id")->offset])
+            ++differ;
+        }
+        EXPECT_EQ(differ, 0u) << c.name;
+      }
+    }
+    ++ran;
+  }
+  EXPECT_GT(ran, 0);
+}
+
+}  // namespace
+}  // namespace rayspec

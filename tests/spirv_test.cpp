@@ -1,0 +1,102 @@
+// GLSL -> SPIR-V through glslang, validated by SPIRV-Tools, cached by content.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "spirv/compile_glsl.h"
+#include "spirv/spirv_cache.h"
+
+namespace rayspec {
+namespace {
+
+const char* kAnyHit = R"(#version 460
+#extension GL_EXT_ray_tracing : require
+struct P { vec4 color; uint value; uint depth; };
+layout(location = 0) rayPayloadInEXT P payload;
+hitAttributeEXT vec2 attr;
+void main() {
+  if ((gl_PrimitiveID & 1) != 0) ignoreIntersectionEXT;
+  payload.value += 1u;
+  payload.color = vec4(attr, gl_HitTEXT, 1.0);
+}
+)";
+
+constexpr uint32_t kSpirvMagic = 0x07230203;
+
+TEST(CompileGlsl, AnyHitCompilesAndValidates) {
+  SpirvResult r = compileGlsl(kAnyHit, Stage::AnyHit);
+  ASSERT_TRUE(r.error.empty()) << r.error;
+  ASSERT_GT(r.words.size(), 5u);
+  EXPECT_EQ(r.words[0], kSpirvMagic);
+  EXPECT_EQ(r.words[1], 0x00010400u);  // SPIR-V 1.4
+}
+
+TEST(CompileGlsl, WrongStageIsAnError) {
+  // ignoreIntersectionEXT is only legal in any-hit.
+  SpirvResult r = compileGlsl(kAnyHit, Stage::ClosestHit);
+  EXPECT_TRUE(r.words.empty());
+  EXPECT_FALSE(r.error.empty());
+}
+
+TEST(CompileGlsl, BrokenShaderQuotesTheLine) {
+  const std::string broken = R"(#version 460
+#extension GL_EXT_ray_tracing : require
+layout(location = 0) rayPayloadInEXT vec4 payload;
+void main() {
+  payload = vec4(1.0);
+  payload.w = undeclared_thing * 2.0;
+}
+)";
+  SpirvResult r = compileGlsl(broken, Stage::Miss);
+  EXPECT_TRUE(r.words.empty());
+  EXPECT_NE(r.error.find("0:6:"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("6 |   payload.w = undeclared_thing * 2.0;"), std::string::npos) << r.error;
+  EXPECT_FALSE(r.from_cache);
+  // Errors are not cached.
+  EXPECT_FALSE(compileGlsl(broken, Stage::Miss).from_cache);
+}
+
+TEST(CompileGlsl, SecondCompileHitsTheMemoryCache) {
+  const std::string glsl = std::string(kAnyHit) + "// memory cache test\n";
+  SpirvResult first = compileGlsl(glsl, Stage::AnyHit);
+  ASSERT_TRUE(first.error.empty()) << first.error;
+  EXPECT_FALSE(first.from_cache);
+  SpirvResult second = compileGlsl(glsl, Stage::AnyHit);
+  EXPECT_TRUE(second.from_cache);
+  EXPECT_EQ(first.words, second.words);
+}
+
+TEST(CompileGlsl, CacheKeyDependsOnStageAndText) {
+  EXPECT_NE(spirvCacheKey("x", Stage::AnyHit), spirvCacheKey("x", Stage::ClosestHit));
+  EXPECT_NE(spirvCacheKey("x", Stage::AnyHit), spirvCacheKey("y", Stage::AnyHit));
+  EXPECT_EQ(spirvCacheKey("x", Stage::Miss), spirvCacheKey("x", Stage::Miss));
+}
+
+TEST(CompileGlsl, DiskCacheSurvivesTheMemoryCache) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("rayspec-spirv-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+  std::filesystem::remove_all(dir);
+  setSpirvCacheDir(dir.string());
+  const std::string glsl = std::string(kAnyHit) + "// disk cache test\n";
+  SpirvResult first = compileGlsl(glsl, Stage::AnyHit);
+  ASSERT_TRUE(first.error.empty()) << first.error;
+  const auto file = dir / spirvCacheFileName(spirvCacheKey(glsl, Stage::AnyHit));
+  EXPECT_TRUE(std::filesystem::exists(file));
+  EXPECT_EQ(std::filesystem::file_size(file), first.words.size() * 4);
+  clearSpirvMemoryCache();
+  SpirvResult second = compileGlsl(glsl, Stage::AnyHit);
+  EXPECT_TRUE(second.from_cache);
+  EXPECT_EQ(first.words, second.words);
+  // A corrupt file is not trusted: the shader is compiled again.
+  clearSpirvMemoryCache();
+  std::filesystem::resize_file(file, 6);
+  SpirvResult third = compileGlsl(glsl, Stage::AnyHit);
+  EXPECT_FALSE(third.from_cache);
+  EXPECT_EQ(first.words, third.words);
+  setSpirvCacheDir("");
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace rayspec
