@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 
 #include "model/model_shading.h"
@@ -36,17 +37,49 @@ Machine::Machine(const ModelShared& shared, uint32_t* records) : sh_(shared), re
   default_miss_ = p.sbt_miss.empty() ? defaults(p.miss.size()) : p.sbt_miss;
   default_hit_ = p.sbt_hit.empty() ? defaults(p.hit_groups.size()) : p.sbt_hit;
   default_callable_ = p.sbt_callable.empty() ? defaults(p.callables.size()) : p.sbt_callable;
+  const char* runs[6] = {"raygen_runs", "miss_runs", "closest_hit_runs", "any_hit_runs",
+                         "intersection_runs", "callable_runs"};
+  for (int k = 0; k < 6; ++k) runs_offset_[k] = findRecordField(runs[k])->offset;
 }
 
-void Machine::bumpRuns(const char* field) {
-  if (!rec_) return;
-  const RecordField* f = findRecordField(field);
-  if (f) rec_[f->offset] += 1;
+void Machine::bumpRuns(int which) {
+  if (rec_) rec_[runs_offset_[which]] += 1;
+}
+
+namespace {
+const char* const kBuiltinNames[] = {
+    "launch_id_x", "launch_id_y", "launch_size_x", "launch_size_y", "primitive_id", "instance_id",
+    "instance_custom_index", "geometry_index", "hit_kind", "hit_t", "hit", "barycentrics",
+    "aabb_min", "aabb_max", "object_ray_origin", "object_ray_direction", "ray_tmin", "ray_tmax",
+    "incoming_ray_flags", "world_ray_origin", "world_ray_direction", "hit_position",
+    "payload.color", "payload.value", "depth", "child.color", "child.value", "call.position",
+    "call.normal", "call.color", "call.value", "callee.color", "callee.value"};
+enum IdKind { kIdBuiltin = 1, kIdField = 2, kIdCounter = 3 };
+}  // namespace
+
+// Names resolved once per address (the case outlives the run), so the
+// interpreter compares no strings on the hot path.
+int Machine::cachedId(const std::string* key, int kind) {
+  IdSlot& slot = id_cache_[(reinterpret_cast<uintptr_t>(key) >> 3) & (id_cache_.size() - 1)];
+  if (slot.key == key && slot.kind == kind) return slot.id;
+  int id = -1;
+  if (kind == kIdBuiltin) {
+    for (size_t i = 0; i < sizeof(kBuiltinNames) / sizeof(kBuiltinNames[0]); ++i)
+      if (*key == kBuiltinNames[i]) id = static_cast<int>(i);
+  } else if (kind == kIdField) {
+    id = recordFieldIndex(*key);
+  } else {
+    const auto& names = sh_.plan->counters;
+    const auto it = std::find(names.begin(), names.end(), *key);
+    if (it != names.end()) id = static_cast<int>(it - names.begin());
+  }
+  slot = {key, kind, id};
+  return id;
 }
 
 void Machine::record(const std::string& field, const Val& v, ValueType t) {
   if (!rec_) return;
-  const int idx = recordFieldIndex(field);
+  const int idx = cachedId(&field, kIdField);
   if (idx < 0) return;
   const RecordField& f = recordFields()[idx];
   if (f.automatic) return;
@@ -60,53 +93,54 @@ void Machine::record(const std::string& field, const Val& v, ValueType t) {
 }
 
 Val Machine::builtin(const std::string& n, StageEnv& env) {
-  const uint32_t w = sh_.c->rays.width, h = sh_.c->rays.height;
-  if (n == "launch_id_x") return fromUint(x_);
-  if (n == "launch_id_y") return fromUint(y_);
-  if (n == "launch_size_x") return fromUint(w);
-  if (n == "launch_size_y") return fromUint(h);
-  const HitView* hv = env.hit;
   static const HitView kNone;
-  if (!hv) hv = &kNone;
-  if (n == "primitive_id") return fromUint(hv->primitive);
-  if (n == "instance_id") return fromUint(hv->instance);
-  if (n == "instance_custom_index") return fromUint(hv->custom_index);
-  if (n == "geometry_index") return fromUint(hv->geometry);
-  if (n == "hit_kind") return fromUint(hv->hit_kind);
-  if (n == "hit_t") return fromFloat(hv->t);
-  if (n == "hit") return fromUint(env.stage == Stage::ClosestHit ? 1u : 0u);
-  if (n == "barycentrics") { Val r; r.f = {hv->b1, hv->b2, 0, 0}; return r; }
-  if (n == "aabb_min") return fromVec3(hv->aabb_min);
-  if (n == "aabb_max") return fromVec3(hv->aabb_max);
-  if (n == "object_ray_origin") return fromVec3(hv->object_origin);
-  if (n == "object_ray_direction") return fromVec3(hv->object_direction);
   static const TraceRay kNoRay;
+  static const Payload kNoPayload;
+  static const CallData kNoCall;
+  const HitView* hv = env.hit ? env.hit : &kNone;
   const TraceRay* r = env.ray ? env.ray : &kNoRay;
-  if (n == "ray_tmin") return fromFloat(r->tmin);
-  if (n == "ray_tmax") return fromFloat(env.tmax_view);
-  if (n == "incoming_ray_flags") return fromUint(r->flags);
-  if (n == "world_ray_origin") return fromVec3(r->origin);
-  if (n == "world_ray_direction") return fromVec3(r->direction);
-  if (n == "hit_position") {
-    Vec3 p;
-    for (int k = 0; k < 3; ++k) p[k] = r->origin[k] + hv->t * r->direction[k];
-    return fromVec3(p);
-  }
-  static Payload kNoPayload;
   const Payload* pl = env.payload ? env.payload : &kNoPayload;
-  if (n == "payload.color") return fromVec4(pl->color);
-  if (n == "payload.value") return fromUint(pl->value);
-  if (n == "depth") return fromUint(env.depth);
-  if (n == "child.color") return fromVec4(env.child.color);
-  if (n == "child.value") return fromUint(env.child.value);
-  static CallData kNoCall;
   const CallData* cd = env.call ? env.call : &kNoCall;
-  if (n == "call.position") return fromVec3(cd->position);
-  if (n == "call.normal") return fromVec3(cd->normal);
-  if (n == "call.color") return fromVec4(cd->color);
-  if (n == "call.value") return fromUint(cd->value);
-  if (n == "callee.color") return fromVec4(env.callee.color);
-  if (n == "callee.value") return fromUint(env.callee.value);
+  switch (cachedId(&n, kIdBuiltin)) {
+    case 0: return fromUint(x_);
+    case 1: return fromUint(y_);
+    case 2: return fromUint(sh_.c->rays.width);
+    case 3: return fromUint(sh_.c->rays.height);
+    case 4: return fromUint(hv->primitive);
+    case 5: return fromUint(hv->instance);
+    case 6: return fromUint(hv->custom_index);
+    case 7: return fromUint(hv->geometry);
+    case 8: return fromUint(hv->hit_kind);
+    case 9: return fromFloat(hv->t);
+    case 10: return fromUint(env.stage == Stage::ClosestHit ? 1u : 0u);
+    case 11: { Val v; v.f = {hv->b1, hv->b2, 0, 0}; return v; }
+    case 12: return fromVec3(hv->aabb_min);
+    case 13: return fromVec3(hv->aabb_max);
+    case 14: return fromVec3(hv->object_origin);
+    case 15: return fromVec3(hv->object_direction);
+    case 16: return fromFloat(r->tmin);
+    case 17: return fromFloat(env.tmax_view);
+    case 18: return fromUint(r->flags);
+    case 19: return fromVec3(r->origin);
+    case 20: return fromVec3(r->direction);
+    case 21: {
+      Vec3 p;
+      for (int k = 0; k < 3; ++k) p[k] = r->origin[k] + hv->t * r->direction[k];
+      return fromVec3(p);
+    }
+    case 22: return fromVec4(pl->color);
+    case 23: return fromUint(pl->value);
+    case 24: return fromUint(env.depth);
+    case 25: return fromVec4(env.child.color);
+    case 26: return fromUint(env.child.value);
+    case 27: return fromVec3(cd->position);
+    case 28: return fromVec3(cd->normal);
+    case 29: return fromVec4(cd->color);
+    case 30: return fromUint(cd->value);
+    case 31: return fromVec4(env.callee.color);
+    case 32: return fromUint(env.callee.value);
+    default: break;
+  }
   if (error.empty()) error = "model: unknown built-in '" + n + "'";
   return Val{};
 }
@@ -237,9 +271,8 @@ Flow Machine::exec(const Program& p, StageEnv& env) {
 Flow Machine::execStmt(const Stmt& s, StageEnv& env) {
   switch (s.kind) {
     case Stmt::Kind::Count: {
-      const auto& names = sh_.plan->counters;
-      const auto it = std::find(names.begin(), names.end(), s.counter);
-      if (it != names.end()) counters[it - names.begin()] += 1;
+      const int k = cachedId(&s.counter, kIdCounter);
+      if (k >= 0) counters[k] += 1;
       return Flow::Continue;
     }
     case Stmt::Kind::Record:
@@ -335,7 +368,7 @@ void Machine::callCallable(uint32_t index, CallData& data, uint32_t depth) {
   if (index >= default_callable_.size()) return;
   const SbtRecord& rec = default_callable_[index];
   if (!rec.group || *rec.group >= sh_.c->pipeline.callables.size()) return;  // R-SBT-ZERO
-  bumpRuns("callable_runs");
+  bumpRuns(kRunsCallable);
   StageEnv env;
   env.stage = Stage::Callable;
   env.record_data = &rec.data;
@@ -350,7 +383,7 @@ void Machine::runRay(uint32_t index) {
   y_ = index / sh_.c->rays.width;
   rec_ = records_ ? records_ + static_cast<size_t>(index) * recordWords() : nullptr;
   ray_ambiguous_ = false;
-  bumpRuns("raygen_runs");
+  bumpRuns(kRunsRaygen);
   StageEnv env;
   env.stage = Stage::Raygen;
   env.record_data = &sh_.c->pipeline.raygen_data;

@@ -66,6 +66,8 @@ struct StageEnv {
 
 enum class Flow { Continue, Ignore, Terminate };
 
+enum RunsField { kRunsRaygen, kRunsMiss, kRunsClosestHit, kRunsAnyHit, kRunsIntersection, kRunsCallable };
+
 struct ModelShared {
   const Case* c = nullptr;
   const Plan* plan = nullptr;
@@ -92,7 +94,8 @@ class Machine {
   Flow exec(const Program& p, StageEnv& env);
   Flow execStmt(const Stmt& s, StageEnv& env);
   void record(const std::string& field, const Val& v, ValueType t);
-  void bumpRuns(const char* field);
+  void bumpRuns(int which);  // kRuns* below
+  int cachedId(const std::string* key, int kind);  // builtin / field / counter index, by address
   Payload trace(const TraceRay& r, uint32_t depth);
   Flow report(const Stmt& s, StageEnv& env);  // model_trace.cpp
   void callCallable(uint32_t index, CallData& data, uint32_t depth);
@@ -105,6 +108,9 @@ class Machine {
   bool ray_ambiguous_ = false;
   std::vector<SbtRecord> default_miss_, default_hit_, default_callable_;
   std::vector<std::vector<ModelCandidate>> cand_pool_;
+  uint32_t runs_offset_[6] = {};
+  struct IdSlot { const std::string* key = nullptr; int kind = 0; int id = -1; };
+  std::vector<IdSlot> id_cache_ = std::vector<IdSlot>(1024);
 };
 
 }  // namespace rayspec

@@ -145,7 +145,7 @@ Flow Machine::report(const Stmt& s, StageEnv& env) {
     hv.b2 = attr.f[1];
     Flow ah = Flow::Continue;
     if (!tr->cur_opaque && tr->cur_group && tr->cur_group->any_hit) {
-      bumpRuns("any_hit_runs");
+      bumpRuns(kRunsAnyHit);
       StageEnv a;
       a.stage = Stage::AnyHit;
       a.record_data = &tr->cur_rec->data;
@@ -251,7 +251,7 @@ Payload Machine::trace(const TraceRay& r, uint32_t depth) {
         tr.cur_opaque = opaque;
         tr.cur_rec = rec;
         tr.cur_group = grp;
-        bumpRuns("intersection_runs");
+        bumpRuns(kRunsIntersection);
         StageEnv env;
         env.stage = Stage::Intersection;
         env.record_data = &rec->data;
@@ -281,7 +281,7 @@ Payload Machine::trace(const TraceRay& r, uint32_t depth) {
         hv.hit_kind = f.kind;
         hv.b1 = cand.b1;
         hv.b2 = cand.b2;
-        bumpRuns("any_hit_runs");
+        bumpRuns(kRunsAnyHit);
         StageEnv a;
         a.stage = Stage::AnyHit;
         a.record_data = &rec->data;
@@ -356,7 +356,7 @@ Payload Machine::trace(const TraceRay& r, uint32_t depth) {
         hv.hit_kind = tr.best.kind;
         hv.b1 = tr.best.b1;
         hv.b2 = tr.best.b2;
-        bumpRuns("closest_hit_runs");
+        bumpRuns(kRunsClosestHit);
         StageEnv env;
         env.stage = Stage::ClosestHit;
         env.record_data = &rec->data;
@@ -373,7 +373,7 @@ Payload Machine::trace(const TraceRay& r, uint32_t depth) {
     if (mi < default_miss_.size()) {
       const SbtRecord& rec = default_miss_[mi];
       if (rec.group && *rec.group < c.pipeline.miss.size()) {
-        bumpRuns("miss_runs");
+        bumpRuns(kRunsMiss);
         StageEnv env;
         env.stage = Stage::Miss;
         env.record_data = &rec.data;

@@ -38,6 +38,10 @@ bool usesSkipRayFlags(const Rays& rays) {
 
 void checkSupport(const VulkanContext& ctx, const Case& c) {
   const DeviceInfo& d = ctx.info;
+  if (c.rays.rays.size() != static_cast<size_t>(c.rays.width) * c.rays.height || c.rays.rays.empty())
+    throw VulkanError("case has " + std::to_string(c.rays.rays.size()) + " rays for a " +
+                      std::to_string(c.rays.width) + "x" + std::to_string(c.rays.height) +
+                      " launch: VK_ERROR_UNKNOWN");
   if (c.pipeline.max_recursion > d.max_ray_recursion_depth)
     throw NotSupportedError("max_recursion " + std::to_string(c.pipeline.max_recursion) +
                             " > device maxRayRecursionDepth " + std::to_string(d.max_ray_recursion_depth));
