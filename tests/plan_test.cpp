@@ -59,6 +59,16 @@ TEST(Plan, OpaqueTrianglesWithClosestHitNeedNothingElse) {
   EXPECT_FALSE(p.masks);
   EXPECT_FALSE(p.facing_culls);
   EXPECT_TRUE(p.images.empty());
+  EXPECT_FALSE(p.records) << "a counters-only case keeps no per-ray records";
+}
+
+TEST(Plan, RecordsWhenPerRayFieldsOrImagesAreKept) {
+  Case c = baseCase(quad(kGeometryOpaque));
+  c.outputs.per_ray = {"hit"};
+  EXPECT_TRUE(derivePlan(c).records);
+  c.outputs.per_ray.clear();
+  c.outputs.images.push_back({"hit", "hit", {}});
+  EXPECT_TRUE(derivePlan(c).records);
 }
 
 TEST(Plan, AnyHitOnlyWhenSomeCandidateCanBeNonOpaque) {

@@ -126,9 +126,10 @@ Plan derivePlan(const Case& c) {
   plan.counters = c.outputs.counters;
   plan.record_fields = c.outputs.per_ray;
   plan.images = c.outputs.images;
-  // The automatic per-ray stage counts are always kept: they are how the
-  // comparison checks miss-xor-closest-hit and any-hit counts per ray.
-  plan.records = true;
+  // Per-ray records (with the automatic stage run counts, which is how the
+  // comparison checks miss-xor-closest-hit per ray) exist when the case keeps
+  // per-ray fields or images; a counters-only case simulates no record at all.
+  plan.records = !plan.record_fields.empty() || !plan.images.empty();
   return plan;
 }
 
