@@ -52,9 +52,17 @@ RsRay rs_load_ray(uint index) {
 #endif
 
 #ifdef RS_USE_RECORDS
-layout(set = 0, binding = RS_BINDING_RECORDS, std430) buffer RsRecords {
-  uint rs_records[];
+// The record words are reached through their device address, held by the
+// small buffer at RS_BINDING_RECORDS: a storage buffer binding is limited to
+// maxStorageBufferRange (128 MiB on lavapipe), and a launch of 2^20 rays
+// already needs more (the generator enables GL_EXT_buffer_reference).
+layout(buffer_reference, std430, buffer_reference_align = 4) buffer RsRecordWords {
+  uint words[];
 };
+layout(set = 0, binding = RS_BINDING_RECORDS, std430) readonly buffer RsRecords {
+  RsRecordWords rs_records_ref;
+};
+#define rs_records rs_records_ref.words
 
 // First word of this launch's record.
 uint rs_record_base() {

@@ -5,6 +5,8 @@
 
 #include "compare/compare_results.h"
 #include "compare/counter_modes.h"
+#include "compare/image_pair.h"
+#include "compare/shared_edge.h"
 #include "compare/tolerances.h"
 #include "results/record_layout.h"
 
@@ -162,6 +164,120 @@ TEST(Compare, AmbiguousRayLeakIsAQualityWarningAndOtherCandidateIsFine) {
   Results wrong = sampleResults("vulkan");
   setUint(wrong, 0, "primitive_id", 9);
   EXPECT_EQ(compareResults(c, samplePlan(c), wrong, m).status, Status::Fail);
+}
+
+// Two triangles sharing the edge x = y of the unit square, in instance 0.
+Case squareCase() {
+  Case c = sampleCase();
+  Geometry g;
+  g.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  g.indices = {0, 1, 2, 0, 2, 3};
+  c.scene.blases.push_back({"square", {g}, {}});
+  Instance in;
+  in.blas = 0;
+  c.scene.instances.push_back(in);
+  return c;
+}
+
+TEST(Compare, MissAtASharedEdgeIsALeakEvenWhenAMissIsLegal) {
+  const Case c = squareCase();
+  Results leak = sampleResults("vulkan");
+  setUint(leak, 0, "hit", 0);
+  setUint(leak, 0, "closest_hit_runs", 0);
+  setUint(leak, 0, "miss_runs", 1);
+  leak.counters["miss"] = 3;
+  leak.counters["chit"] = 1;
+  // The ray crosses the diagonal both triangles share: a miss is a leak.
+  Results shared = sampleResults("model");
+  shared.ambiguous.push_back({0, "edge", {{true, 0, 0, 0}, {true, 0, 0, 1}, {false, 0, 0, 0}}});
+  EXPECT_EQ(compareResults(c, samplePlan(c), leak, shared).status, Status::QualityWarning);
+  // Corner (0, 0) is in both triangles, but its fan is open (the outer
+  // border): a miss is fine.
+  Results corner = sampleResults("model");
+  corner.ambiguous.push_back({0, "vertex", {{true, 0, 0, 0}, {true, 0, 0, 1}}});
+  EXPECT_EQ(compareResults(c, samplePlan(c), leak, corner).status, Status::Pass);
+  // The outer border edge (one triangle): hit or miss are both fine, even
+  // when the model lists no miss.
+  Results border = sampleResults("model");
+  border.ambiguous.push_back({0, "edge", {{true, 0, 0, 0}}});
+  EXPECT_EQ(compareResults(c, samplePlan(c), leak, border).status, Status::Pass);
+  // A miss no rule allows (the model lists a primitive of no triangle) is a leak.
+  Results other = sampleResults("model");
+  other.ambiguous.push_back({0, "edge", {{true, 0, 0, 7}}});
+  EXPECT_EQ(compareResults(c, samplePlan(c), leak, other).status, Status::QualityWarning);
+}
+
+TEST(SharedEdge, ClosedFanAroundAVertex) {
+  // Four triangles around the centre (0, 0) of a square: closed.
+  Case c = sampleCase();
+  Geometry g;
+  g.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}};
+  g.indices = {0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 1};
+  c.scene.blases.push_back({"fan", {g}, {}});
+  Instance in;
+  in.blas = 0;
+  c.scene.instances.push_back(in);
+  RayAmbiguity a{0, "vertex", {{true, 0, 0, 0}, {true, 0, 0, 1}, {true, 0, 0, 2}, {true, 0, 0, 3}}};
+  EXPECT_TRUE(crossesSharedEdge(c, a));
+  a.candidates.pop_back();  // three of four: the fan is open
+  EXPECT_FALSE(crossesSharedEdge(c, a));
+}
+
+// R-AHIT-DUP: under NO_DUPLICATE_ANY_HIT, a ray on which the model committed
+// no hit bounds the device's any-hit runs.
+TEST(Compare, AnyHitRunsAtMostOncePerPrimitiveUnderNoDuplicate) {
+  Case c = sampleCase();
+  Geometry g;
+  g.flags = kGeometryNoDuplicateAnyHit;
+  c.scene.blases.push_back({});
+  c.scene.blases[0].geometries.push_back(g);
+  Results m = sampleResults("model");
+  setUint(m, 2, "any_hit_runs", 2);  // ray 2 missed after any-hit ran on 2 primitives
+  Results d = sampleResults("vulkan");
+  setUint(d, 2, "any_hit_runs", 2);
+  EXPECT_EQ(compareResults(c, samplePlan(c), d, m).status, Status::Pass);
+  setUint(d, 2, "any_hit_runs", 1);  // fewer is not this rule's business
+  EXPECT_EQ(compareResults(c, samplePlan(c), d, m).status, Status::Pass);
+  setUint(d, 2, "any_hit_runs", 3);
+  Verdict v = compareResults(c, samplePlan(c), d, m);
+  EXPECT_EQ(v.status, Status::Fail);
+  EXPECT_NE(v.headline().find("R-AHIT-DUP"), std::string::npos) << v.headline();
+  // Without the flag, duplicates are allowed.
+  c.scene.blases[0].geometries[0].flags = 0;
+  EXPECT_EQ(compareResults(c, samplePlan(c), d, m).status, Status::Pass);
+}
+
+TEST(CompareImages, FloatImagesWithinTheFieldToleranceAndAmbiguousPixelsExcluded) {
+  auto image = [](std::vector<float> v) {
+    Image im{"t", "hit_t", 2, 2, 1, true, {}};
+    for (float f : v) {
+      uint32_t w;
+      std::memcpy(&w, &f, 4);
+      im.texels.push_back(w);
+    }
+    return im;
+  };
+  const Image model = image({1.0f, 2.0f, NAN, 4.0f});
+  // 2.0 + 1e-6 is within hit_t's tolerance; NaN against NaN is equal.
+  EXPECT_EQ(countFailingPixels(prepareImagePair(image({1.0f, 2.000001f, NAN, 4.0f}), model, {})).failing, 0u);
+  const Image far = image({1.5f, 2.0f, 0.0f, 4.0f});
+  const PixelCount n = countFailingPixels(prepareImagePair(far, model, {}));
+  EXPECT_EQ(n.failing, 2u);
+  EXPECT_EQ(n.first, (std::vector<uint32_t>{0, 2}));
+#ifdef RAYSPEC_WITH_OIIO
+  EXPECT_TRUE(n.by_oiio);
+#endif
+  EXPECT_EQ(countFailingPixelsLoop(prepareImagePair(far, model, {})).failing, 2u) << "both counts agree";
+  EXPECT_EQ(countFailingPixels(prepareImagePair(far, model, {0, 2})).failing, 0u) << "ambiguous pixels excluded";
+  // A larger per-image threshold accepts the 0.5 difference (but not NaN against a number).
+  EXPECT_EQ(countFailingPixels(prepareImagePair(far, model, {}, 1e5)).failing, 1u);
+}
+
+TEST(CompareImages, UintImagesCompareExactly) {
+  const Image model{"p", "primitive_id", 3, 1, 1, false, {1, 16777217, 5}};
+  const Image device{"p", "primitive_id", 3, 1, 1, false, {1, 16777216, 5}};
+  EXPECT_EQ(countFailingPixels(prepareImagePair(device, model, {})).failing, 1u)
+      << "ids that round to the same float still differ";
 }
 
 TEST(Compare, ImageMismatchFails) {

@@ -307,6 +307,21 @@ TEST_F(GenerateGlsl, BindingsFollowThePlan) {
             std::string::npos);
 }
 
+// The records are reached through a buffer reference (no maxStorageBufferRange
+// limit): every stage that records enables GL_EXT_buffer_reference, and the
+// binding at kBindingRecords holds the reference, not the words.
+TEST_F(GenerateGlsl, RecordsAreReachedByDeviceAddress) {
+  int recording = 0;
+  for (const auto& sh : shaders) {
+    if (sh.glsl.find("#define RS_USE_RECORDS") == std::string::npos) continue;
+    ++recording;
+    EXPECT_NE(sh.glsl.find("#extension GL_EXT_buffer_reference : require"), std::string::npos) << sh.name;
+    EXPECT_NE(sh.glsl.find("layout(buffer_reference"), std::string::npos) << sh.name;
+    EXPECT_NE(sh.glsl.find("RsRecordWords rs_records_ref;"), std::string::npos) << sh.name;
+  }
+  EXPECT_EQ(recording, static_cast<int>(shaders.size()));
+}
+
 TEST(GenerateGlslMinimal, NothingThePlanDoesNotName) {
   Case c;
   c.name = "test/minimal";

@@ -446,6 +446,35 @@ TEST(VulkanDevice, RecursionBeyondTheDeviceIsNotSupported) {
   EXPECT_TRUE(backend->close().empty());
 }
 
+// A 1024 x 1024 launch needs 160 MiB of records, more than lavapipe's
+// maxStorageBufferRange (128 MiB): the records are reached by device address,
+// so the launch runs without a validation error and the last ray is recorded.
+TEST(VulkanDevice, RecordsBeyondMaxStorageBufferRange) {
+  SKIP_WITHOUT_RT_DEVICE();
+  auto backend = makeBackend();
+  ASSERT_TRUE(backend);
+  Case c = triangleCase();
+  c.rays.width = 1024;
+  c.rays.height = 1024;
+  c.rays.rays.assign(1024u * 1024u, downRay(0.5f, -0.5f));
+  c.rays.rays.back() = downRay(-3, 0);  // the last ray misses
+  c.outputs.images.clear();
+  const uint64_t bytes = uint64_t(1024) * 1024 * recordWords() * 4;
+  EXPECT_GT(bytes, uint64_t(128) << 20);
+  Results r = backend->run(c, derivePlan(c));
+  ASSERT_EQ(r.status, "ok");
+  EXPECT_TRUE(r.validation_messages.empty()) << r.validation_messages.front();
+  ASSERT_EQ(r.records.size(), 1024u * 1024u * recordWords());
+  EXPECT_EQ(field(r, 0, "hit"), 1u);
+  EXPECT_EQ(field(r, 0, "primitive_id"), 1u);
+  EXPECT_EQ(field(r, 1024u * 1024u - 2u, "hit"), 1u);
+  EXPECT_EQ(field(r, 1024u * 1024u - 2u, "primitive_id"), 1u);
+  EXPECT_EQ(field(r, 1024u * 1024u - 1u, "hit"), 0u);
+  EXPECT_EQ(r.counters["miss"], 1u);
+  EXPECT_EQ(r.counters["closesthit"], 1024u * 1024u - 1u);
+  EXPECT_TRUE(backend->close().empty());
+}
+
 // Every case of cases/ runs on one reused device: no crash, no validation
 // error, records and counters of the planned sizes.
 TEST(VulkanDevice, EveryCaseFileRunsCleanly) {

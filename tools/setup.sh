@@ -16,6 +16,7 @@ PACKAGES=(
   libopenimageio-dev openimageio-tools
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
+  chromium
 )
 # Packages that must come from bookworm-backports (lavapipe with ray tracing).
 BACKPORT_PACKAGES=(mesa-vulkan-drivers)

@@ -1,3 +1,5 @@
+#include <fnmatch.h>
+
 #include <chrono>
 #include <cstdio>
 #include <ctime>
@@ -8,14 +10,15 @@
 #include "case/parse_case.h"
 #include "cli/case_discovery.h"
 #include "cli/commands.h"
-#include "cli/failing_rays.h"
+#include "cli/device_child.h"
+#include "cli/judge_case.h"
+#include "fault/planted_fault.h"
 #include "compare/compare_results.h"
 #include "model/model_backend.h"
 #include "plan/plan.h"
 #include "report/rule_catalog.h"
 #include "report/run_summary.h"
 #include "report/write_reports.h"
-#include "results/image_files.h"
 #include "results/results_io.h"
 #include "vulkan/vulkan_backend.h"
 
@@ -51,56 +54,61 @@ std::string unknownRules(const Case& c, const std::vector<Rule>& catalog) {
   return unknown;
 }
 
-// Runs one parsed case on the selected backends and compares.
+// Runs one parsed case on the selected backends and compares. The model runs
+// first (a planted fault chooses its rays by the model's answer), each bundle
+// is written as soon as it exists.
 CaseOutcome runOne(const Case& c, const RunOptions& opt, VulkanBackend* backend, const std::string& backend_error) {
-  CaseOutcome out;
-  out.name = c.name;
-  out.rules = c.rules;
   const Plan plan = derivePlan(c);
   const std::string dir = opt.out + "/" + c.name;
   std::error_code ec;
   std::filesystem::remove_all(dir, ec);  // no stale bundle from an earlier run
   Results device, model;
   const bool want_device = !opt.no_device, want_model = !opt.no_model;
-  if (want_device) {
-    if (backend) {
-      device = backend->run(c, plan);
-    } else {
-      device.backend = "vulkan";
-      device.status = "NotSupported: " + backend_error;
-    }
-    device.case_name = c.name;
-    out.device_seconds = device.seconds;
-    const std::string err = writeResults(device, dir + "/device", plan.record_fields);
-    if (!err.empty()) std::fprintf(stderr, "%s\n", err.c_str());
-  }
   if (want_model) {
     ModelOptions mopt;
     mopt.tier = parseModelTier(opt.model_tier);
     mopt.threads = opt.threads;
     model = runOnModel(c, plan, mopt);
     model.case_name = c.name;
-    out.model_seconds = model.seconds;
+    model.case_file = c.file;
     const std::string err = writeResults(model, dir + "/model", plan.record_fields);
     if (!err.empty()) std::fprintf(stderr, "%s\n", err.c_str());
   }
-  Verdict v;
+  std::string fault_note;
+  const std::string fault =
+      fnmatch(opt.plant_fault_in.c_str(), c.name.c_str(), 0) == 0 ? opt.plant_fault : std::string();
+  if (want_device) {
+    if (opt.no_isolation) {
+      device = runDeviceInProcess(c, plan, model, backend, backend_error, fault, dir + "/device",
+                                  &fault_note);
+    } else {
+      DeviceRun run;
+      run.vulkan.device_filter = opt.device;
+      run.vulkan.validation = !opt.no_validation;
+      run.timeout_seconds = opt.timeout;
+      run.fault = fault;
+      device = runDeviceIsolated(c, plan, model, run, dir + "/device", &fault_note);
+    }
+  }
+  CaseOutcome out;
   if (want_device && want_model) {
-    v = compareResults(c, plan, device, model);
-    for (const Image& di : device.images)
-      for (const Image& mi : model.images)
-        if (di.name == mi.name && di.texels != mi.texels) writeDiffImage(di, mi, dir + "/diff");
-    out.failing_rays = failingRays(v, plan, device, model);
+    out = judgeCase(c, plan, device, model, dir);
   } else {
     // One side only: its own status, validation errors included; never more than that.
     const Results& only = want_device ? device : model;
-    v = backendVerdict(only);
+    Verdict v = backendVerdict(only);
     for (const std::string& m : only.validation_messages) v.add({Status::Fail, "validation", m, {}, 0});
+    out.name = c.name;
+    out.rules = c.rules;
+    out.device_seconds = device.seconds;
+    out.model_seconds = model.seconds;
+    for (const ImageOutput& im : plan.images) out.images.push_back(im.name);
+    out.verdict = v;
   }
-  for (const ImageOutput& im : plan.images) out.images.push_back(im.name);
-  out.status = v.status;
-  out.headline = v.headline();
-  out.verdict = v;
+  if (!fault_note.empty()) out.verdict.add({Status::Pass, "planted-fault", fault_note, {}, 0});
+  out.status = out.verdict.status;
+  out.headline = out.verdict.headline();
+  out.device_name = device.device;
   return out;
 }
 
@@ -130,9 +138,22 @@ int runCases(const RunOptions& opt) {
   info.catalog = loadRuleCatalog(opt.rules_file, &catalog_error);
   if (!catalog_error.empty()) std::fprintf(stderr, "rayspec run: %s\n", catalog_error.c_str());
 
+  if (!opt.plant_fault.empty() && !isFaultName(opt.plant_fault)) {
+    std::fprintf(stderr, "rayspec run: unknown fault '%s'\n", opt.plant_fault.c_str());
+    return 2;
+  }
+  if (isProcessFault(opt.plant_fault) && opt.no_isolation) {
+    std::fprintf(stderr, "rayspec run: the fault '%s' needs the device in a child process (no --no-isolation)\n",
+                 opt.plant_fault.c_str());
+    return 2;
+  }
+  if (!opt.plant_fault.empty()) std::printf("Planted fault: %s (test only)\n", opt.plant_fault.c_str());
+
+  // Without isolation one device serves every case; with it each case's
+  // child process creates its own (the parent never initialises Vulkan).
   std::unique_ptr<VulkanBackend> backend;
   std::string backend_error;
-  if (!opt.no_device) {
+  if (!opt.no_device && opt.no_isolation) {
     VulkanOptions vopt;
     vopt.device_filter = opt.device;
     vopt.validation = validation;
@@ -146,12 +167,17 @@ int runCases(const RunOptions& opt) {
       info.device = "none";
       std::printf("Device: none (%s)\n", backend_error.c_str());
     }
+  } else if (!opt.no_device) {
+    info.validation = validation && validationLayerInstalled();
+    std::printf("Device: each case in its own process (timeout %g s)%s\n", opt.timeout,
+                info.validation ? ", validation layer on" : ", validation layer OFF");
   }
   if (!opt.no_model) std::printf("Model: embree, %s tier\n", opt.model_tier.c_str());
 
   RunSummary summary(files.size());
   std::vector<std::pair<std::string, std::vector<std::string>>> case_rules;
   for (const CaseFile& f : files) {
+    summary.starting(f.name);
     const auto start = std::chrono::steady_clock::now();
     ParseResult parsed = parseCaseFile(f.path, opt.cases_dir);
     CaseOutcome outcome;
@@ -171,7 +197,12 @@ int runCases(const RunOptions& opt) {
       case_rules.push_back({outcome.name, outcome.rules});
     }
     outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (info.device.empty() && !outcome.device_name.empty()) info.device = outcome.device_name;
     summary.add(outcome);
+    // The reports so far: a run cut short still leaves them.
+    info.coverage = ruleCoverage(info.catalog, case_rules);
+    const std::string err = writeReports(summary.outcomes(), info, opt.out);
+    if (!err.empty()) std::fprintf(stderr, "%s\n", err.c_str());
   }
   if (backend)
     for (const std::string& m : backend->close()) summary.addTeardownError(m);

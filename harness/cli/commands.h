@@ -26,6 +26,10 @@ struct RunOptions {
   bool no_validation = false;
   bool strict_validation = false;
   unsigned threads = 0;
+  double timeout = 120.0;        // seconds per case's device side (isolated)
+  bool no_isolation = false;     // run the device in this process (one VkDevice for all cases)
+  std::string plant_fault;       // test only: fault/planted_fault.h
+  std::string plant_fault_in = "*";  // only in cases whose name matches this glob
   std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
 };
 
@@ -36,8 +40,16 @@ struct ShowOptions {
   std::string cases_dir = RAYSPEC_SOURCE_DIR "/cases";
 };
 
+struct CompareOptions {
+  std::string a, b;              // results bundles or run folders
+  std::string out = "rayspec-compare";
+  std::string cases_dir = RAYSPEC_SOURCE_DIR "/cases";
+  std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
+};
+
 int runDevices(const DevicesOptions& opt);
 int runCases(const RunOptions& opt);
 int runShow(const ShowOptions& opt);
+int runCompare(const CompareOptions& opt);
 
 }  // namespace rayspec

@@ -27,6 +27,24 @@ int main(int argc, char** argv) {
   run->add_flag("--strict-validation", run_opt.strict_validation,
                 "Fail when the validation layer is not installed (ctest sets this)");
   run->add_option("--threads", run_opt.threads, "Model threads (0: all cores)")->capture_default_str();
+  run->add_option("--timeout", run_opt.timeout, "Seconds a case's device side may run before it is a Timeout")
+      ->capture_default_str();
+  run->add_flag("--no-isolation", run_opt.no_isolation,
+                "Run the device in this process (one VkDevice for every case; a crash ends the run)");
+  run->add_option("--plant-fault", run_opt.plant_fault,
+                  "Test only: corrupt the device's results in a known way (drop-miss, swap-primitive-id, "
+                  "chit-after-ignore, shift-t, duplicate-any-hit, leak-edge, crash, hang)");
+  run->add_option("--plant-fault-in", run_opt.plant_fault_in, "Test only: plant the fault only in cases matching this glob")
+      ->capture_default_str();
+
+  auto* compare = app.add_subcommand("compare", "Compare two saved results: bundles (device against model) or "
+                                                "run folders (A's device against B's device, cases by name)");
+  rayspec::CompareOptions compare_opt;
+  compare->add_option("A", compare_opt.a, "Results bundle or run folder (the one judged)")->required();
+  compare->add_option("B", compare_opt.b, "Results bundle or run folder (the reference)")->required();
+  compare->add_option("--out", compare_opt.out, "Folder for the reports")->capture_default_str();
+  compare->add_option("--cases", compare_opt.cases_dir, "Folder of case files (when a bundle's case file moved)")
+      ->capture_default_str();
 
   auto* show = app.add_subcommand("show", "Print a parsed case, its plan and its generated GLSL");
   rayspec::ShowOptions show_opt;
@@ -39,5 +57,6 @@ int main(int argc, char** argv) {
   if (*devices) return rayspec::runDevices(devices_opt);
   if (*run) return rayspec::runCases(run_opt);
   if (*show) return rayspec::runShow(show_opt);
+  if (*compare) return rayspec::runCompare(compare_opt);
   return 2;
 }

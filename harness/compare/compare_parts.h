@@ -10,6 +10,10 @@ namespace rayspec {
 void compareCounters(const Case& c, const Results& device, const Results& model, size_t ambiguous_rays,
                      Verdict& v);
 void compareRecords(const Case& c, const Plan& plan, const Results& device, const Results& model, Verdict& v);
+// R-AHIT-DUP: with every geometry NO_DUPLICATE_ANY_HIT (triangles), a ray on
+// which the model committed no hit ran any-hit once on every primitive it
+// crosses: the device may run it at most that often on the ray.
+void compareAnyHitRuns(const Case& c, const Results& device, const Results& model, Verdict& v);
 void compareImages(const Results& device, const Results& model, const std::set<uint32_t>& ambiguous_rays,
                    Verdict& v);
 

@@ -2,6 +2,7 @@
 #include <map>
 
 #include "compare/compare_parts.h"
+#include "compare/shared_edge.h"
 #include "compare/tolerances.h"
 #include "results/record_layout.h"
 
@@ -30,25 +31,31 @@ bool written(const uint32_t* rec, int field_index) { return (rec[kRecordWrittenM
 uint32_t fieldWord(const uint32_t* rec, const char* name) { return rec[findRecordField(name)->offset]; }
 
 // The device's answer for an ambiguous ray, checked against the legal set.
-void checkAmbiguous(const RayAmbiguity& a, const uint32_t* rec, FindingBuilder& wrong, FindingBuilder& leak) {
+void checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec, FindingBuilder& wrong,
+                    FindingBuilder& leak) {
   const bool device_hit = fieldWord(rec, "closest_hit_runs") > 0 ||
                           (written(rec, recordFieldIndex("hit")) && fieldWord(rec, "hit") == 1);
   const int prim = recordFieldIndex("primitive_id"), inst = recordFieldIndex("instance_id"),
             geom = recordFieldIndex("geometry_index");
   bool legal = false, miss_legal = false;
-  for (const Candidate& c : a.candidates) {
-    if (!c.hit) {
+  for (const Candidate& k : a.candidates) {
+    if (!k.hit) {
       miss_legal = true;
       continue;
     }
     if (!device_hit) continue;
-    const bool same = (!written(rec, prim) || fieldWord(rec, "primitive_id") == c.primitive) &&
-                      (!written(rec, inst) || fieldWord(rec, "instance_id") == c.instance) &&
-                      (!written(rec, geom) || fieldWord(rec, "geometry_index") == c.geometry);
+    const bool same = (!written(rec, prim) || fieldWord(rec, "primitive_id") == k.primitive) &&
+                      (!written(rec, inst) || fieldWord(rec, "instance_id") == k.instance) &&
+                      (!written(rec, geom) || fieldWord(rec, "geometry_index") == k.geometry);
     legal = legal || same;
   }
   if (!device_hit) {
-    if (!miss_legal) leak.addRay(a.ray);
+    // A miss where triangles share the crossed edge or close a fan around the
+    // crossed vertex is a leak (R-WATERTIGHT, a "should"), even when no
+    // "must" rule forbids it; so is a miss no rule allows.
+    // Through the outer border of a mesh only, a miss is always legal.
+    const bool shared = crossesSharedEdge(c, a);
+    if (shared || (!miss_legal && !crossesBorderOnly(c, a))) leak.addRay(a.ray);
     return;
   }
   if (!legal) wrong.addRay(a.ray);
@@ -57,7 +64,6 @@ void checkAmbiguous(const RayAmbiguity& a, const uint32_t* rec, FindingBuilder& 
 }  // namespace
 
 void compareRecords(const Case& c, const Plan& plan, const Results& device, const Results& model, Verdict& v) {
-  (void)c;
   const uint32_t words = recordWords();
   const size_t rays = device.records.size() / words;
   std::map<uint32_t, const RayAmbiguity*> ambiguous;
@@ -80,7 +86,7 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
     const uint32_t* m = &model.records[i * words];
     const uint32_t ray = static_cast<uint32_t>(i);
     if (const auto it = ambiguous.find(ray); it != ambiguous.end()) {
-      checkAmbiguous(*it->second, d, wrong, leak);
+      checkAmbiguous(c, *it->second, d, wrong, leak);
       continue;
     }
     for (const RecordField* f : fields) {

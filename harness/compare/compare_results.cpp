@@ -47,6 +47,7 @@ Verdict compareResults(const Case& c, const Plan& plan, const Results& device, c
   for (const RayAmbiguity& a : model.ambiguous) ambiguous.insert(a.ray);
   compareCounters(c, device, model, ambiguous.size(), v);
   compareRecords(c, plan, device, model, v);
+  compareAnyHitRuns(c, device, model, v);
   compareImages(device, model, ambiguous, v);
   return v;
 }

@@ -8,6 +8,15 @@
 //   informational  counted in any-hit or intersection: depends on traversal
 //                  order and duplicate invocations (R-ORDER-UNSPEC, R-AHIT-DUP,
 //                  R-ISECT-MULTI), reported, never failed.
+//
+// Modes are derived from the case (which stage counts), never declared in it:
+// every counter a raygen, miss, closest-hit or callable counts is exact, every
+// counter an any-hit or intersection counts is informational. The bounds the
+// specification does give for any-hit are checked per ray instead, from the
+// automatic any_hit_runs field (compare_any_hit.cpp): under
+// NO_DUPLICATE_ANY_HIT_INVOCATION (every geometry triangles with the flag), a
+// ray on which the model committed no hit ran any-hit once per crossed
+// primitive, and the device may run it at most that often (R-AHIT-DUP).
 #pragma once
 
 #include <map>

@@ -13,7 +13,8 @@ namespace rayspec {
 
 constexpr uint32_t kBindingTlas = 0;      // accelerationStructureEXT
 constexpr uint32_t kBindingRays = 1;      // readonly buffer: uint words, kRayWords per ray
-constexpr uint32_t kBindingRecords = 2;   // buffer: uint words, recordWords() per ray
+constexpr uint32_t kBindingRecords = 2;   // buffer: the device address (uint64) of the record
+                                          // words, recordWords() per ray (GL_EXT_buffer_reference)
 constexpr uint32_t kBindingCounters = 3;  // buffer: uint counters[plan.counters.size()]
 constexpr uint32_t kBindingScene = 4;     // readonly buffer: scene data for intersection programs
 constexpr uint32_t kBindingFirstImage = 5;  // one storage image per plan.images entry

@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "model/model_machine.h"
+#include "model/model_program.h"
 #include "model/model_scene.h"
 #include "results/record_layout.h"
 
@@ -99,13 +100,23 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
     return r;
   }
   try {
+    const CPipeline programs = compilePipeline(c, plan);
     ModelScene scene;
-    buildModelScene(scene, c, opt.tier, needsCandidates(c, plan, opt.tier));
+    // Per-primitive triangles are read by candidates, own tests, or the
+    // facing of a direct hit when a program reads hit_kind.
+    buildModelScene(scene, c, opt.tier, needsCandidates(c, plan, opt.tier), programs.reads(kBiHitKind));
     ModelShared shared;
     shared.c = &c;
     shared.plan = &plan;
     shared.scene = &scene;
+    shared.programs = &programs;
     shared.direct = !scene.filters && !hasOwnTriangles(scene);
+    shared.need_facing = programs.reads(kBiHitKind);
+    shared.raygen_traces_launch_ray =
+        programs.raygen.size() == 1 && programs.raygen[0].kind == Stmt::Kind::Trace &&
+        std::none_of(programs.raygen[0].has.begin(), programs.raygen[0].has.end(), [](bool b) { return b; });
+    shared.need_object_ray =
+        programs.reads(kBiObjectOrigin) || programs.reads(kBiObjectDirection) || programs.reads_sphere;
     if (plan.records) r.records.assign(n * recordWords(), 0);
     uint32_t* records = plan.records ? r.records.data() : nullptr;
 
@@ -120,7 +131,7 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
         const size_t begin = next.fetch_add(kBlock);
         if (begin >= n) break;
         const size_t end = std::min(n, begin + kBlock);
-        for (size_t i = begin; i < end; ++i) m.runRay(static_cast<uint32_t>(i));
+        m.runRays(static_cast<uint32_t>(begin), static_cast<uint32_t>(end));
       }
     };
     if (threads == 1) {

@@ -42,47 +42,9 @@ Machine::Machine(const ModelShared& shared, uint32_t* records) : sh_(shared), re
   for (int k = 0; k < 6; ++k) runs_offset_[k] = findRecordField(runs[k])->offset;
 }
 
-void Machine::bumpRuns(int which) {
-  if (rec_) rec_[runs_offset_[which]] += 1;
-}
-
-namespace {
-const char* const kBuiltinNames[] = {
-    "launch_id_x", "launch_id_y", "launch_size_x", "launch_size_y", "primitive_id", "instance_id",
-    "instance_custom_index", "geometry_index", "hit_kind", "hit_t", "hit", "barycentrics",
-    "aabb_min", "aabb_max", "object_ray_origin", "object_ray_direction", "ray_tmin", "ray_tmax",
-    "incoming_ray_flags", "world_ray_origin", "world_ray_direction", "hit_position",
-    "payload.color", "payload.value", "depth", "child.color", "child.value", "call.position",
-    "call.normal", "call.color", "call.value", "callee.color", "callee.value"};
-enum IdKind { kIdBuiltin = 1, kIdField = 2, kIdCounter = 3 };
-}  // namespace
-
-// Names resolved once per address (the case outlives the run), so the
-// interpreter compares no strings on the hot path.
-int Machine::cachedId(const std::string* key, int kind) {
-  IdSlot& slot = id_cache_[(reinterpret_cast<uintptr_t>(key) >> 3) & (id_cache_.size() - 1)];
-  if (slot.key == key && slot.kind == kind) return slot.id;
-  int id = -1;
-  if (kind == kIdBuiltin) {
-    for (size_t i = 0; i < sizeof(kBuiltinNames) / sizeof(kBuiltinNames[0]); ++i)
-      if (*key == kBuiltinNames[i]) id = static_cast<int>(i);
-  } else if (kind == kIdField) {
-    id = recordFieldIndex(*key);
-  } else {
-    const auto& names = sh_.plan->counters;
-    const auto it = std::find(names.begin(), names.end(), *key);
-    if (it != names.end()) id = static_cast<int>(it - names.begin());
-  }
-  slot = {key, kind, id};
-  return id;
-}
-
-void Machine::record(const std::string& field, const Val& v, ValueType t) {
-  if (!rec_) return;
-  const int idx = cachedId(&field, kIdField);
-  if (idx < 0) return;
+void Machine::record(int idx, const Val& v, ValueType t) {
+  if (!rec_ || idx < 0) return;
   const RecordField& f = recordFields()[idx];
-  if (f.automatic) return;
   if (f.type == FieldType::Uint) {
     rec_[f.offset] = t == ValueType::Float ? static_cast<uint32_t>(v.f[0]) : v.u;
   } else {
@@ -92,7 +54,7 @@ void Machine::record(const std::string& field, const Val& v, ValueType t) {
   rec_[kRecordWrittenMaskWord] |= 1u << idx;
 }
 
-Val Machine::builtin(const std::string& n, StageEnv& env) {
+Val Machine::builtin(const CExpr& e, StageEnv& env) {
   static const HitView kNone;
   static const TraceRay kNoRay;
   static const Payload kNoPayload;
@@ -101,146 +63,155 @@ Val Machine::builtin(const std::string& n, StageEnv& env) {
   const TraceRay* r = env.ray ? env.ray : &kNoRay;
   const Payload* pl = env.payload ? env.payload : &kNoPayload;
   const CallData* cd = env.call ? env.call : &kNoCall;
-  switch (cachedId(&n, kIdBuiltin)) {
-    case 0: return fromUint(x_);
-    case 1: return fromUint(y_);
-    case 2: return fromUint(sh_.c->rays.width);
-    case 3: return fromUint(sh_.c->rays.height);
-    case 4: return fromUint(hv->primitive);
-    case 5: return fromUint(hv->instance);
-    case 6: return fromUint(hv->custom_index);
-    case 7: return fromUint(hv->geometry);
-    case 8: return fromUint(hv->hit_kind);
-    case 9: return fromFloat(hv->t);
-    case 10: return fromUint(env.stage == Stage::ClosestHit ? 1u : 0u);
-    case 11: { Val v; v.f = {hv->b1, hv->b2, 0, 0}; return v; }
-    case 12: return fromVec3(hv->aabb_min);
-    case 13: return fromVec3(hv->aabb_max);
-    case 14: return fromVec3(hv->object_origin);
-    case 15: return fromVec3(hv->object_direction);
-    case 16: return fromFloat(r->tmin);
-    case 17: return fromFloat(env.tmax_view);
-    case 18: return fromUint(r->flags);
-    case 19: return fromVec3(r->origin);
-    case 20: return fromVec3(r->direction);
-    case 21: {
+  switch (e.builtin) {
+    case kBiLaunchX: return fromUint(x_);
+    case kBiLaunchY: return fromUint(y_);
+    case kBiLaunchW: return fromUint(sh_.c->rays.width);
+    case kBiLaunchH: return fromUint(sh_.c->rays.height);
+    case kBiPrimitive: return fromUint(hv->primitive);
+    case kBiInstance: return fromUint(hv->instance);
+    case kBiCustomIndex: return fromUint(hv->custom_index);
+    case kBiGeometry: return fromUint(hv->geometry);
+    case kBiHitKind: return fromUint(hv->hit_kind);
+    case kBiHitT: return fromFloat(hv->t);
+    case kBiHit: return fromUint(env.stage == Stage::ClosestHit ? 1u : 0u);
+    case kBiBarycentrics: { Val v; v.f = {hv->b1, hv->b2, 0, 0}; return v; }
+    case kBiAabbMin: return fromVec3(hv->aabb_min);
+    case kBiAabbMax: return fromVec3(hv->aabb_max);
+    case kBiObjectOrigin: return fromVec3(hv->object_origin);
+    case kBiObjectDirection: return fromVec3(hv->object_direction);
+    case kBiTmin: return fromFloat(r->tmin);
+    case kBiTmax: return fromFloat(env.tmax_view);
+    case kBiFlags: return fromUint(r->flags);
+    case kBiWorldOrigin: return fromVec3(r->origin);
+    case kBiWorldDirection: return fromVec3(r->direction);
+    case kBiHitPosition: {
       Vec3 p;
       for (int k = 0; k < 3; ++k) p[k] = r->origin[k] + hv->t * r->direction[k];
       return fromVec3(p);
     }
-    case 22: return fromVec4(pl->color);
-    case 23: return fromUint(pl->value);
-    case 24: return fromUint(env.depth);
-    case 25: return fromVec4(env.child.color);
-    case 26: return fromUint(env.child.value);
-    case 27: return fromVec3(cd->position);
-    case 28: return fromVec3(cd->normal);
-    case 29: return fromVec4(cd->color);
-    case 30: return fromUint(cd->value);
-    case 31: return fromVec4(env.callee.color);
-    case 32: return fromUint(env.callee.value);
+    case kBiPayloadColor: return fromVec4(pl->color);
+    case kBiPayloadValue: return fromUint(pl->value);
+    case kBiDepth: return fromUint(env.depth);
+    case kBiChildColor: return fromVec4(env.child.color);
+    case kBiChildValue: return fromUint(env.child.value);
+    case kBiCallPosition: return fromVec3(cd->position);
+    case kBiCallNormal: return fromVec3(cd->normal);
+    case kBiCallColor: return fromVec4(cd->color);
+    case kBiCallValue: return fromUint(cd->value);
+    case kBiCalleeColor: return fromVec4(env.callee.color);
+    case kBiCalleeValue: return fromUint(env.callee.value);
     default: break;
   }
-  if (error.empty()) error = "model: unknown built-in '" + n + "'";
+  if (error.empty()) error = "model: unknown built-in '" + (e.src ? e.src->name : std::string("?")) + "'";
   return Val{};
 }
 
-Val Machine::eval(const Expr& e, StageEnv& env) {
+Val Machine::eval(const CExpr& e, StageEnv& env) {
   switch (e.kind) {
-    case Expr::Kind::Literal: {
-      Val v;
-      if (e.type == ValueType::Uint) v.u = static_cast<uint32_t>(e.literal.empty() ? 0 : e.literal[0]);
-      else if (e.type == ValueType::Bool) v.b = !e.literal.empty() && e.literal[0] != 0;
-      else
-        for (size_t k = 0; k < e.literal.size() && k < 4; ++k) v.f[k] = static_cast<float>(e.literal[k]);
-      return v;
-    }
-    case Expr::Kind::Builtin: return builtin(e.name, env);
+    case Expr::Kind::Literal: return e.literal;
+    case Expr::Kind::Builtin: return builtin(e, env);
     case Expr::Kind::Op: return op(e, env);
   }
   return Val{};
 }
 
-Val Machine::op(const Expr& e, StageEnv& env) {
-  const std::string& n = e.name;
-  if (n == "sphere_hit" || n == "sphere_near" || n == "sphere_far") {
-    static const HitView kNone;
-    const HitView* hv = env.hit ? env.hit : &kNone;
-    SphereRoots s = sphereRoots(hv->aabb_min, hv->aabb_max, hv->object_origin, hv->object_direction);
-    Val v;
-    if (n == "sphere_hit") v.b = s.hit;
-    else v.f[0] = n == "sphere_near" ? s.t_near : s.t_far;
-    return v;
-  }
-  if (n == "shader_record_uint" || n == "shader_record_float") {
-    const uint32_t i = e.args.empty() ? 0 : static_cast<uint32_t>(e.args[0].literal.empty() ? 0 : e.args[0].literal[0]);
-    const uint32_t w = env.record_data && i < env.record_data->size() ? (*env.record_data)[i] : 0u;
-    return n == "shader_record_uint" ? fromUint(w) : fromFloat(bitsf(w));
-  }
-  if (n == "and" || n == "or") {
-    const bool isAnd = n == "and";
-    for (const Expr& a : e.args) {
-      const bool b = eval(a, env).b;
-      if (isAnd && !b) { Val r; r.b = false; return r; }
-      if (!isAnd && b) { Val r; r.b = true; return r; }
-    }
-    Val r; r.b = isAnd; return r;
-  }
-  std::vector<Val> a;
-  a.reserve(e.args.size());
-  for (const Expr& x : e.args) a.push_back(eval(x, env));
-  auto type = [&](size_t i) { return e.args[i].type; };
+Val Machine::op(const CExpr& e, StageEnv& env) {
+  const OpCode n = e.op;
   Val r;
-  if (n == "not") { r.b = !a[0].b; return r; }
-  if (n == "odd") { r.b = (a[0].u & 1u) != 0; return r; }
-  if (n == "even") { r.b = (a[0].u & 1u) == 0; return r; }
-  if (n == "float") return fromFloat(static_cast<float>(a[0].u));
-  if (n == "uint") {
-    const float f = a[0].f[0];
-    return fromUint(f <= 0 || std::isnan(f) ? 0u : f >= 4294967295.0f ? 0xFFFFFFFFu : static_cast<uint32_t>(f));
+  switch (n) {
+    case OpCode::SphereHit:
+    case OpCode::SphereNear:
+    case OpCode::SphereFar: {
+      static const HitView kNone;
+      const HitView* hv = env.hit ? env.hit : &kNone;
+      SphereRoots s = sphereRoots(hv->aabb_min, hv->aabb_max, hv->object_origin, hv->object_direction);
+      if (n == OpCode::SphereHit) r.b = s.hit;
+      else r.f[0] = n == OpCode::SphereNear ? s.t_near : s.t_far;
+      return r;
+    }
+    case OpCode::RecordUint:
+    case OpCode::RecordFloat: {
+      const uint32_t i = e.index;
+      const uint32_t w = env.record_data && i < env.record_data->size() ? (*env.record_data)[i] : 0u;
+      return n == OpCode::RecordUint ? fromUint(w) : fromFloat(bitsf(w));
+    }
+    case OpCode::And:
+    case OpCode::Or: {
+      const bool isAnd = n == OpCode::And;
+      for (const CExpr& a : e.args) {
+        const bool b = eval(a, env).b;
+        if (isAnd && !b) { r.b = false; return r; }
+        if (!isAnd && b) { r.b = true; return r; }
+      }
+      r.b = isAnd;
+      return r;
+    }
+    case OpCode::Unknown:
+      if (error.empty()) error = "model: unknown op '" + (e.src ? e.src->name : std::string("?")) + "'";
+      return r;
+    default: break;
   }
-  if (n == "vec2" || n == "vec3" || n == "vec4") {
-    const int cnt = n == "vec2" ? 2 : n == "vec3" ? 3 : 4;
-    for (int k = 0; k < cnt; ++k) r.f[k] = a.size() == 1 ? a[0].f[0] : (k < static_cast<int>(a.size()) ? a[k].f[0] : 0.0f);
-    return r;
+  // Every remaining op takes at most 4 arguments (vec4).
+  Val a[4];
+  const size_t na = std::min<size_t>(e.args.size(), 4);
+  for (size_t i = 0; i < na; ++i) a[i] = eval(e.args[i], env);
+  auto type = [&](size_t i) { return e.args[i].type; };
+  switch (n) {
+    case OpCode::Not: r.b = !a[0].b; return r;
+    case OpCode::Odd: r.b = (a[0].u & 1u) != 0; return r;
+    case OpCode::Even: r.b = (a[0].u & 1u) == 0; return r;
+    case OpCode::ToFloat: return fromFloat(static_cast<float>(a[0].u));
+    case OpCode::ToUint: {
+      const float f = a[0].f[0];
+      return fromUint(f <= 0 || std::isnan(f) ? 0u : f >= 4294967295.0f ? 0xFFFFFFFFu : static_cast<uint32_t>(f));
+    }
+    case OpCode::Vec: {
+      const int cnt = static_cast<int>(e.index);
+      for (int k = 0; k < cnt; ++k) r.f[k] = na == 1 ? a[0].f[0] : (k < static_cast<int>(na) ? a[k].f[0] : 0.0f);
+      return r;
+    }
+    case OpCode::X: return fromFloat(a[0].f[0]);
+    case OpCode::Y: return fromFloat(a[0].f[1]);
+    case OpCode::Z: return fromFloat(a[0].f[2]);
+    case OpCode::W: return fromFloat(a[0].f[3]);
+    case OpCode::Dot:
+    case OpCode::Length:
+    case OpCode::Normalize: {
+      const int cnt = componentCount(type(0));
+      float d = 0;
+      const Val& b = n == OpCode::Dot ? a[1] : a[0];
+      for (int k = 0; k < cnt; ++k) d = k == 0 ? a[0].f[0] * b.f[0] : d + a[0].f[k] * b.f[k];
+      if (n == OpCode::Dot) return fromFloat(d);
+      const float len = std::sqrt(d);
+      if (n == OpCode::Length) return fromFloat(len);
+      for (int k = 0; k < cnt; ++k) r.f[k] = a[0].f[k] / len;
+      return r;
+    }
+    case OpCode::Eq: case OpCode::Ne: case OpCode::Lt: case OpCode::Le: case OpCode::Gt: case OpCode::Ge: {
+      const bool u = type(0) == ValueType::Uint && type(1) == ValueType::Uint;
+      const double x = u ? a[0].u : static_cast<double>(type(0) == ValueType::Uint ? a[0].u : a[0].f[0]);
+      const double y = u ? a[1].u : static_cast<double>(type(1) == ValueType::Uint ? a[1].u : a[1].f[0]);
+      if (n == OpCode::Eq) r.b = x == y;
+      else if (n == OpCode::Ne) r.b = x != y;
+      else if (n == OpCode::Lt) r.b = x < y;
+      else if (n == OpCode::Le) r.b = x <= y;
+      else if (n == OpCode::Gt) r.b = x > y;
+      else r.b = x >= y;
+      return r;
+    }
+    case OpCode::Mod: r.u = a[1].u == 0 ? 0 : a[0].u % a[1].u; return r;
+    default: break;
   }
-  if (n == "x") return fromFloat(a[0].f[0]);
-  if (n == "y") return fromFloat(a[0].f[1]);
-  if (n == "z") return fromFloat(a[0].f[2]);
-  if (n == "w") return fromFloat(a[0].f[3]);
-  if (n == "dot" || n == "length" || n == "normalize") {
-    const int cnt = componentCount(type(0));
-    float d = 0;
-    const Val& b = n == "dot" ? a[1] : a[0];
-    for (int k = 0; k < cnt; ++k) d = k == 0 ? a[0].f[0] * b.f[0] : d + a[0].f[k] * b.f[k];
-    if (n == "dot") return fromFloat(d);
-    const float len = std::sqrt(d);
-    if (n == "length") return fromFloat(len);
-    for (int k = 0; k < cnt; ++k) r.f[k] = a[0].f[k] / len;
-    return r;
-  }
-  if (n == "eq" || n == "ne" || n == "lt" || n == "le" || n == "gt" || n == "ge") {
-    const bool u = type(0) == ValueType::Uint && type(1) == ValueType::Uint;
-    const double x = u ? a[0].u : static_cast<double>(type(0) == ValueType::Uint ? a[0].u : a[0].f[0]);
-    const double y = u ? a[1].u : static_cast<double>(type(1) == ValueType::Uint ? a[1].u : a[1].f[0]);
-    if (n == "eq") r.b = x == y;
-    else if (n == "ne") r.b = x != y;
-    else if (n == "lt") r.b = x < y;
-    else if (n == "le") r.b = x <= y;
-    else if (n == "gt") r.b = x > y;
-    else r.b = x >= y;
-    return r;
-  }
-  if (n == "mod") { r.u = a[1].u == 0 ? 0 : a[0].u % a[1].u; return r; }
   // add sub mul div min max: Uint x Uint, or float-wise with scalar broadcast.
   if (e.type == ValueType::Uint) {
     const uint32_t x = a[0].u, y = a[1].u;
-    if (n == "add") r.u = x + y;
-    else if (n == "sub") r.u = x - y;
-    else if (n == "mul") r.u = x * y;
-    else if (n == "div") r.u = y == 0 ? 0xFFFFFFFFu : x / y;
-    else if (n == "min") r.u = std::min(x, y);
-    else if (n == "max") r.u = std::max(x, y);
+    if (n == OpCode::Add) r.u = x + y;
+    else if (n == OpCode::Sub) r.u = x - y;
+    else if (n == OpCode::Mul) r.u = x * y;
+    else if (n == OpCode::Div) r.u = y == 0 ? 0xFFFFFFFFu : x / y;
+    else if (n == OpCode::Min) r.u = std::min(x, y);
+    else if (n == OpCode::Max) r.u = std::max(x, y);
     return r;
   }
   const int cnt = componentCount(e.type);
@@ -250,44 +221,43 @@ Val Machine::op(const Expr& e, StageEnv& env) {
   };
   for (int k = 0; k < cnt; ++k) {
     const float x = comp(0, k), y = comp(1, k);
-    if (n == "add") r.f[k] = x + y;
-    else if (n == "sub") r.f[k] = x - y;
-    else if (n == "mul") r.f[k] = x * y;
-    else if (n == "div") r.f[k] = x / y;
-    else if (n == "min") r.f[k] = std::fmin(x, y);
-    else if (n == "max") r.f[k] = std::fmax(x, y);
+    if (n == OpCode::Add) r.f[k] = x + y;
+    else if (n == OpCode::Sub) r.f[k] = x - y;
+    else if (n == OpCode::Mul) r.f[k] = x * y;
+    else if (n == OpCode::Div) r.f[k] = x / y;
+    else if (n == OpCode::Min) r.f[k] = std::fmin(x, y);
+    else if (n == OpCode::Max) r.f[k] = std::fmax(x, y);
   }
   return r;
 }
 
-Flow Machine::exec(const Program& p, StageEnv& env) {
-  for (const Stmt& s : p) {
+Flow Machine::exec(const CProgram& p, StageEnv& env) {
+  for (const CStmt& s : p) {
     const Flow f = execStmt(s, env);
     if (f != Flow::Continue) return f;
   }
   return Flow::Continue;
 }
 
-Flow Machine::execStmt(const Stmt& s, StageEnv& env) {
+Flow Machine::execStmt(const CStmt& s, StageEnv& env) {
   switch (s.kind) {
-    case Stmt::Kind::Count: {
-      const int k = cachedId(&s.counter, kIdCounter);
-      if (k >= 0) counters[k] += 1;
+    case Stmt::Kind::Count:
+      if (s.counter >= 0) counters[s.counter] += 1;
       return Flow::Continue;
-    }
     case Stmt::Kind::Record:
-      for (const auto& [field, expr] : s.assigns) record(field, eval(expr, env), expr.type);
+      if (!rec_) return Flow::Continue;
+      for (const CAssign& a : s.assigns) record(a.field, eval(a.value, env), a.value.type);
       return Flow::Continue;
     case Stmt::Kind::SetPayload:
     case Stmt::Kind::SetCall:
-      for (const auto& [field, expr] : s.assigns) {
-        const Val v = eval(expr, env);
+      for (const CAssign& a : s.assigns) {
+        const Val v = eval(a.value, env);
         if (s.kind == Stmt::Kind::SetPayload && env.payload) {
-          if (field == "color") env.payload->color = v.f;
-          else if (field == "value") env.payload->value = v.u;
+          if (a.slot == Slot::Color) env.payload->color = v.f;
+          else if (a.slot == Slot::Value) env.payload->value = v.u;
         } else if (s.kind == Stmt::Kind::SetCall && env.call) {
-          if (field == "color") env.call->color = v.f;
-          else if (field == "value") env.call->value = v.u;
+          if (a.slot == Slot::Color) env.call->color = v.f;
+          else if (a.slot == Slot::Value) env.call->value = v.u;
         }
       }
       return Flow::Continue;
@@ -303,19 +273,18 @@ Flow Machine::execStmt(const Stmt& s, StageEnv& env) {
     }
     case Stmt::Kind::Call: {
       CallData d;
-      for (const auto& [field, expr] : s.assigns) {
-        const Val v = eval(expr, env);
-        if (field == "color") d.color = v.f;
-        else if (field == "value") d.value = v.u;
-        else if (field == "position") d.position = {v.f[0], v.f[1], v.f[2]};
-        else if (field == "normal") d.normal = {v.f[0], v.f[1], v.f[2]};
+      for (const CAssign& a : s.assigns) {
+        const Val v = eval(a.value, env);
+        if (a.slot == Slot::Color) d.color = v.f;
+        else if (a.slot == Slot::Value) d.value = v.u;
+        else if (a.slot == Slot::Position) d.position = {v.f[0], v.f[1], v.f[2]};
+        else if (a.slot == Slot::Normal) d.normal = {v.f[0], v.f[1], v.f[2]};
       }
       callCallable(eval(s.call_index, env).u, d, env.depth);
       env.callee = d;
       return Flow::Continue;
     }
     case Stmt::Kind::Trace: {
-      const TraceArgs& t = s.trace;
       const bool fromLaunch = env.stage == Stage::Raygen;
       TraceRay r;
       const Ray& base = fromLaunch ? sh_.c->rays.rays[index_] : sh_.c->rays.defaults;
@@ -328,24 +297,24 @@ Flow Machine::execStmt(const Stmt& s, StageEnv& env) {
       r.sbt_offset = base.sbt_offset;
       r.sbt_stride = base.sbt_stride;
       r.miss = base.miss;
-      auto v3 = [&](const std::vector<Expr>& x, Vec3& out) {
-        if (!x.empty()) { const Val v = eval(x[0], env); out = {v.f[0], v.f[1], v.f[2]}; }
+      auto v3 = [&](int k, Vec3& out) {
+        if (s.has[k]) { const Val v = eval(s.args[k], env); out = {v.f[0], v.f[1], v.f[2]}; }
       };
-      auto f1 = [&](const std::vector<Expr>& x, float& out) {
-        if (!x.empty()) { const Val v = eval(x[0], env); out = x[0].type == ValueType::Uint ? static_cast<float>(v.u) : v.f[0]; }
+      auto f1 = [&](int k, float& out) {
+        if (s.has[k]) { const Val v = eval(s.args[k], env); out = s.args[k].type == ValueType::Uint ? static_cast<float>(v.u) : v.f[0]; }
       };
-      auto u1 = [&](const std::vector<Expr>& x, uint32_t& out) {
-        if (!x.empty()) out = eval(x[0], env).u;
+      auto u1 = [&](int k, uint32_t& out) {
+        if (s.has[k]) out = eval(s.args[k], env).u;
       };
-      v3(t.origin, r.origin);
-      v3(t.direction, r.direction);
-      f1(t.tmin, r.tmin);
-      f1(t.tmax, r.tmax);
-      u1(t.flags, r.flags);
-      u1(t.cull_mask, r.cull_mask);
-      u1(t.sbt_offset, r.sbt_offset);
-      u1(t.sbt_stride, r.sbt_stride);
-      u1(t.miss, r.miss);
+      v3(CStmt::kOrigin, r.origin);
+      v3(CStmt::kDirection, r.direction);
+      f1(CStmt::kTmin, r.tmin);
+      f1(CStmt::kTmax, r.tmax);
+      u1(CStmt::kFlags, r.flags);
+      u1(CStmt::kCullMask, r.cull_mask);
+      u1(CStmt::kSbtOffset, r.sbt_offset);
+      u1(CStmt::kSbtStride, r.sbt_stride);
+      u1(CStmt::kMiss, r.miss);
       const uint32_t depth = env.stage == Stage::Raygen ? 1 : env.depth + 1;
       if (depth > std::max<uint32_t>(sh_.c->pipeline.max_recursion, 1)) {
         if (error.empty())
@@ -374,22 +343,42 @@ void Machine::callCallable(uint32_t index, CallData& data, uint32_t depth) {
   env.record_data = &rec.data;
   env.call = &data;
   env.depth = depth;
-  exec(sh_.c->pipeline.callables[*rec.group], env);
+  exec(sh_.programs->callables[*rec.group], env);
 }
 
-void Machine::runRay(uint32_t index) {
-  index_ = index;
-  x_ = index % sh_.c->rays.width;
-  y_ = index / sh_.c->rays.width;
-  rec_ = records_ ? records_ + static_cast<size_t>(index) * recordWords() : nullptr;
-  ray_ambiguous_ = false;
-  bumpRuns(kRunsRaygen);
+void Machine::runRays(uint32_t begin, uint32_t end) {
+  if (sh_.raygen_traces_launch_ray && sh_.direct) {
+    runLaunchRaysDirect(begin, end);
+    return;
+  }
+  const uint32_t width = sh_.c->rays.width;
+  x_ = begin % width;
+  y_ = begin / width;
+  const uint32_t words = recordWords();
+  const std::vector<Ray>& rays = sh_.c->rays.rays;
+  for (uint32_t i = begin; i < end; ++i) {
+    if (i + 8 < end) __builtin_prefetch(&rays[i + 8]);  // rays stream from memory
+    index_ = i;
+    rec_ = records_ ? records_ + static_cast<size_t>(i) * words : nullptr;
+    ray_ambiguous_ = false;
+    bumpRuns(kRunsRaygen);
+    if (sh_.raygen_traces_launch_ray) {
+      // Raygen is one `trace: {}` of this launch's ray: no stage environment needed.
+      trace(launchRay(rays[i]), 1);
+    } else {
+      runRaygen();
+    }
+    if (++x_ == width) { x_ = 0; ++y_; }
+  }
+}
+
+void Machine::runRaygen() {
   StageEnv env;
   env.stage = Stage::Raygen;
   env.record_data = &sh_.c->pipeline.raygen_data;
   Payload last;
   env.payload = &last;
-  exec(sh_.c->pipeline.raygen, env);
+  exec(sh_.programs->raygen, env);
 }
 
 }  // namespace rayspec

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "case/case.h"
+#include "model/model_program.h"
 #include "model/model_scene.h"
 #include "model/model_trace_context.h"
 #include "plan/plan.h"
@@ -28,17 +29,26 @@ struct CallData {
   uint32_t value = 0;
 };
 
-struct Val {
-  std::array<float, 4> f{};
-  uint32_t u = 0;
-  bool b = false;
-};
-
 struct TraceRay {
   Vec3 origin{}, direction{};
   float tmin = 0, tmax = 0;
   uint32_t flags = 0, cull_mask = 0xFF, sbt_offset = 0, sbt_stride = 1, miss = 0;
 };
+
+// The trace of a launch's own ray (`trace: {}` in raygen).
+inline TraceRay launchRay(const Ray& base) {
+  TraceRay r;
+  r.origin = base.origin;
+  r.direction = base.direction;
+  r.tmin = base.tmin;
+  r.tmax = base.tmax;
+  r.flags = base.flags;
+  r.cull_mask = base.cull_mask;
+  r.sbt_offset = base.sbt_offset;
+  r.sbt_stride = base.sbt_stride;
+  r.miss = base.miss;
+  return r;
+}
 
 // Built-ins of a hit or candidate.
 struct HitView {
@@ -49,6 +59,14 @@ struct HitView {
 };
 
 struct Traversal;
+
+// The hit a traversal committed.
+struct Committed {
+  bool valid = false;
+  double t = 0;
+  uint32_t instance = 0, geometry = 0, primitive = 0, kind = 0;
+  float b1 = 0, b2 = 0;
+};
 
 struct StageEnv {
   Stage stage = Stage::Raygen;
@@ -72,15 +90,20 @@ struct ModelShared {
   const Case* c = nullptr;
   const Plan* plan = nullptr;
   const ModelScene* scene = nullptr;
+  const CPipeline* programs = nullptr;  // compiled once per run
   bool direct = false;  // rtcIntersect1's own closest hit (no filters)
-  std::vector<int> counter_index_of_stmt_unused;
+  // Decided once per run from what the programs read: a direct hit needs its
+  // facing only for hit_kind, its object-space ray only for object_ray_*.
+  bool need_facing = true, need_object_ray = true;
+  bool raygen_traces_launch_ray = false;  // raygen is exactly `trace: {}`
 };
 
 class Machine {
  public:
   Machine(const ModelShared& shared, uint32_t* records);
-  // Runs raygen for launch index i (records for it start at records + i * words).
-  void runRay(uint32_t index);
+  // Runs raygen for launch indices [begin, end) (records for ray i start at
+  // records + i * words).
+  void runRays(uint32_t begin, uint32_t end);
 
   std::vector<uint64_t> counters;
   std::vector<RayAmbiguity> ambiguous;
@@ -88,16 +111,34 @@ class Machine {
 
  private:
   friend struct Traversal;
-  Val eval(const Expr& e, StageEnv& env);
-  Val builtin(const std::string& name, StageEnv& env);
-  Val op(const Expr& e, StageEnv& env);
-  Flow exec(const Program& p, StageEnv& env);
-  Flow execStmt(const Stmt& s, StageEnv& env);
-  void record(const std::string& field, const Val& v, ValueType t);
-  void bumpRuns(int which);  // kRuns* below
-  int cachedId(const std::string* key, int kind);  // builtin / field / counter index, by address
-  Payload trace(const TraceRay& r, uint32_t depth);
-  Flow report(const Stmt& s, StageEnv& env);  // model_trace.cpp
+  Val eval(const CExpr& e, StageEnv& env);
+  Val builtin(const CExpr& e, StageEnv& env);
+  Val op(const CExpr& e, StageEnv& env);
+  Flow exec(const CProgram& p, StageEnv& env);
+  Flow execStmt(const CStmt& s, StageEnv& env);
+  void record(int field, const Val& v, ValueType t);
+  void bumpRuns(int which) {  // kRuns* above
+    if (rec_) rec_[runs_offset_[which]] += 1;
+  }
+  Payload trace(const TraceRay& r, uint32_t depth);  // model_trace.cpp
+  Committed directHit(const TraceRay& r, uint32_t flags);
+  Committed traverse(const TraceRay& r, uint32_t flags, uint32_t depth, Payload& payload);
+  void shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Committed& best, Payload& payload);
+  void decide(Traversal& tr, const std::vector<ModelCandidate>& cands, const int8_t* force, Payload& payload);
+  std::vector<Committed> whatIf(const Traversal& actual, const std::vector<ModelCandidate>& cands,
+                                const std::vector<size_t>& unsure, const Payload& payloadIn);
+  void runRaygen();
+  // Raygen is `trace: {}` and traces take Embree's closest hit: the chunk's
+  // rays are traced first, then shaded (model_trace.cpp).
+  void runLaunchRaysDirect(uint32_t begin, uint32_t end);
+  void bump(const CountsOnly& k) {
+    if (k.counters.size() == 1) {
+      counters[k.counters[0]] += 1;
+      return;
+    }
+    for (int i : k.counters) counters[i] += 1;
+  }
+  Flow report(const CStmt& s, StageEnv& env);  // model_trace.cpp
   void callCallable(uint32_t index, CallData& data, uint32_t depth);
   const SbtRecord* hitRecord(uint32_t instance, uint32_t geometry, const TraceRay& r) const;
 
@@ -109,8 +150,6 @@ class Machine {
   std::vector<SbtRecord> default_miss_, default_hit_, default_callable_;
   std::vector<std::vector<ModelCandidate>> cand_pool_;
   uint32_t runs_offset_[6] = {};
-  struct IdSlot { const std::string* key = nullptr; int kind = 0; int id = -1; };
-  std::vector<IdSlot> id_cache_ = std::vector<IdSlot>(1024);
 };
 
 }  // namespace rayspec

@@ -148,6 +148,25 @@ void aabbIntersect(const RTCIntersectFunctionNArguments* args) {
   }
   if (t0 > t1 || t1 < tc->tmin || t0 > tc->tmax) return;
   ModelCandidate c;
+  if (g->tier == ModelTier::Exact) {
+    // Does the ray still cross the box shrunk by the device's error bound?
+    // If not, it only grazes a face (or passes just outside, within the slack).
+    double s0 = -INFINITY, s1 = INFINITY;
+    for (int k = 0; k < 3 && s0 <= s1; ++k) {
+      const double lo = a[k], hi = a[k + 3];
+      const double bound = kDeviceRelTolerance * std::max({std::fabs(lo), std::fabs(hi), std::fabs(o[k]), 1e-30}) +
+                           1e-6 * std::max({std::fabs(lo), std::fabs(hi), 1e-30});
+      if (d[k] == 0.0) {
+        if (o[k] < lo + bound || o[k] > hi - bound) s1 = -INFINITY;
+        continue;
+      }
+      double ta = (lo + bound - o[k]) / d[k], tb = (hi - bound - o[k]) / d[k];
+      if (ta > tb) std::swap(ta, tb);
+      s0 = std::max(s0, ta);
+      s1 = std::min(s1, tb);
+    }
+    c.near_face = !(s0 <= s1);
+  }
   c.aabb = true;
   c.t = std::max(t0, tc->tmin);
   c.instance = args->context->instID[0];
@@ -190,7 +209,7 @@ ModelScene::~ModelScene() {
   if (device) rtcReleaseDevice(device);
 }
 
-void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters) {
+void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters, bool keepTriangles) {
   s.tier = tier;
   s.filters = filters;
   s.device = rtcNewDevice(nullptr);
@@ -211,39 +230,69 @@ void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters)
       mg.tier = tier;
       if (g.kind == Geometry::Kind::Aabbs) {
         mg.aabbs = g.aabbs;
+        mg.count = static_cast<uint32_t>(g.aabbs.size());
         continue;
       }
       mb.triangles = true;
       const uint32_t n = g.primitiveCount();
-      mg.triangles.resize(n);
-      for (uint32_t p = 0; p < n; ++p)
-        for (int k = 0; k < 3; ++k) {
-          const uint32_t idx = g.indices.empty() ? p * 3 + k : g.indices[p * 3 + k];
-          Vec3 v = idx < g.vertices.size() ? g.vertices[idx] : Vec3{NAN, NAN, NAN};
-          mg.triangles[p][k] = g.transform ? applyTransform(*g.transform, v) : v;
-        }
+      mg.count = n;
+      // Without candidates, own tests or an unindexed buffer, no one reads the
+      // per-primitive triangles: skipped when every vertex is ordinary (no
+      // NaN, nothing Embree would drop) and every index is in range.
+      bool ordinary = !g.indices.empty() && g.indices.size() >= 3 * size_t{n};
+      for (size_t i = 0; ordinary && i < 3 * size_t{n}; ++i) ordinary = g.indices[i] < g.vertices.size();
+      for (size_t v = 0; ordinary && v < g.vertices.size(); ++v) {
+        const Vec3 x = g.transform ? applyTransform(*g.transform, g.vertices[v]) : g.vertices[v];
+        for (float f : x) ordinary = ordinary && !std::isnan(f) && std::fabs(f) <= kEmbreeLarge;
+      }
       mg.own_triangles = tier == ModelTier::Exact;
-      for (const auto& tri : mg.triangles)
-        if (needsOwnTriangleTest(tri)) mg.own_triangles = true;
+      if (keepTriangles || filters || !ordinary || mg.own_triangles) {
+        mg.triangles.resize(n);
+        for (uint32_t p = 0; p < n; ++p)
+          for (int k = 0; k < 3; ++k) {
+            const uint32_t idx = g.indices.empty() ? p * 3 + k : g.indices[p * 3 + k];
+            Vec3 v = idx < g.vertices.size() ? g.vertices[idx] : Vec3{NAN, NAN, NAN};
+            mg.triangles[p][k] = g.transform ? applyTransform(*g.transform, v) : v;
+          }
+        for (const auto& tri : mg.triangles)
+          if (needsOwnTriangleTest(tri)) mg.own_triangles = true;
+      }
     }
     mb.scene = rtcNewScene(s.device);
     rtcSetSceneFlags(mb.scene, sceneFlags);
     for (ModelGeometry& mg : mb.geometries) {
-      const uint32_t n = mg.kind == Geometry::Kind::Aabbs ? static_cast<uint32_t>(mg.aabbs.size())
-                                                          : static_cast<uint32_t>(mg.triangles.size());
+      const uint32_t n = mg.count;
       if (n == 0) continue;
       RTCGeometry geom;
       if (mg.kind == Geometry::Kind::Triangles && !mg.own_triangles) {
         geom = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                               RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * n));
-        auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0,
-                                                                  RTC_FORMAT_UINT3, 3 * sizeof(unsigned), n));
-        for (uint32_t p = 0; p < n; ++p)
-          for (int k = 0; k < 3; ++k) {
-            for (int a = 0; a < 3; ++a) vb[(p * 3 + k) * 3 + a] = mg.triangles[p][k][a];
-            ib[p * 3 + k] = p * 3 + k;
+        const Geometry& g = c.scene.blases[mg.blas].geometries[mg.index];
+        const bool indexed = !g.indices.empty() && g.indices.size() >= 3 * size_t{n} &&
+                             std::all_of(g.indices.begin(), g.indices.begin() + 3 * size_t{n},
+                                         [&](uint32_t i) { return i < g.vertices.size(); });
+        if (indexed) {
+          // The case's own vertex sharing (fewer vertices to build from).
+          const size_t nv = g.vertices.size();
+          auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                                 RTC_FORMAT_FLOAT3, 3 * sizeof(float), nv));
+          auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0,
+                                                                    RTC_FORMAT_UINT3, 3 * sizeof(unsigned), n));
+          for (size_t v = 0; v < nv; ++v) {
+            const Vec3 x = g.transform ? applyTransform(*g.transform, g.vertices[v]) : g.vertices[v];
+            for (int a = 0; a < 3; ++a) vb[v * 3 + a] = x[a];
           }
+          std::copy(g.indices.begin(), g.indices.begin() + 3 * size_t{n}, ib);
+        } else {
+          auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                                 RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * n));
+          auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0,
+                                                                    RTC_FORMAT_UINT3, 3 * sizeof(unsigned), n));
+          for (uint32_t p = 0; p < n; ++p)
+            for (int k = 0; k < 3; ++k) {
+              for (int a = 0; a < 3; ++a) vb[(p * 3 + k) * 3 + a] = mg.triangles[p][k][a];
+              ib[p * 3 + k] = p * 3 + k;
+            }
+        }
         rtcSetGeometryMask(geom, kMaskTriangles);
         if (filters) rtcSetGeometryIntersectFilterFunction(geom, triangleFilter);
       } else {

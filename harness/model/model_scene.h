@@ -23,6 +23,8 @@ struct ModelGeometry {
   uint32_t flags = 0;
   bool own_triangles = false;                  // user geometry with the model's test
   std::vector<std::array<Vec3, 3>> triangles;  // per primitive, geometry transform applied
+                                               // (may be left empty: see buildModelScene)
+  uint32_t count = 0;                          // primitives
   std::vector<std::array<float, 6>> aabbs;
   uint32_t blas = 0, index = 0;
   ModelTier tier = ModelTier::Exact;
@@ -62,7 +64,10 @@ constexpr unsigned kMaskTriangles = 0x100, kMaskAabbs = 0x200;
 
 // Builds the scene. `filters`: every triangle candidate goes to the model
 // (collect-then-process path); otherwise Embree's closest hit is used.
-void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters);
+// `keepTriangles`: fill ModelGeometry::triangles even where nothing but the
+// facing of a direct hit could read them (false: only where own triangle
+// tests, candidates or an unindexed Embree buffer need them).
+void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters, bool keepTriangles = true);
 
 // True when Embree would drop this triangle although Vulkan keeps it active.
 bool needsOwnTriangleTest(const std::array<Vec3, 3>& tri);

@@ -21,15 +21,22 @@ F3 normalize3(const F3& v) { return div3(v, std::sqrt(dot3(v, v))); }
 }  // namespace
 
 F4 lightColor(const std::string& kind, const F3& P, const F3& N, const std::vector<uint32_t>& rec) {
+  return lightColor(kind == "point"  ? LightKind::Point
+                    : kind == "spot" ? LightKind::Spot
+                                     : LightKind::Directional,
+                    P, N, rec);
+}
+
+F4 lightColor(LightKind kind, const F3& P, const F3& N, const std::vector<uint32_t>& rec) {
   auto f = [&](uint32_t i) { return recordFloat(rec, i); };
-  if (kind == "point") {
+  if (kind == LightKind::Point) {
     const F3 L = sub3({f(0), f(1), f(2)}, P);
     const float d2 = dot3(L, L);
     const F3 l = div3(L, std::sqrt(d2));
     const float k = std::max(dot3(N, l), 0.0f) / d2;
     return {k * f(3), k * f(4), k * f(5), 1.0f};
   }
-  if (kind == "spot") {
+  if (kind == LightKind::Spot) {
     const F3 L = sub3({f(0), f(1), f(2)}, P);
     const float d = std::sqrt(dot3(L, L));
     const F3 l = div3(L, d);

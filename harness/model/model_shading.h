@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "model/model_program.h"
+
 namespace rayspec {
 
 using F3 = std::array<float, 3>;
@@ -15,6 +17,7 @@ using F4 = std::array<float, 4>;
 // `light: point|spot|directional`: P = call.position, N = call.normal,
 // record = the callable's shader record words (floats as bits).
 F4 lightColor(const std::string& kind, const F3& P, const F3& N, const std::vector<uint32_t>& record);
+F4 lightColor(LightKind kind, const F3& P, const F3& N, const std::vector<uint32_t>& record);
 
 struct SphereRoots {
   bool hit = false;

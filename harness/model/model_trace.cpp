@@ -2,19 +2,14 @@
 // order documented in model_backend.h), then closest-hit or miss runs.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "model/model_machine.h"
 #include "model/watertight.h"
+#include "results/record_layout.h"
 
 namespace rayspec {
-
-struct Committed {
-  bool valid = false;
-  double t = 0;
-  uint32_t instance = 0, geometry = 0, primitive = 0, kind = 0;
-  float b1 = 0, b2 = 0;
-};
 
 struct Traversal {
   Machine& m;
@@ -29,7 +24,7 @@ struct Traversal {
   // The AABB candidate whose intersection program runs.
   bool cur_opaque = false;
   const SbtRecord* cur_rec = nullptr;
-  const HitGroup* cur_group = nullptr;
+  const CHitGroup* cur_group = nullptr;
   const ModelCandidate* cur = nullptr;
 
   Traversal(Machine& machine, const TraceRay& r) : m(machine), ray(r) {}
@@ -55,10 +50,22 @@ Vec3 xform(const std::array<float, 12>& m, const Vec3& v, float w) {
   return r;
 }
 
-const HitGroup* groupOf(const Case& c, const SbtRecord* rec) {
-  if (!rec || !rec->group || *rec->group >= c.pipeline.hit_groups.size()) return nullptr;
-  return &c.pipeline.hit_groups[*rec->group];
+const CHitGroup* groupOf(const CPipeline& p, const SbtRecord* rec) {
+  if (!rec || !rec->group || *rec->group >= p.groups.size()) return nullptr;
+  return &p.groups[*rec->group];
 }
+
+// The neighbouring floats (Embree's interval ends moved to the open interval).
+float nextUp(float x) {
+  if (std::isnan(x) || x == INFINITY) return x;
+  if (x == 0.0f) return std::numeric_limits<float>::denorm_min();
+  uint32_t u;
+  std::memcpy(&u, &x, 4);
+  u = x > 0 ? u + 1 : u - 1;
+  std::memcpy(&x, &u, 4);
+  return x;
+}
+float nextDown(float x) { return -nextUp(-x); }
 
 bool resolveOpaque(uint32_t geomFlags, uint32_t instFlags, uint32_t rayFlags) {
   if (rayFlags & kRayOpaque) return true;
@@ -106,15 +113,17 @@ Facing facing(const ModelScene& s, const ModelCandidate& c, const TraceRay& ray,
 }
 
 HitView viewOf(const ModelScene& s, const Case& c, const TraceRay& ray, uint32_t instance, uint32_t geometry,
-               uint32_t primitive) {
+               uint32_t primitive, bool objectRay = true) {
   HitView hv;
   const ModelInstance& mi = s.instances[instance];
   hv.instance = instance;
   hv.custom_index = c.scene.instances[instance].custom_index & 0xFFFFFF;
   hv.geometry = geometry;
   hv.primitive = primitive;
-  hv.object_origin = xform(mi.inverse_f, ray.origin, 1);
-  hv.object_direction = xform(mi.inverse_f, ray.direction, 0);
+  if (objectRay) {
+    hv.object_origin = xform(mi.inverse_f, ray.origin, 1);
+    hv.object_direction = xform(mi.inverse_f, ray.direction, 0);
+  }
   const ModelGeometry& g = s.blases[mi.blas].geometries[geometry];
   if (g.kind == Geometry::Kind::Aabbs) {
     const auto& a = g.aabbs[primitive];
@@ -126,14 +135,14 @@ HitView viewOf(const ModelScene& s, const Case& c, const TraceRay& ray, uint32_t
 
 }  // namespace
 
-Flow Machine::report(const Stmt& s, StageEnv& env) {
+Flow Machine::report(const CStmt& s, StageEnv& env) {
   Traversal* tr = env.traversal;
   if (!tr || !tr->cur) return Flow::Continue;
   const Val tv = eval(s.t, env);
   const float t = s.t.type == ValueType::Uint ? static_cast<float>(tv.u) : tv.f[0];
   const uint32_t kind = eval(s.hit_kind, env).u;
   Val attr;
-  if (!s.attribute.empty()) attr = eval(s.attribute[0], env);
+  if (s.has_attribute) attr = eval(s.attribute, env);
   bool accepted = false;
   Flow flow = Flow::Continue;
   // R-ISECT-REPORT, R-CAND-AABB-CLOSED: tmin <= t <= current tmax.
@@ -172,49 +181,249 @@ Flow Machine::report(const Stmt& s, StageEnv& env) {
 }
 
 Payload Machine::trace(const TraceRay& r, uint32_t depth) {
-  const Case& c = *sh_.c;
-  const ModelScene& scene = *sh_.scene;
-  Traversal tr(*this, r);
-  tr.flags = r.flags;
-  if (c.pipeline.flags & 0x1000) tr.flags |= kRaySkipTriangles;
-  if (c.pipeline.flags & 0x2000) tr.flags |= kRaySkipAabbs;
-  tr.depth = depth;
-  tr.tmin = r.tmin;
-  tr.tmax_cur = r.tmax;
-  tr.exact = scene.tier == ModelTier::Exact;
+  uint32_t flags = r.flags;
+  if (sh_.c->pipeline.flags & 0x1000) flags |= kRaySkipTriangles;
+  if (sh_.c->pipeline.flags & 0x2000) flags |= kRaySkipAabbs;
   Payload payload;
   payload.depth = depth;
-  tr.payload = &payload;
+  const Committed best = sh_.direct ? directHit(r, flags) : traverse(r, flags, depth, payload);
+  shade(r, flags, depth, best, payload);
+  return payload;
+}
 
+namespace {
+
+RTCRayHit embreeRay(const TraceRay& r, uint32_t flags) {
   RTCRayHit rh;
   rh.ray.org_x = r.origin[0]; rh.ray.org_y = r.origin[1]; rh.ray.org_z = r.origin[2];
   rh.ray.dir_x = r.direction[0]; rh.ray.dir_y = r.direction[1]; rh.ray.dir_z = r.direction[2];
   rh.ray.time = 0;
-  rh.ray.mask = (r.cull_mask & 0xFF) | ((tr.flags & kRaySkipTriangles) ? 0u : kMaskTriangles) |
-                ((tr.flags & kRaySkipAabbs) ? 0u : kMaskAabbs);
+  rh.ray.mask = (r.cull_mask & 0xFF) | ((flags & kRaySkipTriangles) ? 0u : kMaskTriangles) |
+                ((flags & kRaySkipAabbs) ? 0u : kMaskAabbs);
   rh.ray.id = 0;
   rh.ray.flags = 0;
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  const bool validRay = r.tmin <= r.tmax && (rh.ray.mask & 0xFF) != 0;
+  return rh;
+}
 
-  std::vector<ModelCandidate>* cands = nullptr;
-  if (validRay && sh_.direct) {
-    // Embree's own closest hit; the open interval by moving Embree's ends.
-    rh.ray.tnear = scene.tier == ModelTier::Robust ? std::nextafter(r.tmin, INFINITY) : r.tmin;
-    rh.ray.tfar = std::nextafter(r.tmax, -INFINITY);
-    RTCIntersectContext ctx;
-    rtcInitIntersectContext(&ctx);
-    rtcIntersect1(scene.top, &ctx, &rh);
-    if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
-      ModelCandidate cand;
-      cand.instance = rh.hit.instID[0];
-      cand.geometry = rh.hit.geomID;
-      cand.primitive = rh.hit.primID;
-      const Facing f = facing(scene, cand, r, tr.flags);
-      tr.best = {true, rh.ray.tfar, cand.instance, cand.geometry, cand.primitive, f.kind, rh.hit.u, rh.hit.v};
+// A ray Embree can trace. The rest (non-finite origin or direction, NaN or
+// negative tmin, tmax below tmin or NaN: R-UB, any result is allowed) is
+// never handed to Embree, whose debug checks would abort, and misses.
+bool validRay(const TraceRay& r, const RTCRayHit& rh) {
+  for (int k = 0; k < 3; ++k)
+    if (!std::isfinite(r.origin[k]) || !std::isfinite(r.direction[k])) return false;
+  if (!(r.tmin >= 0.0f) || !(r.tmin <= r.tmax)) return false;
+  return (rh.ray.mask & 0xFF) != 0;
+}
+
+}  // namespace
+
+namespace {
+
+// Embree's own closest hit (no filters, no culls, no AABBs in this case); the
+// open interval by moving Embree's ends. No culls here, so the facing only
+// gives hit_kind: computed when a program reads it.
+Committed embreeClosestHit(const ModelScene& scene, RTCIntersectContext& ctx, const TraceRay& r, uint32_t flags,
+                           bool needFacing) {
+  Committed best;
+  RTCRayHit rh = embreeRay(r, flags);
+  if (!validRay(r, rh)) return best;
+  rh.ray.tnear = scene.tier == ModelTier::Robust ? nextUp(r.tmin) : r.tmin;
+  rh.ray.tfar = nextDown(r.tmax);
+  rtcIntersect1(scene.top, &ctx, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return best;
+  best = {true, rh.ray.tfar, rh.hit.instID[0], rh.hit.geomID, rh.hit.primID, 0xFEu, rh.hit.u, rh.hit.v};
+  if (needFacing) {
+    ModelCandidate cand;
+    cand.instance = best.instance;
+    cand.geometry = best.geometry;
+    cand.primitive = best.primitive;
+    best.kind = facing(scene, cand, r, flags).kind;
+  }
+  return best;
+}
+
+}  // namespace
+
+Committed Machine::directHit(const TraceRay& r, uint32_t flags) {
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  return embreeClosestHit(*sh_.scene, ctx, r, flags, sh_.need_facing);
+}
+
+namespace {
+
+bool sameTraceParameters(const Ray& a, const Ray& b) {
+  return a.flags == b.flags && a.cull_mask == b.cull_mask && a.sbt_offset == b.sbt_offset &&
+         a.sbt_stride == b.sbt_stride && a.miss == b.miss;
+}
+
+}  // namespace
+
+void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
+  const std::vector<Ray>& rays = sh_.c->rays.rays;
+  const CPipeline& programs = *sh_.programs;
+  const uint32_t width = sh_.c->rays.width;
+  const uint32_t words = recordWords();
+  uint32_t pipeFlags = 0;
+  if (sh_.c->pipeline.flags & 0x1000) pipeFlags |= kRaySkipTriangles;
+  if (sh_.c->pipeline.flags & 0x2000) pipeFlags |= kRaySkipAabbs;
+  const ModelScene& scene = *sh_.scene;
+  constexpr uint32_t kChunk = 64;
+  Committed hits[kChunk];
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  for (uint32_t b = begin; b < end; b += kChunk) {
+    const uint32_t e = std::min(end, b + kChunk);
+    const Ray& first = rays[b];
+    bool uniform = true;  // every ray of the chunk selects the same SBT records
+    // Trace the chunk (what directHit does, without its per-ray set-up).
+    for (uint32_t i = b; i < e; ++i) {
+      if (i + 8 < e) __builtin_prefetch(&rays[i + 8]);
+      const Ray& ray = rays[i];
+      uniform = uniform && sameTraceParameters(ray, first);
+      hits[i - b] = embreeClosestHit(scene, ctx, launchRay(ray), ray.flags | pipeFlags, sh_.need_facing);
     }
-  } else if (validRay) {
+    // Closest-hit / miss programs of nothing but counts need no stage
+    // environment: resolved once per chunk (per instance and geometry).
+    const TraceRay r0 = launchRay(first);
+    const uint32_t flags0 = first.flags | pipeFlags;
+    const bool quick = uniform && !(flags0 & kRaySkipClosestHit);
+    const CountsOnly* missCounts = nullptr;
+    if (quick) {
+      const uint32_t mi = r0.miss & 0xFFFF;
+      if (mi < default_miss_.size() && default_miss_[mi].group && *default_miss_[mi].group < programs.miss.size() &&
+          programs.miss_counts[*default_miss_[mi].group].yes)
+        missCounts = &programs.miss_counts[*default_miss_[mi].group];
+    }
+    uint32_t lastInstance = ~0u, lastGeometry = ~0u;
+    const CountsOnly* hitCounts = nullptr;
+    x_ = b % width;
+    y_ = b / width;
+    for (uint32_t i = b; i < e; ++i, ++x_) {
+      if (x_ == width) { x_ = 0; ++y_; }
+      index_ = i;
+      rec_ = records_ ? records_ + static_cast<size_t>(i) * words : nullptr;
+      ray_ambiguous_ = false;
+      bumpRuns(kRunsRaygen);
+      const Committed& h = hits[i - b];
+      if (quick && h.valid) {
+        if (h.instance != lastInstance || h.geometry != lastGeometry) {
+          lastInstance = h.instance;
+          lastGeometry = h.geometry;
+          const CHitGroup* grp = groupOf(programs, hitRecord(h.instance, h.geometry, r0));
+          hitCounts = grp && grp->closest_hit && grp->closest_hit_counts.yes ? &grp->closest_hit_counts : nullptr;
+        }
+        if (hitCounts) {
+          bump(*hitCounts);
+          bumpRuns(kRunsClosestHit);
+          continue;
+        }
+      } else if (quick && missCounts) {
+        bump(*missCounts);
+        bumpRuns(kRunsMiss);
+        continue;
+      }
+      Payload payload;
+      payload.depth = 1;
+      shade(launchRay(rays[i]), rays[i].flags | pipeFlags, 1, h, payload);
+    }
+  }
+}
+
+// The model's decision over the sorted candidates (R-ORDER-UNSPEC: in
+// ascending distance). `force`, when given, overrides per candidate whether a
+// triangle is a hit (-1: the model's own decision, 0: no, 1: yes).
+void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, const int8_t* force, Payload& payload) {
+  const Case& c = *sh_.c;
+  const ModelScene& scene = *sh_.scene;
+  const TraceRay& r = tr.ray;
+  const uint32_t depth = tr.depth;
+  for (size_t k = 0; k < cands.size(); ++k) {
+    const ModelCandidate& cand = cands[k];
+    if (tr.stop) break;
+    const ModelInstance& mi = scene.instances[cand.instance];
+    const ModelGeometry& g = scene.blases[mi.blas].geometries[cand.geometry];
+    const bool opaque = resolveOpaque(g.flags, mi.src->flags, tr.flags);
+    if ((tr.flags & kRayCullOpaque) && opaque) continue;
+    if ((tr.flags & kRayCullNoOpaque) && !opaque) continue;
+    const SbtRecord* rec = hitRecord(cand.instance, cand.geometry, r);
+    const CHitGroup* grp = groupOf(*sh_.programs, rec);
+    if (cand.aabb) {
+      if (force && force[k] == 0) continue;
+      if (cand.t > tr.tmax_cur) continue;
+      if (!grp || !grp->intersection) continue;
+      HitView hv = viewOf(scene, c, r, cand.instance, cand.geometry, cand.primitive);
+      tr.cur = &cand;
+      tr.cur_opaque = opaque;
+      tr.cur_rec = rec;
+      tr.cur_group = grp;
+      bumpRuns(kRunsIntersection);
+      StageEnv env;
+      env.stage = Stage::Intersection;
+      env.record_data = &rec->data;
+      env.ray = &r;
+      env.hit = &hv;
+      env.tmax_view = static_cast<float>(tr.tmax_cur);  // R-TMAX-VIEW: closest so far
+      env.depth = depth;
+      env.traversal = &tr;
+      exec(*grp->intersection, env);
+      tr.cur = nullptr;
+      continue;
+    }
+    if (!(force && force[k] >= 0 ? force[k] == 1 : cand.hit)) continue;
+    bool inside = cand.t > tr.tmin && cand.t < tr.tmax_cur;
+    // Exact tier, R-TIE: a tie with the committed hit goes to the smaller key.
+    if (!inside && tr.exact && tr.best.valid && std::fabs(cand.t - tr.best.t) <= tr.tol(cand.t) &&
+        keyLess(cand.instance, cand.geometry, cand.primitive, tr.best.instance, tr.best.geometry,
+                tr.best.primitive))
+      inside = true;
+    if (!inside) continue;
+    const Facing f = facing(scene, cand, r, tr.flags);
+    if (f.culled) continue;
+    Flow ah = Flow::Continue;
+    if (!opaque && grp && grp->any_hit) {
+      HitView hv = viewOf(scene, c, r, cand.instance, cand.geometry, cand.primitive);
+      hv.t = static_cast<float>(cand.t);
+      hv.hit_kind = f.kind;
+      hv.b1 = cand.b1;
+      hv.b2 = cand.b2;
+      bumpRuns(kRunsAnyHit);
+      StageEnv a;
+      a.stage = Stage::AnyHit;
+      a.record_data = &rec->data;
+      a.payload = &payload;
+      a.ray = &r;
+      a.hit = &hv;
+      a.tmax_view = hv.t;
+      a.depth = depth;
+      ah = exec(*grp->any_hit, a);
+      if (ah == Flow::Ignore) continue;
+    }
+    tr.best = {true, cand.t, cand.instance, cand.geometry, cand.primitive, f.kind, cand.b1, cand.b2};
+    tr.tmax_cur = cand.t;
+    if (ah == Flow::Terminate || (tr.flags & kRayTerminateOnFirstHit)) tr.stop = true;
+  }
+}
+
+// Every candidate from Embree, decided by the model in order (see
+// model_backend.h), then the exact tier's ambiguity check.
+Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, Payload& payload) {
+  const Case& c = *sh_.c;
+  const ModelScene& scene = *sh_.scene;
+  Traversal tr(*this, r);
+  tr.flags = flags;
+  tr.depth = depth;
+  tr.tmin = r.tmin;
+  tr.tmax_cur = r.tmax;
+  tr.exact = scene.tier == ModelTier::Exact;
+  tr.payload = &payload;
+  const Payload payloadIn = payload;  // for the exact tier's what-if variants
+
+  RTCRayHit rh = embreeRay(r, tr.flags);
+  std::vector<ModelCandidate>* cands = nullptr;
+  if (validRay(r, rh)) {
     if (cand_pool_.size() < depth) cand_pool_.resize(depth);
     cands = &cand_pool_[depth - 1];
     cands->clear();
@@ -234,69 +443,7 @@ Payload Machine::trace(const TraceRay& r, uint32_t depth) {
       if (a.t != b.t) return a.t < b.t;
       return keyLess(a.instance, a.geometry, a.primitive, b.instance, b.geometry, b.primitive);
     });
-    for (const ModelCandidate& cand : *cands) {
-      if (tr.stop) break;
-      const ModelInstance& mi = scene.instances[cand.instance];
-      const ModelGeometry& g = scene.blases[mi.blas].geometries[cand.geometry];
-      const bool opaque = resolveOpaque(g.flags, mi.src->flags, tr.flags);
-      if ((tr.flags & kRayCullOpaque) && opaque) continue;
-      if ((tr.flags & kRayCullNoOpaque) && !opaque) continue;
-      const SbtRecord* rec = hitRecord(cand.instance, cand.geometry, r);
-      const HitGroup* grp = groupOf(c, rec);
-      if (cand.aabb) {
-        if (cand.t > tr.tmax_cur) continue;
-        if (!grp || !grp->intersection) continue;
-        HitView hv = viewOf(scene, c, r, cand.instance, cand.geometry, cand.primitive);
-        tr.cur = &cand;
-        tr.cur_opaque = opaque;
-        tr.cur_rec = rec;
-        tr.cur_group = grp;
-        bumpRuns(kRunsIntersection);
-        StageEnv env;
-        env.stage = Stage::Intersection;
-        env.record_data = &rec->data;
-        env.ray = &r;
-        env.hit = &hv;
-        env.tmax_view = static_cast<float>(tr.tmax_cur);  // R-TMAX-VIEW: closest so far
-        env.depth = depth;
-        env.traversal = &tr;
-        exec(*grp->intersection, env);
-        tr.cur = nullptr;
-        continue;
-      }
-      if (!cand.hit) continue;
-      bool inside = cand.t > tr.tmin && cand.t < tr.tmax_cur;
-      // Exact tier, R-TIE: a tie with the committed hit goes to the smaller key.
-      if (!inside && tr.exact && tr.best.valid && std::fabs(cand.t - tr.best.t) <= tr.tol(cand.t) &&
-          keyLess(cand.instance, cand.geometry, cand.primitive, tr.best.instance, tr.best.geometry,
-                  tr.best.primitive))
-        inside = true;
-      if (!inside) continue;
-      const Facing f = facing(scene, cand, r, tr.flags);
-      if (f.culled) continue;
-      Flow ah = Flow::Continue;
-      if (!opaque && grp && grp->any_hit) {
-        HitView hv = viewOf(scene, c, r, cand.instance, cand.geometry, cand.primitive);
-        hv.t = static_cast<float>(cand.t);
-        hv.hit_kind = f.kind;
-        hv.b1 = cand.b1;
-        hv.b2 = cand.b2;
-        bumpRuns(kRunsAnyHit);
-        StageEnv a;
-        a.stage = Stage::AnyHit;
-        a.record_data = &rec->data;
-        a.payload = &payload;
-        a.ray = &r;
-        a.hit = &hv;
-        a.tmax_view = hv.t;
-        a.depth = depth;
-        ah = exec(*grp->any_hit, a);
-        if (ah == Flow::Ignore) continue;
-      }
-      tr.best = {true, cand.t, cand.instance, cand.geometry, cand.primitive, f.kind, cand.b1, cand.b2};
-      tr.tmax_cur = cand.t;
-      if (ah == Flow::Terminate || (tr.flags & kRayTerminateOnFirstHit)) tr.stop = true;
-    }
+    decide(tr, *cands, nullptr, payload);
   }
 
   // Exact tier: is this trace's answer numerically clear?
@@ -309,9 +456,18 @@ Payload Machine::trace(const TraceRay& r, uint32_t depth) {
         if (k.hit == hit && (!hit || (k.instance == i && k.geometry == g && k.primitive == p))) return;
       amb.candidates.push_back({hit, i, g, p});
     };
-    const ModelCandidate* fallback = nullptr;
-    for (const ModelCandidate& cand : *cands) {
-      if (cand.aabb) continue;
+    std::vector<size_t> unsure;  // candidates whose decision could flip
+    bool faces = false;
+    for (size_t k = 0; k < cands->size(); ++k) {
+      const ModelCandidate& cand = (*cands)[k];
+      if (cand.aabb) {
+        // A grazed box matters only if its what-if runs change the answer (below).
+        if (cand.near_face && cand.t <= finalT + tr.tol(cand.t)) {
+          unsure.push_back(k);
+          faces = true;
+        }
+        continue;
+      }
       const ModelInstance& mi = scene.instances[cand.instance];
       const ModelGeometry& g = scene.blases[mi.blas].geometries[cand.geometry];
       const bool opaque = resolveOpaque(g.flags, mi.src->flags, tr.flags);
@@ -330,32 +486,102 @@ Payload Machine::trace(const TraceRay& r, uint32_t depth) {
         why = "tmax-tie";
       if (why) {
         if (amb.reason.empty()) amb.reason = why;
-        add(true, cand.instance, cand.geometry, cand.primitive);
-      } else if (cand.hit && !fallback && cand.t > r.tmin && cand.t < r.tmax) {
-        fallback = &cand;
+        unsure.push_back(k);
+      }
+    }
+    if (!amb.reason.empty() || faces) {
+      // The legal answers: this run's, and those of the what-if runs where
+      // the unsure candidates decide otherwise (whatIf).
+      auto addCommitted = [&](const Committed& b) {
+        if (b.valid) add(true, b.instance, b.geometry, b.primitive);
+        else add(false, 0, 0, 0);
+      };
+      addCommitted(tr.best);
+      for (const Committed& b : whatIf(tr, *cands, unsure, payloadIn)) {
+        const bool same = b.valid == tr.best.valid &&
+                          (!b.valid || (b.instance == tr.best.instance && b.geometry == tr.best.geometry &&
+                                        b.primitive == tr.best.primitive && b.kind == tr.best.kind &&
+                                        std::fabs(b.t - tr.best.t) <= tr.tol(b.t)));
+        if (!same && amb.reason.empty()) amb.reason = "aabb-face";
+        addCommitted(b);
       }
     }
     if (!amb.reason.empty()) {
-      if (tr.best.valid) add(true, tr.best.instance, tr.best.geometry, tr.best.primitive);
-      else add(false, 0, 0, 0);
-      if (fallback) add(true, fallback->instance, fallback->geometry, fallback->primitive);
-      else add(false, 0, 0, 0);
       ambiguous.push_back(std::move(amb));
       ray_ambiguous_ = true;
     }
   }
+  return tr.best;
+}
 
-  // R-MISS-XOR-CHIT
-  if (tr.best.valid) {
-    if (!(tr.flags & kRaySkipClosestHit)) {
-      const SbtRecord* rec = hitRecord(tr.best.instance, tr.best.geometry, r);
-      const HitGroup* grp = groupOf(c, rec);
-      if (grp && grp->closest_hit) {
-        HitView hv = viewOf(scene, c, r, tr.best.instance, tr.best.geometry, tr.best.primitive);
-        hv.t = static_cast<float>(tr.best.t);
-        hv.hit_kind = tr.best.kind;
-        hv.b1 = tr.best.b1;
-        hv.b2 = tr.best.b2;
+// What-if runs of the decision for an ambiguous trace: the unsure candidates
+// are grouped by distance (a group crosses one edge or vertex, shared or not).
+// Within a group each candidate alone is a hit (watertight: at least one of a
+// shared edge's triangles is hit); a group of one may also be no hit. Stage
+// programs run again, in a sandbox: their counters, record and payload
+// effects are undone.
+std::vector<Committed> Machine::whatIf(const Traversal& actual, const std::vector<ModelCandidate>& cands,
+                                       const std::vector<size_t>& unsure, const Payload& payloadIn) {
+  std::vector<Committed> out;
+  if (unsure.empty()) return out;
+  const std::vector<uint64_t> savedCounters = counters;
+  const std::string savedError = error;
+  std::vector<uint32_t> savedRecord;
+  if (rec_) savedRecord.assign(rec_, rec_ + recordWords());
+  std::vector<int8_t> force(cands.size(), -1);
+  auto run = [&] {
+    Traversal v(*this, actual.ray);
+    v.flags = actual.flags;
+    v.depth = actual.depth;
+    v.tmin = actual.tmin;
+    v.tmax_cur = actual.ray.tmax;
+    v.exact = actual.exact;
+    Payload p = payloadIn;
+    v.payload = &p;
+    decide(v, cands, force.data(), p);
+    out.push_back(v.best);
+    counters = savedCounters;
+    error = savedError;
+    if (rec_) std::copy(savedRecord.begin(), savedRecord.end(), rec_);
+  };
+  size_t g0 = 0;
+  while (g0 < unsure.size()) {
+    size_t g1 = g0 + 1;
+    while (g1 < unsure.size() &&
+           std::fabs(cands[unsure[g1]].t - cands[unsure[g1 - 1]].t) <= actual.tol(cands[unsure[g1]].t))
+      ++g1;
+    for (size_t a = g0; a < g1; ++a) {
+      for (size_t b = g0; b < g1; ++b) force[unsure[b]] = a == b ? 1 : 0;
+      run();
+    }
+    if (g1 - g0 == 1) {
+      force[unsure[g0]] = 0;
+      run();
+    }
+    for (size_t b = g0; b < g1; ++b) force[unsure[b]] = -1;
+    g0 = g1;
+  }
+  return out;
+}
+
+// R-MISS-XOR-CHIT: closest-hit or miss for the committed hit.
+void Machine::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Committed& best, Payload& payload) {
+  const Case& c = *sh_.c;
+  const ModelScene& scene = *sh_.scene;
+  if (best.valid) {
+    if (!(flags & kRaySkipClosestHit)) {
+      const SbtRecord* rec = hitRecord(best.instance, best.geometry, r);
+      const CHitGroup* grp = groupOf(*sh_.programs, rec);
+      if (grp && grp->closest_hit && grp->closest_hit_counts.yes) {
+        bump(grp->closest_hit_counts);
+        bumpRuns(kRunsClosestHit);
+      } else if (grp && grp->closest_hit) {
+        HitView hv = viewOf(scene, c, r, best.instance, best.geometry, best.primitive,
+                            sh_.need_object_ray);
+        hv.t = static_cast<float>(best.t);
+        hv.hit_kind = best.kind;
+        hv.b1 = best.b1;
+        hv.b2 = best.b2;
         bumpRuns(kRunsClosestHit);
         StageEnv env;
         env.stage = Stage::ClosestHit;
@@ -372,7 +598,10 @@ Payload Machine::trace(const TraceRay& r, uint32_t depth) {
     const uint32_t mi = r.miss & 0xFFFF;
     if (mi < default_miss_.size()) {
       const SbtRecord& rec = default_miss_[mi];
-      if (rec.group && *rec.group < c.pipeline.miss.size()) {
+      if (rec.group && *rec.group < c.pipeline.miss.size() && sh_.programs->miss_counts[*rec.group].yes) {
+        bump(sh_.programs->miss_counts[*rec.group]);
+        bumpRuns(kRunsMiss);
+      } else if (rec.group && *rec.group < c.pipeline.miss.size()) {
         bumpRuns(kRunsMiss);
         StageEnv env;
         env.stage = Stage::Miss;
@@ -381,11 +610,10 @@ Payload Machine::trace(const TraceRay& r, uint32_t depth) {
         env.ray = &r;
         env.tmax_view = r.tmax;
         env.depth = depth;
-        exec(c.pipeline.miss[*rec.group], env);
+        exec(sh_.programs->miss[*rec.group], env);
       }
     }
   }
-  return payload;
 }
 
 }  // namespace rayspec

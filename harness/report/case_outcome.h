@@ -24,6 +24,7 @@ struct CaseOutcome {
   Verdict verdict;
   std::vector<std::string> images;  // image names; files at <case>/{device,model,diff}/<name>.png
   std::vector<RayRow> failing_rays;
+  std::string device_name;          // the device that ran it (results bundle)
 };
 
 }  // namespace rayspec

@@ -18,8 +18,20 @@ table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding
 .images figure{display:inline-block;margin:0 1em 0 0}.images img{image-rendering:pixelated;width:256px;border:1px solid #999}
 .uncovered{color:#cf222e}#passing.hidden{display:none})";
 
+// The toggle of passing cases, and a self-check a headless browser can read
+// back from the DOM: data-images (loaded), data-broken-images and
+// data-script-errors on <body> once the page has loaded.
+const char* kCheckScript = R"(window.rayspecErrors=0;window.addEventListener('error',function(e){
+if(e.target&&e.target.tagName==='IMG')return;window.rayspecErrors++;
+document.body.dataset.scriptErrors=window.rayspecErrors;},true);)";
+
 const char* kScript = R"(document.getElementById('toggle').addEventListener('click',function(){
-document.getElementById('passing').classList.toggle('hidden');});)";
+document.getElementById('passing').classList.toggle('hidden');});
+window.addEventListener('load',function(){var ok=0,broken=[];
+Array.prototype.forEach.call(document.images,function(i){
+if(i.complete&&i.naturalWidth>0)ok++;else broken.push(i.getAttribute('src'));});
+var b=document.body.dataset;b.images=ok;b.brokenImages=broken.length;b.brokenList=broken.join(' ');
+b.scriptErrors=window.rayspecErrors;b.checked='1';});)";
 
 bool failing(const CaseOutcome& o) { return o.status != Status::Pass && o.status != Status::NotSupported; }
 
@@ -70,7 +82,7 @@ std::string writeReportHtml(const std::vector<CaseOutcome>& outcomes, const RunI
   const std::string dir = std::filesystem::path(path).parent_path().string();
   std::ostringstream out;
   out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>rayspec report</title><style>"
-      << kStyle << "</style></head><body>\n<h1>rayspec report</h1>\n";
+      << kStyle << "</style><script>" << kCheckScript << "</script></head><body>\n<h1>rayspec report</h1>\n";
   out << "<p>device: " << xmlEscape(info.device) << " &middot; model: embree " << xmlEscape(info.model_tier)
       << " tier &middot; validation layer " << (info.validation ? "on" : "off") << " &middot; " << xmlEscape(info.started)
       << "</p>\n";

@@ -3,10 +3,21 @@
 #include <cstdio>
 #include <map>
 
+#include <unistd.h>
+
 namespace rayspec {
+
+void RunSummary::starting(const std::string& name) {
+  if (!isatty(STDOUT_FILENO)) return;
+  std::printf("\r[%zu/%zu] running %s...\x1b[K", outcomes_.size() + 1, total_, name.c_str());
+  std::fflush(stdout);
+  live_ = true;
+}
 
 void RunSummary::add(const CaseOutcome& o) {
   outcomes_.push_back(o);
+  if (live_) std::printf("\r\x1b[K");
+  live_ = false;
   std::printf("[%zu/%zu] %-44s %-14s device %7.3f s  model %7.3f s\n", outcomes_.size(), total_, o.name.c_str(),
               statusName(o.status), o.device_seconds, o.model_seconds);
   if (o.status != Status::Pass) std::printf("        %s\n", o.headline.c_str());

@@ -12,6 +12,8 @@ namespace rayspec {
 class RunSummary {
  public:
   explicit RunSummary(size_t total) : total_(total) {}
+  // On a terminal: a live "[i/N] running NAME..." line until add().
+  void starting(const std::string& name);
   void add(const CaseOutcome& outcome);          // prints the progress line
   void addTeardownError(const std::string& m);   // validation errors at device destruction
   void print() const;
@@ -22,6 +24,7 @@ class RunSummary {
 
  private:
   size_t total_;
+  bool live_ = false;  // a live line is on screen
   std::vector<CaseOutcome> outcomes_;
   std::vector<std::string> teardown_errors_;
 };

@@ -44,6 +44,7 @@ struct Results {
   std::vector<RayAmbiguity> ambiguous;  // model, exact tier: rays that are not clear
   std::vector<std::string> validation_messages;  // validation-layer errors (device)
   double seconds = 0.0;     // wall time of the execution (setup + trace + read-back)
+  std::string case_file;    // path of the case's YAML file (`rayspec compare` re-parses it)
 };
 
 }  // namespace rayspec

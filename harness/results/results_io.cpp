@@ -74,6 +74,11 @@ void writeRecordsCsv(const Results& r, const fs::path& path, const std::vector<s
 
 std::string writeResults(const Results& r, const std::string& dir_name,
                          const std::vector<std::string>& kept_fields) {
+  return writeResults(r, dir_name, kept_fields, true);
+}
+
+std::string writeResults(const Results& r, const std::string& dir_name, const std::vector<std::string>& kept_fields,
+                         bool image_files) {
   const fs::path dir(dir_name);
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -84,6 +89,7 @@ std::string writeResults(const Results& r, const std::string& dir_name,
   j["backend"] = r.backend;
   j["device"] = r.device;
   j["status"] = r.status;
+  j["case_file"] = r.case_file;
   j["width"] = r.width;
   j["height"] = r.height;
   j["seconds"] = r.seconds;
@@ -95,6 +101,7 @@ std::string writeResults(const Results& r, const std::string& dir_name,
     j["images"].push_back({{"name", im.name}, {"field", im.field}, {"width", im.width},
                            {"height", im.height}, {"channels", im.channels}, {"float", im.is_float}});
     if (!writeWords(dir / (im.name + ".raw"), im.texels)) return "cannot write image " + im.name;
+    if (!image_files) continue;
     const std::string err = writeImageFiles(im, dir.string());
     if (!err.empty()) return err;
   }
@@ -129,6 +136,7 @@ Results readResults(const std::string& dir_name, std::string* error) {
     r.width = j.at("width");
     r.height = j.at("height");
     r.seconds = j.at("seconds");
+    r.case_file = j.value("case_file", std::string());
     r.counters = j.at("counters").get<std::map<std::string, uint64_t>>();
     r.validation_messages = j.at("validation_messages").get<std::vector<std::string>>();
     if (j.at("record_words").get<uint32_t>() != recordWords()) {

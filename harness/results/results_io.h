@@ -21,6 +21,12 @@ namespace rayspec {
 std::string writeResults(const Results& r, const std::string& dir,
                          const std::vector<std::string>& kept_fields);
 
+// The same; without image_files only NAME.raw is written per image (no
+// NAME.png / NAME.exr: a forked child must not use OpenImageIO's or
+// OpenEXR's thread pools, which its parent's threads own).
+std::string writeResults(const Results& r, const std::string& dir, const std::vector<std::string>& kept_fields,
+                         bool image_files);
+
 // Reads a bundle back; error set on failure.
 Results readResults(const std::string& dir, std::string* error);
 

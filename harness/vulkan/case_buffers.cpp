@@ -43,8 +43,12 @@ CaseBuffers createCaseBuffers(const VulkanContext& ctx, const Case& c, const Pla
   out.rays = createUploadBuffer(ctx, packed.data(), packed.size() * 4, kStorage, cleanup);
   if (bindings.count(kBindingRecords)) {
     uint64_t bytes = rays * recordWords() * 4;
-    out.records = createBuffer(ctx, bytes, kStorage, MemoryUse::Host, cleanup);
+    // Reached by device address (shaders/common.glsl): no maxStorageBufferRange limit.
+    out.records = createBuffer(ctx, bytes, kStorage | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                               MemoryUse::Host, cleanup);
     std::memset(out.records.mapped, 0, bytes);
+    const uint64_t address = out.records.address;
+    out.records_ref = createUploadBuffer(ctx, &address, sizeof(address), kStorage, cleanup);
   }
   if (bindings.count(kBindingCounters)) {
     uint64_t bytes = (plan.counters.empty() ? 1 : plan.counters.size()) * 4;
@@ -80,7 +84,7 @@ std::vector<DescriptorItem> descriptorItems(const CaseBuffers& b, VkAcceleration
       it.view = b.images.at(binding - kBindingFirstImage).view;
     } else {
       it.buffer = binding == kBindingRays       ? b.rays.buffer
-                  : binding == kBindingRecords  ? b.records.buffer
+                  : binding == kBindingRecords  ? b.records_ref.buffer
                   : binding == kBindingCounters ? b.counters.buffer
                                                 : b.scene.buffer;
     }

@@ -18,6 +18,7 @@ namespace rayspec {
 struct CaseBuffers {
   std::set<uint32_t> bindings;  // the bindings in use
   Buffer rays, records, counters, scene;
+  Buffer records_ref;  // bound at kBindingRecords: the device address of `records`
   std::vector<StorageImage> images;   // parallel to plan.images
   std::vector<bool> image_float;      // rgba32f (else r32ui)
   std::vector<Buffer> image_readback; // host copies of the images

@@ -1,0 +1,126 @@
+// rayspec compare A B: judges saved results without running anything.
+//   two bundles (folders with results.json): A against B (e.g. device / model)
+//   two run folders: for every case of A, A/<case>/device against
+//   B/<case>/device (one driver against another, today against last week);
+//   the rays' legal answers come from B's (else A's) model bundle.
+#include <algorithm>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+
+#include "case/parse_case.h"
+#include "cli/commands.h"
+#include "cli/judge_case.h"
+#include "report/rule_catalog.h"
+#include "report/run_summary.h"
+#include "report/write_reports.h"
+#include "results/image_files.h"
+#include "results/results_io.h"
+
+namespace rayspec {
+namespace fs = std::filesystem;
+namespace {
+
+bool isBundle(const fs::path& p) { return fs::exists(p / "results.json"); }
+
+struct Pair {
+  std::string name;
+  fs::path a, b, ambiguity;  // ambiguity: a model bundle whose ambiguous rays to use ("" = b's own)
+};
+
+std::vector<Pair> pairsOf(const fs::path& a, const fs::path& b) {
+  if (isBundle(a)) return {{"", a, b, {}}};
+  std::vector<Pair> out;
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(a, ec), end; !ec && it != end; it.increment(ec)) {
+    if (it->path().filename() != "results.json" || it->path().parent_path().filename() != "device") continue;
+    const fs::path case_dir = it->path().parent_path().parent_path();
+    const std::string name = case_dir.lexically_relative(a).generic_string();
+    fs::path ambiguity = b / name / "model";
+    if (!isBundle(ambiguity)) ambiguity = case_dir / "model";
+    out.push_back({name, case_dir / "device", b / name / "device", isBundle(ambiguity) ? ambiguity : fs::path()});
+  }
+  std::sort(out.begin(), out.end(), [](const Pair& x, const Pair& y) { return x.name < y.name; });
+  return out;
+}
+
+CaseOutcome failedOutcome(const std::string& name, Status s, const std::string& message) {
+  CaseOutcome o;
+  o.name = name;
+  o.verdict.add({s, s == Status::NotSupported ? "" : "compare", message, {}, 0});
+  o.status = o.verdict.status;
+  o.headline = o.verdict.headline();
+  return o;
+}
+
+CaseOutcome compareOne(const Pair& p, const CompareOptions& opt, std::vector<std::string>* rules) {
+  std::string error;
+  Results a = readResults(p.a.string(), &error);
+  const std::string name = p.name.empty() ? a.case_name : p.name;
+  if (!error.empty()) return failedOutcome(name, Status::Fail, error);
+  if (!isBundle(p.b)) return failedOutcome(name, Status::NotSupported, "no reference: " + p.b.string() + " has no results");
+  Results b = readResults(p.b.string(), &error);
+  if (!error.empty()) return failedOutcome(name, Status::Fail, error);
+  if (!p.ambiguity.empty()) {
+    const Results m = readResults(p.ambiguity.string(), &error);
+    if (error.empty()) b.ambiguous = m.ambiguous;
+  }
+  std::string file = a.case_file.empty() ? b.case_file : a.case_file;
+  if (file.empty() || !fs::exists(file)) file = opt.cases_dir + "/" + a.case_name + ".yaml";
+  ParseResult parsed = parseCaseFile(file, opt.cases_dir);
+  if (!parsed.value) {
+    std::string message = "cannot re-read the case file " + file;
+    for (const CaseError& e : parsed.errors) message += "; " + e.format();
+    return failedOutcome(name, Status::Fail, message);
+  }
+  Case c = *parsed.value;
+  c.name = name;
+  *rules = c.rules;
+  const Plan plan = derivePlan(c);
+  const std::string dir = opt.out + "/" + name;
+  std::error_code ec;
+  fs::remove_all(dir, ec);
+  for (const Image& im : a.images) writeImageFiles(im, dir + "/device");
+  for (const Image& im : b.images) writeImageFiles(im, dir + "/model");
+  CaseOutcome o = judgeCase(c, plan, a, b, dir);
+  o.device_name = a.device;
+  o.seconds = a.seconds;
+  return o;
+}
+
+}  // namespace
+
+int runCompare(const CompareOptions& opt) {
+  const std::vector<Pair> pairs = pairsOf(opt.a, opt.b);
+  if (pairs.empty()) {
+    std::fprintf(stderr, "rayspec compare: %s holds no results (no results.json, no <case>/device/)\n", opt.a.c_str());
+    return 2;
+  }
+  RunInfo info;
+  char text[64];
+  const std::time_t t = std::time(nullptr);
+  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M:%S UTC", std::gmtime(&t));
+  info.started = text;
+  info.model_tier = "reference " + opt.b;
+  std::string catalog_error;
+  info.catalog = loadRuleCatalog(opt.rules_file, &catalog_error);
+  std::printf("Comparing %s against %s\n", opt.a.c_str(), opt.b.c_str());
+  RunSummary summary(pairs.size());
+  std::vector<std::pair<std::string, std::vector<std::string>>> case_rules;
+  for (const Pair& p : pairs) {
+    summary.starting(p.name);
+    std::vector<std::string> rules;
+    CaseOutcome o = compareOne(p, opt, &rules);
+    if (!rules.empty()) case_rules.push_back({o.name, rules});
+    if (info.device.empty()) info.device = o.device_name;
+    summary.add(o);
+  }
+  info.coverage = ruleCoverage(info.catalog, case_rules);
+  summary.print();
+  const std::string err = writeReports(summary.outcomes(), info, opt.out);
+  if (!err.empty()) std::fprintf(stderr, "%s\n", err.c_str());
+  std::printf("Reports: %s/report.html, results.csv, junit.xml, summary.json\n", opt.out.c_str());
+  return summary.failed() ? 1 : 0;
+}
+
+}  // namespace rayspec

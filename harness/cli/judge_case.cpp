@@ -1,0 +1,27 @@
+#include "cli/judge_case.h"
+
+#include "cli/failing_rays.h"
+#include "compare/compare_results.h"
+#include "results/image_files.h"
+
+namespace rayspec {
+
+CaseOutcome judgeCase(const Case& c, const Plan& plan, const Results& device, const Results& model,
+                      const std::string& dir) {
+  CaseOutcome out;
+  out.name = c.name;
+  out.rules = c.rules;
+  out.device_seconds = device.seconds;
+  out.model_seconds = model.seconds;
+  out.verdict = compareResults(c, plan, device, model);
+  for (const Image& di : device.images)
+    for (const Image& mi : model.images)
+      if (di.name == mi.name && di.texels != mi.texels) writeDiffImage(di, mi, dir + "/diff");
+  out.failing_rays = failingRays(out.verdict, plan, device, model);
+  for (const ImageOutput& im : plan.images) out.images.push_back(im.name);
+  out.status = out.verdict.status;
+  out.headline = out.verdict.headline();
+  return out;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,91 @@
+#include "compare/shared_edge.h"
+
+#include <array>
+#include <map>
+#include <tuple>
+
+namespace rayspec {
+namespace {
+
+using Pos = std::tuple<float, float, float>;
+using Tri = std::array<Pos, 3>;
+
+bool triangleOf(const Case& c, const Candidate& k, Tri* out) {
+  if (k.instance >= c.scene.instances.size() || !c.scene.instances[k.instance].blas) return false;
+  const Blas& b = c.scene.blases[*c.scene.instances[k.instance].blas];
+  if (k.geometry >= b.geometries.size()) return false;
+  const Geometry& g = b.geometries[k.geometry];
+  if (g.kind != Geometry::Kind::Triangles || k.primitive >= g.primitiveCount()) return false;
+  for (uint32_t v = 0; v < 3; ++v) {
+    const uint32_t i = g.indices.empty() ? k.primitive * 3 + v : g.indices[k.primitive * 3 + v];
+    if (i >= g.vertices.size()) return false;
+    const Vec3& p = g.vertices[i];
+    (*out)[v] = {p[0], p[1], p[2]};
+  }
+  return true;
+}
+
+std::pair<Pos, Pos> edge(const Pos& a, const Pos& b) { return a < b ? std::make_pair(a, b) : std::make_pair(b, a); }
+
+// The hit candidates' triangles, grouped by (instance, geometry); false when
+// some candidate is not a triangle of the case.
+bool groupTriangles(const Case& c, const RayAmbiguity& a,
+                    std::map<std::pair<uint32_t, uint32_t>, std::vector<Tri>>* groups) {
+  for (const Candidate& k : a.candidates) {
+    Tri t;
+    if (!k.hit) continue;
+    if (!triangleOf(c, k, &t)) return false;
+    (*groups)[{k.instance, k.geometry}].push_back(t);
+  }
+  return true;
+}
+
+}  // namespace
+
+bool crossesBorderOnly(const Case& c, const RayAmbiguity& a) {
+  std::map<std::pair<uint32_t, uint32_t>, std::vector<Tri>> groups;
+  if (!groupTriangles(c, a, &groups) || groups.size() != 1 || crossesSharedEdge(c, a)) return false;
+  const std::vector<Tri>& tris = groups.begin()->second;
+  if (a.reason == "edge") return tris.size() == 1;
+  if (a.reason != "vertex") return false;
+  std::map<Pos, size_t> vertex_use;
+  for (const Tri& t : tris)
+    for (const Pos& p : t) ++vertex_use[p];
+  for (const auto& [p, n] : vertex_use)
+    if (n == tris.size()) return true;  // a vertex of every candidate, its fan open
+  return false;
+}
+
+bool crossesSharedEdge(const Case& c, const RayAmbiguity& a) {
+  if (a.reason != "edge" && a.reason != "vertex") return false;
+  // Group the hit candidates by (instance, geometry).
+  std::map<std::pair<uint32_t, uint32_t>, std::vector<Tri>> groups;
+  for (const Candidate& k : a.candidates) {
+    Tri t;
+    if (k.hit && triangleOf(c, k, &t)) groups[{k.instance, k.geometry}].push_back(t);
+  }
+  for (const auto& [key, tris] : groups) {
+    std::map<std::pair<Pos, Pos>, int> edges;
+    for (const Tri& t : tris)
+      for (int e = 0; e < 3; ++e) ++edges[edge(t[e], t[(e + 1) % 3])];
+    if (a.reason == "edge") {
+      for (const auto& [e, n] : edges)
+        if (n >= 2) return true;
+      continue;
+    }
+    // A vertex every candidate shares, closed when each of its edges is shared.
+    std::map<Pos, int> vertex_use;
+    for (const Tri& t : tris)
+      for (const Pos& p : t) ++vertex_use[p];
+    for (const auto& [p, n] : vertex_use) {
+      if (n < 3) continue;  // a closed fan has at least 3 triangles
+      bool closed = true;
+      for (const auto& [e, count] : edges)
+        if ((e.first == p || e.second == p) && count != 2) closed = false;
+      if (closed) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,23 @@
+// R-WATERTIGHT: does an ambiguous ray cross an edge shared by two triangles,
+// or a vertex closed all around by a fan of triangles? Only then is a miss a
+// leak; on the outer border of a mesh a miss is a legal answer.
+#pragma once
+
+#include "case/case.h"
+#include "results/results.h"
+
+namespace rayspec {
+
+// From the case's geometry: the ray's hit candidates of one instance and
+// geometry that contain a common edge (reason "edge": the edge belongs to two
+// of them) or a common vertex (reason "vertex": every edge of the candidates
+// at that vertex belongs to two of them).
+bool crossesSharedEdge(const Case& c, const RayAmbiguity& a);
+
+// The ray crosses only the outer border of a mesh: its hit candidates are one
+// triangle (reason "edge") or triangles around a common vertex whose fan is
+// open (reason "vertex"). Whether such a ray hits is not specified: a miss
+// is legal whatever the candidate list says.
+bool crossesBorderOnly(const Case& c, const RayAmbiguity& a);
+
+}  // namespace rayspec

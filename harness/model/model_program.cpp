@@ -1,0 +1,168 @@
+#include "model/model_program.h"
+
+#include <algorithm>
+
+#include "results/record_layout.h"
+
+namespace rayspec {
+
+const std::vector<std::string>& builtinNames() {
+  static const std::vector<std::string> names = {
+      "launch_id_x", "launch_id_y", "launch_size_x", "launch_size_y", "primitive_id", "instance_id",
+      "instance_custom_index", "geometry_index", "hit_kind", "hit_t", "hit", "barycentrics",
+      "aabb_min", "aabb_max", "object_ray_origin", "object_ray_direction", "ray_tmin", "ray_tmax",
+      "incoming_ray_flags", "world_ray_origin", "world_ray_direction", "hit_position",
+      "payload.color", "payload.value", "depth", "child.color", "child.value", "call.position",
+      "call.normal", "call.color", "call.value", "callee.color", "callee.value"};
+  return names;
+}
+
+namespace {
+
+struct OpName { const char* name; OpCode op; };
+const OpName kOps[] = {
+    {"sphere_hit", OpCode::SphereHit}, {"sphere_near", OpCode::SphereNear},
+    {"sphere_far", OpCode::SphereFar}, {"shader_record_uint", OpCode::RecordUint},
+    {"shader_record_float", OpCode::RecordFloat}, {"and", OpCode::And}, {"or", OpCode::Or},
+    {"not", OpCode::Not}, {"odd", OpCode::Odd}, {"even", OpCode::Even}, {"float", OpCode::ToFloat},
+    {"uint", OpCode::ToUint}, {"vec2", OpCode::Vec}, {"vec3", OpCode::Vec}, {"vec4", OpCode::Vec},
+    {"x", OpCode::X}, {"y", OpCode::Y}, {"z", OpCode::Z}, {"w", OpCode::W}, {"dot", OpCode::Dot},
+    {"length", OpCode::Length}, {"normalize", OpCode::Normalize}, {"eq", OpCode::Eq},
+    {"ne", OpCode::Ne}, {"lt", OpCode::Lt}, {"le", OpCode::Le}, {"gt", OpCode::Gt},
+    {"ge", OpCode::Ge}, {"mod", OpCode::Mod}, {"add", OpCode::Add}, {"sub", OpCode::Sub},
+    {"mul", OpCode::Mul}, {"div", OpCode::Div}, {"min", OpCode::Min}, {"max", OpCode::Max}};
+
+struct Compiler {
+  const Plan& plan;
+  CPipeline& out;
+
+  CExpr expr(const Expr& e) {
+    CExpr r;
+    r.kind = e.kind;
+    r.type = e.type;
+    r.src = &e;
+    switch (e.kind) {
+      case Expr::Kind::Literal:
+        if (e.type == ValueType::Uint) r.literal.u = static_cast<uint32_t>(e.literal.empty() ? 0 : e.literal[0]);
+        else if (e.type == ValueType::Bool) r.literal.b = !e.literal.empty() && e.literal[0] != 0;
+        else
+          for (size_t k = 0; k < e.literal.size() && k < 4; ++k) r.literal.f[k] = static_cast<float>(e.literal[k]);
+        break;
+      case Expr::Kind::Builtin: {
+        const auto& names = builtinNames();
+        const auto it = std::find(names.begin(), names.end(), e.name);
+        if (it != names.end()) {
+          r.builtin = static_cast<uint8_t>(it - names.begin());
+          out.read_bits |= uint64_t{1} << r.builtin;
+        }
+        break;
+      }
+      case Expr::Kind::Op:
+        for (const OpName& o : kOps)
+          if (e.name == o.name) r.op = o.op;
+        if (r.op == OpCode::SphereHit || r.op == OpCode::SphereNear || r.op == OpCode::SphereFar)
+          out.reads_sphere = true;
+        if (r.op == OpCode::Vec) r.index = e.name == "vec2" ? 2 : e.name == "vec3" ? 3 : 4;
+        if (r.op == OpCode::RecordUint || r.op == OpCode::RecordFloat)
+          r.index = e.args.empty() ? 0 : static_cast<uint32_t>(e.args[0].literal.empty() ? 0 : e.args[0].literal[0]);
+        for (const Expr& a : e.args) r.args.push_back(expr(a));
+        break;
+    }
+    return r;
+  }
+
+  static Slot slotOf(const std::string& f) {
+    if (f == "color") return Slot::Color;
+    if (f == "value") return Slot::Value;
+    if (f == "position") return Slot::Position;
+    if (f == "normal") return Slot::Normal;
+    return Slot::None;
+  }
+
+  CProgram program(const Program& p) {
+    CProgram r;
+    r.reserve(p.size());
+    for (const Stmt& s : p) r.push_back(stmt(s));
+    return r;
+  }
+
+  CStmt stmt(const Stmt& s) {
+    CStmt r;
+    r.kind = s.kind;
+    if (s.kind == Stmt::Kind::Count) {
+      const auto it = std::find(plan.counters.begin(), plan.counters.end(), s.counter);
+      r.counter = it == plan.counters.end() ? -1 : static_cast<int>(it - plan.counters.begin());
+    }
+    for (const auto& [field, e] : s.assigns) {
+      CAssign a;
+      a.value = expr(e);
+      if (s.kind == Stmt::Kind::Record) {
+        a.field = recordFieldIndex(field);
+        if (a.field >= 0 && recordFields()[a.field].automatic) a.field = -1;
+      } else {
+        a.slot = slotOf(field);
+      }
+      r.assigns.push_back(std::move(a));
+    }
+    if (s.kind == Stmt::Kind::If) r.cond = expr(s.cond);
+    if (s.kind == Stmt::Kind::Report) {
+      r.t = expr(s.t);
+      r.hit_kind = expr(s.hit_kind);
+      if (!s.attribute.empty()) { r.has_attribute = true; r.attribute = expr(s.attribute[0]); }
+    }
+    if (s.kind == Stmt::Kind::Call) r.call_index = expr(s.call_index);
+    if (s.kind == Stmt::Kind::Light)
+      r.light = s.light == "point" ? LightKind::Point : s.light == "spot" ? LightKind::Spot : LightKind::Directional;
+    if (s.kind == Stmt::Kind::Trace) {
+      const std::vector<Expr>* a[CStmt::kTraceArgs] = {&s.trace.origin, &s.trace.direction, &s.trace.tmin,
+                                                      &s.trace.tmax, &s.trace.flags, &s.trace.cull_mask,
+                                                      &s.trace.sbt_offset, &s.trace.sbt_stride, &s.trace.miss};
+      for (int k = 0; k < CStmt::kTraceArgs; ++k)
+        if (!a[k]->empty()) { r.has[k] = true; r.args[k] = expr(a[k]->front()); }
+    }
+    r.then_ = program(s.then_);
+    r.else_ = program(s.else_);
+    return r;
+  }
+};
+
+}  // namespace
+
+CountsOnly countsOnly(const CProgram& p) {
+  CountsOnly r;
+  for (const CStmt& s : p)
+    if (s.kind != Stmt::Kind::Count) return r;
+  r.yes = true;
+  for (const CStmt& s : p)
+    if (s.counter >= 0) r.counters.push_back(s.counter);
+  return r;
+}
+
+CPipeline compilePipeline(const Case& c, const Plan& plan) {
+  CPipeline out;
+  Compiler k{plan, out};
+  const Pipeline& p = c.pipeline;
+  out.raygen = k.program(p.raygen);
+  for (const Program& m : p.miss) {
+    out.miss.push_back(k.program(m));
+    out.miss_counts.push_back(countsOnly(out.miss.back()));
+  }
+  for (const Program& m : p.callables) out.callables.push_back(k.program(m));
+  out.hit_programs.reserve(p.hit_groups.size() * 3);  // stable addresses for the groups
+  for (const HitGroup& g : p.hit_groups) {
+    CHitGroup cg;
+    auto add = [&](const std::optional<Program>& prog) -> const CProgram* {
+      if (!prog) return nullptr;
+      out.hit_programs.push_back(k.program(*prog));
+      return &out.hit_programs.back();
+    };
+    cg.closest_hit = add(g.closest_hit);
+    cg.any_hit = add(g.any_hit);
+    cg.intersection = add(g.intersection);
+    if (cg.closest_hit) cg.closest_hit_counts = countsOnly(*cg.closest_hit);
+    out.groups.push_back(cg);
+  }
+  return out;
+}
+
+}  // namespace rayspec

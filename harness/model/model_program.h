@@ -1,0 +1,106 @@
+// Stage programs compiled once per run into the form the model's interpreter
+// executes: every name (built-in, op, counter, record field, payload / call
+// data field, light) resolved to a number, literals pre-converted, so that the
+// hot path compares no strings and allocates nothing.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "case/case.h"
+#include "plan/plan.h"
+
+namespace rayspec {
+
+struct Val {
+  std::array<float, 4> f{};
+  uint32_t u = 0;
+  bool b = false;
+};
+
+// Built-ins, in the order of builtinNames().
+enum Builtin : uint8_t {
+  kBiLaunchX, kBiLaunchY, kBiLaunchW, kBiLaunchH, kBiPrimitive, kBiInstance, kBiCustomIndex,
+  kBiGeometry, kBiHitKind, kBiHitT, kBiHit, kBiBarycentrics, kBiAabbMin, kBiAabbMax,
+  kBiObjectOrigin, kBiObjectDirection, kBiTmin, kBiTmax, kBiFlags, kBiWorldOrigin,
+  kBiWorldDirection, kBiHitPosition, kBiPayloadColor, kBiPayloadValue, kBiDepth, kBiChildColor,
+  kBiChildValue, kBiCallPosition, kBiCallNormal, kBiCallColor, kBiCallValue, kBiCalleeColor,
+  kBiCalleeValue, kBiCount, kBiUnknown = 0xFF
+};
+const std::vector<std::string>& builtinNames();
+
+enum class OpCode : uint8_t {
+  SphereHit, SphereNear, SphereFar, RecordUint, RecordFloat, And, Or, Not, Odd, Even, ToFloat,
+  ToUint, Vec, X, Y, Z, W, Dot, Length, Normalize, Eq, Ne, Lt, Le, Gt, Ge, Mod, Add, Sub, Mul,
+  Div, Min, Max, Unknown
+};
+
+struct CExpr {
+  Expr::Kind kind = Expr::Kind::Literal;
+  ValueType type = ValueType::Uint;
+  uint8_t builtin = kBiUnknown;   // Builtin
+  OpCode op = OpCode::Unknown;    // Op
+  uint32_t index = 0;             // RecordUint/RecordFloat: word; Vec: component count
+  Val literal;                    // Literal
+  std::vector<CExpr> args;
+  const Expr* src = nullptr;      // for error messages
+};
+
+enum class Slot : uint8_t { Color, Value, Position, Normal, None };
+enum class LightKind : uint8_t { Point, Spot, Directional };
+
+struct CAssign {
+  int field = -1;  // Record: record field index (-1: unknown or automatic)
+  Slot slot = Slot::None;  // SetPayload / SetCall / Call
+  CExpr value;
+};
+
+struct CStmt {
+  Stmt::Kind kind = Stmt::Kind::Count;
+  int counter = -1;  // Count: index in plan.counters (-1: not kept)
+  std::vector<CAssign> assigns;
+  CExpr cond, t, hit_kind, call_index;
+  bool has_attribute = false;
+  CExpr attribute;
+  LightKind light = LightKind::Point;
+  // Trace: 9 optional arguments (origin, direction, tmin, tmax, flags,
+  // cull_mask, sbt_offset, sbt_stride, miss).
+  enum { kOrigin, kDirection, kTmin, kTmax, kFlags, kCullMask, kSbtOffset, kSbtStride, kMiss, kTraceArgs };
+  std::array<bool, kTraceArgs> has{};
+  std::array<CExpr, kTraceArgs> args;
+  std::vector<CStmt> then_, else_;
+};
+
+using CProgram = std::vector<CStmt>;
+
+// A program of nothing but `count` statements: the counters it bumps (a
+// closest-hit or miss like that runs without a stage environment).
+struct CountsOnly {
+  bool yes = false;
+  std::vector<int> counters;  // kept counters only
+};
+CountsOnly countsOnly(const CProgram& p);
+
+struct CHitGroup {
+  const CProgram* closest_hit = nullptr;
+  const CProgram* any_hit = nullptr;
+  const CProgram* intersection = nullptr;
+  CountsOnly closest_hit_counts;
+};
+
+struct CPipeline {
+  CProgram raygen;
+  std::vector<CProgram> miss, callables;
+  std::vector<CountsOnly> miss_counts;
+  std::vector<CProgram> hit_programs;  // storage for the groups' programs
+  std::vector<CHitGroup> groups;
+  uint64_t read_bits = 0;  // bit (1 << Builtin) for every built-in any program reads
+  bool reads_sphere = false;  // sphere_* ops (read the object-space ray and the box)
+  bool reads(Builtin b) const { return (read_bits >> b) & 1u; }
+};
+
+CPipeline compilePipeline(const Case& c, const Plan& plan);
+
+}  // namespace rayspec

@@ -1,0 +1,203 @@
+// The rayspec command line run as a program, as a person or CI would.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+namespace fs = std::filesystem;
+
+const std::string kCases = RAYSPEC_SOURCE_DIR "/cases/";
+
+std::string caseArg(const std::string& name) { return " --case " + kCases + name + ".yaml"; }
+
+// Runs a shell command; its output goes to log. Returns the exit status.
+int sh(const std::string& command, const std::string& log) {
+  const int s = std::system((command + " > " + log + " 2>&1").c_str());
+  return WIFEXITED(s) ? WEXITSTATUS(s) : -1;
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string fresh(const std::string& name) {
+  const std::string dir = std::string(RAYSPEC_TEST_OUT) + "/" + name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// results.csv as deqp-runner reads it: name,Status,duration per line, no header.
+std::map<std::string, std::string> readDeqpCsv(const std::string& path) {
+  std::map<std::string, std::string> status;
+  const std::regex line(R"(^([^,\s]+),(Pass|Fail|Warn|Skip|Crash|Timeout|Flake|ExpectedFail|UnexpectedPass|KnownFlake|Missing),([0-9]+(\.[0-9]+)?([eE][-+]?[0-9]+)?)$)");
+  std::ifstream in(path);
+  std::string text;
+  int n = 0;
+  while (std::getline(in, text)) {
+    ++n;
+    std::smatch m;
+    EXPECT_TRUE(std::regex_match(text, m, line)) << path << ":" << n << ": not deqp-runner CSV: '" << text << "'";
+    if (!m.empty()) status[m[1]] = m[2];
+  }
+  return status;
+}
+
+TEST(Isolation, CrashIsACrashAndTheNextCaseStillRuns) {
+  const std::string out = fresh("crash");
+  const int rc = sh(std::string(RAYSPEC_BIN) + " run --no-validation --plant-fault crash --plant-fault-in 'results/*'" +
+                        caseArg("results/miss-xor-closest-hit") + caseArg("anyhit/ignore-odd-primitives") +
+                        " --out " + out,
+                    out + "/log.txt");
+  EXPECT_EQ(rc, 1) << slurp(out + "/log.txt");
+  const auto status = readDeqpCsv(out + "/results.csv");
+  EXPECT_EQ(status.at("results/miss-xor-closest-hit"), "Crash") << slurp(out + "/log.txt");
+  EXPECT_EQ(status.at("anyhit/ignore-odd-primitives"), "Pass") << slurp(out + "/log.txt");
+  // Nothing already measured is lost: the crashed case's model bundle, the next case's both.
+  EXPECT_TRUE(fs::exists(out + "/results/miss-xor-closest-hit/model/results.json"));
+  EXPECT_TRUE(fs::exists(out + "/anyhit/ignore-odd-primitives/device/results.json"));
+  const auto summary = nlohmann::json::parse(slurp(out + "/summary.json"));
+  EXPECT_NE(summary["cases"][0]["headline"].get<std::string>().find("signal 11"), std::string::npos)
+      << summary["cases"][0]["headline"];
+}
+
+TEST(Isolation, HangIsATimeout) {
+  const std::string out = fresh("hang");
+  const auto start = std::chrono::steady_clock::now();
+  const int rc = sh(std::string(RAYSPEC_BIN) + " run --no-validation --plant-fault hang --timeout 3" +
+                        caseArg("results/miss-xor-closest-hit") + " --out " + out,
+                    out + "/log.txt");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(rc, 1) << slurp(out + "/log.txt");
+  EXPECT_EQ(readDeqpCsv(out + "/results.csv").at("results/miss-xor-closest-hit"), "Timeout");
+  EXPECT_LT(seconds, 60.0);
+}
+
+TEST(Isolation, ProcessFaultNeedsIsolation) {
+  const std::string out = fresh("no-isolation");
+  EXPECT_EQ(sh(std::string(RAYSPEC_BIN) + " run --no-isolation --plant-fault crash" +
+                   caseArg("results/miss-xor-closest-hit") + " --out " + out,
+               out + "/log.txt"),
+            2);
+}
+
+TEST(Isolation, LiveProgressLineOnlyOnATerminal) {
+  const std::string out = fresh("progress");
+  const std::string run = std::string(RAYSPEC_BIN) + " run --no-validation" + caseArg("results/miss-xor-closest-hit") +
+                          " --out " + out;
+  ASSERT_EQ(sh(run, out + "/pipe.txt"), 0);
+  EXPECT_EQ(slurp(out + "/pipe.txt").find("running"), std::string::npos) << "no live line into a pipe";
+  // util-linux script(1) gives the run a pseudo-terminal.
+  ASSERT_EQ(sh("script -qec \"" + run + "\" /dev/null", out + "/tty.txt"), 0) << slurp(out + "/tty.txt");
+  EXPECT_NE(slurp(out + "/tty.txt").find("[1/1] running results/miss-xor-closest-hit..."), std::string::npos)
+      << slurp(out + "/tty.txt");
+}
+
+TEST(Compare, SavedRunsAndBundles) {
+  const std::string run = fresh("compare-run"), faulty = fresh("compare-faulty");
+  ASSERT_EQ(sh(std::string(RAYSPEC_BIN) + " run --no-validation" + caseArg("anyhit/ignore-odd-primitives") +
+                   caseArg("results/miss-xor-closest-hit") + " --out " + run,
+               run + "/log.txt"),
+            0)
+      << slurp(run + "/log.txt");
+  ASSERT_EQ(sh(std::string(RAYSPEC_BIN) + " run --no-validation --plant-fault shift-t" +
+                   caseArg("anyhit/ignore-odd-primitives") + caseArg("results/miss-xor-closest-hit") + " --out " +
+                   faulty,
+               faulty + "/log.txt"),
+            1)
+      << slurp(faulty + "/log.txt");
+
+  // A run folder against itself: every case's device against the same device.
+  const std::string same = fresh("compare-same");
+  EXPECT_EQ(sh(std::string(RAYSPEC_BIN) + " compare " + run + " " + run + " --out " + same, same + "/log.txt"), 0)
+      << slurp(same + "/log.txt");
+  auto status = readDeqpCsv(same + "/results.csv");
+  EXPECT_EQ(status.size(), 2u);
+  EXPECT_EQ(status["anyhit/ignore-odd-primitives"], "Pass");
+
+  // Today's faulty driver against yesterday's good one, cases matched by name.
+  const std::string drivers = fresh("compare-drivers");
+  EXPECT_EQ(sh(std::string(RAYSPEC_BIN) + " compare " + faulty + " " + run + " --out " + drivers,
+               drivers + "/log.txt"),
+            1);
+  status = readDeqpCsv(drivers + "/results.csv");
+  EXPECT_EQ(status["anyhit/ignore-odd-primitives"], "Fail") << slurp(drivers + "/log.txt");
+  EXPECT_NE(slurp(drivers + "/summary.txt").find("R-PREC"), std::string::npos);
+
+  // One bundle against another: the saved faulty device against its model.
+  const std::string bundles = fresh("compare-bundles");
+  const std::string c = "/anyhit/ignore-odd-primitives";
+  EXPECT_EQ(sh(std::string(RAYSPEC_BIN) + " compare " + faulty + c + "/device " + faulty + c + "/model --out " + bundles,
+               bundles + "/log.txt"),
+            1);
+  EXPECT_EQ(readDeqpCsv(bundles + "/results.csv")["anyhit/ignore-odd-primitives"], "Fail")
+      << slurp(bundles + "/log.txt");
+}
+
+// A run with a planted failure, whose reports the tests below read.
+class ReportRun : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    out_ = fresh("report");
+    rc_ = sh(std::string(RAYSPEC_BIN) + " run --plant-fault swap-primitive-id --plant-fault-in 'anyhit/*'" +
+                 caseArg("anyhit/ignore-odd-primitives") + caseArg("results/miss-xor-closest-hit") +
+                 caseArg("watertight/shared-edges") + " --out " + out_,
+             out_ + "/log.txt");
+  }
+  static std::string out_;
+  static int rc_;
+};
+std::string ReportRun::out_;
+int ReportRun::rc_ = -1;
+
+TEST_F(ReportRun, ReportHtmlOpensInChromiumWithEveryImageShown) {
+  ASSERT_EQ(rc_, 1) << slurp(out_ + "/log.txt");
+  const std::string c = out_ + "/anyhit/ignore-odd-primitives";
+  for (const char* side : {"/device/", "/model/", "/diff/"})
+    ASSERT_TRUE(fs::exists(c + side + "primitive.png")) << c + side << "primitive.png";
+  const std::string profile = fresh("chromium-profile");
+  const std::string dom = out_ + "/dom.html";
+  const int rc = sh("chromium --headless --no-sandbox --disable-gpu --disable-background-networking "
+                    "--disable-component-update --disable-sync --no-first-run --allow-file-access-from-files "
+                    "--virtual-time-budget=5000 --user-data-dir=" + profile + " --dump-dom file://" + out_ +
+                        "/report.html > " + dom + " 2> " + out_ + "/chromium-stderr.txt; cat " + dom,
+                    out_ + "/chromium-log.txt");
+  ASSERT_EQ(rc, 0) << slurp(out_ + "/chromium-stderr.txt");
+  const std::string text = slurp(dom);
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(text, m, std::regex(R"(<body[^>]*>)"))) << text.substr(0, 400);
+  const std::string body = m.str();
+  EXPECT_NE(body.find("data-checked=\"1\""), std::string::npos) << "the page's check never ran: " << body;
+  EXPECT_NE(body.find("data-broken-images=\"0\""), std::string::npos) << body;
+  EXPECT_NE(body.find("data-script-errors=\"0\""), std::string::npos) << body;
+  std::smatch images;
+  ASSERT_TRUE(std::regex_search(body, images, std::regex(R"re(data-images="([0-9]+)")re"))) << body;
+  EXPECT_GE(std::stoi(images[1]), 3) << "device, model and difference images of the failing case";
+  // The failing case comes first, with its per-ray table.
+  EXPECT_LT(text.find("anyhit/ignore-odd-primitives"), text.find("results/miss-xor-closest-hit"));
+  EXPECT_NE(text.find("<th>device</th><th>model</th>"), std::string::npos);
+}
+
+TEST_F(ReportRun, ResultsCsvReadsBackAsDeqpRunnerCsv) {
+  ASSERT_EQ(rc_, 1) << slurp(out_ + "/log.txt");
+  const auto status = readDeqpCsv(out_ + "/results.csv");
+  ASSERT_EQ(status.size(), 3u) << slurp(out_ + "/results.csv");
+  EXPECT_EQ(status.at("anyhit/ignore-odd-primitives"), "Fail");
+  EXPECT_EQ(status.at("results/miss-xor-closest-hit"), "Pass");
+  EXPECT_EQ(status.at("watertight/shared-edges"), "Pass");
+}
+
+}  // namespace
