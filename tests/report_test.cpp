@@ -5,6 +5,8 @@
 #include <regex>
 #include <sstream>
 
+#include "report/baseline.h"
+#include "report/run_summary.h"
 #include "report/write_reports.h"
 
 namespace rayspec {
@@ -57,6 +59,68 @@ TEST(Reports, HtmlPutsFailingCasesFirstEscapesAndCarriesItsSelfCheck) {
   EXPECT_EQ(html.find("<odd>"), std::string::npos);
   EXPECT_NE(html.find("brokenImages"), std::string::npos) << "the self-check a headless browser reads";
   EXPECT_NE(html.find("<td>primitive_id</td><td>3</td><td>2</td>"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace rayspec
+
+namespace rayspec {
+namespace {
+
+std::string writeTemp(const std::string& name, const std::string& text) {
+  const std::string path = testing::TempDir() + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(Baseline, ExpectedFailureDoesNotFailTheRunAndIsReportedAsExpected) {
+  std::string error;
+  const Baseline b = loadBaseline(
+      writeTemp("baseline.csv", "# lavapipe known failures\nfam/broken,Fail  # driver bug\nfam/fixed,Fail\n"), &error);
+  ASSERT_EQ(error, "");
+  ASSERT_EQ(b.expected.size(), 2u);
+  CaseOutcome broken{"fam/broken", {}, Status::Fail, "Fail: x"};
+  CaseOutcome fixed{"fam/fixed", {}, Status::Pass, "Pass"};
+  CaseOutcome other{"fam/other", {}, Status::Fail, "Fail: y"};
+  applyBaseline(b, broken);
+  applyBaseline(b, fixed);
+  applyBaseline(b, other);
+  EXPECT_EQ(broken.baseline, BaselineMatch::Expected);
+  EXPECT_EQ(fixed.baseline, BaselineMatch::UnexpectedPass);
+  EXPECT_EQ(other.baseline, BaselineMatch::None);
+
+  RunSummary expected_only(2);
+  expected_only.add(broken);
+  expected_only.add(fixed);
+  EXPECT_FALSE(expected_only.failed());
+  RunSummary with_new_failure(1);
+  with_new_failure.add(other);
+  EXPECT_TRUE(with_new_failure.failed()) << "a failure the baseline does not list fails the run";
+
+  const std::string csv = testing::TempDir() + "/baseline-results.csv";
+  ASSERT_EQ(writeResultsCsv({broken, fixed, other}, csv), "");
+  std::ifstream in(csv);
+  std::string a, c, d;
+  std::getline(in, a);
+  std::getline(in, c);
+  std::getline(in, d);
+  EXPECT_EQ(a.rfind("fam/broken,ExpectedFail,", 0), 0u) << a;
+  EXPECT_EQ(c.rfind("fam/fixed,UnexpectedImprovement(Pass),", 0), 0u) << c;
+  EXPECT_EQ(d.rfind("fam/other,Fail,", 0), 0u) << d;
+}
+
+TEST(Baseline, ADifferentBadStatusIsNotExpected) {
+  std::string error;
+  const Baseline b = loadBaseline(writeTemp("baseline2.csv", "fam/a,QualityWarning\n"), &error);
+  CaseOutcome crashed{"fam/a", {}, Status::Crash, "Crash"};
+  applyBaseline(b, crashed);
+  EXPECT_EQ(crashed.baseline, BaselineMatch::None);
+}
+
+TEST(Baseline, MalformedLineNamesFileAndLine) {
+  std::string error;
+  loadBaseline(writeTemp("baseline3.csv", "fam/a,Fail\nfam/b,Broken\n"), &error);
+  EXPECT_NE(error.find("baseline3.csv:2:"), std::string::npos) << error;
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "compare/compare_results.h"
 #include "model/model_backend.h"
 #include "plan/plan.h"
+#include "report/baseline.h"
 #include "report/rule_catalog.h"
 #include "report/run_summary.h"
 #include "report/write_reports.h"
@@ -98,6 +99,9 @@ CaseOutcome runOne(const Case& c, const RunOptions& opt, VulkanBackend* backend,
     const Results& only = want_device ? device : model;
     Verdict v = backendVerdict(only);
     for (const std::string& m : only.validation_messages) v.add({Status::Fail, "validation", m, {}, 0});
+    // Nothing was compared, so the case did not pass: it was not judged.
+    v.add({Status::NotSupported, "no-reference",
+           std::string("only the ") + (want_device ? "device" : "model") + " ran: nothing was compared", {}, 0});
     out.name = c.name;
     out.rules = c.rules;
     out.device_seconds = device.seconds;
@@ -174,6 +178,17 @@ int runCases(const RunOptions& opt) {
   }
   if (!opt.no_model) std::printf("Model: embree, %s tier\n", opt.model_tier.c_str());
 
+  Baseline baseline;
+  if (!opt.baseline.empty()) {
+    std::string baseline_error;
+    baseline = loadBaseline(opt.baseline, &baseline_error);
+    if (!baseline_error.empty()) {
+      std::fprintf(stderr, "rayspec run: %s\n", baseline_error.c_str());
+      return 2;
+    }
+    std::printf("Baseline: %s (%zu known results)\n", opt.baseline.c_str(), baseline.expected.size());
+  }
+
   RunSummary summary(files.size());
   std::vector<std::pair<std::string, std::vector<std::string>>> case_rules;
   for (const CaseFile& f : files) {
@@ -198,6 +213,7 @@ int runCases(const RunOptions& opt) {
     }
     outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (info.device.empty() && !outcome.device_name.empty()) info.device = outcome.device_name;
+    applyBaseline(baseline, outcome);
     summary.add(outcome);
     // The reports so far: a run cut short still leaves them.
     info.coverage = ruleCoverage(info.catalog, case_rules);

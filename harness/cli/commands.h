@@ -31,6 +31,7 @@ struct RunOptions {
   std::string plant_fault;       // test only: fault/planted_fault.h
   std::string plant_fault_in = "*";  // only in cases whose name matches this glob
   std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
+  std::string baseline;          // known failures of this driver (report/baseline.h)
 };
 
 struct ShowOptions {

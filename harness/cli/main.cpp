@@ -21,6 +21,9 @@ int main(int argc, char** argv) {
   run->add_option("--case", run_opt.case_files, "Run these case files (instead of --cases)");
   run->add_option("--model", run_opt.model_tier, "Model precision tier: fast, robust or exact")
       ->check(CLI::IsMember({"fast", "robust", "exact"}))->capture_default_str();
+  run->add_option("--baseline", run_opt.baseline,
+                  "Known failures of this driver (case,Status lines): matching results do not fail the run");
+  run->add_option("--rules", run_opt.rules_file, "Rule catalog (references/spec-rules.yaml)")->capture_default_str();
   run->add_flag("--no-model", run_opt.no_model, "Run the device only");
   run->add_flag("--no-device", run_opt.no_device, "Run the model only");
   run->add_flag("--no-validation", run_opt.no_validation, "Do not load the Khronos validation layer");

@@ -9,8 +9,20 @@
 namespace rayspec {
 namespace {
 
-// The rule a mismatch of a field points at first.
-std::string ruleForField(const std::string& field) {
+// The rule a mismatch of a field points at: the field's own rule when the
+// case checks it, otherwise the rules the case says it checks.
+std::string fieldRule(const std::string& field);
+std::string ruleForField(const std::string& field, const std::vector<std::string>& case_rules) {
+  const std::string own = fieldRule(field);
+  if (case_rules.empty()) return own;
+  for (const std::string& r : case_rules)
+    if (r == own) return own;
+  std::string joined;
+  for (const std::string& r : case_rules) joined += (joined.empty() ? "" : "/") + r;
+  return joined;
+}
+
+std::string fieldRule(const std::string& field) {
   static const std::map<std::string, std::string> rules = {
       {"hit", "R-MISS-XOR-CHIT"}, {"miss_runs", "R-MISS-XOR-CHIT"}, {"closest_hit_runs", "R-MISS-XOR-CHIT"},
       {"callable_runs", "R-CALLABLE"}, {"raygen_runs", "R-BUILTIN"}, {"hit_kind", "R-HITKIND-TRI"},
@@ -104,7 +116,7 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
       if (same) continue;
       FindingBuilder& b = mismatches[f->name];
       if (b.finding.message.empty())
-        b.finding = {Status::Fail, ruleForField(f->name),
+        b.finding = {Status::Fail, ruleForField(f->name, c.rules),
                      std::string("per-ray field '") + f->name + "' differs from the model on clear rays"};
       b.addRay(ray);
     }

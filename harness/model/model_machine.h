@@ -125,6 +125,8 @@ class Machine {
   Committed traverse(const TraceRay& r, uint32_t flags, uint32_t depth, Payload& payload);
   void shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Committed& best, Payload& payload);
   void decide(Traversal& tr, const std::vector<ModelCandidate>& cands, const int8_t* force, Payload& payload);
+  Committed sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands, const int8_t* force,
+                    long prefer, long first, const Payload& payloadIn);
   std::vector<Committed> whatIf(const Traversal& actual, const std::vector<ModelCandidate>& cands,
                                 const std::vector<size_t>& unsure, const Payload& payloadIn);
   void runRaygen();

@@ -1,9 +1,11 @@
 // traceRayEXT in the model: Embree enumerates, the model decides (see the
 // order documented in model_backend.h), then closest-hit or miss runs.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <set>
 
 #include "model/model_machine.h"
 #include "model/watertight.h"
@@ -26,8 +28,20 @@ struct Traversal {
   const SbtRecord* cur_rec = nullptr;
   const CHitGroup* cur_group = nullptr;
   const ModelCandidate* cur = nullptr;
+  size_t cur_index = 0;
+  // Exact tier, sandboxed what-if runs (R-TIE, R-TOFH): `prefer` is the
+  // candidate that wins every tie with the committed hit (and never loses
+  // one), `first` the candidate processed before all others; -1: none.
+  long prefer = -1, first = -1;
+  uint32_t prefer_key[3] = {0, 0, 0};
+  // The actual run of the exact tier: every report (candidate index, t) in [tmin, tmax].
+  std::vector<std::pair<size_t, double>>* reports = nullptr;
 
   Traversal(Machine& machine, const TraceRay& r) : m(machine), ray(r) {}
+  bool isPreferred(uint32_t i, uint32_t g, uint32_t p) const {
+    return prefer >= 0 && prefer_key[0] == i && prefer_key[1] == g && prefer_key[2] == p;
+  }
+  bool ties(double t) const { return best.valid && std::fabs(t - best.t) <= tol(t); }
   double tol(double t) const {
     const double om = std::max({std::fabs(ray.origin[0]), std::fabs(ray.origin[1]), std::fabs(ray.origin[2])});
     const double dm = std::max({std::fabs(ray.direction[0]), std::fabs(ray.direction[1]), std::fabs(ray.direction[2])});
@@ -146,7 +160,15 @@ Flow Machine::report(const CStmt& s, StageEnv& env) {
   bool accepted = false;
   Flow flow = Flow::Continue;
   // R-ISECT-REPORT, R-CAND-AABB-CLOSED: tmin <= t <= current tmax.
-  if (t >= tr->ray.tmin && static_cast<double>(t) <= tr->tmax_cur) {
+  bool inside = t >= tr->ray.tmin && static_cast<double>(t) <= tr->tmax_cur;
+  if (tr->reports && t >= tr->ray.tmin && t <= tr->ray.tmax + tr->tol(t)) tr->reports->push_back({tr->cur_index, t});
+  // What-if run preferring one candidate (R-TIE): it wins every tie, and a
+  // committed preferred hit loses none.
+  if (tr->prefer >= 0 && t >= tr->ray.tmin && tr->ties(t)) {
+    if (tr->cur_index == static_cast<size_t>(tr->prefer)) inside = true;
+    else if (tr->isPreferred(tr->best.instance, tr->best.geometry, tr->best.primitive)) inside = false;
+  }
+  if (inside) {
     HitView hv = *env.hit;
     hv.t = t;
     hv.hit_kind = kind;
@@ -340,7 +362,11 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
   const ModelScene& scene = *sh_.scene;
   const TraceRay& r = tr.ray;
   const uint32_t depth = tr.depth;
-  for (size_t k = 0; k < cands.size(); ++k) {
+  const size_t n = cands.size();
+  const size_t first = tr.first >= 0 ? static_cast<size_t>(tr.first) : 0;
+  for (size_t pos = 0; pos < n; ++pos) {
+    // R-TOFH what-if: `first` ahead of all others, the rest in order.
+    const size_t k = tr.first < 0 ? pos : pos == 0 ? first : pos <= first ? pos - 1 : pos;
     const ModelCandidate& cand = cands[k];
     if (tr.stop) break;
     const ModelInstance& mi = scene.instances[cand.instance];
@@ -352,11 +378,14 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
     const CHitGroup* grp = groupOf(*sh_.programs, rec);
     if (cand.aabb) {
       if (force && force[k] == 0) continue;
-      if (cand.t > tr.tmax_cur) continue;
+      // A preferred box entered at the committed t (within the error bound) still runs.
+      if (cand.t > tr.tmax_cur && !(tr.prefer == static_cast<long>(k) && tr.ties(cand.t))) continue;
       if (!grp || !grp->intersection) continue;
       HitView hv = viewOf(scene, c, r, cand.instance, cand.geometry, cand.primitive);
       tr.cur = &cand;
+      tr.cur_index = k;
       tr.cur_opaque = opaque;
+      if (tr.reports) tr.reports->push_back({k, NAN});  // it ran (the exact tier's tie check)
       tr.cur_rec = rec;
       tr.cur_group = grp;
       bumpRuns(kRunsIntersection);
@@ -374,11 +403,17 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
     }
     if (!(force && force[k] >= 0 ? force[k] == 1 : cand.hit)) continue;
     bool inside = cand.t > tr.tmin && cand.t < tr.tmax_cur;
-    // Exact tier, R-TIE: a tie with the committed hit goes to the smaller key.
-    if (!inside && tr.exact && tr.best.valid && std::fabs(cand.t - tr.best.t) <= tr.tol(cand.t) &&
-        keyLess(cand.instance, cand.geometry, cand.primitive, tr.best.instance, tr.best.geometry,
-                tr.best.primitive))
+    const bool tie = tr.exact && tr.ties(cand.t);
+    const bool bestPreferred = tr.isPreferred(tr.best.instance, tr.best.geometry, tr.best.primitive);
+    if (tie && (tr.prefer == static_cast<long>(k) || bestPreferred)) {
+      // What-if run preferring one candidate (R-TIE).
+      inside = tr.prefer == static_cast<long>(k) && cand.t > tr.tmin;
+    } else if (!inside && tie &&
+               keyLess(cand.instance, cand.geometry, cand.primitive, tr.best.instance, tr.best.geometry,
+                       tr.best.primitive)) {
+      // Exact tier, R-TIE: a tie with the committed hit goes to the smaller key.
       inside = true;
+    }
     if (!inside) continue;
     const Facing f = facing(scene, cand, r, tr.flags);
     if (f.culled) continue;
@@ -410,7 +445,6 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
 // Every candidate from Embree, decided by the model in order (see
 // model_backend.h), then the exact tier's ambiguity check.
 Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, Payload& payload) {
-  const Case& c = *sh_.c;
   const ModelScene& scene = *sh_.scene;
   Traversal tr(*this, r);
   tr.flags = flags;
@@ -423,6 +457,7 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
 
   RTCRayHit rh = embreeRay(r, tr.flags);
   std::vector<ModelCandidate>* cands = nullptr;
+  std::vector<std::pair<size_t, double>> reports;  // exact tier: every report of the actual run
   if (validRay(r, rh)) {
     if (cand_pool_.size() < depth) cand_pool_.resize(depth);
     cands = &cand_pool_[depth - 1];
@@ -443,7 +478,9 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
       if (a.t != b.t) return a.t < b.t;
       return keyLess(a.instance, a.geometry, a.primitive, b.instance, b.geometry, b.primitive);
     });
+    tr.reports = tr.exact ? &reports : nullptr;
     decide(tr, *cands, nullptr, payload);
+    tr.reports = nullptr;
   }
 
   // Exact tier: is this trace's answer numerically clear?
@@ -451,6 +488,16 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
     RayAmbiguity amb;
     amb.ray = index_;
     const double finalT = tr.best.valid ? tr.best.t : INFINITY;
+    // A triangle candidate that a device may see as a hit in the interval.
+    auto eligible = [&](const ModelCandidate& cand) {
+      const ModelInstance& mi = scene.instances[cand.instance];
+      const ModelGeometry& g = scene.blases[mi.blas].geometries[cand.geometry];
+      const bool opaque = resolveOpaque(g.flags, mi.src->flags, tr.flags);
+      if (((tr.flags & kRayCullOpaque) && opaque) || ((tr.flags & kRayCullNoOpaque) && !opaque)) return false;
+      if (facing(scene, cand, r, tr.flags).culled) return false;
+      const double tl = tr.tol(cand.t);
+      return !(cand.t < r.tmin - tl || cand.t > r.tmax + tl);
+    };
     auto add = [&](bool hit, uint32_t i, uint32_t g, uint32_t p) {
       for (const Candidate& k : amb.candidates)
         if (k.hit == hit && (!hit || (k.instance == i && k.geometry == g && k.primitive == p))) return;
@@ -468,22 +515,13 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
         }
         continue;
       }
-      const ModelInstance& mi = scene.instances[cand.instance];
-      const ModelGeometry& g = scene.blases[mi.blas].geometries[cand.geometry];
-      const bool opaque = resolveOpaque(g.flags, mi.src->flags, tr.flags);
-      if (((tr.flags & kRayCullOpaque) && opaque) || ((tr.flags & kRayCullNoOpaque) && !opaque)) continue;
-      if (facing(scene, cand, r, tr.flags).culled) continue;
+      if (!eligible(cand)) continue;
       const double tl = tr.tol(cand.t);
-      if (cand.t < r.tmin - tl || cand.t > r.tmax + tl) continue;
       const char* why = nullptr;
       if (cand.ambiguity != TriAmbiguity::None && cand.t <= finalT + tl)
         why = cand.ambiguity == TriAmbiguity::Vertex ? "vertex" : "edge";
       else if (cand.hit && std::fabs(cand.t - r.tmin) <= tl) why = "tmin-tie";
       else if (cand.hit && std::fabs(cand.t - r.tmax) <= tl) why = "tmax-tie";
-      else if (cand.hit && tr.best.valid && std::fabs(cand.t - tr.best.t) <= tl &&
-               (cand.instance != tr.best.instance || cand.geometry != tr.best.geometry ||
-                cand.primitive != tr.best.primitive))
-        why = "tmax-tie";
       if (why) {
         if (amb.reason.empty()) amb.reason = why;
         unsure.push_back(k);
@@ -506,12 +544,104 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
         addCommitted(b);
       }
     }
+    // R-TIE, R-ORDER-UNSPEC: candidates confirmed at the committed t (within
+    // the error bound) may end in any order; R-TOFH: any candidate may be
+    // confirmed first. Each is tried in a sandboxed what-if run (preferred in
+    // ties, or processed first); those runs' answers are legal.
+    const bool tofh = (tr.flags & kRayTerminateOnFirstHit) != 0;
+    std::vector<long> prefers, firsts, potential;
+    std::set<std::array<uint32_t, 3>> tied;  // distinct keys confirmable at the committed t
+    if (tofh) {
+      for (size_t k = 0; k < cands->size(); ++k) {
+        const ModelCandidate& cand = (*cands)[k];
+        if (cand.aabb || ((cand.hit || cand.ambiguity != TriAmbiguity::None) && eligible(cand)))
+          firsts.push_back(static_cast<long>(k));
+      }
+    } else if (tr.best.valid) {
+      tied.insert({tr.best.instance, tr.best.geometry, tr.best.primitive});
+      // Per box: 1 its intersection program ran, 2 it reported at the committed t.
+      std::vector<uint8_t> boxes(cands->size(), 0);
+      for (const auto& [index, t] : reports) boxes[index] |= tr.ties(t) ? 3 : 1;
+      for (size_t k = 0; k < cands->size(); ++k) {
+        const ModelCandidate& cand = (*cands)[k];
+        bool tie = false;
+        if (cand.aabb) {
+          tie = (boxes[k] & 2) != 0;
+          // A box entered just past the committed t may still report at it.
+          if (!boxes[k] && tr.ties(cand.t)) potential.push_back(static_cast<long>(k));
+        } else {
+          tie = cand.hit && tr.ties(cand.t) && eligible(cand);
+        }
+        if (!tie) continue;
+        tied.insert({cand.instance, cand.geometry, cand.primitive});
+        if (cand.instance != tr.best.instance || cand.geometry != tr.best.geometry ||
+            cand.primitive != tr.best.primitive)
+          prefers.push_back(static_cast<long>(k));
+      }
+      if (tied.size() < 2) prefers.clear();
+      prefers.insert(prefers.end(), potential.begin(), potential.end());
+    }
+    if (!prefers.empty() || firsts.size() > 1) {
+      const bool before = !amb.candidates.empty();
+      bool differs = false;
+      auto addOne = [&](const Committed& b) {
+        if (b.valid) add(true, b.instance, b.geometry, b.primitive);
+        else add(false, 0, 0, 0);
+        differs = differs || b.valid != tr.best.valid ||
+                  (b.valid && (b.instance != tr.best.instance || b.geometry != tr.best.geometry ||
+                               b.primitive != tr.best.primitive));
+      };
+      const size_t saved = amb.candidates.size();
+      addOne(tr.best);
+      for (long k : prefers) addOne(sandbox(tr, *cands, nullptr, k, -1, payloadIn));
+      if (firsts.size() > 1)
+        for (long k : firsts) {
+          // An edge or vertex triangle the model left out may be the device's first hit.
+          std::vector<int8_t> force(cands->size(), -1);
+          if ((*cands)[k].ambiguity != TriAmbiguity::None) force[k] = 1;
+          addOne(sandbox(tr, *cands, force.data(), -1, k, payloadIn));
+        }
+      const bool ambiguousNow = tofh ? differs : (differs || tied.size() >= 2);
+      if (ambiguousNow && amb.reason.empty()) amb.reason = tofh ? "first-hit" : "t-tie";
+      if (!ambiguousNow && !before) amb.candidates.resize(saved);
+    }
     if (!amb.reason.empty()) {
       ambiguous.push_back(std::move(amb));
       ray_ambiguous_ = true;
     }
   }
   return tr.best;
+}
+
+// One what-if run of the decision in a sandbox: counters, record and error
+// are restored afterwards, the payload is a copy of the trace's incoming one.
+Committed Machine::sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands, const int8_t* force,
+                           long prefer, long first, const Payload& payloadIn) {
+  const std::vector<uint64_t> savedCounters = counters;
+  const std::string savedError = error;
+  std::vector<uint32_t> savedRecord;
+  if (rec_) savedRecord.assign(rec_, rec_ + recordWords());
+  Traversal v(*this, actual.ray);
+  v.flags = actual.flags;
+  v.depth = actual.depth;
+  v.tmin = actual.tmin;
+  v.tmax_cur = actual.ray.tmax;
+  v.exact = actual.exact;
+  v.prefer = prefer;
+  v.first = first;
+  if (prefer >= 0) {
+    const ModelCandidate& p = cands[static_cast<size_t>(prefer)];
+    v.prefer_key[0] = p.instance;
+    v.prefer_key[1] = p.geometry;
+    v.prefer_key[2] = p.primitive;
+  }
+  Payload p = payloadIn;
+  v.payload = &p;
+  decide(v, cands, force, p);
+  counters = savedCounters;
+  error = savedError;
+  if (rec_) std::copy(savedRecord.begin(), savedRecord.end(), rec_);
+  return v.best;
 }
 
 // What-if runs of the decision for an ambiguous trace: the unsure candidates
@@ -524,26 +654,8 @@ std::vector<Committed> Machine::whatIf(const Traversal& actual, const std::vecto
                                        const std::vector<size_t>& unsure, const Payload& payloadIn) {
   std::vector<Committed> out;
   if (unsure.empty()) return out;
-  const std::vector<uint64_t> savedCounters = counters;
-  const std::string savedError = error;
-  std::vector<uint32_t> savedRecord;
-  if (rec_) savedRecord.assign(rec_, rec_ + recordWords());
   std::vector<int8_t> force(cands.size(), -1);
-  auto run = [&] {
-    Traversal v(*this, actual.ray);
-    v.flags = actual.flags;
-    v.depth = actual.depth;
-    v.tmin = actual.tmin;
-    v.tmax_cur = actual.ray.tmax;
-    v.exact = actual.exact;
-    Payload p = payloadIn;
-    v.payload = &p;
-    decide(v, cands, force.data(), p);
-    out.push_back(v.best);
-    counters = savedCounters;
-    error = savedError;
-    if (rec_) std::copy(savedRecord.begin(), savedRecord.end(), rec_);
-  };
+  auto run = [&] { out.push_back(sandbox(actual, cands, force.data(), -1, -1, payloadIn)); };
   size_t g0 = 0;
   while (g0 < unsure.size()) {
     size_t g1 = g0 + 1;

@@ -15,6 +15,9 @@ struct RayRow {
   std::string field, device, model;
 };
 
+// How a case's status relates to the driver's baseline (report/baseline.h).
+enum class BaselineMatch { None, Expected, UnexpectedPass };
+
 struct CaseOutcome {
   std::string name;
   std::vector<std::string> rules;
@@ -24,6 +27,7 @@ struct CaseOutcome {
   Verdict verdict;
   std::vector<std::string> images;  // image names; files at <case>/{device,model,diff}/<name>.png
   std::vector<RayRow> failing_rays;
+  BaselineMatch baseline = BaselineMatch::None;
   std::string device_name;          // the device that ran it (results bundle)
 };
 

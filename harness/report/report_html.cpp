@@ -43,7 +43,10 @@ void imageFigure(std::ostream& out, const std::string& dir, const std::string& r
 
 void caseBlock(std::ostream& out, const CaseOutcome& o, const std::string& dir) {
   out << "<div class=\"case\" id=\"" << xmlEscape(o.name) << "\"><h3>" << xmlEscape(o.name) << " <span class=\""
-      << statusName(o.status) << "\">" << statusName(o.status) << "</span></h3>\n";
+      << statusName(o.status) << "\">" << statusName(o.status) << "</span>"
+      << (o.baseline == BaselineMatch::Expected ? " (expected by the baseline)" : "")
+      << (o.baseline == BaselineMatch::UnexpectedPass ? " (unexpected pass: the baseline expects a failure)" : "")
+      << "</h3>\n";
   out << "<p>" << xmlEscape(o.headline) << "</p><p>rules:";
   for (const auto& r : o.rules) out << ' ' << xmlEscape(r);
   out << " &middot; device " << o.device_seconds << " s, model " << o.model_seconds << " s</p>\n";

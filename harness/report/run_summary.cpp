@@ -21,6 +21,8 @@ void RunSummary::add(const CaseOutcome& o) {
   std::printf("[%zu/%zu] %-44s %-14s device %7.3f s  model %7.3f s\n", outcomes_.size(), total_, o.name.c_str(),
               statusName(o.status), o.device_seconds, o.model_seconds);
   if (o.status != Status::Pass) std::printf("        %s\n", o.headline.c_str());
+  if (o.baseline == BaselineMatch::Expected) std::printf("        (expected: the baseline lists it)\n");
+  if (o.baseline == BaselineMatch::UnexpectedPass) std::printf("        (unexpected pass: remove it from the baseline)\n");
   std::fflush(stdout);
 }
 
@@ -29,7 +31,9 @@ void RunSummary::addTeardownError(const std::string& m) { teardown_errors_.push_
 bool RunSummary::failed() const {
   if (!teardown_errors_.empty()) return true;
   for (const CaseOutcome& o : outcomes_)
-    if (o.status == Status::Fail || o.status == Status::Crash || o.status == Status::Timeout) return true;
+    if ((o.status == Status::Fail || o.status == Status::Crash || o.status == Status::Timeout) &&
+        o.baseline != BaselineMatch::Expected)
+      return true;
   return false;
 }
 
@@ -48,10 +52,15 @@ void RunSummary::print() const {
     std::printf("  %-15s %d\n", statusName(s), counts[s]);
   bool header = false;
   for (const CaseOutcome& o : outcomes_) {
-    if (o.status == Status::Pass) continue;
+    if (o.status == Status::Pass) {
+      if (o.baseline == BaselineMatch::UnexpectedPass)
+        std::printf("  %-44s Pass, but the baseline expects a failure: update it\n", o.name.c_str());
+      continue;
+    }
     if (!header) std::printf("Not passing:\n");
     header = true;
-    std::printf("  %-44s %s\n", o.name.c_str(), o.headline.c_str());
+    std::printf("  %-44s %s%s\n", o.name.c_str(), o.headline.c_str(),
+                o.baseline == BaselineMatch::Expected ? "  [expected by the baseline]" : "");
   }
   for (const std::string& m : teardown_errors_) std::printf("  validation error at device teardown: %s\n", m.c_str());
 }

@@ -24,7 +24,13 @@ const char* deqpStatusName(Status s) {
 
 std::string writeResultsCsv(const std::vector<CaseOutcome>& outcomes, const std::string& path) {
   std::ofstream out(path);
-  for (const CaseOutcome& o : outcomes) out << o.name << ',' << deqpStatusName(o.status) << ',' << o.seconds << '\n';
+  // deqp-runner's names for results a baseline expected.
+  for (const CaseOutcome& o : outcomes) {
+    const char* status = deqpStatusName(o.status);
+    if (o.baseline == BaselineMatch::Expected && o.status != Status::Pass) status = "ExpectedFail";
+    if (o.baseline == BaselineMatch::UnexpectedPass) status = "UnexpectedImprovement(Pass)";
+    out << o.name << ',' << status << ',' << o.seconds << '\n';
+  }
   return out ? std::string() : "cannot write " + path;
 }
 
@@ -77,7 +83,10 @@ std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const Run
     ++counts[statusName(o.status)];
     nlohmann::json c{{"name", o.name}, {"status", statusName(o.status)}, {"headline", o.headline},
                      {"seconds", o.seconds}, {"device_seconds", o.device_seconds},
-                     {"model_seconds", o.model_seconds}, {"rules", o.rules}};
+                     {"model_seconds", o.model_seconds}, {"rules", o.rules},
+                     {"baseline", o.baseline == BaselineMatch::Expected        ? "expected"
+                                  : o.baseline == BaselineMatch::UnexpectedPass ? "unexpected_pass"
+                                                                                : ""}};
     c["findings"] = nlohmann::json::array();
     for (const Finding& f : o.verdict.findings)
       c["findings"].push_back({{"status", statusName(f.status)}, {"rule", f.rule}, {"message", f.message},
