@@ -185,12 +185,18 @@ TEST(Compare, MissAtASharedEdgeIsALeakEvenWhenAMissIsLegal) {
   setUint(leak, 0, "hit", 0);
   setUint(leak, 0, "closest_hit_runs", 0);
   setUint(leak, 0, "miss_runs", 1);
+  setUint(leak, 0, "any_hit_runs", 0);  // the device saw no candidate at all
   leak.counters["miss"] = 3;
   leak.counters["chit"] = 1;
   // The ray crosses the diagonal both triangles share: a miss is a leak.
   Results shared = sampleResults("model");
   shared.ambiguous.push_back({0, "edge", {{true, 0, 0, 0}, {true, 0, 0, 1}, {false, 0, 0, 0}}});
   EXPECT_EQ(compareResults(c, samplePlan(c), leak, shared).status, Status::QualityWarning);
+  // The same miss after the device's any-hit saw a candidate (and ignored
+  // it, which the legal miss allows) is no leak.
+  Results ignored = leak;
+  setUint(ignored, 0, "any_hit_runs", 1);
+  EXPECT_EQ(compareResults(c, samplePlan(c), ignored, shared).status, Status::Pass);
   // Corner (0, 0) is in both triangles, but its fan is open (the outer
   // border): a miss is fine.
   Results corner = sampleResults("model");

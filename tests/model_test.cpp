@@ -725,6 +725,21 @@ TEST(Model, TriangleIntervalIsOpen) {
     EXPECT_EQ(word(r, 0, "hit"), 0u) << modelTierName(tier);
     EXPECT_EQ(word(r, 1, "hit"), 0u) << modelTierName(tier);
     EXPECT_EQ(word(r, 2, "hit"), 1u) << modelTierName(tier);
+    // Exact tier: at either end a float ray test may land a step inside, so
+    // hit and miss are both legal there; the ray a little past is clear.
+    auto amb = byRay(r);
+    EXPECT_EQ(amb.count(2), 0u);
+    if (tier != ModelTier::Exact) {
+      EXPECT_TRUE(r.ambiguous.empty());
+      continue;
+    }
+    const std::set<std::array<uint32_t, 3>> both = {{~0u, ~0u, ~0u}, {0, 0, 0}};
+    ASSERT_EQ(amb.count(0), 1u);
+    EXPECT_EQ(amb[0]->reason, "tmax-tie");
+    EXPECT_EQ(legal(*amb[0]), both);
+    ASSERT_EQ(amb.count(1), 1u);
+    EXPECT_EQ(amb[1]->reason, "tmin-tie");
+    EXPECT_EQ(legal(*amb[1]), both);
   }
 }
 

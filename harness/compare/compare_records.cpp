@@ -43,8 +43,16 @@ bool written(const uint32_t* rec, int field_index) { return (rec[kRecordWrittenM
 uint32_t fieldWord(const uint32_t* rec, const char* name) { return rec[findRecordField(name)->offset]; }
 
 // The device's answer for an ambiguous ray, checked against the legal set.
-void checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec, FindingBuilder& wrong,
-                    FindingBuilder& leak) {
+// The rule that allows the freedom an ambiguity reason stands for.
+std::string ruleForReason(const std::string& reason) {
+  if (reason == "t-tie" || reason == "tmax-tie" || reason == "tmin-tie") return "R-TIE";
+  if (reason == "first-hit") return "R-TOFH";
+  if (reason == "aabb-face") return "R-AABB-CONS";
+  return "R-WATERTIGHT";
+}
+
+void checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
+                    std::map<std::string, FindingBuilder>& wrongs, FindingBuilder& leak) {
   const bool device_hit = fieldWord(rec, "closest_hit_runs") > 0 ||
                           (written(rec, recordFieldIndex("hit")) && fieldWord(rec, "hit") == 1);
   const int prim = recordFieldIndex("primitive_id"), inst = recordFieldIndex("instance_id"),
@@ -66,11 +74,21 @@ void checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec, F
     // crossed vertex is a leak (R-WATERTIGHT, a "should"), even when no
     // "must" rule forbids it; so is a miss no rule allows.
     // Through the outer border of a mesh only, a miss is always legal.
-    const bool shared = crossesSharedEdge(c, a);
+    // A legal miss after the device's any-hit saw a candidate (and ignored
+    // it) is no leak: the device found the edge.
+    const bool found_candidate = fieldWord(rec, "any_hit_runs") > 0;
+    const bool shared = crossesSharedEdge(c, a) && !(miss_legal && found_candidate);
     if (shared || (!miss_legal && !crossesBorderOnly(c, a))) leak.addRay(a.ray);
     return;
   }
-  if (!legal) wrong.addRay(a.ray);
+  if (!legal) {
+    const std::string rule = ruleForReason(a.reason);
+    FindingBuilder& wrong = wrongs[rule];
+    if (wrong.finding.rule.empty())
+      wrong.finding = {Status::Fail, rule,
+                       "numerically ambiguous ray (" + a.reason + ") hit a primitive that is not one of its legal answers"};
+    wrong.addRay(a.ray);
+  }
 }
 
 }  // namespace
@@ -89,8 +107,8 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
       fields.push_back(&f);
 
   std::map<std::string, FindingBuilder> mismatches;
-  FindingBuilder wrong, leak;
-  wrong.finding = {Status::Fail, "R-WATERTIGHT", "ambiguous ray hit a primitive that is not one of the legal candidates"};
+  std::map<std::string, FindingBuilder> wrongs;
+  FindingBuilder leak;
   leak.finding = {Status::QualityWarning, "R-WATERTIGHT", "ray on a shared edge or vertex leaked (missed every candidate)"};
 
   for (size_t i = 0; i < rays; ++i) {
@@ -98,7 +116,7 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
     const uint32_t* m = &model.records[i * words];
     const uint32_t ray = static_cast<uint32_t>(i);
     if (const auto it = ambiguous.find(ray); it != ambiguous.end()) {
-      checkAmbiguous(c, *it->second, d, wrong, leak);
+      checkAmbiguous(c, *it->second, d, wrongs, leak);
       continue;
     }
     for (const RecordField* f : fields) {
@@ -122,7 +140,7 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
     }
   }
   for (auto& [name, b] : mismatches) b.flush(v);
-  wrong.flush(v);
+  for (auto& [rule, b] : wrongs) b.flush(v);
   leak.flush(v);
   if (!ambiguous.empty()) {
     Finding note{Status::Pass, "R-PREC",

@@ -403,6 +403,11 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
     }
     if (!(force && force[k] >= 0 ? force[k] == 1 : cand.hit)) continue;
     bool inside = cand.t > tr.tmin && cand.t < tr.tmax_cur;
+    // What-if run forcing a hit at an interval end (tmin-tie, tmax-tie): a
+    // float ray test may put it a step inside.
+    if (!inside && force && force[k] == 1 && !tr.best.valid && cand.t > tr.tmin - tr.tol(cand.t) &&
+        cand.t < tr.tmax_cur + tr.tol(cand.t))
+      inside = true;
     const bool tie = tr.exact && tr.ties(cand.t);
     const bool bestPreferred = tr.isPreferred(tr.best.instance, tr.best.geometry, tr.best.primitive);
     if (tie && (tr.prefer == static_cast<long>(k) || bestPreferred)) {

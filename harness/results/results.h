@@ -28,7 +28,8 @@ struct Candidate {
 };
 struct RayAmbiguity {
   uint32_t ray = 0;          // launch index y * width + x
-  std::string reason;        // "edge", "vertex", "tmax-tie", "tmin-tie", "aabb-face"
+  std::string reason;        // "edge", "vertex", "tmax-tie", "tmin-tie", "t-tie",
+                             // "first-hit" (terminate_on_first_hit), "aabb-face"
   std::vector<Candidate> candidates;
 };
 
