@@ -48,6 +48,7 @@ std::string ruleForReason(const std::string& reason) {
   if (reason == "t-tie" || reason == "tmax-tie" || reason == "tmin-tie") return "R-TIE";
   if (reason == "first-hit") return "R-TOFH";
   if (reason == "aabb-face") return "R-AABB-CONS";
+  if (reason == "shader-arith") return "R-PREC";
   return "R-WATERTIGHT";
 }
 

@@ -126,7 +126,7 @@ Val Machine::op(const CExpr& e, StageEnv& env) {
       static const HitView kNone;
       const HitView* hv = env.hit ? env.hit : &kNone;
       SphereRoots s = sphereRoots(hv->aabb_min, hv->aabb_max, hv->object_origin, hv->object_direction);
-      if (n == OpCode::SphereHit) r.b = s.hit;
+      if (n == OpCode::SphereHit) r.b = env.traversal ? sphereHitDecision(env, s.hit, s.disc) : s.hit;
       else r.f[0] = n == OpCode::SphereNear ? s.t_near : s.t_far;
       return r;
     }

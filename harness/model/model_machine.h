@@ -60,6 +60,17 @@ struct HitView {
 
 struct Traversal;
 
+// Exact tier, R-PREC: a decision of an intersection program that float
+// rounding may flip on a device (reason "shader-arith"): the n-th (ordinal)
+// sphere_hit (kind 0) or report interval test (kind 1) of candidate `cand`'s
+// intersection program, and the value it took (or is forced to take).
+struct ShaderDecision {
+  size_t cand = 0;
+  uint8_t kind = 0;
+  uint32_t ordinal = 0;
+  bool value = false;
+};
+
 // The hit a traversal committed.
 struct Committed {
   bool valid = false;
@@ -126,7 +137,10 @@ class Machine {
   void shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Committed& best, Payload& payload);
   void decide(Traversal& tr, const std::vector<ModelCandidate>& cands, const int8_t* force, Payload& payload);
   Committed sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands, const int8_t* force,
-                    long prefer, long first, const Payload& payloadIn);
+                    long prefer, long first, const Payload& payloadIn, const ShaderDecision* shaderForce = nullptr);
+  // sphere_hit in an intersection program: the model's value, or the forced
+  // one of a what-if run; notes an unsure decision (model_trace.cpp).
+  bool sphereHitDecision(StageEnv& env, bool modelValue, float disc);
   std::vector<Committed> whatIf(const Traversal& actual, const std::vector<ModelCandidate>& cands,
                                 const std::vector<size_t>& unsure, const Payload& payloadIn);
   void runRaygen();

@@ -68,6 +68,7 @@ SphereRoots sphereRoots(const F3& bmin, const F3& bmax, const F3& o, const F3& d
   const float s = std::sqrt(std::max(disc, 0.0f));
   SphereRoots sp;
   sp.hit = disc >= 0.0f;
+  sp.disc = disc;
   sp.t_near = (-b - s) / a;
   sp.t_far = (-b + s) / a;
   return sp;

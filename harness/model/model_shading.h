@@ -22,6 +22,7 @@ F4 lightColor(LightKind kind, const F3& P, const F3& N, const std::vector<uint32
 struct SphereRoots {
   bool hit = false;
   float t_near = 0, t_far = 0;
+  float disc = 0;  // b * b - a * cc, as the float formula computes it
 };
 SphereRoots sphereRoots(const F3& bmin, const F3& bmax, const F3& o, const F3& d);
 

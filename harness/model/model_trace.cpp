@@ -8,6 +8,7 @@
 #include <set>
 
 #include "model/model_machine.h"
+#include "model/sphere_error.h"
 #include "model/watertight.h"
 #include "results/record_layout.h"
 
@@ -36,6 +37,16 @@ struct Traversal {
   uint32_t prefer_key[3] = {0, 0, 0};
   // The actual run of the exact tier: every report (candidate index, t) in [tmin, tmax].
   std::vector<std::pair<size_t, double>>* reports = nullptr;
+  // Exact tier, R-PREC: the actual run notes its intersection programs'
+  // decisions that rounding may flip; a what-if run flips one of them.
+  std::vector<ShaderDecision>* shader_unsure = nullptr;
+  const ShaderDecision* shader_force = nullptr;
+  uint32_t sphere_ord = 0, report_ord = 0;  // within the current intersection run
+  // The forced value of this decision, if it is the one forced.
+  const ShaderDecision* forced(uint8_t kind, uint32_t ordinal) const {
+    const ShaderDecision* f = shader_force;
+    return f && f->kind == kind && f->ordinal == ordinal && f->cand == cur_index ? f : nullptr;
+  }
 
   Traversal(Machine& machine, const TraceRay& r) : m(machine), ray(r) {}
   bool isPreferred(uint32_t i, uint32_t g, uint32_t p) const {
@@ -162,6 +173,27 @@ Flow Machine::report(const CStmt& s, StageEnv& env) {
   // R-ISECT-REPORT, R-CAND-AABB-CLOSED: tmin <= t <= current tmax.
   bool inside = t >= tr->ray.tmin && static_cast<double>(t) <= tr->tmax_cur;
   if (tr->reports && t >= tr->ray.tmin && t <= tr->ray.tmax + tr->tol(t)) tr->reports->push_back({tr->cur_index, t});
+  if (tr->exact) {
+    // R-PREC: a sphere root within its error bound of an interval end may
+    // fall on either side on a device. Not against the current candidate's
+    // own committed report: the device compares its own roots consistently.
+    const uint32_t ord = tr->report_ord++;
+    if (const ShaderDecision* f = tr->forced(1, ord)) {
+      inside = f->value;
+    } else if (tr->shader_unsure && s.t.kind == Expr::Kind::Op &&
+               (s.t.op == OpCode::SphereNear || s.t.op == OpCode::SphereFar) && env.hit && env.ray) {
+      const HitView& h = *env.hit;
+      const ModelInstance& mi = sh_.scene->instances[h.instance];
+      const SphereError se = sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
+                                         objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
+      const double et = (s.t.op == OpCode::SphereNear ? se.near_err : se.far_err) + tr->tol(t);
+      const bool own = tr->best.valid && tr->best.instance == h.instance && tr->best.geometry == h.geometry &&
+                       tr->best.primitive == h.primitive;
+      const bool nearEnd = std::fabs(double(t) - tr->ray.tmin) <= et ||
+                           (!own && std::fabs(double(t) - tr->tmax_cur) <= et);
+      if (nearEnd) tr->shader_unsure->push_back({tr->cur_index, 1, ord, inside});
+    }
+  }
   // What-if run preferring one candidate (R-TIE): it wins every tie, and a
   // committed preferred hit loses none.
   if (tr->prefer >= 0 && t >= tr->ray.tmin && tr->ties(t)) {
@@ -386,6 +418,8 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
       tr.cur_index = k;
       tr.cur_opaque = opaque;
       if (tr.reports) tr.reports->push_back({k, NAN});  // it ran (the exact tier's tie check)
+      tr.sphere_ord = 0;
+      tr.report_ord = 0;
       tr.cur_rec = rec;
       tr.cur_group = grp;
       bumpRuns(kRunsIntersection);
@@ -463,6 +497,7 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
   RTCRayHit rh = embreeRay(r, tr.flags);
   std::vector<ModelCandidate>* cands = nullptr;
   std::vector<std::pair<size_t, double>> reports;  // exact tier: every report of the actual run
+  std::vector<ShaderDecision> shaderUnsure;  // exact tier: decisions rounding may flip
   if (validRay(r, rh)) {
     if (cand_pool_.size() < depth) cand_pool_.resize(depth);
     cands = &cand_pool_[depth - 1];
@@ -484,8 +519,10 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
       return keyLess(a.instance, a.geometry, a.primitive, b.instance, b.geometry, b.primitive);
     });
     tr.reports = tr.exact ? &reports : nullptr;
+    tr.shader_unsure = tr.exact && sh_.programs->reads_sphere ? &shaderUnsure : nullptr;
     decide(tr, *cands, nullptr, payload);
     tr.reports = nullptr;
+    tr.shader_unsure = nullptr;
   }
 
   // Exact tier: is this trace's answer numerically clear?
@@ -610,6 +647,22 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
       if (ambiguousNow && amb.reason.empty()) amb.reason = tofh ? "first-hit" : "t-tie";
       if (!ambiguousNow && !before) amb.candidates.resize(saved);
     }
+    // R-PREC: an intersection program's decision that rounding may flip
+    // (sphere discriminant or root near an end): each flipped alone in a
+    // what-if run; the ray is ambiguous, as the device's counters may differ.
+    if (!shaderUnsure.empty()) {
+      auto addCommitted = [&](const Committed& b) {
+        if (b.valid) add(true, b.instance, b.geometry, b.primitive);
+        else add(false, 0, 0, 0);
+      };
+      addCommitted(tr.best);
+      for (const ShaderDecision& d : shaderUnsure) {
+        ShaderDecision flipped = d;
+        flipped.value = !d.value;
+        addCommitted(sandbox(tr, *cands, nullptr, -1, -1, payloadIn, &flipped));
+      }
+      if (amb.reason.empty()) amb.reason = "shader-arith";
+    }
     if (!amb.reason.empty()) {
       ambiguous.push_back(std::move(amb));
       ray_ambiguous_ = true;
@@ -618,10 +671,25 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
   return tr.best;
 }
 
+bool Machine::sphereHitDecision(StageEnv& env, bool modelValue, float disc) {
+  Traversal* tr = env.traversal;
+  if (!tr->exact || !tr->cur || env.stage != Stage::Intersection) return modelValue;
+  const uint32_t ord = tr->sphere_ord++;
+  if (const ShaderDecision* f = tr->forced(0, ord)) return f->value;
+  if (tr->shader_unsure && env.hit && env.ray) {
+    const HitView& h = *env.hit;
+    const ModelInstance& mi = sh_.scene->instances[h.instance];
+    const SphereError se = sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
+                                       objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
+    if (std::fabs(double(disc)) <= se.disc_err) tr->shader_unsure->push_back({tr->cur_index, 0, ord, modelValue});
+  }
+  return modelValue;
+}
+
 // One what-if run of the decision in a sandbox: counters, record and error
 // are restored afterwards, the payload is a copy of the trace's incoming one.
 Committed Machine::sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands, const int8_t* force,
-                           long prefer, long first, const Payload& payloadIn) {
+                           long prefer, long first, const Payload& payloadIn, const ShaderDecision* shaderForce) {
   const std::vector<uint64_t> savedCounters = counters;
   const std::string savedError = error;
   std::vector<uint32_t> savedRecord;
@@ -634,6 +702,7 @@ Committed Machine::sandbox(const Traversal& actual, const std::vector<ModelCandi
   v.exact = actual.exact;
   v.prefer = prefer;
   v.first = first;
+  v.shader_force = shaderForce;
   if (prefer >= 0) {
     const ModelCandidate& p = cands[static_cast<size_t>(prefer)];
     v.prefer_key[0] = p.instance;

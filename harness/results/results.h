@@ -29,7 +29,8 @@ struct Candidate {
 struct RayAmbiguity {
   uint32_t ray = 0;          // launch index y * width + x
   std::string reason;        // "edge", "vertex", "tmax-tie", "tmin-tie", "t-tie",
-                             // "first-hit" (terminate_on_first_hit), "aabb-face"
+                             // "first-hit" (terminate_on_first_hit), "aabb-face",
+                             // "shader-arith" (an intersection program decision within rounding)
   std::vector<Candidate> candidates;
 };
 
