@@ -15,6 +15,16 @@ using StageMask = unsigned;
 constexpr StageMask stageBit(Stage s) { return 1u << static_cast<unsigned>(s); }
 constexpr StageMask kAllStages = 0x3F;
 
+// One-letter stage bits for the built-in, operator and statement tables.
+namespace stage_letters {
+constexpr StageMask R = stageBit(Stage::Raygen);
+constexpr StageMask M = stageBit(Stage::Miss);
+constexpr StageMask C = stageBit(Stage::ClosestHit);
+constexpr StageMask A = stageBit(Stage::AnyHit);
+constexpr StageMask I = stageBit(Stage::Intersection);
+constexpr StageMask K = stageBit(Stage::Callable);
+}  // namespace stage_letters
+
 struct BuiltinInfo {
   const char* name;
   ValueType type;

@@ -12,12 +12,7 @@
 namespace rayspec {
 namespace {
 
-constexpr StageMask R = stageBit(Stage::Raygen);
-constexpr StageMask M = stageBit(Stage::Miss);
-constexpr StageMask C = stageBit(Stage::ClosestHit);
-constexpr StageMask A = stageBit(Stage::AnyHit);
-constexpr StageMask I = stageBit(Stage::Intersection);
-constexpr StageMask K = stageBit(Stage::Callable);
+using namespace stage_letters;
 
 struct StmtRule {
   Stmt::Kind kind;

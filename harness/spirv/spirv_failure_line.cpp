@@ -19,10 +19,7 @@ std::vector<uint32_t> debugBuild(const std::string& glsl, Stage stage) {
   const EShLanguage lang = glslangStage(stage);
   glslang::TShader shader(lang);
   const char* text = glsl.c_str();
-  shader.setStrings(&text, 1);
-  shader.setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientVulkan, 100);
-  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_2);
-  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_4);
+  setUpShader(shader, &text, lang);
   const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules |
                                                  EShMsgDebugInfo);
   if (!shader.parse(GetDefaultResources(), 460, false, messages)) return {};

@@ -1,4 +1,5 @@
-// The glslang stage of a rayspec stage.
+// The glslang stage of a rayspec stage, and the one set-up of a glslang
+// shader for rayspec's targets (Vulkan 1.2 client, SPIR-V 1.4, entry main).
 #pragma once
 
 #include <glslang/Public/ShaderLang.h>
@@ -17,6 +18,15 @@ inline EShLanguage glslangStage(Stage s) {
     case Stage::Callable: return EShLangCallable;
   }
   return EShLangRayGen;
+}
+
+// `text` must outlive the shader's parse.
+inline void setUpShader(glslang::TShader& shader, const char* const* text, EShLanguage lang) {
+  shader.setStrings(text, 1);
+  shader.setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientVulkan, 100);
+  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_2);
+  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_4);
+  shader.setEntryPoint("main");
 }
 
 }  // namespace rayspec
