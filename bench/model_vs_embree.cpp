@@ -3,7 +3,8 @@
 // and the same rays (generated once, by the same code). Both sides include
 // building the Embree scene (device, BLAS, TLAS) in every iteration; the model
 // also interprets raygen / closest-hit / miss, which count hits and misses
-// (counters only: no per-ray records). The bare loop counts them as well.
+// (counters only: no per-ray records). The bare loop counts them as well, and
+// both sides' counts are checked against one single-threaded bare run.
 // Counter "rays_per_second" for both; single thread (/1) and all cores (/0).
 // The machine is shared: run with --benchmark_repetitions=3
 // --benchmark_enable_random_interleaving=true and compare medians.
@@ -81,77 +82,93 @@ unsigned threadsOf(const benchmark::State& s) {
   return s.range(0) ? static_cast<unsigned>(s.range(0)) : std::max(1u, std::thread::hardware_concurrency());
 }
 
+struct Counts {
+  uint64_t hits = 0, misses = 0;
+};
+
 // The bare loop: build the same two-level scene, rtcIntersect1 every ray,
-// keep primitive and t.
+// count hits and misses.
+Counts bareRun(const Case& c, unsigned threads) {
+  const Geometry& g = c.scene.blases[0].geometries[0];
+  RTCDevice dev = rtcNewDevice(nullptr);
+  RTCScene blas = rtcNewScene(dev);
+  RTCGeometry geom = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
+  rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, g.vertices.data(), 0,
+                             sizeof(Vec3), g.vertices.size());
+  rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, g.indices.data(), 0,
+                             3 * sizeof(uint32_t), g.indices.size() / 3);
+  rtcCommitGeometry(geom);
+  rtcAttachGeometry(blas, geom);
+  rtcReleaseGeometry(geom);
+  rtcCommitScene(blas);
+  RTCScene top = rtcNewScene(dev);
+  RTCGeometry ig = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_INSTANCE);
+  rtcSetGeometryInstancedScene(ig, blas);
+  rtcSetGeometryTransform(ig, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, c.scene.instances[0].transform.data());
+  rtcCommitGeometry(ig);
+  rtcAttachGeometry(top, ig);
+  rtcReleaseGeometry(ig);
+  rtcCommitScene(top);
+  std::atomic<size_t> next{0};
+  std::atomic<uint64_t> hitSum{0}, missSum{0};
+  const size_t n = c.rays.rays.size();
+  auto work = [&] {
+    uint64_t h = 0, m = 0;
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    for (;;) {
+      const size_t b = next.fetch_add(256);
+      if (b >= n) break;
+      for (size_t i = b; i < std::min(n, b + 256); ++i) {
+        const Ray& r = c.rays.rays[i];
+        RTCRayHit rh;
+        rh.ray.org_x = r.origin[0]; rh.ray.org_y = r.origin[1]; rh.ray.org_z = r.origin[2];
+        rh.ray.dir_x = r.direction[0]; rh.ray.dir_y = r.direction[1]; rh.ray.dir_z = r.direction[2];
+        rh.ray.tnear = r.tmin; rh.ray.tfar = r.tmax; rh.ray.time = 0; rh.ray.mask = 0xFFFFFFFF;
+        rh.ray.id = 0; rh.ray.flags = 0;
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(top, &ctx, &rh);
+        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) ++m; else ++h;
+      }
+    }
+    hitSum += h;
+    missSum += m;
+  };
+  if (threads == 1) work();
+  else {
+    std::vector<std::thread> pool;
+    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work);
+    for (auto& t : pool) t.join();
+  }
+  rtcReleaseScene(top);
+  rtcReleaseScene(blas);
+  rtcReleaseDevice(dev);
+  return {hitSum.load(), missSum.load()};
+}
+
+// The bare loop's answer, once (single thread), for both sides to check against.
+const Counts& reference() {
+  static const Counts k = bareRun(theCase(), 1);
+  return k;
+}
+
 void BM_BareEmbree(benchmark::State& state) {
   const Case& c = theCase();
   const unsigned threads = threadsOf(state);
-  const Geometry& g = c.scene.blases[0].geometries[0];
-  uint64_t hits = 0, misses = 0;
+  Counts k;
+  reference();  // computed before timing starts
   for (auto _ : state) {
-    RTCDevice dev = rtcNewDevice(nullptr);
-    RTCScene blas = rtcNewScene(dev);
-    RTCGeometry geom = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
-    rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, g.vertices.data(), 0,
-                               sizeof(Vec3), g.vertices.size());
-    rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, g.indices.data(), 0,
-                               3 * sizeof(uint32_t), g.indices.size() / 3);
-    rtcCommitGeometry(geom);
-    rtcAttachGeometry(blas, geom);
-    rtcReleaseGeometry(geom);
-    rtcCommitScene(blas);
-    RTCScene top = rtcNewScene(dev);
-    RTCGeometry ig = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_INSTANCE);
-    rtcSetGeometryInstancedScene(ig, blas);
-    rtcSetGeometryTransform(ig, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, c.scene.instances[0].transform.data());
-    rtcCommitGeometry(ig);
-    rtcAttachGeometry(top, ig);
-    rtcReleaseGeometry(ig);
-    rtcCommitScene(top);
-    std::atomic<size_t> next{0};
-    std::atomic<uint64_t> hitSum{0}, missSum{0};
-    const size_t n = c.rays.rays.size();
-    auto work = [&] {
-      uint64_t h = 0, m = 0;
-      RTCIntersectContext ctx;
-      rtcInitIntersectContext(&ctx);
-      for (;;) {
-        const size_t b = next.fetch_add(256);
-        if (b >= n) break;
-        for (size_t i = b; i < std::min(n, b + 256); ++i) {
-          const Ray& r = c.rays.rays[i];
-          RTCRayHit rh;
-          rh.ray.org_x = r.origin[0]; rh.ray.org_y = r.origin[1]; rh.ray.org_z = r.origin[2];
-          rh.ray.dir_x = r.direction[0]; rh.ray.dir_y = r.direction[1]; rh.ray.dir_z = r.direction[2];
-          rh.ray.tnear = r.tmin; rh.ray.tfar = r.tmax; rh.ray.time = 0; rh.ray.mask = 0xFFFFFFFF;
-          rh.ray.id = 0; rh.ray.flags = 0;
-          rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-          rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-          rtcIntersect1(top, &ctx, &rh);
-          if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) ++m; else ++h;
-        }
-      }
-      hitSum += h;
-      missSum += m;
-    };
-    if (threads == 1) work();
-    else {
-      std::vector<std::thread> pool;
-      for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work);
-      for (auto& t : pool) t.join();
-    }
-    hits = hitSum;
-    misses = missSum;
-    benchmark::DoNotOptimize(hits);
-    rtcReleaseScene(top);
-    rtcReleaseScene(blas);
-    rtcReleaseDevice(dev);
+    k = bareRun(c, threads);
+    benchmark::DoNotOptimize(k);
   }
+  if (k.hits != reference().hits || k.misses != reference().misses)
+    state.SkipWithError("the bare loop's hit/miss counts differ from the single-threaded reference");
   state.counters["rays_per_second"] =
       benchmark::Counter(double(c.rays.rays.size()) * state.iterations(), benchmark::Counter::kIsRate);
   state.counters["threads"] = threads;
-  state.counters["hits"] = static_cast<double>(hits);
-  state.counters["misses"] = static_cast<double>(misses);
+  state.counters["hits"] = static_cast<double>(k.hits);
+  state.counters["misses"] = static_cast<double>(k.misses);
 }
 
 void BM_Model(benchmark::State& state, ModelTier tier) {
@@ -162,11 +179,15 @@ void BM_Model(benchmark::State& state, ModelTier tier) {
   o.threads = threadsOf(state);
   if (plan.records) state.SkipWithError("the benchmark case must be counters-only");
   Results r;
+  reference();  // computed before timing starts
   for (auto _ : state) {
     r = runOnModel(c, plan, o);
     if (r.status != "ok") state.SkipWithError(r.status.c_str());
     benchmark::DoNotOptimize(r.counters);
   }
+  // Same rays, same scene: the model must find exactly the bare loop's hits.
+  if (r.counters["hit"] != reference().hits || r.counters["miss"] != reference().misses)
+    state.SkipWithError("the model's hit/miss counts differ from the bare loop's");
   state.counters["rays_per_second"] =
       benchmark::Counter(double(c.rays.rays.size()) * state.iterations(), benchmark::Counter::kIsRate);
   state.counters["threads"] = o.threads;

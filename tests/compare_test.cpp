@@ -179,6 +179,24 @@ Case squareCase() {
   return c;
 }
 
+TEST(Compare, DoubleHitAtASharedEdgeIsAQualityWarning) {
+  // The square's two triangles share the diagonal; any-hit ignores every
+  // candidate; ray 2 (a miss in both) crosses the diagonal exactly.
+  Case c = squareCase();
+  c.scene.blases[0].geometries[0].flags = kGeometryNoDuplicateAnyHit;
+  Results model = sampleResults("model");
+  setUint(model, 2, "any_hit_runs", 2);  // the model found both triangles once each
+  model.ambiguous.push_back({2, "edge", {{false, 0, 0, 0}}, {{true, 0, 0, 0}, {true, 0, 0, 1}}});
+  Results once = sampleResults("vulkan");
+  setUint(once, 2, "any_hit_runs", 1);  // watertight: one of them
+  EXPECT_EQ(compareResults(c, samplePlan(c), once, model).status, Status::Pass);
+  Results twice = sampleResults("vulkan");
+  setUint(twice, 2, "any_hit_runs", 2);  // both: a double hit
+  const Verdict v = compareResults(c, samplePlan(c), twice, model);
+  EXPECT_EQ(v.status, Status::QualityWarning) << v.headline();
+  EXPECT_NE(v.headline().find("double hit"), std::string::npos);
+}
+
 TEST(Compare, MissAtASharedEdgeIsALeakEvenWhenAMissIsLegal) {
   const Case c = squareCase();
   Results leak = sampleResults("vulkan");

@@ -284,6 +284,50 @@ TEST(Model, DirectChunkedPathMatchesGeneralPath) {
   }
 }
 
+// The direct path's per-block resolution of counts-only programs: rays of one
+// block with other trace parameters (another miss index, SkipClosestHit), two
+// instances whose hit groups differ (one counts only, one reads launch_id_x),
+// counters only: the same counts as the general interpreter, any thread count.
+TEST(Model, DirectPathMixedTraceParametersMatchGeneralPath) {
+  std::vector<Ray> rays;
+  const uint32_t w = 64, h = 9;
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) {
+      Ray r = downRay(-2.5f + 5.0f * (x + 0.5f) / w, -1.5f + 3.0f * (y + 0.5f) / h);
+      const uint32_t i = y * w + x;
+      if (i % 5 == 0) r.miss = 1;
+      if (i % 7 == 0) r.flags = kRaySkipClosestHit;
+      rays.push_back(r);
+    }
+  Case direct = baseCase({grid(4, kGeometryOpaque)}, rays, w);
+  direct.scene.instances.push_back(direct.scene.instances[0]);
+  direct.scene.instances[0].transform[3] = -1;  // x in [-2, 0]
+  direct.scene.instances[1].transform[3] = 1;   // x in [0, 2]
+  direct.scene.instances[1].sbt_offset = 1;
+  direct.pipeline.miss = {{count("miss")}, {count("far_accepted")}};
+  HitGroup g0, g1;
+  g0.closest_hit = Program{count("closesthit")};
+  g1.closest_hit = Program{ifThen(op("eq", {bi("launch_id_x"), lit(40)}), {count("ignored")}), count("calls")};
+  direct.pipeline.hit_groups = {g0, g1};
+  direct.outputs.per_ray.clear();
+  Case general = direct;
+  general.pipeline.raygen = {traceStmt(), count("near_accepted")};
+  for (ModelTier tier : {ModelTier::Fast, ModelTier::Robust}) {
+    Results g = run(general, tier, 1);
+    ASSERT_EQ(g.status, "ok");
+    EXPECT_EQ(g.counters["near_accepted"], w * h);
+    g.counters.erase("near_accepted");
+    for (const char* k : {"miss", "far_accepted", "closesthit", "calls", "ignored"}) EXPECT_GT(g.counters[k], 0u) << k;
+    for (unsigned threads : {1u, 2u, 5u}) {
+      Results d = run(direct, tier, threads);
+      ASSERT_EQ(d.status, "ok");
+      EXPECT_TRUE(d.records.empty());
+      d.counters.erase("near_accepted");
+      EXPECT_EQ(d.counters, g.counters) << modelTierName(tier) << " threads " << threads;
+    }
+  }
+}
+
 // Compiled programs keep the meaning of ops (arithmetic, comparisons,
 // vectors, short-circuit and/or) per ray.
 TEST(Model, CompiledOpsPerRay) {

@@ -1,6 +1,7 @@
-#include <set>
+#include <map>
 
 #include "compare/compare_parts.h"
+#include "compare/shared_edge.h"
 #include "results/record_layout.h"
 
 namespace rayspec {
@@ -24,8 +25,15 @@ void compareAnyHitRuns(const Case& c, const Results& device, const Results& mode
   const uint32_t words = recordWords();
   const uint32_t ahit = findRecordField("any_hit_runs")->offset, chit = findRecordField("closest_hit_runs")->offset,
                  isect = findRecordField("intersection_runs")->offset;
-  std::set<uint32_t> ambiguous;
-  for (const RayAmbiguity& a : model.ambiguous) ambiguous.insert(a.ray);
+  std::map<uint32_t, const RayAmbiguity*> ambiguous;
+  for (const RayAmbiguity& a : model.ambiguous) ambiguous[a.ray] = &a;
+  // A double hit (R-WATERTIGHT, a "should"): on a ray through a shared edge
+  // or vertex whose candidates were all ignored, the model ran any-hit once
+  // for each of the k triangles sharing it; a watertight device runs it for
+  // one of them, so at most (model - (k - 1)) times in all.
+  FindingBuilder doubled;
+  doubled.finding = {Status::QualityWarning, "R-WATERTIGHT",
+                     "double hit: any-hit ran for more than one of the triangles sharing an edge or vertex"};
   FindingBuilder b;
   b.finding = {Status::Fail, "R-AHIT-DUP",
                "any-hit ran more often than once per primitive the ray crosses (NO_DUPLICATE_ANY_HIT_INVOCATION)"};
@@ -33,10 +41,21 @@ void compareAnyHitRuns(const Case& c, const Results& device, const Results& mode
   for (size_t i = 0; i < device.records.size() / words; ++i) {
     const uint32_t* d = &device.records[i * words];
     const uint32_t* m = &model.records[i * words];
-    if (ambiguous.count(static_cast<uint32_t>(i)) || m[chit] != 0 || m[isect] != 0) continue;
+    if (m[chit] != 0 || m[isect] != 0) continue;
+    if (const auto it = ambiguous.find(static_cast<uint32_t>(i)); it != ambiguous.end()) {
+      const RayAmbiguity& a = *it->second;
+      const uint32_t k = static_cast<uint32_t>(a.shared_triangles.size());
+      if (k < 2 || d[ahit] + (k - 1) <= m[ahit]) continue;
+      // Only where the triangles really share the edge, or close a fan around
+      // the vertex: on the outer border of a mesh hitting two is no rule's break.
+      RayAmbiguity shared{a.ray, a.reason, a.shared_triangles, {}};
+      if (crossesSharedEdge(c, shared)) doubled.addRay(static_cast<uint32_t>(i));
+      continue;
+    }
     ++checked;
     if (d[ahit] > m[ahit]) b.addRay(static_cast<uint32_t>(i));
   }
+  doubled.flush(v);
   if (b.finding.ray_count) {
     b.finding.message += " on " + std::to_string(b.finding.ray_count) + " of " + std::to_string(checked) + " rays";
     b.flush(v);

@@ -109,7 +109,9 @@ struct ModelShared {
   bool raygen_traces_launch_ray = false;  // raygen is exactly `trace: {}`
 };
 
-class Machine {
+// Cache-line aligned: each worker thread writes its own Machine, never a line
+// another worker reads (no false sharing between neighbouring allocations).
+class alignas(64) Machine {
  public:
   Machine(const ModelShared& shared, uint32_t* records);
   // Runs raygen for launch indices [begin, end) (records for ray i start at

@@ -25,6 +25,7 @@ struct ModelGeometry {
   std::vector<std::array<Vec3, 3>> triangles;  // per primitive, geometry transform applied
                                                // (may be left empty: see buildModelScene)
   uint32_t count = 0;                          // primitives
+  bool indexed = false;                        // indices given, every one in range
   std::vector<std::array<float, 6>> aabbs;
   uint32_t blas = 0, index = 0;
   ModelTier tier = ModelTier::Exact;

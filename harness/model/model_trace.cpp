@@ -313,77 +313,133 @@ bool sameTraceParameters(const Ray& a, const Ray& b) {
          a.sbt_stride == b.sbt_stride && a.miss == b.miss;
 }
 
+// A float that is neither infinite nor NaN (exponent bits not all ones).
+inline bool finiteBits(float f) {
+  uint32_t u;
+  std::memcpy(&u, &f, 4);
+  return (u & 0x7F800000u) != 0x7F800000u;
+}
+
 }  // namespace
 
+// One pass over the block: each ray is traced and shaded at once, with no
+// TraceRay copy or per-ray stage state on the common path. What a counts-only
+// closest-hit or miss program does is resolved once per block for the block's
+// first ray's trace parameters (per instance and geometry for hits), and the
+// counts are kept in locals, added to `counters` when the resolution changes
+// and at the end (no per-ray writes to memory another thread may share). Any
+// other ray (other parameters, SkipClosestHit, programs that are more than
+// counts) goes through shade() exactly as trace() would.
 void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
   const std::vector<Ray>& rays = sh_.c->rays.rays;
   const CPipeline& programs = *sh_.programs;
   const uint32_t width = sh_.c->rays.width;
-  const uint32_t words = recordWords();
+  const uint32_t words = records_ ? recordWords() : 0;
   uint32_t pipeFlags = 0;
   if (sh_.c->pipeline.flags & 0x1000) pipeFlags |= kRaySkipTriangles;
   if (sh_.c->pipeline.flags & 0x2000) pipeFlags |= kRaySkipAabbs;
   const ModelScene& scene = *sh_.scene;
-  constexpr uint32_t kChunk = 64;
-  Committed hits[kChunk];
+  const RTCScene top = scene.top;
+  const bool robust = scene.tier == ModelTier::Robust;
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
-  for (uint32_t b = begin; b < end; b += kChunk) {
-    const uint32_t e = std::min(end, b + kChunk);
-    const Ray& first = rays[b];
-    bool uniform = true;  // every ray of the chunk selects the same SBT records
-    // Trace the chunk (what directHit does, without its per-ray set-up).
-    for (uint32_t i = b; i < e; ++i) {
-      if (i + 8 < e) __builtin_prefetch(&rays[i + 8]);
-      const Ray& ray = rays[i];
-      uniform = uniform && sameTraceParameters(ray, first);
-      hits[i - b] = embreeClosestHit(scene, ctx, launchRay(ray), ray.flags | pipeFlags, sh_.need_facing);
+
+  const Ray& first = rays[begin];
+  const TraceRay r0 = launchRay(first);
+  const bool quick = !((first.flags | pipeFlags) & kRaySkipClosestHit);
+  const CountsOnly* missCounts = nullptr;
+  if (quick) {
+    const uint32_t mi = r0.miss & 0xFFFF;
+    if (mi < default_miss_.size() && default_miss_[mi].group && *default_miss_[mi].group < programs.miss.size() &&
+        programs.miss_counts[*default_miss_[mi].group].yes)
+      missCounts = &programs.miss_counts[*default_miss_[mi].group];
+  }
+  uint32_t lastInstance = ~0u, lastGeometry = ~0u;
+  const CountsOnly* hitCounts = nullptr;
+  uint64_t hitPending = 0, missPending = 0;  // quick hits (for hitCounts) and misses
+  auto flush = [this](const CountsOnly* k, uint64_t& n) {
+    if (k && n)
+      for (int c : k->counters) counters[c] += n;
+    n = 0;
+  };
+  const uint32_t runsRaygen = runs_offset_[kRunsRaygen], runsHit = runs_offset_[kRunsClosestHit],
+                 runsMiss = runs_offset_[kRunsMiss];
+
+  for (uint32_t i = begin; i < end; ++i) {
+    if (i + 8 < end) __builtin_prefetch(&rays[i + 8]);
+    const Ray& ray = rays[i];
+    const uint32_t flags = ray.flags | pipeFlags;
+    uint32_t* rec = records_ ? records_ + static_cast<size_t>(i) * words : nullptr;
+    if (rec) rec[runsRaygen] += 1;
+    // embreeRay + validRay + embreeClosestHit, for the launch ray itself.
+    RTCRayHit rh;
+    rh.ray.org_x = ray.origin[0]; rh.ray.org_y = ray.origin[1]; rh.ray.org_z = ray.origin[2];
+    rh.ray.dir_x = ray.direction[0]; rh.ray.dir_y = ray.direction[1]; rh.ray.dir_z = ray.direction[2];
+    rh.ray.time = 0;
+    rh.ray.mask = (ray.cull_mask & 0xFF) | ((flags & kRaySkipTriangles) ? 0u : kMaskTriangles) |
+                  ((flags & kRaySkipAabbs) ? 0u : kMaskAabbs);
+    rh.ray.id = 0;
+    rh.ray.flags = 0;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    const bool valid = finiteBits(ray.origin[0]) & finiteBits(ray.origin[1]) & finiteBits(ray.origin[2]) &
+                       finiteBits(ray.direction[0]) & finiteBits(ray.direction[1]) &
+                       finiteBits(ray.direction[2]) & (ray.tmin >= 0.0f) & (ray.tmin <= ray.tmax) &
+                       ((ray.cull_mask & 0xFF) != 0);
+    if (valid) {
+      rh.ray.tnear = robust ? nextUp(ray.tmin) : ray.tmin;
+      rh.ray.tfar = nextDown(ray.tmax);
+      rtcIntersect1(top, &ctx, &rh);
     }
-    // Closest-hit / miss programs of nothing but counts need no stage
-    // environment: resolved once per chunk (per instance and geometry).
-    const TraceRay r0 = launchRay(first);
-    const uint32_t flags0 = first.flags | pipeFlags;
-    const bool quick = uniform && !(flags0 & kRaySkipClosestHit);
-    const CountsOnly* missCounts = nullptr;
-    if (quick) {
-      const uint32_t mi = r0.miss & 0xFFFF;
-      if (mi < default_miss_.size() && default_miss_[mi].group && *default_miss_[mi].group < programs.miss.size() &&
-          programs.miss_counts[*default_miss_[mi].group].yes)
-        missCounts = &programs.miss_counts[*default_miss_[mi].group];
-    }
-    uint32_t lastInstance = ~0u, lastGeometry = ~0u;
-    const CountsOnly* hitCounts = nullptr;
-    x_ = b % width;
-    y_ = b / width;
-    for (uint32_t i = b; i < e; ++i, ++x_) {
-      if (x_ == width) { x_ = 0; ++y_; }
-      index_ = i;
-      rec_ = records_ ? records_ + static_cast<size_t>(i) * words : nullptr;
-      ray_ambiguous_ = false;
-      bumpRuns(kRunsRaygen);
-      const Committed& h = hits[i - b];
-      if (quick && h.valid) {
-        if (h.instance != lastInstance || h.geometry != lastGeometry) {
-          lastInstance = h.instance;
-          lastGeometry = h.geometry;
-          const CHitGroup* grp = groupOf(programs, hitRecord(h.instance, h.geometry, r0));
-          hitCounts = grp && grp->closest_hit && grp->closest_hit_counts.yes ? &grp->closest_hit_counts : nullptr;
+    const bool hit = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+    if (quick && sameTraceParameters(ray, first)) {
+      if (hit) {
+        if (rh.hit.instID[0] != lastInstance || rh.hit.geomID != lastGeometry) {
+          lastInstance = rh.hit.instID[0];
+          lastGeometry = rh.hit.geomID;
+          const CHitGroup* grp = groupOf(programs, hitRecord(lastInstance, lastGeometry, r0));
+          const CountsOnly* k =
+              grp && grp->closest_hit && grp->closest_hit_counts.yes ? &grp->closest_hit_counts : nullptr;
+          if (k != hitCounts) {
+            flush(hitCounts, hitPending);
+            hitCounts = k;
+          }
         }
         if (hitCounts) {
-          bump(*hitCounts);
-          bumpRuns(kRunsClosestHit);
+          ++hitPending;
+          if (rec) rec[runsHit] += 1;
           continue;
         }
-      } else if (quick && missCounts) {
-        bump(*missCounts);
-        bumpRuns(kRunsMiss);
+      } else if (missCounts) {
+        ++missPending;
+        if (rec) rec[runsMiss] += 1;
         continue;
       }
-      Payload payload;
-      payload.depth = 1;
-      shade(launchRay(rays[i]), rays[i].flags | pipeFlags, 1, h, payload);
     }
+    // Everything else: as trace() does, with this ray's launch state.
+    const TraceRay r = launchRay(ray);
+    Committed h;
+    if (hit) {
+      h = {true, rh.ray.tfar, rh.hit.instID[0], rh.hit.geomID, rh.hit.primID, 0xFEu, rh.hit.u, rh.hit.v};
+      if (sh_.need_facing) {
+        ModelCandidate cand;
+        cand.instance = h.instance;
+        cand.geometry = h.geometry;
+        cand.primitive = h.primitive;
+        h.kind = facing(scene, cand, r, flags).kind;
+      }
+    }
+    index_ = i;
+    x_ = i % width;
+    y_ = i / width;
+    rec_ = rec;
+    ray_ambiguous_ = false;
+    Payload payload;
+    payload.depth = 1;
+    shade(r, flags, 1, h, payload);
   }
+  flush(hitCounts, hitPending);
+  flush(missCounts, missPending);
 }
 
 // The model's decision over the sorted candidates (R-ORDER-UNSPEC: in
@@ -567,6 +623,18 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
       if (why) {
         if (amb.reason.empty()) amb.reason = why;
         unsure.push_back(k);
+      }
+    }
+    if (amb.reason == "edge" || amb.reason == "vertex") {
+      // The triangles of one instance the model decided as hits within the
+      // bound of the same shared edge or vertex (same t): a watertight device
+      // finds one of them, so a double hit shows as extra any-hit runs.
+      const ModelCandidate* first = nullptr;
+      for (const ModelCandidate& cand : *cands) {
+        if (cand.aabb || !cand.hit || cand.ambiguity == TriAmbiguity::None || !eligible(cand)) continue;
+        if (!first) first = &cand;
+        if (cand.instance == first->instance && std::fabs(cand.t - first->t) <= tr.tol(first->t))
+          amb.shared_triangles.push_back({true, cand.instance, cand.geometry, cand.primitive});
       }
     }
     if (!amb.reason.empty() || faces) {

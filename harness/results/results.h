@@ -32,6 +32,9 @@ struct RayAmbiguity {
                              // "first-hit" (terminate_on_first_hit), "aabb-face",
                              // "shader-arith" (an intersection program decision within rounding)
   std::vector<Candidate> candidates;
+  // edge / vertex: the triangles the model found within the error bound of
+  // the shared edge or vertex (each once); a watertight device finds one.
+  std::vector<Candidate> shared_triangles;
 };
 
 struct Results {

@@ -110,7 +110,11 @@ std::string writeResults(const Results& r, const std::string& dir_name, const st
     json cands = json::array();
     for (const Candidate& c : a.candidates)
       cands.push_back({{"hit", c.hit}, {"instance", c.instance}, {"geometry", c.geometry}, {"primitive", c.primitive}});
-    j["ambiguous"].push_back({{"ray", a.ray}, {"reason", a.reason}, {"candidates", cands}});
+    json shared = json::array();
+    for (const Candidate& c : a.shared_triangles)
+      shared.push_back({{"instance", c.instance}, {"geometry", c.geometry}, {"primitive", c.primitive}});
+    j["ambiguous"].push_back(
+        {{"ray", a.ray}, {"reason", a.reason}, {"candidates", cands}, {"shared_triangles", shared}});
   }
   std::ofstream(dir / "results.json") << j.dump(1) << '\n';
   if (!writeWords(dir / "records.bin", r.records)) return "cannot write records.bin in " + dir.string();
@@ -163,6 +167,9 @@ Results readResults(const std::string& dir_name, std::string* error) {
       a.reason = ja.at("reason");
       for (const json& jc : ja.at("candidates"))
         a.candidates.push_back({jc.at("hit"), jc.at("instance"), jc.at("geometry"), jc.at("primitive")});
+      if (ja.contains("shared_triangles"))
+        for (const json& js : ja.at("shared_triangles"))
+          a.shared_triangles.push_back({true, js.at("instance"), js.at("geometry"), js.at("primitive")});
       r.ambiguous.push_back(std::move(a));
     }
   } catch (const std::exception& e) {
