@@ -7,7 +7,7 @@
 #include "compare/counter_modes.h"
 #include "compare/image_pair.h"
 #include "compare/shared_edge.h"
-#include "compare/tolerances.h"
+#include "results/tolerances.h"
 #include "results/record_layout.h"
 
 namespace rayspec {
@@ -132,6 +132,20 @@ TEST(Compare, TShiftBeyondToleranceFails) {
   Results d = sampleResults("vulkan");
   setFloat(d, 0, "hit_t", 2.0f + 1e-3f);
   EXPECT_EQ(compareResults(c, samplePlan(c), d, sampleResults("model")).status, Status::Fail);
+}
+
+TEST(Compare, ModelTBoundWidensTheTToleranceOfThatRayOnly) {
+  const Case c = sampleCase();
+  Results m = sampleResults("model");
+  m.t_bounds.push_back({0, 2e-3f});  // ray 0's t is a sphere root near tangency
+  Results d = sampleResults("vulkan");
+  setFloat(d, 0, "hit_t", 2.0f + 1e-3f);
+  EXPECT_EQ(compareResults(c, samplePlan(c), d, m).status, Status::Pass);
+  setFloat(d, 0, "hit_t", 2.0f + 3e-3f);
+  EXPECT_EQ(compareResults(c, samplePlan(c), d, m).status, Status::Fail) << "beyond the bound";
+  Results other = sampleResults("vulkan");
+  setFloat(other, 1, "hit_t", 2.0f + 1e-3f);
+  EXPECT_EQ(compareResults(c, samplePlan(c), other, m).status, Status::Fail) << "ray 1 has no wider bound";
 }
 
 TEST(Compare, MissAndClosestHitRunTogetherFails) {

@@ -882,6 +882,22 @@ TEST(ModelSphere, TangentRayIsAmbiguousWithBothAnswers) {
   EXPECT_EQ(r.counters["closesthit"], 3u);
 }
 
+TEST(ModelSphere, NearlyTangentHitGetsAWiderTBoundThanACentralHit) {
+  // 0: through the centre (disc large), 1: close to tangency but clearly
+  // inside (disc small, so sqrt amplifies a device's rounding).
+  Case c = sphereCase({downRay(0.0f, 0), downRay(0.999f, 0)});
+  Results r = run(c, ModelTier::Exact);
+  ASSERT_EQ(r.status, "ok");
+  EXPECT_EQ(word(r, 0, "hit"), 1u);
+  EXPECT_EQ(word(r, 1, "hit"), 1u);
+  std::map<uint32_t, float> bound;
+  for (const TBound& b : r.t_bounds) bound[b.ray] = b.bound;
+  ASSERT_EQ(bound.count(1), 1u) << "a near-tangent root needs more than the default tolerance";
+  EXPECT_GT(bound[1], 1e-4f);
+  if (bound.count(0)) EXPECT_LT(bound[0], bound[1]);
+  EXPECT_TRUE(run(c, ModelTier::Fast).t_bounds.empty()) << "only the exact tier bounds t";
+}
+
 TEST(ModelSphere, RootNearTminIsAmbiguous) {
   // The ray starts just below the sphere (z = -1) going up: its near root is
   // ~tmin (0.001), its far root clear.

@@ -49,7 +49,8 @@ Results sampleResults() {
   r.images.push_back(im);
   Image color{"color", "color", 3, 2, 4, true, std::vector<uint32_t>(24, 0x3f800000u)};
   r.images.push_back(color);
-  r.ambiguous.push_back({4, "edge", {{true, 0, 0, 1}, {true, 0, 0, 2}}});
+  r.ambiguous.push_back({4, "edge", {{true, 0, 0, 1}, {true, 0, 0, 2}}, {{true, 0, 0, 1}, {true, 0, 0, 2}}});
+  r.t_bounds.push_back({5, 0.25f});
   return r;
 }
 
@@ -71,6 +72,10 @@ TEST(ResultsIo, BundleRoundTripsEveryField) {
   ASSERT_EQ(back.ambiguous.size(), 1u);
   EXPECT_EQ(back.ambiguous[0].candidates.size(), 2u);
   EXPECT_EQ(back.ambiguous[0].candidates[1].primitive, 2u);
+  EXPECT_EQ(back.ambiguous[0].shared_triangles.size(), 2u);
+  ASSERT_EQ(back.t_bounds.size(), 1u);
+  EXPECT_EQ(back.t_bounds[0].ray, 5u);
+  EXPECT_EQ(back.t_bounds[0].bound, 0.25f);
   // records.csv: header + one row per ray, the written hit_t shown, unwritten empty.
   std::ifstream csv(dir + "/records.csv");
   std::string header, row0, row1;

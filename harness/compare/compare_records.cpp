@@ -1,9 +1,10 @@
+#include <algorithm>
 #include <cstring>
 #include <map>
 
 #include "compare/compare_parts.h"
 #include "compare/shared_edge.h"
-#include "compare/tolerances.h"
+#include "results/tolerances.h"
 #include "results/record_layout.h"
 
 namespace rayspec {
@@ -99,6 +100,9 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
   const size_t rays = device.records.size() / words;
   std::map<uint32_t, const RayAmbiguity*> ambiguous;
   for (const RayAmbiguity& a : model.ambiguous) ambiguous[a.ray] = &a;
+  // R-PREC: clear rays whose t the model bounds more widely than the default.
+  std::map<uint32_t, float> t_bounds;
+  for (const TBound& b : model.t_bounds) t_bounds[b.ray] = b.bound;
 
   std::vector<const RecordField*> fields;
   for (const std::string& name : plan.record_fields)
@@ -126,7 +130,10 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
       if (!f->automatic && written(d, index) != written(m, index)) {
         same = false;
       } else if (f->automatic || written(d, index)) {
-        const Tolerance tol = toleranceFor(f->name);
+        Tolerance tol = toleranceFor(f->name);
+        if (const auto b = t_bounds.find(ray);
+            b != t_bounds.end() && (f->name == std::string("hit_t") || f->name == std::string("ray_tmax")))
+          tol.abs = std::max(tol.abs, static_cast<double>(b->second));
         for (uint32_t k = 0; k < f->words && same; ++k) {
           const uint32_t dw = d[f->offset + k], mw = m[f->offset + k];
           same = f->type == FieldType::Uint ? dw == mw : tol.matches(asFloat(dw), asFloat(mw));

@@ -5,7 +5,7 @@
 #include <cstring>
 
 #include "compare/compare_results.h"
-#include "compare/tolerances.h"
+#include "results/tolerances.h"
 
 namespace rayspec {
 

@@ -144,10 +144,17 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
     for (auto& m : machines) {
       for (size_t k = 0; k < plan.counters.size(); ++k) r.counters[plan.counters[k]] += m->counters[k];
       r.ambiguous.insert(r.ambiguous.end(), m->ambiguous.begin(), m->ambiguous.end());
+      r.t_bounds.insert(r.t_bounds.end(), m->t_bounds.begin(), m->t_bounds.end());
       if (!m->error.empty() && r.status == "ok") r.status = m->error;
     }
     std::sort(r.ambiguous.begin(), r.ambiguous.end(),
               [](const RayAmbiguity& a, const RayAmbiguity& b) { return a.ray < b.ray; });
+    // One bound per ray (the widest of its traces), in ray order.
+    std::sort(r.t_bounds.begin(), r.t_bounds.end(),
+              [](const TBound& a, const TBound& b) { return a.ray < b.ray || (a.ray == b.ray && a.bound > b.bound); });
+    r.t_bounds.erase(std::unique(r.t_bounds.begin(), r.t_bounds.end(),
+                                 [](const TBound& a, const TBound& b) { return a.ray == b.ray; }),
+                     r.t_bounds.end());
     if (plan.records) fillImages(r, plan);
   } catch (const std::exception& e) {
     r.status = std::string("Crash: model: ") + e.what();

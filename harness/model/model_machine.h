@@ -77,6 +77,7 @@ struct Committed {
   double t = 0;
   uint32_t instance = 0, geometry = 0, primitive = 0, kind = 0;
   float b1 = 0, b2 = 0;
+  double t_err = 0;  // exact tier: bound on a device's t beyond the model's (a sphere root's rounding)
 };
 
 struct StageEnv {
@@ -120,6 +121,7 @@ class alignas(64) Machine {
 
   std::vector<uint64_t> counters;
   std::vector<RayAmbiguity> ambiguous;
+  std::vector<TBound> t_bounds;
   std::string error;  // first case error (e.g. recursion deeper than allowed)
 
  private:

@@ -10,6 +10,7 @@
 #include "model/model_machine.h"
 #include "model/sphere_error.h"
 #include "model/watertight.h"
+#include "results/tolerances.h"
 #include "results/record_layout.h"
 
 namespace rayspec {
@@ -222,6 +223,14 @@ Flow Machine::report(const CStmt& s, StageEnv& env) {
     if (ah != Flow::Ignore) {
       accepted = true;
       tr->best = {true, static_cast<double>(t), hv.instance, hv.geometry, hv.primitive, kind, hv.b1, hv.b2};
+      if (tr->exact && s.t.kind == Expr::Kind::Op &&
+          (s.t.op == OpCode::SphereNear || s.t.op == OpCode::SphereFar) && env.hit && env.ray) {
+        // R-PREC: how far a device's root may lie from this one.
+        const ModelInstance& mi = sh_.scene->instances[hv.instance];
+        const SphereError se = sphereError(hv.aabb_min, hv.aabb_max, hv.object_origin, hv.object_direction,
+                                           objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
+        tr->best.t_err = s.t.op == OpCode::SphereNear ? se.near_err : se.far_err;
+      }
       tr->tmax_cur = t;
       env.tmax_view = t;
       if (ah == Flow::Terminate || (tr->flags & kRayTerminateOnFirstHit)) {
@@ -730,6 +739,14 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
         addCommitted(sandbox(tr, *cands, nullptr, -1, -1, payloadIn, &flipped));
       }
       if (amb.reason.empty()) amb.reason = "shader-arith";
+    }
+    // R-PREC: the committed t is a root whose rounding on a device may exceed
+    // the comparison's tolerance for hit_t: the answer is sure, its t is
+    // checked against this wider bound.
+    if (tr.best.valid && tr.best.t_err > 0) {
+      const Tolerance tol = toleranceFor("hit_t");
+      if (tr.best.t_err > tol.abs + tol.rel * std::max(std::fabs(tr.best.t), 1.0))
+        t_bounds.push_back({index_, static_cast<float>(tr.best.t_err)});
     }
     if (!amb.reason.empty()) {
       ambiguous.push_back(std::move(amb));

@@ -37,6 +37,14 @@ struct RayAmbiguity {
   std::vector<Candidate> shared_triangles;
 };
 
+// A ray whose hit t a device may compute further from the model's than the
+// default tolerance allows (exact tier; the rounding of an intersection
+// program's arithmetic, such as a sphere root near tangency, R-PREC).
+struct TBound {
+  uint32_t ray = 0;
+  float bound = 0;  // |device t - model t| may reach this
+};
+
 struct Results {
   std::string case_name;
   std::string backend;      // "vulkan" or "model"
@@ -47,6 +55,7 @@ struct Results {
   std::vector<uint32_t> records;  // width*height*recordWords() words
   std::vector<Image> images;
   std::vector<RayAmbiguity> ambiguous;  // model, exact tier: rays that are not clear
+  std::vector<TBound> t_bounds;         // model, exact tier: clear rays with a wider t bound
   std::vector<std::string> validation_messages;  // validation-layer errors (device)
   double seconds = 0.0;     // wall time of the execution (setup + trace + read-back)
   std::string case_file;    // path of the case's YAML file (`rayspec compare` re-parses it)

@@ -116,6 +116,8 @@ std::string writeResults(const Results& r, const std::string& dir_name, const st
     j["ambiguous"].push_back(
         {{"ray", a.ray}, {"reason", a.reason}, {"candidates", cands}, {"shared_triangles", shared}});
   }
+  j["t_bounds"] = json::array();
+  for (const TBound& b : r.t_bounds) j["t_bounds"].push_back({{"ray", b.ray}, {"bound", b.bound}});
   std::ofstream(dir / "results.json") << j.dump(1) << '\n';
   if (!writeWords(dir / "records.bin", r.records)) return "cannot write records.bin in " + dir.string();
   writeRecordsCsv(r, dir / "records.csv", kept_fields);
@@ -161,6 +163,8 @@ Results readResults(const std::string& dir_name, std::string* error) {
       }
       r.images.push_back(std::move(im));
     }
+    if (j.contains("t_bounds"))
+      for (const json& jb : j.at("t_bounds")) r.t_bounds.push_back({jb.at("ray"), jb.at("bound")});
     for (const json& ja : j.at("ambiguous")) {
       RayAmbiguity a;
       a.ray = ja.at("ray");

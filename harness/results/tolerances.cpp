@@ -1,4 +1,4 @@
-#include "compare/tolerances.h"
+#include "results/tolerances.h"
 
 #include <algorithm>
 #include <cmath>
