@@ -286,17 +286,7 @@ Flow Machine::execStmt(const CStmt& s, StageEnv& env) {
     }
     case Stmt::Kind::Trace: {
       const bool fromLaunch = env.stage == Stage::Raygen;
-      TraceRay r;
-      const Ray& base = fromLaunch ? sh_.c->rays.rays[index_] : sh_.c->rays.defaults;
-      r.origin = base.origin;
-      r.direction = base.direction;
-      r.tmin = base.tmin;
-      r.tmax = base.tmax;
-      r.flags = base.flags;
-      r.cull_mask = base.cull_mask;
-      r.sbt_offset = base.sbt_offset;
-      r.sbt_stride = base.sbt_stride;
-      r.miss = base.miss;
+      TraceRay r = launchRay(fromLaunch ? sh_.c->rays.rays[index_] : sh_.c->rays.defaults);
       auto v3 = [&](int k, Vec3& out) {
         if (s.has[k]) { const Val v = eval(s.args[k], env); out = {v.f[0], v.f[1], v.f[2]}; }
       };

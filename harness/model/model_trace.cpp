@@ -138,6 +138,28 @@ Facing facing(const ModelScene& s, const ModelCandidate& c, const TraceRay& ray,
   return f;
 }
 
+// The environment of a stage that sees a hit (intersection, any-hit, closest-hit).
+StageEnv hitStage(Stage stage, const std::vector<uint32_t>& record_data, Payload* payload, const TraceRay& ray,
+                  const HitView& hv, float tmax_view, uint32_t depth) {
+  StageEnv e;
+  e.stage = stage;
+  e.record_data = &record_data;
+  e.payload = payload;
+  e.ray = &ray;
+  e.hit = &hv;
+  e.tmax_view = tmax_view;
+  e.depth = depth;
+  return e;
+}
+
+// A hit's own values on the view of its primitive.
+void setHit(HitView& hv, float t, uint32_t kind, float b1, float b2) {
+  hv.t = t;
+  hv.hit_kind = kind;
+  hv.b1 = b1;
+  hv.b2 = b2;
+}
+
 HitView viewOf(const ModelScene& s, const Case& c, const TraceRay& ray, uint32_t instance, uint32_t geometry,
                uint32_t primitive, bool objectRay = true) {
   HitView hv;
@@ -203,21 +225,12 @@ Flow Machine::report(const CStmt& s, StageEnv& env) {
   }
   if (inside) {
     HitView hv = *env.hit;
-    hv.t = t;
-    hv.hit_kind = kind;
-    hv.b1 = attr.f[0];
-    hv.b2 = attr.f[1];
+    setHit(hv, t, kind, attr.f[0], attr.f[1]);
     Flow ah = Flow::Continue;
     if (!tr->cur_opaque && tr->cur_group && tr->cur_group->any_hit) {
       bumpRuns(kRunsAnyHit);
-      StageEnv a;
-      a.stage = Stage::AnyHit;
-      a.record_data = &tr->cur_rec->data;
-      a.payload = tr->payload;
-      a.ray = &tr->ray;
-      a.hit = &hv;
-      a.tmax_view = t;  // R-TMAX-VIEW: any-hit sees the candidate's t
-      a.depth = tr->depth;
+      // R-TMAX-VIEW: any-hit sees the candidate's t.
+      StageEnv a = hitStage(Stage::AnyHit, tr->cur_rec->data, tr->payload, tr->ray, hv, t, tr->depth);
       ah = exec(*tr->cur_group->any_hit, a);
     }
     if (ah != Flow::Ignore) {
@@ -488,13 +501,8 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
       tr.cur_rec = rec;
       tr.cur_group = grp;
       bumpRuns(kRunsIntersection);
-      StageEnv env;
-      env.stage = Stage::Intersection;
-      env.record_data = &rec->data;
-      env.ray = &r;
-      env.hit = &hv;
-      env.tmax_view = static_cast<float>(tr.tmax_cur);  // R-TMAX-VIEW: closest so far
-      env.depth = depth;
+      // R-TMAX-VIEW: the intersection shader sees the closest t so far.
+      StageEnv env = hitStage(Stage::Intersection, rec->data, nullptr, r, hv, static_cast<float>(tr.tmax_cur), depth);
       env.traversal = &tr;
       exec(*grp->intersection, env);
       tr.cur = nullptr;
@@ -524,19 +532,9 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
     Flow ah = Flow::Continue;
     if (!opaque && grp && grp->any_hit) {
       HitView hv = viewOf(scene, c, r, cand.instance, cand.geometry, cand.primitive);
-      hv.t = static_cast<float>(cand.t);
-      hv.hit_kind = f.kind;
-      hv.b1 = cand.b1;
-      hv.b2 = cand.b2;
+      setHit(hv, static_cast<float>(cand.t), f.kind, cand.b1, cand.b2);
       bumpRuns(kRunsAnyHit);
-      StageEnv a;
-      a.stage = Stage::AnyHit;
-      a.record_data = &rec->data;
-      a.payload = &payload;
-      a.ray = &r;
-      a.hit = &hv;
-      a.tmax_view = hv.t;
-      a.depth = depth;
+      StageEnv a = hitStage(Stage::AnyHit, rec->data, &payload, r, hv, hv.t, depth);
       ah = exec(*grp->any_hit, a);
       if (ah == Flow::Ignore) continue;
     }
@@ -849,19 +847,9 @@ void Machine::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Com
       } else if (grp && grp->closest_hit) {
         HitView hv = viewOf(scene, c, r, best.instance, best.geometry, best.primitive,
                             sh_.need_object_ray);
-        hv.t = static_cast<float>(best.t);
-        hv.hit_kind = best.kind;
-        hv.b1 = best.b1;
-        hv.b2 = best.b2;
+        setHit(hv, static_cast<float>(best.t), best.kind, best.b1, best.b2);
         bumpRuns(kRunsClosestHit);
-        StageEnv env;
-        env.stage = Stage::ClosestHit;
-        env.record_data = &rec->data;
-        env.payload = &payload;
-        env.ray = &r;
-        env.hit = &hv;
-        env.tmax_view = hv.t;
-        env.depth = depth;
+        StageEnv env = hitStage(Stage::ClosestHit, rec->data, &payload, r, hv, hv.t, depth);
         exec(*grp->closest_hit, env);
       }
     }
