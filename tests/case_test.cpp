@@ -637,3 +637,30 @@ TEST(Suite, AllCasesParse) {
 
 }  // namespace
 }  // namespace rayspec
+
+namespace rayspec {
+namespace {
+
+std::string withCounters(const std::string& counters) {
+  std::string text = kGood;
+  const std::string from = "counters: [miss, closesthit, reported]";
+  text.replace(text.find(from), from.size(), "counters: " + counters);
+  return text;
+}
+
+TEST(ParseCase, CounterModesAreDeclaredAsNameModePairs) {
+  const ParseResult r = parse(withCounters("[miss, {closesthit: exact}, {reported: at_least}]"));
+  ASSERT_TRUE(r.value) << allErrors(r);
+  EXPECT_EQ(r.value->outputs.counters, (std::vector<std::string>{"miss", "closesthit", "reported"}));
+  EXPECT_EQ(r.value->outputs.counter_modes.at("reported"), "at_least");
+  EXPECT_EQ(r.value->outputs.counter_modes.at("closesthit"), "exact");
+  EXPECT_EQ(r.value->outputs.counter_modes.count("miss"), 0u);
+}
+
+TEST(ParseCase, UnknownCounterModeIsAnError) {
+  const ParseResult r = parse(withCounters("[miss, closesthit, {reported: sometimes}]"));
+  expectError(r, 41, "outputs.counters[2].reported", "unknown counter mode 'sometimes'");
+}
+
+}  // namespace
+}  // namespace rayspec

@@ -360,3 +360,24 @@ TEST(Status, NamesAreStableAndParse) {
 
 }  // namespace
 }  // namespace rayspec
+
+namespace rayspec {
+namespace {
+
+TEST(CounterModes, DeclaredModesWinAndBoundTheDevice) {
+  Case c = sampleCase();
+  c.outputs.counter_modes = {{"ahit", "at_least"}};
+  EXPECT_EQ(counterModes(c).at("ahit"), CounterMode::AtLeast);
+  Results fewer = sampleResults("vulkan");
+  fewer.counters["ahit"] = 1;  // the model ran it twice: the device must too
+  EXPECT_EQ(compareResults(c, samplePlan(c), fewer, sampleResults("model")).status, Status::Fail);
+  Results more = sampleResults("vulkan");
+  more.counters["ahit"] = 5;
+  EXPECT_EQ(compareResults(c, samplePlan(c), more, sampleResults("model")).status, Status::Pass);
+  c.outputs.counter_modes = {{"ahit", "at_most"}};
+  EXPECT_EQ(compareResults(c, samplePlan(c), more, sampleResults("model")).status, Status::Fail);
+  EXPECT_EQ(compareResults(c, samplePlan(c), fewer, sampleResults("model")).status, Status::Pass);
+}
+
+}  // namespace
+}  // namespace rayspec

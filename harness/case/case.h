@@ -127,6 +127,10 @@ struct ImageOutput {
 
 struct Outputs {
   std::vector<std::string> counters;  // every counter a `count` statement names
+  // Comparison modes a case declares for some counters (`{anyhit: at_least}`):
+  // exact, at_least, at_most or informational; the others are derived
+  // (compare/counter_modes.h).
+  std::map<std::string, std::string> counter_modes;
   std::vector<std::string> per_ray;   // every field a `record` statement writes
   std::vector<ImageOutput> images;
 };

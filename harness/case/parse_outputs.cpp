@@ -1,6 +1,8 @@
 // outputs: counters, per-ray fields, images.
 #include <algorithm>
 #include <cctype>
+#include <map>
+#include <optional>
 
 #include "case/case_parts.h"
 #include "results/record_layout.h"
@@ -19,12 +21,35 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
   return std::find(v.begin(), v.end(), s) != v.end();
 }
 
+const char* const kCounterModes[] = {"exact", "at_least", "at_most", "informational"};
+
+// A counter written as {name: mode}: returns the name, records the mode.
+std::optional<std::string> counterWithMode(YamlReader& r, const YAML::Node& n, const std::string& f,
+                                           std::map<std::string, std::string>* modes) {
+  if (!modes || !n.IsMap()) return r.string(n, f);
+  if (n.size() != 1) {
+    r.error(n, f, "a counter with a mode is one `name: mode` pair");
+    return std::nullopt;
+  }
+  const auto kv = n.begin();
+  const std::string name = kv->first.as<std::string>();
+  auto mode = r.string(kv->second, f + "." + name);
+  if (!mode) return std::nullopt;
+  if (std::find(std::begin(kCounterModes), std::end(kCounterModes), *mode) == std::end(kCounterModes)) {
+    r.error(kv->second, f + "." + name, "unknown counter mode '" + *mode +
+                                            "' (exact, at_least, at_most, informational)");
+    return std::nullopt;
+  }
+  (*modes)[name] = *mode;
+  return name;
+}
+
 void parseNames(YamlReader& r, const YAML::Node& n, const std::string& field, bool record_fields,
-                std::vector<std::string>& out) {
+                std::vector<std::string>& out, std::map<std::string, std::string>* modes = nullptr) {
   if (!r.expectSeq(n, field)) return;
   for (size_t i = 0; i < n.size(); ++i) {
     const std::string f = field + "[" + std::to_string(i) + "]";
-    auto name = r.string(n[i], f);
+    auto name = counterWithMode(r, n[i], f, modes);
     if (!name) continue;
     if (!isIdentifier(*name)) {
       r.error(n[i], f, "'" + *name + "' is not a valid name");
@@ -57,7 +82,7 @@ void parseNames(YamlReader& r, const YAML::Node& n, const std::string& field, bo
 void parseOutputs(YamlReader& r, const YAML::Node& n, Outputs& o) {
   if (!r.expectMap(n, "outputs", {"counters", "per_ray", "images"})) return;
   if (auto v = YamlReader::get(n, "counters"); v.IsDefined())
-    parseNames(r, v, "outputs.counters", false, o.counters);
+    parseNames(r, v, "outputs.counters", false, o.counters, &o.counter_modes);
   if (auto v = YamlReader::get(n, "per_ray"); v.IsDefined())
     parseNames(r, v, "outputs.per_ray", true, o.per_ray);
   const YAML::Node images = YamlReader::get(n, "images");

@@ -26,8 +26,15 @@ void compareCounters(const Case& c, const Results& device, const Results& model,
         if (ok && diff) f.message = values + " (within " + std::to_string(ambiguous_rays) + " ambiguous rays)";
         break;
       }
-      case CounterMode::AtLeast: ok = d >= m; break;
-      case CounterMode::AtMost: ok = d <= m; break;
+      // Each ambiguous ray may legally take another path once here too.
+      case CounterMode::AtLeast:
+        ok = d + ambiguous_rays >= m;
+        f.message = values;
+        break;
+      case CounterMode::AtMost:
+        ok = d <= m + ambiguous_rays;
+        f.message = values;
+        break;
       case CounterMode::Informational: f.message = values; break;
     }
     if (!ok) {

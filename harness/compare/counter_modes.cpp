@@ -26,6 +26,13 @@ std::map<std::string, CounterMode> counterModes(const Case& c) {
     if (g.any_hit) traversalDependent(*g.any_hit);
     if (g.intersection) traversalDependent(*g.intersection);
   }
+  // What the case declares wins.
+  for (const auto& [name, mode] : c.outputs.counter_modes) {
+    if (mode == "exact") modes[name] = CounterMode::Exact;
+    if (mode == "at_least") modes[name] = CounterMode::AtLeast;
+    if (mode == "at_most") modes[name] = CounterMode::AtMost;
+    if (mode == "informational") modes[name] = CounterMode::Informational;
+  }
   return modes;
 }
 

@@ -2,9 +2,13 @@
 // the stage that counts it:
 //   exact          counted only in raygen, miss, closest-hit or callables:
 //                  one per trace / call (R-MISS-XOR-CHIT, R-CALLABLE);
-//   at_least       (declared in the case) e.g. any-hit of the closest hit;
-//   at_most        (declared in the case) e.g. any-hit per primitive under
-//                  NO_DUPLICATE_ANY_HIT_INVOCATION;
+//   at_least       declared in the case (`counters: [{anyhit: at_least}]`):
+//                  the device ran it at least as often as the model, which
+//                  runs the minimum (candidates in t order, none beyond the
+//                  committed hit): e.g. any-hit and intersection counts
+//                  without terminate (R-AHIT-CLOSEST, R-ISECT-CLOSEST);
+//   at_most        declared: at most as often, e.g. any-hit under
+//                  NO_DUPLICATE_ANY_HIT_INVOCATION with every candidate ignored;
 //   informational  counted in any-hit or intersection: depends on traversal
 //                  order and duplicate invocations (R-ORDER-UNSPEC, R-AHIT-DUP,
 //                  R-ISECT-MULTI), reported, never failed.
