@@ -664,3 +664,32 @@ TEST(ParseCase, UnknownCounterModeIsAnError) {
 
 }  // namespace
 }  // namespace rayspec
+
+namespace rayspec {
+namespace {
+
+std::string withImage(const std::string& image) {
+  std::string text = kGood;
+  const size_t at = text.find("outputs:");
+  EXPECT_NE(at, std::string::npos);
+  const size_t images = text.find("images:", at);
+  if (images == std::string::npos) return text;
+  const size_t end = text.find('\n', images);
+  text.insert(end + 1, "    - " + image + "\n");
+  return text;
+}
+
+TEST(ParseCase, ImageThresholds) {
+  const ParseResult r = parse(withImage("{name: tol, from: hit_t, tolerance: 4, max_failing_pixels: 2}"));
+  ASSERT_TRUE(r.value) << allErrors(r);
+  const ImageOutput& im = r.value->outputs.images.front();
+  EXPECT_EQ(im.name, "tol");
+  EXPECT_EQ(im.tolerance, 4.0);
+  EXPECT_EQ(im.max_failing_pixels, 2u);
+  const ParseResult bad = parse(withImage("{name: tol, from: hit_t, tolerance: 0}"));
+  EXPECT_FALSE(bad.value);
+  EXPECT_NE(allErrors(bad).find("tolerance scale must be above 0"), std::string::npos) << allErrors(bad);
+}
+
+}  // namespace
+}  // namespace rayspec

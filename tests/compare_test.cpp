@@ -381,3 +381,36 @@ TEST(CounterModes, DeclaredModesWinAndBoundTheDevice) {
 
 }  // namespace
 }  // namespace rayspec
+
+namespace rayspec {
+namespace {
+
+TEST(CompareImages, CaseThresholdsAllowFailingPixelsAndScaleTheTolerance) {
+  const Case c = sampleCase();
+  Plan plan = samplePlan(c);
+  Results d = sampleResults("vulkan");
+  d.images[0].texels[3] = 4;  // one pixel differs (an id image: exactly)
+  EXPECT_EQ(compareResults(c, plan, d, sampleResults("model")).status, Status::Fail);
+  ImageOutput out{"primitive", "primitive_id", {}};
+  out.max_failing_pixels = 1;
+  plan.images = {out};
+  EXPECT_EQ(compareResults(c, plan, d, sampleResults("model")).status, Status::Pass);
+  d.images[0].texels[2] = 4;  // a second one: beyond what the case allows
+  EXPECT_EQ(compareResults(c, plan, d, sampleResults("model")).status, Status::Fail);
+
+  // A float image: 3e-4 off is beyond the colour tolerance (1e-4), within 4x it.
+  Results fd = sampleResults("vulkan"), fm = sampleResults("model");
+  Image color{"color", "color", 4, 1, 1, true, {0x3f800000u, 0x3f800000u, 0x3f800000u, 0x3f800000u}};
+  fm.images.push_back(color);
+  float off = 1.0f + 3e-4f;
+  std::memcpy(&color.texels[1], &off, 4);
+  fd.images.push_back(color);
+  ImageOutput strict{"color", "color", {}};
+  plan.images = {out, strict};
+  EXPECT_EQ(compareResults(c, plan, fd, fm).status, Status::Fail);
+  plan.images[1].tolerance = 4.0;
+  EXPECT_EQ(compareResults(c, plan, fd, fm).status, Status::Pass);
+}
+
+}  // namespace
+}  // namespace rayspec

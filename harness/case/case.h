@@ -123,6 +123,8 @@ struct ImageOutput {
   std::string name;
   std::string field;  // a record field: Uint fields -> r32ui, Float fields -> rgba32f
   SourceLoc loc;
+  double tolerance = 1.0;           // scale of the field's tolerance (float images)
+  uint32_t max_failing_pixels = 0;  // pixels allowed to differ before the image fails
 };
 
 struct Outputs {

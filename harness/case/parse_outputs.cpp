@@ -90,7 +90,8 @@ void parseOutputs(YamlReader& r, const YAML::Node& n, Outputs& o) {
   for (size_t i = 0; i < images.size(); ++i) {
     const std::string f = "outputs.images[" + std::to_string(i) + "]";
     const YAML::Node img = images[i];
-    if (!r.expectMap(img, f, {"name", "from"}) || !(r.require(img, f, "name") & r.require(img, f, "from")))
+    if (!r.expectMap(img, f, {"name", "from", "tolerance", "max_failing_pixels"}) ||
+        !(r.require(img, f, "name") & r.require(img, f, "from")))
       continue;
     ImageOutput out;
     out.loc = r.loc(img, f);
@@ -107,6 +108,20 @@ void parseOutputs(YamlReader& r, const YAML::Node& n, Outputs& o) {
       r.error(YamlReader::get(img, "from"), f + ".from",
               "field '" + *from + "' is not declared in outputs.per_ray");
       continue;
+    }
+    if (const YAML::Node t = YamlReader::get(img, "tolerance"); t.IsDefined()) {
+      const auto scale = r.number(t, f + ".tolerance");
+      if (!scale) continue;
+      if (!(*scale > 0)) {
+        r.error(t, f + ".tolerance", "the tolerance scale must be above 0");
+        continue;
+      }
+      out.tolerance = *scale;
+    }
+    if (const YAML::Node m = YamlReader::get(img, "max_failing_pixels"); m.IsDefined()) {
+      const auto count = r.uint(m, f + ".max_failing_pixels");
+      if (!count) continue;
+      out.max_failing_pixels = *count;
     }
     out.name = *name;
     out.field = *from;

@@ -6,9 +6,14 @@
 namespace rayspec {
 
 // Each kept image against the model's, the pixels of numerically ambiguous
-// rays excluded (their legal answers differ by design); see image_pair.h.
-void compareImages(const Results& device, const Results& model, const std::set<uint32_t>& ambiguous, Verdict& v) {
+// rays excluded (their legal answers differ by design); see image_pair.h. The
+// case's thresholds per image: a tolerance scale and the failing pixels allowed.
+void compareImages(const Plan& plan, const Results& device, const Results& model, const std::set<uint32_t>& ambiguous,
+                   Verdict& v) {
   for (const Image& di : device.images) {
+    ImageOutput thresholds;
+    for (const ImageOutput& out : plan.images)
+      if (out.name == di.name) thresholds = out;
     const Image* mi = nullptr;
     for (const Image& candidate : model.images)
       if (candidate.name == di.name) mi = &candidate;
@@ -17,13 +22,15 @@ void compareImages(const Results& device, const Results& model, const std::set<u
       v.add({Status::Fail, "image", "image '" + di.name + "' missing or of another size in the model", {}, 1});
       continue;
     }
-    const PixelCount count = countFailingPixels(prepareImagePair(di, *mi, ambiguous));
+    const PixelCount count = countFailingPixels(prepareImagePair(di, *mi, ambiguous, thresholds.tolerance));
     if (!count.failing) continue;
     std::ostringstream s;
     s << "image '" << di.name << "' differs from the model in " << count.failing << " pixels";
     if (di.is_float) s << " (largest difference " << count.max_error << "x the tolerance of '" << di.field << "')";
+    if (thresholds.max_failing_pixels) s << ", " << thresholds.max_failing_pixels << " allowed";
     s << (count.by_oiio ? " [OpenImageIO compare]" : "");
-    v.add({Status::Fail, "image", s.str(), count.first, static_cast<uint32_t>(count.failing)});
+    const Status status = count.failing > thresholds.max_failing_pixels ? Status::Fail : Status::Pass;
+    v.add({status, "image", s.str(), count.first, static_cast<uint32_t>(count.failing)});
   }
 }
 

@@ -14,7 +14,7 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
 // which the model committed no hit ran any-hit once on every primitive it
 // crosses: the device may run it at most that often on the ray.
 void compareAnyHitRuns(const Case& c, const Results& device, const Results& model, Verdict& v);
-void compareImages(const Results& device, const Results& model, const std::set<uint32_t>& ambiguous_rays,
+void compareImages(const Plan& plan, const Results& device, const Results& model, const std::set<uint32_t>& ambiguous_rays,
                    Verdict& v);
 
 // Collects the rays breaking one rule into one finding.

@@ -48,7 +48,7 @@ Verdict compareResults(const Case& c, const Plan& plan, const Results& device, c
   compareCounters(c, device, model, ambiguous.size(), v);
   compareRecords(c, plan, device, model, v);
   compareAnyHitRuns(c, device, model, v);
-  compareImages(device, model, ambiguous, v);
+  compareImages(plan, device, model, ambiguous, v);
   return v;
 }
 
