@@ -182,7 +182,7 @@ void BM_Model(benchmark::State& state, ModelTier tier) {
   reference();  // computed before timing starts
   for (auto _ : state) {
     r = runOnModel(c, plan, o);
-    if (r.status != "ok") state.SkipWithError(r.status.c_str());
+    if (!r.ok()) state.SkipWithError(r.statusText().c_str());
     benchmark::DoNotOptimize(r.counters);
   }
   // Same rays, same scene: the model must find exactly the bare loop's hits.

@@ -58,7 +58,6 @@ void setFloat(Results& r, uint32_t ray, const char* field, float v) {
 Results sampleResults(const std::string& backend) {
   Results r;
   r.backend = backend;
-  r.status = "ok";
   r.width = 4;
   r.height = 1;
   r.records.assign(4 * recordWords(), 0);
@@ -160,7 +159,7 @@ TEST(Compare, MissAndClosestHitRunTogetherFails) {
 TEST(Compare, AmbiguousRayLeakIsAQualityWarningAndOtherCandidateIsFine) {
   const Case c = sampleCase();
   Results m = sampleResults("model");
-  m.ambiguous.push_back({0, "edge", {{true, 0, 0, 0}, {true, 0, 0, 1}}});
+  m.ambiguous.push_back({0, AmbiguityReason::Edge, {{true, 0, 0, 0}, {true, 0, 0, 1}}});
   Results d = sampleResults("vulkan");
   setUint(d, 0, "primitive_id", 1);  // the other triangle of the edge: legal
   d.images[0].texels[0] = 1;
@@ -200,7 +199,7 @@ TEST(Compare, DoubleHitAtASharedEdgeIsAQualityWarning) {
   c.scene.blases[0].geometries[0].flags = kGeometryNoDuplicateAnyHit;
   Results model = sampleResults("model");
   setUint(model, 2, "any_hit_runs", 2);  // the model found both triangles once each
-  model.ambiguous.push_back({2, "edge", {{false, 0, 0, 0}}, {{true, 0, 0, 0}, {true, 0, 0, 1}}});
+  model.ambiguous.push_back({2, AmbiguityReason::Edge, {{false, 0, 0, 0}}, {{true, 0, 0, 0}, {true, 0, 0, 1}}});
   Results once = sampleResults("vulkan");
   setUint(once, 2, "any_hit_runs", 1);  // watertight: one of them
   EXPECT_EQ(compareResults(c, samplePlan(c), once, model).status, Status::Pass);
@@ -222,7 +221,7 @@ TEST(Compare, MissAtASharedEdgeIsALeakEvenWhenAMissIsLegal) {
   leak.counters["chit"] = 1;
   // The ray crosses the diagonal both triangles share: a miss is a leak.
   Results shared = sampleResults("model");
-  shared.ambiguous.push_back({0, "edge", {{true, 0, 0, 0}, {true, 0, 0, 1}, {false, 0, 0, 0}}});
+  shared.ambiguous.push_back({0, AmbiguityReason::Edge, {{true, 0, 0, 0}, {true, 0, 0, 1}, {false, 0, 0, 0}}});
   EXPECT_EQ(compareResults(c, samplePlan(c), leak, shared).status, Status::QualityWarning);
   // The same miss after the device's any-hit saw a candidate (and ignored
   // it, which the legal miss allows) is no leak.
@@ -232,16 +231,16 @@ TEST(Compare, MissAtASharedEdgeIsALeakEvenWhenAMissIsLegal) {
   // Corner (0, 0) is in both triangles, but its fan is open (the outer
   // border): a miss is fine.
   Results corner = sampleResults("model");
-  corner.ambiguous.push_back({0, "vertex", {{true, 0, 0, 0}, {true, 0, 0, 1}}});
+  corner.ambiguous.push_back({0, AmbiguityReason::Vertex, {{true, 0, 0, 0}, {true, 0, 0, 1}}});
   EXPECT_EQ(compareResults(c, samplePlan(c), leak, corner).status, Status::Pass);
   // The outer border edge (one triangle): hit or miss are both fine, even
   // when the model lists no miss.
   Results border = sampleResults("model");
-  border.ambiguous.push_back({0, "edge", {{true, 0, 0, 0}}});
+  border.ambiguous.push_back({0, AmbiguityReason::Edge, {{true, 0, 0, 0}}});
   EXPECT_EQ(compareResults(c, samplePlan(c), leak, border).status, Status::Pass);
   // A miss no rule allows (the model lists a primitive of no triangle) is a leak.
   Results other = sampleResults("model");
-  other.ambiguous.push_back({0, "edge", {{true, 0, 0, 7}}});
+  other.ambiguous.push_back({0, AmbiguityReason::Edge, {{true, 0, 0, 7}}});
   EXPECT_EQ(compareResults(c, samplePlan(c), leak, other).status, Status::QualityWarning);
 }
 
@@ -255,7 +254,7 @@ TEST(SharedEdge, ClosedFanAroundAVertex) {
   Instance in;
   in.blas = 0;
   c.scene.instances.push_back(in);
-  RayAmbiguity a{0, "vertex", {{true, 0, 0, 0}, {true, 0, 0, 1}, {true, 0, 0, 2}, {true, 0, 0, 3}}};
+  RayAmbiguity a{0, AmbiguityReason::Vertex, {{true, 0, 0, 0}, {true, 0, 0, 1}, {true, 0, 0, 2}, {true, 0, 0, 3}}};
   EXPECT_TRUE(crossesSharedEdge(c, a));
   a.candidates.pop_back();  // three of four: the fan is open
   EXPECT_FALSE(crossesSharedEdge(c, a));
@@ -337,12 +336,12 @@ TEST(Compare, ValidationErrorFails) {
 TEST(Compare, BackendStatusesMapToVerdicts) {
   const Case c = sampleCase();
   Results d = sampleResults("vulkan");
-  d.status = "NotSupported: no ray tracing";
+  d.setStatus(RunStatus::NotSupported, "no ray tracing");
   EXPECT_EQ(compareResults(c, samplePlan(c), d, sampleResults("model")).status, Status::NotSupported);
-  d.status = "Crash: VK_ERROR_DEVICE_LOST";
+  d.setStatus(RunStatus::Crash, "VK_ERROR_DEVICE_LOST");
   EXPECT_EQ(compareResults(c, samplePlan(c), d, sampleResults("model")).status, Status::Crash);
   Results m = sampleResults("model");
-  m.status = "NotSupported: model lacks it";
+  m.setStatus(RunStatus::NotSupported, "model lacks it");
   EXPECT_EQ(compareResults(c, samplePlan(c), sampleResults("vulkan"), m).status, Status::NotSupported)
       << "no reference is never a pass";
 }

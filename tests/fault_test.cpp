@@ -63,7 +63,7 @@ class PlantedFault : public ::testing::Test {
       return {};
     }
     const Ran& r = run(case_name);
-    EXPECT_EQ(r.device.status, "ok") << case_name;
+    EXPECT_EQ(r.device.statusText(), "ok") << case_name;
     const Verdict clean = compareResults(r.c, r.plan, r.device, r.model);
     EXPECT_EQ(clean.status, Status::Pass) << case_name << " without a fault: " << clean.headline();
     Results corrupted = r.device;

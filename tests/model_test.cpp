@@ -161,7 +161,7 @@ TEST(Model, QuadCenterHitsThePrimitiveContainingIt) {
   for (ModelTier tier : kTiers) {
     Case c = baseCase({quad()}, {downRay(0.5f, -0.5f), downRay(-0.5f, 0.5f), downRay(3, 3)});
     Results r = run(c, tier);
-    ASSERT_EQ(r.status, "ok");
+    ASSERT_EQ(r.statusText(), "ok");
     EXPECT_EQ(r.backend, "model");
     EXPECT_EQ(r.device, std::string("embree-") + modelTierName(tier));
     EXPECT_EQ(word(r, 0, "hit"), 1u);
@@ -194,7 +194,7 @@ TEST(Model, AnyHitIgnoringOddPrimitivesLeavesOnlyEven) {
   for (ModelTier tier : kTiers) {
     Case c = anyHitGridCase();
     Results r = run(c, tier);
-    ASSERT_EQ(r.status, "ok");
+    ASSERT_EQ(r.statusText(), "ok");
     uint32_t hits = 0, misses = 0;
     for (uint32_t i = 0; i < 32 * 32; ++i) {
       EXPECT_EQ(word(r, i, "closest_hit_runs") + word(r, i, "miss_runs"), 1u);
@@ -257,7 +257,7 @@ TEST(Model, DirectChunkedPathMatchesGeneralPath) {
     Case general = direct;
     general.pipeline.raygen = {count("calls"), traceStmt()};  // not `trace: {}` alone
     Results d1 = run(direct, tier, 1), d3 = run(direct, tier, 3), g = run(general, tier, 1);
-    ASSERT_EQ(d1.status, "ok");
+    ASSERT_EQ(d1.statusText(), "ok");
     EXPECT_EQ(d1.records, g.records);
     EXPECT_EQ(d1.records, d3.records);
     EXPECT_EQ(d1.counters["closesthit"], g.counters["closesthit"]);
@@ -314,13 +314,13 @@ TEST(Model, DirectPathMixedTraceParametersMatchGeneralPath) {
   general.pipeline.raygen = {traceStmt(), count("near_accepted")};
   for (ModelTier tier : {ModelTier::Fast, ModelTier::Robust}) {
     Results g = run(general, tier, 1);
-    ASSERT_EQ(g.status, "ok");
+    ASSERT_EQ(g.statusText(), "ok");
     EXPECT_EQ(g.counters["near_accepted"], w * h);
     g.counters.erase("near_accepted");
     for (const char* k : {"miss", "far_accepted", "closesthit", "calls", "ignored"}) EXPECT_GT(g.counters[k], 0u) << k;
     for (unsigned threads : {1u, 2u, 5u}) {
       Results d = run(direct, tier, threads);
-      ASSERT_EQ(d.status, "ok");
+      ASSERT_EQ(d.statusText(), "ok");
       EXPECT_TRUE(d.records.empty());
       d.counters.erase("near_accepted");
       EXPECT_EQ(d.counters, g.counters) << modelTierName(tier) << " threads " << threads;
@@ -342,7 +342,7 @@ TEST(Model, CompiledOpsPerRay) {
                                                          op("mod", {bi("launch_id_x"), lit(5)})}))}));
   c.pipeline.hit_groups[0].closest_hit = chit;
   Results r = run(c, ModelTier::Fast, 2);
-  ASSERT_EQ(r.status, "ok");
+  ASSERT_EQ(r.statusText(), "ok");
   int hits = 0;
   for (uint32_t i = 0; i < 1600; ++i) {
     if (word(r, i, "hit") != 1) continue;
@@ -447,7 +447,7 @@ TEST(Model, SphereIntersectionReportsBothRoots) {
     c.pipeline.hit_groups[0].intersection = Program{ifThen(op("sphere_hit", {}), {far, near})};
     c.pipeline.hit_groups[0].closest_hit->push_back(recordBuiltins({"ray_tmax"}));
     Results r = run(c, tier);
-    ASSERT_EQ(r.status, "ok");
+    ASSERT_EQ(r.statusText(), "ok");
     EXPECT_EQ(word(r, 0, "hit"), 1u);
     EXPECT_NEAR(fword(r, 0, "hit_t"), 4.0f, 1e-5);
     EXPECT_EQ(word(r, 0, "hit_kind"), 1u);
@@ -473,7 +473,7 @@ TEST(Model, AabbFaceGrazingIsAmbiguousInExactTier) {
   Stmt rep; rep.kind = Stmt::Kind::Report; rep.t = litf(4.5); rep.hit_kind = lit(3);  // always reports
   c.pipeline.hit_groups[0].intersection = Program{rep};
   Results r = run(c, ModelTier::Exact);
-  ASSERT_EQ(r.status, "ok");
+  ASSERT_EQ(r.statusText(), "ok");
   EXPECT_EQ(word(r, 0, "hit"), 1u);
   EXPECT_EQ(word(r, 3, "hit"), 0u);
   std::map<uint32_t, const RayAmbiguity*> amb;
@@ -482,7 +482,7 @@ TEST(Model, AabbFaceGrazingIsAmbiguousInExactTier) {
   EXPECT_EQ(amb.count(3), 0u);
   for (uint32_t ray : {1u, 2u}) {
     ASSERT_EQ(amb.count(ray), 1u) << ray;
-    EXPECT_EQ(amb[ray]->reason, "aabb-face");
+    EXPECT_EQ(amb[ray]->reason, AmbiguityReason::AabbFace);
     bool hit = false, miss = false;
     for (const Candidate& k : amb[ray]->candidates) (k.hit ? hit : miss) = true;
     EXPECT_TRUE(hit && miss) << ray;
@@ -548,12 +548,12 @@ TEST(Model, RecursionDepth) {
   c.pipeline.miss = {{recordBuiltins({"depth"})}};
   c.pipeline.max_recursion = 2;
   Results r = run(c, ModelTier::Exact);
-  EXPECT_EQ(r.status, "ok");
+  EXPECT_EQ(r.statusText(), "ok");
   EXPECT_EQ(word(r, 0, "depth"), 2u);
   EXPECT_EQ(word(r, 0, "miss_runs"), 1u);
   c.pipeline.max_recursion = 1;
   r = run(c, ModelTier::Exact);
-  EXPECT_NE(r.status.find("Crash"), std::string::npos);
+  EXPECT_EQ(r.status, RunStatus::Crash) << r.statusText();
 }
 
 TEST(Model, SharedEdgeIsAmbiguousInExactTierAndNeverLeaks) {
@@ -565,7 +565,7 @@ TEST(Model, SharedEdgeIsAmbiguousInExactTierAndNeverLeaks) {
   rays.push_back(downRay(0.5f, -0.5f));  // clear
   Case c = baseCase({quad()}, rays);
   Results r = run(c, ModelTier::Exact);
-  ASSERT_EQ(r.status, "ok");
+  ASSERT_EQ(r.statusText(), "ok");
   for (uint32_t i = 0; i < 64; ++i) {
     EXPECT_EQ(word(r, i, "hit"), 1u) << "leak at ray " << i;
     EXPECT_EQ(word(r, i, "primitive_id"), 0u) << "tie-break: smallest primitive";
@@ -578,9 +578,9 @@ TEST(Model, SharedEdgeIsAmbiguousInExactTierAndNeverLeaks) {
       p0 |= k.hit && k.primitive == 0;
       p1 |= k.hit && k.primitive == 1;
     }
-    EXPECT_TRUE(p0 && p1) << a.reason;
+    EXPECT_TRUE(p0 && p1) << ambiguityReasonName(a.reason);
   }
-  EXPECT_EQ(r.ambiguous[0].reason, "edge");
+  EXPECT_EQ(r.ambiguous[0].reason, AmbiguityReason::Edge);
 }
 
 // Legal answers are the outcomes of what-if runs, not every candidate: on
@@ -597,7 +597,7 @@ TEST(Model, LegalAnswersFollowAnyHitOnSharedEdge) {
   c.pipeline.hit_groups[0].any_hit =
       Program{count("anyhit"), ifThen(op("odd", {bi("primitive_id")}), {count("ignored"), simple(Stmt::Kind::Ignore)})};
   Results r = run(c, ModelTier::Exact);
-  ASSERT_EQ(r.status, "ok");
+  ASSERT_EQ(r.statusText(), "ok");
   ASSERT_EQ(r.ambiguous.size(), 16u);
   for (const RayAmbiguity& a : r.ambiguous) {
     bool p0 = false, p1 = false, miss = false;
@@ -658,11 +658,11 @@ TEST(ModelTies, CoincidentAabbsInDifferentInstancesAreATie) {
   Stmt rep; rep.kind = Stmt::Kind::Report; rep.t = litf(4.0); rep.hit_kind = lit(1);
   c.pipeline.hit_groups[0].intersection = Program{rep};
   Results r = run(c, ModelTier::Exact);
-  ASSERT_EQ(r.status, "ok");
+  ASSERT_EQ(r.statusText(), "ok");
   auto amb = byRay(r);
   for (uint32_t ray : {0u, 1u}) {
     ASSERT_EQ(amb.count(ray), 1u) << ray;
-    EXPECT_EQ(amb[ray]->reason, "t-tie");
+    EXPECT_EQ(amb[ray]->reason, AmbiguityReason::TTie);
     std::set<std::array<uint32_t, 3>> want;
     for (uint32_t i = 0; i < 2; ++i)
       for (uint32_t p = 0; p < 3; ++p) want.insert({i, 0, p});
@@ -693,9 +693,9 @@ TEST(ModelTies, TieAnswersFollowAnyHit) {
   c.pipeline.hit_groups[0].any_hit =
       Program{count("anyhit"), ifThen(op("odd", {bi("primitive_id")}), {count("ignored"), simple(Stmt::Kind::Ignore)})};
   Results r = run(c, ModelTier::Exact);
-  ASSERT_EQ(r.status, "ok");
+  ASSERT_EQ(r.statusText(), "ok");
   ASSERT_EQ(r.ambiguous.size(), 1u);
-  EXPECT_EQ(r.ambiguous[0].reason, "t-tie");
+  EXPECT_EQ(r.ambiguous[0].reason, AmbiguityReason::TTie);
   const std::set<std::array<uint32_t, 3>> want = {{0, 0, 0}, {0, 0, 2}, {1, 0, 0}, {1, 0, 2}};
   EXPECT_EQ(legal(r.ambiguous[0]), want);
   EXPECT_TRUE(want.count(answer(r, 0)));
@@ -710,7 +710,7 @@ TEST(ModelTies, DistinctReportsAreClear) {
   Stmt rep; rep.kind = Stmt::Kind::Report; rep.t = op("sphere_near", {}); rep.hit_kind = lit(1);
   c.pipeline.hit_groups[0].intersection = Program{ifThen(op("sphere_hit", {}), {rep})};
   Results r = run(c, ModelTier::Exact);
-  ASSERT_EQ(r.status, "ok");
+  ASSERT_EQ(r.statusText(), "ok");
   EXPECT_TRUE(r.ambiguous.empty());
   for (uint32_t ray : {0u, 1u}) {
     EXPECT_EQ(answer(r, ray), (std::array<uint32_t, 3>{0, 0, 1})) << ray;
@@ -723,10 +723,10 @@ TEST(ModelTies, CoplanarTrianglesInDifferentInstancesAreATie) {
   Case c = baseCase({quad()}, {downRay(0.5f, -0.5f), downRay(3, 3)});
   c.scene.instances.push_back(c.scene.instances[0]);
   Results r = run(c, ModelTier::Exact);
-  ASSERT_EQ(r.status, "ok");
+  ASSERT_EQ(r.statusText(), "ok");
   auto amb = byRay(r);
   ASSERT_EQ(amb.count(0), 1u);
-  EXPECT_EQ(amb[0]->reason, "t-tie");
+  EXPECT_EQ(amb[0]->reason, AmbiguityReason::TTie);
   EXPECT_EQ(legal(*amb[0]), (std::set<std::array<uint32_t, 3>>{{0, 0, 0}, {1, 0, 0}}));
   EXPECT_EQ(amb.count(1), 0u);
   EXPECT_TRUE(run(c, ModelTier::Robust).ambiguous.empty());
@@ -740,12 +740,12 @@ TEST(ModelTies, TerminateOnFirstHitAllowsEveryConfirmableCandidate) {
   tofh.sbt_stride = 0;  // every geometry uses hit group 0
   Case c = baseCase({quad(0), quad(-1)}, {downRay(0.5f, -0.5f), tofh});
   Results r = run(c, ModelTier::Exact);
-  ASSERT_EQ(r.status, "ok");
+  ASSERT_EQ(r.statusText(), "ok");
   auto amb = byRay(r);
   EXPECT_EQ(amb.count(0), 0u);
   EXPECT_EQ(answer(r, 0), (std::array<uint32_t, 3>{0, 0, 0}));
   ASSERT_EQ(amb.count(1), 1u);
-  EXPECT_EQ(amb[1]->reason, "first-hit");
+  EXPECT_EQ(amb[1]->reason, AmbiguityReason::FirstHit);
   EXPECT_EQ(legal(*amb[1]), (std::set<std::array<uint32_t, 3>>{{0, 0, 0}, {0, 1, 0}}));
   EXPECT_EQ(answer(r, 1), (std::array<uint32_t, 3>{0, 0, 0}));  // the model's order: nearest first
   EXPECT_EQ(r.counters["closesthit"], 2u);
@@ -756,7 +756,7 @@ TEST(ModelTies, TerminateOnFirstHitAllowsEveryConfirmableCandidate) {
   q.pipeline.hit_groups[0].any_hit =
       Program{ifThen(op("eq", {bi("geometry_index"), lit(0)}), {simple(Stmt::Kind::Ignore)})};
   Results rq = run(q, ModelTier::Exact);
-  ASSERT_EQ(rq.status, "ok");
+  ASSERT_EQ(rq.statusText(), "ok");
   EXPECT_TRUE(rq.ambiguous.empty());
   EXPECT_EQ(answer(rq, 0), (std::array<uint32_t, 3>{0, 1, 0}));
   for (ModelTier tier : {ModelTier::Fast, ModelTier::Robust}) EXPECT_TRUE(run(c, tier).ambiguous.empty());
@@ -782,10 +782,10 @@ TEST(Model, TriangleIntervalIsOpen) {
     }
     const std::set<std::array<uint32_t, 3>> both = {{~0u, ~0u, ~0u}, {0, 0, 0}};
     ASSERT_EQ(amb.count(0), 1u);
-    EXPECT_EQ(amb[0]->reason, "tmax-tie");
+    EXPECT_EQ(amb[0]->reason, AmbiguityReason::TmaxTie);
     EXPECT_EQ(legal(*amb[0]), both);
     ASSERT_EQ(amb.count(1), 1u);
-    EXPECT_EQ(amb[1]->reason, "tmin-tie");
+    EXPECT_EQ(amb[1]->reason, AmbiguityReason::TminTie);
     EXPECT_EQ(legal(*amb[1]), both);
   }
 }
@@ -806,7 +806,7 @@ TEST(Model, NanInYTriangleStaysActiveAndHugeTrianglesAreHit) {
                   {-4e18f, -4e18f, -10}, {4e18f, -4e18f, -10}, {0, 4e18f, -10}};
     Case c = baseCase({g}, {downRay(0.5f, -0.5f), downRay(-0.5f, 0.5f), downRay(10.2f, 0.2f)});
     Results r = run(c, tier);
-    ASSERT_EQ(r.status, "ok");
+    ASSERT_EQ(r.statusText(), "ok");
     EXPECT_EQ(word(r, 0, "primitive_id"), 1u);
     EXPECT_EQ(word(r, 1, "hit"), 1u) << "huge triangle dropped in " << modelTierName(tier);
     EXPECT_EQ(word(r, 1, "primitive_id"), 2u);
@@ -855,7 +855,7 @@ TEST(ModelSphere, TangentRayIsAmbiguousWithBothAnswers) {
   // (inside the box), 3: a hair inside the tangent line.
   Case c = sphereCase({downRay(1.0f, 0), downRay(0.5f, 0), downRay(1.5f, 0), downRay(0.9999999f, 0)});
   Results r = run(c, ModelTier::Exact);
-  ASSERT_EQ(r.status, "ok");
+  ASSERT_EQ(r.statusText(), "ok");
   std::map<uint32_t, const RayAmbiguity*> amb;
   for (const RayAmbiguity& a : r.ambiguous) amb[a.ray] = &a;
   EXPECT_EQ(word(r, 1, "hit"), 1u);
@@ -865,7 +865,7 @@ TEST(ModelSphere, TangentRayIsAmbiguousWithBothAnswers) {
   EXPECT_EQ(word(r, 0, "intersection_runs"), 1u);
   for (uint32_t ray : {0u, 3u}) {
     ASSERT_EQ(amb.count(ray), 1u) << ray;
-    EXPECT_EQ(amb[ray]->reason, "shader-arith") << ray;
+    EXPECT_EQ(amb[ray]->reason, AmbiguityReason::ShaderArith) << ray;
     bool hit = false, miss = false;
     for (const Candidate& k : amb[ray]->candidates) {
       (k.hit ? hit : miss) = true;
@@ -887,7 +887,7 @@ TEST(ModelSphere, NearlyTangentHitGetsAWiderTBoundThanACentralHit) {
   // inside (disc small, so sqrt amplifies a device's rounding).
   Case c = sphereCase({downRay(0.0f, 0), downRay(0.999f, 0)});
   Results r = run(c, ModelTier::Exact);
-  ASSERT_EQ(r.status, "ok");
+  ASSERT_EQ(r.statusText(), "ok");
   EXPECT_EQ(word(r, 0, "hit"), 1u);
   EXPECT_EQ(word(r, 1, "hit"), 1u);
   std::map<uint32_t, float> bound;
@@ -906,14 +906,14 @@ TEST(ModelSphere, RootNearTminIsAmbiguous) {
   Ray clear = downRay(0, 0, 0);  // from the centre: far root 1, clear
   Case c = sphereCase({onSurface, clear});
   Results r = run(c, ModelTier::Exact);
-  ASSERT_EQ(r.status, "ok");
+  ASSERT_EQ(r.statusText(), "ok");
   std::map<uint32_t, const RayAmbiguity*> amb;
   for (const RayAmbiguity& a : r.ambiguous) amb[a.ray] = &a;
   EXPECT_EQ(amb.count(1), 0u);
   EXPECT_EQ(word(r, 1, "hit"), 1u);
   EXPECT_NEAR(fword(r, 1, "hit_t"), 1.0f, 1e-6);
   ASSERT_EQ(amb.count(0), 1u);
-  EXPECT_EQ(amb[0]->reason, "shader-arith");
+  EXPECT_EQ(amb[0]->reason, AmbiguityReason::ShaderArith);
   EXPECT_EQ(word(r, 0, "hit"), 1u);
 }
 
@@ -1003,9 +1003,9 @@ TEST(ModelSphere, MixedSceneRay638477IsTangent) {
   c.rays.width = c.rays.height = 1;
   const Plan plan = derivePlan(c);
   Results r = runOnModel(c, plan, ModelOptions{ModelTier::Exact, 1});
-  ASSERT_EQ(r.status, "ok");
+  ASSERT_EQ(r.statusText(), "ok");
   ASSERT_EQ(r.ambiguous.size(), 1u);
-  EXPECT_EQ(r.ambiguous[0].reason, "shader-arith");
+  EXPECT_EQ(r.ambiguous[0].reason, AmbiguityReason::ShaderArith);
   EXPECT_GE(r.ambiguous[0].candidates.size(), 2u);
   for (const Candidate& k : r.ambiguous[0].candidates)
     std::printf("legal: hit=%d instance=%u geometry=%u primitive=%u\n", k.hit, k.instance, k.geometry, k.primitive);
@@ -1027,7 +1027,7 @@ TEST(Model, EveryCaseFileRunsInEveryTier) {
     std::vector<uint32_t> fastRecords;
     for (ModelTier tier : kTiers) {
       Results r = runOnModel(c, plan, ModelOptions{tier, 2});
-      EXPECT_EQ(r.status, "ok") << c.name << " " << modelTierName(tier);
+      EXPECT_EQ(r.statusText(), "ok") << c.name << " " << modelTierName(tier);
       EXPECT_EQ(r.images.size(), plan.images.size()) << c.name;
       for (const std::string& name : plan.counters) EXPECT_EQ(r.counters.count(name), 1u) << name;
       if (!plan.records) {  // counters only: no record simulated at all

@@ -35,7 +35,6 @@ Results sampleResults() {
   r.case_name = "family/sample";
   r.backend = "vulkan";
   r.device = "test device";
-  r.status = "ok";
   r.width = 3;
   r.height = 2;
   r.seconds = 0.25;
@@ -49,7 +48,7 @@ Results sampleResults() {
   r.images.push_back(im);
   Image color{"color", "color", 3, 2, 4, true, std::vector<uint32_t>(24, 0x3f800000u)};
   r.images.push_back(color);
-  r.ambiguous.push_back({4, "edge", {{true, 0, 0, 1}, {true, 0, 0, 2}}, {{true, 0, 0, 1}, {true, 0, 0, 2}}});
+  r.ambiguous.push_back({4, AmbiguityReason::Edge, {{true, 0, 0, 1}, {true, 0, 0, 2}}, {{true, 0, 0, 1}, {true, 0, 0, 2}}});
   r.t_bounds.push_back({5, 0.25f});
   return r;
 }

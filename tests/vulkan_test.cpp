@@ -354,7 +354,7 @@ TEST(VulkanDevice, TrianglesHitAndMissWithoutValidationMessages) {
   Plan plan = derivePlan(c);
   for (int round = 0; round < 2; ++round) {  // the device is reused across cases
     Results r = backend->run(c, plan);
-    ASSERT_EQ(r.status, "ok");
+    ASSERT_EQ(r.statusText(), "ok");
     EXPECT_EQ(r.backend, "vulkan");
     EXPECT_EQ(r.device, backend->device().name);
     EXPECT_TRUE(r.validation_messages.empty()) << r.validation_messages.front();
@@ -394,7 +394,7 @@ TEST(VulkanDevice, NullInstanceAndMaskedRaysMiss) {
   c.outputs.images.clear();
   Plan plan = derivePlan(c);
   Results r = backend->run(c, plan);
-  ASSERT_EQ(r.status, "ok");
+  ASSERT_EQ(r.statusText(), "ok");
   EXPECT_TRUE(r.validation_messages.empty()) << r.validation_messages.front();
   EXPECT_EQ(field(r, 0, "hit"), 1u);
   EXPECT_EQ(field(r, 1, "hit"), 0u);
@@ -416,7 +416,7 @@ TEST(VulkanDevice, IndexedGeometryWithTransformAndSkipTrianglesFlag) {
   c.outputs.images.clear();
   Plan plan = derivePlan(c);
   Results r = backend->run(c, plan);
-  ASSERT_EQ(r.status, "ok");
+  ASSERT_EQ(r.statusText(), "ok");
   EXPECT_TRUE(r.validation_messages.empty()) << r.validation_messages.front();
   EXPECT_EQ(field(r, 0, "hit"), 1u);
   EXPECT_EQ(field(r, 0, "primitive_id"), 0u);
@@ -427,7 +427,7 @@ TEST(VulkanDevice, IndexedGeometryWithTransformAndSkipTrianglesFlag) {
 
   c.pipeline.flags = 0x1000;  // VK_PIPELINE_CREATE_RAY_TRACING_SKIP_TRIANGLES_BIT_KHR
   r = backend->run(c, derivePlan(c));
-  ASSERT_EQ(r.status, "ok");
+  ASSERT_EQ(r.statusText(), "ok");
   EXPECT_TRUE(r.validation_messages.empty()) << r.validation_messages.front();
   EXPECT_EQ(r.counters["miss"], 4u);
   EXPECT_EQ(r.counters["closesthit"], 0u);
@@ -441,7 +441,7 @@ TEST(VulkanDevice, RecursionBeyondTheDeviceIsNotSupported) {
   Case c = triangleCase();
   c.pipeline.max_recursion = backend->device().max_ray_recursion_depth + 1;
   Results r = backend->run(c, derivePlan(c));
-  EXPECT_EQ(r.status.rfind("NotSupported: ", 0), 0u) << r.status;
+  EXPECT_EQ(r.status, RunStatus::NotSupported) << r.statusText();
   EXPECT_TRUE(r.records.empty());
   EXPECT_TRUE(backend->close().empty());
 }
@@ -462,7 +462,7 @@ TEST(VulkanDevice, RecordsBeyondMaxStorageBufferRange) {
   const uint64_t bytes = uint64_t(1024) * 1024 * recordWords() * 4;
   EXPECT_GT(bytes, uint64_t(128) << 20);
   Results r = backend->run(c, derivePlan(c));
-  ASSERT_EQ(r.status, "ok");
+  ASSERT_EQ(r.statusText(), "ok");
   EXPECT_TRUE(r.validation_messages.empty()) << r.validation_messages.front();
   ASSERT_EQ(r.records.size(), 1024u * 1024u * recordWords());
   EXPECT_EQ(field(r, 0, "hit"), 1u);
@@ -497,9 +497,9 @@ TEST(VulkanDevice, EveryCaseFileRunsCleanly) {
     const Case& c = *parsed.value;
     Plan plan = derivePlan(c);
     Results r = backend->run(c, plan);
-    EXPECT_TRUE(r.status == "ok" || r.status.rfind("NotSupported", 0) == 0) << c.name << ": " << r.status;
+    EXPECT_TRUE(r.ok() || r.status == RunStatus::NotSupported) << c.name << ": " << r.statusText();
     EXPECT_TRUE(r.validation_messages.empty()) << c.name << ": " << r.validation_messages.front();
-    if (r.status != "ok") continue;
+    if (!r.ok()) continue;
     if (plan.records) EXPECT_EQ(r.records.size(), size_t(c.rays.width) * c.rays.height * recordWords()) << c.name;
     EXPECT_EQ(r.counters.size(), plan.counters.size()) << c.name;
     EXPECT_EQ(r.images.size(), plan.images.size()) << c.name;

@@ -45,7 +45,7 @@ void save(const Results& device, const Plan& plan, const std::string& dir, const
         device.validation_messages.push_back("at device teardown: " + m);
     } else {
       device.backend = "vulkan";
-      device.status = "NotSupported: " + error;
+      device.setStatus(RunStatus::NotSupported, error);
     }
   }
   device.case_name = c.name;
@@ -57,12 +57,12 @@ void save(const Results& device, const Plan& plan, const std::string& dir, const
   _exit(0);
 }
 
-Results failed(const Case& c, const std::string& status, double seconds) {
+Results failed(const Case& c, RunStatus status, const std::string& detail, double seconds) {
   Results r;
   r.backend = "vulkan";
   r.case_name = c.name;
   r.case_file = c.file;
-  r.status = status;
+  r.setStatus(status, detail);
   r.seconds = seconds;
   return r;
 }
@@ -82,34 +82,34 @@ Results runDeviceIsolated(const Case& c, const Plan& plan, const Results& model,
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   std::fflush(nullptr);
   const pid_t pid = fork();
-  if (pid < 0) return failed(c, std::string("Crash: fork failed: ") + std::strerror(errno), 0.0);
+  if (pid < 0) return failed(c, RunStatus::Crash, std::string("fork failed: ") + std::strerror(errno), 0.0);
   if (pid == 0) childMain(c, plan, model, run, dir);
 
   int wstatus = 0;
   for (;;) {
     const pid_t done = waitpid(pid, &wstatus, WNOHANG);
     if (done == pid) break;
-    if (done < 0 && errno != EINTR) return failed(c, "Crash: lost the device process", elapsed());
+    if (done < 0 && errno != EINTR) return failed(c, RunStatus::Crash, "lost the device process", elapsed());
     if (elapsed() > run.timeout_seconds) {
       kill(pid, SIGKILL);
       waitpid(pid, &wstatus, 0);
       std::ostringstream s;
-      s << "Timeout: the device side ran longer than " << run.timeout_seconds << " s (killed)";
-      return failed(c, s.str(), elapsed());
+      s << "the device side ran longer than " << run.timeout_seconds << " s (killed)";
+      return failed(c, RunStatus::Timeout, s.str(), elapsed());
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   if (WIFSIGNALED(wstatus)) {
     const int sig = WTERMSIG(wstatus);
-    return failed(c, "Crash: the device process died of signal " + std::to_string(sig) + " (" + strsignal(sig) + ")",
+    return failed(c, RunStatus::Crash, "the device process died of signal " + std::to_string(sig) + " (" + strsignal(sig) + ")",
                   elapsed());
   }
   if (!WIFEXITED(wstatus) || WEXITSTATUS(wstatus) != 0)
-    return failed(c, "Crash: the device process exited with status " + std::to_string(WEXITSTATUS(wstatus)),
+    return failed(c, RunStatus::Crash, "the device process exited with status " + std::to_string(WEXITSTATUS(wstatus)),
                   elapsed());
   std::string error;
   Results device = readResults(dir, &error);
-  if (!error.empty()) return failed(c, "Crash: no results from the device process: " + error, elapsed());
+  if (!error.empty()) return failed(c, RunStatus::Crash, "no results from the device process: " + error, elapsed());
   *fault_note = readNote(dir);
   for (const Image& im : device.images) {
     const std::string err = writeImageFiles(im, dir);
@@ -126,7 +126,7 @@ Results runDeviceInProcess(const Case& c, const Plan& plan, const Results& model
     device = backend->run(c, plan);
   } else {
     device.backend = "vulkan";
-    device.status = "NotSupported: " + backend_error;
+    device.setStatus(RunStatus::NotSupported, backend_error);
   }
   device.case_name = c.name;
   device.case_file = c.file;

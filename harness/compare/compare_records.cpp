@@ -44,15 +44,6 @@ bool written(const uint32_t* rec, int field_index) { return (rec[kRecordWrittenM
 uint32_t fieldWord(const uint32_t* rec, const char* name) { return rec[findRecordField(name)->offset]; }
 
 // The device's answer for an ambiguous ray, checked against the legal set.
-// The rule that allows the freedom an ambiguity reason stands for.
-std::string ruleForReason(const std::string& reason) {
-  if (reason == "t-tie" || reason == "tmax-tie" || reason == "tmin-tie") return "R-TIE";
-  if (reason == "first-hit") return "R-TOFH";
-  if (reason == "aabb-face") return "R-AABB-CONS";
-  if (reason == "shader-arith") return "R-PREC";
-  return "R-WATERTIGHT";
-}
-
 void checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
                     std::map<std::string, FindingBuilder>& wrongs, FindingBuilder& leak) {
   const bool device_hit = fieldWord(rec, "closest_hit_runs") > 0 ||
@@ -84,11 +75,11 @@ void checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
     return;
   }
   if (!legal) {
-    const std::string rule = ruleForReason(a.reason);
+    const std::string rule = ruleForAmbiguity(a.reason);
     FindingBuilder& wrong = wrongs[rule];
     if (wrong.finding.rule.empty())
       wrong.finding = {Status::Fail, rule,
-                       "numerically ambiguous ray (" + a.reason + ") hit a primitive that is not one of its legal answers"};
+                       "numerically ambiguous ray (" + std::string(ambiguityReasonName(a.reason)) + ") hit a primitive that is not one of its legal answers"};
     wrong.addRay(a.ray);
   }
 }

@@ -8,12 +8,15 @@ namespace rayspec {
 
 Verdict backendVerdict(const Results& r) {
   Verdict v;
-  if (r.status == "ok") return v;
+  if (r.ok()) return v;
   Finding f;
-  f.status = Status::Crash;
-  if (r.status.rfind("NotSupported", 0) == 0) f.status = Status::NotSupported;
-  if (r.status.rfind("Timeout", 0) == 0) f.status = Status::Timeout;
-  f.message = r.backend + ": " + r.status;
+  switch (r.status) {
+    case RunStatus::Ok:
+    case RunStatus::Crash: f.status = Status::Crash; break;
+    case RunStatus::NotSupported: f.status = Status::NotSupported; break;
+    case RunStatus::Timeout: f.status = Status::Timeout; break;
+  }
+  f.message = r.backend + ": " + r.statusText();
   v.add(f);
   return v;
 }

@@ -15,8 +15,7 @@ constexpr size_t kFirstRays = 8;
 
 Verdict compareResults(const Case& c, const Plan& plan, const Results& device, const Results& model);
 
-// The status a backend reported ("ok", "NotSupported: ...", "Crash: ...")
-// as a verdict of its own; Pass for "ok".
+// The status a backend reported as a verdict of its own; Pass for Ok.
 Verdict backendVerdict(const Results& r);
 
 }  // namespace rayspec

@@ -46,8 +46,8 @@ bool crossesBorderOnly(const Case& c, const RayAmbiguity& a) {
   std::map<std::pair<uint32_t, uint32_t>, std::vector<Tri>> groups;
   if (!groupTriangles(c, a, &groups) || groups.size() != 1 || crossesSharedEdge(c, a)) return false;
   const std::vector<Tri>& tris = groups.begin()->second;
-  if (a.reason == "edge") return tris.size() == 1;
-  if (a.reason != "vertex") return false;
+  if (a.reason == AmbiguityReason::Edge) return tris.size() == 1;
+  if (a.reason != AmbiguityReason::Vertex) return false;
   std::map<Pos, size_t> vertex_use;
   for (const Tri& t : tris)
     for (const Pos& p : t) ++vertex_use[p];
@@ -57,7 +57,7 @@ bool crossesBorderOnly(const Case& c, const RayAmbiguity& a) {
 }
 
 bool crossesSharedEdge(const Case& c, const RayAmbiguity& a) {
-  if (a.reason != "edge" && a.reason != "vertex") return false;
+  if (a.reason != AmbiguityReason::Edge && a.reason != AmbiguityReason::Vertex) return false;
   // Group the hit candidates by (instance, geometry).
   std::map<std::pair<uint32_t, uint32_t>, std::vector<Tri>> groups;
   for (const Candidate& k : a.candidates) {
@@ -68,7 +68,7 @@ bool crossesSharedEdge(const Case& c, const RayAmbiguity& a) {
     std::map<std::pair<Pos, Pos>, int> edges;
     for (const Tri& t : tris)
       for (int e = 0; e < 3; ++e) ++edges[edge(t[e], t[(e + 1) % 3])];
-    if (a.reason == "edge") {
+    if (a.reason == AmbiguityReason::Edge) {
       for (const auto& [e, n] : edges)
         if (n >= 2) return true;
       continue;

@@ -10,11 +10,12 @@ int severity(Status s) {
     case Status::Pass: return 0;
     case Status::NotSupported: return 1;
     case Status::QualityWarning: return 2;
-    case Status::Fail: return 3;
-    case Status::Timeout: return 4;
-    case Status::Crash: return 5;
+    case Status::CaseError: return 3;
+    case Status::Fail: return 4;
+    case Status::Timeout: return 5;
+    case Status::Crash: return 6;
   }
-  return 5;
+  return 6;
 }
 
 }  // namespace
@@ -27,13 +28,13 @@ const char* statusName(Status s) {
     case Status::NotSupported: return "NotSupported";
     case Status::Crash: return "Crash";
     case Status::Timeout: return "Timeout";
+    case Status::CaseError: return "CaseError";
   }
   return "Crash";
 }
 
 bool parseStatus(const std::string& name, Status* out) {
-  for (Status s : {Status::Pass, Status::Fail, Status::QualityWarning, Status::NotSupported, Status::Crash,
-                   Status::Timeout})
+  for (Status s : kAllStatuses)
     if (name == statusName(s)) {
       *out = s;
       return true;
@@ -42,6 +43,8 @@ bool parseStatus(const std::string& name, Status* out) {
 }
 
 Status worse(Status a, Status b) { return severity(a) >= severity(b) ? a : b; }
+
+bool isFailing(Status s) { return severity(s) >= severity(Status::CaseError); }
 
 void Verdict::add(Finding f) {
   status = worse(status, f.status);

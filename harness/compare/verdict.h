@@ -2,18 +2,26 @@
 // a stable name, and findings that name the rule broken and the first rays.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 namespace rayspec {
 
-// Stable names: baselines and results.csv refer to them.
-enum class Status { Pass, Fail, QualityWarning, NotSupported, Crash, Timeout };
+// Stable names: baselines and results.csv refer to them. CaseError: the case
+// itself is at fault (a malformed file, or undefined behaviour the model
+// diagnosed in it, R-UB); the device is not blamed for it.
+enum class Status { Pass, Fail, QualityWarning, NotSupported, Crash, Timeout, CaseError };
+inline constexpr std::array<Status, 7> kAllStatuses = {Status::Pass,  Status::Fail,    Status::QualityWarning,
+                                                       Status::NotSupported, Status::Crash, Status::Timeout,
+                                                       Status::CaseError};
 const char* statusName(Status s);
 bool parseStatus(const std::string& name, Status* out);
-// The worse of two statuses (Crash > Timeout > Fail > QualityWarning > NotSupported > Pass).
+// The worse of two statuses (Crash > Timeout > Fail > CaseError > QualityWarning > NotSupported > Pass).
+// A run fails on any of Crash, Timeout, Fail and CaseError.
 Status worse(Status a, Status b);
+bool isFailing(Status s);
 
 struct Finding {
   Status status = Status::Fail;

@@ -102,14 +102,14 @@ FaultResult duplicateAnyHit(const Case& c, RecordEdit& dev, RecordEdit& mod, con
 
 FaultResult leakEdge(const Case& c, RecordEdit& dev, const Results& model) {
   for (const RayAmbiguity& a : model.ambiguous) {
-    if (a.reason != "edge" && a.reason != "vertex") continue;
+    if (a.reason != AmbiguityReason::Edge && a.reason != AmbiguityReason::Vertex) continue;
     if (!crossesSharedEdge(c, a) || a.ray >= dev.rays() || dev.get(a.ray, "closest_hit_runs") == 0) continue;
     dev.set(a.ray, "closest_hit_runs", 0);
     dev.set(a.ray, "miss_runs", 1);
     if (dev.written(a.ray, "hit")) dev.set(a.ray, "hit", 0);
     const std::string chit = dev.bumpCounter(closestHitCounters(c), -1);
     const std::string miss = dev.bumpCounter(missCounters(c), +1);
-    return {true, describe(a.ray, "on a shared " + a.reason + ", now a miss")};
+    return {true, describe(a.ray, "on a shared " + std::string(ambiguityReasonName(a.reason)) + ", now a miss")};
   }
   return none("no ray the model marks ambiguous at a shared edge or vertex hit on the device");
 }

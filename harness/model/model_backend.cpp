@@ -89,14 +89,13 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
   r.case_name = c.name;
   r.backend = "model";
   r.device = std::string("embree-") + modelTierName(opt.tier);
-  r.status = "ok";
   r.width = c.rays.width;
   r.height = c.rays.height;
   for (const std::string& name : plan.counters) r.counters[name] = 0;
   const size_t n = static_cast<size_t>(c.rays.width) * c.rays.height;
   if (c.rays.rays.size() != n) {
-    r.status = "Crash: the case has " + std::to_string(c.rays.rays.size()) + " rays for a " +
-               std::to_string(c.rays.width) + "x" + std::to_string(c.rays.height) + " launch";
+    r.setStatus(RunStatus::Crash, "the case has " + std::to_string(c.rays.rays.size()) + " rays for a " +
+               std::to_string(c.rays.width) + "x" + std::to_string(c.rays.height) + " launch");
     return r;
   }
   try {
@@ -145,7 +144,7 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
       for (size_t k = 0; k < plan.counters.size(); ++k) r.counters[plan.counters[k]] += m->counters[k];
       r.ambiguous.insert(r.ambiguous.end(), m->ambiguous.begin(), m->ambiguous.end());
       r.t_bounds.insert(r.t_bounds.end(), m->t_bounds.begin(), m->t_bounds.end());
-      if (!m->error.empty() && r.status == "ok") r.status = m->error;
+      if (!m->error.empty() && r.ok()) r.setStatus(RunStatus::Crash, m->error);
     }
     std::sort(r.ambiguous.begin(), r.ambiguous.end(),
               [](const RayAmbiguity& a, const RayAmbiguity& b) { return a.ray < b.ray; });
@@ -157,7 +156,7 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
                      r.t_bounds.end());
     if (plan.records) fillImages(r, plan);
   } catch (const std::exception& e) {
-    r.status = std::string("Crash: model: ") + e.what();
+    r.setStatus(RunStatus::Crash, std::string("model: ") + e.what());
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

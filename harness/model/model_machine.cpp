@@ -308,7 +308,7 @@ Flow Machine::execStmt(const CStmt& s, StageEnv& env) {
       const uint32_t depth = env.stage == Stage::Raygen ? 1 : env.depth + 1;
       if (depth > std::max<uint32_t>(sh_.c->pipeline.max_recursion, 1)) {
         if (error.empty())
-          error = "Crash: trace at depth " + std::to_string(depth) + " exceeds max_recursion " +
+          error = "trace at depth " + std::to_string(depth) + " exceeds max_recursion " +
                   std::to_string(sh_.c->pipeline.max_recursion) + " (undefined behaviour on a device)";
         return Flow::Continue;
       }

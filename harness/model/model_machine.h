@@ -135,7 +135,7 @@ class alignas(64) Machine {
   void bumpRuns(int which) {  // kRuns* above
     if (rec_) rec_[runs_offset_[which]] += 1;
   }
-  Payload trace(const TraceRay& r, uint32_t depth);  // model_trace.cpp
+  Payload trace(const TraceRay& r, uint32_t depth);  // model_traversal.cpp
   Committed directHit(const TraceRay& r, uint32_t flags);
   Committed traverse(const TraceRay& r, uint32_t flags, uint32_t depth, Payload& payload);
   void shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Committed& best, Payload& payload);
@@ -143,13 +143,18 @@ class alignas(64) Machine {
   Committed sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands, const int8_t* force,
                     long prefer, long first, const Payload& payloadIn, const ShaderDecision* shaderForce = nullptr);
   // sphere_hit in an intersection program: the model's value, or the forced
-  // one of a what-if run; notes an unsure decision (model_trace.cpp).
+  // one of a what-if run; notes an unsure decision (model_exact_tier.cpp).
   bool sphereHitDecision(StageEnv& env, bool modelValue, float disc);
+  // Exact tier: marks the current ray ambiguous when this trace's answer could
+  // differ on a device, with the legal answers (model_exact_tier.cpp).
+  void classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& cands,
+                     const std::vector<std::pair<size_t, double>>& reports,
+                     const std::vector<ShaderDecision>& shaderUnsure, const Payload& payloadIn);
   std::vector<Committed> whatIf(const Traversal& actual, const std::vector<ModelCandidate>& cands,
                                 const std::vector<size_t>& unsure, const Payload& payloadIn);
   void runRaygen();
   // Raygen is `trace: {}` and traces take Embree's closest hit: the chunk's
-  // rays are traced first, then shaded (model_trace.cpp).
+  // rays are traced first, then shaded (model_fast_path.cpp).
   void runLaunchRaysDirect(uint32_t begin, uint32_t end);
   void bump(const CountsOnly& k) {
     if (k.counters.size() == 1) {
@@ -158,7 +163,7 @@ class alignas(64) Machine {
     }
     for (int i : k.counters) counters[i] += 1;
   }
-  Flow report(const CStmt& s, StageEnv& env);  // model_trace.cpp
+  Flow report(const CStmt& s, StageEnv& env);  // model_traversal.cpp
   void callCallable(uint32_t index, CallData& data, uint32_t depth);
   const SbtRecord* hitRecord(uint32_t instance, uint32_t geometry, const TraceRay& r) const;
 

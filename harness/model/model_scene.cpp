@@ -56,7 +56,7 @@ void ownTriangleBounds(const RTCBoundsFunctionArguments* args) {
     lo[k] = std::min({tri[0][k], tri[1][k], tri[2][k]});
     hi[k] = std::max({tri[0][k], tri[1][k], tri[2][k]});
     if (std::isnan(tri[0][k]) || std::isnan(tri[1][k]) || std::isnan(tri[2][k])) {
-      setInvalidBounds(b);  // never hit (see model_trace.cpp): no candidate needed
+      setInvalidBounds(b);  // never hit (see model_traversal.cpp): no candidate needed
       return;
     }
   }

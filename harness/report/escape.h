@@ -1,4 +1,4 @@
-// Escaping text for XML and HTML reports.
+// Escaping text for XML, HTML and CSV reports.
 #pragma once
 
 #include <string>
@@ -6,5 +6,8 @@
 namespace rayspec {
 
 std::string xmlEscape(const std::string& text);  // & < > " '
+// A CSV field (RFC 4180): quoted, with inner quotes doubled, when it holds
+// a comma, a quote or a line break; as it is otherwise.
+std::string csvField(const std::string& text);
 
 }  // namespace rayspec

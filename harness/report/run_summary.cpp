@@ -31,7 +31,7 @@ void RunSummary::addTeardownError(const std::string& m) { teardown_errors_.push_
 bool RunSummary::failed() const {
   if (!teardown_errors_.empty()) return true;
   for (const CaseOutcome& o : outcomes_)
-    if ((o.status == Status::Fail || o.status == Status::Crash || o.status == Status::Timeout) &&
+    if (isFailing(o.status) &&
         o.baseline != BaselineMatch::Expected)
       return true;
   return false;
@@ -47,8 +47,7 @@ void RunSummary::print() const {
   std::map<Status, int> counts;
   for (const CaseOutcome& o : outcomes_) ++counts[o.status];
   std::printf("\n==== rayspec summary: %zu cases ====\n", outcomes_.size());
-  for (Status s : {Status::Pass, Status::Fail, Status::QualityWarning, Status::NotSupported, Status::Crash,
-                   Status::Timeout})
+  for (Status s : kAllStatuses)
     std::printf("  %-15s %d\n", statusName(s), counts[s]);
   bool header = false;
   for (const CaseOutcome& o : outcomes_) {

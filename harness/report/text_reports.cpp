@@ -18,6 +18,7 @@ const char* deqpStatusName(Status s) {
     case Status::NotSupported: return "Skip";
     case Status::Crash: return "Crash";
     case Status::Timeout: return "Timeout";
+    case Status::CaseError: return "Fail";  // deqp-runner has no name for it
   }
   return "Crash";
 }
@@ -29,7 +30,7 @@ std::string writeResultsCsv(const std::vector<CaseOutcome>& outcomes, const std:
     const char* status = deqpStatusName(o.status);
     if (o.baseline == BaselineMatch::Expected && o.status != Status::Pass) status = "ExpectedFail";
     if (o.baseline == BaselineMatch::UnexpectedPass) status = "UnexpectedImprovement(Pass)";
-    out << o.name << ',' << status << ',' << o.seconds << '\n';
+    out << csvField(o.name) << ',' << status << ',' << o.seconds << '\n';
   }
   return out ? std::string() : "cannot write " + path;
 }
@@ -38,7 +39,7 @@ std::string writeJunitXml(const std::vector<CaseOutcome>& outcomes, const std::s
   int failures = 0, skipped = 0, errors = 0;
   double total = 0;
   for (const CaseOutcome& o : outcomes) {
-    failures += o.status == Status::Fail || o.status == Status::QualityWarning;
+    failures += o.status == Status::Fail || o.status == Status::QualityWarning || o.status == Status::CaseError;
     errors += o.status == Status::Crash || o.status == Status::Timeout;
     skipped += o.status == Status::NotSupported;
     total += o.seconds;
@@ -75,8 +76,7 @@ std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const Run
   j["validation"] = info.validation;
   j["teardown_validation_errors"] = info.teardown_errors;
   std::map<std::string, int> counts;
-  for (Status s : {Status::Pass, Status::Fail, Status::QualityWarning, Status::NotSupported, Status::Crash,
-                   Status::Timeout})
+  for (Status s : kAllStatuses)
     counts[statusName(s)] = 0;
   j["cases"] = nlohmann::json::array();
   for (const CaseOutcome& o : outcomes) {

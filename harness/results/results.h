@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <map>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,49 @@ struct Image {
   std::vector<uint32_t> texels;  // width*height*channels words (float bits when is_float)
 };
 
+// How one execution (device or model) ended. The detail says why.
+enum class RunStatus { Ok, NotSupported, Crash, Timeout };
+const char* runStatusName(RunStatus s);  // "ok", "NotSupported", "Crash", "Timeout"
+bool parseRunStatus(const std::string& name, RunStatus* out);
+
+// Why the model's exact tier found a ray numerically ambiguous. Stable names
+// (results.json): see ambiguityReasonName().
+enum class AmbiguityReason {
+  Edge,         // near an edge shared by two triangles (or a border edge)
+  Vertex,       // near a vertex (two or more edges within the bound)
+  TmaxTie,      // a hit within rounding of tmax
+  TminTie,      // a hit within rounding of tmin
+  TTie,         // equal t in different primitives or instances
+  FirstHit,     // TerminateOnFirstHit: which hit comes first is unspecified (R-TOFH)
+  Order,        // the answer depends on the traversal order (a terminating any-hit, R-ORDER-UNSPEC)
+  AabbFace,     // the ray passes within rounding of an AABB face
+  ShaderArith,  // an intersection program's decision within rounding (R-PREC)
+};
+const char* ambiguityReasonName(AmbiguityReason r);
+bool parseAmbiguityReason(const std::string& name, AmbiguityReason* out);
+// The rule a device answering outside the legal set breaks.
+const char* ruleForAmbiguity(AmbiguityReason r);
+
+// Why a ray's behaviour is undefined by the specification (R-UB): such rays
+// are never judged; the device only has to survive them.
+enum class UndefinedReason {
+  RayParameters,     // non-finite origin/direction, NaN, tmin < 0, tmax < tmin
+  NanTriangle,       // a candidate triangle has NaN in Y or Z (not X: that one is inactive)
+  HitRecordOutOfRange,
+  MissRecordOutOfRange,
+  CallableOutOfRange,
+  DivisionByZero,    // integer division or modulo by zero in a stage program
+  RecursionTooDeep,  // traceRay beyond max_recursion, or callables nested too deeply
+};
+const char* undefinedReasonName(UndefinedReason r);
+bool parseUndefinedReason(const std::string& name, UndefinedReason* out);
+
+struct UndefinedRay {
+  uint32_t ray = 0;          // launch index y * width + x
+  UndefinedReason reason = UndefinedReason::RayParameters;
+  std::string what;          // names the case field, e.g. "pipeline.raygen: call index 5, 2 callables"
+};
+
 // A ray the model's exact tier found numerically ambiguous, with the answers
 // the specification allows for it.
 struct Candidate {
@@ -28,9 +72,7 @@ struct Candidate {
 };
 struct RayAmbiguity {
   uint32_t ray = 0;          // launch index y * width + x
-  std::string reason;        // "edge", "vertex", "tmax-tie", "tmin-tie", "t-tie",
-                             // "first-hit" (terminate_on_first_hit), "aabb-face",
-                             // "shader-arith" (an intersection program decision within rounding)
+  AmbiguityReason reason = AmbiguityReason::Edge;
   std::vector<Candidate> candidates;
   // edge / vertex: the triangles the model found within the error bound of
   // the shared edge or vertex (each once); a watertight device finds one.
@@ -46,16 +88,26 @@ struct TBound {
 };
 
 struct Results {
+  bool ok() const { return status == RunStatus::Ok; }
+  // "ok", or "Crash: <detail>".
+  std::string statusText() const;
+  void setStatus(RunStatus s, std::string detail) {
+    status = s;
+    status_detail = std::move(detail);
+  }
+
   std::string case_name;
   std::string backend;      // "vulkan" or "model"
   std::string device;       // Vulkan device name, or "embree-<tier>"
-  std::string status;       // "ok", or "NotSupported: ..." / "Crash: ..." from the backend
+  RunStatus status = RunStatus::Ok;
+  std::string status_detail;  // why, when status is not Ok
   uint32_t width = 0, height = 0;
   std::map<std::string, uint64_t> counters;
   std::vector<uint32_t> records;  // width*height*recordWords() words
   std::vector<Image> images;
   std::vector<RayAmbiguity> ambiguous;  // model, exact tier: rays that are not clear
   std::vector<TBound> t_bounds;         // model, exact tier: clear rays with a wider t bound
+  std::vector<UndefinedRay> undefined;  // model: rays whose behaviour is undefined (R-UB), one per ray
   std::vector<std::string> validation_messages;  // validation-layer errors (device)
   double seconds = 0.0;     // wall time of the execution (setup + trace + read-back)
   std::string case_file;    // path of the case's YAML file (`rayspec compare` re-parses it)

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -88,7 +89,8 @@ std::string writeResults(const Results& r, const std::string& dir_name, const st
   j["case"] = r.case_name;
   j["backend"] = r.backend;
   j["device"] = r.device;
-  j["status"] = r.status;
+  j["status"] = runStatusName(r.status);
+  j["status_detail"] = r.status_detail;
   j["case_file"] = r.case_file;
   j["width"] = r.width;
   j["height"] = r.height;
@@ -114,10 +116,13 @@ std::string writeResults(const Results& r, const std::string& dir_name, const st
     for (const Candidate& c : a.shared_triangles)
       shared.push_back({{"instance", c.instance}, {"geometry", c.geometry}, {"primitive", c.primitive}});
     j["ambiguous"].push_back(
-        {{"ray", a.ray}, {"reason", a.reason}, {"candidates", cands}, {"shared_triangles", shared}});
+        {{"ray", a.ray}, {"reason", ambiguityReasonName(a.reason)}, {"candidates", cands}, {"shared_triangles", shared}});
   }
   j["t_bounds"] = json::array();
   for (const TBound& b : r.t_bounds) j["t_bounds"].push_back({{"ray", b.ray}, {"bound", b.bound}});
+  j["undefined"] = json::array();
+  for (const UndefinedRay& u : r.undefined)
+    j["undefined"].push_back({{"ray", u.ray}, {"reason", undefinedReasonName(u.reason)}, {"what", u.what}});
   std::ofstream(dir / "results.json") << j.dump(1) << '\n';
   if (!writeWords(dir / "records.bin", r.records)) return "cannot write records.bin in " + dir.string();
   writeRecordsCsv(r, dir / "records.csv", kept_fields);
@@ -138,7 +143,9 @@ Results readResults(const std::string& dir_name, std::string* error) {
     r.case_name = j.at("case");
     r.backend = j.at("backend");
     r.device = j.at("device");
-    r.status = j.at("status");
+    if (!parseRunStatus(j.at("status").get<std::string>(), &r.status))
+      throw std::runtime_error("status: unknown value '" + j.at("status").get<std::string>() + "'");
+    r.status_detail = j.value("status_detail", std::string());
     r.width = j.at("width");
     r.height = j.at("height");
     r.seconds = j.at("seconds");
@@ -165,10 +172,20 @@ Results readResults(const std::string& dir_name, std::string* error) {
     }
     if (j.contains("t_bounds"))
       for (const json& jb : j.at("t_bounds")) r.t_bounds.push_back({jb.at("ray"), jb.at("bound")});
+    if (j.contains("undefined"))
+      for (const json& ju : j.at("undefined")) {
+        UndefinedRay u;
+        u.ray = ju.at("ray");
+        if (!parseUndefinedReason(ju.at("reason").get<std::string>(), &u.reason))
+          throw std::runtime_error("undefined.reason: unknown value '" + ju.at("reason").get<std::string>() + "'");
+        u.what = ju.at("what");
+        r.undefined.push_back(std::move(u));
+      }
     for (const json& ja : j.at("ambiguous")) {
       RayAmbiguity a;
       a.ray = ja.at("ray");
-      a.reason = ja.at("reason");
+      if (!parseAmbiguityReason(ja.at("reason").get<std::string>(), &a.reason))
+        throw std::runtime_error("ambiguous.reason: unknown value '" + ja.at("reason").get<std::string>() + "'");
       for (const json& jc : ja.at("candidates"))
         a.candidates.push_back({jc.at("hit"), jc.at("instance"), jc.at("geometry"), jc.at("primitive")});
       if (ja.contains("shared_triangles"))

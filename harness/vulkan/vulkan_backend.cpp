@@ -39,20 +39,19 @@ Results VulkanBackend::run(const Case& c, const Plan& plan) {
   r.device = ctx_->info.name;
   r.width = c.rays.width;
   r.height = c.rays.height;
-  r.status = "ok";
   ctx_->capture->take();  // messages from before this run are not its own
   try {
     runCase(*ctx_, c, plan, r);
   } catch (const ShaderCompileError& e) {
-    r.status = std::string("Crash: shader compile: ") + e.what();
+    r.setStatus(RunStatus::Crash, std::string("shader compile: ") + e.what());
   } catch (const NotSupportedError& e) {
-    r.status = std::string("NotSupported: ") + e.what();
+    r.setStatus(RunStatus::NotSupported, e.what());
   } catch (const std::exception& e) {
-    r.status = std::string("Crash: ") + e.what();
+    r.setStatus(RunStatus::Crash, e.what());
   } catch (...) {
-    r.status = "Crash: unknown exception";
+    r.setStatus(RunStatus::Crash, "unknown exception");
   }
-  if (r.status != "ok") {
+  if (!r.ok()) {
     r.records.clear();
     r.counters.clear();
     r.images.clear();

@@ -54,7 +54,7 @@ class VulkanBackend {
   const DeviceInfo& device() const;
   bool validationEnabled() const;
 
-  // Never throws. status: "ok", "NotSupported: <why>" or "Crash: <why>".
+  // Never throws. status: Ok, NotSupported or Crash, with the detail.
   Results run(const Case& c, const Plan& plan);
 
   // Destroys the device and the instance now (the destructor does it too) and

@@ -1,0 +1,270 @@
+// The exact tier: is a trace's answer numerically clear? Candidates within
+// the error bound of an edge, a vertex, an interval end, a tie or an AABB face,
+// and intersection-program decisions within rounding, are tried the other way
+// in sandboxed what-if runs; a ray whose answers differ is ambiguous and
+// lists them all (results/results.h, RayAmbiguity).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <set>
+
+#include "model/sphere_error.h"
+#include "model/traversal.h"
+#include "results/record_layout.h"
+#include "results/tolerances.h"
+
+namespace rayspec {
+
+using namespace trace_detail;
+
+void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& candidates,
+                            const std::vector<std::pair<size_t, double>>& reports,
+                            const std::vector<ShaderDecision>& shaderUnsure, const Payload& payloadIn) {
+  const std::vector<ModelCandidate>* cands = &candidates;
+  const ModelScene& scene = *sh_.scene;
+  const TraceRay& r = tr.ray;
+  RayAmbiguity amb;
+  amb.ray = index_;
+  std::optional<AmbiguityReason> reason;  // the first reason found
+  const double finalT = tr.best.valid ? tr.best.t : INFINITY;
+  // A triangle candidate that a device may see as a hit in the interval.
+  auto eligible = [&](const ModelCandidate& cand) {
+    const ModelInstance& mi = scene.instances[cand.instance];
+    const ModelGeometry& g = scene.blases[mi.blas].geometries[cand.geometry];
+    const bool opaque = resolveOpaque(g.flags, mi.src->flags, tr.flags);
+    if (((tr.flags & kRayCullOpaque) && opaque) || ((tr.flags & kRayCullNoOpaque) && !opaque)) return false;
+    if (facing(scene, cand, r, tr.flags).culled) return false;
+    const double tl = tr.tol(cand.t);
+    return !(cand.t < r.tmin - tl || cand.t > r.tmax + tl);
+  };
+  auto add = [&](bool hit, uint32_t i, uint32_t g, uint32_t p) {
+    for (const Candidate& k : amb.candidates)
+      if (k.hit == hit && (!hit || (k.instance == i && k.geometry == g && k.primitive == p))) return;
+    amb.candidates.push_back({hit, i, g, p});
+  };
+  std::vector<size_t> unsure;  // candidates whose decision could flip
+  bool faces = false;
+  for (size_t k = 0; k < cands->size(); ++k) {
+    const ModelCandidate& cand = (*cands)[k];
+    if (cand.aabb) {
+      // A grazed box matters only if its what-if runs change the answer (below).
+      if (cand.near_face && cand.t <= finalT + tr.tol(cand.t)) {
+        unsure.push_back(k);
+        faces = true;
+      }
+      continue;
+    }
+    if (!eligible(cand)) continue;
+    const double tl = tr.tol(cand.t);
+    std::optional<AmbiguityReason> why;
+    if (cand.ambiguity != TriAmbiguity::None && cand.t <= finalT + tl)
+      why = cand.ambiguity == TriAmbiguity::Vertex ? AmbiguityReason::Vertex : AmbiguityReason::Edge;
+    else if (cand.hit && std::fabs(cand.t - r.tmin) <= tl) why = AmbiguityReason::TminTie;
+    else if (cand.hit && std::fabs(cand.t - r.tmax) <= tl) why = AmbiguityReason::TmaxTie;
+    if (why) {
+      if (!reason) reason = why;
+      unsure.push_back(k);
+    }
+  }
+  if (reason == AmbiguityReason::Edge || reason == AmbiguityReason::Vertex) {
+    // The triangles of one instance the model decided as hits within the
+    // bound of the same shared edge or vertex (same t): a watertight device
+    // finds one of them, so a double hit shows as extra any-hit runs.
+    const ModelCandidate* first = nullptr;
+    for (const ModelCandidate& cand : *cands) {
+      if (cand.aabb || !cand.hit || cand.ambiguity == TriAmbiguity::None || !eligible(cand)) continue;
+      if (!first) first = &cand;
+      if (cand.instance == first->instance && std::fabs(cand.t - first->t) <= tr.tol(first->t))
+        amb.shared_triangles.push_back({true, cand.instance, cand.geometry, cand.primitive});
+    }
+  }
+  if (reason || faces) {
+    // The legal answers: this run's, and those of the what-if runs where
+    // the unsure candidates decide otherwise (whatIf).
+    auto addCommitted = [&](const Committed& b) {
+      if (b.valid) add(true, b.instance, b.geometry, b.primitive);
+      else add(false, 0, 0, 0);
+    };
+    addCommitted(tr.best);
+    for (const Committed& b : whatIf(tr, *cands, unsure, payloadIn)) {
+      const bool same = b.valid == tr.best.valid &&
+                        (!b.valid || (b.instance == tr.best.instance && b.geometry == tr.best.geometry &&
+                                      b.primitive == tr.best.primitive && b.kind == tr.best.kind &&
+                                      std::fabs(b.t - tr.best.t) <= tr.tol(b.t)));
+      if (!same && !reason) reason = AmbiguityReason::AabbFace;
+      addCommitted(b);
+    }
+  }
+  // R-TIE, R-ORDER-UNSPEC: candidates confirmed at the committed t (within
+  // the error bound) may end in any order; R-TOFH: any candidate may be
+  // confirmed first. Each is tried in a sandboxed what-if run (preferred in
+  // ties, or processed first); those runs' answers are legal.
+  const bool tofh = (tr.flags & kRayTerminateOnFirstHit) != 0;
+  std::vector<long> prefers, firsts, potential;
+  std::set<std::array<uint32_t, 3>> tied;  // distinct keys confirmable at the committed t
+  if (tofh) {
+    for (size_t k = 0; k < cands->size(); ++k) {
+      const ModelCandidate& cand = (*cands)[k];
+      if (cand.aabb || ((cand.hit || cand.ambiguity != TriAmbiguity::None) && eligible(cand)))
+        firsts.push_back(static_cast<long>(k));
+    }
+  } else if (tr.best.valid) {
+    tied.insert({tr.best.instance, tr.best.geometry, tr.best.primitive});
+    // Per box: 1 its intersection program ran, 2 it reported at the committed t.
+    std::vector<uint8_t> boxes(cands->size(), 0);
+    for (const auto& [index, t] : reports) boxes[index] |= tr.ties(t) ? 3 : 1;
+    for (size_t k = 0; k < cands->size(); ++k) {
+      const ModelCandidate& cand = (*cands)[k];
+      bool tie = false;
+      if (cand.aabb) {
+        tie = (boxes[k] & 2) != 0;
+        // A box entered just past the committed t may still report at it.
+        if (!boxes[k] && tr.ties(cand.t)) potential.push_back(static_cast<long>(k));
+      } else {
+        tie = cand.hit && tr.ties(cand.t) && eligible(cand);
+      }
+      if (!tie) continue;
+      tied.insert({cand.instance, cand.geometry, cand.primitive});
+      if (cand.instance != tr.best.instance || cand.geometry != tr.best.geometry ||
+          cand.primitive != tr.best.primitive)
+        prefers.push_back(static_cast<long>(k));
+    }
+    if (tied.size() < 2) prefers.clear();
+    prefers.insert(prefers.end(), potential.begin(), potential.end());
+  }
+  if (!prefers.empty() || firsts.size() > 1) {
+    const bool before = !amb.candidates.empty();
+    bool differs = false;
+    auto addOne = [&](const Committed& b) {
+      if (b.valid) add(true, b.instance, b.geometry, b.primitive);
+      else add(false, 0, 0, 0);
+      differs = differs || b.valid != tr.best.valid ||
+                (b.valid && (b.instance != tr.best.instance || b.geometry != tr.best.geometry ||
+                             b.primitive != tr.best.primitive));
+    };
+    const size_t saved = amb.candidates.size();
+    addOne(tr.best);
+    for (long k : prefers) addOne(sandbox(tr, *cands, nullptr, k, -1, payloadIn));
+    if (firsts.size() > 1)
+      for (long k : firsts) {
+        // An edge or vertex triangle the model left out may be the device's first hit.
+        std::vector<int8_t> force(cands->size(), -1);
+        if ((*cands)[k].ambiguity != TriAmbiguity::None) force[k] = 1;
+        addOne(sandbox(tr, *cands, force.data(), -1, k, payloadIn));
+      }
+    const bool ambiguousNow = tofh ? differs : (differs || tied.size() >= 2);
+    if (ambiguousNow && !reason) reason = tofh ? AmbiguityReason::FirstHit : AmbiguityReason::TTie;
+    if (!ambiguousNow && !before) amb.candidates.resize(saved);
+  }
+  // R-PREC: an intersection program's decision that rounding may flip
+  // (sphere discriminant or root near an end): each flipped alone in a
+  // what-if run; the ray is ambiguous, as the device's counters may differ.
+  if (!shaderUnsure.empty()) {
+    auto addCommitted = [&](const Committed& b) {
+      if (b.valid) add(true, b.instance, b.geometry, b.primitive);
+      else add(false, 0, 0, 0);
+    };
+    addCommitted(tr.best);
+    for (const ShaderDecision& d : shaderUnsure) {
+      ShaderDecision flipped = d;
+      flipped.value = !d.value;
+      addCommitted(sandbox(tr, *cands, nullptr, -1, -1, payloadIn, &flipped));
+    }
+    if (!reason) reason = AmbiguityReason::ShaderArith;
+  }
+  // R-PREC: the committed t is a root whose rounding on a device may exceed
+  // the comparison's tolerance for hit_t: the answer is sure, its t is
+  // checked against this wider bound.
+  if (tr.best.valid && tr.best.t_err > 0) {
+    const Tolerance tol = toleranceFor("hit_t");
+    if (tr.best.t_err > tol.abs + tol.rel * std::max(std::fabs(tr.best.t), 1.0))
+      t_bounds.push_back({index_, static_cast<float>(tr.best.t_err)});
+  }
+  if (reason) {
+    amb.reason = *reason;
+    ambiguous.push_back(std::move(amb));
+    ray_ambiguous_ = true;
+  }
+}
+
+bool Machine::sphereHitDecision(StageEnv& env, bool modelValue, float disc) {
+  Traversal* tr = env.traversal;
+  if (!tr->exact || !tr->cur || env.stage != Stage::Intersection) return modelValue;
+  const uint32_t ord = tr->sphere_ord++;
+  if (const ShaderDecision* f = tr->forced(0, ord)) return f->value;
+  if (tr->shader_unsure && env.hit && env.ray) {
+    const HitView& h = *env.hit;
+    const ModelInstance& mi = sh_.scene->instances[h.instance];
+    const SphereError se = sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
+                                       objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
+    if (std::fabs(double(disc)) <= se.disc_err) tr->shader_unsure->push_back({tr->cur_index, 0, ord, modelValue});
+  }
+  return modelValue;
+}
+
+// One what-if run of the decision in a sandbox: counters, record and error
+// are restored afterwards, the payload is a copy of the trace's incoming one.
+Committed Machine::sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands, const int8_t* force,
+                           long prefer, long first, const Payload& payloadIn, const ShaderDecision* shaderForce) {
+  const std::vector<uint64_t> savedCounters = counters;
+  const std::string savedError = error;
+  std::vector<uint32_t> savedRecord;
+  if (rec_) savedRecord.assign(rec_, rec_ + recordWords());
+  Traversal v(*this, actual.ray);
+  v.flags = actual.flags;
+  v.depth = actual.depth;
+  v.tmin = actual.tmin;
+  v.tmax_cur = actual.ray.tmax;
+  v.exact = actual.exact;
+  v.prefer = prefer;
+  v.first = first;
+  v.shader_force = shaderForce;
+  if (prefer >= 0) {
+    const ModelCandidate& p = cands[static_cast<size_t>(prefer)];
+    v.prefer_key[0] = p.instance;
+    v.prefer_key[1] = p.geometry;
+    v.prefer_key[2] = p.primitive;
+  }
+  Payload p = payloadIn;
+  v.payload = &p;
+  decide(v, cands, force, p);
+  counters = savedCounters;
+  error = savedError;
+  if (rec_) std::copy(savedRecord.begin(), savedRecord.end(), rec_);
+  return v.best;
+}
+
+// What-if runs of the decision for an ambiguous trace: the unsure candidates
+// are grouped by distance (a group crosses one edge or vertex, shared or not).
+// Within a group each candidate alone is a hit (watertight: at least one of a
+// shared edge's triangles is hit); a group of one may also be no hit. Stage
+// programs run again, in a sandbox: their counters, record and payload
+// effects are undone.
+std::vector<Committed> Machine::whatIf(const Traversal& actual, const std::vector<ModelCandidate>& cands,
+                                       const std::vector<size_t>& unsure, const Payload& payloadIn) {
+  std::vector<Committed> out;
+  if (unsure.empty()) return out;
+  std::vector<int8_t> force(cands.size(), -1);
+  auto run = [&] { out.push_back(sandbox(actual, cands, force.data(), -1, -1, payloadIn)); };
+  size_t g0 = 0;
+  while (g0 < unsure.size()) {
+    size_t g1 = g0 + 1;
+    while (g1 < unsure.size() &&
+           std::fabs(cands[unsure[g1]].t - cands[unsure[g1 - 1]].t) <= actual.tol(cands[unsure[g1]].t))
+      ++g1;
+    for (size_t a = g0; a < g1; ++a) {
+      for (size_t b = g0; b < g1; ++b) force[unsure[b]] = a == b ? 1 : 0;
+      run();
+    }
+    if (g1 - g0 == 1) {
+      force[unsure[g0]] = 0;
+      run();
+    }
+    for (size_t b = g0; b < g1; ++b) force[unsure[b]] = -1;
+    g0 = g1;
+  }
+  return out;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,182 @@
+// The model's path with nothing to decide: Embree's own closest hit (no
+// any-hit, intersection programs, culls or special triangles), for one trace
+// or for a block of launch rays whose programs are counts only.
+#include <cstring>
+
+#include "model/traversal.h"
+#include "results/record_layout.h"
+
+namespace rayspec {
+
+using namespace trace_detail;
+
+namespace {
+
+// Embree's own closest hit (no filters, no culls, no AABBs in this case); the
+// open interval by moving Embree's ends. No culls here, so the facing only
+// gives hit_kind: computed when a program reads it.
+Committed embreeClosestHit(const ModelScene& scene, RTCIntersectContext& ctx, const TraceRay& r, uint32_t flags,
+                           bool needFacing) {
+  Committed best;
+  RTCRayHit rh = embreeRay(r, flags);
+  if (!validRay(r, rh)) return best;
+  rh.ray.tnear = scene.tier == ModelTier::Robust ? nextUp(r.tmin) : r.tmin;
+  rh.ray.tfar = nextDown(r.tmax);
+  rtcIntersect1(scene.top, &ctx, &rh);
+  if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return best;
+  best = {true, rh.ray.tfar, rh.hit.instID[0], rh.hit.geomID, rh.hit.primID, 0xFEu, rh.hit.u, rh.hit.v};
+  if (needFacing) {
+    ModelCandidate cand;
+    cand.instance = best.instance;
+    cand.geometry = best.geometry;
+    cand.primitive = best.primitive;
+    best.kind = facing(scene, cand, r, flags).kind;
+  }
+  return best;
+}
+
+}  // namespace
+
+Committed Machine::directHit(const TraceRay& r, uint32_t flags) {
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+  return embreeClosestHit(*sh_.scene, ctx, r, flags, sh_.need_facing);
+}
+
+namespace {
+
+bool sameTraceParameters(const Ray& a, const Ray& b) {
+  return a.flags == b.flags && a.cull_mask == b.cull_mask && a.sbt_offset == b.sbt_offset &&
+         a.sbt_stride == b.sbt_stride && a.miss == b.miss;
+}
+
+// A float that is neither infinite nor NaN (exponent bits not all ones).
+inline bool finiteBits(float f) {
+  uint32_t u;
+  std::memcpy(&u, &f, 4);
+  return (u & 0x7F800000u) != 0x7F800000u;
+}
+
+}  // namespace
+
+// One pass over the block: each ray is traced and shaded at once, with no
+// TraceRay copy or per-ray stage state on the common path. What a counts-only
+// closest-hit or miss program does is resolved once per block for the block's
+// first ray's trace parameters (per instance and geometry for hits), and the
+// counts are kept in locals, added to `counters` when the resolution changes
+// and at the end (no per-ray writes to memory another thread may share). Any
+// other ray (other parameters, SkipClosestHit, programs that are more than
+// counts) goes through shade() exactly as trace() would.
+void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
+  const std::vector<Ray>& rays = sh_.c->rays.rays;
+  const CPipeline& programs = *sh_.programs;
+  const uint32_t width = sh_.c->rays.width;
+  const uint32_t words = records_ ? recordWords() : 0;
+  uint32_t pipeFlags = 0;
+  if (sh_.c->pipeline.flags & 0x1000) pipeFlags |= kRaySkipTriangles;
+  if (sh_.c->pipeline.flags & 0x2000) pipeFlags |= kRaySkipAabbs;
+  const ModelScene& scene = *sh_.scene;
+  const RTCScene top = scene.top;
+  const bool robust = scene.tier == ModelTier::Robust;
+  RTCIntersectContext ctx;
+  rtcInitIntersectContext(&ctx);
+
+  const Ray& first = rays[begin];
+  const TraceRay r0 = launchRay(first);
+  const bool quick = !((first.flags | pipeFlags) & kRaySkipClosestHit);
+  const CountsOnly* missCounts = nullptr;
+  if (quick) {
+    const uint32_t mi = r0.miss & 0xFFFF;
+    if (mi < default_miss_.size() && default_miss_[mi].group && *default_miss_[mi].group < programs.miss.size() &&
+        programs.miss_counts[*default_miss_[mi].group].yes)
+      missCounts = &programs.miss_counts[*default_miss_[mi].group];
+  }
+  uint32_t lastInstance = ~0u, lastGeometry = ~0u;
+  const CountsOnly* hitCounts = nullptr;
+  uint64_t hitPending = 0, missPending = 0;  // quick hits (for hitCounts) and misses
+  auto flush = [this](const CountsOnly* k, uint64_t& n) {
+    if (k && n)
+      for (int c : k->counters) counters[c] += n;
+    n = 0;
+  };
+  const uint32_t runsRaygen = runs_offset_[kRunsRaygen], runsHit = runs_offset_[kRunsClosestHit],
+                 runsMiss = runs_offset_[kRunsMiss];
+
+  for (uint32_t i = begin; i < end; ++i) {
+    if (i + 8 < end) __builtin_prefetch(&rays[i + 8]);
+    const Ray& ray = rays[i];
+    const uint32_t flags = ray.flags | pipeFlags;
+    uint32_t* rec = records_ ? records_ + static_cast<size_t>(i) * words : nullptr;
+    if (rec) rec[runsRaygen] += 1;
+    // embreeRay + validRay + embreeClosestHit, for the launch ray itself.
+    RTCRayHit rh;
+    rh.ray.org_x = ray.origin[0]; rh.ray.org_y = ray.origin[1]; rh.ray.org_z = ray.origin[2];
+    rh.ray.dir_x = ray.direction[0]; rh.ray.dir_y = ray.direction[1]; rh.ray.dir_z = ray.direction[2];
+    rh.ray.time = 0;
+    rh.ray.mask = (ray.cull_mask & 0xFF) | ((flags & kRaySkipTriangles) ? 0u : kMaskTriangles) |
+                  ((flags & kRaySkipAabbs) ? 0u : kMaskAabbs);
+    rh.ray.id = 0;
+    rh.ray.flags = 0;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    const bool valid = finiteBits(ray.origin[0]) & finiteBits(ray.origin[1]) & finiteBits(ray.origin[2]) &
+                       finiteBits(ray.direction[0]) & finiteBits(ray.direction[1]) &
+                       finiteBits(ray.direction[2]) & (ray.tmin >= 0.0f) & (ray.tmin <= ray.tmax) &
+                       ((ray.cull_mask & 0xFF) != 0);
+    if (valid) {
+      rh.ray.tnear = robust ? nextUp(ray.tmin) : ray.tmin;
+      rh.ray.tfar = nextDown(ray.tmax);
+      rtcIntersect1(top, &ctx, &rh);
+    }
+    const bool hit = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+    if (quick && sameTraceParameters(ray, first)) {
+      if (hit) {
+        if (rh.hit.instID[0] != lastInstance || rh.hit.geomID != lastGeometry) {
+          lastInstance = rh.hit.instID[0];
+          lastGeometry = rh.hit.geomID;
+          const CHitGroup* grp = groupOf(programs, hitRecord(lastInstance, lastGeometry, r0));
+          const CountsOnly* k =
+              grp && grp->closest_hit && grp->closest_hit_counts.yes ? &grp->closest_hit_counts : nullptr;
+          if (k != hitCounts) {
+            flush(hitCounts, hitPending);
+            hitCounts = k;
+          }
+        }
+        if (hitCounts) {
+          ++hitPending;
+          if (rec) rec[runsHit] += 1;
+          continue;
+        }
+      } else if (missCounts) {
+        ++missPending;
+        if (rec) rec[runsMiss] += 1;
+        continue;
+      }
+    }
+    // Everything else: as trace() does, with this ray's launch state.
+    const TraceRay r = launchRay(ray);
+    Committed h;
+    if (hit) {
+      h = {true, rh.ray.tfar, rh.hit.instID[0], rh.hit.geomID, rh.hit.primID, 0xFEu, rh.hit.u, rh.hit.v};
+      if (sh_.need_facing) {
+        ModelCandidate cand;
+        cand.instance = h.instance;
+        cand.geometry = h.geometry;
+        cand.primitive = h.primitive;
+        h.kind = facing(scene, cand, r, flags).kind;
+      }
+    }
+    index_ = i;
+    x_ = i % width;
+    y_ = i / width;
+    rec_ = rec;
+    ray_ambiguous_ = false;
+    Payload payload;
+    payload.depth = 1;
+    shade(r, flags, 1, h, payload);
+  }
+  flush(hitCounts, hitPending);
+  flush(missCounts, missPending);
+}
+
+}  // namespace rayspec

@@ -1,0 +1,409 @@
+// traceRayEXT in the model: Embree enumerates, the model decides (see the
+// order documented in model_backend.h), then closest-hit or miss runs. The
+// exact tier's ambiguity check is in model_exact_tier.cpp, the path without
+// decisions in model_fast_path.cpp.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "model/sphere_error.h"
+#include "model/traversal.h"
+
+namespace rayspec {
+namespace trace_detail {
+
+bool keyLess(uint32_t i0, uint32_t g0, uint32_t p0, uint32_t i1, uint32_t g1, uint32_t p1) {
+  if (i0 != i1) return i0 < i1;
+  if (g0 != g1) return g0 < g1;
+  return p0 < p1;
+}
+
+Vec3 xform(const std::array<float, 12>& m, const Vec3& v, float w) {
+  Vec3 r;
+  for (int k = 0; k < 3; ++k)
+    r[k] = m[k * 4] * v[0] + m[k * 4 + 1] * v[1] + m[k * 4 + 2] * v[2] + (w != 0 ? m[k * 4 + 3] : 0.0f);
+  return r;
+}
+
+const CHitGroup* groupOf(const CPipeline& p, const SbtRecord* rec) {
+  if (!rec || !rec->group || *rec->group >= p.groups.size()) return nullptr;
+  return &p.groups[*rec->group];
+}
+
+// The neighbouring floats (Embree's interval ends moved to the open interval).
+float nextUp(float x) {
+  if (std::isnan(x) || x == INFINITY) return x;
+  if (x == 0.0f) return std::numeric_limits<float>::denorm_min();
+  uint32_t u;
+  std::memcpy(&u, &x, 4);
+  u = x > 0 ? u + 1 : u - 1;
+  std::memcpy(&x, &u, 4);
+  return x;
+}
+float nextDown(float x) { return -nextUp(-x); }
+
+bool resolveOpaque(uint32_t geomFlags, uint32_t instFlags, uint32_t rayFlags) {
+  if (rayFlags & kRayOpaque) return true;
+  if (rayFlags & kRayNoOpaque) return false;
+  if (instFlags & kInstanceForceOpaque) return true;
+  if (instFlags & kInstanceForceNoOpaque) return false;
+  return (geomFlags & kGeometryOpaque) != 0;
+}
+
+Facing facing(const ModelScene& s, const ModelCandidate& c, const TraceRay& ray, uint32_t flags) {
+  const ModelInstance& mi = s.instances[c.instance];
+  const auto& tri = s.blases[mi.blas].geometries[c.geometry].triangles[c.primitive];
+  const Vec3 d = xform(mi.inverse_f, ray.direction, 0);
+  double n[3];
+  const double e1[3] = {double(tri[1][0]) - tri[0][0], double(tri[1][1]) - tri[0][1], double(tri[1][2]) - tri[0][2]};
+  const double e2[3] = {double(tri[2][0]) - tri[0][0], double(tri[2][1]) - tri[0][1], double(tri[2][2]) - tri[0][2]};
+  n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+  n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+  n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+  const double sdot = d[0] * n[0] + d[1] * n[1] + d[2] * n[2];
+  Facing f;
+  f.front = sdot < 0;
+  if (mi.src->flags & kInstanceFlipFacing) f.front = !f.front;
+  f.kind = f.front ? 0xFEu : 0xFFu;
+  if (sdot == 0) f.culled = true;  // zero-area projection (R-FACE-DET)
+  if (!(mi.src->flags & kInstanceFacingCullDisable)) {
+    if ((flags & kRayCullBackFacing) && !f.front) f.culled = true;
+    if ((flags & kRayCullFrontFacing) && f.front) f.culled = true;
+  }
+  return f;
+}
+
+// The environment of a stage that sees a hit (intersection, any-hit, closest-hit).
+StageEnv hitStage(Stage stage, const std::vector<uint32_t>& record_data, Payload* payload, const TraceRay& ray,
+                  const HitView& hv, float tmax_view, uint32_t depth) {
+  StageEnv e;
+  e.stage = stage;
+  e.record_data = &record_data;
+  e.payload = payload;
+  e.ray = &ray;
+  e.hit = &hv;
+  e.tmax_view = tmax_view;
+  e.depth = depth;
+  return e;
+}
+
+// A hit's own values on the view of its primitive.
+void setHit(HitView& hv, float t, uint32_t kind, float b1, float b2) {
+  hv.t = t;
+  hv.hit_kind = kind;
+  hv.b1 = b1;
+  hv.b2 = b2;
+}
+
+HitView viewOf(const ModelScene& s, const Case& c, const TraceRay& ray, uint32_t instance, uint32_t geometry,
+               uint32_t primitive, bool objectRay) {
+  HitView hv;
+  const ModelInstance& mi = s.instances[instance];
+  hv.instance = instance;
+  hv.custom_index = c.scene.instances[instance].custom_index & 0xFFFFFF;
+  hv.geometry = geometry;
+  hv.primitive = primitive;
+  if (objectRay) {
+    hv.object_origin = xform(mi.inverse_f, ray.origin, 1);
+    hv.object_direction = xform(mi.inverse_f, ray.direction, 0);
+  }
+  const ModelGeometry& g = s.blases[mi.blas].geometries[geometry];
+  if (g.kind == Geometry::Kind::Aabbs) {
+    const auto& a = g.aabbs[primitive];
+    hv.aabb_min = {a[0], a[1], a[2]};
+    hv.aabb_max = {a[3], a[4], a[5]};
+  }
+  return hv;
+}
+
+RTCRayHit embreeRay(const TraceRay& r, uint32_t flags) {
+  RTCRayHit rh;
+  rh.ray.org_x = r.origin[0]; rh.ray.org_y = r.origin[1]; rh.ray.org_z = r.origin[2];
+  rh.ray.dir_x = r.direction[0]; rh.ray.dir_y = r.direction[1]; rh.ray.dir_z = r.direction[2];
+  rh.ray.time = 0;
+  rh.ray.mask = (r.cull_mask & 0xFF) | ((flags & kRaySkipTriangles) ? 0u : kMaskTriangles) |
+                ((flags & kRaySkipAabbs) ? 0u : kMaskAabbs);
+  rh.ray.id = 0;
+  rh.ray.flags = 0;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  return rh;
+}
+
+// A ray Embree can trace. The rest (non-finite origin or direction, NaN or
+// negative tmin, tmax below tmin or NaN: R-UB, any result is allowed) is
+// never handed to Embree, whose debug checks would abort, and misses.
+bool validRay(const TraceRay& r, const RTCRayHit& rh) {
+  for (int k = 0; k < 3; ++k)
+    if (!std::isfinite(r.origin[k]) || !std::isfinite(r.direction[k])) return false;
+  if (!(r.tmin >= 0.0f) || !(r.tmin <= r.tmax)) return false;
+  return (rh.ray.mask & 0xFF) != 0;
+}
+
+}  // namespace trace_detail
+
+using namespace trace_detail;
+
+const SbtRecord* Machine::hitRecord(uint32_t instance, uint32_t geometry, const TraceRay& r) const {
+  const Instance& inst = sh_.c->scene.instances[instance];
+  const uint64_t idx = static_cast<uint64_t>(inst.sbt_offset & 0xFFFFFF) +
+                       static_cast<uint64_t>(geometry) * (r.sbt_stride & 0xF) + (r.sbt_offset & 0xF);
+  return idx < default_hit_.size() ? &default_hit_[idx] : nullptr;
+}
+
+Flow Machine::report(const CStmt& s, StageEnv& env) {
+  Traversal* tr = env.traversal;
+  if (!tr || !tr->cur) return Flow::Continue;
+  const Val tv = eval(s.t, env);
+  const float t = s.t.type == ValueType::Uint ? static_cast<float>(tv.u) : tv.f[0];
+  const uint32_t kind = eval(s.hit_kind, env).u;
+  Val attr;
+  if (s.has_attribute) attr = eval(s.attribute, env);
+  bool accepted = false;
+  Flow flow = Flow::Continue;
+  // R-ISECT-REPORT, R-CAND-AABB-CLOSED: tmin <= t <= current tmax.
+  bool inside = t >= tr->ray.tmin && static_cast<double>(t) <= tr->tmax_cur;
+  if (tr->reports && t >= tr->ray.tmin && t <= tr->ray.tmax + tr->tol(t)) tr->reports->push_back({tr->cur_index, t});
+  if (tr->exact) {
+    // R-PREC: a sphere root within its error bound of an interval end may
+    // fall on either side on a device. Not against the current candidate's
+    // own committed report: the device compares its own roots consistently.
+    const uint32_t ord = tr->report_ord++;
+    if (const ShaderDecision* f = tr->forced(1, ord)) {
+      inside = f->value;
+    } else if (tr->shader_unsure && s.t.kind == Expr::Kind::Op &&
+               (s.t.op == OpCode::SphereNear || s.t.op == OpCode::SphereFar) && env.hit && env.ray) {
+      const HitView& h = *env.hit;
+      const ModelInstance& mi = sh_.scene->instances[h.instance];
+      const SphereError se = sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
+                                         objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
+      const double et = (s.t.op == OpCode::SphereNear ? se.near_err : se.far_err) + tr->tol(t);
+      const bool own = tr->best.valid && tr->best.instance == h.instance && tr->best.geometry == h.geometry &&
+                       tr->best.primitive == h.primitive;
+      const bool nearEnd = std::fabs(double(t) - tr->ray.tmin) <= et ||
+                           (!own && std::fabs(double(t) - tr->tmax_cur) <= et);
+      if (nearEnd) tr->shader_unsure->push_back({tr->cur_index, 1, ord, inside});
+    }
+  }
+  // What-if run preferring one candidate (R-TIE): it wins every tie, and a
+  // committed preferred hit loses none.
+  if (tr->prefer >= 0 && t >= tr->ray.tmin && tr->ties(t)) {
+    if (tr->cur_index == static_cast<size_t>(tr->prefer)) inside = true;
+    else if (tr->isPreferred(tr->best.instance, tr->best.geometry, tr->best.primitive)) inside = false;
+  }
+  if (inside) {
+    HitView hv = *env.hit;
+    setHit(hv, t, kind, attr.f[0], attr.f[1]);
+    Flow ah = Flow::Continue;
+    if (!tr->cur_opaque && tr->cur_group && tr->cur_group->any_hit) {
+      bumpRuns(kRunsAnyHit);
+      // R-TMAX-VIEW: any-hit sees the candidate's t.
+      StageEnv a = hitStage(Stage::AnyHit, tr->cur_rec->data, tr->payload, tr->ray, hv, t, tr->depth);
+      ah = exec(*tr->cur_group->any_hit, a);
+    }
+    if (ah != Flow::Ignore) {
+      accepted = true;
+      tr->best = {true, static_cast<double>(t), hv.instance, hv.geometry, hv.primitive, kind, hv.b1, hv.b2};
+      if (tr->exact && s.t.kind == Expr::Kind::Op &&
+          (s.t.op == OpCode::SphereNear || s.t.op == OpCode::SphereFar) && env.hit && env.ray) {
+        // R-PREC: how far a device's root may lie from this one.
+        const ModelInstance& mi = sh_.scene->instances[hv.instance];
+        const SphereError se = sphereError(hv.aabb_min, hv.aabb_max, hv.object_origin, hv.object_direction,
+                                           objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
+        tr->best.t_err = s.t.op == OpCode::SphereNear ? se.near_err : se.far_err;
+      }
+      tr->tmax_cur = t;
+      env.tmax_view = t;
+      if (ah == Flow::Terminate || (tr->flags & kRayTerminateOnFirstHit)) {
+        tr->stop = true;
+        return Flow::Terminate;  // R-TERMINATE: the intersection program stops too
+      }
+    }
+  }
+  const Flow f = exec(accepted ? s.then_ : s.else_, env);
+  return f != Flow::Continue ? f : flow;
+}
+
+Payload Machine::trace(const TraceRay& r, uint32_t depth) {
+  uint32_t flags = r.flags;
+  if (sh_.c->pipeline.flags & 0x1000) flags |= kRaySkipTriangles;
+  if (sh_.c->pipeline.flags & 0x2000) flags |= kRaySkipAabbs;
+  Payload payload;
+  payload.depth = depth;
+  const Committed best = sh_.direct ? directHit(r, flags) : traverse(r, flags, depth, payload);
+  shade(r, flags, depth, best, payload);
+  return payload;
+}
+
+// The model's decision over the sorted candidates (R-ORDER-UNSPEC: in
+// ascending distance). `force`, when given, overrides per candidate whether a
+// triangle is a hit (-1: the model's own decision, 0: no, 1: yes).
+void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, const int8_t* force, Payload& payload) {
+  const Case& c = *sh_.c;
+  const ModelScene& scene = *sh_.scene;
+  const TraceRay& r = tr.ray;
+  const uint32_t depth = tr.depth;
+  const size_t n = cands.size();
+  const size_t first = tr.first >= 0 ? static_cast<size_t>(tr.first) : 0;
+  for (size_t pos = 0; pos < n; ++pos) {
+    // R-TOFH what-if: `first` ahead of all others, the rest in order.
+    const size_t k = tr.first < 0 ? pos : pos == 0 ? first : pos <= first ? pos - 1 : pos;
+    const ModelCandidate& cand = cands[k];
+    if (tr.stop) break;
+    const ModelInstance& mi = scene.instances[cand.instance];
+    const ModelGeometry& g = scene.blases[mi.blas].geometries[cand.geometry];
+    const bool opaque = resolveOpaque(g.flags, mi.src->flags, tr.flags);
+    if ((tr.flags & kRayCullOpaque) && opaque) continue;
+    if ((tr.flags & kRayCullNoOpaque) && !opaque) continue;
+    const SbtRecord* rec = hitRecord(cand.instance, cand.geometry, r);
+    const CHitGroup* grp = groupOf(*sh_.programs, rec);
+    if (cand.aabb) {
+      if (force && force[k] == 0) continue;
+      // A preferred box entered at the committed t (within the error bound) still runs.
+      if (cand.t > tr.tmax_cur && !(tr.prefer == static_cast<long>(k) && tr.ties(cand.t))) continue;
+      if (!grp || !grp->intersection) continue;
+      HitView hv = viewOf(scene, c, r, cand.instance, cand.geometry, cand.primitive);
+      tr.cur = &cand;
+      tr.cur_index = k;
+      tr.cur_opaque = opaque;
+      if (tr.reports) tr.reports->push_back({k, NAN});  // it ran (the exact tier's tie check)
+      tr.sphere_ord = 0;
+      tr.report_ord = 0;
+      tr.cur_rec = rec;
+      tr.cur_group = grp;
+      bumpRuns(kRunsIntersection);
+      // R-TMAX-VIEW: the intersection shader sees the closest t so far.
+      StageEnv env = hitStage(Stage::Intersection, rec->data, nullptr, r, hv, static_cast<float>(tr.tmax_cur), depth);
+      env.traversal = &tr;
+      exec(*grp->intersection, env);
+      tr.cur = nullptr;
+      continue;
+    }
+    if (!(force && force[k] >= 0 ? force[k] == 1 : cand.hit)) continue;
+    bool inside = cand.t > tr.tmin && cand.t < tr.tmax_cur;
+    // What-if run forcing a hit at an interval end (tmin-tie, tmax-tie): a
+    // float ray test may put it a step inside.
+    if (!inside && force && force[k] == 1 && !tr.best.valid && cand.t > tr.tmin - tr.tol(cand.t) &&
+        cand.t < tr.tmax_cur + tr.tol(cand.t))
+      inside = true;
+    const bool tie = tr.exact && tr.ties(cand.t);
+    const bool bestPreferred = tr.isPreferred(tr.best.instance, tr.best.geometry, tr.best.primitive);
+    if (tie && (tr.prefer == static_cast<long>(k) || bestPreferred)) {
+      // What-if run preferring one candidate (R-TIE).
+      inside = tr.prefer == static_cast<long>(k) && cand.t > tr.tmin;
+    } else if (!inside && tie &&
+               keyLess(cand.instance, cand.geometry, cand.primitive, tr.best.instance, tr.best.geometry,
+                       tr.best.primitive)) {
+      // Exact tier, R-TIE: a tie with the committed hit goes to the smaller key.
+      inside = true;
+    }
+    if (!inside) continue;
+    const Facing f = facing(scene, cand, r, tr.flags);
+    if (f.culled) continue;
+    Flow ah = Flow::Continue;
+    if (!opaque && grp && grp->any_hit) {
+      HitView hv = viewOf(scene, c, r, cand.instance, cand.geometry, cand.primitive);
+      setHit(hv, static_cast<float>(cand.t), f.kind, cand.b1, cand.b2);
+      bumpRuns(kRunsAnyHit);
+      StageEnv a = hitStage(Stage::AnyHit, rec->data, &payload, r, hv, hv.t, depth);
+      ah = exec(*grp->any_hit, a);
+      if (ah == Flow::Ignore) continue;
+    }
+    tr.best = {true, cand.t, cand.instance, cand.geometry, cand.primitive, f.kind, cand.b1, cand.b2};
+    tr.tmax_cur = cand.t;
+    if (ah == Flow::Terminate || (tr.flags & kRayTerminateOnFirstHit)) tr.stop = true;
+  }
+}
+
+// Every candidate from Embree, decided by the model in order (see
+// model_backend.h), then the exact tier's ambiguity check.
+Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, Payload& payload) {
+  const ModelScene& scene = *sh_.scene;
+  Traversal tr(*this, r);
+  tr.flags = flags;
+  tr.depth = depth;
+  tr.tmin = r.tmin;
+  tr.tmax_cur = r.tmax;
+  tr.exact = scene.tier == ModelTier::Exact;
+  tr.payload = &payload;
+  const Payload payloadIn = payload;  // for the exact tier's what-if variants
+
+  RTCRayHit rh = embreeRay(r, tr.flags);
+  std::vector<ModelCandidate>* cands = nullptr;
+  std::vector<std::pair<size_t, double>> reports;  // exact tier: every report of the actual run
+  std::vector<ShaderDecision> shaderUnsure;  // exact tier: decisions rounding may flip
+  if (validRay(r, rh)) {
+    if (cand_pool_.size() < depth) cand_pool_.resize(depth);
+    cands = &cand_pool_[depth - 1];
+    cands->clear();
+    TraceContext tc;
+    rtcInitIntersectContext(&tc.rtc);
+    tc.scene = &scene;
+    tc.origin = {r.origin[0], r.origin[1], r.origin[2]};
+    tc.direction = {r.direction[0], r.direction[1], r.direction[2]};
+    tc.tmin = r.tmin;
+    tc.tmax = r.tmax;
+    tc.candidates = cands;
+    // Slightly wider than the interval: the model checks both ends itself.
+    rh.ray.tnear = std::max(0.0f, r.tmin - std::fabs(r.tmin) * 1e-5f);
+    rh.ray.tfar = r.tmax + std::fabs(r.tmax) * 1e-5f;
+    rtcIntersect1(scene.top, &tc.rtc, &rh);
+    std::sort(cands->begin(), cands->end(), [](const ModelCandidate& a, const ModelCandidate& b) {
+      if (a.t != b.t) return a.t < b.t;
+      return keyLess(a.instance, a.geometry, a.primitive, b.instance, b.geometry, b.primitive);
+    });
+    tr.reports = tr.exact ? &reports : nullptr;
+    tr.shader_unsure = tr.exact && sh_.programs->reads_sphere ? &shaderUnsure : nullptr;
+    decide(tr, *cands, nullptr, payload);
+    tr.reports = nullptr;
+    tr.shader_unsure = nullptr;
+  }
+
+  if (cands && tr.exact && !ray_ambiguous_) classifyTrace(tr, *cands, reports, shaderUnsure, payloadIn);
+  return tr.best;
+}
+
+// R-MISS-XOR-CHIT: closest-hit or miss for the committed hit.
+void Machine::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Committed& best, Payload& payload) {
+  const Case& c = *sh_.c;
+  const ModelScene& scene = *sh_.scene;
+  if (best.valid) {
+    if (!(flags & kRaySkipClosestHit)) {
+      const SbtRecord* rec = hitRecord(best.instance, best.geometry, r);
+      const CHitGroup* grp = groupOf(*sh_.programs, rec);
+      if (grp && grp->closest_hit && grp->closest_hit_counts.yes) {
+        bump(grp->closest_hit_counts);
+        bumpRuns(kRunsClosestHit);
+      } else if (grp && grp->closest_hit) {
+        HitView hv = viewOf(scene, c, r, best.instance, best.geometry, best.primitive,
+                            sh_.need_object_ray);
+        setHit(hv, static_cast<float>(best.t), best.kind, best.b1, best.b2);
+        bumpRuns(kRunsClosestHit);
+        StageEnv env = hitStage(Stage::ClosestHit, rec->data, &payload, r, hv, hv.t, depth);
+        exec(*grp->closest_hit, env);
+      }
+    }
+  } else {
+    const uint32_t mi = r.miss & 0xFFFF;
+    if (mi < default_miss_.size()) {
+      const SbtRecord& rec = default_miss_[mi];
+      if (rec.group && *rec.group < c.pipeline.miss.size() && sh_.programs->miss_counts[*rec.group].yes) {
+        bump(sh_.programs->miss_counts[*rec.group]);
+        bumpRuns(kRunsMiss);
+      } else if (rec.group && *rec.group < c.pipeline.miss.size()) {
+        bumpRuns(kRunsMiss);
+        StageEnv env;
+        env.stage = Stage::Miss;
+        env.record_data = &rec.data;
+        env.payload = &payload;
+        env.ray = &r;
+        env.tmax_view = r.tmax;
+        env.depth = depth;
+        exec(sh_.programs->miss[*rec.group], env);
+      }
+    }
+  }
+}
+
+}  // namespace rayspec

@@ -1,0 +1,96 @@
+// The model's traversal state and the helpers its three parts share:
+// model_traversal.cpp (candidates decided in order, reports, closest-hit or
+// miss), model_exact_tier.cpp (the exact tier's ambiguity and what-if runs)
+// and model_fast_path.cpp (Embree's own closest hit, no decisions to make).
+#pragma once
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include "model/model_machine.h"
+#include "model/watertight.h"
+
+namespace rayspec {
+
+struct Traversal {
+  Machine& m;
+  const TraceRay& ray;
+  uint32_t flags = 0;  // ray flags with the pipeline's skip flags
+  uint32_t depth = 1;
+  double tmin = 0, tmax_cur = 0;
+  Committed best;
+  bool stop = false;
+  bool exact = false;
+  Payload* payload = nullptr;
+  // The AABB candidate whose intersection program runs.
+  bool cur_opaque = false;
+  const SbtRecord* cur_rec = nullptr;
+  const CHitGroup* cur_group = nullptr;
+  const ModelCandidate* cur = nullptr;
+  size_t cur_index = 0;
+  // Exact tier, sandboxed what-if runs (R-TIE, R-TOFH): `prefer` is the
+  // candidate that wins every tie with the committed hit (and never loses
+  // one), `first` the candidate processed before all others; -1: none.
+  long prefer = -1, first = -1;
+  uint32_t prefer_key[3] = {0, 0, 0};
+  // The actual run of the exact tier: every report (candidate index, t) in [tmin, tmax].
+  std::vector<std::pair<size_t, double>>* reports = nullptr;
+  // Exact tier, R-PREC: the actual run notes its intersection programs'
+  // decisions that rounding may flip; a what-if run flips one of them.
+  std::vector<ShaderDecision>* shader_unsure = nullptr;
+  const ShaderDecision* shader_force = nullptr;
+  uint32_t sphere_ord = 0, report_ord = 0;  // within the current intersection run
+  // The forced value of this decision, if it is the one forced.
+  const ShaderDecision* forced(uint8_t kind, uint32_t ordinal) const {
+    const ShaderDecision* f = shader_force;
+    return f && f->kind == kind && f->ordinal == ordinal && f->cand == cur_index ? f : nullptr;
+  }
+
+  Traversal(Machine& machine, const TraceRay& r) : m(machine), ray(r) {}
+  bool isPreferred(uint32_t i, uint32_t g, uint32_t p) const {
+    return prefer >= 0 && prefer_key[0] == i && prefer_key[1] == g && prefer_key[2] == p;
+  }
+  bool ties(double t) const { return best.valid && std::fabs(t - best.t) <= tol(t); }
+  double tol(double t) const {
+    const double om = std::max({std::fabs(ray.origin[0]), std::fabs(ray.origin[1]), std::fabs(ray.origin[2])});
+    const double dm = std::max({std::fabs(ray.direction[0]), std::fabs(ray.direction[1]), std::fabs(ray.direction[2])});
+    return kDeviceRelTolerance * (std::fabs(t) + (dm > 0 ? om / dm : 0.0));
+  }
+};
+
+namespace trace_detail {
+
+bool keyLess(uint32_t i0, uint32_t g0, uint32_t p0, uint32_t i1, uint32_t g1, uint32_t p1);
+Vec3 xform(const std::array<float, 12>& m, const Vec3& v, float w);
+const CHitGroup* groupOf(const CPipeline& p, const SbtRecord* rec);
+// The neighbouring floats (Embree's interval ends moved to the open interval).
+float nextUp(float x);
+float nextDown(float x);
+// R-OPACITY: ray flag, then instance flag, then the geometry's OPAQUE bit.
+bool resolveOpaque(uint32_t geomFlags, uint32_t instFlags, uint32_t rayFlags);
+
+// Facing of a triangle candidate (R-FACE-DET) and its hit kind (R-HITKIND-TRI).
+struct Facing { bool front = true; bool culled = false; uint32_t kind = 0xFE; };
+Facing facing(const ModelScene& s, const ModelCandidate& c, const TraceRay& ray, uint32_t flags);
+
+// The environment of a stage that sees a hit (intersection, any-hit, closest-hit).
+StageEnv hitStage(Stage stage, const std::vector<uint32_t>& record_data, Payload* payload, const TraceRay& ray,
+                  const HitView& hv, float tmax_view, uint32_t depth);
+// A hit's own values on the view of its primitive.
+void setHit(HitView& hv, float t, uint32_t kind, float b1, float b2);
+HitView viewOf(const ModelScene& s, const Case& c, const TraceRay& ray, uint32_t instance, uint32_t geometry,
+               uint32_t primitive, bool objectRay = true);
+
+RTCRayHit embreeRay(const TraceRay& r, uint32_t flags);
+// A ray Embree can trace. The rest (non-finite origin or direction, NaN or
+// negative tmin, tmax below tmin or NaN: R-UB, any result is allowed) is
+// never handed to Embree, whose debug checks would abort, and misses.
+bool validRay(const TraceRay& r, const RTCRayHit& rh);
+
+}  // namespace trace_detail
+}  // namespace rayspec

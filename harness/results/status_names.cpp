@@ -1,0 +1,97 @@
+// The stable names of the typed statuses and reasons in results/results.h.
+#include "results/results.h"
+
+namespace rayspec {
+namespace {
+
+template <typename E, size_t N>
+bool parseByName(const std::string& name, E* out, const E (&all)[N], const char* (*nameOf)(E)) {
+  for (E e : all)
+    if (name == nameOf(e)) {
+      *out = e;
+      return true;
+    }
+  return false;
+}
+
+}  // namespace
+
+const char* runStatusName(RunStatus s) {
+  switch (s) {
+    case RunStatus::Ok: return "ok";
+    case RunStatus::NotSupported: return "NotSupported";
+    case RunStatus::Crash: return "Crash";
+    case RunStatus::Timeout: return "Timeout";
+  }
+  return "Crash";
+}
+
+bool parseRunStatus(const std::string& name, RunStatus* out) {
+  static const RunStatus all[] = {RunStatus::Ok, RunStatus::NotSupported, RunStatus::Crash, RunStatus::Timeout};
+  return parseByName(name, out, all, runStatusName);
+}
+
+std::string Results::statusText() const {
+  if (status == RunStatus::Ok) return "ok";
+  return std::string(runStatusName(status)) + ": " + status_detail;
+}
+
+const char* ambiguityReasonName(AmbiguityReason r) {
+  switch (r) {
+    case AmbiguityReason::Edge: return "edge";
+    case AmbiguityReason::Vertex: return "vertex";
+    case AmbiguityReason::TmaxTie: return "tmax-tie";
+    case AmbiguityReason::TminTie: return "tmin-tie";
+    case AmbiguityReason::TTie: return "t-tie";
+    case AmbiguityReason::FirstHit: return "first-hit";
+    case AmbiguityReason::Order: return "order";
+    case AmbiguityReason::AabbFace: return "aabb-face";
+    case AmbiguityReason::ShaderArith: return "shader-arith";
+  }
+  return "edge";
+}
+
+bool parseAmbiguityReason(const std::string& name, AmbiguityReason* out) {
+  static const AmbiguityReason all[] = {AmbiguityReason::Edge,     AmbiguityReason::Vertex,   AmbiguityReason::TmaxTie,
+                                        AmbiguityReason::TminTie,  AmbiguityReason::TTie,     AmbiguityReason::FirstHit,
+                                        AmbiguityReason::Order,    AmbiguityReason::AabbFace, AmbiguityReason::ShaderArith};
+  return parseByName(name, out, all, ambiguityReasonName);
+}
+
+const char* ruleForAmbiguity(AmbiguityReason r) {
+  switch (r) {
+    case AmbiguityReason::Edge:
+    case AmbiguityReason::Vertex: return "R-WATERTIGHT";
+    case AmbiguityReason::TmaxTie:
+    case AmbiguityReason::TminTie:
+    case AmbiguityReason::TTie: return "R-TIE";
+    case AmbiguityReason::FirstHit: return "R-TOFH";
+    case AmbiguityReason::Order: return "R-ORDER-UNSPEC";
+    case AmbiguityReason::AabbFace: return "R-AABB-CONS";
+    case AmbiguityReason::ShaderArith: return "R-PREC";
+  }
+  return "R-PREC";
+}
+
+const char* undefinedReasonName(UndefinedReason r) {
+  switch (r) {
+    case UndefinedReason::RayParameters: return "ray-parameters";
+    case UndefinedReason::NanTriangle: return "nan-triangle";
+    case UndefinedReason::HitRecordOutOfRange: return "hit-record-out-of-range";
+    case UndefinedReason::MissRecordOutOfRange: return "miss-record-out-of-range";
+    case UndefinedReason::CallableOutOfRange: return "callable-out-of-range";
+    case UndefinedReason::DivisionByZero: return "division-by-zero";
+    case UndefinedReason::RecursionTooDeep: return "recursion-too-deep";
+  }
+  return "ray-parameters";
+}
+
+bool parseUndefinedReason(const std::string& name, UndefinedReason* out) {
+  static const UndefinedReason all[] = {
+      UndefinedReason::RayParameters,        UndefinedReason::NanTriangle,        UndefinedReason::HitRecordOutOfRange,
+      UndefinedReason::MissRecordOutOfRange, UndefinedReason::CallableOutOfRange, UndefinedReason::DivisionByZero,
+      UndefinedReason::RecursionTooDeep};
+  return parseByName(name, out, all, undefinedReasonName);
+}
+
+}  // namespace rayspec
