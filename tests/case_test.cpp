@@ -206,6 +206,7 @@ rays:
   grid: {size: [2, 1], origin: [0, 0, 1], du: [1, 0, 0], dv: [0, 2, 0], direction: [0, 0, -1]}
   tmax: 10
   miss: 1
+pipeline: {miss: [[], []]}
 )";
   ParseResult r = parse(grid);
   ASSERT_TRUE(r.value) << allErrors(r);
@@ -215,12 +216,14 @@ rays:
   EXPECT_EQ(r.value->rays.rays[1].tmax, 10.0f);
   EXPECT_EQ(r.value->rays.rays[1].miss, 1u);
 
-  const std::string list = R"(rules: [R-MASK]
+  // A NaN tmin is undefined behaviour (R-UB): only a robustness probe may hold one.
+  const std::string list = R"(rules: [R-MASK, R-UB]
 rays:
   list:
     - {origin: [0, 0, 1], direction: [0, 0, -1]}
     - {origin: [0, 0, 1], direction: [0, 0, -1], flags: [opaque, terminate_on_first_hit], cull_mask: 0x80, tmin: .nan}
   tmin: 0.5
+pipeline: {miss: [[]]}
 )";
   r = parse(list);
   ASSERT_TRUE(r.value) << allErrors(r);
@@ -241,6 +244,7 @@ scene:
   instances: [{blas: grid}]
 rays:
   list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]
+pipeline: {miss: [[]], hit_groups: [{}]}
 )");
   ASSERT_TRUE(r.value) << allErrors(r);
   const Geometry& g = r.value->scene.blases[0].geometries[0];
@@ -379,6 +383,7 @@ scene:
     - blas: @BLAS@
 rays:
   list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]
+pipeline: {miss: [[]], hit_groups: [{}]}
 )";
 
 std::string sceneWith(const std::string& mask, const std::string& custom, const std::string& blas) {
@@ -579,7 +584,7 @@ TEST(ParseCaseFile, NameIsPathUnderRoot) {
   const fs::path file = dir / "ignore-odd.yaml";
   {
     std::ofstream out(file);
-    out << "rules: [R-IGNORE]\nrays: {list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]}\n";
+    out << "rules: [R-IGNORE]\nrays: {list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]}\npipeline: {miss: [[]]}\n";
   }
   ParseResult r = parseCaseFile(file.string(), dir.parent_path().string());
   ASSERT_TRUE(r.value) << allErrors(r);

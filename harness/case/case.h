@@ -12,6 +12,7 @@
 
 #include "case/source_loc.h"
 #include "program/program.h"
+#include "results/results.h"
 
 namespace rayspec {
 
@@ -94,6 +95,8 @@ struct Rays {
   uint32_t width = 1, height = 1;  // launch size; width*height == rays.size()
   std::vector<Ray> rays;           // row-major, index = y * width + x
   Ray defaults;                    // tmin/tmax/flags/... used for camera rays and nested traces
+  SourceLoc defaults_loc;          // the `rays` map
+  std::vector<SourceLoc> list_locs;  // `list` form: where each ray is written (empty otherwise)
 };
 
 // One record of an SBT region: a group index, or all-zero, plus record data.
@@ -137,6 +140,15 @@ struct Outputs {
   std::vector<ImageOutput> images;
 };
 
+// Undefined behaviour (R-UB) the parser finds where the values are constants:
+// a ray parameter, an SBT index beyond its region. An error in a case that
+// does not claim R-UB; kept here in a robustness probe, which does.
+struct StaticUndefined {
+  UndefinedReason reason = UndefinedReason::RayParameters;
+  SourceLoc loc;
+  std::string message;
+};
+
 struct Case {
   std::string name;                // e.g. "anyhit/ignore-odd-primitives"
   std::string file;                // path of the YAML file
@@ -147,6 +159,12 @@ struct Case {
   Rays rays;
   Pipeline pipeline;
   Outputs outputs;
+  std::vector<StaticUndefined> static_undefined;  // only in a case that claims R-UB
+  bool claims(const std::string& rule) const {
+    for (const std::string& r : rules)
+      if (r == rule) return true;
+    return false;
+  }
 };
 
 }  // namespace rayspec

@@ -1,12 +1,14 @@
 // parseCaseFile / parseCaseText: the top level of a case file.
 #include "case/parse_case.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
 
 #include "case/case_parts.h"
+#include "case/file_name.h"
 
 namespace rayspec {
 
@@ -20,7 +22,8 @@ std::string CaseError::format() const {
 
 namespace {
 
-void parseRules(YamlReader& r, const YAML::Node& n, std::vector<std::string>& rules) {
+void parseRules(YamlReader& r, const YAML::Node& n, const std::vector<std::string>* catalog,
+                std::vector<std::string>& rules) {
   if (!r.expectSeq(n, "rules")) return;
   if (n.size() == 0) r.error(n, "rules", "at least one rule label is required");
   static const std::regex label("R-[A-Z0-9]+(-[A-Z0-9]+)*");
@@ -32,13 +35,41 @@ void parseRules(YamlReader& r, const YAML::Node& n, std::vector<std::string>& ru
       r.error(n[i], f, "'" + *s + "' is not a rule label (R-NAME, see shared/spec-rules.md)");
       continue;
     }
+    if (catalog && std::find(catalog->begin(), catalog->end(), *s) == catalog->end()) {
+      r.error(n[i], f, "unknown rule label '" + *s + "' (not in the rule catalog, references/spec-rules.yaml)");
+      continue;
+    }
     rules.push_back(*s);
   }
 }
 
-void parseTop(YamlReader& r, const YAML::Node& root, Case& c) {
+// Undefined behaviour the parser found (R-UB): in a robustness probe (a case
+// that claims R-UB) it is what the case is about, kept for `show`; in any other
+// case it is an error at the field that causes it.
+void judgeStaticUndefined(YamlReader& r, Case& c) {
+  if (c.claims("R-UB")) {
+    c.static_undefined = r.undefinedBehaviour();
+    return;
+  }
+  for (const StaticUndefined& u : r.undefinedBehaviour())
+    r.error(u.loc, u.message + " [" + undefinedReasonName(u.reason) +
+                       "; fix the case, or claim R-UB to make it a robustness probe]");
+}
+
+// The case's name becomes folder names of a run (OUT/<family>/<name>/).
+void checkCaseName(YamlReader& r, const Case& c) {
+  std::string part;
+  std::istringstream parts(c.name);
+  while (std::getline(parts, part, '/'))
+    if (const std::string problem = fileNameProblem(part); !problem.empty())
+      r.error(SourceLoc{c.file, 1, 1, "case name"},
+              "'" + c.name + "' cannot name a results folder: '" + part + "' " + problem);
+}
+
+void parseTop(YamlReader& r, const YAML::Node& root, const std::vector<std::string>* catalog, Case& c) {
+  r.checkDuplicateKeys(root);
   if (!r.expectMap(root, "", {"rules", "description", "scene", "rays", "pipeline", "outputs"})) return;
-  if (r.require(root, "", "rules")) parseRules(r, YamlReader::get(root, "rules"), c.rules);
+  if (r.require(root, "", "rules")) parseRules(r, YamlReader::get(root, "rules"), catalog, c.rules);
   if (auto d = YamlReader::get(root, "description"); d.IsDefined())
     if (auto s = r.string(d, "description")) c.description = *s;
   if (auto s = YamlReader::get(root, "scene"); s.IsDefined() && !s.IsNull()) parseScene(r, s, c.scene);
@@ -47,36 +78,55 @@ void parseTop(YamlReader& r, const YAML::Node& root, Case& c) {
   const YAML::Node pipeline = YamlReader::get(root, "pipeline");
   parsePipeline(r, pipeline, c.pipeline);
   checkPrograms(r, c, pipeline);
+  if (r.errorCount() == 0) checkTraceConstants(r, c);
+  judgeStaticUndefined(r, c);
 }
 
 }  // namespace
 
-ParseResult parseCaseText(const std::string& yaml, const std::string& file_name, const std::string& name) {
+ParseResult parseCaseText(const std::string& yaml, const std::string& file_name, const std::string& name,
+                          const std::vector<std::string>* catalog) {
   ParseResult result;
   YamlReader r(file_name, result.errors);
   Case c;
   c.name = name;
   c.file = file_name;
   c.family = name.substr(0, name.find('/'));
+  checkCaseName(r, c);
+  auto at = [&](const YAML::Mark& m) {
+    return SourceLoc{file_name, m.line >= 0 ? m.line + 1 : 1, m.column >= 0 ? m.column + 1 : 1, ""};
+  };
+  YAML::Node root;
   try {
-    const YAML::Node root = YAML::Load(yaml);
-    if (!root.IsDefined() || root.IsNull()) {
-      r.error(SourceLoc{file_name, 1, 1, ""}, "empty case file");
-      return result;
-    }
-    parseTop(r, root, c);
+    root = YAML::Load(yaml);
   } catch (const YAML::Exception& e) {
-    SourceLoc loc{file_name, e.mark.line >= 0 ? e.mark.line + 1 : 0,
-                  e.mark.column >= 0 ? e.mark.column + 1 : 0, ""};
-    r.error(loc, e.msg.empty() ? std::string(e.what()) : "malformed YAML: " + e.msg);
-  } catch (const std::exception& e) {
-    r.error(SourceLoc{file_name, 0, 0, ""}, std::string("internal error while parsing: ") + e.what());
+    r.error(at(e.mark), "malformed YAML: " + (e.msg.empty() ? std::string(e.what()) : e.msg) +
+                            " (expected YAML syntax: `key: value` maps, `- item` or [a, b] lists)");
+    return result;
   }
+  if (!root.IsDefined() || root.IsNull()) {
+    r.error(SourceLoc{file_name, 1, 1, ""}, "empty case file (expected a map: rules, scene, rays, pipeline, outputs)");
+    return result;
+  }
+  try {
+    parseTop(r, root, catalog, c);
+  } catch (const YAML::Exception& e) {
+    // A value of a shape the reader did not expect (yaml-cpp throws on some):
+    // reported at the field being read.
+    SourceLoc loc = at(e.mark);
+    loc.field = r.lastField();
+    r.error(loc, "unexpected value (" + (e.msg.empty() ? std::string(e.what()) : e.msg) +
+                     "): see cases/README.md for what this field holds");
+  } catch (const std::exception& e) {
+    r.error(SourceLoc{file_name, 1, 1, r.lastField()}, std::string("internal error while parsing: ") + e.what());
+  }
+  result.undefined = r.undefinedBehaviour();
   if (result.errors.empty()) result.value = std::move(c);
   return result;
 }
 
-ParseResult parseCaseFile(const std::string& path, const std::string& cases_root) {
+ParseResult parseCaseFile(const std::string& path, const std::string& cases_root,
+                          const std::vector<std::string>* catalog) {
   namespace fs = std::filesystem;
   std::ifstream in(path, std::ios::binary);
   if (!in) {
@@ -90,7 +140,7 @@ ParseResult parseCaseFile(const std::string& path, const std::string& cases_root
   fs::path rel = fs::weakly_canonical(path, ec).lexically_relative(fs::weakly_canonical(cases_root, ec));
   if (rel.empty() || *rel.begin() == "..") rel = fs::path(path).filename();
   rel.replace_extension();
-  return parseCaseText(text.str(), path, rel.generic_string());
+  return parseCaseText(text.str(), path, rel.generic_string(), catalog);
 }
 
 }  // namespace rayspec

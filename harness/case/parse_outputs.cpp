@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "case/case_parts.h"
+#include "case/file_name.h"
 #include "results/record_layout.h"
 
 namespace rayspec {
@@ -32,7 +33,9 @@ std::optional<std::string> counterWithMode(YamlReader& r, const YAML::Node& n, c
     return std::nullopt;
   }
   const auto kv = n.begin();
-  const std::string name = kv->first.as<std::string>();
+  const auto key = r.string(kv->first, f);
+  if (!key) return std::nullopt;
+  const std::string& name = *key;
   auto mode = r.string(kv->second, f + "." + name);
   if (!mode) return std::nullopt;
   if (std::find(std::begin(kCounterModes), std::end(kCounterModes), *mode) == std::end(kCounterModes)) {
@@ -98,8 +101,9 @@ void parseOutputs(YamlReader& r, const YAML::Node& n, Outputs& o) {
     auto name = r.string(YamlReader::get(img, "name"), f + ".name");
     auto from = r.string(YamlReader::get(img, "from"), f + ".from");
     if (!name || !from) continue;
-    if (name->empty() || name->find_first_of("/\\ \t") != std::string::npos) {
-      r.error(YamlReader::get(img, "name"), f + ".name", "an image name is a plain name (no path)");
+    // It becomes a file name: NAME.raw, NAME.png, diff/NAME.png.
+    if (const std::string problem = fileNameProblem(*name); !problem.empty()) {
+      r.error(YamlReader::get(img, "name"), f + ".name", "image name '" + *name + "' " + problem);
       continue;
     }
     for (const ImageOutput& other : o.images)

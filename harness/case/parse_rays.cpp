@@ -1,4 +1,7 @@
 // rays: defaults, then exactly one of camera / grid / list.
+#include <cmath>
+#include <sstream>
+
 #include "case/camera_rays.h"
 #include "case/case_parts.h"
 #include "case/flag_names.h"
@@ -26,6 +29,40 @@ void parseRayFields(YamlReader& r, const YAML::Node& n, const std::string& field
     if (auto x = r.uint(v, f("sbt_stride"))) ray.sbt_stride = *x;
   if (auto v = get("miss"); v.IsDefined())
     if (auto x = r.uint(v, f("miss"))) ray.miss = *x;
+}
+
+std::string number(float v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+// R-UB: ray parameters whose behaviour is undefined (non-finite origin or
+// direction, NaN or negative tmin or tmax, tmin > tmax), noted at the field
+// written in n; values n does not write come from the defaults, checked there.
+void noteUndefinedRay(YamlReader& r, const YAML::Node& n, const std::string& field, const Ray& ray,
+                      bool with_origin) {
+  auto note = [&](const char* key, const std::string& what) {
+    const std::string f = field + "." + key;
+    r.undefinedBehaviour(r.loc(YamlReader::get(n, key), f), UndefinedReason::RayParameters,
+                         what + ": undefined behaviour (R-UB)");
+  };
+  if (with_origin) {
+    for (const char* key : {"origin", "direction"}) {
+      const Vec3& v = std::string(key) == "origin" ? ray.origin : ray.direction;
+      if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
+        note(key, std::string("the ray ") + key + " is not finite");
+    }
+  }
+  const bool own_tmin = YamlReader::has(n, "tmin"), own_tmax = YamlReader::has(n, "tmax");
+  const bool bad_tmin = own_tmin && !(ray.tmin >= 0), bad_tmax = own_tmax && !(ray.tmax >= 0);
+  auto negativeOrNan = [](const char* name, float v) {
+    return std::string(name) + (std::isnan(v) ? " is NaN" : " " + number(v) + " is negative");
+  };
+  if (bad_tmin) note("tmin", negativeOrNan("tmin", ray.tmin));
+  if (bad_tmax) note("tmax", negativeOrNan("tmax", ray.tmax));
+  if (!bad_tmin && !bad_tmax && (own_tmin || own_tmax) && ray.tmin > ray.tmax)
+    note(own_tmax ? "tmax" : "tmin", "tmax " + number(ray.tmax) + " is below tmin " + number(ray.tmin));
 }
 
 std::optional<std::array<uint32_t, 2>> parseSize(YamlReader& r, const YAML::Node& n,
@@ -123,8 +160,10 @@ void parseList(YamlReader& r, const YAML::Node& n, Rays& rays) {
         if (d) ray.direction[k] = static_cast<float>((*d)[k]);
       }
       parseRayFields(r, item, f, ray);
+      noteUndefinedRay(r, item, f, ray, true);
     }
     rays.rays.push_back(ray);
+    rays.list_locs.push_back(r.loc(item, f));
   }
   rays.width = static_cast<uint32_t>(rays.rays.size());
   rays.height = 1;
@@ -137,6 +176,8 @@ void parseRays(YamlReader& r, const YAML::Node& n, Rays& rays) {
                                "sbt_offset", "sbt_stride", "miss"}))
     return;
   parseRayFields(r, n, "rays", rays.defaults);
+  rays.defaults_loc = r.loc(n, "rays");
+  noteUndefinedRay(r, n, "rays", rays.defaults, false);
   const int forms = YamlReader::has(n, "camera") + YamlReader::has(n, "grid") + YamlReader::has(n, "list");
   if (forms != 1) {
     r.error(n, "rays", "exactly one of camera, grid or list is required");

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <map>
 
 namespace rayspec {
 
@@ -70,6 +71,7 @@ bool parseFloatText(const std::string& s, double& out, bool& finite) {
 }
 
 SourceLoc YamlReader::loc(const YAML::Node& n, const std::string& field) const {
+  last_field_ = field;
   SourceLoc l;
   l.file = file_;
   l.field = field;
@@ -94,6 +96,26 @@ void YamlReader::error(const SourceLoc& l, const std::string& message) {
   errors_.push_back({l, message});
 }
 
+void YamlReader::checkDuplicateKeys(const YAML::Node& n, const std::string& field) {
+  if (n.IsSequence()) {
+    for (size_t i = 0; i < n.size(); ++i) checkDuplicateKeys(n[i], field + "[" + std::to_string(i) + "]");
+    return;
+  }
+  if (!n.IsMap()) return;
+  std::map<std::string, int> first_line;
+  for (auto it = n.begin(); it != n.end(); ++it) {
+    const std::string key = it->first.IsScalar() ? it->first.Scalar() : std::string("?");
+    const std::string path = field.empty() ? key : field + "." + key;
+    if (it->first.IsScalar()) {
+      const SourceLoc at = loc(it->first, path);
+      if (const auto [seen, fresh] = first_line.emplace(key, at.line); !fresh)
+        error(at, "duplicate key '" + key + "' (first at line " + std::to_string(seen->second) +
+                      "); each key may appear once");
+    }
+    checkDuplicateKeys(it->second, path);
+  }
+}
+
 YAML::Node YamlReader::get(const YAML::Node& n, const char* key) {
   if (!n.IsMap()) return YAML::Node(YAML::NodeType::Undefined);
   for (auto it = n.begin(); it != n.end(); ++it)
@@ -105,6 +127,7 @@ bool YamlReader::has(const YAML::Node& n, const char* key) { return get(n, key).
 
 bool YamlReader::expectMap(const YAML::Node& n, const std::string& field,
                            std::initializer_list<const char*> allowed) {
+  last_field_ = field;
   if (!n.IsMap()) {
     error(n, field, "expected a map");
     return false;
@@ -124,6 +147,7 @@ bool YamlReader::expectMap(const YAML::Node& n, const std::string& field,
 }
 
 bool YamlReader::expectSeq(const YAML::Node& n, const std::string& field) {
+  last_field_ = field;
   if (!n.IsSequence()) {
     error(n, field, "expected a list");
     return false;
@@ -138,6 +162,7 @@ bool YamlReader::require(const YAML::Node& n, const std::string& field, const ch
 }
 
 std::optional<std::string> YamlReader::string(const YAML::Node& n, const std::string& field) {
+  last_field_ = field;
   if (!n.IsScalar()) {
     error(n, field, "expected a string");
     return std::nullopt;
@@ -146,6 +171,7 @@ std::optional<std::string> YamlReader::string(const YAML::Node& n, const std::st
 }
 
 std::optional<uint32_t> YamlReader::uint(const YAML::Node& n, const std::string& field, uint64_t max) {
+  last_field_ = field;
   uint64_t v = 0;
   if (!isPlainScalar(n) || !parseUintText(n.Scalar(), v)) {
     error(n, field, "expected an unsigned integer (decimal or 0x hex)");
@@ -163,6 +189,7 @@ std::optional<uint32_t> YamlReader::uint(const YAML::Node& n, const std::string&
 
 std::optional<double> YamlReader::number(const YAML::Node& n, const std::string& field,
                                          bool allow_nonfinite) {
+  last_field_ = field;
   double v = 0;
   bool finite = true;
   uint64_t u = 0;
@@ -180,6 +207,7 @@ std::optional<double> YamlReader::number(const YAML::Node& n, const std::string&
 
 std::optional<uint32_t> YamlReader::flags(const YAML::Node& n, const std::string& field,
                                           const std::vector<std::pair<const char*, uint32_t>>& table) {
+  last_field_ = field;
   if (!expectSeq(n, field)) return std::nullopt;
   uint32_t bits = 0;
   bool ok = true;

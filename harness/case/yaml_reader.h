@@ -28,6 +28,14 @@ class YamlReader {
   void error(const YAML::Node& n, const std::string& field, const std::string& message);
   void error(const SourceLoc& loc, const std::string& message);
 
+  // Every map of the document names each key once: yaml-cpp keeps both of a
+  // duplicate pair and a lookup would silently take one. Each second key is
+  // an error at its line:col with its key path.
+  void checkDuplicateKeys(const YAML::Node& n, const std::string& field = "");
+
+  // The field read last: where an exception from yaml-cpp is reported.
+  const std::string& lastField() const { return last_field_; }
+
   // The value of `key` in map n, or an undefined node.
   static YAML::Node get(const YAML::Node& n, const char* key);
   static bool has(const YAML::Node& n, const char* key);
@@ -67,12 +75,21 @@ class YamlReader {
   std::optional<uint32_t> flags(const YAML::Node& n, const std::string& field,
                                 const std::vector<std::pair<const char*, uint32_t>>& table);
 
- // Programs that failed to parse (by field), so they are not type-checked too.
+ // Undefined behaviour found where the values are constants (R-UB); the
+  // caller decides (parse_case.cpp): an error, or kept in a robustness probe.
+  void undefinedBehaviour(const SourceLoc& loc, UndefinedReason reason, const std::string& message) {
+    undefined_.push_back({reason, loc, message});
+  }
+  const std::vector<StaticUndefined>& undefinedBehaviour() const { return undefined_; }
+
+  // Programs that failed to parse (by field), so they are not type-checked too.
   void markBadProgram(const std::string& field) { bad_programs_.insert(field); }
   bool isBadProgram(const std::string& field) const { return bad_programs_.count(field) > 0; }
 
  private:
+  std::vector<StaticUndefined> undefined_;
   std::set<std::string> bad_programs_;
+  mutable std::string last_field_;
   std::string file_;
   std::vector<CaseError>& errors_;
 };

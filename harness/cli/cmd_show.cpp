@@ -9,6 +9,7 @@
 #include "plan/plan.h"
 #include "program/builtins.h"
 #include "program/ops.h"
+#include "report/rule_catalog.h"
 
 namespace rayspec {
 namespace {
@@ -20,6 +21,18 @@ void printVocabulary() {
   std::printf("\nOperators (name, arguments, meaning):\n");
   for (const OpInfo& o : ops())
     std::printf("  %-20s %d..%d  %s\n", o.name, o.min_args, o.max_args, o.meaning);
+}
+
+const char* const kRulesFile = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
+
+// The case file a `show` argument names: a path to a file, or a case name
+// under cases_dir (anyhit/ignore-odd-primitives); empty when neither exists.
+std::string caseFilePath(const std::string& given, const std::string& cases_dir) {
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(given, ec)) return given;
+  const std::string named = cases_dir + "/" + given + ".yaml";
+  if (std::filesystem::is_regular_file(named, ec)) return named;
+  return {};
 }
 
 void printShader(const GeneratedShader& s) {
@@ -37,10 +50,18 @@ int runShow(const ShowOptions& opt) {
     std::fprintf(stderr, "rayspec show: give a case file or name\n");
     return 2;
   }
-  std::string path = opt.case_file;
-  if (!std::filesystem::exists(path)) path = opt.cases_dir + "/" + opt.case_file + ".yaml";
+  const std::string path = caseFilePath(opt.case_file, opt.cases_dir);
+  if (path.empty()) {
+    std::fprintf(stderr, "rayspec show: no such case file: '%s' (neither a file nor a case name under %s)\n",
+                 opt.case_file.c_str(), opt.cases_dir.c_str());
+    return 2;
+  }
   const CaseFile file = caseFileFor(path, opt.cases_dir);
-  ParseResult parsed = parseCaseFile(file.path, opt.cases_dir);
+  // Rule labels outside the catalog are errors, as in `rayspec run`.
+  std::string catalog_error;
+  const std::vector<std::string> catalog = ruleLabels(loadRuleCatalog(kRulesFile, &catalog_error));
+  if (!catalog_error.empty()) std::fprintf(stderr, "rayspec show: %s (rule labels not checked)\n", catalog_error.c_str());
+  ParseResult parsed = parseCaseFile(file.path, opt.cases_dir, catalog_error.empty() ? &catalog : nullptr);
   for (const CaseError& e : parsed.errors) std::fprintf(stderr, "%s\n", e.format().c_str());
   if (!parsed.value) return 1;
   const Case& c = *parsed.value;

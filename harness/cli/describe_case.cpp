@@ -70,6 +70,13 @@ std::string describeCase(const Case& c) {
   describeRecords(s, "miss", p.sbt_miss);
   describeRecords(s, "hit", p.sbt_hit);
   describeRecords(s, "callable", p.sbt_callable);
+  if (!c.static_undefined.empty()) {
+    // A robustness probe (R-UB): what it does that is undefined, found by the parser.
+    s << "Undefined behaviour (R-UB probe: only survival is checked):\n";
+    for (const StaticUndefined& u : c.static_undefined)
+      s << "  " << u.loc.file << ':' << u.loc.line << ':' << u.loc.column << ": " << u.loc.field << ": "
+        << u.message << " [" << undefinedReasonName(u.reason) << "]\n";
+  }
   return s.str();
 }
 

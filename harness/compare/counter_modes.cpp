@@ -1,6 +1,6 @@
 #include "compare/counter_modes.h"
 
-#include "plan/walk_program.h"
+#include "program/walk_program.h"
 
 namespace rayspec {
 

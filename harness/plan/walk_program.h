@@ -1,13 +1,5 @@
-// Visits every statement and expression of a program, nested ones included.
+// The program walker moved to program/walk_program.h (the case checks use it
+// too); this name stays for the modules that include it from here.
 #pragma once
 
-#include <functional>
-
-#include "program/program.h"
-
-namespace rayspec {
-
-void walkStatements(const Program& p, const std::function<void(const Stmt&)>& visit);
-void walkExpressions(const Program& p, const std::function<void(const Expr&)>& visit);
-
-}  // namespace rayspec
+#include "program/walk_program.h"

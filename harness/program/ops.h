@@ -21,8 +21,9 @@ struct OpInfo {
 // Ops:
 //   add, sub, mul, div    numeric; both args the same type, or a Float scalar
 //                         with a vector (either side). Uint div truncates; Uint
-//                         div by 0 is a case error only when both are literals.
-//   mod                   Uint % Uint
+//                         div by a constant 0 (program/constant_value.h) is a
+//                         case error; by a dynamic 0, undefined (the model says so).
+//   mod                   Uint % Uint (by a constant 0: a case error)
 //   min, max              same numeric type
 //   eq, ne, lt, le, gt, ge -> Bool; args the same scalar type
 //   and, or (2+ Bool args), not (1 Bool)

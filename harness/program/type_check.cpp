@@ -6,6 +6,7 @@
 
 #include "program/builtins.h"
 #include "program/check_expr.h"
+#include "program/constant_value.h"
 #include "program/ops.h"
 
 namespace rayspec {
@@ -83,14 +84,14 @@ std::optional<ProgramError> checkOp(Expr& e, Stage stage, const OpInfo& op) {
     } else {
       return bad("need the same numeric type, or a Float with a vector");
     }
-    if (name == "div" && e.type == ValueType::Uint && isUintLiteral(a[0]) &&
-        isUintLiteral(a[1]) && a[1].literal[0] == 0)
-      return err(e, "operator 'div': Uint division by zero");
+    if (name == "div" && e.type == ValueType::Uint && constantUint(a[1]) == 0u)
+      return err(e, "operator 'div': Uint division by a constant zero (undefined behaviour, R-UB)");
     return std::nullopt;
   }
   if (name == "mod") {
     if (a[0].type != ValueType::Uint || a[1].type != ValueType::Uint) return bad("need Uint, Uint");
-    if (isUintLiteral(a[1]) && a[1].literal[0] == 0) return err(e, "operator 'mod': modulo by zero");
+    if (constantUint(a[1]) == 0u)
+      return err(e, "operator 'mod': Uint modulo by a constant zero (undefined behaviour, R-UB)");
     e.type = ValueType::Uint;
     return std::nullopt;
   }

@@ -13,8 +13,13 @@ struct Rule {
   std::string label, title;
 };
 
-// Reads the catalog; error set when the file is missing or malformed.
+// Reads the catalog; error set when the file is missing or malformed
+// ("FILE:LINE:COL: LABEL: what was expected").
 std::vector<Rule> loadRuleCatalog(const std::string& path, std::string* error);
+
+// The labels of the catalog, for the case parser (case/parse_case.h), which
+// reports a label outside it at its line:col.
+std::vector<std::string> ruleLabels(const std::vector<Rule>& catalog);
 
 // rule label -> case names, for every rule of the catalog (empty = uncovered),
 // plus labels the cases use that the catalog lacks.

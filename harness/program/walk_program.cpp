@@ -1,4 +1,4 @@
-#include "plan/walk_program.h"
+#include "program/walk_program.h"
 
 namespace rayspec {
 namespace {

@@ -1,0 +1,22 @@
+#include "case/file_name.h"
+
+#include <algorithm>
+
+namespace rayspec {
+
+std::string fileNameProblem(const std::string& name) {
+  if (name.empty()) return "is empty";
+  if (name.size() > kMaxFileName)
+    return "is " + std::to_string(name.size()) + " bytes long (at most " + std::to_string(kMaxFileName) + ")";
+  if (name == "." || name == "..") return "may not be '" + name + "'";
+  const auto bad = std::find_if(name.begin(), name.end(), [](char ch) {
+    return !((ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '-' ||
+             ch == '_' || ch == '.');
+  });
+  if (bad == name.end()) return {};
+  const unsigned char ch = static_cast<unsigned char>(*bad);
+  const std::string shown = ch >= 0x21 && ch < 0x7F ? std::string("'") + *bad + "'" : "byte " + std::to_string(ch);
+  return "holds " + shown + " (only letters, digits, '-', '_' and '.')";
+}
+
+}  // namespace rayspec

@@ -1,0 +1,13 @@
+// Visits every statement and expression of a program, nested ones included.
+#pragma once
+
+#include <functional>
+
+#include "program/program.h"
+
+namespace rayspec {
+
+void walkStatements(const Program& p, const std::function<void(const Stmt&)>& visit);
+void walkExpressions(const Program& p, const std::function<void(const Expr&)>& visit);
+
+}  // namespace rayspec
