@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "compare/compare_results.h"
+#include "compare_samples.h"
 #include "compare/counter_modes.h"
 #include "compare/image_pair.h"
 #include "compare/shared_edge.h"
@@ -12,72 +13,6 @@
 
 namespace rayspec {
 namespace {
-
-Stmt count(const std::string& name) {
-  Stmt s;
-  s.kind = Stmt::Kind::Count;
-  s.counter = name;
-  return s;
-}
-
-// A case with a miss, a closest-hit and an any-hit counter; 4 rays.
-Case sampleCase() {
-  Case c;
-  c.pipeline.miss.push_back({count("miss")});
-  HitGroup g;
-  g.closest_hit = Program{count("chit")};
-  g.any_hit = Program{count("ahit")};
-  c.pipeline.hit_groups.push_back(g);
-  c.outputs.counters = {"miss", "chit", "ahit"};
-  c.outputs.per_ray = {"hit", "primitive_id", "hit_t"};
-  return c;
-}
-
-Plan samplePlan(const Case& c) {
-  Plan p;
-  p.counters = c.outputs.counters;
-  p.record_fields = c.outputs.per_ray;
-  p.records = true;
-  return p;
-}
-
-void setUint(Results& r, uint32_t ray, const char* field, uint32_t v) {
-  const RecordField* f = findRecordField(field);
-  uint32_t* rec = &r.records[ray * recordWords()];
-  rec[f->offset] = v;
-  if (!f->automatic) rec[kRecordWrittenMaskWord] |= 1u << recordFieldIndex(field);
-}
-
-void setFloat(Results& r, uint32_t ray, const char* field, float v) {
-  uint32_t w;
-  std::memcpy(&w, &v, 4);
-  setUint(r, ray, field, w);
-}
-
-// Rays 0,1 hit primitives 0,1 at t=2; rays 2,3 miss.
-Results sampleResults(const std::string& backend) {
-  Results r;
-  r.backend = backend;
-  r.width = 4;
-  r.height = 1;
-  r.records.assign(4 * recordWords(), 0);
-  for (uint32_t i = 0; i < 4; ++i) {
-    setUint(r, i, "raygen_runs", 1);
-    if (i < 2) {
-      setUint(r, i, "hit", 1);
-      setUint(r, i, "primitive_id", i);
-      setFloat(r, i, "hit_t", 2.0f);
-      setUint(r, i, "closest_hit_runs", 1);
-      setUint(r, i, "any_hit_runs", 1);
-    } else {
-      setUint(r, i, "hit", 0);
-      setUint(r, i, "miss_runs", 1);
-    }
-  }
-  r.counters = {{"miss", 2}, {"chit", 2}, {"ahit", 2}};
-  r.images.push_back({"primitive", "primitive_id", 4, 1, 1, false, {0, 1, 0, 0}});
-  return r;
-}
 
 TEST(CounterModes, TraversalDependentStagesAreInformational) {
   const auto modes = counterModes(sampleCase());

@@ -20,7 +20,8 @@ bool allNoDuplicateTriangles(const Case& c) {
 
 }  // namespace
 
-void compareAnyHitRuns(const Case& c, const Results& device, const Results& model, Verdict& v) {
+void compareAnyHitRuns(const Case& c, const Results& device, const Results& model,
+                       const std::set<uint32_t>& undefined, Verdict& v) {
   if (!allNoDuplicateTriangles(c) || device.records.size() != model.records.size()) return;
   const uint32_t words = recordWords();
   const uint32_t ahit = findRecordField("any_hit_runs")->offset, chit = findRecordField("closest_hit_runs")->offset,
@@ -41,7 +42,7 @@ void compareAnyHitRuns(const Case& c, const Results& device, const Results& mode
   for (size_t i = 0; i < device.records.size() / words; ++i) {
     const uint32_t* d = &device.records[i * words];
     const uint32_t* m = &model.records[i * words];
-    if (m[chit] != 0 || m[isect] != 0) continue;
+    if (m[chit] != 0 || m[isect] != 0 || undefined.count(static_cast<uint32_t>(i))) continue;
     if (const auto it = ambiguous.find(static_cast<uint32_t>(i)); it != ambiguous.end()) {
       const RayAmbiguity& a = *it->second;
       const uint32_t k = static_cast<uint32_t>(a.shared_triangles.size());

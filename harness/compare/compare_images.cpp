@@ -6,9 +6,10 @@
 namespace rayspec {
 
 // Each kept image against the model's, the pixels of numerically ambiguous
-// rays excluded (their legal answers differ by design); see image_pair.h. The
+// rays (their legal answers differ by design) and of rays with undefined
+// behaviour (R-UB: never judged) excluded; see image_pair.h. The
 // case's thresholds per image: a tolerance scale and the failing pixels allowed.
-void compareImages(const Plan& plan, const Results& device, const Results& model, const std::set<uint32_t>& ambiguous,
+void compareImages(const Plan& plan, const Results& device, const Results& model, const std::set<uint32_t>& masked,
                    Verdict& v) {
   for (const Image& di : device.images) {
     ImageOutput thresholds;
@@ -22,7 +23,7 @@ void compareImages(const Plan& plan, const Results& device, const Results& model
       v.add({Status::Fail, "image", "image '" + di.name + "' missing or of another size in the model", {}, 1});
       continue;
     }
-    const PixelCount count = countFailingPixels(prepareImagePair(di, *mi, ambiguous, thresholds.tolerance));
+    const PixelCount count = countFailingPixels(prepareImagePair(di, *mi, masked, thresholds.tolerance));
     if (!count.failing) continue;
     std::ostringstream s;
     s << "image '" << di.name << "' differs from the model in " << count.failing << " pixels";

@@ -7,14 +7,20 @@
 
 namespace rayspec {
 
+// undefined_rays: how many rays the model found undefined (R-UB); the counters
+// they may have moved (counter_modes.h) are then informational.
 void compareCounters(const Case& c, const Results& device, const Results& model, size_t ambiguous_rays,
-                     Verdict& v);
-void compareRecords(const Case& c, const Plan& plan, const Results& device, const Results& model, Verdict& v);
+                     size_t undefined_rays, Verdict& v);
+// `undefined`: rays left out (R-UB), as in compareAnyHitRuns.
+void compareRecords(const Case& c, const Plan& plan, const Results& device, const Results& model,
+                    const std::set<uint32_t>& undefined, Verdict& v);
 // R-AHIT-DUP: with every geometry NO_DUPLICATE_ANY_HIT (triangles), a ray on
 // which the model committed no hit ran any-hit once on every primitive it
 // crosses: the device may run it at most that often on the ray.
-void compareAnyHitRuns(const Case& c, const Results& device, const Results& model, Verdict& v);
-void compareImages(const Plan& plan, const Results& device, const Results& model, const std::set<uint32_t>& ambiguous_rays,
+void compareAnyHitRuns(const Case& c, const Results& device, const Results& model,
+                       const std::set<uint32_t>& undefined, Verdict& v);
+// masked: the pixels of ambiguous and of undefined rays, left out.
+void compareImages(const Plan& plan, const Results& device, const Results& model, const std::set<uint32_t>& masked,
                    Verdict& v);
 
 // Collects the rays breaking one rule into one finding.

@@ -1,5 +1,5 @@
 #include <algorithm>
-#include <cstring>
+#include <bit>
 #include <map>
 
 #include "compare/compare_parts.h"
@@ -33,11 +33,7 @@ std::string fieldRule(const std::string& field) {
   return it == rules.end() ? "R-BUILTIN" : it->second;
 }
 
-float asFloat(uint32_t w) {
-  float f;
-  std::memcpy(&f, &w, 4);
-  return f;
-}
+float asFloat(uint32_t w) { return std::bit_cast<float>(w); }
 
 bool written(const uint32_t* rec, int field_index) { return (rec[kRecordWrittenMaskWord] >> field_index) & 1u; }
 
@@ -86,7 +82,8 @@ void checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
 
 }  // namespace
 
-void compareRecords(const Case& c, const Plan& plan, const Results& device, const Results& model, Verdict& v) {
+void compareRecords(const Case& c, const Plan& plan, const Results& device, const Results& model,
+                    const std::set<uint32_t>& undefined, Verdict& v) {
   const uint32_t words = recordWords();
   const size_t rays = device.records.size() / words;
   std::map<uint32_t, const RayAmbiguity*> ambiguous;
@@ -111,6 +108,7 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
     const uint32_t* d = &device.records[i * words];
     const uint32_t* m = &model.records[i * words];
     const uint32_t ray = static_cast<uint32_t>(i);
+    if (undefined.count(ray)) continue;  // R-UB: never judged
     if (const auto it = ambiguous.find(ray); it != ambiguous.end()) {
       checkAmbiguous(c, *it->second, d, wrongs, leak);
       continue;

@@ -3,6 +3,7 @@
 #include <set>
 
 #include "compare/compare_parts.h"
+#include "compare/undefined_behaviour.h"
 
 namespace rayspec {
 
@@ -23,6 +24,8 @@ Verdict backendVerdict(const Results& r) {
 
 Verdict compareResults(const Case& c, const Plan& plan, const Results& device, const Results& model) {
   Verdict v = backendVerdict(device);
+  // R-UB first: it decides whether anything is judged at all.
+  if (!judgeUndefinedBehaviour(c, device, model, v)) return v;
   if (v.status != Status::Pass) return v;
   const Verdict model_verdict = backendVerdict(model);
   if (model_verdict.status != Status::Pass) {
@@ -46,12 +49,17 @@ Verdict compareResults(const Case& c, const Plan& plan, const Results& device, c
     v.add(f);
     return v;
   }
-  std::set<uint32_t> ambiguous;
+  // Rays left out of every per-ray comparison: the ambiguous ones are checked
+  // against their legal answers instead; the undefined ones (R-UB) not at all.
+  std::set<uint32_t> ambiguous, undefined;
   for (const RayAmbiguity& a : model.ambiguous) ambiguous.insert(a.ray);
-  compareCounters(c, device, model, ambiguous.size(), v);
-  compareRecords(c, plan, device, model, v);
-  compareAnyHitRuns(c, device, model, v);
-  compareImages(plan, device, model, ambiguous, v);
+  for (const UndefinedRay& u : model.undefined) undefined.insert(u.ray);
+  std::set<uint32_t> masked = ambiguous;
+  masked.insert(undefined.begin(), undefined.end());
+  compareCounters(c, device, model, ambiguous.size(), undefined.size(), v);
+  compareRecords(c, plan, device, model, undefined, v);
+  compareAnyHitRuns(c, device, model, undefined, v);
+  compareImages(plan, device, model, masked, v);
   return v;
 }
 

@@ -36,4 +36,29 @@ std::map<std::string, CounterMode> counterModes(const Case& c) {
   return modes;
 }
 
+std::set<std::string> countersUndefinedRaysMayMove(const Case& c) {
+  std::set<std::string> moved;
+  auto every = [&](const Program& p) {
+    walkStatements(p, [&](const Stmt& s) {
+      if (s.kind == Stmt::Kind::Count) moved.insert(s.counter);
+    });
+  };
+  const Pipeline& pipe = c.pipeline;
+  for (const Program& p : pipe.miss) every(p);
+  for (const Program& p : pipe.callables) every(p);
+  for (const HitGroup& g : pipe.hit_groups)
+    for (const auto* p : {&g.closest_hit, &g.any_hit, &g.intersection})
+      if (*p) every(**p);
+  bool after_undefined = false;  // in program order: a statement where a ray's behaviour may be undefined came first
+  walkStatements(pipe.raygen, [&](const Stmt& s) {
+    if (s.kind == Stmt::Kind::Count && after_undefined) moved.insert(s.counter);
+    if (s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::Call) after_undefined = true;
+    walkOwnExpressions(s, [&](const Expr& e) {
+      if (e.kind == Expr::Kind::Op && e.type == ValueType::Uint && (e.name == "div" || e.name == "mod"))
+        after_undefined = true;
+    });
+  });
+  return moved;
+}
+
 }  // namespace rayspec

@@ -24,6 +24,7 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <string>
 
 #include "case/case.h"
@@ -34,5 +35,12 @@ enum class CounterMode { Exact, AtLeast, AtMost, Informational };
 const char* counterModeName(CounterMode m);
 
 std::map<std::string, CounterMode> counterModes(const Case& c);
+
+// The counters a ray with undefined behaviour (R-UB) may have moved: every
+// counter a stage other than raygen counts, and a raygen count that comes
+// after a trace, a call or a division (where the undefined behaviour can
+// happen). Only a raygen count before all of those is safe. With undefined
+// rays in a launch these are informational.
+std::set<std::string> countersUndefinedRaysMayMove(const Case& c);
 
 }  // namespace rayspec

@@ -1,8 +1,8 @@
 #include "compare/image_pair.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
-#include <cstring>
 
 #include "compare/compare_results.h"
 #include "results/tolerances.h"
@@ -27,9 +27,7 @@ ImagePair prepareImagePair(const Image& d, const Image& m, const std::set<uint32
         p.difference[i] = 2.0f;
         continue;
       }
-      float fa, fb;
-      std::memcpy(&fa, &a, 4);
-      std::memcpy(&fb, &b, 4);
+      const float fa = std::bit_cast<float>(a), fb = std::bit_cast<float>(b);
       if (std::isnan(fa) || std::isnan(fb)) {
         p.difference[i] = std::isnan(fa) && std::isnan(fb) ? 0.0f : 1e30f;
         continue;

@@ -1,6 +1,7 @@
 // A device image and the model's, prepared once for counting failing pixels
 // (internal to compare/). The masking and the tolerance live here only:
-//   - pixels of numerically ambiguous rays are excluded (difference 0);
+//   - pixels of numerically ambiguous rays, and of rays with undefined
+//     behaviour (R-UB), are excluded (difference 0);
 //   - Uint images: 1 where the texels differ, else 0 (ids compare exactly);
 //   - Float images: (device - model) / allowance per channel, the allowance
 //     being the field's tolerance (abs + rel * max(|model|, 1)) times the

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "results/results.h"
+
 namespace rayspec {
 
 // Stable names: baselines and results.csv refer to them. CaseError: the case
@@ -31,9 +33,19 @@ struct Finding {
   uint32_t ray_count = 0;          // how many rays broke it in all
 };
 
+// The rays of one reason whose behaviour the model found undefined (R-UB):
+// never judged, reported apart from the findings.
+struct UndefinedRays {
+  UndefinedReason reason = UndefinedReason::RayParameters;
+  uint32_t ray_count = 0;
+  std::vector<uint32_t> rays;      // first rays (launch index)
+  std::string what;                // the first ray's: names the case field
+};
+
 struct Verdict {
   Status status = Status::Pass;
   std::vector<Finding> findings;   // Pass findings are informational notes
+  std::vector<UndefinedRays> undefined;  // by reason, in reason order
   void add(Finding f);
   // One line: "Fail: R-IGNORE: ... (rays 3, 17, ...)" of the worst finding.
   std::string headline() const;

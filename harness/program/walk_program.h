@@ -9,5 +9,7 @@ namespace rayspec {
 
 void walkStatements(const Program& p, const std::function<void(const Stmt&)>& visit);
 void walkExpressions(const Program& p, const std::function<void(const Expr&)>& visit);
+// The expressions of s itself (not of the statements nested in it).
+void walkOwnExpressions(const Stmt& s, const std::function<void(const Expr&)>& visit);
 
 }  // namespace rayspec
