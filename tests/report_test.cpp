@@ -5,7 +5,10 @@
 #include <regex>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "report/baseline.h"
+#include "report/rule_catalog.h"
 #include "report/run_summary.h"
 #include "report/write_reports.h"
 
@@ -59,6 +62,83 @@ TEST(Reports, HtmlPutsFailingCasesFirstEscapesAndCarriesItsSelfCheck) {
   EXPECT_EQ(html.find("<odd>"), std::string::npos);
   EXPECT_NE(html.find("brokenImages"), std::string::npos) << "the self-check a headless browser reads";
   EXPECT_NE(html.find("<td>primitive_id</td><td>3</td><td>2</td>"), std::string::npos);
+}
+
+// A probe whose undefined rays the device survived, and a case at fault itself.
+std::vector<CaseOutcome> outcomesWithUndefinedBehaviour() {
+  std::vector<CaseOutcome> v = outcomes();
+  CaseOutcome probe;
+  probe.name = "robustness/probe";
+  probe.verdict.undefined.push_back({UndefinedReason::RayParameters, 3, {0, 4, 7}, "rays.list[0].tmin: NaN <tmin>"});
+  probe.verdict.add({Status::Pass, "R-UB", "R-UB probe: the device survived undefined behaviour: 3 rays", {0, 4, 7}, 3});
+  probe.headline = probe.verdict.headline();
+  CaseOutcome broken;
+  broken.name = "builtins/broken";
+  broken.verdict.undefined.push_back(
+      {UndefinedReason::HitRecordOutOfRange, 2, {5, 6}, "pipeline.raygen[0].trace: hit record 1 of 1"});
+  broken.verdict.add({Status::CaseError, "R-UB", "the case has undefined behaviour: 2 rays", {5, 6}, 2});
+  broken.status = broken.verdict.status;
+  broken.headline = broken.verdict.headline();
+  v.insert(v.begin(), broken);
+  v.push_back(probe);
+  return v;
+}
+
+TEST(Reports, CaseErrorIsFailInResultsCsvAndAFailureInJunit) {
+  const std::string dir = ::testing::TempDir() + "/rayspec-report-test-case-error";
+  ASSERT_EQ(writeReports(outcomesWithUndefinedBehaviour(), RunInfo{}, dir), "");
+  const std::string csv = slurp(dir + "/results.csv");
+  EXPECT_NE(csv.find("builtins/broken,Fail,"), std::string::npos) << csv;
+  const std::string junit = slurp(dir + "/junit.xml");
+  const size_t at = junit.find("name=\"builtins/broken\"");
+  ASSERT_NE(at, std::string::npos);
+  EXPECT_LT(junit.find("<failure type=\"CaseError\"", at), junit.find("</testcase>", at)) << junit;
+  EXPECT_NE(junit.find("failures=\"3\""), std::string::npos) << "Fail, QualityWarning and CaseError";
+}
+
+TEST(Reports, CaseErrorsAreGroupedApartInHtmlTextAndJson) {
+  const std::string dir = ::testing::TempDir() + "/rayspec-report-test-case-error-groups";
+  ASSERT_EQ(writeReports(outcomesWithUndefinedBehaviour(), RunInfo{}, dir), "");
+  const std::string html = slurp(dir + "/report.html");
+  const size_t failing = html.find("<h2>Failing cases</h2>"), errors = html.find("<h2>Case errors</h2>"),
+               others = html.find("<h2>Other cases</h2>"), broken = html.find("id=\"builtins/broken\"");
+  ASSERT_NE(errors, std::string::npos);
+  EXPECT_LT(failing, errors);
+  EXPECT_LT(html.find("id=\"anyhit/failing\""), errors) << "device failures first";
+  EXPECT_LT(errors, broken);
+  EXPECT_LT(broken, others);
+  const std::string text = slurp(dir + "/summary.txt");
+  EXPECT_LT(text.find("results/passing:"), text.find("Case errors")) << text;
+  EXPECT_LT(text.find("Case errors"), text.find("builtins/broken:")) << text;
+  const nlohmann::json j = nlohmann::json::parse(slurp(dir + "/summary.json"));
+  EXPECT_EQ(j["case_errors"], nlohmann::json::array({"builtins/broken"}));
+  EXPECT_EQ(j["counts"]["CaseError"], 1);
+}
+
+TEST(Reports, UndefinedRaysAreShownPerCaseApartFromTheFindings) {
+  const std::string dir = ::testing::TempDir() + "/rayspec-report-test-undefined";
+  ASSERT_EQ(writeReports(outcomesWithUndefinedBehaviour(), RunInfo{}, dir), "");
+  const std::string html = slurp(dir + "/report.html");
+  const size_t probe = html.find("id=\"robustness/probe\"");
+  const size_t table = html.find("<table class=\"undefined\">", probe);
+  ASSERT_NE(table, std::string::npos);
+  EXPECT_NE(html.find("<td>ray-parameters</td><td>3</td><td>0 4 7 </td><td>rays.list[0].tmin: NaN &lt;tmin&gt;</td>",
+                      table),
+            std::string::npos)
+      << html.substr(table, 400);
+  const std::string text = slurp(dir + "/summary.txt");
+  EXPECT_NE(text.find("undefined (R-UB, not judged): ray-parameters, 3 rays; first: 0 4 7; rays.list[0].tmin"),
+            std::string::npos)
+      << text;
+  const nlohmann::json j = nlohmann::json::parse(slurp(dir + "/summary.json"));
+  for (const auto& c : j["cases"]) {
+    if (c["name"] != "robustness/probe") continue;
+    ASSERT_EQ(c["undefined"].size(), 1u);
+    EXPECT_EQ(c["undefined"][0]["reason"], "ray-parameters");
+    EXPECT_EQ(c["undefined"][0]["ray_count"], 3);
+    EXPECT_EQ(c["undefined"][0]["rays"], nlohmann::json::array({0, 4, 7}));
+    EXPECT_EQ(c["status"], "Pass");
+  }
 }
 
 }  // namespace
@@ -121,6 +201,45 @@ TEST(Baseline, MalformedLineNamesFileAndLine) {
   std::string error;
   loadBaseline(writeTemp("baseline3.csv", "fam/a,Fail\nfam/b,Broken\n"), &error);
   EXPECT_NE(error.find("baseline3.csv:2:"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace rayspec
+
+namespace rayspec {
+namespace {
+
+TEST(RunSummary, CaseErrorsAreListedApartFromTheDevicesFailures) {
+  RunSummary summary(4);
+  testing::internal::CaptureStdout();
+  for (const CaseOutcome& o : outcomesWithUndefinedBehaviour()) summary.add(o);
+  summary.print();
+  const std::string out = testing::internal::GetCapturedStdout();
+  const size_t not_passing = out.find("Not passing:"), errors = out.find("Case errors");
+  ASSERT_NE(errors, std::string::npos) << out;
+  EXPECT_LT(not_passing, out.find("  anyhit/failing", not_passing));
+  EXPECT_LT(out.find("  anyhit/failing", not_passing), errors);
+  EXPECT_NE(out.find("  builtins/broken", errors), std::string::npos) << out;
+  EXPECT_EQ(out.find("  builtins/broken", not_passing), out.find("  builtins/broken", errors)) << out;
+  EXPECT_TRUE(summary.failed()) << "a case error fails the run";
+}
+
+TEST(RuleCatalog, ErrorsNameFileLineAndWhatWasExpected) {
+  std::string error;
+  EXPECT_TRUE(loadRuleCatalog(testing::TempDir() + "/no-such-catalog.yaml", &error).empty());
+  EXPECT_NE(error.find("no such rule catalog"), std::string::npos) << error;
+  EXPECT_EQ(error.find("bad file"), std::string::npos) << error;
+  const std::string path = testing::TempDir() + "/catalog-bad-title.yaml";
+  std::ofstream(path) << "R-ONE: fine\nR-TWO: [not, a, title]\n";
+  error.clear();
+  loadRuleCatalog(path, &error);
+  EXPECT_EQ(error.rfind(path + ":2:8: R-TWO: expected the rule's title", 0), 0u) << error;
+  EXPECT_EQ(error.find("bad conversion"), std::string::npos) << error;
+  std::ofstream(path) << "R-ONE: first\nR-TWO: second\n";
+  error.clear();
+  const std::vector<Rule> rules = loadRuleCatalog(path, &error);
+  EXPECT_EQ(error, "");
+  EXPECT_EQ(ruleLabels(rules), (std::vector<std::string>{"R-ONE", "R-TWO"}));
 }
 
 }  // namespace

@@ -14,6 +14,7 @@ namespace {
 const char* kStyle = R"(body{font-family:sans-serif;margin:1.5em;color:#222}
 table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding:2px 6px;font-size:13px}
 .Pass{color:#1a7f37}.Fail,.Crash,.Timeout{color:#cf222e;font-weight:bold}.QualityWarning{color:#9a6700}
+.CaseError{color:#8250df;font-weight:bold}.undefined{background:#f6f0ff}
 .NotSupported{color:#57606a}.case{border:1px solid #ddd;padding:.5em 1em;margin:1em 0}
 .images figure{display:inline-block;margin:0 1em 0 0}.images img{image-rendering:pixelated;width:256px;border:1px solid #999}
 .uncovered{color:#cf222e}#passing.hidden{display:none})";
@@ -33,7 +34,24 @@ if(i.complete&&i.naturalWidth>0)ok++;else broken.push(i.getAttribute('src'));});
 var b=document.body.dataset;b.images=ok;b.brokenImages=broken.length;b.brokenList=broken.join(' ');
 b.scriptErrors=window.rayspecErrors;b.checked='1';});)";
 
-bool failing(const CaseOutcome& o) { return o.status != Status::Pass && o.status != Status::NotSupported; }
+// The groups of the page: the device's failures first, then the cases at fault
+// themselves (CaseError), then the rest.
+bool failing(const CaseOutcome& o) {
+  return o.status != Status::Pass && o.status != Status::NotSupported && o.status != Status::CaseError;
+}
+
+// Rays whose behaviour is undefined (R-UB), apart from the findings: never judged.
+void undefinedTable(std::ostream& out, const CaseOutcome& o) {
+  if (o.verdict.undefined.empty()) return;
+  out << "<table class=\"undefined\"><tr><th colspan=\"4\">rays with undefined behaviour (R-UB): not judged</th></tr>"
+      << "<tr><th>reason</th><th>rays</th><th>first rays</th><th>first ray's cause</th></tr>\n";
+  for (const UndefinedRays& u : o.verdict.undefined) {
+    out << "<tr><td>" << undefinedReasonName(u.reason) << "</td><td>" << u.ray_count << "</td><td>";
+    for (uint32_t r : u.rays) out << r << ' ';
+    out << "</td><td>" << xmlEscape(u.what) << "</td></tr>\n";
+  }
+  out << "</table>\n";
+}
 
 void imageFigure(std::ostream& out, const std::string& dir, const std::string& rel, const char* label) {
   if (!std::filesystem::exists(dir + "/" + rel)) return;
@@ -62,6 +80,7 @@ void caseBlock(std::ostream& out, const CaseOutcome& o, const std::string& dir) 
     }
     out << "</table>\n";
   }
+  undefinedTable(out, o);
   for (const std::string& im : o.images) {
     out << "<div class=\"images\">";
     imageFigure(out, dir, o.name + "/device/" + im + ".png", "device");
@@ -104,9 +123,18 @@ std::string writeReportHtml(const std::vector<CaseOutcome>& outcomes, const RunI
   for (const CaseOutcome& o : outcomes)
     if (failing(o)) caseBlock(out, o, dir), ++shown;
   if (!shown) out << "<p>None.</p>\n";
+  bool case_errors = false;
+  for (const CaseOutcome& o : outcomes)
+    if (o.status == Status::CaseError) {
+      if (!case_errors)
+        out << "<h2>Case errors</h2>\n<p>The case itself is at fault (a malformed file, or undefined behaviour "
+               "the model found in it): the device is not blamed.</p>\n";
+      case_errors = true;
+      caseBlock(out, o, dir);
+    }
   out << "<h2>Other cases</h2><button id=\"toggle\">show / hide</button><div id=\"passing\">\n";
   for (const CaseOutcome& o : outcomes)
-    if (!failing(o)) caseBlock(out, o, dir);
+    if (!failing(o) && o.status != Status::CaseError) caseBlock(out, o, dir);
   out << "</div>\n<h2>Rule coverage</h2>\n<table><tr><th>rule</th><th>title</th><th>cases</th></tr>\n";
   for (const auto& [label, cases] : info.coverage) {
     std::string title = "(not in the catalog)";

@@ -51,12 +51,21 @@ void RunSummary::print() const {
     std::printf("  %-15s %d\n", statusName(s), counts[s]);
   bool header = false;
   for (const CaseOutcome& o : outcomes_) {
+    if (o.status == Status::CaseError) continue;  // listed apart below
     if (o.status == Status::Pass) {
       if (o.baseline == BaselineMatch::UnexpectedPass)
         std::printf("  %-44s Pass, but the baseline expects a failure: update it\n", o.name.c_str());
       continue;
     }
     if (!header) std::printf("Not passing:\n");
+    header = true;
+    std::printf("  %-44s %s%s\n", o.name.c_str(), o.headline.c_str(),
+                o.baseline == BaselineMatch::Expected ? "  [expected by the baseline]" : "");
+  }
+  header = false;
+  for (const CaseOutcome& o : outcomes_) {
+    if (o.status != Status::CaseError) continue;
+    if (!header) std::printf("Case errors (the case itself is at fault, not the device):\n");
     header = true;
     std::printf("  %-44s %s%s\n", o.name.c_str(), o.headline.c_str(),
                 o.baseline == BaselineMatch::Expected ? "  [expected by the baseline]" : "");

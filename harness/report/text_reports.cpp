@@ -79,6 +79,7 @@ std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const Run
   for (Status s : kAllStatuses)
     counts[statusName(s)] = 0;
   j["cases"] = nlohmann::json::array();
+  std::vector<std::string> case_errors;
   for (const CaseOutcome& o : outcomes) {
     ++counts[statusName(o.status)];
     nlohmann::json c{{"name", o.name}, {"status", statusName(o.status)}, {"headline", o.headline},
@@ -91,20 +92,47 @@ std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const Run
     for (const Finding& f : o.verdict.findings)
       c["findings"].push_back({{"status", statusName(f.status)}, {"rule", f.rule}, {"message", f.message},
                                {"rays", f.rays}, {"ray_count", f.ray_count}});
+    // Apart from the findings: rays never judged (R-UB).
+    c["undefined"] = nlohmann::json::array();
+    for (const UndefinedRays& u : o.verdict.undefined)
+      c["undefined"].push_back({{"reason", undefinedReasonName(u.reason)}, {"ray_count", u.ray_count},
+                                {"rays", u.rays}, {"what", u.what}});
+    if (o.status == Status::CaseError) case_errors.push_back(o.name);
     j["cases"].push_back(c);
   }
   j["counts"] = counts;
+  j["case_errors"] = case_errors;  // cases at fault themselves, not the device
   std::ofstream out(path);
   out << j.dump(1) << '\n';
   return out ? std::string() : "cannot write " + path;
 }
 
+namespace {
+
+void caseText(std::ostream& out, const CaseOutcome& o) {
+  out << o.name << ": " << o.headline << '\n';
+  for (const Finding& f : o.verdict.findings)
+    out << "    [" << statusName(f.status) << "] " << f.rule << ": " << f.message << '\n';
+  for (const UndefinedRays& u : o.verdict.undefined) {
+    out << "    undefined (R-UB, not judged): " << undefinedReasonName(u.reason) << ", " << u.ray_count
+        << " rays; first:";
+    for (uint32_t r : u.rays) out << ' ' << r;
+    out << "; " << u.what << '\n';
+  }
+}
+
+}  // namespace
+
 std::string writeSummaryText(const std::vector<CaseOutcome>& outcomes, const std::string& path) {
   std::ofstream out(path);
+  for (const CaseOutcome& o : outcomes)
+    if (o.status != Status::CaseError) caseText(out, o);
+  bool header = false;
   for (const CaseOutcome& o : outcomes) {
-    out << o.name << ": " << o.headline << '\n';
-    for (const Finding& f : o.verdict.findings)
-      out << "    [" << statusName(f.status) << "] " << f.rule << ": " << f.message << '\n';
+    if (o.status != Status::CaseError) continue;
+    if (!header) out << "\nCase errors (the case itself is at fault, not the device):\n";
+    header = true;
+    caseText(out, o);
   }
   return out ? std::string() : "cannot write " + path;
 }

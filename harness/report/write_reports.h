@@ -2,10 +2,13 @@
 //   results.csv   deqp-runner's CSV (case,Status,duration; no header) with
 //                 deqp-runner status names (Pass, Fail, Warn, Skip, Crash, Timeout)
 //   junit.xml     one testcase per case (failure / skipped elements)
-//   summary.json  counts per status, every case's status, headline and findings
-//   summary.txt   the same for people, one block per case
-//   report.html   failing cases first, device / model / difference images side
-//                 by side, per-ray tables of failing rays, rule coverage
+//   summary.json  counts per status, every case's status, headline, findings and
+//                 undefined rays (R-UB, never judged), the CaseError cases by name
+//   summary.txt   the same for people, one block per case, CaseError cases apart
+//   report.html   failing cases first, then the case errors (the case at fault,
+//                 not the device), device / model / difference images side by
+//                 side, per-ray tables of failing rays, undefined rays apart,
+//                 rule coverage
 #pragma once
 
 #include <map>
