@@ -127,18 +127,24 @@ class TraceChecker {
     bool hit_noted = false, miss_noted = false;
     for (const LaunchParameters& base : bases) {
       const TraceValues v = traceValues(t, base.ray);
-      const std::string from = base.from.field == "rays" ? "" : " (values of " + base.from.field + ")";
+      // Values a launch ray gave (not the trace itself) are named by the ray they come from.
+      auto from = [&](std::initializer_list<const std::vector<Expr>*> args) {
+        bool launch = false;
+        for (const auto* a : args) launch = launch || a->empty();
+        return launch && base.from.field != "rays" ? " (values of " + base.from.field + ")" : std::string();
+      };
       // The default raygen (no pipeline written) has no place of its own: the ray's.
       const SourceLoc& at = s.loc.line ? s.loc : base.from;
       if (const std::string hit = hitOutOfRange(c_, v); !hit.empty() && !hit_noted) {
-        note(at, UndefinedReason::HitRecordOutOfRange, hit + from);
+        note(at, UndefinedReason::HitRecordOutOfRange,
+             hit + from({&t.flags, &t.cull_mask, &t.sbt_offset, &t.sbt_stride}));
         hit_noted = true;
       }
       // R-SBT-MISS: only the low 16 bits of the miss index count.
       if (v.miss && (*v.miss & 0xFFFF) >= c_.pipeline.sbt_miss.size() && !miss_noted) {
         note(t.miss.empty() ? at : t.miss.front().loc, UndefinedReason::MissRecordOutOfRange,
              "miss index " + std::to_string(*v.miss) + " is out of range: " +
-                 regionSize(c_.pipeline.sbt_miss.size(), "miss", "miss shader") + from);
+                 regionSize(c_.pipeline.sbt_miss.size(), "miss", "miss shader") + from({&t.miss}));
         miss_noted = true;
       }
     }
