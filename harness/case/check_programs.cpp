@@ -2,17 +2,17 @@
 // checks that need the whole pipeline (recursion depth of nested traces).
 #include "case/case_parts.h"
 #include "program/ops.h"
+#include "program/walk_program.h"
 
 namespace rayspec {
 namespace {
 
-const Stmt* findTrace(const std::vector<Stmt>& block) {
-  for (const Stmt& s : block) {
-    if (s.kind == Stmt::Kind::Trace) return &s;
-    if (const Stmt* t = findTrace(s.then_)) return t;
-    if (const Stmt* t = findTrace(s.else_)) return t;
-  }
-  return nullptr;
+const Stmt* findTrace(const Program& p) {
+  const Stmt* trace = nullptr;
+  walkStatements(p, [&](const Stmt& s) {
+    if (!trace && s.kind == Stmt::Kind::Trace) trace = &s;
+  });
+  return trace;
 }
 
 }  // namespace
