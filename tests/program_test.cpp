@@ -4,6 +4,7 @@
 #include <set>
 
 #include "program/builtins.h"
+#include "program/constant_value.h"
 #include "program/ops.h"
 
 namespace rayspec {
@@ -126,6 +127,32 @@ TEST(TypeCheck, RejectsBadTypes) {
   EXPECT_NE(typeCheck(rec, Stage::Miss), "");
   Expr arity = op("not", {lit(1, ValueType::Bool), lit(0, ValueType::Bool)});
   EXPECT_NE(typeCheck(arity, Stage::Miss).find("argument"), std::string::npos);
+}
+
+TEST(ConstantValue, FoldsUintOperatorsAndLeavesRunTimeValuesOpen) {
+  Expr e = op("add", {op("mul", {lit(3), lit(4)}), op("sub", {lit(1), lit(2)})});
+  ASSERT_EQ(typeCheck(e, Stage::Raygen), "");
+  EXPECT_EQ(constantUint(e), 11u) << "3*4 + (1-2) modulo 2^32";
+  Expr m = op("min", {op("mod", {lit(17), lit(5)}), op("div", {lit(9), lit(2)})});
+  ASSERT_EQ(typeCheck(m, Stage::Raygen), "");
+  EXPECT_EQ(constantUint(m), 2u);
+  Expr dynamic = op("add", {builtin("launch_id_x"), lit(1)});
+  ASSERT_EQ(typeCheck(dynamic, Stage::Raygen), "");
+  EXPECT_FALSE(constantUint(dynamic));
+  Expr f = lit(2.5, ValueType::Float);
+  EXPECT_FALSE(constantUint(f));
+  EXPECT_EQ(constantFloat(f), 2.5);
+}
+
+TEST(TypeCheck, UintDivisionOrModuloByAConstantZeroIsAnError) {
+  Expr d = op("div", {builtin("launch_id_x"), op("sub", {lit(3), lit(3)})});
+  EXPECT_NE(typeCheck(d, Stage::Raygen).find("Uint division by a constant zero"), std::string::npos);
+  Expr m = op("mod", {builtin("launch_id_y"), op("mul", {lit(0), builtin("launch_id_x")})});
+  EXPECT_EQ(typeCheck(m, Stage::Raygen), "") << "0 * a run-time value is not folded";
+  Expr m0 = op("mod", {builtin("launch_id_y"), op("min", {lit(0), lit(4)})});
+  EXPECT_NE(typeCheck(m0, Stage::Raygen).find("Uint modulo by a constant zero"), std::string::npos);
+  Expr fine = op("div", {lit(4), builtin("launch_id_x")});
+  EXPECT_EQ(typeCheck(fine, Stage::Raygen), "");
 }
 
 TEST(TypeCheck, StagePermissions) {
