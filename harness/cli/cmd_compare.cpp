@@ -10,7 +10,8 @@
 
 #include "case/parse_case.h"
 #include "cli/commands.h"
-#include "cli/judge_case.h"
+#include "run/judge_case.h"
+#include "run/run_loop.h"
 #include "report/rule_catalog.h"
 #include "report/run_summary.h"
 #include "report/write_reports.h"
@@ -91,10 +92,15 @@ CaseOutcome compareOne(const Pair& p, const CompareOptions& opt, std::vector<std
 }  // namespace
 
 int runCompare(const CompareOptions& opt) {
+  for (const std::string& side : {opt.a, opt.b})
+    if (!fs::is_directory(side)) {
+      std::fprintf(stderr, "rayspec compare: %s is not a folder (a results bundle or a run folder)\n", side.c_str());
+      return kExitSetup;
+    }
   const std::vector<Pair> pairs = pairsOf(opt.a, opt.b);
   if (pairs.empty()) {
     std::fprintf(stderr, "rayspec compare: %s holds no results (no results.json, no <case>/device/)\n", opt.a.c_str());
-    return 2;
+    return kExitSetup;
   }
   RunInfo info;
   char text[64];
@@ -120,7 +126,13 @@ int runCompare(const CompareOptions& opt) {
   const std::string err = writeReports(summary.outcomes(), info, opt.out);
   if (!err.empty()) std::fprintf(stderr, "%s\n", err.c_str());
   std::printf("Reports: %s/report.html, results.csv, junit.xml, summary.json\n", opt.out.c_str());
-  return summary.failed() ? 1 : 0;
+  if (summary.failed()) return kExitFailing;
+  if (summary.allNotSupported()) {
+    std::fprintf(stderr, "rayspec compare: nothing was compared: no case of %s has a counterpart in %s\n",
+                 opt.a.c_str(), opt.b.c_str());
+    return kExitNothingCompared;
+  }
+  return kExitPass;
 }
 
 }  // namespace rayspec

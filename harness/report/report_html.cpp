@@ -13,7 +13,7 @@ namespace {
 
 const char* kStyle = R"(body{font-family:sans-serif;margin:1.5em;color:#222}
 table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding:2px 6px;font-size:13px}
-.Pass{color:#1a7f37}.Fail,.Crash,.Timeout{color:#cf222e;font-weight:bold}.QualityWarning{color:#9a6700}
+.Pass{color:#1a7f37}.Fail,.Crash,.Timeout,.CaseError{color:#cf222e;font-weight:bold}.QualityWarning{color:#9a6700}
 .NotSupported{color:#57606a}.case{border:1px solid #ddd;padding:.5em 1em;margin:1em 0}
 .images figure{display:inline-block;margin:0 1em 0 0}.images img{image-rendering:pixelated;width:256px;border:1px solid #999}
 .uncovered{color:#cf222e}#passing.hidden{display:none})";
@@ -36,7 +36,8 @@ b.scriptErrors=window.rayspecErrors;b.checked='1';});)";
 bool failing(const CaseOutcome& o) { return o.status != Status::Pass && o.status != Status::NotSupported; }
 
 void imageFigure(std::ostream& out, const std::string& dir, const std::string& rel, const char* label) {
-  if (!std::filesystem::exists(dir + "/" + rel)) return;
+  std::error_code ec;  // a name the file system refuses (too long) is an image that is not there
+  if (!std::filesystem::exists(dir + "/" + rel, ec)) return;
   out << "<figure><img src=\"" << xmlEscape(rel) << "\" alt=\"" << label << "\"><figcaption>" << label
       << "</figcaption></figure>";
 }
@@ -89,6 +90,8 @@ std::string writeReportHtml(const std::vector<CaseOutcome>& outcomes, const RunI
   out << "<p>device: " << xmlEscape(info.device) << " &middot; model: embree " << xmlEscape(info.model_tier)
       << " tier &middot; validation layer " << (info.validation ? "on" : "off") << " &middot; " << xmlEscape(info.started)
       << "</p>\n";
+  out << "<p id=\"completeness\"" << (info.interrupted ? " class=\"Fail\"" : "") << ">"
+      << xmlEscape(runCompleteness(outcomes, info)) << "</p>\n";
   std::map<Status, int> counts;
   for (const CaseOutcome& o : outcomes) ++counts[o.status];
   out << "<table><tr>";
