@@ -162,13 +162,16 @@ int runCases(const RunOptions& opt) {
   if (const std::string err = writeReports(summary.outcomes(), info, opt.out); !err.empty())
     std::fprintf(stderr, "%s\n", err.c_str());
   std::printf("Reports: %s/report.html, results.csv, junit.xml, summary.json\n", opt.out.c_str());
-  if (const int sig = interruptSignal()) return 128 + sig;
+  const int status = runExitStatus(summary, files.size(), device_found, interruptSignal());
+  if (status == kExitNothingCompared) std::fprintf(stderr, "rayspec run: nothing was compared: every case is NotSupported\n");
+  return status;
+}
+
+int runExitStatus(const RunSummary& summary, size_t planned, bool device_found, int signal) {
+  if (signal) return 128 + signal;
   if (summary.failed()) return kExitFailing;
-  if (summary.allNotSupported()) {
-    if (files.size() == 1 && device_found) return kExitNotSupported;
-    std::fprintf(stderr, "rayspec run: nothing was compared: every case is NotSupported\n");
-    return kExitNothingCompared;
-  }
+  if (summary.allNotSupported() || summary.outcomes().empty())
+    return planned == 1 && device_found && !summary.outcomes().empty() ? kExitNotSupported : kExitNothingCompared;
   return kExitPass;
 }
 

@@ -2,6 +2,9 @@
 // rewritten after each one, and the exit status.
 #pragma once
 
+#include <cstddef>
+
+#include "report/run_summary.h"
 #include "run/run_options.h"
 
 namespace rayspec {
@@ -15,5 +18,10 @@ inline constexpr int kExitNotSupported = 77;    // a single case, NotSupported o
 // Interrupted by SIGINT / SIGTERM: 128 + the signal, reports marked interrupted.
 
 int runCases(const RunOptions& opt);
+
+// The exit status of a run that got as far as its cases: `planned` cases,
+// `device_found` when the device side had a device, `signal` the one that
+// stopped it (0 none).
+int runExitStatus(const RunSummary& summary, size_t planned, bool device_found, int signal);
 
 }  // namespace rayspec

@@ -14,10 +14,11 @@ namespace rayspec {
 // Memory a case's model or device child process may hold (run/child_process.h,
 // RLIMIT_DATA). 8 GiB leaves room on a 24 GiB, 2-core machine for the parent,
 // another run and the page cache, and fits the largest launch a case may
-// declare (2^24 rays of records and images). Measured here (2 cores): the
-// suite's cases run under 512 MiB on both sides, lavapipe with the validation
-// layer under 256 MiB, the model on the 1M-ray mixed scene under 512 MiB;
-// Embree's rtcNewDevice fails under 256 MiB and lavapipe under 128 MiB.
+// declare (2^24 rays of records and images). Measured here (2 cores): every
+// case of the suite runs under 512 MiB on both sides but the device side of
+// the 1M-ray model/mixed-scene-1024 (768 MiB); a small case runs on lavapipe
+// with the validation layer under 256 MiB; Embree's rtcNewDevice fails under
+// 256 MiB and lavapipe under 128 MiB.
 inline constexpr uint64_t kDefaultMemoryLimit = uint64_t(8) << 30;
 
 struct RunOptions {

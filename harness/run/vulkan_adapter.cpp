@@ -2,7 +2,7 @@
 
 namespace rayspec {
 
-VulkanAdapter::VulkanAdapter(const VulkanOptions& options) : backend_(VulkanBackend::create(options, &error_)) {}
+VulkanAdapter::VulkanAdapter(const VulkanOptions& options) { backend_ = VulkanBackend::create(options, &error_); }
 
 std::string VulkanAdapter::description() const {
   if (!backend_) return "none (" + error_ + ")";
