@@ -10,6 +10,7 @@
 
 #include "case/parse_case.h"
 #include "cli/commands.h"
+#include "run/case_steps.h"
 #include "run/judge_case.h"
 #include "run/run_loop.h"
 #include "report/rule_catalog.h"
@@ -58,10 +59,11 @@ CaseOutcome compareOne(const Pair& p, const CompareOptions& opt, std::vector<std
   std::string error;
   Results a = readResults(p.a.string(), &error);
   const std::string name = p.name.empty() ? a.case_name : p.name;
-  if (!error.empty()) return failedOutcome(name, Status::Fail, error);
+  // An unreadable bundle or case file is not the driver's fault: a CaseError.
+  if (!error.empty()) return caseErrorOutcome(name, {}, "bundle", error);
   if (!isBundle(p.b)) return failedOutcome(name, Status::NotSupported, "no reference: " + p.b.string() + " has no results");
   Results b = readResults(p.b.string(), &error);
-  if (!error.empty()) return failedOutcome(name, Status::Fail, error);
+  if (!error.empty()) return caseErrorOutcome(name, {}, "bundle", error);
   if (!p.ambiguity.empty()) {
     const Results m = readResults(p.ambiguity.string(), &error);
     if (error.empty()) b.ambiguous = m.ambiguous;
@@ -72,7 +74,7 @@ CaseOutcome compareOne(const Pair& p, const CompareOptions& opt, std::vector<std
   if (!parsed.value) {
     std::string message = "cannot re-read the case file " + file;
     for (const CaseError& e : parsed.errors) message += "; " + e.format();
-    return failedOutcome(name, Status::Fail, message);
+    return caseErrorOutcome(name, {}, "case-file", message);
   }
   Case c = *parsed.value;
   c.name = name;
@@ -116,7 +118,7 @@ int runCompare(const CompareOptions& opt) {
   for (const Pair& p : pairs) {
     summary.starting(p.name);
     std::vector<std::string> rules;
-    CaseOutcome o = compareOne(p, opt, &rules);
+    CaseOutcome o = guardCase(p.name, {}, [&] { return compareOne(p, opt, &rules); });
     if (!rules.empty()) case_rules.push_back({o.name, rules});
     if (info.device.empty()) info.device = o.device_name;
     summary.add(o);
