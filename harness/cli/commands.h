@@ -1,4 +1,5 @@
-// The subcommands of the rayspec command line.
+// The subcommands of the rayspec command line. `run` is run/run_loop.h
+// (runCases with run/run_options.h); the others are here.
 #pragma once
 
 #include <string>
@@ -11,7 +12,6 @@ namespace rayspec {
 struct DevicesOptions {
   bool no_validation = false;
 };
-
 
 struct ShowOptions {
   std::string case_file;
