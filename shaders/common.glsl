@@ -15,6 +15,16 @@ uint rs_launch_index() {
   return gl_LaunchIDEXT.y * gl_LaunchSizeEXT.x + gl_LaunchIDEXT.x;
 }
 
+// The texel of this launch's ray in an image `width` texels wide: the
+// launch's rays in row-major order, so a launch wider than the device's
+// largest image (a long ray list) folds into rows. For an image of the
+// launch's own size it is gl_LaunchIDEXT.xy. Device side only (the model
+// keeps images at the launch's size); harness/vulkan/case_buffers.h.
+ivec2 rs_image_texel(int width) {
+  const uint i = rs_launch_index();
+  return ivec2(int(i % uint(width)), int(i / uint(width)));
+}
+
 #ifdef RS_USE_TLAS
 layout(set = 0, binding = RS_BINDING_TLAS) uniform accelerationStructureEXT rs_tlas;
 #endif

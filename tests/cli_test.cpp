@@ -13,48 +13,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_helpers.h"
+
 namespace {
 namespace fs = std::filesystem;
-
-const std::string kCases = RAYSPEC_SOURCE_DIR "/cases/";
-
-std::string caseArg(const std::string& name) { return " --case " + kCases + name + ".yaml"; }
-
-// Runs a shell command; its output goes to log. Returns the exit status.
-int sh(const std::string& command, const std::string& log) {
-  const int s = std::system((command + " > " + log + " 2>&1").c_str());
-  return WIFEXITED(s) ? WEXITSTATUS(s) : -1;
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string fresh(const std::string& name) {
-  const std::string dir = std::string(RAYSPEC_TEST_OUT) + "/" + name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-// results.csv as deqp-runner reads it: name,Status,duration per line, no header.
-std::map<std::string, std::string> readDeqpCsv(const std::string& path) {
-  std::map<std::string, std::string> status;
-  const std::regex line(R"(^([^,\s]+),(Pass|Fail|Warn|Skip|Crash|Timeout|Flake|ExpectedFail|UnexpectedPass|KnownFlake|Missing),([0-9]+(\.[0-9]+)?([eE][-+]?[0-9]+)?)$)");
-  std::ifstream in(path);
-  std::string text;
-  int n = 0;
-  while (std::getline(in, text)) {
-    ++n;
-    std::smatch m;
-    EXPECT_TRUE(std::regex_match(text, m, line)) << path << ":" << n << ": not deqp-runner CSV: '" << text << "'";
-    if (!m.empty()) status[m[1]] = m[2];
-  }
-  return status;
-}
+using cli::caseArg;
+using cli::fresh;
+using cli::readDeqpCsv;
+using cli::sh;
+using cli::slurp;
 
 TEST(Isolation, CrashIsACrashAndTheNextCaseStillRuns) {
   const std::string out = fresh("crash");

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "report/baseline.h"
+#include "report/escape.h"
 #include "report/rule_catalog.h"
 #include "report/run_summary.h"
 #include "report/write_reports.h"
@@ -50,6 +51,26 @@ TEST(Reports, ResultsCsvIsDeqpRunnerCsv) {
   for (const std::string& l : lines) EXPECT_TRUE(std::regex_match(l, deqp)) << l;
   EXPECT_EQ(lines[1].rfind("anyhit/failing,Fail,", 0), 0u) << lines[1];
   EXPECT_EQ(lines[2].rfind("watertight/leaky,Warn,", 0), 0u) << lines[2];
+}
+
+TEST(Reports, InterruptedRunSaysSoInEveryReport) {
+  const std::string dir = ::testing::TempDir() + "/rayspec-report-interrupted";
+  RunInfo info;
+  info.planned_cases = 5;
+  info.interrupted = true;
+  ASSERT_EQ(writeReports(outcomes(), info, dir), "");
+  const std::string json = slurp(dir + "/summary.json");
+  EXPECT_NE(json.find("\"interrupted\": true"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"planned_cases\": 5"), std::string::npos) << json;
+  EXPECT_EQ(slurp(dir + "/summary.txt").rfind("INTERRUPTED: 3 of 5 planned cases ran\n", 0), 0u);
+  EXPECT_NE(slurp(dir + "/report.html").find("INTERRUPTED: 3 of 5 planned cases ran"), std::string::npos);
+
+  info.planned_cases = 3;
+  info.interrupted = false;
+  ASSERT_EQ(writeReports(outcomes(), info, dir), "");
+  EXPECT_NE(slurp(dir + "/summary.json").find("\"interrupted\": false"), std::string::npos);
+  EXPECT_EQ(slurp(dir + "/summary.txt").rfind("complete: 3 of 3 cases\n", 0), 0u);
+  EXPECT_EQ(slurp(dir + "/report.html").find("INTERRUPTED"), std::string::npos);
 }
 
 TEST(Reports, HtmlPutsFailingCasesFirstEscapesAndCarriesItsSelfCheck) {
@@ -195,6 +216,31 @@ TEST(Baseline, ADifferentBadStatusIsNotExpected) {
   CaseOutcome crashed{"fam/a", {}, Status::Crash, "Crash"};
   applyBaseline(b, crashed);
   EXPECT_EQ(crashed.baseline, BaselineMatch::None);
+}
+
+TEST(Baseline, ReadsQuotedNamesBackFromResultsCsv) {
+  // Names results.csv must quote, written by the reports and read back by the baseline.
+  const std::vector<std::string> names = {"fam/a,b", "fam/say \"hi\", then go", "fam/plain", "fam/hash#in,name"};
+  std::vector<CaseOutcome> outcomes;
+  for (const std::string& n : names) outcomes.push_back({n, {}, Status::Fail, "Fail: x"});
+  const std::string csv = testing::TempDir() + "/quoted-results.csv";
+  ASSERT_EQ(writeResultsCsv(outcomes, csv), "");
+  // A baseline made from results.csv: each line's name field as it was written, the rayspec status, a comment.
+  std::ifstream in(csv);
+  std::string line, baseline_text = "# known failures\n";
+  while (std::getline(in, line)) {
+    const std::string name_field = line.substr(0, line.find(",Fail,"));
+    baseline_text += name_field + ",Fail  # driver bug\n";
+  }
+  std::string error;
+  const Baseline b = loadBaseline(writeTemp("quoted-baseline.csv", baseline_text), &error);
+  ASSERT_EQ(error, "") << baseline_text;
+  ASSERT_EQ(b.expected.size(), names.size()) << baseline_text;
+  for (const std::string& n : names) {
+    ASSERT_TRUE(b.expected.count(n)) << "'" << n << "' not read back from:\n" << baseline_text;
+    EXPECT_EQ(b.expected.at(n), Status::Fail);
+  }
+  for (const std::string& n : names) EXPECT_EQ(csvFieldText(csvField(n)), n);
 }
 
 TEST(Baseline, MalformedLineNamesFileAndLine) {

@@ -11,7 +11,9 @@
 #include "case/parse_case.h"
 #include "plan/plan.h"
 #include "results/record_layout.h"
+#include "vulkan/case_buffers.h"
 #include "vulkan/sbt_layout.h"
+#include "vulkan/vk_check.h"
 #include "vulkan/vulkan_backend.h"
 
 namespace rayspec {
@@ -472,6 +474,51 @@ TEST(VulkanDevice, RecordsBeyondMaxStorageBufferRange) {
   EXPECT_EQ(field(r, 1024u * 1024u - 1u, "hit"), 0u);
   EXPECT_EQ(r.counters["miss"], 1u);
   EXPECT_EQ(r.counters["closesthit"], 1024u * 1024u - 1u);
+  EXPECT_TRUE(backend->close().empty());
+}
+
+// Images live at the launch's extent unless the device's largest image is
+// smaller; then the launch's texels fold into rows, in order.
+TEST(ImageExtent, FoldsOnlyWhatTheDeviceCannotHold) {
+  EXPECT_EQ(imageExtent(64, 32, 16384).width, 64u);
+  EXPECT_EQ(imageExtent(64, 32, 16384).height, 32u);
+  EXPECT_EQ(imageExtent(16384, 1, 16384).width, 16384u);
+  const ImageExtent list = imageExtent(40000, 1, 16384);
+  EXPECT_EQ(list.width, 16384u);
+  EXPECT_EQ(list.height, 3u);  // 40,000 texels in rows of 16,384
+  EXPECT_EQ(imageExtent(5000, 1, 4096).height, 2u);
+  EXPECT_THROW(imageExtent(4096 * 4096 + 1, 1, 4096), NotSupportedError);
+}
+
+// A ray list of 40,000 rays (beyond lavapipe's maxImageDimension2D, 16,384)
+// with an image: launch i traces ray i, texel i of the image is ray i's, and
+// the validation layer has nothing to say.
+TEST(VulkanDevice, RayListBeyondMaxImageDimension2D) {
+  SKIP_WITHOUT_RT_DEVICE();
+  auto backend = makeBackend();
+  ASSERT_TRUE(backend);
+  Case c = triangleCase();
+  const uint32_t n = 40000;
+  c.rays.width = n;
+  c.rays.height = 1;
+  c.rays.rays.clear();
+  for (uint32_t i = 0; i < n; ++i)
+    c.rays.rays.push_back(i % 3 == 0 ? downRay(-0.5f, -0.5f) : i % 3 == 1 ? downRay(0.5f, -0.5f) : downRay(3, 3));
+  Results r = backend->run(c, derivePlan(c));
+  ASSERT_EQ(r.statusText(), "ok");
+  EXPECT_TRUE(r.validation_messages.empty()) << r.validation_messages.front();
+  ASSERT_EQ(r.images.size(), 1u);
+  EXPECT_EQ(r.images[0].width, n);
+  EXPECT_EQ(r.images[0].height, 1u);
+  ASSERT_EQ(r.images[0].texels.size(), n);
+  uint32_t wrong = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    const uint32_t hit = i % 3 != 2, primitive = i % 3 == 1;
+    wrong += field(r, i, "hit") != hit || (hit && field(r, i, "primitive_id") != primitive) ||
+             r.images[0].texels[i] != (hit ? primitive : 0u);
+  }
+  EXPECT_EQ(wrong, 0u);
+  EXPECT_EQ(r.counters["miss"], n / 3);
   EXPECT_TRUE(backend->close().empty());
 }
 

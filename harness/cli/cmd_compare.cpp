@@ -10,7 +10,9 @@
 
 #include "case/parse_case.h"
 #include "cli/commands.h"
-#include "cli/judge_case.h"
+#include "run/case_steps.h"
+#include "run/judge_case.h"
+#include "run/run_loop.h"
 #include "report/rule_catalog.h"
 #include "report/run_summary.h"
 #include "report/write_reports.h"
@@ -57,10 +59,11 @@ CaseOutcome compareOne(const Pair& p, const CompareOptions& opt, std::vector<std
   std::string error;
   Results a = readResults(p.a.string(), &error);
   const std::string name = p.name.empty() ? a.case_name : p.name;
-  if (!error.empty()) return failedOutcome(name, Status::Fail, error);
+  // An unreadable bundle or case file is not the driver's fault: a CaseError.
+  if (!error.empty()) return caseErrorOutcome(name, {}, "bundle", error);
   if (!isBundle(p.b)) return failedOutcome(name, Status::NotSupported, "no reference: " + p.b.string() + " has no results");
   Results b = readResults(p.b.string(), &error);
-  if (!error.empty()) return failedOutcome(name, Status::Fail, error);
+  if (!error.empty()) return caseErrorOutcome(name, {}, "bundle", error);
   if (!p.ambiguity.empty()) {
     const Results m = readResults(p.ambiguity.string(), &error);
     if (error.empty()) b.ambiguous = m.ambiguous;
@@ -71,7 +74,7 @@ CaseOutcome compareOne(const Pair& p, const CompareOptions& opt, std::vector<std
   if (!parsed.value) {
     std::string message = "cannot re-read the case file " + file;
     for (const CaseError& e : parsed.errors) message += "; " + e.format();
-    return failedOutcome(name, Status::Fail, message);
+    return caseErrorOutcome(name, {}, "case-file", message);
   }
   Case c = *parsed.value;
   c.name = name;
@@ -91,10 +94,15 @@ CaseOutcome compareOne(const Pair& p, const CompareOptions& opt, std::vector<std
 }  // namespace
 
 int runCompare(const CompareOptions& opt) {
+  for (const std::string& side : {opt.a, opt.b})
+    if (!fs::is_directory(side)) {
+      std::fprintf(stderr, "rayspec compare: %s is not a folder (a results bundle or a run folder)\n", side.c_str());
+      return kExitSetup;
+    }
   const std::vector<Pair> pairs = pairsOf(opt.a, opt.b);
   if (pairs.empty()) {
     std::fprintf(stderr, "rayspec compare: %s holds no results (no results.json, no <case>/device/)\n", opt.a.c_str());
-    return 2;
+    return kExitSetup;
   }
   RunInfo info;
   char text[64];
@@ -110,7 +118,7 @@ int runCompare(const CompareOptions& opt) {
   for (const Pair& p : pairs) {
     summary.starting(p.name);
     std::vector<std::string> rules;
-    CaseOutcome o = compareOne(p, opt, &rules);
+    CaseOutcome o = guardCase(p.name, {}, [&] { return compareOne(p, opt, &rules); });
     if (!rules.empty()) case_rules.push_back({o.name, rules});
     if (info.device.empty()) info.device = o.device_name;
     summary.add(o);
@@ -120,7 +128,13 @@ int runCompare(const CompareOptions& opt) {
   const std::string err = writeReports(summary.outcomes(), info, opt.out);
   if (!err.empty()) std::fprintf(stderr, "%s\n", err.c_str());
   std::printf("Reports: %s/report.html, results.csv, junit.xml, summary.json\n", opt.out.c_str());
-  return summary.failed() ? 1 : 0;
+  if (summary.failed()) return kExitFailing;
+  if (summary.allNotSupported()) {
+    std::fprintf(stderr, "rayspec compare: nothing was compared: no case of %s has a counterpart in %s\n",
+                 opt.a.c_str(), opt.b.c_str());
+    return kExitNothingCompared;
+  }
+  return kExitPass;
 }
 
 }  // namespace rayspec

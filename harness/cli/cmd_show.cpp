@@ -2,7 +2,7 @@
 #include <filesystem>
 
 #include "case/parse_case.h"
-#include "cli/case_discovery.h"
+#include "run/case_discovery.h"
 #include "cli/commands.h"
 #include "cli/describe_case.h"
 #include "glsl/generate_glsl.h"

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.h"
+#include "run/run_loop.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"rayspec: Vulkan ray tracing pipeline conformance, device against a CPU reference model"};
@@ -30,10 +31,17 @@ int main(int argc, char** argv) {
   run->add_flag("--strict-validation", run_opt.strict_validation,
                 "Fail when the validation layer is not installed (ctest sets this)");
   run->add_option("--threads", run_opt.threads, "Model threads (0: all cores)")->capture_default_str();
-  run->add_option("--timeout", run_opt.timeout, "Seconds a case's device side may run before it is a Timeout")
+  run->add_option("--timeout", run_opt.timeout,
+                  "Seconds a case's model side, and then its device side, may run before it is a Timeout")
       ->capture_default_str();
+  run->add_option("--memory-limit", run_opt.memory_limit,
+                  "Memory each case side's process may hold (RLIMIT_DATA; e.g. 8G, 512M; 0: no limit); beyond "
+                  "it the case is a Crash")
+      ->transform(CLI::AsSizeValue(false))
+      ->default_str(std::to_string(rayspec::kDefaultMemoryLimit >> 30) + "G");
   run->add_flag("--no-isolation", run_opt.no_isolation,
-                "Run the device in this process (one VkDevice for every case; a crash ends the run)");
+                "Run the model and the device in this process (one VkDevice for every case; no timeout, no "
+                "memory limit, a crash ends the run)");
   run->add_option("--plant-fault", run_opt.plant_fault,
                   "Test only: corrupt the device's results in a known way (drop-miss, swap-primitive-id, "
                   "chit-after-ignore, shift-t, duplicate-any-hit, leak-edge, crash, hang)");

@@ -121,7 +121,7 @@ void imageStores(const StageContext& ctx, GlslWriter& out) {
       }
       value += ")";
     }
-    out.line("imageStore(" + image + ", ivec2(gl_LaunchIDEXT.xy), " + value + ");");
+    out.line("imageStore(" + image + ", rs_image_texel(imageSize(" + image + ").x), " + value + ");");
   }
 }
 

@@ -1,6 +1,9 @@
 #include "report/baseline.h"
 
 #include <fstream>
+#include <regex>
+
+#include "report/escape.h"
 
 namespace rayspec {
 
@@ -12,19 +15,21 @@ Baseline loadBaseline(const std::string& path, std::string* error) {
     *error = "cannot read baseline " + path;
     return b;
   }
+  // A line: blank, a comment, or `case,Status` (the case name a CSV field as
+  // results.csv writes it, quoted when it holds a comma) and maybe a comment.
+  static const std::regex blank(R"(^\s*(#.*)?$)");
+  static const std::regex entry(std::string("^(") + kCsvFieldPattern + R"(),\s*([A-Za-z]+)\s*(#.*)?$)");
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
-    const size_t hash = line.find('#');
-    if (hash != std::string::npos) line.erase(hash);
-    while (!line.empty() && (line.back() == ' ' || line.back() == '\r')) line.pop_back();
-    if (line.empty()) continue;
-    const size_t comma = line.find(',');
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (std::regex_match(line, blank)) continue;
+    std::smatch m;
     Status s;
-    if (comma == std::string::npos || !parseStatus(line.substr(comma + 1), &s)) {
+    if (!std::regex_match(line, m, entry) || !parseStatus(m[2], &s)) {
       *error = path + ":" + std::to_string(number) + ": expected 'case,Status' with a rayspec status, got '" + line + "'";
       return b;
     }
-    b.expected[line.substr(0, comma)] = s;
+    b.expected[csvFieldText(m[1])] = s;
   }
   return b;
 }

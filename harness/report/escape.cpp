@@ -1,5 +1,7 @@
 #include "report/escape.h"
 
+#include <regex>
+
 namespace rayspec {
 
 std::string xmlEscape(const std::string& text) {
@@ -26,6 +28,14 @@ std::string csvField(const std::string& text) {
     out += c;
   }
   return out + '"';
+}
+
+const char* const kCsvFieldPattern = R"("(?:[^"]|"")*"|[^,"]*)";
+
+std::string csvFieldText(const std::string& field) {
+  if (field.size() < 2 || field.front() != '"' || field.back() != '"') return field;
+  static const std::regex doubled("\"\"");
+  return std::regex_replace(field.substr(1, field.size() - 2), doubled, "\"");
 }
 
 }  // namespace rayspec

@@ -54,7 +54,8 @@ void undefinedTable(std::ostream& out, const CaseOutcome& o) {
 }
 
 void imageFigure(std::ostream& out, const std::string& dir, const std::string& rel, const char* label) {
-  if (!std::filesystem::exists(dir + "/" + rel)) return;
+  std::error_code ec;  // a name the file system refuses (too long) is an image that is not there
+  if (!std::filesystem::exists(dir + "/" + rel, ec)) return;
   out << "<figure><img src=\"" << xmlEscape(rel) << "\" alt=\"" << label << "\"><figcaption>" << label
       << "</figcaption></figure>";
 }
@@ -108,6 +109,8 @@ std::string writeReportHtml(const std::vector<CaseOutcome>& outcomes, const RunI
   out << "<p>device: " << xmlEscape(info.device) << " &middot; model: embree " << xmlEscape(info.model_tier)
       << " tier &middot; validation layer " << (info.validation ? "on" : "off") << " &middot; " << xmlEscape(info.started)
       << "</p>\n";
+  out << "<p id=\"completeness\"" << (info.interrupted ? " class=\"Fail\"" : "") << ">"
+      << xmlEscape(runCompleteness(outcomes, info)) << "</p>\n";
   std::map<Status, int> counts;
   for (const CaseOutcome& o : outcomes) ++counts[o.status];
   out << "<table><tr>";

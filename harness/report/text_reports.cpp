@@ -1,4 +1,5 @@
 // results.csv, junit.xml, summary.json and summary.txt.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -75,6 +76,8 @@ std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const Run
   j["started"] = info.started;
   j["validation"] = info.validation;
   j["teardown_validation_errors"] = info.teardown_errors;
+  j["planned_cases"] = std::max(info.planned_cases, outcomes.size());
+  j["interrupted"] = info.interrupted;
   std::map<std::string, int> counts;
   for (Status s : kAllStatuses)
     counts[statusName(s)] = 0;
@@ -107,6 +110,13 @@ std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const Run
   return out ? std::string() : "cannot write " + path;
 }
 
+std::string runCompleteness(const std::vector<CaseOutcome>& outcomes, const RunInfo& info) {
+  const size_t planned = std::max(info.planned_cases, outcomes.size());
+  if (info.interrupted)
+    return "INTERRUPTED: " + std::to_string(outcomes.size()) + " of " + std::to_string(planned) + " planned cases ran";
+  return "complete: " + std::to_string(outcomes.size()) + " of " + std::to_string(planned) + " cases";
+}
+
 namespace {
 
 void caseText(std::ostream& out, const CaseOutcome& o) {
@@ -123,8 +133,9 @@ void caseText(std::ostream& out, const CaseOutcome& o) {
 
 }  // namespace
 
-std::string writeSummaryText(const std::vector<CaseOutcome>& outcomes, const std::string& path) {
+std::string writeSummaryText(const std::vector<CaseOutcome>& outcomes, const RunInfo& info, const std::string& path) {
   std::ofstream out(path);
+  out << runCompleteness(outcomes, info) << '\n';
   for (const CaseOutcome& o : outcomes)
     if (o.status != Status::CaseError) caseText(out, o);
   bool header = false;
@@ -143,7 +154,7 @@ std::string writeReports(const std::vector<CaseOutcome>& outcomes, const RunInfo
   if (ec) return "cannot create " + dir + ": " + ec.message();
   for (const std::string& err :
        {writeResultsCsv(outcomes, dir + "/results.csv"), writeJunitXml(outcomes, dir + "/junit.xml"),
-        writeSummaryJson(outcomes, info, dir + "/summary.json"), writeSummaryText(outcomes, dir + "/summary.txt"),
+        writeSummaryJson(outcomes, info, dir + "/summary.json"), writeSummaryText(outcomes, info, dir + "/summary.txt"),
         writeReportHtml(outcomes, info, dir + "/report.html")})
     if (!err.empty()) return err;
   return {};

@@ -3,12 +3,14 @@
 //                 deqp-runner status names (Pass, Fail, Warn, Skip, Crash, Timeout)
 //   junit.xml     one testcase per case (failure / skipped elements)
 //   summary.json  counts per status, every case's status, headline, findings and
-//                 undefined rays (R-UB, never judged), the CaseError cases by name
-//   summary.txt   the same for people, one block per case, CaseError cases apart
-//   report.html   failing cases first, then the case errors (the case at fault,
-//                 not the device), device / model / difference images side by
-//                 side, per-ray tables of failing rays, undefined rays apart,
-//                 rule coverage
+//                 undefined rays (R-UB, never judged), the CaseError cases by name,
+//                 planned_cases and interrupted
+//   summary.txt   a line saying whether the run is complete, then the same for
+//                 people, one block per case, CaseError cases apart
+//   report.html   whether the run is complete, failing cases first, then the case
+//                 errors (the case at fault, not the device), device / model /
+//                 difference images side by side, per-ray tables of failing rays,
+//                 undefined rays apart, rule coverage
 #pragma once
 
 #include <map>
@@ -23,6 +25,11 @@ namespace rayspec {
 struct RunInfo {
   std::string device, model_tier, started;
   bool validation = false;
+  size_t planned_cases = 0;  // cases the run set out to run (0: as many as it has outcomes)
+  // Not every planned case ran: the run is still going, was stopped by a
+  // signal, or was killed (a run writes its reports marked interrupted until
+  // the last case is done).
+  bool interrupted = false;
   std::vector<std::string> teardown_errors;
   std::vector<Rule> catalog;
   std::map<std::string, std::vector<std::string>> coverage;  // rule -> cases
@@ -34,7 +41,9 @@ const char* deqpStatusName(Status s);
 std::string writeResultsCsv(const std::vector<CaseOutcome>& outcomes, const std::string& path);
 std::string writeJunitXml(const std::vector<CaseOutcome>& outcomes, const std::string& path);
 std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const RunInfo& info, const std::string& path);
-std::string writeSummaryText(const std::vector<CaseOutcome>& outcomes, const std::string& path);
+std::string writeSummaryText(const std::vector<CaseOutcome>& outcomes, const RunInfo& info, const std::string& path);
+// "complete: 12 of 12 cases" or "INTERRUPTED: 3 of 12 planned cases ran".
+std::string runCompleteness(const std::vector<CaseOutcome>& outcomes, const RunInfo& info);
 std::string writeReportHtml(const std::vector<CaseOutcome>& outcomes, const RunInfo& info, const std::string& path);
 
 // All of the above into dir; returns the first error.

@@ -15,8 +15,21 @@
 
 namespace rayspec {
 
+// Where a launch's images live on the device: the launch's own extent, or,
+// when that is beyond maxImageDimension2D (a ray list is one row of rays),
+// the launch's rays in row-major order folded into rows as wide as the
+// device allows. The raygen stores ray i at (i % width, i / width)
+// (shaders/common.glsl, rs_image_texel), so the texels read back in order
+// are the launch's rays in order whatever the extent; launch ids are not
+// touched. Throws NotSupportedError when even folded the image does not fit.
+struct ImageExtent {
+  uint32_t width = 0, height = 0;
+};
+ImageExtent imageExtent(uint32_t launch_width, uint32_t launch_height, uint32_t max_dimension);
+
 struct CaseBuffers {
   std::set<uint32_t> bindings;  // the bindings in use
+  ImageExtent image_extent;     // of every image
   Buffer rays, records, counters, scene;
   Buffer records_ref;  // bound at kBindingRecords: the device address of `records`
   std::vector<StorageImage> images;   // parallel to plan.images

@@ -82,6 +82,10 @@ DeviceInfo describeDevice(VkPhysicalDevice physical, uint32_t index) {
     d.max_ray_dispatch_invocation_count = rt.maxRayDispatchInvocationCount;
   }
   d.acceleration_structure_host_commands = as_ext && as_features.accelerationStructureHostCommands;
+  d.max_image_dimension_2d = base.limits.maxImageDimension2D;
+  d.max_storage_buffer_range = base.limits.maxStorageBufferRange;
+  for (int k = 0; k < 3; ++k)
+    d.max_launch_size[k] = uint64_t(base.limits.maxComputeWorkGroupCount[k]) * base.limits.maxComputeWorkGroupSize[k];
   return d;
 }
 

@@ -45,6 +45,10 @@ void checkSupport(const VulkanContext& ctx, const Case& c) {
   if (c.pipeline.max_recursion > d.max_ray_recursion_depth)
     throw NotSupportedError("max_recursion " + std::to_string(c.pipeline.max_recursion) +
                             " > device maxRayRecursionDepth " + std::to_string(d.max_ray_recursion_depth));
+  if (c.rays.width > d.max_launch_size[0] || c.rays.height > d.max_launch_size[1])
+    throw NotSupportedError("launch " + std::to_string(c.rays.width) + "x" + std::to_string(c.rays.height) +
+                            " > maxComputeWorkGroupCount * maxComputeWorkGroupSize (" +
+                            std::to_string(d.max_launch_size[0]) + "x" + std::to_string(d.max_launch_size[1]) + ")");
   uint64_t launch = static_cast<uint64_t>(c.rays.width) * c.rays.height;
   if (launch > d.max_ray_dispatch_invocation_count)
     throw NotSupportedError("launch of " + std::to_string(launch) + " rays > maxRayDispatchInvocationCount " +
@@ -78,7 +82,8 @@ void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results&
 
   recordImageClears(cmd, buffers.images);
   recordTrace(ctx, cmd, pipeline, pipeline_layout, set, sbt.layout, sbt.base, c.rays.width, c.rays.height);
-  recordReadback(cmd, buffers.images, buffers.image_readback, c.rays.width, c.rays.height);
+  recordReadback(cmd, buffers.images, buffers.image_readback, buffers.image_extent.width,
+                 buffers.image_extent.height);
   submitAndWait(ctx, cmd, kTraceTimeoutNs);
   readResults(buffers, plan, c.rays.width, c.rays.height, r);
 }

@@ -36,6 +36,10 @@ struct DeviceInfo {
            shader_group_base_alignment = 0, max_ray_recursion_depth = 0,
            max_ray_hit_attribute_size = 0, max_shader_group_stride = 0,
            max_ray_dispatch_invocation_count = 0;
+  // Launch and binding limits a case's size meets (vkCmdTraceRaysKHR: each
+  // launch dimension at most maxComputeWorkGroupCount * maxComputeWorkGroupSize).
+  uint32_t max_image_dimension_2d = 0, max_storage_buffer_range = 0;
+  uint64_t max_launch_size[3] = {0, 0, 0};
   bool acceleration_structure_host_commands = false;
 };
 

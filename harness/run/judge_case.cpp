@@ -1,6 +1,6 @@
-#include "cli/judge_case.h"
+#include "run/judge_case.h"
 
-#include "cli/failing_rays.h"
+#include "run/failing_rays.h"
 #include "compare/compare_results.h"
 #include "results/image_files.h"
 

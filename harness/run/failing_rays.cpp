@@ -1,4 +1,4 @@
-#include "cli/failing_rays.h"
+#include "run/failing_rays.h"
 
 #include <set>
 

@@ -1,4 +1,4 @@
-#include "cli/case_discovery.h"
+#include "run/case_discovery.h"
 
 #include <fnmatch.h>
 

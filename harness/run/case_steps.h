@@ -1,0 +1,68 @@
+// The steps of one case, in the order the run loop (run/run_loop.h) takes them:
+//   caseFileError  a file that does not parse (the parser also checks rule
+//                  labels against the catalog) is a CaseError (the case is at
+//                  fault, not the device)
+//   CaseRunner     the model side first (a planted fault chooses its rays by
+//                  the model's answer), then the device side, which gets the
+//                  model's results; then the judgement
+//   guardCase      an exception in any of it is that case's CaseError
+//   reportCase     the case joins the reports; an exception while writing
+//                  them is that case's CaseError and the reports still appear
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "case/parse_case.h"
+#include "report/baseline.h"
+#include "report/case_outcome.h"
+#include "report/run_summary.h"
+#include "report/write_reports.h"
+#include "run/backend.h"
+#include "run/case_discovery.h"
+#include "run/isolation.h"
+#include "run/run_options.h"
+
+namespace rayspec {
+
+// A CaseError outcome: finding `rule` ("case-file", "harness") with the message.
+CaseOutcome caseErrorOutcome(const std::string& name, const std::vector<std::string>& rules, const std::string& rule,
+                             const std::string& message);
+
+// The CaseError of a case file that did not parse; none when it is usable.
+std::optional<CaseOutcome> caseFileError(const CaseFile& file, const ParseResult& parsed);
+
+// step(), or the CaseError naming the exception it threw.
+CaseOutcome guardCase(const std::string& name, const std::vector<std::string>& rules,
+                      const std::function<CaseOutcome()>& step);
+
+class CaseRunner {
+ public:
+  // device, model: backends that live across cases (--no-isolation); nullptr
+  // runs that side of every case in its own child process.
+  CaseRunner(const RunOptions& options, Backend* device, Backend* model)
+      : opt_(options), device_(device), model_(model) {}
+  // Runs the case on the sides asked for and judges it. Throws HarnessError.
+  // *interrupted: a signal stopped a side; the outcome means nothing then.
+  CaseOutcome run(const Case& c, bool* interrupted) const;
+
+ private:
+  SideResult runSide(const Side& side, Backend* in_process, const Case& c, const Plan& plan,
+                     const std::string& dir) const;
+  const RunOptions& opt_;
+  Backend* device_;
+  Backend* model_;
+};
+
+// Writes the reports of a run folder; the run loop's is writeReports.
+using ReportWriter =
+    std::function<std::string(const std::vector<CaseOutcome>&, const RunInfo&, const std::string& dir)>;
+
+// Applies the baseline, adds the outcome to the summary (its progress line)
+// and rewrites the reports with it.
+void reportCase(CaseOutcome outcome, const Baseline& baseline, const RunInfo& info, const std::string& dir,
+                RunSummary& summary, const ReportWriter& write = writeReports);
+
+}  // namespace rayspec

@@ -1,0 +1,51 @@
+// Runs a function in a forked child process under limits, so that whatever
+// it does (crash, hang, exhaust memory) ends only the child. The child dies
+// with its parent (PR_SET_PDEATHSIG, checked against the race with the
+// parent's death), gets the default SIGINT / SIGTERM dispositions back, and
+// may hold at most `memory_limit` bytes of private writable memory
+// (RLIMIT_DATA: heap, anonymous maps, thread stacks; address space only
+// reserved, as glibc's malloc arenas and Embree reserve it, does not count, so
+// the limit does not grow with the number of cores). An `operator new` beyond
+// it ends the child with kChildOutOfMemory. The parent
+// kills the child after `timeout_seconds`, or at once when the run was
+// interrupted (run/interrupt.h).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+namespace rayspec {
+
+struct ChildLimits {
+  double timeout_seconds = 0;  // 0: none
+  uint64_t memory_limit = 0;   // bytes of private writable memory (RLIMIT_DATA); 0: none
+};
+
+// Exit statuses the child itself chooses.
+inline constexpr int kChildOutOfMemory = 113;  // operator new failed under the memory limit
+inline constexpr int kChildException = 114;    // an exception escaped the body (message: what())
+inline constexpr int kChildOrphaned = 115;     // the parent was gone before the child started
+
+struct ChildEnd {
+  enum class How { Exited, Signaled, TimedOut, Interrupted, NotStarted };
+  How how = How::NotStarted;
+  int code = 0;         // Exited: the exit status; Signaled: the signal
+  double seconds = 0;
+  std::string message;  // what the body left in its `message` argument
+  std::string error;    // NotStarted: why (fork or pipe failed)
+  bool ok() const { return how == How::Exited && code == 0; }
+};
+
+// `body` runs in the child; its return value is the child's exit status and
+// the text it leaves in `message` reaches the parent through a pipe.
+ChildEnd runChild(const std::function<int(std::string& message)>& body, const ChildLimits& limits);
+
+// Why a child that did not end well ended, for people: "the model process
+// died of signal 11 (Segmentation fault)". `who` names the process.
+std::string describeChildEnd(const ChildEnd& end, const std::string& who, const ChildLimits& limits);
+
+// "8 GiB", "512 MiB".
+std::string formatBytes(uint64_t bytes);
+
+}  // namespace rayspec

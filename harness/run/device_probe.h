@@ -1,0 +1,28 @@
+// Before the first case: is there a device to run on? Asked in a short child
+// process (the parent must not initialise Vulkan before it forks the cases'
+// children), or in this process with --no-isolation. A run whose --device
+// matches nothing stops there, naming the devices there are.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "run/child_process.h"
+#include "vulkan/vulkan_backend.h"
+
+namespace rayspec {
+
+struct DeviceProbe {
+  bool found = false;
+  std::string description;           // the device the cases will run on: "llvmpipe (...) (Mesa ...)"
+  std::string error;                 // why none was found
+  std::vector<std::string> devices;  // every device the loader sees, for people
+};
+
+DeviceProbe probeDevice(const VulkanOptions& options, const ChildLimits& limits);  // in a child process
+DeviceProbe probeDeviceInProcess(const VulkanOptions& options);
+
+// "no Vulkan device ... whose name contains 'x'; devices: [0] llvmpipe (ray tracing)".
+std::string probeFailure(const DeviceProbe& p);
+
+}  // namespace rayspec

@@ -1,0 +1,55 @@
+// One side of a case (the model or the device) run in a child process, or in
+// this process with --no-isolation. The same function runs both sides: the
+// child makes the backend (Vulkan is never initialised in the parent before a
+// fork), runs the case, closes the backend (validation errors at teardown join
+// the case's validation messages), calls `after` (planted faults), writes the
+// results bundle and exits; the parent reads the bundle back and writes the
+// PNG / EXR files (OpenImageIO's and OpenEXR's thread pools belong to the
+// parent). A child that crashes, hangs past the timeout or runs out of memory
+// gives Results with status Crash or Timeout, and the run goes on.
+// Cost on lavapipe with the validation layer: about 0.2 s per device child
+// (instance + device creation); a model child costs a few milliseconds.
+#pragma once
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "run/backend.h"
+#include "run/child_process.h"
+
+namespace rayspec {
+
+// The case or the harness is at fault, not the backend: the results bundle
+// could not be written or read, an exception escaped. The run loop makes the
+// case a CaseError.
+class HarnessError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Side {
+  std::string label;         // "model" or "device": names the process in messages
+  std::string backend_name;  // Results::backend when the child left no results ("model", "vulkan")
+  BackendFactory make;       // makes the backend where it runs
+  // Runs after the backend, where it ran, and may change the results (a
+  // planted fault); returns a note for the report ("" none).
+  std::function<std::string(const Case&, const Plan&, Results&)> after;
+};
+
+struct SideResult {
+  Results results;
+  std::string note;          // what `after` said
+  bool interrupted = false;  // a signal stopped the run while this side ran: the results mean nothing
+};
+
+// In a child process under `limits`; the bundle goes to `dir`. Throws
+// HarnessError (see above).
+SideResult runIsolated(const Side& side, const Case& c, const Plan& plan, const ChildLimits& limits,
+                       const std::string& dir);
+
+// In this process, with a backend that lives across cases (--no-isolation).
+SideResult runInProcess(const Side& side, Backend& backend, const Case& c, const Plan& plan, const std::string& dir);
+
+}  // namespace rayspec

@@ -1,0 +1,180 @@
+#include "run/run_loop.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <memory>
+
+#include "fault/planted_fault.h"
+#include "report/rule_catalog.h"
+#include "run/case_steps.h"
+#include "run/device_probe.h"
+#include "run/interrupt.h"
+#include "run/model_adapter.h"
+#include "run/vulkan_adapter.h"
+
+namespace rayspec {
+namespace {
+
+bool validationLayerInstalled() {
+  if (const char* path = std::getenv("VK_LAYER_PATH"))
+    if (std::filesystem::exists(std::string(path) + "/VkLayer_khronos_validation.json")) return true;
+  for (const char* dir : {"/usr/share/vulkan/explicit_layer.d", "/usr/local/share/vulkan/explicit_layer.d",
+                          "/etc/vulkan/explicit_layer.d"})
+    if (std::filesystem::exists(std::string(dir) + "/VkLayer_khronos_validation.json")) return true;
+  return false;
+}
+
+std::string now() {
+  char text[64];
+  const std::time_t t = std::time(nullptr);
+  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M:%S UTC", std::gmtime(&t));
+  return text;
+}
+
+std::vector<CaseFile> caseFiles(const RunOptions& opt) {
+  if (opt.case_files.empty()) return findCases(opt.cases_dir, opt.filter);
+  std::vector<CaseFile> files;
+  for (const std::string& f : opt.case_files) files.push_back(caseFileFor(f, opt.cases_dir));
+  return files;
+}
+
+// Options that cannot work together; the message, or "".
+std::string optionError(const RunOptions& opt) {
+  if (!opt.no_validation && opt.strict_validation && !validationLayerInstalled())
+    return "the Khronos validation layer is not installed (vulkan-validationlayers); run tools/setup.sh";
+  if (!opt.plant_fault.empty() && !isFaultName(opt.plant_fault)) return "unknown fault '" + opt.plant_fault + "'";
+  if (isProcessFault(opt.plant_fault) && opt.no_isolation)
+    return "the fault '" + opt.plant_fault + "' needs the device in a child process (no --no-isolation)";
+  if (opt.no_device && opt.no_model) return "--no-device and --no-model: nothing would run";
+  return {};
+}
+
+}  // namespace
+
+int runCases(const RunOptions& opt) {
+  const std::vector<CaseFile> files = caseFiles(opt);
+  if (files.empty()) {
+    std::fprintf(stderr, "rayspec run: no case matches '%s' in %s\n", opt.filter.c_str(), opt.cases_dir.c_str());
+    return kExitSetup;
+  }
+  if (const std::string err = optionError(opt); !err.empty()) {
+    std::fprintf(stderr, "rayspec run: %s\n", err.c_str());
+    return kExitSetup;
+  }
+  RunInfo info;
+  info.started = now();
+  info.model_tier = opt.no_model ? "none" : opt.model_tier;
+  info.planned_cases = files.size();
+  info.interrupted = true;  // until the last case is done: a run killed before then stays marked
+  std::string catalog_error;
+  info.catalog = loadRuleCatalog(opt.rules_file, &catalog_error);
+  if (!catalog_error.empty()) std::fprintf(stderr, "rayspec run: %s\n", catalog_error.c_str());
+  if (!opt.plant_fault.empty()) std::printf("Planted fault: %s (test only)\n", opt.plant_fault.c_str());
+
+  Baseline baseline;
+  if (!opt.baseline.empty()) {
+    std::string baseline_error;
+    baseline = loadBaseline(opt.baseline, &baseline_error);
+    if (!baseline_error.empty()) {
+      std::fprintf(stderr, "rayspec run: %s\n", baseline_error.c_str());
+      return kExitSetup;
+    }
+  }
+
+  // The device must exist before any case runs. Isolated, the parent never
+  // initialises Vulkan: a short child process looks; without isolation one
+  // device serves every case.
+  VulkanOptions vopt;
+  vopt.device_filter = opt.device;
+  vopt.validation = !opt.no_validation;
+  std::unique_ptr<VulkanAdapter> device;
+  std::unique_ptr<ModelAdapter> model;
+  bool device_found = false;
+  if (!opt.no_device) {
+    DeviceProbe probe;
+    if (opt.no_isolation) {
+      device = std::make_unique<VulkanAdapter>(vopt);
+      probe.found = device->found();
+      probe.description = device->description();
+      probe.error = device->error();
+      if (!probe.found) probe = probeDeviceInProcess(vopt);
+      info.validation = device->validationEnabled();
+    } else {
+      VulkanOptions quick = vopt;
+      quick.validation = false;  // only whether a device matches
+      probe = probeDevice(quick, ChildLimits{opt.timeout, opt.memory_limit});
+      info.validation = vopt.validation && validationLayerInstalled();
+    }
+    if (!probe.found) {
+      std::fprintf(stderr, "rayspec run: no device to run on: %s\n", probeFailure(probe).c_str());
+      return kExitSetup;
+    }
+    device_found = true;
+    info.device = probe.description;
+    std::printf("Device: %s%s%s\n", info.device.c_str(), info.validation ? ", validation layer on" : ", validation layer OFF",
+                opt.no_isolation ? ", in this process" : "");
+  }
+  if (!opt.no_model) {
+    if (opt.no_isolation) model = std::make_unique<ModelAdapter>(ModelOptions{parseModelTier(opt.model_tier), opt.threads});
+    std::printf("Model: embree, %s tier\n", opt.model_tier.c_str());
+  }
+  if (!opt.no_isolation)
+    std::printf("Each case side in its own process: timeout %g s, memory limit %s\n", opt.timeout,
+                opt.memory_limit ? formatBytes(opt.memory_limit).c_str() : "none");
+  if (!opt.baseline.empty())
+    std::printf("Baseline: %s (%zu known results)\n", opt.baseline.c_str(), baseline.expected.size());
+
+  catchInterrupts();
+  const CaseRunner runner(opt, device.get(), model.get());
+  // Unknown rule labels are case-file errors at their line:col (the parser checks them).
+  const std::vector<std::string> labels = ruleLabels(info.catalog);
+  RunSummary summary(files.size());
+  std::vector<std::pair<std::string, std::vector<std::string>>> case_rules;
+  for (const CaseFile& f : files) {
+    if (interruptSignal()) break;
+    summary.starting(f.name);
+    const auto start = std::chrono::steady_clock::now();
+    const ParseResult parsed = parseCaseFile(f.path, opt.cases_dir, labels.empty() ? nullptr : &labels);
+    bool interrupted = false;
+    CaseOutcome outcome;
+    if (std::optional<CaseOutcome> error = caseFileError(f, parsed)) {
+      outcome = *error;
+    } else {
+      const Case& c = *parsed.value;
+      outcome = guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted); });
+      if (interrupted) break;
+      case_rules.push_back({c.name, c.rules});
+    }
+    outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    info.coverage = ruleCoverage(info.catalog, case_rules);
+    if (summary.outcomes().size() + 1 == files.size()) info.interrupted = interruptSignal() != 0;
+    reportCase(outcome, baseline, info, opt.out, summary);  // a run cut short still leaves its reports
+  }
+  if (device)
+    for (const std::string& m : device->close()) summary.addTeardownError(m);
+  info.teardown_errors = summary.teardownErrors();
+  info.coverage = ruleCoverage(info.catalog, case_rules);
+  info.interrupted = summary.outcomes().size() < files.size();
+  summary.print();
+  if (info.interrupted)
+    std::printf("INTERRUPTED: %zu of %zu cases ran\n", summary.outcomes().size(), files.size());
+  if (const std::string err = writeReports(summary.outcomes(), info, opt.out); !err.empty())
+    std::fprintf(stderr, "%s\n", err.c_str());
+  std::printf("Reports: %s/report.html, results.csv, junit.xml, summary.json\n", opt.out.c_str());
+  const int status = runExitStatus(summary, files.size(), device_found, interruptSignal());
+  if (status == kExitNothingCompared) std::fprintf(stderr, "rayspec run: nothing was compared: every case is NotSupported\n");
+  return status;
+}
+
+int runExitStatus(const RunSummary& summary, size_t planned, bool device_found, int signal) {
+  if (signal) return 128 + signal;
+  if (summary.failed()) return kExitFailing;
+  if (summary.allNotSupported() || summary.outcomes().empty())
+    return planned == 1 && device_found && !summary.outcomes().empty() ? kExitNotSupported : kExitNothingCompared;
+  return kExitPass;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,45 @@
+// What `rayspec run` was asked to do (the command line fills it, cli/main.cpp).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rayspec {
+
+#ifndef RAYSPEC_SOURCE_DIR
+#define RAYSPEC_SOURCE_DIR "."
+#endif
+
+// Memory a case's model or device child process may hold (run/child_process.h,
+// RLIMIT_DATA). 8 GiB leaves room on a 24 GiB, 2-core machine for the parent,
+// another run and the page cache, and fits the largest launch a case may
+// declare (2^24 rays of records and images). Measured here (2 cores): every
+// case of the suite runs under 512 MiB on both sides but the device side of
+// the 1M-ray model/mixed-scene-1024 (768 MiB); a small case runs on lavapipe
+// with the validation layer under 256 MiB; Embree's rtcNewDevice fails under
+// 256 MiB and lavapipe under 128 MiB.
+inline constexpr uint64_t kDefaultMemoryLimit = uint64_t(8) << 30;
+
+struct RunOptions {
+  std::string device;
+  std::string filter = "*";
+  std::string out = "rayspec-results";
+  std::string cases_dir = RAYSPEC_SOURCE_DIR "/cases";
+  std::vector<std::string> case_files;
+  std::string model_tier = "exact";
+  bool no_model = false;
+  bool no_device = false;
+  bool no_validation = false;
+  bool strict_validation = false;
+  unsigned threads = 0;
+  double timeout = 120.0;        // seconds per case side (model, device), each in its own child process
+  uint64_t memory_limit = kDefaultMemoryLimit;  // bytes of memory per child (RLIMIT_DATA); 0: no limit
+  bool no_isolation = false;     // run both sides in this process (one VkDevice for all cases)
+  std::string plant_fault;       // test only: fault/planted_fault.h
+  std::string plant_fault_in = "*";  // only in cases whose name matches this glob
+  std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
+  std::string baseline;          // known failures of this driver (report/baseline.h)
+};
+
+}  // namespace rayspec

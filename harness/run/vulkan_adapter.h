@@ -1,0 +1,30 @@
+// The Vulkan device as a Backend.
+#pragma once
+
+#include <memory>
+
+#include "run/backend.h"
+#include "vulkan/vulkan_backend.h"
+
+namespace rayspec {
+
+class VulkanAdapter : public Backend {
+ public:
+  // Creates the instance and device now. Without a device, run() answers
+  // NotSupported with the reason (error()).
+  explicit VulkanAdapter(const VulkanOptions& options);
+  std::string name() const override { return "vulkan"; }
+  std::string description() const override;
+  Results run(const Case& c, const Plan& plan) override;
+  std::vector<std::string> close() override;
+
+  bool found() const { return backend_ != nullptr; }
+  const std::string& error() const { return error_; }
+  bool validationEnabled() const { return backend_ && backend_->validationEnabled(); }
+
+ private:
+  std::unique_ptr<VulkanBackend> backend_;
+  std::string error_;
+};
+
+}  // namespace rayspec

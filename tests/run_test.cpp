@@ -1,0 +1,331 @@
+// The run module: the Backend adapters, one isolation function for both
+// sides (timeout, memory limit, crash), children that die with their parent,
+// per-case CaseErrors, and the exit status.
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <thread>
+
+#include "case/parse_case.h"
+#include "compare/compare_results.h"
+#include "results/record_layout.h"
+#include "report/rule_catalog.h"
+#include "run/case_steps.h"
+#include "run/child_process.h"
+#include "run/isolation.h"
+#include "run/model_adapter.h"
+#include "run/run_loop.h"
+#include "run/vulkan_adapter.h"
+
+namespace rayspec {
+namespace {
+namespace fs = std::filesystem;
+
+const std::string kCases = RAYSPEC_SOURCE_DIR "/cases";
+
+Case loadCase(const std::string& name) {
+  ParseResult p = parseCaseFile(kCases + "/" + name + ".yaml", kCases);
+  EXPECT_TRUE(p.value) << (p.errors.empty() ? "" : p.errors[0].format());
+  return p.value ? *p.value : Case{};
+}
+
+std::string tempDir(const std::string& name) {
+  const std::string dir = ::testing::TempDir() + "/rayspec-run-test/" + name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// A model side whose engine does something bad before answering.
+class MisbehavingModel : public Backend {
+ public:
+  explicit MisbehavingModel(std::function<void()> act) : act_(std::move(act)) {}
+  std::string name() const override { return "model"; }
+  std::string description() const override { return "a model that misbehaves"; }
+  Results run(const Case& c, const Plan&) override {
+    act_();
+    Results r;
+    r.backend = name();
+    r.case_name = c.name;
+    return r;
+  }
+  std::vector<std::string> close() override { return {}; }
+
+ private:
+  std::function<void()> act_;
+};
+
+Side misbehavingSide(std::function<void()> act) {
+  return Side{"model", "model", [act] { return std::make_unique<MisbehavingModel>(act); }, {}};
+}
+
+Side modelSide() {
+  return Side{"model", "model", [] { return std::make_unique<ModelAdapter>(ModelOptions{}); }, {}};
+}
+
+Side deviceSide() {
+  VulkanOptions v;
+  v.validation = false;
+  return Side{"device", "vulkan", [v] { return std::make_unique<VulkanAdapter>(v); }, {}};
+}
+
+// ---- item 1: one Backend interface, two adapters ----------------------------
+
+TEST(Backend, ModelAndDeviceAnswerThroughOneInterface) {
+  const Case c = loadCase("results/miss-xor-closest-hit");
+  const Plan plan = derivePlan(c);
+  VulkanOptions v;
+  v.validation = false;
+  std::unique_ptr<Backend> model = std::make_unique<ModelAdapter>(ModelOptions{});
+  std::unique_ptr<Backend> device = std::make_unique<VulkanAdapter>(v);
+  EXPECT_EQ(model->name(), "model");
+  EXPECT_EQ(device->name(), "vulkan");
+  EXPECT_NE(model->description().find("exact"), std::string::npos) << model->description();
+  EXPECT_NE(device->description().find("llvmpipe"), std::string::npos) << device->description();
+  const Results m = model->run(c, plan), d = device->run(c, plan);
+  ASSERT_TRUE(m.ok()) << m.statusText();
+  ASSERT_TRUE(d.ok()) << d.statusText();
+  EXPECT_EQ(compareResults(c, plan, d, m).status, Status::Pass);
+  EXPECT_TRUE(device->close().empty());
+}
+
+TEST(Backend, DeviceThatIsNotThereAnswersNotSupportedWithWhy) {
+  VulkanOptions v;
+  v.device_filter = "nosuchdevice";
+  v.validation = false;
+  VulkanAdapter device(v);
+  EXPECT_FALSE(device.found());
+  const Case c = loadCase("results/miss-xor-closest-hit");
+  const Results r = device.run(c, derivePlan(c));
+  EXPECT_EQ(r.status, RunStatus::NotSupported);
+  EXPECT_NE(r.status_detail.find("nosuchdevice"), std::string::npos) << r.status_detail;
+}
+
+// ---- item 2: both sides through one isolation function ----------------------
+
+TEST(Isolation, BothSidesRunIsolatedAndAgree) {
+  const Case c = loadCase("results/miss-xor-closest-hit");
+  const Plan plan = derivePlan(c);
+  const std::string dir = tempDir("both-sides");
+  const ChildLimits limits{60, kDefaultMemoryLimit};
+  const SideResult m = runIsolated(modelSide(), c, plan, limits, dir + "/model");
+  const SideResult d = runIsolated(deviceSide(), c, plan, limits, dir + "/device");
+  ASSERT_TRUE(m.results.ok()) << m.results.statusText();
+  ASSERT_TRUE(d.results.ok()) << d.results.statusText();
+  EXPECT_EQ(m.results.backend, "model");
+  EXPECT_EQ(d.results.backend, "vulkan");
+  EXPECT_EQ(compareResults(c, plan, d.results, m.results).status, Status::Pass);
+  EXPECT_TRUE(fs::exists(dir + "/model/results.json"));
+}
+
+TEST(Isolation, EmbreeAndTbbStartUnderTheDefaultMemoryLimit) {
+  // Every thread of the model (a case with callables, lights and a camera).
+  const Case c = loadCase("callable/lights");
+  const Plan plan = derivePlan(c);
+  const SideResult m = runIsolated(modelSide(), c, plan, ChildLimits{120, kDefaultMemoryLimit}, tempDir("big-model"));
+  EXPECT_TRUE(m.results.ok()) << m.results.statusText();
+  EXPECT_EQ(m.results.records.size(), size_t(c.rays.width) * c.rays.height * recordWords());
+}
+
+TEST(Isolation, ModelHangIsATimeout) {
+  const Case c = loadCase("results/miss-xor-closest-hit");
+  const auto start = std::chrono::steady_clock::now();
+  const SideResult m = runIsolated(misbehavingSide([] { for (;;) pause(); }), c, derivePlan(c), ChildLimits{1, 0},
+                                   tempDir("hang"));
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
+  EXPECT_EQ(m.results.status, RunStatus::Timeout);
+  EXPECT_EQ(m.results.backend, "model");
+  EXPECT_EQ(m.results.status_detail, "the model process ran longer than 1 s (killed)");
+  EXPECT_EQ(backendVerdict(m.results).headline().rfind("Timeout: model: ", 0), 0u) << backendVerdict(m.results).headline();
+}
+
+TEST(Isolation, ModelCrashIsACrash) {
+  const Case c = loadCase("results/miss-xor-closest-hit");
+  const SideResult m = runIsolated(misbehavingSide([] { std::raise(SIGSEGV); }), c, derivePlan(c), ChildLimits{30, 0},
+                                   tempDir("crash"));
+  EXPECT_EQ(m.results.status, RunStatus::Crash);
+  EXPECT_NE(m.results.status_detail.find("the model process died of signal 11"), std::string::npos)
+      << m.results.status_detail;
+}
+
+TEST(Isolation, ModelBeyondTheMemoryLimitIsACrash) {
+  const Case c = loadCase("results/miss-xor-closest-hit");
+  // Without a limit it holds 1 GiB and answers; under 256 MiB it cannot.
+  auto hog = [] {
+    std::vector<std::unique_ptr<char[]>> blocks;
+    for (int i = 0; i < 16; ++i) {
+      blocks.push_back(std::make_unique<char[]>(64 << 20));
+      std::fill_n(blocks.back().get(), 64 << 20, char(i));
+    }
+  };
+  const SideResult m = runIsolated(misbehavingSide(hog), c, derivePlan(c), ChildLimits{60, 256u << 20},
+                                   tempDir("memory"));
+  EXPECT_EQ(m.results.status, RunStatus::Crash);
+  EXPECT_EQ(m.results.status_detail, "the model process ran out of memory (--memory-limit 256 MiB)");
+}
+
+TEST(Isolation, BundleThatCannotBeWrittenIsAHarnessErrorNotACrash) {
+  const Case c = loadCase("results/miss-xor-closest-hit");
+  const std::string dir = tempDir("unwritable");
+  std::ofstream(dir + "/file") << "a file where the bundle's folder should go";
+  EXPECT_THROW(runIsolated(modelSide(), c, derivePlan(c), ChildLimits{60, 0}, dir + "/file/model"), HarnessError);
+}
+
+// ---- item 3: a child dies with its parent ------------------------------------
+
+bool processGone(pid_t pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string stat((std::istreambuf_iterator<char>(in)), {});
+  const size_t paren = stat.rfind(')');
+  return paren == std::string::npos || stat[paren + 2] == 'Z' || stat[paren + 2] == 'X';
+}
+
+TEST(ChildProcess, DiesWithItsParent) {
+  int fds[2];
+  ASSERT_EQ(pipe(fds), 0);
+  const pid_t parent = fork();
+  if (parent == 0) {
+    // A parent whose child hangs; the child tells the test its pid.
+    runChild(
+        [&](std::string&) {
+          const pid_t me = getpid();
+          [[maybe_unused]] ssize_t n = write(fds[1], &me, sizeof me);
+          for (;;) pause();
+          return 0;
+        },
+        ChildLimits{});
+    _exit(0);
+  }
+  close(fds[1]);
+  pid_t child = 0;
+  ASSERT_EQ(read(fds[0], &child, sizeof child), static_cast<ssize_t>(sizeof child));
+  close(fds[0]);
+  kill(parent, SIGKILL);
+  waitpid(parent, nullptr, 0);
+  bool gone = false;
+  for (int i = 0; i < 100 && !gone; ++i) {
+    gone = processGone(child);
+    if (!gone) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  if (!gone) kill(child, SIGKILL);
+  EXPECT_TRUE(gone) << "the hung child outlived its killed parent";
+}
+
+// ---- items 4 and 5: the case or the harness is at fault ----------------------
+
+TEST(CaseSteps, ExceptionWhileJudgingIsACaseError) {
+  const CaseOutcome o = guardCase("fam/long-image", {"R-IGNORE"}, []() -> CaseOutcome {
+    throw fs::filesystem_error("status", fs::path(std::string(300, 'i')),
+                               std::make_error_code(std::errc::filename_too_long));
+  });
+  EXPECT_EQ(o.status, Status::CaseError);
+  EXPECT_EQ(o.name, "fam/long-image");
+  EXPECT_EQ(o.rules, std::vector<std::string>{"R-IGNORE"});
+  EXPECT_NE(o.headline.find("File name too long"), std::string::npos) << o.headline;
+  EXPECT_TRUE(isFailing(o.status));
+}
+
+TEST(CaseSteps, ExceptionWhileReportingIsACaseErrorAndTheReportsAreStillWritten) {
+  const std::string dir = tempDir("report-seam");
+  // The report writer, with a seam: it throws on an image name the file system refuses.
+  const ReportWriter writer = [](const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
+                                 const std::string& out) {
+    for (const CaseOutcome& o : outcomes)
+      for (const std::string& im : o.images)
+        if (im.size() > 255)
+          throw fs::filesystem_error("status", fs::path(out + "/" + o.name + "/device/" + im + ".png"),
+                                     std::make_error_code(std::errc::filename_too_long));
+    return writeReports(outcomes, info, out);
+  };
+  CaseOutcome long_image;
+  long_image.name = "fam/long-image";
+  long_image.images = {std::string(300, 'i')};
+  CaseOutcome next;
+  next.name = "fam/next";
+  RunInfo info;
+  info.planned_cases = 2;
+  RunSummary summary(2);
+  reportCase(long_image, Baseline{}, info, dir, summary, writer);
+  reportCase(next, Baseline{}, info, dir, summary, writer);
+  ASSERT_EQ(summary.outcomes().size(), 2u);
+  EXPECT_EQ(summary.outcomes()[0].status, Status::CaseError);
+  EXPECT_NE(summary.outcomes()[0].headline.find("File name too long"), std::string::npos);
+  EXPECT_EQ(summary.outcomes()[1].status, Status::Pass);
+  std::ifstream csv(dir + "/results.csv");
+  std::string first, second;
+  std::getline(csv, first);
+  std::getline(csv, second);
+  EXPECT_EQ(first.rfind("fam/long-image,Fail,", 0), 0u) << first;
+  EXPECT_EQ(second.rfind("fam/next,Pass,", 0), 0u) << second;
+}
+
+TEST(CaseSteps, CaseFileThatDoesNotParseIsACaseError) {
+  const std::string dir = tempDir("case-file");
+  const std::string path = dir + "/bad.yaml";
+  std::ofstream(path) << "rules: [R-IGNORE]\nscene: 12\n";
+  const std::optional<CaseOutcome> o = caseFileError({path, "fam/bad"}, parseCaseFile(path, dir));
+  ASSERT_TRUE(o);
+  EXPECT_EQ(o->status, Status::CaseError);
+  EXPECT_EQ(o->verdict.findings.at(0).rule, "case-file");
+  EXPECT_NE(o->headline.find(path + ":"), std::string::npos) << o->headline;
+}
+
+TEST(CaseSteps, UnknownRuleLabelIsACaseError) {
+  std::string error;
+  const std::vector<Rule> catalog = loadRuleCatalog(RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml", &error);
+  ASSERT_EQ(error, "");
+  const std::vector<std::string> labels = ruleLabels(catalog);
+  const std::string path = kCases + "/results/miss-xor-closest-hit.yaml";
+  EXPECT_FALSE(caseFileError({path, "results/miss-xor-closest-hit"}, parseCaseFile(path, kCases, &labels)))
+      << "a good case is no error";
+  const std::string dir = tempDir("rule-label");
+  const std::string bad = dir + "/unknown-rule.yaml";
+  std::ifstream in(path);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const size_t at = text.find("rules: [");
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at + 8, "R-NO-SUCH-RULE, ");
+  std::ofstream(bad) << text;
+  const std::optional<CaseOutcome> o = caseFileError({bad, "fam/unknown-rule"}, parseCaseFile(bad, dir, &labels));
+  ASSERT_TRUE(o);
+  EXPECT_EQ(o->status, Status::CaseError);
+  EXPECT_NE(o->headline.find("R-NO-SUCH-RULE"), std::string::npos) << o->headline;
+  EXPECT_NE(o->headline.find(bad + ":"), std::string::npos) << "the label's line:col: " << o->headline;
+}
+
+// ---- item 6: exit statuses --------------------------------------------------
+
+RunSummary summaryOf(std::vector<Status> statuses) {
+  RunSummary s(statuses.size());
+  for (Status st : statuses) {
+    CaseOutcome o;
+    o.name = "fam/case";
+    o.status = st;
+    s.add(o);
+  }
+  return s;
+}
+
+TEST(ExitStatus, NothingComparedIsNotASuccess) {
+  EXPECT_EQ(runExitStatus(summaryOf({Status::Pass, Status::NotSupported}), 2, true, 0), kExitPass);
+  EXPECT_EQ(runExitStatus(summaryOf({Status::Pass, Status::Fail}), 2, true, 0), kExitFailing);
+  EXPECT_EQ(runExitStatus(summaryOf({Status::CaseError}), 1, true, 0), kExitFailing);
+  // A single NotSupported case is ctest's skip only when a device was there to say so.
+  EXPECT_EQ(runExitStatus(summaryOf({Status::NotSupported}), 1, true, 0), kExitNotSupported);
+  EXPECT_EQ(runExitStatus(summaryOf({Status::NotSupported}), 1, false, 0), kExitNothingCompared);
+  EXPECT_EQ(runExitStatus(summaryOf({Status::NotSupported, Status::NotSupported}), 2, true, 0), kExitNothingCompared);
+  EXPECT_EQ(runExitStatus(summaryOf({}), 3, true, 0), kExitNothingCompared);
+  EXPECT_EQ(runExitStatus(summaryOf({Status::Pass}), 2, true, SIGTERM), 128 + SIGTERM);
+}
+
+}  // namespace
+}  // namespace rayspec
