@@ -283,8 +283,10 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
     if (!(force && force[k] >= 0 ? force[k] == 1 : cand.hit)) continue;
     bool inside = cand.t > tr.tmin && cand.t < tr.tmax_cur;
     // What-if run forcing a hit at an interval end (tmin-tie, tmax-tie): a
-    // float ray test may put it a step inside.
-    if (!inside && force && force[k] == 1 && !tr.best.valid && cand.t > tr.tmin - tr.tol(cand.t) &&
+    // float ray test may put it a step inside, unless every device computes
+    // this t exactly (R-CAND-TRI-OPEN, model/exact_interval.h).
+    const bool exactOut = (cand.exact_tmin && cand.t <= tr.tmin) || (cand.exact_tmax && cand.t >= tr.tmax_cur);
+    if (!inside && force && force[k] == 1 && !tr.best.valid && !exactOut && cand.t > tr.tmin - tr.tol(cand.t) &&
         cand.t < tr.tmax_cur + tr.tol(cand.t))
       inside = true;
     const bool tie = tr.exact && tr.ties(cand.t);
