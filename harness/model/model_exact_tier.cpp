@@ -37,7 +37,7 @@ void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& ca
     if (facing(scene, cand, r, tr.flags).culled) return false;
     // R-CAND-TRI-OPEN: at or beyond an end every device judges exactly.
     if ((cand.exact_tmin && cand.t <= r.tmin) || (cand.exact_tmax && cand.t >= r.tmax)) return false;
-    const double tl = tr.tol(cand.t);
+    const double tl = tr.endTol(cand);
     return !(cand.t < r.tmin - tl || cand.t > r.tmax + tl);
   };
   auto add = [&](bool hit, uint32_t i, uint32_t g, uint32_t p) {
@@ -65,8 +65,10 @@ void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& ca
       why = cand.ambiguity == TriAmbiguity::Vertex ? AmbiguityReason::Vertex : AmbiguityReason::Edge;
     // R-CAND-TRI-OPEN: an interval end is a tie only where a device's t may
     // round across it (model/exact_interval.h).
-    else if (cand.hit && !cand.exact_tmin && std::fabs(cand.t - r.tmin) <= tl) why = AmbiguityReason::TminTie;
-    else if (cand.hit && !cand.exact_tmax && std::fabs(cand.t - r.tmax) <= tl) why = AmbiguityReason::TmaxTie;
+    else if (cand.hit && !cand.exact_tmin && std::fabs(cand.t - r.tmin) <= tr.endTol(cand))
+      why = AmbiguityReason::TminTie;
+    else if (cand.hit && !cand.exact_tmax && std::fabs(cand.t - r.tmax) <= tr.endTol(cand))
+      why = AmbiguityReason::TmaxTie;
     if (why) {
       // The first reason found, except that a vertex outranks an edge met at
       // the same t (the triangles around a vertex include ones that see only

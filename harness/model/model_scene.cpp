@@ -129,7 +129,9 @@ void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
   c.b1 = static_cast<float>(h.b1);
   c.b2 = static_cast<float>(h.b2);
   c.ambiguity = g->tier == ModelTier::Exact ? h.ambiguity : TriAmbiguity::None;
-  if (g->tier == ModelTier::Exact && g->vertex_err == DVec3{} && objectRayExact(mi.form, mi.src->transform, tc->origin)) {
+  c.t_err = h.t_err;
+  if (g->tier == ModelTier::Exact && g->vertex_err == DVec3{} &&
+      objectRayExact(mi.form, mi.src->transform, tc->origin)) {
     const ExactEnds ends = exactEnds(o, d, v0, v1, v2, h.t, tc->tmin, tc->tmax);
     c.exact_tmin = ends.tmin;
     c.exact_tmax = ends.tmax;

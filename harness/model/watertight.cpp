@@ -1,5 +1,6 @@
 #include "model/watertight.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rayspec {
@@ -67,6 +68,16 @@ WatertightHit watertightIntersect(const DVec3& o, const DVec3& d, const DVec3& v
     r.b1 = e[1] / det;
     r.b2 = e[2] / det;
     if (std::isnan(r.t)) { r.valid = false; return r; }
+    const double dirErr = err.direction[kz] / std::fabs(d[kz]) + round;
+    double tErr = 0, depthErr = 0;
+    for (int i = 0; i < 3; ++i) {
+      const double az = std::fabs((*v[i])[kz] - o[kz]);
+      tErr += bound[i] * std::fabs(pz[i] - r.t);
+      depthErr = std::max(depthErr, (err.origin[kz] + err.vertex[kz] + round * az) * std::fabs(sz) +
+                                        dirErr * std::fabs(pz[i]));
+    }
+    r.t_err = tErr / std::fabs(det) + depthErr;
+    if (!std::isfinite(r.t_err)) r.t_err = 0;
   }
   r.hit = !(anyNeg && anyPos) && det != 0.0;
   if (clearNeg && clearPos) return r;  // clearly outside

@@ -43,6 +43,10 @@ struct WatertightHit {
   double t = 0, b1 = 0, b2 = 0;  // barycentrics: weights of v1 and v2
   TriAmbiguity ambiguity = TriAmbiguity::None;  // near an edge / vertex
   bool valid = true;       // false: NaN somewhere (never a hit)
+  // How far a device's t may lie from `t` (same frame: each vertex's depth
+  // error, and the edge functions' errors weighted by how far each vertex's
+  // depth lies from t); 0 when there is no t (zero determinant).
+  double t_err = 0;
 };
 
 // Per component, how far a device's object-space ray and vertices may lie
