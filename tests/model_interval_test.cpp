@@ -117,6 +117,23 @@ TEST(ExactInterval, WhereTheClaimStops) {
   EXPECT_EQ(ru.ambiguous[0].reason, AmbiguityReason::TmaxTie);
 }
 
+// Far from the origin an end is judged by the t error of the device's own
+// frame, not by the magnitude of the world origin: a hit at t = 5 through an
+// instance at 2^33 (scaled by 2^13, an exact inverse) is no tmin-tie at
+// tmin = 0.001.
+TEST(ExactInterval, EndToleranceLivesInTheTranslatedFrame) {
+  const float big = 8589934592.0f, scale = 8192.0f;
+  Ray r = downRay(big + 0.5f * scale, big - 0.5f * scale);
+  Case c = baseCase({quad()}, {r});
+  Transform& m = c.scene.instances[0].transform;
+  m[0] = m[5] = scale;
+  m[3] = m[7] = big;
+  Results res = run(c, ModelTier::Exact);
+  EXPECT_EQ(word(res, 0, "hit"), 1u);
+  EXPECT_EQ(fword(res, 0, "hit_t"), 5.0f);
+  EXPECT_TRUE(res.ambiguous.empty());
+}
+
 // A shared edge exactly at tmax: neither triangle is a candidate, so no
 // what-if run may force one in: the ray is a clear miss.
 TEST(ExactInterval, SharedEdgeAtAnExactEndIsAClearMiss) {
