@@ -4,12 +4,15 @@
 // Without the comparison catching the fault the status would stay Pass.
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <map>
 #include <memory>
+#include <set>
 
 #include "case/parse_case.h"
 #include "compare/compare_results.h"
 #include "fault/planted_fault.h"
+#include "fault/record_edit.h"
 #include "model/model_backend.h"
 #include "plan/plan.h"
 #include "results/record_layout.h"
@@ -57,7 +60,7 @@ class PlantedFault : public ::testing::Test {
 
   // Plants the fault and returns the verdict; checks first that the untouched
   // pair passes, so the status comes from the fault.
-  Verdict plant(const std::string& case_name, const std::string& fault) {
+  Verdict plant(const std::string& case_name, const std::string& fault, Results* planted = nullptr) {
     if (!backend_) {
       ADD_FAILURE() << "no Vulkan ray tracing device: " << backend_error_;
       return {};
@@ -70,7 +73,18 @@ class PlantedFault : public ::testing::Test {
     const FaultResult f = plantFault(fault, r.c, r.plan, corrupted, r.model);
     EXPECT_TRUE(f.applied) << fault << " in " << case_name << ": " << f.what;
     EXPECT_NE(corrupted.records, r.device.records) << "the fault changed no record";
+    if (planted) *planted = corrupted;
     return compareResults(r.c, r.plan, corrupted, r.model);
+  }
+
+  // The device's results with one edit, judged; the untouched pair must pass.
+  Verdict edited(const std::string& case_name, const std::function<void(const Ran&, RecordEdit&)>& edit) {
+    const Ran& r = run(case_name);
+    EXPECT_EQ(compareResults(r.c, r.plan, r.device, r.model).status, Status::Pass) << case_name;
+    Results device = r.device;
+    RecordEdit e{device};
+    edit(r, e);
+    return compareResults(r.c, r.plan, device, r.model);
   }
 
   static bool hasFinding(const Verdict& v, Status s, const std::string& rule) {
@@ -156,6 +170,175 @@ TEST(PlantedFaultNames, UnknownOrInapplicableFaultChangesNothing) {
   EXPECT_TRUE(isFaultName("crash"));
   EXPECT_TRUE(isProcessFault("hang"));
   EXPECT_FALSE(isFaultName("nonsense"));
+}
+
+// ---- interval ends, ties and large coordinates ----------------------------
+
+namespace numerics {
+
+// Rays whose record differs between two results.
+std::set<uint32_t> changedRays(const Results& a, const Results& b) {
+  std::set<uint32_t> out;
+  const size_t words = recordWords();
+  for (uint32_t ray = 0; ray * words < a.records.size(); ++ray)
+    if (!std::equal(a.records.begin() + ray * words, a.records.begin() + (ray + 1) * words,
+                    b.records.begin() + ray * words))
+      out.insert(ray);
+  return out;
+}
+
+const Finding* failing(const Verdict& v, const std::string& field) {
+  for (const Finding& f : v.findings)
+    if (f.status == Status::Fail && f.message.find("'" + field + "'") != std::string::npos) return &f;
+  return nullptr;
+}
+
+// The device answers `ray` with a miss, or with a hit on (instance, primitive)
+// of geometry 0.
+void answerMiss(const Case& c, RecordEdit& e, uint32_t ray) {
+  if (e.get(ray, "closest_hit_runs") == 0) return;
+  e.set(ray, "closest_hit_runs", 0);
+  e.set(ray, "miss_runs", 1);
+  e.set(ray, "hit", 0);
+  e.bumpCounter(closestHitCounters(c), -1);
+  e.bumpCounter(missCounters(c), +1);
+}
+void answerHit(const Case& c, RecordEdit& e, uint32_t ray, uint32_t instance, uint32_t primitive) {
+  if (e.get(ray, "closest_hit_runs") == 0) {
+    e.bumpCounter(closestHitCounters(c), +1);
+    e.bumpCounter(missCounters(c), -1);
+  }
+  e.set(ray, "closest_hit_runs", 1);
+  e.set(ray, "miss_runs", 0);
+  e.set(ray, "hit", 1);
+  for (const std::string& f : c.outputs.per_ray) {
+    if (f == "instance_id") e.set(ray, f, instance);
+    if (f == "primitive_id") e.set(ray, f, primitive);
+  }
+}
+
+}  // namespace numerics
+
+// R-CAND-TRI-OPEN: a device that hits a triangle at exactly tmax or tmin
+// fails on every ray the candidates case puts on an exact end; it changes
+// nothing on the near-but-inexact rays (their t is never exactly an end).
+TEST_F(PlantedFault, ClosedTriangleIntervalFails) {
+  Results planted;
+  const Verdict v = plant("candidates/triangle-open-interval", "closed-triangle-interval", &planted);
+  EXPECT_EQ(v.status, Status::Fail) << v.headline();
+  EXPECT_TRUE(hasFinding(v, Status::Fail, "R-CAND-TRI-OPEN")) << v.headline();
+  const Ran& r = run("candidates/triangle-open-interval");
+  const std::set<uint32_t> changed = numerics::changedRays(planted, r.device);
+  ASSERT_FALSE(changed.empty());
+  for (const RayAmbiguity& a : r.model.ambiguous) EXPECT_EQ(changed.count(a.ray), 0u) << "inexact ray " << a.ray;
+  const Finding* hit = numerics::failing(v, "hit");
+  ASSERT_NE(hit, nullptr) << v.headline();
+  EXPECT_EQ(hit->ray_count, changed.size()) << "every ray on an exact end is judged";
+}
+
+// R-CAND-AABB-CLOSED: a device whose reportIntersectionEXT rejects t ==
+// tmin or t == tmax fails; the report's own return value shows it.
+TEST_F(PlantedFault, OpenAabbIntervalFails) {
+  Results planted;
+  const Verdict v = plant("candidates/aabb-closed-interval", "open-aabb-interval", &planted);
+  EXPECT_EQ(v.status, Status::Fail) << v.headline();
+  EXPECT_TRUE(hasFinding(v, Status::Fail, "R-CAND-AABB-CLOSED")) << v.headline();
+  const Ran& r = run("candidates/aabb-closed-interval");
+  EXPECT_TRUE(r.model.ambiguous.empty()) << "no AABB end is a tie before a hit is committed";
+  const Finding* value = numerics::failing(v, "value");
+  ASSERT_NE(value, nullptr) << v.headline();
+  EXPECT_GE(value->ray_count, 8u) << "the tmax and tmin reports of four intervals";
+}
+
+// R-TIE: where t rounds on a device (tmin-tie, tmax-tie) hit and miss are
+// both legal, and a device giving either passes; one that answers neither
+// (another primitive, or a miss on a tie of two coincident triangles) fails.
+TEST_F(PlantedFault, InexactEndTiesAcceptBothAnswersAndNothingElse) {
+  for (const std::string name : {"candidates/triangle-open-interval", "precision/tmax-ties"}) {
+    const Ran& r = run(name);
+    size_t ends = 0;
+    for (const RayAmbiguity& a : r.model.ambiguous) {
+      if (a.reason != AmbiguityReason::TminTie && a.reason != AmbiguityReason::TmaxTie) continue;
+      ++ends;
+      bool miss = false;
+      const Candidate* hit = nullptr;
+      for (const Candidate& k : a.candidates) (k.hit ? hit = &k : (miss = true, hit));
+      ASSERT_TRUE(miss && hit) << name << " ray " << a.ray;
+      const uint32_t ray = a.ray;
+      EXPECT_EQ(edited(name, [&](const Ran& x, RecordEdit& e) { numerics::answerMiss(x.c, e, ray); }).status,
+                Status::Pass) << name << " ray " << ray;
+      EXPECT_EQ(edited(name, [&](const Ran& x, RecordEdit& e) {
+                  numerics::answerHit(x.c, e, ray, hit->instance, hit->primitive);
+                }).status,
+                Status::Pass) << name << " ray " << ray;
+      const Verdict other = edited(name, [&](const Ran& x, RecordEdit& e) {
+        numerics::answerHit(x.c, e, ray, hit->instance + 1, hit->primitive + 7);
+      });
+      EXPECT_EQ(other.status, Status::Fail) << name << " ray " << ray;
+      EXPECT_TRUE(hasFinding(other, Status::Fail, "R-TIE")) << other.headline();
+    }
+    EXPECT_GE(ends, 2u) << name << ": ties at both ends";
+  }
+  const Ran& r = run("precision/tmax-ties");
+  for (const RayAmbiguity& a : r.model.ambiguous) {
+    if (a.reason != AmbiguityReason::TTie) continue;
+    const Verdict v = edited("precision/tmax-ties",
+                             [&](const Ran& x, RecordEdit& e) { numerics::answerMiss(x.c, e, a.ray); });
+    EXPECT_EQ(v.status, Status::Fail) << "a miss on a tie of two hits, ray " << a.ray << ": " << v.headline();
+    EXPECT_TRUE(hasFinding(v, Status::Fail, "R-TIE")) << v.headline();
+  }
+}
+
+// R-TIE with AABBs: any of the tied (instance, primitive) pairs passes; a
+// miss, or a primitive outside them, fails.
+TEST_F(PlantedFault, AabbTieAcceptsEveryTiedPairAndNothingElse) {
+  const Ran& r = run("precision/aabb-tie");
+  ASSERT_FALSE(r.model.ambiguous.empty());
+  for (const RayAmbiguity& a : r.model.ambiguous) {
+    ASSERT_EQ(a.reason, AmbiguityReason::TTie);
+    for (const Candidate& k : a.candidates)
+      EXPECT_EQ(edited("precision/aabb-tie", [&](const Ran& x, RecordEdit& e) {
+                  numerics::answerHit(x.c, e, a.ray, k.instance, k.primitive);
+                }).status,
+                Status::Pass) << "ray " << a.ray << " instance " << k.instance << " primitive " << k.primitive;
+    EXPECT_EQ(edited("precision/aabb-tie",
+                     [&](const Ran& x, RecordEdit& e) { numerics::answerMiss(x.c, e, a.ray); }).status,
+              Status::Fail) << "ray " << a.ray;
+    EXPECT_EQ(edited("precision/aabb-tie", [&](const Ran& x, RecordEdit& e) {
+                numerics::answerHit(x.c, e, a.ray, 0, 5);
+              }).status,
+              Status::Fail) << "ray " << a.ray << ": primitive 5 does not exist";
+  }
+}
+
+// R-PREC at 1e5: a ray through a triangle's interior is clear in every grid
+// of the large-coordinates case (vertices at 1e5, an instance translation,
+// a rotated instance), so a device that misses one fails; a miss on a
+// shared edge stays a leak (a quality warning).
+TEST_F(PlantedFault, CentreMissAtLargeCoordinatesFails) {
+  const Ran& r = run("precision/large-coordinates");
+  std::set<uint32_t> amb;
+  for (const RayAmbiguity& a : r.model.ambiguous) amb.insert(a.ray);
+  RecordEdit model{const_cast<Results&>(r.model)};
+  std::set<uint32_t> instances;
+  for (uint32_t ray = 0; ray < model.rays(); ++ray) {
+    if (amb.count(ray) || model.get(ray, "hit") != 1 || instances.count(model.get(ray, "instance_id"))) continue;
+    instances.insert(model.get(ray, "instance_id"));
+    const Verdict v = edited("precision/large-coordinates",
+                             [&](const Ran& x, RecordEdit& e) { numerics::answerMiss(x.c, e, ray); });
+    EXPECT_EQ(v.status, Status::Fail) << "ray " << ray << ": " << v.headline();
+    const Finding* hit = numerics::failing(v, "hit");
+    ASSERT_NE(hit, nullptr);
+    EXPECT_EQ(hit->rays, std::vector<uint32_t>{ray});
+  }
+  EXPECT_EQ(instances.size(), 3u) << "a clear interior ray in each grid";
+  for (const RayAmbiguity& a : r.model.ambiguous) {
+    if (a.reason != AmbiguityReason::Edge || a.shared_triangles.size() < 2) continue;
+    const Verdict v = edited("precision/large-coordinates",
+                             [&](const Ran& x, RecordEdit& e) { numerics::answerMiss(x.c, e, a.ray); });
+    EXPECT_EQ(v.status, Status::QualityWarning) << v.headline();
+    break;
+  }
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include "cli/commands.h"
 #include "run/run_loop.h"
+#include "fault/planted_fault.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"rayspec: Vulkan ray tracing pipeline conformance, device against a CPU reference model"};
@@ -42,9 +43,10 @@ int main(int argc, char** argv) {
   run->add_flag("--no-isolation", run_opt.no_isolation,
                 "Run the model and the device in this process (one VkDevice for every case; no timeout, no "
                 "memory limit, a crash ends the run)");
+  std::string fault_list;
+  for (const std::string& name : rayspec::faultNames()) fault_list += (fault_list.empty() ? "" : ", ") + name;
   run->add_option("--plant-fault", run_opt.plant_fault,
-                  "Test only: corrupt the device's results in a known way (drop-miss, swap-primitive-id, "
-                  "chit-after-ignore, shift-t, duplicate-any-hit, leak-edge, crash, hang)");
+                  "Test only: corrupt the device's results in a known way (" + fault_list + ")");
   run->add_option("--plant-fault-in", run_opt.plant_fault_in, "Test only: plant the fault only in cases matching this glob")
       ->capture_default_str();
 

@@ -65,9 +65,23 @@ void checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
     // Through the outer border of a mesh only, a miss is always legal.
     // A legal miss after the device's any-hit saw a candidate (and ignored
     // it) is no leak: the device found the edge.
+    // A miss no rule allows on a ray that crosses no edge or vertex (a tie,
+    // a first hit, an AABB face, a shader's decision) is no leak: it breaks
+    // the rule of that ambiguity.
     const bool found_candidate = fieldWord(rec, "any_hit_runs") > 0;
     const bool shared = crossesSharedEdge(c, a) && !(miss_legal && found_candidate);
-    if (shared || (!miss_legal && !crossesBorderOnly(c, a))) leak.addRay(a.ray);
+    const bool watertight = a.reason == AmbiguityReason::Edge || a.reason == AmbiguityReason::Vertex;
+    if (shared || (!miss_legal && watertight && !crossesBorderOnly(c, a))) {
+      leak.addRay(a.ray);
+    } else if (!miss_legal && !watertight) {
+      const std::string rule = ruleForAmbiguity(a.reason);
+      FindingBuilder& wrong = wrongs[rule + " miss"];
+      if (wrong.finding.rule.empty())
+        wrong.finding = {Status::Fail, rule,
+                         "numerically ambiguous ray (" + std::string(ambiguityReasonName(a.reason)) +
+                             ") missed, and no legal answer is a miss"};
+      wrong.addRay(a.ray);
+    }
     return;
   }
   if (!legal) {

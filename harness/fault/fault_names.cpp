@@ -6,7 +6,8 @@ namespace rayspec {
 
 const std::vector<std::string>& faultNames() {
   static const std::vector<std::string> names = {"drop-miss", "swap-primitive-id", "chit-after-ignore", "shift-t",
-                                                 "duplicate-any-hit", "leak-edge", "crash", "hang"};
+                                                 "duplicate-any-hit", "leak-edge", "closed-triangle-interval",
+                                                 "open-aabb-interval", "crash", "hang"};
   return names;
 }
 

@@ -1,8 +1,10 @@
+#include <algorithm>
 #include <sstream>
 
 #include "compare/shared_edge.h"
 #include "fault/planted_fault.h"
 #include "fault/record_edit.h"
+#include "model/model_backend.h"
 #include "results/record_layout.h"
 
 namespace rayspec {
@@ -114,11 +116,45 @@ FaultResult leakEdge(const Case& c, RecordEdit& dev, const Results& model) {
   return none("no ray the model marks ambiguous at a shared edge or vertex hit on the device");
 }
 
+// A device that judges an interval end the wrong way: the model run again
+// with that deviation; every ray it answers differently takes its record,
+// and the counters move by the difference.
+FaultResult deviate(ModelDeviation deviation, const Case& c, const Plan& plan, Results& device, const Results& model,
+                    const std::set<uint32_t>& amb) {
+  ModelOptions o;
+  o.deviation = deviation;
+  const Results faulty = runOnModel(c, plan, o);
+  if (!faulty.ok() || faulty.records.size() != model.records.size()) return none("the model's faulty run failed");
+  RecordEdit dev{device};
+  const size_t words = recordWords();
+  std::ostringstream rays;
+  uint32_t changed = 0, clear = 0;
+  for (uint32_t ray = 0; ray < dev.rays(); ++ray) {
+    if (std::equal(faulty.records.begin() + ray * words, faulty.records.begin() + (ray + 1) * words,
+                   model.records.begin() + ray * words))
+      continue;
+    dev.copyRay(ray, faulty);
+    rays << (changed++ ? ", " : "") << ray << (amb.count(ray) ? " (ambiguous)" : "");
+    if (!amb.count(ray)) ++clear;
+  }
+  if (!changed) return none("no ray meets a candidate at exactly an end of its interval");
+  for (const auto& [name, value] : faulty.counters) {
+    auto m = model.counters.find(name);
+    auto d = device.counters.find(name);
+    if (m == model.counters.end() || d == device.counters.end()) continue;
+    d->second = static_cast<uint64_t>(static_cast<int64_t>(d->second) + static_cast<int64_t>(value) -
+                                      static_cast<int64_t>(m->second));
+  }
+  return {true, "rays " + rays.str() + " answered as with " +
+                    (deviation == ModelDeviation::ClosedTriangleInterval ? "a closed triangle interval"
+                                                                         : "an open AABB interval") +
+                    " (" + std::to_string(clear) + " clear)"};
+}
+
 }  // namespace
 
 FaultResult plantFault(const std::string& name, const Case& c, const Plan& plan, Results& device,
                        const Results& model) {
-  (void)plan;
   if (device.records.empty() || device.records.size() != model.records.size())
     return none("no per-ray records to corrupt");
   RecordEdit dev{device};
@@ -131,6 +167,9 @@ FaultResult plantFault(const std::string& name, const Case& c, const Plan& plan,
   if (name == "shift-t") return shiftT(dev, amb);
   if (name == "duplicate-any-hit") return duplicateAnyHit(c, dev, mod, amb);
   if (name == "leak-edge") return leakEdge(c, dev, model);
+  if (name == "closed-triangle-interval")
+    return deviate(ModelDeviation::ClosedTriangleInterval, c, plan, device, model, amb);
+  if (name == "open-aabb-interval") return deviate(ModelDeviation::OpenAabbInterval, c, plan, device, model, amb);
   return none(isProcessFault(name) ? "a process fault" : "unknown fault '" + name + "'");
 }
 

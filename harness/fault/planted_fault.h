@@ -12,6 +12,12 @@
 //                      any-hit counter + 1)
 //   leak-edge          a ray the model marks ambiguous at a shared edge or
 //                      vertex (a miss not legal) becomes a miss
+//   closed-triangle-interval
+//                      the device hits a triangle at exactly the ray's tmin
+//                      or tmax (the model run with that deviation; every ray
+//                      it answers differently takes that answer)
+//   open-aabb-interval reportIntersectionEXT at exactly tmin or the current
+//                      tmax returns false (likewise)
 // Process faults, raised in the device's child process (rayspec run isolates
 // each case's device side):
 //   crash              raise SIGSEGV after the device run

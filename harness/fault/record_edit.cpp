@@ -1,5 +1,6 @@
 #include "fault/record_edit.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "plan/walk_program.h"
@@ -42,6 +43,18 @@ void RecordEdit::setFloat(uint32_t ray, const std::string& field, float value) {
   uint32_t w;
   std::memcpy(&w, &value, 4);
   set(ray, field, w);
+}
+
+void RecordEdit::copyRay(uint32_t ray, const Results& from) {
+  const size_t words = recordWords();
+  std::copy_n(from.records.begin() + ray * words, words, r.records.begin() + ray * words);
+  for (Image& im : r.images)
+    for (const Image& src : from.images) {
+      if (src.name != im.name || src.channels != im.channels || src.texels.size() != im.texels.size()) continue;
+      const size_t at = static_cast<size_t>(ray) * im.channels;
+      if (at + im.channels <= im.texels.size())
+        std::copy_n(src.texels.begin() + at, im.channels, im.texels.begin() + at);
+    }
 }
 
 std::string RecordEdit::bumpCounter(const std::vector<std::string>& names, int delta) {

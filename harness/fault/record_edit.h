@@ -21,6 +21,9 @@ struct RecordEdit {
   // that shows that field.
   void set(uint32_t ray, const std::string& field, uint32_t value);
   void setFloat(uint32_t ray, const std::string& field, float value);
+  // The whole record of `ray` and its pixels as `from` has them (results of
+  // the same case and plan).
+  void copyRay(uint32_t ray, const Results& from);
   // Adds delta to the first counter of `names` (in that order) that exists;
   // returns its name, empty when none.
   std::string bumpCounter(const std::vector<std::string>& names, int delta);

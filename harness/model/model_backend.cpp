@@ -111,6 +111,7 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
     shared.programs = &programs;
     shared.direct = !scene.filters && !hasOwnTriangles(scene);
     shared.need_facing = programs.reads(kBiHitKind);
+    shared.deviation = opt.deviation;
     shared.raygen_traces_launch_ray =
         programs.raygen.size() == 1 && programs.raygen[0].kind == Stmt::Kind::Trace &&
         std::none_of(programs.raygen[0].has.begin(), programs.raygen[0].has.end(), [](bool b) { return b; });

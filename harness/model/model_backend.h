@@ -23,9 +23,18 @@ enum class ModelTier { Fast, Robust, Exact };
 ModelTier parseModelTier(const std::string& name);  // fast|robust|exact; throws std::invalid_argument
 const char* modelTierName(ModelTier t);
 
+// Test only (planted faults, harness/fault/): the model breaks one rule the
+// way a faulty device would.
+//   ClosedTriangleInterval: a triangle at exactly the ray's tmin or tmax is a
+//     candidate (R-CAND-TRI-OPEN broken).
+//   OpenAabbInterval: reportIntersectionEXT at exactly tmin or the current
+//     tmax returns false (R-CAND-AABB-CLOSED broken).
+enum class ModelDeviation { None, ClosedTriangleInterval, OpenAabbInterval };
+
 struct ModelOptions {
   ModelTier tier = ModelTier::Exact;
   unsigned threads = 0;  // 0 = all cores
+  ModelDeviation deviation = ModelDeviation::None;
 };
 
 Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt);

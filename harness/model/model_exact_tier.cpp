@@ -35,7 +35,9 @@ void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& ca
     const bool opaque = resolveOpaque(g.flags, mi.src->flags, tr.flags);
     if (((tr.flags & kRayCullOpaque) && opaque) || ((tr.flags & kRayCullNoOpaque) && !opaque)) return false;
     if (facing(scene, cand, r, tr.flags).culled) return false;
-    const double tl = tr.tol(cand.t);
+    // R-CAND-TRI-OPEN: at or beyond an end every device judges exactly.
+    if ((cand.exact_tmin && cand.t <= r.tmin) || (cand.exact_tmax && cand.t >= r.tmax)) return false;
+    const double tl = tr.endTol(cand);
     return !(cand.t < r.tmin - tl || cand.t > r.tmax + tl);
   };
   auto add = [&](bool hit, uint32_t i, uint32_t g, uint32_t p) {
@@ -44,6 +46,7 @@ void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& ca
     amb.candidates.push_back({hit, i, g, p});
   };
   std::vector<size_t> unsure;  // candidates whose decision could flip
+  double reasonT = 0;          // the t of the candidate that gave `reason`
   bool faces = false;
   for (size_t k = 0; k < cands->size(); ++k) {
     const ModelCandidate& cand = (*cands)[k];
@@ -60,10 +63,21 @@ void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& ca
     std::optional<AmbiguityReason> why;
     if (cand.ambiguity != TriAmbiguity::None && cand.t <= finalT + tl)
       why = cand.ambiguity == TriAmbiguity::Vertex ? AmbiguityReason::Vertex : AmbiguityReason::Edge;
-    else if (cand.hit && std::fabs(cand.t - r.tmin) <= tl) why = AmbiguityReason::TminTie;
-    else if (cand.hit && std::fabs(cand.t - r.tmax) <= tl) why = AmbiguityReason::TmaxTie;
+    // R-CAND-TRI-OPEN: an interval end is a tie only where a device's t may
+    // round across it (model/exact_interval.h).
+    else if (cand.hit && !cand.exact_tmin && std::fabs(cand.t - r.tmin) <= tr.endTol(cand))
+      why = AmbiguityReason::TminTie;
+    else if (cand.hit && !cand.exact_tmax && std::fabs(cand.t - r.tmax) <= tr.endTol(cand))
+      why = AmbiguityReason::TmaxTie;
     if (why) {
-      if (!reason) reason = why;
+      // The first reason found, except that a vertex outranks an edge met at
+      // the same t (the triangles around a vertex include ones that see only
+      // one of its edges within the bound).
+      if (!reason || (*reason == AmbiguityReason::Edge && *why == AmbiguityReason::Vertex &&
+                      std::fabs(cand.t - reasonT) <= tl)) {
+        reason = why;
+        reasonT = cand.t;
+      }
       unsure.push_back(k);
     }
   }

@@ -77,7 +77,9 @@ struct Committed {
   double t = 0;
   uint32_t instance = 0, geometry = 0, primitive = 0, kind = 0;
   float b1 = 0, b2 = 0;
-  double t_err = 0;  // exact tier: bound on a device's t beyond the model's (a sphere root's rounding)
+  // Exact tier: bound on a device's t beyond the model's (a sphere root's
+  // rounding, a triangle's frame error).
+  double t_err = 0;
 };
 
 struct StageEnv {
@@ -108,6 +110,7 @@ struct ModelShared {
   // facing only for hit_kind, its object-space ray only for object_ray_*.
   bool need_facing = true, need_object_ray = true;
   bool raygen_traces_launch_ray = false;  // raygen is exactly `trace: {}`
+  ModelDeviation deviation = ModelDeviation::None;  // test only (planted faults)
 };
 
 // Cache-line aligned: each worker thread writes its own Machine, never a line

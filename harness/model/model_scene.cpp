@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "model/exact_interval.h"
+#include "model/frame_error.h"
 #include "model/model_trace_context.h"
 #include "model/watertight.h"
 
@@ -60,10 +62,11 @@ void ownTriangleBounds(const RTCBoundsFunctionArguments* args) {
       return;
     }
   }
-  // Enlarged so that rays within the ambiguity bound of an edge are enumerated.
+  // Enlarged so that rays within the ambiguity bound of an edge are enumerated
+  // (and rays an instance's rounding may move onto it).
   for (int k = 0; k < 3; ++k) {
     const float m = std::max({std::fabs(lo[k]), std::fabs(hi[k]), hi[k] - lo[k], 1e-30f});
-    const float pad = m * 1e-5f;
+    const float pad = m * 1e-5f + static_cast<float>(g->ray_pad + 4 * g->vertex_err[k]);
     lo[k] = clampLarge(lo[k] - pad);
     hi[k] = clampLarge(hi[k] + pad);
   }
@@ -107,7 +110,13 @@ void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
   const DVec3 d = toObject(mi.inverse, tc->direction, 0.0);
   const auto& tri = g->triangles[args->primID];
   auto dv = [](const Vec3& v) { return DVec3{v[0], v[1], v[2]}; };
-  WatertightHit h = watertightIntersect(o, d, dv(tri[0]), dv(tri[1]), dv(tri[2]));
+  const DVec3 v0 = dv(tri[0]), v1 = dv(tri[1]), v2 = dv(tri[2]);
+  FrameError err;
+  if (g->tier == ModelTier::Exact) {
+    objectRayFrameError(mi.form, mi.inverse, mi.inverse_f, tc->origin, tc->direction, err);
+    err.vertex = g->vertex_err;
+  }
+  WatertightHit h = watertightIntersect(o, d, v0, v1, v2, err);
   if (!h.valid) return;
   if (!h.hit && h.ambiguity == TriAmbiguity::None) return;
   if (g->tier != ModelTier::Exact && !h.hit) return;
@@ -120,6 +129,13 @@ void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
   c.b1 = static_cast<float>(h.b1);
   c.b2 = static_cast<float>(h.b2);
   c.ambiguity = g->tier == ModelTier::Exact ? h.ambiguity : TriAmbiguity::None;
+  c.t_err = h.t_err;
+  if (g->tier == ModelTier::Exact && g->vertex_err == DVec3{} &&
+      objectRayExact(mi.form, mi.src->transform, tc->origin)) {
+    const ExactEnds ends = exactEnds(o, d, v0, v1, v2, h.t, tc->tmin, tc->tmax);
+    c.exact_tmin = ends.tmin;
+    c.exact_tmax = ends.tmax;
+  }
   tc->candidates->push_back(c);
 }
 
@@ -216,6 +232,12 @@ void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
   if (!s.device) throw std::runtime_error("rtcNewDevice failed");
   const RTCSceneFlags sceneFlags = tier == ModelTier::Fast ? RTC_SCENE_FLAG_NONE : RTC_SCENE_FLAG_ROBUST;
   s.blases.resize(c.scene.blases.size());
+  // Exact tier: how far a device's object-space rays may be off, per BLAS
+  // (the largest over the instances that use it).
+  std::vector<double> rayPad(c.scene.blases.size(), 0.0);
+  for (const Instance& inst : c.scene.instances)
+    if (inst.blas && *inst.blas < rayPad.size())
+      rayPad[*inst.blas] = std::max(rayPad[*inst.blas], instancePad(invert(inst.transform), inst.transform));
   for (size_t bi = 0; bi < c.scene.blases.size(); ++bi) {
     const Blas& src = c.scene.blases[bi];
     ModelBlas& mb = s.blases[bi];
@@ -228,6 +250,8 @@ void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
       mg.blas = static_cast<uint32_t>(bi);
       mg.index = static_cast<uint32_t>(gi);
       mg.tier = tier;
+      mg.ray_pad = tier == ModelTier::Exact ? rayPad[bi] : 0.0;
+      if (tier == ModelTier::Exact && g.transform) mg.vertex_err = geometryVertexError(*g.transform, g.vertices);
       if (g.kind == Geometry::Kind::Aabbs) {
         mg.aabbs = g.aabbs;
         mg.count = static_cast<uint32_t>(g.aabbs.size());
@@ -325,6 +349,7 @@ void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
     ModelInstance& mi = s.instances[ii];
     mi.src = &inst;
     mi.inverse = invert(inst.transform);
+    mi.form = instanceForm(inst.transform);
     for (int k = 0; k < 12; ++k) mi.inverse_f[k] = static_cast<float>(mi.inverse[k]);
     if (!inst.blas || *inst.blas >= s.blases.size()) continue;  // R-INACTIVE: null BLAS
     mi.blas = static_cast<int>(*inst.blas);

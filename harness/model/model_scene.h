@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "case/case.h"
+#include "model/frame_error.h"
 #include "model/model_backend.h"
 
 namespace rayspec {
@@ -29,6 +30,12 @@ struct ModelGeometry {
   std::vector<std::array<float, 6>> aabbs;
   uint32_t blas = 0, index = 0;
   ModelTier tier = ModelTier::Exact;
+  // Exact tier: how far a device's vertices may differ from `triangles` (a
+  // geometry transform rounded in another order; zero without one), and how
+  // far its object-space rays through the BLAS's instances may be off
+  // (pads the candidate boxes).
+  DVec3 vertex_err{};
+  double ray_pad = 0;
 };
 
 struct ModelBlas {
@@ -42,6 +49,7 @@ struct ModelInstance {
   int blas = -1;                    // -1: inactive (null BLAS)
   std::array<double, 12> inverse{}; // world -> object, row-major 3x4
   std::array<float, 12> inverse_f{};
+  InstanceForm form = InstanceForm::General;  // what a device's inverse rounds
 };
 
 struct ModelScene {

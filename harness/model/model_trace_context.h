@@ -22,6 +22,10 @@ struct ModelCandidate {
   TriAmbiguity ambiguity = TriAmbiguity::None;
   bool near_face = false;  // AABBs, exact tier: the ray passes within the error
                            // bound of a face (a device may or may not see it)
+  // Triangles, exact tier: every device compares t with the trace's tmin /
+  // tmax exactly (model/exact_interval.h): no tie at that end.
+  bool exact_tmin = false, exact_tmax = false;
+  double t_err = 0;  // triangles, exact tier: how far a device's t may lie (0: unknown)
 };
 
 struct TraceContext {

@@ -3,8 +3,8 @@
 // exact tier's ambiguity check is in model_exact_tier.cpp, the path without
 // decisions in model_fast_path.cpp.
 #include <algorithm>
+#include <bit>
 #include <cmath>
-#include <cstring>
 #include <limits>
 
 #include "model/sphere_error.h"
@@ -35,11 +35,8 @@ const CHitGroup* groupOf(const CPipeline& p, const SbtRecord* rec) {
 float nextUp(float x) {
   if (std::isnan(x) || x == INFINITY) return x;
   if (x == 0.0f) return std::numeric_limits<float>::denorm_min();
-  uint32_t u;
-  std::memcpy(&u, &x, 4);
-  u = x > 0 ? u + 1 : u - 1;
-  std::memcpy(&x, &u, 4);
-  return x;
+  const uint32_t u = std::bit_cast<uint32_t>(x);
+  return std::bit_cast<float>(x > 0 ? u + 1 : u - 1);
 }
 float nextDown(float x) { return -nextUp(-x); }
 
@@ -164,6 +161,8 @@ Flow Machine::report(const CStmt& s, StageEnv& env) {
   Flow flow = Flow::Continue;
   // R-ISECT-REPORT, R-CAND-AABB-CLOSED: tmin <= t <= current tmax.
   bool inside = t >= tr->ray.tmin && static_cast<double>(t) <= tr->tmax_cur;
+  if (sh_.deviation == ModelDeviation::OpenAabbInterval)
+    inside = t > tr->ray.tmin && static_cast<double>(t) < tr->tmax_cur;
   if (tr->reports && t >= tr->ray.tmin && t <= tr->ray.tmax + tr->tol(t)) tr->reports->push_back({tr->cur_index, t});
   if (tr->exact) {
     // R-PREC: a sphere root within its error bound of an interval end may
@@ -282,10 +281,14 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
     }
     if (!(force && force[k] >= 0 ? force[k] == 1 : cand.hit)) continue;
     bool inside = cand.t > tr.tmin && cand.t < tr.tmax_cur;
+    if (sh_.deviation == ModelDeviation::ClosedTriangleInterval && !tr.best.valid)
+      inside = cand.t >= tr.tmin && cand.t <= tr.tmax_cur;
     // What-if run forcing a hit at an interval end (tmin-tie, tmax-tie): a
-    // float ray test may put it a step inside.
-    if (!inside && force && force[k] == 1 && !tr.best.valid && cand.t > tr.tmin - tr.tol(cand.t) &&
-        cand.t < tr.tmax_cur + tr.tol(cand.t))
+    // float ray test may put it a step inside, unless every device computes
+    // this t exactly (R-CAND-TRI-OPEN, model/exact_interval.h).
+    const bool exactOut = (cand.exact_tmin && cand.t <= tr.tmin) || (cand.exact_tmax && cand.t >= tr.tmax_cur);
+    if (!inside && force && force[k] == 1 && !tr.best.valid && !exactOut && cand.t > tr.tmin - tr.endTol(cand) &&
+        cand.t < tr.tmax_cur + tr.endTol(cand))
       inside = true;
     const bool tie = tr.exact && tr.ties(cand.t);
     const bool bestPreferred = tr.isPreferred(tr.best.instance, tr.best.geometry, tr.best.primitive);
@@ -310,7 +313,8 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
       ah = exec(*grp->any_hit, a);
       if (ah == Flow::Ignore) continue;
     }
-    tr.best = {true, cand.t, cand.instance, cand.geometry, cand.primitive, f.kind, cand.b1, cand.b2};
+    // Exact tier, R-PREC: how far a device's t may lie (its frame's rounding).
+    tr.best = {true, cand.t, cand.instance, cand.geometry, cand.primitive, f.kind, cand.b1, cand.b2, cand.t_err};
     tr.tmax_cur = cand.t;
     if (ah == Flow::Terminate || (tr.flags & kRayTerminateOnFirstHit)) tr.stop = true;
   }

@@ -56,6 +56,9 @@ struct Traversal {
     return prefer >= 0 && prefer_key[0] == i && prefer_key[1] == g && prefer_key[2] == p;
   }
   bool ties(double t) const { return best.valid && std::fabs(t - best.t) <= tol(t); }
+  // A triangle candidate's t against an interval end: its own error bound
+  // (translated frame, model/watertight.h) where known.
+  double endTol(const ModelCandidate& c) const { return c.t_err > 0 ? c.t_err : tol(c.t); }
   double tol(double t) const {
     const double om = std::max({std::fabs(ray.origin[0]), std::fabs(ray.origin[1]), std::fabs(ray.origin[2])});
     const double dm = std::max({std::fabs(ray.direction[0]), std::fabs(ray.direction[1]), std::fabs(ray.direction[2])});

@@ -1,11 +1,18 @@
 #include "model/watertight.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rayspec {
 
-WatertightHit watertightIntersect(const DVec3& o, const DVec3& d, const DVec3& v0,
-                                  const DVec3& v1, const DVec3& v2) {
+namespace {
+
+constexpr double kU = 5.9604644775390625e-08;  // 2^-24, float unit roundoff
+
+}  // namespace
+
+WatertightHit watertightIntersect(const DVec3& o, const DVec3& d, const DVec3& v0, const DVec3& v1,
+                                  const DVec3& v2, const FrameError& err) {
   WatertightHit r;
   // Dominant axis of the direction becomes z.
   int kz = 0;
@@ -14,26 +21,41 @@ WatertightHit watertightIntersect(const DVec3& o, const DVec3& d, const DVec3& v
   const int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
   if (d[kz] == 0.0 || std::isnan(d[kz])) { r.valid = false; return r; }
   const double sx = -d[kx] / d[kz], sy = -d[ky] / d[kz], sz = 1.0 / d[kz];
+  const double round = kFrameRoundings * kU;
+  // The shear a device derives from its own direction.
+  const double dsx = round * std::fabs(sx) + (err.direction[kx] + std::fabs(sx) * err.direction[kz]) / std::fabs(d[kz]);
+  const double dsy = round * std::fabs(sy) + (err.direction[ky] + std::fabs(sy) * err.direction[kz]) / std::fabs(d[kz]);
+  // The device's origin error, sheared: one shift of all three vertices.
+  const double shiftX = err.origin[kx] + std::fabs(sx) * err.origin[kz];
+  const double shiftY = err.origin[ky] + std::fabs(sy) * err.origin[kz];
   const DVec3* v[3] = {&v0, &v1, &v2};
-  double px[3], py[3], pz[3], mx[3], my[3];
+  double px[3], py[3], pz[3], ex[3], ey[3];
   for (int i = 0; i < 3; ++i) {
     const double x = (*v[i])[kx] - o[kx], y = (*v[i])[ky] - o[ky], z = (*v[i])[kz] - o[kz];
     px[i] = x + sx * z;
     py[i] = y + sy * z;
     pz[i] = z * sz;
-    // Magnitudes that float rounding on a device scales with.
-    const double az = std::fabs((*v[i])[kz]) + std::fabs(o[kz]);
-    mx[i] = std::fabs((*v[i])[kx]) + std::fabs(o[kx]) + std::fabs(sx) * az;
-    my[i] = std::fabs((*v[i])[ky]) + std::fabs(o[ky]) + std::fabs(sy) * az;
+    // Per vertex: the vertex error through the shear, the shear's own error
+    // along this vertex's depth, and the rounding of the translated, sheared
+    // coordinate relative to its magnitude.
+    const double vx = err.vertex[kx] + std::fabs(sx) * err.vertex[kz];
+    const double vy = err.vertex[ky] + std::fabs(sy) * err.vertex[kz];
+    const double az = std::fabs(z) + err.origin[kz] + err.vertex[kz];
+    ex[i] = vx + dsx * az + round * (std::fabs(x) + std::fabs(sx) * std::fabs(z) + shiftX + vx);
+    ey[i] = vy + dsy * az + round * (std::fabs(y) + std::fabs(sy) * std::fabs(z) + shiftY + vy);
   }
   double e[3], bound[3];
   for (int i = 0; i < 3; ++i) {
     const int a = (i + 1) % 3, b = (i + 2) % 3;
     e[i] = px[a] * py[b] - py[a] * px[b];
-    bound[i] = kDeviceRelTolerance * (mx[a] * my[b] + my[a] * mx[b]);
+    const double ax = std::fabs(px[a]), ay = std::fabs(py[a]), bx = std::fabs(px[b]), by = std::fabs(py[b]);
+    bound[i] = shiftX * std::fabs(py[b] - py[a]) + shiftY * std::fabs(px[b] - px[a]) +
+               ax * ey[b] + by * ex[a] + ay * ex[b] + bx * ey[a] +
+               shiftX * (ey[a] + ey[b]) + shiftY * (ex[a] + ex[b]) + ex[a] * ey[b] + ey[a] * ex[b] +
+               round * ((ax + shiftX + ex[a]) * (by + shiftY + ey[b]) + (ay + shiftY + ey[a]) * (bx + shiftX + ex[b]));
   }
   for (int i = 0; i < 3; ++i)
-    if (std::isnan(e[i]) || std::isnan(pz[i])) { r.valid = false; return r; }
+    if (std::isnan(e[i]) || std::isnan(pz[i]) || std::isnan(bound[i])) { r.valid = false; return r; }
   const bool anyNeg = e[0] < 0 || e[1] < 0 || e[2] < 0;
   const bool anyPos = e[0] > 0 || e[1] > 0 || e[2] > 0;
   // Clear sides: an edge function beyond its bound.
@@ -46,19 +68,32 @@ WatertightHit watertightIntersect(const DVec3& o, const DVec3& d, const DVec3& v
     r.b1 = e[1] / det;
     r.b2 = e[2] / det;
     if (std::isnan(r.t)) { r.valid = false; return r; }
+    const double dirErr = err.direction[kz] / std::fabs(d[kz]) + round;
+    double tErr = 0, depthErr = 0;
+    for (int i = 0; i < 3; ++i) {
+      const double az = std::fabs((*v[i])[kz] - o[kz]);
+      tErr += bound[i] * std::fabs(pz[i] - r.t);
+      depthErr = std::max(depthErr, (err.origin[kz] + err.vertex[kz] + round * az) * std::fabs(sz) +
+                                        dirErr * std::fabs(pz[i]));
+    }
+    r.t_err = tErr / std::fabs(det) + depthErr;
+    if (!std::isfinite(r.t_err)) r.t_err = 0;
   }
   r.hit = !(anyNeg && anyPos) && det != 0.0;
-  if (std::fabs(det) <= detBound) {
-    // Nearly edge-on or degenerate: only a problem if it could be a hit.
-    if (!(clearNeg && clearPos)) r.ambiguity = TriAmbiguity::Degenerate;
-    return r;
-  }
   if (clearNeg && clearPos) return r;  // clearly outside
+  // Edge functions within their bound: one is an edge, two meeting at a
+  // vertex (the third clear) is that vertex, three is no shape at all.
   int near = 0;
   for (int i = 0; i < 3; ++i)
     if (std::fabs(e[i]) <= bound[i]) ++near;
-  if (near == 0) return r;  // clearly inside (all same sign beyond bounds)
-  r.ambiguity = near >= 2 ? TriAmbiguity::Vertex : TriAmbiguity::Edge;
+  if (near == 2 && det != 0.0) {
+    r.ambiguity = TriAmbiguity::Vertex;
+  } else if (std::fabs(det) <= detBound || near == 3) {
+    // Nearly edge-on or degenerate: a device may see no triangle at all.
+    r.ambiguity = TriAmbiguity::Degenerate;
+  } else if (near == 1) {
+    r.ambiguity = TriAmbiguity::Edge;
+  }
   return r;
 }
 

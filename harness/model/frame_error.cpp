@@ -1,0 +1,98 @@
+#include "model/frame_error.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "model/sphere_error.h"
+
+namespace rayspec {
+
+namespace {
+
+constexpr double kU = 5.9604644775390625e-08;  // 2^-24, float unit roundoff
+// Roundings of a device's inverse translation (it rounds at least once) and
+// of a product with a scale that is not a power of two.
+constexpr double kTranslationRoundings = 2.0;
+constexpr double kProductRoundings = 2.0;
+// Roundings of a vertex through a geometry transform, model and device each
+// in their own order (3 products, 3 sums).
+constexpr double kVertexRoundings = 4.0;
+// Candidate boxes are padded by this much of the instance's translation (in
+// object space): room for the origin error of rays starting up to a few times
+// the translation away.
+constexpr double kPadScale = 1e-5;
+
+bool powerOfTwo(double x) {
+  int e;
+  return x != 0 && std::fabs(std::frexp(x, &e)) == 0.5;
+}
+
+}  // namespace
+
+InstanceForm instanceForm(const Transform& m) {
+  if (m == kIdentity) return InstanceForm::Identity;
+  for (int k = 0; k < 3; ++k) {
+    int row = 0, col = 0;
+    for (int j = 0; j < 3; ++j) {
+      row += m[k * 4 + j] != 0;
+      col += m[j * 4 + k] != 0;
+    }
+    if (row != 1 || col != 1) return InstanceForm::General;
+  }
+  return InstanceForm::ScaledPermutation;
+}
+
+void objectRayFrameError(InstanceForm form, const std::array<double, 12>& inv, const std::array<float, 12>& inv_f,
+                         const DVec3& o, const DVec3& d, FrameError& err) {
+  if (form == InstanceForm::Identity) {
+    err.origin = err.direction = DVec3{};
+    return;
+  }
+  if (form == InstanceForm::General) {
+    const F3 of = {float(o[0]), float(o[1]), float(o[2])}, df = {float(d[0]), float(d[1]), float(d[2])};
+    const ObjectRayError e = objectRayError(inv_f, of, df);
+    for (int k = 0; k < 3; ++k) {
+      err.origin[k] = e.origin[k];
+      err.direction[k] = e.direction[k];
+    }
+    return;
+  }
+  for (int k = 0; k < 3; ++k) {
+    double eo = kTranslationRoundings * kU * std::fabs(inv[k * 4 + 3]), ed = 0, obj = inv[k * 4 + 3];
+    for (int j = 0; j < 3; ++j) {
+      const double m = inv[k * 4 + j];
+      if (m == 0) continue;
+      obj += m * o[j];
+      if (!powerOfTwo(m)) {
+        eo += kProductRoundings * kU * std::fabs(m * o[j]);
+        ed += kProductRoundings * kU * std::fabs(m * d[j]);
+      }
+    }
+    err.origin[k] = eo + kU * std::fabs(obj);
+    err.direction[k] = ed;
+  }
+}
+
+DVec3 geometryVertexError(const Transform& m, const std::vector<Vec3>& vertices) {
+  DVec3 e{};
+  if (m == kIdentity) return e;
+  for (const Vec3& v : vertices)
+    for (int k = 0; k < 3; ++k) {
+      double s = std::fabs(m[k * 4 + 3]);
+      for (int j = 0; j < 3; ++j) s += std::fabs(double(m[k * 4 + j]) * v[j]);
+      if (std::isfinite(s)) e[k] = std::max(e[k], kVertexRoundings * kU * s);
+    }
+  return e;
+}
+
+double instancePad(const std::array<double, 12>& inv, const Transform& m) {
+  double pad = 0;
+  for (int k = 0; k < 3; ++k) {
+    double s = std::fabs(inv[k * 4 + 3]);
+    for (int j = 0; j < 3; ++j) s += std::fabs(inv[k * 4 + j] * m[j * 4 + 3]);
+    pad = std::max(pad, s);
+  }
+  return std::isfinite(pad) ? kPadScale * pad : 0.0;
+}
+
+}  // namespace rayspec

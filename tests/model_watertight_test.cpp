@@ -1,0 +1,135 @@
+// The exact tier's triangle test and its error bound (model/watertight.h)
+// and the frame errors that feed it (model/frame_error.h).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "model/frame_error.h"
+#include "model/sphere_error.h"
+#include "model/watertight.h"
+
+namespace rayspec {
+namespace {
+
+constexpr double kU = 5.9604644775390625e-08;  // 2^-24
+
+TEST(Watertight, InsideOutsideEdge) {
+  DVec3 v0{-1, -1, 0}, v1{1, -1, 0}, v2{1, 1, 0};
+  auto h = watertightIntersect({0.5, -0.5, 5}, {0, 0, -1}, v0, v1, v2);
+  EXPECT_TRUE(h.hit);
+  EXPECT_NEAR(h.t, 5.0, 1e-12);
+  EXPECT_EQ(h.ambiguity, TriAmbiguity::None);
+  EXPECT_FALSE(watertightIntersect({-0.5, 0.5, 5}, {0, 0, -1}, v0, v1, v2).hit);
+  auto e = watertightIntersect({0.25, 0.25, 5}, {0, 0, -1}, v0, v1, v2);  // on the diagonal
+  EXPECT_TRUE(e.hit);
+  EXPECT_EQ(e.ambiguity, TriAmbiguity::Edge);
+  auto v = watertightIntersect({1, 1, 5}, {0, 0, -1}, v0, v1, v2);
+  EXPECT_EQ(v.ambiguity, TriAmbiguity::Vertex);
+  // degenerate (line) triangle never hits
+  EXPECT_FALSE(watertightIntersect({0, 0, 5}, {0, 0, -1}, {-1, 0, 0}, {0, 0, 0}, {1, 0, 0}).hit);
+}
+
+// The same unit triangle and rays, translated by m in x and y: the bound
+// lives in the translated frame, so the answers never change with m.
+TEST(Watertight, TranslationChangesNothing) {
+  for (double m : {0.0, 1e3, 1e5, 1e6, 1e7, 1e9}) {
+    const DVec3 v0{m, m, 0}, v1{m + 1, m, 0}, v2{m + 1, m + 1, 0};
+    const DVec3 down{0, 0, -1}, tilted{0.25, -0.125, -1};
+    for (const DVec3& d : {down, tilted}) {
+      auto ray = [&](double x, double y) {
+        return watertightIntersect({m + x - 5 * d[0], m + y - 5 * d[1], 5}, d, v0, v1, v2);
+      };
+      const WatertightHit centre = ray(2.0 / 3, 1.0 / 3), edge = ray(0.5, 0.5), vertex = ray(1, 0);
+      EXPECT_TRUE(centre.hit) << m;
+      EXPECT_EQ(centre.ambiguity, TriAmbiguity::None) << m;
+      EXPECT_NEAR(centre.t, 5.0, 1e-9 * (1 + m));
+      EXPECT_EQ(edge.ambiguity, TriAmbiguity::Edge) << m;
+      EXPECT_EQ(vertex.ambiguity, TriAmbiguity::Vertex) << m;
+      EXPECT_EQ(ray(2.0 / 3, -0.5).ambiguity, TriAmbiguity::None) << m << ": clearly outside";
+    }
+  }
+}
+
+// A ray 0.01 outside the hypotenuse of the unit triangle (edge function
+// -0.01 * sqrt(2) * sqrt(2) = -0.02 in the sheared frame): clear when a
+// device's origin is exact, ambiguous once its origin may be off by more
+// than the distance, whatever the absolute coordinates.
+TEST(Watertight, OriginErrorMovesTheTriangleRigidly) {
+  const DVec3 v0{0, 0, 0}, v1{1, 0, 0}, v2{1, 1, 0}, d{0, 0, -1}, o{0.49, 0.51, 5};
+  EXPECT_EQ(watertightIntersect(o, d, v0, v1, v2).ambiguity, TriAmbiguity::None);
+  FrameError small, large;
+  small.origin = {0.004, 0.004, 0.004};  // shifts the edge function by at most 0.008
+  large.origin = {0.02, 0.02, 0.0};      // by up to 0.04
+  EXPECT_EQ(watertightIntersect(o, d, v0, v1, v2, small).ambiguity, TriAmbiguity::None);
+  const WatertightHit h = watertightIntersect(o, d, v0, v1, v2, large);
+  EXPECT_FALSE(h.hit);
+  EXPECT_EQ(h.ambiguity, TriAmbiguity::Edge);
+  // A vertex error acts the same way (per vertex, with the edges' extent).
+  FrameError vertex;
+  vertex.vertex = {0.02, 0.02, 0};
+  EXPECT_NE(watertightIntersect(o, d, v0, v1, v2, vertex).ambiguity, TriAmbiguity::None);
+}
+
+// An edge-on triangle is degenerate; a vertex with its two edges near
+// and the third clear is a vertex even when the bound is large.
+TEST(Watertight, NearEdgeCountLabels) {
+  const DVec3 d{0, 0, -1};
+  EXPECT_EQ(watertightIntersect({0.2, 0, 5}, d, {0, 0, 0}, {1, 0, 0}, {0, 0, 1}).ambiguity,
+            TriAmbiguity::Degenerate);
+  FrameError big;
+  big.origin = {0.3, 0.3, 0};  // the whole triangle's area is within the error
+  EXPECT_EQ(watertightIntersect({0, 0, 5}, d, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, big).ambiguity,
+            TriAmbiguity::Vertex);
+}
+
+TEST(FrameError, InstanceForms) {
+  EXPECT_EQ(instanceForm(kIdentity), InstanceForm::Identity);
+  EXPECT_EQ(instanceForm({1, 0, 0, 1e5f, 0, 1, 0, 1e5f, 0, 0, 1, 0}), InstanceForm::ScaledPermutation);
+  EXPECT_EQ(instanceForm({0, 3, 0, 0, -2, 0, 0, 0, 0, 0, 0.5f, 7}), InstanceForm::ScaledPermutation);
+  EXPECT_EQ(instanceForm({0.6f, -0.8f, 0, 0, 0.8f, 0.6f, 0, 0, 0, 0, 1, 0}), InstanceForm::General);
+}
+
+// Identity: no error. A translation: a couple of float steps of the
+// translation (not of the world origin's magnitude times the transform's).
+// General: sphere_error.h's objectRayError.
+TEST(FrameError, ObjectRayErrorPerForm) {
+  FrameError e;
+  const std::array<double, 12> id = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+  std::array<float, 12> idf{};
+  for (int k = 0; k < 12; ++k) idf[k] = static_cast<float>(id[k]);
+  objectRayFrameError(InstanceForm::Identity, id, idf, {1e6, 1e6, 5}, {0, 0, -1}, e);
+  EXPECT_EQ(e.origin, (DVec3{0, 0, 0}));
+  EXPECT_EQ(e.direction, (DVec3{0, 0, 0}));
+
+  std::array<double, 12> tr = id;
+  tr[3] = tr[7] = -1e6;
+  std::array<float, 12> trf = idf;
+  trf[3] = trf[7] = -1e6f;
+  objectRayFrameError(InstanceForm::ScaledPermutation, tr, trf, {1e6 + 0.25, 1e6 + 0.5, 5}, {0, 0, -1}, e);
+  EXPECT_NEAR(e.origin[0], 2 * kU * 1e6 + kU * 0.25, 1e-12);
+  EXPECT_NEAR(e.origin[1], 2 * kU * 1e6 + kU * 0.5, 1e-12);
+  EXPECT_NEAR(e.origin[2], kU * 5, 1e-12);
+  EXPECT_EQ(e.direction, (DVec3{0, 0, 0}));
+  EXPECT_LT(e.origin[0], 0.0625 * 2.0) << "within two float steps at 1e6";
+
+  const std::array<double, 12> rot = {0.6, 0.8, 0, 0, -0.8, 0.6, 0, 0, 0, 0, 1, 0};
+  std::array<float, 12> rotf{};
+  for (int k = 0; k < 12; ++k) rotf[k] = static_cast<float>(rot[k]);
+  objectRayFrameError(InstanceForm::General, rot, rotf, {3, 4, 5}, {0, 0, -1}, e);
+  const ObjectRayError want = objectRayError(rotf, {3, 4, 5}, {0, 0, -1});
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(e.origin[k], want.origin[k]);
+    EXPECT_EQ(e.direction[k], want.direction[k]);
+  }
+}
+
+TEST(FrameError, GeometryTransformVertexError) {
+  EXPECT_EQ(geometryVertexError(kIdentity, {{1e6f, 0, 0}}), (DVec3{0, 0, 0}));
+  const DVec3 e = geometryVertexError({2, 0, 0, 10, 0, 1, 0, 0, 0, 0, 1, 0}, {{1, 2, 3}, {-4, 0, 0}});
+  EXPECT_NEAR(e[0], 4 * kU * (8 + 10), 1e-15);  // the larger of |2*1|+10 and |2*-4|+10
+  EXPECT_NEAR(e[1], 4 * kU * 2, 1e-15);
+  EXPECT_NEAR(e[2], 4 * kU * 3, 1e-15);
+}
+
+}  // namespace
+}  // namespace rayspec
