@@ -147,7 +147,7 @@ TEST(PlantedFaultNames, UnknownOrInapplicableFaultChangesNothing) {
   Results device, model;
   device.records.assign(2 * recordWords(), 0);
   model.records = device.records;
-  for (const std::string& name : {"drop-miss", "swap-primitive-id", "shift-t", "leak-edge", "nonsense"}) {
+  for (const char* name : {"drop-miss", "swap-primitive-id", "shift-t", "leak-edge", "nonsense"}) {
     const FaultResult f = plantFault(name, c, plan, device, model);
     EXPECT_FALSE(f.applied) << name;
     EXPECT_FALSE(f.what.empty()) << name;

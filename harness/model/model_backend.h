@@ -23,9 +23,16 @@ enum class ModelTier { Fast, Robust, Exact };
 ModelTier parseModelTier(const std::string& name);  // fast|robust|exact; throws std::invalid_argument
 const char* modelTierName(ModelTier t);
 
+// The order the model decides a trace's candidates in (R-ORDER-UNSPEC).
+// Distance is the model's own (above); the others stand for devices that
+// traverse otherwise, for planted faults (fault/): far to near, and the
+// order of the build (instance, geometry, primitive).
+enum class CandidateOrder { Distance, ReverseDistance, BuildOrder };
+
 struct ModelOptions {
   ModelTier tier = ModelTier::Exact;
   unsigned threads = 0;  // 0 = all cores
+  CandidateOrder order = CandidateOrder::Distance;
 };
 
 Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt);

@@ -108,6 +108,7 @@ struct ModelShared {
   // facing only for hit_kind, its object-space ray only for object_ray_*.
   bool need_facing = true, need_object_ray = true;
   bool raygen_traces_launch_ray = false;  // raygen is exactly `trace: {}`
+  CandidateOrder order = CandidateOrder::Distance;
 };
 
 // Cache-line aligned: each worker thread writes its own Machine, never a line
