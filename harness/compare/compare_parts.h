@@ -16,6 +16,10 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
 void compareAnyHitRuns(const Case& c, const Results& device, const Results& model, Verdict& v);
 void compareImages(const Plan& plan, const Results& device, const Results& model, const std::set<uint32_t>& ambiguous_rays,
                    Verdict& v);
+// Images a case declares equal (`equal_to`): texel for texel in the model
+// (else CaseError: the case claims an identity its own reference does not
+// have, and the device is not judged on them) and on the device (else Fail).
+void compareEqualImages(const Plan& plan, const Results& device, const Results& model, Verdict& v);
 
 // Collects the rays breaking one rule into one finding.
 struct FindingBuilder {

@@ -52,6 +52,7 @@ Verdict compareResults(const Case& c, const Plan& plan, const Results& device, c
   compareRecords(c, plan, device, model, v);
   compareAnyHitRuns(c, device, model, v);
   compareImages(plan, device, model, ambiguous, v);
+  compareEqualImages(plan, device, model, v);
   return v;
 }
 
