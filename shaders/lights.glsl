@@ -1,4 +1,5 @@
-// rayspec shared GLSL: the light callables (`light: point|spot|directional`).
+// rayspec shared GLSL: the lights (`light: point|spot|directional` in a
+// callable, and the ops light_point, light_spot, light_directional).
 // P = call.position, N = call.normal, f(i) = float i of the shader record.
 // Model counterpart: harness/model implements exactly these formulas; change
 // both or neither. `precise` keeps operations unfused.
