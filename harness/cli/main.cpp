@@ -35,8 +35,8 @@ int main(int argc, char** argv) {
   run->add_flag("--no-isolation", run_opt.no_isolation,
                 "Run the device in this process (one VkDevice for every case; a crash ends the run)");
   run->add_option("--plant-fault", run_opt.plant_fault,
-                  "Test only: corrupt the device's results in a known way (drop-miss, swap-primitive-id, "
-                  "chit-after-ignore, shift-t, duplicate-any-hit, leak-edge, crash, hang)");
+                  "Test only: replace the device's results by those of a device breaking one rule (the "
+                  "faults of harness/fault/fault_table.cpp: drop-miss, instance-mask-ignored, ..., crash, hang)");
   run->add_option("--plant-fault-in", run_opt.plant_fault_in, "Test only: plant the fault only in cases matching this glob")
       ->capture_default_str();
 
