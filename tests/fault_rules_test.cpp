@@ -2,7 +2,8 @@
 // tier serves as the perfect device (no Vulkan), each fault of the rule
 // (fault/rule_faults.h) is planted in its results, and the comparison must
 // give Fail (QualityWarning for R-WATERTIGHT). A claim no fault breaks is
-// hollow and fails here, named with every fault's outcome.
+// hollow and fails here, named with every fault's outcome. Every case must
+// also pass a device that finds candidates far to near (R-ORDER-UNSPEC).
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
@@ -71,6 +72,12 @@ TEST_P(CaseClaims, EveryClaimedRuleIsBrokenByAFault) {
     }
     EXPECT_TRUE(ok) << "hollow claim: " << GetParam() << " claims " << p.describe();
   }
+  // R-ORDER-UNSPEC for every case: its verdict may not depend on the order
+  // candidates are found in (a device finding them far to near passes).
+  Results reversed = j.perfect;
+  plantFault("reverse-order", j.c, j.plan, reversed, j.model);
+  const Verdict v = compareResults(j.c, j.plan, reversed, j.model);
+  EXPECT_EQ(v.status, Status::Pass) << "the verdict depends on the candidate order: " << v.headline();
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, CaseClaims, ::testing::ValuesIn(caseNames()),
