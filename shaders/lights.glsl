@@ -1,4 +1,5 @@
-// rayspec shared GLSL: the light callables (`light: point|spot|directional`).
+// rayspec shared GLSL: the lights (`light: point|spot|directional` in a
+// callable, and the ops light_point, light_spot, light_directional).
 // P = call.position, N = call.normal, f(i) = float i of the shader record.
 // Model counterpart: harness/model implements exactly these formulas; change
 // both or neither. `precise` keeps operations unfused.
@@ -16,14 +17,17 @@ vec4 rs_light_point(vec3 P, vec3 N) {
   return vec4(c, 1.0);
 }
 
-// Spot light at f0..f2 pointing along f3..f5, cone cosine f6, intensity f7.
+// Spot light at f0..f2 pointing along f3..f5, white, unit intensity,
+// inverse-square falloff, and a smooth cone: full inside the cone of cosine
+// f6, dark outside the cone of cosine f7 (f7 < f6), the cosine's linear ramp
+// between.
 vec4 rs_light_spot(vec3 P, vec3 N) {
   precise vec3 L = vec3(rs_light_f(0u), rs_light_f(1u), rs_light_f(2u)) - P;
   precise float d = length(L);
   precise vec3 l = L / d;
   precise float cosang = dot(-l, normalize(vec3(rs_light_f(3u), rs_light_f(4u), rs_light_f(5u))));
-  float s = cosang >= rs_light_f(6u) ? 1.0 : 0.0;
-  precise float c = rs_light_f(7u) * s * max(dot(N, l), 0.0) / (d * d);
+  precise float s = clamp((cosang - rs_light_f(7u)) / (rs_light_f(6u) - rs_light_f(7u)), 0.0, 1.0);
+  precise float c = s * max(dot(N, l), 0.0) / (d * d);
   return vec4(c, c, c, 1.0);
 }
 

@@ -154,6 +154,36 @@ TEST_F(PlantedFault, NoDuplicateAnyHitCaseChecksEveryRay) {
   EXPECT_EQ(most, 2u);
 }
 
+// callable/light-equivalence for each light type (the raygen record's word
+// 0): the callable's and the inline colour are identical on the device and in
+// the model; a device whose callable records run the next record's callable
+// breaks the identity on the device.
+TEST_F(PlantedFault, LightEquivalenceForEveryLightType) {
+  ASSERT_TRUE(backend_) << backend_error_;
+  const std::string cases = RAYSPEC_SOURCE_DIR "/cases";
+  ParseResult parsed = parseCaseFile(cases + "/callable/light-equivalence.yaml", cases);
+  ASSERT_TRUE(parsed.value);
+  for (uint32_t type : {0u, 1u, 2u}) {
+    Case c = *parsed.value;
+    c.pipeline.raygen_data = {type};
+    const Plan plan = derivePlan(c);
+    const Results model = runOnModel(c, plan, ModelOptions{});
+    const Results device = backend_->run(c, plan);
+    const Verdict v = compareResults(c, plan, device, model);
+    EXPECT_EQ(v.status, Status::Pass) << "light type " << type << ": " << v.headline();
+    EXPECT_TRUE(hasFinding(v, Status::Pass, "image")) << "the identity was checked";
+    if (type != 0) continue;
+    Results broken = device;
+    const FaultResult f = plantFault("callable-record-shifted", c, plan, broken, model);
+    ASSERT_TRUE(f.applied) << f.what;
+    const Verdict bv = compareResults(c, plan, broken, model);
+    EXPECT_EQ(bv.status, Status::Fail) << bv.headline();
+    bool named = false;
+    for (const Finding& fd : bv.findings) named = named || fd.message.find("differ on the device") != std::string::npos;
+    EXPECT_TRUE(named) << bv.headline();
+  }
+}
+
 // Hand-built: a fault that finds no ray to corrupt says so and changes nothing.
 TEST(PlantedFaultNames, UnknownOrInapplicableFaultChangesNothing) {
   Case c;
@@ -161,7 +191,7 @@ TEST(PlantedFaultNames, UnknownOrInapplicableFaultChangesNothing) {
   Results device, model;
   device.records.assign(2 * recordWords(), 0);
   model.records = device.records;
-  for (const std::string& name : {"drop-miss", "swap-primitive-id", "shift-t", "leak-edge", "nonsense"}) {
+  for (const char* name : {"drop-miss", "swap-primitive-id", "shift-t", "leak-edge", "nonsense"}) {
     const FaultResult f = plantFault(name, c, plan, device, model);
     EXPECT_FALSE(f.applied) << name;
     EXPECT_FALSE(f.what.empty()) << name;

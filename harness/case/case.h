@@ -128,6 +128,8 @@ struct ImageOutput {
   SourceLoc loc;
   double tolerance = 1.0;           // scale of the field's tolerance (float images)
   uint32_t max_failing_pixels = 0;  // pixels allowed to differ before the image fails
+  std::string equal_to;             // another image this one must equal texel for texel,
+                                    // on the device and in the model (empty: none)
 };
 
 struct Outputs {

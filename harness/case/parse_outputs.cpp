@@ -90,10 +90,11 @@ void parseOutputs(YamlReader& r, const YAML::Node& n, Outputs& o) {
     parseNames(r, v, "outputs.per_ray", true, o.per_ray);
   const YAML::Node images = YamlReader::get(n, "images");
   if (!images.IsDefined() || !r.expectSeq(images, "outputs.images")) return;
+  std::vector<std::pair<YAML::Node, std::string>> equal_to;  // checked once every image is known
   for (size_t i = 0; i < images.size(); ++i) {
     const std::string f = "outputs.images[" + std::to_string(i) + "]";
     const YAML::Node img = images[i];
-    if (!r.expectMap(img, f, {"name", "from", "tolerance", "max_failing_pixels"}) ||
+    if (!r.expectMap(img, f, {"name", "from", "tolerance", "max_failing_pixels", "equal_to"}) ||
         !(r.require(img, f, "name") & r.require(img, f, "from")))
       continue;
     ImageOutput out;
@@ -127,9 +128,33 @@ void parseOutputs(YamlReader& r, const YAML::Node& n, Outputs& o) {
       if (!count) continue;
       out.max_failing_pixels = *count;
     }
+    if (const YAML::Node e = YamlReader::get(img, "equal_to"); e.IsDefined()) {
+      const auto other = r.string(e, f + ".equal_to");
+      if (!other) continue;
+      out.equal_to = *other;
+      equal_to.push_back({e, f + ".equal_to"});
+    }
     out.name = *name;
     out.field = *from;
     o.images.push_back(out);
+  }
+  // equal_to: another image of the case, of the same texel format.
+  size_t k = 0;
+  for (const ImageOutput& img : o.images) {
+    if (img.equal_to.empty()) continue;
+    const auto& [node, f] = equal_to[k++];
+    const ImageOutput* other = nullptr;
+    for (const ImageOutput& x : o.images)
+      if (x.name == img.equal_to && x.name != img.name) other = &x;
+    if (!other) {
+      r.error(node, f, "'" + img.equal_to + "' is not another image of this case");
+      continue;
+    }
+    const RecordField* a = findRecordField(img.field);
+    const RecordField* b = findRecordField(other->field);
+    if (a && b && a->type != b->type)
+      r.error(node, f, "image '" + img.name + "' (from " + img.field + ") and '" + other->name + "' (from " +
+                           other->field + ") have different texel formats");
   }
 }
 

@@ -29,4 +29,24 @@ double linearDeterminant(const Transform& t) {
          m(0, 2) * (m(1, 0) * m(2, 1) - m(1, 1) * m(2, 0));
 }
 
+std::array<double, 12> invertTransform(const Transform& m) {
+  const double a = m[0], b = m[1], c = m[2], d = m[4], e = m[5], f = m[6], g = m[8], h = m[9],
+               i = m[10];
+  const double A = e * i - f * h, B = -(d * i - f * g), C = d * h - e * g;
+  const double det = a * A + b * B + c * C;
+  std::array<double, 12> r{};
+  if (det == 0.0 || std::isnan(det)) return r;
+  const double inv = 1.0 / det;
+  const double l[9] = {A * inv, -(b * i - c * h) * inv, (b * f - c * e) * inv,
+                       B * inv, (a * i - c * g) * inv,  -(a * f - c * d) * inv,
+                       C * inv, -(a * h - b * g) * inv, (a * e - b * d) * inv};
+  for (int row = 0; row < 3; ++row) {
+    r[row * 4 + 0] = l[row * 3 + 0];
+    r[row * 4 + 1] = l[row * 3 + 1];
+    r[row * 4 + 2] = l[row * 3 + 2];
+    r[row * 4 + 3] = -(l[row * 3 + 0] * m[3] + l[row * 3 + 1] * m[7] + l[row * 3 + 2] * m[11]);
+  }
+  return r;
+}
+
 }  // namespace rayspec

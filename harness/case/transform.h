@@ -22,4 +22,8 @@ Transform composeTransform(const TransformParts& p);
 // Determinant of the 3x3 linear part (0 = not invertible).
 double linearDeterminant(const Transform& t);
 
+// The inverse (world -> object for an instance), row-major 3x4, in double;
+// all zero when the linear part is not invertible.
+std::array<double, 12> invertTransform(const Transform& m);
+
 }  // namespace rayspec

@@ -22,6 +22,10 @@ void compareAnyHitRuns(const Case& c, const Results& device, const Results& mode
 // masked: the pixels of ambiguous and of undefined rays, left out.
 void compareImages(const Plan& plan, const Results& device, const Results& model, const std::set<uint32_t>& masked,
                    Verdict& v);
+// Images a case declares equal (`equal_to`): texel for texel in the model
+// (else CaseError: the case claims an identity its own reference does not
+// have, and the device is not judged on them) and on the device (else Fail).
+void compareEqualImages(const Plan& plan, const Results& device, const Results& model, Verdict& v);
 
 // Collects the rays breaking one rule into one finding.
 struct FindingBuilder {

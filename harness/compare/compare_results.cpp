@@ -60,6 +60,7 @@ Verdict compareResults(const Case& c, const Plan& plan, const Results& device, c
   compareRecords(c, plan, device, model, undefined, v);
   compareAnyHitRuns(c, device, model, undefined, v);
   compareImages(plan, device, model, masked, v);
+  compareEqualImages(plan, device, model, v);
   return v;
 }
 

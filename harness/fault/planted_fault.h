@@ -1,27 +1,15 @@
-// Planted faults (test-only): corrupt a device's results in known ways after
-// the device ran and before the comparison, so tests can show that the
-// comparison catches each kind of driver bug. `rayspec run --plant-fault NAME`.
-//   drop-miss          a clear ray whose miss ran loses it (miss_runs 0, its
-//                      miss counter -1)
-//   swap-primitive-id  two clear hit rays with different primitive ids swap them
-//   chit-after-ignore  a clear ray that missed (its candidates ignored) gets
-//                      closest_hit_runs + 1 and its closest-hit counter + 1
-//   shift-t            hit_t += 1e-3 on one clear hit ray
-//   duplicate-any-hit  any-hit runs once more on a ray of a scene whose
-//                      geometries are NO_DUPLICATE_ANY_HIT (any_hit_runs + 1,
-//                      any-hit counter + 1)
-//   leak-edge          a ray the model marks ambiguous at a shared edge or
-//                      vertex (a miss not legal) becomes a miss
-//   closed-triangle-interval
-//                      the device hits a triangle at exactly the ray's tmin
-//                      or tmax (the model run with that deviation; every ray
-//                      it answers differently takes that answer)
-//   open-aabb-interval reportIntersectionEXT at exactly tmin or the current
-//                      tmax returns false (likewise)
-// Process faults, raised in the device's child process (rayspec run isolates
-// each case's device side):
-//   crash              raise SIGSEGV after the device run
-//   hang               sleep forever after the device run
+// Planted faults (test only): the results a device that breaks one rule would
+// give, put in place of a device's results after it ran and before the
+// comparison, so tests can show that the comparison catches each rule break.
+// `rayspec run --plant-fault NAME`; `faultTable()` lists every fault with the
+// break it stands for (fault_table.cpp). Three kinds:
+//   record edits    one field or run count of the device's own records
+//                   changed (e.g. drop-miss: a clear ray's miss did not run)
+//   case mutations  the model's exact tier run on the case as a device that
+//                   breaks the rule sees it (e.g. instance-mask-ignored: every
+//                   instance mask 0xFF); its results replace the device's
+//   process faults  raised in the device's child process: crash, hang
+// rule_faults.h maps each rule of the catalog to the faults that break it.
 #pragma once
 
 #include <string>
@@ -33,6 +21,16 @@
 
 namespace rayspec {
 
+enum class FaultKind { RecordEdit, CaseMutation, Process };
+
+struct FaultInfo {
+  std::string name;
+  FaultKind kind = FaultKind::RecordEdit;
+  std::string breaks;  // what the device does wrong, one line
+};
+
+const std::vector<FaultInfo>& faultTable();
+const FaultInfo* findFault(const std::string& name);
 const std::vector<std::string>& faultNames();
 bool isFaultName(const std::string& name);
 bool isProcessFault(const std::string& name);  // crash, hang
@@ -42,10 +40,18 @@ struct FaultResult {
   std::string what;  // what was corrupted ("ray 17: miss_runs 1 -> 0"), or why nothing was
 };
 
-// Corrupts `device` by the results fault `name`; `model` chooses the rays
-// (clear or ambiguous). Process faults and unknown names change nothing.
+// Corrupts `device` by the results fault `name`; `model` (the exact tier's
+// results) chooses the rays (clear or ambiguous). A case mutation replaces
+// the device's counters, records and images by the model's run of the mutated
+// case. Process faults and unknown names change nothing.
 FaultResult plantFault(const std::string& name, const Case& c, const Plan& plan, Results& device,
                        const Results& model);
+
+// The model's exact-tier results as a device that answers every ambiguous ray
+// one legal way: where a ray through a shared edge or vertex ran any-hit for
+// each of the k triangles sharing it (the model's enumeration), the device
+// ran it for one (R-WATERTIGHT). Otherwise the model's results unchanged.
+Results perfectDevice(const Case& c, const Results& model);
 
 // crash: raises SIGSEGV; hang: sleeps forever; otherwise returns.
 void raiseProcessFault(const std::string& name);

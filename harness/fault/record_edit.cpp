@@ -1,66 +1,49 @@
 #include "fault/record_edit.h"
 
-#include <algorithm>
-#include <cstring>
+#include <bit>
 
+#include "fault/program_edit.h"
 #include "plan/walk_program.h"
 #include "results/record_layout.h"
 
 namespace rayspec {
 
-uint32_t RecordEdit::rays() const { return static_cast<uint32_t>(r.records.size() / recordWords()); }
+uint32_t RecordView::rays() const { return static_cast<uint32_t>(r.records.size() / recordWords()); }
 
-bool RecordEdit::written(uint32_t ray, const std::string& field) const {
+bool RecordView::written(uint32_t ray, const std::string& field) const {
   const RecordField* f = findRecordField(field);
   if (!f) return false;
   if (f->automatic) return true;
   return (r.records[ray * recordWords() + kRecordWrittenMaskWord] >> recordFieldIndex(field)) & 1u;
 }
 
-uint32_t RecordEdit::get(uint32_t ray, const std::string& field) const {
-  return r.records[ray * recordWords() + findRecordField(field)->offset];
+uint32_t RecordView::get(uint32_t ray, const std::string& field, uint32_t word) const {
+  return r.records[ray * recordWords() + findRecordField(field)->offset + word];
 }
 
-float RecordEdit::getFloat(uint32_t ray, const std::string& field) const {
-  const uint32_t w = get(ray, field);
-  float f;
-  std::memcpy(&f, &w, 4);
-  return f;
+float RecordView::getFloat(uint32_t ray, const std::string& field, uint32_t word) const {
+  return std::bit_cast<float>(get(ray, field, word));
 }
 
-void RecordEdit::set(uint32_t ray, const std::string& field, uint32_t value) {
+void RecordEdit::set(uint32_t ray, const std::string& field, uint32_t value, uint32_t word) {
   const RecordField* f = findRecordField(field);
-  uint32_t* rec = &r.records[ray * recordWords()];
-  rec[f->offset] = value;
+  uint32_t* rec = &w.records[ray * recordWords()];
+  rec[f->offset + word] = value;
   if (!f->automatic) rec[kRecordWrittenMaskWord] |= 1u << recordFieldIndex(field);
-  for (Image& im : r.images) {
-    if (im.field != field || ray >= static_cast<size_t>(im.width) * im.height) continue;
-    im.texels[static_cast<size_t>(ray) * im.channels] = value;
+  for (Image& im : w.images) {
+    if (im.field != field || ray >= static_cast<size_t>(im.width) * im.height || word >= im.channels) continue;
+    im.texels[static_cast<size_t>(ray) * im.channels + word] = value;
   }
 }
 
-void RecordEdit::setFloat(uint32_t ray, const std::string& field, float value) {
-  uint32_t w;
-  std::memcpy(&w, &value, 4);
-  set(ray, field, w);
-}
-
-void RecordEdit::copyRay(uint32_t ray, const Results& from) {
-  const size_t words = recordWords();
-  std::copy_n(from.records.begin() + ray * words, words, r.records.begin() + ray * words);
-  for (Image& im : r.images)
-    for (const Image& src : from.images) {
-      if (src.name != im.name || src.channels != im.channels || src.texels.size() != im.texels.size()) continue;
-      const size_t at = static_cast<size_t>(ray) * im.channels;
-      if (at + im.channels <= im.texels.size())
-        std::copy_n(src.texels.begin() + at, im.channels, im.texels.begin() + at);
-    }
+void RecordEdit::setFloat(uint32_t ray, const std::string& field, float value, uint32_t word) {
+  set(ray, field, std::bit_cast<uint32_t>(value), word);
 }
 
 std::string RecordEdit::bumpCounter(const std::vector<std::string>& names, int delta) {
   for (const std::string& n : names) {
-    auto it = r.counters.find(n);
-    if (it == r.counters.end() || (delta < 0 && it->second == 0)) continue;
+    auto it = w.counters.find(n);
+    if (it == w.counters.end() || (delta < 0 && it->second == 0)) continue;
     it->second = static_cast<uint64_t>(static_cast<int64_t>(it->second) + delta);
     return n;
   }
@@ -105,6 +88,17 @@ std::set<uint32_t> ambiguousRays(const Results& model) {
   std::set<uint32_t> s;
   for (const RayAmbiguity& a : model.ambiguous) s.insert(a.ray);
   return s;
+}
+
+std::vector<FieldWrite> fieldWrites(const Case& c) {
+  std::vector<FieldWrite> out;
+  forEachProgram(c.pipeline, [&](const Program& p, Stage stage) {
+    walkStatements(p, [&](const Stmt& s) {
+      if (s.kind != Stmt::Kind::Record) return;
+      for (const auto& [field, value] : s.assigns) out.push_back({stage, field, &value});
+    });
+  });
+  return out;
 }
 
 }  // namespace rayspec

@@ -11,19 +11,23 @@
 
 namespace rayspec {
 
-struct RecordEdit {
-  Results& r;
+// Reading one field of one ray of a Results.
+struct RecordView {
+  const Results& r;
   uint32_t rays() const;
   bool written(uint32_t ray, const std::string& field) const;  // automatic fields: always
-  uint32_t get(uint32_t ray, const std::string& field) const;
-  float getFloat(uint32_t ray, const std::string& field) const;
-  // Sets word 0 of the field (marks it written) and the pixel of every image
-  // that shows that field.
-  void set(uint32_t ray, const std::string& field, uint32_t value);
-  void setFloat(uint32_t ray, const std::string& field, float value);
-  // The whole record of `ray` and its pixels as `from` has them (results of
-  // the same case and plan).
-  void copyRay(uint32_t ray, const Results& from);
+  uint32_t get(uint32_t ray, const std::string& field, uint32_t word = 0) const;
+  float getFloat(uint32_t ray, const std::string& field, uint32_t word = 0) const;
+};
+
+// Changing it, images and counters kept consistent.
+struct RecordEdit : RecordView {
+  explicit RecordEdit(Results& results) : RecordView{results}, w(results) {}
+  Results& w;
+  // Sets word `word` of the field (marks it written) and the pixel of every
+  // image that shows that field.
+  void set(uint32_t ray, const std::string& field, uint32_t value, uint32_t word = 0);
+  void setFloat(uint32_t ray, const std::string& field, float value, uint32_t word = 0);
   // Adds delta to the first counter of `names` (in that order) that exists;
   // returns its name, empty when none.
   std::string bumpCounter(const std::vector<std::string>& names, int delta);
@@ -37,5 +41,13 @@ std::vector<std::string> closestHitCounters(const Case& c);
 std::vector<std::string> anyHitCounters(const Case& c);
 
 std::set<uint32_t> ambiguousRays(const Results& model);
+
+// One assignment of a `record` statement, with the stage of its program.
+struct FieldWrite {
+  Stage stage;
+  std::string field;
+  const Expr* value;
+};
+std::vector<FieldWrite> fieldWrites(const Case& c);
 
 }  // namespace rayspec

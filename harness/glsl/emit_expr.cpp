@@ -100,6 +100,7 @@ std::string op(const Expr& e, const StageContext& ctx) {
   if (n == "sphere_far") return "rs_sphere_current().t_far";
   if (n == "shader_record_uint" && need(1)) return "rs_shader_record_uint(" + a[0] + ")";
   if (n == "shader_record_float" && need(1)) return "rs_shader_record_float(" + a[0] + ")";
+  if (n.rfind("light_", 0) == 0 && need(2)) return "rs_" + n + "(" + a[0] + ", " + a[1] + ")";
   return problem("op " + n + " with " + std::to_string(a.size()) + " args");
 }
 

@@ -17,6 +17,7 @@ void visitExpr(const Expr& e, StageUses& u) {
   } else if (e.kind == Expr::Kind::Op) {
     if (e.name.rfind("sphere_", 0) == 0) u.scene = u.sphere = true;
     if (e.name.rfind("shader_record_", 0) == 0) u.shader_record = true;
+    if (e.name.rfind("light_", 0) == 0) u.light = u.shader_record = true;
   }
   for (const Expr& a : e.args) visitExpr(a, u);
 }

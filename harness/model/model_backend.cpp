@@ -109,7 +109,8 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
     shared.plan = &plan;
     shared.scene = &scene;
     shared.programs = &programs;
-    shared.direct = !scene.filters && !hasOwnTriangles(scene);
+    shared.direct = !scene.filters && !hasOwnTriangles(scene) && opt.order == CandidateOrder::Distance;
+    shared.order = opt.order;
     shared.need_facing = programs.reads(kBiHitKind);
     shared.deviation = opt.deviation;
     shared.raygen_traces_launch_ray =

@@ -31,10 +31,17 @@ const char* modelTierName(ModelTier t);
 //     tmax returns false (R-CAND-AABB-CLOSED broken).
 enum class ModelDeviation { None, ClosedTriangleInterval, OpenAabbInterval };
 
+// The order the model decides a trace's candidates in (R-ORDER-UNSPEC).
+// Distance is the model's own (above); the others stand for devices that
+// traverse otherwise, for planted faults (fault/): far to near, and the
+// order of the build (instance, geometry, primitive).
+enum class CandidateOrder { Distance, ReverseDistance, BuildOrder };
+
 struct ModelOptions {
   ModelTier tier = ModelTier::Exact;
   unsigned threads = 0;  // 0 = all cores
   ModelDeviation deviation = ModelDeviation::None;
+  CandidateOrder order = CandidateOrder::Distance;
 };
 
 Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt);

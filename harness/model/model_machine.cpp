@@ -171,6 +171,17 @@ Val Machine::op(const CExpr& e, StageEnv& env) {
       for (int k = 0; k < cnt; ++k) r.f[k] = na == 1 ? a[0].f[0] : (k < static_cast<int>(na) ? a[k].f[0] : 0.0f);
       return r;
     }
+    case OpCode::LightPoint:
+    case OpCode::LightSpot:
+    case OpCode::LightDirectional: {
+      static const std::vector<uint32_t> kNoRecord;
+      const LightKind kind = n == OpCode::LightPoint ? LightKind::Point
+                             : n == OpCode::LightSpot ? LightKind::Spot
+                                                      : LightKind::Directional;
+      r.f = lightColor(kind, {a[0].f[0], a[0].f[1], a[0].f[2]}, {a[1].f[0], a[1].f[1], a[1].f[2]},
+                       env.record_data ? *env.record_data : kNoRecord);
+      return r;
+    }
     case OpCode::X: return fromFloat(a[0].f[0]);
     case OpCode::Y: return fromFloat(a[0].f[1]);
     case OpCode::Z: return fromFloat(a[0].f[2]);

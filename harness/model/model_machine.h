@@ -111,6 +111,7 @@ struct ModelShared {
   bool need_facing = true, need_object_ray = true;
   bool raygen_traces_launch_ray = false;  // raygen is exactly `trace: {}`
   ModelDeviation deviation = ModelDeviation::None;  // test only (planted faults)
+  CandidateOrder order = CandidateOrder::Distance;
 };
 
 // Cache-line aligned: each worker thread writes its own Machine, never a line

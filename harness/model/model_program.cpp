@@ -30,7 +30,9 @@ const OpName kOps[] = {
     {"length", OpCode::Length}, {"normalize", OpCode::Normalize}, {"eq", OpCode::Eq},
     {"ne", OpCode::Ne}, {"lt", OpCode::Lt}, {"le", OpCode::Le}, {"gt", OpCode::Gt},
     {"ge", OpCode::Ge}, {"mod", OpCode::Mod}, {"add", OpCode::Add}, {"sub", OpCode::Sub},
-    {"mul", OpCode::Mul}, {"div", OpCode::Div}, {"min", OpCode::Min}, {"max", OpCode::Max}};
+    {"mul", OpCode::Mul}, {"div", OpCode::Div}, {"min", OpCode::Min}, {"max", OpCode::Max},
+    {"light_point", OpCode::LightPoint}, {"light_spot", OpCode::LightSpot},
+    {"light_directional", OpCode::LightDirectional}};
 
 struct Compiler {
   const Plan& plan;

@@ -34,7 +34,7 @@ const std::vector<std::string>& builtinNames();
 enum class OpCode : uint8_t {
   SphereHit, SphereNear, SphereFar, RecordUint, RecordFloat, And, Or, Not, Odd, Even, ToFloat,
   ToUint, Vec, X, Y, Z, W, Dot, Length, Normalize, Eq, Ne, Lt, Le, Gt, Ge, Mod, Add, Sub, Mul,
-  Div, Min, Max, Unknown
+  Div, Min, Max, LightPoint, LightSpot, LightDirectional, Unknown
 };
 
 struct CExpr {

@@ -7,6 +7,7 @@
 
 #include "model/exact_interval.h"
 #include "model/frame_error.h"
+#include "case/transform.h"
 #include "model/model_trace_context.h"
 #include "model/watertight.h"
 
@@ -14,26 +15,6 @@ namespace rayspec {
 namespace {
 
 constexpr float kEmbreeLarge = 1.0e18f;  // Embree drops bounds beyond ~1.8e18
-
-std::array<double, 12> invert(const Transform& m) {
-  const double a = m[0], b = m[1], c = m[2], d = m[4], e = m[5], f = m[6], g = m[8], h = m[9],
-               i = m[10];
-  const double A = e * i - f * h, B = -(d * i - f * g), C = d * h - e * g;
-  const double det = a * A + b * B + c * C;
-  std::array<double, 12> r{};
-  if (det == 0.0 || std::isnan(det)) return r;
-  const double inv = 1.0 / det;
-  const double l[9] = {A * inv, -(b * i - c * h) * inv, (b * f - c * e) * inv,
-                       B * inv, (a * i - c * g) * inv,  -(a * f - c * d) * inv,
-                       C * inv, -(a * h - b * g) * inv, (a * e - b * d) * inv};
-  for (int row = 0; row < 3; ++row) {
-    r[row * 4 + 0] = l[row * 3 + 0];
-    r[row * 4 + 1] = l[row * 3 + 1];
-    r[row * 4 + 2] = l[row * 3 + 2];
-    r[row * 4 + 3] = -(l[row * 3 + 0] * m[3] + l[row * 3 + 1] * m[7] + l[row * 3 + 2] * m[11]);
-  }
-  return r;
-}
 
 Vec3 applyTransform(const Transform& m, const Vec3& v) {
   Vec3 r;
@@ -237,7 +218,7 @@ void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
   std::vector<double> rayPad(c.scene.blases.size(), 0.0);
   for (const Instance& inst : c.scene.instances)
     if (inst.blas && *inst.blas < rayPad.size())
-      rayPad[*inst.blas] = std::max(rayPad[*inst.blas], instancePad(invert(inst.transform), inst.transform));
+      rayPad[*inst.blas] = std::max(rayPad[*inst.blas], instancePad(invertTransform(inst.transform), inst.transform));
   for (size_t bi = 0; bi < c.scene.blases.size(); ++bi) {
     const Blas& src = c.scene.blases[bi];
     ModelBlas& mb = s.blases[bi];
@@ -348,7 +329,7 @@ void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
     const Instance& inst = c.scene.instances[ii];
     ModelInstance& mi = s.instances[ii];
     mi.src = &inst;
-    mi.inverse = invert(inst.transform);
+    mi.inverse = invertTransform(inst.transform);
     mi.form = instanceForm(inst.transform);
     for (int k = 0; k < 12; ++k) mi.inverse_f[k] = static_cast<float>(mi.inverse[k]);
     if (!inst.blas || *inst.blas >= s.blases.size()) continue;  // R-INACTIVE: null BLAS

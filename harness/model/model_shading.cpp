@@ -42,8 +42,8 @@ F4 lightColor(LightKind kind, const F3& P, const F3& N, const std::vector<uint32
     const F3 l = div3(L, d);
     const F3 nl = {-l[0], -l[1], -l[2]};
     const float cosang = dot3(nl, normalize3({f(3), f(4), f(5)}));
-    const float s = cosang >= f(6) ? 1.0f : 0.0f;
-    const float c = f(7) * s * std::max(dot3(N, l), 0.0f) / (d * d);
+    const float s = std::clamp((cosang - f(7)) / (f(6) - f(7)), 0.0f, 1.0f);  // the smooth cone
+    const float c = s * std::max(dot3(N, l), 0.0f) / (d * d);
     return {c, c, c, 1.0f};
   }
   // directional

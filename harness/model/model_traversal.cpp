@@ -353,9 +353,11 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
     rh.ray.tnear = std::max(0.0f, r.tmin - std::fabs(r.tmin) * 1e-5f);
     rh.ray.tfar = r.tmax + std::fabs(r.tmax) * 1e-5f;
     rtcIntersect1(scene.top, &tc.rtc, &rh);
-    std::sort(cands->begin(), cands->end(), [](const ModelCandidate& a, const ModelCandidate& b) {
-      if (a.t != b.t) return a.t < b.t;
-      return keyLess(a.instance, a.geometry, a.primitive, b.instance, b.geometry, b.primitive);
+    const CandidateOrder order = sh_.order;
+    std::sort(cands->begin(), cands->end(), [order](const ModelCandidate& a, const ModelCandidate& b) {
+      const bool key = keyLess(a.instance, a.geometry, a.primitive, b.instance, b.geometry, b.primitive);
+      if (order == CandidateOrder::BuildOrder || a.t == b.t) return key;
+      return order == CandidateOrder::ReverseDistance ? a.t > b.t : a.t < b.t;
     });
     tr.reports = tr.exact ? &reports : nullptr;
     tr.shader_unsure = tr.exact && sh_.programs->reads_sphere ? &shaderUnsure : nullptr;

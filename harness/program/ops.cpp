@@ -50,6 +50,13 @@ const std::vector<OpInfo>& ops() {
        "word i (Uint literal 0..7) of this stage's shader record data, as Uint"},
       {"shader_record_float", 1, 1, kAllStages,
        "word i (Uint literal 0..7) of this stage's shader record data, as Float"},
+      {"light_point", 2, 2, kAllStages,
+       "light_point(P, N): the point light of shaders/lights.glsl, parameters from this stage's record floats"},
+      {"light_spot", 2, 2, kAllStages,
+       "light_spot(P, N): the spot light of shaders/lights.glsl, parameters from this stage's record floats"},
+      {"light_directional", 2, 2, kAllStages,
+       "light_directional(P, N): the directional light of shaders/lights.glsl, parameters from this stage's "
+       "record floats"},
   };
   return table;
 }

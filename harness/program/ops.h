@@ -43,6 +43,9 @@ struct OpInfo {
 //   shader_record_uint (1 Uint literal i in 0..7 -> Uint),
 //   shader_record_float (same -> Float): word i of this stage's own shader
 //       record data (raygen, miss, hit groups, callables).
+//   light_point, light_spot, light_directional (P Vec3, N Vec3 -> Vec4): the
+//       lights of shaders/lights.glsl at P with normal N, parameters from this
+//       stage's own shader record floats (what `light:` computes in a callable).
 const std::vector<OpInfo>& ops();
 const OpInfo* findOp(const std::string& name);
 

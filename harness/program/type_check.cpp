@@ -166,6 +166,12 @@ std::optional<ProgramError> checkOp(Expr& e, Stage stage, const OpInfo& op) {
     e.type = ValueType::Float;
     return std::nullopt;
   }
+  if (name.rfind("light_", 0) == 0) {
+    if (a[0].type != ValueType::Vec3 || a[1].type != ValueType::Vec3)
+      return bad("need a Vec3 position and a Vec3 normal");
+    e.type = ValueType::Vec4;
+    return std::nullopt;
+  }
   if (name == "shader_record_uint" || name == "shader_record_float") {
     if (!isUintLiteral(a[0]) || a[0].literal[0] > 7)
       return err(e, "operator '" + name + "' takes a Uint literal word index 0..7");

@@ -25,6 +25,7 @@ std::vector<RecordField> buildFields() {
       {"depth", FieldType::Uint, 1, false},
       {"value", FieldType::Uint, 1, false},
       {"color", FieldType::Float, 4, false},
+      {"color2", FieldType::Float, 4, false},
       {"raygen_runs", FieldType::Uint, 1, true},
       {"miss_runs", FieldType::Uint, 1, true},
       {"closest_hit_runs", FieldType::Uint, 1, true},

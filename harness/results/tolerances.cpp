@@ -14,7 +14,7 @@ bool Tolerance::matches(float device, float model) const {
 
 Tolerance toleranceFor(const std::string& field) {
   if (field == "barycentrics") return {1e-4, 0.0};
-  if (field == "color") return {1e-4, 1e-4};
+  if (field == "color" || field == "color2") return {1e-4, 1e-4};
   return {1e-5, 1e-5};
 }
 

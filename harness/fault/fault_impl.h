@@ -1,0 +1,103 @@
+// The implementations behind the fault table (internal to fault/): one
+// function per fault, a record edit or a case mutation.
+#pragma once
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "fault/planted_fault.h"
+#include "fault/record_edit.h"
+#include "model/model_backend.h"
+
+namespace rayspec {
+
+struct RecordFaultArgs {
+  const Case& c;
+  RecordEdit& dev;        // the device's results, to corrupt
+  const RecordView& mod;  // the model's results
+  const Results& model;
+  const std::set<uint32_t>& ambiguous;  // rays the model marks ambiguous
+};
+using RecordFaultFn = FaultResult (*)(RecordFaultArgs&);
+
+// Changes the case (and the model's options) into what a device breaking the
+// rule acts on; returns what it changed, empty when nothing (not applicable).
+using CaseMutationFn = std::string (*)(Case&, ModelOptions&);
+
+struct FaultImpl {
+  const char* name;
+  FaultKind kind;
+  const char* breaks;
+  RecordFaultFn record = nullptr;
+  CaseMutationFn mutate = nullptr;
+};
+const std::vector<FaultImpl>& faultImpls();
+
+FaultResult describeRay(uint32_t ray, const std::string& what);  // applied, "ray N: what"
+FaultResult notApplicable(const std::string& why);
+
+// Record edits (record_faults.cpp, record_faults_rules.cpp).
+FaultResult dropMiss(RecordFaultArgs& a);
+FaultResult swapPrimitiveId(RecordFaultArgs& a);
+FaultResult chitAfterIgnore(RecordFaultArgs& a);
+FaultResult shiftT(RecordFaultArgs& a);
+FaultResult duplicateAnyHit(RecordFaultArgs& a);
+FaultResult leakEdge(RecordFaultArgs& a);
+FaultResult doubleHitEdge(RecordFaultArgs& a);
+FaultResult missAfterClosestHit(RecordFaultArgs& a);
+FaultResult hitKindFlipped(RecordFaultArgs& a);
+FaultResult inactiveRenumbered(RecordFaultArgs& a);
+FaultResult tmaxViewInitial(RecordFaultArgs& a);
+FaultResult builtinWrong(RecordFaultArgs& a);
+FaultResult tieAnsweredNeither(RecordFaultArgs& a);  // record_faults_ties.cpp
+
+// Case mutations: scene (mutate_scene.cpp), boxes (mutate_boxes.cpp), ray
+// flags and candidate order (mutate_flags.cpp), stage programs
+// (mutate_programs.cpp), shader binding table (mutate_sbt.cpp).
+std::string instanceMaskIgnored(Case& c, ModelOptions& o);
+std::string facingInverted(Case& c, ModelOptions& o);
+std::string worldSpaceFacing(Case& c, ModelOptions& o);
+std::string cullDisableIgnored(Case& c, ModelOptions& o);
+std::string instanceOpacityIgnored(Case& c, ModelOptions& o);
+std::string anyHitOnOpaque(Case& c, ModelOptions& o);
+std::string instanceTransformInverted(Case& c, ModelOptions& o);
+std::string inactiveRevived(Case& c, ModelOptions& o);
+std::string degenerateHit(Case& c, ModelOptions& o);
+std::string boxEnteredFromInsideMissed(Case& c, ModelOptions& o);
+std::string closestBoxSkipped(Case& c, ModelOptions& o);
+std::string facingCullIgnored(Case& c, ModelOptions& o);
+std::string rayOpacityIgnored(Case& c, ModelOptions& o);
+std::string opacityCullIgnored(Case& c, ModelOptions& o);
+std::string firstHitFlagIgnored(Case& c, ModelOptions& o);
+std::string skipClosestHitIgnored(Case& c, ModelOptions& o);
+std::string skipTrianglesIgnored(Case& c, ModelOptions& o);
+std::string skipAabbsIgnored(Case& c, ModelOptions& o);
+std::string ignoreAccepts(Case& c, ModelOptions& o);
+std::string codeAfterIgnoreRuns(Case& c, ModelOptions& o);
+std::string terminateContinues(Case& c, ModelOptions& o);
+std::string codeAfterTerminateRuns(Case& c, ModelOptions& o);
+std::string reportReturnInverted(Case& c, ModelOptions& o);
+std::string reportKindDropped(Case& c, ModelOptions& o);
+std::string closestAnyHitSkipped(Case& c, ModelOptions& o);
+std::string unusedAnyHitIgnores(Case& c, ModelOptions& o);
+std::string payloadWritesLost(Case& c, ModelOptions& o);
+std::string hitAttributesLost(Case& c, ModelOptions& o);
+std::string callableDataNotReturned(Case& c, ModelOptions& o);
+std::string nestedTraceDropped(Case& c, ModelOptions& o);
+std::string intersectionRunsTwice(Case& c, ModelOptions& o);
+std::string hitRecordShifted(Case& c, ModelOptions& o);
+std::string instanceSbtOffsetIgnored(Case& c, ModelOptions& o);
+std::string missRecordShifted(Case& c, ModelOptions& o);
+std::string callableRecordShifted(Case& c, ModelOptions& o);
+std::string callableIndexIgnored(Case& c, ModelOptions& o);
+std::string customIndexTruncated(Case& c, ModelOptions& o);
+std::string zeroRecordRunsGroup0(Case& c, ModelOptions& o);
+std::string shaderRecordDataZeroed(Case& c, ModelOptions& o);
+std::string reverseOrder(Case& c, ModelOptions& o);
+std::string buildOrderFirstHit(Case& c, ModelOptions& o);
+// The interval ends (mutate_intervals.cpp).
+std::string closedTriangleInterval(Case& c, ModelOptions& o);
+std::string openAabbInterval(Case& c, ModelOptions& o);
+
+}  // namespace rayspec

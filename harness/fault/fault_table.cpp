@@ -1,0 +1,160 @@
+// Every planted fault: its name, its kind and the rule break it stands for.
+#include <algorithm>
+
+#include "fault/fault_impl.h"
+
+namespace rayspec {
+
+const std::vector<FaultImpl>& faultImpls() {
+  using K = FaultKind;
+  static const std::vector<FaultImpl> table = {
+      // Record edits of the device's own results.
+      {"drop-miss", K::RecordEdit, "a clear ray that missed runs no miss shader", dropMiss},
+      {"swap-primitive-id", K::RecordEdit, "two clear hit rays report each other's primitive id", swapPrimitiveId},
+      {"chit-after-ignore", K::RecordEdit, "a clear ray that missed (its candidates ignored) runs closest-hit",
+       chitAfterIgnore},
+      {"shift-t", K::RecordEdit, "a clear hit's t is 1e-3 further", shiftT},
+      {"duplicate-any-hit", K::RecordEdit, "any-hit runs twice for a NO_DUPLICATE_ANY_HIT primitive",
+       duplicateAnyHit},
+      {"leak-edge", K::RecordEdit, "a ray through a shared edge or vertex misses every triangle sharing it",
+       leakEdge},
+      {"double-hit-edge", K::RecordEdit, "a ray through a shared edge or vertex hits every triangle sharing it",
+       doubleHitEdge},
+      {"miss-after-closest-hit", K::RecordEdit, "a clear hit ray runs the miss shader too", missAfterClosestHit},
+      {"hit-kind-flipped", K::RecordEdit, "triangle hits report the other face's hit kind (0xFE <-> 0xFF)",
+       hitKindFlipped},
+      {"inactive-renumbered", K::RecordEdit,
+       "inactive primitives and null instances do not count for the ids of the others", inactiveRenumbered},
+      {"tmax-view-initial", K::RecordEdit,
+       "gl_RayTmaxEXT in intersection, any-hit and closest-hit reads the tmax the trace started with",
+       tmaxViewInitial},
+      {"builtin-wrong", K::RecordEdit, "a built-in a stage reads is off by one on a clear ray", builtinWrong},
+      {"tie-answered-neither", K::RecordEdit, "a hit tied with another at the committed t (or at an interval end) "
+       "is answered with neither: a miss", tieAnsweredNeither},
+      // Case mutations: the scene as a breaking device sees it.
+      {"instance-mask-ignored", K::CaseMutation, "instance masks are ignored (every instance visible)", nullptr,
+       instanceMaskIgnored},
+      {"facing-inverted", K::CaseMutation, "facing has the opposite sign (front and back swapped)", nullptr,
+       facingInverted},
+      {"world-space-facing", K::CaseMutation,
+       "facing is decided in world space (a mirroring instance transform flips it)", nullptr, worldSpaceFacing},
+      {"cull-disable-ignored", K::CaseMutation, "TRIANGLE_FACING_CULL_DISABLE is ignored", nullptr,
+       cullDisableIgnored},
+      {"instance-opacity-ignored", K::CaseMutation, "FORCE_OPAQUE / FORCE_NO_OPAQUE instance flags are ignored",
+       nullptr, instanceOpacityIgnored},
+      {"any-hit-on-opaque", K::CaseMutation, "any-hit runs on opaque candidates", nullptr, anyHitOnOpaque},
+      {"instance-transform-inverted", K::CaseMutation,
+       "the ray is taken into object space by the instance transform instead of its inverse", nullptr,
+       instanceTransformInverted},
+      {"inactive-revived", K::CaseMutation, "inactive primitives and null instances are hit (NaN X read as 0)",
+       nullptr, inactiveRevived},
+      {"degenerate-hit", K::CaseMutation, "degenerate triangles (lines, points) are hit", nullptr, degenerateHit},
+      {"box-entered-from-inside-missed", K::CaseMutation,
+       "a box the ray starts inside never runs its intersection shader", nullptr, boxEnteredFromInsideMissed},
+      {"closest-box-skipped", K::CaseMutation,
+       "the closest box a ray crosses never runs its intersection shader", nullptr, closestBoxSkipped},
+      // Case mutations: ray and pipeline flags.
+      {"facing-cull-ignored", K::CaseMutation, "CullBackFacing / CullFrontFacing are ignored", nullptr,
+       facingCullIgnored},
+      {"ray-opacity-ignored", K::CaseMutation, "the Opaque / NoOpaque ray flags are ignored", nullptr,
+       rayOpacityIgnored},
+      {"opacity-cull-ignored", K::CaseMutation, "CullOpaque / CullNoOpaque are ignored", nullptr,
+       opacityCullIgnored},
+      {"first-hit-flag-ignored", K::CaseMutation, "TerminateOnFirstHit is ignored (by a device finding candidates far to near)", nullptr, firstHitFlagIgnored},
+      {"skip-closest-hit-ignored", K::CaseMutation, "SkipClosestHit is ignored", nullptr, skipClosestHitIgnored},
+      {"skip-triangles-ignored", K::CaseMutation, "SkipTriangles (ray or pipeline flag) is ignored", nullptr,
+       skipTrianglesIgnored},
+      {"skip-aabbs-ignored", K::CaseMutation, "SkipAABBs (ray or pipeline flag) is ignored", nullptr,
+       skipAabbsIgnored},
+      // Case mutations: stage programs.
+      {"ignore-accepts", K::CaseMutation, "ignoreIntersectionEXT accepts the candidate", nullptr, ignoreAccepts},
+      {"code-after-ignore-runs", K::CaseMutation, "the statements after ignoreIntersectionEXT run", nullptr,
+       codeAfterIgnoreRuns},
+      {"terminate-continues", K::CaseMutation, "terminateRayEXT accepts but traversal goes on", nullptr,
+       terminateContinues},
+      {"code-after-terminate-runs", K::CaseMutation,
+       "the statements after terminateRayEXT (and after the report it ends) run", nullptr, codeAfterTerminateRuns},
+      {"report-return-inverted", K::CaseMutation, "reportIntersectionEXT returns the opposite of what it did",
+       nullptr, reportReturnInverted},
+      {"report-kind-dropped", K::CaseMutation, "reportIntersectionEXT's hit kind is lost (reads 0)", nullptr,
+       reportKindDropped},
+      {"closest-any-hit-skipped", K::CaseMutation, "any-hit never runs (the closest hit's included)", nullptr,
+       closestAnyHitSkipped},
+      {"unused-any-hit-ignores", K::CaseMutation, "a hit group without any-hit (or all-zero) ignores candidates",
+       nullptr, unusedAnyHitIgnores},
+      {"payload-writes-lost", K::CaseMutation, "payload writes of miss, closest-hit and any-hit never reach the caller",
+       nullptr, payloadWritesLost},
+      {"hit-attributes-lost", K::CaseMutation, "the attribute an intersection shader reports is lost (reads 0)",
+       nullptr, hitAttributesLost},
+      {"callable-data-not-returned", K::CaseMutation, "a callable's writes to its data never reach the caller",
+       nullptr, callableDataNotReturned},
+      {"nested-trace-dropped", K::CaseMutation, "traces from closest-hit and miss do nothing (no recursion)",
+       nullptr, nestedTraceDropped},
+      {"intersection-runs-twice", K::CaseMutation,
+       "legal: every intersection shader runs twice in a row for its primitive", nullptr, intersectionRunsTwice},
+      // Case mutations: the shader binding table.
+      {"hit-record-shifted", K::CaseMutation, "closest-hit of the wrong SBT record (record i runs record i+1's group)",
+       nullptr, hitRecordShifted},
+      {"instance-sbt-offset-ignored", K::CaseMutation, "the instance SBT record offset is ignored", nullptr,
+       instanceSbtOffsetIgnored},
+      {"miss-record-shifted", K::CaseMutation, "the miss shader of the wrong SBT record runs", nullptr,
+       missRecordShifted},
+      {"callable-record-shifted", K::CaseMutation, "executeCallableEXT(i) runs callable record i+1", nullptr,
+       callableRecordShifted},
+      {"callable-index-ignored", K::CaseMutation, "executeCallableEXT(i) runs callable record 0 whatever i", nullptr,
+       callableIndexIgnored},
+      {"custom-index-truncated", K::CaseMutation, "instanceCustomIndex keeps 16 of its 24 bits", nullptr,
+       customIndexTruncated},
+      {"zero-record-runs-group-0", K::CaseMutation, "an all-zero SBT record runs the shaders of group 0", nullptr,
+       zeroRecordRunsGroup0},
+      {"shader-record-data-zeroed", K::CaseMutation, "shaders read zeros instead of their shader record data",
+       nullptr, shaderRecordDataZeroed},
+      // Case mutations: candidate order (a model option).
+      {"reverse-order", K::CaseMutation, "legal: candidates are found far to near", nullptr, reverseOrder},
+      {"build-order-first-hit", K::CaseMutation,
+       "the answer depends on the order: the first confirmed candidate in build order wins", nullptr,
+       buildOrderFirstHit},
+      // Case mutations: the interval ends, judged the wrong way where they are exact.
+      {"closed-triangle-interval", K::CaseMutation, "a triangle at exactly tmin or tmax is a candidate", nullptr,
+       closedTriangleInterval},
+      {"open-aabb-interval", K::CaseMutation, "reportIntersectionEXT at exactly tmin or the current tmax returns false",
+       nullptr, openAabbInterval},
+      // Process faults, raised in the device's child process.
+      {"crash", K::Process, "the device process dies (SIGSEGV) after the run"},
+      {"hang", K::Process, "the device process never returns"},
+  };
+  return table;
+}
+
+const std::vector<FaultInfo>& faultTable() {
+  static const std::vector<FaultInfo> table = [] {
+    std::vector<FaultInfo> t;
+    for (const FaultImpl& f : faultImpls()) t.push_back({f.name, f.kind, f.breaks});
+    return t;
+  }();
+  return table;
+}
+
+const FaultInfo* findFault(const std::string& name) {
+  for (const FaultInfo& f : faultTable())
+    if (f.name == name) return &f;
+  return nullptr;
+}
+
+const std::vector<std::string>& faultNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const FaultInfo& f : faultTable()) n.push_back(f.name);
+    return n;
+  }();
+  return names;
+}
+
+bool isFaultName(const std::string& name) { return findFault(name) != nullptr; }
+
+bool isProcessFault(const std::string& name) {
+  const FaultInfo* f = findFault(name);
+  return f && f->kind == FaultKind::Process;
+}
+
+}  // namespace rayspec

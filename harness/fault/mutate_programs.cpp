@@ -1,0 +1,167 @@
+// Case mutations of the stage programs: a device that gets a statement's
+// meaning wrong acts as the correct one on the changed program.
+#include "fault/fault_impl.h"
+#include "fault/program_edit.h"
+#include "program/builtins.h"
+
+namespace rayspec {
+namespace {
+
+std::string count(size_t n, const std::string& what) {
+  return n ? std::to_string(n) + " " + what : std::string();
+}
+
+size_t removeEverywhere(Case& c, Stmt::Kind kind, StageMask stages = kAllStages) {
+  size_t n = 0;
+  forEachProgram(c.pipeline, [&](Program& p, Stage s) {
+    if (stages & stageBit(s)) n += removeStmts(p, [&](const Stmt& st) { return st.kind == kind; });
+  });
+  return n;
+}
+
+// Moves each statement of `kind` to the end of its block: what came after
+// it now runs before it.
+size_t moveToBlockEnd(Case& c, Stmt::Kind kind) {
+  size_t n = 0;
+  forEachProgram(c.pipeline, [&](Program& p, Stage) {
+    forEachBlock(p, [&](std::vector<Stmt>& block) {
+      for (size_t i = 0; i + 1 < block.size(); ++i) {
+        if (block[i].kind != kind) continue;
+        Stmt s = std::move(block[i]);
+        block.erase(block.begin() + static_cast<long>(i));
+        block.push_back(std::move(s));
+        ++n;
+        break;
+      }
+    });
+  });
+  return n;
+}
+
+size_t eachReport(Case& c, const std::function<bool(Stmt&)>& edit) {
+  size_t n = 0;
+  forEachProgram(c.pipeline, [&](Program& p, Stage) {
+    forEachStmt(p, [&](Stmt& s) {
+      if (s.kind == Stmt::Kind::Report && edit(s)) ++n;
+    });
+  });
+  return n;
+}
+
+Program ignoreEverything() {
+  Stmt s;
+  s.kind = Stmt::Kind::Ignore;
+  return {s};
+}
+
+}  // namespace
+
+std::string ignoreAccepts(Case& c, ModelOptions&) {
+  return count(removeEverywhere(c, Stmt::Kind::Ignore), "ignoreIntersectionEXT calls accept");
+}
+
+std::string codeAfterIgnoreRuns(Case& c, ModelOptions&) {
+  return count(moveToBlockEnd(c, Stmt::Kind::Ignore), "blocks run past ignoreIntersectionEXT");
+}
+
+std::string terminateContinues(Case& c, ModelOptions&) {
+  return count(removeEverywhere(c, Stmt::Kind::Terminate), "terminateRayEXT calls let traversal go on");
+}
+
+std::string codeAfterTerminateRuns(Case& c, ModelOptions&) {
+  return count(moveToBlockEnd(c, Stmt::Kind::Terminate), "blocks run past terminateRayEXT");
+}
+
+std::string reportReturnInverted(Case& c, ModelOptions&) {
+  return count(eachReport(c, [](Stmt& s) {
+                 if (s.then_.empty() && s.else_.empty()) return false;
+                 std::swap(s.then_, s.else_);
+                 return true;
+               }),
+               "reports run the other branch");
+}
+
+std::string reportKindDropped(Case& c, ModelOptions&) {
+  return count(eachReport(c, [](Stmt& s) {
+                 if (s.hit_kind.kind == Expr::Kind::Literal && !s.hit_kind.literal.empty() && s.hit_kind.literal[0] == 0)
+                   return false;
+                 Expr zero;
+                 zero.kind = Expr::Kind::Literal;
+                 zero.type = ValueType::Uint;
+                 zero.literal = {0};
+                 zero.loc = s.hit_kind.loc;
+                 s.hit_kind = zero;
+                 return true;
+               }),
+               "reports lose their hit kind");
+}
+
+std::string hitAttributesLost(Case& c, ModelOptions&) {
+  return count(eachReport(c, [](Stmt& s) {
+                 const bool had = !s.attribute.empty();
+                 s.attribute.clear();
+                 return had;
+               }),
+               "reports lose their attribute");
+}
+
+std::string closestAnyHitSkipped(Case& c, ModelOptions&) {
+  size_t n = 0;
+  for (HitGroup& g : c.pipeline.hit_groups) {
+    n += g.any_hit.has_value();
+    g.any_hit.reset();
+  }
+  return count(n, "any-hit shaders never run");
+}
+
+std::string unusedAnyHitIgnores(Case& c, ModelOptions&) {
+  size_t n = 0;
+  for (HitGroup& g : c.pipeline.hit_groups)
+    if (!g.any_hit) {
+      g.any_hit = ignoreEverything();
+      ++n;
+    }
+  // All-zero hit records: a group of their own whose any-hit ignores.
+  std::vector<SbtRecord>& hits = c.pipeline.sbt_hit;
+  bool zero = false;
+  for (const SbtRecord& r : hits) zero = zero || !r.group;
+  if (zero) {
+    HitGroup g;
+    g.any_hit = ignoreEverything();
+    c.pipeline.hit_groups.push_back(g);
+    for (SbtRecord& r : hits)
+      if (!r.group) {
+        r.group = static_cast<uint32_t>(c.pipeline.hit_groups.size() - 1);
+        ++n;
+      }
+  }
+  return count(n, "hit groups (or all-zero records) without any-hit ignore every candidate");
+}
+
+std::string payloadWritesLost(Case& c, ModelOptions&) {
+  return count(removeEverywhere(c, Stmt::Kind::SetPayload), "payload writes lost");
+}
+
+std::string callableDataNotReturned(Case& c, ModelOptions&) {
+  const StageMask callable = stageBit(Stage::Callable);
+  return count(removeEverywhere(c, Stmt::Kind::SetCall, callable) + removeEverywhere(c, Stmt::Kind::Light, callable),
+               "callable data writes lost");
+}
+
+std::string nestedTraceDropped(Case& c, ModelOptions&) {
+  return count(removeEverywhere(c, Stmt::Kind::Trace, kAllStages & ~stageBit(Stage::Raygen)),
+               "nested traces do nothing");
+}
+
+std::string intersectionRunsTwice(Case& c, ModelOptions&) {
+  size_t n = 0;
+  for (HitGroup& g : c.pipeline.hit_groups)
+    if (g.intersection && !g.intersection->empty()) {
+      const Program once = *g.intersection;
+      g.intersection->insert(g.intersection->end(), once.begin(), once.end());
+      ++n;
+    }
+  return count(n, "intersection shaders run twice");
+}
+
+}  // namespace rayspec

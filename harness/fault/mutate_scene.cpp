@@ -1,0 +1,188 @@
+// Case mutations of the scene: instances, facing, opacity, inactive and
+// degenerate primitives as a device breaking the rule sees them.
+#include <algorithm>
+#include <cmath>
+
+#include "case/transform.h"
+#include "fault/fault_impl.h"
+#include "fault/program_edit.h"
+
+namespace rayspec {
+namespace {
+
+std::string count(size_t n, const std::string& what) {
+  return n ? std::to_string(n) + " " + what : std::string();
+}
+
+bool reachesTriangles(const Case& c, const Instance& inst) {
+  return inst.blas && !c.scene.blases[*inst.blas].geometries.empty() &&
+         c.scene.blases[*inst.blas].geometries[0].kind == Geometry::Kind::Triangles;
+}
+
+// Toggles TRIANGLE_FLIP_FACING on the triangle instances `pick` selects.
+size_t toggleFlip(Case& c, const std::function<bool(const Instance&)>& pick) {
+  size_t n = 0;
+  for (Instance& inst : c.scene.instances)
+    if (reachesTriangles(c, inst) && pick(inst)) {
+      inst.flags ^= kInstanceFlipFacing;
+      ++n;
+    }
+  return n;
+}
+
+size_t clearInstanceFlags(Case& c, uint32_t bits) {
+  size_t n = 0;
+  for (Instance& inst : c.scene.instances) {
+    n += (inst.flags & bits) != 0;
+    inst.flags &= ~bits;
+  }
+  return n;
+}
+
+using D3 = std::array<double, 3>;
+D3 sub(const D3& a, const D3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+D3 cross(const D3& a, const D3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double len(const D3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+D3 axpy(const D3& p, const D3& u, double s) { return {p[0] + u[0] * s, p[1] + u[1] * s, p[2] + u[2] * s}; }
+
+// A triangle that holds the degenerate one (a segment P..Q or a point)
+// strictly inside: base below the segment, apex above it, in the plane of the
+// segment and the coordinate axis least along it (z for a point).
+std::array<Vec3, 3> fattened(const std::array<D3, 3>& v) {
+  D3 p = v[0], q = v[0];
+  double longest = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = i + 1; j < 3; ++j)
+      if (len(sub(v[j], v[i])) > longest) {
+        longest = len(sub(v[j], v[i]));
+        p = v[i];
+        q = v[j];
+      }
+  D3 u = longest > 0 ? D3{(q[0] - p[0]) / longest, (q[1] - p[1]) / longest, (q[2] - p[2]) / longest} : D3{1, 0, 0};
+  int axis = 2;
+  for (int k = 1; k >= 0; --k)
+    if (std::fabs(u[k]) < std::fabs(u[axis])) axis = k;
+  D3 n{0, 0, 0};
+  n[axis] = 1;
+  D3 w = cross(n, u);
+  const double wl = len(w);
+  w = {w[0] / wl, w[1] / wl, w[2] / wl};
+  const double e = 0.25 * std::max(longest, 1.0);
+  const D3 mid = axpy(p, sub(q, p), 0.5);
+  auto f = [](const D3& d) { return Vec3{static_cast<float>(d[0]), static_cast<float>(d[1]), static_cast<float>(d[2])}; };
+  return {f(axpy(axpy(p, u, -e), w, -e)), f(axpy(axpy(q, u, e), w, -e)), f(axpy(mid, w, longest + e))};
+}
+
+}  // namespace
+
+std::string instanceMaskIgnored(Case& c, ModelOptions&) {
+  size_t n = 0;
+  for (Instance& inst : c.scene.instances) {
+    n += (inst.mask & 0xFF) != 0xFF;
+    inst.mask = 0xFF;
+  }
+  return count(n, "instance masks set to 0xFF");
+}
+
+std::string facingInverted(Case& c, ModelOptions&) {
+  return count(toggleFlip(c, [](const Instance&) { return true; }), "triangle instances see the other face");
+}
+
+std::string worldSpaceFacing(Case& c, ModelOptions&) {
+  return count(toggleFlip(c, [](const Instance& i) { return linearDeterminant(i.transform) < 0; }),
+               "mirroring instances flip their facing");
+}
+
+std::string cullDisableIgnored(Case& c, ModelOptions&) {
+  return count(clearInstanceFlags(c, kInstanceFacingCullDisable), "instances lose TRIANGLE_FACING_CULL_DISABLE");
+}
+
+std::string instanceOpacityIgnored(Case& c, ModelOptions&) {
+  return count(clearInstanceFlags(c, kInstanceForceOpaque | kInstanceForceNoOpaque),
+               "instances lose FORCE_OPAQUE / FORCE_NO_OPAQUE");
+}
+
+// Without a cull by opacity, a candidate that any-hit runs on behaves as a
+// non-opaque one: every opaque source cleared.
+std::string anyHitOnOpaque(Case& c, ModelOptions&) {
+  if (mayUseRayFlags(c, kRayCullOpaque | kRayCullNoOpaque)) return {};
+  size_t n = clearInstanceFlags(c, kInstanceForceOpaque);
+  for (Blas& b : c.scene.blases)
+    for (Geometry& g : b.geometries) {
+      n += (g.flags & kGeometryOpaque) != 0;
+      g.flags &= ~kGeometryOpaque;
+    }
+  n += clearRayFlags(c, kRayOpaque);
+  return count(n, "opaque geometries, instances or ray flags made any-hit candidates");
+}
+
+std::string instanceTransformInverted(Case& c, ModelOptions&) {
+  size_t n = 0;
+  for (Instance& inst : c.scene.instances) {
+    if (inst.transform == kIdentity) continue;
+    const std::array<double, 12> inv = invertTransform(inst.transform);
+    Transform t;
+    for (int k = 0; k < 12; ++k) t[k] = static_cast<float>(inv[k]);
+    if (t == inst.transform) continue;  // its own inverse (a mirror)
+    inst.transform = t;
+    ++n;
+  }
+  return count(n, "instance transforms replaced by their inverses");
+}
+
+std::string inactiveRevived(Case& c, ModelOptions&) {
+  size_t n = 0;
+  for (Blas& b : c.scene.blases)
+    for (Geometry& g : b.geometries) {
+      for (Vec3& v : g.vertices)
+        if (std::isnan(v[0])) {
+          v[0] = 0;
+          ++n;
+        }
+      for (auto& a : g.aabbs)
+        if (std::isnan(a[0])) {
+          a[0] = a[3] - std::max(a[4] - a[1], 1.0f);
+          ++n;
+        }
+    }
+  for (Instance& inst : c.scene.instances)
+    if (!inst.blas && !c.scene.blases.empty()) {
+      inst.blas = 0;
+      ++n;
+    }
+  return count(n, "inactive vertices, boxes or instances made active");
+}
+
+std::string degenerateHit(Case& c, ModelOptions&) {
+  size_t n = 0;
+  for (Blas& b : c.scene.blases)
+    for (Geometry& g : b.geometries) {
+      if (g.kind != Geometry::Kind::Triangles) continue;
+      for (uint32_t p = 0; p < g.primitiveCount(); ++p) {
+        std::array<D3, 3> v;
+        bool finite = true;
+        for (uint32_t k = 0; k < 3; ++k) {
+          const uint32_t i = g.indices.empty() ? p * 3 + k : g.indices[p * 3 + k];
+          if (i >= g.vertices.size()) finite = false;
+          else v[k] = {g.vertices[i][0], g.vertices[i][1], g.vertices[i][2]};
+          for (double x : v[k]) finite = finite && std::isfinite(x);
+        }
+        if (!finite || len(cross(sub(v[1], v[0]), sub(v[2], v[0]))) != 0) continue;
+        const std::array<Vec3, 3> t = fattened(v);
+        for (uint32_t k = 0; k < 3; ++k) {
+          if (g.indices.empty()) {
+            g.vertices[p * 3 + k] = t[k];
+          } else {  // its own vertices: others may share the old ones
+            g.indices[p * 3 + k] = static_cast<uint32_t>(g.vertices.size());
+            g.vertices.push_back(t[k]);
+          }
+        }
+        ++n;
+      }
+    }
+  return count(n, "degenerate triangles made hittable");
+}
+
+}  // namespace rayspec

@@ -1,0 +1,108 @@
+// Proving one rule claim of a case: every fault of the rule planted in a
+// perfect device's results, each judged.
+#include <sstream>
+
+#include "compare/compare_results.h"
+#include "fault/planted_fault.h"
+#include "fault/rule_faults.h"
+
+namespace rayspec {
+namespace {
+
+bool sameResults(const Results& a, const Results& b) {
+  if (a.records != b.records || a.counters != b.counters || a.images.size() != b.images.size()) return false;
+  for (size_t i = 0; i < a.images.size(); ++i)
+    if (a.images[i].texels != b.images[i].texels) return false;
+  return true;
+}
+
+bool namesRule(const Verdict& v, const std::string& rule) {
+  for (const Finding& f : v.findings)
+    if (f.status == v.status && f.rule.find(rule) != std::string::npos) return true;
+  return false;
+}
+
+FaultOutcome plant(const std::string& fault, bool legal, const Case& c, const Plan& plan, const Results& model,
+                   const Results& perfect, const std::string& rule) {
+  FaultOutcome o;
+  o.fault = fault;
+  o.legal = legal;
+  Results device = perfect;
+  const FaultResult f = plantFault(fault, c, plan, device, model);
+  o.applied = f.applied;
+  o.what = f.what;
+  if (!f.applied) return o;
+  o.changed = !sameResults(device, perfect);
+  const Verdict v = compareResults(c, plan, device, model);
+  o.status = v.status;
+  o.names_rule = namesRule(v, rule);
+  o.headline = v.headline();
+  return o;
+}
+
+}  // namespace
+
+const char* claimResultName(ClaimResult r) {
+  switch (r) {
+    case ClaimResult::Proven: return "proven";
+    case ClaimResult::Hollow: return "hollow";
+    case ClaimResult::FailsLegal: return "fails a legal device";
+    case ClaimResult::Pending: return "pending";
+    case ClaimResult::NotChecked: return "not checked";
+    case ClaimResult::UnknownRule: return "unknown rule";
+  }
+  return "?";
+}
+
+std::string ClaimProof::describe() const {
+  std::ostringstream s;
+  s << rule << ": " << claimResultName(result);
+  if (!note.empty()) s << " (" << note << ")";
+  for (const FaultOutcome& o : outcomes) {
+    s << "\n    " << (o.legal ? "legal " : "break ") << o.fault << ": ";
+    if (!o.applied) s << "not applicable: " << o.what;
+    else if (!o.changed) s << "changed nothing (" << o.what << ")";
+    else s << o.headline << (o.names_rule ? "" : " [no finding names the rule]");
+  }
+  return s.str();
+}
+
+ClaimProof proveClaim(const Case& c, const Plan& plan, const Results& model, const Results& perfect,
+                      const std::string& rule) {
+  ClaimProof p;
+  p.rule = rule;
+  const RuleFaults* rf = findRuleFaults(rule);
+  if (!rf) {
+    p.result = ClaimResult::UnknownRule;
+    return p;
+  }
+  if (rule == "R-UB" || !rf->pending.empty()) {
+    p.result = rule == "R-UB" ? ClaimResult::NotChecked : ClaimResult::Pending;
+    p.note = rf->pending;
+    return p;
+  }
+  bool broken = false, exercised = false;
+  for (const std::string& f : rf->breaks) {
+    p.outcomes.push_back(plant(f, false, c, plan, model, perfect, rule));
+    const FaultOutcome& o = p.outcomes.back();
+    broken = broken || (o.changed && o.status == rf->expect);
+  }
+  for (const std::string& f : rf->legal) {
+    p.outcomes.push_back(plant(f, true, c, plan, model, perfect, rule));
+    const FaultOutcome& o = p.outcomes.back();
+    if (o.applied && o.status != Status::Pass) {
+      p.result = ClaimResult::FailsLegal;
+      p.note = "the legal variation " + f + " gives " + statusName(o.status);
+      return p;
+    }
+    exercised = exercised || o.applied;
+  }
+  const bool proven = rf->breaks.empty() ? exercised : broken;
+  p.result = proven ? ClaimResult::Proven : ClaimResult::Hollow;
+  if (!proven)
+    p.note = rf->breaks.empty() ? "no legal variation finds anything to vary"
+                                : std::string("no break gives ") + statusName(rf->expect);
+  return p;
+}
+
+}  // namespace rayspec

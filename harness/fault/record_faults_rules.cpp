@@ -1,0 +1,182 @@
+// Record edits of the values stages read: built-ins, hit kinds, ids, tmax.
+#include <cmath>
+#include <functional>
+
+#include "fault/fault_impl.h"
+#include "results/record_layout.h"
+
+namespace rayspec {
+namespace {
+
+bool readsBuiltin(const Expr& e, const std::function<bool(const std::string&)>& pred) {
+  if (e.kind == Expr::Kind::Builtin && pred(e.name)) return true;
+  for (const Expr& a : e.args)
+    if (readsBuiltin(a, pred)) return true;
+  return false;
+}
+
+bool isBuiltin(const Expr& e, const char* name) { return e.kind == Expr::Kind::Builtin && e.name == name; }
+
+// The case records `field` straight from the built-in of the same name.
+bool recordsOwnBuiltin(const Case& c, const std::string& field) {
+  for (const FieldWrite& w : fieldWrites(c))
+    if (w.field == field && isBuiltin(*w.value, field.c_str())) return true;
+  return false;
+}
+
+bool hitStage(Stage s) { return s == Stage::Intersection || s == Stage::AnyHit || s == Stage::ClosestHit; }
+
+// Values carried between stages, not built-ins of the API.
+bool isApiBuiltin(const std::string& name) {
+  for (const char* prefix : {"payload.", "child.", "call.", "callee."})
+    if (name.rfind(prefix, 0) == 0) return false;
+  return name != "hit" && name != "depth";
+}
+
+bool inactiveTriangle(const Geometry& g, uint32_t p) {
+  for (uint32_t v = 0; v < 3; ++v) {
+    const uint32_t i = g.indices.empty() ? p * 3 + v : g.indices[p * 3 + v];
+    if (i < g.vertices.size() && std::isnan(g.vertices[i][0])) return true;
+  }
+  return false;
+}
+
+// R-INACTIVE: primitives of the geometry before p that are inactive.
+uint32_t inactiveBefore(const Geometry& g, uint32_t p) {
+  uint32_t n = 0;
+  for (uint32_t q = 0; q < p && q < g.primitiveCount(); ++q)
+    n += g.kind == Geometry::Kind::Aabbs ? std::isnan(g.aabbs[q][0]) : inactiveTriangle(g, q);
+  return n;
+}
+
+// The geometry of a hit ray: instance and geometry index as recorded, else
+// the first one with an inactive primitive.
+const Geometry* hitGeometry(const Case& c, const RecordView& v, uint32_t ray) {
+  const auto& insts = c.scene.instances;
+  auto withInactive = [&](const Geometry& g) { return inactiveBefore(g, g.primitiveCount()) > 0; };
+  const Blas* blas = nullptr;
+  if (v.written(ray, "instance_id")) {
+    const uint32_t i = v.get(ray, "instance_id");
+    if (i < insts.size() && insts[i].blas) blas = &c.scene.blases[*insts[i].blas];
+  } else {
+    for (const Instance& inst : insts)
+      if (!blas && inst.blas)
+        for (const Geometry& g : c.scene.blases[*inst.blas].geometries)
+          if (withInactive(g)) blas = &c.scene.blases[*inst.blas];
+  }
+  if (!blas) return nullptr;
+  if (v.written(ray, "geometry_index")) {
+    const uint32_t gi = v.get(ray, "geometry_index");
+    return gi < blas->geometries.size() ? &blas->geometries[gi] : nullptr;
+  }
+  for (const Geometry& g : blas->geometries)
+    if (withInactive(g)) return &g;
+  return nullptr;
+}
+
+}  // namespace
+
+FaultResult hitKindFlipped(RecordFaultArgs& a) {
+  uint32_t edited = 0, first = 0;
+  for (uint32_t ray = 0; ray < a.dev.rays(); ++ray) {
+    if (a.ambiguous.count(ray) || !a.dev.written(ray, "hit_kind")) continue;
+    const uint32_t k = a.dev.get(ray, "hit_kind");
+    if (k != 0xFE && k != 0xFF) continue;
+    a.dev.set(ray, "hit_kind", k ^ 1u);
+    if (!edited++) first = ray;
+  }
+  if (!edited) return notApplicable("no clear ray recorded a triangle hit kind");
+  return describeRay(first, "hit kind flipped (and on " + std::to_string(edited - 1) + " more rays)");
+}
+
+FaultResult inactiveRenumbered(RecordFaultArgs& a) {
+  const Case& c = a.c;
+  const bool prims = recordsOwnBuiltin(c, "primitive_id"), insts = recordsOwnBuiltin(c, "instance_id");
+  uint32_t edited = 0, first = 0;
+  for (uint32_t ray = 0; ray < a.dev.rays(); ++ray) {
+    if (a.ambiguous.count(ray) || a.dev.get(ray, "closest_hit_runs") == 0) continue;
+    bool changed = false;
+    if (insts && a.dev.written(ray, "instance_id")) {
+      const uint32_t i = a.mod.get(ray, "instance_id");
+      uint32_t nulls = 0;
+      for (uint32_t j = 0; j < i && j < c.scene.instances.size(); ++j) nulls += !c.scene.instances[j].blas;
+      if (nulls) a.dev.set(ray, "instance_id", i - nulls);
+      changed = nulls > 0;
+    }
+    if (prims && a.dev.written(ray, "primitive_id")) {
+      const Geometry* g = hitGeometry(c, a.mod, ray);
+      const uint32_t p = a.mod.get(ray, "primitive_id");
+      const uint32_t n = g ? inactiveBefore(*g, p) : 0;
+      if (n) a.dev.set(ray, "primitive_id", p - n);
+      changed = changed || n > 0;
+    }
+    if (changed && !edited++) first = ray;
+  }
+  if (!edited) return notApplicable("no clear hit ray records an id after an inactive primitive or null instance");
+  return describeRay(first, "ids counted without the inactive ones (and on " + std::to_string(edited - 1) +
+                                " more rays)");
+}
+
+FaultResult tmaxViewInitial(RecordFaultArgs& a) {
+  const Case& c = a.c;
+  // Where hit stages record gl_RayTmaxEXT: the field and its component.
+  std::vector<std::pair<std::string, uint32_t>> slots;
+  for (const FieldWrite& w : fieldWrites(c)) {
+    if (!hitStage(w.stage)) continue;
+    const Expr& e = *w.value;
+    if (isBuiltin(e, "ray_tmax")) slots.push_back({w.field, 0});
+    if (e.kind == Expr::Kind::Op && e.name.rfind("vec", 0) == 0)
+      for (size_t j = 0; j < e.args.size(); ++j)
+        if (isBuiltin(e.args[j], "ray_tmax") && e.args.size() == static_cast<size_t>(componentCount(e.type)))
+          slots.push_back({w.field, static_cast<uint32_t>(j)});
+  }
+  if (slots.empty()) return notApplicable("no hit stage records gl_RayTmaxEXT");
+  // The tmax raygen's trace starts with: the launch ray's, or a literal.
+  std::optional<float> literal;
+  for (const Stmt& s : c.pipeline.raygen)
+    if (s.kind == Stmt::Kind::Trace && !s.trace.tmax.empty()) {
+      const Expr& t = s.trace.tmax.front();
+      if (t.kind != Expr::Kind::Literal) return notApplicable("raygen traces with a computed tmax");
+      literal = static_cast<float>(t.literal[0]);
+    }
+  uint32_t edited = 0, first = 0;
+  for (uint32_t ray = 0; ray < a.dev.rays(); ++ray) {
+    if (a.ambiguous.count(ray) || a.dev.get(ray, "closest_hit_runs") == 0) continue;
+    const float initial = literal ? *literal : c.rays.rays[ray].tmax;
+    bool changed = false;
+    for (const auto& [field, k] : slots) {
+      if (!a.dev.written(ray, field) || a.dev.getFloat(ray, field, k) == initial) continue;
+      a.dev.setFloat(ray, field, initial, k);
+      changed = true;
+    }
+    if (changed && !edited++) first = ray;
+  }
+  if (!edited) return notApplicable("no clear hit ray recorded a tmax other than the trace's");
+  return describeRay(first, "gl_RayTmaxEXT read as the trace's tmax (and on " + std::to_string(edited - 1) +
+                                " more rays)");
+}
+
+FaultResult builtinWrong(RecordFaultArgs& a) {
+  const std::vector<FieldWrite> writes = fieldWrites(a.c);
+  for (const std::string& field : a.c.outputs.per_ray) {
+    bool fromBuiltin = false;
+    for (const FieldWrite& w : writes)
+      fromBuiltin = fromBuiltin || (w.field == field && readsBuiltin(*w.value, isApiBuiltin));
+    const RecordField* f = findRecordField(field);
+    if (!fromBuiltin || !f) continue;
+    for (uint32_t ray = 0; ray < a.dev.rays(); ++ray) {
+      if (a.ambiguous.count(ray) || !a.dev.written(ray, field)) continue;
+      if (f->type == FieldType::Uint) {
+        const uint32_t v = a.dev.get(ray, field);
+        a.dev.set(ray, field, v + 1);
+        return describeRay(ray, field + " " + std::to_string(v) + " -> " + std::to_string(v + 1));
+      }
+      const float v = a.dev.getFloat(ray, field);
+      a.dev.setFloat(ray, field, v + 1.0f);
+      return describeRay(ray, field + "[0] " + std::to_string(v) + " -> " + std::to_string(v + 1.0f));
+    }
+  }
+  return notApplicable("no clear ray records a field computed from a built-in");
+}
+
+}  // namespace rayspec

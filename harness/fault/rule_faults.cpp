@@ -1,0 +1,75 @@
+// The table: every rule of the catalog and the faults that break it.
+#include "fault/rule_faults.h"
+
+namespace rayspec {
+
+const std::vector<RuleFaults>& ruleFaults() {
+  const Status qw = Status::QualityWarning, fail = Status::Fail;
+  static const std::vector<RuleFaults> table = {
+      {"R-CAND-TRI-OPEN", {"closed-triangle-interval"}, {}},
+      {"R-CAND-AABB-CLOSED", {"open-aabb-interval"}, {}},
+      {"R-TIE", {"tie-answered-neither"}, {}},
+      {"R-ORDER-UNSPEC", {"build-order-first-hit"}, {"reverse-order"}},
+      {"R-INST-XFORM", {"instance-transform-inverted"}, {}},
+      {"R-PREC", {"shift-t"}, {}},
+      {"R-WATERTIGHT", {"leak-edge", "double-hit-edge"}, {}, qw},
+      {"R-AABB-CONS", {"box-entered-from-inside-missed"}, {}},
+      {"R-ISECT-MULTI", {}, {"intersection-runs-twice"}},
+      {"R-ISECT-CLOSEST", {"closest-box-skipped"}, {}},
+      {"R-SKIP-TRI", {"skip-triangles-ignored"}, {}},
+      {"R-SKIP-AABB", {"skip-aabbs-ignored"}, {}},
+      {"R-MASK", {"instance-mask-ignored"}, {}},
+      {"R-FACE-DET", {"facing-inverted", "world-space-facing"}, {}},
+      {"R-FACE-CULL", {"facing-cull-ignored", "cull-disable-ignored"}, {}},
+      {"R-HITKIND-TRI", {"hit-kind-flipped"}, {}},
+      {"R-OPACITY", {"instance-opacity-ignored", "ray-opacity-ignored"}, {}},
+      {"R-CULL-OPQ", {"opacity-cull-ignored"}, {}},
+      {"R-AHIT-OPAQUE-SKIP", {"any-hit-on-opaque"}, {}},
+      {"R-AHIT-UNUSED", {"unused-any-hit-ignores"}, {}},
+      {"R-AHIT-DUP", {"duplicate-any-hit"}, {}},
+      {"R-AHIT-CLOSEST", {"closest-any-hit-skipped"}, {}},
+      {"R-IGNORE", {"ignore-accepts", "code-after-ignore-runs"}, {}},
+      {"R-TERMINATE", {"terminate-continues", "code-after-terminate-runs"}, {}},
+      {"R-ISECT-REPORT", {"report-return-inverted", "report-kind-dropped"}, {}},
+      {"R-TMAX-VIEW", {"tmax-view-initial"}, {}},
+      {"R-TOFH", {"first-hit-flag-ignored"}, {"reverse-order"}},
+      {"R-MISS-XOR-CHIT", {"drop-miss", "chit-after-ignore", "miss-after-closest-hit", "skip-closest-hit-ignored"}, {}},
+      {"R-SBT-HIT", {"hit-record-shifted", "instance-sbt-offset-ignored", "custom-index-truncated"}, {}},
+      {"R-SBT-MISS", {"miss-record-shifted"}, {}},
+      {"R-SBT-CALL", {"callable-record-shifted", "callable-index-ignored"}, {}},
+      {"R-SBT-ZERO", {"zero-record-runs-group-0"}, {}},
+      {"R-SBT-RECORD", {"shader-record-data-zeroed"}, {}},
+      {"R-RECURSION", {"nested-trace-dropped"}, {}},
+      {"R-CALLABLE", {"callable-data-not-returned"}, {}},
+      {"R-PAYLOAD", {"payload-writes-lost", "hit-attributes-lost"}, {}},
+      {"R-BUILTIN", {"builtin-wrong", "swap-primitive-id", "shift-t"}, {}},
+      {"R-INACTIVE", {"inactive-renumbered", "inactive-revived"}, {}},
+      {"R-DEGEN", {"degenerate-hit"}, {}},
+      {"R-UB", {}, {}, fail, "never checked for a result (robustness probe only)"},
+  };
+  return table;
+}
+
+const RuleFaults* findRuleFaults(const std::string& rule) {
+  for (const RuleFaults& r : ruleFaults())
+    if (r.rule == rule) return &r;
+  return nullptr;
+}
+
+const std::vector<KnownHollowClaim>& knownHollowClaims() {
+  const std::string all_ties =
+      "every ray is a t-tie (any of the fifteen hits is legal), so no per-ray value of the hit is compared";
+  static const std::vector<KnownHollowClaim> claims = {
+      {"precision/aabb-tie", "R-ORDER-UNSPEC", all_ties},
+      {"precision/aabb-tie", "R-ISECT-REPORT", all_ties},
+  };
+  return claims;
+}
+
+const KnownHollowClaim* findKnownHollowClaim(const std::string& case_name, const std::string& rule) {
+  for (const KnownHollowClaim& k : knownHollowClaims())
+    if (k.case_name == case_name && k.rule == rule) return &k;
+  return nullptr;
+}
+
+}  // namespace rayspec

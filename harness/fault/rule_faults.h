@@ -1,0 +1,75 @@
+// Which planted faults stand for a device breaking which rule: the proof
+// that a case's rule claim is not hollow. A case may claim a rule only if
+// one of the rule's breaking faults, planted in a perfect device's results
+// (the model's own, see perfectDevice), makes the comparison give `expect`;
+// and no legal variation the rule allows may make it fail. Rules that only
+// grant a freedom (R-ISECT-MULTI) are proven by a legal variation that finds
+// something to vary in the case and still passes.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "case/case.h"
+#include "compare/verdict.h"
+#include "plan/plan.h"
+#include "results/results.h"
+
+namespace rayspec {
+
+struct RuleFaults {
+  std::string rule;
+  std::vector<std::string> breaks;  // faults of a device breaking the rule
+  std::vector<std::string> legal;   // variations the rule allows a device
+  Status expect = Status::Fail;     // QualityWarning for a "should" rule
+  std::string pending;              // no fault yet: why (and whose)
+};
+
+// One entry per rule of references/spec-rules.yaml (rule_faults.cpp).
+const std::vector<RuleFaults>& ruleFaults();
+const RuleFaults* findRuleFaults(const std::string& rule);
+
+// Claims the proof finds hollow in case files that other work owns, with
+// why; the test reports them as known, and fails once one is proven (the
+// entry is then stale), like a baseline of known failures.
+struct KnownHollowClaim {
+  std::string case_name, rule, why;
+};
+const std::vector<KnownHollowClaim>& knownHollowClaims();
+const KnownHollowClaim* findKnownHollowClaim(const std::string& case_name, const std::string& rule);
+
+struct FaultOutcome {
+  std::string fault;
+  bool legal = false;    // a legal variation, not a break
+  bool applied = false;  // the fault found something to change
+  bool changed = false;  // the device's results differ from the perfect device's
+  Status status = Status::Pass;
+  bool names_rule = false;  // a finding of that status names the rule
+  std::string what;         // what the fault did, or why it did not apply
+  std::string headline;     // the verdict's
+};
+
+enum class ClaimResult {
+  Proven,        // a break gives `expect` (and no legal variation fails)
+  Hollow,        // no break changes the verdict: nothing shows the rule is checked
+  FailsLegal,    // a legal variation fails: the case depends on a freedom of the rule
+  Pending,       // the rule has no fault yet (RuleFaults::pending)
+  NotChecked,    // R-UB: never checked for a result
+  UnknownRule,   // not in the table
+};
+const char* claimResultName(ClaimResult r);
+
+struct ClaimProof {
+  std::string rule;
+  ClaimResult result = ClaimResult::Hollow;
+  std::string note;
+  std::vector<FaultOutcome> outcomes;
+  std::string describe() const;  // one line per fault
+};
+
+// Plants every fault of the rule in `perfect` (a device whose results pass:
+// perfectDevice(c, model)) and judges each against `model`.
+ClaimProof proveClaim(const Case& c, const Plan& plan, const Results& model, const Results& perfect,
+                      const std::string& rule);
+
+}  // namespace rayspec

@@ -1,0 +1,150 @@
+// Every rule a case claims is proven by a planted fault: the model's exact
+// tier serves as the perfect device (no Vulkan), each fault of the rule
+// (fault/rule_faults.h) is planted in its results, and the comparison must
+// give Fail (QualityWarning for R-WATERTIGHT). A claim no fault breaks is
+// hollow and fails here, named with every fault's outcome. Every case must
+// also pass a device that finds candidates far to near (R-ORDER-UNSPEC).
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <set>
+
+#include "case/parse_case.h"
+#include "compare/compare_results.h"
+#include "fault/planted_fault.h"
+#include "fault/rule_faults.h"
+#include "model/model_backend.h"
+#include "plan/plan.h"
+
+namespace rayspec {
+namespace {
+
+const std::string kCases = RAYSPEC_SOURCE_DIR "/cases";
+
+std::vector<std::string> caseNames() {
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(kCases))
+    if (e.path().extension() == ".yaml")
+      names.push_back(std::filesystem::relative(e.path(), kCases).replace_extension().generic_string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+struct Judged {
+  Case c;
+  Plan plan;
+  Results model, perfect;
+};
+
+Judged judge(const std::string& name) {
+  ParseResult parsed = parseCaseFile(kCases + "/" + name + ".yaml", kCases);
+  Judged j;
+  if (!parsed.value) {
+    ADD_FAILURE() << name << ": " << (parsed.errors.empty() ? "" : parsed.errors[0].format());
+    return j;
+  }
+  j.c = *parsed.value;
+  j.plan = derivePlan(j.c);
+  j.model = runOnModel(j.c, j.plan, ModelOptions{});
+  j.perfect = perfectDevice(j.c, j.model);
+  return j;
+}
+
+class CaseClaims : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(CaseClaims, EveryClaimedRuleIsBrokenByAFault) {
+  const Judged j = judge(GetParam());
+  ASSERT_TRUE(j.model.ok()) << j.model.statusText();
+  const Verdict clean = compareResults(j.c, j.plan, j.perfect, j.model);
+  ASSERT_EQ(clean.status, Status::Pass) << "the model as a device does not pass: " << clean.headline();
+  for (const std::string& rule : j.c.rules) {
+    const ClaimProof p = proveClaim(j.c, j.plan, j.model, j.perfect, rule);
+    std::cout << GetParam() << " " << p.describe() << "\n";
+    const bool ok = p.result == ClaimResult::Proven || p.result == ClaimResult::Pending ||
+                    p.result == ClaimResult::NotChecked;
+    if (const KnownHollowClaim* k = findKnownHollowClaim(GetParam(), rule)) {
+      EXPECT_FALSE(ok) << GetParam() << " " << rule << " is proven now: remove it from knownHollowClaims()";
+      std::cout << "  known hollow (a case file other work owns): " << k->why << "\n";
+      continue;
+    }
+    EXPECT_TRUE(ok) << "hollow claim: " << GetParam() << " claims " << p.describe();
+  }
+  // R-ORDER-UNSPEC for every case: its verdict may not depend on the order
+  // candidates are found in (a device finding them far to near passes).
+  Results reversed = j.perfect;
+  plantFault("reverse-order", j.c, j.plan, reversed, j.model);
+  const Verdict v = compareResults(j.c, j.plan, reversed, j.model);
+  EXPECT_EQ(v.status, Status::Pass) << "the verdict depends on the candidate order: " << v.headline();
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, CaseClaims, ::testing::ValuesIn(caseNames()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           std::string n = info.param;
+                           for (char& ch : n)
+                             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+                           return n;
+                         });
+
+TEST(RuleFaultTable, OneEntryPerRuleOfTheCatalogAndEveryFaultUsed) {
+  const YAML::Node catalog = YAML::LoadFile(RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml");
+  std::set<std::string> rules;
+  for (const auto& kv : catalog) rules.insert(kv.first.as<std::string>());
+  std::set<std::string> used;
+  for (const RuleFaults& r : ruleFaults()) {
+    EXPECT_TRUE(rules.count(r.rule)) << r.rule << " is not in references/spec-rules.yaml";
+    for (const auto* list : {&r.breaks, &r.legal})
+      for (const std::string& f : *list) {
+        const FaultInfo* info = findFault(f);
+        ASSERT_NE(info, nullptr) << r.rule << ": no fault named " << f;
+        EXPECT_NE(info->kind, FaultKind::Process) << f;
+        used.insert(f);
+      }
+    EXPECT_TRUE(!r.breaks.empty() || !r.legal.empty() || !r.pending.empty()) << r.rule << " has no proof";
+  }
+  for (const std::string& rule : rules) EXPECT_NE(findRuleFaults(rule), nullptr) << rule << " has no entry";
+  for (const FaultInfo& f : faultTable()) {
+    if (f.kind == FaultKind::Process) continue;
+    EXPECT_TRUE(used.count(f.name)) << f.name << " stands for no rule";
+  }
+}
+
+// The coverage contract: every rule but R-UB is claimed by some case.
+TEST(RuleFaultTable, EveryRuleIsClaimedByACase) {
+  std::set<std::string> claimed;
+  for (const std::string& name : caseNames()) {
+    ParseResult parsed = parseCaseFile(kCases + "/" + name + ".yaml", kCases);
+    ASSERT_TRUE(parsed.value) << name;
+    claimed.insert(parsed.value->rules.begin(), parsed.value->rules.end());
+  }
+  for (const RuleFaults& r : ruleFaults()) {
+    if (r.rule == "R-UB") continue;
+    EXPECT_TRUE(claimed.count(r.rule)) << r.rule << " is claimed by no case";
+  }
+}
+
+// The proof can fail: a claim the case does not check is named hollow.
+TEST(RuleFaultTable, AClaimTheCaseDoesNotCheckIsHollow) {
+  Judged j = judge("anyhit/unused-any-hit");
+  for (const char* rule : {"R-MASK", "R-SBT-MISS", "R-TOFH"}) {
+    const ClaimProof p = proveClaim(j.c, j.plan, j.model, j.perfect, rule);
+    EXPECT_EQ(p.result, ClaimResult::Hollow) << p.describe();
+  }
+}
+
+// A case whose check a legal variation breaks is named: the intersection
+// counter of sphere-both-roots declared exact fails a device that runs an
+// intersection shader twice (R-ISECT-MULTI allows it).
+TEST(RuleFaultTable, ACaseThatFailsALegalDeviceIsNamed) {
+  Judged j = judge("intersection/sphere-both-roots");
+  j.c.outputs.counter_modes["isect"] = "exact";
+  const ClaimProof p = proveClaim(j.c, j.plan, j.model, j.perfect, "R-ISECT-MULTI");
+  EXPECT_EQ(p.result, ClaimResult::FailsLegal) << p.describe();
+  j.c.outputs.counter_modes["isect"] = "at_least";
+  EXPECT_EQ(proveClaim(j.c, j.plan, j.model, j.perfect, "R-ISECT-MULTI").result, ClaimResult::Proven);
+}
+
+}  // namespace
+}  // namespace rayspec
