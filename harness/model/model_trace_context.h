@@ -22,6 +22,8 @@ struct ModelCandidate {
   TriAmbiguity ambiguity = TriAmbiguity::None;
   bool near_face = false;  // AABBs, exact tier: the ray passes within the error
                            // bound of a face (a device may or may not see it)
+  bool nan_triangle = false;  // a triangle with NaN in Y or Z (never a hit: the
+                              // ray crosses where it might be, R-UB); t: entry
 };
 
 struct TraceContext {
