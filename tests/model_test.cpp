@@ -505,6 +505,30 @@ TEST(Model, NanInYTriangleStaysActiveAndHugeTrianglesAreHit) {
   }
 }
 
+// A triangle of the model's own test (here beyond Embree's range) in one BLAS
+// takes the traces to the collect-then-process path: Embree's triangles of
+// another BLAS must still reach it as candidates (fast and robust tiers).
+TEST(Model, OwnTrianglesDoNotHideEmbreeTrianglesOfAnotherBlas) {
+  Geometry huge;
+  huge.flags = kGeometryOpaque;
+  huge.vertices = {{-4e18f, -4e18f, -10}, {4e18f, -4e18f, -10}, {0, 4e18f, -10}};
+  Case c = baseCase({quad()}, {downRay(0.5f, -0.5f), downRay(3, 3)});
+  Blas far;
+  far.name = "far";
+  far.geometries = {huge};
+  c.scene.blases.push_back(far);
+  c.scene.instances.push_back(c.scene.instances[0]);
+  c.scene.instances[1].blas = 1;
+  for (ModelTier tier : kTiers) {
+    Results r = run(c, tier);
+    ASSERT_EQ(r.statusText(), "ok");
+    EXPECT_EQ(word(r, 0, "hit"), 1u) << modelTierName(tier) << ": the quad in front";
+    EXPECT_EQ(word(r, 0, "instance_id"), 0u) << modelTierName(tier);
+    EXPECT_NEAR(fword(r, 0, "hit_t"), 5.0f, 1e-5) << modelTierName(tier);
+    EXPECT_EQ(word(r, 1, "instance_id"), 1u) << modelTierName(tier) << ": beside it, the huge one";
+  }
+}
+
 TEST(Model, ImagesFollowTheRecord) {
   Case c = baseCase({quad()}, {downRay(0.5f, -0.5f), downRay(3, 3)}, 2);
   c.outputs.images = {{"prim", "primitive_id", {}}, {"t", "hit_t", {}}};
