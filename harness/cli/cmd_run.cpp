@@ -13,6 +13,7 @@
 #include "cli/device_child.h"
 #include "cli/judge_case.h"
 #include "fault/planted_fault.h"
+#include "metamorphic/permute_case.h"
 #include "compare/compare_results.h"
 #include "model/model_backend.h"
 #include "plan/plan.h"
@@ -177,6 +178,7 @@ int runCases(const RunOptions& opt) {
                 info.validation ? ", validation layer on" : ", validation layer OFF");
   }
   if (!opt.no_model) std::printf("Model: embree, %s tier\n", opt.model_tier.c_str());
+  if (opt.permute) std::printf("Permuted: primitives and instances, seed %llu\n", (unsigned long long)*opt.permute);
 
   Baseline baseline;
   if (!opt.baseline.empty()) {
@@ -208,6 +210,7 @@ int runCases(const RunOptions& opt) {
       outcome.headline = "Fail: case file error: " + message;
       outcome.verdict.add({Status::Fail, "case-file", message, {}, 0});
     } else {
+      if (opt.permute) parsed.value = permuteCase(*parsed.value, *opt.permute).permuted;
       outcome = runOne(*parsed.value, opt, backend.get(), backend_error);
       case_rules.push_back({outcome.name, outcome.rules});
     }

@@ -34,6 +34,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   run->add_flag("--no-isolation", run_opt.no_isolation,
                 "Run the device in this process (one VkDevice for every case; a crash ends the run)");
+  run->add_option("--permute", run_opt.permute,
+                  "Permute each case's primitives and instances from this seed (R-ORDER-UNSPEC: verdicts must not "
+                  "move; the same seed gives the same permutation)");
   run->add_option("--plant-fault", run_opt.plant_fault,
                   "Test only: corrupt the device's results in a known way (drop-miss, swap-primitive-id, "
                   "chit-after-ignore, shift-t, duplicate-any-hit, leak-edge, crash, hang)");
