@@ -8,6 +8,7 @@
 #include <string>
 
 #include "case/parse_case.h"
+#include "compare/compare_results.h"
 #include "model_test_helpers.h"
 
 namespace rayspec {
@@ -73,6 +74,27 @@ TEST(ModelOrder, TerminatingAnyHitMakesEitherStackedTriangleLegal) {
   EXPECT_EQ(r.counters.at("anyhit"), 1u);
   EXPECT_EQ(r.counters.at("closesthit"), 1u);
   EXPECT_TRUE(r.undefined.empty());
+}
+
+// Judged as a device's (the model's results edited): the far triangle passes
+// where a terminating any-hit makes it legal, and fails where whatever the
+// order the traversal ends on the near one.
+TEST(ModelOrder, AFarAnswerPassesOnlyWhereTheOrderAllowsIt) {
+  auto farDevice = [](const Results& model) {
+    Results d = model;
+    d.backend = "vulkan";
+    d.ambiguous.clear();
+    d.records[findRecordField("primitive_id")->offset] = 1;
+    return d;
+  };
+  const Case any = stacked("[count: anyhit, terminate]");
+  const Results anyModel = runExact(any);
+  const Verdict pass = compareResults(any, derivePlan(any), farDevice(anyModel), anyModel);
+  EXPECT_EQ(pass.status, Status::Pass) << pass.headline();
+  const Case near = stacked("[count: anyhit, {if: {eq: [primitive_id, 0]}, then: [terminate]}]");
+  const Results nearModel = runExact(near);
+  const Verdict fail = compareResults(near, derivePlan(near), farDevice(nearModel), nearModel);
+  EXPECT_EQ(fail.status, Status::Fail) << fail.headline();
 }
 
 // Terminating only on the far triangle: the model's order accepts the near
