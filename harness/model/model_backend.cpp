@@ -33,11 +33,12 @@ bool setsSbtArguments(const Pipeline& p) {
   return false;
 }
 
-// Could a non-opaque triangle's hit record lie beyond the hit region (R-UB:
-// a device reads it whatever the order, Machine::checkCandidates)? The
-// largest index any instance and geometry can reach with the rays' SBT
-// offset and stride (a nested trace that sets them: any 4-bit value).
-bool hitRecordMayBeOutOfRange(const Case& c) {
+// Could a hit record lie beyond the hit region (R-UB, Machine::checkCandidates)?
+// The largest index any instance and geometry can reach with the rays' SBT
+// offset and stride (a trace that sets them: any 4-bit value); `nonOpaque`:
+// only through a geometry of triangles that may be non-opaque (a device reads
+// their records whatever the order, not only the closest hit's).
+bool hitRecordMayBeOutOfRange(const Case& c, bool nonOpaque) {
   uint32_t offset = c.rays.defaults.sbt_offset & 0xF, stride = c.rays.defaults.sbt_stride & 0xF;
   for (const Ray& r : c.rays.rays) {
     offset = std::max(offset, r.sbt_offset & 0xF);
@@ -45,17 +46,24 @@ bool hitRecordMayBeOutOfRange(const Case& c) {
   }
   if (setsSbtArguments(c.pipeline)) offset = stride = 0xF;
   const size_t region = c.pipeline.sbt_hit.empty() ? c.pipeline.hit_groups.size() : c.pipeline.sbt_hit.size();
-  bool nonOpaque = false;
   uint64_t top = 0;
   for (const Instance& inst : c.scene.instances) {
     if (!inst.blas || *inst.blas >= c.scene.blases.size()) continue;
     const Blas& b = c.scene.blases[*inst.blas];
-    if (b.geometries.empty()) continue;
-    for (const Geometry& g : b.geometries)
-      nonOpaque = nonOpaque || (g.kind == Geometry::Kind::Triangles && !(g.flags & kGeometryOpaque));
-    top = std::max<uint64_t>(top, uint64_t{inst.sbt_offset & 0xFFFFFF} + uint64_t{stride} * (b.geometries.size() - 1) + offset);
+    for (uint64_t g = 0; g < b.geometries.size(); ++g) {
+      const Geometry& geom = b.geometries[g];
+      if (nonOpaque && (geom.kind != Geometry::Kind::Triangles || (geom.flags & kGeometryOpaque))) continue;
+      top = std::max<uint64_t>(top, uint64_t{inst.sbt_offset & 0xFFFFFF} + stride * g + offset + 1);
+    }
   }
-  return nonOpaque && top >= region;
+  return top > region;
+}
+
+bool hasNanTriangles(const ModelScene& s) {
+  for (const ModelBlas& b : s.blases)
+    for (const ModelGeometry& g : b.geometries)
+      if (!g.nan_regions.empty()) return true;
+  return false;
 }
 
 // Does any trace need the model to see every candidate (rather than Embree's
@@ -67,7 +75,7 @@ bool needsCandidates(const Case& c, const Plan& plan, ModelTier tier) {
   for (const Blas& b : c.scene.blases)
     for (const Geometry& g : b.geometries)
       if (g.kind == Geometry::Kind::Aabbs) return true;
-  return hitRecordMayBeOutOfRange(c);
+  return hitRecordMayBeOutOfRange(c, true);
 }
 
 bool hasOwnTriangles(const ModelScene& s) {
@@ -153,6 +161,7 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
     shared.programs = &programs;
     shared.direct = !scene.filters && !hasOwnTriangles(scene);
     shared.need_facing = programs.reads(kBiHitKind);
+    shared.check_candidates = hitRecordMayBeOutOfRange(c, false) || hasNanTriangles(scene);
     shared.raygen_traces_launch_ray =
         programs.raygen.size() == 1 && programs.raygen[0].kind == Stmt::Kind::Trace &&
         std::none_of(programs.raygen[0].has.begin(), programs.raygen[0].has.end(), [](bool b) { return b; });

@@ -198,6 +198,7 @@ void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& ca
 // R-ORDER-UNSPEC: an any-hit that may terminate runs on one of the candidates
 // (a box, or a non-opaque triangle in the interval): the order decides.
 bool Machine::anyHitMayTerminate(const Traversal& tr, const std::vector<ModelCandidate>& cands) const {
+  if (!sh_.programs->any_hit_terminates) return false;
   const ModelScene& scene = *sh_.scene;
   for (const ModelCandidate& cand : cands) {
     if (!cand.aabb && !cand.hit && cand.ambiguity == TriAmbiguity::None) continue;

@@ -114,6 +114,9 @@ struct ModelShared {
   // facing only for hit_kind, its object-space ray only for object_ray_*.
   bool need_facing = true, need_object_ray = true;
   bool raygen_traces_launch_ray = false;  // raygen is exactly `trace: {}`
+  // Some candidate may be undefined (a hit record beyond the region, a NaN
+  // triangle): Machine::checkCandidates looks at every candidate.
+  bool check_candidates = true;
 };
 
 // Cache-line aligned: each worker thread writes its own Machine, never a line

@@ -82,6 +82,16 @@ RayProblem rayProblem(const TraceRay& r) {
 const char* const kTraceArgNames[CStmt::kTraceArgs] = {"origin",    "direction",  "tmin",       "tmax", "flags",
                                                        "cull_mask", "sbt_offset", "sbt_stride", "miss"};
 
+// The common case, without building a message: every parameter defined.
+bool defined(const TraceRay& r) {
+  const uint32_t opacity = r.flags & (kRayOpaque | kRayNoOpaque | kRayCullOpaque | kRayCullNoOpaque);
+  const uint32_t facing = r.flags & (kRayCullBackFacing | kRayCullFrontFacing);
+  const uint32_t skip = r.flags & (kRaySkipTriangles | kRaySkipAabbs);
+  return finite(r.origin) && finite(r.direction) && r.tmin >= 0 && r.tmin <= r.tmax && (opacity & (opacity - 1)) == 0 &&
+         (facing & (facing - 1)) == 0 && (skip & (skip - 1)) == 0 && !(facing && (skip & kRaySkipTriangles));
+}
+
+
 }  // namespace
 
 void Machine::markUndefined(UndefinedReason why, std::string what) {
@@ -90,7 +100,9 @@ void Machine::markUndefined(UndefinedReason why, std::string what) {
   undefined.push_back({index_, why, std::move(what)});
 }
 
+
 bool Machine::checkRayParameters(const TraceRay& r, const CStmt* site, uint32_t depth) {
+  if (defined(r)) return false;
   const RayProblem p = rayProblem(r);
   if (p.arg < 0) return false;
   if (ray_undefined_) return true;
@@ -129,7 +141,7 @@ void Machine::divisionByZero(const CExpr& e) {
 }
 
 void Machine::checkCandidates(const Traversal& tr, const std::vector<ModelCandidate>& cands) {
-  if (ray_undefined_) return;
+  if (ray_undefined_ || !sh_.check_candidates) return;
   const ModelScene& scene = *sh_.scene;
   const TraceRay& r = tr.ray;
   for (const ModelCandidate& cand : cands) {
@@ -152,9 +164,10 @@ void Machine::checkCandidates(const Traversal& tr, const std::vector<ModelCandid
     if (cand.t < r.tmin - tl || cand.t > r.tmax + tl) continue;
     // A device reads the record of every box (its intersection shader runs)
     // and of every non-opaque triangle (its any-hit may run), in any order.
+    if (hitRecord(cand.instance, cand.geometry, r)) continue;
     const bool needed = cand.aabb || (!opaque && (cand.hit || cand.ambiguity != TriAmbiguity::None) &&
                                       !facing(scene, cand, r, tr.flags).culled);
-    if (needed && !hitRecord(cand.instance, cand.geometry, r)) {
+    if (needed) {
       hitRecordOutOfRange(cand.instance, cand.geometry, r);
       return;
     }

@@ -168,6 +168,7 @@ CPipeline compilePipeline(const Case& c, const Plan& plan) {
     cg.intersection = add(g.intersection);
     if (cg.closest_hit) cg.closest_hit_counts = countsOnly(*cg.closest_hit);
     cg.any_hit_terminates = cg.any_hit && hasTerminate(*cg.any_hit);
+    out.any_hit_terminates = out.any_hit_terminates || cg.any_hit_terminates;
     out.groups.push_back(cg);
   }
   return out;

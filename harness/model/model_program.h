@@ -102,6 +102,7 @@ struct CPipeline {
   std::vector<CHitGroup> groups;
   uint64_t read_bits = 0;  // bit (1 << Builtin) for every built-in any program reads
   bool reads_sphere = false;  // sphere_* ops (read the object-space ray and the box)
+  bool any_hit_terminates = false;  // some group's any-hit has a `terminate`
   bool reads(Builtin b) const { return (read_bits >> b) & 1u; }
 };
 
