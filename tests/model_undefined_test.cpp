@@ -212,6 +212,26 @@ TEST(ModelUndefined, ShaderBindingTableIndicesBeyondTheirRegion) {
   }
 }
 
+// The same without the calls and with every triangle opaque: raygen is
+// `trace: {}` alone, so the fast and robust tiers take Embree's closest hit
+// on the chunked direct path (model_fast_path.cpp); instance 2, opaque now,
+// is never looked up behind instance 3.
+TEST(ModelUndefined, ShaderBindingTableRangesOnTheDirectPath) {
+  std::string text = kSbt;
+  const size_t from = text.find("  raygen:\n"), to = text.find("  miss:\n");
+  text.replace(from, to - from, "  raygen: [trace: {}]\n");
+  text.replace(text.find(", flags: [force_no_opaque]"), std::string(", flags: [force_no_opaque]").size(), "");
+  const Case c = parseInline(text);
+  for (ModelTier tier : kTiers) {
+    const Results r = runInline(c, tier);
+    expectUndefined(r,
+                    {{1, {UndefinedReason::HitRecordOutOfRange, "(instance 1 sbt_offset 1"}},
+                     {5, {UndefinedReason::MissRecordOutOfRange, "miss index 2"}}},
+                    modelTierName(tier));
+    EXPECT_EQ(word(r, 2, "instance_id"), 3u);
+  }
+}
+
 // ---- DivisionByZero -------------------------------------------------------
 
 const char* kDivision = R"(rules: [R-UB]
