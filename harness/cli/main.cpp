@@ -45,6 +45,9 @@ int main(int argc, char** argv) {
                 "memory limit, a crash ends the run)");
   std::string fault_list;
   for (const std::string& name : rayspec::faultNames()) fault_list += (fault_list.empty() ? "" : ", ") + name;
+  run->add_option("--permute", run_opt.permute,
+                  "Permute each case's primitives and instances from this seed (R-ORDER-UNSPEC: verdicts must not "
+                  "move; the same seed gives the same permutation)");
   run->add_option("--plant-fault", run_opt.plant_fault,
                   "Test only: corrupt the device's results in a known way (" + fault_list + ")");
   run->add_option("--plant-fault-in", run_opt.plant_fault_in, "Test only: plant the fault only in cases matching this glob")

@@ -16,6 +16,56 @@
 namespace rayspec {
 namespace {
 
+// Does a trace statement set its own SBT offset or stride?
+bool setsSbtArguments(const Program& p) {
+  for (const Stmt& s : p)
+    if ((s.kind == Stmt::Kind::Trace && (!s.trace.sbt_offset.empty() || !s.trace.sbt_stride.empty())) ||
+        setsSbtArguments(s.then_) || setsSbtArguments(s.else_))
+      return true;
+  return false;
+}
+bool setsSbtArguments(const Pipeline& p) {
+  if (setsSbtArguments(p.raygen)) return true;
+  for (const Program& m : p.miss)
+    if (setsSbtArguments(m)) return true;
+  for (const HitGroup& g : p.hit_groups)
+    if (g.closest_hit && setsSbtArguments(*g.closest_hit)) return true;
+  return false;
+}
+
+// Could a hit record lie beyond the hit region (R-UB, Machine::checkCandidates)?
+// The largest index any instance and geometry can reach with the rays' SBT
+// offset and stride (a trace that sets them: any 4-bit value); `nonOpaque`:
+// only through a geometry of triangles that may be non-opaque (a device reads
+// their records whatever the order, not only the closest hit's).
+bool hitRecordMayBeOutOfRange(const Case& c, bool nonOpaque) {
+  uint32_t offset = c.rays.defaults.sbt_offset & 0xF, stride = c.rays.defaults.sbt_stride & 0xF;
+  for (const Ray& r : c.rays.rays) {
+    offset = std::max(offset, r.sbt_offset & 0xF);
+    stride = std::max(stride, r.sbt_stride & 0xF);
+  }
+  if (setsSbtArguments(c.pipeline)) offset = stride = 0xF;
+  const size_t region = c.pipeline.sbt_hit.empty() ? c.pipeline.hit_groups.size() : c.pipeline.sbt_hit.size();
+  uint64_t top = 0;
+  for (const Instance& inst : c.scene.instances) {
+    if (!inst.blas || *inst.blas >= c.scene.blases.size()) continue;
+    const Blas& b = c.scene.blases[*inst.blas];
+    for (uint64_t g = 0; g < b.geometries.size(); ++g) {
+      const Geometry& geom = b.geometries[g];
+      if (nonOpaque && (geom.kind != Geometry::Kind::Triangles || (geom.flags & kGeometryOpaque))) continue;
+      top = std::max<uint64_t>(top, uint64_t{inst.sbt_offset & 0xFFFFFF} + stride * g + offset + 1);
+    }
+  }
+  return top > region;
+}
+
+bool hasNanTriangles(const ModelScene& s) {
+  for (const ModelBlas& b : s.blases)
+    for (const ModelGeometry& g : b.geometries)
+      if (!g.nan_regions.empty()) return true;
+  return false;
+}
+
 // Does any trace need the model to see every candidate (rather than Embree's
 // own closest hit)?
 bool needsCandidates(const Case& c, const Plan& plan, ModelTier tier) {
@@ -25,7 +75,7 @@ bool needsCandidates(const Case& c, const Plan& plan, ModelTier tier) {
   for (const Blas& b : c.scene.blases)
     for (const Geometry& g : b.geometries)
       if (g.kind == Geometry::Kind::Aabbs) return true;
-  return false;
+  return hitRecordMayBeOutOfRange(c, true);
 }
 
 bool hasOwnTriangles(const ModelScene& s) {
@@ -113,6 +163,7 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
     shared.order = opt.order;
     shared.need_facing = programs.reads(kBiHitKind);
     shared.deviation = opt.deviation;
+    shared.check_candidates = hitRecordMayBeOutOfRange(c, false) || hasNanTriangles(scene);
     shared.raygen_traces_launch_ray =
         programs.raygen.size() == 1 && programs.raygen[0].kind == Stmt::Kind::Trace &&
         std::none_of(programs.raygen[0].has.begin(), programs.raygen[0].has.end(), [](bool b) { return b; });
@@ -146,10 +197,13 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
       for (size_t k = 0; k < plan.counters.size(); ++k) r.counters[plan.counters[k]] += m->counters[k];
       r.ambiguous.insert(r.ambiguous.end(), m->ambiguous.begin(), m->ambiguous.end());
       r.t_bounds.insert(r.t_bounds.end(), m->t_bounds.begin(), m->t_bounds.end());
+      r.undefined.insert(r.undefined.end(), m->undefined.begin(), m->undefined.end());
       if (!m->error.empty() && r.ok()) r.setStatus(RunStatus::Crash, m->error);
     }
     std::sort(r.ambiguous.begin(), r.ambiguous.end(),
               [](const RayAmbiguity& a, const RayAmbiguity& b) { return a.ray < b.ray; });
+    std::sort(r.undefined.begin(), r.undefined.end(),
+              [](const UndefinedRay& a, const UndefinedRay& b) { return a.ray < b.ray; });
     // One bound per ray (the widest of its traces), in ray order.
     std::sort(r.t_bounds.begin(), r.t_bounds.end(),
               [](const TBound& a, const TBound& b) { return a.ray < b.ray || (a.ray == b.ray && a.bound > b.bound); });

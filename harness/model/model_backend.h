@@ -9,6 +9,12 @@
 // the box, clamped to tmin), ties broken by (instance, geometry, primitive).
 // Only a trace without any-hit, intersection, culls or special triangles in
 // the fast/robust tiers uses rtcIntersect1 directly (Embree's closest hit).
+//
+// Undefined behaviour (R-UB) is diagnosed, never judged: Results.undefined
+// lists each launch ray whose behaviour the specification leaves undefined,
+// with the first reason and the case field at fault; the model goes on for
+// that ray in the defined way model/model_machine_undefined.cpp documents,
+// and the other rays are unaffected.
 #pragma once
 
 #include <string>

@@ -112,18 +112,22 @@ void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& ca
   }
   // R-TIE, R-ORDER-UNSPEC: candidates confirmed at the committed t (within
   // the error bound) may end in any order; R-TOFH: any candidate may be
-  // confirmed first. Each is tried in a sandboxed what-if run (preferred in
-  // ties, or processed first); those runs' answers are legal.
+  // confirmed first; R-ORDER-UNSPEC, R-TERMINATE: where an any-hit may
+  // terminate, the candidate a device meets first may end the traversal.
+  // Each is tried in a sandboxed what-if run (preferred in ties, or processed
+  // first, the rest in order); those runs' answers are legal.
   const bool tofh = (tr.flags & kRayTerminateOnFirstHit) != 0;
+  const bool terminates = !tofh && anyHitMayTerminate(tr, *cands);
   std::vector<long> prefers, firsts, potential;
   std::set<std::array<uint32_t, 3>> tied;  // distinct keys confirmable at the committed t
-  if (tofh) {
+  if (tofh || terminates) {
     for (size_t k = 0; k < cands->size(); ++k) {
       const ModelCandidate& cand = (*cands)[k];
       if (cand.aabb || ((cand.hit || cand.ambiguity != TriAmbiguity::None) && eligible(cand)))
         firsts.push_back(static_cast<long>(k));
     }
-  } else if (tr.best.valid) {
+  }
+  if (!tofh && tr.best.valid) {
     tied.insert({tr.best.instance, tr.best.geometry, tr.best.primitive});
     // Per box: 1 its intersection program ran, 2 it reported at the committed t.
     std::vector<uint8_t> boxes(cands->size(), 0);
@@ -149,13 +153,15 @@ void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& ca
   }
   if (!prefers.empty() || firsts.size() > 1) {
     const bool before = !amb.candidates.empty();
-    bool differs = false;
+    bool differs = false, differsFirst = false;
     auto addOne = [&](const Committed& b) {
       if (b.valid) add(true, b.instance, b.geometry, b.primitive);
       else add(false, 0, 0, 0);
-      differs = differs || b.valid != tr.best.valid ||
-                (b.valid && (b.instance != tr.best.instance || b.geometry != tr.best.geometry ||
-                             b.primitive != tr.best.primitive));
+      const bool d = b.valid != tr.best.valid ||
+                     (b.valid && (b.instance != tr.best.instance || b.geometry != tr.best.geometry ||
+                                  b.primitive != tr.best.primitive));
+      differs = differs || d;
+      return d;
     };
     const size_t saved = amb.candidates.size();
     addOne(tr.best);
@@ -165,10 +171,11 @@ void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& ca
         // An edge or vertex triangle the model left out may be the device's first hit.
         std::vector<int8_t> force(cands->size(), -1);
         if ((*cands)[k].ambiguity != TriAmbiguity::None) force[k] = 1;
-        addOne(sandbox(tr, *cands, force.data(), -1, k, payloadIn));
+        differsFirst = addOne(sandbox(tr, *cands, force.data(), -1, k, payloadIn)) || differsFirst;
       }
     const bool ambiguousNow = tofh ? differs : (differs || tied.size() >= 2);
-    if (ambiguousNow && !reason) reason = tofh ? AmbiguityReason::FirstHit : AmbiguityReason::TTie;
+    if (ambiguousNow && !reason)
+      reason = tofh ? AmbiguityReason::FirstHit : differsFirst ? AmbiguityReason::Order : AmbiguityReason::TTie;
     if (!ambiguousNow && !before) amb.candidates.resize(saved);
   }
   // R-PREC: an intersection program's decision that rounding may flip
@@ -200,6 +207,22 @@ void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& ca
     ambiguous.push_back(std::move(amb));
     ray_ambiguous_ = true;
   }
+}
+
+// R-ORDER-UNSPEC: an any-hit that may terminate runs on one of the candidates
+// (a box, or a non-opaque triangle in the interval): the order decides.
+bool Machine::anyHitMayTerminate(const Traversal& tr, const std::vector<ModelCandidate>& cands) const {
+  if (!sh_.programs->any_hit_terminates) return false;
+  const ModelScene& scene = *sh_.scene;
+  for (const ModelCandidate& cand : cands) {
+    if (!cand.aabb && !cand.hit && cand.ambiguity == TriAmbiguity::None) continue;
+    const ModelInstance& mi = scene.instances[cand.instance];
+    const ModelGeometry& g = scene.blases[mi.blas].geometries[cand.geometry];
+    if (resolveOpaque(g.flags, mi.src->flags, tr.flags)) continue;
+    const CHitGroup* grp = groupOf(*sh_.programs, hitRecord(cand.instance, cand.geometry, tr.ray));
+    if (grp && grp->any_hit_terminates) return true;
+  }
+  return false;
 }
 
 bool Machine::sphereHitDecision(StageEnv& env, bool modelValue, float disc) {

@@ -45,6 +45,10 @@ Committed Machine::directHit(const TraceRay& r, uint32_t flags) {
 
 namespace {
 
+// Ray flags that some combination makes undefined (checkRayParameters).
+constexpr uint32_t kExclusiveRayFlags = kRayOpaque | kRayNoOpaque | kRayCullOpaque | kRayCullNoOpaque |
+                                        kRayCullBackFacing | kRayCullFrontFacing | kRaySkipTriangles | kRaySkipAabbs;
+
 bool sameTraceParameters(const Ray& a, const Ray& b) {
   return a.flags == b.flags && a.cull_mask == b.cull_mask && a.sbt_offset == b.sbt_offset &&
          a.sbt_stride == b.sbt_stride && a.miss == b.miss;
@@ -123,6 +127,12 @@ void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
                        finiteBits(ray.direction[0]) & finiteBits(ray.direction[1]) &
                        finiteBits(ray.direction[2]) & (ray.tmin >= 0.0f) & (ray.tmin <= ray.tmax) &
                        ((ray.cull_mask & 0xFF) != 0);
+    ray_undefined_ = false;
+    if (!valid || (ray.flags & kExclusiveRayFlags)) {
+      // R-UB: diagnosed; such a ray is not traced (a miss) or keeps its flags.
+      index_ = i;
+      checkRayParameters(launchRay(ray), &programs.raygen[0], 1);
+    }
     if (valid) {
       rh.ray.tnear = robust ? nextUp(ray.tmin) : ray.tmin;
       rh.ray.tfar = nextDown(ray.tmax);

@@ -3,9 +3,9 @@
 #include "model/model_machine.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 
 #include "model/model_shading.h"
 #include "results/record_layout.h"
@@ -13,8 +13,8 @@
 namespace rayspec {
 namespace {
 
-uint32_t fbits(float f) { uint32_t u; std::memcpy(&u, &f, 4); return u; }
-float bitsf(uint32_t u) { float f; std::memcpy(&f, &u, 4); return f; }
+uint32_t fbits(float f) { return std::bit_cast<uint32_t>(f); }
+float bitsf(uint32_t u) { return std::bit_cast<float>(u); }
 
 Val fromVec3(const Vec3& v) { Val r; r.f = {v[0], v[1], v[2], 0}; return r; }
 Val fromVec4(const std::array<float, 4>& v) { Val r; r.f = v; return r; }
@@ -211,7 +211,11 @@ Val Machine::op(const CExpr& e, StageEnv& env) {
       else r.b = x >= y;
       return r;
     }
-    case OpCode::Mod: r.u = a[1].u == 0 ? 0 : a[0].u % a[1].u; return r;
+    case OpCode::Mod:
+      // R-UB: the ray is undefined; the model goes on with 0.
+      if (a[1].u == 0) divisionByZero(e);
+      r.u = a[1].u == 0 ? 0 : a[0].u % a[1].u;
+      return r;
     default: break;
   }
   // add sub mul div min max: Uint x Uint, or float-wise with scalar broadcast.
@@ -220,7 +224,10 @@ Val Machine::op(const CExpr& e, StageEnv& env) {
     if (n == OpCode::Add) r.u = x + y;
     else if (n == OpCode::Sub) r.u = x - y;
     else if (n == OpCode::Mul) r.u = x * y;
-    else if (n == OpCode::Div) r.u = y == 0 ? 0xFFFFFFFFu : x / y;
+    else if (n == OpCode::Div && y == 0) {
+      divisionByZero(e);  // R-UB: the ray is undefined; the model goes on with all ones
+      r.u = 0xFFFFFFFFu;
+    } else if (n == OpCode::Div) r.u = x / y;
     else if (n == OpCode::Min) r.u = std::min(x, y);
     else if (n == OpCode::Max) r.u = std::max(x, y);
     return r;
@@ -291,7 +298,7 @@ Flow Machine::execStmt(const CStmt& s, StageEnv& env) {
         else if (a.slot == Slot::Position) d.position = {v.f[0], v.f[1], v.f[2]};
         else if (a.slot == Slot::Normal) d.normal = {v.f[0], v.f[1], v.f[2]};
       }
-      callCallable(eval(s.call_index, env).u, d, env.depth);
+      callCallable(eval(s.call_index, env).u, d, env.depth, s);
       env.callee = d;
       return Flow::Continue;
     }
@@ -318,12 +325,16 @@ Flow Machine::execStmt(const CStmt& s, StageEnv& env) {
       u1(CStmt::kMiss, r.miss);
       const uint32_t depth = env.stage == Stage::Raygen ? 1 : env.depth + 1;
       if (depth > std::max<uint32_t>(sh_.c->pipeline.max_recursion, 1)) {
-        if (error.empty())
-          error = "trace at depth " + std::to_string(depth) + " exceeds max_recursion " +
-                  std::to_string(sh_.c->pipeline.max_recursion) + " (undefined behaviour on a device)";
+        // R-RECURSION, R-UB: the ray is undefined; the model skips the trace
+        // (no traversal, no shader, the stage's child payload stays as it was).
+        if (!ray_undefined_)
+          markUndefined(UndefinedReason::RecursionTooDeep,
+                        (s.src && !s.src->loc.field.empty() ? s.src->loc.field : std::string("trace")) +
+                            ": trace at depth " + std::to_string(depth) + " exceeds pipeline.max_recursion " +
+                            std::to_string(sh_.c->pipeline.max_recursion));
         return Flow::Continue;
       }
-      Payload p = trace(r, depth);
+      Payload p = trace(r, depth, &s);
       if (env.stage == Stage::Raygen && env.payload) *env.payload = p;
       else env.child = p;
       return Flow::Continue;
@@ -334,8 +345,28 @@ Flow Machine::execStmt(const CStmt& s, StageEnv& env) {
   return Flow::Continue;
 }
 
-void Machine::callCallable(uint32_t index, CallData& data, uint32_t depth) {
-  if (index >= default_callable_.size()) return;
+// R-UB: an index beyond the callable region, or callables nested beyond the
+// default stack, make the ray undefined; the model then skips the call (the
+// data stays as the caller wrote it).
+void Machine::callCallable(uint32_t index, CallData& data, uint32_t depth, const CStmt& site) {
+  auto field = [&](const char* sub) {
+    const std::string f = site.src && !site.src->loc.field.empty() ? site.src->loc.field : std::string("call");
+    return f + sub;
+  };
+  if (index >= default_callable_.size()) {
+    if (!ray_undefined_)
+      markUndefined(UndefinedReason::CallableOutOfRange,
+                    field(".index") + ": callable " + std::to_string(index) + ", the SBT has " +
+                        std::to_string(default_callable_.size()));
+    return;
+  }
+  if (call_nesting_ >= kMaxCallableNesting) {
+    if (!ray_undefined_)
+      markUndefined(UndefinedReason::RecursionTooDeep,
+                    field("") + ": callables nested " + std::to_string(call_nesting_ + 1) +
+                        " deep, the default pipeline stack holds " + std::to_string(kMaxCallableNesting));
+    return;
+  }
   const SbtRecord& rec = default_callable_[index];
   if (!rec.group || *rec.group >= sh_.c->pipeline.callables.size()) return;  // R-SBT-ZERO
   bumpRuns(kRunsCallable);
@@ -344,7 +375,9 @@ void Machine::callCallable(uint32_t index, CallData& data, uint32_t depth) {
   env.record_data = &rec.data;
   env.call = &data;
   env.depth = depth;
+  ++call_nesting_;
   exec(sh_.programs->callables[*rec.group], env);
+  --call_nesting_;
 }
 
 void Machine::runRays(uint32_t begin, uint32_t end) {
@@ -362,10 +395,12 @@ void Machine::runRays(uint32_t begin, uint32_t end) {
     index_ = i;
     rec_ = records_ ? records_ + static_cast<size_t>(i) * words : nullptr;
     ray_ambiguous_ = false;
+    ray_undefined_ = false;
+    call_nesting_ = 0;
     bumpRuns(kRunsRaygen);
     if (sh_.raygen_traces_launch_ray) {
       // Raygen is one `trace: {}` of this launch's ray: no stage environment needed.
-      trace(launchRay(rays[i]), 1);
+      trace(launchRay(rays[i]), 1, &sh_.programs->raygen[0]);
     } else {
       runRaygen();
     }

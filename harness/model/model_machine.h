@@ -98,6 +98,12 @@ struct StageEnv {
 
 enum class Flow { Continue, Ignore, Terminate };
 
+// Callables nested deeper than this (a callable calling a callable calling a
+// third) exceed the default pipeline stack size, which holds two callable
+// frames (Vulkan, "Ray Tracing Pipeline Stack": ... + 2 x callableStackMax);
+// the suite never sets a stack size, so deeper nesting is undefined (R-UB).
+constexpr uint32_t kMaxCallableNesting = 2;
+
 enum RunsField { kRunsRaygen, kRunsMiss, kRunsClosestHit, kRunsAnyHit, kRunsIntersection, kRunsCallable };
 
 struct ModelShared {
@@ -112,6 +118,9 @@ struct ModelShared {
   bool raygen_traces_launch_ray = false;  // raygen is exactly `trace: {}`
   ModelDeviation deviation = ModelDeviation::None;  // test only (planted faults)
   CandidateOrder order = CandidateOrder::Distance;
+  // Some candidate may be undefined (a hit record beyond the region, a NaN
+  // triangle): Machine::checkCandidates looks at every candidate.
+  bool check_candidates = true;
 };
 
 // Cache-line aligned: each worker thread writes its own Machine, never a line
@@ -126,7 +135,11 @@ class alignas(64) Machine {
   std::vector<uint64_t> counters;
   std::vector<RayAmbiguity> ambiguous;
   std::vector<TBound> t_bounds;
-  std::string error;  // first case error (e.g. recursion deeper than allowed)
+  // R-UB: launch rays whose behaviour is undefined, the first reason each
+  // (model_machine_undefined.cpp). A what-if run of the exact tier may add
+  // one too: a legal path into undefined behaviour makes the ray undefined.
+  std::vector<UndefinedRay> undefined;
+  std::string error;  // first case error (an unknown built-in or op)
 
  private:
   friend struct Traversal;
@@ -139,7 +152,9 @@ class alignas(64) Machine {
   void bumpRuns(int which) {  // kRuns* above
     if (rec_) rec_[runs_offset_[which]] += 1;
   }
-  Payload trace(const TraceRay& r, uint32_t depth);  // model_traversal.cpp
+  // `site`: the trace statement (or raygen's `trace: {}` of the launch ray),
+  // named when the trace is undefined.
+  Payload trace(const TraceRay& r, uint32_t depth, const CStmt* site);  // model_traversal.cpp
   Committed directHit(const TraceRay& r, uint32_t flags);
   Committed traverse(const TraceRay& r, uint32_t flags, uint32_t depth, Payload& payload);
   void shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Committed& best, Payload& payload);
@@ -154,6 +169,7 @@ class alignas(64) Machine {
   void classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& cands,
                      const std::vector<std::pair<size_t, double>>& reports,
                      const std::vector<ShaderDecision>& shaderUnsure, const Payload& payloadIn);
+  bool anyHitMayTerminate(const Traversal& tr, const std::vector<ModelCandidate>& cands) const;
   std::vector<Committed> whatIf(const Traversal& actual, const std::vector<ModelCandidate>& cands,
                                 const std::vector<size_t>& unsure, const Payload& payloadIn);
   void runRaygen();
@@ -168,14 +184,34 @@ class alignas(64) Machine {
     for (int i : k.counters) counters[i] += 1;
   }
   Flow report(const CStmt& s, StageEnv& env);  // model_traversal.cpp
-  void callCallable(uint32_t index, CallData& data, uint32_t depth);
+  void callCallable(uint32_t index, CallData& data, uint32_t depth, const CStmt& site);
   const SbtRecord* hitRecord(uint32_t instance, uint32_t geometry, const TraceRay& r) const;
+  uint64_t hitRecordIndex(uint32_t instance, uint32_t geometry, const TraceRay& r) const;
+
+  // Undefined behaviour (R-UB), model_machine_undefined.cpp. Each notes the
+  // current launch ray once, with the first reason; the model then goes on
+  // in the documented way of each caller.
+  void markUndefined(UndefinedReason why, std::string what);
+  bool rayUndefined() const { return ray_undefined_; }
+  // Non-finite origin or direction, NaN or negative tmin, tmax below tmin,
+  // an illegal flag combination: true when the ray is undefined (it is then
+  // traced as nothing: no candidate, a miss).
+  bool checkRayParameters(const TraceRay& r, const CStmt* site, uint32_t depth);
+  // Every candidate a device may need the hit record of (an AABB, a
+  // non-opaque triangle) with the record beyond the hit region, and a
+  // triangle with NaN in Y or Z whose region the ray crosses.
+  void checkCandidates(const Traversal& tr, const std::vector<ModelCandidate>& cands);
+  void hitRecordOutOfRange(uint32_t instance, uint32_t geometry, const TraceRay& r);
+  void missRecordOutOfRange(const TraceRay& r);
+  void divisionByZero(const CExpr& e);
 
   const ModelShared& sh_;
   uint32_t* records_;
   uint32_t* rec_ = nullptr;  // this launch's record
   uint32_t index_ = 0, x_ = 0, y_ = 0;
   bool ray_ambiguous_ = false;
+  bool ray_undefined_ = false;
+  uint32_t call_nesting_ = 0;  // callables running now (kMaxCallableNesting)
   std::vector<SbtRecord> default_miss_, default_hit_, default_callable_;
   std::vector<std::vector<ModelCandidate>> cand_pool_;
   uint32_t runs_offset_[6] = {};

@@ -91,6 +91,7 @@ struct Compiler {
   CStmt stmt(const Stmt& s) {
     CStmt r;
     r.kind = s.kind;
+    r.src = &s;
     if (s.kind == Stmt::Kind::Count) {
       const auto it = std::find(plan.counters.begin(), plan.counters.end(), s.counter);
       r.counter = it == plan.counters.end() ? -1 : static_cast<int>(it - plan.counters.begin());
@@ -130,6 +131,12 @@ struct Compiler {
 
 }  // namespace
 
+bool hasTerminate(const CProgram& p) {
+  for (const CStmt& s : p)
+    if (s.kind == Stmt::Kind::Terminate || hasTerminate(s.then_) || hasTerminate(s.else_)) return true;
+  return false;
+}
+
 CountsOnly countsOnly(const CProgram& p) {
   CountsOnly r;
   for (const CStmt& s : p)
@@ -162,6 +169,8 @@ CPipeline compilePipeline(const Case& c, const Plan& plan) {
     cg.any_hit = add(g.any_hit);
     cg.intersection = add(g.intersection);
     if (cg.closest_hit) cg.closest_hit_counts = countsOnly(*cg.closest_hit);
+    cg.any_hit_terminates = cg.any_hit && hasTerminate(*cg.any_hit);
+    out.any_hit_terminates = out.any_hit_terminates || cg.any_hit_terminates;
     out.groups.push_back(cg);
   }
   return out;

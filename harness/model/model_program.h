@@ -71,6 +71,7 @@ struct CStmt {
   std::array<bool, kTraceArgs> has{};
   std::array<CExpr, kTraceArgs> args;
   std::vector<CStmt> then_, else_;
+  const Stmt* src = nullptr;  // for the case field a diagnosis names
 };
 
 using CProgram = std::vector<CStmt>;
@@ -88,7 +89,10 @@ struct CHitGroup {
   const CProgram* any_hit = nullptr;
   const CProgram* intersection = nullptr;
   CountsOnly closest_hit_counts;
+  bool any_hit_terminates = false;  // the any-hit has a `terminate` (R-ORDER-UNSPEC)
 };
+// Does the program hold a `terminate` statement (at any nesting)?
+bool hasTerminate(const CProgram& p);
 
 struct CPipeline {
   CProgram raygen;
@@ -98,6 +102,7 @@ struct CPipeline {
   std::vector<CHitGroup> groups;
   uint64_t read_bits = 0;  // bit (1 << Builtin) for every built-in any program reads
   bool reads_sphere = false;  // sphere_* ops (read the object-space ray and the box)
+  bool any_hit_terminates = false;  // some group's any-hit has a `terminate`
   bool reads(Builtin b) const { return (read_bits >> b) & 1u; }
 };
 

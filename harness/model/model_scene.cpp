@@ -39,7 +39,24 @@ void ownTriangleBounds(const RTCBoundsFunctionArguments* args) {
     lo[k] = std::min({tri[0][k], tri[1][k], tri[2][k]});
     hi[k] = std::max({tri[0][k], tri[1][k], tri[2][k]});
     if (std::isnan(tri[0][k]) || std::isnan(tri[1][k]) || std::isnan(tri[2][k])) {
-      setInvalidBounds(b);  // never hit (see model_traversal.cpp): no candidate needed
+      const auto it = g->nan_regions.find(args->primID);
+      if (it == g->nan_regions.end()) {
+        setInvalidBounds(b);  // inactive (R-INACTIVE): never a candidate
+        return;
+      }
+      // NaN in Y or Z: its region, so that every ray crossing it is enumerated
+      // (padded by its finite size too: a flat region still has thickness for
+      // the BVH, the model's own test decides).
+      const std::array<double, 6>& r = it->second;
+      double size = 1e-30;
+      for (double x : r)
+        if (std::isfinite(x)) size = std::max(size, std::fabs(x));
+      for (int a = 0; a < 3; ++a) {
+        lo[a] = clampLarge(static_cast<float>(r[a] - 1e-5 * size));
+        hi[a] = clampLarge(static_cast<float>(r[a + 3] + 1e-5 * size));
+      }
+      b.lower_x = lo[0]; b.lower_y = lo[1]; b.lower_z = lo[2];
+      b.upper_x = hi[0]; b.upper_y = hi[1]; b.upper_z = hi[2];
       return;
     }
   }
@@ -90,6 +107,35 @@ void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
   const DVec3 o = toObject(mi.inverse, tc->origin, 1.0);
   const DVec3 d = toObject(mi.inverse, tc->direction, 0.0);
   const auto& tri = g->triangles[args->primID];
+  if (!g->nan_regions.empty()) {
+    if (const auto it = g->nan_regions.find(args->primID); it != g->nan_regions.end()) {
+      // R-UB: never a hit; noted when the ray crosses the region in its interval.
+      const std::array<double, 6>& box = it->second;
+      double t0 = tc->tmin, t1 = tc->tmax;
+      for (int k = 0; k < 3 && t0 <= t1; ++k) {
+        const double slack = 1e-6 * std::max({std::fabs(box[k]), std::fabs(box[k + 3]), 1e-30});
+        const double lo = box[k] - slack, hi = box[k + 3] + slack;
+        if (d[k] == 0.0) {
+          if (o[k] < lo || o[k] > hi) t1 = -INFINITY;
+          continue;
+        }
+        double ta = (lo - o[k]) / d[k], tb = (hi - o[k]) / d[k];
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta);
+        t1 = std::min(t1, tb);
+      }
+      if (!(t0 <= t1)) return;
+      ModelCandidate c;
+      c.t = t0;
+      c.instance = inst;
+      c.geometry = args->geomID;
+      c.primitive = args->primID;
+      c.hit = false;
+      c.nan_triangle = true;
+      tc->candidates->push_back(c);
+      return;
+    }
+  }
   auto dv = [](const Vec3& v) { return DVec3{v[0], v[1], v[2]}; };
   const DVec3 v0 = dv(tri[0]), v1 = dv(tri[1]), v2 = dv(tri[2]);
   FrameError err;
@@ -191,6 +237,47 @@ bool triangleInactive(const std::array<Vec3, 3>& tri) {
   return std::isnan(tri[0][0]) || std::isnan(tri[1][0]) || std::isnan(tri[2][0]);
 }
 
+bool triangleNanYZ(const std::array<Vec3, 3>& tri) {
+  if (triangleInactive(tri)) return false;
+  for (const Vec3& v : tri)
+    if (std::isnan(v[1]) || std::isnan(v[2])) return true;
+  return false;
+}
+
+std::array<double, 6> nanTriangleRegion(const std::array<Vec3, 3>& tri, const std::optional<Transform>& transform) {
+  std::array<double, 6> box;
+  for (int k = 0; k < 3; ++k) {
+    box[k] = INFINITY;
+    box[k + 3] = -INFINITY;
+    for (const Vec3& v : tri) {
+      if (std::isnan(v[k])) {
+        box[k] = -INFINITY;
+        box[k + 3] = INFINITY;
+        break;
+      }
+      box[k] = std::min<double>(box[k], v[k]);
+      box[k + 3] = std::max<double>(box[k + 3], v[k]);
+    }
+  }
+  if (!transform) return box;
+  // Interval arithmetic through the affine map (a zero coefficient adds
+  // nothing, even to an unbounded component).
+  std::array<double, 6> out;
+  const Transform& m = *transform;
+  for (int row = 0; row < 3; ++row) {
+    double lo = m[row * 4 + 3], hi = m[row * 4 + 3];
+    for (int k = 0; k < 3; ++k) {
+      const double a = m[row * 4 + k];
+      if (a == 0) continue;
+      lo += a > 0 ? a * box[k] : a * box[k + 3];
+      hi += a > 0 ? a * box[k + 3] : a * box[k];
+    }
+    out[row] = lo;
+    out[row + 3] = hi;
+  }
+  return out;
+}
+
 bool needsOwnTriangleTest(const std::array<Vec3, 3>& tri) {
   if (triangleInactive(tri)) return false;
   for (const Vec3& v : tri)
@@ -208,10 +295,31 @@ ModelScene::~ModelScene() {
 
 void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters, bool keepTriangles) {
   s.tier = tier;
-  s.filters = filters;
   s.device = rtcNewDevice(nullptr);
   if (!s.device) throw std::runtime_error("rtcNewDevice failed");
   const RTCSceneFlags sceneFlags = tier == ModelTier::Fast ? RTC_SCENE_FLAG_NONE : RTC_SCENE_FLAG_ROBUST;
+  // Per-primitive triangles (geometry transform applied), classified on the
+  // vertices as given: inactive (NaN X), NaN in Y or Z (its region kept), or
+  // beyond Embree's range (the model's own test).
+  auto fillTriangles = [](ModelGeometry& mg, const Geometry& g) {
+    mg.triangles.resize(mg.count);
+    for (uint32_t p = 0; p < mg.count; ++p) {
+      std::array<Vec3, 3> raw;
+      for (int k = 0; k < 3; ++k) {
+        const uint32_t idx = g.indices.empty() ? p * 3 + k : g.indices[p * 3 + k];
+        raw[k] = idx < g.vertices.size() ? g.vertices[idx] : Vec3{NAN, NAN, NAN};
+        mg.triangles[p][k] = g.transform ? applyTransform(*g.transform, raw[k]) : raw[k];
+      }
+      if (triangleInactive(raw)) {
+        mg.triangles[p][0][0] = NAN;  // stays inactive whatever the transform made of it
+      } else if (triangleNanYZ(raw)) {
+        mg.nan_regions[p] = nanTriangleRegion(raw, g.transform);
+        mg.own_triangles = true;
+      } else if (needsOwnTriangleTest(mg.triangles[p])) {
+        mg.own_triangles = true;
+      }
+    }
+  };
   s.blases.resize(c.scene.blases.size());
   // Exact tier: how far a device's object-space rays may be off, per BLAS
   // (the largest over the instances that use it).
@@ -219,6 +327,7 @@ void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
   for (const Instance& inst : c.scene.instances)
     if (inst.blas && *inst.blas < rayPad.size())
       rayPad[*inst.blas] = std::max(rayPad[*inst.blas], instancePad(invertTransform(inst.transform), inst.transform));
+  bool anyOwn = false;
   for (size_t bi = 0; bi < c.scene.blases.size(); ++bi) {
     const Blas& src = c.scene.blases[bi];
     ModelBlas& mb = s.blases[bi];
@@ -256,18 +365,22 @@ void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
         for (float f : x) ordinary = ordinary && !std::isnan(f) && std::fabs(f) <= kEmbreeLarge;
       }
       mg.own_triangles = tier == ModelTier::Exact;
-      if (keepTriangles || filters || !ordinary || mg.own_triangles) {
-        mg.triangles.resize(n);
-        for (uint32_t p = 0; p < n; ++p)
-          for (int k = 0; k < 3; ++k) {
-            const uint32_t idx = g.indices.empty() ? p * 3 + k : g.indices[p * 3 + k];
-            Vec3 v = idx < g.vertices.size() ? g.vertices[idx] : Vec3{NAN, NAN, NAN};
-            mg.triangles[p][k] = g.transform ? applyTransform(*g.transform, v) : v;
-          }
-        for (const auto& tri : mg.triangles)
-          if (needsOwnTriangleTest(tri)) mg.own_triangles = true;
-      }
+      if (keepTriangles || filters || !ordinary || mg.own_triangles) fillTriangles(mg, g);
+      anyOwn = anyOwn || mg.own_triangles;
     }
+  }
+  // Own triangle tests mean the collect-then-process path: Embree's triangles
+  // report to it too, and their candidates need the per-primitive triangles.
+  if (anyOwn && !filters) {
+    filters = true;
+    for (size_t bi = 0; bi < c.scene.blases.size(); ++bi)
+      for (ModelGeometry& mg : s.blases[bi].geometries)
+        if (mg.kind == Geometry::Kind::Triangles && mg.triangles.size() != mg.count)
+          fillTriangles(mg, c.scene.blases[bi].geometries[mg.index]);
+  }
+  s.filters = filters;
+  for (size_t bi = 0; bi < c.scene.blases.size(); ++bi) {
+    ModelBlas& mb = s.blases[bi];
     mb.scene = rtcNewScene(s.device);
     rtcSetSceneFlags(mb.scene, sceneFlags);
     for (ModelGeometry& mg : mb.geometries) {

@@ -9,6 +9,7 @@
 #include <embree3/rtcore.h>
 
 #include <array>
+#include <unordered_map>
 #include <vector>
 
 #include "case/case.h"
@@ -28,6 +29,10 @@ struct ModelGeometry {
   uint32_t count = 0;                          // primitives
   bool indexed = false;                        // indices given, every one in range
   std::vector<std::array<float, 6>> aabbs;
+  // Triangles with NaN in Y or Z of a vertex (not X: inactive), undefined by
+  // the specification: the object-space box where each might be (finite
+  // coordinates' bounds, unbounded along a NaN component), by primitive.
+  std::unordered_map<uint32_t, std::array<double, 6>> nan_regions;
   uint32_t blas = 0, index = 0;
   ModelTier tier = ModelTier::Exact;
   // Exact tier: how far a device's vertices may differ from `triangles` (a
@@ -72,7 +77,9 @@ struct ModelScene {
 constexpr unsigned kMaskTriangles = 0x100, kMaskAabbs = 0x200;
 
 // Builds the scene. `filters`: every triangle candidate goes to the model
-// (collect-then-process path); otherwise Embree's closest hit is used.
+// (collect-then-process path); otherwise Embree's closest hit is used. A case
+// with triangles of the model's own test turns filters on (s.filters): its
+// traces take the collect-then-process path, which sees every triangle.
 // `keepTriangles`: fill ModelGeometry::triangles even where nothing but the
 // facing of a direct hit could read them (false: only where own triangle
 // tests, candidates or an unindexed Embree buffer need them).
@@ -80,7 +87,13 @@ void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
 
 // True when Embree would drop this triangle although Vulkan keeps it active.
 bool needsOwnTriangleTest(const std::array<Vec3, 3>& tri);
-// R-INACTIVE: NaN in the X component of any vertex.
+// R-INACTIVE: NaN in the X component of any vertex (as given, before a
+// geometry transform).
 bool triangleInactive(const std::array<Vec3, 3>& tri);
+// R-UB: an active triangle with NaN in Y or Z of a vertex. Its region: the
+// box of its finite coordinates, unbounded along a component with a NaN,
+// through the geometry transform (if any), conservatively.
+bool triangleNanYZ(const std::array<Vec3, 3>& tri);
+std::array<double, 6> nanTriangleRegion(const std::array<Vec3, 3>& tri, const std::optional<Transform>& transform);
 
 }  // namespace rayspec

@@ -26,6 +26,8 @@ struct ModelCandidate {
   // tmax exactly (model/exact_interval.h): no tie at that end.
   bool exact_tmin = false, exact_tmax = false;
   double t_err = 0;  // triangles, exact tier: how far a device's t may lie (0: unknown)
+  bool nan_triangle = false;  // a triangle with NaN in Y or Z (never a hit: the
+                              // ray crosses where it might be, R-UB); t: entry
 };
 
 struct TraceContext {

@@ -142,10 +142,16 @@ bool validRay(const TraceRay& r, const RTCRayHit& rh) {
 
 using namespace trace_detail;
 
-const SbtRecord* Machine::hitRecord(uint32_t instance, uint32_t geometry, const TraceRay& r) const {
+// R-SBT-HIT: instance offset (24 bits) + geometry x stride + offset (4 bits each).
+uint64_t Machine::hitRecordIndex(uint32_t instance, uint32_t geometry, const TraceRay& r) const {
   const Instance& inst = sh_.c->scene.instances[instance];
-  const uint64_t idx = static_cast<uint64_t>(inst.sbt_offset & 0xFFFFFF) +
-                       static_cast<uint64_t>(geometry) * (r.sbt_stride & 0xF) + (r.sbt_offset & 0xF);
+  return static_cast<uint64_t>(inst.sbt_offset & 0xFFFFFF) + static_cast<uint64_t>(geometry) * (r.sbt_stride & 0xF) +
+         (r.sbt_offset & 0xF);
+}
+
+// Beyond the hit region: nullptr (R-UB, checkCandidates / shade mark the ray).
+const SbtRecord* Machine::hitRecord(uint32_t instance, uint32_t geometry, const TraceRay& r) const {
+  const uint64_t idx = hitRecordIndex(instance, geometry, r);
   return idx < default_hit_.size() ? &default_hit_[idx] : nullptr;
 }
 
@@ -224,12 +230,16 @@ Flow Machine::report(const CStmt& s, StageEnv& env) {
   return f != Flow::Continue ? f : flow;
 }
 
-Payload Machine::trace(const TraceRay& r, uint32_t depth) {
+Payload Machine::trace(const TraceRay& r, uint32_t depth, const CStmt* site) {
   uint32_t flags = r.flags;
   if (sh_.c->pipeline.flags & 0x1000) flags |= kRaySkipTriangles;
   if (sh_.c->pipeline.flags & 0x2000) flags |= kRaySkipAabbs;
   Payload payload;
   payload.depth = depth;
+  // R-UB: a ray with a non-finite, NaN or negative parameter finds nothing
+  // (validRay keeps it from Embree) and misses; one with an illegal flag
+  // combination is traced with its flags as the model resolves them.
+  checkRayParameters(r, site, depth);
   const Committed best = sh_.direct ? directHit(r, flags) : traverse(r, flags, depth, payload);
   shade(r, flags, depth, best, payload);
   return payload;
@@ -364,9 +374,19 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
     decide(tr, *cands, nullptr, payload);
     tr.reports = nullptr;
     tr.shader_unsure = nullptr;
+    checkCandidates(tr, *cands);
   }
 
-  if (cands && tr.exact && !ray_ambiguous_) classifyTrace(tr, *cands, reports, shaderUnsure, payloadIn);
+  if (cands && tr.exact && !ray_ambiguous_) {
+    classifyTrace(tr, *cands, reports, shaderUnsure, payloadIn);
+    // R-UB: a legal answer of this trace whose record lies beyond its region.
+    if (ray_ambiguous_ && !ray_undefined_ && !ambiguous.empty() && ambiguous.back().ray == index_)
+      for (const Candidate& k : ambiguous.back().candidates) {
+        if (k.hit && !(tr.flags & kRaySkipClosestHit) && !hitRecord(k.instance, k.geometry, r))
+          hitRecordOutOfRange(k.instance, k.geometry, r);
+        if (!k.hit && (r.miss & 0xFFFF) >= default_miss_.size()) missRecordOutOfRange(r);
+      }
+  }
   return tr.best;
 }
 
@@ -377,6 +397,8 @@ void Machine::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Com
   if (best.valid) {
     if (!(flags & kRaySkipClosestHit)) {
       const SbtRecord* rec = hitRecord(best.instance, best.geometry, r);
+      // R-UB: the closest-hit's record beyond the hit region; the model runs none.
+      if (!rec && !ray_undefined_) hitRecordOutOfRange(best.instance, best.geometry, r);
       const CHitGroup* grp = groupOf(*sh_.programs, rec);
       if (grp && grp->closest_hit && grp->closest_hit_counts.yes) {
         bump(grp->closest_hit_counts);
@@ -392,6 +414,8 @@ void Machine::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Com
     }
   } else {
     const uint32_t mi = r.miss & 0xFFFF;
+    // R-UB: beyond the miss region; the model runs no miss shader.
+    if (mi >= default_miss_.size() && !ray_undefined_) missRecordOutOfRange(r);
     if (mi < default_miss_.size()) {
       const SbtRecord& rec = default_miss_[mi];
       if (rec.group && *rec.group < c.pipeline.miss.size() && sh_.programs->miss_counts[*rec.group].yes) {

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "fault/planted_fault.h"
+#include "metamorphic/permute_case.h"
 #include "report/rule_catalog.h"
 #include "run/case_steps.h"
 #include "run/device_probe.h"
@@ -121,6 +122,7 @@ int runCases(const RunOptions& opt) {
     if (opt.no_isolation) model = std::make_unique<ModelAdapter>(ModelOptions{parseModelTier(opt.model_tier), opt.threads});
     std::printf("Model: embree, %s tier\n", opt.model_tier.c_str());
   }
+  if (opt.permute) std::printf("Permuted: primitives and instances, seed %llu\n", (unsigned long long)*opt.permute);
   if (!opt.no_isolation)
     std::printf("Each case side in its own process: timeout %g s, memory limit %s\n", opt.timeout,
                 opt.memory_limit ? formatBytes(opt.memory_limit).c_str() : "none");
@@ -143,7 +145,7 @@ int runCases(const RunOptions& opt) {
     if (std::optional<CaseOutcome> error = caseFileError(f, parsed)) {
       outcome = *error;
     } else {
-      const Case& c = *parsed.value;
+      const Case& c = opt.permute ? permuteCase(*parsed.value, *opt.permute).permuted : *parsed.value;
       outcome = guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted); });
       if (interrupted) break;
       case_rules.push_back({c.name, c.rules});

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,7 @@ struct RunOptions {
   std::string plant_fault_in = "*";  // only in cases whose name matches this glob
   std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
   std::string baseline;          // known failures of this driver (report/baseline.h)
+  std::optional<uint64_t> permute;  // run each case with primitives and instances permuted (metamorphic/)
 };
 
 }  // namespace rayspec

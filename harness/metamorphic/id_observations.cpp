@@ -1,0 +1,104 @@
+#include "metamorphic/id_observations.h"
+
+#include <algorithm>
+
+namespace rayspec {
+namespace {
+
+struct Observer {
+  const std::string& name;
+  IdObservations& out;
+
+  bool isId(const Expr& e) const { return e.kind == Expr::Kind::Builtin && e.name == name; }
+  static bool isUintLiteral(const Expr& e) {
+    return e.kind == Expr::Kind::Literal && e.literal.size() == 1 && e.literal[0] >= 0 &&
+           e.literal[0] == static_cast<double>(static_cast<uint64_t>(e.literal[0])) &&
+           e.type != ValueType::Float;
+  }
+
+  // A comparison of the id with a literal: which side of it the id lies.
+  bool comparison(const Expr& e) {
+    static const std::vector<std::string> ops = {"eq", "ne", "lt", "le", "gt", "ge"};
+    if (e.args.size() != 2 || std::find(ops.begin(), ops.end(), e.name) == ops.end()) return false;
+    const bool left = isId(e.args[0]) && isUintLiteral(e.args[1]);
+    const bool right = isId(e.args[1]) && isUintLiteral(e.args[0]);
+    if (!left && !right) return false;
+    const uint64_t v = static_cast<uint64_t>((left ? e.args[1] : e.args[0]).literal[0]);
+    if (e.name == "eq" || e.name == "ne") {
+      out.equals.push_back(v);
+      return true;
+    }
+    // id < v, id <= v (id < v + 1), v < id (not id < v + 1), v <= id (not id < v): one threshold each.
+    const bool idFirst = left;
+    const bool strict = e.name == "lt" || e.name == "gt";
+    const bool lessThan = (e.name == "lt" || e.name == "le") == idFirst;  // id on the small side
+    out.below.push_back(lessThan == strict ? v : v + 1);
+    return true;
+  }
+
+  void expr(const Expr& e) {
+    if (isId(e)) {
+      out.exact = true;
+      return;
+    }
+    if (e.kind != Expr::Kind::Op) return;
+    if ((e.name == "odd" || e.name == "even") && e.args.size() == 1 && isId(e.args[0])) {
+      out.parity = true;
+      return;
+    }
+    if (comparison(e)) return;
+    for (const Expr& a : e.args) expr(a);
+  }
+
+  void exprs(const std::vector<Expr>& v) {
+    for (const Expr& e : v) expr(e);
+  }
+
+  void program(const Program& p) {
+    for (const Stmt& s : p) {
+      for (const auto& [field, value] : s.assigns) {
+        // Recorded as itself: the harness maps it back.
+        if (s.kind == Stmt::Kind::Record && field == name && isId(value)) continue;
+        expr(value);
+      }
+      if (s.kind == Stmt::Kind::If) expr(s.cond);
+      if (s.kind == Stmt::Kind::Report) {
+        expr(s.t);
+        expr(s.hit_kind);
+        exprs(s.attribute);
+      }
+      if (s.kind == Stmt::Kind::Call) expr(s.call_index);
+      if (s.kind == Stmt::Kind::Trace)
+        for (const std::vector<Expr>* a : {&s.trace.origin, &s.trace.direction, &s.trace.tmin, &s.trace.tmax,
+                                           &s.trace.flags, &s.trace.cull_mask, &s.trace.sbt_offset,
+                                           &s.trace.sbt_stride, &s.trace.miss})
+          exprs(*a);
+      program(s.then_);
+      program(s.else_);
+    }
+  }
+};
+
+}  // namespace
+
+std::vector<uint64_t> IdObservations::classOf(uint64_t id) const {
+  std::vector<uint64_t> key;
+  key.push_back(parity ? id & 1 : 0);
+  for (uint64_t v : equals) key.push_back(id == v);
+  for (uint64_t t : below) key.push_back(id < t);
+  return key;
+}
+
+IdObservations observeId(const Pipeline& p, const std::string& builtin) {
+  IdObservations out;
+  Observer o{builtin, out};
+  o.program(p.raygen);
+  for (const Program& m : p.miss) o.program(m);
+  for (const HitGroup& g : p.hit_groups)
+    for (const std::optional<Program>* prog : {&g.closest_hit, &g.any_hit, &g.intersection})
+      if (*prog) o.program(**prog);
+  for (const Program& k : p.callables) o.program(k);
+  return out;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,218 @@
+// The permutation check of R-ORDER-UNSPEC (harness/metamorphic/): permuting
+// primitives and instances keeps what programs observe, leads ids back, and
+// does not move the model's answers on any case file; and the check notices
+// an answer that did move.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <set>
+#include <string>
+
+#include "case/parse_case.h"
+#include "metamorphic/compare_permuted.h"
+#include "metamorphic/id_observations.h"
+#include "metamorphic/permute_case.h"
+#include "model/model_backend.h"
+#include "plan/plan.h"
+#include "results/record_layout.h"
+
+namespace rayspec {
+namespace {
+
+Case parse(const std::string& yaml) {
+  ParseResult p = parseCaseText(yaml, "m.yaml", "metamorphic/m");
+  std::string errors;
+  for (const CaseError& e : p.errors) errors += e.format() + "\n";
+  EXPECT_TRUE(p.value.has_value()) << errors;
+  return p.value ? *p.value : Case{};
+}
+
+Results model(const Case& c) {
+  const Plan plan = derivePlan(c);
+  return runOnModel(c, plan, ModelOptions{ModelTier::Exact, 2});
+}
+
+// A 4x4 grid of cells (32 triangles) in two instances side by side and a
+// third under the right one, two boxes; an any-hit that ignores odd
+// primitives and terminates on instance 3 (so that the answer under the right
+// half depends on the order: R-ORDER-UNSPEC); 8x4 rays.
+const char* kGrid = R"(rules: [R-ORDER-UNSPEC]
+scene:
+  blas:
+    grid:
+      - triangles: {grid: {cells: [4, 4], size: [2, 2], center: [0, 0, 0]}}
+        flags: []
+    boxes:
+      - aabbs: [[-1, -1, -2, 1, 1, -1], [-0.5, -0.5, -3, 0.5, 0.5, -2.5]]
+  instances:
+    - {blas: grid, transform: {translate: [-1, 0, 0]}, custom_index: 7}
+    - {blas: grid, transform: {translate: [1, 0, 0]}}
+    - {blas: boxes, sbt_offset: 1}
+    - {blas: grid, transform: {translate: [1, 0, -0.5]}}
+rays:
+  grid: {size: [8, 4], origin: [-1.93, -0.95, 1], du: [0.5, 0, 0], dv: [0, 0.45, 0], direction: [0, 0, -1]}
+  tmin: 0.001
+  tmax: 100
+pipeline:
+  miss:
+    - [count: miss, record: {hit: 0}]
+  hit_groups:
+    - any_hit:
+        - if: {odd: primitive_id}
+          then: [ignore]
+        - if: {eq: [instance_id, 3]}
+          then: [terminate]
+      closest_hit: [count: closesthit, record: [hit, instance_id, geometry_index, primitive_id, hit_t, barycentrics, instance_custom_index]]
+    - intersection: [report: {t: {add: [{z: object_ray_origin}, 1.5]}, kind: 1}]
+      closest_hit: [count: closesthit, record: [hit, instance_id, geometry_index, primitive_id, hit_t]]
+outputs:
+  counters: [miss, closesthit]
+  per_ray: [hit, instance_id, geometry_index, primitive_id, hit_t, barycentrics, instance_custom_index]
+)";
+
+TEST(IdObservations, WhatProgramsObserveOfAnId) {
+  const Case c = parse(kGrid);
+  const IdObservations prim = observeId(c.pipeline, "primitive_id");
+  EXPECT_FALSE(prim.exact);  // recorded as itself: led back
+  EXPECT_TRUE(prim.parity);
+  EXPECT_EQ(prim.classOf(3), prim.classOf(5));
+  EXPECT_NE(prim.classOf(3), prim.classOf(4));
+  const IdObservations inst = observeId(c.pipeline, "instance_id");
+  EXPECT_FALSE(inst.parity);
+  EXPECT_EQ(inst.equals, (std::vector<uint64_t>{3}));
+  EXPECT_EQ(inst.classOf(0), inst.classOf(2));
+  EXPECT_NE(inst.classOf(3), inst.classOf(2));
+  // The side of a threshold, whichever way it is written.
+  Case t = c;
+  Expr id;
+  id.kind = Expr::Kind::Builtin;
+  id.name = "primitive_id";
+  Expr three;
+  three.literal = {3};
+  for (const auto& [name, idFirst, threshold] : std::vector<std::tuple<std::string, bool, uint64_t>>{
+           {"lt", true, 3}, {"le", true, 4}, {"gt", true, 4}, {"ge", true, 3},
+           {"lt", false, 4}, {"le", false, 3}, {"gt", false, 3}, {"ge", false, 4}}) {
+    Expr cmp;
+    cmp.kind = Expr::Kind::Op;
+    cmp.name = name;
+    cmp.args = idFirst ? std::vector<Expr>{id, three} : std::vector<Expr>{three, id};
+    Stmt s;
+    s.kind = Stmt::Kind::If;
+    s.cond = cmp;
+    t.pipeline.raygen = {s};
+    t.pipeline.hit_groups.clear();
+    EXPECT_EQ(observeId(t.pipeline, "primitive_id").below, (std::vector<uint64_t>{threshold})) << name << idFirst;
+  }
+  // Arithmetic on the id observes the id itself: nothing may move.
+  Expr sum;
+  sum.kind = Expr::Kind::Op;
+  sum.name = "add";
+  sum.args = {id, three};
+  t.pipeline.raygen[0].cond = sum;
+  EXPECT_TRUE(observeId(t.pipeline, "primitive_id").exact);
+}
+
+TEST(PermuteCase, DeterministicAndKeepsEveryPrimitiveAndInstance) {
+  const Case c = parse(kGrid);
+  const CasePermutation a = permuteCase(c, 7), b = permuteCase(c, 7), d = permuteCase(c, 8);
+  EXPECT_EQ(a.instance_of, b.instance_of);
+  EXPECT_EQ(a.primitive_of, b.primitive_of);
+  EXPECT_NE(a.primitive_of, d.primitive_of);
+  EXPECT_TRUE(a.primitivesMoved());
+  // Instance 3 is observed (eq): it stays; the others may exchange.
+  for (uint64_t seed = 0; seed < 8; ++seed) EXPECT_EQ(permuteCase(c, seed).instance_of[3], 3u);
+  bool instancesMoved = false;
+  for (uint64_t seed = 0; seed < 8; ++seed) instancesMoved = instancesMoved || permuteCase(c, seed).instancesMoved();
+  EXPECT_TRUE(instancesMoved);
+  // Every permuted triangle is an original one, vertex for vertex (winding
+  // kept), with the parity of its primitive id; every instance an original.
+  const Geometry& g0 = c.scene.blases[0].geometries[0];
+  const Geometry& g1 = a.permuted.scene.blases[0].geometries[0];
+  ASSERT_EQ(g1.primitiveCount(), g0.primitiveCount());
+  std::set<uint32_t> seen;
+  for (uint32_t p = 0; p < g1.primitiveCount(); ++p) {
+    const uint32_t old = a.primitive_of[0][0][p];
+    seen.insert(old);
+    EXPECT_EQ(old % 2, p % 2);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ(g1.vertices[g1.indices[p * 3 + k]], g0.vertices[g0.indices[old * 3 + k]]) << p << " " << k;
+  }
+  EXPECT_EQ(seen.size(), g0.primitiveCount());
+  const auto& boxes0 = c.scene.blases[1].geometries[0].aabbs;
+  const auto& boxes1 = a.permuted.scene.blases[1].geometries[0].aabbs;
+  for (uint32_t p = 0; p < boxes1.size(); ++p) EXPECT_EQ(boxes1[p], boxes0[a.primitive_of[1][0][p]]);
+  for (uint32_t i = 0; i < a.instance_of.size(); ++i) {
+    EXPECT_EQ(a.permuted.scene.instances[i].transform, c.scene.instances[a.instance_of[i]].transform);
+    EXPECT_EQ(a.permuted.scene.instances[i].custom_index, c.scene.instances[a.instance_of[i]].custom_index);
+  }
+}
+
+// The check sees an answer that moved: a permuted run whose clear ray is
+// edited to another primitive, or to another instance, or to a miss.
+TEST(ComparePermuted, NoticesAMovedAnswer) {
+  const Case c = parse(kGrid);
+  const Results original = model(c);
+  const CasePermutation p = permuteCase(c, 3);
+  const Results permuted = model(p.permuted);
+  ASSERT_TRUE(comparePermuted(p, original, permuted).empty());
+  std::set<uint32_t> ambiguous;
+  for (const RayAmbiguity& a : original.ambiguous) ambiguous.insert(a.ray);
+  uint32_t clearHit = ~0u;
+  const uint32_t words = recordWords();
+  for (uint32_t ray = 0; ray < 32 && clearHit == ~0u; ++ray)
+    if (!ambiguous.count(ray) && original.records[ray * words + findRecordField("hit")->offset] == 1 &&
+        original.records[ray * words + findRecordField("instance_id")->offset] != 2)  // a triangle
+      clearHit = ray;
+  ASSERT_NE(clearHit, ~0u);
+  for (const char* field : {"primitive_id", "instance_id", "hit", "hit_t"}) {
+    Results edited = permuted;
+    uint32_t& w = edited.records[clearHit * words + findRecordField(field)->offset];
+    w = std::string(field) == "hit_t" ? w + 4096 : std::string(field) == "hit" ? 0 : w ^ 2;
+    const auto problems = comparePermuted(p, original, edited);
+    ASSERT_EQ(problems.size(), 1u) << field;
+    EXPECT_NE(problems[0].find("ray " + std::to_string(clearHit) + ": clear, "), std::string::npos) << problems[0];
+  }
+  // An ambiguous ray answering outside its legal set.
+  ASSERT_FALSE(original.ambiguous.empty());
+  Results edited = permuted;
+  const uint32_t ray = original.ambiguous[0].ray;
+  edited.records[ray * words + findRecordField("instance_id")->offset] = 99;
+  edited.records[ray * words + findRecordField("hit")->offset] = 1;
+  edited.records[ray * words] |= 1u << recordFieldIndex("hit") | 1u << recordFieldIndex("instance_id");
+  const auto problems = comparePermuted(p, original, edited);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_NE(problems[0].find("not a legal answer"), std::string::npos) << problems[0];
+}
+
+// Every case file, permuted with a few seeds, on the model (exact tier): no
+// answer moves.
+TEST(ComparePermuted, EveryCaseFileKeepsItsAnswers) {
+  namespace fs = std::filesystem;
+  const fs::path root = fs::path(RAYSPEC_SOURCE_DIR) / "cases";
+  int cases = 0, moved = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(root)) {
+    if (entry.path().extension() != ".yaml") continue;
+    ParseResult parsed = parseCaseFile(entry.path().string(), root.string());
+    if (!parsed.value) continue;
+    const Case& c = *parsed.value;
+    const Results original = model(c);
+    ASSERT_EQ(original.statusText(), "ok") << c.name;
+    ++cases;
+    bool any = false;
+    for (uint64_t seed : {1u, 2u, 3u}) {
+      const CasePermutation p = permuteCase(c, seed);
+      any = any || p.primitivesMoved() || p.instancesMoved();
+      for (const std::string& problem : comparePermuted(p, original, model(p.permuted)))
+        ADD_FAILURE() << c.name << ": " << problem;
+    }
+    moved += any;
+  }
+  std::printf("%d case files, %d with primitives or instances permuted\n", cases, moved);
+  EXPECT_GT(cases, 0);
+  EXPECT_GT(moved, cases / 2);
+}
+
+}  // namespace
+}  // namespace rayspec
