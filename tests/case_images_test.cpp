@@ -19,6 +19,8 @@ scene:
 rays:
   grid: {size: [2, 2], origin: [-1, -1, 1], du: [1, 0, 0], dv: [0, 1, 0], direction: [0, 0, -1]}
 pipeline:
+  miss:
+    - [record: {hit: 0}]
   hit_groups:
     - closest_hit: [record: {color: [1.0, 0.0, 0.0, 1.0], color2: [1.0, 0.0, 0.0, 1.0], hit: 1}]
 outputs:
@@ -50,7 +52,7 @@ TEST(ParseImages, EqualToAnUnknownImageOrItselfIsAnError) {
         parse(std::string("    - {name: a, from: color}\n    - {name: b, from: color2, equal_to: ") + other + "}\n");
     ASSERT_FALSE(r.value) << other;
     ASSERT_EQ(r.errors.size(), 1u) << errors(r);
-    EXPECT_EQ(r.errors[0].loc.line, 18) << errors(r);
+    EXPECT_EQ(r.errors[0].loc.line, 20) << errors(r);
     EXPECT_GT(r.errors[0].loc.column, 0);
     EXPECT_EQ(r.errors[0].loc.field, "outputs.images[1].equal_to");
     EXPECT_NE(r.errors[0].message.find("is not another image"), std::string::npos) << errors(r);

@@ -250,17 +250,18 @@ void answerHit(const Case& c, RecordEdit& e, uint32_t ray, uint32_t instance, ui
 }  // namespace numerics
 
 // R-CAND-TRI-OPEN: a device that hits a triangle at exactly tmax or tmin
-// fails on every ray the candidates case puts on an exact end; it changes
-// nothing on the near-but-inexact rays (their t is never exactly an end).
+// fails on every ray the candidates case puts on an exact end. The
+// near-but-inexact rays are ambiguous: the planted device answers them one
+// legal way, which is never judged a failure.
 TEST_F(PlantedFault, ClosedTriangleIntervalFails) {
   Results planted;
   const Verdict v = plant("candidates/triangle-open-interval", "closed-triangle-interval", &planted);
   EXPECT_EQ(v.status, Status::Fail) << v.headline();
   EXPECT_TRUE(hasFinding(v, Status::Fail, "R-CAND-TRI-OPEN")) << v.headline();
   const Ran& r = run("candidates/triangle-open-interval");
-  const std::set<uint32_t> changed = numerics::changedRays(planted, r.device);
+  std::set<uint32_t> changed = numerics::changedRays(planted, r.device);
+  for (const RayAmbiguity& a : r.model.ambiguous) changed.erase(a.ray);
   ASSERT_FALSE(changed.empty());
-  for (const RayAmbiguity& a : r.model.ambiguous) EXPECT_EQ(changed.count(a.ray), 0u) << "inexact ray " << a.ray;
   const Finding* hit = numerics::failing(v, "hit");
   ASSERT_NE(hit, nullptr) << v.headline();
   EXPECT_EQ(hit->ray_count, changed.size()) << "every ray on an exact end is judged";

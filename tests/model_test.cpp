@@ -1,5 +1,5 @@
 // Unit tests of the CPU reference model: hand-built cases per rule family,
-// outcomes derived from the geometry (helpers: model_test_helpers.h).
+// outcomes derived from the geometry (helpers: model_support.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>
