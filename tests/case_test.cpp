@@ -1,9 +1,9 @@
 // Tests of the case reader: values of good cases, and errors (line + field)
 // for bad ones.
+#include <bit>
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -302,9 +302,7 @@ outputs:
   EXPECT_FALSE(p.sbt_miss[1].group.has_value());
   ASSERT_EQ(p.sbt_hit.size(), 2u);
   EXPECT_EQ(p.sbt_hit[0].group, 0u);
-  uint32_t one;
-  const float f1 = 1.0f;
-  std::memcpy(&one, &f1, 4);
+  const uint32_t one = std::bit_cast<uint32_t>(1.0f);
   ASSERT_EQ(p.sbt_hit[0].data.size(), 2u);
   EXPECT_EQ(p.sbt_hit[0].data[0], one);
   EXPECT_FALSE(p.sbt_hit[1].group.has_value());

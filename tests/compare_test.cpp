@@ -1,7 +1,7 @@
+#include <bit>
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 
 #include "compare/compare_results.h"
 #include "compare_samples.h"
@@ -222,11 +222,7 @@ TEST(Compare, AnyHitRunsAtMostOncePerPrimitiveUnderNoDuplicate) {
 TEST(CompareImages, FloatImagesWithinTheFieldToleranceAndAmbiguousPixelsExcluded) {
   auto image = [](std::vector<float> v) {
     Image im{"t", "hit_t", 2, 2, 1, true, {}};
-    for (float f : v) {
-      uint32_t w;
-      std::memcpy(&w, &f, 4);
-      im.texels.push_back(w);
-    }
+    for (float f : v) im.texels.push_back(std::bit_cast<uint32_t>(f));
     return im;
   };
   const Image model = image({1.0f, 2.0f, NAN, 4.0f});
@@ -336,8 +332,7 @@ TEST(CompareImages, CaseThresholdsAllowFailingPixelsAndScaleTheTolerance) {
   Results fd = sampleResults("vulkan"), fm = sampleResults("model");
   Image color{"color", "color", 4, 1, 1, true, {0x3f800000u, 0x3f800000u, 0x3f800000u, 0x3f800000u}};
   fm.images.push_back(color);
-  float off = 1.0f + 3e-4f;
-  std::memcpy(&color.texels[1], &off, 4);
+  color.texels[1] = std::bit_cast<uint32_t>(1.0f + 3e-4f);
   fd.images.push_back(color);
   ImageOutput strict{"color", "color", {}};
   plan.images = {out, strict};

@@ -1,10 +1,11 @@
 // The GLSL generator: every statement kind and stage of hand-built cases
 // compiles to valid SPIR-V; layouts come from the C++ tables; only what the
 // plan needs is declared; ray and scene packing.
+#include <bit>
+#include <cstring>
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <map>
 #include <regex>
 #include <set>
@@ -396,7 +397,7 @@ TEST(GlslLiteral, FloatsAreExact) {
   EXPECT_EQ(glslUint(4294967295u), "4294967295u");
 }
 
-uint32_t bits(float v) { uint32_t w; std::memcpy(&w, &v, 4); return w; }
+uint32_t bits(float v) { return std::bit_cast<uint32_t>(v); }
 
 TEST(Bindings, PackRaysRoundTripsFloatBits) {
   Rays rays;
@@ -436,7 +437,7 @@ std::array<float, 6> sceneBox(const std::vector<uint32_t>& s, uint32_t inst, uin
   const uint32_t table = s[1 + inst];
   const uint32_t w = s[table + geom] + 6 * prim;
   std::array<float, 6> box;
-  for (int k = 0; k < 6; ++k) std::memcpy(&box[k], &s[w + k], 4);
+  for (int k = 0; k < 6; ++k) box[k] = std::bit_cast<float>(s[w + k]);
   return box;
 }
 

@@ -1,11 +1,11 @@
 // Unit tests of the CPU reference model: hand-built cases per rule family,
 // outcomes derived from the geometry (helpers: model_support.h).
+#include <bit>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -406,7 +406,7 @@ TEST(Model, PointLightFormula) {
   c.pipeline.hit_groups[0].closest_hit = Program{call, recordExpr("color", bi("callee.color"))};
   Stmt light; light.kind = Stmt::Kind::Light; light.light = "point";
   c.pipeline.callables = {{light}};
-  auto bits = [](float f) { uint32_t u; std::memcpy(&u, &f, 4); return u; };
+  auto bits = [](float f) { return std::bit_cast<uint32_t>(f); };
   c.pipeline.sbt_callable = {{0, {bits(0.5f), bits(-0.5f), bits(2.0f), bits(1.0f), bits(0.5f), bits(0.25f)}}};
   c.outputs.per_ray.push_back("color");
   Results r = run(c, ModelTier::Fast);
@@ -560,9 +560,7 @@ TEST(Model, ImagesFollowTheRecord) {
   EXPECT_EQ(r.images[0].channels, 1u);
   EXPECT_TRUE(r.images[1].is_float);
   ASSERT_EQ(r.images[1].texels.size(), 8u);
-  float t, a;
-  std::memcpy(&t, &r.images[1].texels[0], 4);
-  std::memcpy(&a, &r.images[1].texels[3], 4);
+  const float t = std::bit_cast<float>(r.images[1].texels[0]), a = std::bit_cast<float>(r.images[1].texels[3]);
   EXPECT_NEAR(t, 5.0f, 1e-5);
   EXPECT_EQ(a, 1.0f);
   EXPECT_EQ(r.images[1].texels[1], 0u);

@@ -1,6 +1,7 @@
+#include <bit>
+#include <cstring>
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -41,8 +42,7 @@ Results sampleResults() {
   r.counters = {{"miss", 4}, {"closesthit", 2}};
   r.records.assign(6 * recordWords(), 0);
   const RecordField* t = findRecordField("hit_t");
-  float value = 1.5f;
-  std::memcpy(&r.records[recordWords() + t->offset], &value, 4);
+  r.records[recordWords() + t->offset] = std::bit_cast<uint32_t>(1.5f);
   r.records[recordWords() + kRecordWrittenMaskWord] = 1u << recordFieldIndex("hit_t");
   Image im{"primitive", "primitive_id", 3, 2, 1, false, {0, 1, 2, 3, 4, 5}};
   r.images.push_back(im);

@@ -1,5 +1,5 @@
 // Shader record data: {uints: [..]} | {floats: [..]}, at most 8 words.
-#include <cstring>
+#include <bit>
 
 #include "case/case_parts.h"
 
@@ -32,9 +32,7 @@ std::optional<std::vector<uint32_t>> parseRecordData(YamlReader& r, const YAML::
       auto v = r.number(list[i], fi, true);
       if (!v) { ok = false; continue; }
       const float x = static_cast<float>(*v);
-      uint32_t bits;
-      std::memcpy(&bits, &x, sizeof bits);
-      words.push_back(bits);
+      words.push_back(std::bit_cast<uint32_t>(x));
     }
   }
   if (!ok) return std::nullopt;

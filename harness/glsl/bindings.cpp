@@ -1,14 +1,12 @@
 #include "glsl/bindings.h"
 
-#include <cstring>
+#include <bit>
 
 namespace rayspec {
 namespace {
 
 uint32_t floatBits(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
+  return std::bit_cast<uint32_t>(f);
 }
 
 }  // namespace

@@ -1,16 +1,15 @@
 #include "glsl/glsl_literal.h"
 
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 
 namespace rayspec {
 namespace {
 
 std::string bitsLiteral(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, sizeof u);
+  const uint32_t u = std::bit_cast<uint32_t>(f);
   char buf[40];
   std::snprintf(buf, sizeof buf, "uintBitsToFloat(0x%08Xu)", u);
   return buf;

@@ -1,9 +1,9 @@
 #include "model/model_backend.h"
 
+#include <bit>
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <cstring>
 #include <exception>
 #include <stdexcept>
 #include <thread>
@@ -99,9 +99,7 @@ void fillImages(Results& r, const Plan& plan) {
     img.is_float = f->type == FieldType::Float;
     img.channels = img.is_float ? 4 : 1;
     img.texels.assign(n * img.channels, 0);
-    const float one = 1.0f;
-    uint32_t oneBits;
-    std::memcpy(&oneBits, &one, 4);
+    const uint32_t oneBits = std::bit_cast<uint32_t>(1.0f);
     for (size_t i = 0; i < n; ++i) {
       const uint32_t* rec = r.records.data() + i * words;
       if (!img.is_float) {

@@ -1,7 +1,7 @@
 // The model's path with nothing to decide: Embree's own closest hit (no
 // any-hit, intersection programs, culls or special triangles), for one trace
 // or for a block of launch rays whose programs are counts only.
-#include <cstring>
+#include <bit>
 
 #include "model/traversal.h"
 #include "results/record_layout.h"
@@ -56,9 +56,7 @@ bool sameTraceParameters(const Ray& a, const Ray& b) {
 
 // A float that is neither infinite nor NaN (exponent bits not all ones).
 inline bool finiteBits(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, 4);
-  return (u & 0x7F800000u) != 0x7F800000u;
+  return (std::bit_cast<uint32_t>(f) & 0x7F800000u) != 0x7F800000u;
 }
 
 }  // namespace
@@ -113,16 +111,7 @@ void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
     uint32_t* rec = records_ ? records_ + static_cast<size_t>(i) * words : nullptr;
     if (rec) rec[runsRaygen] += 1;
     // embreeRay + validRay + embreeClosestHit, for the launch ray itself.
-    RTCRayHit rh;
-    rh.ray.org_x = ray.origin[0]; rh.ray.org_y = ray.origin[1]; rh.ray.org_z = ray.origin[2];
-    rh.ray.dir_x = ray.direction[0]; rh.ray.dir_y = ray.direction[1]; rh.ray.dir_z = ray.direction[2];
-    rh.ray.time = 0;
-    rh.ray.mask = (ray.cull_mask & 0xFF) | ((flags & kRaySkipTriangles) ? 0u : kMaskTriangles) |
-                  ((flags & kRaySkipAabbs) ? 0u : kMaskAabbs);
-    rh.ray.id = 0;
-    rh.ray.flags = 0;
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    RTCRayHit rh = embreeRay(ray, flags);
     const bool valid = finiteBits(ray.origin[0]) & finiteBits(ray.origin[1]) & finiteBits(ray.origin[2]) &
                        finiteBits(ray.direction[0]) & finiteBits(ray.direction[1]) &
                        finiteBits(ray.direction[2]) & (ray.tmin >= 0.0f) & (ray.tmin <= ray.tmax) &

@@ -1,17 +1,14 @@
 #include "model/model_shading.h"
 
+#include <bit>
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 namespace rayspec {
 namespace {
 
 float recordFloat(const std::vector<uint32_t>& r, uint32_t i) {
-  const uint32_t w = i < r.size() ? r[i] : 0u;
-  float f;
-  std::memcpy(&f, &w, 4);
-  return f;
+  return std::bit_cast<float>(i < r.size() ? r[i] : 0u);
 }
 float dot3(const F3& a, const F3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 F3 sub3(const F3& a, const F3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }

@@ -89,7 +89,23 @@ void setHit(HitView& hv, float t, uint32_t kind, float b1, float b2);
 HitView viewOf(const ModelScene& s, const Case& c, const TraceRay& ray, uint32_t instance, uint32_t geometry,
                uint32_t primitive, bool objectRay = true);
 
-RTCRayHit embreeRay(const TraceRay& r, uint32_t flags);
+// An Embree ray for a launch ray (Ray) or a traced one (TraceRay): inline, the
+// fast path builds one per launch ray.
+template <typename AnyRay>
+inline RTCRayHit embreeRay(const AnyRay& r, uint32_t flags) {
+  RTCRayHit rh;
+  rh.ray.org_x = r.origin[0]; rh.ray.org_y = r.origin[1]; rh.ray.org_z = r.origin[2];
+  rh.ray.dir_x = r.direction[0]; rh.ray.dir_y = r.direction[1]; rh.ray.dir_z = r.direction[2];
+  rh.ray.time = 0;
+  rh.ray.mask = (r.cull_mask & 0xFF) | ((flags & kRaySkipTriangles) ? 0u : kMaskTriangles) |
+                ((flags & kRaySkipAabbs) ? 0u : kMaskAabbs);
+  rh.ray.id = 0;
+  rh.ray.flags = 0;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  return rh;
+}
+
 // A ray Embree can trace. The rest (non-finite origin or direction, NaN or
 // negative tmin, tmax below tmin or NaN: R-UB, any result is allowed) is
 // never handed to Embree, whose debug checks would abort, and misses.

@@ -1,8 +1,8 @@
 #include "results/image_files.h"
 
+#include <bit>
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 
 #include "results/results_io.h"
@@ -45,9 +45,7 @@ std::string writeDiffImage(const Image& a, const Image& b, const std::string& di
       const uint32_t wa = a.texels[p * a.channels + c], wb = b.texels[p * a.channels + c];
       if (wa == wb) continue;
       if (a.is_float) {
-        float fa, fb;
-        std::memcpy(&fa, &wa, 4);
-        std::memcpy(&fb, &wb, 4);
+        const float fa = std::bit_cast<float>(wa), fb = std::bit_cast<float>(wb);
         diff = std::max(diff, std::fabs(static_cast<double>(fa) - fb));
       } else {
         diff = 1.0;

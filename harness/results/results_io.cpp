@@ -1,7 +1,7 @@
 #include "results/results_io.h"
 
+#include <bit>
 #include <algorithm>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -41,9 +41,7 @@ std::string fieldText(const RecordField& f, const uint32_t* rec) {
     if (i) s << ' ';
     const uint32_t w = rec[f.offset + i];
     if (f.type == FieldType::Float) {
-      float v;
-      std::memcpy(&v, &w, 4);
-      s << v;
+      s << std::bit_cast<float>(w);
     } else {
       s << w;
     }
@@ -215,7 +213,7 @@ std::vector<uint8_t> previewPixels(const Image& im) {
     if (im.is_float) {
       for (uint32_t c = 0; c < 4; ++c) {
         float v = 0.0f;
-        if (c < im.channels) std::memcpy(&v, &im.texels[i * im.channels + c], 4);
+        if (c < im.channels) v = std::bit_cast<float>(im.texels[i * im.channels + c]);
         if (c == 3 && im.channels < 4) v = 1.0f;
         v = v != v ? 0.0f : std::min(std::max(v, 0.0f), 1.0f);
         p[c] = static_cast<uint8_t>(v * 255.0f + 0.5f);
