@@ -56,20 +56,4 @@ const RuleFaults* findRuleFaults(const std::string& rule) {
   return nullptr;
 }
 
-const std::vector<KnownHollowClaim>& knownHollowClaims() {
-  const std::string all_ties =
-      "every ray is a t-tie (any of the fifteen hits is legal), so no per-ray value of the hit is compared";
-  static const std::vector<KnownHollowClaim> claims = {
-      {"precision/aabb-tie", "R-ORDER-UNSPEC", all_ties},
-      {"precision/aabb-tie", "R-ISECT-REPORT", all_ties},
-  };
-  return claims;
-}
-
-const KnownHollowClaim* findKnownHollowClaim(const std::string& case_name, const std::string& rule) {
-  for (const KnownHollowClaim& k : knownHollowClaims())
-    if (k.case_name == case_name && k.rule == rule) return &k;
-  return nullptr;
-}
-
 }  // namespace rayspec

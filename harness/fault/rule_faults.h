@@ -29,15 +29,6 @@ struct RuleFaults {
 const std::vector<RuleFaults>& ruleFaults();
 const RuleFaults* findRuleFaults(const std::string& rule);
 
-// Claims the proof finds hollow in case files that other work owns, with
-// why; the test reports them as known, and fails once one is proven (the
-// entry is then stale), like a baseline of known failures.
-struct KnownHollowClaim {
-  std::string case_name, rule, why;
-};
-const std::vector<KnownHollowClaim>& knownHollowClaims();
-const KnownHollowClaim* findKnownHollowClaim(const std::string& case_name, const std::string& rule);
-
 struct FaultOutcome {
   std::string fault;
   bool legal = false;    // a legal variation, not a break
