@@ -18,21 +18,14 @@
 #include "plan/plan.h"
 #include "results/record_layout.h"
 
+#include "model_support.h"
+
 namespace rayspec {
 namespace {
 
-Case parse(const std::string& yaml) {
-  ParseResult p = parseCaseText(yaml, "m.yaml", "metamorphic/m");
-  std::string errors;
-  for (const CaseError& e : p.errors) errors += e.format() + "\n";
-  EXPECT_TRUE(p.value.has_value()) << errors;
-  return p.value ? *p.value : Case{};
-}
+Case parse(const std::string& yaml) { return model_test::parseInline(yaml, "metamorphic/m"); }
 
-Results model(const Case& c) {
-  const Plan plan = derivePlan(c);
-  return runOnModel(c, plan, ModelOptions{ModelTier::Exact, 2});
-}
+Results model(const Case& c) { return model_test::runTier(c, ModelTier::Exact); }
 
 // A 4x4 grid of cells (32 triangles) in two instances side by side and a
 // third under the right one, two boxes; an any-hit that ignores odd

@@ -47,17 +47,10 @@ outputs:
 Case stacked(const std::string& anyHit) {
   std::string text = kStacked;
   text.replace(text.find("ANY_HIT"), 7, anyHit);
-  ParseResult p = parseCaseText(text, "order.yaml", "anyhit/order");
-  std::string errors;
-  for (const CaseError& e : p.errors) errors += e.format() + "\n";
-  EXPECT_TRUE(p.value.has_value()) << errors;
-  return p.value ? *p.value : Case{};
+  return parseInline(text, "anyhit/order");
 }
 
-Results runExact(const Case& c) {
-  const Plan plan = derivePlan(c);
-  return runOnModel(c, plan, ModelOptions{ModelTier::Exact, 1});
-}
+Results runExact(const Case& c) { return runTier(c, ModelTier::Exact, 1); }
 
 using Key = std::array<uint32_t, 3>;
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "case/case.h"
+#include "case/parse_case.h"
 #include "model/model_backend.h"
 #include "plan/plan.h"
 #include "program/ops.h"
@@ -20,6 +21,21 @@
 namespace rayspec::model_test {
 
 // ---- building cases -------------------------------------------------------
+
+// A case from YAML text; a parse error fails the test (and gives an empty case).
+inline Case parseInline(const std::string& yaml, const std::string& name = "model/inline") {
+  ParseResult p = parseCaseText(yaml, name + ".yaml", name);
+  std::string errors;
+  for (const CaseError& e : p.errors) errors += e.format() + "\n";
+  EXPECT_TRUE(p.value.has_value()) << errors;
+  return p.value ? *p.value : Case{};
+}
+
+// The model's results for a case in one tier.
+inline Results runTier(const Case& c, ModelTier tier, unsigned threads = 2) {
+  const Plan plan = derivePlan(c);
+  return runOnModel(c, plan, ModelOptions{tier, threads});
+}
 
 inline Expr lit(uint32_t v) { Expr e; e.kind = Expr::Kind::Literal; e.type = ValueType::Uint; e.literal = {double(v)}; return e; }
 inline Expr litf(double v) { Expr e; e.kind = Expr::Kind::Literal; e.type = ValueType::Float; e.literal = {v}; return e; }

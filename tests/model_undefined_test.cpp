@@ -18,18 +18,6 @@ namespace {
 
 using namespace model_test;
 
-Case parseInline(const std::string& yaml) {
-  ParseResult p = parseCaseText(yaml, "ub.yaml", "robustness/ub");
-  std::string errors;
-  for (const CaseError& e : p.errors) errors += e.format() + "\n";
-  EXPECT_TRUE(p.value.has_value()) << errors;
-  return p.value ? *p.value : Case{};
-}
-
-Results runInline(const Case& c, ModelTier tier, unsigned threads = 2) {
-  const Plan plan = derivePlan(c);
-  return runOnModel(c, plan, ModelOptions{tier, threads});
-}
 
 std::map<uint32_t, const UndefinedRay*> undefinedByRay(const Results& r) {
   std::map<uint32_t, const UndefinedRay*> m;
@@ -105,13 +93,13 @@ TEST(ModelUndefined, RecursionTooDeepIsDiagnosedNotACrash) {
   EXPECT_EXIT(
       {
         const Case c = parseInline(kRecursion);
-        const Results r = runInline(c, ModelTier::Exact, 1);
+        const Results r = runTier(c, ModelTier::Exact, 1);
         std::exit(r.ok() && r.undefined.size() == 2 ? 0 : 1);
       },
       ::testing::ExitedWithCode(0), "");
   const Case c = parseInline(kRecursion);
   for (ModelTier tier : kTiers) {
-    const Results r = runInline(c, tier);
+    const Results r = runTier(c, tier);
     expectUndefined(r,
                     {{0, {UndefinedReason::RecursionTooDeep, "pipeline.callables[0][1].call: callables nested 3 deep"}},
                      {1, {UndefinedReason::RecursionTooDeep,
@@ -184,7 +172,7 @@ outputs:
 TEST(ModelUndefined, ShaderBindingTableIndicesBeyondTheirRegion) {
   const Case c = parseInline(kSbt);
   for (ModelTier tier : kTiers) {
-    const Results r = runInline(c, tier);
+    const Results r = runTier(c, tier);
     expectUndefined(
         r,
         {{1, {UndefinedReason::HitRecordOutOfRange,
@@ -223,7 +211,7 @@ TEST(ModelUndefined, ShaderBindingTableRangesOnTheDirectPath) {
   text.replace(text.find(", flags: [force_no_opaque]"), std::string(", flags: [force_no_opaque]").size(), "");
   const Case c = parseInline(text);
   for (ModelTier tier : kTiers) {
-    const Results r = runInline(c, tier);
+    const Results r = runTier(c, tier);
     expectUndefined(r,
                     {{1, {UndefinedReason::HitRecordOutOfRange, "(instance 1 sbt_offset 1"}},
                      {5, {UndefinedReason::MissRecordOutOfRange, "miss index 2"}}},
@@ -263,7 +251,7 @@ outputs:
 TEST(ModelUndefined, UintDivisionAndModuloByZero) {
   const Case c = parseInline(kDivision);
   for (ModelTier tier : kTiers) {
-    const Results r = runInline(c, tier);
+    const Results r = runTier(c, tier);
     // Ray 1's modulo runs in closest-hit, before raygen's division by 1.
     expectUndefined(r,
                     {{0, {UndefinedReason::DivisionByZero, "pipeline.raygen[1].record.value: uint division by zero"}},
@@ -322,7 +310,7 @@ outputs:
 TEST(ModelUndefined, RayParameters) {
   const Case c = parseInline(kRays);
   for (ModelTier tier : kTiers) {
-    const Results r = runInline(c, tier);
+    const Results r = runTier(c, tier);
     expectUndefined(
         r,
         {{0, {UndefinedReason::RayParameters, "pipeline.hit_groups[0].closest_hit[2].then[0].trace.tmin: -1 < 0"}},
@@ -394,7 +382,7 @@ outputs:
 TEST(ModelUndefined, TrianglesWithNanInYOrZ) {
   const Case c = parseInline(kNanTriangles);
   for (ModelTier tier : kTiers) {
-    const Results r = runInline(c, tier);
+    const Results r = runTier(c, tier);
     expectUndefined(r,
                     {{0, {UndefinedReason::NanTriangle, "scene.blas.tris[0]: triangle 0 has NaN in Y or Z (instance 0)"}},
                      {2, {UndefinedReason::NanTriangle, "triangle 1 has NaN in Y or Z (instance 0)"}},
