@@ -6,6 +6,7 @@
 #include <ctime>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "fault/planted_fault.h"
 #include "metamorphic/permute_case.h"
@@ -145,7 +146,9 @@ int runCases(const RunOptions& opt) {
     if (std::optional<CaseOutcome> error = caseFileError(f, parsed)) {
       outcome = *error;
     } else {
-      const Case& c = opt.permute ? permuteCase(*parsed.value, *opt.permute).permuted : *parsed.value;
+      std::optional<Case> permuted;  // --permute: the case with its primitives and instances permuted
+      if (opt.permute) permuted = permuteCase(*parsed.value, *opt.permute).permuted;
+      const Case& c = permuted ? *permuted : *parsed.value;
       outcome = guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted); });
       if (interrupted) break;
       case_rules.push_back({c.name, c.rules});
