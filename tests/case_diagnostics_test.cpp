@@ -10,6 +10,7 @@
 #include <functional>
 #include <sstream>
 
+#include "suite_cases.h"
 #include "case/parse_case.h"
 
 namespace rayspec {
@@ -208,12 +209,10 @@ TEST(CaseStaticUndefined, ARobustnessProbeKeepsItsUndefinedBehaviour) {
 // values are constants (an R-UB probe neither: it would say so in its rules).
 TEST(Suite, NoCaseReadsOutsideItsSbt) {
   namespace fs = std::filesystem;
-  const fs::path root = fs::path(RAYSPEC_SOURCE_DIR) / "cases";
   int count = 0;
-  for (const auto& entry : fs::recursive_directory_iterator(root)) {
-    if (entry.path().extension() != ".yaml") continue;
+  for (const CaseFile& f : suiteCases()) {
     ++count;
-    const ParseResult r = parseCaseFile(entry.path().string(), root.string());
+    const ParseResult r = loadSuiteCase(f);
     for (const StaticUndefined& u : r.undefined)
       EXPECT_TRUE(u.reason != UndefinedReason::HitRecordOutOfRange &&
                   u.reason != UndefinedReason::MissRecordOutOfRange &&

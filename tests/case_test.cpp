@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "suite_cases.h"
 #include "case/camera_rays.h"
 #include "case/parse_case.h"
 #include "case/transform.h"
@@ -625,17 +626,14 @@ rays:
 // Every case of the suite parses without errors.
 TEST(Suite, AllCasesParse) {
   namespace fs = std::filesystem;
-  const fs::path root = fs::path(RAYSPEC_SOURCE_DIR) / "cases";
   int count = 0;
-  if (fs::exists(root))
-    for (const auto& entry : fs::recursive_directory_iterator(root)) {
-      if (entry.path().extension() != ".yaml") continue;
-      ++count;
-      ParseResult r = parseCaseFile(entry.path().string(), root.string());
-      EXPECT_TRUE(r.value.has_value()) << allErrors(r);
-      EXPECT_TRUE(r.errors.empty()) << entry.path();
-    }
-  if (count == 0) GTEST_SKIP() << "no cases in " << root;
+  for (const CaseFile& f : suiteCases()) {
+    ++count;
+    ParseResult r = loadSuiteCase(f);
+    EXPECT_TRUE(r.value.has_value()) << allErrors(r);
+    EXPECT_TRUE(r.errors.empty()) << f.name;
+  }
+  EXPECT_GT(count, 0) << "no cases in " << kSuiteCases;
 }
 
 }  // namespace

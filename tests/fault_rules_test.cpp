@@ -12,6 +12,7 @@
 #include <iostream>
 #include <set>
 
+#include "suite_cases.h"
 #include "case/parse_case.h"
 #include "compare/compare_results.h"
 #include "fault/planted_fault.h"
@@ -22,15 +23,18 @@
 namespace rayspec {
 namespace {
 
-const std::string kCases = RAYSPEC_SOURCE_DIR "/cases";
+const std::string kCases = kSuiteCases;
 
 std::vector<std::string> caseNames() {
   std::vector<std::string> names;
-  for (const auto& e : std::filesystem::recursive_directory_iterator(kCases))
-    if (e.path().extension() == ".yaml")
-      names.push_back(std::filesystem::relative(e.path(), kCases).replace_extension().generic_string());
-  std::sort(names.begin(), names.end());
+  for (const CaseFile& f : suiteCases()) names.push_back(f.name);
   return names;
+}
+
+ParseResult parseNamed(const std::string& name) {
+  const std::optional<CaseFile> f = findCase(name, "", kCases);
+  if (!f) return ParseResult{};
+  return loadSuiteCase(*f);
 }
 
 struct Judged {
@@ -40,7 +44,7 @@ struct Judged {
 };
 
 Judged judge(const std::string& name) {
-  ParseResult parsed = parseCaseFile(kCases + "/" + name + ".yaml", kCases);
+  ParseResult parsed = parseNamed(name);
   Judged j;
   if (!parsed.value) {
     ADD_FAILURE() << name << ": " << (parsed.errors.empty() ? "" : parsed.errors[0].format());
@@ -109,7 +113,7 @@ TEST(RuleFaultTable, OneEntryPerRuleOfTheCatalogAndEveryFaultUsed) {
 TEST(RuleFaultTable, EveryRuleIsClaimedByACase) {
   std::set<std::string> claimed;
   for (const std::string& name : caseNames()) {
-    ParseResult parsed = parseCaseFile(kCases + "/" + name + ".yaml", kCases);
+    ParseResult parsed = parseNamed(name);
     ASSERT_TRUE(parsed.value) << name;
     claimed.insert(parsed.value->rules.begin(), parsed.value->rules.end());
   }

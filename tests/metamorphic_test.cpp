@@ -10,6 +10,7 @@
 #include <set>
 #include <string>
 
+#include "suite_cases.h"
 #include "case/parse_case.h"
 #include "metamorphic/compare_permuted.h"
 #include "metamorphic/id_observations.h"
@@ -183,11 +184,9 @@ TEST(ComparePermuted, NoticesAMovedAnswer) {
 // answer moves.
 TEST(ComparePermuted, EveryCaseFileKeepsItsAnswers) {
   namespace fs = std::filesystem;
-  const fs::path root = fs::path(RAYSPEC_SOURCE_DIR) / "cases";
   int cases = 0, moved = 0;
-  for (const auto& entry : fs::recursive_directory_iterator(root)) {
-    if (entry.path().extension() != ".yaml") continue;
-    ParseResult parsed = parseCaseFile(entry.path().string(), root.string());
+  for (const CaseFile& f : suiteCases()) {
+    ParseResult parsed = loadSuiteCase(f);
     if (!parsed.value) continue;
     const Case& c = *parsed.value;
     const Results original = model(c);

@@ -12,6 +12,7 @@
 #include <set>
 #include <array>
 
+#include "suite_cases.h"
 #include "case/parse_case.h"
 #include "model/model_scene.h"
 #include "model/sphere_error.h"
@@ -568,13 +569,11 @@ TEST(Model, ImagesFollowTheRecord) {
 
 TEST(Model, EveryCaseFileRunsInEveryTier) {
   namespace fs = std::filesystem;
-  const fs::path root = fs::path(RAYSPEC_SOURCE_DIR) / "cases";
   int ran = 0;
-  for (const auto& entry : fs::recursive_directory_iterator(root)) {
-    if (entry.path().extension() != ".yaml") continue;
-    ParseResult p = parseCaseFile(entry.path().string(), root.string());
+  for (const CaseFile& f : suiteCases()) {
+    ParseResult p = loadSuiteCase(f);
     if (!p.value) {
-      std::cerr << "skipping " << entry.path() << ": " << (p.errors.empty() ? "" : p.errors[0].format()) << "\n";
+      std::cerr << "skipping " << f.name << ": " << (p.errors.empty() ? "" : p.errors[0].format()) << "\n";
       continue;
     }
     const Case& c = *p.value;

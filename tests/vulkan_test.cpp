@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <map>
 
+#include "suite_cases.h"
 #include "case/parse_case.h"
 #include "plan/plan.h"
 #include "results/record_layout.h"
@@ -527,18 +528,15 @@ TEST(VulkanDevice, RayListBeyondMaxImageDimension2D) {
 TEST(VulkanDevice, EveryCaseFileRunsCleanly) {
   SKIP_WITHOUT_RT_DEVICE();
   namespace fs = std::filesystem;
-  const fs::path root = fs::path(RAYSPEC_SOURCE_DIR) / "cases";
-  std::vector<fs::path> files;
-  for (const auto& e : fs::recursive_directory_iterator(root))
-    if (e.path().extension() == ".yaml") files.push_back(e.path());
-  std::sort(files.begin(), files.end());
-  if (files.empty()) GTEST_SKIP() << "no case files in " << root;
+  // One case per file (a sweep's first variant): the sweeps' ctest runs run them all.
+  const std::vector<CaseFile> files = suiteCases(true);
+  ASSERT_FALSE(files.empty()) << "no case files in " << kSuiteCases;
   auto backend = makeBackend();
   ASSERT_TRUE(backend);
-  for (const fs::path& f : files) {
-    ParseResult parsed = parseCaseFile(f.string(), root.string());
+  for (const CaseFile& f : files) {
+    ParseResult parsed = loadSuiteCase(f);
     if (!parsed.value) {
-      ADD_FAILURE() << f << ": " << (parsed.errors.empty() ? "?" : parsed.errors[0].format());
+      ADD_FAILURE() << f.name << ": " << (parsed.errors.empty() ? "?" : parsed.errors[0].format());
       continue;
     }
     const Case& c = *parsed.value;

@@ -68,11 +68,12 @@ CaseOutcome compareOne(const Pair& p, const CompareOptions& opt, std::vector<std
     const Results m = readResults(p.ambiguity.string(), &error);
     if (error.empty()) b.ambiguous = m.ambiguous;
   }
-  std::string file = a.case_file.empty() ? b.case_file : a.case_file;
-  if (file.empty() || !fs::exists(file)) file = opt.cases_dir + "/" + a.case_name + ".yaml";
-  ParseResult parsed = parseCaseFile(file, opt.cases_dir);
+  const std::string file = a.case_file.empty() ? b.case_file : a.case_file;
+  const std::optional<CaseFile> found = findCase(a.case_name, file, opt.cases_dir);
+  ParseResult parsed;
+  if (found) parsed = loadCase(*found, opt.cases_dir);
   if (!parsed.value) {
-    std::string message = "cannot re-read the case file " + file;
+    std::string message = "cannot re-read the case file of " + a.case_name + " (" + file + ")";
     for (const CaseError& e : parsed.errors) message += "; " + e.format();
     return caseErrorOutcome(name, {}, "case-file", message);
   }

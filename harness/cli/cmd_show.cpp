@@ -2,7 +2,7 @@
 #include <filesystem>
 
 #include "case/parse_case.h"
-#include "run/case_discovery.h"
+#include "library/case_discovery.h"
 #include "cli/commands.h"
 #include "cli/describe_case.h"
 #include "glsl/generate_glsl.h"
@@ -25,14 +25,20 @@ void printVocabulary() {
 
 const char* const kRulesFile = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
 
-// The case file a `show` argument names: a path to a file, or a case name
-// under cases_dir (anyhit/ignore-odd-primitives); empty when neither exists.
-std::string caseFilePath(const std::string& given, const std::string& cases_dir) {
+// The case a `show` argument names: a case file (a sweep file: its first
+// variant, the others listed), or a case name under cases_dir.
+std::optional<CaseFile> caseToShow(const std::string& given, const std::string& cases_dir) {
   std::error_code ec;
-  if (std::filesystem::is_regular_file(given, ec)) return given;
-  const std::string named = cases_dir + "/" + given + ".yaml";
-  if (std::filesystem::is_regular_file(named, ec)) return named;
-  return {};
+  if (std::filesystem::is_regular_file(given, ec)) {
+    std::vector<CaseFile> files = caseFilesFor(given, cases_dir);
+    if (files.size() > 1) {
+      std::printf("%s is a sweep of %zu cases; showing the first (name one to see it):\n", given.c_str(), files.size());
+      for (const CaseFile& f : files) std::printf("  %s\n", f.name.c_str());
+      std::printf("\n");
+    }
+    return files.front();
+  }
+  return findCase(given, "", cases_dir);
 }
 
 void printShader(const GeneratedShader& s) {
@@ -50,18 +56,17 @@ int runShow(const ShowOptions& opt) {
     std::fprintf(stderr, "rayspec show: give a case file or name\n");
     return 2;
   }
-  const std::string path = caseFilePath(opt.case_file, opt.cases_dir);
-  if (path.empty()) {
+  const std::optional<CaseFile> file = caseToShow(opt.case_file, opt.cases_dir);
+  if (!file) {
     std::fprintf(stderr, "rayspec show: no such case file: '%s' (neither a file nor a case name under %s)\n",
                  opt.case_file.c_str(), opt.cases_dir.c_str());
     return 2;
   }
-  const CaseFile file = caseFileFor(path, opt.cases_dir);
   // Rule labels outside the catalog are errors, as in `rayspec run`.
   std::string catalog_error;
   const std::vector<std::string> catalog = ruleLabels(loadRuleCatalog(kRulesFile, &catalog_error));
   if (!catalog_error.empty()) std::fprintf(stderr, "rayspec show: %s (rule labels not checked)\n", catalog_error.c_str());
-  ParseResult parsed = parseCaseFile(file.path, opt.cases_dir, catalog_error.empty() ? &catalog : nullptr);
+  ParseResult parsed = loadCase(*file, opt.cases_dir, catalog_error.empty() ? &catalog : nullptr);
   for (const CaseError& e : parsed.errors) std::fprintf(stderr, "%s\n", e.format().c_str());
   if (!parsed.value) return 1;
   const Case& c = *parsed.value;

@@ -21,7 +21,7 @@
 #include "report/run_summary.h"
 #include "report/write_reports.h"
 #include "run/backend.h"
-#include "run/case_discovery.h"
+#include "library/case_discovery.h"
 #include "run/isolation.h"
 #include "run/run_options.h"
 

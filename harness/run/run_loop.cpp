@@ -39,7 +39,8 @@ std::string now() {
 std::vector<CaseFile> caseFiles(const RunOptions& opt) {
   if (opt.case_files.empty()) return findCases(opt.cases_dir, opt.filter);
   std::vector<CaseFile> files;
-  for (const std::string& f : opt.case_files) files.push_back(caseFileFor(f, opt.cases_dir));
+  for (const std::string& f : opt.case_files)
+    for (CaseFile& c : caseFilesFor(f, opt.cases_dir)) files.push_back(std::move(c));
   return files;
 }
 
@@ -140,7 +141,7 @@ int runCases(const RunOptions& opt) {
     if (interruptSignal()) break;
     summary.starting(f.name);
     const auto start = std::chrono::steady_clock::now();
-    const ParseResult parsed = parseCaseFile(f.path, opt.cases_dir, labels.empty() ? nullptr : &labels);
+    const ParseResult parsed = loadCase(f, opt.cases_dir, labels.empty() ? nullptr : &labels);
     bool interrupted = false;
     CaseOutcome outcome;
     if (std::optional<CaseOutcome> error = caseFileError(f, parsed)) {

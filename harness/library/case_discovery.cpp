@@ -1,0 +1,92 @@
+#include "library/case_discovery.h"
+
+#include <fnmatch.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "library/expand_sweep.h"
+
+namespace rayspec {
+namespace fs = std::filesystem;
+namespace {
+
+// The name of a file under cases_dir: its relative path without .yaml (and
+// without .sweep for a sweep file), else its stem.
+std::string nameOf(const std::string& path, const std::string& cases_dir) {
+  std::error_code ec;
+  const fs::path abs = fs::weakly_canonical(path, ec);
+  const fs::path root = fs::weakly_canonical(cases_dir, ec);
+  fs::path rel = abs.lexically_relative(root);
+  if (rel.empty() || *rel.begin() == "..") rel = fs::path(path).filename();
+  std::string name = rel.generic_string();
+  for (const std::string suffix : {".sweep.yaml", ".yaml"})
+    if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
+      return name.substr(0, name.size() - suffix.size());
+  return name;
+}
+
+std::vector<CaseFile> expand(const std::string& path, const std::string& name) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return {CaseFile{path, name, false, {}, {CaseError{SourceLoc{path, 0, 0, ""}, "cannot open the case file"}}}};
+  std::stringstream text;
+  text << in.rdbuf();
+  SweepExpansion ex = expandSweep(text.str(), path, name);
+  if (!ex.errors.empty()) return {CaseFile{path, name, false, {}, std::move(ex.errors)}};
+  std::vector<CaseFile> out;
+  for (SweepVariant& v : ex.variants) out.push_back(CaseFile{path, v.name, true, std::move(v.text), {}});
+  return out;
+}
+
+}  // namespace
+
+std::vector<CaseFile> caseFilesFor(const std::string& path, const std::string& cases_dir) {
+  const std::string name = nameOf(path, cases_dir);
+  if (!isSweepFile(path)) return {CaseFile{path, name, false, {}, {}}};
+  return expand(path, name);
+}
+
+std::vector<CaseFile> findCases(const std::string& dir, const std::string& glob) {
+  std::vector<CaseFile> out;
+  std::error_code ec;
+  std::vector<fs::path> paths;
+  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_regular_file() && it->path().extension() == ".yaml") paths.push_back(it->path());
+  for (const fs::path& p : paths) {
+    const std::string name = nameOf(p.string(), dir);
+    const bool sweep = isSweepFile(p.string());
+    const bool whole = fnmatch(glob.c_str(), name.c_str(), 0) == 0;
+    if (!sweep) {
+      if (whole) out.push_back(CaseFile{p.string(), name, false, {}, {}});
+      continue;
+    }
+    for (CaseFile& f : expand(p.string(), name))
+      if (whole || fnmatch(glob.c_str(), f.name.c_str(), 0) == 0) out.push_back(std::move(f));
+  }
+  std::sort(out.begin(), out.end(), [](const CaseFile& a, const CaseFile& b) { return a.name < b.name; });
+  return out;
+}
+
+std::optional<CaseFile> findCase(const std::string& name, const std::string& file, const std::string& cases_dir) {
+  std::error_code ec;
+  std::vector<CaseFile> files;
+  if (!file.empty() && fs::is_regular_file(file, ec)) files = caseFilesFor(file, cases_dir);
+  else files = findCases(cases_dir, name);
+  for (CaseFile& f : files)
+    if (f.name == name || files.size() == 1) return std::move(f);
+  return std::nullopt;
+}
+
+ParseResult loadCase(const CaseFile& f, const std::string& cases_dir, const std::vector<std::string>* catalog) {
+  if (!f.errors.empty()) {
+    ParseResult r;
+    r.errors = f.errors;
+    return r;
+  }
+  if (f.generated) return parseCaseText(f.text, f.path, f.name, catalog);
+  return parseCaseFile(f.path, cases_dir, catalog);
+}
+
+}  // namespace rayspec

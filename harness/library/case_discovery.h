@@ -1,0 +1,38 @@
+// Finds the cases of a folder: each *.yaml file is one case, each
+// *.sweep.yaml file (library/expand_sweep.h) as many as it has variants.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "case/parse_case.h"
+
+namespace rayspec {
+
+struct CaseFile {
+  std::string path;  // file path
+  std::string name;  // path under the cases folder without .yaml (a sweep: plus /<variant>)
+  bool generated = false;          // a sweep's variant: `text` holds it
+  std::string text;                // a variant's substituted text
+  std::vector<CaseError> errors;   // a sweep file that does not expand (then it is one entry)
+};
+
+// Every case under dir (sorted by name) whose name matches glob. A sweep's
+// variant matches by its own name or by the sweep's (`sbt/indexing` runs all).
+std::vector<CaseFile> findCases(const std::string& dir, const std::string& glob);
+
+// A case file given on the command line, named relative to cases_dir when it
+// lies under it, else by its stem; a sweep file gives each of its variants.
+std::vector<CaseFile> caseFilesFor(const std::string& path, const std::string& cases_dir);
+
+// The case called `name`: from `file` when given (a case file or a sweep
+// file holding that variant), else looked up by name under cases_dir. Empty
+// when there is none.
+std::optional<CaseFile> findCase(const std::string& name, const std::string& file, const std::string& cases_dir);
+
+// The case of a CaseFile, parsed (and checked against the catalog when given).
+ParseResult loadCase(const CaseFile& f, const std::string& cases_dir,
+                     const std::vector<std::string>* catalog = nullptr);
+
+}  // namespace rayspec

@@ -1,0 +1,252 @@
+// Expands a sweep file into its variants (expand_sweep.h).
+#include "library/expand_sweep.h"
+
+#include <cctype>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <yaml-cpp/yaml.h>
+
+namespace rayspec {
+namespace {
+
+using Params = std::vector<std::pair<std::string, std::string>>;  // name -> YAML text, in order
+
+SourceLoc locOf(const std::string& file, const YAML::Mark& m, const std::string& field) {
+  return SourceLoc{file, m.line >= 0 ? m.line + 1 : 1, m.column >= 0 ? m.column + 1 : 1, field};
+}
+
+// A value's YAML text: a scalar as written, a list or map in flow style.
+std::string valueText(const YAML::Node& n) {
+  if (n.IsScalar()) return n.Scalar();
+  YAML::Emitter out;
+  out.SetSeqFormat(YAML::Flow);
+  out.SetMapFormat(YAML::Flow);
+  out << n;
+  return out.c_str();
+}
+
+bool isParameterName(const std::string& s) {
+  if (s.empty()) return false;
+  for (char c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return false;
+  return true;
+}
+
+class Expander {
+ public:
+  Expander(const std::string& file, std::vector<CaseError>& errors) : file_(file), errors_(errors) {}
+
+  void error(const YAML::Node& n, const std::string& field, const std::string& message) {
+    errors_.push_back({locOf(file_, n.Mark(), field), message});
+  }
+
+  // rows: each a list of (name, text); every row names the same parameters.
+  std::vector<Params> rows(const YAML::Node& n) {
+    std::vector<Params> out;
+    if (!n.IsDefined()) return {Params{}};
+    if (!n.IsSequence() || n.size() == 0) {
+      error(n, "sweep.rows", "expected a non-empty list of maps (parameter: value)");
+      return {};
+    }
+    std::vector<std::string> first_names;
+    for (size_t i = 0; i < n.size(); ++i) {
+      const std::string field = "sweep.rows[" + std::to_string(i) + "]";
+      if (!n[i].IsMap() || n[i].size() == 0) {
+        error(n[i], field, "expected a map of parameter: value");
+        return {};
+      }
+      Params row;
+      std::vector<std::string> names;
+      for (const auto& kv : n[i]) {
+        const std::string key = kv.first.Scalar();
+        if (!isParameterName(key)) {
+          error(kv.first, field, "'" + key + "' is not a parameter name (letters, digits, _)");
+          return {};
+        }
+        row.emplace_back(key, valueText(kv.second));
+        names.push_back(key);
+      }
+      if (i == 0) first_names = names;
+      else if (std::set<std::string>(names.begin(), names.end()) !=
+               std::set<std::string>(first_names.begin(), first_names.end())) {
+        error(n[i], field, "every row must name the same parameters as row 0");
+        return {};
+      }
+      out.push_back(std::move(row));
+    }
+    return out;
+  }
+
+  // product: parameter -> non-empty list of values.
+  std::vector<std::pair<std::string, std::vector<std::string>>> product(const YAML::Node& n) {
+    std::vector<std::pair<std::string, std::vector<std::string>>> out;
+    if (!n.IsDefined()) return out;
+    if (!n.IsMap() || n.size() == 0) {
+      error(n, "sweep.product", "expected a map of parameter: [values]");
+      return out;
+    }
+    for (const auto& kv : n) {
+      const std::string key = kv.first.Scalar();
+      const std::string field = "sweep.product." + key;
+      if (!isParameterName(key)) {
+        error(kv.first, "sweep.product", "'" + key + "' is not a parameter name (letters, digits, _)");
+        continue;
+      }
+      if (!kv.second.IsSequence() || kv.second.size() == 0) {
+        error(kv.second, field, "expected a non-empty list of values");
+        continue;
+      }
+      std::vector<std::string> values;
+      for (const YAML::Node& v : kv.second) values.push_back(valueText(v));
+      out.emplace_back(key, std::move(values));
+    }
+    return out;
+  }
+
+ private:
+  const std::string& file_;
+  std::vector<CaseError>& errors_;
+};
+
+// Replaces each ${name} in line; an unknown name is an error (once per place).
+std::string substitute(const std::string& line, const Params& params, const std::string& file, int line_no,
+                       const std::string& field, std::vector<CaseError>* errors) {
+  std::string out;
+  size_t pos = 0;
+  while (true) {
+    const size_t open = line.find("${", pos);
+    if (open == std::string::npos) break;
+    const size_t close = line.find('}', open);
+    if (close == std::string::npos) break;
+    out += line.substr(pos, open - pos);
+    const std::string name = line.substr(open + 2, close - open - 2);
+    const std::string* value = nullptr;
+    for (const auto& [k, v] : params)
+      if (k == name) value = &v;
+    if (value) {
+      out += *value;
+    } else {
+      if (errors) {
+        std::string known;
+        for (const auto& [k, v] : params) known += (known.empty() ? "" : ", ") + k;
+        errors->push_back({SourceLoc{file, line_no, static_cast<int>(open) + 1, field},
+                           "'${" + name + "}' names no parameter of the sweep (parameters: " + known + ")"});
+      }
+      out += line.substr(open, close + 1 - open);
+    }
+    pos = close + 1;
+  }
+  return out + line.substr(pos);
+}
+
+std::vector<std::string> splitLines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);) lines.push_back(l);
+  return lines;
+}
+
+}  // namespace
+
+bool isSweepFile(const std::string& path) {
+  const std::string suffix = ".sweep.yaml";
+  return path.size() > suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+SweepExpansion expandSweep(const std::string& text, const std::string& file, const std::string& name) {
+  SweepExpansion result;
+  Expander ex(file, result.errors);
+  // The block: from the line `sweep:` (at column 0) to the next line that
+  // starts another top-level key. Only it is YAML before substitution; the
+  // rest may hold ${...} anywhere, even where YAML would not allow it.
+  std::vector<std::string> lines = splitLines(text);
+  int block_begin = -1, block_end = static_cast<int>(lines.size());
+  for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
+    const std::string& l = lines[i];
+    const bool top_key = !l.empty() && l[0] != ' ' && l[0] != '#' && l[0] != '\t';
+    if (block_begin < 0 && l.rfind("sweep:", 0) == 0) block_begin = i;
+    else if (block_begin >= 0 && top_key) {
+      block_end = i;
+      break;
+    }
+  }
+  if (block_begin < 0) {
+    result.errors.push_back({SourceLoc{file, 1, 1, "sweep"},
+                             "a .sweep.yaml file needs a top-level `sweep:` block (cases/README.md, Sweeps)"});
+    return result;
+  }
+  std::string block(static_cast<size_t>(block_begin), '\n');  // keeps yaml-cpp's line numbers
+  for (int i = block_begin; i < block_end; ++i) block += lines[i] + "\n";
+  YAML::Node root;
+  try {
+    root = YAML::Load(block);
+  } catch (const YAML::Exception& e) {
+    result.errors.push_back({locOf(file, e.mark, "sweep"), "malformed YAML: " + e.msg});
+    return result;
+  }
+  const YAML::Node sweep = root["sweep"];
+  if (!sweep.IsMap()) {
+    ex.error(sweep, "sweep", "expected a map with name, and rows and/or product");
+    return result;
+  }
+  for (const auto& kv : sweep) {
+    const std::string key = kv.first.Scalar();
+    if (key != "name" && key != "rows" && key != "product")
+      ex.error(kv.first, "sweep", "unknown key '" + key + "' (expected one of: name, rows, product)");
+  }
+  const YAML::Node name_node = sweep["name"];
+  if (!name_node || !name_node.IsScalar() || name_node.Scalar().empty()) {
+    ex.error(name_node ? name_node : sweep, "sweep.name", "missing: each variant's name, e.g. \"offset-${offset}\"");
+    return result;
+  }
+  if (!sweep["rows"] && !sweep["product"]) {
+    ex.error(sweep, "sweep", "needs rows or product (or both): the parameters and their values");
+    return result;
+  }
+  const std::vector<Params> rows = ex.rows(sweep["rows"]);
+  const auto product = ex.product(sweep["product"]);
+  if (!result.errors.empty()) return result;
+  for (const auto& [key, values] : product)
+    for (const auto& [row_key, v] : rows.front())
+      if (row_key == key) {
+        ex.error(sweep["product"], "sweep.product." + key, "'" + key + "' is also a parameter of the rows");
+        return result;
+      }
+
+  for (int i = block_begin; i < block_end && i < static_cast<int>(lines.size()); ++i) lines[i].clear();
+
+  // Every combination: rows outermost, the product's last key fastest.
+  std::vector<size_t> index(product.size(), 0);
+  std::map<std::string, int> names_seen;
+  for (const Params& row : rows) {
+    while (true) {
+      Params params = row;
+      for (size_t k = 0; k < product.size(); ++k) params.emplace_back(product[k].first, product[k].second[index[k]]);
+      const bool first = result.variants.empty();
+      const YAML::Mark nm = name_node.Mark();
+      SweepVariant v;
+      v.name = name + "/" +
+               substitute(name_node.Scalar(), params, file, nm.line + 1, "sweep.name", first ? &result.errors : nullptr);
+      for (size_t i = 0; i < lines.size(); ++i)
+        v.text += substitute(lines[i], params, file, static_cast<int>(i) + 1, "", first ? &result.errors : nullptr) +
+                  "\n";
+      if (++names_seen[v.name] == 2)
+        ex.error(name_node, "sweep.name", "two variants are both named '" + v.name +
+                                              "': the name must use every parameter that varies");
+      result.variants.push_back(std::move(v));
+      size_t k = product.size();
+      while (k > 0) {
+        if (++index[k - 1] < product[k - 1].second.size()) break;
+        index[k - 1] = 0;
+        --k;
+      }
+      if (k == 0) break;
+    }
+  }
+  if (!result.errors.empty()) result.variants.clear();
+  return result;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,104 @@
+// Sweep files expand into their variants; case discovery finds them.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "library/case_discovery.h"
+#include "library/expand_sweep.h"
+
+namespace rayspec {
+namespace {
+
+const char* kSweep = R"(sweep:
+  name: "o${offset}-${kind}"
+  rows:
+    - {kind: tri, geometry: "{triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}}"}
+    - {kind: box, geometry: "{aabbs: [[0, 0, 0, 1, 1, 1]]}"}
+  product:
+    offset: [0, 0x11]
+rules: [R-SBT-HIT]
+scene:
+  blas:
+    b: [${geometry}]
+  instances: [{blas: b, sbt_offset: ${offset}}]
+)";
+
+TEST(ExpandSweep, RowsTimesProductWithValuesSubstituted) {
+  const SweepExpansion ex = expandSweep(kSweep, "s.sweep.yaml", "sbt/s");
+  ASSERT_TRUE(ex.errors.empty()) << ex.errors[0].format();
+  ASSERT_EQ(ex.variants.size(), 4u);
+  EXPECT_EQ(ex.variants[0].name, "sbt/s/o0-tri");
+  EXPECT_EQ(ex.variants[1].name, "sbt/s/o0x11-tri");
+  EXPECT_EQ(ex.variants[3].name, "sbt/s/o0x11-box");
+  const std::string& text = ex.variants[3].text;
+  EXPECT_NE(text.find("instances: [{blas: b, sbt_offset: 0x11}]"), std::string::npos) << text;
+  EXPECT_NE(text.find("b: [{aabbs: [[0, 0, 0, 1, 1, 1]]}]"), std::string::npos) << text;
+  // The sweep block is blanked, so the case keeps the file's line numbers.
+  EXPECT_EQ(text.find("sweep"), std::string::npos);
+  EXPECT_EQ(text.substr(0, 7), "\n\n\n\n\n\n\n");
+  EXPECT_EQ(text.find("rules:"), 7u);
+}
+
+TEST(ExpandSweep, AListValueIsWrittenInFlowStyle) {
+  const SweepExpansion ex = expandSweep("sweep:\n  name: v${i}\n  product:\n    d: [[0, 0, -1]]\n    i: [1]\n"
+                                        "rays: {direction: ${d}}\n",
+                                        "f.sweep.yaml", "x/f");
+  ASSERT_TRUE(ex.errors.empty()) << ex.errors[0].format();
+  EXPECT_NE(ex.variants[0].text.find("rays: {direction: [0, 0, -1]}"), std::string::npos) << ex.variants[0].text;
+}
+
+TEST(ExpandSweep, ErrorsNameTheFileLineAndField) {
+  auto first = [](const std::string& text) {
+    const SweepExpansion ex = expandSweep(text, "f.sweep.yaml", "x/f");
+    EXPECT_TRUE(ex.variants.empty());
+    return ex.errors.empty() ? std::string("no error") : ex.errors[0].format();
+  };
+  EXPECT_EQ(first("sweep:\n  name: a${b}\n  product: {b: [1]}\nrules: [${c}]\n"),
+            "f.sweep.yaml:4:9: '${c}' names no parameter of the sweep (parameters: b)");
+  EXPECT_EQ(first("sweep:\n  name: same\n  product: {b: [1, 2]}\nrules: [R-MASK]\n"),
+            "f.sweep.yaml:2:9: sweep.name: two variants are both named 'x/f/same': the name must use every "
+            "parameter that varies");
+  EXPECT_EQ(first("sweep:\n  name: a${b}\n  product: {b: []}\n"),
+            "f.sweep.yaml:3:16: sweep.product.b: expected a non-empty list of values");
+  EXPECT_EQ(first("sweep:\n  name: a${b}\n  rows: [{b: 1}, {c: 2}]\n"),
+            "f.sweep.yaml:3:18: sweep.rows[1]: every row must name the same parameters as row 0");
+  EXPECT_EQ(first("sweep:\n  name: a\n  prodcut: {b: [1]}\n"),
+            "f.sweep.yaml:3:3: sweep: unknown key 'prodcut' (expected one of: name, rows, product)");
+  EXPECT_EQ(first("rules: [R-MASK]\n"),
+            "f.sweep.yaml:1:1: sweep: a .sweep.yaml file needs a top-level `sweep:` block (cases/README.md, Sweeps)");
+  EXPECT_EQ(first("sweep:\n  name: [\n"), "f.sweep.yaml:3:1: sweep: malformed YAML: end of sequence flow not found");
+}
+
+TEST(CaseDiscovery, SweepVariantsAreCasesAndTheFilterMatchesEitherName) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "rayspec_library_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "sbt");
+  std::ofstream(dir / "sbt" / "s.sweep.yaml") << kSweep;
+  std::ofstream(dir / "sbt" / "plain.yaml") << "rules: [R-SBT-HIT]\n";
+  std::ofstream(dir / "sbt" / "bad.sweep.yaml") << "rules: [R-SBT-HIT]\n";
+  const std::vector<CaseFile> all = findCases(dir.string(), "*");
+  ASSERT_EQ(all.size(), 6u);
+  EXPECT_EQ(all[0].name, "sbt/bad");  // a sweep that does not expand is one case, with its errors
+  EXPECT_FALSE(all[0].errors.empty());
+  EXPECT_EQ(all[1].name, "sbt/plain");
+  EXPECT_EQ(all[2].name, "sbt/s/o0-box");
+  EXPECT_TRUE(all[2].generated);
+  EXPECT_EQ(findCases(dir.string(), "sbt/s").size(), 4u);
+  EXPECT_EQ(findCases(dir.string(), "*-tri").size(), 2u);
+  EXPECT_EQ(caseFilesFor((dir / "sbt" / "s.sweep.yaml").string(), dir.string()).size(), 4u);
+  const std::optional<CaseFile> one = findCase("sbt/s/o0x11-box", "", dir.string());
+  ASSERT_TRUE(one);
+  EXPECT_NE(one->text.find("sbt_offset: 0x11"), std::string::npos);
+  EXPECT_FALSE(findCase("sbt/s/o2-box", "", dir.string()));
+  // Parsing a variant reports at the sweep file's own lines.
+  const ParseResult parsed = loadCase(*one, dir.string());
+  ASSERT_FALSE(parsed.errors.empty());
+  EXPECT_EQ(parsed.errors[0].loc.file, (dir / "sbt" / "s.sweep.yaml").string());
+  EXPECT_GE(parsed.errors[0].loc.line, 8);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace rayspec

@@ -1,0 +1,28 @@
+// The cases of cases/ as the run finds them (sweeps expanded), for tests that
+// go over the whole suite.
+#pragma once
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include "library/case_discovery.h"
+
+namespace rayspec {
+
+inline const std::string kSuiteCases = RAYSPEC_SOURCE_DIR "/cases";
+
+// Every case; with one_per_file, a sweep gives only its first variant.
+inline std::vector<CaseFile> suiteCases(bool one_per_file = false) {
+  std::vector<CaseFile> all = findCases(kSuiteCases, "*");
+  if (!one_per_file) return all;
+  std::vector<CaseFile> out;
+  std::set<std::string> files;
+  for (CaseFile& f : all)
+    if (files.insert(f.path).second) out.push_back(std::move(f));
+  return out;
+}
+
+inline ParseResult loadSuiteCase(const CaseFile& f) { return loadCase(f, kSuiteCases); }
+
+}  // namespace rayspec
