@@ -2,6 +2,7 @@
 // go over the whole suite.
 #pragma once
 
+#include <cstdlib>
 #include <set>
 #include <string>
 #include <vector>
@@ -10,7 +11,9 @@
 
 namespace rayspec {
 
-inline const std::string kSuiteCases = RAYSPEC_SOURCE_DIR "/cases";
+// RAYSPEC_CASES_DIR overrides the folder (to check cases being written elsewhere).
+inline const std::string kSuiteCases =
+    std::getenv("RAYSPEC_CASES_DIR") ? std::getenv("RAYSPEC_CASES_DIR") : RAYSPEC_SOURCE_DIR "/cases";
 
 // Every case; with one_per_file, a sweep gives only its first variant.
 inline std::vector<CaseFile> suiteCases(bool one_per_file = false) {
