@@ -1,5 +1,6 @@
-// `rayspec show` run as a program: a missing case file, rule labels outside
-// the catalog, the undefined behaviour of a robustness probe.
+// `rayspec show` and `rayspec list` run as programs: a missing case file, rule
+// labels outside the catalog, the undefined behaviour of a robustness probe,
+// sweep variants, and the coverage of every rule by the suite's cases.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -17,13 +18,12 @@ struct ShowRun {
   std::string out, err;
 };
 
-// Runs `rayspec show ARGS` from the source folder; stdout and stderr apart.
-ShowRun show(const std::string& args) {
+// Runs `rayspec ARGS` from the source folder; stdout and stderr apart.
+ShowRun rayspec(const std::string& args) {
   const std::string dir = std::string(RAYSPEC_TEST_OUT) + "/show";
   fs::create_directories(dir);
   const std::string out = dir + "/stdout", err = dir + "/stderr";
-  const std::string command =
-      "cd " RAYSPEC_SOURCE_DIR " && " RAYSPEC_BIN " show " + args + " > " + out + " 2> " + err;
+  const std::string command = "cd " RAYSPEC_SOURCE_DIR " && " RAYSPEC_BIN " " + args + " > " + out + " 2> " + err;
   const int s = std::system(command.c_str());
   ShowRun r;
   r.status = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
@@ -35,6 +35,8 @@ ShowRun show(const std::string& args) {
   r.err = se.str();
   return r;
 }
+
+ShowRun show(const std::string& args) { return rayspec("show " + args); }
 
 TEST(Show, AMissingCaseFileIsAClearErrorAndANonZeroExit) {
   for (const std::string& arg : {std::string("cases/nope.yaml"), std::string("nope/x")}) {
@@ -66,6 +68,52 @@ TEST(Show, ARobustnessProbeListsItsUndefinedBehaviour) {
   const size_t at = r.out.find("Undefined behaviour (R-UB probe");
   ASSERT_NE(at, std::string::npos) << r.out;
   EXPECT_NE(r.out.find("rays.list[4].tmin: tmin is NaN", at), std::string::npos) << r.out;
+}
+
+// The coverage contract: every rule of the catalog but R-UB is claimed by a
+// case of the suite (sweep variants included).
+TEST(List, EveryRuleHasACase) {
+  const ShowRun r = rayspec("list --rules");
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_EQ(r.out.find("UNCOVERED"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("R-UB  "), std::string::npos);
+  EXPECT_NE(r.out.find("(probes: undefined behaviour is never judged"), std::string::npos);
+}
+
+// A folder whose cases leave rules unclaimed: exit 1, each uncovered rule named.
+TEST(List, ARuleWithoutACaseFailsTheListing) {
+  const fs::path dir = fs::path(RAYSPEC_TEST_OUT) / "list-cases";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "sbt");
+  fs::copy_file(fs::path(RAYSPEC_SOURCE_DIR) / "cases/sbt/hit-group-index.yaml", dir / "sbt/hit-group-index.yaml");
+  const ShowRun r = rayspec("list --rules --cases " + dir.string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.out.find("R-MASK  instance mask"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("UNCOVERED: no case claims this rule"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("2 of 39 rules have a case"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("Uncovered: R-CAND-TRI-OPEN"), std::string::npos) << r.out;
+  const ShowRun plain = rayspec("list --cases " + dir.string());
+  EXPECT_EQ(plain.status, 0) << plain.err;
+  EXPECT_NE(plain.out.find("sbt/hit-group-index"), std::string::npos);
+  EXPECT_NE(plain.out.find("R-SBT-HIT R-BUILTIN"), std::string::npos);
+}
+
+// A sweep's variants are listed and shown by name.
+TEST(List, SweepVariantsAreCasesOfTheirOwn) {
+  const fs::path dir = fs::path(RAYSPEC_TEST_OUT) / "list-sweep";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "sbt");
+  std::ifstream in(fs::path(RAYSPEC_SOURCE_DIR) / "cases/sbt/hit-group-index.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::ofstream(dir / "sbt/rows.sweep.yaml") << "sweep:\n  name: row-${r}\n  product: {r: [0, 1]}\n" << text.str();
+  const ShowRun r = rayspec("list --rules --cases " + dir.string());
+  EXPECT_NE(r.out.find("sbt/rows (sweep: 2 variants)"), std::string::npos) << r.out;
+  const ShowRun plain = rayspec("list --cases " + dir.string());
+  EXPECT_NE(plain.out.find("sbt/rows/row-1"), std::string::npos) << plain.out;
+  const ShowRun one = show("--no-glsl --cases " + dir.string() + " sbt/rows/row-1");
+  EXPECT_EQ(one.status, 0) << one.err;
+  EXPECT_NE(one.out.find("Case sbt/rows/row-1"), std::string::npos) << one.out;
 }
 
 }  // namespace

@@ -27,8 +27,16 @@ struct CompareOptions {
   std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
 };
 
+struct ListOptions {
+  bool rules = false;  // rule -> cases instead of case -> rules
+  std::string filter = "*";
+  std::string cases_dir = RAYSPEC_SOURCE_DIR "/cases";
+  std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
+};
+
 int runDevices(const DevicesOptions& opt);
 int runShow(const ShowOptions& opt);
+int runList(const ListOptions& opt);
 int runCompare(const CompareOptions& opt);
 
 }  // namespace rayspec

@@ -69,7 +69,16 @@ int main(int argc, char** argv) {
   show->add_flag("--vocabulary", show_opt.vocabulary, "List the built-ins and operators of the stage vocabulary");
   show->add_option("--cases", show_opt.cases_dir, "Folder of case files")->capture_default_str();
 
+  auto* list = app.add_subcommand("list", "List the cases (sweeps expanded) and the rules they claim");
+  rayspec::ListOptions list_opt;
+  list->add_flag("--rules", list_opt.rules,
+                 "Rule -> cases for every rule of the catalog; exits 1 when a rule (R-UB apart) has no case");
+  list->add_option("--filter", list_opt.filter, "Only cases whose name matches this glob")->capture_default_str();
+  list->add_option("--cases", list_opt.cases_dir, "Folder of case files")->capture_default_str();
+  list->add_option("--rules-file", list_opt.rules_file, "Rule catalog")->capture_default_str();
+
   CLI11_PARSE(app, argc, argv);
+  if (*list) return rayspec::runList(list_opt);
   if (*devices) return rayspec::runDevices(devices_opt);
   if (*run) return rayspec::runCases(run_opt);
   if (*show) return rayspec::runShow(show_opt);
