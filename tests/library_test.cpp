@@ -48,6 +48,20 @@ TEST(ExpandSweep, AListValueIsWrittenInFlowStyle) {
   EXPECT_NE(ex.variants[0].text.find("rays: {direction: [0, 0, -1]}"), std::string::npos) << ex.variants[0].text;
 }
 
+TEST(ExpandSweep, ValuesMayNameOtherParametersAndNamesMayNest) {
+  const SweepExpansion ex = expandSweep("sweep:\n  name: ${order}\n  rows: [{order: up, all: '[${a}, ${b}]'}, "
+                                        "{order: down, all: '[${b}, ${a}]'}]\n  product:\n    a: [1]\n    b: [2]\n"
+                                        "    list_up: ['[0, 1]']\n    list_down: ['[1, 0]']\n"
+                                        "x: ${all}\ny: ${list_${order}}\n",
+                                        "f.sweep.yaml", "x/f");
+  ASSERT_TRUE(ex.errors.empty()) << ex.errors[0].format();
+  ASSERT_EQ(ex.variants.size(), 2u);
+  EXPECT_NE(ex.variants[1].text.find("x: [2, 1]\ny: [1, 0]"), std::string::npos) << ex.variants[1].text;
+  const SweepExpansion loop = expandSweep("sweep:\n  name: n\n  product: {a: ['${a}']}\nx: ${a}\n", "f.sweep.yaml", "x/f");
+  ASSERT_EQ(loop.errors.size(), 1u);
+  EXPECT_EQ(loop.errors[0].format(), "f.sweep.yaml:4:1: the parameters' values keep naming each other: no end");
+}
+
 TEST(ExpandSweep, ErrorsNameTheFileLineAndField) {
   auto first = [](const std::string& text) {
     const SweepExpansion ex = expandSweep(text, "f.sweep.yaml", "x/f");

@@ -110,35 +110,43 @@ class Expander {
   std::vector<CaseError>& errors_;
 };
 
-// Replaces each ${name} in line; an unknown name is an error (once per place).
+// Replaces each ${name} in line, innermost first, and again in what a value
+// brings in: `${boxes_${order}}` is ${boxes_forward} when order is forward.
+// An unknown name is an error (once per place); so is a value that keeps
+// bringing itself back.
 std::string substitute(const std::string& line, const Params& params, const std::string& file, int line_no,
                        const std::string& field, std::vector<CaseError>* errors) {
-  std::string out;
-  size_t pos = 0;
-  while (true) {
-    const size_t open = line.find("${", pos);
-    if (open == std::string::npos) break;
-    const size_t close = line.find('}', open);
-    if (close == std::string::npos) break;
-    out += line.substr(pos, open - pos);
-    const std::string name = line.substr(open + 2, close - open - 2);
+  std::string out = line;
+  size_t from = 0;
+  std::set<std::string> unknown;
+  for (int steps = 0; steps < 10000; ++steps) {
+    const size_t close = out.find('}', from);
+    if (close == std::string::npos) return out;
+    const size_t open = out.rfind("${", close);
+    if (open == std::string::npos || open < from) {
+      from = close + 1;
+      continue;
+    }
+    const std::string name = out.substr(open + 2, close - open - 2);
     const std::string* value = nullptr;
     for (const auto& [k, v] : params)
       if (k == name) value = &v;
-    if (value) {
-      out += *value;
-    } else {
-      if (errors) {
+    if (!value) {
+      if (errors && unknown.insert(name).second) {
         std::string known;
         for (const auto& [k, v] : params) known += (known.empty() ? "" : ", ") + k;
         errors->push_back({SourceLoc{file, line_no, static_cast<int>(open) + 1, field},
                            "'${" + name + "}' names no parameter of the sweep (parameters: " + known + ")"});
       }
-      out += line.substr(open, close + 1 - open);
+      from = close + 1;
+      continue;
     }
-    pos = close + 1;
+    out.replace(open, close + 1 - open, *value);
+    from = 0;  // an enclosing ${...} may now be complete
   }
-  return out + line.substr(pos);
+  if (errors)
+    errors->push_back({SourceLoc{file, line_no, 1, field}, "the parameters' values keep naming each other: no end"});
+  return out;
 }
 
 std::vector<std::string> splitLines(const std::string& text) {
