@@ -59,7 +59,24 @@ TEST(ExpandSweep, ValuesMayNameOtherParametersAndNamesMayNest) {
   EXPECT_NE(ex.variants[1].text.find("x: [2, 1]\ny: [1, 0]"), std::string::npos) << ex.variants[1].text;
   const SweepExpansion loop = expandSweep("sweep:\n  name: n\n  product: {a: ['${a}']}\nx: ${a}\n", "f.sweep.yaml", "x/f");
   ASSERT_EQ(loop.errors.size(), 1u);
-  EXPECT_EQ(loop.errors[0].format(), "f.sweep.yaml:4:1: the parameters' values keep naming each other: no end");
+  EXPECT_NE(loop.errors[0].format().find("f.sweep.yaml:4:1: the parameters' values name each other too deeply"),
+            std::string::npos);
+}
+
+TEST(ExpandSweep, ASweepTooLargeIsAnErrorNotAnExhaustedMachine) {
+  const SweepExpansion many = expandSweep(
+      "sweep:\n  name: ${a}${b}${c}${d}\n  product:\n    a: [0, 1, 2, 3, 4, 5, 6, 7, 8, 9]\n    b: [0, 1, 2, 3, 4, 5, 6, 7, 8, 9]\n"
+      "    c: [0, 1, 2, 3, 4, 5, 6, 7, 8, 9]\n    d: [0, 1, 2, 3, 4, 5, 6, 7, 8, 9]\n    e: [0, 1]\n",
+      "f.sweep.yaml", "x/f");
+  ASSERT_EQ(many.errors.size(), 1u);
+  EXPECT_EQ(many.errors[0].format(), "f.sweep.yaml:2:3: sweep: makes more than 10000 cases; split it");
+  std::string doubling = "sweep:\n  name: n\n  product:\n    v0: [x]\n";
+  for (int i = 1; i <= 24; ++i)
+    doubling += "    v" + std::to_string(i) + ": ['${v" + std::to_string(i - 1) + "}${v" + std::to_string(i - 1) + "}']\n";
+  const SweepExpansion wide = expandSweep(doubling + "x: ${v24}\n", "f.sweep.yaml", "x/f");
+  ASSERT_EQ(wide.errors.size(), 1u);
+  EXPECT_EQ(wide.errors[0].format(), "f.sweep.yaml:29:1: the parameters' values name each other too deeply (over "
+                                     "10000 substitutions, or a line over 256 KiB)");
 }
 
 TEST(ExpandSweep, ErrorsNameTheFileLineAndField) {

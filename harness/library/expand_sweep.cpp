@@ -11,6 +11,11 @@
 namespace rayspec {
 namespace {
 
+constexpr size_t kMaxVariants = 10000;          // cases one sweep may make
+constexpr size_t kMaxLineBytes = 256u << 10;    // one substituted line
+constexpr int kMaxSubstitutions = 10000;         // in one line
+constexpr size_t kMaxSweepBytes = 256u << 20;   // all variants' text together
+
 using Params = std::vector<std::pair<std::string, std::string>>;  // name -> YAML text, in order
 
 SourceLoc locOf(const std::string& file, const YAML::Mark& m, const std::string& field) {
@@ -117,14 +122,15 @@ class Expander {
 std::string substitute(const std::string& line, const Params& params, const std::string& file, int line_no,
                        const std::string& field, std::vector<CaseError>* errors) {
   std::string out = line;
-  size_t from = 0;
+  size_t pos = 0;    // where the next '}' is looked for
+  size_t floor = 0;  // a "${" before this is left alone (it holds an unknown name)
   std::set<std::string> unknown;
-  for (int steps = 0; steps < 10000; ++steps) {
-    const size_t close = out.find('}', from);
+  for (int steps = 0; steps < kMaxSubstitutions && out.size() <= kMaxLineBytes; ++steps) {
+    const size_t close = out.find('}', pos);
     if (close == std::string::npos) return out;
     const size_t open = out.rfind("${", close);
-    if (open == std::string::npos || open < from) {
-      from = close + 1;
+    if (open == std::string::npos || open < floor) {
+      pos = close + 1;
       continue;
     }
     const std::string name = out.substr(open + 2, close - open - 2);
@@ -138,15 +144,18 @@ std::string substitute(const std::string& line, const Params& params, const std:
         errors->push_back({SourceLoc{file, line_no, static_cast<int>(open) + 1, field},
                            "'${" + name + "}' names no parameter of the sweep (parameters: " + known + ")"});
       }
-      from = close + 1;
+      pos = floor = close + 1;
       continue;
     }
     out.replace(open, close + 1 - open, *value);
-    from = 0;  // an enclosing ${...} may now be complete
+    pos = open;  // the value may bring ${...} of its own, or complete an enclosing one
   }
   if (errors)
-    errors->push_back({SourceLoc{file, line_no, 1, field}, "the parameters' values keep naming each other: no end"});
-  return out;
+    errors->push_back({SourceLoc{file, line_no, 1, field},
+                       "the parameters' values name each other too deeply (over " +
+                           std::to_string(kMaxSubstitutions) + " substitutions, or a line over " +
+                           std::to_string(kMaxLineBytes >> 10) + " KiB)"});
+  return {};
 }
 
 std::vector<std::string> splitLines(const std::string& text) {
@@ -224,12 +233,19 @@ SweepExpansion expandSweep(const std::string& text, const std::string& file, con
       }
 
   for (int i = block_begin; i < block_end && i < static_cast<int>(lines.size()); ++i) lines[i].clear();
+  size_t count = rows.size();
+  for (const auto& [key, values] : product) count = count > kMaxVariants ? count : count * values.size();
+  if (count > kMaxVariants) {
+    ex.error(sweep, "sweep", "makes more than " + std::to_string(kMaxVariants) + " cases; split it");
+    return result;
+  }
+  size_t total_bytes = 0;
 
   // Every combination: rows outermost, the product's last key fastest.
   std::vector<size_t> index(product.size(), 0);
   std::map<std::string, int> names_seen;
   for (const Params& row : rows) {
-    while (true) {
+    while (result.errors.empty()) {
       Params params = row;
       for (size_t k = 0; k < product.size(); ++k) params.emplace_back(product[k].first, product[k].second[index[k]]);
       const bool first = result.variants.empty();
@@ -240,6 +256,8 @@ SweepExpansion expandSweep(const std::string& text, const std::string& file, con
       for (size_t i = 0; i < lines.size(); ++i)
         v.text += substitute(lines[i], params, file, static_cast<int>(i) + 1, "", first ? &result.errors : nullptr) +
                   "\n";
+      total_bytes += v.text.size();
+      if (total_bytes > kMaxSweepBytes) ex.error(sweep, "sweep", "its cases' text grows beyond 256 MiB; split it");
       if (++names_seen[v.name] == 2)
         ex.error(name_node, "sweep.name", "two variants are both named '" + v.name +
                                               "': the name must use every parameter that varies");
