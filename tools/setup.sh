@@ -17,6 +17,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   chromium
+  clang libclang-rt-14-dev
 )
 # Packages that must come from bookworm-backports (lavapipe with ray tracing).
 BACKPORT_PACKAGES=(mesa-vulkan-drivers)

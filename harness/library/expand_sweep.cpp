@@ -172,7 +172,9 @@ bool isSweepFile(const std::string& path) {
   return path.size() > suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-SweepExpansion expandSweep(const std::string& text, const std::string& file, const std::string& name) {
+namespace {
+
+SweepExpansion expandChecked(const std::string& text, const std::string& file, const std::string& name) {
   SweepExpansion result;
   Expander ex(file, result.errors);
   // The block: from the line `sweep:` (at column 0) to the next line that
@@ -201,6 +203,11 @@ SweepExpansion expandSweep(const std::string& text, const std::string& file, con
     root = YAML::Load(block);
   } catch (const YAML::Exception& e) {
     result.errors.push_back({locOf(file, e.mark, "sweep"), "malformed YAML: " + e.msg});
+    return result;
+  }
+  if (!root.IsMap()) {
+    result.errors.push_back({SourceLoc{file, block_begin + 1, 1, "sweep"},
+                             "the `sweep:` line does not start a map (cases/README.md, Sweeps)"});
     return result;
   }
   const YAML::Node sweep = root["sweep"];
@@ -273,6 +280,19 @@ SweepExpansion expandSweep(const std::string& text, const std::string& file, con
   }
   if (!result.errors.empty()) result.variants.clear();
   return result;
+}
+
+}  // namespace
+
+SweepExpansion expandSweep(const std::string& text, const std::string& file, const std::string& name) {
+  try {
+    return expandChecked(text, file, name);
+  } catch (const YAML::Exception& e) {
+    // A shape yaml-cpp refuses to read (it throws on some): an error at its mark.
+    SweepExpansion result;
+    result.errors.push_back({locOf(file, e.mark, "sweep"), "unexpected value in the sweep block: " + e.msg});
+    return result;
+  }
 }
 
 }  // namespace rayspec
