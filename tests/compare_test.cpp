@@ -114,6 +114,24 @@ TEST(Compare, AmbiguousRayLeakIsAQualityWarningAndOtherCandidateIsFine) {
   EXPECT_EQ(compareResults(c, samplePlan(c), wrong, m).status, Status::Fail);
 }
 
+// Under SkipClosestHit a hit runs neither closest-hit nor miss: on an
+// ambiguous ray that is a hit of unknown identity, legal when a hit is.
+TEST(Compare, AnAmbiguousRayWithNeitherClosestHitNorMissIsAHit) {
+  const Case c = sampleCase();
+  Results m = sampleResults("model");
+  m.ambiguous.push_back({0, AmbiguityReason::FirstHit, {{true, 0, 0, 0}, {true, 0, 0, 1}}});
+  Results d = sampleResults("vulkan");
+  uint32_t* rec = &d.records[0];
+  rec[kRecordWrittenMaskWord] = 0;  // closest-hit wrote nothing
+  setUint(d, 0, "closest_hit_runs", 0);
+  EXPECT_EQ(compareResults(c, samplePlan(c), d, m).status, Status::Pass);
+  // A miss there is no legal answer: it breaks R-TOFH.
+  setUint(d, 0, "miss_runs", 1);
+  const Verdict v = compareResults(c, samplePlan(c), d, m);
+  EXPECT_EQ(v.status, Status::Fail) << v.headline();
+  EXPECT_NE(v.headline().find("R-TOFH"), std::string::npos) << v.headline();
+}
+
 // Two triangles sharing the edge x = y of the unit square, in instance 0.
 Case squareCase() {
   Case c = sampleCase();

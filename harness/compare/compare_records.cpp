@@ -42,8 +42,15 @@ uint32_t fieldWord(const uint32_t* rec, const char* name) { return rec[findRecor
 // The device's answer for an ambiguous ray, checked against the legal set.
 void checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
                     std::map<std::string, FindingBuilder>& wrongs, FindingBuilder& leak) {
+  // A trace that ran no miss shader hit, whether or not closest-hit ran
+  // (SkipClosestHit, or a hit group without one, runs neither): a hit of
+  // unknown identity. Unless a miss may run nothing too (an all-zero miss
+  // record, R-SBT-ZERO): then only what the shaders wrote tells.
+  bool silent_miss = false;
+  for (const SbtRecord& r : c.pipeline.sbt_miss) silent_miss = silent_miss || !r.group;
   const bool device_hit = fieldWord(rec, "closest_hit_runs") > 0 ||
-                          (written(rec, recordFieldIndex("hit")) && fieldWord(rec, "hit") == 1);
+                          (written(rec, recordFieldIndex("hit")) && fieldWord(rec, "hit") == 1) ||
+                          (fieldWord(rec, "miss_runs") == 0 && !silent_miss);
   const int prim = recordFieldIndex("primitive_id"), inst = recordFieldIndex("instance_id"),
             geom = recordFieldIndex("geometry_index");
   bool legal = false, miss_legal = false;
