@@ -16,7 +16,10 @@ namespace rayspec {
 #ifdef RAYSPEC_WITH_OIIO
 namespace {
 
-std::string writeOne(const std::string& path, const OIIO::ImageSpec& spec, const void* pixels) {
+std::string writeOne(const std::string& path, OIIO::ImageSpec spec, const void* pixels) {
+  // Without a DateTime, the EXR writer stamps the current time (capDate):
+  // two runs would write different files for the same image.
+  spec.attribute("DateTime", "");
   auto out = OIIO::ImageOutput::create(path);
   if (!out) return "OpenImageIO cannot create " + path + ": " + OIIO::geterror();
   if (!out->open(path, spec) || !out->write_image(spec.format, pixels)) return path + ": " + out->geterror();
