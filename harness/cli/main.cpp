@@ -5,6 +5,7 @@
 #include "cli/commands.h"
 #include "run/run_loop.h"
 #include "fault/planted_fault.h"
+#include "vulkan/device_errors.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"rayspec: Vulkan ray tracing pipeline conformance, device against a CPU reference model"};
@@ -45,6 +46,7 @@ int main(int argc, char** argv) {
                 "memory limit, a crash ends the run)");
   std::string fault_list;
   for (const std::string& name : rayspec::faultNames()) fault_list += (fault_list.empty() ? "" : ", ") + name;
+  for (const std::string& name : rayspec::deviceErrorFaultNames()) fault_list += ", " + name;
   run->add_option("--permute", run_opt.permute,
                   "Permute each case's primitives and instances from this seed (R-ORDER-UNSPEC: verdicts must not "
                   "move; the same seed gives the same permutation)");

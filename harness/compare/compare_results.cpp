@@ -16,6 +16,10 @@ Verdict backendVerdict(const Results& r) {
     case RunStatus::Crash: f.status = Status::Crash; break;
     case RunStatus::NotSupported: f.status = Status::NotSupported; break;
     case RunStatus::Timeout: f.status = Status::Timeout; break;
+    case RunStatus::Refused:
+      f.status = Status::Fail;
+      f.rule = "driver";
+      break;
   }
   f.message = r.backend + ": " + r.statusText();
   v.add(f);

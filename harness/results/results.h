@@ -22,8 +22,10 @@ struct Image {
 };
 
 // How one execution (device or model) ended. The detail says why.
-enum class RunStatus { Ok, NotSupported, Crash, Timeout };
-const char* runStatusName(RunStatus s);  // "ok", "NotSupported", "Crash", "Timeout"
+// Refused: the driver refused something a conformant driver must accept (a
+// valid pipeline within the limits): the case Fails.
+enum class RunStatus { Ok, NotSupported, Crash, Timeout, Refused };
+const char* runStatusName(RunStatus s);  // "ok", "NotSupported", "Crash", "Timeout", "Refused"
 bool parseRunStatus(const std::string& name, RunStatus* out);
 
 // Why the model's exact tier found a ray numerically ambiguous. Stable names

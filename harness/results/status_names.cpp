@@ -22,12 +22,14 @@ const char* runStatusName(RunStatus s) {
     case RunStatus::NotSupported: return "NotSupported";
     case RunStatus::Crash: return "Crash";
     case RunStatus::Timeout: return "Timeout";
+    case RunStatus::Refused: return "Refused";
   }
   return "Crash";
 }
 
 bool parseRunStatus(const std::string& name, RunStatus* out) {
-  static const RunStatus all[] = {RunStatus::Ok, RunStatus::NotSupported, RunStatus::Crash, RunStatus::Timeout};
+  static const RunStatus all[] = {RunStatus::Ok, RunStatus::NotSupported, RunStatus::Crash, RunStatus::Timeout,
+                                   RunStatus::Refused};
   return parseByName(name, out, all, runStatusName);
 }
 

@@ -10,6 +10,7 @@
 #include "run/judge_case.h"
 #include "run/model_adapter.h"
 #include "run/vulkan_adapter.h"
+#include "vulkan/device_errors.h"
 
 namespace rayspec {
 namespace {
@@ -27,6 +28,15 @@ Side deviceSide(const RunOptions& opt, const Results& model, const std::string& 
   vopt.device_filter = opt.device;
   vopt.validation = !opt.no_validation;
   Side s{"device", "vulkan", [vopt] { return std::make_unique<VulkanAdapter>(vopt); }, {}};
+  if (const std::optional<InjectedVkError> injected = deviceErrorFault(fault)) {
+    // A Vulkan call fails on purpose for this case only.
+    s.before = [e = *injected] { injectVkError(e); };
+    s.after = [fault, e = *injected](const Case&, const Plan&, Results&) -> std::string {
+      injectVkError({});
+      return "planted fault " + fault + ": " + e.call + " returns " + vkResultName(e.result);
+    };
+    return s;
+  }
   if (!fault.empty())
     s.after = [fault, &model](const Case& c, const Plan& plan, Results& device) -> std::string {
       raiseProcessFault(fault);  // crash, hang: only in a child (run loop refuses them in process)

@@ -9,6 +9,7 @@ namespace {
 
 // The part both ways share: run, name the results, let `after` see them.
 Results runSide(const Side& side, Backend& backend, const Case& c, const Plan& plan, std::string* note) {
+  if (side.before) side.before();
   Results r = backend.run(c, plan);
   r.case_name = c.name;
   r.case_file = c.file;

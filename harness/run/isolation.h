@@ -36,6 +36,8 @@ struct Side {
   // Runs after the backend, where it ran, and may change the results (a
   // planted fault); returns a note for the report ("" none).
   std::function<std::string(const Case&, const Plan&, Results&)> after;
+  // Runs just before the backend, where it runs (a planted device error).
+  std::function<void()> before;
 };
 
 struct SideResult {

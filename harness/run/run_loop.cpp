@@ -16,6 +16,7 @@
 #include "run/interrupt.h"
 #include "run/model_adapter.h"
 #include "run/vulkan_adapter.h"
+#include "vulkan/device_errors.h"
 
 namespace rayspec {
 namespace {
@@ -48,7 +49,8 @@ std::vector<CaseFile> caseFiles(const RunOptions& opt) {
 std::string optionError(const RunOptions& opt) {
   if (!opt.no_validation && opt.strict_validation && !validationLayerInstalled())
     return "the Khronos validation layer is not installed (vulkan-validationlayers); run tools/setup.sh";
-  if (!opt.plant_fault.empty() && !isFaultName(opt.plant_fault)) return "unknown fault '" + opt.plant_fault + "'";
+  if (!opt.plant_fault.empty() && !isFaultName(opt.plant_fault) && !deviceErrorFault(opt.plant_fault))
+    return "unknown fault '" + opt.plant_fault + "'";
   if (isProcessFault(opt.plant_fault) && opt.no_isolation)
     return "the fault '" + opt.plant_fault + "' needs the device in a child process (no --no-isolation)";
   if (opt.no_device && opt.no_model) return "--no-device and --no-model: nothing would run";

@@ -32,12 +32,18 @@ void submitAndWait(const VulkanContext& ctx, VkCommandBuffer cmd, uint64_t timeo
   vkCheck(vkCreateFence(ctx.device, &fence_info, nullptr, &fence), "vkCreateFence");
   Cleanup local;
   VkDevice device = ctx.device;
-  local.add([device, fence] { vkDestroyFence(device, fence, nullptr); });
+  VkQueue queue = ctx.queue;
+  // The fence may go only once the queue is done with it: when the wait
+  // failed (a timeout, a lost device) the submission may still be running.
+  local.add([device, queue, fence] {
+    vkQueueWaitIdle(queue);
+    vkDestroyFence(device, fence, nullptr);
+  });
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &cmd;
   vkCheck(vkQueueSubmit(ctx.queue, 1, &submit, fence), "vkQueueSubmit");
-  vkCheck(vkWaitForFences(ctx.device, 1, &fence, VK_TRUE, timeout_ns), "vkWaitForFences");
+  vkCall("vkWaitForFences", [&] { return vkWaitForFences(ctx.device, 1, &fence, VK_TRUE, timeout_ns); });
 }
 
 }  // namespace rayspec

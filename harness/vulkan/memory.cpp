@@ -32,7 +32,7 @@ VkDeviceMemory allocate(const VulkanContext& ctx, const VkMemoryRequirements& re
                            VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, 0)
           : findMemoryType(ctx, req.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   VkDeviceMemory memory = VK_NULL_HANDLE;
-  vkCheck(vkAllocateMemory(ctx.device, &info, nullptr, &memory), "vkAllocateMemory");
+  vkCall("vkAllocateMemory", [&] { return vkAllocateMemory(ctx.device, &info, nullptr, &memory); });
   return memory;
 }
 

@@ -123,9 +123,9 @@ VkPipeline createRayTracingPipeline(const VulkanContext& ctx, const CompiledPipe
   info.maxPipelineRayRecursionDepth = max_recursion;
   info.layout = layout;
   VkPipeline pipeline = VK_NULL_HANDLE;
-  vkCheck(ctx.fn.createRayTracingPipelines(ctx.device, VK_NULL_HANDLE, VK_NULL_HANDLE, 1, &info,
-                                           nullptr, &pipeline),
-          "vkCreateRayTracingPipelinesKHR");
+  vkCall("vkCreateRayTracingPipelinesKHR", [&] {
+    return ctx.fn.createRayTracingPipelines(ctx.device, VK_NULL_HANDLE, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
+  });
   VkDevice device = ctx.device;
   cleanup.add([device, pipeline] { vkDestroyPipeline(device, pipeline, nullptr); });
   return pipeline;

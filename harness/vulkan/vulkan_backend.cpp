@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "vulkan/context.h"
+#include "vulkan/device_errors.h"
 #include "vulkan/pipeline.h"
 #include "vulkan/run_case.h"
 #include "vulkan/vk_check.h"
@@ -41,11 +42,20 @@ Results VulkanBackend::run(const Case& c, const Plan& plan) {
   r.height = c.rays.height;
   ctx_->capture->take();  // messages from before this run are not its own
   try {
+    if (device_lost_) {  // the last case lost the device: this one gets a new one
+      destroyDevice(*ctx_);
+      createDevice(*ctx_);
+      device_lost_ = false;
+    }
     runCase(*ctx_, c, plan, r);
   } catch (const ShaderCompileError& e) {
     r.setStatus(RunStatus::Crash, std::string("shader compile: ") + e.what());
   } catch (const NotSupportedError& e) {
     r.setStatus(RunStatus::NotSupported, e.what());
+  } catch (const VulkanError& e) {
+    const DeviceErrorStatus s = classifyVulkanError(e);
+    r.setStatus(s.status, s.detail);
+    device_lost_ = device_lost_ || s.device_lost;
   } catch (const std::exception& e) {
     r.setStatus(RunStatus::Crash, e.what());
   } catch (...) {

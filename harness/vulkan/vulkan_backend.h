@@ -69,6 +69,7 @@ class VulkanBackend {
  private:
   VulkanBackend();
   std::unique_ptr<VulkanContext> ctx_;
+  bool device_lost_ = false;  // a case lost the device: the next run makes a new one
 };
 
 }  // namespace rayspec
