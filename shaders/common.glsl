@@ -141,9 +141,14 @@ void rs_count(uint index) {
 #endif
 
 #ifdef RS_USE_SHADER_RECORD
-// Every SBT record carries 8 data words (all zero unless the case sets them).
+// Every SBT record carries RS_SHADER_RECORD_WORDS data words after its
+// handle (pipeline.sbt.record_data / 4, default 8; all zero unless the case
+// sets them); the parser keeps every read inside them.
+#ifndef RS_SHADER_RECORD_WORDS
+#define RS_SHADER_RECORD_WORDS 8
+#endif
 layout(shaderRecordEXT, std430) buffer RsShaderRecord {
-  uint words[8];
+  uint words[RS_SHADER_RECORD_WORDS];
 } rs_shader_record;
 
 uint rs_shader_record_uint(uint i) {

@@ -367,6 +367,27 @@ TEST_F(GenerateGlsl, OutputIsDeterministic) {
   EXPECT_EQ(allText(allShaders(again)), allText(shaders));
 }
 
+// The shaderRecordEXT block declares the case's record data bytes
+// (pipeline.sbt.record_data / 4 words), default 8; every stage still compiles
+// (the lights' fixed word indices go through a function parameter).
+TEST_F(GenerateGlsl, ShaderRecordBlockHoldsTheRecordDataWords) {
+  size_t users = 0;
+  for (const auto& sh : shaders)
+    if (sh.glsl.find("#define RS_USE_SHADER_RECORD") != std::string::npos) {
+      ++users;
+      EXPECT_NE(sh.glsl.find("#define RS_SHADER_RECORD_WORDS 8\n"), std::string::npos) << sh.name;
+    }
+  ASSERT_GT(users, 0u);
+  c.pipeline.sbt_record_data = 24;
+  for (const auto& sh : allShaders(generateGlsl(c, plan))) {
+    if (sh.glsl.find("#define RS_USE_SHADER_RECORD") == std::string::npos) continue;
+    EXPECT_NE(sh.glsl.find("#define RS_SHADER_RECORD_WORDS 6\n"), std::string::npos) << sh.name;
+    EXPECT_NE(sh.glsl.find("uint words[RS_SHADER_RECORD_WORDS];"), std::string::npos) << sh.name;
+    SpirvResult r = compileGlsl(sh.glsl, sh.stage);
+    EXPECT_TRUE(r.error.empty()) << sh.name << ":\n" << r.error;
+  }
+}
+
 TEST(GenerateGlslErrors, AStageMisuseFailsWithTheLine) {
   Case c;
   c.pipeline.raygen = {kind(Stmt::Kind::Trace)};

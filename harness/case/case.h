@@ -102,7 +102,19 @@ struct Rays {
 // One record of an SBT region: a group index, or all-zero, plus record data.
 struct SbtRecord {
   std::optional<uint32_t> group;     // empty = all-zero record (R-SBT-ZERO)
-  std::vector<uint32_t> data;        // up to 8 words of shader record data
+  std::vector<uint32_t> data;        // up to record_data / 4 words of shader record data
+};
+
+// The shape of every SBT record (pipeline.sbt.record_data / padding): the
+// group handle, then `record_data` bytes of shader record data (what the
+// case's data and its shaders' shader_record_* reads may use), then the
+// region's padding bytes. A region's stride is
+// alignUp(handleSize + record_data + padding, shaderGroupHandleAlignment);
+// the raygen region (one record) has no padding.
+constexpr uint32_t kMaxShaderRecordDataBytes = 32;  // 8 words
+constexpr uint32_t kMaxSbtPaddingBytes = 65536;
+struct SbtPadding {
+  uint32_t miss = 0, hit = 0, callable = 0;  // bytes
 };
 
 struct HitGroup {
@@ -120,6 +132,8 @@ struct Pipeline {
   std::vector<Program> callables;
   // SBT regions. Default when not written: one record per shader / group, in order.
   std::vector<SbtRecord> sbt_miss, sbt_hit, sbt_callable;
+  uint32_t sbt_record_data = kMaxShaderRecordDataBytes;  // bytes of data per record: 0..32, multiple of 4
+  SbtPadding sbt_padding;
 };
 
 struct ImageOutput {

@@ -29,6 +29,10 @@ bool parseExpr(YamlReader& r, const YAML::Node& n, const std::string& field, Exp
 // Checks every program of the pipeline for its stage (program/ops.h checkProgram).
 void checkPrograms(YamlReader& r, Case& c, const YAML::Node& pipeline_node);
 
+// Errors for shader record reads (shader_record_uint / _float, the lights)
+// past the record's data bytes (pipeline.sbt.record_data).
+void checkRecordReads(YamlReader& r, const Case& c);
+
 // Notes the undefined behaviour (R-UB) of traces and calls whose values are
 // constants: SBT indices beyond their regions, a trace's bad tmin / tmax.
 // Needs the types checkPrograms fills in.

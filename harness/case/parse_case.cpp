@@ -78,6 +78,7 @@ void parseTop(YamlReader& r, const YAML::Node& root, const std::vector<std::stri
   const YAML::Node pipeline = YamlReader::get(root, "pipeline");
   parsePipeline(r, pipeline, c.pipeline);
   checkPrograms(r, c, pipeline);
+  checkRecordReads(r, c);
   if (r.errorCount() == 0) checkTraceConstants(r, c);
   judgeStaticUndefined(r, c);
 }

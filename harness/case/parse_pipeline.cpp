@@ -1,13 +1,51 @@
-// pipeline: recursion, flags, the stage programs and the shader binding table.
+// pipeline: recursion, flags, the stage programs and the shader binding table
+// (its records, and their shape: record_data and padding bytes).
 #include "case/case_parts.h"
 #include "case/flag_names.h"
 
 namespace rayspec {
 namespace {
 
+// Record data must fit in the record's data bytes: words past them would lie
+// in the padding or the next record.
+void checkDataFits(YamlReader& r, const YAML::Node& n, const std::string& field, size_t words,
+                   uint32_t record_data) {
+  if (words * 4 <= record_data) return;
+  r.error(n, field,
+          std::to_string(words) + " word(s) (" + std::to_string(words * 4) +
+              " bytes) of shader record data do not fit in pipeline.sbt.record_data (" +
+              std::to_string(record_data) + " bytes per record)");
+}
+
+// pipeline.sbt.record_data: bytes of data per record, a multiple of 4 in 0..32.
+void parseRecordDataBytes(YamlReader& r, const YAML::Node& n, Pipeline& p) {
+  const std::string f = "pipeline.sbt.record_data";
+  auto k = r.uint(n, f, kMaxShaderRecordDataBytes);
+  if (!k) return;
+  if (*k % 4) {
+    r.error(n, f, "must be a multiple of 4 (whole words of shader record data)");
+    return;
+  }
+  p.sbt_record_data = *k;
+}
+
+// pipeline.sbt.padding: P (every region) or {miss: P, hit: P, callable: P}.
+void parsePadding(YamlReader& r, const YAML::Node& n, SbtPadding& out) {
+  const std::string f = "pipeline.sbt.padding";
+  if (!n.IsMap()) {
+    if (auto v = r.uint(n, f, kMaxSbtPaddingBytes)) out = {*v, *v, *v};
+    return;
+  }
+  if (!r.expectMap(n, f, {"miss", "hit", "callable"})) return;
+  struct Slot { const char* key; uint32_t* value; };
+  for (Slot s : {Slot{"miss", &out.miss}, Slot{"hit", &out.hit}, Slot{"callable", &out.callable}})
+    if (auto v = YamlReader::get(n, s.key); v.IsDefined())
+      if (auto x = r.uint(v, f + "." + s.key, kMaxSbtPaddingBytes)) *s.value = *x;
+}
+
 // One SBT region: a group index, `zero`, or {group, data}.
 void parseSbtRegion(YamlReader& r, const YAML::Node& n, const std::string& field, size_t groups,
-                    const char* what, std::vector<SbtRecord>& out) {
+                    const char* what, uint32_t record_data, std::vector<SbtRecord>& out) {
   if (!r.expectSeq(n, field)) return;
   for (size_t i = 0; i < n.size(); ++i) {
     const std::string f = field + "[" + std::to_string(i) + "]";
@@ -20,7 +58,10 @@ void parseSbtRegion(YamlReader& r, const YAML::Node& n, const std::string& field
     const YAML::Node group = item.IsMap() ? YamlReader::get(item, "group") : item;
     if (item.IsMap()) {
       if (auto d = YamlReader::get(item, "data"); d.IsDefined())
-        if (auto words = parseRecordData(r, d, f + ".data")) rec.data = *words;
+        if (auto words = parseRecordData(r, d, f + ".data")) {
+          checkDataFits(r, d, f + ".data", words->size(), record_data);
+          rec.data = *words;
+        }
     }
     if (group.IsScalar() && group.Scalar() == "zero") {
       if (!rec.data.empty()) r.error(item, f, "an all-zero record carries no data");
@@ -99,8 +140,19 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
     p.raygen.clear();
     parseProgram(r, v, "pipeline.raygen", p.raygen);
   }
+  // The record shape first: the data of every record must fit in it.
+  const YAML::Node sbt = YamlReader::get(n, "sbt");
+  const bool sbt_ok =
+      sbt.IsDefined() && r.expectMap(sbt, "pipeline.sbt", {"record_data", "padding", "miss", "hit", "callable"});
+  if (sbt_ok) {
+    if (auto v = YamlReader::get(sbt, "record_data"); v.IsDefined()) parseRecordDataBytes(r, v, p);
+    if (auto v = YamlReader::get(sbt, "padding"); v.IsDefined()) parsePadding(r, v, p.sbt_padding);
+  }
   if (auto v = YamlReader::get(n, "raygen_data"); v.IsDefined())
-    if (auto words = parseRecordData(r, v, "pipeline.raygen_data")) p.raygen_data = *words;
+    if (auto words = parseRecordData(r, v, "pipeline.raygen_data")) {
+      checkDataFits(r, v, "pipeline.raygen_data", words->size(), p.sbt_record_data);
+      p.raygen_data = *words;
+    }
   if (auto v = YamlReader::get(n, "miss"); v.IsDefined()) parsePrograms(r, v, "pipeline.miss", p.miss);
   if (auto v = YamlReader::get(n, "hit_groups"); v.IsDefined()) parseHitGroups(r, v, p.hit_groups);
   if (auto v = YamlReader::get(n, "callables"); v.IsDefined())
@@ -109,20 +161,19 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
   p.sbt_miss = defaultRegion(p.miss.size());
   p.sbt_hit = defaultRegion(p.hit_groups.size());
   p.sbt_callable = defaultRegion(p.callables.size());
-  const YAML::Node sbt = YamlReader::get(n, "sbt");
-  if (!sbt.IsDefined()) return;
-  if (!r.expectMap(sbt, "pipeline.sbt", {"miss", "hit", "callable"})) return;
+  if (!sbt_ok) return;
+  const uint32_t k = p.sbt_record_data;
   if (auto v = YamlReader::get(sbt, "miss"); v.IsDefined()) {
     p.sbt_miss.clear();
-    parseSbtRegion(r, v, "pipeline.sbt.miss", p.miss.size(), "miss shader", p.sbt_miss);
+    parseSbtRegion(r, v, "pipeline.sbt.miss", p.miss.size(), "miss shader", k, p.sbt_miss);
   }
   if (auto v = YamlReader::get(sbt, "hit"); v.IsDefined()) {
     p.sbt_hit.clear();
-    parseSbtRegion(r, v, "pipeline.sbt.hit", p.hit_groups.size(), "hit group", p.sbt_hit);
+    parseSbtRegion(r, v, "pipeline.sbt.hit", p.hit_groups.size(), "hit group", k, p.sbt_hit);
   }
   if (auto v = YamlReader::get(sbt, "callable"); v.IsDefined()) {
     p.sbt_callable.clear();
-    parseSbtRegion(r, v, "pipeline.sbt.callable", p.callables.size(), "callable", p.sbt_callable);
+    parseSbtRegion(r, v, "pipeline.sbt.callable", p.callables.size(), "callable", k, p.sbt_callable);
   }
 }
 

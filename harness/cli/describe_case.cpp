@@ -67,6 +67,10 @@ std::string describeCase(const Case& c) {
   }
   for (size_t i = 0; i < p.callables.size(); ++i)
     s << "  callable " << i << ": " << statementCount(p.callables[i]) << " statements\n";
+  if (p.sbt_record_data != kMaxShaderRecordDataBytes || p.sbt_padding.miss || p.sbt_padding.hit ||
+      p.sbt_padding.callable)
+    s << "  sbt record: handle + " << p.sbt_record_data << " data bytes + padding (miss " << p.sbt_padding.miss
+      << ", hit " << p.sbt_padding.hit << ", callable " << p.sbt_padding.callable << ")\n";
   describeRecords(s, "miss", p.sbt_miss);
   describeRecords(s, "hit", p.sbt_hit);
   describeRecords(s, "callable", p.sbt_callable);

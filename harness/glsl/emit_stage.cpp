@@ -1,5 +1,7 @@
 #include "glsl/emit_stage.h"
 
+#include <algorithm>
+
 #include "glsl/bindings.h"
 #include "glsl/embedded_shaders.h"
 #include "glsl/emit_stmt.h"
@@ -65,7 +67,12 @@ void defines(const StageContext& ctx, GlslWriter& out) {
   if (u.trace) out.line("#define RS_USE_TLAS");
   if (ctx.plan.records) out.line("#define RS_USE_RECORDS");
   if (u.counters) out.line("#define RS_USE_COUNTERS");
-  if (u.shader_record) out.line("#define RS_USE_SHADER_RECORD");
+  if (u.shader_record) {
+    // The record block holds exactly the case's data bytes (pipeline.sbt.record_data):
+    // the parser keeps every read inside them.
+    out.line("#define RS_USE_SHADER_RECORD");
+    out.line(define("RS_SHADER_RECORD_WORDS", std::max<uint32_t>(ctx.c.pipeline.sbt_record_data / 4, 1)));
+  }
 }
 
 void interfaceVariables(const StageContext& ctx, GlslWriter& out) {

@@ -42,7 +42,8 @@ struct OpInfo {
 //       model counterpart.
 //   shader_record_uint (1 Uint literal i in 0..7 -> Uint),
 //   shader_record_float (same -> Float): word i of this stage's own shader
-//       record data (raygen, miss, hit groups, callables).
+//       record data (raygen, miss, hit groups, callables); the case parser
+//       keeps i inside pipeline.sbt.record_data (case/check_record_reads.cpp).
 //   light_point, light_spot, light_directional (P Vec3, N Vec3 -> Vec4): the
 //       lights of shaders/lights.glsl at P with normal N, parameters from this
 //       stage's own shader record floats (what `light:` computes in a callable).

@@ -56,6 +56,20 @@ void checkSupport(const VulkanContext& ctx, const Case& c) {
   if (!ctx.primitive_culling &&
       ((c.pipeline.flags & (kPipelineSkipTriangles | kPipelineSkipAabbs)) || usesSkipRayFlags(c.rays)))
     throw NotSupportedError("skip_triangles / skip_aabbs need rayTraversalPrimitiveCulling");
+  // The shader binding table's shape (pipeline.sbt.record_data / padding):
+  // a stride above maxShaderGroupStride, or any layout the device's limits
+  // refuse, before anything is built.
+  const SbtLimits limits = deviceSbtLimits(ctx);
+  const Pipeline& p = c.pipeline;
+  std::string error;
+  if (!checkSbtLayout(computeSbtLayout(limits, p), limits, &error))
+    throw NotSupportedError(error + " (a record is the " + std::to_string(limits.handle_size) +
+                            "-byte handle + pipeline.sbt.record_data " + std::to_string(p.sbt_record_data) +
+                            " + pipeline.sbt.padding: miss " + std::to_string(p.sbt_padding.miss) + ", hit " +
+                            std::to_string(p.sbt_padding.hit) + ", callable " +
+                            std::to_string(p.sbt_padding.callable) +
+                            " bytes, aligned up to shaderGroupHandleAlignment " +
+                            std::to_string(limits.handle_alignment) + ")");
 }
 
 }  // namespace

@@ -18,7 +18,8 @@ struct SbtBuffer {
   VkDeviceAddress base = 0;  // device address of the table (base-aligned)
 };
 
-// Throws VulkanError for a layout the device cannot take or a bad record.
+// Throws NotSupportedError for a layout the device's limits refuse (run_case
+// checks that before building anything), VulkanError for a bad record.
 SbtBuffer createSbtBuffer(const VulkanContext& ctx, const Pipeline& p, VkPipeline pipeline, Cleanup& cleanup);
 
 }  // namespace rayspec

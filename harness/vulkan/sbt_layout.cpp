@@ -1,5 +1,6 @@
 #include "vulkan/sbt_layout.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace rayspec {
@@ -14,7 +15,7 @@ std::vector<SbtRecord> orDefault(const std::vector<SbtRecord>& given, size_t gro
   return out;
 }
 
-bool writeRecord(const SbtLimits& limits, uint64_t at, std::optional<uint32_t> group,
+bool writeRecord(const SbtLimits& limits, uint32_t record_data, uint64_t at, std::optional<uint32_t> group,
                  uint32_t group_base, uint32_t group_limit, const std::vector<uint32_t>& data,
                  const std::vector<uint8_t>& handles, std::vector<uint8_t>* out,
                  const std::string& what, std::string* error) {
@@ -24,9 +25,9 @@ bool writeRecord(const SbtLimits& limits, uint64_t at, std::optional<uint32_t> g
              std::to_string(group_limit) + " groups)";
     return false;
   }
-  if (data.size() * 4 > kSbtRecordDataBytes) {
+  if (data.size() * 4 > std::min(record_data, kSbtRecordDataBytes)) {
     *error = what + ": " + std::to_string(data.size()) + " data words (at most " +
-             std::to_string(kSbtRecordDataBytes / 4) + ")";
+             std::to_string(std::min(record_data, kSbtRecordDataBytes) / 4) + ")";
     return false;
   }
   uint64_t src = static_cast<uint64_t>(group_base + *group) * limits.handle_size;
@@ -39,12 +40,13 @@ bool writeRecord(const SbtLimits& limits, uint64_t at, std::optional<uint32_t> g
   return true;
 }
 
-bool writeRegion(const SbtLimits& limits, const SbtRegion& region, const std::vector<SbtRecord>& records,
-                 uint32_t group_base, uint32_t group_limit, const std::vector<uint8_t>& handles,
-                 std::vector<uint8_t>* out, const char* name, std::string* error) {
+bool writeRegion(const SbtLimits& limits, uint32_t record_data, const SbtRegion& region,
+                 const std::vector<SbtRecord>& records, uint32_t group_base, uint32_t group_limit,
+                 const std::vector<uint8_t>& handles, std::vector<uint8_t>* out, const char* name,
+                 std::string* error) {
   for (size_t i = 0; i < records.size(); ++i) {
     std::string what = std::string("sbt ") + name + " record " + std::to_string(i);
-    if (!writeRecord(limits, region.offset + i * region.stride, records[i].group, group_base,
+    if (!writeRecord(limits, record_data, region.offset + i * region.stride, records[i].group, group_base,
                      group_limit, records[i].data, handles, out, what, error))
       return false;
   }
@@ -72,22 +74,28 @@ std::vector<SbtRecord> sbtCallableRecords(const Pipeline& p) {
   return orDefault(p.sbt_callable, p.callables.size());
 }
 
+uint64_t sbtStride(const SbtLimits& limits, uint32_t record_data, uint32_t padding) {
+  return alignUp(uint64_t{limits.handle_size} + record_data + padding, limits.handle_alignment);
+}
+
 SbtLayout computeSbtLayout(const SbtLimits& limits, const Pipeline& p) {
-  const uint64_t stride = alignUp(limits.handle_size + kSbtRecordDataBytes, limits.handle_alignment);
+  const uint32_t k = p.sbt_record_data;
+  const uint64_t raygen = sbtStride(limits, k, 0);
   SbtLayout layout;
-  layout.raygen = {0, stride, stride, 1};
-  uint64_t end = stride;
-  auto place = [&](SbtRegion& region, size_t count) {
+  layout.raygen = {0, raygen, raygen, 1};
+  uint64_t end = raygen;
+  auto place = [&](SbtRegion& region, size_t count, uint32_t padding) {
     if (count == 0) return;  // empty region: all zero
+    const uint64_t stride = sbtStride(limits, k, padding);
     region.count = static_cast<uint32_t>(count);
     region.offset = alignUp(end, limits.base_alignment);
     region.stride = stride;
     region.size = stride * count;
     end = region.offset + region.size;
   };
-  place(layout.miss, sbtMissRecords(p).size());
-  place(layout.hit, sbtHitRecords(p).size());
-  place(layout.callable, sbtCallableRecords(p).size());
+  place(layout.miss, sbtMissRecords(p).size(), p.sbt_padding.miss);
+  place(layout.hit, sbtHitRecords(p).size(), p.sbt_padding.hit);
+  place(layout.callable, sbtCallableRecords(p).size(), p.sbt_padding.callable);
   layout.total_size = end;
   return layout;
 }
@@ -142,12 +150,13 @@ bool writeSbt(const SbtLayout& layout, const SbtLimits& limits, const Pipeline& 
     *error = "sbt: " + std::to_string(handles.size()) + " handle bytes, need " + std::to_string(need);
     return false;
   }
-  return writeRegion(limits, layout.raygen, {raygen}, 0, 1, handles, out, "raygen", error) &&
-         writeRegion(limits, layout.miss, sbtMissRecords(p), sbtMissGroup(p, 0),
+  const uint32_t k = p.sbt_record_data;
+  return writeRegion(limits, k, layout.raygen, {raygen}, 0, 1, handles, out, "raygen", error) &&
+         writeRegion(limits, k, layout.miss, sbtMissRecords(p), sbtMissGroup(p, 0),
                      static_cast<uint32_t>(p.miss.size()), handles, out, "miss", error) &&
-         writeRegion(limits, layout.hit, sbtHitRecords(p), sbtHitGroup(p, 0),
+         writeRegion(limits, k, layout.hit, sbtHitRecords(p), sbtHitGroup(p, 0),
                      static_cast<uint32_t>(p.hit_groups.size()), handles, out, "hit", error) &&
-         writeRegion(limits, layout.callable, sbtCallableRecords(p), sbtCallableGroup(p, 0),
+         writeRegion(limits, k, layout.callable, sbtCallableRecords(p), sbtCallableGroup(p, 0),
                      static_cast<uint32_t>(p.callables.size()), handles, out, "callable", error);
 }
 

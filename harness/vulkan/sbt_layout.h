@@ -8,11 +8,15 @@
 //   groups M+1 .. M+H        hit groups, in case order          (H = hit group count)
 //   groups M+H+1 .. M+H+C    callables, in case order           (C = callable count)
 //
-// Every record is the group handle followed by kSbtRecordDataBytes of shader
-// record data (zero unless the case gives data), so one stride fits all
-// records: alignUp(handleSize + 32, handleAlignment). Regions start at
-// multiples of shaderGroupBaseAlignment in the order raygen, miss, hit,
-// callable; the raygen region's stride equals its size (one record).
+// Every record is the group handle followed by K = pipeline.sbt_record_data
+// bytes of shader record data (0..32, default 32; zero unless the case gives
+// data), then the region's padding P (pipeline.sbt_padding, default 0): the
+// stride of the miss, hit and callable regions is
+// alignUp(handleSize + K + P, handleAlignment), so with K = P = 0 it is the
+// handle size (when that is a multiple of the alignment). The raygen region
+// holds one record, alignUp(handleSize + K, handleAlignment) bytes: its
+// stride equals its size. Regions start at multiples of
+// shaderGroupBaseAlignment in the order raygen, miss, hit, callable.
 // An empty region has offset, stride and size 0 (device address 0).
 #pragma once
 
@@ -24,7 +28,7 @@
 
 namespace rayspec {
 
-constexpr uint32_t kSbtRecordDataBytes = 32;  // 8 words
+constexpr uint32_t kSbtRecordDataBytes = kMaxShaderRecordDataBytes;  // at most 8 words
 
 struct SbtLimits {
   uint32_t handle_size = 32;
@@ -55,6 +59,9 @@ std::vector<SbtRecord> sbtMissRecords(const Pipeline& p);
 std::vector<SbtRecord> sbtHitRecords(const Pipeline& p);
 std::vector<SbtRecord> sbtCallableRecords(const Pipeline& p);
 
+// alignUp(handle_size + record_data + padding, handle_alignment).
+uint64_t sbtStride(const SbtLimits& limits, uint32_t record_data, uint32_t padding);
+
 SbtLayout computeSbtLayout(const SbtLimits& limits, const Pipeline& p);
 
 // Checks the layout against the rules of vkCmdTraceRaysKHR (strides multiple of
@@ -64,8 +71,9 @@ bool checkSbtLayout(const SbtLayout& layout, const SbtLimits& limits, std::strin
 
 // The table bytes (layout.total_size): per record the handle of its group
 // (handles: sbtGroupCount(p) * handle_size bytes, as the device returns them),
-// then its data words; all-zero records stay zero. false with *error for a
-// group index out of range or more than 8 data words.
+// then its data words; all-zero records stay zero, and so does the padding.
+// false with *error for a group index out of range or more data words than
+// the record holds (pipeline.sbt_record_data / 4).
 bool writeSbt(const SbtLayout& layout, const SbtLimits& limits, const Pipeline& p,
               const std::vector<uint8_t>& handles, std::vector<uint8_t>* out, std::string* error);
 
