@@ -1,5 +1,6 @@
 // The run loop as a program: model isolation, children that die with their
-// parent, interrupted runs, case errors, exit statuses, long ray lists.
+// parent, interrupted runs, case errors, exit statuses, long ray lists, device
+// errors.
 #include <gtest/gtest.h>
 
 #include <signal.h>
@@ -388,6 +389,42 @@ TEST(LongRayLists, ListOf40000RaysWithAnImagePassesUnderValidation) {
   const nlohmann::json summary = summaryOf(out + "/run");
   EXPECT_EQ(caseIn(summary, "long-list").first, "Pass") << caseIn(summary, "long-list").second;
   EXPECT_TRUE(summary["validation"].get<bool>());
+}
+
+}  // namespace
+
+namespace {
+
+// A Vulkan call that fails on one case (planted: the driver loses the device,
+// runs out of memory, refuses the pipeline) gives that case its status, and
+// the run goes on: the other case passes, in a child process or on the one
+// device of --no-isolation.
+TEST(DeviceErrors, TheFailingCaseGetsItsStatusAndTheRunGoesOn) {
+  struct Expect {
+    const char* fault;
+    const char* status;
+    const char* headline;
+    int exit;
+  };
+  const Expect expects[] = {
+      {"device-lost", "Crash", "device lost: vkWaitForFences returned VK_ERROR_DEVICE_LOST", 1},
+      {"out-of-device-memory", "NotSupported", "out of memory: vkAllocateMemory returned VK_ERROR_OUT_OF_DEVICE_MEMORY", 0},
+      {"pipeline-refused", "Fail", "the driver refused the pipeline", 1}};
+  for (const Expect& e : expects)
+    for (const std::string isolation : {"", " --no-isolation"}) {
+      const std::string out = fresh(std::string("device-error-") + e.fault + (isolation.empty() ? "" : "-in-process"));
+      const int status = sh(kBin + " run" + caseArg("sbt/hit-group-index") + caseArg("results/miss-xor-closest-hit") +
+                                " --plant-fault " + e.fault + " --plant-fault-in sbt/hit-group-index --out " + out +
+                                isolation,
+                            out + "/log");
+      const std::string what = std::string(e.fault) + isolation;
+      EXPECT_EQ(status, e.exit) << what << "\n" << slurp(out + "/log");
+      const nlohmann::json summary = summaryOf(out);
+      const auto [faulted, headline] = caseIn(summary, "sbt/hit-group-index");
+      EXPECT_EQ(faulted, e.status) << what;
+      EXPECT_NE(headline.find(e.headline), std::string::npos) << what << ": " << headline;
+      EXPECT_EQ(caseIn(summary, "results/miss-xor-closest-hit").first, "Pass") << what;
+    }
 }
 
 }  // namespace

@@ -36,7 +36,9 @@ bool usesSkipRayFlags(const Rays& rays) {
   return false;
 }
 
-void checkSupport(const VulkanContext& ctx, const Case& c) {
+}  // namespace
+
+void checkCaseSupport(const VulkanContext& ctx, const Case& c) {
   const DeviceInfo& d = ctx.info;
   if (c.rays.rays.size() != static_cast<size_t>(c.rays.width) * c.rays.height || c.rays.rays.empty())
     throw VulkanError("case has " + std::to_string(c.rays.rays.size()) + " rays for a " +
@@ -72,10 +74,8 @@ void checkSupport(const VulkanContext& ctx, const Case& c) {
                             std::to_string(limits.handle_alignment) + ")");
 }
 
-}  // namespace
-
 void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results& r) {
-  checkSupport(ctx, c);
+  checkCaseSupport(ctx, c);
   CompiledPipeline compiled = compilePipeline(generateGlsl(c, plan));
 
   CaseScope scope(ctx.device);

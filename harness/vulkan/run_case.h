@@ -8,6 +8,11 @@
 
 namespace rayspec {
 
+// Throws NotSupportedError when the device's limits or features cannot run
+// the case (recursion depth, launch size, dispatch size, primitive culling,
+// the SBT's strides), before anything is built.
+void checkCaseSupport(const VulkanContext& ctx, const Case& c);
+
 // Fills r's outputs; throws ShaderCompileError, NotSupportedError or
 // VulkanError (VulkanBackend::run turns them into the status). Every object
 // it creates is destroyed before it returns or throws.

@@ -1,0 +1,102 @@
+// Device errors: what a failed Vulkan call means for the case, the run going
+// on after each (a lost device is made again), and limits a case exceeds.
+#include <gtest/gtest.h>
+
+#include "suite_cases.h"
+#include "plan/plan.h"
+#include "vulkan/context.h"
+#include "vulkan/device_errors.h"
+#include "vulkan/run_case.h"
+#include "vulkan/vulkan_backend.h"
+
+namespace rayspec {
+namespace {
+
+TEST(DeviceErrors, EachFailedCallHasItsStatus) {
+  const DeviceErrorStatus lost = classifyVulkanError(VulkanError("x", "vkQueueSubmit", VK_ERROR_DEVICE_LOST));
+  EXPECT_EQ(lost.status, RunStatus::Crash);
+  EXPECT_TRUE(lost.device_lost);
+  EXPECT_EQ(lost.detail, "device lost: vkQueueSubmit returned VK_ERROR_DEVICE_LOST; the next case gets a new device");
+  for (VkResult oom : {VK_ERROR_OUT_OF_DEVICE_MEMORY, VK_ERROR_OUT_OF_HOST_MEMORY}) {
+    const DeviceErrorStatus s = classifyVulkanError(VulkanError("x", "vkAllocateMemory", oom));
+    EXPECT_EQ(s.status, RunStatus::NotSupported);
+    EXPECT_FALSE(s.device_lost);
+    EXPECT_EQ(s.detail.rfind("out of memory: vkAllocateMemory returned VK_ERROR_OUT_OF_", 0), 0u) << s.detail;
+  }
+  const DeviceErrorStatus refused =
+      classifyVulkanError(VulkanError("x", "vkCreateRayTracingPipelinesKHR", VK_ERROR_INITIALIZATION_FAILED));
+  EXPECT_EQ(refused.status, RunStatus::Refused);
+  EXPECT_NE(refused.detail.find("the driver refused the pipeline"), std::string::npos);
+  const DeviceErrorStatus other = classifyVulkanError(VulkanError("vkMapMemory: VK_ERROR_MEMORY_MAP_FAILED",
+                                                                  "vkMapMemory", VK_ERROR_MEMORY_MAP_FAILED));
+  EXPECT_EQ(other.status, RunStatus::Crash);
+  EXPECT_EQ(other.detail, "vkMapMemory: VK_ERROR_MEMORY_MAP_FAILED");
+  for (const std::string& name : deviceErrorFaultNames()) EXPECT_TRUE(deviceErrorFault(name)) << name;
+  EXPECT_FALSE(deviceErrorFault("crash"));
+}
+
+Case suiteCase(const std::string& name) {
+  const std::optional<CaseFile> f = findCase(name, "", kSuiteCases);
+  if (!f) return {};
+  ParseResult p = loadSuiteCase(*f);
+  return p.value ? *p.value : Case{};
+}
+
+// On one device, as --no-isolation runs: a case whose call fails gets its
+// status, with no validation message, and the next case passes on the same
+// backend (a new VkDevice after a lost one).
+TEST(DeviceErrors, TheNextCaseRunsAfterEachError) {
+  std::string error;
+  auto backend = VulkanBackend::create(VulkanOptions{}, &error);
+  if (!backend) GTEST_SKIP() << "no Vulkan ray tracing device: " << error;
+  const Case c = suiteCase("sbt/hit-group-index");
+  ASSERT_FALSE(c.name.empty());
+  const Plan plan = derivePlan(c);
+  const Results clean = backend->run(c, plan);
+  ASSERT_TRUE(clean.ok()) << clean.statusText();
+  const std::pair<const char*, RunStatus> faults[] = {{"device-lost", RunStatus::Crash},
+                                                      {"out-of-device-memory", RunStatus::NotSupported},
+                                                      {"pipeline-refused", RunStatus::Refused}};
+  for (const auto& [name, status] : faults) {
+    injectVkError(*deviceErrorFault(name));
+    const Results failed = backend->run(c, plan);
+    injectVkError({});
+    EXPECT_EQ(failed.status, status) << name << ": " << failed.statusText();
+    EXPECT_TRUE(failed.records.empty()) << name;
+    EXPECT_TRUE(failed.validation_messages.empty()) << name << ": " << failed.validation_messages.front();
+    const Results next = backend->run(c, plan);
+    EXPECT_TRUE(next.ok()) << "after " << name << ": " << next.statusText();
+    EXPECT_EQ(next.records, clean.records) << "after " << name;
+    EXPECT_TRUE(next.validation_messages.empty()) << name << ": " << next.validation_messages.front();
+  }
+  EXPECT_TRUE(backend->close().empty()) << "every object of the failed cases was destroyed";
+}
+
+// A launch beyond the device's limits is NotSupported before anything is built.
+TEST(DeviceErrors, ADispatchTooLargeForTheDeviceIsNotSupported) {
+  const Case c = suiteCase("sbt/hit-group-index");  // a 6x3 launch
+  ASSERT_FALSE(c.name.empty());
+  VulkanContext ctx;
+  ctx.info.max_ray_recursion_depth = 31;
+  for (uint64_t& size : ctx.info.max_launch_size) size = 1u << 16;
+  ctx.info.max_ray_dispatch_invocation_count = 1u << 20;
+  ctx.rt_props.shaderGroupHandleSize = 32;
+  ctx.rt_props.shaderGroupHandleAlignment = 32;
+  ctx.rt_props.shaderGroupBaseAlignment = 64;
+  ctx.rt_props.maxShaderGroupStride = 4096;
+  ctx.primitive_culling = true;
+  EXPECT_NO_THROW(checkCaseSupport(ctx, c));
+  ctx.info.max_ray_dispatch_invocation_count = 17;
+  try {
+    checkCaseSupport(ctx, c);
+    ADD_FAILURE() << "no NotSupportedError";
+  } catch (const NotSupportedError& e) {
+    EXPECT_STREQ(e.what(), "launch of 18 rays > maxRayDispatchInvocationCount 17");
+  }
+  ctx.info.max_ray_dispatch_invocation_count = 1u << 20;
+  ctx.info.max_launch_size[0] = 5;
+  EXPECT_THROW(checkCaseSupport(ctx, c), NotSupportedError);
+}
+
+}  // namespace
+}  // namespace rayspec
