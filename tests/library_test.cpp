@@ -76,7 +76,7 @@ TEST(ExpandSweep, ASweepTooLargeIsAnErrorNotAnExhaustedMachine) {
   const SweepExpansion wide = expandSweep(doubling + "x: ${v24}\n", "f.sweep.yaml", "x/f");
   ASSERT_EQ(wide.errors.size(), 1u);
   EXPECT_EQ(wide.errors[0].format(), "f.sweep.yaml:29:1: the parameters' values name each other too deeply (over "
-                                     "10000 substitutions, or a line over 256 KiB)");
+                                     "10000 substitutions, or a line over 64 KiB)");
 }
 
 TEST(ExpandSweep, ErrorsNameTheFileLineAndField) {

@@ -158,6 +158,7 @@ TEST(Isolation, ModelCrashIsACrash) {
 }
 
 TEST(Isolation, ModelBeyondTheMemoryLimitIsACrash) {
+  if (!memoryLimitApplies()) GTEST_SKIP() << "AddressSanitizer build: no memory limit is set on children";
   const Case c = loadCase("results/miss-xor-closest-hit");
   // Without a limit it holds 1 GiB and answers; under 256 MiB it cannot.
   auto hog = [] {
@@ -187,6 +188,25 @@ bool processGone(pid_t pid) {
   std::string stat((std::istreambuf_iterator<char>(in)), {});
   const size_t paren = stat.rfind(')');
   return paren == std::string::npos || stat[paren + 2] == 'Z' || stat[paren + 2] == 'X';
+}
+
+// Under AddressSanitizer a child checks for leaks before it exits (an
+// ordinary exit would skip LeakSanitizer): a leak ends it with kChildLeaked.
+TEST(ChildProcess, ALeakIsFoundUnderAddressSanitizer) {
+  if (!kAddressSanitizer) GTEST_SKIP() << "only the asan preset checks children for leaks";
+  const ChildEnd clean = runChild([](std::string&) { return 0; }, ChildLimits{});
+  EXPECT_EQ(clean.code, 0);
+  const ChildEnd leaky = runChild(
+      [](std::string&) {
+        int* lost = new int[1000];
+        lost[0] = 1;
+        lost = nullptr;
+        return 0;
+      },
+      ChildLimits{});
+  EXPECT_EQ(leaky.how, ChildEnd::How::Exited);
+  EXPECT_EQ(leaky.code, kChildLeaked);
+  EXPECT_NE(describeChildEnd(leaky, "the model process", ChildLimits{}).find("leaked memory"), std::string::npos);
 }
 
 TEST(ChildProcess, DiesWithItsParent) {

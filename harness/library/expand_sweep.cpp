@@ -12,7 +12,7 @@ namespace rayspec {
 namespace {
 
 constexpr size_t kMaxVariants = 10000;          // cases one sweep may make
-constexpr size_t kMaxLineBytes = 256u << 10;    // one substituted line
+constexpr size_t kMaxLineBytes = 64u << 10;     // one substituted line
 constexpr int kMaxSubstitutions = 10000;         // in one line
 constexpr size_t kMaxSweepBytes = 256u << 20;   // all variants' text together
 
@@ -122,18 +122,22 @@ class Expander {
 std::string substitute(const std::string& line, const Params& params, const std::string& file, int line_no,
                        const std::string& field, std::vector<CaseError>* errors) {
   std::string out = line;
-  size_t pos = 0;    // where the next '}' is looked for
-  size_t floor = 0;  // a "${" before this is left alone (it holds an unknown name)
+  std::vector<size_t> opens;  // positions of the "${" not closed yet (one pass, left to right)
   std::set<std::string> unknown;
-  for (int steps = 0; steps < kMaxSubstitutions && out.size() <= kMaxLineBytes; ++steps) {
-    const size_t close = out.find('}', pos);
-    if (close == std::string::npos) return out;
-    const size_t open = out.rfind("${", close);
-    if (open == std::string::npos || open < floor) {
-      pos = close + 1;
+  int steps = 0;
+  for (size_t i = 0; i < out.size();) {
+    if (out[i] == '$' && i + 1 < out.size() && out[i + 1] == '{') {
+      opens.push_back(i);
+      i += 2;
       continue;
     }
-    const std::string name = out.substr(open + 2, close - open - 2);
+    if (out[i] != '}' || opens.empty()) {
+      ++i;
+      continue;
+    }
+    const size_t open = opens.back();
+    opens.pop_back();
+    const std::string name = out.substr(open + 2, i - open - 2);
     const std::string* value = nullptr;
     for (const auto& [k, v] : params)
       if (k == name) value = &v;
@@ -144,18 +148,21 @@ std::string substitute(const std::string& line, const Params& params, const std:
         errors->push_back({SourceLoc{file, line_no, static_cast<int>(open) + 1, field},
                            "'${" + name + "}' names no parameter of the sweep (parameters: " + known + ")"});
       }
-      pos = floor = close + 1;
+      ++i;
       continue;
     }
-    out.replace(open, close + 1 - open, *value);
-    pos = open;  // the value may bring ${...} of its own, or complete an enclosing one
+    if (++steps > kMaxSubstitutions || out.size() - (i + 1 - open) + value->size() > kMaxLineBytes) {
+      if (errors)
+        errors->push_back({SourceLoc{file, line_no, 1, field},
+                           "the parameters' values name each other too deeply (over " +
+                               std::to_string(kMaxSubstitutions) + " substitutions, or a line over " +
+                               std::to_string(kMaxLineBytes >> 10) + " KiB)"});
+      return {};
+    }
+    out.replace(open, i + 1 - open, *value);
+    i = open;  // the value may hold ${...} of its own, or complete an enclosing one
   }
-  if (errors)
-    errors->push_back({SourceLoc{file, line_no, 1, field},
-                       "the parameters' values name each other too deeply (over " +
-                           std::to_string(kMaxSubstitutions) + " substitutions, or a line over " +
-                           std::to_string(kMaxLineBytes >> 10) + " KiB)"});
-  return {};
+  return out;
 }
 
 std::vector<std::string> splitLines(const std::string& text) {

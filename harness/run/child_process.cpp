@@ -1,5 +1,10 @@
 #include "run/child_process.h"
 
+#if defined(__SANITIZE_ADDRESS__)
+#include <sanitizer/lsan_interface.h>
+#define RAYSPEC_LSAN_CHECK 1
+#endif
+
 #include <fcntl.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
@@ -18,6 +23,18 @@
 #include "run/interrupt.h"
 
 namespace rayspec {
+
+bool memoryLimitApplies() { return !kAddressSanitizer; }
+
+namespace {
+bool leaksFound() {
+#if defined(RAYSPEC_LSAN_CHECK)
+  return __lsan_do_recoverable_leak_check() != 0;
+#else
+  return false;
+#endif
+}
+}  // namespace
 namespace {
 
 void outOfMemory() {
@@ -56,7 +73,9 @@ bool drain(int fd, std::string& into) {
   prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (getppid() != parent) _exit(kChildOrphaned);
   defaultInterrupts();
-  if (limits.memory_limit) {
+  // Under AddressSanitizer (the asan preset) the shadow memory alone is far
+  // beyond any data limit: there the limit is not set.
+  if (limits.memory_limit && memoryLimitApplies()) {
     const rlimit rl{limits.memory_limit, limits.memory_limit};
     setrlimit(RLIMIT_DATA, &rl);
   }
@@ -69,6 +88,9 @@ bool drain(int fd, std::string& into) {
     message = e.what();
     code = kChildException;
   }
+  // _exit skips LeakSanitizer's check at exit: under AddressSanitizer the
+  // child checks before it goes (tools/sanitizers/lsan.supp).
+  if (kAddressSanitizer && code == 0 && leaksFound()) code = kChildLeaked;
   writeAll(fd, message);
   close(fd);
   std::fflush(nullptr);
@@ -155,6 +177,8 @@ std::string describeChildEnd(const ChildEnd& end, const std::string& who, const 
         s << who << " ran out of memory (--memory-limit " << formatBytes(limits.memory_limit) << ")";
       else if (end.code == kChildException)
         s << who << " threw: " << end.message;
+      else if (end.code == kChildLeaked)
+        s << who << " leaked memory (LeakSanitizer's report is on its standard error)";
       else
         s << who << " exited with status " << end.code;
       break;

@@ -17,6 +17,23 @@
 
 namespace rayspec {
 
+// Built with AddressSanitizer (the asan preset)?
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+inline constexpr bool kAddressSanitizer = true;
+#else
+inline constexpr bool kAddressSanitizer = false;
+#endif
+#else
+inline constexpr bool kAddressSanitizer = false;
+#endif
+
+// Whether ChildLimits::memory_limit is set on children: not under
+// AddressSanitizer, whose shadow memory alone is beyond any data limit.
+bool memoryLimitApplies();
+
 struct ChildLimits {
   double timeout_seconds = 0;  // 0: none
   uint64_t memory_limit = 0;   // bytes of private writable memory (RLIMIT_DATA); 0: none
@@ -26,6 +43,7 @@ struct ChildLimits {
 inline constexpr int kChildOutOfMemory = 113;  // operator new failed under the memory limit
 inline constexpr int kChildException = 114;    // an exception escaped the body (message: what())
 inline constexpr int kChildOrphaned = 115;     // the parent was gone before the child started
+inline constexpr int kChildLeaked = 116;       // AddressSanitizer build: LeakSanitizer found a leak
 
 struct ChildEnd {
   enum class How { Exited, Signaled, TimedOut, Interrupted, NotStarted };
