@@ -146,8 +146,11 @@ TEST(Model, DirectChunkedPathMatchesGeneralPath) {
     EXPECT_GT(d1.counters["miss"], 0u);
     EXPECT_EQ(d1.counters, d3.counters);
     // Hit kinds come from the facing, computed only because closest-hit reads it.
-    for (uint32_t i = 0; i < 1600; ++i)
-      if (word(d1, i, "hit") == 1) EXPECT_EQ(word(d1, i, "hit_kind"), 0xFEu) << i;
+    for (uint32_t i = 0; i < 1600; ++i) {
+      if (word(d1, i, "hit") == 1) {
+        EXPECT_EQ(word(d1, i, "hit_kind"), 0xFEu) << i;
+      }
+    }
 
     // Counters only: no records at all, the same counts.
     Case counts = direct;

@@ -6,6 +6,8 @@
 // a validation error).
 #include <gtest/gtest.h>
 
+#include "sbt_support.h"
+
 #include <cstring>
 
 #include "case/parse_case.h"
@@ -16,6 +18,9 @@
 
 namespace rayspec {
 namespace {
+using sbt_test::allBytes;
+using sbt_test::fakeHandles;
+using sbt_test::wordAt;
 
 // handle size, handle alignment, base alignment, maxShaderGroupStride
 SbtLimits lavapipe() { return {32, 16, 32, 16384}; }
@@ -35,18 +40,6 @@ Pipeline shaped(uint32_t record_data, SbtPadding padding, size_t miss = 2, size_
 SbtPadding all(uint32_t p) { return {p, p, p}; }
 
 // Handle bytes of group g: every byte 0x10 + g.
-std::vector<uint8_t> fakeHandles(const Pipeline& p, const SbtLimits& l) {
-  std::vector<uint8_t> h(sbtGroupCount(p) * l.handle_size);
-  for (size_t i = 0; i < h.size(); ++i) h[i] = static_cast<uint8_t>(0x10 + i / l.handle_size);
-  return h;
-}
-
-uint32_t wordAt(const std::vector<uint8_t>& b, uint64_t at) {
-  uint32_t w;
-  std::memcpy(&w, b.data() + at, 4);
-  return w;
-}
-
 TEST(SbtStride, DefaultShapeKeepsTheOldStride) {
   Pipeline p;
   EXPECT_EQ(p.sbt_record_data, 32u);

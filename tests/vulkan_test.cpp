@@ -3,6 +3,8 @@
 // tracing device (lavapipe here) with the validation layer on.
 #include <gtest/gtest.h>
 
+#include "sbt_support.h"
+
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
@@ -19,6 +21,9 @@
 
 namespace rayspec {
 namespace {
+using sbt_test::allBytes;
+using sbt_test::fakeHandles;
+using sbt_test::wordAt;
 
 // ---------------------------------------------------------------- SBT layout
 
@@ -38,25 +43,6 @@ SbtRecord rec(std::optional<uint32_t> group, std::vector<uint32_t> data = {}) {
   r.group = group;
   r.data = std::move(data);
   return r;
-}
-
-// Handle bytes of group g: every byte 0x10 + g, so a copied handle is visible.
-std::vector<uint8_t> fakeHandles(const Pipeline& p, const SbtLimits& l) {
-  std::vector<uint8_t> h(sbtGroupCount(p) * l.handle_size);
-  for (size_t i = 0; i < h.size(); ++i) h[i] = static_cast<uint8_t>(0x10 + i / l.handle_size);
-  return h;
-}
-
-bool allBytes(const std::vector<uint8_t>& b, uint64_t at, uint64_t n, uint8_t v) {
-  for (uint64_t i = 0; i < n; ++i)
-    if (b[at + i] != v) return false;
-  return true;
-}
-
-uint32_t wordAt(const std::vector<uint8_t>& b, uint64_t at) {
-  uint32_t w;
-  std::memcpy(&w, b.data() + at, 4);
-  return w;
 }
 
 TEST(SbtLayout, GroupOrderIsRaygenMissHitCallable) {
@@ -545,7 +531,9 @@ TEST(VulkanDevice, EveryCaseFileRunsCleanly) {
     EXPECT_TRUE(r.ok() || r.status == RunStatus::NotSupported) << c.name << ": " << r.statusText();
     EXPECT_TRUE(r.validation_messages.empty()) << c.name << ": " << r.validation_messages.front();
     if (!r.ok()) continue;
-    if (plan.records) EXPECT_EQ(r.records.size(), size_t(c.rays.width) * c.rays.height * recordWords()) << c.name;
+    if (plan.records) {
+      EXPECT_EQ(r.records.size(), size_t(c.rays.width) * c.rays.height * recordWords()) << c.name;
+    }
     EXPECT_EQ(r.counters.size(), plan.counters.size()) << c.name;
     EXPECT_EQ(r.images.size(), plan.images.size()) << c.name;
   }
