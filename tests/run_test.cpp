@@ -150,7 +150,12 @@ TEST(Isolation, ModelHangIsATimeout) {
 
 TEST(Isolation, ModelCrashIsACrash) {
   const Case c = loadCase("results/miss-xor-closest-hit");
-  const SideResult m = runIsolated(misbehavingSide([] { std::raise(SIGSEGV); }), c, derivePlan(c), ChildLimits{30, 0},
+  // SIG_DFL: the signal itself, not AddressSanitizer's report of it (asan preset).
+  const SideResult m = runIsolated(misbehavingSide([] {
+                                     std::signal(SIGSEGV, SIG_DFL);
+                                     std::raise(SIGSEGV);
+                                   }),
+                                   c, derivePlan(c), ChildLimits{30, 0},
                                    tempDir("crash"));
   EXPECT_EQ(m.results.status, RunStatus::Crash);
   EXPECT_NE(m.results.status_detail.find("the model process died of signal 11"), std::string::npos)
