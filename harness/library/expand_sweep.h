@@ -2,7 +2,8 @@
 // `sweep:` block that names parameters; every combination of their values is
 // one case, named <family>/<stem>/<variant>. Each `${parameter}` in the rest
 // of the file is replaced by the value's YAML text (a list or map in flow
-// style, a scalar as written). The sweep block is blanked, not removed, so a
+// style, a scalar as written); values may hold ${...} too, and names nest
+// (${prog_${stage}}), innermost first. The sweep block is blanked, not removed, so a
 // variant's lines are the file's lines and every error names the sweep file.
 //
 //   sweep:
