@@ -58,7 +58,7 @@ std::string editedCase(const std::string& name, const std::string& from, const s
 
 // Starts a shell command in the background (exec'd: the pid is the program's).
 pid_t spawn(const std::string& command, const std::string& log) {
-  const std::string line = "exec " + command + " > " + log + " 2>&1";
+  const std::string line = "unset GTEST_TOTAL_SHARDS GTEST_SHARD_INDEX GTEST_SHARD_STATUS_FILE; exec " + command + " > " + log + " 2>&1";
   const pid_t pid = fork();
   if (pid == 0) {
     execl("/bin/sh", "sh", "-c", line.c_str(), static_cast<char*>(nullptr));
@@ -181,6 +181,27 @@ TEST_F(KilledRun, ReportsStayMarkedInterrupted) {
   EXPECT_EQ(slurp(out_ + "/summary.txt").rfind("INTERRUPTED: 1 of 2 planned cases ran\n", 0), 0u)
       << slurp(out_ + "/summary.txt");
   EXPECT_NE(slurp(out_ + "/report.html").find("INTERRUPTED: 1 of 2 planned cases ran"), std::string::npos);
+}
+
+// The killed run finished by --resume: the case it had is kept as it was
+// (its bundle untouched), the rest run, and the reports are complete.
+TEST_F(KilledRun, ResumeFinishesItAndKeepsWhatRan) {
+  const std::string kept = out_ + "/results/miss-xor-closest-hit/device/results.json";
+  ASSERT_TRUE(fs::exists(kept));
+  const auto written = fs::last_write_time(kept);
+  const std::string run = kBin + " run --no-validation --resume" + caseArg("results/miss-xor-closest-hit") +
+                          caseArg("anyhit/ignore-odd-primitives") + " --out " + out_;
+  ASSERT_EQ(sh(run, out_ + "/resume.txt"), 0) << slurp(out_ + "/resume.txt");
+  EXPECT_NE(slurp(out_ + "/resume.txt").find("1 cases already ran"), std::string::npos) << slurp(out_ + "/resume.txt");
+  EXPECT_EQ(fs::last_write_time(kept), written) << "the case that ran before ran again";
+  const nlohmann::json summary = summaryOf(out_);
+  EXPECT_FALSE(summary["interrupted"].get<bool>());
+  ASSERT_EQ(summary["cases"].size(), 2u);
+  EXPECT_EQ(summary["cases"][1]["status"], "Pass");
+  EXPECT_EQ(slurp(out_ + "/summary.txt").rfind("complete: 2 of 2 cases\n", 0), 0u) << slurp(out_ + "/summary.txt");
+  // Resuming into a folder from another kind of run is refused.
+  EXPECT_EQ(sh(run + " --model fast", out_ + "/resume-fast.txt"), 2);
+  EXPECT_NE(slurp(out_ + "/resume-fast.txt").find("model tier"), std::string::npos) << slurp(out_ + "/resume-fast.txt");
 }
 
 // ---- item 8: SIGINT / SIGTERM ----------------------------------------------

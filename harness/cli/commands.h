@@ -34,9 +34,17 @@ struct ListOptions {
   std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
 };
 
+struct MergeOptions {
+  std::vector<std::string> dirs;  // run folders to join
+  std::string out = "rayspec-merged";
+  std::string baseline, flakes, skips;
+  std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
+};
+
 int runDevices(const DevicesOptions& opt);
 int runShow(const ShowOptions& opt);
 int runList(const ListOptions& opt);
 int runCompare(const CompareOptions& opt);
+int runMerge(const MergeOptions& opt);
 
 }  // namespace rayspec

@@ -25,7 +25,18 @@ int main(int argc, char** argv) {
   run->add_option("--model", run_opt.model_tier, "Model precision tier: fast, robust or exact")
       ->check(CLI::IsMember({"fast", "robust", "exact"}))->capture_default_str();
   run->add_option("--baseline", run_opt.baseline,
-                  "Known failures of this driver (case,Status lines): matching results do not fail the run");
+                  "Expected results of this driver (case,Status lines; unlisted: Pass). The run fails on anything "
+                  "unexpected (an unexpected failure is re-run once to tell a flake; an unexpected pass fails "
+                  "until the baseline is updated) and writes failures.csv");
+  run->add_option("--flakes", run_opt.flakes,
+                  "Regular expressions of cases known to flake (default: <baseline>-flakes.txt beside it)");
+  run->add_option("--skips", run_opt.skips,
+                  "Regular expressions of cases not to run (default: <baseline>-skips.txt beside it)");
+  run->add_option("--shard", run_opt.shard,
+                  "Run shard I of N (I/N, from 1): every N-th case from the I-th; without it, GTEST_TOTAL_SHARDS "
+                  "and GTEST_SHARD_INDEX are honoured");
+  run->add_flag("--resume", run_opt.resume,
+                "Keep the cases the --out folder already holds (a run that was killed) and run the rest");
   run->add_option("--rules", run_opt.rules_file, "Rule catalog (references/spec-rules.yaml)")->capture_default_str();
   run->add_flag("--no-model", run_opt.no_model, "Run the device only");
   run->add_flag("--no-device", run_opt.no_device, "Run the model only");
@@ -64,6 +75,16 @@ int main(int argc, char** argv) {
   compare->add_option("--cases", compare_opt.cases_dir, "Folder of case files (when a bundle's case file moved)")
       ->capture_default_str();
 
+  auto* merge = app.add_subcommand("merge", "Join run folders (shards, or runs of one device on several machines) "
+                                            "into one, with its reports");
+  rayspec::MergeOptions merge_opt;
+  merge->add_option("dirs", merge_opt.dirs, "Run folders")->required()->check(CLI::ExistingDirectory);
+  merge->add_option("--out", merge_opt.out, "Folder for the merged run")->capture_default_str();
+  merge->add_option("--baseline", merge_opt.baseline, "Judge the merged results against this baseline anew");
+  merge->add_option("--flakes", merge_opt.flakes, "Flakes file (default: beside the baseline)");
+  merge->add_option("--skips", merge_opt.skips, "Skips file (default: beside the baseline)");
+  merge->add_option("--rules", merge_opt.rules_file, "Rule catalog")->capture_default_str();
+
   auto* show = app.add_subcommand("show", "Print a parsed case, its plan and its generated GLSL");
   rayspec::ShowOptions show_opt;
   show->add_option("case", show_opt.case_file, "Case file (or case name under cases/)");
@@ -85,5 +106,6 @@ int main(int argc, char** argv) {
   if (*run) return rayspec::runCases(run_opt);
   if (*show) return rayspec::runShow(show_opt);
   if (*compare) return rayspec::runCompare(compare_opt);
+  if (*merge) return rayspec::runMerge(merge_opt);
   return 2;
 }

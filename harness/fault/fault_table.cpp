@@ -121,6 +121,7 @@ const std::vector<FaultImpl>& faultImpls() {
        nullptr, openAabbInterval},
       // Process faults, raised in the device's child process.
       {"crash", K::Process, "the device process dies (SIGSEGV) after the run"},
+      {"crash-once", K::Process, "the device process dies (SIGSEGV) the first time each case runs, not in its re-run"},
       {"hang", K::Process, "the device process never returns"},
   };
   return table;

@@ -1,15 +1,37 @@
 #include <csignal>
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <fcntl.h>
 
 #include "fault/planted_fault.h"
 
 namespace rayspec {
+namespace {
 
-void raiseProcessFault(const std::string& name) {
-  if (name == "crash") {
-    std::signal(SIGSEGV, SIG_DFL);
-    std::raise(SIGSEGV);
-  }
+void crash() {
+  std::signal(SIGSEGV, SIG_DFL);
+  std::raise(SIGSEGV);
+}
+
+// True the first time a case asks in this run folder: a marker file there
+// records it.
+bool firstTimeInThisRun(const std::string& run_dir, const std::string& case_name) {
+  const std::string marker = run_dir + "/.crash-once-" + std::to_string(std::hash<std::string>{}(case_name));
+  const int fd = open(marker.c_str(), O_CREAT | O_EXCL | O_WRONLY, 0600);
+  if (fd < 0) return false;
+  close(fd);
+  return true;
+}
+
+}  // namespace
+
+void raiseProcessFault(const std::string& name, const std::string& case_name, const std::string& run_dir) {
+  if (name == "crash") crash();
+  if (name == "crash-once" && firstTimeInThisRun(run_dir, case_name)) crash();
   if (name == "hang")
     for (;;) pause();
 }

@@ -1,29 +1,56 @@
-// Known failures of one driver, for regression checks: a CSV file in
-// deqp-runner's baseline form, one `case,Status` line each (statuses by their
-// rayspec names), '#' comments saying why. A case whose status equals its
-// baseline entry is an expected result: reported as such, and it does not fail
-// the run. A case that got better (its baseline says Fail, it passes) is an
-// unexpected pass: reported so the baseline can shrink; it does not fail.
-// Anything else that is not Pass fails as usual.
+// What a driver is known to do, for regression checks (deqp-runner's three
+// files, kept per driver in references/baselines/):
+//   <driver>.csv         expected results: `case,Status` lines (rayspec status
+//                        names, the name a CSV field as results.csv writes it),
+//                        '#' comments saying why; a case not listed is
+//                        expected to pass
+//   <driver>-flakes.txt  regular expressions (ECMAScript, one a line, found
+//                        anywhere in the name unless anchored): cases known to
+//                        give different results run to run
+//   <driver>-skips.txt   regular expressions: cases not to run on this driver
+//                        (each reported as NotSupported, never as a pass)
+// The gate (report/baseline_gate.h) judges each outcome against them.
 #pragma once
 
 #include <map>
+#include <regex>
 #include <string>
+#include <vector>
 
 #include "compare/verdict.h"
-#include "report/case_outcome.h"
 
 namespace rayspec {
 
-struct Baseline {
-  std::string file;
-  std::map<std::string, Status> expected;  // case name -> status
+// One regular expression of a flakes or skips file, with where it came from.
+struct NamePattern {
+  std::string text;   // as written
+  std::string where;  // "file:line"
+  std::regex regex;
 };
 
-// Reads a baseline; error names the file and line of a malformed entry.
+struct Baseline {
+  std::string file, flakes_file, skips_file;  // "" when not used
+  std::map<std::string, Status> expected;      // case name -> status
+  std::vector<NamePattern> flakes, skips;
+  bool empty() const { return file.empty() && flakes_file.empty() && skips_file.empty(); }
+};
+
+// Reads a baseline CSV; error names the file and line of a malformed entry.
 Baseline loadBaseline(const std::string& path, std::string* error);
 
-// Sets outcome.baseline from the baseline entry of its case, if any.
-void applyBaseline(const Baseline& baseline, CaseOutcome& outcome);
+// Reads a flakes or skips file; error names the file and line of a regular
+// expression that does not compile.
+std::vector<NamePattern> loadNamePatterns(const std::string& path, std::string* error);
+
+// The first pattern found in `name`, or nullptr.
+const NamePattern* findPattern(const std::vector<NamePattern>& patterns, const std::string& name);
+
+// The flakes and skips files that go with a baseline CSV when none are named:
+// <stem>-flakes.txt and <stem>-skips.txt beside it, if they exist ("" if not).
+std::string siblingFile(const std::string& baseline_csv, const std::string& suffix);
+
+// The whole set: the CSV (may be ""), and the flakes and skips files (given,
+// or the CSV's siblings). error: the first problem, naming file and line.
+Baseline loadBaselineSet(const std::string& csv, std::string flakes, std::string skips, std::string* error);
 
 }  // namespace rayspec

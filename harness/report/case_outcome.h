@@ -15,8 +15,16 @@ struct RayRow {
   std::string field, device, model;
 };
 
-// How a case's status relates to the driver's baseline (report/baseline.h).
-enum class BaselineMatch { None, Expected, UnexpectedPass };
+// How a case's result stands against the driver's baseline (report/baseline.h,
+// judged by report/baseline_gate.h).
+enum class BaselineMatch {
+  None,            // no baseline, or a result it says nothing about: judged by its status alone
+  Expected,        // the baseline lists exactly this result
+  UnexpectedPass,  // the baseline expects a failure and the case no longer fails: update the baseline
+  KnownFlake,      // an unexpected result of a case the flakes file names
+  Flake,           // an unexpected failure that its re-run did not repeat
+  Skipped,         // named by the skips file: not run
+};
 
 struct CaseOutcome {
   std::string name;
@@ -28,6 +36,7 @@ struct CaseOutcome {
   std::vector<std::string> images;  // image names; files at <case>/{device,model,diff}/<name>.png
   std::vector<RayRow> failing_rays;
   BaselineMatch baseline = BaselineMatch::None;
+  std::string baseline_note;        // why: the entry, pattern (file:line) or re-run that decided it
   std::string device_name;          // the device that ran it (results bundle)
 };
 

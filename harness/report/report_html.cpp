@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "report/baseline_gate.h"
 #include "report/escape.h"
 #include "report/write_reports.h"
 
@@ -63,8 +64,9 @@ void imageFigure(std::ostream& out, const std::string& dir, const std::string& r
 void caseBlock(std::ostream& out, const CaseOutcome& o, const std::string& dir) {
   out << "<div class=\"case\" id=\"" << xmlEscape(o.name) << "\"><h3>" << xmlEscape(o.name) << " <span class=\""
       << statusName(o.status) << "\">" << statusName(o.status) << "</span>"
-      << (o.baseline == BaselineMatch::Expected ? " (expected by the baseline)" : "")
-      << (o.baseline == BaselineMatch::UnexpectedPass ? " (unexpected pass: the baseline expects a failure)" : "")
+      << (o.baseline == BaselineMatch::None ? std::string()
+                                            : std::string(" (") + gateWord(o.baseline) + ": " +
+                                                  xmlEscape(o.baseline_note) + ")")
       << "</h3>\n";
   out << "<p>" << xmlEscape(o.headline) << "</p><p>rules:";
   for (const auto& r : o.rules) out << ' ' << xmlEscape(r);

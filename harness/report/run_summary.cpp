@@ -5,7 +5,16 @@
 
 #include <unistd.h>
 
+#include "report/baseline_gate.h"
+
 namespace rayspec {
+namespace {
+
+std::string gateTag(const CaseOutcome& o) {
+  return o.baseline == BaselineMatch::None ? std::string() : std::string("  [") + gateWord(o.baseline) + "]";
+}
+
+}  // namespace
 
 void RunSummary::starting(const std::string& name) {
   if (!isatty(STDOUT_FILENO)) return;
@@ -16,13 +25,13 @@ void RunSummary::starting(const std::string& name) {
 
 void RunSummary::add(const CaseOutcome& o) {
   outcomes_.push_back(o);
+  if (!progress_) return;
   if (live_) std::printf("\r\x1b[K");
   live_ = false;
   std::printf("[%zu/%zu] %-44s %-14s device %7.3f s  model %7.3f s\n", outcomes_.size(), total_, o.name.c_str(),
               statusName(o.status), o.device_seconds, o.model_seconds);
   if (o.status != Status::Pass) std::printf("        %s\n", o.headline.c_str());
-  if (o.baseline == BaselineMatch::Expected) std::printf("        (expected: the baseline lists it)\n");
-  if (o.baseline == BaselineMatch::UnexpectedPass) std::printf("        (unexpected pass: remove it from the baseline)\n");
+  if (o.baseline != BaselineMatch::None) std::printf("        (%s: %s)\n", gateWord(o.baseline), o.baseline_note.c_str());
   std::fflush(stdout);
 }
 
@@ -31,9 +40,7 @@ void RunSummary::addTeardownError(const std::string& m) { teardown_errors_.push_
 bool RunSummary::failed() const {
   if (!teardown_errors_.empty()) return true;
   for (const CaseOutcome& o : outcomes_)
-    if (isFailing(o.status) &&
-        o.baseline != BaselineMatch::Expected)
-      return true;
+    if (failsRun(o)) return true;
   return false;
 }
 
@@ -52,24 +59,26 @@ void RunSummary::print() const {
   bool header = false;
   for (const CaseOutcome& o : outcomes_) {
     if (o.status == Status::CaseError) continue;  // listed apart below
-    if (o.status == Status::Pass) {
-      if (o.baseline == BaselineMatch::UnexpectedPass)
-        std::printf("  %-44s Pass, but the baseline expects a failure: update it\n", o.name.c_str());
-      continue;
-    }
-    if (!header) std::printf("Not passing:\n");
+    if (o.status == Status::Pass && o.baseline == BaselineMatch::None) continue;
+    if (!header) std::printf("Not passing, or not as the baseline expects:\n");
     header = true;
-    std::printf("  %-44s %s%s\n", o.name.c_str(), o.headline.c_str(),
-                o.baseline == BaselineMatch::Expected ? "  [expected by the baseline]" : "");
+    std::printf("  %-44s %s%s\n", o.name.c_str(), o.headline.c_str(), gateTag(o).c_str());
   }
   header = false;
   for (const CaseOutcome& o : outcomes_) {
     if (o.status != Status::CaseError) continue;
     if (!header) std::printf("Case errors (the case itself is at fault, not the device):\n");
     header = true;
-    std::printf("  %-44s %s%s\n", o.name.c_str(), o.headline.c_str(),
-                o.baseline == BaselineMatch::Expected ? "  [expected by the baseline]" : "");
+    std::printf("  %-44s %s%s\n", o.name.c_str(), o.headline.c_str(), gateTag(o).c_str());
   }
+  size_t unexpected = 0, flakes = 0, gated = 0;
+  for (const CaseOutcome& o : outcomes_) {
+    unexpected += failsRun(o);
+    flakes += o.baseline == BaselineMatch::Flake;
+    gated += o.baseline != BaselineMatch::None;
+  }
+  if (gated)
+    std::printf("Gate: %zu unexpected results fail the run, %zu flakes (see failures.csv)\n", unexpected, flakes);
   for (const std::string& m : teardown_errors_) std::printf("  validation error at device teardown: %s\n", m.c_str());
 }
 

@@ -11,7 +11,8 @@ namespace rayspec {
 
 class RunSummary {
  public:
-  explicit RunSummary(size_t total) : total_(total) {}
+  // progress: a line per case as it is added (a merge adds them quietly).
+  explicit RunSummary(size_t total, bool progress = true) : total_(total), progress_(progress) {}
   // On a terminal: a live "[i/N] running NAME..." line until add().
   void starting(const std::string& name);
   void add(const CaseOutcome& outcome);          // prints the progress line
@@ -24,6 +25,7 @@ class RunSummary {
 
  private:
   size_t total_;
+  bool progress_;
   bool live_ = false;  // a live line is on screen
   std::vector<CaseOutcome> outcomes_;
   std::vector<std::string> teardown_errors_;

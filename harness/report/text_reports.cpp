@@ -6,7 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "report/baseline_gate.h"
 #include "report/escape.h"
+#include "report/outcome_json.h"
 #include "report/write_reports.h"
 
 namespace rayspec {
@@ -26,13 +28,7 @@ const char* deqpStatusName(Status s) {
 
 std::string writeResultsCsv(const std::vector<CaseOutcome>& outcomes, const std::string& path) {
   std::ofstream out(path);
-  // deqp-runner's names for results a baseline expected.
-  for (const CaseOutcome& o : outcomes) {
-    const char* status = deqpStatusName(o.status);
-    if (o.baseline == BaselineMatch::Expected && o.status != Status::Pass) status = "ExpectedFail";
-    if (o.baseline == BaselineMatch::UnexpectedPass) status = "UnexpectedImprovement(Pass)";
-    out << csvField(o.name) << ',' << status << ',' << o.seconds << '\n';
-  }
+  for (const CaseOutcome& o : outcomes) out << csvField(o.name) << ',' << deqpResultName(o) << ',' << o.seconds << '\n';
   return out ? std::string() : "cannot write " + path;
 }
 
@@ -74,6 +70,7 @@ std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const Run
   j["device"] = info.device;
   j["model_tier"] = info.model_tier;
   j["started"] = info.started;
+  j["baseline"] = info.baseline;
   j["validation"] = info.validation;
   j["teardown_validation_errors"] = info.teardown_errors;
   j["planned_cases"] = std::max(info.planned_cases, outcomes.size());
@@ -82,27 +79,14 @@ std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const Run
   for (Status s : kAllStatuses)
     counts[statusName(s)] = 0;
   j["cases"] = nlohmann::json::array();
-  std::vector<std::string> case_errors;
+  std::vector<std::string> case_errors, failing;
   for (const CaseOutcome& o : outcomes) {
     ++counts[statusName(o.status)];
-    nlohmann::json c{{"name", o.name}, {"status", statusName(o.status)}, {"headline", o.headline},
-                     {"seconds", o.seconds}, {"device_seconds", o.device_seconds},
-                     {"model_seconds", o.model_seconds}, {"rules", o.rules},
-                     {"baseline", o.baseline == BaselineMatch::Expected        ? "expected"
-                                  : o.baseline == BaselineMatch::UnexpectedPass ? "unexpected_pass"
-                                                                                : ""}};
-    c["findings"] = nlohmann::json::array();
-    for (const Finding& f : o.verdict.findings)
-      c["findings"].push_back({{"status", statusName(f.status)}, {"rule", f.rule}, {"message", f.message},
-                               {"rays", f.rays}, {"ray_count", f.ray_count}});
-    // Apart from the findings: rays never judged (R-UB).
-    c["undefined"] = nlohmann::json::array();
-    for (const UndefinedRays& u : o.verdict.undefined)
-      c["undefined"].push_back({{"reason", undefinedReasonName(u.reason)}, {"ray_count", u.ray_count},
-                                {"rays", u.rays}, {"what", u.what}});
     if (o.status == Status::CaseError) case_errors.push_back(o.name);
-    j["cases"].push_back(c);
+    if (failsRun(o)) failing.push_back(o.name);
+    j["cases"].push_back(outcomeJson(o));
   }
+  j["fails_run"] = failing;  // the cases that make the run fail (baseline applied)
   j["counts"] = counts;
   j["case_errors"] = case_errors;  // cases at fault themselves, not the device
   std::ofstream out(path);
@@ -155,6 +139,7 @@ std::string writeReports(const std::vector<CaseOutcome>& outcomes, const RunInfo
   for (const std::string& err :
        {writeResultsCsv(outcomes, dir + "/results.csv"), writeJunitXml(outcomes, dir + "/junit.xml"),
         writeSummaryJson(outcomes, info, dir + "/summary.json"), writeSummaryText(outcomes, info, dir + "/summary.txt"),
+        writeFailuresCsv(outcomes, info.baseline, dir + "/failures.csv"),
         writeReportHtml(outcomes, info, dir + "/report.html")})
     if (!err.empty()) return err;
   return {};

@@ -7,6 +7,8 @@
 //                 planned_cases and interrupted
 //   summary.txt   a line saying whether the run is complete, then the same for
 //                 people, one block per case, CaseError cases apart
+//   failures.csv  the results the baseline did not expect, in baseline form
+//                 (report/baseline_gate.h); every failure when there is none
 //   report.html   whether the run is complete, failing cases first, then the case
 //                 errors (the case at fault, not the device), device / model /
 //                 difference images side by side, per-ray tables of failing rays,
@@ -24,6 +26,7 @@ namespace rayspec {
 
 struct RunInfo {
   std::string device, model_tier, started;
+  std::string baseline;  // the baseline file the run was judged by ("" none)
   bool validation = false;
   size_t planned_cases = 0;  // cases the run set out to run (0: as many as it has outcomes)
   // Not every planned case ran: the run is still going, was stopped by a

@@ -7,6 +7,7 @@
 #include "compare/compare_results.h"
 #include "fault/planted_fault.h"
 #include "plan/plan.h"
+#include "report/baseline_gate.h"
 #include "run/judge_case.h"
 #include "run/model_adapter.h"
 #include "run/vulkan_adapter.h"
@@ -38,8 +39,8 @@ Side deviceSide(const RunOptions& opt, const Results& model, const std::string& 
     return s;
   }
   if (!fault.empty())
-    s.after = [fault, &model](const Case& c, const Plan& plan, Results& device) -> std::string {
-      raiseProcessFault(fault);  // crash, hang: only in a child (run loop refuses them in process)
+    s.after = [fault, &model, out = opt.out](const Case& c, const Plan& plan, Results& device) -> std::string {
+      raiseProcessFault(fault, c.name, out);  // crash, hang: only in a child (run loop refuses them in process)
       if (isProcessFault(fault)) return {};
       const FaultResult f = plantFault(fault, c, plan, device, model);
       return (f.applied ? "planted fault " : "planted fault not applicable: ") + fault + ": " + f.what;
@@ -98,10 +99,10 @@ SideResult CaseRunner::runSide(const Side& side, Backend* in_process, const Case
   return runIsolated(side, c, plan, ChildLimits{opt_.timeout, opt_.memory_limit}, dir);
 }
 
-CaseOutcome CaseRunner::run(const Case& c, bool* interrupted) const {
+CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string& subfolder) const {
   *interrupted = false;
   const Plan plan = derivePlan(c);
-  const std::string dir = opt_.out + "/" + c.name;
+  const std::string dir = opt_.out + "/" + c.name + subfolder;
   std::error_code ec;
   std::filesystem::remove_all(dir, ec);  // no stale bundle from an earlier run
   Results device, model;
@@ -151,7 +152,6 @@ CaseOutcome CaseRunner::run(const Case& c, bool* interrupted) const {
 
 void reportCase(CaseOutcome outcome, const Baseline& baseline, const RunInfo& info, const std::string& dir,
                 RunSummary& summary, const ReportWriter& write) {
-  applyBaseline(baseline, outcome);
   std::vector<CaseOutcome> all = summary.outcomes();
   all.push_back(outcome);
   std::string err;

@@ -46,7 +46,8 @@ class CaseRunner {
       : opt_(options), device_(device), model_(model) {}
   // Runs the case on the sides asked for and judges it. Throws HarnessError.
   // *interrupted: a signal stopped a side; the outcome means nothing then.
-  CaseOutcome run(const Case& c, bool* interrupted) const;
+  // The bundles go to <out>/<case name><subfolder> (a re-run: "/rerun").
+  CaseOutcome run(const Case& c, bool* interrupted, const std::string& subfolder = "") const;
 
  private:
   SideResult runSide(const Side& side, Backend* in_process, const Case& c, const Plan& plan,
@@ -60,8 +61,9 @@ class CaseRunner {
 using ReportWriter =
     std::function<std::string(const std::vector<CaseOutcome>&, const RunInfo&, const std::string& dir)>;
 
-// Applies the baseline, adds the outcome to the summary (its progress line)
-// and rewrites the reports with it.
+// Adds the outcome (the baseline already applied) to the summary (its
+// progress line) and rewrites the reports with it; when writing them throws,
+// the case becomes a CaseError, judged by the baseline anew.
 void reportCase(CaseOutcome outcome, const Baseline& baseline, const RunInfo& info, const std::string& dir,
                 RunSummary& summary, const ReportWriter& write = writeReports);
 

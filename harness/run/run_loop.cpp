@@ -4,17 +4,21 @@
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <map>
 #include <filesystem>
 #include <memory>
 #include <optional>
 
 #include "fault/planted_fault.h"
 #include "metamorphic/permute_case.h"
+#include "report/baseline_gate.h"
+#include "report/outcome_json.h"
 #include "report/rule_catalog.h"
 #include "run/case_steps.h"
 #include "run/device_probe.h"
 #include "run/interrupt.h"
 #include "run/model_adapter.h"
+#include "run/shard.h"
 #include "run/vulkan_adapter.h"
 #include "vulkan/device_errors.h"
 
@@ -45,6 +49,23 @@ std::vector<CaseFile> caseFiles(const RunOptions& opt) {
   return files;
 }
 
+// The shard asked for (--shard, else GoogleTest's variables), if any.
+std::optional<Shard> chosenShard(const RunOptions& opt, std::string* error) {
+  if (!opt.shard.empty()) return parseShard(opt.shard, error);
+  return shardFromEnvironment(error);
+}
+
+// --resume: what the run folder already holds must come from the same kind
+// of run. The message, or "".
+std::string resumeError(const SavedRun& saved, const RunInfo& info, const std::string& out) {
+  if (saved.info.model_tier != info.model_tier)
+    return "--resume: " + out + " was run with model tier '" + saved.info.model_tier + "', this run uses '" +
+           info.model_tier + "'";
+  if (saved.info.device != info.device)
+    return "--resume: " + out + " was run on '" + saved.info.device + "', this run is on '" + info.device + "'";
+  return {};
+}
+
 // Options that cannot work together; the message, or "".
 std::string optionError(const RunOptions& opt) {
   if (!opt.no_validation && opt.strict_validation && !validationLayerInstalled())
@@ -60,7 +81,7 @@ std::string optionError(const RunOptions& opt) {
 }  // namespace
 
 int runCases(const RunOptions& opt) {
-  const std::vector<CaseFile> files = caseFiles(opt);
+  std::vector<CaseFile> files = caseFiles(opt);
   if (files.empty()) {
     std::fprintf(stderr, "rayspec run: no case matches '%s' in %s\n", opt.filter.c_str(), opt.cases_dir.c_str());
     return kExitSetup;
@@ -68,6 +89,23 @@ int runCases(const RunOptions& opt) {
   if (const std::string err = optionError(opt); !err.empty()) {
     std::fprintf(stderr, "rayspec run: %s\n", err.c_str());
     return kExitSetup;
+  }
+  std::string shard_error;
+  const std::optional<Shard> shard = chosenShard(opt, &shard_error);
+  if (!shard_error.empty()) {
+    std::fprintf(stderr, "rayspec run: %s\n", shard_error.c_str());
+    return kExitSetup;
+  }
+  if (shard) {
+    const size_t all = files.size();
+    std::vector<CaseFile> mine;
+    for (size_t i : shardPositions(all, *shard)) mine.push_back(std::move(files[i]));
+    files = std::move(mine);
+    if (files.empty()) {
+      std::fprintf(stderr, "rayspec run: %s holds no case (there are %zu)\n", shard->describe().c_str(), all);
+      return kExitSetup;
+    }
+    std::printf("Shard: %s, %zu of %zu cases\n", shard->describe().c_str(), files.size(), all);
   }
   RunInfo info;
   info.started = now();
@@ -79,15 +117,13 @@ int runCases(const RunOptions& opt) {
   if (!catalog_error.empty()) std::fprintf(stderr, "rayspec run: %s\n", catalog_error.c_str());
   if (!opt.plant_fault.empty()) std::printf("Planted fault: %s (test only)\n", opt.plant_fault.c_str());
 
-  Baseline baseline;
-  if (!opt.baseline.empty()) {
-    std::string baseline_error;
-    baseline = loadBaseline(opt.baseline, &baseline_error);
-    if (!baseline_error.empty()) {
-      std::fprintf(stderr, "rayspec run: %s\n", baseline_error.c_str());
-      return kExitSetup;
-    }
+  std::string baseline_error;
+  const Baseline baseline = loadBaselineSet(opt.baseline, opt.flakes, opt.skips, &baseline_error);
+  if (!baseline_error.empty()) {
+    std::fprintf(stderr, "rayspec run: %s\n", baseline_error.c_str());
+    return kExitSetup;
   }
+  info.baseline = baseline.file;
 
   // The device must exist before any case runs. Isolated, the parent never
   // initialises Vulkan: a short child process looks; without isolation one
@@ -130,8 +166,25 @@ int runCases(const RunOptions& opt) {
   if (!opt.no_isolation)
     std::printf("Each case side in its own process: timeout %g s, memory limit %s\n", opt.timeout,
                 opt.memory_limit ? formatBytes(opt.memory_limit).c_str() : "none");
-  if (!opt.baseline.empty())
-    std::printf("Baseline: %s (%zu known results)\n", opt.baseline.c_str(), baseline.expected.size());
+  if (!baseline.file.empty())
+    std::printf("Baseline: %s (%zu known results)\n", baseline.file.c_str(), baseline.expected.size());
+  if (!baseline.flakes_file.empty())
+    std::printf("Flakes: %s (%zu patterns)\n", baseline.flakes_file.c_str(), baseline.flakes.size());
+  if (!baseline.skips_file.empty())
+    std::printf("Skips: %s (%zu patterns)\n", baseline.skips_file.c_str(), baseline.skips.size());
+  std::map<std::string, CaseOutcome> earlier;  // --resume: the cases the folder already has
+  if (opt.resume) {
+    std::string error;
+    SavedRun saved = readSavedRun(opt.out, &error);
+    if (error.empty()) error = resumeError(saved, info, opt.out);
+    if (!error.empty()) {
+      std::fprintf(stderr, "rayspec run: %s\n", error.c_str());
+      return kExitSetup;
+    }
+    info.started = saved.info.started;
+    for (CaseOutcome& o : saved.outcomes) earlier[o.name] = std::move(o);
+    std::printf("Resuming %s: %zu cases already ran\n", opt.out.c_str(), earlier.size());
+  }
 
   catchInterrupts();
   const CaseRunner runner(opt, device.get(), model.get());
@@ -141,20 +194,37 @@ int runCases(const RunOptions& opt) {
   std::vector<std::pair<std::string, std::vector<std::string>>> case_rules;
   for (const CaseFile& f : files) {
     if (interruptSignal()) break;
+    if (auto it = earlier.find(f.name); it != earlier.end()) {
+      case_rules.push_back({f.name, it->second.rules});
+      summary.add(it->second);  // ran before: kept as it was judged
+      continue;
+    }
     summary.starting(f.name);
     const auto start = std::chrono::steady_clock::now();
-    const ParseResult parsed = loadCase(f, opt.cases_dir, labels.empty() ? nullptr : &labels);
     bool interrupted = false;
     CaseOutcome outcome;
-    if (std::optional<CaseOutcome> error = caseFileError(f, parsed)) {
-      outcome = *error;
+    if (const NamePattern* skip = findPattern(baseline.skips, f.name)) {
+      outcome = skippedOutcome(f.name, *skip);
     } else {
-      std::optional<Case> permuted;  // --permute: the case with its primitives and instances permuted
-      if (opt.permute) permuted = permuteCase(*parsed.value, *opt.permute).permuted;
-      const Case& c = permuted ? *permuted : *parsed.value;
-      outcome = guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted); });
-      if (interrupted) break;
-      case_rules.push_back({c.name, c.rules});
+      const ParseResult parsed = loadCase(f, opt.cases_dir, labels.empty() ? nullptr : &labels);
+      if (std::optional<CaseOutcome> error = caseFileError(f, parsed)) {
+        outcome = *error;
+        applyBaseline(baseline, outcome);
+      } else {
+        std::optional<Case> permuted;  // --permute: the case with its primitives and instances permuted
+        if (opt.permute) permuted = permuteCase(*parsed.value, *opt.permute).permuted;
+        const Case& c = permuted ? *permuted : *parsed.value;
+        outcome = guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted); });
+        if (interrupted) break;
+        case_rules.push_back({c.name, c.rules});
+        if (applyBaseline(baseline, outcome)) {
+          // An unexpected failure: once more, into <case>/rerun, to tell a flake.
+          std::printf("        unexpected %s: running it again\n", statusName(outcome.status));
+          const CaseOutcome again = guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted, "/rerun"); });
+          if (interrupted) break;
+          applyRerun(outcome, again);
+        }
+      }
     }
     outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     info.coverage = ruleCoverage(info.catalog, case_rules);

@@ -40,7 +40,10 @@ struct RunOptions {
   std::string plant_fault;       // test only: fault/planted_fault.h
   std::string plant_fault_in = "*";  // only in cases whose name matches this glob
   std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
-  std::string baseline;          // known failures of this driver (report/baseline.h)
+  std::string baseline;          // expected results of this driver (report/baseline.h)
+  std::string flakes, skips;     // its flakes and skips files ("": the baseline's siblings, if any)
+  std::string shard;             // "I/N": every N-th case from the I-th (run/shard.h)
+  bool resume = false;           // keep the cases `out` already has, run the rest
   std::optional<uint64_t> permute;  // run each case with primitives and instances permuted (metamorphic/)
 };
 

@@ -1,0 +1,38 @@
+#include <cstdio>
+
+#include "cli/commands.h"
+#include "report/merge_runs.h"
+#include "report/rule_catalog.h"
+#include "report/run_summary.h"
+#include "run/run_loop.h"
+
+namespace rayspec {
+
+int runMerge(const MergeOptions& opt) {
+  std::string error;
+  const Baseline baseline = loadBaselineSet(opt.baseline, opt.flakes, opt.skips, &error);
+  if (!error.empty()) {
+    std::fprintf(stderr, "rayspec merge: %s\n", error.c_str());
+    return kExitSetup;
+  }
+  const std::vector<Rule> catalog = loadRuleCatalog(opt.rules_file, &error);
+  if (!error.empty()) std::fprintf(stderr, "rayspec merge: %s\n", error.c_str());
+  const MergeResult merged = mergeRuns(opt.dirs, opt.out, baseline, catalog);
+  if (!merged.error.empty()) {
+    std::fprintf(stderr, "rayspec merge: %s\n", merged.error.c_str());
+    return kExitSetup;
+  }
+  RunSummary summary(merged.run.outcomes.size(), false);
+  for (const CaseOutcome& o : merged.run.outcomes) summary.add(o);
+  for (const std::string& m : merged.run.info.teardown_errors) summary.addTeardownError(m);
+  std::printf("Merged %zu folders: %zu cases on %s\n", opt.dirs.size(), merged.run.outcomes.size(),
+              merged.run.info.device.c_str());
+  summary.print();
+  if (merged.run.info.interrupted)
+    std::printf("INTERRUPTED: %zu of %zu planned cases ran\n", merged.run.outcomes.size(),
+                merged.run.info.planned_cases);
+  std::printf("Reports: %s/report.html, results.csv, failures.csv, junit.xml, summary.json\n", opt.out.c_str());
+  return runExitStatus(summary, merged.run.info.planned_cases, true, 0);
+}
+
+}  // namespace rayspec

@@ -1,0 +1,130 @@
+#include "report/outcome_json.h"
+
+#include <fstream>
+#include <stdexcept>
+
+namespace rayspec {
+namespace {
+
+constexpr BaselineMatch kMatches[] = {BaselineMatch::None,       BaselineMatch::Expected, BaselineMatch::UnexpectedPass,
+                                      BaselineMatch::KnownFlake, BaselineMatch::Flake,    BaselineMatch::Skipped};
+
+Status statusField(const nlohmann::json& j, const char* key) {
+  Status s;
+  if (!parseStatus(j.at(key).get<std::string>(), &s))
+    throw std::runtime_error(std::string("'") + key + "' is not a status: " + j.at(key).dump());
+  return s;
+}
+
+}  // namespace
+
+const char* baselineMatchName(BaselineMatch m) {
+  switch (m) {
+    case BaselineMatch::None: return "";
+    case BaselineMatch::Expected: return "expected";
+    case BaselineMatch::UnexpectedPass: return "unexpected_pass";
+    case BaselineMatch::KnownFlake: return "known_flake";
+    case BaselineMatch::Flake: return "flake";
+    case BaselineMatch::Skipped: return "skipped";
+  }
+  return "";
+}
+
+nlohmann::json outcomeJson(const CaseOutcome& o) {
+  nlohmann::json c{{"name", o.name},
+                   {"status", statusName(o.status)},
+                   {"headline", o.headline},
+                   {"seconds", o.seconds},
+                   {"device_seconds", o.device_seconds},
+                   {"model_seconds", o.model_seconds},
+                   {"rules", o.rules},
+                   {"baseline", baselineMatchName(o.baseline)},
+                   {"baseline_note", o.baseline_note},
+                   {"device_name", o.device_name},
+                   {"images", o.images}};
+  c["findings"] = nlohmann::json::array();
+  for (const Finding& f : o.verdict.findings)
+    c["findings"].push_back({{"status", statusName(f.status)}, {"rule", f.rule}, {"message", f.message},
+                             {"rays", f.rays}, {"ray_count", f.ray_count}});
+  // Apart from the findings: rays never judged (R-UB).
+  c["undefined"] = nlohmann::json::array();
+  for (const UndefinedRays& u : o.verdict.undefined)
+    c["undefined"].push_back({{"reason", undefinedReasonName(u.reason)}, {"ray_count", u.ray_count},
+                              {"rays", u.rays}, {"what", u.what}});
+  c["failing_rays"] = nlohmann::json::array();
+  for (const RayRow& r : o.failing_rays)
+    c["failing_rays"].push_back({{"ray", r.ray}, {"x", r.x}, {"y", r.y}, {"field", r.field}, {"device", r.device},
+                                 {"model", r.model}});
+  return c;
+}
+
+CaseOutcome outcomeFromJson(const nlohmann::json& j) {
+  CaseOutcome o;
+  o.name = j.at("name").get<std::string>();
+  try {
+    o.status = statusField(j, "status");
+    o.headline = j.at("headline").get<std::string>();
+    o.seconds = j.at("seconds").get<double>();
+    o.device_seconds = j.at("device_seconds").get<double>();
+    o.model_seconds = j.at("model_seconds").get<double>();
+    o.rules = j.at("rules").get<std::vector<std::string>>();
+    const std::string match = j.value("baseline", "");
+    bool known = false;
+    for (BaselineMatch m : kMatches)
+      if (match == baselineMatchName(m)) o.baseline = m, known = true;
+    if (!known) throw std::runtime_error("'baseline' is not a baseline result: " + match);
+    o.baseline_note = j.value("baseline_note", "");
+    o.device_name = j.value("device_name", "");
+    o.images = j.value("images", std::vector<std::string>{});
+    for (const nlohmann::json& f : j.at("findings"))
+      o.verdict.findings.push_back({statusField(f, "status"), f.at("rule").get<std::string>(),
+                                    f.at("message").get<std::string>(), f.at("rays").get<std::vector<uint32_t>>(),
+                                    f.at("ray_count").get<uint32_t>()});
+    for (const nlohmann::json& u : j.at("undefined")) {
+      UndefinedRays r;
+      if (!parseUndefinedReason(u.at("reason").get<std::string>(), &r.reason))
+        throw std::runtime_error("'reason' is not an undefined-behaviour reason: " + u.at("reason").dump());
+      r.ray_count = u.at("ray_count").get<uint32_t>();
+      r.rays = u.at("rays").get<std::vector<uint32_t>>();
+      r.what = u.at("what").get<std::string>();
+      o.verdict.undefined.push_back(r);
+    }
+    for (const nlohmann::json& r : j.value("failing_rays", nlohmann::json::array()))
+      o.failing_rays.push_back({r.at("ray").get<uint32_t>(), r.at("x").get<uint32_t>(), r.at("y").get<uint32_t>(),
+                                r.at("field").get<std::string>(), r.at("device").get<std::string>(),
+                                r.at("model").get<std::string>()});
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error("case " + o.name + ": " + e.what());
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error("case " + o.name + ": " + e.what());
+  }
+  o.verdict.status = o.status;
+  return o;
+}
+
+SavedRun readSavedRun(const std::string& dir, std::string* error) {
+  SavedRun run;
+  const std::string path = dir + "/summary.json";
+  std::ifstream in(path);
+  if (!in) {
+    *error = "cannot read " + path + " (not a rayspec run folder?)";
+    return run;
+  }
+  try {
+    const nlohmann::json j = nlohmann::json::parse(in);
+    run.info.device = j.at("device").get<std::string>();
+    run.info.model_tier = j.at("model_tier").get<std::string>();
+    run.info.started = j.at("started").get<std::string>();
+    run.info.baseline = j.value("baseline", "");
+    run.info.validation = j.at("validation").get<bool>();
+    run.info.teardown_errors = j.at("teardown_validation_errors").get<std::vector<std::string>>();
+    run.info.planned_cases = j.at("planned_cases").get<size_t>();
+    run.info.interrupted = j.at("interrupted").get<bool>();
+    for (const nlohmann::json& c : j.at("cases")) run.outcomes.push_back(outcomeFromJson(c));
+  } catch (const std::exception& e) {
+    *error = path + ": " + e.what();
+  }
+  return run;
+}
+
+}  // namespace rayspec

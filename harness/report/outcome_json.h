@@ -1,0 +1,31 @@
+// A case's outcome as JSON and back: summary.json holds one per case, and a
+// run folder read back (`--resume`, `rayspec merge`) is made of them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "report/case_outcome.h"
+#include "report/write_reports.h"
+
+namespace rayspec {
+
+const char* baselineMatchName(BaselineMatch m);  // "" for None, "expected", "unexpected_pass", ...
+
+nlohmann::json outcomeJson(const CaseOutcome& outcome);
+// Throws std::runtime_error naming the field that is missing or wrong.
+CaseOutcome outcomeFromJson(const nlohmann::json& j);
+
+// A run folder's summary.json read back: what ran, and every case's outcome
+// in the order they ran.
+struct SavedRun {
+  RunInfo info;
+  std::vector<CaseOutcome> outcomes;
+};
+// error: the folder has no readable summary.json, or names the case and
+// field that could not be read.
+SavedRun readSavedRun(const std::string& dir, std::string* error);
+
+}  // namespace rayspec

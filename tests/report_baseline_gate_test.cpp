@@ -1,0 +1,210 @@
+// The regression gate (report/baseline_gate.h), the flakes and skips files
+// (report/baseline.h), outcomes read back from summary.json
+// (report/outcome_json.h) and joined run folders (report/merge_runs.h).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "report/baseline.h"
+#include "report/baseline_gate.h"
+#include "report/merge_runs.h"
+#include "report/outcome_json.h"
+#include "report/run_summary.h"
+
+namespace rayspec {
+namespace {
+
+std::string writeFile(const std::string& name, const std::string& text) {
+  const std::string path = testing::TempDir() + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+CaseOutcome outcome(const std::string& name, Status s) {
+  CaseOutcome o;
+  o.name = name;
+  o.status = s;
+  o.headline = statusName(s);
+  return o;
+}
+
+Baseline gate() {
+  std::string error;
+  const std::string csv = writeFile("gate.csv", "fam/known,Fail  # driver bug\nfam/fixed,Crash\n");
+  writeFile("gate-flakes.txt", "# flaky on this driver\n^fam/wobbly  # issue 12\n");
+  writeFile("gate-skips.txt", "^slow/\n");
+  Baseline b = loadBaselineSet(csv, "", "", &error);
+  EXPECT_EQ(error, "");
+  return b;
+}
+
+TEST(BaselineGate, EachResultAgainstItsExpectation) {
+  const Baseline b = gate();
+  ASSERT_EQ(b.flakes.size(), 1u) << "the flakes file beside the baseline is found";
+  ASSERT_EQ(b.skips.size(), 1u);
+  struct Row {
+    std::string name;
+    Status status;
+    BaselineMatch match;
+    bool rerun, fails;
+  } rows[] = {
+      {"fam/known", Status::Fail, BaselineMatch::Expected, false, false},
+      {"fam/known", Status::Crash, BaselineMatch::None, true, true},         // a different failure
+      {"fam/fixed", Status::Pass, BaselineMatch::UnexpectedPass, false, true},
+      {"fam/fixed", Status::NotSupported, BaselineMatch::UnexpectedPass, false, true},
+      {"fam/new", Status::Fail, BaselineMatch::None, true, true},
+      {"fam/new", Status::Pass, BaselineMatch::None, false, false},
+      {"fam/new", Status::QualityWarning, BaselineMatch::None, false, false},
+      {"fam/new", Status::NotSupported, BaselineMatch::None, false, false},
+      {"fam/wobbly-one", Status::Timeout, BaselineMatch::KnownFlake, false, false},
+      {"other/fam/wobbly", Status::Fail, BaselineMatch::None, true, true},  // the pattern is anchored
+  };
+  for (const Row& r : rows) {
+    CaseOutcome o = outcome(r.name, r.status);
+    EXPECT_EQ(applyBaseline(b, o), r.rerun) << r.name << " " << statusName(r.status);
+    EXPECT_EQ(o.baseline, r.match) << r.name << " " << statusName(r.status) << ": " << o.baseline_note;
+    EXPECT_EQ(failsRun(o), r.fails) << r.name << " " << statusName(r.status);
+  }
+}
+
+TEST(BaselineGate, ARerunThatDiffersIsAFlakeAndOneThatRepeatsFails) {
+  const Baseline b = gate();
+  CaseOutcome first = outcome("fam/new", Status::Crash);
+  ASSERT_TRUE(applyBaseline(b, first));
+  CaseOutcome repeated = first;
+  applyRerun(repeated, outcome("fam/new", Status::Crash));
+  EXPECT_TRUE(failsRun(repeated));
+  EXPECT_NE(repeated.baseline_note.find("again"), std::string::npos) << repeated.baseline_note;
+  applyRerun(first, outcome("fam/new", Status::Pass));
+  EXPECT_EQ(first.baseline, BaselineMatch::Flake);
+  EXPECT_FALSE(failsRun(first));
+  EXPECT_EQ(first.status, Status::Crash) << "the first result is kept; the flake is a note on it";
+}
+
+TEST(BaselineGate, SkippedCasesAreNotSupportedNeverPass) {
+  const Baseline b = gate();
+  const NamePattern* p = findPattern(b.skips, "slow/huge");
+  ASSERT_NE(p, nullptr);
+  EXPECT_EQ(findPattern(b.skips, "fam/slow/x"), nullptr);
+  const CaseOutcome o = skippedOutcome("slow/huge", *p);
+  EXPECT_EQ(o.status, Status::NotSupported);
+  EXPECT_EQ(o.baseline, BaselineMatch::Skipped);
+  EXPECT_NE(o.headline.find("gate-skips.txt:1"), std::string::npos) << o.headline;
+  EXPECT_STREQ(deqpResultName(o), "Skip");
+}
+
+TEST(BaselineGate, FailuresCsvIsABaselineOfWhatWasUnexpected) {
+  const Baseline b = gate();
+  std::vector<CaseOutcome> all = {outcome("fam/known", Status::Fail), outcome("fam/fixed", Status::Pass),
+                                  outcome("fam/new", Status::Timeout), outcome("fam/fine", Status::Pass)};
+  for (CaseOutcome& o : all) applyBaseline(b, o);
+  const std::string path = testing::TempDir() + "/failures.csv";
+  ASSERT_EQ(writeFailuresCsv(all, b.file, path), "");
+  const std::string text = slurp(path);
+  EXPECT_EQ(text.find("fam/known"), std::string::npos) << text;
+  EXPECT_EQ(text.find("fam/fine"), std::string::npos) << text;
+  // It reads back as a baseline: the new failure and the unexpected pass.
+  std::string error;
+  const Baseline again = loadBaseline(path, &error);
+  ASSERT_EQ(error, "") << text;
+  EXPECT_EQ(again.expected.size(), 2u) << text;
+  EXPECT_EQ(again.expected.at("fam/new"), Status::Timeout);
+  EXPECT_EQ(again.expected.at("fam/fixed"), Status::Pass);
+}
+
+TEST(BaselineGate, ABadPatternNamesFileAndLine) {
+  std::string error;
+  loadNamePatterns(writeFile("bad-flakes.txt", "# ok\nfam/a\nfam/(b\n"), &error);
+  EXPECT_NE(error.find("bad-flakes.txt:3:"), std::string::npos) << error;
+  error.clear();
+  loadBaselineSet("", writeFile("missing-dir-flakes.txt", "x"), "/nonexistent/skips.txt", &error);
+  EXPECT_NE(error.find("/nonexistent/skips.txt"), std::string::npos) << error;
+}
+
+TEST(OutcomeJson, EveryFieldRoundTrips) {
+  CaseOutcome o = outcome("fam/a,b", Status::Fail);
+  o.rules = {"R-IGNORE", "R-TIE"};
+  o.verdict.add({Status::Fail, "R-IGNORE", "closest-hit saw 3", {3, 5}, 2});
+  o.verdict.undefined.push_back({UndefinedReason::NanTriangle, 4, {1, 2}, "scene.blas[0]"});
+  o.status = o.verdict.status;
+  o.headline = o.verdict.headline();
+  o.seconds = 1.5, o.device_seconds = 0.5, o.model_seconds = 0.25;
+  o.images = {"primitive"};
+  o.failing_rays.push_back({3, 3, 0, "primitive_id", "3", "2"});
+  o.baseline = BaselineMatch::Flake;
+  o.baseline_note = "the re-run gave Pass";
+  o.device_name = "llvmpipe";
+  const CaseOutcome back = outcomeFromJson(outcomeJson(o));
+  EXPECT_EQ(outcomeJson(back), outcomeJson(o));
+  EXPECT_EQ(back.verdict.findings.size(), 1u);
+  EXPECT_EQ(back.failing_rays.size(), 1u);
+  nlohmann::json broken = outcomeJson(o);
+  broken["status"] = "Splendid";
+  try {
+    outcomeFromJson(broken);
+    ADD_FAILURE() << "an unknown status is read";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("fam/a,b"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("status"), std::string::npos) << e.what();
+  }
+}
+
+// A run folder made of outcomes, as a run writes it.
+std::string runFolder(const std::string& name, const std::string& device, const std::vector<CaseOutcome>& cases) {
+  const std::string dir = testing::TempDir() + "/" + name;
+  std::filesystem::remove_all(dir);
+  RunInfo info;
+  info.device = device;
+  info.model_tier = "exact";
+  info.started = "2026-11-23 10:00:00 UTC";
+  info.planned_cases = cases.size();
+  EXPECT_EQ(writeReports(cases, info, dir), "");
+  for (const CaseOutcome& o : cases) {
+    std::filesystem::create_directories(dir + "/" + o.name + "/device");
+    std::ofstream(dir + "/" + o.name + "/device/results.json") << "{}";
+  }
+  return dir;
+}
+
+TEST(MergeRuns, ShardsJoinIntoOneRun) {
+  const std::string a = runFolder("shard-a", "llvmpipe", {outcome("fam/b", Status::Pass), outcome("fam/d", Status::Fail)});
+  const std::string b = runFolder("shard-b", "llvmpipe", {outcome("fam/a", Status::Pass), outcome("fam/c", Status::Pass)});
+  const std::string out = testing::TempDir() + "/merged";
+  std::filesystem::remove_all(out);
+  const MergeResult m = mergeRuns({a, b}, out, Baseline{}, {});
+  ASSERT_EQ(m.error, "");
+  ASSERT_EQ(m.run.outcomes.size(), 4u);
+  EXPECT_EQ(m.run.outcomes[0].name, "fam/a");
+  EXPECT_EQ(m.run.outcomes[3].name, "fam/d");
+  EXPECT_EQ(m.run.info.planned_cases, 4u);
+  EXPECT_TRUE(std::filesystem::exists(out + "/fam/d/device/results.json"));
+  std::string error;
+  const SavedRun back = readSavedRun(out, &error);
+  ASSERT_EQ(error, "");
+  EXPECT_EQ(back.outcomes.size(), 4u);
+  EXPECT_NE(slurp(out + "/failures.csv").find("fam/d,Fail"), std::string::npos);
+}
+
+TEST(MergeRuns, RefusesTwoDevicesAndACaseTwice) {
+  const std::string a = runFolder("m-a", "llvmpipe", {outcome("fam/a", Status::Pass)});
+  const std::string b = runFolder("m-b", "NVIDIA H100", {outcome("fam/b", Status::Pass)});
+  const std::string c = runFolder("m-c", "llvmpipe", {outcome("fam/a", Status::Fail)});
+  const std::string out = testing::TempDir() + "/m-out";
+  EXPECT_NE(mergeRuns({a, b}, out, Baseline{}, {}).error.find("NVIDIA H100"), std::string::npos);
+  const std::string twice = mergeRuns({a, c}, out, Baseline{}, {}).error;
+  EXPECT_NE(twice.find("fam/a"), std::string::npos) << twice;
+  EXPECT_NE(twice.find("m-c"), std::string::npos) << twice;
+  EXPECT_NE(mergeRuns({a}, a, Baseline{}, {}).error, "");
+}
+
+}  // namespace
+}  // namespace rayspec
