@@ -42,6 +42,9 @@ DeviceInfo describeDevice(VkPhysicalDevice physical, uint32_t index) {
   vkGetPhysicalDeviceProperties(physical, &base);
   d.name = base.deviceName;
   d.api_version = versionString(base.apiVersion);
+  d.api_version_number = base.apiVersion;
+  d.ray_tracing_extension = rt_ext;
+  d.acceleration_structure_extension = as_ext;
   bool vk12 = base.apiVersion >= VK_API_VERSION_1_2;
 
   VkPhysicalDeviceRayTracingPipelinePropertiesKHR rt{
