@@ -31,8 +31,12 @@ DeviceProbe describeAdapter(const VulkanAdapter& adapter) {
   p.found = adapter.found();
   p.description = adapter.description();
   p.error = adapter.error();
-  if (p.found) p.icd = icdOfLibrary(adapter.driverLibrary());
-  else listWhatThereIs(p);
+  if (p.found) {
+    p.icd = icdOfLibrary(adapter.driverLibrary());
+    p.device_uuid = adapter.deviceUuid();
+  } else {
+    listWhatThereIs(p);
+  }
   return p;
 }
 
@@ -47,7 +51,7 @@ DeviceProbe probeDevice(const VulkanOptions& options, const ChildLimits& limits)
   const ChildEnd end = runChild(
       [&](std::string& message) {
         const DeviceProbe p = probeDeviceInProcess(options);
-        message = nlohmann::json{{"found", p.found}, {"description", p.description}, {"icd", p.icd},
+        message = nlohmann::json{{"found", p.found}, {"description", p.description}, {"icd", p.icd}, {"device_uuid", p.device_uuid},
                                  {"error", p.error}, {"devices", p.devices}, {"no_device", p.no_device}}
                       .dump();
         return 0;
@@ -66,6 +70,8 @@ DeviceProbe probeDevice(const VulkanOptions& options, const ChildLimits& limits)
   p.found = j.value("found", false);
   p.description = j.value("description", "");
   p.icd = j.value("icd", "");
+  p.device_uuid = j.value("device_uuid", "");
+  if (p.found && p.icd.empty()) p.icd = icdOfDevice(p.device_uuid, ChildLimits{kProbeSeconds, limits.memory_limit});
   p.error = j.value("error", "");
   p.devices = j.value("devices", std::vector<std::string>{});
   p.no_device = j.value("no_device", "");

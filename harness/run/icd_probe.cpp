@@ -7,6 +7,7 @@
 namespace rayspec {
 
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DeviceInfo, index, name, driver_name, driver_info, api_version, api_version_number,
+                                   device_uuid,
                                    ray_tracing_extension, acceleration_structure_extension, ray_tracing_pipeline,
                                    acceleration_structure, shader_group_handle_size, shader_group_handle_alignment,
                                    shader_group_base_alignment, max_ray_recursion_depth, max_ray_hit_attribute_size,
@@ -67,6 +68,16 @@ IcdProbe probeIcd(const IcdManifest& manifest, const ChildLimits& limits) {
     probe.failure = std::string("the probe of this driver answered nothing readable: ") + e.what();
   }
   return probe;
+}
+
+std::string icdOfDevice(const std::string& device_uuid, const ChildLimits& limits) {
+  const IcdSearch search = findIcdManifests();
+  if (search.manifests.size() == 1 && search.errors.empty()) return search.manifests[0].path;
+  if (device_uuid.empty()) return {};
+  for (const IcdManifest& m : search.manifests)
+    for (const DeviceInfo& d : probeIcd(m, limits).devices)
+      if (d.device_uuid == device_uuid) return m.path;
+  return {};
 }
 
 }  // namespace rayspec

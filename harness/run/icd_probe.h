@@ -26,6 +26,14 @@ IcdProbe probeIcd(const IcdManifest& manifest, const ChildLimits& limits);
 // and the loader's own error ("vkCreateInstance: ...", "" when none).
 std::vector<DeviceInfo> listDevicesOrWhyNot(std::string* why, std::string* loader_error);
 
+// The manifest (of those the loader reads now) that offers the device with
+// this deviceUUID-driverUUID: the only one there is, or the one whose probe
+// lists it (a child per manifest); "" when none does. For drivers whose
+// device commands live in another library than the manifest's (NVIDIA's are
+// in libnvidia-eglcore, the manifest names libGLX_nvidia), where dladdr alone
+// cannot tell.
+std::string icdOfDevice(const std::string& device_uuid, const ChildLimits& limits);
+
 // Limits of a child that only asks the loader.
 inline constexpr double kProbeSeconds = 60;
 

@@ -32,6 +32,7 @@ struct DeviceInfo {
   uint32_t index = 0;  // position in vkEnumeratePhysicalDevices
   std::string name, driver_name, driver_info, api_version;
   uint32_t api_version_number = 0;  // VkPhysicalDeviceProperties::apiVersion
+  std::string device_uuid;          // deviceUUID-driverUUID in hex (Vulkan 1.1; "" below)
   // The extensions (VK_KHR_acceleration_structure with
   // VK_KHR_deferred_host_operations) ...
   bool ray_tracing_extension = false, acceleration_structure_extension = false;
