@@ -11,6 +11,7 @@ namespace rayspec {
 
 struct DevicesOptions {
   bool no_validation = false;
+  std::vector<std::string> icd_files;  // --icd: probe only these driver manifests
 };
 
 struct ShowOptions {
@@ -40,6 +41,9 @@ struct MergeOptions {
   std::string baseline, flakes, skips;
   std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
 };
+inline constexpr const char* kIcdOptionHelp =
+    "Vulkan driver manifest (ICD JSON) the loader may load; repeat it or separate files with ':'. Sets "
+    "VK_DRIVER_FILES and VK_ICD_FILENAMES, overriding the environment's";
 
 int runDevices(const DevicesOptions& opt);
 int runShow(const ShowOptions& opt);

@@ -14,10 +14,12 @@ int main(int argc, char** argv) {
   auto* devices = app.add_subcommand("devices", "List Vulkan devices and their ray tracing limits");
   rayspec::DevicesOptions devices_opt;
   devices->add_flag("--no-validation", devices_opt.no_validation, "Do not load the Khronos validation layer");
+  devices->add_option("--icd", devices_opt.icd_files, rayspec::kIcdOptionHelp)->delimiter(':');
 
   auto* run = app.add_subcommand("run", "Run cases on a device and on the model");
   rayspec::RunOptions run_opt;
   run->add_option("--device", run_opt.device, "Vulkan device name (substring); default: first with ray tracing");
+  run->add_option("--icd", run_opt.icd_files, rayspec::kIcdOptionHelp)->delimiter(':');
   run->add_option("--filter", run_opt.filter, "Run only cases whose name matches this glob (e.g. 'anyhit/*')");
   run->add_option("--out", run_opt.out, "Folder for results bundles and reports")->capture_default_str();
   run->add_option("--cases", run_opt.cases_dir, "Folder of case files")->capture_default_str();

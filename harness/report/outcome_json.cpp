@@ -116,6 +116,7 @@ SavedRun readSavedRun(const std::string& dir, std::string* error) {
     run.info.model_tier = j.at("model_tier").get<std::string>();
     run.info.started = j.at("started").get<std::string>();
     run.info.baseline = j.value("baseline", "");
+    run.info.icd = j.value("icd", "");
     run.info.validation = j.at("validation").get<bool>();
     run.info.teardown_errors = j.at("teardown_validation_errors").get<std::vector<std::string>>();
     run.info.planned_cases = j.at("planned_cases").get<size_t>();

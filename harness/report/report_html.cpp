@@ -108,7 +108,8 @@ std::string writeReportHtml(const std::vector<CaseOutcome>& outcomes, const RunI
   std::ostringstream out;
   out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>rayspec report</title><style>"
       << kStyle << "</style><script>" << kCheckScript << "</script></head><body>\n<h1>rayspec report</h1>\n";
-  out << "<p>device: " << xmlEscape(info.device) << " &middot; model: embree " << xmlEscape(info.model_tier)
+  out << "<p>device: " << xmlEscape(info.device) << " (ICD " << xmlEscape(info.icd.empty() ? "unknown" : info.icd)
+      << ") &middot; model: embree " << xmlEscape(info.model_tier)
       << " tier &middot; validation layer " << (info.validation ? "on" : "off") << " &middot; " << xmlEscape(info.started)
       << "</p>\n";
   out << "<p id=\"completeness\"" << (info.interrupted ? " class=\"Fail\"" : "") << ">"

@@ -68,6 +68,7 @@ std::string writeJunitXml(const std::vector<CaseOutcome>& outcomes, const std::s
 std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const RunInfo& info, const std::string& path) {
   nlohmann::json j;
   j["device"] = info.device;
+  j["icd"] = info.icd;
   j["model_tier"] = info.model_tier;
   j["started"] = info.started;
   j["baseline"] = info.baseline;

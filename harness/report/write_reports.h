@@ -27,6 +27,7 @@ namespace rayspec {
 struct RunInfo {
   std::string device, model_tier, started;
   std::string baseline;  // the baseline file the run was judged by ("" none)
+  std::string icd;  // the driver manifest the device came from ("" when unknown)
   bool validation = false;
   size_t planned_cases = 0;  // cases the run set out to run (0: as many as it has outcomes)
   // Not every planned case ran: the run is still going, was stopped by a

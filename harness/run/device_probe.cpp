@@ -2,33 +2,48 @@
 
 #include <nlohmann/json.hpp>
 
+#include "run/icd_probe.h"
 #include "run/vulkan_adapter.h"
+#include "vulkan/device_usability.h"
 
 namespace rayspec {
 namespace {
 
-std::vector<std::string> deviceList() {
-  std::string error;
-  std::vector<std::string> out;
-  for (const DeviceInfo& d : listDevices(&error))
-    out.push_back("[" + std::to_string(d.index) + "] " + d.name +
-                  (d.ray_tracing_pipeline && d.acceleration_structure ? " (ray tracing)" : " (no ray tracing)"));
-  if (!error.empty()) out.push_back("(cannot list devices: " + error + ")");
-  return out;
+void listWhatThereIs(DeviceProbe& p) {
+  std::string loader_error;  // the same as the adapter's error
+  for (const DeviceInfo& d : listDevicesOrWhyNot(&p.no_device, &loader_error)) {
+    const DeviceUsability u = deviceUsability(d);
+    p.devices.push_back("[" + std::to_string(d.index) + "] " + d.name +
+                        (u == DeviceUsability::Usable ? " (ray tracing)" : " (" + usabilityReason(u, d) + ")"));
+  }
 }
 
 }  // namespace
 
-DeviceProbe probeDeviceInProcess(const VulkanOptions& options) {
+std::string icdOfLibrary(const std::string& library) {
+  const IcdSearch search = findIcdManifests();
+  const IcdManifest* m = manifestOfLibrary(search.manifests, library);
+  return m ? m->path : std::string();
+}
+
+DeviceProbe describeAdapter(const VulkanAdapter& adapter) {
   DeviceProbe p;
-  {
-    VulkanAdapter adapter(options);
-    p.found = adapter.found();
-    p.description = adapter.description();
-    p.error = adapter.error();
-    adapter.close();
+  p.found = adapter.found();
+  p.description = adapter.description();
+  p.error = adapter.error();
+  if (p.found) {
+    p.icd = icdOfLibrary(adapter.driverLibrary());
+    p.device_uuid = adapter.deviceUuid();
+  } else {
+    listWhatThereIs(p);
   }
-  if (!p.found) p.devices = deviceList();
+  return p;
+}
+
+DeviceProbe probeDeviceInProcess(const VulkanOptions& options) {
+  VulkanAdapter adapter(options);
+  DeviceProbe p = describeAdapter(adapter);
+  adapter.close();
   return p;
 }
 
@@ -36,8 +51,8 @@ DeviceProbe probeDevice(const VulkanOptions& options, const ChildLimits& limits)
   const ChildEnd end = runChild(
       [&](std::string& message) {
         const DeviceProbe p = probeDeviceInProcess(options);
-        message = nlohmann::json{{"found", p.found}, {"description", p.description}, {"error", p.error},
-                                 {"devices", p.devices}}
+        message = nlohmann::json{{"found", p.found}, {"description", p.description}, {"icd", p.icd}, {"device_uuid", p.device_uuid},
+                                 {"error", p.error}, {"devices", p.devices}, {"no_device", p.no_device}}
                       .dump();
         return 0;
       },
@@ -54,14 +69,21 @@ DeviceProbe probeDevice(const VulkanOptions& options, const ChildLimits& limits)
   }
   p.found = j.value("found", false);
   p.description = j.value("description", "");
+  p.icd = j.value("icd", "");
+  p.device_uuid = j.value("device_uuid", "");
+  if (p.found && p.icd.empty()) p.icd = icdOfDevice(p.device_uuid, ChildLimits{kProbeSeconds, limits.memory_limit});
   p.error = j.value("error", "");
   p.devices = j.value("devices", std::vector<std::string>{});
+  p.no_device = j.value("no_device", "");
   return p;
 }
 
 std::string probeFailure(const DeviceProbe& p) {
   std::string text = p.error;
-  text += p.devices.empty() ? "; the Vulkan loader sees no device" : "; devices:";
+  if (p.devices.empty())
+    text += "; the Vulkan loader sees no device" + (p.no_device.empty() ? "" : ": " + p.no_device);
+  else
+    text += "; devices:";
   for (const std::string& d : p.devices) text += "\n  " + d;
   return text;
 }

@@ -21,6 +21,7 @@
 #include "run/shard.h"
 #include "run/vulkan_adapter.h"
 #include "vulkan/device_errors.h"
+#include "vulkan/icd_environment.h"
 
 namespace rayspec {
 namespace {
@@ -90,6 +91,12 @@ int runCases(const RunOptions& opt) {
     std::fprintf(stderr, "rayspec run: %s\n", err.c_str());
     return kExitSetup;
   }
+  const IcdSelection icd = useIcdFiles(opt.icd_files);  // before any Vulkan call; children inherit it
+  for (const std::string& note : icd.notes) std::fprintf(stderr, "rayspec run: %s\n", note.c_str());
+  if (!icd.error.empty()) {
+    std::fprintf(stderr, "rayspec run: %s\n", icd.error.c_str());
+    return kExitSetup;
+  }
   std::string shard_error;
   const std::optional<Shard> shard = chosenShard(opt, &shard_error);
   if (!shard_error.empty()) {
@@ -138,10 +145,7 @@ int runCases(const RunOptions& opt) {
     DeviceProbe probe;
     if (opt.no_isolation) {
       device = std::make_unique<VulkanAdapter>(vopt);
-      probe.found = device->found();
-      probe.description = device->description();
-      probe.error = device->error();
-      if (!probe.found) probe = probeDeviceInProcess(vopt);
+      probe = describeAdapter(*device);
       info.validation = device->validationEnabled();
     } else {
       VulkanOptions quick = vopt;
@@ -155,7 +159,9 @@ int runCases(const RunOptions& opt) {
     }
     device_found = true;
     info.device = probe.description;
-    std::printf("Device: %s%s%s\n", info.device.c_str(), info.validation ? ", validation layer on" : ", validation layer OFF",
+    info.icd = !probe.icd.empty() || icd.files.size() != 1 ? probe.icd : icd.files[0];
+    std::printf("Device: %s, ICD %s%s%s\n", info.device.c_str(), info.icd.empty() ? "unknown" : info.icd.c_str(),
+                info.validation ? ", validation layer on" : ", validation layer OFF",
                 opt.no_isolation ? ", in this process" : "");
   }
   if (!opt.no_model) {

@@ -24,6 +24,7 @@ inline constexpr uint64_t kDefaultMemoryLimit = uint64_t(8) << 30;
 
 struct RunOptions {
   std::string device;
+  std::vector<std::string> icd_files;  // --icd: the loader reads only these driver manifests (vulkan/icd_environment.h)
   std::string filter = "*";
   std::string out = "rayspec-results";
   std::string cases_dir = RAYSPEC_SOURCE_DIR "/cases";

@@ -21,6 +21,8 @@ class VulkanAdapter : public Backend {
   bool found() const { return backend_ != nullptr; }
   const std::string& error() const { return error_; }
   bool validationEnabled() const { return backend_ && backend_->validationEnabled(); }
+  std::string driverLibrary() const { return backend_ ? backend_->driverLibrary() : std::string(); }
+  std::string deviceUuid() const { return backend_ ? backend_->device().device_uuid : std::string(); }
 
  private:
   std::unique_ptr<VulkanBackend> backend_;

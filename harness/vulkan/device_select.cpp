@@ -20,6 +20,13 @@ std::string versionString(uint32_t v) {
          "." + std::to_string(VK_API_VERSION_PATCH(v));
 }
 
+std::string hexBytes(const uint8_t* bytes, size_t n) {
+  static constexpr char kDigits[] = "0123456789abcdef";
+  std::string out;
+  for (size_t i = 0; i < n; ++i) out += {kDigits[bytes[i] >> 4], kDigits[bytes[i] & 15]};
+  return out;
+}
+
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char ch) { return std::tolower(ch); });
   return s;
@@ -42,6 +49,9 @@ DeviceInfo describeDevice(VkPhysicalDevice physical, uint32_t index) {
   vkGetPhysicalDeviceProperties(physical, &base);
   d.name = base.deviceName;
   d.api_version = versionString(base.apiVersion);
+  d.api_version_number = base.apiVersion;
+  d.ray_tracing_extension = rt_ext;
+  d.acceleration_structure_extension = as_ext;
   bool vk12 = base.apiVersion >= VK_API_VERSION_1_2;
 
   VkPhysicalDeviceRayTracingPipelinePropertiesKHR rt{
@@ -49,12 +59,16 @@ DeviceInfo describeDevice(VkPhysicalDevice physical, uint32_t index) {
   VkPhysicalDeviceAccelerationStructurePropertiesKHR as{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_PROPERTIES_KHR};
   VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+  VkPhysicalDeviceIDProperties id{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ID_PROPERTIES};
   VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
   void** next = &props.pNext;
+  const bool vk11 = base.apiVersion >= VK_API_VERSION_1_1;
+  if (vk11) { *next = &id; next = &id.pNext; }
   if (vk12) { *next = &driver; next = &driver.pNext; }
   if (rt_ext) { *next = &rt; next = &rt.pNext; }
   if (as_ext) { *next = &as; next = &as.pNext; }
   vkGetPhysicalDeviceProperties2(physical, &props);
+  if (vk11) d.device_uuid = hexBytes(id.deviceUUID, VK_UUID_SIZE) + "-" + hexBytes(id.driverUUID, VK_UUID_SIZE);
   if (vk12) {
     d.driver_name = driver.driverName;
     d.driver_info = driver.driverInfo;

@@ -31,6 +31,12 @@ struct VulkanOptions {
 struct DeviceInfo {
   uint32_t index = 0;  // position in vkEnumeratePhysicalDevices
   std::string name, driver_name, driver_info, api_version;
+  uint32_t api_version_number = 0;  // VkPhysicalDeviceProperties::apiVersion
+  std::string device_uuid;          // deviceUUID-driverUUID in hex (Vulkan 1.1; "" below)
+  // The extensions (VK_KHR_acceleration_structure with
+  // VK_KHR_deferred_host_operations) ...
+  bool ray_tracing_extension = false, acceleration_structure_extension = false;
+  // ... and the features on a Vulkan 1.2 device (what rayspec needs).
   bool ray_tracing_pipeline = false, acceleration_structure = false;
   uint32_t shader_group_handle_size = 0, shader_group_handle_alignment = 0,
            shader_group_base_alignment = 0, max_ray_recursion_depth = 0,
@@ -57,6 +63,10 @@ class VulkanBackend {
 
   const DeviceInfo& device() const;
   bool validationEnabled() const;
+  // The driver library the device's commands live in (its path, as loaded),
+  // found with dladdr on a device command; "" when unknown. With the
+  // validation layer on, asks a second, layer-free instance (driver_library.cpp).
+  std::string driverLibrary() const;
 
   // Never throws. status: Ok, NotSupported or Crash, with the detail.
   Results run(const Case& c, const Plan& plan);

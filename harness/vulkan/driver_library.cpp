@@ -1,0 +1,53 @@
+// Which driver library a VkDevice's commands live in. The loader hands out a
+// device's commands straight from the top of its chain: the driver's own
+// functions when no layer sits on the device, so dladdr on one names the
+// driver's shared object. With the validation layer on, the top is the layer;
+// a short-lived layer-free instance and device on the same physical device
+// (by its index) answers instead.
+#include <dlfcn.h>
+
+#include <vector>
+
+#include "vulkan/context.h"
+#include "vulkan/vk_check.h"
+
+namespace rayspec {
+namespace {
+
+std::string libraryOf(VkDevice device) {
+  const PFN_vkVoidFunction f = vkGetDeviceProcAddr(device, "vkQueueSubmit");
+  Dl_info info{};
+  if (!f || !dladdr(reinterpret_cast<void*>(f), &info) || !info.dli_fname) return {};
+  return info.dli_fname;
+}
+
+std::string libraryWithoutLayers(uint32_t index) {
+  VulkanContext plain;
+  std::string library;
+  try {
+    createInstance(plain, false);
+    uint32_t count = 0;
+    vkCheck(vkEnumeratePhysicalDevices(plain.instance, &count, nullptr), "vkEnumeratePhysicalDevices");
+    std::vector<VkPhysicalDevice> physicals(count);
+    vkCheck(vkEnumeratePhysicalDevices(plain.instance, &count, physicals.data()), "vkEnumeratePhysicalDevices");
+    if (index < count) {
+      plain.physical = physicals[index];
+      createDevice(plain);
+      library = libraryOf(plain.device);
+    }
+  } catch (const std::exception&) {
+    library.clear();  // unknown
+  }
+  destroyDevice(plain);
+  destroyInstance(plain);
+  return library;
+}
+
+}  // namespace
+
+std::string VulkanBackend::driverLibrary() const {
+  if (!ctx_->device) return {};
+  return ctx_->validation ? libraryWithoutLayers(ctx_->info.index) : libraryOf(ctx_->device);
+}
+
+}  // namespace rayspec

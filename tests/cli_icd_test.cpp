@@ -1,0 +1,138 @@
+// Device selection by driver manifest as a program: `rayspec devices` lists
+// each manifest's devices, usable or not and why; `run --icd FILE` loads only
+// that driver, names it in the Device line and summary.json, and a manifest
+// that is missing or whose driver cannot load is a setup error (exit 2).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_helpers.h"
+
+namespace {
+namespace fs = std::filesystem;
+using cli::caseArg;
+using cli::fresh;
+using cli::kBin;
+using cli::sh;
+using cli::slurp;
+
+const std::string kOneCase = "results/miss-xor-closest-hit";
+
+// lavapipe's manifest where Mesa installs it (lvp_icd.json or lvp_icd.x86_64.json).
+std::string lavapipeManifest() {
+  for (const char* dir : {"/usr/share/vulkan/icd.d", "/usr/local/share/vulkan/icd.d", "/etc/vulkan/icd.d"}) {
+    std::error_code ec;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir, ec))
+      if (e.path().filename().string().rfind("lvp_icd", 0) == 0) return e.path().string();
+  }
+  return {};
+}
+
+// A manifest whose driver library does not exist.
+std::string brokenManifest(const std::string& dir) {
+  const std::string path = dir + "/broken_icd.json";
+  std::ofstream(path) << R"({"file_format_version": "1.0.0", "ICD": {"library_path": "./libnosuch_vulkan.so", "api_version": "1.3.0"}})";
+  return path;
+}
+
+TEST(Icd, DevicesListsLavapipeUsableWithItsManifest) {
+  const std::string lvp = lavapipeManifest();
+  ASSERT_FALSE(lvp.empty()) << "lavapipe is not installed";
+  const std::string out = fresh("icd-devices");
+  EXPECT_EQ(sh(kBin + " devices", out + "/log"), 0);
+  const std::string log = slurp(out + "/log");
+  const size_t at = log.find("ICD " + lvp + " ");
+  ASSERT_NE(at, std::string::npos) << log;
+  const std::string block = log.substr(at, log.find("\nICD ", at + 1) - at);
+  EXPECT_NE(block.find("llvmpipe"), std::string::npos) << block;
+  EXPECT_NE(block.find(": USABLE"), std::string::npos) << block;
+  EXPECT_NE(block.find("select: --icd " + lvp + " --device 'llvmpipe"), std::string::npos) << block;
+  EXPECT_NE(block.find("maxRayRecursionDepth"), std::string::npos) << block;
+  EXPECT_NE(log.find("usable device"), std::string::npos) << log;
+}
+
+TEST(Icd, RunOnLavapipeByItsManifest) {
+  const std::string lvp = lavapipeManifest();
+  ASSERT_FALSE(lvp.empty());
+  const std::string out = fresh("icd-run");
+  // The user's own variable points at a driver that cannot load: --icd wins and says so.
+  const int rc = sh("VK_DRIVER_FILES=" + brokenManifest(out) + " " + kBin + " run --icd " + lvp +
+                        " --device llvmpipe --strict-validation" + caseArg(kOneCase) + " --out " + out + "/run",
+                    out + "/log");
+  const std::string log = slurp(out + "/log");
+  EXPECT_EQ(rc, 0) << log;
+  EXPECT_NE(log.find("--icd overrides VK_DRIVER_FILES="), std::string::npos) << log;
+  EXPECT_NE(log.find("Device: llvmpipe"), std::string::npos) << log;
+  EXPECT_NE(log.find(", ICD " + lvp + ","), std::string::npos) << log;
+  const nlohmann::json summary = nlohmann::json::parse(slurp(out + "/run/summary.json"));
+  EXPECT_EQ(summary["icd"], lvp);
+  EXPECT_EQ(summary["counts"]["Pass"], 1) << summary.dump();
+  EXPECT_NE(slurp(out + "/run/report.html").find("(ICD " + lvp + ")"), std::string::npos);
+}
+
+// Without --icd the Device line still names the manifest (found, not given).
+TEST(Icd, RunNamesTheManifestItFound) {
+  const std::string lvp = lavapipeManifest();
+  const std::string out = fresh("icd-found");
+  for (const char* isolation : {"", " --no-isolation"}) {
+    EXPECT_EQ(sh(kBin + " run --no-validation --no-model" + isolation + caseArg(kOneCase) + " --out " + out + "/run",
+                 out + "/log"),
+              77);  // the device alone, one case: nothing compared (ctest's skip)
+    const std::string log = slurp(out + "/log");
+    EXPECT_NE(log.find(", ICD " + lvp + ","), std::string::npos) << isolation << "\n" << log;
+  }
+}
+
+TEST(Icd, MissingManifestIsASetupError) {
+  const std::string out = fresh("icd-missing");
+  for (const std::string& command : {" run" + caseArg(kOneCase) + " --out " + out + "/run", std::string(" devices")}) {
+    EXPECT_EQ(sh(kBin + command + " --icd /nonexistent.json", out + "/log"), 2) << command;
+    const std::string log = slurp(out + "/log");
+    EXPECT_NE(log.find("ICD manifest /nonexistent.json: no such file"), std::string::npos) << log;
+  }
+  EXPECT_FALSE(fs::exists(out + "/run/summary.json")) << "nothing ran";
+}
+
+TEST(Icd, DriverThatCannotLoad) {
+  const std::string out = fresh("icd-broken");
+  const std::string broken = brokenManifest(out);
+  for (const char* isolation : {"", " --no-isolation"}) {
+    EXPECT_EQ(sh(kBin + " run --icd " + broken + isolation + caseArg(kOneCase) + " --out " + out + "/run", out + "/log"), 2);
+    const std::string log = slurp(out + "/log");
+    EXPECT_NE(log.find("no device to run on"), std::string::npos) << log;
+    EXPECT_NE(log.find("ICD " + broken + ": the driver library " + out + "/libnosuch_vulkan.so could not be loaded"),
+              std::string::npos) << log;
+  }
+  EXPECT_EQ(sh(kBin + " devices --icd " + broken, out + "/log"), 1);
+  const std::string log = slurp(out + "/log");
+  EXPECT_NE(log.find("ICD " + broken + " (library ./libnosuch_vulkan.so"), std::string::npos) << log;
+  EXPECT_NE(log.find("NOT USABLE: the driver library " + out + "/libnosuch_vulkan.so could not be loaded"),
+            std::string::npos) << log;
+  EXPECT_NE(log.find("No usable device"), std::string::npos) << log;
+}
+
+// Two manifests, ':'-separated: the usable one is listed, the broken one says why.
+TEST(Icd, SeveralManifests) {
+  const std::string lvp = lavapipeManifest();
+  const std::string out = fresh("icd-several");
+  const std::string broken = brokenManifest(out);
+  EXPECT_EQ(sh(kBin + " devices --icd " + lvp + ":" + broken, out + "/log"), 0);
+  const std::string log = slurp(out + "/log");
+  EXPECT_NE(log.find(": USABLE"), std::string::npos) << log;
+  EXPECT_NE(log.find("NOT USABLE: the driver library"), std::string::npos) << log;
+  EXPECT_NE(log.find("1 usable device through 2 driver manifests"), std::string::npos) << log;
+}
+
+TEST(Icd, NoSuchDeviceNamesTheDevicesThere) {
+  const std::string out = fresh("icd-nosuch");
+  EXPECT_EQ(sh(kBin + " run --no-validation --icd " + lavapipeManifest() + " --device nosuch" + caseArg(kOneCase) +
+                   " --out " + out + "/run", out + "/log"), 2);
+  const std::string log = slurp(out + "/log");
+  EXPECT_NE(log.find("'nosuch'"), std::string::npos) << log;
+  EXPECT_NE(log.find("[0] llvmpipe"), std::string::npos) << log;
+}
+
+}  // namespace
