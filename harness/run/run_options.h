@@ -42,6 +42,7 @@ struct RunOptions {
   std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
   std::string baseline;          // known failures of this driver (report/baseline.h)
   std::optional<uint64_t> permute;  // run each case with primitives and instances permuted (metamorphic/)
+  std::string device_results;    // judge device bundles saved in this run folder instead of running a device (run/device_results.h)
 };
 
 }  // namespace rayspec
