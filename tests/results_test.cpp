@@ -6,6 +6,7 @@
 #include <fstream>
 #include <set>
 
+#include "results/content_hash.h"
 #include "results/image_files.h"
 #include "results/record_layout.h"
 #include "results/results_io.h"
@@ -39,6 +40,7 @@ Results sampleResults() {
   r.width = 3;
   r.height = 2;
   r.seconds = 0.25;
+  r.case_hash = 0xfedcba9876543210ull;
   r.counters = {{"miss", 4}, {"closesthit", 2}};
   r.records.assign(6 * recordWords(), 0);
   const RecordField* t = findRecordField("hit_t");
@@ -63,6 +65,7 @@ TEST(ResultsIo, BundleRoundTripsEveryField) {
   ASSERT_EQ(error, "");
   EXPECT_EQ(back.case_name, r.case_name);
   EXPECT_EQ(back.device, r.device);
+  EXPECT_EQ(back.case_hash, r.case_hash);
   EXPECT_EQ(back.counters, r.counters);
   EXPECT_EQ(back.records, r.records);
   ASSERT_EQ(back.images.size(), 2u);
@@ -88,6 +91,16 @@ TEST(ResultsIo, BundleRoundTripsEveryField) {
     EXPECT_TRUE(std::filesystem::exists(dir + "/primitive.png"));
     EXPECT_TRUE(std::filesystem::exists(dir + "/color.exr"));
   }
+}
+
+// The hash a bundle records is compared on another machine: it must be the
+// same function everywhere (FNV-1a 64, whose published value for "a" this is).
+TEST(ContentHash, IsFnv1aAndPrintsAsSixteenHexDigits) {
+  EXPECT_EQ(contentHash(""), kContentHashSeed);
+  EXPECT_EQ(contentHash("a"), 0xaf63dc4c8601ec8cull);
+  EXPECT_NE(contentHash("ab"), contentHash("ba"));
+  EXPECT_EQ(contentHashText(0xaf63dc4c8601ec8cull), "af63dc4c8601ec8c");
+  EXPECT_EQ(contentHashText(1), "0000000000000001");
 }
 
 TEST(ResultsIo, MissingBundleIsAnError) {

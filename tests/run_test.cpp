@@ -18,6 +18,7 @@
 #include "case/parse_case.h"
 #include "compare/compare_results.h"
 #include "results/record_layout.h"
+#include "results/results_io.h"
 #include "report/rule_catalog.h"
 #include "run/case_steps.h"
 #include "run/child_process.h"
@@ -150,16 +151,22 @@ TEST(Isolation, ModelHangIsATimeout) {
 
 TEST(Isolation, ModelCrashIsACrash) {
   const Case c = loadCase("results/miss-xor-closest-hit");
+  const std::string dir = tempDir("crash");
   // SIG_DFL: the signal itself, not AddressSanitizer's report of it (asan preset).
   const SideResult m = runIsolated(misbehavingSide([] {
                                      std::signal(SIGSEGV, SIG_DFL);
                                      std::raise(SIGSEGV);
                                    }),
-                                   c, derivePlan(c), ChildLimits{30, 0},
-                                   tempDir("crash"));
+                                   c, derivePlan(c), ChildLimits{30, 0}, dir);
   EXPECT_EQ(m.results.status, RunStatus::Crash);
   EXPECT_NE(m.results.status_detail.find("the model process died of signal 11"), std::string::npos)
       << m.results.status_detail;
+  // The dead side's bundle says so (a saved run judged elsewhere shows the crash).
+  std::string error;
+  const Results saved = readResults(dir, &error);
+  EXPECT_EQ(error, "");
+  EXPECT_EQ(saved.status, RunStatus::Crash);
+  EXPECT_EQ(saved.case_hash, c.source_hash);
 }
 
 TEST(Isolation, ModelBeyondTheMemoryLimitIsACrash) {

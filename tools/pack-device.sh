@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Builds the run-only binary (preset `device`: no model, so no Embree or TBB;
-# no OpenImageIO; no tests) and packs it with the shared libraries a bare GPU
-# machine may lack (yaml-cpp; ldd decides) and the validation layer, into
-# .device/pack.tar.xz (ignored by git). On that machine:
-#   tar -C /tmp/p -xJf pack.tar.xz
-#   LD_LIBRARY_PATH=/tmp/p/lib VK_LAYER_PATH=/tmp/p/layer /tmp/p/rayspec run --cases /tmp/p/cases --out DIR
+# no OpenImageIO; no tests) and packs it with the cases, the rule catalog,
+# the shared libraries a bare GPU machine may lack (yaml-cpp; ldd decides) and
+# the validation layer, into .device/pack.tar.xz (ignored by git). There:
+#   mkdir -p /tmp/p && tar -C /tmp/p -xJf pack.tar.xz && cd /tmp/p
+#   LD_LIBRARY_PATH=lib VK_LAYER_PATH=layer ./rayspec run --cases cases --rules spec-rules.yaml --out DIR
 # It runs the device side only; bring DIR back and judge it where the full
 # build is: rayspec run --device-results DIR --out JUDGED (README.md).
 set -euo pipefail
@@ -15,13 +15,14 @@ bash tools/check-run-only.sh build-device/rayspec >/dev/null
 stage=$(mktemp -d)
 mkdir -p "$stage/lib" "$stage/layer" .device
 cp build-device/rayspec "$stage/" && strip "$stage/rayspec"
-cp -r cases "$stage/"
+# The cases as they are here: a saved bundle is judged only against the same case text.
+cp -r cases references/spec-rules.yaml "$stage/"
 for lib in $(ldd build-device/rayspec | awk '/=>/ {print $3}' | grep -E 'yaml-cpp'); do cp -L "$lib" "$stage/lib/"; done
 layer_json=/usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json
 cp /usr/lib/x86_64-linux-gnu/libVkLayer_khronos_validation.so "$stage/layer/"
 sed 's#"library_path": "libVkLayer_khronos_validation.so"#"library_path": "./libVkLayer_khronos_validation.so"#' \
   "$layer_json" > "$stage/layer/VkLayer_khronos_validation.json"
 tar -C "$stage" -cf - . | xz -T0 -4 > .device/pack.tar.xz
-du -sh "$stage"/* | sed "s#$stage/##"
+(cd "$stage" && for f in . * lib/* layer/*; do du -sh "$f"; done)
 rm -rf "$stage"
 ls -la .device/pack.tar.xz

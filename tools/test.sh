@@ -11,4 +11,8 @@ launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 cmake --preset fuzz "${launcher[@]}" >/dev/null
 cmake --build --preset fuzz -j"$(nproc)"
+# The run-only binary (no model, no Embree, no OpenImageIO), which ctest's
+# device/run-only-links checks with ldd and cli/device-results runs.
+cmake --preset device "${launcher[@]}" >/dev/null
+cmake --build --preset device -j"$(nproc)"
 ctest --preset default -j"$(nproc)" "$@"

@@ -168,6 +168,7 @@ struct StaticUndefined {
 struct Case {
   std::string name;                // e.g. "anyhit/ignore-odd-primitives"
   std::string file;                // path of the YAML file
+  uint64_t source_hash = 0;        // contentHash of the text parsed (a sweep: the variant's); --permute mixes in its seed
   std::string family;              // first path component of name ("anyhit")
   std::vector<std::string> rules;  // rule labels of spec-rules.md
   std::string description;

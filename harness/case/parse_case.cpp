@@ -9,6 +9,7 @@
 
 #include "case/case_parts.h"
 #include "case/file_name.h"
+#include "results/content_hash.h"
 
 namespace rayspec {
 
@@ -92,6 +93,7 @@ ParseResult parseCaseText(const std::string& yaml, const std::string& file_name,
   Case c;
   c.name = name;
   c.file = file_name;
+  c.source_hash = contentHash(yaml);
   c.family = name.substr(0, name.find('/'));
   checkCaseName(r, c);
   auto at = [&](const YAML::Mark& m) {

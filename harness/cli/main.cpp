@@ -60,6 +60,9 @@ int main(int argc, char** argv) {
   std::string fault_list;
   for (const std::string& name : rayspec::faultNames()) fault_list += (fault_list.empty() ? "" : ", ") + name;
   for (const std::string& name : rayspec::deviceErrorFaultNames()) fault_list += ", " + name;
+  run->add_option("--device-results", run_opt.device_results,
+                  "Run no device: judge the device bundles a run saved in this folder (DIR/<case>/device, e.g. "
+                  "from a run-only build) against the model run here");
   run->add_option("--permute", run_opt.permute,
                   "Permute each case's primitives and instances from this seed (R-ORDER-UNSPEC: verdicts must not "
                   "move; the same seed gives the same permutation)");

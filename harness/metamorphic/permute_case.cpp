@@ -4,6 +4,7 @@
 #include <random>
 
 #include "metamorphic/id_observations.h"
+#include "results/content_hash.h"
 
 namespace rayspec {
 namespace {
@@ -79,6 +80,8 @@ CasePermutation permuteCase(const Case& c, uint64_t seed) {
   CasePermutation out;
   out.seed = seed;
   out.permuted = c;
+  // A bundle of the permuted case is not one of the case as written.
+  out.permuted.source_hash = contentHash(c.source_hash, &seed, sizeof seed);
   std::mt19937_64 rng(seed);
   const IdObservations primitives = observeId(c.pipeline, "primitive_id");
   const IdObservations instances = observeId(c.pipeline, "instance_id");

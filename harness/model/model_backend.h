@@ -52,4 +52,8 @@ struct ModelOptions {
 
 Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt);
 
+// False in a run-only build (RAYSPEC_WITH_MODEL=OFF: model/model_absent.cpp),
+// whose runOnModel only answers NotSupported.
+bool modelInThisBuild();
+
 }  // namespace rayspec

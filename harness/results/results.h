@@ -113,6 +113,7 @@ struct Results {
   std::vector<std::string> validation_messages;  // validation-layer errors (device)
   double seconds = 0.0;     // wall time of the execution (setup + trace + read-back)
   std::string case_file;    // path of the case's YAML file (`rayspec compare` re-parses it)
+  uint64_t case_hash = 0;   // Case::source_hash of the case run: a saved bundle judged later must match it
 };
 
 }  // namespace rayspec

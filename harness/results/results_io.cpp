@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "results/content_hash.h"
 #include "results/image_files.h"
 #include "results/record_layout.h"
 
@@ -90,6 +91,7 @@ std::string writeResults(const Results& r, const std::string& dir_name, const st
   j["status"] = runStatusName(r.status);
   j["status_detail"] = r.status_detail;
   j["case_file"] = r.case_file;
+  j["case_hash"] = contentHashText(r.case_hash);
   j["width"] = r.width;
   j["height"] = r.height;
   j["seconds"] = r.seconds;
@@ -148,6 +150,7 @@ Results readResults(const std::string& dir_name, std::string* error) {
     r.height = j.at("height");
     r.seconds = j.at("seconds");
     r.case_file = j.value("case_file", std::string());
+    if (j.contains("case_hash")) r.case_hash = std::stoull(j.at("case_hash").get<std::string>(), nullptr, 16);
     r.counters = j.at("counters").get<std::map<std::string, uint64_t>>();
     r.validation_messages = j.at("validation_messages").get<std::vector<std::string>>();
     if (j.at("record_words").get<uint32_t>() != recordWords()) {

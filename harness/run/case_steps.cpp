@@ -8,6 +8,7 @@
 #include "fault/planted_fault.h"
 #include "plan/plan.h"
 #include "report/baseline_gate.h"
+#include "run/device_results.h"
 #include "run/judge_case.h"
 #include "run/model_adapter.h"
 #include "run/vulkan_adapter.h"
@@ -29,6 +30,8 @@ Side deviceSide(const RunOptions& opt, const Results& model, const std::string& 
   vopt.device_filter = opt.device;
   vopt.validation = !opt.no_validation;
   Side s{"device", "vulkan", [vopt] { return std::make_unique<VulkanAdapter>(vopt); }, {}};
+  if (!opt.device_results.empty())  // a device run saved elsewhere, read back (run/device_results.h)
+    s.make = [dir = opt.device_results] { return std::make_unique<SavedDevice>(dir); };
   if (const std::optional<InjectedVkError> injected = deviceErrorFault(fault)) {
     // A Vulkan call fails on purpose for this case only.
     s.before = [e = *injected] { injectVkError(e); };
@@ -90,6 +93,14 @@ CaseOutcome guardCase(const std::string& name, const std::vector<std::string>& r
     return step();
   } catch (const std::exception& e) {
     return caseErrorOutcome(name, rules, "harness", std::string("the harness failed on this case: ") + e.what());
+  }
+}
+
+CaseRunner::CaseRunner(const RunOptions& options, Backend* device, Backend* model)
+    : opt_(options), device_(device), model_(model) {
+  if (!opt_.device_results.empty() && opt_.no_isolation) {
+    saved_device_ = std::make_unique<SavedDevice>(opt_.device_results);
+    device_ = saved_device_.get();
   }
 }
 

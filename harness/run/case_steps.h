@@ -11,6 +11,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,9 +42,10 @@ CaseOutcome guardCase(const std::string& name, const std::vector<std::string>& r
 class CaseRunner {
  public:
   // device, model: backends that live across cases (--no-isolation); nullptr
-  // runs that side of every case in its own child process.
-  CaseRunner(const RunOptions& options, Backend* device, Backend* model)
-      : opt_(options), device_(device), model_(model) {}
+  // runs that side of every case in its own child process. With
+  // --device-results and --no-isolation the runner reads the saved bundles
+  // in this process itself.
+  CaseRunner(const RunOptions& options, Backend* device, Backend* model);
   // Runs the case on the sides asked for and judges it. Throws HarnessError.
   // *interrupted: a signal stopped a side; the outcome means nothing then.
   // The bundles go to <out>/<case name><subfolder> (a re-run: "/rerun").
@@ -55,6 +57,7 @@ class CaseRunner {
   const RunOptions& opt_;
   Backend* device_;
   Backend* model_;
+  std::unique_ptr<Backend> saved_device_;  // --device-results in this process
 };
 
 // Writes the reports of a run folder; the run loop's is writeReports.

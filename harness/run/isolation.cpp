@@ -1,5 +1,7 @@
 #include "run/isolation.h"
 
+#include <filesystem>
+
 #include "plan/plan.h"
 #include "results/image_files.h"
 #include "results/results_io.h"
@@ -13,6 +15,7 @@ Results runSide(const Side& side, Backend& backend, const Case& c, const Plan& p
   Results r = backend.run(c, plan);
   r.case_name = c.name;
   r.case_file = c.file;
+  r.case_hash = c.source_hash;
   if (side.after) *note = side.after(c, plan, r);
   return r;
 }
@@ -22,9 +25,24 @@ Results failed(const Side& side, const Case& c, RunStatus status, const std::str
   r.backend = side.backend_name;
   r.case_name = c.name;
   r.case_file = c.file;
+  r.case_hash = c.source_hash;
   r.setStatus(status, detail);
   r.seconds = seconds;
   return r;
+}
+
+// A side whose process died leaves a bundle that says so (status Crash or
+// Timeout), in place of whatever the child had half written: a saved run
+// judged elsewhere (--device-results) then shows the crash. Best effort: the
+// case is that Crash or Timeout whether or not the bundle could be written.
+SideResult ended(const Side& side, const Case& c, const Plan& plan, RunStatus status, const std::string& detail,
+                 double seconds, const std::string& dir) {
+  SideResult out;
+  out.results = failed(side, c, status, detail, seconds);
+  std::error_code ec;
+  std::filesystem::remove_all(dir, ec);
+  writeResults(out.results, dir, plan.record_fields, false);
+  return out;
 }
 
 }  // namespace
@@ -50,18 +68,14 @@ SideResult runIsolated(const Side& side, const Case& c, const Plan& plan, const 
       out.results = failed(side, c, RunStatus::Crash, describeChildEnd(end, who, limits), end.seconds);
       return out;
     case ChildEnd::How::TimedOut:
-      out.results = failed(side, c, RunStatus::Timeout, describeChildEnd(end, who, limits), end.seconds);
-      return out;
+      return ended(side, c, plan, RunStatus::Timeout, describeChildEnd(end, who, limits), end.seconds, dir);
     case ChildEnd::How::Signaled:
-      out.results = failed(side, c, RunStatus::Crash, describeChildEnd(end, who, limits), end.seconds);
-      return out;
+      return ended(side, c, plan, RunStatus::Crash, describeChildEnd(end, who, limits), end.seconds, dir);
     case ChildEnd::How::NotStarted: throw HarnessError(describeChildEnd(end, who, limits));
     case ChildEnd::How::Exited:
       if (end.code == kChildException) throw HarnessError(side.label + " side: " + end.message);
-      if (end.code != 0) {
-        out.results = failed(side, c, RunStatus::Crash, describeChildEnd(end, who, limits), end.seconds);
-        return out;
-      }
+      if (end.code != 0)
+        return ended(side, c, plan, RunStatus::Crash, describeChildEnd(end, who, limits), end.seconds, dir);
   }
   std::string error;
   out.results = readResults(dir, &error);

@@ -16,9 +16,11 @@
 #include "report/rule_catalog.h"
 #include "run/case_steps.h"
 #include "run/device_probe.h"
+#include "run/device_results.h"
 #include "run/interrupt.h"
 #include "run/model_adapter.h"
 #include "run/shard.h"
+#include "run/run_only.h"
 #include "run/vulkan_adapter.h"
 #include "vulkan/device_errors.h"
 #include "vulkan/icd_environment.h"
@@ -76,12 +78,14 @@ std::string optionError(const RunOptions& opt) {
   if (isProcessFault(opt.plant_fault) && opt.no_isolation)
     return "the fault '" + opt.plant_fault + "' needs the device in a child process (no --no-isolation)";
   if (opt.no_device && opt.no_model) return "--no-device and --no-model: nothing would run";
-  return {};
+  if (std::string e = runOnlyError(opt); !e.empty()) return e;
+  return deviceResultsError(opt);
 }
 
 }  // namespace
 
-int runCases(const RunOptions& opt) {
+int runCases(const RunOptions& requested) {
+  const RunOptions opt = optionsForThisBuild(requested);
   std::vector<CaseFile> files = caseFiles(opt);
   if (files.empty()) {
     std::fprintf(stderr, "rayspec run: no case matches '%s' in %s\n", opt.filter.c_str(), opt.cases_dir.c_str());
@@ -141,7 +145,12 @@ int runCases(const RunOptions& opt) {
   std::unique_ptr<VulkanAdapter> device;
   std::unique_ptr<ModelAdapter> model;
   bool device_found = false;
-  if (!opt.no_device) {
+  if (!opt.device_results.empty()) {
+    info.device = savedDevices(opt.device_results, files);
+    device_found = !info.device.empty();
+    std::printf("Device results saved in %s (%s); no device runs here\n", opt.device_results.c_str(),
+                device_found ? info.device.c_str() : "none of these cases has a bundle there");
+  } else if (!opt.no_device) {
     DeviceProbe probe;
     if (opt.no_isolation) {
       device = std::make_unique<VulkanAdapter>(vopt);

@@ -46,6 +46,7 @@ struct RunOptions {
   std::string shard;             // "I/N": every N-th case from the I-th (run/shard.h)
   bool resume = false;           // keep the cases `out` already has, run the rest
   std::optional<uint64_t> permute;  // run each case with primitives and instances permuted (metamorphic/)
+  std::string device_results;    // judge device bundles saved in this run folder instead of running a device (run/device_results.h)
 };
 
 }  // namespace rayspec

@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 
+#include "results/content_hash.h"
 #include "spirv/compile_glsl.h"
 
 namespace rayspec {
@@ -27,15 +28,6 @@ struct Cache {
 Cache& cache() {
   static Cache c;
   return c;
-}
-
-uint64_t fnv1a(uint64_t h, const void* data, size_t n) {
-  const auto* p = static_cast<const unsigned char*>(data);
-  for (size_t i = 0; i < n; ++i) {
-    h ^= p[i];
-    h *= 0x100000001b3ull;
-  }
-  return h;
 }
 
 bool readFile(const std::filesystem::path& path, std::vector<uint32_t>& words) {
@@ -71,11 +63,10 @@ void writeFile(const std::filesystem::path& path, const std::vector<uint32_t>& w
 }  // namespace
 
 uint64_t spirvCacheKey(const std::string& glsl, Stage stage) {
-  uint64_t h = 0xcbf29ce484222325ull;
-  h = fnv1a(h, kCacheVersion, sizeof(kCacheVersion));
+  uint64_t h = contentHash(kContentHashSeed, kCacheVersion, sizeof(kCacheVersion));
   const unsigned char s = static_cast<unsigned char>(stage);
-  h = fnv1a(h, &s, 1);
-  return fnv1a(h, glsl.data(), glsl.size());
+  h = contentHash(h, &s, 1);
+  return contentHash(h, glsl.data(), glsl.size());
 }
 
 std::string spirvCacheFileName(uint64_t key) {

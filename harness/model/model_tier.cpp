@@ -1,0 +1,24 @@
+// The tier names, in both builds (model/model_absent.cpp).
+#include <stdexcept>
+
+#include "model/model_backend.h"
+
+namespace rayspec {
+
+ModelTier parseModelTier(const std::string& name) {
+  if (name == "fast") return ModelTier::Fast;
+  if (name == "robust") return ModelTier::Robust;
+  if (name == "exact") return ModelTier::Exact;
+  throw std::invalid_argument("unknown model tier '" + name + "' (fast|robust|exact)");
+}
+
+const char* modelTierName(ModelTier t) {
+  switch (t) {
+    case ModelTier::Fast: return "fast";
+    case ModelTier::Robust: return "robust";
+    case ModelTier::Exact: return "exact";
+  }
+  return "?";
+}
+
+}  // namespace rayspec

@@ -1,0 +1,80 @@
+#include "run/device_results.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "model/model_backend.h"
+#include "results/content_hash.h"
+#include "results/results_io.h"
+#include "run/isolation.h"
+#include "vulkan/device_errors.h"
+
+namespace rayspec {
+namespace fs = std::filesystem;
+
+std::string savedBundleDir(const std::string& dir, const std::string& case_name) {
+  return (fs::path(dir) / case_name / "device").string();
+}
+
+Results SavedDevice::run(const Case& c, const Plan&) {
+  const std::string bundle = savedBundleDir(dir_, c.name);
+  if (!fs::exists(fs::path(bundle) / "results.json")) {
+    Results r;
+    r.backend = name();
+    r.case_name = c.name;
+    r.setStatus(RunStatus::NotSupported,
+                "no saved device results in " + bundle + ": the case did not run there, nothing was compared");
+    return r;
+  }
+  std::string error;
+  Results r = readResults(bundle, &error);
+  if (!error.empty()) throw HarnessError("saved device results: " + error);
+  const std::string json = bundle + "/results.json";
+  if (r.case_name != c.name)
+    throw HarnessError(json + ": the bundle is case '" + r.case_name + "', not '" + c.name + "'");
+  if (r.case_hash == 0)
+    throw HarnessError(json + ": records no case_hash (saved by an older rayspec): run the case there again");
+  if (r.case_hash != c.source_hash)
+    throw HarnessError(json + ": case_hash " + contentHashText(r.case_hash) + ", but the case here (" + c.file +
+                       ") hashes to " + contentHashText(c.source_hash) +
+                       ": the case changed since it ran there (or --permute differs); run it there again");
+  return r;
+}
+
+std::string deviceResultsError(const RunOptions& opt) {
+  const std::string& dir = opt.device_results;
+  if (dir.empty()) return {};
+  const std::string what = "--device-results " + dir;
+  if (!modelInThisBuild()) return what + ": this run-only build has no model to judge by; judge where the full build is";
+  if (opt.no_model) return what + " with --no-model: nothing to judge the saved results by";
+  if (opt.no_device) return what + " with --no-device: the saved device results are the device side";
+  if (!opt.device.empty()) return what + " with --device: no device runs, the results were saved on one";
+  if (deviceErrorFault(opt.plant_fault))
+    return "the fault '" + opt.plant_fault + "' makes a Vulkan call fail: it needs a live device, not " + what;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return what + ": not a folder";
+  if (fs::weakly_canonical(dir, ec) == fs::weakly_canonical(opt.out, ec))
+    return what + " is the --out folder: the run would remove the results it reads; give another --out";
+  return {};
+}
+
+std::string savedDevices(const std::string& dir, const std::vector<CaseFile>& cases) {
+  std::vector<std::string> devices;
+  for (const CaseFile& c : cases) {
+    std::ifstream in(fs::path(savedBundleDir(dir, c.name)) / "results.json");
+    if (!in) continue;
+    const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+    if (j.is_discarded() || !j.contains("device") || !j["device"].is_string()) continue;
+    const std::string device = j["device"];
+    if (!device.empty() && std::find(devices.begin(), devices.end(), device) == devices.end())
+      devices.push_back(device);
+  }
+  std::string out;
+  for (const std::string& d : devices) out += (out.empty() ? "" : ", ") + d;
+  return out;
+}
+
+}  // namespace rayspec

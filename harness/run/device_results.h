@@ -1,0 +1,53 @@
+// Judging a device run saved elsewhere: `rayspec run --device-results DIR`
+// runs the model here and, in place of a device, reads each case's device
+// bundle DIR/<case>/device/ (results/results_io.h; what a run-only build's
+// `rayspec run --out DIR` writes), then judges exactly as a live run would:
+// planted faults apply to the loaded results, crashes and timeouts saved
+// there are this case's Crash and Timeout.
+//   no bundle           NotSupported: the case did not run there (filtered
+//                       out, or that run stopped before it; a case whose
+//                       process died there has a bundle saying Crash or
+//                       Timeout). Nothing was compared, so never a pass.
+//   another case's, or  the harness's error (CaseError): the bundle names
+//   one of a changed    another case, or records a case hash (contentHash of
+//   case file           the case's text, --permute's seed mixed in) other
+//                       than the case's here, or none (an older rayspec).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "library/case_discovery.h"
+#include "run/backend.h"
+#include "run/run_options.h"
+
+namespace rayspec {
+
+// A device that "runs" a case by reading its saved bundle. Throws
+// HarnessError (run/isolation.h) for a bundle that does not belong to the case.
+class SavedDevice : public Backend {
+ public:
+  explicit SavedDevice(std::string dir) : dir_(std::move(dir)) {}
+  std::string name() const override { return "vulkan"; }
+  std::string description() const override { return "device results saved in " + dir_; }
+  Results run(const Case& c, const Plan& plan) override;
+  std::vector<std::string> close() override { return {}; }
+
+ private:
+  std::string dir_;
+};
+
+// DIR/<case>/device.
+std::string savedBundleDir(const std::string& dir, const std::string& case_name);
+
+// Why --device-results cannot work with the other options ("" when it can,
+// or when it is not given): no model in this build, --no-model, --no-device,
+// --device, a Vulkan error fault (they need a live device), DIR not a folder,
+// DIR the --out folder (the run would remove what it reads).
+std::string deviceResultsError(const RunOptions& opt);
+
+// The devices these cases' saved bundles ran on, each once ("A" or "A, B");
+// "" when none of them has a bundle naming one.
+std::string savedDevices(const std::string& dir, const std::vector<CaseFile>& cases);
+
+}  // namespace rayspec

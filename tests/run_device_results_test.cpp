@@ -1,0 +1,148 @@
+// Judging saved device results (run/device_results.h): a SavedDevice reads
+// DIR/<case>/device, says NotSupported where the case did not run, refuses a
+// bundle of another or a changed case; the options it cannot work with.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "case/parse_case.h"
+#include "metamorphic/permute_case.h"
+#include "results/results_io.h"
+#include "run/device_results.h"
+#include "run/isolation.h"
+#include "run/run_only.h"
+#include "model/model_backend.h"
+
+namespace rayspec {
+namespace {
+namespace fs = std::filesystem;
+
+const std::string kCases = RAYSPEC_SOURCE_DIR "/cases";
+const std::string kCase = "results/miss-xor-closest-hit";
+
+std::string caseText() {
+  std::ifstream in(kCases + "/" + kCase + ".yaml");
+  return std::string((std::istreambuf_iterator<char>(in)), {});
+}
+
+Case parsed(const std::string& text) {
+  const ParseResult p = parseCaseText(text, kCases + "/" + kCase + ".yaml", kCase);
+  EXPECT_TRUE(p.value) << (p.errors.empty() ? "" : p.errors[0].format());
+  return p.value ? *p.value : Case{};
+}
+
+std::string savedRun(const std::string& name) {
+  const std::string dir = ::testing::TempDir() + "/rayspec-device-results/" + name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// A device bundle as a device-only run writes it: the case's hash, some records.
+Results save(const std::string& dir, const Case& c, const std::string& bundle_case, uint64_t hash) {
+  Results r;
+  r.case_name = bundle_case;
+  r.backend = "vulkan";
+  r.device = "saved device";
+  r.width = 2;
+  r.height = 1;
+  r.case_hash = hash;
+  r.records.assign(8, 7u);
+  EXPECT_EQ(writeResults(r, savedBundleDir(dir, c.name), {}), "");
+  return r;
+}
+
+TEST(SavedDevice, ReadsTheCasesBundleAsTheDevicesResults) {
+  const Case c = parsed(caseText());
+  const std::string dir = savedRun("read");
+  const Results saved = save(dir, c, c.name, c.source_hash);
+  SavedDevice device(dir);
+  EXPECT_EQ(device.name(), "vulkan");
+  const Results r = device.run(c, derivePlan(c));
+  EXPECT_TRUE(r.ok()) << r.statusText();
+  EXPECT_EQ(r.device, "saved device");
+  EXPECT_EQ(r.records, saved.records);
+  EXPECT_EQ(savedDevices(dir, {CaseFile{"", c.name}, CaseFile{"", "not/run"}}), "saved device");
+}
+
+TEST(SavedDevice, NoBundleIsNotSupportedNeverAPass) {
+  const Case c = parsed(caseText());
+  const std::string dir = savedRun("none");
+  const Results r = SavedDevice(dir).run(c, derivePlan(c));
+  EXPECT_EQ(r.status, RunStatus::NotSupported);
+  EXPECT_NE(r.status_detail.find("did not run there"), std::string::npos) << r.status_detail;
+  EXPECT_EQ(savedDevices(dir, {CaseFile{"", c.name}}), "");
+}
+
+TEST(SavedDevice, BundleOfAChangedCaseIsRefused) {
+  const Case c = parsed(caseText());
+  const std::string dir = savedRun("changed");
+  save(dir, c, c.name, c.source_hash);
+  // The same case with one more line (a comment): not the case that ran there.
+  const Case edited = parsed(caseText() + "\n# edited since\n");
+  EXPECT_NE(edited.source_hash, c.source_hash);
+  try {
+    SavedDevice(dir).run(edited, derivePlan(edited));
+    ADD_FAILURE() << "a bundle of a changed case was accepted";
+  } catch (const HarnessError& e) {
+    EXPECT_NE(std::string(e.what()).find("the case changed since it ran there"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SavedDevice, BundleOfAnotherCaseOrWithoutHashIsRefused) {
+  const Case c = parsed(caseText());
+  const std::string other = savedRun("other"), old = savedRun("old");
+  save(other, c, "results/another-case", c.source_hash);
+  EXPECT_THROW(SavedDevice(other).run(c, derivePlan(c)), HarnessError);
+  save(old, c, c.name, 0);
+  EXPECT_THROW(SavedDevice(old).run(c, derivePlan(c)), HarnessError);
+}
+
+TEST(SavedDevice, PermutedCaseHasItsOwnHash) {
+  const Case c = parsed(caseText());
+  const uint64_t seed1 = permuteCase(c, 1).permuted.source_hash;
+  EXPECT_NE(seed1, c.source_hash);
+  EXPECT_NE(seed1, permuteCase(c, 2).permuted.source_hash);
+  EXPECT_EQ(seed1, permuteCase(c, 1).permuted.source_hash);
+}
+
+TEST(DeviceResultsOptions, RefusedWhereTheyCannotWork) {
+  const std::string dir = savedRun("options");
+  RunOptions opt;
+  opt.out = savedRun("options-out");
+  EXPECT_EQ(deviceResultsError(opt), "") << "not asked for";
+  opt.device_results = dir;
+  EXPECT_EQ(deviceResultsError(opt), "");
+  RunOptions same = opt;
+  same.out = dir + "/.";
+  EXPECT_NE(deviceResultsError(same).find("is the --out folder"), std::string::npos) << deviceResultsError(same);
+  RunOptions missing = opt;
+  missing.device_results = dir + "/nothing-here";
+  EXPECT_NE(deviceResultsError(missing).find("not a folder"), std::string::npos);
+  RunOptions no_model = opt;
+  no_model.no_model = true;
+  EXPECT_NE(deviceResultsError(no_model), "");
+  RunOptions no_device = opt;
+  no_device.no_device = true;
+  EXPECT_NE(deviceResultsError(no_device), "");
+  RunOptions vk_fault = opt;
+  vk_fault.plant_fault = "device-lost";
+  EXPECT_NE(deviceResultsError(vk_fault).find("live device"), std::string::npos);
+  RunOptions results_fault = opt;
+  results_fault.plant_fault = "shift-t";
+  EXPECT_EQ(deviceResultsError(results_fault), "") << "planted in the loaded results";
+}
+
+// This test program is the full build's: the model is there and the options
+// stand as given.
+TEST(RunOnly, TheFullBuildKeepsItsModel) {
+  ASSERT_TRUE(modelInThisBuild());
+  RunOptions opt;
+  opt.plant_fault = "shift-t";
+  EXPECT_FALSE(optionsForThisBuild(opt).no_model);
+  EXPECT_EQ(runOnlyError(opt), "");
+}
+
+}  // namespace
+}  // namespace rayspec
