@@ -517,7 +517,7 @@ TEST(ParseCaseErrors, MissingAndMisc) {
   r = parse("rules: [R-MASK]\nrays: {camera: {size: [2, 2], origin: [0, 0, 0], look_at: [0, 0, 0], fov: 40}}\n");
   expectError(r, 2, "rays.camera", "degenerate");
   r = parse("rules: [R-MASK]\nrays: {list: [{origin: [0, 0, 1], direction: [0, 0, -1]}], grid: {}}\n");
-  expectError(r, 2, "rays", "exactly one of camera, grid or list");
+  expectError(r, 2, "rays", "exactly one of camera, grid, list or aim");
   r = parse("rules: [R-MASK]\nrays: {list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]}\n"
             "outputs: {per_ray: [miss_runs, colour], images: [{name: x, from: hit}]}\n");
   expectError(r, 3, "outputs.per_ray[0]", "automatic");

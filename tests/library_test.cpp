@@ -40,6 +40,15 @@ TEST(ExpandSweep, RowsTimesProductWithValuesSubstituted) {
   EXPECT_EQ(text.find("rules:"), 7u);
 }
 
+TEST(ExpandSweep, EachVariantKeepsItsParameters) {
+  const SweepExpansion ex = expandSweep(kSweep, "s.sweep.yaml", "sbt/s");
+  ASSERT_EQ(ex.variants.size(), 4u);
+  using P = std::vector<std::pair<std::string, std::string>>;
+  EXPECT_EQ(ex.variants[3].params,
+            (P{{"kind", "box"}, {"geometry", "{aabbs: [[0, 0, 0, 1, 1, 1]]}"}, {"offset", "0x11"}}));
+  EXPECT_EQ(ex.variants[0].params[2], (std::pair<std::string, std::string>{"offset", "0"}));
+}
+
 TEST(ExpandSweep, AListValueIsWrittenInFlowStyle) {
   const SweepExpansion ex = expandSweep("sweep:\n  name: v${i}\n  product:\n    d: [[0, 0, -1]]\n    i: [1]\n"
                                         "rays: {direction: ${d}}\n",

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "model/frame_error.h"
 #include "model/sphere_error.h"
@@ -21,12 +22,39 @@ TEST(Watertight, InsideOutsideEdge) {
   EXPECT_EQ(h.ambiguity, TriAmbiguity::None);
   EXPECT_FALSE(watertightIntersect({-0.5, 0.5, 5}, {0, 0, -1}, v0, v1, v2).hit);
   auto e = watertightIntersect({0.25, 0.25, 5}, {0, 0, -1}, v0, v1, v2);  // on the diagonal
-  EXPECT_TRUE(e.hit);
   EXPECT_EQ(e.ambiguity, TriAmbiguity::Edge);
   auto v = watertightIntersect({1, 1, 5}, {0, 0, -1}, v0, v1, v2);
   EXPECT_EQ(v.ambiguity, TriAmbiguity::Vertex);
   // degenerate (line) triangle never hits
   EXPECT_FALSE(watertightIntersect({0, 0, 5}, {0, 0, -1}, {-1, 0, 0}, {0, 0, 0}, {1, 0, 0}).hit);
+}
+
+// A ray exactly through an edge shared by two triangles, or through a vertex
+// closed all around by a fan, hits exactly one of them (the perturbation of
+// watertight.cpp), in either winding, along any direction.
+TEST(Watertight, ExactlyOneTriangleOfASharedEdgeOrVertex) {
+  const DVec3 c{0, 0, 0};
+  std::vector<DVec3> rim;
+  for (int k = 0; k < 8; ++k) {
+    const double a = k * 0.78539816339744830962;
+    rim.push_back({std::cos(a), std::sin(a), 0});
+  }
+  rim[2] = {0, 1, 0};  // exact axis points: rays along the spokes hit edges exactly
+  rim[4] = {-1, 0, 0};
+  rim[0] = {1, 0, 0};
+  rim[6] = {0, -1, 0};
+  for (const DVec3& d : {DVec3{0, 0, -1}, DVec3{0, 0, 1}, DVec3{0.5, 0.25, -1}})
+    for (bool flip : {false, true})
+      for (const DVec3& at : {DVec3{0, 0, 0}, DVec3{0.5, 0, 0}, DVec3{0, -0.25, 0}, DVec3{-0.125, 0, 0}}) {
+        int hits = 0;
+        for (int k = 0; k < 8; ++k) {
+          const DVec3& a = rim[k];
+          const DVec3& b = rim[(k + 1) % 8];
+          const DVec3 o{at[0] - 4 * d[0], at[1] - 4 * d[1], -4 * d[2]};
+          hits += (flip ? watertightIntersect(o, d, c, b, a) : watertightIntersect(o, d, c, a, b)).hit;
+        }
+        EXPECT_EQ(hits, 1) << at[0] << " " << at[1] << " d " << d[0] << " flip " << flip;
+      }
 }
 
 // The same unit triangle and rays, translated by m in x and y: the bound

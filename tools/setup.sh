@@ -16,7 +16,7 @@ PACKAGES=(
   libopenimageio-dev openimageio-tools
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
-  chromium
+  chromium fonts-dejavu-core
   clang libclang-rt-14-dev
 )
 # Packages that must come from bookworm-backports (lavapipe with ray tracing).

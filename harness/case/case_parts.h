@@ -11,9 +11,14 @@
 namespace rayspec {
 
 void parseScene(YamlReader& r, const YAML::Node& n, Scene& scene);
-void parseRays(YamlReader& r, const YAML::Node& n, Rays& rays);
+// The scene first: the `aim` form aims at one of its meshes.
+void parseRays(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& rays);
 void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& pipeline);
 void parseOutputs(YamlReader& r, const YAML::Node& n, Outputs& outputs);
+
+// A generated mesh (`grid`, `fan` or `triangulation` in a `triangles` map):
+// nullopt when n names none, else whether it parsed (then g holds the mesh).
+std::optional<bool> parseGeneratedMesh(YamlReader& r, const YAML::Node& n, const std::string& field, Geometry& g);
 
 // identity | 12 numbers | {translate, scale, rotate: {axis, degrees}}
 std::optional<Transform> parseTransform(YamlReader& r, const YAML::Node& n, const std::string& field);

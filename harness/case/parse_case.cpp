@@ -74,7 +74,7 @@ void parseTop(YamlReader& r, const YAML::Node& root, const std::vector<std::stri
   if (auto d = YamlReader::get(root, "description"); d.IsDefined())
     if (auto s = r.string(d, "description")) c.description = *s;
   if (auto s = YamlReader::get(root, "scene"); s.IsDefined() && !s.IsNull()) parseScene(r, s, c.scene);
-  if (r.require(root, "", "rays")) parseRays(r, YamlReader::get(root, "rays"), c.rays);
+  if (r.require(root, "", "rays")) parseRays(r, YamlReader::get(root, "rays"), c.scene, c.rays);
   if (auto o = YamlReader::get(root, "outputs"); o.IsDefined() && !o.IsNull()) parseOutputs(r, o, c.outputs);
   const YAML::Node pipeline = YamlReader::get(root, "pipeline");
   parsePipeline(r, pipeline, c.pipeline);

@@ -1,7 +1,8 @@
-// rays: defaults, then exactly one of camera / grid / list.
+// rays: defaults, then exactly one of camera / grid / list / aim.
 #include <cmath>
 #include <sstream>
 
+#include "case/aim_rays.h"
 #include "case/camera_rays.h"
 #include "case/case_parts.h"
 #include "case/flag_names.h"
@@ -169,22 +170,83 @@ void parseList(YamlReader& r, const YAML::Node& n, Rays& rays) {
   rays.height = 1;
 }
 
+bool featureList(YamlReader& r, const YAML::Node& at, const std::string& f, AimSpec& spec) {
+  if (!r.expectSeq(at, f)) return false;
+  spec.vertices = spec.edges = spec.faces = false;
+  for (size_t i = 0; i < at.size(); ++i) {
+    const auto name = r.string(at[i], f + "[" + std::to_string(i) + "]");
+    if (!name) return false;
+    if (*name == "vertices") spec.vertices = true;
+    else if (*name == "edges") spec.edges = true;
+    else if (*name == "faces") spec.faces = true;
+    else {
+      r.error(at[i], f + "[" + std::to_string(i) + "]", "unknown feature '" + *name + "' (vertices, edges, faces)");
+      return false;
+    }
+  }
+  return true;
+}
+
+void parseAim(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& rays) {
+  const std::string field = "rays.aim";
+  if (!r.expectMap(n, field, {"instance", "geometry", "at", "edge_points", "offset", "direction_scale"}) ||
+      !r.require(n, field, "offset"))
+    return;
+  AimSpec spec;
+  auto get = [&](const char* key) { return YamlReader::get(n, key); };
+  bool ok = true;
+  auto uintField = [&](const char* key, uint32_t max, uint32_t& out) {
+    if (!YamlReader::has(n, key)) return;
+    if (auto v = r.uint(get(key), field + "." + key, max)) out = *v;
+    else ok = false;
+  };
+  uintField("instance", 0xFFFFFF, spec.instance);
+  uintField("geometry", 0xFFFFFF, spec.geometry);
+  uintField("edge_points", 64, spec.edge_points);
+  if (YamlReader::has(n, "at") && !featureList(r, get("at"), field + ".at", spec)) ok = false;
+  if (auto o = r.numbers<3>(get("offset"), field + ".offset")) spec.offset = *o;
+  else ok = false;
+  if (YamlReader::has(n, "direction_scale")) {
+    auto s = r.number(get("direction_scale"), field + ".direction_scale");
+    if (s && *s > 0) spec.direction_scale = *s;
+    else if (s) r.error(get("direction_scale"), field + ".direction_scale", "must be positive");
+    ok = ok && s && *s > 0;
+  }
+  if (!ok) return;
+  std::string error;
+  rays.rays = aimRays(scene, spec, rays.defaults, &error);
+  if (!error.empty()) {
+    r.error(n, field, error);
+    rays.rays.clear();
+    return;
+  }
+  if (rays.rays.size() > (1u << 24)) {
+    r.error(n, field, "at most 2^24 rays in a launch");
+    rays.rays.clear();
+    return;
+  }
+  rays.width = static_cast<uint32_t>(rays.rays.size());
+  rays.height = 1;
+}
+
 }  // namespace
 
-void parseRays(YamlReader& r, const YAML::Node& n, Rays& rays) {
-  if (!r.expectMap(n, "rays", {"camera", "grid", "list", "tmin", "tmax", "flags", "cull_mask",
+void parseRays(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& rays) {
+  if (!r.expectMap(n, "rays", {"camera", "grid", "list", "aim", "tmin", "tmax", "flags", "cull_mask",
                                "sbt_offset", "sbt_stride", "miss"}))
     return;
   parseRayFields(r, n, "rays", rays.defaults);
   rays.defaults_loc = r.loc(n, "rays");
   noteUndefinedRay(r, n, "rays", rays.defaults, false);
-  const int forms = YamlReader::has(n, "camera") + YamlReader::has(n, "grid") + YamlReader::has(n, "list");
+  const int forms = YamlReader::has(n, "camera") + YamlReader::has(n, "grid") + YamlReader::has(n, "list") +
+                    YamlReader::has(n, "aim");
   if (forms != 1) {
-    r.error(n, "rays", "exactly one of camera, grid or list is required");
+    r.error(n, "rays", "exactly one of camera, grid, list or aim is required");
     return;
   }
   if (YamlReader::has(n, "camera")) parseCamera(r, YamlReader::get(n, "camera"), rays);
   else if (YamlReader::has(n, "grid")) parseGrid(r, YamlReader::get(n, "grid"), rays);
+  else if (YamlReader::has(n, "aim")) parseAim(r, YamlReader::get(n, "aim"), scene, rays);
   else parseList(r, YamlReader::get(n, "list"), rays);
 }
 

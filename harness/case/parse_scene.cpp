@@ -3,7 +3,6 @@
 
 #include "case/case_parts.h"
 #include "case/flag_names.h"
-#include "case/triangle_grid.h"
 #include "case/transform.h"
 
 namespace rayspec {
@@ -11,35 +10,8 @@ namespace {
 
 bool parseTriangles(YamlReader& r, const YAML::Node& n, const std::string& field, Geometry& g) {
   g.kind = Geometry::Kind::Triangles;
-  if (!r.expectMap(n, field, {"grid", "vertices", "indices"})) return false;
-  const YAML::Node grid = YamlReader::get(n, "grid");
-  if (grid.IsDefined()) {
-    if (YamlReader::has(n, "vertices") || YamlReader::has(n, "indices")) {
-      r.error(n, field, "a grid takes no vertices or indices");
-      return false;
-    }
-    const std::string f = field + ".grid";
-    if (!r.expectMap(grid, f, {"cells", "size", "center"}) || !r.require(grid, f, "cells") ||
-        !r.require(grid, f, "size"))
-      return false;
-    const YAML::Node cells = YamlReader::get(grid, "cells");
-    if (!cells.IsSequence() || cells.size() != 2) {
-      r.error(cells, f + ".cells", "expected [x, y] cell counts");
-      return false;
-    }
-    auto cx = r.uint(cells[0], f + ".cells[0]", 4096);
-    auto cy = r.uint(cells[1], f + ".cells[1]", 4096);
-    auto size = r.numbers<2>(YamlReader::get(grid, "size"), f + ".size");
-    std::optional<std::array<double, 3>> center = std::array<double, 3>{0, 0, 0};
-    if (YamlReader::has(grid, "center")) center = r.numbers<3>(YamlReader::get(grid, "center"), f + ".center");
-    if (!cx || !cy || !size || !center) return false;
-    if (*cx == 0 || *cy == 0 || uint64_t(*cx) * *cy > (1u << 22)) {
-      r.error(cells, f + ".cells", "cell counts must be at least 1, at most 2^22 cells in all");
-      return false;
-    }
-    makeTriangleGrid(*cx, *cy, *size, *center, g);
-    return true;
-  }
+  if (!r.expectMap(n, field, {"grid", "fan", "triangulation", "vertices", "indices"})) return false;
+  if (const std::optional<bool> generated = parseGeneratedMesh(r, n, field, g)) return *generated;
   if (!r.require(n, field, "vertices")) return false;
   const YAML::Node verts = YamlReader::get(n, "vertices");
   if (!r.expectSeq(verts, field + ".vertices")) return false;

@@ -4,6 +4,7 @@
 
 #include "cli/commands.h"
 #include "run/run_loop.h"
+#include "stability/run_stability.h"
 #include "fault/planted_fault.h"
 #include "vulkan/device_errors.h"
 
@@ -105,7 +106,23 @@ int main(int argc, char** argv) {
   list->add_option("--cases", list_opt.cases_dir, "Folder of case files")->capture_default_str();
   list->add_option("--rules-file", list_opt.rules_file, "Rule catalog")->capture_default_str();
 
+  auto* stability = app.add_subcommand(
+      "stability", "Leak and double-hit rates of the stability families per coordinate magnitude: the device and "
+                   "each model tier (OUT/stability.txt, stability.json, stability.png)");
+  rayspec::StabilityOptions stability_opt;
+  stability_opt.run.filter = "stability/*";
+  stability->add_option("--device", stability_opt.run.device, "Vulkan device name (substring)");
+  stability->add_flag("--no-device", stability_opt.run.no_device, "The model tiers only");
+  stability->add_option("--filter", stability_opt.run.filter, "Cases (glob)")->capture_default_str();
+  stability->add_option("--cases", stability_opt.run.cases_dir, "Folder of case files")->capture_default_str();
+  stability->add_option("--out", stability_opt.out, "Folder for the report and the runs")->capture_default_str();
+  stability->add_option("--baseline", stability_opt.run.baseline, "Known failures of this driver");
+  stability->add_option("--timeout", stability_opt.run.timeout, "Seconds per case side")->capture_default_str();
+  stability->add_flag("--strict-validation", stability_opt.run.strict_validation,
+                      "Fail when the validation layer is not installed");
+
   CLI11_PARSE(app, argc, argv);
+  if (*stability) return rayspec::runStability(stability_opt);
   if (*list) return rayspec::runList(list_opt);
   if (*devices) return rayspec::runDevices(devices_opt);
   if (*run) return rayspec::runCases(run_opt);

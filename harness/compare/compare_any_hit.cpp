@@ -30,8 +30,9 @@ void compareAnyHitRuns(const Case& c, const Results& device, const Results& mode
   for (const RayAmbiguity& a : model.ambiguous) ambiguous[a.ray] = &a;
   // A double hit (R-WATERTIGHT, a "should"): on a ray through a shared edge
   // or vertex whose candidates were all ignored, the model ran any-hit once
-  // for each of the k triangles sharing it; a watertight device runs it for
-  // one of them, so at most (model - (k - 1)) times in all.
+  // for each of the h triangles sharing it that it decided as hits (one
+  // where the mesh is closed); a watertight device runs it for one of them,
+  // so at most (model - (h - 1)) times in all.
   FindingBuilder doubled;
   doubled.finding = {Status::QualityWarning, "R-WATERTIGHT",
                      "double hit: any-hit ran for more than one of the triangles sharing an edge or vertex"};
@@ -44,13 +45,10 @@ void compareAnyHitRuns(const Case& c, const Results& device, const Results& mode
     const uint32_t* m = &model.records[i * words];
     if (m[chit] != 0 || m[isect] != 0 || undefined.count(static_cast<uint32_t>(i))) continue;
     if (const auto it = ambiguous.find(static_cast<uint32_t>(i)); it != ambiguous.end()) {
-      const RayAmbiguity& a = *it->second;
-      const uint32_t k = static_cast<uint32_t>(a.shared_triangles.size());
-      if (k < 2 || d[ahit] + (k - 1) <= m[ahit]) continue;
       // Only where the triangles really share the edge, or close a fan around
       // the vertex: on the outer border of a mesh hitting two is no rule's break.
-      RayAmbiguity shared{a.ray, a.reason, a.shared_triangles, {}};
-      if (crossesSharedEdge(c, shared)) doubled.addRay(static_cast<uint32_t>(i));
+      const SharedCrossing s = sharedCrossing(c, *it->second);
+      if (s.triangles && d[ahit] + s.model_hits > m[ahit] + 1) doubled.addRay(static_cast<uint32_t>(i));
       continue;
     }
     ++checked;

@@ -88,4 +88,16 @@ bool crossesSharedEdge(const Case& c, const RayAmbiguity& a) {
   return false;
 }
 
+SharedCrossing sharedCrossing(const Case& c, const RayAmbiguity& a) {
+  SharedCrossing s;
+  RayAmbiguity shared{a.ray, a.reason, a.shared_triangles, {}};
+  for (Candidate& k : shared.candidates) {
+    s.model_hits += k.hit ? 1 : 0;
+    k.hit = true;
+  }
+  if (shared.candidates.size() < 2 || s.model_hits == 0 || !crossesSharedEdge(c, shared)) return {};
+  s.triangles = static_cast<uint32_t>(shared.candidates.size());
+  return s;
+}
+
 }  // namespace rayspec

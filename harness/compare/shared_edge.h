@@ -20,4 +20,15 @@ bool crossesSharedEdge(const Case& c, const RayAmbiguity& a);
 // is legal whatever the candidate list says.
 bool crossesBorderOnly(const Case& c, const RayAmbiguity& a);
 
+// A ray through two or more triangles that share the crossed edge or close a
+// fan around the crossed vertex (its shared_triangles, crossesSharedEdge):
+// how many there are and how many of them the model counted as hits (where
+// any-hit ignored them, the model ran it that often; a watertight device
+// runs it once). `triangles` is 0 when the ray is no such ray, or the model
+// hit none of them.
+struct SharedCrossing {
+  uint32_t triangles = 0, model_hits = 0;
+};
+SharedCrossing sharedCrossing(const Case& c, const RayAmbiguity& a);
+
 }  // namespace rayspec

@@ -25,15 +25,14 @@ std::string counterNote(const std::string& counter, int delta) {
 }
 
 // A ray through a shared edge or vertex (the model marks it ambiguous) whose
-// candidates any-hit ignored: the model ran any-hit for each of the k
-// triangles sharing it. Returns k, 0 when not such a ray.
-uint32_t sharedEdgeAnyHitRay(const RecordFaultArgs& a, const RayAmbiguity& amb) {
-  const uint32_t k = static_cast<uint32_t>(amb.shared_triangles.size());
-  if (k < 2 || amb.ray >= a.dev.rays() || a.mod.get(amb.ray, "closest_hit_runs") != 0 ||
-      a.mod.get(amb.ray, "intersection_runs") != 0 || a.mod.get(amb.ray, "any_hit_runs") < k)
-    return 0;
-  const RayAmbiguity shared{amb.ray, amb.reason, amb.shared_triangles, {}};
-  return crossesSharedEdge(a.c, shared) ? k : 0;
+// candidates any-hit ignored: the model ran any-hit for each of the
+// triangles sharing it that it decided as hits. Empty when not such a ray.
+SharedCrossing sharedEdgeAnyHitRay(const RecordFaultArgs& a, const RayAmbiguity& amb) {
+  const SharedCrossing s = sharedCrossing(a.c, amb);
+  if (!s.triangles || amb.ray >= a.dev.rays() || a.mod.get(amb.ray, "closest_hit_runs") != 0 ||
+      a.mod.get(amb.ray, "intersection_runs") != 0 || a.mod.get(amb.ray, "any_hit_runs") < s.model_hits)
+    return {};
+  return s;
 }
 
 }  // namespace
@@ -144,7 +143,7 @@ FaultResult leakEdge(RecordFaultArgs& a) {
 
 FaultResult doubleHitEdge(RecordFaultArgs& a) {
   for (const RayAmbiguity& amb : a.model.ambiguous) {
-    const uint32_t k = sharedEdgeAnyHitRay(a, amb);
+    const uint32_t k = sharedEdgeAnyHitRay(a, amb).triangles;
     if (!k) continue;
     const uint32_t before = a.dev.get(amb.ray, "any_hit_runs");
     a.dev.set(amb.ray, "any_hit_runs", before + (k - 1));
@@ -174,10 +173,10 @@ Results perfectDevice(const Case& c, const Results& model) {
   const std::set<uint32_t> amb = ambiguousRays(model);
   RecordFaultArgs a{c, dev, mod, model, amb};
   for (const RayAmbiguity& r : model.ambiguous) {
-    const uint32_t k = sharedEdgeAnyHitRay(a, r);
-    if (!k) continue;
-    dev.set(r.ray, "any_hit_runs", dev.get(r.ray, "any_hit_runs") - (k - 1));
-    dev.bumpCounter(anyHitCounters(c), -static_cast<int>(k - 1));
+    const uint32_t extra = sharedEdgeAnyHitRay(a, r).model_hits;
+    if (extra < 2) continue;
+    dev.set(r.ray, "any_hit_runs", dev.get(r.ray, "any_hit_runs") - (extra - 1));
+    dev.bumpCounter(anyHitCounters(c), -static_cast<int>(extra - 1));
   }
   return device;
 }

@@ -36,7 +36,7 @@ std::vector<CaseFile> expand(const std::string& path, const std::string& name) {
   SweepExpansion ex = expandSweep(text.str(), path, name);
   if (!ex.errors.empty()) return {CaseFile{path, name, false, {}, std::move(ex.errors)}};
   std::vector<CaseFile> out;
-  for (SweepVariant& v : ex.variants) out.push_back(CaseFile{path, v.name, true, std::move(v.text), {}});
+  for (SweepVariant& v : ex.variants) out.push_back(CaseFile{path, v.name, true, std::move(v.text), {}, std::move(v.params)});
   return out;
 }
 

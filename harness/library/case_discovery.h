@@ -16,6 +16,7 @@ struct CaseFile {
   bool generated = false;          // a sweep's variant: `text` holds it
   std::string text;                // a variant's substituted text
   std::vector<CaseError> errors;   // a sweep file that does not expand (then it is one entry)
+  std::vector<std::pair<std::string, std::string>> params;  // a variant's sweep parameters (value text)
 };
 
 // Every case under dir (sorted by name) whose name matches glob. A sweep's

@@ -275,6 +275,7 @@ SweepExpansion expandChecked(const std::string& text, const std::string& file, c
       if (++names_seen[v.name] == 2)
         ex.error(name_node, "sweep.name", "two variants are both named '" + v.name +
                                               "': the name must use every parameter that varies");
+      v.params = params;
       result.variants.push_back(std::move(v));
       size_t k = product.size();
       while (k > 0) {

@@ -27,6 +27,7 @@ namespace rayspec {
 struct SweepVariant {
   std::string name;  // <family>/<stem>/<variant>
   std::string text;  // the case file's text with the parameters substituted
+  std::vector<std::pair<std::string, std::string>> params;  // each parameter's value text, rows' first
 };
 
 struct SweepExpansion {

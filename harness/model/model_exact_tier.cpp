@@ -82,15 +82,16 @@ void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& ca
     }
   }
   if (reason == AmbiguityReason::Edge || reason == AmbiguityReason::Vertex) {
-    // The triangles of one instance the model decided as hits within the
-    // bound of the same shared edge or vertex (same t): a watertight device
-    // finds one of them, so a double hit shows as extra any-hit runs.
+    // The triangles of one instance within the bound of the same shared edge
+    // or vertex (same t), each with the model's own decision (one of them
+    // where the mesh is closed around the ray: watertight.cpp): a watertight
+    // device finds one of them, so a double hit shows as extra any-hit runs.
     const ModelCandidate* first = nullptr;
     for (const ModelCandidate& cand : *cands) {
-      if (cand.aabb || !cand.hit || cand.ambiguity == TriAmbiguity::None || !eligible(cand)) continue;
+      if (cand.aabb || cand.ambiguity == TriAmbiguity::None || !eligible(cand)) continue;
       if (!first) first = &cand;
       if (cand.instance == first->instance && std::fabs(cand.t - first->t) <= tr.tol(first->t))
-        amb.shared_triangles.push_back({true, cand.instance, cand.geometry, cand.primitive});
+        amb.shared_triangles.push_back({cand.hit, cand.instance, cand.geometry, cand.primitive});
     }
   }
   if (reason || faces) {

@@ -28,6 +28,10 @@ void setInvalidBounds(RTCBounds& b) {
   b.upper_x = b.upper_y = b.upper_z = -1.0f;
 }
 
+// Float steps (relative) of a ray origin's distance that Embree's box test
+// may be off by: about 8 * 2^-23.
+constexpr double kTraversalSteps = 1e-6;
+
 float clampLarge(float x) { return std::clamp(x, -kEmbreeLarge, kEmbreeLarge); }
 
 void ownTriangleBounds(const RTCBoundsFunctionArguments* args) {
@@ -323,10 +327,35 @@ void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
   s.blases.resize(c.scene.blases.size());
   // Exact tier: how far a device's object-space rays may be off, per BLAS
   // (the largest over the instances that use it).
+  // Also how far Embree's own float traversal may misjudge a box the ray
+  // only just crosses: a few float steps of the distance from the launch
+  // rays' object-space origins (a mesh of 1e-4 seen from 3 units away), at
+  // most 1e5 times the BLAS's extent (rays from far away that meet another
+  // instance must not blow the boxes up).
   std::vector<double> rayPad(c.scene.blases.size(), 0.0);
-  for (const Instance& inst : c.scene.instances)
-    if (inst.blas && *inst.blas < rayPad.size())
-      rayPad[*inst.blas] = std::max(rayPad[*inst.blas], instancePad(invertTransform(inst.transform), inst.transform));
+  for (const Instance& inst : c.scene.instances) {
+    if (!inst.blas || *inst.blas >= rayPad.size()) continue;
+    const std::array<double, 12> inv = invertTransform(inst.transform);
+    double lo = INFINITY, hi = -INFINITY;
+    for (const Geometry& g : c.scene.blases[*inst.blas].geometries) {
+      for (const Vec3& v : g.vertices)
+        for (float x : v)
+          if (std::isfinite(x)) lo = std::min(lo, double(x)), hi = std::max(hi, double(x));
+      for (const auto& b : g.aabbs)
+        for (float x : b)
+          if (std::isfinite(x)) lo = std::min(lo, double(x)), hi = std::max(hi, double(x));
+    }
+    double reach = 0;
+    const double reachCap = hi >= lo ? 1e5 * (hi - lo) : 0;
+    for (const Ray& r : c.rays.rays)
+      for (int k = 0; k < 3; ++k) {
+        const double o = inv[k * 4] * r.origin[0] + inv[k * 4 + 1] * r.origin[1] + inv[k * 4 + 2] * r.origin[2] +
+                         inv[k * 4 + 3];
+        if (std::isfinite(o)) reach = std::max(reach, std::fabs(o));
+      }
+    rayPad[*inst.blas] = std::max(
+        {rayPad[*inst.blas], instancePad(inv, inst.transform), kTraversalSteps * std::min(reach, reachCap)});
+  }
   bool anyOwn = false;
   for (size_t bi = 0; bi < c.scene.blases.size(); ++bi) {
     const Blas& src = c.scene.blases[bi];

@@ -9,6 +9,16 @@ namespace {
 
 constexpr double kU = 5.9604644775390625e-08;  // 2^-24, float unit roundoff
 
+// The sign of the edge function of (a, b) for the origin moved by (eps,
+// eps^2): e(eps) = e - eps (p_by - p_ay) + eps^2 (p_bx - p_ax). Swapping a
+// and b negates it exactly (the same differences, negated). 0 only for an
+// edge of zero length.
+double perturbedSide(const double* px, const double* py, int a, int b) {
+  const double dy = py[b] - py[a];
+  if (dy != 0.0) return -dy;
+  return px[b] - px[a];
+}
+
 }  // namespace
 
 WatertightHit watertightIntersect(const DVec3& o, const DVec3& d, const DVec3& v0, const DVec3& v1,
@@ -56,8 +66,17 @@ WatertightHit watertightIntersect(const DVec3& o, const DVec3& d, const DVec3& v
   }
   for (int i = 0; i < 3; ++i)
     if (std::isnan(e[i]) || std::isnan(pz[i]) || std::isnan(bound[i])) { r.valid = false; return r; }
-  const bool anyNeg = e[0] < 0 || e[1] < 0 || e[2] < 0;
-  const bool anyPos = e[0] > 0 || e[1] > 0 || e[2] > 0;
+  // The hit decision: an edge function of exactly zero (the ray through the
+  // edge in double precision) takes the sign it has for the origin moved by
+  // (eps, eps^2) in the sheared plane, eps -> 0 (a symbolic perturbation):
+  // the two triangles of a shared edge compute that edge from the same two
+  // points in opposite order, so exactly one of them (one triangle of a
+  // closed fan around a vertex) counts the ray as inside. A watertight
+  // device hits one of them; the model does the same.
+  double side[3];
+  for (int i = 0; i < 3; ++i) side[i] = e[i] != 0.0 ? e[i] : perturbedSide(px, py, (i + 1) % 3, (i + 2) % 3);
+  const bool anyNeg = side[0] < 0 || side[1] < 0 || side[2] < 0;
+  const bool anyPos = side[0] > 0 || side[1] > 0 || side[2] > 0;
   // Clear sides: an edge function beyond its bound.
   const bool clearNeg = e[0] < -bound[0] || e[1] < -bound[1] || e[2] < -bound[2];
   const bool clearPos = e[0] > bound[0] || e[1] > bound[1] || e[2] > bound[2];

@@ -39,7 +39,7 @@ using DVec3 = std::array<double, 3>;
 enum class TriAmbiguity { None, Edge, Vertex, Degenerate };
 
 struct WatertightHit {
-  bool hit = false;        // the double-precision decision (edges inclusive)
+  bool hit = false;        // the double-precision decision (an edge exactly hit: a perturbation decides, watertight.cpp)
   double t = 0, b1 = 0, b2 = 0;  // barycentrics: weights of v1 and v2
   TriAmbiguity ambiguity = TriAmbiguity::None;  // near an edge / vertex
   bool valid = true;       // false: NaN somewhere (never a hit)

@@ -77,7 +77,8 @@ struct RayAmbiguity {
   AmbiguityReason reason = AmbiguityReason::Edge;
   std::vector<Candidate> candidates;
   // edge / vertex: the triangles the model found within the error bound of
-  // the shared edge or vertex (each once); a watertight device finds one.
+  // the shared edge or vertex (each once; `hit`: the model's own decision,
+  // one of them where the mesh is closed); a watertight device finds one.
   std::vector<Candidate> shared_triangles;
 };
 

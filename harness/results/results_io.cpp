@@ -114,7 +114,7 @@ std::string writeResults(const Results& r, const std::string& dir_name, const st
       cands.push_back({{"hit", c.hit}, {"instance", c.instance}, {"geometry", c.geometry}, {"primitive", c.primitive}});
     json shared = json::array();
     for (const Candidate& c : a.shared_triangles)
-      shared.push_back({{"instance", c.instance}, {"geometry", c.geometry}, {"primitive", c.primitive}});
+      shared.push_back({{"hit", c.hit}, {"instance", c.instance}, {"geometry", c.geometry}, {"primitive", c.primitive}});
     j["ambiguous"].push_back(
         {{"ray", a.ray}, {"reason", ambiguityReasonName(a.reason)}, {"candidates", cands}, {"shared_triangles", shared}});
   }
@@ -191,7 +191,8 @@ Results readResults(const std::string& dir_name, std::string* error) {
         a.candidates.push_back({jc.at("hit"), jc.at("instance"), jc.at("geometry"), jc.at("primitive")});
       if (ja.contains("shared_triangles"))
         for (const json& js : ja.at("shared_triangles"))
-          a.shared_triangles.push_back({true, js.at("instance"), js.at("geometry"), js.at("primitive")});
+          a.shared_triangles.push_back(
+              {js.value("hit", true), js.at("instance"), js.at("geometry"), js.at("primitive")});
       r.ambiguous.push_back(std::move(a));
     }
   } catch (const std::exception& e) {

@@ -1,0 +1,37 @@
+// The `aim` form of a case's `rays`: rays aimed at the interior features of
+// one triangle mesh of the scene (where floating point decides), so that
+// every ray crosses the mesh strictly inside its outline.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "case/case.h"
+
+namespace rayspec {
+
+struct AimSpec {
+  uint32_t instance = 0, geometry = 0;
+  bool vertices = true, edges = true, faces = true;  // which features to aim at
+  uint32_t edge_points = 1;                          // points per edge, at k / (edge_points + 1)
+  std::array<double, 3> offset{0, 0, 1};             // world origin = aim point + offset
+  double direction_scale = 1;                        // world direction = -offset * direction_scale
+};
+
+// The interior features of a triangle mesh, in object space (double):
+// vertices closed all around (every edge at them shared by exactly two
+// triangles), points on edges shared by exactly two triangles, and triangle
+// centroids; in that order, each list in the order of first appearance.
+// Vertices are told apart by position. Triangles with a NaN are left out.
+std::vector<std::array<double, 3>> meshAimPoints(const Geometry& g, const AimSpec& spec);
+
+// One ray per aim point (the other fields from `defaults`): the aim point
+// through the geometry's and the instance's transforms (in double) plus
+// `offset`, rounded to float, towards the point. Empty, with *error set,
+// when the instance or geometry is not a triangle mesh of the scene or the
+// mesh has no interior feature.
+std::vector<Ray> aimRays(const Scene& scene, const AimSpec& spec, const Ray& defaults, std::string* error);
+
+}  // namespace rayspec

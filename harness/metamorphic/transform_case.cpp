@@ -1,0 +1,80 @@
+// Moving a case rigidly by an exact motion.
+#include "metamorphic/transform_case.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rayspec {
+namespace {
+
+bool tracesOnlyTheLaunchRay(const Case& c) {
+  const Program& rg = c.pipeline.raygen;
+  if (rg.size() != 1 || rg[0].kind != Stmt::Kind::Trace) return false;
+  auto traces = [](const Program& p) {
+    return std::any_of(p.begin(), p.end(), [](const Stmt& s) {
+      return s.kind == Stmt::Kind::Trace || !s.then_.empty() || !s.else_.empty();
+    });
+  };
+  for (const Program& p : c.pipeline.miss)
+    if (traces(p)) return false;
+  for (const HitGroup& g : c.pipeline.hit_groups)
+    for (const auto& p : {g.closest_hit, g.any_hit, g.intersection})
+      if (p && traces(*p)) return false;
+  return true;
+}
+
+// a + b in double, false when the float sum would round.
+bool exactSum(float a, double b, float* out) {
+  const double s = double(a) + b;
+  *out = static_cast<float>(s);
+  return double(*out) == s;
+}
+
+}  // namespace
+
+std::optional<Case> moveCase(const Case& c, const RigidMotion& m, std::string* why_not) {
+  std::array<int, 3> seen{0, 0, 0};
+  for (int k = 0; k < 3; ++k) {
+    if (m.axis[k] < 0 || m.axis[k] > 2 || (m.sign[k] != 1 && m.sign[k] != -1)) {
+      *why_not = "the motion is not a signed permutation of the axes";
+      return std::nullopt;
+    }
+    ++seen[m.axis[k]];
+  }
+  if (seen != std::array<int, 3>{1, 1, 1}) {
+    *why_not = "the motion is not a signed permutation of the axes";
+    return std::nullopt;
+  }
+  if (!tracesOnlyTheLaunchRay(c)) {
+    *why_not = "a stage traces rays of its own (or branches): only the launch rays would move";
+    return std::nullopt;
+  }
+  Case out = c;
+  for (Instance& inst : out.scene.instances) {
+    const Transform& t = inst.transform;
+    Transform n{};
+    for (int k = 0; k < 3; ++k) {
+      const int row = m.axis[k];
+      for (int col = 0; col < 3; ++col) n[k * 4 + col] = m.sign[k] * t[row * 4 + col];
+      if (!exactSum(m.sign[k] * t[row * 4 + 3], m.translate[k], &n[k * 4 + 3])) {
+        *why_not = "an instance translation plus the motion's is not exact in float";
+        return std::nullopt;
+      }
+    }
+    inst.transform = n;
+  }
+  for (Ray& r : out.rays.rays) {
+    Ray n = r;
+    for (int k = 0; k < 3; ++k) {
+      n.direction[k] = m.sign[k] * r.direction[m.axis[k]];
+      if (!exactSum(m.sign[k] * r.origin[m.axis[k]], m.translate[k], &n.origin[k])) {
+        *why_not = "a ray origin plus the motion's translation is not exact in float";
+        return std::nullopt;
+      }
+    }
+    r = n;
+  }
+  return out;
+}
+
+}  // namespace rayspec

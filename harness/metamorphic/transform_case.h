@@ -1,0 +1,33 @@
+// A rigid motion of a whole case (the metamorphic checks of the stability
+// families): every instance transform is composed with the motion and every
+// launch ray moved by it. With a signed permutation of the axes (an exact
+// rotation: axis swaps, turns by 90 degrees, mirrors) and a translation
+// whose every sum is exact in float, each float of the moved case is the
+// exact image of the original's: the geometry a device sees is the same, so
+// verdicts and the leak and double-hit counts must not move.
+//
+// Only cases whose stages trace nothing but the raygen's one launch ray
+// (`raygen: [trace: {}]`) are moved: a nested trace's own origin would not
+// move. World-space built-ins a stage records (world ray origin, hit
+// position) move with the case; compare counts, ids and hits, not those.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+
+#include "case/case.h"
+
+namespace rayspec {
+
+struct RigidMotion {
+  std::array<int, 3> axis{0, 1, 2};      // new x[k] = sign[k] * old x[axis[k]] + translate[k]
+  std::array<int, 3> sign{1, 1, 1};      // +1 or -1
+  std::array<double, 3> translate{0, 0, 0};
+};
+
+// The moved case, or nullopt with *why_not set: the motion is not a signed
+// permutation, a sum is not exact in float, or the case traces other rays.
+std::optional<Case> moveCase(const Case& c, const RigidMotion& m, std::string* why_not);
+
+}  // namespace rayspec

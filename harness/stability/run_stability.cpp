@@ -1,0 +1,128 @@
+// The stability report: runs, counts, files.
+#include "stability/run_stability.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "library/case_discovery.h"
+#include "results/results_io.h"
+#include "run/run_loop.h"
+#include "stability/stability_table.h"
+
+namespace rayspec {
+namespace {
+
+// The device's name up to its first " (": "llvmpipe (LLVM 15, ...)" -> "llvmpipe".
+std::string shortDeviceName(const std::string& device) {
+  const size_t cut = device.find(" (");
+  return cut == std::string::npos ? device : device.substr(0, cut);
+}
+
+struct StabilityCase {
+  std::string name, family, magnitude_text;
+  double magnitude = 0;
+};
+
+// The filter's cases that belong to a stability family: a sweep variant with
+// a numeric `magnitude` parameter.
+std::vector<StabilityCase> stabilityCases(const RunOptions& run) {
+  std::vector<StabilityCase> out;
+  for (const CaseFile& f : findCases(run.cases_dir, run.filter)) {
+    for (const auto& [key, value] : f.params) {
+      if (key != "magnitude") continue;
+      StabilityCase c;
+      c.name = f.name;
+      const size_t a = f.name.find('/'), b = f.name.find('/', a + 1);
+      if (a == std::string::npos || b == std::string::npos) continue;
+      c.family = f.name.substr(a + 1, b - a - 1);
+      c.magnitude_text = value;
+      try {
+        c.magnitude = std::stod(value);
+      } catch (const std::exception&) {
+        std::fprintf(stderr, "rayspec stability: %s: magnitude '%s' is not a number; left out\n", f.path.c_str(),
+                     value.c_str());
+        continue;
+      }
+      out.push_back(c);
+    }
+  }
+  return out;
+}
+
+// A side's results bundle, counted; false (with a note) when it is missing
+// or did not end normally.
+bool countBundle(const std::string& dir, LeakCounts* counts, std::string* device) {
+  std::string error;
+  const Results r = readResults(dir, &error);
+  if (!error.empty() || !r.ok()) {
+    std::fprintf(stderr, "rayspec stability: %s: %s; left out\n", dir.c_str(),
+                 error.empty() ? r.statusText().c_str() : error.c_str());
+    return false;
+  }
+  *counts = countLeaks(r);
+  if (device) *device = r.device;
+  return true;
+}
+
+std::string writeText(const std::string& path, const std::string& text) {
+  std::ofstream f(path);
+  f << text;
+  return f.good() ? "" : path + ": cannot write";
+}
+
+}  // namespace
+
+int runStability(const StabilityOptions& opt) {
+  const std::vector<StabilityCase> cases = stabilityCases(opt.run);
+  if (cases.empty()) {
+    std::fprintf(stderr, "rayspec stability: no case matching '%s' in %s has a `magnitude` sweep parameter\n",
+                 opt.run.filter.c_str(), opt.run.cases_dir.c_str());
+    return kExitSetup;
+  }
+  const bool with_device = !opt.run.no_device;
+  for (const std::string& tier : opt.tiers) {
+    RunOptions o = opt.run;
+    o.model_tier = tier;
+    o.no_model = false;
+    o.no_device = !with_device || tier != "exact";
+    o.out = opt.out + "/runs/" + tier;
+    std::printf("== stability: model %s tier%s ==\n", tier.c_str(), o.no_device ? "" : " and the device");
+    std::fflush(stdout);
+    const int rc = runCases(o);
+    if (rc == kExitSetup || rc >= 128) return rc;
+  }
+  std::vector<StabilityEntry> entries;
+  bool exact_clean = true;
+  for (const StabilityCase& c : cases)
+    for (const std::string& tier : opt.tiers) {
+      const std::string dir = opt.out + "/runs/" + tier + "/" + c.name;
+      StabilityEntry e{c.family, c.magnitude, c.magnitude_text, "model " + tier, {}};
+      if (countBundle(dir + "/model", &e.counts, nullptr)) {
+        addCounts(entries, e);
+        if (tier == "exact" && (e.counts.leaks || e.counts.doubles)) {
+          exact_clean = false;
+          std::fprintf(stderr, "rayspec stability: %s: the exact tier leaks %llu and double-hits %llu rays\n",
+                       c.name.c_str(), (unsigned long long)e.counts.leaks, (unsigned long long)e.counts.doubles);
+        }
+      }
+      std::string device;
+      if (with_device && tier == "exact" && countBundle(dir + "/device", &e.counts, &device)) {
+        e.source = shortDeviceName(device);
+        addCounts(entries, e);
+      }
+    }
+  std::filesystem::create_directories(opt.out);
+  const std::string table = formatStabilityTable(entries);
+  std::string error = writeText(opt.out + "/stability.txt", table);
+  if (error.empty()) error = writeText(opt.out + "/stability.json", stabilityJson(entries).dump(2) + "\n");
+  if (error.empty()) error = writeLinePlots(opt.out + "/stability.png", stabilityPanels(entries), {2, 640, 440});
+  std::printf("\n%s\nReport: %s/stability.txt, stability.json, stability.png\n", table.c_str(), opt.out.c_str());
+  if (!error.empty()) {
+    std::fprintf(stderr, "rayspec stability: %s\n", error.c_str());
+    return kExitFailing;
+  }
+  return exact_clean ? kExitPass : kExitFailing;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,191 @@
+// The seeded mesh generators (fan, triangulation), the aim rays and their
+// case syntax.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "case/aim_rays.h"
+#include "case/parse_case.h"
+#include "case/seeded_random.h"
+#include "case/triangle_fan.h"
+#include "case/triangle_grid.h"
+#include "case/triangulation.h"
+
+namespace rayspec {
+namespace {
+
+double signedArea(const Geometry& g, uint32_t p) {
+  const Vec3 &a = g.vertices[g.indices[p * 3]], &b = g.vertices[g.indices[p * 3 + 1]],
+             &c = g.vertices[g.indices[p * 3 + 2]];
+  return (double(b[0]) - a[0]) * (double(c[1]) - a[1]) - (double(b[1]) - a[1]) * (double(c[0]) - a[0]);
+}
+
+// Each undirected edge used once (border) or twice in opposite directions.
+void expectManifold(const Geometry& g) {
+  std::map<std::pair<uint32_t, uint32_t>, int> directed;
+  for (uint32_t p = 0; p < g.primitiveCount(); ++p)
+    for (int e = 0; e < 3; ++e) ++directed[{g.indices[p * 3 + e], g.indices[p * 3 + (e + 1) % 3]}];
+  for (const auto& [e, n] : directed) EXPECT_EQ(n, 1) << e.first << "->" << e.second;
+}
+
+TEST(SeededRandom, FixedSequence) {
+  // splitmix64's published first outputs for seed 0 (the same on every platform).
+  SeededRandom r(0);
+  EXPECT_EQ(r.next(), 0xE220A8397B1DCDAFull);
+  EXPECT_EQ(r.next(), 0x6E789E6AA1B965F4ull);
+  SeededRandom u(7);
+  for (int i = 0; i < 1000; ++i) {
+    const double x = u.unit();
+    EXPECT_GE(x, 0.0);
+    EXPECT_LT(x, 1.0);
+  }
+}
+
+TEST(TriangleFan, ClosedCounterClockwiseAndSeeded) {
+  for (uint64_t seed : {0ull, 1ull, 99ull}) {
+    Geometry g;
+    makeTriangleFan({12, 2.0, {5, 6, 7}, seed}, g);
+    ASSERT_EQ(g.primitiveCount(), 12u);
+    EXPECT_EQ(g.vertices[0], (Vec3{5, 6, 7}));
+    for (uint32_t p = 0; p < 12; ++p) EXPECT_GT(signedArea(g, p), 0) << seed << " " << p;
+    expectManifold(g);
+    for (size_t v = 1; v < g.vertices.size(); ++v) {
+      const double r = std::hypot(g.vertices[v][0] - 5.0, g.vertices[v][1] - 6.0);
+      EXPECT_LE(r, 2.0 + 1e-5);
+      EXPECT_GE(r, seed ? 1.2 - 1e-5 : 2.0 - 1e-5);
+      EXPECT_EQ(g.vertices[v][2], 7.0f);
+    }
+  }
+  Geometry a, b, c;
+  makeTriangleFan({9, 1, {0, 0, 0}, 5}, a);
+  makeTriangleFan({9, 1, {0, 0, 0}, 5}, b);
+  makeTriangleFan({9, 1, {0, 0, 0}, 6}, c);
+  EXPECT_EQ(a.vertices, b.vertices);
+  EXPECT_NE(a.vertices, c.vertices);
+}
+
+TEST(Triangulation, CoversTheRectangleCounterClockwise) {
+  for (uint64_t seed : {1ull, 2ull, 3ull, 12345ull}) {
+    Geometry g;
+    makeTriangulation({6, 4, {3, 2}, {10, 20, 0}, seed, 0.25}, g);
+    ASSERT_EQ(g.primitiveCount(), 48u);
+    double area = 0;
+    for (uint32_t p = 0; p < 48; ++p) {
+      EXPECT_GT(signedArea(g, p), 0) << seed << " " << p;
+      area += signedArea(g, p) / 2;
+    }
+    EXPECT_NEAR(area, 6.0, 1e-4);  // the triangles tile the 3 x 2 rectangle
+    expectManifold(g);
+    EXPECT_EQ(g.vertices[0], (Vec3{8.5f, 19, 0}));  // corners stay
+  }
+  Geometry a, b, flat;
+  makeTriangulation({4, 4, {1, 1}, {0, 0, 0}, 8, 0.25}, a);
+  makeTriangulation({4, 4, {1, 1}, {0, 0, 0}, 9, 0.25}, b);
+  EXPECT_NE(a.vertices, b.vertices);
+  makeTriangulation({4, 4, {4, 4}, {0, 0, 0}, 8, 0.0}, flat);
+  Geometry grid;
+  makeTriangleGrid(4, 4, {4, 4}, {0, 0, 0}, grid);
+  EXPECT_EQ(flat.vertices, grid.vertices);  // no jitter: the grid's vertices
+}
+
+TEST(AimRays, InteriorFeaturesOfAGrid) {
+  Geometry g;
+  makeTriangleGrid(2, 2, {2, 2}, {0, 0, 0}, g);
+  AimSpec spec;
+  spec.edge_points = 1;
+  // 1 inner vertex; 8 shared edges (4 inner axis edges, 4 diagonals); 8 faces.
+  const auto points = meshAimPoints(g, spec);
+  ASSERT_EQ(points.size(), 1u + 8u + 8u);
+  EXPECT_EQ(points[0], (std::array<double, 3>{0, 0, 0}));
+  spec.faces = spec.vertices = false;
+  spec.edge_points = 3;
+  EXPECT_EQ(meshAimPoints(g, spec).size(), 24u);
+}
+
+TEST(AimRays, ThroughTheInstanceTransform) {
+  Scene s;
+  Blas b;
+  b.name = "m";
+  Geometry g;
+  makeTriangleFan({4, 1, {0, 0, 0}, 0}, g);
+  b.geometries.push_back(g);
+  s.blases.push_back(b);
+  Instance inst;
+  inst.blas = 0;
+  inst.transform = {1, 0, 0, 1000, 0, 1, 0, 2000, 0, 0, 1, 0};
+  s.instances.push_back(inst);
+  AimSpec spec;
+  spec.edges = spec.faces = false;
+  spec.offset = {0, 0.5, 4};
+  spec.direction_scale = 0.25;
+  std::string error;
+  const auto rays = aimRays(s, spec, Ray{}, &error);
+  ASSERT_EQ(rays.size(), 1u) << error;  // the fan's centre
+  EXPECT_EQ(rays[0].origin, (Vec3{1000, 2000.5f, 4}));
+  EXPECT_EQ(rays[0].direction, (Vec3{0, -0.125f, -1}));
+  spec.instance = 3;
+  EXPECT_TRUE(aimRays(s, spec, Ray{}, &error).empty());
+  EXPECT_NE(error.find("instance 3"), std::string::npos);
+}
+
+TEST(AimRays, CaseSyntaxAndErrors) {
+  const std::string text = R"(rules: [R-WATERTIGHT]
+scene:
+  blas:
+    fan:
+      - triangles: {fan: {triangles: 6, radius: 2, seed: 3}}
+    tri:
+      - triangles: {triangulation: {cells: [3, 3], size: [3, 3], seed: 4}}
+  instances: [{blas: fan}, {blas: tri}]
+rays:
+  aim: {instance: ${instance}, at: [${at}], edge_points: 2, offset: [0, 0, 3]}
+pipeline: {miss: [[]], hit_groups: [{}]}
+)";
+  auto parse = [&](const std::string& instance, const std::string& at) {
+    std::string t = text;
+    t.replace(t.find("${instance}"), 11, instance);
+    t.replace(t.find("${at}"), 5, at);
+    return parseCaseText(t, "t.yaml", "family/t");
+  };
+  ParseResult fan = parse("0", "vertices, edges, faces");
+  ASSERT_TRUE(fan.value);
+  EXPECT_EQ(fan.value->rays.rays.size(), 1u + 6u * 2 + 6u);
+  EXPECT_EQ(fan.value->rays.width, 19u);
+  ParseResult tri = parse("1", "vertices");
+  ASSERT_TRUE(tri.value);
+  EXPECT_EQ(tri.value->rays.rays.size(), 4u);  // the inner vertices of a 3 x 3 triangulation
+  ParseResult bad = parse("1", "corners");
+  ASSERT_FALSE(bad.value);
+  EXPECT_EQ(bad.errors[0].loc.line, 10);
+  EXPECT_NE(bad.errors[0].message.find("unknown feature 'corners'"), std::string::npos);
+  ParseResult none = parse("5", "faces");
+  ASSERT_FALSE(none.value);
+  EXPECT_NE(none.errors[0].message.find("instance 5"), std::string::npos);
+}
+
+TEST(GeneratedMesh, Errors) {
+  auto parseBlas = [](const std::string& blas) {
+    return parseCaseText("rules: [R-WATERTIGHT]\nscene:\n  blas:\n    m:\n      - triangles: " + blas +
+                             "\n  instances: [{blas: m}]\nrays:\n  list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]\n"
+                             "pipeline: {miss: [[]], hit_groups: [{}]}\n",
+                         "t.yaml", "family/t");
+  };
+  auto expect = [](const ParseResult& r, const std::string& field, const std::string& text) {
+    ASSERT_FALSE(r.value);
+    ASSERT_FALSE(r.errors.empty());
+    EXPECT_EQ(r.errors[0].loc.line, 5);
+    EXPECT_NE(r.errors[0].loc.field.find(field), std::string::npos) << r.errors[0].format();
+    EXPECT_NE(r.errors[0].message.find(text), std::string::npos) << r.errors[0].format();
+  };
+  expect(parseBlas("{fan: {triangles: 2}}"), "fan.triangles", "at least 3");
+  expect(parseBlas("{fan: {triangles: 5, radius: -1}}"), "fan.radius", "positive");
+  expect(parseBlas("{triangulation: {cells: [2, 2], size: [1, 1], seed: 1, jitter: 0.5}}"), "jitter", "0.25");
+  expect(parseBlas("{triangulation: {cells: [2, 2], size: [1, 1]}}"), "triangulation", "seed");
+  expect(parseBlas("{fan: {triangles: 5}, grid: {cells: [1, 1], size: [1, 1]}}"), "triangles", "one of them alone");
+  EXPECT_TRUE(parseBlas("{fan: {triangles: 5, seed: 2}}").value);
+}
+
+}  // namespace
+}  // namespace rayspec

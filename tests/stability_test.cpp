@@ -1,0 +1,70 @@
+// The stability report's counting, table, JSON and plot panels
+// (stability/leak_counts.h, stability/stability_table.h).
+#include <gtest/gtest.h>
+
+#include "results/record_layout.h"
+#include "stability/leak_counts.h"
+#include "stability/stability_table.h"
+
+namespace rayspec {
+namespace {
+
+Results withAnyHitRuns(const std::vector<uint32_t>& runs) {
+  Results r;
+  const uint32_t words = recordWords(), ahit = findRecordField("any_hit_runs")->offset;
+  r.records.assign(runs.size() * words, 0);
+  for (size_t i = 0; i < runs.size(); ++i) r.records[i * words + ahit] = runs[i];
+  return r;
+}
+
+TEST(LeakCounts, NoneIsALeakTwoOrMoreADoubleHit) {
+  const LeakCounts c = countLeaks(withAnyHitRuns({1, 0, 2, 1, 7, 1, 1, 0}));
+  EXPECT_EQ(c.rays, 8u);
+  EXPECT_EQ(c.leaks, 2u);
+  EXPECT_EQ(c.doubles, 2u);
+  EXPECT_DOUBLE_EQ(c.leakRate(), 250.0);
+  const LeakCounts clean = countLeaks(withAnyHitRuns({1, 1, 1}));
+  EXPECT_EQ(clean.leaks + clean.doubles, 0u);
+  EXPECT_EQ(LeakCounts{}.leakRate(), 0.0);
+}
+
+std::vector<StabilityEntry> sample() {
+  std::vector<StabilityEntry> e;
+  addCounts(e, {"grid", 1e6, "1e6", "model exact", {100, 0, 0}});
+  addCounts(e, {"grid", 1, "1", "model exact", {100, 0, 0}});
+  addCounts(e, {"grid", 1, "1", "lavapipe", {100, 3, 40}});
+  addCounts(e, {"grid", 1, "1", "lavapipe", {100, 1, 0}});  // a second variant at the same magnitude
+  addCounts(e, {"fan", 10, "1e1", "model exact", {50, 0, 0}});
+  return e;
+}
+
+TEST(StabilityTable, SumsVariantsAndListsEachSourcesRates) {
+  const std::vector<StabilityEntry> e = sample();
+  ASSERT_EQ(e.size(), 4u);
+  EXPECT_EQ(e[2].counts.rays, 200u);
+  EXPECT_EQ(stabilitySources(e), (std::vector<std::string>{"model exact", "lavapipe"}));
+  const std::string t = formatStabilityTable(e);
+  // grid at 1: 200 rays, exact 0 / 0, lavapipe 4 leaks (20 per 1000) and 40 double hits (200 per 1000).
+  EXPECT_NE(t.find("grid                   1    200 |      0.0      0.0 |     20.0    200.0"), std::string::npos) << t;
+  // Magnitudes ascend within a family; a source without a run shows '-'.
+  EXPECT_LT(t.find("grid                   1 "), t.find("grid                 1e6"));
+  EXPECT_NE(t.find("1e6    100 |      0.0      0.0 |                 -"), std::string::npos) << t;
+  const nlohmann::json j = stabilityJson(e);
+  EXPECT_EQ(j["entries"].size(), 4u);
+  EXPECT_EQ(j["entries"][2]["double_hits"], 40u);
+  EXPECT_DOUBLE_EQ(j["entries"][2]["double_hits_per_1000"].get<double>(), 200.0);
+}
+
+TEST(StabilityTable, OnePanelPerFamilyTwoSeriesPerSource) {
+  const std::vector<PlotPanel> p = stabilityPanels(sample());
+  ASSERT_EQ(p.size(), 2u);
+  EXPECT_EQ(p[0].title, "stability/grid");
+  EXPECT_TRUE(p[0].log_x);
+  ASSERT_EQ(p[0].series.size(), 4u);
+  EXPECT_EQ(p[0].series[2].name, "lavapipe leaks");
+  EXPECT_EQ(p[0].series[0].points, (std::vector<std::pair<double, double>>{{1, 0}, {1e6, 0}}));
+  EXPECT_EQ(p[0].series[3].points, (std::vector<std::pair<double, double>>{{1, 200}}));
+}
+
+}  // namespace
+}  // namespace rayspec
