@@ -113,6 +113,9 @@ int main(int argc, char** argv) {
   stability_opt.run.filter = "stability/*";
   stability->add_option("--device", stability_opt.run.device, "Vulkan device name (substring)");
   stability->add_flag("--no-device", stability_opt.run.no_device, "The model tiers only");
+  stability->add_option("--device-results", stability_opt.saved_devices,
+                        "Run folders of other devices (e.g. a run-only binary's run on a GPU machine): their device "
+                        "bundles are counted too, one source each");
   stability->add_option("--filter", stability_opt.run.filter, "Cases (glob)")->capture_default_str();
   stability->add_option("--cases", stability_opt.run.cases_dir, "Folder of case files")->capture_default_str();
   stability->add_option("--out", stability_opt.out, "Folder for the report and the runs")->capture_default_str();

@@ -112,6 +112,14 @@ int runStability(const StabilityOptions& opt) {
         addCounts(entries, e);
       }
     }
+  for (const std::string& saved : opt.saved_devices)
+    for (const StabilityCase& c : cases) {
+      StabilityEntry e{c.family, c.magnitude, c.magnitude_text, "", {}};
+      std::string device;
+      if (!countBundle(saved + "/" + c.name + "/device", &e.counts, &device)) continue;
+      e.source = shortDeviceName(device);
+      addCounts(entries, e);
+    }
   std::filesystem::create_directories(opt.out);
   const std::string table = formatStabilityTable(entries);
   std::string error = writeText(opt.out + "/stability.txt", table);
