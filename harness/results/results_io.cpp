@@ -1,6 +1,7 @@
 #include "results/results_io.h"
 
 #include <bit>
+#include <chrono>
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include "results/content_hash.h"
 #include "results/image_files.h"
 #include "results/record_layout.h"
+#include "results/step_cost_json.h"
 
 namespace rayspec {
 namespace fs = std::filesystem;
@@ -79,6 +81,7 @@ std::string writeResults(const Results& r, const std::string& dir_name,
 
 std::string writeResults(const Results& r, const std::string& dir_name, const std::vector<std::string>& kept_fields,
                          bool image_files) {
+  const auto start = std::chrono::steady_clock::now();
   const fs::path dir(dir_name);
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -123,9 +126,13 @@ std::string writeResults(const Results& r, const std::string& dir_name, const st
   j["undefined"] = json::array();
   for (const UndefinedRay& u : r.undefined)
     j["undefined"].push_back({{"ray", u.ray}, {"reason", undefinedReasonName(u.reason)}, {"what", u.what}});
-  std::ofstream(dir / "results.json") << j.dump(1) << '\n';
   if (!writeWords(dir / "records.bin", r.records)) return "cannot write records.bin in " + dir.string();
   writeRecordsCsv(r, dir / "records.csv", kept_fields);
+  // results.json last, with the time of writing the rest of the bundle.
+  StepCosts cost = r.cost;
+  cost.add(CostStep::WriteBundle, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  j["cost"] = costJson(cost);
+  std::ofstream(dir / "results.json") << j.dump(1) << '\n';
   return {};
 }
 
@@ -149,6 +156,7 @@ Results readResults(const std::string& dir_name, std::string* error) {
     r.width = j.at("width");
     r.height = j.at("height");
     r.seconds = j.at("seconds");
+    if (j.contains("cost")) r.cost = costFromJson(j.at("cost"));
     r.case_file = j.value("case_file", std::string());
     if (j.contains("case_hash")) r.case_hash = std::stoull(j.at("case_hash").get<std::string>(), nullptr, 16);
     r.counters = j.at("counters").get<std::map<std::string, uint64_t>>();

@@ -221,7 +221,10 @@ int runCases(const RunOptions& requested) {
     if (const NamePattern* skip = findPattern(baseline.skips, f.name)) {
       outcome = skippedOutcome(f.name, *skip);
     } else {
+      StepCosts parse_cost;
+      StepTimer parse_time(parse_cost, CostStep::Parse);
       const ParseResult parsed = loadCase(f, opt.cases_dir, labels.empty() ? nullptr : &labels);
+      parse_time.stop();
       if (std::optional<CaseOutcome> error = caseFileError(f, parsed)) {
         outcome = *error;
         applyBaseline(baseline, outcome);
@@ -231,6 +234,7 @@ int runCases(const RunOptions& requested) {
         const Case& c = permuted ? *permuted : *parsed.value;
         outcome = guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted); });
         if (interrupted) break;
+        outcome.cost[CostSide::Parent] += parse_cost;
         case_rules.push_back({c.name, c.rules});
         if (applyBaseline(baseline, outcome)) {
           // An unexpected failure: once more, into <case>/rerun, to tell a flake.
