@@ -11,6 +11,7 @@ const char* costStepName(CostStep s) {
     case CostStep::ImageFiles: return "image_files";
     case CostStep::Comparison: return "comparison";
     case CostStep::Reports: return "reports";
+    case CostStep::RecordsCsv: return "records_csv";
     case CostStep::BackendSetup: return "backend_setup";
     case CostStep::BackendTeardown: return "backend_teardown";
     case CostStep::WriteBundle: return "write_bundle";

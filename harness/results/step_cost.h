@@ -21,6 +21,7 @@ enum class CostStep {
   ImageFiles,        // PNG / EXR files of a side's images
   Comparison,        // judging the case (compare, verdict, diff images, failing rays)
   Reports,           // rewriting the run's reports with the case
+  RecordsCsv,        // records.csv of both sides (a case that did not pass, or --records-csv)
   // either side, in its process
   BackendSetup,      // making the backend: Vulkan instance and device (validation layer); nothing much for the model
   BackendTeardown,   // closing it (device destruction, the layer's last messages)

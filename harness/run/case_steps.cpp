@@ -9,6 +9,7 @@
 #include "plan/plan.h"
 #include "report/baseline_gate.h"
 #include "report/case_cost.h"
+#include "results/results_io.h"
 #include "run/device_results.h"
 #include "run/judge_case.h"
 #include "run/model_adapter.h"
@@ -170,6 +171,14 @@ CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string&
   out.status = out.verdict.status;
   out.headline = out.verdict.headline();
   out.device_name = device.device;
+  if (out.status != Status::Pass || opt_.records_csv) {
+    // The per-ray records as text, for people looking into the case.
+    StepTimer csv_time(parent, CostStep::RecordsCsv);
+    for (const auto& [side, r] : {std::pair{"/device", &device}, std::pair{"/model", &model}})
+      if (std::filesystem::is_directory(dir + side))
+        if (const std::string e = writeRecordsCsv(*r, dir + side + "/records.csv", plan.record_fields); !e.empty())
+          throw HarnessError(e);
+  }
   return costed(std::move(out), device, model);
 }
 

@@ -10,6 +10,10 @@
 namespace rayspec {
 namespace {
 
+// A child writes neither pictures nor records.csv (the parent does: pictures
+// always, records.csv where the case does not pass, run/case_steps.h).
+constexpr BundleFiles kChildBundle{false, false};
+
 // The part both ways share: run, name the results, let `after` see them.
 Results runSide(const Side& side, Backend& backend, const Case& c, const Plan& plan, std::string* note) {
   if (side.before) side.before();
@@ -42,7 +46,7 @@ SideResult ended(const Side& side, const Case& c, const Plan& plan, RunStatus st
   out.results = failed(side, c, status, detail, seconds);
   std::error_code ec;
   std::filesystem::remove_all(dir, ec);
-  writeResults(out.results, dir, plan.record_fields, false);
+  writeResults(out.results, dir, plan.record_fields, kChildBundle);
   return out;
 }
 
@@ -63,7 +67,7 @@ SideResult runIsolated(const Side& side, const Case& c, const Plan& plan, const 
         for (const std::string& m : backend->close()) r.validation_messages.push_back("at device teardown: " + m);
         backend.reset();
         teardown_time.stop();
-        const std::string err = writeResults(r, dir, plan.record_fields, false);  // the parent writes the pictures
+        const std::string err = writeResults(r, dir, plan.record_fields, kChildBundle);  // the parent writes the pictures
         if (!err.empty()) throw HarnessError(err);
         return 0;
       },
@@ -107,7 +111,7 @@ SideResult runInProcess(const Side& side, Backend& backend, const Case& c, const
   SideResult out;
   out.results = runSide(side, backend, c, plan, &out.note);
   StepTimer write_time(out.results.cost, CostStep::WriteBundle);
-  const std::string err = writeResults(out.results, dir, plan.record_fields, true);
+  const std::string err = writeResults(out.results, dir, plan.record_fields, BundleFiles{true, false});
   write_time.stop();
   if (!err.empty()) throw HarnessError(side.label + " side: " + err);
   return out;

@@ -14,6 +14,7 @@
 #include "report/baseline_gate.h"
 #include "report/outcome_json.h"
 #include "report/rule_catalog.h"
+#include "run/cache_dir.h"
 #include "run/case_steps.h"
 #include "run/device_probe.h"
 #include "run/device_results.h"
@@ -201,6 +202,7 @@ int runCases(const RunOptions& requested) {
     std::printf("Resuming %s: %zu cases already ran\n", opt.out.c_str(), earlier.size());
   }
 
+  useCacheDir(opt.cache_dir);  // before the first fork: every case process inherits it
   catchInterrupts();
   const CaseRunner runner(opt, device.get(), model.get());
   // Unknown rule labels are case-file errors at their line:col (the parser checks them).
