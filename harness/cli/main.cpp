@@ -47,6 +47,13 @@ int main(int argc, char** argv) {
   run->add_flag("--strict-validation", run_opt.strict_validation,
                 "Fail when the validation layer is not installed (ctest sets this)");
   run->add_option("--threads", run_opt.threads, "Model threads (0: all cores)")->capture_default_str();
+  run->add_flag("--records-csv", run_opt.records_csv,
+                "records.csv (the per-ray records as text) in every bundle; without it only where the case did "
+                "not pass");
+  run->add_option("--cache-dir", run_opt.cache_dir,
+                  "Folder for the SPIR-V of generated stages, reused by every case process and later runs ('': "
+                  "none)")
+      ->capture_default_str();
   run->add_option("--timeout", run_opt.timeout,
                   "Seconds a case's model side, and then its device side, may run before it is a Timeout")
       ->capture_default_str();

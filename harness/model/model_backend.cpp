@@ -133,6 +133,7 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
     return r;
   }
   try {
+    StepTimer scene_time(r.cost, CostStep::ModelScene);
     const CPipeline programs = compilePipeline(c, plan);
     ModelScene scene;
     // Per-primitive triangles are read by candidates, own tests, or the
@@ -153,6 +154,8 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
         std::none_of(programs.raygen[0].has.begin(), programs.raygen[0].has.end(), [](bool b) { return b; });
     shared.need_object_ray =
         programs.reads(kBiObjectOrigin) || programs.reads(kBiObjectDirection) || programs.reads_sphere;
+    scene_time.stop();
+    StepTimer trace_time(r.cost, CostStep::ModelTrace);
     if (plan.records) r.records.assign(n * recordWords(), 0);
     uint32_t* records = plan.records ? r.records.data() : nullptr;
 

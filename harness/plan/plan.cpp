@@ -1,5 +1,7 @@
 #include "plan/plan.h"
 
+#include "results/record_layout.h"
+
 #include <algorithm>
 
 #include "plan/walk_program.h"
@@ -130,6 +132,25 @@ Plan derivePlan(const Case& c) {
   // comparison checks miss-xor-closest-hit per ray) exist when the case keeps
   // per-ray fields or images; a counters-only case simulates no record at all.
   plan.records = !plan.record_fields.empty() || !plan.images.empty();
+  return plan;
+}
+
+Plan everyEffectPlan(const Case& c) {
+  Plan plan = derivePlan(c);
+  for (bool* flag : {&plan.triangles, &plan.aabbs, &plan.any_hit, &plan.intersection, &plan.closest_hit, &plan.miss,
+                     &plan.callables, &plan.nested_trace, &plan.facing_culls, &plan.masks, &plan.opacity_flags,
+                     &plan.scene_data, &plan.shader_record_data, &plan.zero_records, &plan.records})
+    *flag = true;
+  plan.record_fields.clear();
+  plan.images.clear();
+  for (const RecordField& f : recordFields()) {
+    if (f.automatic) continue;
+    plan.record_fields.push_back(f.name);
+    ImageOutput im;
+    im.name = std::string("all-") + f.name;
+    im.field = f.name;
+    plan.images.push_back(im);
+  }
   return plan;
 }
 

@@ -41,4 +41,9 @@ struct Plan {
 
 Plan derivePlan(const Case& c);
 
+// The plan with every effect switched on: every flag of Plan set, every
+// recordable field kept and shown as an image (named after it), the case's
+// counters. What a case would cost without the plan (bench/plan_saving.cpp).
+Plan everyEffectPlan(const Case& c);
+
 }  // namespace rayspec

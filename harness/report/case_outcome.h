@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "compare/verdict.h"
+#include "results/step_cost.h"
 
 namespace rayspec {
 
@@ -32,6 +33,7 @@ struct CaseOutcome {
   Status status = Status::Pass;
   std::string headline;
   double seconds = 0.0, device_seconds = 0.0, model_seconds = 0.0;
+  CaseCost cost;  // where the case's time went, per side and step (<case>/cost.json)
   Verdict verdict;
   std::vector<std::string> images;  // image names; files at <case>/{device,model,diff}/<name>.png
   std::vector<RayRow> failing_rays;

@@ -1,5 +1,7 @@
 #include "report/outcome_json.h"
 
+#include "report/case_cost.h"
+
 #include <fstream>
 #include <stdexcept>
 
@@ -42,6 +44,7 @@ nlohmann::json outcomeJson(const CaseOutcome& o) {
                    {"baseline_note", o.baseline_note},
                    {"device_name", o.device_name},
                    {"images", o.images}};
+  c["cost"] = caseCostJson(o.cost);
   c["findings"] = nlohmann::json::array();
   for (const Finding& f : o.verdict.findings)
     c["findings"].push_back({{"status", statusName(f.status)}, {"rule", f.rule}, {"message", f.message},
@@ -76,6 +79,7 @@ CaseOutcome outcomeFromJson(const nlohmann::json& j) {
     o.baseline_note = j.value("baseline_note", "");
     o.device_name = j.value("device_name", "");
     o.images = j.value("images", std::vector<std::string>{});
+    if (j.contains("cost")) o.cost = caseCostFromJson(j.at("cost"));
     for (const nlohmann::json& f : j.at("findings"))
       o.verdict.findings.push_back({statusField(f, "status"), f.at("rule").get<std::string>(),
                                     f.at("message").get<std::string>(), f.at("rays").get<std::vector<uint32_t>>(),

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "report/baseline_gate.h"
+#include "report/case_cost.h"
 #include "report/escape.h"
 #include "report/outcome_json.h"
 #include "report/write_reports.h"
@@ -90,6 +91,7 @@ std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const Run
   j["fails_run"] = failing;  // the cases that make the run fail (baseline applied)
   j["counts"] = counts;
   j["case_errors"] = case_errors;  // cases at fault themselves, not the device
+  j["cost"] = runCostJson(outcomes);  // where the run's time went (report/case_cost.h)
   std::ofstream out(path);
   out << j.dump(1) << '\n';
   return out ? std::string() : "cannot write " + path;
@@ -130,6 +132,7 @@ std::string writeSummaryText(const std::vector<CaseOutcome>& outcomes, const Run
     header = true;
     caseText(out, o);
   }
+  out << '\n' << runCostText(outcomes);
   return out ? std::string() : "cannot write " + path;
 }
 

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "results/step_cost.h"
+
 namespace rayspec {
 
 struct Image {
@@ -113,6 +115,7 @@ struct Results {
   std::vector<UndefinedRay> undefined;  // model: rays whose behaviour is undefined (R-UB), one per ray
   std::vector<std::string> validation_messages;  // validation-layer errors (device)
   double seconds = 0.0;     // wall time of the execution (setup + trace + read-back)
+  StepCosts cost;           // what each step of this side took (results/step_cost.h)
   std::string case_file;    // path of the case's YAML file (`rayspec compare` re-parses it)
   uint64_t case_hash = 0;   // Case::source_hash of the case run: a saved bundle judged later must match it
 };

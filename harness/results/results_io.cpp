@@ -1,17 +1,19 @@
 #include "results/results_io.h"
 
 #include <bit>
+#include <charconv>
+#include <chrono>
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "results/content_hash.h"
 #include "results/image_files.h"
 #include "results/record_layout.h"
+#include "results/step_cost_json.h"
 
 namespace rayspec {
 namespace fs = std::filesystem;
@@ -35,50 +37,71 @@ bool readWords(const fs::path& path, std::vector<uint32_t>& words) {
   return static_cast<bool>(in);
 }
 
-std::string fieldText(const RecordField& f, const uint32_t* rec) {
-  std::ostringstream s;
-  s.precision(9);
+// One field's words as text, %.9g for floats ("1.5", "0.25 0.5"), appended.
+void appendField(std::string& out, const RecordField& f, const uint32_t* rec) {
+  char buf[32];
   for (uint32_t i = 0; i < f.words; ++i) {
-    if (i) s << ' ';
+    if (i) out += ' ';
     const uint32_t w = rec[f.offset + i];
-    if (f.type == FieldType::Float) {
-      s << std::bit_cast<float>(w);
-    } else {
-      s << w;
-    }
+    const std::to_chars_result end =
+        f.type == FieldType::Float ? std::to_chars(buf, buf + sizeof buf, std::bit_cast<float>(w),
+                                                   std::chars_format::general, 9)
+                                   : std::to_chars(buf, buf + sizeof buf, w);
+    out.append(buf, end.ptr);
   }
-  return s.str();
 }
 
-void writeRecordsCsv(const Results& r, const fs::path& path, const std::vector<std::string>& kept) {
-  std::ofstream out(path);
-  std::vector<const RecordField*> fields;
-  for (const auto& name : kept)
-    if (const RecordField* f = findRecordField(name)) fields.push_back(f);
-  for (const RecordField& f : recordFields())
-    if (f.automatic) fields.push_back(&f);
-  out << "x,y";
-  for (const RecordField* f : fields) out << ',' << f->name;
-  out << '\n';
-  const uint32_t words = recordWords();
-  const size_t rays = r.records.size() / words;
-  for (size_t i = 0; i < rays; ++i) {
-    const uint32_t* rec = &r.records[i * words];
-    out << (r.width ? i % r.width : i) << ',' << (r.width ? i / r.width : 0);
-    for (const RecordField* f : fields) out << ',' << formatField(f->name, rec);
-    out << '\n';
-  }
+// A recordable field is shown only where the ray wrote it.
+bool fieldWritten(const RecordField& f, int index, const uint32_t* rec) {
+  return f.automatic || (rec[kRecordWrittenMaskWord] >> index) & 1u;
 }
 
 }  // namespace
 
+std::string writeRecordsCsv(const Results& r, const std::string& path, const std::vector<std::string>& kept) {
+  struct Column {
+    const RecordField* field;
+    int index;
+  };
+  std::vector<Column> columns;
+  for (const auto& name : kept)
+    if (const RecordField* f = findRecordField(name)) columns.push_back({f, recordFieldIndex(name)});
+  for (const RecordField& f : recordFields())
+    if (f.automatic) columns.push_back({&f, -1});
+  std::ofstream out(path, std::ios::binary);
+  std::string text = "x,y";
+  for (const Column& c : columns) text += std::string(",") + c.field->name;
+  text += '\n';
+  const uint32_t words = recordWords();
+  const size_t rays = r.records.size() / words;
+  char buf[24];
+  for (size_t i = 0; i < rays; ++i) {
+    const uint32_t* rec = &r.records[i * words];
+    text.append(buf, std::to_chars(buf, buf + sizeof buf, r.width ? i % r.width : i).ptr);
+    text += ',';
+    text.append(buf, std::to_chars(buf, buf + sizeof buf, r.width ? i / r.width : 0).ptr);
+    for (const Column& c : columns) {
+      text += ',';
+      if (fieldWritten(*c.field, c.index, rec)) appendField(text, *c.field, rec);
+    }
+    text += '\n';
+    if (text.size() > (1u << 20)) {
+      out.write(text.data(), static_cast<std::streamsize>(text.size()));
+      text.clear();
+    }
+  }
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  return out ? std::string() : "cannot write " + path;
+}
+
 std::string writeResults(const Results& r, const std::string& dir_name,
                          const std::vector<std::string>& kept_fields) {
-  return writeResults(r, dir_name, kept_fields, true);
+  return writeResults(r, dir_name, kept_fields, BundleFiles{});
 }
 
 std::string writeResults(const Results& r, const std::string& dir_name, const std::vector<std::string>& kept_fields,
-                         bool image_files) {
+                         const BundleFiles& files) {
+  const auto start = std::chrono::steady_clock::now();
   const fs::path dir(dir_name);
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -103,7 +126,7 @@ std::string writeResults(const Results& r, const std::string& dir_name, const st
     j["images"].push_back({{"name", im.name}, {"field", im.field}, {"width", im.width},
                            {"height", im.height}, {"channels", im.channels}, {"float", im.is_float}});
     if (!writeWords(dir / (im.name + ".raw"), im.texels)) return "cannot write image " + im.name;
-    if (!image_files) continue;
+    if (!files.image_files) continue;
     const std::string err = writeImageFiles(im, dir.string());
     if (!err.empty()) return err;
   }
@@ -123,9 +146,14 @@ std::string writeResults(const Results& r, const std::string& dir_name, const st
   j["undefined"] = json::array();
   for (const UndefinedRay& u : r.undefined)
     j["undefined"].push_back({{"ray", u.ray}, {"reason", undefinedReasonName(u.reason)}, {"what", u.what}});
-  std::ofstream(dir / "results.json") << j.dump(1) << '\n';
   if (!writeWords(dir / "records.bin", r.records)) return "cannot write records.bin in " + dir.string();
-  writeRecordsCsv(r, dir / "records.csv", kept_fields);
+  if (files.records_csv)
+    if (std::string err = writeRecordsCsv(r, (dir / "records.csv").string(), kept_fields); !err.empty()) return err;
+  // results.json last, with the time of writing the rest of the bundle.
+  StepCosts cost = r.cost;
+  cost.add(CostStep::WriteBundle, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  j["cost"] = costJson(cost);
+  std::ofstream(dir / "results.json") << j.dump(1) << '\n';
   return {};
 }
 
@@ -149,6 +177,7 @@ Results readResults(const std::string& dir_name, std::string* error) {
     r.width = j.at("width");
     r.height = j.at("height");
     r.seconds = j.at("seconds");
+    if (j.contains("cost")) r.cost = costFromJson(j.at("cost"));
     r.case_file = j.value("case_file", std::string());
     if (j.contains("case_hash")) r.case_hash = std::stoull(j.at("case_hash").get<std::string>(), nullptr, 16);
     r.counters = j.at("counters").get<std::map<std::string, uint64_t>>();
@@ -205,9 +234,9 @@ Results readResults(const std::string& dir_name, std::string* error) {
 
 std::string formatField(const std::string& name, const uint32_t* rec) {
   const RecordField* f = findRecordField(name);
-  if (!f) return {};
-  const bool written = f->automatic || (rec[kRecordWrittenMaskWord] >> recordFieldIndex(name)) & 1u;
-  return written ? fieldText(*f, rec) : std::string();
+  std::string text;
+  if (f && fieldWritten(*f, recordFieldIndex(name), rec)) appendField(text, *f, rec);
+  return text;
 }
 
 std::vector<uint8_t> previewPixels(const Image& im) {

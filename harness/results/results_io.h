@@ -4,6 +4,7 @@
 //                  ambiguous rays, validation messages, seconds
 //   records.bin    the raw per-ray words (little-endian uint32)
 //   records.csv    the kept per-ray fields, one row per ray, for people
+//                  (a run writes it where the case did not pass, see BundleFiles)
 //   NAME.raw       each image's texels (little-endian 32-bit)
 //   NAME.png       a viewable picture of each image (with OpenImageIO)
 //   NAME.exr       float images at full precision (with OpenImageIO)
@@ -21,11 +22,21 @@ namespace rayspec {
 std::string writeResults(const Results& r, const std::string& dir,
                          const std::vector<std::string>& kept_fields);
 
-// The same; without image_files only NAME.raw is written per image (no
-// NAME.png / NAME.exr: a forked child must not use OpenImageIO's or
-// OpenEXR's thread pools, which its parent's threads own).
+// Which derived files a bundle gets besides results.json, records.bin and
+// NAME.raw. Without image_files no NAME.png / NAME.exr (a forked child must
+// not use OpenImageIO's or OpenEXR's thread pools, which its parent's threads
+// own); without records_csv no records.csv (a copy of records.bin for people:
+// 54 MB and seconds for a million rays; the run writes it for cases that do
+// not pass, or every case with --records-csv).
+struct BundleFiles {
+  bool image_files = true;
+  bool records_csv = true;
+};
 std::string writeResults(const Results& r, const std::string& dir, const std::vector<std::string>& kept_fields,
-                         bool image_files);
+                         const BundleFiles& files);
+
+// records.csv alone: x, y, the kept fields where written, the automatic ones.
+std::string writeRecordsCsv(const Results& r, const std::string& path, const std::vector<std::string>& kept_fields);
 
 // Reads a bundle back; error set on failure.
 Results readResults(const std::string& dir, std::string* error);

@@ -8,6 +8,8 @@
 #include "fault/planted_fault.h"
 #include "plan/plan.h"
 #include "report/baseline_gate.h"
+#include "report/case_cost.h"
+#include "results/results_io.h"
 #include "run/device_results.h"
 #include "run/judge_case.h"
 #include "run/model_adapter.h"
@@ -112,7 +114,17 @@ SideResult CaseRunner::runSide(const Side& side, Backend* in_process, const Case
 
 CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string& subfolder) const {
   *interrupted = false;
+  StepCosts parent;
+  StepTimer plan_time(parent, CostStep::Plan);
   const Plan plan = derivePlan(c);
+  plan_time.stop();
+  // The outcome with what each side and this process spent on the case.
+  const auto costed = [&parent](CaseOutcome out, const Results& device, const Results& model) {
+    out.cost[CostSide::Parent] += parent;
+    out.cost[CostSide::Model] += model.cost;
+    out.cost[CostSide::Device] += device.cost;
+    return out;
+  };
   const std::string dir = opt_.out + "/" + c.name + subfolder;
   std::error_code ec;
   std::filesystem::remove_all(dir, ec);  // no stale bundle from an earlier run
@@ -129,7 +141,7 @@ CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string&
       CaseOutcome out = unjudged(c, plan, device, model, v);
       out.status = out.verdict.status;
       out.headline = out.verdict.headline();
-      return out;
+      return costed(std::move(out), device, model);
     }
   }
   std::string fault_note;
@@ -143,6 +155,7 @@ CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string&
   }
   CaseOutcome out;
   if (want_device && want_model) {
+    StepTimer judge_time(parent, CostStep::Comparison);
     out = judgeCase(c, plan, device, model, dir);
   } else {
     // One side only: its own status, validation errors included; never more than that.
@@ -158,7 +171,15 @@ CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string&
   out.status = out.verdict.status;
   out.headline = out.verdict.headline();
   out.device_name = device.device;
-  return out;
+  if (out.status != Status::Pass || opt_.records_csv) {
+    // The per-ray records as text, for people looking into the case.
+    StepTimer csv_time(parent, CostStep::RecordsCsv);
+    for (const auto& [side, r] : {std::pair{"/device", &device}, std::pair{"/model", &model}})
+      if (std::filesystem::is_directory(dir + side))
+        if (const std::string e = writeRecordsCsv(*r, dir + side + "/records.csv", plan.record_fields); !e.empty())
+          throw HarnessError(e);
+  }
+  return costed(std::move(out), device, model);
 }
 
 void reportCase(CaseOutcome outcome, const Baseline& baseline, const RunInfo& info, const std::string& dir,
@@ -166,6 +187,7 @@ void reportCase(CaseOutcome outcome, const Baseline& baseline, const RunInfo& in
   std::vector<CaseOutcome> all = summary.outcomes();
   all.push_back(outcome);
   std::string err;
+  StepTimer report_time(outcome.cost[CostSide::Parent], CostStep::Reports);
   try {
     err = write(all, info, dir);
   } catch (const std::exception& e) {
@@ -180,6 +202,11 @@ void reportCase(CaseOutcome outcome, const Baseline& baseline, const RunInfo& in
       err = std::string("cannot write the reports: ") + again.what();
     }
   }
+  report_time.stop();
+  // Where the case's time went, beside its bundles (a skipped case has none).
+  if (std::filesystem::is_directory(dir + "/" + outcome.name))
+    if (const std::string e = writeCaseCost(outcome, dir + "/" + outcome.name + "/cost.json"); !e.empty() && err.empty())
+      err = e;
   summary.add(outcome);
   if (!err.empty()) std::fprintf(stderr, "%s\n", err.c_str());
 }

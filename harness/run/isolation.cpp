@@ -1,5 +1,6 @@
 #include "run/isolation.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "plan/plan.h"
@@ -8,6 +9,10 @@
 
 namespace rayspec {
 namespace {
+
+// A child writes neither pictures nor records.csv (the parent does: pictures
+// always, records.csv where the case does not pass, run/case_steps.h).
+constexpr BundleFiles kChildBundle{false, false};
 
 // The part both ways share: run, name the results, let `after` see them.
 Results runSide(const Side& side, Backend& backend, const Case& c, const Plan& plan, std::string* note) {
@@ -41,7 +46,7 @@ SideResult ended(const Side& side, const Case& c, const Plan& plan, RunStatus st
   out.results = failed(side, c, status, detail, seconds);
   std::error_code ec;
   std::filesystem::remove_all(dir, ec);
-  writeResults(out.results, dir, plan.record_fields, false);
+  writeResults(out.results, dir, plan.record_fields, kChildBundle);
   return out;
 }
 
@@ -52,11 +57,17 @@ SideResult runIsolated(const Side& side, const Case& c, const Plan& plan, const 
   const std::string who = "the " + side.label + " process";
   const ChildEnd end = runChild(
       [&](std::string& message) {
+        StepCosts setup;
+        StepTimer setup_time(setup, CostStep::BackendSetup);
         std::unique_ptr<Backend> backend = side.make();
+        setup_time.stop();
         Results r = runSide(side, *backend, c, plan, &message);
+        r.cost += setup;
+        StepTimer teardown_time(r.cost, CostStep::BackendTeardown);
         for (const std::string& m : backend->close()) r.validation_messages.push_back("at device teardown: " + m);
         backend.reset();
-        const std::string err = writeResults(r, dir, plan.record_fields, false);  // the parent writes the pictures
+        teardown_time.stop();
+        const std::string err = writeResults(r, dir, plan.record_fields, kChildBundle);  // the parent writes the pictures
         if (!err.empty()) throw HarnessError(err);
         return 0;
       },
@@ -78,20 +89,30 @@ SideResult runIsolated(const Side& side, const Case& c, const Plan& plan, const 
         return ended(side, c, plan, RunStatus::Crash, describeChildEnd(end, who, limits), end.seconds, dir);
   }
   std::string error;
+  StepCosts parent;  // the parent's own steps for this side
+  StepTimer read_time(parent, CostStep::ReadBundle);
   out.results = readResults(dir, &error);
+  read_time.stop();
   if (!error.empty()) throw HarnessError(side.label + " side: " + error);
   out.note = end.message;
+  StepTimer image_time(parent, CostStep::ImageFiles);
   for (const Image& im : out.results.images) {
     const std::string err = writeImageFiles(im, dir);
     if (!err.empty()) throw HarnessError(side.label + " side: " + err);
   }
+  image_time.stop();
+  // What the child did not account for: fork, exit, the loader, waiting.
+  parent.add(CostStep::Process, std::max(0.0, end.seconds - out.results.cost.total()));
+  out.results.cost += parent;
   return out;
 }
 
 SideResult runInProcess(const Side& side, Backend& backend, const Case& c, const Plan& plan, const std::string& dir) {
   SideResult out;
   out.results = runSide(side, backend, c, plan, &out.note);
-  const std::string err = writeResults(out.results, dir, plan.record_fields, true);
+  StepTimer write_time(out.results.cost, CostStep::WriteBundle);
+  const std::string err = writeResults(out.results, dir, plan.record_fields, BundleFiles{true, false});
+  write_time.stop();
   if (!err.empty()) throw HarnessError(side.label + " side: " + err);
   return out;
 }

@@ -14,6 +14,7 @@
 #include "report/baseline_gate.h"
 #include "report/outcome_json.h"
 #include "report/rule_catalog.h"
+#include "run/cache_dir.h"
 #include "run/case_steps.h"
 #include "run/device_probe.h"
 #include "run/device_results.h"
@@ -201,6 +202,7 @@ int runCases(const RunOptions& requested) {
     std::printf("Resuming %s: %zu cases already ran\n", opt.out.c_str(), earlier.size());
   }
 
+  useCacheDir(opt.cache_dir);  // before the first fork: every case process inherits it
   catchInterrupts();
   const CaseRunner runner(opt, device.get(), model.get());
   // Unknown rule labels are case-file errors at their line:col (the parser checks them).
@@ -221,7 +223,10 @@ int runCases(const RunOptions& requested) {
     if (const NamePattern* skip = findPattern(baseline.skips, f.name)) {
       outcome = skippedOutcome(f.name, *skip);
     } else {
+      StepCosts parse_cost;
+      StepTimer parse_time(parse_cost, CostStep::Parse);
       const ParseResult parsed = loadCase(f, opt.cases_dir, labels.empty() ? nullptr : &labels);
+      parse_time.stop();
       if (std::optional<CaseOutcome> error = caseFileError(f, parsed)) {
         outcome = *error;
         applyBaseline(baseline, outcome);
@@ -231,6 +236,7 @@ int runCases(const RunOptions& requested) {
         const Case& c = permuted ? *permuted : *parsed.value;
         outcome = guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted); });
         if (interrupted) break;
+        outcome.cost[CostSide::Parent] += parse_cost;
         case_rules.push_back({c.name, c.rules});
         if (applyBaseline(baseline, outcome)) {
           // An unexpected failure: once more, into <case>/rerun, to tell a flake.

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "run/cache_dir.h"
+
 namespace rayspec {
 
 #ifndef RAYSPEC_SOURCE_DIR
@@ -35,6 +37,8 @@ struct RunOptions {
   bool no_validation = false;
   bool strict_validation = false;
   unsigned threads = 0;
+  bool records_csv = false;      // records.csv in every bundle, not only where the case did not pass
+  std::string cache_dir = defaultCacheDir();  // SPIR-V kept across processes and runs (run/cache_dir.h); "" off
   double timeout = 120.0;        // seconds per case side (model, device), each in its own child process
   uint64_t memory_limit = kDefaultMemoryLimit;  // bytes of memory per child (RLIMIT_DATA); 0: no limit
   bool no_isolation = false;     // run both sides in this process (one VkDevice for all cases)

@@ -1,13 +1,19 @@
 #include "vulkan/pipeline.h"
 
+#include <chrono>
+
 #include "spirv/compile_glsl.h"
 #include "vulkan/vk_check.h"
 
 namespace rayspec {
 namespace {
 
-CompiledShader compileOne(const GeneratedShader& g) {
+CompiledShader compileOne(const GeneratedShader& g, StepCosts* costs) {
+  const auto start = std::chrono::steady_clock::now();
   SpirvResult r = compileGlsl(g.glsl, g.stage);
+  if (costs)
+    costs->add(r.from_cache ? CostStep::SpirvCacheHit : CostStep::SpirvCompile,
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   if (r.words.empty())
     throw ShaderCompileError(g.name + ": " + (r.error.empty() ? "no SPIR-V" : r.error));
   return {g.stage, g.name, std::move(r.words)};
@@ -63,18 +69,18 @@ VkRayTracingShaderGroupCreateInfoKHR group(VkRayTracingShaderGroupTypeKHR type) 
 
 }  // namespace
 
-CompiledPipeline compilePipeline(const GeneratedPipeline& generated) {
+CompiledPipeline compilePipeline(const GeneratedPipeline& generated, StepCosts* costs) {
   CompiledPipeline out;
-  out.raygen = compileOne(generated.raygen);
-  for (const GeneratedShader& s : generated.miss) out.miss.push_back(compileOne(s));
+  out.raygen = compileOne(generated.raygen, costs);
+  for (const GeneratedShader& s : generated.miss) out.miss.push_back(compileOne(s, costs));
   for (const GeneratedGroup& g : generated.hit_groups) {
     CompiledGroup cg;
-    if (g.closest_hit) cg.closest_hit = compileOne(*g.closest_hit);
-    if (g.any_hit) cg.any_hit = compileOne(*g.any_hit);
-    if (g.intersection) cg.intersection = compileOne(*g.intersection);
+    if (g.closest_hit) cg.closest_hit = compileOne(*g.closest_hit, costs);
+    if (g.any_hit) cg.any_hit = compileOne(*g.any_hit, costs);
+    if (g.intersection) cg.intersection = compileOne(*g.intersection, costs);
     out.hit_groups.push_back(std::move(cg));
   }
-  for (const GeneratedShader& s : generated.callables) out.callables.push_back(compileOne(s));
+  for (const GeneratedShader& s : generated.callables) out.callables.push_back(compileOne(s, costs));
   return out;
 }
 

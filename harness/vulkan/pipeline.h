@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "glsl/generate_glsl.h"
+#include "results/step_cost.h"
 #include "vulkan/cleanup.h"
 #include "vulkan/context.h"
 
@@ -39,8 +40,9 @@ struct CompiledPipeline {
   std::vector<CompiledShader> callables;
 };
 
-// compileGlsl on every stage; throws ShaderCompileError.
-CompiledPipeline compilePipeline(const GeneratedPipeline& generated);
+// compileGlsl on every stage; throws ShaderCompileError. The time of each
+// stage goes to costs (when given): spirv_cache_hit or spirv_compile.
+CompiledPipeline compilePipeline(const GeneratedPipeline& generated, StepCosts* costs = nullptr);
 
 // Binding numbers (descriptor set 0) the SPIR-V of any stage declares.
 std::set<uint32_t> declaredBindings(const CompiledPipeline& compiled);

@@ -76,29 +76,52 @@ void checkCaseSupport(const VulkanContext& ctx, const Case& c) {
 
 void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results& r) {
   checkCaseSupport(ctx, c);
-  CompiledPipeline compiled = compilePipeline(generateGlsl(c, plan));
+  StepTimer glsl(r.cost, CostStep::GlslGeneration);
+  const GeneratedPipeline generated = generateGlsl(c, plan);
+  glsl.stop();
+  CompiledPipeline compiled = compilePipeline(generated, &r.cost);
 
   CaseScope scope(ctx.device);
   Cleanup& cleanup = scope.cleanup;
+  StepTimer buffer_time(r.cost, CostStep::Buffers);
   CaseBuffers buffers =
       createCaseBuffers(ctx, c, plan, caseBindings(plan, declaredBindings(compiled)), cleanup);
+  buffer_time.stop();
 
-  VkCommandBuffer cmd = beginCommands(ctx, cleanup);
-  VkAccelerationStructureKHR tlas = recordSceneBuild(ctx, c.scene, cmd, cleanup);
+  // The scene's builds in a submission of their own, so that their cost is
+  // told apart from the trace's (the build's closing barrier orders them
+  // before the trace, across submissions on the one queue).
+  StepTimer build_time(r.cost, CostStep::AccelerationBuild);
+  VkCommandBuffer build = beginCommands(ctx, cleanup);
+  VkAccelerationStructureKHR tlas = recordSceneBuild(ctx, c.scene, build, cleanup);
+  submitAndWait(ctx, build, kTraceTimeoutNs);
+  build_time.stop();
 
+  StepTimer layout_time(r.cost, CostStep::Buffers);
   std::vector<DescriptorItem> items = descriptorItems(buffers, tlas);
   VkDescriptorSetLayout set_layout = createSetLayout(ctx, items, cleanup);
   VkPipelineLayout pipeline_layout = createPipelineLayout(ctx, set_layout, cleanup);
+  layout_time.stop();
+  StepTimer pipeline_time(r.cost, CostStep::PipelineCreation);
   VkPipeline pipeline = createRayTracingPipeline(ctx, compiled, pipeline_layout, c.pipeline.max_recursion,
                                                  c.pipeline.flags, cleanup);
+  pipeline_time.stop();
+  StepTimer sbt_time(r.cost, CostStep::Sbt);
   SbtBuffer sbt = createSbtBuffer(ctx, c.pipeline, pipeline, cleanup);
+  sbt_time.stop();
+  StepTimer set_time(r.cost, CostStep::Buffers);
   VkDescriptorSet set = createDescriptorSet(ctx, set_layout, items, cleanup);
+  set_time.stop();
 
+  StepTimer trace_time(r.cost, CostStep::Trace);
+  VkCommandBuffer cmd = beginCommands(ctx, cleanup);
   recordImageClears(cmd, buffers.images);
   recordTrace(ctx, cmd, pipeline, pipeline_layout, set, sbt.layout, sbt.base, c.rays.width, c.rays.height);
   recordReadback(cmd, buffers.images, buffers.image_readback, buffers.image_extent.width,
                  buffers.image_extent.height);
   submitAndWait(ctx, cmd, kTraceTimeoutNs);
+  trace_time.stop();
+  StepTimer read_time(r.cost, CostStep::ReadBack);
   readResults(buffers, plan, c.rays.width, c.rays.height, r);
 }
 

@@ -1,0 +1,32 @@
+// Where a case's time went (results/step_cost.h), per case and for a run:
+//   <out>/<case>/cost.json  {"case", "seconds": the case's wall time,
+//                            "accounted": the sum of every step,
+//                            "parent" / "model" / "device": {step: seconds}}
+//   summary.json "cost"     the same summed over the run's cases, and "by_step"
+//                           (every step, every side together)
+//   summary.txt             a table of the run's steps, the costliest first
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "report/case_outcome.h"
+
+namespace rayspec {
+
+nlohmann::json caseCostJson(const CaseCost& cost);
+// Throws std::runtime_error naming an unknown side or step.
+CaseCost caseCostFromJson(const nlohmann::json& j);
+
+// cost.json of one case; an error message or "".
+std::string writeCaseCost(const CaseOutcome& outcome, const std::string& path);
+
+// Every case's cost summed.
+CaseCost runCost(const std::vector<CaseOutcome>& outcomes);
+nlohmann::json runCostJson(const std::vector<CaseOutcome>& outcomes);
+// The table of summary.txt: one line per side and step that took time.
+std::string runCostText(const std::vector<CaseOutcome>& outcomes);
+
+}  // namespace rayspec
