@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "test_dir.h"
 #include "report/baseline.h"
 #include "report/baseline_gate.h"
 #include "report/merge_runs.h"
@@ -17,7 +18,7 @@ namespace rayspec {
 namespace {
 
 std::string writeFile(const std::string& name, const std::string& text) {
-  const std::string path = testing::TempDir() + "/" + name;
+  const std::string path = testing_support::testDir() + "/" + name;
   std::ofstream(path) << text;
   return path;
 }
@@ -107,7 +108,7 @@ TEST(BaselineGate, FailuresCsvIsABaselineOfWhatWasUnexpected) {
   std::vector<CaseOutcome> all = {outcome("fam/known", Status::Fail), outcome("fam/fixed", Status::Pass),
                                   outcome("fam/new", Status::Timeout), outcome("fam/fine", Status::Pass)};
   for (CaseOutcome& o : all) applyBaseline(b, o);
-  const std::string path = testing::TempDir() + "/failures.csv";
+  const std::string path = testing_support::testDir() + "/failures.csv";
   ASSERT_EQ(writeFailuresCsv(all, b.file, path), "");
   const std::string text = slurp(path);
   EXPECT_EQ(text.find("fam/known"), std::string::npos) << text;
@@ -160,7 +161,7 @@ TEST(OutcomeJson, EveryFieldRoundTrips) {
 
 // A run folder made of outcomes, as a run writes it.
 std::string runFolder(const std::string& name, const std::string& device, const std::vector<CaseOutcome>& cases) {
-  const std::string dir = testing::TempDir() + "/" + name;
+  const std::string dir = testing_support::testDir() + "/" + name;
   std::filesystem::remove_all(dir);
   RunInfo info;
   info.device = device;
@@ -178,7 +179,7 @@ std::string runFolder(const std::string& name, const std::string& device, const 
 TEST(MergeRuns, ShardsJoinIntoOneRun) {
   const std::string a = runFolder("shard-a", "llvmpipe", {outcome("fam/b", Status::Pass), outcome("fam/d", Status::Fail)});
   const std::string b = runFolder("shard-b", "llvmpipe", {outcome("fam/a", Status::Pass), outcome("fam/c", Status::Pass)});
-  const std::string out = testing::TempDir() + "/merged";
+  const std::string out = testing_support::testDir() + "/merged";
   std::filesystem::remove_all(out);
   const MergeResult m = mergeRuns({a, b}, out, Baseline{}, {});
   ASSERT_EQ(m.error, "");
@@ -198,7 +199,7 @@ TEST(MergeRuns, RefusesTwoDevicesAndACaseTwice) {
   const std::string a = runFolder("m-a", "llvmpipe", {outcome("fam/a", Status::Pass)});
   const std::string b = runFolder("m-b", "NVIDIA H100", {outcome("fam/b", Status::Pass)});
   const std::string c = runFolder("m-c", "llvmpipe", {outcome("fam/a", Status::Fail)});
-  const std::string out = testing::TempDir() + "/m-out";
+  const std::string out = testing_support::testDir() + "/m-out";
   EXPECT_NE(mergeRuns({a, b}, out, Baseline{}, {}).error.find("NVIDIA H100"), std::string::npos);
   const std::string twice = mergeRuns({a, c}, out, Baseline{}, {}).error;
   EXPECT_NE(twice.find("fam/a"), std::string::npos) << twice;

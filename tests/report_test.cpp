@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "test_dir.h"
 #include "report/baseline.h"
 #include "report/baseline_gate.h"
 #include "report/escape.h"
@@ -41,7 +42,7 @@ std::vector<CaseOutcome> outcomes() {
 }
 
 TEST(Reports, ResultsCsvIsDeqpRunnerCsv) {
-  const std::string dir = ::testing::TempDir() + "/rayspec-report-test";
+  const std::string dir = testing_support::testDir() + "/rayspec-report-test";
   ASSERT_EQ(writeReports(outcomes(), RunInfo{}, dir), "");
   std::ifstream in(dir + "/results.csv");
   std::string line;
@@ -55,7 +56,7 @@ TEST(Reports, ResultsCsvIsDeqpRunnerCsv) {
 }
 
 TEST(Reports, InterruptedRunSaysSoInEveryReport) {
-  const std::string dir = ::testing::TempDir() + "/rayspec-report-interrupted";
+  const std::string dir = testing_support::testDir() + "/rayspec-report-interrupted";
   RunInfo info;
   info.planned_cases = 5;
   info.interrupted = true;
@@ -75,7 +76,7 @@ TEST(Reports, InterruptedRunSaysSoInEveryReport) {
 }
 
 TEST(Reports, HtmlPutsFailingCasesFirstEscapesAndCarriesItsSelfCheck) {
-  const std::string dir = ::testing::TempDir() + "/rayspec-report-test-html";
+  const std::string dir = testing_support::testDir() + "/rayspec-report-test-html";
   ASSERT_EQ(writeReports(outcomes(), RunInfo{}, dir), "");
   const std::string html = slurp(dir + "/report.html");
   EXPECT_LT(html.find("id=\"anyhit/failing\""), html.find("id=\"results/passing\""));
@@ -107,7 +108,7 @@ std::vector<CaseOutcome> outcomesWithUndefinedBehaviour() {
 }
 
 TEST(Reports, CaseErrorIsFailInResultsCsvAndAFailureInJunit) {
-  const std::string dir = ::testing::TempDir() + "/rayspec-report-test-case-error";
+  const std::string dir = testing_support::testDir() + "/rayspec-report-test-case-error";
   ASSERT_EQ(writeReports(outcomesWithUndefinedBehaviour(), RunInfo{}, dir), "");
   const std::string csv = slurp(dir + "/results.csv");
   EXPECT_NE(csv.find("builtins/broken,Fail,"), std::string::npos) << csv;
@@ -119,7 +120,7 @@ TEST(Reports, CaseErrorIsFailInResultsCsvAndAFailureInJunit) {
 }
 
 TEST(Reports, CaseErrorsAreGroupedApartInHtmlTextAndJson) {
-  const std::string dir = ::testing::TempDir() + "/rayspec-report-test-case-error-groups";
+  const std::string dir = testing_support::testDir() + "/rayspec-report-test-case-error-groups";
   ASSERT_EQ(writeReports(outcomesWithUndefinedBehaviour(), RunInfo{}, dir), "");
   const std::string html = slurp(dir + "/report.html");
   const size_t failing = html.find("<h2>Failing cases</h2>"), errors = html.find("<h2>Case errors</h2>"),
@@ -138,7 +139,7 @@ TEST(Reports, CaseErrorsAreGroupedApartInHtmlTextAndJson) {
 }
 
 TEST(Reports, UndefinedRaysAreShownPerCaseApartFromTheFindings) {
-  const std::string dir = ::testing::TempDir() + "/rayspec-report-test-undefined";
+  const std::string dir = testing_support::testDir() + "/rayspec-report-test-undefined";
   ASSERT_EQ(writeReports(outcomesWithUndefinedBehaviour(), RunInfo{}, dir), "");
   const std::string html = slurp(dir + "/report.html");
   const size_t probe = html.find("id=\"robustness/probe\"");
@@ -170,7 +171,7 @@ namespace rayspec {
 namespace {
 
 std::string writeTemp(const std::string& name, const std::string& text) {
-  const std::string path = testing::TempDir() + "/" + name;
+  const std::string path = testing_support::testDir() + "/" + name;
   std::ofstream(path) << text;
   return path;
 }
@@ -201,7 +202,7 @@ TEST(Baseline, ExpectedFailureDoesNotFailTheRunAndIsReportedAsExpected) {
   with_new_failure.add(other);
   EXPECT_TRUE(with_new_failure.failed()) << "a failure the baseline does not list fails the run";
 
-  const std::string csv = testing::TempDir() + "/baseline-results.csv";
+  const std::string csv = testing_support::testDir() + "/baseline-results.csv";
   ASSERT_EQ(writeResultsCsv({broken, fixed, other}, csv), "");
   std::ifstream in(csv);
   std::string a, c, d;
@@ -226,7 +227,7 @@ TEST(Baseline, ReadsQuotedNamesBackFromResultsCsv) {
   const std::vector<std::string> names = {"fam/a,b", "fam/say \"hi\", then go", "fam/plain", "fam/hash#in,name"};
   std::vector<CaseOutcome> outcomes;
   for (const std::string& n : names) outcomes.push_back({n, {}, Status::Fail, "Fail: x"});
-  const std::string csv = testing::TempDir() + "/quoted-results.csv";
+  const std::string csv = testing_support::testDir() + "/quoted-results.csv";
   ASSERT_EQ(writeResultsCsv(outcomes, csv), "");
   // A baseline made from results.csv: each line's name field as it was written, the rayspec status, a comment.
   std::ifstream in(csv);
@@ -275,10 +276,10 @@ TEST(RunSummary, CaseErrorsAreListedApartFromTheDevicesFailures) {
 
 TEST(RuleCatalog, ErrorsNameFileLineAndWhatWasExpected) {
   std::string error;
-  EXPECT_TRUE(loadRuleCatalog(testing::TempDir() + "/no-such-catalog.yaml", &error).empty());
+  EXPECT_TRUE(loadRuleCatalog(testing_support::testDir() + "/no-such-catalog.yaml", &error).empty());
   EXPECT_NE(error.find("no such rule catalog"), std::string::npos) << error;
   EXPECT_EQ(error.find("bad file"), std::string::npos) << error;
-  const std::string path = testing::TempDir() + "/catalog-bad-title.yaml";
+  const std::string path = testing_support::testDir() + "/catalog-bad-title.yaml";
   std::ofstream(path) << "R-ONE: fine\nR-TWO: [not, a, title]\n";
   error.clear();
   loadRuleCatalog(path, &error);
