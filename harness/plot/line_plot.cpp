@@ -1,4 +1,4 @@
-// Line plots drawn with OpenImageIO's ImageBufAlgo (lines, boxes, text).
+// Line and scatter plots drawn with OpenImageIO's ImageBufAlgo (lines, boxes, text).
 #include "plot/line_plot.h"
 
 #include <algorithm>
@@ -99,14 +99,20 @@ void drawPanel(OIIO::ImageBuf& img, int ox, int oy, const PlotLayout& lay, const
     const float* c = kPalette[colour_of.at(s.name) % std::size(kPalette)];
     bool first = true;
     int lx = 0, ly = 0;
-    for (const auto& pt : s.points) {
+    for (size_t i = 0; i < s.points.size(); ++i) {
+      const auto& pt = s.points[i];
       if (!usable(p, pt)) continue;
       const int x = f.px(pt.first), y = f.py(pt.second);
-      if (!first) {
+      if (i < s.labels.size() && !s.labels[i].empty())
+        // Beside the point, towards the middle of the plot so the text stays inside.
+        text(x < (f.x0 + f.x1) / 2 ? x + 8 : x - 8, y - 8, s.labels[i], 13,
+             x < (f.x0 + f.x1) / 2 ? IBA::TextAlignX::Left : IBA::TextAlignX::Right, IBA::TextAlignY::Bottom);
+      if (!first && p.lines) {
         IBA::render_line(img, lx, ly, x, y, {c, 3}, true);
         IBA::render_line(img, lx, ly + 1, x, y + 1, {c, 3}, true);
       }
-      IBA::render_box(img, x - 3, y - 3, x + 3, y + 3, {c, 3}, true);
+      const int r = p.lines ? 3 : 5;  // a scatter plot's markers stand alone: larger
+      IBA::render_box(img, x - r, y - r, x + r, y + r, {c, 3}, true);
       lx = x;
       ly = y;
       first = false;
