@@ -1,7 +1,6 @@
 // Tier runs: one `rayspec run` per tier and glob, and their bundles read back.
 #include "tiers/tier_runs.h"
 
-#include <algorithm>
 #include <cstdio>
 #include <fstream>
 
@@ -15,33 +14,27 @@ std::string tierRunDir(const std::string& out, const std::string& tier) { return
 
 std::vector<std::string> tierRunCases(const RunOptions& run, const std::vector<std::string>& filters) {
   std::vector<std::string> names;
-  for (const std::string& glob : filters)
-    for (const CaseFile& f : findCases(run.cases_dir, glob)) names.push_back(f.name);
-  std::sort(names.begin(), names.end());
-  names.erase(std::unique(names.begin(), names.end()), names.end());
+  for (const CaseFile& f : findCasesAny(run.cases_dir, filters)) names.push_back(f.name);
   return names;
 }
 
 int runTiers(const TierRuns& runs) {
   const bool with_device = !runs.run.no_device;
+  std::string globs;
+  for (const std::string& g : runs.filters) globs += (globs.empty() ? "" : " ") + g;
   for (const std::string& tier : runs.tiers) {
-    bool first = true;
-    for (const std::string& glob : runs.filters) {
-      if (findCases(runs.run.cases_dir, glob).empty()) continue;  // runCases would refuse it
-      RunOptions o = runs.run;
-      o.filter = glob;
-      o.model_tier = tier;
-      o.no_model = false;
-      o.no_device = !with_device || tier != "exact";
-      o.out = tierRunDir(runs.out, tier);
-      o.resume = !first;
-      first = false;
-      std::printf("== %s: %s, model %s tier%s ==\n", runs.command.c_str(), glob.c_str(), tier.c_str(),
-                  o.no_device ? "" : " and the device");
-      std::fflush(stdout);
-      const int rc = runCases(o);
-      if (rc == kExitSetup || rc >= 128) return rc;
-    }
+    RunOptions o = runs.run;
+    o.filters = runs.filters;
+    o.filter = globs;  // named by the messages only
+    o.model_tier = tier;
+    o.no_model = false;
+    o.no_device = !with_device || tier != "exact";
+    o.out = tierRunDir(runs.out, tier);
+    std::printf("== %s: %s, model %s tier%s ==\n", runs.command.c_str(), globs.c_str(), tier.c_str(),
+                o.no_device ? "" : " and the device");
+    std::fflush(stdout);
+    const int rc = runCases(o);
+    if (rc == kExitSetup || rc >= 128) return rc;
   }
   return kExitPass;
 }

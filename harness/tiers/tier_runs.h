@@ -28,11 +28,10 @@ std::string tierRunDir(const std::string& out, const std::string& tier);
 // The names of the cases matching any of the globs, sorted, each once.
 std::vector<std::string> tierRunCases(const RunOptions& run, const std::vector<std::string>& filters);
 
-// Runs every tier (the device too unless run.no_device): each glob with a
-// case into the tier's folder (the second and later ones with --resume, so
-// a case matching two globs runs once). Returns kExitPass when every run got
-// as far as its cases (failing cases included), else the first run's
-// kExitSetup or 128 + signal.
+// Runs every tier (the device too unless run.no_device), one `rayspec run`
+// of every case matching a glob (RunOptions::filters) into the tier's
+// folder. Returns kExitPass when every run got as far as its cases (failing
+// cases included), else the first run's kExitSetup or 128 + signal.
 int runTiers(const TierRuns& runs);
 
 // A side's results bundle, or nothing (with a note on stderr starting with
