@@ -37,7 +37,9 @@ void expectRow(const nlohmann::json& report, const std::string& set, const std::
   for (const char* f : kTFields) EXPECT_TRUE(r["t_error_ulp"].contains(f)) << set << " / " << source << ": " << f;
   EXPECT_GT(r["rays"].get<uint64_t>(), 0u) << set << " / " << source;
   EXPECT_GT(r["ms_per_mray"].get<double>(), 0.0) << set << " / " << source;
-  if (source == "model exact") EXPECT_EQ(r["disagreeing_rays"], 0u) << set << ": the exact tier against itself";
+  if (source == "model exact") {
+    EXPECT_EQ(r["disagreeing_rays"], 0u) << set << ": the exact tier against itself";
+  }
 }
 
 TEST(Accuracy, WritesTheReportWithARowPerSetTierAndDevice) {
