@@ -48,13 +48,19 @@ bool legalHit(const Fields& f, const uint32_t* rec, const RayAmbiguity& a) {
   return false;
 }
 
-// A miss on this ambiguous ray leaks through a closed surface.
+// A miss on this ambiguous ray leaks through a closed surface: it crosses
+// an edge or vertex that triangles share, or no legal answer is a miss and
+// (with the case at hand) the ray does not only cross the outer border of a
+// mesh, where a miss is legal whatever the candidates say (as the case's own
+// verdict judges it, compare/compare_records.cpp).
 bool closedCrossing(const RayAmbiguity& a, const Case* c) {
   bool miss_legal = false;
   for (const Candidate& k : a.candidates) miss_legal = miss_legal || !k.hit;
-  if (!miss_legal) return true;
-  if (c) return crossesSharedEdge(*c, a) || sharedCrossing(*c, a).triangles >= 2;
-  return a.shared_triangles.size() >= 2;
+  if (c) {
+    if (crossesSharedEdge(*c, a) || sharedCrossing(*c, a).triangles >= 2) return true;
+    return !miss_legal && !crossesBorderOnly(*c, a);
+  }
+  return !miss_legal || a.shared_triangles.size() >= 2;
 }
 
 }  // namespace

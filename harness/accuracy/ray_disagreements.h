@@ -5,7 +5,8 @@
 //               a miss is not legal there: a clear ray, or an ambiguous one
 //               through a closed crossing (an edge shared by two triangles,
 //               a vertex closed by a fan: compare/shared_edge.h) or one
-//               whose legal answers hold no miss
+//               whose legal answers hold no miss and that does not only
+//               cross the outer border of a mesh
 //   double hit  the exact tier ran any-hit exactly once on the ray, the
 //               other side more than once (a primitive edge crossed twice;
 //               where several non-opaque layers lie along a ray a device
