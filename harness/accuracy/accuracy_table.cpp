@@ -98,9 +98,9 @@ std::vector<PlotPanel> accuracyPanels(const std::vector<AccuracyRow>& rows) {
   std::vector<PlotPanel> panels;
   for (CaseSet set : {CaseSet::Ordinary, CaseSet::Hard}) {
     PlotPanel p;
-    p.title = std::string(caseSetName(set)) + " cases: disagreement with the exact tier";
-    p.x_label = "trace time, ms per million rays";
-    p.y_label = "disagreeing rays per million (0 at 0.1)";
+    p.title = std::string(caseSetName(set)) + " cases";
+    p.x_label = "trace ms per million rays (no disagreement: drawn at 0.1)";
+    p.y_label = "disagreeing rays / Mray";
     p.log_x = p.log_y = true;
     p.lines = false;
     for (const AccuracyRow& r : rows) {
