@@ -8,6 +8,7 @@
 #include "accuracy/accuracy_table.h"
 #include "accuracy/ray_disagreements.h"
 #include "accuracy/t_errors.h"
+#include "library/case_discovery.h"
 #include "results/record_layout.h"
 
 namespace rayspec {
@@ -110,6 +111,28 @@ TEST(RayDisagreements, LegalAnswersOfAmbiguousRaysAndUndefinedRaysAreNoDisagreem
   EXPECT_EQ(d.other_primitive, 1u);
   EXPECT_EQ(d.extra_hits, 0u);
   EXPECT_EQ(d.disagreeing, 2u);
+}
+
+// With the case at hand its triangles tell a closed crossing from the outer
+// border of the mesh: watertight/shared-edges is a 4x4 grid whose primitives
+// 0 and 1 split the corner cell along the diagonal from the grid's corner.
+TEST(RayDisagreements, TheCaseTellsASharedEdgeFromTheBorder) {
+  const std::optional<CaseFile> f = findCase("watertight/shared-edges", "", RAYSPEC_SOURCE_DIR "/cases");
+  ASSERT_TRUE(f.has_value());
+  const ParseResult parsed = loadCase(*f, RAYSPEC_SOURCE_DIR "/cases");
+  ASSERT_TRUE(parsed.value.has_value());
+  Results exact = bundle({hitRay(0, 3.0f), hitRay(0, 3.0f), hitRay(0, 3.0f)});
+  const Results other = bundle({missRay(), missRay(), missRay()});
+  // Ray 0: through the diagonal that primitives 0 and 1 share: a leak.
+  exact.ambiguous.push_back({0, AmbiguityReason::Edge, {{true, 0, 0, 0}, {true, 0, 0, 1}}, {}});
+  // Ray 1: through the grid's corner vertex, the fan open: a miss is legal
+  // although the candidates list none (precision/large-coordinates has such rays).
+  exact.ambiguous.push_back({1, AmbiguityReason::Vertex, {{true, 0, 0, 0}, {true, 0, 0, 1}}, {}});
+  // Ray 2: through a border edge of primitive 0 alone.
+  exact.ambiguous.push_back({2, AmbiguityReason::Edge, {{true, 0, 0, 0}, {false, 0, 0, 0}}, {{true, 0, 0, 0}}});
+  EXPECT_EQ(countDisagreements(exact, other, &*parsed.value).leaks, 1u);
+  // Without the case only the candidates tell: the corner ray lists no miss.
+  EXPECT_EQ(countDisagreements(exact, other, nullptr).leaks, 2u);
 }
 
 TEST(RayDisagreements, DifferentLaunchesCompareNothing) {
