@@ -59,6 +59,49 @@ TEST(LinePlot, WritesAnImageWithLinesInTheSeriesColours) {
   EXPECT_NE(writeLinePlots("/nonexistent-dir/x.png", {p}), "");
   EXPECT_NE(writeLinePlots(path, {}), "");
 }
+
+// Blue pixels (series a's colour) of the plot.
+int bluePixels(const std::string& path) {
+  OIIO::ImageBuf img(path);
+  if (!img.read()) return -1;
+  int blue = 0;
+  float px[3];
+  for (int y = 0; y < img.spec().height; ++y)
+    for (int x = 0; x < img.spec().width; ++x) {
+      img.getpixel(x, y, px, 3);
+      blue += px[2] > 0.6f && px[0] < 0.2f;
+    }
+  return blue;
+}
+
+TEST(LinePlot, ScatterPanelsDrawMarkersOnlyAndLabelThePoints) {
+  const std::string path = (std::filesystem::temp_directory_path() / "rayspec-scatter-test.png").string();
+  PlotPanel p{"scatter", "ms", "rate", true, true, {{"a", {{1, 1}, {1000, 1000}}, {"first", "second"}}}};
+  ASSERT_EQ(writeLinePlots(path, {p}, {1, 400, 300}), "");
+  const int with_lines = bluePixels(path);
+  p.lines = false;
+  ASSERT_EQ(writeLinePlots(path, {p}, {1, 400, 300}), "");
+  const int markers = bluePixels(path);
+  EXPECT_GT(markers, 100);  // two 11x11 markers and the legend's box
+  EXPECT_LT(markers, with_lines - 300) << "no line joins the points";
+  // The labels are black text beside the markers: more dark pixels than without them.
+  auto dark = [&] {
+    OIIO::ImageBuf img(path);
+    img.read();
+    int n = 0;
+    float px[3];
+    for (int y = 0; y < 300; ++y)
+      for (int x = 0; x < 400; ++x) {
+        img.getpixel(x, y, px, 3);
+        n += px[0] < 0.3f && px[1] < 0.3f && px[2] < 0.3f;
+      }
+    return n;
+  };
+  const int labelled = dark();
+  p.series[0].labels.clear();
+  ASSERT_EQ(writeLinePlots(path, {p}, {1, 400, 300}), "");
+  EXPECT_GT(labelled, dark() + 20);
+}
 #endif
 
 }  // namespace

@@ -2,6 +2,7 @@
 // Embree reference model, and compares what happened.
 #include <CLI/CLI.hpp>
 
+#include "accuracy/run_accuracy.h"
 #include "cli/commands.h"
 #include "run/run_loop.h"
 #include "stability/run_stability.h"
@@ -131,7 +132,28 @@ int main(int argc, char** argv) {
   stability->add_flag("--strict-validation", stability_opt.run.strict_validation,
                       "Fail when the validation layer is not installed");
 
+  auto* accuracy = app.add_subcommand(
+      "accuracy", "Trace time per million rays and per-ray disagreements with the model's exact tier (leaks, double "
+                  "hits, other primitives, t error in ULP), each model tier and device, on ordinary and hard cases "
+                  "(OUT/accuracy.txt, accuracy.json, accuracy.png)");
+  rayspec::AccuracyOptions accuracy_opt;
+  accuracy->add_option("--ordinary", accuracy_opt.ordinary, "Ordinary cases (glob; repeat it for more)")
+      ->capture_default_str();
+  accuracy->add_option("--hard", accuracy_opt.hard, "Hard cases (glob; repeat it for more)")->capture_default_str();
+  accuracy->add_option("--device", accuracy_opt.run.device, "Vulkan device name (substring)");
+  accuracy->add_flag("--no-device", accuracy_opt.run.no_device, "The model tiers only");
+  accuracy->add_option("--device-results", accuracy_opt.saved_devices,
+                       "Run folders of other devices (e.g. a run-only binary's run on a GPU machine): their device "
+                       "bundles are compared too, one source each");
+  accuracy->add_option("--cases", accuracy_opt.run.cases_dir, "Folder of case files")->capture_default_str();
+  accuracy->add_option("--out", accuracy_opt.out, "Folder for the report and the runs")->capture_default_str();
+  accuracy->add_option("--timeout", accuracy_opt.run.timeout, "Seconds per case side")->capture_default_str();
+  accuracy->add_flag("--no-validation", accuracy_opt.run.no_validation, "Do not load the Khronos validation layer");
+  accuracy->add_flag("--strict-validation", accuracy_opt.run.strict_validation,
+                     "Fail when the validation layer is not installed");
+
   CLI11_PARSE(app, argc, argv);
+  if (*accuracy) return rayspec::runAccuracy(accuracy_opt);
   if (*stability) return rayspec::runStability(stability_opt);
   if (*list) return rayspec::runList(list_opt);
   if (*devices) return rayspec::runDevices(devices_opt);

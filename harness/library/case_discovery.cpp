@@ -69,6 +69,16 @@ std::vector<CaseFile> findCases(const std::string& dir, const std::string& glob)
   return out;
 }
 
+std::vector<CaseFile> findCasesAny(const std::string& dir, const std::vector<std::string>& globs) {
+  std::vector<CaseFile> out;
+  for (const std::string& glob : globs)
+    for (CaseFile& f : findCases(dir, glob)) out.push_back(std::move(f));
+  std::stable_sort(out.begin(), out.end(), [](const CaseFile& a, const CaseFile& b) { return a.name < b.name; });
+  out.erase(std::unique(out.begin(), out.end(), [](const CaseFile& a, const CaseFile& b) { return a.name == b.name; }),
+            out.end());
+  return out;
+}
+
 std::optional<CaseFile> findCase(const std::string& name, const std::string& file, const std::string& cases_dir) {
   std::error_code ec;
   std::vector<CaseFile> files;

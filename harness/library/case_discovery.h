@@ -22,6 +22,8 @@ struct CaseFile {
 // Every case under dir (sorted by name) whose name matches glob. A sweep's
 // variant matches by its own name or by the sweep's (`sbt/indexing` runs all).
 std::vector<CaseFile> findCases(const std::string& dir, const std::string& glob);
+// The cases matching any of the globs, sorted by name, each once.
+std::vector<CaseFile> findCasesAny(const std::string& dir, const std::vector<std::string>& globs);
 
 // A case file given on the command line, named relative to cases_dir when it
 // lies under it, else by its stem; a sweep file gives each of its variants.

@@ -1,4 +1,4 @@
-// Line plots drawn with OpenImageIO's ImageBufAlgo (lines, boxes, text).
+// Line and scatter plots drawn with OpenImageIO's ImageBufAlgo (lines, boxes, text).
 #include "plot/line_plot.h"
 
 #include <algorithm>
@@ -95,18 +95,29 @@ void drawPanel(OIIO::ImageBuf& img, int ox, int oy, const PlotLayout& lay, const
   text((f.x0 + f.x1) / 2, f.y1 + 28, p.x_label, 14, IBA::TextAlignX::Center, IBA::TextAlignY::Top);
   text(ox + 6, oy + 20, p.y_label, 13, IBA::TextAlignX::Left, IBA::TextAlignY::Center);
   int legend_y = f.y0 + 10;
-  for (const PlotSeries& s : p.series) {
+  for (size_t j = 0; j < p.series.size(); ++j) {
+    const PlotSeries& s = p.series[j];
     const float* c = kPalette[colour_of.at(s.name) % std::size(kPalette)];
     bool first = true;
     int lx = 0, ly = 0;
-    for (const auto& pt : s.points) {
+    for (size_t i = 0; i < s.points.size(); ++i) {
+      const auto& pt = s.points[i];
       if (!usable(p, pt)) continue;
       const int x = f.px(pt.first), y = f.py(pt.second);
-      if (!first) {
+      if (i < s.labels.size() && !s.labels[i].empty()) {
+        // Beside the point, towards the middle of the plot so the text stays
+        // inside, each series a line higher than the one before (cycling
+        // through four) so the labels of nearby points do not overlap.
+        const int lift = 8 + 15 * static_cast<int>(j % 4);
+        text(x < (f.x0 + f.x1) / 2 ? x + 8 : x - 8, y < f.y0 + lift + 16 ? y + lift + 8 : y - lift, s.labels[i], 13,
+             x < (f.x0 + f.x1) / 2 ? IBA::TextAlignX::Left : IBA::TextAlignX::Right, IBA::TextAlignY::Bottom);
+      }
+      if (!first && p.lines) {
         IBA::render_line(img, lx, ly, x, y, {c, 3}, true);
         IBA::render_line(img, lx, ly + 1, x, y + 1, {c, 3}, true);
       }
-      IBA::render_box(img, x - 3, y - 3, x + 3, y + 3, {c, 3}, true);
+      const int r = p.lines ? 3 : 5;  // a scatter plot's markers stand alone: larger
+      IBA::render_box(img, x - r, y - r, x + r, y + r, {c, 3}, true);
       lx = x;
       ly = y;
       first = false;

@@ -1,6 +1,7 @@
-// Line plots written as an image (PNG by the file's extension) with
-// OpenImageIO: one or more panels, each with its axes (linear or log),
-// labels, a title and a legend; one line with markers per series.
+// Line and scatter plots written as an image (PNG by the file's extension)
+// with OpenImageIO: one or more panels, each with its axes (linear or log),
+// labels, a title and a legend; per series its markers, joined by a line
+// unless the panel is a scatter plot, each with its own label if given.
 #pragma once
 
 #include <string>
@@ -12,12 +13,14 @@ namespace rayspec {
 struct PlotSeries {
   std::string name;                               // the legend's entry
   std::vector<std::pair<double, double>> points;  // (x, y), drawn in the order given
+  std::vector<std::string> labels;                // optional: text beside each point (same order)
 };
 
 struct PlotPanel {
   std::string title, x_label, y_label;
   bool log_x = false, log_y = false;  // log axes leave out points <= 0
   std::vector<PlotSeries> series;     // a series' colour follows its name, the same in every panel
+  bool lines = true;                  // false: a scatter plot, markers only
 };
 
 struct PlotLayout {

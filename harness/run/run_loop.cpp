@@ -46,6 +46,7 @@ std::string now() {
 }
 
 std::vector<CaseFile> caseFiles(const RunOptions& opt) {
+  if (opt.case_files.empty() && !opt.filters.empty()) return findCasesAny(opt.cases_dir, opt.filters);
   if (opt.case_files.empty()) return findCases(opt.cases_dir, opt.filter);
   std::vector<CaseFile> files;
   for (const std::string& f : opt.case_files)

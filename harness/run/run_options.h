@@ -28,6 +28,7 @@ struct RunOptions {
   std::string device;
   std::vector<std::string> icd_files;  // --icd: the loader reads only these driver manifests (vulkan/icd_environment.h)
   std::string filter = "*";
+  std::vector<std::string> filters;    // when not empty, instead of filter: every case matching one of these globs
   std::string out = "rayspec-results";
   std::string cases_dir = RAYSPEC_SOURCE_DIR "/cases";
   std::vector<std::string> case_files;

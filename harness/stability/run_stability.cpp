@@ -3,21 +3,14 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 
 #include "library/case_discovery.h"
-#include "results/results_io.h"
 #include "run/run_loop.h"
 #include "stability/stability_table.h"
+#include "tiers/tier_runs.h"
 
 namespace rayspec {
 namespace {
-
-// The device's name up to its first " (": "llvmpipe (LLVM 15, ...)" -> "llvmpipe".
-std::string shortDeviceName(const std::string& device) {
-  const size_t cut = device.find(" (");
-  return cut == std::string::npos ? device : device.substr(0, cut);
-}
 
 struct StabilityCase {
   std::string name, family, magnitude_text;
@@ -53,22 +46,11 @@ std::vector<StabilityCase> stabilityCases(const RunOptions& run) {
 // A side's results bundle, counted; false (with a note) when it is missing
 // or did not end normally.
 bool countBundle(const std::string& dir, LeakCounts* counts, std::string* device) {
-  std::string error;
-  const Results r = readResults(dir, &error);
-  if (!error.empty() || !r.ok()) {
-    std::fprintf(stderr, "rayspec stability: %s: %s; left out\n", dir.c_str(),
-                 error.empty() ? r.statusText().c_str() : error.c_str());
-    return false;
-  }
-  *counts = countLeaks(r);
-  if (device) *device = r.device;
+  const std::optional<Results> r = readRunBundle(dir, "stability");
+  if (!r) return false;
+  *counts = countLeaks(*r);
+  if (device) *device = r->device;
   return true;
-}
-
-std::string writeText(const std::string& path, const std::string& text) {
-  std::ofstream f(path);
-  f << text;
-  return f.good() ? "" : path + ": cannot write";
 }
 
 }  // namespace
@@ -81,22 +63,13 @@ int runStability(const StabilityOptions& opt) {
     return kExitSetup;
   }
   const bool with_device = !opt.run.no_device;
-  for (const std::string& tier : opt.tiers) {
-    RunOptions o = opt.run;
-    o.model_tier = tier;
-    o.no_model = false;
-    o.no_device = !with_device || tier != "exact";
-    o.out = opt.out + "/runs/" + tier;
-    std::printf("== stability: model %s tier%s ==\n", tier.c_str(), o.no_device ? "" : " and the device");
-    std::fflush(stdout);
-    const int rc = runCases(o);
-    if (rc == kExitSetup || rc >= 128) return rc;
-  }
+  const std::string runs = opt.out + "/runs";
+  if (const int rc = runTiers({opt.run, {opt.run.filter}, opt.tiers, runs, "stability"}); rc != kExitPass) return rc;
   std::vector<StabilityEntry> entries;
   bool exact_clean = true;
   for (const StabilityCase& c : cases)
     for (const std::string& tier : opt.tiers) {
-      const std::string dir = opt.out + "/runs/" + tier + "/" + c.name;
+      const std::string dir = tierRunDir(runs, tier) + "/" + c.name;
       StabilityEntry e{c.family, c.magnitude, c.magnitude_text, "model " + tier, {}};
       if (countBundle(dir + "/model", &e.counts, nullptr)) {
         addCounts(entries, e);
@@ -122,8 +95,8 @@ int runStability(const StabilityOptions& opt) {
     }
   std::filesystem::create_directories(opt.out);
   const std::string table = formatStabilityTable(entries);
-  std::string error = writeText(opt.out + "/stability.txt", table);
-  if (error.empty()) error = writeText(opt.out + "/stability.json", stabilityJson(entries).dump(2) + "\n");
+  std::string error = writeTextFile(opt.out + "/stability.txt", table);
+  if (error.empty()) error = writeTextFile(opt.out + "/stability.json", stabilityJson(entries).dump(2) + "\n");
   if (error.empty()) error = writeLinePlots(opt.out + "/stability.png", stabilityPanels(entries), {2, 640, 440});
   std::printf("\n%s\nReport: %s/stability.txt, stability.json, stability.png\n", table.c_str(), opt.out.c_str());
   if (!error.empty()) {

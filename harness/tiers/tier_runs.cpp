@@ -1,0 +1,64 @@
+// Tier runs: one `rayspec run` per tier and glob, and their bundles read back.
+#include "tiers/tier_runs.h"
+
+#include <cstdio>
+#include <fstream>
+
+#include "library/case_discovery.h"
+#include "results/results_io.h"
+#include "run/run_loop.h"
+
+namespace rayspec {
+
+std::string tierRunDir(const std::string& out, const std::string& tier) { return out + "/" + tier; }
+
+std::vector<std::string> tierRunCases(const RunOptions& run, const std::vector<std::string>& filters) {
+  std::vector<std::string> names;
+  for (const CaseFile& f : findCasesAny(run.cases_dir, filters)) names.push_back(f.name);
+  return names;
+}
+
+int runTiers(const TierRuns& runs) {
+  const bool with_device = !runs.run.no_device;
+  std::string globs;
+  for (const std::string& g : runs.filters) globs += (globs.empty() ? "" : " ") + g;
+  for (const std::string& tier : runs.tiers) {
+    RunOptions o = runs.run;
+    o.filters = runs.filters;
+    o.filter = globs;  // named by the messages only
+    o.model_tier = tier;
+    o.no_model = false;
+    o.no_device = !with_device || tier != "exact";
+    o.out = tierRunDir(runs.out, tier);
+    std::printf("== %s: %s, model %s tier%s ==\n", runs.command.c_str(), globs.c_str(), tier.c_str(),
+                o.no_device ? "" : " and the device");
+    std::fflush(stdout);
+    const int rc = runCases(o);
+    if (rc == kExitSetup || rc >= 128) return rc;
+  }
+  return kExitPass;
+}
+
+std::optional<Results> readRunBundle(const std::string& dir, const std::string& command) {
+  std::string error;
+  Results r = readResults(dir, &error);
+  if (!error.empty() || !r.ok()) {
+    std::fprintf(stderr, "rayspec %s: %s: %s; left out\n", command.c_str(), dir.c_str(),
+                 error.empty() ? r.statusText().c_str() : error.c_str());
+    return std::nullopt;
+  }
+  return r;
+}
+
+std::string shortDeviceName(const std::string& device) {
+  const size_t cut = device.find(" (");
+  return cut == std::string::npos ? device : device.substr(0, cut);
+}
+
+std::string writeTextFile(const std::string& path, const std::string& text) {
+  std::ofstream f(path);
+  f << text;
+  return f.good() ? "" : path + ": cannot write";
+}
+
+}  // namespace rayspec
