@@ -10,6 +10,7 @@
 #include "case/transform.h"
 #include "model/model_trace_context.h"
 #include "model/watertight.h"
+#include "model/watertight_rejection.h"
 
 namespace rayspec {
 namespace {
@@ -108,8 +109,18 @@ void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
   TraceContext* tc = traceContext(args->context);
   const uint32_t inst = args->context->instID[0];
   const auto& mi = tc->scene->instances[inst];
-  const DVec3 o = toObject(mi.inverse, tc->origin, 1.0);
-  const DVec3 d = toObject(mi.inverse, tc->direction, 0.0);
+  if (tc->object_instance != inst) {
+    tc->object_instance = inst;
+    FrameError err;
+    if (g->tier == ModelTier::Exact)
+      objectRayFrameError(mi.form, mi.inverse, mi.inverse_f, tc->origin, tc->direction, err);
+    tc->object_ray = prepareWatertightRay(toObject(mi.inverse, tc->origin, 1.0),
+                                          toObject(mi.inverse, tc->direction, 0.0), err);
+    tc->object_exact = g->tier == ModelTier::Exact && objectRayExact(mi.form, mi.src->transform, tc->origin);
+  }
+  const WatertightRay& wr = tc->object_ray;
+  const DVec3& o = wr.o;
+  const DVec3& d = wr.d;
   const auto& tri = g->triangles[args->primID];
   if (!g->nan_regions.empty()) {
     if (const auto it = g->nan_regions.find(args->primID); it != g->nan_regions.end()) {
@@ -142,12 +153,9 @@ void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
   }
   auto dv = [](const Vec3& v) { return DVec3{v[0], v[1], v[2]}; };
   const DVec3 v0 = dv(tri[0]), v1 = dv(tri[1]), v2 = dv(tri[2]);
-  FrameError err;
-  if (g->tier == ModelTier::Exact) {
-    objectRayFrameError(mi.form, mi.inverse, mi.inverse_f, tc->origin, tc->direction, err);
-    err.vertex = g->vertex_err;
-  }
-  WatertightHit h = watertightIntersect(o, d, v0, v1, v2, err);
+  const DVec3 vertexErr = g->tier == ModelTier::Exact ? g->vertex_err : DVec3{};
+  if (watertightCertainMiss(wr, v0, v1, v2, vertexErr)) return;  // dropped below too (proof there)
+  WatertightHit h = watertightIntersectPrepared(wr, v0, v1, v2, vertexErr);
   if (!h.valid) return;
   if (!h.hit && h.ambiguity == TriAmbiguity::None) return;
   if (g->tier != ModelTier::Exact && !h.hit) return;
@@ -161,8 +169,7 @@ void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
   c.b2 = static_cast<float>(h.b2);
   c.ambiguity = g->tier == ModelTier::Exact ? h.ambiguity : TriAmbiguity::None;
   c.t_err = h.t_err;
-  if (g->tier == ModelTier::Exact && g->vertex_err == DVec3{} &&
-      objectRayExact(mi.form, mi.src->transform, tc->origin)) {
+  if (g->tier == ModelTier::Exact && g->vertex_err == DVec3{} && tc->object_exact) {
     const ExactEnds ends = exactEnds(o, d, v0, v1, v2, h.t, tc->tmin, tc->tmax);
     c.exact_tmin = ends.tmin;
     c.exact_tmax = ends.tmax;
