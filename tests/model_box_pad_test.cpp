@@ -134,7 +134,7 @@ outputs:
 )");
   const std::vector<double> pads = blasRayPads(far);
   ASSERT_EQ(pads.size(), 1u);
-  EXPECT_GT(pads[0], 256 * kU * 3);  // the zone, at least 3 units away
+  EXPECT_GT(pads[0], 128 * kU * 3);  // the zone, at least 3 units away
   EXPECT_LT(pads[0], 1e-2);
   const Case moved = model_test::parseInline(R"(
 rules: [R-PREC]

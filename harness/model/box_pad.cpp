@@ -19,17 +19,18 @@
 //
 // 1. The zone. An edge function e = L h (L the edge's sheared length, h the
 //    origin's distance to the edge's line) is ambiguous while e <= bound.
-//    With no device error, bound <= 4 |p| E + O(E^2, r |p|^2) where E <=
-//    3 r R per vertex (r = 4 u, R = the largest |v - o|, which rho bounds),
-//    and |p| <= h + L for a ray near the edge, so h <= 12 r R (h + L) / L,
-//    i.e. h <= 24 r R = 96 u R while h <= L. The device's own errors
-//    (origin, direction, vertices) add to the zone: through the frame error
-//    (the instance's ray error below, and the vertex error in the pad).
-//    kZoneSteps = 256 leaves a factor 2.6 over 96 u. Past h > L the test
-//    still calls a triangle smaller than its rounding (L < 48 u R)
-//    degenerate from any distance: those far flags never meant a device
-//    may hit it, and the former pads did not enumerate them either beyond
-//    1e-5 m.
+//    With no device error, bound <= 4 A E + 2 r (A + E)^2 + O(E^2), A the
+//    edge's largest |p| (<= 2 L for a ray within h <= L of it), and E
+//    <= 8 u R per vertex (the rounding of x + s z with |s| <= 1 and of the
+//    shear along the depth z; R = the largest |v - o|, which rho bounds). So
+//    h <= 4 * 2 L * 8 u R / L + 2 r 4 L^2 / L = 64 u R + 32 u L <= 64 u rho
+//    (rho >= R and rho >= L). The device's own errors (origin, direction,
+//    vertices) add to the zone: through the instance's ray error below and
+//    the vertex error in the pad. kZoneSteps = 128 leaves a factor 2 (on the
+//    hard cases, tests/model_box_pad_test.cpp, 16 already suffices). Past
+//    h > L the test still calls a triangle smaller than its rounding
+//    degenerate from any distance: those far flags never meant a device may
+//    hit it, and the former pads did not enumerate them either.
 // 2. Embree's ray. Identity instance: Embree's object ray is the launch ray
 //    itself (floats, the model's own); Embree's robust traversal then misjudges
 //    a box by at most a few float steps of the distance it measures, which
@@ -63,7 +64,7 @@ namespace rayspec {
 namespace {
 
 constexpr double kU = 5.9604644775390625e-08;  // 2^-24
-constexpr double kZoneSteps = 256.0;
+constexpr double kZoneSteps = 128.0;
 // Float steps (relative) of a ray origin's distance that Embree's box test
 // may be off by: about 8 * 2^-23.
 constexpr double kTraversalSteps = 1e-6;
