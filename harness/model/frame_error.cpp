@@ -17,10 +17,13 @@ constexpr double kProductRoundings = 2.0;
 // Roundings of a vertex through a geometry transform, model and device each
 // in their own order (3 products, 3 sums).
 constexpr double kVertexRoundings = 4.0;
-// Candidate boxes are padded by this much of the instance's translation (in
-// object space): room for the origin error of rays starting up to a few times
-// the translation away.
-constexpr double kPadScale = 1e-5;
+// Candidate boxes are padded by this many float steps of the instance's
+// translation terms (in object space): a device's origin error (2 u of the
+// inverse translation for a scaled permutation, 8 u of every term for a
+// general transform) and Embree's own float inverse and object-space ray
+// (a few u of the same terms), for rays starting near the instance (farther
+// ones: box_pad.cpp's reach term). Identity: neither rounds.
+constexpr double kPadStepsPermutation = 8.0, kPadStepsGeneral = 32.0;
 
 bool powerOfTwo(double x) {
   int e;
@@ -92,7 +95,11 @@ double instancePad(const std::array<double, 12>& inv, const Transform& m) {
     for (int j = 0; j < 3; ++j) s += std::fabs(inv[k * 4 + j] * m[j * 4 + 3]);
     pad = std::max(pad, s);
   }
-  return std::isfinite(pad) ? kPadScale * pad : 0.0;
+  const InstanceForm form = instanceForm(m);
+  const double steps = form == InstanceForm::Identity        ? 0.0
+                       : form == InstanceForm::ScaledPermutation ? kPadStepsPermutation
+                                                                 : kPadStepsGeneral;
+  return std::isfinite(pad) ? steps * kU * pad : 0.0;
 }
 
 }  // namespace rayspec

@@ -36,8 +36,9 @@ void objectRayFrameError(InstanceForm form, const std::array<double, 12>& invers
 // in its own order (the largest over the geometry's vertices).
 DVec3 geometryVertexError(const Transform& m, const std::vector<Vec3>& vertices);
 
-// How far outside a BLAS's own bounds a device's object-space ray may be off
-// for rays through this instance (pads the model's candidate boxes).
+// How far outside a BLAS's own bounds a device's (and Embree's) object-space
+// ray may be off for rays through this instance that start near it (pads the
+// model's candidate boxes, model/box_pad.h).
 double instancePad(const std::array<double, 12>& inverse, const Transform& objectToWorld);
 
 }  // namespace rayspec

@@ -5,11 +5,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "model/box_pad.h"
 #include "model/exact_interval.h"
 #include "model/frame_error.h"
 #include "case/transform.h"
 #include "model/model_trace_context.h"
 #include "model/watertight.h"
+#include "model/watertight_rejection.h"
 
 namespace rayspec {
 namespace {
@@ -28,11 +30,19 @@ void setInvalidBounds(RTCBounds& b) {
   b.upper_x = b.upper_y = b.upper_z = -1.0f;
 }
 
-// Float steps (relative) of a ray origin's distance that Embree's box test
-// may be off by: about 8 * 2^-23.
-constexpr double kTraversalSteps = 1e-6;
-
 float clampLarge(float x) { return std::clamp(x, -kEmbreeLarge, kEmbreeLarge); }
+
+constexpr double kU = 5.9604644775390625e-08;  // 2^-24
+
+// The nearest float at or below / above x (NaN stays NaN).
+float floatBelow(double x) {
+  const float f = static_cast<float>(x);
+  return f > x ? std::nextafter(f, -INFINITY) : f;
+}
+float floatAbove(double x) {
+  const float f = static_cast<float>(x);
+  return f < x ? std::nextafter(f, INFINITY) : f;
+}
 
 void ownTriangleBounds(const RTCBoundsFunctionArguments* args) {
   const auto* g = static_cast<const ModelGeometry*>(args->geometryUserPtr);
@@ -65,12 +75,13 @@ void ownTriangleBounds(const RTCBoundsFunctionArguments* args) {
     }
   }
   // Enlarged so that rays within the ambiguity bound of an edge are enumerated
-  // (and rays an instance's rounding may move onto it).
+  // (and rays an instance's rounding may move onto it): model/box_pad.cpp
+  // says why this much is enough. Rounded outward to float.
   for (int k = 0; k < 3; ++k) {
-    const float m = std::max({std::fabs(lo[k]), std::fabs(hi[k]), hi[k] - lo[k], 1e-30f});
-    const float pad = m * 1e-5f + static_cast<float>(g->ray_pad + 4 * g->vertex_err[k]);
-    lo[k] = clampLarge(lo[k] - pad);
-    hi[k] = clampLarge(hi[k] + pad);
+    const double m = std::max({std::fabs(double(lo[k])), std::fabs(double(hi[k])), 1e-30});
+    const double pad = kBoxMagnitudeSteps * kU * m + g->ray_pad + 4 * g->vertex_err[k];
+    lo[k] = clampLarge(floatBelow(lo[k] - pad));
+    hi[k] = clampLarge(floatAbove(hi[k] + pad));
   }
   b.lower_x = lo[0]; b.lower_y = lo[1]; b.lower_z = lo[2];
   b.upper_x = hi[0]; b.upper_y = hi[1]; b.upper_z = hi[2];
@@ -108,8 +119,18 @@ void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
   TraceContext* tc = traceContext(args->context);
   const uint32_t inst = args->context->instID[0];
   const auto& mi = tc->scene->instances[inst];
-  const DVec3 o = toObject(mi.inverse, tc->origin, 1.0);
-  const DVec3 d = toObject(mi.inverse, tc->direction, 0.0);
+  if (tc->object_instance != inst) {
+    tc->object_instance = inst;
+    FrameError err;
+    if (g->tier == ModelTier::Exact)
+      objectRayFrameError(mi.form, mi.inverse, mi.inverse_f, tc->origin, tc->direction, err);
+    tc->object_ray = prepareWatertightRay(toObject(mi.inverse, tc->origin, 1.0),
+                                          toObject(mi.inverse, tc->direction, 0.0), err);
+    tc->object_exact = g->tier == ModelTier::Exact && objectRayExact(mi.form, mi.src->transform, tc->origin);
+  }
+  const WatertightRay& wr = tc->object_ray;
+  const DVec3& o = wr.o;
+  const DVec3& d = wr.d;
   const auto& tri = g->triangles[args->primID];
   if (!g->nan_regions.empty()) {
     if (const auto it = g->nan_regions.find(args->primID); it != g->nan_regions.end()) {
@@ -142,12 +163,9 @@ void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
   }
   auto dv = [](const Vec3& v) { return DVec3{v[0], v[1], v[2]}; };
   const DVec3 v0 = dv(tri[0]), v1 = dv(tri[1]), v2 = dv(tri[2]);
-  FrameError err;
-  if (g->tier == ModelTier::Exact) {
-    objectRayFrameError(mi.form, mi.inverse, mi.inverse_f, tc->origin, tc->direction, err);
-    err.vertex = g->vertex_err;
-  }
-  WatertightHit h = watertightIntersect(o, d, v0, v1, v2, err);
+  const DVec3 vertexErr = g->tier == ModelTier::Exact ? g->vertex_err : DVec3{};
+  if (watertightCertainMiss(wr, v0, v1, v2, vertexErr)) return;  // dropped below too (proof there)
+  WatertightHit h = watertightIntersectPrepared(wr, v0, v1, v2, vertexErr);
   if (!h.valid) return;
   if (!h.hit && h.ambiguity == TriAmbiguity::None) return;
   if (g->tier != ModelTier::Exact && !h.hit) return;
@@ -161,8 +179,7 @@ void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
   c.b2 = static_cast<float>(h.b2);
   c.ambiguity = g->tier == ModelTier::Exact ? h.ambiguity : TriAmbiguity::None;
   c.t_err = h.t_err;
-  if (g->tier == ModelTier::Exact && g->vertex_err == DVec3{} &&
-      objectRayExact(mi.form, mi.src->transform, tc->origin)) {
+  if (g->tier == ModelTier::Exact && g->vertex_err == DVec3{} && tc->object_exact) {
     const ExactEnds ends = exactEnds(o, d, v0, v1, v2, h.t, tc->tmin, tc->tmax);
     c.exact_tmin = ends.tmin;
     c.exact_tmax = ends.tmax;
@@ -325,37 +342,9 @@ void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
     }
   };
   s.blases.resize(c.scene.blases.size());
-  // Exact tier: how far a device's object-space rays may be off, per BLAS
-  // (the largest over the instances that use it).
-  // Also how far Embree's own float traversal may misjudge a box the ray
-  // only just crosses: a few float steps of the distance from the launch
-  // rays' object-space origins (a mesh of 1e-4 seen from 3 units away), at
-  // most 1e5 times the BLAS's extent (rays from far away that meet another
-  // instance must not blow the boxes up).
-  std::vector<double> rayPad(c.scene.blases.size(), 0.0);
-  for (const Instance& inst : c.scene.instances) {
-    if (!inst.blas || *inst.blas >= rayPad.size()) continue;
-    const std::array<double, 12> inv = invertTransform(inst.transform);
-    double lo = INFINITY, hi = -INFINITY;
-    for (const Geometry& g : c.scene.blases[*inst.blas].geometries) {
-      for (const Vec3& v : g.vertices)
-        for (float x : v)
-          if (std::isfinite(x)) lo = std::min(lo, double(x)), hi = std::max(hi, double(x));
-      for (const auto& b : g.aabbs)
-        for (float x : b)
-          if (std::isfinite(x)) lo = std::min(lo, double(x)), hi = std::max(hi, double(x));
-    }
-    double reach = 0;
-    const double reachCap = hi >= lo ? 1e5 * (hi - lo) : 0;
-    for (const Ray& r : c.rays.rays)
-      for (int k = 0; k < 3; ++k) {
-        const double o = inv[k * 4] * r.origin[0] + inv[k * 4 + 1] * r.origin[1] + inv[k * 4 + 2] * r.origin[2] +
-                         inv[k * 4 + 3];
-        if (std::isfinite(o)) reach = std::max(reach, std::fabs(o));
-      }
-    rayPad[*inst.blas] = std::max(
-        {rayPad[*inst.blas], instancePad(inv, inst.transform), kTraversalSteps * std::min(reach, reachCap)});
-  }
+  // Exact tier: how far a device's and Embree's object-space rays may be off
+  // and how far the exact test's ambiguity reaches, per BLAS (box_pad.h).
+  const std::vector<double> rayPad = tier == ModelTier::Exact ? blasRayPads(c) : std::vector<double>();
   bool anyOwn = false;
   for (size_t bi = 0; bi < c.scene.blases.size(); ++bi) {
     const Blas& src = c.scene.blases[bi];

@@ -36,9 +36,9 @@ struct ModelGeometry {
   uint32_t blas = 0, index = 0;
   ModelTier tier = ModelTier::Exact;
   // Exact tier: how far a device's vertices may differ from `triangles` (a
-  // geometry transform rounded in another order; zero without one), and how
-  // far its object-space rays through the BLAS's instances may be off
-  // (pads the candidate boxes).
+  // geometry transform rounded in another order; zero without one), and the
+  // candidate boxes' pad for rays through the BLAS's instances (their error
+  // and the exact test's ambiguity zone: model/box_pad.h).
   DVec3 vertex_err{};
   double ray_pad = 0;
 };

@@ -36,6 +36,15 @@ struct TraceContext {
   DVec3 origin{}, direction{};  // world ray
   double tmin = 0, tmax = 0;
   std::vector<ModelCandidate>* candidates = nullptr;
+  // The model's own triangle tests (model_scene.cpp): what depends only on
+  // (ray, instance), for the instance seen last (Embree visits one
+  // instance's primitives together): the object-space ray with the device's
+  // frame error (exact tier; none otherwise) and its watertight part, and
+  // whether every device derives the same object-space ray
+  // (model/exact_interval.h).
+  uint32_t object_instance = UINT32_MAX;  // UINT32_MAX: none yet
+  WatertightRay object_ray;
+  bool object_exact = false;
 };
 
 }  // namespace rayspec

@@ -21,23 +21,49 @@ double perturbedSide(const double* px, const double* py, int a, int b) {
 
 }  // namespace
 
-WatertightHit watertightIntersect(const DVec3& o, const DVec3& d, const DVec3& v0, const DVec3& v1,
-                                  const DVec3& v2, const FrameError& err) {
-  WatertightHit r;
+WatertightRay prepareWatertightRay(const DVec3& o, const DVec3& d, const FrameError& err) {
+  WatertightRay w;
+  w.o = o;
+  w.d = d;
+  w.origin_err = err.origin;
+  w.direction_err = err.direction;
   // Dominant axis of the direction becomes z.
   int kz = 0;
   if (std::fabs(d[1]) > std::fabs(d[kz])) kz = 1;
   if (std::fabs(d[2]) > std::fabs(d[kz])) kz = 2;
   const int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
-  if (d[kz] == 0.0 || std::isnan(d[kz])) { r.valid = false; return r; }
-  const double sx = -d[kx] / d[kz], sy = -d[ky] / d[kz], sz = 1.0 / d[kz];
+  w.kx = kx;
+  w.ky = ky;
+  w.kz = kz;
+  if (d[kz] == 0.0 || std::isnan(d[kz])) return w;
+  w.valid = true;
+  w.sx = -d[kx] / d[kz];
+  w.sy = -d[ky] / d[kz];
+  w.sz = 1.0 / d[kz];
   const double round = kFrameRoundings * kU;
   // The shear a device derives from its own direction.
-  const double dsx = round * std::fabs(sx) + (err.direction[kx] + std::fabs(sx) * err.direction[kz]) / std::fabs(d[kz]);
-  const double dsy = round * std::fabs(sy) + (err.direction[ky] + std::fabs(sy) * err.direction[kz]) / std::fabs(d[kz]);
+  w.dsx = round * std::fabs(w.sx) + (err.direction[kx] + std::fabs(w.sx) * err.direction[kz]) / std::fabs(d[kz]);
+  w.dsy = round * std::fabs(w.sy) + (err.direction[ky] + std::fabs(w.sy) * err.direction[kz]) / std::fabs(d[kz]);
   // The device's origin error, sheared: one shift of all three vertices.
-  const double shiftX = err.origin[kx] + std::fabs(sx) * err.origin[kz];
-  const double shiftY = err.origin[ky] + std::fabs(sy) * err.origin[kz];
+  w.shiftX = err.origin[kx] + std::fabs(w.sx) * err.origin[kz];
+  w.shiftY = err.origin[ky] + std::fabs(w.sy) * err.origin[kz];
+  w.dirErr = err.direction[kz] / std::fabs(d[kz]) + round;
+  return w;
+}
+
+WatertightHit watertightIntersect(const DVec3& o, const DVec3& d, const DVec3& v0, const DVec3& v1,
+                                  const DVec3& v2, const FrameError& err) {
+  return watertightIntersectPrepared(prepareWatertightRay(o, d, err), v0, v1, v2, err.vertex);
+}
+
+WatertightHit watertightIntersectPrepared(const WatertightRay& w, const DVec3& v0, const DVec3& v1, const DVec3& v2,
+                                  const DVec3& vertexErr) {
+  WatertightHit r;
+  if (!w.valid) { r.valid = false; return r; }
+  const DVec3& o = w.o;
+  const int kx = w.kx, ky = w.ky, kz = w.kz;
+  const double sx = w.sx, sy = w.sy, sz = w.sz, dsx = w.dsx, dsy = w.dsy, shiftX = w.shiftX, shiftY = w.shiftY;
+  const double round = kFrameRoundings * kU;
   const DVec3* v[3] = {&v0, &v1, &v2};
   double px[3], py[3], pz[3], ex[3], ey[3];
   for (int i = 0; i < 3; ++i) {
@@ -48,9 +74,9 @@ WatertightHit watertightIntersect(const DVec3& o, const DVec3& d, const DVec3& v
     // Per vertex: the vertex error through the shear, the shear's own error
     // along this vertex's depth, and the rounding of the translated, sheared
     // coordinate relative to its magnitude.
-    const double vx = err.vertex[kx] + std::fabs(sx) * err.vertex[kz];
-    const double vy = err.vertex[ky] + std::fabs(sy) * err.vertex[kz];
-    const double az = std::fabs(z) + err.origin[kz] + err.vertex[kz];
+    const double vx = vertexErr[kx] + std::fabs(sx) * vertexErr[kz];
+    const double vy = vertexErr[ky] + std::fabs(sy) * vertexErr[kz];
+    const double az = std::fabs(z) + w.origin_err[kz] + vertexErr[kz];
     ex[i] = vx + dsx * az + round * (std::fabs(x) + std::fabs(sx) * std::fabs(z) + shiftX + vx);
     ey[i] = vy + dsy * az + round * (std::fabs(y) + std::fabs(sy) * std::fabs(z) + shiftY + vy);
   }
@@ -87,12 +113,12 @@ WatertightHit watertightIntersect(const DVec3& o, const DVec3& d, const DVec3& v
     r.b1 = e[1] / det;
     r.b2 = e[2] / det;
     if (std::isnan(r.t)) { r.valid = false; return r; }
-    const double dirErr = err.direction[kz] / std::fabs(d[kz]) + round;
+    const double dirErr = w.dirErr;
     double tErr = 0, depthErr = 0;
     for (int i = 0; i < 3; ++i) {
       const double az = std::fabs((*v[i])[kz] - o[kz]);
       tErr += bound[i] * std::fabs(pz[i] - r.t);
-      depthErr = std::max(depthErr, (err.origin[kz] + err.vertex[kz] + round * az) * std::fabs(sz) +
+      depthErr = std::max(depthErr, (w.origin_err[kz] + vertexErr[kz] + round * az) * std::fabs(sz) +
                                         dirErr * std::fabs(pz[i]));
     }
     r.t_err = tErr / std::fabs(det) + depthErr;

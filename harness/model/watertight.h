@@ -65,4 +65,24 @@ constexpr double kFrameRoundings = 4.0;
 WatertightHit watertightIntersect(const DVec3& o, const DVec3& d, const DVec3& v0, const DVec3& v1,
                                   const DVec3& v2, const FrameError& err = {});
 
+// The part of the test that depends only on the object-space ray and the
+// device's error of it (FrameError's origin and direction; the vertex part is
+// the geometry's, given per call): the dominant axis, the shear and its
+// error. The model computes it once per (ray, instance) (model_scene.cpp);
+// the split changes no value: watertightIntersect(o, d, ...) is
+// watertightIntersectPrepared(prepareWatertightRay(o, d, err), ..., err.vertex).
+struct WatertightRay {
+  DVec3 o{}, d{};
+  DVec3 origin_err{}, direction_err{};
+  bool valid = false;  // false: zero or NaN direction (never a hit)
+  int kx = 0, ky = 0, kz = 0;
+  double sx = 0, sy = 0, sz = 0;
+  double dsx = 0, dsy = 0;        // the shear a device derives from its own direction
+  double shiftX = 0, shiftY = 0;  // the device's origin error, sheared
+  double dirErr = 0;              // relative error of the depth scale
+};
+WatertightRay prepareWatertightRay(const DVec3& o, const DVec3& d, const FrameError& err);
+WatertightHit watertightIntersectPrepared(const WatertightRay& ray, const DVec3& v0, const DVec3& v1, const DVec3& v2,
+                                  const DVec3& vertexErr);
+
 }  // namespace rayspec

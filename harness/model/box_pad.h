@@ -1,0 +1,24 @@
+// How far the model's candidate boxes for its own triangle tests are padded
+// (exact tier, model_scene.cpp ownTriangleBounds), per BLAS: every triangle
+// whose exact test may answer a hit or an ambiguity for some ray of the case
+// must be enumerated by Embree, and no more (each extra candidate costs a
+// triangle test). The argument is in box_pad.cpp.
+#pragma once
+
+#include <vector>
+
+#include "case/case.h"
+
+namespace rayspec {
+
+// Float steps (2^-24) of the triangle's own coordinates' magnitude added to
+// every pad (ownTriangleBounds).
+constexpr double kBoxMagnitudeSteps = 4.0;
+
+// Per BLAS of the case: the object-space pad (absolute) for rays through any
+// of its instances: the ray's error (the device's and Embree's object-space
+// ray, Embree's float traversal) and the reach of the exact test's ambiguity
+// zone. Index = BLAS index; 0 for a BLAS no instance uses.
+std::vector<double> blasRayPads(const Case& c);
+
+}  // namespace rayspec
