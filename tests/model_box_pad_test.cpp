@@ -113,17 +113,19 @@ TEST(BoxPad, EveryKeptTriangleLiesInABoxTheRayCrosses) {
 // whole cell); through an instance translated by 1e6 it still covers a
 // device's origin error (2 float steps of the translation) and stays below
 // the former 1e-5 of the translation.
-TEST(BoxPad, TighterThanTheFormerPads) {
-  const Case far = model_test::parseInline(R"(
+// A 4x4 grid of unit cells centred at CENTER in its BLAS, placed by the
+// instance line INSTANCE, seen straight down from 3 units above ORIGIN.
+Case gridSeenFromAbove(const std::string& center, const std::string& instance, const std::string& origin) {
+  return model_test::parseInline(R"(
 rules: [R-PREC]
 scene:
   blas:
     mesh:
-      - triangles: {grid: {cells: [4, 4], size: [4, 4], center: [100002, 100002, 0]}}
+      - triangles: {grid: {cells: [4, 4], size: [4, 4], center: [)" + center + R"(]}}
   instances:
-    - {blas: mesh}
+    - )" + instance + R"(
 rays:
-  grid: {size: [17, 17], origin: [100000, 100000, 3], du: [0.25, 0, 0], dv: [0, 0.25, 0], direction: [0, 0, -1]}
+  grid: {size: [17, 17], origin: [)" + origin + R"(, 3], du: [0.25, 0, 0], dv: [0, 0.25, 0], direction: [0, 0, -1]}
 pipeline:
   miss:
     - [count: miss]
@@ -132,28 +134,16 @@ pipeline:
 outputs:
   counters: [miss, closesthit]
 )");
+}
+
+TEST(BoxPad, TighterThanTheFormerPads) {
+  const Case far = gridSeenFromAbove("100002, 100002, 0", "{blas: mesh}", "100000, 100000");
   const std::vector<double> pads = blasRayPads(far);
   ASSERT_EQ(pads.size(), 1u);
   EXPECT_GT(pads[0], 128 * kU * 3);  // the zone, at least 3 units away
   EXPECT_LT(pads[0], 1e-2);
-  const Case moved = model_test::parseInline(R"(
-rules: [R-PREC]
-scene:
-  blas:
-    mesh:
-      - triangles: {grid: {cells: [4, 4], size: [4, 4], center: [2, 2, 0]}}
-  instances:
-    - {blas: mesh, transform: {translate: [1000000, 1000000, 0]}}
-rays:
-  grid: {size: [17, 17], origin: [1000000, 1000000, 3], du: [0.25, 0, 0], dv: [0, 0.25, 0], direction: [0, 0, -1]}
-pipeline:
-  miss:
-    - [count: miss]
-  hit_groups:
-    - closest_hit: [count: closesthit]
-outputs:
-  counters: [miss, closesthit]
-)");
+  const Case moved = gridSeenFromAbove("2, 2, 0", "{blas: mesh, transform: {translate: [1000000, 1000000, 0]}}",
+                                       "1000000, 1000000");
   const double pad = blasRayPads(moved)[0];
   EXPECT_GT(pad, 2 * 2 * kU * 1e6);
   EXPECT_LT(pad, 1e-5 * 1e6 / 2);
