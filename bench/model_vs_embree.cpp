@@ -6,19 +6,25 @@
 // (counters only: no per-ray records). The bare loop counts them as well, and
 // both sides' counts are checked against one single-threaded bare run.
 // Counter "rays_per_second" for both; single thread (/1) and all cores (/0).
-// The machine is shared: run with --benchmark_repetitions=3
+// "setup_ms" is the serial part before any ray is traced (the bare loop: the
+// Embree device and scene; the model: its model_scene step, the programs and
+// the scene) and "trace_ms" the rest (threads, rays, results), both averages
+// per iteration: the setup does not shrink with more cores.
+// The machine is shared: run with --benchmark_repetitions=5
 // --benchmark_enable_random_interleaving=true and compare medians.
 #include <benchmark/benchmark.h>
 #include <embree3/rtcore.h>
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <thread>
 #include <vector>
 
 #include "model/model_backend.h"
 #include "plan/plan.h"
+#include "results/record_layout.h"
 
 namespace rayspec {
 namespace {
@@ -84,11 +90,17 @@ unsigned threadsOf(const benchmark::State& s) {
 
 struct Counts {
   uint64_t hits = 0, misses = 0;
+  double setup_s = 0, trace_s = 0;  // wall time: scene set-up, tracing
 };
+
+double secondsSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
 
 // The bare loop: build the same two-level scene, rtcIntersect1 every ray,
 // count hits and misses.
 Counts bareRun(const Case& c, unsigned threads) {
+  const auto start = std::chrono::steady_clock::now();
   const Geometry& g = c.scene.blases[0].geometries[0];
   RTCDevice dev = rtcNewDevice(nullptr);
   RTCScene blas = rtcNewScene(dev);
@@ -109,6 +121,8 @@ Counts bareRun(const Case& c, unsigned threads) {
   rtcAttachGeometry(top, ig);
   rtcReleaseGeometry(ig);
   rtcCommitScene(top);
+  const double setup = secondsSince(start);
+  const auto traceStart = std::chrono::steady_clock::now();
   std::atomic<size_t> next{0};
   std::atomic<uint64_t> hitSum{0}, missSum{0};
   const size_t n = c.rays.rays.size();
@@ -141,10 +155,11 @@ Counts bareRun(const Case& c, unsigned threads) {
     for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work);
     for (auto& t : pool) t.join();
   }
+  const double traced = secondsSince(traceStart);
   rtcReleaseScene(top);
   rtcReleaseScene(blas);
   rtcReleaseDevice(dev);
-  return {hitSum.load(), missSum.load()};
+  return {hitSum.load(), missSum.load(), setup, traced};
 }
 
 // The bare loop's answer, once (single thread), for both sides to check against.
@@ -157,16 +172,21 @@ void BM_BareEmbree(benchmark::State& state) {
   const Case& c = theCase();
   const unsigned threads = threadsOf(state);
   Counts k;
+  double setup = 0, trace = 0;
   reference();  // computed before timing starts
   for (auto _ : state) {
     k = bareRun(c, threads);
     benchmark::DoNotOptimize(k);
+    setup += k.setup_s;
+    trace += k.trace_s;
   }
   if (k.hits != reference().hits || k.misses != reference().misses)
     state.SkipWithError("the bare loop's hit/miss counts differ from the single-threaded reference");
   state.counters["rays_per_second"] =
       benchmark::Counter(double(c.rays.rays.size()) * state.iterations(), benchmark::Counter::kIsRate);
   state.counters["threads"] = threads;
+  state.counters["setup_ms"] = benchmark::Counter(1e3 * setup, benchmark::Counter::kAvgIterations);
+  state.counters["trace_ms"] = benchmark::Counter(1e3 * trace, benchmark::Counter::kAvgIterations);
   state.counters["hits"] = static_cast<double>(k.hits);
   state.counters["misses"] = static_cast<double>(k.misses);
 }
@@ -179,11 +199,14 @@ void BM_Model(benchmark::State& state, ModelTier tier) {
   o.threads = threadsOf(state);
   if (plan.records) state.SkipWithError("the benchmark case must be counters-only");
   Results r;
+  double setup = 0, trace = 0;
   reference();  // computed before timing starts
   for (auto _ : state) {
     r = runOnModel(c, plan, o);
     if (!r.ok()) state.SkipWithError(r.statusText().c_str());
     benchmark::DoNotOptimize(r.counters);
+    setup += r.cost[CostStep::ModelScene];
+    trace += r.cost[CostStep::ModelTrace];
   }
   // Same rays, same scene: the model must find exactly the bare loop's hits.
   if (r.counters["hit"] != reference().hits || r.counters["miss"] != reference().misses)
@@ -191,14 +214,54 @@ void BM_Model(benchmark::State& state, ModelTier tier) {
   state.counters["rays_per_second"] =
       benchmark::Counter(double(c.rays.rays.size()) * state.iterations(), benchmark::Counter::kIsRate);
   state.counters["threads"] = o.threads;
+  state.counters["setup_ms"] = benchmark::Counter(1e3 * setup, benchmark::Counter::kAvgIterations);
+  state.counters["trace_ms"] = benchmark::Counter(1e3 * trace, benchmark::Counter::kAvgIterations);
   state.counters["hits"] = static_cast<double>(r.counters["hit"]);
   state.counters["misses"] = static_cast<double>(r.counters["miss"]);
+}
+
+// The model's fast tier with one per-ray field (closest-hit records
+// primitive_id): every ray's record (recordWords() words, 176 MB for the 1M
+// rays) written and returned, as a case with per_ray outputs needs. No bare
+// counterpart; "setup_ms" / "trace_ms" show what stays serial.
+void BM_Records(benchmark::State& state) {
+  Case c = theCase();
+  Stmt rec;
+  rec.kind = Stmt::Kind::Record;
+  Expr prim;
+  prim.kind = Expr::Kind::Builtin;
+  prim.name = "primitive_id";
+  rec.assigns.push_back({"primitive_id", prim});
+  c.pipeline.hit_groups[0].closest_hit->push_back(rec);
+  c.outputs.per_ray = {"primitive_id"};
+  const Plan plan = derivePlan(c);
+  ModelOptions o;
+  o.tier = ModelTier::Fast;
+  o.threads = threadsOf(state);
+  if (!plan.records) state.SkipWithError("the records benchmark's plan keeps no records");
+  double setup = 0, trace = 0;
+  size_t records = 0;
+  for (auto _ : state) {
+    Results r = runOnModel(c, plan, o);
+    if (!r.ok()) state.SkipWithError(r.statusText().c_str());
+    records = r.records.size();
+    benchmark::DoNotOptimize(r.records.data());
+    setup += r.cost[CostStep::ModelScene];
+    trace += r.cost[CostStep::ModelTrace];
+  }
+  if (records != c.rays.rays.size() * recordWords()) state.SkipWithError("not one record per ray");
+  state.counters["rays_per_second"] =
+      benchmark::Counter(double(c.rays.rays.size()) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["threads"] = o.threads;
+  state.counters["setup_ms"] = benchmark::Counter(1e3 * setup, benchmark::Counter::kAvgIterations);
+  state.counters["trace_ms"] = benchmark::Counter(1e3 * trace, benchmark::Counter::kAvgIterations);
 }
 
 BENCHMARK(BM_BareEmbree)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Model, fast, ModelTier::Fast)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Model, robust, ModelTier::Robust)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Model, exact, ModelTier::Exact)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Records)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace rayspec

@@ -16,7 +16,7 @@ Image image(const std::string& name, std::vector<uint32_t> texels) {
   im.height = 1;
   im.channels = 4;
   im.is_float = true;
-  im.texels = std::move(texels);
+  im.texels.assign(texels.begin(), texels.end());
   return im;
 }
 

@@ -581,7 +581,7 @@ TEST(Model, EveryCaseFileRunsInEveryTier) {
     }
     const Case& c = *p.value;
     const Plan plan = derivePlan(c);
-    std::vector<uint32_t> fastRecords;
+    BulkWords fastRecords;
     for (ModelTier tier : kTiers) {
       Results r = runOnModel(c, plan, ModelOptions{tier, 2});
       EXPECT_EQ(r.statusText(), "ok") << c.name << " " << modelTierName(tier);

@@ -48,7 +48,7 @@ Results sampleResults() {
   r.records[recordWords() + kRecordWrittenMaskWord] = 1u << recordFieldIndex("hit_t");
   Image im{"primitive", "primitive_id", 3, 2, 1, false, {0, 1, 2, 3, 4, 5}};
   r.images.push_back(im);
-  Image color{"color", "color", 3, 2, 4, true, std::vector<uint32_t>(24, 0x3f800000u)};
+  Image color{"color", "color", 3, 2, 4, true, BulkWords(24, 0x3f800000u)};
   r.images.push_back(color);
   r.ambiguous.push_back({4, AmbiguityReason::Edge, {{true, 0, 0, 1}, {true, 0, 0, 2}}, {{true, 0, 0, 1}, {true, 0, 0, 2}}});
   r.t_bounds.push_back({5, 0.25f});
@@ -115,6 +115,29 @@ TEST(ResultsIo, PreviewGivesDistinctColoursToIdsAndBlackToZero) {
   ASSERT_EQ(px.size(), 12u);
   EXPECT_EQ(px[0] + px[1] + px[2], 0);
   EXPECT_NE(std::memcmp(&px[4], &px[8], 3), 0);
+}
+
+}  // namespace
+}  // namespace rayspec
+
+namespace rayspec {
+namespace {
+
+// BulkWords (DefaultInitAllocator): words given a value keep it through a
+// resize, grow and copy; assign(n, 0) zeroes; a copy compares equal.
+TEST(Results, BulkWordsKeepWhatWasWritten) {
+  BulkWords w;
+  w.assign(5, 0);
+  EXPECT_EQ(w, BulkWords(5, 0u));
+  for (uint32_t i = 0; i < 5; ++i) w[i] = 10 + i;
+  w.resize(1000);  // the new words are unwritten; the first five stay
+  w.resize(3);
+  EXPECT_EQ(w, (BulkWords{10, 11, 12}));
+  w.push_back(7);
+  BulkWords copy = w;
+  EXPECT_EQ(copy, (BulkWords{10, 11, 12, 7}));
+  copy.assign(4, 0);
+  EXPECT_EQ(copy, BulkWords(4, 0u));
 }
 
 }  // namespace

@@ -31,15 +31,6 @@ const CHitGroup* groupOf(const CPipeline& p, const SbtRecord* rec) {
   return &p.groups[*rec->group];
 }
 
-// The neighbouring floats (Embree's interval ends moved to the open interval).
-float nextUp(float x) {
-  if (std::isnan(x) || x == INFINITY) return x;
-  if (x == 0.0f) return std::numeric_limits<float>::denorm_min();
-  const uint32_t u = std::bit_cast<uint32_t>(x);
-  return std::bit_cast<float>(x > 0 ? u + 1 : u - 1);
-}
-float nextDown(float x) { return -nextUp(-x); }
-
 bool resolveOpaque(uint32_t geomFlags, uint32_t instFlags, uint32_t rayFlags) {
   if (rayFlags & kRayOpaque) return true;
   if (rayFlags & kRayNoOpaque) return false;

@@ -8,7 +8,10 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -72,8 +75,14 @@ bool keyLess(uint32_t i0, uint32_t g0, uint32_t p0, uint32_t i1, uint32_t g1, ui
 Vec3 xform(const std::array<float, 12>& m, const Vec3& v, float w);
 const CHitGroup* groupOf(const CPipeline& p, const SbtRecord* rec);
 // The neighbouring floats (Embree's interval ends moved to the open interval).
-float nextUp(float x);
-float nextDown(float x);
+// Inline: the fast path moves both ends of every launch ray.
+inline float nextUp(float x) {
+  if (std::isnan(x) || x == INFINITY) return x;
+  if (x == 0.0f) return std::numeric_limits<float>::denorm_min();
+  const uint32_t u = std::bit_cast<uint32_t>(x);
+  return std::bit_cast<float>(x > 0 ? u + 1 : u - 1);
+}
+inline float nextDown(float x) { return -nextUp(-x); }
 // R-OPACITY: ray flag, then instance flag, then the geometry's OPAQUE bit.
 bool resolveOpaque(uint32_t geomFlags, uint32_t instFlags, uint32_t rayFlags);
 

@@ -21,13 +21,15 @@ using nlohmann::json;
 
 namespace {
 
-bool writeWords(const fs::path& path, const std::vector<uint32_t>& words) {
+template <typename Words>  // std::vector<uint32_t> or BulkWords
+bool writeWords(const fs::path& path, const Words& words) {
   std::ofstream out(path, std::ios::binary);
   out.write(reinterpret_cast<const char*>(words.data()), static_cast<std::streamsize>(words.size() * 4));
   return static_cast<bool>(out);
 }
 
-bool readWords(const fs::path& path, std::vector<uint32_t>& words) {
+template <typename Words>
+bool readWords(const fs::path& path, Words& words) {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) return false;
   const auto size = static_cast<size_t>(in.tellg());
