@@ -113,6 +113,21 @@ TEST(RayDisagreements, LegalAnswersOfAmbiguousRaysAndUndefinedRaysAreNoDisagreem
   EXPECT_EQ(d.disagreeing, 2u);
 }
 
+// A hit within rounding of tmin (a ray that starts on a surface) has a t of
+// a few float steps of the coordinates near 0: millions of ULPs of t_exact
+// apart on two sides that both hit the same triangle. It is no t error; the
+// same pair on a clear ray, or on an edge, is one.
+TEST(RayDisagreements, AHitAtATminTieHasNoTError) {
+  Results exact = bundle({hitRay(3, 1e-13f), hitRay(3, 1e-13f), hitRay(3, 1e-13f)});
+  const Results other = bundle({hitRay(3, 2e-7f), hitRay(3, 2e-7f), hitRay(3, 2e-7f)});
+  exact.ambiguous.push_back({0, AmbiguityReason::TminTie, {{true, 0, 0, 3}, {false, 0, 0, 0}}, {}});
+  exact.ambiguous.push_back({1, AmbiguityReason::Edge, {{true, 0, 0, 3}, {true, 0, 0, 4}}, {}});
+  const Disagreements d = countDisagreements(exact, other, nullptr);
+  EXPECT_EQ(d.disagreeing, 0u);
+  ASSERT_EQ(d.t.count(), 2u);  // rays 1 and 2
+  EXPECT_GT(d.t.max(), 1e6);
+}
+
 // With the case at hand its triangles tell a closed crossing from the outer
 // border of the mesh: watertight/shared-edges is a 4x4 grid whose primitives
 // 0 and 1 split the corner cell along the diagonal from the grid's corner.
