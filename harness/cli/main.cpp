@@ -4,6 +4,7 @@
 
 #include "accuracy/run_accuracy.h"
 #include "cli/commands.h"
+#include "metamorphic/motion_spec.h"
 #include "run/run_loop.h"
 #include "stability/run_stability.h"
 #include "fault/planted_fault.h"
@@ -75,6 +76,17 @@ int main(int argc, char** argv) {
   run->add_option("--permute", run_opt.permute,
                   "Permute each case's primitives and instances from this seed (R-ORDER-UNSPEC: verdicts must not "
                   "move; the same seed gives the same permutation)");
+  std::string move_spec;
+  run->add_option("--move", move_spec,
+                  "Move each case by an exact rigid motion: three signed axes and an optional translation, e.g. "
+                  "-y,x,z or z,x,y,1024,-2048,0 (verdicts must not move; a case it cannot move exactly is "
+                  "NotSupported)")
+      ->check(
+          [](const std::string& spec) {
+            std::string why;
+            return rayspec::parseMotionSpec(spec, &why) ? std::string() : why;
+          },
+          "MOTION");
   run->add_option("--plant-fault", run_opt.plant_fault,
                   "Test only: corrupt the device's results in a known way (" + fault_list + ")");
   run->add_option("--plant-fault-in", run_opt.plant_fault_in, "Test only: plant the fault only in cases matching this glob")
@@ -152,11 +164,22 @@ int main(int argc, char** argv) {
   accuracy->add_flag("--strict-validation", accuracy_opt.run.strict_validation,
                      "Fail when the validation layer is not installed");
 
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help and --version exit 0; a bad option or value is exit 2, as
+    // every "nothing ran" of `rayspec run` (README, exit status).
+    const int rc = app.exit(e);
+    return rc == 0 ? 0 : 2;
+  }
   if (*accuracy) return rayspec::runAccuracy(accuracy_opt);
   if (*stability) return rayspec::runStability(stability_opt);
   if (*list) return rayspec::runList(list_opt);
   if (*devices) return rayspec::runDevices(devices_opt);
+  if (*run && !move_spec.empty()) {
+    std::string why;
+    run_opt.move = rayspec::parseMotionSpec(move_spec, &why);
+  }
   if (*run) return rayspec::runCases(run_opt);
   if (*show) return rayspec::runShow(show_opt);
   if (*compare) return rayspec::runCompare(compare_opt);

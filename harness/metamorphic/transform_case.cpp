@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "metamorphic/motion_spec.h"
+#include "results/content_hash.h"
+
 namespace rayspec {
 namespace {
 
@@ -23,8 +26,32 @@ bool tracesOnlyTheLaunchRay(const Case& c) {
   return true;
 }
 
-// a + b in double, false when the float sum would round.
+// A trace anywhere that gives its own origin or direction: constants in them
+// would not move with the case.
+bool setsOwnRay(const Program& p) {
+  return std::any_of(p.begin(), p.end(), [](const Stmt& s) {
+    if (s.kind == Stmt::Kind::Trace && (!s.trace.origin.empty() || !s.trace.direction.empty())) return true;
+    return setsOwnRay(s.then_) || setsOwnRay(s.else_);
+  });
+}
+
+bool anyTraceSetsItsOwnRay(const Case& c) {
+  std::vector<const Program*> programs{&c.pipeline.raygen};
+  for (const Program& p : c.pipeline.miss) programs.push_back(&p);
+  for (const Program& p : c.pipeline.callables) programs.push_back(&p);
+  for (const HitGroup& g : c.pipeline.hit_groups)
+    for (const auto* p : {&g.closest_hit, &g.any_hit, &g.intersection})
+      if (*p) programs.push_back(&**p);
+  return std::any_of(programs.begin(), programs.end(), [](const Program* p) { return setsOwnRay(*p); });
+}
+
+// a + b in double, false when the float sum would round. A NaN or an
+// infinity stays what it is (an undefined ray stays undefined).
 bool exactSum(float a, double b, float* out) {
+  if (!std::isfinite(a)) {
+    *out = a;
+    return true;
+  }
   const double s = double(a) + b;
   *out = static_cast<float>(s);
   return double(*out) == s;
@@ -32,7 +59,7 @@ bool exactSum(float a, double b, float* out) {
 
 }  // namespace
 
-std::optional<Case> moveCase(const Case& c, const RigidMotion& m, std::string* why_not) {
+std::optional<Case> moveCase(const Case& c, const RigidMotion& m, std::string* why_not, MoveScope scope) {
   std::array<int, 3> seen{0, 0, 0};
   for (int k = 0; k < 3; ++k) {
     if (m.axis[k] < 0 || m.axis[k] > 2 || (m.sign[k] != 1 && m.sign[k] != -1)) {
@@ -45,8 +72,12 @@ std::optional<Case> moveCase(const Case& c, const RigidMotion& m, std::string* w
     *why_not = "the motion is not a signed permutation of the axes";
     return std::nullopt;
   }
-  if (!tracesOnlyTheLaunchRay(c)) {
+  if (scope == MoveScope::SameGeometry && !tracesOnlyTheLaunchRay(c)) {
     *why_not = "a stage traces rays of its own (or branches): only the launch rays would move";
+    return std::nullopt;
+  }
+  if (anyTraceSetsItsOwnRay(c)) {
+    *why_not = "a trace gives its own origin or direction: only the launch rays would move";
     return std::nullopt;
   }
   Case out = c;
@@ -74,6 +105,9 @@ std::optional<Case> moveCase(const Case& c, const RigidMotion& m, std::string* w
     }
     r = n;
   }
+  // A saved device bundle of the moved case is told from the unmoved one's.
+  const std::string motion = "move " + motionSpecText(m);
+  out.source_hash = contentHash(c.source_hash, motion.data(), motion.size());
   return out;
 }
 

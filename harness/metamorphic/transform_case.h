@@ -6,10 +6,17 @@
 // exact image of the original's: the geometry a device sees is the same, so
 // verdicts and the leak and double-hit counts must not move.
 //
-// Only cases whose stages trace nothing but the raygen's one launch ray
-// (`raygen: [trace: {}]`) are moved: a nested trace's own origin would not
-// move. World-space built-ins a stage records (world ray origin, hit
-// position) move with the case; compare counts, ids and hits, not those.
+// Two scopes. SameGeometry (the stability families' count checks) moves only
+// cases whose stages trace nothing but the raygen's one launch ray
+// (`raygen: [trace: {}]`) and never branch: a nested trace's own origin would
+// not move, and a condition on a world-space built-in could change its mind.
+// Verdict (`rayspec run --move`) moves every instance and launch ray of a
+// case whose traces give no origin or direction of their own (a constant
+// there would not move): nested traces of the incoming ray and conditions on
+// world-space built-ins are evaluated on the moved case by the device and
+// the model alike, so a correct device's verdict does not change.
+// World-space built-ins a stage records (world ray origin, hit position)
+// move with the case; compare counts, ids and hits, not those.
 #pragma once
 
 #include <array>
@@ -28,6 +35,9 @@ struct RigidMotion {
 
 // The moved case, or nullopt with *why_not set: the motion is not a signed
 // permutation, a sum is not exact in float, or the case traces other rays.
-std::optional<Case> moveCase(const Case& c, const RigidMotion& m, std::string* why_not);
+// Its source_hash mixes in the motion (motion_spec.h's text).
+enum class MoveScope { SameGeometry, Verdict };
+std::optional<Case> moveCase(const Case& c, const RigidMotion& m, std::string* why_not,
+                             MoveScope scope = MoveScope::SameGeometry);
 
 }  // namespace rayspec

@@ -40,7 +40,7 @@ Results SavedDevice::run(const Case& c, const Plan&) {
   if (r.case_hash != c.source_hash)
     throw HarnessError(json + ": case_hash " + contentHashText(r.case_hash) + ", but the case here (" + c.file +
                        ") hashes to " + contentHashText(c.source_hash) +
-                       ": the case changed since it ran there (or --permute differs); run it there again");
+                       ": the case changed since it ran there (or --permute or --move differs); run it there again");
   return r;
 }
 

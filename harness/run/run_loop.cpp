@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "fault/planted_fault.h"
+#include "metamorphic/motion_spec.h"
 #include "metamorphic/permute_case.h"
 #include "report/baseline_gate.h"
 #include "report/outcome_json.h"
@@ -52,6 +53,19 @@ std::vector<CaseFile> caseFiles(const RunOptions& opt) {
   for (const std::string& f : opt.case_files)
     for (CaseFile& c : caseFilesFor(f, opt.cases_dir)) files.push_back(std::move(c));
   return files;
+}
+
+// --move and a case it cannot move exactly: NotSupported, saying why (the
+// case's verdict under the motion is unknown, never a pass).
+CaseOutcome notMovedOutcome(const std::string& name, const std::string& why) {
+  CaseOutcome o;
+  o.name = name;
+  o.verdict.add({Status::NotSupported, "move", "not run: --move cannot move this case exactly: " + why, {}, 0});
+  o.status = o.verdict.status;
+  o.headline = o.verdict.headline();
+  o.baseline = BaselineMatch::Skipped;  // not run: the baseline's expectation is neither met nor broken
+  o.baseline_note = "not run under --move";
+  return o;
 }
 
 // The shard asked for (--shard, else GoogleTest's variables), if any.
@@ -180,6 +194,9 @@ int runCases(const RunOptions& requested) {
     std::printf("Model: embree, %s tier\n", opt.model_tier.c_str());
   }
   if (opt.permute) std::printf("Permuted: primitives and instances, seed %llu\n", (unsigned long long)*opt.permute);
+  if (opt.move)
+    std::printf("Moved: every case by the rigid motion %s (a case it cannot move exactly is NotSupported)\n",
+                motionSpecText(*opt.move).c_str());
   if (!opt.no_isolation)
     std::printf("Each case side in its own process: timeout %g s, memory limit %s\n", opt.timeout,
                 opt.memory_limit ? formatBytes(opt.memory_limit).c_str() : "none");
@@ -232,19 +249,26 @@ int runCases(const RunOptions& requested) {
         outcome = *error;
         applyBaseline(baseline, outcome);
       } else {
-        std::optional<Case> permuted;  // --permute: the case with its primitives and instances permuted
-        if (opt.permute) permuted = permuteCase(*parsed.value, *opt.permute).permuted;
-        const Case& c = permuted ? *permuted : *parsed.value;
-        outcome = guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted); });
-        if (interrupted) break;
-        outcome.cost[CostSide::Parent] += parse_cost;
-        case_rules.push_back({c.name, c.rules});
-        if (applyBaseline(baseline, outcome)) {
-          // An unexpected failure: once more, into <case>/rerun, to tell a flake.
-          std::printf("        unexpected %s: running it again\n", statusName(outcome.status));
-          const CaseOutcome again = guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted, "/rerun"); });
+        std::optional<Case> changed;  // --permute, --move: the case as it runs
+        if (opt.permute) changed = permuteCase(*parsed.value, *opt.permute).permuted;
+        std::string not_moved;
+        if (opt.move) changed = moveCase(changed ? *changed : *parsed.value, *opt.move, &not_moved, MoveScope::Verdict);
+        const Case& c = changed ? *changed : *parsed.value;
+        if (opt.move && !changed) {
+          outcome = notMovedOutcome(f.name, not_moved);
+        } else {
+          outcome = guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted); });
           if (interrupted) break;
-          applyRerun(outcome, again);
+          outcome.cost[CostSide::Parent] += parse_cost;
+          case_rules.push_back({c.name, c.rules});
+          if (applyBaseline(baseline, outcome)) {
+            // An unexpected failure: once more, into <case>/rerun, to tell a flake.
+            std::printf("        unexpected %s: running it again\n", statusName(outcome.status));
+            const CaseOutcome again =
+                guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted, "/rerun"); });
+            if (interrupted) break;
+            applyRerun(outcome, again);
+          }
         }
       }
     }

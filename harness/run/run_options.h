@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "metamorphic/transform_case.h"
 #include "run/cache_dir.h"
 
 namespace rayspec {
@@ -51,6 +52,7 @@ struct RunOptions {
   std::string shard;             // "I/N": every N-th case from the I-th (run/shard.h)
   bool resume = false;           // keep the cases `out` already has, run the rest
   std::optional<uint64_t> permute;  // run each case with primitives and instances permuted (metamorphic/)
+  std::optional<RigidMotion> move;  // run each case moved by this exact rigid motion (metamorphic/transform_case.h)
   std::string device_results;    // judge device bundles saved in this run folder instead of running a device (run/device_results.h)
 };
 

@@ -1,0 +1,124 @@
+// `rayspec run --move MOTION` (tests/CMakeLists.txt: cli/move): each case
+// moved by an exact rigid motion runs on the device and the model alike and
+// is judged as usual, so a broken device still fails; a case the motion
+// cannot move exactly is NotSupported (never a pass, and not held against a
+// baseline); a saved unmoved device run is not judged as the moved case.
+#include <filesystem>
+#include <fstream>
+
+#include "cli_helpers.h"
+
+namespace {
+namespace fs = std::filesystem;
+using cli::fresh;
+using cli::kBin;
+using cli::readDeqpCsv;
+using cli::sh;
+using cli::slurp;
+
+// One triangle, rays with dyadic origins (any dyadic translation is exact),
+// the world-space origin and hit position recorded.
+const char* kCase = R"(rules: [R-BUILTIN]
+scene:
+  blas:
+    tri: [{triangles: {vertices: [[-1, -1, 0], [2, -1, 0], [-1, 2, 0]]}, flags: [opaque]}]
+  instances: [{blas: tri}]
+rays:
+  list:
+    - {origin: [0.25, 0.25, 1], direction: [0, 0, -1]}
+    - {origin: [4, 4, 1], direction: [0, 0, -1]}
+pipeline:
+  miss: [[count: miss, record: [world_ray_origin]]]
+  hit_groups:
+    - closest_hit: [count: closesthit, record: [hit, hit_t, world_ray_origin, hit_position]]
+outputs:
+  counters: [miss, closesthit]
+  per_ray: [hit, hit_t, world_ray_origin, hit_position]
+)";
+
+// A case whose miss traces its own direction: not movable.
+const char* kOwnRay = R"(rules: [R-RECURSION]
+scene:
+  blas:
+    tri: [{triangles: {vertices: [[-1, -1, 0], [2, -1, 0], [-1, 2, 0]]}}]
+  instances: [{blas: tri}]
+rays:
+  list: [{origin: [0.25, 0.25, 1], direction: [0, 0, 1]}]
+pipeline:
+  max_recursion: 2
+  miss: [[count: miss], [count: miss2]]
+  hit_groups: [{closest_hit: [count: closesthit, trace: {origin: hit_position, direction: [0.0, 0.0, -1.0], miss: 1}]}]
+outputs: {counters: [miss, miss2, closesthit]}
+)";
+
+std::string write(const std::string& path, const std::string& text) {
+  fs::create_directories(fs::path(path).parent_path());
+  std::ofstream(path) << text;
+  return path;
+}
+
+struct Folder {
+  std::string dir, cases;
+};
+Folder setUp(const std::string& name) {
+  Folder f{fresh(name), ""};
+  f.cases = f.dir + "/cases";
+  write(f.cases + "/move/world-origin.yaml", kCase);
+  write(f.cases + "/move/own-ray.yaml", kOwnRay);
+  return f;
+}
+
+TEST(Move, BothSidesRunTheMovedCaseAndAFaultStillFails) {
+  const Folder f = setUp("move");
+  const std::string run = kBin + " run --no-validation --cases " + f.cases + " --records-csv --move=-y,x,z,2,-4,8";
+  ASSERT_EQ(sh(run + " --out " + f.dir + "/moved", f.dir + "/moved.txt"), 0) << slurp(f.dir + "/moved.txt");
+  EXPECT_NE(slurp(f.dir + "/moved.txt").find("Moved: every case by the rigid motion -y,x,z,2,-4,8"), std::string::npos);
+  auto status = readDeqpCsv(f.dir + "/moved/results.csv");
+  EXPECT_EQ(status["move/world-origin"], "Pass");
+  EXPECT_EQ(status["move/own-ray"], "Skip");  // NotSupported
+  EXPECT_NE(slurp(f.dir + "/moved.txt").find("a trace gives its own origin or direction"), std::string::npos);
+  // (0.25, 0.25, 1) moved: (-0.25 + 2, 0.25 - 4, 1 + 8); the hit point on z = 0 goes to z = 8.
+  for (const char* side : {"device", "model"}) {
+    const std::string csv = slurp(f.dir + "/moved/move/world-origin/" + side + "/records.csv");
+    EXPECT_NE(csv.find("1.75 -3.75 9"), std::string::npos) << side << "\n" << csv;
+    EXPECT_NE(csv.find("1.75 -3.75 8"), std::string::npos) << side << "\n" << csv;
+  }
+  // A device whose t is off fails the moved case as it fails the unmoved one.
+  ASSERT_EQ(sh(run + " --plant-fault shift-t --out " + f.dir + "/fault", f.dir + "/fault.txt"), 1)
+      << slurp(f.dir + "/fault.txt");
+  EXPECT_EQ(readDeqpCsv(f.dir + "/fault/results.csv")["move/world-origin"], "Fail");
+}
+
+// A baseline's known failure of a case the motion cannot move is not an
+// unexpected pass (the case did not run); a bad motion is exit 2.
+TEST(Move, ANotMovedCaseIsNeitherAPassNorAnUnexpectedPass) {
+  const Folder f = setUp("move-baseline");
+  const std::string baseline = write(f.dir + "/driver.csv", "move/own-ray,Fail\n");
+  ASSERT_EQ(sh(kBin + " run --no-validation --cases " + f.cases + " --move=x,-y,-z --baseline " + baseline + " --out " +
+                   f.dir + "/run",
+               f.dir + "/run.txt"),
+            0)
+      << slurp(f.dir + "/run.txt");
+  EXPECT_EQ(readDeqpCsv(f.dir + "/run/results.csv")["move/own-ray"], "Skip");
+  EXPECT_EQ(sh(kBin + " run --no-validation --cases " + f.cases + " --move=x,y --out " + f.dir + "/bad",
+               f.dir + "/bad.txt"),
+            2);
+  EXPECT_NE(slurp(f.dir + "/bad.txt").find("--move"), std::string::npos) << slurp(f.dir + "/bad.txt");
+}
+
+// Device bundles saved by an unmoved run are another case's: CaseError.
+TEST(Move, SavedBundlesOfTheUnmovedCaseAreNotJudgedAsTheMovedOne) {
+  const Folder f = setUp("move-saved");
+  ASSERT_EQ(sh(kBin + " run --no-validation --no-model --cases " + f.cases + " --filter 'move/world*' --out " + f.dir +
+                   "/saved",
+               f.dir + "/saved.txt"),
+            77)  // one case, NotSupported: nothing compared
+      << slurp(f.dir + "/saved.txt");
+  EXPECT_EQ(sh(kBin + " run --no-validation --cases " + f.cases + " --filter 'move/world*' --device-results " + f.dir +
+                   "/saved --move=-y,x,z --out " + f.dir + "/judged",
+               f.dir + "/judged.txt"),
+            1);
+  EXPECT_NE(slurp(f.dir + "/judged.txt").find("CaseError"), std::string::npos) << slurp(f.dir + "/judged.txt");
+}
+
+}  // namespace
