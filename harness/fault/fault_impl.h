@@ -63,6 +63,7 @@ std::string instanceOpacityIgnored(Case& c, ModelOptions& o);
 std::string anyHitOnOpaque(Case& c, ModelOptions& o);
 std::string instanceTransformInverted(Case& c, ModelOptions& o);
 std::string inactiveRevived(Case& c, ModelOptions& o);
+std::string inactiveHidesLastActive(Case& c, ModelOptions& o);
 std::string degenerateHit(Case& c, ModelOptions& o);
 std::string boxEnteredFromInsideMissed(Case& c, ModelOptions& o);
 std::string closestBoxSkipped(Case& c, ModelOptions& o);

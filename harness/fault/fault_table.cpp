@@ -48,6 +48,10 @@ const std::vector<FaultImpl>& faultImpls() {
        instanceTransformInverted},
       {"inactive-revived", K::CaseMutation, "inactive primitives and null instances are hit (NaN X read as 0)",
        nullptr, inactiveRevived},
+      {"inactive-hides-last-active", K::CaseMutation,
+       "with k of n instances (null or mask 0x00) or primitives inactive, active ones at index n - k or later "
+       "are lost (Mesa 26.2.6 lavapipe)",
+       nullptr, inactiveHidesLastActive},
       {"degenerate-hit", K::CaseMutation, "degenerate triangles (lines, points) are hit", nullptr, degenerateHit},
       {"box-entered-from-inside-missed", K::CaseMutation,
        "a box the ray starts inside never runs its intersection shader", nullptr, boxEnteredFromInsideMissed},

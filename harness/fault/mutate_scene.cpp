@@ -2,6 +2,7 @@
 // degenerate primitives as a device breaking the rule sees them.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "case/transform.h"
 #include "fault/fault_impl.h"
@@ -153,6 +154,53 @@ std::string inactiveRevived(Case& c, ModelOptions&) {
       ++n;
     }
   return count(n, "inactive vertices, boxes or instances made active");
+}
+
+// Mesa 26.2.6's lavapipe: the BVH builder leaves each leaf in the slot of its
+// index and counts the active ones, and the encoder converts only the first
+// active-count slots: with k inactive objects of n, an active one at index
+// n - k or later is lost. Instances with mask 0x00 count as inactive there.
+namespace {
+
+// Makes inactive the active items at index n - k or later (k = the inactive
+// ones); returns how many.
+size_t hideLastActive(size_t items, const std::function<bool(size_t)>& inactive,
+                      const std::function<void(size_t)>& deactivate) {
+  size_t k = 0;
+  for (size_t i = 0; i < items; ++i) k += inactive(i);
+  size_t n = 0;
+  for (size_t i = items - k; i < items; ++i)
+    if (!inactive(i)) {
+      deactivate(i);
+      ++n;
+    }
+  return n;
+}
+
+size_t hideLastActivePrimitives(Geometry& g) {
+  if (g.kind == Geometry::Kind::Aabbs)
+    return hideLastActive(
+        g.aabbs.size(), [&](size_t i) { return std::isnan(g.aabbs[i][0]); },
+        [&](size_t i) { g.aabbs[i][0] = std::nanf(""); });
+  if (!g.indices.empty()) return 0;  // a vertex may be shared: left alone
+  auto nanX = [&](size_t p) {
+    for (size_t k = 0; k < 3; ++k)
+      if (std::isnan(g.vertices[p * 3 + k][0])) return true;
+    return false;
+  };
+  return hideLastActive(g.vertices.size() / 3, nanX, [&](size_t p) { g.vertices[p * 3][0] = std::nanf(""); });
+}
+
+}  // namespace
+
+std::string inactiveHidesLastActive(Case& c, ModelOptions&) {
+  std::vector<Instance>& inst = c.scene.instances;
+  size_t n = hideLastActive(
+      inst.size(), [&](size_t i) { return !inst[i].blas || (inst[i].mask & 0xFFu) == 0; },
+      [&](size_t i) { inst[i].blas.reset(); });
+  for (Blas& b : c.scene.blases)
+    for (Geometry& g : b.geometries) n += hideLastActivePrimitives(g);
+  return count(n, "active instances or primitives after inactive ones made inactive");
 }
 
 std::string degenerateHit(Case& c, ModelOptions&) {

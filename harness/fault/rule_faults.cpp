@@ -18,7 +18,7 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-ISECT-CLOSEST", {"closest-box-skipped"}, {}},
       {"R-SKIP-TRI", {"skip-triangles-ignored"}, {}},
       {"R-SKIP-AABB", {"skip-aabbs-ignored"}, {}},
-      {"R-MASK", {"instance-mask-ignored"}, {}},
+      {"R-MASK", {"instance-mask-ignored", "inactive-hides-last-active"}, {}},
       {"R-FACE-DET", {"facing-inverted", "world-space-facing"}, {}},
       {"R-FACE-CULL", {"facing-cull-ignored", "cull-disable-ignored"}, {}},
       {"R-HITKIND-TRI", {"hit-kind-flipped"}, {}},
@@ -43,7 +43,7 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-CALLABLE", {"callable-data-not-returned"}, {}},
       {"R-PAYLOAD", {"payload-writes-lost", "hit-attributes-lost"}, {}},
       {"R-BUILTIN", {"builtin-wrong", "swap-primitive-id", "shift-t"}, {}},
-      {"R-INACTIVE", {"inactive-renumbered", "inactive-revived"}, {}},
+      {"R-INACTIVE", {"inactive-renumbered", "inactive-revived", "inactive-hides-last-active"}, {}},
       {"R-DEGEN", {"degenerate-hit"}, {}},
       {"R-UB", {}, {}, fail, "never checked for a result (robustness probe only)"},
   };

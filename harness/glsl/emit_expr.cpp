@@ -28,6 +28,10 @@ std::string literal(const Expr& e) {
   return problem("literal type");
 }
 
+// hit_t reads gl_RayTmaxEXT, not gl_HitTEXT: GLSL_EXT_ray_tracing makes
+// gl_HitTEXT an alias of gl_RayTmaxEXT in any-hit and closest-hit, but glslang
+// 12 gives each name its own input variable, and a stage that reads both then
+// declares two RayTmaxKHR inputs (VUID-StandaloneSpirv-OpEntryPoint-09658).
 std::string builtin(const std::string& name, Stage stage) {
   static const std::map<std::string, std::string> table = {
       {"launch_id_x", "gl_LaunchIDEXT.x"},
@@ -39,7 +43,7 @@ std::string builtin(const std::string& name, Stage stage) {
       {"instance_custom_index", "uint(gl_InstanceCustomIndexEXT)"},
       {"geometry_index", "uint(gl_GeometryIndexEXT)"},
       {"hit_kind", "gl_HitKindEXT"},
-      {"hit_t", "gl_HitTEXT"},
+      {"hit_t", "gl_RayTmaxEXT"},
       {"ray_tmin", "gl_RayTminEXT"},
       {"ray_tmax", "gl_RayTmaxEXT"},
       {"incoming_ray_flags", "gl_IncomingRayFlagsEXT"},
@@ -48,7 +52,7 @@ std::string builtin(const std::string& name, Stage stage) {
       {"object_ray_origin", "gl_ObjectRayOriginEXT"},
       {"object_ray_direction", "gl_ObjectRayDirectionEXT"},
       {"barycentrics", "rs_attr"},
-      {"hit_position", "(gl_WorldRayOriginEXT + gl_HitTEXT * gl_WorldRayDirectionEXT)"},
+      {"hit_position", "(gl_WorldRayOriginEXT + gl_RayTmaxEXT * gl_WorldRayDirectionEXT)"},
       {"aabb_min", "rs_aabb_min()"},
       {"aabb_max", "rs_aabb_max()"},
       {"payload.color", "payload.color"},

@@ -16,7 +16,7 @@ namespace rayspec {
 namespace {
 
 // Bump when the compile options change, so old cache files are not reused.
-constexpr char kCacheVersion[] = "rayspec-spirv-1:vk1.2:spv1.4";
+constexpr char kCacheVersion[] = "rayspec-spirv-2:vk1.2:spv1.4:builtin-inputs";
 constexpr uint32_t kSpirvMagic = 0x07230203;
 
 struct Cache {

@@ -1,0 +1,137 @@
+#!/usr/bin/env bash
+# A second, newer driver beside the one tools/setup.sh installs: Debian sid in
+# a chroot (current Mesa lavapipe, Vulkan loader, validation layers and
+# SPIRV-Tools), the run-only build run inside it, the saved run judged here
+# with the model against that driver's baseline.
+#
+#   tools/second-driver.sh prepare          # make or refresh the environment (root; about a minute)
+#   tools/second-driver.sh versions         # what it holds: Mesa, loader, layers, spirv-val, device
+#   tools/second-driver.sh run OUT [--baseline FILE] [rayspec run options...]
+#       OUT/device   the run inside (lavapipe of the environment, --strict-validation: its layers)
+#       OUT/spirv-val.txt  every SPIR-V module that run compiled, checked by the environment's spirv-val
+#       OUT/judged   that run judged here against FILE (default references/baselines/lavapipe-26.csv)
+#   tools/second-driver.sh compare RUN_A RUN_B    # rayspec compare of two judged or saved runs
+#
+# The environment lives in $RAYSPEC_SECOND_DRIVER (default /var/cache/rayspec/sid).
+# `run` exits 77 when it does not exist (ctest counts that as skipped), 1 when
+# spirv-val rejects a module or the judged run has an unexpected result, else 0.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+ENV_DIR=${RAYSPEC_SECOND_DRIVER:-/var/cache/rayspec/sid}
+MIRROR=${RAYSPEC_SECOND_MIRROR:-http://deb.debian.org/debian}
+SUITE=${RAYSPEC_SECOND_SUITE:-sid}
+PACKAGES=(mesa-vulkan-drivers libvulkan1 vulkan-validationlayers spirv-tools vulkan-tools)
+APT=(apt-get -o Acquire::Check-Valid-Until=false)  # sid's Release file may be past Valid-Until
+ICD=/usr/share/vulkan/icd.d/lvp_icd.json
+WORK=/opt/rayspec-second-driver  # inside the environment
+
+die() { echo "second-driver: $*" >&2; exit "${2:-2}"; }
+ready() { [[ -x "$ENV_DIR/usr/bin/spirv-val" && -f "$ENV_DIR$ICD" ]]; }
+
+# /proc and /dev inside the environment while a command runs there.
+mounted=()
+mount_inside() {
+  for m in proc dev; do
+    mountpoint -q "$ENV_DIR/$m" && continue
+    mount --bind "/$m" "$ENV_DIR/$m" && mounted+=("$ENV_DIR/$m")
+  done
+}
+unmount_inside() { for m in "${mounted[@]}"; do umount "$m" || true; done; mounted=(); }
+inside() { chroot "$ENV_DIR" env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root "$@"; }
+
+prepare() {
+  [[ $(id -u) -eq 0 ]] || die "prepare needs root (debootstrap, chroot)"
+  command -v debootstrap >/dev/null ||
+    DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends debootstrap
+  if [[ ! -x "$ENV_DIR/usr/bin/apt-get" ]]; then
+    mkdir -p "$ENV_DIR"
+    debootstrap --variant=minbase "$SUITE" "$ENV_DIR" "$MIRROR"
+  fi
+  trap unmount_inside EXIT
+  mount_inside
+  inside "${APT[@]}" update
+  inside env DEBIAN_FRONTEND=noninteractive "${APT[@]}" install -y --no-install-recommends "${PACKAGES[@]}"
+  unmount_inside
+  versions
+}
+
+versions() {
+  ready || die "no environment in $ENV_DIR: run tools/second-driver.sh prepare" 77
+  inside dpkg-query -W -f='${Package} ${Version}\n' "${PACKAGES[@]}"
+  inside spirv-val --version | head -n 1
+}
+
+# Packs the run-only build and unpacks it inside the environment.
+install_pack() {
+  bash tools/pack-device.sh >/dev/null
+  rm -rf "$ENV_DIR$WORK"
+  mkdir -p "$ENV_DIR$WORK/pack"
+  tar -C "$ENV_DIR$WORK/pack" -xJf .device/pack.tar.xz
+}
+
+# Every module the inside run compiled (its fresh SPIR-V cache), through the
+# environment's spirv-val; the verdict of each in OUT/spirv-val.txt.
+check_spirv() {
+  local out=$1 bad=0 n=0
+  : >"$out/spirv-val.txt"
+  for f in "$ENV_DIR$WORK/cache/spirv/"*.spv; do
+    [[ -e "$f" ]] || continue
+    n=$((n + 1))
+    if ! msg=$(inside spirv-val --target-env vulkan1.2 "$WORK/cache/spirv/$(basename "$f")" 2>&1); then
+      bad=$((bad + 1))
+      printf '%s: INVALID\n%s\n' "$(basename "$f")" "$msg" >>"$out/spirv-val.txt"
+    fi
+  done
+  echo "spirv-val $(inside spirv-val --version | head -n 1 | awk '{print $2}'): $((n - bad)) of $n modules valid" |
+    tee -a "$out/spirv-val.txt"
+  [[ $n -gt 0 && $bad -eq 0 ]]
+}
+
+run() {
+  [[ $# -ge 1 ]] || die "usage: tools/second-driver.sh run OUT [--baseline FILE] [rayspec run options...]"
+  local out baseline=references/baselines/lavapipe-26.csv args=()
+  out=$(realpath -m "$1")
+  shift
+  while [[ $# -gt 0 ]]; do
+    case $1 in
+      --baseline) baseline=$2; shift 2 ;;
+      --baseline=*) baseline=${1#*=}; shift ;;
+      *) args+=("$1"); shift ;;
+    esac
+  done
+  ready || { echo "second-driver: SKIPPED: no environment in $ENV_DIR (tools/second-driver.sh prepare makes it)"; exit 77; }
+  [[ -x build/rayspec ]] || die "build/rayspec is missing: build the default preset first"
+  [[ -f "$baseline" ]] || die "baseline $baseline is missing"
+  [[ $(id -u) -eq 0 ]] || die "run needs root (chroot)"
+  rm -rf "$out" && mkdir -p "$out"
+  install_pack
+  trap unmount_inside EXIT
+  mount_inside
+  echo "== drivers: here, then inside $ENV_DIR"
+  ./build/rayspec devices | grep -E 'USABLE|driver' | head -n 4 || true
+  inside sh -c "cd $WORK/pack && LD_LIBRARY_PATH=lib ./rayspec devices --icd $ICD" | grep -E 'USABLE|driver' | head -n 4 || true
+  echo "== the run inside (device side only; exit 3 is the run-only build's)"
+  local rc=0
+  inside sh -c 'cd "$0/pack" && RAYSPEC_CACHE_DIR="$0/cache" MESA_SHADER_CACHE_DIR="$0/mesa-cache" LD_LIBRARY_PATH=lib \
+    ./rayspec run --cases cases --rules spec-rules.yaml --icd "$1" --strict-validation --out "$0/out" "$@" >"$0/run.log" 2>&1' \
+    "$WORK" "$ICD" "${args[@]}" || rc=$?
+  tail -n 5 "$ENV_DIR$WORK/run.log"
+  [[ $rc -eq 0 || $rc -eq 3 ]] || die "the run inside exited $rc ($ENV_DIR$WORK/run.log)" 1
+  mv "$ENV_DIR$WORK/out" "$out/device"
+  local spirv_ok=0
+  check_spirv "$out" || spirv_ok=1
+  unmount_inside
+  echo "== judged here against $baseline"
+  local judged=0
+  ./build/rayspec run --device-results "$out/device" --out "$out/judged" --baseline "$baseline" "${args[@]}" || judged=$?
+  [[ $spirv_ok -eq 0 ]] || { echo "second-driver: spirv-val rejected modules: $out/spirv-val.txt"; exit 1; }
+  exit "$judged"
+}
+
+case ${1:-} in
+  prepare) prepare ;;
+  versions) versions ;;
+  run) shift; run "$@" ;;
+  compare) shift; exec ./build/rayspec compare "$@" ;;
+  *) die "usage: tools/second-driver.sh prepare | versions | run OUT [--baseline FILE] [options] | compare A B" ;;
+esac
