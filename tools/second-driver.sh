@@ -108,12 +108,12 @@ run() {
   trap unmount_inside EXIT
   mount_inside
   echo "== drivers: here, then inside $ENV_DIR"
-  ./build/rayspec devices | grep -E 'USABLE|driver' | head -n 4 || true
-  inside sh -c "cd $WORK/pack && LD_LIBRARY_PATH=lib ./rayspec devices --icd $ICD" | grep -E 'USABLE|driver' | head -n 4 || true
+  ./build/rayspec devices --icd "$ICD" | grep -E '^ +(\[|driver )' || true
+  inside sh -c "cd $WORK/pack && LD_LIBRARY_PATH=lib ./rayspec devices --icd $ICD" | grep -E '^ +(\[|driver )' || true
   echo "== the run inside (device side only; exit 3 is the run-only build's)"
   local rc=0
-  inside sh -c 'cd "$0/pack" && RAYSPEC_CACHE_DIR="$0/cache" MESA_SHADER_CACHE_DIR="$0/mesa-cache" LD_LIBRARY_PATH=lib \
-    ./rayspec run --cases cases --rules spec-rules.yaml --icd "$1" --strict-validation --out "$0/out" "$@" >"$0/run.log" 2>&1' \
+  inside sh -c 'icd=$1; shift; cd "$0/pack" && RAYSPEC_CACHE_DIR="$0/cache" MESA_SHADER_CACHE_DIR="$0/mesa-cache" LD_LIBRARY_PATH=lib \
+    ./rayspec run --cases cases --rules spec-rules.yaml --icd "$icd" --strict-validation --out "$0/out" "$@" >"$0/run.log" 2>&1' \
     "$WORK" "$ICD" "${args[@]}" || rc=$?
   tail -n 5 "$ENV_DIR$WORK/run.log"
   [[ $rc -eq 0 || $rc -eq 3 ]] || die "the run inside exited $rc ($ENV_DIR$WORK/run.log)" 1
