@@ -32,25 +32,22 @@ TEST(CompileGlsl, AnyHitCompilesAndValidates) {
   EXPECT_EQ(r.words[1], 0x00010400u);  // SPIR-V 1.4
 }
 
+// A closest-hit shader whose payload is the vec4 `color`.
+std::string closestHitWriting(const std::string& color) {
+  return "#version 460\n#extension GL_EXT_ray_tracing : require\n"
+         "layout(location = 0) rayPayloadInEXT vec4 payload;\n"
+         "void main() { payload = " + color + "; }\n";
+}
+
 // glslang 12 gives gl_HitTEXT and gl_RayTmaxEXT a variable each; SPIRV-Tools
 // 2024 and later reject the module (VUID-StandaloneSpirv-OpEntryPoint-09658).
 TEST(CompileGlsl, TwoInputsOfOneBuiltinAreAnError) {
-  const std::string both = R"(#version 460
-#extension GL_EXT_ray_tracing : require
-layout(location = 0) rayPayloadInEXT vec4 payload;
-void main() { payload = vec4(gl_HitTEXT, gl_RayTmaxEXT, 0.0, 1.0); }
-)";
-  SpirvResult r = compileGlsl(both, Stage::ClosestHit);
+  SpirvResult r = compileGlsl(closestHitWriting("vec4(gl_HitTEXT, gl_RayTmaxEXT, 0.0, 1.0)"), Stage::ClosestHit);
   EXPECT_TRUE(r.words.empty());
   EXPECT_NE(r.error.find("OpEntryPoint-09658"), std::string::npos) << r.error;
   EXPECT_NE(r.error.find("'main'"), std::string::npos) << r.error;
   // One of them alone is a valid module.
-  const std::string one = R"(#version 460
-#extension GL_EXT_ray_tracing : require
-layout(location = 0) rayPayloadInEXT vec4 payload;
-void main() { payload = vec4(gl_RayTmaxEXT, gl_RayTminEXT, 0.0, 1.0); }
-)";
-  SpirvResult ok = compileGlsl(one, Stage::ClosestHit);
+  SpirvResult ok = compileGlsl(closestHitWriting("vec4(gl_RayTmaxEXT, gl_RayTminEXT, 0.0, 1.0)"), Stage::ClosestHit);
   EXPECT_TRUE(ok.error.empty()) << ok.error;
 }
 
