@@ -15,7 +15,7 @@ PACKAGES=(
   libembree-dev libtbb-dev
   libopenimageio-dev openimageio-tools
   libgtest-dev libgmock-dev googletest libbenchmark-dev
-  libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
+  libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libre2-dev
   chromium fonts-dejavu-core
   clang libclang-rt-14-dev
 )

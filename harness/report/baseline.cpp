@@ -1,27 +1,74 @@
 #include "report/baseline.h"
 
+#include <re2/re2.h>
+
 #include <filesystem>
 #include <fstream>
 
+#include "case/file_name.h"
 #include "report/escape.h"
 
 namespace rayspec {
 namespace {
 
-// Calls line(text, number) for each line that is neither blank nor a comment;
-// false when the file cannot be read.
+std::string trimmed(const std::string& s) {
+  const size_t a = s.find_first_not_of(" \t\r");
+  if (a == std::string::npos) return {};
+  return s.substr(a, s.find_last_not_of(" \t\r") + 1 - a);
+}
+
+// Calls line(text, number) for each line that is neither blank nor a comment
+// (a UTF-8 BOM before the first line dropped); error: the file cannot be read
+// or is too large. line returns false to stop.
 template <typename F>
-bool forEachEntry(const std::string& path, F line) {
-  std::ifstream in(path);
-  if (!in) return false;
-  static const std::regex blank(R"(^\s*(#.*)?$)");
+void forEachEntry(const std::string& path, std::string* error, F line) {
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  std::ifstream in(path, std::ios::binary);
+  if (ec || !in) {
+    *error = "cannot read " + path;
+    return;
+  }
+  if (size > kMaxBaselineBytes) {
+    *error = path + ": " + std::to_string(size) + " bytes (at most " + std::to_string(kMaxBaselineBytes) + ")";
+    return;
+  }
   std::string text;
   for (int number = 1; std::getline(in, text); ++number) {
+    if (number == 1 && text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
     if (!text.empty() && text.back() == '\r') text.pop_back();
-    if (std::regex_match(text, blank)) continue;
-    if (!line(text, number)) break;
+    const std::string t = trimmed(text);
+    if (t.empty() || t[0] == '#') continue;
+    if (!line(text, number)) return;
   }
-  return true;
+}
+
+// What a line shows in a message: at most 120 bytes, control bytes as \xNN.
+std::string shown(const std::string& line) {
+  std::string out;
+  for (unsigned char ch : line.substr(0, 120)) {
+    if (ch >= 0x20 && ch < 0x7F) {
+      out += static_cast<char>(ch);
+    } else {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02X", ch);
+      out += hex;
+    }
+  }
+  return line.size() > 120 ? out + "... (" + std::to_string(line.size()) + " bytes)" : out;
+}
+
+// Why name is no case name ('/'-separated parts that are file names), or "".
+std::string caseNameProblem(const std::string& name) {
+  size_t start = 0;
+  for (int part = 1;; ++part) {
+    const size_t slash = name.find('/', start);
+    const std::string p = name.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
+    if (const std::string problem = fileNameProblem(p); !problem.empty())
+      return "part " + std::to_string(part) + " " + problem;
+    if (slash == std::string::npos) return {};
+    start = slash + 1;
+  }
 }
 
 }  // namespace
@@ -31,43 +78,56 @@ Baseline loadBaseline(const std::string& path, std::string* error) {
   b.file = path;
   // An entry: `case,Status` (the case name a CSV field as results.csv writes
   // it, quoted when it holds a comma) and maybe a comment.
-  static const std::regex entry(std::string("^(") + kCsvFieldPattern + R"(),\s*([A-Za-z]+)\s*(#.*)?$)");
-  const bool read = forEachEntry(path, [&](const std::string& line, int number) {
-    std::smatch m;
+  static const RE2 entry(std::string("(") + kCsvFieldPattern + R"(),\s*([A-Za-z]+)\s*(#.*)?)");
+  std::map<std::string, int> line_of;
+  forEachEntry(path, error, [&](const std::string& line, int number) {
+    std::string field, status;
     Status s;
-    if (!std::regex_match(line, m, entry) || !parseStatus(m[2], &s)) {
-      *error = path + ":" + std::to_string(number) + ": expected 'case,Status' with a rayspec status, got '" + line + "'";
+    const std::string where = path + ":" + std::to_string(number);
+    if (!RE2::FullMatch(line, entry, &field, &status, nullptr) || !parseStatus(status, &s)) {
+      *error = where + ": expected 'case,Status' with a rayspec status, got '" + shown(line) + "'";
       return false;
     }
-    b.expected[csvFieldText(m[1])] = s;
+    const std::string name = csvFieldText(field);
+    if (const std::string problem = caseNameProblem(name); !problem.empty()) {
+      *error = where + ": '" + shown(name) + "' is not a case name: " + problem;
+      return false;
+    }
+    if (const auto [it, fresh] = line_of.emplace(name, number); !fresh) {
+      *error = where + ": " + name + " is listed again (first on line " + std::to_string(it->second) + ")";
+      return false;
+    }
+    b.expected[name] = s;
     return true;
   });
-  if (!read) *error = "cannot read baseline " + path;
   return b;
 }
 
 std::vector<NamePattern> loadNamePatterns(const std::string& path, std::string* error) {
   std::vector<NamePattern> out;
-  const bool read = forEachEntry(path, [&](const std::string& line, int number) {
+  static const RE2 comment(R"(\s+#.*$)");
+  forEachEntry(path, error, [&](const std::string& line, int number) {
     // A pattern may carry a trailing comment after whitespace and '#'.
-    std::string text = std::regex_replace(line, std::regex(R"(\s+#.*$)"), "");
-    text = std::regex_replace(text, std::regex(R"(^\s+|\s+$)"), "");
+    std::string text = line;
+    RE2::Replace(&text, comment, "");
+    text = trimmed(text);
     const std::string where = path + ":" + std::to_string(number);
-    try {
-      out.push_back({text, where, std::regex(text, std::regex::ECMAScript)});
-    } catch (const std::regex_error& e) {
-      *error = where + ": not a regular expression: '" + text + "' (" + e.what() + ")";
+    RE2::Options options;
+    options.set_log_errors(false);
+    auto regex = std::make_shared<const RE2>(text, options);
+    if (!regex->ok()) {
+      *error = where + ": not a regular expression (RE2 syntax): '" + shown(text) + "' (" + regex->error() + ")";
       return false;
     }
+    out.push_back({text, where, std::move(regex)});
     return true;
   });
-  if (!read) *error = "cannot read " + path;
   return out;
 }
 
 const NamePattern* findPattern(const std::vector<NamePattern>& patterns, const std::string& name) {
   for (const NamePattern& p : patterns)
-    if (std::regex_search(name, p.regex)) return &p;
+    if (RE2::PartialMatch(name, *p.regex)) return &p;
   return nullptr;
 }
 

@@ -4,20 +4,28 @@
 //                        names, the name a CSV field as results.csv writes it),
 //                        '#' comments saying why; a case not listed is
 //                        expected to pass
-//   <driver>-flakes.txt  regular expressions (ECMAScript, one a line, found
+//   <driver>-flakes.txt  regular expressions (RE2 syntax: linear-time
+//                        matching, no back-references; one a line, found
 //                        anywhere in the name unless anchored): cases known to
 //                        give different results run to run
 //   <driver>-skips.txt   regular expressions: cases not to run on this driver
 //                        (each reported as NotSupported, never as a pass)
-// The gate (report/baseline_gate.h) judges each outcome against them.
+// The gate (report/baseline_gate.h) judges each outcome against them. The
+// files are untrusted input: read line by line (a UTF-8 BOM dropped, CRLF
+// taken), at most kMaxBaselineBytes, and matched by RE2, which takes time
+// linear in the name whatever the pattern.
 #pragma once
 
 #include <map>
-#include <regex>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "compare/verdict.h"
+
+namespace re2 {
+class RE2;
+}
 
 namespace rayspec {
 
@@ -25,8 +33,10 @@ namespace rayspec {
 struct NamePattern {
   std::string text;   // as written
   std::string where;  // "file:line"
-  std::regex regex;
+  std::shared_ptr<const re2::RE2> regex;
 };
+
+constexpr size_t kMaxBaselineBytes = 16u << 20;
 
 struct Baseline {
   std::string file, flakes_file, skips_file;  // "" when not used
@@ -35,7 +45,8 @@ struct Baseline {
   bool empty() const { return file.empty() && flakes_file.empty() && skips_file.empty(); }
 };
 
-// Reads a baseline CSV; error names the file and line of a malformed entry.
+// Reads a baseline CSV; error names the file and line of a malformed entry or
+// of a case listed twice.
 Baseline loadBaseline(const std::string& path, std::string* error);
 
 // Reads a flakes or skips file; error names the file and line of a regular
