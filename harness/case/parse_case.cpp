@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "case/case_parts.h"
-#include "case/file_name.h"
+#include "results/file_name.h"
 #include "results/content_hash.h"
 
 namespace rayspec {

@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "case/case_parts.h"
-#include "case/file_name.h"
+#include "results/file_name.h"
 #include "results/record_layout.h"
 
 namespace rayspec {

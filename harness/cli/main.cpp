@@ -4,6 +4,7 @@
 
 #include "accuracy/run_accuracy.h"
 #include "cli/commands.h"
+#include "cli/option_checks.h"
 #include "metamorphic/motion_spec.h"
 #include "run/run_loop.h"
 #include "stability/run_stability.h"
@@ -24,7 +25,9 @@ int main(int argc, char** argv) {
   run->add_option("--device", run_opt.device, "Vulkan device name (substring); default: first with ray tracing");
   run->add_option("--icd", run_opt.icd_files, rayspec::kIcdOptionHelp)->delimiter(':');
   run->add_option("--filter", run_opt.filter, "Run only cases whose name matches this glob (e.g. 'anyhit/*')");
-  run->add_option("--out", run_opt.out, "Folder for results bundles and reports")->capture_default_str();
+  run->add_option("--out", run_opt.out, "Folder for results bundles and reports")
+      ->check(rayspec::outputFolder())
+      ->capture_default_str();
   run->add_option("--cases", run_opt.cases_dir, "Folder of case files")->capture_default_str();
   run->add_option("--case", run_opt.case_files, "Run these case files (instead of --cases)");
   run->add_option("--model", run_opt.model_tier, "Model precision tier: fast, robust or exact")
@@ -58,6 +61,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   run->add_option("--timeout", run_opt.timeout,
                   "Seconds a case's model side, and then its device side, may run before it is a Timeout")
+      ->check(rayspec::positiveSeconds())
       ->capture_default_str();
   run->add_option("--memory-limit", run_opt.memory_limit,
                   "Memory each case side's process may hold (RLIMIT_DATA; e.g. 8G, 512M; 0: no limit); beyond "
@@ -75,7 +79,8 @@ int main(int argc, char** argv) {
                   "from a run-only build) against the model run here");
   run->add_option("--permute", run_opt.permute,
                   "Permute each case's primitives and instances from this seed (R-ORDER-UNSPEC: verdicts must not "
-                  "move; the same seed gives the same permutation)");
+                  "move; the same seed gives the same permutation)")
+      ->check(rayspec::decimalSeed());
   std::string move_spec;
   run->add_option("--move", move_spec,
                   "Move each case by an exact rigid motion: three signed axes and an optional translation, e.g. "
@@ -97,7 +102,9 @@ int main(int argc, char** argv) {
   rayspec::CompareOptions compare_opt;
   compare->add_option("A", compare_opt.a, "Results bundle or run folder (the one judged)")->required();
   compare->add_option("B", compare_opt.b, "Results bundle or run folder (the reference)")->required();
-  compare->add_option("--out", compare_opt.out, "Folder for the reports")->capture_default_str();
+  compare->add_option("--out", compare_opt.out, "Folder for the reports")
+      ->check(rayspec::outputFolder())
+      ->capture_default_str();
   compare->add_option("--cases", compare_opt.cases_dir, "Folder of case files (when a bundle's case file moved)")
       ->capture_default_str();
 
@@ -105,7 +112,9 @@ int main(int argc, char** argv) {
                                             "into one, with its reports");
   rayspec::MergeOptions merge_opt;
   merge->add_option("dirs", merge_opt.dirs, "Run folders")->required()->check(CLI::ExistingDirectory);
-  merge->add_option("--out", merge_opt.out, "Folder for the merged run")->capture_default_str();
+  merge->add_option("--out", merge_opt.out, "Folder for the merged run")
+      ->check(rayspec::outputFolder())
+      ->capture_default_str();
   merge->add_option("--baseline", merge_opt.baseline, "Judge the merged results against this baseline anew");
   merge->add_option("--flakes", merge_opt.flakes, "Flakes file (default: beside the baseline)");
   merge->add_option("--skips", merge_opt.skips, "Skips file (default: beside the baseline)");
@@ -138,9 +147,13 @@ int main(int argc, char** argv) {
                         "bundles are counted too, one source each");
   stability->add_option("--filter", stability_opt.run.filter, "Cases (glob)")->capture_default_str();
   stability->add_option("--cases", stability_opt.run.cases_dir, "Folder of case files")->capture_default_str();
-  stability->add_option("--out", stability_opt.out, "Folder for the report and the runs")->capture_default_str();
+  stability->add_option("--out", stability_opt.out, "Folder for the report and the runs")
+      ->check(rayspec::outputFolder())
+      ->capture_default_str();
   stability->add_option("--baseline", stability_opt.run.baseline, "Known failures of this driver");
-  stability->add_option("--timeout", stability_opt.run.timeout, "Seconds per case side")->capture_default_str();
+  stability->add_option("--timeout", stability_opt.run.timeout, "Seconds per case side")
+      ->check(rayspec::positiveSeconds())
+      ->capture_default_str();
   stability->add_flag("--strict-validation", stability_opt.run.strict_validation,
                       "Fail when the validation layer is not installed");
 
@@ -158,8 +171,12 @@ int main(int argc, char** argv) {
                        "Run folders of other devices (e.g. a run-only binary's run on a GPU machine): their device "
                        "bundles are compared too, one source each");
   accuracy->add_option("--cases", accuracy_opt.run.cases_dir, "Folder of case files")->capture_default_str();
-  accuracy->add_option("--out", accuracy_opt.out, "Folder for the report and the runs")->capture_default_str();
-  accuracy->add_option("--timeout", accuracy_opt.run.timeout, "Seconds per case side")->capture_default_str();
+  accuracy->add_option("--out", accuracy_opt.out, "Folder for the report and the runs")
+      ->check(rayspec::outputFolder())
+      ->capture_default_str();
+  accuracy->add_option("--timeout", accuracy_opt.run.timeout, "Seconds per case side")
+      ->check(rayspec::positiveSeconds())
+      ->capture_default_str();
   accuracy->add_flag("--no-validation", accuracy_opt.run.no_validation, "Do not load the Khronos validation layer");
   accuracy->add_flag("--strict-validation", accuracy_opt.run.strict_validation,
                      "Fail when the validation layer is not installed");

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "case/file_name.h"
+#include "results/file_name.h"
 #include "report/escape.h"
 
 namespace rayspec {
@@ -56,19 +56,6 @@ std::string shown(const std::string& line) {
     }
   }
   return line.size() > 120 ? out + "... (" + std::to_string(line.size()) + " bytes)" : out;
-}
-
-// Why name is no case name ('/'-separated parts that are file names), or "".
-std::string caseNameProblem(const std::string& name) {
-  size_t start = 0;
-  for (int part = 1;; ++part) {
-    const size_t slash = name.find('/', start);
-    const std::string p = name.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
-    if (const std::string problem = fileNameProblem(p); !problem.empty())
-      return "part " + std::to_string(part) + " " + problem;
-    if (slash == std::string::npos) return {};
-    start = slash + 1;
-  }
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "report/outcome_json.h"
 
+#include "results/file_name.h"
+
 #include "report/case_cost.h"
 
 #include <fstream>
@@ -64,6 +66,8 @@ nlohmann::json outcomeJson(const CaseOutcome& o) {
 CaseOutcome outcomeFromJson(const nlohmann::json& j) {
   CaseOutcome o;
   o.name = j.at("name").get<std::string>();
+  if (const std::string problem = caseNameProblem(o.name); !problem.empty())
+    throw std::runtime_error("cases: name '" + o.name.substr(0, 120) + "' is no case name: " + problem);
   try {
     o.status = statusField(j, "status");
     o.headline = j.at("headline").get<std::string>();

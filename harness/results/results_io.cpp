@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "results/content_hash.h"
+#include "results/file_name.h"
 #include "results/image_files.h"
 #include "results/record_layout.h"
 #include "results/step_cost_json.h"
@@ -28,15 +29,28 @@ bool writeWords(const fs::path& path, const Words& words) {
   return static_cast<bool>(out);
 }
 
-template <typename Words>
-bool readWords(const fs::path& path, Words& words) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) return false;
-  const auto size = static_cast<size_t>(in.tellg());
-  words.resize(size / 4);
-  in.seekg(0);
-  in.read(reinterpret_cast<char*>(words.data()), static_cast<std::streamsize>(words.size() * 4));
-  return static_cast<bool>(in);
+// Reads path as whole words after checking that it holds `expected` words
+// (or none, when empty_ok); the error names the file, its size and the size
+// results.json implies.
+std::string readSizedWords(const fs::path& path, uint64_t expected, bool empty_ok, const std::string& implied,
+                           BulkWords& words) {
+  std::error_code ec;
+  const uint64_t bytes = fs::file_size(path, ec);
+  if (ec) return "cannot read " + path.string();
+  if (bytes != expected * 4 && !(empty_ok && bytes == 0))
+    return path.string() + " holds " + std::to_string(bytes) + " bytes; results.json says " + implied + " = " +
+           std::to_string(expected) + " words (" + std::to_string(expected * 4) + " bytes)";
+  std::ifstream in(path, std::ios::binary);
+  words.resize(bytes / 4);
+  in.read(reinterpret_cast<char*>(words.data()), static_cast<std::streamsize>(bytes));
+  return in ? std::string() : "cannot read " + path.string();
+}
+
+// A count from results.json that sizes a file: at most 2^30 (a 4 GiB file).
+uint64_t sizeField(const json& j, const char* key) {
+  const uint64_t v = j.at(key).get<uint64_t>();
+  if (v > (1u << 30)) throw std::runtime_error(std::string(key) + ": " + std::to_string(v) + " is too large");
+  return v;
 }
 
 // One field's words as text, %.9g for floats ("1.5", "0.25 0.5"), appended.
@@ -171,13 +185,15 @@ Results readResults(const std::string& dir_name, std::string* error) {
   try {
     j = json::parse(in);
     r.case_name = j.at("case");
+    if (const std::string problem = caseNameProblem(r.case_name); !problem.empty())
+      throw std::runtime_error("case: '" + r.case_name.substr(0, 120) + "' is no case name: " + problem);
     r.backend = j.at("backend");
     r.device = j.at("device");
     if (!parseRunStatus(j.at("status").get<std::string>(), &r.status))
       throw std::runtime_error("status: unknown value '" + j.at("status").get<std::string>() + "'");
     r.status_detail = j.value("status_detail", std::string());
-    r.width = j.at("width");
-    r.height = j.at("height");
+    r.width = static_cast<uint32_t>(sizeField(j, "width"));
+    r.height = static_cast<uint32_t>(sizeField(j, "height"));
     r.seconds = j.at("seconds");
     if (j.contains("cost")) r.cost = costFromJson(j.at("cost"));
     r.case_file = j.value("case_file", std::string());
@@ -191,13 +207,18 @@ Results readResults(const std::string& dir_name, std::string* error) {
     for (const json& ji : j.at("images")) {
       Image im;
       im.name = ji.at("name");
+      if (const std::string problem = fileNameProblem(im.name); !problem.empty())
+        throw std::runtime_error("images: name '" + im.name.substr(0, 120) + "' " + problem);
       im.field = ji.at("field");
-      im.width = ji.at("width");
-      im.height = ji.at("height");
-      im.channels = ji.at("channels");
+      im.width = static_cast<uint32_t>(sizeField(ji, "width"));
+      im.height = static_cast<uint32_t>(sizeField(ji, "height"));
+      im.channels = static_cast<uint32_t>(sizeField(ji, "channels"));
       im.is_float = ji.at("float");
-      if (!readWords(dir / (im.name + ".raw"), im.texels)) {
-        *error = "cannot read image " + (dir / (im.name + ".raw")).string();
+      const std::string implied = "image " + im.name + ": width x height x channels " + std::to_string(im.width) +
+                                  " x " + std::to_string(im.height) + " x " + std::to_string(im.channels);
+      const uint64_t words = uint64_t(im.width) * im.height * im.channels;
+      if (std::string e = readSizedWords(dir / (im.name + ".raw"), words, false, implied, im.texels); !e.empty()) {
+        *error = e;
         return r;
       }
       r.images.push_back(std::move(im));
@@ -230,7 +251,10 @@ Results readResults(const std::string& dir_name, std::string* error) {
     *error = (dir / "results.json").string() + ": " + e.what();
     return r;
   }
-  if (!readWords(dir / "records.bin", r.records)) *error = "cannot read " + (dir / "records.bin").string();
+  // No records at all when the case records nothing per ray (or its side died).
+  const std::string implied = "width x height x record words " + std::to_string(r.width) + " x " +
+                              std::to_string(r.height) + " x " + std::to_string(recordWords());
+  *error = readSizedWords(dir / "records.bin", uint64_t(r.width) * r.height * recordWords(), true, implied, r.records);
   return r;
 }
 

@@ -1,4 +1,4 @@
-#include "case/file_name.h"
+#include "results/file_name.h"
 
 #include <algorithm>
 
@@ -17,6 +17,19 @@ std::string fileNameProblem(const std::string& name) {
   const unsigned char ch = static_cast<unsigned char>(*bad);
   const std::string shown = ch >= 0x21 && ch < 0x7F ? std::string("'") + *bad + "'" : "byte " + std::to_string(ch);
   return "holds " + shown + " (only letters, digits, '-', '_' and '.')";
+}
+
+std::string caseNameProblem(const std::string& name) {
+  if (name.empty()) return "is empty";
+  size_t start = 0;
+  for (int part = 1;; ++part) {
+    const size_t slash = name.find('/', start);
+    const std::string p = name.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
+    if (const std::string problem = fileNameProblem(p); !problem.empty())
+      return "part " + std::to_string(part) + " ('" + p.substr(0, 40) + "') " + problem;
+    if (slash == std::string::npos) return {};
+    start = slash + 1;
+  }
 }
 
 }  // namespace rayspec

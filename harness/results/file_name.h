@@ -1,0 +1,21 @@
+// Names that become file names (a case name's parts, an image's name): letters,
+// digits, '-', '_' and '.', at most kMaxFileName bytes, not "." or "..".
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+namespace rayspec {
+
+constexpr size_t kMaxFileName = 100;
+
+// What is wrong with name as a file name; empty when it is fine.
+std::string fileNameProblem(const std::string& name);
+
+// What is wrong with name as a case name ('/'-separated parts, each a file
+// name: never absolute, never "..", never empty); empty when it is fine. Every
+// name read from input (case files, sweeps, saved bundles, summaries,
+// baselines) that becomes a path below an output or input folder passes here.
+std::string caseNameProblem(const std::string& name);
+
+}  // namespace rayspec
