@@ -1,0 +1,151 @@
+// Saved runs, bundles and options as a hostile user writes them (issue 24):
+// names that would lead outside --out, image files shorter than results.json
+// says, output folders that cannot be one. Each ends in a clear error naming
+// the file and field (or option) and nothing outside the run's folders is
+// touched.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_helpers.h"
+
+namespace {
+namespace fs = std::filesystem;
+using cli::caseArg;
+using cli::fresh;
+using cli::sh;
+using cli::slurp;
+
+const std::string kImages = "anyhit/ignore-odd-primitives";  // a case with images
+
+nlohmann::json readJson(const std::string& path) { return nlohmann::json::parse(std::ifstream(path)); }
+void writeJson(const std::string& path, const nlohmann::json& j) { std::ofstream(path) << j.dump(1); }
+
+// A folder outside every run folder, with a marker file, that must survive.
+std::string victim(const std::string& root, const std::string& name) {
+  const std::string dir = root + "/" + name;
+  fs::create_directories(dir);
+  std::ofstream(dir + "/keep.txt") << "keep";
+  return dir;
+}
+
+// One run of kImages, device and model, saved once for every test.
+class Untrusted : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    root_ = fresh("untrusted");
+    rc_ = sh(cli::kBin + " run --no-validation" + caseArg(kImages) + " --out " + root_ + "/run", root_ + "/run.txt");
+  }
+  // A copy of the saved run under root_/name.
+  static std::string copyRun(const std::string& name) {
+    const std::string dir = root_ + "/" + name;
+    fs::remove_all(dir);
+    fs::copy(root_ + "/run", dir, fs::copy_options::recursive);
+    return dir;
+  }
+  static std::string root_;
+  static int rc_;
+};
+std::string Untrusted::root_;
+int Untrusted::rc_ = -1;
+
+TEST_F(Untrusted, TheSavedRunPasses) { ASSERT_EQ(rc_, 0) << slurp(root_ + "/run.txt"); }
+
+// An image named ../../../../evil/y in a saved device bundle: a CaseError
+// naming results.json and the image name; no y.raw read, no y.png written.
+TEST_F(Untrusted, AnImageNameThatClimbsIsACaseError) {
+  const std::string saved = copyRun("image-climbs");
+  const std::string json = saved + "/" + kImages + "/device/results.json";
+  nlohmann::json j = readJson(json);
+  ASSERT_FALSE(j["images"].empty());
+  const std::string raw = saved + "/" + kImages + "/device/" + j["images"][0]["name"].get<std::string>() + ".raw";
+  j["images"][0]["name"] = "../../../../evil/y";
+  writeJson(json, j);
+  fs::create_directories(root_ + "/evil");
+  fs::copy_file(raw, root_ + "/evil/y.raw", fs::copy_options::overwrite_existing);
+  const std::string out = root_ + "/image-climbs-judged";
+  fs::remove_all(out);
+  const int rc = sh(cli::kBin + " run --no-validation --device-results " + saved + caseArg(kImages) + " --out " + out,
+                    root_ + "/image-climbs.txt");
+  const std::string log = slurp(root_ + "/image-climbs.txt");
+  EXPECT_EQ(rc, 1) << log;
+  EXPECT_NE(log.find("CaseError"), std::string::npos) << log;
+  EXPECT_NE(log.find("results.json: images: name '../../../../evil/y'"), std::string::npos) << log;
+  EXPECT_FALSE(fs::exists(root_ + "/evil/y.png"));
+}
+
+// An image .raw shorter than width x height x channels: a CaseError naming
+// the file and both sizes (it was a SIGSEGV of the judging process).
+TEST_F(Untrusted, AShortImageIsACaseErrorNamingTheSizes) {
+  const std::string saved = copyRun("image-short");
+  const std::string dir = saved + "/" + kImages + "/device/";
+  const nlohmann::json j = readJson(dir + "results.json");
+  const std::string raw = dir + j["images"][0]["name"].get<std::string>() + ".raw";
+  fs::resize_file(raw, fs::file_size(raw) / 2);
+  const std::string out = root_ + "/image-short-judged";
+  fs::remove_all(out);
+  const int rc = sh(cli::kBin + " run --no-validation --device-results " + saved + caseArg(kImages) + " --out " + out,
+                    root_ + "/image-short.txt");
+  const std::string log = slurp(root_ + "/image-short.txt");
+  EXPECT_EQ(rc, 1) << log;
+  EXPECT_NE(log.find(".raw holds " + std::to_string(fs::file_size(raw)) + " bytes; results.json says image"),
+            std::string::npos)
+      << log;
+}
+
+// A bundle whose results.json names the case ../victim: compare refuses it
+// and the folder beside --out survives (compare removed it recursively).
+TEST_F(Untrusted, CompareNeverRemovesAFolderABundleNames) {
+  const std::string saved = copyRun("compare-climbs");
+  const std::string bundle = saved + "/" + kImages + "/device";
+  nlohmann::json j = readJson(bundle + "/results.json");
+  j["case"] = "../victim";
+  writeJson(bundle + "/results.json", j);
+  const std::string kept = victim(root_, "victim");
+  const std::string out = root_ + "/compare-out";
+  const int rc = sh(cli::kBin + " compare " + bundle + " " + saved + "/" + kImages + "/model --out " + out,
+                    root_ + "/compare-climbs.txt");
+  const std::string log = slurp(root_ + "/compare-climbs.txt");
+  EXPECT_NE(rc, 0) << log;
+  EXPECT_NE(log.find("'../victim' is no case name"), std::string::npos) << log;
+  EXPECT_TRUE(fs::exists(kept + "/keep.txt"));
+}
+
+// A shard whose summary.json names a case ../victim2: merge exits 2 naming
+// the file, and the folder beside --out survives.
+TEST_F(Untrusted, MergeNeverRemovesAFolderASummaryNames) {
+  const std::string shard = copyRun("merge-climbs");
+  nlohmann::json j = readJson(shard + "/summary.json");
+  ASSERT_FALSE(j["cases"].empty());
+  j["cases"][0]["name"] = "../victim2";
+  writeJson(shard + "/summary.json", j);
+  const std::string kept = victim(root_, "victim2");
+  const std::string out = root_ + "/merge-out";
+  const int rc = sh(cli::kBin + " merge " + shard + " --out " + out, root_ + "/merge-climbs.txt");
+  const std::string log = slurp(root_ + "/merge-climbs.txt");
+  EXPECT_EQ(rc, 2) << log;
+  EXPECT_NE(log.find("summary.json: cases: name '../victim2' is no case name"), std::string::npos) << log;
+  EXPECT_TRUE(fs::exists(kept + "/keep.txt"));
+}
+
+// Output folders and numbers that cannot be used: exit 2 before anything runs.
+TEST_F(Untrusted, UnusableOptionsAreExit2AtTheStart) {
+  const std::string file = root_ + "/a-file";
+  std::ofstream(file) << "x";
+  const std::vector<std::string> bad = {
+      "run --out ''",        "run --out /",           "run --out " + file,     "stability --out ''",
+      "stability --out " + file, "accuracy --out " + file, "run --timeout 0", "run --timeout -5",
+      "run --timeout nan",   "run --permute -1",      "run --permute 18446744073709551616"};
+  for (const std::string& args : bad) {
+    const int rc = sh(cli::kBin + " " + args + " --no-device --filter 'none/*'", root_ + "/options.txt");
+    const std::string log = slurp(root_ + "/options.txt");
+    EXPECT_EQ(rc, 2) << args << ": " << log;
+    EXPECT_EQ(log.find("Reports:"), std::string::npos) << args << ": " << log;
+  }
+  EXPECT_FALSE(fs::exists("/summary.json"));
+}
+
+}  // namespace
