@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "library/case_discovery.h"
 #include "library/expand_sweep.h"
@@ -137,6 +138,48 @@ TEST(CaseDiscovery, SweepVariantsAreCasesAndTheFilterMatchesEitherName) {
   ASSERT_FALSE(parsed.errors.empty());
   EXPECT_EQ(parsed.errors[0].loc.file, (dir / "sbt" / "s.sweep.yaml").string());
   EXPECT_GE(parsed.errors[0].loc.line, 8);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace rayspec
+
+namespace rayspec {
+namespace {
+
+// Case names become folders of a run: names two files make, a name that is a
+// folder of another case's, an empty sweep variant: each an error naming the
+// files, one entry per name (the run had three rows and overwrote bundles).
+TEST(CaseDiscovery, ClashingCaseNamesAreErrorsNamingTheFiles) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "rayspec_library_names_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "fam" / "a");
+  fs::create_directories(dir / "fam" / "x");
+  std::ofstream(dir / "fam" / "a.yaml") << "rules: []\n";
+  std::ofstream(dir / "fam" / "a" / "device.yaml") << "rules: []\n";  // fam/a/device: inside fam/a's folder
+  std::ofstream(dir / "fam" / "x.yaml") << "rules: []\n";
+  std::ofstream(dir / "fam" / "x.sweep.yaml") << "sweep:\n  name: \"${v}\"\n  product:\n    v: [p, q]\nrules: []\n";
+  std::ofstream(dir / "fam" / "e.sweep.yaml") << "sweep:\n  name: \"${v}\"\n  product:\n    v: [\"\", r]\nrules: []\n";
+  std::ofstream(dir / "fam" / "fine.yaml") << "rules: []\n";
+  const std::vector<CaseFile> all = findCases(dir.string(), "*");
+  std::map<std::string, std::string> errors;  // name -> its errors
+  for (const CaseFile& f : all)
+    for (const CaseError& e : f.errors) errors[f.name] += e.format() + "\n";
+  EXPECT_NE(errors["fam/a"].find("is a folder of case 'fam/a/device'"), std::string::npos) << errors["fam/a"];
+  EXPECT_NE(errors["fam/a/device"].find("lies inside the folder of case 'fam/a'"), std::string::npos);
+  EXPECT_NE(errors["fam/x"].find("is a folder of case 'fam/x/p'"), std::string::npos) << errors["fam/x"];
+  EXPECT_NE(errors["fam/e/"].find("is no case name"), std::string::npos) << errors["fam/e/"];
+  EXPECT_EQ(errors.count("fam/e/r"), 0u);
+  EXPECT_EQ(errors.count("fam/fine"), 0u);
+  // Two files making one name: one entry, its error naming both.
+  std::vector<CaseFile> twice = {CaseFile{"one.yaml", "fam/t"}, CaseFile{"two.yaml", "fam/t"},
+                                 CaseFile{"three.yaml", "fam/t"}};
+  checkCaseNames(twice);
+  ASSERT_EQ(twice.size(), 1u);
+  ASSERT_EQ(twice[0].errors.size(), 2u);
+  EXPECT_NE(twice[0].errors[0].format().find("is made twice: by one.yaml and by two.yaml"), std::string::npos)
+      << twice[0].errors[0].format();
   fs::remove_all(dir);
 }
 

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "library/expand_sweep.h"
+#include "results/file_name.h"
 
 namespace rayspec {
 namespace fs = std::filesystem;
@@ -40,7 +41,37 @@ std::vector<CaseFile> expand(const std::string& path, const std::string& name) {
   return out;
 }
 
+CaseError nameError(const CaseFile& f, const std::string& what) {
+  return CaseError{SourceLoc{f.path, 0, 0, "name"}, "case name '" + f.name.substr(0, 200) + "' " + what};
+}
+
+bool isFolderOf(const std::string& folder, const std::string& name) {
+  return name.size() > folder.size() && name.compare(0, folder.size(), folder) == 0 && name[folder.size()] == '/';
+}
+
 }  // namespace
+
+void checkCaseNames(std::vector<CaseFile>& files) {
+  std::stable_sort(files.begin(), files.end(), [](const CaseFile& a, const CaseFile& b) { return a.name < b.name; });
+  std::vector<CaseFile> out;
+  for (size_t i = 0; i < files.size();) {
+    size_t j = i + 1;
+    while (j < files.size() && files[j].name == files[i].name) ++j;
+    CaseFile f = std::move(files[i]);
+    if (const std::string problem = caseNameProblem(f.name); !problem.empty())
+      f.errors.push_back(nameError(f, "is no case name: " + problem));
+    for (size_t k = i + 1; k < j; ++k)
+      f.errors.push_back(nameError(f, "is made twice: by " + f.path + " and by " + files[k].path));
+    for (size_t k = j; k < files.size() && isFolderOf(f.name, files[k].name); ++k)
+      f.errors.push_back(nameError(f, "is a folder of case '" + files[k].name + "' (" + files[k].path +
+                                          "): its bundles would lie inside this case's folder"));
+    for (size_t k = out.size(); k-- > 0 && isFolderOf(out[k].name, f.name);)
+      f.errors.push_back(nameError(f, "lies inside the folder of case '" + out[k].name + "' (" + out[k].path + ")"));
+    out.push_back(std::move(f));
+    i = j;
+  }
+  files = std::move(out);
+}
 
 std::vector<CaseFile> caseFilesFor(const std::string& path, const std::string& cases_dir) {
   const std::string name = nameOf(path, cases_dir);
@@ -54,18 +85,20 @@ std::vector<CaseFile> findCases(const std::string& dir, const std::string& glob)
   std::vector<fs::path> paths;
   for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
     if (it->is_regular_file() && it->path().extension() == ".yaml") paths.push_back(it->path());
+  std::vector<CaseFile> all;  // every case of the folder: names are checked against each other
   for (const fs::path& p : paths) {
     const std::string name = nameOf(p.string(), dir);
-    const bool sweep = isSweepFile(p.string());
-    const bool whole = fnmatch(glob.c_str(), name.c_str(), 0) == 0;
-    if (!sweep) {
-      if (whole) out.push_back(CaseFile{p.string(), name, false, {}, {}});
+    if (!isSweepFile(p.string())) {
+      all.push_back(CaseFile{p.string(), name, false, {}, {}});
       continue;
     }
-    for (CaseFile& f : expand(p.string(), name))
-      if (whole || fnmatch(glob.c_str(), f.name.c_str(), 0) == 0) out.push_back(std::move(f));
+    for (CaseFile& f : expand(p.string(), name)) all.push_back(std::move(f));
   }
-  std::sort(out.begin(), out.end(), [](const CaseFile& a, const CaseFile& b) { return a.name < b.name; });
+  checkCaseNames(all);
+  for (CaseFile& f : all) {
+    const bool whole = f.generated && fnmatch(glob.c_str(), nameOf(f.path, dir).c_str(), 0) == 0;
+    if (whole || fnmatch(glob.c_str(), f.name.c_str(), 0) == 0) out.push_back(std::move(f));
+  }
   return out;
 }
 

@@ -21,6 +21,7 @@ struct CaseFile {
 
 // Every case under dir (sorted by name) whose name matches glob. A sweep's
 // variant matches by its own name or by the sweep's (`sbt/indexing` runs all).
+// Names are checked over the whole folder (checkCaseNames).
 std::vector<CaseFile> findCases(const std::string& dir, const std::string& glob);
 // The cases matching any of the globs, sorted by name, each once.
 std::vector<CaseFile> findCasesAny(const std::string& dir, const std::vector<std::string>& globs);
@@ -28,6 +29,13 @@ std::vector<CaseFile> findCasesAny(const std::string& dir, const std::vector<std
 // A case file given on the command line, named relative to cases_dir when it
 // lies under it, else by its stem; a sweep file gives each of its variants.
 std::vector<CaseFile> caseFilesFor(const std::string& path, const std::string& cases_dir);
+
+// Case names become folders of a run: a name that is no case name (an empty
+// variant, a part that is ".."), a name two files make, or a name that is a
+// folder of another case (fam/a and fam/a/device: the second's bundles would
+// lie inside the first's folder) makes its entries errors naming the files.
+// Sorts by name and keeps one entry per name.
+void checkCaseNames(std::vector<CaseFile>& files);
 
 // The case called `name`: from `file` when given (a case file or a sweep
 // file holding that variant), else looked up by name under cases_dir. Empty

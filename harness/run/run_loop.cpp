@@ -52,6 +52,7 @@ std::vector<CaseFile> caseFiles(const RunOptions& opt) {
   std::vector<CaseFile> files;
   for (const std::string& f : opt.case_files)
     for (CaseFile& c : caseFilesFor(f, opt.cases_dir)) files.push_back(std::move(c));
+  checkCaseNames(files);
   return files;
 }
 
