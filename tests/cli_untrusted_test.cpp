@@ -131,6 +131,37 @@ TEST_F(Untrusted, MergeNeverRemovesAFolderASummaryNames) {
   EXPECT_TRUE(fs::exists(kept + "/keep.txt"));
 }
 
+// A shard that stopped early is no passing merge: exit 1, saying so.
+TEST_F(Untrusted, MergingAnInterruptedShardIsNoPass) {
+  const std::string shard = copyRun("merge-interrupted");
+  nlohmann::json j = readJson(shard + "/summary.json");
+  j["interrupted"] = true;
+  j["planned_cases"] = 2;
+  writeJson(shard + "/summary.json", j);
+  const int rc = sh(cli::kBin + " merge " + shard + " --out " + root_ + "/merge-interrupted-out",
+                    root_ + "/merge-interrupted.txt");
+  const std::string log = slurp(root_ + "/merge-interrupted.txt");
+  EXPECT_EQ(rc, 1) << log;
+  EXPECT_NE(log.find("INTERRUPTED: 1 of 2 planned cases ran"), std::string::npos) << log;
+}
+
+// --resume with a narrower selection would drop the cases it does not select
+// from results.csv and summary.json: refused, naming one of them.
+TEST_F(Untrusted, ResumeRefusesANarrowerSelection) {
+  const std::string out = root_ + "/resume";
+  fs::remove_all(out);
+  const std::string two = caseArg(kImages) + caseArg("results/miss-xor-closest-hit");
+  ASSERT_EQ(sh(cli::kBin + " run --no-validation" + two + " --out " + out, root_ + "/resume-1.txt"), 0)
+      << slurp(root_ + "/resume-1.txt");
+  const int rc = sh(cli::kBin + " run --no-validation --resume" + caseArg(kImages) + " --out " + out,
+                    root_ + "/resume-2.txt");
+  const std::string log = slurp(root_ + "/resume-2.txt");
+  EXPECT_EQ(rc, 2) << log;
+  EXPECT_NE(log.find("holds 1 case(s) this run does not select (results/miss-xor-closest-hit)"), std::string::npos)
+      << log;
+  EXPECT_NE(slurp(out + "/results.csv").find("results/miss-xor-closest-hit"), std::string::npos);
+}
+
 // Output folders and numbers that cannot be used: exit 2 before anything runs.
 TEST_F(Untrusted, UnusableOptionsAreExit2AtTheStart) {
   const std::string file = root_ + "/a-file";

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <ctime>
 #include <map>
+#include <set>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -77,7 +78,19 @@ std::optional<Shard> chosenShard(const RunOptions& opt, std::string* error) {
 
 // --resume: what the run folder already holds must come from the same kind
 // of run. The message, or "".
-std::string resumeError(const SavedRun& saved, const RunInfo& info, const std::string& out) {
+std::string resumeError(const SavedRun& saved, const RunInfo& info, const std::string& out,
+                        const std::vector<CaseFile>& files) {
+  // Every case the folder holds must be selected again, or --resume would
+  // drop it from results.csv and summary.json.
+  std::set<std::string> selected;
+  for (const CaseFile& f : files) selected.insert(f.name);
+  size_t unselected = 0;
+  std::string first;
+  for (const CaseOutcome& o : saved.outcomes)
+    if (!selected.count(o.name) && unselected++ == 0) first = o.name;
+  if (unselected)
+    return "--resume: " + out + " holds " + std::to_string(unselected) + " case(s) this run does not select (" +
+           first + (unselected > 1 ? ", ..." : "") + "): resume with the selection the run started with";
   if (saved.info.model_tier != info.model_tier)
     return "--resume: " + out + " was run with model tier '" + saved.info.model_tier + "', this run uses '" +
            info.model_tier + "'";
@@ -211,7 +224,7 @@ int runCases(const RunOptions& requested) {
   if (opt.resume) {
     std::string error;
     SavedRun saved = readSavedRun(opt.out, &error);
-    if (error.empty()) error = resumeError(saved, info, opt.out);
+    if (error.empty()) error = resumeError(saved, info, opt.out, files);
     if (!error.empty()) {
       std::fprintf(stderr, "rayspec run: %s\n", error.c_str());
       return kExitSetup;
