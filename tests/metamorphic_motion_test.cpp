@@ -36,6 +36,9 @@ TEST(MotionSpec, BadTextSaysWhatIsWrong) {
   EXPECT_FALSE(parseMotionSpec("x,y,z,1,2,nan", &why));
   EXPECT_NE(why.find("term 6"), std::string::npos) << why;
   EXPECT_FALSE(parseMotionSpec("x,y,z,1,2", &why));
+  // A translation term that is no float (the moved sums are float sums).
+  EXPECT_FALSE(parseMotionSpec("x,y,z,0,0,0.1", &why));
+  EXPECT_NE(why.find("'0.1' (term 6): not a finite number exact in float"), std::string::npos) << why;
 }
 
 // A raygen that counts before its trace, a closest-hit that branches on a
@@ -82,6 +85,21 @@ TEST(MoveCase, ATraceWithItsOwnOriginOrDirectionIsNotMoved) {
   std::string why;
   EXPECT_FALSE(moveCase(*p.value, *parseMotionSpec("x,y,-z", &why), &why, MoveScope::Verdict));
   EXPECT_NE(why.find("its own origin or direction"), std::string::npos) << why;
+}
+
+// A translation of 2^60 (a float) added to an origin of 0.25: the sum rounds in
+// double as well as in float, so the case is not moved (it was, and the moved
+// ray missed where the unmoved one hit).
+TEST(MoveCase, ASumThatRoundsInDoubleIsNotExact) {
+  ParseResult p = parseCaseText(kBranching, "b.yaml", "family/b");
+  ASSERT_TRUE(p.value) << (p.errors.empty() ? "" : p.errors.front().format());
+  std::string why;
+  const std::optional<RigidMotion> far = parseMotionSpec("x,y,z,1152921504606846976,0,0", &why);
+  ASSERT_TRUE(far) << why;
+  EXPECT_FALSE(moveCase(*p.value, *far, &why, MoveScope::Verdict));
+  EXPECT_NE(why.find("not exact in float"), std::string::npos) << why;
+  // 1024 keeps every sum exact: moved.
+  EXPECT_TRUE(moveCase(*p.value, *parseMotionSpec("x,y,z,1024,0,0", &why), &why, MoveScope::Verdict)) << why;
 }
 
 }  // namespace

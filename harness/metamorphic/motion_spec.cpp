@@ -67,8 +67,8 @@ std::optional<RigidMotion> parseMotionSpec(const std::string& spec, std::string*
     return std::nullopt;
   }
   for (int k = 0; k < 3 && parts.size() == 6; ++k)
-    if (!parseNumber(parts[3 + k], &m.translate[k])) {
-      *why_not = "'" + parts[3 + k] + "' (term " + std::to_string(4 + k) + "): not a finite number";
+    if (!parseNumber(parts[3 + k], &m.translate[k]) || double(float(m.translate[k])) != m.translate[k]) {
+      *why_not = "'" + parts[3 + k] + "' (term " + std::to_string(4 + k) + "): not a finite number exact in float";
       return std::nullopt;
     }
   return m;

@@ -45,7 +45,8 @@ bool anyTraceSetsItsOwnRay(const Case& c) {
   return std::any_of(programs.begin(), programs.end(), [](const Program* p) { return setsOwnRay(*p); });
 }
 
-// a + b in double, false when the float sum would round. A NaN or an
+// a + b, false unless the sum is exact in double (TwoSum's error is zero:
+// 1 + 2^60 rounds in double too) and that sum is a float. A NaN or an
 // infinity stays what it is (an undefined ray stays undefined).
 bool exactSum(float a, double b, float* out) {
   if (!std::isfinite(a)) {
@@ -53,8 +54,10 @@ bool exactSum(float a, double b, float* out) {
     return true;
   }
   const double s = double(a) + b;
+  const double bb = s - double(a);
+  const double error = (double(a) - (s - bb)) + (b - bb);
   *out = static_cast<float>(s);
-  return double(*out) == s;
+  return error == 0 && double(*out) == s;
 }
 
 }  // namespace
