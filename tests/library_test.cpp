@@ -183,5 +183,22 @@ TEST(CaseDiscovery, ClashingCaseNamesAreErrorsNamingTheFiles) {
   fs::remove_all(dir);
 }
 
+// A later variant is checked as the first: a line it makes over 64 KiB, or a
+// value that brings itself back, is an error (it lost the line silently).
+TEST(ExpandSweep, EveryVariantIsCheckedNotOnlyTheFirst) {
+  const std::string big(70 << 10, 'x');
+  const std::string long_line =
+      "sweep:\n  name: \"n${i}\"\n  rows:\n    - {i: 0, v: a}\n    - {i: 1, v: " + big + "}\nrules: [R-${v}]\n";
+  SweepExpansion ex = expandSweep(long_line, "long.sweep.yaml", "fam/long");
+  ASSERT_FALSE(ex.errors.empty());
+  EXPECT_NE(ex.errors[0].format().find("long.sweep.yaml:6:"), std::string::npos) << ex.errors[0].format();
+  EXPECT_NE(ex.errors[0].format().find("(in variant fam/long/n1)"), std::string::npos) << ex.errors[0].format();
+  EXPECT_TRUE(ex.variants.empty());
+  const std::string self = "sweep:\n  name: \"${w}\"\n  product:\n    w: [p, \"${w}q\"]\nrules: [R-${w}]\n";
+  ex = expandSweep(self, "self.sweep.yaml", "fam/self");
+  ASSERT_FALSE(ex.errors.empty());
+  EXPECT_NE(ex.errors[0].format().find("name each other too deeply"), std::string::npos) << ex.errors[0].format();
+}
+
 }  // namespace
 }  // namespace rayspec

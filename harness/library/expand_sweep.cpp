@@ -258,18 +258,24 @@ SweepExpansion expandChecked(const std::string& text, const std::string& file, c
   // Every combination: rows outermost, the product's last key fastest.
   std::vector<size_t> index(product.size(), 0);
   std::map<std::string, int> names_seen;
+  std::set<std::string> errors_said;
   for (const Params& row : rows) {
     while (result.errors.empty()) {
       Params params = row;
       for (size_t k = 0; k < product.size(); ++k) params.emplace_back(product[k].first, product[k].second[index[k]]);
-      const bool first = result.variants.empty();
+      // Every variant is checked: a line over the limits, or a name that only
+      // this variant's values bring, is an error here too (said once).
+      std::vector<CaseError> found;
       const YAML::Mark nm = name_node.Mark();
       SweepVariant v;
-      v.name = name + "/" +
-               substitute(name_node.Scalar(), params, file, nm.line + 1, "sweep.name", first ? &result.errors : nullptr);
+      v.name = name + "/" + substitute(name_node.Scalar(), params, file, nm.line + 1, "sweep.name", &found);
       for (size_t i = 0; i < lines.size(); ++i)
-        v.text += substitute(lines[i], params, file, static_cast<int>(i) + 1, "", first ? &result.errors : nullptr) +
-                  "\n";
+        v.text += substitute(lines[i], params, file, static_cast<int>(i) + 1, "", &found) + "\n";
+      for (CaseError& e : found) {
+        if (!errors_said.insert(e.format()).second) continue;
+        if (!result.variants.empty()) e.message += " (in variant " + v.name + ")";
+        result.errors.push_back(std::move(e));
+      }
       total_bytes += v.text.size();
       if (total_bytes > kMaxSweepBytes) ex.error(sweep, "sweep", "its cases' text grows beyond 256 MiB; split it");
       if (++names_seen[v.name] == 2)
