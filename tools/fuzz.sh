@@ -1,23 +1,50 @@
 #!/usr/bin/env bash
-# Fuzzes the case parser, sweep expansion and plan (fuzz/fuzz_case.cpp) for
-# SECONDS (default 60) or RUNS executions (FUZZ_RUNS=N), starting from a
-# corpus made of cases/. Builds the `fuzz` preset (clang, ASan, UBSan) first.
-# Exit 0: no crash, hang, leak or sanitizer report. A finding is left as
-# build-fuzz/crash-* (replay: build-fuzz/fuzz/fuzz_case FILE).
+# Fuzzes, each for SECONDS (default 60) or RUNS executions (FUZZ_RUNS=N):
+#   fuzz_case   the case parser, sweep expansion and plan (fuzz/fuzz_case.cpp),
+#               from a corpus made of cases/ and fuzz/case.dict;
+#   fuzz_saved  baselines, flakes and skips files, results bundles and
+#               summary.json (fuzz/fuzz_saved.cpp), from references/baselines/
+#               and fuzz/seeds/, with the path-escape property.
+# TARGETS (default both) picks one: tools/fuzz.sh 600 fuzz_saved.
+# Builds the `fuzz` preset (clang, ASan, UBSan) first. Exit 0: no crash,
+# hang, leak, sanitizer report or broken property. A finding is left as
+# build-fuzz/crash-* (replay: build-fuzz/fuzz/<target> FILE).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
-if [ ! -x build-fuzz/fuzz/fuzz_case ] || [ -n "${FUZZ_REBUILD:-}" ]; then
+shift || true
+targets=("${@:-fuzz_case fuzz_saved}")
+read -r -a targets <<<"${targets[*]}"
+if [ ! -x build-fuzz/fuzz/fuzz_saved ] || [ -n "${FUZZ_REBUILD:-}" ]; then
   launcher=()
   command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
   cmake --preset fuzz "${launcher[@]}" >/dev/null
 fi
 cmake --build --preset fuzz -j"$(nproc)" >/dev/null
-seed=build-fuzz/corpus-seed
-rm -rf "$seed" && mkdir -p "$seed" build-fuzz/corpus
-find cases -name '*.yaml' | while read -r f; do cp "$f" "$seed/$(echo "$f" | tr / _)"; done
+
+# Seeds: the case files; for fuzz_saved, each seed file behind its format byte.
+seeds() {
+  local target=$1 dir=build-fuzz/seed-$1
+  rm -rf "$dir" && mkdir -p "$dir"
+  if [ "$target" = fuzz_case ]; then
+    find cases -name '*.yaml' | while read -r f; do cp "$f" "$dir/$(echo "$f" | tr / _)"; done
+  else
+    for f in references/baselines/*.csv; do { printf '\000'; cat "$f"; } >"$dir/baseline-$(basename "$f")"; done
+    { printf '\001'; printf '^anyhit/\n(a|b)*c$  # comment\nsbt/.*-aabbs\n'; } >"$dir/patterns"
+    { printf '\002'; cat fuzz/seeds/results-bundle.bin; } >"$dir/results-bundle"
+    { printf '\003'; cat fuzz/seeds/summary.json; } >"$dir/summary"
+  fi
+  echo "$dir"
+}
+
 limit=(-max_total_time="$seconds")
 [ -n "${FUZZ_RUNS:-}" ] && limit=(-runs="$FUZZ_RUNS")
-cd build-fuzz
-exec ./fuzz/fuzz_case corpus corpus-seed -dict=../fuzz/case.dict "${limit[@]}" -timeout=10 -rss_limit_mb=2048 \
-  -max_len=16384 -print_final_stats=1 -jobs=1 -workers=1
+for target in "${targets[@]}"; do
+  seed=$(seeds "$target")
+  dict=()
+  [ "$target" = fuzz_case ] && dict=(-dict=../fuzz/case.dict)
+  mkdir -p "build-fuzz/corpus-$target"
+  echo "== $target"
+  (cd build-fuzz && ./fuzz/"$target" "corpus-$target" "${seed#build-fuzz/}" "${dict[@]}" "${limit[@]}" -timeout=10 \
+    -rss_limit_mb=2048 -max_len=16384 -print_final_stats=1 -jobs=1 -workers=1)
+done
