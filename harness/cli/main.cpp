@@ -67,6 +67,7 @@ int main(int argc, char** argv) {
                   "Memory each case side's process may hold (RLIMIT_DATA; e.g. 8G, 512M; 0: no limit); beyond "
                   "it the case is a Crash")
       ->transform(CLI::AsSizeValue(false))
+      ->check(rayspec::memoryLimit())
       ->default_str(std::to_string(rayspec::kDefaultMemoryLimit >> 30) + "G");
   run->add_flag("--no-isolation", run_opt.no_isolation,
                 "Run the model and the device in this process (one VkDevice for every case; no timeout, no "

@@ -43,6 +43,18 @@ CLI::Validator positiveSeconds() {
       "SECONDS>0");
 }
 
+CLI::Validator memoryLimit() {
+  return CLI::Validator(
+      [](const std::string& bytes) -> std::string {
+        const unsigned long long v = std::strtoull(bytes.c_str(), nullptr, 10);
+        if (v == 0 || v >= kMinMemoryLimit) return {};
+        return std::to_string(v >> 20) + " MiB is below " + std::to_string(kMinMemoryLimit >> 20) +
+               " MiB: a case side needs about that much to create its Vulkan device (validation layer on) or "
+               "the model's Embree device (0: no limit)";
+      },
+      "BYTES");
+}
+
 CLI::Validator decimalSeed() {
   return CLI::Validator(
       [](const std::string& text) -> std::string {

@@ -13,6 +13,11 @@ CLI::Validator outputFolder();
 // Seconds: a finite number above 0.
 CLI::Validator positiveSeconds();
 
+// A memory limit in bytes (after CLI::AsSizeValue): 0 (none) or at least
+// kMinMemoryLimit, below which a case side cannot even create its devices.
+constexpr unsigned long long kMinMemoryLimit = 256ull << 20;
+CLI::Validator memoryLimit();
+
 // An unsigned 64-bit integer written in decimal (no sign, no wrap-around).
 CLI::Validator decimalSeed();
 

@@ -317,7 +317,12 @@ ModelScene::~ModelScene() {
 void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters, bool keepTriangles) {
   s.tier = tier;
   s.device = rtcNewDevice(nullptr);
-  if (!s.device) throw std::runtime_error("rtcNewDevice failed");
+  if (!s.device) {
+    const RTCError e = rtcGetDeviceError(nullptr);
+    throw std::runtime_error(e == RTC_ERROR_OUT_OF_MEMORY
+                                 ? "rtcNewDevice failed: out of memory (a --memory-limit too low for Embree?)"
+                                 : "rtcNewDevice failed (Embree error " + std::to_string(int(e)) + ")");
+  }
   const RTCSceneFlags sceneFlags = tier == ModelTier::Fast ? RTC_SCENE_FLAG_NONE : RTC_SCENE_FLAG_ROBUST;
   // Per-primitive triangles (geometry transform applied), classified on the
   // vertices as given: inactive (NaN X), NaN in Y or Z (its region kept), or
