@@ -103,6 +103,42 @@ TEST(ContentHash, IsFnv1aAndPrintsAsSixteenHexDigits) {
   EXPECT_EQ(contentHashText(1), "0000000000000001");
 }
 
+// A saved bundle is input: a value of the wrong type names its field, a file
+// of the wrong size names the file and both sizes, a name that would climb out
+// of the bundle is refused before any file of that name is read.
+TEST(ResultsIo, BadBundlesNameTheFieldOrFile) {
+  const std::string dir = testing::TempDir() + "/rayspec-results-bad";
+  const auto edited = [&](const std::string& from, const std::string& to) {
+    std::filesystem::remove_all(dir);
+    EXPECT_EQ(writeResults(sampleResults(), dir, {"hit_t"}), "");
+    std::ifstream in(dir + "/results.json");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    std::ofstream(dir + "/results.json") << text;
+    std::string error;
+    readResults(dir, &error);
+    return error;
+  };
+  EXPECT_NE(edited("\"seconds\": 0.25", "\"seconds\": \"soon\"").find("results.json: field 'seconds': "),
+            std::string::npos);
+  EXPECT_NE(edited("\"channels\": 4", "\"channels\": true").find("field 'images.channels'"), std::string::npos);
+  EXPECT_NE(edited("\"name\": \"color\"", "\"name\": \"../color\"").find("images: name '../color' holds '/'"),
+            std::string::npos);
+  EXPECT_NE(edited("\"case\": \"family/sample\"", "\"case\": \"/etc\"").find("'/etc' is no case name"),
+            std::string::npos);
+  // records.bin one word short.
+  edited("\"width\": 3", "\"width\": 3");
+  std::filesystem::resize_file(dir + "/records.bin", std::filesystem::file_size(dir + "/records.bin") - 4);
+  std::string error;
+  readResults(dir, &error);
+  EXPECT_NE(error.find("records.bin holds " + std::to_string(6 * recordWords() * 4 - 4) +
+                       " bytes; results.json says width x height x record words 3 x 2 x"),
+            std::string::npos)
+      << error;
+}
+
 TEST(ResultsIo, MissingBundleIsAnError) {
   std::string error;
   readResults("/nonexistent/rayspec", &error);

@@ -47,8 +47,8 @@ std::string readSizedWords(const fs::path& path, uint64_t expected, bool empty_o
 }
 
 // A count from results.json that sizes a file: at most 2^30 (a 4 GiB file).
-uint64_t sizeField(const json& j, const char* key) {
-  const uint64_t v = j.at(key).get<uint64_t>();
+uint64_t sizeField(const json& value, const char* key) {
+  const uint64_t v = value.get<uint64_t>();
   if (v > (1u << 30)) throw std::runtime_error(std::string(key) + ": " + std::to_string(v) + " is too large");
   return v;
 }
@@ -182,38 +182,44 @@ Results readResults(const std::string& dir_name, std::string* error) {
     return r;
   }
   json j;
+  // The field being read, for the message when its value has the wrong type.
+  std::string where;
+  const auto field = [&where](const json& object, const std::string& path) -> const json& {
+    where = path;
+    return object.at(path.substr(path.rfind('.') + 1));
+  };
   try {
     j = json::parse(in);
-    r.case_name = j.at("case");
+    r.case_name = field(j, "case");
     if (const std::string problem = caseNameProblem(r.case_name); !problem.empty())
       throw std::runtime_error("case: '" + r.case_name.substr(0, 120) + "' is no case name: " + problem);
-    r.backend = j.at("backend");
-    r.device = j.at("device");
-    if (!parseRunStatus(j.at("status").get<std::string>(), &r.status))
-      throw std::runtime_error("status: unknown value '" + j.at("status").get<std::string>() + "'");
+    r.backend = field(j, "backend");
+    r.device = field(j, "device");
+    if (!parseRunStatus(field(j, "status").get<std::string>(), &r.status))
+      throw std::runtime_error("status: unknown value '" + field(j, "status").get<std::string>() + "'");
     r.status_detail = j.value("status_detail", std::string());
-    r.width = static_cast<uint32_t>(sizeField(j, "width"));
-    r.height = static_cast<uint32_t>(sizeField(j, "height"));
-    r.seconds = j.at("seconds");
-    if (j.contains("cost")) r.cost = costFromJson(j.at("cost"));
+    r.width = static_cast<uint32_t>(sizeField(field(j, "width"), "width"));
+    r.height = static_cast<uint32_t>(sizeField(field(j, "height"), "height"));
+    r.seconds = field(j, "seconds");
+    if (j.contains("cost")) r.cost = costFromJson(field(j, "cost"));
     r.case_file = j.value("case_file", std::string());
-    if (j.contains("case_hash")) r.case_hash = std::stoull(j.at("case_hash").get<std::string>(), nullptr, 16);
-    r.counters = j.at("counters").get<std::map<std::string, uint64_t>>();
-    r.validation_messages = j.at("validation_messages").get<std::vector<std::string>>();
-    if (j.at("record_words").get<uint32_t>() != recordWords()) {
+    if (j.contains("case_hash")) r.case_hash = std::stoull(field(j, "case_hash").get<std::string>(), nullptr, 16);
+    r.counters = field(j, "counters").get<std::map<std::string, uint64_t>>();
+    r.validation_messages = field(j, "validation_messages").get<std::vector<std::string>>();
+    if (field(j, "record_words").get<uint32_t>() != recordWords()) {
       *error = dir.string() + ": record layout differs from this build";
       return r;
     }
-    for (const json& ji : j.at("images")) {
+    for (const json& ji : field(j, "images")) {
       Image im;
-      im.name = ji.at("name");
+      im.name = field(ji, "images.name");
       if (const std::string problem = fileNameProblem(im.name); !problem.empty())
         throw std::runtime_error("images: name '" + im.name.substr(0, 120) + "' " + problem);
-      im.field = ji.at("field");
-      im.width = static_cast<uint32_t>(sizeField(ji, "width"));
-      im.height = static_cast<uint32_t>(sizeField(ji, "height"));
-      im.channels = static_cast<uint32_t>(sizeField(ji, "channels"));
-      im.is_float = ji.at("float");
+      im.field = field(ji, "images.field");
+      im.width = static_cast<uint32_t>(sizeField(field(ji, "images.width"), "images.width"));
+      im.height = static_cast<uint32_t>(sizeField(field(ji, "images.height"), "images.height"));
+      im.channels = static_cast<uint32_t>(sizeField(field(ji, "images.channels"), "images.channels"));
+      im.is_float = field(ji, "images.float");
       const std::string implied = "image " + im.name + ": width x height x channels " + std::to_string(im.width) +
                                   " x " + std::to_string(im.height) + " x " + std::to_string(im.channels);
       const uint64_t words = uint64_t(im.width) * im.height * im.channels;
@@ -224,29 +230,32 @@ Results readResults(const std::string& dir_name, std::string* error) {
       r.images.push_back(std::move(im));
     }
     if (j.contains("t_bounds"))
-      for (const json& jb : j.at("t_bounds")) r.t_bounds.push_back({jb.at("ray"), jb.at("bound")});
+      for (const json& jb : field(j, "t_bounds")) r.t_bounds.push_back({field(jb, "t_bounds.ray"), field(jb, "t_bounds.bound")});
     if (j.contains("undefined"))
-      for (const json& ju : j.at("undefined")) {
+      for (const json& ju : field(j, "undefined")) {
         UndefinedRay u;
-        u.ray = ju.at("ray");
-        if (!parseUndefinedReason(ju.at("reason").get<std::string>(), &u.reason))
-          throw std::runtime_error("undefined.reason: unknown value '" + ju.at("reason").get<std::string>() + "'");
-        u.what = ju.at("what");
+        u.ray = field(ju, "undefined.ray");
+        if (!parseUndefinedReason(field(ju, "undefined.reason").get<std::string>(), &u.reason))
+          throw std::runtime_error("undefined.reason: unknown value '" + field(ju, "undefined.reason").get<std::string>() + "'");
+        u.what = field(ju, "undefined.what");
         r.undefined.push_back(std::move(u));
       }
-    for (const json& ja : j.at("ambiguous")) {
+    for (const json& ja : field(j, "ambiguous")) {
       RayAmbiguity a;
-      a.ray = ja.at("ray");
-      if (!parseAmbiguityReason(ja.at("reason").get<std::string>(), &a.reason))
-        throw std::runtime_error("ambiguous.reason: unknown value '" + ja.at("reason").get<std::string>() + "'");
-      for (const json& jc : ja.at("candidates"))
-        a.candidates.push_back({jc.at("hit"), jc.at("instance"), jc.at("geometry"), jc.at("primitive")});
+      a.ray = field(ja, "ambiguous.ray");
+      if (!parseAmbiguityReason(field(ja, "ambiguous.reason").get<std::string>(), &a.reason))
+        throw std::runtime_error("ambiguous.reason: unknown value '" + field(ja, "ambiguous.reason").get<std::string>() + "'");
+      for (const json& jc : field(ja, "ambiguous.candidates"))
+        a.candidates.push_back({field(jc, "ambiguous.candidates.hit"), field(jc, "ambiguous.candidates.instance"), field(jc, "ambiguous.candidates.geometry"), field(jc, "ambiguous.candidates.primitive")});
       if (ja.contains("shared_triangles"))
-        for (const json& js : ja.at("shared_triangles"))
+        for (const json& js : field(ja, "ambiguous.shared_triangles"))
           a.shared_triangles.push_back(
-              {js.value("hit", true), js.at("instance"), js.at("geometry"), js.at("primitive")});
+              {js.value("hit", true), field(js, "ambiguous.shared_triangles.instance"), field(js, "ambiguous.shared_triangles.geometry"), field(js, "ambiguous.shared_triangles.primitive")});
       r.ambiguous.push_back(std::move(a));
     }
+  } catch (const nlohmann::json::exception& e) {
+    *error = (dir / "results.json").string() + (where.empty() ? "" : ": field '" + where + "'") + ": " + e.what();
+    return r;
   } catch (const std::exception& e) {
     *error = (dir / "results.json").string() + ": " + e.what();
     return r;
