@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 bash tools/setup.sh
 cmake --preset default >/dev/null
 cmake --build --preset default -j"$(nproc)"
-# The fuzz target (clang, ASan, UBSan), which ctest's fuzz/case-parser runs.
+# The fuzz targets (clang, ASan, UBSan), which ctest's fuzz/inputs runs.
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 cmake --preset fuzz "${launcher[@]}" >/dev/null

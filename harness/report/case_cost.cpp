@@ -28,11 +28,12 @@ nlohmann::json caseCostJson(const CaseCost& cost) {
 
 CaseCost caseCostFromJson(const nlohmann::json& j) {
   CaseCost cost;
-  for (const auto& [name, steps] : j.items()) {
+  for (const auto& item : j.items()) {
+    const std::string name = item.key();  // not a structured binding: clang 14 cannot capture one
     const auto side = std::find_if(std::begin(kSides), std::end(kSides),
                                    [&name](CostSide s) { return name == costSideName(s); });
     if (side == std::end(kSides)) throw std::runtime_error("cost: unknown side '" + name + "'");
-    cost[*side] = costFromJson(steps);
+    cost[*side] = costFromJson(item.value());
   }
   return cost;
 }
