@@ -1,5 +1,7 @@
 #include "run/case_steps.h"
 
+#include "results/file_name.h"
+
 #include <fnmatch.h>
 
 #include <filesystem>
@@ -9,6 +11,7 @@
 #include "plan/plan.h"
 #include "report/baseline_gate.h"
 #include "report/case_cost.h"
+#include "results/file_name.h"
 #include "results/results_io.h"
 #include "run/device_results.h"
 #include "run/judge_case.h"
@@ -203,8 +206,9 @@ void reportCase(CaseOutcome outcome, const Baseline& baseline, const RunInfo& in
     }
   }
   report_time.stop();
-  // Where the case's time went, beside its bundles (a skipped case has none).
-  if (std::filesystem::is_directory(dir + "/" + outcome.name))
+  // Where the case's time went, beside its bundles (a skipped case has none;
+  // a name that is no case name never became a folder of this run).
+  if (caseNameProblem(outcome.name).empty() && std::filesystem::is_directory(dir + "/" + outcome.name))
     if (const std::string e = writeCaseCost(outcome, dir + "/" + outcome.name + "/cost.json"); !e.empty() && err.empty())
       err = e;
   summary.add(outcome);
