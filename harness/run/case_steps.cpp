@@ -1,7 +1,5 @@
 #include "run/case_steps.h"
 
-#include "results/file_name.h"
-
 #include <fnmatch.h>
 
 #include <filesystem>
