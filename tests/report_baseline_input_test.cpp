@@ -72,6 +72,17 @@ TEST(BaselineInput, ACaseListedTwiceIsAnError) {
   EXPECT_NE(error.find("twice.csv:3: fam/a is listed again (first on line 1)"), std::string::npos) << error;
 }
 
+// An entry no case of the library has (renamed or removed) would never apply:
+// it is reported with its line.
+TEST(BaselineInput, EntriesOfNoCaseAreReportedWithTheirLine) {
+  std::string error;
+  const Baseline b = loadBaseline(writeInput("stale.csv", "# why\nfam/a,Fail\nfam/gone,Crash\n"), &error);
+  ASSERT_EQ(error, "");
+  const std::vector<std::string> unknown = unknownEntries(b, {"fam/a", "fam/b"});
+  ASSERT_EQ(unknown.size(), 1u);
+  EXPECT_NE(unknown[0].find("stale.csv:3: fam/gone is no case of the library"), std::string::npos) << unknown[0];
+}
+
 TEST(BaselineInput, AnOversizedFileIsRefusedWithItsSize) {
   std::string error;
   const std::string path = writeInput("huge.csv", std::string(kMaxBaselineBytes + 1, '#'));

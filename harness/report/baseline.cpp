@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include "results/file_name.h"
 #include "report/escape.h"
@@ -66,7 +67,7 @@ Baseline loadBaseline(const std::string& path, std::string* error) {
   // An entry: `case,Status` (the case name a CSV field as results.csv writes
   // it, quoted when it holds a comma) and maybe a comment.
   static const RE2 entry(std::string("(") + kCsvFieldPattern + R"(),\s*([A-Za-z]+)\s*(#.*)?)");
-  std::map<std::string, int> line_of;
+  std::map<std::string, int>& line_of = b.line_of;
   forEachEntry(path, error, [&](const std::string& line, int number) {
     std::string field, status;
     Status s;
@@ -88,6 +89,15 @@ Baseline loadBaseline(const std::string& path, std::string* error) {
     return true;
   });
   return b;
+}
+
+std::vector<std::string> unknownEntries(const Baseline& b, const std::vector<std::string>& cases) {
+  const std::set<std::string> known(cases.begin(), cases.end());
+  std::vector<std::string> out;
+  for (const auto& [name, line] : b.line_of)
+    if (!known.count(name))
+      out.push_back(b.file + ":" + std::to_string(line) + ": " + name + " is no case of the library (renamed or removed?)");
+  return out;
 }
 
 std::vector<NamePattern> loadNamePatterns(const std::string& path, std::string* error) {

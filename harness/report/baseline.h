@@ -41,6 +41,7 @@ constexpr size_t kMaxBaselineBytes = 16u << 20;
 struct Baseline {
   std::string file, flakes_file, skips_file;  // "" when not used
   std::map<std::string, Status> expected;      // case name -> status
+  std::map<std::string, int> line_of;          // case name -> its line in `file`
   std::vector<NamePattern> flakes, skips;
   bool empty() const { return file.empty() && flakes_file.empty() && skips_file.empty(); }
 };
@@ -48,6 +49,10 @@ struct Baseline {
 // Reads a baseline CSV; error names the file and line of a malformed entry or
 // of a case listed twice.
 Baseline loadBaseline(const std::string& path, std::string* error);
+
+// The entries of the baseline CSV that name no case of `cases` (a case renamed
+// or removed: its expectation would never apply), as "file:line: NAME ...".
+std::vector<std::string> unknownEntries(const Baseline& b, const std::vector<std::string>& cases);
 
 // Reads a flakes or skips file; error names the file and line of a regular
 // expression that does not compile.

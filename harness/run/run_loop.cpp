@@ -214,8 +214,12 @@ int runCases(const RunOptions& requested) {
   if (!opt.no_isolation)
     std::printf("Each case side in its own process: timeout %g s, memory limit %s\n", opt.timeout,
                 opt.memory_limit ? formatBytes(opt.memory_limit).c_str() : "none");
-  if (!baseline.file.empty())
+  if (!baseline.file.empty()) {
     std::printf("Baseline: %s (%zu known results)\n", baseline.file.c_str(), baseline.expected.size());
+    std::vector<std::string> library;
+    for (const CaseFile& f : findCases(opt.cases_dir, "*")) library.push_back(f.name);
+    for (const std::string& w : unknownEntries(baseline, library)) std::printf("Baseline warning: %s\n", w.c_str());
+  }
   if (!baseline.flakes_file.empty())
     std::printf("Flakes: %s (%zu patterns)\n", baseline.flakes_file.c_str(), baseline.flakes.size());
   if (!baseline.skips_file.empty())
