@@ -62,6 +62,15 @@ pipeline:
       << allErrors(r);
 }
 
+// A byte-order mark (or any byte a terminal does not show) inside the file is
+// shown as \xNN where a message quotes it: the key looked like 'scene'.
+TEST(ParseMessages, InvisibleBytesAreShownInMessages) {
+  const ParseResult r = parseCaseText("rules: [R-IGNORE]\n\xEF\xBB\xBFscene: 12\n", "bom.yaml", "fam/bom");
+  ASSERT_FALSE(r.errors.empty());
+  EXPECT_NE(r.errors[0].format().find("unknown key '\\xEF\\xBB\\xBFscene'"), std::string::npos)
+      << r.errors[0].format();
+}
+
 TEST(ParseMessages, UnknownRuleLabelsAreReportedAtTheLabel) {
   const std::string text = "rules: [R-MASK, R-NO-SUCH-RULE]\n" + std::string(kMinimal).substr(16);
   const std::vector<std::string> catalog = {"R-MASK", "R-UB"};
