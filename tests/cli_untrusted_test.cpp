@@ -131,6 +131,18 @@ TEST_F(Untrusted, MergeNeverRemovesAFolderASummaryNames) {
   EXPECT_TRUE(fs::exists(kept + "/keep.txt"));
 }
 
+// A run removes only what it writes in a case's folder: a folder kept there
+// survives a run into the same --out.
+TEST_F(Untrusted, ARunRemovesOnlyWhatItWrote) {
+  const std::string out = root_ + "/kept";
+  fs::remove_all(out);
+  const std::string kept = victim(out + "/" + kImages, "notes");
+  const int rc = sh(cli::kBin + " run --no-validation" + caseArg(kImages) + " --out " + out, root_ + "/kept.txt");
+  EXPECT_EQ(rc, 0) << slurp(root_ + "/kept.txt");
+  EXPECT_TRUE(fs::exists(kept + "/keep.txt"));
+  EXPECT_TRUE(fs::exists(out + "/" + kImages + "/device/results.json"));
+}
+
 // A shard that stopped early is no passing merge: exit 1, saying so.
 TEST_F(Untrusted, MergingAnInterruptedShardIsNoPass) {
   const std::string shard = copyRun("merge-interrupted");

@@ -10,6 +10,7 @@
 
 #include "case/parse_case.h"
 #include "cli/commands.h"
+#include "results/file_name.h"
 #include "run/case_steps.h"
 #include "run/judge_case.h"
 #include "run/run_loop.h"
@@ -82,8 +83,7 @@ CaseOutcome compareOne(const Pair& p, const CompareOptions& opt, std::vector<std
   *rules = c.rules;
   const Plan plan = derivePlan(c);
   const std::string dir = opt.out + "/" + name;
-  std::error_code ec;
-  fs::remove_all(dir, ec);
+  removeCaseOutputs(dir);
   for (const Image& im : a.images) writeImageFiles(im, dir + "/device");
   for (const Image& im : b.images) writeImageFiles(im, dir + "/model");
   CaseOutcome o = judgeCase(c, plan, a, b, dir);

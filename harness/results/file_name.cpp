@@ -1,6 +1,7 @@
 #include "results/file_name.h"
 
 #include <algorithm>
+#include <filesystem>
 
 namespace rayspec {
 
@@ -17,6 +18,12 @@ std::string fileNameProblem(const std::string& name) {
   const unsigned char ch = static_cast<unsigned char>(*bad);
   const std::string shown = ch >= 0x21 && ch < 0x7F ? std::string("'") + *bad + "'" : "byte " + std::to_string(ch);
   return "holds " + shown + " (only letters, digits, '-', '_' and '.')";
+}
+
+void removeCaseOutputs(const std::string& case_dir) {
+  std::error_code ec;
+  for (const char* part : {"device", "model", "diff", "rerun", "cost.json"})
+    std::filesystem::remove_all(std::filesystem::path(case_dir) / part, ec);
 }
 
 std::string caseNameProblem(const std::string& name) {

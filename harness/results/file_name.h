@@ -18,4 +18,9 @@ std::string fileNameProblem(const std::string& name);
 // baselines) that becomes a path below an output or input folder passes here.
 std::string caseNameProblem(const std::string& name);
 
+// Removes what a case's run writes in its folder (its device and model
+// bundles, diff images, re-run and cost.json) and nothing else: a folder the
+// user keeps beside them in --out survives.
+void removeCaseOutputs(const std::string& case_dir);
+
 }  // namespace rayspec

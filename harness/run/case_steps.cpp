@@ -127,8 +127,7 @@ CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string&
     return out;
   };
   const std::string dir = opt_.out + "/" + c.name + subfolder;
-  std::error_code ec;
-  std::filesystem::remove_all(dir, ec);  // no stale bundle from an earlier run
+  removeCaseOutputs(dir);  // no stale bundle from an earlier run
   Results device, model;
   const bool want_device = !opt_.no_device, want_model = !opt_.no_model;
   if (want_model) {
