@@ -181,7 +181,8 @@ TEST_F(Untrusted, UnusableOptionsAreExit2AtTheStart) {
   const std::vector<std::string> bad = {
       "run --out ''",        "run --out /",           "run --out " + file,     "stability --out ''",
       "stability --out " + file, "accuracy --out " + file, "run --timeout 0", "run --timeout -5",
-      "run --timeout nan",   "run --permute -1",      "run --permute 18446744073709551616"};
+      "run --timeout nan",   "run --permute -1",      "run --permute 18446744073709551616",
+      "run --memory-limit 100M", "run --move=x,y,z,0,0,0.1"};
   for (const std::string& args : bad) {
     const int rc = sh(cli::kBin + " " + args + " --no-device --filter 'none/*'", root_ + "/options.txt");
     const std::string log = slurp(root_ + "/options.txt");

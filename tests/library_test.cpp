@@ -198,6 +198,12 @@ TEST(ExpandSweep, EveryVariantIsCheckedNotOnlyTheFirst) {
   ex = expandSweep(self, "self.sweep.yaml", "fam/self");
   ASSERT_FALSE(ex.errors.empty());
   EXPECT_NE(ex.errors[0].format().find("name each other too deeply"), std::string::npos) << ex.errors[0].format();
+  // A ${...} that only a later variant's value brings, naming no parameter.
+  const std::string later = "sweep:\n  name: \"${u}\"\n  product:\n    u: [p, \"${nope}\"]\nrules: [R-${u}]\n";
+  ex = expandSweep(later, "later.sweep.yaml", "fam/later");
+  ASSERT_FALSE(ex.errors.empty());
+  EXPECT_NE(ex.errors[0].format().find("'${nope}' names no parameter of the sweep"), std::string::npos)
+      << ex.errors[0].format();
 }
 
 }  // namespace
