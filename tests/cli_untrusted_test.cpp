@@ -46,6 +46,15 @@ class Untrusted : public ::testing::Test {
     fs::copy(root_ + "/run", dir, fs::copy_options::recursive);
     return dir;
   }
+  // `rayspec run --device-results saved` of kImages into root_/<name>-judged:
+  // its exit status and output.
+  static std::pair<int, std::string> judged(const std::string& saved, const std::string& name) {
+    const std::string out = root_ + "/" + name + "-judged";
+    fs::remove_all(out);
+    const int rc = sh(cli::kBin + " run --no-validation --device-results " + saved + caseArg(kImages) + " --out " + out,
+                      root_ + "/" + name + ".txt");
+    return {rc, slurp(root_ + "/" + name + ".txt")};
+  }
   static std::string root_;
   static int rc_;
 };
@@ -66,11 +75,7 @@ TEST_F(Untrusted, AnImageNameThatClimbsIsACaseError) {
   writeJson(json, j);
   fs::create_directories(root_ + "/evil");
   fs::copy_file(raw, root_ + "/evil/y.raw", fs::copy_options::overwrite_existing);
-  const std::string out = root_ + "/image-climbs-judged";
-  fs::remove_all(out);
-  const int rc = sh(cli::kBin + " run --no-validation --device-results " + saved + caseArg(kImages) + " --out " + out,
-                    root_ + "/image-climbs.txt");
-  const std::string log = slurp(root_ + "/image-climbs.txt");
+  const auto [rc, log] = judged(saved, "image-climbs");
   EXPECT_EQ(rc, 1) << log;
   EXPECT_NE(log.find("CaseError"), std::string::npos) << log;
   EXPECT_NE(log.find("results.json: images: name '../../../../evil/y'"), std::string::npos) << log;
@@ -85,11 +90,7 @@ TEST_F(Untrusted, AShortImageIsACaseErrorNamingTheSizes) {
   const nlohmann::json j = readJson(dir + "results.json");
   const std::string raw = dir + j["images"][0]["name"].get<std::string>() + ".raw";
   fs::resize_file(raw, fs::file_size(raw) / 2);
-  const std::string out = root_ + "/image-short-judged";
-  fs::remove_all(out);
-  const int rc = sh(cli::kBin + " run --no-validation --device-results " + saved + caseArg(kImages) + " --out " + out,
-                    root_ + "/image-short.txt");
-  const std::string log = slurp(root_ + "/image-short.txt");
+  const auto [rc, log] = judged(saved, "image-short");
   EXPECT_EQ(rc, 1) << log;
   EXPECT_NE(log.find(".raw holds " + std::to_string(fs::file_size(raw)) + " bytes; results.json says image"),
             std::string::npos)
