@@ -158,6 +158,7 @@ TEST(CaseDiscovery, ClashingCaseNamesAreErrorsNamingTheFiles) {
   fs::create_directories(dir / "fam" / "x");
   std::ofstream(dir / "fam" / "a.yaml") << "rules: []\n";
   std::ofstream(dir / "fam" / "a" / "device.yaml") << "rules: []\n";  // fam/a/device: inside fam/a's folder
+  std::ofstream(dir / "fam" / "a-b.yaml") << "rules: []\n";  // sorts between fam/a and fam/a/device
   std::ofstream(dir / "fam" / "x.yaml") << "rules: []\n";
   std::ofstream(dir / "fam" / "x.sweep.yaml") << "sweep:\n  name: \"${v}\"\n  product:\n    v: [p, q]\nrules: []\n";
   std::ofstream(dir / "fam" / "e.sweep.yaml") << "sweep:\n  name: \"${v}\"\n  product:\n    v: [\"\", r]\nrules: []\n";
@@ -172,6 +173,7 @@ TEST(CaseDiscovery, ClashingCaseNamesAreErrorsNamingTheFiles) {
   EXPECT_NE(errors["fam/e/"].find("is no case name"), std::string::npos) << errors["fam/e/"];
   EXPECT_EQ(errors.count("fam/e/r"), 0u);
   EXPECT_EQ(errors.count("fam/fine"), 0u);
+  EXPECT_EQ(errors.count("fam/a-b"), 0u);
   // Two files making one name: one entry, its error naming both.
   std::vector<CaseFile> twice = {CaseFile{"one.yaml", "fam/t"}, CaseFile{"two.yaml", "fam/t"},
                                  CaseFile{"three.yaml", "fam/t"}};

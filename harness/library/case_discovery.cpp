@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "library/expand_sweep.h"
@@ -45,10 +46,6 @@ CaseError nameError(const CaseFile& f, const std::string& what) {
   return CaseError{SourceLoc{f.path, 0, 0, "name"}, "case name '" + f.name.substr(0, 200) + "' " + what};
 }
 
-bool isFolderOf(const std::string& folder, const std::string& name) {
-  return name.size() > folder.size() && name.compare(0, folder.size(), folder) == 0 && name[folder.size()] == '/';
-}
-
 }  // namespace
 
 void checkCaseNames(std::vector<CaseFile>& files) {
@@ -62,14 +59,21 @@ void checkCaseNames(std::vector<CaseFile>& files) {
       f.errors.push_back(nameError(f, "is no case name: " + problem));
     for (size_t k = i + 1; k < j; ++k)
       f.errors.push_back(nameError(f, "is made twice: by " + f.path + " and by " + files[k].path));
-    for (size_t k = j; k < files.size() && isFolderOf(f.name, files[k].name); ++k)
-      f.errors.push_back(nameError(f, "is a folder of case '" + files[k].name + "' (" + files[k].path +
-                                          "): its bundles would lie inside this case's folder"));
-    for (size_t k = out.size(); k-- > 0 && isFolderOf(out[k].name, f.name);)
-      f.errors.push_back(nameError(f, "lies inside the folder of case '" + out[k].name + "' (" + out[k].path + ")"));
     out.push_back(std::move(f));
     i = j;
   }
+  // A name that is a folder of another: each of a name's '/'-prefixes looked up.
+  std::map<std::string, size_t> at;
+  for (size_t i = 0; i < out.size(); ++i) at[out[i].name] = i;
+  for (CaseFile& inner : out)
+    for (size_t slash = inner.name.find('/'); slash != std::string::npos; slash = inner.name.find('/', slash + 1)) {
+      const auto folder = at.find(inner.name.substr(0, slash));
+      if (folder == at.end()) continue;
+      CaseFile& outer = out[folder->second];
+      outer.errors.push_back(nameError(outer, "is a folder of case '" + inner.name + "' (" + inner.path +
+                                                  "): its bundles would lie inside this case's folder"));
+      inner.errors.push_back(nameError(inner, "lies inside the folder of case '" + outer.name + "' (" + outer.path + ")"));
+    }
   files = std::move(out);
 }
 
