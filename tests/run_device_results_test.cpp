@@ -8,6 +8,7 @@
 
 #include "case/parse_case.h"
 #include "metamorphic/permute_case.h"
+#include "results/record_layout.h"
 #include "results/results_io.h"
 #include "run/device_results.h"
 #include "run/isolation.h"
@@ -39,7 +40,8 @@ std::string savedRun(const std::string& name) {
   return dir;
 }
 
-// A device bundle as a device-only run writes it: the case's hash, some records.
+// A device bundle as a device-only run writes it: the case's hash, its records
+// (width x height of them, as the reader checks).
 Results save(const std::string& dir, const Case& c, const std::string& bundle_case, uint64_t hash) {
   Results r;
   r.case_name = bundle_case;
@@ -48,7 +50,7 @@ Results save(const std::string& dir, const Case& c, const std::string& bundle_ca
   r.width = 2;
   r.height = 1;
   r.case_hash = hash;
-  r.records.assign(8, 7u);
+  r.records.assign(2 * recordWords(), 7u);
   EXPECT_EQ(writeResults(r, savedBundleDir(dir, c.name), {}), "");
   return r;
 }

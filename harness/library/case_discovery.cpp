@@ -49,22 +49,20 @@ CaseError nameError(const CaseFile& f, const std::string& what) {
 }  // namespace
 
 void checkCaseNames(std::vector<CaseFile>& files) {
-  std::stable_sort(files.begin(), files.end(), [](const CaseFile& a, const CaseFile& b) { return a.name < b.name; });
   std::vector<CaseFile> out;
-  for (size_t i = 0; i < files.size();) {
-    size_t j = i + 1;
-    while (j < files.size() && files[j].name == files[i].name) ++j;
-    CaseFile f = std::move(files[i]);
+  std::map<std::string, size_t> at;  // name -> its entry in out
+  for (CaseFile& f : files) {
+    if (const auto same = at.find(f.name); same != at.end()) {
+      CaseFile& first = out[same->second];
+      first.errors.push_back(nameError(first, "is made twice: by " + first.path + " and by " + f.path));
+      continue;
+    }
     if (const std::string problem = caseNameProblem(f.name); !problem.empty())
       f.errors.push_back(nameError(f, "is no case name: " + problem));
-    for (size_t k = i + 1; k < j; ++k)
-      f.errors.push_back(nameError(f, "is made twice: by " + f.path + " and by " + files[k].path));
+    at[f.name] = out.size();
     out.push_back(std::move(f));
-    i = j;
   }
   // A name that is a folder of another: each of a name's '/'-prefixes looked up.
-  std::map<std::string, size_t> at;
-  for (size_t i = 0; i < out.size(); ++i) at[out[i].name] = i;
   for (CaseFile& inner : out)
     for (size_t slash = inner.name.find('/'); slash != std::string::npos; slash = inner.name.find('/', slash + 1)) {
       const auto folder = at.find(inner.name.substr(0, slash));
@@ -103,6 +101,7 @@ std::vector<CaseFile> findCases(const std::string& dir, const std::string& glob)
     const bool whole = f.generated && fnmatch(glob.c_str(), nameOf(f.path, dir).c_str(), 0) == 0;
     if (whole || fnmatch(glob.c_str(), f.name.c_str(), 0) == 0) out.push_back(std::move(f));
   }
+  std::sort(out.begin(), out.end(), [](const CaseFile& a, const CaseFile& b) { return a.name < b.name; });
   return out;
 }
 

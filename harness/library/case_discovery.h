@@ -34,7 +34,7 @@ std::vector<CaseFile> caseFilesFor(const std::string& path, const std::string& c
 // variant, a part that is ".."), a name two files make, or a name that is a
 // folder of another case (fam/a and fam/a/device: the second's bundles would
 // lie inside the first's folder) makes its entries errors naming the files.
-// Sorts by name and keeps one entry per name.
+// Keeps the order and one entry per name (the first).
 void checkCaseNames(std::vector<CaseFile>& files);
 
 // The case called `name`: from `file` when given (a case file or a sweep
