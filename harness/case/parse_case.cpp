@@ -10,36 +10,16 @@
 
 #include "case/case_parts.h"
 #include "results/file_name.h"
+#include "results/visible_text.h"
 #include "results/content_hash.h"
 
 namespace rayspec {
 
-namespace {
-
-// Bytes a terminal would not show (control bytes, a BOM's, any non-ASCII
-// byte: the harness's own messages are ASCII) as \xNN, so a quoted key or
-// value shows what it holds.
-std::string visible(const std::string& text) {
-  std::string out;
-  for (unsigned char ch : text) {
-    if ((ch >= 0x20 && ch < 0x7F) || ch == '\n' || ch == '\t') {
-      out += static_cast<char>(ch);
-      continue;
-    }
-    char hex[8];
-    std::snprintf(hex, sizeof hex, "\\x%02X", ch);
-    out += hex;
-  }
-  return out;
-}
-
-}  // namespace
-
 std::string CaseError::format() const {
   std::ostringstream s;
   s << loc.file << ":" << loc.line << ":" << loc.column << ": ";
-  if (!loc.field.empty()) s << visible(loc.field) << ": ";
-  s << visible(message);
+  if (!loc.field.empty()) s << visibleText(loc.field) << ": ";
+  s << visibleText(message);
   return s.str();
 }
 

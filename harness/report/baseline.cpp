@@ -7,6 +7,7 @@
 #include <set>
 
 #include "results/file_name.h"
+#include "results/visible_text.h"
 #include "report/escape.h"
 
 namespace rayspec {
@@ -44,18 +45,9 @@ void forEachEntry(const std::string& path, std::string* error, F line) {
   }
 }
 
-// What a line shows in a message: at most 120 bytes, control bytes as \xNN.
+// What a line shows in a message: at most 120 bytes, invisible bytes as \xNN.
 std::string shown(const std::string& line) {
-  std::string out;
-  for (unsigned char ch : line.substr(0, 120)) {
-    if (ch >= 0x20 && ch < 0x7F) {
-      out += static_cast<char>(ch);
-    } else {
-      char hex[8];
-      std::snprintf(hex, sizeof hex, "\\x%02X", ch);
-      out += hex;
-    }
-  }
+  const std::string out = visibleText(line.substr(0, 120));
   return line.size() > 120 ? out + "... (" + std::to_string(line.size()) + " bytes)" : out;
 }
 
