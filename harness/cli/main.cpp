@@ -6,6 +6,7 @@
 #include "cli/commands.h"
 #include "cli/option_checks.h"
 #include "metamorphic/motion_spec.h"
+#include "mutate/mutate_run.h"
 #include "run/run_loop.h"
 #include "stability/run_stability.h"
 #include "fault/planted_fault.h"
@@ -182,6 +183,20 @@ int main(int argc, char** argv) {
   accuracy->add_flag("--strict-validation", accuracy_opt.run.strict_validation,
                      "Fail when the validation layer is not installed");
 
+  auto* mutate = app.add_subcommand(
+      "mutate", "Judge generic wrong devices made from a saved device run (null device, fields perturbed, counters "
+                "moved, rays swapped, ...): the kill matrix and every survivor with the reason it may legally "
+                "survive (OUT/mutate.txt, mutate.json); fails on a survivor with no reason");
+  rayspec::MutateOptions mutate_opt;
+  mutate_opt.cases_dir = RAYSPEC_SOURCE_DIR "/cases";
+  mutate->add_option("RUN_DIR", mutate_opt.run_dir, "Run folder with <case>/device bundles")->required();
+  mutate->add_option("--out", mutate_opt.out, "Folder for mutate.txt and mutate.json")
+      ->check(rayspec::outputFolder())
+      ->capture_default_str();
+  mutate->add_option("--cases", mutate_opt.cases_dir, "Folder of case files")->capture_default_str();
+  mutate->add_option("--filter", mutate_opt.filter, "Cases (glob)")->capture_default_str();
+  mutate->add_option("--threads", mutate_opt.threads, "Model threads (0: all cores)")->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -202,5 +217,6 @@ int main(int argc, char** argv) {
   if (*show) return rayspec::runShow(show_opt);
   if (*compare) return rayspec::runCompare(compare_opt);
   if (*merge) return rayspec::runMerge(merge_opt);
+  if (*mutate) return rayspec::runMutate(mutate_opt);
   return 2;
 }

@@ -1,0 +1,41 @@
+// The kill matrix of a mutate run: for each mutant kind and case family, how
+// many (case, mutant) pairs applied and how many the comparison failed; the
+// survivors, each with the reason it may legally survive or none (a hole).
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "mutate/mutate_case.h"
+
+namespace rayspec {
+
+struct KillCell {
+  size_t applied = 0, killed = 0, legal = 0;  // legal: survivors with a reason
+};
+
+struct Survivor {
+  std::string case_name, mutant, what, reason;  // reason "": unexplained
+};
+
+struct KillMatrix {
+  std::vector<std::string> families;                    // sorted
+  std::map<std::string, std::map<std::string, KillCell>> cells;  // [kind][family]
+  std::map<std::string, KillCell> by_kind;
+  size_t cases = 0, judged = 0;
+  std::vector<std::pair<std::string, std::string>> not_judged;  // case, why
+  std::vector<Survivor> survivors;
+  size_t unexplained() const;
+  size_t nullKilled() const { return by_kind.count("null-device") ? by_kind.at("null-device").killed : 0; }
+};
+
+KillMatrix buildKillMatrix(const std::vector<CaseMutation>& cases);
+
+// The matrix as text: a table (kinds down, families across: killed/applied),
+// the score, and every survivor with its reason.
+std::string killMatrixText(const KillMatrix& m);
+// The same as JSON (mutate.json).
+std::string killMatrixJson(const KillMatrix& m, const std::string& run_dir, const std::string& device);
+
+}  // namespace rayspec

@@ -1,0 +1,43 @@
+#include "mutate/mutate_case.h"
+
+#include "compare/compare_results.h"
+#include "mutate/legal_survival.h"
+
+namespace rayspec {
+namespace {
+
+std::string familyOf(const std::string& name) { return name.substr(0, name.find('/')); }
+
+MutantOutcome judgeMutant(const MutantInput& in, const GenericMutant& g, const Results& device) {
+  MutantOutcome o;
+  o.kind = g.kind;
+  o.name = g.name;
+  Results mutated = device;
+  o.mutation = g.apply(in, g.target, mutated);
+  if (!o.mutation.applied) return o;
+  const Verdict v = compareResults(in.c, in.plan, mutated, in.model);
+  o.status = v.status;
+  o.headline = v.headline();
+  o.killed = isFailing(v.status);
+  if (!o.killed) o.legal_reason = legalSurvival(in, g, o.mutation, device);
+  return o;
+}
+
+}  // namespace
+
+CaseMutation mutateCase(const Case& c, const Plan& plan, const Results& device, const Results& model) {
+  CaseMutation out;
+  out.name = c.name;
+  out.family = familyOf(c.name);
+  const Verdict unmutated = compareResults(c, plan, device, model);
+  if (unmutated.status != Status::Pass && unmutated.status != Status::QualityWarning) {
+    out.not_judged = "the device results as saved: " + unmutated.headline();
+    return out;
+  }
+  out.judged = true;
+  const MutantInput in{c, plan, model};
+  for (const GenericMutant& g : genericMutants(c, device)) out.mutants.push_back(judgeMutant(in, g, device));
+  return out;
+}
+
+}  // namespace rayspec

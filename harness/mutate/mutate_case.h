@@ -1,0 +1,32 @@
+// One case's device results judged under every generic mutant.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "compare/verdict.h"
+#include "mutate/generic_mutant.h"
+
+namespace rayspec {
+
+struct MutantOutcome {
+  std::string kind, name;
+  Mutation mutation;
+  bool killed = false;     // the mutated results fail (isFailing)
+  Status status = Status::Pass;
+  std::string headline;    // the verdict's
+  std::string legal_reason;  // a survivor: why it may legally survive ("" = none: a hole)
+};
+
+struct CaseMutation {
+  std::string name, family;  // family: the case's first folder
+  bool judged = false;       // false: the unmutated results do not pass, or were not there
+  std::string not_judged;    // why
+  std::vector<MutantOutcome> mutants;
+};
+
+// The unmutated device results must pass (Pass or QualityWarning) for the
+// mutants to say anything; then each mutant is applied to a copy and judged.
+CaseMutation mutateCase(const Case& c, const Plan& plan, const Results& device, const Results& model);
+
+}  // namespace rayspec

@@ -1,0 +1,88 @@
+#include "mutate/mutate_run.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "library/case_discovery.h"
+#include "model/model_backend.h"
+#include "mutate/kill_matrix.h"
+#include "run/device_results.h"
+
+namespace rayspec {
+namespace fs = std::filesystem;
+namespace {
+
+CaseMutation notJudged(const std::string& name, const std::string& why) {
+  CaseMutation m;
+  m.name = name;
+  m.family = name.substr(0, name.find('/'));
+  m.not_judged = why;
+  return m;
+}
+
+CaseMutation mutateOne(const CaseFile& f, const MutateOptions& opt) {
+  const ParseResult parsed = loadCase(f, opt.cases_dir);
+  if (!parsed.value) {
+    std::string why = "case file error";
+    for (const CaseError& e : parsed.errors) why += "; " + e.format();
+    return notJudged(f.name, why);
+  }
+  const Case& c = *parsed.value;
+  const Plan plan = derivePlan(c);
+  Results device;
+  try {
+    device = SavedDevice(opt.run_dir).run(c, plan);
+  } catch (const std::exception& e) {
+    return notJudged(f.name, e.what());
+  }
+  if (!device.ok()) return notJudged(f.name, "device: " + device.statusText());
+  ModelOptions mo;
+  mo.threads = opt.threads;
+  const Results model = runOnModel(c, plan, mo);
+  if (!model.ok()) return notJudged(f.name, "model: " + model.statusText());
+  return mutateCase(c, plan, device, model);
+}
+
+bool writeFile(const fs::path& p, const std::string& text) {
+  std::ofstream out(p, std::ios::binary);
+  out << text;
+  return static_cast<bool>(out);
+}
+
+}  // namespace
+
+int runMutate(const MutateOptions& opt) {
+  if (!modelInThisBuild()) {
+    std::fprintf(stderr, "rayspec mutate: this run-only build has no model to judge by\n");
+    return 2;
+  }
+  std::error_code ec;
+  if (!fs::is_directory(opt.run_dir, ec)) {
+    std::fprintf(stderr, "rayspec mutate: %s is not a folder (a run folder with <case>/device bundles)\n",
+                 opt.run_dir.c_str());
+    return 2;
+  }
+  std::vector<CaseMutation> cases;
+  for (const CaseFile& f : findCases(opt.cases_dir, opt.filter)) {
+    if (!fs::exists(fs::path(savedBundleDir(opt.run_dir, f.name)) / "results.json")) continue;
+    cases.push_back(mutateOne(f, opt));
+  }
+  const KillMatrix m = buildKillMatrix(cases);
+  const std::string text = killMatrixText(m);
+  std::printf("%s", text.c_str());
+  fs::create_directories(opt.out, ec);
+  const std::string device = savedDevices(opt.run_dir, findCases(opt.cases_dir, opt.filter));
+  if (!writeFile(fs::path(opt.out) / "mutate.txt", text) ||
+      !writeFile(fs::path(opt.out) / "mutate.json", killMatrixJson(m, opt.run_dir, device))) {
+    std::fprintf(stderr, "rayspec mutate: cannot write %s/mutate.txt and mutate.json\n", opt.out.c_str());
+    return 2;
+  }
+  if (!m.judged) {
+    std::fprintf(stderr, "rayspec mutate: no case of %s could be judged\n", opt.run_dir.c_str());
+    return 1;
+  }
+  return m.unexplained() == 0 && m.nullKilled() == m.judged ? 0 : 1;
+}
+
+}  // namespace rayspec
