@@ -127,6 +127,14 @@ uint rs_record_word(uint offset, uint i) {
 void rs_bump_runs(uint offset) {
   atomicAdd(rs_records[rs_record_base() + offset], 1u);
 }
+
+// any-hit: the primitive's bit in any_hit_slots; in any_hit_repeats too when
+// it was set already (results/record_layout.h, anyHitSlot).
+void rs_mark_any_hit(uint slots_offset, uint repeats_offset, uint slot) {
+  uint bit = 1u << slot;
+  uint before = atomicOr(rs_records[rs_record_base() + slots_offset], bit);
+  if ((before & bit) != 0u) atomicOr(rs_records[rs_record_base() + repeats_offset], bit);
+}
 #endif
 
 #ifdef RS_USE_COUNTERS

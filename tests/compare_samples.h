@@ -74,4 +74,24 @@ inline Results sampleResults(const std::string& backend) {
   return r;
 }
 
+// The sample case's counters as its shaders count them: once per run of
+// miss, closest-hit and any-hit (a device's counters agree with its records).
+inline void countFromRecords(Results& r) {
+  const std::pair<const char*, const char*> pairs[] = {
+      {"miss", "miss_runs"}, {"chit", "closest_hit_runs"}, {"ahit", "any_hit_runs"}};
+  for (const auto& [counter, runs] : pairs) {
+    uint64_t total = 0;
+    for (size_t i = 0; i < r.records.size() / recordWords(); ++i)
+      total += r.records[i * recordWords() + findRecordField(runs)->offset];
+    r.counters[counter] = total;
+  }
+}
+
+// A finding of status s whose rule or message holds text.
+inline bool findingNames(const Verdict& v, Status s, const std::string& text) {
+  for (const Finding& f : v.findings)
+    if (f.status == s && (f.rule.find(text) != std::string::npos || f.message.find(text) != std::string::npos))
+      return true;
+  return false;
+}
 }  // namespace rayspec

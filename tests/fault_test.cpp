@@ -233,7 +233,9 @@ void answerMiss(const Case& c, RecordEdit& e, uint32_t ray) {
   e.bumpCounter(closestHitCounters(c), -1);
   e.bumpCounter(missCounters(c), +1);
 }
-void answerHit(const Case& c, RecordEdit& e, uint32_t ray, uint32_t instance, uint32_t primitive) {
+// A hit's t: the model's where it hit too (a tie's answers share it).
+void answerHit(const Case& c, RecordEdit& e, uint32_t ray, uint32_t instance, uint32_t primitive,
+               const Results* model = nullptr) {
   if (e.get(ray, "closest_hit_runs") == 0) {
     e.bumpCounter(closestHitCounters(c), +1);
     e.bumpCounter(missCounters(c), -1);
@@ -244,6 +246,7 @@ void answerHit(const Case& c, RecordEdit& e, uint32_t ray, uint32_t instance, ui
   for (const std::string& f : c.outputs.per_ray) {
     if (f == "instance_id") e.set(ray, f, instance);
     if (f == "primitive_id") e.set(ray, f, primitive);
+    if (f == "hit_t" && model && RecordView{*model}.written(ray, f)) e.set(ray, f, RecordView{*model}.get(ray, f));
   }
 }
 
@@ -298,10 +301,10 @@ TEST_F(PlantedFault, InexactEndTiesAcceptBothAnswersAndNothingElse) {
       const uint32_t ray = a.ray;
       EXPECT_EQ(edited(name, [&](const Ran& x, RecordEdit& e) { numerics::answerMiss(x.c, e, ray); }).status,
                 Status::Pass) << name << " ray " << ray;
-      EXPECT_EQ(edited(name, [&](const Ran& x, RecordEdit& e) {
-                  numerics::answerHit(x.c, e, ray, hit->instance, hit->primitive);
-                }).status,
-                Status::Pass) << name << " ray " << ray;
+      const Verdict as_hit = edited(name, [&](const Ran& x, RecordEdit& e) {
+        numerics::answerHit(x.c, e, ray, hit->instance, hit->primitive, &x.model);
+      });
+      EXPECT_EQ(as_hit.status, Status::Pass) << name << " ray " << ray << ": " << as_hit.headline();
       const Verdict other = edited(name, [&](const Ran& x, RecordEdit& e) {
         numerics::answerHit(x.c, e, ray, hit->instance + 1, hit->primitive + 7);
       });
@@ -329,7 +332,7 @@ TEST_F(PlantedFault, AabbTieAcceptsEveryTiedPairAndNothingElse) {
     ASSERT_EQ(a.reason, AmbiguityReason::TTie);
     for (const Candidate& k : a.candidates)
       EXPECT_EQ(edited("precision/aabb-tie", [&](const Ran& x, RecordEdit& e) {
-                  numerics::answerHit(x.c, e, a.ray, k.instance, k.primitive);
+                  numerics::answerHit(x.c, e, a.ray, k.instance, k.primitive, &x.model);
                 }).status,
                 Status::Pass) << "ray " << a.ray << " instance " << k.instance << " primitive " << k.primitive;
     EXPECT_EQ(edited("precision/aabb-tie",

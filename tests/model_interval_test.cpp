@@ -43,6 +43,20 @@ TEST(ExactInterval, Criterion) {
   EXPECT_TRUE(exactEnds({0.5, -0.5, 5}, {0, 0, -1}, v0, v1, v2, 5, above, 10).tmin);
 }
 
+// Moller-Trumbore as GPU code often writes it: t = N * rcp(D). With D's
+// mantissa 41 (a projected doubled area of 41 / 4), t = 1 comes out
+// 1 - 2^-24: no exact end there, the ray is a tie.
+TEST(ExactInterval, ReciprocalMultiplyMustGiveTheSameT) {
+  const float area = 41.0f, rcp = 1.0f / area;
+  ASSERT_NE(area * rcp, 1.0f) << "the arithmetic this test is about";
+  const DVec3 a{0, 0, 0}, b{10.25, 0, 0}, c{0, 1, 0};
+  const ExactEnds e = exactEnds({0.25, 0.25, 1}, {0, 0, -1}, a, b, c, 1, 0.5, 1);
+  EXPECT_FALSE(e.tmax);
+  EXPECT_FALSE(e.tmin);
+  // A power-of-two area: every reciprocal is exact.
+  EXPECT_TRUE(exactEnds({0.25, 0.25, 1}, {0, 0, -1}, a, {8, 0, 0}, c, 1, 0.5, 1).tmax);
+}
+
 TEST(ExactInterval, ObjectRayOfAnInstance) {
   EXPECT_TRUE(objectRayExact(InstanceForm::Identity, kIdentity, {1000.3, 0.7, 5}));
   Transform t = kIdentity;

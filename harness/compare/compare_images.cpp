@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <sstream>
 
 #include "compare/compare_parts.h"
@@ -32,6 +33,33 @@ void compareImages(const Plan& plan, const Results& device, const Results& model
     s << (count.by_oiio ? " [OpenImageIO compare]" : "");
     const Status status = count.failing > thresholds.max_failing_pixels ? Status::Fail : Status::Pass;
     v.add({status, "image", s.str(), count.first, static_cast<uint32_t>(count.failing)});
+  }
+}
+
+void compareImagesToRecords(const Results& device, const std::set<uint32_t>& rays, Verdict& v) {
+  const uint32_t words = recordWords();
+  for (const Image& im : device.images) {
+    const RecordField* f = findRecordField(im.field);
+    if (!f) continue;
+    const int index = recordFieldIndex(im.field);
+    const uint32_t shown = std::min(f->words, im.channels);
+    FindingBuilder b;
+    b.finding = {Status::Fail, "image",
+                 "image '" + im.name + "' shows other values than the device's own records of '" + im.field +
+                     "' on numerically ambiguous rays"};
+    for (uint32_t ray : rays) {
+      if (static_cast<size_t>(ray) >= static_cast<size_t>(im.width) * im.height ||
+          static_cast<size_t>(ray + 1) * words > device.records.size())
+        continue;
+      const uint32_t* rec = &device.records[static_cast<size_t>(ray) * words];
+      if (!f->automatic && !written(rec, index)) continue;
+      for (uint32_t k = 0; k < shown; ++k)
+        if (im.texels[static_cast<size_t>(ray) * im.channels + k] != rec[f->offset + k]) {
+          b.addRay(ray);
+          break;
+        }
+    }
+    b.flush(v);
   }
 }
 

@@ -1,20 +1,27 @@
 // The parts of compareResults, one file each (internal to compare/).
 #pragma once
 
+#include <map>
 #include <set>
 
 #include "compare/compare_results.h"
+#include "compare/trace_shape.h"
+#include "results/record_layout.h"
 
 namespace rayspec {
 
 // undefined_rays: how many rays the model found undefined (R-UB); the counters
-// they may have moved (counter_modes.h) are then informational.
-void compareCounters(const Case& c, const Results& device, const Results& model, size_t ambiguous_rays,
-                     size_t undefined_rays, Verdict& v);
+// they may have moved (counter_modes.h) are then informational. The model's
+// ambiguous rays give each counter the slack their legal answers allow; a
+// counter that follows a stage's run count (trace_shape.h) must also agree
+// with the device's own per-ray records.
+void compareCounters(const Case& c, const Results& device, const Results& model, size_t undefined_rays, Verdict& v);
 // `undefined`: rays left out (R-UB), as in compareAnyHitRuns.
 void compareRecords(const Case& c, const Plan& plan, const Results& device, const Results& model,
                     const std::set<uint32_t>& undefined, Verdict& v);
-// R-AHIT-DUP: with every geometry NO_DUPLICATE_ANY_HIT (triangles), a ray on
+// R-AHIT-CLOSEST: with every geometry triangles, a clear ray ran any-hit at
+// least as often as the model, which runs it for exactly the candidates every
+// device must show it. R-AHIT-DUP: with every geometry NO_DUPLICATE_ANY_HIT (triangles), a ray on
 // which the model committed no hit ran any-hit once on every primitive it
 // crosses: the device may run it at most that often on the ray.
 void compareAnyHitRuns(const Case& c, const Results& device, const Results& model,
@@ -22,10 +29,24 @@ void compareAnyHitRuns(const Case& c, const Results& device, const Results& mode
 // masked: the pixels of ambiguous and of undefined rays, left out.
 void compareImages(const Plan& plan, const Results& device, const Results& model, const std::set<uint32_t>& masked,
                    Verdict& v);
+// Each image pixel of an ambiguous ray (left out of compareImages) against
+// the device's own record of the field it shows, where the record has it: a
+// device whose image and records disagree lost one of them.
+void compareImagesToRecords(const Results& device, const std::set<uint32_t>& rays, Verdict& v);
 // Images a case declares equal (`equal_to`): texel for texel in the model
 // (else CaseError: the case claims an identity its own reference does not
 // have, and the device is not judged on them) and on the device (else Fail).
 void compareEqualImages(const Plan& plan, const Results& device, const Results& model, Verdict& v);
+
+// Words of one per-ray record (record_words.cpp).
+float asFloat(uint32_t w);
+bool written(const uint32_t* rec, int field_index);  // false for index -1
+uint32_t fieldWord(const uint32_t* rec, const char* name);
+// The model's wider t bound of a ray (TBound), 0 when none.
+float tBound(const std::map<uint32_t, float>& t_bounds, uint32_t ray);
+// One field of one ray as the model has it: written alike, and equal (floats
+// within the field's tolerance, hit_t and ray_tmax widened to t_bound).
+bool sameField(const RecordField& f, const uint32_t* d, const uint32_t* m, float t_bound);
 
 // Collects the rays breaking one rule into one finding.
 struct FindingBuilder {
@@ -38,5 +59,17 @@ struct FindingBuilder {
     if (finding.ray_count) v.add(finding);
   }
 };
+
+// What every legal answer of an ambiguous ray shares (trace_shape.h), each
+// broken rule into `wrongs` by rule: raygen ran once; with one trace per ray,
+// one of miss and closest-hit (exactly one where each answer runs one), never
+// a miss where no answer is one, the identity fields closest-hit records in
+// every program never left unwritten; the model's own answer with the model's
+// record (its fields, where no any-hit or intersection program writes
+// anything); a hit through an edge, vertex or t tie at the model's t.
+// `fields`: the record fields compared on clear rays.
+void checkAmbiguousShared(const Case& c, const TraceShape& shape, const RayAmbiguity& a, const uint32_t* d,
+                          const uint32_t* m, const std::vector<const RecordField*>& fields, float t_bound,
+                          std::map<std::string, FindingBuilder>& wrongs);
 
 }  // namespace rayspec

@@ -3,6 +3,7 @@
 #include <map>
 
 #include "compare/compare_parts.h"
+#include "compare/finding_rules.h"
 #include "compare/shared_edge.h"
 #include "results/tolerances.h"
 #include "results/record_layout.h"
@@ -10,17 +11,11 @@
 namespace rayspec {
 namespace {
 
-// The rule a mismatch of a field points at: the field's own rule when the
-// case checks it, otherwise the rules the case says it checks.
+// The rules a mismatch of a field points at: those it evidences that the
+// case claims (finding_rules.h), else the field's own rule.
 std::string fieldRule(const std::string& field);
 std::string ruleForField(const std::string& field, const std::vector<std::string>& case_rules) {
-  const std::string own = fieldRule(field);
-  if (case_rules.empty()) return own;
-  for (const std::string& r : case_rules)
-    if (r == own) return own;
-  std::string joined;
-  for (const std::string& r : case_rules) joined += (joined.empty() ? "" : "/") + r;
-  return joined;
+  return findingRule(rulesEvidencedByField(field), case_rules, fieldRule(field));
 }
 
 std::string fieldRule(const std::string& field) {
@@ -32,12 +27,6 @@ std::string fieldRule(const std::string& field) {
   const auto it = rules.find(field);
   return it == rules.end() ? "R-BUILTIN" : it->second;
 }
-
-float asFloat(uint32_t w) { return std::bit_cast<float>(w); }
-
-bool written(const uint32_t* rec, int field_index) { return (rec[kRecordWrittenMaskWord] >> field_index) & 1u; }
-
-uint32_t fieldWord(const uint32_t* rec, const char* name) { return rec[findRecordField(name)->offset]; }
 
 // The device's answer for an ambiguous ray, checked against the legal set.
 void checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
@@ -117,9 +106,10 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
   for (const std::string& name : plan.record_fields)
     if (const RecordField* f = findRecordField(name)) fields.push_back(f);
   for (const RecordField& f : recordFields())
-    if (f.automatic && f.name != std::string("any_hit_runs") && f.name != std::string("intersection_runs"))
+    if (f.automatic && !traversalDependent(f))
       fields.push_back(&f);
 
+  const TraceShape shape = traceShape(c);
   std::map<std::string, FindingBuilder> mismatches;
   std::map<std::string, FindingBuilder> wrongs;
   FindingBuilder leak;
@@ -132,24 +122,11 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
     if (undefined.count(ray)) continue;  // R-UB: never judged
     if (const auto it = ambiguous.find(ray); it != ambiguous.end()) {
       checkAmbiguous(c, *it->second, d, wrongs, leak);
+      checkAmbiguousShared(c, shape, *it->second, d, m, fields, tBound(t_bounds, ray), wrongs);
       continue;
     }
     for (const RecordField* f : fields) {
-      const int index = recordFieldIndex(f->name);
-      bool same = true;
-      if (!f->automatic && written(d, index) != written(m, index)) {
-        same = false;
-      } else if (f->automatic || written(d, index)) {
-        Tolerance tol = toleranceFor(f->name);
-        if (const auto b = t_bounds.find(ray);
-            b != t_bounds.end() && (f->name == std::string("hit_t") || f->name == std::string("ray_tmax")))
-          tol.abs = std::max(tol.abs, static_cast<double>(b->second));
-        for (uint32_t k = 0; k < f->words && same; ++k) {
-          const uint32_t dw = d[f->offset + k], mw = m[f->offset + k];
-          same = f->type == FieldType::Uint ? dw == mw : tol.matches(asFloat(dw), asFloat(mw));
-        }
-      }
-      if (same) continue;
+      if (sameField(*f, d, m, tBound(t_bounds, ray))) continue;
       FindingBuilder& b = mismatches[f->name];
       if (b.finding.message.empty())
         b.finding = {Status::Fail, ruleForField(f->name, c.rules),

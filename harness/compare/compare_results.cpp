@@ -60,10 +60,11 @@ Verdict compareResults(const Case& c, const Plan& plan, const Results& device, c
   for (const UndefinedRay& u : model.undefined) undefined.insert(u.ray);
   std::set<uint32_t> masked = ambiguous;
   masked.insert(undefined.begin(), undefined.end());
-  compareCounters(c, device, model, ambiguous.size(), undefined.size(), v);
+  compareCounters(c, device, model, undefined.size(), v);
   compareRecords(c, plan, device, model, undefined, v);
   compareAnyHitRuns(c, device, model, undefined, v);
   compareImages(plan, device, model, masked, v);
+  compareImagesToRecords(device, ambiguous, v);
   compareEqualImages(plan, device, model, v);
   return v;
 }

@@ -18,4 +18,9 @@ Verdict compareResults(const Case& c, const Plan& plan, const Results& device, c
 // The status a backend reported as a verdict of its own; Pass for Ok.
 Verdict backendVerdict(const Results& r);
 
+// How far a legal device's exact (or at_least / at_most) counter may lie from
+// the model's: what the legal answers of the model's ambiguous rays can change
+// (compare_counters.cpp).
+uint64_t counterSlack(const Case& c, const std::string& counter, const Results& model);
+
 }  // namespace rayspec

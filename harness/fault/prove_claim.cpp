@@ -85,7 +85,8 @@ ClaimProof proveClaim(const Case& c, const Plan& plan, const Results& model, con
   for (const std::string& f : rf->breaks) {
     p.outcomes.push_back(plant(f, false, c, plan, model, perfect, rule));
     const FaultOutcome& o = p.outcomes.back();
-    broken = broken || (o.changed && o.status == rf->expect);
+    // Proven only by the verdict a break should give, with a finding that names the rule.
+    broken = broken || (o.changed && o.status == rf->expect && o.names_rule);
   }
   for (const std::string& f : rf->legal) {
     p.outcomes.push_back(plant(f, true, c, plan, model, perfect, rule));
@@ -101,7 +102,7 @@ ClaimProof proveClaim(const Case& c, const Plan& plan, const Results& model, con
   p.result = proven ? ClaimResult::Proven : ClaimResult::Hollow;
   if (!proven)
     p.note = rf->breaks.empty() ? "no legal variation finds anything to vary"
-                                : std::string("no break gives ") + statusName(rf->expect);
+                                : std::string("no break gives ") + statusName(rf->expect) + " with a finding naming " + rule;
   return p;
 }
 

@@ -138,6 +138,8 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
                           const Program& program) {
   StageContext ctx{c, plan, stage, name, findStageUses(program, stage, plan)};
   if (plan.records) ctx.uses.record_fields.insert(recordFieldIndex(runsField(stage)));
+  if (plan.records && stage == Stage::AnyHit)
+    for (const char* f : {"any_hit_slots", "any_hit_repeats"}) ctx.uses.record_fields.insert(recordFieldIndex(f));
   const StageUses& u = ctx.uses;
   GlslWriter out;
   out.line("#version 460");
@@ -159,6 +161,10 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
   out.line("");
   out.open("void main() {");
   if (plan.records) out.line("rs_bump_runs(" + fieldOffsetMacro(runsField(stage)) + ");");
+  if (plan.records && stage == Stage::AnyHit)
+    out.line("rs_mark_any_hit(" + fieldOffsetMacro("any_hit_slots") + ", " + fieldOffsetMacro("any_hit_repeats") +
+             ", (uint(gl_InstanceID) * " + std::to_string(kAnyHitSlotInstanceFactor) + "u + gl_GeometryIndexEXT * " +
+             std::to_string(kAnyHitSlotGeometryFactor) + "u + uint(gl_PrimitiveID)) & 31u);");
   if (stage == Stage::Raygen) {
     if (u.launch_ray) out.line("RsRay rs_ray = rs_load_ray(rs_launch_index());");
     out.line("payload.color = vec4(0.0);");

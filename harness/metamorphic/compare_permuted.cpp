@@ -100,6 +100,8 @@ std::string movedField(const CasePermutation& p, const Records& orig, const Reco
     const bool written = f.automatic || orig.written(ray, f.name);
     if (!written) continue;
     const std::string name = f.name;
+    // Keyed by instance, geometry and primitive index, which the permutation renumbers.
+    if (name == "any_hit_slots" || name == "any_hit_repeats") continue;
     if (name == "instance_id" || name == "primitive_id") {
       const Answer led = ledBack(p, perm, ray);
       const bool same = name == "instance_id" ? led.instance == a[f.offset] : led.primitives.count(a[f.offset]) != 0;

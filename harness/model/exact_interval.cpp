@@ -46,6 +46,30 @@ bool exactScale(double x, int limit) {
   return x != 0 && std::isfinite(x) && std::fabs(std::frexp(x, &e)) == 0.5 && std::abs(e - 1) <= limit;
 }
 
+// A device that multiplies by a rounded reciprocal instead of dividing: with
+// the direction on `axis` and the triangle perpendicular to it, every form of
+// t's numerator and denominator is A * (v - o) and A * d up to powers of two,
+// A the doubled area of the triangle's projection (exact on the grid). Then t
+// comes out as (A * (v - o)) * rcp(A) / d. Exact when A is a power of two
+// (every reciprocal of it is exact), or when that is t for the correctly
+// rounded reciprocal and for one a float step off either way.
+bool rcpMultiplyExact(const DVec3& o, const DVec3& d, const DVec3& v0, const DVec3& v1, const DVec3& v2, int axis,
+                      double t) {
+  const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+  const float area = static_cast<float>(std::fabs((v1[a] - v0[a]) * (v2[b] - v0[b]) - (v1[b] - v0[b]) * (v2[a] - v0[a])));
+  if (area == 0) return true;  // no hit to judge
+  int e;
+  if (std::frexp(area, &e) == 0.5f) return true;  // a power of two: every reciprocal is exact
+  const float delta = static_cast<float>(v0[axis] - o[axis]);
+  const float numerator = area * delta;  // exact on the grid
+  const float rcp = 1.0f / area;
+  for (const float r : {rcp, std::nextafter(rcp, 0.0f), std::nextafter(rcp, 2 * rcp)}) {
+    const float scaled = numerator * r;
+    if (static_cast<double>(scaled) / d[axis] != t) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool objectRayExact(InstanceForm form, const Transform& m, const DVec3& o) {
@@ -79,7 +103,7 @@ ExactEnds exactEnds(const DVec3& o, const DVec3& d, const DVec3& v0, const DVec3
     g.add(v2[k]);
   }
   g.add(t);
-  if (!g.fits()) return r;
+  if (!g.fits() || !rcpMultiplyExact(o, d, v0, v1, v2, axis, t)) return r;
   // At or beyond an end the comparison is exact whatever the end's grid;
   // inside it, only when the end is on the grid too.
   Grid withMin = g, withMax = g;

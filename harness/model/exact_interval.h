@@ -20,8 +20,15 @@
 //     numerator and denominator are all such) fits in 24 bits: a float
 //     computes them exactly, in any order, with or without FMA; a direction
 //     of a power of two only scales them.
+//  4. A device that multiplies N by a rounded reciprocal of D instead of
+//     dividing gets t too: N = A (v - o), D = A d up to powers of two (A the
+//     doubled area of the triangle's projection), and A is a power of two,
+//     or (A (v - o)) * rcp(A) rounds to v - o for the correctly rounded
+//     reciprocal and for one a float step off either way. (Vertex (10.25, 0, 0) with (0, 0, 0) and
+//     (0, 1, 0): A = 41, and t = 1 comes out 1 - 2^-24.)
 // Then t's numerator N and denominator D are exact, N / D is t, and a device
-// either divides (correctly rounded: t itself) or compares N with the
+// either divides (correctly rounded: t itself), multiplies by the reciprocal
+// (4), or compares N with the
 // interval end times D. That product is exact too when the end lies on the
 // same grid; when it does not, the comparison is still exact on the side
 // where t is at or beyond the end (rounding is monotonic and N is a float).

@@ -40,6 +40,16 @@ Machine::Machine(const ModelShared& shared, uint32_t* records) : sh_(shared), re
   const char* runs[6] = {"raygen_runs", "miss_runs", "closest_hit_runs", "any_hit_runs",
                          "intersection_runs", "callable_runs"};
   for (int k = 0; k < 6; ++k) runs_offset_[k] = findRecordField(runs[k])->offset;
+  slots_offset_ = findRecordField("any_hit_slots")->offset;
+  repeats_offset_ = findRecordField("any_hit_repeats")->offset;
+}
+
+void Machine::markAnyHit(const HitView& hv) {
+  bumpRuns(kRunsAnyHit);
+  if (!rec_) return;
+  const uint32_t bit = 1u << anyHitSlot(hv.instance, hv.geometry, hv.primitive);
+  if (rec_[slots_offset_] & bit) rec_[repeats_offset_] |= bit;
+  rec_[slots_offset_] |= bit;
 }
 
 void Machine::record(int idx, const Val& v, ValueType t) {

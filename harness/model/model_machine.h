@@ -152,6 +152,9 @@ class alignas(64) Machine {
   void bumpRuns(int which) {  // kRuns* above
     if (rec_) rec_[runs_offset_[which]] += 1;
   }
+  // any-hit runs on a primitive: its run count and its bit in any_hit_slots
+  // (any_hit_repeats when set already; results/record_layout.h).
+  void markAnyHit(const HitView& hv);
   // `site`: the trace statement (or raygen's `trace: {}` of the launch ray),
   // named when the trace is undefined.
   Payload trace(const TraceRay& r, uint32_t depth, const CStmt* site);  // model_traversal.cpp
@@ -215,6 +218,7 @@ class alignas(64) Machine {
   std::vector<SbtRecord> default_miss_, default_hit_, default_callable_;
   std::vector<std::vector<ModelCandidate>> cand_pool_;
   uint32_t runs_offset_[6] = {};
+  uint32_t slots_offset_ = 0, repeats_offset_ = 0;  // any_hit_slots, any_hit_repeats
 };
 
 }  // namespace rayspec

@@ -179,7 +179,7 @@ Flow Machine::report(const CStmt& s, StageEnv& env) {
     setHit(hv, t, kind, attr.f[0], attr.f[1]);
     Flow ah = Flow::Continue;
     if (!tr->cur_opaque && tr->cur_group && tr->cur_group->any_hit) {
-      bumpRuns(kRunsAnyHit);
+      markAnyHit(hv);
       // R-TMAX-VIEW: any-hit sees the candidate's t.
       StageEnv a = hitStage(Stage::AnyHit, tr->cur_rec->data, tr->payload, tr->ray, hv, t, tr->depth);
       ah = exec(*tr->cur_group->any_hit, a);
@@ -295,7 +295,7 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
     if (!opaque && grp && grp->any_hit) {
       HitView hv = viewOf(scene, c, r, cand.instance, cand.geometry, cand.primitive);
       setHit(hv, static_cast<float>(cand.t), f.kind, cand.b1, cand.b2);
-      bumpRuns(kRunsAnyHit);
+      markAnyHit(hv);
       StageEnv a = hitStage(Stage::AnyHit, rec->data, &payload, r, hv, hv.t, depth);
       ah = exec(*grp->any_hit, a);
       if (ah == Flow::Ignore) continue;

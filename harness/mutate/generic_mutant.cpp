@@ -5,16 +5,15 @@
 
 #include "fault/record_edit.h"
 #include "results/record_layout.h"
+#include "results/tolerances.h"
 
 namespace rayspec {
 namespace {
 
-// The automatic run counts perturbed like a recorded field; any-hit and
-// intersection runs have mutants of their own (extra, skipped).
-bool perturbedAsField(const RecordField& f) {
-  const std::string n = f.name;
-  return !f.automatic || (n != "any_hit_runs" && n != "intersection_runs");
-}
+// The automatic run counts perturbed like a recorded field; what depends on
+// traversal order (any-hit and intersection runs) has mutants of its own
+// (extra, skipped).
+bool perturbedAsField(const RecordField& f) { return !traversalDependent(f); }
 
 std::string raysText(size_t n) { return std::to_string(n) + (n == 1 ? " ray" : " rays"); }
 
@@ -71,9 +70,24 @@ Mutation moveCounter(const std::string& counter, int delta, Results& d) {
 Mutation counterUp(const MutantInput&, const std::string& c, Results& d) { return moveCounter(c, 1, d); }
 Mutation counterDown(const MutantInput&, const std::string& c, Results& d) { return moveCounter(c, -1, d); }
 
+// The records of two rays differ where some rule looks: in what they wrote,
+// or in a field beyond its tolerance (not in the any-hit and intersection run
+// counts, which depend on traversal order).
 bool recordsDiffer(const Results& d, uint32_t a, uint32_t b) {
   const uint32_t words = recordWords();
-  return !std::equal(d.records.begin() + a * words, d.records.begin() + (a + 1) * words, d.records.begin() + b * words);
+  const uint32_t* ra = &d.records[a * words];
+  const uint32_t* rb = &d.records[b * words];
+  if (ra[kRecordWrittenMaskWord] != rb[kRecordWrittenMaskWord]) return true;
+  for (const RecordField& f : recordFields()) {
+    if (!perturbedAsField(f)) continue;
+    const Tolerance tol = toleranceFor(f.name);
+    for (uint32_t k = 0; k < f.words; ++k) {
+      const uint32_t x = ra[f.offset + k], y = rb[f.offset + k];
+      if (f.type == FieldType::Uint ? x != y : !tol.matches(std::bit_cast<float>(x), std::bit_cast<float>(y)))
+        return true;
+    }
+  }
+  return false;
 }
 
 // Records (and pixels) of the first two rays that differ, clear rays first.
@@ -129,6 +143,8 @@ Mutation anyHitSkipped(const MutantInput&, const std::string&, Results& d) {
   for (uint32_t r = 0; r < e.rays(); ++r) {
     if (e.get(r, "any_hit_runs") == 0) continue;
     e.set(r, "any_hit_runs", 0);
+    e.set(r, "any_hit_slots", 0);
+    e.set(r, "any_hit_repeats", 0);
     m.rays.push_back(r);
   }
   if (m.rays.empty()) return notApplied("no ray ran any-hit");
@@ -137,12 +153,15 @@ Mutation anyHitSkipped(const MutantInput&, const std::string&, Results& d) {
   return m;
 }
 
+// Any-hit once more on a primitive it already ran on (the lowest slot).
 Mutation anyHitExtra(const MutantInput&, const std::string&, Results& d) {
   RecordEdit e(d);
   Mutation m;
   for (uint32_t r = 0; r < e.rays(); ++r) {
     if (e.get(r, "any_hit_runs") == 0) continue;
     e.set(r, "any_hit_runs", e.get(r, "any_hit_runs") + 1);
+    const uint32_t slots = e.get(r, "any_hit_slots");
+    e.set(r, "any_hit_repeats", e.get(r, "any_hit_repeats") | (slots & (~slots + 1)));
     m.rays.push_back(r);
   }
   if (m.rays.empty()) return notApplied("no ray ran any-hit");

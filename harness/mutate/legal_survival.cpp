@@ -1,9 +1,12 @@
 #include "mutate/legal_survival.h"
 
 #include <algorithm>
+#include <map>
 #include <set>
 
 #include "compare/counter_modes.h"
+#include "compare/compare_results.h"
+#include "fault/record_edit.h"
 
 namespace rayspec {
 namespace {
@@ -15,7 +18,7 @@ bool everyRayUndefined(const MutantInput& in, const Mutation& m) {
   return std::all_of(m.rays.begin(), m.rays.end(), [&](uint32_t r) { return undefined.count(r) > 0; });
 }
 
-std::string counterReason(const MutantInput& in, const Mutation& m) {
+std::string counterReason(const MutantInput& in, const Mutation& m, uint64_t slack) {
   const auto modes = counterModes(in.c);
   const auto it = modes.find(m.counter);
   if (it == modes.end()) return "";
@@ -30,9 +33,62 @@ std::string counterReason(const MutantInput& in, const Mutation& m) {
       return m.delta > 0 ? "counter '" + m.counter + "' is at_least: a device may run it more often" : "";
     case CounterMode::AtMost:
       return m.delta < 0 ? "counter '" + m.counter + "' is at_most: a device may run it less often" : "";
-    case CounterMode::Exact: return "";
+    case CounterMode::Exact: break;
   }
+  if (slack > 0)
+    return "counter '" + m.counter + "' may legally move by up to " + std::to_string(slack) +
+           ": the legal answers of the ambiguous rays may change it";
   return "";
+}
+
+// A changed ray is ambiguous, and the identity the mutant gave it is one of
+// its legal hits.
+bool identityStaysLegal(const MutantInput& in, const Mutation& m, const Results& mutated) {
+  static const std::set<std::string> identity = {"primitive_id", "instance_id", "geometry_index"};
+  if (!identity.count(m.field) || m.rays.empty()) return false;
+  std::map<uint32_t, const RayAmbiguity*> ambiguous;
+  for (const RayAmbiguity& a : in.model.ambiguous) ambiguous[a.ray] = &a;
+  const RecordView view{mutated};
+  for (uint32_t r : m.rays) {
+    const auto it = ambiguous.find(r);
+    if (it == ambiguous.end()) return false;
+    const uint32_t value = view.get(r, m.field);
+    bool legal = false;
+    for (const Candidate& k : it->second->candidates) {
+      if (!k.hit) continue;
+      const uint32_t own = m.field == "primitive_id" ? k.primitive : m.field == "instance_id" ? k.instance : k.geometry;
+      legal = legal || own == value;
+    }
+    if (!legal) return false;
+  }
+  return true;
+}
+
+bool anyAabbs(const Case& c) {
+  for (const Blas& b : c.scene.blases)
+    for (const Geometry& g : b.geometries)
+      if (g.kind != Geometry::Kind::Triangles) return true;
+  return false;
+}
+
+// Every changed ray is ambiguous among several hits, and only closest-hit
+// programs write the field: its value follows the hit taken, and the model
+// does not work out each legal hit's value (only its identity).
+bool valueOfAnotherLegalHit(const MutantInput& in, const Mutation& m) {
+  if (m.field.empty() || m.rays.empty()) return false;
+  std::map<uint32_t, const RayAmbiguity*> ambiguous;
+  for (const RayAmbiguity& a : in.model.ambiguous) ambiguous[a.ray] = &a;
+  for (uint32_t r : m.rays) {
+    const auto it = ambiguous.find(r);
+    if (it == ambiguous.end()) return false;
+    size_t hits = 0;
+    for (const Candidate& k : it->second->candidates) hits += k.hit;
+    if (hits < 2) return false;
+  }
+  bool elsewhere = false;
+  for (const FieldWrite& w : fieldWrites(in.c))
+    elsewhere = elsewhere || (w.field == m.field && w.stage != Stage::ClosestHit);
+  return !elsewhere;
 }
 
 bool everyGeometryNoDuplicate(const Case& c) {
@@ -44,9 +100,17 @@ bool everyGeometryNoDuplicate(const Case& c) {
 
 }  // namespace
 
-std::string legalSurvival(const MutantInput& in, const GenericMutant& g, const Mutation& m, const Results&) {
-  if (!m.counter.empty()) return counterReason(in, m);
+std::string legalSurvival(const MutantInput& in, const GenericMutant& g, const Mutation& m, const Results& mutated) {
+  if (!m.counter.empty()) return counterReason(in, m, counterSlack(in.c, m.counter, in.model));
+  if (!m.field.empty() && identityStaysLegal(in, m, mutated))
+    return "every changed ray is ambiguous and its new " + m.field + " is one of its legal hits'";
   if (everyRayUndefined(in, m)) return "R-UB: every changed ray has undefined behaviour";
+  if (!m.field.empty() && valueOfAnotherLegalHit(in, m))
+    return "every changed ray is ambiguous among several legal hits and closest-hit computes " + m.field +
+           " from the hit taken: the model lists each legal hit, not the value it would give";
+  if (g.kind == "any-hit-skipped" && anyAabbs(in.c))
+    return "R-ORDER-UNSPEC: the scene has AABBs, whose intersection programs may report beyond a nearer hit "
+           "another order finds first: the model's any-hit count is no minimum there";
   if (g.kind == "any-hit-extra" && !everyGeometryNoDuplicate(in.c))
     return "R-AHIT-DUP: without NO_DUPLICATE_ANY_HIT_INVOCATION any-hit may run again on a primitive";
   return "";

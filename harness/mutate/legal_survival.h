@@ -11,7 +11,7 @@
 
 namespace rayspec {
 
-// "" when nothing allows it. `device`: the unmutated results.
-std::string legalSurvival(const MutantInput& in, const GenericMutant& g, const Mutation& m, const Results& device);
+// "" when nothing allows it. `mutated`: the mutant's results.
+std::string legalSurvival(const MutantInput& in, const GenericMutant& g, const Mutation& m, const Results& mutated);
 
 }  // namespace rayspec

@@ -32,6 +32,8 @@ std::vector<RecordField> buildFields() {
       {"any_hit_runs", FieldType::Uint, 1, true},
       {"intersection_runs", FieldType::Uint, 1, true},
       {"callable_runs", FieldType::Uint, 1, true},
+      {"any_hit_slots", FieldType::Uint, 1, true},
+      {"any_hit_repeats", FieldType::Uint, 1, true},
   };
   std::vector<RecordField> fields;
   uint32_t offset = kRecordWrittenMaskWord + 1;
@@ -60,6 +62,11 @@ int recordFieldIndex(const std::string& name) {
   for (size_t i = 0; i < fields.size(); ++i)
     if (name == fields[i].name) return static_cast<int>(i);
   return -1;
+}
+
+bool traversalDependent(const RecordField& f) {
+  const std::string n = f.name;
+  return n == "any_hit_runs" || n == "intersection_runs" || n == "any_hit_slots" || n == "any_hit_repeats";
 }
 
 uint32_t recordWords() {

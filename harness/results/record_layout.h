@@ -30,4 +30,17 @@ uint32_t recordWords();  // words per ray
 // Names of the automatic counters, in the order of the fields that hold them.
 //   raygen_runs, miss_runs, closest_hit_runs, any_hit_runs,
 //   intersection_runs, callable_runs
+// Then two automatic bit masks of the primitives any-hit ran on (R-AHIT-DUP
+// per primitive): any_hit_slots has bit anyHitSlot(instance, geometry,
+// primitive) set for every primitive any-hit ran on; any_hit_repeats has it
+// set when any-hit ran on a primitive whose bit was already set.
+constexpr uint32_t kAnyHitSlotInstanceFactor = 13, kAnyHitSlotGeometryFactor = 5;
+constexpr uint32_t anyHitSlot(uint32_t instance, uint32_t geometry, uint32_t primitive) {
+  return (instance * kAnyHitSlotInstanceFactor + geometry * kAnyHitSlotGeometryFactor + primitive) & 31u;
+}
+
+// An automatic field whose value depends on traversal order and duplicate
+// invocations (any_hit_runs, intersection_runs, any_hit_slots,
+// any_hit_repeats): never compared word for word with the model's.
+bool traversalDependent(const RecordField& f);
 }  // namespace rayspec

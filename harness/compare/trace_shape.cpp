@@ -1,0 +1,142 @@
+#include "compare/trace_shape.h"
+
+#include <functional>
+#include <set>
+
+#include "program/walk_program.h"
+
+namespace rayspec {
+namespace {
+
+size_t countKind(const Program& p, Stmt::Kind kind) {
+  size_t n = 0;
+  walkStatements(p, [&](const Stmt& s) { n += s.kind == kind; });
+  return n;
+}
+
+void forEachNonRaygen(const Pipeline& pipe, const std::function<void(const Program&)>& visit) {
+  for (const Program& p : pipe.miss) visit(p);
+  for (const Program& p : pipe.callables) visit(p);
+  for (const HitGroup& g : pipe.hit_groups)
+    for (const auto* p : {&g.closest_hit, &g.any_hit, &g.intersection})
+      if (*p) visit(**p);
+}
+
+// A trace's flags may hold skip_closest_hit: a flags expression that is not a
+// literal without the bit.
+bool traceMaySkipClosestHit(const Stmt& s) {
+  for (const Expr& e : s.trace.flags) {
+    if (e.kind != Expr::Kind::Literal || e.literal.empty()) return true;
+    if (static_cast<uint32_t>(e.literal[0]) & kRaySkipClosestHit) return true;
+  }
+  return false;
+}
+
+bool anyRaySkipsClosestHit(const Case& c) {
+  if (c.rays.defaults.flags & kRaySkipClosestHit) return true;
+  for (const Ray& r : c.rays.rays)
+    if (r.flags & kRaySkipClosestHit) return true;
+  bool skips = false;
+  walkStatements(c.pipeline.raygen, [&](const Stmt& s) {
+    if (s.kind == Stmt::Kind::Trace) skips = skips || traceMaySkipClosestHit(s);
+  });
+  return skips;
+}
+
+// Top-level `count` statements of p before any ignore or terminate (after
+// one, the rest of the program does not run), per counter; counters counted
+// anywhere else in p go to `conditional`.
+void topLevelCounts(const Program& p, std::map<std::string, uint32_t>& counts, std::set<std::string>& conditional) {
+  std::set<std::string> top;
+  bool ended = false;
+  for (const Stmt& s : p) {
+    if (s.kind == Stmt::Kind::Ignore || s.kind == Stmt::Kind::Terminate) ended = true;
+    if (s.kind == Stmt::Kind::Count && !ended) ++counts[s.counter];
+  }
+  std::map<std::string, uint32_t> every;
+  walkStatements(p, [&](const Stmt& s) {
+    if (s.kind == Stmt::Kind::Count) ++every[s.counter];
+  });
+  for (const auto& [name, n] : every) {
+    const auto it = counts.find(name);
+    if (it == counts.end() || it->second != n) conditional.insert(name);
+  }
+}
+
+struct StagePrograms {
+  const char* run_field;
+  std::vector<const Program*> programs;
+};
+
+std::vector<StagePrograms> stagesWithRunCounts(const Pipeline& pipe) {
+  std::vector<StagePrograms> out = {{"raygen_runs", {&pipe.raygen}}, {"miss_runs", {}}, {"closest_hit_runs", {}},
+                                    {"any_hit_runs", {}}, {"callable_runs", {}}};
+  for (const Program& p : pipe.miss) out[1].programs.push_back(&p);
+  for (const HitGroup& g : pipe.hit_groups) {
+    if (g.closest_hit) out[2].programs.push_back(&*g.closest_hit);
+    if (g.any_hit) out[3].programs.push_back(&*g.any_hit);
+  }
+  for (const Program& p : pipe.callables) out[4].programs.push_back(&p);
+  return out;
+}
+
+}  // namespace
+
+TraceShape traceShape(const Case& c) {
+  const Pipeline& pipe = c.pipeline;
+  TraceShape t;
+  size_t top_traces = 0;
+  for (const Stmt& s : pipe.raygen) top_traces += s.kind == Stmt::Kind::Trace;
+  size_t other_traces = 0;
+  forEachNonRaygen(pipe, [&](const Program& p) { other_traces += countKind(p, Stmt::Kind::Trace); });
+  t.single_trace = top_traces == 1 && countKind(pipe.raygen, Stmt::Kind::Trace) == 1 && other_traces == 0;
+  size_t top_calls = 0, other_calls = 0;
+  for (const Stmt& s : pipe.raygen) top_calls += s.kind == Stmt::Kind::Call;
+  forEachNonRaygen(pipe, [&](const Program& p) { other_calls += countKind(p, Stmt::Kind::Call); });
+  t.calls_fixed = top_calls == countKind(pipe.raygen, Stmt::Kind::Call) && other_calls == 0;
+  t.hit_runs_closest_hit = !anyRaySkipsClosestHit(c);
+  for (const HitGroup& g : pipe.hit_groups) t.hit_runs_closest_hit = t.hit_runs_closest_hit && g.closest_hit;
+  for (const SbtRecord& r : pipe.sbt_hit) t.hit_runs_closest_hit = t.hit_runs_closest_hit && r.group;
+  t.miss_runs_miss = !pipe.miss.empty();
+  for (const SbtRecord& r : pipe.sbt_miss) t.miss_runs_miss = t.miss_runs_miss && r.group;
+  return t;
+}
+
+std::map<std::string, CounterSource> counterSources(const Case& c) {
+  std::map<std::string, std::set<std::string>> stages_of;  // counter -> run fields of the stages counting it
+  std::set<std::string> conditional;
+  std::vector<std::pair<std::string, std::vector<std::map<std::string, uint32_t>>>> per_program;
+  for (const StagePrograms& s : stagesWithRunCounts(c.pipeline)) {
+    std::vector<std::map<std::string, uint32_t>> counts;
+    for (const Program* p : s.programs) {
+      counts.emplace_back();
+      topLevelCounts(*p, counts.back(), conditional);
+      walkStatements(*p, [&](const Stmt& st) {
+        if (st.kind == Stmt::Kind::Count) stages_of[st.counter].insert(s.run_field);
+      });
+    }
+    per_program.push_back({s.run_field, std::move(counts)});
+  }
+  // Intersection programs count what no run field follows.
+  for (const HitGroup& g : c.pipeline.hit_groups)
+    if (g.intersection)
+      walkStatements(*g.intersection, [&](const Stmt& st) {
+        if (st.kind == Stmt::Kind::Count) conditional.insert(st.counter);
+      });
+  std::map<std::string, CounterSource> out;
+  for (const auto& [counter, stages] : stages_of) {
+    if (stages.size() != 1 || conditional.count(counter)) continue;
+    for (const auto& [field, programs] : per_program) {
+      if (field != *stages.begin()) continue;
+      std::set<uint32_t> ks;
+      for (const auto& counts : programs) {
+        const auto it = counts.find(counter);
+        ks.insert(it == counts.end() ? 0 : it->second);
+      }
+      if (ks.size() == 1 && *ks.begin() > 0) out[counter] = {field, *ks.begin()};
+    }
+  }
+  return out;
+}
+
+}  // namespace rayspec

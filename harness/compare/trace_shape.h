@@ -1,0 +1,41 @@
+// What every legal answer of a ray shares, read from the shape of the case's
+// programs: how many traces a ray makes and which shader each of them runs,
+// and which counters follow from the per-ray run counts. An ambiguous ray
+// (several legal answers) is still held to all of it.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "case/case.h"
+
+namespace rayspec {
+
+struct TraceShape {
+  // raygen traces exactly once, at its top level, and no other stage traces
+  // (or calls): a launch ray makes one trace, whatever it hits
+  bool single_trace = false;
+  // each hit of that trace runs exactly one closest-hit: every hit group has
+  // one, no hit record is all zero, no ray or trace may skip closest-hit
+  bool hit_runs_closest_hit = false;
+  // each miss runs a miss shader: no miss record is all zero
+  bool miss_runs_miss = false;
+  // every callable call is at the top level of raygen: each launch ray runs
+  // the same number of callables whatever its trace finds
+  bool calls_fixed = false;
+};
+TraceShape traceShape(const Case& c);
+
+// A counter every run of one stage counts the same number of times: counted
+// only by `count` statements at the top level of that stage's programs (the
+// raygen, miss or closest-hit stage, or any-hit), `per_run` times in each of
+// them. Then counter == per_run * (sum of that stage's per-ray run counts),
+// on any device, legal or not, that records both.
+struct CounterSource {
+  std::string run_field;  // raygen_runs, miss_runs, closest_hit_runs or any_hit_runs
+  uint32_t per_run = 0;
+};
+// The counters with such a source.
+std::map<std::string, CounterSource> counterSources(const Case& c);
+
+}  // namespace rayspec

@@ -1,0 +1,105 @@
+// Generic wrong devices (harness/mutate/): the model's own results stand in
+// for a perfect device; each mutant of them must fail the comparison or carry
+// the reason it may legally survive.
+#include <gtest/gtest.h>
+
+#include "model/model_backend.h"
+#include "mutate/kill_matrix.h"
+#include "mutate/mutate_case.h"
+#include "suite_cases.h"
+
+namespace rayspec {
+namespace {
+
+CaseMutation mutateSuiteCase(const std::string& name) {
+  const std::vector<CaseFile> files = findCases(kSuiteCases, name);
+  EXPECT_EQ(files.size(), 1u) << name;
+  const ParseResult parsed = loadSuiteCase(files.at(0));
+  EXPECT_TRUE(parsed.value) << name;
+  const Case& c = *parsed.value;
+  const Plan plan = derivePlan(c);
+  const Results model = runOnModel(c, plan, {});
+  Results device = model;
+  device.backend = "vulkan";
+  return mutateCase(c, plan, device, model);
+}
+
+const MutantOutcome* find(const CaseMutation& m, const std::string& name) {
+  for (const MutantOutcome& o : m.mutants)
+    if (o.name == name) return &o;
+  return nullptr;
+}
+
+// Every ray of shared-edges is ambiguous: before, the null device, the miss
+// and closest-hit counters moved by one, and `hit` perturbed all passed.
+TEST(Mutate, EveryRayAmbiguousStillKillsGenericMutants) {
+  const CaseMutation m = mutateSuiteCase("watertight/shared-edges");
+  ASSERT_TRUE(m.judged) << m.not_judged;
+  for (const char* name : {"null-device", "counter:miss+1", "counter:miss-1", "counter:closesthit+1",
+                           "counter:closesthit-1", "field:hit", "field:raygen_runs", "miss-and-closest-hit",
+                           "images-zeroed"}) {
+    const MutantOutcome* o = find(m, name);
+    ASSERT_NE(o, nullptr) << name;
+    ASSERT_TRUE(o->mutation.applied) << name << ": " << o->mutation.what;
+    EXPECT_TRUE(o->killed) << name << " survives: " << o->headline;
+  }
+}
+
+// A counter any-hit counts depends on traversal order: its survivors carry
+// that reason; no survivor of the case is left without one.
+TEST(Mutate, SurvivorsCarryTheirLegalReason) {
+  const CaseMutation m = mutateSuiteCase("anyhit/ignore-odd-primitives");
+  ASSERT_TRUE(m.judged) << m.not_judged;
+  const MutantOutcome* o = find(m, "counter:ignored+1");
+  ASSERT_NE(o, nullptr);
+  EXPECT_FALSE(o->killed);
+  EXPECT_NE(o->legal_reason.find("traversal order"), std::string::npos) << o->legal_reason;
+  for (const MutantOutcome& x : m.mutants)
+    if (x.mutation.applied && !x.killed) EXPECT_FALSE(x.legal_reason.empty()) << x.name << " survives with no reason";
+}
+
+// TerminateOnFirstHit: a device that ignores the flag runs any-hit twice a
+// ray; the declared-exact counter no longer gets the FirstHit rays' slack.
+TEST(Mutate, DeclaredExactCounterHasNoSlack) {
+  const CaseMutation m = mutateSuiteCase("results/terminate-on-first-hit");
+  ASSERT_TRUE(m.judged) << m.not_judged;
+  for (const char* name : {"counter:first_hit_anyhit+1", "counter:first_hit_anyhit-1"}) {
+    const MutantOutcome* o = find(m, name);
+    ASSERT_NE(o, nullptr) << name;
+    EXPECT_TRUE(o->killed) << name << ": " << o->headline;
+  }
+}
+
+// Robustness probes: raygen's count before the trace is exact even there.
+TEST(Mutate, NullDeviceFailsTheUndefinedRaysProbe) {
+  const CaseMutation m = mutateSuiteCase("robustness/undefined-rays");
+  ASSERT_TRUE(m.judged) << m.not_judged;
+  const MutantOutcome* o = find(m, "null-device");
+  ASSERT_NE(o, nullptr);
+  EXPECT_TRUE(o->mutation.applied) << o->mutation.what;
+  EXPECT_TRUE(o->killed) << o->headline;
+}
+
+// The matrix counts per kind and family, and a survivor with no reason is a hole.
+TEST(Mutate, KillMatrixCountsHoles) {
+  CaseMutation c;
+  c.name = "fam/a";
+  c.family = "fam";
+  c.judged = true;
+  MutantOutcome killed, legal, hole;
+  killed.kind = legal.kind = hole.kind = "field";
+  killed.mutation.applied = legal.mutation.applied = hole.mutation.applied = true;
+  killed.killed = true;
+  legal.legal_reason = "allowed";
+  c.mutants = {killed, legal, hole};
+  const KillMatrix m = buildKillMatrix({c});
+  EXPECT_EQ(m.by_kind.at("field").applied, 3u);
+  EXPECT_EQ(m.by_kind.at("field").killed, 1u);
+  EXPECT_EQ(m.by_kind.at("field").legal, 1u);
+  EXPECT_EQ(m.unexplained(), 1u);
+  EXPECT_NE(killMatrixText(m).find("1 survive with no reason"), std::string::npos);
+  EXPECT_NE(killMatrixJson(m, "run", "dev").find("\"unexplained_survivors\": 1"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace rayspec
