@@ -126,8 +126,7 @@ void compareAnyHitRuns(const Case& c, const Results& device, const Results& mode
   const uint32_t words = recordWords();
   const uint32_t ahit = findRecordField("any_hit_runs")->offset, chit = findRecordField("closest_hit_runs")->offset,
                  isect = findRecordField("intersection_runs")->offset;
-  std::map<uint32_t, const RayAmbiguity*> ambiguous;
-  for (const RayAmbiguity& a : model.ambiguous) ambiguous[a.ray] = &a;
+  const auto ambiguous = ambiguityByRay(model);
   // A double hit (R-WATERTIGHT, a "should"): on a ray through a shared edge
   // or vertex whose candidates were all ignored, the model ran any-hit once
   // for each of the h triangles sharing it that it decided as hits (one

@@ -32,11 +32,12 @@ void checkAgainstRecords(const Case& c, const std::string& name, const CounterSo
 
 }  // namespace
 
-// A counter the case declares exact
-// is exact (the case claims every legal answer counts it alike); a raygen
-// count that follows raygen_runs cannot move; one that follows miss or
-// closest-hit runs moves only on rays with both a hit and a miss among their
-// answers (one trace per ray: the rest differ in which hit, not in whether);
+// A counter the case declares exact is exact (the case claims every legal
+// answer counts it alike); a raygen count that follows raygen_runs cannot
+// move; one that follows miss or closest-hit runs moves only on rays with
+// both a hit and a miss among their answers (one trace per ray: the rest
+// differ in which hit, not in whether); one that only the programs run decide
+// (trace_shape.h) moves only on rays whose answers run other programs;
 // anything else, once per ambiguous ray.
 uint64_t counterSlack(const Case& c, const std::string& name, const Results& model) {
   const std::map<std::string, CounterSource> sources = counterSources(c);
@@ -46,14 +47,20 @@ uint64_t counterSlack(const Case& c, const std::string& name, const Results& mod
   if (src != sources.end() && src->second.run_field == "raygen_runs") return 0;
   const bool follows_outcome = src != sources.end() && (src->second.run_field == "miss_runs" ||
                                                         src->second.run_field == "closest_hit_runs");
-  if (!follows_outcome || !shape.single_trace) return model.ambiguous.size();
-  uint64_t rays = 0;
-  for (const RayAmbiguity& a : model.ambiguous) {
-    bool hit = false, miss = false;
-    for (const Candidate& k : a.candidates) (k.hit ? hit : miss) = true;
-    rays += hit && miss;
+  if (follows_outcome && shape.single_trace) {
+    uint64_t rays = 0;
+    for (const RayAmbiguity& a : model.ambiguous) {
+      bool hit = false, miss = false;
+      for (const Candidate& k : a.candidates) (k.hit ? hit : miss) = true;
+      rays += hit && miss;
+    }
+    return rays * src->second.per_run;
   }
-  return rays * src->second.per_run;
+  // Counted where only the programs that run decide it: rays whose answers
+  // run other programs, each by at most every count of it.
+  if (shape.single_trace && countedByProgramsAlone(c, name))
+    return raysRunningOtherPrograms(model) * countStatements(c, name);
+  return model.ambiguous.size();
 }
 
 void compareCounters(const Case& c, const Results& device, const Results& model, size_t undefined_rays, Verdict& v) {

@@ -96,8 +96,7 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
                     const std::set<uint32_t>& undefined, Verdict& v) {
   const uint32_t words = recordWords();
   const size_t rays = device.records.size() / words;
-  std::map<uint32_t, const RayAmbiguity*> ambiguous;
-  for (const RayAmbiguity& a : model.ambiguous) ambiguous[a.ray] = &a;
+  const auto ambiguous = ambiguityByRay(model);
   // R-PREC: clear rays whose t the model bounds more widely than the default.
   std::map<uint32_t, float> t_bounds;
   for (const TBound& b : model.t_bounds) t_bounds[b.ray] = b.bound;

@@ -139,4 +139,51 @@ std::map<std::string, CounterSource> counterSources(const Case& c) {
   return out;
 }
 
+bool countedByProgramsAlone(const Case& c, const std::string& counter) {
+  bool alone = true;
+  auto visit = [&](const Program& p) {
+    size_t top = 0, all = 0;
+    bool ended = false;
+    for (const Stmt& s : p) {
+      if (s.kind == Stmt::Kind::Ignore || s.kind == Stmt::Kind::Terminate) ended = true;
+      if (s.kind == Stmt::Kind::Count && s.counter == counter && !ended) ++top;
+    }
+    size_t calls_top = 0, calls = 0;
+    for (const Stmt& s : p)
+      calls_top += s.kind == Stmt::Kind::Call && s.call_index.kind == Expr::Kind::Literal;
+    walkStatements(p, [&](const Stmt& s) {
+      all += s.kind == Stmt::Kind::Count && s.counter == counter;
+      calls += s.kind == Stmt::Kind::Call;
+    });
+    alone = alone && top == all && calls_top == calls;
+  };
+  visit(c.pipeline.raygen);
+  forEachNonRaygen(c.pipeline, visit);
+  return alone;
+}
+
+size_t countStatements(const Case& c, const std::string& counter) {
+  size_t n = 0;
+  auto visit = [&](const Program& p) {
+    walkStatements(p, [&](const Stmt& s) { n += s.kind == Stmt::Kind::Count && s.counter == counter; });
+  };
+  visit(c.pipeline.raygen);
+  forEachNonRaygen(c.pipeline, visit);
+  return n;
+}
+
+size_t raysRunningOtherPrograms(const Results& model) {
+  size_t n = 0;
+  for (const RayAmbiguity& a : model.ambiguous) {
+    std::set<std::pair<uint32_t, uint32_t>> hits;
+    bool miss = false;
+    for (const Candidate& k : a.candidates) {
+      if (k.hit) hits.insert({k.instance, k.geometry});
+      else miss = true;
+    }
+    n += (miss && !hits.empty()) || hits.size() > 1;
+  }
+  return n;
+}
+
 }  // namespace rayspec

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "case/case.h"
+#include "results/results.h"
 
 namespace rayspec {
 
@@ -37,5 +38,17 @@ struct CounterSource {
 };
 // The counters with such a source.
 std::map<std::string, CounterSource> counterSources(const Case& c);
+
+// Every `count` of the counter is at the top level of its program (before any
+// ignore or terminate), and every callable call is at the top level with a
+// literal index: then what a ray counts follows from which programs its
+// answer runs (miss, or the hit record of an instance and geometry) alone.
+bool countedByProgramsAlone(const Case& c, const std::string& counter);
+// How many `count` statements name the counter, over every program.
+size_t countStatements(const Case& c, const std::string& counter);
+
+// Ambiguous rays whose legal answers may run other programs: a hit and a
+// miss, or hits in different instances or geometries (other hit records).
+size_t raysRunningOtherPrograms(const Results& model);
 
 }  // namespace rayspec

@@ -9,13 +9,6 @@
 namespace rayspec {
 namespace {
 
-bool sameResults(const Results& a, const Results& b) {
-  if (a.records != b.records || a.counters != b.counters || a.images.size() != b.images.size()) return false;
-  for (size_t i = 0; i < a.images.size(); ++i)
-    if (a.images[i].texels != b.images[i].texels) return false;
-  return true;
-}
-
 bool namesRule(const Verdict& v, const std::string& rule) {
   for (const Finding& f : v.findings)
     if (f.status == v.status && f.rule.find(rule) != std::string::npos) return true;
@@ -32,7 +25,7 @@ FaultOutcome plant(const std::string& fault, bool legal, const Case& c, const Pl
   o.applied = f.applied;
   o.what = f.what;
   if (!f.applied) return o;
-  o.changed = !sameResults(device, perfect);
+  o.changed = !sameOutput(device, perfect);
   const Verdict v = compareResults(c, plan, device, model);
   o.status = v.status;
   o.names_rule = namesRule(v, rule);

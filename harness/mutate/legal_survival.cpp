@@ -5,7 +5,7 @@
 #include <set>
 
 #include "compare/counter_modes.h"
-#include "compare/compare_results.h"
+#include "compare/trace_shape.h"
 #include "fault/record_edit.h"
 
 namespace rayspec {
@@ -18,7 +18,11 @@ bool everyRayUndefined(const MutantInput& in, const Mutation& m) {
   return std::all_of(m.rays.begin(), m.rays.end(), [&](uint32_t r) { return undefined.count(r) > 0; });
 }
 
-std::string counterReason(const MutantInput& in, const Mutation& m, uint64_t slack) {
+// Derived here, not from the comparison's own slack (compare/compare_counters):
+// a counter that follows one stage's run count is pinned by the records; one
+// that follows which programs run moves only with rays whose answers run
+// other programs; one counted conditionally, with any ambiguous ray.
+std::string counterReason(const MutantInput& in, const Mutation& m) {
   const auto modes = counterModes(in.c);
   const auto it = modes.find(m.counter);
   if (it == modes.end()) return "";
@@ -35,9 +39,16 @@ std::string counterReason(const MutantInput& in, const Mutation& m, uint64_t sla
       return m.delta < 0 ? "counter '" + m.counter + "' is at_most: a device may run it less often" : "";
     case CounterMode::Exact: break;
   }
-  if (slack > 0)
-    return "counter '" + m.counter + "' may legally move by up to " + std::to_string(slack) +
-           ": the legal answers of the ambiguous rays may change it";
+  if (counterSources(in.c).count(m.counter)) return "";  // pinned by the per-ray run counts
+  if (countedByProgramsAlone(in.c, m.counter)) {
+    const size_t rays = raysRunningOtherPrograms(in.model);
+    return rays ? "counter '" + m.counter + "' follows which programs run, and " + std::to_string(rays) +
+                      " ambiguous rays have legal answers that run other programs"
+                : "";
+  }
+  if (!in.model.ambiguous.empty())
+    return "counter '" + m.counter + "' is counted conditionally (in an if, after a call by a computed index, "
+           "...), and " + std::to_string(in.model.ambiguous.size()) + " ambiguous rays have several legal answers";
   return "";
 }
 
@@ -46,8 +57,7 @@ std::string counterReason(const MutantInput& in, const Mutation& m, uint64_t sla
 bool identityStaysLegal(const MutantInput& in, const Mutation& m, const Results& mutated) {
   static const std::set<std::string> identity = {"primitive_id", "instance_id", "geometry_index"};
   if (!identity.count(m.field) || m.rays.empty()) return false;
-  std::map<uint32_t, const RayAmbiguity*> ambiguous;
-  for (const RayAmbiguity& a : in.model.ambiguous) ambiguous[a.ray] = &a;
+  const auto ambiguous = ambiguityByRay(in.model);
   const RecordView view{mutated};
   for (uint32_t r : m.rays) {
     const auto it = ambiguous.find(r);
@@ -58,6 +68,31 @@ bool identityStaysLegal(const MutantInput& in, const Mutation& m, const Results&
       if (!k.hit) continue;
       const uint32_t own = m.field == "primitive_id" ? k.primitive : m.field == "instance_id" ? k.instance : k.geometry;
       legal = legal || own == value;
+    }
+    if (!legal) return false;
+  }
+  return true;
+}
+
+// Both swapped rays are ambiguous, and the answer each got from the other
+// (its identity, or a miss) is one of its own legal answers.
+bool swappedAnswersStayLegal(const MutantInput& in, const Mutation& m, const Results& mutated) {
+  if (m.rays.size() != 2) return false;
+  const auto ambiguous = ambiguityByRay(in.model);
+  const RecordView view{mutated};
+  for (uint32_t r : m.rays) {
+    const auto it = ambiguous.find(r);
+    if (it == ambiguous.end()) return false;
+    const bool hit = view.get(r, "closest_hit_runs") > 0;
+    bool legal = false;
+    for (const Candidate& k : it->second->candidates) {
+      if (!hit) {
+        legal = legal || !k.hit;
+        continue;
+      }
+      legal = legal || (k.hit && (!view.written(r, "primitive_id") || view.get(r, "primitive_id") == k.primitive) &&
+                        (!view.written(r, "instance_id") || view.get(r, "instance_id") == k.instance) &&
+                        (!view.written(r, "geometry_index") || view.get(r, "geometry_index") == k.geometry));
     }
     if (!legal) return false;
   }
@@ -76,8 +111,7 @@ bool anyAabbs(const Case& c) {
 // does not work out each legal hit's value (only its identity).
 bool valueOfAnotherLegalHit(const MutantInput& in, const Mutation& m) {
   if (m.field.empty() || m.rays.empty()) return false;
-  std::map<uint32_t, const RayAmbiguity*> ambiguous;
-  for (const RayAmbiguity& a : in.model.ambiguous) ambiguous[a.ray] = &a;
+  const auto ambiguous = ambiguityByRay(in.model);
   for (uint32_t r : m.rays) {
     const auto it = ambiguous.find(r);
     if (it == ambiguous.end()) return false;
@@ -101,13 +135,16 @@ bool everyGeometryNoDuplicate(const Case& c) {
 }  // namespace
 
 std::string legalSurvival(const MutantInput& in, const GenericMutant& g, const Mutation& m, const Results& mutated) {
-  if (!m.counter.empty()) return counterReason(in, m, counterSlack(in.c, m.counter, in.model));
+  if (!m.counter.empty()) return counterReason(in, m);
   if (!m.field.empty() && identityStaysLegal(in, m, mutated))
-    return "every changed ray is ambiguous and its new " + m.field + " is one of its legal hits'";
+    return "every changed ray is ambiguous and its new " + m.field + " is one of its legal hits";
   if (everyRayUndefined(in, m)) return "R-UB: every changed ray has undefined behaviour";
   if (!m.field.empty() && valueOfAnotherLegalHit(in, m))
     return "every changed ray is ambiguous among several legal hits and closest-hit computes " + m.field +
            " from the hit taken: the model lists each legal hit, not the value it would give";
+  if (g.kind == "swap-rays" && swappedAnswersStayLegal(in, m, mutated))
+    return "both swapped rays are ambiguous, and the answer each took from the other is one of its own legal "
+           "answers";
   if (g.kind == "any-hit-skipped" && anyAabbs(in.c))
     return "R-ORDER-UNSPEC: the scene has AABBs, whose intersection programs may report beyond a nearer hit "
            "another order finds first: the model's any-hit count is no minimum there";

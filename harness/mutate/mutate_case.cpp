@@ -6,13 +6,6 @@
 namespace rayspec {
 namespace {
 
-bool sameResults(const Results& a, const Results& b) {
-  if (a.records != b.records || a.counters != b.counters || a.images.size() != b.images.size()) return false;
-  for (size_t i = 0; i < a.images.size(); ++i)
-    if (a.images[i].texels != b.images[i].texels) return false;
-  return true;
-}
-
 std::string familyOf(const std::string& name) { return name.substr(0, name.find('/')); }
 
 MutantOutcome judgeMutant(const MutantInput& in, const GenericMutant& g, const Results& device) {
@@ -21,7 +14,7 @@ MutantOutcome judgeMutant(const MutantInput& in, const GenericMutant& g, const R
   o.name = g.name;
   Results mutated = device;
   o.mutation = g.apply(in, g.target, mutated);
-  if (o.mutation.applied && sameResults(mutated, device)) {
+  if (o.mutation.applied && sameOutput(mutated, device)) {
     o.mutation.applied = false;
     o.mutation.what = "changed nothing: " + o.mutation.what;
   }

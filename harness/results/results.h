@@ -149,4 +149,10 @@ struct Results {
   uint64_t case_hash = 0;   // Case::source_hash of the case run: a saved bundle judged later must match it
 };
 
+// What a trace produced is the same: counters, records and image texels
+// (results_queries.cpp).
+bool sameOutput(const Results& a, const Results& b);
+// The model's ambiguous rays by launch index.
+std::map<uint32_t, const RayAmbiguity*> ambiguityByRay(const Results& model);
+
 }  // namespace rayspec

@@ -1,0 +1,140 @@
+// What the comparison holds every device to beyond the model's one answer:
+// the rules all legal answers of an ambiguous ray share, counters against
+// the device's own run counts, NO_DUPLICATE_ANY_HIT per primitive, and the
+// rules a finding names (compare/trace_shape.h, ambiguous_shared.cpp,
+// compare_counters.cpp, compare_any_hit.cpp, finding_rules.h).
+#include <gtest/gtest.h>
+
+#include "compare/finding_rules.h"
+#include "compare/trace_shape.h"
+#include "compare_samples.h"
+
+namespace rayspec {
+namespace {
+
+Stmt traceStmt() {
+  Stmt s;
+  s.kind = Stmt::Kind::Trace;
+  return s;
+}
+
+// The sample case with raygen tracing once.
+Case oneTraceCase() {
+  Case c = sampleCase();
+  c.pipeline.raygen = {traceStmt()};
+  return c;
+}
+
+TEST(TraceShape, OneTraceFromRaygen) {
+  Case c = oneTraceCase();
+  EXPECT_TRUE(traceShape(c).single_trace);
+  EXPECT_TRUE(traceShape(c).hit_runs_closest_hit);
+  c.pipeline.hit_groups[0].closest_hit->push_back(traceStmt());  // recursion: more traces on a hit
+  EXPECT_FALSE(traceShape(c).single_trace);
+  Case skip = oneTraceCase();
+  skip.rays.defaults.flags = kRaySkipClosestHit;
+  EXPECT_FALSE(traceShape(skip).hit_runs_closest_hit);
+}
+
+TEST(TraceShape, CountersThatFollowOneStagesRuns) {
+  Case c = oneTraceCase();
+  auto sources = counterSources(c);
+  ASSERT_TRUE(sources.count("miss"));
+  EXPECT_EQ(sources.at("miss").run_field, "miss_runs");
+  EXPECT_EQ(sources.at("ahit").run_field, "any_hit_runs");
+  // Counted inside an if: no longer once per run.
+  Stmt cond;
+  cond.kind = Stmt::Kind::If;
+  cond.then_ = {count("chit")};
+  c.pipeline.hit_groups[0].closest_hit = Program{cond};
+  EXPECT_FALSE(counterSources(c).count("chit"));
+  EXPECT_FALSE(countedByProgramsAlone(c, "chit"));
+  EXPECT_TRUE(countedByProgramsAlone(c, "miss"));
+}
+
+TEST(CompareShared, CountersMustAgreeWithTheDevicesOwnRecords) {
+  const Case c = oneTraceCase();
+  Results d = sampleResults("vulkan");
+  d.counters["ahit"] = 3;  // any_hit_runs total 2: any-hit is informational, but the records say 2
+  const Verdict v = compareResults(c, samplePlan(c), d, sampleResults("model"));
+  EXPECT_EQ(v.status, Status::Fail) << v.headline();
+  EXPECT_TRUE(findingNames(v, Status::Fail, "the counter and the records disagree")) << v.headline();
+}
+
+// A ray through a shared edge: every legal answer hits, runs raygen once and
+// one closest-hit. Before, a device that ran nothing there passed.
+TEST(CompareShared, AmbiguousRaysKeepWhatEveryAnswerShares) {
+  const Case c = oneTraceCase();
+  Results m = sampleResults("model");
+  m.ambiguous.push_back({0, AmbiguityReason::Edge, {{true, 0, 0, 0}, {true, 0, 0, 1}}});
+  Results legal = sampleResults("vulkan");
+  setUint(legal, 0, "primitive_id", 1);
+  legal.images[0].texels[0] = 1;
+  EXPECT_EQ(compareResults(c, samplePlan(c), legal, m).status, Status::Pass);
+  Results no_raygen = legal;
+  setUint(no_raygen, 0, "raygen_runs", 0);
+  EXPECT_TRUE(findingNames(compareResults(c, samplePlan(c), no_raygen, m), Status::Fail, "raygen did not run once"));
+  Results both = legal;
+  setUint(both, 0, "miss_runs", 1);
+  countFromRecords(both);
+  EXPECT_TRUE(findingNames(compareResults(c, samplePlan(c), both, m), Status::Fail, "R-MISS-XOR-CHIT"));
+  Results nothing = legal;  // neither miss nor closest-hit, though every answer runs one
+  setUint(nothing, 0, "closest_hit_runs", 0);
+  countFromRecords(nothing);
+  EXPECT_TRUE(findingNames(compareResults(c, samplePlan(c), nothing, m), Status::Fail, "R-MISS-XOR-CHIT"));
+  Results far = legal;  // the same t for every hit through the edge
+  setFloat(far, 0, "hit_t", 2.5f);
+  EXPECT_TRUE(findingNames(compareResults(c, samplePlan(c), far, m), Status::Fail, "hit_t"));
+  Results image = legal;  // the image must show the device's own record
+  image.images[0].texels[0] = 0;
+  EXPECT_TRUE(findingNames(compareResults(c, samplePlan(c), image, m), Status::Fail, "own records"));
+}
+
+// The miss counter follows miss runs: only a ray that may hit or miss lets
+// it move; the edge ray above (two hits) does not.
+TEST(CompareShared, CounterSlackOnlyWhereLegalAnswersDiffer) {
+  const Case c = oneTraceCase();
+  Results m = sampleResults("model");
+  m.ambiguous.push_back({0, AmbiguityReason::Edge, {{true, 0, 0, 0}, {true, 0, 0, 1}}});
+  EXPECT_EQ(counterSlack(c, "miss", m), 0u);
+  m.ambiguous.push_back({1, AmbiguityReason::TmaxTie, {{true, 0, 0, 1}, {false, 0, 0, 0}}});
+  EXPECT_EQ(counterSlack(c, "miss", m), 1u);
+  Case declared = c;
+  declared.outputs.counter_modes["miss"] = "exact";
+  EXPECT_EQ(counterSlack(declared, "miss", m), 0u);
+}
+
+// NO_DUPLICATE_ANY_HIT per primitive: any-hit twice on one primitive fails,
+// even where the total per ray is right.
+TEST(CompareShared, AnyHitRepeatOnOnePrimitiveFails) {
+  Case c = oneTraceCase();
+  Geometry g;
+  g.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}};
+  g.flags = kGeometryNoDuplicateAnyHit;
+  c.scene.blases.push_back({"two", {g}, {}});
+  Instance in;
+  in.blas = 0;
+  c.scene.instances.push_back(in);
+  Results m = sampleResults("model");
+  Results d = sampleResults("vulkan");
+  setUint(d, 0, "any_hit_slots", 1u << anyHitSlot(0, 0, 0));
+  setUint(d, 0, "any_hit_repeats", 1u << anyHitSlot(0, 0, 0));
+  const Verdict v = compareResults(c, samplePlan(c), d, m);
+  EXPECT_TRUE(findingNames(v, Status::Fail, "ran twice on one primitive")) << v.headline();
+  c.scene.blases[0].geometries[0].flags = 0;  // duplicates allowed
+  EXPECT_FALSE(findingNames(compareResults(c, samplePlan(c), d, m), Status::Fail, "ran twice"));
+}
+
+TEST(FindingRules, AFindingNamesTheClaimedRulesItsFieldEvidences) {
+  EXPECT_EQ(findingRule(rulesEvidencedByField("hit_kind"), {"R-FACE-DET", "R-RECURSION"}, "R-HITKIND-TRI"),
+            "R-FACE-DET");
+  EXPECT_EQ(findingRule(rulesEvidencedByField("depth"), {"R-FACE-DET"}, "R-RECURSION"), "R-RECURSION");
+  EXPECT_EQ(findingRule(rulesEvidencedByField("hit_kind"), {"R-HITKIND-TRI", "R-FACE-DET"}, "R-HITKIND-TRI"),
+            "R-FACE-DET/R-HITKIND-TRI");
+  const Case c = oneTraceCase();
+  const auto callable = rulesEvidencedByCounter(c, "miss");
+  EXPECT_NE(std::find(callable.begin(), callable.end(), "R-MISS-XOR-CHIT"), callable.end());
+}
+
+}  // namespace
+}  // namespace rayspec
