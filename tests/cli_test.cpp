@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <utility>
+#include <vector>
 #include <regex>
 #include <sstream>
 
@@ -51,6 +53,31 @@ TEST(Isolation, HangIsATimeout) {
   EXPECT_EQ(rc, 1) << slurp(out + "/log.txt");
   EXPECT_EQ(readDeqpCsv(out + "/results.csv").at("results/miss-xor-closest-hit"), "Timeout");
   EXPECT_LT(seconds, 60.0);
+}
+
+// Cases two at once in long-lived workers: a crash, a hang and a lost device
+// planted in one case in the middle cost only that case; every other case,
+// those its worker runs next included, passes.
+TEST(Isolation, FaultsInAParallelRunCostOnlyTheirCase) {
+  const std::vector<std::string> cases{"results/miss-xor-closest-hit", "anyhit/ignore-odd-primitives",
+                                       "anyhit/ignore-keeps-tmax",      "anyhit/terminate-accepts",
+                                       "anyhit/unused-any-hit",         "builtins/any-hit-and-intersection"};
+  std::string args;
+  for (const std::string& c : cases) args += caseArg(c);
+  for (const auto& [fault, status] : std::vector<std::pair<std::string, std::string>>{
+           {"crash", "Crash"}, {"hang", "Timeout"}, {"device-lost", "Crash"}}) {
+    SCOPED_TRACE(fault);
+    const std::string out = fresh("parallel-" + fault);
+    const int rc = sh(std::string(RAYSPEC_BIN) + " run -j 2 --timeout 5 --plant-fault " + fault +
+                          " --plant-fault-in anyhit/ignore-keeps-tmax" + args + " --out " + out +
+                          " --cache-dir " + out + "/cache",  // no timings: dealt in this order, the fault third
+                      out + "/log.txt");
+    EXPECT_EQ(rc, 1) << slurp(out + "/log.txt");
+    const auto results = readDeqpCsv(out + "/results.csv");
+    ASSERT_EQ(results.size(), cases.size()) << slurp(out + "/log.txt");
+    for (const std::string& c : cases)
+      EXPECT_EQ(results.at(c), c == "anyhit/ignore-keeps-tmax" ? status : "Pass") << c << "\n" << slurp(out + "/log.txt");
+  }
 }
 
 TEST(Isolation, ProcessFaultNeedsIsolation) {

@@ -58,5 +58,27 @@ TEST(Shard, GoogleTestVariablesCountFromZeroAndTouchTheStatusFile) {
   EXPECT_EQ(error, "");
 }
 
+// GitLab CI's parallel jobs: CI_NODE_INDEX counts from 1; GoogleTest's
+// variables, when set too, win.
+TEST(Shard, GitLabVariablesCountFromOne) {
+  setenv("CI_NODE_TOTAL", "4", 1);
+  setenv("CI_NODE_INDEX", "4", 1);
+  std::string error;
+  auto s = shardFromEnvironment(&error);
+  ASSERT_TRUE(s) << error;
+  EXPECT_EQ(s->index, 3u);
+  EXPECT_EQ(s->count, 4u);
+  setenv("CI_NODE_INDEX", "0", 1);
+  EXPECT_FALSE(shardFromEnvironment(&error));
+  EXPECT_NE(error.find("CI_NODE_INDEX=0"), std::string::npos) << error;
+  error.clear();
+  setenv("GTEST_TOTAL_SHARDS", "2", 1);
+  setenv("GTEST_SHARD_INDEX", "0", 1);
+  s = shardFromEnvironment(&error);
+  ASSERT_TRUE(s) << error;
+  EXPECT_EQ(s->count, 2u);
+  for (const char* v : {"CI_NODE_TOTAL", "CI_NODE_INDEX", "GTEST_TOTAL_SHARDS", "GTEST_SHARD_INDEX"}) unsetenv(v);
+}
+
 }  // namespace
 }  // namespace rayspec

@@ -65,11 +65,18 @@ int main(int argc, char** argv) {
       ->check(rayspec::positiveSeconds())
       ->capture_default_str();
   run->add_option("--memory-limit", run_opt.memory_limit,
-                  "Memory each case side's process may hold (RLIMIT_DATA; e.g. 8G, 512M; 0: no limit); beyond "
-                  "it the case is a Crash")
+                  "Memory each worker process may hold (RLIMIT_DATA; e.g. 8G, 512M; 0: no limit); beyond "
+                  "it the case that was running is a Crash")
       ->transform(CLI::AsSizeValue(false))
       ->check(rayspec::memoryLimit())
       ->default_str(std::to_string(rayspec::kDefaultMemoryLimit >> 30) + "G");
+  run->add_option("-j,--jobs", run_opt.jobs,
+                  "Cases at once (0: one per core, at most 16); each side of a case runs in a long-lived worker "
+                  "process, a new one after a crash, timeout or memory-limit hit")
+      ->capture_default_str();
+  run->add_flag("--process-per-case", run_opt.process_per_case,
+                "Each side of each case in a process of its own instead of long-lived workers (slower; a new "
+                "VkInstance and VkDevice per case)");
   run->add_flag("--no-isolation", run_opt.no_isolation,
                 "Run the model and the device in this process (one VkDevice for every case; no timeout, no "
                 "memory limit, a crash ends the run)");

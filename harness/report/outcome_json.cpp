@@ -1,5 +1,7 @@
 #include "report/outcome_json.h"
 
+#include "report/case_journal.h"
+
 #include "results/file_name.h"
 
 #include "report/case_cost.h"
@@ -132,6 +134,13 @@ SavedRun readSavedRun(const std::string& dir, std::string* error) {
     for (const nlohmann::json& c : j.at("cases")) run.outcomes.push_back(outcomeFromJson(c));
   } catch (const std::exception& e) {
     *error = path + ": " + e.what();
+    return run;
+  }
+  // A run that did not finish: its journal holds every case that ended.
+  bool found = false;
+  if (run.info.interrupted) {
+    std::vector<CaseOutcome> journal = readJournal(dir, &found, error);
+    if (found && error->empty()) run.outcomes = std::move(journal);
   }
   return run;
 }

@@ -25,7 +25,8 @@ struct SavedRun {
   std::vector<CaseOutcome> outcomes;
 };
 // error: the folder has no readable summary.json, or names the case and
-// field that could not be read.
+// field that could not be read. A run marked interrupted takes its cases
+// from its journal (report/case_journal.h) where it has one.
 SavedRun readSavedRun(const std::string& dir, std::string* error);
 
 }  // namespace rayspec

@@ -9,6 +9,7 @@
 #include "plan/plan.h"
 #include "report/baseline_gate.h"
 #include "report/case_cost.h"
+#include "report/case_journal.h"
 #include "results/file_name.h"
 #include "results/results_io.h"
 #include "run/device_results.h"
@@ -28,7 +29,12 @@ Side modelSide(const RunOptions& opt) {
   return s;
 }
 
-Side deviceSide(const RunOptions& opt, const Results& model, const std::string& fault) {
+// The fault planted in this case ("" none).
+std::string faultIn(const RunOptions& opt, const std::string& case_name) {
+  return fnmatch(opt.plant_fault_in.c_str(), case_name.c_str(), 0) == 0 ? opt.plant_fault : std::string();
+}
+
+Side deviceSide(const RunOptions& opt, std::shared_ptr<const Results> model, const std::string& fault) {
   VulkanOptions vopt;
   vopt.device_filter = opt.device;
   vopt.validation = !opt.no_validation;
@@ -45,10 +51,10 @@ Side deviceSide(const RunOptions& opt, const Results& model, const std::string& 
     return s;
   }
   if (!fault.empty())
-    s.after = [fault, &model, out = opt.out](const Case& c, const Plan& plan, Results& device) -> std::string {
+    s.after = [fault, model, out = opt.out](const Case& c, const Plan& plan, Results& device) -> std::string {
       raiseProcessFault(fault, c.name, out);  // crash, hang: only in a child (run loop refuses them in process)
       if (isProcessFault(fault)) return {};
-      const FaultResult f = plantFault(fault, c, plan, device, model);
+      const FaultResult f = plantFault(fault, c, plan, device, *model);
       return (f.applied ? "planted fault " : "planted fault not applicable: ") + fault + ": " + f.what;
     };
   return s;
@@ -69,6 +75,25 @@ CaseOutcome unjudged(const Case& c, const Plan& plan, const Results& device, con
 bool ended(const Results& r) { return r.status == RunStatus::Crash || r.status == RunStatus::Timeout; }
 
 }  // namespace
+
+SideFor modelSideFor(const RunOptions& opt) {
+  return [opt](const Case&, const std::string&) { return modelSide(opt); };
+}
+
+SideFor deviceSideFor(const RunOptions& opt) {
+  return [opt](const Case& c, const std::string& dir) {
+    const std::string fault = faultIn(opt, c.name);
+    auto model = std::make_shared<Results>();
+    if (!fault.empty() && !deviceErrorFault(fault) && !opt.no_model) {
+      // The model's answer, which a planted fault chooses its rays by, is the
+      // bundle the model side of this case just wrote.
+      std::string error;
+      *model = readResults(std::filesystem::path(dir).parent_path().string() + "/model", &error);
+      if (!error.empty()) throw HarnessError("device side: the model's results: " + error);
+    }
+    return deviceSide(opt, model, fault);
+  };
+}
 
 CaseOutcome caseErrorOutcome(const std::string& name, const std::vector<std::string>& rules, const std::string& rule,
                              const std::string& message) {
@@ -107,13 +132,15 @@ CaseRunner::CaseRunner(const RunOptions& options, Backend* device, Backend* mode
   }
 }
 
-SideResult CaseRunner::runSide(const Side& side, Backend* in_process, const Case& c, const Plan& plan,
-                               const std::string& dir) const {
-  if (in_process) return runInProcess(side, *in_process, c, plan, dir);
-  return runIsolated(side, c, plan, ChildLimits{opt_.timeout, opt_.memory_limit}, dir);
+SideResult CaseRunner::runSide(const std::function<Side()>& side, Backend* in_process, SideWorker* worker,
+                               const CaseSlot* slot, const Case& c, const Plan& plan, const std::string& dir) const {
+  if (in_process) return runInProcess(side(), *in_process, c, plan, dir);
+  if (worker) return worker->run(slot->index, plan, dir);
+  return runIsolated(side(), c, plan, ChildLimits{opt_.timeout, opt_.memory_limit}, dir);
 }
 
-CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string& subfolder) const {
+CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string& subfolder,
+                            const CaseSlot* slot) const {
   *interrupted = false;
   StepCosts parent;
   StepTimer plan_time(parent, CostStep::Plan);
@@ -131,7 +158,8 @@ CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string&
   Results device, model;
   const bool want_device = !opt_.no_device, want_model = !opt_.no_model;
   if (want_model) {
-    SideResult m = runSide(modelSide(opt_), model_, c, plan, dir + "/model");
+    SideResult m = runSide([&] { return modelSide(opt_); }, model_, slot ? slot->model : nullptr, slot, c, plan,
+                           dir + "/model");
     if ((*interrupted = m.interrupted)) return {};
     model = std::move(m.results);
     if (ended(model)) {
@@ -145,10 +173,9 @@ CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string&
     }
   }
   std::string fault_note;
-  const std::string fault =
-      fnmatch(opt_.plant_fault_in.c_str(), c.name.c_str(), 0) == 0 ? opt_.plant_fault : std::string();
   if (want_device) {
-    SideResult d = runSide(deviceSide(opt_, model, fault), device_, c, plan, dir + "/device");
+    const auto side = [&] { return deviceSide(opt_, std::make_shared<Results>(model), faultIn(opt_, c.name)); };
+    SideResult d = runSide(side, device_, slot ? slot->device : nullptr, slot, c, plan, dir + "/device");
     if ((*interrupted = d.interrupted)) return {};
     device = std::move(d.results);
     fault_note = d.note;
@@ -182,25 +209,17 @@ CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string&
   return costed(std::move(out), device, model);
 }
 
-void reportCase(CaseOutcome outcome, const Baseline& baseline, const RunInfo& info, const std::string& dir,
-                RunSummary& summary, const ReportWriter& write) {
-  std::vector<CaseOutcome> all = summary.outcomes();
-  all.push_back(outcome);
-  std::string err;
+void journalCase(CaseOutcome& outcome, const Baseline& baseline, const std::string& dir) {
   StepTimer report_time(outcome.cost[CostSide::Parent], CostStep::Reports);
+  std::string err;
   try {
-    err = write(all, info, dir);
+    err = appendJournal(outcome, dir);
   } catch (const std::exception& e) {
-    // This case's details broke the reports: keep the case, as a CaseError, without them.
+    // This case's details do not go into the reports: keep the case, as a CaseError, without them.
     outcome = caseErrorOutcome(outcome.name, outcome.rules, "harness",
                                std::string("the reports could not show this case: ") + e.what());
     applyBaseline(baseline, outcome);
-    all.back() = outcome;
-    try {
-      err = write(all, info, dir);
-    } catch (const std::exception& again) {
-      err = std::string("cannot write the reports: ") + again.what();
-    }
+    err = appendJournal(outcome, dir);
   }
   report_time.stop();
   // Where the case's time went, beside its bundles (a skipped case has none;
@@ -208,8 +227,33 @@ void reportCase(CaseOutcome outcome, const Baseline& baseline, const RunInfo& in
   if (caseNameProblem(outcome.name).empty() && std::filesystem::is_directory(dir + "/" + outcome.name))
     if (const std::string e = writeCaseCost(outcome, dir + "/" + outcome.name + "/cost.json"); !e.empty() && err.empty())
       err = e;
-  summary.add(outcome);
   if (!err.empty()) std::fprintf(stderr, "%s\n", err.c_str());
+}
+
+std::string writeRunReports(std::vector<CaseOutcome>& outcomes, const Baseline& baseline, const RunInfo& info,
+                            const std::string& dir, const ReportWriter& write) {
+  try {
+    return write(outcomes, info, dir);
+  } catch (const std::exception&) {
+  }
+  // Some case's details broke the reports: each case alone, into a scratch
+  // folder, finds which; those become CaseErrors and the reports are written again.
+  const std::string scratch = dir + "/.report-check";
+  for (CaseOutcome& o : outcomes) {
+    try {
+      write({o}, info, scratch);
+    } catch (const std::exception& e) {
+      o = caseErrorOutcome(o.name, o.rules, "harness", std::string("the reports could not show this case: ") + e.what());
+      applyBaseline(baseline, o);
+    }
+  }
+  std::error_code ec;
+  std::filesystem::remove_all(scratch, ec);
+  try {
+    return write(outcomes, info, dir);
+  } catch (const std::exception& e) {
+    return std::string("cannot write the reports: ") + e.what();
+  }
 }
 
 }  // namespace rayspec

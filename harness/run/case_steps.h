@@ -6,8 +6,10 @@
 //                  the model's answer), then the device side, which gets the
 //                  model's results; then the judgement
 //   guardCase      an exception in any of it is that case's CaseError
-//   reportCase     the case joins the reports; an exception while writing
-//                  them is that case's CaseError and the reports still appear
+//   journalCase    the case joins the run's journal as it ends
+//   writeRunReports  the reports in full (now and then, and at the end); a
+//                  case whose details break them is a CaseError and the
+//                  reports still appear
 #pragma once
 
 #include <functional>
@@ -39,6 +41,18 @@ std::optional<CaseOutcome> caseFileError(const CaseFile& file, const ParseResult
 CaseOutcome guardCase(const std::string& name, const std::vector<std::string>& rules,
                       const std::function<CaseOutcome()>& step);
 
+// The sides of any case made where they run (a worker process, run/isolation.h).
+SideFor modelSideFor(const RunOptions& opt);
+SideFor deviceSideFor(const RunOptions& opt);
+
+// A case run by long-lived workers: its index in the cases they were given,
+// and the workers of each side (nullptr: that side does not run).
+struct CaseSlot {
+  size_t index = 0;
+  SideWorker* model = nullptr;
+  SideWorker* device = nullptr;
+};
+
 class CaseRunner {
  public:
   // device, model: backends that live across cases (--no-isolation); nullptr
@@ -49,11 +63,13 @@ class CaseRunner {
   // Runs the case on the sides asked for and judges it. Throws HarnessError.
   // *interrupted: a signal stopped a side; the outcome means nothing then.
   // The bundles go to <out>/<case name><subfolder> (a re-run: "/rerun").
-  CaseOutcome run(const Case& c, bool* interrupted, const std::string& subfolder = "") const;
+  // With a slot, the sides run in its workers.
+  CaseOutcome run(const Case& c, bool* interrupted, const std::string& subfolder = "",
+                  const CaseSlot* slot = nullptr) const;
 
  private:
-  SideResult runSide(const Side& side, Backend* in_process, const Case& c, const Plan& plan,
-                     const std::string& dir) const;
+  SideResult runSide(const std::function<Side()>& side, Backend* in_process, SideWorker* worker,
+                     const CaseSlot* slot, const Case& c, const Plan& plan, const std::string& dir) const;
   const RunOptions& opt_;
   Backend* device_;
   Backend* model_;
@@ -64,10 +80,15 @@ class CaseRunner {
 using ReportWriter =
     std::function<std::string(const std::vector<CaseOutcome>&, const RunInfo&, const std::string& dir)>;
 
-// Adds the outcome (the baseline already applied) to the summary (its
-// progress line) and rewrites the reports with it; when writing them throws,
-// the case becomes a CaseError, judged by the baseline anew.
-void reportCase(CaseOutcome outcome, const Baseline& baseline, const RunInfo& info, const std::string& dir,
-                RunSummary& summary, const ReportWriter& write = writeReports);
+// A case that ended joins the run's journal (report/case_journal.h), and
+// its cost.json its bundles; when its details cannot be written, the case
+// becomes a CaseError (judged by the baseline anew).
+void journalCase(CaseOutcome& outcome, const Baseline& baseline, const std::string& dir);
+
+// The reports of every case so far (report/write_reports.h); when a case's
+// details break them, that case becomes a CaseError (judged by the baseline
+// anew) and the reports are written without them. The error ("" none).
+std::string writeRunReports(std::vector<CaseOutcome>& outcomes, const Baseline& baseline, const RunInfo& info,
+                            const std::string& dir, const ReportWriter& write = writeReports);
 
 }  // namespace rayspec

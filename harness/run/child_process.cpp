@@ -26,15 +26,14 @@ namespace rayspec {
 
 bool memoryLimitApplies() { return !kAddressSanitizer; }
 
-namespace {
-bool leaksFound() {
+bool childLeaked() {
 #if defined(RAYSPEC_LSAN_CHECK)
   return __lsan_do_recoverable_leak_check() != 0;
 #else
   return false;
 #endif
 }
-}  // namespace
+
 namespace {
 
 void outOfMemory() {
@@ -67,8 +66,9 @@ bool drain(int fd, std::string& into) {
   }
 }
 
-[[noreturn]] void childMain(pid_t parent, int fd, const std::function<int(std::string&)>& body,
-                            const ChildLimits& limits) {
+}  // namespace
+
+void prepareChild(pid_t parent, const ChildLimits& limits) {
   // Dies with the parent; a parent already gone before prctl is caught by getppid().
   prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (getppid() != parent) _exit(kChildOrphaned);
@@ -80,6 +80,13 @@ bool drain(int fd, std::string& into) {
     setrlimit(RLIMIT_DATA, &rl);
   }
   std::set_new_handler(outOfMemory);
+}
+
+namespace {
+
+[[noreturn]] void childMain(pid_t parent, int fd, const std::function<int(std::string&)>& body,
+                            const ChildLimits& limits) {
+  prepareChild(parent, limits);
   std::string message;
   int code = 0;
   try {
@@ -90,7 +97,7 @@ bool drain(int fd, std::string& into) {
   }
   // _exit skips LeakSanitizer's check at exit: under AddressSanitizer the
   // child checks before it goes (tools/sanitizers/lsan.supp).
-  if (kAddressSanitizer && code == 0 && leaksFound()) code = kChildLeaked;
+  if (kAddressSanitizer && code == 0 && childLeaked()) code = kChildLeaked;
   writeAll(fd, message);
   close(fd);
   std::fflush(nullptr);

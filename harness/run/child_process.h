@@ -11,6 +11,8 @@
 // interrupted (run/interrupt.h).
 #pragma once
 
+#include <sys/types.h>
+
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -54,6 +56,15 @@ struct ChildEnd {
   std::string error;    // NotStarted: why (fork or pipe failed)
   bool ok() const { return how == How::Exited && code == 0; }
 };
+
+// What every child process does first (runChild's and run/worker.h's): dies
+// with the thread of `parent` that forked it, takes the default SIGINT /
+// SIGTERM, and holds at most the memory limit (operator new beyond it exits
+// with kChildOutOfMemory). Exits kChildOrphaned when the parent is gone.
+void prepareChild(pid_t parent, const ChildLimits& limits);
+// AddressSanitizer build: LeakSanitizer finds a leak now (a child checks
+// before _exit, which skips the check at exit). Elsewhere false.
+bool childLeaked();
 
 // `body` runs in the child; its return value is the child's exit status and
 // the text it leaves in `message` reaches the parent through a pipe.

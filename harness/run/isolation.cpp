@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <memory>
+#include <utility>
 
 #include "plan/plan.h"
 #include "results/image_files.h"
@@ -25,9 +27,10 @@ Results runSide(const Side& side, Backend& backend, const Case& c, const Plan& p
   return r;
 }
 
-Results failed(const Side& side, const Case& c, RunStatus status, const std::string& detail, double seconds) {
+Results failed(const std::string& backend_name, const Case& c, RunStatus status, const std::string& detail,
+               double seconds) {
   Results r;
-  r.backend = side.backend_name;
+  r.backend = backend_name;
   r.case_name = c.name;
   r.case_file = c.file;
   r.case_hash = c.source_hash;
@@ -40,13 +43,54 @@ Results failed(const Side& side, const Case& c, RunStatus status, const std::str
 // Timeout), in place of whatever the child had half written: a saved run
 // judged elsewhere (--device-results) then shows the crash. Best effort: the
 // case is that Crash or Timeout whether or not the bundle could be written.
-SideResult ended(const Side& side, const Case& c, const Plan& plan, RunStatus status, const std::string& detail,
-                 double seconds, const std::string& dir) {
+SideResult ended(const std::string& backend_name, const Case& c, const Plan& plan, RunStatus status,
+                 const std::string& detail, double seconds, const std::string& dir) {
   SideResult out;
-  out.results = failed(side, c, status, detail, seconds);
+  out.results = failed(backend_name, c, status, detail, seconds);
   std::error_code ec;
   std::filesystem::remove_all(dir, ec);
   writeResults(out.results, dir, plan.record_fields, kChildBundle);
+  return out;
+}
+
+// The parent's half of a side run in another process: how the process ended
+// made into Results (Crash, Timeout), or the bundle it wrote read back and its
+// pictures written.
+SideResult collect(const std::string& label, const std::string& backend_name, const Case& c, const Plan& plan,
+                   const ChildEnd& end, const ChildLimits& limits, const std::string& dir) {
+  const std::string who = "the " + label + " process";
+  SideResult out;
+  switch (end.how) {
+    case ChildEnd::How::Interrupted:
+      out.interrupted = true;
+      out.results = failed(backend_name, c, RunStatus::Crash, describeChildEnd(end, who, limits), end.seconds);
+      return out;
+    case ChildEnd::How::TimedOut:
+      return ended(backend_name, c, plan, RunStatus::Timeout, describeChildEnd(end, who, limits), end.seconds, dir);
+    case ChildEnd::How::Signaled:
+      return ended(backend_name, c, plan, RunStatus::Crash, describeChildEnd(end, who, limits), end.seconds, dir);
+    case ChildEnd::How::NotStarted: throw HarnessError(describeChildEnd(end, who, limits));
+    case ChildEnd::How::Exited:
+      if (end.code == kChildException) throw HarnessError(label + " side: " + end.message);
+      if (end.code != 0)
+        return ended(backend_name, c, plan, RunStatus::Crash, describeChildEnd(end, who, limits), end.seconds, dir);
+  }
+  std::string error;
+  StepCosts parent;  // the parent's own steps for this side
+  StepTimer read_time(parent, CostStep::ReadBundle);
+  out.results = readResults(dir, &error);
+  read_time.stop();
+  if (!error.empty()) throw HarnessError(label + " side: " + error);
+  out.note = end.message;
+  StepTimer image_time(parent, CostStep::ImageFiles);
+  for (const Image& im : out.results.images) {
+    const std::string err = writeImageFiles(im, dir);
+    if (!err.empty()) throw HarnessError(label + " side: " + err);
+  }
+  image_time.stop();
+  // What the child did not account for: fork, exit, the loader, waiting.
+  parent.add(CostStep::Process, std::max(0.0, end.seconds - out.results.cost.total()));
+  out.results.cost += parent;
   return out;
 }
 
@@ -54,7 +98,6 @@ SideResult ended(const Side& side, const Case& c, const Plan& plan, RunStatus st
 
 SideResult runIsolated(const Side& side, const Case& c, const Plan& plan, const ChildLimits& limits,
                        const std::string& dir) {
-  const std::string who = "the " + side.label + " process";
   const ChildEnd end = runChild(
       [&](std::string& message) {
         StepCosts setup;
@@ -72,38 +115,81 @@ SideResult runIsolated(const Side& side, const Case& c, const Plan& plan, const 
         return 0;
       },
       limits);
-  SideResult out;
-  switch (end.how) {
-    case ChildEnd::How::Interrupted:
-      out.interrupted = true;
-      out.results = failed(side, c, RunStatus::Crash, describeChildEnd(end, who, limits), end.seconds);
-      return out;
-    case ChildEnd::How::TimedOut:
-      return ended(side, c, plan, RunStatus::Timeout, describeChildEnd(end, who, limits), end.seconds, dir);
-    case ChildEnd::How::Signaled:
-      return ended(side, c, plan, RunStatus::Crash, describeChildEnd(end, who, limits), end.seconds, dir);
-    case ChildEnd::How::NotStarted: throw HarnessError(describeChildEnd(end, who, limits));
-    case ChildEnd::How::Exited:
-      if (end.code == kChildException) throw HarnessError(side.label + " side: " + end.message);
-      if (end.code != 0)
-        return ended(side, c, plan, RunStatus::Crash, describeChildEnd(end, who, limits), end.seconds, dir);
+  return collect(side.label, side.backend_name, c, plan, end, limits, dir);
+}
+
+namespace {
+
+// The worker's side of SideWorker: each request is "INDEX\nDIR"; the backend
+// is made by the first case's side and kept.
+struct ServedSide {
+  const std::vector<Case>* cases;
+  SideFor side_for;
+  std::unique_ptr<Backend> backend;
+
+  std::string serve(const std::string& request) {
+    const size_t newline = request.find('\n');
+    const size_t index = std::stoul(request.substr(0, newline));
+    const std::string dir = request.substr(newline + 1);
+    const Case& c = cases->at(index);
+    const Plan plan = derivePlan(c);
+    const Side side = side_for(c, dir);
+    StepCosts setup;
+    if (!backend) {
+      StepTimer setup_time(setup, CostStep::BackendSetup);
+      backend = side.make();
+    }
+    std::string note;
+    Results r = runSide(side, *backend, c, plan, &note);
+    r.cost += setup;
+    const std::string err = writeResults(r, dir, plan.record_fields, kChildBundle);  // the parent writes the pictures
+    if (!err.empty()) throw HarnessError(err);
+    return note;
   }
-  std::string error;
-  StepCosts parent;  // the parent's own steps for this side
-  StepTimer read_time(parent, CostStep::ReadBundle);
-  out.results = readResults(dir, &error);
-  read_time.stop();
-  if (!error.empty()) throw HarnessError(side.label + " side: " + error);
-  out.note = end.message;
-  StepTimer image_time(parent, CostStep::ImageFiles);
-  for (const Image& im : out.results.images) {
-    const std::string err = writeImageFiles(im, dir);
-    if (!err.empty()) throw HarnessError(side.label + " side: " + err);
+
+  std::string finish() {
+    std::string out;
+    if (backend)
+      for (const std::string& m : backend->close()) out += m + '\n';
+    backend.reset();
+    return out;
   }
-  image_time.stop();
-  // What the child did not account for: fork, exit, the loader, waiting.
-  parent.add(CostStep::Process, std::max(0.0, end.seconds - out.results.cost.total()));
-  out.results.cost += parent;
+};
+
+// serve and finish of one ServedSide (in the worker, they share its backend).
+std::pair<Worker::Serve, Worker::Finish> servedSide(const std::vector<Case>& cases, SideFor side_for) {
+  auto served = std::make_shared<ServedSide>(ServedSide{&cases, std::move(side_for), nullptr});
+  return {[served](const std::string& request) { return served->serve(request); },
+          [served] { return served->finish(); }};
+}
+
+}  // namespace
+
+SideWorker::SideWorker(std::string label, std::string backend_name, const std::vector<Case>& cases, SideFor side_for,
+                       const ChildLimits& limits)
+    : label_(std::move(label)),
+      backend_name_(std::move(backend_name)),
+      cases_(cases),
+      limits_(limits),
+      worker_(servedSide(cases, std::move(side_for)), limits) {}
+
+SideResult SideWorker::run(size_t index, const Plan& plan, const std::string& dir) {
+  const Worker::Reply reply = worker_.call(std::to_string(index) + "\n" + dir);
+  if (reply.threw) throw HarnessError(label_ + " side: " + reply.text);
+  ChildEnd end = reply.end;
+  end.seconds = reply.seconds;
+  end.message = reply.text;
+  return collect(label_, backend_name_, cases_.at(index), plan, end, limits_, dir);
+}
+
+std::vector<std::string> SideWorker::close() {
+  std::vector<std::string> out;
+  const std::string text = worker_.close();
+  for (size_t at = 0; at < text.size();) {
+    const size_t end = text.find('\n', at);
+    out.push_back(text.substr(at, end - at));
+    at = end == std::string::npos ? text.size() : end + 1;
+  }
   return out;
 }
 

@@ -18,6 +18,7 @@
 
 #include "run/backend.h"
 #include "run/child_process.h"
+#include "run/worker.h"
 
 namespace rayspec {
 
@@ -50,6 +51,34 @@ struct SideResult {
 // HarnessError (see above).
 SideResult runIsolated(const Side& side, const Case& c, const Plan& plan, const ChildLimits& limits,
                        const std::string& dir);
+
+// Makes a case's side where it runs (in the worker process); `dir` is the
+// side's bundle folder.
+using SideFor = std::function<Side(const Case& c, const std::string& dir)>;
+
+// One side of many cases in a long-lived worker process (run/worker.h): the
+// backend is made at the worker's first case and lives across cases; a case
+// that crashes, hangs or runs out of memory ends the worker, is that case's
+// Crash or Timeout, and the next case gets a new worker (a new device).
+class SideWorker {
+ public:
+  // `cases`: the run's cases, all of them before the first run() (the worker
+  // is a fork of this process and sees them as they were then).
+  SideWorker(std::string label, std::string backend_name, const std::vector<Case>& cases, SideFor side_for,
+             const ChildLimits& limits);
+  // cases[index] on this side; the bundle goes to `dir`. Throws HarnessError.
+  SideResult run(size_t index, const Plan& plan, const std::string& dir);
+  // Ends the worker: what its backend reported at teardown (validation errors
+  // at device destruction).
+  std::vector<std::string> close();
+  int processesStarted() const { return worker_.started(); }
+
+ private:
+  std::string label_, backend_name_;
+  const std::vector<Case>& cases_;
+  ChildLimits limits_;
+  Worker worker_;
+};
 
 // In this process, with a backend that lives across cases (--no-isolation).
 SideResult runInProcess(const Side& side, Backend& backend, const Case& c, const Plan& plan, const std::string& dir);

@@ -1,5 +1,7 @@
 #include "run/run_loop.h"
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -8,15 +10,19 @@
 #include <set>
 #include <filesystem>
 #include <memory>
+#include <mutex>
 #include <optional>
+#include <thread>
 
 #include "fault/planted_fault.h"
 #include "metamorphic/motion_spec.h"
 #include "metamorphic/permute_case.h"
 #include "report/baseline_gate.h"
 #include "report/outcome_json.h"
+#include "report/case_journal.h"
 #include "report/rule_catalog.h"
 #include "run/cache_dir.h"
+#include "run/case_order.h"
 #include "run/case_steps.h"
 #include "run/device_probe.h"
 #include "run/device_results.h"
@@ -112,10 +118,195 @@ std::string optionError(const RunOptions& opt) {
   return deviceResultsError(opt);
 }
 
+// What becomes of each selected case file, decided before any case runs (the
+// workers are forks of this process and see the cases as they are then).
+struct PlannedCase {
+  std::string name;
+  std::optional<CaseOutcome> ready;  // no run: resumed (as judged then), skipped, a case-file error, not moved
+  bool resumed = false;
+  size_t index = 0;                  // into PreparedRun::cases when it runs
+  StepCosts parse_cost;
+};
+
+struct PreparedRun {
+  std::vector<PlannedCase> planned;  // in the cases' own order
+  std::vector<Case> cases;           // those that run
+};
+
+PreparedRun prepareCases(const std::vector<CaseFile>& files, const RunOptions& opt, const Baseline& baseline,
+                         const std::vector<std::string>& labels, std::map<std::string, CaseOutcome>& earlier) {
+  PreparedRun run;
+  for (const CaseFile& f : files) {
+    PlannedCase p;
+    p.name = f.name;
+    if (auto it = earlier.find(f.name); it != earlier.end()) {
+      p.ready = std::move(it->second);
+      p.resumed = true;
+    } else if (const NamePattern* skip = findPattern(baseline.skips, f.name)) {
+      p.ready = skippedOutcome(f.name, *skip);
+    } else {
+      StepTimer parse_time(p.parse_cost, CostStep::Parse);
+      const ParseResult parsed = loadCase(f, opt.cases_dir, labels.empty() ? nullptr : &labels);
+      parse_time.stop();
+      if (std::optional<CaseOutcome> error = caseFileError(f, parsed)) {
+        applyBaseline(baseline, *error);
+        p.ready = std::move(error);
+      } else {
+        std::optional<Case> changed;  // --permute, --move: the case as it runs
+        if (opt.permute) changed = permuteCase(*parsed.value, *opt.permute).permuted;
+        std::string not_moved;
+        if (opt.move) changed = moveCase(changed ? *changed : *parsed.value, *opt.move, &not_moved, MoveScope::Verdict);
+        if (opt.move && !changed) {
+          p.ready = notMovedOutcome(f.name, not_moved);
+        } else {
+          p.index = run.cases.size();
+          run.cases.push_back(changed ? std::move(*changed) : *parsed.value);
+        }
+      }
+    }
+    run.planned.push_back(std::move(p));
+  }
+  return run;
+}
+
+// How many cases run at once: --jobs, or one per core (at most 16); one
+// without isolation (one backend in this process).
+unsigned jobCount(const RunOptions& opt, size_t cases) {
+  if (opt.no_isolation) return 1;
+  unsigned jobs = opt.jobs ? opt.jobs : std::min(16u, std::max(1u, std::thread::hardware_concurrency()));
+  return static_cast<unsigned>(std::max<size_t>(1, std::min<size_t>(jobs, cases)));
+}
+
+// What the threads of a run share; every member function takes the lock.
+class RunBook {
+ public:
+  RunBook(const PreparedRun& prepared, const Baseline& baseline, RunInfo& info, const std::string& out)
+      : outcomes_(prepared.planned.size()), baseline_(baseline), info_(info), out_(out),
+        progress_(prepared.planned.size()) {}
+
+  // The case at `position` ended (or was ready): journal, progress line, and
+  // the reports in full now and then.
+  void finish(size_t position, CaseOutcome outcome, bool journal = true) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (journal) journalCase(outcome, baseline_, out_);
+    progress_.add(outcome);
+    outcomes_[position] = std::move(outcome);
+    const auto now = std::chrono::steady_clock::now();
+    if (reported_ && now - last_reports_ < std::chrono::seconds(2)) return;
+    reported_ = true;
+    last_reports_ = now;
+    writeReportsLocked();
+  }
+  // On a terminal: a live line naming the case that started last.
+  void starting(const std::string& name) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    progress_.starting(name);
+  }
+  void teardownErrors(const std::vector<std::string>& messages) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (const std::string& m : messages) teardown_.push_back(m);
+  }
+  // Every case that ended, in the cases' own order.
+  std::vector<CaseOutcome> ended() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return endedLocked();
+  }
+  // The reports of what ended; the error ("" none).
+  std::string writeAll() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return writeReportsLocked();
+  }
+  std::vector<std::string> teardown() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return teardown_;
+  }
+  void stop() { stopped_ = true; }
+  bool stopped() const { return stopped_ || interruptSignal() != 0; }
+
+ private:
+  std::vector<CaseOutcome> endedLocked() const {
+    std::vector<CaseOutcome> out;
+    for (const std::optional<CaseOutcome>& o : outcomes_)
+      if (o) out.push_back(*o);
+    return out;
+  }
+  std::string writeReportsLocked() {
+    std::vector<CaseOutcome> all = endedLocked();
+    info_.teardown_errors = teardown_;
+    const std::string err = writeRunReports(all, baseline_, info_, out_);
+    // A case the reports could not show stays the CaseError it became.
+    size_t i = 0;
+    for (std::optional<CaseOutcome>& o : outcomes_)
+      if (o) *o = std::move(all[i++]);
+    if (!err.empty()) std::fprintf(stderr, "%s\n", err.c_str());
+    return err;
+  }
+
+  std::mutex mutex_;
+  std::vector<std::optional<CaseOutcome>> outcomes_;
+  const Baseline& baseline_;
+  RunInfo& info_;
+  std::string out_;
+  RunSummary progress_;
+  std::vector<std::string> teardown_;
+  bool reported_ = false;
+  std::chrono::steady_clock::time_point last_reports_;
+  std::atomic<bool> stopped_{false};
+};
+
+// One case: run, judged by the baseline, run again when the baseline did not
+// expect the result (into <case>/rerun, to tell a flake). nullopt: a signal
+// stopped it (nothing measured, nothing said).
+std::optional<CaseOutcome> runOneCase(const CaseRunner& runner, const Case& c, const PlannedCase& p,
+                                      const Baseline& baseline, const CaseSlot* slot) {
+  const auto start = std::chrono::steady_clock::now();
+  bool interrupted = false;
+  CaseOutcome outcome = guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted, "", slot); });
+  if (interrupted) return std::nullopt;
+  outcome.cost[CostSide::Parent] += p.parse_cost;
+  if (applyBaseline(baseline, outcome)) {
+    std::printf("        %s: unexpected %s: running it again\n", c.name.c_str(), statusName(outcome.status));
+    const CaseOutcome again = guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted, "/rerun", slot); });
+    if (interrupted) return std::nullopt;
+    applyRerun(outcome, again);
+  }
+  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return outcome;
+}
+
+// One job slot: takes the next case (longest first) until none is left, each
+// side in this slot's long-lived workers (none without isolation).
+void runSlot(const CaseRunner& runner, const RunOptions& opt, const PreparedRun& prepared,
+             const std::vector<size_t>& order, std::atomic<size_t>& next, const Baseline& baseline, RunBook& book) {
+  const ChildLimits limits{opt.timeout, opt.memory_limit};
+  std::unique_ptr<SideWorker> model, device;
+  const bool workers = !opt.no_isolation && !opt.process_per_case;
+  if (workers && !opt.no_model)
+    model = std::make_unique<SideWorker>("model", "model", prepared.cases, modelSideFor(opt), limits);
+  if (workers && !opt.no_device)
+    device = std::make_unique<SideWorker>("device", "vulkan", prepared.cases, deviceSideFor(opt), limits);
+  for (size_t n; !book.stopped() && (n = next++) < order.size();) {
+    const size_t position = order[n];
+    const PlannedCase& p = prepared.planned[position];
+    const CaseSlot slot{p.index, model.get(), device.get()};
+    book.starting(p.name);
+    std::optional<CaseOutcome> outcome =
+        runOneCase(runner, prepared.cases[p.index], p, baseline, opt.no_isolation ? nullptr : &slot);
+    if (!outcome) {
+      book.stop();
+      break;
+    }
+    book.finish(position, std::move(*outcome));
+  }
+  // Each worker ends in the thread that started it (it dies with that thread).
+  if (model) book.teardownErrors(model->close());
+  if (device) book.teardownErrors(device->close());
+}
+
 }  // namespace
 
 int runCases(const RunOptions& requested) {
-  const RunOptions opt = optionsForThisBuild(requested);
+  RunOptions opt = optionsForThisBuild(requested);
   std::vector<CaseFile> files = caseFiles(opt);
   if (files.empty()) {
     std::fprintf(stderr, "rayspec run: no case matches '%s' in %s\n", opt.filter.c_str(), opt.cases_dir.c_str());
@@ -203,6 +394,9 @@ int runCases(const RunOptions& requested) {
                 info.validation ? ", validation layer on" : ", validation layer OFF",
                 opt.no_isolation ? ", in this process" : "");
   }
+  const unsigned jobs = jobCount(opt, files.size());
+  // The model's threads shared among the cases that run at once.
+  if (opt.threads == 0 && jobs > 1) opt.threads = std::max(1u, std::thread::hardware_concurrency() / jobs);
   if (!opt.no_model) {
     if (opt.no_isolation) model = std::make_unique<ModelAdapter>(ModelOptions{parseModelTier(opt.model_tier), opt.threads});
     std::printf("Model: embree, %s tier\n", opt.model_tier.c_str());
@@ -212,8 +406,10 @@ int runCases(const RunOptions& requested) {
     std::printf("Moved: every case by the rigid motion %s (a case it cannot move exactly is NotSupported)\n",
                 motionSpecText(*opt.move).c_str());
   if (!opt.no_isolation)
-    std::printf("Each case side in its own process: timeout %g s, memory limit %s\n", opt.timeout,
-                opt.memory_limit ? formatBytes(opt.memory_limit).c_str() : "none");
+    std::printf("%u case%s at once, each side in %s: timeout %g s, memory limit %s\n", jobs, jobs == 1 ? "" : "s",
+                opt.process_per_case ? "a process of its own per case"
+                                     : "a long-lived worker process (a new one after a crash)",
+                opt.timeout, opt.memory_limit ? formatBytes(opt.memory_limit).c_str() : "none");
   if (!baseline.file.empty()) {
     std::printf("Baseline: %s (%zu known results)\n", baseline.file.c_str(), baseline.expected.size());
     std::vector<std::string> library;
@@ -239,72 +435,53 @@ int runCases(const RunOptions& requested) {
   }
 
   useCacheDir(opt.cache_dir);  // before the first fork: every case process inherits it
+  // Unknown rule labels are case-file errors at their line:col (the parser checks them).
+  const PreparedRun prepared = prepareCases(files, opt, baseline, ruleLabels(info.catalog), earlier);
+  std::error_code ec;
+  std::filesystem::create_directories(opt.out, ec);
+  if (!opt.resume)
+    if (const std::string e = startJournal(opt.out); !e.empty()) std::fprintf(stderr, "rayspec run: %s\n", e.c_str());
+  RunBook book(prepared, baseline, info, opt.out);
+  book.writeAll();  // empty and marked interrupted until the run ends
+  std::vector<std::string> to_run;
+  for (size_t i = 0; i < prepared.planned.size(); ++i) {
+    const PlannedCase& p = prepared.planned[i];
+    if (p.ready) book.finish(i, *p.ready, !p.resumed);  // kept as judged, skipped, case-file error, not moved
+    else to_run.push_back(p.name);
+  }
+  std::vector<size_t> order;
+  {
+    std::vector<size_t> positions;
+    for (size_t i = 0; i < prepared.planned.size(); ++i)
+      if (!prepared.planned[i].ready) positions.push_back(i);
+    for (size_t k : longestFirst(to_run, loadCaseSeconds(opt.cache_dir))) order.push_back(positions[k]);
+  }
+
   catchInterrupts();
   const CaseRunner runner(opt, device.get(), model.get());
-  // Unknown rule labels are case-file errors at their line:col (the parser checks them).
-  const std::vector<std::string> labels = ruleLabels(info.catalog);
-  RunSummary summary(files.size());
+  std::atomic<size_t> next{0};
+  std::vector<std::thread> slots;
+  for (unsigned j = 0; j < jobs; ++j)
+    slots.emplace_back([&] { runSlot(runner, opt, prepared, order, next, baseline, book); });
+  for (std::thread& t : slots) t.join();
+  if (device) book.teardownErrors(device->close());
+
+  const std::vector<CaseOutcome> ended = book.ended();
   std::vector<std::pair<std::string, std::vector<std::string>>> case_rules;
-  for (const CaseFile& f : files) {
-    if (interruptSignal()) break;
-    if (auto it = earlier.find(f.name); it != earlier.end()) {
-      case_rules.push_back({f.name, it->second.rules});
-      summary.add(it->second);  // ran before: kept as it was judged
-      continue;
-    }
-    summary.starting(f.name);
-    const auto start = std::chrono::steady_clock::now();
-    bool interrupted = false;
-    CaseOutcome outcome;
-    if (const NamePattern* skip = findPattern(baseline.skips, f.name)) {
-      outcome = skippedOutcome(f.name, *skip);
-    } else {
-      StepCosts parse_cost;
-      StepTimer parse_time(parse_cost, CostStep::Parse);
-      const ParseResult parsed = loadCase(f, opt.cases_dir, labels.empty() ? nullptr : &labels);
-      parse_time.stop();
-      if (std::optional<CaseOutcome> error = caseFileError(f, parsed)) {
-        outcome = *error;
-        applyBaseline(baseline, outcome);
-      } else {
-        std::optional<Case> changed;  // --permute, --move: the case as it runs
-        if (opt.permute) changed = permuteCase(*parsed.value, *opt.permute).permuted;
-        std::string not_moved;
-        if (opt.move) changed = moveCase(changed ? *changed : *parsed.value, *opt.move, &not_moved, MoveScope::Verdict);
-        const Case& c = changed ? *changed : *parsed.value;
-        if (opt.move && !changed) {
-          outcome = notMovedOutcome(f.name, not_moved);
-        } else {
-          outcome = guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted); });
-          if (interrupted) break;
-          outcome.cost[CostSide::Parent] += parse_cost;
-          case_rules.push_back({c.name, c.rules});
-          if (applyBaseline(baseline, outcome)) {
-            // An unexpected failure: once more, into <case>/rerun, to tell a flake.
-            std::printf("        unexpected %s: running it again\n", statusName(outcome.status));
-            const CaseOutcome again =
-                guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted, "/rerun"); });
-            if (interrupted) break;
-            applyRerun(outcome, again);
-          }
-        }
-      }
-    }
-    outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    info.coverage = ruleCoverage(info.catalog, case_rules);
-    if (summary.outcomes().size() + 1 == files.size()) info.interrupted = interruptSignal() != 0;
-    reportCase(outcome, baseline, info, opt.out, summary);  // a run cut short still leaves its reports
+  std::map<std::string, double> seconds;
+  for (const CaseOutcome& o : ended) {
+    case_rules.push_back({o.name, o.rules});
+    if (o.status != Status::CaseError && o.seconds > 0) seconds[o.name] = o.seconds;
   }
-  if (device)
-    for (const std::string& m : device->close()) summary.addTeardownError(m);
-  info.teardown_errors = summary.teardownErrors();
+  saveCaseSeconds(opt.cache_dir, seconds);
   info.coverage = ruleCoverage(info.catalog, case_rules);
-  info.interrupted = summary.outcomes().size() < files.size();
+  info.interrupted = ended.size() < files.size();
+  book.writeAll();
+  RunSummary summary(files.size(), false);
+  for (const CaseOutcome& o : book.ended()) summary.add(o);
+  for (const std::string& m : book.teardown()) summary.addTeardownError(m);
   summary.print();
-  if (info.interrupted)
-    std::printf("INTERRUPTED: %zu of %zu cases ran\n", summary.outcomes().size(), files.size());
-  if (const std::string err = writeReports(summary.outcomes(), info, opt.out); !err.empty())
-    std::fprintf(stderr, "%s\n", err.c_str());
+  if (info.interrupted) std::printf("INTERRUPTED: %zu of %zu cases ran\n", ended.size(), files.size());
   std::printf("Reports: %s/report.html, results.csv, junit.xml, summary.json\n", opt.out.c_str());
   const int status = runExitStatus(summary, files.size(), device_found, interruptSignal());
   if (status == kExitNothingCompared) std::fprintf(stderr, "rayspec run: nothing was compared: every case is NotSupported\n");

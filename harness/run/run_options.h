@@ -41,9 +41,11 @@ struct RunOptions {
   unsigned threads = 0;
   bool records_csv = false;      // records.csv in every bundle, not only where the case did not pass
   std::string cache_dir = defaultCacheDir();  // SPIR-V kept across processes and runs (run/cache_dir.h); "" off
-  double timeout = 120.0;        // seconds per case side (model, device), each in its own child process
+  double timeout = 120.0;        // seconds per case side (model, device) in its worker process
   uint64_t memory_limit = kDefaultMemoryLimit;  // bytes of memory per child (RLIMIT_DATA); 0: no limit
   bool no_isolation = false;     // run both sides in this process (one VkDevice for all cases)
+  unsigned jobs = 0;             // cases at once, each side in long-lived worker processes; 0: one per core
+  bool process_per_case = false; // each side of each case in a process of its own (no workers; the slowest way)
   std::string plant_fault;       // test only: fault/planted_fault.h
   std::string plant_fault_in = "*";  // only in cases whose name matches this glob
   std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";

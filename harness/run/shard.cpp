@@ -21,7 +21,28 @@ std::optional<Shard> parseShard(const std::string& text, std::string* error) {
   return std::nullopt;
 }
 
+namespace {
+
+// GitLab CI's parallel jobs: CI_NODE_INDEX counts from 1 to CI_NODE_TOTAL.
+std::optional<Shard> gitlabShard(std::string* error) {
+  const char* total = std::getenv("CI_NODE_TOTAL");
+  const char* index = std::getenv("CI_NODE_INDEX");
+  if (!total || !index) return std::nullopt;
+  static const std::regex number(R"(^[0-9]{1,6}$)");
+  if (std::regex_match(total, number) && std::regex_match(index, number)) {
+    const unsigned n = std::stoul(total), i = std::stoul(index);
+    if (n >= 1 && i >= 1 && i <= n) return Shard{i - 1, n};
+  }
+  *error = std::string("CI_NODE_INDEX=") + index + " and CI_NODE_TOTAL=" + total +
+           " do not name a shard (the index counts from 1 to the total)";
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<Shard> shardFromEnvironment(std::string* error) {
+  if (std::getenv("CI_NODE_TOTAL") && std::getenv("CI_NODE_INDEX") && !std::getenv("GTEST_TOTAL_SHARDS"))
+    return gitlabShard(error);
   const char* total = std::getenv("GTEST_TOTAL_SHARDS");
   const char* index = std::getenv("GTEST_SHARD_INDEX");
   if (!total || !index) return std::nullopt;

@@ -3,7 +3,9 @@
 // run each case exactly once, families spread over all of them. Without
 // --shard, GoogleTest's variables do the same (GTEST_TOTAL_SHARDS,
 // GTEST_SHARD_INDEX counted from 0), and GTEST_SHARD_STATUS_FILE is touched
-// to say the run understood them. `rayspec merge` joins the results folders.
+// to say the run understood them; GitLab CI's parallel jobs' variables too
+// (CI_NODE_INDEX counted from 1, CI_NODE_TOTAL), where GoogleTest's are not
+// set. `rayspec merge` joins the results folders.
 #pragma once
 
 #include <optional>
@@ -21,8 +23,9 @@ struct Shard {
 // "I/N" with 1 <= I <= N; nullopt and *error when it is not.
 std::optional<Shard> parseShard(const std::string& text, std::string* error);
 
-// GoogleTest's sharding variables, when both are set; *error when they are
-// malformed. Touches GTEST_SHARD_STATUS_FILE when it is set.
+// GoogleTest's sharding variables, when both are set, else GitLab CI's;
+// *error when they are malformed. Touches GTEST_SHARD_STATUS_FILE when it is
+// set.
 std::optional<Shard> shardFromEnvironment(std::string* error);
 
 // The positions (into a list of `total` items) that belong to the shard.

@@ -21,6 +21,8 @@ std::unique_ptr<VulkanBackend> VulkanBackend::create(const VulkanOptions& option
     createInstance(ctx, options.validation);
     if (!selectDevice(ctx, options.device_filter, error)) return nullptr;
     createDevice(ctx);
+    backend->has_device_ = true;
+    backend->device_per_case_ = devicePerCase(ctx.info.driver_name);
   } catch (const std::exception& e) {
     if (error) *error = e.what();
     return nullptr;  // the destructor releases what exists
@@ -44,8 +46,13 @@ Results VulkanBackend::run(const Case& c, const Plan& plan) {
   try {
     if (device_lost_) {  // the last case lost the device: this one gets a new one
       destroyDevice(*ctx_);
-      createDevice(*ctx_);
+      has_device_ = false;
       device_lost_ = false;
+    }
+    if (!has_device_) {
+      StepTimer setup_time(r.cost, CostStep::BackendSetup);
+      createDevice(*ctx_);
+      has_device_ = true;
     }
     runCase(*ctx_, c, plan, r);
   } catch (const ShaderCompileError& e) {
@@ -61,6 +68,11 @@ Results VulkanBackend::run(const Case& c, const Plan& plan) {
   } catch (...) {
     r.setStatus(RunStatus::Crash, "unknown exception");
   }
+  if (device_per_case_ && has_device_) {
+    StepTimer teardown_time(r.cost, CostStep::BackendTeardown);
+    destroyDevice(*ctx_);
+    has_device_ = false;
+  }
   if (!r.ok()) {
     r.records.clear();
     r.counters.clear();
@@ -71,10 +83,13 @@ Results VulkanBackend::run(const Case& c, const Plan& plan) {
   return r;
 }
 
+bool devicePerCase(const std::string& driver_name) { return driver_name == "llvmpipe"; }
+
 std::vector<std::string> VulkanBackend::close() {
   if (!ctx_) return {};
   ctx_->capture->take();
-  destroyDevice(*ctx_);
+  if (has_device_) destroyDevice(*ctx_);
+  has_device_ = false;
   destroyInstance(*ctx_);
   return ctx_->capture->take();
 }

@@ -28,6 +28,14 @@ struct VulkanOptions {
   bool validation = true;     // enable VK_LAYER_KHRONOS_validation when installed
 };
 
+// Whether each case gets a VkDevice of its own (the instance lives on). Yes
+// on lavapipe: it numbers shader group handles per device and bakes the
+// numbers into the pipeline's one compute shader, so on a device that has
+// made pipelines before, every pipeline is new to Mesa's shader cache and is
+// compiled again (about 0.35 s a case, measured on Mesa 25.0.7); a new device
+// starts the numbering afresh. Elsewhere one device serves every case.
+bool devicePerCase(const std::string& driver_name);
+
 struct DeviceInfo {
   uint32_t index = 0;  // position in vkEnumeratePhysicalDevices
   std::string name, driver_name, driver_info, api_version;
@@ -68,7 +76,9 @@ class VulkanBackend {
   // validation layer on, asks a second, layer-free instance (driver_library.cpp).
   std::string driverLibrary() const;
 
-  // Never throws. status: Ok, NotSupported or Crash, with the detail.
+  // Never throws. status: Ok, NotSupported or Crash, with the detail. With a
+  // device per case, what the layer reports as the device is destroyed is the
+  // case's own.
   Results run(const Case& c, const Plan& plan);
 
   // Destroys the device and the instance now (the destructor does it too) and
@@ -80,6 +90,8 @@ class VulkanBackend {
   VulkanBackend();
   std::unique_ptr<VulkanContext> ctx_;
   bool device_lost_ = false;  // a case lost the device: the next run makes a new one
+  bool device_per_case_ = false;  // devicePerCase(): made before and destroyed after each case
+  bool has_device_ = false;
 };
 
 }  // namespace rayspec

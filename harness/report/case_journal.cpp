@@ -1,0 +1,54 @@
+#include "report/case_journal.h"
+
+#include <fstream>
+#include <map>
+
+#include "report/outcome_json.h"
+
+namespace rayspec {
+namespace {
+
+std::string journalPath(const std::string& dir) { return dir + "/" + kJournalFile; }
+
+}  // namespace
+
+std::string startJournal(const std::string& dir) {
+  std::ofstream out(journalPath(dir), std::ios::trunc);
+  return out ? std::string() : "cannot write " + journalPath(dir);
+}
+
+std::string appendJournal(const CaseOutcome& outcome, const std::string& dir) {
+  const std::string line = outcomeJson(outcome).dump() + "\n";
+  std::ofstream out(journalPath(dir), std::ios::app);
+  out << line;
+  out.flush();
+  return out ? std::string() : "cannot append to " + journalPath(dir);
+}
+
+std::vector<CaseOutcome> readJournal(const std::string& dir, bool* found, std::string* error) {
+  std::vector<CaseOutcome> out;
+  std::ifstream in(journalPath(dir));
+  *found = static_cast<bool>(in);
+  if (!in) return out;
+  std::map<std::string, size_t> at;  // case name -> its place in out
+  std::string line;
+  for (size_t number = 1; std::getline(in, line); ++number) {
+    if (line.empty()) continue;
+    const bool last = in.peek() == std::char_traits<char>::eof();
+    try {
+      CaseOutcome o = outcomeFromJson(nlohmann::json::parse(line));
+      if (auto it = at.find(o.name); it != at.end()) out[it->second] = std::move(o);
+      else {
+        at[o.name] = out.size();
+        out.push_back(std::move(o));
+      }
+    } catch (const std::exception& e) {
+      if (last) break;  // the line a kill cut short
+      *error = journalPath(dir) + ":" + std::to_string(number) + ": " + e.what();
+      return {};
+    }
+  }
+  return out;
+}
+
+}  // namespace rayspec

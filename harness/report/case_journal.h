@@ -1,0 +1,27 @@
+// The journal of a run: one line of JSON per case (report/outcome_json.h) in
+// <out>/outcomes.jsonl, appended as each case ends. The reports are written
+// in full at the start (empty, marked interrupted), now and then while the
+// run goes, and at its end; a run killed before its end leaves the journal,
+// from which `--resume` (and `rayspec merge`) take every case that ended.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "report/case_outcome.h"
+
+namespace rayspec {
+
+inline constexpr const char* kJournalFile = "outcomes.jsonl";
+
+// Empties the journal of `dir` (a run that starts anew).
+std::string startJournal(const std::string& dir);
+// Appends the outcome; the error ("" none). Throws what outcomeJson throws
+// (a case whose details JSON cannot hold).
+std::string appendJournal(const CaseOutcome& outcome, const std::string& dir);
+// The outcomes the journal holds, a case that ended twice (a resumed run)
+// by its last line; a last line cut short by a kill is left out. error: a
+// line that is not an outcome (names the file and line).
+std::vector<CaseOutcome> readJournal(const std::string& dir, bool* found, std::string* error);
+
+}  // namespace rayspec

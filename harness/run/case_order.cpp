@@ -1,0 +1,64 @@
+#include "run/case_order.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <numeric>
+
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+namespace rayspec {
+namespace {
+
+// A cache file larger than this is not read (it is ours, but every file read is input).
+constexpr std::uintmax_t kMaxCacheBytes = 16u << 20;
+
+std::string cachePath(const std::string& cache_dir) { return cache_dir + "/case-seconds.json"; }
+
+}  // namespace
+
+std::map<std::string, double> loadCaseSeconds(const std::string& cache_dir) {
+  std::map<std::string, double> out;
+  if (cache_dir.empty()) return out;
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(cachePath(cache_dir), ec);
+  if (ec || size > kMaxCacheBytes) return out;
+  std::ifstream in(cachePath(cache_dir));
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (!j.is_object()) return out;
+  for (const auto& [name, seconds] : j.items())
+    if (seconds.is_number()) out[name] = seconds.get<double>();
+  return out;
+}
+
+void saveCaseSeconds(const std::string& cache_dir, const std::map<std::string, double>& seconds) {
+  if (cache_dir.empty() || seconds.empty()) return;
+  std::map<std::string, double> all = loadCaseSeconds(cache_dir);
+  for (const auto& [name, s] : seconds) all[name] = s;
+  std::error_code ec;
+  std::filesystem::create_directories(cache_dir, ec);
+  const std::string path = cachePath(cache_dir), part = path + ".part." + std::to_string(::getpid());
+  {
+    std::ofstream out(part);
+    out << nlohmann::json(all).dump(0) << "\n";
+    if (!out) return;
+  }
+  std::filesystem::rename(part, path, ec);  // whole or not at all, with runs beside this one
+}
+
+std::vector<size_t> longestFirst(const std::vector<std::string>& names, const std::map<std::string, double>& seconds) {
+  std::vector<double> cost(names.size());
+  for (size_t i = 0; i < names.size(); ++i) {
+    const auto it = seconds.find(names[i]);
+    cost[i] = it == seconds.end() ? std::numeric_limits<double>::infinity() : it->second;
+  }
+  std::vector<size_t> order(names.size());
+  std::iota(order.begin(), order.end(), size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return cost[a] > cost[b]; });
+  return order;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,84 @@
+// The run's journal (report/case_journal.h): one outcome per line as cases
+// end; a run killed mid-way is read back from it.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "report/case_journal.h"
+#include "report/outcome_json.h"
+#include "report/write_reports.h"
+
+namespace rayspec {
+namespace {
+
+CaseOutcome outcome(const std::string& name, Status s) {
+  CaseOutcome o;
+  o.name = name;
+  o.verdict.add({s, "R-MISS", "said", {}, 0});
+  o.status = o.verdict.status;
+  o.headline = o.verdict.headline();
+  return o;
+}
+
+std::string freshDir(const std::string& name) {
+  const std::string dir = ::testing::TempDir() + "/rayspec-journal/" + name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+TEST(Journal, LastLineOfACaseWinsAndACutLineIsLeftOut) {
+  const std::string dir = freshDir("cut");
+  ASSERT_EQ(startJournal(dir), "");
+  ASSERT_EQ(appendJournal(outcome("f/a", Status::Fail), dir), "");
+  ASSERT_EQ(appendJournal(outcome("f/b", Status::Pass), dir), "");
+  ASSERT_EQ(appendJournal(outcome("f/a", Status::Pass), dir), "");  // a resumed run judged it again
+  std::ofstream(dir + "/" + kJournalFile, std::ios::app) << R"({"name": "f/c", "sta)";
+  bool found = false;
+  std::string error;
+  const std::vector<CaseOutcome> read = readJournal(dir, &found, &error);
+  EXPECT_TRUE(found);
+  EXPECT_EQ(error, "");
+  ASSERT_EQ(read.size(), 2u);
+  EXPECT_EQ(read[0].name, "f/a");
+  EXPECT_EQ(read[0].status, Status::Pass);
+  EXPECT_EQ(read[1].name, "f/b");
+}
+
+TEST(Journal, ABadLineInTheMiddleIsAnErrorNamingIt) {
+  const std::string dir = freshDir("bad");
+  ASSERT_EQ(appendJournal(outcome("f/a", Status::Pass), dir), "");
+  std::ofstream(dir + "/" + kJournalFile, std::ios::app) << "[1, 2]\n";
+  ASSERT_EQ(appendJournal(outcome("f/b", Status::Pass), dir), "");
+  bool found = false;
+  std::string error;
+  EXPECT_TRUE(readJournal(dir, &found, &error).empty());
+  EXPECT_NE(error.find(std::string(kJournalFile) + ":2:"), std::string::npos) << error;
+}
+
+// summary.json written at the start (no case, interrupted) and a journal of
+// the cases that ended: the saved run is the journal's.
+TEST(Journal, AnInterruptedRunIsReadFromItsJournal) {
+  const std::string dir = freshDir("interrupted");
+  RunInfo info;
+  info.device = "dev";
+  info.model_tier = "exact";
+  info.planned_cases = 3;
+  info.interrupted = true;
+  ASSERT_EQ(writeReports({}, info, dir), "");
+  ASSERT_EQ(startJournal(dir), "");
+  ASSERT_EQ(appendJournal(outcome("f/a", Status::Pass), dir), "");
+  std::string error;
+  const SavedRun saved = readSavedRun(dir, &error);
+  EXPECT_EQ(error, "");
+  ASSERT_EQ(saved.outcomes.size(), 1u);
+  EXPECT_EQ(saved.outcomes[0].name, "f/a");
+  // A finished run is its summary.json, whatever its journal holds.
+  info.interrupted = false;
+  ASSERT_EQ(writeReports({}, info, dir), "");
+  EXPECT_TRUE(readSavedRun(dir, &error).outcomes.empty());
+}
+
+}  // namespace
+}  // namespace rayspec
