@@ -140,4 +140,26 @@ TEST(Shards, ShardsMergeIntoTheWholeRun) {
   EXPECT_NE(slurp(dir + "/bad.txt").find("I/N"), std::string::npos) << slurp(dir + "/bad.txt");
 }
 
+// The README's CI matrix recipe: each job a shard by GitLab's variables into
+// shard-$CI_NODE_INDEX, then `rayspec merge shard-*` into one report.
+TEST(Shards, GitLabMatrixRecipeMergesIntoTheWholeRun) {
+  const std::string dir = fresh("gitlab-matrix");
+  const std::string run = kBin + " run --no-validation" + kThree;
+  for (int node = 1; node <= 2; ++node) {
+    const std::string n = std::to_string(node);
+    ASSERT_EQ(sh("cd " + dir + " && env -u GTEST_TOTAL_SHARDS -u GTEST_SHARD_INDEX CI_NODE_TOTAL=2 CI_NODE_INDEX=" + n +
+                     " " + run + " --out shard-$CI_NODE_INDEX",
+                 dir + "/node" + n + ".txt"),
+              0)
+        << slurp(dir + "/node" + n + ".txt");
+    EXPECT_NE(slurp(dir + "/node" + n + ".txt").find("Shard: shard " + n + " of 2"), std::string::npos)
+        << slurp(dir + "/node" + n + ".txt");
+  }
+  ASSERT_EQ(sh("cd " + dir + " && " + kBin + " merge shard-* --out all", dir + "/merge.txt"), 0)
+      << slurp(dir + "/merge.txt");
+  const auto all = readDeqpCsv(dir + "/all/results.csv");
+  EXPECT_EQ(all.size(), 3u);
+  for (const std::string& c : {kA, kB, kC}) EXPECT_EQ(all.count(c), 1u) << c;
+}
+
 }  // namespace

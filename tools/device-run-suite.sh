@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# On the GPU machine (the `device` tool): the whole suite in 4 shards with the
+# On the GPU machine (the `device` tool): the whole suite in one run with the
 # run-only pack (.device/pack.tar.xz, tools/pack-device.sh) and the Vulkan
 # loader and libglvnd debs in .gl/, validation layer on; then the device
 # bundles packed into OUT/bundles.tar.xz.NN pieces of 15 MiB (the tool brings
@@ -7,7 +7,7 @@
 #   cat OUT/bundles.tar.xz.* | tar -C DIR -xJf -
 #   ./build/rayspec run --device-results DIR/run --baseline references/baselines/nvidia.csv --out JUDGED
 #   ./build/rayspec mutate DIR/run --out MUTATED
-# Usage: bash tools/device-run-suite.sh OUT [extra rayspec run options]
+# Usage: [RAYSPEC_DEVICE_RUNS=2] [RAYSPEC_DEVICE_REFERENCE=1] bash tools/device-run-suite.sh OUT [run options]
 set -euo pipefail
 out=$1
 shift
@@ -21,17 +21,27 @@ export LD_LIBRARY_PATH="$work/p/lib:$work/gl/usr/lib/x86_64-linux-gnu:${LD_LIBRA
 export VK_LAYER_PATH="$work/p/layer"
 cd "$work/p"
 ./rayspec devices --icd "$icd" | tee "$out/devices.txt" || true
-start=$(date +%s)
-for i in 1 2 3 4; do
+# One run, a worker pair per core (-j: one per core, at most 16), the SPIR-V
+# the pack brought (cache/spirv) and the pipeline caches the run makes;
+# RAYSPEC_DEVICE_RUNS=2 runs it again, warm (the bundles are the last run's).
+for n in $(seq 1 "${RAYSPEC_DEVICE_RUNS:-1}"); do
+  rm -rf "$work/run"
+  start=$(date +%s%N)
   ./rayspec run --cases cases --rules spec-rules.yaml --icd "$icd" --device NVIDIA --strict-validation \
-    --shard "$i/4" --out "$work/shard$i" "$@" > "$out/shard$i.log" 2>&1 &
+    --cache-dir "$work/p/cache" --out "$work/run" "$@" > "$out/run$n.log" 2>&1 || true
+  echo "run $n, whole suite: $(( ($(date +%s%N) - start) / 1000000 )) ms wall" | tee -a "$out/timing.txt"
 done
-wait || true
-echo "4 shards: $(( $(date +%s) - start )) s wall" | tee "$out/timing.txt"
-./rayspec merge "$work/shard1" "$work/shard2" "$work/shard3" "$work/shard4" --out "$work/run" > "$out/merge.log" 2>&1 || true
+# RAYSPEC_DEVICE_REFERENCE=1: the same run with a process per case side
+# (--process-per-case, the way runs went before workers), timed beside it.
+if [[ -n "${RAYSPEC_DEVICE_REFERENCE:-}" ]]; then
+  start=$(date +%s%N)
+  ./rayspec run --cases cases --rules spec-rules.yaml --icd "$icd" --device NVIDIA --strict-validation \
+    --cache-dir "$work/p/cache" --process-per-case --out "$work/reference" "$@" > "$out/reference.log" 2>&1 || true
+  echo "process per case, whole suite: $(( ($(date +%s%N) - start) / 1000000 )) ms wall" | tee -a "$out/timing.txt"
+fi
 cp "$work/run/summary.txt" "$out/" 2>/dev/null || true
 cd "$work"
-# The shards hold disjoint cases in one layout: their bundles join into run/.
-find shard? -path '*/device/*' -type f \( -name results.json -o -name records.bin -o -name '*.raw' \) -print0 |
-  tar --null -T - --transform 's,^shard[0-9],run,' -cf - | xz -T0 -6 | split -b 15M -d - "$out/bundles.tar.xz."
+# The device bundles of the run.
+find run -path '*/device/*' -type f \( -name results.json -o -name records.bin -o -name '*.raw' \) -print0 |
+  tar --null -T - -cf - | xz -T0 -6 | split -b 15M -d - "$out/bundles.tar.xz."
 ls -la "$out"

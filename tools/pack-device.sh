@@ -2,9 +2,11 @@
 # Builds the run-only binary (preset `device`: no model, so no Embree or TBB;
 # no OpenImageIO; no tests) and packs it with the cases, the rule catalog,
 # the shared libraries a bare GPU machine may lack (yaml-cpp; ldd decides) and
-# the validation layer, into .device/pack.tar.xz (ignored by git). There:
+# the validation layer, and the SPIR-V of every stage (cache/spirv), into
+# .device/pack.tar.xz (ignored by git). There:
 #   mkdir -p /tmp/p && tar -C /tmp/p -xJf pack.tar.xz && cd /tmp/p
-#   LD_LIBRARY_PATH=lib VK_LAYER_PATH=layer ./rayspec run --cases cases --rules spec-rules.yaml --out DIR
+#   LD_LIBRARY_PATH=lib VK_LAYER_PATH=layer ./rayspec run --cases cases --rules spec-rules.yaml \
+#     --cache-dir cache --out DIR
 # It runs the device side only; bring DIR back and judge it where the full
 # build is: rayspec run --device-results DIR --out JUDGED (README.md).
 set -euo pipefail
@@ -17,6 +19,12 @@ mkdir -p "$stage/lib" "$stage/layer" .device
 cp build-device/rayspec "$stage/" && strip "$stage/rayspec"
 # The cases as they are here: a saved bundle is judged only against the same case text.
 cp -r cases references/spec-rules.yaml "$stage/"
+# The SPIR-V of every generated stage, compiled here by this very binary (the
+# cache key is the GLSL text and the compile options, not the machine), so
+# that the GPU machine compiles no GLSL: a device-side run on lavapipe fills it.
+build-device/rayspec run --cases cases --rules references/spec-rules.yaml --no-validation \
+  --cache-dir "$stage/cache" --out "$stage/filling" >/dev/null 2>&1 || true
+rm -rf "$stage/filling" "$stage/cache/case-seconds.json" "$stage/cache/pipelines"
 for lib in $(ldd build-device/rayspec | awk '/=>/ {print $3}' | grep -E 'yaml-cpp'); do cp -L "$lib" "$stage/lib/"; done
 layer_json=/usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json
 cp /usr/lib/x86_64-linux-gnu/libVkLayer_khronos_validation.so "$stage/layer/"

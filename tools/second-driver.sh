@@ -110,10 +110,15 @@ run() {
   echo "== drivers: here, then inside $ENV_DIR"
   ./build/rayspec devices --icd "$ICD" | grep -E '^ +(\[|driver )' || true
   inside sh -c "cd $WORK/pack && LD_LIBRARY_PATH=lib ./rayspec devices --icd $ICD" | grep -E '^ +(\[|driver )' || true
-  echo "== the run inside (device side only; exit 3 is the run-only build's)"
+  # Each case in processes of its own inside: Mesa 26.2.6 reads BVH slots it
+  # never wrote (references/driver-reports/lavapipe-inactive-before-active.md);
+  # in a worker that ran cases before they hold stale data and it crashes,
+  # where a fresh process reads zeros and only loses the object. The crash
+  # moves with what ran before; the loss, which the baseline lists, does not.
+  echo "== the run inside (device side only, a process per case; exit 3 is the run-only build's)"
   local rc=0
   inside sh -c 'icd=$1; shift; cd "$0/pack" && RAYSPEC_CACHE_DIR="$0/cache" MESA_SHADER_CACHE_DIR="$0/mesa-cache" LD_LIBRARY_PATH=lib \
-    ./rayspec run --cases cases --rules spec-rules.yaml --icd "$icd" --strict-validation --out "$0/out" "$@" >"$0/run.log" 2>&1' \
+    ./rayspec run --cases cases --rules spec-rules.yaml --icd "$icd" --strict-validation --process-per-case --out "$0/out" "$@" >"$0/run.log" 2>&1' \
     "$WORK" "$ICD" "${args[@]}" || rc=$?
   tail -n 5 "$ENV_DIR$WORK/run.log"
   [[ $rc -eq 0 || $rc -eq 3 ]] || die "the run inside exited $rc ($ENV_DIR$WORK/run.log)" 1

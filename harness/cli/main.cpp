@@ -74,6 +74,11 @@ int main(int argc, char** argv) {
                   "Cases at once (0: one per core, at most 16); each side of a case runs in a long-lived worker "
                   "process, a new one after a crash, timeout or memory-limit hit")
       ->capture_default_str();
+  run->add_option("--device-per-case", run_opt.device_per_case,
+                  "A VkDevice of its own for each case in a worker (auto: on lavapipe, whose pipelines would "
+                  "otherwise miss the shader cache)")
+      ->check(CLI::IsMember({"auto", "yes", "no"}))
+      ->capture_default_str();
   run->add_flag("--process-per-case", run_opt.process_per_case,
                 "Each side of each case in a process of its own instead of long-lived workers (slower; a new "
                 "VkInstance and VkDevice per case)");

@@ -3,6 +3,7 @@
 #include <cstdlib>
 
 #include "spirv/compile_glsl.h"
+#include "vulkan/pipeline_cache.h"
 
 namespace rayspec {
 
@@ -13,6 +14,9 @@ std::string defaultCacheDir() {
   return {};
 }
 
-void useCacheDir(const std::string& dir) { setSpirvCacheDir(dir.empty() ? std::string() : dir + "/spirv"); }
+void useCacheDir(const std::string& dir) {
+  setSpirvCacheDir(dir.empty() ? std::string() : dir + "/spirv");
+  setPipelineCacheDir(dir.empty() ? std::string() : dir + "/pipelines");
+}
 
 }  // namespace rayspec

@@ -1,8 +1,9 @@
-// Where a run keeps what it may reuse across runs and case processes: the
-// SPIR-V of generated stages (<dir>/spirv, spirv/spirv_cache.h). Each case
-// side runs in a fresh child process, so without a folder on disk every case
-// compiles its stages again (on lavapipe with the validation layer that was
-// 41% of an sbt/* run). --cache-dir '' turns it off.
+// Where a run keeps what it may reuse across runs and worker processes: the
+// SPIR-V of generated stages (<dir>/spirv, spirv/spirv_cache.h), each
+// driver's VkPipelineCache (<dir>/pipelines, vulkan/pipeline_cache.h) and the
+// cases' timings (<dir>/case-seconds.json, run/case_order.h). Without a
+// folder on disk every worker compiles its stages again (on lavapipe with the
+// validation layer that was 41% of an sbt/* run). --cache-dir '' turns it off.
 #pragma once
 
 #include <string>
@@ -13,7 +14,8 @@ namespace rayspec {
 // "" when none is set.
 std::string defaultCacheDir();
 
-// Points the SPIR-V cache at <dir>/spirv ("" leaves it in memory only).
+// Points the SPIR-V cache at <dir>/spirv and the pipeline caches at
+// <dir>/pipelines ("" : SPIR-V in memory only, no pipeline cache).
 void useCacheDir(const std::string& dir);
 
 }  // namespace rayspec

@@ -35,9 +35,7 @@ std::string faultIn(const RunOptions& opt, const std::string& case_name) {
 }
 
 Side deviceSide(const RunOptions& opt, std::shared_ptr<const Results> model, const std::string& fault) {
-  VulkanOptions vopt;
-  vopt.device_filter = opt.device;
-  vopt.validation = !opt.no_validation;
+  const VulkanOptions vopt = vulkanOptions(opt);
   Side s{"device", "vulkan", [vopt] { return std::make_unique<VulkanAdapter>(vopt); }, {}};
   if (!opt.device_results.empty())  // a device run saved elsewhere, read back (run/device_results.h)
     s.make = [dir = opt.device_results] { return std::make_unique<SavedDevice>(dir); };

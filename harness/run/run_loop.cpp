@@ -360,9 +360,7 @@ int runCases(const RunOptions& requested) {
   // The device must exist before any case runs. Isolated, the parent never
   // initialises Vulkan: a short child process looks; without isolation one
   // device serves every case.
-  VulkanOptions vopt;
-  vopt.device_filter = opt.device;
-  vopt.validation = !opt.no_validation;
+  const VulkanOptions vopt = vulkanOptions(opt);
   std::unique_ptr<VulkanAdapter> device;
   std::unique_ptr<ModelAdapter> model;
   bool device_found = false;
@@ -454,7 +452,10 @@ int runCases(const RunOptions& requested) {
     std::vector<size_t> positions;
     for (size_t i = 0; i < prepared.planned.size(); ++i)
       if (!prepared.planned[i].ready) positions.push_back(i);
-    for (size_t k : longestFirst(to_run, loadCaseSeconds(opt.cache_dir))) order.push_back(positions[k]);
+    // One job at a time keeps the cases' own order (what ran before a case in
+    // its worker is then the same in every run).
+    const std::map<std::string, double> seconds = jobs > 1 ? loadCaseSeconds(opt.cache_dir) : std::map<std::string, double>{};
+    for (size_t k : longestFirst(to_run, seconds)) order.push_back(positions[k]);
   }
 
   catchInterrupts();

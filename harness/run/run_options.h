@@ -45,6 +45,7 @@ struct RunOptions {
   uint64_t memory_limit = kDefaultMemoryLimit;  // bytes of memory per child (RLIMIT_DATA); 0: no limit
   bool no_isolation = false;     // run both sides in this process (one VkDevice for all cases)
   unsigned jobs = 0;             // cases at once, each side in long-lived worker processes; 0: one per core
+  std::string device_per_case = "auto";  // yes, no, auto (vulkan/vulkan_backend.h devicePerCase)
   bool process_per_case = false; // each side of each case in a process of its own (no workers; the slowest way)
   std::string plant_fault;       // test only: fault/planted_fault.h
   std::string plant_fault_in = "*";  // only in cases whose name matches this glob

@@ -2,6 +2,15 @@
 
 namespace rayspec {
 
+VulkanOptions vulkanOptions(const RunOptions& opt) {
+  VulkanOptions v;
+  v.device_filter = opt.device;
+  v.validation = !opt.no_validation;
+  if (opt.device_per_case == "yes") v.device_per_case = true;
+  if (opt.device_per_case == "no") v.device_per_case = false;
+  return v;
+}
+
 VulkanAdapter::VulkanAdapter(const VulkanOptions& options) { backend_ = VulkanBackend::create(options, &error_); }
 
 std::string VulkanAdapter::description() const {

@@ -4,9 +4,13 @@
 #include <memory>
 
 #include "run/backend.h"
+#include "run/run_options.h"
 #include "vulkan/vulkan_backend.h"
 
 namespace rayspec {
+
+// The device options a run asks for (--device, validation, --device-per-case).
+VulkanOptions vulkanOptions(const RunOptions& opt);
 
 class VulkanAdapter : public Backend {
  public:

@@ -130,7 +130,7 @@ VkPipeline createRayTracingPipeline(const VulkanContext& ctx, const CompiledPipe
   info.layout = layout;
   VkPipeline pipeline = VK_NULL_HANDLE;
   vkCall("vkCreateRayTracingPipelinesKHR", [&] {
-    return ctx.fn.createRayTracingPipelines(ctx.device, VK_NULL_HANDLE, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
+    return ctx.fn.createRayTracingPipelines(ctx.device, VK_NULL_HANDLE, ctx.pipeline_cache, 1, &info, nullptr, &pipeline);
   });
   VkDevice device = ctx.device;
   cleanup.add([device, pipeline] { vkDestroyPipeline(device, pipeline, nullptr); });

@@ -5,6 +5,7 @@
 #include "vulkan/context.h"
 #include "vulkan/device_errors.h"
 #include "vulkan/pipeline.h"
+#include "vulkan/pipeline_cache.h"
 #include "vulkan/run_case.h"
 #include "vulkan/vk_check.h"
 
@@ -22,7 +23,8 @@ std::unique_ptr<VulkanBackend> VulkanBackend::create(const VulkanOptions& option
     if (!selectDevice(ctx, options.device_filter, error)) return nullptr;
     createDevice(ctx);
     backend->has_device_ = true;
-    backend->device_per_case_ = devicePerCase(ctx.info.driver_name);
+    backend->device_per_case_ = options.device_per_case.value_or(devicePerCase(ctx.info.driver_name));
+    if (!backend->device_per_case_) ctx.pipeline_cache = openPipelineCache(ctx);
   } catch (const std::exception& e) {
     if (error) *error = e.what();
     return nullptr;  // the destructor releases what exists
@@ -45,7 +47,7 @@ Results VulkanBackend::run(const Case& c, const Plan& plan) {
   ctx_->capture->take();  // messages from before this run are not its own
   try {
     if (device_lost_) {  // the last case lost the device: this one gets a new one
-      destroyDevice(*ctx_);
+      releaseDevice();
       has_device_ = false;
       device_lost_ = false;
     }
@@ -53,6 +55,7 @@ Results VulkanBackend::run(const Case& c, const Plan& plan) {
       StepTimer setup_time(r.cost, CostStep::BackendSetup);
       createDevice(*ctx_);
       has_device_ = true;
+      if (!device_per_case_) ctx_->pipeline_cache = openPipelineCache(*ctx_);
     }
     runCase(*ctx_, c, plan, r);
   } catch (const ShaderCompileError& e) {
@@ -70,8 +73,7 @@ Results VulkanBackend::run(const Case& c, const Plan& plan) {
   }
   if (device_per_case_ && has_device_) {
     StepTimer teardown_time(r.cost, CostStep::BackendTeardown);
-    destroyDevice(*ctx_);
-    has_device_ = false;
+    releaseDevice();
   }
   if (!r.ok()) {
     r.records.clear();
@@ -83,13 +85,19 @@ Results VulkanBackend::run(const Case& c, const Plan& plan) {
   return r;
 }
 
+void VulkanBackend::releaseDevice() {
+  if (ctx_->device) closePipelineCache(*ctx_, ctx_->pipeline_cache);
+  ctx_->pipeline_cache = VK_NULL_HANDLE;
+  destroyDevice(*ctx_);
+  has_device_ = false;
+}
+
 bool devicePerCase(const std::string& driver_name) { return driver_name == "llvmpipe"; }
 
 std::vector<std::string> VulkanBackend::close() {
   if (!ctx_) return {};
   ctx_->capture->take();
-  if (has_device_) destroyDevice(*ctx_);
-  has_device_ = false;
+  if (has_device_) releaseDevice();
   destroyInstance(*ctx_);
   return ctx_->capture->take();
 }

@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,7 @@ struct VulkanOptions {
   std::string device_filter;  // substring of the device name (case-insensitive);
                               // empty = first device with VK_KHR_ray_tracing_pipeline
   bool validation = true;     // enable VK_LAYER_KHRONOS_validation when installed
+  std::optional<bool> device_per_case;  // a VkDevice per case; unset: devicePerCase(driver name)
 };
 
 // Whether each case gets a VkDevice of its own (the instance lives on). Yes
@@ -88,6 +90,7 @@ class VulkanBackend {
 
  private:
   VulkanBackend();
+  void releaseDevice();  // saves the pipeline cache, destroys the device
   std::unique_ptr<VulkanContext> ctx_;
   bool device_lost_ = false;  // a case lost the device: the next run makes a new one
   bool device_per_case_ = false;  // devicePerCase(): made before and destroyed after each case
