@@ -147,8 +147,9 @@ TEST(Shards, GitLabMatrixRecipeMergesIntoTheWholeRun) {
   const std::string run = kBin + " run --no-validation" + kThree;
   for (int node = 1; node <= 2; ++node) {
     const std::string n = std::to_string(node);
-    ASSERT_EQ(sh("cd " + dir + " && env -u GTEST_TOTAL_SHARDS -u GTEST_SHARD_INDEX CI_NODE_TOTAL=2 CI_NODE_INDEX=" + n +
-                     " " + run + " --out shard-$CI_NODE_INDEX",
+    // The job's environment, as GitLab sets it.
+    ASSERT_EQ(sh("cd " + dir + " && unset GTEST_TOTAL_SHARDS GTEST_SHARD_INDEX && export CI_NODE_TOTAL=2 CI_NODE_INDEX=" +
+                     n + " && " + run + " --out shard-$CI_NODE_INDEX",
                  dir + "/node" + n + ".txt"),
               0)
         << slurp(dir + "/node" + n + ".txt");
