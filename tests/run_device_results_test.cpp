@@ -14,6 +14,7 @@
 #include "run/isolation.h"
 #include "run/run_only.h"
 #include "model/model_backend.h"
+#include "temp_dir.h"
 
 namespace rayspec {
 namespace {
@@ -33,12 +34,7 @@ Case parsed(const std::string& text) {
   return p.value ? *p.value : Case{};
 }
 
-std::string savedRun(const std::string& name) {
-  const std::string dir = ::testing::TempDir() + "/rayspec-device-results/" + name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+std::string savedRun(const std::string& name) { return freshTempDir("rayspec-device-results/" + name); }
 
 // A device bundle as a device-only run writes it: the case's hash, its records
 // (width x height of them, as the reader checks).

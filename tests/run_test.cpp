@@ -26,6 +26,7 @@
 #include "run/model_adapter.h"
 #include "run/run_loop.h"
 #include "run/vulkan_adapter.h"
+#include "temp_dir.h"
 
 namespace rayspec {
 namespace {
@@ -39,12 +40,7 @@ Case loadCase(const std::string& name) {
   return p.value ? *p.value : Case{};
 }
 
-std::string tempDir(const std::string& name) {
-  const std::string dir = ::testing::TempDir() + "/rayspec-run-test/" + name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+std::string tempDir(const std::string& name) { return freshTempDir("rayspec-run-test/" + name); }
 
 // A model side whose engine does something bad before answering.
 class MisbehavingModel : public Backend {

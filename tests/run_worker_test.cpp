@@ -17,6 +17,8 @@
 #include "run/isolation.h"
 #include "run/model_adapter.h"
 #include "run/worker.h"
+#include "suite_cases.h"
+#include "temp_dir.h"
 
 namespace rayspec {
 namespace {
@@ -103,17 +105,9 @@ TEST(Worker, ClosingOneWorkerIsSeenByItAlone) {
 }
 
 Case loadCase(const std::string& name) {
-  const std::string cases = RAYSPEC_SOURCE_DIR "/cases";
-  ParseResult p = parseCaseFile(cases + "/" + name + ".yaml", cases);
+  ParseResult p = parseCaseFile(kSuiteCases + "/" + name + ".yaml", kSuiteCases);
   EXPECT_TRUE(p.value) << (p.errors.empty() ? "" : p.errors[0].format());
   return p.value ? *p.value : Case{};
-}
-
-std::string tempDir(const std::string& name) {
-  const std::string dir = ::testing::TempDir() + "/rayspec-worker-test/" + name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
 }
 
 // The model side of three cases in one worker; the middle one crashes it
@@ -127,7 +121,7 @@ TEST(SideWorker, CrashedCaseIsACrashAndTheNextCaseGetsANewWorker) {
     return s;
   };
   SideWorker worker("model", "model", cases, side_for, ChildLimits{60, 0});
-  const std::string dir = tempDir("side");
+  const std::string dir = freshTempDir("rayspec-worker-test/side");
   const SideResult first = worker.run(0, derivePlan(cases[0]), dir + "/ok/0/model");
   EXPECT_TRUE(first.results.ok()) << first.results.statusText();
   const SideResult crashed = worker.run(1, derivePlan(cases[1]), dir + "/crash/1/model");

@@ -38,7 +38,8 @@ std::vector<fs::path> runOnce(const Case& c, const std::string& dir) {
   EXPECT_TRUE(b->close().empty());
   std::vector<fs::path> files;
   if (fs::is_directory(dir))
-    for (const auto& e : fs::directory_iterator(dir)) files.push_back(e.path());
+    for (const auto& e : fs::directory_iterator(dir))
+      if (e.path().extension() == ".bin") files.push_back(e.path());  // beside it: <file>.lock
   return files;
 }
 

@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
       ->check(rayspec::memoryLimit())
       ->default_str(std::to_string(rayspec::kDefaultMemoryLimit >> 30) + "G");
   run->add_option("-j,--jobs", run_opt.jobs,
-                  "Cases at once (0: one per core, at most 16); each side of a case runs in a long-lived worker "
+                  "Cases at once (0: one per core, at most 16; 4 on a GPU); each side of a case runs in a long-lived worker "
                   "process, a new one after a crash, timeout or memory-limit hit")
       ->capture_default_str();
   run->add_option("--device-per-case", run_opt.device_per_case,

@@ -24,6 +24,7 @@ const char* costStepName(CostStep s) {
     case CostStep::Sbt: return "sbt";
     case CostStep::Trace: return "trace";
     case CostStep::ReadBack: return "read_back";
+    case CostStep::CaseCleanup: return "case_cleanup";
     case CostStep::ModelScene: return "model_scene";
     case CostStep::ModelTrace: return "model_trace";
   }

@@ -36,6 +36,7 @@ enum class CostStep {
   Sbt,               // group handles and the shader binding table
   Trace,             // vkCmdTraceRaysKHR, recorded and waited on
   ReadBack,          // records, counters and images to host memory
+  CaseCleanup,       // waiting for the device and destroying the case's objects
   // the model
   ModelScene,        // Embree scene and the programs
   ModelTrace,        // every ray through the model

@@ -34,6 +34,7 @@ DeviceProbe describeAdapter(const VulkanAdapter& adapter) {
   if (p.found) {
     p.icd = icdOfLibrary(adapter.driverLibrary());
     p.device_uuid = adapter.deviceUuid();
+    p.cpu = adapter.cpuDevice();
   } else {
     listWhatThereIs(p);
   }
@@ -51,7 +52,7 @@ DeviceProbe probeDevice(const VulkanOptions& options, const ChildLimits& limits)
   const ChildEnd end = runChild(
       [&](std::string& message) {
         const DeviceProbe p = probeDeviceInProcess(options);
-        message = nlohmann::json{{"found", p.found}, {"description", p.description}, {"icd", p.icd}, {"device_uuid", p.device_uuid},
+        message = nlohmann::json{{"found", p.found}, {"description", p.description}, {"icd", p.icd}, {"device_uuid", p.device_uuid}, {"cpu", p.cpu},
                                  {"error", p.error}, {"devices", p.devices}, {"no_device", p.no_device}}
                       .dump();
         return 0;
@@ -70,6 +71,7 @@ DeviceProbe probeDevice(const VulkanOptions& options, const ChildLimits& limits)
   p.found = j.value("found", false);
   p.description = j.value("description", "");
   p.icd = j.value("icd", "");
+  p.cpu = j.value("cpu", false);
   p.device_uuid = j.value("device_uuid", "");
   if (p.found && p.icd.empty()) p.icd = icdOfDevice(p.device_uuid, ChildLimits{kProbeSeconds, limits.memory_limit});
   p.error = j.value("error", "");

@@ -17,6 +17,7 @@ struct DeviceProbe {
   std::string description;           // the device the cases will run on: "llvmpipe (...) (Mesa ...)"
   std::string icd;                   // the driver manifest it came from ("" when unknown)
   std::string device_uuid;           // DeviceInfo::device_uuid of that device
+  bool cpu = false;                  // DeviceInfo::cpu: a CPU device (lavapipe)
   std::string error;                 // why none was found
   std::vector<std::string> devices;  // every device the loader sees, for people
   std::string no_device;             // no device at all: why, per driver manifest

@@ -23,40 +23,35 @@ std::optional<Shard> parseShard(const std::string& text, std::string* error) {
 
 namespace {
 
-// GitLab CI's parallel jobs: CI_NODE_INDEX counts from 1 to CI_NODE_TOTAL.
-std::optional<Shard> gitlabShard(std::string* error) {
-  const char* total = std::getenv("CI_NODE_TOTAL");
-  const char* index = std::getenv("CI_NODE_INDEX");
+// A CI engine's pair of variables: the shard's index, counted from `first`,
+// and the number of shards. nullopt when either is unset; *error when they
+// name no shard.
+std::optional<Shard> shardFromVariables(const char* index_name, const char* total_name, unsigned first,
+                                        std::string* error) {
+  const char* total = std::getenv(total_name);
+  const char* index = std::getenv(index_name);
   if (!total || !index) return std::nullopt;
   static const std::regex number(R"(^[0-9]{1,6}$)");
   if (std::regex_match(total, number) && std::regex_match(index, number)) {
     const unsigned n = std::stoul(total), i = std::stoul(index);
-    if (n >= 1 && i >= 1 && i <= n) return Shard{i - 1, n};
+    if (n >= 1 && i >= first && i - first < n) return Shard{i - first, n};
   }
-  *error = std::string("CI_NODE_INDEX=") + index + " and CI_NODE_TOTAL=" + total +
-           " do not name a shard (the index counts from 1 to the total)";
+  *error = std::string(index_name) + "=" + index + " and " + total_name + "=" + total +
+           " do not name a shard (the index counts from " + std::to_string(first) + (first ? " to" : " and is below") +
+           " the total)";
   return std::nullopt;
 }
 
 }  // namespace
 
 std::optional<Shard> shardFromEnvironment(std::string* error) {
-  if (std::getenv("CI_NODE_TOTAL") && std::getenv("CI_NODE_INDEX") && !std::getenv("GTEST_TOTAL_SHARDS"))
-    return gitlabShard(error);
-  const char* total = std::getenv("GTEST_TOTAL_SHARDS");
-  const char* index = std::getenv("GTEST_SHARD_INDEX");
-  if (!total || !index) return std::nullopt;
-  static const std::regex number(R"(^[0-9]{1,6}$)");
-  if (std::regex_match(total, number) && std::regex_match(index, number)) {
-    const unsigned n = std::stoul(total), i = std::stoul(index);
-    if (n >= 1 && i < n) {
-      if (const char* status = std::getenv("GTEST_SHARD_STATUS_FILE")) std::ofstream{status};
-      return Shard{i, n};
-    }
+  if (std::getenv("GTEST_TOTAL_SHARDS") || std::getenv("GTEST_SHARD_INDEX")) {
+    std::optional<Shard> s = shardFromVariables("GTEST_SHARD_INDEX", "GTEST_TOTAL_SHARDS", 0, error);
+    if (const char* status = std::getenv("GTEST_SHARD_STATUS_FILE"); s && status) std::ofstream{status};
+    return s;
   }
-  *error = std::string("GTEST_SHARD_INDEX=") + index + " and GTEST_TOTAL_SHARDS=" + total +
-           " do not name a shard (the index counts from 0 and is below the total)";
-  return std::nullopt;
+  // GitLab CI's parallel jobs: CI_NODE_INDEX counts from 1 to CI_NODE_TOTAL.
+  return shardFromVariables("CI_NODE_INDEX", "CI_NODE_TOTAL", 1, error);
 }
 
 std::vector<size_t> shardPositions(size_t total, const Shard& shard) {

@@ -26,6 +26,7 @@ class VulkanAdapter : public Backend {
   const std::string& error() const { return error_; }
   bool validationEnabled() const { return backend_ && backend_->validationEnabled(); }
   std::string driverLibrary() const { return backend_ ? backend_->driverLibrary() : std::string(); }
+  bool cpuDevice() const { return backend_ && backend_->device().cpu; }
   std::string deviceUuid() const { return backend_ ? backend_->device().device_uuid : std::string(); }
 
  private:

@@ -68,6 +68,7 @@ DeviceInfo describeDevice(VkPhysicalDevice physical, uint32_t index) {
   if (rt_ext) { *next = &rt; next = &rt.pNext; }
   if (as_ext) { *next = &as; next = &as.pNext; }
   vkGetPhysicalDeviceProperties2(physical, &props);
+  d.cpu = props.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   if (vk11) d.device_uuid = hexBytes(id.deviceUUID, VK_UUID_SIZE) + "-" + hexBytes(id.driverUUID, VK_UUID_SIZE);
   if (vk12) {
     d.driver_name = driver.driverName;

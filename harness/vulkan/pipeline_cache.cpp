@@ -1,6 +1,10 @@
 #include "vulkan/pipeline_cache.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
+
+#include <algorithm>
 
 #include <cstring>
 #include <filesystem>
@@ -71,28 +75,62 @@ VkPipelineCache openPipelineCache(const VulkanContext& ctx) {
   return cache;
 }
 
-void closePipelineCache(const VulkanContext& ctx, VkPipelineCache cache) {
-  if (cache == VK_NULL_HANDLE) return;
+namespace {
+
+// What the driver has in `cache`, at most kMaxCacheBytes.
+std::vector<char> cacheData(const VulkanContext& ctx, VkPipelineCache cache) {
   size_t size = 0;
   std::vector<char> data;
-  if (vkGetPipelineCacheData(ctx.device, cache, &size, nullptr) == VK_SUCCESS && size <= kMaxCacheBytes) {
-    data.resize(size);
-    if (vkGetPipelineCacheData(ctx.device, cache, &size, data.data()) != VK_SUCCESS) data.clear();
-    data.resize(std::min(size, data.size()));
-  }
-  vkDestroyPipelineCache(ctx.device, cache, nullptr);
-  const std::string path = cacheFile(ctx);
-  if (path.empty() || data.empty()) return;
-  std::error_code ec;
-  std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
+  if (vkGetPipelineCacheData(ctx.device, cache, &size, nullptr) != VK_SUCCESS || size > kMaxCacheBytes) return data;
+  data.resize(size);
+  if (vkGetPipelineCacheData(ctx.device, cache, &size, data.data()) != VK_SUCCESS) return {};
+  data.resize(std::min(size, data.size()));
+  return data;
+}
+
+// Joins into `cache` what the file holds now (another worker may have saved
+// since this one loaded it).
+void mergeSaved(const VulkanContext& ctx, VkPipelineCache cache, const std::string& path) {
+  const std::vector<char> saved = readCacheFile(path, ctx.props);
+  if (saved.empty()) return;
+  VkPipelineCacheCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
+  info.initialDataSize = saved.size();
+  info.pInitialData = saved.data();
+  VkPipelineCache other = VK_NULL_HANDLE;
+  if (vkCreatePipelineCache(ctx.device, &info, nullptr, &other) != VK_SUCCESS) return;
+  vkMergePipelineCaches(ctx.device, cache, 1, &other);
+  vkDestroyPipelineCache(ctx.device, other, nullptr);
+}
+
+void writeWhole(const std::string& path, const std::vector<char>& data) {
   const std::string part = path + ".part." + std::to_string(::getpid());
   {
     std::ofstream out(part, std::ios::binary | std::ios::trunc);
     out.write(data.data(), static_cast<std::streamsize>(data.size()));
     if (!out) return;
   }
+  std::error_code ec;
   std::filesystem::rename(part, path, ec);
   if (ec) std::filesystem::remove(part, ec);
+}
+
+}  // namespace
+
+void closePipelineCache(const VulkanContext& ctx, VkPipelineCache cache) {
+  if (cache == VK_NULL_HANDLE) return;
+  const std::string path = cacheFile(ctx);
+  if (!path.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(std::filesystem::path(path).parent_path(), ec);
+    // One worker at a time reads, merges and writes the file.
+    const int lock = open((path + ".lock").c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
+    if (lock >= 0) flock(lock, LOCK_EX);
+    mergeSaved(ctx, cache, path);
+    const std::vector<char> data = cacheData(ctx, cache);
+    if (!data.empty()) writeWhole(path, data);
+    if (lock >= 0) close(lock);  // releases the lock
+  }
+  vkDestroyPipelineCache(ctx.device, cache, nullptr);
 }
 
 }  // namespace rayspec

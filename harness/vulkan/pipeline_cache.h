@@ -1,7 +1,8 @@
 // A VkPipelineCache per driver, kept between runs: <dir>/<device UUID>-
 // <driver UUID>-<driver version>.bin, loaded when a device is made and saved
-// when it is destroyed (written whole under a temporary name, then renamed,
-// so that workers beside each other never read half a file). A file is input
+// when it is destroyed: merged with what the file holds then (other workers
+// save theirs too), under a lock on <file>.lock, and written whole under a
+// temporary name, then renamed, so that no reader sees half a file. A file is input
 // like any other: over 256 MiB, or with a header that is not this device's
 // (vendor, device, pipelineCacheUUID), it is not given to the driver. Not
 // used where each case gets a device of its own (lavapipe: Mesa's shader

@@ -19,12 +19,14 @@ constexpr uint32_t kPipelineSkipAabbs = 0x2000;      // VK_PIPELINE_CREATE_RAY_T
 
 // Waits for the device before destroying the case's objects, on every path.
 struct CaseScope {
-  explicit CaseScope(VkDevice d) : device(d) {}
+  CaseScope(VkDevice d, StepCosts& c) : device(d), costs(c) {}
   ~CaseScope() {
+    StepTimer time(costs, CostStep::CaseCleanup);
     vkDeviceWaitIdle(device);
     cleanup.run();
   }
   VkDevice device;
+  StepCosts& costs;
   Cleanup cleanup;
 };
 
@@ -81,7 +83,7 @@ void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results&
   glsl.stop();
   CompiledPipeline compiled = compilePipeline(generated, &r.cost);
 
-  CaseScope scope(ctx.device);
+  CaseScope scope(ctx.device, r.cost);
   Cleanup& cleanup = scope.cleanup;
   StepTimer buffer_time(r.cost, CostStep::Buffers);
   CaseBuffers buffers =

@@ -46,6 +46,7 @@ struct DeviceInfo {
   // The extensions (VK_KHR_acceleration_structure with
   // VK_KHR_deferred_host_operations) ...
   bool ray_tracing_extension = false, acceleration_structure_extension = false;
+  bool cpu = false;  // VK_PHYSICAL_DEVICE_TYPE_CPU (lavapipe): the device's work is this machine's cores
   // ... and the features on a Vulkan 1.2 device (what rayspec needs).
   bool ray_tracing_pipeline = false, acceleration_structure = false;
   uint32_t shader_group_handle_size = 0, shader_group_handle_alignment = 0,
