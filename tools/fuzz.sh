@@ -15,9 +15,8 @@ seconds="${1:-60}"
 shift || true
 targets=("${@:-fuzz_case fuzz_saved}")
 read -r -a targets <<<"${targets[*]}"
+source tools/compiler-cache.sh
 if [ ! -x build-fuzz/fuzz/fuzz_saved ] || [ -n "${FUZZ_REBUILD:-}" ]; then
-  launcher=()
-  command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
   cmake --preset fuzz "${launcher[@]}" >/dev/null
 fi
 cmake --build --preset fuzz -j"$(nproc)" >/dev/null

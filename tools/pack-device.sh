@@ -11,7 +11,8 @@
 # build is: rayspec run --device-results DIR --out JUDGED (README.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cmake --preset device >/dev/null
+source tools/compiler-cache.sh
+cmake --preset device "${launcher[@]}" >/dev/null
 cmake --build --preset device -j"$(nproc)"
 bash tools/check-run-only.sh build-device/rayspec >/dev/null
 stage=$(mktemp -d)

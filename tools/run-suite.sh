@@ -4,7 +4,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh
-cmake --preset default >/dev/null
+source tools/compiler-cache.sh
+cmake --preset default "${launcher[@]}" >/dev/null
 cmake --build --preset default -j"$(nproc)"
 export MESA_SHADER_CACHE_DIR="$PWD/build/mesa-shader-cache"
 # The known lavapipe deviations are listed (and shown) as expected results.

@@ -18,6 +18,7 @@ PACKAGES=(
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libre2-dev
   chromium fonts-dejavu-core
   clang libclang-rt-14-dev
+  ccache
 )
 # Packages that must come from bookworm-backports (lavapipe with ray tracing).
 BACKPORT_PACKAGES=(mesa-vulkan-drivers)

@@ -1,14 +1,13 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs the unit tests and one test per
-# case file (device against model, validation layer on) with ctest.
+# case family (device against model, validation layer on) with ctest.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh
-cmake --preset default >/dev/null
+source tools/compiler-cache.sh
+cmake --preset default "${launcher[@]}" >/dev/null
 cmake --build --preset default -j"$(nproc)"
 # The fuzz targets (clang, ASan, UBSan), which ctest's fuzz/inputs runs.
-launcher=()
-command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 cmake --preset fuzz "${launcher[@]}" >/dev/null
 cmake --build --preset fuzz -j"$(nproc)"
 # The run-only binary (no model, no Embree, no OpenImageIO), which ctest's
