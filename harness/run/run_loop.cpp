@@ -307,6 +307,89 @@ void runSlot(const CaseRunner& runner, const RunOptions& opt, const PreparedRun&
   if (device) book.teardownErrors(device->close());
 }
 
+// The lines that say how the run goes: motions, jobs and limits, baseline.
+void announceRun(const RunOptions& opt, unsigned jobs, const Baseline& baseline) {
+  if (opt.permute) std::printf("Permuted: primitives and instances, seed %llu\n", (unsigned long long)*opt.permute);
+  if (opt.move)
+    std::printf("Moved: every case by the rigid motion %s (a case it cannot move exactly is NotSupported)\n",
+                motionSpecText(*opt.move).c_str());
+  if (!opt.no_isolation)
+    std::printf("%u case%s at once, each side in %s: timeout %g s, memory limit %s\n", jobs, jobs == 1 ? "" : "s",
+                opt.process_per_case ? "a process of its own per case"
+                                     : "a long-lived worker process (a new one after a crash)",
+                opt.timeout, opt.memory_limit ? formatBytes(opt.memory_limit).c_str() : "none");
+  if (!baseline.file.empty()) {
+    std::printf("Baseline: %s (%zu known results)\n", baseline.file.c_str(), baseline.expected.size());
+    std::vector<std::string> library;
+    for (const CaseFile& f : findCases(opt.cases_dir, "*")) library.push_back(f.name);
+    for (const std::string& w : unknownEntries(baseline, library)) std::printf("Baseline warning: %s\n", w.c_str());
+  }
+  if (!baseline.flakes_file.empty())
+    std::printf("Flakes: %s (%zu patterns)\n", baseline.flakes_file.c_str(), baseline.flakes.size());
+  if (!baseline.skips_file.empty())
+    std::printf("Skips: %s (%zu patterns)\n", baseline.skips_file.c_str(), baseline.skips.size());
+}
+
+// Takes the cases that need no run (kept as judged, skipped, case-file
+// errors, not moved) into the book; the others' positions in the order they
+// are dealt: longest first, or their own order with one job (what ran before
+// a case in its worker is then the same in every run).
+std::vector<size_t> dealOrder(const PreparedRun& prepared, const RunOptions& opt, unsigned jobs, RunBook& book) {
+  std::vector<std::string> names;
+  std::vector<size_t> positions;
+  for (size_t i = 0; i < prepared.planned.size(); ++i) {
+    const PlannedCase& p = prepared.planned[i];
+    if (p.ready) {
+      book.finish(i, *p.ready, !p.resumed);
+    } else {
+      names.push_back(p.name);
+      positions.push_back(i);
+    }
+  }
+  const std::map<std::string, double> seconds =
+      jobs > 1 ? loadCaseSeconds(opt.cache_dir) : std::map<std::string, double>{};
+  std::vector<size_t> order;
+  for (size_t k : longestFirst(names, seconds)) order.push_back(positions[k]);
+  return order;
+}
+
+// `jobs` slots at once, each a thread with its own workers, until every case
+// has been dealt (or a signal stopped the run).
+void runSlots(unsigned jobs, const CaseRunner& runner, const RunOptions& opt, const PreparedRun& prepared,
+              const std::vector<size_t>& order, const Baseline& baseline, RunBook& book) {
+  std::atomic<size_t> next{0};
+  std::vector<std::thread> slots;
+  for (unsigned j = 0; j < jobs; ++j)
+    slots.emplace_back([&] { runSlot(runner, opt, prepared, order, next, baseline, book); });
+  for (std::thread& t : slots) t.join();
+}
+
+// The run's end: timings kept for the next run's order, coverage, the
+// reports in full, the summary printed; the exit status.
+int finishRun(RunBook& book, RunInfo& info, const RunOptions& opt, size_t planned, bool device_found) {
+  const std::vector<CaseOutcome> ended = book.ended();
+  std::vector<std::pair<std::string, std::vector<std::string>>> case_rules;
+  std::map<std::string, double> seconds;
+  for (const CaseOutcome& o : ended) {
+    case_rules.push_back({o.name, o.rules});
+    if (o.status != Status::CaseError && o.seconds > 0) seconds[o.name] = o.seconds;
+  }
+  saveCaseSeconds(opt.cache_dir, seconds);
+  info.coverage = ruleCoverage(info.catalog, case_rules);
+  info.interrupted = ended.size() < planned;
+  book.writeAll();
+  RunSummary summary(planned, false);
+  for (const CaseOutcome& o : book.ended()) summary.add(o);
+  for (const std::string& m : book.teardown()) summary.addTeardownError(m);
+  summary.print();
+  if (info.interrupted) std::printf("INTERRUPTED: %zu of %zu cases ran\n", ended.size(), planned);
+  std::printf("Reports: %s/report.html, results.csv, junit.xml, summary.json\n", opt.out.c_str());
+  const int status = runExitStatus(summary, planned, device_found, interruptSignal());
+  if (status == kExitNothingCompared)
+    std::fprintf(stderr, "rayspec run: nothing was compared: every case is NotSupported\n");
+  return status;
+}
+
 }  // namespace
 
 int runCases(const RunOptions& requested) {
@@ -405,25 +488,7 @@ int runCases(const RunOptions& requested) {
     if (opt.no_isolation) model = std::make_unique<ModelAdapter>(ModelOptions{parseModelTier(opt.model_tier), opt.threads});
     std::printf("Model: embree, %s tier\n", opt.model_tier.c_str());
   }
-  if (opt.permute) std::printf("Permuted: primitives and instances, seed %llu\n", (unsigned long long)*opt.permute);
-  if (opt.move)
-    std::printf("Moved: every case by the rigid motion %s (a case it cannot move exactly is NotSupported)\n",
-                motionSpecText(*opt.move).c_str());
-  if (!opt.no_isolation)
-    std::printf("%u case%s at once, each side in %s: timeout %g s, memory limit %s\n", jobs, jobs == 1 ? "" : "s",
-                opt.process_per_case ? "a process of its own per case"
-                                     : "a long-lived worker process (a new one after a crash)",
-                opt.timeout, opt.memory_limit ? formatBytes(opt.memory_limit).c_str() : "none");
-  if (!baseline.file.empty()) {
-    std::printf("Baseline: %s (%zu known results)\n", baseline.file.c_str(), baseline.expected.size());
-    std::vector<std::string> library;
-    for (const CaseFile& f : findCases(opt.cases_dir, "*")) library.push_back(f.name);
-    for (const std::string& w : unknownEntries(baseline, library)) std::printf("Baseline warning: %s\n", w.c_str());
-  }
-  if (!baseline.flakes_file.empty())
-    std::printf("Flakes: %s (%zu patterns)\n", baseline.flakes_file.c_str(), baseline.flakes.size());
-  if (!baseline.skips_file.empty())
-    std::printf("Skips: %s (%zu patterns)\n", baseline.skips_file.c_str(), baseline.skips.size());
+  announceRun(opt, jobs, baseline);
   std::map<std::string, CaseOutcome> earlier;  // --resume: the cases the folder already has
   if (opt.resume) {
     std::string error;
@@ -447,52 +512,12 @@ int runCases(const RunOptions& requested) {
     if (const std::string e = startJournal(opt.out); !e.empty()) std::fprintf(stderr, "rayspec run: %s\n", e.c_str());
   RunBook book(prepared, baseline, info, opt.out);
   book.writeAll();  // empty and marked interrupted until the run ends
-  std::vector<std::string> to_run;
-  for (size_t i = 0; i < prepared.planned.size(); ++i) {
-    const PlannedCase& p = prepared.planned[i];
-    if (p.ready) book.finish(i, *p.ready, !p.resumed);  // kept as judged, skipped, case-file error, not moved
-    else to_run.push_back(p.name);
-  }
-  std::vector<size_t> order;
-  {
-    std::vector<size_t> positions;
-    for (size_t i = 0; i < prepared.planned.size(); ++i)
-      if (!prepared.planned[i].ready) positions.push_back(i);
-    // One job at a time keeps the cases' own order (what ran before a case in
-    // its worker is then the same in every run).
-    const std::map<std::string, double> seconds = jobs > 1 ? loadCaseSeconds(opt.cache_dir) : std::map<std::string, double>{};
-    for (size_t k : longestFirst(to_run, seconds)) order.push_back(positions[k]);
-  }
-
+  const std::vector<size_t> order = dealOrder(prepared, opt, jobs, book);
   catchInterrupts();
   const CaseRunner runner(opt, device.get(), model.get());
-  std::atomic<size_t> next{0};
-  std::vector<std::thread> slots;
-  for (unsigned j = 0; j < jobs; ++j)
-    slots.emplace_back([&] { runSlot(runner, opt, prepared, order, next, baseline, book); });
-  for (std::thread& t : slots) t.join();
+  runSlots(jobs, runner, opt, prepared, order, baseline, book);
   if (device) book.teardownErrors(device->close());
-
-  const std::vector<CaseOutcome> ended = book.ended();
-  std::vector<std::pair<std::string, std::vector<std::string>>> case_rules;
-  std::map<std::string, double> seconds;
-  for (const CaseOutcome& o : ended) {
-    case_rules.push_back({o.name, o.rules});
-    if (o.status != Status::CaseError && o.seconds > 0) seconds[o.name] = o.seconds;
-  }
-  saveCaseSeconds(opt.cache_dir, seconds);
-  info.coverage = ruleCoverage(info.catalog, case_rules);
-  info.interrupted = ended.size() < files.size();
-  book.writeAll();
-  RunSummary summary(files.size(), false);
-  for (const CaseOutcome& o : book.ended()) summary.add(o);
-  for (const std::string& m : book.teardown()) summary.addTeardownError(m);
-  summary.print();
-  if (info.interrupted) std::printf("INTERRUPTED: %zu of %zu cases ran\n", ended.size(), files.size());
-  std::printf("Reports: %s/report.html, results.csv, junit.xml, summary.json\n", opt.out.c_str());
-  const int status = runExitStatus(summary, files.size(), device_found, interruptSignal());
-  if (status == kExitNothingCompared) std::fprintf(stderr, "rayspec run: nothing was compared: every case is NotSupported\n");
-  return status;
+  return finishRun(book, info, opt, files.size(), device_found);
 }
 
 int runExitStatus(const RunSummary& summary, size_t planned, bool device_found, int signal) {
