@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "results/whole_file.h"
+
 namespace rayspec {
 namespace {
 
@@ -40,13 +42,8 @@ void saveCaseSeconds(const std::string& cache_dir, const std::map<std::string, d
   for (const auto& [name, s] : seconds) all[name] = s;
   std::error_code ec;
   std::filesystem::create_directories(cache_dir, ec);
-  const std::string path = cachePath(cache_dir), part = path + ".part." + std::to_string(::getpid());
-  {
-    std::ofstream out(part);
-    out << nlohmann::json(all).dump(0) << "\n";
-    if (!out) return;
-  }
-  std::filesystem::rename(part, path, ec);  // whole or not at all, with runs beside this one
+  const std::string text = nlohmann::json(all).dump(0) + "\n";
+  writeFileWhole(cachePath(cache_dir), text.data(), text.size());  // runs beside this one read it too
 }
 
 std::vector<size_t> longestFirst(const std::vector<std::string>& names, const std::map<std::string, double>& seconds) {

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "results/content_hash.h"
+#include "results/whole_file.h"
 #include "spirv/compile_glsl.h"
 
 namespace rayspec {
@@ -44,20 +45,7 @@ bool readFile(const std::filesystem::path& path, std::vector<uint32_t>& words) {
 }
 
 void writeFile(const std::filesystem::path& path, const std::vector<uint32_t>& words) {
-  // Write to a temporary name, then rename: readers never see half a file.
-  std::filesystem::path tmp = path;
-  tmp += ".tmp" + std::to_string(::getpid()) + "-" +
-         std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id()));
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) return;
-    out.write(reinterpret_cast<const char*>(words.data()),
-              static_cast<std::streamsize>(words.size() * 4));
-    if (!out) return;
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) std::filesystem::remove(tmp, ec);
+  writeFileWhole(path.string(), words.data(), words.size() * 4);
 }
 
 }  // namespace

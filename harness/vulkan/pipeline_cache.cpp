@@ -12,6 +12,7 @@
 #include <mutex>
 #include <vector>
 
+#include "results/whole_file.h"
 #include "vulkan/context.h"
 
 namespace rayspec {
@@ -102,18 +103,6 @@ void mergeSaved(const VulkanContext& ctx, VkPipelineCache cache, const std::stri
   vkDestroyPipelineCache(ctx.device, other, nullptr);
 }
 
-void writeWhole(const std::string& path, const std::vector<char>& data) {
-  const std::string part = path + ".part." + std::to_string(::getpid());
-  {
-    std::ofstream out(part, std::ios::binary | std::ios::trunc);
-    out.write(data.data(), static_cast<std::streamsize>(data.size()));
-    if (!out) return;
-  }
-  std::error_code ec;
-  std::filesystem::rename(part, path, ec);
-  if (ec) std::filesystem::remove(part, ec);
-}
-
 }  // namespace
 
 void closePipelineCache(const VulkanContext& ctx, VkPipelineCache cache) {
@@ -127,7 +116,7 @@ void closePipelineCache(const VulkanContext& ctx, VkPipelineCache cache) {
     if (lock >= 0) flock(lock, LOCK_EX);
     mergeSaved(ctx, cache, path);
     const std::vector<char> data = cacheData(ctx, cache);
-    if (!data.empty()) writeWhole(path, data);
+    if (!data.empty()) writeFileWhole(path, data.data(), data.size());
     if (lock >= 0) close(lock);  // releases the lock
   }
   vkDestroyPipelineCache(ctx.device, cache, nullptr);
