@@ -20,6 +20,8 @@ TEST(RecordLayout, FieldsAreContiguousUniqueAndFitTheWrittenMask) {
   for (const RecordField& f : recordFields()) {
     EXPECT_TRUE(names.insert(f.name).second) << f.name;
     EXPECT_EQ(f.offset, next) << f.name;
+    EXPECT_EQ(static_cast<int>(f.index), recordFieldIndex(f.name)) << f.name;
+    EXPECT_EQ(&f, &recordFields()[f.index]) << f.name;
     EXPECT_GE(f.words, 1u);
     EXPECT_LE(f.words, 4u);
     next += f.words;

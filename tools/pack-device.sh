@@ -9,13 +9,15 @@
 #     --cache-dir cache --out DIR
 # It runs the device side only; bring DIR back and judge it where the full
 # build is: rayspec run --device-results DIR --out JUDGED (README.md).
+# PACK_STAGE=DIR (an empty or missing folder) leaves the pack unpacked there
+# instead (tools/second-driver.sh: no compression for a copy on this machine).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source tools/compiler-cache.sh
 cmake --preset device "${launcher[@]}" >/dev/null
 cmake --build --preset device -j"$(nproc)"
 bash tools/check-run-only.sh build-device/rayspec >/dev/null
-stage=$(mktemp -d)
+stage=${PACK_STAGE:-$(mktemp -d)}
 mkdir -p "$stage/lib" "$stage/layer" .device
 cp build-device/rayspec "$stage/" && strip "$stage/rayspec"
 # The cases as they are here: a saved bundle is judged only against the same case text.
@@ -31,6 +33,10 @@ layer_json=/usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json
 cp /usr/lib/x86_64-linux-gnu/libVkLayer_khronos_validation.so "$stage/layer/"
 sed 's#"library_path": "libVkLayer_khronos_validation.so"#"library_path": "./libVkLayer_khronos_validation.so"#' \
   "$layer_json" > "$stage/layer/VkLayer_khronos_validation.json"
+if [ -n "${PACK_STAGE:-}" ]; then
+  echo "the pack, unpacked: $stage"
+  exit 0
+fi
 tar -C "$stage" -cf - . | xz -T0 -4 > .device/pack.tar.xz
 (cd "$stage" && for f in . * lib/* layer/*; do du -sh "$f"; done)
 rm -rf "$stage"

@@ -61,23 +61,25 @@ versions() {
   inside spirv-val --version | head -n 1
 }
 
-# Packs the run-only build and unpacks it inside the environment.
+# Packs the run-only build straight into the environment (unpacked). The
+# pack brings its SPIR-V (pack/cache), which the run inside uses; Mesa's own
+# shader cache beside it is kept between runs.
 install_pack() {
-  bash tools/pack-device.sh >/dev/null
-  rm -rf "$ENV_DIR$WORK"
+  rm -rf "$ENV_DIR$WORK/pack" "$ENV_DIR$WORK/cache"
   mkdir -p "$ENV_DIR$WORK/pack"
-  tar -C "$ENV_DIR$WORK/pack" -xJf .device/pack.tar.xz
+  PACK_STAGE="$ENV_DIR$WORK/pack" bash tools/pack-device.sh >/dev/null
 }
 
-# Every module the inside run compiled (its fresh SPIR-V cache), through the
-# environment's spirv-val; the verdict of each in OUT/spirv-val.txt.
+# Every module of the pack's SPIR-V cache, which the run inside used (and
+# added to where it compiled more), through the environment's spirv-val; the
+# verdict of each in OUT/spirv-val.txt.
 check_spirv() {
   local out=$1 bad=0 n=0
   : >"$out/spirv-val.txt"
-  for f in "$ENV_DIR$WORK/cache/spirv/"*.spv; do
+  for f in "$ENV_DIR$WORK/pack/cache/spirv/"*.spv; do
     [[ -e "$f" ]] || continue
     n=$((n + 1))
-    if ! msg=$(inside spirv-val --target-env vulkan1.2 "$WORK/cache/spirv/$(basename "$f")" 2>&1); then
+    if ! msg=$(inside spirv-val --target-env vulkan1.2 "$WORK/pack/cache/spirv/$(basename "$f")" 2>&1); then
       bad=$((bad + 1))
       printf '%s: INVALID\n%s\n' "$(basename "$f")" "$msg" >>"$out/spirv-val.txt"
     fi
@@ -117,7 +119,7 @@ run() {
   # moves with what ran before; the loss, which the baseline lists, does not.
   echo "== the run inside (device side only, a process per case; exit 3 is the run-only build's)"
   local rc=0
-  inside sh -c 'icd=$1; shift; cd "$0/pack" && RAYSPEC_CACHE_DIR="$0/cache" MESA_SHADER_CACHE_DIR="$0/mesa-cache" LD_LIBRARY_PATH=lib \
+  inside sh -c 'icd=$1; shift; cd "$0/pack" && RAYSPEC_CACHE_DIR="$0/pack/cache" MESA_SHADER_CACHE_DIR="$0/mesa-cache" LD_LIBRARY_PATH=lib \
     ./rayspec run --cases cases --rules spec-rules.yaml --icd "$icd" --strict-validation --process-per-case --out "$0/out" "$@" >"$0/run.log" 2>&1' \
     "$WORK" "$ICD" "${args[@]}" || rc=$?
   tail -n 5 "$ENV_DIR$WORK/run.log"

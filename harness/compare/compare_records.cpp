@@ -119,13 +119,14 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
     const uint32_t* m = &model.records[i * words];
     const uint32_t ray = static_cast<uint32_t>(i);
     if (undefined.count(ray)) continue;  // R-UB: never judged
+    const float t_bound = tBound(t_bounds, ray);
     if (const auto it = ambiguous.find(ray); it != ambiguous.end()) {
       checkAmbiguous(c, *it->second, d, wrongs, leak);
-      checkAmbiguousShared(c, shape, *it->second, d, m, fields, tBound(t_bounds, ray), wrongs);
+      checkAmbiguousShared(c, shape, *it->second, d, m, fields, t_bound, wrongs);
       continue;
     }
     for (const RecordField* f : fields) {
-      if (sameField(*f, d, m, tBound(t_bounds, ray))) continue;
+      if (sameField(*f, d, m, t_bound)) continue;
       FindingBuilder& b = mismatches[f->name];
       if (b.finding.message.empty())
         b.finding = {Status::Fail, ruleForField(f->name, c.rules),

@@ -1,5 +1,7 @@
 #include <algorithm>
 #include <bit>
+#include <string_view>
+#include <vector>
 
 #include "compare/compare_parts.h"
 #include "results/record_layout.h"
@@ -20,17 +22,39 @@ float tBound(const std::map<uint32_t, float>& t_bounds, uint32_t ray) {
   return b == t_bounds.end() ? 0.0f : b->second;
 }
 
+namespace {
+
+// Each field's tolerance by field index, and whether the model's t bound
+// widens it (hit_t, ray_tmax): looked up once, not per ray.
+struct FieldTolerance {
+  Tolerance tol;
+  bool widened_by_t_bound;
+};
+
+const std::vector<FieldTolerance>& fieldTolerances() {
+  static const std::vector<FieldTolerance> table = [] {
+    std::vector<FieldTolerance> t;
+    for (const RecordField& f : recordFields()) {
+      const std::string_view name = f.name;
+      t.push_back({toleranceFor(f.name), name == "hit_t" || name == "ray_tmax"});
+    }
+    return t;
+  }();
+  return table;
+}
+
+}  // namespace
+
 bool sameField(const RecordField& f, const uint32_t* d, const uint32_t* m, float t_bound) {
-  const int index = recordFieldIndex(f.name);
+  const int index = static_cast<int>(f.index);
   if (!f.automatic && written(d, index) != written(m, index)) return false;
   if (!f.automatic && !written(d, index)) return true;
-  Tolerance tol = toleranceFor(f.name);
-  if (f.name == std::string("hit_t") || f.name == std::string("ray_tmax"))
-    tol.abs = std::max(tol.abs, static_cast<double>(t_bound));
-  for (uint32_t k = 0; k < f.words; ++k) {
-    const uint32_t dw = d[f.offset + k], mw = m[f.offset + k];
-    if (f.type == FieldType::Uint ? dw != mw : !tol.matches(asFloat(dw), asFloat(mw))) return false;
-  }
+  if (f.type == FieldType::Uint) return std::equal(d + f.offset, d + f.offset + f.words, m + f.offset);
+  const FieldTolerance& ft = fieldTolerances()[f.index];
+  Tolerance tol = ft.tol;
+  if (ft.widened_by_t_bound) tol.abs = std::max(tol.abs, static_cast<double>(t_bound));
+  for (uint32_t k = 0; k < f.words; ++k)
+    if (!tol.matches(asFloat(d[f.offset + k]), asFloat(m[f.offset + k]))) return false;
   return true;
 }
 

@@ -38,7 +38,7 @@ std::vector<RecordField> buildFields() {
   std::vector<RecordField> fields;
   uint32_t offset = kRecordWrittenMaskWord + 1;
   for (const Decl& d : decls) {
-    fields.push_back({d.name, d.type, d.words, offset, d.automatic});
+    fields.push_back({d.name, d.type, d.words, offset, d.automatic, static_cast<uint32_t>(fields.size())});
     offset += d.words;
   }
   return fields;
@@ -51,13 +51,13 @@ const std::vector<RecordField>& recordFields() {
   return fields;
 }
 
-const RecordField* findRecordField(const std::string& name) {
+const RecordField* findRecordField(std::string_view name) {
   for (const RecordField& f : recordFields())
     if (name == f.name) return &f;
   return nullptr;
 }
 
-int recordFieldIndex(const std::string& name) {
+int recordFieldIndex(std::string_view name) {
   const auto& fields = recordFields();
   for (size_t i = 0; i < fields.size(); ++i)
     if (name == fields[i].name) return static_cast<int>(i);

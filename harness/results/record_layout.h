@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace rayspec {
@@ -17,13 +18,14 @@ struct RecordField {
   uint32_t words;     // 1..4 components
   uint32_t offset;    // word offset inside one record
   bool automatic;     // maintained by the harness, never written by `record`
+  uint32_t index;     // position in recordFields(): the field's bit in the written mask
 };
 
 // Word 0: bit mask of the recordable fields written (bit = field index).
 // Then the recordable fields, then the automatic per-ray stage run counts.
 const std::vector<RecordField>& recordFields();
-const RecordField* findRecordField(const std::string& name);
-int recordFieldIndex(const std::string& name);  // -1 when unknown
+const RecordField* findRecordField(std::string_view name);
+int recordFieldIndex(std::string_view name);  // -1 when unknown
 constexpr uint32_t kRecordWrittenMaskWord = 0;
 uint32_t recordWords();  // words per ray
 
