@@ -104,8 +104,8 @@ TEST(ModelSphere, RootNearTminIsAmbiguous) {
 
 TEST(ModelSphere, ErrorBoundsAreTightForClearRays) {
   const std::array<float, 12> identity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
-  const F3 bmin = {-1, -1, -1}, bmax = {1, 1, 1};
-  const F3 o = {0.5f, 0, 5}, d = {0, 0, -1};
+  const Vec3 bmin = {-1, -1, -1}, bmax = {1, 1, 1};
+  const Vec3 o = {0.5f, 0, 5}, d = {0, 0, -1};
   const SphereError se = sphereError(bmin, bmax, o, d, objectRayError(identity, o, d));
   EXPECT_NEAR(se.disc, 0.75, 1e-9);
   EXPECT_GT(se.disc_err, 0.0);
@@ -135,8 +135,8 @@ TEST(ModelSphere, MixedSceneRay638477IsTangent) {
   bool tangent = false;
   for (size_t k = 0; k < aabbs.size(); ++k) {
     const auto& bx = aabbs[k];
-    const F3 bmin = {bx[0], bx[1], bx[2]}, bmax = {bx[3], bx[4], bx[5]};
-    F3 of, df;
+    const Vec3 bmin = {bx[0], bx[1], bx[2]}, bmax = {bx[3], bx[4], bx[5]};
+    Vec3 of, df;
     double od[3], dd[3];
     for (int i = 0; i < 3; ++i) {
       of[i] = mi.inverse_f[i * 4] * ray.origin[0] + mi.inverse_f[i * 4 + 1] * ray.origin[1] +
@@ -149,7 +149,7 @@ TEST(ModelSphere, MixedSceneRay638477IsTangent) {
               mi.inverse[i * 4 + 2] * ray.direction[2];
     }
     // Float, operation by operation (sphereRoots), and double.
-    F3 cf, hf;
+    Vec3 cf, hf;
     double cd[3], hd[3];
     for (int i = 0; i < 3; ++i) {
       cf[i] = (bmin[i] + bmax[i]) * 0.5f; hf[i] = (bmax[i] - bmin[i]) * 0.5f;
@@ -159,7 +159,7 @@ TEST(ModelSphere, MixedSceneRay638477IsTangent) {
     const double rd = std::min({hd[0], hd[1], hd[2]});
     float af = 0, bf = 0, ccf = 0;
     double ad = 0, bd = 0, ccd = 0;
-    const F3 ocf = {of[0] - cf[0], of[1] - cf[1], of[2] - cf[2]};
+    const Vec3 ocf = {of[0] - cf[0], of[1] - cf[1], of[2] - cf[2]};
     af = df[0] * df[0] + df[1] * df[1] + df[2] * df[2];
     bf = ocf[0] * df[0] + ocf[1] * df[1] + ocf[2] * df[2];
     ccf = ocf[0] * ocf[0] + ocf[1] * ocf[1] + ocf[2] * ocf[2] - rf * rf;

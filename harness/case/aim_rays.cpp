@@ -5,25 +5,21 @@
 #include <map>
 #include <tuple>
 
+#include "base/affine.h"
+#include "base/vec3.h"
+
 namespace rayspec {
 namespace {
 
 using Pos = std::tuple<float, float, float>;
-using DPoint = std::array<double, 3>;
 
 Pos key(const Vec3& v) { return {v[0], v[1], v[2]}; }
 
-DPoint transformPoint(const Transform& m, const DPoint& p) {
-  DPoint r;
-  for (int k = 0; k < 3; ++k)
-    r[k] = double(m[k * 4]) * p[0] + double(m[k * 4 + 1]) * p[1] + double(m[k * 4 + 2]) * p[2] + double(m[k * 4 + 3]);
-  return r;
-}
 
 }  // namespace
 
-std::vector<DPoint> meshAimPoints(const Geometry& g, const AimSpec& spec) {
-  std::vector<DPoint> out;
+std::vector<DVec3> meshAimPoints(const Geometry& g, const AimSpec& spec) {
+  std::vector<DVec3> out;
   if (g.kind != Geometry::Kind::Triangles) return out;
   std::vector<std::array<Vec3, 3>> tris;
   for (uint32_t p = 0; p < g.primitiveCount(); ++p) {
@@ -55,27 +51,26 @@ std::vector<DPoint> meshAimPoints(const Geometry& g, const AimSpec& spec) {
     auto k = key(a) < key(b) ? std::make_pair(key(a), key(b)) : std::make_pair(key(b), key(a));
     return edge_use[k] == 2;
   };
-  auto dp = [](const Vec3& v) { return DPoint{v[0], v[1], v[2]}; };
   if (spec.vertices)
     for (const Vec3& v : vertices) {
       bool closed = true;
       for (const auto& [a, b] : edges)
         if ((key(a) == key(v) || key(b) == key(v)) && !shared(a, b)) closed = false;
-      if (closed) out.push_back(dp(v));
+      if (closed) out.push_back(toDouble(v));
     }
   if (spec.edges)
     for (const auto& [a, b] : edges) {
       if (!shared(a, b)) continue;
       for (uint32_t k = 1; k <= spec.edge_points; ++k) {
         const double s = double(k) / (spec.edge_points + 1);
-        DPoint p;
+        DVec3 p;
         for (int c = 0; c < 3; ++c) p[c] = double(a[c]) + s * (double(b[c]) - double(a[c]));
         out.push_back(p);
       }
     }
   if (spec.faces)
     for (const auto& t : tris) {
-      DPoint p;
+      DVec3 p;
       for (int c = 0; c < 3; ++c) p[c] = (double(t[0][c]) + double(t[1][c]) + double(t[2][c])) / 3;
       out.push_back(p);
     }
@@ -95,9 +90,9 @@ std::vector<Ray> aimRays(const Scene& scene, const AimSpec& spec, const Ray& def
     return rays;
   }
   const Geometry& g = blas.geometries[spec.geometry];
-  for (DPoint p : meshAimPoints(g, spec)) {
-    if (g.transform) p = transformPoint(*g.transform, p);
-    p = transformPoint(inst.transform, p);
+  for (DVec3 p : meshAimPoints(g, spec)) {
+    if (g.transform) p = applyAffine(toDouble(*g.transform), p, 1.0);
+    p = applyAffine(toDouble(inst.transform), p, 1.0);
     Ray r = defaults;
     for (int k = 0; k < 3; ++k) {
       r.origin[k] = static_cast<float>(p[k] + spec.offset[k]);

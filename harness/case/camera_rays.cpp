@@ -3,32 +3,20 @@
 
 #include <cmath>
 
+#include "base/vec3.h"
+
 namespace rayspec {
-namespace {
-
-using D3 = std::array<double, 3>;
-D3 sub(const D3& a, const D3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-D3 cross(const D3& a, const D3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double length(const D3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
-D3 scaled(const D3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
-Vec3 toFloat(const D3& a) {
-  return {static_cast<float>(a[0]), static_cast<float>(a[1]), static_cast<float>(a[2])};
-}
-
-}  // namespace
 
 std::vector<Ray> cameraRays(const CameraSpec& cam, const Ray& defaults) {
-  D3 forward = sub(cam.look_at, cam.origin);
+  DVec3 forward = sub(cam.look_at, cam.origin);
   const double flen = length(forward);
   if (!(flen > 0)) return {};
   forward = scaled(forward, 1 / flen);
-  D3 right = cross(forward, cam.up);
+  DVec3 right = cross(forward, cam.up);
   const double rlen = length(right);
   if (!(rlen > 1e-12)) return {};
   right = scaled(right, 1 / rlen);
-  const D3 up = cross(right, forward);
+  const DVec3 up = cross(right, forward);
   const double half_h = std::tan(cam.fov_degrees * M_PI / 360.0);
   const double half_w = half_h * cam.width / cam.height;
 
@@ -38,7 +26,7 @@ std::vector<Ray> cameraRays(const CameraSpec& cam, const Ray& defaults) {
     const double v = (1 - 2 * (y + 0.5) / cam.height) * half_h;  // +1 at the top
     for (uint32_t x = 0; x < cam.width; ++x) {
       const double u = (2 * (x + 0.5) / cam.width - 1) * half_w;
-      D3 d;
+      DVec3 d;
       for (int i = 0; i < 3; ++i) d[i] = forward[i] + u * right[i] + v * up[i];
       Ray r = defaults;
       r.origin = toFloat(cam.origin);
@@ -54,7 +42,7 @@ std::vector<Ray> gridRays(const GridSpec& g, const Ray& defaults) {
   rays.reserve(size_t(g.width) * g.height);
   for (uint32_t y = 0; y < g.height; ++y)
     for (uint32_t x = 0; x < g.width; ++x) {
-      D3 o;
+      DVec3 o;
       for (int i = 0; i < 3; ++i) o[i] = g.origin[i] + (x + 0.5) * g.du[i] + (y + 0.5) * g.dv[i];
       Ray r = defaults;
       r.origin = toFloat(o);

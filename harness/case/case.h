@@ -10,16 +10,16 @@
 #include <string>
 #include <vector>
 
+#include "base/affine.h"
+#include "base/vec3.h"
 #include "case/source_loc.h"
 #include "program/program.h"
 #include "results/results.h"
 
 namespace rayspec {
 
-using Vec3 = std::array<float, 3>;
-// Row-major 3x4 affine transform, as VkTransformMatrixKHR.
-using Transform = std::array<float, 12>;
-constexpr Transform kIdentity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+// Vec3 (float positions and directions) and Transform (row-major 3x4, as
+// VkTransformMatrixKHR): base/vec3.h and base/affine.h.
 
 // Vulkan geometry flags (VkGeometryFlagBitsKHR values).
 enum GeometryFlag : uint32_t {

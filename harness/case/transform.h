@@ -3,11 +3,11 @@
 
 #include <array>
 
+#include "base/affine.h"
+#include "base/vec3.h"
 #include "case/case.h"
 
 namespace rayspec {
-
-using DVec3 = std::array<double, 3>;
 
 struct TransformParts {
   DVec3 translate{0, 0, 0};
@@ -24,6 +24,6 @@ double linearDeterminant(const Transform& t);
 
 // The inverse (world -> object for an instance), row-major 3x4, in double;
 // all zero when the linear part is not invertible.
-std::array<double, 12> invertTransform(const Transform& m);
+DTransform invertTransform(const Transform& m);
 
 }  // namespace rayspec

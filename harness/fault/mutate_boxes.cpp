@@ -6,37 +6,15 @@
 #include <set>
 #include <tuple>
 
+#include "base/affine.h"
+#include "base/slab.h"
 #include "case/transform.h"
 #include "fault/fault_impl.h"
 
 namespace rayspec {
 namespace {
 
-using D3 = std::array<double, 3>;
 using BoxKey = std::tuple<uint32_t, uint32_t, uint32_t>;  // blas, geometry, primitive
-
-D3 apply(const std::array<double, 12>& m, const Vec3& v, double w) {
-  D3 r;
-  for (int row = 0; row < 3; ++row)
-    r[row] = m[row * 4] * v[0] + m[row * 4 + 1] * v[1] + m[row * 4 + 2] * v[2] + m[row * 4 + 3] * w;
-  return r;
-}
-
-// Where the ray's line enters and leaves the box (t0 > t1: it does not).
-std::pair<double, double> slab(const std::array<float, 6>& a, const D3& o, const D3& d) {
-  double t0 = -std::numeric_limits<double>::infinity(), t1 = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < 3; ++k) {
-    if (d[k] == 0) {
-      if (o[k] < a[k] || o[k] > a[k + 3]) return {1, 0};
-      continue;
-    }
-    double n = (a[k] - o[k]) / d[k], f = (a[k + 3] - o[k]) / d[k];
-    if (n > f) std::swap(n, f);
-    t0 = std::max(t0, n);
-    t1 = std::min(t1, f);
-  }
-  return {t0, t1};
-}
 
 struct Crossing {
   BoxKey box;
@@ -48,14 +26,14 @@ std::vector<Crossing> crossings(const Case& c, const Ray& r) {
   std::vector<Crossing> out;
   for (const Instance& inst : c.scene.instances) {
     if (!inst.blas) continue;
-    const std::array<double, 12> inv = invertTransform(inst.transform);
-    const D3 o = apply(inv, r.origin, 1), d = apply(inv, r.direction, 0);
+    const DTransform inv = invertTransform(inst.transform);
+    const DVec3 o = applyAffine(inv, toDouble(r.origin), 1), d = applyAffine(inv, toDouble(r.direction), 0);
     const Blas& b = c.scene.blases[*inst.blas];
     for (uint32_t g = 0; g < b.geometries.size(); ++g)
       for (uint32_t p = 0; p < b.geometries[g].aabbs.size(); ++p) {
         const auto& a = b.geometries[g].aabbs[p];
         if (std::isnan(a[0])) continue;
-        const auto [t0, t1] = slab(a, o, d);
+        const auto [t0, t1] = slabSpan({a[0], a[1], a[2]}, {a[3], a[4], a[5]}, o, d);
         if (t0 <= t1 && t1 >= r.tmin && std::max(t0, double(r.tmin)) <= r.tmax)
           out.push_back({{*inst.blas, g, p}, t0});
       }

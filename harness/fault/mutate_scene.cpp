@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 
+#include "base/vec3.h"
 #include "case/transform.h"
 #include "fault/fault_impl.h"
 #include "fault/program_edit.h"
@@ -40,40 +41,31 @@ size_t clearInstanceFlags(Case& c, uint32_t bits) {
   return n;
 }
 
-using D3 = std::array<double, 3>;
-D3 sub(const D3& a, const D3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-D3 cross(const D3& a, const D3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double len(const D3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
-D3 axpy(const D3& p, const D3& u, double s) { return {p[0] + u[0] * s, p[1] + u[1] * s, p[2] + u[2] * s}; }
-
 // A triangle that holds the degenerate one (a segment P..Q or a point)
 // strictly inside: base below the segment, apex above it, in the plane of the
 // segment and the coordinate axis least along it (z for a point).
-std::array<Vec3, 3> fattened(const std::array<D3, 3>& v) {
-  D3 p = v[0], q = v[0];
+std::array<Vec3, 3> fattened(const std::array<DVec3, 3>& v) {
+  DVec3 p = v[0], q = v[0];
   double longest = 0;
   for (int i = 0; i < 3; ++i)
     for (int j = i + 1; j < 3; ++j)
-      if (len(sub(v[j], v[i])) > longest) {
-        longest = len(sub(v[j], v[i]));
+      if (length(sub(v[j], v[i])) > longest) {
+        longest = length(sub(v[j], v[i]));
         p = v[i];
         q = v[j];
       }
-  D3 u = longest > 0 ? D3{(q[0] - p[0]) / longest, (q[1] - p[1]) / longest, (q[2] - p[2]) / longest} : D3{1, 0, 0};
+  DVec3 u = longest > 0 ? DVec3{(q[0] - p[0]) / longest, (q[1] - p[1]) / longest, (q[2] - p[2]) / longest} : DVec3{1, 0, 0};
   int axis = 2;
   for (int k = 1; k >= 0; --k)
     if (std::fabs(u[k]) < std::fabs(u[axis])) axis = k;
-  D3 n{0, 0, 0};
+  DVec3 n{0, 0, 0};
   n[axis] = 1;
-  D3 w = cross(n, u);
-  const double wl = len(w);
+  DVec3 w = cross(n, u);
+  const double wl = length(w);
   w = {w[0] / wl, w[1] / wl, w[2] / wl};
   const double e = 0.25 * std::max(longest, 1.0);
-  const D3 mid = axpy(p, sub(q, p), 0.5);
-  auto f = [](const D3& d) { return Vec3{static_cast<float>(d[0]), static_cast<float>(d[1]), static_cast<float>(d[2])}; };
-  return {f(axpy(axpy(p, u, -e), w, -e)), f(axpy(axpy(q, u, e), w, -e)), f(axpy(mid, w, longest + e))};
+  const DVec3 mid = axpy(p, sub(q, p), 0.5);
+  return {toFloat(axpy(axpy(p, u, -e), w, -e)), toFloat(axpy(axpy(q, u, e), w, -e)), toFloat(axpy(mid, w, longest + e))};
 }
 
 }  // namespace
@@ -123,7 +115,7 @@ std::string instanceTransformInverted(Case& c, ModelOptions&) {
   size_t n = 0;
   for (Instance& inst : c.scene.instances) {
     if (inst.transform == kIdentity) continue;
-    const std::array<double, 12> inv = invertTransform(inst.transform);
+    const DTransform inv = invertTransform(inst.transform);
     Transform t;
     for (int k = 0; k < 12; ++k) t[k] = static_cast<float>(inv[k]);
     if (t == inst.transform) continue;  // its own inverse (a mirror)
@@ -209,7 +201,7 @@ std::string degenerateHit(Case& c, ModelOptions&) {
     for (Geometry& g : b.geometries) {
       if (g.kind != Geometry::Kind::Triangles) continue;
       for (uint32_t p = 0; p < g.primitiveCount(); ++p) {
-        std::array<D3, 3> v;
+        std::array<DVec3, 3> v;
         bool finite = true;
         for (uint32_t k = 0; k < 3; ++k) {
           const uint32_t i = g.indices.empty() ? p * 3 + k : g.indices[p * 3 + k];
@@ -217,7 +209,7 @@ std::string degenerateHit(Case& c, ModelOptions&) {
           else v[k] = {g.vertices[i][0], g.vertices[i][1], g.vertices[i][2]};
           for (double x : v[k]) finite = finite && std::isfinite(x);
         }
-        if (!finite || len(cross(sub(v[1], v[0]), sub(v[2], v[0]))) != 0) continue;
+        if (!finite || length(cross(sub(v[1], v[0]), sub(v[2], v[0]))) != 0) continue;
         const std::array<Vec3, 3> t = fattened(v);
         for (uint32_t k = 0; k < 3; ++k) {
           if (g.indices.empty()) {

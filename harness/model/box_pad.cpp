@@ -56,6 +56,8 @@
 #include <array>
 #include <cmath>
 
+#include "base/affine.h"
+#include "base/float_steps.h"
 #include "case/transform.h"
 #include "model/frame_error.h"
 
@@ -63,7 +65,6 @@ namespace rayspec {
 
 namespace {
 
-constexpr double kU = 5.9604644775390625e-08;  // 2^-24
 constexpr double kZoneSteps = 128.0;
 // Float steps (relative) of a ray origin's distance that Embree's box test
 // may be off by: about 8 * 2^-23.
@@ -71,34 +72,26 @@ constexpr double kTraversalSteps = 1e-6;
 constexpr double kReachCap = 1e5;
 
 struct Box {
-  std::array<double, 3> lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
-  void add(const std::array<double, 3>& p) {
+  DVec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+  void add(const DVec3& p) {
     for (int k = 0; k < 3; ++k)
       if (std::isfinite(p[k])) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
   }
   bool empty() const { return !(lo[0] <= hi[0] && lo[1] <= hi[1] && lo[2] <= hi[2]); }
   double extent() const { return std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}); }
   // Infinity-norm distance of p to the box (0 inside).
-  double distance(const std::array<double, 3>& p) const {
+  double distance(const DVec3& p) const {
     double d = 0;
     for (int k = 0; k < 3; ++k) d = std::max({d, lo[k] - p[k], p[k] - hi[k]});
     return d;
   }
 };
 
-std::array<double, 3> affine(const std::array<double, 12>& m, const std::array<double, 3>& p) {
-  std::array<double, 3> r;
-  for (int k = 0; k < 3; ++k) r[k] = m[k * 4] * p[0] + m[k * 4 + 1] * p[1] + m[k * 4 + 2] * p[2] + m[k * 4 + 3];
-  return r;
-}
-
 Box blasBox(const Blas& b) {
   Box box;
   for (const Geometry& g : b.geometries) {
-    std::array<double, 12> m{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
-    if (g.transform)
-      for (int k = 0; k < 12; ++k) m[k] = (*g.transform)[k];
-    for (const Vec3& v : g.vertices) box.add(affine(m, {v[0], v[1], v[2]}));
+    const DTransform m = toDouble(g.transform.value_or(kIdentity));
+    for (const Vec3& v : g.vertices) box.add(applyAffine(m, toDouble(v), 1.0));
     for (const auto& a : g.aabbs) {
       box.add({a[0], a[1], a[2]});
       box.add({a[3], a[4], a[5]});
@@ -107,7 +100,7 @@ Box blasBox(const Blas& b) {
   return box;
 }
 
-std::array<double, 3> corner(const Box& b, int i) {
+DVec3 corner(const Box& b, int i) {
   return {(i & 1) ? b.hi[0] : b.lo[0], (i & 2) ? b.hi[1] : b.lo[1], (i & 4) ? b.hi[2] : b.lo[2]};
 }
 
@@ -118,15 +111,14 @@ std::vector<double> blasRayPads(const Case& c) {
   std::vector<Box> boxes(nb);
   for (size_t b = 0; b < nb; ++b) boxes[b] = blasBox(c.scene.blases[b]);
   // The ray origins: launch rays, and the corners of the world box.
-  std::vector<std::array<double, 3>> origins;
+  std::vector<DVec3> origins;
   origins.reserve(c.rays.rays.size() + 8);
   for (const Ray& r : c.rays.rays) origins.push_back({r.origin[0], r.origin[1], r.origin[2]});
   Box world;
   for (const Instance& inst : c.scene.instances) {
     if (!inst.blas || *inst.blas >= nb || boxes[*inst.blas].empty()) continue;
-    std::array<double, 12> m;
-    for (int k = 0; k < 12; ++k) m[k] = inst.transform[k];
-    for (int i = 0; i < 8; ++i) world.add(affine(m, corner(boxes[*inst.blas], i)));
+    const DTransform m = toDouble(inst.transform);
+    for (int i = 0; i < 8; ++i) world.add(applyAffine(m, corner(boxes[*inst.blas], i), 1.0));
   }
   if (!world.empty())
     for (int i = 0; i < 8; ++i) origins.push_back(corner(world, i));
@@ -134,19 +126,19 @@ std::vector<double> blasRayPads(const Case& c) {
   for (const Instance& inst : c.scene.instances) {
     if (!inst.blas || *inst.blas >= nb || boxes[*inst.blas].empty()) continue;
     const Box& box = boxes[*inst.blas];
-    const std::array<double, 12> inv = invertTransform(inst.transform);
+    const DTransform inv = invertTransform(inst.transform);
     const bool identity = instanceForm(inst.transform) == InstanceForm::Identity;
     const double cap = kReachCap * box.extent();
     double rho = 0, reach = 0;
-    for (const std::array<double, 3>& q : origins) {
-      const std::array<double, 3> o = identity ? q : affine(inv, q);
+    for (const DVec3& q : origins) {
+      const DVec3 o = identity ? q : applyAffine(inv, q, 1.0);
       const double d = box.distance(o);
       if (std::isfinite(d)) rho = std::max(rho, d);
       for (double x : o)
         if (std::isfinite(x)) reach = std::max(reach, std::fabs(x));
     }
     rho = std::min(rho + box.extent(), cap);
-    double p = kZoneSteps * kU * rho + kTraversalSteps * rho;
+    double p = kZoneSteps * kUnitRoundoff * rho + kTraversalSteps * rho;
     if (!identity) p += instancePad(inv, inst.transform) + kTraversalSteps * std::min(reach, cap);
     if (std::isfinite(p)) pad[*inst.blas] = std::max(pad[*inst.blas], p);
   }

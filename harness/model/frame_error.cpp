@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/float_steps.h"
 #include "model/sphere_error.h"
 
 namespace rayspec {
 
 namespace {
 
-constexpr double kU = 5.9604644775390625e-08;  // 2^-24, float unit roundoff
 // Roundings of a device's inverse translation (it rounds at least once) and
 // of a product with a scale that is not a power of two.
 constexpr double kTranslationRoundings = 2.0;
@@ -52,7 +52,7 @@ void objectRayFrameError(InstanceForm form, const std::array<double, 12>& inv, c
     return;
   }
   if (form == InstanceForm::General) {
-    const F3 of = {float(o[0]), float(o[1]), float(o[2])}, df = {float(d[0]), float(d[1]), float(d[2])};
+    const Vec3 of = {float(o[0]), float(o[1]), float(o[2])}, df = {float(d[0]), float(d[1]), float(d[2])};
     const ObjectRayError e = objectRayError(inv_f, of, df);
     for (int k = 0; k < 3; ++k) {
       err.origin[k] = e.origin[k];
@@ -61,17 +61,17 @@ void objectRayFrameError(InstanceForm form, const std::array<double, 12>& inv, c
     return;
   }
   for (int k = 0; k < 3; ++k) {
-    double eo = kTranslationRoundings * kU * std::fabs(inv[k * 4 + 3]), ed = 0, obj = inv[k * 4 + 3];
+    double eo = kTranslationRoundings * kUnitRoundoff * std::fabs(inv[k * 4 + 3]), ed = 0, obj = inv[k * 4 + 3];
     for (int j = 0; j < 3; ++j) {
       const double m = inv[k * 4 + j];
       if (m == 0) continue;
       obj += m * o[j];
       if (!powerOfTwo(m)) {
-        eo += kProductRoundings * kU * std::fabs(m * o[j]);
-        ed += kProductRoundings * kU * std::fabs(m * d[j]);
+        eo += kProductRoundings * kUnitRoundoff * std::fabs(m * o[j]);
+        ed += kProductRoundings * kUnitRoundoff * std::fabs(m * d[j]);
       }
     }
-    err.origin[k] = eo + kU * std::fabs(obj);
+    err.origin[k] = eo + kUnitRoundoff * std::fabs(obj);
     err.direction[k] = ed;
   }
 }
@@ -83,7 +83,7 @@ DVec3 geometryVertexError(const Transform& m, const std::vector<Vec3>& vertices)
     for (int k = 0; k < 3; ++k) {
       double s = std::fabs(m[k * 4 + 3]);
       for (int j = 0; j < 3; ++j) s += std::fabs(double(m[k * 4 + j]) * v[j]);
-      if (std::isfinite(s)) e[k] = std::max(e[k], kVertexRoundings * kU * s);
+      if (std::isfinite(s)) e[k] = std::max(e[k], kVertexRoundings * kUnitRoundoff * s);
     }
   return e;
 }
@@ -99,7 +99,7 @@ double instancePad(const std::array<double, 12>& inv, const Transform& m) {
   const double steps = form == InstanceForm::Identity        ? 0.0
                        : form == InstanceForm::ScaledPermutation ? kPadStepsPermutation
                                                                  : kPadStepsGeneral;
-  return std::isfinite(pad) ? steps * kU * pad : 0.0;
+  return std::isfinite(pad) ? steps * kUnitRoundoff * pad : 0.0;
 }
 
 }  // namespace rayspec

@@ -295,7 +295,7 @@ Flow Machine::execStmt(const CStmt& s, StageEnv& env) {
     case Stmt::Kind::Light: {
       if (!env.call) return Flow::Continue;
       static const std::vector<uint32_t> kEmpty;
-      const F3 P = env.call->position, N = env.call->normal;
+      const Vec3 P = env.call->position, N = env.call->normal;
       env.call->color = lightColor(s.light, P, N, env.record_data ? *env.record_data : kEmpty);
       return Flow::Continue;
     }

@@ -5,6 +5,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "base/affine.h"
+#include "base/float_steps.h"
+#include "base/slab.h"
 #include "model/box_pad.h"
 #include "model/exact_interval.h"
 #include "model/frame_error.h"
@@ -18,31 +21,12 @@ namespace {
 
 constexpr float kEmbreeLarge = 1.0e18f;  // Embree drops bounds beyond ~1.8e18
 
-Vec3 applyTransform(const Transform& m, const Vec3& v) {
-  Vec3 r;
-  for (int row = 0; row < 3; ++row)
-    r[row] = m[row * 4 + 0] * v[0] + m[row * 4 + 1] * v[1] + m[row * 4 + 2] * v[2] + m[row * 4 + 3];
-  return r;
-}
-
 void setInvalidBounds(RTCBounds& b) {
   b.lower_x = b.lower_y = b.lower_z = 1.0f;
   b.upper_x = b.upper_y = b.upper_z = -1.0f;
 }
 
 float clampLarge(float x) { return std::clamp(x, -kEmbreeLarge, kEmbreeLarge); }
-
-constexpr double kU = 5.9604644775390625e-08;  // 2^-24
-
-// The nearest float at or below / above x (NaN stays NaN).
-float floatBelow(double x) {
-  const float f = static_cast<float>(x);
-  return f > x ? std::nextafter(f, -INFINITY) : f;
-}
-float floatAbove(double x) {
-  const float f = static_cast<float>(x);
-  return f < x ? std::nextafter(f, INFINITY) : f;
-}
 
 void ownTriangleBounds(const RTCBoundsFunctionArguments* args) {
   const auto* g = static_cast<const ModelGeometry*>(args->geometryUserPtr);
@@ -79,7 +63,7 @@ void ownTriangleBounds(const RTCBoundsFunctionArguments* args) {
   // says why this much is enough. Rounded outward to float.
   for (int k = 0; k < 3; ++k) {
     const double m = std::max({std::fabs(double(lo[k])), std::fabs(double(hi[k])), 1e-30});
-    const double pad = kBoxMagnitudeSteps * kU * m + g->ray_pad + 4 * g->vertex_err[k];
+    const double pad = kBoxMagnitudeSteps * kUnitRoundoff * m + g->ray_pad + 4 * g->vertex_err[k];
     lo[k] = clampLarge(floatBelow(lo[k] - pad));
     hi[k] = clampLarge(floatAbove(hi[k] + pad));
   }
@@ -106,13 +90,6 @@ void aabbBounds(const RTCBoundsFunctionArguments* args) {
 
 TraceContext* traceContext(RTCIntersectContext* ctx) { return reinterpret_cast<TraceContext*>(ctx); }
 
-DVec3 toObject(const std::array<double, 12>& m, const DVec3& v, double w) {
-  DVec3 r;
-  for (int row = 0; row < 3; ++row)
-    r[row] = m[row * 4] * v[0] + m[row * 4 + 1] * v[1] + m[row * 4 + 2] * v[2] + m[row * 4 + 3] * w;
-  return r;
-}
-
 void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
   if (!args->valid[0]) return;
   const auto* g = static_cast<const ModelGeometry*>(args->geometryUserPtr);
@@ -124,8 +101,8 @@ void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
     FrameError err;
     if (g->tier == ModelTier::Exact)
       objectRayFrameError(mi.form, mi.inverse, mi.inverse_f, tc->origin, tc->direction, err);
-    tc->object_ray = prepareWatertightRay(toObject(mi.inverse, tc->origin, 1.0),
-                                          toObject(mi.inverse, tc->direction, 0.0), err);
+    tc->object_ray = prepareWatertightRay(applyAffine(mi.inverse, tc->origin, 1.0),
+                                          applyAffine(mi.inverse, tc->direction, 0.0), err);
     tc->object_exact = g->tier == ModelTier::Exact && objectRayExact(mi.form, mi.src->transform, tc->origin);
   }
   const WatertightRay& wr = tc->object_ray;
@@ -136,22 +113,16 @@ void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
     if (const auto it = g->nan_regions.find(args->primID); it != g->nan_regions.end()) {
       // R-UB: never a hit; noted when the ray crosses the region in its interval.
       const std::array<double, 6>& box = it->second;
-      double t0 = tc->tmin, t1 = tc->tmax;
-      for (int k = 0; k < 3 && t0 <= t1; ++k) {
+      DVec3 lo, hi;
+      for (int k = 0; k < 3; ++k) {
         const double slack = 1e-6 * std::max({std::fabs(box[k]), std::fabs(box[k + 3]), 1e-30});
-        const double lo = box[k] - slack, hi = box[k + 3] + slack;
-        if (d[k] == 0.0) {
-          if (o[k] < lo || o[k] > hi) t1 = -INFINITY;
-          continue;
-        }
-        double ta = (lo - o[k]) / d[k], tb = (hi - o[k]) / d[k];
-        if (ta > tb) std::swap(ta, tb);
-        t0 = std::max(t0, ta);
-        t1 = std::min(t1, tb);
+        lo[k] = box[k] - slack;
+        hi[k] = box[k + 3] + slack;
       }
-      if (!(t0 <= t1)) return;
+      const Span s = slabSpan(lo, hi, o, d, {tc->tmin, tc->tmax});
+      if (s.empty()) return;
       ModelCandidate c;
-      c.t = t0;
+      c.t = s.t0;
       c.instance = inst;
       c.geometry = args->geomID;
       c.primitive = args->primID;
@@ -192,47 +163,33 @@ void aabbIntersect(const RTCIntersectFunctionNArguments* args) {
   const auto* g = static_cast<const ModelGeometry*>(args->geometryUserPtr);
   TraceContext* tc = traceContext(args->context);
   RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
-  const double o[3] = {RTCRayN_org_x(ray, args->N, 0), RTCRayN_org_y(ray, args->N, 0),
-                       RTCRayN_org_z(ray, args->N, 0)};
-  const double d[3] = {RTCRayN_dir_x(ray, args->N, 0), RTCRayN_dir_y(ray, args->N, 0),
-                       RTCRayN_dir_z(ray, args->N, 0)};
+  const DVec3 o{RTCRayN_org_x(ray, args->N, 0), RTCRayN_org_y(ray, args->N, 0), RTCRayN_org_z(ray, args->N, 0)};
+  const DVec3 d{RTCRayN_dir_x(ray, args->N, 0), RTCRayN_dir_y(ray, args->N, 0), RTCRayN_dir_z(ray, args->N, 0)};
   const auto& a = g->aabbs[args->primID];
-  double t0 = -INFINITY, t1 = INFINITY;
+  DVec3 lo, hi;  // the box with a little slack
   for (int k = 0; k < 3; ++k) {
-    const double lo = a[k], hi = a[k + 3];
-    const double slack = 1e-6 * std::max({std::fabs(lo), std::fabs(hi), 1e-30});
-    if (d[k] == 0.0) {
-      if (o[k] < lo - slack || o[k] > hi + slack) return;
-      continue;
-    }
-    double ta = (lo - slack - o[k]) / d[k], tb = (hi + slack - o[k]) / d[k];
-    if (ta > tb) std::swap(ta, tb);
-    t0 = std::max(t0, ta);
-    t1 = std::min(t1, tb);
+    const double slack = 1e-6 * std::max({std::fabs(double(a[k])), std::fabs(double(a[k + 3])), 1e-30});
+    lo[k] = a[k] - slack;
+    hi[k] = a[k + 3] + slack;
   }
-  if (t0 > t1 || t1 < tc->tmin || t0 > tc->tmax) return;
+  const Span s = slabSpan(lo, hi, o, d);
+  if (s.t0 > s.t1 || s.t1 < tc->tmin || s.t0 > tc->tmax) return;
   ModelCandidate c;
   if (g->tier == ModelTier::Exact) {
     // Does the ray still cross the box shrunk by the device's error bound?
     // If not, it only grazes a face (or passes just outside, within the slack).
-    double s0 = -INFINITY, s1 = INFINITY;
-    for (int k = 0; k < 3 && s0 <= s1; ++k) {
-      const double lo = a[k], hi = a[k + 3];
-      const double bound = kDeviceRelTolerance * std::max({std::fabs(lo), std::fabs(hi), std::fabs(o[k]), 1e-30}) +
-                           1e-6 * std::max({std::fabs(lo), std::fabs(hi), 1e-30});
-      if (d[k] == 0.0) {
-        if (o[k] < lo + bound || o[k] > hi - bound) s1 = -INFINITY;
-        continue;
-      }
-      double ta = (lo + bound - o[k]) / d[k], tb = (hi - bound - o[k]) / d[k];
-      if (ta > tb) std::swap(ta, tb);
-      s0 = std::max(s0, ta);
-      s1 = std::min(s1, tb);
+    DVec3 in_lo, in_hi;
+    for (int k = 0; k < 3; ++k) {
+      const double l = a[k], h = a[k + 3];
+      const double bound = kDeviceRelTolerance * std::max({std::fabs(l), std::fabs(h), std::fabs(o[k]), 1e-30}) +
+                           1e-6 * std::max({std::fabs(l), std::fabs(h), 1e-30});
+      in_lo[k] = l + bound;
+      in_hi[k] = h - bound;
     }
-    c.near_face = !(s0 <= s1);
+    c.near_face = slabSpan(in_lo, in_hi, o, d).empty();
   }
   c.aabb = true;
-  c.t = std::max(t0, tc->tmin);
+  c.t = std::max(s.t0, tc->tmin);
   c.instance = args->context->instID[0];
   c.geometry = args->geomID;
   c.primitive = args->primID;
@@ -334,7 +291,7 @@ void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
       for (int k = 0; k < 3; ++k) {
         const uint32_t idx = g.indices.empty() ? p * 3 + k : g.indices[p * 3 + k];
         raw[k] = idx < g.vertices.size() ? g.vertices[idx] : Vec3{NAN, NAN, NAN};
-        mg.triangles[p][k] = g.transform ? applyTransform(*g.transform, raw[k]) : raw[k];
+        mg.triangles[p][k] = g.transform ? applyAffine(*g.transform, raw[k], 1.0f) : raw[k];
       }
       if (triangleInactive(raw)) {
         mg.triangles[p][0][0] = NAN;  // stays inactive whatever the transform made of it
@@ -384,7 +341,7 @@ void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
       }
       mg.indexed = ordinary;
       for (size_t v = 0; ordinary && v < g.vertices.size(); ++v) {
-        const Vec3 x = g.transform ? applyTransform(*g.transform, g.vertices[v]) : g.vertices[v];
+        const Vec3 x = g.transform ? applyAffine(*g.transform, g.vertices[v], 1.0f) : g.vertices[v];
         for (float f : x) ordinary = ordinary && !std::isnan(f) && std::fabs(f) <= kEmbreeLarge;
       }
       mg.own_triangles = tier == ModelTier::Exact;
@@ -421,7 +378,7 @@ void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
           auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0,
                                                                     RTC_FORMAT_UINT3, 3 * sizeof(unsigned), n));
           for (size_t v = 0; v < nv; ++v) {
-            const Vec3 x = g.transform ? applyTransform(*g.transform, g.vertices[v]) : g.vertices[v];
+            const Vec3 x = g.transform ? applyAffine(*g.transform, g.vertices[v], 1.0f) : g.vertices[v];
             for (int a = 0; a < 3; ++a) vb[v * 3 + a] = x[a];
           }
           std::copy(g.indices.begin(), g.indices.begin() + 3 * size_t{n}, ib);

@@ -10,54 +10,54 @@ namespace {
 float recordFloat(const std::vector<uint32_t>& r, uint32_t i) {
   return std::bit_cast<float>(i < r.size() ? r[i] : 0u);
 }
-float dot3(const F3& a, const F3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-F3 sub3(const F3& a, const F3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-F3 div3(const F3& a, float s) { return {a[0] / s, a[1] / s, a[2] / s}; }
-F3 normalize3(const F3& v) { return div3(v, std::sqrt(dot3(v, v))); }
+float dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec3 sub3(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3 div3(const Vec3& a, float s) { return {a[0] / s, a[1] / s, a[2] / s}; }
+Vec3 normalize3(const Vec3& v) { return div3(v, std::sqrt(dot3(v, v))); }
 
 }  // namespace
 
-F4 lightColor(const std::string& kind, const F3& P, const F3& N, const std::vector<uint32_t>& rec) {
+F4 lightColor(const std::string& kind, const Vec3& P, const Vec3& N, const std::vector<uint32_t>& rec) {
   return lightColor(kind == "point"  ? LightKind::Point
                     : kind == "spot" ? LightKind::Spot
                                      : LightKind::Directional,
                     P, N, rec);
 }
 
-F4 lightColor(LightKind kind, const F3& P, const F3& N, const std::vector<uint32_t>& rec) {
+F4 lightColor(LightKind kind, const Vec3& P, const Vec3& N, const std::vector<uint32_t>& rec) {
   auto f = [&](uint32_t i) { return recordFloat(rec, i); };
   if (kind == LightKind::Point) {
-    const F3 L = sub3({f(0), f(1), f(2)}, P);
+    const Vec3 L = sub3({f(0), f(1), f(2)}, P);
     const float d2 = dot3(L, L);
-    const F3 l = div3(L, std::sqrt(d2));
+    const Vec3 l = div3(L, std::sqrt(d2));
     const float k = std::max(dot3(N, l), 0.0f) / d2;
     return {k * f(3), k * f(4), k * f(5), 1.0f};
   }
   if (kind == LightKind::Spot) {
-    const F3 L = sub3({f(0), f(1), f(2)}, P);
+    const Vec3 L = sub3({f(0), f(1), f(2)}, P);
     const float d = std::sqrt(dot3(L, L));
-    const F3 l = div3(L, d);
-    const F3 nl = {-l[0], -l[1], -l[2]};
+    const Vec3 l = div3(L, d);
+    const Vec3 nl = {-l[0], -l[1], -l[2]};
     const float cosang = dot3(nl, normalize3({f(3), f(4), f(5)}));
     const float s = std::clamp((cosang - f(7)) / (f(6) - f(7)), 0.0f, 1.0f);  // the smooth cone
     const float c = s * std::max(dot3(N, l), 0.0f) / (d * d);
     return {c, c, c, 1.0f};
   }
   // directional
-  const F3 n = normalize3({f(0), f(1), f(2)});
-  const F3 l = {-n[0], -n[1], -n[2]};
+  const Vec3 n = normalize3({f(0), f(1), f(2)});
+  const Vec3 l = {-n[0], -n[1], -n[2]};
   const float k = std::max(dot3(N, l), 0.0f);
   return {k * f(3), k * f(4), k * f(5), 1.0f};
 }
 
-SphereRoots sphereRoots(const F3& bmin, const F3& bmax, const F3& o, const F3& d) {
-  F3 c, h;
+SphereRoots sphereRoots(const Vec3& bmin, const Vec3& bmax, const Vec3& o, const Vec3& d) {
+  Vec3 c, h;
   for (int k = 0; k < 3; ++k) {
     c[k] = (bmin[k] + bmax[k]) * 0.5f;
     h[k] = (bmax[k] - bmin[k]) * 0.5f;
   }
   const float r = std::min(std::min(h[0], h[1]), h[2]);
-  const F3 oc = sub3(o, c);
+  const Vec3 oc = sub3(o, c);
   const float a = dot3(d, d);
   const float b = dot3(oc, d);
   const float cc = dot3(oc, oc) - r * r;

@@ -19,13 +19,6 @@ bool keyLess(uint32_t i0, uint32_t g0, uint32_t p0, uint32_t i1, uint32_t g1, ui
   return p0 < p1;
 }
 
-Vec3 xform(const std::array<float, 12>& m, const Vec3& v, float w) {
-  Vec3 r;
-  for (int k = 0; k < 3; ++k)
-    r[k] = m[k * 4] * v[0] + m[k * 4 + 1] * v[1] + m[k * 4 + 2] * v[2] + (w != 0 ? m[k * 4 + 3] : 0.0f);
-  return r;
-}
-
 const CHitGroup* groupOf(const CPipeline& p, const SbtRecord* rec) {
   if (!rec || !rec->group || *rec->group >= p.groups.size()) return nullptr;
   return &p.groups[*rec->group];
@@ -42,7 +35,7 @@ bool resolveOpaque(uint32_t geomFlags, uint32_t instFlags, uint32_t rayFlags) {
 Facing facing(const ModelScene& s, const ModelCandidate& c, const TraceRay& ray, uint32_t flags) {
   const ModelInstance& mi = s.instances[c.instance];
   const auto& tri = s.blases[mi.blas].geometries[c.geometry].triangles[c.primitive];
-  const Vec3 d = xform(mi.inverse_f, ray.direction, 0);
+  const Vec3 d = applyAffine(mi.inverse_f, ray.direction, 0);
   double n[3];
   const double e1[3] = {double(tri[1][0]) - tri[0][0], double(tri[1][1]) - tri[0][1], double(tri[1][2]) - tri[0][2]};
   const double e2[3] = {double(tri[2][0]) - tri[0][0], double(tri[2][1]) - tri[0][1], double(tri[2][2]) - tri[0][2]};
@@ -93,8 +86,8 @@ HitView viewOf(const ModelScene& s, const Case& c, const TraceRay& ray, uint32_t
   hv.geometry = geometry;
   hv.primitive = primitive;
   if (objectRay) {
-    hv.object_origin = xform(mi.inverse_f, ray.origin, 1);
-    hv.object_direction = xform(mi.inverse_f, ray.direction, 0);
+    hv.object_origin = applyAffine(mi.inverse_f, ray.origin, 1);
+    hv.object_direction = applyAffine(mi.inverse_f, ray.direction, 0);
   }
   const ModelGeometry& g = s.blases[mi.blas].geometries[geometry];
   if (g.kind == Geometry::Kind::Aabbs) {

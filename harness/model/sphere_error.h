@@ -15,9 +15,9 @@ namespace rayspec {
 // differ from the model's: a few float roundings of the inverse and of the
 // transform, relative to the magnitudes summed (row-major 3x4 world->object).
 struct ObjectRayError {
-  F3 origin{}, direction{};
+  Vec3 origin{}, direction{};
 };
-ObjectRayError objectRayError(const std::array<float, 12>& inverse, const F3& worldOrigin, const F3& worldDirection);
+ObjectRayError objectRayError(const std::array<float, 12>& inverse, const Vec3& worldOrigin, const Vec3& worldDirection);
 
 struct SphereError {
   double disc = 0;     // the model's float discriminant, widened
@@ -26,6 +26,6 @@ struct SphereError {
 };
 // The model's terms (sphereRoots) for the object ray o + t d with the
 // perturbation `e` of o and d, each later float operation rounded anew.
-SphereError sphereError(const F3& bmin, const F3& bmax, const F3& o, const F3& d, const ObjectRayError& e);
+SphereError sphereError(const Vec3& bmin, const Vec3& bmax, const Vec3& o, const Vec3& d, const ObjectRayError& e);
 
 }  // namespace rayspec

@@ -15,6 +15,8 @@
 #include <utility>
 #include <vector>
 
+#include "base/affine.h"
+#include "base/float_steps.h"
 #include "model/model_machine.h"
 #include "model/watertight.h"
 
@@ -72,17 +74,7 @@ struct Traversal {
 namespace trace_detail {
 
 bool keyLess(uint32_t i0, uint32_t g0, uint32_t p0, uint32_t i1, uint32_t g1, uint32_t p1);
-Vec3 xform(const std::array<float, 12>& m, const Vec3& v, float w);
 const CHitGroup* groupOf(const CPipeline& p, const SbtRecord* rec);
-// The neighbouring floats (Embree's interval ends moved to the open interval).
-// Inline: the fast path moves both ends of every launch ray.
-inline float nextUp(float x) {
-  if (std::isnan(x) || x == INFINITY) return x;
-  if (x == 0.0f) return std::numeric_limits<float>::denorm_min();
-  const uint32_t u = std::bit_cast<uint32_t>(x);
-  return std::bit_cast<float>(x > 0 ? u + 1 : u - 1);
-}
-inline float nextDown(float x) { return -nextUp(-x); }
 // R-OPACITY: ray flag, then instance flag, then the geometry's OPAQUE bit.
 bool resolveOpaque(uint32_t geomFlags, uint32_t instFlags, uint32_t rayFlags);
 

@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/float_steps.h"
+
 namespace rayspec {
 
 namespace {
 
-constexpr double kU = 5.9604644775390625e-08;  // 2^-24, float unit roundoff
 
 // The sign of the edge function of (a, b) for the origin moved by (eps,
 // eps^2): e(eps) = e - eps (p_by - p_ay) + eps^2 (p_bx - p_ax). Swapping a
@@ -40,7 +41,7 @@ WatertightRay prepareWatertightRay(const DVec3& o, const DVec3& d, const FrameEr
   w.sx = -d[kx] / d[kz];
   w.sy = -d[ky] / d[kz];
   w.sz = 1.0 / d[kz];
-  const double round = kFrameRoundings * kU;
+  const double round = kFrameRoundings * kUnitRoundoff;
   // The shear a device derives from its own direction.
   w.dsx = round * std::fabs(w.sx) + (err.direction[kx] + std::fabs(w.sx) * err.direction[kz]) / std::fabs(d[kz]);
   w.dsy = round * std::fabs(w.sy) + (err.direction[ky] + std::fabs(w.sy) * err.direction[kz]) / std::fabs(d[kz]);
@@ -63,7 +64,7 @@ WatertightHit watertightIntersectPrepared(const WatertightRay& w, const DVec3& v
   const DVec3& o = w.o;
   const int kx = w.kx, ky = w.ky, kz = w.kz;
   const double sx = w.sx, sy = w.sy, sz = w.sz, dsx = w.dsx, dsy = w.dsy, shiftX = w.shiftX, shiftY = w.shiftY;
-  const double round = kFrameRoundings * kU;
+  const double round = kFrameRoundings * kUnitRoundoff;
   const DVec3* v[3] = {&v0, &v1, &v2};
   double px[3], py[3], pz[3], ex[3], ey[3];
   for (int i = 0; i < 3; ++i) {

@@ -32,9 +32,10 @@
 
 #include <array>
 
-namespace rayspec {
+#include "base/float_steps.h"
+#include "base/vec3.h"
 
-using DVec3 = std::array<double, 3>;
+namespace rayspec {
 
 enum class TriAmbiguity { None, Edge, Vertex, Degenerate };
 
@@ -57,7 +58,7 @@ struct FrameError {
 
 // Relative tolerance of a device's float pipeline for quantities outside the
 // translated frame (t ties, AABB faces): 16 * 2^-24.
-constexpr double kDeviceRelTolerance = 16.0 * 5.9604644775390625e-08;
+constexpr double kDeviceRelTolerance = 16.0 * kUnitRoundoff;
 // Roundings a device's translated, sheared quantities and edge functions
 // carry (in units of 2^-24).
 constexpr double kFrameRoundings = 4.0;

@@ -42,6 +42,8 @@
 #include <cmath>
 #include <limits>
 
+#include "base/float_steps.h"
+
 namespace rayspec {
 
 bool watertightCertainMiss(const WatertightRay& w, const DVec3& v0, const DVec3& v1, const DVec3& v2,
@@ -66,7 +68,7 @@ bool watertightCertainMiss(const WatertightRay& w, const DVec3& v0, const DVec3&
     const int a = (i + 1) % 3, b = (i + 2) % 3;
     e[i] = px[a] * py[b] - py[a] * px[b];
   }
-  const double round = kFrameRoundings * 5.9604644775390625e-08;
+  const double round = kFrameRoundings * kUnitRoundoff;
   const double vx = vertexErr[kx] + std::fabs(w.sx) * vertexErr[kz];
   const double vy = vertexErr[ky] + std::fabs(w.sy) * vertexErr[kz];
   const double az = Z + w.origin_err[kz] + vertexErr[kz];
