@@ -52,9 +52,10 @@ TEST_F(DeviceResults, TheDeviceOnlyRunComparesNothing) {
   EXPECT_EQ(rc_, 3) << slurp(saved_ + "/log.txt");  // nothing compared
   EXPECT_TRUE(fs::exists(saved_ + "/" + kA + "/device/records.bin"));
   EXPECT_FALSE(fs::exists(saved_ + "/" + kA + "/model"));
-  if (haveRunOnlyBinary())
+  if (haveRunOnlyBinary()) {
     EXPECT_NE(slurp(saved_ + "/log.txt").find("run-only build: no model"), std::string::npos)
         << slurp(saved_ + "/log.txt");
+  }
 }
 
 TEST_F(DeviceResults, JudgedHereTheyPass) {

@@ -143,7 +143,9 @@ TEST(ModelMagnitude, GridCentresClearEdgesAndVerticesAmbiguous) {
         EXPECT_EQ(t.labelled[1], t.n[1]) << where;
         EXPECT_EQ(t.labelled[2], t.n[2]) << where;
         for (uint32_t ray = 0; ray < s.aims.size(); ++ray)
-          if (s.aims[ray] == Aim::Centre) EXPECT_EQ(word(r, ray, "hit"), 1u) << where << " ray " << ray;
+          if (s.aims[ray] == Aim::Centre) {
+            EXPECT_EQ(word(r, ray, "hit"), 1u) << where << " ray " << ray;
+          }
       }
 }
 

@@ -79,7 +79,9 @@ TEST(ModelSphere, NearlyTangentHitGetsAWiderTBoundThanACentralHit) {
   for (const TBound& b : r.t_bounds) bound[b.ray] = b.bound;
   ASSERT_EQ(bound.count(1), 1u) << "a near-tangent root needs more than the default tolerance";
   EXPECT_GT(bound[1], 1e-4f);
-  if (bound.count(0)) EXPECT_LT(bound[0], bound[1]);
+  if (bound.count(0)) {
+    EXPECT_LT(bound[0], bound[1]);
+  }
   EXPECT_TRUE(run(c, ModelTier::Fast).t_bounds.empty()) << "only the exact tier bounds t";
 }
 

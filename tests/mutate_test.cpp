@@ -55,7 +55,9 @@ TEST(Mutate, SurvivorsCarryTheirLegalReason) {
   EXPECT_FALSE(o->killed);
   EXPECT_NE(o->legal_reason.find("traversal order"), std::string::npos) << o->legal_reason;
   for (const MutantOutcome& x : m.mutants)
-    if (x.mutation.applied && !x.killed) EXPECT_FALSE(x.legal_reason.empty()) << x.name << " survives with no reason";
+    if (x.mutation.applied && !x.killed) {
+      EXPECT_FALSE(x.legal_reason.empty()) << x.name << " survives with no reason";
+    }
 }
 
 // TerminateOnFirstHit: a device that ignores the flag runs any-hit twice a

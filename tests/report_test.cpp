@@ -247,7 +247,7 @@ TEST(Baseline, ReadsNamesBackFromResultsCsv) {
   for (const std::string& n : names) EXPECT_EQ(csvFieldText(csvField(n)), n);
   // Names no case can have (a case name's parts are file names) are refused,
   // quoted or not: a typo or a stray byte would otherwise expect nothing.
-  for (const std::string& bad : {"\"fam/a,b\",Fail\n", "fam/hash#in,Fail\n", "fam//a,Fail\n", "fam/../a,Fail\n"}) {
+  for (const std::string bad : {"\"fam/a,b\",Fail\n", "fam/hash#in,Fail\n", "fam//a,Fail\n", "fam/../a,Fail\n"}) {
     error.clear();
     loadBaseline(writeTemp("bad-name-baseline.csv", bad), &error);
     EXPECT_NE(error.find("bad-name-baseline.csv:1:"), std::string::npos) << bad << " -> " << error;
