@@ -41,6 +41,20 @@ std::vector<CaseOutcome> outcomes() {
   return v;
 }
 
+// Status and headline follow the verdict's worst finding, derived in one place.
+TEST(CaseOutcomeVerdict, StatusAndHeadlineComeFromTheVerdict) {
+  CaseOutcome o;
+  o.verdict.add({Status::Pass, "R-A", "fine", {}, 0});
+  o.deriveFromVerdict();
+  EXPECT_EQ(o.status, Status::Pass);
+  o.verdict.add({Status::Fail, "R-B", "counter 'miss' differs", {}, 0});
+  EXPECT_EQ(o.status, Status::Pass) << "nothing changes until it is derived again";
+  o.deriveFromVerdict();
+  EXPECT_EQ(o.status, Status::Fail);
+  EXPECT_EQ(o.headline, o.verdict.headline());
+  EXPECT_NE(o.headline.find("R-B"), std::string::npos) << o.headline;
+}
+
 TEST(Reports, ResultsCsvIsDeqpRunnerCsv) {
   const std::string dir = testing_support::testDir() + "/rayspec-report-test";
   ASSERT_EQ(writeReports(outcomes(), RunInfo{}, dir), "");

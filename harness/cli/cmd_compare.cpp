@@ -51,8 +51,7 @@ CaseOutcome failedOutcome(const std::string& name, Status s, const std::string& 
   CaseOutcome o;
   o.name = name;
   o.verdict.add({s, s == Status::NotSupported ? "" : "compare", message, {}, 0});
-  o.status = o.verdict.status;
-  o.headline = o.verdict.headline();
+  o.deriveFromVerdict();
   return o;
 }
 

@@ -56,8 +56,7 @@ CaseOutcome skippedOutcome(const std::string& name, const NamePattern& pattern) 
   o.name = name;
   o.verdict.add({Status::NotSupported, "skipped", "not run: the skips file names it (" + pattern.where + ": " +
                                                       pattern.text + ")", {}, 0});
-  o.status = o.verdict.status;
-  o.headline = o.verdict.headline();
+  o.deriveFromVerdict();
   o.baseline = BaselineMatch::Skipped;
   o.baseline_note = "skipped by " + pattern.where;
   return o;

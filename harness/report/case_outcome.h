@@ -40,6 +40,13 @@ struct CaseOutcome {
   BaselineMatch baseline = BaselineMatch::None;
   std::string baseline_note;        // why: the entry, pattern (file:line) or re-run that decided it
   std::string device_name;          // the device that ran it (results bundle)
+
+  // Takes status and headline from the verdict: the one place they are
+  // derived, called after the verdict's last finding is added.
+  void deriveFromVerdict() {
+    status = verdict.status;
+    headline = verdict.headline();
+  }
 };
 
 }  // namespace rayspec

@@ -99,8 +99,7 @@ CaseOutcome caseErrorOutcome(const std::string& name, const std::vector<std::str
   out.name = name;
   out.rules = rules;
   out.verdict.add({Status::CaseError, rule, message, {}, 0});
-  out.status = out.verdict.status;
-  out.headline = out.verdict.headline();
+  out.deriveFromVerdict();
   return out;
 }
 
@@ -165,8 +164,7 @@ CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string&
       Verdict v = backendVerdict(model);
       v.add({Status::NotSupported, "no-reference", "the device side did not run: the model gave no reference", {}, 0});
       CaseOutcome out = unjudged(c, plan, device, model, v);
-      out.status = out.verdict.status;
-      out.headline = out.verdict.headline();
+      out.deriveFromVerdict();
       return costed(std::move(out), device, model);
     }
   }
@@ -193,8 +191,7 @@ CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string&
     out = unjudged(c, plan, device, model, v);
   }
   if (!fault_note.empty()) out.verdict.add({Status::Pass, "planted-fault", fault_note, {}, 0});
-  out.status = out.verdict.status;
-  out.headline = out.verdict.headline();
+  out.deriveFromVerdict();
   out.device_name = device.device;
   if (out.status != Status::Pass || opt_.records_csv) {
     // The per-ray records as text, for people looking into the case.

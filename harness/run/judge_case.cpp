@@ -19,8 +19,7 @@ CaseOutcome judgeCase(const Case& c, const Plan& plan, const Results& device, co
       if (di.name == mi.name && di.texels != mi.texels) writeDiffImage(di, mi, dir + "/diff");
   out.failing_rays = failingRays(out.verdict, plan, device, model);
   for (const ImageOutput& im : plan.images) out.images.push_back(im.name);
-  out.status = out.verdict.status;
-  out.headline = out.verdict.headline();
+  out.deriveFromVerdict();
   return out;
 }
 

@@ -69,8 +69,7 @@ CaseOutcome notMovedOutcome(const std::string& name, const std::string& why) {
   CaseOutcome o;
   o.name = name;
   o.verdict.add({Status::NotSupported, "move", "not run: --move cannot move this case exactly: " + why, {}, 0});
-  o.status = o.verdict.status;
-  o.headline = o.verdict.headline();
+  o.deriveFromVerdict();
   o.baseline = BaselineMatch::Skipped;  // not run: the baseline's expectation is neither met nor broken
   o.baseline_note = "not run under --move";
   return o;
