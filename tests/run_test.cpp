@@ -165,7 +165,7 @@ TEST(Isolation, ModelCrashIsACrash) {
   EXPECT_EQ(saved.case_hash, c.source_hash);
 }
 
-TEST(Isolation, ModelBeyondTheMemoryLimitIsACrash) {
+TEST(IsolationMemoryLimit, ModelBeyondTheMemoryLimitIsACrash) {
   if (!memoryLimitApplies()) GTEST_SKIP() << "AddressSanitizer build: no memory limit is set on children";
   const Case c = loadCase("results/miss-xor-closest-hit");
   // Without a limit it holds 1 GiB and answers; under 256 MiB it cannot.
@@ -200,7 +200,7 @@ bool processGone(pid_t pid) {
 
 // Under AddressSanitizer a child checks for leaks before it exits (an
 // ordinary exit would skip LeakSanitizer): a leak ends it with kChildLeaked.
-TEST(ChildProcess, ALeakIsFoundUnderAddressSanitizer) {
+TEST(ChildLeaks, ALeakIsFoundUnderAddressSanitizer) {
   if (!kAddressSanitizer) GTEST_SKIP() << "only the asan preset checks children for leaks";
   const ChildEnd clean = runChild([](std::string&) { return 0; }, ChildLimits{});
   EXPECT_EQ(clean.code, 0);

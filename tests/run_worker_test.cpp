@@ -83,7 +83,7 @@ TEST(Worker, ExceptionIsAReplyAndTheProcessGoesOn) {
   EXPECT_EQ(w.call("pid").text, first);
 }
 
-TEST(Worker, OutOfMemoryEndsTheProcessWithItsStatus) {
+TEST(WorkerMemoryLimit, OutOfMemoryEndsTheProcessWithItsStatus) {
   if (!memoryLimitApplies()) GTEST_SKIP() << "AddressSanitizer build: no memory limit is set on children";
   Worker w(misbehaving(), {}, ChildLimits{60, 256u << 20});
   const Worker::Reply hog = w.call("hog");
