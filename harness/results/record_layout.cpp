@@ -58,10 +58,8 @@ const RecordField* findRecordField(std::string_view name) {
 }
 
 int recordFieldIndex(std::string_view name) {
-  const auto& fields = recordFields();
-  for (size_t i = 0; i < fields.size(); ++i)
-    if (name == fields[i].name) return static_cast<int>(i);
-  return -1;
+  const RecordField* f = findRecordField(name);
+  return f ? static_cast<int>(f->index) : -1;
 }
 
 bool traversalDependent(const RecordField& f) {
