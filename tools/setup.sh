@@ -17,7 +17,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libre2-dev
   chromium fonts-dejavu-core
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev clang-format universal-ctags
   ccache
 )
 # Packages that must come from bookworm-backports (lavapipe with ray tracing).

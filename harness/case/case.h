@@ -12,9 +12,9 @@
 
 #include "base/affine.h"
 #include "base/vec3.h"
-#include "case/source_loc.h"
+#include "base/source_loc.h"
 #include "program/program.h"
-#include "results/results.h"
+#include "results/undefined_reason.h"
 
 namespace rayspec {
 

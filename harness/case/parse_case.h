@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "case/case.h"
-#include "case/source_loc.h"
+#include "base/source_loc.h"
 
 namespace rayspec {
 

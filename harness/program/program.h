@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "case/source_loc.h"
+#include "base/source_loc.h"
 
 namespace rayspec {
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "results/step_cost.h"
+#include "results/undefined_reason.h"
 
 namespace rayspec {
 
@@ -76,20 +77,6 @@ const char* ambiguityReasonName(AmbiguityReason r);
 bool parseAmbiguityReason(const std::string& name, AmbiguityReason* out);
 // The rule a device answering outside the legal set breaks.
 const char* ruleForAmbiguity(AmbiguityReason r);
-
-// Why a ray's behaviour is undefined by the specification (R-UB): such rays
-// are never judged; the device only has to survive them.
-enum class UndefinedReason {
-  RayParameters,     // non-finite origin/direction, NaN, tmin < 0, tmax < tmin
-  NanTriangle,       // a candidate triangle has NaN in Y or Z (not X: that one is inactive)
-  HitRecordOutOfRange,
-  MissRecordOutOfRange,
-  CallableOutOfRange,
-  DivisionByZero,    // integer division or modulo by zero in a stage program
-  RecursionTooDeep,  // traceRay beyond max_recursion, or callables nested too deeply
-};
-const char* undefinedReasonName(UndefinedReason r);
-bool parseUndefinedReason(const std::string& name, UndefinedReason* out);
 
 struct UndefinedRay {
   uint32_t ray = 0;          // launch index y * width + x
