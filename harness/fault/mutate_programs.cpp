@@ -7,10 +7,6 @@
 namespace rayspec {
 namespace {
 
-std::string count(size_t n, const std::string& what) {
-  return n ? std::to_string(n) + " " + what : std::string();
-}
-
 size_t removeEverywhere(Case& c, Stmt::Kind kind, StageMask stages = kAllStages) {
   size_t n = 0;
   forEachProgram(c.pipeline, [&](Program& p, Stage s) {
@@ -57,23 +53,23 @@ Program ignoreEverything() {
 }  // namespace
 
 std::string ignoreAccepts(Case& c, ModelOptions&) {
-  return count(removeEverywhere(c, Stmt::Kind::Ignore), "ignoreIntersectionEXT calls accept");
+  return describeCount(removeEverywhere(c, Stmt::Kind::Ignore), "ignoreIntersectionEXT calls accept");
 }
 
 std::string codeAfterIgnoreRuns(Case& c, ModelOptions&) {
-  return count(moveToBlockEnd(c, Stmt::Kind::Ignore), "blocks run past ignoreIntersectionEXT");
+  return describeCount(moveToBlockEnd(c, Stmt::Kind::Ignore), "blocks run past ignoreIntersectionEXT");
 }
 
 std::string terminateContinues(Case& c, ModelOptions&) {
-  return count(removeEverywhere(c, Stmt::Kind::Terminate), "terminateRayEXT calls let traversal go on");
+  return describeCount(removeEverywhere(c, Stmt::Kind::Terminate), "terminateRayEXT calls let traversal go on");
 }
 
 std::string codeAfterTerminateRuns(Case& c, ModelOptions&) {
-  return count(moveToBlockEnd(c, Stmt::Kind::Terminate), "blocks run past terminateRayEXT");
+  return describeCount(moveToBlockEnd(c, Stmt::Kind::Terminate), "blocks run past terminateRayEXT");
 }
 
 std::string reportReturnInverted(Case& c, ModelOptions&) {
-  return count(eachReport(c, [](Stmt& s) {
+  return describeCount(eachReport(c, [](Stmt& s) {
                  if (s.then_.empty() && s.else_.empty()) return false;
                  std::swap(s.then_, s.else_);
                  return true;
@@ -82,7 +78,7 @@ std::string reportReturnInverted(Case& c, ModelOptions&) {
 }
 
 std::string reportKindDropped(Case& c, ModelOptions&) {
-  return count(eachReport(c, [](Stmt& s) {
+  return describeCount(eachReport(c, [](Stmt& s) {
                  if (s.hit_kind.kind == Expr::Kind::Literal && !s.hit_kind.literal.empty() && s.hit_kind.literal[0] == 0)
                    return false;
                  Expr zero;
@@ -97,7 +93,7 @@ std::string reportKindDropped(Case& c, ModelOptions&) {
 }
 
 std::string hitAttributesLost(Case& c, ModelOptions&) {
-  return count(eachReport(c, [](Stmt& s) {
+  return describeCount(eachReport(c, [](Stmt& s) {
                  const bool had = !s.attribute.empty();
                  s.attribute.clear();
                  return had;
@@ -111,7 +107,7 @@ std::string closestAnyHitSkipped(Case& c, ModelOptions&) {
     n += g.any_hit.has_value();
     g.any_hit.reset();
   }
-  return count(n, "any-hit shaders never run");
+  return describeCount(n, "any-hit shaders never run");
 }
 
 std::string unusedAnyHitIgnores(Case& c, ModelOptions&) {
@@ -135,21 +131,21 @@ std::string unusedAnyHitIgnores(Case& c, ModelOptions&) {
         ++n;
       }
   }
-  return count(n, "hit groups (or all-zero records) without any-hit ignore every candidate");
+  return describeCount(n, "hit groups (or all-zero records) without any-hit ignore every candidate");
 }
 
 std::string payloadWritesLost(Case& c, ModelOptions&) {
-  return count(removeEverywhere(c, Stmt::Kind::SetPayload), "payload writes lost");
+  return describeCount(removeEverywhere(c, Stmt::Kind::SetPayload), "payload writes lost");
 }
 
 std::string callableDataNotReturned(Case& c, ModelOptions&) {
   const StageMask callable = stageBit(Stage::Callable);
-  return count(removeEverywhere(c, Stmt::Kind::SetCall, callable) + removeEverywhere(c, Stmt::Kind::Light, callable),
+  return describeCount(removeEverywhere(c, Stmt::Kind::SetCall, callable) + removeEverywhere(c, Stmt::Kind::Light, callable),
                "callable data writes lost");
 }
 
 std::string nestedTraceDropped(Case& c, ModelOptions&) {
-  return count(removeEverywhere(c, Stmt::Kind::Trace, kAllStages & ~stageBit(Stage::Raygen)),
+  return describeCount(removeEverywhere(c, Stmt::Kind::Trace, kAllStages & ~stageBit(Stage::Raygen)),
                "nested traces do nothing");
 }
 
@@ -161,7 +157,7 @@ std::string intersectionRunsTwice(Case& c, ModelOptions&) {
       g.intersection->insert(g.intersection->end(), once.begin(), once.end());
       ++n;
     }
-  return count(n, "intersection shaders run twice");
+  return describeCount(n, "intersection shaders run twice");
 }
 
 }  // namespace rayspec

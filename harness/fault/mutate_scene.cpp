@@ -12,10 +12,6 @@
 namespace rayspec {
 namespace {
 
-std::string count(size_t n, const std::string& what) {
-  return n ? std::to_string(n) + " " + what : std::string();
-}
-
 bool reachesTriangles(const Case& c, const Instance& inst) {
   return inst.blas && !c.scene.blases[*inst.blas].geometries.empty() &&
          c.scene.blases[*inst.blas].geometries[0].kind == Geometry::Kind::Triangles;
@@ -76,24 +72,24 @@ std::string instanceMaskIgnored(Case& c, ModelOptions&) {
     n += (inst.mask & 0xFF) != 0xFF;
     inst.mask = 0xFF;
   }
-  return count(n, "instance masks set to 0xFF");
+  return describeCount(n, "instance masks set to 0xFF");
 }
 
 std::string facingInverted(Case& c, ModelOptions&) {
-  return count(toggleFlip(c, [](const Instance&) { return true; }), "triangle instances see the other face");
+  return describeCount(toggleFlip(c, [](const Instance&) { return true; }), "triangle instances see the other face");
 }
 
 std::string worldSpaceFacing(Case& c, ModelOptions&) {
-  return count(toggleFlip(c, [](const Instance& i) { return linearDeterminant(i.transform) < 0; }),
+  return describeCount(toggleFlip(c, [](const Instance& i) { return linearDeterminant(i.transform) < 0; }),
                "mirroring instances flip their facing");
 }
 
 std::string cullDisableIgnored(Case& c, ModelOptions&) {
-  return count(clearInstanceFlags(c, kInstanceFacingCullDisable), "instances lose TRIANGLE_FACING_CULL_DISABLE");
+  return describeCount(clearInstanceFlags(c, kInstanceFacingCullDisable), "instances lose TRIANGLE_FACING_CULL_DISABLE");
 }
 
 std::string instanceOpacityIgnored(Case& c, ModelOptions&) {
-  return count(clearInstanceFlags(c, kInstanceForceOpaque | kInstanceForceNoOpaque),
+  return describeCount(clearInstanceFlags(c, kInstanceForceOpaque | kInstanceForceNoOpaque),
                "instances lose FORCE_OPAQUE / FORCE_NO_OPAQUE");
 }
 
@@ -108,7 +104,7 @@ std::string anyHitOnOpaque(Case& c, ModelOptions&) {
       g.flags &= ~kGeometryOpaque;
     }
   n += clearRayFlags(c, kRayOpaque);
-  return count(n, "opaque geometries, instances or ray flags made any-hit candidates");
+  return describeCount(n, "opaque geometries, instances or ray flags made any-hit candidates");
 }
 
 std::string instanceTransformInverted(Case& c, ModelOptions&) {
@@ -122,7 +118,7 @@ std::string instanceTransformInverted(Case& c, ModelOptions&) {
     inst.transform = t;
     ++n;
   }
-  return count(n, "instance transforms replaced by their inverses");
+  return describeCount(n, "instance transforms replaced by their inverses");
 }
 
 std::string inactiveRevived(Case& c, ModelOptions&) {
@@ -145,7 +141,7 @@ std::string inactiveRevived(Case& c, ModelOptions&) {
       inst.blas = 0;
       ++n;
     }
-  return count(n, "inactive vertices, boxes or instances made active");
+  return describeCount(n, "inactive vertices, boxes or instances made active");
 }
 
 // Mesa 26.2.6's lavapipe: the BVH builder leaves each leaf in the slot of its
@@ -192,7 +188,7 @@ std::string inactiveHidesLastActive(Case& c, ModelOptions&) {
       [&](size_t i) { inst[i].blas.reset(); });
   for (Blas& b : c.scene.blases)
     for (Geometry& g : b.geometries) n += hideLastActivePrimitives(g);
-  return count(n, "active instances or primitives after inactive ones made inactive");
+  return describeCount(n, "active instances or primitives after inactive ones made inactive");
 }
 
 std::string degenerateHit(Case& c, ModelOptions&) {
@@ -222,7 +218,7 @@ std::string degenerateHit(Case& c, ModelOptions&) {
         ++n;
       }
     }
-  return count(n, "degenerate triangles made hittable");
+  return describeCount(n, "degenerate triangles made hittable");
 }
 
 }  // namespace rayspec

@@ -3,6 +3,11 @@
 #include "plan/walk_program.h"
 
 namespace rayspec {
+
+std::string describeCount(size_t n, const std::string& what) {
+  return n ? std::to_string(n) + " " + what : std::string();
+}
+
 namespace {
 
 void eachTraceFlags(Case& c, const std::function<void(Expr&)>& visit) {

@@ -16,6 +16,9 @@ void forEachProgram(const Pipeline& p, const std::function<void(const Program&, 
 void forEachBlock(Program& p, const std::function<void(std::vector<Stmt>&)>& visit);
 // Every statement, nested ones included.
 void forEachStmt(Program& p, const std::function<void(Stmt&)>& visit);
+// "N what" (empty when n is 0): what a mutation changed, or nothing.
+std::string describeCount(size_t n, const std::string& what);
+
 // Removes the statements `drop` selects (nested ones too); returns how many.
 size_t removeStmts(Program& p, const std::function<bool(const Stmt&)>& drop);
 

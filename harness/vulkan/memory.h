@@ -6,6 +6,7 @@
 
 #include <cstdint>
 
+#include "base/align.h"
 #include "vulkan/cleanup.h"
 #include "vulkan/context.h"
 
@@ -42,6 +43,5 @@ struct StorageImage {
 StorageImage createStorageImage(const VulkanContext& ctx, uint32_t width, uint32_t height,
                                 VkFormat format, Cleanup& cleanup);
 
-inline VkDeviceSize alignUp(VkDeviceSize v, VkDeviceSize a) { return a ? (v + a - 1) / a * a : v; }
 
 }  // namespace rayspec

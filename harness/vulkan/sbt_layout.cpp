@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cstring>
 
+#include "base/align.h"
+
 namespace rayspec {
 namespace {
-
-uint64_t alignUp(uint64_t v, uint64_t a) { return a ? (v + a - 1) / a * a : v; }
 
 std::vector<SbtRecord> orDefault(const std::vector<SbtRecord>& given, size_t groups) {
   if (!given.empty()) return given;
