@@ -72,8 +72,12 @@ void BM_HardCases(benchmark::State& state, ModelTier tier) {
       benchmark::Counter(double(raysOf(cases)) * state.iterations(), benchmark::Counter::kIsRate);
 }
 
-BENCHMARK_CAPTURE(BM_HardCases, robust, ModelTier::Robust)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_HardCases, exact, ModelTier::Exact)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_HardCases, robust, ModelTier::Robust)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_HardCases, exact, ModelTier::Exact)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // The ratio over every hard case, both tiers timed the same way, printed
 // after the benchmarks (median of 5 rounds each).
@@ -94,19 +98,22 @@ double medianSeconds(ModelTier tier) {
 void registerPerCase() {
   for (const HardCase& h : hardCases())
     for (ModelTier tier : {ModelTier::Robust, ModelTier::Exact})
-      benchmark::RegisterBenchmark(("BM_Case/" + std::string(modelTierName(tier)) + "/" + h.c.name).c_str(),
-                                   [&h, tier](benchmark::State& state) {
-                                     for (auto _ : state) benchmark::DoNotOptimize(runOne(h, tier).records.data());
-                                     state.counters["rays"] = static_cast<double>(h.c.rays.rays.size());
-                                   })
+      benchmark::RegisterBenchmark(
+          ("BM_Case/" + std::string(modelTierName(tier)) + "/" + h.c.name).c_str(),
+          [&h, tier](benchmark::State& state) {
+            for (auto _ : state) benchmark::DoNotOptimize(runOne(h, tier).records.data());
+            state.counters["rays"] = static_cast<double>(h.c.rays.rays.size());
+          })
           ->Unit(benchmark::kMicrosecond)
           ->UseRealTime();
 }
 
 void printRatio() {
   const double robust = medianSeconds(ModelTier::Robust), exact = medianSeconds(ModelTier::Exact);
-  std::printf("\nhard cases: %zu, %zu rays; robust %.3f ms, exact %.3f ms: exact / robust = %.2f (goal <= 3)\n",
-              hardCases().size(), raysOf(hardCases()), robust * 1e3, exact * 1e3, exact / robust);
+  std::printf(
+      "\nhard cases: %zu, %zu rays; robust %.3f ms, exact %.3f ms: exact / robust = %.2f (goal <= "
+      "3)\n",
+      hardCases().size(), raysOf(hardCases()), robust * 1e3, exact * 1e3, exact / robust);
 }
 
 }  // namespace rayspec

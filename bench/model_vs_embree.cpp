@@ -29,7 +29,7 @@
 namespace rayspec {
 namespace {
 
-constexpr int kCells = 128;   // 2 * 128 * 128 triangles
+constexpr int kCells = 128;       // 2 * 128 * 128 triangles
 constexpr uint32_t kSize = 1024;  // 1024 x 1024 rays
 
 Case benchCase() {
@@ -39,7 +39,9 @@ Case benchCase() {
   g.flags = kGeometryOpaque;
   const int n = kCells;
   for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) g.vertices.push_back({-1 + 2.0f * i / n, -1 + 2.0f * j / n, 0.1f * std::sin(i * 0.3f) * std::cos(j * 0.2f)});
+    for (int i = 0; i <= n; ++i)
+      g.vertices.push_back(
+          {-1 + 2.0f * i / n, -1 + 2.0f * j / n, 0.1f * std::sin(i * 0.3f) * std::cos(j * 0.2f)});
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       uint32_t a = j * (n + 1) + i, b = a + 1, cc = a + n + 2, d = a + n + 1;
@@ -68,7 +70,9 @@ Case benchCase() {
   // Counters only (no per-ray fields, no images): the plan keeps no records,
   // so the model simulates none; the bare loop counts hits and misses too.
   auto count = [](const char* name) {
-    Stmt s; s.kind = Stmt::Kind::Count; s.counter = name;
+    Stmt s;
+    s.kind = Stmt::Kind::Count;
+    s.counter = name;
     return s;
   };
   c.pipeline.miss = {{count("miss")}};
@@ -85,7 +89,8 @@ const Case& theCase() {
 }
 
 unsigned threadsOf(const benchmark::State& s) {
-  return s.range(0) ? static_cast<unsigned>(s.range(0)) : std::max(1u, std::thread::hardware_concurrency());
+  return s.range(0) ? static_cast<unsigned>(s.range(0))
+                    : std::max(1u, std::thread::hardware_concurrency());
 }
 
 struct Counts {
@@ -105,8 +110,8 @@ Counts bareRun(const Case& c, unsigned threads) {
   RTCDevice dev = rtcNewDevice(nullptr);
   RTCScene blas = rtcNewScene(dev);
   RTCGeometry geom = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
-  rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, g.vertices.data(), 0,
-                             sizeof(Vec3), g.vertices.size());
+  rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, g.vertices.data(),
+                             0, sizeof(Vec3), g.vertices.size());
   rtcSetSharedGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, g.indices.data(), 0,
                              3 * sizeof(uint32_t), g.indices.size() / 3);
   rtcCommitGeometry(geom);
@@ -116,7 +121,8 @@ Counts bareRun(const Case& c, unsigned threads) {
   RTCScene top = rtcNewScene(dev);
   RTCGeometry ig = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_INSTANCE);
   rtcSetGeometryInstancedScene(ig, blas);
-  rtcSetGeometryTransform(ig, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, c.scene.instances[0].transform.data());
+  rtcSetGeometryTransform(ig, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR,
+                          c.scene.instances[0].transform.data());
   rtcCommitGeometry(ig);
   rtcAttachGeometry(top, ig);
   rtcReleaseGeometry(ig);
@@ -136,20 +142,32 @@ Counts bareRun(const Case& c, unsigned threads) {
       for (size_t i = b; i < std::min(n, b + 256); ++i) {
         const Ray& r = c.rays.rays[i];
         RTCRayHit rh;
-        rh.ray.org_x = r.origin[0]; rh.ray.org_y = r.origin[1]; rh.ray.org_z = r.origin[2];
-        rh.ray.dir_x = r.direction[0]; rh.ray.dir_y = r.direction[1]; rh.ray.dir_z = r.direction[2];
-        rh.ray.tnear = r.tmin; rh.ray.tfar = r.tmax; rh.ray.time = 0; rh.ray.mask = 0xFFFFFFFF;
-        rh.ray.id = 0; rh.ray.flags = 0;
+        rh.ray.org_x = r.origin[0];
+        rh.ray.org_y = r.origin[1];
+        rh.ray.org_z = r.origin[2];
+        rh.ray.dir_x = r.direction[0];
+        rh.ray.dir_y = r.direction[1];
+        rh.ray.dir_z = r.direction[2];
+        rh.ray.tnear = r.tmin;
+        rh.ray.tfar = r.tmax;
+        rh.ray.time = 0;
+        rh.ray.mask = 0xFFFFFFFF;
+        rh.ray.id = 0;
+        rh.ray.flags = 0;
         rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
         rtcIntersect1(top, &ctx, &rh);
-        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) ++m; else ++h;
+        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID)
+          ++m;
+        else
+          ++h;
       }
     }
     hitSum += h;
     missSum += m;
   };
-  if (threads == 1) work();
+  if (threads == 1)
+    work();
   else {
     std::vector<std::thread> pool;
     for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work);
@@ -181,9 +199,10 @@ void BM_BareEmbree(benchmark::State& state) {
     trace += k.trace_s;
   }
   if (k.hits != reference().hits || k.misses != reference().misses)
-    state.SkipWithError("the bare loop's hit/miss counts differ from the single-threaded reference");
-  state.counters["rays_per_second"] =
-      benchmark::Counter(double(c.rays.rays.size()) * state.iterations(), benchmark::Counter::kIsRate);
+    state.SkipWithError(
+        "the bare loop's hit/miss counts differ from the single-threaded reference");
+  state.counters["rays_per_second"] = benchmark::Counter(
+      double(c.rays.rays.size()) * state.iterations(), benchmark::Counter::kIsRate);
   state.counters["threads"] = threads;
   state.counters["setup_ms"] = benchmark::Counter(1e3 * setup, benchmark::Counter::kAvgIterations);
   state.counters["trace_ms"] = benchmark::Counter(1e3 * trace, benchmark::Counter::kAvgIterations);
@@ -211,8 +230,8 @@ void BM_Model(benchmark::State& state, ModelTier tier) {
   // Same rays, same scene: the model must find exactly the bare loop's hits.
   if (r.counters["hit"] != reference().hits || r.counters["miss"] != reference().misses)
     state.SkipWithError("the model's hit/miss counts differ from the bare loop's");
-  state.counters["rays_per_second"] =
-      benchmark::Counter(double(c.rays.rays.size()) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["rays_per_second"] = benchmark::Counter(
+      double(c.rays.rays.size()) * state.iterations(), benchmark::Counter::kIsRate);
   state.counters["threads"] = o.threads;
   state.counters["setup_ms"] = benchmark::Counter(1e3 * setup, benchmark::Counter::kAvgIterations);
   state.counters["trace_ms"] = benchmark::Counter(1e3 * trace, benchmark::Counter::kAvgIterations);
@@ -250,17 +269,29 @@ void BM_Records(benchmark::State& state) {
     trace += r.cost[CostStep::ModelTrace];
   }
   if (records != c.rays.rays.size() * recordWords()) state.SkipWithError("not one record per ray");
-  state.counters["rays_per_second"] =
-      benchmark::Counter(double(c.rays.rays.size()) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["rays_per_second"] = benchmark::Counter(
+      double(c.rays.rays.size()) * state.iterations(), benchmark::Counter::kIsRate);
   state.counters["threads"] = o.threads;
   state.counters["setup_ms"] = benchmark::Counter(1e3 * setup, benchmark::Counter::kAvgIterations);
   state.counters["trace_ms"] = benchmark::Counter(1e3 * trace, benchmark::Counter::kAvgIterations);
 }
 
 BENCHMARK(BM_BareEmbree)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_Model, fast, ModelTier::Fast)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_Model, robust, ModelTier::Robust)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_Model, exact, ModelTier::Exact)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Model, fast, ModelTier::Fast)
+    ->Arg(1)
+    ->Arg(0)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_Model, robust, ModelTier::Robust)
+    ->Arg(1)
+    ->Arg(0)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_Model, exact, ModelTier::Exact)
+    ->Arg(1)
+    ->Arg(0)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_Records)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

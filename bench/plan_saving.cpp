@@ -56,8 +56,8 @@ void runPlan(benchmark::State& state, const PlannedCase& pc, bool every) {
   // The plan may drop work, never change an answer: the counters agree.
   if (every && r.counters != runOnModel(pc.c, pc.derived, o).counters)
     state.SkipWithError("the counters differ between the derived plan and every effect");
-  state.counters["rays_per_second"] =
-      benchmark::Counter(double(pc.c.rays.rays.size()) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["rays_per_second"] = benchmark::Counter(
+      double(pc.c.rays.rays.size()) * state.iterations(), benchmark::Counter::kIsRate);
   state.counters["record_fields"] = static_cast<double>(plan.record_fields.size());
   state.counters["images"] = static_cast<double>(plan.images.size());
 }
@@ -68,8 +68,9 @@ void runPlan(benchmark::State& state, const PlannedCase& pc, bool every) {
 int main(int argc, char** argv) {
   for (const rayspec::PlannedCase& pc : rayspec::cases())
     for (bool every : {false, true})
-      benchmark::RegisterBenchmark(("BM_Plan/" + std::string(every ? "every-effect/" : "derived/") + pc.c.name).c_str(),
-                                   [&pc, every](benchmark::State& s) { rayspec::runPlan(s, pc, every); })
+      benchmark::RegisterBenchmark(
+          ("BM_Plan/" + std::string(every ? "every-effect/" : "derived/") + pc.c.name).c_str(),
+          [&pc, every](benchmark::State& s) { rayspec::runPlan(s, pc, every); })
           ->Unit(benchmark::kMillisecond)
           ->UseRealTime();
   benchmark::Initialize(&argc, argv);

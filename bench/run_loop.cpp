@@ -7,9 +7,9 @@
 // RAYSPEC_BENCH_JOBS (default: one per core). Reported: cases per second and
 // seconds per case; with workers the cost per case stays flat from 100 to
 // 5,000 cases (2 cores, lavapipe: 48.6, 53.4 and 48.3 cases/s at 100, 1,000
-// and 5,000; a process per case: 7.0 and 7.2 at 100 and 500). The per-process reference stops at 500 cases (about 10 s a
-// hundred on 2 cores). Run it on lavapipe (MESA_SHADER_CACHE_DIR warm) or on
-// any device with RAYSPEC_BENCH_DEVICE.
+// and 5,000; a process per case: 7.0 and 7.2 at 100 and 500). The per-process reference stops at
+// 500 cases (about 10 s a hundred on 2 cores). Run it on lavapipe (MESA_SHADER_CACHE_DIR warm) or
+// on any device with RAYSPEC_BENCH_DEVICE.
 #include <benchmark/benchmark.h>
 #include <fcntl.h>
 #include <unistd.h>
@@ -29,7 +29,8 @@ namespace fs = std::filesystem;
 
 // A folder of cases holding one sweep of n variants of one case.
 std::string generatedSuite(int n) {
-  const std::string root = fs::temp_directory_path().string() + "/rayspec-bench-run-loop/" + std::to_string(n);
+  const std::string root =
+      fs::temp_directory_path().string() + "/rayspec-bench-run-loop/" + std::to_string(n);
   fs::remove_all(root);
   fs::create_directories(root + "/cases/bench");
   std::ifstream in(RAYSPEC_SOURCE_DIR "/cases/results/miss-xor-closest-hit.yaml");
@@ -70,27 +71,41 @@ void runLoop(benchmark::State& state, bool process_per_case) {
   RunOptions opt;
   opt.cases_dir = root + "/cases";
   opt.out = root + "/out";
-  opt.cache_dir = root + "/cache";  // no timings from other runs; SPIR-V compiled once, by the first case
+  opt.cache_dir =
+      root + "/cache";  // no timings from other runs; SPIR-V compiled once, by the first case
   opt.process_per_case = process_per_case;
   if (const char* d = std::getenv("RAYSPEC_BENCH_DEVICE")) opt.device = d;
-  if (const char* j = std::getenv("RAYSPEC_BENCH_JOBS")) opt.jobs = static_cast<unsigned>(std::atoi(j));
+  if (const char* j = std::getenv("RAYSPEC_BENCH_JOBS"))
+    opt.jobs = static_cast<unsigned>(std::atoi(j));
   int status = 0;
   for (auto _ : state) {
     Quiet quiet;
     status = runCases(opt);
   }
-  if (status != kExitPass) state.SkipWithError(("the run did not pass: see " + opt.out + "/summary.txt").c_str());
-  state.counters["cases_per_s"] = benchmark::Counter(n, benchmark::Counter::kIsIterationInvariantRate);
-  state.counters["s_per_case"] =
-      benchmark::Counter(n, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  if (status != kExitPass)
+    state.SkipWithError(("the run did not pass: see " + opt.out + "/summary.txt").c_str());
+  state.counters["cases_per_s"] =
+      benchmark::Counter(n, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["s_per_case"] = benchmark::Counter(
+      n, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
   fs::remove_all(root);
 }
 
-void workers(benchmark::State& state) { runLoop(state, false); }
-void processPerCase(benchmark::State& state) { runLoop(state, true); }
+void workers(benchmark::State& state) {
+  runLoop(state, false);
+}
+void processPerCase(benchmark::State& state) {
+  runLoop(state, true);
+}
 
-BENCHMARK(workers)->Arg(100)->Arg(1000)->Arg(5000)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
-BENCHMARK(processPerCase)->Arg(100)->Arg(500)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
+BENCHMARK(workers)->Arg(100)->Arg(1000)->Arg(5000)->Iterations(1)->UseRealTime()->Unit(
+    benchmark::kSecond);
+BENCHMARK(processPerCase)
+    ->Arg(100)
+    ->Arg(500)
+    ->Iterations(1)
+    ->UseRealTime()
+    ->Unit(benchmark::kSecond);
 
 }  // namespace
 }  // namespace rayspec

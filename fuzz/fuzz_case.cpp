@@ -14,7 +14,7 @@ namespace {
 
 void parseAndPlan(const std::string& text, const std::string& name) {
   const rayspec::ParseResult parsed = rayspec::parseCaseText(text, "fuzz.yaml", name);
-  for (const rayspec::CaseError& e : parsed.errors) (void)e.format();
+  for (const rayspec::Error& e : parsed.errors) (void)e.format();
   if (!parsed.value) return;
   const rayspec::Plan plan = rayspec::derivePlan(*parsed.value);
   (void)plan.describe();
@@ -26,9 +26,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   if (text.rfind("sweep:", 0) == 0 || text.find("\nsweep:") != std::string::npos) {
     const rayspec::SweepExpansion ex = rayspec::expandSweep(text, "fuzz.sweep.yaml", "fuzz/case");
-    for (const rayspec::CaseError& e : ex.errors) (void)e.format();
+    for (const rayspec::Error& e : ex.errors) (void)e.format();
     // A few variants are enough to reach the parser; a sweep may hold thousands.
-    for (size_t i = 0; i < ex.variants.size() && i < 4; ++i) parseAndPlan(ex.variants[i].text, ex.variants[i].name);
+    for (size_t i = 0; i < ex.variants.size() && i < 4; ++i)
+      parseAndPlan(ex.variants[i].text, ex.variants[i].name);
     return 0;
   }
   parseAndPlan(text, "fuzz/case");

@@ -31,11 +31,14 @@ namespace fs = std::filesystem;
 
 // A folder of this process's own, emptied for each input.
 const fs::path& workDir() {
-  static const fs::path dir = fs::temp_directory_path() / ("rayspec-fuzz-saved-" + std::to_string(getpid()));
+  static const fs::path dir =
+      fs::temp_directory_path() / ("rayspec-fuzz-saved-" + std::to_string(getpid()));
   return dir;
 }
 
-void write(const fs::path& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
+void write(const fs::path& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
+}
 
 void require(bool property) {
   if (!property) std::abort();
@@ -52,7 +55,8 @@ void patternsFile(const std::string& text) {
   write(workDir() / "p.txt", text);
   std::string error;
   const auto patterns = rayspec::loadNamePatterns((workDir() / "p.txt").string(), &error);
-  for (const char* name : {"anyhit/ignore-odd-primitives", "aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa!", ""})
+  for (const char* name :
+       {"anyhit/ignore-odd-primitives", "aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa!", ""})
     (void)rayspec::findPattern(patterns, name);
 }
 
@@ -64,7 +68,8 @@ void resultsBundle(const std::string& text) {
       rest.size() >= 2 ? static_cast<uint8_t>(rest[0]) | static_cast<uint8_t>(rest[1]) << 8 : 0;
   rest = rest.size() >= 2 ? rest.substr(2) : std::string();
   write(workDir() / "img.raw", rest.substr(0, image_bytes));
-  write(workDir() / "records.bin", rest.size() > image_bytes ? rest.substr(image_bytes) : std::string());
+  write(workDir() / "records.bin",
+        rest.size() > image_bytes ? rest.substr(image_bytes) : std::string());
   std::string error;
   const rayspec::Results r = rayspec::readResults(workDir().string(), &error);
   if (!error.empty()) return;
@@ -73,7 +78,8 @@ void resultsBundle(const std::string& text) {
     require(rayspec::fileNameProblem(im.name).empty());
     require(im.texels.size() == uint64_t(im.width) * im.height * im.channels);
   }
-  require(r.records.empty() || r.records.size() == uint64_t(r.width) * r.height * rayspec::recordWords());
+  require(r.records.empty() ||
+          r.records.size() == uint64_t(r.width) * r.height * rayspec::recordWords());
 }
 
 void summaryFile(const std::string& text) {
@@ -81,7 +87,8 @@ void summaryFile(const std::string& text) {
   std::string error;
   const rayspec::SavedRun run = rayspec::readSavedRun(workDir().string(), &error);
   if (!error.empty()) return;
-  for (const rayspec::CaseOutcome& o : run.outcomes) require(rayspec::caseNameProblem(o.name).empty());
+  for (const rayspec::CaseOutcome& o : run.outcomes)
+    require(rayspec::caseNameProblem(o.name).empty());
 }
 
 }  // namespace
@@ -93,10 +100,18 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   fs::create_directories(workDir(), ec);
   const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
   switch (data[0] % 4) {
-    case 0: baselineFile(text); break;
-    case 1: patternsFile(text); break;
-    case 2: resultsBundle(text); break;
-    default: summaryFile(text); break;
+    case 0:
+      baselineFile(text);
+      break;
+    case 1:
+      patternsFile(text);
+      break;
+    case 2:
+      resultsBundle(text);
+      break;
+    default:
+      summaryFile(text);
+      break;
   }
   return 0;
 }

@@ -45,8 +45,12 @@ Results bundle(const std::vector<Ray>& rays) {
   return r;
 }
 
-Ray hitRay(uint32_t prim, float t, uint32_t ahit = 0) { return {1, ahit, 0, prim, 0u, t}; }
-Ray missRay(uint32_t ahit = 0) { return {0, ahit, 1, {}, {}, {}}; }
+Ray hitRay(uint32_t prim, float t, uint32_t ahit = 0) {
+  return {1, ahit, 0, prim, 0u, t};
+}
+Ray missRay(uint32_t ahit = 0) {
+  return {0, ahit, 1, {}, {}, {}};
+}
 
 float ulpsAbove(float t, int n) {
   for (int i = 0; i < n; ++i) t = std::nextafter(t, INFINITY);
@@ -55,13 +59,13 @@ float ulpsAbove(float t, int n) {
 
 TEST(RayDisagreements, EachKindIsDetected) {
   const Results exact = bundle({
-      hitRay(3, 2.0f),        // 0: agree exactly
-      hitRay(3, 2.0f),        // 1: a leak: the other side misses
-      missRay(1),             // 2: any-hit once (ignored), the other side twice: a double hit
-      hitRay(3, 2.0f),        // 3: another primitive
-      hitRay(5, 4.0f),        // 4: the same primitive, t 3 ULP off
-      missRay(),              // 5: an extra hit on a clear ray
-      missRay(1),             // 6: a leak of an any-hit-only ray (stability cases)
+      hitRay(3, 2.0f),  // 0: agree exactly
+      hitRay(3, 2.0f),  // 1: a leak: the other side misses
+      missRay(1),       // 2: any-hit once (ignored), the other side twice: a double hit
+      hitRay(3, 2.0f),  // 3: another primitive
+      hitRay(5, 4.0f),  // 4: the same primitive, t 3 ULP off
+      missRay(),        // 5: an extra hit on a clear ray
+      missRay(1),       // 6: a leak of an any-hit-only ray (stability cases)
   });
   const Results other = bundle({
       hitRay(3, 2.0f),
@@ -92,15 +96,20 @@ TEST(RayDisagreements, EachKindIsDetected) {
 }
 
 TEST(RayDisagreements, LegalAnswersOfAmbiguousRaysAndUndefinedRaysAreNoDisagreement) {
-  Results exact = bundle({hitRay(3, 2.0f), hitRay(3, 2.0f), hitRay(3, 2.0f), hitRay(3, 2.0f), missRay()});
-  const Results other = bundle({hitRay(4, 2.0f), missRay(), missRay(), hitRay(9, 2.0f), hitRay(1, 1.0f)});
+  Results exact =
+      bundle({hitRay(3, 2.0f), hitRay(3, 2.0f), hitRay(3, 2.0f), hitRay(3, 2.0f), missRay()});
+  const Results other =
+      bundle({hitRay(4, 2.0f), missRay(), missRay(), hitRay(9, 2.0f), hitRay(1, 1.0f)});
   // Ray 0: an edge between primitives 3 and 4: either is legal.
   exact.ambiguous.push_back({0, AmbiguityReason::Edge, {{true, 0, 0, 3}, {true, 0, 0, 4}}, {}});
   // Ray 1: the outer border of a mesh: a miss is legal (one triangle).
-  exact.ambiguous.push_back({1, AmbiguityReason::Edge, {{true, 0, 0, 3}, {false, 0, 0, 0}}, {{true, 0, 0, 3}}});
-  // Ray 2: a miss is legal, but two triangles share the crossing: a leak.
   exact.ambiguous.push_back(
-      {2, AmbiguityReason::Edge, {{true, 0, 0, 3}, {false, 0, 0, 0}}, {{true, 0, 0, 3}, {false, 0, 0, 4}}});
+      {1, AmbiguityReason::Edge, {{true, 0, 0, 3}, {false, 0, 0, 0}}, {{true, 0, 0, 3}}});
+  // Ray 2: a miss is legal, but two triangles share the crossing: a leak.
+  exact.ambiguous.push_back({2,
+                             AmbiguityReason::Edge,
+                             {{true, 0, 0, 3}, {false, 0, 0, 0}},
+                             {{true, 0, 0, 3}, {false, 0, 0, 4}}});
   // Ray 3: primitive 9 is not among the legal answers.
   exact.ambiguous.push_back({3, AmbiguityReason::Edge, {{true, 0, 0, 3}, {true, 0, 0, 4}}, {}});
   // Ray 4: undefined behaviour, never compared.
@@ -132,7 +141,8 @@ TEST(RayDisagreements, AHitAtATminTieHasNoTError) {
 // border of the mesh: watertight/shared-edges is a 4x4 grid whose primitives
 // 0 and 1 split the corner cell along the diagonal from the grid's corner.
 TEST(RayDisagreements, TheCaseTellsASharedEdgeFromTheBorder) {
-  const std::optional<CaseFile> f = findCase("watertight/shared-edges", "", RAYSPEC_SOURCE_DIR "/cases");
+  const std::optional<CaseFile> f =
+      findCase("watertight/shared-edges", "", RAYSPEC_SOURCE_DIR "/cases");
   ASSERT_TRUE(f.has_value());
   const ParseResult parsed = loadCase(*f, RAYSPEC_SOURCE_DIR "/cases");
   ASSERT_TRUE(parsed.value.has_value());
@@ -144,14 +154,16 @@ TEST(RayDisagreements, TheCaseTellsASharedEdgeFromTheBorder) {
   // although the candidates list none (precision/large-coordinates has such rays).
   exact.ambiguous.push_back({1, AmbiguityReason::Vertex, {{true, 0, 0, 0}, {true, 0, 0, 1}}, {}});
   // Ray 2: through a border edge of primitive 0 alone.
-  exact.ambiguous.push_back({2, AmbiguityReason::Edge, {{true, 0, 0, 0}, {false, 0, 0, 0}}, {{true, 0, 0, 0}}});
+  exact.ambiguous.push_back(
+      {2, AmbiguityReason::Edge, {{true, 0, 0, 0}, {false, 0, 0, 0}}, {{true, 0, 0, 0}}});
   EXPECT_EQ(countDisagreements(exact, other, &*parsed.value).leaks, 1u);
   // Without the case only the candidates tell: the corner ray lists no miss.
   EXPECT_EQ(countDisagreements(exact, other, nullptr).leaks, 2u);
 }
 
 TEST(RayDisagreements, DifferentLaunchesCompareNothing) {
-  EXPECT_EQ(countDisagreements(bundle({missRay()}), bundle({missRay(), missRay()}), nullptr).rays, 0u);
+  EXPECT_EQ(countDisagreements(bundle({missRay()}), bundle({missRay(), missRay()}), nullptr).rays,
+            0u);
 }
 
 TEST(TErrors, UlpsAtTheExactDistance) {
@@ -216,7 +228,9 @@ TEST(AccuracyTable, RowsSumCasesAndGiveTimePerMray) {
   EXPECT_DOUBLE_EQ(rows[0].d.perMillion(), 4000.0);
   const std::string t = formatAccuracyTable(rows);
   EXPECT_LT(t.find("ordinary cases"), t.find("hard cases")) << t;
-  EXPECT_NE(t.find("model fast         2      2000    2000.00    4000.0       8"), std::string::npos) << t;
+  EXPECT_NE(t.find("model fast         2      2000    2000.00    4000.0       8"),
+            std::string::npos)
+      << t;
   const nlohmann::json j = accuracyJson(rows);
   ASSERT_EQ(j["rows"].size(), 3u);
   EXPECT_EQ(j["rows"][2]["source"], "llvmpipe");
@@ -234,7 +248,8 @@ TEST(AccuracyTable, OneScatterPanelPerSetZeroAtTheFloor) {
   EXPECT_TRUE(p[1].log_x && p[1].log_y);
   ASSERT_EQ(p[1].series.size(), 2u);
   EXPECT_EQ(p[1].series[0].points, (std::vector<std::pair<double, double>>{{2000.0, 4000.0}}));
-  EXPECT_EQ(p[1].series[1].points[0].second, kPlotFloorPerMillion);  // the exact tier: no disagreement
+  EXPECT_EQ(p[1].series[1].points[0].second,
+            kPlotFloorPerMillion);  // the exact tier: no disagreement
   EXPECT_EQ(p[1].series[1].labels, std::vector<std::string>{"model exact (0)"});
 }
 

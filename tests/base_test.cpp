@@ -38,7 +38,8 @@ TEST(FloatSteps, DoublesRoundOutwardToFloats) {
   const double third = 1.0 / 3.0;
   EXPECT_LT(floatBelow(third), third);
   EXPECT_GT(floatAbove(third), third);
-  EXPECT_EQ(nextUp(floatBelow(third)), floatAbove(third)) << "neighbours around a double between two floats";
+  EXPECT_EQ(nextUp(floatBelow(third)), floatAbove(third))
+      << "neighbours around a double between two floats";
   EXPECT_EQ(floatBelow(0.5), 0.5f) << "a float stays itself";
   EXPECT_EQ(floatAbove(0.5), 0.5f);
   EXPECT_TRUE(std::isnan(floatBelow(NAN)));
@@ -82,16 +83,19 @@ TEST(Slab, SpanOfALineThroughABox) {
   s = slabSpan(lo, hi, {2, 0.5, 0.5}, {-2, 0, 0});  // backwards, and a longer direction
   EXPECT_EQ(s.t0, 0.5);
   EXPECT_EQ(s.t1, 1);
-  EXPECT_TRUE(slabSpan(lo, hi, {-1, 2, 0.5}, {1, 0, 0}).empty()) << "parallel to y's faces, outside them";
+  EXPECT_TRUE(slabSpan(lo, hi, {-1, 2, 0.5}, {1, 0, 0}).empty())
+      << "parallel to y's faces, outside them";
   EXPECT_FALSE(slabSpan(lo, hi, {-1, 1, 0.5}, {1, 0, 0}).empty()) << "on a face counts";
   EXPECT_TRUE(slabSpan(lo, hi, {-1, -1, 0.5}, {1, 0.4, 0}).empty()) << "passes by a corner";
-  EXPECT_FALSE(slabSpan(lo, hi, {-1, -1, 0.5}, {1, 0.5, 0}).empty()) << "touches the corner (1, 0): faces count";
+  EXPECT_FALSE(slabSpan(lo, hi, {-1, -1, 0.5}, {1, 0.5, 0}).empty())
+      << "touches the corner (1, 0): faces count";
   // `within` clips the span: a ray interval that ends before the box.
   EXPECT_TRUE(slabSpan(lo, hi, {-1, 0.5, 0.5}, {1, 0, 0}, {0, 0.5}).empty());
   s = slabSpan(lo, hi, {-1, 0.5, 0.5}, {1, 0, 0}, {1.5, kInf});
   EXPECT_EQ(s.t0, 1.5);
   EXPECT_EQ(s.t1, 2);
-  EXPECT_TRUE(slabSpan(lo, hi, {-1, 0.5, 0.5}, {1, 0, 0}, {NAN, kInf}).empty()) << "a NaN end empties the span";
+  EXPECT_TRUE(slabSpan(lo, hi, {-1, 0.5, 0.5}, {1, 0, 0}, {NAN, kInf}).empty())
+      << "a NaN end empties the span";
 }
 
 }  // namespace

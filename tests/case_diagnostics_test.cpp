@@ -10,8 +10,8 @@
 #include <functional>
 #include <sstream>
 
-#include "suite_cases.h"
 #include "case/parse_case.h"
+#include "suite_cases.h"
 
 namespace rayspec {
 namespace {
@@ -22,22 +22,22 @@ ParseResult parse(const std::string& text, const std::vector<std::string>* catal
 
 std::string allErrors(const ParseResult& r) {
   std::string s;
-  for (const CaseError& e : r.errors) s += e.format() + "\n";
+  for (const Error& e : r.errors) s += e.format() + "\n";
   return s;
 }
 
 // The error at line:col whose field is `field` and whose message holds `text`.
-const CaseError* errorAt(const ParseResult& r, int line, int column, const std::string& field,
-                         const std::string& text) {
-  for (const CaseError& e : r.errors)
+const Error* errorAt(const ParseResult& r, int line, int column, const std::string& field,
+                     const std::string& text) {
+  for (const Error& e : r.errors)
     if (e.loc.line == line && (column == 0 || e.loc.column == column) && e.loc.field == field &&
         e.message.find(text) != std::string::npos)
       return &e;
   return nullptr;
 }
 
-#define EXPECT_ERROR_AT(r, line, column, field, text)                                                    \
-  EXPECT_TRUE(errorAt(r, line, column, field, text))                                                     \
+#define EXPECT_ERROR_AT(r, line, column, field, text)                                              \
+  EXPECT_TRUE(errorAt(r, line, column, field, text))                                               \
       << "expected " << line << ":" << column << ": " << field << ": ..." << text << "...; got:\n" \
       << allErrors(r)
 
@@ -62,10 +62,12 @@ pipeline:
 @HIT@
 )";
 
-std::string twoGeometries(const std::string& hit, const std::string& offset = "0", const std::string& mask = "0xFF",
-                          const std::string& flags = "[]") {
+std::string twoGeometries(const std::string& hit, const std::string& offset = "0",
+                          const std::string& mask = "0xFF", const std::string& flags = "[]") {
   std::string s = kTwoGeometries;
-  auto put = [&](const std::string& key, const std::string& value) { s.replace(s.find(key), key.size(), value); };
+  auto put = [&](const std::string& key, const std::string& value) {
+    s.replace(s.find(key), key.size(), value);
+  };
   put("@HIT@", hit);
   put("@OFFSET@", offset);
   put("@MASK@", mask);
@@ -81,13 +83,16 @@ TEST(CaseStaticUndefined, HitRecordBeyondTheHitRegionIsACaseError) {
   ASSERT_EQ(r.undefined.size(), 1u);
   EXPECT_EQ(r.undefined[0].reason, UndefinedReason::HitRecordOutOfRange);
   // A record per geometry (sbt block or a group each) is fine.
-  EXPECT_TRUE(parse(twoGeometries("  hit_groups: [{closest_hit: []}]\n  sbt: {hit: [0, 0]}")).value);
+  EXPECT_TRUE(
+      parse(twoGeometries("  hit_groups: [{closest_hit: []}]\n  sbt: {hit: [0, 0]}")).value);
   EXPECT_TRUE(parse(twoGeometries("  hit_groups: [{closest_hit: []}, {closest_hit: []}]")).value);
-  // A launch ray's own sbt_offset (low 4 bits count) can reach beyond too; the message names the ray.
+  // A launch ray's own sbt_offset (low 4 bits count) can reach beyond too; the message names the
+  // ray.
   r = parse(twoGeometries("  hit_groups: [{}, {}]", "0x11"));
   EXPECT_ERROR_AT(r, 16, 7, "pipeline.raygen[0].trace", "hit record 2 is out of range");
   EXPECT_NE(allErrors(r).find("rays.list[1]"), std::string::npos) << allErrors(r);
-  EXPECT_TRUE(parse(twoGeometries("  hit_groups: [{}, {}]", "0x10")).value) << "0x10 acts as 0 (R-SBT-HIT)";
+  EXPECT_TRUE(parse(twoGeometries("  hit_groups: [{}, {}]", "0x10")).value)
+      << "0x10 acts as 0 (R-SBT-HIT)";
   // Geometry nothing can reach: a masked-out instance, triangles skipped by the pipeline.
   EXPECT_TRUE(parse(twoGeometries("  hit_groups: [{}]", "0", "0")).value);
   EXPECT_TRUE(parse(twoGeometries("  hit_groups: [{}]", "0", "0xFF", "[skip_triangles]")).value);
@@ -117,10 +122,12 @@ outputs:
   per_ray: [value]
 )";
 
-std::string programs(const std::string& miss, const std::string& call, const std::string& tmin = "0.5",
-                     const std::string& tmax = "10") {
+std::string programs(const std::string& miss, const std::string& call,
+                     const std::string& tmin = "0.5", const std::string& tmax = "10") {
   std::string s = kPrograms;
-  auto put = [&](const std::string& key, const std::string& value) { s.replace(s.find(key), key.size(), value); };
+  auto put = [&](const std::string& key, const std::string& value) {
+    s.replace(s.find(key), key.size(), value);
+  };
   put("@MISS@", miss);
   put("@CALL@", call);
   put("@TMIN@", tmin);
@@ -131,10 +138,12 @@ std::string programs(const std::string& miss, const std::string& call, const std
 TEST(CaseStaticUndefined, MissIndexBeyondTheMissRegionIsACaseError) {
   EXPECT_TRUE(parse(programs("1", "0")).value);
   ParseResult r = parse(programs("2", "0"));
-  EXPECT_ERROR_AT(r, 7, 21, "pipeline.raygen[0].trace.miss", "miss index 2 is out of range: the miss region has 2");
+  EXPECT_ERROR_AT(r, 7, 21, "pipeline.raygen[0].trace.miss",
+                  "miss index 2 is out of range: the miss region has 2");
   EXPECT_TRUE(parse(programs("0x10001", "0")).value) << "only the low 16 bits count (R-SBT-MISS)";
   r = parse(programs("{add: [1, 1]}", "0"));
-  EXPECT_ERROR_AT(r, 7, 21, "pipeline.raygen[0].trace.miss", "miss index 2") << "a constant expression";
+  EXPECT_ERROR_AT(r, 7, 21, "pipeline.raygen[0].trace.miss", "miss index 2")
+      << "a constant expression";
 }
 
 TEST(CaseStaticUndefined, CallableIndexBeyondTheCallableRegionIsACaseError) {
@@ -168,7 +177,8 @@ pipeline: {miss: [[]]}
   EXPECT_ERROR_AT(r, 5, 56, "rays.list[1].tmin", "tmin is NaN");
   EXPECT_ERROR_AT(r, 6, 16, "rays.list[2].origin", "not finite");
   EXPECT_ERROR_AT(r, 8, 9, "rays.tmax", "tmax -4 is negative");
-  for (const CaseError& e : r.errors) EXPECT_NE(e.message.find("R-UB"), std::string::npos) << e.format();
+  for (const Error& e : r.errors)
+    EXPECT_NE(e.message.find("R-UB"), std::string::npos) << e.format();
 }
 
 TEST(CaseStaticUndefined, UintDivisionOrModuloByAConstantZeroIsACaseError) {
@@ -191,7 +201,8 @@ outputs:
   r = with("{mod: [launch_id_x, {mul: [0, 5]}]}");
   EXPECT_ERROR_AT(r, 6, 25, "pipeline.miss[0][0].record.value", "Uint modulo by a constant zero");
   EXPECT_TRUE(with("{div: [7, launch_id_x]}").value) << "a dynamic divisor is the model's to judge";
-  EXPECT_TRUE(with("{uint: {div: [1.0, 0.0]}}").value) << "Float division by zero is no undefined behaviour";
+  EXPECT_TRUE(with("{uint: {div: [1.0, 0.0]}}").value)
+      << "Float division by zero is no undefined behaviour";
 }
 
 TEST(CaseStaticUndefined, ARobustnessProbeKeepsItsUndefinedBehaviour) {
@@ -217,7 +228,8 @@ TEST(Suite, NoCaseReadsOutsideItsSbt) {
       EXPECT_TRUE(u.reason != UndefinedReason::HitRecordOutOfRange &&
                   u.reason != UndefinedReason::MissRecordOutOfRange &&
                   u.reason != UndefinedReason::CallableOutOfRange)
-          << u.loc.file << ":" << u.loc.line << ":" << u.loc.column << ": " << u.loc.field << ": " << u.message;
+          << u.loc.file << ":" << u.loc.line << ":" << u.loc.column << ": " << u.loc.field << ": "
+          << u.message;
   }
   EXPECT_GT(count, 0);
 }
@@ -225,7 +237,8 @@ TEST(Suite, NoCaseReadsOutsideItsSbt) {
 // The case that read outside its SBT: without its sbt block, geometry 1's hit
 // record lies beyond the hit region, and the parser says so.
 TEST(Suite, ClosestHitAndMissWithoutItsSbtBlockReadsOutside) {
-  const std::string path = std::string(RAYSPEC_SOURCE_DIR) + "/cases/builtins/closest-hit-and-miss.yaml";
+  const std::string path =
+      std::string(RAYSPEC_SOURCE_DIR) + "/cases/builtins/closest-hit-and-miss.yaml";
   std::ifstream in(path);
   std::stringstream text;
   text << in.rdbuf();

@@ -19,7 +19,8 @@ namespace {
 double signedArea(const Geometry& g, uint32_t p) {
   const Vec3 &a = g.vertices[g.indices[p * 3]], &b = g.vertices[g.indices[p * 3 + 1]],
              &c = g.vertices[g.indices[p * 3 + 2]];
-  return (double(b[0]) - a[0]) * (double(c[1]) - a[1]) - (double(b[1]) - a[1]) * (double(c[0]) - a[0]);
+  return (double(b[0]) - a[0]) * (double(c[1]) - a[1]) -
+         (double(b[1]) - a[1]) * (double(c[0]) - a[0]);
 }
 
 // Each undirected edge used once (border) or twice in opposite directions.
@@ -167,10 +168,11 @@ pipeline: {miss: [[]], hit_groups: [{}]}
 
 TEST(GeneratedMesh, Errors) {
   auto parseBlas = [](const std::string& blas) {
-    return parseCaseText("rules: [R-WATERTIGHT]\nscene:\n  blas:\n    m:\n      - triangles: " + blas +
-                             "\n  instances: [{blas: m}]\nrays:\n  list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]\n"
-                             "pipeline: {miss: [[]], hit_groups: [{}]}\n",
-                         "t.yaml", "family/t");
+    return parseCaseText(
+        "rules: [R-WATERTIGHT]\nscene:\n  blas:\n    m:\n      - triangles: " + blas +
+            "\n  instances: [{blas: m}]\nrays:\n  list: [{origin: [0, 0, 1], direction: [0, 0, "
+            "-1]}]\npipeline: {miss: [[]], hit_groups: [{}]}\n",
+        "t.yaml", "family/t");
   };
   auto expect = [](const ParseResult& r, const std::string& field, const std::string& text) {
     ASSERT_FALSE(r.value);
@@ -181,9 +183,11 @@ TEST(GeneratedMesh, Errors) {
   };
   expect(parseBlas("{fan: {triangles: 2}}"), "fan.triangles", "at least 3");
   expect(parseBlas("{fan: {triangles: 5, radius: -1}}"), "fan.radius", "positive");
-  expect(parseBlas("{triangulation: {cells: [2, 2], size: [1, 1], seed: 1, jitter: 0.5}}"), "jitter", "0.25");
+  expect(parseBlas("{triangulation: {cells: [2, 2], size: [1, 1], seed: 1, jitter: 0.5}}"),
+         "jitter", "0.25");
   expect(parseBlas("{triangulation: {cells: [2, 2], size: [1, 1]}}"), "triangulation", "seed");
-  expect(parseBlas("{fan: {triangles: 5}, grid: {cells: [1, 1], size: [1, 1]}}"), "triangles", "one of them alone");
+  expect(parseBlas("{fan: {triangles: 5}, grid: {cells: [1, 1], size: [1, 1]}}"), "triangles",
+         "one of them alone");
   EXPECT_TRUE(parseBlas("{fan: {triangles: 5, seed: 2}}").value);
 }
 

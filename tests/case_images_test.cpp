@@ -35,12 +35,13 @@ ParseResult parse(const std::string& images) {
 
 std::string errors(const ParseResult& r) {
   std::string s;
-  for (const CaseError& e : r.errors) s += e.format() + "\n";
+  for (const Error& e : r.errors) s += e.format() + "\n";
   return s;
 }
 
 TEST(ParseImages, EqualToNamesAnotherImage) {
-  const ParseResult r = parse("    - {name: a, from: color}\n    - {name: b, from: color2, equal_to: a}\n");
+  const ParseResult r =
+      parse("    - {name: a, from: color}\n    - {name: b, from: color2, equal_to: a}\n");
   ASSERT_TRUE(r.value) << errors(r);
   EXPECT_EQ(r.value->outputs.images[1].equal_to, "a");
   EXPECT_TRUE(r.value->outputs.images[0].equal_to.empty());
@@ -48,8 +49,9 @@ TEST(ParseImages, EqualToNamesAnotherImage) {
 
 TEST(ParseImages, EqualToAnUnknownImageOrItselfIsAnError) {
   for (const char* other : {"nope", "b"}) {
-    const ParseResult r =
-        parse(std::string("    - {name: a, from: color}\n    - {name: b, from: color2, equal_to: ") + other + "}\n");
+    const ParseResult r = parse(
+        std::string("    - {name: a, from: color}\n    - {name: b, from: color2, equal_to: ") +
+        other + "}\n");
     ASSERT_FALSE(r.value) << other;
     ASSERT_EQ(r.errors.size(), 1u) << errors(r);
     EXPECT_EQ(r.errors[0].loc.line, 20) << errors(r);
@@ -60,7 +62,8 @@ TEST(ParseImages, EqualToAnUnknownImageOrItselfIsAnError) {
 }
 
 TEST(ParseImages, EqualToAnImageOfAnotherTexelFormatIsAnError) {
-  const ParseResult r = parse("    - {name: a, from: hit}\n    - {name: b, from: color2, equal_to: a}\n");
+  const ParseResult r =
+      parse("    - {name: a, from: hit}\n    - {name: b, from: color2, equal_to: a}\n");
   ASSERT_FALSE(r.value);
   EXPECT_NE(errors(r).find("different texel formats"), std::string::npos) << errors(r);
 }

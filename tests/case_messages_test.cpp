@@ -21,12 +21,13 @@ ParseResult parse(const std::string& text, const std::vector<std::string>* catal
 
 std::string allErrors(const ParseResult& r) {
   std::string s;
-  for (const CaseError& e : r.errors) s += e.format() + "\n";
+  for (const Error& e : r.errors) s += e.format() + "\n";
   return s;
 }
 
-bool hasError(const ParseResult& r, int line, int column, const std::string& field, const std::string& text) {
-  for (const CaseError& e : r.errors)
+bool hasError(const ParseResult& r, int line, int column, const std::string& field,
+              const std::string& text) {
+  for (const Error& e : r.errors)
     if (e.loc.line == line && e.loc.column == column && e.loc.field == field &&
         e.message.find(text) != std::string::npos)
       return true;
@@ -45,7 +46,8 @@ outputs:
 
 TEST(ParseMessages, DuplicateKeysAreErrorsWithLineColumnAndKeyPath) {
   ASSERT_TRUE(parse(kMinimal).value) << allErrors(parse(kMinimal));
-  ParseResult r = parse(std::string(kMinimal) + "rays: {list: [{origin: [0, 0, 2], direction: [0, 0, -1]}]}\n");
+  ParseResult r =
+      parse(std::string(kMinimal) + "rays: {list: [{origin: [0, 0, 2], direction: [0, 0, -1]}]}\n");
   EXPECT_TRUE(hasError(r, 9, 1, "rays", "duplicate key 'rays' (first at line 2)")) << allErrors(r);
   EXPECT_FALSE(r.value);
   // Deeper: in a flow map of a list item, and in a block map.
@@ -58,14 +60,16 @@ pipeline:
   max_recursion: 2
 )");
   EXPECT_TRUE(hasError(r, 3, 53, "rays.list[0].origin", "duplicate key 'origin'")) << allErrors(r);
-  EXPECT_TRUE(hasError(r, 7, 3, "pipeline.max_recursion", "duplicate key 'max_recursion' (first at line 6)"))
+  EXPECT_TRUE(hasError(r, 7, 3, "pipeline.max_recursion",
+                       "duplicate key 'max_recursion' (first at line 6)"))
       << allErrors(r);
 }
 
 // A byte-order mark (or any byte a terminal does not show) inside the file is
 // shown as \xNN where a message quotes it: the key looked like 'scene'.
 TEST(ParseMessages, InvisibleBytesAreShownInMessages) {
-  const ParseResult r = parseCaseText("rules: [R-IGNORE]\n\xEF\xBB\xBFscene: 12\n", "bom.yaml", "fam/bom");
+  const ParseResult r =
+      parseCaseText("rules: [R-IGNORE]\n\xEF\xBB\xBFscene: 12\n", "bom.yaml", "fam/bom");
   ASSERT_FALSE(r.errors.empty());
   EXPECT_NE(r.errors[0].format().find("unknown key '\\xEF\\xBB\\xBFscene'"), std::string::npos)
       << r.errors[0].format();
@@ -75,7 +79,8 @@ TEST(ParseMessages, UnknownRuleLabelsAreReportedAtTheLabel) {
   const std::string text = "rules: [R-MASK, R-NO-SUCH-RULE]\n" + std::string(kMinimal).substr(16);
   const std::vector<std::string> catalog = {"R-MASK", "R-UB"};
   ParseResult r = parse(text, &catalog);
-  EXPECT_TRUE(hasError(r, 1, 17, "rules[1]", "unknown rule label 'R-NO-SUCH-RULE'")) << allErrors(r);
+  EXPECT_TRUE(hasError(r, 1, 17, "rules[1]", "unknown rule label 'R-NO-SUCH-RULE'"))
+      << allErrors(r);
   EXPECT_FALSE(r.value);
   EXPECT_TRUE(parse(text).value) << "without a catalog only the label's form is checked";
   EXPECT_TRUE(parse(kMinimal, &catalog).value);
@@ -89,9 +94,10 @@ TEST(ParseMessages, ImageAndCaseNamesMustBeFileNames) {
     return parse(s);
   };
   EXPECT_TRUE(withImage("hit-map_2.v1").value) << allErrors(withImage("hit-map_2.v1"));
-  for (const std::string& bad : {std::string("\"a/b\""), std::string("\"..\""), std::string("\".\""),
-                                  std::string("\"sp ace\""), std::string("\"\""), std::string(101, 'x'),
-                                  std::string("\"caf\xc3\xa9\"")}) {
+  for (const std::string& bad :
+       {std::string("\"a/b\""), std::string("\"..\""), std::string("\".\""),
+        std::string("\"sp ace\""), std::string("\"\""), std::string(101, 'x'),
+        std::string("\"caf\xc3\xa9\"")}) {
     const ParseResult r = withImage(bad);
     EXPECT_FALSE(r.value) << bad;
     ASSERT_EQ(r.errors.size(), 1u) << allErrors(r);
@@ -103,7 +109,8 @@ TEST(ParseMessages, ImageAndCaseNamesMustBeFileNames) {
   // A case's name names its results folder.
   ParseResult r = parse(kMinimal, nullptr, "family/bad name");
   ASSERT_FALSE(r.errors.empty());
-  EXPECT_EQ(r.errors[0].format().rfind("m.yaml:1:1: case name: 'family/bad name' cannot name a results folder", 0),
+  EXPECT_EQ(r.errors[0].format().rfind(
+                "m.yaml:1:1: case name: 'family/bad name' cannot name a results folder", 0),
             0u)
       << allErrors(r);
   EXPECT_FALSE(parse(kMinimal, nullptr, "family/..").value);
@@ -122,12 +129,14 @@ TEST(ParseMessages, ANonScalarCounterNameIsAFieldErrorNotABadConversion) {
 // problem still comes out as FILE:LINE:COL: field: message, never as a bare
 // yaml-cpp exception ("bad conversion", "operator[] call on a scalar").
 TEST(ParseMessages, YamlCppExceptionsComeOutWithFileLineColumnAndField) {
-  const std::vector<std::string> shapes = {"{[a]: b}", "[[1, 2], {k: v}]", "{k: v}", "~",       "\"text\"",
-                                           "-1",       ".nan",             "[]",     "0x1FFFF", "[{}]"};
+  const std::vector<std::string> shapes = {
+      "{[a]: b}", "[[1, 2], {k: v}]", "{k: v}", "~", "\"text\"", "-1", ".nan",
+      "[]",       "0x1FFFF",          "[{}]"};
   const std::string root = std::string(RAYSPEC_SOURCE_DIR) + "/cases/";
   size_t parses = 0;
-  for (const char* file : {"builtins/closest-hit-and-miss.yaml", "intersection/sphere-both-roots.yaml",
-                           "sbt/shader-record-data.yaml", "callable/from-every-stage.yaml"}) {
+  for (const char* file :
+       {"builtins/closest-hit-and-miss.yaml", "intersection/sphere-both-roots.yaml",
+        "sbt/shader-record-data.yaml", "callable/from-every-stage.yaml"}) {
     const YAML::Node original = YAML::LoadFile(root + file);
     // Every value node below the top, in pre-order.
     size_t count = 0;
@@ -160,13 +169,14 @@ TEST(ParseMessages, YamlCppExceptionsComeOutWithFileLineColumnAndField) {
         out << doc;
         const ParseResult r = parseCaseText(out.c_str(), file, "family/fuzz");
         ++parses;
-        for (const CaseError& e : r.errors) {
-          const std::string where = std::string(file) + " node " + std::to_string(target) + " := " + shape +
-                                    ": " + e.format() + "\n" + out.c_str();
+        for (const Error& e : r.errors) {
+          const std::string where = std::string(file) + " node " + std::to_string(target) +
+                                    " := " + shape + ": " + e.format() + "\n" + out.c_str();
           EXPECT_GE(e.loc.line, 1) << where;
           EXPECT_GE(e.loc.column, 1) << where;
           EXPECT_FALSE(e.loc.field.empty()) << where;
-          for (const char* leak : {"bad conversion", "yaml-cpp", "operator[]", "internal error", "bad file"})
+          for (const char* leak :
+               {"bad conversion", "yaml-cpp", "operator[]", "internal error", "bad file"})
             EXPECT_EQ(e.message.find(leak), std::string::npos) << where;
           if (::testing::Test::HasFailure()) return;
         }

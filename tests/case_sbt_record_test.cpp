@@ -10,32 +10,37 @@
 namespace rayspec {
 namespace {
 
-ParseResult parse(const std::string& text) { return parseCaseText(text, "s.yaml", "sbt/s"); }
+ParseResult parse(const std::string& text) {
+  return parseCaseText(text, "s.yaml", "sbt/s");
+}
 
 std::string allErrors(const ParseResult& r) {
   std::string s;
-  for (const CaseError& e : r.errors) s += e.format() + "\n";
+  for (const Error& e : r.errors) s += e.format() + "\n";
   return s;
 }
 
 // An error at line:column (0: any column) of field (empty: any field) whose
 // message holds text.
-bool errorAt(const ParseResult& r, int line, int column, const std::string& field, const std::string& text) {
-  for (const CaseError& e : r.errors)
+bool errorAt(const ParseResult& r, int line, int column, const std::string& field,
+             const std::string& text) {
+  for (const Error& e : r.errors)
     if (e.loc.file == "s.yaml" && e.loc.line == line && (column == 0 || e.loc.column == column) &&
         (field.empty() || e.loc.field == field) && e.message.find(text) != std::string::npos)
       return true;
   return false;
 }
 
-#define EXPECT_ERROR_AT(r, line, column, field, text)                                                         \
-  EXPECT_TRUE(errorAt(r, line, column, field, text))                                                          \
-      << "expected s.yaml:" << line << ":" << column << ": " << field << ": ..." << text << "...; got:\n" \
+#define EXPECT_ERROR_AT(r, line, column, field, text)                                    \
+  EXPECT_TRUE(errorAt(r, line, column, field, text))                                     \
+      << "expected s.yaml:" << line << ":" << column << ": " << field << ": ..." << text \
+      << "...; got:\n"                                                                   \
       << allErrors(r)
 
 // A miss shader, a hit group and a callable, each reading @READ@; raygen
 // reads @RAYGEN@; the sbt block is @SBT@ (line 15 on).
-std::string caseText(const std::string& sbt, const std::string& read = "0", const std::string& raygen_read = "0",
+std::string caseText(const std::string& sbt, const std::string& read = "0",
+                     const std::string& raygen_read = "0",
                      const std::string& raygen_data = "{uints: []}") {
   std::string s = R"(rules: [R-SBT-RECORD]
 scene:
@@ -87,20 +92,25 @@ TEST(SbtRecordShape, DefaultsAndValues) {
 }
 
 TEST(SbtRecordShape, BadValuesAreFieldErrors) {
-  EXPECT_ERROR_AT(parse(caseText("    record_data: 6")), 15, 18, "pipeline.sbt.record_data", "multiple of 4");
+  EXPECT_ERROR_AT(parse(caseText("    record_data: 6")), 15, 18, "pipeline.sbt.record_data",
+                  "multiple of 4");
   EXPECT_ERROR_AT(parse(caseText("    record_data: 36")), 15, 18, "pipeline.sbt.record_data", "");
   EXPECT_ERROR_AT(parse(caseText("    padding: 65537")), 15, 14, "pipeline.sbt.padding", "");
   EXPECT_ERROR_AT(parse(caseText("    padding: -1")), 15, 14, "pipeline.sbt.padding", "");
-  EXPECT_ERROR_AT(parse(caseText("    padding: {raygen: 32}")), 15, 15, "pipeline.sbt.padding.raygen", "unknown key");
-  EXPECT_ERROR_AT(parse(caseText("    padding: {hit: 70000}")), 15, 0, "pipeline.sbt.padding.hit", "");
+  EXPECT_ERROR_AT(parse(caseText("    padding: {raygen: 32}")), 15, 15,
+                  "pipeline.sbt.padding.raygen", "unknown key");
+  EXPECT_ERROR_AT(parse(caseText("    padding: {hit: 70000}")), 15, 0, "pipeline.sbt.padding.hit",
+                  "");
   EXPECT_ERROR_AT(parse(caseText("    stride: 64")), 15, 5, "pipeline.sbt.stride", "unknown key");
 }
 
 TEST(SbtRecordShape, RecordDataPastTheRecordIsAnErrorAtTheData) {
-  ParseResult r = parse(caseText("    record_data: 8\n    hit: [{group: 0, data: {uints: [1, 2]}}]\n"
-                                 "    miss: [{group: 0, data: {floats: [1, 2, 3]}}]"));
-  EXPECT_ERROR_AT(r, 17, 0, "pipeline.sbt.miss[0].data",
-                  "3 word(s) (12 bytes) of shader record data do not fit in pipeline.sbt.record_data (8 bytes");
+  ParseResult r =
+      parse(caseText("    record_data: 8\n    hit: [{group: 0, data: {uints: [1, 2]}}]\n    miss: "
+                     "[{group: 0, data: {floats: [1, 2, 3]}}]"));
+  EXPECT_ERROR_AT(
+      r, 17, 0, "pipeline.sbt.miss[0].data",
+      "3 word(s) (12 bytes) of shader record data do not fit in pipeline.sbt.record_data (8 bytes");
   EXPECT_EQ(r.errors.size(), 1u) << allErrors(r);  // the hit record's 2 words fit
 
   r = parse(caseText("    record_data: 0\n    callable: [{group: 0, data: {uints: [7]}}]"));
@@ -108,7 +118,8 @@ TEST(SbtRecordShape, RecordDataPastTheRecordIsAnErrorAtTheData) {
 
   // raygen's data too, wherever the sbt block stands.
   r = parse(caseText("    record_data: 4", "0", "0", "{uints: [1, 2]}"));
-  EXPECT_ERROR_AT(r, 10, 16, "pipeline.raygen_data", "2 word(s) (8 bytes) of shader record data do not fit");
+  EXPECT_ERROR_AT(r, 10, 16, "pipeline.raygen_data",
+                  "2 word(s) (8 bytes) of shader record data do not fit");
   EXPECT_TRUE(parse(caseText("    record_data: 4", "0", "0", "{uints: [1]}")).value);
 }
 
@@ -117,10 +128,12 @@ TEST(SbtRecordShape, ReadsPastTheRecordDataAreErrorsAtTheRead) {
   EXPECT_TRUE(parse(caseText("    record_data: 8", "{shader_record_uint: 1}")).value);
   ParseResult r = parse(caseText("    record_data: 4", "{shader_record_uint: 1}"));
   for (int line : {11, 12, 13})  // miss, closest-hit, callable
-    EXPECT_ERROR_AT(r, line, 0, "", "shader_record_uint(1) reads bytes 4..7 of its shader record, past "
-                                    "pipeline.sbt.record_data (4 bytes per record)");
+    EXPECT_ERROR_AT(r, line, 0, "",
+                    "shader_record_uint(1) reads bytes 4..7 of its shader record, past "
+                    "pipeline.sbt.record_data (4 bytes per record)");
   EXPECT_EQ(r.errors.size(), 3u) << allErrors(r);
-  EXPECT_NE(allErrors(r).find("pipeline.hit_groups[0].closest_hit"), std::string::npos) << allErrors(r);
+  EXPECT_NE(allErrors(r).find("pipeline.hit_groups[0].closest_hit"), std::string::npos)
+      << allErrors(r);
 
   r = parse(caseText("    record_data: 0", "0", "{uint: {shader_record_float: 0}}"));
   EXPECT_ERROR_AT(r, 9, 0, "", "shader_record_float(0) reads bytes 0..3");

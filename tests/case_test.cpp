@@ -1,32 +1,35 @@
 // Tests of the case reader: values of good cases, and errors (line + field)
 // for bad ones.
-#include <bit>
 #include <gtest/gtest.h>
+#include <bit>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 
-#include "suite_cases.h"
 #include "case/camera_rays.h"
 #include "case/parse_case.h"
 #include "case/transform.h"
+#include "suite_cases.h"
 
 namespace rayspec {
 namespace {
 
-ParseResult parse(const std::string& text) { return parseCaseText(text, "t.yaml", "family/t"); }
+ParseResult parse(const std::string& text) {
+  return parseCaseText(text, "t.yaml", "family/t");
+}
 
 std::string allErrors(const ParseResult& r) {
   std::string s;
-  for (const CaseError& e : r.errors) s += e.format() + "\n";
+  for (const Error& e : r.errors) s += e.format() + "\n";
   return s;
 }
 
 // Expects an error on `line` whose field contains `field` and message contains `text`.
-void expectError(const ParseResult& r, int line, const std::string& field, const std::string& text = "") {
+void expectError(const ParseResult& r, int line, const std::string& field,
+                 const std::string& text = "") {
   EXPECT_FALSE(r.value.has_value());
-  for (const CaseError& e : r.errors)
+  for (const Error& e : r.errors)
     if (e.loc.line == line && e.loc.field.find(field) != std::string::npos &&
         e.message.find(text) != std::string::npos)
       return;
@@ -176,11 +179,14 @@ TEST(ParseCase, CameraRayDirections2x2) {
   // fov 90, aspect 1: pixel centres at +-0.5 on the image plane at distance 1;
   // row 0 is the top (+y).
   const float s = static_cast<float>(1 / std::sqrt(1.5));
-  const float expect[4][3] = {{-0.5f * s, 0.5f * s, -s}, {0.5f * s, 0.5f * s, -s},
-                              {-0.5f * s, -0.5f * s, -s}, {0.5f * s, -0.5f * s, -s}};
+  const float expect[4][3] = {{-0.5f * s, 0.5f * s, -s},
+                              {0.5f * s, 0.5f * s, -s},
+                              {-0.5f * s, -0.5f * s, -s},
+                              {0.5f * s, -0.5f * s, -s}};
   for (int i = 0; i < 4; ++i) {
     EXPECT_EQ(rays[i].origin, (Vec3{0, 0, 5}));
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(rays[i].direction[k], expect[i][k], 1e-7) << i << "," << k;
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(rays[i].direction[k], expect[i][k], 1e-7) << i << "," << k;
   }
 }
 
@@ -254,7 +260,8 @@ pipeline: {miss: [[]], hit_groups: [{}]}
   EXPECT_EQ(g.vertices[0], (Vec3{-1, -1.5f, -1}));
   EXPECT_EQ(g.vertices[11], (Vec3{1, 1.5f, -1}));
   // primitive 0 is counter-clockwise seen from +z
-  const Vec3 &a = g.vertices[g.indices[0]], &b = g.vertices[g.indices[1]], &c = g.vertices[g.indices[2]];
+  const Vec3 &a = g.vertices[g.indices[0]], &b = g.vertices[g.indices[1]],
+             &c = g.vertices[g.indices[2]];
   const float nz = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
   EXPECT_GT(nz, 0);
 }
@@ -366,8 +373,9 @@ rays:
   expectError(r, 3, "scene.instancess", "unknown key");
   expectError(r, 5, "rays.list[0].tmaxx", "unknown key");
   EXPECT_EQ(r.errors.size(), 2u) << allErrors(r);
-  EXPECT_EQ(r.errors[0].format(),
-            "t.yaml:3:3: scene.instancess: unknown key 'instancess' (expected one of: blas, instances)");
+  EXPECT_EQ(
+      r.errors[0].format(),
+      "t.yaml:3:3: scene.instancess: unknown key 'instancess' (expected one of: blas, instances)");
 }
 
 const char* kScene = R"(rules: [R-MASK]
@@ -458,13 +466,15 @@ TEST(ParseCaseErrors, IgnoreInClosestHit) {
   s.replace(s.find("BODY"), 4, "ignore");
   ParseResult r = parse(s);
   ASSERT_EQ(r.errors.size(), 1u) << allErrors(r);
-  expectError(r, 10, "pipeline.hit_groups[0].closest_hit[1]", "'ignore' is not allowed in closest_hit");
+  expectError(r, 10, "pipeline.hit_groups[0].closest_hit[1]",
+              "'ignore' is not allowed in closest_hit");
 }
 
 TEST(ParseCaseErrors, TypeErrorInOp) {
   std::string s = kProgramCase;
   s.replace(s.find("[count: miss]"), 13, "[]");
-  s.replace(s.find("BODY"), 4, "if: {and: [{odd: hit_t}, true]}\n          then: [count: closesthit]");
+  s.replace(s.find("BODY"), 4,
+            "if: {and: [{odd: hit_t}, true]}\n          then: [count: closesthit]");
   ParseResult r = parse(s);
   ASSERT_EQ(r.errors.size(), 1u) << allErrors(r);
   expectError(r, 10, "pipeline.hit_groups[0].closest_hit[1].if.and[0]", "need Uint");
@@ -514,12 +524,16 @@ TEST(ParseCaseErrors, MissingAndMisc) {
   expectError(r, 1, "rays", "missing");
   r = parse("rules: [not-a-rule]\nrays: {list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]}\n");
   expectError(r, 1, "rules[0]", "not a rule label");
-  r = parse("rules: [R-MASK]\nrays: {camera: {size: [2, 2], origin: [0, 0, 0], look_at: [0, 0, 0], fov: 40}}\n");
+  r = parse(
+      "rules: [R-MASK]\nrays: {camera: {size: [2, 2], origin: [0, 0, 0], look_at: [0, 0, 0], fov: "
+      "40}}\n");
   expectError(r, 2, "rays.camera", "degenerate");
-  r = parse("rules: [R-MASK]\nrays: {list: [{origin: [0, 0, 1], direction: [0, 0, -1]}], grid: {}}\n");
+  r = parse(
+      "rules: [R-MASK]\nrays: {list: [{origin: [0, 0, 1], direction: [0, 0, -1]}], grid: {}}\n");
   expectError(r, 2, "rays", "exactly one of camera, grid, list or aim");
-  r = parse("rules: [R-MASK]\nrays: {list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]}\n"
-            "outputs: {per_ray: [miss_runs, colour], images: [{name: x, from: hit}]}\n");
+  r = parse(
+      "rules: [R-MASK]\nrays: {list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]}\noutputs: "
+      "{per_ray: [miss_runs, colour], images: [{name: x, from: hit}]}\n");
   expectError(r, 3, "outputs.per_ray[0]", "automatic");
   expectError(r, 3, "outputs.per_ray[1]", "unknown per-ray field");
   expectError(r, 3, "outputs.images[0].from", "not declared");
@@ -557,7 +571,7 @@ TEST(ParseCaseErrors, NeverCrashesOnMangledInput) {
     ParseResult a = parse(prefix), b = parse(without);
     EXPECT_TRUE(a.value || !a.errors.empty());
     EXPECT_TRUE(b.value || !b.errors.empty());
-    for (const CaseError& e : b.errors) EXPECT_FALSE(e.message.empty());
+    for (const Error& e : b.errors) EXPECT_FALSE(e.message.empty());
   }
 }
 
@@ -583,7 +597,8 @@ TEST(ParseCaseFile, NameIsPathUnderRoot) {
   const fs::path file = dir / "ignore-odd.yaml";
   {
     std::ofstream out(file);
-    out << "rules: [R-IGNORE]\nrays: {list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]}\npipeline: {miss: [[]]}\n";
+    out << "rules: [R-IGNORE]\nrays: {list: [{origin: [0, 0, 1], direction: [0, 0, "
+           "-1]}]}\npipeline: {miss: [[]]}\n";
   }
   ParseResult r = parseCaseFile(file.string(), dir.parent_path().string());
   ASSERT_TRUE(r.value) << allErrors(r);
@@ -652,7 +667,8 @@ std::string withCounters(const std::string& counters) {
 TEST(ParseCase, CounterModesAreDeclaredAsNameModePairs) {
   const ParseResult r = parse(withCounters("[miss, {closesthit: exact}, {reported: at_least}]"));
   ASSERT_TRUE(r.value) << allErrors(r);
-  EXPECT_EQ(r.value->outputs.counters, (std::vector<std::string>{"miss", "closesthit", "reported"}));
+  EXPECT_EQ(r.value->outputs.counters,
+            (std::vector<std::string>{"miss", "closesthit", "reported"}));
   EXPECT_EQ(r.value->outputs.counter_modes.at("reported"), "at_least");
   EXPECT_EQ(r.value->outputs.counter_modes.at("closesthit"), "exact");
   EXPECT_EQ(r.value->outputs.counter_modes.count("miss"), 0u);
@@ -681,7 +697,8 @@ std::string withImage(const std::string& image) {
 }
 
 TEST(ParseCase, ImageThresholds) {
-  const ParseResult r = parse(withImage("{name: tol, from: hit_t, tolerance: 4, max_failing_pixels: 2}"));
+  const ParseResult r =
+      parse(withImage("{name: tol, from: hit_t, tolerance: 4, max_failing_pixels: 2}"));
   ASSERT_TRUE(r.value) << allErrors(r);
   const ImageOutput& im = r.value->outputs.images.front();
   EXPECT_EQ(im.name, "tol");
@@ -689,7 +706,8 @@ TEST(ParseCase, ImageThresholds) {
   EXPECT_EQ(im.max_failing_pixels, 2u);
   const ParseResult bad = parse(withImage("{name: tol, from: hit_t, tolerance: 0}"));
   EXPECT_FALSE(bad.value);
-  EXPECT_NE(allErrors(bad).find("tolerance scale must be above 0"), std::string::npos) << allErrors(bad);
+  EXPECT_NE(allErrors(bad).find("tolerance scale must be above 0"), std::string::npos)
+      << allErrors(bad);
 }
 
 }  // namespace

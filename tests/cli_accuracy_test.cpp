@@ -11,14 +11,27 @@ namespace {
 
 using cli::kBin;
 
-const char* const kFields[] = {"set", "source", "kind", "cases", "launch_rays", "rays", "trace_seconds",
-                               "ms_per_mray", "disagreeing_rays", "disagreeing_per_mray", "leaks", "double_hits",
-                               "other_primitive", "extra_hits", "t_error_ulp"};
+const char* const kFields[] = {"set",
+                               "source",
+                               "kind",
+                               "cases",
+                               "launch_rays",
+                               "rays",
+                               "trace_seconds",
+                               "ms_per_mray",
+                               "disagreeing_rays",
+                               "disagreeing_per_mray",
+                               "leaks",
+                               "double_hits",
+                               "other_primitive",
+                               "extra_hits",
+                               "t_error_ulp"};
 const char* const kTFields[] = {"rays", "median", "p99", "max", "histogram"};
 const std::string kSets = " --ordinary 'anyhit/ignore-*' --hard 'watertight/*'";
 
 // The row of one set and source; fails the test unless there is exactly one.
-nlohmann::json rowOf(const nlohmann::json& report, const std::string& set, const std::string& source) {
+nlohmann::json rowOf(const nlohmann::json& report, const std::string& set,
+                     const std::string& source) {
   nlohmann::json found;
   int n = 0;
   for (const nlohmann::json& r : report["rows"])
@@ -34,7 +47,8 @@ void expectRow(const nlohmann::json& report, const std::string& set, const std::
   const nlohmann::json r = rowOf(report, set, source);
   if (r.is_null()) return;
   for (const char* f : kFields) EXPECT_TRUE(r.contains(f)) << set << " / " << source << ": " << f;
-  for (const char* f : kTFields) EXPECT_TRUE(r["t_error_ulp"].contains(f)) << set << " / " << source << ": " << f;
+  for (const char* f : kTFields)
+    EXPECT_TRUE(r["t_error_ulp"].contains(f)) << set << " / " << source << ": " << f;
   EXPECT_GT(r["rays"].get<uint64_t>(), 0u) << set << " / " << source;
   EXPECT_GT(r["ms_per_mray"].get<double>(), 0.0) << set << " / " << source;
   if (source == "model exact") {
@@ -44,7 +58,8 @@ void expectRow(const nlohmann::json& report, const std::string& set, const std::
 
 TEST(Accuracy, WritesTheReportWithARowPerSetTierAndDevice) {
   const std::string out = cli::fresh("accuracy");
-  ASSERT_EQ(cli::sh(kBin + " accuracy" + kSets + " --strict-validation --out " + out, out + ".log"), 0)
+  ASSERT_EQ(cli::sh(kBin + " accuracy" + kSets + " --strict-validation --out " + out, out + ".log"),
+            0)
       << cli::slurp(out + ".log");
   for (const char* f : {"accuracy.txt", "accuracy.json", "accuracy.png"})
     EXPECT_GT(std::filesystem::file_size(out + "/" + f), 0u) << f;
@@ -63,7 +78,8 @@ TEST(Accuracy, WritesTheReportWithARowPerSetTierAndDevice) {
   // The saved device bundles, compared as another machine's.
   const std::string saved = cli::fresh("accuracy-saved");
   ASSERT_EQ(cli::sh(kBin + " accuracy" + kSets + " --no-device --device-results " + out +
-                        "/runs/ordinary/exact --device-results " + out + "/runs/hard/exact --out " + saved,
+                        "/runs/ordinary/exact --device-results " + out + "/runs/hard/exact --out " +
+                        saved,
                     saved + ".log"),
             0)
       << cli::slurp(saved + ".log");
@@ -72,12 +88,15 @@ TEST(Accuracy, WritesTheReportWithARowPerSetTierAndDevice) {
     expectRow(again, set, "llvmpipe");
     EXPECT_EQ(rowOf(again, set, "llvmpipe")["kind"], "device");
   }
-  EXPECT_EQ(rowOf(again, "hard", "llvmpipe")["double_hits"], rowOf(report, "hard", "llvmpipe")["double_hits"]);
+  EXPECT_EQ(rowOf(again, "hard", "llvmpipe")["double_hits"],
+            rowOf(report, "hard", "llvmpipe")["double_hits"]);
 }
 
 TEST(Accuracy, NoCaseInEitherSetIsASetupError) {
   const std::string out = cli::fresh("accuracy-none");
-  EXPECT_EQ(cli::sh(kBin + " accuracy --ordinary 'nothing/*' --hard 'none/*' --out " + out, out + ".log"), 2)
+  EXPECT_EQ(
+      cli::sh(kBin + " accuracy --ordinary 'nothing/*' --hard 'none/*' --out " + out, out + ".log"),
+      2)
       << cli::slurp(out + ".log");
 }
 

@@ -5,10 +5,10 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <sstream>
-#include <vector>
 #include <regex>
 #include <set>
+#include <sstream>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -27,9 +27,11 @@ void dropTimings(nlohmann::json& j) {
   if (j.is_object()) {
     for (auto it = j.begin(); it != j.end();) {
       const std::string& key = it.key();
-      if (key == "seconds" || key.ends_with("_seconds") || key == "started" || key == "cost" || key == "accounted")
+      if (key == "seconds" || key.ends_with("_seconds") || key == "started" || key == "cost" ||
+          key == "accounted")
         it = j.erase(it);
-      else dropTimings(*it++);
+      else
+        dropTimings(*it++);
     }
   } else if (j.is_array()) {
     for (auto& e : j) dropTimings(e);

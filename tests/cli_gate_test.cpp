@@ -38,12 +38,15 @@ TEST(Gate, BaselineRoundTrip) {
   const std::string run = kBin + " run --no-validation" + kThree + " --baseline " + baseline;
 
   // The known bug, as the baseline says: exit 0, ExpectedFail.
-  ASSERT_EQ(sh(run + " --plant-fault shift-t --plant-fault-in " + kB + " --out " + dir + "/known", dir + "/known.txt"), 0)
+  ASSERT_EQ(sh(run + " --plant-fault shift-t --plant-fault-in " + kB + " --out " + dir + "/known",
+               dir + "/known.txt"),
+            0)
       << slurp(dir + "/known.txt");
   auto status = readDeqpCsv(dir + "/known/results.csv");
   EXPECT_EQ(status[kB], "ExpectedFail");
   EXPECT_EQ(status[kA], "Pass");
-  EXPECT_EQ(slurp(dir + "/known/failures.csv").find(kB), std::string::npos) << "an expected failure is not new";
+  EXPECT_EQ(slurp(dir + "/known/failures.csv").find(kB), std::string::npos)
+      << "an expected failure is not new";
 
   // A new failure beside it (the fault in kB and kC, not kA): exit 1, re-run
   // once (it fails again), in failures.csv.
@@ -54,7 +57,8 @@ TEST(Gate, BaselineRoundTrip) {
   status = readDeqpCsv(dir + "/new/results.csv");
   EXPECT_EQ(status[kB], "ExpectedFail");
   EXPECT_EQ(status[kC], "Fail");
-  EXPECT_TRUE(fs::exists(dir + "/new/" + kC + "/rerun/device/results.json")) << "the new failure was not re-run";
+  EXPECT_TRUE(fs::exists(dir + "/new/" + kC + "/rerun/device/results.json"))
+      << "the new failure was not re-run";
   EXPECT_FALSE(fs::exists(dir + "/new/" + kB + "/rerun")) << "an expected failure is not re-run";
   const std::string failures = slurp(dir + "/new/failures.csv");
   EXPECT_NE(failures.find(kC + ",Fail"), std::string::npos) << failures;
@@ -62,9 +66,11 @@ TEST(Gate, BaselineRoundTrip) {
   EXPECT_NE(failures.find("again"), std::string::npos) << failures;
 
   // The bug fixed: an unexpected pass, exit 1, listed to be removed.
-  ASSERT_EQ(sh(run + " --out " + dir + "/fixed", dir + "/fixed.txt"), 1) << slurp(dir + "/fixed.txt");
+  ASSERT_EQ(sh(run + " --out " + dir + "/fixed", dir + "/fixed.txt"), 1)
+      << slurp(dir + "/fixed.txt");
   EXPECT_EQ(readDeqpCsv(dir + "/fixed/results.csv")[kB], "UnexpectedImprovement(Pass)");
-  EXPECT_NE(slurp(dir + "/fixed.txt").find("UNEXPECTED PASS"), std::string::npos) << slurp(dir + "/fixed.txt");
+  EXPECT_NE(slurp(dir + "/fixed.txt").find("UNEXPECTED PASS"), std::string::npos)
+      << slurp(dir + "/fixed.txt");
   EXPECT_NE(slurp(dir + "/fixed/failures.csv").find(kB + ",Pass"), std::string::npos);
   const nlohmann::json summary = nlohmann::json::parse(slurp(dir + "/fixed/summary.json"));
   EXPECT_EQ(summary["fails_run"], nlohmann::json::array({kB}));
@@ -77,27 +83,34 @@ TEST(Gate, FlakesAndSkips) {
   const std::string baseline = write(dir + "/driver.csv", "# nothing known\n");
   const std::string run = kBin + " run --no-validation" + kThree + " --baseline " + baseline;
 
-  ASSERT_EQ(sh(run + " --plant-fault crash-once --plant-fault-in " + kC + " --out " + dir + "/once", dir + "/once.txt"), 0)
+  ASSERT_EQ(sh(run + " --plant-fault crash-once --plant-fault-in " + kC + " --out " + dir + "/once",
+               dir + "/once.txt"),
+            0)
       << slurp(dir + "/once.txt");
   EXPECT_EQ(readDeqpCsv(dir + "/once/results.csv")[kC], "Flake");
   EXPECT_NE(slurp(dir + "/once.txt").find("FLAKE"), std::string::npos) << slurp(dir + "/once.txt");
   EXPECT_NE(slurp(dir + "/once/failures.csv").find(kC + ",Crash"), std::string::npos);
 
   // The same fault every time is no flake: it fails (the planted fault proves the re-run can fail).
-  ASSERT_EQ(sh(run + " --plant-fault crash --plant-fault-in " + kC + " --out " + dir + "/always", dir + "/always.txt"), 1)
+  ASSERT_EQ(sh(run + " --plant-fault crash --plant-fault-in " + kC + " --out " + dir + "/always",
+               dir + "/always.txt"),
+            1)
       << slurp(dir + "/always.txt");
   EXPECT_EQ(readDeqpCsv(dir + "/always/results.csv")[kC], "Crash");
 
   // Named as a flake (the file beside the baseline), the crash does not fail the run.
   write(dir + "/driver-flakes.txt", "^culling/cull-op  # crashes now and then\n");
   write(dir + "/driver-skips.txt", "^results/\n");
-  ASSERT_EQ(sh(run + " --plant-fault crash --plant-fault-in " + kC + " --out " + dir + "/known", dir + "/known.txt"), 0)
+  ASSERT_EQ(sh(run + " --plant-fault crash --plant-fault-in " + kC + " --out " + dir + "/known",
+               dir + "/known.txt"),
+            0)
       << slurp(dir + "/known.txt");
   const auto status = readDeqpCsv(dir + "/known/results.csv");
   EXPECT_EQ(status.at(kC), "KnownFlake");
   EXPECT_EQ(status.at(kA), "Skip");
   EXPECT_FALSE(fs::exists(dir + "/known/" + kA)) << "a skipped case ran";
-  EXPECT_NE(slurp(dir + "/known.txt").find("Skips: " + dir + "/driver-skips.txt (1 patterns)"), std::string::npos)
+  EXPECT_NE(slurp(dir + "/known.txt").find("Skips: " + dir + "/driver-skips.txt (1 patterns)"),
+            std::string::npos)
       << slurp(dir + "/known.txt");
   // A skipped case is NotSupported, never a pass.
   const nlohmann::json summary = nlohmann::json::parse(slurp(dir + "/known/summary.json"));
@@ -110,10 +123,11 @@ TEST(Gate, FlakesAndSkips) {
 TEST(Shards, ShardsMergeIntoTheWholeRun) {
   const std::string dir = fresh("shards");
   const std::string run = kBin + " run --no-validation" + kThree;
-  ASSERT_EQ(sh(run + " --shard 1/2 --out " + dir + "/s1", dir + "/s1.txt"), 0) << slurp(dir + "/s1.txt");
+  ASSERT_EQ(sh(run + " --shard 1/2 --out " + dir + "/s1", dir + "/s1.txt"), 0)
+      << slurp(dir + "/s1.txt");
   const std::string status_file = dir + "/shard-status";
-  ASSERT_EQ(sh("GTEST_TOTAL_SHARDS=2 GTEST_SHARD_INDEX=1 GTEST_SHARD_STATUS_FILE=" + status_file + " " + run +
-                   " --out " + dir + "/s2",
+  ASSERT_EQ(sh("GTEST_TOTAL_SHARDS=2 GTEST_SHARD_INDEX=1 GTEST_SHARD_STATUS_FILE=" + status_file +
+                   " " + run + " --out " + dir + "/s2",
                dir + "/s2.txt"),
             0)
       << slurp(dir + "/s2.txt");
@@ -121,9 +135,12 @@ TEST(Shards, ShardsMergeIntoTheWholeRun) {
   const auto s1 = readDeqpCsv(dir + "/s1/results.csv"), s2 = readDeqpCsv(dir + "/s2/results.csv");
   EXPECT_EQ(s1.size(), 2u);
   EXPECT_EQ(s2.size(), 1u);
-  for (const auto& [name, status] : s1) EXPECT_EQ(s2.count(name), 0u) << name << " is in both shards";
+  for (const auto& [name, status] : s1)
+    EXPECT_EQ(s2.count(name), 0u) << name << " is in both shards";
 
-  ASSERT_EQ(sh(kBin + " merge " + dir + "/s1 " + dir + "/s2 --out " + dir + "/all", dir + "/merge.txt"), 0)
+  ASSERT_EQ(
+      sh(kBin + " merge " + dir + "/s1 " + dir + "/s2 --out " + dir + "/all", dir + "/merge.txt"),
+      0)
       << slurp(dir + "/merge.txt");
   const auto all = readDeqpCsv(dir + "/all/results.csv");
   EXPECT_EQ(all.size(), 3u);
@@ -134,8 +151,11 @@ TEST(Shards, ShardsMergeIntoTheWholeRun) {
   EXPECT_FALSE(summary["interrupted"].get<bool>());
 
   // A shard twice is refused, naming the case.
-  EXPECT_EQ(sh(kBin + " merge " + dir + "/s1 " + dir + "/s1 --out " + dir + "/twice", dir + "/twice.txt"), 2);
-  EXPECT_NE(slurp(dir + "/twice.txt").find("is in both"), std::string::npos) << slurp(dir + "/twice.txt");
+  EXPECT_EQ(
+      sh(kBin + " merge " + dir + "/s1 " + dir + "/s1 --out " + dir + "/twice", dir + "/twice.txt"),
+      2);
+  EXPECT_NE(slurp(dir + "/twice.txt").find("is in both"), std::string::npos)
+      << slurp(dir + "/twice.txt");
   EXPECT_EQ(sh(run + " --shard 4/3 --out " + dir + "/bad", dir + "/bad.txt"), 2);
   EXPECT_NE(slurp(dir + "/bad.txt").find("I/N"), std::string::npos) << slurp(dir + "/bad.txt");
 }
@@ -148,12 +168,15 @@ TEST(Shards, GitLabMatrixRecipeMergesIntoTheWholeRun) {
   for (int node = 1; node <= 2; ++node) {
     const std::string n = std::to_string(node);
     // The job's environment, as GitLab sets it.
-    ASSERT_EQ(sh("cd " + dir + " && unset GTEST_TOTAL_SHARDS GTEST_SHARD_INDEX && export CI_NODE_TOTAL=2 CI_NODE_INDEX=" +
+    ASSERT_EQ(sh("cd " + dir +
+                     " && unset GTEST_TOTAL_SHARDS GTEST_SHARD_INDEX && export CI_NODE_TOTAL=2 "
+                     "CI_NODE_INDEX=" +
                      n + " && " + run + " --out shard-$CI_NODE_INDEX",
                  dir + "/node" + n + ".txt"),
               0)
         << slurp(dir + "/node" + n + ".txt");
-    EXPECT_NE(slurp(dir + "/node" + n + ".txt").find("Shard: shard " + n + " of 2"), std::string::npos)
+    EXPECT_NE(slurp(dir + "/node" + n + ".txt").find("Shard: shard " + n + " of 2"),
+              std::string::npos)
         << slurp(dir + "/node" + n + ".txt");
   }
   ASSERT_EQ(sh("cd " + dir + " && " + kBin + " merge shard-* --out all", dir + "/merge.txt"), 0)

@@ -18,14 +18,18 @@ namespace cli {
 inline const std::string kCases = RAYSPEC_SOURCE_DIR "/cases/";
 inline const std::string kBin = RAYSPEC_BIN;
 
-inline std::string caseArg(const std::string& name) { return " --case " + kCases + name + ".yaml"; }
+inline std::string caseArg(const std::string& name) {
+  return " --case " + kCases + name + ".yaml";
+}
 
 // Runs a shell command; its output goes to log. Returns the exit status.
 // GoogleTest's sharding variables (set when this test program is sharded)
 // are not passed on: rayspec run would shard itself by them.
 inline int sh(const std::string& command, const std::string& log) {
-  const int s = std::system(("unset GTEST_TOTAL_SHARDS GTEST_SHARD_INDEX GTEST_SHARD_STATUS_FILE; " + command + " > " +
-                             log + " 2>&1").c_str());
+  const int s =
+      std::system(("unset GTEST_TOTAL_SHARDS GTEST_SHARD_INDEX GTEST_SHARD_STATUS_FILE; " +
+                   command + " > " + log + " 2>&1")
+                      .c_str());
   return WIFEXITED(s) ? WEXITSTATUS(s) : -1;
 }
 
@@ -47,14 +51,16 @@ inline std::string fresh(const std::string& name) {
 // results.csv as deqp-runner reads it: name,Status,duration per line, no header.
 inline std::map<std::string, std::string> readDeqpCsv(const std::string& path) {
   std::map<std::string, std::string> status;
-  const std::regex line(R"(^([^,\s]+),(Pass|Fail|Warn|Skip|Crash|Timeout|Flake|ExpectedFail|UnexpectedPass|UnexpectedImprovement\((?:Pass|Skip|Warn)\)|KnownFlake|Missing),([0-9]+(\.[0-9]+)?([eE][-+]?[0-9]+)?)$)");
+  const std::regex line(
+      R"(^([^,\s]+),(Pass|Fail|Warn|Skip|Crash|Timeout|Flake|ExpectedFail|UnexpectedPass|UnexpectedImprovement\((?:Pass|Skip|Warn)\)|KnownFlake|Missing),([0-9]+(\.[0-9]+)?([eE][-+]?[0-9]+)?)$)");
   std::ifstream in(path);
   std::string text;
   int n = 0;
   while (std::getline(in, text)) {
     ++n;
     std::smatch m;
-    EXPECT_TRUE(std::regex_match(text, m, line)) << path << ":" << n << ": not deqp-runner CSV: '" << text << "'";
+    EXPECT_TRUE(std::regex_match(text, m, line))
+        << path << ":" << n << ": not deqp-runner CSV: '" << text << "'";
     if (!m.empty()) status[m[1]] = m[2];
   }
   return status;

@@ -23,7 +23,8 @@ const std::string kOneCase = "results/miss-xor-closest-hit";
 
 // lavapipe's manifest where Mesa installs it (lvp_icd.json or lvp_icd.x86_64.json).
 std::string lavapipeManifest() {
-  for (const char* dir : {"/usr/share/vulkan/icd.d", "/usr/local/share/vulkan/icd.d", "/etc/vulkan/icd.d"}) {
+  for (const char* dir :
+       {"/usr/share/vulkan/icd.d", "/usr/local/share/vulkan/icd.d", "/etc/vulkan/icd.d"}) {
     std::error_code ec;
     for (const fs::directory_entry& e : fs::directory_iterator(dir, ec))
       if (e.path().filename().string().rfind("lvp_icd", 0) == 0) return e.path().string();
@@ -34,7 +35,8 @@ std::string lavapipeManifest() {
 // A manifest whose driver library does not exist.
 std::string brokenManifest(const std::string& dir) {
   const std::string path = dir + "/broken_icd.json";
-  std::ofstream(path) << R"({"file_format_version": "1.0.0", "ICD": {"library_path": "./libnosuch_vulkan.so", "api_version": "1.3.0"}})";
+  std::ofstream(path)
+      << R"({"file_format_version": "1.0.0", "ICD": {"library_path": "./libnosuch_vulkan.so", "api_version": "1.3.0"}})";
   return path;
 }
 
@@ -60,7 +62,8 @@ TEST(Icd, RunOnLavapipeByItsManifest) {
   const std::string out = fresh("icd-run");
   // The user's own variable points at a driver that cannot load: --icd wins and says so.
   const int rc = sh("VK_DRIVER_FILES=" + brokenManifest(out) + " " + kBin + " run --icd " + lvp +
-                        " --device llvmpipe --strict-validation" + caseArg(kOneCase) + " --out " + out + "/run",
+                        " --device llvmpipe --strict-validation" + caseArg(kOneCase) + " --out " +
+                        out + "/run",
                     out + "/log");
   const std::string log = slurp(out + "/log");
   EXPECT_EQ(rc, 0) << log;
@@ -78,7 +81,8 @@ TEST(Icd, RunNamesTheManifestItFound) {
   const std::string lvp = lavapipeManifest();
   const std::string out = fresh("icd-found");
   for (const char* isolation : {"", " --no-isolation"}) {
-    EXPECT_EQ(sh(kBin + " run --no-validation --no-model" + isolation + caseArg(kOneCase) + " --out " + out + "/run",
+    EXPECT_EQ(sh(kBin + " run --no-validation --no-model" + isolation + caseArg(kOneCase) +
+                     " --out " + out + "/run",
                  out + "/log"),
               77);  // the device alone, one case: nothing compared (ctest's skip)
     const std::string log = slurp(out + "/log");
@@ -88,7 +92,8 @@ TEST(Icd, RunNamesTheManifestItFound) {
 
 TEST(Icd, MissingManifestIsASetupError) {
   const std::string out = fresh("icd-missing");
-  for (const std::string& command : {" run" + caseArg(kOneCase) + " --out " + out + "/run", std::string(" devices")}) {
+  for (const std::string& command :
+       {" run" + caseArg(kOneCase) + " --out " + out + "/run", std::string(" devices")}) {
     EXPECT_EQ(sh(kBin + command + " --icd /nonexistent.json", out + "/log"), 2) << command;
     const std::string log = slurp(out + "/log");
     EXPECT_NE(log.find("ICD manifest /nonexistent.json: no such file"), std::string::npos) << log;
@@ -100,17 +105,25 @@ TEST(Icd, DriverThatCannotLoad) {
   const std::string out = fresh("icd-broken");
   const std::string broken = brokenManifest(out);
   for (const char* isolation : {"", " --no-isolation"}) {
-    EXPECT_EQ(sh(kBin + " run --icd " + broken + isolation + caseArg(kOneCase) + " --out " + out + "/run", out + "/log"), 2);
+    EXPECT_EQ(
+        sh(kBin + " run --icd " + broken + isolation + caseArg(kOneCase) + " --out " + out + "/run",
+           out + "/log"),
+        2);
     const std::string log = slurp(out + "/log");
     EXPECT_NE(log.find("no device to run on"), std::string::npos) << log;
-    EXPECT_NE(log.find("ICD " + broken + ": the driver library " + out + "/libnosuch_vulkan.so could not be loaded"),
-              std::string::npos) << log;
+    EXPECT_NE(log.find("ICD " + broken + ": the driver library " + out +
+                       "/libnosuch_vulkan.so could not be loaded"),
+              std::string::npos)
+        << log;
   }
   EXPECT_EQ(sh(kBin + " devices --icd " + broken, out + "/log"), 1);
   const std::string log = slurp(out + "/log");
-  EXPECT_NE(log.find("ICD " + broken + " (library ./libnosuch_vulkan.so"), std::string::npos) << log;
-  EXPECT_NE(log.find("NOT USABLE: the driver library " + out + "/libnosuch_vulkan.so could not be loaded"),
-            std::string::npos) << log;
+  EXPECT_NE(log.find("ICD " + broken + " (library ./libnosuch_vulkan.so"), std::string::npos)
+      << log;
+  EXPECT_NE(log.find("NOT USABLE: the driver library " + out +
+                     "/libnosuch_vulkan.so could not be loaded"),
+            std::string::npos)
+      << log;
   EXPECT_NE(log.find("No usable device"), std::string::npos) << log;
 }
 
@@ -128,8 +141,10 @@ TEST(Icd, SeveralManifests) {
 
 TEST(Icd, NoSuchDeviceNamesTheDevicesThere) {
   const std::string out = fresh("icd-nosuch");
-  EXPECT_EQ(sh(kBin + " run --no-validation --icd " + lavapipeManifest() + " --device nosuch" + caseArg(kOneCase) +
-                   " --out " + out + "/run", out + "/log"), 2);
+  EXPECT_EQ(sh(kBin + " run --no-validation --icd " + lavapipeManifest() + " --device nosuch" +
+                   caseArg(kOneCase) + " --out " + out + "/run",
+               out + "/log"),
+            2);
   const std::string log = slurp(out + "/log");
   EXPECT_NE(log.find("'nosuch'"), std::string::npos) << log;
   EXPECT_NE(log.find("[0] llvmpipe"), std::string::npos) << log;

@@ -70,13 +70,17 @@ Folder setUp(const std::string& name) {
 
 TEST(Move, BothSidesRunTheMovedCaseAndAFaultStillFails) {
   const Folder f = setUp("move");
-  const std::string run = kBin + " run --no-validation --cases " + f.cases + " --records-csv --move=-y,x,z,2,-4,8";
-  ASSERT_EQ(sh(run + " --out " + f.dir + "/moved", f.dir + "/moved.txt"), 0) << slurp(f.dir + "/moved.txt");
-  EXPECT_NE(slurp(f.dir + "/moved.txt").find("Moved: every case by the rigid motion -y,x,z,2,-4,8"), std::string::npos);
+  const std::string run =
+      kBin + " run --no-validation --cases " + f.cases + " --records-csv --move=-y,x,z,2,-4,8";
+  ASSERT_EQ(sh(run + " --out " + f.dir + "/moved", f.dir + "/moved.txt"), 0)
+      << slurp(f.dir + "/moved.txt");
+  EXPECT_NE(slurp(f.dir + "/moved.txt").find("Moved: every case by the rigid motion -y,x,z,2,-4,8"),
+            std::string::npos);
   auto status = readDeqpCsv(f.dir + "/moved/results.csv");
   EXPECT_EQ(status["move/world-origin"], "Pass");
   EXPECT_EQ(status["move/own-ray"], "Skip");  // NotSupported
-  EXPECT_NE(slurp(f.dir + "/moved.txt").find("a trace gives its own origin or direction"), std::string::npos);
+  EXPECT_NE(slurp(f.dir + "/moved.txt").find("a trace gives its own origin or direction"),
+            std::string::npos);
   // (0.25, 0.25, 1) moved: (-0.25 + 2, 0.25 - 4, 1 + 8); the hit point on z = 0 goes to z = 8.
   for (const char* side : {"device", "model"}) {
     const std::string csv = slurp(f.dir + "/moved/move/world-origin/" + side + "/records.csv");
@@ -94,31 +98,35 @@ TEST(Move, BothSidesRunTheMovedCaseAndAFaultStillFails) {
 TEST(Move, ANotMovedCaseIsNeitherAPassNorAnUnexpectedPass) {
   const Folder f = setUp("move-baseline");
   const std::string baseline = write(f.dir + "/driver.csv", "move/own-ray,Fail\n");
-  ASSERT_EQ(sh(kBin + " run --no-validation --cases " + f.cases + " --move=x,-y,-z --baseline " + baseline + " --out " +
-                   f.dir + "/run",
+  ASSERT_EQ(sh(kBin + " run --no-validation --cases " + f.cases + " --move=x,-y,-z --baseline " +
+                   baseline + " --out " + f.dir + "/run",
                f.dir + "/run.txt"),
             0)
       << slurp(f.dir + "/run.txt");
   EXPECT_EQ(readDeqpCsv(f.dir + "/run/results.csv")["move/own-ray"], "Skip");
-  EXPECT_EQ(sh(kBin + " run --no-validation --cases " + f.cases + " --move=x,y --out " + f.dir + "/bad",
-               f.dir + "/bad.txt"),
-            2);
-  EXPECT_NE(slurp(f.dir + "/bad.txt").find("--move"), std::string::npos) << slurp(f.dir + "/bad.txt");
+  EXPECT_EQ(
+      sh(kBin + " run --no-validation --cases " + f.cases + " --move=x,y --out " + f.dir + "/bad",
+         f.dir + "/bad.txt"),
+      2);
+  EXPECT_NE(slurp(f.dir + "/bad.txt").find("--move"), std::string::npos)
+      << slurp(f.dir + "/bad.txt");
 }
 
 // Device bundles saved by an unmoved run are another case's: CaseError.
 TEST(Move, SavedBundlesOfTheUnmovedCaseAreNotJudgedAsTheMovedOne) {
   const Folder f = setUp("move-saved");
-  ASSERT_EQ(sh(kBin + " run --no-validation --no-model --cases " + f.cases + " --filter 'move/world*' --out " + f.dir +
-                   "/saved",
+  ASSERT_EQ(sh(kBin + " run --no-validation --no-model --cases " + f.cases +
+                   " --filter 'move/world*' --out " + f.dir + "/saved",
                f.dir + "/saved.txt"),
             77)  // one case, NotSupported: nothing compared
       << slurp(f.dir + "/saved.txt");
-  EXPECT_EQ(sh(kBin + " run --no-validation --cases " + f.cases + " --filter 'move/world*' --device-results " + f.dir +
+  EXPECT_EQ(sh(kBin + " run --no-validation --cases " + f.cases +
+                   " --filter 'move/world*' --device-results " + f.dir +
                    "/saved --move=-y,x,z --out " + f.dir + "/judged",
                f.dir + "/judged.txt"),
             1);
-  EXPECT_NE(slurp(f.dir + "/judged.txt").find("CaseError"), std::string::npos) << slurp(f.dir + "/judged.txt");
+  EXPECT_NE(slurp(f.dir + "/judged.txt").find("CaseError"), std::string::npos)
+      << slurp(f.dir + "/judged.txt");
 }
 
 }  // namespace

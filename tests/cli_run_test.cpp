@@ -27,9 +27,13 @@ using cli::sh;
 using cli::slurp;
 using Clock = std::chrono::steady_clock;
 
-double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+double since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
-nlohmann::json summaryOf(const std::string& out) { return nlohmann::json::parse(slurp(out + "/summary.json")); }
+nlohmann::json summaryOf(const std::string& out) {
+  return nlohmann::json::parse(slurp(out + "/summary.json"));
+}
 
 // The status and headline of one case in summary.json.
 std::pair<std::string, std::string> caseIn(const nlohmann::json& summary, const std::string& name) {
@@ -58,7 +62,9 @@ std::string editedCase(const std::string& name, const std::string& from, const s
 
 // Starts a shell command in the background (exec'd: the pid is the program's).
 pid_t spawn(const std::string& command, const std::string& log) {
-  const std::string line = "unset GTEST_TOTAL_SHARDS GTEST_SHARD_INDEX GTEST_SHARD_STATUS_FILE; exec " + command + " > " + log + " 2>&1";
+  const std::string line =
+      "unset GTEST_TOTAL_SHARDS GTEST_SHARD_INDEX GTEST_SHARD_STATUS_FILE; exec " + command +
+      " > " + log + " 2>&1";
   const pid_t pid = fork();
   if (pid == 0) {
     execl("/bin/sh", "sh", "-c", line.c_str(), static_cast<char*>(nullptr));
@@ -110,10 +116,11 @@ bool waitUntil(F done, double seconds) {
 // `hang`, no timeout to speak of). Returns once the first case is reported
 // and the hung child is the only child left; *children holds it.
 pid_t startHungRun(const std::string& out, std::set<pid_t>* children) {
-  const pid_t parent = spawn(kBin + " run --no-validation --plant-fault hang --plant-fault-in 'anyhit/*' --timeout 300" +
-                                 caseArg("results/miss-xor-closest-hit") + caseArg("anyhit/ignore-odd-primitives") +
-                                 " --out " + out,
-                             out + "/log.txt");
+  const pid_t parent = spawn(
+      kBin + " run --no-validation --plant-fault hang --plant-fault-in 'anyhit/*' --timeout 300" +
+          caseArg("results/miss-xor-closest-hit") + caseArg("anyhit/ignore-odd-primitives") +
+          " --out " + out,
+      out + "/log.txt");
   const bool model_done = waitUntil(
       [&] { return fs::exists(out + "/anyhit/ignore-odd-primitives/model/results.json"); }, 60);
   EXPECT_TRUE(model_done) << slurp(out + "/log.txt");
@@ -180,7 +187,8 @@ TEST_F(KilledRun, ReportsStayMarkedInterrupted) {
   EXPECT_EQ(summary["cases"].size(), 1u);
   EXPECT_EQ(slurp(out_ + "/summary.txt").rfind("INTERRUPTED: 1 of 2 planned cases ran\n", 0), 0u)
       << slurp(out_ + "/summary.txt");
-  EXPECT_NE(slurp(out_ + "/report.html").find("INTERRUPTED: 1 of 2 planned cases ran"), std::string::npos);
+  EXPECT_NE(slurp(out_ + "/report.html").find("INTERRUPTED: 1 of 2 planned cases ran"),
+            std::string::npos);
 }
 
 // The killed run finished by --resume: the case it had is kept as it was
@@ -189,19 +197,23 @@ TEST_F(KilledRun, ResumeFinishesItAndKeepsWhatRan) {
   const std::string kept = out_ + "/results/miss-xor-closest-hit/device/results.json";
   ASSERT_TRUE(fs::exists(kept));
   const auto written = fs::last_write_time(kept);
-  const std::string run = kBin + " run --no-validation --resume" + caseArg("results/miss-xor-closest-hit") +
+  const std::string run = kBin + " run --no-validation --resume" +
+                          caseArg("results/miss-xor-closest-hit") +
                           caseArg("anyhit/ignore-odd-primitives") + " --out " + out_;
   ASSERT_EQ(sh(run, out_ + "/resume.txt"), 0) << slurp(out_ + "/resume.txt");
-  EXPECT_NE(slurp(out_ + "/resume.txt").find("1 cases already ran"), std::string::npos) << slurp(out_ + "/resume.txt");
+  EXPECT_NE(slurp(out_ + "/resume.txt").find("1 cases already ran"), std::string::npos)
+      << slurp(out_ + "/resume.txt");
   EXPECT_EQ(fs::last_write_time(kept), written) << "the case that ran before ran again";
   const nlohmann::json summary = summaryOf(out_);
   EXPECT_FALSE(summary["interrupted"].get<bool>());
   ASSERT_EQ(summary["cases"].size(), 2u);
   EXPECT_EQ(summary["cases"][1]["status"], "Pass");
-  EXPECT_EQ(slurp(out_ + "/summary.txt").rfind("complete: 2 of 2 cases\n", 0), 0u) << slurp(out_ + "/summary.txt");
+  EXPECT_EQ(slurp(out_ + "/summary.txt").rfind("complete: 2 of 2 cases\n", 0), 0u)
+      << slurp(out_ + "/summary.txt");
   // Resuming into a folder from another kind of run is refused.
   EXPECT_EQ(sh(run + " --model fast", out_ + "/resume-fast.txt"), 2);
-  EXPECT_NE(slurp(out_ + "/resume-fast.txt").find("model tier"), std::string::npos) << slurp(out_ + "/resume-fast.txt");
+  EXPECT_NE(slurp(out_ + "/resume-fast.txt").find("model tier"), std::string::npos)
+      << slurp(out_ + "/resume-fast.txt");
 }
 
 // ---- item 8: SIGINT / SIGTERM ----------------------------------------------
@@ -231,7 +243,8 @@ TEST(Interrupt, SignalFinishesTheReportsAndExitsNonZero) {
     EXPECT_TRUE(summary["interrupted"].get<bool>());
     EXPECT_EQ(summary["planned_cases"], 2);
     EXPECT_EQ(caseIn(summary, "results/miss-xor-closest-hit").first, "Pass");
-    EXPECT_EQ(caseIn(summary, "anyhit/ignore-odd-primitives").first, "(absent)") << "nothing measured, nothing said";
+    EXPECT_EQ(caseIn(summary, "anyhit/ignore-odd-primitives").first, "(absent)")
+        << "nothing measured, nothing said";
     EXPECT_EQ(readDeqpCsv(out + "/results.csv").size(), 1u);
     EXPECT_NE(slurp(out + "/log.txt").find("INTERRUPTED: 1 of 2 cases ran"), std::string::npos);
   }
@@ -239,9 +252,10 @@ TEST(Interrupt, SignalFinishesTheReportsAndExitsNonZero) {
 
 TEST(Interrupt, CompleteRunIsNotMarked) {
   const std::string out = fresh("complete-run");
-  ASSERT_EQ(sh(kBin + " run --no-validation" + caseArg("results/miss-xor-closest-hit") + " --out " + out,
-               out + "/log.txt"),
-            0)
+  ASSERT_EQ(
+      sh(kBin + " run --no-validation" + caseArg("results/miss-xor-closest-hit") + " --out " + out,
+         out + "/log.txt"),
+      0)
       << slurp(out + "/log.txt");
   const nlohmann::json summary = summaryOf(out);
   EXPECT_FALSE(summary["interrupted"].get<bool>());
@@ -255,13 +269,13 @@ TEST(Interrupt, CompleteRunIsNotMarked) {
 // model's exact tier weighs every pair of tied hits (runs for minutes).
 std::string slowModelCase() {
   std::string text =
-      "rules: [R-TIE]\nscene:\n  blas:\n    tri:\n      - triangles:\n"
-      "          vertices: [[-1, -1, 0], [1, -1, 0], [0, 1, 0]]\n  instances:\n";
+      "rules: [R-TIE]\nscene:\n  blas:\n    tri:\n      - triangles:\n          vertices: [[-1, "
+      "-1, 0], [1, -1, 0], [0, 1, 0]]\n  instances:\n";
   for (int i = 0; i < 100000; ++i) text += "    - {blas: tri}\n";
-  text += "rays:\n  list:\n    - {origin: [0, 0, 5], direction: [0, 0, -1]}\n"
-          "pipeline:\n  miss:\n    - [count: miss]\n  hit_groups:\n"
-          "    - closest_hit: [count: closesthit, record: [hit, instance_id]]\n"
-          "outputs:\n  counters: [miss, closesthit]\n  per_ray: [hit, instance_id]\n";
+  text +=
+      "rays:\n  list:\n    - {origin: [0, 0, 5], direction: [0, 0, -1]}\npipeline:\n  miss:\n    - "
+      "[count: miss]\n  hit_groups:\n    - closest_hit: [count: closesthit, record: [hit, "
+      "instance_id]]\noutputs:\n  counters: [miss, closesthit]\n  per_ray: [hit, instance_id]\n";
   return text;
 }
 
@@ -269,8 +283,8 @@ TEST(ModelIsolation, ModelPastTheTimeoutIsATimeoutAndTheRunGoesOn) {
   const std::string out = fresh("model-timeout");
   const std::string slow = writeCase(out, "many-instances", slowModelCase());
   const auto start = Clock::now();
-  const int rc = sh(kBin + " run --no-validation --timeout 3 --case " + slow + caseArg("results/miss-xor-closest-hit") +
-                        " --out " + out + "/run",
+  const int rc = sh(kBin + " run --no-validation --timeout 3 --case " + slow +
+                        caseArg("results/miss-xor-closest-hit") + " --out " + out + "/run",
                     out + "/log.txt");
   EXPECT_LT(since(start), 60.0);
   EXPECT_EQ(rc, 1) << slurp(out + "/log.txt");
@@ -288,7 +302,8 @@ TEST(ModelIsolation, ModelOverTheMemoryLimitIsACrash) {
 #endif
   const std::string out = fresh("model-memory");
   // 256 MiB, the least --memory-limit takes, is too little for this case's model.
-  const int rc = sh(kBin + " run --no-device --memory-limit 256M" + caseArg("model/mixed-scene-1024") + " --out " + out,
+  const int rc = sh(kBin + " run --no-device --memory-limit 256M" +
+                        caseArg("model/mixed-scene-1024") + " --out " + out,
                     out + "/log.txt");
   EXPECT_EQ(rc, 1) << slurp(out + "/log.txt");
   const auto [status, headline] = caseIn(summaryOf(out), "model/mixed-scene-1024");
@@ -301,10 +316,9 @@ TEST(ModelIsolation, ModelOverTheMemoryLimitIsACrash) {
 TEST(CaseErrors, CaseFileErrorsAreCaseErrorsAndTheRunGoesOn) {
   const std::string out = fresh("case-file-errors");
   const std::string broken = writeCase(out, "broken", "rules: [R-IGNORE]\nscene: 12\n");
-  const std::string unknown_rule = writeCase(
-      out, "unknown-rule",
-      editedCase("results/miss-xor-closest-hit", "rules: [",
-                 "rules: [R-NO-SUCH-RULE, "));
+  const std::string unknown_rule =
+      writeCase(out, "unknown-rule",
+                editedCase("results/miss-xor-closest-hit", "rules: [", "rules: [R-NO-SUCH-RULE, "));
   const int rc = sh(kBin + " run --no-validation --case " + broken + " --case " + unknown_rule +
                         caseArg("results/miss-xor-closest-hit") + " --out " + out + "/run",
                     out + "/log.txt");
@@ -312,7 +326,8 @@ TEST(CaseErrors, CaseFileErrorsAreCaseErrorsAndTheRunGoesOn) {
   const nlohmann::json summary = summaryOf(out + "/run");
   const auto [broken_status, broken_headline] = caseIn(summary, "broken");
   EXPECT_EQ(broken_status, "CaseError");
-  EXPECT_NE(broken_headline.find("broken.yaml:"), std::string::npos) << "file, line, column: " << broken_headline;
+  EXPECT_NE(broken_headline.find("broken.yaml:"), std::string::npos)
+      << "file, line, column: " << broken_headline;
   const auto [rule_status, rule_headline] = caseIn(summary, "unknown-rule");
   EXPECT_EQ(rule_status, "CaseError");
   EXPECT_NE(rule_headline.find("R-NO-SUCH-RULE"), std::string::npos) << rule_headline;
@@ -324,11 +339,12 @@ TEST(CaseErrors, CaseFileErrorsAreCaseErrorsAndTheRunGoesOn) {
 TEST(CaseErrors, TooLongImageNameIsACaseErrorAndTheReportsAreWritten) {
   const std::string out = fresh("long-image-name");
   const std::string long_name(300, 'i');
-  const std::string path = writeCase(out, "long-image",
-                                     editedCase("results/miss-xor-closest-hit", "{name: hit, from: hit}",
-                                                "{name: " + long_name + ", from: hit}"));
-  const int rc = sh(kBin + " run --no-validation --case " + path + caseArg("anyhit/ignore-odd-primitives") + " --out " +
-                        out + "/run",
+  const std::string path =
+      writeCase(out, "long-image",
+                editedCase("results/miss-xor-closest-hit", "{name: hit, from: hit}",
+                           "{name: " + long_name + ", from: hit}"));
+  const int rc = sh(kBin + " run --no-validation --case " + path +
+                        caseArg("anyhit/ignore-odd-primitives") + " --out " + out + "/run",
                     out + "/log.txt");
   EXPECT_EQ(rc, 1) << slurp(out + "/log.txt");
   const nlohmann::json summary = summaryOf(out + "/run");
@@ -360,7 +376,8 @@ TEST(ExitCodes, NoSuchDeviceStopsBeforeTheCasesAndNamesTheDevices) {
 TEST(ExitCodes, NothingComparedIsNotASuccess) {
   const std::string out = fresh("nothing-compared");
   // The model alone: no device, so not ctest's skip either.
-  EXPECT_EQ(sh(kBin + " run --no-device" + caseArg("results/miss-xor-closest-hit") + " --out " + out + "/one",
+  EXPECT_EQ(sh(kBin + " run --no-device" + caseArg("results/miss-xor-closest-hit") + " --out " +
+                   out + "/one",
                out + "/one.txt"),
             3)
       << slurp(out + "/one.txt");
@@ -373,16 +390,22 @@ TEST(ExitCodes, NothingComparedIsNotASuccess) {
 
 TEST(ExitCodes, CompareWithAMissingOrEmptyReferenceIsAnError) {
   const std::string out = fresh("compare-missing");
-  ASSERT_EQ(sh(kBin + " run --no-validation" + caseArg("results/miss-xor-closest-hit") + " --out " + out + "/run",
+  ASSERT_EQ(sh(kBin + " run --no-validation" + caseArg("results/miss-xor-closest-hit") + " --out " +
+                   out + "/run",
                out + "/run.txt"),
             0)
       << slurp(out + "/run.txt");
-  EXPECT_EQ(sh(kBin + " compare " + out + "/run " + out + "/missing-folder --out " + out + "/c1", out + "/c1.txt"), 2);
+  EXPECT_EQ(sh(kBin + " compare " + out + "/run " + out + "/missing-folder --out " + out + "/c1",
+               out + "/c1.txt"),
+            2);
   EXPECT_NE(slurp(out + "/c1.txt").find("missing-folder is not a folder"), std::string::npos)
       << slurp(out + "/c1.txt");
   fs::create_directories(out + "/empty");
-  EXPECT_EQ(sh(kBin + " compare " + out + "/run " + out + "/empty --out " + out + "/c2", out + "/c2.txt"), 3);
-  EXPECT_NE(slurp(out + "/c2.txt").find("nothing was compared"), std::string::npos) << slurp(out + "/c2.txt");
+  EXPECT_EQ(
+      sh(kBin + " compare " + out + "/run " + out + "/empty --out " + out + "/c2", out + "/c2.txt"),
+      3);
+  EXPECT_NE(slurp(out + "/c2.txt").find("nothing was compared"), std::string::npos)
+      << slurp(out + "/c2.txt");
 }
 
 // ---- item 7: ray lists up to the device's limits ---------------------------
@@ -391,24 +414,28 @@ TEST(ExitCodes, CompareWithAMissingOrEmptyReferenceIsAnError) {
 // over a grid of triangles, with an image of what each ray hit.
 std::string longListCase() {
   std::string text =
-      "rules: [R-MISS-XOR-CHIT]\nscene:\n  blas:\n    grid:\n"
-      "      - triangles: {grid: {cells: [8, 8], size: [2, 2], center: [0, 0, 0]}}\n"
-      "        flags: [opaque]\n  instances:\n    - {blas: grid}\nrays:\n  tmin: 0.001\n  tmax: 100\n  list:\n";
+      "rules: [R-MISS-XOR-CHIT]\nscene:\n  blas:\n    grid:\n      - triangles: {grid: {cells: [8, "
+      "8], size: [2, 2], center: [0, 0, 0]}}\n        flags: [opaque]\n  instances:\n    - {blas: "
+      "grid}\nrays:\n  tmin: 0.001\n  tmax: 100\n  list:\n";
   for (int i = 0; i < 40000; ++i) {
-    const double x = -1.5 + 3.0 * ((i % 200) + 0.37) / 200, y = -1.5 + 3.0 * ((i / 200) + 0.41) / 200;
-    text += "    - {origin: [" + std::to_string(x) + ", " + std::to_string(y) + ", 5], direction: [0, 0, -1]}\n";
+    const double x = -1.5 + 3.0 * ((i % 200) + 0.37) / 200,
+                 y = -1.5 + 3.0 * ((i / 200) + 0.41) / 200;
+    text += "    - {origin: [" + std::to_string(x) + ", " + std::to_string(y) +
+            ", 5], direction: [0, 0, -1]}\n";
   }
-  text += "pipeline:\n  miss:\n    - [count: miss, record: {hit: 0}]\n  hit_groups:\n"
-          "    - closest_hit: [count: closesthit, record: [hit, primitive_id, hit_t]]\n"
-          "outputs:\n  counters: [miss, closesthit]\n  per_ray: [hit, primitive_id, hit_t]\n"
-          "  images:\n    - {name: primitive, from: primitive_id}\n";
+  text +=
+      "pipeline:\n  miss:\n    - [count: miss, record: {hit: 0}]\n  hit_groups:\n    - "
+      "closest_hit: [count: closesthit, record: [hit, primitive_id, hit_t]]\noutputs:\n  counters: "
+      "[miss, closesthit]\n  per_ray: [hit, primitive_id, hit_t]\n  images:\n    - {name: "
+      "primitive, from: primitive_id}\n";
   return text;
 }
 
 TEST(LongRayLists, ListOf40000RaysWithAnImagePassesUnderValidation) {
   const std::string out = fresh("long-ray-list");
   const std::string path = writeCase(out, "long-list", longListCase());
-  const int rc = sh(kBin + " run --strict-validation --case " + path + " --out " + out + "/run", out + "/log.txt");
+  const int rc = sh(kBin + " run --strict-validation --case " + path + " --out " + out + "/run",
+                    out + "/log.txt");
   EXPECT_EQ(rc, 0) << slurp(out + "/log.txt");
   const nlohmann::json summary = summaryOf(out + "/run");
   EXPECT_EQ(caseIn(summary, "long-list").first, "Pass") << caseIn(summary, "long-list").second;
@@ -432,15 +459,18 @@ TEST(DeviceErrors, TheFailingCaseGetsItsStatusAndTheRunGoesOn) {
   };
   const Expect expects[] = {
       {"device-lost", "Crash", "device lost: vkWaitForFences returned VK_ERROR_DEVICE_LOST", 1},
-      {"out-of-device-memory", "NotSupported", "out of memory: vkAllocateMemory returned VK_ERROR_OUT_OF_DEVICE_MEMORY", 0},
+      {"out-of-device-memory", "NotSupported",
+       "out of memory: vkAllocateMemory returned VK_ERROR_OUT_OF_DEVICE_MEMORY", 0},
       {"pipeline-refused", "Fail", "the driver refused the pipeline", 1}};
   for (const Expect& e : expects)
     for (const std::string isolation : {"", " --no-isolation"}) {
-      const std::string out = fresh(std::string("device-error-") + e.fault + (isolation.empty() ? "" : "-in-process"));
-      const int status = sh(kBin + " run" + caseArg("sbt/hit-group-index") + caseArg("results/miss-xor-closest-hit") +
-                                " --plant-fault " + e.fault + " --plant-fault-in sbt/hit-group-index --out " + out +
-                                isolation,
-                            out + "/log");
+      const std::string out =
+          fresh(std::string("device-error-") + e.fault + (isolation.empty() ? "" : "-in-process"));
+      const int status =
+          sh(kBin + " run" + caseArg("sbt/hit-group-index") +
+                 caseArg("results/miss-xor-closest-hit") + " --plant-fault " + e.fault +
+                 " --plant-fault-in sbt/hit-group-index --out " + out + isolation,
+             out + "/log");
       const std::string what = std::string(e.fault) + isolation;
       EXPECT_EQ(status, e.exit) << what << "\n" << slurp(out + "/log");
       const nlohmann::json summary = summaryOf(out);

@@ -23,7 +23,8 @@ ShowRun rayspec(const std::string& args) {
   const std::string dir = std::string(RAYSPEC_TEST_OUT) + "/show";
   fs::create_directories(dir);
   const std::string out = dir + "/stdout", err = dir + "/stderr";
-  const std::string command = "cd " RAYSPEC_SOURCE_DIR " && " RAYSPEC_BIN " " + args + " > " + out + " 2> " + err;
+  const std::string command =
+      "cd " RAYSPEC_SOURCE_DIR " && " RAYSPEC_BIN " " + args + " > " + out + " 2> " + err;
   const int s = std::system(command.c_str());
   ShowRun r;
   r.status = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
@@ -36,7 +37,9 @@ ShowRun rayspec(const std::string& args) {
   return r;
 }
 
-ShowRun show(const std::string& args) { return rayspec("show " + args); }
+ShowRun show(const std::string& args) {
+  return rayspec("show " + args);
+}
 
 TEST(Show, AMissingCaseFileIsAClearErrorAndANonZeroExit) {
   for (const std::string& arg : {std::string("cases/nope.yaml"), std::string("nope/x")}) {
@@ -54,12 +57,13 @@ TEST(Show, AMissingCaseFileIsAClearErrorAndANonZeroExit) {
 TEST(Show, AnUnknownRuleLabelIsAnErrorAtItsLineAndColumn) {
   const std::string path = std::string(RAYSPEC_TEST_OUT) + "/show/unknown-rule.yaml";
   fs::create_directories(fs::path(path).parent_path());
-  std::ofstream(path) << "rules: [R-MASK, R-NOT-A-RULE]\n"
-                         "rays: {list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]}\n"
-                         "pipeline: {miss: [[]]}\n";
+  std::ofstream(path) << "rules: [R-MASK, R-NOT-A-RULE]\nrays: {list: [{origin: [0, 0, 1], "
+                         "direction: [0, 0, -1]}]}\npipeline: {miss: [[]]}\n";
   const ShowRun r = show(path + " --no-glsl");
   EXPECT_NE(r.status, 0);
-  EXPECT_NE(r.err.find(path + ":1:17: rules[1]: unknown rule label 'R-NOT-A-RULE'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(path + ":1:17: rules[1]: unknown rule label 'R-NOT-A-RULE'"),
+            std::string::npos)
+      << r.err;
 }
 
 TEST(Show, ARobustnessProbeListsItsUndefinedBehaviour) {
@@ -85,7 +89,8 @@ TEST(List, ARuleWithoutACaseFailsTheListing) {
   const fs::path dir = fs::path(RAYSPEC_TEST_OUT) / "list-cases";
   fs::remove_all(dir);
   fs::create_directories(dir / "sbt");
-  fs::copy_file(fs::path(RAYSPEC_SOURCE_DIR) / "cases/sbt/hit-group-index.yaml", dir / "sbt/hit-group-index.yaml");
+  fs::copy_file(fs::path(RAYSPEC_SOURCE_DIR) / "cases/sbt/hit-group-index.yaml",
+                dir / "sbt/hit-group-index.yaml");
   const ShowRun r = rayspec("list --rules --cases " + dir.string());
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.out.find("R-MASK  instance mask"), std::string::npos) << r.out;
@@ -106,7 +111,8 @@ TEST(List, SweepVariantsAreCasesOfTheirOwn) {
   std::ifstream in(fs::path(RAYSPEC_SOURCE_DIR) / "cases/sbt/hit-group-index.yaml");
   std::stringstream text;
   text << in.rdbuf();
-  std::ofstream(dir / "sbt/rows.sweep.yaml") << "sweep:\n  name: row-${r}\n  product: {r: [0, 1]}\n" << text.str();
+  std::ofstream(dir / "sbt/rows.sweep.yaml") << "sweep:\n  name: row-${r}\n  product: {r: [0, 1]}\n"
+                                             << text.str();
   const ShowRun r = rayspec("list --rules --cases " + dir.string());
   EXPECT_NE(r.out.find("sbt/rows (sweep: 2 variants)"), std::string::npos) << r.out;
   const ShowRun plain = rayspec("list --cases " + dir.string());

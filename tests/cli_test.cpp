@@ -8,10 +8,10 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <utility>
-#include <vector>
 #include <regex>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -27,9 +27,10 @@ using cli::slurp;
 
 TEST(Isolation, CrashIsACrashAndTheNextCaseStillRuns) {
   const std::string out = fresh("crash");
-  const int rc = sh(std::string(RAYSPEC_BIN) + " run --no-validation --plant-fault crash --plant-fault-in 'results/*'" +
-                        caseArg("results/miss-xor-closest-hit") + caseArg("anyhit/ignore-odd-primitives") +
-                        " --out " + out,
+  const int rc = sh(std::string(RAYSPEC_BIN) +
+                        " run --no-validation --plant-fault crash --plant-fault-in 'results/*'" +
+                        caseArg("results/miss-xor-closest-hit") +
+                        caseArg("anyhit/ignore-odd-primitives") + " --out " + out,
                     out + "/log.txt");
   EXPECT_EQ(rc, 1) << slurp(out + "/log.txt");
   const auto status = readDeqpCsv(out + "/results.csv");
@@ -46,10 +47,12 @@ TEST(Isolation, CrashIsACrashAndTheNextCaseStillRuns) {
 TEST(Isolation, HangIsATimeout) {
   const std::string out = fresh("hang");
   const auto start = std::chrono::steady_clock::now();
-  const int rc = sh(std::string(RAYSPEC_BIN) + " run --no-validation --plant-fault hang --timeout 3" +
-                        caseArg("results/miss-xor-closest-hit") + " --out " + out,
-                    out + "/log.txt");
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const int rc =
+      sh(std::string(RAYSPEC_BIN) + " run --no-validation --plant-fault hang --timeout 3" +
+             caseArg("results/miss-xor-closest-hit") + " --out " + out,
+         out + "/log.txt");
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_EQ(rc, 1) << slurp(out + "/log.txt");
   EXPECT_EQ(readDeqpCsv(out + "/results.csv").at("results/miss-xor-closest-hit"), "Timeout");
   EXPECT_LT(seconds, 60.0);
@@ -59,9 +62,10 @@ TEST(Isolation, HangIsATimeout) {
 // planted in one case in the middle cost only that case; every other case,
 // those its worker runs next included, passes.
 TEST(Isolation, FaultsInAParallelRunCostOnlyTheirCase) {
-  const std::vector<std::string> cases{"results/miss-xor-closest-hit", "anyhit/ignore-odd-primitives",
-                                       "anyhit/ignore-keeps-tmax",      "anyhit/terminate-accepts",
-                                       "anyhit/unused-any-hit",         "builtins/any-hit-and-intersection"};
+  const std::vector<std::string> cases{
+      "results/miss-xor-closest-hit", "anyhit/ignore-odd-primitives",
+      "anyhit/ignore-keeps-tmax",     "anyhit/terminate-accepts",
+      "anyhit/unused-any-hit",        "builtins/any-hit-and-intersection"};
   std::string args;
   for (const std::string& c : cases) args += caseArg(c);
   for (const auto& [fault, status] : std::vector<std::pair<std::string, std::string>>{
@@ -70,13 +74,16 @@ TEST(Isolation, FaultsInAParallelRunCostOnlyTheirCase) {
     const std::string out = fresh("parallel-" + fault);
     const int rc = sh(std::string(RAYSPEC_BIN) + " run -j 2 --timeout 5 --plant-fault " + fault +
                           " --plant-fault-in anyhit/ignore-keeps-tmax" + args + " --out " + out +
-                          " --cache-dir " + out + "/cache",  // no timings: dealt in this order, the fault third
+                          " --cache-dir " + out +
+                          "/cache",  // no timings: dealt in this order, the fault third
                       out + "/log.txt");
     EXPECT_EQ(rc, 1) << slurp(out + "/log.txt");
     const auto results = readDeqpCsv(out + "/results.csv");
     ASSERT_EQ(results.size(), cases.size()) << slurp(out + "/log.txt");
     for (const std::string& c : cases)
-      EXPECT_EQ(results.at(c), c == "anyhit/ignore-keeps-tmax" ? status : "Pass") << c << "\n" << slurp(out + "/log.txt");
+      EXPECT_EQ(results.at(c), c == "anyhit/ignore-keeps-tmax" ? status : "Pass")
+          << c << "\n"
+          << slurp(out + "/log.txt");
   }
 }
 
@@ -90,33 +97,39 @@ TEST(Isolation, ProcessFaultNeedsIsolation) {
 
 TEST(Isolation, LiveProgressLineOnlyOnATerminal) {
   const std::string out = fresh("progress");
-  const std::string run = std::string(RAYSPEC_BIN) + " run --no-validation" + caseArg("results/miss-xor-closest-hit") +
-                          " --out " + out;
+  const std::string run = std::string(RAYSPEC_BIN) + " run --no-validation" +
+                          caseArg("results/miss-xor-closest-hit") + " --out " + out;
   ASSERT_EQ(sh(run, out + "/pipe.txt"), 0);
-  EXPECT_EQ(slurp(out + "/pipe.txt").find("running"), std::string::npos) << "no live line into a pipe";
+  EXPECT_EQ(slurp(out + "/pipe.txt").find("running"), std::string::npos)
+      << "no live line into a pipe";
   // util-linux script(1) gives the run a pseudo-terminal.
-  ASSERT_EQ(sh("script -qec \"" + run + "\" /dev/null", out + "/tty.txt"), 0) << slurp(out + "/tty.txt");
-  EXPECT_NE(slurp(out + "/tty.txt").find("[1/1] running results/miss-xor-closest-hit..."), std::string::npos)
+  ASSERT_EQ(sh("script -qec \"" + run + "\" /dev/null", out + "/tty.txt"), 0)
+      << slurp(out + "/tty.txt");
+  EXPECT_NE(slurp(out + "/tty.txt").find("[1/1] running results/miss-xor-closest-hit..."),
+            std::string::npos)
       << slurp(out + "/tty.txt");
 }
 
 TEST(Compare, SavedRunsAndBundles) {
   const std::string run = fresh("compare-run"), faulty = fresh("compare-faulty");
-  ASSERT_EQ(sh(std::string(RAYSPEC_BIN) + " run --no-validation" + caseArg("anyhit/ignore-odd-primitives") +
+  ASSERT_EQ(sh(std::string(RAYSPEC_BIN) + " run --no-validation" +
+                   caseArg("anyhit/ignore-odd-primitives") +
                    caseArg("results/miss-xor-closest-hit") + " --out " + run,
                run + "/log.txt"),
             0)
       << slurp(run + "/log.txt");
   ASSERT_EQ(sh(std::string(RAYSPEC_BIN) + " run --no-validation --plant-fault shift-t" +
-                   caseArg("anyhit/ignore-odd-primitives") + caseArg("results/miss-xor-closest-hit") + " --out " +
-                   faulty,
+                   caseArg("anyhit/ignore-odd-primitives") +
+                   caseArg("results/miss-xor-closest-hit") + " --out " + faulty,
                faulty + "/log.txt"),
             1)
       << slurp(faulty + "/log.txt");
 
   // A run folder against itself: every case's device against the same device.
   const std::string same = fresh("compare-same");
-  EXPECT_EQ(sh(std::string(RAYSPEC_BIN) + " compare " + run + " " + run + " --out " + same, same + "/log.txt"), 0)
+  EXPECT_EQ(sh(std::string(RAYSPEC_BIN) + " compare " + run + " " + run + " --out " + same,
+               same + "/log.txt"),
+            0)
       << slurp(same + "/log.txt");
   auto status = readDeqpCsv(same + "/results.csv");
   EXPECT_EQ(status.size(), 2u);
@@ -134,7 +147,8 @@ TEST(Compare, SavedRunsAndBundles) {
   // One bundle against another: the saved faulty device against its model.
   const std::string bundles = fresh("compare-bundles");
   const std::string c = "/anyhit/ignore-odd-primitives";
-  EXPECT_EQ(sh(std::string(RAYSPEC_BIN) + " compare " + faulty + c + "/device " + faulty + c + "/model --out " + bundles,
+  EXPECT_EQ(sh(std::string(RAYSPEC_BIN) + " compare " + faulty + c + "/device " + faulty + c +
+                   "/model --out " + bundles,
                bundles + "/log.txt"),
             1);
   EXPECT_EQ(readDeqpCsv(bundles + "/results.csv")["anyhit/ignore-odd-primitives"], "Fail")
@@ -146,7 +160,8 @@ class ReportRun : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     out_ = fresh("report");
-    rc_ = sh(std::string(RAYSPEC_BIN) + " run --plant-fault swap-primitive-id --plant-fault-in 'anyhit/*'" +
+    rc_ = sh(std::string(RAYSPEC_BIN) +
+                 " run --plant-fault swap-primitive-id --plant-fault-in 'anyhit/*'" +
                  caseArg("anyhit/ignore-odd-primitives") + caseArg("results/miss-xor-closest-hit") +
                  caseArg("watertight/shared-edges") + " --out " + out_,
              out_ + "/log.txt");
@@ -164,17 +179,20 @@ TEST_F(ReportRun, ReportHtmlOpensInChromiumWithEveryImageShown) {
     ASSERT_TRUE(fs::exists(c + side + "primitive.png")) << c + side << "primitive.png";
   const std::string profile = fresh("chromium-profile");
   const std::string dom = out_ + "/dom.html";
-  const int rc = sh("chromium --headless --no-sandbox --disable-gpu --disable-background-networking "
-                    "--disable-component-update --disable-sync --no-first-run --allow-file-access-from-files "
-                    "--virtual-time-budget=5000 --user-data-dir=" + profile + " --dump-dom file://" + out_ +
-                        "/report.html > " + dom + " 2> " + out_ + "/chromium-stderr.txt; cat " + dom,
-                    out_ + "/chromium-log.txt");
+  const int rc =
+      sh("chromium --headless --no-sandbox --disable-gpu --disable-background-networking "
+         "--disable-component-update --disable-sync --no-first-run --allow-file-access-from-files "
+         "--virtual-time-budget=5000 --user-data-dir=" +
+             profile + " --dump-dom file://" + out_ + "/report.html > " + dom + " 2> " + out_ +
+             "/chromium-stderr.txt; cat " + dom,
+         out_ + "/chromium-log.txt");
   ASSERT_EQ(rc, 0) << slurp(out_ + "/chromium-stderr.txt");
   const std::string text = slurp(dom);
   std::smatch m;
   ASSERT_TRUE(std::regex_search(text, m, std::regex(R"(<body[^>]*>)"))) << text.substr(0, 400);
   const std::string body = m.str();
-  EXPECT_NE(body.find("data-checked=\"1\""), std::string::npos) << "the page's check never ran: " << body;
+  EXPECT_NE(body.find("data-checked=\"1\""), std::string::npos)
+      << "the page's check never ran: " << body;
   EXPECT_NE(body.find("data-broken-images=\"0\""), std::string::npos) << body;
   EXPECT_NE(body.find("data-script-errors=\"0\""), std::string::npos) << body;
   std::smatch images;

@@ -21,8 +21,12 @@ using cli::slurp;
 
 const std::string kImages = "anyhit/ignore-odd-primitives";  // a case with images
 
-nlohmann::json readJson(const std::string& path) { return nlohmann::json::parse(std::ifstream(path)); }
-void writeJson(const std::string& path, const nlohmann::json& j) { std::ofstream(path) << j.dump(1); }
+nlohmann::json readJson(const std::string& path) {
+  return nlohmann::json::parse(std::ifstream(path));
+}
+void writeJson(const std::string& path, const nlohmann::json& j) {
+  std::ofstream(path) << j.dump(1);
+}
 
 // A folder outside every run folder, with a marker file, that must survive.
 std::string victim(const std::string& root, const std::string& name) {
@@ -37,7 +41,8 @@ class Untrusted : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     root_ = fresh("untrusted");
-    rc_ = sh(cli::kBin + " run --no-validation" + caseArg(kImages) + " --out " + root_ + "/run", root_ + "/run.txt");
+    rc_ = sh(cli::kBin + " run --no-validation" + caseArg(kImages) + " --out " + root_ + "/run",
+             root_ + "/run.txt");
   }
   // A copy of the saved run under root_/name.
   static std::string copyRun(const std::string& name) {
@@ -51,7 +56,8 @@ class Untrusted : public ::testing::Test {
   static std::pair<int, std::string> judged(const std::string& saved, const std::string& name) {
     const std::string out = root_ + "/" + name + "-judged";
     fs::remove_all(out);
-    const int rc = sh(cli::kBin + " run --no-validation --device-results " + saved + caseArg(kImages) + " --out " + out,
+    const int rc = sh(cli::kBin + " run --no-validation --device-results " + saved +
+                          caseArg(kImages) + " --out " + out,
                       root_ + "/" + name + ".txt");
     return {rc, slurp(root_ + "/" + name + ".txt")};
   }
@@ -61,7 +67,9 @@ class Untrusted : public ::testing::Test {
 std::string Untrusted::root_;
 int Untrusted::rc_ = -1;
 
-TEST_F(Untrusted, TheSavedRunPasses) { ASSERT_EQ(rc_, 0) << slurp(root_ + "/run.txt"); }
+TEST_F(Untrusted, TheSavedRunPasses) {
+  ASSERT_EQ(rc_, 0) << slurp(root_ + "/run.txt");
+}
 
 // An image named ../../../../evil/y in a saved device bundle: a CaseError
 // naming results.json and the image name; no y.raw read, no y.png written.
@@ -70,7 +78,8 @@ TEST_F(Untrusted, AnImageNameThatClimbsIsACaseError) {
   const std::string json = saved + "/" + kImages + "/device/results.json";
   nlohmann::json j = readJson(json);
   ASSERT_FALSE(j["images"].empty());
-  const std::string raw = saved + "/" + kImages + "/device/" + j["images"][0]["name"].get<std::string>() + ".raw";
+  const std::string raw =
+      saved + "/" + kImages + "/device/" + j["images"][0]["name"].get<std::string>() + ".raw";
   j["images"][0]["name"] = "../../../../evil/y";
   writeJson(json, j);
   fs::create_directories(root_ + "/evil");
@@ -92,7 +101,8 @@ TEST_F(Untrusted, AShortImageIsACaseErrorNamingTheSizes) {
   fs::resize_file(raw, fs::file_size(raw) / 2);
   const auto [rc, log] = judged(saved, "image-short");
   EXPECT_EQ(rc, 1) << log;
-  EXPECT_NE(log.find(".raw holds " + std::to_string(fs::file_size(raw)) + " bytes; results.json says image"),
+  EXPECT_NE(log.find(".raw holds " + std::to_string(fs::file_size(raw)) +
+                     " bytes; results.json says image"),
             std::string::npos)
       << log;
 }
@@ -107,8 +117,9 @@ TEST_F(Untrusted, CompareNeverRemovesAFolderABundleNames) {
   writeJson(bundle + "/results.json", j);
   const std::string kept = victim(root_, "victim");
   const std::string out = root_ + "/compare-out";
-  const int rc = sh(cli::kBin + " compare " + bundle + " " + saved + "/" + kImages + "/model --out " + out,
-                    root_ + "/compare-climbs.txt");
+  const int rc =
+      sh(cli::kBin + " compare " + bundle + " " + saved + "/" + kImages + "/model --out " + out,
+         root_ + "/compare-climbs.txt");
   const std::string log = slurp(root_ + "/compare-climbs.txt");
   EXPECT_NE(rc, 0) << log;
   EXPECT_NE(log.find("'../victim' is no case name"), std::string::npos) << log;
@@ -128,7 +139,8 @@ TEST_F(Untrusted, MergeNeverRemovesAFolderASummaryNames) {
   const int rc = sh(cli::kBin + " merge " + shard + " --out " + out, root_ + "/merge-climbs.txt");
   const std::string log = slurp(root_ + "/merge-climbs.txt");
   EXPECT_EQ(rc, 2) << log;
-  EXPECT_NE(log.find("summary.json: cases: name '../victim2' is no case name"), std::string::npos) << log;
+  EXPECT_NE(log.find("summary.json: cases: name '../victim2' is no case name"), std::string::npos)
+      << log;
   EXPECT_TRUE(fs::exists(kept + "/keep.txt"));
 }
 
@@ -138,7 +150,8 @@ TEST_F(Untrusted, ARunRemovesOnlyWhatItWrote) {
   const std::string out = root_ + "/kept";
   fs::remove_all(out);
   const std::string kept = victim(out + "/" + kImages, "notes");
-  const int rc = sh(cli::kBin + " run --no-validation" + caseArg(kImages) + " --out " + out, root_ + "/kept.txt");
+  const int rc = sh(cli::kBin + " run --no-validation" + caseArg(kImages) + " --out " + out,
+                    root_ + "/kept.txt");
   EXPECT_EQ(rc, 0) << slurp(root_ + "/kept.txt");
   EXPECT_TRUE(fs::exists(kept + "/keep.txt"));
   EXPECT_TRUE(fs::exists(out + "/" + kImages + "/device/results.json"));
@@ -164,13 +177,16 @@ TEST_F(Untrusted, ResumeRefusesANarrowerSelection) {
   const std::string out = root_ + "/resume";
   fs::remove_all(out);
   const std::string two = caseArg(kImages) + caseArg("results/miss-xor-closest-hit");
-  ASSERT_EQ(sh(cli::kBin + " run --no-validation" + two + " --out " + out, root_ + "/resume-1.txt"), 0)
+  ASSERT_EQ(sh(cli::kBin + " run --no-validation" + two + " --out " + out, root_ + "/resume-1.txt"),
+            0)
       << slurp(root_ + "/resume-1.txt");
-  const int rc = sh(cli::kBin + " run --no-validation --resume" + caseArg(kImages) + " --out " + out,
-                    root_ + "/resume-2.txt");
+  const int rc =
+      sh(cli::kBin + " run --no-validation --resume" + caseArg(kImages) + " --out " + out,
+         root_ + "/resume-2.txt");
   const std::string log = slurp(root_ + "/resume-2.txt");
   EXPECT_EQ(rc, 2) << log;
-  EXPECT_NE(log.find("holds 1 case(s) this run does not select (results/miss-xor-closest-hit)"), std::string::npos)
+  EXPECT_NE(log.find("holds 1 case(s) this run does not select (results/miss-xor-closest-hit)"),
+            std::string::npos)
       << log;
   EXPECT_NE(slurp(out + "/results.csv").find("results/miss-xor-closest-hit"), std::string::npos);
 }
@@ -179,13 +195,22 @@ TEST_F(Untrusted, ResumeRefusesANarrowerSelection) {
 TEST_F(Untrusted, UnusableOptionsAreExit2AtTheStart) {
   const std::string file = root_ + "/a-file";
   std::ofstream(file) << "x";
-  const std::vector<std::string> bad = {
-      "run --out ''",        "run --out /",           "run --out " + file,     "stability --out ''",
-      "stability --out " + file, "accuracy --out " + file, "run --timeout 0", "run --timeout -5",
-      "run --timeout nan",   "run --permute -1",      "run --permute 18446744073709551616",
-      "run --memory-limit 100M", "run --move=x,y,z,0,0,0.1"};
+  const std::vector<std::string> bad = {"run --out ''",
+                                        "run --out /",
+                                        "run --out " + file,
+                                        "stability --out ''",
+                                        "stability --out " + file,
+                                        "accuracy --out " + file,
+                                        "run --timeout 0",
+                                        "run --timeout -5",
+                                        "run --timeout nan",
+                                        "run --permute -1",
+                                        "run --permute 18446744073709551616",
+                                        "run --memory-limit 100M",
+                                        "run --move=x,y,z,0,0,0.1"};
   for (const std::string& args : bad) {
-    const int rc = sh(cli::kBin + " " + args + " --no-device --filter 'none/*'", root_ + "/options.txt");
+    const int rc =
+        sh(cli::kBin + " " + args + " --no-device --filter 'none/*'", root_ + "/options.txt");
     const std::string log = slurp(root_ + "/options.txt");
     EXPECT_EQ(rc, 2) << args << ": " << log;
     EXPECT_EQ(log.find("Reports:"), std::string::npos) << args << ": " << log;

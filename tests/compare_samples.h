@@ -90,7 +90,8 @@ inline void countFromRecords(Results& r) {
 // A finding of status s whose rule or message holds text.
 inline bool findingNames(const Verdict& v, Status s, const std::string& text) {
   for (const Finding& f : v.findings)
-    if (f.status == s && (f.rule.find(text) != std::string::npos || f.message.find(text) != std::string::npos))
+    if (f.status == s &&
+        (f.rule.find(text) != std::string::npos || f.message.find(text) != std::string::npos))
       return true;
   return false;
 }

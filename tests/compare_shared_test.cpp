@@ -58,7 +58,8 @@ TEST(CompareShared, CountersMustAgreeWithTheDevicesOwnRecords) {
   d.counters["ahit"] = 3;  // any_hit_runs total 2: any-hit is informational, but the records say 2
   const Verdict v = compareResults(c, samplePlan(c), d, sampleResults("model"));
   EXPECT_EQ(v.status, Status::Fail) << v.headline();
-  EXPECT_TRUE(findingNames(v, Status::Fail, "the counter and the records disagree")) << v.headline();
+  EXPECT_TRUE(findingNames(v, Status::Fail, "the counter and the records disagree"))
+      << v.headline();
 }
 
 // A ray through a shared edge: every legal answer hits, runs raygen once and
@@ -73,21 +74,25 @@ TEST(CompareShared, AmbiguousRaysKeepWhatEveryAnswerShares) {
   EXPECT_EQ(compareResults(c, samplePlan(c), legal, m).status, Status::Pass);
   Results no_raygen = legal;
   setUint(no_raygen, 0, "raygen_runs", 0);
-  EXPECT_TRUE(findingNames(compareResults(c, samplePlan(c), no_raygen, m), Status::Fail, "raygen did not run once"));
+  EXPECT_TRUE(findingNames(compareResults(c, samplePlan(c), no_raygen, m), Status::Fail,
+                           "raygen did not run once"));
   Results both = legal;
   setUint(both, 0, "miss_runs", 1);
   countFromRecords(both);
-  EXPECT_TRUE(findingNames(compareResults(c, samplePlan(c), both, m), Status::Fail, "R-MISS-XOR-CHIT"));
+  EXPECT_TRUE(
+      findingNames(compareResults(c, samplePlan(c), both, m), Status::Fail, "R-MISS-XOR-CHIT"));
   Results nothing = legal;  // neither miss nor closest-hit, though every answer runs one
   setUint(nothing, 0, "closest_hit_runs", 0);
   countFromRecords(nothing);
-  EXPECT_TRUE(findingNames(compareResults(c, samplePlan(c), nothing, m), Status::Fail, "R-MISS-XOR-CHIT"));
+  EXPECT_TRUE(
+      findingNames(compareResults(c, samplePlan(c), nothing, m), Status::Fail, "R-MISS-XOR-CHIT"));
   Results far = legal;  // the same t for every hit through the edge
   setFloat(far, 0, "hit_t", 2.5f);
   EXPECT_TRUE(findingNames(compareResults(c, samplePlan(c), far, m), Status::Fail, "hit_t"));
   Results image = legal;  // the image must show the device's own record
   image.images[0].texels[0] = 0;
-  EXPECT_TRUE(findingNames(compareResults(c, samplePlan(c), image, m), Status::Fail, "own records"));
+  EXPECT_TRUE(
+      findingNames(compareResults(c, samplePlan(c), image, m), Status::Fail, "own records"));
 }
 
 // The miss counter follows miss runs: only a ray that may hit or miss lets
@@ -126,10 +131,13 @@ TEST(CompareShared, AnyHitRepeatOnOnePrimitiveFails) {
 }
 
 TEST(FindingRules, AFindingNamesTheClaimedRulesItsFieldEvidences) {
-  EXPECT_EQ(findingRule(rulesEvidencedByField("hit_kind"), {"R-FACE-DET", "R-RECURSION"}, "R-HITKIND-TRI"),
+  EXPECT_EQ(findingRule(rulesEvidencedByField("hit_kind"), {"R-FACE-DET", "R-RECURSION"},
+                        "R-HITKIND-TRI"),
             "R-FACE-DET");
-  EXPECT_EQ(findingRule(rulesEvidencedByField("depth"), {"R-FACE-DET"}, "R-RECURSION"), "R-RECURSION");
-  EXPECT_EQ(findingRule(rulesEvidencedByField("hit_kind"), {"R-HITKIND-TRI", "R-FACE-DET"}, "R-HITKIND-TRI"),
+  EXPECT_EQ(findingRule(rulesEvidencedByField("depth"), {"R-FACE-DET"}, "R-RECURSION"),
+            "R-RECURSION");
+  EXPECT_EQ(findingRule(rulesEvidencedByField("hit_kind"), {"R-HITKIND-TRI", "R-FACE-DET"},
+                        "R-HITKIND-TRI"),
             "R-FACE-DET/R-HITKIND-TRI");
   const Case c = oneTraceCase();
   const auto callable = rulesEvidencedByCounter(c, "miss");

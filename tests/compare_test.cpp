@@ -1,15 +1,15 @@
-#include <bit>
 #include <gtest/gtest.h>
+#include <bit>
 
 #include <cmath>
 
 #include "compare/compare_results.h"
-#include "compare_samples.h"
 #include "compare/counter_modes.h"
 #include "compare/image_pair.h"
 #include "compare/shared_edge.h"
-#include "results/tolerances.h"
+#include "compare_samples.h"
 #include "results/record_layout.h"
+#include "results/tolerances.h"
 
 namespace rayspec {
 namespace {
@@ -30,7 +30,8 @@ TEST(Tolerances, DocumentedBounds) {
 
 TEST(Compare, IdenticalResultsPass) {
   const Case c = sampleCase();
-  const Verdict v = compareResults(c, samplePlan(c), sampleResults("vulkan"), sampleResults("model"));
+  const Verdict v =
+      compareResults(c, samplePlan(c), sampleResults("vulkan"), sampleResults("model"));
   EXPECT_EQ(v.status, Status::Pass) << v.headline();
 }
 
@@ -79,7 +80,8 @@ TEST(Compare, ModelTBoundWidensTheTToleranceOfThatRayOnly) {
   EXPECT_EQ(compareResults(c, samplePlan(c), d, m).status, Status::Fail) << "beyond the bound";
   Results other = sampleResults("vulkan");
   setFloat(other, 1, "hit_t", 2.0f + 1e-3f);
-  EXPECT_EQ(compareResults(c, samplePlan(c), other, m).status, Status::Fail) << "ray 1 has no wider bound";
+  EXPECT_EQ(compareResults(c, samplePlan(c), other, m).status, Status::Fail)
+      << "ray 1 has no wider bound";
 }
 
 TEST(Compare, MissAndClosestHitRunTogetherFails) {
@@ -156,7 +158,8 @@ TEST(Compare, DoubleHitAtASharedEdgeIsAQualityWarning) {
   c.scene.blases[0].geometries[0].flags = kGeometryNoDuplicateAnyHit;
   Results model = sampleResults("model");
   setUint(model, 2, "any_hit_runs", 2);  // the model found both triangles once each
-  model.ambiguous.push_back({2, AmbiguityReason::Edge, {{false, 0, 0, 0}}, {{true, 0, 0, 0}, {true, 0, 0, 1}}});
+  model.ambiguous.push_back(
+      {2, AmbiguityReason::Edge, {{false, 0, 0, 0}}, {{true, 0, 0, 0}, {true, 0, 0, 1}}});
   Results once = sampleResults("vulkan");
   setUint(once, 2, "any_hit_runs", 1);  // watertight: one of them
   countFromRecords(once);
@@ -179,7 +182,8 @@ TEST(Compare, MissAtASharedEdgeIsALeakEvenWhenAMissIsLegal) {
   countFromRecords(leak);
   // The ray crosses the diagonal both triangles share: a miss is a leak.
   Results shared = sampleResults("model");
-  shared.ambiguous.push_back({0, AmbiguityReason::Edge, {{true, 0, 0, 0}, {true, 0, 0, 1}, {false, 0, 0, 0}}});
+  shared.ambiguous.push_back(
+      {0, AmbiguityReason::Edge, {{true, 0, 0, 0}, {true, 0, 0, 1}, {false, 0, 0, 0}}});
   EXPECT_EQ(compareResults(c, samplePlan(c), leak, shared).status, Status::QualityWarning);
   // The same miss after the device's any-hit saw a candidate (and ignored
   // it, which the legal miss allows) is no leak.
@@ -213,7 +217,9 @@ TEST(SharedEdge, ClosedFanAroundAVertex) {
   Instance in;
   in.blas = 0;
   c.scene.instances.push_back(in);
-  RayAmbiguity a{0, AmbiguityReason::Vertex, {{true, 0, 0, 0}, {true, 0, 0, 1}, {true, 0, 0, 2}, {true, 0, 0, 3}}};
+  RayAmbiguity a{0,
+                 AmbiguityReason::Vertex,
+                 {{true, 0, 0, 0}, {true, 0, 0, 1}, {true, 0, 0, 2}, {true, 0, 0, 3}}};
   EXPECT_TRUE(crossesSharedEdge(c, a));
   a.candidates.pop_back();  // three of four: the fan is open
   EXPECT_FALSE(crossesSharedEdge(c, a));
@@ -258,7 +264,9 @@ TEST(CompareImages, FloatImagesWithinTheFieldToleranceAndAmbiguousPixelsExcluded
   };
   const Image model = image({1.0f, 2.0f, NAN, 4.0f});
   // 2.0 + 1e-6 is within hit_t's tolerance; NaN against NaN is equal.
-  EXPECT_EQ(countFailingPixels(prepareImagePair(image({1.0f, 2.000001f, NAN, 4.0f}), model, {})).failing, 0u);
+  EXPECT_EQ(
+      countFailingPixels(prepareImagePair(image({1.0f, 2.000001f, NAN, 4.0f}), model, {})).failing,
+      0u);
   const Image far = image({1.5f, 2.0f, 0.0f, 4.0f});
   const PixelCount n = countFailingPixels(prepareImagePair(far, model, {}));
   EXPECT_EQ(n.failing, 2u);
@@ -266,8 +274,10 @@ TEST(CompareImages, FloatImagesWithinTheFieldToleranceAndAmbiguousPixelsExcluded
 #ifdef RAYSPEC_WITH_OIIO
   EXPECT_TRUE(n.by_oiio);
 #endif
-  EXPECT_EQ(countFailingPixelsLoop(prepareImagePair(far, model, {})).failing, 2u) << "both counts agree";
-  EXPECT_EQ(countFailingPixels(prepareImagePair(far, model, {0, 2})).failing, 0u) << "ambiguous pixels excluded";
+  EXPECT_EQ(countFailingPixelsLoop(prepareImagePair(far, model, {})).failing, 2u)
+      << "both counts agree";
+  EXPECT_EQ(countFailingPixels(prepareImagePair(far, model, {0, 2})).failing, 0u)
+      << "ambiguous pixels excluded";
   // A larger per-image threshold accepts the 0.5 difference (but not NaN against a number).
   EXPECT_EQ(countFailingPixels(prepareImagePair(far, model, {}, 1e5)).failing, 1u);
 }
@@ -299,18 +309,20 @@ TEST(Compare, BackendStatusesMapToVerdicts) {
   const Case c = sampleCase();
   Results d = sampleResults("vulkan");
   d.setStatus(RunStatus::NotSupported, "no ray tracing");
-  EXPECT_EQ(compareResults(c, samplePlan(c), d, sampleResults("model")).status, Status::NotSupported);
+  EXPECT_EQ(compareResults(c, samplePlan(c), d, sampleResults("model")).status,
+            Status::NotSupported);
   d.setStatus(RunStatus::Crash, "VK_ERROR_DEVICE_LOST");
   EXPECT_EQ(compareResults(c, samplePlan(c), d, sampleResults("model")).status, Status::Crash);
   Results m = sampleResults("model");
   m.setStatus(RunStatus::NotSupported, "model lacks it");
-  EXPECT_EQ(compareResults(c, samplePlan(c), sampleResults("vulkan"), m).status, Status::NotSupported)
+  EXPECT_EQ(compareResults(c, samplePlan(c), sampleResults("vulkan"), m).status,
+            Status::NotSupported)
       << "no reference is never a pass";
 }
 
 TEST(Status, NamesAreStableAndParse) {
-  for (Status s : {Status::Pass, Status::Fail, Status::QualityWarning, Status::NotSupported, Status::Crash,
-                   Status::Timeout}) {
+  for (Status s : {Status::Pass, Status::Fail, Status::QualityWarning, Status::NotSupported,
+                   Status::Crash, Status::Timeout}) {
     Status back;
     ASSERT_TRUE(parseStatus(statusName(s), &back));
     EXPECT_EQ(back, s);
@@ -363,7 +375,8 @@ TEST(CompareImages, CaseThresholdsAllowFailingPixelsAndScaleTheTolerance) {
 
   // A float image: 3e-4 off is beyond the colour tolerance (1e-4), within 4x it.
   Results fd = sampleResults("vulkan"), fm = sampleResults("model");
-  Image color{"color", "color", 4, 1, 1, true, {0x3f800000u, 0x3f800000u, 0x3f800000u, 0x3f800000u}};
+  Image color{
+      "color", "color", 4, 1, 1, true, {0x3f800000u, 0x3f800000u, 0x3f800000u, 0x3f800000u}};
   fm.images.push_back(color);
   color.texels[1] = std::bit_cast<uint32_t>(1.0f + 3e-4f);
   fd.images.push_back(color);

@@ -13,7 +13,8 @@ namespace {
 // The sample results of the model with ray 1 undefined (a hit record out of range).
 Results modelWithUndefinedRay1() {
   Results m = sampleResults("model");
-  m.undefined.push_back({1, UndefinedReason::HitRecordOutOfRange, "pipeline.raygen[0].trace: hit record 3 of 1"});
+  m.undefined.push_back(
+      {1, UndefinedReason::HitRecordOutOfRange, "pipeline.raygen[0].trace: hit record 3 of 1"});
   return m;
 }
 
@@ -31,7 +32,8 @@ const Finding* findingOf(const Verdict& v, const std::string& rule) {
 
 std::string allFindings(const Verdict& v) {
   std::string s = v.headline() + "\n";
-  for (const Finding& f : v.findings) s += std::string(statusName(f.status)) + " " + f.rule + ": " + f.message + "\n";
+  for (const Finding& f : v.findings)
+    s += std::string(statusName(f.status)) + " " + f.rule + ": " + f.message + "\n";
   return s;
 }
 
@@ -53,7 +55,8 @@ TEST(UndefinedRays, LeftOutOfRecordsImagesAndAnyHitChecks) {
   c.scene.blases.push_back({"quad", {g}, {}});
   Results m = modelWithUndefinedRay1();
   setUint(m, 1, "closest_hit_runs", 0);  // so that the any-hit check looks at ray 1
-  // The same wrong answers on a clear ray fail: the records, the image and any-hit are checked there.
+  // The same wrong answers on a clear ray fail: the records, the image and any-hit are checked
+  // there.
   Results d = deviceWrongOnRay(0);
   setUint(m, 0, "closest_hit_runs", 0);
   const Verdict wrong = compareResults(c, samplePlan(c), d, m);
@@ -69,12 +72,14 @@ TEST(UndefinedRays, LeftOutOfRecordsImagesAndAnyHitChecks) {
 
 TEST(UndefinedRays, CountersTheyMayMoveBecomeInformational) {
   Case c = probeCase();
-  // raygen: count `launches`, trace, count `after`: only `launches` is safe from the trace's undefined behaviour.
+  // raygen: count `launches`, trace, count `after`: only `launches` is safe from the trace's
+  // undefined behaviour.
   Stmt trace;
   trace.kind = Stmt::Kind::Trace;
   c.pipeline.raygen = {count("launches"), trace, count("after")};
   c.outputs.counters = {"miss", "chit", "ahit", "launches", "after"};
-  EXPECT_EQ(countersUndefinedRaysMayMove(c), (std::set<std::string>{"miss", "chit", "ahit", "after"}));
+  EXPECT_EQ(countersUndefinedRaysMayMove(c),
+            (std::set<std::string>{"miss", "chit", "ahit", "after"}));
   Results m = modelWithUndefinedRay1();
   m.counters["launches"] = 4;
   m.counters["after"] = 4;
@@ -113,8 +118,9 @@ TEST(UndefinedRays, ReportedApartByReasonWithTheFirstRaysAndWhat) {
   EXPECT_EQ(groups[1].rays, (std::vector<uint32_t>{7}));
 
   Results m = sampleResults("model");
-  m.undefined = {{3, UndefinedReason::CallableOutOfRange, "pipeline.raygen[1].call.index: callable 5 of 2"},
-                 {2, UndefinedReason::CallableOutOfRange, "pipeline.raygen[1].call.index: callable 6 of 2"}};
+  m.undefined = {
+      {3, UndefinedReason::CallableOutOfRange, "pipeline.raygen[1].call.index: callable 5 of 2"},
+      {2, UndefinedReason::CallableOutOfRange, "pipeline.raygen[1].call.index: callable 6 of 2"}};
   const Case c = probeCase();
   const Verdict v = compareResults(c, samplePlan(c), sampleResults("vulkan"), m);
   ASSERT_EQ(v.undefined.size(), 1u);
@@ -131,7 +137,8 @@ TEST(UndefinedRays, ReportedApartByReasonWithTheFirstRaysAndWhat) {
 
 TEST(UndefinedBehaviourVerdict, NoUndefinedRaysLeaveTheVerdictAlone) {
   Verdict v;
-  EXPECT_TRUE(judgeUndefinedBehaviour(sampleCase(), sampleResults("vulkan"), sampleResults("model"), v));
+  EXPECT_TRUE(
+      judgeUndefinedBehaviour(sampleCase(), sampleResults("vulkan"), sampleResults("model"), v));
   EXPECT_EQ(v.status, Status::Pass);
   EXPECT_TRUE(v.findings.empty());
   // Nor when the model did not run: its findings are not a diagnosis.
@@ -163,10 +170,12 @@ TEST(UndefinedBehaviourVerdict, ADeviceCrashOnACaseWithUndefinedBehaviourIsTheCa
     d.setStatus(s, "signal 11");
     const Verdict v = compareResults(c, samplePlan(c), d, modelWithUndefinedRay1());
     EXPECT_EQ(v.status, Status::CaseError) << allFindings(v);
-    EXPECT_NE(v.headline().find(s == RunStatus::Crash ? "the device crashed" : "the device timed out"),
-              std::string::npos)
+    EXPECT_NE(
+        v.headline().find(s == RunStatus::Crash ? "the device crashed" : "the device timed out"),
+        std::string::npos)
         << v.headline();
-    EXPECT_NE(v.headline().find("the case has undefined behaviour"), std::string::npos) << v.headline();
+    EXPECT_NE(v.headline().find("the case has undefined behaviour"), std::string::npos)
+        << v.headline();
     // Without the model's diagnosis the same crash is the driver's.
     EXPECT_EQ(compareResults(c, samplePlan(c), d, sampleResults("model")).status,
               s == RunStatus::Crash ? Status::Crash : Status::Timeout);
@@ -175,7 +184,8 @@ TEST(UndefinedBehaviourVerdict, ADeviceCrashOnACaseWithUndefinedBehaviourIsTheCa
 
 TEST(UndefinedBehaviourVerdict, AProbeThatSurvivedPassesAndItsOtherRaysAreJudged) {
   const Case c = probeCase();
-  const Verdict v = compareResults(c, samplePlan(c), sampleResults("vulkan"), modelWithUndefinedRay1());
+  const Verdict v =
+      compareResults(c, samplePlan(c), sampleResults("vulkan"), modelWithUndefinedRay1());
   EXPECT_EQ(v.status, Status::Pass) << allFindings(v);
   const Finding* f = findingOf(v, "R-UB");
   ASSERT_TRUE(f);

@@ -48,7 +48,8 @@ TEST(InactiveHidesLastActive, FailsEveryIsolatingCaseButTheControls) {
 // The same fault on the seed chapter's hand-written cases that show it on
 // Mesa 26.2.6 (null-instance: instance 3 lost; nan-x-triangle: primitive 2).
 TEST(InactiveHidesLastActive, FailsTheSeedCasesItBreaksOnLavapipe26) {
-  for (const char* name : {"inactive/null-instance", "inactive/nan-x-triangle", "inactive/nan-min-x-aabb"}) {
+  for (const char* name :
+       {"inactive/null-instance", "inactive/nan-x-triangle", "inactive/nan-min-x-aabb"}) {
     const std::optional<CaseFile> f = findCase(name, "", kSuiteCases);
     ASSERT_TRUE(f) << name;
     ParseResult parsed = loadSuiteCase(*f);
@@ -56,9 +57,11 @@ TEST(InactiveHidesLastActive, FailsTheSeedCasesItBreaksOnLavapipe26) {
     const Plan plan = derivePlan(*parsed.value);
     const Results model = runOnModel(*parsed.value, plan, ModelOptions{});
     Results device = perfectDevice(*parsed.value, model);
-    const FaultResult planted = plantFault("inactive-hides-last-active", *parsed.value, plan, device, model);
+    const FaultResult planted =
+        plantFault("inactive-hides-last-active", *parsed.value, plan, device, model);
     EXPECT_TRUE(planted.applied) << name;
-    EXPECT_EQ(compareResults(*parsed.value, plan, device, model).status, Status::Fail) << name << ": " << planted.what;
+    EXPECT_EQ(compareResults(*parsed.value, plan, device, model).status, Status::Fail)
+        << name << ": " << planted.what;
   }
 }
 

@@ -12,13 +12,13 @@
 #include <iostream>
 #include <set>
 
-#include "suite_cases.h"
 #include "case/parse_case.h"
 #include "compare/compare_results.h"
 #include "fault/planted_fault.h"
 #include "fault/rule_faults.h"
 #include "model/model_backend.h"
 #include "plan/plan.h"
+#include "suite_cases.h"
 
 namespace rayspec {
 namespace {
@@ -63,7 +63,8 @@ TEST_P(CaseClaims, EveryClaimedRuleIsBrokenByAFault) {
   const Judged j = judge(GetParam());
   ASSERT_TRUE(j.model.ok()) << j.model.statusText();
   const Verdict clean = compareResults(j.c, j.plan, j.perfect, j.model);
-  ASSERT_EQ(clean.status, Status::Pass) << "the model as a device does not pass: " << clean.headline();
+  ASSERT_EQ(clean.status, Status::Pass)
+      << "the model as a device does not pass: " << clean.headline();
   for (const std::string& rule : j.c.rules) {
     const ClaimProof p = proveClaim(j.c, j.plan, j.model, j.perfect, rule);
     std::cout << GetParam() << " " << p.describe() << "\n";
@@ -75,7 +76,8 @@ TEST_P(CaseClaims, EveryClaimedRuleIsBrokenByAFault) {
   Results reversed = j.perfect;
   plantFault("reverse-order", j.c, j.plan, reversed, j.model);
   const Verdict v = compareResults(j.c, j.plan, reversed, j.model);
-  EXPECT_EQ(v.status, Status::Pass) << "the verdict depends on the candidate order: " << v.headline();
+  EXPECT_EQ(v.status, Status::Pass)
+      << "the verdict depends on the candidate order: " << v.headline();
 }
 
 INSTANTIATE_TEST_SUITE_P(Cases, CaseClaims, ::testing::ValuesIn(caseNames()),
@@ -100,9 +102,11 @@ TEST(RuleFaultTable, OneEntryPerRuleOfTheCatalogAndEveryFaultUsed) {
         EXPECT_NE(info->kind, FaultKind::Process) << f;
         used.insert(f);
       }
-    EXPECT_TRUE(!r.breaks.empty() || !r.legal.empty() || !r.pending.empty()) << r.rule << " has no proof";
+    EXPECT_TRUE(!r.breaks.empty() || !r.legal.empty() || !r.pending.empty())
+        << r.rule << " has no proof";
   }
-  for (const std::string& rule : rules) EXPECT_NE(findRuleFaults(rule), nullptr) << rule << " has no entry";
+  for (const std::string& rule : rules)
+    EXPECT_NE(findRuleFaults(rule), nullptr) << rule << " has no entry";
   for (const FaultInfo& f : faultTable()) {
     if (f.kind == FaultKind::Process) continue;
     EXPECT_TRUE(used.count(f.name)) << f.name << " stands for no rule";
@@ -141,7 +145,8 @@ TEST(RuleFaultTable, ACaseThatFailsALegalDeviceIsNamed) {
   const ClaimProof p = proveClaim(j.c, j.plan, j.model, j.perfect, "R-ISECT-MULTI");
   EXPECT_EQ(p.result, ClaimResult::FailsLegal) << p.describe();
   j.c.outputs.counter_modes["isect"] = "at_least";
-  EXPECT_EQ(proveClaim(j.c, j.plan, j.model, j.perfect, "R-ISECT-MULTI").result, ClaimResult::Proven);
+  EXPECT_EQ(proveClaim(j.c, j.plan, j.model, j.perfect, "R-ISECT-MULTI").result,
+            ClaimResult::Proven);
 }
 
 }  // namespace

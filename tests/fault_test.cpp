@@ -60,7 +60,8 @@ class PlantedFault : public ::testing::Test {
 
   // Plants the fault and returns the verdict; checks first that the untouched
   // pair passes, so the status comes from the fault.
-  Verdict plant(const std::string& case_name, const std::string& fault, Results* planted = nullptr) {
+  Verdict plant(const std::string& case_name, const std::string& fault,
+                Results* planted = nullptr) {
     if (!backend_) {
       ADD_FAILURE() << "no Vulkan ray tracing device: " << backend_error_;
       return {};
@@ -78,7 +79,8 @@ class PlantedFault : public ::testing::Test {
   }
 
   // The device's results with one edit, judged; the untouched pair must pass.
-  Verdict edited(const std::string& case_name, const std::function<void(const Ran&, RecordEdit&)>& edit) {
+  Verdict edited(const std::string& case_name,
+                 const std::function<void(const Ran&, RecordEdit&)>& edit) {
     const Ran& r = run(case_name);
     EXPECT_EQ(compareResults(r.c, r.plan, r.device, r.model).status, Status::Pass) << case_name;
     Results device = r.device;
@@ -179,7 +181,8 @@ TEST_F(PlantedFault, LightEquivalenceForEveryLightType) {
     const Verdict bv = compareResults(c, plan, broken, model);
     EXPECT_EQ(bv.status, Status::Fail) << bv.headline();
     bool named = false;
-    for (const Finding& fd : bv.findings) named = named || fd.message.find("differ on the device") != std::string::npos;
+    for (const Finding& fd : bv.findings)
+      named = named || fd.message.find("differ on the device") != std::string::npos;
     EXPECT_TRUE(named) << bv.headline();
   }
 }
@@ -219,7 +222,8 @@ std::set<uint32_t> changedRays(const Results& a, const Results& b) {
 
 const Finding* failing(const Verdict& v, const std::string& field) {
   for (const Finding& f : v.findings)
-    if (f.status == Status::Fail && f.message.find("'" + field + "'") != std::string::npos) return &f;
+    if (f.status == Status::Fail && f.message.find("'" + field + "'") != std::string::npos)
+      return &f;
   return nullptr;
 }
 
@@ -246,7 +250,8 @@ void answerHit(const Case& c, RecordEdit& e, uint32_t ray, uint32_t instance, ui
   for (const std::string& f : c.outputs.per_ray) {
     if (f == "instance_id") e.set(ray, f, instance);
     if (f == "primitive_id") e.set(ray, f, primitive);
-    if (f == "hit_t" && model && RecordView{*model}.written(ray, f)) e.set(ray, f, RecordView{*model}.get(ray, f));
+    if (f == "hit_t" && model && RecordView{*model}.written(ray, f))
+      e.set(ray, f, RecordView{*model}.get(ray, f));
   }
 }
 
@@ -258,7 +263,8 @@ void answerHit(const Case& c, RecordEdit& e, uint32_t ray, uint32_t instance, ui
 // legal way, which is never judged a failure.
 TEST_F(PlantedFault, ClosedTriangleIntervalFails) {
   Results planted;
-  const Verdict v = plant("candidates/triangle-open-interval", "closed-triangle-interval", &planted);
+  const Verdict v =
+      plant("candidates/triangle-open-interval", "closed-triangle-interval", &planted);
   EXPECT_EQ(v.status, Status::Fail) << v.headline();
   EXPECT_TRUE(hasFinding(v, Status::Fail, "R-CAND-TRI-OPEN")) << v.headline();
   const Ran& r = run("candidates/triangle-open-interval");
@@ -299,8 +305,11 @@ TEST_F(PlantedFault, InexactEndTiesAcceptBothAnswersAndNothingElse) {
       for (const Candidate& k : a.candidates) (k.hit ? hit = &k : (miss = true, hit));
       ASSERT_TRUE(miss && hit) << name << " ray " << a.ray;
       const uint32_t ray = a.ray;
-      EXPECT_EQ(edited(name, [&](const Ran& x, RecordEdit& e) { numerics::answerMiss(x.c, e, ray); }).status,
-                Status::Pass) << name << " ray " << ray;
+      EXPECT_EQ(
+          edited(name, [&](const Ran& x, RecordEdit& e) { numerics::answerMiss(x.c, e, ray); })
+              .status,
+          Status::Pass)
+          << name << " ray " << ray;
       const Verdict as_hit = edited(name, [&](const Ran& x, RecordEdit& e) {
         numerics::answerHit(x.c, e, ray, hit->instance, hit->primitive, &x.model);
       });
@@ -316,9 +325,11 @@ TEST_F(PlantedFault, InexactEndTiesAcceptBothAnswersAndNothingElse) {
   const Ran& r = run("precision/tmax-ties");
   for (const RayAmbiguity& a : r.model.ambiguous) {
     if (a.reason != AmbiguityReason::TTie) continue;
-    const Verdict v = edited("precision/tmax-ties",
-                             [&](const Ran& x, RecordEdit& e) { numerics::answerMiss(x.c, e, a.ray); });
-    EXPECT_EQ(v.status, Status::Fail) << "a miss on a tie of two hits, ray " << a.ray << ": " << v.headline();
+    const Verdict v = edited("precision/tmax-ties", [&](const Ran& x, RecordEdit& e) {
+      numerics::answerMiss(x.c, e, a.ray);
+    });
+    EXPECT_EQ(v.status, Status::Fail)
+        << "a miss on a tie of two hits, ray " << a.ray << ": " << v.headline();
     EXPECT_TRUE(hasFinding(v, Status::Fail, "R-TIE")) << v.headline();
   }
 }
@@ -331,17 +342,23 @@ TEST_F(PlantedFault, AabbTieAcceptsEveryTiedPairAndNothingElse) {
   for (const RayAmbiguity& a : r.model.ambiguous) {
     ASSERT_EQ(a.reason, AmbiguityReason::TTie);
     for (const Candidate& k : a.candidates)
-      EXPECT_EQ(edited("precision/aabb-tie", [&](const Ran& x, RecordEdit& e) {
-                  numerics::answerHit(x.c, e, a.ray, k.instance, k.primitive, &x.model);
-                }).status,
-                Status::Pass) << "ray " << a.ray << " instance " << k.instance << " primitive " << k.primitive;
+      EXPECT_EQ(edited("precision/aabb-tie",
+                       [&](const Ran& x, RecordEdit& e) {
+                         numerics::answerHit(x.c, e, a.ray, k.instance, k.primitive, &x.model);
+                       })
+                    .status,
+                Status::Pass)
+          << "ray " << a.ray << " instance " << k.instance << " primitive " << k.primitive;
     EXPECT_EQ(edited("precision/aabb-tie",
-                     [&](const Ran& x, RecordEdit& e) { numerics::answerMiss(x.c, e, a.ray); }).status,
-              Status::Fail) << "ray " << a.ray;
-    EXPECT_EQ(edited("precision/aabb-tie", [&](const Ran& x, RecordEdit& e) {
-                numerics::answerHit(x.c, e, a.ray, 0, 5);
-              }).status,
-              Status::Fail) << "ray " << a.ray << ": primitive 5 does not exist";
+                     [&](const Ran& x, RecordEdit& e) { numerics::answerMiss(x.c, e, a.ray); })
+                  .status,
+              Status::Fail)
+        << "ray " << a.ray;
+    EXPECT_EQ(edited("precision/aabb-tie",
+                     [&](const Ran& x, RecordEdit& e) { numerics::answerHit(x.c, e, a.ray, 0, 5); })
+                  .status,
+              Status::Fail)
+        << "ray " << a.ray << ": primitive 5 does not exist";
   }
 }
 
@@ -356,10 +373,13 @@ TEST_F(PlantedFault, CentreMissAtLargeCoordinatesFails) {
   RecordEdit model{const_cast<Results&>(r.model)};
   std::set<uint32_t> instances;
   for (uint32_t ray = 0; ray < model.rays(); ++ray) {
-    if (amb.count(ray) || model.get(ray, "hit") != 1 || instances.count(model.get(ray, "instance_id"))) continue;
+    if (amb.count(ray) || model.get(ray, "hit") != 1 ||
+        instances.count(model.get(ray, "instance_id")))
+      continue;
     instances.insert(model.get(ray, "instance_id"));
-    const Verdict v = edited("precision/large-coordinates",
-                             [&](const Ran& x, RecordEdit& e) { numerics::answerMiss(x.c, e, ray); });
+    const Verdict v = edited("precision/large-coordinates", [&](const Ran& x, RecordEdit& e) {
+      numerics::answerMiss(x.c, e, ray);
+    });
     EXPECT_EQ(v.status, Status::Fail) << "ray " << ray << ": " << v.headline();
     const Finding* hit = numerics::failing(v, "hit");
     ASSERT_NE(hit, nullptr);
@@ -368,8 +388,9 @@ TEST_F(PlantedFault, CentreMissAtLargeCoordinatesFails) {
   EXPECT_EQ(instances.size(), 3u) << "a clear interior ray in each grid";
   for (const RayAmbiguity& a : r.model.ambiguous) {
     if (a.reason != AmbiguityReason::Edge || a.shared_triangles.size() < 2) continue;
-    const Verdict v = edited("precision/large-coordinates",
-                             [&](const Ran& x, RecordEdit& e) { numerics::answerMiss(x.c, e, a.ray); });
+    const Verdict v = edited("precision/large-coordinates", [&](const Ran& x, RecordEdit& e) {
+      numerics::answerMiss(x.c, e, a.ray);
+    });
     EXPECT_EQ(v.status, Status::QualityWarning) << v.headline();
     break;
   }

@@ -1,9 +1,9 @@
 // The GLSL generator: every statement kind and stage of hand-built cases
 // compiles to valid SPIR-V; layouts come from the C++ tables; only what the
 // plan needs is declared; ray and scene packing.
+#include <gtest/gtest.h>
 #include <bit>
 #include <cstring>
-#include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
@@ -22,32 +22,94 @@ namespace rayspec {
 namespace {
 
 // ---- building programs by hand ----
-Expr u(uint32_t v) { Expr e; e.kind = Expr::Kind::Literal; e.type = ValueType::Uint; e.literal = {double(v)}; return e; }
-Expr f(double v) { Expr e; e.kind = Expr::Kind::Literal; e.type = ValueType::Float; e.literal = {v}; return e; }
-Expr v2(double a, double b) { Expr e = f(a); e.type = ValueType::Vec2; e.literal = {a, b}; return e; }
-Expr v3(double a, double b, double c) { Expr e = f(a); e.type = ValueType::Vec3; e.literal = {a, b, c}; return e; }
-Expr b(const std::string& name) { Expr e; e.kind = Expr::Kind::Builtin; e.name = name; return e; }
-Expr op(const std::string& name, std::vector<Expr> args = {}) {
-  Expr e; e.kind = Expr::Kind::Op; e.name = name; e.args = std::move(args); return e;
+Expr u(uint32_t v) {
+  Expr e;
+  e.kind = Expr::Kind::Literal;
+  e.type = ValueType::Uint;
+  e.literal = {double(v)};
+  return e;
 }
-Stmt count(const std::string& n) { Stmt s; s.kind = Stmt::Kind::Count; s.counter = n; return s; }
-Stmt record(std::vector<std::pair<std::string, Expr>> a) { Stmt s; s.kind = Stmt::Kind::Record; s.assigns = std::move(a); return s; }
+Expr f(double v) {
+  Expr e;
+  e.kind = Expr::Kind::Literal;
+  e.type = ValueType::Float;
+  e.literal = {v};
+  return e;
+}
+Expr v2(double a, double b) {
+  Expr e = f(a);
+  e.type = ValueType::Vec2;
+  e.literal = {a, b};
+  return e;
+}
+Expr v3(double a, double b, double c) {
+  Expr e = f(a);
+  e.type = ValueType::Vec3;
+  e.literal = {a, b, c};
+  return e;
+}
+Expr b(const std::string& name) {
+  Expr e;
+  e.kind = Expr::Kind::Builtin;
+  e.name = name;
+  return e;
+}
+Expr op(const std::string& name, std::vector<Expr> args = {}) {
+  Expr e;
+  e.kind = Expr::Kind::Op;
+  e.name = name;
+  e.args = std::move(args);
+  return e;
+}
+Stmt count(const std::string& n) {
+  Stmt s;
+  s.kind = Stmt::Kind::Count;
+  s.counter = n;
+  return s;
+}
+Stmt record(std::vector<std::pair<std::string, Expr>> a) {
+  Stmt s;
+  s.kind = Stmt::Kind::Record;
+  s.assigns = std::move(a);
+  return s;
+}
 Stmt recordBuiltins(const std::vector<std::string>& names) {
   std::vector<std::pair<std::string, Expr>> a;
   for (const auto& n : names) a.push_back({n, b(n)});
   return record(a);
 }
-Stmt kind(Stmt::Kind k) { Stmt s; s.kind = k; return s; }
-Stmt assign(Stmt::Kind k, std::vector<std::pair<std::string, Expr>> a) { Stmt s = kind(k); s.assigns = std::move(a); return s; }
-Stmt ifs(Expr cond, Program then_, Program else_ = {}) {
-  Stmt s = kind(Stmt::Kind::If); s.cond = std::move(cond); s.then_ = std::move(then_); s.else_ = std::move(else_); return s;
+Stmt kind(Stmt::Kind k) {
+  Stmt s;
+  s.kind = k;
+  return s;
 }
-Stmt light(const std::string& l) { Stmt s = kind(Stmt::Kind::Light); s.light = l; return s; }
+Stmt assign(Stmt::Kind k, std::vector<std::pair<std::string, Expr>> a) {
+  Stmt s = kind(k);
+  s.assigns = std::move(a);
+  return s;
+}
+Stmt ifs(Expr cond, Program then_, Program else_ = {}) {
+  Stmt s = kind(Stmt::Kind::If);
+  s.cond = std::move(cond);
+  s.then_ = std::move(then_);
+  s.else_ = std::move(else_);
+  return s;
+}
+Stmt light(const std::string& l) {
+  Stmt s = kind(Stmt::Kind::Light);
+  s.light = l;
+  return s;
+}
 Stmt call(Expr index, std::vector<std::pair<std::string, Expr>> a) {
-  Stmt s = assign(Stmt::Kind::Call, std::move(a)); s.call_index = std::move(index); return s;
+  Stmt s = assign(Stmt::Kind::Call, std::move(a));
+  s.call_index = std::move(index);
+  return s;
 }
 Stmt trace(Expr origin, Expr direction) {
-  Stmt s = kind(Stmt::Kind::Trace); s.trace.origin = {origin}; s.trace.direction = {direction}; return s;
+  Stmt s = kind(Stmt::Kind::Trace);
+  s.trace.origin = {origin};
+  s.trace.direction = {direction};
+  return s;
 }
 
 // A case using every statement kind in every stage that allows it.
@@ -77,11 +139,27 @@ Case fullCase() {
   c.rays.defaults.tmin = 0.001f;
   c.rays.defaults.tmax = 100.0f;
   c.outputs.counters = {"miss", "anyhit", "ignored", "closesthit", "isect", "calls"};
-  c.outputs.per_ray = {"hit", "primitive_id", "hit_t", "barycentrics", "hit_kind", "instance_id",
-                       "geometry_index", "instance_custom_index", "world_ray_origin", "hit_position",
-                       "depth", "value", "color", "ray_tmin", "ray_tmax", "incoming_ray_flags",
-                       "object_ray_origin", "object_ray_direction", "world_ray_direction"};
-  c.outputs.images = {{"primitive", "primitive_id", {}}, {"color", "color", {}}, {"t", "hit_t", {}}};
+  c.outputs.per_ray = {"hit",
+                       "primitive_id",
+                       "hit_t",
+                       "barycentrics",
+                       "hit_kind",
+                       "instance_id",
+                       "geometry_index",
+                       "instance_custom_index",
+                       "world_ray_origin",
+                       "hit_position",
+                       "depth",
+                       "value",
+                       "color",
+                       "ray_tmin",
+                       "ray_tmax",
+                       "incoming_ray_flags",
+                       "object_ray_origin",
+                       "object_ray_direction",
+                       "world_ray_direction"};
+  c.outputs.images = {
+      {"primitive", "primitive_id", {}}, {"color", "color", {}}, {"t", "hit_t", {}}};
 
   Pipeline& p = c.pipeline;
   p.max_recursion = 3;
@@ -97,24 +175,27 @@ Case fullCase() {
                   record({{"value", op("add", {b("child.value"), u(1)})}})})},
             {call(u(1), {{"value", u(3)}}), record({{"value", b("callee.value")}})}};
   HitGroup tris;
-  tris.closest_hit = Program{
-      count("closesthit"),
-      recordBuiltins({"hit", "primitive_id", "hit_t", "barycentrics", "hit_kind", "instance_id",
-                      "geometry_index", "instance_custom_index", "hit_position", "incoming_ray_flags",
-                      "object_ray_origin", "object_ray_direction", "world_ray_direction", "ray_tmin"}),
-      assign(Stmt::Kind::SetPayload, {{"color", op("vec4", {f(1), f(0), f(0), f(1)})},
-                                      {"value", op("mod", {b("primitive_id"), u(3)})}}),
-      ifs(op("and", {op("lt", {b("depth"), u(3)}), op("eq", {b("hit_kind"), u(254)})}),
-          {trace(b("hit_position"), op("normalize", {v3(1, 1, 1)}))}),
-      call(op("shader_record_uint", {u(0)}),
-           {{"position", b("hit_position")}, {"normal", v3(0, 0, 1)}, {"color", op("vec4", {f(0)})}}),
-      assign(Stmt::Kind::SetPayload, {{"color", b("callee.color")}})};
-  tris.any_hit = Program{
-      count("anyhit"),
-      ifs(op("odd", {b("primitive_id")}), {count("ignored"), kind(Stmt::Kind::Ignore)},
-          {ifs(op("ge", {b("hit_t"), op("mul", {f(2), b("ray_tmin")})}), {kind(Stmt::Kind::Terminate)})}),
-      assign(Stmt::Kind::SetPayload, {{"value", op("add", {b("payload.value"), u(1)})}}),
-      record({{"barycentrics", op("sub", {b("barycentrics"), v2(0.5, 0.5)})}})};
+  tris.closest_hit =
+      Program{count("closesthit"),
+              recordBuiltins({"hit", "primitive_id", "hit_t", "barycentrics", "hit_kind",
+                              "instance_id", "geometry_index", "instance_custom_index",
+                              "hit_position", "incoming_ray_flags", "object_ray_origin",
+                              "object_ray_direction", "world_ray_direction", "ray_tmin"}),
+              assign(Stmt::Kind::SetPayload, {{"color", op("vec4", {f(1), f(0), f(0), f(1)})},
+                                              {"value", op("mod", {b("primitive_id"), u(3)})}}),
+              ifs(op("and", {op("lt", {b("depth"), u(3)}), op("eq", {b("hit_kind"), u(254)})}),
+                  {trace(b("hit_position"), op("normalize", {v3(1, 1, 1)}))}),
+              call(op("shader_record_uint", {u(0)}), {{"position", b("hit_position")},
+                                                      {"normal", v3(0, 0, 1)},
+                                                      {"color", op("vec4", {f(0)})}}),
+              assign(Stmt::Kind::SetPayload, {{"color", b("callee.color")}})};
+  tris.any_hit =
+      Program{count("anyhit"),
+              ifs(op("odd", {b("primitive_id")}), {count("ignored"), kind(Stmt::Kind::Ignore)},
+                  {ifs(op("ge", {b("hit_t"), op("mul", {f(2), b("ray_tmin")})}),
+                       {kind(Stmt::Kind::Terminate)})}),
+              assign(Stmt::Kind::SetPayload, {{"value", op("add", {b("payload.value"), u(1)})}}),
+              record({{"barycentrics", op("sub", {b("barycentrics"), v2(0.5, 0.5)})}})};
   HitGroup spheres;
   Stmt rep = kind(Stmt::Kind::Report);
   rep.t = op("sphere_near");
@@ -125,10 +206,9 @@ Case fullCase() {
   Stmt rep2 = kind(Stmt::Kind::Report);
   rep2.t = op("float", {b("primitive_id")});
   rep2.hit_kind = u(0);
-  spheres.intersection = Program{
-      recordBuiltins({"object_ray_origin"}),
-      ifs(op("sphere_hit"), {rep}, {rep2}),
-      record({{"color", op("vec4", {op("length", {b("aabb_max")})})}})};
+  spheres.intersection =
+      Program{recordBuiltins({"object_ray_origin"}), ifs(op("sphere_hit"), {rep}, {rep2}),
+              record({{"color", op("vec4", {op("length", {b("aabb_max")})})}})};
   spheres.closest_hit = Program{recordBuiltins({"hit", "barycentrics", "hit_kind"})};
   spheres.any_hit = Program{ifs(op("eq", {b("hit_kind"), u(5)}), {kind(Stmt::Kind::Ignore)})};
   p.hit_groups = {tris, spheres};
@@ -137,9 +217,9 @@ Case fullCase() {
       {light("spot"), assign(Stmt::Kind::SetCall, {{"value", op("add", {b("call.value"), u(1)})}})},
       {light("directional"),
        call(u(1), {{"value", b("call.value")}, {"position", b("call.position")}}),
-       assign(Stmt::Kind::SetCall, {{"value", b("callee.value")},
-                                    {"color", op("mul", {b("callee.color"),
-                                                         op("shader_record_float", {u(7)})})}})}};
+       assign(Stmt::Kind::SetCall,
+              {{"value", b("callee.value")},
+               {"color", op("mul", {b("callee.color"), op("shader_record_float", {u(7)})})}})}};
   return c;
 }
 
@@ -217,7 +297,8 @@ class GenerateGlsl : public ::testing::Test {
 };
 
 TEST_F(GenerateGlsl, SharedPiecesAreEmbedded) {
-  for (const char* name : {"common.glsl", "payload.glsl", "scene.glsl", "sphere.glsl", "lights.glsl"})
+  for (const char* name :
+       {"common.glsl", "payload.glsl", "scene.glsl", "sphere.glsl", "lights.glsl"})
     EXPECT_EQ(embeddedShaders().count(name), 1u) << name;
 }
 
@@ -238,9 +319,10 @@ TEST_F(GenerateGlsl, EveryStatementKindIsEmitted) {
        {"rs_count(0u);  // count \"miss\"", "ignoreIntersectionEXT;", "terminateRayEXT;",
         "reportIntersectionEXT(rs_sphere_current().t_near, 5u)", "} else {", "traceRayEXT(rs_tlas",
         "executeCallableEXT(rs_index, 0);", "executeCallableEXT(rs_index, 1);",
-        "call.color = rs_light_point(call.position, call.normal);", "rs_light_spot(", "rs_light_directional(",
-        "payload.value = 7u;", "call.value = (call.value + 1u);", "rs_record_vec2(RS_FIELD_BARYCENTRICS",
-        "imageStore(rs_image_0", "rs_bump_runs(RS_FIELD_ANY_HIT_RUNS);"})
+        "call.color = rs_light_point(call.position, call.normal);", "rs_light_spot(",
+        "rs_light_directional(", "payload.value = 7u;", "call.value = (call.value + 1u);",
+        "rs_record_vec2(RS_FIELD_BARYCENTRICS", "imageStore(rs_image_0",
+        "rs_bump_runs(RS_FIELD_ANY_HIT_RUNS);"})
     EXPECT_NE(all.find(needle), std::string::npos) << needle;
   // Each stage says which case and stage it is.
   for (const auto& sh : shaders) {
@@ -267,7 +349,8 @@ TEST_F(GenerateGlsl, RecordOffsetsEqualRecordLayout) {
   const std::regex def(R"(#define (RS_FIELD|RS_BIT)_([A-Z_]+) (\d+)u)");
   std::set<std::string> seen;
   for (const auto& sh : shaders) {
-    for (auto it = std::sregex_iterator(sh.glsl.begin(), sh.glsl.end(), def); it != std::sregex_iterator(); ++it) {
+    for (auto it = std::sregex_iterator(sh.glsl.begin(), sh.glsl.end(), def);
+         it != std::sregex_iterator(); ++it) {
       std::string name = (*it)[2];
       for (char& ch : name) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
       const int index = recordFieldIndex(name);
@@ -279,8 +362,10 @@ TEST_F(GenerateGlsl, RecordOffsetsEqualRecordLayout) {
         EXPECT_EQ(value, static_cast<uint32_t>(index)) << name;
       seen.insert(name);
     }
-    EXPECT_NE(sh.glsl.find("#define RS_RECORD_WORDS " + std::to_string(recordWords()) + "\n"), std::string::npos);
-    EXPECT_NE(sh.glsl.find("#define RS_RAY_WORDS " + std::to_string(kRayWords) + "\n"), std::string::npos);
+    EXPECT_NE(sh.glsl.find("#define RS_RECORD_WORDS " + std::to_string(recordWords()) + "\n"),
+              std::string::npos);
+    EXPECT_NE(sh.glsl.find("#define RS_RAY_WORDS " + std::to_string(kRayWords) + "\n"),
+              std::string::npos);
   }
   // Every recordable field of the case and every automatic count was defined somewhere.
   for (const auto& f : c.outputs.per_ray) EXPECT_TRUE(seen.count(f)) << f;
@@ -295,17 +380,20 @@ TEST_F(GenerateGlsl, BindingsFollowThePlan) {
   // Full plan: raygen holds TLAS, rays, records, counters and the 3 images.
   SpirvResult rg = compileGlsl(g.raygen.glsl, Stage::Raygen);
   ASSERT_TRUE(rg.error.empty()) << rg.error;
-  EXPECT_EQ(spirvBindings(rg.words),
-            (std::set<uint32_t>{kBindingTlas, kBindingRays, kBindingRecords, kBindingCounters,
-                                kBindingFirstImage, kBindingFirstImage + 1, kBindingFirstImage + 2}));
+  EXPECT_EQ(
+      spirvBindings(rg.words),
+      (std::set<uint32_t>{kBindingTlas, kBindingRays, kBindingRecords, kBindingCounters,
+                          kBindingFirstImage, kBindingFirstImage + 1, kBindingFirstImage + 2}));
   SpirvResult isect = compileGlsl(g.hit_groups[1].intersection->glsl, Stage::Intersection);
   ASSERT_TRUE(isect.error.empty()) << isect.error;
-  EXPECT_EQ(spirvBindings(isect.words), (std::set<uint32_t>{kBindingRecords, kBindingCounters, kBindingScene}));
+  EXPECT_EQ(spirvBindings(isect.words),
+            (std::set<uint32_t>{kBindingRecords, kBindingCounters, kBindingScene}));
   // Image formats follow the field types.
   EXPECT_NE(g.raygen.glsl.find("r32ui) uniform writeonly uimage2D rs_image_0"), std::string::npos);
   EXPECT_NE(g.raygen.glsl.find("rgba32f) uniform writeonly image2D rs_image_1"), std::string::npos);
-  EXPECT_NE(g.raygen.glsl.find("uintBitsToFloat(rs_record_word(RS_FIELD_HIT_T, 0u)), 0.0, 0.0, 1.0)"),
-            std::string::npos);
+  EXPECT_NE(
+      g.raygen.glsl.find("uintBitsToFloat(rs_record_word(RS_FIELD_HIT_T, 0u)), 0.0, 0.0, 1.0)"),
+      std::string::npos);
 }
 
 // The records are reached through a buffer reference (no maxStorageBufferRange
@@ -316,7 +404,8 @@ TEST_F(GenerateGlsl, RecordsAreReachedByDeviceAddress) {
   for (const auto& sh : shaders) {
     if (sh.glsl.find("#define RS_USE_RECORDS") == std::string::npos) continue;
     ++recording;
-    EXPECT_NE(sh.glsl.find("#extension GL_EXT_buffer_reference : require"), std::string::npos) << sh.name;
+    EXPECT_NE(sh.glsl.find("#extension GL_EXT_buffer_reference : require"), std::string::npos)
+        << sh.name;
     EXPECT_NE(sh.glsl.find("layout(buffer_reference"), std::string::npos) << sh.name;
     EXPECT_NE(sh.glsl.find("RsRecordWords rs_records_ref;"), std::string::npos) << sh.name;
   }
@@ -326,7 +415,7 @@ TEST_F(GenerateGlsl, RecordsAreReachedByDeviceAddress) {
 TEST(GenerateGlslMinimal, NothingThePlanDoesNotName) {
   Case c;
   c.name = "test/minimal";
-  Plan plan;  // no records, counters, images, scene data
+  Plan plan;               // no records, counters, images, scene data
   Stmt m = count("miss");  // a counter the plan does not keep
   c.pipeline.raygen = {kind(Stmt::Kind::Trace)};
   c.pipeline.miss = {{m}};
@@ -353,7 +442,8 @@ TEST(GenerateGlslMinimal, NothingThePlanDoesNotName) {
   // A raygen trace that gives every field does not read the rays buffer.
   Stmt t = trace(v3(0, 0, 1), v3(0, 0, -1));
   for (auto* v : {&t.trace.tmin, &t.trace.tmax}) v->push_back(f(1));
-  for (auto* v : {&t.trace.flags, &t.trace.cull_mask, &t.trace.sbt_offset, &t.trace.sbt_stride, &t.trace.miss})
+  for (auto* v : {&t.trace.flags, &t.trace.cull_mask, &t.trace.sbt_offset, &t.trace.sbt_stride,
+                  &t.trace.miss})
     v->push_back(u(0));
   c.pipeline.raygen = {t};
   GeneratedShader rg = generateGlsl(c, plan).raygen;
@@ -396,12 +486,13 @@ TEST(GenerateGlslErrors, AStageMisuseFailsWithTheLine) {
   GeneratedPipeline g = generateGlsl(c, plan);
   SpirvResult r = compileGlsl(g.miss[0].glsl, Stage::Miss);
   EXPECT_TRUE(r.words.empty());
-  EXPECT_NE(r.error.find("| #error rayspec: ignore is only allowed in any_hit"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("| #error rayspec: ignore is only allowed in any_hit"), std::string::npos)
+      << r.error;
 }
 
 TEST(GlslLiteral, FloatsAreExact) {
-  for (float v : {0.1f, 1.0f, -2.5f, 1e30f, 3.4028235e38f, 1.17549435e-38f, 1e-45f, 0.001f, 16777217.0f,
-                  123456.789f, -0.0f}) {
+  for (float v : {0.1f, 1.0f, -2.5f, 1e30f, 3.4028235e38f, 1.17549435e-38f, 1e-45f, 0.001f,
+                  16777217.0f, 123456.789f, -0.0f}) {
     std::string s = glslFloat(v);
     ASSERT_FALSE(s.empty());
     if (s.front() == '(') s = s.substr(1, s.size() - 2);
@@ -418,7 +509,9 @@ TEST(GlslLiteral, FloatsAreExact) {
   EXPECT_EQ(glslUint(4294967295u), "4294967295u");
 }
 
-uint32_t bits(float v) { return std::bit_cast<uint32_t>(v); }
+uint32_t bits(float v) {
+  return std::bit_cast<uint32_t>(v);
+}
 
 TEST(Bindings, PackRaysRoundTripsFloatBits) {
   Rays rays;
@@ -454,7 +547,8 @@ TEST(Bindings, PackRaysRoundTripsFloatBits) {
 }
 
 // The reader of shaders/scene.glsl, in C++.
-std::array<float, 6> sceneBox(const std::vector<uint32_t>& s, uint32_t inst, uint32_t geom, uint32_t prim) {
+std::array<float, 6> sceneBox(const std::vector<uint32_t>& s, uint32_t inst, uint32_t geom,
+                              uint32_t prim) {
   const uint32_t table = s[1 + inst];
   const uint32_t w = s[table + geom] + 6 * prim;
   std::array<float, 6> box;
@@ -493,7 +587,8 @@ TEST(Bindings, SceneDataFindsEveryBox) {
   for (uint32_t inst : {0u, 4u})
     for (uint32_t g = 0; g < 3; ++g)
       for (uint32_t p = 0; p <= g; ++p)
-        EXPECT_EQ(sceneBox(s, inst, g, p), boxes.geometries[g].aabbs[p]) << inst << " " << g << " " << p;
+        EXPECT_EQ(sceneBox(s, inst, g, p), boxes.geometries[g].aabbs[p])
+            << inst << " " << g << " " << p;
   EXPECT_EQ(sceneBox(s, 3, 0, 0), other.geometries[0].aabbs[0]);
   // Header, 1 table of 3 + 1 table of 1, 7 boxes.
   EXPECT_EQ(s.size(), 1u + 5u + 3u + 1u + 6u * 7u);

@@ -45,48 +45,58 @@ TEST(ExpandSweep, EachVariantKeepsItsParameters) {
   const SweepExpansion ex = expandSweep(kSweep, "s.sweep.yaml", "sbt/s");
   ASSERT_EQ(ex.variants.size(), 4u);
   using P = std::vector<std::pair<std::string, std::string>>;
-  EXPECT_EQ(ex.variants[3].params,
-            (P{{"kind", "box"}, {"geometry", "{aabbs: [[0, 0, 0, 1, 1, 1]]}"}, {"offset", "0x11"}}));
+  EXPECT_EQ(
+      ex.variants[3].params,
+      (P{{"kind", "box"}, {"geometry", "{aabbs: [[0, 0, 0, 1, 1, 1]]}"}, {"offset", "0x11"}}));
   EXPECT_EQ(ex.variants[0].params[2], (std::pair<std::string, std::string>{"offset", "0"}));
 }
 
 TEST(ExpandSweep, AListValueIsWrittenInFlowStyle) {
-  const SweepExpansion ex = expandSweep("sweep:\n  name: v${i}\n  product:\n    d: [[0, 0, -1]]\n    i: [1]\n"
-                                        "rays: {direction: ${d}}\n",
-                                        "f.sweep.yaml", "x/f");
+  const SweepExpansion ex = expandSweep(
+      "sweep:\n  name: v${i}\n  product:\n    d: [[0, 0, -1]]\n    i: [1]\nrays: {direction: "
+      "${d}}\n",
+      "f.sweep.yaml", "x/f");
   ASSERT_TRUE(ex.errors.empty()) << ex.errors[0].format();
-  EXPECT_NE(ex.variants[0].text.find("rays: {direction: [0, 0, -1]}"), std::string::npos) << ex.variants[0].text;
+  EXPECT_NE(ex.variants[0].text.find("rays: {direction: [0, 0, -1]}"), std::string::npos)
+      << ex.variants[0].text;
 }
 
 TEST(ExpandSweep, ValuesMayNameOtherParametersAndNamesMayNest) {
-  const SweepExpansion ex = expandSweep("sweep:\n  name: ${order}\n  rows: [{order: up, all: '[${a}, ${b}]'}, "
-                                        "{order: down, all: '[${b}, ${a}]'}]\n  product:\n    a: [1]\n    b: [2]\n"
-                                        "    list_up: ['[0, 1]']\n    list_down: ['[1, 0]']\n"
-                                        "x: ${all}\ny: ${list_${order}}\n",
-                                        "f.sweep.yaml", "x/f");
+  const SweepExpansion ex = expandSweep(
+      "sweep:\n  name: ${order}\n  rows: [{order: up, all: '[${a}, ${b}]'}, {order: down, all: "
+      "'[${b}, ${a}]'}]\n  product:\n    a: [1]\n    b: [2]\n    list_up: ['[0, 1]']\n    "
+      "list_down: ['[1, 0]']\nx: ${all}\ny: ${list_${order}}\n",
+      "f.sweep.yaml", "x/f");
   ASSERT_TRUE(ex.errors.empty()) << ex.errors[0].format();
   ASSERT_EQ(ex.variants.size(), 2u);
-  EXPECT_NE(ex.variants[1].text.find("x: [2, 1]\ny: [1, 0]"), std::string::npos) << ex.variants[1].text;
-  const SweepExpansion loop = expandSweep("sweep:\n  name: n\n  product: {a: ['${a}']}\nx: ${a}\n", "f.sweep.yaml", "x/f");
+  EXPECT_NE(ex.variants[1].text.find("x: [2, 1]\ny: [1, 0]"), std::string::npos)
+      << ex.variants[1].text;
+  const SweepExpansion loop =
+      expandSweep("sweep:\n  name: n\n  product: {a: ['${a}']}\nx: ${a}\n", "f.sweep.yaml", "x/f");
   ASSERT_EQ(loop.errors.size(), 1u);
-  EXPECT_NE(loop.errors[0].format().find("f.sweep.yaml:4:1: the parameters' values name each other too deeply"),
+  EXPECT_NE(loop.errors[0].format().find(
+                "f.sweep.yaml:4:1: the parameters' values name each other too deeply"),
             std::string::npos);
 }
 
 TEST(ExpandSweep, ASweepTooLargeIsAnErrorNotAnExhaustedMachine) {
   const SweepExpansion many = expandSweep(
-      "sweep:\n  name: ${a}${b}${c}${d}\n  product:\n    a: [0, 1, 2, 3, 4, 5, 6, 7, 8, 9]\n    b: [0, 1, 2, 3, 4, 5, 6, 7, 8, 9]\n"
-      "    c: [0, 1, 2, 3, 4, 5, 6, 7, 8, 9]\n    d: [0, 1, 2, 3, 4, 5, 6, 7, 8, 9]\n    e: [0, 1]\n",
+      "sweep:\n  name: ${a}${b}${c}${d}\n  product:\n    a: [0, 1, 2, 3, 4, 5, 6, 7, 8, 9]\n    b: "
+      "[0, 1, 2, 3, 4, 5, 6, 7, 8, 9]\n    c: [0, 1, 2, 3, 4, 5, 6, 7, 8, 9]\n    d: [0, 1, 2, 3, "
+      "4, 5, 6, 7, 8, 9]\n    e: [0, 1]\n",
       "f.sweep.yaml", "x/f");
   ASSERT_EQ(many.errors.size(), 1u);
-  EXPECT_EQ(many.errors[0].format(), "f.sweep.yaml:2:3: sweep: makes more than 10000 cases; split it");
+  EXPECT_EQ(many.errors[0].format(),
+            "f.sweep.yaml:2:3: sweep: makes more than 10000 cases; split it");
   std::string doubling = "sweep:\n  name: n\n  product:\n    v0: [x]\n";
   for (int i = 1; i <= 24; ++i)
-    doubling += "    v" + std::to_string(i) + ": ['${v" + std::to_string(i - 1) + "}${v" + std::to_string(i - 1) + "}']\n";
+    doubling += "    v" + std::to_string(i) + ": ['${v" + std::to_string(i - 1) + "}${v" +
+                std::to_string(i - 1) + "}']\n";
   const SweepExpansion wide = expandSweep(doubling + "x: ${v24}\n", "f.sweep.yaml", "x/f");
   ASSERT_EQ(wide.errors.size(), 1u);
-  EXPECT_EQ(wide.errors[0].format(), "f.sweep.yaml:29:1: the parameters' values name each other too deeply (over "
-                                     "10000 substitutions, or a line over 64 KiB)");
+  EXPECT_EQ(wide.errors[0].format(),
+            "f.sweep.yaml:29:1: the parameters' values name each other too deeply (over 10000 "
+            "substitutions, or a line over 64 KiB)");
 }
 
 TEST(ExpandSweep, ErrorsNameTheFileLineAndField) {
@@ -98,17 +108,20 @@ TEST(ExpandSweep, ErrorsNameTheFileLineAndField) {
   EXPECT_EQ(first("sweep:\n  name: a${b}\n  product: {b: [1]}\nrules: [${c}]\n"),
             "f.sweep.yaml:4:9: '${c}' names no parameter of the sweep (parameters: b)");
   EXPECT_EQ(first("sweep:\n  name: same\n  product: {b: [1, 2]}\nrules: [R-MASK]\n"),
-            "f.sweep.yaml:2:9: sweep.name: two variants are both named 'x/f/same': the name must use every "
-            "parameter that varies");
+            "f.sweep.yaml:2:9: sweep.name: two variants are both named 'x/f/same': the name must "
+            "use every parameter that varies");
   EXPECT_EQ(first("sweep:\n  name: a${b}\n  product: {b: []}\n"),
             "f.sweep.yaml:3:16: sweep.product.b: expected a non-empty list of values");
   EXPECT_EQ(first("sweep:\n  name: a${b}\n  rows: [{b: 1}, {c: 2}]\n"),
             "f.sweep.yaml:3:18: sweep.rows[1]: every row must name the same parameters as row 0");
-  EXPECT_EQ(first("sweep:\n  name: a\n  prodcut: {b: [1]}\n"),
-            "f.sweep.yaml:3:3: sweep: unknown key 'prodcut' (expected one of: name, rows, product)");
+  EXPECT_EQ(
+      first("sweep:\n  name: a\n  prodcut: {b: [1]}\n"),
+      "f.sweep.yaml:3:3: sweep: unknown key 'prodcut' (expected one of: name, rows, product)");
   EXPECT_EQ(first("rules: [R-MASK]\n"),
-            "f.sweep.yaml:1:1: sweep: a .sweep.yaml file needs a top-level `sweep:` block (cases/README.md, Sweeps)");
-  EXPECT_EQ(first("sweep:\n  name: [\n"), "f.sweep.yaml:3:1: sweep: malformed YAML: end of sequence flow not found");
+            "f.sweep.yaml:1:1: sweep: a .sweep.yaml file needs a top-level `sweep:` block "
+            "(cases/README.md, Sweeps)");
+  EXPECT_EQ(first("sweep:\n  name: [\n"),
+            "f.sweep.yaml:3:1: sweep: malformed YAML: end of sequence flow not found");
 }
 
 TEST(CaseDiscovery, SweepVariantsAreCasesAndTheFilterMatchesEitherName) {
@@ -157,19 +170,25 @@ TEST(CaseDiscovery, ClashingCaseNamesAreErrorsNamingTheFiles) {
   fs::create_directories(dir / "fam" / "a");
   fs::create_directories(dir / "fam" / "x");
   std::ofstream(dir / "fam" / "a.yaml") << "rules: []\n";
-  std::ofstream(dir / "fam" / "a" / "device.yaml") << "rules: []\n";  // fam/a/device: inside fam/a's folder
+  std::ofstream(dir / "fam" / "a" / "device.yaml")
+      << "rules: []\n";                                      // fam/a/device: inside fam/a's folder
   std::ofstream(dir / "fam" / "a-b.yaml") << "rules: []\n";  // sorts between fam/a and fam/a/device
   std::ofstream(dir / "fam" / "x.yaml") << "rules: []\n";
-  std::ofstream(dir / "fam" / "x.sweep.yaml") << "sweep:\n  name: \"${v}\"\n  product:\n    v: [p, q]\nrules: []\n";
-  std::ofstream(dir / "fam" / "e.sweep.yaml") << "sweep:\n  name: \"${v}\"\n  product:\n    v: [\"\", r]\nrules: []\n";
+  std::ofstream(dir / "fam" / "x.sweep.yaml")
+      << "sweep:\n  name: \"${v}\"\n  product:\n    v: [p, q]\nrules: []\n";
+  std::ofstream(dir / "fam" / "e.sweep.yaml")
+      << "sweep:\n  name: \"${v}\"\n  product:\n    v: [\"\", r]\nrules: []\n";
   std::ofstream(dir / "fam" / "fine.yaml") << "rules: []\n";
   const std::vector<CaseFile> all = findCases(dir.string(), "*");
   std::map<std::string, std::string> errors;  // name -> its errors
   for (const CaseFile& f : all)
-    for (const CaseError& e : f.errors) errors[f.name] += e.format() + "\n";
-  EXPECT_NE(errors["fam/a"].find("is a folder of case 'fam/a/device'"), std::string::npos) << errors["fam/a"];
-  EXPECT_NE(errors["fam/a/device"].find("lies inside the folder of case 'fam/a'"), std::string::npos);
-  EXPECT_NE(errors["fam/x"].find("is a folder of case 'fam/x/p'"), std::string::npos) << errors["fam/x"];
+    for (const Error& e : f.errors) errors[f.name] += e.format() + "\n";
+  EXPECT_NE(errors["fam/a"].find("is a folder of case 'fam/a/device'"), std::string::npos)
+      << errors["fam/a"];
+  EXPECT_NE(errors["fam/a/device"].find("lies inside the folder of case 'fam/a'"),
+            std::string::npos);
+  EXPECT_NE(errors["fam/x"].find("is a folder of case 'fam/x/p'"), std::string::npos)
+      << errors["fam/x"];
   EXPECT_NE(errors["fam/e/"].find("is no case name"), std::string::npos) << errors["fam/e/"];
   EXPECT_EQ(errors.count("fam/e/r"), 0u);
   EXPECT_EQ(errors.count("fam/fine"), 0u);
@@ -180,7 +199,8 @@ TEST(CaseDiscovery, ClashingCaseNamesAreErrorsNamingTheFiles) {
   checkCaseNames(twice);
   ASSERT_EQ(twice.size(), 1u);
   ASSERT_EQ(twice[0].errors.size(), 2u);
-  EXPECT_NE(twice[0].errors[0].format().find("is made twice: by one.yaml and by two.yaml"), std::string::npos)
+  EXPECT_NE(twice[0].errors[0].format().find("is made twice: by one.yaml and by two.yaml"),
+            std::string::npos)
       << twice[0].errors[0].format();
   fs::remove_all(dir);
 }
@@ -190,21 +210,28 @@ TEST(CaseDiscovery, ClashingCaseNamesAreErrorsNamingTheFiles) {
 TEST(ExpandSweep, EveryVariantIsCheckedNotOnlyTheFirst) {
   const std::string big(70 << 10, 'x');
   const std::string long_line =
-      "sweep:\n  name: \"n${i}\"\n  rows:\n    - {i: 0, v: a}\n    - {i: 1, v: " + big + "}\nrules: [R-${v}]\n";
+      "sweep:\n  name: \"n${i}\"\n  rows:\n    - {i: 0, v: a}\n    - {i: 1, v: " + big +
+      "}\nrules: [R-${v}]\n";
   SweepExpansion ex = expandSweep(long_line, "long.sweep.yaml", "fam/long");
   ASSERT_FALSE(ex.errors.empty());
-  EXPECT_NE(ex.errors[0].format().find("long.sweep.yaml:6:"), std::string::npos) << ex.errors[0].format();
-  EXPECT_NE(ex.errors[0].format().find("(in variant fam/long/n1)"), std::string::npos) << ex.errors[0].format();
+  EXPECT_NE(ex.errors[0].format().find("long.sweep.yaml:6:"), std::string::npos)
+      << ex.errors[0].format();
+  EXPECT_NE(ex.errors[0].format().find("(in variant fam/long/n1)"), std::string::npos)
+      << ex.errors[0].format();
   EXPECT_TRUE(ex.variants.empty());
-  const std::string self = "sweep:\n  name: \"${w}\"\n  product:\n    w: [p, \"${w}q\"]\nrules: [R-${w}]\n";
+  const std::string self =
+      "sweep:\n  name: \"${w}\"\n  product:\n    w: [p, \"${w}q\"]\nrules: [R-${w}]\n";
   ex = expandSweep(self, "self.sweep.yaml", "fam/self");
   ASSERT_FALSE(ex.errors.empty());
-  EXPECT_NE(ex.errors[0].format().find("name each other too deeply"), std::string::npos) << ex.errors[0].format();
+  EXPECT_NE(ex.errors[0].format().find("name each other too deeply"), std::string::npos)
+      << ex.errors[0].format();
   // A ${...} that only a later variant's value brings, naming no parameter.
-  const std::string later = "sweep:\n  name: \"${u}\"\n  product:\n    u: [p, \"${nope}\"]\nrules: [R-${u}]\n";
+  const std::string later =
+      "sweep:\n  name: \"${u}\"\n  product:\n    u: [p, \"${nope}\"]\nrules: [R-${u}]\n";
   ex = expandSweep(later, "later.sweep.yaml", "fam/later");
   ASSERT_FALSE(ex.errors.empty());
-  EXPECT_NE(ex.errors[0].format().find("'${nope}' names no parameter of the sweep"), std::string::npos)
+  EXPECT_NE(ex.errors[0].format().find("'${nope}' names no parameter of the sweep"),
+            std::string::npos)
       << ex.errors[0].format();
 }
 

@@ -38,7 +38,8 @@ TEST(MotionSpec, BadTextSaysWhatIsWrong) {
   EXPECT_FALSE(parseMotionSpec("x,y,z,1,2", &why));
   // A translation term that is no float (the moved sums are float sums).
   EXPECT_FALSE(parseMotionSpec("x,y,z,0,0,0.1", &why));
-  EXPECT_NE(why.find("'0.1' (term 6): not a finite number exact in float"), std::string::npos) << why;
+  EXPECT_NE(why.find("'0.1' (term 6): not a finite number exact in float"), std::string::npos)
+      << why;
 }
 
 // A raygen that counts before its trace, a closest-hit that branches on a
@@ -71,7 +72,8 @@ TEST(MoveCase, VerdictScopeMovesCasesThatBranchOrDoMoreThanTrace) {
   ASSERT_TRUE(moved) << why;
   EXPECT_EQ(moved->rays.rays[0].origin, (Vec3{1.75f, -3.75f, 9}));
   EXPECT_TRUE(std::isnan(moved->rays.rays[1].origin[1]));  // an undefined ray stays undefined
-  EXPECT_NE(moved->source_hash, p.value->source_hash);     // a saved bundle of the unmoved case does not match
+  EXPECT_NE(moved->source_hash,
+            p.value->source_hash);  // a saved bundle of the unmoved case does not match
   const std::optional<Case> again = moveCase(*p.value, m, &why, MoveScope::Verdict);
   EXPECT_EQ(again->source_hash, moved->source_hash);
 }
@@ -99,7 +101,9 @@ TEST(MoveCase, ASumThatRoundsInDoubleIsNotExact) {
   EXPECT_FALSE(moveCase(*p.value, *far, &why, MoveScope::Verdict));
   EXPECT_NE(why.find("not exact in float"), std::string::npos) << why;
   // 1024 keeps every sum exact: moved.
-  EXPECT_TRUE(moveCase(*p.value, *parseMotionSpec("x,y,z,1024,0,0", &why), &why, MoveScope::Verdict)) << why;
+  EXPECT_TRUE(
+      moveCase(*p.value, *parseMotionSpec("x,y,z,1024,0,0", &why), &why, MoveScope::Verdict))
+      << why;
 }
 
 }  // namespace

@@ -10,7 +10,6 @@
 #include <set>
 #include <string>
 
-#include "suite_cases.h"
 #include "case/parse_case.h"
 #include "metamorphic/compare_permuted.h"
 #include "metamorphic/id_observations.h"
@@ -18,15 +17,20 @@
 #include "model/model_backend.h"
 #include "plan/plan.h"
 #include "results/record_layout.h"
+#include "suite_cases.h"
 
 #include "model_support.h"
 
 namespace rayspec {
 namespace {
 
-Case parse(const std::string& yaml) { return model_test::parseInline(yaml, "metamorphic/m"); }
+Case parse(const std::string& yaml) {
+  return model_test::parseInline(yaml, "metamorphic/m");
+}
 
-Results model(const Case& c) { return model_test::runTier(c, ModelTier::Exact); }
+Results model(const Case& c) {
+  return model_test::runTier(c, ModelTier::Exact);
+}
 
 // A 4x4 grid of cells (32 triangles) in two instances side by side and a
 // third under the right one, two boxes; an any-hit that ignores odd
@@ -85,9 +89,15 @@ TEST(IdObservations, WhatProgramsObserveOfAnId) {
   id.name = "primitive_id";
   Expr three;
   three.literal = {3};
-  for (const auto& [name, idFirst, threshold] : std::vector<std::tuple<std::string, bool, uint64_t>>{
-           {"lt", true, 3}, {"le", true, 4}, {"gt", true, 4}, {"ge", true, 3},
-           {"lt", false, 4}, {"le", false, 3}, {"gt", false, 3}, {"ge", false, 4}}) {
+  for (const auto& [name, idFirst, threshold] :
+       std::vector<std::tuple<std::string, bool, uint64_t>>{{"lt", true, 3},
+                                                            {"le", true, 4},
+                                                            {"gt", true, 4},
+                                                            {"ge", true, 3},
+                                                            {"lt", false, 4},
+                                                            {"le", false, 3},
+                                                            {"gt", false, 3},
+                                                            {"ge", false, 4}}) {
     Expr cmp;
     cmp.kind = Expr::Kind::Op;
     cmp.name = name;
@@ -97,7 +107,8 @@ TEST(IdObservations, WhatProgramsObserveOfAnId) {
     s.cond = cmp;
     t.pipeline.raygen = {s};
     t.pipeline.hit_groups.clear();
-    EXPECT_EQ(observeId(t.pipeline, "primitive_id").below, (std::vector<uint64_t>{threshold})) << name << idFirst;
+    EXPECT_EQ(observeId(t.pipeline, "primitive_id").below, (std::vector<uint64_t>{threshold}))
+        << name << idFirst;
   }
   // Arithmetic on the id observes the id itself: nothing may move.
   Expr sum;
@@ -118,7 +129,8 @@ TEST(PermuteCase, DeterministicAndKeepsEveryPrimitiveAndInstance) {
   // Instance 3 is observed (eq): it stays; the others may exchange.
   for (uint64_t seed = 0; seed < 8; ++seed) EXPECT_EQ(permuteCase(c, seed).instance_of[3], 3u);
   bool instancesMoved = false;
-  for (uint64_t seed = 0; seed < 8; ++seed) instancesMoved = instancesMoved || permuteCase(c, seed).instancesMoved();
+  for (uint64_t seed = 0; seed < 8; ++seed)
+    instancesMoved = instancesMoved || permuteCase(c, seed).instancesMoved();
   EXPECT_TRUE(instancesMoved);
   // Every permuted triangle is an original one, vertex for vertex (winding
   // kept), with the parity of its primitive id; every instance an original.
@@ -131,15 +143,19 @@ TEST(PermuteCase, DeterministicAndKeepsEveryPrimitiveAndInstance) {
     seen.insert(old);
     EXPECT_EQ(old % 2, p % 2);
     for (int k = 0; k < 3; ++k)
-      EXPECT_EQ(g1.vertices[g1.indices[p * 3 + k]], g0.vertices[g0.indices[old * 3 + k]]) << p << " " << k;
+      EXPECT_EQ(g1.vertices[g1.indices[p * 3 + k]], g0.vertices[g0.indices[old * 3 + k]])
+          << p << " " << k;
   }
   EXPECT_EQ(seen.size(), g0.primitiveCount());
   const auto& boxes0 = c.scene.blases[1].geometries[0].aabbs;
   const auto& boxes1 = a.permuted.scene.blases[1].geometries[0].aabbs;
-  for (uint32_t p = 0; p < boxes1.size(); ++p) EXPECT_EQ(boxes1[p], boxes0[a.primitive_of[1][0][p]]);
+  for (uint32_t p = 0; p < boxes1.size(); ++p)
+    EXPECT_EQ(boxes1[p], boxes0[a.primitive_of[1][0][p]]);
   for (uint32_t i = 0; i < a.instance_of.size(); ++i) {
-    EXPECT_EQ(a.permuted.scene.instances[i].transform, c.scene.instances[a.instance_of[i]].transform);
-    EXPECT_EQ(a.permuted.scene.instances[i].custom_index, c.scene.instances[a.instance_of[i]].custom_index);
+    EXPECT_EQ(a.permuted.scene.instances[i].transform,
+              c.scene.instances[a.instance_of[i]].transform);
+    EXPECT_EQ(a.permuted.scene.instances[i].custom_index,
+              c.scene.instances[a.instance_of[i]].custom_index);
   }
 }
 
@@ -156,7 +172,8 @@ TEST(ComparePermuted, NoticesAMovedAnswer) {
   uint32_t clearHit = ~0u;
   const uint32_t words = recordWords();
   for (uint32_t ray = 0; ray < 32 && clearHit == ~0u; ++ray)
-    if (!ambiguous.count(ray) && original.records[ray * words + findRecordField("hit")->offset] == 1 &&
+    if (!ambiguous.count(ray) &&
+        original.records[ray * words + findRecordField("hit")->offset] == 1 &&
         original.records[ray * words + findRecordField("instance_id")->offset] != 2)  // a triangle
       clearHit = ray;
   ASSERT_NE(clearHit, ~0u);
@@ -166,7 +183,8 @@ TEST(ComparePermuted, NoticesAMovedAnswer) {
     w = std::string(field) == "hit_t" ? w + 4096 : std::string(field) == "hit" ? 0 : w ^ 2;
     const auto problems = comparePermuted(p, original, edited);
     ASSERT_EQ(problems.size(), 1u) << field;
-    EXPECT_NE(problems[0].find("ray " + std::to_string(clearHit) + ": clear, "), std::string::npos) << problems[0];
+    EXPECT_NE(problems[0].find("ray " + std::to_string(clearHit) + ": clear, "), std::string::npos)
+        << problems[0];
   }
   // An ambiguous ray answering outside its legal set.
   ASSERT_FALSE(original.ambiguous.empty());
@@ -174,7 +192,8 @@ TEST(ComparePermuted, NoticesAMovedAnswer) {
   const uint32_t ray = original.ambiguous[0].ray;
   edited.records[ray * words + findRecordField("instance_id")->offset] = 99;
   edited.records[ray * words + findRecordField("hit")->offset] = 1;
-  edited.records[ray * words] |= 1u << recordFieldIndex("hit") | 1u << recordFieldIndex("instance_id");
+  edited.records[ray * words] |=
+      1u << recordFieldIndex("hit") | 1u << recordFieldIndex("instance_id");
   const auto problems = comparePermuted(p, original, edited);
   ASSERT_EQ(problems.size(), 1u);
   EXPECT_NE(problems[0].find("not a legal answer"), std::string::npos) << problems[0];
@@ -219,19 +238,22 @@ namespace {
 TEST(OrderingSweep, EveryOrderGivesTheSameAnswers) {
   const std::vector<CaseFile> variants = findCases(kSuiteCases, "intersection/ordering");
   ASSERT_GE(variants.size(), 20u);
-  const std::vector<std::string> fields = {"hit", "hit_t", "hit_kind", "instance_custom_index", "value"};
+  const std::vector<std::string> fields = {"hit", "hit_t", "hit_kind", "instance_custom_index",
+                                           "value"};
   std::vector<uint32_t> first_records;
   std::map<std::string, uint64_t> first_counters;
   for (const CaseFile& f : variants) {
     const ParseResult parsed = loadSuiteCase(f);
     ASSERT_TRUE(parsed.value) << f.name;
     const Results r = model(*parsed.value);
-    ASSERT_TRUE(r.ambiguous.empty()) << f.name << ": the scene has no ties, edges or faces on its rays";
+    ASSERT_TRUE(r.ambiguous.empty())
+        << f.name << ": the scene has no ties, edges or faces on its rays";
     std::vector<uint32_t> records;
     for (size_t ray = 0; ray * recordWords() < r.records.size(); ++ray)
       for (const std::string& name : fields) {
         const RecordField* field = findRecordField(name);
-        for (uint32_t w = 0; w < field->words; ++w) records.push_back(r.records[ray * recordWords() + field->offset + w]);
+        for (uint32_t w = 0; w < field->words; ++w)
+          records.push_back(r.records[ray * recordWords() + field->offset + w]);
       }
     const std::map<std::string, uint64_t> counters = {{"miss", r.counters.at("miss")},
                                                       {"closesthit", r.counters.at("closesthit")}};

@@ -5,17 +5,19 @@
 
 #include <cstdio>
 
-#include "suite_cases.h"
 #include "metamorphic/permute_case.h"
 #include "metamorphic/transform_case.h"
 #include "model/model_backend.h"
 #include "plan/plan.h"
 #include "stability/leak_counts.h"
+#include "suite_cases.h"
 
 namespace rayspec {
 namespace {
 
-Results exact(const Case& c) { return runOnModel(c, derivePlan(c), ModelOptions{ModelTier::Exact, 2}); }
+Results exact(const Case& c) {
+  return runOnModel(c, derivePlan(c), ModelOptions{ModelTier::Exact, 2});
+}
 
 const char* kCase = R"(rules: [R-WATERTIGHT]
 scene:
@@ -36,7 +38,8 @@ TEST(MoveCase, MapsInstancesAndRaysExactly) {
   ASSERT_TRUE(m) << why;
   EXPECT_EQ(m->rays.rays[0].origin, (Vec3{1023.5f, 3.25f, 2}));
   EXPECT_EQ(m->rays.rays[0].direction, (Vec3{-0.5f, 0, -1}));
-  EXPECT_EQ(m->scene.instances[0].transform, (Transform{0, -1, 0, 1023.5f, 1, 0, 0, 3, 0, 0, 1, 0}));
+  EXPECT_EQ(m->scene.instances[0].transform,
+            (Transform{0, -1, 0, 1023.5f, 1, 0, 0, 3, 0, 0, 1, 0}));
   // Not exact in float: 2^25 + 0.5.
   EXPECT_FALSE(moveCase(*p.value, {{0, 1, 2}, {1, 1, 1}, {33554432, 0, 0}}, &why));
   EXPECT_NE(why.find("not exact"), std::string::npos);
@@ -44,7 +47,8 @@ TEST(MoveCase, MapsInstancesAndRaysExactly) {
   EXPECT_NE(why.find("signed permutation"), std::string::npos);
 }
 
-void expectSameCounts(const Case& c, const Results& base, const Results& moved, const std::string& what) {
+void expectSameCounts(const Case& c, const Results& base, const Results& moved,
+                      const std::string& what) {
   ASSERT_EQ(moved.statusText(), "ok") << c.name << " " << what;
   const LeakCounts a = countLeaks(base), b = countLeaks(moved);
   EXPECT_EQ(a.rays, b.rays) << c.name << " " << what;
@@ -82,7 +86,8 @@ TEST(MoveCase, StabilityFamiliesKeepTheirCounts) {
     }
     expectSameCounts(c, base, exact(permuteCase(c, 5).permuted), "permuted");
   }
-  std::printf("%d stability cases, %d moved, %d motions refused as inexact\n", cases, moved, refused);
+  std::printf("%d stability cases, %d moved, %d motions refused as inexact\n", cases, moved,
+              refused);
   EXPECT_GE(cases, 6);
   EXPECT_GT(moved, 2 * cases);
 }

@@ -24,7 +24,8 @@ constexpr double kU = 5.9604644775390625e-08;  // 2^-24
 
 DVec3 toObject(const std::array<double, 12>& m, const Vec3& v, double w) {
   DVec3 r;
-  for (int k = 0; k < 3; ++k) r[k] = m[k * 4] * v[0] + m[k * 4 + 1] * v[1] + m[k * 4 + 2] * v[2] + m[k * 4 + 3] * w;
+  for (int k = 0; k < 3; ++k)
+    r[k] = m[k * 4] * v[0] + m[k * 4 + 1] * v[1] + m[k * 4 + 2] * v[2] + m[k * 4 + 3] * w;
   return r;
 }
 
@@ -60,9 +61,11 @@ TEST(BoxPad, EveryKeptTriangleLiesInABoxTheRayCrosses) {
         for (const ModelGeometry& g : s.blases[mi.blas].geometries) {
           if (g.kind != Geometry::Kind::Triangles) continue;
           for (const Ray& r : c.rays.rays) {
-            const DVec3 o = toObject(mi.inverse, r.origin, 1), d = toObject(mi.inverse, r.direction, 0);
+            const DVec3 o = toObject(mi.inverse, r.origin, 1),
+                        d = toObject(mi.inverse, r.direction, 0);
             FrameError err;
-            objectRayFrameError(mi.form, mi.inverse, mi.inverse_f, {r.origin[0], r.origin[1], r.origin[2]},
+            objectRayFrameError(mi.form, mi.inverse, mi.inverse_f,
+                                {r.origin[0], r.origin[1], r.origin[2]},
                                 {r.direction[0], r.direction[1], r.direction[2]}, err);
             err.vertex = g.vertex_err;
             for (size_t p = 0; p < g.triangles.size(); ++p) {
@@ -71,7 +74,8 @@ TEST(BoxPad, EveryKeptTriangleLiesInABoxTheRayCrosses) {
                   v2{tri[2][0], tri[2][1], tri[2][2]};
               const WatertightHit h = watertightIntersect(o, d, v0, v1, v2, err);
               if (!h.valid || (!h.hit && h.ambiguity == TriAmbiguity::None)) continue;
-              if (h.t < r.tmin * (1 - 1e-5) || h.t > r.tmax * (1 + 1e-5)) continue;  // Embree's interval
+              if (h.t < r.tmin * (1 - 1e-5) || h.t > r.tmax * (1 + 1e-5))
+                continue;  // Embree's interval
               ++kept;
               DVec3 lo, hi, farLo, farHi;
               double size = 0;
@@ -96,8 +100,8 @@ TEST(BoxPad, EveryKeptTriangleLiesInABoxTheRayCrosses) {
                 continue;
               }
               ASSERT_TRUE(crosses(o, d, lo, hi))
-                  << f.name << " primitive " << p << " hit " << h.hit << " ambiguity " << int(h.ambiguity)
-                  << " pad " << g.ray_pad;
+                  << f.name << " primitive " << p << " hit " << h.hit << " ambiguity "
+                  << int(h.ambiguity) << " pad " << g.ray_pad;
             }
           }
         }
@@ -115,17 +119,21 @@ TEST(BoxPad, EveryKeptTriangleLiesInABoxTheRayCrosses) {
 // the former 1e-5 of the translation.
 // A 4x4 grid of unit cells centred at CENTER in its BLAS, placed by the
 // instance line INSTANCE, seen straight down from 3 units above ORIGIN.
-Case gridSeenFromAbove(const std::string& center, const std::string& instance, const std::string& origin) {
+Case gridSeenFromAbove(const std::string& center, const std::string& instance,
+                       const std::string& origin) {
   return model_test::parseInline(R"(
 rules: [R-PREC]
 scene:
   blas:
     mesh:
-      - triangles: {grid: {cells: [4, 4], size: [4, 4], center: [)" + center + R"(]}}
+      - triangles: {grid: {cells: [4, 4], size: [4, 4], center: [)" +
+                                 center + R"(]}}
   instances:
     - )" + instance + R"(
 rays:
-  grid: {size: [17, 17], origin: [)" + origin + R"(, 3], du: [0.25, 0, 0], dv: [0, 0.25, 0], direction: [0, 0, -1]}
+  grid: {size: [17, 17], origin: [)" +
+                                 origin +
+                                 R"(, 3], du: [0.25, 0, 0], dv: [0, 0.25, 0], direction: [0, 0, -1]}
 pipeline:
   miss:
     - [count: miss]
@@ -142,8 +150,8 @@ TEST(BoxPad, TighterThanTheFormerPads) {
   ASSERT_EQ(pads.size(), 1u);
   EXPECT_GT(pads[0], 128 * kU * 3);  // the zone, at least 3 units away
   EXPECT_LT(pads[0], 1e-2);
-  const Case moved = gridSeenFromAbove("2, 2, 0", "{blas: mesh, transform: {translate: [1000000, 1000000, 0]}}",
-                                       "1000000, 1000000");
+  const Case moved = gridSeenFromAbove(
+      "2, 2, 0", "{blas: mesh, transform: {translate: [1000000, 1000000, 0]}}", "1000000, 1000000");
   const double pad = blasRayPads(moved)[0];
   EXPECT_GT(pad, 2 * 2 * kU * 1e6);
   EXPECT_LT(pad, 1e-5 * 1e6 / 2);

@@ -32,13 +32,15 @@ TEST(ExactInterval, Criterion) {
   EXPECT_FALSE(exactEnds({0.5, -0.5, 5}, {0, 0, -1}, v0, v1, {1, 1, 0.5}, 4.75, 0, 4.75).tmax);
   // Values that need more bits than the grid allows (0.1f has 24).
   const double tenth = static_cast<double>(0.1f);
-  EXPECT_FALSE(exactEnds({0.5, -0.5, 5}, {0, 0, -1}, {-1, -1, tenth}, {1, -1, tenth}, {1, 1, tenth}, 5 - tenth, 0,
-                         5 - tenth).tmax);
+  EXPECT_FALSE(exactEnds({0.5, -0.5, 5}, {0, 0, -1}, {-1, -1, tenth}, {1, -1, tenth}, {1, 1, tenth},
+                         5 - tenth, 0, 5 - tenth)
+                   .tmax);
   // An exact t a float step inside an end that is off the grid: a device that
   // compares N with tmax * D may round the product onto N.
   const double above = std::nextafter(5.0f, 6.0f), below = std::nextafter(5.0f, 4.0f);
   EXPECT_FALSE(exactEnds({0.5, -0.5, 5}, {0, 0, -1}, v0, v1, v2, 5, 0, above).tmax);
-  EXPECT_TRUE(exactEnds({0.5, -0.5, 5}, {0, 0, -1}, v0, v1, v2, 5, 0, below).tmax) << "t beyond tmax: monotonic";
+  EXPECT_TRUE(exactEnds({0.5, -0.5, 5}, {0, 0, -1}, v0, v1, v2, 5, 0, below).tmax)
+      << "t beyond tmax: monotonic";
   EXPECT_FALSE(exactEnds({0.5, -0.5, 5}, {0, 0, -1}, v0, v1, v2, 5, below, 10).tmin);
   EXPECT_TRUE(exactEnds({0.5, -0.5, 5}, {0, 0, -1}, v0, v1, v2, 5, above, 10).tmin);
 }
@@ -68,7 +70,8 @@ TEST(ExactInterval, ObjectRayOfAnInstance) {
   EXPECT_FALSE(objectRayExact(InstanceForm::ScaledPermutation, t, {10.25, 0.5, 2}));
   t = kIdentity;
   t[3] = 1000;  // lavapipe's inverse of this translation is off by one float step
-  EXPECT_FALSE(objectRayExact(InstanceForm::ScaledPermutation, t, {static_cast<double>(1000.3f), 0.5, 2}));
+  EXPECT_FALSE(
+      objectRayExact(InstanceForm::ScaledPermutation, t, {static_cast<double>(1000.3f), 0.5, 2}));
   EXPECT_FALSE(objectRayExact(InstanceForm::General, t, {1000, 0, 2}));
 }
 
@@ -77,20 +80,30 @@ TEST(ExactInterval, ObjectRayOfAnInstance) {
 // (t rounds on a device) stay ties with both answers.
 TEST(Model, TriangleIntervalIsOpen) {
   for (ModelTier tier : kTiers) {
-    Ray a = downRay(0.5f, -0.5f); a.tmax = 5;    // hit exactly at tmax: no
-    Ray b = downRay(0.5f, -0.5f); b.tmin = 5;    // exactly at tmin: no
-    Ray d = downRay(0.5f, -0.5f); d.tmax = 5.001f;
-    Ray e = downRay(0.5f, -0.5f); e.direction = {0, 0, -2}; e.tmax = 2.5f;  // t = 2.5 = tmax
-    Ray f = downRay(0.5f, -0.5f); f.direction = {0, 0, -0.5f}; f.tmin = 10;  // t = 10 = tmin
+    Ray a = downRay(0.5f, -0.5f);
+    a.tmax = 5;  // hit exactly at tmax: no
+    Ray b = downRay(0.5f, -0.5f);
+    b.tmin = 5;  // exactly at tmin: no
+    Ray d = downRay(0.5f, -0.5f);
+    d.tmax = 5.001f;
+    Ray e = downRay(0.5f, -0.5f);
+    e.direction = {0, 0, -2};
+    e.tmax = 2.5f;  // t = 2.5 = tmax
+    Ray f = downRay(0.5f, -0.5f);
+    f.direction = {0, 0, -0.5f};
+    f.tmin = 10;  // t = 10 = tmin
     Case c = baseCase({quad()}, {a, b, d, e, f});
     Results r = run(c, tier);
-    for (uint32_t ray : {0u, 1u, 3u, 4u}) EXPECT_EQ(word(r, ray, "hit"), 0u) << modelTierName(tier) << " " << ray;
+    for (uint32_t ray : {0u, 1u, 3u, 4u})
+      EXPECT_EQ(word(r, ray, "hit"), 0u) << modelTierName(tier) << " " << ray;
     EXPECT_EQ(word(r, 2, "hit"), 1u) << modelTierName(tier);
     EXPECT_TRUE(r.ambiguous.empty()) << modelTierName(tier);
   }
   const float z = 0.1f;
-  Ray a = downRay(0.5f, -0.5f); a.tmax = 5 - z;  // 4.9f is above 5 - 0.1f: the model hits
-  Ray b = downRay(0.5f, -0.5f); b.tmin = 5 - z;  // the model misses
+  Ray a = downRay(0.5f, -0.5f);
+  a.tmax = 5 - z;  // 4.9f is above 5 - 0.1f: the model hits
+  Ray b = downRay(0.5f, -0.5f);
+  b.tmin = 5 - z;  // the model misses
   Case c = baseCase({quad(z)}, {a, b});
   Results r = run(c, ModelTier::Exact);
   auto amb = byRay(r);
@@ -107,8 +120,11 @@ TEST(Model, TriangleIntervalIsOpen) {
 // Exact t a float step inside an end off the grid: a tie; not
 // axis-aligned: a tie; an instance translation on the grid: exact.
 TEST(ExactInterval, WhereTheClaimStops) {
-  Ray inside = downRay(0.5f, -0.5f); inside.tmax = std::nextafter(5.0f, 6.0f);
-  Ray slanted = downRay(0.5f - 1.25f, -0.5f); slanted.direction = {0.25f, 0, -1}; slanted.tmax = 5;
+  Ray inside = downRay(0.5f, -0.5f);
+  inside.tmax = std::nextafter(5.0f, 6.0f);
+  Ray slanted = downRay(0.5f - 1.25f, -0.5f);
+  slanted.direction = {0.25f, 0, -1};
+  slanted.tmax = 5;
   Case c = baseCase({quad()}, {inside, slanted});
   Results r = run(c, ModelTier::Exact);
   auto amb = byRay(r);
@@ -118,7 +134,8 @@ TEST(ExactInterval, WhereTheClaimStops) {
   ASSERT_EQ(amb.count(1), 1u);
   EXPECT_EQ(amb[1]->reason, AmbiguityReason::TmaxTie);
 
-  Ray moved = downRay(10.5f, -0.5f); moved.tmax = 5;
+  Ray moved = downRay(10.5f, -0.5f);
+  moved.tmax = 5;
   Case t = baseCase({quad()}, {moved});
   t.scene.instances[0].transform[3] = 10;
   Results rt = run(t, ModelTier::Exact);
@@ -151,7 +168,8 @@ TEST(ExactInterval, EndToleranceLivesInTheTranslatedFrame) {
 // A shared edge exactly at tmax: neither triangle is a candidate, so no
 // what-if run may force one in: the ray is a clear miss.
 TEST(ExactInterval, SharedEdgeAtAnExactEndIsAClearMiss) {
-  Ray r0 = downRay(0.25f, 0.25f); r0.tmax = 5;
+  Ray r0 = downRay(0.25f, 0.25f);
+  r0.tmax = 5;
   Ray r1 = downRay(0.25f, 0.25f);
   Case c = baseCase({quad()}, {r0, r1});
   Results r = run(c, ModelTier::Exact);
@@ -165,16 +183,23 @@ TEST(ExactInterval, SharedEdgeAtAnExactEndIsAClearMiss) {
 // R-CAND-AABB-CLOSED: reports at exactly the ray's tmin and tmax are
 // accepted, and no tie: nothing is committed yet.
 TEST(ExactInterval, AabbReportsAtTheEndsAreAccepted) {
-  Ray a = downRay(0, 0); a.tmin = 1; a.tmax = 10;
+  Ray a = downRay(0, 0);
+  a.tmin = 1;
+  a.tmax = 10;
   Case c = baseCase({boxes({{-1, -1, -1, 1, 1, 1}})}, {a, a});
-  Stmt atMax; atMax.kind = Stmt::Kind::Report; atMax.t = bi("ray_tmax"); atMax.hit_kind = lit(1);
-  Stmt atMin = atMax; atMin.t = bi("ray_tmin");
+  Stmt atMax;
+  atMax.kind = Stmt::Kind::Report;
+  atMax.t = bi("ray_tmax");
+  atMax.hit_kind = lit(1);
+  Stmt atMin = atMax;
+  atMin.t = bi("ray_tmin");
   Stmt ok = recordExpr("value", lit(1)), no = recordExpr("value", lit(0));
   atMax.then_ = {ok};
   atMax.else_ = {no};
   atMin.then_ = {ok};
   atMin.else_ = {no};
-  c.pipeline.hit_groups[0].intersection = Program{ifThen(op("eq", {bi("launch_id_x"), lit(0)}), {atMax}, {atMin})};
+  c.pipeline.hit_groups[0].intersection =
+      Program{ifThen(op("eq", {bi("launch_id_x"), lit(0)}), {atMax}, {atMin})};
   Results r = run(c, ModelTier::Exact);
   ASSERT_EQ(r.statusText(), "ok");
   EXPECT_TRUE(r.ambiguous.empty());

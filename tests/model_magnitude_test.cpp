@@ -22,7 +22,9 @@ using namespace model_test;
 enum class Placement { Vertices, Instance };
 enum class Aim { Centre, Edge, Vertex };
 
-const char* placementName(Placement p) { return p == Placement::Vertices ? "vertices" : "instance"; }
+const char* placementName(Placement p) {
+  return p == Placement::Vertices ? "vertices" : "instance";
+}
 
 struct Scene {
   Case c;
@@ -41,7 +43,8 @@ Ray through(double x, double y, bool tilted) {
 // vertices, or by the instance translation.
 Case placed(Geometry g, double m, Placement p, std::vector<Ray> rays) {
   if (p == Placement::Vertices)
-    for (Vec3& v : g.vertices) v = {static_cast<float>(v[0] + m), static_cast<float>(v[1] + m), v[2]};
+    for (Vec3& v : g.vertices)
+      v = {static_cast<float>(v[0] + m), static_cast<float>(v[1] + m), v[2]};
   Case c = baseCase({g}, std::move(rays));
   if (p == Placement::Instance) {
     c.scene.instances[0].transform[3] = static_cast<float>(m);
@@ -97,9 +100,10 @@ Scene closedFan(double m, Placement p) {
   for (uint32_t k = 0; k < 6; ++k) g.indices.insert(g.indices.end(), {0, 1 + k, 1 + (k + 1) % 6});
   const Vec3 c = g.vertices[0], a = g.vertices[1], b = g.vertices[2];
   Scene s;
-  std::vector<Ray> rays = {through(m + c[0], m + c[1], false),
-                           through(m + (double(c[0]) + a[0]) / 2, m + (double(c[1]) + a[1]) / 2, false),
-                           through(m + (double(c[0]) + a[0] + b[0]) / 3, m + (double(c[1]) + a[1] + b[1]) / 3, false)};
+  std::vector<Ray> rays = {
+      through(m + c[0], m + c[1], false),
+      through(m + (double(c[0]) + a[0]) / 2, m + (double(c[1]) + a[1]) / 2, false),
+      through(m + (double(c[0]) + a[0] + b[0]) / 3, m + (double(c[1]) + a[1] + b[1]) / 3, false)};
   const float cx1 = static_cast<float>(m + c[0]), cy1 = static_cast<float>(m + c[1]);
   rays.push_back(through(std::nextafter(cx1, 2 * cx1), std::nextafter(cy1, 0.0f), false));
   s.aims = {Aim::Vertex, Aim::Edge, Aim::Centre, Aim::Vertex};
@@ -108,7 +112,8 @@ Scene closedFan(double m, Placement p) {
 }
 
 struct Tally {
-  int n[3] = {}, ambiguous[3] = {}, labelled[3] = {};  // per Aim; labelled: with the aim's own reason
+  int n[3] = {}, ambiguous[3] = {},
+      labelled[3] = {};  // per Aim; labelled: with the aim's own reason
 };
 
 Tally tally(const Scene& s, const Results& r) {
@@ -119,7 +124,8 @@ Tally tally(const Scene& s, const Results& r) {
     ++t.n[k];
     if (!amb.count(ray)) continue;
     ++t.ambiguous[k];
-    const AmbiguityReason want = s.aims[ray] == Aim::Vertex ? AmbiguityReason::Vertex : AmbiguityReason::Edge;
+    const AmbiguityReason want =
+        s.aims[ray] == Aim::Vertex ? AmbiguityReason::Vertex : AmbiguityReason::Edge;
     if (amb[ray]->reason == want) ++t.labelled[k];
   }
   return t;
@@ -135,10 +141,13 @@ TEST(ModelMagnitude, GridCentresClearEdgesAndVerticesAmbiguous) {
         const Results r = run(s.c, ModelTier::Exact);
         ASSERT_EQ(r.statusText(), "ok");
         const Tally t = tally(s, r);
-        std::printf("unit grid at %g by %s%s: ambiguous centres %d/%d, edges %d/%d (edge %d), vertices %d/%d (vertex %d)\n",
-                    m, placementName(p), tilted ? ", tilted rays" : "", t.ambiguous[0], t.n[0], t.ambiguous[1], t.n[1],
-                    t.labelled[1], t.ambiguous[2], t.n[2], t.labelled[2]);
-        const std::string where = std::to_string(m) + " " + placementName(p) + (tilted ? " tilted" : "");
+        std::printf(
+            "unit grid at %g by %s%s: ambiguous centres %d/%d, edges %d/%d (edge %d), vertices "
+            "%d/%d (vertex %d)\n",
+            m, placementName(p), tilted ? ", tilted rays" : "", t.ambiguous[0], t.n[0],
+            t.ambiguous[1], t.n[1], t.labelled[1], t.ambiguous[2], t.n[2], t.labelled[2]);
+        const std::string where =
+            std::to_string(m) + " " + placementName(p) + (tilted ? " tilted" : "");
         EXPECT_EQ(t.ambiguous[0], 0) << where;
         EXPECT_EQ(t.labelled[1], t.n[1]) << where;
         EXPECT_EQ(t.labelled[2], t.n[2]) << where;
@@ -175,11 +184,13 @@ TEST(ModelMagnitude, ClosedFanCentreIsAVertexAndASpokeAnEdge) {
       } else if (m >= 1e3) {
         EXPECT_EQ(amb.count(3), 0u) << where;
       }
-      std::printf("closed fan at %g by %s: centre vertex %s, spoke %s, centroid %s, a float step off the vertex %s\n", m,
-                  placementName(p), amb.count(0) ? ambiguityReasonName(amb[0]->reason) : "clear",
-                  amb.count(1) ? ambiguityReasonName(amb[1]->reason) : "clear",
-                  amb.count(2) ? ambiguityReasonName(amb[2]->reason) : "clear",
-                  amb.count(3) ? ambiguityReasonName(amb[3]->reason) : "clear");
+      std::printf(
+          "closed fan at %g by %s: centre vertex %s, spoke %s, centroid %s, a float step off the "
+          "vertex %s\n",
+          m, placementName(p), amb.count(0) ? ambiguityReasonName(amb[0]->reason) : "clear",
+          amb.count(1) ? ambiguityReasonName(amb[1]->reason) : "clear",
+          amb.count(2) ? ambiguityReasonName(amb[2]->reason) : "clear",
+          amb.count(3) ? ambiguityReasonName(amb[3]->reason) : "clear");
     }
 }
 

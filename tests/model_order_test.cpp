@@ -50,7 +50,9 @@ Case stacked(const std::string& anyHit) {
   return parseInline(text, "anyhit/order");
 }
 
-Results runExact(const Case& c) { return runTier(c, ModelTier::Exact, 1); }
+Results runExact(const Case& c) {
+  return runTier(c, ModelTier::Exact, 1);
+}
 
 using Key = std::array<uint32_t, 3>;
 
@@ -94,7 +96,8 @@ TEST(ModelOrder, AFarAnswerPassesOnlyWhereTheOrderAllowsIt) {
 // one and never reaches the far one; a device meeting the far one first ends
 // there. Both are legal.
 TEST(ModelOrder, TerminateOnTheFarTriangleOnlyIsStillOrderDependent) {
-  const Results r = runExact(stacked("[count: anyhit, {if: {eq: [primitive_id, 1]}, then: [terminate]}]"));
+  const Results r =
+      runExact(stacked("[count: anyhit, {if: {eq: [primitive_id, 1]}, then: [terminate]}]"));
   ASSERT_EQ(r.statusText(), "ok");
   ASSERT_EQ(r.ambiguous.size(), 1u);
   EXPECT_EQ(r.ambiguous[0].reason, AmbiguityReason::Order);
@@ -106,11 +109,13 @@ TEST(ModelOrder, TerminateOnTheFarTriangleOnlyIsStillOrderDependent) {
 // near triangle (whatever comes first, it ends on it), an any-hit that never
 // terminates, and opaque geometry (no any-hit runs).
 TEST(ModelOrder, OrderIndependentAnswersStayClear) {
-  for (const char* anyHit : {"[count: anyhit, {if: {eq: [primitive_id, 0]}, then: [terminate]}]", "[count: anyhit]",
-                             "[count: anyhit, {if: {eq: [primitive_id, 1]}, then: [ignore]}]"}) {
+  for (const char* anyHit :
+       {"[count: anyhit, {if: {eq: [primitive_id, 0]}, then: [terminate]}]", "[count: anyhit]",
+        "[count: anyhit, {if: {eq: [primitive_id, 1]}, then: [ignore]}]"}) {
     const Results r = runExact(stacked(anyHit));
     ASSERT_EQ(r.statusText(), "ok");
-    EXPECT_TRUE(r.ambiguous.empty()) << anyHit << ": " << ambiguityReasonName(r.ambiguous[0].reason);
+    EXPECT_TRUE(r.ambiguous.empty())
+        << anyHit << ": " << ambiguityReasonName(r.ambiguous[0].reason);
     EXPECT_EQ(answer(r, 0), (Key{0, 0, 0})) << anyHit;
   }
   Case opaque = stacked("[count: anyhit, terminate]");

@@ -36,9 +36,9 @@ void check(const DVec3& o, const DVec3& d, const DVec3& v0, const DVec3& v1, con
   if (kept) ++c.kept;
   if (!watertightCertainMiss(w, v0, v1, v2, err.vertex)) return;
   ++c.rejected;
-  ASSERT_FALSE(kept) << "rejected a kept triangle: o " << o[0] << " " << o[1] << " " << o[2] << " d " << d[0]
-                     << " " << d[1] << " " << d[2] << " hit " << full.hit << " amb "
-                     << static_cast<int>(full.ambiguity);
+  ASSERT_FALSE(kept) << "rejected a kept triangle: o " << o[0] << " " << o[1] << " " << o[2]
+                     << " d " << d[0] << " " << d[1] << " " << d[2] << " hit " << full.hit
+                     << " amb " << static_cast<int>(full.ambiguity);
 }
 
 FrameError someError(std::mt19937_64& rng, double magnitude) {
@@ -63,7 +63,9 @@ TEST(Rejection, RandomRaysAndTriangles) {
   for (double m : {0.0, 1.0, 1e3, 1e5, 1e6, 1e9}) {
     for (int n = 0; n < 20000; ++n) {
       const double size = std::pow(10.0, 3 * u(rng));  // 1e-3 .. 1e3
-      auto vert = [&] { return DVec3{float(m + size * u(rng)), float(m + size * u(rng)), float(size * u(rng))}; };
+      auto vert = [&] {
+        return DVec3{float(m + size * u(rng)), float(m + size * u(rng)), float(size * u(rng))};
+      };
       const DVec3 v0 = vert(), v1 = vert(), v2 = vert();
       const DVec3 o{float(m + 2 * size * u(rng)), float(m + 2 * size * u(rng)), float(3 * size)};
       const DVec3 d{float(u(rng)), float(u(rng)), float(-0.2 - std::fabs(u(rng)))};
@@ -97,7 +99,8 @@ TEST(Rejection, EdgeAndVertexHittingRays) {
       targets.push_back(a);
       for (int s = 1; s < 8; ++s) {
         const double f = s / 8.0;
-        targets.push_back({centre[0] + f * (a[0] - centre[0]), centre[1] + f * (a[1] - centre[1]), 0});
+        targets.push_back(
+            {centre[0] + f * (a[0] - centre[0]), centre[1] + f * (a[1] - centre[1]), 0});
         targets.push_back({a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]), 0});
       }
     }
@@ -131,10 +134,12 @@ TEST(Rejection, ClearMissesAreRejectedNaNNever) {
   large.origin = {0.02, 0.02, 0};
   const WatertightRay near = prepareWatertightRay({0.49, 0.51, 5}, d, large);
   EXPECT_FALSE(watertightCertainMiss(near, v0, v1, v2, {}));
-  EXPECT_TRUE(watertightCertainMiss(prepareWatertightRay({0.49, 0.51, 5}, d, FrameError{}), v0, v1, v2, {}));
+  EXPECT_TRUE(watertightCertainMiss(prepareWatertightRay({0.49, 0.51, 5}, d, FrameError{}), v0, v1,
+                                    v2, {}));
   EXPECT_FALSE(watertightCertainMiss(beside, {NAN, 0, 0}, v1, v2, {}));
   EXPECT_FALSE(watertightCertainMiss(beside, v0, {INFINITY, 0, 0}, v2, {}));
-  EXPECT_FALSE(watertightCertainMiss(prepareWatertightRay({2, 0.5, 5}, {0, 0, 0}, FrameError{}), v0, v1, v2, {}));
+  EXPECT_FALSE(watertightCertainMiss(prepareWatertightRay({2, 0.5, 5}, {0, 0, 0}, FrameError{}), v0,
+                                     v1, v2, {}));
 }
 
 }  // namespace

@@ -27,9 +27,14 @@ Case sphereCase(std::vector<Ray> rays) {
   g.aabbs = {{-2, -2, -1, 2, 2, 1}};
   g.flags = kGeometryOpaque;
   Case c = baseCase({g}, std::move(rays));
-  Stmt far; far.kind = Stmt::Kind::Report; far.t = op("sphere_far", {}); far.hit_kind = lit(2);
+  Stmt far;
+  far.kind = Stmt::Kind::Report;
+  far.t = op("sphere_far", {});
+  far.hit_kind = lit(2);
   far.then_ = {count("far_accepted")};
-  Stmt near = far; near.t = op("sphere_near", {}); near.hit_kind = lit(1);
+  Stmt near = far;
+  near.t = op("sphere_near", {});
+  near.hit_kind = lit(1);
   near.then_ = {count("near_accepted")};
   c.pipeline.hit_groups[0].intersection = Program{ifThen(op("sphere_hit", {}), {far, near})};
   return c;
@@ -38,7 +43,8 @@ Case sphereCase(std::vector<Ray> rays) {
 TEST(ModelSphere, TangentRayIsAmbiguousWithBothAnswers) {
   // 0: exactly tangent (disc == 0), 1: clearly through, 2: clearly missing
   // (inside the box), 3: a hair inside the tangent line.
-  Case c = sphereCase({downRay(1.0f, 0), downRay(0.5f, 0), downRay(1.5f, 0), downRay(0.9999999f, 0)});
+  Case c =
+      sphereCase({downRay(1.0f, 0), downRay(0.5f, 0), downRay(1.5f, 0), downRay(0.9999999f, 0)});
   Results r = run(c, ModelTier::Exact);
   ASSERT_EQ(r.statusText(), "ok");
   std::map<uint32_t, const RayAmbiguity*> amb;
@@ -54,12 +60,15 @@ TEST(ModelSphere, TangentRayIsAmbiguousWithBothAnswers) {
     bool hit = false, miss = false;
     for (const Candidate& k : amb[ray]->candidates) {
       (k.hit ? hit : miss) = true;
-      if (k.hit) { EXPECT_EQ(k.primitive, 0u); }
+      if (k.hit) {
+        EXPECT_EQ(k.primitive, 0u);
+      }
     }
     EXPECT_TRUE(hit && miss) << ray;
   }
   // The fast and robust tiers mark nothing.
-  for (ModelTier tier : {ModelTier::Fast, ModelTier::Robust}) EXPECT_TRUE(run(c, tier).ambiguous.empty());
+  for (ModelTier tier : {ModelTier::Fast, ModelTier::Robust})
+    EXPECT_TRUE(run(c, tier).ambiguous.empty());
   // The sandboxed what-if runs left the actual run's counters alone: the
   // model hits rays 0 (disc exactly 0), 1 and 3 once each.
   EXPECT_EQ(r.counters["far_accepted"], 3u);
@@ -154,8 +163,10 @@ TEST(ModelSphere, MixedSceneRay638477IsTangent) {
     Vec3 cf, hf;
     double cd[3], hd[3];
     for (int i = 0; i < 3; ++i) {
-      cf[i] = (bmin[i] + bmax[i]) * 0.5f; hf[i] = (bmax[i] - bmin[i]) * 0.5f;
-      cd[i] = (double(bmin[i]) + bmax[i]) * 0.5; hd[i] = (double(bmax[i]) - bmin[i]) * 0.5;
+      cf[i] = (bmin[i] + bmax[i]) * 0.5f;
+      hf[i] = (bmax[i] - bmin[i]) * 0.5f;
+      cd[i] = (double(bmin[i]) + bmax[i]) * 0.5;
+      hd[i] = (double(bmax[i]) - bmin[i]) * 0.5;
     }
     const float rf = std::min({hf[0], hf[1], hf[2]});
     const double rd = std::min({hd[0], hd[1], hd[2]});
@@ -167,21 +178,24 @@ TEST(ModelSphere, MixedSceneRay638477IsTangent) {
     ccf = ocf[0] * ocf[0] + ocf[1] * ocf[1] + ocf[2] * ocf[2] - rf * rf;
     for (int i = 0; i < 3; ++i) {
       const double oc = od[i] - cd[i];
-      ad += dd[i] * dd[i]; bd += oc * dd[i]; ccd += oc * oc;
+      ad += dd[i] * dd[i];
+      bd += oc * dd[i];
+      ccd += oc * oc;
     }
     ccd -= rd * rd;
     const float discf = bf * bf - af * ccf;
     const double discd = bd * bd - ad * ccd;
     const SphereRoots sr = sphereRoots(bmin, bmax, of, df);
     EXPECT_EQ(sr.disc, discf);
-    const SphereError se = sphereError(bmin, bmax, of, df, objectRayError(mi.inverse_f, ray.origin, ray.direction));
+    const SphereError se =
+        sphereError(bmin, bmax, of, df, objectRayError(mi.inverse_f, ray.origin, ray.direction));
     const double sd = std::sqrt(std::max(discd, 0.0));
-    std::printf("ray %u box %zu: float a=%.9g b=%.9g cc=%.9g disc=%.9g near=%.9g far=%.9g\n", index, k, af, bf, ccf,
-                discf, sr.t_near, sr.t_far);
-    std::printf("ray %u box %zu: double a=%.17g b=%.17g cc=%.17g disc=%.17g near=%.17g far=%.17g\n", index, k, ad,
-                bd, ccd, discd, (-bd - sd) / ad, (-bd + sd) / ad);
-    std::printf("ray %u box %zu: bound disc_err=%.3g near_err=%.3g far_err=%.3g\n", index, k, se.disc_err,
-                se.near_err, se.far_err);
+    std::printf("ray %u box %zu: float a=%.9g b=%.9g cc=%.9g disc=%.9g near=%.9g far=%.9g\n", index,
+                k, af, bf, ccf, discf, sr.t_near, sr.t_far);
+    std::printf("ray %u box %zu: double a=%.17g b=%.17g cc=%.17g disc=%.17g near=%.17g far=%.17g\n",
+                index, k, ad, bd, ccd, discd, (-bd - sd) / ad, (-bd + sd) / ad);
+    std::printf("ray %u box %zu: bound disc_err=%.3g near_err=%.3g far_err=%.3g\n", index, k,
+                se.disc_err, se.near_err, se.far_err);
     if (std::fabs(double(discf)) <= se.disc_err) tangent = true;
   }
   EXPECT_TRUE(tangent);
@@ -195,7 +209,8 @@ TEST(ModelSphere, MixedSceneRay638477IsTangent) {
   EXPECT_EQ(r.ambiguous[0].reason, AmbiguityReason::ShaderArith);
   EXPECT_GE(r.ambiguous[0].candidates.size(), 2u);
   for (const Candidate& k : r.ambiguous[0].candidates)
-    std::printf("legal: hit=%d instance=%u geometry=%u primitive=%u\n", k.hit, k.instance, k.geometry, k.primitive);
+    std::printf("legal: hit=%d instance=%u geometry=%u primitive=%u\n", k.hit, k.instance,
+                k.geometry, k.primitive);
 }
 
 }  // namespace

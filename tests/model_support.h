@@ -26,7 +26,7 @@ namespace rayspec::model_test {
 inline Case parseInline(const std::string& yaml, const std::string& name = "model/inline") {
   ParseResult p = parseCaseText(yaml, name + ".yaml", name);
   std::string errors;
-  for (const CaseError& e : p.errors) errors += e.format() + "\n";
+  for (const Error& e : p.errors) errors += e.format() + "\n";
   EXPECT_TRUE(p.value.has_value()) << errors;
   return p.value ? *p.value : Case{};
 }
@@ -37,27 +37,76 @@ inline Results runTier(const Case& c, ModelTier tier, unsigned threads = 2) {
   return runOnModel(c, plan, ModelOptions{tier, threads});
 }
 
-inline Expr lit(uint32_t v) { Expr e; e.kind = Expr::Kind::Literal; e.type = ValueType::Uint; e.literal = {double(v)}; return e; }
-inline Expr litf(double v) { Expr e; e.kind = Expr::Kind::Literal; e.type = ValueType::Float; e.literal = {v}; return e; }
+inline Expr lit(uint32_t v) {
+  Expr e;
+  e.kind = Expr::Kind::Literal;
+  e.type = ValueType::Uint;
+  e.literal = {double(v)};
+  return e;
+}
+inline Expr litf(double v) {
+  Expr e;
+  e.kind = Expr::Kind::Literal;
+  e.type = ValueType::Float;
+  e.literal = {v};
+  return e;
+}
 inline Expr vec3(double x, double y, double z) {
-  Expr e; e.kind = Expr::Kind::Literal; e.type = ValueType::Vec3; e.literal = {x, y, z}; return e;
+  Expr e;
+  e.kind = Expr::Kind::Literal;
+  e.type = ValueType::Vec3;
+  e.literal = {x, y, z};
+  return e;
 }
-inline Expr bi(const std::string& n) { Expr e; e.kind = Expr::Kind::Builtin; e.name = n; return e; }
+inline Expr bi(const std::string& n) {
+  Expr e;
+  e.kind = Expr::Kind::Builtin;
+  e.name = n;
+  return e;
+}
 inline Expr op(const std::string& n, std::vector<Expr> args) {
-  Expr e; e.kind = Expr::Kind::Op; e.name = n; e.args = std::move(args); return e;
+  Expr e;
+  e.kind = Expr::Kind::Op;
+  e.name = n;
+  e.args = std::move(args);
+  return e;
 }
-inline Stmt count(const std::string& n) { Stmt s; s.kind = Stmt::Kind::Count; s.counter = n; return s; }
+inline Stmt count(const std::string& n) {
+  Stmt s;
+  s.kind = Stmt::Kind::Count;
+  s.counter = n;
+  return s;
+}
 inline Stmt recordBuiltins(const std::vector<std::string>& fields) {
-  Stmt s; s.kind = Stmt::Kind::Record;
+  Stmt s;
+  s.kind = Stmt::Kind::Record;
   for (const auto& f : fields) s.assigns.push_back({f, bi(f)});
   return s;
 }
-inline Stmt recordExpr(const std::string& f, Expr e) { Stmt s; s.kind = Stmt::Kind::Record; s.assigns.push_back({f, e}); return s; }
-inline Stmt simple(Stmt::Kind k) { Stmt s; s.kind = k; return s; }
-inline Stmt ifThen(Expr cond, Program then_, Program else_ = {}) {
-  Stmt s; s.kind = Stmt::Kind::If; s.cond = cond; s.then_ = then_; s.else_ = else_; return s;
+inline Stmt recordExpr(const std::string& f, Expr e) {
+  Stmt s;
+  s.kind = Stmt::Kind::Record;
+  s.assigns.push_back({f, e});
+  return s;
 }
-inline Stmt traceStmt() { Stmt s; s.kind = Stmt::Kind::Trace; return s; }
+inline Stmt simple(Stmt::Kind k) {
+  Stmt s;
+  s.kind = k;
+  return s;
+}
+inline Stmt ifThen(Expr cond, Program then_, Program else_ = {}) {
+  Stmt s;
+  s.kind = Stmt::Kind::If;
+  s.cond = cond;
+  s.then_ = then_;
+  s.else_ = else_;
+  return s;
+}
+inline Stmt traceStmt() {
+  Stmt s;
+  s.kind = Stmt::Kind::Trace;
+  return s;
+}
 
 inline Geometry quad(float z = 0, uint32_t flags = kGeometryOpaque) {
   Geometry g;
@@ -82,7 +131,12 @@ inline Geometry grid(int n, uint32_t flags) {
 }
 
 inline Ray downRay(float x, float y, float z = 5) {
-  Ray r; r.origin = {x, y, z}; r.direction = {0, 0, -1}; r.tmin = 0.001f; r.tmax = 100; return r;
+  Ray r;
+  r.origin = {x, y, z};
+  r.direction = {0, 0, -1};
+  r.tmin = 0.001f;
+  r.tmax = 100;
+  return r;
 }
 
 // A case with one BLAS "b" of the given geometries, one identity instance,
@@ -90,7 +144,9 @@ inline Ray downRay(float x, float y, float z = 5) {
 inline Case baseCase(std::vector<Geometry> geoms, std::vector<Ray> rays, uint32_t width = 0) {
   Case c;
   c.name = "model-test";
-  Blas b; b.name = "b"; b.geometries = std::move(geoms);
+  Blas b;
+  b.name = "b";
+  b.geometries = std::move(geoms);
   c.scene.blases.push_back(b);
   c.scene.instances.push_back(Instance{});
   c.scene.instances[0].blas = 0;
@@ -102,10 +158,15 @@ inline Case baseCase(std::vector<Geometry> geoms, std::vector<Ray> rays, uint32_
   c.pipeline.raygen = {traceStmt()};
   c.pipeline.miss = {{count("miss"), recordExpr("hit", lit(0))}};
   HitGroup g;
-  g.closest_hit = Program{count("closesthit"), recordBuiltins({"hit", "primitive_id", "hit_t", "hit_kind", "instance_id", "geometry_index"})};
+  g.closest_hit =
+      Program{count("closesthit"), recordBuiltins({"hit", "primitive_id", "hit_t", "hit_kind",
+                                                   "instance_id", "geometry_index"})};
   c.pipeline.hit_groups = {g};
-  c.outputs.counters = {"miss", "closesthit", "anyhit", "ignored", "far_accepted", "near_accepted", "calls"};
-  c.outputs.per_ray = {"hit", "primitive_id", "hit_t", "hit_kind", "instance_id", "geometry_index", "value", "depth", "ray_tmax"};
+  c.outputs.counters = {"miss",         "closesthit",    "anyhit", "ignored",
+                        "far_accepted", "near_accepted", "calls"};
+  c.outputs.per_ray = {"hit",      "primitive_id", "hit_t",
+                       "hit_kind", "instance_id",  "geometry_index",
+                       "value",    "depth",        "ray_tmax"};
   return c;
 }
 
@@ -127,7 +188,9 @@ inline void checkAll(Case& c) {
 inline Results run(Case& c, ModelTier tier, unsigned threads = 2) {
   checkAll(c);
   Plan plan = derivePlan(c);
-  ModelOptions o; o.tier = tier; o.threads = threads;
+  ModelOptions o;
+  o.tier = tier;
+  o.threads = threads;
   return runOnModel(c, plan, o);
 }
 
@@ -149,7 +212,8 @@ inline std::map<uint32_t, const RayAmbiguity*> byRay(const Results& r) {
   return m;
 }
 
-// The legal hit answers of an ambiguous ray as (instance, geometry, primitive); miss: {~0u, ~0u, ~0u}.
+// The legal hit answers of an ambiguous ray as (instance, geometry, primitive); miss: {~0u, ~0u,
+// ~0u}.
 inline std::set<std::array<uint32_t, 3>> legal(const RayAmbiguity& a) {
   std::set<std::array<uint32_t, 3>> s;
   for (const Candidate& k : a.candidates)
@@ -160,7 +224,8 @@ inline std::set<std::array<uint32_t, 3>> legal(const RayAmbiguity& a) {
 
 inline std::array<uint32_t, 3> answer(const Results& r, uint32_t ray) {
   if (word(r, ray, "hit") != 1) return {~0u, ~0u, ~0u};
-  return {word(r, ray, "instance_id"), word(r, ray, "geometry_index"), word(r, ray, "primitive_id")};
+  return {word(r, ray, "instance_id"), word(r, ray, "geometry_index"),
+          word(r, ray, "primitive_id")};
 }
 
 inline Geometry boxes(std::vector<std::array<float, 6>> aabbs, uint32_t flags = kGeometryOpaque) {

@@ -1,26 +1,26 @@
 // Unit tests of the CPU reference model: hand-built cases per rule family,
 // outcomes derived from the geometry (helpers: model_support.h).
-#include <bit>
 #include <gtest/gtest.h>
+#include <bit>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <map>
 #include <set>
-#include <array>
 
-#include "suite_cases.h"
 #include "case/parse_case.h"
 #include "model/model_scene.h"
 #include "model/sphere_error.h"
 #include "model/watertight.h"
+#include "model_support.h"
 #include "plan/plan.h"
 #include "program/ops.h"
 #include "results/record_layout.h"
-#include "model_support.h"
+#include "suite_cases.h"
 
 namespace rayspec {
 namespace {
@@ -62,10 +62,12 @@ TEST(Model, QuadCenterHitsThePrimitiveContainingIt) {
 Case anyHitGridCase() {
   std::vector<Ray> rays;
   for (int y = 0; y < 32; ++y)
-    for (int x = 0; x < 32; ++x) rays.push_back(downRay(-0.97f + x * 0.0613f, -0.97f + y * 0.0613f));
+    for (int x = 0; x < 32; ++x)
+      rays.push_back(downRay(-0.97f + x * 0.0613f, -0.97f + y * 0.0613f));
   Case c = baseCase({grid(4, 0)}, rays, 32);
-  c.pipeline.hit_groups[0].any_hit =
-      Program{count("anyhit"), ifThen(op("odd", {bi("primitive_id")}), {count("ignored"), simple(Stmt::Kind::Ignore)})};
+  c.pipeline.hit_groups[0].any_hit = Program{
+      count("anyhit"),
+      ifThen(op("odd", {bi("primitive_id")}), {count("ignored"), simple(Stmt::Kind::Ignore)})};
   return c;
 }
 
@@ -189,7 +191,8 @@ TEST(Model, DirectPathMixedTraceParametersMatchGeneralPath) {
   direct.pipeline.miss = {{count("miss")}, {count("far_accepted")}};
   HitGroup g0, g1;
   g0.closest_hit = Program{count("closesthit")};
-  g1.closest_hit = Program{ifThen(op("eq", {bi("launch_id_x"), lit(40)}), {count("ignored")}), count("calls")};
+  g1.closest_hit =
+      Program{ifThen(op("eq", {bi("launch_id_x"), lit(40)}), {count("ignored")}), count("calls")};
   direct.pipeline.hit_groups = {g0, g1};
   direct.outputs.per_ray.clear();
   Case general = direct;
@@ -199,7 +202,8 @@ TEST(Model, DirectPathMixedTraceParametersMatchGeneralPath) {
     ASSERT_EQ(g.statusText(), "ok");
     EXPECT_EQ(g.counters["near_accepted"], w * h);
     g.counters.erase("near_accepted");
-    for (const char* k : {"miss", "far_accepted", "closesthit", "calls", "ignored"}) EXPECT_GT(g.counters[k], 0u) << k;
+    for (const char* k : {"miss", "far_accepted", "closesthit", "calls", "ignored"})
+      EXPECT_GT(g.counters[k], 0u) << k;
     for (unsigned threads : {1u, 2u, 5u}) {
       Results d = run(direct, tier, threads);
       ASSERT_EQ(d.statusText(), "ok");
@@ -218,10 +222,11 @@ TEST(Model, CompiledOpsPerRay) {
   chit.push_back(recordExpr("hit", lit(1)));
   chit.push_back(recordExpr("primitive_id", bi("primitive_id")));
   // value = primitive_id * 3 + (launch_id_x mod 5), or 7 when primitive is odd and x < 20.
-  chit.push_back(ifThen(op("and", {op("odd", {bi("primitive_id")}), op("lt", {bi("launch_id_x"), lit(20)})}),
-                        {recordExpr("value", lit(7))},
-                        {recordExpr("value", op("add", {op("mul", {bi("primitive_id"), lit(3)}),
-                                                         op("mod", {bi("launch_id_x"), lit(5)})}))}));
+  chit.push_back(
+      ifThen(op("and", {op("odd", {bi("primitive_id")}), op("lt", {bi("launch_id_x"), lit(20)})}),
+             {recordExpr("value", lit(7))},
+             {recordExpr("value", op("add", {op("mul", {bi("primitive_id"), lit(3)}),
+                                             op("mod", {bi("launch_id_x"), lit(5)})}))}));
   c.pipeline.hit_groups[0].closest_hit = chit;
   Results r = run(c, ModelTier::Fast, 2);
   ASSERT_EQ(r.statusText(), "ok");
@@ -237,7 +242,8 @@ TEST(Model, CompiledOpsPerRay) {
 }
 
 TEST(Model, FacingCullsFlipAndDisable) {
-  Ray up = downRay(0.5f, -0.5f, -5); up.direction = {0, 0, 1};
+  Ray up = downRay(0.5f, -0.5f, -5);
+  up.direction = {0, 0, 1};
   for (ModelTier tier : kTiers) {
     Case c = baseCase({quad()}, {downRay(0.5f, -0.5f), up});
     Results r = run(c, tier);
@@ -261,7 +267,8 @@ TEST(Model, FacingCullsFlipAndDisable) {
 
 TEST(Model, MasksAndSkipFlags) {
   for (ModelTier tier : kTiers) {
-    Case c = baseCase({quad()}, {downRay(0.5f, -0.5f), downRay(0.5f, -0.5f), downRay(0.5f, -0.5f), downRay(0.5f, -0.5f)});
+    Case c = baseCase({quad()}, {downRay(0.5f, -0.5f), downRay(0.5f, -0.5f), downRay(0.5f, -0.5f),
+                                 downRay(0.5f, -0.5f)});
     c.scene.instances[0].mask = 0x01;
     c.rays.rays[0].cull_mask = 0x02;
     c.rays.rays[1].cull_mask = 0x103;  // only the low 8 bits count
@@ -322,9 +329,14 @@ TEST(Model, SphereIntersectionReportsBothRoots) {
     g.aabbs = {{-1, -1, -1, 1, 1, 1}};
     g.flags = kGeometryOpaque;
     Case c = baseCase({g}, {downRay(0, 0), downRay(0.9f, 0.9f)});
-    Stmt far; far.kind = Stmt::Kind::Report; far.t = op("sphere_far", {}); far.hit_kind = lit(2);
+    Stmt far;
+    far.kind = Stmt::Kind::Report;
+    far.t = op("sphere_far", {});
+    far.hit_kind = lit(2);
     far.then_ = {count("far_accepted")};
-    Stmt near = far; near.t = op("sphere_near", {}); near.hit_kind = lit(1);
+    Stmt near = far;
+    near.t = op("sphere_near", {});
+    near.hit_kind = lit(1);
     near.then_ = {count("near_accepted")};
     c.pipeline.hit_groups[0].intersection = Program{ifThen(op("sphere_hit", {}), {far, near})};
     c.pipeline.hit_groups[0].closest_hit->push_back(recordBuiltins({"ray_tmax"}));
@@ -351,8 +363,12 @@ TEST(Model, AabbFaceGrazingIsAmbiguousInExactTier) {
   g.aabbs = {{-1, -1, -1, 1, 1, 1}};
   g.flags = kGeometryOpaque;
   // 0: inside, 1: on the face x = 1, 2: just outside it, 3: far outside.
-  Case c = baseCase({g}, {downRay(0.5f, 0), downRay(1.0f, 0), downRay(1.0f + 1e-7f, 0), downRay(1.5f, 0)});
-  Stmt rep; rep.kind = Stmt::Kind::Report; rep.t = litf(4.5); rep.hit_kind = lit(3);  // always reports
+  Case c = baseCase(
+      {g}, {downRay(0.5f, 0), downRay(1.0f, 0), downRay(1.0f + 1e-7f, 0), downRay(1.5f, 0)});
+  Stmt rep;
+  rep.kind = Stmt::Kind::Report;
+  rep.t = litf(4.5);
+  rep.hit_kind = lit(3);  // always reports
   c.pipeline.hit_groups[0].intersection = Program{rep};
   Results r = run(c, ModelTier::Exact);
   ASSERT_EQ(r.statusText(), "ok");
@@ -380,7 +396,10 @@ TEST(Model, InactiveAabbAndNullInstance) {
   g.kind = Geometry::Kind::Aabbs;
   g.aabbs = {{NAN, -1, -1, 1, 1, 1}};
   Case c = baseCase({g}, {downRay(0, 0)});
-  Stmt rep; rep.kind = Stmt::Kind::Report; rep.t = litf(1.0); rep.hit_kind = lit(0);
+  Stmt rep;
+  rep.kind = Stmt::Kind::Report;
+  rep.t = litf(1.0);
+  rep.hit_kind = lit(0);
   c.pipeline.hit_groups[0].intersection = Program{rep};
   Results r = run(c, ModelTier::Exact);
   EXPECT_EQ(word(r, 0, "hit"), 0u);
@@ -392,10 +411,14 @@ TEST(Model, InactiveAabbAndNullInstance) {
 
 TEST(Model, CallableDataFlowsBack) {
   Case c = baseCase({quad()}, {downRay(0.5f, -0.5f)});
-  Stmt call; call.kind = Stmt::Kind::Call; call.call_index = lit(1);
+  Stmt call;
+  call.kind = Stmt::Kind::Call;
+  call.call_index = lit(1);
   call.assigns = {{"value", lit(41)}};
   c.pipeline.hit_groups[0].closest_hit = Program{call, recordExpr("value", bi("callee.value"))};
-  Stmt set; set.kind = Stmt::Kind::SetCall; set.assigns = {{"value", op("add", {bi("call.value"), lit(1)})}};
+  Stmt set;
+  set.kind = Stmt::Kind::SetCall;
+  set.assigns = {{"value", op("add", {bi("call.value"), lit(1)})}};
   c.pipeline.callables = {{count("calls")}, {count("calls"), set}};
   Results r = run(c, ModelTier::Exact);
   EXPECT_EQ(word(r, 0, "value"), 42u);
@@ -405,13 +428,20 @@ TEST(Model, CallableDataFlowsBack) {
 
 TEST(Model, PointLightFormula) {
   Case c = baseCase({quad()}, {downRay(0.5f, -0.5f)});
-  Stmt call; call.kind = Stmt::Kind::Call; call.call_index = lit(0);
+  Stmt call;
+  call.kind = Stmt::Kind::Call;
+  call.call_index = lit(0);
   call.assigns = {{"position", bi("hit_position")}, {"normal", vec3(0, 0, 1)}};
   c.pipeline.hit_groups[0].closest_hit = Program{call, recordExpr("color", bi("callee.color"))};
-  Stmt light; light.kind = Stmt::Kind::Light; light.light = "point";
+  Stmt light;
+  light.kind = Stmt::Kind::Light;
+  light.light = "point";
   c.pipeline.callables = {{light}};
-  auto bits = [](float f) { return std::bit_cast<uint32_t>(f); };
-  c.pipeline.sbt_callable = {{0, {bits(0.5f), bits(-0.5f), bits(2.0f), bits(1.0f), bits(0.5f), bits(0.25f)}}};
+  auto bits = [](float f) {
+    return std::bit_cast<uint32_t>(f);
+  };
+  c.pipeline.sbt_callable = {
+      {0, {bits(0.5f), bits(-0.5f), bits(2.0f), bits(1.0f), bits(0.5f), bits(0.25f)}}};
   c.outputs.per_ray.push_back("color");
   Results r = run(c, ModelTier::Fast);
   // Light straight above at distance 2: cos 1, 1/d^2 = 0.25.
@@ -481,8 +511,9 @@ TEST(Model, LegalAnswersFollowAnyHitOnSharedEdge) {
     rays.push_back(downRay(s, s));
   }
   Case c = baseCase({quad(0, 0)}, rays);
-  c.pipeline.hit_groups[0].any_hit =
-      Program{count("anyhit"), ifThen(op("odd", {bi("primitive_id")}), {count("ignored"), simple(Stmt::Kind::Ignore)})};
+  c.pipeline.hit_groups[0].any_hit = Program{
+      count("anyhit"),
+      ifThen(op("odd", {bi("primitive_id")}), {count("ignored"), simple(Stmt::Kind::Ignore)})};
   Results r = run(c, ModelTier::Exact);
   ASSERT_EQ(r.statusText(), "ok");
   ASSERT_EQ(r.ambiguous.size(), 16u);
@@ -517,8 +548,8 @@ TEST(Model, NanInYTriangleStaysActiveAndHugeTrianglesAreHit) {
     g.flags = kGeometryOpaque;
     // primitive 0: NaN in Y (active, Embree would drop it); 1: a normal triangle;
     // 2: huge (beyond Embree's 1.8e18 limit) far below.
-    g.vertices = {{10, NAN, 0}, {11, 0, 0}, {10, 1, 0},
-                  {-1, -1, 0}, {1, -1, 0}, {1, 1, 0},
+    g.vertices = {{10, NAN, 0},          {11, 0, 0},           {10, 1, 0},
+                  {-1, -1, 0},           {1, -1, 0},           {1, 1, 0},
                   {-4e18f, -4e18f, -10}, {4e18f, -4e18f, -10}, {0, 4e18f, -10}};
     Case c = baseCase({g}, {downRay(0.5f, -0.5f), downRay(-0.5f, 0.5f), downRay(10.2f, 0.2f)});
     Results r = run(c, tier);
@@ -564,7 +595,8 @@ TEST(Model, ImagesFollowTheRecord) {
   EXPECT_EQ(r.images[0].channels, 1u);
   EXPECT_TRUE(r.images[1].is_float);
   ASSERT_EQ(r.images[1].texels.size(), 8u);
-  const float t = std::bit_cast<float>(r.images[1].texels[0]), a = std::bit_cast<float>(r.images[1].texels[3]);
+  const float t = std::bit_cast<float>(r.images[1].texels[0]),
+              a = std::bit_cast<float>(r.images[1].texels[3]);
   EXPECT_NEAR(t, 5.0f, 1e-5);
   EXPECT_EQ(a, 1.0f);
   EXPECT_EQ(r.images[1].texels[1], 0u);
@@ -576,7 +608,8 @@ TEST(Model, EveryCaseFileRunsInEveryTier) {
   for (const CaseFile& f : suiteCases()) {
     ParseResult p = loadSuiteCase(f);
     if (!p.value) {
-      std::cerr << "skipping " << f.name << ": " << (p.errors.empty() ? "" : p.errors[0].format()) << "\n";
+      std::cerr << "skipping " << f.name << ": " << (p.errors.empty() ? "" : p.errors[0].format())
+                << "\n";
       continue;
     }
     const Case& c = *p.value;
@@ -596,7 +629,8 @@ TEST(Model, EveryCaseFileRunsInEveryTier) {
       const bool oneTrace = !plan.nested_trace && c.pipeline.raygen.size() == 1 &&
                             c.pipeline.raygen[0].kind == Stmt::Kind::Trace;
       for (uint32_t i = 0; i < c.rays.width * c.rays.height && oneTrace; ++i)
-        EXPECT_LE(word(r, i, "closest_hit_runs") + word(r, i, "miss_runs"), 1u) << c.name << " ray " << i;
+        EXPECT_LE(word(r, i, "closest_hit_runs") + word(r, i, "miss_runs"), 1u)
+            << c.name << " ray " << i;
       if (tier != ModelTier::Exact) continue;
       // Rays the exact tier calls clear agree with the fast tier.
       if (fastRecords.empty()) {
@@ -608,7 +642,8 @@ TEST(Model, EveryCaseFileRunsInEveryTier) {
         for (uint32_t i = 0; i < c.rays.width * c.rays.height; ++i) {
           if (amb[i]) continue;
           if (word(r, i, "hit") != fastRecords[i * words + findRecordField("hit")->offset] ||
-              word(r, i, "primitive_id") != fastRecords[i * words + findRecordField("primitive_id")->offset])
+              word(r, i, "primitive_id") !=
+                  fastRecords[i * words + findRecordField("primitive_id")->offset])
             ++differ;
         }
         EXPECT_EQ(differ, 0u) << c.name;

@@ -19,7 +19,8 @@ using namespace model_test;
 Case wideLaunch(uint32_t w, uint32_t h) {
   std::vector<Ray> rays;
   for (uint32_t y = 0; y < h; ++y)
-    for (uint32_t x = 0; x < w; ++x) rays.push_back(downRay(-1.3f + 2.6f * (x + 0.5f) / w, -1.3f + 2.6f * (y + 0.5f) / h));
+    for (uint32_t x = 0; x < w; ++x)
+      rays.push_back(downRay(-1.3f + 2.6f * (x + 0.5f) / w, -1.3f + 2.6f * (y + 0.5f) / h));
   return baseCase({grid(8, kGeometryOpaque)}, rays, w);
 }
 

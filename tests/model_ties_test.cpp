@@ -20,7 +20,10 @@ TEST(ModelTies, CoincidentAabbsInDifferentInstancesAreATie) {
   const std::array<float, 6> box = {-1, -1, -1, 1, 1, 1};
   Case c = baseCase({boxes({box, box, box})}, {downRay(0, 0), downRay(0.5f, 0.25f), downRay(3, 3)});
   c.scene.instances.push_back(c.scene.instances[0]);
-  Stmt rep; rep.kind = Stmt::Kind::Report; rep.t = litf(4.0); rep.hit_kind = lit(1);
+  Stmt rep;
+  rep.kind = Stmt::Kind::Report;
+  rep.t = litf(4.0);
+  rep.hit_kind = lit(1);
   c.pipeline.hit_groups[0].intersection = Program{rep};
   Results r = run(c, ModelTier::Exact);
   ASSERT_EQ(r.statusText(), "ok");
@@ -53,10 +56,14 @@ TEST(ModelTies, TieAnswersFollowAnyHit) {
   const std::array<float, 6> box = {-1, -1, -1, 1, 1, 1};
   Case c = baseCase({boxes({box, box, box, box}, 0)}, {downRay(0, 0)});
   c.scene.instances.push_back(c.scene.instances[0]);
-  Stmt rep; rep.kind = Stmt::Kind::Report; rep.t = litf(4.0); rep.hit_kind = lit(1);
+  Stmt rep;
+  rep.kind = Stmt::Kind::Report;
+  rep.t = litf(4.0);
+  rep.hit_kind = lit(1);
   c.pipeline.hit_groups[0].intersection = Program{rep};
-  c.pipeline.hit_groups[0].any_hit =
-      Program{count("anyhit"), ifThen(op("odd", {bi("primitive_id")}), {count("ignored"), simple(Stmt::Kind::Ignore)})};
+  c.pipeline.hit_groups[0].any_hit = Program{
+      count("anyhit"),
+      ifThen(op("odd", {bi("primitive_id")}), {count("ignored"), simple(Stmt::Kind::Ignore)})};
   Results r = run(c, ModelTier::Exact);
   ASSERT_EQ(r.statusText(), "ok");
   ASSERT_EQ(r.ambiguous.size(), 1u);
@@ -69,10 +76,14 @@ TEST(ModelTies, TieAnswersFollowAnyHit) {
 
 // Boxes at different depths (sphere reports at t = 4 and 7) are no tie.
 TEST(ModelTies, DistinctReportsAreClear) {
-  Case c = baseCase({boxes({{-1, -1, -4, 1, 1, -2}, {-1, -1, -1, 1, 1, 1}})}, {downRay(0, 0), downRay(0.1f, 0.2f)});
+  Case c = baseCase({boxes({{-1, -1, -4, 1, 1, -2}, {-1, -1, -1, 1, 1, 1}})},
+                    {downRay(0, 0), downRay(0.1f, 0.2f)});
   c.scene.instances.push_back(c.scene.instances[0]);
   c.scene.instances[1].transform[3] = 10;  // second instance out of the rays' way
-  Stmt rep; rep.kind = Stmt::Kind::Report; rep.t = op("sphere_near", {}); rep.hit_kind = lit(1);
+  Stmt rep;
+  rep.kind = Stmt::Kind::Report;
+  rep.t = op("sphere_near", {});
+  rep.hit_kind = lit(1);
   c.pipeline.hit_groups[0].intersection = Program{ifThen(op("sphere_hit", {}), {rep})};
   Results r = run(c, ModelTier::Exact);
   ASSERT_EQ(r.statusText(), "ok");
@@ -124,7 +135,8 @@ TEST(ModelTies, TerminateOnFirstHitAllowsEveryConfirmableCandidate) {
   ASSERT_EQ(rq.statusText(), "ok");
   EXPECT_TRUE(rq.ambiguous.empty());
   EXPECT_EQ(answer(rq, 0), (std::array<uint32_t, 3>{0, 1, 0}));
-  for (ModelTier tier : {ModelTier::Fast, ModelTier::Robust}) EXPECT_TRUE(run(c, tier).ambiguous.empty());
+  for (ModelTier tier : {ModelTier::Fast, ModelTier::Robust})
+    EXPECT_TRUE(run(c, tier).ambiguous.empty());
 }
 
 }  // namespace

@@ -18,7 +18,6 @@ namespace {
 
 using namespace model_test;
 
-
 std::map<uint32_t, const UndefinedRay*> undefinedByRay(const Results& r) {
   std::map<uint32_t, const UndefinedRay*> m;
   for (const UndefinedRay& u : r.undefined) {
@@ -34,13 +33,15 @@ struct Expected {
 };
 
 // Exactly these rays are undefined, for these reasons, naming these fields.
-void expectUndefined(const Results& r, const std::map<uint32_t, Expected>& expected, const char* tier) {
+void expectUndefined(const Results& r, const std::map<uint32_t, Expected>& expected,
+                     const char* tier) {
   ASSERT_EQ(r.statusText(), "ok") << tier;
   const auto got = undefinedByRay(r);
   for (const auto& [ray, e] : expected) {
     ASSERT_EQ(got.count(ray), 1u) << tier << ": ray " << ray << " should be undefined";
     EXPECT_EQ(got.at(ray)->reason, e.reason)
-        << tier << ": ray " << ray << " " << undefinedReasonName(got.at(ray)->reason) << ": " << got.at(ray)->what;
+        << tier << ": ray " << ray << " " << undefinedReasonName(got.at(ray)->reason) << ": "
+        << got.at(ray)->what;
     EXPECT_NE(got.at(ray)->what.find(e.what), std::string::npos)
         << tier << ": ray " << ray << ": '" << got.at(ray)->what << "' lacks '" << e.what << "'";
   }
@@ -101,10 +102,13 @@ TEST(ModelUndefined, RecursionTooDeepIsDiagnosedNotACrash) {
   for (ModelTier tier : kTiers) {
     const Results r = runTier(c, tier);
     expectUndefined(r,
-                    {{0, {UndefinedReason::RecursionTooDeep, "pipeline.callables[0][1].call: callables nested 3 deep"}},
-                     {1, {UndefinedReason::RecursionTooDeep,
-                          "pipeline.hit_groups[0].closest_hit[1].then[0].trace: trace at depth 3 exceeds "
-                          "pipeline.max_recursion 2"}}},
+                    {{0,
+                      {UndefinedReason::RecursionTooDeep,
+                       "pipeline.callables[0][1].call: callables nested 3 deep"}},
+                     {1,
+                      {UndefinedReason::RecursionTooDeep,
+                       "pipeline.hit_groups[0].closest_hit[1].then[0].trace: trace at depth 3 "
+                       "exceeds pipeline.max_recursion 2"}}},
                     modelTierName(tier));
     // The documented way on: the nested call and trace are skipped.
     EXPECT_EQ(r.counters.at("calls"), 2u);       // ray 0: two levels ran, the third was skipped
@@ -173,16 +177,20 @@ TEST(ModelUndefined, ShaderBindingTableIndicesBeyondTheirRegion) {
   const Case c = parseInline(kSbt);
   for (ModelTier tier : kTiers) {
     const Results r = runTier(c, tier);
-    expectUndefined(
-        r,
-        {{1, {UndefinedReason::HitRecordOutOfRange,
-              "pipeline.sbt.hit: record 1, the hit region has 1 (instance 1 sbt_offset 1 + geometry 0 x stride 1 + "
-              "sbt_offset 0)"}},
-         // A device may meet the non-opaque triangle behind first and run its any-hit.
-         {2, {UndefinedReason::HitRecordOutOfRange, "(instance 2 sbt_offset 1"}},
-         {5, {UndefinedReason::MissRecordOutOfRange, "pipeline.sbt.miss: miss index 2, the miss region has 2"}},
-         {7, {UndefinedReason::CallableOutOfRange, "pipeline.raygen[1].then[0].call.index: callable 3, the SBT has 2"}}},
-        modelTierName(tier));
+    expectUndefined(r,
+                    {{1,
+                      {UndefinedReason::HitRecordOutOfRange,
+                       "pipeline.sbt.hit: record 1, the hit region has 1 (instance 1 sbt_offset 1 "
+                       "+ geometry 0 x stride 1 + sbt_offset 0)"}},
+                     // A device may meet the non-opaque triangle behind first and run its any-hit.
+                     {2, {UndefinedReason::HitRecordOutOfRange, "(instance 2 sbt_offset 1"}},
+                     {5,
+                      {UndefinedReason::MissRecordOutOfRange,
+                       "pipeline.sbt.miss: miss index 2, the miss region has 2"}},
+                     {7,
+                      {UndefinedReason::CallableOutOfRange,
+                       "pipeline.raygen[1].then[0].call.index: callable 3, the SBT has 2"}}},
+                    modelTierName(tier));
     // Defined: 3 (an opaque triangle behind is never looked up), 4
     // (SkipClosestHit reads no record), 6 and 8 (all-zero records, R-SBT-ZERO),
     // 9 (offset 16: only the low 4 bits count, R-SBT-HIT).
@@ -208,7 +216,8 @@ TEST(ModelUndefined, ShaderBindingTableRangesOnTheDirectPath) {
   std::string text = kSbt;
   const size_t from = text.find("  raygen:\n"), to = text.find("  miss:\n");
   text.replace(from, to - from, "  raygen: [trace: {}]\n");
-  text.replace(text.find(", flags: [force_no_opaque]"), std::string(", flags: [force_no_opaque]").size(), "");
+  text.replace(text.find(", flags: [force_no_opaque]"),
+               std::string(", flags: [force_no_opaque]").size(), "");
   const Case c = parseInline(text);
   for (ModelTier tier : kTiers) {
     const Results r = runTier(c, tier);
@@ -253,13 +262,17 @@ TEST(ModelUndefined, UintDivisionAndModuloByZero) {
   for (ModelTier tier : kTiers) {
     const Results r = runTier(c, tier);
     // Ray 1's modulo runs in closest-hit, before raygen's division by 1.
-    expectUndefined(r,
-                    {{0, {UndefinedReason::DivisionByZero, "pipeline.raygen[1].record.value: uint division by zero"}},
-                     {1, {UndefinedReason::DivisionByZero,
-                          "pipeline.hit_groups[0].closest_hit[0].record.primitive_id: uint modulo by zero"}}},
-                    modelTierName(tier));
+    expectUndefined(
+        r,
+        {{0,
+          {UndefinedReason::DivisionByZero,
+           "pipeline.raygen[1].record.value: uint division by zero"}},
+         {1,
+          {UndefinedReason::DivisionByZero,
+           "pipeline.hit_groups[0].closest_hit[0].record.primitive_id: uint modulo by zero"}}},
+        modelTierName(tier));
     EXPECT_EQ(word(r, 2, "value"), 50u);
-    EXPECT_EQ(word(r, 2, "primitive_id"), 0u);  // 7 mod 1
+    EXPECT_EQ(word(r, 2, "primitive_id"), 0u);    // 7 mod 1
     EXPECT_EQ(word(r, 0, "value"), 0xFFFFFFFFu);  // the documented value
   }
 }
@@ -313,15 +326,22 @@ TEST(ModelUndefined, RayParameters) {
     const Results r = runTier(c, tier);
     expectUndefined(
         r,
-        {{0, {UndefinedReason::RayParameters, "pipeline.hit_groups[0].closest_hit[2].then[0].trace.tmin: -1 < 0"}},
-         {1, {UndefinedReason::RayParameters, "rays: launch ray 1 origin: (nan, 0, 1) is not finite"}},
-         {2, {UndefinedReason::RayParameters, "rays: launch ray 2 direction: (0, inf, -1) is not finite"}},
+        {{0,
+          {UndefinedReason::RayParameters,
+           "pipeline.hit_groups[0].closest_hit[2].then[0].trace.tmin: -1 < 0"}},
+         {1,
+          {UndefinedReason::RayParameters, "rays: launch ray 1 origin: (nan, 0, 1) is not finite"}},
+         {2,
+          {UndefinedReason::RayParameters,
+           "rays: launch ray 2 direction: (0, inf, -1) is not finite"}},
          {3, {UndefinedReason::RayParameters, "launch ray 3 tmin: NaN"}},
          {4, {UndefinedReason::RayParameters, "launch ray 4 tmin: -1 < 0"}},
          {5, {UndefinedReason::RayParameters, "launch ray 5 tmax: 1 < tmin 5"}},
          {6, {UndefinedReason::RayParameters, "launch ray 6 tmax: NaN"}},
          {7, {UndefinedReason::RayParameters, "launch ray 7 flags: opaque and no_opaque together"}},
-         {10, {UndefinedReason::RayParameters, "flags: cull_back_facing and cull_front_facing together"}}},
+         {10,
+          {UndefinedReason::RayParameters,
+           "flags: cull_back_facing and cull_front_facing together"}}},
         modelTierName(tier));
     // Defined: a zero direction and a zero cull mask find nothing; -0 is not below 0.
     EXPECT_EQ(word(r, 8, "hit"), 0u);
@@ -383,12 +403,15 @@ TEST(ModelUndefined, TrianglesWithNanInYOrZ) {
   const Case c = parseInline(kNanTriangles);
   for (ModelTier tier : kTiers) {
     const Results r = runTier(c, tier);
-    expectUndefined(r,
-                    {{0, {UndefinedReason::NanTriangle, "scene.blas.tris[0]: triangle 0 has NaN in Y or Z (instance 0)"}},
-                     {2, {UndefinedReason::NanTriangle, "triangle 1 has NaN in Y or Z (instance 0)"}},
-                     {5, {UndefinedReason::NanTriangle, "triangle 0 has NaN in Y or Z (instance 2)"}},
-                     {9, {UndefinedReason::NanTriangle, "triangle 0 has NaN in Y or Z (instance 0)"}}},
-                    modelTierName(tier));
+    expectUndefined(
+        r,
+        {{0,
+          {UndefinedReason::NanTriangle,
+           "scene.blas.tris[0]: triangle 0 has NaN in Y or Z (instance 0)"}},
+         {2, {UndefinedReason::NanTriangle, "triangle 1 has NaN in Y or Z (instance 0)"}},
+         {5, {UndefinedReason::NanTriangle, "triangle 0 has NaN in Y or Z (instance 2)"}},
+         {9, {UndefinedReason::NanTriangle, "triangle 0 has NaN in Y or Z (instance 0)"}}},
+        modelTierName(tier));
     // Defined: beside the regions (1, 3), masked out (4), culled as opaque
     // (6), skipped triangles (7), pointing away (8). Rays 1, 3 and 4 reach
     // the floor: a triangle of the model's own test in one BLAS must not hide
@@ -397,7 +420,8 @@ TEST(ModelUndefined, TrianglesWithNanInYOrZ) {
       EXPECT_EQ(word(r, ray, "hit"), 1u) << modelTierName(tier) << " ray " << ray;
       EXPECT_EQ(word(r, ray, "instance_id"), 1u) << modelTierName(tier) << " ray " << ray;
     }
-    for (uint32_t ray : {6u, 7u, 8u}) EXPECT_EQ(word(r, ray, "hit"), 0u) << modelTierName(tier) << " ray " << ray;
+    for (uint32_t ray : {6u, 7u, 8u})
+      EXPECT_EQ(word(r, ray, "hit"), 0u) << modelTierName(tier) << " ray " << ray;
     // The documented way: such a triangle is never a hit.
     EXPECT_EQ(word(r, 0, "instance_id"), 1u);
   }

@@ -45,13 +45,15 @@ TEST(Watertight, ExactlyOneTriangleOfASharedEdgeOrVertex) {
   rim[6] = {0, -1, 0};
   for (const DVec3& d : {DVec3{0, 0, -1}, DVec3{0, 0, 1}, DVec3{0.5, 0.25, -1}})
     for (bool flip : {false, true})
-      for (const DVec3& at : {DVec3{0, 0, 0}, DVec3{0.5, 0, 0}, DVec3{0, -0.25, 0}, DVec3{-0.125, 0, 0}}) {
+      for (const DVec3& at :
+           {DVec3{0, 0, 0}, DVec3{0.5, 0, 0}, DVec3{0, -0.25, 0}, DVec3{-0.125, 0, 0}}) {
         int hits = 0;
         for (int k = 0; k < 8; ++k) {
           const DVec3& a = rim[k];
           const DVec3& b = rim[(k + 1) % 8];
           const DVec3 o{at[0] - 4 * d[0], at[1] - 4 * d[1], -4 * d[2]};
-          hits += (flip ? watertightIntersect(o, d, c, b, a) : watertightIntersect(o, d, c, a, b)).hit;
+          hits +=
+              (flip ? watertightIntersect(o, d, c, b, a) : watertightIntersect(o, d, c, a, b)).hit;
         }
         EXPECT_EQ(hits, 1) << at[0] << " " << at[1] << " d " << d[0] << " flip " << flip;
       }
@@ -112,8 +114,10 @@ TEST(Watertight, NearEdgeCountLabels) {
 
 TEST(FrameError, InstanceForms) {
   EXPECT_EQ(instanceForm(kIdentity), InstanceForm::Identity);
-  EXPECT_EQ(instanceForm({1, 0, 0, 1e5f, 0, 1, 0, 1e5f, 0, 0, 1, 0}), InstanceForm::ScaledPermutation);
-  EXPECT_EQ(instanceForm({0, 3, 0, 0, -2, 0, 0, 0, 0, 0, 0.5f, 7}), InstanceForm::ScaledPermutation);
+  EXPECT_EQ(instanceForm({1, 0, 0, 1e5f, 0, 1, 0, 1e5f, 0, 0, 1, 0}),
+            InstanceForm::ScaledPermutation);
+  EXPECT_EQ(instanceForm({0, 3, 0, 0, -2, 0, 0, 0, 0, 0, 0.5f, 7}),
+            InstanceForm::ScaledPermutation);
   EXPECT_EQ(instanceForm({0.6f, -0.8f, 0, 0, 0.8f, 0.6f, 0, 0, 0, 0, 1, 0}), InstanceForm::General);
 }
 
@@ -133,7 +137,8 @@ TEST(FrameError, ObjectRayErrorPerForm) {
   tr[3] = tr[7] = -1e6;
   std::array<float, 12> trf = idf;
   trf[3] = trf[7] = -1e6f;
-  objectRayFrameError(InstanceForm::ScaledPermutation, tr, trf, {1e6 + 0.25, 1e6 + 0.5, 5}, {0, 0, -1}, e);
+  objectRayFrameError(InstanceForm::ScaledPermutation, tr, trf, {1e6 + 0.25, 1e6 + 0.5, 5},
+                      {0, 0, -1}, e);
   EXPECT_NEAR(e.origin[0], 2 * kU * 1e6 + kU * 0.25, 1e-12);
   EXPECT_NEAR(e.origin[1], 2 * kU * 1e6 + kU * 0.5, 1e-12);
   EXPECT_NEAR(e.origin[2], kU * 5, 1e-12);
@@ -153,7 +158,8 @@ TEST(FrameError, ObjectRayErrorPerForm) {
 
 TEST(FrameError, GeometryTransformVertexError) {
   EXPECT_EQ(geometryVertexError(kIdentity, {{1e6f, 0, 0}}), (DVec3{0, 0, 0}));
-  const DVec3 e = geometryVertexError({2, 0, 0, 10, 0, 1, 0, 0, 0, 0, 1, 0}, {{1, 2, 3}, {-4, 0, 0}});
+  const DVec3 e =
+      geometryVertexError({2, 0, 0, 10, 0, 1, 0, 0, 0, 0, 1, 0}, {{1, 2, 3}, {-4, 0, 0}});
   EXPECT_NEAR(e[0], 4 * kU * (8 + 10), 1e-15);  // the larger of |2*1|+10 and |2*-4|+10
   EXPECT_NEAR(e[1], 4 * kU * 2, 1e-15);
   EXPECT_NEAR(e[2], 4 * kU * 3, 1e-15);

@@ -35,9 +35,9 @@ const MutantOutcome* find(const CaseMutation& m, const std::string& name) {
 TEST(Mutate, EveryRayAmbiguousStillKillsGenericMutants) {
   const CaseMutation m = mutateSuiteCase("watertight/shared-edges");
   ASSERT_TRUE(m.judged) << m.not_judged;
-  for (const char* name : {"null-device", "counter:miss+1", "counter:miss-1", "counter:closesthit+1",
-                           "counter:closesthit-1", "field:hit", "field:raygen_runs", "miss-and-closest-hit",
-                           "images-zeroed"}) {
+  for (const char* name : {"null-device", "counter:miss+1", "counter:miss-1",
+                           "counter:closesthit+1", "counter:closesthit-1", "field:hit",
+                           "field:raygen_runs", "miss-and-closest-hit", "images-zeroed"}) {
     const MutantOutcome* o = find(m, name);
     ASSERT_NE(o, nullptr) << name;
     ASSERT_TRUE(o->mutation.applied) << name << ": " << o->mutation.what;
@@ -100,7 +100,8 @@ TEST(Mutate, KillMatrixCountsHoles) {
   EXPECT_EQ(m.by_kind.at("field").legal, 1u);
   EXPECT_EQ(m.unexplained(), 1u);
   EXPECT_NE(killMatrixText(m).find("1 survive with no reason"), std::string::npos);
-  EXPECT_NE(killMatrixJson(m, "run", "dev").find("\"unexplained_survivors\": 1"), std::string::npos);
+  EXPECT_NE(killMatrixJson(m, "run", "dev").find("\"unexplained_survivors\": 1"),
+            std::string::npos);
 }
 
 }  // namespace

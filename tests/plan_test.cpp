@@ -146,9 +146,10 @@ TEST(Plan, EveryEffectPlanSwitchesEverythingOn) {
   const Case c = baseCase(quad(kGeometryOpaque));
   const Plan derived = derivePlan(c), every = everyEffectPlan(c);
   EXPECT_FALSE(derived.any_hit);
-  for (bool on : {every.triangles, every.aabbs, every.any_hit, every.intersection, every.closest_hit, every.miss,
-                  every.callables, every.nested_trace, every.facing_culls, every.masks, every.opacity_flags,
-                  every.scene_data, every.shader_record_data, every.zero_records, every.records})
+  for (bool on : {every.triangles, every.aabbs, every.any_hit, every.intersection,
+                  every.closest_hit, every.miss, every.callables, every.nested_trace,
+                  every.facing_culls, every.masks, every.opacity_flags, every.scene_data,
+                  every.shader_record_data, every.zero_records, every.records})
     EXPECT_TRUE(on);
   EXPECT_EQ(every.counters, derived.counters);
   EXPECT_GT(every.record_fields.size(), derived.record_fields.size());

@@ -37,9 +37,11 @@ TEST(AxisTicks, LinearRoundSteps) {
 
 #ifdef RAYSPEC_WITH_OIIO
 TEST(LinePlot, WritesAnImageWithLinesInTheSeriesColours) {
-  const std::string path = (std::filesystem::temp_directory_path() / "rayspec-plot-test.png").string();
-  PlotPanel p{"rates", "magnitude", "per 1000 rays", true, false,
-              {{"a", {{1, 0}, {10, 5}, {100, 10}}}, {"b", {{1, 10}, {100, 0}}}}};
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "rayspec-plot-test.png").string();
+  PlotPanel p{"rates",         "magnitude",
+              "per 1000 rays", true,
+              false,           {{"a", {{1, 0}, {10, 5}, {100, 10}}}, {"b", {{1, 10}, {100, 0}}}}};
   ASSERT_EQ(writeLinePlots(path, {p, p}, {2, 400, 300}), "");
   OIIO::ImageBuf img(path);
   ASSERT_TRUE(img.read());
@@ -75,8 +77,10 @@ int bluePixels(const std::string& path) {
 }
 
 TEST(LinePlot, ScatterPanelsDrawMarkersOnlyAndLabelThePoints) {
-  const std::string path = (std::filesystem::temp_directory_path() / "rayspec-scatter-test.png").string();
-  PlotPanel p{"scatter", "ms", "rate", true, true, {{"a", {{1, 1}, {1000, 1000}}, {"first", "second"}}}};
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "rayspec-scatter-test.png").string();
+  PlotPanel p{"scatter", "ms", "rate",
+              true,      true, {{"a", {{1, 1}, {1000, 1000}}, {"first", "second"}}}};
   ASSERT_EQ(writeLinePlots(path, {p}, {1, 400, 300}), "");
   const int with_lines = bluePixels(path);
   p.lines = false;

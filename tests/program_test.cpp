@@ -146,7 +146,8 @@ TEST(ConstantValue, FoldsUintOperatorsAndLeavesRunTimeValuesOpen) {
 
 TEST(TypeCheck, UintDivisionOrModuloByAConstantZeroIsAnError) {
   Expr d = op("div", {builtin("launch_id_x"), op("sub", {lit(3), lit(3)})});
-  EXPECT_NE(typeCheck(d, Stage::Raygen).find("Uint division by a constant zero"), std::string::npos);
+  EXPECT_NE(typeCheck(d, Stage::Raygen).find("Uint division by a constant zero"),
+            std::string::npos);
   Expr m = op("mod", {builtin("launch_id_y"), op("mul", {lit(0), builtin("launch_id_x")})});
   EXPECT_EQ(typeCheck(m, Stage::Raygen), "") << "0 * a run-time value is not folded";
   Expr m0 = op("mod", {builtin("launch_id_y"), op("min", {lit(0), lit(4)})});
@@ -206,7 +207,8 @@ TEST(CheckProgram, ConditionMustBeBool) {
 
 TEST(CheckProgram, TypeErrorPointsAtInnermostNode) {
   Stmt s = stmt(Stmt::Kind::If, 4);
-  s.cond = op("and", {op("odd", {builtin("primitive_id")}, 10), op("odd", {builtin("hit_t")}, 11)}, 12);
+  s.cond =
+      op("and", {op("odd", {builtin("primitive_id")}, 10), op("odd", {builtin("hit_t")}, 11)}, 12);
   Program p = {s};
   auto e = checkProgram(p, Stage::AnyHit, {}, {});
   ASSERT_TRUE(e);

@@ -7,12 +7,12 @@
 #include <fstream>
 #include <sstream>
 
-#include "test_dir.h"
 #include "report/baseline.h"
 #include "report/baseline_gate.h"
 #include "report/merge_runs.h"
 #include "report/outcome_json.h"
 #include "report/run_summary.h"
+#include "test_dir.h"
 
 namespace rayspec {
 namespace {
@@ -59,7 +59,7 @@ TEST(BaselineGate, EachResultAgainstItsExpectation) {
     bool rerun, fails;
   } rows[] = {
       {"fam/known", Status::Fail, BaselineMatch::Expected, false, false},
-      {"fam/known", Status::Crash, BaselineMatch::None, true, true},         // a different failure
+      {"fam/known", Status::Crash, BaselineMatch::None, true, true},  // a different failure
       {"fam/fixed", Status::Pass, BaselineMatch::UnexpectedPass, false, true},
       {"fam/fixed", Status::NotSupported, BaselineMatch::UnexpectedPass, false, true},
       {"fam/new", Status::Fail, BaselineMatch::None, true, true},
@@ -67,12 +67,14 @@ TEST(BaselineGate, EachResultAgainstItsExpectation) {
       {"fam/new", Status::QualityWarning, BaselineMatch::None, false, false},
       {"fam/new", Status::NotSupported, BaselineMatch::None, false, false},
       {"fam/wobbly-one", Status::Timeout, BaselineMatch::KnownFlake, false, false},
-      {"other/fam/wobbly", Status::Fail, BaselineMatch::None, true, true},  // the pattern is anchored
+      {"other/fam/wobbly", Status::Fail, BaselineMatch::None, true,
+       true},  // the pattern is anchored
   };
   for (const Row& r : rows) {
     CaseOutcome o = outcome(r.name, r.status);
     EXPECT_EQ(applyBaseline(b, o), r.rerun) << r.name << " " << statusName(r.status);
-    EXPECT_EQ(o.baseline, r.match) << r.name << " " << statusName(r.status) << ": " << o.baseline_note;
+    EXPECT_EQ(o.baseline, r.match)
+        << r.name << " " << statusName(r.status) << ": " << o.baseline_note;
     EXPECT_EQ(failsRun(o), r.fails) << r.name << " " << statusName(r.status);
   }
 }
@@ -105,8 +107,9 @@ TEST(BaselineGate, SkippedCasesAreNotSupportedNeverPass) {
 
 TEST(BaselineGate, FailuresCsvIsABaselineOfWhatWasUnexpected) {
   const Baseline b = gate();
-  std::vector<CaseOutcome> all = {outcome("fam/known", Status::Fail), outcome("fam/fixed", Status::Pass),
-                                  outcome("fam/new", Status::Timeout), outcome("fam/fine", Status::Pass)};
+  std::vector<CaseOutcome> all = {
+      outcome("fam/known", Status::Fail), outcome("fam/fixed", Status::Pass),
+      outcome("fam/new", Status::Timeout), outcome("fam/fine", Status::Pass)};
   for (CaseOutcome& o : all) applyBaseline(b, o);
   const std::string path = testing_support::testDir() + "/failures.csv";
   ASSERT_EQ(writeFailuresCsv(all, b.file, path), "");
@@ -160,7 +163,8 @@ TEST(OutcomeJson, EveryFieldRoundTrips) {
 }
 
 // A run folder made of outcomes, as a run writes it.
-std::string runFolder(const std::string& name, const std::string& device, const std::vector<CaseOutcome>& cases) {
+std::string runFolder(const std::string& name, const std::string& device,
+                      const std::vector<CaseOutcome>& cases) {
   const std::string dir = testing_support::testDir() + "/" + name;
   std::filesystem::remove_all(dir);
   RunInfo info;
@@ -177,8 +181,10 @@ std::string runFolder(const std::string& name, const std::string& device, const 
 }
 
 TEST(MergeRuns, ShardsJoinIntoOneRun) {
-  const std::string a = runFolder("shard-a", "llvmpipe", {outcome("fam/b", Status::Pass), outcome("fam/d", Status::Fail)});
-  const std::string b = runFolder("shard-b", "llvmpipe", {outcome("fam/a", Status::Pass), outcome("fam/c", Status::Pass)});
+  const std::string a = runFolder("shard-a", "llvmpipe",
+                                  {outcome("fam/b", Status::Pass), outcome("fam/d", Status::Fail)});
+  const std::string b = runFolder("shard-b", "llvmpipe",
+                                  {outcome("fam/a", Status::Pass), outcome("fam/c", Status::Pass)});
   const std::string out = testing_support::testDir() + "/merged";
   std::filesystem::remove_all(out);
   const MergeResult m = mergeRuns({a, b}, out, Baseline{}, {});

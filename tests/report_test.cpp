@@ -7,13 +7,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "test_dir.h"
 #include "report/baseline.h"
 #include "report/baseline_gate.h"
 #include "report/escape.h"
 #include "report/rule_catalog.h"
 #include "report/run_summary.h"
 #include "report/write_reports.h"
+#include "test_dir.h"
 
 namespace rayspec {
 namespace {
@@ -79,7 +79,8 @@ TEST(Reports, InterruptedRunSaysSoInEveryReport) {
   EXPECT_NE(json.find("\"interrupted\": true"), std::string::npos) << json;
   EXPECT_NE(json.find("\"planned_cases\": 5"), std::string::npos) << json;
   EXPECT_EQ(slurp(dir + "/summary.txt").rfind("INTERRUPTED: 3 of 5 planned cases ran\n", 0), 0u);
-  EXPECT_NE(slurp(dir + "/report.html").find("INTERRUPTED: 3 of 5 planned cases ran"), std::string::npos);
+  EXPECT_NE(slurp(dir + "/report.html").find("INTERRUPTED: 3 of 5 planned cases ran"),
+            std::string::npos);
 
   info.planned_cases = 3;
   info.interrupted = false;
@@ -97,7 +98,8 @@ TEST(Reports, HtmlPutsFailingCasesFirstEscapesAndCarriesItsSelfCheck) {
   EXPECT_LT(html.find("id=\"watertight/leaky\""), html.find("id=\"results/passing\""));
   EXPECT_NE(html.find("&lt;odd&gt;"), std::string::npos);
   EXPECT_EQ(html.find("<odd>"), std::string::npos);
-  EXPECT_NE(html.find("brokenImages"), std::string::npos) << "the self-check a headless browser reads";
+  EXPECT_NE(html.find("brokenImages"), std::string::npos)
+      << "the self-check a headless browser reads";
   EXPECT_NE(html.find("<td>primitive_id</td><td>3</td><td>2</td>"), std::string::npos);
 }
 
@@ -106,14 +108,22 @@ std::vector<CaseOutcome> outcomesWithUndefinedBehaviour() {
   std::vector<CaseOutcome> v = outcomes();
   CaseOutcome probe;
   probe.name = "robustness/probe";
-  probe.verdict.undefined.push_back({UndefinedReason::RayParameters, 3, {0, 4, 7}, "rays.list[0].tmin: NaN <tmin>"});
-  probe.verdict.add({Status::Pass, "R-UB", "R-UB probe: the device survived undefined behaviour: 3 rays", {0, 4, 7}, 3});
+  probe.verdict.undefined.push_back(
+      {UndefinedReason::RayParameters, 3, {0, 4, 7}, "rays.list[0].tmin: NaN <tmin>"});
+  probe.verdict.add({Status::Pass,
+                     "R-UB",
+                     "R-UB probe: the device survived undefined behaviour: 3 rays",
+                     {0, 4, 7},
+                     3});
   probe.headline = probe.verdict.headline();
   CaseOutcome broken;
   broken.name = "builtins/broken";
-  broken.verdict.undefined.push_back(
-      {UndefinedReason::HitRecordOutOfRange, 2, {5, 6}, "pipeline.raygen[0].trace: hit record 1 of 1"});
-  broken.verdict.add({Status::CaseError, "R-UB", "the case has undefined behaviour: 2 rays", {5, 6}, 2});
+  broken.verdict.undefined.push_back({UndefinedReason::HitRecordOutOfRange,
+                                      2,
+                                      {5, 6},
+                                      "pipeline.raygen[0].trace: hit record 1 of 1"});
+  broken.verdict.add(
+      {Status::CaseError, "R-UB", "the case has undefined behaviour: 2 rays", {5, 6}, 2});
   broken.status = broken.verdict.status;
   broken.headline = broken.verdict.headline();
   v.insert(v.begin(), broken);
@@ -130,15 +140,18 @@ TEST(Reports, CaseErrorIsFailInResultsCsvAndAFailureInJunit) {
   const size_t at = junit.find("name=\"builtins/broken\"");
   ASSERT_NE(at, std::string::npos);
   EXPECT_LT(junit.find("<failure type=\"CaseError\"", at), junit.find("</testcase>", at)) << junit;
-  EXPECT_NE(junit.find("failures=\"3\""), std::string::npos) << "Fail, QualityWarning and CaseError";
+  EXPECT_NE(junit.find("failures=\"3\""), std::string::npos)
+      << "Fail, QualityWarning and CaseError";
 }
 
 TEST(Reports, CaseErrorsAreGroupedApartInHtmlTextAndJson) {
   const std::string dir = testing_support::testDir() + "/rayspec-report-test-case-error-groups";
   ASSERT_EQ(writeReports(outcomesWithUndefinedBehaviour(), RunInfo{}, dir), "");
   const std::string html = slurp(dir + "/report.html");
-  const size_t failing = html.find("<h2>Failing cases</h2>"), errors = html.find("<h2>Case errors</h2>"),
-               others = html.find("<h2>Other cases</h2>"), broken = html.find("id=\"builtins/broken\"");
+  const size_t failing = html.find("<h2>Failing cases</h2>"),
+               errors = html.find("<h2>Case errors</h2>"),
+               others = html.find("<h2>Other cases</h2>"),
+               broken = html.find("id=\"builtins/broken\"");
   ASSERT_NE(errors, std::string::npos);
   EXPECT_LT(failing, errors);
   EXPECT_LT(html.find("id=\"anyhit/failing\""), errors) << "device failures first";
@@ -159,13 +172,16 @@ TEST(Reports, UndefinedRaysAreShownPerCaseApartFromTheFindings) {
   const size_t probe = html.find("id=\"robustness/probe\"");
   const size_t table = html.find("<table class=\"undefined\">", probe);
   ASSERT_NE(table, std::string::npos);
-  EXPECT_NE(html.find("<td>ray-parameters</td><td>3</td><td>0 4 7 </td><td>rays.list[0].tmin: NaN &lt;tmin&gt;</td>",
+  EXPECT_NE(html.find("<td>ray-parameters</td><td>3</td><td>0 4 7 </td><td>rays.list[0].tmin: NaN "
+                      "&lt;tmin&gt;</td>",
                       table),
             std::string::npos)
       << html.substr(table, 400);
   const std::string text = slurp(dir + "/summary.txt");
-  EXPECT_NE(text.find("undefined (R-UB, not judged): ray-parameters, 3 rays; first: 0 4 7; rays.list[0].tmin"),
-            std::string::npos)
+  EXPECT_NE(
+      text.find(
+          "undefined (R-UB, not judged): ray-parameters, 3 rays; first: 0 4 7; rays.list[0].tmin"),
+      std::string::npos)
       << text;
   const nlohmann::json j = nlohmann::json::parse(slurp(dir + "/summary.json"));
   for (const auto& c : j["cases"]) {
@@ -193,7 +209,9 @@ std::string writeTemp(const std::string& name, const std::string& text) {
 TEST(Baseline, ExpectedFailureDoesNotFailTheRunAndIsReportedAsExpected) {
   std::string error;
   const Baseline b = loadBaseline(
-      writeTemp("baseline.csv", "# lavapipe known failures\nfam/broken,Fail  # driver bug\nfam/fixed,Fail\n"), &error);
+      writeTemp("baseline.csv",
+                "# lavapipe known failures\nfam/broken,Fail  # driver bug\nfam/fixed,Fail\n"),
+      &error);
   ASSERT_EQ(error, "");
   ASSERT_EQ(b.expected.size(), 2u);
   CaseOutcome broken{"fam/broken", {}, Status::Fail, "Fail: x"};
@@ -211,7 +229,8 @@ TEST(Baseline, ExpectedFailureDoesNotFailTheRunAndIsReportedAsExpected) {
   EXPECT_FALSE(expected_only.failed());
   RunSummary with_fixed(1);
   with_fixed.add(fixed);
-  EXPECT_TRUE(with_fixed.failed()) << "an unexpected pass fails the run until the baseline is updated";
+  EXPECT_TRUE(with_fixed.failed())
+      << "an unexpected pass fails the run until the baseline is updated";
   RunSummary with_new_failure(1);
   with_new_failure.add(other);
   EXPECT_TRUE(with_new_failure.failed()) << "a failure the baseline does not list fails the run";
@@ -243,7 +262,8 @@ TEST(Baseline, ReadsNamesBackFromResultsCsv) {
   for (const std::string& n : names) outcomes.push_back({n, {}, Status::Fail, "Fail: x"});
   const std::string csv = testing_support::testDir() + "/quoted-results.csv";
   ASSERT_EQ(writeResultsCsv(outcomes, csv), "");
-  // A baseline made from results.csv: each line's name field as it was written, the rayspec status, a comment.
+  // A baseline made from results.csv: each line's name field as it was written, the rayspec status,
+  // a comment.
   std::ifstream in(csv);
   std::string line, baseline_text = "# known failures\n";
   while (std::getline(in, line)) {
@@ -261,7 +281,8 @@ TEST(Baseline, ReadsNamesBackFromResultsCsv) {
   for (const std::string& n : names) EXPECT_EQ(csvFieldText(csvField(n)), n);
   // Names no case can have (a case name's parts are file names) are refused,
   // quoted or not: a typo or a stray byte would otherwise expect nothing.
-  for (const std::string bad : {"\"fam/a,b\",Fail\n", "fam/hash#in,Fail\n", "fam//a,Fail\n", "fam/../a,Fail\n"}) {
+  for (const std::string bad :
+       {"\"fam/a,b\",Fail\n", "fam/hash#in,Fail\n", "fam//a,Fail\n", "fam/../a,Fail\n"}) {
     error.clear();
     loadBaseline(writeTemp("bad-name-baseline.csv", bad), &error);
     EXPECT_NE(error.find("bad-name-baseline.csv:1:"), std::string::npos) << bad << " -> " << error;
@@ -291,13 +312,15 @@ TEST(RunSummary, CaseErrorsAreListedApartFromTheDevicesFailures) {
   EXPECT_LT(not_passing, out.find("  anyhit/failing", not_passing));
   EXPECT_LT(out.find("  anyhit/failing", not_passing), errors);
   EXPECT_NE(out.find("  builtins/broken", errors), std::string::npos) << out;
-  EXPECT_EQ(out.find("  builtins/broken", not_passing), out.find("  builtins/broken", errors)) << out;
+  EXPECT_EQ(out.find("  builtins/broken", not_passing), out.find("  builtins/broken", errors))
+      << out;
   EXPECT_TRUE(summary.failed()) << "a case error fails the run";
 }
 
 TEST(RuleCatalog, ErrorsNameFileLineAndWhatWasExpected) {
   std::string error;
-  EXPECT_TRUE(loadRuleCatalog(testing_support::testDir() + "/no-such-catalog.yaml", &error).empty());
+  EXPECT_TRUE(
+      loadRuleCatalog(testing_support::testDir() + "/no-such-catalog.yaml", &error).empty());
   EXPECT_NE(error.find("no such rule catalog"), std::string::npos) << error;
   EXPECT_EQ(error.find("bad file"), std::string::npos) << error;
   const std::string path = testing_support::testDir() + "/catalog-bad-title.yaml";

@@ -1,6 +1,6 @@
+#include <gtest/gtest.h>
 #include <bit>
 #include <cstring>
-#include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
@@ -52,7 +52,10 @@ Results sampleResults() {
   r.images.push_back(im);
   Image color{"color", "color", 3, 2, 4, true, BulkWords(24, 0x3f800000u)};
   r.images.push_back(color);
-  r.ambiguous.push_back({4, AmbiguityReason::Edge, {{true, 0, 0, 1}, {true, 0, 0, 2}}, {{true, 0, 0, 1}, {true, 0, 0, 2}}});
+  r.ambiguous.push_back({4,
+                         AmbiguityReason::Edge,
+                         {{true, 0, 0, 1}, {true, 0, 0, 2}},
+                         {{true, 0, 0, 1}, {true, 0, 0, 2}}});
   r.t_bounds.push_back({5, 0.25f});
   return r;
 }
@@ -123,16 +126,21 @@ TEST(ResultsIo, BadBundlesNameTheFieldOrFile) {
     readResults(dir, &error);
     return error;
   };
-  EXPECT_NE(edited("\"seconds\": 0.25", "\"seconds\": \"soon\"").find("results.json: field 'seconds': "),
+  EXPECT_NE(
+      edited("\"seconds\": 0.25", "\"seconds\": \"soon\"").find("results.json: field 'seconds': "),
+      std::string::npos);
+  EXPECT_NE(edited("\"channels\": 4", "\"channels\": true").find("field 'images.channels'"),
             std::string::npos);
-  EXPECT_NE(edited("\"channels\": 4", "\"channels\": true").find("field 'images.channels'"), std::string::npos);
-  EXPECT_NE(edited("\"name\": \"color\"", "\"name\": \"../color\"").find("images: name '../color' holds '/'"),
+  EXPECT_NE(edited("\"name\": \"color\"", "\"name\": \"../color\"")
+                .find("images: name '../color' holds '/'"),
             std::string::npos);
-  EXPECT_NE(edited("\"case\": \"family/sample\"", "\"case\": \"/etc\"").find("'/etc' is no case name"),
-            std::string::npos);
+  EXPECT_NE(
+      edited("\"case\": \"family/sample\"", "\"case\": \"/etc\"").find("'/etc' is no case name"),
+      std::string::npos);
   // records.bin one word short.
   edited("\"width\": 3", "\"width\": 3");
-  std::filesystem::resize_file(dir + "/records.bin", std::filesystem::file_size(dir + "/records.bin") - 4);
+  std::filesystem::resize_file(dir + "/records.bin",
+                               std::filesystem::file_size(dir + "/records.bin") - 4);
   std::string error;
   readResults(dir, &error);
   EXPECT_NE(error.find("records.bin holds " + std::to_string(6 * recordWords() * 4 - 4) +

@@ -48,9 +48,11 @@ double sumOf(const nlohmann::json& steps) {
   return s;
 }
 
-void expectSteps(const nlohmann::json& cost, const std::string& side, const std::vector<std::string>& steps) {
+void expectSteps(const nlohmann::json& cost, const std::string& side,
+                 const std::vector<std::string>& steps) {
   for (const std::string& step : steps) {
-    ASSERT_TRUE(cost[side].contains(step)) << side << " lacks " << step << ": " << cost[side].dump();
+    ASSERT_TRUE(cost[side].contains(step))
+        << side << " lacks " << step << ": " << cost[side].dump();
     EXPECT_GT(cost[side][step].get<double>(), 0.0) << side << " " << step;
   }
 }
@@ -63,16 +65,20 @@ TEST(Cost, EveryStepAppearsAndTheSumsAgree) {
   // The model's engine lives across cases in its worker: made in the first
   // case, closed when the worker ends (no case's step). lavapipe gets a
   // device per case (vulkan/vulkan_backend.h devicePerCase).
-  expectSteps(cost, "model", {"backend_setup", "model_scene", "model_trace", "write_bundle", "process", "read_bundle"});
-  expectSteps(cost, "device", {"backend_setup", "backend_teardown", "glsl_generation", "spirv_compile",
-                               "pipeline_creation", "buffers", "acceleration_build", "sbt", "trace", "read_back",
-                               "write_bundle", "process", "read_bundle"});
+  expectSteps(
+      cost, "model",
+      {"backend_setup", "model_scene", "model_trace", "write_bundle", "process", "read_bundle"});
+  expectSteps(cost, "device",
+              {"backend_setup", "backend_teardown", "glsl_generation", "spirv_compile",
+               "pipeline_creation", "buffers", "acceleration_build", "sbt", "trace", "read_back",
+               "write_bundle", "process", "read_bundle"});
   EXPECT_FALSE(cost["device"].contains("spirv_cache_hit")) << "a fresh cache cannot hit";
   // accounted is the sum of every step; without the reports (written after the
   // case's clock stops) it is the case's wall time, give or take the
   // bookkeeping between steps.
   const double accounted = cost["accounted"].get<double>(), seconds = cost["seconds"].get<double>();
-  EXPECT_NEAR(accounted, sumOf(cost["parent"]) + sumOf(cost["model"]) + sumOf(cost["device"]), 1e-9);
+  EXPECT_NEAR(accounted, sumOf(cost["parent"]) + sumOf(cost["model"]) + sumOf(cost["device"]),
+              1e-9);
   const double without_reports = accounted - cost["parent"]["reports"].get<double>();
   EXPECT_LE(without_reports, seconds * 1.01 + 1e-3);
   EXPECT_GE(without_reports, seconds * 0.9 - 5e-3);

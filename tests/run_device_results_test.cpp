@@ -8,12 +8,12 @@
 
 #include "case/parse_case.h"
 #include "metamorphic/permute_case.h"
+#include "model/model_backend.h"
 #include "results/record_layout.h"
 #include "results/results_io.h"
 #include "run/device_results.h"
 #include "run/isolation.h"
 #include "run/run_only.h"
-#include "model/model_backend.h"
 #include "temp_dir.h"
 
 namespace rayspec {
@@ -34,7 +34,9 @@ Case parsed(const std::string& text) {
   return p.value ? *p.value : Case{};
 }
 
-std::string savedRun(const std::string& name) { return freshTempDir("rayspec-device-results/" + name); }
+std::string savedRun(const std::string& name) {
+  return freshTempDir("rayspec-device-results/" + name);
+}
 
 // A device bundle as a device-only run writes it: the case's hash, its records
 // (width x height of them, as the reader checks).
@@ -84,7 +86,8 @@ TEST(SavedDevice, BundleOfAChangedCaseIsRefused) {
     SavedDevice(dir).run(edited, derivePlan(edited));
     ADD_FAILURE() << "a bundle of a changed case was accepted";
   } catch (const HarnessError& e) {
-    EXPECT_NE(std::string(e.what()).find("the case changed since it ran there"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("the case changed since it ran there"), std::string::npos)
+        << e.what();
   }
 }
 
@@ -114,7 +117,8 @@ TEST(DeviceResultsOptions, RefusedWhereTheyCannotWork) {
   EXPECT_EQ(deviceResultsError(opt), "");
   RunOptions same = opt;
   same.out = dir + "/.";
-  EXPECT_NE(deviceResultsError(same).find("is the --out folder"), std::string::npos) << deviceResultsError(same);
+  EXPECT_NE(deviceResultsError(same).find("is the --out folder"), std::string::npos)
+      << deviceResultsError(same);
   RunOptions missing = opt;
   missing.device_results = dir + "/nothing-here";
   EXPECT_NE(deviceResultsError(missing).find("not a folder"), std::string::npos);

@@ -24,7 +24,8 @@ TEST(IcdProbe, LavapipeAloneIsUsable) {
   const IcdManifest* lvp = lavapipe(s);
   ASSERT_TRUE(lvp) << "lavapipe's manifest is not installed";
   const IcdProbe p = probeIcd(*lvp, ChildLimits{kProbeSeconds, 0});
-  ASSERT_EQ(p.devices.size(), 1u) << p.failure;  // only lavapipe's device, whatever else is installed
+  ASSERT_EQ(p.devices.size(), 1u)
+      << p.failure;  // only lavapipe's device, whatever else is installed
   EXPECT_NE(p.devices[0].name.find("llvmpipe"), std::string::npos);
   EXPECT_EQ(deviceUsability(p.devices[0]), DeviceUsability::Usable);
   EXPECT_EQ(p.devices[0].shader_group_handle_size, 32u);  // carried through the child's answer
@@ -34,9 +35,11 @@ TEST(IcdProbe, LavapipeAloneIsUsable) {
 TEST(IcdProbe, MissingLibraryIsNotUsableWithTheReason) {
   const fs::path dir = fs::temp_directory_path() / "rayspec-run-icd-test";
   fs::create_directories(dir);
-  std::ofstream(dir / "broken.json") << R"({"file_format_version": "1.0.0", "ICD": {"library_path": "./libnosuch_vulkan.so"}})";
-  const IcdProbe p = probeIcd(IcdManifest{(dir / "broken.json").string(), "./libnosuch_vulkan.so", ""},
-                              ChildLimits{kProbeSeconds, 0});
+  std::ofstream(dir / "broken.json")
+      << R"({"file_format_version": "1.0.0", "ICD": {"library_path": "./libnosuch_vulkan.so"}})";
+  const IcdProbe p =
+      probeIcd(IcdManifest{(dir / "broken.json").string(), "./libnosuch_vulkan.so", ""},
+               ChildLimits{kProbeSeconds, 0});
   EXPECT_TRUE(p.devices.empty());
   EXPECT_NE(p.failure.find("could not be loaded"), std::string::npos) << p.failure;
   EXPECT_NE(p.failure.find("libnosuch_vulkan.so"), std::string::npos) << p.failure;

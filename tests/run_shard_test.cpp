@@ -31,7 +31,8 @@ TEST(Shard, EveryCaseInExactlyOneShard) {
       for (unsigned i = 0; i < n; ++i)
         for (size_t p : shardPositions(total, Shard{i, n})) seen.insert(p);
       EXPECT_EQ(seen.size(), total);
-      for (size_t p = 0; p < total; ++p) EXPECT_EQ(seen.count(p), 1u) << total << " " << n << " " << p;
+      for (size_t p = 0; p < total; ++p)
+        EXPECT_EQ(seen.count(p), 1u) << total << " " << n << " " << p;
     }
 }
 
@@ -77,7 +78,9 @@ TEST(Shard, GitLabVariablesCountFromOne) {
   s = shardFromEnvironment(&error);
   ASSERT_TRUE(s) << error;
   EXPECT_EQ(s->count, 2u);
-  for (const char* v : {"CI_NODE_TOTAL", "CI_NODE_INDEX", "GTEST_TOTAL_SHARDS", "GTEST_SHARD_INDEX"}) unsetenv(v);
+  for (const char* v :
+       {"CI_NODE_TOTAL", "CI_NODE_INDEX", "GTEST_TOTAL_SHARDS", "GTEST_SHARD_INDEX"})
+    unsetenv(v);
 }
 
 }  // namespace

@@ -17,9 +17,9 @@
 
 #include "case/parse_case.h"
 #include "compare/compare_results.h"
+#include "report/rule_catalog.h"
 #include "results/record_layout.h"
 #include "results/results_io.h"
-#include "report/rule_catalog.h"
 #include "run/case_steps.h"
 #include "run/child_process.h"
 #include "run/isolation.h"
@@ -40,7 +40,9 @@ Case loadCase(const std::string& name) {
   return p.value ? *p.value : Case{};
 }
 
-std::string tempDir(const std::string& name) { return freshTempDir("rayspec-run-test/" + name); }
+std::string tempDir(const std::string& name) {
+  return freshTempDir("rayspec-run-test/" + name);
+}
 
 // A model side whose engine does something bad before answering.
 class MisbehavingModel : public Backend {
@@ -128,7 +130,8 @@ TEST(Isolation, EmbreeAndTbbStartUnderTheDefaultMemoryLimit) {
   // Every thread of the model (a case with callables, lights and a camera).
   const Case c = loadCase("callable/lights");
   const Plan plan = derivePlan(c);
-  const SideResult m = runIsolated(modelSide(), c, plan, ChildLimits{120, kDefaultMemoryLimit}, tempDir("big-model"));
+  const SideResult m = runIsolated(modelSide(), c, plan, ChildLimits{120, kDefaultMemoryLimit},
+                                   tempDir("big-model"));
   EXPECT_TRUE(m.results.ok()) << m.results.statusText();
   EXPECT_EQ(m.results.records.size(), size_t(c.rays.width) * c.rays.height * recordWords());
 }
@@ -136,13 +139,16 @@ TEST(Isolation, EmbreeAndTbbStartUnderTheDefaultMemoryLimit) {
 TEST(Isolation, ModelHangIsATimeout) {
   const Case c = loadCase("results/miss-xor-closest-hit");
   const auto start = std::chrono::steady_clock::now();
-  const SideResult m = runIsolated(misbehavingSide([] { for (;;) pause(); }), c, derivePlan(c), ChildLimits{1, 0},
-                                   tempDir("hang"));
+  const SideResult m = runIsolated(misbehavingSide([] {
+                                     for (;;) pause();
+                                   }),
+                                   c, derivePlan(c), ChildLimits{1, 0}, tempDir("hang"));
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
   EXPECT_EQ(m.results.status, RunStatus::Timeout);
   EXPECT_EQ(m.results.backend, "model");
   EXPECT_EQ(m.results.status_detail, "the model process ran longer than 1 s (killed)");
-  EXPECT_EQ(backendVerdict(m.results).headline().rfind("Timeout: model: ", 0), 0u) << backendVerdict(m.results).headline();
+  EXPECT_EQ(backendVerdict(m.results).headline().rfind("Timeout: model: ", 0), 0u)
+      << backendVerdict(m.results).headline();
 }
 
 TEST(Isolation, ModelCrashIsACrash) {
@@ -166,7 +172,8 @@ TEST(Isolation, ModelCrashIsACrash) {
 }
 
 TEST(IsolationMemoryLimit, ModelBeyondTheMemoryLimitIsACrash) {
-  if (!memoryLimitApplies()) GTEST_SKIP() << "AddressSanitizer build: no memory limit is set on children";
+  if (!memoryLimitApplies())
+    GTEST_SKIP() << "AddressSanitizer build: no memory limit is set on children";
   const Case c = loadCase("results/miss-xor-closest-hit");
   // Without a limit it holds 1 GiB and answers; under 256 MiB it cannot.
   auto hog = [] {
@@ -176,17 +183,19 @@ TEST(IsolationMemoryLimit, ModelBeyondTheMemoryLimitIsACrash) {
       std::fill_n(blocks.back().get(), 64 << 20, char(i));
     }
   };
-  const SideResult m = runIsolated(misbehavingSide(hog), c, derivePlan(c), ChildLimits{60, 256u << 20},
-                                   tempDir("memory"));
+  const SideResult m = runIsolated(misbehavingSide(hog), c, derivePlan(c),
+                                   ChildLimits{60, 256u << 20}, tempDir("memory"));
   EXPECT_EQ(m.results.status, RunStatus::Crash);
-  EXPECT_EQ(m.results.status_detail, "the model process ran out of memory (--memory-limit 256 MiB)");
+  EXPECT_EQ(m.results.status_detail,
+            "the model process ran out of memory (--memory-limit 256 MiB)");
 }
 
 TEST(Isolation, BundleThatCannotBeWrittenIsAHarnessErrorNotACrash) {
   const Case c = loadCase("results/miss-xor-closest-hit");
   const std::string dir = tempDir("unwritable");
   std::ofstream(dir + "/file") << "a file where the bundle's folder should go";
-  EXPECT_THROW(runIsolated(modelSide(), c, derivePlan(c), ChildLimits{60, 0}, dir + "/file/model"), HarnessError);
+  EXPECT_THROW(runIsolated(modelSide(), c, derivePlan(c), ChildLimits{60, 0}, dir + "/file/model"),
+               HarnessError);
 }
 
 // ---- item 3: a child dies with its parent ------------------------------------
@@ -214,7 +223,8 @@ TEST(ChildLeaks, ALeakIsFoundUnderAddressSanitizer) {
       ChildLimits{});
   EXPECT_EQ(leaky.how, ChildEnd::How::Exited);
   EXPECT_EQ(leaky.code, kChildLeaked);
-  EXPECT_NE(describeChildEnd(leaky, "the model process", ChildLimits{}).find("leaked memory"), std::string::npos);
+  EXPECT_NE(describeChildEnd(leaky, "the model process", ChildLimits{}).find("leaked memory"),
+            std::string::npos);
 }
 
 TEST(ChildProcess, DiesWithItsParent) {
@@ -270,7 +280,8 @@ TEST(CaseSteps, ExceptionWhileReportingIsACaseErrorAndTheReportsAreStillWritten)
     for (const CaseOutcome& o : outcomes)
       for (const std::string& im : o.images)
         if (im.size() > 255)
-          throw fs::filesystem_error("status", fs::path(out + "/" + o.name + "/device/" + im + ".png"),
+          throw fs::filesystem_error("status",
+                                     fs::path(out + "/" + o.name + "/device/" + im + ".png"),
                                      std::make_error_code(std::errc::filename_too_long));
     return writeReports(outcomes, info, out);
   };
@@ -309,11 +320,13 @@ TEST(CaseSteps, CaseFileThatDoesNotParseIsACaseError) {
 
 TEST(CaseSteps, UnknownRuleLabelIsACaseError) {
   std::string error;
-  const std::vector<Rule> catalog = loadRuleCatalog(RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml", &error);
+  const std::vector<Rule> catalog =
+      loadRuleCatalog(RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml", &error);
   ASSERT_EQ(error, "");
   const std::vector<std::string> labels = ruleLabels(catalog);
   const std::string path = kCases + "/results/miss-xor-closest-hit.yaml";
-  EXPECT_FALSE(caseFileError({path, "results/miss-xor-closest-hit"}, parseCaseFile(path, kCases, &labels)))
+  EXPECT_FALSE(
+      caseFileError({path, "results/miss-xor-closest-hit"}, parseCaseFile(path, kCases, &labels)))
       << "a good case is no error";
   const std::string dir = tempDir("rule-label");
   const std::string bad = dir + "/unknown-rule.yaml";
@@ -323,11 +336,13 @@ TEST(CaseSteps, UnknownRuleLabelIsACaseError) {
   ASSERT_NE(at, std::string::npos);
   text.insert(at + 8, "R-NO-SUCH-RULE, ");
   std::ofstream(bad) << text;
-  const std::optional<CaseOutcome> o = caseFileError({bad, "fam/unknown-rule"}, parseCaseFile(bad, dir, &labels));
+  const std::optional<CaseOutcome> o =
+      caseFileError({bad, "fam/unknown-rule"}, parseCaseFile(bad, dir, &labels));
   ASSERT_TRUE(o);
   EXPECT_EQ(o->status, Status::CaseError);
   EXPECT_NE(o->headline.find("R-NO-SUCH-RULE"), std::string::npos) << o->headline;
-  EXPECT_NE(o->headline.find(bad + ":"), std::string::npos) << "the label's line:col: " << o->headline;
+  EXPECT_NE(o->headline.find(bad + ":"), std::string::npos)
+      << "the label's line:col: " << o->headline;
 }
 
 // ---- item 6: exit statuses --------------------------------------------------
@@ -350,7 +365,8 @@ TEST(ExitStatus, NothingComparedIsNotASuccess) {
   // A single NotSupported case is ctest's skip only when a device was there to say so.
   EXPECT_EQ(runExitStatus(summaryOf({Status::NotSupported}), 1, true, 0), kExitNotSupported);
   EXPECT_EQ(runExitStatus(summaryOf({Status::NotSupported}), 1, false, 0), kExitNothingCompared);
-  EXPECT_EQ(runExitStatus(summaryOf({Status::NotSupported, Status::NotSupported}), 2, true, 0), kExitNothingCompared);
+  EXPECT_EQ(runExitStatus(summaryOf({Status::NotSupported, Status::NotSupported}), 2, true, 0),
+            kExitNothingCompared);
   EXPECT_EQ(runExitStatus(summaryOf({}), 3, true, 0), kExitNothingCompared);
   EXPECT_EQ(runExitStatus(summaryOf({Status::Pass}), 2, true, SIGTERM), 128 + SIGTERM);
 }

@@ -40,7 +40,8 @@ Worker::Serve misbehaving() {
 }
 
 TEST(Worker, ManyRequestsOneProcess) {
-  Worker w(misbehaving(), [] { return std::string("finished"); }, ChildLimits{30, 0});
+  Worker w(
+      misbehaving(), [] { return std::string("finished"); }, ChildLimits{30, 0});
   const Worker::Reply a = w.call("pid"), b = w.call("pid");
   ASSERT_TRUE(a.replied && b.replied);
   EXPECT_EQ(a.text, b.text);
@@ -84,7 +85,8 @@ TEST(Worker, ExceptionIsAReplyAndTheProcessGoesOn) {
 }
 
 TEST(WorkerMemoryLimit, OutOfMemoryEndsTheProcessWithItsStatus) {
-  if (!memoryLimitApplies()) GTEST_SKIP() << "AddressSanitizer build: no memory limit is set on children";
+  if (!memoryLimitApplies())
+    GTEST_SKIP() << "AddressSanitizer build: no memory limit is set on children";
   Worker w(misbehaving(), {}, ChildLimits{60, 256u << 20});
   const Worker::Reply hog = w.call("hog");
   EXPECT_FALSE(hog.replied);
@@ -96,9 +98,11 @@ TEST(WorkerMemoryLimit, OutOfMemoryEndsTheProcessWithItsStatus) {
 // A second worker holds no copy of the first one's socket: closing the first
 // ends it at once, while the second still runs.
 TEST(Worker, ClosingOneWorkerIsSeenByItAlone) {
-  Worker a(misbehaving(), [] { return std::string("a done"); }, ChildLimits{5, 0});
+  Worker a(
+      misbehaving(), [] { return std::string("a done"); }, ChildLimits{5, 0});
   ASSERT_TRUE(a.call("pid").replied);
-  Worker b(misbehaving(), [] { return std::string("b done"); }, ChildLimits{5, 0});
+  Worker b(
+      misbehaving(), [] { return std::string("b done"); }, ChildLimits{5, 0});
   ASSERT_TRUE(b.call("pid").replied);
   EXPECT_EQ(a.close(), "a done");
   EXPECT_EQ(b.close(), "b done");
@@ -113,11 +117,15 @@ Case loadCase(const std::string& name) {
 // The model side of three cases in one worker; the middle one crashes it
 // (a planted crash), the last runs in a new worker and passes.
 TEST(SideWorker, CrashedCaseIsACrashAndTheNextCaseGetsANewWorker) {
-  const std::vector<Case> cases{loadCase("results/miss-xor-closest-hit"), loadCase("anyhit/ignore-odd-primitives"),
+  const std::vector<Case> cases{loadCase("results/miss-xor-closest-hit"),
+                                loadCase("anyhit/ignore-odd-primitives"),
                                 loadCase("results/miss-xor-closest-hit")};
   const SideFor side_for = [](const Case&, const std::string& dir) {
     Side s{"model", "model", [] { return std::make_unique<ModelAdapter>(ModelOptions{}); }, {}};
-    if (dir.find("/crash/") != std::string::npos) s.before = [] { raise(SIGSEGV); };
+    if (dir.find("/crash/") != std::string::npos)
+      s.before = [] {
+        raise(SIGSEGV);
+      };
     return s;
   };
   SideWorker worker("model", "model", cases, side_for, ChildLimits{60, 0});
@@ -126,8 +134,10 @@ TEST(SideWorker, CrashedCaseIsACrashAndTheNextCaseGetsANewWorker) {
   EXPECT_TRUE(first.results.ok()) << first.results.statusText();
   const SideResult crashed = worker.run(1, derivePlan(cases[1]), dir + "/crash/1/model");
   EXPECT_EQ(crashed.results.status, RunStatus::Crash);
-  EXPECT_NE(crashed.results.status_detail.find("signal 11"), std::string::npos) << crashed.results.status_detail;
-  EXPECT_EQ(crashed.results.case_name, "anyhit/ignore-odd-primitives") << "the crash is the case that ran";
+  EXPECT_NE(crashed.results.status_detail.find("signal 11"), std::string::npos)
+      << crashed.results.status_detail;
+  EXPECT_EQ(crashed.results.case_name, "anyhit/ignore-odd-primitives")
+      << "the crash is the case that ran";
   const SideResult last = worker.run(2, derivePlan(cases[2]), dir + "/ok/2/model");
   EXPECT_TRUE(last.results.ok()) << last.results.statusText();
   EXPECT_EQ(worker.processesStarted(), 2);

@@ -34,20 +34,22 @@ TEST(CompileGlsl, AnyHitCompilesAndValidates) {
 
 // A closest-hit shader whose payload is the vec4 `color`.
 std::string closestHitWriting(const std::string& color) {
-  return "#version 460\n#extension GL_EXT_ray_tracing : require\n"
-         "layout(location = 0) rayPayloadInEXT vec4 payload;\n"
-         "void main() { payload = " + color + "; }\n";
+  return "#version 460\n#extension GL_EXT_ray_tracing : require\nlayout(location = 0) "
+         "rayPayloadInEXT vec4 payload;\nvoid main() { payload = " +
+         color + "; }\n";
 }
 
 // glslang 12 gives gl_HitTEXT and gl_RayTmaxEXT a variable each; SPIRV-Tools
 // 2024 and later reject the module (VUID-StandaloneSpirv-OpEntryPoint-09658).
 TEST(CompileGlsl, TwoInputsOfOneBuiltinAreAnError) {
-  SpirvResult r = compileGlsl(closestHitWriting("vec4(gl_HitTEXT, gl_RayTmaxEXT, 0.0, 1.0)"), Stage::ClosestHit);
+  SpirvResult r = compileGlsl(closestHitWriting("vec4(gl_HitTEXT, gl_RayTmaxEXT, 0.0, 1.0)"),
+                              Stage::ClosestHit);
   EXPECT_TRUE(r.words.empty());
   EXPECT_NE(r.error.find("OpEntryPoint-09658"), std::string::npos) << r.error;
   EXPECT_NE(r.error.find("'main'"), std::string::npos) << r.error;
   // One of them alone is a valid module.
-  SpirvResult ok = compileGlsl(closestHitWriting("vec4(gl_RayTmaxEXT, gl_RayTminEXT, 0.0, 1.0)"), Stage::ClosestHit);
+  SpirvResult ok = compileGlsl(closestHitWriting("vec4(gl_RayTmaxEXT, gl_RayTminEXT, 0.0, 1.0)"),
+                               Stage::ClosestHit);
   EXPECT_TRUE(ok.error.empty()) << ok.error;
 }
 
@@ -70,7 +72,8 @@ void main() {
   SpirvResult r = compileGlsl(broken, Stage::Miss);
   EXPECT_TRUE(r.words.empty());
   EXPECT_NE(r.error.find("0:6:"), std::string::npos) << r.error;
-  EXPECT_NE(r.error.find("6 |   payload.w = undeclared_thing * 2.0;"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("6 |   payload.w = undeclared_thing * 2.0;"), std::string::npos)
+      << r.error;
   EXPECT_FALSE(r.from_cache);
   // Errors are not cached.
   EXPECT_FALSE(compileGlsl(broken, Stage::Miss).from_cache);
@@ -93,8 +96,9 @@ TEST(CompileGlsl, CacheKeyDependsOnStageAndText) {
 }
 
 TEST(CompileGlsl, DiskCacheSurvivesTheMemoryCache) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("rayspec-spirv-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+  const auto dir =
+      std::filesystem::temp_directory_path() /
+      ("rayspec-spirv-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
   std::filesystem::remove_all(dir);
   setSpirvCacheDir(dir.string());
   const std::string glsl = std::string(kAnyHit) + "// disk cache test\n";

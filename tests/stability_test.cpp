@@ -33,7 +33,8 @@ std::vector<StabilityEntry> sample() {
   addCounts(e, {"grid", 1e6, "1e6", "model exact", {100, 0, 0}});
   addCounts(e, {"grid", 1, "1", "model exact", {100, 0, 0}});
   addCounts(e, {"grid", 1, "1", "lavapipe", {100, 3, 40}});
-  addCounts(e, {"grid", 1, "1", "lavapipe", {100, 1, 0}});  // a second variant at the same magnitude
+  addCounts(e,
+            {"grid", 1, "1", "lavapipe", {100, 1, 0}});  // a second variant at the same magnitude
   addCounts(e, {"fan", 10, "1e1", "model exact", {50, 0, 0}});
   return e;
 }
@@ -44,8 +45,11 @@ TEST(StabilityTable, SumsVariantsAndListsEachSourcesRates) {
   EXPECT_EQ(e[2].counts.rays, 200u);
   EXPECT_EQ(stabilitySources(e), (std::vector<std::string>{"model exact", "lavapipe"}));
   const std::string t = formatStabilityTable(e);
-  // grid at 1: 200 rays, exact 0 / 0, lavapipe 4 leaks (20 per 1000) and 40 double hits (200 per 1000).
-  EXPECT_NE(t.find("grid                   1    200 |      0.0      0.0 |     20.0    200.0"), std::string::npos) << t;
+  // grid at 1: 200 rays, exact 0 / 0, lavapipe 4 leaks (20 per 1000) and 40 double hits (200 per
+  // 1000).
+  EXPECT_NE(t.find("grid                   1    200 |      0.0      0.0 |     20.0    200.0"),
+            std::string::npos)
+      << t;
   // Magnitudes ascend within a family; a source without a run shows '-'.
   EXPECT_LT(t.find("grid                   1 "), t.find("grid                 1e6"));
   EXPECT_NE(t.find("1e6    100 |      0.0      0.0 |                 -"), std::string::npos) << t;

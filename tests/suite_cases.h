@@ -12,8 +12,9 @@
 namespace rayspec {
 
 // RAYSPEC_CASES_DIR overrides the folder (to check cases being written elsewhere).
-inline const std::string kSuiteCases =
-    std::getenv("RAYSPEC_CASES_DIR") ? std::getenv("RAYSPEC_CASES_DIR") : RAYSPEC_SOURCE_DIR "/cases";
+inline const std::string kSuiteCases = std::getenv("RAYSPEC_CASES_DIR")
+                                           ? std::getenv("RAYSPEC_CASES_DIR")
+                                           : RAYSPEC_SOURCE_DIR "/cases";
 
 // Every case; with one_per_file, a sweep gives only its first variant.
 inline std::vector<CaseFile> suiteCases(bool one_per_file = false) {
@@ -26,6 +27,8 @@ inline std::vector<CaseFile> suiteCases(bool one_per_file = false) {
   return out;
 }
 
-inline ParseResult loadSuiteCase(const CaseFile& f) { return loadCase(f, kSuiteCases); }
+inline ParseResult loadSuiteCase(const CaseFile& f) {
+  return loadCase(f, kSuiteCases);
+}
 
 }  // namespace rayspec

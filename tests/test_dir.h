@@ -14,7 +14,8 @@ inline std::string testDir() {
   const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
   std::string name = info ? std::string(info->test_suite_name()) + "." + info->name() : "no-test";
   name += "-" + std::to_string(::getpid());
-  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / ("rayspec-" + name);
+  const std::filesystem::path dir =
+      std::filesystem::path(::testing::TempDir()) / ("rayspec-" + name);
   std::filesystem::create_directories(dir);
   return dir.string();
 }

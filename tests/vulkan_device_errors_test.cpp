@@ -2,8 +2,8 @@
 // on after each (a lost device is made again), and limits a case exceeds.
 #include <gtest/gtest.h>
 
-#include "suite_cases.h"
 #include "plan/plan.h"
+#include "suite_cases.h"
 #include "vulkan/context.h"
 #include "vulkan/device_errors.h"
 #include "vulkan/run_case.h"
@@ -13,25 +13,30 @@ namespace rayspec {
 namespace {
 
 TEST(DeviceErrors, EachFailedCallHasItsStatus) {
-  const DeviceErrorStatus lost = classifyVulkanError(VulkanError("x", "vkQueueSubmit", VK_ERROR_DEVICE_LOST));
+  const DeviceErrorStatus lost =
+      classifyVulkanError(VulkanError("x", "vkQueueSubmit", VK_ERROR_DEVICE_LOST));
   EXPECT_EQ(lost.status, RunStatus::Crash);
   EXPECT_TRUE(lost.device_lost);
-  EXPECT_EQ(lost.detail, "device lost: vkQueueSubmit returned VK_ERROR_DEVICE_LOST; the next case gets a new device");
+  EXPECT_EQ(
+      lost.detail,
+      "device lost: vkQueueSubmit returned VK_ERROR_DEVICE_LOST; the next case gets a new device");
   for (VkResult oom : {VK_ERROR_OUT_OF_DEVICE_MEMORY, VK_ERROR_OUT_OF_HOST_MEMORY}) {
     const DeviceErrorStatus s = classifyVulkanError(VulkanError("x", "vkAllocateMemory", oom));
     EXPECT_EQ(s.status, RunStatus::NotSupported);
     EXPECT_FALSE(s.device_lost);
-    EXPECT_EQ(s.detail.rfind("out of memory: vkAllocateMemory returned VK_ERROR_OUT_OF_", 0), 0u) << s.detail;
+    EXPECT_EQ(s.detail.rfind("out of memory: vkAllocateMemory returned VK_ERROR_OUT_OF_", 0), 0u)
+        << s.detail;
   }
-  const DeviceErrorStatus refused =
-      classifyVulkanError(VulkanError("x", "vkCreateRayTracingPipelinesKHR", VK_ERROR_INITIALIZATION_FAILED));
+  const DeviceErrorStatus refused = classifyVulkanError(
+      VulkanError("x", "vkCreateRayTracingPipelinesKHR", VK_ERROR_INITIALIZATION_FAILED));
   EXPECT_EQ(refused.status, RunStatus::Refused);
   EXPECT_NE(refused.detail.find("the driver refused the pipeline"), std::string::npos);
-  const DeviceErrorStatus other = classifyVulkanError(VulkanError("vkMapMemory: VK_ERROR_MEMORY_MAP_FAILED",
-                                                                  "vkMapMemory", VK_ERROR_MEMORY_MAP_FAILED));
+  const DeviceErrorStatus other = classifyVulkanError(VulkanError(
+      "vkMapMemory: VK_ERROR_MEMORY_MAP_FAILED", "vkMapMemory", VK_ERROR_MEMORY_MAP_FAILED));
   EXPECT_EQ(other.status, RunStatus::Crash);
   EXPECT_EQ(other.detail, "vkMapMemory: VK_ERROR_MEMORY_MAP_FAILED");
-  for (const std::string& name : deviceErrorFaultNames()) EXPECT_TRUE(deviceErrorFault(name)) << name;
+  for (const std::string& name : deviceErrorFaultNames())
+    EXPECT_TRUE(deviceErrorFault(name)) << name;
   EXPECT_FALSE(deviceErrorFault("crash"));
 }
 
@@ -54,20 +59,23 @@ TEST(DeviceErrors, TheNextCaseRunsAfterEachError) {
   const Plan plan = derivePlan(c);
   const Results clean = backend->run(c, plan);
   ASSERT_TRUE(clean.ok()) << clean.statusText();
-  const std::pair<const char*, RunStatus> faults[] = {{"device-lost", RunStatus::Crash},
-                                                      {"out-of-device-memory", RunStatus::NotSupported},
-                                                      {"pipeline-refused", RunStatus::Refused}};
+  const std::pair<const char*, RunStatus> faults[] = {
+      {"device-lost", RunStatus::Crash},
+      {"out-of-device-memory", RunStatus::NotSupported},
+      {"pipeline-refused", RunStatus::Refused}};
   for (const auto& [name, status] : faults) {
     injectVkError(*deviceErrorFault(name));
     const Results failed = backend->run(c, plan);
     injectVkError({});
     EXPECT_EQ(failed.status, status) << name << ": " << failed.statusText();
     EXPECT_TRUE(failed.records.empty()) << name;
-    EXPECT_TRUE(failed.validation_messages.empty()) << name << ": " << failed.validation_messages.front();
+    EXPECT_TRUE(failed.validation_messages.empty())
+        << name << ": " << failed.validation_messages.front();
     const Results next = backend->run(c, plan);
     EXPECT_TRUE(next.ok()) << "after " << name << ": " << next.statusText();
     EXPECT_EQ(next.records, clean.records) << "after " << name;
-    EXPECT_TRUE(next.validation_messages.empty()) << name << ": " << next.validation_messages.front();
+    EXPECT_TRUE(next.validation_messages.empty())
+        << name << ": " << next.validation_messages.front();
   }
   EXPECT_TRUE(backend->close().empty()) << "every object of the failed cases was destroyed";
 }

@@ -25,14 +25,18 @@ class ScopedEnv {
     for (const auto& [name, value] : vars) {
       const char* old = std::getenv(name);
       saved_.push_back({name, old ? std::optional<std::string>(old) : std::nullopt});
-      if (value) setenv(name, value, 1);
-      else unsetenv(name);
+      if (value)
+        setenv(name, value, 1);
+      else
+        unsetenv(name);
     }
   }
   ~ScopedEnv() {
     for (const auto& [name, old] : saved_) {
-      if (old) setenv(name.c_str(), old->c_str(), 1);
-      else unsetenv(name.c_str());
+      if (old)
+        setenv(name.c_str(), old->c_str(), 1);
+      else
+        unsetenv(name.c_str());
     }
   }
 
@@ -53,12 +57,15 @@ std::string write(const std::string& path, const std::string& text) {
 }
 
 std::string manifestText(const std::string& library) {
-  return R"({"file_format_version": "1.0.0", "ICD": {"library_path": ")" + library + R"(", "api_version": "1.3.0"}})";
+  return R"({"file_format_version": "1.0.0", "ICD": {"library_path": ")" + library +
+         R"(", "api_version": "1.3.0"}})";
 }
 
 // lavapipe's manifest as the loader's standard search finds it.
 std::string lavapipeManifest() {
-  ScopedEnv env{{"VK_DRIVER_FILES", nullptr}, {"VK_ICD_FILENAMES", nullptr}, {"VK_ADD_DRIVER_FILES", nullptr}};
+  ScopedEnv env{{"VK_DRIVER_FILES", nullptr},
+                {"VK_ICD_FILENAMES", nullptr},
+                {"VK_ADD_DRIVER_FILES", nullptr}};
   for (const IcdManifest& m : findIcdManifests().manifests)
     if (m.library_path.find("libvulkan_lvp") != std::string::npos) return m.path;
   return {};
@@ -67,7 +74,8 @@ std::string lavapipeManifest() {
 TEST(IcdManifest, ReadsLibraryAndVersion) {
   const std::string dir = tempDir("read");
   std::string error;
-  const std::optional<IcdManifest> m = readIcdManifest(write(dir + "/a.json", manifestText("libfoo.so")), &error);
+  const std::optional<IcdManifest> m =
+      readIcdManifest(write(dir + "/a.json", manifestText("libfoo.so")), &error);
   ASSERT_TRUE(m) << error;
   EXPECT_EQ(m->library_path, "libfoo.so");
   EXPECT_EQ(m->api_version, "1.3.0");
@@ -111,7 +119,8 @@ TEST(IcdManifest, DriverFilesVariableListsFilesAndFolders) {
   write(dir + "/folder/notes.txt", "not a manifest");
   write(dir + "/folder/z.json", "broken");
   {
-    ScopedEnv env{{"VK_DRIVER_FILES", (a + ":" + dir + "/folder:" + a).c_str()}, {"VK_ADD_DRIVER_FILES", nullptr}};
+    ScopedEnv env{{"VK_DRIVER_FILES", (a + ":" + dir + "/folder:" + a).c_str()},
+                  {"VK_ADD_DRIVER_FILES", nullptr}};
     const IcdSearch s = findIcdManifests();
     EXPECT_EQ(s.source, IcdSource::DriverFilesVariable);
     ASSERT_EQ(s.manifests.size(), 3u);  // a once, then the folder's sorted
@@ -122,7 +131,9 @@ TEST(IcdManifest, DriverFilesVariableListsFilesAndFolders) {
     EXPECT_NE(s.errors[0].find("z.json"), std::string::npos);
   }
   {
-    ScopedEnv env{{"VK_DRIVER_FILES", nullptr}, {"VK_ICD_FILENAMES", a.c_str()}, {"VK_ADD_DRIVER_FILES", nullptr}};
+    ScopedEnv env{{"VK_DRIVER_FILES", nullptr},
+                  {"VK_ICD_FILENAMES", a.c_str()},
+                  {"VK_ADD_DRIVER_FILES", nullptr}};
     const IcdSearch s = findIcdManifests();
     EXPECT_EQ(s.source, IcdSource::IcdFilenamesVariable);
     ASSERT_EQ(s.manifests.size(), 1u);
@@ -133,7 +144,9 @@ TEST(IcdManifest, StandardFoldersFollowXdgDirs) {
   const std::string dir = tempDir("xdg");
   fs::create_directories(dir + "/data/vulkan/icd.d");
   write(dir + "/data/vulkan/icd.d/mine.json", manifestText("libmine.so"));
-  ScopedEnv env{{"VK_DRIVER_FILES", nullptr}, {"VK_ICD_FILENAMES", nullptr}, {"VK_ADD_DRIVER_FILES", nullptr},
+  ScopedEnv env{{"VK_DRIVER_FILES", nullptr},
+                {"VK_ICD_FILENAMES", nullptr},
+                {"VK_ADD_DRIVER_FILES", nullptr},
                 {"XDG_DATA_DIRS", (dir + "/data").c_str()}};
   const IcdSearch s = findIcdManifests();
   EXPECT_EQ(s.source, IcdSource::StandardFolders);
@@ -161,7 +174,9 @@ TEST(IcdEnvironment, SetsBothVariablesAndSaysWhatItOverrides) {
   const std::string dir = tempDir("env");
   const std::string a = write(dir + "/a.json", manifestText("liba.so"));
   const std::string b = write(dir + "/b.json", manifestText("libb.so"));
-  ScopedEnv env{{"VK_DRIVER_FILES", "/users/own.json"}, {"VK_ICD_FILENAMES", nullptr}, {"VK_ADD_DRIVER_FILES", "/x.json"}};
+  ScopedEnv env{{"VK_DRIVER_FILES", "/users/own.json"},
+                {"VK_ICD_FILENAMES", nullptr},
+                {"VK_ADD_DRIVER_FILES", "/x.json"}};
   const IcdSelection s = useIcdFiles({a, b});
   EXPECT_EQ(s.error, "");
   EXPECT_EQ(std::string(std::getenv("VK_DRIVER_FILES")), a + ":" + b);

@@ -48,7 +48,8 @@ bool hasHeader(const fs::path& file) {
   VkPipelineCacheHeaderVersionOne header{};
   std::ifstream in(file, std::ios::binary);
   if (!in.read(reinterpret_cast<char*>(&header), sizeof header)) return false;
-  return header.headerSize == sizeof header && header.headerVersion == VK_PIPELINE_CACHE_HEADER_VERSION_ONE;
+  return header.headerSize == sizeof header &&
+         header.headerVersion == VK_PIPELINE_CACHE_HEADER_VERSION_ONE;
 }
 
 TEST(PipelineCache, SavedAtTheEndAndABadFileIsNotUsed) {
@@ -59,7 +60,8 @@ TEST(PipelineCache, SavedAtTheEndAndABadFileIsNotUsed) {
   std::vector<fs::path> files = runOnce(c, dir);
   ASSERT_EQ(files.size(), 1u);
   EXPECT_EQ(files[0].extension(), ".bin");
-  EXPECT_TRUE(hasHeader(files[0]));  // lavapipe keeps its pipelines in Mesa's cache: often the header alone
+  EXPECT_TRUE(
+      hasHeader(files[0]));  // lavapipe keeps its pipelines in Mesa's cache: often the header alone
   // Another device's header (or garbage) in its place: not used, and replaced.
   std::ofstream(files[0], std::ios::binary | std::ios::trunc) << std::string(64, '\x7f');
   files = runOnce(c, dir);

@@ -23,11 +23,18 @@ using sbt_test::fakeHandles;
 using sbt_test::wordAt;
 
 // handle size, handle alignment, base alignment, maxShaderGroupStride
-SbtLimits lavapipe() { return {32, 16, 32, 16384}; }
-SbtLimits nvidiaLike() { return {32, 32, 64, 4096}; }
-SbtLimits wideHandles() { return {64, 64, 64, 4096}; }
+SbtLimits lavapipe() {
+  return {32, 16, 32, 16384};
+}
+SbtLimits nvidiaLike() {
+  return {32, 32, 64, 4096};
+}
+SbtLimits wideHandles() {
+  return {64, 64, 64, 4096};
+}
 
-Pipeline shaped(uint32_t record_data, SbtPadding padding, size_t miss = 2, size_t hit = 3, size_t callables = 2) {
+Pipeline shaped(uint32_t record_data, SbtPadding padding, size_t miss = 2, size_t hit = 3,
+                size_t callables = 2) {
   Pipeline p;
   p.miss.resize(miss);
   p.hit_groups.resize(hit);
@@ -37,7 +44,9 @@ Pipeline shaped(uint32_t record_data, SbtPadding padding, size_t miss = 2, size_
   return p;
 }
 
-SbtPadding all(uint32_t p) { return {p, p, p}; }
+SbtPadding all(uint32_t p) {
+  return {p, p, p};
+}
 
 // Handle bytes of group g: every byte 0x10 + g.
 TEST(SbtStride, DefaultShapeKeepsTheOldStride) {
@@ -49,27 +58,26 @@ TEST(SbtStride, DefaultShapeKeepsTheOldStride) {
 
 // The strides of sbt/record-stride (record_data x padding) on three devices.
 TEST(SbtStride, RecordDataAndPaddingSetTheStride) {
-  struct Row { uint32_t k, pad; uint64_t lavapipe, nvidia, wide; };
+  struct Row {
+    uint32_t k, pad;
+    uint64_t lavapipe, nvidia, wide;
+  };
   const Row rows[] = {
-      {0, 0, 32, 32, 64},            // exactly the handle size
-      {4, 0, 48, 64, 128},           // 36 -> the handle alignment
-      {16, 0, 48, 64, 128},
-      {32, 0, 64, 64, 128},
-      {0, 32, 64, 64, 128},
-      {4, 32, 80, 96, 128},
-      {16, 32, 80, 96, 128},
-      {32, 32, 96, 96, 128},
-      {0, 4000, 4032, 4032, 4096},
-      {4, 4000, 4048, 4064, 4096},
-      {16, 4000, 4048, 4064, 4096},
+      {0, 0, 32, 32, 64},   // exactly the handle size
+      {4, 0, 48, 64, 128},  // 36 -> the handle alignment
+      {16, 0, 48, 64, 128},         {32, 0, 64, 64, 128},        {0, 32, 64, 64, 128},
+      {4, 32, 80, 96, 128},         {16, 32, 80, 96, 128},       {32, 32, 96, 96, 128},
+      {0, 4000, 4032, 4032, 4096},  {4, 4000, 4048, 4064, 4096}, {16, 4000, 4048, 4064, 4096},
       {32, 4000, 4064, 4064, 4096},  // 64-byte handles: exactly 4096, still allowed
   };
   for (const Row& r : rows) {
     const Pipeline p = shaped(r.k, all(r.pad));
-    for (auto [limits, want] : {std::pair{lavapipe(), r.lavapipe}, std::pair{nvidiaLike(), r.nvidia},
-                                std::pair{wideHandles(), r.wide}}) {
-      SCOPED_TRACE("record_data " + std::to_string(r.k) + " padding " + std::to_string(r.pad) + " handle " +
-                   std::to_string(limits.handle_size) + "/" + std::to_string(limits.handle_alignment));
+    for (auto [limits, want] :
+         {std::pair{lavapipe(), r.lavapipe}, std::pair{nvidiaLike(), r.nvidia},
+          std::pair{wideHandles(), r.wide}}) {
+      SCOPED_TRACE("record_data " + std::to_string(r.k) + " padding " + std::to_string(r.pad) +
+                   " handle " + std::to_string(limits.handle_size) + "/" +
+                   std::to_string(limits.handle_alignment));
       const SbtLayout l = computeSbtLayout(limits, p);
       EXPECT_EQ(sbtStride(limits, r.k, r.pad), want);
       EXPECT_EQ(l.miss.stride, want);
@@ -95,9 +103,9 @@ TEST(SbtStride, EachRegionHasItsOwnPadding) {
   EXPECT_EQ(l.miss.stride, 4048u);
   EXPECT_EQ(l.hit.stride, 48u);
   EXPECT_EQ(l.callable.stride, 80u);
-  EXPECT_EQ(l.miss.offset, 64u);              // after the 48-byte raygen record, base-aligned
-  EXPECT_EQ(l.hit.offset, 64u + 2 * 4048u);   // 8160: a multiple of 32
-  EXPECT_EQ(l.callable.offset, 8320u);         // 8160 + 3 * 48 = 8304, base-aligned
+  EXPECT_EQ(l.miss.offset, 64u);             // after the 48-byte raygen record, base-aligned
+  EXPECT_EQ(l.hit.offset, 64u + 2 * 4048u);  // 8160: a multiple of 32
+  EXPECT_EQ(l.callable.offset, 8320u);       // 8160 + 3 * 48 = 8304, base-aligned
   std::string error;
   EXPECT_TRUE(checkSbtLayout(l, lim, &error)) << error;
 }
@@ -107,9 +115,13 @@ TEST(SbtStride, AStrideAboveMaxShaderGroupStrideIsRefusedNamingTheRegion) {
   // 32 + 32 + 4033 = 4097 -> 4128 on an NVIDIA-like device: the hit region alone.
   SbtLayout l = computeSbtLayout(nvidiaLike(), shaped(32, {0, 4033, 0}));
   EXPECT_FALSE(checkSbtLayout(l, nvidiaLike(), &error));
-  EXPECT_NE(error.find("sbt hit region: stride 4128 > maxShaderGroupStride 4096"), std::string::npos) << error;
+  EXPECT_NE(error.find("sbt hit region: stride 4128 > maxShaderGroupStride 4096"),
+            std::string::npos)
+      << error;
   // The same case fits lavapipe's 16384.
-  EXPECT_TRUE(checkSbtLayout(computeSbtLayout(lavapipe(), shaped(32, {0, 4033, 0})), lavapipe(), &error)) << error;
+  EXPECT_TRUE(
+      checkSbtLayout(computeSbtLayout(lavapipe(), shaped(32, {0, 4033, 0})), lavapipe(), &error))
+      << error;
   // Exactly maxShaderGroupStride is allowed; one alignment step more is not.
   l = computeSbtLayout(lavapipe(), shaped(0, {16384 - 32, 0, 0}));
   EXPECT_EQ(l.miss.stride, 16384u);
@@ -151,7 +163,8 @@ TEST(SbtStride, RecordsLieAtTheirStrideWithZeroPadding) {
   EXPECT_EQ(bytes[l.hit.offset], 0x14);
   EXPECT_EQ(bytes[l.hit.offset + 2 * 4048], 0x13);
   EXPECT_EQ(wordAt(bytes, l.hit.offset + 2 * 4048 + 36), 52u);
-  for (uint64_t at = l.hit.offset + 40; at < l.hit.offset + 2 * 4048; ++at) ASSERT_EQ(bytes[at], 0) << at;
+  for (uint64_t at = l.hit.offset + 40; at < l.hit.offset + 2 * 4048; ++at)
+    ASSERT_EQ(bytes[at], 0) << at;
   EXPECT_EQ(bytes[l.callable.offset], 0x15);
   EXPECT_EQ(wordAt(bytes, l.callable.offset + 36), 62u);
 }
@@ -196,7 +209,8 @@ pipeline:
   hit_groups: [{closest_hit: [record: {value: {add: [100, {shader_record_uint: 0}]}}]}]
   sbt:
     record_data: 4
-    padding: )" + std::to_string(padding) + R"(
+    padding: )" +
+         std::to_string(padding) + R"(
     miss: [{group: 0, data: {uints: [1]}}, {group: 0, data: {uints: [2]}}]
     hit: [{group: 0, data: {uints: [3]}}, {group: 0, data: {uints: [4]}}]
 outputs:
@@ -210,9 +224,11 @@ TEST(SbtStrideDevice, TheLargestStrideRunsAndOneStepMoreIsNotSupported) {
   auto backend = VulkanBackend::create(VulkanOptions{}, &error);
   ASSERT_TRUE(backend) << error;
   const DeviceInfo& d = backend->device();
-  const uint32_t largest = d.max_shader_group_stride - d.shader_group_handle_size - 4;  // stride == max
+  const uint32_t largest =
+      d.max_shader_group_stride - d.shader_group_handle_size - 4;  // stride == max
   const uint32_t beyond = largest + d.shader_group_handle_alignment;
-  if (beyond > kMaxSbtPaddingBytes) GTEST_SKIP() << "maxShaderGroupStride beyond what a case can ask";
+  if (beyond > kMaxSbtPaddingBytes)
+    GTEST_SKIP() << "maxShaderGroupStride beyond what a case can ask";
   for (uint32_t padding : {0u, largest, beyond}) {
     SCOPED_TRACE("padding " + std::to_string(padding));
     ParseResult parsed = parseCaseText(strideCase(padding), "stride.yaml", "sbt/stride");
@@ -223,7 +239,8 @@ TEST(SbtStrideDevice, TheLargestStrideRunsAndOneStepMoreIsNotSupported) {
     if (padding == beyond) {
       EXPECT_EQ(r.status, RunStatus::NotSupported) << r.statusText();
       EXPECT_NE(r.status_detail.find("maxShaderGroupStride"), std::string::npos) << r.status_detail;
-      const std::string shape = "record_data 4 + pipeline.sbt.padding: miss " + std::to_string(beyond);
+      const std::string shape =
+          "record_data 4 + pipeline.sbt.padding: miss " + std::to_string(beyond);
       EXPECT_NE(r.status_detail.find(shape), std::string::npos) << r.status_detail;
       continue;
     }

@@ -10,10 +10,10 @@
 #include <filesystem>
 #include <map>
 
-#include "suite_cases.h"
 #include "case/parse_case.h"
 #include "plan/plan.h"
 #include "results/record_layout.h"
+#include "suite_cases.h"
 #include "vulkan/case_buffers.h"
 #include "vulkan/sbt_layout.h"
 #include "vulkan/vk_check.h"
@@ -27,8 +27,12 @@ using sbt_test::wordAt;
 
 // ---------------------------------------------------------------- SBT layout
 
-SbtLimits lavapipeLimits() { return {32, 16, 32, 16384}; }
-SbtLimits nvidiaLimits() { return {32, 32, 64, 4096}; }
+SbtLimits lavapipeLimits() {
+  return {32, 16, 32, 16384};
+}
+SbtLimits nvidiaLimits() {
+  return {32, 32, 64, 4096};
+}
 
 Pipeline groups(size_t miss, size_t hit, size_t callables) {
   Pipeline p;
@@ -152,13 +156,13 @@ TEST(SbtLayout, DefaultRecordsAreOnePerGroupInOrder) {
   std::string error;
   ASSERT_TRUE(writeSbt(l, lim, p, fakeHandles(p, lim), &bytes, &error)) << error;
   ASSERT_EQ(bytes.size(), l.total_size);
-  EXPECT_TRUE(allBytes(bytes, 0, 32, 0x10));                        // raygen group 0
-  EXPECT_TRUE(allBytes(bytes, 32, 32, 0));                          // its data
-  EXPECT_TRUE(allBytes(bytes, l.miss.offset, 32, 0x11));            // miss 0 -> group 1
-  EXPECT_TRUE(allBytes(bytes, l.miss.offset + 64, 32, 0x12));       // miss 1 -> group 2
-  EXPECT_TRUE(allBytes(bytes, l.hit.offset, 32, 0x13));             // hit 0 -> group 3
-  EXPECT_TRUE(allBytes(bytes, l.hit.offset + 64, 32, 0x14));        // hit 1 -> group 4
-  EXPECT_TRUE(allBytes(bytes, l.callable.offset, 32, 0x15));        // callable 0 -> group 5
+  EXPECT_TRUE(allBytes(bytes, 0, 32, 0x10));                   // raygen group 0
+  EXPECT_TRUE(allBytes(bytes, 32, 32, 0));                     // its data
+  EXPECT_TRUE(allBytes(bytes, l.miss.offset, 32, 0x11));       // miss 0 -> group 1
+  EXPECT_TRUE(allBytes(bytes, l.miss.offset + 64, 32, 0x12));  // miss 1 -> group 2
+  EXPECT_TRUE(allBytes(bytes, l.hit.offset, 32, 0x13));        // hit 0 -> group 3
+  EXPECT_TRUE(allBytes(bytes, l.hit.offset + 64, 32, 0x14));   // hit 1 -> group 4
+  EXPECT_TRUE(allBytes(bytes, l.callable.offset, 32, 0x15));   // callable 0 -> group 5
 }
 
 TEST(SbtLayout, ZeroRecordsAndRecordData) {
@@ -198,7 +202,8 @@ TEST(SbtLayout, ZeroRecordsAndRecordData) {
     EXPECT_TRUE(allBytes(bytes, l.callable.offset + s, lim.handle_size, 0x14));
     EXPECT_EQ(wordAt(bytes, l.callable.offset + s + lim.handle_size), 42u);
     // gaps between regions stay zero
-    EXPECT_TRUE(allBytes(bytes, l.miss.offset + l.miss.size, l.hit.offset - l.miss.offset - l.miss.size, 0));
+    EXPECT_TRUE(allBytes(bytes, l.miss.offset + l.miss.size,
+                         l.hit.offset - l.miss.offset - l.miss.size, 0));
   }
 }
 
@@ -284,9 +289,10 @@ Case triangleCase() {
   c.pipeline.raygen = {trace};
   c.pipeline.miss = {{countStmt("miss"), recordStmt({{"hit", uintLit(0)}})}};
   HitGroup hg;
-  hg.closest_hit = Program{countStmt("closesthit"),
-                           recordStmt({{"hit", uintLit(1)},
-                                       {"primitive_id", builtin("primitive_id", ValueType::Uint)}})};
+  hg.closest_hit =
+      Program{countStmt("closesthit"),
+              recordStmt({{"hit", uintLit(1)},
+                          {"primitive_id", builtin("primitive_id", ValueType::Uint)}})};
   c.pipeline.hit_groups = {hg};
   c.outputs.counters = {"miss", "closesthit"};
   c.outputs.per_ray = {"hit", "primitive_id"};
@@ -308,9 +314,9 @@ bool rayTracingDeviceExists() {
   return false;
 }
 
-#define SKIP_WITHOUT_RT_DEVICE()                                                              \
-  if (!rayTracingDeviceExists())                                                              \
-  GTEST_SKIP() << "no Vulkan device with VK_KHR_ray_tracing_pipeline and "                    \
+#define SKIP_WITHOUT_RT_DEVICE()                                           \
+  if (!rayTracingDeviceExists())                                           \
+  GTEST_SKIP() << "no Vulkan device with VK_KHR_ray_tracing_pipeline and " \
                   "VK_KHR_acceleration_structure on this machine (install Mesa >= 25 lavapipe)"
 
 uint32_t field(const Results& r, uint32_t ray, const char* name) {
@@ -490,7 +496,9 @@ TEST(VulkanDevice, RayListBeyondMaxImageDimension2D) {
   c.rays.height = 1;
   c.rays.rays.clear();
   for (uint32_t i = 0; i < n; ++i)
-    c.rays.rays.push_back(i % 3 == 0 ? downRay(-0.5f, -0.5f) : i % 3 == 1 ? downRay(0.5f, -0.5f) : downRay(3, 3));
+    c.rays.rays.push_back(i % 3 == 0   ? downRay(-0.5f, -0.5f)
+                          : i % 3 == 1 ? downRay(0.5f, -0.5f)
+                                       : downRay(3, 3));
   Results r = backend->run(c, derivePlan(c));
   ASSERT_EQ(r.statusText(), "ok");
   EXPECT_TRUE(r.validation_messages.empty()) << r.validation_messages.front();

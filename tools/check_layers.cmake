@@ -1,23 +1,27 @@
 # ctest style/layers: the layer check is live. For every module of harness/,
-# one of its files is compiled with its real flags (build/compile_commands.json)
-# twice: with a header of its own module forced in (must compile), and with a
+# its real compile flags (build/compile_commands.json) are used twice on an
+# empty file: with a header of its own module forced in (must compile), and with a
 # header of a module it does not declare, preferably one right above it (must fail: "No such file").
 # cmake -DBUILD=<build folder> -DSOURCE=<checkout> -P tools/check_layers.cmake
 cmake_minimum_required(VERSION 3.25)
 file(READ ${BUILD}/compile_commands.json db)
-string(JSON count LENGTH "${db}")
-math(EXPR last "${count} - 1")
+set(empty ${BUILD}/check_layers_empty.cpp)
+file(WRITE ${empty} "")
+# Every compile command, in one pass over the file (string(JSON) would read
+# the whole file again for each value).
+string(REGEX MATCHALL "\"command\": \"([^\"\\]|\\\\.)*\"" commands "${db}")
 file(GLOB modules RELATIVE ${SOURCE}/.layers ${SOURCE}/.layers/*)
 set(failures "")
 set(checked 0)
 foreach(m ${modules})
-  # One compile command of this module.
+  # One compile command of this module (its objects are under rayspec_<m>.dir).
   set(command "")
-  foreach(i RANGE ${last})
-    string(JSON f GET "${db}" ${i} file)
-    if(f MATCHES "/harness/${m}/[^/]+\\.cpp$" OR f MATCHES "/rayspec_${m}\\.dir/")
-      string(JSON command GET "${db}" ${i} command)
-      string(JSON dir GET "${db}" ${i} directory)
+  foreach(entry ${commands})
+    string(FIND "${entry}" "/rayspec_${m}.dir/" at)
+    if(at GREATER -1)
+      string(REGEX REPLACE "^\"command\": \"(.*)\"$" "\\1" command "${entry}")
+      string(REPLACE "\\\"" "\"" command "${command}")
+      string(REPLACE "\\\\" "\\" command "${command}")
       break()
     endif()
   endforeach()
@@ -50,13 +54,18 @@ foreach(m ${modules})
   list(FIND args "-o" o)
   math(EXPR o1 "${o} + 1")
   list(REMOVE_AT args ${o1} ${o})
+  # Its flags on an empty file: only the forced header is parsed.
+  list(FIND args "-c" c)
+  math(EXPR c1 "${c} + 1")
+  list(REMOVE_AT args ${c1})
+  list(INSERT args ${c1} ${empty})
   list(APPEND args -fsyntax-only)
-  execute_process(COMMAND ${args} -include ${own} WORKING_DIRECTORY ${dir} RESULT_VARIABLE rc ERROR_VARIABLE err)
+  execute_process(COMMAND ${args} -include ${own} WORKING_DIRECTORY ${BUILD} RESULT_VARIABLE rc ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
     string(APPEND failures "${m}: its own header ${own} does not compile:\n${err}\n")
   endif()
   if(foreign)
-    execute_process(COMMAND ${args} -include ${foreign} WORKING_DIRECTORY ${dir} RESULT_VARIABLE rc ERROR_VARIABLE err)
+    execute_process(COMMAND ${args} -include ${foreign} WORKING_DIRECTORY ${BUILD} RESULT_VARIABLE rc ERROR_VARIABLE err)
     if(rc EQUAL 0 OR NOT err MATCHES "No such file")
       string(APPEND failures "${m}: ${foreign} (a module it does not declare) was not refused:\n${err}\n")
     else()

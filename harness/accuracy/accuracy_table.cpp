@@ -5,8 +5,12 @@
 
 namespace rayspec {
 
-const char* caseSetName(CaseSet s) { return s == CaseSet::Ordinary ? "ordinary" : "hard"; }
-const char* sourceKindName(SourceKind k) { return k == SourceKind::ModelTier ? "model" : "device"; }
+const char* caseSetName(CaseSet s) {
+  return s == CaseSet::Ordinary ? "ordinary" : "hard";
+}
+const char* sourceKindName(SourceKind k) {
+  return k == SourceKind::ModelTier ? "model" : "device";
+}
 
 void addToRow(std::vector<AccuracyRow>& rows, const AccuracyRow& one) {
   for (AccuracyRow& r : rows)
@@ -22,26 +26,29 @@ void addToRow(std::vector<AccuracyRow>& rows, const AccuracyRow& one) {
 
 std::string formatAccuracyTable(const std::vector<AccuracyRow>& rows) {
   std::string out =
-      "Disagreements with the model's exact tier per ray, and trace time per million rays\n"
-      "(leak: exact hit, other missed a closed surface; double: exact ran any-hit once, other more;\n"
-      " other prim: both hit, another primitive/instance; extra: exact missed a clear ray, other hit;\n"
-      " t error: |t - t_exact| in float ULPs of t_exact where both hit the same primitive)\n";
+      "Disagreements with the model's exact tier per ray, and trace time per million rays\n(leak: "
+      "exact hit, other missed a closed surface; double: exact ran any-hit once, other more;\n "
+      "other prim: both hit, another primitive/instance; extra: exact missed a clear ray, other "
+      "hit;\n t error: |t - t_exact| in float ULPs of t_exact where both hit the same primitive)\n";
   char buf[256];
   for (CaseSet set : {CaseSet::Ordinary, CaseSet::Hard}) {
     bool any = false;
     for (const AccuracyRow& r : rows) any = any || r.set == set;
     if (!any) continue;
-    std::snprintf(buf, sizeof buf, "\n%s cases\n%-14s %5s %9s %10s %9s %7s %7s %7s %7s %8s %8s %10s\n",
-                  caseSetName(set), "source", "cases", "rays", "ms/Mray", "dis/Mray", "leaks", "double", "o.prim",
-                  "extra", "t med", "t p99", "t max");
+    std::snprintf(buf, sizeof buf,
+                  "\n%s cases\n%-14s %5s %9s %10s %9s %7s %7s %7s %7s %8s %8s %10s\n",
+                  caseSetName(set), "source", "cases", "rays", "ms/Mray", "dis/Mray", "leaks",
+                  "double", "o.prim", "extra", "t med", "t p99", "t max");
     out += buf;
     for (const AccuracyRow& r : rows) {
       if (r.set != set) continue;
-      std::snprintf(buf, sizeof buf, "%-14s %5llu %9llu %10.2f %9.1f %7llu %7llu %7llu %7llu %8.3g %8.3g %10.4g\n",
-                    r.source.substr(0, 14).c_str(), (unsigned long long)r.cases, (unsigned long long)r.d.rays,
-                    r.msPerMray(), r.d.perMillion(), (unsigned long long)r.d.leaks,
-                    (unsigned long long)r.d.double_hits, (unsigned long long)r.d.other_primitive,
-                    (unsigned long long)r.d.extra_hits, r.d.t.median(), r.d.t.p99(), r.d.t.max());
+      std::snprintf(buf, sizeof buf,
+                    "%-14s %5llu %9llu %10.2f %9.1f %7llu %7llu %7llu %7llu %8.3g %8.3g %10.4g\n",
+                    r.source.substr(0, 14).c_str(), (unsigned long long)r.cases,
+                    (unsigned long long)r.d.rays, r.msPerMray(), r.d.perMillion(),
+                    (unsigned long long)r.d.leaks, (unsigned long long)r.d.double_hits,
+                    (unsigned long long)r.d.other_primitive, (unsigned long long)r.d.extra_hits,
+                    r.d.t.median(), r.d.t.p99(), r.d.t.max());
       out += buf;
     }
   }
@@ -54,7 +61,8 @@ std::string formatAccuracyTable(const std::vector<AccuracyRow>& rows) {
   }
   out += "\n";
   for (const AccuracyRow& r : rows) {
-    std::snprintf(buf, sizeof buf, "%-8s %-14s", caseSetName(r.set), r.source.substr(0, 14).c_str());
+    std::snprintf(buf, sizeof buf, "%-8s %-14s", caseSetName(r.set),
+                  r.source.substr(0, 14).c_str());
     out += buf;
     for (uint64_t n : r.d.t.histogram()) {
       std::snprintf(buf, sizeof buf, " %7llu", (unsigned long long)n);
@@ -69,7 +77,8 @@ nlohmann::json accuracyJson(const std::vector<AccuracyRow>& rows) {
   nlohmann::json out = nlohmann::json::array();
   for (const AccuracyRow& r : rows) {
     nlohmann::json hist = nlohmann::json::array();
-    for (size_t b = 0; b < kTErrorBins; ++b) hist.push_back({{"max_ulp", tErrorBinLabel(b)}, {"rays", r.d.t.histogram()[b]}});
+    for (size_t b = 0; b < kTErrorBins; ++b)
+      hist.push_back({{"max_ulp", tErrorBinLabel(b)}, {"rays", r.d.t.histogram()[b]}});
     out.push_back({{"set", caseSetName(r.set)},
                    {"source", r.source},
                    {"kind", sourceKindName(r.kind)},

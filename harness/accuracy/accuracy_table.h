@@ -24,8 +24,8 @@ struct AccuracyRow {
   std::string source;  // "model fast", "llvmpipe", ...
   SourceKind kind = SourceKind::ModelTier;
   uint64_t cases = 0;
-  uint64_t launch_rays = 0;    // width * height of each case's launch, summed
-  double trace_seconds = 0;    // model_trace (model) or trace (device), summed
+  uint64_t launch_rays = 0;  // width * height of each case's launch, summed
+  double trace_seconds = 0;  // model_trace (model) or trace (device), summed
   Disagreements d;
   // Milliseconds of trace per million launch rays (0 without rays).
   double msPerMray() const { return launch_rays ? trace_seconds * 1e3 / (launch_rays / 1e6) : 0; }

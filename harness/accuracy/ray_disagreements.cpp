@@ -12,13 +12,17 @@ namespace {
 
 struct Fields {
   uint32_t words = recordWords();
-  int hit = recordFieldIndex("hit"), prim = recordFieldIndex("primitive_id"), inst = recordFieldIndex("instance_id"),
-      geom = recordFieldIndex("geometry_index"), t = recordFieldIndex("hit_t");
-  uint32_t chit = findRecordField("closest_hit_runs")->offset, ahit = findRecordField("any_hit_runs")->offset;
+  int hit = recordFieldIndex("hit"), prim = recordFieldIndex("primitive_id"),
+      inst = recordFieldIndex("instance_id"), geom = recordFieldIndex("geometry_index"),
+      t = recordFieldIndex("hit_t");
+  uint32_t chit = findRecordField("closest_hit_runs")->offset,
+           ahit = findRecordField("any_hit_runs")->offset;
   uint32_t offset(int index) const { return recordFields()[index].offset; }
 };
 
-bool written(const uint32_t* rec, int index) { return (rec[kRecordWrittenMaskWord] >> index) & 1u; }
+bool written(const uint32_t* rec, int index) {
+  return (rec[kRecordWrittenMaskWord] >> index) & 1u;
+}
 
 // Closest-hit ran, or any-hit saw a candidate, or the stages recorded hit = 1.
 bool found(const Fields& f, const uint32_t* rec) {
@@ -32,7 +36,8 @@ bool hit(const Fields& f, const uint32_t* rec) {
 // One id both records hold differs.
 bool differentIds(const Fields& f, const uint32_t* a, const uint32_t* b) {
   for (int index : {f.prim, f.inst, f.geom})
-    if (written(a, index) && written(b, index) && a[f.offset(index)] != b[f.offset(index)]) return true;
+    if (written(a, index) && written(b, index) && a[f.offset(index)] != b[f.offset(index)])
+      return true;
   return false;
 }
 
@@ -78,7 +83,8 @@ void Disagreements::add(const Disagreements& o) {
 Disagreements countDisagreements(const Results& exact, const Results& other, const Case* c) {
   Disagreements d;
   const Fields f;
-  if (exact.records.size() != other.records.size() || exact.width != other.width || exact.height != other.height)
+  if (exact.records.size() != other.records.size() || exact.width != other.width ||
+      exact.height != other.height)
     return d;
   std::map<uint32_t, const RayAmbiguity*> ambiguous;
   for (const RayAmbiguity& a : exact.ambiguous) ambiguous[a.ray] = &a;
@@ -118,7 +124,8 @@ Disagreements countDisagreements(const Results& exact, const Results& other, con
       // of them). Left out of the t errors; its answer is still checked above.
       const bool tminTie = a && a->reason == AmbiguityReason::TminTie;
       if (!different && !tminTie && written(e, f.t) && written(o, f.t))
-        d.t.add(ulpError(std::bit_cast<float>(o[f.offset(f.t)]), std::bit_cast<float>(e[f.offset(f.t)])));
+        d.t.add(ulpError(std::bit_cast<float>(o[f.offset(f.t)]),
+                         std::bit_cast<float>(e[f.offset(f.t)])));
     }
     d.disagreeing += disagrees;
   }

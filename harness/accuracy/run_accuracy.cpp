@@ -16,7 +16,8 @@ namespace {
 constexpr const char* kCommand = "accuracy";
 
 // The case a bundle ran, parsed (for its triangles), if it still parses.
-std::optional<Case> caseOf(const std::string& name, const Results& r, const std::string& cases_dir) {
+std::optional<Case> caseOf(const std::string& name, const Results& r,
+                           const std::string& cases_dir) {
   const std::optional<CaseFile> f = findCase(name, r.case_file, cases_dir);
   if (!f) return std::nullopt;
   ParseResult p = loadCase(*f, cases_dir);
@@ -31,19 +32,22 @@ AccuracyRow rowFor(CaseSet set, const std::string& source, SourceKind kind, cons
   row.kind = kind;
   row.cases = 1;
   row.launch_rays = uint64_t(other.width) * other.height;
-  row.trace_seconds = other.cost[kind == SourceKind::Device ? CostStep::Trace : CostStep::ModelTrace];
+  row.trace_seconds =
+      other.cost[kind == SourceKind::Device ? CostStep::Trace : CostStep::ModelTrace];
   row.d = countDisagreements(exact, other, c);
   return row;
 }
 
 // One saved device bundle of the case, if the folder has one of the same case.
-std::optional<Results> savedBundle(const std::string& dir, const std::string& name, const Results& exact) {
+std::optional<Results> savedBundle(const std::string& dir, const std::string& name,
+                                   const Results& exact) {
   const std::string bundle = dir + "/" + name + "/device";
   std::error_code ec;
   if (!std::filesystem::exists(bundle + "/results.json", ec)) return std::nullopt;
   std::optional<Results> r = readRunBundle(bundle, kCommand);
   if (r && r->case_hash && exact.case_hash && r->case_hash != exact.case_hash) {
-    std::fprintf(stderr, "rayspec accuracy: %s: ran another version of the case; left out\n", bundle.c_str());
+    std::fprintf(stderr, "rayspec accuracy: %s: ran another version of the case; left out\n",
+                 bundle.c_str());
     return std::nullopt;
   }
   return r;
@@ -54,11 +58,13 @@ int measureSet(const AccuracyOptions& opt, CaseSet set, const std::vector<std::s
                std::vector<AccuracyRow>& rows) {
   const std::vector<std::string> names = tierRunCases(opt.run, globs);
   if (names.empty()) {
-    std::fprintf(stderr, "rayspec accuracy: no %s case matches the globs given\n", caseSetName(set));
+    std::fprintf(stderr, "rayspec accuracy: no %s case matches the globs given\n",
+                 caseSetName(set));
     return kExitPass;
   }
   const std::string runs = opt.out + "/runs/" + caseSetName(set);
-  if (const int rc = runTiers({opt.run, globs, opt.tiers, runs, std::string(kCommand) + " " + caseSetName(set)});
+  if (const int rc = runTiers(
+          {opt.run, globs, opt.tiers, runs, std::string(kCommand) + " " + caseSetName(set)});
       rc != kExitPass)
     return rc;
   const std::string exact_dir = tierRunDir(runs, "exact");
@@ -69,15 +75,20 @@ int measureSet(const AccuracyOptions& opt, CaseSet set, const std::vector<std::s
     const Case* cp = c ? &*c : nullptr;
     for (const std::string& tier : opt.tiers) {
       const std::optional<Results> model =
-          tier == "exact" ? exact : readRunBundle(tierRunDir(runs, tier) + "/" + name + "/model", kCommand);
-      if (model) addToRow(rows, rowFor(set, "model " + tier, SourceKind::ModelTier, *exact, *model, cp));
+          tier == "exact" ? exact
+                          : readRunBundle(tierRunDir(runs, tier) + "/" + name + "/model", kCommand);
+      if (model)
+        addToRow(rows, rowFor(set, "model " + tier, SourceKind::ModelTier, *exact, *model, cp));
     }
     if (!opt.run.no_device)
-      if (const std::optional<Results> dev = readRunBundle(exact_dir + "/" + name + "/device", kCommand))
-        addToRow(rows, rowFor(set, shortDeviceName(dev->device), SourceKind::Device, *exact, *dev, cp));
+      if (const std::optional<Results> dev =
+              readRunBundle(exact_dir + "/" + name + "/device", kCommand))
+        addToRow(rows,
+                 rowFor(set, shortDeviceName(dev->device), SourceKind::Device, *exact, *dev, cp));
     for (const std::string& saved : opt.saved_devices)
       if (const std::optional<Results> dev = savedBundle(saved, name, *exact))
-        addToRow(rows, rowFor(set, shortDeviceName(dev->device), SourceKind::Device, *exact, *dev, cp));
+        addToRow(rows,
+                 rowFor(set, shortDeviceName(dev->device), SourceKind::Device, *exact, *dev, cp));
   }
   return kExitPass;
 }
@@ -93,22 +104,28 @@ int runAccuracy(const AccuracyOptions& opt) {
   bool has_exact = false;
   for (const std::string& t : opt.tiers) has_exact = has_exact || t == "exact";
   if (!has_exact) {
-    std::fprintf(stderr, "rayspec accuracy: the exact tier is the reference: it must be among the tiers\n");
+    std::fprintf(stderr,
+                 "rayspec accuracy: the exact tier is the reference: it must be among the tiers\n");
     return kExitSetup;
   }
   std::vector<AccuracyRow> rows;
   for (CaseSet set : {CaseSet::Ordinary, CaseSet::Hard})
-    if (const int rc = measureSet(opt, set, set == CaseSet::Ordinary ? opt.ordinary : opt.hard, rows); rc != kExitPass)
+    if (const int rc =
+            measureSet(opt, set, set == CaseSet::Ordinary ? opt.ordinary : opt.hard, rows);
+        rc != kExitPass)
       return rc;
   std::filesystem::create_directories(opt.out);
   const std::string table = formatAccuracyTable(rows);
   std::string error = writeTextFile(opt.out + "/accuracy.txt", table);
-  if (error.empty()) error = writeTextFile(opt.out + "/accuracy.json", accuracyJson(rows).dump(2) + "\n");
+  if (error.empty())
+    error = writeTextFile(opt.out + "/accuracy.json", accuracyJson(rows).dump(2) + "\n");
   if (error.empty()) {
     const std::vector<PlotPanel> panels = accuracyPanels(rows);
-    error = panels.empty() ? "nothing to plot: no bundle was read" : writeLinePlots(opt.out + "/accuracy.png", panels, {2, 640, 480});
+    error = panels.empty() ? "nothing to plot: no bundle was read"
+                           : writeLinePlots(opt.out + "/accuracy.png", panels, {2, 640, 480});
   }
-  std::printf("\n%s\nReport: %s/accuracy.txt, accuracy.json, accuracy.png\n", table.c_str(), opt.out.c_str());
+  std::printf("\n%s\nReport: %s/accuracy.txt, accuracy.json, accuracy.png\n", table.c_str(),
+              opt.out.c_str());
   if (!error.empty()) {
     std::fprintf(stderr, "rayspec accuracy: %s\n", error.c_str());
     return kExitFailing;

@@ -18,8 +18,9 @@ namespace rayspec {
 // (references/baselines/lavapipe.csv lists none of them) with many rays per
 // case, the 1M-ray mixed scene first; small enough that the whole command
 // stays within two minutes on a 2-core machine.
-inline const std::vector<std::string> kDefaultOrdinary = {"model/*", "anyhit/*", "results/*", "builtins/closest-hit-and-miss",
-                                                         "intersection/sphere-both-roots"};
+inline const std::vector<std::string> kDefaultOrdinary = {"model/*", "anyhit/*", "results/*",
+                                                          "builtins/closest-hit-and-miss",
+                                                          "intersection/sphere-both-roots"};
 inline const std::vector<std::string> kDefaultHard = {"precision/*", "watertight/*", "stability/*"};
 
 struct AccuracyOptions {

@@ -9,7 +9,8 @@ namespace rayspec {
 double ulpError(float t, float t_exact) {
   if (!std::isfinite(t) || !std::isfinite(t_exact)) return std::numeric_limits<double>::quiet_NaN();
   const float a = std::fabs(t_exact);
-  const double ulp = static_cast<double>(std::nextafter(a, std::numeric_limits<float>::infinity())) - a;
+  const double ulp =
+      static_cast<double>(std::nextafter(a, std::numeric_limits<float>::infinity())) - a;
   return std::fabs(static_cast<double>(t) - static_cast<double>(t_exact)) / ulp;
 }
 
@@ -46,6 +47,8 @@ double TErrors::quantile(double q) const {
   return v[k];
 }
 
-double TErrors::max() const { return ulps_.empty() ? 0 : *std::max_element(ulps_.begin(), ulps_.end()); }
+double TErrors::max() const {
+  return ulps_.empty() ? 0 : *std::max_element(ulps_.begin(), ulps_.end());
+}
 
 }  // namespace rayspec

@@ -7,7 +7,8 @@ template <class M, class V, class W>
 V apply(const M& m, const V& v, W w) {
   V r;
   for (int row = 0; row < 3; ++row)
-    r[row] = m[row * 4] * v[0] + m[row * 4 + 1] * v[1] + m[row * 4 + 2] * v[2] + (w != 0 ? m[row * 4 + 3] * w : W(0));
+    r[row] = m[row * 4] * v[0] + m[row * 4 + 1] * v[1] + m[row * 4 + 2] * v[2] +
+             (w != 0 ? m[row * 4 + 3] * w : W(0));
   return r;
 }
 
@@ -19,7 +20,11 @@ DTransform toDouble(const Transform& m) {
   return d;
 }
 
-Vec3 applyAffine(const Transform& m, const Vec3& v, float w) { return apply(m, v, w); }
-DVec3 applyAffine(const DTransform& m, const DVec3& v, double w) { return apply(m, v, w); }
+Vec3 applyAffine(const Transform& m, const Vec3& v, float w) {
+  return apply(m, v, w);
+}
+DVec3 applyAffine(const DTransform& m, const DVec3& v, double w) {
+  return apply(m, v, w);
+}
 
 }  // namespace rayspec

@@ -22,7 +22,9 @@ inline float nextUp(float x) {
   const uint32_t bits = std::bit_cast<uint32_t>(x);
   return std::bit_cast<float>(x > 0 ? bits + 1 : bits - 1);
 }
-inline float nextDown(float x) { return -nextUp(-x); }
+inline float nextDown(float x) {
+  return -nextUp(-x);
+}
 
 // The nearest float at or below / at or above the double x (NaN stays NaN):
 // a double bound rounded outward.

@@ -13,8 +13,9 @@ namespace {
 
 using Pos = std::tuple<float, float, float>;
 
-Pos key(const Vec3& v) { return {v[0], v[1], v[2]}; }
-
+Pos key(const Vec3& v) {
+  return {v[0], v[1], v[2]};
+}
 
 }  // namespace
 
@@ -77,16 +78,20 @@ std::vector<DVec3> meshAimPoints(const Geometry& g, const AimSpec& spec) {
   return out;
 }
 
-std::vector<Ray> aimRays(const Scene& scene, const AimSpec& spec, const Ray& defaults, std::string* error) {
+std::vector<Ray> aimRays(const Scene& scene, const AimSpec& spec, const Ray& defaults,
+                         std::string* error) {
   std::vector<Ray> rays;
   if (spec.instance >= scene.instances.size() || !scene.instances[spec.instance].blas) {
-    *error = "instance " + std::to_string(spec.instance) + " is not an instance of a BLAS in the scene";
+    *error =
+        "instance " + std::to_string(spec.instance) + " is not an instance of a BLAS in the scene";
     return rays;
   }
   const Instance& inst = scene.instances[spec.instance];
   const Blas& blas = scene.blases[*inst.blas];
-  if (spec.geometry >= blas.geometries.size() || blas.geometries[spec.geometry].kind != Geometry::Kind::Triangles) {
-    *error = "geometry " + std::to_string(spec.geometry) + " of BLAS '" + blas.name + "' is not a triangle mesh";
+  if (spec.geometry >= blas.geometries.size() ||
+      blas.geometries[spec.geometry].kind != Geometry::Kind::Triangles) {
+    *error = "geometry " + std::to_string(spec.geometry) + " of BLAS '" + blas.name +
+             "' is not a triangle mesh";
     return rays;
   }
   const Geometry& g = blas.geometries[spec.geometry];

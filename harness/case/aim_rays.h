@@ -32,6 +32,7 @@ std::vector<std::array<double, 3>> meshAimPoints(const Geometry& g, const AimSpe
 // `offset`, rounded to float, towards the point. Empty, with *error set,
 // when the instance or geometry is not a triangle mesh of the scene or the
 // mesh has no interior feature.
-std::vector<Ray> aimRays(const Scene& scene, const AimSpec& spec, const Ray& defaults, std::string* error);
+std::vector<Ray> aimRays(const Scene& scene, const AimSpec& spec, const Ray& defaults,
+                         std::string* error);
 
 }  // namespace rayspec

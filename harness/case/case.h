@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "base/affine.h"
-#include "base/vec3.h"
 #include "base/source_loc.h"
+#include "base/vec3.h"
 #include "program/program.h"
 #include "results/undefined_reason.h"
 
@@ -23,32 +23,38 @@ namespace rayspec {
 
 // Vulkan geometry flags (VkGeometryFlagBitsKHR values).
 enum GeometryFlag : uint32_t {
-  kGeometryOpaque = 0x1,               // "opaque"
-  kGeometryNoDuplicateAnyHit = 0x2,    // "no_duplicate_any_hit"
+  kGeometryOpaque = 0x1,             // "opaque"
+  kGeometryNoDuplicateAnyHit = 0x2,  // "no_duplicate_any_hit"
 };
 
 // Vulkan instance flags (VkGeometryInstanceFlagBitsKHR values).
 enum InstanceFlag : uint32_t {
-  kInstanceFacingCullDisable = 0x1,    // "triangle_facing_cull_disable"
-  kInstanceFlipFacing = 0x2,           // "triangle_flip_facing"
-  kInstanceForceOpaque = 0x4,          // "force_opaque"
-  kInstanceForceNoOpaque = 0x8,        // "force_no_opaque"
+  kInstanceFacingCullDisable = 0x1,  // "triangle_facing_cull_disable"
+  kInstanceFlipFacing = 0x2,         // "triangle_flip_facing"
+  kInstanceForceOpaque = 0x4,        // "force_opaque"
+  kInstanceForceNoOpaque = 0x8,      // "force_no_opaque"
 };
 
 // Vulkan ray flags (gl_RayFlags*EXT values), written in cases by the names
 // opaque, no_opaque, terminate_on_first_hit, skip_closest_hit, cull_back_facing,
 // cull_front_facing, cull_opaque, cull_no_opaque, skip_triangles, skip_aabbs.
 enum RayFlag : uint32_t {
-  kRayOpaque = 0x1, kRayNoOpaque = 0x2, kRayTerminateOnFirstHit = 0x4,
-  kRaySkipClosestHit = 0x8, kRayCullBackFacing = 0x10, kRayCullFrontFacing = 0x20,
-  kRayCullOpaque = 0x40, kRayCullNoOpaque = 0x80, kRaySkipTriangles = 0x100,
+  kRayOpaque = 0x1,
+  kRayNoOpaque = 0x2,
+  kRayTerminateOnFirstHit = 0x4,
+  kRaySkipClosestHit = 0x8,
+  kRayCullBackFacing = 0x10,
+  kRayCullFrontFacing = 0x20,
+  kRayCullOpaque = 0x40,
+  kRayCullNoOpaque = 0x80,
+  kRaySkipTriangles = 0x100,
   kRaySkipAabbs = 0x200,
 };
 
 struct Geometry {
   enum class Kind { Triangles, Aabbs };
   Kind kind = Kind::Triangles;
-  uint32_t flags = 0;                  // GeometryFlag bits
+  uint32_t flags = 0;  // GeometryFlag bits
   // Triangles: vertices (float32, NaN allowed), indices (uint32) or empty for
   // non-indexed (each 3 consecutive vertices one triangle).
   std::vector<Vec3> vertices;
@@ -72,10 +78,10 @@ struct Blas {
 struct Instance {
   std::optional<uint32_t> blas;  // index into Scene::blases; empty = null reference (inactive)
   Transform transform = kIdentity;
-  uint32_t mask = 0xFF;          // 8 bits
-  uint32_t custom_index = 0;     // 24 bits
-  uint32_t sbt_offset = 0;       // 24 bits
-  uint32_t flags = 0;            // InstanceFlag bits
+  uint32_t mask = 0xFF;       // 8 bits
+  uint32_t custom_index = 0;  // 24 bits
+  uint32_t sbt_offset = 0;    // 24 bits
+  uint32_t flags = 0;         // InstanceFlag bits
   SourceLoc loc;
 };
 
@@ -92,17 +98,17 @@ struct Ray {
 };
 
 struct Rays {
-  uint32_t width = 1, height = 1;  // launch size; width*height == rays.size()
-  std::vector<Ray> rays;           // row-major, index = y * width + x
-  Ray defaults;                    // tmin/tmax/flags/... used for camera rays and nested traces
-  SourceLoc defaults_loc;          // the `rays` map
+  uint32_t width = 1, height = 1;    // launch size; width*height == rays.size()
+  std::vector<Ray> rays;             // row-major, index = y * width + x
+  Ray defaults;                      // tmin/tmax/flags/... used for camera rays and nested traces
+  SourceLoc defaults_loc;            // the `rays` map
   std::vector<SourceLoc> list_locs;  // `list` form: where each ray is written (empty otherwise)
 };
 
 // One record of an SBT region: a group index, or all-zero, plus record data.
 struct SbtRecord {
-  std::optional<uint32_t> group;     // empty = all-zero record (R-SBT-ZERO)
-  std::vector<uint32_t> data;        // up to record_data / 4 words of shader record data
+  std::optional<uint32_t> group;  // empty = all-zero record (R-SBT-ZERO)
+  std::vector<uint32_t> data;     // up to record_data / 4 words of shader record data
 };
 
 // The shape of every SBT record (pipeline.sbt.record_data / padding): the
@@ -124,15 +130,17 @@ struct HitGroup {
 
 struct Pipeline {
   uint32_t max_recursion = 1;
-  uint32_t flags = 0;                       // pipeline flags: skip_triangles / skip_aabbs (VkPipelineCreateFlags values 0x1000 / 0x2000)
-  Program raygen;                           // default: [trace: {}]
-  std::vector<uint32_t> raygen_data;        // raygen shader record data
+  uint32_t flags = 0;  // pipeline flags: skip_triangles / skip_aabbs (VkPipelineCreateFlags values
+                       // 0x1000 / 0x2000)
+  Program raygen;      // default: [trace: {}]
+  std::vector<uint32_t> raygen_data;  // raygen shader record data
   std::vector<Program> miss;
   std::vector<HitGroup> hit_groups;
   std::vector<Program> callables;
   // SBT regions. Default when not written: one record per shader / group, in order.
   std::vector<SbtRecord> sbt_miss, sbt_hit, sbt_callable;
-  uint32_t sbt_record_data = kMaxShaderRecordDataBytes;  // bytes of data per record: 0..32, multiple of 4
+  uint32_t sbt_record_data =
+      kMaxShaderRecordDataBytes;  // bytes of data per record: 0..32, multiple of 4
   SbtPadding sbt_padding;
 };
 
@@ -152,7 +160,7 @@ struct Outputs {
   // exact, at_least, at_most or informational; the others are derived
   // (compare/counter_modes.h).
   std::map<std::string, std::string> counter_modes;
-  std::vector<std::string> per_ray;   // every field a `record` statement writes
+  std::vector<std::string> per_ray;  // every field a `record` statement writes
   std::vector<ImageOutput> images;
 };
 
@@ -166,9 +174,10 @@ struct StaticUndefined {
 };
 
 struct Case {
-  std::string name;                // e.g. "anyhit/ignore-odd-primitives"
-  std::string file;                // path of the YAML file
-  uint64_t source_hash = 0;        // contentHash of the text parsed (a sweep: the variant's); --permute mixes in its seed
+  std::string name;  // e.g. "anyhit/ignore-odd-primitives"
+  std::string file;  // path of the YAML file
+  uint64_t source_hash =
+      0;  // contentHash of the text parsed (a sweep: the variant's); --permute mixes in its seed
   std::string family;              // first path component of name ("anyhit")
   std::vector<std::string> rules;  // rule labels of spec-rules.md
   std::string description;

@@ -18,10 +18,12 @@ void parseOutputs(YamlReader& r, const YAML::Node& n, Outputs& outputs);
 
 // A generated mesh (`grid`, `fan` or `triangulation` in a `triangles` map):
 // nullopt when n names none, else whether it parsed (then g holds the mesh).
-std::optional<bool> parseGeneratedMesh(YamlReader& r, const YAML::Node& n, const std::string& field, Geometry& g);
+std::optional<bool> parseGeneratedMesh(YamlReader& r, const YAML::Node& n, const std::string& field,
+                                       Geometry& g);
 
 // identity | 12 numbers | {translate, scale, rotate: {axis, degrees}}
-std::optional<Transform> parseTransform(YamlReader& r, const YAML::Node& n, const std::string& field);
+std::optional<Transform> parseTransform(YamlReader& r, const YAML::Node& n,
+                                        const std::string& field);
 
 // {uints: [..]} | {floats: [..]}, at most 8 words.
 std::optional<std::vector<uint32_t>> parseRecordData(YamlReader& r, const YAML::Node& n,

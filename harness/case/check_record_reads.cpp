@@ -11,23 +11,28 @@ namespace rayspec {
 namespace {
 
 // Bytes of record data a light of this kind reads (shaders/lights.glsl).
-uint32_t lightBytes(const std::string& kind) { return kind == "spot" ? 32 : 24; }
+uint32_t lightBytes(const std::string& kind) {
+  return kind == "spot" ? 32 : 24;
+}
 
 // Bytes the expression itself reads (not its arguments); 0 when none or unknown.
 uint32_t bytesRead(const Expr& e, std::string* what) {
   if (e.kind != Expr::Kind::Op) return 0;
   if (e.name == "shader_record_uint" || e.name == "shader_record_float") {
-    if (e.args.size() != 1 || e.args[0].kind != Expr::Kind::Literal || e.args[0].literal.size() != 1) return 0;
+    if (e.args.size() != 1 || e.args[0].kind != Expr::Kind::Literal ||
+        e.args[0].literal.size() != 1)
+      return 0;
     const double i = e.args[0].literal[0];
     if (!(i >= 0 && i < 1e6)) return 0;
     const uint32_t word = static_cast<uint32_t>(i);
-    *what = e.name + "(" + std::to_string(word) + ") reads bytes " + std::to_string(4 * word) + ".." +
-            std::to_string(4 * word + 3);
+    *what = e.name + "(" + std::to_string(word) + ") reads bytes " + std::to_string(4 * word) +
+            ".." + std::to_string(4 * word + 3);
     return 4 * word + 4;
   }
   if (e.name.rfind("light_", 0) == 0) {
     const uint32_t n = lightBytes(e.name.substr(6));
-    *what = e.name + " reads floats 0.." + std::to_string(n / 4 - 1) + " (bytes 0.." + std::to_string(n - 1) + ")";
+    *what = e.name + " reads floats 0.." + std::to_string(n / 4 - 1) + " (bytes 0.." +
+            std::to_string(n - 1) + ")";
     return n;
   }
   return 0;
@@ -58,7 +63,8 @@ class ReadChecker {
     SourceLoc loc = at;
     if (loc.file.empty()) loc.file = r_.file();
     if (loc.field.empty()) loc.field = field;
-    r_.error(loc, what + " of its shader record, past pipeline.sbt.record_data (" + std::to_string(k_) +
+    r_.error(loc, what + " of its shader record, past pipeline.sbt.record_data (" +
+                      std::to_string(k_) +
                       " bytes per record): it would read the padding or the next record");
   }
 
@@ -73,7 +79,8 @@ void checkRecordReads(YamlReader& r, const Case& c) {
   if (p.sbt_record_data >= kMaxShaderRecordDataBytes) return;  // every read fits
   ReadChecker check(r, p.sbt_record_data);
   check.program(p.raygen, "pipeline.raygen");
-  for (size_t i = 0; i < p.miss.size(); ++i) check.program(p.miss[i], "pipeline.miss[" + std::to_string(i) + "]");
+  for (size_t i = 0; i < p.miss.size(); ++i)
+    check.program(p.miss[i], "pipeline.miss[" + std::to_string(i) + "]");
   for (size_t i = 0; i < p.hit_groups.size(); ++i) {
     const HitGroup& g = p.hit_groups[i];
     const std::string f = "pipeline.hit_groups[" + std::to_string(i) + "].";

@@ -27,8 +27,8 @@ struct LaunchParameters {
 bool sameParameters(const Ray& a, const Ray& b) {
   return std::bit_cast<uint32_t>(a.tmin) == std::bit_cast<uint32_t>(b.tmin) &&
          std::bit_cast<uint32_t>(a.tmax) == std::bit_cast<uint32_t>(b.tmax) && a.flags == b.flags &&
-         a.cull_mask == b.cull_mask && a.sbt_offset == b.sbt_offset && a.sbt_stride == b.sbt_stride &&
-         a.miss == b.miss;
+         a.cull_mask == b.cull_mask && a.sbt_offset == b.sbt_offset &&
+         a.sbt_stride == b.sbt_stride && a.miss == b.miss;
 }
 
 // The distinct parameters of the launch rays (a camera or a grid has one set).
@@ -37,7 +37,9 @@ std::vector<LaunchParameters> launchParameters(const Rays& rays) {
   for (size_t i = 0; i < rays.rays.size(); ++i) {
     bool seen = false;
     for (const LaunchParameters& p : out) seen = seen || sameParameters(p.ray, rays.rays[i]);
-    if (!seen) out.push_back({rays.rays[i], i < rays.list_locs.size() ? rays.list_locs[i] : rays.defaults_loc});
+    if (!seen)
+      out.push_back(
+          {rays.rays[i], i < rays.list_locs.size() ? rays.list_locs[i] : rays.defaults_loc});
   }
   return out;
 }
@@ -67,8 +69,8 @@ TraceValues traceValues(const TraceArgs& t, const Ray& base) {
 }
 
 std::string regionSize(size_t records, const char* region, const char* per) {
-  return "the " + std::string(region) + " region has " + std::to_string(records) + " record(s) (pipeline.sbt." +
-         region + ", else one per " + per + ")";
+  return "the " + std::string(region) + " region has " + std::to_string(records) +
+         " record(s) (pipeline.sbt." + region + ", else one per " + per + ")";
 }
 
 // The first instance x geometry whose hit record lies beyond the hit region
@@ -81,20 +83,22 @@ std::string hitOutOfRange(const Case& c, const TraceValues& v) {
   for (size_t i = 0; i < c.scene.instances.size(); ++i) {
     const Instance& inst = c.scene.instances[i];
     if (!inst.blas || *inst.blas >= c.scene.blases.size()) continue;  // inactive
-    if ((inst.mask & *v.cull_mask & 0xFF) == 0) continue;              // R-MASK: never reached
+    if ((inst.mask & *v.cull_mask & 0xFF) == 0) continue;             // R-MASK: never reached
     const Blas& blas = c.scene.blases[*inst.blas];
     for (size_t g = 0; g < blas.geometries.size(); ++g) {
       const Geometry& geom = blas.geometries[g];
       if (geom.primitiveCount() == 0) continue;
       if (geom.kind == Geometry::Kind::Triangles ? skip_triangles : skip_aabbs) continue;
       // R-SBT-HIT: only the low 4 bits of the trace's offset and stride count.
-      const uint64_t index = (inst.sbt_offset & 0xFFFFFF) + static_cast<uint64_t>(g) * (*v.sbt_stride & 0xF) +
+      const uint64_t index = (inst.sbt_offset & 0xFFFFFF) +
+                             static_cast<uint64_t>(g) * (*v.sbt_stride & 0xF) +
                              (*v.sbt_offset & 0xF);
       if (index < p.sbt_hit.size()) continue;
       std::ostringstream s;
-      s << "hit record " << index << " is out of range: scene.instances[" << i << "] (blas " << blas.name
-        << ", sbt_offset " << inst.sbt_offset << ") geometry " << g << " with sbt_offset " << *v.sbt_offset
-        << ", sbt_stride " << *v.sbt_stride << " reaches it; " << regionSize(p.sbt_hit.size(), "hit", "hit group");
+      s << "hit record " << index << " is out of range: scene.instances[" << i << "] (blas "
+        << blas.name << ", sbt_offset " << inst.sbt_offset << ") geometry " << g
+        << " with sbt_offset " << *v.sbt_offset << ", sbt_stride " << *v.sbt_stride
+        << " reaches it; " << regionSize(p.sbt_hit.size(), "hit", "hit group");
       return s.str();
     }
   }
@@ -131,7 +135,8 @@ class TraceChecker {
       auto from = [&](std::initializer_list<const std::vector<Expr>*> args) {
         bool launch = false;
         for (const auto* a : args) launch = launch || a->empty();
-        return launch && base.from.field != "rays" ? " (values of " + base.from.field + ")" : std::string();
+        return launch && base.from.field != "rays" ? " (values of " + base.from.field + ")"
+                                                   : std::string();
       };
       // The default raygen (no pipeline written) has no place of its own: the ray's.
       const SourceLoc& at = s.loc.line ? s.loc : base.from;
@@ -148,12 +153,17 @@ class TraceChecker {
         miss_noted = true;
       }
     }
-    // The trace's own interval (the launch rays' and the defaults' are checked where they are written).
-    auto value = [](const std::vector<Expr>& e) { return e.empty() ? std::nullopt : constantFloat(e.front()); };
+    // The trace's own interval (the launch rays' and the defaults' are checked where they are
+    // written).
+    auto value = [](const std::vector<Expr>& e) {
+      return e.empty() ? std::nullopt : constantFloat(e.front());
+    };
     const std::optional<double> tmin = value(t.tmin), tmax = value(t.tmax);
     const bool bad_tmin = tmin && !(*tmin >= 0), bad_tmax = tmax && !(*tmax >= 0);
-    if (bad_tmin) note(t.tmin.front().loc, UndefinedReason::RayParameters, "trace tmin is negative or NaN");
-    if (bad_tmax) note(t.tmax.front().loc, UndefinedReason::RayParameters, "trace tmax is negative or NaN");
+    if (bad_tmin)
+      note(t.tmin.front().loc, UndefinedReason::RayParameters, "trace tmin is negative or NaN");
+    if (bad_tmax)
+      note(t.tmax.front().loc, UndefinedReason::RayParameters, "trace tmax is negative or NaN");
     if (bad_tmin || bad_tmax || !(tmin || tmax)) return;
     for (const LaunchParameters& base : bases) {
       const TraceValues v = traceValues(t, base.ray);

@@ -2,26 +2,18 @@
 #include "case/parse_case.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <regex>
-#include <cstdio>
 #include <sstream>
 
+#include "base/visible_text.h"
 #include "case/case_parts.h"
-#include "results/file_name.h"
-#include "results/visible_text.h"
 #include "results/content_hash.h"
+#include "results/file_name.h"
 
 namespace rayspec {
-
-std::string CaseError::format() const {
-  std::ostringstream s;
-  s << loc.file << ":" << loc.line << ":" << loc.column << ": ";
-  if (!loc.field.empty()) s << visibleText(loc.field) << ": ";
-  s << visibleText(message);
-  return s.str();
-}
 
 namespace {
 
@@ -39,7 +31,9 @@ void parseRules(YamlReader& r, const YAML::Node& n, const std::vector<std::strin
       continue;
     }
     if (catalog && std::find(catalog->begin(), catalog->end(), *s) == catalog->end()) {
-      r.error(n[i], f, "unknown rule label '" + *s + "' (not in the rule catalog, references/spec-rules.yaml)");
+      r.error(
+          n[i], f,
+          "unknown rule label '" + *s + "' (not in the rule catalog, references/spec-rules.yaml)");
       continue;
     }
     rules.push_back(*s);
@@ -69,15 +63,19 @@ void checkCaseName(YamlReader& r, const Case& c) {
               "'" + c.name + "' cannot name a results folder: '" + part + "' " + problem);
 }
 
-void parseTop(YamlReader& r, const YAML::Node& root, const std::vector<std::string>* catalog, Case& c) {
+void parseTop(YamlReader& r, const YAML::Node& root, const std::vector<std::string>* catalog,
+              Case& c) {
   r.checkDuplicateKeys(root);
-  if (!r.expectMap(root, "", {"rules", "description", "scene", "rays", "pipeline", "outputs"})) return;
+  if (!r.expectMap(root, "", {"rules", "description", "scene", "rays", "pipeline", "outputs"}))
+    return;
   if (r.require(root, "", "rules")) parseRules(r, YamlReader::get(root, "rules"), catalog, c.rules);
   if (auto d = YamlReader::get(root, "description"); d.IsDefined())
     if (auto s = r.string(d, "description")) c.description = *s;
-  if (auto s = YamlReader::get(root, "scene"); s.IsDefined() && !s.IsNull()) parseScene(r, s, c.scene);
+  if (auto s = YamlReader::get(root, "scene"); s.IsDefined() && !s.IsNull())
+    parseScene(r, s, c.scene);
   if (r.require(root, "", "rays")) parseRays(r, YamlReader::get(root, "rays"), c.scene, c.rays);
-  if (auto o = YamlReader::get(root, "outputs"); o.IsDefined() && !o.IsNull()) parseOutputs(r, o, c.outputs);
+  if (auto o = YamlReader::get(root, "outputs"); o.IsDefined() && !o.IsNull())
+    parseOutputs(r, o, c.outputs);
   const YAML::Node pipeline = YamlReader::get(root, "pipeline");
   parsePipeline(r, pipeline, c.pipeline);
   checkPrograms(r, c, pipeline);
@@ -88,8 +86,8 @@ void parseTop(YamlReader& r, const YAML::Node& root, const std::vector<std::stri
 
 }  // namespace
 
-ParseResult parseCaseText(const std::string& yaml, const std::string& file_name, const std::string& name,
-                          const std::vector<std::string>* catalog) {
+ParseResult parseCaseText(const std::string& yaml, const std::string& file_name,
+                          const std::string& name, const std::vector<std::string>* catalog) {
   ParseResult result;
   YamlReader r(file_name, result.errors);
   Case c;
@@ -110,7 +108,8 @@ ParseResult parseCaseText(const std::string& yaml, const std::string& file_name,
     return result;
   }
   if (!root.IsDefined() || root.IsNull()) {
-    r.error(SourceLoc{file_name, 1, 1, ""}, "empty case file (expected a map: rules, scene, rays, pipeline, outputs)");
+    r.error(SourceLoc{file_name, 1, 1, ""},
+            "empty case file (expected a map: rules, scene, rays, pipeline, outputs)");
     return result;
   }
   try {
@@ -123,7 +122,8 @@ ParseResult parseCaseText(const std::string& yaml, const std::string& file_name,
     r.error(loc, "unexpected value (" + (e.msg.empty() ? std::string(e.what()) : e.msg) +
                      "): see cases/README.md for what this field holds");
   } catch (const std::exception& e) {
-    r.error(SourceLoc{file_name, 1, 1, r.lastField()}, std::string("internal error while parsing: ") + e.what());
+    r.error(SourceLoc{file_name, 1, 1, r.lastField()},
+            std::string("internal error while parsing: ") + e.what());
   }
   result.undefined = r.undefinedBehaviour();
   if (result.errors.empty()) result.value = std::move(c);
@@ -142,7 +142,8 @@ ParseResult parseCaseFile(const std::string& path, const std::string& cases_root
   std::stringstream text;
   text << in.rdbuf();
   std::error_code ec;
-  fs::path rel = fs::weakly_canonical(path, ec).lexically_relative(fs::weakly_canonical(cases_root, ec));
+  fs::path rel =
+      fs::weakly_canonical(path, ec).lexically_relative(fs::weakly_canonical(cases_root, ec));
   if (rel.empty() || *rel.begin() == "..") rel = fs::path(path).filename();
   rel.replace_extension();
   return parseCaseText(text.str(), path, rel.generic_string(), catalog);

@@ -6,20 +6,15 @@
 #include <string>
 #include <vector>
 
-#include "case/case.h"
+#include "base/error.h"
 #include "base/source_loc.h"
+#include "case/case.h"
 
 namespace rayspec {
 
-struct CaseError {
-  SourceLoc loc;
-  std::string message;
-  std::string format() const;  // "FILE:LINE:COL: FIELD: MESSAGE"
-};
-
 struct ParseResult {
-  std::optional<Case> value;     // set only when there is no error
-  std::vector<CaseError> errors;
+  std::optional<Case> value;  // set only when there is no error
+  std::vector<Error> errors;
   // Undefined behaviour (R-UB) found where the values are constants: errors
   // above unless the case claims R-UB (then also Case::static_undefined).
   std::vector<StaticUndefined> undefined;
@@ -32,6 +27,7 @@ ParseResult parseCaseFile(const std::string& path, const std::string& cases_root
                           const std::vector<std::string>* catalog = nullptr);
 // Parses YAML text; file_name is used in locations, name becomes Case::name.
 ParseResult parseCaseText(const std::string& yaml, const std::string& file_name,
-                          const std::string& name, const std::vector<std::string>* catalog = nullptr);
+                          const std::string& name,
+                          const std::vector<std::string>* catalog = nullptr);
 
 }  // namespace rayspec

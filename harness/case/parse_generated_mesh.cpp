@@ -10,7 +10,8 @@ namespace {
 constexpr uint64_t kMaxCells = 1u << 22;
 
 // cells: [x, y] with 1 <= x * y <= 2^22.
-std::optional<std::array<uint32_t, 2>> parseCells(YamlReader& r, const YAML::Node& cells, const std::string& f) {
+std::optional<std::array<uint32_t, 2>> parseCells(YamlReader& r, const YAML::Node& cells,
+                                                  const std::string& f) {
   if (!cells.IsSequence() || cells.size() != 2) {
     r.error(cells, f, "expected [x, y] cell counts");
     return std::nullopt;
@@ -25,13 +26,15 @@ std::optional<std::array<uint32_t, 2>> parseCells(YamlReader& r, const YAML::Nod
   return std::array<uint32_t, 2>{*cx, *cy};
 }
 
-std::optional<std::array<double, 3>> parseCenter(YamlReader& r, const YAML::Node& m, const std::string& f) {
+std::optional<std::array<double, 3>> parseCenter(YamlReader& r, const YAML::Node& m,
+                                                 const std::string& f) {
   if (!YamlReader::has(m, "center")) return std::array<double, 3>{0, 0, 0};
   return r.numbers<3>(YamlReader::get(m, "center"), f + ".center");
 }
 
 bool parseGrid(YamlReader& r, const YAML::Node& grid, const std::string& f, Geometry& g) {
-  if (!r.expectMap(grid, f, {"cells", "size", "center"}) || !(r.require(grid, f, "cells") & r.require(grid, f, "size")))
+  if (!r.expectMap(grid, f, {"cells", "size", "center"}) ||
+      !(r.require(grid, f, "cells") & r.require(grid, f, "size")))
     return false;
   auto cells = parseCells(r, YamlReader::get(grid, "cells"), f + ".cells");
   auto size = r.numbers<2>(YamlReader::get(grid, "size"), f + ".size");
@@ -42,12 +45,15 @@ bool parseGrid(YamlReader& r, const YAML::Node& grid, const std::string& f, Geom
 }
 
 bool parseFan(YamlReader& r, const YAML::Node& fan, const std::string& f, Geometry& g) {
-  if (!r.expectMap(fan, f, {"triangles", "radius", "center", "seed"}) || !r.require(fan, f, "triangles")) return false;
+  if (!r.expectMap(fan, f, {"triangles", "radius", "center", "seed"}) ||
+      !r.require(fan, f, "triangles"))
+    return false;
   FanSpec spec;
   auto n = r.uint(YamlReader::get(fan, "triangles"), f + ".triangles", 1u << 20);
   if (!n) return false;
   if (*n < 3) {
-    r.error(YamlReader::get(fan, "triangles"), f + ".triangles", "a closed fan needs at least 3 triangles");
+    r.error(YamlReader::get(fan, "triangles"), f + ".triangles",
+            "a closed fan needs at least 3 triangles");
     return false;
   }
   spec.triangles = *n;
@@ -86,7 +92,8 @@ bool parseTriangulation(YamlReader& r, const YAML::Node& m, const std::string& f
     auto jitter = r.number(YamlReader::get(m, "jitter"), f + ".jitter");
     if (!jitter) return false;
     if (!(*jitter >= 0 && *jitter <= 0.25)) {
-      r.error(YamlReader::get(m, "jitter"), f + ".jitter", "jitter must be in [0, 0.25] (of a cell)");
+      r.error(YamlReader::get(m, "jitter"), f + ".jitter",
+              "jitter must be in [0, 0.25] (of a cell)");
       return false;
     }
     spec.jitter = *jitter;
@@ -102,7 +109,8 @@ bool parseTriangulation(YamlReader& r, const YAML::Node& m, const std::string& f
 
 }  // namespace
 
-std::optional<bool> parseGeneratedMesh(YamlReader& r, const YAML::Node& n, const std::string& field, Geometry& g) {
+std::optional<bool> parseGeneratedMesh(YamlReader& r, const YAML::Node& n, const std::string& field,
+                                       Geometry& g) {
   const char* names[] = {"grid", "fan", "triangulation"};
   int given = 0;
   const char* name = nullptr;
@@ -113,7 +121,9 @@ std::optional<bool> parseGeneratedMesh(YamlReader& r, const YAML::Node& n, const
     }
   if (!given) return std::nullopt;
   if (given > 1 || YamlReader::has(n, "vertices") || YamlReader::has(n, "indices")) {
-    r.error(n, field, "a generated mesh (grid, fan or triangulation) is one of them alone, without vertices or indices");
+    r.error(n, field,
+            "a generated mesh (grid, fan or triangulation) is one of them alone, without vertices "
+            "or indices");
     return false;
   }
   const std::string f = field + "." + name;

@@ -38,9 +38,10 @@ std::optional<std::string> counterWithMode(YamlReader& r, const YAML::Node& n, c
   const std::string& name = *key;
   auto mode = r.string(kv->second, f + "." + name);
   if (!mode) return std::nullopt;
-  if (std::find(std::begin(kCounterModes), std::end(kCounterModes), *mode) == std::end(kCounterModes)) {
-    r.error(kv->second, f + "." + name, "unknown counter mode '" + *mode +
-                                            "' (exact, at_least, at_most, informational)");
+  if (std::find(std::begin(kCounterModes), std::end(kCounterModes), *mode) ==
+      std::end(kCounterModes)) {
+    r.error(kv->second, f + "." + name,
+            "unknown counter mode '" + *mode + "' (exact, at_least, at_most, informational)");
     return std::nullopt;
   }
   (*modes)[name] = *mode;
@@ -48,7 +49,8 @@ std::optional<std::string> counterWithMode(YamlReader& r, const YAML::Node& n, c
 }
 
 void parseNames(YamlReader& r, const YAML::Node& n, const std::string& field, bool record_fields,
-                std::vector<std::string>& out, std::map<std::string, std::string>* modes = nullptr) {
+                std::vector<std::string>& out,
+                std::map<std::string, std::string>* modes = nullptr) {
   if (!r.expectSeq(n, field)) return;
   for (size_t i = 0; i < n.size(); ++i) {
     const std::string f = field + "[" + std::to_string(i) + "]";
@@ -108,7 +110,8 @@ void parseOutputs(YamlReader& r, const YAML::Node& n, Outputs& o) {
       continue;
     }
     for (const ImageOutput& other : o.images)
-      if (other.name == *name) r.error(YamlReader::get(img, "name"), f + ".name", "duplicate image name");
+      if (other.name == *name)
+        r.error(YamlReader::get(img, "name"), f + ".name", "duplicate image name");
     if (!contains(o.per_ray, *from)) {
       r.error(YamlReader::get(img, "from"), f + ".from",
               "field '" + *from + "' is not declared in outputs.per_ray");
@@ -153,8 +156,9 @@ void parseOutputs(YamlReader& r, const YAML::Node& n, Outputs& o) {
     const RecordField* a = findRecordField(img.field);
     const RecordField* b = findRecordField(other->field);
     if (a && b && a->type != b->type)
-      r.error(node, f, "image '" + img.name + "' (from " + img.field + ") and '" + other->name + "' (from " +
-                           other->field + ") have different texel formats");
+      r.error(node, f,
+              "image '" + img.name + "' (from " + img.field + ") and '" + other->name + "' (from " +
+                  other->field + ") have different texel formats");
   }
 }
 

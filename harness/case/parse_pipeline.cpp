@@ -37,7 +37,10 @@ void parsePadding(YamlReader& r, const YAML::Node& n, SbtPadding& out) {
     return;
   }
   if (!r.expectMap(n, f, {"miss", "hit", "callable"})) return;
-  struct Slot { const char* key; uint32_t* value; };
+  struct Slot {
+    const char* key;
+    uint32_t* value;
+  };
   for (Slot s : {Slot{"miss", &out.miss}, Slot{"hit", &out.hit}, Slot{"callable", &out.callable}})
     if (auto v = YamlReader::get(n, s.key); v.IsDefined())
       if (auto x = r.uint(v, f + "." + s.key, kMaxSbtPaddingBytes)) *s.value = *x;
@@ -103,7 +106,10 @@ void parseHitGroups(YamlReader& r, const YAML::Node& n, std::vector<HitGroup>& o
       continue;
     }
     if (r.expectMap(n[i], f, {"closest_hit", "any_hit", "intersection"})) {
-      struct Slot { const char* key; std::optional<Program>* prog; };
+      struct Slot {
+        const char* key;
+        std::optional<Program>* prog;
+      };
       for (Slot s : {Slot{"closest_hit", &g.closest_hit}, Slot{"any_hit", &g.any_hit},
                      Slot{"intersection", &g.intersection}}) {
         const YAML::Node p = YamlReader::get(n[i], s.key);
@@ -126,8 +132,9 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
   trace.loc = r.loc(n, "pipeline.raygen");
   p.raygen.push_back(trace);  // default raygen: [trace: {}]
   if (!n.IsDefined()) return;
-  if (!r.expectMap(n, "pipeline", {"max_recursion", "flags", "raygen", "raygen_data", "miss",
-                                   "hit_groups", "callables", "sbt"}))
+  if (!r.expectMap(n, "pipeline",
+                   {"max_recursion", "flags", "raygen", "raygen_data", "miss", "hit_groups",
+                    "callables", "sbt"}))
     return;
   if (auto v = YamlReader::get(n, "max_recursion"); v.IsDefined())
     if (auto x = r.uint(v, "pipeline.max_recursion", 31)) {
@@ -143,7 +150,8 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
   // The record shape first: the data of every record must fit in it.
   const YAML::Node sbt = YamlReader::get(n, "sbt");
   const bool sbt_ok =
-      sbt.IsDefined() && r.expectMap(sbt, "pipeline.sbt", {"record_data", "padding", "miss", "hit", "callable"});
+      sbt.IsDefined() &&
+      r.expectMap(sbt, "pipeline.sbt", {"record_data", "padding", "miss", "hit", "callable"});
   if (sbt_ok) {
     if (auto v = YamlReader::get(sbt, "record_data"); v.IsDefined()) parseRecordDataBytes(r, v, p);
     if (auto v = YamlReader::get(sbt, "padding"); v.IsDefined()) parsePadding(r, v, p.sbt_padding);
@@ -153,7 +161,8 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
       checkDataFits(r, v, "pipeline.raygen_data", words->size(), p.sbt_record_data);
       p.raygen_data = *words;
     }
-  if (auto v = YamlReader::get(n, "miss"); v.IsDefined()) parsePrograms(r, v, "pipeline.miss", p.miss);
+  if (auto v = YamlReader::get(n, "miss"); v.IsDefined())
+    parsePrograms(r, v, "pipeline.miss", p.miss);
   if (auto v = YamlReader::get(n, "hit_groups"); v.IsDefined()) parseHitGroups(r, v, p.hit_groups);
   if (auto v = YamlReader::get(n, "callables"); v.IsDefined())
     parsePrograms(r, v, "pipeline.callables", p.callables);
@@ -173,7 +182,8 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
   }
   if (auto v = YamlReader::get(sbt, "callable"); v.IsDefined()) {
     p.sbt_callable.clear();
-    parseSbtRegion(r, v, "pipeline.sbt.callable", p.callables.size(), "callable", k, p.sbt_callable);
+    parseSbtRegion(r, v, "pipeline.sbt.callable", p.callables.size(), "callable", k,
+                   p.sbt_callable);
   }
 }
 

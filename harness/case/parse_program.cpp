@@ -8,7 +8,8 @@ namespace {
 
 bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt& s);
 
-bool parseBlock(YamlReader& r, const YAML::Node& n, const std::string& field, std::vector<Stmt>& out) {
+bool parseBlock(YamlReader& r, const YAML::Node& n, const std::string& field,
+                std::vector<Stmt>& out) {
   if (n.IsNull()) return true;
   if (!r.expectSeq(n, field)) return false;
   bool ok = true;
@@ -29,7 +30,10 @@ bool parseAssigns(YamlReader& r, const YAML::Node& n, const std::string& field,
     const std::string name = it->first.Scalar();
     bool known = false;
     for (const char* a : allowed) known = known || name == a;
-    if (!known) { ok = false; continue; }
+    if (!known) {
+      ok = false;
+      continue;
+    }
     Expr e;
     ok = parseExpr(r, it->second, field + "." + name, e) && ok;
     s.assigns.emplace_back(name, std::move(e));
@@ -57,10 +61,14 @@ bool parseRecord(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt&
   for (size_t i = 0; i < v.size(); ++i) {
     const std::string fi = f + "[" + std::to_string(i) + "]";
     auto name = r.string(v[i], fi);
-    if (!name) { ok = false; continue; }
+    if (!name) {
+      ok = false;
+      continue;
+    }
     if (!findBuiltin(*name)) {
-      r.error(v[i], fi, "record: [" + *name + "] needs a built-in named '" + *name +
-                            "'; write record: {" + *name + ": EXPR}");
+      r.error(v[i], fi,
+              "record: [" + *name + "] needs a built-in named '" + *name + "'; write record: {" +
+                  *name + ": EXPR}");
       ok = false;
       continue;
     }
@@ -76,15 +84,23 @@ bool parseRecord(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt&
 bool parseTrace(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
   s.kind = Stmt::Kind::Trace;
   if (v.IsNull()) return true;
-  if (!r.expectMap(v, f, {"origin", "direction", "tmin", "tmax", "flags", "cull_mask", "sbt_offset",
-                          "sbt_stride", "miss"}))
+  if (!r.expectMap(v, f,
+                   {"origin", "direction", "tmin", "tmax", "flags", "cull_mask", "sbt_offset",
+                    "sbt_stride", "miss"}))
     return false;
   TraceArgs& t = s.trace;
-  struct Slot { const char* key; std::vector<Expr>* exprs; };
-  const Slot slots[] = {{"origin", &t.origin},         {"direction", &t.direction},
-                        {"tmin", &t.tmin},             {"tmax", &t.tmax},
-                        {"flags", &t.flags},           {"cull_mask", &t.cull_mask},
-                        {"sbt_offset", &t.sbt_offset}, {"sbt_stride", &t.sbt_stride},
+  struct Slot {
+    const char* key;
+    std::vector<Expr>* exprs;
+  };
+  const Slot slots[] = {{"origin", &t.origin},
+                        {"direction", &t.direction},
+                        {"tmin", &t.tmin},
+                        {"tmax", &t.tmax},
+                        {"flags", &t.flags},
+                        {"cull_mask", &t.cull_mask},
+                        {"sbt_offset", &t.sbt_offset},
+                        {"sbt_stride", &t.sbt_stride},
                         {"miss", &t.miss}};
   bool ok = true;
   for (const Slot& slot : slots) {
@@ -95,7 +111,10 @@ bool parseTrace(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& 
     if (std::string(slot.key) == "flags" && a.IsSequence()) {
       // A list of ray flag names is a Uint literal.
       auto bits = r.flags(a, fa, rayFlagNames());
-      if (!bits) { ok = false; continue; }
+      if (!bits) {
+        ok = false;
+        continue;
+      }
       e.kind = Expr::Kind::Literal;
       e.type = ValueType::Uint;
       e.literal = {static_cast<double>(*bits)};
@@ -146,16 +165,24 @@ bool parseIf(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt&
   s.kind = Stmt::Kind::If;
   if (!r.expectMap(n, field, {"if", "then", "else"})) return false;
   bool ok = parseExpr(r, YamlReader::get(n, "if"), field + ".if", s.cond);
-  if (auto t = YamlReader::get(n, "then"); t.IsDefined()) ok = parseBlock(r, t, field + ".then", s.then_) && ok;
-  if (auto e = YamlReader::get(n, "else"); e.IsDefined()) ok = parseBlock(r, e, field + ".else", s.else_) && ok;
+  if (auto t = YamlReader::get(n, "then"); t.IsDefined())
+    ok = parseBlock(r, t, field + ".then", s.then_) && ok;
+  if (auto e = YamlReader::get(n, "else"); e.IsDefined())
+    ok = parseBlock(r, e, field + ".else", s.else_) && ok;
   return ok;
 }
 
 bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt& s) {
   s.loc = r.loc(n, field);
   if (n.IsScalar()) {
-    if (n.Scalar() == "ignore") { s.kind = Stmt::Kind::Ignore; return true; }
-    if (n.Scalar() == "terminate") { s.kind = Stmt::Kind::Terminate; return true; }
+    if (n.Scalar() == "ignore") {
+      s.kind = Stmt::Kind::Ignore;
+      return true;
+    }
+    if (n.Scalar() == "terminate") {
+      s.kind = Stmt::Kind::Terminate;
+      return true;
+    }
     r.error(n, field, "unknown statement '" + n.Scalar() + "'");
     return false;
   }
@@ -207,7 +234,8 @@ bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stm
   }
   r.error(it->first, f,
           "unknown statement '" + key +
-              "' (count, record, payload, call_data, ignore, terminate, report, trace, call, light, if)");
+              "' (count, record, payload, call_data, ignore, terminate, report, trace, call, "
+              "light, if)");
   return false;
 }
 

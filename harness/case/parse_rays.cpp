@@ -12,8 +12,12 @@ namespace {
 
 // Reads the per-ray fields shared by the defaults and list entries.
 void parseRayFields(YamlReader& r, const YAML::Node& n, const std::string& field, Ray& ray) {
-  auto get = [&](const char* key) { return YamlReader::get(n, key); };
-  auto f = [&](const char* key) { return field.empty() ? std::string(key) : field + "." + key; };
+  auto get = [&](const char* key) {
+    return YamlReader::get(n, key);
+  };
+  auto f = [&](const char* key) {
+    return field.empty() ? std::string(key) : field + "." + key;
+  };
   // Non-finite and out-of-range values are allowed: they are R-UB robustness probes.
   if (auto v = get("tmin"); v.IsDefined())
     if (auto x = r.number(v, f("tmin"), true)) ray.tmin = static_cast<float>(*x);
@@ -63,7 +67,8 @@ void noteUndefinedRay(YamlReader& r, const YAML::Node& n, const std::string& fie
   if (bad_tmin) note("tmin", negativeOrNan("tmin", ray.tmin));
   if (bad_tmax) note("tmax", negativeOrNan("tmax", ray.tmax));
   if (!bad_tmin && !bad_tmax && (own_tmin || own_tmax) && ray.tmin > ray.tmax)
-    note(own_tmax ? "tmax" : "tmin", "tmax " + number(ray.tmax) + " is below tmin " + number(ray.tmin));
+    note(own_tmax ? "tmax" : "tmin",
+         "tmax " + number(ray.tmax) + " is below tmin " + number(ray.tmin));
 }
 
 std::optional<std::array<uint32_t, 2>> parseSize(YamlReader& r, const YAML::Node& n,
@@ -119,8 +124,9 @@ void parseCamera(YamlReader& r, const YAML::Node& n, Rays& rays) {
 void parseGrid(YamlReader& r, const YAML::Node& n, Rays& rays) {
   const std::string field = "rays.grid";
   if (!r.expectMap(n, field, {"size", "origin", "du", "dv", "direction"})) return;
-  bool ok = r.require(n, field, "size") & r.require(n, field, "origin") & r.require(n, field, "du") &
-            r.require(n, field, "dv") & r.require(n, field, "direction");
+  bool ok = r.require(n, field, "size") & r.require(n, field, "origin") &
+            r.require(n, field, "du") & r.require(n, field, "dv") &
+            r.require(n, field, "direction");
   if (!ok) return;
   auto size = parseSize(r, YamlReader::get(n, "size"), field + ".size");
   auto origin = r.numbers<3>(YamlReader::get(n, "origin"), field + ".origin");
@@ -151,8 +157,9 @@ void parseList(YamlReader& r, const YAML::Node& n, Rays& rays) {
     const std::string f = field + "[" + std::to_string(i) + "]";
     const YAML::Node item = n[i];
     Ray ray = rays.defaults;
-    if (r.expectMap(item, f, {"origin", "direction", "tmin", "tmax", "flags", "cull_mask",
-                              "sbt_offset", "sbt_stride", "miss"}) &&
+    if (r.expectMap(item, f,
+                    {"origin", "direction", "tmin", "tmax", "flags", "cull_mask", "sbt_offset",
+                     "sbt_stride", "miss"}) &&
         (r.require(item, f, "origin") & r.require(item, f, "direction"))) {
       auto o = r.numbers<3>(YamlReader::get(item, "origin"), f + ".origin", true);
       auto d = r.numbers<3>(YamlReader::get(item, "direction"), f + ".direction", true);
@@ -176,11 +183,15 @@ bool featureList(YamlReader& r, const YAML::Node& at, const std::string& f, AimS
   for (size_t i = 0; i < at.size(); ++i) {
     const auto name = r.string(at[i], f + "[" + std::to_string(i) + "]");
     if (!name) return false;
-    if (*name == "vertices") spec.vertices = true;
-    else if (*name == "edges") spec.edges = true;
-    else if (*name == "faces") spec.faces = true;
+    if (*name == "vertices")
+      spec.vertices = true;
+    else if (*name == "edges")
+      spec.edges = true;
+    else if (*name == "faces")
+      spec.faces = true;
     else {
-      r.error(at[i], f + "[" + std::to_string(i) + "]", "unknown feature '" + *name + "' (vertices, edges, faces)");
+      r.error(at[i], f + "[" + std::to_string(i) + "]",
+              "unknown feature '" + *name + "' (vertices, edges, faces)");
       return false;
     }
   }
@@ -189,27 +200,36 @@ bool featureList(YamlReader& r, const YAML::Node& at, const std::string& f, AimS
 
 void parseAim(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& rays) {
   const std::string field = "rays.aim";
-  if (!r.expectMap(n, field, {"instance", "geometry", "at", "edge_points", "offset", "direction_scale"}) ||
+  if (!r.expectMap(n, field,
+                   {"instance", "geometry", "at", "edge_points", "offset", "direction_scale"}) ||
       !r.require(n, field, "offset"))
     return;
   AimSpec spec;
-  auto get = [&](const char* key) { return YamlReader::get(n, key); };
+  auto get = [&](const char* key) {
+    return YamlReader::get(n, key);
+  };
   bool ok = true;
   auto uintField = [&](const char* key, uint32_t max, uint32_t& out) {
     if (!YamlReader::has(n, key)) return;
-    if (auto v = r.uint(get(key), field + "." + key, max)) out = *v;
-    else ok = false;
+    if (auto v = r.uint(get(key), field + "." + key, max))
+      out = *v;
+    else
+      ok = false;
   };
   uintField("instance", 0xFFFFFF, spec.instance);
   uintField("geometry", 0xFFFFFF, spec.geometry);
   uintField("edge_points", 64, spec.edge_points);
   if (YamlReader::has(n, "at") && !featureList(r, get("at"), field + ".at", spec)) ok = false;
-  if (auto o = r.numbers<3>(get("offset"), field + ".offset")) spec.offset = *o;
-  else ok = false;
+  if (auto o = r.numbers<3>(get("offset"), field + ".offset"))
+    spec.offset = *o;
+  else
+    ok = false;
   if (YamlReader::has(n, "direction_scale")) {
     auto s = r.number(get("direction_scale"), field + ".direction_scale");
-    if (s && *s > 0) spec.direction_scale = *s;
-    else if (s) r.error(get("direction_scale"), field + ".direction_scale", "must be positive");
+    if (s && *s > 0)
+      spec.direction_scale = *s;
+    else if (s)
+      r.error(get("direction_scale"), field + ".direction_scale", "must be positive");
     ok = ok && s && *s > 0;
   }
   if (!ok) return;
@@ -232,22 +252,27 @@ void parseAim(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& rays
 }  // namespace
 
 void parseRays(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& rays) {
-  if (!r.expectMap(n, "rays", {"camera", "grid", "list", "aim", "tmin", "tmax", "flags", "cull_mask",
-                               "sbt_offset", "sbt_stride", "miss"}))
+  if (!r.expectMap(n, "rays",
+                   {"camera", "grid", "list", "aim", "tmin", "tmax", "flags", "cull_mask",
+                    "sbt_offset", "sbt_stride", "miss"}))
     return;
   parseRayFields(r, n, "rays", rays.defaults);
   rays.defaults_loc = r.loc(n, "rays");
   noteUndefinedRay(r, n, "rays", rays.defaults, false);
-  const int forms = YamlReader::has(n, "camera") + YamlReader::has(n, "grid") + YamlReader::has(n, "list") +
-                    YamlReader::has(n, "aim");
+  const int forms = YamlReader::has(n, "camera") + YamlReader::has(n, "grid") +
+                    YamlReader::has(n, "list") + YamlReader::has(n, "aim");
   if (forms != 1) {
     r.error(n, "rays", "exactly one of camera, grid, list or aim is required");
     return;
   }
-  if (YamlReader::has(n, "camera")) parseCamera(r, YamlReader::get(n, "camera"), rays);
-  else if (YamlReader::has(n, "grid")) parseGrid(r, YamlReader::get(n, "grid"), rays);
-  else if (YamlReader::has(n, "aim")) parseAim(r, YamlReader::get(n, "aim"), scene, rays);
-  else parseList(r, YamlReader::get(n, "list"), rays);
+  if (YamlReader::has(n, "camera"))
+    parseCamera(r, YamlReader::get(n, "camera"), rays);
+  else if (YamlReader::has(n, "grid"))
+    parseGrid(r, YamlReader::get(n, "grid"), rays);
+  else if (YamlReader::has(n, "aim"))
+    parseAim(r, YamlReader::get(n, "aim"), scene, rays);
+  else
+    parseList(r, YamlReader::get(n, "list"), rays);
 }
 
 }  // namespace rayspec

@@ -27,10 +27,16 @@ std::optional<std::vector<uint32_t>> parseRecordData(YamlReader& r, const YAML::
     const std::string fi = sub + "[" + std::to_string(i) + "]";
     if (u) {
       auto v = r.uint(list[i], fi);
-      if (v) words.push_back(*v); else ok = false;
+      if (v)
+        words.push_back(*v);
+      else
+        ok = false;
     } else {
       auto v = r.number(list[i], fi, true);
-      if (!v) { ok = false; continue; }
+      if (!v) {
+        ok = false;
+        continue;
+      }
       const float x = static_cast<float>(*v);
       words.push_back(std::bit_cast<uint32_t>(x));
     }

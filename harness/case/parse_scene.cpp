@@ -18,9 +18,12 @@ bool parseTriangles(YamlReader& r, const YAML::Node& n, const std::string& field
   bool ok = true;
   for (size_t i = 0; i < verts.size(); ++i) {
     auto v = r.numbers<3>(verts[i], field + ".vertices[" + std::to_string(i) + "]", true);
-    if (!v) { ok = false; continue; }
-    g.vertices.push_back({static_cast<float>((*v)[0]), static_cast<float>((*v)[1]),
-                          static_cast<float>((*v)[2])});
+    if (!v) {
+      ok = false;
+      continue;
+    }
+    g.vertices.push_back(
+        {static_cast<float>((*v)[0]), static_cast<float>((*v)[1]), static_cast<float>((*v)[2])});
   }
   if (!ok) return false;
   const YAML::Node idx = YamlReader::get(n, "indices");
@@ -29,10 +32,14 @@ bool parseTriangles(YamlReader& r, const YAML::Node& n, const std::string& field
     for (size_t i = 0; i < idx.size(); ++i) {
       const std::string f = field + ".indices[" + std::to_string(i) + "]";
       auto v = r.uint(idx[i], f);
-      if (!v) { ok = false; continue; }
+      if (!v) {
+        ok = false;
+        continue;
+      }
       if (*v >= g.vertices.size()) {
-        r.error(idx[i], f, "index " + std::to_string(*v) + " is past the last vertex (" +
-                               std::to_string(g.vertices.size()) + " vertices)");
+        r.error(idx[i], f,
+                "index " + std::to_string(*v) + " is past the last vertex (" +
+                    std::to_string(g.vertices.size()) + " vertices)");
         ok = false;
       }
       g.indices.push_back(*v);
@@ -46,7 +53,8 @@ bool parseTriangles(YamlReader& r, const YAML::Node& n, const std::string& field
       ok = false;
     }
   } else if (g.vertices.size() % 3 != 0 || g.vertices.empty()) {
-    r.error(verts, field + ".vertices", "without indices, the vertex count must be a non-zero multiple of 3");
+    r.error(verts, field + ".vertices",
+            "without indices, the vertex count must be a non-zero multiple of 3");
     ok = false;
   }
   return ok;
@@ -63,7 +71,10 @@ bool parseAabbs(YamlReader& r, const YAML::Node& n, const std::string& field, Ge
   for (size_t i = 0; i < n.size(); ++i) {
     const std::string f = field + "[" + std::to_string(i) + "]";
     auto v = r.numbers<6>(n[i], f, true);
-    if (!v) { ok = false; continue; }
+    if (!v) {
+      ok = false;
+      continue;
+    }
     std::array<float, 6> box;
     for (int k = 0; k < 6; ++k) box[k] = static_cast<float>((*v)[k]);
     for (int k = 0; k < 3; ++k)
@@ -85,13 +96,17 @@ void parseGeometry(YamlReader& r, const YAML::Node& n, const std::string& field,
     r.error(n, field, "a geometry needs exactly one of 'triangles' or 'aabbs'");
     return;
   }
-  if (tri) parseTriangles(r, YamlReader::get(n, "triangles"), field + ".triangles", g);
-  else parseAabbs(r, YamlReader::get(n, "aabbs"), field + ".aabbs", g);
+  if (tri)
+    parseTriangles(r, YamlReader::get(n, "triangles"), field + ".triangles", g);
+  else
+    parseAabbs(r, YamlReader::get(n, "aabbs"), field + ".aabbs", g);
   if (auto f = YamlReader::get(n, "flags"); f.IsDefined())
     if (auto bits = r.flags(f, field + ".flags", geometryFlagNames())) g.flags = *bits;
   if (auto t = YamlReader::get(n, "transform"); t.IsDefined()) {
-    if (box) r.error(t, field + ".transform", "a geometry transform applies to triangles only");
-    else g.transform = parseTransform(r, t, field + ".transform");
+    if (box)
+      r.error(t, field + ".transform", "a geometry transform applies to triangles only");
+    else
+      g.transform = parseTransform(r, t, field + ".transform");
   }
 }
 
@@ -129,7 +144,8 @@ void parseBlases(YamlReader& r, const YAML::Node& n, Scene& scene) {
 void parseInstance(YamlReader& r, const YAML::Node& n, const std::string& field, Scene& scene,
                    Instance& inst) {
   inst.loc = r.loc(n, field);
-  if (!r.expectMap(n, field, {"blas", "transform", "mask", "custom_index", "sbt_offset", "flags"}) ||
+  if (!r.expectMap(n, field,
+                   {"blas", "transform", "mask", "custom_index", "sbt_offset", "flags"}) ||
       !r.require(n, field, "blas"))
     return;
   const YAML::Node b = YamlReader::get(n, "blas");

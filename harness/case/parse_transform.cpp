@@ -6,7 +6,8 @@
 
 namespace rayspec {
 
-std::optional<Transform> parseTransform(YamlReader& r, const YAML::Node& n, const std::string& field) {
+std::optional<Transform> parseTransform(YamlReader& r, const YAML::Node& n,
+                                        const std::string& field) {
   if (n.IsScalar() && n.Scalar() == "identity") return kIdentity;
   if (n.IsSequence()) {
     auto v = r.numbers<12>(n, field);
@@ -23,11 +24,17 @@ std::optional<Transform> parseTransform(YamlReader& r, const YAML::Node& n, cons
   TransformParts parts;
   bool ok = true;
   if (auto t = YamlReader::get(n, "translate"); t.IsDefined()) {
-    if (auto v = r.numbers<3>(t, field + ".translate")) parts.translate = *v; else ok = false;
+    if (auto v = r.numbers<3>(t, field + ".translate"))
+      parts.translate = *v;
+    else
+      ok = false;
   }
   if (auto s = YamlReader::get(n, "scale"); s.IsDefined()) {
     if (s.IsSequence()) {
-      if (auto v = r.numbers<3>(s, field + ".scale")) parts.scale = *v; else ok = false;
+      if (auto v = r.numbers<3>(s, field + ".scale"))
+        parts.scale = *v;
+      else
+        ok = false;
     } else if (auto v = r.number(s, field + ".scale")) {
       parts.scale = {*v, *v, *v};
     } else {

@@ -10,10 +10,10 @@
 namespace rayspec {
 
 struct FanSpec {
-  uint32_t triangles = 8;                // at least 3
-  double radius = 1;                     // of the rim
-  std::array<double, 3> center{0, 0, 0}; // the fan lies in the z = center.z plane
-  uint64_t seed = 0;                     // 0: a regular fan; else rim angles and radii jittered
+  uint32_t triangles = 8;                 // at least 3
+  double radius = 1;                      // of the rim
+  std::array<double, 3> center{0, 0, 0};  // the fan lies in the z = center.z plane
+  uint64_t seed = 0;                      // 0: a regular fan; else rim angles and radii jittered
 };
 
 // Vertex 0 is the centre, vertices 1..n the rim in counter-clockwise order

@@ -12,9 +12,12 @@ void makeTriangleGrid(uint32_t nx, uint32_t ny, std::array<double, 2> size,
     for (uint32_t i = 0; i <= nx; ++i) {
       const double x = center[0] - size[0] / 2 + size[0] * i / nx;
       const double y = center[1] - size[1] / 2 + size[1] * j / ny;
-      out.vertices.push_back({static_cast<float>(x), static_cast<float>(y), static_cast<float>(center[2])});
+      out.vertices.push_back(
+          {static_cast<float>(x), static_cast<float>(y), static_cast<float>(center[2])});
     }
-  auto v = [&](uint32_t i, uint32_t j) { return j * (nx + 1) + i; };
+  auto v = [&](uint32_t i, uint32_t j) {
+    return j * (nx + 1) + i;
+  };
   for (uint32_t j = 0; j < ny; ++j)
     for (uint32_t i = 0; i < nx; ++i) {
       out.indices.insert(out.indices.end(), {v(i, j), v(i + 1, j), v(i + 1, j + 1)});

@@ -14,7 +14,7 @@ struct TriangulationSpec {
   std::array<double, 2> size{1, 1};
   std::array<double, 3> center{0, 0, 0};  // in the z = center.z plane
   uint64_t seed = 1;
-  double jitter = 0.25;                   // at most 0.25 (of a cell): every cell stays convex
+  double jitter = 0.25;  // at most 0.25 (of a cell): every cell stays convex
 };
 
 // The grid of case/triangle_grid.h (same vertex order) with every vertex

@@ -1,4 +1,4 @@
-// Typed reads from yaml-cpp nodes; every problem becomes a CaseError.
+// Typed reads from yaml-cpp nodes; every problem becomes an Error (base/error.h).
 #include "case/yaml_reader.h"
 
 #include <cerrno>
@@ -27,10 +27,14 @@ bool parseUintText(const std::string& s, uint64_t& out) {
   for (size_t i = start; i < s.size(); ++i) {
     int d;
     char c = s[i];
-    if (c >= '0' && c <= '9') d = c - '0';
-    else if (base == 16 && c >= 'a' && c <= 'f') d = c - 'a' + 10;
-    else if (base == 16 && c >= 'A' && c <= 'F') d = c - 'A' + 10;
-    else return false;
+    if (c >= '0' && c <= '9')
+      d = c - '0';
+    else if (base == 16 && c >= 'a' && c <= 'f')
+      d = c - 'a' + 10;
+    else if (base == 16 && c >= 'A' && c <= 'F')
+      d = c - 'A' + 10;
+    else
+      return false;
     if (v > (std::numeric_limits<uint64_t>::max() - d) / base) return false;
     v = v * base + d;
   }
@@ -98,7 +102,8 @@ void YamlReader::error(const SourceLoc& l, const std::string& message) {
 
 void YamlReader::checkDuplicateKeys(const YAML::Node& n, const std::string& field) {
   if (n.IsSequence()) {
-    for (size_t i = 0; i < n.size(); ++i) checkDuplicateKeys(n[i], field + "[" + std::to_string(i) + "]");
+    for (size_t i = 0; i < n.size(); ++i)
+      checkDuplicateKeys(n[i], field + "[" + std::to_string(i) + "]");
     return;
   }
   if (!n.IsMap()) return;
@@ -123,7 +128,9 @@ YAML::Node YamlReader::get(const YAML::Node& n, const char* key) {
   return YAML::Node(YAML::NodeType::Undefined);
 }
 
-bool YamlReader::has(const YAML::Node& n, const char* key) { return get(n, key).IsDefined(); }
+bool YamlReader::has(const YAML::Node& n, const char* key) {
+  return get(n, key).IsDefined();
+}
 
 bool YamlReader::expectMap(const YAML::Node& n, const std::string& field,
                            std::initializer_list<const char*> allowed) {
@@ -157,7 +164,8 @@ bool YamlReader::expectSeq(const YAML::Node& n, const std::string& field) {
 
 bool YamlReader::require(const YAML::Node& n, const std::string& field, const char* key) {
   if (has(n, key)) return true;
-  error(n, field.empty() ? key : field + "." + key, std::string("missing required key '") + key + "'");
+  error(n, field.empty() ? key : field + "." + key,
+        std::string("missing required key '") + key + "'");
   return false;
 }
 
@@ -170,7 +178,8 @@ std::optional<std::string> YamlReader::string(const YAML::Node& n, const std::st
   return n.Scalar();
 }
 
-std::optional<uint32_t> YamlReader::uint(const YAML::Node& n, const std::string& field, uint64_t max) {
+std::optional<uint32_t> YamlReader::uint(const YAML::Node& n, const std::string& field,
+                                         uint64_t max) {
   last_field_ = field;
   uint64_t v = 0;
   if (!isPlainScalar(n) || !parseUintText(n.Scalar(), v)) {
@@ -205,8 +214,9 @@ std::optional<double> YamlReader::number(const YAML::Node& n, const std::string&
   return v;
 }
 
-std::optional<uint32_t> YamlReader::flags(const YAML::Node& n, const std::string& field,
-                                          const std::vector<std::pair<const char*, uint32_t>>& table) {
+std::optional<uint32_t> YamlReader::flags(
+    const YAML::Node& n, const std::string& field,
+    const std::vector<std::pair<const char*, uint32_t>>& table) {
   last_field_ = field;
   if (!expectSeq(n, field)) return std::nullopt;
   uint32_t bits = 0;
@@ -224,8 +234,9 @@ std::optional<uint32_t> YamlReader::flags(const YAML::Node& n, const std::string
     if (!found) {
       std::string list;
       for (const auto& entry : table) list += std::string(list.empty() ? "" : ", ") + entry.first;
-      error(item, f, "unknown flag '" + (item.IsScalar() ? item.Scalar() : std::string("?")) +
-                         "' (expected one of: " + list + ")");
+      error(item, f,
+            "unknown flag '" + (item.IsScalar() ? item.Scalar() : std::string("?")) +
+                "' (expected one of: " + list + ")");
       ok = false;
     }
   }

@@ -1,5 +1,5 @@
 // Internal to the case module: reading typed values from yaml-cpp nodes, with
-// every problem recorded as a CaseError at the node's position.
+// every problem recorded as an Error (base/error.h) at the node's position.
 #pragma once
 
 #include <array>
@@ -18,7 +18,7 @@ namespace rayspec {
 
 class YamlReader {
  public:
-  YamlReader(std::string file, std::vector<CaseError>& errors)
+  YamlReader(std::string file, std::vector<Error>& errors)
       : file_(std::move(file)), errors_(errors) {}
 
   const std::string& file() const { return file_; }
@@ -66,7 +66,10 @@ class YamlReader {
     bool ok = true;
     for (size_t i = 0; i < N; ++i) {
       auto v = number(n[i], field + "[" + std::to_string(i) + "]", allow_nonfinite);
-      if (v) out[i] = *v; else ok = false;
+      if (v)
+        out[i] = *v;
+      else
+        ok = false;
     }
     if (!ok) return std::nullopt;
     return out;
@@ -75,9 +78,10 @@ class YamlReader {
   std::optional<uint32_t> flags(const YAML::Node& n, const std::string& field,
                                 const std::vector<std::pair<const char*, uint32_t>>& table);
 
- // Undefined behaviour found where the values are constants (R-UB); the
+  // Undefined behaviour found where the values are constants (R-UB); the
   // caller decides (parse_case.cpp): an error, or kept in a robustness probe.
-  void undefinedBehaviour(const SourceLoc& loc, UndefinedReason reason, const std::string& message) {
+  void undefinedBehaviour(const SourceLoc& loc, UndefinedReason reason,
+                          const std::string& message) {
     undefined_.push_back({reason, loc, message});
   }
   const std::vector<StaticUndefined>& undefinedBehaviour() const { return undefined_; }
@@ -91,12 +95,12 @@ class YamlReader {
   std::set<std::string> bad_programs_;
   mutable std::string last_field_;
   std::string file_;
-  std::vector<CaseError>& errors_;
+  std::vector<Error>& errors_;
 };
 
 // Plain-scalar number syntax shared with expressions.
 bool isPlainScalar(const YAML::Node& n);
-bool parseUintText(const std::string& s, uint64_t& out);             // 12, 0xFF
+bool parseUintText(const std::string& s, uint64_t& out);               // 12, 0xFF
 bool parseFloatText(const std::string& s, double& out, bool& finite);  // 1.5, -2, .nan, -.inf
 
 }  // namespace rayspec

@@ -10,21 +10,23 @@
 
 #include "case/parse_case.h"
 #include "cli/commands.h"
-#include "results/file_name.h"
-#include "run/case_steps.h"
-#include "run/judge_case.h"
-#include "run/run_loop.h"
 #include "report/rule_catalog.h"
 #include "report/run_summary.h"
 #include "report/write_reports.h"
+#include "results/file_name.h"
 #include "results/image_files.h"
 #include "results/results_io.h"
+#include "run/case_steps.h"
+#include "run/judge_case.h"
+#include "run/run_loop.h"
 
 namespace rayspec {
 namespace fs = std::filesystem;
 namespace {
 
-bool isBundle(const fs::path& p) { return fs::exists(p / "results.json"); }
+bool isBundle(const fs::path& p) {
+  return fs::exists(p / "results.json");
+}
 
 struct Pair {
   std::string name;
@@ -36,12 +38,14 @@ std::vector<Pair> pairsOf(const fs::path& a, const fs::path& b) {
   std::vector<Pair> out;
   std::error_code ec;
   for (fs::recursive_directory_iterator it(a, ec), end; !ec && it != end; it.increment(ec)) {
-    if (it->path().filename() != "results.json" || it->path().parent_path().filename() != "device") continue;
+    if (it->path().filename() != "results.json" || it->path().parent_path().filename() != "device")
+      continue;
     const fs::path case_dir = it->path().parent_path().parent_path();
     const std::string name = case_dir.lexically_relative(a).generic_string();
     fs::path ambiguity = b / name / "model";
     if (!isBundle(ambiguity)) ambiguity = case_dir / "model";
-    out.push_back({name, case_dir / "device", b / name / "device", isBundle(ambiguity) ? ambiguity : fs::path()});
+    out.push_back({name, case_dir / "device", b / name / "device",
+                   isBundle(ambiguity) ? ambiguity : fs::path()});
   }
   std::sort(out.begin(), out.end(), [](const Pair& x, const Pair& y) { return x.name < y.name; });
   return out;
@@ -61,7 +65,9 @@ CaseOutcome compareOne(const Pair& p, const CompareOptions& opt, std::vector<std
   const std::string name = p.name.empty() ? a.case_name : p.name;
   // An unreadable bundle or case file is not the driver's fault: a CaseError.
   if (!error.empty()) return caseErrorOutcome(name, {}, "bundle", error);
-  if (!isBundle(p.b)) return failedOutcome(name, Status::NotSupported, "no reference: " + p.b.string() + " has no results");
+  if (!isBundle(p.b))
+    return failedOutcome(name, Status::NotSupported,
+                         "no reference: " + p.b.string() + " has no results");
   Results b = readResults(p.b.string(), &error);
   if (!error.empty()) return caseErrorOutcome(name, {}, "bundle", error);
   if (!p.ambiguity.empty()) {
@@ -74,7 +80,7 @@ CaseOutcome compareOne(const Pair& p, const CompareOptions& opt, std::vector<std
   if (found) parsed = loadCase(*found, opt.cases_dir);
   if (!parsed.value) {
     std::string message = "cannot re-read the case file of " + a.case_name + " (" + file + ")";
-    for (const CaseError& e : parsed.errors) message += "; " + e.format();
+    for (const Error& e : parsed.errors) message += "; " + e.format();
     return caseErrorOutcome(name, {}, "case-file", message);
   }
   Case c = *parsed.value;
@@ -96,12 +102,16 @@ CaseOutcome compareOne(const Pair& p, const CompareOptions& opt, std::vector<std
 int runCompare(const CompareOptions& opt) {
   for (const std::string& side : {opt.a, opt.b})
     if (!fs::is_directory(side)) {
-      std::fprintf(stderr, "rayspec compare: %s is not a folder (a results bundle or a run folder)\n", side.c_str());
+      std::fprintf(stderr,
+                   "rayspec compare: %s is not a folder (a results bundle or a run folder)\n",
+                   side.c_str());
       return kExitSetup;
     }
   const std::vector<Pair> pairs = pairsOf(opt.a, opt.b);
   if (pairs.empty()) {
-    std::fprintf(stderr, "rayspec compare: %s holds no results (no results.json, no <case>/device/)\n", opt.a.c_str());
+    std::fprintf(stderr,
+                 "rayspec compare: %s holds no results (no results.json, no <case>/device/)\n",
+                 opt.a.c_str());
     return kExitSetup;
   }
   RunInfo info;
@@ -130,7 +140,8 @@ int runCompare(const CompareOptions& opt) {
   std::printf("Reports: %s/report.html, results.csv, junit.xml, summary.json\n", opt.out.c_str());
   if (summary.failed()) return kExitFailing;
   if (summary.allNotSupported()) {
-    std::fprintf(stderr, "rayspec compare: nothing was compared: no case of %s has a counterpart in %s\n",
+    std::fprintf(stderr,
+                 "rayspec compare: nothing was compared: no case of %s has a counterpart in %s\n",
                  opt.a.c_str(), opt.b.c_str());
     return kExitNothingCompared;
   }

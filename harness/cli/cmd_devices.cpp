@@ -16,7 +16,8 @@ namespace {
 std::string shellWord(const std::string& s) {
   bool plain = !s.empty();
   for (char c : s)
-    plain = plain && (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '/' || c == '-');
+    plain = plain && (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' ||
+                      c == '/' || c == '-');
   if (plain) return s;
   std::string q = "'";
   for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -31,24 +32,30 @@ void printLimits(const DeviceInfo& d) {
   std::printf("        maxRayHitAttributeSize         %u\n", d.max_ray_hit_attribute_size);
   std::printf("        maxShaderGroupStride           %u\n", d.max_shader_group_stride);
   std::printf("        maxRayDispatchInvocationCount  %u\n", d.max_ray_dispatch_invocation_count);
-  std::printf("        accelerationStructureHostCommands %s\n", d.acceleration_structure_host_commands ? "yes" : "no");
+  std::printf("        accelerationStructureHostCommands %s\n",
+              d.acceleration_structure_host_commands ? "yes" : "no");
 }
 
 // One manifest's devices; returns how many are usable.
 int printProbe(const IcdProbe& p) {
   std::printf("ICD %s (library %s%s%s)\n", p.manifest.path.c_str(), p.manifest.library_path.c_str(),
               p.manifest.api_version.empty() ? "" : ", Vulkan ", p.manifest.api_version.c_str());
-  if (p.devices.empty()) std::printf("    NOT USABLE: %s\n", p.failure.empty() ? "no physical device" : p.failure.c_str());
+  if (p.devices.empty())
+    std::printf("    NOT USABLE: %s\n",
+                p.failure.empty() ? "no physical device" : p.failure.c_str());
   int usable = 0;
   for (const DeviceInfo& d : p.devices) {
     const DeviceUsability u = deviceUsability(d);
-    std::printf("    [%u] %s: %s%s\n", d.index, d.name.c_str(), u == DeviceUsability::Usable ? "USABLE" : "NOT USABLE: ",
+    std::printf("    [%u] %s: %s%s\n", d.index, d.name.c_str(),
+                u == DeviceUsability::Usable ? "USABLE" : "NOT USABLE: ",
                 u == DeviceUsability::Usable ? "" : usabilityReason(u, d).c_str());
-    std::printf("        driver %s (%s), Vulkan %s\n", d.driver_name.empty() ? "?" : d.driver_name.c_str(),
-                d.driver_info.c_str(), d.api_version.c_str());
+    std::printf("        driver %s (%s), Vulkan %s\n",
+                d.driver_name.empty() ? "?" : d.driver_name.c_str(), d.driver_info.c_str(),
+                d.api_version.c_str());
     if (u != DeviceUsability::Usable) continue;
     ++usable;
-    std::printf("        select: --icd %s --device %s\n", shellWord(p.manifest.path).c_str(), shellWord(d.name).c_str());
+    std::printf("        select: --icd %s --device %s\n", shellWord(p.manifest.path).c_str(),
+                shellWord(d.name).c_str());
     printLimits(d);
   }
   return usable;
@@ -58,7 +65,8 @@ int printProbe(const IcdProbe& p) {
 
 int runDevices(const DevicesOptions& opt) {
   const IcdSelection selection = useIcdFiles(opt.icd_files);
-  for (const std::string& note : selection.notes) std::fprintf(stderr, "rayspec devices: %s\n", note.c_str());
+  for (const std::string& note : selection.notes)
+    std::fprintf(stderr, "rayspec devices: %s\n", note.c_str());
   if (!selection.error.empty()) {
     std::fprintf(stderr, "rayspec devices: %s\n", selection.error.c_str());
     return 2;
@@ -69,16 +77,19 @@ int runDevices(const DevicesOptions& opt) {
   std::printf("Driver manifests from %s%s: %s\n\n", icdSourceName(search.source).c_str(),
               opt.icd_files.empty() ? "" : " (--icd)", places.c_str());
   int usable = 0;
-  for (const IcdManifest& m : search.manifests) usable += printProbe(probeIcd(m, ChildLimits{kProbeSeconds, 0}));
+  for (const IcdManifest& m : search.manifests)
+    usable += printProbe(probeIcd(m, ChildLimits{kProbeSeconds, 0}));
   for (const std::string& e : search.errors) std::printf("NOT USABLE: %s\n", e.c_str());
   const size_t manifests = search.manifests.size() + search.errors.size();
   if (usable == 0) {
-    std::printf("\nNo usable device (Vulkan 1.2 with ray tracing pipelines and acceleration structures) through %zu "
-                "driver manifest%s.\n", manifests, manifests == 1 ? "" : "s");
+    std::printf(
+        "\nNo usable device (Vulkan 1.2 with ray tracing pipelines and acceleration structures) "
+        "through %zu driver manifest%s.\n",
+        manifests, manifests == 1 ? "" : "s");
     return 1;
   }
-  std::printf("\n%d usable device%s through %zu driver manifest%s.\n", usable, usable == 1 ? "" : "s", manifests,
-              manifests == 1 ? "" : "s");
+  std::printf("\n%d usable device%s through %zu driver manifest%s.\n", usable,
+              usable == 1 ? "" : "s", manifests, manifests == 1 ? "" : "s");
   return 0;
 }
 

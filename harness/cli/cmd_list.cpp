@@ -18,7 +18,8 @@ int runList(const ListOptions& opt) {
   }
   const std::vector<CaseFile> files = findCases(opt.cases_dir, opt.filter);
   if (files.empty()) {
-    std::fprintf(stderr, "rayspec list: no case matches '%s' in %s\n", opt.filter.c_str(), opt.cases_dir.c_str());
+    std::fprintf(stderr, "rayspec list: no case matches '%s' in %s\n", opt.filter.c_str(),
+                 opt.cases_dir.c_str());
     return 2;
   }
   const std::vector<std::string> labels = ruleLabels(catalog);
@@ -26,7 +27,7 @@ int runList(const ListOptions& opt) {
   int bad = 0;
   for (const CaseFile& f : files) {
     const ParseResult parsed = loadCase(f, opt.cases_dir, &labels);
-    for (const CaseError& e : parsed.errors) std::fprintf(stderr, "%s\n", e.format().c_str());
+    for (const Error& e : parsed.errors) std::fprintf(stderr, "%s\n", e.format().c_str());
     if (!parsed.value) {
       ++bad;
       continue;
@@ -47,7 +48,9 @@ int runList(const ListOptions& opt) {
     }
     std::printf("%zu cases\n", cases.size());
   }
-  if (bad) std::fprintf(stderr, "rayspec list: %d case%s do not parse (above)\n", bad, bad == 1 ? "" : "s");
+  if (bad)
+    std::fprintf(stderr, "rayspec list: %d case%s do not parse (above)\n", bad,
+                 bad == 1 ? "" : "s");
   return status;
 }
 

@@ -31,7 +31,8 @@ int runMerge(const MergeOptions& opt) {
   if (merged.run.info.interrupted)
     std::printf("INTERRUPTED: %zu of %zu planned cases ran\n", merged.run.outcomes.size(),
                 merged.run.info.planned_cases);
-  std::printf("Reports: %s/report.html, results.csv, failures.csv, junit.xml, summary.json\n", opt.out.c_str());
+  std::printf("Reports: %s/report.html, results.csv, failures.csv, junit.xml, summary.json\n",
+              opt.out.c_str());
   const int status = runExitStatus(summary, merged.run.info.planned_cases, true, 0);
   // A shard that stopped early: the cases it did not run are no pass.
   return merged.run.info.interrupted && status == kExitPass ? kExitFailing : status;

@@ -2,10 +2,10 @@
 #include <filesystem>
 
 #include "case/parse_case.h"
-#include "library/case_discovery.h"
 #include "cli/commands.h"
 #include "cli/describe_case.h"
 #include "glsl/generate_glsl.h"
+#include "library/case_discovery.h"
 #include "plan/plan.h"
 #include "program/builtins.h"
 #include "program/ops.h"
@@ -32,7 +32,8 @@ std::optional<CaseFile> caseToShow(const std::string& given, const std::string& 
   if (std::filesystem::is_regular_file(given, ec)) {
     std::vector<CaseFile> files = caseFilesFor(given, cases_dir);
     if (files.size() > 1) {
-      std::printf("%s is a sweep of %zu cases; showing the first (name one to see it):\n", given.c_str(), files.size());
+      std::printf("%s is a sweep of %zu cases; showing the first (name one to see it):\n",
+                  given.c_str(), files.size());
       for (const CaseFile& f : files) std::printf("  %s\n", f.name.c_str());
       std::printf("\n");
     }
@@ -58,16 +59,18 @@ int runShow(const ShowOptions& opt) {
   }
   const std::optional<CaseFile> file = caseToShow(opt.case_file, opt.cases_dir);
   if (!file) {
-    std::fprintf(stderr, "rayspec show: no such case file: '%s' (neither a file nor a case name under %s)\n",
-                 opt.case_file.c_str(), opt.cases_dir.c_str());
+    std::fprintf(
+        stderr, "rayspec show: no such case file: '%s' (neither a file nor a case name under %s)\n",
+        opt.case_file.c_str(), opt.cases_dir.c_str());
     return 2;
   }
   // Rule labels outside the catalog are errors, as in `rayspec run`.
   std::string catalog_error;
   const std::vector<std::string> catalog = ruleLabels(loadRuleCatalog(kRulesFile, &catalog_error));
-  if (!catalog_error.empty()) std::fprintf(stderr, "rayspec show: %s (rule labels not checked)\n", catalog_error.c_str());
+  if (!catalog_error.empty())
+    std::fprintf(stderr, "rayspec show: %s (rule labels not checked)\n", catalog_error.c_str());
   ParseResult parsed = loadCase(*file, opt.cases_dir, catalog_error.empty() ? &catalog : nullptr);
-  for (const CaseError& e : parsed.errors) std::fprintf(stderr, "%s\n", e.format().c_str());
+  for (const Error& e : parsed.errors) std::fprintf(stderr, "%s\n", e.format().c_str());
   if (!parsed.value) return 1;
   const Case& c = *parsed.value;
   const Plan plan = derivePlan(c);

@@ -22,7 +22,7 @@ struct ShowOptions {
 };
 
 struct CompareOptions {
-  std::string a, b;              // results bundles or run folders
+  std::string a, b;  // results bundles or run folders
   std::string out = "rayspec-compare";
   std::string cases_dir = RAYSPEC_SOURCE_DIR "/cases";
   std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
@@ -42,8 +42,8 @@ struct MergeOptions {
   std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
 };
 inline constexpr const char* kIcdOptionHelp =
-    "Vulkan driver manifest (ICD JSON) the loader may load; repeat it or separate files with ':'. Sets "
-    "VK_DRIVER_FILES and VK_ICD_FILENAMES, overriding the environment's";
+    "Vulkan driver manifest (ICD JSON) the loader may load; repeat it or separate files with ':'. "
+    "Sets VK_DRIVER_FILES and VK_ICD_FILENAMES, overriding the environment's";
 
 int runDevices(const DevicesOptions& opt);
 int runShow(const ShowOptions& opt);

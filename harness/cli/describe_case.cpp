@@ -17,7 +17,8 @@ size_t statementCount(const Program& p) {
   return n;
 }
 
-void describeRecords(std::ostringstream& s, const char* region, const std::vector<SbtRecord>& records) {
+void describeRecords(std::ostringstream& s, const char* region,
+                     const std::vector<SbtRecord>& records) {
   s << "  sbt " << region << ":";
   for (const SbtRecord& r : records) {
     s << ' ' << (r.group ? "group " + std::to_string(*r.group) : std::string("zero"));
@@ -41,22 +42,25 @@ std::string describeCase(const Case& c) {
     for (size_t g = 0; g < b.geometries.size(); ++g) {
       const Geometry& geo = b.geometries[g];
       s << "    geometry " << g << ": " << geo.primitiveCount()
-        << (geo.kind == Geometry::Kind::Triangles ? " triangles" : " aabbs") << ", flags " << hex(geo.flags)
-        << (geo.transform ? ", geometry transform" : "") << '\n';
+        << (geo.kind == Geometry::Kind::Triangles ? " triangles" : " aabbs") << ", flags "
+        << hex(geo.flags) << (geo.transform ? ", geometry transform" : "") << '\n';
     }
   }
   for (size_t i = 0; i < c.scene.instances.size(); ++i) {
     const Instance& in = c.scene.instances[i];
-    s << "  instance " << i << ": blas " << (in.blas ? c.scene.blases[*in.blas].name : std::string("null"))
-      << ", mask " << hex(in.mask) << ", custom " << in.custom_index << ", sbt offset " << in.sbt_offset
+    s << "  instance " << i << ": blas "
+      << (in.blas ? c.scene.blases[*in.blas].name : std::string("null")) << ", mask "
+      << hex(in.mask) << ", custom " << in.custom_index << ", sbt offset " << in.sbt_offset
       << ", flags " << hex(in.flags) << '\n';
   }
-  s << "Rays: " << c.rays.width << " x " << c.rays.height << " (" << c.rays.rays.size() << " rays), defaults tmin "
-    << c.rays.defaults.tmin << " tmax " << c.rays.defaults.tmax << " flags " << hex(c.rays.defaults.flags) << '\n';
+  s << "Rays: " << c.rays.width << " x " << c.rays.height << " (" << c.rays.rays.size()
+    << " rays), defaults tmin " << c.rays.defaults.tmin << " tmax " << c.rays.defaults.tmax
+    << " flags " << hex(c.rays.defaults.flags) << '\n';
   const Pipeline& p = c.pipeline;
   s << "Pipeline: max recursion " << p.max_recursion << ", flags " << hex(p.flags) << '\n';
   s << "  raygen: " << statementCount(p.raygen) << " statements\n";
-  for (size_t i = 0; i < p.miss.size(); ++i) s << "  miss " << i << ": " << statementCount(p.miss[i]) << " statements\n";
+  for (size_t i = 0; i < p.miss.size(); ++i)
+    s << "  miss " << i << ": " << statementCount(p.miss[i]) << " statements\n";
   for (size_t i = 0; i < p.hit_groups.size(); ++i) {
     const HitGroup& g = p.hit_groups[i];
     s << "  hit group " << i << ":";
@@ -69,8 +73,9 @@ std::string describeCase(const Case& c) {
     s << "  callable " << i << ": " << statementCount(p.callables[i]) << " statements\n";
   if (p.sbt_record_data != kMaxShaderRecordDataBytes || p.sbt_padding.miss || p.sbt_padding.hit ||
       p.sbt_padding.callable)
-    s << "  sbt record: handle + " << p.sbt_record_data << " data bytes + padding (miss " << p.sbt_padding.miss
-      << ", hit " << p.sbt_padding.hit << ", callable " << p.sbt_padding.callable << ")\n";
+    s << "  sbt record: handle + " << p.sbt_record_data << " data bytes + padding (miss "
+      << p.sbt_padding.miss << ", hit " << p.sbt_padding.hit << ", callable "
+      << p.sbt_padding.callable << ")\n";
   describeRecords(s, "miss", p.sbt_miss);
   describeRecords(s, "hit", p.sbt_hit);
   describeRecords(s, "callable", p.sbt_callable);
@@ -78,8 +83,8 @@ std::string describeCase(const Case& c) {
     // A robustness probe (R-UB): what it does that is undefined, found by the parser.
     s << "Undefined behaviour (R-UB probe: only survival is checked):\n";
     for (const StaticUndefined& u : c.static_undefined)
-      s << "  " << u.loc.file << ':' << u.loc.line << ':' << u.loc.column << ": " << u.loc.field << ": "
-        << u.message << " [" << undefinedReasonName(u.reason) << "]\n";
+      s << "  " << u.loc.file << ':' << u.loc.line << ':' << u.loc.column << ": " << u.loc.field
+        << ": " << u.message << " [" << undefinedReasonName(u.reason) << "]\n";
   }
   return s.str();
 }

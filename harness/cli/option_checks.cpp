@@ -15,8 +15,10 @@ std::string outputFolderProblem(const std::string& dir) {
   if (dir.empty()) return "the output folder is empty (give a folder)";
   std::error_code ec;
   const fs::path canonical = fs::weakly_canonical(fs::absolute(dir), ec);
-  if (!ec && canonical == canonical.root_path()) return "the output folder " + dir + " is the filesystem root";
-  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) return "the output folder " + dir + " is a file";
+  if (!ec && canonical == canonical.root_path())
+    return "the output folder " + dir + " is the filesystem root";
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    return "the output folder " + dir + " is a file";
   fs::create_directories(dir, ec);
   if (ec) return "the output folder " + dir + " cannot be created: " + ec.message();
   const fs::path probe = fs::path(dir) / ".rayspec-write-probe";
@@ -49,8 +51,8 @@ CLI::Validator memoryLimit() {
         const unsigned long long v = std::strtoull(bytes.c_str(), nullptr, 10);
         if (v == 0 || v >= kMinMemoryLimit) return {};
         return std::to_string(v >> 20) + " MiB is below " + std::to_string(kMinMemoryLimit >> 20) +
-               " MiB: a case side needs about that much to create its Vulkan device (validation layer on) or "
-               "the model's Embree device (0: no limit)";
+               " MiB: a case side needs about that much to create its Vulkan device (validation "
+               "layer on) or the model's Embree device (0: no limit)";
       },
       "BYTES");
 }
@@ -58,10 +60,12 @@ CLI::Validator memoryLimit() {
 CLI::Validator decimalSeed() {
   return CLI::Validator(
       [](const std::string& text) -> std::string {
-        const bool digits = !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+        const bool digits =
+            !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
         errno = 0;
         if (digits) (void)std::strtoull(text.c_str(), nullptr, 10);
-        if (!digits || errno == ERANGE) return "'" + text + "' is no seed (a decimal integer from 0 to 2^64-1)";
+        if (!digits || errno == ERANGE)
+          return "'" + text + "' is no seed (a decimal integer from 0 to 2^64-1)";
         return {};
       },
       "SEED");

@@ -7,8 +7,8 @@
 namespace rayspec {
 namespace {
 
-void addWrong(std::map<std::string, FindingBuilder>& wrongs, const std::string& key, const std::string& rule,
-              const std::string& message, uint32_t ray) {
+void addWrong(std::map<std::string, FindingBuilder>& wrongs, const std::string& key,
+              const std::string& rule, const std::string& message, uint32_t ray) {
   FindingBuilder& b = wrongs[key];
   if (b.finding.rule.empty()) b.finding = {Status::Fail, rule, message};
   b.addRay(ray);
@@ -52,7 +52,8 @@ bool sameForEveryAnswer(const Case& c, const std::string& field) {
       if (s.kind != Stmt::Kind::Record) return;
       for (const auto& [name, value] : s.assigns) {
         if (name != field) continue;
-        if (!values || (value.kind != Expr::Kind::Literal && !(value.kind == Expr::Kind::Builtin && value.name == "hit"))) {
+        if (!values || (value.kind != Expr::Kind::Literal &&
+                        !(value.kind == Expr::Kind::Builtin && value.name == "hit"))) {
           invariant = false;
           continue;
         }
@@ -71,7 +72,8 @@ bool sameForEveryAnswer(const Case& c, const std::string& field) {
     if (g.any_hit) visit(*g.any_hit, nullptr);
     if (g.intersection) visit(*g.intersection, nullptr);
   }
-  return invariant && hit_values.size() + miss_values.size() > 0 && hit_values.size() <= 1 && miss_values.size() <= 1;
+  return invariant && hit_values.size() + miss_values.size() > 0 && hit_values.size() <= 1 &&
+         miss_values.size() <= 1;
 }
 
 bool sameIdentity(const uint32_t* d, const uint32_t* m) {
@@ -92,51 +94,62 @@ bool tieOfEqualT(AmbiguityReason r) {
 
 }  // namespace
 
-void checkAmbiguousShared(const Case& c, const TraceShape& shape, const RayAmbiguity& a, const uint32_t* d,
-                          const uint32_t* m, const std::vector<const RecordField*>& fields, float t_bound,
+void checkAmbiguousShared(const Case& c, const TraceShape& shape, const RayAmbiguity& a,
+                          const uint32_t* d, const uint32_t* m,
+                          const std::vector<const RecordField*>& fields, float t_bound,
                           std::map<std::string, FindingBuilder>& wrongs) {
-  const std::string why = " on a numerically ambiguous ray (" + std::string(ambiguityReasonName(a.reason)) + ")";
+  const std::string why =
+      " on a numerically ambiguous ray (" + std::string(ambiguityReasonName(a.reason)) + ")";
   if (fieldWord(d, "raygen_runs") != fieldWord(m, "raygen_runs"))
-    addWrong(wrongs, "raygen_runs", "R-BUILTIN", "raygen did not run once per launch ray" + why, a.ray);
+    addWrong(wrongs, "raygen_runs", "R-BUILTIN", "raygen did not run once per launch ray" + why,
+             a.ray);
   if (shape.calls_fixed && fieldWord(d, "callable_runs") != fieldWord(m, "callable_runs"))
     addWrong(wrongs, "callable_runs", "R-CALLABLE",
-             "callables ran other than raygen's calls, which no answer of the trace changes" + why, a.ray);
+             "callables ran other than raygen's calls, which no answer of the trace changes" + why,
+             a.ray);
   if (!shape.single_trace) return;
   const uint32_t d_miss = fieldWord(d, "miss_runs"), d_chit = fieldWord(d, "closest_hit_runs");
   const uint32_t m_miss = fieldWord(m, "miss_runs"), m_chit = fieldWord(m, "closest_hit_runs");
-  const bool miss_legal = std::any_of(a.candidates.begin(), a.candidates.end(), [](const Candidate& k) { return !k.hit; });
+  const bool miss_legal = std::any_of(a.candidates.begin(), a.candidates.end(),
+                                      [](const Candidate& k) { return !k.hit; });
   const bool one_each = shape.hit_runs_closest_hit && shape.miss_runs_miss;
   if (one_each ? d_miss + d_chit != 1 : d_miss + d_chit > 1)
     addWrong(wrongs, "miss-xor-chit", "R-MISS-XOR-CHIT",
              std::string("the one trace ran ") + (one_each ? "not exactly one" : "more than one") +
                  " of miss and closest-hit" + why,
              a.ray);
-  if (d_miss && !miss_legal && shape.miss_runs_miss && d_chit == 0) return;  // checkAmbiguous: a miss no answer allows
+  if (d_miss && !miss_legal && shape.miss_runs_miss && d_chit == 0)
+    return;  // checkAmbiguous: a miss no answer allows
   if (d_chit && m_chit) {
     for (const char* f : {"primitive_id", "instance_id", "geometry_index"}) {
       const int i = recordFieldIndex(f);
       if (written(m, i) && !written(d, i) && everyClosestHitRecords(c, f))
         addWrong(wrongs, std::string("unwritten ") + f, "R-BUILTIN",
-                 std::string("closest-hit ran but left '") + f + "' unwritten, which every closest-hit records" + why,
+                 std::string("closest-hit ran but left '") + f +
+                     "' unwritten, which every closest-hit records" + why,
                  a.ray);
     }
   }
   const bool same_kind = (d_chit && m_chit) || (d_miss && m_miss && !d_chit && !m_chit);
   for (const RecordField* f : fields)
     if (same_kind && !f->automatic && written(d, recordFieldIndex(f->name)) &&
-        written(m, recordFieldIndex(f->name)) && sameForEveryAnswer(c, f->name) && !sameField(*f, d, m, t_bound))
+        written(m, recordFieldIndex(f->name)) && sameForEveryAnswer(c, f->name) &&
+        !sameField(*f, d, m, t_bound))
       addWrong(wrongs, std::string("every answer ") + f->name, "R-BUILTIN",
                std::string("per-ray field '") + f->name +
-                   "' differs from the model's, though every answer of the kind taken (hit or miss) writes it alike" +
+                   "' differs from the model's, though every answer of the kind taken (hit or "
+                   "miss) writes it alike" +
                    why,
                a.ray);
-  const bool same_answer = (d_chit && m_chit && sameIdentity(d, m)) || (d_miss && m_miss && !d_chit && !m_chit);
+  const bool same_answer =
+      (d_chit && m_chit && sameIdentity(d, m)) || (d_miss && m_miss && !d_chit && !m_chit);
   if (same_answer && answerDecidesRecord(c)) {
     for (const RecordField* f : fields)
       if (!sameField(*f, d, m, t_bound))
         addWrong(wrongs, std::string("same answer ") + f->name, "R-PREC",
                  std::string("per-ray field '") + f->name +
-                     "' differs from the model's where the device took the model's own answer" + why,
+                     "' differs from the model's where the device took the model's own answer" +
+                     why,
                  a.ray);
     return;
   }

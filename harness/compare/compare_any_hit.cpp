@@ -14,7 +14,8 @@ bool allNoDuplicateTriangles(const Case& c) {
   bool any = false;
   for (const Blas& b : c.scene.blases)
     for (const Geometry& g : b.geometries) {
-      if (g.kind != Geometry::Kind::Triangles || !(g.flags & kGeometryNoDuplicateAnyHit)) return false;
+      if (g.kind != Geometry::Kind::Triangles || !(g.flags & kGeometryNoDuplicateAnyHit))
+        return false;
       any = true;
     }
   return any;
@@ -35,14 +36,16 @@ bool allTriangles(const Case& c) {
 // exactly for the candidates every device must show it: those no nearer hit
 // was accepted before (in t order: every ignored one, and the one accepted).
 // Another order or a duplicate invocation only adds runs.
-void compareAnyHitMinimum(const Results& device, const Results& model, const std::set<uint32_t>& skip, Verdict& v) {
+void compareAnyHitMinimum(const Results& device, const Results& model,
+                          const std::set<uint32_t>& skip, Verdict& v) {
   const uint32_t words = recordWords(), ahit = findRecordField("any_hit_runs")->offset;
   FindingBuilder b;
   b.finding = {Status::Fail, "R-AHIT-CLOSEST",
-               "any-hit ran fewer times than the candidates every device must show it (the nearer ignored ones and "
-               "the closest hit's)"};
+               "any-hit ran fewer times than the candidates every device must show it (the nearer "
+               "ignored ones and the closest hit's)"};
   for (size_t i = 0; i < device.records.size() / words; ++i)
-    if (!skip.count(static_cast<uint32_t>(i)) && device.records[i * words + ahit] < model.records[i * words + ahit])
+    if (!skip.count(static_cast<uint32_t>(i)) &&
+        device.records[i * words + ahit] < model.records[i * words + ahit])
       b.addRay(static_cast<uint32_t>(i));
   b.flush(v);
 }
@@ -78,8 +81,10 @@ uint32_t noDuplicateSlots(const Case& c) {
                                               static_cast<uint32_t>(p));
         if (held & bit) shared |= bit;
         held |= bit;
-        if (judged) no_dup |= bit;
-        else shared |= bit;
+        if (judged)
+          no_dup |= bit;
+        else
+          shared |= bit;
       }
     }
   }
@@ -89,7 +94,8 @@ uint32_t noDuplicateSlots(const Case& c) {
 // R-AHIT-DUP per primitive: on a launch ray of one trace, any-hit never runs
 // twice on a primitive of a NO_DUPLICATE_ANY_HIT_INVOCATION geometry, whatever
 // the answer (ambiguous rays too).
-void compareAnyHitRepeats(const Case& c, const Results& device, const std::set<uint32_t>& undefined, Verdict& v) {
+void compareAnyHitRepeats(const Case& c, const Results& device, const std::set<uint32_t>& undefined,
+                          Verdict& v) {
   const uint32_t slots = noDuplicateSlots(c);
   if (!slots || !traceShape(c).single_trace) return;
   const uint32_t words = recordWords(), repeats = findRecordField("any_hit_repeats")->offset;
@@ -102,11 +108,13 @@ void compareAnyHitRepeats(const Case& c, const Results& device, const std::set<u
     ++rays;
     if (device.records[i * words + repeats] & slots) b.addRay(static_cast<uint32_t>(i));
   }
-  if (b.finding.ray_count) b.flush(v);
+  if (b.finding.ray_count)
+    b.flush(v);
   else if (rays)
-    v.add({Status::Pass, "R-AHIT-DUP",
-           "any-hit ran at most once per NO_DUPLICATE_ANY_HIT_INVOCATION primitive on " + std::to_string(rays) +
-               " rays",
+    v.add({Status::Pass,
+           "R-AHIT-DUP",
+           "any-hit ran at most once per NO_DUPLICATE_ANY_HIT_INVOCATION primitive on " +
+               std::to_string(rays) + " rays",
            {},
            0});
 }
@@ -124,7 +132,8 @@ void compareAnyHitRuns(const Case& c, const Results& device, const Results& mode
   }
   if (!allNoDuplicateTriangles(c)) return;
   const uint32_t words = recordWords();
-  const uint32_t ahit = findRecordField("any_hit_runs")->offset, chit = findRecordField("closest_hit_runs")->offset,
+  const uint32_t ahit = findRecordField("any_hit_runs")->offset,
+                 chit = findRecordField("closest_hit_runs")->offset,
                  isect = findRecordField("intersection_runs")->offset;
   const auto ambiguous = ambiguityByRay(model);
   // A double hit (R-WATERTIGHT, a "should"): on a ray through a shared edge
@@ -133,11 +142,13 @@ void compareAnyHitRuns(const Case& c, const Results& device, const Results& mode
   // where the mesh is closed); a watertight device runs it for one of them,
   // so at most (model - (h - 1)) times in all.
   FindingBuilder doubled;
-  doubled.finding = {Status::QualityWarning, "R-WATERTIGHT",
-                     "double hit: any-hit ran for more than one of the triangles sharing an edge or vertex"};
+  doubled.finding = {
+      Status::QualityWarning, "R-WATERTIGHT",
+      "double hit: any-hit ran for more than one of the triangles sharing an edge or vertex"};
   FindingBuilder b;
   b.finding = {Status::Fail, "R-AHIT-DUP",
-               "any-hit ran more often than once per primitive the ray crosses (NO_DUPLICATE_ANY_HIT_INVOCATION)"};
+               "any-hit ran more often than once per primitive the ray crosses "
+               "(NO_DUPLICATE_ANY_HIT_INVOCATION)"};
   size_t checked = 0;
   for (size_t i = 0; i < device.records.size() / words; ++i) {
     const uint32_t* d = &device.records[i * words];
@@ -147,7 +158,8 @@ void compareAnyHitRuns(const Case& c, const Results& device, const Results& mode
       // Only where the triangles really share the edge, or close a fan around
       // the vertex: on the outer border of a mesh hitting two is no rule's break.
       const SharedCrossing s = sharedCrossing(c, *it->second);
-      if (s.triangles && d[ahit] + s.model_hits > m[ahit] + 1) doubled.addRay(static_cast<uint32_t>(i));
+      if (s.triangles && d[ahit] + s.model_hits > m[ahit] + 1)
+        doubled.addRay(static_cast<uint32_t>(i));
       continue;
     }
     ++checked;
@@ -155,11 +167,16 @@ void compareAnyHitRuns(const Case& c, const Results& device, const Results& mode
   }
   doubled.flush(v);
   if (b.finding.ray_count) {
-    b.finding.message += " on " + std::to_string(b.finding.ray_count) + " of " + std::to_string(checked) + " rays";
+    b.finding.message +=
+        " on " + std::to_string(b.finding.ray_count) + " of " + std::to_string(checked) + " rays";
     b.flush(v);
   } else if (checked) {
-    v.add({Status::Pass, "R-AHIT-DUP",
-           "any_hit_runs at most once per crossed primitive on " + std::to_string(checked) + " rays", {}, 0});
+    v.add(
+        {Status::Pass,
+         "R-AHIT-DUP",
+         "any_hit_runs at most once per crossed primitive on " + std::to_string(checked) + " rays",
+         {},
+         0});
   }
 }
 

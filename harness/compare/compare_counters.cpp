@@ -18,14 +18,16 @@ uint64_t runTotal(const Results& r, const std::string& run_field) {
 
 // A counter that follows one stage's run count must agree with the device's
 // own per-ray records of that count, on any device that records both.
-void checkAgainstRecords(const Case& c, const std::string& name, const CounterSource& src, uint64_t d, const Results& device,
-                         Verdict& v) {
+void checkAgainstRecords(const Case& c, const std::string& name, const CounterSource& src,
+                         uint64_t d, const Results& device, Verdict& v) {
   const uint64_t runs = runTotal(device, src.run_field);
   if (d == runs * src.per_run) return;
-  v.add({Status::Fail, findingRule(rulesEvidencedByCounter(c, name), c.rules, "counter"),
-         "counter '" + name + "' is " + std::to_string(d) + ", but the device's own records say " + src.run_field +
-             " totals " + std::to_string(runs) + " and each run counts it " + std::to_string(src.per_run) +
-             " time(s): " + std::to_string(runs * src.per_run) + " (the counter and the records disagree)",
+  v.add({Status::Fail,
+         findingRule(rulesEvidencedByCounter(c, name), c.rules, "counter"),
+         "counter '" + name + "' is " + std::to_string(d) + ", but the device's own records say " +
+             src.run_field + " totals " + std::to_string(runs) + " and each run counts it " +
+             std::to_string(src.per_run) + " time(s): " + std::to_string(runs * src.per_run) +
+             " (the counter and the records disagree)",
          {},
          0});
 }
@@ -45,8 +47,9 @@ uint64_t counterSlack(const Case& c, const std::string& name, const Results& mod
   const auto src = sources.find(name);
   const TraceShape shape = traceShape(c);
   if (src != sources.end() && src->second.run_field == "raygen_runs") return 0;
-  const bool follows_outcome = src != sources.end() && (src->second.run_field == "miss_runs" ||
-                                                        src->second.run_field == "closest_hit_runs");
+  const bool follows_outcome =
+      src != sources.end() &&
+      (src->second.run_field == "miss_runs" || src->second.run_field == "closest_hit_runs");
   if (follows_outcome && shape.single_trace) {
     uint64_t rays = 0;
     for (const RayAmbiguity& a : model.ambiguous) {
@@ -63,7 +66,8 @@ uint64_t counterSlack(const Case& c, const std::string& name, const Results& mod
   return model.ambiguous.size();
 }
 
-void compareCounters(const Case& c, const Results& device, const Results& model, size_t undefined_rays, Verdict& v) {
+void compareCounters(const Case& c, const Results& device, const Results& model,
+                     size_t undefined_rays, Verdict& v) {
   auto modes = counterModes(c);
   const std::map<std::string, CounterSource> sources = counterSources(c);
   // R-UB: what a ray with undefined behaviour counts is anyone's guess.
@@ -76,13 +80,15 @@ void compareCounters(const Case& c, const Results& device, const Results& model,
     const auto m_it = model.counters.find(name);
     const uint64_t d = d_it == device.counters.end() ? 0 : d_it->second;
     const uint64_t m = m_it == model.counters.end() ? 0 : m_it->second;
-    if (!undefined_rays && sources.count(name)) checkAgainstRecords(c, name, sources.at(name), d, device, v);
+    if (!undefined_rays && sources.count(name))
+      checkAgainstRecords(c, name, sources.at(name), d, device, v);
     Finding f;
     f.rule = findingRule(rulesEvidencedByCounter(c, name), c.rules, "counter");
     const std::string values = "counter '" + name + "' (" + counterModeName(mode) + "): device " +
                                std::to_string(d) + ", model " + std::to_string(m);
     const uint64_t slack = mode == CounterMode::Informational ? 0 : counterSlack(c, name, model);
-    const std::string within = " (within " + std::to_string(slack) + ", what the ambiguous rays' legal answers may move it)";
+    const std::string within = " (within " + std::to_string(slack) +
+                               ", what the ambiguous rays' legal answers may move it)";
     bool ok = true;
     switch (mode) {
       case CounterMode::Exact: {
@@ -99,7 +105,9 @@ void compareCounters(const Case& c, const Results& device, const Results& model,
         ok = d <= m + slack;
         f.message = values;
         break;
-      case CounterMode::Informational: f.message = values; break;
+      case CounterMode::Informational:
+        f.message = values;
+        break;
     }
     if (undefined)
       f.message = values + " (informational: " + std::to_string(undefined_rays) +

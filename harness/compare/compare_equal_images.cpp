@@ -14,12 +14,14 @@ const Image* findImage(const Results& r, const std::string& name) {
 // first few pixel indices.
 uint32_t differingPixels(const Image& a, const Image& b, std::vector<uint32_t>* first) {
   const size_t pixels = static_cast<size_t>(a.width) * a.height;
-  if (a.width != b.width || a.height != b.height || a.channels != b.channels || a.texels.size() != b.texels.size())
+  if (a.width != b.width || a.height != b.height || a.channels != b.channels ||
+      a.texels.size() != b.texels.size())
     return static_cast<uint32_t>(pixels);
   uint32_t n = 0;
   for (size_t p = 0; p < pixels; ++p) {
     bool same = true;
-    for (uint32_t k = 0; k < a.channels; ++k) same = same && a.texels[p * a.channels + k] == b.texels[p * b.channels + k];
+    for (uint32_t k = 0; k < a.channels; ++k)
+      same = same && a.texels[p * a.channels + k] == b.texels[p * b.channels + k];
     if (same) continue;
     if (first->size() < kFirstRays) first->push_back(static_cast<uint32_t>(p));
     ++n;
@@ -48,7 +50,8 @@ void compareEqualImages(const Plan& plan, const Results& device, const Results& 
       }
       f.ray_count = differingPixels(*a, *b, &f.rays);
       f.message = pair + (f.ray_count ? " differ on the " + std::string(side) + " in " +
-                                            std::to_string(f.ray_count) + " pixels (equal_to: texel for texel)"
+                                            std::to_string(f.ray_count) +
+                                            " pixels (equal_to: texel for texel)"
                                       : " are equal on the " + std::string(side));
       if (!f.ray_count) f.status = Status::Pass;
       v.add(f);

@@ -10,8 +10,8 @@ namespace rayspec {
 // rays (their legal answers differ by design) and of rays with undefined
 // behaviour (R-UB: never judged) excluded; see image_pair.h. The
 // case's thresholds per image: a tolerance scale and the failing pixels allowed.
-void compareImages(const Plan& plan, const Results& device, const Results& model, const std::set<uint32_t>& masked,
-                   Verdict& v) {
+void compareImages(const Plan& plan, const Results& device, const Results& model,
+                   const std::set<uint32_t>& masked, Verdict& v) {
   for (const Image& di : device.images) {
     ImageOutput thresholds;
     for (const ImageOutput& out : plan.images)
@@ -21,17 +21,24 @@ void compareImages(const Plan& plan, const Results& device, const Results& model
       if (candidate.name == di.name) mi = &candidate;
     if (!mi || mi->width != di.width || mi->height != di.height || mi->channels != di.channels ||
         mi->is_float != di.is_float || mi->texels.size() != di.texels.size()) {
-      v.add({Status::Fail, "image", "image '" + di.name + "' missing or of another size in the model", {}, 1});
+      v.add({Status::Fail,
+             "image",
+             "image '" + di.name + "' missing or of another size in the model",
+             {},
+             1});
       continue;
     }
-    const PixelCount count = countFailingPixels(prepareImagePair(di, *mi, masked, thresholds.tolerance));
+    const PixelCount count =
+        countFailingPixels(prepareImagePair(di, *mi, masked, thresholds.tolerance));
     if (!count.failing) continue;
     std::ostringstream s;
     s << "image '" << di.name << "' differs from the model in " << count.failing << " pixels";
-    if (di.is_float) s << " (largest difference " << count.max_error << "x the tolerance of '" << di.field << "')";
+    if (di.is_float)
+      s << " (largest difference " << count.max_error << "x the tolerance of '" << di.field << "')";
     if (thresholds.max_failing_pixels) s << ", " << thresholds.max_failing_pixels << " allowed";
     s << (count.by_oiio ? " [OpenImageIO compare]" : "");
-    const Status status = count.failing > thresholds.max_failing_pixels ? Status::Fail : Status::Pass;
+    const Status status =
+        count.failing > thresholds.max_failing_pixels ? Status::Fail : Status::Pass;
     v.add({status, "image", s.str(), count.first, static_cast<uint32_t>(count.failing)});
   }
 }
@@ -45,8 +52,8 @@ void compareImagesToRecords(const Results& device, const std::set<uint32_t>& ray
     const uint32_t shown = std::min(f->words, im.channels);
     FindingBuilder b;
     b.finding = {Status::Fail, "image",
-                 "image '" + im.name + "' shows other values than the device's own records of '" + im.field +
-                     "' on numerically ambiguous rays"};
+                 "image '" + im.name + "' shows other values than the device's own records of '" +
+                     im.field + "' on numerically ambiguous rays"};
     for (uint32_t ray : rays) {
       if (static_cast<size_t>(ray) >= static_cast<size_t>(im.width) * im.height ||
           static_cast<size_t>(ray + 1) * words > device.records.size())

@@ -15,7 +15,8 @@ namespace rayspec {
 // ambiguous rays give each counter the slack their legal answers allow; a
 // counter that follows a stage's run count (trace_shape.h) must also agree
 // with the device's own per-ray records.
-void compareCounters(const Case& c, const Results& device, const Results& model, size_t undefined_rays, Verdict& v);
+void compareCounters(const Case& c, const Results& device, const Results& model,
+                     size_t undefined_rays, Verdict& v);
 // `undefined`: rays left out (R-UB), as in compareAnyHitRuns.
 void compareRecords(const Case& c, const Plan& plan, const Results& device, const Results& model,
                     const std::set<uint32_t>& undefined, Verdict& v);
@@ -27,8 +28,8 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
 void compareAnyHitRuns(const Case& c, const Results& device, const Results& model,
                        const std::set<uint32_t>& undefined, Verdict& v);
 // masked: the pixels of ambiguous and of undefined rays, left out.
-void compareImages(const Plan& plan, const Results& device, const Results& model, const std::set<uint32_t>& masked,
-                   Verdict& v);
+void compareImages(const Plan& plan, const Results& device, const Results& model,
+                   const std::set<uint32_t>& masked, Verdict& v);
 // Each image pixel of an ambiguous ray (left out of compareImages) against
 // the device's own record of the field it shows, where the record has it: a
 // device whose image and records disagree lost one of them.
@@ -68,8 +69,9 @@ struct FindingBuilder {
 // record (its fields, where no any-hit or intersection program writes
 // anything); a hit through an edge, vertex or t tie at the model's t.
 // `fields`: the record fields compared on clear rays.
-void checkAmbiguousShared(const Case& c, const TraceShape& shape, const RayAmbiguity& a, const uint32_t* d,
-                          const uint32_t* m, const std::vector<const RecordField*>& fields, float t_bound,
+void checkAmbiguousShared(const Case& c, const TraceShape& shape, const RayAmbiguity& a,
+                          const uint32_t* d, const uint32_t* m,
+                          const std::vector<const RecordField*>& fields, float t_bound,
                           std::map<std::string, FindingBuilder>& wrongs);
 
 }  // namespace rayspec

@@ -5,8 +5,8 @@
 #include "compare/compare_parts.h"
 #include "compare/finding_rules.h"
 #include "compare/shared_edge.h"
-#include "results/tolerances.h"
 #include "results/record_layout.h"
+#include "results/tolerances.h"
 
 namespace rayspec {
 namespace {
@@ -19,11 +19,18 @@ std::string ruleForField(const std::string& field, const std::vector<std::string
 }
 
 std::string fieldRule(const std::string& field) {
-  static const std::map<std::string, std::string> rules = {
-      {"hit", "R-MISS-XOR-CHIT"}, {"miss_runs", "R-MISS-XOR-CHIT"}, {"closest_hit_runs", "R-MISS-XOR-CHIT"},
-      {"callable_runs", "R-CALLABLE"}, {"raygen_runs", "R-BUILTIN"}, {"hit_kind", "R-HITKIND-TRI"},
-      {"hit_t", "R-PREC"}, {"color", "R-PAYLOAD"}, {"value", "R-PAYLOAD"}, {"ray_tmax", "R-TMAX-VIEW"},
-      {"ray_tmin", "R-TMAX-VIEW"}, {"depth", "R-RECURSION"}};
+  static const std::map<std::string, std::string> rules = {{"hit", "R-MISS-XOR-CHIT"},
+                                                           {"miss_runs", "R-MISS-XOR-CHIT"},
+                                                           {"closest_hit_runs", "R-MISS-XOR-CHIT"},
+                                                           {"callable_runs", "R-CALLABLE"},
+                                                           {"raygen_runs", "R-BUILTIN"},
+                                                           {"hit_kind", "R-HITKIND-TRI"},
+                                                           {"hit_t", "R-PREC"},
+                                                           {"color", "R-PAYLOAD"},
+                                                           {"value", "R-PAYLOAD"},
+                                                           {"ray_tmax", "R-TMAX-VIEW"},
+                                                           {"ray_tmin", "R-TMAX-VIEW"},
+                                                           {"depth", "R-RECURSION"}};
   const auto it = rules.find(field);
   return it == rules.end() ? "R-BUILTIN" : it->second;
 }
@@ -66,7 +73,8 @@ void checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
     // the rule of that ambiguity.
     const bool found_candidate = fieldWord(rec, "any_hit_runs") > 0;
     const bool shared = crossesSharedEdge(c, a) && !(miss_legal && found_candidate);
-    const bool watertight = a.reason == AmbiguityReason::Edge || a.reason == AmbiguityReason::Vertex;
+    const bool watertight =
+        a.reason == AmbiguityReason::Edge || a.reason == AmbiguityReason::Vertex;
     if (shared || (!miss_legal && watertight && !crossesBorderOnly(c, a))) {
       leak.addRay(a.ray);
     } else if (!miss_legal && !watertight) {
@@ -74,7 +82,8 @@ void checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
       FindingBuilder& wrong = wrongs[rule + " miss"];
       if (wrong.finding.rule.empty())
         wrong.finding = {Status::Fail, rule,
-                         "numerically ambiguous ray (" + std::string(ambiguityReasonName(a.reason)) +
+                         "numerically ambiguous ray (" +
+                             std::string(ambiguityReasonName(a.reason)) +
                              ") missed, and no legal answer is a miss"};
       wrong.addRay(a.ray);
     }
@@ -85,7 +94,8 @@ void checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
     FindingBuilder& wrong = wrongs[rule];
     if (wrong.finding.rule.empty())
       wrong.finding = {Status::Fail, rule,
-                       "numerically ambiguous ray (" + std::string(ambiguityReasonName(a.reason)) + ") hit a primitive that is not one of its legal answers"};
+                       "numerically ambiguous ray (" + std::string(ambiguityReasonName(a.reason)) +
+                           ") hit a primitive that is not one of its legal answers"};
     wrong.addRay(a.ray);
   }
 }
@@ -105,14 +115,14 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
   for (const std::string& name : plan.record_fields)
     if (const RecordField* f = findRecordField(name)) fields.push_back(f);
   for (const RecordField& f : recordFields())
-    if (f.automatic && !traversalDependent(f))
-      fields.push_back(&f);
+    if (f.automatic && !traversalDependent(f)) fields.push_back(&f);
 
   const TraceShape shape = traceShape(c);
   std::map<std::string, FindingBuilder> mismatches;
   std::map<std::string, FindingBuilder> wrongs;
   FindingBuilder leak;
-  leak.finding = {Status::QualityWarning, "R-WATERTIGHT", "ray on a shared edge or vertex leaked (missed every candidate)"};
+  leak.finding = {Status::QualityWarning, "R-WATERTIGHT",
+                  "ray on a shared edge or vertex leaked (missed every candidate)"};
 
   for (size_t i = 0; i < rays; ++i) {
     const uint32_t* d = &device.records[i * words];
@@ -129,8 +139,9 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
       if (sameField(*f, d, m, t_bound)) continue;
       FindingBuilder& b = mismatches[f->name];
       if (b.finding.message.empty())
-        b.finding = {Status::Fail, ruleForField(f->name, c.rules),
-                     std::string("per-ray field '") + f->name + "' differs from the model on clear rays"};
+        b.finding = {
+            Status::Fail, ruleForField(f->name, c.rules),
+            std::string("per-ray field '") + f->name + "' differs from the model on clear rays"};
       b.addRay(ray);
     }
   }
@@ -139,7 +150,8 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
   leak.flush(v);
   if (!ambiguous.empty()) {
     Finding note{Status::Pass, "R-PREC",
-                 std::to_string(ambiguous.size()) + " numerically ambiguous rays checked against their legal answers"};
+                 std::to_string(ambiguous.size()) +
+                     " numerically ambiguous rays checked against their legal answers"};
     v.add(note);
   }
 }

@@ -13,9 +13,15 @@ Verdict backendVerdict(const Results& r) {
   Finding f;
   switch (r.status) {
     case RunStatus::Ok:
-    case RunStatus::Crash: f.status = Status::Crash; break;
-    case RunStatus::NotSupported: f.status = Status::NotSupported; break;
-    case RunStatus::Timeout: f.status = Status::Timeout; break;
+    case RunStatus::Crash:
+      f.status = Status::Crash;
+      break;
+    case RunStatus::NotSupported:
+      f.status = Status::NotSupported;
+      break;
+    case RunStatus::Timeout:
+      f.status = Status::Timeout;
+      break;
     case RunStatus::Refused:
       f.status = Status::Fail;
       f.rule = "driver";
@@ -26,7 +32,8 @@ Verdict backendVerdict(const Results& r) {
   return v;
 }
 
-Verdict compareResults(const Case& c, const Plan& plan, const Results& device, const Results& model) {
+Verdict compareResults(const Case& c, const Plan& plan, const Results& device,
+                       const Results& model) {
   Verdict v = backendVerdict(device);
   // R-UB first: it decides whether anything is judged at all.
   if (!judgeUndefinedBehaviour(c, device, model, v)) return v;
@@ -47,7 +54,8 @@ Verdict compareResults(const Case& c, const Plan& plan, const Results& device, c
                 " validation-layer error(s); first: " + device.validation_messages.front();
     v.add(f);
   }
-  if (device.width != model.width || device.height != model.height || device.records.size() != model.records.size()) {
+  if (device.width != model.width || device.height != model.height ||
+      device.records.size() != model.records.size()) {
     Finding f;
     f.message = "launch size or record count differs between device and model";
     v.add(f);

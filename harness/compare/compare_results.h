@@ -13,7 +13,8 @@ namespace rayspec {
 // At most this many ray indices are kept per finding.
 constexpr size_t kFirstRays = 8;
 
-Verdict compareResults(const Case& c, const Plan& plan, const Results& device, const Results& model);
+Verdict compareResults(const Case& c, const Plan& plan, const Results& device,
+                       const Results& model);
 
 // The status a backend reported as a verdict of its own; Pass for Ok.
 Verdict backendVerdict(const Results& r);

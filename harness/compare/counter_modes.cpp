@@ -6,10 +6,14 @@ namespace rayspec {
 
 const char* counterModeName(CounterMode m) {
   switch (m) {
-    case CounterMode::Exact: return "exact";
-    case CounterMode::AtLeast: return "at_least";
-    case CounterMode::AtMost: return "at_most";
-    case CounterMode::Informational: return "informational";
+    case CounterMode::Exact:
+      return "exact";
+    case CounterMode::AtLeast:
+      return "at_least";
+    case CounterMode::AtMost:
+      return "at_most";
+    case CounterMode::Informational:
+      return "informational";
   }
   return "informational";
 }
@@ -49,12 +53,14 @@ std::set<std::string> countersUndefinedRaysMayMove(const Case& c) {
   for (const HitGroup& g : pipe.hit_groups)
     for (const auto* p : {&g.closest_hit, &g.any_hit, &g.intersection})
       if (*p) every(**p);
-  bool after_undefined = false;  // in program order: a statement where a ray's behaviour may be undefined came first
+  bool after_undefined =
+      false;  // in program order: a statement where a ray's behaviour may be undefined came first
   walkStatements(pipe.raygen, [&](const Stmt& s) {
     if (s.kind == Stmt::Kind::Count && after_undefined) moved.insert(s.counter);
     if (s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::Call) after_undefined = true;
     walkOwnExpressions(s, [&](const Expr& e) {
-      if (e.kind == Expr::Kind::Op && e.type == ValueType::Uint && (e.name == "div" || e.name == "mod"))
+      if (e.kind == Expr::Kind::Op && e.type == ValueType::Uint &&
+          (e.name == "div" || e.name == "mod"))
         after_undefined = true;
     });
   });

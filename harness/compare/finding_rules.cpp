@@ -14,27 +14,28 @@ using Rules = std::vector<std::string>;
 // Rules that decide whether a trace hits and which candidate it commits: any
 // of them shows in the hit, the identity fields, t, and which shaders ran.
 const Rules& decisionRules() {
-  static const Rules r = {"R-CAND-TRI-OPEN", "R-CAND-AABB-CLOSED", "R-TIE",          "R-ORDER-UNSPEC",
-                          "R-INST-XFORM",    "R-AABB-CONS",        "R-ISECT-CLOSEST", "R-SKIP-TRI",
-                          "R-SKIP-AABB",     "R-MASK",             "R-FACE-CULL",     "R-OPACITY",
-                          "R-CULL-OPQ",      "R-AHIT-OPAQUE-SKIP", "R-AHIT-UNUSED",   "R-AHIT-CLOSEST",
-                          "R-IGNORE",        "R-TERMINATE",        "R-ISECT-REPORT",  "R-TOFH",
-                          "R-MISS-XOR-CHIT", "R-SBT-HIT",          "R-SBT-MISS",      "R-SBT-ZERO",
-                          "R-INACTIVE",      "R-DEGEN",            "R-WATERTIGHT",    "R-PREC"};
+  static const Rules r = {
+      "R-CAND-TRI-OPEN", "R-CAND-AABB-CLOSED", "R-TIE",       "R-ORDER-UNSPEC",     "R-INST-XFORM",
+      "R-AABB-CONS",     "R-ISECT-CLOSEST",    "R-SKIP-TRI",  "R-SKIP-AABB",        "R-MASK",
+      "R-FACE-CULL",     "R-OPACITY",          "R-CULL-OPQ",  "R-AHIT-OPAQUE-SKIP", "R-AHIT-UNUSED",
+      "R-AHIT-CLOSEST",  "R-IGNORE",           "R-TERMINATE", "R-ISECT-REPORT",     "R-TOFH",
+      "R-MISS-XOR-CHIT", "R-SBT-HIT",          "R-SBT-MISS",  "R-SBT-ZERO",         "R-INACTIVE",
+      "R-DEGEN",         "R-WATERTIGHT",       "R-PREC"};
   return r;
 }
 
 // Rules of what flows through shader stages: payloads, attributes, callable
 // data, shader records, nesting.
 const Rules& dataRules() {
-  static const Rules r = {"R-PAYLOAD", "R-CALLABLE", "R-SBT-CALL", "R-SBT-RECORD", "R-RECURSION", "R-TMAX-VIEW",
-                          "R-BUILTIN"};
+  static const Rules r = {"R-PAYLOAD",   "R-CALLABLE",  "R-SBT-CALL", "R-SBT-RECORD",
+                          "R-RECURSION", "R-TMAX-VIEW", "R-BUILTIN"};
   return r;
 }
 
 // Rules of how often any-hit and intersection programs run.
 const Rules& traversalRules() {
-  static const Rules r = {"R-AHIT-DUP", "R-ISECT-MULTI", "R-ISECT-CLOSEST", "R-AHIT-CLOSEST", "R-ORDER-UNSPEC"};
+  static const Rules r = {"R-AHIT-DUP", "R-ISECT-MULTI", "R-ISECT-CLOSEST", "R-AHIT-CLOSEST",
+                          "R-ORDER-UNSPEC"};
   return r;
 }
 
@@ -46,22 +47,25 @@ Rules join(std::initializer_list<const Rules*> parts, Rules own = {}) {
 }  // namespace
 
 std::vector<std::string> rulesEvidencedByField(const std::string& field) {
-  static const std::set<std::string> decision = {"hit",         "instance_id",      "instance_custom_index",
-                                                 "geometry_index", "primitive_id",  "hit_t",
-                                                 "barycentrics", "hit_position",    "miss_runs",
-                                                 "closest_hit_runs"};
+  static const std::set<std::string> decision = {
+      "hit",   "instance_id",  "instance_custom_index", "geometry_index", "primitive_id",
+      "hit_t", "barycentrics", "hit_position",          "miss_runs",      "closest_hit_runs"};
   if (field == "barycentrics" || field == "hit_position")  // hit attributes
     return join({&decisionRules()}, {"R-BUILTIN", "R-PAYLOAD"});
   if (decision.count(field)) return join({&decisionRules()}, {"R-BUILTIN"});
-  if (field == "hit_kind") return join({&decisionRules()}, {"R-HITKIND-TRI", "R-FACE-DET", "R-BUILTIN"});
-  if (field == "color" || field == "color2" || field == "value") return join({&dataRules(), &decisionRules()});
-  if (field == "ray_tmin" || field == "ray_tmax") return join({&decisionRules()}, {"R-TMAX-VIEW", "R-BUILTIN"});
+  if (field == "hit_kind")
+    return join({&decisionRules()}, {"R-HITKIND-TRI", "R-FACE-DET", "R-BUILTIN"});
+  if (field == "color" || field == "color2" || field == "value")
+    return join({&dataRules(), &decisionRules()});
+  if (field == "ray_tmin" || field == "ray_tmax")
+    return join({&decisionRules()}, {"R-TMAX-VIEW", "R-BUILTIN"});
   if (field == "depth") return {"R-RECURSION", "R-BUILTIN"};
   if (field == "callable_runs") return {"R-CALLABLE", "R-SBT-CALL"};
   if (field == "raygen_runs") return {"R-BUILTIN"};
   if (field == "incoming_ray_flags") return {"R-BUILTIN", "R-TOFH"};
   if (field == "world_ray_origin" || field == "world_ray_direction") return {"R-BUILTIN"};
-  if (field == "object_ray_origin" || field == "object_ray_direction") return {"R-BUILTIN", "R-INST-XFORM"};
+  if (field == "object_ray_origin" || field == "object_ray_direction")
+    return {"R-BUILTIN", "R-INST-XFORM"};
   return {"R-BUILTIN"};
 }
 
@@ -84,19 +88,27 @@ std::vector<std::string> rulesEvidencedByCounter(const Case& c, const std::strin
   Rules out;
   for (Stage s : stages) {
     switch (s) {
-      case Stage::Raygen: out = join({&decisionRules(), &dataRules()}, out); break;  // after a trace: its outcome
+      case Stage::Raygen:
+        out = join({&decisionRules(), &dataRules()}, out);
+        break;  // after a trace: its outcome
       case Stage::Miss:
-      case Stage::ClosestHit: out = join({&decisionRules(), &dataRules()}, out); break;
+      case Stage::ClosestHit:
+        out = join({&decisionRules(), &dataRules()}, out);
+        break;
       case Stage::AnyHit:
-      case Stage::Intersection: out = join({&decisionRules(), &traversalRules()}, out); break;
-      case Stage::Callable: out = join({&dataRules()}, out); break;
+      case Stage::Intersection:
+        out = join({&decisionRules(), &traversalRules()}, out);
+        break;
+      case Stage::Callable:
+        out = join({&dataRules()}, out);
+        break;
     }
   }
   return out;
 }
 
-std::string findingRule(const std::vector<std::string>& evidenced, const std::vector<std::string>& case_rules,
-                        const std::string& own) {
+std::string findingRule(const std::vector<std::string>& evidenced,
+                        const std::vector<std::string>& case_rules, const std::string& own) {
   std::vector<std::string> named;
   for (const std::string& r : case_rules)
     if (std::find(evidenced.begin(), evidenced.end(), r) != evidenced.end() &&

@@ -18,7 +18,7 @@ std::vector<std::string> rulesEvidencedByCounter(const Case& c, const std::strin
 
 // A finding's rule: the evidenced rules the case claims, joined by '/'
 // ("R-FACE-DET/R-HITKIND-TRI"); `own` when the case claims none of them.
-std::string findingRule(const std::vector<std::string>& evidenced, const std::vector<std::string>& case_rules,
-                        const std::string& own);
+std::string findingRule(const std::vector<std::string>& evidenced,
+                        const std::vector<std::string>& case_rules, const std::string& own);
 
 }  // namespace rayspec

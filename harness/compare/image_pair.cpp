@@ -9,7 +9,8 @@
 
 namespace rayspec {
 
-ImagePair prepareImagePair(const Image& d, const Image& m, const std::set<uint32_t>& excluded, double scale) {
+ImagePair prepareImagePair(const Image& d, const Image& m, const std::set<uint32_t>& excluded,
+                           double scale) {
   ImagePair p;
   p.width = d.width;
   p.height = d.height;
@@ -33,7 +34,8 @@ ImagePair prepareImagePair(const Image& d, const Image& m, const std::set<uint32
         continue;
       }
       if (fa == fb) continue;
-      const double allowance = (tol.abs + tol.rel * std::max(std::fabs(static_cast<double>(fb)), 1.0)) * scale;
+      const double allowance =
+          (tol.abs + tol.rel * std::max(std::fabs(static_cast<double>(fb)), 1.0)) * scale;
       const double diff = std::fabs(static_cast<double>(fa) - fb);
       p.difference[i] = static_cast<float>(std::min(diff / allowance, 1e30));
     }
@@ -46,7 +48,8 @@ PixelCount countFailingPixelsLoop(const ImagePair& p) {
   const size_t pixels = static_cast<size_t>(p.width) * p.height;
   for (size_t px = 0; px < pixels; ++px) {
     double worst = 0.0;
-    for (uint32_t ch = 0; ch < p.channels; ++ch) worst = std::max(worst, static_cast<double>(p.difference[px * p.channels + ch]));
+    for (uint32_t ch = 0; ch < p.channels; ++ch)
+      worst = std::max(worst, static_cast<double>(p.difference[px * p.channels + ch]));
     c.max_error = std::max(c.max_error, worst);
     if (worst <= 1.0) continue;
     ++c.failing;

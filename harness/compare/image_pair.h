@@ -25,8 +25,8 @@ struct ImagePair {
   std::vector<float> difference;  // prepared device plane (the reference plane is all zero)
 };
 
-ImagePair prepareImagePair(const Image& device, const Image& model, const std::set<uint32_t>& excluded,
-                           double threshold_scale = 1.0);
+ImagePair prepareImagePair(const Image& device, const Image& model,
+                           const std::set<uint32_t>& excluded, double threshold_scale = 1.0);
 
 struct PixelCount {
   size_t failing = 0;

@@ -9,13 +9,17 @@
 
 namespace rayspec {
 
-float asFloat(uint32_t w) { return std::bit_cast<float>(w); }
+float asFloat(uint32_t w) {
+  return std::bit_cast<float>(w);
+}
 
 bool written(const uint32_t* rec, int field_index) {
   return field_index >= 0 && ((rec[kRecordWrittenMaskWord] >> field_index) & 1u);
 }
 
-uint32_t fieldWord(const uint32_t* rec, const char* name) { return rec[findRecordField(name)->offset]; }
+uint32_t fieldWord(const uint32_t* rec, const char* name) {
+  return rec[findRecordField(name)->offset];
+}
 
 float tBound(const std::map<uint32_t, float>& t_bounds, uint32_t ray) {
   const auto b = t_bounds.find(ray);
@@ -49,7 +53,8 @@ bool sameField(const RecordField& f, const uint32_t* d, const uint32_t* m, float
   const int index = static_cast<int>(f.index);
   if (!f.automatic && written(d, index) != written(m, index)) return false;
   if (!f.automatic && !written(d, index)) return true;
-  if (f.type == FieldType::Uint) return std::equal(d + f.offset, d + f.offset + f.words, m + f.offset);
+  if (f.type == FieldType::Uint)
+    return std::equal(d + f.offset, d + f.offset + f.words, m + f.offset);
   const FieldTolerance& ft = fieldTolerances()[f.index];
   Tolerance tol = ft.tol;
   if (ft.widened_by_t_bound) tol.abs = std::max(tol.abs, static_cast<double>(t_bound));

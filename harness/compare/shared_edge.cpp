@@ -25,7 +25,9 @@ bool triangleOf(const Case& c, const Candidate& k, Tri* out) {
   return true;
 }
 
-std::pair<Pos, Pos> edge(const Pos& a, const Pos& b) { return a < b ? std::make_pair(a, b) : std::make_pair(b, a); }
+std::pair<Pos, Pos> edge(const Pos& a, const Pos& b) {
+  return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
+}
 
 // The hit candidates' triangles, grouped by (instance, geometry); false when
 // some candidate is not a triangle of the case.

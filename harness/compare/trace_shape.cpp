@@ -46,7 +46,8 @@ bool anyRaySkipsClosestHit(const Case& c) {
 // Top-level `count` statements of p before any ignore or terminate (after
 // one, the rest of the program does not run), per counter; counters counted
 // anywhere else in p go to `conditional`.
-void topLevelCounts(const Program& p, std::map<std::string, uint32_t>& counts, std::set<std::string>& conditional) {
+void topLevelCounts(const Program& p, std::map<std::string, uint32_t>& counts,
+                    std::set<std::string>& conditional) {
   std::set<std::string> top;
   bool ended = false;
   for (const Stmt& s : p) {
@@ -69,8 +70,11 @@ struct StagePrograms {
 };
 
 std::vector<StagePrograms> stagesWithRunCounts(const Pipeline& pipe) {
-  std::vector<StagePrograms> out = {{"raygen_runs", {&pipe.raygen}}, {"miss_runs", {}}, {"closest_hit_runs", {}},
-                                    {"any_hit_runs", {}}, {"callable_runs", {}}};
+  std::vector<StagePrograms> out = {{"raygen_runs", {&pipe.raygen}},
+                                    {"miss_runs", {}},
+                                    {"closest_hit_runs", {}},
+                                    {"any_hit_runs", {}},
+                                    {"callable_runs", {}}};
   for (const Program& p : pipe.miss) out[1].programs.push_back(&p);
   for (const HitGroup& g : pipe.hit_groups) {
     if (g.closest_hit) out[2].programs.push_back(&*g.closest_hit);
@@ -88,22 +92,27 @@ TraceShape traceShape(const Case& c) {
   size_t top_traces = 0;
   for (const Stmt& s : pipe.raygen) top_traces += s.kind == Stmt::Kind::Trace;
   size_t other_traces = 0;
-  forEachNonRaygen(pipe, [&](const Program& p) { other_traces += countKind(p, Stmt::Kind::Trace); });
-  t.single_trace = top_traces == 1 && countKind(pipe.raygen, Stmt::Kind::Trace) == 1 && other_traces == 0;
+  forEachNonRaygen(pipe,
+                   [&](const Program& p) { other_traces += countKind(p, Stmt::Kind::Trace); });
+  t.single_trace =
+      top_traces == 1 && countKind(pipe.raygen, Stmt::Kind::Trace) == 1 && other_traces == 0;
   size_t top_calls = 0, other_calls = 0;
   for (const Stmt& s : pipe.raygen) top_calls += s.kind == Stmt::Kind::Call;
   forEachNonRaygen(pipe, [&](const Program& p) { other_calls += countKind(p, Stmt::Kind::Call); });
   t.calls_fixed = top_calls == countKind(pipe.raygen, Stmt::Kind::Call) && other_calls == 0;
   t.hit_runs_closest_hit = !anyRaySkipsClosestHit(c);
-  for (const HitGroup& g : pipe.hit_groups) t.hit_runs_closest_hit = t.hit_runs_closest_hit && g.closest_hit;
-  for (const SbtRecord& r : pipe.sbt_hit) t.hit_runs_closest_hit = t.hit_runs_closest_hit && r.group;
+  for (const HitGroup& g : pipe.hit_groups)
+    t.hit_runs_closest_hit = t.hit_runs_closest_hit && g.closest_hit;
+  for (const SbtRecord& r : pipe.sbt_hit)
+    t.hit_runs_closest_hit = t.hit_runs_closest_hit && r.group;
   t.miss_runs_miss = !pipe.miss.empty();
   for (const SbtRecord& r : pipe.sbt_miss) t.miss_runs_miss = t.miss_runs_miss && r.group;
   return t;
 }
 
 std::map<std::string, CounterSource> counterSources(const Case& c) {
-  std::map<std::string, std::set<std::string>> stages_of;  // counter -> run fields of the stages counting it
+  std::map<std::string, std::set<std::string>>
+      stages_of;  // counter -> run fields of the stages counting it
   std::set<std::string> conditional;
   std::vector<std::pair<std::string, std::vector<std::map<std::string, uint32_t>>>> per_program;
   for (const StagePrograms& s : stagesWithRunCounts(c.pipeline)) {
@@ -165,7 +174,8 @@ bool countedByProgramsAlone(const Case& c, const std::string& counter) {
 size_t countStatements(const Case& c, const std::string& counter) {
   size_t n = 0;
   auto visit = [&](const Program& p) {
-    walkStatements(p, [&](const Stmt& s) { n += s.kind == Stmt::Kind::Count && s.counter == counter; });
+    walkStatements(
+        p, [&](const Stmt& s) { n += s.kind == Stmt::Kind::Count && s.counter == counter; });
   };
   visit(c.pipeline.raygen);
   forEachNonRaygen(c.pipeline, visit);
@@ -178,8 +188,10 @@ size_t raysRunningOtherPrograms(const Results& model) {
     std::set<std::pair<uint32_t, uint32_t>> hits;
     bool miss = false;
     for (const Candidate& k : a.candidates) {
-      if (k.hit) hits.insert({k.instance, k.geometry});
-      else miss = true;
+      if (k.hit)
+        hits.insert({k.instance, k.geometry});
+      else
+        miss = true;
     }
     n += (miss && !hits.empty()) || hits.size() > 1;
   }

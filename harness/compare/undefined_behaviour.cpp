@@ -28,7 +28,8 @@ std::string describe(const std::vector<UndefinedRays>& groups) {
 }
 
 // The first rays over every reason, in launch order, and their count.
-Finding undefinedFinding(Status status, const std::vector<UndefinedRays>& groups, const std::string& message) {
+Finding undefinedFinding(Status status, const std::vector<UndefinedRays>& groups,
+                         const std::string& message) {
   Finding f{status, kRule, message, {}, 0};
   std::vector<uint32_t> first;
   for (const UndefinedRays& g : groups) {
@@ -58,7 +59,8 @@ std::vector<UndefinedRays> groupUndefinedRays(const std::vector<UndefinedRay>& r
   return groups;
 }
 
-bool judgeUndefinedBehaviour(const Case& c, const Results& device, const Results& model, Verdict& v) {
+bool judgeUndefinedBehaviour(const Case& c, const Results& device, const Results& model,
+                             Verdict& v) {
   if (!model.ok() || model.undefined.empty()) return true;
   const std::vector<UndefinedRays> groups = groupUndefinedRays(model.undefined);
   const std::string what = describe(groups);
@@ -67,16 +69,18 @@ bool judgeUndefinedBehaviour(const Case& c, const Results& device, const Results
     // A robustness probe: surviving is all that is asked of the undefined rays.
     v.undefined = groups;
     if (device.ok())
-      v.add(undefinedFinding(Status::Pass, groups, "R-UB probe: the device survived undefined behaviour: " + what));
+      v.add(undefinedFinding(Status::Pass, groups,
+                             "R-UB probe: the device survived undefined behaviour: " + what));
     else if (!survived)
       v.add(undefinedFinding(Status::Pass, groups, "R-UB probe: undefined behaviour: " + what));
     return device.ok();
   }
   // Not a probe: the case is at fault, not the device; nothing is judged.
-  std::string message =
-      "the case has undefined behaviour: " + what + "; fix the case, or claim R-UB to make it a robustness probe";
+  std::string message = "the case has undefined behaviour: " + what +
+                        "; fix the case, or claim R-UB to make it a robustness probe";
   if (!survived)
-    message = std::string("the device ") + (device.status == RunStatus::Crash ? "crashed" : "timed out") + " (" +
+    message = std::string("the device ") +
+              (device.status == RunStatus::Crash ? "crashed" : "timed out") + " (" +
               device.statusText() + "); " + message;
   v = Verdict{};
   v.undefined = groups;

@@ -25,6 +25,7 @@ std::vector<UndefinedRays> groupUndefinedRays(const std::vector<UndefinedRay>& r
 //     (nothing is compared); a device that ran gets an informational Pass
 //     finding "R-UB probe: ...", and its other rays are judged as usual.
 // Returns true when the comparison of the other rays goes on.
-bool judgeUndefinedBehaviour(const Case& c, const Results& device, const Results& model, Verdict& v);
+bool judgeUndefinedBehaviour(const Case& c, const Results& device, const Results& model,
+                             Verdict& v);
 
 }  // namespace rayspec

@@ -7,13 +7,20 @@ namespace {
 
 int severity(Status s) {
   switch (s) {
-    case Status::Pass: return 0;
-    case Status::NotSupported: return 1;
-    case Status::QualityWarning: return 2;
-    case Status::CaseError: return 3;
-    case Status::Fail: return 4;
-    case Status::Timeout: return 5;
-    case Status::Crash: return 6;
+    case Status::Pass:
+      return 0;
+    case Status::NotSupported:
+      return 1;
+    case Status::QualityWarning:
+      return 2;
+    case Status::CaseError:
+      return 3;
+    case Status::Fail:
+      return 4;
+    case Status::Timeout:
+      return 5;
+    case Status::Crash:
+      return 6;
   }
   return 6;
 }
@@ -22,13 +29,20 @@ int severity(Status s) {
 
 const char* statusName(Status s) {
   switch (s) {
-    case Status::Pass: return "Pass";
-    case Status::Fail: return "Fail";
-    case Status::QualityWarning: return "QualityWarning";
-    case Status::NotSupported: return "NotSupported";
-    case Status::Crash: return "Crash";
-    case Status::Timeout: return "Timeout";
-    case Status::CaseError: return "CaseError";
+    case Status::Pass:
+      return "Pass";
+    case Status::Fail:
+      return "Fail";
+    case Status::QualityWarning:
+      return "QualityWarning";
+    case Status::NotSupported:
+      return "NotSupported";
+    case Status::Crash:
+      return "Crash";
+    case Status::Timeout:
+      return "Timeout";
+    case Status::CaseError:
+      return "CaseError";
   }
   return "Crash";
 }
@@ -42,9 +56,13 @@ bool parseStatus(const std::string& name, Status* out) {
   return false;
 }
 
-Status worse(Status a, Status b) { return severity(a) >= severity(b) ? a : b; }
+Status worse(Status a, Status b) {
+  return severity(a) >= severity(b) ? a : b;
+}
 
-bool isFailing(Status s) { return severity(s) >= severity(Status::CaseError); }
+bool isFailing(Status s) {
+  return severity(s) >= severity(Status::CaseError);
+}
 
 void Verdict::add(Finding f) {
   status = worse(status, f.status);

@@ -15,22 +15,22 @@ namespace rayspec {
 // itself is at fault (a malformed file, or undefined behaviour the model
 // diagnosed in it, R-UB); the device is not blamed for it.
 enum class Status { Pass, Fail, QualityWarning, NotSupported, Crash, Timeout, CaseError };
-inline constexpr std::array<Status, 7> kAllStatuses = {Status::Pass,  Status::Fail,    Status::QualityWarning,
-                                                       Status::NotSupported, Status::Crash, Status::Timeout,
-                                                       Status::CaseError};
+inline constexpr std::array<Status, 7> kAllStatuses = {
+    Status::Pass,  Status::Fail,    Status::QualityWarning, Status::NotSupported,
+    Status::Crash, Status::Timeout, Status::CaseError};
 const char* statusName(Status s);
 bool parseStatus(const std::string& name, Status* out);
-// The worse of two statuses (Crash > Timeout > Fail > CaseError > QualityWarning > NotSupported > Pass).
-// A run fails on any of Crash, Timeout, Fail and CaseError.
+// The worse of two statuses (Crash > Timeout > Fail > CaseError > QualityWarning > NotSupported >
+// Pass). A run fails on any of Crash, Timeout, Fail and CaseError.
 Status worse(Status a, Status b);
 bool isFailing(Status s);
 
 struct Finding {
   Status status = Status::Fail;
-  std::string rule;                // spec-rules.md label, e.g. "R-MISS-XOR-CHIT"
-  std::string message;             // what differed
-  std::vector<uint32_t> rays;      // first rays that broke it (launch index)
-  uint32_t ray_count = 0;          // how many rays broke it in all
+  std::string rule;            // spec-rules.md label, e.g. "R-MISS-XOR-CHIT"
+  std::string message;         // what differed
+  std::vector<uint32_t> rays;  // first rays that broke it (launch index)
+  uint32_t ray_count = 0;      // how many rays broke it in all
 };
 
 // The rays of one reason whose behaviour the model found undefined (R-UB):
@@ -38,13 +38,13 @@ struct Finding {
 struct UndefinedRays {
   UndefinedReason reason = UndefinedReason::RayParameters;
   uint32_t ray_count = 0;
-  std::vector<uint32_t> rays;      // first rays (launch index)
-  std::string what;                // the first ray's: names the case field
+  std::vector<uint32_t> rays;  // first rays (launch index)
+  std::string what;            // the first ray's: names the case field
 };
 
 struct Verdict {
   Status status = Status::Pass;
-  std::vector<Finding> findings;   // Pass findings are informational notes
+  std::vector<Finding> findings;         // Pass findings are informational notes
   std::vector<UndefinedRays> undefined;  // by reason, in reason order
   void add(Finding f);
   // One line: "Fail: R-IGNORE: ... (rays 3, 17, ...)" of the worst finding.

@@ -27,7 +27,8 @@ std::vector<Crossing> crossings(const Case& c, const Ray& r) {
   for (const Instance& inst : c.scene.instances) {
     if (!inst.blas) continue;
     const DTransform inv = invertTransform(inst.transform);
-    const DVec3 o = applyAffine(inv, toDouble(r.origin), 1), d = applyAffine(inv, toDouble(r.direction), 0);
+    const DVec3 o = applyAffine(inv, toDouble(r.origin), 1),
+                d = applyAffine(inv, toDouble(r.direction), 0);
     const Blas& b = c.scene.blases[*inst.blas];
     for (uint32_t g = 0; g < b.geometries.size(); ++g)
       for (uint32_t p = 0; p < b.geometries[g].aabbs.size(); ++p) {
@@ -63,8 +64,10 @@ std::string closestBoxSkipped(Case& c, ModelOptions&) {
     const std::vector<Crossing> xs = crossings(c, r);
     const Crossing* closest = nullptr;
     for (const Crossing& x : xs)
-      if (!closest || std::max(x.entry, double(r.tmin)) < std::max(closest->entry, double(r.tmin))) closest = &x;
-    if (closest && closest->entry > r.tmin) return deactivate(c, {closest->box}, "first crossed by a launch ray");
+      if (!closest || std::max(x.entry, double(r.tmin)) < std::max(closest->entry, double(r.tmin)))
+        closest = &x;
+    if (closest && closest->entry > r.tmin)
+      return deactivate(c, {closest->box}, "first crossed by a launch ray");
   }
   return {};
 }

@@ -16,7 +16,8 @@ std::string ignoreFlags(Case& c, uint32_t ray_bits, uint32_t pipeline_bits, cons
 }  // namespace
 
 std::string facingCullIgnored(Case& c, ModelOptions&) {
-  return ignoreFlags(c, kRayCullBackFacing | kRayCullFrontFacing, 0, "CullBackFacing / CullFrontFacing");
+  return ignoreFlags(c, kRayCullBackFacing | kRayCullFrontFacing, 0,
+                     "CullBackFacing / CullFrontFacing");
 }
 
 std::string rayOpacityIgnored(Case& c, ModelOptions&) {
@@ -31,7 +32,8 @@ std::string opacityCullIgnored(Case& c, ModelOptions&) {
 // that traverses far to near (legal) and ignores the flag.
 std::string firstHitFlagIgnored(Case& c, ModelOptions& o) {
   o.order = CandidateOrder::ReverseDistance;
-  return ignoreFlags(c, kRayTerminateOnFirstHit, 0, "TerminateOnFirstHit (candidates found far to near)");
+  return ignoreFlags(c, kRayTerminateOnFirstHit, 0,
+                     "TerminateOnFirstHit (candidates found far to near)");
 }
 
 std::string skipClosestHitIgnored(Case& c, ModelOptions&) {

@@ -13,7 +13,8 @@ std::string closedTriangleInterval(Case&, ModelOptions& o) {
 
 std::string openAabbInterval(Case&, ModelOptions& o) {
   o.deviation = ModelDeviation::OpenAabbInterval;
-  return "reportIntersectionEXT at exactly tmin or the current tmax returns false (an open interval)";
+  return "reportIntersectionEXT at exactly tmin or the current tmax returns false (an open "
+         "interval)";
 }
 
 }  // namespace rayspec

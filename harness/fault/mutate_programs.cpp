@@ -53,15 +53,18 @@ Program ignoreEverything() {
 }  // namespace
 
 std::string ignoreAccepts(Case& c, ModelOptions&) {
-  return describeCount(removeEverywhere(c, Stmt::Kind::Ignore), "ignoreIntersectionEXT calls accept");
+  return describeCount(removeEverywhere(c, Stmt::Kind::Ignore),
+                       "ignoreIntersectionEXT calls accept");
 }
 
 std::string codeAfterIgnoreRuns(Case& c, ModelOptions&) {
-  return describeCount(moveToBlockEnd(c, Stmt::Kind::Ignore), "blocks run past ignoreIntersectionEXT");
+  return describeCount(moveToBlockEnd(c, Stmt::Kind::Ignore),
+                       "blocks run past ignoreIntersectionEXT");
 }
 
 std::string terminateContinues(Case& c, ModelOptions&) {
-  return describeCount(removeEverywhere(c, Stmt::Kind::Terminate), "terminateRayEXT calls let traversal go on");
+  return describeCount(removeEverywhere(c, Stmt::Kind::Terminate),
+                       "terminateRayEXT calls let traversal go on");
 }
 
 std::string codeAfterTerminateRuns(Case& c, ModelOptions&) {
@@ -69,36 +72,40 @@ std::string codeAfterTerminateRuns(Case& c, ModelOptions&) {
 }
 
 std::string reportReturnInverted(Case& c, ModelOptions&) {
-  return describeCount(eachReport(c, [](Stmt& s) {
-                 if (s.then_.empty() && s.else_.empty()) return false;
-                 std::swap(s.then_, s.else_);
-                 return true;
-               }),
-               "reports run the other branch");
+  return describeCount(eachReport(c,
+                                  [](Stmt& s) {
+                                    if (s.then_.empty() && s.else_.empty()) return false;
+                                    std::swap(s.then_, s.else_);
+                                    return true;
+                                  }),
+                       "reports run the other branch");
 }
 
 std::string reportKindDropped(Case& c, ModelOptions&) {
-  return describeCount(eachReport(c, [](Stmt& s) {
-                 if (s.hit_kind.kind == Expr::Kind::Literal && !s.hit_kind.literal.empty() && s.hit_kind.literal[0] == 0)
-                   return false;
-                 Expr zero;
-                 zero.kind = Expr::Kind::Literal;
-                 zero.type = ValueType::Uint;
-                 zero.literal = {0};
-                 zero.loc = s.hit_kind.loc;
-                 s.hit_kind = zero;
-                 return true;
-               }),
-               "reports lose their hit kind");
+  return describeCount(eachReport(c,
+                                  [](Stmt& s) {
+                                    if (s.hit_kind.kind == Expr::Kind::Literal &&
+                                        !s.hit_kind.literal.empty() && s.hit_kind.literal[0] == 0)
+                                      return false;
+                                    Expr zero;
+                                    zero.kind = Expr::Kind::Literal;
+                                    zero.type = ValueType::Uint;
+                                    zero.literal = {0};
+                                    zero.loc = s.hit_kind.loc;
+                                    s.hit_kind = zero;
+                                    return true;
+                                  }),
+                       "reports lose their hit kind");
 }
 
 std::string hitAttributesLost(Case& c, ModelOptions&) {
-  return describeCount(eachReport(c, [](Stmt& s) {
-                 const bool had = !s.attribute.empty();
-                 s.attribute.clear();
-                 return had;
-               }),
-               "reports lose their attribute");
+  return describeCount(eachReport(c,
+                                  [](Stmt& s) {
+                                    const bool had = !s.attribute.empty();
+                                    s.attribute.clear();
+                                    return had;
+                                  }),
+                       "reports lose their attribute");
 }
 
 std::string closestAnyHitSkipped(Case& c, ModelOptions&) {
@@ -131,7 +138,8 @@ std::string unusedAnyHitIgnores(Case& c, ModelOptions&) {
         ++n;
       }
   }
-  return describeCount(n, "hit groups (or all-zero records) without any-hit ignore every candidate");
+  return describeCount(n,
+                       "hit groups (or all-zero records) without any-hit ignore every candidate");
 }
 
 std::string payloadWritesLost(Case& c, ModelOptions&) {
@@ -140,13 +148,15 @@ std::string payloadWritesLost(Case& c, ModelOptions&) {
 
 std::string callableDataNotReturned(Case& c, ModelOptions&) {
   const StageMask callable = stageBit(Stage::Callable);
-  return describeCount(removeEverywhere(c, Stmt::Kind::SetCall, callable) + removeEverywhere(c, Stmt::Kind::Light, callable),
-               "callable data writes lost");
+  return describeCount(removeEverywhere(c, Stmt::Kind::SetCall, callable) +
+                           removeEverywhere(c, Stmt::Kind::Light, callable),
+                       "callable data writes lost");
 }
 
 std::string nestedTraceDropped(Case& c, ModelOptions&) {
-  return describeCount(removeEverywhere(c, Stmt::Kind::Trace, kAllStages & ~stageBit(Stage::Raygen)),
-               "nested traces do nothing");
+  return describeCount(
+      removeEverywhere(c, Stmt::Kind::Trace, kAllStages & ~stageBit(Stage::Raygen)),
+      "nested traces do nothing");
 }
 
 std::string intersectionRunsTwice(Case& c, ModelOptions&) {

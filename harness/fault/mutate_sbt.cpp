@@ -50,7 +50,8 @@ std::string shift(std::vector<SbtRecord>& region, size_t groups, const char* wha
       r.group = static_cast<uint32_t>((*r.group + 1) % groups);
       ++n;
     }
-  return n ? std::to_string(n) + " " + what + " records run the next group's shaders" : std::string();
+  return n ? std::to_string(n) + " " + what + " records run the next group's shaders"
+           : std::string();
 }
 
 }  // namespace
@@ -102,8 +103,9 @@ std::string instanceSbtOffsetIgnored(Case& c, ModelOptions&) {
 std::string zeroRecordRunsGroup0(Case& c, ModelOptions&) {
   size_t n = 0;
   Pipeline& p = c.pipeline;
-  for (auto [region, groups] : {std::pair{&p.sbt_hit, p.hit_groups.size()}, std::pair{&p.sbt_miss, p.miss.size()},
-                                std::pair{&p.sbt_callable, p.callables.size()}})
+  for (auto [region, groups] :
+       {std::pair{&p.sbt_hit, p.hit_groups.size()}, std::pair{&p.sbt_miss, p.miss.size()},
+        std::pair{&p.sbt_callable, p.callables.size()}})
     for (SbtRecord& r : *region)
       if (!r.group && groups) {
         r.group = 0;

@@ -50,7 +50,9 @@ std::array<Vec3, 3> fattened(const std::array<DVec3, 3>& v) {
         p = v[i];
         q = v[j];
       }
-  DVec3 u = longest > 0 ? DVec3{(q[0] - p[0]) / longest, (q[1] - p[1]) / longest, (q[2] - p[2]) / longest} : DVec3{1, 0, 0};
+  DVec3 u = longest > 0
+                ? DVec3{(q[0] - p[0]) / longest, (q[1] - p[1]) / longest, (q[2] - p[2]) / longest}
+                : DVec3{1, 0, 0};
   int axis = 2;
   for (int k = 1; k >= 0; --k)
     if (std::fabs(u[k]) < std::fabs(u[axis])) axis = k;
@@ -61,7 +63,8 @@ std::array<Vec3, 3> fattened(const std::array<DVec3, 3>& v) {
   w = {w[0] / wl, w[1] / wl, w[2] / wl};
   const double e = 0.25 * std::max(longest, 1.0);
   const DVec3 mid = axpy(p, sub(q, p), 0.5);
-  return {toFloat(axpy(axpy(p, u, -e), w, -e)), toFloat(axpy(axpy(q, u, e), w, -e)), toFloat(axpy(mid, w, longest + e))};
+  return {toFloat(axpy(axpy(p, u, -e), w, -e)), toFloat(axpy(axpy(q, u, e), w, -e)),
+          toFloat(axpy(mid, w, longest + e))};
 }
 
 }  // namespace
@@ -76,21 +79,24 @@ std::string instanceMaskIgnored(Case& c, ModelOptions&) {
 }
 
 std::string facingInverted(Case& c, ModelOptions&) {
-  return describeCount(toggleFlip(c, [](const Instance&) { return true; }), "triangle instances see the other face");
+  return describeCount(toggleFlip(c, [](const Instance&) { return true; }),
+                       "triangle instances see the other face");
 }
 
 std::string worldSpaceFacing(Case& c, ModelOptions&) {
-  return describeCount(toggleFlip(c, [](const Instance& i) { return linearDeterminant(i.transform) < 0; }),
-               "mirroring instances flip their facing");
+  return describeCount(
+      toggleFlip(c, [](const Instance& i) { return linearDeterminant(i.transform) < 0; }),
+      "mirroring instances flip their facing");
 }
 
 std::string cullDisableIgnored(Case& c, ModelOptions&) {
-  return describeCount(clearInstanceFlags(c, kInstanceFacingCullDisable), "instances lose TRIANGLE_FACING_CULL_DISABLE");
+  return describeCount(clearInstanceFlags(c, kInstanceFacingCullDisable),
+                       "instances lose TRIANGLE_FACING_CULL_DISABLE");
 }
 
 std::string instanceOpacityIgnored(Case& c, ModelOptions&) {
   return describeCount(clearInstanceFlags(c, kInstanceForceOpaque | kInstanceForceNoOpaque),
-               "instances lose FORCE_OPAQUE / FORCE_NO_OPAQUE");
+                       "instances lose FORCE_OPAQUE / FORCE_NO_OPAQUE");
 }
 
 // Without a cull by opacity, a candidate that any-hit runs on behaves as a
@@ -176,7 +182,8 @@ size_t hideLastActivePrimitives(Geometry& g) {
       if (std::isnan(g.vertices[p * 3 + k][0])) return true;
     return false;
   };
-  return hideLastActive(g.vertices.size() / 3, nanX, [&](size_t p) { g.vertices[p * 3][0] = std::nanf(""); });
+  return hideLastActive(g.vertices.size() / 3, nanX,
+                        [&](size_t p) { g.vertices[p * 3][0] = std::nanf(""); });
 }
 
 }  // namespace
@@ -201,8 +208,10 @@ std::string degenerateHit(Case& c, ModelOptions&) {
         bool finite = true;
         for (uint32_t k = 0; k < 3; ++k) {
           const uint32_t i = g.indices.empty() ? p * 3 + k : g.indices[p * 3 + k];
-          if (i >= g.vertices.size()) finite = false;
-          else v[k] = {g.vertices[i][0], g.vertices[i][1], g.vertices[i][2]};
+          if (i >= g.vertices.size())
+            finite = false;
+          else
+            v[k] = {g.vertices[i][0], g.vertices[i][1], g.vertices[i][2]};
           for (double x : v[k]) finite = finite && std::isfinite(x);
         }
         if (!finite || length(cross(sub(v[1], v[0]), sub(v[2], v[0]))) != 0) continue;

@@ -18,7 +18,8 @@ FaultResult runMutated(const FaultImpl& f, const Case& c, Results& device) {
   if (what.empty()) return notApplicable("nothing in the case for this fault to change");
   // A device that answers its own ambiguous rays one legal way.
   const Results r = perfectDevice(mutated, runOnModel(mutated, derivePlan(mutated), options));
-  if (!r.ok()) return notApplicable("the mutated case does not run on the model: " + r.statusText());
+  if (!r.ok())
+    return notApplicable("the mutated case does not run on the model: " + r.statusText());
   device.counters = r.counters;
   device.records = r.records;
   device.images = r.images;

@@ -56,6 +56,7 @@ Results perfectDevice(const Case& c, const Results& model);
 // crash: raises SIGSEGV; crash-once: the same, but only the first time the
 // case runs into the run folder run_dir (a flaky driver: the re-run passes);
 // hang: sleeps forever; otherwise returns.
-void raiseProcessFault(const std::string& name, const std::string& case_name, const std::string& run_dir);
+void raiseProcessFault(const std::string& name, const std::string& case_name,
+                       const std::string& run_dir);
 
 }  // namespace rayspec

@@ -1,9 +1,9 @@
+#include <sys/stat.h>
+#include <unistd.h>
 #include <csignal>
 #include <cstdio>
 #include <functional>
 #include <string>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <fcntl.h>
 
@@ -20,7 +20,8 @@ void crash() {
 // True the first time a case asks in this run folder: a marker file there
 // records it.
 bool firstTimeInThisRun(const std::string& run_dir, const std::string& case_name) {
-  const std::string marker = run_dir + "/.crash-once-" + std::to_string(std::hash<std::string>{}(case_name));
+  const std::string marker =
+      run_dir + "/.crash-once-" + std::to_string(std::hash<std::string>{}(case_name));
   const int fd = open(marker.c_str(), O_CREAT | O_EXCL | O_WRONLY, 0600);
   if (fd < 0) return false;
   close(fd);
@@ -29,7 +30,8 @@ bool firstTimeInThisRun(const std::string& run_dir, const std::string& case_name
 
 }  // namespace
 
-void raiseProcessFault(const std::string& name, const std::string& case_name, const std::string& run_dir) {
+void raiseProcessFault(const std::string& name, const std::string& case_name,
+                       const std::string& run_dir) {
   if (name == "crash") crash();
   if (name == "crash-once" && firstTimeInThisRun(run_dir, case_name)) crash();
   if (name == "hang")

@@ -19,7 +19,9 @@ void eachTraceFlags(Case& c, const std::function<void(Expr&)>& visit) {
   });
 }
 
-bool isLiteral(const Expr& e) { return e.kind == Expr::Kind::Literal && !e.literal.empty(); }
+bool isLiteral(const Expr& e) {
+  return e.kind == Expr::Kind::Literal && !e.literal.empty();
+}
 
 }  // namespace
 

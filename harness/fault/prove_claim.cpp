@@ -15,8 +15,8 @@ bool namesRule(const Verdict& v, const std::string& rule) {
   return false;
 }
 
-FaultOutcome plant(const std::string& fault, bool legal, const Case& c, const Plan& plan, const Results& model,
-                   const Results& perfect, const std::string& rule) {
+FaultOutcome plant(const std::string& fault, bool legal, const Case& c, const Plan& plan,
+                   const Results& model, const Results& perfect, const std::string& rule) {
   FaultOutcome o;
   o.fault = fault;
   o.legal = legal;
@@ -37,12 +37,18 @@ FaultOutcome plant(const std::string& fault, bool legal, const Case& c, const Pl
 
 const char* claimResultName(ClaimResult r) {
   switch (r) {
-    case ClaimResult::Proven: return "proven";
-    case ClaimResult::Hollow: return "hollow";
-    case ClaimResult::FailsLegal: return "fails a legal device";
-    case ClaimResult::Pending: return "pending";
-    case ClaimResult::NotChecked: return "not checked";
-    case ClaimResult::UnknownRule: return "unknown rule";
+    case ClaimResult::Proven:
+      return "proven";
+    case ClaimResult::Hollow:
+      return "hollow";
+    case ClaimResult::FailsLegal:
+      return "fails a legal device";
+    case ClaimResult::Pending:
+      return "pending";
+    case ClaimResult::NotChecked:
+      return "not checked";
+    case ClaimResult::UnknownRule:
+      return "unknown rule";
   }
   return "?";
 }
@@ -53,9 +59,12 @@ std::string ClaimProof::describe() const {
   if (!note.empty()) s << " (" << note << ")";
   for (const FaultOutcome& o : outcomes) {
     s << "\n    " << (o.legal ? "legal " : "break ") << o.fault << ": ";
-    if (!o.applied) s << "not applicable: " << o.what;
-    else if (!o.changed) s << "changed nothing (" << o.what << ")";
-    else s << o.headline << (o.names_rule ? "" : " [no finding names the rule]");
+    if (!o.applied)
+      s << "not applicable: " << o.what;
+    else if (!o.changed)
+      s << "changed nothing (" << o.what << ")";
+    else
+      s << o.headline << (o.names_rule ? "" : " [no finding names the rule]");
   }
   return s.str();
 }
@@ -95,7 +104,8 @@ ClaimProof proveClaim(const Case& c, const Plan& plan, const Results& model, con
   p.result = proven ? ClaimResult::Proven : ClaimResult::Hollow;
   if (!proven)
     p.note = rf->breaks.empty() ? "no legal variation finds anything to vary"
-                                : std::string("no break gives ") + statusName(rf->expect) + " with a finding naming " + rule;
+                                : std::string("no break gives ") + statusName(rf->expect) +
+                                      " with a finding naming " + rule;
   return p;
 }
 

@@ -8,7 +8,9 @@
 
 namespace rayspec {
 
-uint32_t RecordView::rays() const { return static_cast<uint32_t>(r.records.size() / recordWords()); }
+uint32_t RecordView::rays() const {
+  return static_cast<uint32_t>(r.records.size() / recordWords());
+}
 
 bool RecordView::written(uint32_t ray, const std::string& field) const {
   const RecordField* f = findRecordField(field);
@@ -31,7 +33,9 @@ void RecordEdit::set(uint32_t ray, const std::string& field, uint32_t value, uin
   rec[f->offset + word] = value;
   if (!f->automatic) rec[kRecordWrittenMaskWord] |= 1u << recordFieldIndex(field);
   for (Image& im : w.images) {
-    if (im.field != field || ray >= static_cast<size_t>(im.width) * im.height || word >= im.channels) continue;
+    if (im.field != field || ray >= static_cast<size_t>(im.width) * im.height ||
+        word >= im.channels)
+      continue;
     im.texels[static_cast<size_t>(ray) * im.channels + word] = value;
   }
 }
@@ -50,8 +54,8 @@ std::string RecordEdit::bumpCounter(const std::vector<std::string>& names, int d
   return {};
 }
 
-std::vector<std::string> countersIn(const Case& c,
-                                    const std::function<void(std::function<void(const Program&)>)>& each) {
+std::vector<std::string> countersIn(
+    const Case& c, const std::function<void(std::function<void(const Program&)>)>& each) {
   std::set<std::string> named;
   each([&](const Program& p) {
     walkStatements(p, [&](const Stmt& s) {

@@ -35,7 +35,8 @@ struct RecordEdit : RecordView {
 
 // Counters a `count` statement names in these programs, in the order of the
 // case's outputs.counters.
-std::vector<std::string> countersIn(const Case& c, const std::function<void(std::function<void(const Program&)>)>& each);
+std::vector<std::string> countersIn(
+    const Case& c, const std::function<void(std::function<void(const Program&)>)>& each);
 std::vector<std::string> missCounters(const Case& c);
 std::vector<std::string> closestHitCounters(const Case& c);
 std::vector<std::string> anyHitCounters(const Case& c);

@@ -21,7 +21,8 @@ bool findClear(const RecordFaultArgs& a, Pred pred, uint32_t* out) {
 
 std::string counterNote(const std::string& counter, int delta) {
   if (counter.empty()) return "";
-  return ", counter '" + counter + "' " + (delta < 0 ? "- " : "+ ") + std::to_string(std::abs(delta));
+  return ", counter '" + counter + "' " + (delta < 0 ? "- " : "+ ") +
+         std::to_string(std::abs(delta));
 }
 
 // A ray through a shared edge or vertex (the model marks it ambiguous) whose
@@ -30,7 +31,8 @@ std::string counterNote(const std::string& counter, int delta) {
 SharedCrossing sharedEdgeAnyHitRay(const RecordFaultArgs& a, const RayAmbiguity& amb) {
   const SharedCrossing s = sharedCrossing(a.c, amb);
   if (!s.triangles || amb.ray >= a.dev.rays() || a.mod.get(amb.ray, "closest_hit_runs") != 0 ||
-      a.mod.get(amb.ray, "intersection_runs") != 0 || a.mod.get(amb.ray, "any_hit_runs") < s.model_hits)
+      a.mod.get(amb.ray, "intersection_runs") != 0 ||
+      a.mod.get(amb.ray, "any_hit_runs") < s.model_hits)
     return {};
   return s;
 }
@@ -43,23 +45,31 @@ FaultResult describeRay(uint32_t ray, const std::string& what) {
   return {true, s.str()};
 }
 
-FaultResult notApplicable(const std::string& why) { return {false, why}; }
+FaultResult notApplicable(const std::string& why) {
+  return {false, why};
+}
 
 FaultResult dropMiss(RecordFaultArgs& a) {
   uint32_t ray;
-  if (!findClear(a, [&](uint32_t r) { return a.dev.get(r, "miss_runs") >= 1 && a.mod.get(r, "miss_runs") >= 1; },
-                 &ray))
+  if (!findClear(
+          a,
+          [&](uint32_t r) {
+            return a.dev.get(r, "miss_runs") >= 1 && a.mod.get(r, "miss_runs") >= 1;
+          },
+          &ray))
     return notApplicable("no clear ray ran a miss shader");
   const uint32_t before = a.dev.get(ray, "miss_runs");
   a.dev.set(ray, "miss_runs", 0);
   const std::string counter = a.dev.bumpCounter(missCounters(a.c), -1);
-  return describeRay(ray, "miss_runs " + std::to_string(before) + " -> 0" + counterNote(counter, -1));
+  return describeRay(ray,
+                     "miss_runs " + std::to_string(before) + " -> 0" + counterNote(counter, -1));
 }
 
 FaultResult swapPrimitiveId(RecordFaultArgs& a) {
   RecordEdit& dev = a.dev;
   auto usable = [&](uint32_t r) {
-    return !a.ambiguous.count(r) && dev.written(r, "primitive_id") && dev.get(r, "closest_hit_runs") != 0;
+    return !a.ambiguous.count(r) && dev.written(r, "primitive_id") &&
+           dev.get(r, "closest_hit_runs") != 0;
   };
   for (uint32_t x = 0; x < dev.rays(); ++x) {
     if (!usable(x)) continue;
@@ -79,21 +89,29 @@ FaultResult swapPrimitiveId(RecordFaultArgs& a) {
 FaultResult chitAfterIgnore(RecordFaultArgs& a) {
   RecordEdit& dev = a.dev;
   uint32_t ray;
-  auto missed = [&](uint32_t r) { return dev.get(r, "closest_hit_runs") == 0 && dev.get(r, "miss_runs") >= 1; };
+  auto missed = [&](uint32_t r) {
+    return dev.get(r, "closest_hit_runs") == 0 && dev.get(r, "miss_runs") >= 1;
+  };
   // Prefer a ray whose candidates any-hit ignored; else any ray that missed.
-  if (!findClear(a, [&](uint32_t r) { return missed(r) && dev.get(r, "any_hit_runs") > 0; }, &ray) &&
+  if (!findClear(
+          a, [&](uint32_t r) { return missed(r) && dev.get(r, "any_hit_runs") > 0; }, &ray) &&
       !findClear(a, missed, &ray))
     return notApplicable("no clear ray that missed");
   dev.set(ray, "closest_hit_runs", dev.get(ray, "closest_hit_runs") + 1);
   const std::string counter = dev.bumpCounter(closestHitCounters(a.c), +1);
-  return describeRay(ray, "closest_hit_runs 0 -> 1 (any-hit ran " + std::to_string(dev.get(ray, "any_hit_runs")) +
-                              " times)" + counterNote(counter, +1));
+  return describeRay(ray, "closest_hit_runs 0 -> 1 (any-hit ran " +
+                              std::to_string(dev.get(ray, "any_hit_runs")) + " times)" +
+                              counterNote(counter, +1));
 }
 
 FaultResult shiftT(RecordFaultArgs& a) {
   uint32_t ray;
-  if (!findClear(a, [&](uint32_t r) { return a.dev.get(r, "closest_hit_runs") > 0 && a.dev.written(r, "hit_t"); },
-                 &ray))
+  if (!findClear(
+          a,
+          [&](uint32_t r) {
+            return a.dev.get(r, "closest_hit_runs") > 0 && a.dev.written(r, "hit_t");
+          },
+          &ray))
     return notApplicable("no clear hit ray with a recorded hit_t");
   const float t = a.dev.getFloat(ray, "hit_t");
   a.dev.setFloat(ray, "hit_t", t + 1e-3f);
@@ -103,21 +121,27 @@ FaultResult shiftT(RecordFaultArgs& a) {
 FaultResult duplicateAnyHit(RecordFaultArgs& a) {
   bool flagged = false;
   for (const Blas& b : a.c.scene.blases)
-    for (const Geometry& g : b.geometries) flagged = flagged || (g.flags & kGeometryNoDuplicateAnyHit);
+    for (const Geometry& g : b.geometries)
+      flagged = flagged || (g.flags & kGeometryNoDuplicateAnyHit);
   if (!flagged) return notApplicable("no geometry has no_duplicate_any_hit");
   RecordEdit& dev = a.dev;
   uint32_t ray;
   // Prefer a ray whose candidates were all ignored (the model then ran any-hit
   // once on every primitive the ray crosses).
-  if (!findClear(a, [&](uint32_t r) { return dev.get(r, "any_hit_runs") > 0 && a.mod.get(r, "closest_hit_runs") == 0; },
-                 &ray) &&
-      !findClear(a, [&](uint32_t r) { return dev.get(r, "any_hit_runs") > 0; }, &ray))
+  if (!findClear(
+          a,
+          [&](uint32_t r) {
+            return dev.get(r, "any_hit_runs") > 0 && a.mod.get(r, "closest_hit_runs") == 0;
+          },
+          &ray) &&
+      !findClear(
+          a, [&](uint32_t r) { return dev.get(r, "any_hit_runs") > 0; }, &ray))
     return notApplicable("no clear ray ran any-hit");
   const uint32_t before = dev.get(ray, "any_hit_runs");
   dev.set(ray, "any_hit_runs", before + 1);
   const std::string counter = dev.bumpCounter(anyHitCounters(a.c), +1);
-  return describeRay(ray, "any_hit_runs " + std::to_string(before) + " -> " + std::to_string(before + 1) +
-                              counterNote(counter, +1));
+  return describeRay(ray, "any_hit_runs " + std::to_string(before) + " -> " +
+                              std::to_string(before + 1) + counterNote(counter, +1));
 }
 
 // A leak: a ray through an edge or vertex misses every triangle there, where
@@ -136,9 +160,11 @@ FaultResult leakEdge(RecordFaultArgs& a) {
     if (dev.written(amb.ray, "hit")) dev.set(amb.ray, "hit", 0);
     dev.bumpCounter(closestHitCounters(a.c), -1);
     dev.bumpCounter(missCounters(a.c), +1);
-    return describeRay(amb.ray, "on a shared " + std::string(ambiguityReasonName(amb.reason)) + ", now a miss");
+    return describeRay(
+        amb.ray, "on a shared " + std::string(ambiguityReasonName(amb.reason)) + ", now a miss");
   }
-  return notApplicable("no ray the model marks ambiguous at a shared edge or vertex hit on the device");
+  return notApplicable(
+      "no ray the model marks ambiguous at a shared edge or vertex hit on the device");
 }
 
 FaultResult doubleHitEdge(RecordFaultArgs& a) {
@@ -148,8 +174,9 @@ FaultResult doubleHitEdge(RecordFaultArgs& a) {
     const uint32_t before = a.dev.get(amb.ray, "any_hit_runs");
     a.dev.set(amb.ray, "any_hit_runs", before + (k - 1));
     const std::string counter = a.dev.bumpCounter(anyHitCounters(a.c), static_cast<int>(k - 1));
-    return describeRay(amb.ray, "any-hit ran for all " + std::to_string(k) + " triangles sharing the " +
-                                    ambiguityReasonName(amb.reason) + counterNote(counter, static_cast<int>(k - 1)));
+    return describeRay(amb.ray, "any-hit ran for all " + std::to_string(k) +
+                                    " triangles sharing the " + ambiguityReasonName(amb.reason) +
+                                    counterNote(counter, static_cast<int>(k - 1)));
   }
   return notApplicable("no ray through a shared edge or vertex whose candidates any-hit ignored");
 }
@@ -157,8 +184,12 @@ FaultResult doubleHitEdge(RecordFaultArgs& a) {
 FaultResult missAfterClosestHit(RecordFaultArgs& a) {
   RecordEdit& dev = a.dev;
   uint32_t ray;
-  if (!findClear(a, [&](uint32_t r) { return dev.get(r, "closest_hit_runs") > 0 && dev.get(r, "miss_runs") == 0; },
-                 &ray))
+  if (!findClear(
+          a,
+          [&](uint32_t r) {
+            return dev.get(r, "closest_hit_runs") > 0 && dev.get(r, "miss_runs") == 0;
+          },
+          &ray))
     return notApplicable("no clear ray that ran closest-hit");
   dev.set(ray, "miss_runs", 1);
   const std::string counter = dev.bumpCounter(missCounters(a.c), +1);

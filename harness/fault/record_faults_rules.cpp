@@ -15,7 +15,9 @@ bool readsBuiltin(const Expr& e, const std::function<bool(const std::string&)>& 
   return false;
 }
 
-bool isBuiltin(const Expr& e, const char* name) { return e.kind == Expr::Kind::Builtin && e.name == name; }
+bool isBuiltin(const Expr& e, const char* name) {
+  return e.kind == Expr::Kind::Builtin && e.name == name;
+}
 
 // The case records `field` straight from the built-in of the same name.
 bool recordsOwnBuiltin(const Case& c, const std::string& field) {
@@ -24,7 +26,9 @@ bool recordsOwnBuiltin(const Case& c, const std::string& field) {
   return false;
 }
 
-bool hitStage(Stage s) { return s == Stage::Intersection || s == Stage::AnyHit || s == Stage::ClosestHit; }
+bool hitStage(Stage s) {
+  return s == Stage::Intersection || s == Stage::AnyHit || s == Stage::ClosestHit;
+}
 
 // Values carried between stages, not built-ins of the API.
 bool isApiBuiltin(const std::string& name) {
@@ -53,7 +57,9 @@ uint32_t inactiveBefore(const Geometry& g, uint32_t p) {
 // the first one with an inactive primitive.
 const Geometry* hitGeometry(const Case& c, const RecordView& v, uint32_t ray) {
   const auto& insts = c.scene.instances;
-  auto withInactive = [&](const Geometry& g) { return inactiveBefore(g, g.primitiveCount()) > 0; };
+  auto withInactive = [&](const Geometry& g) {
+    return inactiveBefore(g, g.primitiveCount()) > 0;
+  };
   const Blas* blas = nullptr;
   if (v.written(ray, "instance_id")) {
     const uint32_t i = v.get(ray, "instance_id");
@@ -86,12 +92,14 @@ FaultResult hitKindFlipped(RecordFaultArgs& a) {
     if (!edited++) first = ray;
   }
   if (!edited) return notApplicable("no clear ray recorded a triangle hit kind");
-  return describeRay(first, "hit kind flipped (and on " + std::to_string(edited - 1) + " more rays)");
+  return describeRay(first,
+                     "hit kind flipped (and on " + std::to_string(edited - 1) + " more rays)");
 }
 
 FaultResult inactiveRenumbered(RecordFaultArgs& a) {
   const Case& c = a.c;
-  const bool prims = recordsOwnBuiltin(c, "primitive_id"), insts = recordsOwnBuiltin(c, "instance_id");
+  const bool prims = recordsOwnBuiltin(c, "primitive_id"),
+             insts = recordsOwnBuiltin(c, "instance_id");
   uint32_t edited = 0, first = 0;
   for (uint32_t ray = 0; ray < a.dev.rays(); ++ray) {
     if (a.ambiguous.count(ray) || a.dev.get(ray, "closest_hit_runs") == 0) continue;
@@ -99,7 +107,8 @@ FaultResult inactiveRenumbered(RecordFaultArgs& a) {
     if (insts && a.dev.written(ray, "instance_id")) {
       const uint32_t i = a.mod.get(ray, "instance_id");
       uint32_t nulls = 0;
-      for (uint32_t j = 0; j < i && j < c.scene.instances.size(); ++j) nulls += !c.scene.instances[j].blas;
+      for (uint32_t j = 0; j < i && j < c.scene.instances.size(); ++j)
+        nulls += !c.scene.instances[j].blas;
       if (nulls) a.dev.set(ray, "instance_id", i - nulls);
       changed = nulls > 0;
     }
@@ -112,9 +121,11 @@ FaultResult inactiveRenumbered(RecordFaultArgs& a) {
     }
     if (changed && !edited++) first = ray;
   }
-  if (!edited) return notApplicable("no clear hit ray records an id after an inactive primitive or null instance");
-  return describeRay(first, "ids counted without the inactive ones (and on " + std::to_string(edited - 1) +
-                                " more rays)");
+  if (!edited)
+    return notApplicable(
+        "no clear hit ray records an id after an inactive primitive or null instance");
+  return describeRay(first, "ids counted without the inactive ones (and on " +
+                                std::to_string(edited - 1) + " more rays)");
 }
 
 FaultResult tmaxViewInitial(RecordFaultArgs& a) {
@@ -127,7 +138,8 @@ FaultResult tmaxViewInitial(RecordFaultArgs& a) {
     if (isBuiltin(e, "ray_tmax")) slots.push_back({w.field, 0});
     if (e.kind == Expr::Kind::Op && e.name.rfind("vec", 0) == 0)
       for (size_t j = 0; j < e.args.size(); ++j)
-        if (isBuiltin(e.args[j], "ray_tmax") && e.args.size() == static_cast<size_t>(componentCount(e.type)))
+        if (isBuiltin(e.args[j], "ray_tmax") &&
+            e.args.size() == static_cast<size_t>(componentCount(e.type)))
           slots.push_back({w.field, static_cast<uint32_t>(j)});
   }
   if (slots.empty()) return notApplicable("no hit stage records gl_RayTmaxEXT");
@@ -152,8 +164,8 @@ FaultResult tmaxViewInitial(RecordFaultArgs& a) {
     if (changed && !edited++) first = ray;
   }
   if (!edited) return notApplicable("no clear hit ray recorded a tmax other than the trace's");
-  return describeRay(first, "gl_RayTmaxEXT read as the trace's tmax (and on " + std::to_string(edited - 1) +
-                                " more rays)");
+  return describeRay(first, "gl_RayTmaxEXT read as the trace's tmax (and on " +
+                                std::to_string(edited - 1) + " more rays)");
 }
 
 FaultResult builtinWrong(RecordFaultArgs& a) {
@@ -173,7 +185,8 @@ FaultResult builtinWrong(RecordFaultArgs& a) {
       }
       const float v = a.dev.getFloat(ray, field);
       a.dev.setFloat(ray, field, v + 1.0f);
-      return describeRay(ray, field + "[0] " + std::to_string(v) + " -> " + std::to_string(v + 1.0f));
+      return describeRay(ray,
+                         field + "[0] " + std::to_string(v) + " -> " + std::to_string(v + 1.0f));
     }
   }
   return notApplicable("no clear ray records a field computed from a built-in");

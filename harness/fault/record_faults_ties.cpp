@@ -21,7 +21,8 @@ FaultResult tieAnsweredNeither(RecordFaultArgs& a) {
     return describeRay(amb.ray, std::string("a ") + ambiguityReasonName(amb.reason) +
                                     " answered with neither candidate: now a miss");
   }
-  return notApplicable("no tie ray the model marks ambiguous, without a legal miss, hit on the device");
+  return notApplicable(
+      "no tie ray the model marks ambiguous, without a legal miss, hit on the device");
 }
 
 }  // namespace rayspec

@@ -41,12 +41,12 @@ struct FaultOutcome {
 };
 
 enum class ClaimResult {
-  Proven,        // a break gives `expect` (and no legal variation fails)
-  Hollow,        // no break changes the verdict: nothing shows the rule is checked
-  FailsLegal,    // a legal variation fails: the case depends on a freedom of the rule
-  Pending,       // the rule has no fault yet (RuleFaults::pending)
-  NotChecked,    // R-UB: never checked for a result
-  UnknownRule,   // not in the table
+  Proven,       // a break gives `expect` (and no legal variation fails)
+  Hollow,       // no break changes the verdict: nothing shows the rule is checked
+  FailsLegal,   // a legal variation fails: the case depends on a freedom of the rule
+  Pending,      // the rule has no fault yet (RuleFaults::pending)
+  NotChecked,   // R-UB: never checked for a result
+  UnknownRule,  // not in the table
 };
 const char* claimResultName(ClaimResult r);
 

@@ -16,14 +16,22 @@ std::string problem(const std::string& what) {
 
 std::string literal(const Expr& e) {
   if (e.literal.empty()) return problem("empty literal");
-  auto f = [&](size_t i) { return glslFloat(static_cast<float>(e.literal[i < e.literal.size() ? i : 0])); };
+  auto f = [&](size_t i) {
+    return glslFloat(static_cast<float>(e.literal[i < e.literal.size() ? i : 0]));
+  };
   switch (e.type) {
-    case ValueType::Bool: return e.literal[0] != 0 ? "true" : "false";
-    case ValueType::Uint: return glslUint(static_cast<uint32_t>(e.literal[0]));
-    case ValueType::Float: return f(0);
-    case ValueType::Vec2: return "vec2(" + f(0) + ", " + f(1) + ")";
-    case ValueType::Vec3: return "vec3(" + f(0) + ", " + f(1) + ", " + f(2) + ")";
-    case ValueType::Vec4: return "vec4(" + f(0) + ", " + f(1) + ", " + f(2) + ", " + f(3) + ")";
+    case ValueType::Bool:
+      return e.literal[0] != 0 ? "true" : "false";
+    case ValueType::Uint:
+      return glslUint(static_cast<uint32_t>(e.literal[0]));
+    case ValueType::Float:
+      return f(0);
+    case ValueType::Vec2:
+      return "vec2(" + f(0) + ", " + f(1) + ")";
+    case ValueType::Vec3:
+      return "vec3(" + f(0) + ", " + f(1) + ", " + f(2) + ")";
+    case ValueType::Vec4:
+      return "vec4(" + f(0) + ", " + f(1) + ", " + f(2) + ", " + f(3) + ")";
   }
   return problem("literal type");
 }
@@ -80,18 +88,21 @@ std::string op(const Expr& e, const StageContext& ctx) {
   std::vector<std::string> a;
   for (const Expr& arg : e.args) a.push_back(emitExpr(arg, ctx));
   const std::string& n = e.name;
-  auto need = [&](size_t count) { return a.size() >= count; };
+  auto need = [&](size_t count) {
+    return a.size() >= count;
+  };
   auto join = [&](const char* sep) {
     std::string s = "(";
     for (size_t i = 0; i < a.size(); ++i) s += (i ? sep : "") + a[i];
     return s + ")";
   };
   static const std::map<std::string, const char*> binary = {
-      {"add", " + "}, {"sub", " - "}, {"mul", " * "}, {"div", " / "}, {"mod", " % "},
-      {"eq", " == "}, {"ne", " != "}, {"lt", " < "},  {"le", " <= "}, {"gt", " > "},
+      {"add", " + "}, {"sub", " - "},  {"mul", " * "}, {"div", " / "}, {"mod", " % "},
+      {"eq", " == "}, {"ne", " != "},  {"lt", " < "},  {"le", " <= "}, {"gt", " > "},
       {"ge", " >= "}, {"and", " && "}, {"or", " || "}};
   if (auto it = binary.find(n); it != binary.end() && need(2)) return join(it->second);
-  if ((n == "min" || n == "max" || n == "dot") && need(2)) return n + "(" + a[0] + ", " + a[1] + ")";
+  if ((n == "min" || n == "max" || n == "dot") && need(2))
+    return n + "(" + a[0] + ", " + a[1] + ")";
   if (n == "not" && need(1)) return "(!" + a[0] + ")";
   if (n == "odd" && need(1)) return "((" + a[0] + " & 1u) != 0u)";
   if (n == "even" && need(1)) return "((" + a[0] + " & 1u) == 0u)";
@@ -112,21 +123,30 @@ std::string op(const Expr& e, const StageContext& ctx) {
 
 std::string emitExpr(const Expr& e, const StageContext& ctx) {
   switch (e.kind) {
-    case Expr::Kind::Literal: return literal(e);
-    case Expr::Kind::Builtin: return builtin(e.name, ctx.stage);
-    case Expr::Kind::Op: return op(e, ctx);
+    case Expr::Kind::Literal:
+      return literal(e);
+    case Expr::Kind::Builtin:
+      return builtin(e.name, ctx.stage);
+    case Expr::Kind::Op:
+      return op(e, ctx);
   }
   return problem("expression kind");
 }
 
 const char* glslType(ValueType t) {
   switch (t) {
-    case ValueType::Bool: return "bool";
-    case ValueType::Uint: return "uint";
-    case ValueType::Float: return "float";
-    case ValueType::Vec2: return "vec2";
-    case ValueType::Vec3: return "vec3";
-    case ValueType::Vec4: return "vec4";
+    case ValueType::Bool:
+      return "bool";
+    case ValueType::Uint:
+      return "uint";
+    case ValueType::Float:
+      return "float";
+    case ValueType::Vec2:
+      return "vec2";
+    case ValueType::Vec3:
+      return "vec3";
+    case ValueType::Vec4:
+      return "vec4";
   }
   return "uint";
 }

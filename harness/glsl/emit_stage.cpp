@@ -19,12 +19,18 @@ std::string define(const std::string& name, uint32_t value) {
 // The automatic run-count field a stage bumps.
 const char* runsField(Stage s) {
   switch (s) {
-    case Stage::Raygen: return "raygen_runs";
-    case Stage::Miss: return "miss_runs";
-    case Stage::ClosestHit: return "closest_hit_runs";
-    case Stage::AnyHit: return "any_hit_runs";
-    case Stage::Intersection: return "intersection_runs";
-    case Stage::Callable: return "callable_runs";
+    case Stage::Raygen:
+      return "raygen_runs";
+    case Stage::Miss:
+      return "miss_runs";
+    case Stage::ClosestHit:
+      return "closest_hit_runs";
+    case Stage::AnyHit:
+      return "any_hit_runs";
+    case Stage::Intersection:
+      return "intersection_runs";
+    case Stage::Callable:
+      return "callable_runs";
   }
   return "raygen_runs";
 }
@@ -62,7 +68,8 @@ void defines(const StageContext& ctx, GlslWriter& out) {
     }
   if (raygen && ctx.plan.records)
     for (size_t i = 0; i < ctx.plan.images.size(); ++i)
-      out.line(define("RS_BINDING_IMAGE_" + std::to_string(i), kBindingFirstImage + static_cast<uint32_t>(i)));
+      out.line(define("RS_BINDING_IMAGE_" + std::to_string(i),
+                      kBindingFirstImage + static_cast<uint32_t>(i)));
   if (raygen && u.launch_ray) out.line("#define RS_USE_RAYS");
   if (u.trace) out.line("#define RS_USE_TLAS");
   if (ctx.plan.records) out.line("#define RS_USE_RECORDS");
@@ -71,7 +78,8 @@ void defines(const StageContext& ctx, GlslWriter& out) {
     // The record block holds exactly the case's data bytes (pipeline.sbt.record_data):
     // the parser keeps every read inside them.
     out.line("#define RS_USE_SHADER_RECORD");
-    out.line(define("RS_SHADER_RECORD_WORDS", std::max<uint32_t>(ctx.c.pipeline.sbt_record_data / 4, 1)));
+    out.line(define("RS_SHADER_RECORD_WORDS",
+                    std::max<uint32_t>(ctx.c.pipeline.sbt_record_data / 4, 1)));
   }
 }
 
@@ -87,7 +95,8 @@ void interfaceVariables(const StageContext& ctx, GlslWriter& out) {
     out.line("layout(location = 1) rayPayloadEXT RsPayload child;");
   if (s == Stage::Callable) out.line("layout(location = 0) callableDataInEXT RsCallData call;");
   if (u.call)
-    out.line("layout(location = " + std::to_string(calleeLocation(s)) + ") callableDataEXT RsCallData callee;");
+    out.line("layout(location = " + std::to_string(calleeLocation(s)) +
+             ") callableDataEXT RsCallData callee;");
   if (u.hit_attribute && (s == Stage::ClosestHit || s == Stage::AnyHit || s == Stage::Intersection))
     out.line("hitAttributeEXT vec2 rs_attr;");
   if (s == Stage::Raygen && ctx.plan.records) {
@@ -95,9 +104,10 @@ void interfaceVariables(const StageContext& ctx, GlslWriter& out) {
       const ImageOutput& img = ctx.plan.images[i];
       const RecordField* f = findRecordField(img.field);
       const bool is_float = f && f->type == FieldType::Float;
-      out.line("layout(set = 0, binding = RS_BINDING_IMAGE_" + std::to_string(i) + ", " +
-               (is_float ? "rgba32f) uniform writeonly image2D" : "r32ui) uniform writeonly uimage2D") +
-               " rs_image_" + std::to_string(i) + ";  // image \"" + img.name + "\" from " + img.field);
+      out.line(
+          "layout(set = 0, binding = RS_BINDING_IMAGE_" + std::to_string(i) + ", " +
+          (is_float ? "rgba32f) uniform writeonly image2D" : "r32ui) uniform writeonly uimage2D") +
+          " rs_image_" + std::to_string(i) + ";  // image \"" + img.name + "\" from " + img.field);
     }
   }
 }
@@ -116,7 +126,9 @@ void imageStores(const StageContext& ctx, GlslWriter& out) {
       continue;
     }
     const std::string off = fieldOffsetMacro(f->name);
-    auto word = [&](uint32_t k) { return "rs_record_word(" + off + ", " + std::to_string(k) + "u)"; };
+    auto word = [&](uint32_t k) {
+      return "rs_record_word(" + off + ", " + std::to_string(k) + "u)";
+    };
     std::string value;
     if (f->type == FieldType::Uint) {
       value = "uvec4(" + word(0) + ", 0u, 0u, 0u)";
@@ -128,7 +140,8 @@ void imageStores(const StageContext& ctx, GlslWriter& out) {
       }
       value += ")";
     }
-    out.line("imageStore(" + image + ", rs_image_texel(imageSize(" + image + ").x), " + value + ");");
+    out.line("imageStore(" + image + ", rs_image_texel(imageSize(" + image + ").x), " + value +
+             ");");
   }
 }
 
@@ -139,7 +152,8 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
   StageContext ctx{c, plan, stage, name, findStageUses(program, stage, plan)};
   if (plan.records) ctx.uses.record_fields.insert(recordFieldIndex(runsField(stage)));
   if (plan.records && stage == Stage::AnyHit)
-    for (const char* f : {"any_hit_slots", "any_hit_repeats"}) ctx.uses.record_fields.insert(recordFieldIndex(f));
+    for (const char* f : {"any_hit_slots", "any_hit_repeats"})
+      ctx.uses.record_fields.insert(recordFieldIndex(f));
   const StageUses& u = ctx.uses;
   GlslWriter out;
   out.line("#version 460");
@@ -148,7 +162,8 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
   // launch's records may exceed maxStorageBufferRange (128 MiB on lavapipe).
   if (plan.records) out.line("#extension GL_EXT_buffer_reference : require");
   out.line("// rayspec case: " + (c.name.empty() ? std::string("(unnamed)") : c.name));
-  out.line("// stage: " + std::string(stageName(stage)) + " (" + name + "), generated by harness/glsl");
+  out.line("// stage: " + std::string(stageName(stage)) + " (" + name +
+           "), generated by harness/glsl");
   out.line("");
   defines(ctx, out);
   include("common.glsl", out);
@@ -162,8 +177,9 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
   out.open("void main() {");
   if (plan.records) out.line("rs_bump_runs(" + fieldOffsetMacro(runsField(stage)) + ");");
   if (plan.records && stage == Stage::AnyHit)
-    out.line("rs_mark_any_hit(" + fieldOffsetMacro("any_hit_slots") + ", " + fieldOffsetMacro("any_hit_repeats") +
-             ", (uint(gl_InstanceID) * " + std::to_string(kAnyHitSlotInstanceFactor) + "u + gl_GeometryIndexEXT * " +
+    out.line("rs_mark_any_hit(" + fieldOffsetMacro("any_hit_slots") + ", " +
+             fieldOffsetMacro("any_hit_repeats") + ", (uint(gl_InstanceID) * " +
+             std::to_string(kAnyHitSlotInstanceFactor) + "u + gl_GeometryIndexEXT * " +
              std::to_string(kAnyHitSlotGeometryFactor) + "u + uint(gl_PrimitiveID)) & 31u);");
   if (stage == Stage::Raygen) {
     if (u.launch_ray) out.line("RsRay rs_ray = rs_load_ray(rs_launch_index());");
@@ -173,8 +189,7 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
   }
   if (u.trace && (stage == Stage::Miss || stage == Stage::ClosestHit))
     out.line("child.color = vec4(0.0);  child.value = 0u;  child.depth = payload.depth + 1u;");
-  if (u.call)
-    out.line("callee = RsCallData(vec4(0.0), vec3(0.0), 0u, vec3(0.0), 0u);");
+  if (u.call) out.line("callee = RsCallData(vec4(0.0), vec3(0.0), 0u, vec3(0.0), 0u);");
   out.line("// ---- program ----");
   emitProgram(program, ctx, out);
   if (stage == Stage::Raygen && !plan.images.empty()) {

@@ -16,7 +16,9 @@ std::string upper(const std::string& s) {
   return u;
 }
 
-std::string quoted(const std::string& s) { return "\"" + s + "\""; }
+std::string quoted(const std::string& s) {
+  return "\"" + s + "\"";
+}
 
 void count(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
   const auto& names = ctx.plan.counters;
@@ -37,14 +39,14 @@ void record(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
     }
     const RecordField& f = recordFields()[index];
     const char* fn = f.type == FieldType::Uint ? "rs_record_uint"
-                     : f.words == 1           ? "rs_record_float"
-                     : f.words == 2           ? "rs_record_vec2"
-                     : f.words == 3           ? "rs_record_vec3"
-                                              : "rs_record_vec4";
+                     : f.words == 1            ? "rs_record_float"
+                     : f.words == 2            ? "rs_record_vec2"
+                     : f.words == 3            ? "rs_record_vec3"
+                                               : "rs_record_vec4";
     std::string v = emitExpr(value, ctx);
     if (f.type == FieldType::Uint && value.type == ValueType::Bool) v = "uint(" + v + ")";
-    out.line(std::string(fn) + "(" + fieldOffsetMacro(field) + ", " + fieldBitMacro(field) + ", " + v +
-             ");");
+    out.line(std::string(fn) + "(" + fieldOffsetMacro(field) + ", " + fieldBitMacro(field) + ", " +
+             v + ");");
   }
 }
 
@@ -56,9 +58,10 @@ void assignFields(const Stmt& s, const std::string& target, const StageContext& 
 }
 
 void report(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
-  out.line("rs_attr = " + (s.attribute.empty() ? std::string("vec2(0.0)") : emitExpr(s.attribute[0], ctx)) +
-           ";");
-  const std::string call = "reportIntersectionEXT(" + emitExpr(s.t, ctx) + ", " + emitExpr(s.hit_kind, ctx) + ")";
+  out.line("rs_attr = " +
+           (s.attribute.empty() ? std::string("vec2(0.0)") : emitExpr(s.attribute[0], ctx)) + ";");
+  const std::string call =
+      "reportIntersectionEXT(" + emitExpr(s.t, ctx) + ", " + emitExpr(s.hit_kind, ctx) + ")";
   if (s.then_.empty() && s.else_.empty()) {
     out.line(call + ";");
     return;
@@ -102,23 +105,47 @@ void terminator(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
 
 }  // namespace
 
-std::string fieldOffsetMacro(const std::string& field) { return "RS_FIELD_" + upper(field); }
-std::string fieldBitMacro(const std::string& field) { return "RS_BIT_" + upper(field); }
+std::string fieldOffsetMacro(const std::string& field) {
+  return "RS_FIELD_" + upper(field);
+}
+std::string fieldBitMacro(const std::string& field) {
+  return "RS_BIT_" + upper(field);
+}
 
 void emitProgram(const Program& program, const StageContext& ctx, GlslWriter& out) {
   for (const Stmt& s : program) {
     switch (s.kind) {
-      case Stmt::Kind::Count: count(s, ctx, out); break;
-      case Stmt::Kind::Record: record(s, ctx, out); break;
-      case Stmt::Kind::SetPayload: assignFields(s, "payload", ctx, out); break;
-      case Stmt::Kind::SetCall: assignFields(s, "call", ctx, out); break;
+      case Stmt::Kind::Count:
+        count(s, ctx, out);
+        break;
+      case Stmt::Kind::Record:
+        record(s, ctx, out);
+        break;
+      case Stmt::Kind::SetPayload:
+        assignFields(s, "payload", ctx, out);
+        break;
+      case Stmt::Kind::SetCall:
+        assignFields(s, "call", ctx, out);
+        break;
       case Stmt::Kind::Ignore:
-      case Stmt::Kind::Terminate: terminator(s, ctx, out); break;
-      case Stmt::Kind::Report: report(s, ctx, out); break;
-      case Stmt::Kind::Trace: emitTrace(s, ctx, out); break;
-      case Stmt::Kind::Call: emitCall(s, ctx, out); break;
-      case Stmt::Kind::Light: light(s, out); break;
-      case Stmt::Kind::If: ifStmt(s, ctx, out); break;
+      case Stmt::Kind::Terminate:
+        terminator(s, ctx, out);
+        break;
+      case Stmt::Kind::Report:
+        report(s, ctx, out);
+        break;
+      case Stmt::Kind::Trace:
+        emitTrace(s, ctx, out);
+        break;
+      case Stmt::Kind::Call:
+        emitCall(s, ctx, out);
+        break;
+      case Stmt::Kind::Light:
+        light(s, out);
+        break;
+      case Stmt::Kind::If:
+        ifStmt(s, ctx, out);
+        break;
     }
   }
 }

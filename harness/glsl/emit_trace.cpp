@@ -24,7 +24,9 @@ void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
   }
   const TraceArgs& t = s.trace;
   const Ray& d = ctx.c.rays.defaults;
-  auto def = [&](const std::string& launch, const std::string& nested) { return raygen ? launch : nested; };
+  auto def = [&](const std::string& launch, const std::string& nested) {
+    return raygen ? launch : nested;
+  };
   const Arg args[] = {
       {"uint", "rs_flags", &t.flags, def("rs_ray.flags", glslUint(d.flags))},
       {"uint", "rs_cull_mask", &t.cull_mask, def("rs_ray.cull_mask", glslUint(d.cull_mask))},
@@ -50,8 +52,8 @@ void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
   out.line(p + ".value = 0u;");
   out.line(p + ".depth = " + (raygen ? std::string("1u") : "payload.depth + 1u") + ";");
   out.line("traceRayEXT(rs_tlas, rs_flags, rs_cull_mask, rs_sbt_offset, rs_sbt_stride, rs_miss,");
-  out.line("            rs_origin, rs_tmin, rs_direction, rs_tmax, " + std::string(raygen ? "0" : "1") +
-           ");");
+  out.line("            rs_origin, rs_tmin, rs_direction, rs_tmax, " +
+           std::string(raygen ? "0" : "1") + ");");
   out.close();
 }
 
@@ -60,9 +62,12 @@ void emitCall(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
     out.raw(std::string("#error rayspec: call is not allowed in ") + stageName(ctx.stage) + "\n");
     return;
   }
-  struct Field { const char* name; const char* zero; };
-  const Field fields[] = {{"color", "vec4(0.0)"}, {"position", "vec3(0.0)"}, {"value", "0u"},
-                          {"normal", "vec3(0.0)"}};
+  struct Field {
+    const char* name;
+    const char* zero;
+  };
+  const Field fields[] = {
+      {"color", "vec4(0.0)"}, {"position", "vec3(0.0)"}, {"value", "0u"}, {"normal", "vec3(0.0)"}};
   out.open("{  // call");
   out.line("RsCallData rs_data;");
   for (const Field& f : fields) {

@@ -18,11 +18,13 @@ GeneratedPipeline generateGlsl(const Case& c, const Plan& plan) {
     const std::string prefix = "hit" + std::to_string(i) + ".";
     GeneratedGroup group;
     if (h.closest_hit)
-      group.closest_hit = emitStage(c, plan, Stage::ClosestHit, prefix + "closest_hit", *h.closest_hit);
+      group.closest_hit =
+          emitStage(c, plan, Stage::ClosestHit, prefix + "closest_hit", *h.closest_hit);
     if (h.any_hit && plan.any_hit)
       group.any_hit = emitStage(c, plan, Stage::AnyHit, prefix + "any_hit", *h.any_hit);
     if (h.intersection && plan.intersection)
-      group.intersection = emitStage(c, plan, Stage::Intersection, prefix + "intersection", *h.intersection);
+      group.intersection =
+          emitStage(c, plan, Stage::Intersection, prefix + "intersection", *h.intersection);
     g.hit_groups.push_back(std::move(group));
   }
   for (size_t i = 0; i < p.callables.size(); ++i)

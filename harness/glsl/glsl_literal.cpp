@@ -42,6 +42,8 @@ std::string glslFloat(float f) {
   return bitsLiteral(f);
 }
 
-std::string glslUint(uint32_t u) { return std::to_string(u) + "u"; }
+std::string glslUint(uint32_t u) {
+  return std::to_string(u) + "u";
+}
 
 }  // namespace rayspec

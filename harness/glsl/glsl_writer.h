@@ -12,9 +12,19 @@ class GlslWriter {
     out_ += '\n';
   }
   void raw(const std::string& text) { out_ += text; }  // unindented, as is
-  void open(const std::string& text) { line(text); ++depth_; }   // "... {"
-  void close(const std::string& text = "}") { --depth_; line(text); }
-  void reopen(const std::string& text) { --depth_; line(text); ++depth_; }  // "} else {"
+  void open(const std::string& text) {
+    line(text);
+    ++depth_;
+  }  // "... {"
+  void close(const std::string& text = "}") {
+    --depth_;
+    line(text);
+  }
+  void reopen(const std::string& text) {
+    --depth_;
+    line(text);
+    ++depth_;
+  }  // "} else {"
   const std::string& text() const { return out_; }
 
  private:

@@ -35,6 +35,8 @@ struct StageContext {
 };
 
 // The location of the callable data this stage passes to executeCallableEXT.
-inline int calleeLocation(Stage s) { return s == Stage::Callable ? 1 : 0; }
+inline int calleeLocation(Stage s) {
+  return s == Stage::Callable ? 1 : 0;
+}
 
 }  // namespace rayspec

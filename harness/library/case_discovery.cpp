@@ -25,25 +25,30 @@ std::string nameOf(const std::string& path, const std::string& cases_dir) {
   if (rel.empty() || *rel.begin() == "..") rel = fs::path(path).filename();
   std::string name = rel.generic_string();
   for (const std::string suffix : {".sweep.yaml", ".yaml"})
-    if (name.size() > suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
+    if (name.size() > suffix.size() &&
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
       return name.substr(0, name.size() - suffix.size());
   return name;
 }
 
 std::vector<CaseFile> expand(const std::string& path, const std::string& name) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return {CaseFile{path, name, false, {}, {CaseError{SourceLoc{path, 0, 0, ""}, "cannot open the case file"}}}};
+  if (!in)
+    return {CaseFile{
+        path, name, false, {}, {Error{SourceLoc{path, 0, 0, ""}, "cannot open the case file"}}}};
   std::stringstream text;
   text << in.rdbuf();
   SweepExpansion ex = expandSweep(text.str(), path, name);
   if (!ex.errors.empty()) return {CaseFile{path, name, false, {}, std::move(ex.errors)}};
   std::vector<CaseFile> out;
-  for (SweepVariant& v : ex.variants) out.push_back(CaseFile{path, v.name, true, std::move(v.text), {}, std::move(v.params)});
+  for (SweepVariant& v : ex.variants)
+    out.push_back(CaseFile{path, v.name, true, std::move(v.text), {}, std::move(v.params)});
   return out;
 }
 
-CaseError nameError(const CaseFile& f, const std::string& what) {
-  return CaseError{SourceLoc{f.path, 0, 0, "name"}, "case name '" + f.name.substr(0, 200) + "' " + what};
+Error nameError(const CaseFile& f, const std::string& what) {
+  return Error{SourceLoc{f.path, 0, 0, "name"},
+               "case name '" + f.name.substr(0, 200) + "' " + what};
 }
 
 }  // namespace
@@ -54,7 +59,8 @@ void checkCaseNames(std::vector<CaseFile>& files) {
   for (CaseFile& f : files) {
     if (const auto same = at.find(f.name); same != at.end()) {
       CaseFile& first = out[same->second];
-      first.errors.push_back(nameError(first, "is made twice: by " + first.path + " and by " + f.path));
+      first.errors.push_back(
+          nameError(first, "is made twice: by " + first.path + " and by " + f.path));
       continue;
     }
     if (const std::string problem = caseNameProblem(f.name); !problem.empty())
@@ -64,13 +70,16 @@ void checkCaseNames(std::vector<CaseFile>& files) {
   }
   // A name that is a folder of another: each of a name's '/'-prefixes looked up.
   for (CaseFile& inner : out)
-    for (size_t slash = inner.name.find('/'); slash != std::string::npos; slash = inner.name.find('/', slash + 1)) {
+    for (size_t slash = inner.name.find('/'); slash != std::string::npos;
+         slash = inner.name.find('/', slash + 1)) {
       const auto folder = at.find(inner.name.substr(0, slash));
       if (folder == at.end()) continue;
       CaseFile& outer = out[folder->second];
-      outer.errors.push_back(nameError(outer, "is a folder of case '" + inner.name + "' (" + inner.path +
-                                                  "): its bundles would lie inside this case's folder"));
-      inner.errors.push_back(nameError(inner, "lies inside the folder of case '" + outer.name + "' (" + outer.path + ")"));
+      outer.errors.push_back(
+          nameError(outer, "is a folder of case '" + inner.name + "' (" + inner.path +
+                               "): its bundles would lie inside this case's folder"));
+      inner.errors.push_back(nameError(
+          inner, "lies inside the folder of case '" + outer.name + "' (" + outer.path + ")"));
     }
   files = std::move(out);
 }
@@ -101,7 +110,8 @@ std::vector<CaseFile> findCases(const std::string& dir, const std::string& glob)
     const bool whole = f.generated && fnmatch(glob.c_str(), nameOf(f.path, dir).c_str(), 0) == 0;
     if (whole || fnmatch(glob.c_str(), f.name.c_str(), 0) == 0) out.push_back(std::move(f));
   }
-  std::sort(out.begin(), out.end(), [](const CaseFile& a, const CaseFile& b) { return a.name < b.name; });
+  std::sort(out.begin(), out.end(),
+            [](const CaseFile& a, const CaseFile& b) { return a.name < b.name; });
   return out;
 }
 
@@ -109,23 +119,29 @@ std::vector<CaseFile> findCasesAny(const std::string& dir, const std::vector<std
   std::vector<CaseFile> out;
   for (const std::string& glob : globs)
     for (CaseFile& f : findCases(dir, glob)) out.push_back(std::move(f));
-  std::stable_sort(out.begin(), out.end(), [](const CaseFile& a, const CaseFile& b) { return a.name < b.name; });
-  out.erase(std::unique(out.begin(), out.end(), [](const CaseFile& a, const CaseFile& b) { return a.name == b.name; }),
+  std::stable_sort(out.begin(), out.end(),
+                   [](const CaseFile& a, const CaseFile& b) { return a.name < b.name; });
+  out.erase(std::unique(out.begin(), out.end(),
+                        [](const CaseFile& a, const CaseFile& b) { return a.name == b.name; }),
             out.end());
   return out;
 }
 
-std::optional<CaseFile> findCase(const std::string& name, const std::string& file, const std::string& cases_dir) {
+std::optional<CaseFile> findCase(const std::string& name, const std::string& file,
+                                 const std::string& cases_dir) {
   std::error_code ec;
   std::vector<CaseFile> files;
-  if (!file.empty() && fs::is_regular_file(file, ec)) files = caseFilesFor(file, cases_dir);
-  else files = findCases(cases_dir, name);
+  if (!file.empty() && fs::is_regular_file(file, ec))
+    files = caseFilesFor(file, cases_dir);
+  else
+    files = findCases(cases_dir, name);
   for (CaseFile& f : files)
     if (f.name == name || files.size() == 1) return std::move(f);
   return std::nullopt;
 }
 
-ParseResult loadCase(const CaseFile& f, const std::string& cases_dir, const std::vector<std::string>* catalog) {
+ParseResult loadCase(const CaseFile& f, const std::string& cases_dir,
+                     const std::vector<std::string>* catalog) {
   if (!f.errors.empty()) {
     ParseResult r;
     r.errors = f.errors;

@@ -11,12 +11,13 @@
 namespace rayspec {
 
 struct CaseFile {
-  std::string path;  // file path
-  std::string name;  // path under the cases folder without .yaml (a sweep: plus /<variant>)
-  bool generated = false;          // a sweep's variant: `text` holds it
-  std::string text;                // a variant's substituted text
-  std::vector<CaseError> errors;   // a sweep file that does not expand (then it is one entry)
-  std::vector<std::pair<std::string, std::string>> params;  // a variant's sweep parameters (value text)
+  std::string path;        // file path
+  std::string name;        // path under the cases folder without .yaml (a sweep: plus /<variant>)
+  bool generated = false;  // a sweep's variant: `text` holds it
+  std::string text;        // a variant's substituted text
+  std::vector<Error> errors;  // a sweep file that does not expand (then it is one entry)
+  std::vector<std::pair<std::string, std::string>>
+      params;  // a variant's sweep parameters (value text)
 };
 
 // Every case under dir (sorted by name) whose name matches glob. A sweep's
@@ -40,7 +41,8 @@ void checkCaseNames(std::vector<CaseFile>& files);
 // The case called `name`: from `file` when given (a case file or a sweep
 // file holding that variant), else looked up by name under cases_dir. Empty
 // when there is none.
-std::optional<CaseFile> findCase(const std::string& name, const std::string& file, const std::string& cases_dir);
+std::optional<CaseFile> findCase(const std::string& name, const std::string& file,
+                                 const std::string& cases_dir);
 
 // The case of a CaseFile, parsed (and checked against the catalog when given).
 ParseResult loadCase(const CaseFile& f, const std::string& cases_dir,

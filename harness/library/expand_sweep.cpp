@@ -11,10 +11,10 @@
 namespace rayspec {
 namespace {
 
-constexpr size_t kMaxVariants = 10000;          // cases one sweep may make
-constexpr size_t kMaxLineBytes = 64u << 10;     // one substituted line
-constexpr int kMaxSubstitutions = 10000;         // in one line
-constexpr size_t kMaxSweepBytes = 256u << 20;   // all variants' text together
+constexpr size_t kMaxVariants = 10000;         // cases one sweep may make
+constexpr size_t kMaxLineBytes = 64u << 10;    // one substituted line
+constexpr int kMaxSubstitutions = 10000;       // in one line
+constexpr size_t kMaxSweepBytes = 256u << 20;  // all variants' text together
 
 using Params = std::vector<std::pair<std::string, std::string>>;  // name -> YAML text, in order
 
@@ -41,7 +41,7 @@ bool isParameterName(const std::string& s) {
 
 class Expander {
  public:
-  Expander(const std::string& file, std::vector<CaseError>& errors) : file_(file), errors_(errors) {}
+  Expander(const std::string& file, std::vector<Error>& errors) : file_(file), errors_(errors) {}
 
   void error(const YAML::Node& n, const std::string& field, const std::string& message) {
     errors_.push_back({locOf(file_, n.Mark(), field), message});
@@ -73,7 +73,8 @@ class Expander {
         row.emplace_back(key, valueText(kv.second));
         names.push_back(key);
       }
-      if (i == 0) first_names = names;
+      if (i == 0)
+        first_names = names;
       else if (std::set<std::string>(names.begin(), names.end()) !=
                std::set<std::string>(first_names.begin(), first_names.end())) {
         error(n[i], field, "every row must name the same parameters as row 0");
@@ -96,7 +97,8 @@ class Expander {
       const std::string key = kv.first.Scalar();
       const std::string field = "sweep.product." + key;
       if (!isParameterName(key)) {
-        error(kv.first, "sweep.product", "'" + key + "' is not a parameter name (letters, digits, _)");
+        error(kv.first, "sweep.product",
+              "'" + key + "' is not a parameter name (letters, digits, _)");
         continue;
       }
       if (!kv.second.IsSequence() || kv.second.size() == 0) {
@@ -112,15 +114,15 @@ class Expander {
 
  private:
   const std::string& file_;
-  std::vector<CaseError>& errors_;
+  std::vector<Error>& errors_;
 };
 
 // Replaces each ${name} in line, innermost first, and again in what a value
 // brings in: `${boxes_${order}}` is ${boxes_forward} when order is forward.
 // An unknown name is an error (once per place); so is a value that keeps
 // bringing itself back.
-std::string substitute(const std::string& line, const Params& params, const std::string& file, int line_no,
-                       const std::string& field, std::vector<CaseError>* errors) {
+std::string substitute(const std::string& line, const Params& params, const std::string& file,
+                       int line_no, const std::string& field, std::vector<Error>* errors) {
   std::string out = line;
   std::vector<size_t> opens;  // positions of the "${" not closed yet (one pass, left to right)
   std::set<std::string> unknown;
@@ -145,17 +147,20 @@ std::string substitute(const std::string& line, const Params& params, const std:
       if (errors && unknown.insert(name).second) {
         std::string known;
         for (const auto& [k, v] : params) known += (known.empty() ? "" : ", ") + k;
-        errors->push_back({SourceLoc{file, line_no, static_cast<int>(open) + 1, field},
-                           "'${" + name + "}' names no parameter of the sweep (parameters: " + known + ")"});
+        errors->push_back(
+            {SourceLoc{file, line_no, static_cast<int>(open) + 1, field},
+             "'${" + name + "}' names no parameter of the sweep (parameters: " + known + ")"});
       }
       ++i;
       continue;
     }
-    if (++steps > kMaxSubstitutions || out.size() - (i + 1 - open) + value->size() > kMaxLineBytes) {
+    if (++steps > kMaxSubstitutions ||
+        out.size() - (i + 1 - open) + value->size() > kMaxLineBytes) {
       if (errors)
         errors->push_back({SourceLoc{file, line_no, 1, field},
                            "the parameters' values name each other too deeply (over " +
-                               std::to_string(kMaxSubstitutions) + " substitutions, or a line over " +
+                               std::to_string(kMaxSubstitutions) +
+                               " substitutions, or a line over " +
                                std::to_string(kMaxLineBytes >> 10) + " KiB)"});
       return {};
     }
@@ -176,12 +181,14 @@ std::vector<std::string> splitLines(const std::string& text) {
 
 bool isSweepFile(const std::string& path) {
   const std::string suffix = ".sweep.yaml";
-  return path.size() > suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return path.size() > suffix.size() &&
+         path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 namespace {
 
-SweepExpansion expandChecked(const std::string& text, const std::string& file, const std::string& name) {
+SweepExpansion expandChecked(const std::string& text, const std::string& file,
+                             const std::string& name) {
   SweepExpansion result;
   Expander ex(file, result.errors);
   // The block: from the line `sweep:` (at column 0) to the next line that
@@ -192,15 +199,17 @@ SweepExpansion expandChecked(const std::string& text, const std::string& file, c
   for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
     const std::string& l = lines[i];
     const bool top_key = !l.empty() && l[0] != ' ' && l[0] != '#' && l[0] != '\t';
-    if (block_begin < 0 && l.rfind("sweep:", 0) == 0) block_begin = i;
+    if (block_begin < 0 && l.rfind("sweep:", 0) == 0)
+      block_begin = i;
     else if (block_begin >= 0 && top_key) {
       block_end = i;
       break;
     }
   }
   if (block_begin < 0) {
-    result.errors.push_back({SourceLoc{file, 1, 1, "sweep"},
-                             "a .sweep.yaml file needs a top-level `sweep:` block (cases/README.md, Sweeps)"});
+    result.errors.push_back(
+        {SourceLoc{file, 1, 1, "sweep"},
+         "a .sweep.yaml file needs a top-level `sweep:` block (cases/README.md, Sweeps)"});
     return result;
   }
   std::string block(static_cast<size_t>(block_begin), '\n');  // keeps yaml-cpp's line numbers
@@ -225,11 +234,13 @@ SweepExpansion expandChecked(const std::string& text, const std::string& file, c
   for (const auto& kv : sweep) {
     const std::string key = kv.first.Scalar();
     if (key != "name" && key != "rows" && key != "product")
-      ex.error(kv.first, "sweep", "unknown key '" + key + "' (expected one of: name, rows, product)");
+      ex.error(kv.first, "sweep",
+               "unknown key '" + key + "' (expected one of: name, rows, product)");
   }
   const YAML::Node name_node = sweep["name"];
   if (!name_node || !name_node.IsScalar() || name_node.Scalar().empty()) {
-    ex.error(name_node ? name_node : sweep, "sweep.name", "missing: each variant's name, e.g. \"offset-${offset}\"");
+    ex.error(name_node ? name_node : sweep, "sweep.name",
+             "missing: each variant's name, e.g. \"offset-${offset}\"");
     return result;
   }
   if (!sweep["rows"] && !sweep["product"]) {
@@ -242,15 +253,19 @@ SweepExpansion expandChecked(const std::string& text, const std::string& file, c
   for (const auto& [key, values] : product)
     for (const auto& [row_key, v] : rows.front())
       if (row_key == key) {
-        ex.error(sweep["product"], "sweep.product." + key, "'" + key + "' is also a parameter of the rows");
+        ex.error(sweep["product"], "sweep.product." + key,
+                 "'" + key + "' is also a parameter of the rows");
         return result;
       }
 
-  for (int i = block_begin; i < block_end && i < static_cast<int>(lines.size()); ++i) lines[i].clear();
+  for (int i = block_begin; i < block_end && i < static_cast<int>(lines.size()); ++i)
+    lines[i].clear();
   size_t count = rows.size();
-  for (const auto& [key, values] : product) count = count > kMaxVariants ? count : count * values.size();
+  for (const auto& [key, values] : product)
+    count = count > kMaxVariants ? count : count * values.size();
   if (count > kMaxVariants) {
-    ex.error(sweep, "sweep", "makes more than " + std::to_string(kMaxVariants) + " cases; split it");
+    ex.error(sweep, "sweep",
+             "makes more than " + std::to_string(kMaxVariants) + " cases; split it");
     return result;
   }
   size_t total_bytes = 0;
@@ -262,25 +277,29 @@ SweepExpansion expandChecked(const std::string& text, const std::string& file, c
   for (const Params& row : rows) {
     while (result.errors.empty()) {
       Params params = row;
-      for (size_t k = 0; k < product.size(); ++k) params.emplace_back(product[k].first, product[k].second[index[k]]);
+      for (size_t k = 0; k < product.size(); ++k)
+        params.emplace_back(product[k].first, product[k].second[index[k]]);
       // Every variant is checked: a line over the limits, or a name that only
       // this variant's values bring, is an error here too (said once).
-      std::vector<CaseError> found;
+      std::vector<Error> found;
       const YAML::Mark nm = name_node.Mark();
       SweepVariant v;
-      v.name = name + "/" + substitute(name_node.Scalar(), params, file, nm.line + 1, "sweep.name", &found);
+      v.name = name + "/" +
+               substitute(name_node.Scalar(), params, file, nm.line + 1, "sweep.name", &found);
       for (size_t i = 0; i < lines.size(); ++i)
         v.text += substitute(lines[i], params, file, static_cast<int>(i) + 1, "", &found) + "\n";
-      for (CaseError& e : found) {
+      for (Error& e : found) {
         if (!errors_said.insert(e.format()).second) continue;
         if (!result.variants.empty()) e.message += " (in variant " + v.name + ")";
         result.errors.push_back(std::move(e));
       }
       total_bytes += v.text.size();
-      if (total_bytes > kMaxSweepBytes) ex.error(sweep, "sweep", "its cases' text grows beyond 256 MiB; split it");
+      if (total_bytes > kMaxSweepBytes)
+        ex.error(sweep, "sweep", "its cases' text grows beyond 256 MiB; split it");
       if (++names_seen[v.name] == 2)
-        ex.error(name_node, "sweep.name", "two variants are both named '" + v.name +
-                                              "': the name must use every parameter that varies");
+        ex.error(name_node, "sweep.name",
+                 "two variants are both named '" + v.name +
+                     "': the name must use every parameter that varies");
       v.params = params;
       result.variants.push_back(std::move(v));
       size_t k = product.size();
@@ -298,13 +317,15 @@ SweepExpansion expandChecked(const std::string& text, const std::string& file, c
 
 }  // namespace
 
-SweepExpansion expandSweep(const std::string& text, const std::string& file, const std::string& name) {
+SweepExpansion expandSweep(const std::string& text, const std::string& file,
+                           const std::string& name) {
   try {
     return expandChecked(text, file, name);
   } catch (const YAML::Exception& e) {
     // A shape yaml-cpp refuses to read (it throws on some): an error at its mark.
     SweepExpansion result;
-    result.errors.push_back({locOf(file, e.mark, "sweep"), "unexpected value in the sweep block: " + e.msg});
+    result.errors.push_back(
+        {locOf(file, e.mark, "sweep"), "unexpected value in the sweep block: " + e.msg});
     return result;
   }
 }

@@ -27,18 +27,20 @@ namespace rayspec {
 struct SweepVariant {
   std::string name;  // <family>/<stem>/<variant>
   std::string text;  // the case file's text with the parameters substituted
-  std::vector<std::pair<std::string, std::string>> params;  // each parameter's value text, rows' first
+  std::vector<std::pair<std::string, std::string>>
+      params;  // each parameter's value text, rows' first
 };
 
 struct SweepExpansion {
   std::vector<SweepVariant> variants;
-  std::vector<CaseError> errors;  // problems of the sweep block or of a ${...}; then no variants
+  std::vector<Error> errors;  // problems of the sweep block or of a ${...}; then no variants
 };
 
 bool isSweepFile(const std::string& path);  // the name ends in .sweep.yaml
 
 // text: the file's contents; file: its path (for messages); name: the sweep's
 // case name (<family>/<stem>, without .sweep).
-SweepExpansion expandSweep(const std::string& text, const std::string& file, const std::string& name);
+SweepExpansion expandSweep(const std::string& text, const std::string& file,
+                           const std::string& name);
 
 }  // namespace rayspec

@@ -23,12 +23,16 @@ struct Answer {
 class Records {
  public:
   explicit Records(const Results& r) : r_(r), words_(recordWords()) {}
-  bool has(uint32_t ray) const { return !r_.records.empty() && (ray + 1) * size_t{words_} <= r_.records.size(); }
+  bool has(uint32_t ray) const {
+    return !r_.records.empty() && (ray + 1) * size_t{words_} <= r_.records.size();
+  }
   const uint32_t* of(uint32_t ray) const { return r_.records.data() + size_t{ray} * words_; }
   bool written(uint32_t ray, const char* field) const {
     return (of(ray)[kRecordWrittenMaskWord] >> recordFieldIndex(field)) & 1u;
   }
-  uint32_t word(uint32_t ray, const char* field) const { return of(ray)[findRecordField(field)->offset]; }
+  uint32_t word(uint32_t ray, const char* field) const {
+    return of(ray)[findRecordField(field)->offset];
+  }
 
  private:
   const Results& r_;
@@ -57,7 +61,8 @@ Answer ledBack(const CasePermutation& p, const Records& rec, uint32_t ray) {
   const uint32_t primitiveNew = rec.word(ray, "primitive_id");
   const std::vector<Instance>& instances = p.permuted.scene.instances;
   std::set<uint32_t> blases;
-  if (instanceNew < instances.size() && instances[instanceNew].blas) blases.insert(*instances[instanceNew].blas);
+  if (instanceNew < instances.size() && instances[instanceNew].blas)
+    blases.insert(*instances[instanceNew].blas);
   if (instanceNew == kUnknown)
     for (const Instance& i : instances)
       if (i.blas) blases.insert(*i.blas);
@@ -92,7 +97,8 @@ std::string describe(const Answer& a) {
 }
 
 // The first field of a clear ray's record that moved, or "".
-std::string movedField(const CasePermutation& p, const Records& orig, const Records& perm, uint32_t ray) {
+std::string movedField(const CasePermutation& p, const Records& orig, const Records& perm,
+                       uint32_t ray) {
   const uint32_t* a = orig.of(ray);
   const uint32_t* b = perm.of(ray);
   if (a[kRecordWrittenMaskWord] != b[kRecordWrittenMaskWord]) return "the fields written";
@@ -104,15 +110,17 @@ std::string movedField(const CasePermutation& p, const Records& orig, const Reco
     if (name == "any_hit_slots" || name == "any_hit_repeats") continue;
     if (name == "instance_id" || name == "primitive_id") {
       const Answer led = ledBack(p, perm, ray);
-      const bool same = name == "instance_id" ? led.instance == a[f.offset] : led.primitives.count(a[f.offset]) != 0;
+      const bool same = name == "instance_id" ? led.instance == a[f.offset]
+                                              : led.primitives.count(a[f.offset]) != 0;
       if (!same) return name;
       continue;
     }
     for (uint32_t k = 0; k < f.words; ++k) {
       const uint32_t x = a[f.offset + k], y = b[f.offset + k];
-      const bool same = f.type == FieldType::Float
-                            ? toleranceFor(name).matches(std::bit_cast<float>(y), std::bit_cast<float>(x))
-                            : x == y;
+      const bool same =
+          f.type == FieldType::Float
+              ? toleranceFor(name).matches(std::bit_cast<float>(y), std::bit_cast<float>(x))
+              : x == y;
       if (!same) return name;
     }
   }
@@ -121,8 +129,8 @@ std::string movedField(const CasePermutation& p, const Records& orig, const Reco
 
 }  // namespace
 
-std::vector<std::string> comparePermuted(const CasePermutation& p, const Results& original, const Results& permuted,
-                                         size_t limit) {
+std::vector<std::string> comparePermuted(const CasePermutation& p, const Results& original,
+                                         const Results& permuted, size_t limit) {
   std::vector<std::string> out;
   auto note = [&](std::string line) {
     if (out.size() < limit) out.push_back(std::move(line));
@@ -136,9 +144,11 @@ std::vector<std::string> comparePermuted(const CasePermutation& p, const Results
   for (const UndefinedRay& u : original.undefined) undefinedA.insert(u.ray);
   for (const UndefinedRay& u : permuted.undefined) undefinedB.insert(u.ray);
   for (uint32_t ray : undefinedA)
-    if (!undefinedB.count(ray)) note(seed + "ray " + std::to_string(ray) + " undefined only in the original");
+    if (!undefinedB.count(ray))
+      note(seed + "ray " + std::to_string(ray) + " undefined only in the original");
   for (uint32_t ray : undefinedB)
-    if (!undefinedA.count(ray)) note(seed + "ray " + std::to_string(ray) + " undefined only in the permutation");
+    if (!undefinedA.count(ray))
+      note(seed + "ray " + std::to_string(ray) + " undefined only in the permutation");
   std::map<uint32_t, const RayAmbiguity*> ambiguous;
   for (const RayAmbiguity& a : original.ambiguous) ambiguous[a.ray] = &a;
   const Records orig(original), perm(permuted);
@@ -151,15 +161,16 @@ std::vector<std::string> comparePermuted(const CasePermutation& p, const Results
       bool ok = false;
       for (const Candidate& k : it->second->candidates) ok = ok || legal(led, k);
       if (!ok)
-        note(which + "ambiguous (" + ambiguityReasonName(it->second->reason) + "), the permutation answers " +
-             describe(led) + ", not a legal answer");
+        note(which + "ambiguous (" + ambiguityReasonName(it->second->reason) +
+             "), the permutation answers " + describe(led) + ", not a legal answer");
       continue;
     }
     if (const std::string field = movedField(p, orig, perm, ray); !field.empty())
-      note(which + "clear, " + field + " moved: " + describe(originalAnswer(orig, ray)) + " became " +
-           describe(ledBack(p, perm, ray)));
+      note(which + "clear, " + field + " moved: " + describe(originalAnswer(orig, ray)) +
+           " became " + describe(ledBack(p, perm, ray)));
   }
-  if (original.ambiguous.empty() && original.undefined.empty() && original.counters != permuted.counters)
+  if (original.ambiguous.empty() && original.undefined.empty() &&
+      original.counters != permuted.counters)
     note(seed + "the counters moved");
   return out;
 }

@@ -21,7 +21,7 @@
 namespace rayspec {
 
 // The differences found, one line each (at most `limit`); empty: none.
-std::vector<std::string> comparePermuted(const CasePermutation& p, const Results& original, const Results& permuted,
-                                         size_t limit = 20);
+std::vector<std::string> comparePermuted(const CasePermutation& p, const Results& original,
+                                         const Results& permuted, size_t limit = 20);
 
 }  // namespace rayspec

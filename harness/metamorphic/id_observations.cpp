@@ -28,7 +28,8 @@ struct Observer {
       out.equals.push_back(v);
       return true;
     }
-    // id < v, id <= v (id < v + 1), v < id (not id < v + 1), v <= id (not id < v): one threshold each.
+    // id < v, id <= v (id < v + 1), v < id (not id < v + 1), v <= id (not id < v): one threshold
+    // each.
     const bool idFirst = left;
     const bool strict = e.name == "lt" || e.name == "gt";
     const bool lessThan = (e.name == "lt" || e.name == "le") == idFirst;  // id on the small side
@@ -69,9 +70,9 @@ struct Observer {
       }
       if (s.kind == Stmt::Kind::Call) expr(s.call_index);
       if (s.kind == Stmt::Kind::Trace)
-        for (const std::vector<Expr>* a : {&s.trace.origin, &s.trace.direction, &s.trace.tmin, &s.trace.tmax,
-                                           &s.trace.flags, &s.trace.cull_mask, &s.trace.sbt_offset,
-                                           &s.trace.sbt_stride, &s.trace.miss})
+        for (const std::vector<Expr>* a :
+             {&s.trace.origin, &s.trace.direction, &s.trace.tmin, &s.trace.tmax, &s.trace.flags,
+              &s.trace.cull_mask, &s.trace.sbt_offset, &s.trace.sbt_stride, &s.trace.miss})
           exprs(*a);
       program(s.then_);
       program(s.else_);

@@ -15,10 +15,10 @@
 namespace rayspec {
 
 struct IdObservations {
-  bool exact = false;              // the id itself is observed: no id may move
-  bool parity = false;             // odd / even
-  std::vector<uint64_t> equals;    // eq / ne with these literals
-  std::vector<uint64_t> below;     // lt / le / gt / ge: the side of these thresholds (id < T)
+  bool exact = false;            // the id itself is observed: no id may move
+  bool parity = false;           // odd / even
+  std::vector<uint64_t> equals;  // eq / ne with these literals
+  std::vector<uint64_t> below;   // lt / le / gt / ge: the side of these thresholds (id < T)
   // Two ids of one class may be exchanged without a program noticing.
   std::vector<uint64_t> classOf(uint64_t id) const;
 };

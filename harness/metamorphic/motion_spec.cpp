@@ -50,14 +50,17 @@ std::string numberText(double v) {
 std::optional<RigidMotion> parseMotionSpec(const std::string& spec, std::string* why_not) {
   const std::vector<std::string> parts = splitCommas(spec);
   if (parts.size() != 3 && parts.size() != 6) {
-    *why_not = "'" + spec + "': expected three signed axes (e.g. -y,x,z), optionally followed by three translation terms";
+    *why_not = "'" + spec +
+               "': expected three signed axes (e.g. -y,x,z), optionally followed by three "
+               "translation terms";
     return std::nullopt;
   }
   RigidMotion m;
   std::array<int, 3> seen{0, 0, 0};
   for (int k = 0; k < 3; ++k) {
     if (!parseSignedAxis(parts[k], &m.axis[k], &m.sign[k])) {
-      *why_not = "'" + parts[k] + "' (term " + std::to_string(k + 1) + "): not a signed axis (x, -y, +z, ...)";
+      *why_not = "'" + parts[k] + "' (term " + std::to_string(k + 1) +
+                 "): not a signed axis (x, -y, +z, ...)";
       return std::nullopt;
     }
     ++seen[m.axis[k]];
@@ -67,8 +70,10 @@ std::optional<RigidMotion> parseMotionSpec(const std::string& spec, std::string*
     return std::nullopt;
   }
   for (int k = 0; k < 3 && parts.size() == 6; ++k)
-    if (!parseNumber(parts[3 + k], &m.translate[k]) || double(float(m.translate[k])) != m.translate[k]) {
-      *why_not = "'" + parts[3 + k] + "' (term " + std::to_string(4 + k) + "): not a finite number exact in float";
+    if (!parseNumber(parts[3 + k], &m.translate[k]) ||
+        double(float(m.translate[k])) != m.translate[k]) {
+      *why_not = "'" + parts[3 + k] + "' (term " + std::to_string(4 + k) +
+                 "): not a finite number exact in float";
       return std::nullopt;
     }
   return m;
@@ -76,7 +81,8 @@ std::optional<RigidMotion> parseMotionSpec(const std::string& spec, std::string*
 
 std::string motionSpecText(const RigidMotion& m) {
   std::string s;
-  for (int k = 0; k < 3; ++k) s += std::string(k ? "," : "") + (m.sign[k] < 0 ? "-" : "") + char('x' + m.axis[k]);
+  for (int k = 0; k < 3; ++k)
+    s += std::string(k ? "," : "") + (m.sign[k] < 0 ? "-" : "") + char('x' + m.axis[k]);
   if (m.translate != std::array<double, 3>{0, 0, 0})
     for (double t : m.translate) s += "," + numberText(t);
   return s;

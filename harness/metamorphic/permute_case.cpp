@@ -16,7 +16,8 @@ void shuffle(std::vector<uint32_t>& v, std::mt19937_64& rng) {
 }
 
 // new index -> old index, each id kept in its class.
-std::vector<uint32_t> classPermutation(uint32_t n, const IdObservations& seen, std::mt19937_64& rng) {
+std::vector<uint32_t> classPermutation(uint32_t n, const IdObservations& seen,
+                                       std::mt19937_64& rng) {
   std::vector<uint32_t> oldOf(n);
   for (uint32_t i = 0; i < n; ++i) oldOf[i] = i;
   if (seen.exact) return oldOf;
@@ -50,7 +51,8 @@ void permuteTriangles(Geometry& g, const std::vector<uint32_t>& oldOf, std::mt19
     for (int k = 0; k < 3; ++k) g.indices[p * 3 + k] = oldIndices[oldOf[p] * 3 + k];
   // The vertex buffer too: vertex order is invisible, only the indices say
   // which vertices a triangle shares (bit-identical positions stay so).
-  const std::vector<uint32_t> vertexOldOf = anyPermutation(static_cast<uint32_t>(g.vertices.size()), rng);
+  const std::vector<uint32_t> vertexOldOf =
+      anyPermutation(static_cast<uint32_t>(g.vertices.size()), rng);
   std::vector<uint32_t> vertexNewOf(vertexOldOf.size());
   for (uint32_t v = 0; v < vertexOldOf.size(); ++v) vertexNewOf[vertexOldOf[v]] = v;
   const std::vector<Vec3> oldVertices = g.vertices;
@@ -74,7 +76,9 @@ bool CasePermutation::primitivesMoved() const {
   return false;
 }
 
-bool CasePermutation::instancesMoved() const { return moved(instance_of); }
+bool CasePermutation::instancesMoved() const {
+  return moved(instance_of);
+}
 
 CasePermutation permuteCase(const Case& c, uint64_t seed) {
   CasePermutation out;

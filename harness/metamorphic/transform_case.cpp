@@ -30,7 +30,8 @@ bool tracesOnlyTheLaunchRay(const Case& c) {
 // would not move with the case.
 bool setsOwnRay(const Program& p) {
   return std::any_of(p.begin(), p.end(), [](const Stmt& s) {
-    if (s.kind == Stmt::Kind::Trace && (!s.trace.origin.empty() || !s.trace.direction.empty())) return true;
+    if (s.kind == Stmt::Kind::Trace && (!s.trace.origin.empty() || !s.trace.direction.empty()))
+      return true;
     return setsOwnRay(s.then_) || setsOwnRay(s.else_);
   });
 }
@@ -42,7 +43,8 @@ bool anyTraceSetsItsOwnRay(const Case& c) {
   for (const HitGroup& g : c.pipeline.hit_groups)
     for (const auto* p : {&g.closest_hit, &g.any_hit, &g.intersection})
       if (*p) programs.push_back(&**p);
-  return std::any_of(programs.begin(), programs.end(), [](const Program* p) { return setsOwnRay(*p); });
+  return std::any_of(programs.begin(), programs.end(),
+                     [](const Program* p) { return setsOwnRay(*p); });
 }
 
 // a + b, false unless the sum is exact in double (TwoSum's error is zero:
@@ -62,7 +64,8 @@ bool exactSum(float a, double b, float* out) {
 
 }  // namespace
 
-std::optional<Case> moveCase(const Case& c, const RigidMotion& m, std::string* why_not, MoveScope scope) {
+std::optional<Case> moveCase(const Case& c, const RigidMotion& m, std::string* why_not,
+                             MoveScope scope) {
   std::array<int, 3> seen{0, 0, 0};
   for (int k = 0; k < 3; ++k) {
     if (m.axis[k] < 0 || m.axis[k] > 2 || (m.sign[k] != 1 && m.sign[k] != -1)) {

@@ -28,8 +28,8 @@
 namespace rayspec {
 
 struct RigidMotion {
-  std::array<int, 3> axis{0, 1, 2};      // new x[k] = sign[k] * old x[axis[k]] + translate[k]
-  std::array<int, 3> sign{1, 1, 1};      // +1 or -1
+  std::array<int, 3> axis{0, 1, 2};  // new x[k] = sign[k] * old x[axis[k]] + translate[k]
+  std::array<int, 3> sign{1, 1, 1};  // +1 or -1
   std::array<double, 3> translate{0, 0, 0};
 };
 

@@ -43,7 +43,8 @@ struct Grid {
 // A power of two (either sign) within the exponent limit.
 bool exactScale(double x, int limit) {
   int e;
-  return x != 0 && std::isfinite(x) && std::fabs(std::frexp(x, &e)) == 0.5 && std::abs(e - 1) <= limit;
+  return x != 0 && std::isfinite(x) && std::fabs(std::frexp(x, &e)) == 0.5 &&
+         std::abs(e - 1) <= limit;
 }
 
 // A device that multiplies by a rounded reciprocal instead of dividing: with
@@ -53,10 +54,11 @@ bool exactScale(double x, int limit) {
 // comes out as (A * (v - o)) * rcp(A) / d. Exact when A is a power of two
 // (every reciprocal of it is exact), or when that is t for the correctly
 // rounded reciprocal and for one a float step off either way.
-bool rcpMultiplyExact(const DVec3& o, const DVec3& d, const DVec3& v0, const DVec3& v1, const DVec3& v2, int axis,
-                      double t) {
+bool rcpMultiplyExact(const DVec3& o, const DVec3& d, const DVec3& v0, const DVec3& v1,
+                      const DVec3& v2, int axis, double t) {
   const int a = (axis + 1) % 3, b = (axis + 2) % 3;
-  const float area = static_cast<float>(std::fabs((v1[a] - v0[a]) * (v2[b] - v0[b]) - (v1[b] - v0[b]) * (v2[a] - v0[a])));
+  const float area = static_cast<float>(
+      std::fabs((v1[a] - v0[a]) * (v2[b] - v0[b]) - (v1[b] - v0[b]) * (v2[a] - v0[a])));
   if (area == 0) return true;  // no hit to judge
   int e;
   if (std::frexp(area, &e) == 0.5f) return true;  // a power of two: every reciprocal is exact
@@ -85,8 +87,8 @@ bool objectRayExact(InstanceForm form, const Transform& m, const DVec3& o) {
   return g.fits();
 }
 
-ExactEnds exactEnds(const DVec3& o, const DVec3& d, const DVec3& v0, const DVec3& v1, const DVec3& v2, double t,
-                    double tmin, double tmax) {
+ExactEnds exactEnds(const DVec3& o, const DVec3& d, const DVec3& v0, const DVec3& v1,
+                    const DVec3& v2, double t, double tmin, double tmax) {
   ExactEnds r;
   int axis = -1;
   for (int k = 0; k < 3; ++k) {

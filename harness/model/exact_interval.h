@@ -50,7 +50,7 @@ bool objectRayExact(InstanceForm form, const Transform& objectToWorld, const DVe
 struct ExactEnds {
   bool tmin = false, tmax = false;
 };
-ExactEnds exactEnds(const DVec3& o, const DVec3& d, const DVec3& v0, const DVec3& v1, const DVec3& v2, double t,
-                    double tmin, double tmax);
+ExactEnds exactEnds(const DVec3& o, const DVec3& d, const DVec3& v0, const DVec3& v1,
+                    const DVec3& v2, double t, double tmin, double tmax);
 
 }  // namespace rayspec

@@ -45,14 +45,16 @@ InstanceForm instanceForm(const Transform& m) {
   return InstanceForm::ScaledPermutation;
 }
 
-void objectRayFrameError(InstanceForm form, const std::array<double, 12>& inv, const std::array<float, 12>& inv_f,
-                         const DVec3& o, const DVec3& d, FrameError& err) {
+void objectRayFrameError(InstanceForm form, const std::array<double, 12>& inv,
+                         const std::array<float, 12>& inv_f, const DVec3& o, const DVec3& d,
+                         FrameError& err) {
   if (form == InstanceForm::Identity) {
     err.origin = err.direction = DVec3{};
     return;
   }
   if (form == InstanceForm::General) {
-    const Vec3 of = {float(o[0]), float(o[1]), float(o[2])}, df = {float(d[0]), float(d[1]), float(d[2])};
+    const Vec3 of = {float(o[0]), float(o[1]), float(o[2])},
+               df = {float(d[0]), float(d[1]), float(d[2])};
     const ObjectRayError e = objectRayError(inv_f, of, df);
     for (int k = 0; k < 3; ++k) {
       err.origin[k] = e.origin[k];
@@ -61,7 +63,8 @@ void objectRayFrameError(InstanceForm form, const std::array<double, 12>& inv, c
     return;
   }
   for (int k = 0; k < 3; ++k) {
-    double eo = kTranslationRoundings * kUnitRoundoff * std::fabs(inv[k * 4 + 3]), ed = 0, obj = inv[k * 4 + 3];
+    double eo = kTranslationRoundings * kUnitRoundoff * std::fabs(inv[k * 4 + 3]), ed = 0,
+           obj = inv[k * 4 + 3];
     for (int j = 0; j < 3; ++j) {
       const double m = inv[k * 4 + j];
       if (m == 0) continue;
@@ -96,7 +99,7 @@ double instancePad(const std::array<double, 12>& inv, const Transform& m) {
     pad = std::max(pad, s);
   }
   const InstanceForm form = instanceForm(m);
-  const double steps = form == InstanceForm::Identity        ? 0.0
+  const double steps = form == InstanceForm::Identity            ? 0.0
                        : form == InstanceForm::ScaledPermutation ? kPadStepsPermutation
                                                                  : kPadStepsGeneral;
   return std::isfinite(pad) ? steps * kUnitRoundoff * pad : 0.0;

@@ -7,7 +7,9 @@
 
 namespace rayspec {
 
-bool modelInThisBuild() { return false; }
+bool modelInThisBuild() {
+  return false;
+}
 
 Results runOnModel(const Case& c, const Plan&, const ModelOptions& opt) {
   Results r;

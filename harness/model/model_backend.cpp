@@ -1,8 +1,8 @@
 #include "model/model_backend.h"
 
-#include <bit>
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <chrono>
 #include <exception>
 #include <memory>
@@ -24,7 +24,8 @@ namespace {
 // Does a trace statement set its own SBT offset or stride?
 bool setsSbtArguments(const Program& p) {
   for (const Stmt& s : p)
-    if ((s.kind == Stmt::Kind::Trace && (!s.trace.sbt_offset.empty() || !s.trace.sbt_stride.empty())) ||
+    if ((s.kind == Stmt::Kind::Trace &&
+         (!s.trace.sbt_offset.empty() || !s.trace.sbt_stride.empty())) ||
         setsSbtArguments(s.then_) || setsSbtArguments(s.else_))
       return true;
   return false;
@@ -49,7 +50,8 @@ uint64_t hitRecordReach(const Case& c, bool nonOpaque, uint32_t offset, uint32_t
     const Blas& b = c.scene.blases[*inst.blas];
     for (uint64_t g = 0; g < b.geometries.size(); ++g) {
       const Geometry& geom = b.geometries[g];
-      if (nonOpaque && (geom.kind != Geometry::Kind::Triangles || (geom.flags & kGeometryOpaque))) continue;
+      if (nonOpaque && (geom.kind != Geometry::Kind::Triangles || (geom.flags & kGeometryOpaque)))
+        continue;
       top = std::max<uint64_t>(top, uint64_t{inst.sbt_offset & 0xFFFFFF} + stride * g + offset + 1);
     }
   }
@@ -62,7 +64,8 @@ uint64_t hitRecordReach(const Case& c, bool nonOpaque, uint32_t offset, uint32_t
 // values could reach beyond the region: a scan of every launch ray is a
 // serial pass over the whole ray list before any thread starts.
 bool hitRecordMayBeOutOfRange(const Case& c, bool nonOpaque) {
-  const size_t region = c.pipeline.sbt_hit.empty() ? c.pipeline.hit_groups.size() : c.pipeline.sbt_hit.size();
+  const size_t region =
+      c.pipeline.sbt_hit.empty() ? c.pipeline.hit_groups.size() : c.pipeline.sbt_hit.size();
   if (hitRecordReach(c, nonOpaque, 0xF, 0xF) <= region) return false;
   if (setsSbtArguments(c.pipeline)) return true;
   uint32_t offset = c.rays.defaults.sbt_offset & 0xF, stride = c.rays.defaults.sbt_stride & 0xF;
@@ -124,7 +127,8 @@ std::vector<const RecordField*> prepareImages(Results& r, const Plan& plan) {
 
 // The texels of launch indices [begin, end) from their records: a uint
 // field's word, or a float field's words as rgba (missing channels 0, alpha 1).
-void writeTexels(Image& img, const RecordField& f, const uint32_t* records, size_t begin, size_t end) {
+void writeTexels(Image& img, const RecordField& f, const uint32_t* records, size_t begin,
+                 size_t end) {
   const uint32_t words = recordWords();
   const uint32_t oneBits = std::bit_cast<uint32_t>(1.0f);
   uint32_t* texels = img.texels.data();
@@ -134,7 +138,8 @@ void writeTexels(Image& img, const RecordField& f, const uint32_t* records, size
       texels[i] = rec[f.offset];
       continue;
     }
-    for (uint32_t k = 0; k < 4; ++k) texels[i * 4 + k] = k < f.words ? rec[f.offset + k] : (k == 3 ? oneBits : 0u);
+    for (uint32_t k = 0; k < 4; ++k)
+      texels[i * 4 + k] = k < f.words ? rec[f.offset + k] : (k == 3 ? oneBits : 0u);
   }
 }
 
@@ -156,7 +161,9 @@ void adviseHugePages(void* p, size_t bytes) {
 
 }  // namespace
 
-bool modelInThisBuild() { return true; }
+bool modelInThisBuild() {
+  return true;
+}
 
 Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
@@ -169,8 +176,9 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
   for (const std::string& name : plan.counters) r.counters[name] = 0;
   const size_t n = static_cast<size_t>(c.rays.width) * c.rays.height;
   if (c.rays.rays.size() != n) {
-    r.setStatus(RunStatus::Crash, "the case has " + std::to_string(c.rays.rays.size()) + " rays for a " +
-               std::to_string(c.rays.width) + "x" + std::to_string(c.rays.height) + " launch");
+    r.setStatus(RunStatus::Crash, "the case has " + std::to_string(c.rays.rays.size()) +
+                                      " rays for a " + std::to_string(c.rays.width) + "x" +
+                                      std::to_string(c.rays.height) + " launch");
     return r;
   }
   try {
@@ -179,24 +187,28 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
     ModelScene scene;
     // Per-primitive triangles are read by candidates, own tests, or the
     // facing of a direct hit when a program reads hit_kind.
-    buildModelScene(scene, c, opt.tier, needsCandidates(c, plan, opt.tier), programs.reads(kBiHitKind));
+    buildModelScene(scene, c, opt.tier, needsCandidates(c, plan, opt.tier),
+                    programs.reads(kBiHitKind));
     ModelShared shared;
     shared.c = &c;
     shared.plan = &plan;
     shared.scene = &scene;
     shared.programs = &programs;
-    shared.direct = !scene.filters && !hasOwnTriangles(scene) && opt.order == CandidateOrder::Distance;
+    shared.direct =
+        !scene.filters && !hasOwnTriangles(scene) && opt.order == CandidateOrder::Distance;
     shared.order = opt.order;
     shared.need_facing = programs.reads(kBiHitKind);
     shared.deviation = opt.deviation;
     // Read by the candidate path only (Machine::checkCandidates): a direct
     // run sees no candidates, so it is not worked out there.
-    shared.check_candidates = !shared.direct && (hitRecordMayBeOutOfRange(c, false) || hasNanTriangles(scene));
+    shared.check_candidates =
+        !shared.direct && (hitRecordMayBeOutOfRange(c, false) || hasNanTriangles(scene));
     shared.raygen_traces_launch_ray =
         programs.raygen.size() == 1 && programs.raygen[0].kind == Stmt::Kind::Trace &&
-        std::none_of(programs.raygen[0].has.begin(), programs.raygen[0].has.end(), [](bool b) { return b; });
-    shared.need_object_ray =
-        programs.reads(kBiObjectOrigin) || programs.reads(kBiObjectDirection) || programs.reads_sphere;
+        std::none_of(programs.raygen[0].has.begin(), programs.raygen[0].has.end(),
+                     [](bool b) { return b; });
+    shared.need_object_ray = programs.reads(kBiObjectOrigin) ||
+                             programs.reads(kBiObjectDirection) || programs.reads_sphere;
     scene_time.stop();
     StepTimer trace_time(r.cost, CostStep::ModelTrace);
     // Left unwritten here (BulkWords): each worker zeroes the records of its
@@ -208,9 +220,11 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
     if (records) adviseHugePages(records, n * words * sizeof(uint32_t));
     const std::vector<const RecordField*> imageFields =
         plan.records ? prepareImages(r, plan) : std::vector<const RecordField*>{};
-    for (Image& img : r.images) adviseHugePages(img.texels.data(), img.texels.size() * sizeof(uint32_t));
+    for (Image& img : r.images)
+      adviseHugePages(img.texels.data(), img.texels.size() * sizeof(uint32_t));
 
-    unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+    unsigned threads =
+        opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
     threads = static_cast<unsigned>(std::min<size_t>(threads, std::max<size_t>(1, n / 64)));
     // Each worker builds its own Machine in its own thread (its counters and
     // vectors come from that thread's malloc arena, never a cache line
@@ -231,7 +245,8 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
           const size_t end = std::min(n, begin + chunk);
           if (records) std::fill(records + begin * words, records + end * words, 0u);
           m.runRays(static_cast<uint32_t>(begin), static_cast<uint32_t>(end));
-          for (size_t k = 0; k < imageFields.size(); ++k) writeTexels(r.images[k], *imageFields[k], records, begin, end);
+          for (size_t k = 0; k < imageFields.size(); ++k)
+            writeTexels(r.images[k], *imageFields[k], records, begin, end);
         }
       } catch (...) {
         failures[t] = std::current_exception();  // rethrown below, after the join
@@ -249,7 +264,8 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
       if (f) std::rethrow_exception(f);
     for (auto& m : machines) {
       if (!m) continue;
-      for (size_t k = 0; k < plan.counters.size(); ++k) r.counters[plan.counters[k]] += m->counters[k];
+      for (size_t k = 0; k < plan.counters.size(); ++k)
+        r.counters[plan.counters[k]] += m->counters[k];
       r.ambiguous.insert(r.ambiguous.end(), m->ambiguous.begin(), m->ambiguous.end());
       r.t_bounds.insert(r.t_bounds.end(), m->t_bounds.begin(), m->t_bounds.end());
       r.undefined.insert(r.undefined.end(), m->undefined.begin(), m->undefined.end());
@@ -260,8 +276,9 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
     std::sort(r.undefined.begin(), r.undefined.end(),
               [](const UndefinedRay& a, const UndefinedRay& b) { return a.ray < b.ray; });
     // One bound per ray (the widest of its traces), in ray order.
-    std::sort(r.t_bounds.begin(), r.t_bounds.end(),
-              [](const TBound& a, const TBound& b) { return a.ray < b.ray || (a.ray == b.ray && a.bound > b.bound); });
+    std::sort(r.t_bounds.begin(), r.t_bounds.end(), [](const TBound& a, const TBound& b) {
+      return a.ray < b.ray || (a.ray == b.ray && a.bound > b.bound);
+    });
     r.t_bounds.erase(std::unique(r.t_bounds.begin(), r.t_bounds.end(),
                                  [](const TBound& a, const TBound& b) { return a.ray == b.ray; }),
                      r.t_bounds.end());

@@ -26,7 +26,8 @@
 namespace rayspec {
 
 enum class ModelTier { Fast, Robust, Exact };
-ModelTier parseModelTier(const std::string& name);  // fast|robust|exact; throws std::invalid_argument
+ModelTier parseModelTier(
+    const std::string& name);  // fast|robust|exact; throws std::invalid_argument
 const char* modelTierName(ModelTier t);
 
 // Test only (planted faults, harness/fault/): the model breaks one rule the

@@ -20,7 +20,8 @@ using namespace trace_detail;
 
 void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& candidates,
                             const std::vector<std::pair<size_t, double>>& reports,
-                            const std::vector<ShaderDecision>& shaderUnsure, const Payload& payloadIn) {
+                            const std::vector<ShaderDecision>& shaderUnsure,
+                            const Payload& payloadIn) {
   const std::vector<ModelCandidate>* cands = &candidates;
   const ModelScene& scene = *sh_.scene;
   const TraceRay& r = tr.ray;
@@ -33,16 +34,19 @@ void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& ca
     const ModelInstance& mi = scene.instances[cand.instance];
     const ModelGeometry& g = scene.blases[mi.blas].geometries[cand.geometry];
     const bool opaque = resolveOpaque(g.flags, mi.src->flags, tr.flags);
-    if (((tr.flags & kRayCullOpaque) && opaque) || ((tr.flags & kRayCullNoOpaque) && !opaque)) return false;
+    if (((tr.flags & kRayCullOpaque) && opaque) || ((tr.flags & kRayCullNoOpaque) && !opaque))
+      return false;
     if (facing(scene, cand, r, tr.flags).culled) return false;
     // R-CAND-TRI-OPEN: at or beyond an end every device judges exactly.
-    if ((cand.exact_tmin && cand.t <= r.tmin) || (cand.exact_tmax && cand.t >= r.tmax)) return false;
+    if ((cand.exact_tmin && cand.t <= r.tmin) || (cand.exact_tmax && cand.t >= r.tmax))
+      return false;
     const double tl = tr.endTol(cand);
     return !(cand.t < r.tmin - tl || cand.t > r.tmax + tl);
   };
   auto add = [&](bool hit, uint32_t i, uint32_t g, uint32_t p) {
     for (const Candidate& k : amb.candidates)
-      if (k.hit == hit && (!hit || (k.instance == i && k.geometry == g && k.primitive == p))) return;
+      if (k.hit == hit && (!hit || (k.instance == i && k.geometry == g && k.primitive == p)))
+        return;
     amb.candidates.push_back({hit, i, g, p});
   };
   std::vector<size_t> unsure;  // candidates whose decision could flip
@@ -62,7 +66,8 @@ void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& ca
     const double tl = tr.tol(cand.t);
     std::optional<AmbiguityReason> why;
     if (cand.ambiguity != TriAmbiguity::None && cand.t <= finalT + tl)
-      why = cand.ambiguity == TriAmbiguity::Vertex ? AmbiguityReason::Vertex : AmbiguityReason::Edge;
+      why =
+          cand.ambiguity == TriAmbiguity::Vertex ? AmbiguityReason::Vertex : AmbiguityReason::Edge;
     // R-CAND-TRI-OPEN: an interval end is a tie only where a device's t may
     // round across it (model/exact_interval.h).
     else if (cand.hit && !cand.exact_tmin && std::fabs(cand.t - r.tmin) <= tr.endTol(cand))
@@ -98,15 +103,18 @@ void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& ca
     // The legal answers: this run's, and those of the what-if runs where
     // the unsure candidates decide otherwise (whatIf).
     auto addCommitted = [&](const Committed& b) {
-      if (b.valid) add(true, b.instance, b.geometry, b.primitive);
-      else add(false, 0, 0, 0);
+      if (b.valid)
+        add(true, b.instance, b.geometry, b.primitive);
+      else
+        add(false, 0, 0, 0);
     };
     addCommitted(tr.best);
     for (const Committed& b : whatIf(tr, *cands, unsure, payloadIn)) {
-      const bool same = b.valid == tr.best.valid &&
-                        (!b.valid || (b.instance == tr.best.instance && b.geometry == tr.best.geometry &&
-                                      b.primitive == tr.best.primitive && b.kind == tr.best.kind &&
-                                      std::fabs(b.t - tr.best.t) <= tr.tol(b.t)));
+      const bool same =
+          b.valid == tr.best.valid &&
+          (!b.valid || (b.instance == tr.best.instance && b.geometry == tr.best.geometry &&
+                        b.primitive == tr.best.primitive && b.kind == tr.best.kind &&
+                        std::fabs(b.t - tr.best.t) <= tr.tol(b.t)));
       if (!same && !reason) reason = AmbiguityReason::AabbFace;
       addCommitted(b);
     }
@@ -156,11 +164,13 @@ void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& ca
     const bool before = !amb.candidates.empty();
     bool differs = false, differsFirst = false;
     auto addOne = [&](const Committed& b) {
-      if (b.valid) add(true, b.instance, b.geometry, b.primitive);
-      else add(false, 0, 0, 0);
-      const bool d = b.valid != tr.best.valid ||
-                     (b.valid && (b.instance != tr.best.instance || b.geometry != tr.best.geometry ||
-                                  b.primitive != tr.best.primitive));
+      if (b.valid)
+        add(true, b.instance, b.geometry, b.primitive);
+      else
+        add(false, 0, 0, 0);
+      const bool d = b.valid != tr.best.valid || (b.valid && (b.instance != tr.best.instance ||
+                                                              b.geometry != tr.best.geometry ||
+                                                              b.primitive != tr.best.primitive));
       differs = differs || d;
       return d;
     };
@@ -176,7 +186,9 @@ void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& ca
       }
     const bool ambiguousNow = tofh ? differs : (differs || tied.size() >= 2);
     if (ambiguousNow && !reason)
-      reason = tofh ? AmbiguityReason::FirstHit : differsFirst ? AmbiguityReason::Order : AmbiguityReason::TTie;
+      reason = tofh           ? AmbiguityReason::FirstHit
+               : differsFirst ? AmbiguityReason::Order
+                              : AmbiguityReason::TTie;
     if (!ambiguousNow && !before) amb.candidates.resize(saved);
   }
   // R-PREC: an intersection program's decision that rounding may flip
@@ -184,8 +196,10 @@ void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& ca
   // what-if run; the ray is ambiguous, as the device's counters may differ.
   if (!shaderUnsure.empty()) {
     auto addCommitted = [&](const Committed& b) {
-      if (b.valid) add(true, b.instance, b.geometry, b.primitive);
-      else add(false, 0, 0, 0);
+      if (b.valid)
+        add(true, b.instance, b.geometry, b.primitive);
+      else
+        add(false, 0, 0, 0);
     };
     addCommitted(tr.best);
     for (const ShaderDecision& d : shaderUnsure) {
@@ -212,7 +226,8 @@ void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& ca
 
 // R-ORDER-UNSPEC: an any-hit that may terminate runs on one of the candidates
 // (a box, or a non-opaque triangle in the interval): the order decides.
-bool Machine::anyHitMayTerminate(const Traversal& tr, const std::vector<ModelCandidate>& cands) const {
+bool Machine::anyHitMayTerminate(const Traversal& tr,
+                                 const std::vector<ModelCandidate>& cands) const {
   if (!sh_.programs->any_hit_terminates) return false;
   const ModelScene& scene = *sh_.scene;
   for (const ModelCandidate& cand : cands) {
@@ -234,17 +249,20 @@ bool Machine::sphereHitDecision(StageEnv& env, bool modelValue, float disc) {
   if (tr->shader_unsure && env.hit && env.ray) {
     const HitView& h = *env.hit;
     const ModelInstance& mi = sh_.scene->instances[h.instance];
-    const SphereError se = sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
-                                       objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
-    if (std::fabs(double(disc)) <= se.disc_err) tr->shader_unsure->push_back({tr->cur_index, 0, ord, modelValue});
+    const SphereError se =
+        sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
+                    objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
+    if (std::fabs(double(disc)) <= se.disc_err)
+      tr->shader_unsure->push_back({tr->cur_index, 0, ord, modelValue});
   }
   return modelValue;
 }
 
 // One what-if run of the decision in a sandbox: counters, record and error
 // are restored afterwards, the payload is a copy of the trace's incoming one.
-Committed Machine::sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands, const int8_t* force,
-                           long prefer, long first, const Payload& payloadIn, const ShaderDecision* shaderForce) {
+Committed Machine::sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands,
+                           const int8_t* force, long prefer, long first, const Payload& payloadIn,
+                           const ShaderDecision* shaderForce) {
   const std::vector<uint64_t> savedCounters = counters;
   const std::string savedError = error;
   std::vector<uint32_t> savedRecord;
@@ -279,17 +297,21 @@ Committed Machine::sandbox(const Traversal& actual, const std::vector<ModelCandi
 // shared edge's triangles is hit); a group of one may also be no hit. Stage
 // programs run again, in a sandbox: their counters, record and payload
 // effects are undone.
-std::vector<Committed> Machine::whatIf(const Traversal& actual, const std::vector<ModelCandidate>& cands,
-                                       const std::vector<size_t>& unsure, const Payload& payloadIn) {
+std::vector<Committed> Machine::whatIf(const Traversal& actual,
+                                       const std::vector<ModelCandidate>& cands,
+                                       const std::vector<size_t>& unsure,
+                                       const Payload& payloadIn) {
   std::vector<Committed> out;
   if (unsure.empty()) return out;
   std::vector<int8_t> force(cands.size(), -1);
-  auto run = [&] { out.push_back(sandbox(actual, cands, force.data(), -1, -1, payloadIn)); };
+  auto run = [&] {
+    out.push_back(sandbox(actual, cands, force.data(), -1, -1, payloadIn));
+  };
   size_t g0 = 0;
   while (g0 < unsure.size()) {
     size_t g1 = g0 + 1;
-    while (g1 < unsure.size() &&
-           std::fabs(cands[unsure[g1]].t - cands[unsure[g1 - 1]].t) <= actual.tol(cands[unsure[g1]].t))
+    while (g1 < unsure.size() && std::fabs(cands[unsure[g1]].t - cands[unsure[g1 - 1]].t) <=
+                                     actual.tol(cands[unsure[g1]].t))
       ++g1;
     for (size_t a = g0; a < g1; ++a) {
       for (size_t b = g0; b < g1; ++b) force[unsure[b]] = a == b ? 1 : 0;

@@ -15,8 +15,8 @@ namespace {
 // Embree's own closest hit (no filters, no culls, no AABBs in this case); the
 // open interval by moving Embree's ends. No culls here, so the facing only
 // gives hit_kind: computed when a program reads it.
-Committed embreeClosestHit(const ModelScene& scene, RTCIntersectContext& ctx, const TraceRay& r, uint32_t flags,
-                           bool needFacing) {
+Committed embreeClosestHit(const ModelScene& scene, RTCIntersectContext& ctx, const TraceRay& r,
+                           uint32_t flags, bool needFacing) {
   Committed best;
   RTCRayHit rh = embreeRay(r, flags);
   if (!validRay(r, rh)) return best;
@@ -24,7 +24,8 @@ Committed embreeClosestHit(const ModelScene& scene, RTCIntersectContext& ctx, co
   rh.ray.tfar = nextDown(r.tmax);
   rtcIntersect1(scene.top, &ctx, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return best;
-  best = {true, rh.ray.tfar, rh.hit.instID[0], rh.hit.geomID, rh.hit.primID, 0xFEu, rh.hit.u, rh.hit.v};
+  best = {true,          rh.ray.tfar, rh.hit.instID[0], rh.hit.geomID,
+          rh.hit.primID, 0xFEu,       rh.hit.u,         rh.hit.v};
   if (needFacing) {
     ModelCandidate cand;
     cand.instance = best.instance;
@@ -46,8 +47,9 @@ Committed Machine::directHit(const TraceRay& r, uint32_t flags) {
 namespace {
 
 // Ray flags that some combination makes undefined (checkRayParameters).
-constexpr uint32_t kExclusiveRayFlags = kRayOpaque | kRayNoOpaque | kRayCullOpaque | kRayCullNoOpaque |
-                                        kRayCullBackFacing | kRayCullFrontFacing | kRaySkipTriangles | kRaySkipAabbs;
+constexpr uint32_t kExclusiveRayFlags = kRayOpaque | kRayNoOpaque | kRayCullOpaque |
+                                        kRayCullNoOpaque | kRayCullBackFacing |
+                                        kRayCullFrontFacing | kRaySkipTriangles | kRaySkipAabbs;
 
 bool sameTraceParameters(const Ray& a, const Ray& b) {
   return a.flags == b.flags && a.cull_mask == b.cull_mask && a.sbt_offset == b.sbt_offset &&
@@ -89,7 +91,8 @@ void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
   const CountsOnly* missCounts = nullptr;
   if (quick) {
     const uint32_t mi = r0.miss & 0xFFFF;
-    if (mi < default_miss_.size() && default_miss_[mi].group && *default_miss_[mi].group < programs.miss.size() &&
+    if (mi < default_miss_.size() && default_miss_[mi].group &&
+        *default_miss_[mi].group < programs.miss.size() &&
         programs.miss_counts[*default_miss_[mi].group].yes)
       missCounts = &programs.miss_counts[*default_miss_[mi].group];
   }
@@ -112,10 +115,10 @@ void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
     if (rec) rec[runsRaygen] += 1;
     // embreeRay + validRay + embreeClosestHit, for the launch ray itself.
     RTCRayHit rh = embreeRay(ray, flags);
-    const bool valid = finiteBits(ray.origin[0]) & finiteBits(ray.origin[1]) & finiteBits(ray.origin[2]) &
-                       finiteBits(ray.direction[0]) & finiteBits(ray.direction[1]) &
-                       finiteBits(ray.direction[2]) & (ray.tmin >= 0.0f) & (ray.tmin <= ray.tmax) &
-                       ((ray.cull_mask & 0xFF) != 0);
+    const bool valid = finiteBits(ray.origin[0]) & finiteBits(ray.origin[1]) &
+                       finiteBits(ray.origin[2]) & finiteBits(ray.direction[0]) &
+                       finiteBits(ray.direction[1]) & finiteBits(ray.direction[2]) &
+                       (ray.tmin >= 0.0f) & (ray.tmin <= ray.tmax) & ((ray.cull_mask & 0xFF) != 0);
     ray_undefined_ = false;
     if (!valid || (ray.flags & kExclusiveRayFlags)) {
       // R-UB: diagnosed; such a ray is not traced (a miss) or keeps its flags.
@@ -134,8 +137,9 @@ void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
           lastInstance = rh.hit.instID[0];
           lastGeometry = rh.hit.geomID;
           const CHitGroup* grp = groupOf(programs, hitRecord(lastInstance, lastGeometry, r0));
-          const CountsOnly* k =
-              grp && grp->closest_hit && grp->closest_hit_counts.yes ? &grp->closest_hit_counts : nullptr;
+          const CountsOnly* k = grp && grp->closest_hit && grp->closest_hit_counts.yes
+                                    ? &grp->closest_hit_counts
+                                    : nullptr;
           if (k != hitCounts) {
             flush(hitCounts, hitPending);
             hitCounts = k;
@@ -156,7 +160,8 @@ void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
     const TraceRay r = launchRay(ray);
     Committed h;
     if (hit) {
-      h = {true, rh.ray.tfar, rh.hit.instID[0], rh.hit.geomID, rh.hit.primID, 0xFEu, rh.hit.u, rh.hit.v};
+      h = {true,          rh.ray.tfar, rh.hit.instID[0], rh.hit.geomID,
+           rh.hit.primID, 0xFEu,       rh.hit.u,         rh.hit.v};
       if (sh_.need_facing) {
         ModelCandidate cand;
         cand.instance = h.instance;

@@ -13,15 +13,37 @@
 namespace rayspec {
 namespace {
 
-uint32_t fbits(float f) { return std::bit_cast<uint32_t>(f); }
-float bitsf(uint32_t u) { return std::bit_cast<float>(u); }
+uint32_t fbits(float f) {
+  return std::bit_cast<uint32_t>(f);
+}
+float bitsf(uint32_t u) {
+  return std::bit_cast<float>(u);
+}
 
-Val fromVec3(const Vec3& v) { Val r; r.f = {v[0], v[1], v[2], 0}; return r; }
-Val fromVec4(const std::array<float, 4>& v) { Val r; r.f = v; return r; }
-Val fromUint(uint32_t u) { Val r; r.u = u; return r; }
-Val fromFloat(float f) { Val r; r.f[0] = f; return r; }
+Val fromVec3(const Vec3& v) {
+  Val r;
+  r.f = {v[0], v[1], v[2], 0};
+  return r;
+}
+Val fromVec4(const std::array<float, 4>& v) {
+  Val r;
+  r.f = v;
+  return r;
+}
+Val fromUint(uint32_t u) {
+  Val r;
+  r.u = u;
+  return r;
+}
+Val fromFloat(float f) {
+  Val r;
+  r.f[0] = f;
+  return r;
+}
 
-bool isVec(ValueType t) { return t == ValueType::Vec2 || t == ValueType::Vec3 || t == ValueType::Vec4; }
+bool isVec(ValueType t) {
+  return t == ValueType::Vec2 || t == ValueType::Vec3 || t == ValueType::Vec4;
+}
 
 std::vector<SbtRecord> defaults(size_t n) {
   std::vector<SbtRecord> v(n);
@@ -37,8 +59,8 @@ Machine::Machine(const ModelShared& shared, uint32_t* records) : sh_(shared), re
   default_miss_ = p.sbt_miss.empty() ? defaults(p.miss.size()) : p.sbt_miss;
   default_hit_ = p.sbt_hit.empty() ? defaults(p.hit_groups.size()) : p.sbt_hit;
   default_callable_ = p.sbt_callable.empty() ? defaults(p.callables.size()) : p.sbt_callable;
-  const char* runs[6] = {"raygen_runs", "miss_runs", "closest_hit_runs", "any_hit_runs",
-                         "intersection_runs", "callable_runs"};
+  const char* runs[6] = {"raygen_runs",  "miss_runs",         "closest_hit_runs",
+                         "any_hit_runs", "intersection_runs", "callable_runs"};
   for (int k = 0; k < 6; ++k) runs_offset_[k] = findRecordField(runs[k])->offset;
   slots_offset_ = findRecordField("any_hit_slots")->offset;
   repeats_offset_ = findRecordField("any_hit_repeats")->offset;
@@ -74,54 +96,94 @@ Val Machine::builtin(const CExpr& e, StageEnv& env) {
   const Payload* pl = env.payload ? env.payload : &kNoPayload;
   const CallData* cd = env.call ? env.call : &kNoCall;
   switch (e.builtin) {
-    case kBiLaunchX: return fromUint(x_);
-    case kBiLaunchY: return fromUint(y_);
-    case kBiLaunchW: return fromUint(sh_.c->rays.width);
-    case kBiLaunchH: return fromUint(sh_.c->rays.height);
-    case kBiPrimitive: return fromUint(hv->primitive);
-    case kBiInstance: return fromUint(hv->instance);
-    case kBiCustomIndex: return fromUint(hv->custom_index);
-    case kBiGeometry: return fromUint(hv->geometry);
-    case kBiHitKind: return fromUint(hv->hit_kind);
-    case kBiHitT: return fromFloat(hv->t);
-    case kBiHit: return fromUint(env.stage == Stage::ClosestHit ? 1u : 0u);
-    case kBiBarycentrics: { Val v; v.f = {hv->b1, hv->b2, 0, 0}; return v; }
-    case kBiAabbMin: return fromVec3(hv->aabb_min);
-    case kBiAabbMax: return fromVec3(hv->aabb_max);
-    case kBiObjectOrigin: return fromVec3(hv->object_origin);
-    case kBiObjectDirection: return fromVec3(hv->object_direction);
-    case kBiTmin: return fromFloat(r->tmin);
-    case kBiTmax: return fromFloat(env.tmax_view);
-    case kBiFlags: return fromUint(r->flags);
-    case kBiWorldOrigin: return fromVec3(r->origin);
-    case kBiWorldDirection: return fromVec3(r->direction);
+    case kBiLaunchX:
+      return fromUint(x_);
+    case kBiLaunchY:
+      return fromUint(y_);
+    case kBiLaunchW:
+      return fromUint(sh_.c->rays.width);
+    case kBiLaunchH:
+      return fromUint(sh_.c->rays.height);
+    case kBiPrimitive:
+      return fromUint(hv->primitive);
+    case kBiInstance:
+      return fromUint(hv->instance);
+    case kBiCustomIndex:
+      return fromUint(hv->custom_index);
+    case kBiGeometry:
+      return fromUint(hv->geometry);
+    case kBiHitKind:
+      return fromUint(hv->hit_kind);
+    case kBiHitT:
+      return fromFloat(hv->t);
+    case kBiHit:
+      return fromUint(env.stage == Stage::ClosestHit ? 1u : 0u);
+    case kBiBarycentrics: {
+      Val v;
+      v.f = {hv->b1, hv->b2, 0, 0};
+      return v;
+    }
+    case kBiAabbMin:
+      return fromVec3(hv->aabb_min);
+    case kBiAabbMax:
+      return fromVec3(hv->aabb_max);
+    case kBiObjectOrigin:
+      return fromVec3(hv->object_origin);
+    case kBiObjectDirection:
+      return fromVec3(hv->object_direction);
+    case kBiTmin:
+      return fromFloat(r->tmin);
+    case kBiTmax:
+      return fromFloat(env.tmax_view);
+    case kBiFlags:
+      return fromUint(r->flags);
+    case kBiWorldOrigin:
+      return fromVec3(r->origin);
+    case kBiWorldDirection:
+      return fromVec3(r->direction);
     case kBiHitPosition: {
       Vec3 p;
       for (int k = 0; k < 3; ++k) p[k] = r->origin[k] + hv->t * r->direction[k];
       return fromVec3(p);
     }
-    case kBiPayloadColor: return fromVec4(pl->color);
-    case kBiPayloadValue: return fromUint(pl->value);
-    case kBiDepth: return fromUint(env.depth);
-    case kBiChildColor: return fromVec4(env.child.color);
-    case kBiChildValue: return fromUint(env.child.value);
-    case kBiCallPosition: return fromVec3(cd->position);
-    case kBiCallNormal: return fromVec3(cd->normal);
-    case kBiCallColor: return fromVec4(cd->color);
-    case kBiCallValue: return fromUint(cd->value);
-    case kBiCalleeColor: return fromVec4(env.callee.color);
-    case kBiCalleeValue: return fromUint(env.callee.value);
-    default: break;
+    case kBiPayloadColor:
+      return fromVec4(pl->color);
+    case kBiPayloadValue:
+      return fromUint(pl->value);
+    case kBiDepth:
+      return fromUint(env.depth);
+    case kBiChildColor:
+      return fromVec4(env.child.color);
+    case kBiChildValue:
+      return fromUint(env.child.value);
+    case kBiCallPosition:
+      return fromVec3(cd->position);
+    case kBiCallNormal:
+      return fromVec3(cd->normal);
+    case kBiCallColor:
+      return fromVec4(cd->color);
+    case kBiCallValue:
+      return fromUint(cd->value);
+    case kBiCalleeColor:
+      return fromVec4(env.callee.color);
+    case kBiCalleeValue:
+      return fromUint(env.callee.value);
+    default:
+      break;
   }
-  if (error.empty()) error = "model: unknown built-in '" + (e.src ? e.src->name : std::string("?")) + "'";
+  if (error.empty())
+    error = "model: unknown built-in '" + (e.src ? e.src->name : std::string("?")) + "'";
   return Val{};
 }
 
 Val Machine::eval(const CExpr& e, StageEnv& env) {
   switch (e.kind) {
-    case Expr::Kind::Literal: return e.literal;
-    case Expr::Kind::Builtin: return builtin(e, env);
-    case Expr::Kind::Op: return op(e, env);
+    case Expr::Kind::Literal:
+      return e.literal;
+    case Expr::Kind::Builtin:
+      return builtin(e, env);
+    case Expr::Kind::Op:
+      return op(e, env);
   }
   return Val{};
 }
@@ -135,15 +197,19 @@ Val Machine::op(const CExpr& e, StageEnv& env) {
     case OpCode::SphereFar: {
       static const HitView kNone;
       const HitView* hv = env.hit ? env.hit : &kNone;
-      SphereRoots s = sphereRoots(hv->aabb_min, hv->aabb_max, hv->object_origin, hv->object_direction);
-      if (n == OpCode::SphereHit) r.b = env.traversal ? sphereHitDecision(env, s.hit, s.disc) : s.hit;
-      else r.f[0] = n == OpCode::SphereNear ? s.t_near : s.t_far;
+      SphereRoots s =
+          sphereRoots(hv->aabb_min, hv->aabb_max, hv->object_origin, hv->object_direction);
+      if (n == OpCode::SphereHit)
+        r.b = env.traversal ? sphereHitDecision(env, s.hit, s.disc) : s.hit;
+      else
+        r.f[0] = n == OpCode::SphereNear ? s.t_near : s.t_far;
       return r;
     }
     case OpCode::RecordUint:
     case OpCode::RecordFloat: {
       const uint32_t i = e.index;
-      const uint32_t w = env.record_data && i < env.record_data->size() ? (*env.record_data)[i] : 0u;
+      const uint32_t w =
+          env.record_data && i < env.record_data->size() ? (*env.record_data)[i] : 0u;
       return n == OpCode::RecordUint ? fromUint(w) : fromFloat(bitsf(w));
     }
     case OpCode::And:
@@ -151,51 +217,75 @@ Val Machine::op(const CExpr& e, StageEnv& env) {
       const bool isAnd = n == OpCode::And;
       for (const CExpr& a : e.args) {
         const bool b = eval(a, env).b;
-        if (isAnd && !b) { r.b = false; return r; }
-        if (!isAnd && b) { r.b = true; return r; }
+        if (isAnd && !b) {
+          r.b = false;
+          return r;
+        }
+        if (!isAnd && b) {
+          r.b = true;
+          return r;
+        }
       }
       r.b = isAnd;
       return r;
     }
     case OpCode::Unknown:
-      if (error.empty()) error = "model: unknown op '" + (e.src ? e.src->name : std::string("?")) + "'";
+      if (error.empty())
+        error = "model: unknown op '" + (e.src ? e.src->name : std::string("?")) + "'";
       return r;
-    default: break;
+    default:
+      break;
   }
   // Every remaining op takes at most 4 arguments (vec4).
   Val a[4];
   const size_t na = std::min<size_t>(e.args.size(), 4);
   for (size_t i = 0; i < na; ++i) a[i] = eval(e.args[i], env);
-  auto type = [&](size_t i) { return e.args[i].type; };
+  auto type = [&](size_t i) {
+    return e.args[i].type;
+  };
   switch (n) {
-    case OpCode::Not: r.b = !a[0].b; return r;
-    case OpCode::Odd: r.b = (a[0].u & 1u) != 0; return r;
-    case OpCode::Even: r.b = (a[0].u & 1u) == 0; return r;
-    case OpCode::ToFloat: return fromFloat(static_cast<float>(a[0].u));
+    case OpCode::Not:
+      r.b = !a[0].b;
+      return r;
+    case OpCode::Odd:
+      r.b = (a[0].u & 1u) != 0;
+      return r;
+    case OpCode::Even:
+      r.b = (a[0].u & 1u) == 0;
+      return r;
+    case OpCode::ToFloat:
+      return fromFloat(static_cast<float>(a[0].u));
     case OpCode::ToUint: {
       const float f = a[0].f[0];
-      return fromUint(f <= 0 || std::isnan(f) ? 0u : f >= 4294967295.0f ? 0xFFFFFFFFu : static_cast<uint32_t>(f));
+      return fromUint(f <= 0 || std::isnan(f) ? 0u
+                      : f >= 4294967295.0f    ? 0xFFFFFFFFu
+                                              : static_cast<uint32_t>(f));
     }
     case OpCode::Vec: {
       const int cnt = static_cast<int>(e.index);
-      for (int k = 0; k < cnt; ++k) r.f[k] = na == 1 ? a[0].f[0] : (k < static_cast<int>(na) ? a[k].f[0] : 0.0f);
+      for (int k = 0; k < cnt; ++k)
+        r.f[k] = na == 1 ? a[0].f[0] : (k < static_cast<int>(na) ? a[k].f[0] : 0.0f);
       return r;
     }
     case OpCode::LightPoint:
     case OpCode::LightSpot:
     case OpCode::LightDirectional: {
       static const std::vector<uint32_t> kNoRecord;
-      const LightKind kind = n == OpCode::LightPoint ? LightKind::Point
+      const LightKind kind = n == OpCode::LightPoint  ? LightKind::Point
                              : n == OpCode::LightSpot ? LightKind::Spot
                                                       : LightKind::Directional;
       r.f = lightColor(kind, {a[0].f[0], a[0].f[1], a[0].f[2]}, {a[1].f[0], a[1].f[1], a[1].f[2]},
                        env.record_data ? *env.record_data : kNoRecord);
       return r;
     }
-    case OpCode::X: return fromFloat(a[0].f[0]);
-    case OpCode::Y: return fromFloat(a[0].f[1]);
-    case OpCode::Z: return fromFloat(a[0].f[2]);
-    case OpCode::W: return fromFloat(a[0].f[3]);
+    case OpCode::X:
+      return fromFloat(a[0].f[0]);
+    case OpCode::Y:
+      return fromFloat(a[0].f[1]);
+    case OpCode::Z:
+      return fromFloat(a[0].f[2]);
+    case OpCode::W:
+      return fromFloat(a[0].f[3]);
     case OpCode::Dot:
     case OpCode::Length:
     case OpCode::Normalize: {
@@ -209,16 +299,29 @@ Val Machine::op(const CExpr& e, StageEnv& env) {
       for (int k = 0; k < cnt; ++k) r.f[k] = a[0].f[k] / len;
       return r;
     }
-    case OpCode::Eq: case OpCode::Ne: case OpCode::Lt: case OpCode::Le: case OpCode::Gt: case OpCode::Ge: {
+    case OpCode::Eq:
+    case OpCode::Ne:
+    case OpCode::Lt:
+    case OpCode::Le:
+    case OpCode::Gt:
+    case OpCode::Ge: {
       const bool u = type(0) == ValueType::Uint && type(1) == ValueType::Uint;
-      const double x = u ? a[0].u : static_cast<double>(type(0) == ValueType::Uint ? a[0].u : a[0].f[0]);
-      const double y = u ? a[1].u : static_cast<double>(type(1) == ValueType::Uint ? a[1].u : a[1].f[0]);
-      if (n == OpCode::Eq) r.b = x == y;
-      else if (n == OpCode::Ne) r.b = x != y;
-      else if (n == OpCode::Lt) r.b = x < y;
-      else if (n == OpCode::Le) r.b = x <= y;
-      else if (n == OpCode::Gt) r.b = x > y;
-      else r.b = x >= y;
+      const double x =
+          u ? a[0].u : static_cast<double>(type(0) == ValueType::Uint ? a[0].u : a[0].f[0]);
+      const double y =
+          u ? a[1].u : static_cast<double>(type(1) == ValueType::Uint ? a[1].u : a[1].f[0]);
+      if (n == OpCode::Eq)
+        r.b = x == y;
+      else if (n == OpCode::Ne)
+        r.b = x != y;
+      else if (n == OpCode::Lt)
+        r.b = x < y;
+      else if (n == OpCode::Le)
+        r.b = x <= y;
+      else if (n == OpCode::Gt)
+        r.b = x > y;
+      else
+        r.b = x >= y;
       return r;
     }
     case OpCode::Mod:
@@ -226,20 +329,27 @@ Val Machine::op(const CExpr& e, StageEnv& env) {
       if (a[1].u == 0) divisionByZero(e);
       r.u = a[1].u == 0 ? 0 : a[0].u % a[1].u;
       return r;
-    default: break;
+    default:
+      break;
   }
   // add sub mul div min max: Uint x Uint, or float-wise with scalar broadcast.
   if (e.type == ValueType::Uint) {
     const uint32_t x = a[0].u, y = a[1].u;
-    if (n == OpCode::Add) r.u = x + y;
-    else if (n == OpCode::Sub) r.u = x - y;
-    else if (n == OpCode::Mul) r.u = x * y;
+    if (n == OpCode::Add)
+      r.u = x + y;
+    else if (n == OpCode::Sub)
+      r.u = x - y;
+    else if (n == OpCode::Mul)
+      r.u = x * y;
     else if (n == OpCode::Div && y == 0) {
       divisionByZero(e);  // R-UB: the ray is undefined; the model goes on with all ones
       r.u = 0xFFFFFFFFu;
-    } else if (n == OpCode::Div) r.u = x / y;
-    else if (n == OpCode::Min) r.u = std::min(x, y);
-    else if (n == OpCode::Max) r.u = std::max(x, y);
+    } else if (n == OpCode::Div)
+      r.u = x / y;
+    else if (n == OpCode::Min)
+      r.u = std::min(x, y);
+    else if (n == OpCode::Max)
+      r.u = std::max(x, y);
     return r;
   }
   const int cnt = componentCount(e.type);
@@ -249,12 +359,18 @@ Val Machine::op(const CExpr& e, StageEnv& env) {
   };
   for (int k = 0; k < cnt; ++k) {
     const float x = comp(0, k), y = comp(1, k);
-    if (n == OpCode::Add) r.f[k] = x + y;
-    else if (n == OpCode::Sub) r.f[k] = x - y;
-    else if (n == OpCode::Mul) r.f[k] = x * y;
-    else if (n == OpCode::Div) r.f[k] = x / y;
-    else if (n == OpCode::Min) r.f[k] = std::fmin(x, y);
-    else if (n == OpCode::Max) r.f[k] = std::fmax(x, y);
+    if (n == OpCode::Add)
+      r.f[k] = x + y;
+    else if (n == OpCode::Sub)
+      r.f[k] = x - y;
+    else if (n == OpCode::Mul)
+      r.f[k] = x * y;
+    else if (n == OpCode::Div)
+      r.f[k] = x / y;
+    else if (n == OpCode::Min)
+      r.f[k] = std::fmin(x, y);
+    else if (n == OpCode::Max)
+      r.f[k] = std::fmax(x, y);
   }
   return r;
 }
@@ -281,17 +397,24 @@ Flow Machine::execStmt(const CStmt& s, StageEnv& env) {
       for (const CAssign& a : s.assigns) {
         const Val v = eval(a.value, env);
         if (s.kind == Stmt::Kind::SetPayload && env.payload) {
-          if (a.slot == Slot::Color) env.payload->color = v.f;
-          else if (a.slot == Slot::Value) env.payload->value = v.u;
+          if (a.slot == Slot::Color)
+            env.payload->color = v.f;
+          else if (a.slot == Slot::Value)
+            env.payload->value = v.u;
         } else if (s.kind == Stmt::Kind::SetCall && env.call) {
-          if (a.slot == Slot::Color) env.call->color = v.f;
-          else if (a.slot == Slot::Value) env.call->value = v.u;
+          if (a.slot == Slot::Color)
+            env.call->color = v.f;
+          else if (a.slot == Slot::Value)
+            env.call->value = v.u;
         }
       }
       return Flow::Continue;
-    case Stmt::Kind::Ignore: return Flow::Ignore;
-    case Stmt::Kind::Terminate: return Flow::Terminate;
-    case Stmt::Kind::If: return exec(eval(s.cond, env).b ? s.then_ : s.else_, env);
+    case Stmt::Kind::Ignore:
+      return Flow::Ignore;
+    case Stmt::Kind::Terminate:
+      return Flow::Terminate;
+    case Stmt::Kind::If:
+      return exec(eval(s.cond, env).b ? s.then_ : s.else_, env);
     case Stmt::Kind::Light: {
       if (!env.call) return Flow::Continue;
       static const std::vector<uint32_t> kEmpty;
@@ -303,10 +426,14 @@ Flow Machine::execStmt(const CStmt& s, StageEnv& env) {
       CallData d;
       for (const CAssign& a : s.assigns) {
         const Val v = eval(a.value, env);
-        if (a.slot == Slot::Color) d.color = v.f;
-        else if (a.slot == Slot::Value) d.value = v.u;
-        else if (a.slot == Slot::Position) d.position = {v.f[0], v.f[1], v.f[2]};
-        else if (a.slot == Slot::Normal) d.normal = {v.f[0], v.f[1], v.f[2]};
+        if (a.slot == Slot::Color)
+          d.color = v.f;
+        else if (a.slot == Slot::Value)
+          d.value = v.u;
+        else if (a.slot == Slot::Position)
+          d.position = {v.f[0], v.f[1], v.f[2]};
+        else if (a.slot == Slot::Normal)
+          d.normal = {v.f[0], v.f[1], v.f[2]};
       }
       callCallable(eval(s.call_index, env).u, d, env.depth, s);
       env.callee = d;
@@ -316,10 +443,16 @@ Flow Machine::execStmt(const CStmt& s, StageEnv& env) {
       const bool fromLaunch = env.stage == Stage::Raygen;
       TraceRay r = launchRay(fromLaunch ? sh_.c->rays.rays[index_] : sh_.c->rays.defaults);
       auto v3 = [&](int k, Vec3& out) {
-        if (s.has[k]) { const Val v = eval(s.args[k], env); out = {v.f[0], v.f[1], v.f[2]}; }
+        if (s.has[k]) {
+          const Val v = eval(s.args[k], env);
+          out = {v.f[0], v.f[1], v.f[2]};
+        }
       };
       auto f1 = [&](int k, float& out) {
-        if (s.has[k]) { const Val v = eval(s.args[k], env); out = s.args[k].type == ValueType::Uint ? static_cast<float>(v.u) : v.f[0]; }
+        if (s.has[k]) {
+          const Val v = eval(s.args[k], env);
+          out = s.args[k].type == ValueType::Uint ? static_cast<float>(v.u) : v.f[0];
+        }
       };
       auto u1 = [&](int k, uint32_t& out) {
         if (s.has[k]) out = eval(s.args[k], env).u;
@@ -338,15 +471,18 @@ Flow Machine::execStmt(const CStmt& s, StageEnv& env) {
         // R-RECURSION, R-UB: the ray is undefined; the model skips the trace
         // (no traversal, no shader, the stage's child payload stays as it was).
         if (!ray_undefined_)
-          markUndefined(UndefinedReason::RecursionTooDeep,
-                        (s.src && !s.src->loc.field.empty() ? s.src->loc.field : std::string("trace")) +
-                            ": trace at depth " + std::to_string(depth) + " exceeds pipeline.max_recursion " +
-                            std::to_string(sh_.c->pipeline.max_recursion));
+          markUndefined(
+              UndefinedReason::RecursionTooDeep,
+              (s.src && !s.src->loc.field.empty() ? s.src->loc.field : std::string("trace")) +
+                  ": trace at depth " + std::to_string(depth) + " exceeds pipeline.max_recursion " +
+                  std::to_string(sh_.c->pipeline.max_recursion));
         return Flow::Continue;
       }
       Payload p = trace(r, depth, &s);
-      if (env.stage == Stage::Raygen && env.payload) *env.payload = p;
-      else env.child = p;
+      if (env.stage == Stage::Raygen && env.payload)
+        *env.payload = p;
+      else
+        env.child = p;
       return Flow::Continue;
     }
     case Stmt::Kind::Report:
@@ -360,7 +496,8 @@ Flow Machine::execStmt(const CStmt& s, StageEnv& env) {
 // data stays as the caller wrote it).
 void Machine::callCallable(uint32_t index, CallData& data, uint32_t depth, const CStmt& site) {
   auto field = [&](const char* sub) {
-    const std::string f = site.src && !site.src->loc.field.empty() ? site.src->loc.field : std::string("call");
+    const std::string f =
+        site.src && !site.src->loc.field.empty() ? site.src->loc.field : std::string("call");
     return f + sub;
   };
   if (index >= default_callable_.size()) {
@@ -374,7 +511,8 @@ void Machine::callCallable(uint32_t index, CallData& data, uint32_t depth, const
     if (!ray_undefined_)
       markUndefined(UndefinedReason::RecursionTooDeep,
                     field("") + ": callables nested " + std::to_string(call_nesting_ + 1) +
-                        " deep, the default pipeline stack holds " + std::to_string(kMaxCallableNesting));
+                        " deep, the default pipeline stack holds " +
+                        std::to_string(kMaxCallableNesting));
     return;
   }
   const SbtRecord& rec = default_callable_[index];
@@ -414,7 +552,10 @@ void Machine::runRays(uint32_t begin, uint32_t end) {
     } else {
       runRaygen();
     }
-    if (++x_ == width) { x_ = 0; ++y_; }
+    if (++x_ == width) {
+      x_ = 0;
+      ++y_;
+    }
   }
 }
 

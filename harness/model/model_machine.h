@@ -85,10 +85,10 @@ struct Committed {
 struct StageEnv {
   Stage stage = Stage::Raygen;
   const std::vector<uint32_t>* record_data = nullptr;
-  Payload* payload = nullptr;   // incoming payload, or raygen's last trace payload
-  Payload child;                // last nested trace (closest-hit, miss)
-  CallData* call = nullptr;     // incoming callable data
-  CallData callee;              // after this stage's last call
+  Payload* payload = nullptr;  // incoming payload, or raygen's last trace payload
+  Payload child;               // last nested trace (closest-hit, miss)
+  CallData* call = nullptr;    // incoming callable data
+  CallData callee;             // after this stage's last call
   const TraceRay* ray = nullptr;
   const HitView* hit = nullptr;
   float tmax_view = 0;
@@ -104,18 +104,25 @@ enum class Flow { Continue, Ignore, Terminate };
 // the suite never sets a stack size, so deeper nesting is undefined (R-UB).
 constexpr uint32_t kMaxCallableNesting = 2;
 
-enum RunsField { kRunsRaygen, kRunsMiss, kRunsClosestHit, kRunsAnyHit, kRunsIntersection, kRunsCallable };
+enum RunsField {
+  kRunsRaygen,
+  kRunsMiss,
+  kRunsClosestHit,
+  kRunsAnyHit,
+  kRunsIntersection,
+  kRunsCallable
+};
 
 struct ModelShared {
   const Case* c = nullptr;
   const Plan* plan = nullptr;
   const ModelScene* scene = nullptr;
   const CPipeline* programs = nullptr;  // compiled once per run
-  bool direct = false;  // rtcIntersect1's own closest hit (no filters)
+  bool direct = false;                  // rtcIntersect1's own closest hit (no filters)
   // Decided once per run from what the programs read: a direct hit needs its
   // facing only for hit_kind, its object-space ray only for object_ray_*.
   bool need_facing = true, need_object_ray = true;
-  bool raygen_traces_launch_ray = false;  // raygen is exactly `trace: {}`
+  bool raygen_traces_launch_ray = false;            // raygen is exactly `trace: {}`
   ModelDeviation deviation = ModelDeviation::None;  // test only (planted faults)
   CandidateOrder order = CandidateOrder::Distance;
   // Some candidate may be undefined (a hit record beyond the region, a NaN
@@ -160,10 +167,13 @@ class alignas(64) Machine {
   Payload trace(const TraceRay& r, uint32_t depth, const CStmt* site);  // model_traversal.cpp
   Committed directHit(const TraceRay& r, uint32_t flags);
   Committed traverse(const TraceRay& r, uint32_t flags, uint32_t depth, Payload& payload);
-  void shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Committed& best, Payload& payload);
-  void decide(Traversal& tr, const std::vector<ModelCandidate>& cands, const int8_t* force, Payload& payload);
-  Committed sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands, const int8_t* force,
-                    long prefer, long first, const Payload& payloadIn, const ShaderDecision* shaderForce = nullptr);
+  void shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Committed& best,
+             Payload& payload);
+  void decide(Traversal& tr, const std::vector<ModelCandidate>& cands, const int8_t* force,
+              Payload& payload);
+  Committed sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands,
+                    const int8_t* force, long prefer, long first, const Payload& payloadIn,
+                    const ShaderDecision* shaderForce = nullptr);
   // sphere_hit in an intersection program: the model's value, or the forced
   // one of a what-if run; notes an unsure decision (model_exact_tier.cpp).
   bool sphereHitDecision(StageEnv& env, bool modelValue, float disc);

@@ -23,7 +23,8 @@ using namespace trace_detail;
 namespace {
 
 std::string fieldOf(const CStmt* site, const char* fallback) {
-  return site && site->src && !site->src->loc.field.empty() ? site->src->loc.field : std::string(fallback);
+  return site && site->src && !site->src->loc.field.empty() ? site->src->loc.field
+                                                            : std::string(fallback);
 }
 
 std::string num(double x) {
@@ -32,9 +33,13 @@ std::string num(double x) {
   return text;
 }
 
-std::string vec(const Vec3& v) { return "(" + num(v[0]) + ", " + num(v[1]) + ", " + num(v[2]) + ")"; }
+std::string vec(const Vec3& v) {
+  return "(" + num(v[0]) + ", " + num(v[1]) + ", " + num(v[2]) + ")";
+}
 
-bool finite(const Vec3& v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
+bool finite(const Vec3& v) {
+  return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+}
 
 const char* rayFlagName(uint32_t bit) {
   for (const auto& [name, value] : rayFlagNames())
@@ -45,9 +50,9 @@ const char* rayFlagName(uint32_t bit) {
 // Two flags of a group of mutually exclusive ray flags, or none.
 std::string exclusiveFlags(uint32_t flags) {
   const uint32_t groups[][4] = {
-      {kRayOpaque, kRayNoOpaque, kRayCullOpaque, kRayCullNoOpaque},   // R-CULL-OPQ
-      {kRayCullBackFacing, kRayCullFrontFacing, 0, 0},                // R-FACE-CULL
-      {kRaySkipTriangles, kRaySkipAabbs, 0, 0},                       // R-SKIP-TRI / R-SKIP-AABB
+      {kRayOpaque, kRayNoOpaque, kRayCullOpaque, kRayCullNoOpaque},  // R-CULL-OPQ
+      {kRayCullBackFacing, kRayCullFrontFacing, 0, 0},               // R-FACE-CULL
+      {kRaySkipTriangles, kRaySkipAabbs, 0, 0},                      // R-SKIP-TRI / R-SKIP-AABB
       {kRaySkipTriangles, kRayCullBackFacing, 0, 0},
       {kRaySkipTriangles, kRayCullFrontFacing, 0, 0},
   };
@@ -79,18 +84,20 @@ RayProblem rayProblem(const TraceRay& r) {
   return {};
 }
 
-const char* const kTraceArgNames[CStmt::kTraceArgs] = {"origin",    "direction",  "tmin",       "tmax", "flags",
-                                                       "cull_mask", "sbt_offset", "sbt_stride", "miss"};
+const char* const kTraceArgNames[CStmt::kTraceArgs] = {"origin",     "direction",  "tmin",
+                                                       "tmax",       "flags",      "cull_mask",
+                                                       "sbt_offset", "sbt_stride", "miss"};
 
 // The common case, without building a message: every parameter defined.
 bool defined(const TraceRay& r) {
-  const uint32_t opacity = r.flags & (kRayOpaque | kRayNoOpaque | kRayCullOpaque | kRayCullNoOpaque);
+  const uint32_t opacity =
+      r.flags & (kRayOpaque | kRayNoOpaque | kRayCullOpaque | kRayCullNoOpaque);
   const uint32_t facing = r.flags & (kRayCullBackFacing | kRayCullFrontFacing);
   const uint32_t skip = r.flags & (kRaySkipTriangles | kRaySkipAabbs);
-  return finite(r.origin) && finite(r.direction) && r.tmin >= 0 && r.tmin <= r.tmax && (opacity & (opacity - 1)) == 0 &&
-         (facing & (facing - 1)) == 0 && (skip & (skip - 1)) == 0 && !(facing && (skip & kRaySkipTriangles));
+  return finite(r.origin) && finite(r.direction) && r.tmin >= 0 && r.tmin <= r.tmax &&
+         (opacity & (opacity - 1)) == 0 && (facing & (facing - 1)) == 0 &&
+         (skip & (skip - 1)) == 0 && !(facing && (skip & kRaySkipTriangles));
 }
-
 
 }  // namespace
 
@@ -99,7 +106,6 @@ void Machine::markUndefined(UndefinedReason why, std::string what) {
   ray_undefined_ = true;
   undefined.push_back({index_, why, std::move(what)});
 }
-
 
 bool Machine::checkRayParameters(const TraceRay& r, const CStmt* site, uint32_t depth) {
   if (defined(r)) return false;
@@ -112,7 +118,8 @@ bool Machine::checkRayParameters(const TraceRay& r, const CStmt* site, uint32_t 
   else if (depth == 1)  // raygen's trace of the launch ray's own parameter
     where = "rays: launch ray " + std::to_string(index_) + " " + kTraceArgNames[p.arg];
   else  // a nested trace takes the rays defaults
-    where = std::string("rays.") + kTraceArgNames[p.arg] + " (the default of " + fieldOf(site, "a nested trace") + ")";
+    where = std::string("rays.") + kTraceArgNames[p.arg] + " (the default of " +
+            fieldOf(site, "a nested trace") + ")";
   markUndefined(UndefinedReason::RayParameters, where + ": " + p.why);
   return true;
 }
@@ -120,22 +127,25 @@ bool Machine::checkRayParameters(const TraceRay& r, const CStmt* site, uint32_t 
 void Machine::hitRecordOutOfRange(uint32_t instance, uint32_t geometry, const TraceRay& r) {
   const Instance& inst = sh_.c->scene.instances[instance];
   markUndefined(UndefinedReason::HitRecordOutOfRange,
-                "pipeline.sbt.hit: record " + std::to_string(hitRecordIndex(instance, geometry, r)) +
+                "pipeline.sbt.hit: record " +
+                    std::to_string(hitRecordIndex(instance, geometry, r)) +
                     ", the hit region has " + std::to_string(default_hit_.size()) + " (instance " +
-                    std::to_string(instance) + " sbt_offset " + std::to_string(inst.sbt_offset & 0xFFFFFF) +
-                    " + geometry " + std::to_string(geometry) + " x stride " + std::to_string(r.sbt_stride & 0xF) +
+                    std::to_string(instance) + " sbt_offset " +
+                    std::to_string(inst.sbt_offset & 0xFFFFFF) + " + geometry " +
+                    std::to_string(geometry) + " x stride " + std::to_string(r.sbt_stride & 0xF) +
                     " + sbt_offset " + std::to_string(r.sbt_offset & 0xF) + ")");
 }
 
 void Machine::missRecordOutOfRange(const TraceRay& r) {
   markUndefined(UndefinedReason::MissRecordOutOfRange,
-                "pipeline.sbt.miss: miss index " + std::to_string(r.miss & 0xFFFF) + ", the miss region has " +
-                    std::to_string(default_miss_.size()));
+                "pipeline.sbt.miss: miss index " + std::to_string(r.miss & 0xFFFF) +
+                    ", the miss region has " + std::to_string(default_miss_.size()));
 }
 
 void Machine::divisionByZero(const CExpr& e) {
   if (ray_undefined_) return;
-  const std::string field = e.src && !e.src->loc.field.empty() ? e.src->loc.field : std::string(e.src ? e.src->name : "");
+  const std::string field =
+      e.src && !e.src->loc.field.empty() ? e.src->loc.field : std::string(e.src ? e.src->name : "");
   markUndefined(UndefinedReason::DivisionByZero,
                 field + ": uint " + (e.op == OpCode::Mod ? "modulo" : "division") + " by zero");
 }
@@ -149,15 +159,17 @@ void Machine::checkCandidates(const Traversal& tr, const std::vector<ModelCandid
     const ModelGeometry& g = scene.blases[mi.blas].geometries[cand.geometry];
     // R-CULL-OPQ drops it whatever it is (Embree has applied the masks and skips).
     const bool opaque = resolveOpaque(g.flags, mi.src->flags, tr.flags);
-    if (((tr.flags & kRayCullOpaque) && opaque) || ((tr.flags & kRayCullNoOpaque) && !opaque)) continue;
+    if (((tr.flags & kRayCullOpaque) && opaque) || ((tr.flags & kRayCullNoOpaque) && !opaque))
+      continue;
     if (cand.nan_triangle) {
       const Geometry& src = sh_.c->scene.blases[mi.blas].geometries[cand.geometry];
-      const std::string field = !src.loc.field.empty() ? src.loc.field
-                                                       : "scene.blas." + sh_.c->scene.blases[mi.blas].name + "[" +
-                                                             std::to_string(cand.geometry) + "]";
-      markUndefined(UndefinedReason::NanTriangle, field + ": triangle " + std::to_string(cand.primitive) +
-                                                      " has NaN in Y or Z (instance " +
-                                                      std::to_string(cand.instance) + ")");
+      const std::string field = !src.loc.field.empty()
+                                    ? src.loc.field
+                                    : "scene.blas." + sh_.c->scene.blases[mi.blas].name + "[" +
+                                          std::to_string(cand.geometry) + "]";
+      markUndefined(UndefinedReason::NanTriangle,
+                    field + ": triangle " + std::to_string(cand.primitive) +
+                        " has NaN in Y or Z (instance " + std::to_string(cand.instance) + ")");
       return;
     }
     const double tl = tr.tol(cand.t);
@@ -165,8 +177,9 @@ void Machine::checkCandidates(const Traversal& tr, const std::vector<ModelCandid
     // A device reads the record of every box (its intersection shader runs)
     // and of every non-opaque triangle (its any-hit may run), in any order.
     if (hitRecord(cand.instance, cand.geometry, r)) continue;
-    const bool needed = cand.aabb || (!opaque && (cand.hit || cand.ambiguity != TriAmbiguity::None) &&
-                                      !facing(scene, cand, r, tr.flags).culled);
+    const bool needed =
+        cand.aabb || (!opaque && (cand.hit || cand.ambiguity != TriAmbiguity::None) &&
+                      !facing(scene, cand, r, tr.flags).culled);
     if (needed) {
       hitRecordOutOfRange(cand.instance, cand.geometry, r);
       return;

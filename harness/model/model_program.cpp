@@ -7,32 +7,86 @@
 namespace rayspec {
 
 const std::vector<std::string>& builtinNames() {
-  static const std::vector<std::string> names = {
-      "launch_id_x", "launch_id_y", "launch_size_x", "launch_size_y", "primitive_id", "instance_id",
-      "instance_custom_index", "geometry_index", "hit_kind", "hit_t", "hit", "barycentrics",
-      "aabb_min", "aabb_max", "object_ray_origin", "object_ray_direction", "ray_tmin", "ray_tmax",
-      "incoming_ray_flags", "world_ray_origin", "world_ray_direction", "hit_position",
-      "payload.color", "payload.value", "depth", "child.color", "child.value", "call.position",
-      "call.normal", "call.color", "call.value", "callee.color", "callee.value"};
+  static const std::vector<std::string> names = {"launch_id_x",
+                                                 "launch_id_y",
+                                                 "launch_size_x",
+                                                 "launch_size_y",
+                                                 "primitive_id",
+                                                 "instance_id",
+                                                 "instance_custom_index",
+                                                 "geometry_index",
+                                                 "hit_kind",
+                                                 "hit_t",
+                                                 "hit",
+                                                 "barycentrics",
+                                                 "aabb_min",
+                                                 "aabb_max",
+                                                 "object_ray_origin",
+                                                 "object_ray_direction",
+                                                 "ray_tmin",
+                                                 "ray_tmax",
+                                                 "incoming_ray_flags",
+                                                 "world_ray_origin",
+                                                 "world_ray_direction",
+                                                 "hit_position",
+                                                 "payload.color",
+                                                 "payload.value",
+                                                 "depth",
+                                                 "child.color",
+                                                 "child.value",
+                                                 "call.position",
+                                                 "call.normal",
+                                                 "call.color",
+                                                 "call.value",
+                                                 "callee.color",
+                                                 "callee.value"};
   return names;
 }
 
 namespace {
 
-struct OpName { const char* name; OpCode op; };
-const OpName kOps[] = {
-    {"sphere_hit", OpCode::SphereHit}, {"sphere_near", OpCode::SphereNear},
-    {"sphere_far", OpCode::SphereFar}, {"shader_record_uint", OpCode::RecordUint},
-    {"shader_record_float", OpCode::RecordFloat}, {"and", OpCode::And}, {"or", OpCode::Or},
-    {"not", OpCode::Not}, {"odd", OpCode::Odd}, {"even", OpCode::Even}, {"float", OpCode::ToFloat},
-    {"uint", OpCode::ToUint}, {"vec2", OpCode::Vec}, {"vec3", OpCode::Vec}, {"vec4", OpCode::Vec},
-    {"x", OpCode::X}, {"y", OpCode::Y}, {"z", OpCode::Z}, {"w", OpCode::W}, {"dot", OpCode::Dot},
-    {"length", OpCode::Length}, {"normalize", OpCode::Normalize}, {"eq", OpCode::Eq},
-    {"ne", OpCode::Ne}, {"lt", OpCode::Lt}, {"le", OpCode::Le}, {"gt", OpCode::Gt},
-    {"ge", OpCode::Ge}, {"mod", OpCode::Mod}, {"add", OpCode::Add}, {"sub", OpCode::Sub},
-    {"mul", OpCode::Mul}, {"div", OpCode::Div}, {"min", OpCode::Min}, {"max", OpCode::Max},
-    {"light_point", OpCode::LightPoint}, {"light_spot", OpCode::LightSpot},
-    {"light_directional", OpCode::LightDirectional}};
+struct OpName {
+  const char* name;
+  OpCode op;
+};
+const OpName kOps[] = {{"sphere_hit", OpCode::SphereHit},
+                       {"sphere_near", OpCode::SphereNear},
+                       {"sphere_far", OpCode::SphereFar},
+                       {"shader_record_uint", OpCode::RecordUint},
+                       {"shader_record_float", OpCode::RecordFloat},
+                       {"and", OpCode::And},
+                       {"or", OpCode::Or},
+                       {"not", OpCode::Not},
+                       {"odd", OpCode::Odd},
+                       {"even", OpCode::Even},
+                       {"float", OpCode::ToFloat},
+                       {"uint", OpCode::ToUint},
+                       {"vec2", OpCode::Vec},
+                       {"vec3", OpCode::Vec},
+                       {"vec4", OpCode::Vec},
+                       {"x", OpCode::X},
+                       {"y", OpCode::Y},
+                       {"z", OpCode::Z},
+                       {"w", OpCode::W},
+                       {"dot", OpCode::Dot},
+                       {"length", OpCode::Length},
+                       {"normalize", OpCode::Normalize},
+                       {"eq", OpCode::Eq},
+                       {"ne", OpCode::Ne},
+                       {"lt", OpCode::Lt},
+                       {"le", OpCode::Le},
+                       {"gt", OpCode::Gt},
+                       {"ge", OpCode::Ge},
+                       {"mod", OpCode::Mod},
+                       {"add", OpCode::Add},
+                       {"sub", OpCode::Sub},
+                       {"mul", OpCode::Mul},
+                       {"div", OpCode::Div},
+                       {"min", OpCode::Min},
+                       {"max", OpCode::Max},
+                       {"light_point", OpCode::LightPoint},
+                       {"light_spot", OpCode::LightSpot},
+                       {"light_directional", OpCode::LightDirectional}};
 
 struct Compiler {
   const Plan& plan;
@@ -45,10 +99,13 @@ struct Compiler {
     r.src = &e;
     switch (e.kind) {
       case Expr::Kind::Literal:
-        if (e.type == ValueType::Uint) r.literal.u = static_cast<uint32_t>(e.literal.empty() ? 0 : e.literal[0]);
-        else if (e.type == ValueType::Bool) r.literal.b = !e.literal.empty() && e.literal[0] != 0;
+        if (e.type == ValueType::Uint)
+          r.literal.u = static_cast<uint32_t>(e.literal.empty() ? 0 : e.literal[0]);
+        else if (e.type == ValueType::Bool)
+          r.literal.b = !e.literal.empty() && e.literal[0] != 0;
         else
-          for (size_t k = 0; k < e.literal.size() && k < 4; ++k) r.literal.f[k] = static_cast<float>(e.literal[k]);
+          for (size_t k = 0; k < e.literal.size() && k < 4; ++k)
+            r.literal.f[k] = static_cast<float>(e.literal[k]);
         break;
       case Expr::Kind::Builtin: {
         const auto& names = builtinNames();
@@ -66,7 +123,10 @@ struct Compiler {
           out.reads_sphere = true;
         if (r.op == OpCode::Vec) r.index = e.name == "vec2" ? 2 : e.name == "vec3" ? 3 : 4;
         if (r.op == OpCode::RecordUint || r.op == OpCode::RecordFloat)
-          r.index = e.args.empty() ? 0 : static_cast<uint32_t>(e.args[0].literal.empty() ? 0 : e.args[0].literal[0]);
+          r.index =
+              e.args.empty()
+                  ? 0
+                  : static_cast<uint32_t>(e.args[0].literal.empty() ? 0 : e.args[0].literal[0]);
         for (const Expr& a : e.args) r.args.push_back(expr(a));
         break;
     }
@@ -111,17 +171,26 @@ struct Compiler {
     if (s.kind == Stmt::Kind::Report) {
       r.t = expr(s.t);
       r.hit_kind = expr(s.hit_kind);
-      if (!s.attribute.empty()) { r.has_attribute = true; r.attribute = expr(s.attribute[0]); }
+      if (!s.attribute.empty()) {
+        r.has_attribute = true;
+        r.attribute = expr(s.attribute[0]);
+      }
     }
     if (s.kind == Stmt::Kind::Call) r.call_index = expr(s.call_index);
     if (s.kind == Stmt::Kind::Light)
-      r.light = s.light == "point" ? LightKind::Point : s.light == "spot" ? LightKind::Spot : LightKind::Directional;
+      r.light = s.light == "point"  ? LightKind::Point
+                : s.light == "spot" ? LightKind::Spot
+                                    : LightKind::Directional;
     if (s.kind == Stmt::Kind::Trace) {
-      const std::vector<Expr>* a[CStmt::kTraceArgs] = {&s.trace.origin, &s.trace.direction, &s.trace.tmin,
-                                                      &s.trace.tmax, &s.trace.flags, &s.trace.cull_mask,
-                                                      &s.trace.sbt_offset, &s.trace.sbt_stride, &s.trace.miss};
+      const std::vector<Expr>* a[CStmt::kTraceArgs] = {
+          &s.trace.origin,     &s.trace.direction,  &s.trace.tmin,
+          &s.trace.tmax,       &s.trace.flags,      &s.trace.cull_mask,
+          &s.trace.sbt_offset, &s.trace.sbt_stride, &s.trace.miss};
       for (int k = 0; k < CStmt::kTraceArgs; ++k)
-        if (!a[k]->empty()) { r.has[k] = true; r.args[k] = expr(a[k]->front()); }
+        if (!a[k]->empty()) {
+          r.has[k] = true;
+          r.args[k] = expr(a[k]->front());
+        }
     }
     r.then_ = program(s.then_);
     r.else_ = program(s.else_);
@@ -133,7 +202,8 @@ struct Compiler {
 
 bool hasTerminate(const CProgram& p) {
   for (const CStmt& s : p)
-    if (s.kind == Stmt::Kind::Terminate || hasTerminate(s.then_) || hasTerminate(s.else_)) return true;
+    if (s.kind == Stmt::Kind::Terminate || hasTerminate(s.then_) || hasTerminate(s.else_))
+      return true;
   return false;
 }
 

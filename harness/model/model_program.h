@@ -22,37 +22,100 @@ struct Val {
 
 // Built-ins, in the order of builtinNames().
 enum Builtin : uint8_t {
-  kBiLaunchX, kBiLaunchY, kBiLaunchW, kBiLaunchH, kBiPrimitive, kBiInstance, kBiCustomIndex,
-  kBiGeometry, kBiHitKind, kBiHitT, kBiHit, kBiBarycentrics, kBiAabbMin, kBiAabbMax,
-  kBiObjectOrigin, kBiObjectDirection, kBiTmin, kBiTmax, kBiFlags, kBiWorldOrigin,
-  kBiWorldDirection, kBiHitPosition, kBiPayloadColor, kBiPayloadValue, kBiDepth, kBiChildColor,
-  kBiChildValue, kBiCallPosition, kBiCallNormal, kBiCallColor, kBiCallValue, kBiCalleeColor,
-  kBiCalleeValue, kBiCount, kBiUnknown = 0xFF
+  kBiLaunchX,
+  kBiLaunchY,
+  kBiLaunchW,
+  kBiLaunchH,
+  kBiPrimitive,
+  kBiInstance,
+  kBiCustomIndex,
+  kBiGeometry,
+  kBiHitKind,
+  kBiHitT,
+  kBiHit,
+  kBiBarycentrics,
+  kBiAabbMin,
+  kBiAabbMax,
+  kBiObjectOrigin,
+  kBiObjectDirection,
+  kBiTmin,
+  kBiTmax,
+  kBiFlags,
+  kBiWorldOrigin,
+  kBiWorldDirection,
+  kBiHitPosition,
+  kBiPayloadColor,
+  kBiPayloadValue,
+  kBiDepth,
+  kBiChildColor,
+  kBiChildValue,
+  kBiCallPosition,
+  kBiCallNormal,
+  kBiCallColor,
+  kBiCallValue,
+  kBiCalleeColor,
+  kBiCalleeValue,
+  kBiCount,
+  kBiUnknown = 0xFF
 };
 const std::vector<std::string>& builtinNames();
 
 enum class OpCode : uint8_t {
-  SphereHit, SphereNear, SphereFar, RecordUint, RecordFloat, And, Or, Not, Odd, Even, ToFloat,
-  ToUint, Vec, X, Y, Z, W, Dot, Length, Normalize, Eq, Ne, Lt, Le, Gt, Ge, Mod, Add, Sub, Mul,
-  Div, Min, Max, LightPoint, LightSpot, LightDirectional, Unknown
+  SphereHit,
+  SphereNear,
+  SphereFar,
+  RecordUint,
+  RecordFloat,
+  And,
+  Or,
+  Not,
+  Odd,
+  Even,
+  ToFloat,
+  ToUint,
+  Vec,
+  X,
+  Y,
+  Z,
+  W,
+  Dot,
+  Length,
+  Normalize,
+  Eq,
+  Ne,
+  Lt,
+  Le,
+  Gt,
+  Ge,
+  Mod,
+  Add,
+  Sub,
+  Mul,
+  Div,
+  Min,
+  Max,
+  LightPoint,
+  LightSpot,
+  LightDirectional,
+  Unknown
 };
 
 struct CExpr {
   Expr::Kind kind = Expr::Kind::Literal;
   ValueType type = ValueType::Uint;
-  uint8_t builtin = kBiUnknown;   // Builtin
-  OpCode op = OpCode::Unknown;    // Op
-  uint32_t index = 0;             // RecordUint/RecordFloat: word; Vec: component count
-  Val literal;                    // Literal
+  uint8_t builtin = kBiUnknown;  // Builtin
+  OpCode op = OpCode::Unknown;   // Op
+  uint32_t index = 0;            // RecordUint/RecordFloat: word; Vec: component count
+  Val literal;                   // Literal
   std::vector<CExpr> args;
-  const Expr* src = nullptr;      // for error messages
+  const Expr* src = nullptr;  // for error messages
 };
 
 enum class Slot : uint8_t { Color, Value, Position, Normal, None };
 enum class LightKind : uint8_t { Point, Spot, Directional };
 
 struct CAssign {
-  int field = -1;  // Record: record field index (-1: unknown or automatic)
+  int field = -1;          // Record: record field index (-1: unknown or automatic)
   Slot slot = Slot::None;  // SetPayload / SetCall / Call
   CExpr value;
 };
@@ -67,7 +130,18 @@ struct CStmt {
   LightKind light = LightKind::Point;
   // Trace: 9 optional arguments (origin, direction, tmin, tmax, flags,
   // cull_mask, sbt_offset, sbt_stride, miss).
-  enum { kOrigin, kDirection, kTmin, kTmax, kFlags, kCullMask, kSbtOffset, kSbtStride, kMiss, kTraceArgs };
+  enum {
+    kOrigin,
+    kDirection,
+    kTmin,
+    kTmax,
+    kFlags,
+    kCullMask,
+    kSbtOffset,
+    kSbtStride,
+    kMiss,
+    kTraceArgs
+  };
   std::array<bool, kTraceArgs> has{};
   std::array<CExpr, kTraceArgs> args;
   std::vector<CStmt> then_, else_;
@@ -100,8 +174,8 @@ struct CPipeline {
   std::vector<CountsOnly> miss_counts;
   std::vector<CProgram> hit_programs;  // storage for the groups' programs
   std::vector<CHitGroup> groups;
-  uint64_t read_bits = 0;  // bit (1 << Builtin) for every built-in any program reads
-  bool reads_sphere = false;  // sphere_* ops (read the object-space ray and the box)
+  uint64_t read_bits = 0;           // bit (1 << Builtin) for every built-in any program reads
+  bool reads_sphere = false;        // sphere_* ops (read the object-space ray and the box)
   bool any_hit_terminates = false;  // some group's any-hit has a `terminate`
   bool reads(Builtin b) const { return (read_bits >> b) & 1u; }
 };

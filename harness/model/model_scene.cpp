@@ -8,10 +8,10 @@
 #include "base/affine.h"
 #include "base/float_steps.h"
 #include "base/slab.h"
+#include "case/transform.h"
 #include "model/box_pad.h"
 #include "model/exact_interval.h"
 #include "model/frame_error.h"
-#include "case/transform.h"
 #include "model/model_trace_context.h"
 #include "model/watertight.h"
 #include "model/watertight_rejection.h"
@@ -26,7 +26,9 @@ void setInvalidBounds(RTCBounds& b) {
   b.upper_x = b.upper_y = b.upper_z = -1.0f;
 }
 
-float clampLarge(float x) { return std::clamp(x, -kEmbreeLarge, kEmbreeLarge); }
+float clampLarge(float x) {
+  return std::clamp(x, -kEmbreeLarge, kEmbreeLarge);
+}
 
 void ownTriangleBounds(const RTCBoundsFunctionArguments* args) {
   const auto* g = static_cast<const ModelGeometry*>(args->geometryUserPtr);
@@ -53,8 +55,12 @@ void ownTriangleBounds(const RTCBoundsFunctionArguments* args) {
         lo[a] = clampLarge(static_cast<float>(r[a] - 1e-5 * size));
         hi[a] = clampLarge(static_cast<float>(r[a + 3] + 1e-5 * size));
       }
-      b.lower_x = lo[0]; b.lower_y = lo[1]; b.lower_z = lo[2];
-      b.upper_x = hi[0]; b.upper_y = hi[1]; b.upper_z = hi[2];
+      b.lower_x = lo[0];
+      b.lower_y = lo[1];
+      b.lower_z = lo[2];
+      b.upper_x = hi[0];
+      b.upper_y = hi[1];
+      b.upper_z = hi[2];
       return;
     }
   }
@@ -67,28 +73,42 @@ void ownTriangleBounds(const RTCBoundsFunctionArguments* args) {
     lo[k] = clampLarge(floatBelow(lo[k] - pad));
     hi[k] = clampLarge(floatAbove(hi[k] + pad));
   }
-  b.lower_x = lo[0]; b.lower_y = lo[1]; b.lower_z = lo[2];
-  b.upper_x = hi[0]; b.upper_y = hi[1]; b.upper_z = hi[2];
+  b.lower_x = lo[0];
+  b.lower_y = lo[1];
+  b.lower_z = lo[2];
+  b.upper_x = hi[0];
+  b.upper_y = hi[1];
+  b.upper_z = hi[2];
 }
 
 void aabbBounds(const RTCBoundsFunctionArguments* args) {
   const auto* g = static_cast<const ModelGeometry*>(args->geometryUserPtr);
   const auto& a = g->aabbs[args->primID];
   RTCBounds& b = *args->bounds_o;
-  if (std::isnan(a[0])) { setInvalidBounds(b); return; }  // R-INACTIVE
+  if (std::isnan(a[0])) {
+    setInvalidBounds(b);
+    return;
+  }  // R-INACTIVE
   float v[6];
-  for (int k = 0; k < 6; ++k) v[k] = std::isnan(a[k]) ? (k < 3 ? -kEmbreeLarge : kEmbreeLarge) : a[k];
+  for (int k = 0; k < 6; ++k)
+    v[k] = std::isnan(a[k]) ? (k < 3 ? -kEmbreeLarge : kEmbreeLarge) : a[k];
   for (int k = 0; k < 3; ++k) {
     // Conservative (R-AABB-CONS): a little slack, so grazing rays are enumerated.
     const float pad = std::max({std::fabs(v[k]), std::fabs(v[k + 3]), 1e-30f}) * 1e-6f;
     v[k] = clampLarge(v[k] - pad);
     v[k + 3] = clampLarge(v[k + 3] + pad);
   }
-  b.lower_x = v[0]; b.lower_y = v[1]; b.lower_z = v[2];
-  b.upper_x = v[3]; b.upper_y = v[4]; b.upper_z = v[5];
+  b.lower_x = v[0];
+  b.lower_y = v[1];
+  b.lower_z = v[2];
+  b.upper_x = v[3];
+  b.upper_y = v[4];
+  b.upper_z = v[5];
 }
 
-TraceContext* traceContext(RTCIntersectContext* ctx) { return reinterpret_cast<TraceContext*>(ctx); }
+TraceContext* traceContext(RTCIntersectContext* ctx) {
+  return reinterpret_cast<TraceContext*>(ctx);
+}
 
 void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
   if (!args->valid[0]) return;
@@ -103,7 +123,8 @@ void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
       objectRayFrameError(mi.form, mi.inverse, mi.inverse_f, tc->origin, tc->direction, err);
     tc->object_ray = prepareWatertightRay(applyAffine(mi.inverse, tc->origin, 1.0),
                                           applyAffine(mi.inverse, tc->direction, 0.0), err);
-    tc->object_exact = g->tier == ModelTier::Exact && objectRayExact(mi.form, mi.src->transform, tc->origin);
+    tc->object_exact =
+        g->tier == ModelTier::Exact && objectRayExact(mi.form, mi.src->transform, tc->origin);
   }
   const WatertightRay& wr = tc->object_ray;
   const DVec3& o = wr.o;
@@ -132,7 +153,9 @@ void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
       return;
     }
   }
-  auto dv = [](const Vec3& v) { return DVec3{v[0], v[1], v[2]}; };
+  auto dv = [](const Vec3& v) {
+    return DVec3{v[0], v[1], v[2]};
+  };
   const DVec3 v0 = dv(tri[0]), v1 = dv(tri[1]), v2 = dv(tri[2]);
   const DVec3 vertexErr = g->tier == ModelTier::Exact ? g->vertex_err : DVec3{};
   if (watertightCertainMiss(wr, v0, v1, v2, vertexErr)) return;  // dropped below too (proof there)
@@ -163,12 +186,15 @@ void aabbIntersect(const RTCIntersectFunctionNArguments* args) {
   const auto* g = static_cast<const ModelGeometry*>(args->geometryUserPtr);
   TraceContext* tc = traceContext(args->context);
   RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
-  const DVec3 o{RTCRayN_org_x(ray, args->N, 0), RTCRayN_org_y(ray, args->N, 0), RTCRayN_org_z(ray, args->N, 0)};
-  const DVec3 d{RTCRayN_dir_x(ray, args->N, 0), RTCRayN_dir_y(ray, args->N, 0), RTCRayN_dir_z(ray, args->N, 0)};
+  const DVec3 o{RTCRayN_org_x(ray, args->N, 0), RTCRayN_org_y(ray, args->N, 0),
+                RTCRayN_org_z(ray, args->N, 0)};
+  const DVec3 d{RTCRayN_dir_x(ray, args->N, 0), RTCRayN_dir_y(ray, args->N, 0),
+                RTCRayN_dir_z(ray, args->N, 0)};
   const auto& a = g->aabbs[args->primID];
   DVec3 lo, hi;  // the box with a little slack
   for (int k = 0; k < 3; ++k) {
-    const double slack = 1e-6 * std::max({std::fabs(double(a[k])), std::fabs(double(a[k + 3])), 1e-30});
+    const double slack =
+        1e-6 * std::max({std::fabs(double(a[k])), std::fabs(double(a[k + 3])), 1e-30});
     lo[k] = a[k] - slack;
     hi[k] = a[k + 3] + slack;
   }
@@ -181,8 +207,9 @@ void aabbIntersect(const RTCIntersectFunctionNArguments* args) {
     DVec3 in_lo, in_hi;
     for (int k = 0; k < 3; ++k) {
       const double l = a[k], h = a[k + 3];
-      const double bound = kDeviceRelTolerance * std::max({std::fabs(l), std::fabs(h), std::fabs(o[k]), 1e-30}) +
-                           1e-6 * std::max({std::fabs(l), std::fabs(h), 1e-30});
+      const double bound =
+          kDeviceRelTolerance * std::max({std::fabs(l), std::fabs(h), std::fabs(o[k]), 1e-30}) +
+          1e-6 * std::max({std::fabs(l), std::fabs(h), 1e-30});
       in_lo[k] = l + bound;
       in_hi[k] = h - bound;
     }
@@ -222,7 +249,8 @@ bool triangleNanYZ(const std::array<Vec3, 3>& tri) {
   return false;
 }
 
-std::array<double, 6> nanTriangleRegion(const std::array<Vec3, 3>& tri, const std::optional<Transform>& transform) {
+std::array<double, 6> nanTriangleRegion(const std::array<Vec3, 3>& tri,
+                                        const std::optional<Transform>& transform) {
   std::array<double, 6> box;
   for (int k = 0; k < 3; ++k) {
     box[k] = INFINITY;
@@ -271,150 +299,154 @@ ModelScene::~ModelScene() {
   if (device) rtcReleaseDevice(device);
 }
 
-void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters, bool keepTriangles) {
-  s.tier = tier;
-  s.device = rtcNewDevice(nullptr);
-  if (!s.device) {
-    const RTCError e = rtcGetDeviceError(nullptr);
-    throw std::runtime_error(e == RTC_ERROR_OUT_OF_MEMORY
-                                 ? "rtcNewDevice failed: out of memory (a --memory-limit too low for Embree?)"
-                                 : "rtcNewDevice failed (Embree error " + std::to_string(int(e)) + ")");
+namespace {
+
+RTCDevice newEmbreeDevice() {
+  RTCDevice device = rtcNewDevice(nullptr);
+  if (device) return device;
+  const RTCError e = rtcGetDeviceError(nullptr);
+  throw std::runtime_error(
+      e == RTC_ERROR_OUT_OF_MEMORY
+          ? "rtcNewDevice failed: out of memory (a --memory-limit too low for Embree?)"
+          : "rtcNewDevice failed (Embree error " + std::to_string(int(e)) + ")");
+}
+
+// Per-primitive triangles (geometry transform applied), classified on the
+// vertices as given: inactive (NaN X), NaN in Y or Z (its region kept), or
+// beyond Embree's range (the model's own test).
+void fillTriangles(ModelGeometry& mg, const Geometry& g) {
+  mg.triangles.resize(mg.count);
+  for (uint32_t p = 0; p < mg.count; ++p) {
+    std::array<Vec3, 3> raw;
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t idx = g.indices.empty() ? p * 3 + k : g.indices[p * 3 + k];
+      raw[k] = idx < g.vertices.size() ? g.vertices[idx] : Vec3{NAN, NAN, NAN};
+      mg.triangles[p][k] = g.transform ? applyAffine(*g.transform, raw[k], 1.0f) : raw[k];
+    }
+    if (triangleInactive(raw)) {
+      mg.triangles[p][0][0] = NAN;  // stays inactive whatever the transform made of it
+    } else if (triangleNanYZ(raw)) {
+      mg.nan_regions[p] = nanTriangleRegion(raw, g.transform);
+      mg.own_triangles = true;
+    } else if (needsOwnTriangleTest(mg.triangles[p])) {
+      mg.own_triangles = true;
+    }
   }
-  const RTCSceneFlags sceneFlags = tier == ModelTier::Fast ? RTC_SCENE_FLAG_NONE : RTC_SCENE_FLAG_ROBUST;
-  // Per-primitive triangles (geometry transform applied), classified on the
-  // vertices as given: inactive (NaN X), NaN in Y or Z (its region kept), or
-  // beyond Embree's range (the model's own test).
-  auto fillTriangles = [](ModelGeometry& mg, const Geometry& g) {
-    mg.triangles.resize(mg.count);
-    for (uint32_t p = 0; p < mg.count; ++p) {
-      std::array<Vec3, 3> raw;
+}
+
+// Whether Embree can take the geometry's index buffer as it is: every index
+// in range.
+bool indexBufferUsable(const Geometry& g, uint32_t n) {
+  if (g.indices.empty() || g.indices.size() < 3 * size_t{n}) return false;
+  uint32_t maxIndex = 0;  // one pass, no early exit: vectorizes
+  for (size_t i = 0; i < 3 * size_t{n}; ++i) maxIndex = std::max(maxIndex, g.indices[i]);
+  return n == 0 || size_t{maxIndex} < g.vertices.size();
+}
+
+// Whether every vertex (transformed) is ordinary: no NaN, nothing Embree
+// would drop.
+bool verticesOrdinary(const Geometry& g) {
+  bool ordinary = true;
+  for (size_t v = 0; ordinary && v < g.vertices.size(); ++v) {
+    const Vec3 x = g.transform ? applyAffine(*g.transform, g.vertices[v], 1.0f) : g.vertices[v];
+    for (float f : x) ordinary = ordinary && !std::isnan(f) && std::fabs(f) <= kEmbreeLarge;
+  }
+  return ordinary;
+}
+
+// The model's view of one geometry of BLAS bi; its per-primitive triangles
+// only where someone reads them (candidates, own tests, an unusable index
+// buffer).
+void describeGeometry(ModelGeometry& mg, const Geometry& g, size_t bi, size_t gi, ModelTier tier,
+                      double ray_pad, bool keepTriangles, bool filters) {
+  mg.kind = g.kind;
+  mg.flags = g.flags;
+  mg.blas = static_cast<uint32_t>(bi);
+  mg.index = static_cast<uint32_t>(gi);
+  mg.tier = tier;
+  mg.ray_pad = ray_pad;
+  if (tier == ModelTier::Exact && g.transform)
+    mg.vertex_err = geometryVertexError(*g.transform, g.vertices);
+  if (g.kind == Geometry::Kind::Aabbs) {
+    mg.aabbs = g.aabbs;
+    mg.count = static_cast<uint32_t>(g.aabbs.size());
+    return;
+  }
+  mg.count = g.primitiveCount();
+  mg.indexed = indexBufferUsable(g, mg.count);
+  const bool ordinary = mg.indexed && verticesOrdinary(g);
+  mg.own_triangles = tier == ModelTier::Exact;
+  if (keepTriangles || filters || !ordinary || mg.own_triangles) fillTriangles(mg, g);
+}
+
+// Embree's triangle geometry: the case's own vertex sharing where it can
+// (fewer vertices to build from), else three vertices a triangle.
+RTCGeometry embreeTriangles(RTCDevice device, const ModelGeometry& mg, const Geometry& g,
+                            bool filters) {
+  const uint32_t n = mg.count;
+  RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  const size_t nv = mg.indexed ? g.vertices.size() : 3 * size_t{n};
+  auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                         RTC_FORMAT_FLOAT3, 3 * sizeof(float), nv));
+  auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+      geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), n));
+  if (mg.indexed) {
+    for (size_t v = 0; v < nv; ++v) {
+      const Vec3 x = g.transform ? applyAffine(*g.transform, g.vertices[v], 1.0f) : g.vertices[v];
+      for (int a = 0; a < 3; ++a) vb[v * 3 + a] = x[a];
+    }
+    std::copy(g.indices.begin(), g.indices.begin() + 3 * size_t{n}, ib);
+  } else {
+    for (uint32_t p = 0; p < n; ++p)
       for (int k = 0; k < 3; ++k) {
-        const uint32_t idx = g.indices.empty() ? p * 3 + k : g.indices[p * 3 + k];
-        raw[k] = idx < g.vertices.size() ? g.vertices[idx] : Vec3{NAN, NAN, NAN};
-        mg.triangles[p][k] = g.transform ? applyAffine(*g.transform, raw[k], 1.0f) : raw[k];
+        for (int a = 0; a < 3; ++a) vb[(p * 3 + k) * 3 + a] = mg.triangles[p][k][a];
+        ib[p * 3 + k] = p * 3 + k;
       }
-      if (triangleInactive(raw)) {
-        mg.triangles[p][0][0] = NAN;  // stays inactive whatever the transform made of it
-      } else if (triangleNanYZ(raw)) {
-        mg.nan_regions[p] = nanTriangleRegion(raw, g.transform);
-        mg.own_triangles = true;
-      } else if (needsOwnTriangleTest(mg.triangles[p])) {
-        mg.own_triangles = true;
-      }
-    }
-  };
-  s.blases.resize(c.scene.blases.size());
-  // Exact tier: how far a device's and Embree's object-space rays may be off
-  // and how far the exact test's ambiguity reaches, per BLAS (box_pad.h).
-  const std::vector<double> rayPad = tier == ModelTier::Exact ? blasRayPads(c) : std::vector<double>();
-  bool anyOwn = false;
-  for (size_t bi = 0; bi < c.scene.blases.size(); ++bi) {
-    const Blas& src = c.scene.blases[bi];
-    ModelBlas& mb = s.blases[bi];
-    mb.geometries.resize(src.geometries.size());
-    for (size_t gi = 0; gi < src.geometries.size(); ++gi) {
-      const Geometry& g = src.geometries[gi];
-      ModelGeometry& mg = mb.geometries[gi];
-      mg.kind = g.kind;
-      mg.flags = g.flags;
-      mg.blas = static_cast<uint32_t>(bi);
-      mg.index = static_cast<uint32_t>(gi);
-      mg.tier = tier;
-      mg.ray_pad = tier == ModelTier::Exact ? rayPad[bi] : 0.0;
-      if (tier == ModelTier::Exact && g.transform) mg.vertex_err = geometryVertexError(*g.transform, g.vertices);
-      if (g.kind == Geometry::Kind::Aabbs) {
-        mg.aabbs = g.aabbs;
-        mg.count = static_cast<uint32_t>(g.aabbs.size());
-        continue;
-      }
-      mb.triangles = true;
-      const uint32_t n = g.primitiveCount();
-      mg.count = n;
-      // Without candidates, own tests or an unindexed buffer, no one reads the
-      // per-primitive triangles: skipped when every vertex is ordinary (no
-      // NaN, nothing Embree would drop) and every index is in range.
-      bool ordinary = !g.indices.empty() && g.indices.size() >= 3 * size_t{n};
-      if (ordinary) {
-        uint32_t maxIndex = 0;  // one pass, no early exit: vectorizes
-        for (size_t i = 0; i < 3 * size_t{n}; ++i) maxIndex = std::max(maxIndex, g.indices[i]);
-        ordinary = n == 0 || size_t{maxIndex} < g.vertices.size();
-      }
-      mg.indexed = ordinary;
-      for (size_t v = 0; ordinary && v < g.vertices.size(); ++v) {
-        const Vec3 x = g.transform ? applyAffine(*g.transform, g.vertices[v], 1.0f) : g.vertices[v];
-        for (float f : x) ordinary = ordinary && !std::isnan(f) && std::fabs(f) <= kEmbreeLarge;
-      }
-      mg.own_triangles = tier == ModelTier::Exact;
-      if (keepTriangles || filters || !ordinary || mg.own_triangles) fillTriangles(mg, g);
-      anyOwn = anyOwn || mg.own_triangles;
-    }
   }
-  // Own triangle tests mean the collect-then-process path: Embree's triangles
-  // report to it too, and their candidates need the per-primitive triangles.
-  if (anyOwn && !filters) {
-    filters = true;
-    for (size_t bi = 0; bi < c.scene.blases.size(); ++bi)
-      for (ModelGeometry& mg : s.blases[bi].geometries)
-        if (mg.kind == Geometry::Kind::Triangles && mg.triangles.size() != mg.count)
-          fillTriangles(mg, c.scene.blases[bi].geometries[mg.index]);
+  rtcSetGeometryMask(geom, kMaskTriangles);
+  if (filters) rtcSetGeometryIntersectFilterFunction(geom, triangleFilter);
+  return geom;
+}
+
+// A user geometry the model intersects itself: AABBs, or triangles under its
+// own test.
+RTCGeometry embreeUserGeometry(RTCDevice device, ModelGeometry& mg) {
+  RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+  rtcSetGeometryUserPrimitiveCount(geom, mg.count);
+  rtcSetGeometryUserData(geom, &mg);
+  if (mg.kind == Geometry::Kind::Aabbs) {
+    rtcSetGeometryBoundsFunction(geom, aabbBounds, nullptr);
+    rtcSetGeometryIntersectFunction(geom, aabbIntersect);
+    rtcSetGeometryMask(geom, kMaskAabbs);
+  } else {
+    rtcSetGeometryBoundsFunction(geom, ownTriangleBounds, nullptr);
+    rtcSetGeometryIntersectFunction(geom, ownTriangleIntersect);
+    rtcSetGeometryMask(geom, kMaskTriangles);
   }
-  s.filters = filters;
-  for (size_t bi = 0; bi < c.scene.blases.size(); ++bi) {
-    ModelBlas& mb = s.blases[bi];
-    mb.scene = rtcNewScene(s.device);
-    rtcSetSceneFlags(mb.scene, sceneFlags);
-    for (ModelGeometry& mg : mb.geometries) {
-      const uint32_t n = mg.count;
-      if (n == 0) continue;
-      RTCGeometry geom;
-      if (mg.kind == Geometry::Kind::Triangles && !mg.own_triangles) {
-        geom = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_TRIANGLE);
-        const Geometry& g = c.scene.blases[mg.blas].geometries[mg.index];
-        if (mg.indexed) {
-          // The case's own vertex sharing (fewer vertices to build from).
-          const size_t nv = g.vertices.size();
-          auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                                 RTC_FORMAT_FLOAT3, 3 * sizeof(float), nv));
-          auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0,
-                                                                    RTC_FORMAT_UINT3, 3 * sizeof(unsigned), n));
-          for (size_t v = 0; v < nv; ++v) {
-            const Vec3 x = g.transform ? applyAffine(*g.transform, g.vertices[v], 1.0f) : g.vertices[v];
-            for (int a = 0; a < 3; ++a) vb[v * 3 + a] = x[a];
-          }
-          std::copy(g.indices.begin(), g.indices.begin() + 3 * size_t{n}, ib);
-        } else {
-          auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                                 RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * n));
-          auto* ib = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0,
-                                                                    RTC_FORMAT_UINT3, 3 * sizeof(unsigned), n));
-          for (uint32_t p = 0; p < n; ++p)
-            for (int k = 0; k < 3; ++k) {
-              for (int a = 0; a < 3; ++a) vb[(p * 3 + k) * 3 + a] = mg.triangles[p][k][a];
-              ib[p * 3 + k] = p * 3 + k;
-            }
-        }
-        rtcSetGeometryMask(geom, kMaskTriangles);
-        if (filters) rtcSetGeometryIntersectFilterFunction(geom, triangleFilter);
-      } else {
-        geom = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_USER);
-        rtcSetGeometryUserPrimitiveCount(geom, n);
-        rtcSetGeometryUserData(geom, &mg);
-        if (mg.kind == Geometry::Kind::Aabbs) {
-          rtcSetGeometryBoundsFunction(geom, aabbBounds, nullptr);
-          rtcSetGeometryIntersectFunction(geom, aabbIntersect);
-          rtcSetGeometryMask(geom, kMaskAabbs);
-        } else {
-          rtcSetGeometryBoundsFunction(geom, ownTriangleBounds, nullptr);
-          rtcSetGeometryIntersectFunction(geom, ownTriangleIntersect);
-          rtcSetGeometryMask(geom, kMaskTriangles);
-        }
-      }
-      rtcCommitGeometry(geom);
-      rtcAttachGeometryByID(mb.scene, geom, mg.index);
-      rtcReleaseGeometry(geom);
-    }
-    rtcCommitScene(mb.scene);
+  return geom;
+}
+
+// One BLAS as an Embree scene of its geometries.
+void commitBlas(ModelScene& s, const Case& c, size_t bi, RTCSceneFlags sceneFlags) {
+  ModelBlas& mb = s.blases[bi];
+  mb.scene = rtcNewScene(s.device);
+  rtcSetSceneFlags(mb.scene, sceneFlags);
+  for (ModelGeometry& mg : mb.geometries) {
+    if (mg.count == 0) continue;
+    RTCGeometry geom =
+        mg.kind == Geometry::Kind::Triangles && !mg.own_triangles
+            ? embreeTriangles(s.device, mg, c.scene.blases[mg.blas].geometries[mg.index], s.filters)
+            : embreeUserGeometry(s.device, mg);
+    rtcCommitGeometry(geom);
+    rtcAttachGeometryByID(mb.scene, geom, mg.index);
+    rtcReleaseGeometry(geom);
   }
+  rtcCommitScene(mb.scene);
+}
+
+// The TLAS as an Embree scene of instances (a null BLAS: an inactive
+// instance, kept for its index but not attached).
+void commitInstances(ModelScene& s, const Case& c, RTCSceneFlags sceneFlags) {
   s.top = rtcNewScene(s.device);
   rtcSetSceneFlags(s.top, sceneFlags);
   s.instances.resize(c.scene.instances.size());
@@ -436,6 +468,45 @@ void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
     rtcReleaseGeometry(geom);
   }
   rtcCommitScene(s.top);
+}
+
+}  // namespace
+
+void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
+                     bool keepTriangles) {
+  s.tier = tier;
+  s.device = newEmbreeDevice();
+  s.blases.resize(c.scene.blases.size());
+  // Exact tier: how far a device's and Embree's object-space rays may be off
+  // and how far the exact test's ambiguity reaches, per BLAS (box_pad.h).
+  const std::vector<double> rayPad =
+      tier == ModelTier::Exact ? blasRayPads(c) : std::vector<double>();
+  bool anyOwn = false;
+  for (size_t bi = 0; bi < c.scene.blases.size(); ++bi) {
+    const Blas& src = c.scene.blases[bi];
+    s.blases[bi].geometries.resize(src.geometries.size());
+    for (size_t gi = 0; gi < src.geometries.size(); ++gi) {
+      ModelGeometry& mg = s.blases[bi].geometries[gi];
+      describeGeometry(mg, src.geometries[gi], bi, gi, tier,
+                       tier == ModelTier::Exact ? rayPad[bi] : 0.0, keepTriangles, filters);
+      if (mg.kind == Geometry::Kind::Triangles) s.blases[bi].triangles = true;
+      anyOwn = anyOwn || mg.own_triangles;
+    }
+  }
+  // Own triangle tests mean the collect-then-process path: Embree's triangles
+  // report to it too, and their candidates need the per-primitive triangles.
+  if (anyOwn && !filters) {
+    filters = true;
+    for (size_t bi = 0; bi < c.scene.blases.size(); ++bi)
+      for (ModelGeometry& mg : s.blases[bi].geometries)
+        if (mg.kind == Geometry::Kind::Triangles && mg.triangles.size() != mg.count)
+          fillTriangles(mg, c.scene.blases[bi].geometries[mg.index]);
+  }
+  s.filters = filters;
+  const RTCSceneFlags sceneFlags =
+      tier == ModelTier::Fast ? RTC_SCENE_FLAG_NONE : RTC_SCENE_FLAG_ROBUST;
+  for (size_t bi = 0; bi < c.scene.blases.size(); ++bi) commitBlas(s, c, bi, sceneFlags);
+  commitInstances(s, c, sceneFlags);
 }
 
 }  // namespace rayspec

@@ -51,8 +51,8 @@ struct ModelBlas {
 
 struct ModelInstance {
   const Instance* src = nullptr;
-  int blas = -1;                    // -1: inactive (null BLAS)
-  std::array<double, 12> inverse{}; // world -> object, row-major 3x4
+  int blas = -1;                     // -1: inactive (null BLAS)
+  std::array<double, 12> inverse{};  // world -> object, row-major 3x4
   std::array<float, 12> inverse_f{};
   InstanceForm form = InstanceForm::General;  // what a device's inverse rounds
 };
@@ -83,7 +83,8 @@ constexpr unsigned kMaskTriangles = 0x100, kMaskAabbs = 0x200;
 // `keepTriangles`: fill ModelGeometry::triangles even where nothing but the
 // facing of a direct hit could read them (false: only where own triangle
 // tests, candidates or an unindexed Embree buffer need them).
-void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters, bool keepTriangles = true);
+void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
+                     bool keepTriangles = true);
 
 // True when Embree would drop this triangle although Vulkan keeps it active.
 bool needsOwnTriangleTest(const std::array<Vec3, 3>& tri);
@@ -94,6 +95,7 @@ bool triangleInactive(const std::array<Vec3, 3>& tri);
 // box of its finite coordinates, unbounded along a component with a NaN,
 // through the geometry transform (if any), conservatively.
 bool triangleNanYZ(const std::array<Vec3, 3>& tri);
-std::array<double, 6> nanTriangleRegion(const std::array<Vec3, 3>& tri, const std::optional<Transform>& transform);
+std::array<double, 6> nanTriangleRegion(const std::array<Vec3, 3>& tri,
+                                        const std::optional<Transform>& transform);
 
 }  // namespace rayspec

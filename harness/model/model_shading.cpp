@@ -1,7 +1,7 @@
 #include "model/model_shading.h"
 
-#include <bit>
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace rayspec {
@@ -10,14 +10,23 @@ namespace {
 float recordFloat(const std::vector<uint32_t>& r, uint32_t i) {
   return std::bit_cast<float>(i < r.size() ? r[i] : 0u);
 }
-float dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 sub3(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 div3(const Vec3& a, float s) { return {a[0] / s, a[1] / s, a[2] / s}; }
-Vec3 normalize3(const Vec3& v) { return div3(v, std::sqrt(dot3(v, v))); }
+float dot3(const Vec3& a, const Vec3& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+Vec3 sub3(const Vec3& a, const Vec3& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+Vec3 div3(const Vec3& a, float s) {
+  return {a[0] / s, a[1] / s, a[2] / s};
+}
+Vec3 normalize3(const Vec3& v) {
+  return div3(v, std::sqrt(dot3(v, v)));
+}
 
 }  // namespace
 
-F4 lightColor(const std::string& kind, const Vec3& P, const Vec3& N, const std::vector<uint32_t>& rec) {
+F4 lightColor(const std::string& kind, const Vec3& P, const Vec3& N,
+              const std::vector<uint32_t>& rec) {
   return lightColor(kind == "point"  ? LightKind::Point
                     : kind == "spot" ? LightKind::Spot
                                      : LightKind::Directional,
@@ -25,7 +34,9 @@ F4 lightColor(const std::string& kind, const Vec3& P, const Vec3& N, const std::
 }
 
 F4 lightColor(LightKind kind, const Vec3& P, const Vec3& N, const std::vector<uint32_t>& rec) {
-  auto f = [&](uint32_t i) { return recordFloat(rec, i); };
+  auto f = [&](uint32_t i) {
+    return recordFloat(rec, i);
+  };
   if (kind == LightKind::Point) {
     const Vec3 L = sub3({f(0), f(1), f(2)}, P);
     const float d2 = dot3(L, L);

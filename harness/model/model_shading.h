@@ -16,7 +16,8 @@ using F4 = std::array<float, 4>;
 
 // `light: point|spot|directional`: P = call.position, N = call.normal,
 // record = the callable's shader record words (floats as bits).
-F4 lightColor(const std::string& kind, const Vec3& P, const Vec3& N, const std::vector<uint32_t>& record);
+F4 lightColor(const std::string& kind, const Vec3& P, const Vec3& N,
+              const std::vector<uint32_t>& record);
 F4 lightColor(LightKind kind, const Vec3& P, const Vec3& N, const std::vector<uint32_t>& record);
 
 struct SphereRoots {

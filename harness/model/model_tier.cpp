@@ -14,9 +14,12 @@ ModelTier parseModelTier(const std::string& name) {
 
 const char* modelTierName(ModelTier t) {
   switch (t) {
-    case ModelTier::Fast: return "fast";
-    case ModelTier::Robust: return "robust";
-    case ModelTier::Exact: return "exact";
+    case ModelTier::Fast:
+      return "fast";
+    case ModelTier::Robust:
+      return "robust";
+    case ModelTier::Exact:
+      return "exact";
   }
   return "?";
 }

@@ -14,10 +14,10 @@ namespace rayspec {
 struct ModelScene;
 
 struct ModelCandidate {
-  double t = 0;      // triangles: hit t; AABBs: box entry, clamped to tmin
+  double t = 0;  // triangles: hit t; AABBs: box entry, clamped to tmin
   uint32_t instance = 0, geometry = 0, primitive = 0;
   bool aabb = false;
-  bool hit = true;   // triangles: the model's decision (false: kept only as ambiguous)
+  bool hit = true;  // triangles: the model's decision (false: kept only as ambiguous)
   float b1 = 0, b2 = 0;
   TriAmbiguity ambiguity = TriAmbiguity::None;
   bool near_face = false;  // AABBs, exact tier: the ray passes within the error
@@ -25,7 +25,7 @@ struct ModelCandidate {
   // Triangles, exact tier: every device compares t with the trace's tmin /
   // tmax exactly (model/exact_interval.h): no tie at that end.
   bool exact_tmin = false, exact_tmax = false;
-  double t_err = 0;  // triangles, exact tier: how far a device's t may lie (0: unknown)
+  double t_err = 0;           // triangles, exact tier: how far a device's t may lie (0: unknown)
   bool nan_triangle = false;  // a triangle with NaN in Y or Z (never a hit: the
                               // ray crosses where it might be, R-UB); t: entry
 };

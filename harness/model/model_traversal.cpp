@@ -37,8 +37,10 @@ Facing facing(const ModelScene& s, const ModelCandidate& c, const TraceRay& ray,
   const auto& tri = s.blases[mi.blas].geometries[c.geometry].triangles[c.primitive];
   const Vec3 d = applyAffine(mi.inverse_f, ray.direction, 0);
   double n[3];
-  const double e1[3] = {double(tri[1][0]) - tri[0][0], double(tri[1][1]) - tri[0][1], double(tri[1][2]) - tri[0][2]};
-  const double e2[3] = {double(tri[2][0]) - tri[0][0], double(tri[2][1]) - tri[0][1], double(tri[2][2]) - tri[0][2]};
+  const double e1[3] = {double(tri[1][0]) - tri[0][0], double(tri[1][1]) - tri[0][1],
+                        double(tri[1][2]) - tri[0][2]};
+  const double e2[3] = {double(tri[2][0]) - tri[0][0], double(tri[2][1]) - tri[0][1],
+                        double(tri[2][2]) - tri[0][2]};
   n[0] = e1[1] * e2[2] - e1[2] * e2[1];
   n[1] = e1[2] * e2[0] - e1[0] * e2[2];
   n[2] = e1[0] * e2[1] - e1[1] * e2[0];
@@ -56,8 +58,8 @@ Facing facing(const ModelScene& s, const ModelCandidate& c, const TraceRay& ray,
 }
 
 // The environment of a stage that sees a hit (intersection, any-hit, closest-hit).
-StageEnv hitStage(Stage stage, const std::vector<uint32_t>& record_data, Payload* payload, const TraceRay& ray,
-                  const HitView& hv, float tmax_view, uint32_t depth) {
+StageEnv hitStage(Stage stage, const std::vector<uint32_t>& record_data, Payload* payload,
+                  const TraceRay& ray, const HitView& hv, float tmax_view, uint32_t depth) {
   StageEnv e;
   e.stage = stage;
   e.record_data = &record_data;
@@ -77,8 +79,8 @@ void setHit(HitView& hv, float t, uint32_t kind, float b1, float b2) {
   hv.b2 = b2;
 }
 
-HitView viewOf(const ModelScene& s, const Case& c, const TraceRay& ray, uint32_t instance, uint32_t geometry,
-               uint32_t primitive, bool objectRay) {
+HitView viewOf(const ModelScene& s, const Case& c, const TraceRay& ray, uint32_t instance,
+               uint32_t geometry, uint32_t primitive, bool objectRay) {
   HitView hv;
   const ModelInstance& mi = s.instances[instance];
   hv.instance = instance;
@@ -115,8 +117,8 @@ using namespace trace_detail;
 // R-SBT-HIT: instance offset (24 bits) + geometry x stride + offset (4 bits each).
 uint64_t Machine::hitRecordIndex(uint32_t instance, uint32_t geometry, const TraceRay& r) const {
   const Instance& inst = sh_.c->scene.instances[instance];
-  return static_cast<uint64_t>(inst.sbt_offset & 0xFFFFFF) + static_cast<uint64_t>(geometry) * (r.sbt_stride & 0xF) +
-         (r.sbt_offset & 0xF);
+  return static_cast<uint64_t>(inst.sbt_offset & 0xFFFFFF) +
+         static_cast<uint64_t>(geometry) * (r.sbt_stride & 0xF) + (r.sbt_offset & 0xF);
 }
 
 // Beyond the hit region: nullptr (R-UB, checkCandidates / shade mark the ray).
@@ -139,7 +141,8 @@ Flow Machine::report(const CStmt& s, StageEnv& env) {
   bool inside = t >= tr->ray.tmin && static_cast<double>(t) <= tr->tmax_cur;
   if (sh_.deviation == ModelDeviation::OpenAabbInterval)
     inside = t > tr->ray.tmin && static_cast<double>(t) < tr->tmax_cur;
-  if (tr->reports && t >= tr->ray.tmin && t <= tr->ray.tmax + tr->tol(t)) tr->reports->push_back({tr->cur_index, t});
+  if (tr->reports && t >= tr->ray.tmin && t <= tr->ray.tmax + tr->tol(t))
+    tr->reports->push_back({tr->cur_index, t});
   if (tr->exact) {
     // R-PREC: a sphere root within its error bound of an interval end may
     // fall on either side on a device. Not against the current candidate's
@@ -148,14 +151,16 @@ Flow Machine::report(const CStmt& s, StageEnv& env) {
     if (const ShaderDecision* f = tr->forced(1, ord)) {
       inside = f->value;
     } else if (tr->shader_unsure && s.t.kind == Expr::Kind::Op &&
-               (s.t.op == OpCode::SphereNear || s.t.op == OpCode::SphereFar) && env.hit && env.ray) {
+               (s.t.op == OpCode::SphereNear || s.t.op == OpCode::SphereFar) && env.hit &&
+               env.ray) {
       const HitView& h = *env.hit;
       const ModelInstance& mi = sh_.scene->instances[h.instance];
-      const SphereError se = sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
-                                         objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
+      const SphereError se =
+          sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
+                      objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
       const double et = (s.t.op == OpCode::SphereNear ? se.near_err : se.far_err) + tr->tol(t);
-      const bool own = tr->best.valid && tr->best.instance == h.instance && tr->best.geometry == h.geometry &&
-                       tr->best.primitive == h.primitive;
+      const bool own = tr->best.valid && tr->best.instance == h.instance &&
+                       tr->best.geometry == h.geometry && tr->best.primitive == h.primitive;
       const bool nearEnd = std::fabs(double(t) - tr->ray.tmin) <= et ||
                            (!own && std::fabs(double(t) - tr->tmax_cur) <= et);
       if (nearEnd) tr->shader_unsure->push_back({tr->cur_index, 1, ord, inside});
@@ -164,8 +169,10 @@ Flow Machine::report(const CStmt& s, StageEnv& env) {
   // What-if run preferring one candidate (R-TIE): it wins every tie, and a
   // committed preferred hit loses none.
   if (tr->prefer >= 0 && t >= tr->ray.tmin && tr->ties(t)) {
-    if (tr->cur_index == static_cast<size_t>(tr->prefer)) inside = true;
-    else if (tr->isPreferred(tr->best.instance, tr->best.geometry, tr->best.primitive)) inside = false;
+    if (tr->cur_index == static_cast<size_t>(tr->prefer))
+      inside = true;
+    else if (tr->isPreferred(tr->best.instance, tr->best.geometry, tr->best.primitive))
+      inside = false;
   }
   if (inside) {
     HitView hv = *env.hit;
@@ -174,18 +181,21 @@ Flow Machine::report(const CStmt& s, StageEnv& env) {
     if (!tr->cur_opaque && tr->cur_group && tr->cur_group->any_hit) {
       markAnyHit(hv);
       // R-TMAX-VIEW: any-hit sees the candidate's t.
-      StageEnv a = hitStage(Stage::AnyHit, tr->cur_rec->data, tr->payload, tr->ray, hv, t, tr->depth);
+      StageEnv a =
+          hitStage(Stage::AnyHit, tr->cur_rec->data, tr->payload, tr->ray, hv, t, tr->depth);
       ah = exec(*tr->cur_group->any_hit, a);
     }
     if (ah != Flow::Ignore) {
       accepted = true;
-      tr->best = {true, static_cast<double>(t), hv.instance, hv.geometry, hv.primitive, kind, hv.b1, hv.b2};
+      tr->best = {true, static_cast<double>(t), hv.instance, hv.geometry, hv.primitive, kind, hv.b1,
+                  hv.b2};
       if (tr->exact && s.t.kind == Expr::Kind::Op &&
           (s.t.op == OpCode::SphereNear || s.t.op == OpCode::SphereFar) && env.hit && env.ray) {
         // R-PREC: how far a device's root may lie from this one.
         const ModelInstance& mi = sh_.scene->instances[hv.instance];
-        const SphereError se = sphereError(hv.aabb_min, hv.aabb_max, hv.object_origin, hv.object_direction,
-                                           objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
+        const SphereError se =
+            sphereError(hv.aabb_min, hv.aabb_max, hv.object_origin, hv.object_direction,
+                        objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
         tr->best.t_err = s.t.op == OpCode::SphereNear ? se.near_err : se.far_err;
       }
       tr->tmax_cur = t;
@@ -218,7 +228,8 @@ Payload Machine::trace(const TraceRay& r, uint32_t depth, const CStmt* site) {
 // The model's decision over the sorted candidates (R-ORDER-UNSPEC: in
 // ascending distance). `force`, when given, overrides per candidate whether a
 // triangle is a hit (-1: the model's own decision, 0: no, 1: yes).
-void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, const int8_t* force, Payload& payload) {
+void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, const int8_t* force,
+                     Payload& payload) {
   const Case& c = *sh_.c;
   const ModelScene& scene = *sh_.scene;
   const TraceRay& r = tr.ray;
@@ -253,7 +264,8 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
       tr.cur_group = grp;
       bumpRuns(kRunsIntersection);
       // R-TMAX-VIEW: the intersection shader sees the closest t so far.
-      StageEnv env = hitStage(Stage::Intersection, rec->data, nullptr, r, hv, static_cast<float>(tr.tmax_cur), depth);
+      StageEnv env = hitStage(Stage::Intersection, rec->data, nullptr, r, hv,
+                              static_cast<float>(tr.tmax_cur), depth);
       env.traversal = &tr;
       exec(*grp->intersection, env);
       tr.cur = nullptr;
@@ -266,18 +278,20 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
     // What-if run forcing a hit at an interval end (tmin-tie, tmax-tie): a
     // float ray test may put it a step inside, unless every device computes
     // this t exactly (R-CAND-TRI-OPEN, model/exact_interval.h).
-    const bool exactOut = (cand.exact_tmin && cand.t <= tr.tmin) || (cand.exact_tmax && cand.t >= tr.tmax_cur);
-    if (!inside && force && force[k] == 1 && !tr.best.valid && !exactOut && cand.t > tr.tmin - tr.endTol(cand) &&
-        cand.t < tr.tmax_cur + tr.endTol(cand))
+    const bool exactOut =
+        (cand.exact_tmin && cand.t <= tr.tmin) || (cand.exact_tmax && cand.t >= tr.tmax_cur);
+    if (!inside && force && force[k] == 1 && !tr.best.valid && !exactOut &&
+        cand.t > tr.tmin - tr.endTol(cand) && cand.t < tr.tmax_cur + tr.endTol(cand))
       inside = true;
     const bool tie = tr.exact && tr.ties(cand.t);
-    const bool bestPreferred = tr.isPreferred(tr.best.instance, tr.best.geometry, tr.best.primitive);
+    const bool bestPreferred =
+        tr.isPreferred(tr.best.instance, tr.best.geometry, tr.best.primitive);
     if (tie && (tr.prefer == static_cast<long>(k) || bestPreferred)) {
       // What-if run preferring one candidate (R-TIE).
       inside = tr.prefer == static_cast<long>(k) && cand.t > tr.tmin;
     } else if (!inside && tie &&
-               keyLess(cand.instance, cand.geometry, cand.primitive, tr.best.instance, tr.best.geometry,
-                       tr.best.primitive)) {
+               keyLess(cand.instance, cand.geometry, cand.primitive, tr.best.instance,
+                       tr.best.geometry, tr.best.primitive)) {
       // Exact tier, R-TIE: a tie with the committed hit goes to the smaller key.
       inside = true;
     }
@@ -294,7 +308,8 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
       if (ah == Flow::Ignore) continue;
     }
     // Exact tier, R-PREC: how far a device's t may lie (its frame's rounding).
-    tr.best = {true, cand.t, cand.instance, cand.geometry, cand.primitive, f.kind, cand.b1, cand.b2, cand.t_err};
+    tr.best = {true,   cand.t,  cand.instance, cand.geometry, cand.primitive,
+               f.kind, cand.b1, cand.b2,       cand.t_err};
     tr.tmax_cur = cand.t;
     if (ah == Flow::Terminate || (tr.flags & kRayTerminateOnFirstHit)) tr.stop = true;
   }
@@ -316,7 +331,7 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
   RTCRayHit rh = embreeRay(r, tr.flags);
   std::vector<ModelCandidate>* cands = nullptr;
   std::vector<std::pair<size_t, double>> reports;  // exact tier: every report of the actual run
-  std::vector<ShaderDecision> shaderUnsure;  // exact tier: decisions rounding may flip
+  std::vector<ShaderDecision> shaderUnsure;        // exact tier: decisions rounding may flip
   if (validRay(r, rh)) {
     if (cand_pool_.size() < depth) cand_pool_.resize(depth);
     cands = &cand_pool_[depth - 1];
@@ -334,11 +349,13 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
     rh.ray.tfar = r.tmax + std::fabs(r.tmax) * 1e-5f;
     rtcIntersect1(scene.top, &tc.rtc, &rh);
     const CandidateOrder order = sh_.order;
-    std::sort(cands->begin(), cands->end(), [order](const ModelCandidate& a, const ModelCandidate& b) {
-      const bool key = keyLess(a.instance, a.geometry, a.primitive, b.instance, b.geometry, b.primitive);
-      if (order == CandidateOrder::BuildOrder || a.t == b.t) return key;
-      return order == CandidateOrder::ReverseDistance ? a.t > b.t : a.t < b.t;
-    });
+    std::sort(
+        cands->begin(), cands->end(), [order](const ModelCandidate& a, const ModelCandidate& b) {
+          const bool key =
+              keyLess(a.instance, a.geometry, a.primitive, b.instance, b.geometry, b.primitive);
+          if (order == CandidateOrder::BuildOrder || a.t == b.t) return key;
+          return order == CandidateOrder::ReverseDistance ? a.t > b.t : a.t < b.t;
+        });
     tr.reports = tr.exact ? &reports : nullptr;
     tr.shader_unsure = tr.exact && sh_.programs->reads_sphere ? &shaderUnsure : nullptr;
     decide(tr, *cands, nullptr, payload);
@@ -361,7 +378,8 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
 }
 
 // R-MISS-XOR-CHIT: closest-hit or miss for the committed hit.
-void Machine::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Committed& best, Payload& payload) {
+void Machine::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Committed& best,
+                    Payload& payload) {
   const Case& c = *sh_.c;
   const ModelScene& scene = *sh_.scene;
   if (best.valid) {
@@ -374,8 +392,8 @@ void Machine::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Com
         bump(grp->closest_hit_counts);
         bumpRuns(kRunsClosestHit);
       } else if (grp && grp->closest_hit) {
-        HitView hv = viewOf(scene, c, r, best.instance, best.geometry, best.primitive,
-                            sh_.need_object_ray);
+        HitView hv =
+            viewOf(scene, c, r, best.instance, best.geometry, best.primitive, sh_.need_object_ray);
         setHit(hv, static_cast<float>(best.t), best.kind, best.b1, best.b2);
         bumpRuns(kRunsClosestHit);
         StageEnv env = hitStage(Stage::ClosestHit, rec->data, &payload, r, hv, hv.t, depth);
@@ -388,7 +406,8 @@ void Machine::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Com
     if (mi >= default_miss_.size() && !ray_undefined_) missRecordOutOfRange(r);
     if (mi < default_miss_.size()) {
       const SbtRecord& rec = default_miss_[mi];
-      if (rec.group && *rec.group < c.pipeline.miss.size() && sh_.programs->miss_counts[*rec.group].yes) {
+      if (rec.group && *rec.group < c.pipeline.miss.size() &&
+          sh_.programs->miss_counts[*rec.group].yes) {
         bump(sh_.programs->miss_counts[*rec.group]);
         bumpRuns(kRunsMiss);
       } else if (rec.group && *rec.group < c.pipeline.miss.size()) {

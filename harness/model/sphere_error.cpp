@@ -32,7 +32,8 @@ ObjectRayError objectRayError(const std::array<float, 12>& m, const Vec3& o, con
   return e;
 }
 
-SphereError sphereError(const Vec3& bmin, const Vec3& bmax, const Vec3& o, const Vec3& d, const ObjectRayError& e) {
+SphereError sphereError(const Vec3& bmin, const Vec3& bmax, const Vec3& o, const Vec3& d,
+                        const ObjectRayError& e) {
   double c[3], h[3], oc[3], eoc[3];
   for (int k = 0; k < 3; ++k) {
     c[k] = (double(bmin[k]) + bmax[k]) * 0.5;
@@ -60,8 +61,9 @@ SphereError sphereError(const Vec3& bmin, const Vec3& bmax, const Vec3& o, const
   ecc += 4 * kUnitRoundoff * ccabs;
   SphereError s;
   s.disc = b * b - a * cc;
-  s.disc_err = 2 * std::fabs(b) * eb + eb * eb + std::fabs(a) * ecc + std::fabs(cc) * ea + ea * ecc +
-               2 * kUnitRoundoff * (b * b + std::fabs(a * cc)) + 2 * kUnitRoundoff * std::fabs(s.disc);
+  s.disc_err = 2 * std::fabs(b) * eb + eb * eb + std::fabs(a) * ecc + std::fabs(cc) * ea +
+               ea * ecc + 2 * kUnitRoundoff * (b * b + std::fabs(a * cc)) +
+               2 * kUnitRoundoff * std::fabs(s.disc);
   if (!(a > 0)) {
     s.near_err = s.far_err = INFINITY;
     return s;
@@ -69,10 +71,12 @@ SphereError sphereError(const Vec3& bmin, const Vec3& bmax, const Vec3& o, const
   // The square root over every discriminant within the bound.
   const double sq = std::sqrt(std::max(s.disc, 0.0));
   const double es = std::max(std::sqrt(std::max(s.disc, 0.0) + s.disc_err) - sq,
-                             sq - std::sqrt(std::max(s.disc - s.disc_err, 0.0))) + kUnitRoundoff * sq;
+                             sq - std::sqrt(std::max(s.disc - s.disc_err, 0.0))) +
+                    kUnitRoundoff * sq;
   for (int sign : {-1, 1}) {
     const double t = (-b + sign * sq) / a;
-    const double err = (eb + es) / a + std::fabs(t) * ea / a + 3 * kUnitRoundoff * (std::fabs(t) + (std::fabs(b) + sq) / a);
+    const double err = (eb + es) / a + std::fabs(t) * ea / a +
+                       3 * kUnitRoundoff * (std::fabs(t) + (std::fabs(b) + sq) / a);
     (sign < 0 ? s.near_err : s.far_err) = err;
   }
   return s;

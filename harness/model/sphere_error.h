@@ -17,15 +17,17 @@ namespace rayspec {
 struct ObjectRayError {
   Vec3 origin{}, direction{};
 };
-ObjectRayError objectRayError(const std::array<float, 12>& inverse, const Vec3& worldOrigin, const Vec3& worldDirection);
+ObjectRayError objectRayError(const std::array<float, 12>& inverse, const Vec3& worldOrigin,
+                              const Vec3& worldDirection);
 
 struct SphereError {
-  double disc = 0;     // the model's float discriminant, widened
-  double disc_err = 0; // bound on |device disc - model disc|
+  double disc = 0;                   // the model's float discriminant, widened
+  double disc_err = 0;               // bound on |device disc - model disc|
   double near_err = 0, far_err = 0;  // bounds on the roots' differences
 };
 // The model's terms (sphereRoots) for the object ray o + t d with the
 // perturbation `e` of o and d, each later float operation rounded anew.
-SphereError sphereError(const Vec3& bmin, const Vec3& bmax, const Vec3& o, const Vec3& d, const ObjectRayError& e);
+SphereError sphereError(const Vec3& bmin, const Vec3& bmax, const Vec3& o, const Vec3& d,
+                        const ObjectRayError& e);
 
 }  // namespace rayspec

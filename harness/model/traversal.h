@@ -65,8 +65,10 @@ struct Traversal {
   // (translated frame, model/watertight.h) where known.
   double endTol(const ModelCandidate& c) const { return c.t_err > 0 ? c.t_err : tol(c.t); }
   double tol(double t) const {
-    const double om = std::max({std::fabs(ray.origin[0]), std::fabs(ray.origin[1]), std::fabs(ray.origin[2])});
-    const double dm = std::max({std::fabs(ray.direction[0]), std::fabs(ray.direction[1]), std::fabs(ray.direction[2])});
+    const double om =
+        std::max({std::fabs(ray.origin[0]), std::fabs(ray.origin[1]), std::fabs(ray.origin[2])});
+    const double dm = std::max(
+        {std::fabs(ray.direction[0]), std::fabs(ray.direction[1]), std::fabs(ray.direction[2])});
     return kDeviceRelTolerance * (std::fabs(t) + (dm > 0 ? om / dm : 0.0));
   }
 };
@@ -79,24 +81,32 @@ const CHitGroup* groupOf(const CPipeline& p, const SbtRecord* rec);
 bool resolveOpaque(uint32_t geomFlags, uint32_t instFlags, uint32_t rayFlags);
 
 // Facing of a triangle candidate (R-FACE-DET) and its hit kind (R-HITKIND-TRI).
-struct Facing { bool front = true; bool culled = false; uint32_t kind = 0xFE; };
+struct Facing {
+  bool front = true;
+  bool culled = false;
+  uint32_t kind = 0xFE;
+};
 Facing facing(const ModelScene& s, const ModelCandidate& c, const TraceRay& ray, uint32_t flags);
 
 // The environment of a stage that sees a hit (intersection, any-hit, closest-hit).
-StageEnv hitStage(Stage stage, const std::vector<uint32_t>& record_data, Payload* payload, const TraceRay& ray,
-                  const HitView& hv, float tmax_view, uint32_t depth);
+StageEnv hitStage(Stage stage, const std::vector<uint32_t>& record_data, Payload* payload,
+                  const TraceRay& ray, const HitView& hv, float tmax_view, uint32_t depth);
 // A hit's own values on the view of its primitive.
 void setHit(HitView& hv, float t, uint32_t kind, float b1, float b2);
-HitView viewOf(const ModelScene& s, const Case& c, const TraceRay& ray, uint32_t instance, uint32_t geometry,
-               uint32_t primitive, bool objectRay = true);
+HitView viewOf(const ModelScene& s, const Case& c, const TraceRay& ray, uint32_t instance,
+               uint32_t geometry, uint32_t primitive, bool objectRay = true);
 
 // An Embree ray for a launch ray (Ray) or a traced one (TraceRay): inline, the
 // fast path builds one per launch ray.
 template <typename AnyRay>
 inline RTCRayHit embreeRay(const AnyRay& r, uint32_t flags) {
   RTCRayHit rh;
-  rh.ray.org_x = r.origin[0]; rh.ray.org_y = r.origin[1]; rh.ray.org_z = r.origin[2];
-  rh.ray.dir_x = r.direction[0]; rh.ray.dir_y = r.direction[1]; rh.ray.dir_z = r.direction[2];
+  rh.ray.org_x = r.origin[0];
+  rh.ray.org_y = r.origin[1];
+  rh.ray.org_z = r.origin[2];
+  rh.ray.dir_x = r.direction[0];
+  rh.ray.dir_y = r.direction[1];
+  rh.ray.dir_z = r.direction[2];
   rh.ray.time = 0;
   rh.ray.mask = (r.cull_mask & 0xFF) | ((flags & kRaySkipTriangles) ? 0u : kMaskTriangles) |
                 ((flags & kRaySkipAabbs) ? 0u : kMaskAabbs);

@@ -9,7 +9,6 @@ namespace rayspec {
 
 namespace {
 
-
 // The sign of the edge function of (a, b) for the origin moved by (eps,
 // eps^2): e(eps) = e - eps (p_by - p_ay) + eps^2 (p_bx - p_ax). Swapping a
 // and b negates it exactly (the same differences, negated). 0 only for an
@@ -43,8 +42,10 @@ WatertightRay prepareWatertightRay(const DVec3& o, const DVec3& d, const FrameEr
   w.sz = 1.0 / d[kz];
   const double round = kFrameRoundings * kUnitRoundoff;
   // The shear a device derives from its own direction.
-  w.dsx = round * std::fabs(w.sx) + (err.direction[kx] + std::fabs(w.sx) * err.direction[kz]) / std::fabs(d[kz]);
-  w.dsy = round * std::fabs(w.sy) + (err.direction[ky] + std::fabs(w.sy) * err.direction[kz]) / std::fabs(d[kz]);
+  w.dsx = round * std::fabs(w.sx) +
+          (err.direction[kx] + std::fabs(w.sx) * err.direction[kz]) / std::fabs(d[kz]);
+  w.dsy = round * std::fabs(w.sy) +
+          (err.direction[ky] + std::fabs(w.sy) * err.direction[kz]) / std::fabs(d[kz]);
   // The device's origin error, sheared: one shift of all three vertices.
   w.shiftX = err.origin[kx] + std::fabs(w.sx) * err.origin[kz];
   w.shiftY = err.origin[ky] + std::fabs(w.sy) * err.origin[kz];
@@ -57,13 +58,17 @@ WatertightHit watertightIntersect(const DVec3& o, const DVec3& d, const DVec3& v
   return watertightIntersectPrepared(prepareWatertightRay(o, d, err), v0, v1, v2, err.vertex);
 }
 
-WatertightHit watertightIntersectPrepared(const WatertightRay& w, const DVec3& v0, const DVec3& v1, const DVec3& v2,
-                                  const DVec3& vertexErr) {
+WatertightHit watertightIntersectPrepared(const WatertightRay& w, const DVec3& v0, const DVec3& v1,
+                                          const DVec3& v2, const DVec3& vertexErr) {
   WatertightHit r;
-  if (!w.valid) { r.valid = false; return r; }
+  if (!w.valid) {
+    r.valid = false;
+    return r;
+  }
   const DVec3& o = w.o;
   const int kx = w.kx, ky = w.ky, kz = w.kz;
-  const double sx = w.sx, sy = w.sy, sz = w.sz, dsx = w.dsx, dsy = w.dsy, shiftX = w.shiftX, shiftY = w.shiftY;
+  const double sx = w.sx, sy = w.sy, sz = w.sz, dsx = w.dsx, dsy = w.dsy, shiftX = w.shiftX,
+               shiftY = w.shiftY;
   const double round = kFrameRoundings * kUnitRoundoff;
   const DVec3* v[3] = {&v0, &v1, &v2};
   double px[3], py[3], pz[3], ex[3], ey[3];
@@ -85,14 +90,19 @@ WatertightHit watertightIntersectPrepared(const WatertightRay& w, const DVec3& v
   for (int i = 0; i < 3; ++i) {
     const int a = (i + 1) % 3, b = (i + 2) % 3;
     e[i] = px[a] * py[b] - py[a] * px[b];
-    const double ax = std::fabs(px[a]), ay = std::fabs(py[a]), bx = std::fabs(px[b]), by = std::fabs(py[b]);
-    bound[i] = shiftX * std::fabs(py[b] - py[a]) + shiftY * std::fabs(px[b] - px[a]) +
-               ax * ey[b] + by * ex[a] + ay * ex[b] + bx * ey[a] +
-               shiftX * (ey[a] + ey[b]) + shiftY * (ex[a] + ex[b]) + ex[a] * ey[b] + ey[a] * ex[b] +
-               round * ((ax + shiftX + ex[a]) * (by + shiftY + ey[b]) + (ay + shiftY + ey[a]) * (bx + shiftX + ex[b]));
+    const double ax = std::fabs(px[a]), ay = std::fabs(py[a]), bx = std::fabs(px[b]),
+                 by = std::fabs(py[b]);
+    bound[i] = shiftX * std::fabs(py[b] - py[a]) + shiftY * std::fabs(px[b] - px[a]) + ax * ey[b] +
+               by * ex[a] + ay * ex[b] + bx * ey[a] + shiftX * (ey[a] + ey[b]) +
+               shiftY * (ex[a] + ex[b]) + ex[a] * ey[b] + ey[a] * ex[b] +
+               round * ((ax + shiftX + ex[a]) * (by + shiftY + ey[b]) +
+                        (ay + shiftY + ey[a]) * (bx + shiftX + ex[b]));
   }
   for (int i = 0; i < 3; ++i)
-    if (std::isnan(e[i]) || std::isnan(pz[i]) || std::isnan(bound[i])) { r.valid = false; return r; }
+    if (std::isnan(e[i]) || std::isnan(pz[i]) || std::isnan(bound[i])) {
+      r.valid = false;
+      return r;
+    }
   // The hit decision: an edge function of exactly zero (the ray through the
   // edge in double precision) takes the sign it has for the origin moved by
   // (eps, eps^2) in the sheared plane, eps -> 0 (a symbolic perturbation):
@@ -101,7 +111,8 @@ WatertightHit watertightIntersectPrepared(const WatertightRay& w, const DVec3& v
   // closed fan around a vertex) counts the ray as inside. A watertight
   // device hits one of them; the model does the same.
   double side[3];
-  for (int i = 0; i < 3; ++i) side[i] = e[i] != 0.0 ? e[i] : perturbedSide(px, py, (i + 1) % 3, (i + 2) % 3);
+  for (int i = 0; i < 3; ++i)
+    side[i] = e[i] != 0.0 ? e[i] : perturbedSide(px, py, (i + 1) % 3, (i + 2) % 3);
   const bool anyNeg = side[0] < 0 || side[1] < 0 || side[2] < 0;
   const bool anyPos = side[0] > 0 || side[1] > 0 || side[2] > 0;
   // Clear sides: an edge function beyond its bound.
@@ -113,14 +124,18 @@ WatertightHit watertightIntersectPrepared(const WatertightRay& w, const DVec3& v
     r.t = (e[0] * pz[0] + e[1] * pz[1] + e[2] * pz[2]) / det;
     r.b1 = e[1] / det;
     r.b2 = e[2] / det;
-    if (std::isnan(r.t)) { r.valid = false; return r; }
+    if (std::isnan(r.t)) {
+      r.valid = false;
+      return r;
+    }
     const double dirErr = w.dirErr;
     double tErr = 0, depthErr = 0;
     for (int i = 0; i < 3; ++i) {
       const double az = std::fabs((*v[i])[kz] - o[kz]);
       tErr += bound[i] * std::fabs(pz[i] - r.t);
-      depthErr = std::max(depthErr, (w.origin_err[kz] + vertexErr[kz] + round * az) * std::fabs(sz) +
-                                        dirErr * std::fabs(pz[i]));
+      depthErr =
+          std::max(depthErr, (w.origin_err[kz] + vertexErr[kz] + round * az) * std::fabs(sz) +
+                                 dirErr * std::fabs(pz[i]));
     }
     r.t_err = tErr / std::fabs(det) + depthErr;
     if (!std::isfinite(r.t_err)) r.t_err = 0;

@@ -20,7 +20,8 @@
 //   bound = D_x |p_by - p_ay| + D_y |p_bx - p_ax|              (common shift)
 //         + |p_ax| E_by + |p_by| E_ax + |p_ay| E_bx + |p_bx| E_ay
 //         + D_x (E_ay + E_by) + D_y (E_ax + E_bx) + E_ax E_by + E_ay E_bx
-//         + r ((|p_ax| + D_x + E_ax)(|p_by| + D_y + E_by) + (|p_ay| + D_y + E_ay)(|p_bx| + D_x + E_bx))
+//         + r ((|p_ax| + D_x + E_ax)(|p_by| + D_y + E_by) + (|p_ay| + D_y + E_ay)(|p_bx| + D_x +
+//         E_bx))
 // where D = the device's origin error carried through the shear (the same
 // for the three vertices: it moves the triangle rigidly, so it enters with
 // the edge's own extent, exactly), E_j = the per-vertex error (the rounding
@@ -40,10 +41,11 @@ namespace rayspec {
 enum class TriAmbiguity { None, Edge, Vertex, Degenerate };
 
 struct WatertightHit {
-  bool hit = false;        // the double-precision decision (an edge exactly hit: a perturbation decides, watertight.cpp)
-  double t = 0, b1 = 0, b2 = 0;  // barycentrics: weights of v1 and v2
+  bool hit = false;  // the double-precision decision (an edge exactly hit: a perturbation decides,
+                     // watertight.cpp)
+  double t = 0, b1 = 0, b2 = 0;                 // barycentrics: weights of v1 and v2
   TriAmbiguity ambiguity = TriAmbiguity::None;  // near an edge / vertex
-  bool valid = true;       // false: NaN somewhere (never a hit)
+  bool valid = true;                            // false: NaN somewhere (never a hit)
   // How far a device's t may lie from `t` (same frame: each vertex's depth
   // error, and the edge functions' errors weighted by how far each vertex's
   // depth lies from t); 0 when there is no t (zero determinant).
@@ -83,7 +85,7 @@ struct WatertightRay {
   double dirErr = 0;              // relative error of the depth scale
 };
 WatertightRay prepareWatertightRay(const DVec3& o, const DVec3& d, const FrameError& err);
-WatertightHit watertightIntersectPrepared(const WatertightRay& ray, const DVec3& v0, const DVec3& v1, const DVec3& v2,
-                                  const DVec3& vertexErr);
+WatertightHit watertightIntersectPrepared(const WatertightRay& ray, const DVec3& v0,
+                                          const DVec3& v1, const DVec3& v2, const DVec3& vertexErr);
 
 }  // namespace rayspec

@@ -9,7 +9,8 @@
 //   bound = shiftX |p_by - p_ay| + shiftY |p_bx - p_ax|
 //         + |p_ax| ey_b + |p_by| ex_a + |p_ay| ex_b + |p_bx| ey_a
 //         + shiftX (ey_a + ey_b) + shiftY (ex_a + ex_b) + ex_a ey_b + ey_a ex_b
-//         + r ((|p_ax| + shiftX + ex_a)(|p_by| + shiftY + ey_b) + (|p_ay| + shiftY + ey_a)(|p_bx| + shiftX + ex_b)).
+//         + r ((|p_ax| + shiftX + ex_a)(|p_by| + shiftY + ey_b) + (|p_ay| + shiftY + ey_a)(|p_bx| +
+//         shiftX + ex_b)).
 // Every coefficient is non-negative, so bound grows with each of |p|, ex, ey.
 // With A = the largest |p_jx|, |p_jy|, X, Y, Z = the largest |x_j|, |y_j|,
 // |z_j|, E = the larger of EX = ex's formula at (X, Z) and EY = ey's at
@@ -46,8 +47,8 @@
 
 namespace rayspec {
 
-bool watertightCertainMiss(const WatertightRay& w, const DVec3& v0, const DVec3& v1, const DVec3& v2,
-                           const DVec3& vertexErr) {
+bool watertightCertainMiss(const WatertightRay& w, const DVec3& v0, const DVec3& v1,
+                           const DVec3& v2, const DVec3& vertexErr) {
   if (!w.valid) return false;
   const int kx = w.kx, ky = w.ky, kz = w.kz;
   const DVec3* v[3] = {&v0, &v1, &v2};

@@ -14,7 +14,7 @@
 
 namespace rayspec {
 
-bool watertightCertainMiss(const WatertightRay& ray, const DVec3& v0, const DVec3& v1, const DVec3& v2,
-                           const DVec3& vertexErr);
+bool watertightCertainMiss(const WatertightRay& ray, const DVec3& v0, const DVec3& v1,
+                           const DVec3& v2, const DVec3& vertexErr);
 
 }  // namespace rayspec

@@ -13,9 +13,13 @@ namespace {
 // The automatic run counts perturbed like a recorded field; what depends on
 // traversal order (any-hit and intersection runs) has mutants of its own
 // (extra, skipped).
-bool perturbedAsField(const RecordField& f) { return !traversalDependent(f); }
+bool perturbedAsField(const RecordField& f) {
+  return !traversalDependent(f);
+}
 
-std::string raysText(size_t n) { return std::to_string(n) + (n == 1 ? " ray" : " rays"); }
+std::string raysText(size_t n) {
+  return std::to_string(n) + (n == 1 ? " ray" : " rays");
+}
 
 Mutation notApplied(const std::string& why) {
   Mutation m;
@@ -44,14 +48,17 @@ Mutation perturbField(const MutantInput&, const std::string& field, Results& d) 
   for (uint32_t r = 0; r < e.rays(); ++r) {
     if (!e.written(r, field)) continue;
     for (uint32_t w = 0; w < f->words; ++w) {
-      if (f->type == FieldType::Uint) e.set(r, field, e.get(r, field, w) + 1, w);
-      else e.setFloat(r, field, e.getFloat(r, field, w) * 1.001f + 1e-3f, w);
+      if (f->type == FieldType::Uint)
+        e.set(r, field, e.get(r, field, w) + 1, w);
+      else
+        e.setFloat(r, field, e.getFloat(r, field, w) * 1.001f + 1e-3f, w);
     }
     m.rays.push_back(r);
   }
   if (m.rays.empty()) return notApplied("no ray wrote " + field);
   m.applied = true;
-  m.what = field + (f->type == FieldType::Uint ? " + 1" : " * 1.001 + 1e-3") + " on " + raysText(m.rays.size());
+  m.what = field + (f->type == FieldType::Uint ? " + 1" : " * 1.001 + 1e-3") + " on " +
+           raysText(m.rays.size());
   return m;
 }
 
@@ -67,8 +74,12 @@ Mutation moveCounter(const std::string& counter, int delta, Results& d) {
   m.what = "counter " + counter + (delta > 0 ? " + 1" : " - 1");
   return m;
 }
-Mutation counterUp(const MutantInput&, const std::string& c, Results& d) { return moveCounter(c, 1, d); }
-Mutation counterDown(const MutantInput&, const std::string& c, Results& d) { return moveCounter(c, -1, d); }
+Mutation counterUp(const MutantInput&, const std::string& c, Results& d) {
+  return moveCounter(c, 1, d);
+}
+Mutation counterDown(const MutantInput&, const std::string& c, Results& d) {
+  return moveCounter(c, -1, d);
+}
 
 // The records of two rays differ where some rule looks: in what they wrote,
 // or in a field beyond its tolerance (not in the any-hit and intersection run
@@ -83,7 +94,9 @@ bool recordsDiffer(const Results& d, uint32_t a, uint32_t b) {
     const Tolerance tol = toleranceFor(f.name);
     for (uint32_t k = 0; k < f.words; ++k) {
       const uint32_t x = ra[f.offset + k], y = rb[f.offset + k];
-      if (f.type == FieldType::Uint ? x != y : !tol.matches(std::bit_cast<float>(x), std::bit_cast<float>(y)))
+      if (f.type == FieldType::Uint
+              ? x != y
+              : !tol.matches(std::bit_cast<float>(x), std::bit_cast<float>(y)))
         return true;
     }
   }
@@ -108,7 +121,8 @@ Mutation swapRays(const MutantInput& in, const std::string&, Results& d) {
                          d.records.begin() + b * words);
         for (Image& im : d.images) {
           if (static_cast<size_t>(b) >= static_cast<size_t>(im.width) * im.height) continue;
-          std::swap_ranges(im.texels.begin() + a * im.channels, im.texels.begin() + (a + 1) * im.channels,
+          std::swap_ranges(im.texels.begin() + a * im.channels,
+                           im.texels.begin() + (a + 1) * im.channels,
                            im.texels.begin() + b * im.channels);
         }
         Mutation m;
@@ -201,10 +215,11 @@ Mutation imagesZeroed(const MutantInput&, const std::string&, Results& d) {
 }  // namespace
 
 const std::vector<std::string>& mutantKinds() {
-  static const std::vector<std::string> kinds = {"null-device",      "field",           "counter+1",
-                                                  "counter-1",        "swap-rays",       "miss-and-closest-hit",
-                                                  "any-hit-skipped",  "any-hit-extra",   "hit-kind-flipped",
-                                                  "images-zeroed"};
+  static const std::vector<std::string> kinds = {"null-device",      "field",
+                                                 "counter+1",        "counter-1",
+                                                 "swap-rays",        "miss-and-closest-hit",
+                                                 "any-hit-skipped",  "any-hit-extra",
+                                                 "hit-kind-flipped", "images-zeroed"};
   return kinds;
 }
 
@@ -212,7 +227,8 @@ std::vector<GenericMutant> genericMutants(const Case&, const Results& device) {
   std::vector<GenericMutant> out;
   out.push_back({"null-device", "null-device", nullDevice, ""});
   for (const RecordField& f : recordFields())
-    if (perturbedAsField(f)) out.push_back({"field", std::string("field:") + f.name, perturbField, f.name});
+    if (perturbedAsField(f))
+      out.push_back({"field", std::string("field:") + f.name, perturbField, f.name});
   for (const auto& [name, value] : device.counters) {
     out.push_back({"counter+1", "counter:" + name + "+1", counterUp, name});
     out.push_back({"counter-1", "counter:" + name + "-1", counterDown, name});

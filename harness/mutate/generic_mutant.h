@@ -17,12 +17,12 @@ namespace rayspec {
 
 // What a mutant changed in one case's device results.
 struct Mutation {
-  bool applied = false;            // false: nothing of the kind to change (the reason in `what`)
-  std::string what;                // e.g. "primitive_id + 1 on 64 rays"
-  std::vector<uint32_t> rays;      // rays whose record changed (empty: counters or images only)
-  std::string counter;             // the counter moved, for counter mutants
-  int delta = 0;                   // and by how much
-  std::string field;               // the record field changed, for field mutants
+  bool applied = false;        // false: nothing of the kind to change (the reason in `what`)
+  std::string what;            // e.g. "primitive_id + 1 on 64 rays"
+  std::vector<uint32_t> rays;  // rays whose record changed (empty: counters or images only)
+  std::string counter;         // the counter moved, for counter mutants
+  int delta = 0;               // and by how much
+  std::string field;           // the record field changed, for field mutants
 };
 
 struct MutantInput {

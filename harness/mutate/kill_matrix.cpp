@@ -12,7 +12,8 @@ namespace {
 std::string percent(size_t part, size_t whole) {
   if (!whole) return "-";
   char text[32];
-  std::snprintf(text, sizeof text, "%.1f%%", 100.0 * static_cast<double>(part) / static_cast<double>(whole));
+  std::snprintf(text, sizeof text, "%.1f%%",
+                100.0 * static_cast<double>(part) / static_cast<double>(whole));
   return text;
 }
 
@@ -29,8 +30,8 @@ std::string padded(std::string s, size_t width) {
 }  // namespace
 
 size_t KillMatrix::unexplained() const {
-  return static_cast<size_t>(
-      std::count_if(survivors.begin(), survivors.end(), [](const Survivor& s) { return s.reason.empty(); }));
+  return static_cast<size_t>(std::count_if(survivors.begin(), survivors.end(),
+                                           [](const Survivor& s) { return s.reason.empty(); }));
 }
 
 KillMatrix buildKillMatrix(const std::vector<CaseMutation>& cases) {
@@ -48,8 +49,10 @@ KillMatrix buildKillMatrix(const std::vector<CaseMutation>& cases) {
       if (!o.mutation.applied) continue;
       for (KillCell* cell : {&m.cells[o.kind][c.family], &m.by_kind[o.kind]}) {
         ++cell->applied;
-        if (o.killed) ++cell->killed;
-        else if (!o.legal_reason.empty()) ++cell->legal;
+        if (o.killed)
+          ++cell->killed;
+        else if (!o.legal_reason.empty())
+          ++cell->legal;
       }
       if (!o.killed) m.survivors.push_back({c.name, o.name, o.mutation.what, o.legal_reason});
     }
@@ -59,7 +62,8 @@ KillMatrix buildKillMatrix(const std::vector<CaseMutation>& cases) {
 }
 
 std::string killMatrixText(const KillMatrix& m) {
-  std::string out = "Kill matrix: killed/applied per mutant kind (rows) and case family (columns)\n";
+  std::string out =
+      "Kill matrix: killed/applied per mutant kind (rows) and case family (columns)\n";
   size_t width = 6;
   for (const std::string& f : m.families) width = std::max(width, f.size() + 1);
   std::string header = padded("", 22);
@@ -81,11 +85,12 @@ std::string killMatrixText(const KillMatrix& m) {
     killed += k.killed;
     legal += k.legal;
   }
-  out += "\nScore: " + std::to_string(killed) + " of " + std::to_string(applied) + " (case, mutant) pairs killed (" +
-         percent(killed, applied) + "); " + std::to_string(legal) + " survive legally, " +
-         std::to_string(m.unexplained()) + " survive with no reason (holes)\n";
-  out += "Null device: killed on " + std::to_string(m.nullKilled()) + " of " + std::to_string(m.judged) +
-         " judged cases (" + percent(m.nullKilled(), m.judged) + ")\n";
+  out += "\nScore: " + std::to_string(killed) + " of " + std::to_string(applied) +
+         " (case, mutant) pairs killed (" + percent(killed, applied) + "); " +
+         std::to_string(legal) + " survive legally, " + std::to_string(m.unexplained()) +
+         " survive with no reason (holes)\n";
+  out += "Null device: killed on " + std::to_string(m.nullKilled()) + " of " +
+         std::to_string(m.judged) + " judged cases (" + percent(m.nullKilled(), m.judged) + ")\n";
   out += std::to_string(m.judged) + " of " + std::to_string(m.cases) + " cases judged";
   out += m.not_judged.empty() ? "\n" : "; not judged:\n";
   for (const auto& [name, why] : m.not_judged) out += "  " + name + ": " + why + "\n";
@@ -97,7 +102,8 @@ std::string killMatrixText(const KillMatrix& m) {
   return out;
 }
 
-std::string killMatrixJson(const KillMatrix& m, const std::string& run_dir, const std::string& device) {
+std::string killMatrixJson(const KillMatrix& m, const std::string& run_dir,
+                           const std::string& device) {
   nlohmann::json j;
   j["run"] = run_dir;
   j["device"] = device;
@@ -107,14 +113,18 @@ std::string killMatrixJson(const KillMatrix& m, const std::string& run_dir, cons
   j["unexplained_survivors"] = m.unexplained();
   for (const auto& [kind, row] : m.cells)
     for (const auto& [family, cell] : row)
-      j["matrix"][kind][family] = {{"applied", cell.applied}, {"killed", cell.killed}, {"legal", cell.legal}};
+      j["matrix"][kind][family] = {
+          {"applied", cell.applied}, {"killed", cell.killed}, {"legal", cell.legal}};
   for (const auto& [kind, cell] : m.by_kind)
-    j["by_kind"][kind] = {{"applied", cell.applied}, {"killed", cell.killed}, {"legal", cell.legal}};
+    j["by_kind"][kind] = {
+        {"applied", cell.applied}, {"killed", cell.killed}, {"legal", cell.legal}};
   j["survivors"] = nlohmann::json::array();
   for (const Survivor& s : m.survivors)
-    j["survivors"].push_back({{"case", s.case_name}, {"mutant", s.mutant}, {"what", s.what}, {"reason", s.reason}});
+    j["survivors"].push_back(
+        {{"case", s.case_name}, {"mutant", s.mutant}, {"what", s.what}, {"reason", s.reason}});
   j["not_judged"] = nlohmann::json::array();
-  for (const auto& [name, why] : m.not_judged) j["not_judged"].push_back({{"case", name}, {"why", why}});
+  for (const auto& [name, why] : m.not_judged)
+    j["not_judged"].push_back({{"case", name}, {"why", why}});
   return j.dump(1) + "\n";
 }
 

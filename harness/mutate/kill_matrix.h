@@ -20,14 +20,16 @@ struct Survivor {
 };
 
 struct KillMatrix {
-  std::vector<std::string> families;                    // sorted
+  std::vector<std::string> families;                             // sorted
   std::map<std::string, std::map<std::string, KillCell>> cells;  // [kind][family]
   std::map<std::string, KillCell> by_kind;
   size_t cases = 0, judged = 0;
   std::vector<std::pair<std::string, std::string>> not_judged;  // case, why
   std::vector<Survivor> survivors;
   size_t unexplained() const;
-  size_t nullKilled() const { return by_kind.count("null-device") ? by_kind.at("null-device").killed : 0; }
+  size_t nullKilled() const {
+    return by_kind.count("null-device") ? by_kind.at("null-device").killed : 0;
+  }
 };
 
 KillMatrix buildKillMatrix(const std::vector<CaseMutation>& cases);
@@ -36,6 +38,7 @@ KillMatrix buildKillMatrix(const std::vector<CaseMutation>& cases);
 // the score, and every survivor with its reason.
 std::string killMatrixText(const KillMatrix& m);
 // The same as JSON (mutate.json).
-std::string killMatrixJson(const KillMatrix& m, const std::string& run_dir, const std::string& device);
+std::string killMatrixJson(const KillMatrix& m, const std::string& run_dir,
+                           const std::string& device);
 
 }  // namespace rayspec

@@ -15,7 +15,8 @@ bool everyRayUndefined(const MutantInput& in, const Mutation& m) {
   if (m.rays.empty()) return false;
   std::set<uint32_t> undefined;
   for (const UndefinedRay& u : in.model.undefined) undefined.insert(u.ray);
-  return std::all_of(m.rays.begin(), m.rays.end(), [&](uint32_t r) { return undefined.count(r) > 0; });
+  return std::all_of(m.rays.begin(), m.rays.end(),
+                     [&](uint32_t r) { return undefined.count(r) > 0; });
 }
 
 // Derived here, not from the comparison's own slack (compare/compare_counters):
@@ -31,24 +32,29 @@ std::string counterReason(const MutantInput& in, const Mutation& m) {
   switch (it->second) {
     case CounterMode::Informational:
       return "counter '" + m.counter +
-             "' is counted in any-hit or intersection: its total depends on traversal order and duplicate "
-             "invocations (R-ORDER-UNSPEC, R-AHIT-DUP)";
+             "' is counted in any-hit or intersection: its total depends on traversal order and "
+             "duplicate invocations (R-ORDER-UNSPEC, R-AHIT-DUP)";
     case CounterMode::AtLeast:
-      return m.delta > 0 ? "counter '" + m.counter + "' is at_least: a device may run it more often" : "";
+      return m.delta > 0 ? "counter '" + m.counter + "' is at_least: a device may run it more often"
+                         : "";
     case CounterMode::AtMost:
-      return m.delta < 0 ? "counter '" + m.counter + "' is at_most: a device may run it less often" : "";
-    case CounterMode::Exact: break;
+      return m.delta < 0 ? "counter '" + m.counter + "' is at_most: a device may run it less often"
+                         : "";
+    case CounterMode::Exact:
+      break;
   }
   if (counterSources(in.c).count(m.counter)) return "";  // pinned by the per-ray run counts
   if (countedByProgramsAlone(in.c, m.counter)) {
     const size_t rays = raysRunningOtherPrograms(in.model);
-    return rays ? "counter '" + m.counter + "' follows which programs run, and " + std::to_string(rays) +
+    return rays ? "counter '" + m.counter + "' follows which programs run, and " +
+                      std::to_string(rays) +
                       " ambiguous rays have legal answers that run other programs"
                 : "";
   }
   if (!in.model.ambiguous.empty())
-    return "counter '" + m.counter + "' is counted conditionally (in an if, after a call by a computed index, "
-           "...), and " + std::to_string(in.model.ambiguous.size()) + " ambiguous rays have several legal answers";
+    return "counter '" + m.counter +
+           "' is counted conditionally (in an if, after a call by a computed index, ...), and " +
+           std::to_string(in.model.ambiguous.size()) + " ambiguous rays have several legal answers";
   return "";
 }
 
@@ -66,7 +72,9 @@ bool identityStaysLegal(const MutantInput& in, const Mutation& m, const Results&
     bool legal = false;
     for (const Candidate& k : it->second->candidates) {
       if (!k.hit) continue;
-      const uint32_t own = m.field == "primitive_id" ? k.primitive : m.field == "instance_id" ? k.instance : k.geometry;
+      const uint32_t own = m.field == "primitive_id"  ? k.primitive
+                           : m.field == "instance_id" ? k.instance
+                                                      : k.geometry;
       legal = legal || own == value;
     }
     if (!legal) return false;
@@ -90,9 +98,11 @@ bool swappedAnswersStayLegal(const MutantInput& in, const Mutation& m, const Res
         legal = legal || !k.hit;
         continue;
       }
-      legal = legal || (k.hit && (!view.written(r, "primitive_id") || view.get(r, "primitive_id") == k.primitive) &&
-                        (!view.written(r, "instance_id") || view.get(r, "instance_id") == k.instance) &&
-                        (!view.written(r, "geometry_index") || view.get(r, "geometry_index") == k.geometry));
+      legal = legal ||
+              (k.hit &&
+               (!view.written(r, "primitive_id") || view.get(r, "primitive_id") == k.primitive) &&
+               (!view.written(r, "instance_id") || view.get(r, "instance_id") == k.instance) &&
+               (!view.written(r, "geometry_index") || view.get(r, "geometry_index") == k.geometry));
     }
     if (!legal) return false;
   }
@@ -134,22 +144,25 @@ bool everyGeometryNoDuplicate(const Case& c) {
 
 }  // namespace
 
-std::string legalSurvival(const MutantInput& in, const GenericMutant& g, const Mutation& m, const Results& mutated) {
+std::string legalSurvival(const MutantInput& in, const GenericMutant& g, const Mutation& m,
+                          const Results& mutated) {
   if (!m.counter.empty()) return counterReason(in, m);
   if (!m.field.empty() && identityStaysLegal(in, m, mutated))
     return "every changed ray is ambiguous and its new " + m.field + " is one of its legal hits";
   if (everyRayUndefined(in, m)) return "R-UB: every changed ray has undefined behaviour";
   if (!m.field.empty() && valueOfAnotherLegalHit(in, m))
-    return "every changed ray is ambiguous among several legal hits and closest-hit computes " + m.field +
+    return "every changed ray is ambiguous among several legal hits and closest-hit computes " +
+           m.field +
            " from the hit taken: the model lists each legal hit, not the value it would give";
   if (g.kind == "swap-rays" && swappedAnswersStayLegal(in, m, mutated))
-    return "both swapped rays are ambiguous, and the answer each took from the other is one of its own legal "
-           "answers";
+    return "both swapped rays are ambiguous, and the answer each took from the other is one of its "
+           "own legal answers";
   if (g.kind == "any-hit-skipped" && anyAabbs(in.c))
-    return "R-ORDER-UNSPEC: the scene has AABBs, whose intersection programs may report beyond a nearer hit "
-           "another order finds first: the model's any-hit count is no minimum there";
+    return "R-ORDER-UNSPEC: the scene has AABBs, whose intersection programs may report beyond a "
+           "nearer hit another order finds first: the model's any-hit count is no minimum there";
   if (g.kind == "any-hit-extra" && !everyGeometryNoDuplicate(in.c))
-    return "R-AHIT-DUP: without NO_DUPLICATE_ANY_HIT_INVOCATION any-hit may run again on a primitive";
+    return "R-AHIT-DUP: without NO_DUPLICATE_ANY_HIT_INVOCATION any-hit may run again on a "
+           "primitive";
   return "";
 }
 

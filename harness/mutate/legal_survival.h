@@ -12,6 +12,7 @@
 namespace rayspec {
 
 // "" when nothing allows it. `mutated`: the mutant's results.
-std::string legalSurvival(const MutantInput& in, const GenericMutant& g, const Mutation& m, const Results& mutated);
+std::string legalSurvival(const MutantInput& in, const GenericMutant& g, const Mutation& m,
+                          const Results& mutated);
 
 }  // namespace rayspec

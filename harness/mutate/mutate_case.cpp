@@ -6,7 +6,9 @@
 namespace rayspec {
 namespace {
 
-std::string familyOf(const std::string& name) { return name.substr(0, name.find('/')); }
+std::string familyOf(const std::string& name) {
+  return name.substr(0, name.find('/'));
+}
 
 MutantOutcome judgeMutant(const MutantInput& in, const GenericMutant& g, const Results& device) {
   MutantOutcome o;
@@ -29,7 +31,8 @@ MutantOutcome judgeMutant(const MutantInput& in, const GenericMutant& g, const R
 
 }  // namespace
 
-CaseMutation mutateCase(const Case& c, const Plan& plan, const Results& device, const Results& model) {
+CaseMutation mutateCase(const Case& c, const Plan& plan, const Results& device,
+                        const Results& model) {
   CaseMutation out;
   out.name = c.name;
   out.family = familyOf(c.name);
@@ -40,7 +43,8 @@ CaseMutation mutateCase(const Case& c, const Plan& plan, const Results& device, 
   }
   out.judged = true;
   const MutantInput in{c, plan, model};
-  for (const GenericMutant& g : genericMutants(c, device)) out.mutants.push_back(judgeMutant(in, g, device));
+  for (const GenericMutant& g : genericMutants(c, device))
+    out.mutants.push_back(judgeMutant(in, g, device));
   return out;
 }
 

@@ -12,9 +12,9 @@ namespace rayspec {
 struct MutantOutcome {
   std::string kind, name;
   Mutation mutation;
-  bool killed = false;     // the mutated results fail (isFailing)
+  bool killed = false;  // the mutated results fail (isFailing)
   Status status = Status::Pass;
-  std::string headline;    // the verdict's
+  std::string headline;      // the verdict's
   std::string legal_reason;  // a survivor: why it may legally survive ("" = none: a hole)
 };
 
@@ -27,6 +27,7 @@ struct CaseMutation {
 
 // The unmutated device results must pass (Pass or QualityWarning) for the
 // mutants to say anything; then each mutant is applied to a copy and judged.
-CaseMutation mutateCase(const Case& c, const Plan& plan, const Results& device, const Results& model);
+CaseMutation mutateCase(const Case& c, const Plan& plan, const Results& device,
+                        const Results& model);
 
 }  // namespace rayspec

@@ -25,7 +25,7 @@ CaseMutation mutateOne(const CaseFile& f, const MutateOptions& opt) {
   const ParseResult parsed = loadCase(f, opt.cases_dir);
   if (!parsed.value) {
     std::string why = "case file error";
-    for (const CaseError& e : parsed.errors) why += "; " + e.format();
+    for (const Error& e : parsed.errors) why += "; " + e.format();
     return notJudged(f.name, why);
   }
   const Case& c = *parsed.value;
@@ -59,7 +59,8 @@ int runMutate(const MutateOptions& opt) {
   }
   std::error_code ec;
   if (!fs::is_directory(opt.run_dir, ec)) {
-    std::fprintf(stderr, "rayspec mutate: %s is not a folder (a run folder with <case>/device bundles)\n",
+    std::fprintf(stderr,
+                 "rayspec mutate: %s is not a folder (a run folder with <case>/device bundles)\n",
                  opt.run_dir.c_str());
     return 2;
   }
@@ -75,7 +76,8 @@ int runMutate(const MutateOptions& opt) {
   const std::string device = savedDevices(opt.run_dir, findCases(opt.cases_dir, opt.filter));
   if (!writeFile(fs::path(opt.out) / "mutate.txt", text) ||
       !writeFile(fs::path(opt.out) / "mutate.json", killMatrixJson(m, opt.run_dir, device))) {
-    std::fprintf(stderr, "rayspec mutate: cannot write %s/mutate.txt and mutate.json\n", opt.out.c_str());
+    std::fprintf(stderr, "rayspec mutate: cannot write %s/mutate.txt and mutate.json\n",
+                 opt.out.c_str());
     return 2;
   }
   if (!m.judged) {

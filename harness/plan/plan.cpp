@@ -31,49 +31,56 @@ std::vector<StageProgram> allPrograms(const Pipeline& p) {
 uint32_t possibleFlags(const Stmt& trace, const Rays& rays) {
   if (trace.trace.flags.empty()) return 0;
   const Expr& f = trace.trace.flags.front();
-  if (f.kind == Expr::Kind::Literal && !f.literal.empty()) return static_cast<uint32_t>(f.literal[0]);
+  if (f.kind == Expr::Kind::Literal && !f.literal.empty())
+    return static_cast<uint32_t>(f.literal[0]);
   (void)rays;
   return 0xFFFFFFFFu;
 }
 
-}  // namespace
+// The ray flags every trace may use (OR), those every trace surely uses
+// (AND), and whether some trace may clear cull mask bits.
+struct TraceFlags {
+  uint32_t any = 0, all = 0xFFFFFFFFu;
+  bool mask_bits_clear = false;
+  void add(uint32_t flags, uint32_t mask) {
+    any |= flags;
+    all &= flags;
+    if ((mask & 0xFF) != 0xFF) mask_bits_clear = true;
+  }
+};
 
-Plan derivePlan(const Case& c) {
-  Plan plan;
-  const Scene& scene = c.scene;
-  const Pipeline& pipe = c.pipeline;
-  const auto programs = allPrograms(pipe);
-
-  // Ray flags every trace may use (OR), and those every trace surely uses (AND).
-  uint32_t any_flags = 0, all_flags = 0xFFFFFFFFu;
-  uint32_t any_mask_bits_clear = 0;
-  auto addRay = [&](uint32_t flags, uint32_t mask) {
-    any_flags |= flags;
-    all_flags &= flags;
-    if ((mask & 0xFF) != 0xFF) any_mask_bits_clear = 1;
-  };
-  for (const Ray& r : c.rays.rays) addRay(r.flags, r.cull_mask);
+TraceFlags traceFlags(const Case& c, const std::vector<StageProgram>& programs) {
+  TraceFlags f;
+  for (const Ray& r : c.rays.rays) f.add(r.flags, r.cull_mask);
   for (const auto& sp : programs)
     walkStatements(*sp.program, [&](const Stmt& s) {
       if (s.kind != Stmt::Kind::Trace) return;
       // Nested traces take the case defaults unless they say otherwise.
-      uint32_t flags = s.trace.flags.empty() ? (sp.stage == Stage::Raygen ? 0 : c.rays.defaults.flags)
-                                             : possibleFlags(s, c.rays);
+      uint32_t flags = s.trace.flags.empty()
+                           ? (sp.stage == Stage::Raygen ? 0 : c.rays.defaults.flags)
+                           : possibleFlags(s, c.rays);
       uint32_t mask = c.rays.defaults.cull_mask;
       if (!s.trace.cull_mask.empty()) mask = 0;  // conservatively: may clear bits
-      if (sp.stage == Stage::Raygen && s.trace.flags.empty()) return;  // the launch's rays, added above
-      addRay(flags, mask);
+      if (sp.stage == Stage::Raygen && s.trace.flags.empty())
+        return;  // the launch's rays, added above
+      f.add(flags, mask);
     });
-  const uint32_t pipeline_skips = pipe.flags;  // 0x1000 skip triangles, 0x2000 skip aabbs
+  return f;
+}
 
-  // Geometry reached by instances.
+// The geometry instances reach: triangles, AABBs, instance flags and masks.
+// Returns whether some of it is not opaque.
+bool planGeometry(const Scene& scene, Plan& plan) {
   bool non_opaque_geometry = false;
   for (const Instance& inst : scene.instances) {
     if (!inst.blas) continue;
     const Blas& b = scene.blases[*inst.blas];
     for (const Geometry& g : b.geometries) {
       if (g.primitiveCount() == 0) continue;
-      if (g.kind == Geometry::Kind::Triangles) plan.triangles = true; else plan.aabbs = true;
+      if (g.kind == Geometry::Kind::Triangles)
+        plan.triangles = true;
+      else
+        plan.aabbs = true;
       bool opaque = (g.flags & kGeometryOpaque) != 0;
       if (inst.flags & kInstanceForceOpaque) opaque = true;
       if (inst.flags & kInstanceForceNoOpaque) opaque = false;
@@ -83,13 +90,23 @@ Plan derivePlan(const Case& c) {
     if (inst.flags & (kInstanceForceOpaque | kInstanceForceNoOpaque)) plan.opacity_flags = true;
     if ((inst.mask & 0xFF) != 0xFF) plan.masks = true;
   }
-  if ((pipeline_skips & 0x1000) || (all_flags & kRaySkipTriangles)) plan.triangles = false;
-  if ((pipeline_skips & 0x2000) || (all_flags & kRaySkipAabbs)) plan.aabbs = false;
-  if (any_mask_bits_clear) plan.masks = true;
-  if (any_flags & (kRayCullBackFacing | kRayCullFrontFacing)) plan.facing_culls = true;
-  if (any_flags & (kRayOpaque | kRayNoOpaque | kRayCullOpaque | kRayCullNoOpaque)) plan.opacity_flags = true;
+  return non_opaque_geometry;
+}
 
-  // Stages.
+// What the ray flags and the pipeline's skip flags add or take away.
+void applyRayFlags(const TraceFlags& flags, uint32_t pipeline_flags, Plan& plan) {
+  // 0x1000 skip triangles, 0x2000 skip aabbs
+  if ((pipeline_flags & 0x1000) || (flags.all & kRaySkipTriangles)) plan.triangles = false;
+  if ((pipeline_flags & 0x2000) || (flags.all & kRaySkipAabbs)) plan.aabbs = false;
+  if (flags.mask_bits_clear) plan.masks = true;
+  if (flags.any & (kRayCullBackFacing | kRayCullFrontFacing)) plan.facing_culls = true;
+  if (flags.any & (kRayOpaque | kRayNoOpaque | kRayCullOpaque | kRayCullNoOpaque))
+    plan.opacity_flags = true;
+}
+
+// The stages that can run: closest-hit, miss, any-hit, intersection.
+void planStages(const Pipeline& pipe, const TraceFlags& flags, bool non_opaque_geometry,
+                Plan& plan) {
   bool group_any_hit = false, group_intersection = false;
   for (const HitGroup& g : pipe.hit_groups) {
     if (g.any_hit) group_any_hit = true;
@@ -97,11 +114,16 @@ Plan derivePlan(const Case& c) {
     if (g.closest_hit) plan.closest_hit = true;
   }
   plan.miss = !pipe.miss.empty();
-  const bool every_ray_opaque = (all_flags & kRayOpaque) != 0;
-  const bool can_be_non_opaque = (non_opaque_geometry || (any_flags & kRayNoOpaque)) && !every_ray_opaque;
+  const bool every_ray_opaque = (flags.all & kRayOpaque) != 0;
+  const bool can_be_non_opaque =
+      (non_opaque_geometry || (flags.any & kRayNoOpaque)) && !every_ray_opaque;
   plan.any_hit = group_any_hit && can_be_non_opaque && (plan.triangles || plan.aabbs);
   plan.intersection = group_intersection && plan.aabbs;
+}
 
+// What the statements do: callables, nested traces (and the depth), scene
+// data read by intersection programs.
+void planStatements(const std::vector<StageProgram>& programs, const Pipeline& pipe, Plan& plan) {
   for (const auto& sp : programs) {
     walkStatements(*sp.program, [&](const Stmt& s) {
       if (s.kind == Stmt::Kind::Call) plan.callables = true;
@@ -114,7 +136,10 @@ Plan derivePlan(const Case& c) {
       });
   }
   plan.trace_depth = plan.nested_trace ? std::max<uint32_t>(pipe.max_recursion, 1) : 1;
+}
 
+// Shader record data and all-zero records in the SBT.
+void planShaderRecords(const Pipeline& pipe, Plan& plan) {
   auto hasData = [](const std::vector<SbtRecord>& v) {
     return std::any_of(v.begin(), v.end(), [](const SbtRecord& r) { return !r.data.empty(); });
   };
@@ -124,22 +149,40 @@ Plan derivePlan(const Case& c) {
   plan.shader_record_data = !pipe.raygen_data.empty() || hasData(pipe.sbt_miss) ||
                             hasData(pipe.sbt_hit) || hasData(pipe.sbt_callable);
   plan.zero_records = hasZero(pipe.sbt_miss) || hasZero(pipe.sbt_hit) || hasZero(pipe.sbt_callable);
+}
 
+// What the case keeps: counters, per-ray fields, images. Per-ray records
+// (with the automatic stage run counts, which is how the comparison checks
+// miss-xor-closest-hit per ray) exist when the case keeps per-ray fields or
+// images; a counters-only case simulates no record at all.
+void planOutputs(const Case& c, Plan& plan) {
   plan.counters = c.outputs.counters;
   plan.record_fields = c.outputs.per_ray;
   plan.images = c.outputs.images;
-  // Per-ray records (with the automatic stage run counts, which is how the
-  // comparison checks miss-xor-closest-hit per ray) exist when the case keeps
-  // per-ray fields or images; a counters-only case simulates no record at all.
   plan.records = !plan.record_fields.empty() || !plan.images.empty();
+}
+
+}  // namespace
+
+Plan derivePlan(const Case& c) {
+  Plan plan;
+  const std::vector<StageProgram> programs = allPrograms(c.pipeline);
+  const TraceFlags flags = traceFlags(c, programs);
+  const bool non_opaque_geometry = planGeometry(c.scene, plan);
+  applyRayFlags(flags, c.pipeline.flags, plan);
+  planStages(c.pipeline, flags, non_opaque_geometry, plan);
+  planStatements(programs, c.pipeline, plan);
+  planShaderRecords(c.pipeline, plan);
+  planOutputs(c, plan);
   return plan;
 }
 
 Plan everyEffectPlan(const Case& c) {
   Plan plan = derivePlan(c);
-  for (bool* flag : {&plan.triangles, &plan.aabbs, &plan.any_hit, &plan.intersection, &plan.closest_hit, &plan.miss,
-                     &plan.callables, &plan.nested_trace, &plan.facing_culls, &plan.masks, &plan.opacity_flags,
-                     &plan.scene_data, &plan.shader_record_data, &plan.zero_records, &plan.records})
+  for (bool* flag : {&plan.triangles, &plan.aabbs, &plan.any_hit, &plan.intersection,
+                     &plan.closest_hit, &plan.miss, &plan.callables, &plan.nested_trace,
+                     &plan.facing_culls, &plan.masks, &plan.opacity_flags, &plan.scene_data,
+                     &plan.shader_record_data, &plan.zero_records, &plan.records})
     *flag = true;
   plan.record_fields.clear();
   plan.images.clear();
@@ -156,7 +199,9 @@ Plan everyEffectPlan(const Case& c) {
 
 std::vector<std::string> Plan::describe() const {
   std::vector<std::string> lines;
-  auto line = [&](bool on, const std::string& what) { lines.push_back(std::string(on ? "  [x] " : "  [ ] ") + what); };
+  auto line = [&](bool on, const std::string& what) {
+    lines.push_back(std::string(on ? "  [x] " : "  [ ] ") + what);
+  };
   line(triangles, "triangle geometry (BLAS of triangles)");
   line(aabbs, "procedural geometry (BLAS of AABBs)");
   line(any_hit, "any-hit can run (filter on non-opaque candidates)");

@@ -13,27 +13,27 @@
 namespace rayspec {
 
 struct Plan {
-  bool triangles = false;            // some instance reaches a triangle BLAS
-  bool aabbs = false;                // some instance reaches an AABB BLAS
-  bool any_hit = false;              // an any-hit can run: a group has one, and
-                                     // some geometry can be non-opaque under the
-                                     // instance flags and the rays' flags
-  bool intersection = false;         // an intersection shader can run (AABBs present)
-  bool closest_hit = false;          // some group has a closest-hit
-  bool miss = false;                 // some miss shader exists
-  bool callables = false;            // some stage calls a callable
-  bool nested_trace = false;         // a closest-hit or miss traces (recursion)
-  uint32_t trace_depth = 1;          // deepest trace nesting the programs can reach
-  bool facing_culls = false;         // cull_back/front_facing used, or flip/cull-disable instance flags
-  bool masks = false;                // an instance mask or a cull mask is not 0xFF
-  bool opacity_flags = false;        // opaque/no_opaque/cull_opaque/cull_no_opaque or force_* flags
-  bool scene_data = false;           // an intersection program reads the AABBs (aabb_*, sphere_*)
-  bool shader_record_data = false;   // some SBT record carries data
-  bool zero_records = false;         // some SBT record is all zero
-  std::vector<std::string> counters; // counters kept
+  bool triangles = false;      // some instance reaches a triangle BLAS
+  bool aabbs = false;          // some instance reaches an AABB BLAS
+  bool any_hit = false;        // an any-hit can run: a group has one, and
+                               // some geometry can be non-opaque under the
+                               // instance flags and the rays' flags
+  bool intersection = false;   // an intersection shader can run (AABBs present)
+  bool closest_hit = false;    // some group has a closest-hit
+  bool miss = false;           // some miss shader exists
+  bool callables = false;      // some stage calls a callable
+  bool nested_trace = false;   // a closest-hit or miss traces (recursion)
+  uint32_t trace_depth = 1;    // deepest trace nesting the programs can reach
+  bool facing_culls = false;   // cull_back/front_facing used, or flip/cull-disable instance flags
+  bool masks = false;          // an instance mask or a cull mask is not 0xFF
+  bool opacity_flags = false;  // opaque/no_opaque/cull_opaque/cull_no_opaque or force_* flags
+  bool scene_data = false;     // an intersection program reads the AABBs (aabb_*, sphere_*)
+  bool shader_record_data = false;         // some SBT record carries data
+  bool zero_records = false;               // some SBT record is all zero
+  std::vector<std::string> counters;       // counters kept
   std::vector<std::string> record_fields;  // per-ray fields kept (recordable ones)
-  bool records = false;              // a per-ray record buffer is needed
-  std::vector<ImageOutput> images;   // images kept
+  bool records = false;                    // a per-ray record buffer is needed
+  std::vector<ImageOutput> images;         // images kept
 
   // One line per effect, for `rayspec show`.
   std::vector<std::string> describe() const;

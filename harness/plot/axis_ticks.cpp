@@ -31,7 +31,8 @@ AxisTicks axisTicks(double min, double max, bool log) {
     }
   a.lo = std::floor(min / step) * step;
   a.hi = std::ceil(max / step) * step;
-  for (double t = a.lo; t <= a.hi + step / 2; t += step) a.ticks.push_back(std::fabs(t) < step * 1e-9 ? 0 : t);
+  for (double t = a.lo; t <= a.hi + step / 2; t += step)
+    a.ticks.push_back(std::fabs(t) < step * 1e-9 ? 0 : t);
   return a;
 }
 

@@ -20,14 +20,15 @@ namespace {
 namespace IBA = OIIO::ImageBufAlgo;
 
 // Distinct colours (RGB), one per series name in order of first appearance.
-constexpr float kPalette[][3] = {{0.12f, 0.47f, 0.71f}, {0.84f, 0.15f, 0.16f}, {0.17f, 0.63f, 0.17f},
-                                 {1.00f, 0.50f, 0.05f}, {0.58f, 0.40f, 0.74f}, {0.55f, 0.34f, 0.29f},
-                                 {0.89f, 0.47f, 0.76f}, {0.50f, 0.50f, 0.50f}, {0.74f, 0.74f, 0.13f},
-                                 {0.09f, 0.75f, 0.81f}};
+constexpr float kPalette[][3] = {
+    {0.12f, 0.47f, 0.71f}, {0.84f, 0.15f, 0.16f}, {0.17f, 0.63f, 0.17f}, {1.00f, 0.50f, 0.05f},
+    {0.58f, 0.40f, 0.74f}, {0.55f, 0.34f, 0.29f}, {0.89f, 0.47f, 0.76f}, {0.50f, 0.50f, 0.50f},
+    {0.74f, 0.74f, 0.13f}, {0.09f, 0.75f, 0.81f}};
 constexpr float kBlack[3] = {0, 0, 0}, kGrey[3] = {0.85f, 0.85f, 0.85f};
 
 std::string fontPath() {
-  for (const char* f : {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "/usr/share/fonts/TTF/DejaVuSans.ttf"})
+  for (const char* f :
+       {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "/usr/share/fonts/TTF/DejaVuSans.ttf"})
     if (std::filesystem::exists(f)) return f;
   return "";  // OpenImageIO's own search
 }
@@ -49,13 +50,15 @@ struct Frame {
   AxisTicks x, y;
   bool log_x, log_y;
   int px(double v) const {
-    const double t = log_x ? (std::log10(v) - std::log10(x.lo)) / (std::log10(x.hi) - std::log10(x.lo))
-                           : (v - x.lo) / (x.hi - x.lo);
+    const double t =
+        log_x ? (std::log10(v) - std::log10(x.lo)) / (std::log10(x.hi) - std::log10(x.lo))
+              : (v - x.lo) / (x.hi - x.lo);
     return x0 + static_cast<int>(std::lround(t * (x1 - x0)));
   }
   int py(double v) const {
-    const double t = log_y ? (std::log10(v) - std::log10(y.lo)) / (std::log10(y.hi) - std::log10(y.lo))
-                           : (v - y.lo) / (y.hi - y.lo);
+    const double t =
+        log_y ? (std::log10(v) - std::log10(y.lo)) / (std::log10(y.hi) - std::log10(y.lo))
+              : (v - y.lo) / (y.hi - y.lo);
     return y1 - static_cast<int>(std::lround(t * (y1 - y0)));
   }
 };
@@ -77,18 +80,27 @@ void drawPanel(OIIO::ImageBuf& img, int ox, int oy, const PlotLayout& lay, const
       ymax = std::max(ymax, pt.second);
     }
   if (!p.log_y && ymin > 0) ymin = 0;  // rates and counts start at zero
-  Frame f{ox + 70, oy + 34, ox + lay.panel_width - 20, oy + lay.panel_height - 56, axisTicks(xmin, xmax, p.log_x),
-          axisTicks(ymin, ymax, p.log_y), p.log_x, p.log_y};
-  auto text = [&](int x, int y, const std::string& s, int size, IBA::TextAlignX ax, IBA::TextAlignY ay) {
+  Frame f{ox + 70,
+          oy + 34,
+          ox + lay.panel_width - 20,
+          oy + lay.panel_height - 56,
+          axisTicks(xmin, xmax, p.log_x),
+          axisTicks(ymin, ymax, p.log_y),
+          p.log_x,
+          p.log_y};
+  auto text = [&](int x, int y, const std::string& s, int size, IBA::TextAlignX ax,
+                  IBA::TextAlignY ay) {
     IBA::render_text(img, x, y, s, size, font, kBlack, ax, ay);
   };
   for (double t : f.x.ticks) {
     IBA::render_line(img, f.px(t), f.y0, f.px(t), f.y1, kGrey);
-    text(f.px(t), f.y1 + 6, tickLabel(t, p.log_x), 13, IBA::TextAlignX::Center, IBA::TextAlignY::Top);
+    text(f.px(t), f.y1 + 6, tickLabel(t, p.log_x), 13, IBA::TextAlignX::Center,
+         IBA::TextAlignY::Top);
   }
   for (double t : f.y.ticks) {
     IBA::render_line(img, f.x0, f.py(t), f.x1, f.py(t), kGrey);
-    text(f.x0 - 6, f.py(t), tickLabel(t, p.log_y), 13, IBA::TextAlignX::Right, IBA::TextAlignY::Center);
+    text(f.x0 - 6, f.py(t), tickLabel(t, p.log_y), 13, IBA::TextAlignX::Right,
+         IBA::TextAlignY::Center);
   }
   IBA::render_box(img, f.x0, f.y0, f.x1, f.y1, kBlack);
   text((f.x0 + f.x1) / 2, oy + 8, p.title, 16, IBA::TextAlignX::Center, IBA::TextAlignY::Top);
@@ -109,8 +121,10 @@ void drawPanel(OIIO::ImageBuf& img, int ox, int oy, const PlotLayout& lay, const
         // inside, each series a line higher than the one before (cycling
         // through four) so the labels of nearby points do not overlap.
         const int lift = 8 + 15 * static_cast<int>(j % 4);
-        text(x < (f.x0 + f.x1) / 2 ? x + 8 : x - 8, y < f.y0 + lift + 16 ? y + lift + 8 : y - lift, s.labels[i], 13,
-             x < (f.x0 + f.x1) / 2 ? IBA::TextAlignX::Left : IBA::TextAlignX::Right, IBA::TextAlignY::Bottom);
+        text(x < (f.x0 + f.x1) / 2 ? x + 8 : x - 8, y < f.y0 + lift + 16 ? y + lift + 8 : y - lift,
+             s.labels[i], 13,
+             x < (f.x0 + f.x1) / 2 ? IBA::TextAlignX::Left : IBA::TextAlignX::Right,
+             IBA::TextAlignY::Bottom);
       }
       if (!first && p.lines) {
         IBA::render_line(img, lx, ly, x, y, {c, 3}, true);
@@ -131,7 +145,8 @@ void drawPanel(OIIO::ImageBuf& img, int ox, int oy, const PlotLayout& lay, const
 
 }  // namespace
 
-std::string writeLinePlots(const std::string& path, const std::vector<PlotPanel>& panels, const PlotLayout& lay) {
+std::string writeLinePlots(const std::string& path, const std::vector<PlotPanel>& panels,
+                           const PlotLayout& lay) {
   if (panels.empty()) return "no panel to plot";
   const int cols = std::max(1, std::min<int>(lay.columns, static_cast<int>(panels.size())));
   const int rows = (static_cast<int>(panels.size()) + cols - 1) / cols;
@@ -144,15 +159,16 @@ std::string writeLinePlots(const std::string& path, const std::vector<PlotPanel>
     for (const PlotSeries& s : p.series) colour_of.emplace(s.name, colour_of.size());
   const std::string font = fontPath();
   for (size_t i = 0; i < panels.size(); ++i)
-    drawPanel(img, static_cast<int>(i % cols) * lay.panel_width, static_cast<int>(i / cols) * lay.panel_height, lay,
-              panels[i], colour_of, font);
+    drawPanel(img, static_cast<int>(i % cols) * lay.panel_width,
+              static_cast<int>(i / cols) * lay.panel_height, lay, panels[i], colour_of, font);
   if (!img.write(path)) return path + ": " + img.geterror();
   return "";
 }
 
 #else
 
-std::string writeLinePlots(const std::string& path, const std::vector<PlotPanel>&, const PlotLayout&) {
+std::string writeLinePlots(const std::string& path, const std::vector<PlotPanel>&,
+                           const PlotLayout&) {
   return path + ": this build has no OpenImageIO (RAYSPEC_WITH_OIIO=OFF), so no plot";
 }
 

@@ -24,14 +24,15 @@ struct PlotPanel {
 };
 
 struct PlotLayout {
-  int columns = 2;                     // panels per row
+  int columns = 2;                            // panels per row
   int panel_width = 640, panel_height = 420;  // pixels
 };
 
 // Writes the panels, row by row, into one image at `path`. Returns "" or
 // what went wrong (no panel, a file that cannot be written, a build without
 // OpenImageIO).
-std::string writeLinePlots(const std::string& path, const std::vector<PlotPanel>& panels, const PlotLayout& layout = {});
+std::string writeLinePlots(const std::string& path, const std::vector<PlotPanel>& panels,
+                           const PlotLayout& layout = {});
 
 // The axis range and its tick values: decades on a log axis (10^k), about
 // five round steps on a linear one (1, 2 or 5 times a power of ten), always

@@ -30,10 +30,9 @@ const std::vector<BuiltinInfo>& builtins() {
       {"object_ray_origin", ValueType::Vec3, I | A | C, "gl_ObjectRayOriginEXT"},
       {"object_ray_direction", ValueType::Vec3, I | A | C, "gl_ObjectRayDirectionEXT"},
       {"barycentrics", ValueType::Vec2, A | C,
-       "the hit attribute: triangle barycentrics (b1, b2), or what the intersection "
-       "shader reported"},
-      {"hit_position", ValueType::Vec3, A | C,
-       "world ray origin + hit_t * world ray direction"},
+       "the hit attribute: triangle barycentrics (b1, b2), or what the intersection shader "
+       "reported"},
+      {"hit_position", ValueType::Vec3, A | C, "world ray origin + hit_t * world ray direction"},
       {"aabb_min", ValueType::Vec3, I, "min corner of the primitive's AABB (object space)"},
       {"aabb_max", ValueType::Vec3, I, "max corner of the primitive's AABB (object space)"},
       {"payload.color", ValueType::Vec4, M | C | A | R,

@@ -12,7 +12,9 @@ namespace rayspec {
 
 // Bit set of stages (1u << int(Stage)).
 using StageMask = unsigned;
-constexpr StageMask stageBit(Stage s) { return 1u << static_cast<unsigned>(s); }
+constexpr StageMask stageBit(Stage s) {
+  return 1u << static_cast<unsigned>(s);
+}
 constexpr StageMask kAllStages = 0x3F;
 
 // One-letter stage bits for the built-in, operator and statement tables.

@@ -54,10 +54,14 @@ std::string stageList(StageMask mask) {
 ValueType fieldValueType(const RecordField& f) {
   if (f.type == FieldType::Uint) return ValueType::Uint;
   switch (f.words) {
-    case 2: return ValueType::Vec2;
-    case 3: return ValueType::Vec3;
-    case 4: return ValueType::Vec4;
-    default: return ValueType::Float;
+    case 2:
+      return ValueType::Vec2;
+    case 3:
+      return ValueType::Vec3;
+    case 4:
+      return ValueType::Vec4;
+    default:
+      return ValueType::Float;
   }
 }
 
@@ -90,11 +94,14 @@ class Checker {
           return ProgramError{"counter '" + s.counter + "' is not declared in outputs.counters",
                               s.loc};
         return std::nullopt;
-      case Stmt::Kind::Record: return record(s);
+      case Stmt::Kind::Record:
+        return record(s);
       case Stmt::Kind::SetPayload:
-      case Stmt::Kind::SetCall: return dataFields(s, false);
+      case Stmt::Kind::SetCall:
+        return dataFields(s, false);
       case Stmt::Kind::Ignore:
-      case Stmt::Kind::Terminate: return std::nullopt;
+      case Stmt::Kind::Terminate:
+        return std::nullopt;
       case Stmt::Kind::Report: {
         if (auto r = as(s.t, ValueType::Float, "report t")) return r;
         if (auto r = as(s.hit_kind, ValueType::Uint, "report kind")) return r;
@@ -106,7 +113,8 @@ class Checker {
         if (auto r = block(s.then_)) return r;
         return block(s.else_);
       }
-      case Stmt::Kind::Trace: return trace(s);
+      case Stmt::Kind::Trace:
+        return trace(s);
       case Stmt::Kind::Call:
         if (auto r = as(s.call_index, ValueType::Uint, "call index")) return r;
         return dataFields(s, true);
@@ -146,9 +154,12 @@ class Checker {
   std::optional<ProgramError> dataFields(Stmt& s, bool call) {
     for (auto& [name, value] : s.assigns) {
       ValueType want;
-      if (name == "color") want = ValueType::Vec4;
-      else if (name == "value") want = ValueType::Uint;
-      else if (call && (name == "position" || name == "normal")) want = ValueType::Vec3;
+      if (name == "color")
+        want = ValueType::Vec4;
+      else if (name == "value")
+        want = ValueType::Uint;
+      else if (call && (name == "position" || name == "normal"))
+        want = ValueType::Vec3;
       else
         return ProgramError{"unknown field '" + name + "' (" +
                                 (call ? "position, normal, color, value" : "color, value") + ")",
@@ -160,19 +171,26 @@ class Checker {
 
   std::optional<ProgramError> trace(Stmt& s) {
     TraceArgs& t = s.trace;
-    struct Slot { std::vector<Expr>* exprs; const char* name; ValueType type; };
+    struct Slot {
+      std::vector<Expr>* exprs;
+      const char* name;
+      ValueType type;
+    };
     Slot slots[] = {
-        {&t.origin, "origin", ValueType::Vec3},       {&t.direction, "direction", ValueType::Vec3},
-        {&t.tmin, "tmin", ValueType::Float},          {&t.tmax, "tmax", ValueType::Float},
-        {&t.flags, "flags", ValueType::Uint},         {&t.cull_mask, "cull_mask", ValueType::Uint},
-        {&t.sbt_offset, "sbt_offset", ValueType::Uint}, {&t.sbt_stride, "sbt_stride", ValueType::Uint},
+        {&t.origin, "origin", ValueType::Vec3},
+        {&t.direction, "direction", ValueType::Vec3},
+        {&t.tmin, "tmin", ValueType::Float},
+        {&t.tmax, "tmax", ValueType::Float},
+        {&t.flags, "flags", ValueType::Uint},
+        {&t.cull_mask, "cull_mask", ValueType::Uint},
+        {&t.sbt_offset, "sbt_offset", ValueType::Uint},
+        {&t.sbt_stride, "sbt_stride", ValueType::Uint},
         {&t.miss, "miss", ValueType::Uint},
     };
     for (Slot& slot : slots) {
       if (slot.exprs->size() > 1)
         return ProgramError{std::string("trace ") + slot.name + " given twice", s.loc};
-      if (slot.exprs->empty() && stage_ != Stage::Raygen &&
-          (slot.type == ValueType::Vec3))
+      if (slot.exprs->empty() && stage_ != Stage::Raygen && (slot.type == ValueType::Vec3))
         return ProgramError{std::string("trace outside raygen needs '") + slot.name + "'", s.loc};
       for (Expr& e : *slot.exprs)
         if (auto r = as(e, slot.type, std::string("trace ") + slot.name)) return r;

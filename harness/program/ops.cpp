@@ -47,18 +47,20 @@ const std::vector<OpInfo>& ops() {
       {"sphere_near", 0, 0, kIsect, "near root t of the ray against the inscribed sphere"},
       {"sphere_far", 0, 0, kIsect, "far root t of the ray against the inscribed sphere"},
       {"shader_record_uint", 1, 1, kAllStages,
-       "word i (Uint literal 0..7, 4 i + 4 <= pipeline.sbt.record_data) of this stage's shader record "
-       "data, as Uint"},
+       "word i (Uint literal 0..7, 4 i + 4 <= pipeline.sbt.record_data) of this stage's shader "
+       "record data, as Uint"},
       {"shader_record_float", 1, 1, kAllStages,
-       "word i (Uint literal 0..7, 4 i + 4 <= pipeline.sbt.record_data) of this stage's shader record "
-       "data, as Float"},
+       "word i (Uint literal 0..7, 4 i + 4 <= pipeline.sbt.record_data) of this stage's shader "
+       "record data, as Float"},
       {"light_point", 2, 2, kAllStages,
-       "light_point(P, N): the point light of shaders/lights.glsl, parameters from this stage's record floats"},
-      {"light_spot", 2, 2, kAllStages,
-       "light_spot(P, N): the spot light of shaders/lights.glsl, parameters from this stage's record floats"},
-      {"light_directional", 2, 2, kAllStages,
-       "light_directional(P, N): the directional light of shaders/lights.glsl, parameters from this stage's "
+       "light_point(P, N): the point light of shaders/lights.glsl, parameters from this stage's "
        "record floats"},
+      {"light_spot", 2, 2, kAllStages,
+       "light_spot(P, N): the spot light of shaders/lights.glsl, parameters from this stage's "
+       "record floats"},
+      {"light_directional", 2, 2, kAllStages,
+       "light_directional(P, N): the directional light of shaders/lights.glsl, parameters from "
+       "this stage's record floats"},
   };
   return table;
 }

@@ -56,7 +56,10 @@ std::string typeCheck(Expr& e, Stage stage);
 
 // Checks a whole program for a stage (statement kinds allowed in the stage,
 // expression types, field names); returns the first error with its location.
-struct ProgramError { std::string message; SourceLoc loc; };
+struct ProgramError {
+  std::string message;
+  SourceLoc loc;
+};
 std::optional<ProgramError> checkProgram(Program& p, Stage stage,
                                          const std::vector<std::string>& counters,
                                          const std::vector<std::string>& per_ray_fields);

@@ -65,16 +65,16 @@ struct Stmt {
     If,          // if (cond) then_ else else_
   };
   Kind kind = Kind::Count;
-  std::string counter;                                  // Count
-  std::vector<std::pair<std::string, Expr>> assigns;    // Record/SetPayload/SetCall/Call
-  Expr cond;                                            // If
-  Expr t, hit_kind;                                     // Report
-  std::vector<Expr> attribute;                          // Report: optional Vec2 hit
-                                                        // attribute; vec2(0) when absent
-  Expr call_index;                                      // Call
-  std::string light;                                    // Light: point|spot|directional
-  TraceArgs trace;                                      // Trace
-  std::vector<Stmt> then_, else_;                       // If, Report
+  std::string counter;                                // Count
+  std::vector<std::pair<std::string, Expr>> assigns;  // Record/SetPayload/SetCall/Call
+  Expr cond;                                          // If
+  Expr t, hit_kind;                                   // Report
+  std::vector<Expr> attribute;                        // Report: optional Vec2 hit
+                                                      // attribute; vec2(0) when absent
+  Expr call_index;                                    // Call
+  std::string light;                                  // Light: point|spot|directional
+  TraceArgs trace;                                    // Trace
+  std::vector<Stmt> then_, else_;                     // If, Report
   SourceLoc loc;
 };
 

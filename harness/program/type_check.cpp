@@ -15,7 +15,9 @@ namespace {
 bool isVector(ValueType t) {
   return t == ValueType::Vec2 || t == ValueType::Vec3 || t == ValueType::Vec4;
 }
-bool isScalarNumber(ValueType t) { return t == ValueType::Uint || t == ValueType::Float; }
+bool isScalarNumber(ValueType t) {
+  return t == ValueType::Uint || t == ValueType::Float;
+}
 bool isUintLiteral(const Expr& e) {
   return e.kind == Expr::Kind::Literal && e.type == ValueType::Uint;
 }
@@ -25,8 +27,10 @@ ValueType vectorOf(int n) {
 
 // Promotes a Uint literal to Float when the other side is Float or a vector.
 void unifyLiterals(Expr& a, Expr& b) {
-  if ((b.type == ValueType::Float || isVector(b.type)) && isUintLiteral(a)) a.type = ValueType::Float;
-  if ((a.type == ValueType::Float || isVector(a.type)) && isUintLiteral(b)) b.type = ValueType::Float;
+  if ((b.type == ValueType::Float || isVector(b.type)) && isUintLiteral(a))
+    a.type = ValueType::Float;
+  if ((a.type == ValueType::Float || isVector(a.type)) && isUintLiteral(b))
+    b.type = ValueType::Float;
 }
 
 std::string typeList(const std::vector<Expr>& args) {
@@ -38,7 +42,9 @@ std::string typeList(const std::vector<Expr>& args) {
   return s;
 }
 
-ProgramError err(const Expr& e, const std::string& msg) { return {msg, e.loc}; }
+ProgramError err(const Expr& e, const std::string& msg) {
+  return {msg, e.loc};
+}
 
 std::optional<ProgramError> checkLiteral(Expr& e) {
   const size_t n = e.literal.size();
@@ -60,11 +66,11 @@ std::optional<ProgramError> checkOp(Expr& e, Stage stage, const OpInfo& op) {
   if (!(op.stages & stageBit(stage)))
     return err(e, "operator '" + name + "' is not available in " + stageName(stage));
   if (n < op.min_args || n > op.max_args) {
-    std::string want = op.min_args == op.max_args ? std::to_string(op.min_args)
-                                                  : std::to_string(op.min_args) + ".." +
-                                                        std::to_string(op.max_args);
-    return err(e, "operator '" + name + "' takes " + want + " argument(s), got " +
-                      std::to_string(n));
+    std::string want = op.min_args == op.max_args
+                           ? std::to_string(op.min_args)
+                           : std::to_string(op.min_args) + ".." + std::to_string(op.max_args);
+    return err(e,
+               "operator '" + name + "' takes " + want + " argument(s), got " + std::to_string(n));
   }
   for (Expr& arg : a)
     if (auto r = checkExpr(arg, stage)) return r;
@@ -97,11 +103,13 @@ std::optional<ProgramError> checkOp(Expr& e, Stage stage, const OpInfo& op) {
   }
   if (name == "min" || name == "max") {
     unifyLiterals(a[0], a[1]);
-    if (a[0].type != a[1].type || a[0].type == ValueType::Bool) return bad("need the same numeric type");
+    if (a[0].type != a[1].type || a[0].type == ValueType::Bool)
+      return bad("need the same numeric type");
     e.type = a[0].type;
     return std::nullopt;
   }
-  if (name == "eq" || name == "ne" || name == "lt" || name == "le" || name == "gt" || name == "ge") {
+  if (name == "eq" || name == "ne" || name == "lt" || name == "le" || name == "gt" ||
+      name == "ge") {
     unifyLiterals(a[0], a[1]);
     if (a[0].type != a[1].type || !isScalarNumber(a[0].type))
       return bad("need the same scalar type (Uint or Float)");
@@ -149,7 +157,8 @@ std::optional<ProgramError> checkOp(Expr& e, Stage stage, const OpInfo& op) {
     return std::nullopt;
   }
   if (name == "dot") {
-    if (!isVector(a[0].type) || a[0].type != a[1].type) return bad("need two vectors of the same size");
+    if (!isVector(a[0].type) || a[0].type != a[1].type)
+      return bad("need two vectors of the same size");
     e.type = ValueType::Float;
     return std::nullopt;
   }

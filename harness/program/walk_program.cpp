@@ -25,21 +25,26 @@ void walkStatements(const Program& p, const std::function<void(const Stmt&)>& vi
 void walkOwnExpressions(const Stmt& s, const std::function<void(const Expr&)>& visit) {
   for (const auto& [field, value] : s.assigns) walkExpr(value, visit);
   switch (s.kind) {
-    case Stmt::Kind::If: walkExpr(s.cond, visit); break;
+    case Stmt::Kind::If:
+      walkExpr(s.cond, visit);
+      break;
     case Stmt::Kind::Report:
       walkExpr(s.t, visit);
       walkExpr(s.hit_kind, visit);
       walkList(s.attribute, visit);
       break;
-    case Stmt::Kind::Call: walkExpr(s.call_index, visit); break;
+    case Stmt::Kind::Call:
+      walkExpr(s.call_index, visit);
+      break;
     case Stmt::Kind::Trace: {
       const TraceArgs& t = s.trace;
-      for (const auto* list : {&t.origin, &t.direction, &t.tmin, &t.tmax, &t.flags, &t.cull_mask, &t.sbt_offset,
-                               &t.sbt_stride, &t.miss})
+      for (const auto* list : {&t.origin, &t.direction, &t.tmin, &t.tmax, &t.flags, &t.cull_mask,
+                               &t.sbt_offset, &t.sbt_stride, &t.miss})
         walkList(*list, visit);
       break;
     }
-    default: break;
+    default:
+      break;
   }
 }
 

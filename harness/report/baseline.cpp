@@ -6,9 +6,9 @@
 #include <fstream>
 #include <set>
 
-#include "results/file_name.h"
-#include "results/visible_text.h"
+#include "base/visible_text.h"
 #include "report/escape.h"
+#include "results/file_name.h"
 
 namespace rayspec {
 namespace {
@@ -32,7 +32,8 @@ void forEachEntry(const std::string& path, std::string* error, F line) {
     return;
   }
   if (size > kMaxBaselineBytes) {
-    *error = path + ": " + std::to_string(size) + " bytes (at most " + std::to_string(kMaxBaselineBytes) + ")";
+    *error = path + ": " + std::to_string(size) + " bytes (at most " +
+             std::to_string(kMaxBaselineBytes) + ")";
     return;
   }
   std::string text;
@@ -74,7 +75,8 @@ Baseline loadBaseline(const std::string& path, std::string* error) {
       return false;
     }
     if (const auto [it, fresh] = line_of.emplace(name, number); !fresh) {
-      *error = where + ": " + name + " is listed again (first on line " + std::to_string(it->second) + ")";
+      *error = where + ": " + name + " is listed again (first on line " +
+               std::to_string(it->second) + ")";
       return false;
     }
     b.expected[name] = s;
@@ -88,7 +90,8 @@ std::vector<std::string> unknownEntries(const Baseline& b, const std::vector<std
   std::vector<std::string> out;
   for (const auto& [name, line] : b.line_of)
     if (!known.count(name))
-      out.push_back(b.file + ":" + std::to_string(line) + ": " + name + " is no case of the library (renamed or removed?)");
+      out.push_back(b.file + ":" + std::to_string(line) + ": " + name +
+                    " is no case of the library (renamed or removed?)");
   return out;
 }
 
@@ -105,7 +108,8 @@ std::vector<NamePattern> loadNamePatterns(const std::string& path, std::string* 
     options.set_log_errors(false);
     auto regex = std::make_shared<const RE2>(text, options);
     if (!regex->ok()) {
-      *error = where + ": not a regular expression (RE2 syntax): '" + shown(text) + "' (" + regex->error() + ")";
+      *error = where + ": not a regular expression (RE2 syntax): '" + shown(text) + "' (" +
+               regex->error() + ")";
       return false;
     }
     out.push_back({text, where, std::move(regex)});
@@ -127,7 +131,8 @@ std::string siblingFile(const std::string& baseline_csv, const std::string& suff
   return std::filesystem::exists(sibling) ? sibling.string() : std::string();
 }
 
-Baseline loadBaselineSet(const std::string& csv, std::string flakes, std::string skips, std::string* error) {
+Baseline loadBaselineSet(const std::string& csv, std::string flakes, std::string skips,
+                         std::string* error) {
   Baseline b;
   if (!csv.empty()) b = loadBaseline(csv, error);
   if (!error->empty()) return b;

@@ -40,8 +40,8 @@ constexpr size_t kMaxBaselineBytes = 16u << 20;
 
 struct Baseline {
   std::string file, flakes_file, skips_file;  // "" when not used
-  std::map<std::string, Status> expected;      // case name -> status
-  std::map<std::string, int> line_of;          // case name -> its line in `file`
+  std::map<std::string, Status> expected;     // case name -> status
+  std::map<std::string, int> line_of;         // case name -> its line in `file`
   std::vector<NamePattern> flakes, skips;
   bool empty() const { return file.empty() && flakes_file.empty() && skips_file.empty(); }
 };
@@ -67,6 +67,7 @@ std::string siblingFile(const std::string& baseline_csv, const std::string& suff
 
 // The whole set: the CSV (may be ""), and the flakes and skips files (given,
 // or the CSV's siblings). error: the first problem, naming file and line.
-Baseline loadBaselineSet(const std::string& csv, std::string flakes, std::string skips, std::string* error);
+Baseline loadBaselineSet(const std::string& csv, std::string flakes, std::string skips,
+                         std::string* error);
 
 }  // namespace rayspec

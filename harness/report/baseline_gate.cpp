@@ -54,8 +54,11 @@ void applyRerun(CaseOutcome& o, const CaseOutcome& rerun) {
 CaseOutcome skippedOutcome(const std::string& name, const NamePattern& pattern) {
   CaseOutcome o;
   o.name = name;
-  o.verdict.add({Status::NotSupported, "skipped", "not run: the skips file names it (" + pattern.where + ": " +
-                                                      pattern.text + ")", {}, 0});
+  o.verdict.add({Status::NotSupported,
+                 "skipped",
+                 "not run: the skips file names it (" + pattern.where + ": " + pattern.text + ")",
+                 {},
+                 0});
   o.deriveFromVerdict();
   o.baseline = BaselineMatch::Skipped;
   o.baseline_note = "skipped by " + pattern.where;
@@ -67,21 +70,25 @@ bool failsRun(const CaseOutcome& o) {
     case BaselineMatch::Expected:
     case BaselineMatch::KnownFlake:
     case BaselineMatch::Flake:
-    case BaselineMatch::Skipped: return false;
-    case BaselineMatch::UnexpectedPass: return true;
-    case BaselineMatch::None: break;
+    case BaselineMatch::Skipped:
+      return false;
+    case BaselineMatch::UnexpectedPass:
+      return true;
+    case BaselineMatch::None:
+      break;
   }
   return isFailing(o.status);
 }
 
-std::string writeFailuresCsv(const std::vector<CaseOutcome>& outcomes, const std::string& baseline_file,
-                             const std::string& path) {
+std::string writeFailuresCsv(const std::vector<CaseOutcome>& outcomes,
+                             const std::string& baseline_file, const std::string& path) {
   std::ofstream out(path);
-  out << "# Results " << (baseline_file.empty() ? "that fail the run (no baseline given)"
-                                                : "the baseline " + baseline_file + " did not expect")
-      << ", in its own form (case,Status):\n"
-         "# append the failures to the baseline once they are understood, delete the unexpected passes\n"
-         "# from it, and add the flakes' names to the flakes file.\n";
+  out << "# Results "
+      << (baseline_file.empty() ? "that fail the run (no baseline given)"
+                                : "the baseline " + baseline_file + " did not expect")
+      << ", in its own form (case,Status):\n# append the failures to the baseline once they are "
+         "understood, delete the unexpected passes\n# from it, and add the flakes' names to the "
+         "flakes file.\n";
   for (const CaseOutcome& o : outcomes) {
     if (!failsRun(o) && o.baseline != BaselineMatch::Flake) continue;
     out << csvField(o.name) << ',' << statusName(o.status) << "  # " << deqpResultName(o);
@@ -93,12 +100,18 @@ std::string writeFailuresCsv(const std::vector<CaseOutcome>& outcomes, const std
 
 const char* gateWord(BaselineMatch m) {
   switch (m) {
-    case BaselineMatch::None: return "";
-    case BaselineMatch::Expected: return "expected";
-    case BaselineMatch::UnexpectedPass: return "UNEXPECTED PASS, update the baseline";
-    case BaselineMatch::KnownFlake: return "known flake";
-    case BaselineMatch::Flake: return "FLAKE, add it to the flakes file";
-    case BaselineMatch::Skipped: return "skipped";
+    case BaselineMatch::None:
+      return "";
+    case BaselineMatch::Expected:
+      return "expected";
+    case BaselineMatch::UnexpectedPass:
+      return "UNEXPECTED PASS, update the baseline";
+    case BaselineMatch::KnownFlake:
+      return "known flake";
+    case BaselineMatch::Flake:
+      return "FLAKE, add it to the flakes file";
+    case BaselineMatch::Skipped:
+      return "skipped";
   }
   return "";
 }
@@ -109,13 +122,17 @@ const char* deqpResultName(const CaseOutcome& o) {
       if (o.status != Status::Pass) return "ExpectedFail";
       break;
     case BaselineMatch::UnexpectedPass:
-      return o.status == Status::Pass ? "UnexpectedImprovement(Pass)"
+      return o.status == Status::Pass           ? "UnexpectedImprovement(Pass)"
              : o.status == Status::NotSupported ? "UnexpectedImprovement(Skip)"
                                                 : "UnexpectedImprovement(Warn)";
-    case BaselineMatch::KnownFlake: return "KnownFlake";
-    case BaselineMatch::Flake: return "Flake";
-    case BaselineMatch::Skipped: return "Skip";
-    case BaselineMatch::None: break;
+    case BaselineMatch::KnownFlake:
+      return "KnownFlake";
+    case BaselineMatch::Flake:
+      return "Flake";
+    case BaselineMatch::Skipped:
+      return "Skip";
+    case BaselineMatch::None:
+      break;
   }
   return deqpStatusName(o.status);
 }

@@ -44,8 +44,8 @@ bool failsRun(const CaseOutcome& outcome);
 // flakes), as a baseline-form CSV: `case,Status` with a comment saying what
 // was expected. Written as failures.csv into a run folder.
 // baseline_file: the baseline the run was judged by ("" none).
-std::string writeFailuresCsv(const std::vector<CaseOutcome>& outcomes, const std::string& baseline_file,
-                             const std::string& path);
+std::string writeFailuresCsv(const std::vector<CaseOutcome>& outcomes,
+                             const std::string& baseline_file, const std::string& path);
 
 // A few words for the console and the reports: "expected", "known flake", ...
 const char* gateWord(BaselineMatch m);

@@ -75,17 +75,20 @@ std::string runCostText(const std::vector<CaseOutcome>& outcomes) {
   std::vector<Line> lines;
   for (CostSide side : kSides)
     for (size_t i = 0; i < kCostSteps; ++i)
-      if (sum[side].seconds[i] > 0) lines.push_back({side, static_cast<CostStep>(i), sum[side].seconds[i]});
-  std::sort(lines.begin(), lines.end(), [](const Line& a, const Line& b) { return a.seconds > b.seconds; });
+      if (sum[side].seconds[i] > 0)
+        lines.push_back({side, static_cast<CostStep>(i), sum[side].seconds[i]});
+  std::sort(lines.begin(), lines.end(),
+            [](const Line& a, const Line& b) { return a.seconds > b.seconds; });
   const double wall = wallSeconds(outcomes);
   std::string text;
   char row[160];
-  std::snprintf(row, sizeof row, "Where the time went: %.2f s of cases' wall time, %.2f s accounted for by steps\n",
+  std::snprintf(row, sizeof row,
+                "Where the time went: %.2f s of cases' wall time, %.2f s accounted for by steps\n",
                 wall, sum.total());
   text += row;
   for (const Line& l : lines) {
-    std::snprintf(row, sizeof row, "  %-7s %-18s %10.3f s %5.1f%%\n", costSideName(l.side), costStepName(l.step),
-                  l.seconds, wall > 0 ? 100.0 * l.seconds / wall : 0.0);
+    std::snprintf(row, sizeof row, "  %-7s %-18s %10.3f s %5.1f%%\n", costSideName(l.side),
+                  costStepName(l.step), l.seconds, wall > 0 ? 100.0 * l.seconds / wall : 0.0);
     text += row;
   }
   return text;

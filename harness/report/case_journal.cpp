@@ -8,7 +8,9 @@
 namespace rayspec {
 namespace {
 
-std::string journalPath(const std::string& dir) { return dir + "/" + kJournalFile; }
+std::string journalPath(const std::string& dir) {
+  return dir + "/" + kJournalFile;
+}
 
 }  // namespace
 
@@ -37,7 +39,8 @@ std::vector<CaseOutcome> readJournal(const std::string& dir, bool* found, std::s
     const bool last = in.peek() == std::char_traits<char>::eof();
     try {
       CaseOutcome o = outcomeFromJson(nlohmann::json::parse(line));
-      if (auto it = at.find(o.name); it != at.end()) out[it->second] = std::move(o);
+      if (auto it = at.find(o.name); it != at.end())
+        out[it->second] = std::move(o);
       else {
         at[o.name] = out.size();
         out.push_back(std::move(o));

@@ -21,7 +21,8 @@ struct RayRow {
 enum class BaselineMatch {
   None,            // no baseline, or a result it says nothing about: judged by its status alone
   Expected,        // the baseline lists exactly this result
-  UnexpectedPass,  // the baseline expects a failure and the case no longer fails: update the baseline
+  UnexpectedPass,  // the baseline expects a failure and the case no longer fails: update the
+                   // baseline
   KnownFlake,      // an unexpected result of a case the flakes file names
   Flake,           // an unexpected failure that its re-run did not repeat
   Skipped,         // named by the skips file: not run
@@ -38,8 +39,8 @@ struct CaseOutcome {
   std::vector<std::string> images;  // image names; files at <case>/{device,model,diff}/<name>.png
   std::vector<RayRow> failing_rays;
   BaselineMatch baseline = BaselineMatch::None;
-  std::string baseline_note;        // why: the entry, pattern (file:line) or re-run that decided it
-  std::string device_name;          // the device that ran it (results bundle)
+  std::string baseline_note;  // why: the entry, pattern (file:line) or re-run that decided it
+  std::string device_name;    // the device that ran it (results bundle)
 
   // Takes status and headline from the verdict: the one place they are
   // derived, called after the verdict's last finding is added.

@@ -12,7 +12,8 @@ namespace fs = std::filesystem;
 namespace {
 
 // The case folder `name` of `from` into `to`: hard links, or copies.
-std::string copyCaseFolder(const std::string& from, const std::string& to, const std::string& name) {
+std::string copyCaseFolder(const std::string& from, const std::string& to,
+                           const std::string& name) {
   const fs::path src = fs::path(from) / name, dst = fs::path(to) / name;
   std::error_code ec;
   if (!fs::exists(src, ec)) return {};  // a CaseError or skipped case may have none
@@ -24,13 +25,14 @@ std::string copyCaseFolder(const std::string& from, const std::string& to, const
     ec.clear();
     fs::copy(src, dst, fs::copy_options::recursive, ec);
   }
-  return ec ? "cannot copy " + src.string() + " to " + dst.string() + ": " + ec.message() : std::string();
+  return ec ? "cannot copy " + src.string() + " to " + dst.string() + ": " + ec.message()
+            : std::string();
 }
 
 }  // namespace
 
-MergeResult mergeRuns(const std::vector<std::string>& dirs, const std::string& out, const Baseline& baseline,
-                      const std::vector<Rule>& catalog) {
+MergeResult mergeRuns(const std::vector<std::string>& dirs, const std::string& out,
+                      const Baseline& baseline, const std::vector<Rule>& catalog) {
   MergeResult m;
   std::vector<SavedRun> runs;
   std::map<std::string, std::string> seen;  // case -> folder
@@ -42,10 +44,11 @@ MergeResult mergeRuns(const std::vector<std::string>& dirs, const std::string& o
     }
     SavedRun run = readSavedRun(dir, &m.error);
     if (!m.error.empty()) return m;
-    if (!runs.empty() && (run.info.device != runs[0].info.device || run.info.model_tier != runs[0].info.model_tier)) {
-      m.error = dir + " was run on '" + run.info.device + "' (model " + run.info.model_tier + "), " + dirs[0] +
-                " on '" + runs[0].info.device + "' (model " + runs[0].info.model_tier +
-                "): only runs of one device and tier merge";
+    if (!runs.empty() && (run.info.device != runs[0].info.device ||
+                          run.info.model_tier != runs[0].info.model_tier)) {
+      m.error = dir + " was run on '" + run.info.device + "' (model " + run.info.model_tier +
+                "), " + dirs[0] + " on '" + runs[0].info.device + "' (model " +
+                runs[0].info.model_tier + "): only runs of one device and tier merge";
       return m;
     }
     for (const CaseOutcome& o : run.outcomes) {
@@ -73,7 +76,8 @@ MergeResult mergeRuns(const std::vector<std::string>& dirs, const std::string& o
     info.validation = info.validation && r.validation;
     info.planned_cases += std::max(r.planned_cases, runs[i].outcomes.size());
     info.interrupted = info.interrupted || r.interrupted;
-    info.teardown_errors.insert(info.teardown_errors.end(), r.teardown_errors.begin(), r.teardown_errors.end());
+    info.teardown_errors.insert(info.teardown_errors.end(), r.teardown_errors.begin(),
+                                r.teardown_errors.end());
     for (CaseOutcome& o : runs[i].outcomes) {
       if (const std::string err = copyCaseFolder(dirs[i], out, o.name); !err.empty()) {
         m.error = err;

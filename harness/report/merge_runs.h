@@ -22,7 +22,7 @@ struct MergeResult {
 // Refuses folders from different devices or model tiers, a case found in two
 // folders, and `out` being one of `dirs`. A baseline that is not empty is
 // applied to every outcome anew (no re-runs: they happened in the runs).
-MergeResult mergeRuns(const std::vector<std::string>& dirs, const std::string& out, const Baseline& baseline,
-                      const std::vector<Rule>& catalog);
+MergeResult mergeRuns(const std::vector<std::string>& dirs, const std::string& out,
+                      const Baseline& baseline, const std::vector<Rule>& catalog);
 
 }  // namespace rayspec

@@ -12,8 +12,9 @@
 namespace rayspec {
 namespace {
 
-constexpr BaselineMatch kMatches[] = {BaselineMatch::None,       BaselineMatch::Expected, BaselineMatch::UnexpectedPass,
-                                      BaselineMatch::KnownFlake, BaselineMatch::Flake,    BaselineMatch::Skipped};
+constexpr BaselineMatch kMatches[] = {BaselineMatch::None,           BaselineMatch::Expected,
+                                      BaselineMatch::UnexpectedPass, BaselineMatch::KnownFlake,
+                                      BaselineMatch::Flake,          BaselineMatch::Skipped};
 
 Status statusField(const nlohmann::json& j, const char* key) {
   Status s;
@@ -26,12 +27,18 @@ Status statusField(const nlohmann::json& j, const char* key) {
 
 const char* baselineMatchName(BaselineMatch m) {
   switch (m) {
-    case BaselineMatch::None: return "";
-    case BaselineMatch::Expected: return "expected";
-    case BaselineMatch::UnexpectedPass: return "unexpected_pass";
-    case BaselineMatch::KnownFlake: return "known_flake";
-    case BaselineMatch::Flake: return "flake";
-    case BaselineMatch::Skipped: return "skipped";
+    case BaselineMatch::None:
+      return "";
+    case BaselineMatch::Expected:
+      return "expected";
+    case BaselineMatch::UnexpectedPass:
+      return "unexpected_pass";
+    case BaselineMatch::KnownFlake:
+      return "known_flake";
+    case BaselineMatch::Flake:
+      return "flake";
+    case BaselineMatch::Skipped:
+      return "skipped";
   }
   return "";
 }
@@ -51,16 +58,25 @@ nlohmann::json outcomeJson(const CaseOutcome& o) {
   c["cost"] = caseCostJson(o.cost);
   c["findings"] = nlohmann::json::array();
   for (const Finding& f : o.verdict.findings)
-    c["findings"].push_back({{"status", statusName(f.status)}, {"rule", f.rule}, {"message", f.message},
-                             {"rays", f.rays}, {"ray_count", f.ray_count}});
+    c["findings"].push_back({{"status", statusName(f.status)},
+                             {"rule", f.rule},
+                             {"message", f.message},
+                             {"rays", f.rays},
+                             {"ray_count", f.ray_count}});
   // Apart from the findings: rays never judged (R-UB).
   c["undefined"] = nlohmann::json::array();
   for (const UndefinedRays& u : o.verdict.undefined)
-    c["undefined"].push_back({{"reason", undefinedReasonName(u.reason)}, {"ray_count", u.ray_count},
-                              {"rays", u.rays}, {"what", u.what}});
+    c["undefined"].push_back({{"reason", undefinedReasonName(u.reason)},
+                              {"ray_count", u.ray_count},
+                              {"rays", u.rays},
+                              {"what", u.what}});
   c["failing_rays"] = nlohmann::json::array();
   for (const RayRow& r : o.failing_rays)
-    c["failing_rays"].push_back({{"ray", r.ray}, {"x", r.x}, {"y", r.y}, {"field", r.field}, {"device", r.device},
+    c["failing_rays"].push_back({{"ray", r.ray},
+                                 {"x", r.x},
+                                 {"y", r.y},
+                                 {"field", r.field},
+                                 {"device", r.device},
                                  {"model", r.model}});
   return c;
 }
@@ -69,7 +85,8 @@ CaseOutcome outcomeFromJson(const nlohmann::json& j) {
   CaseOutcome o;
   o.name = j.at("name").get<std::string>();
   if (const std::string problem = caseNameProblem(o.name); !problem.empty())
-    throw std::runtime_error("cases: name '" + o.name.substr(0, 120) + "' is no case name: " + problem);
+    throw std::runtime_error("cases: name '" + o.name.substr(0, 120) +
+                             "' is no case name: " + problem);
   try {
     o.status = statusField(j, "status");
     o.headline = j.at("headline").get<std::string>();
@@ -88,20 +105,23 @@ CaseOutcome outcomeFromJson(const nlohmann::json& j) {
     if (j.contains("cost")) o.cost = caseCostFromJson(j.at("cost"));
     for (const nlohmann::json& f : j.at("findings"))
       o.verdict.findings.push_back({statusField(f, "status"), f.at("rule").get<std::string>(),
-                                    f.at("message").get<std::string>(), f.at("rays").get<std::vector<uint32_t>>(),
+                                    f.at("message").get<std::string>(),
+                                    f.at("rays").get<std::vector<uint32_t>>(),
                                     f.at("ray_count").get<uint32_t>()});
     for (const nlohmann::json& u : j.at("undefined")) {
       UndefinedRays r;
       if (!parseUndefinedReason(u.at("reason").get<std::string>(), &r.reason))
-        throw std::runtime_error("'reason' is not an undefined-behaviour reason: " + u.at("reason").dump());
+        throw std::runtime_error("'reason' is not an undefined-behaviour reason: " +
+                                 u.at("reason").dump());
       r.ray_count = u.at("ray_count").get<uint32_t>();
       r.rays = u.at("rays").get<std::vector<uint32_t>>();
       r.what = u.at("what").get<std::string>();
       o.verdict.undefined.push_back(r);
     }
     for (const nlohmann::json& r : j.value("failing_rays", nlohmann::json::array()))
-      o.failing_rays.push_back({r.at("ray").get<uint32_t>(), r.at("x").get<uint32_t>(), r.at("y").get<uint32_t>(),
-                                r.at("field").get<std::string>(), r.at("device").get<std::string>(),
+      o.failing_rays.push_back({r.at("ray").get<uint32_t>(), r.at("x").get<uint32_t>(),
+                                r.at("y").get<uint32_t>(), r.at("field").get<std::string>(),
+                                r.at("device").get<std::string>(),
                                 r.at("model").get<std::string>()});
   } catch (const nlohmann::json::exception& e) {
     throw std::runtime_error("case " + o.name + ": " + e.what());

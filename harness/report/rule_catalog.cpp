@@ -55,7 +55,8 @@ std::vector<std::string> ruleLabels(const std::vector<Rule>& catalog) {
 }
 
 std::map<std::string, std::vector<std::string>> ruleCoverage(
-    const std::vector<Rule>& catalog, const std::vector<std::pair<std::string, std::vector<std::string>>>& case_rules) {
+    const std::vector<Rule>& catalog,
+    const std::vector<std::pair<std::string, std::vector<std::string>>>& case_rules) {
   std::map<std::string, std::vector<std::string>> coverage;
   for (const Rule& r : catalog) coverage[r.label];
   for (const auto& [name, rules] : case_rules)

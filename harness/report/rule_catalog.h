@@ -24,6 +24,7 @@ std::vector<std::string> ruleLabels(const std::vector<Rule>& catalog);
 // rule label -> case names, for every rule of the catalog (empty = uncovered),
 // plus labels the cases use that the catalog lacks.
 std::map<std::string, std::vector<std::string>> ruleCoverage(
-    const std::vector<Rule>& catalog, const std::vector<std::pair<std::string, std::vector<std::string>>>& case_rules);
+    const std::vector<Rule>& catalog,
+    const std::vector<std::pair<std::string, std::vector<std::string>>>& case_rules);
 
 }  // namespace rayspec

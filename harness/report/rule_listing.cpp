@@ -27,7 +27,8 @@ std::vector<std::string> groupedNames(const std::vector<const ListedCase*>& case
     ++counts[c->sweep];
   }
   for (const auto& [sweep, index] : sweeps)
-    out[index] = sweep + " (sweep: " + std::to_string(counts[sweep]) + " variant" + (counts[sweep] == 1 ? "" : "s") + ")";
+    out[index] = sweep + " (sweep: " + std::to_string(counts[sweep]) + " variant" +
+                 (counts[sweep] == 1 ? "" : "s") + ")";
   return out;
 }
 
@@ -41,7 +42,8 @@ RuleListing listRules(const std::vector<Rule>& catalog, const std::vector<Listed
   for (const ListedCase& c : cases)
     for (const std::string& r : c.rules) {
       by_rule[r].push_back(&c);
-      if (!known.count(r) && std::find(listing.unknown.begin(), listing.unknown.end(), r) == listing.unknown.end())
+      if (!known.count(r) &&
+          std::find(listing.unknown.begin(), listing.unknown.end(), r) == listing.unknown.end())
         listing.unknown.push_back(r);
     }
   std::ostringstream out;
@@ -51,11 +53,15 @@ RuleListing listRules(const std::vector<Rule>& catalog, const std::vector<Listed
     const bool probe = r.label == kProbeRule;
     if (!probe) {
       ++judged;
-      if (claimed.empty()) listing.uncovered.push_back(r.label);
-      else ++covered;
+      if (claimed.empty())
+        listing.uncovered.push_back(r.label);
+      else
+        ++covered;
     }
     out << r.label << "  " << r.title << "\n";
-    if (probe) out << "  (probes: undefined behaviour is never judged; the device only has to survive these)\n";
+    if (probe)
+      out << "  (probes: undefined behaviour is never judged; the device only has to survive "
+             "these)\n";
     if (claimed.empty()) out << "  UNCOVERED: no case claims this rule\n";
     for (const std::string& name : groupedNames(claimed)) out << "  " << name << "\n";
     out << "  " << claimed.size() << " case" << (claimed.size() == 1 ? "" : "s") << "\n\n";
@@ -65,9 +71,9 @@ RuleListing listRules(const std::vector<Rule>& catalog, const std::vector<Listed
     for (const std::string& name : groupedNames(by_rule[r])) out << "  " << name << "\n";
     out << "\n";
   }
-  out << covered << " of " << judged << " rules have a case (" << kProbeRule << " apart: "
-      << by_rule[kProbeRule].size() << " probe" << (by_rule[kProbeRule].size() == 1 ? "" : "s") << "); "
-      << cases.size() << " cases in all\n";
+  out << covered << " of " << judged << " rules have a case (" << kProbeRule
+      << " apart: " << by_rule[kProbeRule].size() << " probe"
+      << (by_rule[kProbeRule].size() == 1 ? "" : "s") << "); " << cases.size() << " cases in all\n";
   if (!listing.uncovered.empty()) {
     out << "Uncovered:";
     for (const std::string& r : listing.uncovered) out << " " << r;

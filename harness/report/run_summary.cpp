@@ -11,7 +11,8 @@ namespace rayspec {
 namespace {
 
 std::string gateTag(const CaseOutcome& o) {
-  return o.baseline == BaselineMatch::None ? std::string() : std::string("  [") + gateWord(o.baseline) + "]";
+  return o.baseline == BaselineMatch::None ? std::string()
+                                           : std::string("  [") + gateWord(o.baseline) + "]";
 }
 
 }  // namespace
@@ -28,14 +29,17 @@ void RunSummary::add(const CaseOutcome& o) {
   if (!progress_) return;
   if (live_) std::printf("\r\x1b[K");
   live_ = false;
-  std::printf("[%zu/%zu] %-44s %-14s device %7.3f s  model %7.3f s\n", outcomes_.size(), total_, o.name.c_str(),
-              statusName(o.status), o.device_seconds, o.model_seconds);
+  std::printf("[%zu/%zu] %-44s %-14s device %7.3f s  model %7.3f s\n", outcomes_.size(), total_,
+              o.name.c_str(), statusName(o.status), o.device_seconds, o.model_seconds);
   if (o.status != Status::Pass) std::printf("        %s\n", o.headline.c_str());
-  if (o.baseline != BaselineMatch::None) std::printf("        (%s: %s)\n", gateWord(o.baseline), o.baseline_note.c_str());
+  if (o.baseline != BaselineMatch::None)
+    std::printf("        (%s: %s)\n", gateWord(o.baseline), o.baseline_note.c_str());
   std::fflush(stdout);
 }
 
-void RunSummary::addTeardownError(const std::string& m) { teardown_errors_.push_back(m); }
+void RunSummary::addTeardownError(const std::string& m) {
+  teardown_errors_.push_back(m);
+}
 
 bool RunSummary::failed() const {
   if (!teardown_errors_.empty()) return true;
@@ -54,8 +58,7 @@ void RunSummary::print() const {
   std::map<Status, int> counts;
   for (const CaseOutcome& o : outcomes_) ++counts[o.status];
   std::printf("\n==== rayspec summary: %zu cases ====\n", outcomes_.size());
-  for (Status s : kAllStatuses)
-    std::printf("  %-15s %d\n", statusName(s), counts[s]);
+  for (Status s : kAllStatuses) std::printf("  %-15s %d\n", statusName(s), counts[s]);
   bool header = false;
   for (const CaseOutcome& o : outcomes_) {
     if (o.status == Status::CaseError) continue;  // listed apart below
@@ -78,8 +81,10 @@ void RunSummary::print() const {
     gated += o.baseline != BaselineMatch::None;
   }
   if (gated)
-    std::printf("Gate: %zu unexpected results fail the run, %zu flakes (see failures.csv)\n", unexpected, flakes);
-  for (const std::string& m : teardown_errors_) std::printf("  validation error at device teardown: %s\n", m.c_str());
+    std::printf("Gate: %zu unexpected results fail the run, %zu flakes (see failures.csv)\n",
+                unexpected, flakes);
+  for (const std::string& m : teardown_errors_)
+    std::printf("  validation error at device teardown: %s\n", m.c_str());
 }
 
 }  // namespace rayspec

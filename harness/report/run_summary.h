@@ -15,8 +15,8 @@ class RunSummary {
   explicit RunSummary(size_t total, bool progress = true) : total_(total), progress_(progress) {}
   // On a terminal: a live "[i/N] running NAME..." line until add().
   void starting(const std::string& name);
-  void add(const CaseOutcome& outcome);          // prints the progress line
-  void addTeardownError(const std::string& m);   // validation errors at device destruction
+  void add(const CaseOutcome& outcome);         // prints the progress line
+  void addTeardownError(const std::string& m);  // validation errors at device destruction
   void print() const;
   const std::vector<CaseOutcome>& outcomes() const { return outcomes_; }
   const std::vector<std::string>& teardownErrors() const { return teardown_errors_; }

@@ -16,20 +16,28 @@ namespace rayspec {
 
 const char* deqpStatusName(Status s) {
   switch (s) {
-    case Status::Pass: return "Pass";
-    case Status::Fail: return "Fail";
-    case Status::QualityWarning: return "Warn";
-    case Status::NotSupported: return "Skip";
-    case Status::Crash: return "Crash";
-    case Status::Timeout: return "Timeout";
-    case Status::CaseError: return "Fail";  // deqp-runner has no name for it
+    case Status::Pass:
+      return "Pass";
+    case Status::Fail:
+      return "Fail";
+    case Status::QualityWarning:
+      return "Warn";
+    case Status::NotSupported:
+      return "Skip";
+    case Status::Crash:
+      return "Crash";
+    case Status::Timeout:
+      return "Timeout";
+    case Status::CaseError:
+      return "Fail";  // deqp-runner has no name for it
   }
   return "Crash";
 }
 
 std::string writeResultsCsv(const std::vector<CaseOutcome>& outcomes, const std::string& path) {
   std::ofstream out(path);
-  for (const CaseOutcome& o : outcomes) out << csvField(o.name) << ',' << deqpResultName(o) << ',' << o.seconds << '\n';
+  for (const CaseOutcome& o : outcomes)
+    out << csvField(o.name) << ',' << deqpResultName(o) << ',' << o.seconds << '\n';
   return out ? std::string() : "cannot write " + path;
 }
 
@@ -37,28 +45,35 @@ std::string writeJunitXml(const std::vector<CaseOutcome>& outcomes, const std::s
   int failures = 0, skipped = 0, errors = 0;
   double total = 0;
   for (const CaseOutcome& o : outcomes) {
-    failures += o.status == Status::Fail || o.status == Status::QualityWarning || o.status == Status::CaseError;
+    failures += o.status == Status::Fail || o.status == Status::QualityWarning ||
+                o.status == Status::CaseError;
     errors += o.status == Status::Crash || o.status == Status::Timeout;
     skipped += o.status == Status::NotSupported;
     total += o.seconds;
   }
   std::ofstream out(path);
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  out << "<testsuites><testsuite name=\"rayspec\" tests=\"" << outcomes.size() << "\" failures=\"" << failures
-      << "\" errors=\"" << errors << "\" skipped=\"" << skipped << "\" time=\"" << total << "\">\n";
+  out << "<testsuites><testsuite name=\"rayspec\" tests=\"" << outcomes.size() << "\" failures=\""
+      << failures << "\" errors=\"" << errors << "\" skipped=\"" << skipped << "\" time=\"" << total
+      << "\">\n";
   for (const CaseOutcome& o : outcomes) {
     const std::string family = o.name.substr(0, o.name.find('/'));
-    out << "  <testcase classname=\"rayspec." << xmlEscape(family) << "\" name=\"" << xmlEscape(o.name)
-        << "\" time=\"" << o.seconds << "\">";
+    out << "  <testcase classname=\"rayspec." << xmlEscape(family) << "\" name=\""
+        << xmlEscape(o.name) << "\" time=\"" << o.seconds << "\">";
     switch (o.status) {
-      case Status::Pass: break;
-      case Status::NotSupported: out << "<skipped message=\"" << xmlEscape(o.headline) << "\"/>"; break;
+      case Status::Pass:
+        break;
+      case Status::NotSupported:
+        out << "<skipped message=\"" << xmlEscape(o.headline) << "\"/>";
+        break;
       case Status::Crash:
       case Status::Timeout:
-        out << "<error type=\"" << statusName(o.status) << "\" message=\"" << xmlEscape(o.headline) << "\"/>";
+        out << "<error type=\"" << statusName(o.status) << "\" message=\"" << xmlEscape(o.headline)
+            << "\"/>";
         break;
       default:
-        out << "<failure type=\"" << statusName(o.status) << "\" message=\"" << xmlEscape(o.headline) << "\"/>";
+        out << "<failure type=\"" << statusName(o.status) << "\" message=\""
+            << xmlEscape(o.headline) << "\"/>";
     }
     out << "</testcase>\n";
   }
@@ -66,7 +81,8 @@ std::string writeJunitXml(const std::vector<CaseOutcome>& outcomes, const std::s
   return out ? std::string() : "cannot write " + path;
 }
 
-std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const RunInfo& info, const std::string& path) {
+std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
+                             const std::string& path) {
   nlohmann::json j;
   j["device"] = info.device;
   j["icd"] = info.icd;
@@ -78,8 +94,7 @@ std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const Run
   j["planned_cases"] = std::max(info.planned_cases, outcomes.size());
   j["interrupted"] = info.interrupted;
   std::map<std::string, int> counts;
-  for (Status s : kAllStatuses)
-    counts[statusName(s)] = 0;
+  for (Status s : kAllStatuses) counts[statusName(s)] = 0;
   j["cases"] = nlohmann::json::array();
   std::vector<std::string> case_errors, failing;
   for (const CaseOutcome& o : outcomes) {
@@ -90,7 +105,7 @@ std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const Run
   }
   j["fails_run"] = failing;  // the cases that make the run fail (baseline applied)
   j["counts"] = counts;
-  j["case_errors"] = case_errors;  // cases at fault themselves, not the device
+  j["case_errors"] = case_errors;     // cases at fault themselves, not the device
   j["cost"] = runCostJson(outcomes);  // where the run's time went (report/case_cost.h)
   std::ofstream out(path);
   out << j.dump(1) << '\n';
@@ -100,8 +115,10 @@ std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const Run
 std::string runCompleteness(const std::vector<CaseOutcome>& outcomes, const RunInfo& info) {
   const size_t planned = std::max(info.planned_cases, outcomes.size());
   if (info.interrupted)
-    return "INTERRUPTED: " + std::to_string(outcomes.size()) + " of " + std::to_string(planned) + " planned cases ran";
-  return "complete: " + std::to_string(outcomes.size()) + " of " + std::to_string(planned) + " cases";
+    return "INTERRUPTED: " + std::to_string(outcomes.size()) + " of " + std::to_string(planned) +
+           " planned cases ran";
+  return "complete: " + std::to_string(outcomes.size()) + " of " + std::to_string(planned) +
+         " cases";
 }
 
 namespace {
@@ -111,8 +128,8 @@ void caseText(std::ostream& out, const CaseOutcome& o) {
   for (const Finding& f : o.verdict.findings)
     out << "    [" << statusName(f.status) << "] " << f.rule << ": " << f.message << '\n';
   for (const UndefinedRays& u : o.verdict.undefined) {
-    out << "    undefined (R-UB, not judged): " << undefinedReasonName(u.reason) << ", " << u.ray_count
-        << " rays; first:";
+    out << "    undefined (R-UB, not judged): " << undefinedReasonName(u.reason) << ", "
+        << u.ray_count << " rays; first:";
     for (uint32_t r : u.rays) out << ' ' << r;
     out << "; " << u.what << '\n';
   }
@@ -120,7 +137,8 @@ void caseText(std::ostream& out, const CaseOutcome& o) {
 
 }  // namespace
 
-std::string writeSummaryText(const std::vector<CaseOutcome>& outcomes, const RunInfo& info, const std::string& path) {
+std::string writeSummaryText(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
+                             const std::string& path) {
   std::ofstream out(path);
   out << runCompleteness(outcomes, info) << '\n';
   for (const CaseOutcome& o : outcomes)
@@ -136,15 +154,17 @@ std::string writeSummaryText(const std::vector<CaseOutcome>& outcomes, const Run
   return out ? std::string() : "cannot write " + path;
 }
 
-std::string writeReports(const std::vector<CaseOutcome>& outcomes, const RunInfo& info, const std::string& dir) {
+std::string writeReports(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
+                         const std::string& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) return "cannot create " + dir + ": " + ec.message();
-  for (const std::string& err :
-       {writeResultsCsv(outcomes, dir + "/results.csv"), writeJunitXml(outcomes, dir + "/junit.xml"),
-        writeSummaryJson(outcomes, info, dir + "/summary.json"), writeSummaryText(outcomes, info, dir + "/summary.txt"),
-        writeFailuresCsv(outcomes, info.baseline, dir + "/failures.csv"),
-        writeReportHtml(outcomes, info, dir + "/report.html")})
+  for (const std::string& err : {writeResultsCsv(outcomes, dir + "/results.csv"),
+                                 writeJunitXml(outcomes, dir + "/junit.xml"),
+                                 writeSummaryJson(outcomes, info, dir + "/summary.json"),
+                                 writeSummaryText(outcomes, info, dir + "/summary.txt"),
+                                 writeFailuresCsv(outcomes, info.baseline, dir + "/failures.csv"),
+                                 writeReportHtml(outcomes, info, dir + "/report.html")})
     if (!err.empty()) return err;
   return {};
 }

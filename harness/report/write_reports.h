@@ -27,7 +27,7 @@ namespace rayspec {
 struct RunInfo {
   std::string device, model_tier, started;
   std::string baseline;  // the baseline file the run was judged by ("" none)
-  std::string icd;  // the driver manifest the device came from ("" when unknown)
+  std::string icd;       // the driver manifest the device came from ("" when unknown)
   bool validation = false;
   size_t planned_cases = 0;  // cases the run set out to run (0: as many as it has outcomes)
   // Not every planned case ran: the run is still going, was stopped by a
@@ -44,13 +44,17 @@ const char* deqpStatusName(Status s);
 
 std::string writeResultsCsv(const std::vector<CaseOutcome>& outcomes, const std::string& path);
 std::string writeJunitXml(const std::vector<CaseOutcome>& outcomes, const std::string& path);
-std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const RunInfo& info, const std::string& path);
-std::string writeSummaryText(const std::vector<CaseOutcome>& outcomes, const RunInfo& info, const std::string& path);
+std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
+                             const std::string& path);
+std::string writeSummaryText(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
+                             const std::string& path);
 // "complete: 12 of 12 cases" or "INTERRUPTED: 3 of 12 planned cases ran".
 std::string runCompleteness(const std::vector<CaseOutcome>& outcomes, const RunInfo& info);
-std::string writeReportHtml(const std::vector<CaseOutcome>& outcomes, const RunInfo& info, const std::string& path);
+std::string writeReportHtml(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
+                            const std::string& path);
 
 // All of the above into dir; returns the first error.
-std::string writeReports(const std::vector<CaseOutcome>& outcomes, const RunInfo& info, const std::string& dir);
+std::string writeReports(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
+                         const std::string& dir);
 
 }  // namespace rayspec

@@ -14,7 +14,9 @@ inline constexpr uint64_t kContentHashSeed = 0xcbf29ce484222325ull;
 
 // Continues `h` over n bytes.
 uint64_t contentHash(uint64_t h, const void* data, size_t n);
-inline uint64_t contentHash(std::string_view text) { return contentHash(kContentHashSeed, text.data(), text.size()); }
+inline uint64_t contentHash(std::string_view text) {
+  return contentHash(kContentHashSeed, text.data(), text.size());
+}
 
 // 16 lowercase hex digits.
 std::string contentHashText(uint64_t h);

@@ -8,15 +8,17 @@ namespace rayspec {
 std::string fileNameProblem(const std::string& name) {
   if (name.empty()) return "is empty";
   if (name.size() > kMaxFileName)
-    return "is " + std::to_string(name.size()) + " bytes long (at most " + std::to_string(kMaxFileName) + ")";
+    return "is " + std::to_string(name.size()) + " bytes long (at most " +
+           std::to_string(kMaxFileName) + ")";
   if (name == "." || name == "..") return "may not be '" + name + "'";
   const auto bad = std::find_if(name.begin(), name.end(), [](char ch) {
-    return !((ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '-' ||
-             ch == '_' || ch == '.');
+    return !((ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') ||
+             ch == '-' || ch == '_' || ch == '.');
   });
   if (bad == name.end()) return {};
   const unsigned char ch = static_cast<unsigned char>(*bad);
-  const std::string shown = ch >= 0x21 && ch < 0x7F ? std::string("'") + *bad + "'" : "byte " + std::to_string(ch);
+  const std::string shown =
+      ch >= 0x21 && ch < 0x7F ? std::string("'") + *bad + "'" : "byte " + std::to_string(ch);
   return "holds " + shown + " (only letters, digits, '-', '_' and '.')";
 }
 
@@ -31,7 +33,8 @@ std::string caseNameProblem(const std::string& name) {
   size_t start = 0;
   for (int part = 1;; ++part) {
     const size_t slash = name.find('/', start);
-    const std::string p = name.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
+    const std::string p =
+        name.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
     if (const std::string problem = fileNameProblem(p); !problem.empty())
       return "part " + std::to_string(part) + " ('" + p.substr(0, 40) + "') " + problem;
     if (slash == std::string::npos) return {};

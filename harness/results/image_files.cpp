@@ -1,7 +1,7 @@
 #include "results/image_files.h"
 
-#include <bit>
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <filesystem>
 
@@ -22,7 +22,8 @@ std::string writeOne(const std::string& path, OIIO::ImageSpec spec, const void* 
   spec.attribute("DateTime", "");
   auto out = OIIO::ImageOutput::create(path);
   if (!out) return "OpenImageIO cannot create " + path + ": " + OIIO::geterror();
-  if (!out->open(path, spec) || !out->write_image(spec.format, pixels)) return path + ": " + out->geterror();
+  if (!out->open(path, spec) || !out->write_image(spec.format, pixels))
+    return path + ": " + out->geterror();
   out->close();
   return {};
 }
@@ -31,11 +32,12 @@ std::string writeOne(const std::string& path, OIIO::ImageSpec spec, const void* 
 
 std::string writeImageFiles(const Image& im, const std::string& dir) {
   const std::vector<uint8_t> preview = previewPixels(im);
-  OIIO::ImageSpec png(static_cast<int>(im.width), static_cast<int>(im.height), 4, OIIO::TypeDesc::UINT8);
+  OIIO::ImageSpec png(static_cast<int>(im.width), static_cast<int>(im.height), 4,
+                      OIIO::TypeDesc::UINT8);
   std::string err = writeOne(dir + "/" + im.name + ".png", png, preview.data());
   if (!err.empty() || !im.is_float) return err;
-  OIIO::ImageSpec exr(static_cast<int>(im.width), static_cast<int>(im.height), static_cast<int>(im.channels),
-                      OIIO::TypeDesc::FLOAT);
+  OIIO::ImageSpec exr(static_cast<int>(im.width), static_cast<int>(im.height),
+                      static_cast<int>(im.channels), OIIO::TypeDesc::FLOAT);
   return writeOne(dir + "/" + im.name + ".exr", exr, im.texels.data());
 }
 
@@ -64,17 +66,26 @@ std::string writeDiffImage(const Image& a, const Image& b, const std::string& di
   }
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  OIIO::ImageSpec png(static_cast<int>(a.width), static_cast<int>(a.height), 4, OIIO::TypeDesc::UINT8);
+  OIIO::ImageSpec png(static_cast<int>(a.width), static_cast<int>(a.height), 4,
+                      OIIO::TypeDesc::UINT8);
   return writeOne(dir + "/" + a.name + ".png", png, px.data());
 }
 
-bool imageFilesSupported() { return true; }
+bool imageFilesSupported() {
+  return true;
+}
 
 #else
 
-std::string writeImageFiles(const Image&, const std::string&) { return {}; }
-std::string writeDiffImage(const Image&, const Image&, const std::string&) { return {}; }
-bool imageFilesSupported() { return false; }
+std::string writeImageFiles(const Image&, const std::string&) {
+  return {};
+}
+std::string writeDiffImage(const Image&, const Image&, const std::string&) {
+  return {};
+}
+bool imageFilesSupported() {
+  return false;
+}
 
 #endif
 

@@ -4,7 +4,12 @@ namespace rayspec {
 namespace {
 
 std::vector<RecordField> buildFields() {
-  struct Decl { const char* name; FieldType type; uint32_t words; bool automatic; };
+  struct Decl {
+    const char* name;
+    FieldType type;
+    uint32_t words;
+    bool automatic;
+  };
   const Decl decls[] = {
       {"hit", FieldType::Uint, 1, false},
       {"instance_id", FieldType::Uint, 1, false},
@@ -38,7 +43,8 @@ std::vector<RecordField> buildFields() {
   std::vector<RecordField> fields;
   uint32_t offset = kRecordWrittenMaskWord + 1;
   for (const Decl& d : decls) {
-    fields.push_back({d.name, d.type, d.words, offset, d.automatic, static_cast<uint32_t>(fields.size())});
+    fields.push_back(
+        {d.name, d.type, d.words, offset, d.automatic, static_cast<uint32_t>(fields.size())});
     offset += d.words;
   }
   return fields;
@@ -64,7 +70,8 @@ int recordFieldIndex(std::string_view name) {
 
 bool traversalDependent(const RecordField& f) {
   const std::string n = f.name;
-  return n == "any_hit_runs" || n == "intersection_runs" || n == "any_hit_slots" || n == "any_hit_repeats";
+  return n == "any_hit_runs" || n == "intersection_runs" || n == "any_hit_slots" ||
+         n == "any_hit_repeats";
 }
 
 uint32_t recordWords() {

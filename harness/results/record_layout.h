@@ -13,12 +13,12 @@ namespace rayspec {
 enum class FieldType { Uint, Float };
 
 struct RecordField {
-  const char* name;   // as written in cases: record: {hit_t: ...}
+  const char* name;  // as written in cases: record: {hit_t: ...}
   FieldType type;
-  uint32_t words;     // 1..4 components
-  uint32_t offset;    // word offset inside one record
-  bool automatic;     // maintained by the harness, never written by `record`
-  uint32_t index;     // position in recordFields(): the field's bit in the written mask
+  uint32_t words;   // 1..4 components
+  uint32_t offset;  // word offset inside one record
+  bool automatic;   // maintained by the harness, never written by `record`
+  uint32_t index;   // position in recordFields(): the field's bit in the written mask
 };
 
 // Word 0: bit mask of the recordable fields written (bit = field index).
@@ -38,7 +38,8 @@ uint32_t recordWords();  // words per ray
 // set when any-hit ran on a primitive whose bit was already set.
 constexpr uint32_t kAnyHitSlotInstanceFactor = 13, kAnyHitSlotGeometryFactor = 5;
 constexpr uint32_t anyHitSlot(uint32_t instance, uint32_t geometry, uint32_t primitive) {
-  return (instance * kAnyHitSlotInstanceFactor + geometry * kAnyHitSlotGeometryFactor + primitive) & 31u;
+  return (instance * kAnyHitSlotInstanceFactor + geometry * kAnyHitSlotGeometryFactor + primitive) &
+         31u;
 }
 
 // An automatic field whose value depends on traversal order and duplicate

@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <string>
 #include <type_traits>
 #include <utility>
-#include <string>
 #include <vector>
 
 #include "results/step_cost.h"
@@ -47,10 +47,10 @@ using BulkWords = std::vector<uint32_t, DefaultInitAllocator<uint32_t>>;
 
 struct Image {
   std::string name;
-  std::string field;        // record field it shows
+  std::string field;  // record field it shows
   uint32_t width = 0, height = 0, channels = 1;
-  bool is_float = false;    // rgba32f (channels 4) or r32ui (channels 1)
-  BulkWords texels;  // width*height*channels words (float bits when is_float)
+  bool is_float = false;  // rgba32f (channels 4) or r32ui (channels 1)
+  BulkWords texels;       // width*height*channels words (float bits when is_float)
 };
 
 // How one execution (device or model) ended. The detail says why.
@@ -79,19 +79,19 @@ bool parseAmbiguityReason(const std::string& name, AmbiguityReason* out);
 const char* ruleForAmbiguity(AmbiguityReason r);
 
 struct UndefinedRay {
-  uint32_t ray = 0;          // launch index y * width + x
+  uint32_t ray = 0;  // launch index y * width + x
   UndefinedReason reason = UndefinedReason::RayParameters;
-  std::string what;          // names the case field, e.g. "pipeline.raygen: call index 5, 2 callables"
+  std::string what;  // names the case field, e.g. "pipeline.raygen: call index 5, 2 callables"
 };
 
 // A ray the model's exact tier found numerically ambiguous, with the answers
 // the specification allows for it.
 struct Candidate {
-  bool hit = false;          // false: a miss is a legal answer
+  bool hit = false;  // false: a miss is a legal answer
   uint32_t instance = 0, geometry = 0, primitive = 0;
 };
 struct RayAmbiguity {
-  uint32_t ray = 0;          // launch index y * width + x
+  uint32_t ray = 0;  // launch index y * width + x
   AmbiguityReason reason = AmbiguityReason::Edge;
   std::vector<Candidate> candidates;
   // edge / vertex: the triangles the model found within the error bound of
@@ -118,8 +118,8 @@ struct Results {
   }
 
   std::string case_name;
-  std::string backend;      // "vulkan" or "model"
-  std::string device;       // Vulkan device name, or "embree-<tier>"
+  std::string backend;  // "vulkan" or "model"
+  std::string device;   // Vulkan device name, or "embree-<tier>"
   RunStatus status = RunStatus::Ok;
   std::string status_detail;  // why, when status is not Ok
   uint32_t width = 0, height = 0;
@@ -128,12 +128,14 @@ struct Results {
   std::vector<Image> images;
   std::vector<RayAmbiguity> ambiguous;  // model, exact tier: rays that are not clear
   std::vector<TBound> t_bounds;         // model, exact tier: clear rays with a wider t bound
-  std::vector<UndefinedRay> undefined;  // model: rays whose behaviour is undefined (R-UB), one per ray
+  std::vector<UndefinedRay>
+      undefined;  // model: rays whose behaviour is undefined (R-UB), one per ray
   std::vector<std::string> validation_messages;  // validation-layer errors (device)
-  double seconds = 0.0;     // wall time of the execution (setup + trace + read-back)
-  StepCosts cost;           // what each step of this side took (results/step_cost.h)
-  std::string case_file;    // path of the case's YAML file (`rayspec compare` re-parses it)
-  uint64_t case_hash = 0;   // Case::source_hash of the case run: a saved bundle judged later must match it
+  double seconds = 0.0;   // wall time of the execution (setup + trace + read-back)
+  StepCosts cost;         // what each step of this side took (results/step_cost.h)
+  std::string case_file;  // path of the case's YAML file (`rayspec compare` re-parses it)
+  uint64_t case_hash =
+      0;  // Case::source_hash of the case run: a saved bundle judged later must match it
 };
 
 // What a trace produced is the same: counters, records and image texels

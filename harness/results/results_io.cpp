@@ -1,9 +1,9 @@
 #include "results/results_io.h"
 
+#include <algorithm>
 #include <bit>
 #include <charconv>
 #include <chrono>
-#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -25,21 +25,23 @@ namespace {
 template <typename Words>  // std::vector<uint32_t> or BulkWords
 bool writeWords(const fs::path& path, const Words& words) {
   std::ofstream out(path, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(words.data()), static_cast<std::streamsize>(words.size() * 4));
+  out.write(reinterpret_cast<const char*>(words.data()),
+            static_cast<std::streamsize>(words.size() * 4));
   return static_cast<bool>(out);
 }
 
 // Reads path as whole words after checking that it holds `expected` words
 // (or none, when empty_ok); the error names the file, its size and the size
 // results.json implies.
-std::string readSizedWords(const fs::path& path, uint64_t expected, bool empty_ok, const std::string& implied,
-                           BulkWords& words) {
+std::string readSizedWords(const fs::path& path, uint64_t expected, bool empty_ok,
+                           const std::string& implied, BulkWords& words) {
   std::error_code ec;
   const uint64_t bytes = fs::file_size(path, ec);
   if (ec) return "cannot read " + path.string();
   if (bytes != expected * 4 && !(empty_ok && bytes == 0))
-    return path.string() + " holds " + std::to_string(bytes) + " bytes; results.json says " + implied + " = " +
-           std::to_string(expected) + " words (" + std::to_string(expected * 4) + " bytes)";
+    return path.string() + " holds " + std::to_string(bytes) + " bytes; results.json says " +
+           implied + " = " + std::to_string(expected) + " words (" + std::to_string(expected * 4) +
+           " bytes)";
   std::ifstream in(path, std::ios::binary);
   words.resize(bytes / 4);
   in.read(reinterpret_cast<char*>(words.data()), static_cast<std::streamsize>(bytes));
@@ -49,7 +51,8 @@ std::string readSizedWords(const fs::path& path, uint64_t expected, bool empty_o
 // A count from results.json that sizes a file: at most 2^30 (a 4 GiB file).
 uint64_t sizeField(const json& value, const char* key) {
   const uint64_t v = value.get<uint64_t>();
-  if (v > (1u << 30)) throw std::runtime_error(std::string(key) + ": " + std::to_string(v) + " is too large");
+  if (v > (1u << 30))
+    throw std::runtime_error(std::string(key) + ": " + std::to_string(v) + " is too large");
   return v;
 }
 
@@ -74,14 +77,16 @@ bool fieldWritten(const RecordField& f, int index, const uint32_t* rec) {
 
 }  // namespace
 
-std::string writeRecordsCsv(const Results& r, const std::string& path, const std::vector<std::string>& kept) {
+std::string writeRecordsCsv(const Results& r, const std::string& path,
+                            const std::vector<std::string>& kept) {
   struct Column {
     const RecordField* field;
     int index;
   };
   std::vector<Column> columns;
   for (const auto& name : kept)
-    if (const RecordField* f = findRecordField(name)) columns.push_back({f, recordFieldIndex(name)});
+    if (const RecordField* f = findRecordField(name))
+      columns.push_back({f, recordFieldIndex(name)});
   for (const RecordField& f : recordFields())
     if (f.automatic) columns.push_back({&f, -1});
   std::ofstream out(path, std::ios::binary);
@@ -115,8 +120,8 @@ std::string writeResults(const Results& r, const std::string& dir_name,
   return writeResults(r, dir_name, kept_fields, BundleFiles{});
 }
 
-std::string writeResults(const Results& r, const std::string& dir_name, const std::vector<std::string>& kept_fields,
-                         const BundleFiles& files) {
+std::string writeResults(const Results& r, const std::string& dir_name,
+                         const std::vector<std::string>& kept_fields, const BundleFiles& files) {
   const auto start = std::chrono::steady_clock::now();
   const fs::path dir(dir_name);
   std::error_code ec;
@@ -139,8 +144,12 @@ std::string writeResults(const Results& r, const std::string& dir_name, const st
   j["validation_messages"] = r.validation_messages;
   j["images"] = json::array();
   for (const Image& im : r.images) {
-    j["images"].push_back({{"name", im.name}, {"field", im.field}, {"width", im.width},
-                           {"height", im.height}, {"channels", im.channels}, {"float", im.is_float}});
+    j["images"].push_back({{"name", im.name},
+                           {"field", im.field},
+                           {"width", im.width},
+                           {"height", im.height},
+                           {"channels", im.channels},
+                           {"float", im.is_float}});
     if (!writeWords(dir / (im.name + ".raw"), im.texels)) return "cannot write image " + im.name;
     if (!files.image_files) continue;
     const std::string err = writeImageFiles(im, dir.string());
@@ -150,28 +159,160 @@ std::string writeResults(const Results& r, const std::string& dir_name, const st
   for (const RayAmbiguity& a : r.ambiguous) {
     json cands = json::array();
     for (const Candidate& c : a.candidates)
-      cands.push_back({{"hit", c.hit}, {"instance", c.instance}, {"geometry", c.geometry}, {"primitive", c.primitive}});
+      cands.push_back({{"hit", c.hit},
+                       {"instance", c.instance},
+                       {"geometry", c.geometry},
+                       {"primitive", c.primitive}});
     json shared = json::array();
     for (const Candidate& c : a.shared_triangles)
-      shared.push_back({{"hit", c.hit}, {"instance", c.instance}, {"geometry", c.geometry}, {"primitive", c.primitive}});
-    j["ambiguous"].push_back(
-        {{"ray", a.ray}, {"reason", ambiguityReasonName(a.reason)}, {"candidates", cands}, {"shared_triangles", shared}});
+      shared.push_back({{"hit", c.hit},
+                        {"instance", c.instance},
+                        {"geometry", c.geometry},
+                        {"primitive", c.primitive}});
+    j["ambiguous"].push_back({{"ray", a.ray},
+                              {"reason", ambiguityReasonName(a.reason)},
+                              {"candidates", cands},
+                              {"shared_triangles", shared}});
   }
   j["t_bounds"] = json::array();
   for (const TBound& b : r.t_bounds) j["t_bounds"].push_back({{"ray", b.ray}, {"bound", b.bound}});
   j["undefined"] = json::array();
   for (const UndefinedRay& u : r.undefined)
-    j["undefined"].push_back({{"ray", u.ray}, {"reason", undefinedReasonName(u.reason)}, {"what", u.what}});
-  if (!writeWords(dir / "records.bin", r.records)) return "cannot write records.bin in " + dir.string();
+    j["undefined"].push_back(
+        {{"ray", u.ray}, {"reason", undefinedReasonName(u.reason)}, {"what", u.what}});
+  if (!writeWords(dir / "records.bin", r.records))
+    return "cannot write records.bin in " + dir.string();
   if (files.records_csv)
-    if (std::string err = writeRecordsCsv(r, (dir / "records.csv").string(), kept_fields); !err.empty()) return err;
+    if (std::string err = writeRecordsCsv(r, (dir / "records.csv").string(), kept_fields);
+        !err.empty())
+      return err;
   // results.json last, with the time of writing the rest of the bundle.
   StepCosts cost = r.cost;
-  cost.add(CostStep::WriteBundle, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  cost.add(CostStep::WriteBundle,
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   j["cost"] = costJson(cost);
   std::ofstream(dir / "results.json") << j.dump(1) << '\n';
   return {};
 }
+
+namespace {
+
+// Reads the fields of results.json by dotted path, remembering the last one
+// for the message when its value has the wrong type.
+struct FieldReader {
+  std::string where;
+  const json& operator()(const json& object, const std::string& path) {
+    where = path;
+    return object.at(path.substr(path.rfind('.') + 1));
+  }
+};
+
+// The bundle's own fields: case, backend, device, status, size, costs,
+// counters and validation messages. Throws on a bad value.
+void readHeader(const json& j, FieldReader& field, Results& r) {
+  r.case_name = field(j, "case");
+  if (const std::string problem = caseNameProblem(r.case_name); !problem.empty())
+    throw std::runtime_error("case: '" + r.case_name.substr(0, 120) +
+                             "' is no case name: " + problem);
+  r.backend = field(j, "backend");
+  r.device = field(j, "device");
+  if (!parseRunStatus(field(j, "status").get<std::string>(), &r.status))
+    throw std::runtime_error("status: unknown value '" + field(j, "status").get<std::string>() +
+                             "'");
+  r.status_detail = j.value("status_detail", std::string());
+  r.width = static_cast<uint32_t>(sizeField(field(j, "width"), "width"));
+  r.height = static_cast<uint32_t>(sizeField(field(j, "height"), "height"));
+  r.seconds = field(j, "seconds");
+  if (j.contains("cost")) r.cost = costFromJson(field(j, "cost"));
+  r.case_file = j.value("case_file", std::string());
+  if (j.contains("case_hash"))
+    r.case_hash = std::stoull(field(j, "case_hash").get<std::string>(), nullptr, 16);
+  r.counters = field(j, "counters").get<std::map<std::string, uint64_t>>();
+  r.validation_messages = field(j, "validation_messages").get<std::vector<std::string>>();
+}
+
+// The images and their NAME.raw texels; the message of the first that does
+// not read, or "". Throws on a bad value.
+std::string readImages(const json& j, FieldReader& field, const fs::path& dir, Results& r) {
+  for (const json& ji : field(j, "images")) {
+    Image im;
+    im.name = field(ji, "images.name");
+    if (const std::string problem = fileNameProblem(im.name); !problem.empty())
+      throw std::runtime_error("images: name '" + im.name.substr(0, 120) + "' " + problem);
+    im.field = field(ji, "images.field");
+    im.width = static_cast<uint32_t>(sizeField(field(ji, "images.width"), "images.width"));
+    im.height = static_cast<uint32_t>(sizeField(field(ji, "images.height"), "images.height"));
+    im.channels = static_cast<uint32_t>(sizeField(field(ji, "images.channels"), "images.channels"));
+    im.is_float = field(ji, "images.float");
+    const std::string implied = "image " + im.name + ": width x height x channels " +
+                                std::to_string(im.width) + " x " + std::to_string(im.height) +
+                                " x " + std::to_string(im.channels);
+    const uint64_t words = uint64_t(im.width) * im.height * im.channels;
+    if (std::string e = readSizedWords(dir / (im.name + ".raw"), words, false, implied, im.texels);
+        !e.empty())
+      return e;
+    r.images.push_back(std::move(im));
+  }
+  return {};
+}
+
+// The rays the model bounded, found undefined, or found ambiguous. Throws on
+// a bad value.
+void readRayNotes(const json& j, FieldReader& field, Results& r) {
+  if (j.contains("t_bounds"))
+    for (const json& jb : field(j, "t_bounds"))
+      r.t_bounds.push_back({field(jb, "t_bounds.ray"), field(jb, "t_bounds.bound")});
+  if (j.contains("undefined"))
+    for (const json& ju : field(j, "undefined")) {
+      UndefinedRay u;
+      u.ray = field(ju, "undefined.ray");
+      if (!parseUndefinedReason(field(ju, "undefined.reason").get<std::string>(), &u.reason))
+        throw std::runtime_error("undefined.reason: unknown value '" +
+                                 field(ju, "undefined.reason").get<std::string>() + "'");
+      u.what = field(ju, "undefined.what");
+      r.undefined.push_back(std::move(u));
+    }
+  for (const json& ja : field(j, "ambiguous")) {
+    RayAmbiguity a;
+    a.ray = field(ja, "ambiguous.ray");
+    if (!parseAmbiguityReason(field(ja, "ambiguous.reason").get<std::string>(), &a.reason))
+      throw std::runtime_error("ambiguous.reason: unknown value '" +
+                               field(ja, "ambiguous.reason").get<std::string>() + "'");
+    for (const json& jc : field(ja, "ambiguous.candidates"))
+      a.candidates.push_back({field(jc, "ambiguous.candidates.hit"),
+                              field(jc, "ambiguous.candidates.instance"),
+                              field(jc, "ambiguous.candidates.geometry"),
+                              field(jc, "ambiguous.candidates.primitive")});
+    if (ja.contains("shared_triangles"))
+      for (const json& js : field(ja, "ambiguous.shared_triangles"))
+        a.shared_triangles.push_back({js.value("hit", true),
+                                      field(js, "ambiguous.shared_triangles.instance"),
+                                      field(js, "ambiguous.shared_triangles.geometry"),
+                                      field(js, "ambiguous.shared_triangles.primitive")});
+    r.ambiguous.push_back(std::move(a));
+  }
+}
+
+// results.json into r; the message, naming the file and field, or "".
+std::string readResultsJson(std::istream& in, const fs::path& dir, Results& r) {
+  FieldReader field;
+  try {
+    const json j = json::parse(in);
+    readHeader(j, field, r);
+    if (field(j, "record_words").get<uint32_t>() != recordWords())
+      return dir.string() + ": record layout differs from this build";
+    if (std::string e = readImages(j, field, dir, r); !e.empty()) return e;
+    readRayNotes(j, field, r);
+  } catch (const nlohmann::json::exception& e) {
+    return (dir / "results.json").string() +
+           (field.where.empty() ? "" : ": field '" + field.where + "'") + ": " + e.what();
+  } catch (const std::exception& e) {
+    return (dir / "results.json").string() + ": " + e.what();
+  }
+  return {};
+}
+
+}  // namespace
 
 Results readResults(const std::string& dir_name, std::string* error) {
   Results r;
@@ -181,89 +322,12 @@ Results readResults(const std::string& dir_name, std::string* error) {
     *error = "no results.json in " + dir.string();
     return r;
   }
-  json j;
-  // The field being read, for the message when its value has the wrong type.
-  std::string where;
-  const auto field = [&where](const json& object, const std::string& path) -> const json& {
-    where = path;
-    return object.at(path.substr(path.rfind('.') + 1));
-  };
-  try {
-    j = json::parse(in);
-    r.case_name = field(j, "case");
-    if (const std::string problem = caseNameProblem(r.case_name); !problem.empty())
-      throw std::runtime_error("case: '" + r.case_name.substr(0, 120) + "' is no case name: " + problem);
-    r.backend = field(j, "backend");
-    r.device = field(j, "device");
-    if (!parseRunStatus(field(j, "status").get<std::string>(), &r.status))
-      throw std::runtime_error("status: unknown value '" + field(j, "status").get<std::string>() + "'");
-    r.status_detail = j.value("status_detail", std::string());
-    r.width = static_cast<uint32_t>(sizeField(field(j, "width"), "width"));
-    r.height = static_cast<uint32_t>(sizeField(field(j, "height"), "height"));
-    r.seconds = field(j, "seconds");
-    if (j.contains("cost")) r.cost = costFromJson(field(j, "cost"));
-    r.case_file = j.value("case_file", std::string());
-    if (j.contains("case_hash")) r.case_hash = std::stoull(field(j, "case_hash").get<std::string>(), nullptr, 16);
-    r.counters = field(j, "counters").get<std::map<std::string, uint64_t>>();
-    r.validation_messages = field(j, "validation_messages").get<std::vector<std::string>>();
-    if (field(j, "record_words").get<uint32_t>() != recordWords()) {
-      *error = dir.string() + ": record layout differs from this build";
-      return r;
-    }
-    for (const json& ji : field(j, "images")) {
-      Image im;
-      im.name = field(ji, "images.name");
-      if (const std::string problem = fileNameProblem(im.name); !problem.empty())
-        throw std::runtime_error("images: name '" + im.name.substr(0, 120) + "' " + problem);
-      im.field = field(ji, "images.field");
-      im.width = static_cast<uint32_t>(sizeField(field(ji, "images.width"), "images.width"));
-      im.height = static_cast<uint32_t>(sizeField(field(ji, "images.height"), "images.height"));
-      im.channels = static_cast<uint32_t>(sizeField(field(ji, "images.channels"), "images.channels"));
-      im.is_float = field(ji, "images.float");
-      const std::string implied = "image " + im.name + ": width x height x channels " + std::to_string(im.width) +
-                                  " x " + std::to_string(im.height) + " x " + std::to_string(im.channels);
-      const uint64_t words = uint64_t(im.width) * im.height * im.channels;
-      if (std::string e = readSizedWords(dir / (im.name + ".raw"), words, false, implied, im.texels); !e.empty()) {
-        *error = e;
-        return r;
-      }
-      r.images.push_back(std::move(im));
-    }
-    if (j.contains("t_bounds"))
-      for (const json& jb : field(j, "t_bounds")) r.t_bounds.push_back({field(jb, "t_bounds.ray"), field(jb, "t_bounds.bound")});
-    if (j.contains("undefined"))
-      for (const json& ju : field(j, "undefined")) {
-        UndefinedRay u;
-        u.ray = field(ju, "undefined.ray");
-        if (!parseUndefinedReason(field(ju, "undefined.reason").get<std::string>(), &u.reason))
-          throw std::runtime_error("undefined.reason: unknown value '" + field(ju, "undefined.reason").get<std::string>() + "'");
-        u.what = field(ju, "undefined.what");
-        r.undefined.push_back(std::move(u));
-      }
-    for (const json& ja : field(j, "ambiguous")) {
-      RayAmbiguity a;
-      a.ray = field(ja, "ambiguous.ray");
-      if (!parseAmbiguityReason(field(ja, "ambiguous.reason").get<std::string>(), &a.reason))
-        throw std::runtime_error("ambiguous.reason: unknown value '" + field(ja, "ambiguous.reason").get<std::string>() + "'");
-      for (const json& jc : field(ja, "ambiguous.candidates"))
-        a.candidates.push_back({field(jc, "ambiguous.candidates.hit"), field(jc, "ambiguous.candidates.instance"), field(jc, "ambiguous.candidates.geometry"), field(jc, "ambiguous.candidates.primitive")});
-      if (ja.contains("shared_triangles"))
-        for (const json& js : field(ja, "ambiguous.shared_triangles"))
-          a.shared_triangles.push_back(
-              {js.value("hit", true), field(js, "ambiguous.shared_triangles.instance"), field(js, "ambiguous.shared_triangles.geometry"), field(js, "ambiguous.shared_triangles.primitive")});
-      r.ambiguous.push_back(std::move(a));
-    }
-  } catch (const nlohmann::json::exception& e) {
-    *error = (dir / "results.json").string() + (where.empty() ? "" : ": field '" + where + "'") + ": " + e.what();
-    return r;
-  } catch (const std::exception& e) {
-    *error = (dir / "results.json").string() + ": " + e.what();
-    return r;
-  }
+  if ((*error = readResultsJson(in, dir, r)); !error->empty()) return r;
   // No records at all when the case records nothing per ray (or its side died).
   const std::string implied = "width x height x record words " + std::to_string(r.width) + " x " +
                               std::to_string(r.height) + " x " + std::to_string(recordWords());
-  *error = readSizedWords(dir / "records.bin", uint64_t(r.width) * r.height * recordWords(), true, implied, r.records);
+  *error = readSizedWords(dir / "records.bin", uint64_t(r.width) * r.height * recordWords(), true,
+                          implied, r.records);
   return r;
 }
 

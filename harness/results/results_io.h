@@ -32,11 +32,12 @@ struct BundleFiles {
   bool image_files = true;
   bool records_csv = true;
 };
-std::string writeResults(const Results& r, const std::string& dir, const std::vector<std::string>& kept_fields,
-                         const BundleFiles& files);
+std::string writeResults(const Results& r, const std::string& dir,
+                         const std::vector<std::string>& kept_fields, const BundleFiles& files);
 
 // records.csv alone: x, y, the kept fields where written, the automatic ones.
-std::string writeRecordsCsv(const Results& r, const std::string& path, const std::vector<std::string>& kept_fields);
+std::string writeRecordsCsv(const Results& r, const std::string& path,
+                            const std::vector<std::string>& kept_fields);
 
 // Reads a bundle back; error set on failure.
 Results readResults(const std::string& dir, std::string* error);

@@ -18,18 +18,23 @@ bool parseByName(const std::string& name, E* out, const E (&all)[N], const char*
 
 const char* runStatusName(RunStatus s) {
   switch (s) {
-    case RunStatus::Ok: return "ok";
-    case RunStatus::NotSupported: return "NotSupported";
-    case RunStatus::Crash: return "Crash";
-    case RunStatus::Timeout: return "Timeout";
-    case RunStatus::Refused: return "Refused";
+    case RunStatus::Ok:
+      return "ok";
+    case RunStatus::NotSupported:
+      return "NotSupported";
+    case RunStatus::Crash:
+      return "Crash";
+    case RunStatus::Timeout:
+      return "Timeout";
+    case RunStatus::Refused:
+      return "Refused";
   }
   return "Crash";
 }
 
 bool parseRunStatus(const std::string& name, RunStatus* out) {
-  static const RunStatus all[] = {RunStatus::Ok, RunStatus::NotSupported, RunStatus::Crash, RunStatus::Timeout,
-                                   RunStatus::Refused};
+  static const RunStatus all[] = {RunStatus::Ok, RunStatus::NotSupported, RunStatus::Crash,
+                                  RunStatus::Timeout, RunStatus::Refused};
   return parseByName(name, out, all, runStatusName);
 }
 
@@ -40,58 +45,82 @@ std::string Results::statusText() const {
 
 const char* ambiguityReasonName(AmbiguityReason r) {
   switch (r) {
-    case AmbiguityReason::Edge: return "edge";
-    case AmbiguityReason::Vertex: return "vertex";
-    case AmbiguityReason::TmaxTie: return "tmax-tie";
-    case AmbiguityReason::TminTie: return "tmin-tie";
-    case AmbiguityReason::TTie: return "t-tie";
-    case AmbiguityReason::FirstHit: return "first-hit";
-    case AmbiguityReason::Order: return "order";
-    case AmbiguityReason::AabbFace: return "aabb-face";
-    case AmbiguityReason::ShaderArith: return "shader-arith";
+    case AmbiguityReason::Edge:
+      return "edge";
+    case AmbiguityReason::Vertex:
+      return "vertex";
+    case AmbiguityReason::TmaxTie:
+      return "tmax-tie";
+    case AmbiguityReason::TminTie:
+      return "tmin-tie";
+    case AmbiguityReason::TTie:
+      return "t-tie";
+    case AmbiguityReason::FirstHit:
+      return "first-hit";
+    case AmbiguityReason::Order:
+      return "order";
+    case AmbiguityReason::AabbFace:
+      return "aabb-face";
+    case AmbiguityReason::ShaderArith:
+      return "shader-arith";
   }
   return "edge";
 }
 
 bool parseAmbiguityReason(const std::string& name, AmbiguityReason* out) {
-  static const AmbiguityReason all[] = {AmbiguityReason::Edge,     AmbiguityReason::Vertex,   AmbiguityReason::TmaxTie,
-                                        AmbiguityReason::TminTie,  AmbiguityReason::TTie,     AmbiguityReason::FirstHit,
-                                        AmbiguityReason::Order,    AmbiguityReason::AabbFace, AmbiguityReason::ShaderArith};
+  static const AmbiguityReason all[] = {
+      AmbiguityReason::Edge,    AmbiguityReason::Vertex,   AmbiguityReason::TmaxTie,
+      AmbiguityReason::TminTie, AmbiguityReason::TTie,     AmbiguityReason::FirstHit,
+      AmbiguityReason::Order,   AmbiguityReason::AabbFace, AmbiguityReason::ShaderArith};
   return parseByName(name, out, all, ambiguityReasonName);
 }
 
 const char* ruleForAmbiguity(AmbiguityReason r) {
   switch (r) {
     case AmbiguityReason::Edge:
-    case AmbiguityReason::Vertex: return "R-WATERTIGHT";
+    case AmbiguityReason::Vertex:
+      return "R-WATERTIGHT";
     case AmbiguityReason::TmaxTie:
     case AmbiguityReason::TminTie:
-    case AmbiguityReason::TTie: return "R-TIE";
-    case AmbiguityReason::FirstHit: return "R-TOFH";
-    case AmbiguityReason::Order: return "R-ORDER-UNSPEC";
-    case AmbiguityReason::AabbFace: return "R-AABB-CONS";
-    case AmbiguityReason::ShaderArith: return "R-PREC";
+    case AmbiguityReason::TTie:
+      return "R-TIE";
+    case AmbiguityReason::FirstHit:
+      return "R-TOFH";
+    case AmbiguityReason::Order:
+      return "R-ORDER-UNSPEC";
+    case AmbiguityReason::AabbFace:
+      return "R-AABB-CONS";
+    case AmbiguityReason::ShaderArith:
+      return "R-PREC";
   }
   return "R-PREC";
 }
 
 const char* undefinedReasonName(UndefinedReason r) {
   switch (r) {
-    case UndefinedReason::RayParameters: return "ray-parameters";
-    case UndefinedReason::NanTriangle: return "nan-triangle";
-    case UndefinedReason::HitRecordOutOfRange: return "hit-record-out-of-range";
-    case UndefinedReason::MissRecordOutOfRange: return "miss-record-out-of-range";
-    case UndefinedReason::CallableOutOfRange: return "callable-out-of-range";
-    case UndefinedReason::DivisionByZero: return "division-by-zero";
-    case UndefinedReason::RecursionTooDeep: return "recursion-too-deep";
+    case UndefinedReason::RayParameters:
+      return "ray-parameters";
+    case UndefinedReason::NanTriangle:
+      return "nan-triangle";
+    case UndefinedReason::HitRecordOutOfRange:
+      return "hit-record-out-of-range";
+    case UndefinedReason::MissRecordOutOfRange:
+      return "miss-record-out-of-range";
+    case UndefinedReason::CallableOutOfRange:
+      return "callable-out-of-range";
+    case UndefinedReason::DivisionByZero:
+      return "division-by-zero";
+    case UndefinedReason::RecursionTooDeep:
+      return "recursion-too-deep";
   }
   return "ray-parameters";
 }
 
 bool parseUndefinedReason(const std::string& name, UndefinedReason* out) {
   static const UndefinedReason all[] = {
-      UndefinedReason::RayParameters,        UndefinedReason::NanTriangle,        UndefinedReason::HitRecordOutOfRange,
-      UndefinedReason::MissRecordOutOfRange, UndefinedReason::CallableOutOfRange, UndefinedReason::DivisionByZero,
+      UndefinedReason::RayParameters,       UndefinedReason::NanTriangle,
+      UndefinedReason::HitRecordOutOfRange, UndefinedReason::MissRecordOutOfRange,
+      UndefinedReason::CallableOutOfRange,  UndefinedReason::DivisionByZero,
       UndefinedReason::RecursionTooDeep};
   return parseByName(name, out, all, undefinedReasonName);
 }

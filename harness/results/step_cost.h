@@ -14,32 +14,33 @@ namespace rayspec {
 
 enum class CostStep {
   // the parent
-  Parse,             // reading and parsing the case file (sweep expansion included)
-  Plan,              // deriving the plan
-  Process,           // a child's start and end: the side's wall time less the steps it reported
-  ReadBundle,        // reading a side's results bundle back
-  ImageFiles,        // PNG / EXR files of a side's images
-  Comparison,        // judging the case (compare, verdict, diff images, failing rays)
-  Reports,           // rewriting the run's reports with the case
-  RecordsCsv,        // records.csv of both sides (a case that did not pass, or --records-csv)
+  Parse,       // reading and parsing the case file (sweep expansion included)
+  Plan,        // deriving the plan
+  Process,     // a child's start and end: the side's wall time less the steps it reported
+  ReadBundle,  // reading a side's results bundle back
+  ImageFiles,  // PNG / EXR files of a side's images
+  Comparison,  // judging the case (compare, verdict, diff images, failing rays)
+  Reports,     // rewriting the run's reports with the case
+  RecordsCsv,  // records.csv of both sides (a case that did not pass, or --records-csv)
   // either side, in its process
-  BackendSetup,      // making the backend: Vulkan instance and device (validation layer); nothing much for the model
-  BackendTeardown,   // closing it (device destruction, the layer's last messages)
-  WriteBundle,       // writing the results bundle
+  BackendSetup,  // making the backend: Vulkan instance and device (validation layer); nothing much
+                 // for the model
+  BackendTeardown,  // closing it (device destruction, the layer's last messages)
+  WriteBundle,      // writing the results bundle
   // the device
-  GlslGeneration,    // the stage programs as GLSL
-  SpirvCompile,      // glslang + SPIRV-Tools, SPIR-V cache miss
-  SpirvCacheHit,     // SPIR-V taken from the cache
-  PipelineCreation,  // vkCreateRayTracingPipelinesKHR (shader modules included)
-  Buffers,           // case buffers, descriptor set and layouts
-  AccelerationBuild, // BLAS + TLAS builds, recorded and waited on
-  Sbt,               // group handles and the shader binding table
-  Trace,             // vkCmdTraceRaysKHR, recorded and waited on
-  ReadBack,          // records, counters and images to host memory
-  CaseCleanup,       // waiting for the device and destroying the case's objects
+  GlslGeneration,     // the stage programs as GLSL
+  SpirvCompile,       // glslang + SPIRV-Tools, SPIR-V cache miss
+  SpirvCacheHit,      // SPIR-V taken from the cache
+  PipelineCreation,   // vkCreateRayTracingPipelinesKHR (shader modules included)
+  Buffers,            // case buffers, descriptor set and layouts
+  AccelerationBuild,  // BLAS + TLAS builds, recorded and waited on
+  Sbt,                // group handles and the shader binding table
+  Trace,              // vkCmdTraceRaysKHR, recorded and waited on
+  ReadBack,           // records, counters and images to host memory
+  CaseCleanup,        // waiting for the device and destroying the case's objects
   // the model
-  ModelScene,        // Embree scene and the programs
-  ModelTrace,        // every ray through the model
+  ModelScene,  // Embree scene and the programs
+  ModelTrace,  // every ray through the model
 };
 inline constexpr size_t kCostSteps = static_cast<size_t>(CostStep::ModelTrace) + 1;
 
@@ -74,7 +75,8 @@ struct CaseCost {
 // Adds the wall time from construction to stop() (or destruction) to one step.
 class StepTimer {
  public:
-  StepTimer(StepCosts* costs, CostStep step) : costs_(costs), step_(step), start_(std::chrono::steady_clock::now()) {}
+  StepTimer(StepCosts* costs, CostStep step)
+      : costs_(costs), step_(step), start_(std::chrono::steady_clock::now()) {}
   StepTimer(StepCosts& costs, CostStep step) : StepTimer(&costs, step) {}
   ~StepTimer() { stop(); }
   StepTimer(const StepTimer&) = delete;

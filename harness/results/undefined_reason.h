@@ -8,8 +8,8 @@ namespace rayspec {
 
 // Such rays are never judged; the device only has to survive them.
 enum class UndefinedReason {
-  RayParameters,     // non-finite origin/direction, NaN, tmin < 0, tmax < tmin
-  NanTriangle,       // a candidate triangle has NaN in Y or Z (not X: that one is inactive)
+  RayParameters,  // non-finite origin/direction, NaN, tmin < 0, tmax < tmin
+  NanTriangle,    // a candidate triangle has NaN in Y or Z (not X: that one is inactive)
   HitRecordOutOfRange,
   MissRecordOutOfRange,
   CallableOutOfRange,

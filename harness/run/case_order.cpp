@@ -18,7 +18,9 @@ namespace {
 // A cache file larger than this is not read (it is ours, but every file read is input).
 constexpr std::uintmax_t kMaxCacheBytes = 16u << 20;
 
-std::string cachePath(const std::string& cache_dir) { return cache_dir + "/case-seconds.json"; }
+std::string cachePath(const std::string& cache_dir) {
+  return cache_dir + "/case-seconds.json";
+}
 
 }  // namespace
 
@@ -43,10 +45,12 @@ void saveCaseSeconds(const std::string& cache_dir, const std::map<std::string, d
   std::error_code ec;
   std::filesystem::create_directories(cache_dir, ec);
   const std::string text = nlohmann::json(all).dump(0) + "\n";
-  writeFileWhole(cachePath(cache_dir), text.data(), text.size());  // runs beside this one read it too
+  writeFileWhole(cachePath(cache_dir), text.data(),
+                 text.size());  // runs beside this one read it too
 }
 
-std::vector<size_t> longestFirst(const std::vector<std::string>& names, const std::map<std::string, double>& seconds) {
+std::vector<size_t> longestFirst(const std::vector<std::string>& names,
+                                 const std::map<std::string, double>& seconds) {
   std::vector<double> cost(names.size());
   for (size_t i = 0; i < names.size(); ++i) {
     const auto it = seconds.find(names[i]);
@@ -54,7 +58,8 @@ std::vector<size_t> longestFirst(const std::vector<std::string>& names, const st
   }
   std::vector<size_t> order(names.size());
   std::iota(order.begin(), order.end(), size_t{0});
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return cost[a] > cost[b]; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return cost[a] > cost[b]; });
   return order;
 }
 

@@ -19,6 +19,7 @@ void saveCaseSeconds(const std::string& cache_dir, const std::map<std::string, d
 
 // Positions 0..names.size()-1, longest first; ties (and the untimed) in
 // their own order.
-std::vector<size_t> longestFirst(const std::vector<std::string>& names, const std::map<std::string, double>& seconds);
+std::vector<size_t> longestFirst(const std::vector<std::string>& names,
+                                 const std::map<std::string, double>& seconds);
 
 }  // namespace rayspec

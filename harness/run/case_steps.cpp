@@ -31,17 +31,24 @@ Side modelSide(const RunOptions& opt) {
 
 // The fault planted in this case ("" none).
 std::string faultIn(const RunOptions& opt, const std::string& case_name) {
-  return fnmatch(opt.plant_fault_in.c_str(), case_name.c_str(), 0) == 0 ? opt.plant_fault : std::string();
+  return fnmatch(opt.plant_fault_in.c_str(), case_name.c_str(), 0) == 0 ? opt.plant_fault
+                                                                        : std::string();
 }
 
-Side deviceSide(const RunOptions& opt, std::shared_ptr<const Results> model, const std::string& fault) {
+Side deviceSide(const RunOptions& opt, std::shared_ptr<const Results> model,
+                const std::string& fault) {
   const VulkanOptions vopt = vulkanOptions(opt);
   Side s{"device", "vulkan", [vopt] { return std::make_unique<VulkanAdapter>(vopt); }, {}};
-  if (!opt.device_results.empty())  // a device run saved elsewhere, read back (run/device_results.h)
-    s.make = [dir = opt.device_results] { return std::make_unique<SavedDevice>(dir); };
+  if (!opt.device_results
+           .empty())  // a device run saved elsewhere, read back (run/device_results.h)
+    s.make = [dir = opt.device_results] {
+      return std::make_unique<SavedDevice>(dir);
+    };
   if (const std::optional<InjectedVkError> injected = deviceErrorFault(fault)) {
     // A Vulkan call fails on purpose for this case only.
-    s.before = [e = *injected] { injectVkError(e); };
+    s.before = [e = *injected] {
+      injectVkError(e);
+    };
     s.after = [fault, e = *injected](const Case&, const Plan&, Results&) -> std::string {
       injectVkError({});
       return "planted fault " + fault + ": " + e.call + " returns " + vkResultName(e.result);
@@ -49,17 +56,21 @@ Side deviceSide(const RunOptions& opt, std::shared_ptr<const Results> model, con
     return s;
   }
   if (!fault.empty())
-    s.after = [fault, model, out = opt.out](const Case& c, const Plan& plan, Results& device) -> std::string {
-      raiseProcessFault(fault, c.name, out);  // crash, hang: only in a child (run loop refuses them in process)
+    s.after = [fault, model, out = opt.out](const Case& c, const Plan& plan,
+                                            Results& device) -> std::string {
+      raiseProcessFault(fault, c.name,
+                        out);  // crash, hang: only in a child (run loop refuses them in process)
       if (isProcessFault(fault)) return {};
       const FaultResult f = plantFault(fault, c, plan, device, *model);
-      return (f.applied ? "planted fault " : "planted fault not applicable: ") + fault + ": " + f.what;
+      return (f.applied ? "planted fault " : "planted fault not applicable: ") + fault + ": " +
+             f.what;
     };
   return s;
 }
 
 // An outcome without a comparison: `v` holds why.
-CaseOutcome unjudged(const Case& c, const Plan& plan, const Results& device, const Results& model, Verdict v) {
+CaseOutcome unjudged(const Case& c, const Plan& plan, const Results& device, const Results& model,
+                     Verdict v) {
   CaseOutcome out;
   out.name = c.name;
   out.rules = c.rules;
@@ -70,12 +81,45 @@ CaseOutcome unjudged(const Case& c, const Plan& plan, const Results& device, con
   return out;
 }
 
-bool ended(const Results& r) { return r.status == RunStatus::Crash || r.status == RunStatus::Timeout; }
+// One side only ran: its own status, validation errors included; never more
+// than that. Nothing was compared, so the case did not pass: it was not judged.
+CaseOutcome oneSideOutcome(const Case& c, const Plan& plan, const Results& device,
+                           const Results& model, bool device_ran) {
+  const Results& only = device_ran ? device : model;
+  Verdict v = backendVerdict(only);
+  for (const std::string& m : only.validation_messages)
+    v.add({Status::Fail, "validation", m, {}, 0});
+  v.add(
+      {Status::NotSupported,
+       "no-reference",
+       std::string("only the ") + (device_ran ? "device" : "model") + " ran: nothing was compared",
+       {},
+       0});
+  return unjudged(c, plan, device, model, v);
+}
+
+// The per-ray records as text (records.csv beside each side's bundle), for
+// people looking into the case.
+void writeRecordsCsvFiles(const std::string& dir, const Results& device, const Results& model,
+                          const Plan& plan) {
+  for (const auto& [side, r] : {std::pair{"/device", &device}, std::pair{"/model", &model}})
+    if (std::filesystem::is_directory(dir + side))
+      if (const std::string e =
+              writeRecordsCsv(*r, dir + side + "/records.csv", plan.record_fields);
+          !e.empty())
+        throw HarnessError(e);
+}
+
+bool ended(const Results& r) {
+  return r.status == RunStatus::Crash || r.status == RunStatus::Timeout;
+}
 
 }  // namespace
 
 SideFor modelSideFor(const RunOptions& opt) {
-  return [opt](const Case&, const std::string&) { return modelSide(opt); };
+  return [opt](const Case&, const std::string&) {
+    return modelSide(opt);
+  };
 }
 
 SideFor deviceSideFor(const RunOptions& opt) {
@@ -93,8 +137,8 @@ SideFor deviceSideFor(const RunOptions& opt) {
   };
 }
 
-CaseOutcome caseErrorOutcome(const std::string& name, const std::vector<std::string>& rules, const std::string& rule,
-                             const std::string& message) {
+CaseOutcome caseErrorOutcome(const std::string& name, const std::vector<std::string>& rules,
+                             const std::string& rule, const std::string& message) {
   CaseOutcome out;
   out.name = name;
   out.rules = rules;
@@ -105,11 +149,12 @@ CaseOutcome caseErrorOutcome(const std::string& name, const std::vector<std::str
 
 std::optional<CaseOutcome> caseFileError(const CaseFile& file, const ParseResult& parsed) {
   std::string message;
-  for (const CaseError& e : parsed.errors) message += (message.empty() ? "" : "\n  ") + e.format();
+  for (const Error& e : parsed.errors) message += (message.empty() ? "" : "\n  ") + e.format();
   if (parsed.value && message.empty()) return std::nullopt;
   if (message.empty()) message = file.path + ": cannot read the case file";
-  return caseErrorOutcome(file.name, parsed.value ? parsed.value->rules : std::vector<std::string>{}, "case-file",
-                          message);
+  return caseErrorOutcome(file.name,
+                          parsed.value ? parsed.value->rules : std::vector<std::string>{},
+                          "case-file", message);
 }
 
 CaseOutcome guardCase(const std::string& name, const std::vector<std::string>& rules,
@@ -117,7 +162,8 @@ CaseOutcome guardCase(const std::string& name, const std::vector<std::string>& r
   try {
     return step();
   } catch (const std::exception& e) {
-    return caseErrorOutcome(name, rules, "harness", std::string("the harness failed on this case: ") + e.what());
+    return caseErrorOutcome(name, rules, "harness",
+                            std::string("the harness failed on this case: ") + e.what());
   }
 }
 
@@ -129,8 +175,9 @@ CaseRunner::CaseRunner(const RunOptions& options, Backend* device, Backend* mode
   }
 }
 
-SideResult CaseRunner::runSide(const std::function<Side()>& side, Backend* in_process, SideWorker* worker,
-                               const CaseSlot* slot, const Case& c, const Plan& plan, const std::string& dir) const {
+SideResult CaseRunner::runSide(const std::function<Side()>& side, Backend* in_process,
+                               SideWorker* worker, const CaseSlot* slot, const Case& c,
+                               const Plan& plan, const std::string& dir) const {
   if (in_process) return runInProcess(side(), *in_process, c, plan, dir);
   if (worker) return worker->run(slot->index, plan, dir);
   return runIsolated(side(), c, plan, ChildLimits{opt_.timeout, opt_.memory_limit}, dir);
@@ -155,14 +202,18 @@ CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string&
   Results device, model;
   const bool want_device = !opt_.no_device, want_model = !opt_.no_model;
   if (want_model) {
-    SideResult m = runSide([&] { return modelSide(opt_); }, model_, slot ? slot->model : nullptr, slot, c, plan,
-                           dir + "/model");
+    SideResult m = runSide([&] { return modelSide(opt_); }, model_, slot ? slot->model : nullptr,
+                           slot, c, plan, dir + "/model");
     if ((*interrupted = m.interrupted)) return {};
     model = std::move(m.results);
     if (ended(model)) {
       // The model crashed or hung: nothing to judge the device by.
       Verdict v = backendVerdict(model);
-      v.add({Status::NotSupported, "no-reference", "the device side did not run: the model gave no reference", {}, 0});
+      v.add({Status::NotSupported,
+             "no-reference",
+             "the device side did not run: the model gave no reference",
+             {},
+             0});
       CaseOutcome out = unjudged(c, plan, device, model, v);
       out.deriveFromVerdict();
       return costed(std::move(out), device, model);
@@ -170,8 +221,11 @@ CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string&
   }
   std::string fault_note;
   if (want_device) {
-    const auto side = [&] { return deviceSide(opt_, std::make_shared<Results>(model), faultIn(opt_, c.name)); };
-    SideResult d = runSide(side, device_, slot ? slot->device : nullptr, slot, c, plan, dir + "/device");
+    const auto side = [&] {
+      return deviceSide(opt_, std::make_shared<Results>(model), faultIn(opt_, c.name));
+    };
+    SideResult d =
+        runSide(side, device_, slot ? slot->device : nullptr, slot, c, plan, dir + "/device");
     if ((*interrupted = d.interrupted)) return {};
     device = std::move(d.results);
     fault_note = d.note;
@@ -181,25 +235,14 @@ CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string&
     StepTimer judge_time(parent, CostStep::Comparison);
     out = judgeCase(c, plan, device, model, dir);
   } else {
-    // One side only: its own status, validation errors included; never more than that.
-    const Results& only = want_device ? device : model;
-    Verdict v = backendVerdict(only);
-    for (const std::string& m : only.validation_messages) v.add({Status::Fail, "validation", m, {}, 0});
-    // Nothing was compared, so the case did not pass: it was not judged.
-    v.add({Status::NotSupported, "no-reference",
-           std::string("only the ") + (want_device ? "device" : "model") + " ran: nothing was compared", {}, 0});
-    out = unjudged(c, plan, device, model, v);
+    out = oneSideOutcome(c, plan, device, model, want_device);
   }
   if (!fault_note.empty()) out.verdict.add({Status::Pass, "planted-fault", fault_note, {}, 0});
   out.deriveFromVerdict();
   out.device_name = device.device;
   if (out.status != Status::Pass || opt_.records_csv) {
-    // The per-ray records as text, for people looking into the case.
     StepTimer csv_time(parent, CostStep::RecordsCsv);
-    for (const auto& [side, r] : {std::pair{"/device", &device}, std::pair{"/model", &model}})
-      if (std::filesystem::is_directory(dir + side))
-        if (const std::string e = writeRecordsCsv(*r, dir + side + "/records.csv", plan.record_fields); !e.empty())
-          throw HarnessError(e);
+    writeRecordsCsvFiles(dir, device, model, plan);
   }
   return costed(std::move(out), device, model);
 }
@@ -219,14 +262,17 @@ void journalCase(CaseOutcome& outcome, const Baseline& baseline, const std::stri
   report_time.stop();
   // Where the case's time went, beside its bundles (a skipped case has none;
   // a name that is no case name never became a folder of this run).
-  if (caseNameProblem(outcome.name).empty() && std::filesystem::is_directory(dir + "/" + outcome.name))
-    if (const std::string e = writeCaseCost(outcome, dir + "/" + outcome.name + "/cost.json"); !e.empty() && err.empty())
+  if (caseNameProblem(outcome.name).empty() &&
+      std::filesystem::is_directory(dir + "/" + outcome.name))
+    if (const std::string e = writeCaseCost(outcome, dir + "/" + outcome.name + "/cost.json");
+        !e.empty() && err.empty())
       err = e;
   if (!err.empty()) std::fprintf(stderr, "%s\n", err.c_str());
 }
 
-std::string writeRunReports(std::vector<CaseOutcome>& outcomes, const Baseline& baseline, const RunInfo& info,
-                            const std::string& dir, const ReportWriter& write) {
+std::string writeRunReports(std::vector<CaseOutcome>& outcomes, const Baseline& baseline,
+                            const RunInfo& info, const std::string& dir,
+                            const ReportWriter& write) {
   try {
     return write(outcomes, info, dir);
   } catch (const std::exception&) {
@@ -238,7 +284,8 @@ std::string writeRunReports(std::vector<CaseOutcome>& outcomes, const Baseline& 
     try {
       write({o}, info, scratch);
     } catch (const std::exception& e) {
-      o = caseErrorOutcome(o.name, o.rules, "harness", std::string("the reports could not show this case: ") + e.what());
+      o = caseErrorOutcome(o.name, o.rules, "harness",
+                           std::string("the reports could not show this case: ") + e.what());
       applyBaseline(baseline, o);
     }
   }

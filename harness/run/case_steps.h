@@ -19,20 +19,20 @@
 #include <vector>
 
 #include "case/parse_case.h"
+#include "library/case_discovery.h"
 #include "report/baseline.h"
 #include "report/case_outcome.h"
 #include "report/run_summary.h"
 #include "report/write_reports.h"
 #include "run/backend.h"
-#include "library/case_discovery.h"
 #include "run/isolation.h"
 #include "run/run_options.h"
 
 namespace rayspec {
 
 // A CaseError outcome: finding `rule` ("case-file", "harness") with the message.
-CaseOutcome caseErrorOutcome(const std::string& name, const std::vector<std::string>& rules, const std::string& rule,
-                             const std::string& message);
+CaseOutcome caseErrorOutcome(const std::string& name, const std::vector<std::string>& rules,
+                             const std::string& rule, const std::string& message);
 
 // The CaseError of a case file that did not parse; none when it is usable.
 std::optional<CaseOutcome> caseFileError(const CaseFile& file, const ParseResult& parsed);
@@ -69,7 +69,8 @@ class CaseRunner {
 
  private:
   SideResult runSide(const std::function<Side()>& side, Backend* in_process, SideWorker* worker,
-                     const CaseSlot* slot, const Case& c, const Plan& plan, const std::string& dir) const;
+                     const CaseSlot* slot, const Case& c, const Plan& plan,
+                     const std::string& dir) const;
   const RunOptions& opt_;
   Backend* device_;
   Backend* model_;
@@ -77,8 +78,8 @@ class CaseRunner {
 };
 
 // Writes the reports of a run folder; the run loop's is writeReports.
-using ReportWriter =
-    std::function<std::string(const std::vector<CaseOutcome>&, const RunInfo&, const std::string& dir)>;
+using ReportWriter = std::function<std::string(const std::vector<CaseOutcome>&, const RunInfo&,
+                                               const std::string& dir)>;
 
 // A case that ended joins the run's journal (report/case_journal.h), and
 // its cost.json its bundles; when its details cannot be written, the case
@@ -88,7 +89,8 @@ void journalCase(CaseOutcome& outcome, const Baseline& baseline, const std::stri
 // The reports of every case so far (report/write_reports.h); when a case's
 // details break them, that case becomes a CaseError (judged by the baseline
 // anew) and the reports are written without them. The error ("" none).
-std::string writeRunReports(std::vector<CaseOutcome>& outcomes, const Baseline& baseline, const RunInfo& info,
-                            const std::string& dir, const ReportWriter& write = writeReports);
+std::string writeRunReports(std::vector<CaseOutcome>& outcomes, const Baseline& baseline,
+                            const RunInfo& info, const std::string& dir,
+                            const ReportWriter& write = writeReports);
 
 }  // namespace rayspec

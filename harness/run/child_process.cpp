@@ -24,7 +24,9 @@
 
 namespace rayspec {
 
-bool memoryLimitApplies() { return !kAddressSanitizer; }
+bool memoryLimitApplies() {
+  return !kAddressSanitizer;
+}
 
 bool childLeaked() {
 #if defined(RAYSPEC_LSAN_CHECK)
@@ -114,7 +116,9 @@ ChildEnd runChild(const std::function<int(std::string& message)>& body, const Ch
     return end;
   }
   const auto start = std::chrono::steady_clock::now();
-  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  auto elapsed = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
   std::fflush(nullptr);
   const pid_t parent = getpid();
   const pid_t pid = fork();
@@ -145,7 +149,9 @@ ChildEnd runChild(const std::function<int(std::string& message)>& body, const Ch
       while (waitpid(pid, &wstatus, 0) < 0 && errno == EINTR) {
       }
       close(fds[0]);
-      end.how = interrupted ? ChildEnd::How::Interrupted : late ? ChildEnd::How::TimedOut : ChildEnd::How::NotStarted;
+      end.how = interrupted ? ChildEnd::How::Interrupted
+                : late      ? ChildEnd::How::TimedOut
+                            : ChildEnd::How::NotStarted;
       if (end.how == ChildEnd::How::NotStarted) end.error = "lost the child process";
       end.seconds = elapsed();
       return end;
@@ -169,19 +175,24 @@ ChildEnd runChild(const std::function<int(std::string& message)>& body, const Ch
 
 std::string formatBytes(uint64_t bytes) {
   std::ostringstream s;
-  if (bytes >= (uint64_t(1) << 30) && bytes % (uint64_t(1) << 30) == 0) s << (bytes >> 30) << " GiB";
-  else if (bytes >= (uint64_t(1) << 20)) s << (bytes >> 20) << " MiB";
-  else s << bytes << " bytes";
+  if (bytes >= (uint64_t(1) << 30) && bytes % (uint64_t(1) << 30) == 0)
+    s << (bytes >> 30) << " GiB";
+  else if (bytes >= (uint64_t(1) << 20))
+    s << (bytes >> 20) << " MiB";
+  else
+    s << bytes << " bytes";
   return s.str();
 }
 
-std::string describeChildEnd(const ChildEnd& end, const std::string& who, const ChildLimits& limits) {
+std::string describeChildEnd(const ChildEnd& end, const std::string& who,
+                             const ChildLimits& limits) {
   std::ostringstream s;
   switch (end.how) {
     case ChildEnd::How::Exited:
       if (end.code == 0) return {};
       if (end.code == kChildOutOfMemory)
-        s << who << " ran out of memory (--memory-limit " << formatBytes(limits.memory_limit) << ")";
+        s << who << " ran out of memory (--memory-limit " << formatBytes(limits.memory_limit)
+          << ")";
       else if (end.code == kChildException)
         s << who << " threw: " << end.message;
       else if (end.code == kChildLeaked)
@@ -192,9 +203,15 @@ std::string describeChildEnd(const ChildEnd& end, const std::string& who, const 
     case ChildEnd::How::Signaled:
       s << who << " died of signal " << end.code << " (" << strsignal(end.code) << ")";
       break;
-    case ChildEnd::How::TimedOut: s << who << " ran longer than " << limits.timeout_seconds << " s (killed)"; break;
-    case ChildEnd::How::Interrupted: s << who << " was stopped: the run was interrupted"; break;
-    case ChildEnd::How::NotStarted: s << who << " could not run: " << end.error; break;
+    case ChildEnd::How::TimedOut:
+      s << who << " ran longer than " << limits.timeout_seconds << " s (killed)";
+      break;
+    case ChildEnd::How::Interrupted:
+      s << who << " was stopped: the run was interrupted";
+      break;
+    case ChildEnd::How::NotStarted:
+      s << who << " could not run: " << end.error;
+      break;
   }
   return s.str();
 }

@@ -50,7 +50,7 @@ inline constexpr int kChildLeaked = 116;       // AddressSanitizer build: LeakSa
 struct ChildEnd {
   enum class How { Exited, Signaled, TimedOut, Interrupted, NotStarted };
   How how = How::NotStarted;
-  int code = 0;         // Exited: the exit status; Signaled: the signal
+  int code = 0;  // Exited: the exit status; Signaled: the signal
   double seconds = 0;
   std::string message;  // what the body left in its `message` argument
   std::string error;    // NotStarted: why (fork or pipe failed)
@@ -72,7 +72,8 @@ ChildEnd runChild(const std::function<int(std::string& message)>& body, const Ch
 
 // Why a child that did not end well ended, for people: "the model process
 // died of signal 11 (Segmentation fault)". `who` names the process.
-std::string describeChildEnd(const ChildEnd& end, const std::string& who, const ChildLimits& limits);
+std::string describeChildEnd(const ChildEnd& end, const std::string& who,
+                             const ChildLimits& limits);
 
 // "8 GiB", "512 MiB".
 std::string formatBytes(uint64_t bytes);

@@ -13,8 +13,9 @@ void listWhatThereIs(DeviceProbe& p) {
   std::string loader_error;  // the same as the adapter's error
   for (const DeviceInfo& d : listDevicesOrWhyNot(&p.no_device, &loader_error)) {
     const DeviceUsability u = deviceUsability(d);
-    p.devices.push_back("[" + std::to_string(d.index) + "] " + d.name +
-                        (u == DeviceUsability::Usable ? " (ray tracing)" : " (" + usabilityReason(u, d) + ")"));
+    p.devices.push_back(
+        "[" + std::to_string(d.index) + "] " + d.name +
+        (u == DeviceUsability::Usable ? " (ray tracing)" : " (" + usabilityReason(u, d) + ")"));
   }
 }
 
@@ -52,8 +53,10 @@ DeviceProbe probeDevice(const VulkanOptions& options, const ChildLimits& limits)
   const ChildEnd end = runChild(
       [&](std::string& message) {
         const DeviceProbe p = probeDeviceInProcess(options);
-        message = nlohmann::json{{"found", p.found}, {"description", p.description}, {"icd", p.icd}, {"device_uuid", p.device_uuid}, {"cpu", p.cpu},
-                                 {"error", p.error}, {"devices", p.devices}, {"no_device", p.no_device}}
+        message = nlohmann::json{{"found", p.found},     {"description", p.description},
+                                 {"icd", p.icd},         {"device_uuid", p.device_uuid},
+                                 {"cpu", p.cpu},         {"error", p.error},
+                                 {"devices", p.devices}, {"no_device", p.no_device}}
                       .dump();
         return 0;
       },
@@ -73,7 +76,8 @@ DeviceProbe probeDevice(const VulkanOptions& options, const ChildLimits& limits)
   p.icd = j.value("icd", "");
   p.cpu = j.value("cpu", false);
   p.device_uuid = j.value("device_uuid", "");
-  if (p.found && p.icd.empty()) p.icd = icdOfDevice(p.device_uuid, ChildLimits{kProbeSeconds, limits.memory_limit});
+  if (p.found && p.icd.empty())
+    p.icd = icdOfDevice(p.device_uuid, ChildLimits{kProbeSeconds, limits.memory_limit});
   p.error = j.value("error", "");
   p.devices = j.value("devices", std::vector<std::string>{});
   p.no_device = j.value("no_device", "");

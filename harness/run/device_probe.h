@@ -14,18 +14,19 @@ namespace rayspec {
 
 struct DeviceProbe {
   bool found = false;
-  std::string description;           // the device the cases will run on: "llvmpipe (...) (Mesa ...)"
-  std::string icd;                   // the driver manifest it came from ("" when unknown)
-  std::string device_uuid;           // DeviceInfo::device_uuid of that device
-  bool cpu = false;                  // DeviceInfo::cpu: a CPU device (lavapipe)
-  std::string error;                 // why none was found
+  std::string description;  // the device the cases will run on: "llvmpipe (...) (Mesa ...)"
+  std::string icd;          // the driver manifest it came from ("" when unknown)
+  std::string device_uuid;  // DeviceInfo::device_uuid of that device
+  bool cpu = false;         // DeviceInfo::cpu: a CPU device (lavapipe)
+  std::string error;        // why none was found
   std::vector<std::string> devices;  // every device the loader sees, for people
   std::string no_device;             // no device at all: why, per driver manifest
 };
 
 class VulkanAdapter;
 
-DeviceProbe probeDevice(const VulkanOptions& options, const ChildLimits& limits);  // in a child process
+DeviceProbe probeDevice(const VulkanOptions& options,
+                        const ChildLimits& limits);  // in a child process
 DeviceProbe probeDeviceInProcess(const VulkanOptions& options);
 // What an adapter already created found (the device, its ICD manifest when
 // its driver library tells, see icdOfLibrary), and when it found none, the

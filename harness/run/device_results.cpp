@@ -25,8 +25,8 @@ Results SavedDevice::run(const Case& c, const Plan&) {
     Results r;
     r.backend = name();
     r.case_name = c.name;
-    r.setStatus(RunStatus::NotSupported,
-                "no saved device results in " + bundle + ": the case did not run there, nothing was compared");
+    r.setStatus(RunStatus::NotSupported, "no saved device results in " + bundle +
+                                             ": the case did not run there, nothing was compared");
     return r;
   }
   std::string error;
@@ -36,11 +36,14 @@ Results SavedDevice::run(const Case& c, const Plan&) {
   if (r.case_name != c.name)
     throw HarnessError(json + ": the bundle is case '" + r.case_name + "', not '" + c.name + "'");
   if (r.case_hash == 0)
-    throw HarnessError(json + ": records no case_hash (saved by an older rayspec): run the case there again");
+    throw HarnessError(
+        json + ": records no case_hash (saved by an older rayspec): run the case there again");
   if (r.case_hash != c.source_hash)
-    throw HarnessError(json + ": case_hash " + contentHashText(r.case_hash) + ", but the case here (" + c.file +
-                       ") hashes to " + contentHashText(c.source_hash) +
-                       ": the case changed since it ran there (or --permute or --move differs); run it there again");
+    throw HarnessError(json + ": case_hash " + contentHashText(r.case_hash) +
+                       ", but the case here (" + c.file + ") hashes to " +
+                       contentHashText(c.source_hash) +
+                       ": the case changed since it ran there (or --permute or --move differs); "
+                       "run it there again");
   return r;
 }
 
@@ -48,16 +51,21 @@ std::string deviceResultsError(const RunOptions& opt) {
   const std::string& dir = opt.device_results;
   if (dir.empty()) return {};
   const std::string what = "--device-results " + dir;
-  if (!modelInThisBuild()) return what + ": this run-only build has no model to judge by; judge where the full build is";
+  if (!modelInThisBuild())
+    return what + ": this run-only build has no model to judge by; judge where the full build is";
   if (opt.no_model) return what + " with --no-model: nothing to judge the saved results by";
-  if (opt.no_device) return what + " with --no-device: the saved device results are the device side";
-  if (!opt.device.empty()) return what + " with --device: no device runs, the results were saved on one";
+  if (opt.no_device)
+    return what + " with --no-device: the saved device results are the device side";
+  if (!opt.device.empty())
+    return what + " with --device: no device runs, the results were saved on one";
   if (deviceErrorFault(opt.plant_fault))
-    return "the fault '" + opt.plant_fault + "' makes a Vulkan call fail: it needs a live device, not " + what;
+    return "the fault '" + opt.plant_fault +
+           "' makes a Vulkan call fail: it needs a live device, not " + what;
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) return what + ": not a folder";
   if (fs::weakly_canonical(dir, ec) == fs::weakly_canonical(opt.out, ec))
-    return what + " is the --out folder: the run would remove the results it reads; give another --out";
+    return what +
+           " is the --out folder: the run would remove the results it reads; give another --out";
   return {};
 }
 

@@ -7,7 +7,8 @@
 
 namespace rayspec {
 
-std::vector<RayRow> failingRays(const Verdict& v, const Plan& plan, const Results& device, const Results& model) {
+std::vector<RayRow> failingRays(const Verdict& v, const Plan& plan, const Results& device,
+                                const Results& model) {
   constexpr size_t kMaxRays = 16;
   std::set<uint32_t> rays;
   for (const Finding& f : v.findings)
@@ -26,8 +27,12 @@ std::vector<RayRow> failingRays(const Verdict& v, const Plan& plan, const Result
     const uint32_t* d = &device.records[r * words];
     const uint32_t* m = &model.records[r * words];
     for (const std::string& f : fields) {
-      RayRow row{r, device.width ? r % device.width : r, device.width ? r / device.width : 0, f,
-                 formatField(f, d), formatField(f, m)};
+      RayRow row{r,
+                 device.width ? r % device.width : r,
+                 device.width ? r / device.width : 0,
+                 f,
+                 formatField(f, d),
+                 formatField(f, m)};
       rows.push_back(row);
     }
   }

@@ -11,6 +11,7 @@
 
 namespace rayspec {
 
-std::vector<RayRow> failingRays(const Verdict& v, const Plan& plan, const Results& device, const Results& model);
+std::vector<RayRow> failingRays(const Verdict& v, const Plan& plan, const Results& device,
+                                const Results& model);
 
 }  // namespace rayspec

@@ -15,7 +15,7 @@ namespace rayspec {
 struct IcdProbe {
   IcdManifest manifest;
   std::vector<DeviceInfo> devices;  // every device the driver offers, usable or not
-  std::string failure;              // no device: why (driver not loadable, none found, the probe died)
+  std::string failure;  // no device: why (driver not loadable, none found, the probe died)
 };
 
 IcdProbe probeIcd(const IcdManifest& manifest, const ChildLimits& limits);

@@ -7,7 +7,9 @@ namespace {
 
 volatile std::sig_atomic_t g_signal = 0;
 
-extern "C" void onInterrupt(int sig) { g_signal = sig; }
+extern "C" void onInterrupt(int sig) {
+  g_signal = sig;
+}
 
 }  // namespace
 
@@ -25,6 +27,8 @@ void defaultInterrupts() {
   std::signal(SIGTERM, SIG_DFL);
 }
 
-int interruptSignal() { return g_signal; }
+int interruptSignal() {
+  return g_signal;
+}
 
 }  // namespace rayspec

@@ -17,7 +17,8 @@ namespace {
 constexpr BundleFiles kChildBundle{false, false};
 
 // The part both ways share: run, name the results, let `after` see them.
-Results runSide(const Side& side, Backend& backend, const Case& c, const Plan& plan, std::string* note) {
+Results runSide(const Side& side, Backend& backend, const Case& c, const Plan& plan,
+                std::string* note) {
   if (side.before) side.before();
   Results r = backend.run(c, plan);
   r.case_name = c.name;
@@ -27,8 +28,8 @@ Results runSide(const Side& side, Backend& backend, const Case& c, const Plan& p
   return r;
 }
 
-Results failed(const std::string& backend_name, const Case& c, RunStatus status, const std::string& detail,
-               double seconds) {
+Results failed(const std::string& backend_name, const Case& c, RunStatus status,
+               const std::string& detail, double seconds) {
   Results r;
   r.backend = backend_name;
   r.case_name = c.name;
@@ -56,24 +57,30 @@ SideResult ended(const std::string& backend_name, const Case& c, const Plan& pla
 // The parent's half of a side run in another process: how the process ended
 // made into Results (Crash, Timeout), or the bundle it wrote read back and its
 // pictures written.
-SideResult collect(const std::string& label, const std::string& backend_name, const Case& c, const Plan& plan,
-                   const ChildEnd& end, const ChildLimits& limits, const std::string& dir) {
+SideResult collect(const std::string& label, const std::string& backend_name, const Case& c,
+                   const Plan& plan, const ChildEnd& end, const ChildLimits& limits,
+                   const std::string& dir) {
   const std::string who = "the " + label + " process";
   SideResult out;
   switch (end.how) {
     case ChildEnd::How::Interrupted:
       out.interrupted = true;
-      out.results = failed(backend_name, c, RunStatus::Crash, describeChildEnd(end, who, limits), end.seconds);
+      out.results = failed(backend_name, c, RunStatus::Crash, describeChildEnd(end, who, limits),
+                           end.seconds);
       return out;
     case ChildEnd::How::TimedOut:
-      return ended(backend_name, c, plan, RunStatus::Timeout, describeChildEnd(end, who, limits), end.seconds, dir);
+      return ended(backend_name, c, plan, RunStatus::Timeout, describeChildEnd(end, who, limits),
+                   end.seconds, dir);
     case ChildEnd::How::Signaled:
-      return ended(backend_name, c, plan, RunStatus::Crash, describeChildEnd(end, who, limits), end.seconds, dir);
-    case ChildEnd::How::NotStarted: throw HarnessError(describeChildEnd(end, who, limits));
+      return ended(backend_name, c, plan, RunStatus::Crash, describeChildEnd(end, who, limits),
+                   end.seconds, dir);
+    case ChildEnd::How::NotStarted:
+      throw HarnessError(describeChildEnd(end, who, limits));
     case ChildEnd::How::Exited:
       if (end.code == kChildException) throw HarnessError(label + " side: " + end.message);
       if (end.code != 0)
-        return ended(backend_name, c, plan, RunStatus::Crash, describeChildEnd(end, who, limits), end.seconds, dir);
+        return ended(backend_name, c, plan, RunStatus::Crash, describeChildEnd(end, who, limits),
+                     end.seconds, dir);
   }
   std::string error;
   StepCosts parent;  // the parent's own steps for this side
@@ -107,10 +114,12 @@ SideResult runIsolated(const Side& side, const Case& c, const Plan& plan, const 
         Results r = runSide(side, *backend, c, plan, &message);
         r.cost += setup;
         StepTimer teardown_time(r.cost, CostStep::BackendTeardown);
-        for (const std::string& m : backend->close()) r.validation_messages.push_back("at device teardown: " + m);
+        for (const std::string& m : backend->close())
+          r.validation_messages.push_back("at device teardown: " + m);
         backend.reset();
         teardown_time.stop();
-        const std::string err = writeResults(r, dir, plan.record_fields, kChildBundle);  // the parent writes the pictures
+        const std::string err = writeResults(r, dir, plan.record_fields,
+                                             kChildBundle);  // the parent writes the pictures
         if (!err.empty()) throw HarnessError(err);
         return 0;
       },
@@ -142,7 +151,8 @@ struct ServedSide {
     std::string note;
     Results r = runSide(side, *backend, c, plan, &note);
     r.cost += setup;
-    const std::string err = writeResults(r, dir, plan.record_fields, kChildBundle);  // the parent writes the pictures
+    const std::string err =
+        writeResults(r, dir, plan.record_fields, kChildBundle);  // the parent writes the pictures
     if (!err.empty()) throw HarnessError(err);
     return note;
   }
@@ -157,16 +167,19 @@ struct ServedSide {
 };
 
 // serve and finish of one ServedSide (in the worker, they share its backend).
-std::pair<Worker::Serve, Worker::Finish> servedSide(const std::vector<Case>& cases, SideFor side_for) {
+std::pair<Worker::Serve, Worker::Finish> servedSide(const std::vector<Case>& cases,
+                                                    SideFor side_for) {
   auto served = std::make_shared<ServedSide>(ServedSide{&cases, std::move(side_for), nullptr});
   return {[served](const std::string& request) { return served->serve(request); },
-          [served] { return served->finish(); }};
+          [served] {
+            return served->finish();
+          }};
 }
 
 }  // namespace
 
-SideWorker::SideWorker(std::string label, std::string backend_name, const std::vector<Case>& cases, SideFor side_for,
-                       const ChildLimits& limits)
+SideWorker::SideWorker(std::string label, std::string backend_name, const std::vector<Case>& cases,
+                       SideFor side_for, const ChildLimits& limits)
     : label_(std::move(label)),
       backend_name_(std::move(backend_name)),
       cases_(cases),
@@ -193,11 +206,13 @@ std::vector<std::string> SideWorker::close() {
   return out;
 }
 
-SideResult runInProcess(const Side& side, Backend& backend, const Case& c, const Plan& plan, const std::string& dir) {
+SideResult runInProcess(const Side& side, Backend& backend, const Case& c, const Plan& plan,
+                        const std::string& dir) {
   SideResult out;
   out.results = runSide(side, backend, c, plan, &out.note);
   StepTimer write_time(out.results.cost, CostStep::WriteBundle);
-  const std::string err = writeResults(out.results, dir, plan.record_fields, BundleFiles{true, false});
+  const std::string err =
+      writeResults(out.results, dir, plan.record_fields, BundleFiles{true, false});
   write_time.stop();
   if (!err.empty()) throw HarnessError(side.label + " side: " + err);
   return out;

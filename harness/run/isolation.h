@@ -43,8 +43,9 @@ struct Side {
 
 struct SideResult {
   Results results;
-  std::string note;          // what `after` said
-  bool interrupted = false;  // a signal stopped the run while this side ran: the results mean nothing
+  std::string note;  // what `after` said
+  bool interrupted =
+      false;  // a signal stopped the run while this side ran: the results mean nothing
 };
 
 // In a child process under `limits`; the bundle goes to `dir`. Throws
@@ -64,8 +65,8 @@ class SideWorker {
  public:
   // `cases`: the run's cases, all of them before the first run() (the worker
   // is a fork of this process and sees them as they were then).
-  SideWorker(std::string label, std::string backend_name, const std::vector<Case>& cases, SideFor side_for,
-             const ChildLimits& limits);
+  SideWorker(std::string label, std::string backend_name, const std::vector<Case>& cases,
+             SideFor side_for, const ChildLimits& limits);
   // cases[index] on this side; the bundle goes to `dir`. Throws HarnessError.
   SideResult run(size_t index, const Plan& plan, const std::string& dir);
   // Ends the worker: what its backend reported at teardown (validation errors
@@ -81,6 +82,7 @@ class SideWorker {
 };
 
 // In this process, with a backend that lives across cases (--no-isolation).
-SideResult runInProcess(const Side& side, Backend& backend, const Case& c, const Plan& plan, const std::string& dir);
+SideResult runInProcess(const Side& side, Backend& backend, const Case& c, const Plan& plan,
+                        const std::string& dir);
 
 }  // namespace rayspec

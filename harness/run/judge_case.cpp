@@ -1,8 +1,8 @@
 #include "run/judge_case.h"
 
-#include "run/failing_rays.h"
 #include "compare/compare_results.h"
 #include "results/image_files.h"
+#include "run/failing_rays.h"
 
 namespace rayspec {
 

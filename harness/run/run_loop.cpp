@@ -6,20 +6,20 @@
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
-#include <map>
-#include <set>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <thread>
 
 #include "fault/planted_fault.h"
 #include "metamorphic/motion_spec.h"
 #include "metamorphic/permute_case.h"
 #include "report/baseline_gate.h"
-#include "report/outcome_json.h"
 #include "report/case_journal.h"
+#include "report/outcome_json.h"
 #include "report/rule_catalog.h"
 #include "run/cache_dir.h"
 #include "run/case_order.h"
@@ -28,8 +28,9 @@
 #include "run/device_results.h"
 #include "run/interrupt.h"
 #include "run/model_adapter.h"
-#include "run/shard.h"
 #include "run/run_only.h"
+#include "run/run_setup.h"
+#include "run/shard.h"
 #include "run/vulkan_adapter.h"
 #include "vulkan/device_errors.h"
 #include "vulkan/icd_environment.h"
@@ -37,93 +38,31 @@
 namespace rayspec {
 namespace {
 
-bool validationLayerInstalled() {
-  if (const char* path = std::getenv("VK_LAYER_PATH"))
-    if (std::filesystem::exists(std::string(path) + "/VkLayer_khronos_validation.json")) return true;
-  for (const char* dir : {"/usr/share/vulkan/explicit_layer.d", "/usr/local/share/vulkan/explicit_layer.d",
-                          "/etc/vulkan/explicit_layer.d"})
-    if (std::filesystem::exists(std::string(dir) + "/VkLayer_khronos_validation.json")) return true;
-  return false;
-}
-
-std::string now() {
-  char text[64];
-  const std::time_t t = std::time(nullptr);
-  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M:%S UTC", std::gmtime(&t));
-  return text;
-}
-
-std::vector<CaseFile> caseFiles(const RunOptions& opt) {
-  if (opt.case_files.empty() && !opt.filters.empty()) return findCasesAny(opt.cases_dir, opt.filters);
-  if (opt.case_files.empty()) return findCases(opt.cases_dir, opt.filter);
-  std::vector<CaseFile> files;
-  for (const std::string& f : opt.case_files)
-    for (CaseFile& c : caseFilesFor(f, opt.cases_dir)) files.push_back(std::move(c));
-  checkCaseNames(files);
-  return files;
-}
-
 // --move and a case it cannot move exactly: NotSupported, saying why (the
 // case's verdict under the motion is unknown, never a pass).
 CaseOutcome notMovedOutcome(const std::string& name, const std::string& why) {
   CaseOutcome o;
   o.name = name;
-  o.verdict.add({Status::NotSupported, "move", "not run: --move cannot move this case exactly: " + why, {}, 0});
+  o.verdict.add({Status::NotSupported,
+                 "move",
+                 "not run: --move cannot move this case exactly: " + why,
+                 {},
+                 0});
   o.deriveFromVerdict();
-  o.baseline = BaselineMatch::Skipped;  // not run: the baseline's expectation is neither met nor broken
+  o.baseline =
+      BaselineMatch::Skipped;  // not run: the baseline's expectation is neither met nor broken
   o.baseline_note = "not run under --move";
   return o;
-}
-
-// The shard asked for (--shard, else GoogleTest's variables), if any.
-std::optional<Shard> chosenShard(const RunOptions& opt, std::string* error) {
-  if (!opt.shard.empty()) return parseShard(opt.shard, error);
-  return shardFromEnvironment(error);
-}
-
-// --resume: what the run folder already holds must come from the same kind
-// of run. The message, or "".
-std::string resumeError(const SavedRun& saved, const RunInfo& info, const std::string& out,
-                        const std::vector<CaseFile>& files) {
-  // Every case the folder holds must be selected again, or --resume would
-  // drop it from results.csv and summary.json.
-  std::set<std::string> selected;
-  for (const CaseFile& f : files) selected.insert(f.name);
-  size_t unselected = 0;
-  std::string first;
-  for (const CaseOutcome& o : saved.outcomes)
-    if (!selected.count(o.name) && unselected++ == 0) first = o.name;
-  if (unselected)
-    return "--resume: " + out + " holds " + std::to_string(unselected) + " case(s) this run does not select (" +
-           first + (unselected > 1 ? ", ..." : "") + "): resume with the selection the run started with";
-  if (saved.info.model_tier != info.model_tier)
-    return "--resume: " + out + " was run with model tier '" + saved.info.model_tier + "', this run uses '" +
-           info.model_tier + "'";
-  if (saved.info.device != info.device)
-    return "--resume: " + out + " was run on '" + saved.info.device + "', this run is on '" + info.device + "'";
-  return {};
-}
-
-// Options that cannot work together; the message, or "".
-std::string optionError(const RunOptions& opt) {
-  if (!opt.no_validation && opt.strict_validation && !validationLayerInstalled())
-    return "the Khronos validation layer is not installed (vulkan-validationlayers); run tools/setup.sh";
-  if (!opt.plant_fault.empty() && !isFaultName(opt.plant_fault) && !deviceErrorFault(opt.plant_fault))
-    return "unknown fault '" + opt.plant_fault + "'";
-  if (isProcessFault(opt.plant_fault) && opt.no_isolation)
-    return "the fault '" + opt.plant_fault + "' needs the device in a child process (no --no-isolation)";
-  if (opt.no_device && opt.no_model) return "--no-device and --no-model: nothing would run";
-  if (std::string e = runOnlyError(opt); !e.empty()) return e;
-  return deviceResultsError(opt);
 }
 
 // What becomes of each selected case file, decided before any case runs (the
 // workers are forks of this process and see the cases as they are then).
 struct PlannedCase {
   std::string name;
-  std::optional<CaseOutcome> ready;  // no run: resumed (as judged then), skipped, a case-file error, not moved
+  std::optional<CaseOutcome>
+      ready;  // no run: resumed (as judged then), skipped, a case-file error, not moved
   bool resumed = false;
-  size_t index = 0;                  // into PreparedRun::cases when it runs
+  size_t index = 0;  // into PreparedRun::cases when it runs
   StepCosts parse_cost;
 };
 
@@ -132,8 +71,9 @@ struct PreparedRun {
   std::vector<Case> cases;           // those that run
 };
 
-PreparedRun prepareCases(const std::vector<CaseFile>& files, const RunOptions& opt, const Baseline& baseline,
-                         const std::vector<std::string>& labels, std::map<std::string, CaseOutcome>& earlier) {
+PreparedRun prepareCases(const std::vector<CaseFile>& files, const RunOptions& opt,
+                         const Baseline& baseline, const std::vector<std::string>& labels,
+                         std::map<std::string, CaseOutcome>& earlier) {
   PreparedRun run;
   for (const CaseFile& f : files) {
     PlannedCase p;
@@ -154,7 +94,9 @@ PreparedRun prepareCases(const std::vector<CaseFile>& files, const RunOptions& o
         std::optional<Case> changed;  // --permute, --move: the case as it runs
         if (opt.permute) changed = permuteCase(*parsed.value, *opt.permute).permuted;
         std::string not_moved;
-        if (opt.move) changed = moveCase(changed ? *changed : *parsed.value, *opt.move, &not_moved, MoveScope::Verdict);
+        if (opt.move)
+          changed = moveCase(changed ? *changed : *parsed.value, *opt.move, &not_moved,
+                             MoveScope::Verdict);
         if (opt.move && !changed) {
           p.ready = notMovedOutcome(f.name, not_moved);
         } else {
@@ -183,8 +125,12 @@ unsigned jobCount(const RunOptions& opt, size_t cases, bool gpu) {
 // What the threads of a run share; every member function takes the lock.
 class RunBook {
  public:
-  RunBook(const PreparedRun& prepared, const Baseline& baseline, RunInfo& info, const std::string& out)
-      : outcomes_(prepared.planned.size()), baseline_(baseline), info_(info), out_(out),
+  RunBook(const PreparedRun& prepared, const Baseline& baseline, RunInfo& info,
+          const std::string& out)
+      : outcomes_(prepared.planned.size()),
+        baseline_(baseline),
+        info_(info),
+        out_(out),
         progress_(prepared.planned.size()) {}
 
   // The case at `position` ended (or was ready): journal, progress line, and
@@ -264,12 +210,15 @@ std::optional<CaseOutcome> runOneCase(const CaseRunner& runner, const Case& c, c
                                       const Baseline& baseline, const CaseSlot* slot) {
   const auto start = std::chrono::steady_clock::now();
   bool interrupted = false;
-  CaseOutcome outcome = guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted, "", slot); });
+  CaseOutcome outcome =
+      guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted, "", slot); });
   if (interrupted) return std::nullopt;
   outcome.cost[CostSide::Parent] += p.parse_cost;
   if (applyBaseline(baseline, outcome)) {
-    std::printf("        %s: unexpected %s: running it again\n", c.name.c_str(), statusName(outcome.status));
-    const CaseOutcome again = guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted, "/rerun", slot); });
+    std::printf("        %s: unexpected %s: running it again\n", c.name.c_str(),
+                statusName(outcome.status));
+    const CaseOutcome again =
+        guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted, "/rerun", slot); });
     if (interrupted) return std::nullopt;
     applyRerun(outcome, again);
   }
@@ -280,21 +229,24 @@ std::optional<CaseOutcome> runOneCase(const CaseRunner& runner, const Case& c, c
 // One job slot: takes the next case (longest first) until none is left, each
 // side in this slot's long-lived workers (none without isolation).
 void runSlot(const CaseRunner& runner, const RunOptions& opt, const PreparedRun& prepared,
-             const std::vector<size_t>& order, std::atomic<size_t>& next, const Baseline& baseline, RunBook& book) {
+             const std::vector<size_t>& order, std::atomic<size_t>& next, const Baseline& baseline,
+             RunBook& book) {
   const ChildLimits limits{opt.timeout, opt.memory_limit};
   std::unique_ptr<SideWorker> model, device;
   const bool workers = !opt.no_isolation && !opt.process_per_case;
   if (workers && !opt.no_model)
-    model = std::make_unique<SideWorker>("model", "model", prepared.cases, modelSideFor(opt), limits);
+    model =
+        std::make_unique<SideWorker>("model", "model", prepared.cases, modelSideFor(opt), limits);
   if (workers && !opt.no_device)
-    device = std::make_unique<SideWorker>("device", "vulkan", prepared.cases, deviceSideFor(opt), limits);
+    device = std::make_unique<SideWorker>("device", "vulkan", prepared.cases, deviceSideFor(opt),
+                                          limits);
   for (size_t n; !book.stopped() && (n = next++) < order.size();) {
     const size_t position = order[n];
     const PlannedCase& p = prepared.planned[position];
     const CaseSlot slot{p.index, model.get(), device.get()};
     book.starting(p.name);
-    std::optional<CaseOutcome> outcome =
-        runOneCase(runner, prepared.cases[p.index], p, baseline, opt.no_isolation ? nullptr : &slot);
+    std::optional<CaseOutcome> outcome = runOneCase(runner, prepared.cases[p.index], p, baseline,
+                                                    opt.no_isolation ? nullptr : &slot);
     if (!outcome) {
       book.stop();
       break;
@@ -308,23 +260,31 @@ void runSlot(const CaseRunner& runner, const RunOptions& opt, const PreparedRun&
 
 // The lines that say how the run goes: motions, jobs and limits, baseline.
 void announceRun(const RunOptions& opt, unsigned jobs, const Baseline& baseline) {
-  if (opt.permute) std::printf("Permuted: primitives and instances, seed %llu\n", (unsigned long long)*opt.permute);
+  if (opt.permute)
+    std::printf("Permuted: primitives and instances, seed %llu\n",
+                (unsigned long long)*opt.permute);
   if (opt.move)
-    std::printf("Moved: every case by the rigid motion %s (a case it cannot move exactly is NotSupported)\n",
-                motionSpecText(*opt.move).c_str());
+    std::printf(
+        "Moved: every case by the rigid motion %s (a case it cannot move exactly is "
+        "NotSupported)\n",
+        motionSpecText(*opt.move).c_str());
   if (!opt.no_isolation)
-    std::printf("%u case%s at once, each side in %s: timeout %g s, memory limit %s\n", jobs, jobs == 1 ? "" : "s",
+    std::printf("%u case%s at once, each side in %s: timeout %g s, memory limit %s\n", jobs,
+                jobs == 1 ? "" : "s",
                 opt.process_per_case ? "a process of its own per case"
                                      : "a long-lived worker process (a new one after a crash)",
                 opt.timeout, opt.memory_limit ? formatBytes(opt.memory_limit).c_str() : "none");
   if (!baseline.file.empty()) {
-    std::printf("Baseline: %s (%zu known results)\n", baseline.file.c_str(), baseline.expected.size());
+    std::printf("Baseline: %s (%zu known results)\n", baseline.file.c_str(),
+                baseline.expected.size());
     std::vector<std::string> library;
     for (const CaseFile& f : findCases(opt.cases_dir, "*")) library.push_back(f.name);
-    for (const std::string& w : unknownEntries(baseline, library)) std::printf("Baseline warning: %s\n", w.c_str());
+    for (const std::string& w : unknownEntries(baseline, library))
+      std::printf("Baseline warning: %s\n", w.c_str());
   }
   if (!baseline.flakes_file.empty())
-    std::printf("Flakes: %s (%zu patterns)\n", baseline.flakes_file.c_str(), baseline.flakes.size());
+    std::printf("Flakes: %s (%zu patterns)\n", baseline.flakes_file.c_str(),
+                baseline.flakes.size());
   if (!baseline.skips_file.empty())
     std::printf("Skips: %s (%zu patterns)\n", baseline.skips_file.c_str(), baseline.skips.size());
 }
@@ -333,7 +293,8 @@ void announceRun(const RunOptions& opt, unsigned jobs, const Baseline& baseline)
 // errors, not moved) into the book; the others' positions in the order they
 // are dealt: longest first, or their own order with one job (what ran before
 // a case in its worker is then the same in every run).
-std::vector<size_t> dealOrder(const PreparedRun& prepared, const RunOptions& opt, unsigned jobs, RunBook& book) {
+std::vector<size_t> dealOrder(const PreparedRun& prepared, const RunOptions& opt, unsigned jobs,
+                              RunBook& book) {
   std::vector<std::string> names;
   std::vector<size_t> positions;
   for (size_t i = 0; i < prepared.planned.size(); ++i) {
@@ -354,8 +315,9 @@ std::vector<size_t> dealOrder(const PreparedRun& prepared, const RunOptions& opt
 
 // `jobs` slots at once, each a thread with its own workers, until every case
 // has been dealt (or a signal stopped the run).
-void runSlots(unsigned jobs, const CaseRunner& runner, const RunOptions& opt, const PreparedRun& prepared,
-              const std::vector<size_t>& order, const Baseline& baseline, RunBook& book) {
+void runSlots(unsigned jobs, const CaseRunner& runner, const RunOptions& opt,
+              const PreparedRun& prepared, const std::vector<size_t>& order,
+              const Baseline& baseline, RunBook& book) {
   std::atomic<size_t> next{0};
   std::vector<std::thread> slots;
   for (unsigned j = 0; j < jobs; ++j)
@@ -365,7 +327,8 @@ void runSlots(unsigned jobs, const CaseRunner& runner, const RunOptions& opt, co
 
 // The run's end: timings kept for the next run's order, coverage, the
 // reports in full, the summary printed; the exit status.
-int finishRun(RunBook& book, RunInfo& info, const RunOptions& opt, size_t planned, bool device_found) {
+int finishRun(RunBook& book, RunInfo& info, const RunOptions& opt, size_t planned,
+              bool device_found) {
   const std::vector<CaseOutcome> ended = book.ended();
   std::vector<std::pair<std::string, std::vector<std::string>>> case_rules;
   std::map<std::string, double> seconds;
@@ -389,141 +352,73 @@ int finishRun(RunBook& book, RunInfo& info, const RunOptions& opt, size_t planne
   return status;
 }
 
-}  // namespace
+// Without isolation the model runs in this process; with it, in workers.
+std::unique_ptr<ModelAdapter> inProcessModel(const RunOptions& opt) {
+  if (opt.no_model || !opt.no_isolation) return nullptr;
+  return std::make_unique<ModelAdapter>(ModelOptions{parseModelTier(opt.model_tier), opt.threads});
+}
 
-int runCases(const RunOptions& requested) {
-  RunOptions opt = optionsForThisBuild(requested);
-  std::vector<CaseFile> files = caseFiles(opt);
-  if (files.empty()) {
-    std::fprintf(stderr, "rayspec run: no case matches '%s' in %s\n", opt.filter.c_str(), opt.cases_dir.c_str());
-    return kExitSetup;
-  }
-  if (const std::string err = optionError(opt); !err.empty()) {
-    std::fprintf(stderr, "rayspec run: %s\n", err.c_str());
-    return kExitSetup;
-  }
-  const IcdSelection icd = useIcdFiles(opt.icd_files);  // before any Vulkan call; children inherit it
-  for (const std::string& note : icd.notes) std::fprintf(stderr, "rayspec run: %s\n", note.c_str());
-  if (!icd.error.empty()) {
-    std::fprintf(stderr, "rayspec run: %s\n", icd.error.c_str());
-    return kExitSetup;
-  }
-  std::string shard_error;
-  const std::optional<Shard> shard = chosenShard(opt, &shard_error);
-  if (!shard_error.empty()) {
-    std::fprintf(stderr, "rayspec run: %s\n", shard_error.c_str());
-    return kExitSetup;
-  }
-  if (shard) {
-    const size_t all = files.size();
-    std::vector<CaseFile> mine;
-    for (size_t i : shardPositions(all, *shard)) mine.push_back(std::move(files[i]));
-    files = std::move(mine);
-    if (files.empty()) {
-      std::fprintf(stderr, "rayspec run: %s holds no case (there are %zu)\n", shard->describe().c_str(), all);
-      return kExitSetup;
-    }
-    std::printf("Shard: %s, %zu of %zu cases\n", shard->describe().c_str(), files.size(), all);
-  }
-  RunInfo info;
-  info.started = now();
-  info.model_tier = opt.no_model ? "none" : opt.model_tier;
-  info.planned_cases = files.size();
-  info.interrupted = true;  // until the last case is done: a run killed before then stays marked
-  std::string catalog_error;
-  info.catalog = loadRuleCatalog(opt.rules_file, &catalog_error);
-  if (!catalog_error.empty()) std::fprintf(stderr, "rayspec run: %s\n", catalog_error.c_str());
-  if (!opt.plant_fault.empty()) std::printf("Planted fault: %s (test only)\n", opt.plant_fault.c_str());
-
-  std::string baseline_error;
-  const Baseline baseline = loadBaselineSet(opt.baseline, opt.flakes, opt.skips, &baseline_error);
-  if (!baseline_error.empty()) {
-    std::fprintf(stderr, "rayspec run: %s\n", baseline_error.c_str());
-    return kExitSetup;
-  }
-  info.baseline = baseline.file;
-
-  // The device must exist before any case runs. Isolated, the parent never
-  // initialises Vulkan: a short child process looks; without isolation one
-  // device serves every case.
-  const VulkanOptions vopt = vulkanOptions(opt);
-  std::unique_ptr<VulkanAdapter> device;
-  std::unique_ptr<ModelAdapter> model;
-  bool device_found = false;
-  bool gpu = false;  // the device is not this machine's CPU
-  if (!opt.device_results.empty()) {
-    info.device = savedDevices(opt.device_results, files);
-    device_found = !info.device.empty();
-    std::printf("Device results saved in %s (%s); no device runs here\n", opt.device_results.c_str(),
-                device_found ? info.device.c_str() : "none of these cases has a bundle there");
-  } else if (!opt.no_device) {
-    DeviceProbe probe;
-    if (opt.no_isolation) {
-      device = std::make_unique<VulkanAdapter>(vopt);
-      probe = describeAdapter(*device);
-      info.validation = device->validationEnabled();
-    } else {
-      VulkanOptions quick = vopt;
-      quick.validation = false;  // only whether a device matches
-      probe = probeDevice(quick, ChildLimits{opt.timeout, opt.memory_limit});
-      info.validation = vopt.validation && validationLayerInstalled();
-    }
-    if (!probe.found) {
-      std::fprintf(stderr, "rayspec run: no device to run on: %s\n", probeFailure(probe).c_str());
-      return kExitSetup;
-    }
-    device_found = true;
-    gpu = !probe.cpu;
-    info.device = probe.description;
-    info.icd = !probe.icd.empty() || icd.files.size() != 1 ? probe.icd : icd.files[0];
-    std::printf("Device: %s, ICD %s%s%s\n", info.device.c_str(), info.icd.empty() ? "unknown" : info.icd.c_str(),
-                info.validation ? ", validation layer on" : ", validation layer OFF",
-                opt.no_isolation ? ", in this process" : "");
-  }
-  const unsigned jobs = jobCount(opt, files.size(), gpu);
-  // The model's threads shared among the cases that run at once.
-  if (opt.threads == 0 && jobs > 1) opt.threads = std::max(1u, std::thread::hardware_concurrency() / jobs);
-  if (!opt.no_model) {
-    if (opt.no_isolation) model = std::make_unique<ModelAdapter>(ModelOptions{parseModelTier(opt.model_tier), opt.threads});
-    std::printf("Model: embree, %s tier\n", opt.model_tier.c_str());
-  }
-  announceRun(opt, jobs, baseline);
-  std::map<std::string, CaseOutcome> earlier;  // --resume: the cases the folder already has
-  if (opt.resume) {
-    std::string error;
-    SavedRun saved = readSavedRun(opt.out, &error);
-    if (error.empty()) error = resumeError(saved, info, opt.out, files);
-    if (!error.empty()) {
-      std::fprintf(stderr, "rayspec run: %s\n", error.c_str());
-      return kExitSetup;
-    }
-    info.started = saved.info.started;
-    for (CaseOutcome& o : saved.outcomes) earlier[o.name] = std::move(o);
-    std::printf("Resuming %s: %zu cases already ran\n", opt.out.c_str(), earlier.size());
-  }
-
+// The cases in files, dealt to `jobs` slots, judged and reported.
+int runPreparedCases(const RunOptions& opt, const std::vector<CaseFile>& files,
+                     const Baseline& baseline, RunInfo& info, ChosenDevice& device, unsigned jobs,
+                     std::map<std::string, CaseOutcome>& earlier) {
+  std::unique_ptr<ModelAdapter> model = inProcessModel(opt);
   useCacheDir(opt.cache_dir);  // before the first fork: every case process inherits it
   // Unknown rule labels are case-file errors at their line:col (the parser checks them).
-  const PreparedRun prepared = prepareCases(files, opt, baseline, ruleLabels(info.catalog), earlier);
+  const PreparedRun prepared =
+      prepareCases(files, opt, baseline, ruleLabels(info.catalog), earlier);
   std::error_code ec;
   std::filesystem::create_directories(opt.out, ec);
   if (!opt.resume)
-    if (const std::string e = startJournal(opt.out); !e.empty()) std::fprintf(stderr, "rayspec run: %s\n", e.c_str());
+    if (const std::string e = startJournal(opt.out); !e.empty())
+      std::fprintf(stderr, "rayspec run: %s\n", e.c_str());
   RunBook book(prepared, baseline, info, opt.out);
   book.writeAll();  // empty and marked interrupted until the run ends
   const std::vector<size_t> order = dealOrder(prepared, opt, jobs, book);
   catchInterrupts();
-  const CaseRunner runner(opt, device.get(), model.get());
+  const CaseRunner runner(opt, device.adapter.get(), model.get());
   runSlots(jobs, runner, opt, prepared, order, baseline, book);
-  if (device) book.teardownErrors(device->close());
-  return finishRun(book, info, opt, files.size(), device_found);
+  if (device.adapter) book.teardownErrors(device.adapter->close());
+  return finishRun(book, info, opt, files.size(), device.found);
+}
+
+}  // namespace
+
+// The steps of a run; a step that fails ends it before any case runs
+// (kExitSetup), naming why.
+int runCases(const RunOptions& requested) {
+  RunOptions opt = optionsForThisBuild(requested);
+  Result<std::vector<CaseFile>> files = selectedCaseFiles(opt);
+  if (!files) return setupFailed(files.error());
+  const IcdSelection icd =
+      useIcdFiles(opt.icd_files);  // before any Vulkan call; children inherit it
+  for (const std::string& note : icd.notes) std::fprintf(stderr, "rayspec run: %s\n", note.c_str());
+  if (!icd.error.empty()) return setupFailed(errorMessage(icd.error));
+  files = thisShard(opt, std::move(*files));
+  if (!files) return setupFailed(files.error());
+  RunInfo info = startRunInfo(opt, files->size());
+  const Result<Baseline> baseline = loadRunBaseline(opt);
+  if (!baseline) return setupFailed(baseline.error());
+  info.baseline = baseline->file;
+  Result<ChosenDevice> device = chooseDevice(opt, *files, icd, info);
+  if (!device) return setupFailed(device.error());
+  const unsigned jobs = jobCount(opt, files->size(), device->gpu);
+  // The model's threads shared among the cases that run at once.
+  if (opt.threads == 0 && jobs > 1)
+    opt.threads = std::max(1u, std::thread::hardware_concurrency() / jobs);
+  if (!opt.no_model) std::printf("Model: embree, %s tier\n", opt.model_tier.c_str());
+  announceRun(opt, jobs, *baseline);
+  Result<std::map<std::string, CaseOutcome>> earlier = resumedCases(opt, info, *files);
+  if (!earlier) return setupFailed(earlier.error());
+  return runPreparedCases(opt, *files, *baseline, info, *device, jobs, *earlier);
 }
 
 int runExitStatus(const RunSummary& summary, size_t planned, bool device_found, int signal) {
   if (signal) return 128 + signal;
   if (summary.failed()) return kExitFailing;
   if (summary.allNotSupported() || summary.outcomes().empty())
-    return planned == 1 && device_found && !summary.outcomes().empty() ? kExitNotSupported : kExitNothingCompared;
+    return planned == 1 && device_found && !summary.outcomes().empty() ? kExitNotSupported
+                                                                       : kExitNothingCompared;
   return kExitPass;
 }
 

@@ -11,10 +11,13 @@ namespace rayspec {
 
 // Exit statuses of a run (and of `rayspec compare`).
 inline constexpr int kExitPass = 0;
-inline constexpr int kExitFailing = 1;          // a case failed (Fail, Crash, Timeout, CaseError), baseline aside
-inline constexpr int kExitSetup = 2;            // nothing ran: bad options, no such device, no case, bad baseline
+inline constexpr int kExitFailing =
+    1;  // a case failed (Fail, Crash, Timeout, CaseError), baseline aside
+inline constexpr int kExitSetup =
+    2;  // nothing ran: bad options, no such device, no case, bad baseline
 inline constexpr int kExitNothingCompared = 3;  // every case was NotSupported: nothing was compared
-inline constexpr int kExitNotSupported = 77;    // a single case, NotSupported on a device that exists (ctest's skip)
+inline constexpr int kExitNotSupported =
+    77;  // a single case, NotSupported on a device that exists (ctest's skip)
 // Interrupted by SIGINT / SIGTERM: 128 + the signal, reports marked interrupted.
 
 int runCases(const RunOptions& opt);

@@ -27,9 +27,11 @@ inline constexpr uint64_t kDefaultMemoryLimit = uint64_t(8) << 30;
 
 struct RunOptions {
   std::string device;
-  std::vector<std::string> icd_files;  // --icd: the loader reads only these driver manifests (vulkan/icd_environment.h)
+  std::vector<std::string>
+      icd_files;  // --icd: the loader reads only these driver manifests (vulkan/icd_environment.h)
   std::string filter = "*";
-  std::vector<std::string> filters;    // when not empty, instead of filter: every case matching one of these globs
+  std::vector<std::string>
+      filters;  // when not empty, instead of filter: every case matching one of these globs
   std::string out = "rayspec-results";
   std::string cases_dir = RAYSPEC_SOURCE_DIR "/cases";
   std::vector<std::string> case_files;
@@ -39,24 +41,30 @@ struct RunOptions {
   bool no_validation = false;
   bool strict_validation = false;
   unsigned threads = 0;
-  bool records_csv = false;      // records.csv in every bundle, not only where the case did not pass
-  std::string cache_dir = defaultCacheDir();  // SPIR-V kept across processes and runs (run/cache_dir.h); "" off
-  double timeout = 120.0;        // seconds per case side (model, device) in its worker process
-  uint64_t memory_limit = kDefaultMemoryLimit;  // bytes of memory per child (RLIMIT_DATA); 0: no limit
-  bool no_isolation = false;     // run both sides in this process (one VkDevice for all cases)
-  unsigned jobs = 0;             // cases at once, each side in long-lived worker processes; 0: one per core
+  bool records_csv = false;  // records.csv in every bundle, not only where the case did not pass
+  std::string cache_dir =
+      defaultCacheDir();   // SPIR-V kept across processes and runs (run/cache_dir.h); "" off
+  double timeout = 120.0;  // seconds per case side (model, device) in its worker process
+  uint64_t memory_limit =
+      kDefaultMemoryLimit;    // bytes of memory per child (RLIMIT_DATA); 0: no limit
+  bool no_isolation = false;  // run both sides in this process (one VkDevice for all cases)
+  unsigned jobs = 0;  // cases at once, each side in long-lived worker processes; 0: one per core
   std::string device_per_case = "auto";  // yes, no, auto (vulkan/vulkan_backend.h devicePerCase)
-  bool process_per_case = false; // each side of each case in a process of its own (no workers; the slowest way)
-  std::string plant_fault;       // test only: fault/planted_fault.h
+  bool process_per_case =
+      false;  // each side of each case in a process of its own (no workers; the slowest way)
+  std::string plant_fault;           // test only: fault/planted_fault.h
   std::string plant_fault_in = "*";  // only in cases whose name matches this glob
   std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
-  std::string baseline;          // expected results of this driver (report/baseline.h)
-  std::string flakes, skips;     // its flakes and skips files ("": the baseline's siblings, if any)
-  std::string shard;             // "I/N": every N-th case from the I-th (run/shard.h)
-  bool resume = false;           // keep the cases `out` already has, run the rest
-  std::optional<uint64_t> permute;  // run each case with primitives and instances permuted (metamorphic/)
-  std::optional<RigidMotion> move;  // run each case moved by this exact rigid motion (metamorphic/transform_case.h)
-  std::string device_results;    // judge device bundles saved in this run folder instead of running a device (run/device_results.h)
+  std::string baseline;       // expected results of this driver (report/baseline.h)
+  std::string flakes, skips;  // its flakes and skips files ("": the baseline's siblings, if any)
+  std::string shard;          // "I/N": every N-th case from the I-th (run/shard.h)
+  bool resume = false;        // keep the cases `out` already has, run the rest
+  std::optional<uint64_t>
+      permute;  // run each case with primitives and instances permuted (metamorphic/)
+  std::optional<RigidMotion>
+      move;  // run each case moved by this exact rigid motion (metamorphic/transform_case.h)
+  std::string device_results;  // judge device bundles saved in this run folder instead of running a
+                               // device (run/device_results.h)
 };
 
 }  // namespace rayspec

@@ -26,8 +26,8 @@ namespace {
 // A CI engine's pair of variables: the shard's index, counted from `first`,
 // and the number of shards. nullopt when either is unset; *error when they
 // name no shard.
-std::optional<Shard> shardFromVariables(const char* index_name, const char* total_name, unsigned first,
-                                        std::string* error) {
+std::optional<Shard> shardFromVariables(const char* index_name, const char* total_name,
+                                        unsigned first, std::string* error) {
   const char* total = std::getenv(total_name);
   const char* index = std::getenv(index_name);
   if (!total || !index) return std::nullopt;
@@ -37,8 +37,8 @@ std::optional<Shard> shardFromVariables(const char* index_name, const char* tota
     if (n >= 1 && i >= first && i - first < n) return Shard{i - first, n};
   }
   *error = std::string(index_name) + "=" + index + " and " + total_name + "=" + total +
-           " do not name a shard (the index counts from " + std::to_string(first) + (first ? " to" : " and is below") +
-           " the total)";
+           " do not name a shard (the index counts from " + std::to_string(first) +
+           (first ? " to" : " and is below") + " the total)";
   return std::nullopt;
 }
 
@@ -46,8 +46,10 @@ std::optional<Shard> shardFromVariables(const char* index_name, const char* tota
 
 std::optional<Shard> shardFromEnvironment(std::string* error) {
   if (std::getenv("GTEST_TOTAL_SHARDS") || std::getenv("GTEST_SHARD_INDEX")) {
-    std::optional<Shard> s = shardFromVariables("GTEST_SHARD_INDEX", "GTEST_TOTAL_SHARDS", 0, error);
-    if (const char* status = std::getenv("GTEST_SHARD_STATUS_FILE"); s && status) std::ofstream{status};
+    std::optional<Shard> s =
+        shardFromVariables("GTEST_SHARD_INDEX", "GTEST_TOTAL_SHARDS", 0, error);
+    if (const char* status = std::getenv("GTEST_SHARD_STATUS_FILE"); s && status)
+      std::ofstream{status};
     return s;
   }
   // GitLab CI's parallel jobs: CI_NODE_INDEX counts from 1 to CI_NODE_TOTAL.

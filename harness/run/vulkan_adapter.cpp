@@ -11,7 +11,9 @@ VulkanOptions vulkanOptions(const RunOptions& opt) {
   return v;
 }
 
-VulkanAdapter::VulkanAdapter(const VulkanOptions& options) { backend_ = VulkanBackend::create(options, &error_); }
+VulkanAdapter::VulkanAdapter(const VulkanOptions& options) {
+  backend_ = VulkanBackend::create(options, &error_);
+}
 
 std::string VulkanAdapter::description() const {
   if (!backend_) return "none (" + error_ + ")";
@@ -27,6 +29,8 @@ Results VulkanAdapter::run(const Case& c, const Plan& plan) {
   return r;
 }
 
-std::vector<std::string> VulkanAdapter::close() { return backend_ ? backend_->close() : std::vector<std::string>{}; }
+std::vector<std::string> VulkanAdapter::close() {
+  return backend_ ? backend_->close() : std::vector<std::string>{};
+}
 
 }  // namespace rayspec

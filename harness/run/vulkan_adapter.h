@@ -27,7 +27,9 @@ class VulkanAdapter : public Backend {
   bool validationEnabled() const { return backend_ && backend_->validationEnabled(); }
   std::string driverLibrary() const { return backend_ ? backend_->driverLibrary() : std::string(); }
   bool cpuDevice() const { return backend_ && backend_->device().cpu; }
-  std::string deviceUuid() const { return backend_ ? backend_->device().device_uuid : std::string(); }
+  std::string deviceUuid() const {
+    return backend_ ? backend_->device().device_uuid : std::string();
+  }
 
  private:
   std::unique_ptr<VulkanBackend> backend_;

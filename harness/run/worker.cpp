@@ -49,7 +49,8 @@ bool sendMessage(int fd, char kind, const std::string& text) {
 bool wholeMessage(const std::string& buffer, char* kind, std::string* text) {
   if (buffer.size() < kHeader) return false;
   uint64_t size = 0;
-  for (size_t i = kHeader - 1; i >= 1; --i) size = (size << 8) | static_cast<unsigned char>(buffer[i]);
+  for (size_t i = kHeader - 1; i >= 1; --i)
+    size = (size << 8) | static_cast<unsigned char>(buffer[i]);
   if (buffer.size() - kHeader < size) return false;
   *kind = buffer[0];
   *text = buffer.substr(kHeader, size);
@@ -71,8 +72,8 @@ bool receiveRequest(int fd, std::string* request) {
   return kind == 'Q';
 }
 
-[[noreturn]] void serveForever(pid_t parent, int fd, const Worker::Serve& serve, const Worker::Finish& finish,
-                               const ChildLimits& limits) {
+[[noreturn]] void serveForever(pid_t parent, int fd, const Worker::Serve& serve,
+                               const Worker::Finish& finish, const ChildLimits& limits) {
   prepareChild(parent, limits);
   if (fd != kWorkerFd) {
     dup2(fd, kWorkerFd);
@@ -150,7 +151,8 @@ ChildEnd Worker::reap(ChildEnd::How how_if_alive, double grace_seconds) {
   int wstatus = 0;
   pid_t done = waitpid(pid_, &wstatus, WNOHANG);
   // A child that closed its socket is ending: it gets a moment to be gone.
-  for (const auto start = std::chrono::steady_clock::now(); done == 0 && since(start) < grace_seconds;) {
+  for (const auto start = std::chrono::steady_clock::now();
+       done == 0 && since(start) < grace_seconds;) {
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
     done = waitpid(pid_, &wstatus, WNOHANG);
   }
@@ -159,7 +161,8 @@ ChildEnd Worker::reap(ChildEnd::How how_if_alive, double grace_seconds) {
     while ((done = waitpid(pid_, &wstatus, 0)) < 0 && errno == EINTR) {
     }
     end.how = how_if_alive;
-    if (how_if_alive == ChildEnd::How::NotStarted) end.error = "the worker process stopped answering and did not end";
+    if (how_if_alive == ChildEnd::How::NotStarted)
+      end.error = "the worker process stopped answering and did not end";
   } else if (done == pid_ && WIFSIGNALED(wstatus)) {
     end.how = ChildEnd::How::Signaled;
     end.code = WTERMSIG(wstatus);

@@ -34,8 +34,8 @@ class Worker {
     bool replied = false;  // the child answered; otherwise `end` says how it ended
     bool threw = false;    // the answer is the message of an exception `serve` threw
     std::string text;
-    ChildEnd end;          // replied: how = Exited, code 0
-    double seconds = 0;    // from the request sent to the reply (or the end)
+    ChildEnd end;        // replied: how = Exited, code 0
+    double seconds = 0;  // from the request sent to the reply (or the end)
   };
 
   Worker(Serve serve, Finish finish, ChildLimits limits);

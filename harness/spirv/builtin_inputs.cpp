@@ -32,9 +32,11 @@ spv_result_t collect(void* user, const spv_parsed_instruction_t* in) {
     Module::EntryPoint ep{reinterpret_cast<const char*>(in->words + name.offset), {}};
     for (uint16_t i = 3; i < in->num_operands; ++i) ep.interface.push_back(operandWord(*in, i));
     m.entry_points.push_back(std::move(ep));
-  } else if (in->opcode == kOpDecorate && in->num_operands >= 3 && operandWord(*in, 1) == kDecorationBuiltIn) {
+  } else if (in->opcode == kOpDecorate && in->num_operands >= 3 &&
+             operandWord(*in, 1) == kDecorationBuiltIn) {
     m.builtin_of[operandWord(*in, 0)] = operandWord(*in, 2);
-  } else if (in->opcode == kOpVariable && in->num_operands >= 3 && operandWord(*in, 2) == kStorageInput) {
+  } else if (in->opcode == kOpVariable && in->num_operands >= 3 &&
+             operandWord(*in, 2) == kStorageInput) {
     m.inputs.insert(in->result_id);
   }
   return SPV_SUCCESS;
@@ -45,7 +47,8 @@ spv_result_t collect(void* user, const spv_parsed_instruction_t* in) {
 std::string duplicateBuiltinInputs(const std::vector<uint32_t>& words) {
   Module m;
   spv_context context = spvContextCreate(SPV_ENV_VULKAN_1_2);
-  const spv_result_t parsed = spvBinaryParse(context, &m, words.data(), words.size(), nullptr, collect, nullptr);
+  const spv_result_t parsed =
+      spvBinaryParse(context, &m, words.data(), words.size(), nullptr, collect, nullptr);
   spvContextDestroy(context);
   if (parsed != SPV_SUCCESS) return "the module could not be parsed for its built-in inputs\n";
   std::string problems;

@@ -60,10 +60,10 @@ void glslToSpirv(const std::string& glsl, Stage stage, std::vector<uint32_t>& wo
 std::string validate(const std::vector<uint32_t>& words) {
   spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_2);
   std::string messages;
-  tools.SetMessageConsumer([&messages](spv_message_level_t, const char*,
-                                       const spv_position_t& pos, const char* msg) {
-    messages += "spirv-val (word " + std::to_string(pos.index) + "): " + msg + "\n";
-  });
+  tools.SetMessageConsumer(
+      [&messages](spv_message_level_t, const char*, const spv_position_t& pos, const char* msg) {
+        messages += "spirv-val (word " + std::to_string(pos.index) + "): " + msg + "\n";
+      });
   if (tools.Validate(words)) return duplicateBuiltinInputs(words);
   if (messages.empty()) messages = "spirv-val: invalid module\n";
   return messages;

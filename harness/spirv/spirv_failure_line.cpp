@@ -20,8 +20,8 @@ std::vector<uint32_t> debugBuild(const std::string& glsl, Stage stage) {
   glslang::TShader shader(lang);
   const char* text = glsl.c_str();
   setUpShader(shader, &text, lang);
-  const auto messages = static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules |
-                                                 EShMsgDebugInfo);
+  const auto messages =
+      static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules | EShMsgDebugInfo);
   if (!shader.parse(GetDefaultResources(), 460, false, messages)) return {};
   glslang::TProgram program;
   program.addShader(&shader);
@@ -56,11 +56,11 @@ std::string describeSpirvFailure(const std::string& glsl, Stage stage) {
   spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_2);
   size_t index = 0;
   bool failed = false;
-  tools.SetMessageConsumer([&](spv_message_level_t, const char*, const spv_position_t& pos,
-                               const char*) {
-    if (!failed) index = pos.index;
-    failed = true;
-  });
+  tools.SetMessageConsumer(
+      [&](spv_message_level_t, const char*, const spv_position_t& pos, const char*) {
+        if (!failed) index = pos.index;
+        failed = true;
+      });
   if (tools.Validate(words) || !failed) return {};
   const uint32_t line = lineOfInstruction(words, index);
   if (line == 0) return {};

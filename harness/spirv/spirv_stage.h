@@ -10,12 +10,18 @@ namespace rayspec {
 
 inline EShLanguage glslangStage(Stage s) {
   switch (s) {
-    case Stage::Raygen: return EShLangRayGen;
-    case Stage::Miss: return EShLangMiss;
-    case Stage::ClosestHit: return EShLangClosestHit;
-    case Stage::AnyHit: return EShLangAnyHit;
-    case Stage::Intersection: return EShLangIntersect;
-    case Stage::Callable: return EShLangCallable;
+    case Stage::Raygen:
+      return EShLangRayGen;
+    case Stage::Miss:
+      return EShLangMiss;
+    case Stage::ClosestHit:
+      return EShLangClosestHit;
+    case Stage::AnyHit:
+      return EShLangAnyHit;
+    case Stage::Intersection:
+      return EShLangIntersect;
+    case Stage::Callable:
+      return EShLangCallable;
   }
   return EShLangRayGen;
 }

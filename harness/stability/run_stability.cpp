@@ -33,8 +33,8 @@ std::vector<StabilityCase> stabilityCases(const RunOptions& run) {
       try {
         c.magnitude = std::stod(value);
       } catch (const std::exception&) {
-        std::fprintf(stderr, "rayspec stability: %s: magnitude '%s' is not a number; left out\n", f.path.c_str(),
-                     value.c_str());
+        std::fprintf(stderr, "rayspec stability: %s: magnitude '%s' is not a number; left out\n",
+                     f.path.c_str(), value.c_str());
         continue;
       }
       out.push_back(c);
@@ -58,13 +58,17 @@ bool countBundle(const std::string& dir, LeakCounts* counts, std::string* device
 int runStability(const StabilityOptions& opt) {
   const std::vector<StabilityCase> cases = stabilityCases(opt.run);
   if (cases.empty()) {
-    std::fprintf(stderr, "rayspec stability: no case matching '%s' in %s has a `magnitude` sweep parameter\n",
-                 opt.run.filter.c_str(), opt.run.cases_dir.c_str());
+    std::fprintf(
+        stderr,
+        "rayspec stability: no case matching '%s' in %s has a `magnitude` sweep parameter\n",
+        opt.run.filter.c_str(), opt.run.cases_dir.c_str());
     return kExitSetup;
   }
   const bool with_device = !opt.run.no_device;
   const std::string runs = opt.out + "/runs";
-  if (const int rc = runTiers({opt.run, {opt.run.filter}, opt.tiers, runs, "stability"}); rc != kExitPass) return rc;
+  if (const int rc = runTiers({opt.run, {opt.run.filter}, opt.tiers, runs, "stability"});
+      rc != kExitPass)
+    return rc;
   std::vector<StabilityEntry> entries;
   bool exact_clean = true;
   for (const StabilityCase& c : cases)
@@ -75,8 +79,11 @@ int runStability(const StabilityOptions& opt) {
         addCounts(entries, e);
         if (tier == "exact" && (e.counts.leaks || e.counts.doubles)) {
           exact_clean = false;
-          std::fprintf(stderr, "rayspec stability: %s: the exact tier leaks %llu and double-hits %llu rays\n",
-                       c.name.c_str(), (unsigned long long)e.counts.leaks, (unsigned long long)e.counts.doubles);
+          std::fprintf(
+              stderr,
+              "rayspec stability: %s: the exact tier leaks %llu and double-hits %llu rays\n",
+              c.name.c_str(), (unsigned long long)e.counts.leaks,
+              (unsigned long long)e.counts.doubles);
         }
       }
       std::string device;
@@ -96,9 +103,12 @@ int runStability(const StabilityOptions& opt) {
   std::filesystem::create_directories(opt.out);
   const std::string table = formatStabilityTable(entries);
   std::string error = writeTextFile(opt.out + "/stability.txt", table);
-  if (error.empty()) error = writeTextFile(opt.out + "/stability.json", stabilityJson(entries).dump(2) + "\n");
-  if (error.empty()) error = writeLinePlots(opt.out + "/stability.png", stabilityPanels(entries), {2, 640, 440});
-  std::printf("\n%s\nReport: %s/stability.txt, stability.json, stability.png\n", table.c_str(), opt.out.c_str());
+  if (error.empty())
+    error = writeTextFile(opt.out + "/stability.json", stabilityJson(entries).dump(2) + "\n");
+  if (error.empty())
+    error = writeLinePlots(opt.out + "/stability.png", stabilityPanels(entries), {2, 640, 440});
+  std::printf("\n%s\nReport: %s/stability.txt, stability.json, stability.png\n", table.c_str(),
+              opt.out.c_str());
   if (!error.empty()) {
     std::fprintf(stderr, "rayspec stability: %s\n", error.c_str());
     return kExitFailing;

@@ -14,9 +14,11 @@
 namespace rayspec {
 
 struct StabilityOptions {
-  RunOptions run;  // the device, cases folder, filter, limits, baseline of the runs (run.out is set per run)
+  RunOptions run;  // the device, cases folder, filter, limits, baseline of the runs (run.out is set
+                   // per run)
   std::string out = "rayspec-stability";
-  std::vector<std::string> tiers = {"fast", "robust", "exact"};  // the device runs beside the exact tier
+  std::vector<std::string> tiers = {"fast", "robust",
+                                    "exact"};  // the device runs beside the exact tier
   // Run folders of other devices (a run-only binary's `rayspec run` on a
   // machine that only holds a driver): their device bundles counted too.
   std::vector<std::string> saved_devices;

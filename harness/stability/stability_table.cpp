@@ -24,8 +24,8 @@ std::vector<std::pair<double, std::string>> magnitudes(const std::vector<Stabili
   return {m.begin(), m.end()};
 }
 
-const StabilityEntry* find(const std::vector<StabilityEntry>& entries, const std::string& family, double magnitude,
-                           const std::string& source) {
+const StabilityEntry* find(const std::vector<StabilityEntry>& entries, const std::string& family,
+                           double magnitude, const std::string& source) {
   for (const StabilityEntry& e : entries)
     if (e.family == family && e.magnitude == magnitude && e.source == source) return &e;
   return nullptr;
@@ -52,7 +52,8 @@ std::vector<std::string> stabilitySources(const std::vector<StabilityEntry>& ent
 std::string formatStabilityTable(const std::vector<StabilityEntry>& entries) {
   const std::vector<std::string> sources = stabilitySources(entries);
   char buf[128];
-  std::string out = "Leaks and double hits per 1000 rays aimed inside planar meshes (leak / double)\n";
+  std::string out =
+      "Leaks and double hits per 1000 rays aimed inside planar meshes (leak / double)\n";
   std::snprintf(buf, sizeof buf, "%-14s %9s %6s", "family", "magnitude", "rays");
   out += buf;
   for (const std::string& s : sources) {
@@ -65,12 +66,16 @@ std::string formatStabilityTable(const std::vector<StabilityEntry>& entries) {
       uint64_t rays = 0;
       for (const std::string& s : sources)
         if (const StabilityEntry* e = find(entries, f, m, s)) rays = std::max(rays, e->counts.rays);
-      std::snprintf(buf, sizeof buf, "%-14s %9s %6llu", f.c_str(), text.c_str(), (unsigned long long)rays);
+      std::snprintf(buf, sizeof buf, "%-14s %9s %6llu", f.c_str(), text.c_str(),
+                    (unsigned long long)rays);
       out += buf;
       for (const std::string& s : sources) {
         const StabilityEntry* e = find(entries, f, m, s);
-        if (e) std::snprintf(buf, sizeof buf, " | %8.1f %8.1f", e->counts.leakRate(), e->counts.doubleRate());
-        else std::snprintf(buf, sizeof buf, " | %17s", "-");
+        if (e)
+          std::snprintf(buf, sizeof buf, " | %8.1f %8.1f", e->counts.leakRate(),
+                        e->counts.doubleRate());
+        else
+          std::snprintf(buf, sizeof buf, " | %17s", "-");
         out += buf;
       }
       out += "\n";

@@ -10,9 +10,12 @@
 
 namespace rayspec {
 
-std::string tierRunDir(const std::string& out, const std::string& tier) { return out + "/" + tier; }
+std::string tierRunDir(const std::string& out, const std::string& tier) {
+  return out + "/" + tier;
+}
 
-std::vector<std::string> tierRunCases(const RunOptions& run, const std::vector<std::string>& filters) {
+std::vector<std::string> tierRunCases(const RunOptions& run,
+                                      const std::vector<std::string>& filters) {
   std::vector<std::string> names;
   for (const CaseFile& f : findCasesAny(run.cases_dir, filters)) names.push_back(f.name);
   return names;
@@ -30,8 +33,8 @@ int runTiers(const TierRuns& runs) {
     o.no_model = false;
     o.no_device = !with_device || tier != "exact";
     o.out = tierRunDir(runs.out, tier);
-    std::printf("== %s: %s, model %s tier%s ==\n", runs.command.c_str(), globs.c_str(), tier.c_str(),
-                o.no_device ? "" : " and the device");
+    std::printf("== %s: %s, model %s tier%s ==\n", runs.command.c_str(), globs.c_str(),
+                tier.c_str(), o.no_device ? "" : " and the device");
     std::fflush(stdout);
     const int rc = runCases(o);
     if (rc == kExitSetup || rc >= 128) return rc;

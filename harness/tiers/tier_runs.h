@@ -15,10 +15,11 @@
 namespace rayspec {
 
 struct TierRuns {
-  RunOptions run;  // device, cases folder, limits, baseline (run.filter and run.out are set per run)
+  RunOptions
+      run;  // device, cases folder, limits, baseline (run.filter and run.out are set per run)
   std::vector<std::string> filters;  // globs: the set is every case matching one of them
   std::vector<std::string> tiers = {"fast", "robust", "exact"};  // the device runs beside "exact"
-  std::string out;      // the run folders: out/<tier>
+  std::string out;                                               // the run folders: out/<tier>
   std::string command;  // "stability": names the progress lines and notes
 };
 
@@ -26,7 +27,8 @@ struct TierRuns {
 std::string tierRunDir(const std::string& out, const std::string& tier);
 
 // The names of the cases matching any of the globs, sorted, each once.
-std::vector<std::string> tierRunCases(const RunOptions& run, const std::vector<std::string>& filters);
+std::vector<std::string> tierRunCases(const RunOptions& run,
+                                      const std::vector<std::string>& filters);
 
 // Runs every tier (the device too unless run.no_device), one `rayspec run`
 // of every case matching a glob (RunOptions::filters) into the tier's

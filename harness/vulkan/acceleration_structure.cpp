@@ -81,7 +81,9 @@ void describeBlas(const Blas& blas, InputPacker& packer, BlasBuild& b) {
 
 void patchAddresses(BlasBuild& b, VkDeviceAddress base) {
   for (size_t i = 0; i < b.geometries.size(); ++i) {
-    auto at = [&](uint64_t off) { return off == kNone ? VkDeviceAddress(0) : base + off; };
+    auto at = [&](uint64_t off) {
+      return off == kNone ? VkDeviceAddress(0) : base + off;
+    };
     VkAccelerationStructureGeometryKHR& geo = b.geometries[i];
     if (geo.geometryType == VK_GEOMETRY_TYPE_TRIANGLES_KHR) {
       geo.geometry.triangles.vertexData.deviceAddress = at(b.offsets[3 * i]);
@@ -93,8 +95,9 @@ void patchAddresses(BlasBuild& b, VkDeviceAddress base) {
   }
 }
 
-VkAccelerationStructureBuildGeometryInfoKHR buildInfo(VkAccelerationStructureTypeKHR type,
-                                                      const std::vector<VkAccelerationStructureGeometryKHR>& geos) {
+VkAccelerationStructureBuildGeometryInfoKHR buildInfo(
+    VkAccelerationStructureTypeKHR type,
+    const std::vector<VkAccelerationStructureGeometryKHR>& geos) {
   VkAccelerationStructureBuildGeometryInfoKHR info{
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
   info.type = type;
@@ -107,13 +110,15 @@ VkAccelerationStructureBuildGeometryInfoKHR buildInfo(VkAccelerationStructureTyp
 
 // Creates the structure's storage buffer and the structure; returns its
 // build scratch size.
-VkAccelerationStructureKHR createStructure(const VulkanContext& ctx, VkAccelerationStructureTypeKHR type,
-                                           VkDeviceSize size, Cleanup& cleanup) {
+VkAccelerationStructureKHR createStructure(const VulkanContext& ctx,
+                                           VkAccelerationStructureTypeKHR type, VkDeviceSize size,
+                                           Cleanup& cleanup) {
   Buffer storage = createBuffer(ctx, size,
                                 VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR |
                                     VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
                                 MemoryUse::Device, cleanup);
-  VkAccelerationStructureCreateInfoKHR info{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR};
+  VkAccelerationStructureCreateInfoKHR info{
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR};
   info.buffer = storage.buffer;
   info.size = size;
   info.type = type;
@@ -152,7 +157,8 @@ VkAccelerationStructureKHR recordSceneBuild(const VulkanContext& ctx, const Scen
 
   Buffer inputs;
   if (!packer.bytes().empty())
-    inputs = createUploadBuffer(ctx, packer.bytes().data(), packer.bytes().size(), kInputUsage, cleanup);
+    inputs =
+        createUploadBuffer(ctx, packer.bytes().data(), packer.bytes().size(), kInputUsage, cleanup);
 
   // Sizes, structures and scratch offsets of the BLASes.
   std::vector<VkAccelerationStructureBuildGeometryInfoKHR> infos;
@@ -165,8 +171,10 @@ VkAccelerationStructureKHR recordSceneBuild(const VulkanContext& ctx, const Scen
     patchAddresses(b, inputs.address);
     VkAccelerationStructureBuildGeometryInfoKHR info =
         buildInfo(VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, b.geometries);
-    VkAccelerationStructureBuildSizesInfoKHR sizes{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
-    ctx.fn.getAccelerationStructureBuildSizes(ctx.device, VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
+    VkAccelerationStructureBuildSizesInfoKHR sizes{
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
+    ctx.fn.getAccelerationStructureBuildSizes(ctx.device,
+                                              VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
                                               &info, b.max_primitives.data(), &sizes);
     b.handle = createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR,
                                sizes.accelerationStructureSize, cleanup);
@@ -195,32 +203,37 @@ VkAccelerationStructureKHR recordSceneBuild(const VulkanContext& ctx, const Scen
         inst.blas && *inst.blas < builds.size() ? builds[*inst.blas].address : 0;
     instances.push_back(vi);
   }
-  Buffer instance_buffer = createUploadBuffer(ctx, instances.data(),
-                                              instances.size() * sizeof(VkAccelerationStructureInstanceKHR),
-                                              kInputUsage, cleanup);
+  Buffer instance_buffer = createUploadBuffer(
+      ctx, instances.data(), instances.size() * sizeof(VkAccelerationStructureInstanceKHR),
+      kInputUsage, cleanup);
   std::vector<VkAccelerationStructureGeometryKHR> tlas_geo(1);
   tlas_geo[0].sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR;
   tlas_geo[0].geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
-  tlas_geo[0].geometry.instances.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
+  tlas_geo[0].geometry.instances.sType =
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
   tlas_geo[0].geometry.instances.arrayOfPointers = VK_FALSE;
   tlas_geo[0].geometry.instances.data.deviceAddress = instance_buffer.address;
   VkAccelerationStructureBuildGeometryInfoKHR tlas_info =
       buildInfo(VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, tlas_geo);
   uint32_t instance_count = static_cast<uint32_t>(instances.size());
-  VkAccelerationStructureBuildSizesInfoKHR tlas_sizes{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
-  ctx.fn.getAccelerationStructureBuildSizes(ctx.device, VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
+  VkAccelerationStructureBuildSizesInfoKHR tlas_sizes{
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
+  ctx.fn.getAccelerationStructureBuildSizes(ctx.device,
+                                            VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
                                             &tlas_info, &instance_count, &tlas_sizes);
-  VkAccelerationStructureKHR tlas = createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
-                                                    tlas_sizes.accelerationStructureSize, cleanup);
+  VkAccelerationStructureKHR tlas =
+      createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
+                      tlas_sizes.accelerationStructureSize, cleanup);
   tlas_info.dstAccelerationStructure = tlas;
   scratch_total = alignUp(scratch_total, scratch_align);
   VkDeviceSize tlas_scratch = scratch_total;
   scratch_total += tlas_sizes.buildScratchSize;
 
   // One scratch buffer; its address aligned up to the scratch alignment.
-  Buffer scratch = createBuffer(ctx, scratch_total + scratch_align,
-                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-                                MemoryUse::Device, cleanup);
+  Buffer scratch =
+      createBuffer(ctx, scratch_total + scratch_align,
+                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                   MemoryUse::Device, cleanup);
   VkDeviceAddress scratch_base = alignUp(scratch.address, scratch_align);
   for (size_t i = 0; i < infos.size(); ++i)
     infos[i].scratchData.deviceAddress = scratch_base + scratch_offsets[i];

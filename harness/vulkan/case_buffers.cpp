@@ -20,7 +20,8 @@ bool isFloatField(const std::string& field) {
 }  // namespace
 
 ImageExtent imageExtent(uint32_t launch_width, uint32_t launch_height, uint32_t max_dimension) {
-  if (launch_width <= max_dimension && launch_height <= max_dimension) return {launch_width, launch_height};
+  if (launch_width <= max_dimension && launch_height <= max_dimension)
+    return {launch_width, launch_height};
   const uint64_t rays = uint64_t(launch_width) * launch_height;
   const uint64_t rows = (rays + max_dimension - 1) / max_dimension;
   if (rows > max_dimension)
@@ -35,7 +36,8 @@ std::set<uint32_t> caseBindings(const Plan& plan, const std::set<uint32_t>& decl
   if (plan.records) b.insert(kBindingRecords);
   if (!plan.counters.empty()) b.insert(kBindingCounters);
   if (plan.scene_data) b.insert(kBindingScene);
-  for (size_t i = 0; i < plan.images.size(); ++i) b.insert(kBindingFirstImage + static_cast<uint32_t>(i));
+  for (size_t i = 0; i < plan.images.size(); ++i)
+    b.insert(kBindingFirstImage + static_cast<uint32_t>(i));
   for (uint32_t d : declared) {
     if (d >= kBindingFirstImage + plan.images.size())
       throw VulkanError("shaders declare binding " + std::to_string(d) +
@@ -51,8 +53,9 @@ CaseBuffers createCaseBuffers(const VulkanContext& ctx, const Case& c, const Pla
   out.bindings = bindings;
   std::vector<uint32_t> packed = packRays(c.rays);
   if (packed.size() * 4 > ctx.info.max_storage_buffer_range)
-    throw NotSupportedError(std::to_string(c.rays.rays.size()) + " rays take " + std::to_string(packed.size() * 4) +
-                            " bytes > maxStorageBufferRange " + std::to_string(ctx.info.max_storage_buffer_range));
+    throw NotSupportedError(std::to_string(c.rays.rays.size()) + " rays take " +
+                            std::to_string(packed.size() * 4) + " bytes > maxStorageBufferRange " +
+                            std::to_string(ctx.info.max_storage_buffer_range));
   out.rays = createUploadBuffer(ctx, packed.data(), packed.size() * 4, kStorage, cleanup);
   const uint64_t rays = static_cast<uint64_t>(c.rays.width) * c.rays.height;
   if (bindings.count(kBindingRecords)) {
@@ -79,11 +82,12 @@ CaseBuffers createCaseBuffers(const VulkanContext& ctx, const Case& c, const Pla
   for (const ImageOutput& img : plan.images) {
     bool is_float = isFloatField(img.field);
     out.image_float.push_back(is_float);
-    out.images.push_back(createStorageImage(ctx, out.image_extent.width, out.image_extent.height,
-                                            is_float ? VK_FORMAT_R32G32B32A32_SFLOAT : VK_FORMAT_R32_UINT,
-                                            cleanup));
+    out.images.push_back(
+        createStorageImage(ctx, out.image_extent.width, out.image_extent.height,
+                           is_float ? VK_FORMAT_R32G32B32A32_SFLOAT : VK_FORMAT_R32_UINT, cleanup));
     out.image_readback.push_back(createBuffer(ctx, texels * (is_float ? 16 : 4),
-                                              VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Host, cleanup));
+                                              VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Host,
+                                              cleanup));
   }
   return out;
 }
@@ -110,7 +114,8 @@ std::vector<DescriptorItem> descriptorItems(const CaseBuffers& b, VkAcceleration
   return items;
 }
 
-void readResults(const CaseBuffers& b, const Plan& plan, uint32_t width, uint32_t height, Results& r) {
+void readResults(const CaseBuffers& b, const Plan& plan, uint32_t width, uint32_t height,
+                 Results& r) {
   const uint64_t rays = static_cast<uint64_t>(width) * height;
   if (b.records.mapped) {
     const uint32_t* words = static_cast<const uint32_t*>(b.records.mapped);

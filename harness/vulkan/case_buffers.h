@@ -31,10 +31,10 @@ struct CaseBuffers {
   std::set<uint32_t> bindings;  // the bindings in use
   ImageExtent image_extent;     // of every image
   Buffer rays, records, counters, scene;
-  Buffer records_ref;  // bound at kBindingRecords: the device address of `records`
-  std::vector<StorageImage> images;   // parallel to plan.images
-  std::vector<bool> image_float;      // rgba32f (else r32ui)
-  std::vector<Buffer> image_readback; // host copies of the images
+  Buffer records_ref;                  // bound at kBindingRecords: the device address of `records`
+  std::vector<StorageImage> images;    // parallel to plan.images
+  std::vector<bool> image_float;       // rgba32f (else r32ui)
+  std::vector<Buffer> image_readback;  // host copies of the images
 };
 
 // The bindings the plan needs (TLAS and rays always; records when
@@ -53,6 +53,7 @@ std::vector<DescriptorItem> descriptorItems(const CaseBuffers& b, VkAcceleration
 
 // records, counters (by plan.counters name) and images into r, after the
 // trace finished.
-void readResults(const CaseBuffers& b, const Plan& plan, uint32_t width, uint32_t height, Results& r);
+void readResults(const CaseBuffers& b, const Plan& plan, uint32_t width, uint32_t height,
+                 Results& r);
 
 }  // namespace rayspec

@@ -43,7 +43,8 @@ void submitAndWait(const VulkanContext& ctx, VkCommandBuffer cmd, uint64_t timeo
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &cmd;
   vkCheck(vkQueueSubmit(ctx.queue, 1, &submit, fence), "vkQueueSubmit");
-  vkCall("vkWaitForFences", [&] { return vkWaitForFences(ctx.device, 1, &fence, VK_TRUE, timeout_ns); });
+  vkCall("vkWaitForFences",
+         [&] { return vkWaitForFences(ctx.device, 1, &fence, VK_TRUE, timeout_ns); });
 }
 
 }  // namespace rayspec

@@ -32,7 +32,8 @@ struct VulkanContext {
   uint32_t queue_family = 0;
   VkQueue queue = VK_NULL_HANDLE;
   DeviceFunctions fn;
-  VkPipelineCache pipeline_cache = VK_NULL_HANDLE;  // vulkan/pipeline_cache.h; none on a device per case
+  VkPipelineCache pipeline_cache =
+      VK_NULL_HANDLE;  // vulkan/pipeline_cache.h; none on a device per case
 };
 
 // instance.cpp: creates ctx.instance (+ validation layer and messenger when

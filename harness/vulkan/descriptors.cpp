@@ -8,13 +8,14 @@ namespace rayspec {
 namespace {
 
 constexpr VkShaderStageFlags kRayTracingStages =
-    VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_MISS_BIT_KHR | VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR |
-    VK_SHADER_STAGE_ANY_HIT_BIT_KHR | VK_SHADER_STAGE_INTERSECTION_BIT_KHR | VK_SHADER_STAGE_CALLABLE_BIT_KHR;
+    VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_MISS_BIT_KHR |
+    VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR | VK_SHADER_STAGE_ANY_HIT_BIT_KHR |
+    VK_SHADER_STAGE_INTERSECTION_BIT_KHR | VK_SHADER_STAGE_CALLABLE_BIT_KHR;
 
 }  // namespace
 
-VkDescriptorSetLayout createSetLayout(const VulkanContext& ctx, const std::vector<DescriptorItem>& items,
-                                      Cleanup& cleanup) {
+VkDescriptorSetLayout createSetLayout(const VulkanContext& ctx,
+                                      const std::vector<DescriptorItem>& items, Cleanup& cleanup) {
   std::vector<VkDescriptorSetLayoutBinding> bindings;
   for (const DescriptorItem& it : items) {
     VkDescriptorSetLayoutBinding b{};
@@ -28,7 +29,8 @@ VkDescriptorSetLayout createSetLayout(const VulkanContext& ctx, const std::vecto
   info.bindingCount = static_cast<uint32_t>(bindings.size());
   info.pBindings = bindings.data();
   VkDescriptorSetLayout layout = VK_NULL_HANDLE;
-  vkCheck(vkCreateDescriptorSetLayout(ctx.device, &info, nullptr, &layout), "vkCreateDescriptorSetLayout");
+  vkCheck(vkCreateDescriptorSetLayout(ctx.device, &info, nullptr, &layout),
+          "vkCreateDescriptorSetLayout");
   VkDevice device = ctx.device;
   cleanup.add([device, layout] { vkDestroyDescriptorSetLayout(device, layout, nullptr); });
   return layout;
@@ -82,7 +84,8 @@ VkDescriptorSet createDescriptorSet(const VulkanContext& ctx, VkDescriptorSetLay
     }
     writes.push_back(w);
   }
-  vkUpdateDescriptorSets(ctx.device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
+  vkUpdateDescriptorSets(ctx.device, static_cast<uint32_t>(writes.size()), writes.data(), 0,
+                         nullptr);
   return set;
 }
 

@@ -29,7 +29,8 @@ DeviceErrorStatus classifyVulkanError(const VulkanError& e) {
     s.detail = "device lost: " + call + " returned " + result + "; the next case gets a new device";
   } else if (e.result == VK_ERROR_OUT_OF_DEVICE_MEMORY || e.result == VK_ERROR_OUT_OF_HOST_MEMORY) {
     s.status = RunStatus::NotSupported;
-    s.detail = "out of memory: " + call + " returned " + result + "; the device cannot hold this case";
+    s.detail =
+        "out of memory: " + call + " returned " + result + "; the device cannot hold this case";
   } else if (e.call == "vkCreateRayTracingPipelinesKHR") {
     s.status = RunStatus::Refused;
     s.detail = "the driver refused the pipeline: " + call + " returned " + result +

@@ -20,7 +20,8 @@ DeviceFunctions loadDeviceFunctions(VkDevice device) {
   load(device, "vkCreateAccelerationStructureKHR", &f.createAccelerationStructure);
   load(device, "vkDestroyAccelerationStructureKHR", &f.destroyAccelerationStructure);
   load(device, "vkGetAccelerationStructureBuildSizesKHR", &f.getAccelerationStructureBuildSizes);
-  load(device, "vkGetAccelerationStructureDeviceAddressKHR", &f.getAccelerationStructureDeviceAddress);
+  load(device, "vkGetAccelerationStructureDeviceAddressKHR",
+       &f.getAccelerationStructureDeviceAddress);
   load(device, "vkCmdBuildAccelerationStructuresKHR", &f.cmdBuildAccelerationStructures);
   load(device, "vkCreateRayTracingPipelinesKHR", &f.createRayTracingPipelines);
   load(device, "vkGetRayTracingShaderGroupHandlesKHR", &f.getRayTracingShaderGroupHandles);

@@ -32,28 +32,27 @@ std::string lower(std::string s) {
   return s;
 }
 
-}  // namespace
+// Appends a structure to a pNext chain whose end is *next.
+template <typename T>
+void chain(void**& next, T& s) {
+  *next = &s;
+  next = &s.pNext;
+}
 
-DeviceInfo describeDevice(VkPhysicalDevice physical, uint32_t index) {
-  DeviceInfo d;
-  d.index = index;
+// The ray tracing and acceleration structure extensions the device lists.
+void readExtensions(VkPhysicalDevice physical, DeviceInfo& d) {
   uint32_t count = 0;
   vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, nullptr);
   std::vector<VkExtensionProperties> exts(count);
   vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, exts.data());
-  bool rt_ext = hasDeviceExtension(exts, VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME);
-  bool as_ext = hasDeviceExtension(exts, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME) &&
-                hasDeviceExtension(exts, VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME);
+  d.ray_tracing_extension = hasDeviceExtension(exts, VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME);
+  d.acceleration_structure_extension =
+      hasDeviceExtension(exts, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME) &&
+      hasDeviceExtension(exts, VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME);
+}
 
-  VkPhysicalDeviceProperties base{};
-  vkGetPhysicalDeviceProperties(physical, &base);
-  d.name = base.deviceName;
-  d.api_version = versionString(base.apiVersion);
-  d.api_version_number = base.apiVersion;
-  d.ray_tracing_extension = rt_ext;
-  d.acceleration_structure_extension = as_ext;
-  bool vk12 = base.apiVersion >= VK_API_VERSION_1_2;
-
+// Identity (UUIDs, driver) and the ray tracing pipeline's properties.
+void readProperties(VkPhysicalDevice physical, DeviceInfo& d) {
   VkPhysicalDeviceRayTracingPipelinePropertiesKHR rt{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_PROPERTIES_KHR};
   VkPhysicalDeviceAccelerationStructurePropertiesKHR as{
@@ -62,32 +61,22 @@ DeviceInfo describeDevice(VkPhysicalDevice physical, uint32_t index) {
   VkPhysicalDeviceIDProperties id{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ID_PROPERTIES};
   VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
   void** next = &props.pNext;
-  const bool vk11 = base.apiVersion >= VK_API_VERSION_1_1;
-  if (vk11) { *next = &id; next = &id.pNext; }
-  if (vk12) { *next = &driver; next = &driver.pNext; }
-  if (rt_ext) { *next = &rt; next = &rt.pNext; }
-  if (as_ext) { *next = &as; next = &as.pNext; }
+  const bool vk11 = d.api_version_number >= VK_API_VERSION_1_1;
+  const bool vk12 = d.api_version_number >= VK_API_VERSION_1_2;
+  if (vk11) chain(next, id);
+  if (vk12) chain(next, driver);
+  if (d.ray_tracing_extension) chain(next, rt);
+  if (d.acceleration_structure_extension) chain(next, as);
   vkGetPhysicalDeviceProperties2(physical, &props);
   d.cpu = props.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-  if (vk11) d.device_uuid = hexBytes(id.deviceUUID, VK_UUID_SIZE) + "-" + hexBytes(id.driverUUID, VK_UUID_SIZE);
+  if (vk11)
+    d.device_uuid =
+        hexBytes(id.deviceUUID, VK_UUID_SIZE) + "-" + hexBytes(id.driverUUID, VK_UUID_SIZE);
   if (vk12) {
     d.driver_name = driver.driverName;
     d.driver_info = driver.driverInfo;
   }
-
-  VkPhysicalDeviceRayTracingPipelineFeaturesKHR rt_features{
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
-  VkPhysicalDeviceAccelerationStructureFeaturesKHR as_features{
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
-  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
-  next = &features.pNext;
-  if (rt_ext) { *next = &rt_features; next = &rt_features.pNext; }
-  if (as_ext) { *next = &as_features; next = &as_features.pNext; }
-  vkGetPhysicalDeviceFeatures2(physical, &features);
-
-  d.ray_tracing_pipeline = vk12 && rt_ext && rt_features.rayTracingPipeline;
-  d.acceleration_structure = vk12 && as_ext && as_features.accelerationStructure;
-  if (rt_ext) {
+  if (d.ray_tracing_extension) {
     d.shader_group_handle_size = rt.shaderGroupHandleSize;
     d.shader_group_handle_alignment = rt.shaderGroupHandleAlignment;
     d.shader_group_base_alignment = rt.shaderGroupBaseAlignment;
@@ -96,11 +85,45 @@ DeviceInfo describeDevice(VkPhysicalDevice physical, uint32_t index) {
     d.max_shader_group_stride = rt.maxShaderGroupStride;
     d.max_ray_dispatch_invocation_count = rt.maxRayDispatchInvocationCount;
   }
-  d.acceleration_structure_host_commands = as_ext && as_features.accelerationStructureHostCommands;
+}
+
+// Whether ray tracing pipelines and acceleration structures are enabled.
+void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
+  VkPhysicalDeviceRayTracingPipelineFeaturesKHR rt_features{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
+  VkPhysicalDeviceAccelerationStructureFeaturesKHR as_features{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
+  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  void** next = &features.pNext;
+  if (d.ray_tracing_extension) chain(next, rt_features);
+  if (d.acceleration_structure_extension) chain(next, as_features);
+  vkGetPhysicalDeviceFeatures2(physical, &features);
+  const bool vk12 = d.api_version_number >= VK_API_VERSION_1_2;
+  d.ray_tracing_pipeline = vk12 && d.ray_tracing_extension && rt_features.rayTracingPipeline;
+  d.acceleration_structure =
+      vk12 && d.acceleration_structure_extension && as_features.accelerationStructure;
+  d.acceleration_structure_host_commands =
+      d.acceleration_structure_extension && as_features.accelerationStructureHostCommands;
+}
+
+}  // namespace
+
+DeviceInfo describeDevice(VkPhysicalDevice physical, uint32_t index) {
+  DeviceInfo d;
+  d.index = index;
+  VkPhysicalDeviceProperties base{};
+  vkGetPhysicalDeviceProperties(physical, &base);
+  d.name = base.deviceName;
+  d.api_version = versionString(base.apiVersion);
+  d.api_version_number = base.apiVersion;
   d.max_image_dimension_2d = base.limits.maxImageDimension2D;
   d.max_storage_buffer_range = base.limits.maxStorageBufferRange;
   for (int k = 0; k < 3; ++k)
-    d.max_launch_size[k] = uint64_t(base.limits.maxComputeWorkGroupCount[k]) * base.limits.maxComputeWorkGroupSize[k];
+    d.max_launch_size[k] =
+        uint64_t(base.limits.maxComputeWorkGroupCount[k]) * base.limits.maxComputeWorkGroupSize[k];
+  readExtensions(physical, d);
+  readProperties(physical, d);
+  readFeatures(physical, d);
   return d;
 }
 
@@ -144,7 +167,8 @@ std::vector<DeviceInfo> listDevices(std::string* error) {
   try {
     createInstance(ctx, false);
     uint32_t count = 0;
-    vkCheck(vkEnumeratePhysicalDevices(ctx.instance, &count, nullptr), "vkEnumeratePhysicalDevices");
+    vkCheck(vkEnumeratePhysicalDevices(ctx.instance, &count, nullptr),
+            "vkEnumeratePhysicalDevices");
     std::vector<VkPhysicalDevice> physicals(count);
     vkCheck(vkEnumeratePhysicalDevices(ctx.instance, &count, physicals.data()),
             "vkEnumeratePhysicalDevices");

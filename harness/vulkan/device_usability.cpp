@@ -15,9 +15,12 @@ DeviceUsability deviceUsability(const DeviceInfo& d) {
 
 std::string usabilityReason(DeviceUsability u, const DeviceInfo& d) {
   switch (u) {
-    case DeviceUsability::Usable: return "usable";
-    case DeviceUsability::ApiBelow12: return "Vulkan " + d.api_version + " is below 1.2";
-    case DeviceUsability::NoRayTracingPipelineExtension: return "no VK_KHR_ray_tracing_pipeline";
+    case DeviceUsability::Usable:
+      return "usable";
+    case DeviceUsability::ApiBelow12:
+      return "Vulkan " + d.api_version + " is below 1.2";
+    case DeviceUsability::NoRayTracingPipelineExtension:
+      return "no VK_KHR_ray_tracing_pipeline";
     case DeviceUsability::NoRayTracingPipelineFeature:
       return "VK_KHR_ray_tracing_pipeline without the rayTracingPipeline feature";
     case DeviceUsability::NoAccelerationStructureExtension:

@@ -27,9 +27,11 @@ std::string libraryWithoutLayers(uint32_t index) {
   try {
     createInstance(plain, false);
     uint32_t count = 0;
-    vkCheck(vkEnumeratePhysicalDevices(plain.instance, &count, nullptr), "vkEnumeratePhysicalDevices");
+    vkCheck(vkEnumeratePhysicalDevices(plain.instance, &count, nullptr),
+            "vkEnumeratePhysicalDevices");
     std::vector<VkPhysicalDevice> physicals(count);
-    vkCheck(vkEnumeratePhysicalDevices(plain.instance, &count, physicals.data()), "vkEnumeratePhysicalDevices");
+    vkCheck(vkEnumeratePhysicalDevices(plain.instance, &count, physicals.data()),
+            "vkEnumeratePhysicalDevices");
     if (index < count) {
       plain.physical = physicals[index];
       createDevice(plain);

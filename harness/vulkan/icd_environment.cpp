@@ -19,7 +19,8 @@ IcdSelection useIcdFiles(const std::vector<std::string>& files) {
   if (list.empty()) return s;
   for (const char* name : {"VK_DRIVER_FILES", "VK_ICD_FILENAMES", "VK_ADD_DRIVER_FILES"})
     if (const char* old = std::getenv(name); old && *old)
-      s.notes.push_back(std::string("--icd overrides ") + name + "=" + old + " from the environment");
+      s.notes.push_back(std::string("--icd overrides ") + name + "=" + old +
+                        " from the environment");
   setenv("VK_DRIVER_FILES", list.c_str(), 1);
   setenv("VK_ICD_FILENAMES", list.c_str(), 1);
   unsetenv("VK_ADD_DRIVER_FILES");

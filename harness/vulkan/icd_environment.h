@@ -11,9 +11,9 @@
 namespace rayspec {
 
 struct IcdSelection {
-  std::string error;                // a file missing or not a readable manifest: names it (a setup error)
-  std::vector<std::string> notes;   // variables of the user's environment that --icd overrides
-  std::vector<std::string> files;   // the manifests, absolute
+  std::string error;  // a file missing or not a readable manifest: names it (a setup error)
+  std::vector<std::string> notes;  // variables of the user's environment that --icd overrides
+  std::vector<std::string> files;  // the manifests, absolute
 };
 
 IcdSelection useIcdFiles(const std::vector<std::string>& files);

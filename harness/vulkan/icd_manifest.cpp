@@ -30,17 +30,21 @@ std::string env(const char* name) {
   return v ? v : "";
 }
 
-std::string orDefault(const std::string& value, const std::string& fallback) { return value.empty() ? fallback : value; }
+std::string orDefault(const std::string& value, const std::string& fallback) {
+  return value.empty() ? fallback : value;
+}
 
 // The loader's standard folders (Linux), in its order.
 std::vector<std::string> standardFolders() {
   const std::string home = env("HOME");
   std::vector<std::string> bases;
   bases.push_back(orDefault(env("XDG_CONFIG_HOME"), home.empty() ? "" : home + "/.config"));
-  for (const std::string& d : splitList(orDefault(env("XDG_CONFIG_DIRS"), "/etc/xdg"))) bases.push_back(d);
+  for (const std::string& d : splitList(orDefault(env("XDG_CONFIG_DIRS"), "/etc/xdg")))
+    bases.push_back(d);
   bases.push_back("/etc");
   bases.push_back(orDefault(env("XDG_DATA_HOME"), home.empty() ? "" : home + "/.local/share"));
-  for (const std::string& d : splitList(orDefault(env("XDG_DATA_DIRS"), "/usr/local/share:/usr/share")))
+  for (const std::string& d :
+       splitList(orDefault(env("XDG_DATA_DIRS"), "/usr/local/share:/usr/share")))
     bases.push_back(d);
   std::vector<std::string> out;
   for (const std::string& b : bases)
@@ -49,7 +53,8 @@ std::vector<std::string> standardFolders() {
 }
 
 // A list entry: a manifest file, or a folder of them (*.json, sorted).
-void addEntry(const std::string& entry, bool from_folder_search, IcdSearch& search, std::set<std::string>& seen) {
+void addEntry(const std::string& entry, bool from_folder_search, IcdSearch& search,
+              std::set<std::string>& seen) {
   std::error_code ec;
   std::vector<std::string> files;
   if (fs::is_directory(entry, ec)) {
@@ -63,8 +68,10 @@ void addEntry(const std::string& entry, bool from_folder_search, IcdSearch& sear
     const std::string key = fs::weakly_canonical(f, ec).string();
     if (!seen.insert(key.empty() ? f : key).second) continue;
     std::string error;
-    if (std::optional<IcdManifest> m = readIcdManifest(f, &error)) search.manifests.push_back(*m);
-    else search.errors.push_back(error);
+    if (std::optional<IcdManifest> m = readIcdManifest(f, &error))
+      search.manifests.push_back(*m);
+    else
+      search.errors.push_back(error);
   }
 }
 
@@ -91,7 +98,8 @@ std::optional<IcdManifest> readIcdManifest(const std::string& path, std::string*
   IcdManifest m;
   m.path = fs::absolute(path, ec).lexically_normal().string();
   m.library_path = icd["library_path"];
-  if (icd.contains("api_version") && icd["api_version"].is_string()) m.api_version = icd["api_version"];
+  if (icd.contains("api_version") && icd["api_version"].is_string())
+    m.api_version = icd["api_version"];
   return m;
 }
 
@@ -100,12 +108,14 @@ IcdSearch findIcdManifests() {
   std::set<std::string> seen;
   const std::string driver_files = env("VK_DRIVER_FILES"), icd_filenames = env("VK_ICD_FILENAMES");
   if (!driver_files.empty() || !icd_filenames.empty()) {
-    search.source = driver_files.empty() ? IcdSource::IcdFilenamesVariable : IcdSource::DriverFilesVariable;
+    search.source =
+        driver_files.empty() ? IcdSource::IcdFilenamesVariable : IcdSource::DriverFilesVariable;
     search.places = splitList(driver_files.empty() ? icd_filenames : driver_files);
   } else {
     search.places = standardFolders();
   }
-  for (const std::string& added : splitList(env("VK_ADD_DRIVER_FILES"))) addEntry(added, false, search, seen);
+  for (const std::string& added : splitList(env("VK_ADD_DRIVER_FILES")))
+    addEntry(added, false, search, seen);
   for (const std::string& place : search.places)
     addEntry(place, search.source == IcdSource::StandardFolders, search, seen);
   return search;
@@ -113,9 +123,12 @@ IcdSearch findIcdManifests() {
 
 std::string icdSourceName(IcdSource s) {
   switch (s) {
-    case IcdSource::DriverFilesVariable: return "VK_DRIVER_FILES";
-    case IcdSource::IcdFilenamesVariable: return "VK_ICD_FILENAMES";
-    case IcdSource::StandardFolders: break;
+    case IcdSource::DriverFilesVariable:
+      return "VK_DRIVER_FILES";
+    case IcdSource::IcdFilenamesVariable:
+      return "VK_ICD_FILENAMES";
+    case IcdSource::StandardFolders:
+      break;
   }
   return "the loader's standard folders";
 }
@@ -123,7 +136,9 @@ std::string icdSourceName(IcdSource s) {
 std::string icdLibraryToLoad(const IcdManifest& m) {
   if (m.library_path.find('/') == std::string::npos) return m.library_path;
   const fs::path lib(m.library_path);
-  return (lib.is_absolute() ? lib : fs::path(m.path).parent_path() / lib).lexically_normal().string();
+  return (lib.is_absolute() ? lib : fs::path(m.path).parent_path() / lib)
+      .lexically_normal()
+      .string();
 }
 
 bool icdLibraryMatches(const IcdManifest& m, const std::string& loaded) {
@@ -134,7 +149,8 @@ bool icdLibraryMatches(const IcdManifest& m, const std::string& loaded) {
   return !a && !b && x == y;
 }
 
-const IcdManifest* manifestOfLibrary(const std::vector<IcdManifest>& manifests, const std::string& loaded) {
+const IcdManifest* manifestOfLibrary(const std::vector<IcdManifest>& manifests,
+                                     const std::string& loaded) {
   if (loaded.empty()) return nullptr;
   for (const IcdManifest& m : manifests)
     if (icdLibraryMatches(m, loaded)) return &m;
@@ -146,11 +162,13 @@ std::string icdLoadFailure(const IcdManifest& m) {
   void* handle = dlopen(lib.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle) {
     const char* why = dlerror();
-    return "the driver library " + lib + " could not be loaded: " + (why ? why : "(no reason given)");
+    return "the driver library " + lib +
+           " could not be loaded: " + (why ? why : "(no reason given)");
   }
   const bool entry = dlsym(handle, "vk_icdGetInstanceProcAddr") != nullptr;
   dlclose(handle);
-  if (!entry) return "the driver library " + lib + " has no vk_icdGetInstanceProcAddr (not a Vulkan driver)";
+  if (!entry)
+    return "the driver library " + lib + " has no vk_icdGetInstanceProcAddr (not a Vulkan driver)";
   return {};
 }
 

@@ -26,9 +26,9 @@ enum class IcdSource { DriverFilesVariable, IcdFilenamesVariable, StandardFolder
 
 struct IcdSearch {
   IcdSource source = IcdSource::StandardFolders;
-  std::vector<std::string> places;    // the variable's entries, or the folders searched
+  std::vector<std::string> places;  // the variable's entries, or the folders searched
   std::vector<IcdManifest> manifests;
-  std::vector<std::string> errors;    // manifests that could not be read, one message each
+  std::vector<std::string> errors;  // manifests that could not be read, one message each
 };
 
 // The manifests the loader would read now: VK_DRIVER_FILES (or, when that is
@@ -47,7 +47,8 @@ std::string icdLibraryToLoad(const IcdManifest& m);
 bool icdLibraryMatches(const IcdManifest& m, const std::string& loaded);
 
 // The manifest among `manifests` whose library is `loaded`; nullptr if none.
-const IcdManifest* manifestOfLibrary(const std::vector<IcdManifest>& manifests, const std::string& loaded);
+const IcdManifest* manifestOfLibrary(const std::vector<IcdManifest>& manifests,
+                                     const std::string& loaded);
 
 // Why m's driver cannot serve the loader: the library cannot be opened (the
 // dynamic linker's message) or lacks vk_icdGetInstanceProcAddr; "" when it

@@ -23,7 +23,8 @@ bool hasInstanceExtension(const char* name, const char* layer) {
   uint32_t count = 0;
   if (vkEnumerateInstanceExtensionProperties(layer, &count, nullptr) != VK_SUCCESS) return false;
   std::vector<VkExtensionProperties> exts(count);
-  if (vkEnumerateInstanceExtensionProperties(layer, &count, exts.data()) != VK_SUCCESS) return false;
+  if (vkEnumerateInstanceExtensionProperties(layer, &count, exts.data()) != VK_SUCCESS)
+    return false;
   for (const VkExtensionProperties& e : exts)
     if (std::strcmp(e.extensionName, name) == 0) return true;
   return false;

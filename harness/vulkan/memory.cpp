@@ -7,8 +7,8 @@
 namespace rayspec {
 namespace {
 
-uint32_t findMemoryType(const VulkanContext& ctx, uint32_t type_bits, VkMemoryPropertyFlags required,
-                        VkMemoryPropertyFlags preferred) {
+uint32_t findMemoryType(const VulkanContext& ctx, uint32_t type_bits,
+                        VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred) {
   for (int pass = 0; pass < 2; ++pass) {
     VkMemoryPropertyFlags want = pass == 0 ? (required | preferred) : required;
     for (uint32_t i = 0; i < ctx.memory.memoryTypeCount; ++i) {
@@ -28,8 +28,9 @@ VkDeviceMemory allocate(const VulkanContext& ctx, const VkMemoryRequirements& re
   info.allocationSize = req.size;
   info.memoryTypeIndex =
       use == MemoryUse::Host
-          ? findMemoryType(ctx, req.memoryTypeBits,
-                           VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, 0)
+          ? findMemoryType(
+                ctx, req.memoryTypeBits,
+                VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, 0)
           : findMemoryType(ctx, req.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   VkDeviceMemory memory = VK_NULL_HANDLE;
   vkCall("vkAllocateMemory", [&] { return vkAllocateMemory(ctx.device, &info, nullptr, &memory); });

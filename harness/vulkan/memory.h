@@ -20,9 +20,9 @@ enum class MemoryUse {
 struct Buffer {
   VkBuffer buffer = VK_NULL_HANDLE;
   VkDeviceMemory memory = VK_NULL_HANDLE;
-  VkDeviceSize size = 0;           // as asked for (the buffer is at least 16 bytes)
-  VkDeviceAddress address = 0;     // when usage has SHADER_DEVICE_ADDRESS
-  void* mapped = nullptr;          // MemoryUse::Host
+  VkDeviceSize size = 0;        // as asked for (the buffer is at least 16 bytes)
+  VkDeviceAddress address = 0;  // when usage has SHADER_DEVICE_ADDRESS
+  void* mapped = nullptr;       // MemoryUse::Host
 };
 
 // A zero size gives a 16-byte buffer (Vulkan forbids empty buffers).
@@ -42,6 +42,5 @@ struct StorageImage {
 // 2D, optimal tiling, usage STORAGE | TRANSFER_SRC | TRANSFER_DST, layout UNDEFINED.
 StorageImage createStorageImage(const VulkanContext& ctx, uint32_t width, uint32_t height,
                                 VkFormat format, Cleanup& cleanup);
-
 
 }  // namespace rayspec

@@ -21,12 +21,18 @@ CompiledShader compileOne(const GeneratedShader& g, StepCosts* costs) {
 
 VkShaderStageFlagBits vkStage(Stage s) {
   switch (s) {
-    case Stage::Raygen: return VK_SHADER_STAGE_RAYGEN_BIT_KHR;
-    case Stage::Miss: return VK_SHADER_STAGE_MISS_BIT_KHR;
-    case Stage::ClosestHit: return VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR;
-    case Stage::AnyHit: return VK_SHADER_STAGE_ANY_HIT_BIT_KHR;
-    case Stage::Intersection: return VK_SHADER_STAGE_INTERSECTION_BIT_KHR;
-    case Stage::Callable: return VK_SHADER_STAGE_CALLABLE_BIT_KHR;
+    case Stage::Raygen:
+      return VK_SHADER_STAGE_RAYGEN_BIT_KHR;
+    case Stage::Miss:
+      return VK_SHADER_STAGE_MISS_BIT_KHR;
+    case Stage::ClosestHit:
+      return VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR;
+    case Stage::AnyHit:
+      return VK_SHADER_STAGE_ANY_HIT_BIT_KHR;
+    case Stage::Intersection:
+      return VK_SHADER_STAGE_INTERSECTION_BIT_KHR;
+    case Stage::Callable:
+      return VK_SHADER_STAGE_CALLABLE_BIT_KHR;
   }
   return VK_SHADER_STAGE_RAYGEN_BIT_KHR;
 }
@@ -51,7 +57,9 @@ class StageList {
     stages_.push_back(stage);
     return static_cast<uint32_t>(stages_.size() - 1);
   }
-  uint32_t add(const std::optional<CompiledShader>& s) { return s ? add(*s) : VK_SHADER_UNUSED_KHR; }
+  uint32_t add(const std::optional<CompiledShader>& s) {
+    return s ? add(*s) : VK_SHADER_UNUSED_KHR;
+  }
   const std::vector<VkPipelineShaderStageCreateInfo>& stages() const { return stages_; }
 
  private:
@@ -61,9 +69,11 @@ class StageList {
 };
 
 VkRayTracingShaderGroupCreateInfoKHR group(VkRayTracingShaderGroupTypeKHR type) {
-  VkRayTracingShaderGroupCreateInfoKHR g{VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR};
+  VkRayTracingShaderGroupCreateInfoKHR g{
+      VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR};
   g.type = type;
-  g.generalShader = g.closestHitShader = g.anyHitShader = g.intersectionShader = VK_SHADER_UNUSED_KHR;
+  g.generalShader = g.closestHitShader = g.anyHitShader = g.intersectionShader =
+      VK_SHADER_UNUSED_KHR;
   return g;
 }
 
@@ -80,7 +90,8 @@ CompiledPipeline compilePipeline(const GeneratedPipeline& generated, StepCosts* 
     if (g.intersection) cg.intersection = compileOne(*g.intersection, costs);
     out.hit_groups.push_back(std::move(cg));
   }
-  for (const GeneratedShader& s : generated.callables) out.callables.push_back(compileOne(s, costs));
+  for (const GeneratedShader& s : generated.callables)
+    out.callables.push_back(compileOne(s, costs));
   return out;
 }
 
@@ -130,17 +141,20 @@ VkPipeline createRayTracingPipeline(const VulkanContext& ctx, const CompiledPipe
   info.layout = layout;
   VkPipeline pipeline = VK_NULL_HANDLE;
   vkCall("vkCreateRayTracingPipelinesKHR", [&] {
-    return ctx.fn.createRayTracingPipelines(ctx.device, VK_NULL_HANDLE, ctx.pipeline_cache, 1, &info, nullptr, &pipeline);
+    return ctx.fn.createRayTracingPipelines(ctx.device, VK_NULL_HANDLE, ctx.pipeline_cache, 1,
+                                            &info, nullptr, &pipeline);
   });
   VkDevice device = ctx.device;
   cleanup.add([device, pipeline] { vkDestroyPipeline(device, pipeline, nullptr); });
   return pipeline;
 }
 
-std::vector<uint8_t> groupHandles(const VulkanContext& ctx, VkPipeline pipeline, uint32_t group_count) {
-  std::vector<uint8_t> handles(static_cast<size_t>(group_count) * ctx.rt_props.shaderGroupHandleSize);
-  vkCheck(ctx.fn.getRayTracingShaderGroupHandles(ctx.device, pipeline, 0, group_count, handles.size(),
-                                                 handles.data()),
+std::vector<uint8_t> groupHandles(const VulkanContext& ctx, VkPipeline pipeline,
+                                  uint32_t group_count) {
+  std::vector<uint8_t> handles(static_cast<size_t>(group_count) *
+                               ctx.rt_props.shaderGroupHandleSize);
+  vkCheck(ctx.fn.getRayTracingShaderGroupHandles(ctx.device, pipeline, 0, group_count,
+                                                 handles.size(), handles.data()),
           "vkGetRayTracingShaderGroupHandlesKHR");
   return handles;
 }

@@ -56,6 +56,7 @@ VkPipeline createRayTracingPipeline(const VulkanContext& ctx, const CompiledPipe
                                     VkPipelineCreateFlags flags, Cleanup& cleanup);
 
 // The group handles, sbtGroupCount * shaderGroupHandleSize bytes.
-std::vector<uint8_t> groupHandles(const VulkanContext& ctx, VkPipeline pipeline, uint32_t group_count);
+std::vector<uint8_t> groupHandles(const VulkanContext& ctx, VkPipeline pipeline,
+                                  uint32_t group_count);
 
 }  // namespace rayspec

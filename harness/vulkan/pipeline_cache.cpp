@@ -33,7 +33,8 @@ std::string& cacheDir() {
 std::string cacheFile(const VulkanContext& ctx) {
   std::lock_guard<std::mutex> lock(dirMutex());
   if (cacheDir().empty() || ctx.info.device_uuid.empty()) return {};
-  return cacheDir() + "/" + ctx.info.device_uuid + "-" + std::to_string(ctx.props.driverVersion) + ".bin";
+  return cacheDir() + "/" + ctx.info.device_uuid + "-" + std::to_string(ctx.props.driverVersion) +
+         ".bin";
 }
 
 // The header every pipeline cache starts with (VkPipelineCacheHeaderVersionOne):
@@ -42,7 +43,8 @@ bool headerMatches(const std::vector<char>& data, const VkPhysicalDeviceProperti
   VkPipelineCacheHeaderVersionOne header{};
   if (data.size() < sizeof header) return false;
   std::memcpy(&header, data.data(), sizeof header);
-  return header.headerSize >= sizeof header && header.headerVersion == VK_PIPELINE_CACHE_HEADER_VERSION_ONE &&
+  return header.headerSize >= sizeof header &&
+         header.headerVersion == VK_PIPELINE_CACHE_HEADER_VERSION_ONE &&
          header.vendorID == props.vendorID && header.deviceID == props.deviceID &&
          std::memcmp(header.pipelineCacheUUID, props.pipelineCacheUUID, VK_UUID_SIZE) == 0;
 }
@@ -72,7 +74,8 @@ VkPipelineCache openPipelineCache(const VulkanContext& ctx) {
   info.initialDataSize = data.size();
   info.pInitialData = data.empty() ? nullptr : data.data();
   VkPipelineCache cache = VK_NULL_HANDLE;
-  if (vkCreatePipelineCache(ctx.device, &info, nullptr, &cache) != VK_SUCCESS) return VK_NULL_HANDLE;
+  if (vkCreatePipelineCache(ctx.device, &info, nullptr, &cache) != VK_SUCCESS)
+    return VK_NULL_HANDLE;
   return cache;
 }
 
@@ -82,7 +85,9 @@ namespace {
 std::vector<char> cacheData(const VulkanContext& ctx, VkPipelineCache cache) {
   size_t size = 0;
   std::vector<char> data;
-  if (vkGetPipelineCacheData(ctx.device, cache, &size, nullptr) != VK_SUCCESS || size > kMaxCacheBytes) return data;
+  if (vkGetPipelineCacheData(ctx.device, cache, &size, nullptr) != VK_SUCCESS ||
+      size > kMaxCacheBytes)
+    return data;
   data.resize(size);
   if (vkGetPipelineCacheData(ctx.device, cache, &size, data.data()) != VK_SUCCESS) return {};
   data.resize(std::min(size, data.size()));

@@ -14,8 +14,10 @@ namespace rayspec {
 namespace {
 
 constexpr uint64_t kTraceTimeoutNs = 240ull * 1000 * 1000 * 1000;
-constexpr uint32_t kPipelineSkipTriangles = 0x1000;  // VK_PIPELINE_CREATE_RAY_TRACING_SKIP_TRIANGLES_BIT_KHR
-constexpr uint32_t kPipelineSkipAabbs = 0x2000;      // VK_PIPELINE_CREATE_RAY_TRACING_SKIP_AABBS_BIT_KHR
+constexpr uint32_t kPipelineSkipTriangles =
+    0x1000;  // VK_PIPELINE_CREATE_RAY_TRACING_SKIP_TRIANGLES_BIT_KHR
+constexpr uint32_t kPipelineSkipAabbs =
+    0x2000;  // VK_PIPELINE_CREATE_RAY_TRACING_SKIP_AABBS_BIT_KHR
 
 // Waits for the device before destroying the case's objects, on every path.
 struct CaseScope {
@@ -42,23 +44,28 @@ bool usesSkipRayFlags(const Rays& rays) {
 
 void checkCaseSupport(const VulkanContext& ctx, const Case& c) {
   const DeviceInfo& d = ctx.info;
-  if (c.rays.rays.size() != static_cast<size_t>(c.rays.width) * c.rays.height || c.rays.rays.empty())
+  if (c.rays.rays.size() != static_cast<size_t>(c.rays.width) * c.rays.height ||
+      c.rays.rays.empty())
     throw VulkanError("case has " + std::to_string(c.rays.rays.size()) + " rays for a " +
                       std::to_string(c.rays.width) + "x" + std::to_string(c.rays.height) +
                       " launch: VK_ERROR_UNKNOWN");
   if (c.pipeline.max_recursion > d.max_ray_recursion_depth)
     throw NotSupportedError("max_recursion " + std::to_string(c.pipeline.max_recursion) +
-                            " > device maxRayRecursionDepth " + std::to_string(d.max_ray_recursion_depth));
+                            " > device maxRayRecursionDepth " +
+                            std::to_string(d.max_ray_recursion_depth));
   if (c.rays.width > d.max_launch_size[0] || c.rays.height > d.max_launch_size[1])
-    throw NotSupportedError("launch " + std::to_string(c.rays.width) + "x" + std::to_string(c.rays.height) +
-                            " > maxComputeWorkGroupCount * maxComputeWorkGroupSize (" +
-                            std::to_string(d.max_launch_size[0]) + "x" + std::to_string(d.max_launch_size[1]) + ")");
+    throw NotSupportedError(
+        "launch " + std::to_string(c.rays.width) + "x" + std::to_string(c.rays.height) +
+        " > maxComputeWorkGroupCount * maxComputeWorkGroupSize (" +
+        std::to_string(d.max_launch_size[0]) + "x" + std::to_string(d.max_launch_size[1]) + ")");
   uint64_t launch = static_cast<uint64_t>(c.rays.width) * c.rays.height;
   if (launch > d.max_ray_dispatch_invocation_count)
-    throw NotSupportedError("launch of " + std::to_string(launch) + " rays > maxRayDispatchInvocationCount " +
+    throw NotSupportedError("launch of " + std::to_string(launch) +
+                            " rays > maxRayDispatchInvocationCount " +
                             std::to_string(d.max_ray_dispatch_invocation_count));
   if (!ctx.primitive_culling &&
-      ((c.pipeline.flags & (kPipelineSkipTriangles | kPipelineSkipAabbs)) || usesSkipRayFlags(c.rays)))
+      ((c.pipeline.flags & (kPipelineSkipTriangles | kPipelineSkipAabbs)) ||
+       usesSkipRayFlags(c.rays)))
     throw NotSupportedError("skip_triangles / skip_aabbs need rayTraversalPrimitiveCulling");
   // The shader binding table's shape (pipeline.sbt.record_data / padding):
   // a stride above maxShaderGroupStride, or any layout the device's limits
@@ -67,13 +74,13 @@ void checkCaseSupport(const VulkanContext& ctx, const Case& c) {
   const Pipeline& p = c.pipeline;
   std::string error;
   if (!checkSbtLayout(computeSbtLayout(limits, p), limits, &error))
-    throw NotSupportedError(error + " (a record is the " + std::to_string(limits.handle_size) +
-                            "-byte handle + pipeline.sbt.record_data " + std::to_string(p.sbt_record_data) +
-                            " + pipeline.sbt.padding: miss " + std::to_string(p.sbt_padding.miss) + ", hit " +
-                            std::to_string(p.sbt_padding.hit) + ", callable " +
-                            std::to_string(p.sbt_padding.callable) +
-                            " bytes, aligned up to shaderGroupHandleAlignment " +
-                            std::to_string(limits.handle_alignment) + ")");
+    throw NotSupportedError(
+        error + " (a record is the " + std::to_string(limits.handle_size) +
+        "-byte handle + pipeline.sbt.record_data " + std::to_string(p.sbt_record_data) +
+        " + pipeline.sbt.padding: miss " + std::to_string(p.sbt_padding.miss) + ", hit " +
+        std::to_string(p.sbt_padding.hit) + ", callable " + std::to_string(p.sbt_padding.callable) +
+        " bytes, aligned up to shaderGroupHandleAlignment " +
+        std::to_string(limits.handle_alignment) + ")");
 }
 
 void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results& r) {
@@ -105,8 +112,8 @@ void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results&
   VkPipelineLayout pipeline_layout = createPipelineLayout(ctx, set_layout, cleanup);
   layout_time.stop();
   StepTimer pipeline_time(r.cost, CostStep::PipelineCreation);
-  VkPipeline pipeline = createRayTracingPipeline(ctx, compiled, pipeline_layout, c.pipeline.max_recursion,
-                                                 c.pipeline.flags, cleanup);
+  VkPipeline pipeline = createRayTracingPipeline(
+      ctx, compiled, pipeline_layout, c.pipeline.max_recursion, c.pipeline.flags, cleanup);
   pipeline_time.stop();
   StepTimer sbt_time(r.cost, CostStep::Sbt);
   SbtBuffer sbt = createSbtBuffer(ctx, c.pipeline, pipeline, cleanup);
@@ -118,7 +125,8 @@ void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results&
   StepTimer trace_time(r.cost, CostStep::Trace);
   VkCommandBuffer cmd = beginCommands(ctx, cleanup);
   recordImageClears(cmd, buffers.images);
-  recordTrace(ctx, cmd, pipeline, pipeline_layout, set, sbt.layout, sbt.base, c.rays.width, c.rays.height);
+  recordTrace(ctx, cmd, pipeline, pipeline_layout, set, sbt.layout, sbt.base, c.rays.width,
+              c.rays.height);
   recordReadback(cmd, buffers.images, buffers.image_readback, buffers.image_extent.width,
                  buffers.image_extent.height);
   submitAndWait(ctx, cmd, kTraceTimeoutNs);

@@ -17,7 +17,8 @@ SbtLimits deviceSbtLimits(const VulkanContext& ctx) {
   return l;
 }
 
-SbtBuffer createSbtBuffer(const VulkanContext& ctx, const Pipeline& p, VkPipeline pipeline, Cleanup& cleanup) {
+SbtBuffer createSbtBuffer(const VulkanContext& ctx, const Pipeline& p, VkPipeline pipeline,
+                          Cleanup& cleanup) {
   SbtLimits limits = deviceSbtLimits(ctx);
   SbtBuffer out;
   out.layout = computeSbtLayout(limits, p);
@@ -27,12 +28,13 @@ SbtBuffer createSbtBuffer(const VulkanContext& ctx, const Pipeline& p, VkPipelin
   std::vector<uint8_t> bytes;
   if (!writeSbt(out.layout, limits, p, handles, &bytes, &error))
     throw VulkanError(error + ": VK_ERROR_UNKNOWN");
-  Buffer buffer = createBuffer(ctx, bytes.size() + limits.base_alignment,
-                               VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR |
-                                   VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-                               MemoryUse::Host, cleanup);
+  Buffer buffer = createBuffer(
+      ctx, bytes.size() + limits.base_alignment,
+      VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+      MemoryUse::Host, cleanup);
   out.base = alignUp(buffer.address, limits.base_alignment);
-  std::memcpy(static_cast<uint8_t*>(buffer.mapped) + (out.base - buffer.address), bytes.data(), bytes.size());
+  std::memcpy(static_cast<uint8_t*>(buffer.mapped) + (out.base - buffer.address), bytes.data(),
+              bytes.size());
   return out;
 }
 

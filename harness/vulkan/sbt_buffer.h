@@ -20,6 +20,7 @@ struct SbtBuffer {
 
 // Throws NotSupportedError for a layout the device's limits refuse (run_case
 // checks that before building anything), VulkanError for a bad record.
-SbtBuffer createSbtBuffer(const VulkanContext& ctx, const Pipeline& p, VkPipeline pipeline, Cleanup& cleanup);
+SbtBuffer createSbtBuffer(const VulkanContext& ctx, const Pipeline& p, VkPipeline pipeline,
+                          Cleanup& cleanup);
 
 }  // namespace rayspec

@@ -15,10 +15,10 @@ std::vector<SbtRecord> orDefault(const std::vector<SbtRecord>& given, size_t gro
   return out;
 }
 
-bool writeRecord(const SbtLimits& limits, uint32_t record_data, uint64_t at, std::optional<uint32_t> group,
-                 uint32_t group_base, uint32_t group_limit, const std::vector<uint32_t>& data,
-                 const std::vector<uint8_t>& handles, std::vector<uint8_t>* out,
-                 const std::string& what, std::string* error) {
+bool writeRecord(const SbtLimits& limits, uint32_t record_data, uint64_t at,
+                 std::optional<uint32_t> group, uint32_t group_base, uint32_t group_limit,
+                 const std::vector<uint32_t>& data, const std::vector<uint8_t>& handles,
+                 std::vector<uint8_t>* out, const std::string& what, std::string* error) {
   if (!group) return true;  // all-zero record (R-SBT-ZERO): handle and data stay zero
   if (*group >= group_limit) {
     *error = what + ": group " + std::to_string(*group) + " out of range (" +
@@ -36,7 +36,8 @@ bool writeRecord(const SbtLimits& limits, uint32_t record_data, uint64_t at, std
     return false;
   }
   std::memcpy(out->data() + at, handles.data() + src, limits.handle_size);
-  if (!data.empty()) std::memcpy(out->data() + at + limits.handle_size, data.data(), data.size() * 4);
+  if (!data.empty())
+    std::memcpy(out->data() + at + limits.handle_size, data.data(), data.size() * 4);
   return true;
 }
 
@@ -46,8 +47,8 @@ bool writeRegion(const SbtLimits& limits, uint32_t record_data, const SbtRegion&
                  std::string* error) {
   for (size_t i = 0; i < records.size(); ++i) {
     std::string what = std::string("sbt ") + name + " record " + std::to_string(i);
-    if (!writeRecord(limits, record_data, region.offset + i * region.stride, records[i].group, group_base,
-                     group_limit, records[i].data, handles, out, what, error))
+    if (!writeRecord(limits, record_data, region.offset + i * region.stride, records[i].group,
+                     group_base, group_limit, records[i].data, handles, out, what, error))
       return false;
   }
   return true;
@@ -58,7 +59,9 @@ bool writeRegion(const SbtLimits& limits, uint32_t record_data, const SbtRegion&
 uint32_t sbtGroupCount(const Pipeline& p) {
   return static_cast<uint32_t>(1 + p.miss.size() + p.hit_groups.size() + p.callables.size());
 }
-uint32_t sbtMissGroup(const Pipeline&, uint32_t i) { return 1 + i; }
+uint32_t sbtMissGroup(const Pipeline&, uint32_t i) {
+  return 1 + i;
+}
 uint32_t sbtHitGroup(const Pipeline& p, uint32_t i) {
   return static_cast<uint32_t>(1 + p.miss.size() + i);
 }
@@ -66,7 +69,9 @@ uint32_t sbtCallableGroup(const Pipeline& p, uint32_t i) {
   return static_cast<uint32_t>(1 + p.miss.size() + p.hit_groups.size() + i);
 }
 
-std::vector<SbtRecord> sbtMissRecords(const Pipeline& p) { return orDefault(p.sbt_miss, p.miss.size()); }
+std::vector<SbtRecord> sbtMissRecords(const Pipeline& p) {
+  return orDefault(p.sbt_miss, p.miss.size());
+}
 std::vector<SbtRecord> sbtHitRecords(const Pipeline& p) {
   return orDefault(p.sbt_hit, p.hit_groups.size());
 }
@@ -101,19 +106,26 @@ SbtLayout computeSbtLayout(const SbtLimits& limits, const Pipeline& p) {
 }
 
 bool checkSbtLayout(const SbtLayout& layout, const SbtLimits& limits, std::string* error) {
-  struct Named { const char* name; const SbtRegion* region; };
-  const Named regions[] = {{"raygen", &layout.raygen}, {"miss", &layout.miss},
-                           {"hit", &layout.hit}, {"callable", &layout.callable}};
+  struct Named {
+    const char* name;
+    const SbtRegion* region;
+  };
+  const Named regions[] = {{"raygen", &layout.raygen},
+                           {"miss", &layout.miss},
+                           {"hit", &layout.hit},
+                           {"callable", &layout.callable}};
   for (const Named& n : regions) {
     const SbtRegion& r = *n.region;
     std::string name = std::string("sbt ") + n.name + " region";
     if (r.size == 0) continue;
     if (r.offset % limits.base_alignment) {
-      *error = name + ": offset " + std::to_string(r.offset) + " not a multiple of shaderGroupBaseAlignment";
+      *error = name + ": offset " + std::to_string(r.offset) +
+               " not a multiple of shaderGroupBaseAlignment";
       return false;
     }
     if (r.stride % limits.handle_alignment) {
-      *error = name + ": stride " + std::to_string(r.stride) + " not a multiple of shaderGroupHandleAlignment";
+      *error = name + ": stride " + std::to_string(r.stride) +
+               " not a multiple of shaderGroupHandleAlignment";
       return false;
     }
     if (r.stride > limits.max_stride) {
@@ -147,7 +159,8 @@ bool writeSbt(const SbtLayout& layout, const SbtLimits& limits, const Pipeline& 
   raygen.data = p.raygen_data;
   const uint64_t need = static_cast<uint64_t>(sbtGroupCount(p)) * limits.handle_size;
   if (handles.size() < need) {
-    *error = "sbt: " + std::to_string(handles.size()) + " handle bytes, need " + std::to_string(need);
+    *error =
+        "sbt: " + std::to_string(handles.size()) + " handle bytes, need " + std::to_string(need);
     return false;
   }
   const uint32_t k = p.sbt_record_data;

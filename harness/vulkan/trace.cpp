@@ -8,8 +8,8 @@ VkStridedDeviceAddressRegionKHR region(VkDeviceAddress base, const SbtRegion& r)
   return {base + r.offset, r.stride, r.size};
 }
 
-VkImageMemoryBarrier imageBarrier(VkImage image, VkImageLayout from, VkImageLayout to, VkAccessFlags src,
-                                  VkAccessFlags dst) {
+VkImageMemoryBarrier imageBarrier(VkImage image, VkImageLayout from, VkImageLayout to,
+                                  VkAccessFlags src, VkAccessFlags dst) {
   VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
   b.srcAccessMask = src;
   b.dstAccessMask = dst;
@@ -27,28 +27,30 @@ void recordImageClears(VkCommandBuffer cmd, const std::vector<StorageImage>& ima
   if (images.empty()) return;
   std::vector<VkImageMemoryBarrier> to_general, to_shader;
   for (const StorageImage& img : images) {
-    to_general.push_back(imageBarrier(img.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, 0,
-                                      VK_ACCESS_TRANSFER_WRITE_BIT));
+    to_general.push_back(imageBarrier(img.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                                      0, VK_ACCESS_TRANSFER_WRITE_BIT));
     to_shader.push_back(imageBarrier(img.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
                                      VK_ACCESS_TRANSFER_WRITE_BIT,
                                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT));
   }
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0,
-                       nullptr, 0, nullptr, static_cast<uint32_t>(to_general.size()), to_general.data());
+                       nullptr, 0, nullptr, static_cast<uint32_t>(to_general.size()),
+                       to_general.data());
   VkClearColorValue zero{};
   VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
   for (const StorageImage& img : images)
     vkCmdClearColorImage(cmd, img.image, VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
-                       0, 0, nullptr, 0, nullptr, static_cast<uint32_t>(to_shader.size()),
-                       to_shader.data());
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, 0, 0, nullptr, 0, nullptr,
+                       static_cast<uint32_t>(to_shader.size()), to_shader.data());
 }
 
 void recordTrace(const VulkanContext& ctx, VkCommandBuffer cmd, VkPipeline pipeline,
                  VkPipelineLayout layout, VkDescriptorSet set, const SbtLayout& sbt,
                  VkDeviceAddress sbt_base, uint32_t width, uint32_t height) {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, layout, 0, 1, &set, 0, nullptr);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, layout, 0, 1, &set, 0,
+                          nullptr);
   VkStridedDeviceAddressRegionKHR raygen = region(sbt_base, sbt.raygen);
   VkStridedDeviceAddressRegionKHR miss = region(sbt_base, sbt.miss);
   VkStridedDeviceAddressRegionKHR hit = region(sbt_base, sbt.hit);
@@ -62,20 +64,21 @@ void recordReadback(VkCommandBuffer cmd, const std::vector<StorageImage>& images
   after_trace.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
   after_trace.dstAccessMask = VK_ACCESS_HOST_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT;
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
-                       VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &after_trace, 0,
-                       nullptr, 0, nullptr);
+                       VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1,
+                       &after_trace, 0, nullptr, 0, nullptr);
   if (images.empty()) return;
   for (size_t i = 0; i < images.size(); ++i) {
     VkBufferImageCopy copy{};
     copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     copy.imageExtent = {width, height, 1};
-    vkCmdCopyImageToBuffer(cmd, images[i].image, VK_IMAGE_LAYOUT_GENERAL, image_buffers[i].buffer, 1, &copy);
+    vkCmdCopyImageToBuffer(cmd, images[i].image, VK_IMAGE_LAYOUT_GENERAL, image_buffers[i].buffer,
+                           1, &copy);
   }
   VkMemoryBarrier after_copy{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   after_copy.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
   after_copy.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &after_copy,
-                       0, nullptr, 0, nullptr);
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                       &after_copy, 0, nullptr, 0, nullptr);
 }
 
 }  // namespace rayspec

@@ -4,7 +4,9 @@ namespace rayspec {
 
 const char* vkResultName(VkResult r) {
   switch (r) {
-#define RAYSPEC_CASE(x) case x: return #x;
+#define RAYSPEC_CASE(x) \
+  case x:               \
+    return #x;
     RAYSPEC_CASE(VK_SUCCESS)
     RAYSPEC_CASE(VK_NOT_READY)
     RAYSPEC_CASE(VK_TIMEOUT)
@@ -36,7 +38,8 @@ const char* vkResultName(VkResult r) {
     RAYSPEC_CASE(VK_ERROR_VALIDATION_FAILED_EXT)
     RAYSPEC_CASE(VK_ERROR_INVALID_SHADER_NV)
 #undef RAYSPEC_CASE
-    default: return "VK_ERROR_<unnamed>";
+    default:
+      return "VK_ERROR_<unnamed>";
   }
 }
 
@@ -47,7 +50,9 @@ InjectedVkError& injected() {
 }
 }  // namespace
 
-void injectVkError(const InjectedVkError& e) { injected() = e; }
+void injectVkError(const InjectedVkError& e) {
+  injected() = e;
+}
 
 bool injectedVkError(const char* call, VkResult* result) {
   if (injected().call.empty() || injected().call != call) return false;

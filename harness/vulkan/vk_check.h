@@ -37,7 +37,8 @@ struct InjectedVkError {
   VkResult result = VK_SUCCESS;
 };
 void injectVkError(const InjectedVkError& e);
-bool injectedVkError(const char* call, VkResult* result);  // true: do not call, *result is the answer
+bool injectedVkError(const char* call,
+                     VkResult* result);  // true: do not call, *result is the answer
 
 // vkCheck(make(), what), unless an injected error stands for the call.
 template <typename F>

@@ -13,9 +13,12 @@ namespace rayspec {
 
 VulkanBackend::VulkanBackend() : ctx_(std::make_unique<VulkanContext>()) {}
 
-VulkanBackend::~VulkanBackend() { close(); }
+VulkanBackend::~VulkanBackend() {
+  close();
+}
 
-std::unique_ptr<VulkanBackend> VulkanBackend::create(const VulkanOptions& options, std::string* error) {
+std::unique_ptr<VulkanBackend> VulkanBackend::create(const VulkanOptions& options,
+                                                     std::string* error) {
   std::unique_ptr<VulkanBackend> backend(new VulkanBackend());
   VulkanContext& ctx = *backend->ctx_;
   try {
@@ -23,7 +26,8 @@ std::unique_ptr<VulkanBackend> VulkanBackend::create(const VulkanOptions& option
     if (!selectDevice(ctx, options.device_filter, error)) return nullptr;
     createDevice(ctx);
     backend->has_device_ = true;
-    backend->device_per_case_ = options.device_per_case.value_or(devicePerCase(ctx.info.driver_name));
+    backend->device_per_case_ =
+        options.device_per_case.value_or(devicePerCase(ctx.info.driver_name));
     if (!backend->device_per_case_) ctx.pipeline_cache = openPipelineCache(ctx);
   } catch (const std::exception& e) {
     if (error) *error = e.what();
@@ -32,9 +36,13 @@ std::unique_ptr<VulkanBackend> VulkanBackend::create(const VulkanOptions& option
   return backend;
 }
 
-const DeviceInfo& VulkanBackend::device() const { return ctx_->info; }
+const DeviceInfo& VulkanBackend::device() const {
+  return ctx_->info;
+}
 
-bool VulkanBackend::validationEnabled() const { return ctx_->validation; }
+bool VulkanBackend::validationEnabled() const {
+  return ctx_->validation;
+}
 
 Results VulkanBackend::run(const Case& c, const Plan& plan) {
   auto start = std::chrono::steady_clock::now();
@@ -92,7 +100,9 @@ void VulkanBackend::releaseDevice() {
   has_device_ = false;
 }
 
-bool devicePerCase(const std::string& driver_name) { return driver_name == "llvmpipe"; }
+bool devicePerCase(const std::string& driver_name) {
+  return driver_name == "llvmpipe";
+}
 
 std::vector<std::string> VulkanBackend::close() {
   if (!ctx_) return {};

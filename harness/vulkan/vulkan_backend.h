@@ -24,9 +24,9 @@
 namespace rayspec {
 
 struct VulkanOptions {
-  std::string device_filter;  // substring of the device name (case-insensitive);
-                              // empty = first device with VK_KHR_ray_tracing_pipeline
-  bool validation = true;     // enable VK_LAYER_KHRONOS_validation when installed
+  std::string device_filter;            // substring of the device name (case-insensitive);
+                                        // empty = first device with VK_KHR_ray_tracing_pipeline
+  bool validation = true;               // enable VK_LAYER_KHRONOS_validation when installed
   std::optional<bool> device_per_case;  // a VkDevice per case; unset: devicePerCase(driver name)
 };
 
@@ -46,7 +46,8 @@ struct DeviceInfo {
   // The extensions (VK_KHR_acceleration_structure with
   // VK_KHR_deferred_host_operations) ...
   bool ray_tracing_extension = false, acceleration_structure_extension = false;
-  bool cpu = false;  // VK_PHYSICAL_DEVICE_TYPE_CPU (lavapipe): the device's work is this machine's cores
+  bool cpu =
+      false;  // VK_PHYSICAL_DEVICE_TYPE_CPU (lavapipe): the device's work is this machine's cores
   // ... and the features on a Vulkan 1.2 device (what rayspec needs).
   bool ray_tracing_pipeline = false, acceleration_structure = false;
   uint32_t shader_group_handle_size = 0, shader_group_handle_alignment = 0,
@@ -93,7 +94,7 @@ class VulkanBackend {
   VulkanBackend();
   void releaseDevice();  // saves the pipeline cache, destroys the device
   std::unique_ptr<VulkanContext> ctx_;
-  bool device_lost_ = false;  // a case lost the device: the next run makes a new one
+  bool device_lost_ = false;      // a case lost the device: the next run makes a new one
   bool device_per_case_ = false;  // devicePerCase(): made before and destroyed after each case
   bool has_device_ = false;
 };

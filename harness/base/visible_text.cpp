@@ -1,4 +1,4 @@
-#include "results/visible_text.h"
+#include "base/visible_text.h"
 
 #include <cstdio>
 

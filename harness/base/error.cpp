@@ -1,0 +1,15 @@
+#include "base/error.h"
+
+#include "base/visible_text.h"
+
+namespace rayspec {
+
+std::string Error::format() const {
+  if (loc.file.empty()) return visibleText(message);
+  std::string s =
+      loc.file + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column) + ": ";
+  if (!loc.field.empty()) s += visibleText(loc.field) + ": ";
+  return s + visibleText(message);
+}
+
+}  // namespace rayspec

@@ -1,0 +1,103 @@
+// The subcommands on saved files and folders, cases and devices: devices,
+// compare, merge, show, list.
+#include <memory>
+
+#include "cli/commands.h"
+#include "cli/option_checks.h"
+#include "cli/subcommands.h"
+
+namespace rayspec {
+
+Subcommand addDevicesCommand(CLI::App& app) {
+  auto* devices = app.add_subcommand("devices", "List Vulkan devices and their ray tracing limits");
+  auto opt = std::make_shared<DevicesOptions>();
+  DevicesOptions& devices_opt = *opt;
+  devices->add_flag("--no-validation", devices_opt.no_validation,
+                    "Do not load the Khronos validation layer");
+  devices->add_option("--icd", devices_opt.icd_files, kIcdOptionHelp)->delimiter(':');
+
+  return {devices, [opt] {
+            return runDevices(*opt);
+          }};
+}
+
+Subcommand addCompareCommand(CLI::App& app) {
+  auto* compare = app.add_subcommand("compare",
+                                     "Compare two saved results: bundles (device against model) or "
+                                     "run folders (A's device against B's device, cases by name)");
+  auto opt = std::make_shared<CompareOptions>();
+  CompareOptions& compare_opt = *opt;
+  compare->add_option("A", compare_opt.a, "Results bundle or run folder (the one judged)")
+      ->required();
+  compare->add_option("B", compare_opt.b, "Results bundle or run folder (the reference)")
+      ->required();
+  compare->add_option("--out", compare_opt.out, "Folder for the reports")
+      ->check(outputFolder())
+      ->capture_default_str();
+  compare
+      ->add_option("--cases", compare_opt.cases_dir,
+                   "Folder of case files (when a bundle's case file moved)")
+      ->capture_default_str();
+
+  return {compare, [opt] {
+            return runCompare(*opt);
+          }};
+}
+
+Subcommand addMergeCommand(CLI::App& app) {
+  auto* merge = app.add_subcommand("merge",
+                                   "Join run folders (shards, or runs of one device on several "
+                                   "machines) into one, with its reports");
+  auto opt = std::make_shared<MergeOptions>();
+  MergeOptions& merge_opt = *opt;
+  merge->add_option("dirs", merge_opt.dirs, "Run folders")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  merge->add_option("--out", merge_opt.out, "Folder for the merged run")
+      ->check(outputFolder())
+      ->capture_default_str();
+  merge->add_option("--baseline", merge_opt.baseline,
+                    "Judge the merged results against this baseline anew");
+  merge->add_option("--flakes", merge_opt.flakes, "Flakes file (default: beside the baseline)");
+  merge->add_option("--skips", merge_opt.skips, "Skips file (default: beside the baseline)");
+  merge->add_option("--rules", merge_opt.rules_file, "Rule catalog")->capture_default_str();
+
+  return {merge, [opt] {
+            return runMerge(*opt);
+          }};
+}
+
+Subcommand addShowCommand(CLI::App& app) {
+  auto* show = app.add_subcommand("show", "Print a parsed case, its plan and its generated GLSL");
+  auto opt = std::make_shared<ShowOptions>();
+  ShowOptions& show_opt = *opt;
+  show->add_option("case", show_opt.case_file, "Case file (or case name under cases/)");
+  show->add_flag("--no-glsl", show_opt.no_glsl, "Leave out the generated GLSL");
+  show->add_flag("--vocabulary", show_opt.vocabulary,
+                 "List the built-ins and operators of the stage vocabulary");
+  show->add_option("--cases", show_opt.cases_dir, "Folder of case files")->capture_default_str();
+
+  return {show, [opt] {
+            return runShow(*opt);
+          }};
+}
+
+Subcommand addListCommand(CLI::App& app) {
+  auto* list =
+      app.add_subcommand("list", "List the cases (sweeps expanded) and the rules they claim");
+  auto opt = std::make_shared<ListOptions>();
+  ListOptions& list_opt = *opt;
+  list->add_flag(
+      "--rules", list_opt.rules,
+      "Rule -> cases for every rule of the catalog; exits 1 when a rule (R-UB apart) has no case");
+  list->add_option("--filter", list_opt.filter, "Only cases whose name matches this glob")
+      ->capture_default_str();
+  list->add_option("--cases", list_opt.cases_dir, "Folder of case files")->capture_default_str();
+  list->add_option("--rules-file", list_opt.rules_file, "Rule catalog")->capture_default_str();
+
+  return {list, [opt] {
+            return runList(*opt);
+          }};
+}
+
+}  // namespace rayspec

@@ -1,0 +1,210 @@
+#include "run/run_setup.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <optional>
+#include <set>
+
+#include "fault/planted_fault.h"
+#include "report/outcome_json.h"
+#include "report/rule_catalog.h"
+#include "run/device_probe.h"
+#include "run/device_results.h"
+#include "run/run_loop.h"
+#include "run/run_only.h"
+#include "run/shard.h"
+#include "vulkan/device_errors.h"
+
+namespace rayspec {
+namespace {
+
+bool validationLayerInstalled() {
+  if (const char* path = std::getenv("VK_LAYER_PATH"))
+    if (std::filesystem::exists(std::string(path) + "/VkLayer_khronos_validation.json"))
+      return true;
+  for (const char* dir :
+       {"/usr/share/vulkan/explicit_layer.d", "/usr/local/share/vulkan/explicit_layer.d",
+        "/etc/vulkan/explicit_layer.d"})
+    if (std::filesystem::exists(std::string(dir) + "/VkLayer_khronos_validation.json")) return true;
+  return false;
+}
+
+std::string timeNow() {
+  char text[64];
+  const std::time_t t = std::time(nullptr);
+  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M:%S UTC", std::gmtime(&t));
+  return text;
+}
+
+std::vector<CaseFile> caseFiles(const RunOptions& opt) {
+  if (opt.case_files.empty() && !opt.filters.empty())
+    return findCasesAny(opt.cases_dir, opt.filters);
+  if (opt.case_files.empty()) return findCases(opt.cases_dir, opt.filter);
+  std::vector<CaseFile> files;
+  for (const std::string& f : opt.case_files)
+    for (CaseFile& c : caseFilesFor(f, opt.cases_dir)) files.push_back(std::move(c));
+  checkCaseNames(files);
+  return files;
+}
+
+// The shard asked for (--shard, else GoogleTest's variables), if any.
+std::optional<Shard> chosenShard(const RunOptions& opt, std::string* error) {
+  if (!opt.shard.empty()) return parseShard(opt.shard, error);
+  return shardFromEnvironment(error);
+}
+
+// --resume: what the run folder already holds must come from the same kind
+// of run. The message, or "".
+std::string resumeError(const SavedRun& saved, const RunInfo& info, const std::string& out,
+                        const std::vector<CaseFile>& files) {
+  // Every case the folder holds must be selected again, or --resume would
+  // drop it from results.csv and summary.json.
+  std::set<std::string> selected;
+  for (const CaseFile& f : files) selected.insert(f.name);
+  size_t unselected = 0;
+  std::string first;
+  for (const CaseOutcome& o : saved.outcomes)
+    if (!selected.count(o.name) && unselected++ == 0) first = o.name;
+  if (unselected)
+    return "--resume: " + out + " holds " + std::to_string(unselected) +
+           " case(s) this run does not select (" + first + (unselected > 1 ? ", ..." : "") +
+           "): resume with the selection the run started with";
+  if (saved.info.model_tier != info.model_tier)
+    return "--resume: " + out + " was run with model tier '" + saved.info.model_tier +
+           "', this run uses '" + info.model_tier + "'";
+  if (saved.info.device != info.device)
+    return "--resume: " + out + " was run on '" + saved.info.device + "', this run is on '" +
+           info.device + "'";
+  return {};
+}
+
+// Options that cannot work together; the message, or "".
+std::string optionError(const RunOptions& opt) {
+  if (!opt.no_validation && opt.strict_validation && !validationLayerInstalled())
+    return "the Khronos validation layer is not installed (vulkan-validationlayers); run "
+           "tools/setup.sh";
+  if (!opt.plant_fault.empty() && !isFaultName(opt.plant_fault) &&
+      !deviceErrorFault(opt.plant_fault))
+    return "unknown fault '" + opt.plant_fault + "'";
+  if (isProcessFault(opt.plant_fault) && opt.no_isolation)
+    return "the fault '" + opt.plant_fault +
+           "' needs the device in a child process (no --no-isolation)";
+  if (opt.no_device && opt.no_model) return "--no-device and --no-model: nothing would run";
+  if (std::string e = runOnlyError(opt); !e.empty()) return e;
+  return deviceResultsError(opt);
+}
+
+// A device probed in this process: the adapter every case will use.
+DeviceProbe adapterInThisProcess(const VulkanOptions& vopt, ChosenDevice& chosen, RunInfo& info) {
+  chosen.adapter = std::make_unique<VulkanAdapter>(vopt);
+  info.validation = chosen.adapter->validationEnabled();
+  return describeAdapter(*chosen.adapter);
+}
+
+// A device probed by a short child process (the parent never initialises
+// Vulkan when cases are isolated).
+DeviceProbe deviceInAChild(const RunOptions& opt, const VulkanOptions& vopt, RunInfo& info) {
+  VulkanOptions quick = vopt;
+  quick.validation = false;  // only whether a device matches
+  info.validation = vopt.validation && validationLayerInstalled();
+  return probeDevice(quick, ChildLimits{opt.timeout, opt.memory_limit});
+}
+
+// --device-results: the devices that saved the bundles.
+ChosenDevice savedDevice(const RunOptions& opt, const std::vector<CaseFile>& files, RunInfo& info) {
+  ChosenDevice chosen;
+  info.device = savedDevices(opt.device_results, files);
+  chosen.found = !info.device.empty();
+  std::printf("Device results saved in %s (%s); no device runs here\n", opt.device_results.c_str(),
+              chosen.found ? info.device.c_str() : "none of these cases has a bundle there");
+  return chosen;
+}
+
+}  // namespace
+
+int setupFailed(const Error& why) {
+  std::fprintf(stderr, "rayspec run: %s\n", why.format().c_str());
+  return kExitSetup;
+}
+
+Result<std::vector<CaseFile>> selectedCaseFiles(const RunOptions& opt) {
+  std::vector<CaseFile> files = caseFiles(opt);
+  if (files.empty())
+    return errorMessage("no case matches '" + opt.filter + "' in " + opt.cases_dir);
+  if (std::string err = optionError(opt); !err.empty()) return errorMessage(std::move(err));
+  return files;
+}
+
+Result<std::vector<CaseFile>> thisShard(const RunOptions& opt, std::vector<CaseFile> files) {
+  std::string shard_error;
+  const std::optional<Shard> shard = chosenShard(opt, &shard_error);
+  if (!shard_error.empty()) return errorMessage(shard_error);
+  if (!shard) return files;
+  const size_t all = files.size();
+  std::vector<CaseFile> mine;
+  for (size_t i : shardPositions(all, *shard)) mine.push_back(std::move(files[i]));
+  if (mine.empty())
+    return errorMessage(shard->describe() + " holds no case (there are " + std::to_string(all) +
+                        ")");
+  std::printf("Shard: %s, %zu of %zu cases\n", shard->describe().c_str(), mine.size(), all);
+  return mine;
+}
+
+RunInfo startRunInfo(const RunOptions& opt, size_t planned_cases) {
+  RunInfo info;
+  info.started = timeNow();
+  info.model_tier = opt.no_model ? "none" : opt.model_tier;
+  info.planned_cases = planned_cases;
+  info.interrupted = true;  // until the last case is done: a run killed before then stays marked
+  std::string catalog_error;
+  info.catalog = loadRuleCatalog(opt.rules_file, &catalog_error);
+  if (!catalog_error.empty()) std::fprintf(stderr, "rayspec run: %s\n", catalog_error.c_str());
+  if (!opt.plant_fault.empty())
+    std::printf("Planted fault: %s (test only)\n", opt.plant_fault.c_str());
+  return info;
+}
+
+Result<Baseline> loadRunBaseline(const RunOptions& opt) {
+  std::string error;
+  Baseline baseline = loadBaselineSet(opt.baseline, opt.flakes, opt.skips, &error);
+  if (!error.empty()) return errorMessage(error);
+  return baseline;
+}
+
+Result<ChosenDevice> chooseDevice(const RunOptions& opt, const std::vector<CaseFile>& files,
+                                  const IcdSelection& icd, RunInfo& info) {
+  if (!opt.device_results.empty()) return savedDevice(opt, files, info);
+  ChosenDevice chosen;
+  if (opt.no_device) return chosen;
+  const VulkanOptions vopt = vulkanOptions(opt);
+  const DeviceProbe probe =
+      opt.no_isolation ? adapterInThisProcess(vopt, chosen, info) : deviceInAChild(opt, vopt, info);
+  if (!probe.found) return errorMessage("no device to run on: " + probeFailure(probe));
+  chosen.found = true;
+  chosen.gpu = !probe.cpu;
+  info.device = probe.description;
+  info.icd = !probe.icd.empty() || icd.files.size() != 1 ? probe.icd : icd.files[0];
+  std::printf("Device: %s, ICD %s%s%s\n", info.device.c_str(),
+              info.icd.empty() ? "unknown" : info.icd.c_str(),
+              info.validation ? ", validation layer on" : ", validation layer OFF",
+              opt.no_isolation ? ", in this process" : "");
+  return chosen;
+}
+
+Result<std::map<std::string, CaseOutcome>> resumedCases(const RunOptions& opt, RunInfo& info,
+                                                        const std::vector<CaseFile>& files) {
+  std::map<std::string, CaseOutcome> earlier;
+  if (!opt.resume) return earlier;
+  std::string error;
+  SavedRun saved = readSavedRun(opt.out, &error);
+  if (error.empty()) error = resumeError(saved, info, opt.out, files);
+  if (!error.empty()) return errorMessage(error);
+  info.started = saved.info.started;
+  for (CaseOutcome& o : saved.outcomes) earlier[o.name] = std::move(o);
+  std::printf("Resuming %s: %zu cases already ran\n", opt.out.c_str(), earlier.size());
+  return earlier;
+}
+
+}  // namespace rayspec
