@@ -1,5 +1,7 @@
 // The subcommands that make studies of runs: stability, accuracy, mutate.
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "accuracy/run_accuracy.h"
 #include "cli/option_checks.h"
@@ -9,33 +11,41 @@
 
 namespace rayspec {
 
+namespace {
+
+// The options a study shares with `rayspec run`'s device side, and its own
+// report folder. `counted`: what happens to other devices' saved bundles.
+void addStudyOptions(CLI::App* study, RunOptions& run, std::vector<std::string>& saved_devices,
+                     std::string& out, const std::string& counted) {
+  study->add_option("--device", run.device, "Vulkan device name (substring)");
+  study->add_flag("--no-device", run.no_device, "The model tiers only");
+  study->add_option("--device-results", saved_devices,
+                    "Run folders of other devices (e.g. a run-only binary's run on a GPU "
+                    "machine): their device bundles are " +
+                        counted + " too, one source each");
+  study->add_option("--cases", run.cases_dir, "Folder of case files")->capture_default_str();
+  study->add_option("--out", out, "Folder for the report and the runs")
+      ->check(outputFolder())
+      ->capture_default_str();
+  study->add_option("--timeout", run.timeout, "Seconds per case side")
+      ->check(positiveSeconds())
+      ->capture_default_str();
+  study->add_flag("--strict-validation", run.strict_validation,
+                  "Fail when the validation layer is not installed");
+}
+
+}  // namespace
+
 Subcommand addStabilityCommand(CLI::App& app) {
   auto* stability = app.add_subcommand(
       "stability",
       "Leak and double-hit rates of the stability families per coordinate magnitude: the device "
       "and each model tier (OUT/stability.txt, stability.json, stability.png)");
   auto opt = std::make_shared<StabilityOptions>();
-  StabilityOptions& stability_opt = *opt;
-  stability_opt.run.filter = "stability/*";
-  stability->add_option("--device", stability_opt.run.device, "Vulkan device name (substring)");
-  stability->add_flag("--no-device", stability_opt.run.no_device, "The model tiers only");
-  stability->add_option("--device-results", stability_opt.saved_devices,
-                        "Run folders of other devices (e.g. a run-only binary's run on a GPU "
-                        "machine): their device bundles are counted too, one source each");
-  stability->add_option("--filter", stability_opt.run.filter, "Cases (glob)")
-      ->capture_default_str();
-  stability->add_option("--cases", stability_opt.run.cases_dir, "Folder of case files")
-      ->capture_default_str();
-  stability->add_option("--out", stability_opt.out, "Folder for the report and the runs")
-      ->check(outputFolder())
-      ->capture_default_str();
-  stability->add_option("--baseline", stability_opt.run.baseline, "Known failures of this driver");
-  stability->add_option("--timeout", stability_opt.run.timeout, "Seconds per case side")
-      ->check(positiveSeconds())
-      ->capture_default_str();
-  stability->add_flag("--strict-validation", stability_opt.run.strict_validation,
-                      "Fail when the validation layer is not installed");
-
+  opt->run.filter = "stability/*";
+  addStudyOptions(stability, opt->run, opt->saved_devices, opt->out, "counted");
+  stability->add_option("--filter", opt->run.filter, "Cases (glob)")->capture_default_str();
+  stability->add_option("--baseline", opt->run.baseline, "Known failures of this driver");
   return {stability, [opt] {
             return runStability(*opt);
           }};
@@ -48,30 +58,13 @@ Subcommand addAccuracyCommand(CLI::App& app) {
       "double hits, other primitives, t error in ULP), each model tier and device, on ordinary and "
       "hard cases (OUT/accuracy.txt, accuracy.json, accuracy.png)");
   auto opt = std::make_shared<AccuracyOptions>();
-  AccuracyOptions& accuracy_opt = *opt;
-  accuracy
-      ->add_option("--ordinary", accuracy_opt.ordinary, "Ordinary cases (glob; repeat it for more)")
+  accuracy->add_option("--ordinary", opt->ordinary, "Ordinary cases (glob; repeat it for more)")
       ->capture_default_str();
-  accuracy->add_option("--hard", accuracy_opt.hard, "Hard cases (glob; repeat it for more)")
+  accuracy->add_option("--hard", opt->hard, "Hard cases (glob; repeat it for more)")
       ->capture_default_str();
-  accuracy->add_option("--device", accuracy_opt.run.device, "Vulkan device name (substring)");
-  accuracy->add_flag("--no-device", accuracy_opt.run.no_device, "The model tiers only");
-  accuracy->add_option("--device-results", accuracy_opt.saved_devices,
-                       "Run folders of other devices (e.g. a run-only binary's run on a GPU "
-                       "machine): their device bundles are compared too, one source each");
-  accuracy->add_option("--cases", accuracy_opt.run.cases_dir, "Folder of case files")
-      ->capture_default_str();
-  accuracy->add_option("--out", accuracy_opt.out, "Folder for the report and the runs")
-      ->check(outputFolder())
-      ->capture_default_str();
-  accuracy->add_option("--timeout", accuracy_opt.run.timeout, "Seconds per case side")
-      ->check(positiveSeconds())
-      ->capture_default_str();
-  accuracy->add_flag("--no-validation", accuracy_opt.run.no_validation,
+  addStudyOptions(accuracy, opt->run, opt->saved_devices, opt->out, "compared");
+  accuracy->add_flag("--no-validation", opt->run.no_validation,
                      "Do not load the Khronos validation layer");
-  accuracy->add_flag("--strict-validation", accuracy_opt.run.strict_validation,
-                     "Fail when the validation layer is not installed");
-
   return {accuracy, [opt] {
             return runAccuracy(*opt);
           }};

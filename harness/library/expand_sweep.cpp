@@ -8,6 +8,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "base/result.h"
+
 namespace rayspec {
 namespace {
 
@@ -187,14 +189,14 @@ bool isSweepFile(const std::string& path) {
 
 namespace {
 
-SweepExpansion expandChecked(const std::string& text, const std::string& file,
-                             const std::string& name) {
-  SweepExpansion result;
-  Expander ex(file, result.errors);
-  // The block: from the line `sweep:` (at column 0) to the next line that
-  // starts another top-level key. Only it is YAML before substitution; the
-  // rest may hold ${...} anywhere, even where YAML would not allow it.
-  std::vector<std::string> lines = splitLines(text);
+using Product = std::vector<std::pair<std::string, std::vector<std::string>>>;
+
+// The block: from the line `sweep:` (at column 0) to the next line that
+// starts another top-level key, as [begin, end) line indices. Only it is YAML
+// before substitution; the rest may hold ${...} anywhere, even where YAML
+// would not allow it.
+Result<std::pair<int, int>> findSweepBlock(const std::vector<std::string>& lines,
+                                           const std::string& file) {
   int block_begin = -1, block_end = static_cast<int>(lines.size());
   for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
     const std::string& l = lines[i];
@@ -206,30 +208,34 @@ SweepExpansion expandChecked(const std::string& text, const std::string& file,
       break;
     }
   }
-  if (block_begin < 0) {
-    result.errors.push_back(
-        {SourceLoc{file, 1, 1, "sweep"},
-         "a .sweep.yaml file needs a top-level `sweep:` block (cases/README.md, Sweeps)"});
-    return result;
-  }
-  std::string block(static_cast<size_t>(block_begin), '\n');  // keeps yaml-cpp's line numbers
-  for (int i = block_begin; i < block_end; ++i) block += lines[i] + "\n";
+  if (block_begin < 0)
+    return Error{SourceLoc{file, 1, 1, "sweep"},
+                 "a .sweep.yaml file needs a top-level `sweep:` block (cases/README.md, Sweeps)"};
+  return std::pair{block_begin, block_end};
+}
+
+// The block as YAML (its line numbers those of the file).
+Result<YAML::Node> loadSweepBlock(const std::vector<std::string>& lines, std::pair<int, int> block,
+                                  const std::string& file) {
+  std::string text(static_cast<size_t>(block.first), '\n');  // keeps yaml-cpp's line numbers
+  for (int i = block.first; i < block.second; ++i) text += lines[i] + "\n";
   YAML::Node root;
   try {
-    root = YAML::Load(block);
+    root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
-    result.errors.push_back({locOf(file, e.mark, "sweep"), "malformed YAML: " + e.msg});
-    return result;
+    return Error{locOf(file, e.mark, "sweep"), "malformed YAML: " + e.msg};
   }
-  if (!root.IsMap()) {
-    result.errors.push_back({SourceLoc{file, block_begin + 1, 1, "sweep"},
-                             "the `sweep:` line does not start a map (cases/README.md, Sweeps)"});
-    return result;
-  }
-  const YAML::Node sweep = root["sweep"];
+  if (!root.IsMap())
+    return Error{SourceLoc{file, block.first + 1, 1, "sweep"},
+                 "the `sweep:` line does not start a map (cases/README.md, Sweeps)"};
+  return root;
+}
+
+// The sweep map's keys and name; false (errors said) when it cannot expand.
+bool checkSweepMap(Expander& ex, const YAML::Node& sweep) {
   if (!sweep.IsMap()) {
     ex.error(sweep, "sweep", "expected a map with name, and rows and/or product");
-    return result;
+    return false;
   }
   for (const auto& kv : sweep) {
     const std::string key = kv.first.Scalar();
@@ -241,36 +247,46 @@ SweepExpansion expandChecked(const std::string& text, const std::string& file,
   if (!name_node || !name_node.IsScalar() || name_node.Scalar().empty()) {
     ex.error(name_node ? name_node : sweep, "sweep.name",
              "missing: each variant's name, e.g. \"offset-${offset}\"");
-    return result;
+    return false;
   }
   if (!sweep["rows"] && !sweep["product"]) {
     ex.error(sweep, "sweep", "needs rows or product (or both): the parameters and their values");
-    return result;
+    return false;
   }
-  const std::vector<Params> rows = ex.rows(sweep["rows"]);
-  const auto product = ex.product(sweep["product"]);
-  if (!result.errors.empty()) return result;
+  return true;
+}
+
+// Whether the rows and the product can combine: no parameter in both, at
+// most kMaxVariants cases. False with the error said.
+bool checkCombination(Expander& ex, const YAML::Node& sweep, const std::vector<Params>& rows,
+                      const Product& product) {
   for (const auto& [key, values] : product)
     for (const auto& [row_key, v] : rows.front())
       if (row_key == key) {
         ex.error(sweep["product"], "sweep.product." + key,
                  "'" + key + "' is also a parameter of the rows");
-        return result;
+        return false;
       }
-
-  for (int i = block_begin; i < block_end && i < static_cast<int>(lines.size()); ++i)
-    lines[i].clear();
   size_t count = rows.size();
   for (const auto& [key, values] : product)
     count = count > kMaxVariants ? count : count * values.size();
   if (count > kMaxVariants) {
     ex.error(sweep, "sweep",
              "makes more than " + std::to_string(kMaxVariants) + " cases; split it");
-    return result;
+    return false;
   }
-  size_t total_bytes = 0;
+  return true;
+}
 
-  // Every combination: rows outermost, the product's last key fastest.
+// Every combination's case text (the block's lines already blank): rows
+// outermost, the product's last key fastest. Every variant is checked: a
+// line over the limits, or a name that only this variant's values bring, is
+// an error here too (said once).
+void expandVariants(Expander& ex, const YAML::Node& sweep, const std::vector<std::string>& lines,
+                    const std::vector<Params>& rows, const Product& product,
+                    const std::string& file, const std::string& name, SweepExpansion& result) {
+  const YAML::Node name_node = sweep["name"];
+  size_t total_bytes = 0;
   std::vector<size_t> index(product.size(), 0);
   std::map<std::string, int> names_seen;
   std::set<std::string> errors_said;
@@ -279,8 +295,6 @@ SweepExpansion expandChecked(const std::string& text, const std::string& file,
       Params params = row;
       for (size_t k = 0; k < product.size(); ++k)
         params.emplace_back(product[k].first, product[k].second[index[k]]);
-      // Every variant is checked: a line over the limits, or a name that only
-      // this variant's values bring, is an error here too (said once).
       std::vector<Error> found;
       const YAML::Mark nm = name_node.Mark();
       SweepVariant v;
@@ -311,6 +325,31 @@ SweepExpansion expandChecked(const std::string& text, const std::string& file,
       if (k == 0) break;
     }
   }
+}
+
+SweepExpansion expandChecked(const std::string& text, const std::string& file,
+                             const std::string& name) {
+  SweepExpansion result;
+  Expander ex(file, result.errors);
+  std::vector<std::string> lines = splitLines(text);
+  const Result<std::pair<int, int>> block = findSweepBlock(lines, file);
+  if (!block) {
+    result.errors.push_back(block.error());
+    return result;
+  }
+  const Result<YAML::Node> root = loadSweepBlock(lines, *block, file);
+  if (!root) {
+    result.errors.push_back(root.error());
+    return result;
+  }
+  const YAML::Node sweep = (*root)["sweep"];
+  if (!checkSweepMap(ex, sweep)) return result;
+  const std::vector<Params> rows = ex.rows(sweep["rows"]);
+  const Product product = ex.product(sweep["product"]);
+  if (!result.errors.empty() || !checkCombination(ex, sweep, rows, product)) return result;
+  for (int i = block->first; i < block->second && i < static_cast<int>(lines.size()); ++i)
+    lines[i].clear();
+  expandVariants(ex, sweep, lines, rows, product, file, name, result);
   if (!result.errors.empty()) result.variants.clear();
   return result;
 }

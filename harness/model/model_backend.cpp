@@ -159,6 +159,115 @@ void adviseHugePages(void* p, size_t bytes) {
 #endif
 }
 
+// What every Machine of the run shares: the case, its plan, the scene, the
+// compiled programs, and the paths the run may take.
+ModelShared sharedState(const Case& c, const Plan& plan, const ModelOptions& opt,
+                        const ModelScene& scene, const CPipeline& programs) {
+  ModelShared shared;
+  shared.c = &c;
+  shared.plan = &plan;
+  shared.scene = &scene;
+  shared.programs = &programs;
+  shared.direct =
+      !scene.filters && !hasOwnTriangles(scene) && opt.order == CandidateOrder::Distance;
+  shared.order = opt.order;
+  shared.need_facing = programs.reads(kBiHitKind);
+  shared.deviation = opt.deviation;
+  // Read by the candidate path only (Machine::checkCandidates): a direct
+  // run sees no candidates, so it is not worked out there.
+  shared.check_candidates =
+      !shared.direct && (hitRecordMayBeOutOfRange(c, false) || hasNanTriangles(scene));
+  shared.raygen_traces_launch_ray =
+      programs.raygen.size() == 1 && programs.raygen[0].kind == Stmt::Kind::Trace &&
+      std::none_of(programs.raygen[0].has.begin(), programs.raygen[0].has.end(),
+                   [](bool b) { return b; });
+  shared.need_object_ray = programs.reads(kBiObjectOrigin) || programs.reads(kBiObjectDirection) ||
+                           programs.reads_sphere;
+  return shared;
+}
+
+// The launch's n rays traced by `threads` workers. Each builds its own
+// Machine in its own thread (its counters and vectors come from that
+// thread's malloc arena, never a cache line another worker writes) and takes
+// chunks of launch rays from one shared index: about 32 chunks per thread,
+// each 256 to 4096 rays (few atomic steps on the shared index, little
+// imbalance at the end). Records are zeroed, and image texels written, chunk
+// by chunk by the worker that traced it. Rethrows a worker's exception.
+std::vector<std::unique_ptr<Machine>> traceInThreads(
+    const ModelShared& shared, size_t n, unsigned threads, uint32_t* records, Results& r,
+    const std::vector<const RecordField*>& imageFields) {
+  const size_t words = recordWords();
+  std::vector<std::unique_ptr<Machine>> machines(threads);
+  std::vector<std::exception_ptr> failures(threads);
+  const size_t chunk = std::clamp<size_t>(n / (size_t{threads} * 32), 256, 4096);
+  std::atomic<size_t> next{0};
+  auto work = [&](unsigned t) {
+    try {
+      machines[t] = std::make_unique<Machine>(shared, records);
+      Machine& m = *machines[t];
+      for (;;) {
+        const size_t begin = next.fetch_add(chunk, std::memory_order_relaxed);
+        if (begin >= n) break;
+        const size_t end = std::min(n, begin + chunk);
+        if (records) std::fill(records + begin * words, records + end * words, 0u);
+        m.runRays(static_cast<uint32_t>(begin), static_cast<uint32_t>(end));
+        for (size_t k = 0; k < imageFields.size(); ++k)
+          writeTexels(r.images[k], *imageFields[k], records, begin, end);
+      }
+    } catch (...) {
+      failures[t] = std::current_exception();  // rethrown below, after the join
+      next.store(n);                           // the others stop at their next chunk
+    }
+  };
+  if (threads == 1) {
+    work(0);
+  } else {
+    std::vector<std::thread> pool;
+    for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work, t);
+    for (std::thread& t : pool) t.join();
+  }
+  for (const std::exception_ptr& f : failures)
+    if (f) std::rethrow_exception(f);
+  return machines;
+}
+
+// The workers' counters, ambiguous, bounded and undefined rays into r, in
+// ray order (one t bound per ray: the widest of its traces).
+void gatherMachines(const std::vector<std::unique_ptr<Machine>>& machines, const Plan& plan,
+                    Results& r) {
+  for (auto& m : machines) {
+    if (!m) continue;
+    for (size_t k = 0; k < plan.counters.size(); ++k)
+      r.counters[plan.counters[k]] += m->counters[k];
+    r.ambiguous.insert(r.ambiguous.end(), m->ambiguous.begin(), m->ambiguous.end());
+    r.t_bounds.insert(r.t_bounds.end(), m->t_bounds.begin(), m->t_bounds.end());
+    r.undefined.insert(r.undefined.end(), m->undefined.begin(), m->undefined.end());
+    if (!m->error.empty() && r.ok()) r.setStatus(RunStatus::Crash, m->error);
+  }
+  std::sort(r.ambiguous.begin(), r.ambiguous.end(),
+            [](const RayAmbiguity& a, const RayAmbiguity& b) { return a.ray < b.ray; });
+  std::sort(r.undefined.begin(), r.undefined.end(),
+            [](const UndefinedRay& a, const UndefinedRay& b) { return a.ray < b.ray; });
+  std::sort(r.t_bounds.begin(), r.t_bounds.end(), [](const TBound& a, const TBound& b) {
+    return a.ray < b.ray || (a.ray == b.ray && a.bound > b.bound);
+  });
+  r.t_bounds.erase(std::unique(r.t_bounds.begin(), r.t_bounds.end(),
+                               [](const TBound& a, const TBound& b) { return a.ray == b.ray; }),
+                   r.t_bounds.end());
+}
+
+// The empty results of the model's run of c: names, size, counters at 0.
+Results emptyResults(const Case& c, const Plan& plan, const ModelOptions& opt) {
+  Results r;
+  r.case_name = c.name;
+  r.backend = "model";
+  r.device = std::string("embree-") + modelTierName(opt.tier);
+  r.width = c.rays.width;
+  r.height = c.rays.height;
+  for (const std::string& name : plan.counters) r.counters[name] = 0;
+  return r;
+}
+
 }  // namespace
 
 bool modelInThisBuild() {
@@ -167,13 +276,7 @@ bool modelInThisBuild() {
 
 Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
-  Results r;
-  r.case_name = c.name;
-  r.backend = "model";
-  r.device = std::string("embree-") + modelTierName(opt.tier);
-  r.width = c.rays.width;
-  r.height = c.rays.height;
-  for (const std::string& name : plan.counters) r.counters[name] = 0;
+  Results r = emptyResults(c, plan, opt);
   const size_t n = static_cast<size_t>(c.rays.width) * c.rays.height;
   if (c.rays.rays.size() != n) {
     r.setStatus(RunStatus::Crash, "the case has " + std::to_string(c.rays.rays.size()) +
@@ -189,26 +292,7 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
     // facing of a direct hit when a program reads hit_kind.
     buildModelScene(scene, c, opt.tier, needsCandidates(c, plan, opt.tier),
                     programs.reads(kBiHitKind));
-    ModelShared shared;
-    shared.c = &c;
-    shared.plan = &plan;
-    shared.scene = &scene;
-    shared.programs = &programs;
-    shared.direct =
-        !scene.filters && !hasOwnTriangles(scene) && opt.order == CandidateOrder::Distance;
-    shared.order = opt.order;
-    shared.need_facing = programs.reads(kBiHitKind);
-    shared.deviation = opt.deviation;
-    // Read by the candidate path only (Machine::checkCandidates): a direct
-    // run sees no candidates, so it is not worked out there.
-    shared.check_candidates =
-        !shared.direct && (hitRecordMayBeOutOfRange(c, false) || hasNanTriangles(scene));
-    shared.raygen_traces_launch_ray =
-        programs.raygen.size() == 1 && programs.raygen[0].kind == Stmt::Kind::Trace &&
-        std::none_of(programs.raygen[0].has.begin(), programs.raygen[0].has.end(),
-                     [](bool b) { return b; });
-    shared.need_object_ray = programs.reads(kBiObjectOrigin) ||
-                             programs.reads(kBiObjectDirection) || programs.reads_sphere;
+    const ModelShared shared = sharedState(c, plan, opt, scene, programs);
     scene_time.stop();
     StepTimer trace_time(r.cost, CostStep::ModelTrace);
     // Left unwritten here (BulkWords): each worker zeroes the records of its
@@ -222,66 +306,10 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
         plan.records ? prepareImages(r, plan) : std::vector<const RecordField*>{};
     for (Image& img : r.images)
       adviseHugePages(img.texels.data(), img.texels.size() * sizeof(uint32_t));
-
     unsigned threads =
         opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
     threads = static_cast<unsigned>(std::min<size_t>(threads, std::max<size_t>(1, n / 64)));
-    // Each worker builds its own Machine in its own thread (its counters and
-    // vectors come from that thread's malloc arena, never a cache line
-    // another worker writes) and takes chunks of launch rays from one shared
-    // index: about 32 chunks per thread, each 256 to 4096 rays (few atomic
-    // steps on the shared index, little imbalance at the end).
-    std::vector<std::unique_ptr<Machine>> machines(threads);
-    std::vector<std::exception_ptr> failures(threads);
-    const size_t chunk = std::clamp<size_t>(n / (size_t{threads} * 32), 256, 4096);
-    std::atomic<size_t> next{0};
-    auto work = [&](unsigned t) {
-      try {
-        machines[t] = std::make_unique<Machine>(shared, records);
-        Machine& m = *machines[t];
-        for (;;) {
-          const size_t begin = next.fetch_add(chunk, std::memory_order_relaxed);
-          if (begin >= n) break;
-          const size_t end = std::min(n, begin + chunk);
-          if (records) std::fill(records + begin * words, records + end * words, 0u);
-          m.runRays(static_cast<uint32_t>(begin), static_cast<uint32_t>(end));
-          for (size_t k = 0; k < imageFields.size(); ++k)
-            writeTexels(r.images[k], *imageFields[k], records, begin, end);
-        }
-      } catch (...) {
-        failures[t] = std::current_exception();  // rethrown below, after the join
-        next.store(n);                           // the others stop at their next chunk
-      }
-    };
-    if (threads == 1) {
-      work(0);
-    } else {
-      std::vector<std::thread> pool;
-      for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work, t);
-      for (std::thread& t : pool) t.join();
-    }
-    for (const std::exception_ptr& f : failures)
-      if (f) std::rethrow_exception(f);
-    for (auto& m : machines) {
-      if (!m) continue;
-      for (size_t k = 0; k < plan.counters.size(); ++k)
-        r.counters[plan.counters[k]] += m->counters[k];
-      r.ambiguous.insert(r.ambiguous.end(), m->ambiguous.begin(), m->ambiguous.end());
-      r.t_bounds.insert(r.t_bounds.end(), m->t_bounds.begin(), m->t_bounds.end());
-      r.undefined.insert(r.undefined.end(), m->undefined.begin(), m->undefined.end());
-      if (!m->error.empty() && r.ok()) r.setStatus(RunStatus::Crash, m->error);
-    }
-    std::sort(r.ambiguous.begin(), r.ambiguous.end(),
-              [](const RayAmbiguity& a, const RayAmbiguity& b) { return a.ray < b.ray; });
-    std::sort(r.undefined.begin(), r.undefined.end(),
-              [](const UndefinedRay& a, const UndefinedRay& b) { return a.ray < b.ray; });
-    // One bound per ray (the widest of its traces), in ray order.
-    std::sort(r.t_bounds.begin(), r.t_bounds.end(), [](const TBound& a, const TBound& b) {
-      return a.ray < b.ray || (a.ray == b.ray && a.bound > b.bound);
-    });
-    r.t_bounds.erase(std::unique(r.t_bounds.begin(), r.t_bounds.end(),
-                                 [](const TBound& a, const TBound& b) { return a.ray == b.ray; }),
-                     r.t_bounds.end());
+    gatherMachines(traceInThreads(shared, n, threads, records, r, imageFields), plan, r);
   } catch (const std::exception& e) {
     r.setStatus(RunStatus::Crash, std::string("model: ") + e.what());
     r.records.clear();  // chunks no worker reached were never zeroed

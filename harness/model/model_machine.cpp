@@ -188,9 +188,57 @@ Val Machine::eval(const CExpr& e, StageEnv& env) {
   return Val{};
 }
 
-Val Machine::op(const CExpr& e, StageEnv& env) {
-  const OpCode n = e.op;
+namespace {
+
+// eq ne lt le gt ge: Uint x Uint exactly, else as doubles.
+Val compare(OpCode n, const Val* a, ValueType t0, ValueType t1) {
   Val r;
+  const bool u = t0 == ValueType::Uint && t1 == ValueType::Uint;
+  const double x = u ? a[0].u : static_cast<double>(t0 == ValueType::Uint ? a[0].u : a[0].f[0]);
+  const double y = u ? a[1].u : static_cast<double>(t1 == ValueType::Uint ? a[1].u : a[1].f[0]);
+  if (n == OpCode::Eq)
+    r.b = x == y;
+  else if (n == OpCode::Ne)
+    r.b = x != y;
+  else if (n == OpCode::Lt)
+    r.b = x < y;
+  else if (n == OpCode::Le)
+    r.b = x <= y;
+  else if (n == OpCode::Gt)
+    r.b = x > y;
+  else
+    r.b = x >= y;
+  return r;
+}
+
+// dot, length, normalize of vectors with cnt components.
+Val vectorLength(OpCode n, const Val* a, int cnt) {
+  Val r;
+  float d = 0;
+  const Val& b = n == OpCode::Dot ? a[1] : a[0];
+  for (int k = 0; k < cnt; ++k) d = k == 0 ? a[0].f[0] * b.f[0] : d + a[0].f[k] * b.f[k];
+  if (n == OpCode::Dot) return fromFloat(d);
+  const float len = std::sqrt(d);
+  if (n == OpCode::Length) return fromFloat(len);
+  for (int k = 0; k < cnt; ++k) r.f[k] = a[0].f[k] / len;
+  return r;
+}
+
+Val lightOp(OpCode n, const Val* a, const std::vector<uint32_t>* record_data) {
+  static const std::vector<uint32_t> kNoRecord;
+  const LightKind kind = n == OpCode::LightPoint  ? LightKind::Point
+                         : n == OpCode::LightSpot ? LightKind::Spot
+                                                  : LightKind::Directional;
+  Val r;
+  r.f = lightColor(kind, {a[0].f[0], a[0].f[1], a[0].f[2]}, {a[1].f[0], a[1].f[1], a[1].f[2]},
+                   record_data ? *record_data : kNoRecord);
+  return r;
+}
+
+}  // namespace
+
+bool Machine::opOnDemand(const CExpr& e, StageEnv& env, Val& r) {
+  const OpCode n = e.op;
   switch (n) {
     case OpCode::SphereHit:
     case OpCode::SphereNear:
@@ -203,46 +251,46 @@ Val Machine::op(const CExpr& e, StageEnv& env) {
         r.b = env.traversal ? sphereHitDecision(env, s.hit, s.disc) : s.hit;
       else
         r.f[0] = n == OpCode::SphereNear ? s.t_near : s.t_far;
-      return r;
+      return true;
     }
     case OpCode::RecordUint:
     case OpCode::RecordFloat: {
       const uint32_t i = e.index;
       const uint32_t w =
           env.record_data && i < env.record_data->size() ? (*env.record_data)[i] : 0u;
-      return n == OpCode::RecordUint ? fromUint(w) : fromFloat(bitsf(w));
+      r = n == OpCode::RecordUint ? fromUint(w) : fromFloat(bitsf(w));
+      return true;
     }
     case OpCode::And:
     case OpCode::Or: {
       const bool isAnd = n == OpCode::And;
+      r.b = isAnd;
       for (const CExpr& a : e.args) {
         const bool b = eval(a, env).b;
-        if (isAnd && !b) {
-          r.b = false;
-          return r;
-        }
-        if (!isAnd && b) {
-          r.b = true;
-          return r;
+        if (isAnd != b) {
+          r.b = b;
+          break;
         }
       }
-      r.b = isAnd;
-      return r;
+      return true;
     }
     case OpCode::Unknown:
       if (error.empty())
         error = "model: unknown op '" + (e.src ? e.src->name : std::string("?")) + "'";
-      return r;
+      return true;
     default:
-      break;
+      return false;
   }
+}
+
+Val Machine::op(const CExpr& e, StageEnv& env) {
+  const OpCode n = e.op;
+  Val r;
+  if (opOnDemand(e, env, r)) return r;
   // Every remaining op takes at most 4 arguments (vec4).
   Val a[4];
   const size_t na = std::min<size_t>(e.args.size(), 4);
   for (size_t i = 0; i < na; ++i) a[i] = eval(e.args[i], env);
-  auto type = [&](size_t i) {
-    return e.args[i].type;
-  };
   switch (n) {
     case OpCode::Not:
       r.b = !a[0].b;
@@ -269,15 +317,8 @@ Val Machine::op(const CExpr& e, StageEnv& env) {
     }
     case OpCode::LightPoint:
     case OpCode::LightSpot:
-    case OpCode::LightDirectional: {
-      static const std::vector<uint32_t> kNoRecord;
-      const LightKind kind = n == OpCode::LightPoint  ? LightKind::Point
-                             : n == OpCode::LightSpot ? LightKind::Spot
-                                                      : LightKind::Directional;
-      r.f = lightColor(kind, {a[0].f[0], a[0].f[1], a[0].f[2]}, {a[1].f[0], a[1].f[1], a[1].f[2]},
-                       env.record_data ? *env.record_data : kNoRecord);
-      return r;
-    }
+    case OpCode::LightDirectional:
+      return lightOp(n, a, env.record_data);
     case OpCode::X:
       return fromFloat(a[0].f[0]);
     case OpCode::Y:
@@ -288,51 +329,29 @@ Val Machine::op(const CExpr& e, StageEnv& env) {
       return fromFloat(a[0].f[3]);
     case OpCode::Dot:
     case OpCode::Length:
-    case OpCode::Normalize: {
-      const int cnt = componentCount(type(0));
-      float d = 0;
-      const Val& b = n == OpCode::Dot ? a[1] : a[0];
-      for (int k = 0; k < cnt; ++k) d = k == 0 ? a[0].f[0] * b.f[0] : d + a[0].f[k] * b.f[k];
-      if (n == OpCode::Dot) return fromFloat(d);
-      const float len = std::sqrt(d);
-      if (n == OpCode::Length) return fromFloat(len);
-      for (int k = 0; k < cnt; ++k) r.f[k] = a[0].f[k] / len;
-      return r;
-    }
+    case OpCode::Normalize:
+      return vectorLength(n, a, componentCount(e.args[0].type));
     case OpCode::Eq:
     case OpCode::Ne:
     case OpCode::Lt:
     case OpCode::Le:
     case OpCode::Gt:
-    case OpCode::Ge: {
-      const bool u = type(0) == ValueType::Uint && type(1) == ValueType::Uint;
-      const double x =
-          u ? a[0].u : static_cast<double>(type(0) == ValueType::Uint ? a[0].u : a[0].f[0]);
-      const double y =
-          u ? a[1].u : static_cast<double>(type(1) == ValueType::Uint ? a[1].u : a[1].f[0]);
-      if (n == OpCode::Eq)
-        r.b = x == y;
-      else if (n == OpCode::Ne)
-        r.b = x != y;
-      else if (n == OpCode::Lt)
-        r.b = x < y;
-      else if (n == OpCode::Le)
-        r.b = x <= y;
-      else if (n == OpCode::Gt)
-        r.b = x > y;
-      else
-        r.b = x >= y;
-      return r;
-    }
+    case OpCode::Ge:
+      return compare(n, a, e.args[0].type, e.args[1].type);
     case OpCode::Mod:
       // R-UB: the ray is undefined; the model goes on with 0.
       if (a[1].u == 0) divisionByZero(e);
       r.u = a[1].u == 0 ? 0 : a[0].u % a[1].u;
       return r;
     default:
-      break;
+      return arithmetic(e, a);
   }
-  // add sub mul div min max: Uint x Uint, or float-wise with scalar broadcast.
+}
+
+Val Machine::arithmetic(const CExpr& e, const Val* a) {
+  const OpCode n = e.op;
+  Val r;
+  // Uint x Uint, or float-wise with scalar broadcast.
   if (e.type == ValueType::Uint) {
     const uint32_t x = a[0].u, y = a[1].u;
     if (n == OpCode::Add)
@@ -354,8 +373,8 @@ Val Machine::op(const CExpr& e, StageEnv& env) {
   }
   const int cnt = componentCount(e.type);
   auto comp = [&](size_t i, int k) {
-    if (type(i) == ValueType::Uint) return static_cast<float>(a[i].u);
-    return isVec(type(i)) ? a[i].f[k] : a[i].f[0];
+    if (e.args[i].type == ValueType::Uint) return static_cast<float>(a[i].u);
+    return isVec(e.args[i].type) ? a[i].f[k] : a[i].f[0];
   };
   for (int k = 0; k < cnt; ++k) {
     const float x = comp(0, k), y = comp(1, k);

@@ -153,6 +153,11 @@ class alignas(64) Machine {
   Val eval(const CExpr& e, StageEnv& env);
   Val builtin(const CExpr& e, StageEnv& env);
   Val op(const CExpr& e, StageEnv& env);
+  // The ops op() runs before evaluating arguments (spheres, shader record
+  // words, short-circuit and/or); false for any other op.
+  bool opOnDemand(const CExpr& e, StageEnv& env, Val& r);
+  // add sub mul div min max on evaluated arguments.
+  Val arithmetic(const CExpr& e, const Val* a);
   Flow exec(const CProgram& p, StageEnv& env);
   Flow execStmt(const CStmt& s, StageEnv& env);
   void record(int field, const Val& v, ValueType t);

@@ -2,6 +2,7 @@
 // A Uint literal (written without '.') is promoted to Float wherever its
 // partner or slot needs a Float, so `{lt: [hit_t, 2]}` means 2.0.
 #include <cmath>
+#include <map>
 #include <string>
 
 #include "program/builtins.h"
@@ -59,10 +60,179 @@ std::optional<ProgramError> checkLiteral(Expr& e) {
   return std::nullopt;
 }
 
-std::optional<ProgramError> checkOp(Expr& e, Stage stage, const OpInfo& op) {
-  const std::string name = e.name;
+// An operator's arguments do not fit: names them and what it needs.
+ProgramError badArguments(const Expr& e, const std::string& need) {
+  return err(e, "operator '" + e.name + "': arguments are (" + typeList(e.args) + "); " + need);
+}
+
+using Typing = std::optional<ProgramError>;
+
+// The typing rules, one an operator family; each sets e.type or says why not.
+Typing typeArithmetic(Expr& e) {  // add sub mul div
   auto& a = e.args;
-  const int n = static_cast<int>(a.size());
+  unifyLiterals(a[0], a[1]);
+  ValueType t0 = a[0].type, t1 = a[1].type;
+  if (t0 == t1 && t0 != ValueType::Bool)
+    e.type = t0;
+  else if (isVector(t0) && t1 == ValueType::Float)
+    e.type = t0;
+  else if (t0 == ValueType::Float && isVector(t1))
+    e.type = t1;
+  else
+    return badArguments(e, "need the same numeric type, or a Float with a vector");
+  if (e.name == "div" && e.type == ValueType::Uint && constantUint(a[1]) == 0u)
+    return err(e, "operator 'div': Uint division by a constant zero (undefined behaviour, R-UB)");
+  return std::nullopt;
+}
+
+Typing typeMod(Expr& e) {
+  auto& a = e.args;
+  if (a[0].type != ValueType::Uint || a[1].type != ValueType::Uint)
+    return badArguments(e, "need Uint, Uint");
+  if (constantUint(a[1]) == 0u)
+    return err(e, "operator 'mod': Uint modulo by a constant zero (undefined behaviour, R-UB)");
+  e.type = ValueType::Uint;
+  return std::nullopt;
+}
+
+Typing typeMinMax(Expr& e) {
+  auto& a = e.args;
+  unifyLiterals(a[0], a[1]);
+  if (a[0].type != a[1].type || a[0].type == ValueType::Bool)
+    return badArguments(e, "need the same numeric type");
+  e.type = a[0].type;
+  return std::nullopt;
+}
+
+Typing typeComparison(Expr& e) {  // eq ne lt le gt ge
+  auto& a = e.args;
+  unifyLiterals(a[0], a[1]);
+  if (a[0].type != a[1].type || !isScalarNumber(a[0].type))
+    return badArguments(e, "need the same scalar type (Uint or Float)");
+  e.type = ValueType::Bool;
+  return std::nullopt;
+}
+
+Typing typeLogic(Expr& e) {  // and or not
+  for (const Expr& x : e.args)
+    if (x.type != ValueType::Bool) return badArguments(e, "need Bool");
+  e.type = ValueType::Bool;
+  return std::nullopt;
+}
+
+// One argument of type `from`, a result of type `to` (odd, even, float, uint).
+template <ValueType from, ValueType to>
+Typing typeUnary(Expr& e) {
+  if (e.args[0].type != from) return badArguments(e, std::string("need ") + valueTypeName(from));
+  e.type = to;
+  return std::nullopt;
+}
+
+Typing typeVectorOf(Expr& e) {  // vec2 vec3 vec4
+  const int size = e.name[3] - '0';
+  const int n = static_cast<int>(e.args.size());
+  if (n != 1 && n != size)
+    return err(e, "operator '" + e.name + "' takes 1 (splat) or " + std::to_string(size) +
+                      " Float arguments, got " + std::to_string(n));
+  for (Expr& x : e.args) {
+    if (isUintLiteral(x)) x.type = ValueType::Float;
+    if (x.type != ValueType::Float) return badArguments(e, "need Float scalars");
+  }
+  e.type = vectorOf(size);
+  return std::nullopt;
+}
+
+Typing typeComponent(Expr& e) {  // x y z w
+  const std::string& name = e.name;
+  const int index = name == "x" ? 0 : name == "y" ? 1 : name == "z" ? 2 : 3;
+  if (!isVector(e.args[0].type) || componentCount(e.args[0].type) <= index)
+    return badArguments(e, "need a vector with a ." + name + " component");
+  e.type = ValueType::Float;
+  return std::nullopt;
+}
+
+Typing typeDot(Expr& e) {
+  if (!isVector(e.args[0].type) || e.args[0].type != e.args[1].type)
+    return badArguments(e, "need two vectors of the same size");
+  e.type = ValueType::Float;
+  return std::nullopt;
+}
+
+Typing typeLengthNormalize(Expr& e) {
+  if (!isVector(e.args[0].type)) return badArguments(e, "need a vector");
+  e.type = e.name == "length" ? ValueType::Float : e.args[0].type;
+  return std::nullopt;
+}
+
+template <ValueType type>
+Typing typeFixed(Expr& e) {  // sphere_hit, sphere_near, sphere_far
+  e.type = type;
+  return std::nullopt;
+}
+
+Typing typeLight(Expr& e) {  // light_*
+  if (e.args[0].type != ValueType::Vec3 || e.args[1].type != ValueType::Vec3)
+    return badArguments(e, "need a Vec3 position and a Vec3 normal");
+  e.type = ValueType::Vec4;
+  return std::nullopt;
+}
+
+Typing typeShaderRecord(Expr& e) {  // shader_record_uint, shader_record_float
+  if (!isUintLiteral(e.args[0]) || e.args[0].literal[0] > 7)
+    return err(e, "operator '" + e.name + "' takes a Uint literal word index 0..7");
+  e.type = e.name == "shader_record_uint" ? ValueType::Uint : ValueType::Float;
+  return std::nullopt;
+}
+
+// The typing rule of an operator, by name (light_* by its prefix); null when
+// it has none.
+Typing (*typingRule(const std::string& name))(Expr&) {
+  using V = ValueType;
+  static const std::map<std::string, Typing (*)(Expr&)> rules = {
+      {"add", typeArithmetic},
+      {"sub", typeArithmetic},
+      {"mul", typeArithmetic},
+      {"div", typeArithmetic},
+      {"mod", typeMod},
+      {"min", typeMinMax},
+      {"max", typeMinMax},
+      {"eq", typeComparison},
+      {"ne", typeComparison},
+      {"lt", typeComparison},
+      {"le", typeComparison},
+      {"gt", typeComparison},
+      {"ge", typeComparison},
+      {"and", typeLogic},
+      {"or", typeLogic},
+      {"not", typeLogic},
+      {"odd", typeUnary<V::Uint, V::Bool>},
+      {"even", typeUnary<V::Uint, V::Bool>},
+      {"float", typeUnary<V::Uint, V::Float>},
+      {"uint", typeUnary<V::Float, V::Uint>},
+      {"vec2", typeVectorOf},
+      {"vec3", typeVectorOf},
+      {"vec4", typeVectorOf},
+      {"x", typeComponent},
+      {"y", typeComponent},
+      {"z", typeComponent},
+      {"w", typeComponent},
+      {"dot", typeDot},
+      {"length", typeLengthNormalize},
+      {"normalize", typeLengthNormalize},
+      {"sphere_hit", typeFixed<V::Bool>},
+      {"sphere_near", typeFixed<V::Float>},
+      {"sphere_far", typeFixed<V::Float>},
+      {"shader_record_uint", typeShaderRecord},
+      {"shader_record_float", typeShaderRecord},
+  };
+  if (auto it = rules.find(name); it != rules.end()) return it->second;
+  if (name.rfind("light_", 0) == 0) return typeLight;
+  return nullptr;
+}
+
+std::optional<ProgramError> checkOp(Expr& e, Stage stage, const OpInfo& op) {
+  const std::string& name = e.name;
+  const int n = static_cast<int>(e.args.size());
   if (!(op.stages & stageBit(stage)))
     return err(e, "operator '" + name + "' is not available in " + stageName(stage));
   if (n < op.min_args || n > op.max_args) {
@@ -72,121 +242,9 @@ std::optional<ProgramError> checkOp(Expr& e, Stage stage, const OpInfo& op) {
     return err(e,
                "operator '" + name + "' takes " + want + " argument(s), got " + std::to_string(n));
   }
-  for (Expr& arg : a)
+  for (Expr& arg : e.args)
     if (auto r = checkExpr(arg, stage)) return r;
-  auto bad = [&](const std::string& need) {
-    return err(e, "operator '" + name + "': arguments are (" + typeList(a) + "); " + need);
-  };
-
-  if (name == "add" || name == "sub" || name == "mul" || name == "div") {
-    unifyLiterals(a[0], a[1]);
-    ValueType t0 = a[0].type, t1 = a[1].type;
-    if (t0 == t1 && t0 != ValueType::Bool) {
-      e.type = t0;
-    } else if (isVector(t0) && t1 == ValueType::Float) {
-      e.type = t0;
-    } else if (t0 == ValueType::Float && isVector(t1)) {
-      e.type = t1;
-    } else {
-      return bad("need the same numeric type, or a Float with a vector");
-    }
-    if (name == "div" && e.type == ValueType::Uint && constantUint(a[1]) == 0u)
-      return err(e, "operator 'div': Uint division by a constant zero (undefined behaviour, R-UB)");
-    return std::nullopt;
-  }
-  if (name == "mod") {
-    if (a[0].type != ValueType::Uint || a[1].type != ValueType::Uint) return bad("need Uint, Uint");
-    if (constantUint(a[1]) == 0u)
-      return err(e, "operator 'mod': Uint modulo by a constant zero (undefined behaviour, R-UB)");
-    e.type = ValueType::Uint;
-    return std::nullopt;
-  }
-  if (name == "min" || name == "max") {
-    unifyLiterals(a[0], a[1]);
-    if (a[0].type != a[1].type || a[0].type == ValueType::Bool)
-      return bad("need the same numeric type");
-    e.type = a[0].type;
-    return std::nullopt;
-  }
-  if (name == "eq" || name == "ne" || name == "lt" || name == "le" || name == "gt" ||
-      name == "ge") {
-    unifyLiterals(a[0], a[1]);
-    if (a[0].type != a[1].type || !isScalarNumber(a[0].type))
-      return bad("need the same scalar type (Uint or Float)");
-    e.type = ValueType::Bool;
-    return std::nullopt;
-  }
-  if (name == "and" || name == "or" || name == "not") {
-    for (const Expr& x : a)
-      if (x.type != ValueType::Bool) return bad("need Bool");
-    e.type = ValueType::Bool;
-    return std::nullopt;
-  }
-  if (name == "odd" || name == "even") {
-    if (a[0].type != ValueType::Uint) return bad("need Uint");
-    e.type = ValueType::Bool;
-    return std::nullopt;
-  }
-  if (name == "float") {
-    if (a[0].type != ValueType::Uint) return bad("need Uint");
-    e.type = ValueType::Float;
-    return std::nullopt;
-  }
-  if (name == "uint") {
-    if (a[0].type != ValueType::Float) return bad("need Float");
-    e.type = ValueType::Uint;
-    return std::nullopt;
-  }
-  if (name == "vec2" || name == "vec3" || name == "vec4") {
-    const int size = name[3] - '0';
-    if (n != 1 && n != size)
-      return err(e, "operator '" + name + "' takes 1 (splat) or " + std::to_string(size) +
-                        " Float arguments, got " + std::to_string(n));
-    for (Expr& x : a) {
-      if (isUintLiteral(x)) x.type = ValueType::Float;
-      if (x.type != ValueType::Float) return bad("need Float scalars");
-    }
-    e.type = vectorOf(size);
-    return std::nullopt;
-  }
-  if (name == "x" || name == "y" || name == "z" || name == "w") {
-    const int index = name == "x" ? 0 : name == "y" ? 1 : name == "z" ? 2 : 3;
-    if (!isVector(a[0].type) || componentCount(a[0].type) <= index)
-      return bad("need a vector with a ." + name + " component");
-    e.type = ValueType::Float;
-    return std::nullopt;
-  }
-  if (name == "dot") {
-    if (!isVector(a[0].type) || a[0].type != a[1].type)
-      return bad("need two vectors of the same size");
-    e.type = ValueType::Float;
-    return std::nullopt;
-  }
-  if (name == "length" || name == "normalize") {
-    if (!isVector(a[0].type)) return bad("need a vector");
-    e.type = name == "length" ? ValueType::Float : a[0].type;
-    return std::nullopt;
-  }
-  if (name == "sphere_hit") {
-    e.type = ValueType::Bool;
-    return std::nullopt;
-  }
-  if (name == "sphere_near" || name == "sphere_far") {
-    e.type = ValueType::Float;
-    return std::nullopt;
-  }
-  if (name.rfind("light_", 0) == 0) {
-    if (a[0].type != ValueType::Vec3 || a[1].type != ValueType::Vec3)
-      return bad("need a Vec3 position and a Vec3 normal");
-    e.type = ValueType::Vec4;
-    return std::nullopt;
-  }
-  if (name == "shader_record_uint" || name == "shader_record_float") {
-    if (!isUintLiteral(a[0]) || a[0].literal[0] > 7)
-      return err(e, "operator '" + name + "' takes a Uint literal word index 0..7");
-    e.type = name == "shader_record_uint" ? ValueType::Uint : ValueType::Float;
-    return std::nullopt;
-  }
+  if (const auto rule = typingRule(name)) return rule(e);
   return err(e, "operator '" + name + "' has no typing rule");
 }
 

@@ -139,36 +139,40 @@ void barrier(VkCommandBuffer cmd, VkPipelineStageFlags dst_stage) {
                        &mb, 0, nullptr, 0, nullptr);
 }
 
-}  // namespace
+// The builds of one command buffer and their places in one scratch buffer.
+struct ScratchPlan {
+  VkDeviceSize align = 0;
+  VkDeviceSize total = 0;
+  std::vector<VkDeviceSize> offsets;  // one a build, in order
+  void add(VkDeviceSize size) {
+    total = alignUp(total, align);
+    offsets.push_back(total);
+    total += size;
+  }
+};
 
-VkAccelerationStructureKHR recordSceneBuild(const VulkanContext& ctx, const Scene& scene,
-                                            VkCommandBuffer cmd, Cleanup& cleanup) {
-  const VkDeviceSize scratch_align = ctx.as_props.minAccelerationStructureScratchOffsetAlignment;
+// The BLAS builds: their structures created at the sizes the driver asks
+// for, their scratch placed. Only BLASes some instance reaches are built.
+struct BlasBuilds {
+  std::vector<VkAccelerationStructureBuildGeometryInfoKHR> infos;
+  std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
+};
 
-  // Which BLASes some instance reaches.
+std::vector<bool> reachedBlases(const Scene& scene) {
   std::vector<bool> used(scene.blases.size(), false);
   for (const Instance& inst : scene.instances)
     if (inst.blas && *inst.blas < scene.blases.size()) used[*inst.blas] = true;
+  return used;
+}
 
-  InputPacker packer;
-  std::vector<BlasBuild> builds(scene.blases.size());
-  for (size_t i = 0; i < scene.blases.size(); ++i)
-    if (used[i]) describeBlas(scene.blases[i], packer, builds[i]);
-
-  Buffer inputs;
-  if (!packer.bytes().empty())
-    inputs =
-        createUploadBuffer(ctx, packer.bytes().data(), packer.bytes().size(), kInputUsage, cleanup);
-
-  // Sizes, structures and scratch offsets of the BLASes.
-  std::vector<VkAccelerationStructureBuildGeometryInfoKHR> infos;
-  std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
-  std::vector<VkDeviceSize> scratch_offsets;
-  VkDeviceSize scratch_total = 0;
+BlasBuilds createBlases(const VulkanContext& ctx, std::vector<BlasBuild>& builds,
+                        const std::vector<bool>& used, VkDeviceAddress inputs, ScratchPlan& scratch,
+                        Cleanup& cleanup) {
+  BlasBuilds out;
   for (size_t i = 0; i < builds.size(); ++i) {
     if (!used[i]) continue;
     BlasBuild& b = builds[i];
-    patchAddresses(b, inputs.address);
+    patchAddresses(b, inputs);
     VkAccelerationStructureBuildGeometryInfoKHR info =
         buildInfo(VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, b.geometries);
     VkAccelerationStructureBuildSizesInfoKHR sizes{
@@ -183,14 +187,16 @@ VkAccelerationStructureKHR recordSceneBuild(const VulkanContext& ctx, const Scen
         VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_DEVICE_ADDRESS_INFO_KHR};
     ai.accelerationStructure = b.handle;
     b.address = ctx.fn.getAccelerationStructureDeviceAddress(ctx.device, &ai);
-    scratch_total = alignUp(scratch_total, scratch_align);
-    scratch_offsets.push_back(scratch_total);
-    scratch_total += sizes.buildScratchSize;
-    infos.push_back(info);
-    ranges.push_back(b.ranges.data());
+    scratch.add(sizes.buildScratchSize);
+    out.infos.push_back(info);
+    out.ranges.push_back(b.ranges.data());
   }
+  return out;
+}
 
-  // The TLAS: its instances and sizes.
+// The TLAS's instances as the device reads them (a null BLAS: address 0).
+std::vector<VkAccelerationStructureInstanceKHR> tlasInstances(
+    const Scene& scene, const std::vector<BlasBuild>& builds) {
   std::vector<VkAccelerationStructureInstanceKHR> instances;
   for (const Instance& inst : scene.instances) {
     VkAccelerationStructureInstanceKHR vi{};
@@ -203,45 +209,79 @@ VkAccelerationStructureKHR recordSceneBuild(const VulkanContext& ctx, const Scen
         inst.blas && *inst.blas < builds.size() ? builds[*inst.blas].address : 0;
     instances.push_back(vi);
   }
+  return instances;
+}
+
+// The TLAS build over an instance buffer: its structure created, its scratch
+// placed. `geometry` must outlive the build info that points to it.
+VkAccelerationStructureBuildGeometryInfoKHR createTlas(
+    const VulkanContext& ctx, VkDeviceAddress instances, uint32_t instance_count,
+    std::vector<VkAccelerationStructureGeometryKHR>& geometry, ScratchPlan& scratch,
+    Cleanup& cleanup) {
+  geometry.assign(1, VkAccelerationStructureGeometryKHR{});
+  geometry[0].sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR;
+  geometry[0].geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
+  geometry[0].geometry.instances.sType =
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
+  geometry[0].geometry.instances.arrayOfPointers = VK_FALSE;
+  geometry[0].geometry.instances.data.deviceAddress = instances;
+  VkAccelerationStructureBuildGeometryInfoKHR info =
+      buildInfo(VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, geometry);
+  VkAccelerationStructureBuildSizesInfoKHR sizes{
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
+  ctx.fn.getAccelerationStructureBuildSizes(
+      ctx.device, VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &info, &instance_count, &sizes);
+  info.dstAccelerationStructure = createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
+                                                  sizes.accelerationStructureSize, cleanup);
+  scratch.add(sizes.buildScratchSize);
+  return info;
+}
+
+// One scratch buffer for every build; its address aligned up to the
+// scratch alignment. Returns that aligned address.
+VkDeviceAddress createScratch(const VulkanContext& ctx, const ScratchPlan& scratch,
+                              Cleanup& cleanup) {
+  Buffer buffer =
+      createBuffer(ctx, scratch.total + scratch.align,
+                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                   MemoryUse::Device, cleanup);
+  return alignUp(buffer.address, scratch.align);
+}
+
+}  // namespace
+
+VkAccelerationStructureKHR recordSceneBuild(const VulkanContext& ctx, const Scene& scene,
+                                            VkCommandBuffer cmd, Cleanup& cleanup) {
+  ScratchPlan scratch;
+  scratch.align = ctx.as_props.minAccelerationStructureScratchOffsetAlignment;
+  const std::vector<bool> used = reachedBlases(scene);
+  InputPacker packer;
+  std::vector<BlasBuild> builds(scene.blases.size());
+  for (size_t i = 0; i < scene.blases.size(); ++i)
+    if (used[i]) describeBlas(scene.blases[i], packer, builds[i]);
+  Buffer inputs;
+  if (!packer.bytes().empty())
+    inputs =
+        createUploadBuffer(ctx, packer.bytes().data(), packer.bytes().size(), kInputUsage, cleanup);
+  BlasBuilds blases = createBlases(ctx, builds, used, inputs.address, scratch, cleanup);
+
+  const std::vector<VkAccelerationStructureInstanceKHR> instances = tlasInstances(scene, builds);
   Buffer instance_buffer = createUploadBuffer(
       ctx, instances.data(), instances.size() * sizeof(VkAccelerationStructureInstanceKHR),
       kInputUsage, cleanup);
-  std::vector<VkAccelerationStructureGeometryKHR> tlas_geo(1);
-  tlas_geo[0].sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR;
-  tlas_geo[0].geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
-  tlas_geo[0].geometry.instances.sType =
-      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
-  tlas_geo[0].geometry.instances.arrayOfPointers = VK_FALSE;
-  tlas_geo[0].geometry.instances.data.deviceAddress = instance_buffer.address;
+  const uint32_t instance_count = static_cast<uint32_t>(instances.size());
+  std::vector<VkAccelerationStructureGeometryKHR> tlas_geometry;
   VkAccelerationStructureBuildGeometryInfoKHR tlas_info =
-      buildInfo(VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, tlas_geo);
-  uint32_t instance_count = static_cast<uint32_t>(instances.size());
-  VkAccelerationStructureBuildSizesInfoKHR tlas_sizes{
-      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
-  ctx.fn.getAccelerationStructureBuildSizes(ctx.device,
-                                            VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
-                                            &tlas_info, &instance_count, &tlas_sizes);
-  VkAccelerationStructureKHR tlas =
-      createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
-                      tlas_sizes.accelerationStructureSize, cleanup);
-  tlas_info.dstAccelerationStructure = tlas;
-  scratch_total = alignUp(scratch_total, scratch_align);
-  VkDeviceSize tlas_scratch = scratch_total;
-  scratch_total += tlas_sizes.buildScratchSize;
+      createTlas(ctx, instance_buffer.address, instance_count, tlas_geometry, scratch, cleanup);
 
-  // One scratch buffer; its address aligned up to the scratch alignment.
-  Buffer scratch =
-      createBuffer(ctx, scratch_total + scratch_align,
-                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-                   MemoryUse::Device, cleanup);
-  VkDeviceAddress scratch_base = alignUp(scratch.address, scratch_align);
-  for (size_t i = 0; i < infos.size(); ++i)
-    infos[i].scratchData.deviceAddress = scratch_base + scratch_offsets[i];
-  tlas_info.scratchData.deviceAddress = scratch_base + tlas_scratch;
+  const VkDeviceAddress scratch_base = createScratch(ctx, scratch, cleanup);
+  for (size_t i = 0; i < blases.infos.size(); ++i)
+    blases.infos[i].scratchData.deviceAddress = scratch_base + scratch.offsets[i];
+  tlas_info.scratchData.deviceAddress = scratch_base + scratch.offsets.back();
 
-  if (!infos.empty()) {
-    ctx.fn.cmdBuildAccelerationStructures(cmd, static_cast<uint32_t>(infos.size()), infos.data(),
-                                          ranges.data());
+  if (!blases.infos.empty()) {
+    ctx.fn.cmdBuildAccelerationStructures(cmd, static_cast<uint32_t>(blases.infos.size()),
+                                          blases.infos.data(), blases.ranges.data());
     barrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR);
   }
   VkAccelerationStructureBuildRangeInfoKHR tlas_range{};
@@ -249,7 +289,7 @@ VkAccelerationStructureKHR recordSceneBuild(const VulkanContext& ctx, const Scen
   const VkAccelerationStructureBuildRangeInfoKHR* tlas_ranges = &tlas_range;
   ctx.fn.cmdBuildAccelerationStructures(cmd, 1, &tlas_info, &tlas_ranges);
   barrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
-  return tlas;
+  return tlas_info.dstAccelerationStructure;
 }
 
 }  // namespace rayspec
