@@ -18,210 +18,266 @@ namespace rayspec {
 
 using namespace trace_detail;
 
-void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& candidates,
-                            const std::vector<std::pair<size_t, double>>& reports,
-                            const std::vector<ShaderDecision>& shaderUnsure,
-                            const Payload& payloadIn) {
-  const std::vector<ModelCandidate>* cands = &candidates;
-  const ModelScene& scene = *sh_.scene;
-  const TraceRay& r = tr.ray;
-  RayAmbiguity amb;
-  amb.ray = index_;
-  std::optional<AmbiguityReason> reason;  // the first reason found
-  const double finalT = tr.best.valid ? tr.best.t : INFINITY;
-  // A triangle candidate that a device may see as a hit in the interval.
-  auto eligible = [&](const ModelCandidate& cand) {
-    const ModelInstance& mi = scene.instances[cand.instance];
-    const ModelGeometry& g = scene.blases[mi.blas].geometries[cand.geometry];
-    const bool opaque = resolveOpaque(g.flags, mi.src->flags, tr.flags);
-    if (((tr.flags & kRayCullOpaque) && opaque) || ((tr.flags & kRayCullNoOpaque) && !opaque))
-      return false;
-    if (facing(scene, cand, r, tr.flags).culled) return false;
-    // R-CAND-TRI-OPEN: at or beyond an end every device judges exactly.
-    if ((cand.exact_tmin && cand.t <= r.tmin) || (cand.exact_tmax && cand.t >= r.tmax))
-      return false;
-    const double tl = tr.endTol(cand);
-    return !(cand.t < r.tmin - tl || cand.t > r.tmax + tl);
-  };
-  auto add = [&](bool hit, uint32_t i, uint32_t g, uint32_t p) {
-    for (const Candidate& k : amb.candidates)
-      if (k.hit == hit && (!hit || (k.instance == i && k.geometry == g && k.primitive == p)))
-        return;
-    amb.candidates.push_back({hit, i, g, p});
-  };
-  std::vector<size_t> unsure;  // candidates whose decision could flip
-  double reasonT = 0;          // the t of the candidate that gave `reason`
-  bool faces = false;
-  for (size_t k = 0; k < cands->size(); ++k) {
-    const ModelCandidate& cand = (*cands)[k];
+// The steps of Machine::classifyTrace over one trace: which candidates are
+// unsure, the answers the what-if runs give, the reason the ray is
+// ambiguous (the first found), and the answers it may legally have.
+class TraceClassifier {
+ public:
+  TraceClassifier(Machine& m, Traversal& tr, const std::vector<ModelCandidate>& cands,
+                  const Payload& payload_in)
+      : m_(m), tr_(tr), cands_(cands), payload_in_(payload_in), scene_(*m.sh_.scene) {
+    amb_.ray = m.index_;
+  }
+
+  // Triangles near an edge, vertex or interval end, and grazed boxes.
+  void findUnsure();
+  // The triangles around the shared edge or vertex a ray meets.
+  void findSharedTriangles();
+  // The what-if runs where the unsure candidates decide otherwise.
+  void tryUnsure();
+  // Ties at the committed t, and the first candidate under TerminateOnFirstHit
+  // or a terminating any-hit.
+  void tryOrders(const std::vector<std::pair<size_t, double>>& reports);
+  // Intersection-program decisions within rounding.
+  void tryShaderDecisions(const std::vector<ShaderDecision>& shader_unsure);
+  // A committed t whose rounding may exceed hit_t's tolerance: its bound.
+  void boundT();
+  // Marks the ray ambiguous with its legal answers, if a reason was found.
+  void finish();
+
+ private:
+  bool eligible(const ModelCandidate& cand) const;
+  void add(bool hit, uint32_t i, uint32_t g, uint32_t p);
+  void addCommitted(const Committed& b);
+  bool sameAsCommitted(const Committed& b) const;
+
+  Machine& m_;
+  Traversal& tr_;
+  const std::vector<ModelCandidate>& cands_;
+  const Payload& payload_in_;
+  const ModelScene& scene_;
+  RayAmbiguity amb_;
+  std::optional<AmbiguityReason> reason_;  // the first reason found
+  double reason_t_ = 0;                    // the t of the candidate that gave it
+  std::vector<size_t> unsure_;             // candidates whose decision could flip
+  bool faces_ = false;                     // a grazed box among them
+};
+
+// A triangle candidate that a device may see as a hit in the interval.
+bool TraceClassifier::eligible(const ModelCandidate& cand) const {
+  const TraceRay& r = tr_.ray;
+  const ModelInstance& mi = scene_.instances[cand.instance];
+  const ModelGeometry& g = scene_.blases[mi.blas].geometries[cand.geometry];
+  const bool opaque = resolveOpaque(g.flags, mi.src->flags, tr_.flags);
+  if (((tr_.flags & kRayCullOpaque) && opaque) || ((tr_.flags & kRayCullNoOpaque) && !opaque))
+    return false;
+  if (facing(scene_, cand, r, tr_.flags).culled) return false;
+  // R-CAND-TRI-OPEN: at or beyond an end every device judges exactly.
+  if ((cand.exact_tmin && cand.t <= r.tmin) || (cand.exact_tmax && cand.t >= r.tmax)) return false;
+  const double tl = tr_.endTol(cand);
+  return !(cand.t < r.tmin - tl || cand.t > r.tmax + tl);
+}
+
+void TraceClassifier::add(bool hit, uint32_t i, uint32_t g, uint32_t p) {
+  for (const Candidate& k : amb_.candidates)
+    if (k.hit == hit && (!hit || (k.instance == i && k.geometry == g && k.primitive == p))) return;
+  amb_.candidates.push_back({hit, i, g, p});
+}
+
+void TraceClassifier::addCommitted(const Committed& b) {
+  if (b.valid)
+    add(true, b.instance, b.geometry, b.primitive);
+  else
+    add(false, 0, 0, 0);
+}
+
+void TraceClassifier::findUnsure() {
+  const TraceRay& r = tr_.ray;
+  const double finalT = tr_.best.valid ? tr_.best.t : INFINITY;
+  for (size_t k = 0; k < cands_.size(); ++k) {
+    const ModelCandidate& cand = cands_[k];
     if (cand.aabb) {
-      // A grazed box matters only if its what-if runs change the answer (below).
-      if (cand.near_face && cand.t <= finalT + tr.tol(cand.t)) {
-        unsure.push_back(k);
-        faces = true;
+      // A grazed box matters only if its what-if runs change the answer (tryUnsure).
+      if (cand.near_face && cand.t <= finalT + tr_.tol(cand.t)) {
+        unsure_.push_back(k);
+        faces_ = true;
       }
       continue;
     }
     if (!eligible(cand)) continue;
-    const double tl = tr.tol(cand.t);
+    const double tl = tr_.tol(cand.t);
     std::optional<AmbiguityReason> why;
     if (cand.ambiguity != TriAmbiguity::None && cand.t <= finalT + tl)
       why =
           cand.ambiguity == TriAmbiguity::Vertex ? AmbiguityReason::Vertex : AmbiguityReason::Edge;
     // R-CAND-TRI-OPEN: an interval end is a tie only where a device's t may
     // round across it (model/exact_interval.h).
-    else if (cand.hit && !cand.exact_tmin && std::fabs(cand.t - r.tmin) <= tr.endTol(cand))
+    else if (cand.hit && !cand.exact_tmin && std::fabs(cand.t - r.tmin) <= tr_.endTol(cand))
       why = AmbiguityReason::TminTie;
-    else if (cand.hit && !cand.exact_tmax && std::fabs(cand.t - r.tmax) <= tr.endTol(cand))
+    else if (cand.hit && !cand.exact_tmax && std::fabs(cand.t - r.tmax) <= tr_.endTol(cand))
       why = AmbiguityReason::TmaxTie;
-    if (why) {
-      // The first reason found, except that a vertex outranks an edge met at
-      // the same t (the triangles around a vertex include ones that see only
-      // one of its edges within the bound).
-      if (!reason || (*reason == AmbiguityReason::Edge && *why == AmbiguityReason::Vertex &&
-                      std::fabs(cand.t - reasonT) <= tl)) {
-        reason = why;
-        reasonT = cand.t;
-      }
-      unsure.push_back(k);
+    if (!why) continue;
+    // The first reason found, except that a vertex outranks an edge met at
+    // the same t (the triangles around a vertex include ones that see only
+    // one of its edges within the bound).
+    if (!reason_ || (*reason_ == AmbiguityReason::Edge && *why == AmbiguityReason::Vertex &&
+                     std::fabs(cand.t - reason_t_) <= tl)) {
+      reason_ = why;
+      reason_t_ = cand.t;
     }
+    unsure_.push_back(k);
   }
-  if (reason == AmbiguityReason::Edge || reason == AmbiguityReason::Vertex) {
-    // The triangles of one instance within the bound of the same shared edge
-    // or vertex (same t), each with the model's own decision (one of them
-    // where the mesh is closed around the ray: watertight.cpp): a watertight
-    // device finds one of them, so a double hit shows as extra any-hit runs.
-    const ModelCandidate* first = nullptr;
-    for (const ModelCandidate& cand : *cands) {
-      if (cand.aabb || cand.ambiguity == TriAmbiguity::None || !eligible(cand)) continue;
-      if (!first) first = &cand;
-      if (cand.instance == first->instance && std::fabs(cand.t - first->t) <= tr.tol(first->t))
-        amb.shared_triangles.push_back({cand.hit, cand.instance, cand.geometry, cand.primitive});
-    }
+}
+
+void TraceClassifier::findSharedTriangles() {
+  if (reason_ != AmbiguityReason::Edge && reason_ != AmbiguityReason::Vertex) return;
+  // The triangles of one instance within the bound of the same shared edge
+  // or vertex (same t), each with the model's own decision (one of them
+  // where the mesh is closed around the ray: watertight.cpp): a watertight
+  // device finds one of them, so a double hit shows as extra any-hit runs.
+  const ModelCandidate* first = nullptr;
+  for (const ModelCandidate& cand : cands_) {
+    if (cand.aabb || cand.ambiguity == TriAmbiguity::None || !eligible(cand)) continue;
+    if (!first) first = &cand;
+    if (cand.instance == first->instance && std::fabs(cand.t - first->t) <= tr_.tol(first->t))
+      amb_.shared_triangles.push_back({cand.hit, cand.instance, cand.geometry, cand.primitive});
   }
-  if (reason || faces) {
-    // The legal answers: this run's, and those of the what-if runs where
-    // the unsure candidates decide otherwise (whatIf).
-    auto addCommitted = [&](const Committed& b) {
-      if (b.valid)
-        add(true, b.instance, b.geometry, b.primitive);
-      else
-        add(false, 0, 0, 0);
-    };
-    addCommitted(tr.best);
-    for (const Committed& b : whatIf(tr, *cands, unsure, payloadIn)) {
-      const bool same =
-          b.valid == tr.best.valid &&
-          (!b.valid || (b.instance == tr.best.instance && b.geometry == tr.best.geometry &&
-                        b.primitive == tr.best.primitive && b.kind == tr.best.kind &&
-                        std::fabs(b.t - tr.best.t) <= tr.tol(b.t)));
-      if (!same && !reason) reason = AmbiguityReason::AabbFace;
-      addCommitted(b);
-    }
+}
+
+bool TraceClassifier::sameAsCommitted(const Committed& b) const {
+  const Committed& best = tr_.best;
+  return b.valid == best.valid &&
+         (!b.valid || (b.instance == best.instance && b.geometry == best.geometry &&
+                       b.primitive == best.primitive && b.kind == best.kind &&
+                       std::fabs(b.t - best.t) <= tr_.tol(b.t)));
+}
+
+void TraceClassifier::tryUnsure() {
+  if (!reason_ && !faces_) return;
+  // The legal answers: this run's, and those of the what-if runs where the
+  // unsure candidates decide otherwise (whatIf).
+  addCommitted(tr_.best);
+  for (const Committed& b : m_.whatIf(tr_, cands_, unsure_, payload_in_)) {
+    if (!sameAsCommitted(b) && !reason_) reason_ = AmbiguityReason::AabbFace;
+    addCommitted(b);
   }
-  // R-TIE, R-ORDER-UNSPEC: candidates confirmed at the committed t (within
-  // the error bound) may end in any order; R-TOFH: any candidate may be
-  // confirmed first; R-ORDER-UNSPEC, R-TERMINATE: where an any-hit may
-  // terminate, the candidate a device meets first may end the traversal.
-  // Each is tried in a sandboxed what-if run (preferred in ties, or processed
-  // first, the rest in order); those runs' answers are legal.
-  const bool tofh = (tr.flags & kRayTerminateOnFirstHit) != 0;
-  const bool terminates = !tofh && anyHitMayTerminate(tr, *cands);
+}
+
+// R-TIE, R-ORDER-UNSPEC: candidates confirmed at the committed t (within the
+// error bound) may end in any order; R-TOFH: any candidate may be confirmed
+// first; R-ORDER-UNSPEC, R-TERMINATE: where an any-hit may terminate, the
+// candidate a device meets first may end the traversal. Each is tried in a
+// sandboxed what-if run (preferred in ties, or processed first, the rest in
+// order); those runs' answers are legal.
+void TraceClassifier::tryOrders(const std::vector<std::pair<size_t, double>>& reports) {
+  const bool tofh = (tr_.flags & kRayTerminateOnFirstHit) != 0;
+  const bool terminates = !tofh && m_.anyHitMayTerminate(tr_, cands_);
   std::vector<long> prefers, firsts, potential;
   std::set<std::array<uint32_t, 3>> tied;  // distinct keys confirmable at the committed t
   if (tofh || terminates) {
-    for (size_t k = 0; k < cands->size(); ++k) {
-      const ModelCandidate& cand = (*cands)[k];
+    for (size_t k = 0; k < cands_.size(); ++k) {
+      const ModelCandidate& cand = cands_[k];
       if (cand.aabb || ((cand.hit || cand.ambiguity != TriAmbiguity::None) && eligible(cand)))
         firsts.push_back(static_cast<long>(k));
     }
   }
-  if (!tofh && tr.best.valid) {
-    tied.insert({tr.best.instance, tr.best.geometry, tr.best.primitive});
+  if (!tofh && tr_.best.valid) {
+    tied.insert({tr_.best.instance, tr_.best.geometry, tr_.best.primitive});
     // Per box: 1 its intersection program ran, 2 it reported at the committed t.
-    std::vector<uint8_t> boxes(cands->size(), 0);
-    for (const auto& [index, t] : reports) boxes[index] |= tr.ties(t) ? 3 : 1;
-    for (size_t k = 0; k < cands->size(); ++k) {
-      const ModelCandidate& cand = (*cands)[k];
+    std::vector<uint8_t> boxes(cands_.size(), 0);
+    for (const auto& [index, t] : reports) boxes[index] |= tr_.ties(t) ? 3 : 1;
+    for (size_t k = 0; k < cands_.size(); ++k) {
+      const ModelCandidate& cand = cands_[k];
       bool tie = false;
       if (cand.aabb) {
         tie = (boxes[k] & 2) != 0;
         // A box entered just past the committed t may still report at it.
-        if (!boxes[k] && tr.ties(cand.t)) potential.push_back(static_cast<long>(k));
+        if (!boxes[k] && tr_.ties(cand.t)) potential.push_back(static_cast<long>(k));
       } else {
-        tie = cand.hit && tr.ties(cand.t) && eligible(cand);
+        tie = cand.hit && tr_.ties(cand.t) && eligible(cand);
       }
       if (!tie) continue;
       tied.insert({cand.instance, cand.geometry, cand.primitive});
-      if (cand.instance != tr.best.instance || cand.geometry != tr.best.geometry ||
-          cand.primitive != tr.best.primitive)
+      if (cand.instance != tr_.best.instance || cand.geometry != tr_.best.geometry ||
+          cand.primitive != tr_.best.primitive)
         prefers.push_back(static_cast<long>(k));
     }
     if (tied.size() < 2) prefers.clear();
     prefers.insert(prefers.end(), potential.begin(), potential.end());
   }
-  if (!prefers.empty() || firsts.size() > 1) {
-    const bool before = !amb.candidates.empty();
-    bool differs = false, differsFirst = false;
-    auto addOne = [&](const Committed& b) {
-      if (b.valid)
-        add(true, b.instance, b.geometry, b.primitive);
-      else
-        add(false, 0, 0, 0);
-      const bool d = b.valid != tr.best.valid || (b.valid && (b.instance != tr.best.instance ||
-                                                              b.geometry != tr.best.geometry ||
-                                                              b.primitive != tr.best.primitive));
-      differs = differs || d;
-      return d;
-    };
-    const size_t saved = amb.candidates.size();
-    addOne(tr.best);
-    for (long k : prefers) addOne(sandbox(tr, *cands, nullptr, k, -1, payloadIn));
-    if (firsts.size() > 1)
-      for (long k : firsts) {
-        // An edge or vertex triangle the model left out may be the device's first hit.
-        std::vector<int8_t> force(cands->size(), -1);
-        if ((*cands)[k].ambiguity != TriAmbiguity::None) force[k] = 1;
-        differsFirst = addOne(sandbox(tr, *cands, force.data(), -1, k, payloadIn)) || differsFirst;
-      }
-    const bool ambiguousNow = tofh ? differs : (differs || tied.size() >= 2);
-    if (ambiguousNow && !reason)
-      reason = tofh           ? AmbiguityReason::FirstHit
-               : differsFirst ? AmbiguityReason::Order
-                              : AmbiguityReason::TTie;
-    if (!ambiguousNow && !before) amb.candidates.resize(saved);
-  }
-  // R-PREC: an intersection program's decision that rounding may flip
-  // (sphere discriminant or root near an end): each flipped alone in a
-  // what-if run; the ray is ambiguous, as the device's counters may differ.
-  if (!shaderUnsure.empty()) {
-    auto addCommitted = [&](const Committed& b) {
-      if (b.valid)
-        add(true, b.instance, b.geometry, b.primitive);
-      else
-        add(false, 0, 0, 0);
-    };
-    addCommitted(tr.best);
-    for (const ShaderDecision& d : shaderUnsure) {
-      ShaderDecision flipped = d;
-      flipped.value = !d.value;
-      addCommitted(sandbox(tr, *cands, nullptr, -1, -1, payloadIn, &flipped));
+  if (prefers.empty() && firsts.size() <= 1) return;
+  const bool before = !amb_.candidates.empty();
+  bool differs = false, differsFirst = false;
+  auto addOne = [&](const Committed& b) {
+    addCommitted(b);
+    const bool d = b.valid != tr_.best.valid || (b.valid && (b.instance != tr_.best.instance ||
+                                                             b.geometry != tr_.best.geometry ||
+                                                             b.primitive != tr_.best.primitive));
+    differs = differs || d;
+    return d;
+  };
+  const size_t saved = amb_.candidates.size();
+  addOne(tr_.best);
+  for (long k : prefers) addOne(m_.sandbox(tr_, cands_, nullptr, k, -1, payload_in_));
+  if (firsts.size() > 1)
+    for (long k : firsts) {
+      // An edge or vertex triangle the model left out may be the device's first hit.
+      std::vector<int8_t> force(cands_.size(), -1);
+      if (cands_[k].ambiguity != TriAmbiguity::None) force[k] = 1;
+      differsFirst =
+          addOne(m_.sandbox(tr_, cands_, force.data(), -1, k, payload_in_)) || differsFirst;
     }
-    if (!reason) reason = AmbiguityReason::ShaderArith;
+  const bool ambiguousNow = tofh ? differs : (differs || tied.size() >= 2);
+  if (ambiguousNow && !reason_)
+    reason_ = tofh           ? AmbiguityReason::FirstHit
+              : differsFirst ? AmbiguityReason::Order
+                             : AmbiguityReason::TTie;
+  if (!ambiguousNow && !before) amb_.candidates.resize(saved);
+}
+
+// R-PREC: an intersection program's decision that rounding may flip (sphere
+// discriminant or root near an end): each flipped alone in a what-if run;
+// the ray is ambiguous, as the device's counters may differ.
+void TraceClassifier::tryShaderDecisions(const std::vector<ShaderDecision>& shader_unsure) {
+  if (shader_unsure.empty()) return;
+  addCommitted(tr_.best);
+  for (const ShaderDecision& d : shader_unsure) {
+    ShaderDecision flipped = d;
+    flipped.value = !d.value;
+    addCommitted(m_.sandbox(tr_, cands_, nullptr, -1, -1, payload_in_, &flipped));
   }
-  // R-PREC: the committed t is a root whose rounding on a device may exceed
-  // the comparison's tolerance for hit_t: the answer is sure, its t is
-  // checked against this wider bound.
-  if (tr.best.valid && tr.best.t_err > 0) {
-    const Tolerance tol = toleranceFor("hit_t");
-    if (tr.best.t_err > tol.abs + tol.rel * std::max(std::fabs(tr.best.t), 1.0))
-      t_bounds.push_back({index_, static_cast<float>(tr.best.t_err)});
-  }
-  if (reason) {
-    amb.reason = *reason;
-    ambiguous.push_back(std::move(amb));
-    ray_ambiguous_ = true;
-  }
+  if (!reason_) reason_ = AmbiguityReason::ShaderArith;
+}
+
+// R-PREC: the committed t is a root whose rounding on a device may exceed
+// the comparison's tolerance for hit_t: the answer is sure, its t is checked
+// against this wider bound.
+void TraceClassifier::boundT() {
+  if (!tr_.best.valid || tr_.best.t_err <= 0) return;
+  const Tolerance tol = toleranceFor("hit_t");
+  if (tr_.best.t_err > tol.abs + tol.rel * std::max(std::fabs(tr_.best.t), 1.0))
+    m_.t_bounds.push_back({m_.index_, static_cast<float>(tr_.best.t_err)});
+}
+
+void TraceClassifier::finish() {
+  if (!reason_) return;
+  amb_.reason = *reason_;
+  m_.ambiguous.push_back(std::move(amb_));
+  m_.ray_ambiguous_ = true;
+}
+
+void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& candidates,
+                            const std::vector<std::pair<size_t, double>>& reports,
+                            const std::vector<ShaderDecision>& shaderUnsure,
+                            const Payload& payloadIn) {
+  TraceClassifier c(*this, tr, candidates, payloadIn);
+  c.findUnsure();
+  c.findSharedTriangles();
+  c.tryUnsure();
+  c.tryOrders(reports);
+  c.tryShaderDecisions(shaderUnsure);
+  c.boundT();
+  c.finish();
 }
 
 // R-ORDER-UNSPEC: an any-hit that may terminate runs on one of the candidates

@@ -150,6 +150,7 @@ class alignas(64) Machine {
 
  private:
   friend struct Traversal;
+  friend class TraceClassifier;  // model_exact_tier.cpp: classifyTrace's steps
   Val eval(const CExpr& e, StageEnv& env);
   Val builtin(const CExpr& e, StageEnv& env);
   Val op(const CExpr& e, StageEnv& env);
