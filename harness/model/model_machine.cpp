@@ -413,20 +413,7 @@ Flow Machine::execStmt(const CStmt& s, StageEnv& env) {
       return Flow::Continue;
     case Stmt::Kind::SetPayload:
     case Stmt::Kind::SetCall:
-      for (const CAssign& a : s.assigns) {
-        const Val v = eval(a.value, env);
-        if (s.kind == Stmt::Kind::SetPayload && env.payload) {
-          if (a.slot == Slot::Color)
-            env.payload->color = v.f;
-          else if (a.slot == Slot::Value)
-            env.payload->value = v.u;
-        } else if (s.kind == Stmt::Kind::SetCall && env.call) {
-          if (a.slot == Slot::Color)
-            env.call->color = v.f;
-          else if (a.slot == Slot::Value)
-            env.call->value = v.u;
-        }
-      }
+      execSet(s, env);
       return Flow::Continue;
     case Stmt::Kind::Ignore:
       return Flow::Ignore;
@@ -441,73 +428,103 @@ Flow Machine::execStmt(const CStmt& s, StageEnv& env) {
       env.call->color = lightColor(s.light, P, N, env.record_data ? *env.record_data : kEmpty);
       return Flow::Continue;
     }
-    case Stmt::Kind::Call: {
-      CallData d;
-      for (const CAssign& a : s.assigns) {
-        const Val v = eval(a.value, env);
-        if (a.slot == Slot::Color)
-          d.color = v.f;
-        else if (a.slot == Slot::Value)
-          d.value = v.u;
-        else if (a.slot == Slot::Position)
-          d.position = {v.f[0], v.f[1], v.f[2]};
-        else if (a.slot == Slot::Normal)
-          d.normal = {v.f[0], v.f[1], v.f[2]};
-      }
-      callCallable(eval(s.call_index, env).u, d, env.depth, s);
-      env.callee = d;
+    case Stmt::Kind::Call:
+      execCall(s, env);
       return Flow::Continue;
-    }
-    case Stmt::Kind::Trace: {
-      const bool fromLaunch = env.stage == Stage::Raygen;
-      TraceRay r = launchRay(fromLaunch ? sh_.c->rays.rays[index_] : sh_.c->rays.defaults);
-      auto v3 = [&](int k, Vec3& out) {
-        if (s.has[k]) {
-          const Val v = eval(s.args[k], env);
-          out = {v.f[0], v.f[1], v.f[2]};
-        }
-      };
-      auto f1 = [&](int k, float& out) {
-        if (s.has[k]) {
-          const Val v = eval(s.args[k], env);
-          out = s.args[k].type == ValueType::Uint ? static_cast<float>(v.u) : v.f[0];
-        }
-      };
-      auto u1 = [&](int k, uint32_t& out) {
-        if (s.has[k]) out = eval(s.args[k], env).u;
-      };
-      v3(CStmt::kOrigin, r.origin);
-      v3(CStmt::kDirection, r.direction);
-      f1(CStmt::kTmin, r.tmin);
-      f1(CStmt::kTmax, r.tmax);
-      u1(CStmt::kFlags, r.flags);
-      u1(CStmt::kCullMask, r.cull_mask);
-      u1(CStmt::kSbtOffset, r.sbt_offset);
-      u1(CStmt::kSbtStride, r.sbt_stride);
-      u1(CStmt::kMiss, r.miss);
-      const uint32_t depth = env.stage == Stage::Raygen ? 1 : env.depth + 1;
-      if (depth > std::max<uint32_t>(sh_.c->pipeline.max_recursion, 1)) {
-        // R-RECURSION, R-UB: the ray is undefined; the model skips the trace
-        // (no traversal, no shader, the stage's child payload stays as it was).
-        if (!ray_undefined_)
-          markUndefined(
-              UndefinedReason::RecursionTooDeep,
-              (s.src && !s.src->loc.field.empty() ? s.src->loc.field : std::string("trace")) +
-                  ": trace at depth " + std::to_string(depth) + " exceeds pipeline.max_recursion " +
-                  std::to_string(sh_.c->pipeline.max_recursion));
-        return Flow::Continue;
-      }
-      Payload p = trace(r, depth, &s);
-      if (env.stage == Stage::Raygen && env.payload)
-        *env.payload = p;
-      else
-        env.child = p;
+    case Stmt::Kind::Trace:
+      execTrace(s, env);
       return Flow::Continue;
-    }
     case Stmt::Kind::Report:
       return report(s, env);
   }
   return Flow::Continue;
+}
+
+void Machine::execSet(const CStmt& s, StageEnv& env) {
+  for (const CAssign& a : s.assigns) {
+    const Val v = eval(a.value, env);
+    if (s.kind == Stmt::Kind::SetPayload && env.payload) {
+      if (a.slot == Slot::Color)
+        env.payload->color = v.f;
+      else if (a.slot == Slot::Value)
+        env.payload->value = v.u;
+    } else if (s.kind == Stmt::Kind::SetCall && env.call) {
+      if (a.slot == Slot::Color)
+        env.call->color = v.f;
+      else if (a.slot == Slot::Value)
+        env.call->value = v.u;
+    }
+  }
+}
+
+void Machine::execCall(const CStmt& s, StageEnv& env) {
+  CallData d;
+  for (const CAssign& a : s.assigns) {
+    const Val v = eval(a.value, env);
+    if (a.slot == Slot::Color)
+      d.color = v.f;
+    else if (a.slot == Slot::Value)
+      d.value = v.u;
+    else if (a.slot == Slot::Position)
+      d.position = {v.f[0], v.f[1], v.f[2]};
+    else if (a.slot == Slot::Normal)
+      d.normal = {v.f[0], v.f[1], v.f[2]};
+  }
+  callCallable(eval(s.call_index, env).u, d, env.depth, s);
+  env.callee = d;
+}
+
+// The ray a trace statement traces: the launch ray (raygen) or the case's
+// defaults for nested traces, with what the statement gives.
+TraceRay Machine::tracedRay(const CStmt& s, StageEnv& env) {
+  const bool fromLaunch = env.stage == Stage::Raygen;
+  TraceRay r = launchRay(fromLaunch ? sh_.c->rays.rays[index_] : sh_.c->rays.defaults);
+  auto v3 = [&](int k, Vec3& out) {
+    if (s.has[k]) {
+      const Val v = eval(s.args[k], env);
+      out = {v.f[0], v.f[1], v.f[2]};
+    }
+  };
+  auto f1 = [&](int k, float& out) {
+    if (s.has[k]) {
+      const Val v = eval(s.args[k], env);
+      out = s.args[k].type == ValueType::Uint ? static_cast<float>(v.u) : v.f[0];
+    }
+  };
+  auto u1 = [&](int k, uint32_t& out) {
+    if (s.has[k]) out = eval(s.args[k], env).u;
+  };
+  v3(CStmt::kOrigin, r.origin);
+  v3(CStmt::kDirection, r.direction);
+  f1(CStmt::kTmin, r.tmin);
+  f1(CStmt::kTmax, r.tmax);
+  u1(CStmt::kFlags, r.flags);
+  u1(CStmt::kCullMask, r.cull_mask);
+  u1(CStmt::kSbtOffset, r.sbt_offset);
+  u1(CStmt::kSbtStride, r.sbt_stride);
+  u1(CStmt::kMiss, r.miss);
+  return r;
+}
+
+void Machine::execTrace(const CStmt& s, StageEnv& env) {
+  TraceRay r = tracedRay(s, env);
+  const uint32_t depth = env.stage == Stage::Raygen ? 1 : env.depth + 1;
+  if (depth > std::max<uint32_t>(sh_.c->pipeline.max_recursion, 1)) {
+    // R-RECURSION, R-UB: the ray is undefined; the model skips the trace
+    // (no traversal, no shader, the stage's child payload stays as it was).
+    if (!ray_undefined_)
+      markUndefined(UndefinedReason::RecursionTooDeep,
+                    (s.src && !s.src->loc.field.empty() ? s.src->loc.field : std::string("trace")) +
+                        ": trace at depth " + std::to_string(depth) +
+                        " exceeds pipeline.max_recursion " +
+                        std::to_string(sh_.c->pipeline.max_recursion));
+    return;
+  }
+  Payload p = trace(r, depth, &s);
+  if (env.stage == Stage::Raygen && env.payload)
+    *env.payload = p;
+  else
+    env.child = p;
 }
 
 // R-UB: an index beyond the callable region, or callables nested beyond the

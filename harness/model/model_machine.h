@@ -161,6 +161,10 @@ class alignas(64) Machine {
   Val arithmetic(const CExpr& e, const Val* a);
   Flow exec(const CProgram& p, StageEnv& env);
   Flow execStmt(const CStmt& s, StageEnv& env);
+  void execSet(const CStmt& s, StageEnv& env);    // set payload / set call data
+  void execCall(const CStmt& s, StageEnv& env);   // executeCallableEXT
+  void execTrace(const CStmt& s, StageEnv& env);  // traceRayEXT
+  TraceRay tracedRay(const CStmt& s, StageEnv& env);
   void record(int field, const Val& v, ValueType t);
   void bumpRuns(int which) {  // kRuns* above
     if (rec_) rec_[runs_offset_[which]] += 1;
