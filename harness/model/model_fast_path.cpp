@@ -71,10 +71,55 @@ inline bool finiteBits(float f) {
 // and at the end (no per-ray writes to memory another thread may share). Any
 // other ray (other parameters, SkipClosestHit, programs that are more than
 // counts) goes through shade() exactly as trace() would.
+// Finite origin and direction, 0 <= tmin <= tmax, a cull mask that lets
+// something through (validRay, without branches).
+inline bool validLaunchRay(const Ray& ray) {
+  return finiteBits(ray.origin[0]) & finiteBits(ray.origin[1]) & finiteBits(ray.origin[2]) &
+         finiteBits(ray.direction[0]) & finiteBits(ray.direction[1]) &
+         finiteBits(ray.direction[2]) & (ray.tmin >= 0.0f) & (ray.tmin <= ray.tmax) &
+         ((ray.cull_mask & 0xFF) != 0);
+}
+
+// The miss shader a launch ray's miss index selects, when all it does is
+// count; null otherwise.
+const CountsOnly* Machine::countedMiss(const TraceRay& r0) const {
+  const CPipeline& programs = *sh_.programs;
+  const uint32_t mi = r0.miss & 0xFFFF;
+  if (mi < default_miss_.size() && default_miss_[mi].group &&
+      *default_miss_[mi].group < programs.miss.size() &&
+      programs.miss_counts[*default_miss_[mi].group].yes)
+    return &programs.miss_counts[*default_miss_[mi].group];
+  return nullptr;
+}
+
+void Machine::shadeLaunchRay(uint32_t i, const Ray& ray, uint32_t flags, const RTCRayHit& rh,
+                             bool hit, uint32_t* rec) {
+  const TraceRay r = launchRay(ray);
+  Committed h;
+  if (hit) {
+    h = {true,          rh.ray.tfar, rh.hit.instID[0], rh.hit.geomID,
+         rh.hit.primID, 0xFEu,       rh.hit.u,         rh.hit.v};
+    if (sh_.need_facing) {
+      ModelCandidate cand;
+      cand.instance = h.instance;
+      cand.geometry = h.geometry;
+      cand.primitive = h.primitive;
+      h.kind = facing(*sh_.scene, cand, r, flags).kind;
+    }
+  }
+  index_ = i;
+  x_ = i % sh_.c->rays.width;
+  y_ = i / sh_.c->rays.width;
+  rec_ = rec;
+  ray_ambiguous_ = false;
+  Payload payload;
+  payload.depth = 1;
+  shade(r, flags, 1, h, payload);
+}
+
 void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
   const std::vector<Ray>& rays = sh_.c->rays.rays;
   const CPipeline& programs = *sh_.programs;
-  const uint32_t width = sh_.c->rays.width;
   const uint32_t words = records_ ? recordWords() : 0;
   uint32_t pipeFlags = 0;
   if (sh_.c->pipeline.flags & 0x1000) pipeFlags |= kRaySkipTriangles;
@@ -88,14 +133,7 @@ void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
   const Ray& first = rays[begin];
   const TraceRay r0 = launchRay(first);
   const bool quick = !((first.flags | pipeFlags) & kRaySkipClosestHit);
-  const CountsOnly* missCounts = nullptr;
-  if (quick) {
-    const uint32_t mi = r0.miss & 0xFFFF;
-    if (mi < default_miss_.size() && default_miss_[mi].group &&
-        *default_miss_[mi].group < programs.miss.size() &&
-        programs.miss_counts[*default_miss_[mi].group].yes)
-      missCounts = &programs.miss_counts[*default_miss_[mi].group];
-  }
+  const CountsOnly* missCounts = quick ? countedMiss(r0) : nullptr;
   uint32_t lastInstance = ~0u, lastGeometry = ~0u;
   const CountsOnly* hitCounts = nullptr;
   uint64_t hitPending = 0, missPending = 0;  // quick hits (for hitCounts) and misses
@@ -115,10 +153,7 @@ void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
     if (rec) rec[runsRaygen] += 1;
     // embreeRay + validRay + embreeClosestHit, for the launch ray itself.
     RTCRayHit rh = embreeRay(ray, flags);
-    const bool valid = finiteBits(ray.origin[0]) & finiteBits(ray.origin[1]) &
-                       finiteBits(ray.origin[2]) & finiteBits(ray.direction[0]) &
-                       finiteBits(ray.direction[1]) & finiteBits(ray.direction[2]) &
-                       (ray.tmin >= 0.0f) & (ray.tmin <= ray.tmax) & ((ray.cull_mask & 0xFF) != 0);
+    const bool valid = validLaunchRay(ray);
     ray_undefined_ = false;
     if (!valid || (ray.flags & kExclusiveRayFlags)) {
       // R-UB: diagnosed; such a ray is not traced (a miss) or keeps its flags.
@@ -156,28 +191,7 @@ void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
         continue;
       }
     }
-    // Everything else: as trace() does, with this ray's launch state.
-    const TraceRay r = launchRay(ray);
-    Committed h;
-    if (hit) {
-      h = {true,          rh.ray.tfar, rh.hit.instID[0], rh.hit.geomID,
-           rh.hit.primID, 0xFEu,       rh.hit.u,         rh.hit.v};
-      if (sh_.need_facing) {
-        ModelCandidate cand;
-        cand.instance = h.instance;
-        cand.geometry = h.geometry;
-        cand.primitive = h.primitive;
-        h.kind = facing(scene, cand, r, flags).kind;
-      }
-    }
-    index_ = i;
-    x_ = i % width;
-    y_ = i / width;
-    rec_ = rec;
-    ray_ambiguous_ = false;
-    Payload payload;
-    payload.depth = 1;
-    shade(r, flags, 1, h, payload);
+    shadeLaunchRay(i, ray, flags, rh, hit, rec);
   }
   flush(hitCounts, hitPending);
   flush(missCounts, missPending);

@@ -199,6 +199,11 @@ class alignas(64) Machine {
   // Raygen is `trace: {}` and traces take Embree's closest hit: the chunk's
   // rays are traced first, then shaded (model_fast_path.cpp).
   void runLaunchRaysDirect(uint32_t begin, uint32_t end);
+  // runLaunchRaysDirect's way for a launch ray that is not only counted: as
+  // trace() does, with the ray's launch state and Embree's answer.
+  const CountsOnly* countedMiss(const TraceRay& r0) const;
+  void shadeLaunchRay(uint32_t i, const Ray& ray, uint32_t flags, const RTCRayHit& rh, bool hit,
+                      uint32_t* rec);
   void bump(const CountsOnly& k) {
     if (k.counters.size() == 1) {
       counters[k.counters[0]] += 1;
