@@ -212,6 +212,11 @@ class alignas(64) Machine {
     for (int i : k.counters) counters[i] += 1;
   }
   Flow report(const CStmt& s, StageEnv& env);  // model_traversal.cpp
+  // Whether a reported t becomes a candidate hit (report's first step).
+  bool reportInside(const CStmt& s, StageEnv& env, Traversal& tr, float t);
+  // R-PREC: how far a device's sphere root (a report's t) may lie from the
+  // model's, for the hit h.
+  double sphereRootError(const CStmt& s, const HitView& h, const StageEnv& env) const;
   void callCallable(uint32_t index, CallData& data, uint32_t depth, const CStmt& site);
   const SbtRecord* hitRecord(uint32_t instance, uint32_t geometry, const TraceRay& r) const;
   uint64_t hitRecordIndex(uint32_t instance, uint32_t geometry, const TraceRay& r) const;

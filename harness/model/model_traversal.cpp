@@ -127,6 +127,58 @@ const SbtRecord* Machine::hitRecord(uint32_t instance, uint32_t geometry, const 
   return idx < default_hit_.size() ? &default_hit_[idx] : nullptr;
 }
 
+namespace {
+
+bool reportsSphereRoot(const CStmt& s, const StageEnv& env) {
+  return s.t.kind == Expr::Kind::Op &&
+         (s.t.op == OpCode::SphereNear || s.t.op == OpCode::SphereFar) && env.hit && env.ray;
+}
+
+}  // namespace
+
+double Machine::sphereRootError(const CStmt& s, const HitView& h, const StageEnv& env) const {
+  const ModelInstance& mi = sh_.scene->instances[h.instance];
+  const SphereError se =
+      sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
+                  objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
+  return s.t.op == OpCode::SphereNear ? se.near_err : se.far_err;
+}
+
+bool Machine::reportInside(const CStmt& s, StageEnv& env, Traversal& tr, float t) {
+  // R-ISECT-REPORT, R-CAND-AABB-CLOSED: tmin <= t <= current tmax.
+  bool inside = t >= tr.ray.tmin && static_cast<double>(t) <= tr.tmax_cur;
+  if (sh_.deviation == ModelDeviation::OpenAabbInterval)
+    inside = t > tr.ray.tmin && static_cast<double>(t) < tr.tmax_cur;
+  if (tr.reports && t >= tr.ray.tmin && t <= tr.ray.tmax + tr.tol(t))
+    tr.reports->push_back({tr.cur_index, t});
+  if (tr.exact) {
+    // R-PREC: a sphere root within its error bound of an interval end may
+    // fall on either side on a device. Not against the current candidate's
+    // own committed report: the device compares its own roots consistently.
+    const uint32_t ord = tr.report_ord++;
+    if (const ShaderDecision* f = tr.forced(1, ord)) {
+      inside = f->value;
+    } else if (tr.shader_unsure && reportsSphereRoot(s, env)) {
+      const HitView& h = *env.hit;
+      const double et = sphereRootError(s, h, env) + tr.tol(t);
+      const bool own = tr.best.valid && tr.best.instance == h.instance &&
+                       tr.best.geometry == h.geometry && tr.best.primitive == h.primitive;
+      const bool nearEnd = std::fabs(double(t) - tr.ray.tmin) <= et ||
+                           (!own && std::fabs(double(t) - tr.tmax_cur) <= et);
+      if (nearEnd) tr.shader_unsure->push_back({tr.cur_index, 1, ord, inside});
+    }
+  }
+  // What-if run preferring one candidate (R-TIE): it wins every tie, and a
+  // committed preferred hit loses none.
+  if (tr.prefer >= 0 && t >= tr.ray.tmin && tr.ties(t)) {
+    if (tr.cur_index == static_cast<size_t>(tr.prefer))
+      inside = true;
+    else if (tr.isPreferred(tr.best.instance, tr.best.geometry, tr.best.primitive))
+      inside = false;
+  }
+  return inside;
+}
+
 Flow Machine::report(const CStmt& s, StageEnv& env) {
   Traversal* tr = env.traversal;
   if (!tr || !tr->cur) return Flow::Continue;
@@ -136,45 +188,7 @@ Flow Machine::report(const CStmt& s, StageEnv& env) {
   Val attr;
   if (s.has_attribute) attr = eval(s.attribute, env);
   bool accepted = false;
-  Flow flow = Flow::Continue;
-  // R-ISECT-REPORT, R-CAND-AABB-CLOSED: tmin <= t <= current tmax.
-  bool inside = t >= tr->ray.tmin && static_cast<double>(t) <= tr->tmax_cur;
-  if (sh_.deviation == ModelDeviation::OpenAabbInterval)
-    inside = t > tr->ray.tmin && static_cast<double>(t) < tr->tmax_cur;
-  if (tr->reports && t >= tr->ray.tmin && t <= tr->ray.tmax + tr->tol(t))
-    tr->reports->push_back({tr->cur_index, t});
-  if (tr->exact) {
-    // R-PREC: a sphere root within its error bound of an interval end may
-    // fall on either side on a device. Not against the current candidate's
-    // own committed report: the device compares its own roots consistently.
-    const uint32_t ord = tr->report_ord++;
-    if (const ShaderDecision* f = tr->forced(1, ord)) {
-      inside = f->value;
-    } else if (tr->shader_unsure && s.t.kind == Expr::Kind::Op &&
-               (s.t.op == OpCode::SphereNear || s.t.op == OpCode::SphereFar) && env.hit &&
-               env.ray) {
-      const HitView& h = *env.hit;
-      const ModelInstance& mi = sh_.scene->instances[h.instance];
-      const SphereError se =
-          sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
-                      objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
-      const double et = (s.t.op == OpCode::SphereNear ? se.near_err : se.far_err) + tr->tol(t);
-      const bool own = tr->best.valid && tr->best.instance == h.instance &&
-                       tr->best.geometry == h.geometry && tr->best.primitive == h.primitive;
-      const bool nearEnd = std::fabs(double(t) - tr->ray.tmin) <= et ||
-                           (!own && std::fabs(double(t) - tr->tmax_cur) <= et);
-      if (nearEnd) tr->shader_unsure->push_back({tr->cur_index, 1, ord, inside});
-    }
-  }
-  // What-if run preferring one candidate (R-TIE): it wins every tie, and a
-  // committed preferred hit loses none.
-  if (tr->prefer >= 0 && t >= tr->ray.tmin && tr->ties(t)) {
-    if (tr->cur_index == static_cast<size_t>(tr->prefer))
-      inside = true;
-    else if (tr->isPreferred(tr->best.instance, tr->best.geometry, tr->best.primitive))
-      inside = false;
-  }
-  if (inside) {
+  if (reportInside(s, env, *tr, t)) {
     HitView hv = *env.hit;
     setHit(hv, t, kind, attr.f[0], attr.f[1]);
     Flow ah = Flow::Continue;
@@ -189,15 +203,8 @@ Flow Machine::report(const CStmt& s, StageEnv& env) {
       accepted = true;
       tr->best = {true, static_cast<double>(t), hv.instance, hv.geometry, hv.primitive, kind, hv.b1,
                   hv.b2};
-      if (tr->exact && s.t.kind == Expr::Kind::Op &&
-          (s.t.op == OpCode::SphereNear || s.t.op == OpCode::SphereFar) && env.hit && env.ray) {
-        // R-PREC: how far a device's root may lie from this one.
-        const ModelInstance& mi = sh_.scene->instances[hv.instance];
-        const SphereError se =
-            sphereError(hv.aabb_min, hv.aabb_max, hv.object_origin, hv.object_direction,
-                        objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
-        tr->best.t_err = s.t.op == OpCode::SphereNear ? se.near_err : se.far_err;
-      }
+      // R-PREC: how far a device's root may lie from this one.
+      if (tr->exact && reportsSphereRoot(s, env)) tr->best.t_err = sphereRootError(s, hv, env);
       tr->tmax_cur = t;
       env.tmax_view = t;
       if (ah == Flow::Terminate || (tr->flags & kRayTerminateOnFirstHit)) {
@@ -206,8 +213,7 @@ Flow Machine::report(const CStmt& s, StageEnv& env) {
       }
     }
   }
-  const Flow f = exec(accepted ? s.then_ : s.else_, env);
-  return f != Flow::Continue ? f : flow;
+  return exec(accepted ? s.then_ : s.else_, env);
 }
 
 Payload Machine::trace(const TraceRay& r, uint32_t depth, const CStmt* site) {
