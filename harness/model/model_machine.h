@@ -181,6 +181,12 @@ class alignas(64) Machine {
              Payload& payload);
   void decide(Traversal& tr, const std::vector<ModelCandidate>& cands, const int8_t* force,
               Payload& payload);
+  // decide's steps: an AABB candidate's intersection program; whether a
+  // triangle candidate's t counts.
+  void runIntersection(Traversal& tr, const ModelCandidate& cand, size_t k, bool opaque,
+                       const SbtRecord* rec, const CHitGroup* grp);
+  bool triangleInside(const Traversal& tr, const ModelCandidate& cand, size_t k,
+                      const int8_t* force) const;
   Committed sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands,
                     const int8_t* force, long prefer, long first, const Payload& payloadIn,
                     const ShaderDecision* shaderForce = nullptr);

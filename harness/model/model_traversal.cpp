@@ -234,12 +234,63 @@ Payload Machine::trace(const TraceRay& r, uint32_t depth, const CStmt* site) {
 // The model's decision over the sorted candidates (R-ORDER-UNSPEC: in
 // ascending distance). `force`, when given, overrides per candidate whether a
 // triangle is a hit (-1: the model's own decision, 0: no, 1: yes).
+// An AABB candidate: its intersection program runs (R-TMAX-VIEW: it sees the
+// closest t so far); its reports decide (report()).
+void Machine::runIntersection(Traversal& tr, const ModelCandidate& cand, size_t k, bool opaque,
+                              const SbtRecord* rec, const CHitGroup* grp) {
+  const TraceRay& r = tr.ray;
+  HitView hv = viewOf(*sh_.scene, *sh_.c, r, cand.instance, cand.geometry, cand.primitive);
+  tr.cur = &cand;
+  tr.cur_index = k;
+  tr.cur_opaque = opaque;
+  if (tr.reports) tr.reports->push_back({k, NAN});  // it ran (the exact tier's tie check)
+  tr.sphere_ord = 0;
+  tr.report_ord = 0;
+  tr.cur_rec = rec;
+  tr.cur_group = grp;
+  bumpRuns(kRunsIntersection);
+  StageEnv env = hitStage(Stage::Intersection, rec->data, nullptr, r, hv,
+                          static_cast<float>(tr.tmax_cur), tr.depth);
+  env.traversal = &tr;
+  exec(*grp->intersection, env);
+  tr.cur = nullptr;
+}
+
+// Whether a triangle candidate's t is in the interval (open, R-CAND-TRI-OPEN),
+// with the what-if runs' forced hits and preferences and the exact tier's
+// tie rule.
+bool Machine::triangleInside(const Traversal& tr, const ModelCandidate& cand, size_t k,
+                             const int8_t* force) const {
+  bool inside = cand.t > tr.tmin && cand.t < tr.tmax_cur;
+  if (sh_.deviation == ModelDeviation::ClosedTriangleInterval && !tr.best.valid)
+    inside = cand.t >= tr.tmin && cand.t <= tr.tmax_cur;
+  // What-if run forcing a hit at an interval end (tmin-tie, tmax-tie): a
+  // float ray test may put it a step inside, unless every device computes
+  // this t exactly (R-CAND-TRI-OPEN, model/exact_interval.h).
+  const bool exactOut =
+      (cand.exact_tmin && cand.t <= tr.tmin) || (cand.exact_tmax && cand.t >= tr.tmax_cur);
+  if (!inside && force && force[k] == 1 && !tr.best.valid && !exactOut &&
+      cand.t > tr.tmin - tr.endTol(cand) && cand.t < tr.tmax_cur + tr.endTol(cand))
+    inside = true;
+  const bool tie = tr.exact && tr.ties(cand.t);
+  const bool bestPreferred = tr.isPreferred(tr.best.instance, tr.best.geometry, tr.best.primitive);
+  if (tie && (tr.prefer == static_cast<long>(k) || bestPreferred)) {
+    // What-if run preferring one candidate (R-TIE).
+    inside = tr.prefer == static_cast<long>(k) && cand.t > tr.tmin;
+  } else if (!inside && tie &&
+             keyLess(cand.instance, cand.geometry, cand.primitive, tr.best.instance,
+                     tr.best.geometry, tr.best.primitive)) {
+    // Exact tier, R-TIE: a tie with the committed hit goes to the smaller key.
+    inside = true;
+  }
+  return inside;
+}
+
 void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, const int8_t* force,
                      Payload& payload) {
   const Case& c = *sh_.c;
   const ModelScene& scene = *sh_.scene;
   const TraceRay& r = tr.ray;
-  const uint32_t depth = tr.depth;
   const size_t n = cands.size();
   const size_t first = tr.first >= 0 ? static_cast<size_t>(tr.first) : 0;
   for (size_t pos = 0; pos < n; ++pos) {
@@ -258,50 +309,11 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
       if (force && force[k] == 0) continue;
       // A preferred box entered at the committed t (within the error bound) still runs.
       if (cand.t > tr.tmax_cur && !(tr.prefer == static_cast<long>(k) && tr.ties(cand.t))) continue;
-      if (!grp || !grp->intersection) continue;
-      HitView hv = viewOf(scene, c, r, cand.instance, cand.geometry, cand.primitive);
-      tr.cur = &cand;
-      tr.cur_index = k;
-      tr.cur_opaque = opaque;
-      if (tr.reports) tr.reports->push_back({k, NAN});  // it ran (the exact tier's tie check)
-      tr.sphere_ord = 0;
-      tr.report_ord = 0;
-      tr.cur_rec = rec;
-      tr.cur_group = grp;
-      bumpRuns(kRunsIntersection);
-      // R-TMAX-VIEW: the intersection shader sees the closest t so far.
-      StageEnv env = hitStage(Stage::Intersection, rec->data, nullptr, r, hv,
-                              static_cast<float>(tr.tmax_cur), depth);
-      env.traversal = &tr;
-      exec(*grp->intersection, env);
-      tr.cur = nullptr;
+      if (grp && grp->intersection) runIntersection(tr, cand, k, opaque, rec, grp);
       continue;
     }
     if (!(force && force[k] >= 0 ? force[k] == 1 : cand.hit)) continue;
-    bool inside = cand.t > tr.tmin && cand.t < tr.tmax_cur;
-    if (sh_.deviation == ModelDeviation::ClosedTriangleInterval && !tr.best.valid)
-      inside = cand.t >= tr.tmin && cand.t <= tr.tmax_cur;
-    // What-if run forcing a hit at an interval end (tmin-tie, tmax-tie): a
-    // float ray test may put it a step inside, unless every device computes
-    // this t exactly (R-CAND-TRI-OPEN, model/exact_interval.h).
-    const bool exactOut =
-        (cand.exact_tmin && cand.t <= tr.tmin) || (cand.exact_tmax && cand.t >= tr.tmax_cur);
-    if (!inside && force && force[k] == 1 && !tr.best.valid && !exactOut &&
-        cand.t > tr.tmin - tr.endTol(cand) && cand.t < tr.tmax_cur + tr.endTol(cand))
-      inside = true;
-    const bool tie = tr.exact && tr.ties(cand.t);
-    const bool bestPreferred =
-        tr.isPreferred(tr.best.instance, tr.best.geometry, tr.best.primitive);
-    if (tie && (tr.prefer == static_cast<long>(k) || bestPreferred)) {
-      // What-if run preferring one candidate (R-TIE).
-      inside = tr.prefer == static_cast<long>(k) && cand.t > tr.tmin;
-    } else if (!inside && tie &&
-               keyLess(cand.instance, cand.geometry, cand.primitive, tr.best.instance,
-                       tr.best.geometry, tr.best.primitive)) {
-      // Exact tier, R-TIE: a tie with the committed hit goes to the smaller key.
-      inside = true;
-    }
-    if (!inside) continue;
+    if (!triangleInside(tr, cand, k, force)) continue;
     const Facing f = facing(scene, cand, r, tr.flags);
     if (f.culled) continue;
     Flow ah = Flow::Continue;
@@ -309,7 +321,7 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
       HitView hv = viewOf(scene, c, r, cand.instance, cand.geometry, cand.primitive);
       setHit(hv, static_cast<float>(cand.t), f.kind, cand.b1, cand.b2);
       markAnyHit(hv);
-      StageEnv a = hitStage(Stage::AnyHit, rec->data, &payload, r, hv, hv.t, depth);
+      StageEnv a = hitStage(Stage::AnyHit, rec->data, &payload, r, hv, hv.t, tr.depth);
       ah = exec(*grp->any_hit, a);
       if (ah == Flow::Ignore) continue;
     }
