@@ -58,35 +58,45 @@ WatertightHit watertightIntersect(const DVec3& o, const DVec3& d, const DVec3& v
   return watertightIntersectPrepared(prepareWatertightRay(o, d, err), v0, v1, v2, err.vertex);
 }
 
-WatertightHit watertightIntersectPrepared(const WatertightRay& w, const DVec3& v0, const DVec3& v1,
-                                          const DVec3& v2, const DVec3& vertexErr) {
-  WatertightHit r;
-  if (!w.valid) {
-    r.valid = false;
-    return r;
-  }
+namespace {
+
+// The triangle in the ray's sheared frame (origin at 0, ray along +z), and
+// each vertex's error bound there.
+struct ShearedTriangle {
+  double px[3], py[3], pz[3], ex[3], ey[3];
+};
+
+ShearedTriangle shearTriangle(const WatertightRay& w, const DVec3* const v[3],
+                              const DVec3& vertexErr) {
   const DVec3& o = w.o;
   const int kx = w.kx, ky = w.ky, kz = w.kz;
   const double sx = w.sx, sy = w.sy, sz = w.sz, dsx = w.dsx, dsy = w.dsy, shiftX = w.shiftX,
                shiftY = w.shiftY;
   const double round = kFrameRoundings * kUnitRoundoff;
-  const DVec3* v[3] = {&v0, &v1, &v2};
-  double px[3], py[3], pz[3], ex[3], ey[3];
+  ShearedTriangle s;
   for (int i = 0; i < 3; ++i) {
     const double x = (*v[i])[kx] - o[kx], y = (*v[i])[ky] - o[ky], z = (*v[i])[kz] - o[kz];
-    px[i] = x + sx * z;
-    py[i] = y + sy * z;
-    pz[i] = z * sz;
+    s.px[i] = x + sx * z;
+    s.py[i] = y + sy * z;
+    s.pz[i] = z * sz;
     // Per vertex: the vertex error through the shear, the shear's own error
     // along this vertex's depth, and the rounding of the translated, sheared
     // coordinate relative to its magnitude.
     const double vx = vertexErr[kx] + std::fabs(sx) * vertexErr[kz];
     const double vy = vertexErr[ky] + std::fabs(sy) * vertexErr[kz];
     const double az = std::fabs(z) + w.origin_err[kz] + vertexErr[kz];
-    ex[i] = vx + dsx * az + round * (std::fabs(x) + std::fabs(sx) * std::fabs(z) + shiftX + vx);
-    ey[i] = vy + dsy * az + round * (std::fabs(y) + std::fabs(sy) * std::fabs(z) + shiftY + vy);
+    s.ex[i] = vx + dsx * az + round * (std::fabs(x) + std::fabs(sx) * std::fabs(z) + shiftX + vx);
+    s.ey[i] = vy + dsy * az + round * (std::fabs(y) + std::fabs(sy) * std::fabs(z) + shiftY + vy);
   }
-  double e[3], bound[3];
+  return s;
+}
+
+// The edge functions e[i] (of the edge opposite vertex i) and the bound on
+// how far a device's may differ.
+void edgeFunctions(const WatertightRay& w, const ShearedTriangle& s, double e[3], double bound[3]) {
+  const double shiftX = w.shiftX, shiftY = w.shiftY;
+  const double round = kFrameRoundings * kUnitRoundoff;
+  const double *px = s.px, *py = s.py, *ex = s.ex, *ey = s.ey;
   for (int i = 0; i < 3; ++i) {
     const int a = (i + 1) % 3, b = (i + 2) % 3;
     e[i] = px[a] * py[b] - py[a] * px[b];
@@ -98,8 +108,62 @@ WatertightHit watertightIntersectPrepared(const WatertightRay& w, const DVec3& v
                round * ((ax + shiftX + ex[a]) * (by + shiftY + ey[b]) +
                         (ay + shiftY + ey[a]) * (bx + shiftX + ex[b]));
   }
+}
+
+// t, the barycentrics and t's error bound, where det (the sum of the edge
+// functions) is not 0. False when t is NaN.
+bool solveHit(const WatertightRay& w, const DVec3* const v[3], const DVec3& vertexErr,
+              const ShearedTriangle& s, const double e[3], const double bound[3], double det,
+              WatertightHit& r) {
+  const int kz = w.kz;
+  const double round = kFrameRoundings * kUnitRoundoff;
+  r.t = (e[0] * s.pz[0] + e[1] * s.pz[1] + e[2] * s.pz[2]) / det;
+  r.b1 = e[1] / det;
+  r.b2 = e[2] / det;
+  if (std::isnan(r.t)) return false;
+  const double dirErr = w.dirErr;
+  double tErr = 0, depthErr = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double az = std::fabs((*v[i])[kz] - w.o[kz]);
+    tErr += bound[i] * std::fabs(s.pz[i] - r.t);
+    depthErr =
+        std::max(depthErr, (w.origin_err[kz] + vertexErr[kz] + round * az) * std::fabs(w.sz) +
+                               dirErr * std::fabs(s.pz[i]));
+  }
+  r.t_err = tErr / std::fabs(det) + depthErr;
+  if (!std::isfinite(r.t_err)) r.t_err = 0;
+  return true;
+}
+
+// Edge functions within their bound: one is an edge, two meeting at a vertex
+// (the third clear) is that vertex, three is no shape at all; nearly edge-on
+// or degenerate, a device may see no triangle at all.
+TriAmbiguity nearEdges(const double e[3], const double bound[3], double det) {
+  const double detBound = bound[0] + bound[1] + bound[2];
+  int near = 0;
   for (int i = 0; i < 3; ++i)
-    if (std::isnan(e[i]) || std::isnan(pz[i]) || std::isnan(bound[i])) {
+    if (std::fabs(e[i]) <= bound[i]) ++near;
+  if (near == 2 && det != 0.0) return TriAmbiguity::Vertex;
+  if (std::fabs(det) <= detBound || near == 3) return TriAmbiguity::Degenerate;
+  if (near == 1) return TriAmbiguity::Edge;
+  return TriAmbiguity::None;
+}
+
+}  // namespace
+
+WatertightHit watertightIntersectPrepared(const WatertightRay& w, const DVec3& v0, const DVec3& v1,
+                                          const DVec3& v2, const DVec3& vertexErr) {
+  WatertightHit r;
+  if (!w.valid) {
+    r.valid = false;
+    return r;
+  }
+  const DVec3* v[3] = {&v0, &v1, &v2};
+  const ShearedTriangle s = shearTriangle(w, v, vertexErr);
+  double e[3], bound[3];
+  edgeFunctions(w, s, e, bound);
+  for (int i = 0; i < 3; ++i)
+    if (std::isnan(e[i]) || std::isnan(s.pz[i]) || std::isnan(bound[i])) {
       r.valid = false;
       return r;
     }
@@ -112,49 +176,20 @@ WatertightHit watertightIntersectPrepared(const WatertightRay& w, const DVec3& v
   // device hits one of them; the model does the same.
   double side[3];
   for (int i = 0; i < 3; ++i)
-    side[i] = e[i] != 0.0 ? e[i] : perturbedSide(px, py, (i + 1) % 3, (i + 2) % 3);
+    side[i] = e[i] != 0.0 ? e[i] : perturbedSide(s.px, s.py, (i + 1) % 3, (i + 2) % 3);
   const bool anyNeg = side[0] < 0 || side[1] < 0 || side[2] < 0;
   const bool anyPos = side[0] > 0 || side[1] > 0 || side[2] > 0;
   // Clear sides: an edge function beyond its bound.
   const bool clearNeg = e[0] < -bound[0] || e[1] < -bound[1] || e[2] < -bound[2];
   const bool clearPos = e[0] > bound[0] || e[1] > bound[1] || e[2] > bound[2];
   const double det = e[0] + e[1] + e[2];
-  const double detBound = bound[0] + bound[1] + bound[2];
-  if (det != 0.0) {
-    r.t = (e[0] * pz[0] + e[1] * pz[1] + e[2] * pz[2]) / det;
-    r.b1 = e[1] / det;
-    r.b2 = e[2] / det;
-    if (std::isnan(r.t)) {
-      r.valid = false;
-      return r;
-    }
-    const double dirErr = w.dirErr;
-    double tErr = 0, depthErr = 0;
-    for (int i = 0; i < 3; ++i) {
-      const double az = std::fabs((*v[i])[kz] - o[kz]);
-      tErr += bound[i] * std::fabs(pz[i] - r.t);
-      depthErr =
-          std::max(depthErr, (w.origin_err[kz] + vertexErr[kz] + round * az) * std::fabs(sz) +
-                                 dirErr * std::fabs(pz[i]));
-    }
-    r.t_err = tErr / std::fabs(det) + depthErr;
-    if (!std::isfinite(r.t_err)) r.t_err = 0;
+  if (det != 0.0 && !solveHit(w, v, vertexErr, s, e, bound, det, r)) {
+    r.valid = false;
+    return r;
   }
   r.hit = !(anyNeg && anyPos) && det != 0.0;
   if (clearNeg && clearPos) return r;  // clearly outside
-  // Edge functions within their bound: one is an edge, two meeting at a
-  // vertex (the third clear) is that vertex, three is no shape at all.
-  int near = 0;
-  for (int i = 0; i < 3; ++i)
-    if (std::fabs(e[i]) <= bound[i]) ++near;
-  if (near == 2 && det != 0.0) {
-    r.ambiguity = TriAmbiguity::Vertex;
-  } else if (std::fabs(det) <= detBound || near == 3) {
-    // Nearly edge-on or degenerate: a device may see no triangle at all.
-    r.ambiguity = TriAmbiguity::Degenerate;
-  } else if (near == 1) {
-    r.ambiguity = TriAmbiguity::Edge;
-  }
+  r.ambiguity = nearEdges(e, bound, det);
   return r;
 }
 
