@@ -30,6 +30,16 @@ float clampLarge(float x) {
   return std::clamp(x, -kEmbreeLarge, kEmbreeLarge);
 }
 
+// Embree's box from its low and high corners.
+void setBounds(RTCBounds& b, const float lo[3], const float hi[3]) {
+  b.lower_x = lo[0];
+  b.lower_y = lo[1];
+  b.lower_z = lo[2];
+  b.upper_x = hi[0];
+  b.upper_y = hi[1];
+  b.upper_z = hi[2];
+}
+
 void ownTriangleBounds(const RTCBoundsFunctionArguments* args) {
   const auto* g = static_cast<const ModelGeometry*>(args->geometryUserPtr);
   const auto& tri = g->triangles[args->primID];
@@ -55,12 +65,7 @@ void ownTriangleBounds(const RTCBoundsFunctionArguments* args) {
         lo[a] = clampLarge(static_cast<float>(r[a] - 1e-5 * size));
         hi[a] = clampLarge(static_cast<float>(r[a + 3] + 1e-5 * size));
       }
-      b.lower_x = lo[0];
-      b.lower_y = lo[1];
-      b.lower_z = lo[2];
-      b.upper_x = hi[0];
-      b.upper_y = hi[1];
-      b.upper_z = hi[2];
+      setBounds(b, lo, hi);
       return;
     }
   }
@@ -73,12 +78,7 @@ void ownTriangleBounds(const RTCBoundsFunctionArguments* args) {
     lo[k] = clampLarge(floatBelow(lo[k] - pad));
     hi[k] = clampLarge(floatAbove(hi[k] + pad));
   }
-  b.lower_x = lo[0];
-  b.lower_y = lo[1];
-  b.lower_z = lo[2];
-  b.upper_x = hi[0];
-  b.upper_y = hi[1];
-  b.upper_z = hi[2];
+  setBounds(b, lo, hi);
 }
 
 void aabbBounds(const RTCBoundsFunctionArguments* args) {
