@@ -87,6 +87,37 @@ TEST(Isolation, FaultsInAParallelRunCostOnlyTheirCase) {
   }
 }
 
+// A driver that leaves state behind which some cases trip over (lavapipe
+// 26.2.6, references/driver-reports/lavapipe-inactive-before-active.md):
+// crash-if-reused kills a worker that ran one of the planted cases before.
+// Those cases pass when --process-per-case-for gives them processes of their
+// own, while the others still share workers.
+TEST(Isolation, ProcessPerCaseForTheCasesThatNeedIt) {
+  const std::string cases = caseArg("anyhit/ignore-odd-primitives") +
+                            caseArg("anyhit/ignore-keeps-tmax") +
+                            caseArg("results/miss-xor-closest-hit");
+  const auto runWith = [&](const std::string& name, const std::string& extra) {
+    const std::string out = fresh(name);
+    const int rc = sh(std::string(RAYSPEC_BIN) +
+                          " run -j 1 --no-validation --plant-fault crash-if-reused "
+                          "--plant-fault-in 'anyhit/*'" +
+                          cases + extra + " --out " + out,
+                      out + "/log.txt");
+    return std::make_pair(rc, out);
+  };
+  const auto [shared_rc, shared] = runWith("reused-workers", "");
+  EXPECT_EQ(shared_rc, 1) << slurp(shared + "/log.txt");
+  const auto crashed = readDeqpCsv(shared + "/results.csv");
+  EXPECT_EQ(crashed.at("anyhit/ignore-odd-primitives"), "Pass") << slurp(shared + "/log.txt");
+  EXPECT_EQ(crashed.at("anyhit/ignore-keeps-tmax"), "Crash") << slurp(shared + "/log.txt");
+
+  const auto [own_rc, own] = runWith("reused-own-process", " --process-per-case-for 'anyhit/*'");
+  EXPECT_EQ(own_rc, 0) << slurp(own + "/log.txt");
+  for (const auto& [name, status] : readDeqpCsv(own + "/results.csv"))
+    EXPECT_EQ(status, "Pass") << name << "\n" << slurp(own + "/log.txt");
+  EXPECT_NE(slurp(own + "/log.txt").find("a process of its own for the cases"), std::string::npos);
+}
+
 TEST(Isolation, ProcessFaultNeedsIsolation) {
   const std::string out = fresh("no-isolation");
   EXPECT_EQ(sh(std::string(RAYSPEC_BIN) + " run --no-isolation --plant-fault crash" +

@@ -94,6 +94,10 @@ void addIsolationOptions(CLI::App* run, RunOptions& run_opt) {
   run->add_flag("--process-per-case", run_opt.process_per_case,
                 "Each side of each case in a process of its own instead of long-lived workers "
                 "(slower; a new VkInstance and VkDevice per case)");
+  run->add_option("--process-per-case-for", run_opt.process_per_case_for,
+                  "Only the cases whose name matches one of these globs each in a process of its "
+                  "own, the others in workers (a driver that leaves state behind that these "
+                  "cases trip over)");
   run->add_flag("--no-isolation", run_opt.no_isolation,
                 "Run the model and the device in this process (one VkDevice for every case; no "
                 "timeout, no memory limit, a crash ends the run)");

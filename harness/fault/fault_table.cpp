@@ -5,9 +5,12 @@
 
 namespace rayspec {
 
-const std::vector<FaultImpl>& faultImpls() {
+namespace {
+
+// Edits of the device's own records.
+std::vector<FaultImpl> recordEdits() {
   using K = FaultKind;
-  static const std::vector<FaultImpl> table = {
+  return {
       // Record edits of the device's own results.
       {"drop-miss", K::RecordEdit, "a clear ray that missed runs no miss shader", dropMiss},
       {"swap-primitive-id", K::RecordEdit, "two clear hit rays report each other's primitive id",
@@ -38,6 +41,13 @@ const std::vector<FaultImpl>& faultImpls() {
        "a hit tied with another at the committed t (or at an interval end) is answered with "
        "neither: a miss",
        tieAnsweredNeither},
+  };
+}
+
+// Case mutations of the scene and the flags.
+std::vector<FaultImpl> sceneAndFlagMutations() {
+  using K = FaultKind;
+  return {
       // Case mutations: the scene as a breaking device sees it.
       {"instance-mask-ignored", K::CaseMutation,
        "instance masks are ignored (every instance visible)", nullptr, instanceMaskIgnored},
@@ -87,6 +97,13 @@ const std::vector<FaultImpl>& faultImpls() {
        nullptr, skipTrianglesIgnored},
       {"skip-aabbs-ignored", K::CaseMutation, "SkipAABBs (ray or pipeline flag) is ignored",
        nullptr, skipAabbsIgnored},
+  };
+}
+
+// Case mutations of the programs, the SBT, the order and the interval.
+std::vector<FaultImpl> programAndOrderMutations() {
+  using K = FaultKind;
+  return {
       // Case mutations: stage programs.
       {"ignore-accepts", K::CaseMutation, "ignoreIntersectionEXT accepts the candidate", nullptr,
        ignoreAccepts},
@@ -149,12 +166,33 @@ const std::vector<FaultImpl>& faultImpls() {
       {"open-aabb-interval", K::CaseMutation,
        "reportIntersectionEXT at exactly tmin or the current tmax returns false", nullptr,
        openAabbInterval},
+  };
+}
+
+// Faults of the device's child process.
+std::vector<FaultImpl> processFaults() {
+  using K = FaultKind;
+  return {
       // Process faults, raised in the device's child process.
       {"crash", K::Process, "the device process dies (SIGSEGV) after the run"},
       {"crash-once", K::Process,
        "the device process dies (SIGSEGV) the first time each case runs, not in its re-run"},
+      {"crash-if-reused", K::Process,
+       "the device process dies (SIGSEGV) after a case when it ran one of this fault's cases "
+       "before (state an earlier case left behind)"},
       {"hang", K::Process, "the device process never returns"},
   };
+}
+
+}  // namespace
+
+const std::vector<FaultImpl>& faultImpls() {
+  static const std::vector<FaultImpl> table = [] {
+    std::vector<FaultImpl> all;
+    for (auto part : {recordEdits, sceneAndFlagMutations, programAndOrderMutations, processFaults})
+      for (FaultImpl& f : part()) all.push_back(std::move(f));
+    return all;
+  }();
   return table;
 }
 

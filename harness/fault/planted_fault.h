@@ -8,7 +8,8 @@
 //   case mutations  the model's exact tier run on the case as a device that
 //                   breaks the rule sees it (e.g. instance-mask-ignored: every
 //                   instance mask 0xFF); its results replace the device's
-//   process faults  raised in the device's child process: crash, crash-once, hang
+//   process faults  raised in the device's child process: crash, crash-once,
+//                   crash-if-reused, hang
 // rule_faults.h maps each rule of the catalog to the faults that break it.
 #pragma once
 
@@ -33,7 +34,7 @@ const std::vector<FaultInfo>& faultTable();
 const FaultInfo* findFault(const std::string& name);
 const std::vector<std::string>& faultNames();
 bool isFaultName(const std::string& name);
-bool isProcessFault(const std::string& name);  // crash, crash-once, hang
+bool isProcessFault(const std::string& name);  // crash, crash-once, crash-if-reused, hang
 
 struct FaultResult {
   bool applied = false;
@@ -55,6 +56,8 @@ Results perfectDevice(const Case& c, const Results& model);
 
 // crash: raises SIGSEGV; crash-once: the same, but only the first time the
 // case runs into the run folder run_dir (a flaky driver: the re-run passes);
+// crash-if-reused: the same, but only in a process that raised it for a case
+// before (a long-lived worker; a process of its own per case never crashes);
 // hang: sleeps forever; otherwise returns.
 void raiseProcessFault(const std::string& name, const std::string& case_name,
                        const std::string& run_dir);

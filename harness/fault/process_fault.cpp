@@ -28,12 +28,21 @@ bool firstTimeInThisRun(const std::string& run_dir, const std::string& case_name
   return true;
 }
 
+// How many cases asked this process for crash-if-reused so far: the state an
+// earlier case leaves behind in a driver (lavapipe 26.2.6 reads BVH slots it
+// never wrote; after other cases they hold stale data).
+int& casesSeenInThisProcess() {
+  static int seen = 0;
+  return seen;
+}
+
 }  // namespace
 
 void raiseProcessFault(const std::string& name, const std::string& case_name,
                        const std::string& run_dir) {
   if (name == "crash") crash();
   if (name == "crash-once" && firstTimeInThisRun(run_dir, case_name)) crash();
+  if (name == "crash-if-reused" && casesSeenInThisProcess()++ > 0) crash();
   if (name == "hang")
     for (;;) pause();
 }

@@ -46,7 +46,8 @@ SideFor modelSideFor(const RunOptions& opt);
 SideFor deviceSideFor(const RunOptions& opt);
 
 // A case run by long-lived workers: its index in the cases they were given,
-// and the workers of each side (nullptr: that side does not run).
+// and the workers of each side (nullptr: that side runs in a process of its
+// own for this case).
 struct CaseSlot {
   size_t index = 0;
   SideWorker* model = nullptr;

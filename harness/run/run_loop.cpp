@@ -1,5 +1,7 @@
 #include "run/run_loop.h"
 
+#include <fnmatch.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -226,6 +228,12 @@ std::optional<CaseOutcome> runOneCase(const CaseRunner& runner, const Case& c, c
   return outcome;
 }
 
+bool matchesAnyGlob(const std::vector<std::string>& globs, const std::string& name) {
+  for (const std::string& g : globs)
+    if (fnmatch(g.c_str(), name.c_str(), 0) == 0) return true;
+  return false;
+}
+
 // One job slot: takes the next case (longest first) until none is left, each
 // side in this slot's long-lived workers (none without isolation).
 void runSlot(const CaseRunner& runner, const RunOptions& opt, const PreparedRun& prepared,
@@ -243,7 +251,9 @@ void runSlot(const CaseRunner& runner, const RunOptions& opt, const PreparedRun&
   for (size_t n; !book.stopped() && (n = next++) < order.size();) {
     const size_t position = order[n];
     const PlannedCase& p = prepared.planned[position];
-    const CaseSlot slot{p.index, model.get(), device.get()};
+    const bool own_process = matchesAnyGlob(opt.process_per_case_for, p.name);
+    const CaseSlot slot{p.index, own_process ? nullptr : model.get(),
+                        own_process ? nullptr : device.get()};
     book.starting(p.name);
     std::optional<CaseOutcome> outcome = runOneCase(runner, prepared.cases[p.index], p, baseline,
                                                     opt.no_isolation ? nullptr : &slot);
@@ -272,7 +282,10 @@ void announceRun(const RunOptions& opt, unsigned jobs, const Baseline& baseline)
     std::printf("%u case%s at once, each side in %s: timeout %g s, memory limit %s\n", jobs,
                 jobs == 1 ? "" : "s",
                 opt.process_per_case ? "a process of its own per case"
-                                     : "a long-lived worker process (a new one after a crash)",
+                : opt.process_per_case_for.empty()
+                    ? "a long-lived worker process (a new one after a crash)"
+                    : "a long-lived worker process (a new one after a crash; a process of its own "
+                      "for the cases --process-per-case-for names)",
                 opt.timeout, opt.memory_limit ? formatBytes(opt.memory_limit).c_str() : "none");
   if (!baseline.file.empty()) {
     std::printf("Baseline: %s (%zu known results)\n", baseline.file.c_str(),

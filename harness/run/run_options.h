@@ -52,8 +52,9 @@ struct RunOptions {
   std::string device_per_case = "auto";  // yes, no, auto (vulkan/vulkan_backend.h devicePerCase)
   bool process_per_case =
       false;  // each side of each case in a process of its own (no workers; the slowest way)
-  std::string plant_fault;           // test only: fault/planted_fault.h
-  std::string plant_fault_in = "*";  // only in cases whose name matches this glob
+  std::vector<std::string> process_per_case_for;  // globs: only these cases so, the rest in workers
+  std::string plant_fault;                        // test only: fault/planted_fault.h
+  std::string plant_fault_in = "*";               // only in cases whose name matches this glob
   std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
   std::string baseline;       // expected results of this driver (report/baseline.h)
   std::string flakes, skips;  // its flakes and skips files ("": the baseline's siblings, if any)
