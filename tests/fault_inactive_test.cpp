@@ -50,7 +50,7 @@ TEST(InactiveHidesLastActive, FailsEveryIsolatingCaseButTheControls) {
 TEST(InactiveHidesLastActive, FailsTheSeedCasesItBreaksOnLavapipe26) {
   for (const char* name :
        {"inactive/null-instance", "inactive/nan-x-triangle", "inactive/nan-min-x-aabb"}) {
-    const std::optional<CaseFile> f = findCase(name, "", kSuiteCases);
+    const std::optional<CaseFile> f = suiteCase(name);
     ASSERT_TRUE(f) << name;
     ParseResult parsed = loadSuiteCase(*f);
     ASSERT_TRUE(parsed.value) << name;

@@ -32,7 +32,7 @@ std::vector<std::string> caseNames() {
 }
 
 ParseResult parseNamed(const std::string& name) {
-  const std::optional<CaseFile> f = findCase(name, "", kCases);
+  const std::optional<CaseFile> f = suiteCase(name);
   if (!f) return ParseResult{};
   return loadSuiteCase(*f);
 }

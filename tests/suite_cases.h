@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstdlib>
+#include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -25,6 +27,19 @@ inline std::vector<CaseFile> suiteCases(bool one_per_file = false) {
   for (CaseFile& f : all)
     if (files.insert(f.path).second) out.push_back(std::move(f));
   return out;
+}
+
+// One case by name, from one scan of the folder per process (findCase scans
+// and expands every sweep each time it is asked).
+inline std::optional<CaseFile> suiteCase(const std::string& name) {
+  static const std::map<std::string, CaseFile> by_name = [] {
+    std::map<std::string, CaseFile> m;
+    for (CaseFile& f : suiteCases()) m.emplace(f.name, std::move(f));
+    return m;
+  }();
+  const auto it = by_name.find(name);
+  if (it == by_name.end()) return std::nullopt;
+  return it->second;
 }
 
 inline ParseResult loadSuiteCase(const CaseFile& f) {
