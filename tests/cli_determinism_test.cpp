@@ -1,10 +1,13 @@
-// Determinism: two runs of the whole suite, one with four cases at once and
-// one with one at a time, write the same results folders, byte for byte, once
-// the timings (and the run's date) are taken out.
+// Determinism: the whole suite in one run, one case at a time, writes what
+// the case/<family> tests wrote running it family by family (several cases at
+// once in long-lived workers, dealt longest first), byte for byte once the
+// timings (and the run's date) are taken out: every file of every case, and
+// every case's line of results.csv and outcomes.jsonl.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -18,6 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 using cli::fresh;
 using cli::kBin;
+using cli::readDeqpCsv;
 using cli::sh;
 using cli::slurp;
 
@@ -79,23 +83,71 @@ std::set<std::string> filesUnder(const fs::path& root) {
   return out;
 }
 
-// The whole suite, twice, into two fresh folders: cases four at once (in
-// long-lived workers, dealt longest first), then one at a time.
-TEST(Determinism, TwoRunsOfTheSuiteWriteTheSameResults) {
-  const std::string a = fresh("determinism-a"), b = fresh("determinism-b");
-  const std::string run = kBin + " run --strict-validation --baseline " RAYSPEC_SOURCE_DIR
-                                 "/references/baselines/lavapipe.csv --out ";
-  ASSERT_EQ(sh(run + a + " -j 4", a + ".log"), 0) << slurp(a + ".log");
-  ASSERT_EQ(sh(run + b + " -j 1", b + ".log"), 0) << slurp(b + ".log");
-  const std::set<std::string> files_a = filesUnder(a), files_b = filesUnder(b);
-  ASSERT_EQ(files_a, files_b);
-  EXPECT_GT(files_a.size(), 1000u) << "the suite's bundles are missing";
+// A run folder's journal as case name -> its line without timings.
+std::map<std::string, std::string> journalLines(const fs::path& run) {
+  std::map<std::string, std::string> out;
+  std::istringstream in(slurp((run / "outcomes.jsonl").string()));
+  for (std::string line; std::getline(in, line);) {
+    nlohmann::json j = nlohmann::json::parse(line);
+    dropTimings(j);
+    out[j["name"].get<std::string>()] = j.dump();
+  }
+  return out;
+}
+
+// Where the case/<family> test of a case wrote its run.
+fs::path familyRun(const std::string& case_name) {
+  return fs::path(RAYSPEC_FAMILY_RUNS) / case_name.substr(0, case_name.find('/'));
+}
+
+// The files of one case in run a and in its family's run.
+int compareCase(const fs::path& a, const std::string& name) {
+  const fs::path in_a = a / name, in_family = familyRun(name) / name;
+  const std::set<std::string> files_a = filesUnder(in_a), files_family = filesUnder(in_family);
+  if (files_a != files_family) {
+    ADD_FAILURE() << name << ": the whole run and the family run wrote different files";
+    return 1;
+  }
   int differing = 0;
-  for (const std::string& f : files_a) {
-    if (withoutTimings(fs::path(a) / f) == withoutTimings(fs::path(b) / f)) continue;
-    if (++differing <= 10) ADD_FAILURE() << f << " differs between two runs";
+  for (const std::string& f : files_a)
+    if (withoutTimings(in_a / f) != withoutTimings(in_family / f)) {
+      if (++differing <= 3) ADD_FAILURE() << name << "/" << f << " differs from " << in_family;
+    }
+  return differing;
+}
+
+TEST(Determinism, TheSuiteInOneRunWritesWhatItsFamiliesWrite) {
+  ASSERT_TRUE(fs::exists(RAYSPEC_FAMILY_RUNS))
+      << RAYSPEC_FAMILY_RUNS << " is missing: the case/<family> tests write it (ctest runs them "
+      << "first)";
+  const std::string a = fresh("determinism-a");
+  ASSERT_EQ(sh(kBin +
+                   " run -j 1 --strict-validation --baseline " RAYSPEC_SOURCE_DIR
+                   "/references/baselines/lavapipe.csv --out " +
+                   a,
+               a + ".log"),
+            0)
+      << slurp(a + ".log");
+  const std::map<std::string, std::string> status = readDeqpCsv(a + "/results.csv");
+  const std::map<std::string, std::string> journal = journalLines(a);
+  ASSERT_GT(status.size(), 400u) << "the suite's cases are missing";
+  EXPECT_EQ(journal.size(), status.size());
+  int differing = 0;
+  std::map<std::string, std::map<std::string, std::string>> family_status, family_journal;
+  for (const auto& [name, st] : status) {
+    const std::string family = familyRun(name).string();
+    if (!family_status.count(family)) {
+      family_status[family] = readDeqpCsv(family + "/results.csv");
+      family_journal[family] = journalLines(family);
+    }
+    EXPECT_EQ(family_status[family][name], st) << name << ": results.csv";
+    EXPECT_EQ(family_journal[family][name], journal.at(name)) << name << ": outcomes.jsonl";
+    differing += compareCase(a, name);
   }
   EXPECT_EQ(differing, 0);
+  size_t family_cases = 0;
+  for (const auto& [family, rows] : family_status) family_cases += rows.size();
+  EXPECT_EQ(family_cases, status.size()) << "the family runs hold cases the whole run has not";
 }
 
 // The comparison above would notice a difference: a record changed.

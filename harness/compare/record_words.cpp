@@ -53,8 +53,9 @@ bool sameField(const RecordField& f, const uint32_t* d, const uint32_t* m, float
   const int index = static_cast<int>(f.index);
   if (!f.automatic && written(d, index) != written(m, index)) return false;
   if (!f.automatic && !written(d, index)) return true;
-  if (f.type == FieldType::Uint)
-    return std::equal(d + f.offset, d + f.offset + f.words, m + f.offset);
+  if (f.type == FieldType::Uint)  // most are one word: no memcmp call for those
+    return f.words == 1 ? d[f.offset] == m[f.offset]
+                        : std::equal(d + f.offset, d + f.offset + f.words, m + f.offset);
   const FieldTolerance& ft = fieldTolerances()[f.index];
   Tolerance tol = ft.tol;
   if (ft.widened_by_t_bound) tol.abs = std::max(tol.abs, static_cast<double>(t_bound));

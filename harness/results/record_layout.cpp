@@ -1,5 +1,8 @@
 #include "results/record_layout.h"
 
+#include <string_view>
+#include <unordered_map>
+
 namespace rayspec {
 namespace {
 
@@ -57,10 +60,15 @@ const std::vector<RecordField>& recordFields() {
   return fields;
 }
 
+// By name through a hash table: the comparison asks per ray.
 const RecordField* findRecordField(std::string_view name) {
-  for (const RecordField& f : recordFields())
-    if (name == f.name) return &f;
-  return nullptr;
+  static const std::unordered_map<std::string_view, const RecordField*> by_name = [] {
+    std::unordered_map<std::string_view, const RecordField*> m;
+    for (const RecordField& f : recordFields()) m.emplace(f.name, &f);
+    return m;
+  }();
+  const auto it = by_name.find(name);
+  return it == by_name.end() ? nullptr : it->second;
 }
 
 int recordFieldIndex(std::string_view name) {
@@ -69,7 +77,7 @@ int recordFieldIndex(std::string_view name) {
 }
 
 bool traversalDependent(const RecordField& f) {
-  const std::string n = f.name;
+  const std::string_view n = f.name;
   return n == "any_hit_runs" || n == "intersection_runs" || n == "any_hit_slots" ||
          n == "any_hit_repeats";
 }

@@ -12,7 +12,7 @@ bool Tolerance::matches(float device, float model) const {
   return diff <= abs + rel * std::max(std::fabs(static_cast<double>(model)), 1.0);
 }
 
-Tolerance toleranceFor(const std::string& field) {
+Tolerance toleranceFor(std::string_view field) {
   if (field == "barycentrics") return {1e-4, 0.0};
   if (field == "color" || field == "color2") return {1e-4, 1e-4};
   return {1e-5, 1e-5};

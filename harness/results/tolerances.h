@@ -9,6 +9,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 namespace rayspec {
 
@@ -17,6 +18,6 @@ struct Tolerance {
   bool matches(float device, float model) const;
 };
 
-Tolerance toleranceFor(const std::string& field);
+Tolerance toleranceFor(std::string_view field);
 
 }  // namespace rayspec
