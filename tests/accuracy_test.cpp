@@ -250,7 +250,8 @@ TEST(AccuracyTable, OneScatterPanelPerSetZeroAtTheFloor) {
   EXPECT_EQ(p[1].series[0].points, (std::vector<std::pair<double, double>>{{2000.0, 4000.0}}));
   EXPECT_EQ(p[1].series[1].points[0].second,
             kPlotFloorPerMillion);  // the exact tier: no disagreement
-  EXPECT_EQ(p[1].series[1].labels, std::vector<std::string>{"model exact (0)"});
+  EXPECT_EQ(p[1].series[1].key, "model exact (0)");
+  EXPECT_EQ(p[1].series[1].name, "model exact") << "the colour follows the source";
 }
 
 }  // namespace

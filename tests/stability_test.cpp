@@ -59,15 +59,23 @@ TEST(StabilityTable, SumsVariantsAndListsEachSourcesRates) {
   EXPECT_DOUBLE_EQ(j["entries"][2]["double_hits_per_1000"].get<double>(), 200.0);
 }
 
-TEST(StabilityTable, OnePanelPerFamilyTwoSeriesPerSource) {
+// Small multiples: a row per family, a panel per source in it, leaks and
+// double hits in each; a row shares its y axis.
+TEST(StabilityTable, APanelPerFamilyAndSourceTheRowSharingItsAxis) {
   const std::vector<PlotPanel> p = stabilityPanels(sample());
-  ASSERT_EQ(p.size(), 2u);
-  EXPECT_EQ(p[0].title, "stability/grid");
+  ASSERT_EQ(p.size(), 4u);
+  EXPECT_EQ(p[0].title, "grid: model exact");
+  EXPECT_EQ(p[1].title, "grid: lavapipe");
+  EXPECT_EQ(p[2].title, "fan: model exact");
   EXPECT_TRUE(p[0].log_x);
-  ASSERT_EQ(p[0].series.size(), 4u);
-  EXPECT_EQ(p[0].series[2].name, "lavapipe leaks");
+  ASSERT_EQ(p[1].series.size(), 2u);
+  EXPECT_EQ(p[1].series[0].name, "leaks");
+  EXPECT_EQ(p[1].series[1].name, "double hits");
   EXPECT_EQ(p[0].series[0].points, (std::vector<std::pair<double, double>>{{1, 0}, {1e6, 0}}));
-  EXPECT_EQ(p[0].series[3].points, (std::vector<std::pair<double, double>>{{1, 200}}));
+  EXPECT_EQ(p[1].series[1].points, (std::vector<std::pair<double, double>>{{1, 200}}));
+  EXPECT_EQ(p[0].y_max, p[1].y_max);
+  EXPECT_GE(p[0].y_max, 200);
+  EXPECT_EQ(p[2].y_max, 1) << "a row with nothing to show still gets an axis";
 }
 
 }  // namespace

@@ -16,7 +16,7 @@ PACKAGES=(
   libopenimageio-dev openimageio-tools
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libre2-dev
-  chromium fonts-dejavu-core
+  chromium fonts-dejavu-core gnuplot-nox
   clang libclang-rt-14-dev clang-format universal-ctags
   ccache
 )

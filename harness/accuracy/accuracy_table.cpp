@@ -115,9 +115,8 @@ std::vector<PlotPanel> accuracyPanels(const std::vector<AccuracyRow>& rows) {
     for (const AccuracyRow& r : rows) {
       if (r.set != set || r.launch_rays == 0) continue;
       const double y = r.d.disagreeing ? r.d.perMillion() : kPlotFloorPerMillion;
-      char label[96];
-      std::snprintf(label, sizeof label, "%s%s", r.source.c_str(), r.d.disagreeing ? "" : " (0)");
-      p.series.push_back({r.source, {{r.msPerMray(), y}}, {label}});
+      p.series.push_back(
+          {r.source, {{r.msPerMray(), y}}, r.d.disagreeing ? r.source : r.source + " (0)"});
     }
     if (!p.series.empty()) panels.push_back(std::move(p));
   }

@@ -121,8 +121,13 @@ int runAccuracy(const AccuracyOptions& opt) {
     error = writeTextFile(opt.out + "/accuracy.json", accuracyJson(rows).dump(2) + "\n");
   if (error.empty()) {
     const std::vector<PlotPanel> panels = accuracyPanels(rows);
-    error = panels.empty() ? "nothing to plot: no bundle was read"
-                           : writeLinePlots(opt.out + "/accuracy.png", panels, {2, 640, 480});
+    if (panels.empty()) {
+      error = "nothing to plot: no bundle was read";
+    } else if (Result<void> r = writePlots(opt.out + "/accuracy.png", panels,
+                                           {2, 560, 420, "What accuracy costs in time"});
+               !r) {
+      error = r.error().format();
+    }
   }
   std::printf("\n%s\nReport: %s/accuracy.txt, accuracy.json, accuracy.png\n", table.c_str(),
               opt.out.c_str());

@@ -105,8 +105,14 @@ int runStability(const StabilityOptions& opt) {
   std::string error = writeTextFile(opt.out + "/stability.txt", table);
   if (error.empty())
     error = writeTextFile(opt.out + "/stability.json", stabilityJson(entries).dump(2) + "\n");
-  if (error.empty())
-    error = writeLinePlots(opt.out + "/stability.png", stabilityPanels(entries), {2, 640, 440});
+  if (error.empty()) {
+    const PlotLayout layout{static_cast<int>(stabilitySources(entries).size()), 330, 290,
+                            "Leaks and double hits per 1000 rays (rows: families; columns: "
+                            "model tiers and devices)"};
+    if (Result<void> r = writePlots(opt.out + "/stability.png", stabilityPanels(entries), layout);
+        !r)
+      error = r.error().format();
+  }
   std::printf("\n%s\nReport: %s/stability.txt, stability.json, stability.png\n", table.c_str(),
               opt.out.c_str());
   if (!error.empty()) {

@@ -98,25 +98,32 @@ nlohmann::json stabilityJson(const std::vector<StabilityEntry>& entries) {
   return {{"unit", "per 1000 rays"}, {"sources", stabilitySources(entries)}, {"entries", rows}};
 }
 
+// Small multiples: a row per family, a column per source (each model tier,
+// each device), each panel its leaks and double hits against the magnitude.
+// The panels of a row share the y axis, so sources compare at a glance.
 std::vector<PlotPanel> stabilityPanels(const std::vector<StabilityEntry>& entries) {
   std::vector<PlotPanel> panels;
   for (const std::string& f : families(entries)) {
-    PlotPanel p;
-    p.title = "stability/" + f;
-    p.x_label = f == "scale" ? "scale (mesh extent)" : "coordinate magnitude";
-    p.y_label = "per 1000 rays";
-    p.log_x = true;
+    double row_max = 0;
+    const size_t first = panels.size();
     for (const std::string& s : stabilitySources(entries)) {
-      PlotSeries leaks{s + " leaks", {}}, doubles{s + " double hits", {}};
+      PlotPanel p;
+      p.title = f + ": " + s;
+      p.x_label = f == "scale" ? "scale (mesh extent)" : "coordinate magnitude";
+      p.y_label = "per 1000 rays";
+      p.log_x = true;
+      PlotSeries leaks{"leaks", {}}, doubles{"double hits", {}};
       for (const auto& [m, text] : magnitudes(entries, f))
         if (const StabilityEntry* e = find(entries, f, m, s)) {
           leaks.points.push_back({m, e->counts.leakRate()});
           doubles.points.push_back({m, e->counts.doubleRate()});
+          row_max = std::max({row_max, e->counts.leakRate(), e->counts.doubleRate()});
         }
-      p.series.push_back(std::move(leaks));
-      p.series.push_back(std::move(doubles));
+      p.series = {std::move(leaks), std::move(doubles)};
+      panels.push_back(std::move(p));
     }
-    panels.push_back(std::move(p));
+    for (size_t k = first; k < panels.size(); ++k)
+      panels[k].y_max = row_max > 0 ? row_max * 1.08 : 1;
   }
   return panels;
 }
