@@ -7,6 +7,7 @@ bash tools/setup.sh
 source tools/compiler-cache.sh
 cmake --preset default "${launcher[@]}" >/dev/null
 cmake --build --preset default -j"$(nproc)"
-export MESA_SHADER_CACHE_DIR="$PWD/build/mesa-shader-cache"
+# Mesa's shader cache beside rayspec's own (tests/CMakeLists.txt: the same place).
+export MESA_SHADER_CACHE_DIR="${RAYSPEC_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/rayspec}/mesa-shader-cache"
 # The known lavapipe deviations are listed (and shown) as expected results.
 exec ./build/rayspec run --out build/results --baseline references/baselines/lavapipe.csv "$@"
