@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "library/case_discovery.h"
-#include "model/model_backend.h"
+#include "model/model_engine.h"
 #include "plan/plan.h"
 
 namespace rayspec {

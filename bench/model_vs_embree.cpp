@@ -22,7 +22,7 @@
 #include <thread>
 #include <vector>
 
-#include "model/model_backend.h"
+#include "model/model_engine.h"
 #include "plan/plan.h"
 #include "results/record_layout.h"
 

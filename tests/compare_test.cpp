@@ -308,13 +308,13 @@ TEST(Compare, ValidationErrorFails) {
 TEST(Compare, BackendStatusesMapToVerdicts) {
   const Case c = sampleCase();
   Results d = sampleResults("vulkan");
-  d.setStatus(RunStatus::NotSupported, "no ray tracing");
+  d.setStatus(SideStatus::NotSupported, "no ray tracing");
   EXPECT_EQ(compareResults(c, samplePlan(c), d, sampleResults("model")).status,
             Status::NotSupported);
-  d.setStatus(RunStatus::Crash, "VK_ERROR_DEVICE_LOST");
+  d.setStatus(SideStatus::Crash, "VK_ERROR_DEVICE_LOST");
   EXPECT_EQ(compareResults(c, samplePlan(c), d, sampleResults("model")).status, Status::Crash);
   Results m = sampleResults("model");
-  m.setStatus(RunStatus::NotSupported, "model lacks it");
+  m.setStatus(SideStatus::NotSupported, "model lacks it");
   EXPECT_EQ(compareResults(c, samplePlan(c), sampleResults("vulkan"), m).status,
             Status::NotSupported)
       << "no reference is never a pass";

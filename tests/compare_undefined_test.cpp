@@ -143,7 +143,7 @@ TEST(UndefinedBehaviourVerdict, NoUndefinedRaysLeaveTheVerdictAlone) {
   EXPECT_TRUE(v.findings.empty());
   // Nor when the model did not run: its findings are not a diagnosis.
   Results m = modelWithUndefinedRay1();
-  m.setStatus(RunStatus::NotSupported, "model lacks it");
+  m.setStatus(SideStatus::NotSupported, "model lacks it");
   EXPECT_TRUE(judgeUndefinedBehaviour(sampleCase(), sampleResults("vulkan"), m, v));
   EXPECT_TRUE(v.undefined.empty());
 }
@@ -165,20 +165,20 @@ TEST(UndefinedBehaviourVerdict, ACaseNotClaimingRubIsACaseErrorNamingReasonField
 
 TEST(UndefinedBehaviourVerdict, ADeviceCrashOnACaseWithUndefinedBehaviourIsTheCasesError) {
   const Case c = sampleCase();
-  for (RunStatus s : {RunStatus::Crash, RunStatus::Timeout}) {
+  for (SideStatus s : {SideStatus::Crash, SideStatus::Timeout}) {
     Results d = sampleResults("vulkan");
     d.setStatus(s, "signal 11");
     const Verdict v = compareResults(c, samplePlan(c), d, modelWithUndefinedRay1());
     EXPECT_EQ(v.status, Status::CaseError) << allFindings(v);
     EXPECT_NE(
-        v.headline().find(s == RunStatus::Crash ? "the device crashed" : "the device timed out"),
+        v.headline().find(s == SideStatus::Crash ? "the device crashed" : "the device timed out"),
         std::string::npos)
         << v.headline();
     EXPECT_NE(v.headline().find("the case has undefined behaviour"), std::string::npos)
         << v.headline();
     // Without the model's diagnosis the same crash is the driver's.
     EXPECT_EQ(compareResults(c, samplePlan(c), d, sampleResults("model")).status,
-              s == RunStatus::Crash ? Status::Crash : Status::Timeout);
+              s == SideStatus::Crash ? Status::Crash : Status::Timeout);
   }
 }
 
@@ -199,11 +199,11 @@ TEST(UndefinedBehaviourVerdict, AProbeThatSurvivedPassesAndItsOtherRaysAreJudged
 
 TEST(UndefinedBehaviourVerdict, AProbeOnWhichTheDeviceCrashedOrHungStaysCrashOrTimeout) {
   const Case c = probeCase();
-  for (RunStatus s : {RunStatus::Crash, RunStatus::Timeout}) {
+  for (SideStatus s : {SideStatus::Crash, SideStatus::Timeout}) {
     Results d = sampleResults("vulkan");
     d.setStatus(s, "signal 6");
     const Verdict v = compareResults(c, samplePlan(c), d, modelWithUndefinedRay1());
-    EXPECT_EQ(v.status, s == RunStatus::Crash ? Status::Crash : Status::Timeout) << allFindings(v);
+    EXPECT_EQ(v.status, s == SideStatus::Crash ? Status::Crash : Status::Timeout) << allFindings(v);
     EXPECT_EQ(v.undefined.size(), 1u);
   }
 }

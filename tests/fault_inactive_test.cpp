@@ -7,7 +7,7 @@
 #include "case/parse_case.h"
 #include "compare/compare_results.h"
 #include "fault/planted_fault.h"
-#include "model/model_backend.h"
+#include "model/model_engine.h"
 #include "plan/plan.h"
 #include "suite_cases.h"
 

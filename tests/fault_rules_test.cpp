@@ -16,7 +16,7 @@
 #include "compare/compare_results.h"
 #include "fault/planted_fault.h"
 #include "fault/rule_faults.h"
-#include "model/model_backend.h"
+#include "model/model_engine.h"
 #include "plan/plan.h"
 #include "suite_cases.h"
 

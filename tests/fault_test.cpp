@@ -13,10 +13,10 @@
 #include "compare/compare_results.h"
 #include "fault/planted_fault.h"
 #include "fault/record_edit.h"
-#include "model/model_backend.h"
+#include "model/model_engine.h"
 #include "plan/plan.h"
 #include "results/record_layout.h"
-#include "vulkan/vulkan_backend.h"
+#include "vulkan/vulkan_engine.h"
 
 namespace rayspec {
 namespace {
@@ -32,7 +32,7 @@ class PlantedFault : public ::testing::Test {
   static void SetUpTestSuite() {
     VulkanOptions opt;
     opt.validation = false;
-    backend_ = VulkanBackend::create(opt, &backend_error_).release();
+    backend_ = VulkanEngine::create(opt, &backend_error_).release();
   }
   static void TearDownTestSuite() {
     delete backend_;
@@ -95,12 +95,12 @@ class PlantedFault : public ::testing::Test {
     return false;
   }
 
-  static VulkanBackend* backend_;
+  static VulkanEngine* backend_;
   static std::string backend_error_;
   static std::map<std::string, Ran> runs_;
 };
 
-VulkanBackend* PlantedFault::backend_ = nullptr;
+VulkanEngine* PlantedFault::backend_ = nullptr;
 std::string PlantedFault::backend_error_;
 std::map<std::string, Ran> PlantedFault::runs_;
 

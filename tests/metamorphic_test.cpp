@@ -14,7 +14,7 @@
 #include "metamorphic/compare_permuted.h"
 #include "metamorphic/id_observations.h"
 #include "metamorphic/permute_case.h"
-#include "model/model_backend.h"
+#include "model/model_engine.h"
 #include "plan/plan.h"
 #include "results/record_layout.h"
 #include "suite_cases.h"

@@ -7,7 +7,7 @@
 
 #include "metamorphic/permute_case.h"
 #include "metamorphic/transform_case.h"
-#include "model/model_backend.h"
+#include "model/model_engine.h"
 #include "plan/plan.h"
 #include "stability/leak_counts.h"
 #include "suite_cases.h"

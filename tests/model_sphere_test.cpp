@@ -9,7 +9,7 @@
 #include <set>
 
 #include "case/parse_case.h"
-#include "model/model_backend.h"
+#include "model/model_engine.h"
 #include "model/model_scene.h"
 #include "model/sphere_error.h"
 #include "model_support.h"

@@ -11,7 +11,7 @@
 
 #include "case/case.h"
 #include "case/parse_case.h"
-#include "model/model_backend.h"
+#include "model/model_engine.h"
 #include "plan/plan.h"
 #include "program/ops.h"
 #include "results/record_layout.h"

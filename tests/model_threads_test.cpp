@@ -1,4 +1,4 @@
-// The model's per-run set-up and its worker threads (model_backend.cpp):
+// The model's per-run set-up and its worker threads (model_engine.cpp):
 // chunks of launch rays (256 to 4096, the last one partial) cover every ray
 // exactly once whatever the thread count, images are written per chunk, and
 // the SBT reach that decides whether a fast run needs every candidate still

@@ -3,7 +3,7 @@
 // the reason it may legally survive.
 #include <gtest/gtest.h>
 
-#include "model/model_backend.h"
+#include "model/model_engine.h"
 #include "mutate/kill_matrix.h"
 #include "mutate/mutate_case.h"
 #include "suite_cases.h"

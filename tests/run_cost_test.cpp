@@ -64,7 +64,7 @@ TEST(Cost, EveryStepAppearsAndTheSumsAgree) {
   expectSteps(cost, "parent", {"parse", "plan", "comparison", "reports"});
   // The model's engine lives across cases in its worker: made in the first
   // case, closed when the worker ends (no case's step). lavapipe gets a
-  // device per case (vulkan/vulkan_backend.h devicePerCase).
+  // device per case (vulkan/vulkan_engine.h devicePerCase).
   expectSteps(
       cost, "model",
       {"backend_setup", "model_scene", "model_trace", "write_bundle", "process", "read_bundle"});

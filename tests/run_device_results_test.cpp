@@ -8,7 +8,7 @@
 
 #include "case/parse_case.h"
 #include "metamorphic/permute_case.h"
-#include "model/model_backend.h"
+#include "model/model_engine.h"
 #include "results/record_layout.h"
 #include "results/results_io.h"
 #include "run/device_results.h"
@@ -70,7 +70,7 @@ TEST(SavedDevice, NoBundleIsNotSupportedNeverAPass) {
   const Case c = parsed(caseText());
   const std::string dir = savedRun("none");
   const Results r = SavedDevice(dir).run(c, derivePlan(c));
-  EXPECT_EQ(r.status, RunStatus::NotSupported);
+  EXPECT_EQ(r.status, SideStatus::NotSupported);
   EXPECT_NE(r.status_detail.find("did not run there"), std::string::npos) << r.status_detail;
   EXPECT_EQ(savedDevices(dir, {CaseFile{"", c.name}}), "");
 }

@@ -105,7 +105,7 @@ TEST(Backend, DeviceThatIsNotThereAnswersNotSupportedWithWhy) {
   EXPECT_FALSE(device.found());
   const Case c = loadCase("results/miss-xor-closest-hit");
   const Results r = device.run(c, derivePlan(c));
-  EXPECT_EQ(r.status, RunStatus::NotSupported);
+  EXPECT_EQ(r.status, SideStatus::NotSupported);
   EXPECT_NE(r.status_detail.find("nosuchdevice"), std::string::npos) << r.status_detail;
 }
 
@@ -144,7 +144,7 @@ TEST(Isolation, ModelHangIsATimeout) {
                                    }),
                                    c, derivePlan(c), ChildLimits{1, 0}, tempDir("hang"));
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
-  EXPECT_EQ(m.results.status, RunStatus::Timeout);
+  EXPECT_EQ(m.results.status, SideStatus::Timeout);
   EXPECT_EQ(m.results.backend, "model");
   EXPECT_EQ(m.results.status_detail, "the model process ran longer than 1 s (killed)");
   EXPECT_EQ(backendVerdict(m.results).headline().rfind("Timeout: model: ", 0), 0u)
@@ -160,14 +160,14 @@ TEST(Isolation, ModelCrashIsACrash) {
                                      std::raise(SIGSEGV);
                                    }),
                                    c, derivePlan(c), ChildLimits{30, 0}, dir);
-  EXPECT_EQ(m.results.status, RunStatus::Crash);
+  EXPECT_EQ(m.results.status, SideStatus::Crash);
   EXPECT_NE(m.results.status_detail.find("the model process died of signal 11"), std::string::npos)
       << m.results.status_detail;
   // The dead side's bundle says so (a saved run judged elsewhere shows the crash).
   std::string error;
   const Results saved = readResults(dir, &error);
   EXPECT_EQ(error, "");
-  EXPECT_EQ(saved.status, RunStatus::Crash);
+  EXPECT_EQ(saved.status, SideStatus::Crash);
   EXPECT_EQ(saved.case_hash, c.source_hash);
 }
 
@@ -185,7 +185,7 @@ TEST(IsolationMemoryLimit, ModelBeyondTheMemoryLimitIsACrash) {
   };
   const SideResult m = runIsolated(misbehavingSide(hog), c, derivePlan(c),
                                    ChildLimits{60, 256u << 20}, tempDir("memory"));
-  EXPECT_EQ(m.results.status, RunStatus::Crash);
+  EXPECT_EQ(m.results.status, SideStatus::Crash);
   EXPECT_EQ(m.results.status_detail,
             "the model process ran out of memory (--memory-limit 256 MiB)");
 }

@@ -133,7 +133,7 @@ TEST(SideWorker, CrashedCaseIsACrashAndTheNextCaseGetsANewWorker) {
   const SideResult first = worker.run(0, derivePlan(cases[0]), dir + "/ok/0/model");
   EXPECT_TRUE(first.results.ok()) << first.results.statusText();
   const SideResult crashed = worker.run(1, derivePlan(cases[1]), dir + "/crash/1/model");
-  EXPECT_EQ(crashed.results.status, RunStatus::Crash);
+  EXPECT_EQ(crashed.results.status, SideStatus::Crash);
   EXPECT_NE(crashed.results.status_detail.find("signal 11"), std::string::npos)
       << crashed.results.status_detail;
   EXPECT_EQ(crashed.results.case_name, "anyhit/ignore-odd-primitives")

@@ -7,7 +7,7 @@
 #include "vulkan/context.h"
 #include "vulkan/device_errors.h"
 #include "vulkan/run_case.h"
-#include "vulkan/vulkan_backend.h"
+#include "vulkan/vulkan_engine.h"
 
 namespace rayspec {
 namespace {
@@ -15,25 +15,25 @@ namespace {
 TEST(DeviceErrors, EachFailedCallHasItsStatus) {
   const DeviceErrorStatus lost =
       classifyVulkanError(VulkanError("x", "vkQueueSubmit", VK_ERROR_DEVICE_LOST));
-  EXPECT_EQ(lost.status, RunStatus::Crash);
+  EXPECT_EQ(lost.status, SideStatus::Crash);
   EXPECT_TRUE(lost.device_lost);
   EXPECT_EQ(
       lost.detail,
       "device lost: vkQueueSubmit returned VK_ERROR_DEVICE_LOST; the next case gets a new device");
   for (VkResult oom : {VK_ERROR_OUT_OF_DEVICE_MEMORY, VK_ERROR_OUT_OF_HOST_MEMORY}) {
     const DeviceErrorStatus s = classifyVulkanError(VulkanError("x", "vkAllocateMemory", oom));
-    EXPECT_EQ(s.status, RunStatus::NotSupported);
+    EXPECT_EQ(s.status, SideStatus::NotSupported);
     EXPECT_FALSE(s.device_lost);
     EXPECT_EQ(s.detail.rfind("out of memory: vkAllocateMemory returned VK_ERROR_OUT_OF_", 0), 0u)
         << s.detail;
   }
   const DeviceErrorStatus refused = classifyVulkanError(
       VulkanError("x", "vkCreateRayTracingPipelinesKHR", VK_ERROR_INITIALIZATION_FAILED));
-  EXPECT_EQ(refused.status, RunStatus::Refused);
+  EXPECT_EQ(refused.status, SideStatus::Refused);
   EXPECT_NE(refused.detail.find("the driver refused the pipeline"), std::string::npos);
   const DeviceErrorStatus other = classifyVulkanError(VulkanError(
       "vkMapMemory: VK_ERROR_MEMORY_MAP_FAILED", "vkMapMemory", VK_ERROR_MEMORY_MAP_FAILED));
-  EXPECT_EQ(other.status, RunStatus::Crash);
+  EXPECT_EQ(other.status, SideStatus::Crash);
   EXPECT_EQ(other.detail, "vkMapMemory: VK_ERROR_MEMORY_MAP_FAILED");
   for (const std::string& name : deviceErrorFaultNames())
     EXPECT_TRUE(deviceErrorFault(name)) << name;
@@ -52,17 +52,17 @@ Case suiteCase(const std::string& name) {
 // backend (a new VkDevice after a lost one).
 TEST(DeviceErrors, TheNextCaseRunsAfterEachError) {
   std::string error;
-  auto backend = VulkanBackend::create(VulkanOptions{}, &error);
+  auto backend = VulkanEngine::create(VulkanOptions{}, &error);
   if (!backend) GTEST_SKIP() << "no Vulkan ray tracing device: " << error;
   const Case c = suiteCase("sbt/hit-group-index");
   ASSERT_FALSE(c.name.empty());
   const Plan plan = derivePlan(c);
   const Results clean = backend->run(c, plan);
   ASSERT_TRUE(clean.ok()) << clean.statusText();
-  const std::pair<const char*, RunStatus> faults[] = {
-      {"device-lost", RunStatus::Crash},
-      {"out-of-device-memory", RunStatus::NotSupported},
-      {"pipeline-refused", RunStatus::Refused}};
+  const std::pair<const char*, SideStatus> faults[] = {
+      {"device-lost", SideStatus::Crash},
+      {"out-of-device-memory", SideStatus::NotSupported},
+      {"pipeline-refused", SideStatus::Refused}};
   for (const auto& [name, status] : faults) {
     injectVkError(*deviceErrorFault(name));
     const Results failed = backend->run(c, plan);

@@ -12,7 +12,7 @@
 #include "vulkan/device_usability.h"
 #include "vulkan/icd_environment.h"
 #include "vulkan/icd_manifest.h"
-#include "vulkan/vulkan_backend.h"
+#include "vulkan/vulkan_engine.h"
 
 namespace rayspec {
 namespace {
@@ -228,7 +228,7 @@ TEST(DriverLibrary, LavapipeDeviceComesFromItsManifest) {
   std::string error;
   const IcdManifest m = *readIcdManifest(lvp, &error);
   for (bool validation : {false, true}) {
-    std::unique_ptr<VulkanBackend> b = VulkanBackend::create({"llvmpipe", validation}, &error);
+    std::unique_ptr<VulkanEngine> b = VulkanEngine::create({"llvmpipe", validation}, &error);
     ASSERT_TRUE(b) << error;
     const std::string library = b->driverLibrary();
     EXPECT_TRUE(icdLibraryMatches(m, library)) << library << (validation ? " (validation on)" : "");

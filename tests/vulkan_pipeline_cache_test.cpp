@@ -11,7 +11,7 @@
 #include "case/parse_case.h"
 #include "plan/plan.h"
 #include "vulkan/pipeline_cache.h"
-#include "vulkan/vulkan_backend.h"
+#include "vulkan/vulkan_engine.h"
 
 namespace rayspec {
 namespace {
@@ -30,7 +30,7 @@ std::vector<fs::path> runOnce(const Case& c, const std::string& dir) {
   v.validation = false;
   v.device_per_case = false;
   std::string error;
-  std::unique_ptr<VulkanBackend> b = VulkanBackend::create(v, &error);
+  std::unique_ptr<VulkanEngine> b = VulkanEngine::create(v, &error);
   EXPECT_TRUE(b) << error;
   if (!b) return {};
   const Results r = b->run(c, derivePlan(c));

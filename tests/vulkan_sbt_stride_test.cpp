@@ -14,7 +14,7 @@
 #include "plan/plan.h"
 #include "results/record_layout.h"
 #include "vulkan/sbt_layout.h"
-#include "vulkan/vulkan_backend.h"
+#include "vulkan/vulkan_engine.h"
 
 namespace rayspec {
 namespace {
@@ -221,7 +221,7 @@ outputs:
 TEST(SbtStrideDevice, TheLargestStrideRunsAndOneStepMoreIsNotSupported) {
   if (!rayTracingDeviceExists()) GTEST_SKIP() << "no ray tracing device";
   std::string error;
-  auto backend = VulkanBackend::create(VulkanOptions{}, &error);
+  auto backend = VulkanEngine::create(VulkanOptions{}, &error);
   ASSERT_TRUE(backend) << error;
   const DeviceInfo& d = backend->device();
   const uint32_t largest =
@@ -237,7 +237,7 @@ TEST(SbtStrideDevice, TheLargestStrideRunsAndOneStepMoreIsNotSupported) {
     Results r = backend->run(c, derivePlan(c));
     EXPECT_TRUE(r.validation_messages.empty()) << r.validation_messages.front();
     if (padding == beyond) {
-      EXPECT_EQ(r.status, RunStatus::NotSupported) << r.statusText();
+      EXPECT_EQ(r.status, SideStatus::NotSupported) << r.statusText();
       EXPECT_NE(r.status_detail.find("maxShaderGroupStride"), std::string::npos) << r.status_detail;
       const std::string shape =
           "record_data 4 + pipeline.sbt.padding: miss " + std::to_string(beyond);

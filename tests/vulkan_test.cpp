@@ -17,7 +17,7 @@
 #include "vulkan/case_buffers.h"
 #include "vulkan/sbt_layout.h"
 #include "vulkan/vk_check.h"
-#include "vulkan/vulkan_backend.h"
+#include "vulkan/vulkan_engine.h"
 
 namespace rayspec {
 namespace {
@@ -300,9 +300,9 @@ Case triangleCase() {
   return c;
 }
 
-std::unique_ptr<VulkanBackend> makeBackend() {
+std::unique_ptr<VulkanEngine> makeBackend() {
   std::string error;
-  auto backend = VulkanBackend::create(VulkanOptions{}, &error);
+  auto backend = VulkanEngine::create(VulkanOptions{}, &error);
   if (!backend) ADD_FAILURE() << "backend: " << error;
   return backend;
 }
@@ -436,7 +436,7 @@ TEST(VulkanDevice, RecursionBeyondTheDeviceIsNotSupported) {
   Case c = triangleCase();
   c.pipeline.max_recursion = backend->device().max_ray_recursion_depth + 1;
   Results r = backend->run(c, derivePlan(c));
-  EXPECT_EQ(r.status, RunStatus::NotSupported) << r.statusText();
+  EXPECT_EQ(r.status, SideStatus::NotSupported) << r.statusText();
   EXPECT_TRUE(r.records.empty());
   EXPECT_TRUE(backend->close().empty());
 }
@@ -536,7 +536,7 @@ TEST(VulkanDevice, EveryCaseFileRunsCleanly) {
     const Case& c = *parsed.value;
     Plan plan = derivePlan(c);
     Results r = backend->run(c, plan);
-    EXPECT_TRUE(r.ok() || r.status == RunStatus::NotSupported) << c.name << ": " << r.statusText();
+    EXPECT_TRUE(r.ok() || r.status == SideStatus::NotSupported) << c.name << ": " << r.statusText();
     EXPECT_TRUE(r.validation_messages.empty()) << c.name << ": " << r.validation_messages.front();
     if (!r.ok()) continue;
     if (plan.records) {
@@ -554,7 +554,7 @@ TEST(VulkanDevice, UnknownDeviceFilterFails) {
   VulkanOptions o;
   o.device_filter = "no-such-device-xyz";
   std::string error;
-  EXPECT_FALSE(VulkanBackend::create(o, &error));
+  EXPECT_FALSE(VulkanEngine::create(o, &error));
   EXPECT_NE(error.find("no-such-device-xyz"), std::string::npos) << error;
 }
 

@@ -12,17 +12,17 @@ Verdict backendVerdict(const Results& r) {
   if (r.ok()) return v;
   Finding f;
   switch (r.status) {
-    case RunStatus::Ok:
-    case RunStatus::Crash:
+    case SideStatus::Ok:
+    case SideStatus::Crash:
       f.status = Status::Crash;
       break;
-    case RunStatus::NotSupported:
+    case SideStatus::NotSupported:
       f.status = Status::NotSupported;
       break;
-    case RunStatus::Timeout:
+    case SideStatus::Timeout:
       f.status = Status::Timeout;
       break;
-    case RunStatus::Refused:
+    case SideStatus::Refused:
       f.status = Status::Fail;
       f.rule = "driver";
       break;

@@ -64,7 +64,7 @@ bool judgeUndefinedBehaviour(const Case& c, const Results& device, const Results
   if (!model.ok() || model.undefined.empty()) return true;
   const std::vector<UndefinedRays> groups = groupUndefinedRays(model.undefined);
   const std::string what = describe(groups);
-  const bool survived = device.status != RunStatus::Crash && device.status != RunStatus::Timeout;
+  const bool survived = device.status != SideStatus::Crash && device.status != SideStatus::Timeout;
   if (c.claims(kRule)) {
     // A robustness probe: surviving is all that is asked of the undefined rays.
     v.undefined = groups;
@@ -80,7 +80,7 @@ bool judgeUndefinedBehaviour(const Case& c, const Results& device, const Results
                         "; fix the case, or claim R-UB to make it a robustness probe";
   if (!survived)
     message = std::string("the device ") +
-              (device.status == RunStatus::Crash ? "crashed" : "timed out") + " (" +
+              (device.status == SideStatus::Crash ? "crashed" : "timed out") + " (" +
               device.statusText() + "); " + message;
   v = Verdict{};
   v.undefined = groups;

@@ -8,7 +8,7 @@
 
 #include "fault/planted_fault.h"
 #include "fault/record_edit.h"
-#include "model/model_backend.h"
+#include "model/model_engine.h"
 
 namespace rayspec {
 

@@ -1,6 +1,6 @@
 // Case mutations at the ends of the ray interval: the model run as a device
 // that judges an exactly representable end the wrong way (the model's test-only
-// deviation, model/model_backend.h). Only rays that meet a candidate at exactly
+// deviation, model/model_engine.h). Only rays that meet a candidate at exactly
 // an end answer differently.
 #include "fault/fault_impl.h"
 

@@ -3,7 +3,7 @@
 // model, so such a binary links neither Embree nor TBB. The run loop runs the
 // device side only there (run/run_only.h); were the model asked anyway, the
 // answer is NotSupported, never a reference to pass against.
-#include "model/model_backend.h"
+#include "model/model_engine.h"
 
 namespace rayspec {
 
@@ -16,7 +16,8 @@ Results runOnModel(const Case& c, const Plan&, const ModelOptions& opt) {
   r.case_name = c.name;
   r.backend = "model";
   r.device = std::string("none-") + modelTierName(opt.tier);
-  r.setStatus(RunStatus::NotSupported, "this run-only build has no model (RAYSPEC_WITH_MODEL=OFF)");
+  r.setStatus(SideStatus::NotSupported,
+              "this run-only build has no model (RAYSPEC_WITH_MODEL=OFF)");
   return r;
 }
 

@@ -14,7 +14,7 @@
 
 #include "case/case.h"
 #include "model/frame_error.h"
-#include "model/model_backend.h"
+#include "model/model_engine.h"
 
 namespace rayspec {
 

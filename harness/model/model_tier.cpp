@@ -1,7 +1,7 @@
 // The tier names, in both builds (model/model_absent.cpp).
 #include <stdexcept>
 
-#include "model/model_backend.h"
+#include "model/model_engine.h"
 
 namespace rayspec {
 

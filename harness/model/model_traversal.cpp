@@ -1,5 +1,5 @@
 // traceRayEXT in the model: Embree enumerates, the model decides (see the
-// order documented in model_backend.h), then closest-hit or miss runs. The
+// order documented in model_engine.h), then closest-hit or miss runs. The
 // exact tier's ambiguity check is in model_exact_tier.cpp, the path without
 // decisions in model_fast_path.cpp.
 #include <algorithm>
@@ -334,7 +334,7 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
 }
 
 // Every candidate from Embree, decided by the model in order (see
-// model_backend.h), then the exact tier's ambiguity check.
+// model_engine.h), then the exact tier's ambiguity check.
 Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, Payload& payload) {
   const ModelScene& scene = *sh_.scene;
   Traversal tr(*this, r);

@@ -5,7 +5,7 @@
 #include <fstream>
 
 #include "library/case_discovery.h"
-#include "model/model_backend.h"
+#include "model/model_engine.h"
 #include "mutate/kill_matrix.h"
 #include "run/device_results.h"
 

@@ -53,12 +53,13 @@ struct Image {
   BulkWords texels;       // width*height*channels words (float bits when is_float)
 };
 
-// How one execution (device or model) ended. The detail says why.
+// How one side's execution (device or model) of a case ended; the detail
+// says why. Not the verdict's Status (compare/verdict.h), which judges both.
 // Refused: the driver refused something a conformant driver must accept (a
 // valid pipeline within the limits): the case Fails.
-enum class RunStatus { Ok, NotSupported, Crash, Timeout, Refused };
-const char* runStatusName(RunStatus s);  // "ok", "NotSupported", "Crash", "Timeout", "Refused"
-bool parseRunStatus(const std::string& name, RunStatus* out);
+enum class SideStatus { Ok, NotSupported, Crash, Timeout, Refused };
+const char* sideStatusName(SideStatus s);  // "ok", "NotSupported", "Crash", "Timeout", "Refused"
+bool parseSideStatus(const std::string& name, SideStatus* out);
 
 // Why the model's exact tier found a ray numerically ambiguous. Stable names
 // (results.json): see ambiguityReasonName().
@@ -109,10 +110,10 @@ struct TBound {
 };
 
 struct Results {
-  bool ok() const { return status == RunStatus::Ok; }
+  bool ok() const { return status == SideStatus::Ok; }
   // "ok", or "Crash: <detail>".
   std::string statusText() const;
-  void setStatus(RunStatus s, std::string detail) {
+  void setStatus(SideStatus s, std::string detail) {
     status = s;
     status_detail = std::move(detail);
   }
@@ -120,7 +121,7 @@ struct Results {
   std::string case_name;
   std::string backend;  // "vulkan" or "model"
   std::string device;   // Vulkan device name, or "embree-<tier>"
-  RunStatus status = RunStatus::Ok;
+  SideStatus status = SideStatus::Ok;
   std::string status_detail;  // why, when status is not Ok
   uint32_t width = 0, height = 0;
   std::map<std::string, uint64_t> counters;

@@ -132,7 +132,7 @@ std::string writeResults(const Results& r, const std::string& dir_name,
   j["case"] = r.case_name;
   j["backend"] = r.backend;
   j["device"] = r.device;
-  j["status"] = runStatusName(r.status);
+  j["status"] = sideStatusName(r.status);
   j["status_detail"] = r.status_detail;
   j["case_file"] = r.case_file;
   j["case_hash"] = contentHashText(r.case_hash);
@@ -216,7 +216,7 @@ void readHeader(const json& j, FieldReader& field, Results& r) {
                              "' is no case name: " + problem);
   r.backend = field(j, "backend");
   r.device = field(j, "device");
-  if (!parseRunStatus(field(j, "status").get<std::string>(), &r.status))
+  if (!parseSideStatus(field(j, "status").get<std::string>(), &r.status))
     throw std::runtime_error("status: unknown value '" + field(j, "status").get<std::string>() +
                              "'");
   r.status_detail = j.value("status_detail", std::string());

@@ -16,31 +16,31 @@ bool parseByName(const std::string& name, E* out, const E (&all)[N], const char*
 
 }  // namespace
 
-const char* runStatusName(RunStatus s) {
+const char* sideStatusName(SideStatus s) {
   switch (s) {
-    case RunStatus::Ok:
+    case SideStatus::Ok:
       return "ok";
-    case RunStatus::NotSupported:
+    case SideStatus::NotSupported:
       return "NotSupported";
-    case RunStatus::Crash:
+    case SideStatus::Crash:
       return "Crash";
-    case RunStatus::Timeout:
+    case SideStatus::Timeout:
       return "Timeout";
-    case RunStatus::Refused:
+    case SideStatus::Refused:
       return "Refused";
   }
   return "Crash";
 }
 
-bool parseRunStatus(const std::string& name, RunStatus* out) {
-  static const RunStatus all[] = {RunStatus::Ok, RunStatus::NotSupported, RunStatus::Crash,
-                                  RunStatus::Timeout, RunStatus::Refused};
-  return parseByName(name, out, all, runStatusName);
+bool parseSideStatus(const std::string& name, SideStatus* out) {
+  static const SideStatus all[] = {SideStatus::Ok, SideStatus::NotSupported, SideStatus::Crash,
+                                   SideStatus::Timeout, SideStatus::Refused};
+  return parseByName(name, out, all, sideStatusName);
 }
 
 std::string Results::statusText() const {
-  if (status == RunStatus::Ok) return "ok";
-  return std::string(runStatusName(status)) + ": " + status_detail;
+  if (status == SideStatus::Ok) return "ok";
+  return std::string(sideStatusName(status)) + ": " + status_detail;
 }
 
 const char* ambiguityReasonName(AmbiguityReason r) {

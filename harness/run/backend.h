@@ -1,6 +1,6 @@
 // One side of a case: something that runs a parsed case and returns Results.
 // Two implementations, thin adapters over the real engines: VulkanAdapter
-// (vulkan/vulkan_backend.h) and ModelAdapter (model/model_backend.h). The
+// (vulkan/vulkan_engine.h) and ModelAdapter (model/model_engine.h). The
 // run loop and the isolation in a child process see only this interface.
 #pragma once
 

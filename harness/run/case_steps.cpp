@@ -111,7 +111,7 @@ void writeRecordsCsvFiles(const std::string& dir, const Results& device, const R
 }
 
 bool ended(const Results& r) {
-  return r.status == RunStatus::Crash || r.status == RunStatus::Timeout;
+  return r.status == SideStatus::Crash || r.status == SideStatus::Timeout;
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "run/child_process.h"
-#include "vulkan/vulkan_backend.h"
+#include "vulkan/vulkan_engine.h"
 
 namespace rayspec {
 

@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "model/model_backend.h"
+#include "model/model_engine.h"
 #include "results/content_hash.h"
 #include "results/results_io.h"
 #include "run/isolation.h"
@@ -25,8 +25,8 @@ Results SavedDevice::run(const Case& c, const Plan&) {
     Results r;
     r.backend = name();
     r.case_name = c.name;
-    r.setStatus(RunStatus::NotSupported, "no saved device results in " + bundle +
-                                             ": the case did not run there, nothing was compared");
+    r.setStatus(SideStatus::NotSupported, "no saved device results in " + bundle +
+                                              ": the case did not run there, nothing was compared");
     return r;
   }
   std::string error;

@@ -8,7 +8,7 @@
 
 #include "run/child_process.h"
 #include "vulkan/icd_manifest.h"
-#include "vulkan/vulkan_backend.h"
+#include "vulkan/vulkan_engine.h"
 
 namespace rayspec {
 

@@ -28,7 +28,7 @@ Results runSide(const Side& side, Backend& backend, const Case& c, const Plan& p
   return r;
 }
 
-Results failed(const std::string& backend_name, const Case& c, RunStatus status,
+Results failed(const std::string& backend_name, const Case& c, SideStatus status,
                const std::string& detail, double seconds) {
   Results r;
   r.backend = backend_name;
@@ -44,8 +44,9 @@ Results failed(const std::string& backend_name, const Case& c, RunStatus status,
 // Timeout), in place of whatever the child had half written: a saved run
 // judged elsewhere (--device-results) then shows the crash. Best effort: the
 // case is that Crash or Timeout whether or not the bundle could be written.
-SideResult ended(const std::string& backend_name, const Case& c, const Plan& plan, RunStatus status,
-                 const std::string& detail, double seconds, const std::string& dir) {
+SideResult ended(const std::string& backend_name, const Case& c, const Plan& plan,
+                 SideStatus status, const std::string& detail, double seconds,
+                 const std::string& dir) {
   SideResult out;
   out.results = failed(backend_name, c, status, detail, seconds);
   std::error_code ec;
@@ -65,21 +66,21 @@ SideResult collect(const std::string& label, const std::string& backend_name, co
   switch (end.how) {
     case ChildEnd::How::Interrupted:
       out.interrupted = true;
-      out.results = failed(backend_name, c, RunStatus::Crash, describeChildEnd(end, who, limits),
+      out.results = failed(backend_name, c, SideStatus::Crash, describeChildEnd(end, who, limits),
                            end.seconds);
       return out;
     case ChildEnd::How::TimedOut:
-      return ended(backend_name, c, plan, RunStatus::Timeout, describeChildEnd(end, who, limits),
+      return ended(backend_name, c, plan, SideStatus::Timeout, describeChildEnd(end, who, limits),
                    end.seconds, dir);
     case ChildEnd::How::Signaled:
-      return ended(backend_name, c, plan, RunStatus::Crash, describeChildEnd(end, who, limits),
+      return ended(backend_name, c, plan, SideStatus::Crash, describeChildEnd(end, who, limits),
                    end.seconds, dir);
     case ChildEnd::How::NotStarted:
       throw HarnessError(describeChildEnd(end, who, limits));
     case ChildEnd::How::Exited:
       if (end.code == kChildException) throw HarnessError(label + " side: " + end.message);
       if (end.code != 0)
-        return ended(backend_name, c, plan, RunStatus::Crash, describeChildEnd(end, who, limits),
+        return ended(backend_name, c, plan, SideStatus::Crash, describeChildEnd(end, who, limits),
                      end.seconds, dir);
   }
   std::string error;

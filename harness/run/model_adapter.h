@@ -1,7 +1,7 @@
 // The Embree reference model as a Backend.
 #pragma once
 
-#include "model/model_backend.h"
+#include "model/model_engine.h"
 #include "run/backend.h"
 
 namespace rayspec {

@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "fault/planted_fault.h"
-#include "model/model_backend.h"
+#include "model/model_engine.h"
 
 namespace rayspec {
 

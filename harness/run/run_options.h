@@ -49,7 +49,7 @@ struct RunOptions {
       kDefaultMemoryLimit;    // bytes of memory per child (RLIMIT_DATA); 0: no limit
   bool no_isolation = false;  // run both sides in this process (one VkDevice for all cases)
   unsigned jobs = 0;  // cases at once, each side in long-lived worker processes; 0: one per core
-  std::string device_per_case = "auto";  // yes, no, auto (vulkan/vulkan_backend.h devicePerCase)
+  std::string device_per_case = "auto";  // yes, no, auto (vulkan/vulkan_engine.h devicePerCase)
   bool process_per_case =
       false;  // each side of each case in a process of its own (no workers; the slowest way)
   std::vector<std::string> process_per_case_for;  // globs: only these cases so, the rest in workers

@@ -12,7 +12,7 @@ VulkanOptions vulkanOptions(const RunOptions& opt) {
 }
 
 VulkanAdapter::VulkanAdapter(const VulkanOptions& options) {
-  backend_ = VulkanBackend::create(options, &error_);
+  backend_ = VulkanEngine::create(options, &error_);
 }
 
 std::string VulkanAdapter::description() const {
@@ -25,7 +25,7 @@ Results VulkanAdapter::run(const Case& c, const Plan& plan) {
   Results r;
   r.backend = name();
   r.case_name = c.name;
-  r.setStatus(RunStatus::NotSupported, error_);
+  r.setStatus(SideStatus::NotSupported, error_);
   return r;
 }
 

@@ -5,7 +5,7 @@
 
 #include "run/backend.h"
 #include "run/run_options.h"
-#include "vulkan/vulkan_backend.h"
+#include "vulkan/vulkan_engine.h"
 
 namespace rayspec {
 
@@ -32,7 +32,7 @@ class VulkanAdapter : public Backend {
   }
 
  private:
-  std::unique_ptr<VulkanBackend> backend_;
+  std::unique_ptr<VulkanEngine> backend_;
   std::string error_;
 };
 

@@ -8,7 +8,7 @@
 
 #include "vulkan/debug_messenger.h"
 #include "vulkan/device_functions.h"
-#include "vulkan/vulkan_backend.h"
+#include "vulkan/vulkan_engine.h"
 
 namespace rayspec {
 

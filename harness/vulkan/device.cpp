@@ -1,5 +1,5 @@
 // Logical device: one compute-capable queue, the ray tracing extensions and
-// the features listed in vulkan_backend.h.
+// the features listed in vulkan_engine.h.
 #include <vector>
 
 #include "vulkan/context.h"

@@ -24,19 +24,19 @@ DeviceErrorStatus classifyVulkanError(const VulkanError& e) {
   const std::string call = e.call.empty() ? std::string("a Vulkan call") : e.call;
   const std::string result = vkResultName(e.result);
   if (e.result == VK_ERROR_DEVICE_LOST) {
-    s.status = RunStatus::Crash;
+    s.status = SideStatus::Crash;
     s.device_lost = true;
     s.detail = "device lost: " + call + " returned " + result + "; the next case gets a new device";
   } else if (e.result == VK_ERROR_OUT_OF_DEVICE_MEMORY || e.result == VK_ERROR_OUT_OF_HOST_MEMORY) {
-    s.status = RunStatus::NotSupported;
+    s.status = SideStatus::NotSupported;
     s.detail =
         "out of memory: " + call + " returned " + result + "; the device cannot hold this case";
   } else if (e.call == "vkCreateRayTracingPipelinesKHR") {
-    s.status = RunStatus::Refused;
+    s.status = SideStatus::Refused;
     s.detail = "the driver refused the pipeline: " + call + " returned " + result +
                " for a pipeline the validation layer accepted";
   } else {
-    s.status = RunStatus::Crash;
+    s.status = SideStatus::Crash;
     s.detail = e.what();
   }
   return s;

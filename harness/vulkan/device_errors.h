@@ -19,7 +19,7 @@
 namespace rayspec {
 
 struct DeviceErrorStatus {
-  RunStatus status = RunStatus::Crash;
+  SideStatus status = SideStatus::Crash;
   std::string detail;
   bool device_lost = false;  // the VkDevice must be made again before the next case
 };

@@ -4,7 +4,7 @@
 // accelerationStructure feature.
 #pragma once
 
-#include "vulkan/vulkan_backend.h"
+#include "vulkan/vulkan_engine.h"
 
 namespace rayspec {
 

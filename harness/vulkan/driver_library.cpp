@@ -47,7 +47,7 @@ std::string libraryWithoutLayers(uint32_t index) {
 
 }  // namespace
 
-std::string VulkanBackend::driverLibrary() const {
+std::string VulkanEngine::driverLibrary() const {
   if (!ctx_->device) return {};
   return ctx_->validation ? libraryWithoutLayers(ctx_->info.index) : libraryOf(ctx_->device);
 }

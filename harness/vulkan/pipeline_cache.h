@@ -6,7 +6,7 @@
 // like any other: over 256 MiB, or with a header that is not this device's
 // (vendor, device, pipelineCacheUUID), it is not given to the driver. Not
 // used where each case gets a device of its own (lavapipe: Mesa's shader
-// cache already keeps its pipelines, vulkan_backend.h devicePerCase).
+// cache already keeps its pipelines, vulkan_engine.h devicePerCase).
 #pragma once
 
 #include <vulkan/vulkan.h>

@@ -14,7 +14,7 @@ namespace rayspec {
 void checkCaseSupport(const VulkanContext& ctx, const Case& c);
 
 // Fills r's outputs; throws ShaderCompileError, NotSupportedError or
-// VulkanError (VulkanBackend::run turns them into the status). Every object
+// VulkanError (VulkanEngine::run turns them into the status). Every object
 // it creates is destroyed before it returns or throws.
 void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results& r);
 

@@ -1,4 +1,4 @@
-#include "model/model_backend.h"
+#include "model/model_engine.h"
 
 #include <algorithm>
 #include <atomic>
@@ -242,7 +242,7 @@ void gatherMachines(const std::vector<std::unique_ptr<Machine>>& machines, const
     r.ambiguous.insert(r.ambiguous.end(), m->ambiguous.begin(), m->ambiguous.end());
     r.t_bounds.insert(r.t_bounds.end(), m->t_bounds.begin(), m->t_bounds.end());
     r.undefined.insert(r.undefined.end(), m->undefined.begin(), m->undefined.end());
-    if (!m->error.empty() && r.ok()) r.setStatus(RunStatus::Crash, m->error);
+    if (!m->error.empty() && r.ok()) r.setStatus(SideStatus::Crash, m->error);
   }
   std::sort(r.ambiguous.begin(), r.ambiguous.end(),
             [](const RayAmbiguity& a, const RayAmbiguity& b) { return a.ray < b.ray; });
@@ -279,9 +279,9 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
   Results r = emptyResults(c, plan, opt);
   const size_t n = static_cast<size_t>(c.rays.width) * c.rays.height;
   if (c.rays.rays.size() != n) {
-    r.setStatus(RunStatus::Crash, "the case has " + std::to_string(c.rays.rays.size()) +
-                                      " rays for a " + std::to_string(c.rays.width) + "x" +
-                                      std::to_string(c.rays.height) + " launch");
+    r.setStatus(SideStatus::Crash, "the case has " + std::to_string(c.rays.rays.size()) +
+                                       " rays for a " + std::to_string(c.rays.width) + "x" +
+                                       std::to_string(c.rays.height) + " launch");
     return r;
   }
   try {
@@ -311,7 +311,7 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
     threads = static_cast<unsigned>(std::min<size_t>(threads, std::max<size_t>(1, n / 64)));
     gatherMachines(traceInThreads(shared, n, threads, records, r, imageFields), plan, r);
   } catch (const std::exception& e) {
-    r.setStatus(RunStatus::Crash, std::string("model: ") + e.what());
+    r.setStatus(SideStatus::Crash, std::string("model: ") + e.what());
     r.records.clear();  // chunks no worker reached were never zeroed
     r.images.clear();
   }

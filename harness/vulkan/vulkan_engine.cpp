@@ -1,4 +1,4 @@
-#include "vulkan/vulkan_backend.h"
+#include "vulkan/vulkan_engine.h"
 
 #include <chrono>
 
@@ -11,15 +11,15 @@
 
 namespace rayspec {
 
-VulkanBackend::VulkanBackend() : ctx_(std::make_unique<VulkanContext>()) {}
+VulkanEngine::VulkanEngine() : ctx_(std::make_unique<VulkanContext>()) {}
 
-VulkanBackend::~VulkanBackend() {
+VulkanEngine::~VulkanEngine() {
   close();
 }
 
-std::unique_ptr<VulkanBackend> VulkanBackend::create(const VulkanOptions& options,
-                                                     std::string* error) {
-  std::unique_ptr<VulkanBackend> backend(new VulkanBackend());
+std::unique_ptr<VulkanEngine> VulkanEngine::create(const VulkanOptions& options,
+                                                   std::string* error) {
+  std::unique_ptr<VulkanEngine> backend(new VulkanEngine());
   VulkanContext& ctx = *backend->ctx_;
   try {
     createInstance(ctx, options.validation);
@@ -36,15 +36,15 @@ std::unique_ptr<VulkanBackend> VulkanBackend::create(const VulkanOptions& option
   return backend;
 }
 
-const DeviceInfo& VulkanBackend::device() const {
+const DeviceInfo& VulkanEngine::device() const {
   return ctx_->info;
 }
 
-bool VulkanBackend::validationEnabled() const {
+bool VulkanEngine::validationEnabled() const {
   return ctx_->validation;
 }
 
-Results VulkanBackend::run(const Case& c, const Plan& plan) {
+Results VulkanEngine::run(const Case& c, const Plan& plan) {
   auto start = std::chrono::steady_clock::now();
   Results r;
   r.case_name = c.name;
@@ -67,17 +67,17 @@ Results VulkanBackend::run(const Case& c, const Plan& plan) {
     }
     runCase(*ctx_, c, plan, r);
   } catch (const ShaderCompileError& e) {
-    r.setStatus(RunStatus::Crash, std::string("shader compile: ") + e.what());
+    r.setStatus(SideStatus::Crash, std::string("shader compile: ") + e.what());
   } catch (const NotSupportedError& e) {
-    r.setStatus(RunStatus::NotSupported, e.what());
+    r.setStatus(SideStatus::NotSupported, e.what());
   } catch (const VulkanError& e) {
     const DeviceErrorStatus s = classifyVulkanError(e);
     r.setStatus(s.status, s.detail);
     device_lost_ = device_lost_ || s.device_lost;
   } catch (const std::exception& e) {
-    r.setStatus(RunStatus::Crash, e.what());
+    r.setStatus(SideStatus::Crash, e.what());
   } catch (...) {
-    r.setStatus(RunStatus::Crash, "unknown exception");
+    r.setStatus(SideStatus::Crash, "unknown exception");
   }
   if (device_per_case_ && has_device_) {
     StepTimer teardown_time(r.cost, CostStep::BackendTeardown);
@@ -93,7 +93,7 @@ Results VulkanBackend::run(const Case& c, const Plan& plan) {
   return r;
 }
 
-void VulkanBackend::releaseDevice() {
+void VulkanEngine::releaseDevice() {
   if (ctx_->device) closePipelineCache(*ctx_, ctx_->pipeline_cache);
   ctx_->pipeline_cache = VK_NULL_HANDLE;
   destroyDevice(*ctx_);
@@ -104,7 +104,7 @@ bool devicePerCase(const std::string& driver_name) {
   return driver_name == "llvmpipe";
 }
 
-std::vector<std::string> VulkanBackend::close() {
+std::vector<std::string> VulkanEngine::close() {
   if (!ctx_) return {};
   ctx_->capture->take();
   if (has_device_) releaseDevice();

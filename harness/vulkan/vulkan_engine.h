@@ -66,12 +66,14 @@ std::vector<DeviceInfo> listDevices(std::string* error);
 
 struct VulkanContext;  // internal (vulkan/context.h)
 
-class VulkanBackend {
+// The Vulkan engine: one VkInstance and device that run cases. It is not a
+// Backend (run/backend.h); VulkanAdapter (run/) adapts it to one.
+class VulkanEngine {
  public:
   // nullptr (and *error set) when no instance, no matching ray tracing device,
   // or device creation failed.
-  static std::unique_ptr<VulkanBackend> create(const VulkanOptions& options, std::string* error);
-  ~VulkanBackend();
+  static std::unique_ptr<VulkanEngine> create(const VulkanOptions& options, std::string* error);
+  ~VulkanEngine();
 
   const DeviceInfo& device() const;
   bool validationEnabled() const;
@@ -91,7 +93,7 @@ class VulkanBackend {
   std::vector<std::string> close();
 
  private:
-  VulkanBackend();
+  VulkanEngine();
   void releaseDevice();  // saves the pipeline cache, destroys the device
   std::unique_ptr<VulkanContext> ctx_;
   bool device_lost_ = false;      // a case lost the device: the next run makes a new one
