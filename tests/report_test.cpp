@@ -318,22 +318,21 @@ TEST(RunSummary, CaseErrorsAreListedApartFromTheDevicesFailures) {
 }
 
 TEST(RuleCatalog, ErrorsNameFileLineAndWhatWasExpected) {
-  std::string error;
-  EXPECT_TRUE(
-      loadRuleCatalog(testing_support::testDir() + "/no-such-catalog.yaml", &error).empty());
-  EXPECT_NE(error.find("no such rule catalog"), std::string::npos) << error;
-  EXPECT_EQ(error.find("bad file"), std::string::npos) << error;
+  const auto missing = loadRuleCatalog(testing_support::testDir() + "/no-such-catalog.yaml");
+  ASSERT_FALSE(missing);
+  EXPECT_NE(missing.error().format().find("no such rule catalog"), std::string::npos);
+  EXPECT_EQ(missing.error().format().find("bad file"), std::string::npos);
   const std::string path = testing_support::testDir() + "/catalog-bad-title.yaml";
   std::ofstream(path) << "R-ONE: fine\nR-TWO: [not, a, title]\n";
-  error.clear();
-  loadRuleCatalog(path, &error);
+  const auto bad = loadRuleCatalog(path);
+  ASSERT_FALSE(bad);
+  const std::string error = bad.error().format();
   EXPECT_EQ(error.rfind(path + ":2:8: R-TWO: expected the rule's title", 0), 0u) << error;
   EXPECT_EQ(error.find("bad conversion"), std::string::npos) << error;
   std::ofstream(path) << "R-ONE: first\nR-TWO: second\n";
-  error.clear();
-  const std::vector<Rule> rules = loadRuleCatalog(path, &error);
-  EXPECT_EQ(error, "");
-  EXPECT_EQ(ruleLabels(rules), (std::vector<std::string>{"R-ONE", "R-TWO"}));
+  const auto rules = loadRuleCatalog(path);
+  ASSERT_TRUE(rules) << rules.error().format();
+  EXPECT_EQ(ruleLabels(*rules), (std::vector<std::string>{"R-ONE", "R-TWO"}));
 }
 
 }  // namespace

@@ -11,16 +11,15 @@ namespace rayspec {
 namespace {
 
 TEST(Shard, ParsesIOfNAndRefusesTheRest) {
-  std::string error;
-  const auto s = parseShard("2/4", &error);
+  const Result<Shard> s = parseShard("2/4");
   ASSERT_TRUE(s);
   EXPECT_EQ(s->index, 1u);
   EXPECT_EQ(s->count, 4u);
   EXPECT_EQ(s->describe(), "shard 2 of 4");
   for (const char* bad : {"0/4", "5/4", "2", "a/b", "2/0", "-1/3", ""}) {
-    error.clear();
-    EXPECT_FALSE(parseShard(bad, &error)) << bad;
-    EXPECT_NE(error.find("I/N"), std::string::npos) << bad;
+    const Result<Shard> r = parseShard(bad);
+    ASSERT_FALSE(r) << bad;
+    EXPECT_NE(r.error().message.find("I/N"), std::string::npos) << bad;
   }
 }
 
@@ -42,21 +41,21 @@ TEST(Shard, GoogleTestVariablesCountFromZeroAndTouchTheStatusFile) {
   setenv("GTEST_TOTAL_SHARDS", "3", 1);
   setenv("GTEST_SHARD_INDEX", "2", 1);
   setenv("GTEST_SHARD_STATUS_FILE", status.c_str(), 1);
-  std::string error;
-  const auto s = shardFromEnvironment(&error);
-  ASSERT_TRUE(s) << error;
-  EXPECT_EQ(s->index, 2u);
-  EXPECT_EQ(s->count, 3u);
+  const auto s = shardFromEnvironment();
+  ASSERT_TRUE(s && *s);
+  EXPECT_EQ((*s)->index, 2u);
+  EXPECT_EQ((*s)->count, 3u);
   EXPECT_TRUE(std::filesystem::exists(status));
   setenv("GTEST_SHARD_INDEX", "3", 1);
-  EXPECT_FALSE(shardFromEnvironment(&error));
-  EXPECT_NE(error.find("GTEST_SHARD_INDEX=3"), std::string::npos) << error;
+  const auto bad = shardFromEnvironment();
+  ASSERT_FALSE(bad);
+  EXPECT_NE(bad.error().message.find("GTEST_SHARD_INDEX=3"), std::string::npos);
   unsetenv("GTEST_TOTAL_SHARDS");
   unsetenv("GTEST_SHARD_INDEX");
   unsetenv("GTEST_SHARD_STATUS_FILE");
-  error.clear();
-  EXPECT_FALSE(shardFromEnvironment(&error));
-  EXPECT_EQ(error, "");
+  const auto none = shardFromEnvironment();
+  ASSERT_TRUE(none) << "no variables: no shard, and no error";
+  EXPECT_FALSE(*none);
 }
 
 // GitLab CI's parallel jobs: CI_NODE_INDEX counts from 1; GoogleTest's
@@ -64,20 +63,19 @@ TEST(Shard, GoogleTestVariablesCountFromZeroAndTouchTheStatusFile) {
 TEST(Shard, GitLabVariablesCountFromOne) {
   setenv("CI_NODE_TOTAL", "4", 1);
   setenv("CI_NODE_INDEX", "4", 1);
-  std::string error;
-  auto s = shardFromEnvironment(&error);
-  ASSERT_TRUE(s) << error;
-  EXPECT_EQ(s->index, 3u);
-  EXPECT_EQ(s->count, 4u);
+  auto s = shardFromEnvironment();
+  ASSERT_TRUE(s && *s);
+  EXPECT_EQ((*s)->index, 3u);
+  EXPECT_EQ((*s)->count, 4u);
   setenv("CI_NODE_INDEX", "0", 1);
-  EXPECT_FALSE(shardFromEnvironment(&error));
-  EXPECT_NE(error.find("CI_NODE_INDEX=0"), std::string::npos) << error;
-  error.clear();
+  const auto bad = shardFromEnvironment();
+  ASSERT_FALSE(bad);
+  EXPECT_NE(bad.error().message.find("CI_NODE_INDEX=0"), std::string::npos);
   setenv("GTEST_TOTAL_SHARDS", "2", 1);
   setenv("GTEST_SHARD_INDEX", "0", 1);
-  s = shardFromEnvironment(&error);
-  ASSERT_TRUE(s) << error;
-  EXPECT_EQ(s->count, 2u);
+  s = shardFromEnvironment();
+  ASSERT_TRUE(s && *s);
+  EXPECT_EQ((*s)->count, 2u);
   for (const char* v :
        {"CI_NODE_TOTAL", "CI_NODE_INDEX", "GTEST_TOTAL_SHARDS", "GTEST_SHARD_INDEX"})
     unsetenv(v);

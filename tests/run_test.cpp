@@ -319,11 +319,9 @@ TEST(CaseSteps, CaseFileThatDoesNotParseIsACaseError) {
 }
 
 TEST(CaseSteps, UnknownRuleLabelIsACaseError) {
-  std::string error;
-  const std::vector<Rule> catalog =
-      loadRuleCatalog(RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml", &error);
-  ASSERT_EQ(error, "");
-  const std::vector<std::string> labels = ruleLabels(catalog);
+  const auto catalog = loadRuleCatalog(RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml");
+  ASSERT_TRUE(catalog) << catalog.error().format();
+  const std::vector<std::string> labels = ruleLabels(*catalog);
   const std::string path = kCases + "/results/miss-xor-closest-hit.yaml";
   EXPECT_FALSE(
       caseFileError({path, "results/miss-xor-closest-hit"}, parseCaseFile(path, kCases, &labels)))

@@ -120,8 +120,8 @@ int runCompare(const CompareOptions& opt) {
   std::strftime(text, sizeof text, "%Y-%m-%d %H:%M:%S UTC", std::gmtime(&t));
   info.started = text;
   info.model_tier = "reference " + opt.b;
-  std::string catalog_error;
-  info.catalog = loadRuleCatalog(opt.rules_file, &catalog_error);
+  if (Result<std::vector<Rule>> catalog = loadRuleCatalog(opt.rules_file))
+    info.catalog = std::move(*catalog);  // without one, the report lists no rule coverage
   std::printf("Comparing %s against %s\n", opt.a.c_str(), opt.b.c_str());
   RunSummary summary(pairs.size());
   std::vector<std::pair<std::string, std::vector<std::string>>> case_rules;

@@ -10,12 +10,12 @@
 namespace rayspec {
 
 int runList(const ListOptions& opt) {
-  std::string catalog_error;
-  const std::vector<Rule> catalog = loadRuleCatalog(opt.rules_file, &catalog_error);
-  if (!catalog_error.empty()) {
-    std::fprintf(stderr, "rayspec list: %s\n", catalog_error.c_str());
+  const Result<std::vector<Rule>> loaded = loadRuleCatalog(opt.rules_file);
+  if (!loaded) {
+    std::fprintf(stderr, "rayspec list: %s\n", loaded.error().format().c_str());
     return 2;
   }
+  const std::vector<Rule>& catalog = *loaded;
   const std::vector<CaseFile> files = findCases(opt.cases_dir, opt.filter);
   if (files.empty()) {
     std::fprintf(stderr, "rayspec list: no case matches '%s' in %s\n", opt.filter.c_str(),

@@ -15,9 +15,10 @@ int runMerge(const MergeOptions& opt) {
     std::fprintf(stderr, "rayspec merge: %s\n", error.c_str());
     return kExitSetup;
   }
-  const std::vector<Rule> catalog = loadRuleCatalog(opt.rules_file, &error);
-  if (!error.empty()) std::fprintf(stderr, "rayspec merge: %s\n", error.c_str());
-  const MergeResult merged = mergeRuns(opt.dirs, opt.out, baseline, catalog);
+  Result<std::vector<Rule>> catalog = loadRuleCatalog(opt.rules_file);
+  if (!catalog) std::fprintf(stderr, "rayspec merge: %s\n", catalog.error().format().c_str());
+  const MergeResult merged =
+      mergeRuns(opt.dirs, opt.out, baseline, catalog ? *catalog : std::vector<Rule>{});
   if (!merged.error.empty()) {
     std::fprintf(stderr, "rayspec merge: %s\n", merged.error.c_str());
     return kExitSetup;

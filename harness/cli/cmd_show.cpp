@@ -65,11 +65,13 @@ int runShow(const ShowOptions& opt) {
     return 2;
   }
   // Rule labels outside the catalog are errors, as in `rayspec run`.
-  std::string catalog_error;
-  const std::vector<std::string> catalog = ruleLabels(loadRuleCatalog(kRulesFile, &catalog_error));
-  if (!catalog_error.empty())
-    std::fprintf(stderr, "rayspec show: %s (rule labels not checked)\n", catalog_error.c_str());
-  ParseResult parsed = loadCase(*file, opt.cases_dir, catalog_error.empty() ? &catalog : nullptr);
+  const Result<std::vector<Rule>> loaded = loadRuleCatalog(kRulesFile);
+  if (!loaded)
+    std::fprintf(stderr, "rayspec show: %s (rule labels not checked)\n",
+                 loaded.error().format().c_str());
+  const std::vector<std::string> catalog =
+      loaded ? ruleLabels(*loaded) : std::vector<std::string>{};
+  ParseResult parsed = loadCase(*file, opt.cases_dir, loaded ? &catalog : nullptr);
   for (const Error& e : parsed.errors) std::fprintf(stderr, "%s\n", e.format().c_str());
   if (!parsed.value) return 1;
   const Case& c = *parsed.value;

@@ -8,41 +8,40 @@
 
 namespace rayspec {
 
-std::vector<Rule> loadRuleCatalog(const std::string& path, std::string* error) {
-  std::vector<Rule> rules;
+namespace {
+
+// An error at a place in the catalog (line and column from yaml-cpp's mark).
+Error catalogError(const std::string& path, const YAML::Mark& m, const std::string& field,
+                   std::string message) {
+  return Error{SourceLoc{path, m.line + 1, m.column + 1, field}, std::move(message)};
+}
+
+}  // namespace
+
+Result<std::vector<Rule>> loadRuleCatalog(const std::string& path) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    *error = path + ": no such rule catalog (expected a file of `R-LABEL: title` lines)";
-    return rules;
-  }
+  if (!std::filesystem::is_regular_file(path, ec))
+    return errorMessage(path +
+                        ": no such rule catalog (expected a file of `R-LABEL: title` lines)");
   std::ifstream in(path);
   std::stringstream text;
   text << in.rdbuf();
-  auto at = [&](const YAML::Mark& m, const std::string& field) {
-    return path + ":" + std::to_string(m.line + 1) + ":" + std::to_string(m.column + 1) + ": " +
-           (field.empty() ? "" : field + ": ");
-  };
   YAML::Node root;
   try {
     root = YAML::Load(text.str());
   } catch (const YAML::Exception& e) {
-    *error = at(e.mark, "") + "malformed YAML: " + e.msg;
-    return {};
+    return catalogError(path, e.mark, "", "malformed YAML: " + e.msg);
   }
-  if (!root.IsMap()) {
-    *error = path + ":1:1: expected a map of `R-LABEL: title` lines";
-    return {};
-  }
+  if (!root.IsMap())
+    return Error{SourceLoc{path, 1, 1, ""}, "expected a map of `R-LABEL: title` lines"};
+  std::vector<Rule> rules;
   for (auto it = root.begin(); it != root.end(); ++it) {
-    if (!it->first.IsScalar()) {
-      *error = at(it->first.Mark(), "") + "expected a rule label (R-NAME) as the key";
-      return {};
-    }
+    if (!it->first.IsScalar())
+      return catalogError(path, it->first.Mark(), "", "expected a rule label (R-NAME) as the key");
     const std::string label = it->first.Scalar();
-    if (!it->second.IsScalar()) {
-      *error = at(it->second.Mark(), label) + "expected the rule's title (one line of text)";
-      return {};
-    }
+    if (!it->second.IsScalar())
+      return catalogError(path, it->second.Mark(), label,
+                          "expected the rule's title (one line of text)");
     rules.push_back({label, it->second.Scalar()});
   }
   return rules;

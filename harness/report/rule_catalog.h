@@ -7,15 +7,17 @@
 #include <string>
 #include <vector>
 
+#include "base/result.h"
+
 namespace rayspec {
 
 struct Rule {
   std::string label, title;
 };
 
-// Reads the catalog; error set when the file is missing or malformed
-// ("FILE:LINE:COL: LABEL: what was expected").
-std::vector<Rule> loadRuleCatalog(const std::string& path, std::string* error);
+// Reads the catalog, or the error that says why not: the file is missing, or
+// malformed at FILE:LINE:COL (with the rule's label where known).
+Result<std::vector<Rule>> loadRuleCatalog(const std::string& path);
 
 // The labels of the catalog, for the case parser (case/parse_case.h), which
 // reports a label outside it at its line:col.

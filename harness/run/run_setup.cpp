@@ -50,9 +50,11 @@ std::vector<CaseFile> caseFiles(const RunOptions& opt) {
 }
 
 // The shard asked for (--shard, else GoogleTest's variables), if any.
-std::optional<Shard> chosenShard(const RunOptions& opt, std::string* error) {
-  if (!opt.shard.empty()) return parseShard(opt.shard, error);
-  return shardFromEnvironment(error);
+Result<std::optional<Shard>> chosenShard(const RunOptions& opt) {
+  if (opt.shard.empty()) return shardFromEnvironment();
+  Result<Shard> s = parseShard(opt.shard);
+  if (!s) return s.error();
+  return std::optional<Shard>(*s);
 }
 
 // --resume: what the run folder already holds must come from the same kind
@@ -138,9 +140,9 @@ Result<std::vector<CaseFile>> selectedCaseFiles(const RunOptions& opt) {
 }
 
 Result<std::vector<CaseFile>> thisShard(const RunOptions& opt, std::vector<CaseFile> files) {
-  std::string shard_error;
-  const std::optional<Shard> shard = chosenShard(opt, &shard_error);
-  if (!shard_error.empty()) return errorMessage(shard_error);
+  const Result<std::optional<Shard>> chosen = chosenShard(opt);
+  if (!chosen) return chosen.error();
+  const std::optional<Shard>& shard = *chosen;
   if (!shard) return files;
   const size_t all = files.size();
   std::vector<CaseFile> mine;
@@ -158,9 +160,10 @@ RunInfo startRunInfo(const RunOptions& opt, size_t planned_cases) {
   info.model_tier = opt.no_model ? "none" : opt.model_tier;
   info.planned_cases = planned_cases;
   info.interrupted = true;  // until the last case is done: a run killed before then stays marked
-  std::string catalog_error;
-  info.catalog = loadRuleCatalog(opt.rules_file, &catalog_error);
-  if (!catalog_error.empty()) std::fprintf(stderr, "rayspec run: %s\n", catalog_error.c_str());
+  if (Result<std::vector<Rule>> catalog = loadRuleCatalog(opt.rules_file))
+    info.catalog = std::move(*catalog);
+  else
+    std::fprintf(stderr, "rayspec run: %s\n", catalog.error().format().c_str());
   if (!opt.plant_fault.empty())
     std::printf("Planted fault: %s (test only)\n", opt.plant_fault.c_str());
   return info;

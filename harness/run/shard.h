@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "base/result.h"
+
 namespace rayspec {
 
 struct Shard {
@@ -20,13 +22,13 @@ struct Shard {
   std::string describe() const;  // "shard 2 of 4"
 };
 
-// "I/N" with 1 <= I <= N; nullopt and *error when it is not.
-std::optional<Shard> parseShard(const std::string& text, std::string* error);
+// "I/N" with 1 <= I <= N, or the error that says it is not.
+Result<Shard> parseShard(const std::string& text);
 
 // GoogleTest's sharding variables, when both are set, else GitLab CI's;
-// *error when they are malformed. Touches GTEST_SHARD_STATUS_FILE when it is
-// set.
-std::optional<Shard> shardFromEnvironment(std::string* error);
+// nullopt when neither pair is set, an error when they are malformed.
+// Touches GTEST_SHARD_STATUS_FILE when it is set.
+Result<std::optional<Shard>> shardFromEnvironment();
 
 // The positions (into a list of `total` items) that belong to the shard.
 std::vector<size_t> shardPositions(size_t total, const Shard& shard);
