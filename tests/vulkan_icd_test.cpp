@@ -73,10 +73,8 @@ std::string lavapipeManifest() {
 
 TEST(IcdManifest, ReadsLibraryAndVersion) {
   const std::string dir = tempDir("read");
-  std::string error;
-  const std::optional<IcdManifest> m =
-      readIcdManifest(write(dir + "/a.json", manifestText("libfoo.so")), &error);
-  ASSERT_TRUE(m) << error;
+  const Result<IcdManifest> m = readIcdManifest(write(dir + "/a.json", manifestText("libfoo.so")));
+  ASSERT_TRUE(m) << m.error().format();
   EXPECT_EQ(m->library_path, "libfoo.so");
   EXPECT_EQ(m->api_version, "1.3.0");
   EXPECT_EQ(m->path, dir + "/a.json");
@@ -92,8 +90,9 @@ TEST(IcdManifest, BadFilesAreErrorsNamingTheFile) {
       {dir, "a folder"},
   };
   for (const auto& [path, why] : bad) {
-    std::string error;
-    EXPECT_FALSE(readIcdManifest(path, &error)) << path;
+    const Result<IcdManifest> m = readIcdManifest(path);
+    ASSERT_FALSE(m) << path;
+    const std::string error = m.error().format();
     EXPECT_NE(error.find(path), std::string::npos) << error;
     EXPECT_NE(error.find(why), std::string::npos) << error;
   }
@@ -166,8 +165,7 @@ TEST(IcdManifest, LoadFailureSaysWhy) {
   EXPECT_NE(icdLoadFailure(not_vulkan).find("vk_icdGetInstanceProcAddr"), std::string::npos);
   const std::string lvp = lavapipeManifest();
   ASSERT_FALSE(lvp.empty()) << "lavapipe's manifest is not installed";
-  std::string error;
-  EXPECT_EQ(icdLoadFailure(*readIcdManifest(lvp, &error)), "");
+  EXPECT_EQ(icdLoadFailure(*readIcdManifest(lvp)), "");
 }
 
 TEST(IcdEnvironment, SetsBothVariablesAndSaysWhatItOverrides) {
@@ -226,7 +224,7 @@ TEST(DriverLibrary, LavapipeDeviceComesFromItsManifest) {
   const std::string lvp = lavapipeManifest();
   ASSERT_FALSE(lvp.empty());
   std::string error;
-  const IcdManifest m = *readIcdManifest(lvp, &error);
+  const IcdManifest m = *readIcdManifest(lvp);
   for (bool validation : {false, true}) {
     std::unique_ptr<VulkanEngine> b = VulkanEngine::create({"llvmpipe", validation}, &error);
     ASSERT_TRUE(b) << error;

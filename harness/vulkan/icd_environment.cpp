@@ -11,8 +11,11 @@ IcdSelection useIcdFiles(const std::vector<std::string>& files) {
   IcdSelection s;
   std::string list;
   for (const std::string& f : files) {
-    std::optional<IcdManifest> m = readIcdManifest(f, &s.error);
-    if (!m) return s;
+    Result<IcdManifest> m = readIcdManifest(f);
+    if (!m) {
+      s.error = m.error().format();
+      return s;
+    }
     s.files.push_back(m->path);
     list += (list.empty() ? "" : ":") + m->path;
   }

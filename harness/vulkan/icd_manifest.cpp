@@ -67,20 +67,18 @@ void addEntry(const std::string& entry, bool from_folder_search, IcdSearch& sear
   for (const std::string& f : files) {
     const std::string key = fs::weakly_canonical(f, ec).string();
     if (!seen.insert(key.empty() ? f : key).second) continue;
-    std::string error;
-    if (std::optional<IcdManifest> m = readIcdManifest(f, &error))
+    if (Result<IcdManifest> m = readIcdManifest(f))
       search.manifests.push_back(*m);
     else
-      search.errors.push_back(error);
+      search.errors.push_back(m.error().format());
   }
 }
 
 }  // namespace
 
-std::optional<IcdManifest> readIcdManifest(const std::string& path, std::string* error) {
+Result<IcdManifest> readIcdManifest(const std::string& path) {
   auto fail = [&](const std::string& why) {
-    if (error) *error = "ICD manifest " + path + ": " + why;
-    return std::nullopt;
+    return errorMessage("ICD manifest " + path + ": " + why);
   };
   std::error_code ec;
   if (!fs::exists(path, ec)) return fail("no such file");

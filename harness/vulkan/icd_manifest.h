@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "base/result.h"
+
 namespace rayspec {
 
 struct IcdManifest {
@@ -17,9 +19,9 @@ struct IcdManifest {
   std::string api_version;   // ICD.api_version ("" when absent)
 };
 
-// Reads one manifest; nullopt with *error naming the file and what is wrong
+// Reads one manifest, or the error naming the file and what is wrong
 // (missing, unreadable, not JSON, no ICD.library_path).
-std::optional<IcdManifest> readIcdManifest(const std::string& path, std::string* error);
+Result<IcdManifest> readIcdManifest(const std::string& path);
 
 // Where the manifests were found and what was wrong with some of them.
 enum class IcdSource { DriverFilesVariable, IcdFilenamesVariable, StandardFolders };
