@@ -84,10 +84,9 @@ void resultsBundle(const std::string& text) {
 
 void summaryFile(const std::string& text) {
   write(workDir() / "summary.json", text);
-  std::string error;
-  const rayspec::SavedRun run = rayspec::readSavedRun(workDir().string(), &error);
-  if (!error.empty()) return;
-  for (const rayspec::CaseOutcome& o : run.outcomes)
+  const rayspec::Result<rayspec::SavedRun> run = rayspec::readSavedRun(workDir().string());
+  if (!run) return;
+  for (const rayspec::CaseOutcome& o : run->outcomes)
     require(rayspec::caseNameProblem(o.name).empty());
 }
 

@@ -194,10 +194,9 @@ TEST(MergeRuns, ShardsJoinIntoOneRun) {
   EXPECT_EQ(m.run.outcomes[3].name, "fam/d");
   EXPECT_EQ(m.run.info.planned_cases, 4u);
   EXPECT_TRUE(std::filesystem::exists(out + "/fam/d/device/results.json"));
-  std::string error;
-  const SavedRun back = readSavedRun(out, &error);
-  ASSERT_EQ(error, "");
-  EXPECT_EQ(back.outcomes.size(), 4u);
+  const Result<SavedRun> back = readSavedRun(out);
+  ASSERT_TRUE(back) << back.error().format();
+  EXPECT_EQ(back->outcomes.size(), 4u);
   EXPECT_NE(slurp(out + "/failures.csv").find("fam/d,Fail"), std::string::npos);
 }
 

@@ -35,11 +35,10 @@ TEST(Journal, LastLineOfACaseWinsAndACutLineIsLeftOut) {
   ASSERT_EQ(appendJournal(outcome("f/b", Status::Pass), dir), "");
   ASSERT_EQ(appendJournal(outcome("f/a", Status::Pass), dir), "");  // a resumed run judged it again
   std::ofstream(dir + "/" + kJournalFile, std::ios::app) << R"({"name": "f/c", "sta)";
-  bool found = false;
-  std::string error;
-  const std::vector<CaseOutcome> read = readJournal(dir, &found, &error);
-  EXPECT_TRUE(found);
-  EXPECT_EQ(error, "");
+  const auto journal = readJournal(dir);
+  ASSERT_TRUE(journal) << journal.error().format();
+  ASSERT_TRUE(*journal) << "the journal is there";
+  const std::vector<CaseOutcome>& read = **journal;
   ASSERT_EQ(read.size(), 2u);
   EXPECT_EQ(read[0].name, "f/a");
   EXPECT_EQ(read[0].status, Status::Pass);
@@ -51,10 +50,11 @@ TEST(Journal, ABadLineInTheMiddleIsAnErrorNamingIt) {
   ASSERT_EQ(appendJournal(outcome("f/a", Status::Pass), dir), "");
   std::ofstream(dir + "/" + kJournalFile, std::ios::app) << "[1, 2]\n";
   ASSERT_EQ(appendJournal(outcome("f/b", Status::Pass), dir), "");
-  bool found = false;
-  std::string error;
-  EXPECT_TRUE(readJournal(dir, &found, &error).empty());
+  const auto journal = readJournal(dir);
+  ASSERT_FALSE(journal);
+  const std::string error = journal.error().format();
   EXPECT_NE(error.find(std::string(kJournalFile) + ":2:"), std::string::npos) << error;
+  EXPECT_FALSE(*readJournal(freshDir("none"))) << "no journal: nothing, and no error";
 }
 
 // summary.json written at the start (no case, interrupted) and a journal of
@@ -69,15 +69,14 @@ TEST(Journal, AnInterruptedRunIsReadFromItsJournal) {
   ASSERT_EQ(writeReports({}, info, dir), "");
   ASSERT_EQ(startJournal(dir), "");
   ASSERT_EQ(appendJournal(outcome("f/a", Status::Pass), dir), "");
-  std::string error;
-  const SavedRun saved = readSavedRun(dir, &error);
-  EXPECT_EQ(error, "");
-  ASSERT_EQ(saved.outcomes.size(), 1u);
-  EXPECT_EQ(saved.outcomes[0].name, "f/a");
+  const Result<SavedRun> saved = readSavedRun(dir);
+  ASSERT_TRUE(saved) << saved.error().format();
+  ASSERT_EQ(saved->outcomes.size(), 1u);
+  EXPECT_EQ(saved->outcomes[0].name, "f/a");
   // A finished run is its summary.json, whatever its journal holds.
   info.interrupted = false;
   ASSERT_EQ(writeReports({}, info, dir), "");
-  EXPECT_TRUE(readSavedRun(dir, &error).outcomes.empty());
+  EXPECT_TRUE(readSavedRun(dir)->outcomes.empty());
 }
 
 }  // namespace

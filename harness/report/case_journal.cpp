@@ -27,11 +27,10 @@ std::string appendJournal(const CaseOutcome& outcome, const std::string& dir) {
   return out ? std::string() : "cannot append to " + journalPath(dir);
 }
 
-std::vector<CaseOutcome> readJournal(const std::string& dir, bool* found, std::string* error) {
+Result<std::optional<std::vector<CaseOutcome>>> readJournal(const std::string& dir) {
   std::vector<CaseOutcome> out;
   std::ifstream in(journalPath(dir));
-  *found = static_cast<bool>(in);
-  if (!in) return out;
+  if (!in) return std::optional<std::vector<CaseOutcome>>();
   std::map<std::string, size_t> at;  // case name -> its place in out
   std::string line;
   for (size_t number = 1; std::getline(in, line); ++number) {
@@ -47,11 +46,10 @@ std::vector<CaseOutcome> readJournal(const std::string& dir, bool* found, std::s
       }
     } catch (const std::exception& e) {
       if (last) break;  // the line a kill cut short
-      *error = journalPath(dir) + ":" + std::to_string(number) + ": " + e.what();
-      return {};
+      return Error{SourceLoc{journalPath(dir), static_cast<int>(number), 1, ""}, e.what()};
     }
   }
-  return out;
+  return std::optional<std::vector<CaseOutcome>>(std::move(out));
 }
 
 }  // namespace rayspec

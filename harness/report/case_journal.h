@@ -5,6 +5,10 @@
 // from which `--resume` (and `rayspec merge`) take every case that ended.
 #pragma once
 
+#include <optional>
+
+#include "base/result.h"
+
 #include <string>
 #include <vector>
 
@@ -19,9 +23,10 @@ std::string startJournal(const std::string& dir);
 // Appends the outcome; the error ("" none). Throws what outcomeJson throws
 // (a case whose details JSON cannot hold).
 std::string appendJournal(const CaseOutcome& outcome, const std::string& dir);
-// The outcomes the journal holds, a case that ended twice (a resumed run)
-// by its last line; a last line cut short by a kill is left out. error: a
-// line that is not an outcome (names the file and line).
-std::vector<CaseOutcome> readJournal(const std::string& dir, bool* found, std::string* error);
+// The outcomes the journal holds (nullopt: `dir` has no journal), a case that
+// ended twice (a resumed run) by its last line; a last line cut short by a
+// kill is left out. The error: a line that is not an outcome (names the file
+// and line).
+Result<std::optional<std::vector<CaseOutcome>>> readJournal(const std::string& dir);
 
 }  // namespace rayspec

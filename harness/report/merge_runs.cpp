@@ -42,8 +42,12 @@ MergeResult mergeRuns(const std::vector<std::string>& dirs, const std::string& o
       m.error = "the output folder " + out + " is one of the folders to merge";
       return m;
     }
-    SavedRun run = readSavedRun(dir, &m.error);
-    if (!m.error.empty()) return m;
+    Result<SavedRun> read = readSavedRun(dir);
+    if (!read) {
+      m.error = read.error().format();
+      return m;
+    }
+    SavedRun& run = *read;
     if (!runs.empty() && (run.info.device != runs[0].info.device ||
                           run.info.model_tier != runs[0].info.model_tier)) {
       m.error = dir + " was run on '" + run.info.device + "' (model " + run.info.model_tier +

@@ -132,14 +132,11 @@ CaseOutcome outcomeFromJson(const nlohmann::json& j) {
   return o;
 }
 
-SavedRun readSavedRun(const std::string& dir, std::string* error) {
+Result<SavedRun> readSavedRun(const std::string& dir) {
   SavedRun run;
   const std::string path = dir + "/summary.json";
   std::ifstream in(path);
-  if (!in) {
-    *error = "cannot read " + path + " (not a rayspec run folder?)";
-    return run;
-  }
+  if (!in) return errorMessage("cannot read " + path + " (not a rayspec run folder?)");
   try {
     const nlohmann::json j = nlohmann::json::parse(in);
     run.info.device = j.at("device").get<std::string>();
@@ -153,14 +150,13 @@ SavedRun readSavedRun(const std::string& dir, std::string* error) {
     run.info.interrupted = j.at("interrupted").get<bool>();
     for (const nlohmann::json& c : j.at("cases")) run.outcomes.push_back(outcomeFromJson(c));
   } catch (const std::exception& e) {
-    *error = path + ": " + e.what();
-    return run;
+    return errorMessage(path + ": " + e.what());
   }
   // A run that did not finish: its journal holds every case that ended.
-  bool found = false;
   if (run.info.interrupted) {
-    std::vector<CaseOutcome> journal = readJournal(dir, &found, error);
-    if (found && error->empty()) run.outcomes = std::move(journal);
+    Result<std::optional<std::vector<CaseOutcome>>> journal = readJournal(dir);
+    if (!journal) return journal.error();
+    if (*journal) run.outcomes = std::move(**journal);
   }
   return run;
 }

@@ -2,6 +2,8 @@
 // run folder read back (`--resume`, `rayspec merge`) is made of them.
 #pragma once
 
+#include "base/result.h"
+
 #include <string>
 #include <vector>
 
@@ -24,9 +26,9 @@ struct SavedRun {
   RunInfo info;
   std::vector<CaseOutcome> outcomes;
 };
-// error: the folder has no readable summary.json, or names the case and
+// The error: the folder has no readable summary.json, or names the case and
 // field that could not be read. A run marked interrupted takes its cases
 // from its journal (report/case_journal.h) where it has one.
-SavedRun readSavedRun(const std::string& dir, std::string* error);
+Result<SavedRun> readSavedRun(const std::string& dir);
 
 }  // namespace rayspec

@@ -200,10 +200,11 @@ Result<std::map<std::string, CaseOutcome>> resumedCases(const RunOptions& opt, R
                                                         const std::vector<CaseFile>& files) {
   std::map<std::string, CaseOutcome> earlier;
   if (!opt.resume) return earlier;
-  std::string error;
-  SavedRun saved = readSavedRun(opt.out, &error);
-  if (error.empty()) error = resumeError(saved, info, opt.out, files);
-  if (!error.empty()) return errorMessage(error);
+  Result<SavedRun> read = readSavedRun(opt.out);
+  if (!read) return read.error();
+  SavedRun& saved = *read;
+  if (std::string error = resumeError(saved, info, opt.out, files); !error.empty())
+    return errorMessage(error);
   info.started = saved.info.started;
   for (CaseOutcome& o : saved.outcomes) earlier[o.name] = std::move(o);
   std::printf("Resuming %s: %zu cases already ran\n", opt.out.c_str(), earlier.size());
