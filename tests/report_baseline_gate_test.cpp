@@ -12,6 +12,7 @@
 #include "report/merge_runs.h"
 #include "report/outcome_json.h"
 #include "report/run_summary.h"
+#include "result_support.h"
 #include "test_dir.h"
 
 namespace rayspec {
@@ -43,7 +44,7 @@ Baseline gate() {
   const std::string csv = writeFile("gate.csv", "fam/known,Fail  # driver bug\nfam/fixed,Crash\n");
   writeFile("gate-flakes.txt", "# flaky on this driver\n^fam/wobbly  # issue 12\n");
   writeFile("gate-skips.txt", "^slow/\n");
-  Baseline b = loadBaselineSet(csv, "", "", &error);
+  Baseline b = orError(loadBaselineSet(csv, "", ""), &error);
   EXPECT_EQ(error, "");
   return b;
 }
@@ -118,7 +119,7 @@ TEST(BaselineGate, FailuresCsvIsABaselineOfWhatWasUnexpected) {
   EXPECT_EQ(text.find("fam/fine"), std::string::npos) << text;
   // It reads back as a baseline: the new failure and the unexpected pass.
   std::string error;
-  const Baseline again = loadBaseline(path, &error);
+  const Baseline again = orError(loadBaseline(path), &error);
   ASSERT_EQ(error, "") << text;
   EXPECT_EQ(again.expected.size(), 2u) << text;
   EXPECT_EQ(again.expected.at("fam/new"), Status::Timeout);
@@ -127,10 +128,11 @@ TEST(BaselineGate, FailuresCsvIsABaselineOfWhatWasUnexpected) {
 
 TEST(BaselineGate, ABadPatternNamesFileAndLine) {
   std::string error;
-  loadNamePatterns(writeFile("bad-flakes.txt", "# ok\nfam/a\nfam/(b\n"), &error);
+  orError(loadNamePatterns(writeFile("bad-flakes.txt", "# ok\nfam/a\nfam/(b\n")), &error);
   EXPECT_NE(error.find("bad-flakes.txt:3:"), std::string::npos) << error;
   error.clear();
-  loadBaselineSet("", writeFile("missing-dir-flakes.txt", "x"), "/nonexistent/skips.txt", &error);
+  orError(loadBaselineSet("", writeFile("missing-dir-flakes.txt", "x"), "/nonexistent/skips.txt"),
+          &error);
   EXPECT_NE(error.find("/nonexistent/skips.txt"), std::string::npos) << error;
 }
 

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "report/baseline.h"
+#include "result_support.h"
 #include "test_dir.h"
 
 namespace rayspec {
@@ -22,18 +23,20 @@ std::string writeInput(const std::string& name, const std::string& text) {
 TEST(BaselineInput, LongLinesAreReadNotRecursedInto) {
   std::string error;
   const std::string comment = "# " + std::string(64 << 10, 'x') + "\n";
-  Baseline b = loadBaseline(writeInput("long-comment.csv", comment + "fam/a,Fail\n"), &error);
+  Baseline b =
+      orError(loadBaseline(writeInput("long-comment.csv", comment + "fam/a,Fail\n")), &error);
   EXPECT_EQ(error, "");
   EXPECT_EQ(b.expected.at("fam/a"), Status::Fail);
-  loadBaseline(writeInput("long-entry.csv", "fam/" + std::string(64 << 10, 'y') + ",Fail,\n"),
-               &error);
+  orError(
+      loadBaseline(writeInput("long-entry.csv", "fam/" + std::string(64 << 10, 'y') + ",Fail,\n")),
+      &error);
   EXPECT_NE(error.find("long-entry.csv:1: expected 'case,Status'"), std::string::npos)
       << error.substr(0, 300);
   EXPECT_LT(error.size(), 1000u);  // the line is shown cut, with its length
   EXPECT_NE(error.find("bytes)"), std::string::npos);
   error.clear();
   std::vector<NamePattern> p =
-      loadNamePatterns(writeInput("long-skips.txt", comment + "^fam/b$\n"), &error);
+      orError(loadNamePatterns(writeInput("long-skips.txt", comment + "^fam/b$\n")), &error);
   EXPECT_EQ(error, "");
   ASSERT_EQ(p.size(), 1u);
 }
@@ -43,22 +46,22 @@ TEST(BaselineInput, LongLinesAreReadNotRecursedInto) {
 TEST(BaselineInput, AByteOrderMarkIsDropped) {
   std::string error;
   // "\xBF" and "fam" stay two literals: one would read \xBFfa as one escape.
-  Baseline b = loadBaseline(writeInput("bom.csv",
-                                       "\xEF\xBB\xBF"
-                                       "fam/a,Fail\r\nfam/b,Crash\r\n"),
-                            &error);
+  Baseline b = orError(loadBaseline(writeInput("bom.csv",
+                                               "\xEF\xBB\xBF"
+                                               "fam/a,Fail\r\nfam/b,Crash\r\n")),
+                       &error);
   EXPECT_EQ(error, "");
   EXPECT_EQ(b.expected.count("fam/a"), 1u);
   EXPECT_EQ(b.expected.at("fam/b"), Status::Crash);
   std::vector<NamePattern> p =
-      loadNamePatterns(writeInput("bom-skips.txt", "\xEF\xBB\xBF^fam/a$\n"), &error);
+      orError(loadNamePatterns(writeInput("bom-skips.txt", "\xEF\xBB\xBF^fam/a$\n")), &error);
   EXPECT_EQ(error, "");
   EXPECT_NE(findPattern(p, "fam/a"), nullptr);
   // A BOM anywhere else is shown, not hidden.
-  loadBaseline(writeInput("bom-later.csv",
-                          "fam/a,Fail\n\xEF\xBB\xBF"
-                          "fam/b,Fail\n"),
-               &error);
+  orError(loadBaseline(writeInput("bom-later.csv",
+                                  "fam/a,Fail\n\xEF\xBB\xBF"
+                                  "fam/b,Fail\n")),
+          &error);
   EXPECT_NE(error.find("bom-later.csv:2:"), std::string::npos) << error;
   EXPECT_NE(error.find("\\xEF\\xBB\\xBF"), std::string::npos) << error;
 }
@@ -68,19 +71,20 @@ TEST(BaselineInput, AByteOrderMarkIsDropped) {
 TEST(BaselineInput, NestedStarsMatchInLinearTime) {
   std::string error;
   std::vector<NamePattern> p =
-      loadNamePatterns(writeInput("evil-skips.txt", "^(.*)*(.*)*(.*)*(.*)*Z$\n"), &error);
+      orError(loadNamePatterns(writeInput("evil-skips.txt", "^(.*)*(.*)*(.*)*(.*)*Z$\n")), &error);
   ASSERT_EQ(error, "");
   EXPECT_EQ(findPattern(p, "abcdefghijklmnopqrstuvwxyz"), nullptr);
   EXPECT_NE(findPattern(p, "abcdefghijklmnopqrstuvwxyZ"), nullptr);
   // A back-reference is not RE2: an error naming the file and line.
-  loadNamePatterns(writeInput("backref-skips.txt", "# x\n(a)\\1\n"), &error);
+  orError(loadNamePatterns(writeInput("backref-skips.txt", "# x\n(a)\\1\n")), &error);
   EXPECT_NE(error.find("backref-skips.txt:2: not a regular expression"), std::string::npos)
       << error;
 }
 
 TEST(BaselineInput, ACaseListedTwiceIsAnError) {
   std::string error;
-  loadBaseline(writeInput("twice.csv", "fam/a,Fail\nfam/b,Pass\n\"fam/a\",Crash\n"), &error);
+  orError(loadBaseline(writeInput("twice.csv", "fam/a,Fail\nfam/b,Pass\n\"fam/a\",Crash\n")),
+          &error);
   EXPECT_NE(error.find("twice.csv:3: fam/a is listed again (first on line 1)"), std::string::npos)
       << error;
 }
@@ -90,7 +94,7 @@ TEST(BaselineInput, ACaseListedTwiceIsAnError) {
 TEST(BaselineInput, EntriesOfNoCaseAreReportedWithTheirLine) {
   std::string error;
   const Baseline b =
-      loadBaseline(writeInput("stale.csv", "# why\nfam/a,Fail\nfam/gone,Crash\n"), &error);
+      orError(loadBaseline(writeInput("stale.csv", "# why\nfam/a,Fail\nfam/gone,Crash\n")), &error);
   ASSERT_EQ(error, "");
   const std::vector<std::string> unknown = unknownEntries(b, {"fam/a", "fam/b"});
   ASSERT_EQ(unknown.size(), 1u);
@@ -101,7 +105,7 @@ TEST(BaselineInput, EntriesOfNoCaseAreReportedWithTheirLine) {
 TEST(BaselineInput, AnOversizedFileIsRefusedWithItsSize) {
   std::string error;
   const std::string path = writeInput("huge.csv", std::string(kMaxBaselineBytes + 1, '#'));
-  loadBaseline(path, &error);
+  orError(loadBaseline(path), &error);
   EXPECT_NE(error.find("huge.csv: " + std::to_string(kMaxBaselineBytes + 1) + " bytes"),
             std::string::npos)
       << error;

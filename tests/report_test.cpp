@@ -13,6 +13,7 @@
 #include "report/rule_catalog.h"
 #include "report/run_summary.h"
 #include "report/write_reports.h"
+#include "result_support.h"
 #include "test_dir.h"
 
 namespace rayspec {
@@ -208,10 +209,11 @@ std::string writeTemp(const std::string& name, const std::string& text) {
 
 TEST(Baseline, ExpectedFailureDoesNotFailTheRunAndIsReportedAsExpected) {
   std::string error;
-  const Baseline b = loadBaseline(
-      writeTemp("baseline.csv",
-                "# lavapipe known failures\nfam/broken,Fail  # driver bug\nfam/fixed,Fail\n"),
-      &error);
+  const Baseline b =
+      orError(loadBaseline(writeTemp(
+                  "baseline.csv",
+                  "# lavapipe known failures\nfam/broken,Fail  # driver bug\nfam/fixed,Fail\n")),
+              &error);
   ASSERT_EQ(error, "");
   ASSERT_EQ(b.expected.size(), 2u);
   CaseOutcome broken{"fam/broken", {}, Status::Fail, "Fail: x"};
@@ -249,7 +251,8 @@ TEST(Baseline, ExpectedFailureDoesNotFailTheRunAndIsReportedAsExpected) {
 
 TEST(Baseline, ADifferentBadStatusIsNotExpected) {
   std::string error;
-  const Baseline b = loadBaseline(writeTemp("baseline2.csv", "fam/a,QualityWarning\n"), &error);
+  const Baseline b =
+      orError(loadBaseline(writeTemp("baseline2.csv", "fam/a,QualityWarning\n")), &error);
   CaseOutcome crashed{"fam/a", {}, Status::Crash, "Crash"};
   applyBaseline(b, crashed);
   EXPECT_EQ(crashed.baseline, BaselineMatch::None);
@@ -271,7 +274,7 @@ TEST(Baseline, ReadsNamesBackFromResultsCsv) {
     baseline_text += name_field + ",Fail  # driver bug\n";
   }
   std::string error;
-  const Baseline b = loadBaseline(writeTemp("quoted-baseline.csv", baseline_text), &error);
+  const Baseline b = orError(loadBaseline(writeTemp("quoted-baseline.csv", baseline_text)), &error);
   ASSERT_EQ(error, "") << baseline_text;
   ASSERT_EQ(b.expected.size(), names.size()) << baseline_text;
   for (const std::string& n : names) {
@@ -284,14 +287,14 @@ TEST(Baseline, ReadsNamesBackFromResultsCsv) {
   for (const std::string bad :
        {"\"fam/a,b\",Fail\n", "fam/hash#in,Fail\n", "fam//a,Fail\n", "fam/../a,Fail\n"}) {
     error.clear();
-    loadBaseline(writeTemp("bad-name-baseline.csv", bad), &error);
+    orError(loadBaseline(writeTemp("bad-name-baseline.csv", bad)), &error);
     EXPECT_NE(error.find("bad-name-baseline.csv:1:"), std::string::npos) << bad << " -> " << error;
   }
 }
 
 TEST(Baseline, MalformedLineNamesFileAndLine) {
   std::string error;
-  loadBaseline(writeTemp("baseline3.csv", "fam/a,Fail\nfam/b,Broken\n"), &error);
+  orError(loadBaseline(writeTemp("baseline3.csv", "fam/a,Fail\nfam/b,Broken\n")), &error);
   EXPECT_NE(error.find("baseline3.csv:2:"), std::string::npos) << error;
 }
 

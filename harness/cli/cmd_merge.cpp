@@ -9,12 +9,12 @@
 namespace rayspec {
 
 int runMerge(const MergeOptions& opt) {
-  std::string error;
-  const Baseline baseline = loadBaselineSet(opt.baseline, opt.flakes, opt.skips, &error);
-  if (!error.empty()) {
-    std::fprintf(stderr, "rayspec merge: %s\n", error.c_str());
+  const Result<Baseline> loaded = loadBaselineSet(opt.baseline, opt.flakes, opt.skips);
+  if (!loaded) {
+    std::fprintf(stderr, "rayspec merge: %s\n", loaded.error().format().c_str());
     return kExitSetup;
   }
+  const Baseline& baseline = *loaded;
   Result<std::vector<Rule>> catalog = loadRuleCatalog(opt.rules_file);
   if (!catalog) std::fprintf(stderr, "rayspec merge: %s\n", catalog.error().format().c_str());
   const MergeResult merged =

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <tuple>
 
 #include "base/visible_text.h"
 #include "report/escape.h"
@@ -20,30 +21,26 @@ std::string trimmed(const std::string& s) {
 }
 
 // Calls line(text, number) for each line that is neither blank nor a comment
-// (a UTF-8 BOM before the first line dropped); error: the file cannot be read
-// or is too large. line returns false to stop.
+// (a UTF-8 BOM before the first line dropped), and stops at the first error
+// it returns; an error too when the file cannot be read or is too large.
 template <typename F>
-void forEachEntry(const std::string& path, std::string* error, F line) {
+Result<void> forEachEntry(const std::string& path, F line) {
   std::error_code ec;
   const auto size = std::filesystem::file_size(path, ec);
   std::ifstream in(path, std::ios::binary);
-  if (ec || !in) {
-    *error = "cannot read " + path;
-    return;
-  }
-  if (size > kMaxBaselineBytes) {
-    *error = path + ": " + std::to_string(size) + " bytes (at most " +
-             std::to_string(kMaxBaselineBytes) + ")";
-    return;
-  }
+  if (ec || !in) return errorMessage("cannot read " + path);
+  if (size > kMaxBaselineBytes)
+    return errorMessage(path + ": " + std::to_string(size) + " bytes (at most " +
+                        std::to_string(kMaxBaselineBytes) + ")");
   std::string text;
   for (int number = 1; std::getline(in, text); ++number) {
     if (number == 1 && text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
     if (!text.empty() && text.back() == '\r') text.pop_back();
     const std::string t = trimmed(text);
     if (t.empty() || t[0] == '#') continue;
-    if (!line(text, number)) return;
+    if (Result<void> r = line(text, number); !r) return r;
   }
+  return {};
 }
 
 // What a line shows in a message: at most 120 bytes, invisible bytes as \xNN.
@@ -54,34 +51,30 @@ std::string shown(const std::string& line) {
 
 }  // namespace
 
-Baseline loadBaseline(const std::string& path, std::string* error) {
+Result<Baseline> loadBaseline(const std::string& path) {
   Baseline b;
   b.file = path;
   // An entry: `case,Status` (the case name a CSV field as results.csv writes
   // it, quoted when it holds a comma) and maybe a comment.
   static const RE2 entry(std::string("(") + kCsvFieldPattern + R"(),\s*([A-Za-z]+)\s*(#.*)?)");
   std::map<std::string, int>& line_of = b.line_of;
-  forEachEntry(path, error, [&](const std::string& line, int number) {
+  Result<void> read = forEachEntry(path, [&](const std::string& line, int number) -> Result<void> {
     std::string field, status;
     Status s;
     const std::string where = path + ":" + std::to_string(number);
-    if (!RE2::FullMatch(line, entry, &field, &status, nullptr) || !parseStatus(status, &s)) {
-      *error = where + ": expected 'case,Status' with a rayspec status, got '" + shown(line) + "'";
-      return false;
-    }
+    if (!RE2::FullMatch(line, entry, &field, &status, nullptr) || !parseStatus(status, &s))
+      return errorMessage(where + ": expected 'case,Status' with a rayspec status, got '" +
+                          shown(line) + "'");
     const std::string name = csvFieldText(field);
-    if (const std::string problem = caseNameProblem(name); !problem.empty()) {
-      *error = where + ": '" + shown(name) + "' is not a case name: " + problem;
-      return false;
-    }
-    if (const auto [it, fresh] = line_of.emplace(name, number); !fresh) {
-      *error = where + ": " + name + " is listed again (first on line " +
-               std::to_string(it->second) + ")";
-      return false;
-    }
+    if (const std::string problem = caseNameProblem(name); !problem.empty())
+      return errorMessage(where + ": '" + shown(name) + "' is not a case name: " + problem);
+    if (const auto [it, fresh] = line_of.emplace(name, number); !fresh)
+      return errorMessage(where + ": " + name + " is listed again (first on line " +
+                          std::to_string(it->second) + ")");
     b.expected[name] = s;
-    return true;
+    return {};
   });
+  if (!read) return read.error();
   return b;
 }
 
@@ -95,10 +88,10 @@ std::vector<std::string> unknownEntries(const Baseline& b, const std::vector<std
   return out;
 }
 
-std::vector<NamePattern> loadNamePatterns(const std::string& path, std::string* error) {
+Result<std::vector<NamePattern>> loadNamePatterns(const std::string& path) {
   std::vector<NamePattern> out;
   static const RE2 comment(R"(\s+#.*$)");
-  forEachEntry(path, error, [&](const std::string& line, int number) {
+  Result<void> read = forEachEntry(path, [&](const std::string& line, int number) -> Result<void> {
     // A pattern may carry a trailing comment after whitespace and '#'.
     std::string text = line;
     RE2::Replace(&text, comment, "");
@@ -107,14 +100,13 @@ std::vector<NamePattern> loadNamePatterns(const std::string& path, std::string* 
     RE2::Options options;
     options.set_log_errors(false);
     auto regex = std::make_shared<const RE2>(text, options);
-    if (!regex->ok()) {
-      *error = where + ": not a regular expression (RE2 syntax): '" + shown(text) + "' (" +
-               regex->error() + ")";
-      return false;
-    }
+    if (!regex->ok())
+      return errorMessage(where + ": not a regular expression (RE2 syntax): '" + shown(text) +
+                          "' (" + regex->error() + ")");
     out.push_back({text, where, std::move(regex)});
-    return true;
+    return {};
   });
+  if (!read) return read.error();
   return out;
 }
 
@@ -131,21 +123,22 @@ std::string siblingFile(const std::string& baseline_csv, const std::string& suff
   return std::filesystem::exists(sibling) ? sibling.string() : std::string();
 }
 
-Baseline loadBaselineSet(const std::string& csv, std::string flakes, std::string skips,
-                         std::string* error) {
+Result<Baseline> loadBaselineSet(const std::string& csv, std::string flakes, std::string skips) {
   Baseline b;
-  if (!csv.empty()) b = loadBaseline(csv, error);
-  if (!error->empty()) return b;
+  if (!csv.empty()) {
+    Result<Baseline> read = loadBaseline(csv);
+    if (!read) return read.error();
+    b = std::move(*read);
+  }
   if (flakes.empty()) flakes = siblingFile(csv, "-flakes.txt");
   if (skips.empty()) skips = siblingFile(csv, "-skips.txt");
-  if (!flakes.empty()) {
-    b.flakes_file = flakes;
-    b.flakes = loadNamePatterns(flakes, error);
-    if (!error->empty()) return b;
-  }
-  if (!skips.empty()) {
-    b.skips_file = skips;
-    b.skips = loadNamePatterns(skips, error);
+  for (auto [file, kept, patterns] : {std::tuple{flakes, &b.flakes_file, &b.flakes},
+                                      std::tuple{skips, &b.skips_file, &b.skips}}) {
+    if (file.empty()) continue;
+    *kept = file;
+    Result<std::vector<NamePattern>> read = loadNamePatterns(file);
+    if (!read) return read.error();
+    *patterns = std::move(*read);
   }
   return b;
 }

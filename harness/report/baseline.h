@@ -16,6 +16,8 @@
 // linear in the name whatever the pattern.
 #pragma once
 
+#include "base/result.h"
+
 #include <map>
 #include <memory>
 #include <string>
@@ -46,17 +48,17 @@ struct Baseline {
   bool empty() const { return file.empty() && flakes_file.empty() && skips_file.empty(); }
 };
 
-// Reads a baseline CSV; error names the file and line of a malformed entry or
-// of a case listed twice.
-Baseline loadBaseline(const std::string& path, std::string* error);
+// Reads a baseline CSV, or the error naming the file and line of a malformed
+// entry or of a case listed twice.
+Result<Baseline> loadBaseline(const std::string& path);
 
 // The entries of the baseline CSV that name no case of `cases` (a case renamed
 // or removed: its expectation would never apply), as "file:line: NAME ...".
 std::vector<std::string> unknownEntries(const Baseline& b, const std::vector<std::string>& cases);
 
-// Reads a flakes or skips file; error names the file and line of a regular
-// expression that does not compile.
-std::vector<NamePattern> loadNamePatterns(const std::string& path, std::string* error);
+// Reads a flakes or skips file, or the error naming the file and line of a
+// regular expression that does not compile.
+Result<std::vector<NamePattern>> loadNamePatterns(const std::string& path);
 
 // The first pattern found in `name`, or nullptr.
 const NamePattern* findPattern(const std::vector<NamePattern>& patterns, const std::string& name);
@@ -66,8 +68,7 @@ const NamePattern* findPattern(const std::vector<NamePattern>& patterns, const s
 std::string siblingFile(const std::string& baseline_csv, const std::string& suffix);
 
 // The whole set: the CSV (may be ""), and the flakes and skips files (given,
-// or the CSV's siblings). error: the first problem, naming file and line.
-Baseline loadBaselineSet(const std::string& csv, std::string flakes, std::string skips,
-                         std::string* error);
+// or the CSV's siblings), or the first problem, naming file and line.
+Result<Baseline> loadBaselineSet(const std::string& csv, std::string flakes, std::string skips);
 
 }  // namespace rayspec

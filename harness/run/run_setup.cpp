@@ -170,10 +170,7 @@ RunInfo startRunInfo(const RunOptions& opt, size_t planned_cases) {
 }
 
 Result<Baseline> loadRunBaseline(const RunOptions& opt) {
-  std::string error;
-  Baseline baseline = loadBaselineSet(opt.baseline, opt.flakes, opt.skips, &error);
-  if (!error.empty()) return errorMessage(error);
-  return baseline;
+  return loadBaselineSet(opt.baseline, opt.flakes, opt.skips);
 }
 
 Result<ChosenDevice> chooseDevice(const RunOptions& opt, const std::vector<CaseFile>& files,
