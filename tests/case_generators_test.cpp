@@ -121,14 +121,15 @@ TEST(AimRays, ThroughTheInstanceTransform) {
   spec.edges = spec.faces = false;
   spec.offset = {0, 0.5, 4};
   spec.direction_scale = 0.25;
-  std::string error;
-  const auto rays = aimRays(s, spec, Ray{}, &error);
-  ASSERT_EQ(rays.size(), 1u) << error;  // the fan's centre
-  EXPECT_EQ(rays[0].origin, (Vec3{1000, 2000.5f, 4}));
-  EXPECT_EQ(rays[0].direction, (Vec3{0, -0.125f, -1}));
+  const auto rays = aimRays(s, spec, Ray{});
+  ASSERT_TRUE(rays) << rays.error().format();
+  ASSERT_EQ(rays->size(), 1u);  // the fan's centre
+  EXPECT_EQ((*rays)[0].origin, (Vec3{1000, 2000.5f, 4}));
+  EXPECT_EQ((*rays)[0].direction, (Vec3{0, -0.125f, -1}));
   spec.instance = 3;
-  EXPECT_TRUE(aimRays(s, spec, Ray{}, &error).empty());
-  EXPECT_NE(error.find("instance 3"), std::string::npos);
+  const auto none = aimRays(s, spec, Ray{});
+  ASSERT_FALSE(none);
+  EXPECT_NE(none.error().message.find("instance 3"), std::string::npos);
 }
 
 TEST(AimRays, CaseSyntaxAndErrors) {

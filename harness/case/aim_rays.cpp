@@ -78,22 +78,17 @@ std::vector<DVec3> meshAimPoints(const Geometry& g, const AimSpec& spec) {
   return out;
 }
 
-std::vector<Ray> aimRays(const Scene& scene, const AimSpec& spec, const Ray& defaults,
-                         std::string* error) {
+Result<std::vector<Ray>> aimRays(const Scene& scene, const AimSpec& spec, const Ray& defaults) {
   std::vector<Ray> rays;
-  if (spec.instance >= scene.instances.size() || !scene.instances[spec.instance].blas) {
-    *error =
-        "instance " + std::to_string(spec.instance) + " is not an instance of a BLAS in the scene";
-    return rays;
-  }
+  if (spec.instance >= scene.instances.size() || !scene.instances[spec.instance].blas)
+    return errorMessage("instance " + std::to_string(spec.instance) +
+                        " is not an instance of a BLAS in the scene");
   const Instance& inst = scene.instances[spec.instance];
   const Blas& blas = scene.blases[*inst.blas];
   if (spec.geometry >= blas.geometries.size() ||
-      blas.geometries[spec.geometry].kind != Geometry::Kind::Triangles) {
-    *error = "geometry " + std::to_string(spec.geometry) + " of BLAS '" + blas.name +
-             "' is not a triangle mesh";
-    return rays;
-  }
+      blas.geometries[spec.geometry].kind != Geometry::Kind::Triangles)
+    return errorMessage("geometry " + std::to_string(spec.geometry) + " of BLAS '" + blas.name +
+                        "' is not a triangle mesh");
   const Geometry& g = blas.geometries[spec.geometry];
   for (DVec3 p : meshAimPoints(g, spec)) {
     if (g.transform) p = applyAffine(toDouble(*g.transform), p, 1.0);
@@ -105,7 +100,8 @@ std::vector<Ray> aimRays(const Scene& scene, const AimSpec& spec, const Ray& def
     }
     rays.push_back(r);
   }
-  if (rays.empty()) *error = "the mesh has no interior vertex, shared edge or face to aim at";
+  if (rays.empty())
+    return errorMessage("the mesh has no interior vertex, shared edge or face to aim at");
   return rays;
 }
 

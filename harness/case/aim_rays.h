@@ -3,6 +3,8 @@
 // every ray crosses the mesh strictly inside its outline.
 #pragma once
 
+#include "base/result.h"
+
 #include <array>
 #include <cstdint>
 #include <string>
@@ -29,10 +31,9 @@ std::vector<std::array<double, 3>> meshAimPoints(const Geometry& g, const AimSpe
 
 // One ray per aim point (the other fields from `defaults`): the aim point
 // through the geometry's and the instance's transforms (in double) plus
-// `offset`, rounded to float, towards the point. Empty, with *error set,
-// when the instance or geometry is not a triangle mesh of the scene or the
-// mesh has no interior feature.
-std::vector<Ray> aimRays(const Scene& scene, const AimSpec& spec, const Ray& defaults,
-                         std::string* error);
+// `offset`, rounded to float, towards the point. An error when the instance
+// or geometry is not a triangle mesh of the scene or the mesh has no
+// interior feature.
+Result<std::vector<Ray>> aimRays(const Scene& scene, const AimSpec& spec, const Ray& defaults);
 
 }  // namespace rayspec

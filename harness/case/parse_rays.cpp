@@ -233,13 +233,13 @@ void parseAim(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& rays
     ok = ok && s && *s > 0;
   }
   if (!ok) return;
-  std::string error;
-  rays.rays = aimRays(scene, spec, rays.defaults, &error);
-  if (!error.empty()) {
-    r.error(n, field, error);
+  Result<std::vector<Ray>> aimed = aimRays(scene, spec, rays.defaults);
+  if (!aimed) {
+    r.error(n, field, aimed.error().message);
     rays.rays.clear();
     return;
   }
+  rays.rays = std::move(*aimed);
   if (rays.rays.size() > (1u << 24)) {
     r.error(n, field, "at most 2^24 rays in a launch");
     rays.rays.clear();

@@ -120,20 +120,18 @@ Worker::~Worker() {
   if (pid_ > 0) reap(ChildEnd::How::Interrupted);
 }
 
-bool Worker::start(std::string* error) {
+Result<void> Worker::start() {
   int fds[2];
-  if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, fds) != 0) {
-    *error = std::string("socketpair failed: ") + std::strerror(errno);
-    return false;
-  }
+  if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, fds) != 0)
+    return errorMessage(std::string("socketpair failed: ") + std::strerror(errno));
   std::fflush(nullptr);
   const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) {
-    *error = std::string("fork failed: ") + std::strerror(errno);
+    const int fork_errno = errno;
     ::close(fds[0]);
     ::close(fds[1]);
-    return false;
+    return errorMessage(std::string("fork failed: ") + std::strerror(fork_errno));
   }
   if (pid == 0) {
     ::close(fds[0]);
@@ -143,7 +141,7 @@ bool Worker::start(std::string* error) {
   pid_ = pid;
   fd_ = fds[0];
   ++started_;
-  return true;
+  return {};
 }
 
 ChildEnd Worker::reap(ChildEnd::How how_if_alive, double grace_seconds) {
@@ -227,10 +225,9 @@ Worker::Reply Worker::call(const std::string& request) {
   const auto began = std::chrono::steady_clock::now();
   // A child that died while idle (nothing of this request ran) is replaced once.
   for (int attempt = 0; attempt < 2; ++attempt) {
-    std::string error;
-    if (pid_ <= 0 && !start(&error)) {
+    if (Result<void> started = pid_ > 0 ? Result<void>() : start(); !started) {
       reply.end.how = ChildEnd::How::NotStarted;
-      reply.end.error = error;
+      reply.end.error = started.error().format();
       return reply;
     }
     if (sendMessage(fd_, 'Q', request)) break;

@@ -13,6 +13,8 @@
 // its own kind (Reply::threw) and the child goes on.
 #pragma once
 
+#include "base/result.h"
+
 #include <sys/types.h>
 
 #include <functional>
@@ -56,7 +58,7 @@ class Worker {
   int started() const { return started_; }  // children started so far
 
  private:
-  bool start(std::string* error);
+  Result<void> start();
   // Waits for the child (at most grace_seconds), then kills it if it is
   // still alive (`how_if_alive`: why) and closes the socket.
   ChildEnd reap(ChildEnd::How how_if_alive, double grace_seconds = 0);
