@@ -15,6 +15,7 @@
 #include "fault/record_edit.h"
 #include "model/model_engine.h"
 #include "plan/plan.h"
+#include "result_support.h"
 #include "results/record_layout.h"
 #include "vulkan/vulkan_engine.h"
 
@@ -32,7 +33,7 @@ class PlantedFault : public ::testing::Test {
   static void SetUpTestSuite() {
     VulkanOptions opt;
     opt.validation = false;
-    backend_ = VulkanEngine::create(opt, &backend_error_).release();
+    backend_ = orError(VulkanEngine::create(opt), &backend_error_).release();
   }
   static void TearDownTestSuite() {
     delete backend_;

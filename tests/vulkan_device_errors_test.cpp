@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "plan/plan.h"
+#include "result_support.h"
 #include "suite_cases.h"
 #include "vulkan/context.h"
 #include "vulkan/device_errors.h"
@@ -52,7 +53,7 @@ Case suiteCase(const std::string& name) {
 // backend (a new VkDevice after a lost one).
 TEST(DeviceErrors, TheNextCaseRunsAfterEachError) {
   std::string error;
-  auto backend = VulkanEngine::create(VulkanOptions{}, &error);
+  auto backend = orError(VulkanEngine::create(VulkanOptions{}), &error);
   if (!backend) GTEST_SKIP() << "no Vulkan ray tracing device: " << error;
   const Case c = suiteCase("sbt/hit-group-index");
   ASSERT_FALSE(c.name.empty());

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <optional>
 
+#include "result_support.h"
 #include "vulkan/device_usability.h"
 #include "vulkan/icd_environment.h"
 #include "vulkan/icd_manifest.h"
@@ -226,7 +227,8 @@ TEST(DriverLibrary, LavapipeDeviceComesFromItsManifest) {
   std::string error;
   const IcdManifest m = *readIcdManifest(lvp);
   for (bool validation : {false, true}) {
-    std::unique_ptr<VulkanEngine> b = VulkanEngine::create({"llvmpipe", validation}, &error);
+    std::unique_ptr<VulkanEngine> b =
+        orError(VulkanEngine::create({"llvmpipe", validation}), &error);
     ASSERT_TRUE(b) << error;
     const std::string library = b->driverLibrary();
     EXPECT_TRUE(icdLibraryMatches(m, library)) << library << (validation ? " (validation on)" : "");

@@ -10,6 +10,7 @@
 
 #include "case/parse_case.h"
 #include "plan/plan.h"
+#include "result_support.h"
 #include "vulkan/pipeline_cache.h"
 #include "vulkan/vulkan_engine.h"
 
@@ -30,7 +31,7 @@ std::vector<fs::path> runOnce(const Case& c, const std::string& dir) {
   v.validation = false;
   v.device_per_case = false;
   std::string error;
-  std::unique_ptr<VulkanEngine> b = VulkanEngine::create(v, &error);
+  std::unique_ptr<VulkanEngine> b = orError(VulkanEngine::create(v), &error);
   EXPECT_TRUE(b) << error;
   if (!b) return {};
   const Results r = b->run(c, derivePlan(c));

@@ -12,6 +12,7 @@
 
 #include "case/parse_case.h"
 #include "plan/plan.h"
+#include "result_support.h"
 #include "results/record_layout.h"
 #include "vulkan/sbt_layout.h"
 #include "vulkan/vulkan_engine.h"
@@ -221,7 +222,7 @@ outputs:
 TEST(SbtStrideDevice, TheLargestStrideRunsAndOneStepMoreIsNotSupported) {
   if (!rayTracingDeviceExists()) GTEST_SKIP() << "no ray tracing device";
   std::string error;
-  auto backend = VulkanEngine::create(VulkanOptions{}, &error);
+  auto backend = orError(VulkanEngine::create(VulkanOptions{}), &error);
   ASSERT_TRUE(backend) << error;
   const DeviceInfo& d = backend->device();
   const uint32_t largest =

@@ -12,6 +12,7 @@
 
 #include "case/parse_case.h"
 #include "plan/plan.h"
+#include "result_support.h"
 #include "results/record_layout.h"
 #include "suite_cases.h"
 #include "vulkan/case_buffers.h"
@@ -302,7 +303,7 @@ Case triangleCase() {
 
 std::unique_ptr<VulkanEngine> makeBackend() {
   std::string error;
-  auto backend = VulkanEngine::create(VulkanOptions{}, &error);
+  auto backend = orError(VulkanEngine::create(VulkanOptions{}), &error);
   if (!backend) ADD_FAILURE() << "backend: " << error;
   return backend;
 }
@@ -554,7 +555,7 @@ TEST(VulkanDevice, UnknownDeviceFilterFails) {
   VulkanOptions o;
   o.device_filter = "no-such-device-xyz";
   std::string error;
-  EXPECT_FALSE(VulkanEngine::create(o, &error));
+  EXPECT_FALSE(orError(VulkanEngine::create(o), &error));
   EXPECT_NE(error.find("no-such-device-xyz"), std::string::npos) << error;
 }
 

@@ -12,7 +12,10 @@ VulkanOptions vulkanOptions(const RunOptions& opt) {
 }
 
 VulkanAdapter::VulkanAdapter(const VulkanOptions& options) {
-  backend_ = VulkanEngine::create(options, &error_);
+  if (Result<std::unique_ptr<VulkanEngine>> engine = VulkanEngine::create(options))
+    backend_ = std::move(*engine);
+  else
+    error_ = engine.error().format();
 }
 
 std::string VulkanAdapter::description() const {

@@ -2,6 +2,8 @@
 // device properties the per-case code needs. Internal to harness/vulkan.
 #pragma once
 
+#include "base/result.h"
+
 #include <vulkan/vulkan.h>
 
 #include <memory>
@@ -43,8 +45,8 @@ void destroyInstance(VulkanContext& ctx);
 
 // device_select.cpp
 DeviceInfo describeDevice(VkPhysicalDevice physical, uint32_t index);
-// Picks ctx.physical / ctx.info; returns false with *error when none fits.
-bool selectDevice(VulkanContext& ctx, const std::string& filter, std::string* error);
+// Picks ctx.physical / ctx.info, or the error that says none fits.
+Result<void> selectDevice(VulkanContext& ctx, const std::string& filter);
 
 // device.cpp: creates ctx.device, ctx.queue and loads ctx.fn. Throws VulkanError.
 void createDevice(VulkanContext& ctx);

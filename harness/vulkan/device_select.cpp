@@ -127,7 +127,7 @@ DeviceInfo describeDevice(VkPhysicalDevice physical, uint32_t index) {
   return d;
 }
 
-bool selectDevice(VulkanContext& ctx, const std::string& filter, std::string* error) {
+Result<void> selectDevice(VulkanContext& ctx, const std::string& filter) {
   uint32_t count = 0;
   vkCheck(vkEnumeratePhysicalDevices(ctx.instance, &count, nullptr), "vkEnumeratePhysicalDevices");
   std::vector<VkPhysicalDevice> physicals(count);
@@ -151,14 +151,13 @@ bool selectDevice(VulkanContext& ctx, const std::string& filter, std::string* er
     ctx.rt_props.pNext = nullptr;
     ctx.props = props.properties;
     vkGetPhysicalDeviceMemoryProperties(ctx.physical, &ctx.memory);
-    return true;
+    return {};
   }
-  if (error) {
-    *error = "no Vulkan device with VK_KHR_ray_tracing_pipeline and VK_KHR_acceleration_structure";
-    if (!filter.empty()) *error += " whose name contains '" + filter + "'";
-    if (!seen.empty()) *error += " (without ray tracing: " + seen + ")";
-  }
-  return false;
+  std::string why =
+      "no Vulkan device with VK_KHR_ray_tracing_pipeline and VK_KHR_acceleration_structure";
+  if (!filter.empty()) why += " whose name contains '" + filter + "'";
+  if (!seen.empty()) why += " (without ray tracing: " + seen + ")";
+  return errorMessage(why);
 }
 
 std::vector<DeviceInfo> listDevices(std::string* error) {

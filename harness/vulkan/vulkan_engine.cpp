@@ -17,21 +17,20 @@ VulkanEngine::~VulkanEngine() {
   close();
 }
 
-std::unique_ptr<VulkanEngine> VulkanEngine::create(const VulkanOptions& options,
-                                                   std::string* error) {
+Result<std::unique_ptr<VulkanEngine>> VulkanEngine::create(const VulkanOptions& options) {
   std::unique_ptr<VulkanEngine> backend(new VulkanEngine());
   VulkanContext& ctx = *backend->ctx_;
   try {
     createInstance(ctx, options.validation);
-    if (!selectDevice(ctx, options.device_filter, error)) return nullptr;
+    if (Result<void> selected = selectDevice(ctx, options.device_filter); !selected)
+      return selected.error();
     createDevice(ctx);
     backend->has_device_ = true;
     backend->device_per_case_ =
         options.device_per_case.value_or(devicePerCase(ctx.info.driver_name));
     if (!backend->device_per_case_) ctx.pipeline_cache = openPipelineCache(ctx);
   } catch (const std::exception& e) {
-    if (error) *error = e.what();
-    return nullptr;  // the destructor releases what exists
+    return errorMessage(e.what());  // the destructor releases what exists
   }
   return backend;
 }

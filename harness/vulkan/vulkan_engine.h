@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "base/result.h"
 #include "case/case.h"
 #include "plan/plan.h"
 #include "results/results.h"
@@ -70,9 +71,9 @@ struct VulkanContext;  // internal (vulkan/context.h)
 // Backend (run/backend.h); VulkanAdapter (run/) adapts it to one.
 class VulkanEngine {
  public:
-  // nullptr (and *error set) when no instance, no matching ray tracing device,
+  // The engine, or the error when no instance, no matching ray tracing device,
   // or device creation failed.
-  static std::unique_ptr<VulkanEngine> create(const VulkanOptions& options, std::string* error);
+  static Result<std::unique_ptr<VulkanEngine>> create(const VulkanOptions& options);
   ~VulkanEngine();
 
   const DeviceInfo& device() const;
