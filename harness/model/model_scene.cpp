@@ -98,12 +98,7 @@ void aabbBounds(const RTCBoundsFunctionArguments* args) {
     v[k] = clampLarge(v[k] - pad);
     v[k + 3] = clampLarge(v[k + 3] + pad);
   }
-  b.lower_x = v[0];
-  b.lower_y = v[1];
-  b.lower_z = v[2];
-  b.upper_x = v[3];
-  b.upper_y = v[4];
-  b.upper_z = v[5];
+  setBounds(b, v, v + 3);
 }
 
 TraceContext* traceContext(RTCIntersectContext* ctx) {
