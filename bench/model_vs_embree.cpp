@@ -128,9 +128,9 @@ Counts bareRun(const Case& c, unsigned threads) {
   rtcReleaseGeometry(ig);
   rtcCommitScene(top);
   const double setup = secondsSince(start);
-  const auto traceStart = std::chrono::steady_clock::now();
+  const auto trace_start = std::chrono::steady_clock::now();
   std::atomic<size_t> next{0};
-  std::atomic<uint64_t> hitSum{0}, missSum{0};
+  std::atomic<uint64_t> hit_sum{0}, miss_sum{0};
   const size_t n = c.rays.rays.size();
   auto work = [&] {
     uint64_t h = 0, m = 0;
@@ -163,8 +163,8 @@ Counts bareRun(const Case& c, unsigned threads) {
           ++h;
       }
     }
-    hitSum += h;
-    missSum += m;
+    hit_sum += h;
+    miss_sum += m;
   };
   if (threads == 1)
     work();
@@ -173,11 +173,11 @@ Counts bareRun(const Case& c, unsigned threads) {
     for (unsigned t = 0; t < threads; ++t) pool.emplace_back(work);
     for (auto& t : pool) t.join();
   }
-  const double traced = secondsSince(traceStart);
+  const double traced = secondsSince(trace_start);
   rtcReleaseScene(top);
   rtcReleaseScene(blas);
   rtcReleaseDevice(dev);
-  return {hitSum.load(), missSum.load(), setup, traced};
+  return {hit_sum.load(), miss_sum.load(), setup, traced};
 }
 
 // The bare loop's answer, once (single thread), for both sides to check against.

@@ -168,7 +168,7 @@ pipeline: {miss: [[]], hit_groups: [{}]}
 }
 
 TEST(GeneratedMesh, Errors) {
-  auto parseBlas = [](const std::string& blas) {
+  auto parse_blas = [](const std::string& blas) {
     return parseCaseText(
         "rules: [R-WATERTIGHT]\nscene:\n  blas:\n    m:\n      - triangles: " + blas +
             "\n  instances: [{blas: m}]\nrays:\n  list: [{origin: [0, 0, 1], direction: [0, 0, "
@@ -182,14 +182,14 @@ TEST(GeneratedMesh, Errors) {
     EXPECT_NE(r.errors[0].loc.field.find(field), std::string::npos) << r.errors[0].format();
     EXPECT_NE(r.errors[0].message.find(text), std::string::npos) << r.errors[0].format();
   };
-  expect(parseBlas("{fan: {triangles: 2}}"), "fan.triangles", "at least 3");
-  expect(parseBlas("{fan: {triangles: 5, radius: -1}}"), "fan.radius", "positive");
-  expect(parseBlas("{triangulation: {cells: [2, 2], size: [1, 1], seed: 1, jitter: 0.5}}"),
+  expect(parse_blas("{fan: {triangles: 2}}"), "fan.triangles", "at least 3");
+  expect(parse_blas("{fan: {triangles: 5, radius: -1}}"), "fan.radius", "positive");
+  expect(parse_blas("{triangulation: {cells: [2, 2], size: [1, 1], seed: 1, jitter: 0.5}}"),
          "jitter", "0.25");
-  expect(parseBlas("{triangulation: {cells: [2, 2], size: [1, 1]}}"), "triangulation", "seed");
-  expect(parseBlas("{fan: {triangles: 5}, grid: {cells: [1, 1], size: [1, 1]}}"), "triangles",
+  expect(parse_blas("{triangulation: {cells: [2, 2], size: [1, 1]}}"), "triangulation", "seed");
+  expect(parse_blas("{fan: {triangles: 5}, grid: {cells: [1, 1], size: [1, 1]}}"), "triangles",
          "one of them alone");
-  EXPECT_TRUE(parseBlas("{fan: {triangles: 5, seed: 2}}").value);
+  EXPECT_TRUE(parse_blas("{fan: {triangles: 5, seed: 2}}").value);
 }
 
 }  // namespace

@@ -87,25 +87,25 @@ TEST(ParseMessages, UnknownRuleLabelsAreReportedAtTheLabel) {
 }
 
 TEST(ParseMessages, ImageAndCaseNamesMustBeFileNames) {
-  auto withImage = [](const std::string& name) {
+  auto with_image = [](const std::string& name) {
     std::string s = kMinimal;
     s += "  per_ray: [hit]\n  images: [{name: " + name + ", from: hit}]\n";
     s.replace(s.find("[count: miss]"), 13, "[count: miss, record: {hit: 0}]");
     return parse(s);
   };
-  EXPECT_TRUE(withImage("hit-map_2.v1").value) << allErrors(withImage("hit-map_2.v1"));
+  EXPECT_TRUE(with_image("hit-map_2.v1").value) << allErrors(with_image("hit-map_2.v1"));
   for (const std::string& bad :
        {std::string("\"a/b\""), std::string("\"..\""), std::string("\".\""),
         std::string("\"sp ace\""), std::string("\"\""), std::string(101, 'x'),
         std::string("\"caf\xc3\xa9\"")}) {
-    const ParseResult r = withImage(bad);
+    const ParseResult r = with_image(bad);
     EXPECT_FALSE(r.value) << bad;
     ASSERT_EQ(r.errors.size(), 1u) << allErrors(r);
     EXPECT_EQ(r.errors[0].loc.field, "outputs.images[0].name");
     EXPECT_EQ(r.errors[0].loc.line, 10) << allErrors(r);
     EXPECT_GT(r.errors[0].loc.column, 0);
   }
-  EXPECT_TRUE(withImage(std::string(100, 'x')).value) << "100 bytes is the most";
+  EXPECT_TRUE(with_image(std::string(100, 'x')).value) << "100 bytes is the most";
   // A case's name names its results folder.
   ParseResult r = parse(kMinimal, nullptr, "family/bad name");
   ASSERT_FALSE(r.errors.empty());

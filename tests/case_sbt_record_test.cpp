@@ -146,17 +146,17 @@ TEST(SbtRecordShape, ReadsPastTheRecordDataAreErrorsAtTheRead) {
 }
 
 TEST(SbtRecordShape, LightsReadSixOrEightFloats) {
-  auto withLight = [](const std::string& k, const std::string& light) {
+  auto with_light = [](const std::string& k, const std::string& light) {
     std::string s = caseText("    record_data: " + k);
     s.replace(s.find("[[call_data: {value: 0}]]"), 25, "[[light: " + light + "]]");
     return parse(s);
   };
-  EXPECT_TRUE(withLight("24", "point").value);
-  EXPECT_TRUE(withLight("24", "directional").value);
-  EXPECT_TRUE(withLight("32", "spot").value);
-  ParseResult r = withLight("28", "spot");
+  EXPECT_TRUE(with_light("24", "point").value);
+  EXPECT_TRUE(with_light("24", "directional").value);
+  EXPECT_TRUE(with_light("32", "spot").value);
+  ParseResult r = with_light("28", "spot");
   EXPECT_ERROR_AT(r, 13, 0, "", "light: spot reads floats 0..7 (bytes 0..31) of its shader record");
-  r = withLight("20", "point");
+  r = with_light("20", "point");
   EXPECT_ERROR_AT(r, 13, 0, "", "light: point reads floats 0..5 (bytes 0..23)");
 
   // The light_* ops read the same floats, in any stage.

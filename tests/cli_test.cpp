@@ -96,7 +96,7 @@ TEST(Isolation, ProcessPerCaseForTheCasesThatNeedIt) {
   const std::string cases = caseArg("anyhit/ignore-odd-primitives") +
                             caseArg("anyhit/ignore-keeps-tmax") +
                             caseArg("results/miss-xor-closest-hit");
-  const auto runWith = [&](const std::string& name, const std::string& extra) {
+  const auto run_with = [&](const std::string& name, const std::string& extra) {
     const std::string out = fresh(name);
     const int rc = sh(std::string(RAYSPEC_BIN) +
                           " run -j 1 --no-validation --plant-fault crash-if-reused "
@@ -105,13 +105,13 @@ TEST(Isolation, ProcessPerCaseForTheCasesThatNeedIt) {
                       out + "/log.txt");
     return std::make_pair(rc, out);
   };
-  const auto [shared_rc, shared] = runWith("reused-workers", "");
+  const auto [shared_rc, shared] = run_with("reused-workers", "");
   EXPECT_EQ(shared_rc, 1) << slurp(shared + "/log.txt");
   const auto crashed = readDeqpCsv(shared + "/results.csv");
   EXPECT_EQ(crashed.at("anyhit/ignore-odd-primitives"), "Pass") << slurp(shared + "/log.txt");
   EXPECT_EQ(crashed.at("anyhit/ignore-keeps-tmax"), "Crash") << slurp(shared + "/log.txt");
 
-  const auto [own_rc, own] = runWith("reused-own-process", " --process-per-case-for 'anyhit/*'");
+  const auto [own_rc, own] = run_with("reused-own-process", " --process-per-case-for 'anyhit/*'");
   EXPECT_EQ(own_rc, 0) << slurp(own + "/log.txt");
   for (const auto& [name, status] : readDeqpCsv(own + "/results.csv"))
     EXPECT_EQ(status, "Pass") << name << "\n" << slurp(own + "/log.txt");

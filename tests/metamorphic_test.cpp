@@ -89,7 +89,7 @@ TEST(IdObservations, WhatProgramsObserveOfAnId) {
   id.name = "primitive_id";
   Expr three;
   three.literal = {3};
-  for (const auto& [name, idFirst, threshold] :
+  for (const auto& [name, id_first, threshold] :
        std::vector<std::tuple<std::string, bool, uint64_t>>{{"lt", true, 3},
                                                             {"le", true, 4},
                                                             {"gt", true, 4},
@@ -101,14 +101,14 @@ TEST(IdObservations, WhatProgramsObserveOfAnId) {
     Expr cmp;
     cmp.kind = Expr::Kind::Op;
     cmp.name = name;
-    cmp.args = idFirst ? std::vector<Expr>{id, three} : std::vector<Expr>{three, id};
+    cmp.args = id_first ? std::vector<Expr>{id, three} : std::vector<Expr>{three, id};
     Stmt s;
     s.kind = Stmt::Kind::If;
     s.cond = cmp;
     t.pipeline.raygen = {s};
     t.pipeline.hit_groups.clear();
     EXPECT_EQ(observeId(t.pipeline, "primitive_id").below, (std::vector<uint64_t>{threshold}))
-        << name << idFirst;
+        << name << id_first;
   }
   // Arithmetic on the id observes the id itself: nothing may move.
   Expr sum;
@@ -128,10 +128,10 @@ TEST(PermuteCase, DeterministicAndKeepsEveryPrimitiveAndInstance) {
   EXPECT_TRUE(a.primitivesMoved());
   // Instance 3 is observed (eq): it stays; the others may exchange.
   for (uint64_t seed = 0; seed < 8; ++seed) EXPECT_EQ(permuteCase(c, seed).instance_of[3], 3u);
-  bool instancesMoved = false;
+  bool instances_moved = false;
   for (uint64_t seed = 0; seed < 8; ++seed)
-    instancesMoved = instancesMoved || permuteCase(c, seed).instancesMoved();
-  EXPECT_TRUE(instancesMoved);
+    instances_moved = instances_moved || permuteCase(c, seed).instancesMoved();
+  EXPECT_TRUE(instances_moved);
   // Every permuted triangle is an original one, vertex for vertex (winding
   // kept), with the parity of its primitive id; every instance an original.
   const Geometry& g0 = c.scene.blases[0].geometries[0];
@@ -169,21 +169,21 @@ TEST(ComparePermuted, NoticesAMovedAnswer) {
   ASSERT_TRUE(comparePermuted(p, original, permuted).empty());
   std::set<uint32_t> ambiguous;
   for (const RayAmbiguity& a : original.ambiguous) ambiguous.insert(a.ray);
-  uint32_t clearHit = ~0u;
+  uint32_t clear_hit = ~0u;
   const uint32_t words = recordWords();
-  for (uint32_t ray = 0; ray < 32 && clearHit == ~0u; ++ray)
+  for (uint32_t ray = 0; ray < 32 && clear_hit == ~0u; ++ray)
     if (!ambiguous.count(ray) &&
         original.records[ray * words + findRecordField("hit")->offset] == 1 &&
         original.records[ray * words + findRecordField("instance_id")->offset] != 2)  // a triangle
-      clearHit = ray;
-  ASSERT_NE(clearHit, ~0u);
+      clear_hit = ray;
+  ASSERT_NE(clear_hit, ~0u);
   for (const char* field : {"primitive_id", "instance_id", "hit", "hit_t"}) {
     Results edited = permuted;
-    uint32_t& w = edited.records[clearHit * words + findRecordField(field)->offset];
+    uint32_t& w = edited.records[clear_hit * words + findRecordField(field)->offset];
     w = std::string(field) == "hit_t" ? w + 4096 : std::string(field) == "hit" ? 0 : w ^ 2;
     const auto problems = comparePermuted(p, original, edited);
     ASSERT_EQ(problems.size(), 1u) << field;
-    EXPECT_NE(problems[0].find("ray " + std::to_string(clearHit) + ": clear, "), std::string::npos)
+    EXPECT_NE(problems[0].find("ray " + std::to_string(clear_hit) + ": clear, "), std::string::npos)
         << problems[0];
   }
   // An ambiguous ray answering outside its legal set.

@@ -44,9 +44,9 @@ outputs:
   per_ray: [hit, instance_id, geometry_index, primitive_id]
 )";
 
-Case stacked(const std::string& anyHit) {
+Case stacked(const std::string& any_hit) {
   std::string text = kStacked;
-  text.replace(text.find("ANY_HIT"), 7, anyHit);
+  text.replace(text.find("ANY_HIT"), 7, any_hit);
   return parseInline(text, "anyhit/order");
 }
 
@@ -75,7 +75,7 @@ TEST(ModelOrder, TerminatingAnyHitMakesEitherStackedTriangleLegal) {
 // where a terminating any-hit makes it legal, and fails where whatever the
 // order the traversal ends on the near one.
 TEST(ModelOrder, AFarAnswerPassesOnlyWhereTheOrderAllowsIt) {
-  auto farDevice = [](const Results& model) {
+  auto far_device = [](const Results& model) {
     Results d = model;
     d.backend = "vulkan";
     d.ambiguous.clear();
@@ -83,12 +83,12 @@ TEST(ModelOrder, AFarAnswerPassesOnlyWhereTheOrderAllowsIt) {
     return d;
   };
   const Case any = stacked("[count: anyhit, terminate]");
-  const Results anyModel = runExact(any);
-  const Verdict pass = compareResults(any, derivePlan(any), farDevice(anyModel), anyModel);
+  const Results any_model = runExact(any);
+  const Verdict pass = compareResults(any, derivePlan(any), far_device(any_model), any_model);
   EXPECT_EQ(pass.status, Status::Pass) << pass.headline();
   const Case near = stacked("[count: anyhit, {if: {eq: [primitive_id, 0]}, then: [terminate]}]");
-  const Results nearModel = runExact(near);
-  const Verdict fail = compareResults(near, derivePlan(near), farDevice(nearModel), nearModel);
+  const Results near_model = runExact(near);
+  const Verdict fail = compareResults(near, derivePlan(near), far_device(near_model), near_model);
   EXPECT_EQ(fail.status, Status::Fail) << fail.headline();
 }
 
@@ -109,14 +109,14 @@ TEST(ModelOrder, TerminateOnTheFarTriangleOnlyIsStillOrderDependent) {
 // near triangle (whatever comes first, it ends on it), an any-hit that never
 // terminates, and opaque geometry (no any-hit runs).
 TEST(ModelOrder, OrderIndependentAnswersStayClear) {
-  for (const char* anyHit :
+  for (const char* any_hit :
        {"[count: anyhit, {if: {eq: [primitive_id, 0]}, then: [terminate]}]", "[count: anyhit]",
         "[count: anyhit, {if: {eq: [primitive_id, 1]}, then: [ignore]}]"}) {
-    const Results r = runExact(stacked(anyHit));
+    const Results r = runExact(stacked(any_hit));
     ASSERT_EQ(r.statusText(), "ok");
     EXPECT_TRUE(r.ambiguous.empty())
-        << anyHit << ": " << ambiguityReasonName(r.ambiguous[0].reason);
-    EXPECT_EQ(answer(r, 0), (Key{0, 0, 0})) << anyHit;
+        << any_hit << ": " << ambiguityReasonName(r.ambiguous[0].reason);
+    EXPECT_EQ(answer(r, 0), (Key{0, 0, 0})) << any_hit;
   }
   Case opaque = stacked("[count: anyhit, terminate]");
   opaque.scene.blases[0].geometries[0].flags = kGeometryOpaque;

@@ -97,10 +97,10 @@ TEST(ModelSphere, NearlyTangentHitGetsAWiderTBoundThanACentralHit) {
 TEST(ModelSphere, RootNearTminIsAmbiguous) {
   // The ray starts just below the sphere (z = -1) going up: its near root is
   // ~tmin (0.001), its far root clear.
-  Ray onSurface = downRay(0, 0, -1.001f);
-  onSurface.direction = {0, 0, 1};
+  Ray on_surface = downRay(0, 0, -1.001f);
+  on_surface.direction = {0, 0, 1};
   Ray clear = downRay(0, 0, 0);  // from the centre: far root 1, clear
-  Case c = sphereCase({onSurface, clear});
+  Case c = sphereCase({on_surface, clear});
   Results r = run(c, ModelTier::Exact);
   ASSERT_EQ(r.statusText(), "ok");
   std::map<uint32_t, const RayAmbiguity*> amb;

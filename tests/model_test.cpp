@@ -538,11 +538,11 @@ TEST(Model, LegalAnswersFollowAnyHitOnSharedEdge) {
 }
 
 TEST(Model, NanInYTriangleStaysActiveAndHugeTrianglesAreHit) {
-  std::array<Vec3, 3> nanY = {Vec3{0, NAN, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}};
-  std::array<Vec3, 3> nanX = {Vec3{NAN, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}};
-  EXPECT_FALSE(triangleInactive(nanY));
-  EXPECT_TRUE(needsOwnTriangleTest(nanY));
-  EXPECT_TRUE(triangleInactive(nanX));
+  std::array<Vec3, 3> nan_y = {Vec3{0, NAN, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}};
+  std::array<Vec3, 3> nan_x = {Vec3{NAN, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}};
+  EXPECT_FALSE(triangleInactive(nan_y));
+  EXPECT_TRUE(needsOwnTriangleTest(nan_y));
+  EXPECT_TRUE(triangleInactive(nan_x));
   for (ModelTier tier : kTiers) {
     Geometry g;
     g.flags = kGeometryOpaque;
@@ -614,7 +614,7 @@ TEST(Model, EveryCaseFileRunsInEveryTier) {
     }
     const Case& c = *p.value;
     const Plan plan = derivePlan(c);
-    BulkWords fastRecords;
+    BulkWords fast_records;
     for (ModelTier tier : kTiers) {
       Results r = runOnModel(c, plan, ModelOptions{tier, 2});
       EXPECT_EQ(r.statusText(), "ok") << c.name << " " << modelTierName(tier);
@@ -626,24 +626,24 @@ TEST(Model, EveryCaseFileRunsInEveryTier) {
       }
       ASSERT_EQ(r.records.size(), size_t(c.rays.width) * c.rays.height * recordWords()) << c.name;
       // One trace per launch: closest-hit xor miss (more traces run more).
-      const bool oneTrace = !plan.nested_trace && c.pipeline.raygen.size() == 1 &&
-                            c.pipeline.raygen[0].kind == Stmt::Kind::Trace;
-      for (uint32_t i = 0; i < c.rays.width * c.rays.height && oneTrace; ++i)
+      const bool one_trace = !plan.nested_trace && c.pipeline.raygen.size() == 1 &&
+                             c.pipeline.raygen[0].kind == Stmt::Kind::Trace;
+      for (uint32_t i = 0; i < c.rays.width * c.rays.height && one_trace; ++i)
         EXPECT_LE(word(r, i, "closest_hit_runs") + word(r, i, "miss_runs"), 1u)
             << c.name << " ray " << i;
       if (tier != ModelTier::Exact) continue;
       // Rays the exact tier calls clear agree with the fast tier.
-      if (fastRecords.empty()) {
-        fastRecords = runOnModel(c, plan, ModelOptions{ModelTier::Fast, 1}).records;
+      if (fast_records.empty()) {
+        fast_records = runOnModel(c, plan, ModelOptions{ModelTier::Fast, 1}).records;
         std::vector<bool> amb(c.rays.width * c.rays.height, false);
         for (const RayAmbiguity& a : r.ambiguous) amb[a.ray] = true;
         uint32_t differ = 0;
         const uint32_t words = recordWords();
         for (uint32_t i = 0; i < c.rays.width * c.rays.height; ++i) {
           if (amb[i]) continue;
-          if (word(r, i, "hit") != fastRecords[i * words + findRecordField("hit")->offset] ||
+          if (word(r, i, "hit") != fast_records[i * words + findRecordField("hit")->offset] ||
               word(r, i, "primitive_id") !=
-                  fastRecords[i * words + findRecordField("primitive_id")->offset])
+                  fast_records[i * words + findRecordField("primitive_id")->offset])
             ++differ;
         }
         EXPECT_EQ(differ, 0u) << c.name;

@@ -65,13 +65,13 @@ TEST(ModelThreads, ImagesWrittenPerChunkFollowTheRecords) {
   ASSERT_EQ(one.images.size(), 2u);
   ASSERT_EQ(one.images[0].texels.size(), size_t{n});
   ASSERT_EQ(one.images[1].texels.size(), size_t{n} * 4);
-  const uint32_t oneBits = std::bit_cast<uint32_t>(1.0f);
+  const uint32_t one_bits = std::bit_cast<uint32_t>(1.0f);
   for (uint32_t i = 0; i < n; ++i) {
     ASSERT_EQ(one.images[0].texels[i], word(one, i, "primitive_id")) << i;
     ASSERT_EQ(one.images[1].texels[i * 4], word(one, i, "hit_t")) << i;
     ASSERT_EQ(one.images[1].texels[i * 4 + 1], 0u) << i;
     ASSERT_EQ(one.images[1].texels[i * 4 + 2], 0u) << i;
-    ASSERT_EQ(one.images[1].texels[i * 4 + 3], oneBits) << i;
+    ASSERT_EQ(one.images[1].texels[i * 4 + 3], one_bits) << i;
   }
   ASSERT_EQ(seven.images.size(), 2u);
   for (size_t k = 0; k < 2; ++k) EXPECT_TRUE(seven.images[k].texels == one.images[k].texels) << k;

@@ -122,8 +122,8 @@ Disagreements countDisagreements(const Results& exact, const Results& other, con
       // is that rounding itself, near 0, where a ULP of t_exact is no scale
       // for a device's error (one float step of the coordinates is millions
       // of them). Left out of the t errors; its answer is still checked above.
-      const bool tminTie = a && a->reason == AmbiguityReason::TminTie;
-      if (!different && !tminTie && written(e, f.t) && written(o, f.t))
+      const bool tmin_tie = a && a->reason == AmbiguityReason::TminTie;
+      if (!different && !tmin_tie && written(e, f.t) && written(o, f.t))
         d.t.add(ulpError(std::bit_cast<float>(o[f.offset(f.t)]),
                          std::bit_cast<float>(e[f.offset(f.t)])));
     }

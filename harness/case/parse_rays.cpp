@@ -61,11 +61,11 @@ void noteUndefinedRay(YamlReader& r, const YAML::Node& n, const std::string& fie
   }
   const bool own_tmin = YamlReader::has(n, "tmin"), own_tmax = YamlReader::has(n, "tmax");
   const bool bad_tmin = own_tmin && !(ray.tmin >= 0), bad_tmax = own_tmax && !(ray.tmax >= 0);
-  auto negativeOrNan = [](const char* name, float v) {
+  auto negative_or_nan = [](const char* name, float v) {
     return std::string(name) + (std::isnan(v) ? " is NaN" : " " + number(v) + " is negative");
   };
-  if (bad_tmin) note("tmin", negativeOrNan("tmin", ray.tmin));
-  if (bad_tmax) note("tmax", negativeOrNan("tmax", ray.tmax));
+  if (bad_tmin) note("tmin", negative_or_nan("tmin", ray.tmin));
+  if (bad_tmax) note("tmax", negative_or_nan("tmax", ray.tmax));
   if (!bad_tmin && !bad_tmax && (own_tmin || own_tmax) && ray.tmin > ray.tmax)
     note(own_tmax ? "tmax" : "tmin",
          "tmax " + number(ray.tmax) + " is below tmin " + number(ray.tmin));
@@ -209,16 +209,16 @@ void parseAim(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& rays
     return YamlReader::get(n, key);
   };
   bool ok = true;
-  auto uintField = [&](const char* key, uint32_t max, uint32_t& out) {
+  auto uint_field = [&](const char* key, uint32_t max, uint32_t& out) {
     if (!YamlReader::has(n, key)) return;
     if (auto v = r.uint(get(key), field + "." + key, max))
       out = *v;
     else
       ok = false;
   };
-  uintField("instance", 0xFFFFFF, spec.instance);
-  uintField("geometry", 0xFFFFFF, spec.geometry);
-  uintField("edge_points", 64, spec.edge_points);
+  uint_field("instance", 0xFFFFFF, spec.instance);
+  uint_field("geometry", 0xFFFFFF, spec.geometry);
+  uint_field("edge_points", 64, spec.edge_points);
   if (YamlReader::has(n, "at") && !featureList(r, get("at"), field + ".at", spec)) ok = false;
   if (auto o = r.numbers<3>(get("offset"), field + ".offset"))
     spec.offset = *o;

@@ -36,14 +36,14 @@ double linearDeterminant(const Transform& t) {
 std::array<double, 12> invertTransform(const Transform& m) {
   const double a = m[0], b = m[1], c = m[2], d = m[4], e = m[5], f = m[6], g = m[8], h = m[9],
                i = m[10];
-  const double A = e * i - f * h, B = -(d * i - f * g), C = d * h - e * g;
-  const double det = a * A + b * B + c * C;
+  const double cof0 = e * i - f * h, cof1 = -(d * i - f * g), cof2 = d * h - e * g;
+  const double det = a * cof0 + b * cof1 + c * cof2;
   std::array<double, 12> r{};
   if (det == 0.0 || std::isnan(det)) return r;
   const double inv = 1.0 / det;
-  const double l[9] = {A * inv, -(b * i - c * h) * inv, (b * f - c * e) * inv,
-                       B * inv, (a * i - c * g) * inv,  -(a * f - c * d) * inv,
-                       C * inv, -(a * h - b * g) * inv, (a * e - b * d) * inv};
+  const double l[9] = {cof0 * inv, -(b * i - c * h) * inv, (b * f - c * e) * inv,
+                       cof1 * inv, (a * i - c * g) * inv,  -(a * f - c * d) * inv,
+                       cof2 * inv, -(a * h - b * g) * inv, (a * e - b * d) * inv};
   for (int row = 0; row < 3; ++row) {
     r[row * 4 + 0] = l[row * 3 + 0];
     r[row * 4 + 1] = l[row * 3 + 1];

@@ -5,8 +5,8 @@
 #include "cli/commands.h"
 #include "cli/option_checks.h"
 #include "cli/subcommands.h"
-#include "fault/planted_fault.h"
 #include "metamorphic/motion_spec.h"
+#include "run/fault_seam.h"
 #include "run/run_loop.h"
 #include "vulkan/device_errors.h"
 
@@ -106,10 +106,7 @@ void addIsolationOptions(CLI::App* run, RunOptions& run_opt) {
 // Runs that change what is run: saved device results, permuted and moved
 // scenes, and (tests only) planted faults.
 void addVariantOptions(CLI::App* run, RunOptions& run_opt, std::string& move_spec) {
-  std::string fault_list;
-  for (const std::string& name : faultNames())
-    fault_list += (fault_list.empty() ? "" : ", ") + name;
-  for (const std::string& name : deviceErrorFaultNames()) fault_list += ", " + name;
+  const std::string fault_list = plantableFaultNames();
   run->add_option("--device-results", run_opt.device_results,
                   "Run no device: judge the device bundles a run saved in this folder "
                   "(DIR/<case>/device, e.g. from a run-only build) against the model run here");

@@ -21,14 +21,14 @@ const char* counterModeName(CounterMode m) {
 std::map<std::string, CounterMode> counterModes(const Case& c) {
   std::map<std::string, CounterMode> modes;
   for (const std::string& name : c.outputs.counters) modes[name] = CounterMode::Exact;
-  auto traversalDependent = [&](const Program& p) {
+  auto traversal_dependent = [&](const Program& p) {
     walkStatements(p, [&](const Stmt& s) {
       if (s.kind == Stmt::Kind::Count) modes[s.counter] = CounterMode::Informational;
     });
   };
   for (const HitGroup& g : c.pipeline.hit_groups) {
-    if (g.any_hit) traversalDependent(*g.any_hit);
-    if (g.intersection) traversalDependent(*g.intersection);
+    if (g.any_hit) traversal_dependent(*g.any_hit);
+    if (g.intersection) traversal_dependent(*g.intersection);
   }
   // What the case declares wins.
   for (const auto& [name, mode] : c.outputs.counter_modes) {

@@ -31,7 +31,7 @@ std::string opacityCullIgnored(Case& c, ModelOptions&) {
 // Only a device that does not find the closest hit first can show it: one
 // that traverses far to near (legal) and ignores the flag.
 std::string firstHitFlagIgnored(Case& c, ModelOptions& o) {
-  o.order = CandidateOrder::ReverseDistance;
+  o.faults.order = CandidateOrder::ReverseDistance;
   return ignoreFlags(c, kRayTerminateOnFirstHit, 0,
                      "TerminateOnFirstHit (candidates found far to near)");
 }
@@ -50,14 +50,14 @@ std::string skipAabbsIgnored(Case& c, ModelOptions&) {
 
 // R-ORDER-UNSPEC, legal: the candidates decided far to near.
 std::string reverseOrder(Case&, ModelOptions& o) {
-  o.order = CandidateOrder::ReverseDistance;
+  o.faults.order = CandidateOrder::ReverseDistance;
   return "candidates decided far to near";
 }
 
 // An order-dependent device: every trace ends at its first confirmed
 // candidate in the order of the build (instance, geometry, primitive).
 std::string buildOrderFirstHit(Case& c, ModelOptions& o) {
-  o.order = CandidateOrder::BuildOrder;
+  o.faults.order = CandidateOrder::BuildOrder;
   setRayFlags(c, kRayTerminateOnFirstHit);
   return "first confirmed candidate in build order wins";
 }

@@ -177,12 +177,12 @@ size_t hideLastActivePrimitives(Geometry& g) {
         g.aabbs.size(), [&](size_t i) { return std::isnan(g.aabbs[i][0]); },
         [&](size_t i) { g.aabbs[i][0] = std::nanf(""); });
   if (!g.indices.empty()) return 0;  // a vertex may be shared: left alone
-  auto nanX = [&](size_t p) {
+  auto nan_x = [&](size_t p) {
     for (size_t k = 0; k < 3; ++k)
       if (std::isnan(g.vertices[p * 3 + k][0])) return true;
     return false;
   };
-  return hideLastActive(g.vertices.size() / 3, nanX,
+  return hideLastActive(g.vertices.size() / 3, nan_x,
                         [&](size_t p) { g.vertices[p * 3][0] = std::nanf(""); });
 }
 

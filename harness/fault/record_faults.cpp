@@ -151,9 +151,9 @@ FaultResult leakEdge(RecordFaultArgs& a) {
   RecordEdit& dev = a.dev;
   for (const RayAmbiguity& amb : a.model.ambiguous) {
     if (amb.reason != AmbiguityReason::Edge && amb.reason != AmbiguityReason::Vertex) continue;
-    bool missLegal = false;
-    for (const Candidate& k : amb.candidates) missLegal = missLegal || !k.hit;
-    const bool leak = crossesSharedEdge(a.c, amb) || (!missLegal && !crossesBorderOnly(a.c, amb));
+    bool miss_legal = false;
+    for (const Candidate& k : amb.candidates) miss_legal = miss_legal || !k.hit;
+    const bool leak = crossesSharedEdge(a.c, amb) || (!miss_legal && !crossesBorderOnly(a.c, amb));
     if (!leak || amb.ray >= dev.rays() || dev.get(amb.ray, "closest_hit_runs") == 0) continue;
     dev.set(amb.ray, "closest_hit_runs", 0);
     dev.set(amb.ray, "miss_runs", 1);

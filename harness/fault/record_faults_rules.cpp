@@ -57,7 +57,7 @@ uint32_t inactiveBefore(const Geometry& g, uint32_t p) {
 // the first one with an inactive primitive.
 const Geometry* hitGeometry(const Case& c, const RecordView& v, uint32_t ray) {
   const auto& insts = c.scene.instances;
-  auto withInactive = [&](const Geometry& g) {
+  auto with_inactive = [&](const Geometry& g) {
     return inactiveBefore(g, g.primitiveCount()) > 0;
   };
   const Blas* blas = nullptr;
@@ -68,7 +68,7 @@ const Geometry* hitGeometry(const Case& c, const RecordView& v, uint32_t ray) {
     for (const Instance& inst : insts)
       if (!blas && inst.blas)
         for (const Geometry& g : c.scene.blases[*inst.blas].geometries)
-          if (withInactive(g)) blas = &c.scene.blases[*inst.blas];
+          if (with_inactive(g)) blas = &c.scene.blases[*inst.blas];
   }
   if (!blas) return nullptr;
   if (v.written(ray, "geometry_index")) {
@@ -76,7 +76,7 @@ const Geometry* hitGeometry(const Case& c, const RecordView& v, uint32_t ray) {
     return gi < blas->geometries.size() ? &blas->geometries[gi] : nullptr;
   }
   for (const Geometry& g : blas->geometries)
-    if (withInactive(g)) return &g;
+    if (with_inactive(g)) return &g;
   return nullptr;
 }
 
@@ -171,11 +171,11 @@ FaultResult tmaxViewInitial(RecordFaultArgs& a) {
 FaultResult builtinWrong(RecordFaultArgs& a) {
   const std::vector<FieldWrite> writes = fieldWrites(a.c);
   for (const std::string& field : a.c.outputs.per_ray) {
-    bool fromBuiltin = false;
+    bool from_builtin = false;
     for (const FieldWrite& w : writes)
-      fromBuiltin = fromBuiltin || (w.field == field && readsBuiltin(*w.value, isApiBuiltin));
+      from_builtin = from_builtin || (w.field == field && readsBuiltin(*w.value, isApiBuiltin));
     const RecordField* f = findRecordField(field);
-    if (!fromBuiltin || !f) continue;
+    if (!from_builtin || !f) continue;
     for (uint32_t ray = 0; ray < a.dev.rays(); ++ray) {
       if (a.ambiguous.count(ray) || !a.dev.written(ray, field)) continue;
       if (f->type == FieldType::Uint) {

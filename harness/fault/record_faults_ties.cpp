@@ -10,9 +10,9 @@ FaultResult tieAnsweredNeither(RecordFaultArgs& a) {
     if (amb.reason != AmbiguityReason::TTie && amb.reason != AmbiguityReason::TmaxTie &&
         amb.reason != AmbiguityReason::TminTie)
       continue;
-    bool missLegal = false;
-    for (const Candidate& k : amb.candidates) missLegal = missLegal || !k.hit;
-    if (missLegal || amb.ray >= dev.rays() || dev.get(amb.ray, "closest_hit_runs") == 0) continue;
+    bool miss_legal = false;
+    for (const Candidate& k : amb.candidates) miss_legal = miss_legal || !k.hit;
+    if (miss_legal || amb.ray >= dev.rays() || dev.get(amb.ray, "closest_hit_runs") == 0) continue;
     dev.set(amb.ray, "closest_hit_runs", 0);
     dev.set(amb.ray, "miss_runs", 1);
     if (dev.written(amb.ray, "hit")) dev.set(amb.ray, "hit", 0);

@@ -51,27 +51,27 @@ Answer originalAnswer(const Records& rec, uint32_t ray) {
 Answer ledBack(const CasePermutation& p, const Records& rec, uint32_t ray) {
   Answer a;
   if ((a.hit_known = rec.written(ray, "hit"))) a.hit = rec.word(ray, "hit") != 0;
-  uint32_t instanceNew = kUnknown;
+  uint32_t instance_new = kUnknown;
   if (rec.written(ray, "instance_id")) {
-    instanceNew = rec.word(ray, "instance_id");
-    a.instance = instanceNew < p.instance_of.size() ? p.instance_of[instanceNew] : instanceNew;
+    instance_new = rec.word(ray, "instance_id");
+    a.instance = instance_new < p.instance_of.size() ? p.instance_of[instance_new] : instance_new;
   }
   if (rec.written(ray, "geometry_index")) a.geometry = rec.word(ray, "geometry_index");
   if (!rec.written(ray, "primitive_id")) return a;
-  const uint32_t primitiveNew = rec.word(ray, "primitive_id");
+  const uint32_t primitive_new = rec.word(ray, "primitive_id");
   const std::vector<Instance>& instances = p.permuted.scene.instances;
   std::set<uint32_t> blases;
-  if (instanceNew < instances.size() && instances[instanceNew].blas)
-    blases.insert(*instances[instanceNew].blas);
-  if (instanceNew == kUnknown)
+  if (instance_new < instances.size() && instances[instance_new].blas)
+    blases.insert(*instances[instance_new].blas);
+  if (instance_new == kUnknown)
     for (const Instance& i : instances)
       if (i.blas) blases.insert(*i.blas);
   for (uint32_t b : blases) {
     if (b >= p.primitive_of.size()) continue;
     for (uint32_t g = 0; g < p.primitive_of[b].size(); ++g) {
       if (a.geometry != kUnknown && g != a.geometry) continue;
-      const std::vector<uint32_t>& oldOf = p.primitive_of[b][g];
-      a.primitives.insert(primitiveNew < oldOf.size() ? oldOf[primitiveNew] : primitiveNew);
+      const std::vector<uint32_t>& old_of = p.primitive_of[b][g];
+      a.primitives.insert(primitive_new < old_of.size() ? old_of[primitive_new] : primitive_new);
     }
   }
   return a;
@@ -140,21 +140,21 @@ std::vector<std::string> comparePermuted(const CasePermutation& p, const Results
     note(seed + "status " + original.statusText() + " / " + permuted.statusText());
     return out;
   }
-  std::set<uint32_t> undefinedA, undefinedB;
-  for (const UndefinedRay& u : original.undefined) undefinedA.insert(u.ray);
-  for (const UndefinedRay& u : permuted.undefined) undefinedB.insert(u.ray);
-  for (uint32_t ray : undefinedA)
-    if (!undefinedB.count(ray))
+  std::set<uint32_t> undefined_a, undefined_b;
+  for (const UndefinedRay& u : original.undefined) undefined_a.insert(u.ray);
+  for (const UndefinedRay& u : permuted.undefined) undefined_b.insert(u.ray);
+  for (uint32_t ray : undefined_a)
+    if (!undefined_b.count(ray))
       note(seed + "ray " + std::to_string(ray) + " undefined only in the original");
-  for (uint32_t ray : undefinedB)
-    if (!undefinedA.count(ray))
+  for (uint32_t ray : undefined_b)
+    if (!undefined_a.count(ray))
       note(seed + "ray " + std::to_string(ray) + " undefined only in the permutation");
   std::map<uint32_t, const RayAmbiguity*> ambiguous;
   for (const RayAmbiguity& a : original.ambiguous) ambiguous[a.ray] = &a;
   const Records orig(original), perm(permuted);
   const uint32_t rays = original.width * original.height;
   for (uint32_t ray = 0; ray < rays; ++ray) {
-    if (undefinedA.count(ray) || !orig.has(ray) || !perm.has(ray)) continue;
+    if (undefined_a.count(ray) || !orig.has(ray) || !perm.has(ray)) continue;
     const std::string which = seed + "ray " + std::to_string(ray) + ": ";
     if (const auto it = ambiguous.find(ray); it != ambiguous.end()) {
       const Answer led = ledBack(p, perm, ray);

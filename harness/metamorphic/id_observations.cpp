@@ -30,10 +30,10 @@ struct Observer {
     }
     // id < v, id <= v (id < v + 1), v < id (not id < v + 1), v <= id (not id < v): one threshold
     // each.
-    const bool idFirst = left;
+    const bool id_first = left;
     const bool strict = e.name == "lt" || e.name == "gt";
-    const bool lessThan = (e.name == "lt" || e.name == "le") == idFirst;  // id on the small side
-    out.below.push_back(lessThan == strict ? v : v + 1);
+    const bool less_than = (e.name == "lt" || e.name == "le") == id_first;  // id on the small side
+    out.below.push_back(less_than == strict ? v : v + 1);
     return true;
   }
 

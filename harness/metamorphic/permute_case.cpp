@@ -18,17 +18,17 @@ void shuffle(std::vector<uint32_t>& v, std::mt19937_64& rng) {
 // new index -> old index, each id kept in its class.
 std::vector<uint32_t> classPermutation(uint32_t n, const IdObservations& seen,
                                        std::mt19937_64& rng) {
-  std::vector<uint32_t> oldOf(n);
-  for (uint32_t i = 0; i < n; ++i) oldOf[i] = i;
-  if (seen.exact) return oldOf;
+  std::vector<uint32_t> old_of(n);
+  for (uint32_t i = 0; i < n; ++i) old_of[i] = i;
+  if (seen.exact) return old_of;
   std::map<std::vector<uint64_t>, std::vector<uint32_t>> classes;
   for (uint32_t i = 0; i < n; ++i) classes[seen.classOf(i)].push_back(i);
   for (auto& [key, positions] : classes) {
     std::vector<uint32_t> from = positions;
     shuffle(from, rng);
-    for (size_t j = 0; j < positions.size(); ++j) oldOf[positions[j]] = from[j];
+    for (size_t j = 0; j < positions.size(); ++j) old_of[positions[j]] = from[j];
   }
-  return oldOf;
+  return old_of;
 }
 
 std::vector<uint32_t> anyPermutation(uint32_t n, std::mt19937_64& rng) {
@@ -38,32 +38,33 @@ std::vector<uint32_t> anyPermutation(uint32_t n, std::mt19937_64& rng) {
   return v;
 }
 
-void permuteTriangles(Geometry& g, const std::vector<uint32_t>& oldOf, std::mt19937_64& rng) {
-  const uint32_t n = static_cast<uint32_t>(oldOf.size());
+void permuteTriangles(Geometry& g, const std::vector<uint32_t>& old_of, std::mt19937_64& rng) {
+  const uint32_t n = static_cast<uint32_t>(old_of.size());
   if (g.indices.empty()) {
     const std::vector<Vec3> old = g.vertices;
     for (uint32_t p = 0; p < n; ++p)
-      for (int k = 0; k < 3; ++k) g.vertices[p * 3 + k] = old[oldOf[p] * 3 + k];
+      for (int k = 0; k < 3; ++k) g.vertices[p * 3 + k] = old[old_of[p] * 3 + k];
     return;
   }
-  const std::vector<uint32_t> oldIndices = g.indices;
+  const std::vector<uint32_t> old_indices = g.indices;
   for (uint32_t p = 0; p < n; ++p)
-    for (int k = 0; k < 3; ++k) g.indices[p * 3 + k] = oldIndices[oldOf[p] * 3 + k];
+    for (int k = 0; k < 3; ++k) g.indices[p * 3 + k] = old_indices[old_of[p] * 3 + k];
   // The vertex buffer too: vertex order is invisible, only the indices say
   // which vertices a triangle shares (bit-identical positions stay so).
-  const std::vector<uint32_t> vertexOldOf =
+  const std::vector<uint32_t> vertex_old_of =
       anyPermutation(static_cast<uint32_t>(g.vertices.size()), rng);
-  std::vector<uint32_t> vertexNewOf(vertexOldOf.size());
-  for (uint32_t v = 0; v < vertexOldOf.size(); ++v) vertexNewOf[vertexOldOf[v]] = v;
-  const std::vector<Vec3> oldVertices = g.vertices;
-  for (uint32_t v = 0; v < vertexOldOf.size(); ++v) g.vertices[v] = oldVertices[vertexOldOf[v]];
+  std::vector<uint32_t> vertex_new_of(vertex_old_of.size());
+  for (uint32_t v = 0; v < vertex_old_of.size(); ++v) vertex_new_of[vertex_old_of[v]] = v;
+  const std::vector<Vec3> old_vertices = g.vertices;
+  for (uint32_t v = 0; v < vertex_old_of.size(); ++v)
+    g.vertices[v] = old_vertices[vertex_old_of[v]];
   for (uint32_t& i : g.indices)
-    if (i < vertexNewOf.size()) i = vertexNewOf[i];  // an index out of range stays out of range
+    if (i < vertex_new_of.size()) i = vertex_new_of[i];  // an index out of range stays out of range
 }
 
-bool moved(const std::vector<uint32_t>& oldOf) {
-  for (uint32_t i = 0; i < oldOf.size(); ++i)
-    if (oldOf[i] != i) return true;
+bool moved(const std::vector<uint32_t>& old_of) {
+  for (uint32_t i = 0; i < old_of.size(); ++i)
+    if (old_of[i] != i) return true;
   return false;
 }
 
@@ -93,14 +94,14 @@ CasePermutation permuteCase(const Case& c, uint64_t seed) {
   out.primitive_of.resize(scene.blases.size());
   for (size_t b = 0; b < scene.blases.size(); ++b) {
     for (Geometry& g : scene.blases[b].geometries) {
-      const std::vector<uint32_t> oldOf = classPermutation(g.primitiveCount(), primitives, rng);
+      const std::vector<uint32_t> old_of = classPermutation(g.primitiveCount(), primitives, rng);
       if (g.kind == Geometry::Kind::Aabbs) {
         const auto old = g.aabbs;
-        for (uint32_t p = 0; p < oldOf.size(); ++p) g.aabbs[p] = old[oldOf[p]];
+        for (uint32_t p = 0; p < old_of.size(); ++p) g.aabbs[p] = old[old_of[p]];
       } else {
-        permuteTriangles(g, oldOf, rng);
+        permuteTriangles(g, old_of, rng);
       }
-      out.primitive_of[b].push_back(oldOf);
+      out.primitive_of[b].push_back(old_of);
     }
   }
   out.instance_of = classPermutation(static_cast<uint32_t>(scene.instances.size()), instances, rng);

@@ -108,11 +108,11 @@ ExactEnds exactEnds(const DVec3& o, const DVec3& d, const DVec3& v0, const DVec3
   if (!g.fits() || !rcpMultiplyExact(o, d, v0, v1, v2, axis, t)) return r;
   // At or beyond an end the comparison is exact whatever the end's grid;
   // inside it, only when the end is on the grid too.
-  Grid withMin = g, withMax = g;
-  withMin.add(tmin);
-  withMax.add(tmax);
-  r.tmin = t <= tmin || withMin.fits();
-  r.tmax = t >= tmax || withMax.fits();
+  Grid with_min = g, with_max = g;
+  with_min.add(tmin);
+  with_max.add(tmax);
+  r.tmin = t <= tmin || with_min.fits();
+  r.tmax = t >= tmax || with_max.fits();
   return r;
 }
 

@@ -43,7 +43,7 @@ namespace rayspec {
 constexpr int kExactGridBits = 6;  // 3 * (Q - q + 1) + 3 <= 24
 
 // Criterion 1 for the world ray through this instance.
-bool objectRayExact(InstanceForm form, const Transform& objectToWorld, const DVec3& worldOrigin);
+bool objectRayExact(InstanceForm form, const Transform& object_to_world, const DVec3& world_origin);
 
 // Criteria 2 and 3 for the object-space ray o + t d and the triangle, and
 // whether a device's comparison with each end of [tmin, tmax] is exact.

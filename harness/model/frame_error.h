@@ -22,14 +22,14 @@ namespace rayspec {
 //   General: rotations and shears: the inverse and its application in float
 //     (sphere_error.h objectRayError, a few roundings of every magnitude).
 enum class InstanceForm { Identity, ScaledPermutation, General };
-InstanceForm instanceForm(const Transform& objectToWorld);
+InstanceForm instanceForm(const Transform& object_to_world);
 
 // Origin and direction parts of the frame error of a world ray seen through
 // an instance (inverse: world -> object, row-major 3x4, in double and as the
 // float matrix a device may hold).
 void objectRayFrameError(InstanceForm form, const std::array<double, 12>& inverse,
-                         const std::array<float, 12>& inverse_f, const DVec3& worldOrigin,
-                         const DVec3& worldDirection, FrameError& err);
+                         const std::array<float, 12>& inverse_f, const DVec3& world_origin,
+                         const DVec3& world_direction, FrameError& err);
 
 // Per component, the most a device's vertex may differ from the model's when
 // both apply the geometry transform `m` to the source vertices in float, each
@@ -39,6 +39,6 @@ DVec3 geometryVertexError(const Transform& m, const std::vector<Vec3>& vertices)
 // How far outside a BLAS's own bounds a device's (and Embree's) object-space
 // ray may be off for rays through this instance that start near it (pads the
 // model's candidate boxes, model/box_pad.h).
-double instancePad(const std::array<double, 12>& inverse, const Transform& objectToWorld);
+double instancePad(const std::array<double, 12>& inverse, const Transform& object_to_world);
 
 }  // namespace rayspec

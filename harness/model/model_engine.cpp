@@ -40,17 +40,17 @@ bool setsSbtArguments(const Pipeline& p) {
 }
 
 // The largest hit record index any instance and geometry can reach, plus one,
-// for a trace's SBT offset and stride (4 bits each); `nonOpaque`: only
+// for a trace's SBT offset and stride (4 bits each); `non_opaque`: only
 // through a geometry of triangles that may be non-opaque (a device reads
 // their records whatever the order, not only the closest hit's).
-uint64_t hitRecordReach(const Case& c, bool nonOpaque, uint32_t offset, uint32_t stride) {
+uint64_t hitRecordReach(const Case& c, bool non_opaque, uint32_t offset, uint32_t stride) {
   uint64_t top = 0;
   for (const Instance& inst : c.scene.instances) {
     if (!inst.blas || *inst.blas >= c.scene.blases.size()) continue;
     const Blas& b = c.scene.blases[*inst.blas];
     for (uint64_t g = 0; g < b.geometries.size(); ++g) {
       const Geometry& geom = b.geometries[g];
-      if (nonOpaque && (geom.kind != Geometry::Kind::Triangles || (geom.flags & kGeometryOpaque)))
+      if (non_opaque && (geom.kind != Geometry::Kind::Triangles || (geom.flags & kGeometryOpaque)))
         continue;
       top = std::max<uint64_t>(top, uint64_t{inst.sbt_offset & 0xFFFFFF} + stride * g + offset + 1);
     }
@@ -63,17 +63,17 @@ uint64_t hitRecordReach(const Case& c, bool nonOpaque, uint32_t offset, uint32_t
 // them: any 4-bit value). The rays are read only when the largest 4-bit
 // values could reach beyond the region: a scan of every launch ray is a
 // serial pass over the whole ray list before any thread starts.
-bool hitRecordMayBeOutOfRange(const Case& c, bool nonOpaque) {
+bool hitRecordMayBeOutOfRange(const Case& c, bool non_opaque) {
   const size_t region =
       c.pipeline.sbt_hit.empty() ? c.pipeline.hit_groups.size() : c.pipeline.sbt_hit.size();
-  if (hitRecordReach(c, nonOpaque, 0xF, 0xF) <= region) return false;
+  if (hitRecordReach(c, non_opaque, 0xF, 0xF) <= region) return false;
   if (setsSbtArguments(c.pipeline)) return true;
   uint32_t offset = c.rays.defaults.sbt_offset & 0xF, stride = c.rays.defaults.sbt_stride & 0xF;
   for (const Ray& r : c.rays.rays) {
     offset = std::max(offset, r.sbt_offset & 0xF);
     stride = std::max(stride, r.sbt_stride & 0xF);
   }
-  return hitRecordReach(c, nonOpaque, offset, stride) > region;
+  return hitRecordReach(c, non_opaque, offset, stride) > region;
 }
 
 bool hasNanTriangles(const ModelScene& s) {
@@ -130,7 +130,7 @@ std::vector<const RecordField*> prepareImages(Results& r, const Plan& plan) {
 void writeTexels(Image& img, const RecordField& f, const uint32_t* records, size_t begin,
                  size_t end) {
   const uint32_t words = recordWords();
-  const uint32_t oneBits = std::bit_cast<uint32_t>(1.0f);
+  const uint32_t one_bits = std::bit_cast<uint32_t>(1.0f);
   uint32_t* texels = img.texels.data();
   for (size_t i = begin; i < end; ++i) {
     const uint32_t* rec = records + i * words;
@@ -139,7 +139,7 @@ void writeTexels(Image& img, const RecordField& f, const uint32_t* records, size
       continue;
     }
     for (uint32_t k = 0; k < 4; ++k)
-      texels[i * 4 + k] = k < f.words ? rec[f.offset + k] : (k == 3 ? oneBits : 0u);
+      texels[i * 4 + k] = k < f.words ? rec[f.offset + k] : (k == 3 ? one_bits : 0u);
   }
 }
 
@@ -169,10 +169,9 @@ ModelShared sharedState(const Case& c, const Plan& plan, const ModelOptions& opt
   shared.scene = &scene;
   shared.programs = &programs;
   shared.direct =
-      !scene.filters && !hasOwnTriangles(scene) && opt.order == CandidateOrder::Distance;
-  shared.order = opt.order;
+      !scene.filters && !hasOwnTriangles(scene) && opt.faults.order == CandidateOrder::Distance;
+  shared.faults = opt.faults;
   shared.need_facing = programs.reads(kBiHitKind);
-  shared.deviation = opt.deviation;
   // Read by the candidate path only (Machine::checkCandidates): a direct
   // run sees no candidates, so it is not worked out there.
   shared.check_candidates =
@@ -195,7 +194,7 @@ ModelShared sharedState(const Case& c, const Plan& plan, const ModelOptions& opt
 // by chunk by the worker that traced it. Rethrows a worker's exception.
 std::vector<std::unique_ptr<Machine>> traceInThreads(
     const ModelShared& shared, size_t n, unsigned threads, uint32_t* records, Results& r,
-    const std::vector<const RecordField*>& imageFields) {
+    const std::vector<const RecordField*>& image_fields) {
   const size_t words = recordWords();
   std::vector<std::unique_ptr<Machine>> machines(threads);
   std::vector<std::exception_ptr> failures(threads);
@@ -211,8 +210,8 @@ std::vector<std::unique_ptr<Machine>> traceInThreads(
         const size_t end = std::min(n, begin + chunk);
         if (records) std::fill(records + begin * words, records + end * words, 0u);
         m.runRays(static_cast<uint32_t>(begin), static_cast<uint32_t>(end));
-        for (size_t k = 0; k < imageFields.size(); ++k)
-          writeTexels(r.images[k], *imageFields[k], records, begin, end);
+        for (size_t k = 0; k < image_fields.size(); ++k)
+          writeTexels(r.images[k], *image_fields[k], records, begin, end);
       }
     } catch (...) {
       failures[t] = std::current_exception();  // rethrown below, after the join
@@ -302,14 +301,14 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
     if (plan.records) r.records.resize(n * words);
     uint32_t* records = plan.records ? r.records.data() : nullptr;
     if (records) adviseHugePages(records, n * words * sizeof(uint32_t));
-    const std::vector<const RecordField*> imageFields =
+    const std::vector<const RecordField*> image_fields =
         plan.records ? prepareImages(r, plan) : std::vector<const RecordField*>{};
     for (Image& img : r.images)
       adviseHugePages(img.texels.data(), img.texels.size() * sizeof(uint32_t));
     unsigned threads =
         opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
     threads = static_cast<unsigned>(std::min<size_t>(threads, std::max<size_t>(1, n / 64)));
-    gatherMachines(traceInThreads(shared, n, threads, records, r, imageFields), plan, r);
+    gatherMachines(traceInThreads(shared, n, threads, records, r, image_fields), plan, r);
   } catch (const std::exception& e) {
     r.setStatus(SideStatus::Crash, std::string("model: ") + e.what());
     r.records.clear();  // chunks no worker reached were never zeroed

@@ -20,6 +20,7 @@
 #include <string>
 
 #include "case/case.h"
+#include "model/model_faults.h"
 #include "plan/plan.h"
 #include "results/results.h"
 
@@ -30,25 +31,10 @@ ModelTier parseModelTier(
     const std::string& name);  // fast|robust|exact; throws std::invalid_argument
 const char* modelTierName(ModelTier t);
 
-// Test only (planted faults, harness/fault/): the model breaks one rule the
-// way a faulty device would.
-//   ClosedTriangleInterval: a triangle at exactly the ray's tmin or tmax is a
-//     candidate (R-CAND-TRI-OPEN broken).
-//   OpenAabbInterval: reportIntersectionEXT at exactly tmin or the current
-//     tmax returns false (R-CAND-AABB-CLOSED broken).
-enum class ModelDeviation { None, ClosedTriangleInterval, OpenAabbInterval };
-
-// The order the model decides a trace's candidates in (R-ORDER-UNSPEC).
-// Distance is the model's own (above); the others stand for devices that
-// traverse otherwise, for planted faults (fault/): far to near, and the
-// order of the build (instance, geometry, primitive).
-enum class CandidateOrder { Distance, ReverseDistance, BuildOrder };
-
 struct ModelOptions {
   ModelTier tier = ModelTier::Exact;
   unsigned threads = 0;  // 0 = all cores
-  ModelDeviation deviation = ModelDeviation::None;
-  CandidateOrder order = CandidateOrder::Distance;
+  ModelFaults faults;    // test only: the planted faults' hook (model/model_faults.h)
 };
 
 Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt);

@@ -93,12 +93,12 @@ void TraceClassifier::addCommitted(const Committed& b) {
 
 void TraceClassifier::findUnsure() {
   const TraceRay& r = tr_.ray;
-  const double finalT = tr_.best.valid ? tr_.best.t : INFINITY;
+  const double final_t = tr_.best.valid ? tr_.best.t : INFINITY;
   for (size_t k = 0; k < cands_.size(); ++k) {
     const ModelCandidate& cand = cands_[k];
     if (cand.aabb) {
       // A grazed box matters only if its what-if runs change the answer (tryUnsure).
-      if (cand.near_face && cand.t <= finalT + tr_.tol(cand.t)) {
+      if (cand.near_face && cand.t <= final_t + tr_.tol(cand.t)) {
         unsure_.push_back(k);
         faces_ = true;
       }
@@ -107,7 +107,7 @@ void TraceClassifier::findUnsure() {
     if (!eligible(cand)) continue;
     const double tl = tr_.tol(cand.t);
     std::optional<AmbiguityReason> why;
-    if (cand.ambiguity != TriAmbiguity::None && cand.t <= finalT + tl)
+    if (cand.ambiguity != TriAmbiguity::None && cand.t <= final_t + tl)
       why =
           cand.ambiguity == TriAmbiguity::Vertex ? AmbiguityReason::Vertex : AmbiguityReason::Edge;
     // R-CAND-TRI-OPEN: an interval end is a tie only where a device's t may
@@ -207,8 +207,8 @@ void TraceClassifier::tryOrders(const std::vector<std::pair<size_t, double>>& re
   }
   if (prefers.empty() && firsts.size() <= 1) return;
   const bool before = !amb_.candidates.empty();
-  bool differs = false, differsFirst = false;
-  auto addOne = [&](const Committed& b) {
+  bool differs = false, differs_first = false;
+  auto add_one = [&](const Committed& b) {
     addCommitted(b);
     const bool d = b.valid != tr_.best.valid || (b.valid && (b.instance != tr_.best.instance ||
                                                              b.geometry != tr_.best.geometry ||
@@ -217,22 +217,22 @@ void TraceClassifier::tryOrders(const std::vector<std::pair<size_t, double>>& re
     return d;
   };
   const size_t saved = amb_.candidates.size();
-  addOne(tr_.best);
-  for (long k : prefers) addOne(m_.sandbox(tr_, cands_, nullptr, k, -1, payload_in_));
+  add_one(tr_.best);
+  for (long k : prefers) add_one(m_.sandbox(tr_, cands_, nullptr, k, -1, payload_in_));
   if (firsts.size() > 1)
     for (long k : firsts) {
       // An edge or vertex triangle the model left out may be the device's first hit.
       std::vector<int8_t> force(cands_.size(), -1);
       if (cands_[k].ambiguity != TriAmbiguity::None) force[k] = 1;
-      differsFirst =
-          addOne(m_.sandbox(tr_, cands_, force.data(), -1, k, payload_in_)) || differsFirst;
+      differs_first =
+          add_one(m_.sandbox(tr_, cands_, force.data(), -1, k, payload_in_)) || differs_first;
     }
-  const bool ambiguousNow = tofh ? differs : (differs || tied.size() >= 2);
-  if (ambiguousNow && !reason_)
-    reason_ = tofh           ? AmbiguityReason::FirstHit
-              : differsFirst ? AmbiguityReason::Order
-                             : AmbiguityReason::TTie;
-  if (!ambiguousNow && !before) amb_.candidates.resize(saved);
+  const bool ambiguous_now = tofh ? differs : (differs || tied.size() >= 2);
+  if (ambiguous_now && !reason_)
+    reason_ = tofh            ? AmbiguityReason::FirstHit
+              : differs_first ? AmbiguityReason::Order
+                              : AmbiguityReason::TTie;
+  if (!ambiguous_now && !before) amb_.candidates.resize(saved);
 }
 
 // R-PREC: an intersection program's decision that rounding may flip (sphere
@@ -268,14 +268,14 @@ void TraceClassifier::finish() {
 
 void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& candidates,
                             const std::vector<std::pair<size_t, double>>& reports,
-                            const std::vector<ShaderDecision>& shaderUnsure,
-                            const Payload& payloadIn) {
-  TraceClassifier c(*this, tr, candidates, payloadIn);
+                            const std::vector<ShaderDecision>& shader_unsure,
+                            const Payload& payload_in) {
+  TraceClassifier c(*this, tr, candidates, payload_in);
   c.findUnsure();
   c.findSharedTriangles();
   c.tryUnsure();
   c.tryOrders(reports);
-  c.tryShaderDecisions(shaderUnsure);
+  c.tryShaderDecisions(shader_unsure);
   c.boundT();
   c.finish();
 }
@@ -297,9 +297,9 @@ bool Machine::anyHitMayTerminate(const Traversal& tr,
   return false;
 }
 
-bool Machine::sphereHitDecision(StageEnv& env, bool modelValue, float disc) {
+bool Machine::sphereHitDecision(StageEnv& env, bool model_value, float disc) {
   Traversal* tr = env.traversal;
-  if (!tr->exact || !tr->cur || env.stage != Stage::Intersection) return modelValue;
+  if (!tr->exact || !tr->cur || env.stage != Stage::Intersection) return model_value;
   const uint32_t ord = tr->sphere_ord++;
   if (const ShaderDecision* f = tr->forced(0, ord)) return f->value;
   if (tr->shader_unsure && env.hit && env.ray) {
@@ -309,20 +309,20 @@ bool Machine::sphereHitDecision(StageEnv& env, bool modelValue, float disc) {
         sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
                     objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
     if (std::fabs(double(disc)) <= se.disc_err)
-      tr->shader_unsure->push_back({tr->cur_index, 0, ord, modelValue});
+      tr->shader_unsure->push_back({tr->cur_index, 0, ord, model_value});
   }
-  return modelValue;
+  return model_value;
 }
 
 // One what-if run of the decision in a sandbox: counters, record and error
 // are restored afterwards, the payload is a copy of the trace's incoming one.
 Committed Machine::sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands,
-                           const int8_t* force, long prefer, long first, const Payload& payloadIn,
-                           const ShaderDecision* shaderForce) {
-  const std::vector<uint64_t> savedCounters = counters;
-  const std::string savedError = error;
-  std::vector<uint32_t> savedRecord;
-  if (rec_) savedRecord.assign(rec_, rec_ + recordWords());
+                           const int8_t* force, long prefer, long first, const Payload& payload_in,
+                           const ShaderDecision* shader_force) {
+  const std::vector<uint64_t> saved_counters = counters;
+  const std::string saved_error = error;
+  std::vector<uint32_t> saved_record;
+  if (rec_) saved_record.assign(rec_, rec_ + recordWords());
   Traversal v(*this, actual.ray);
   v.flags = actual.flags;
   v.depth = actual.depth;
@@ -331,19 +331,19 @@ Committed Machine::sandbox(const Traversal& actual, const std::vector<ModelCandi
   v.exact = actual.exact;
   v.prefer = prefer;
   v.first = first;
-  v.shader_force = shaderForce;
+  v.shader_force = shader_force;
   if (prefer >= 0) {
     const ModelCandidate& p = cands[static_cast<size_t>(prefer)];
     v.prefer_key[0] = p.instance;
     v.prefer_key[1] = p.geometry;
     v.prefer_key[2] = p.primitive;
   }
-  Payload p = payloadIn;
+  Payload p = payload_in;
   v.payload = &p;
   decide(v, cands, force, p);
-  counters = savedCounters;
-  error = savedError;
-  if (rec_) std::copy(savedRecord.begin(), savedRecord.end(), rec_);
+  counters = saved_counters;
+  error = saved_error;
+  if (rec_) std::copy(saved_record.begin(), saved_record.end(), rec_);
   return v.best;
 }
 
@@ -356,12 +356,12 @@ Committed Machine::sandbox(const Traversal& actual, const std::vector<ModelCandi
 std::vector<Committed> Machine::whatIf(const Traversal& actual,
                                        const std::vector<ModelCandidate>& cands,
                                        const std::vector<size_t>& unsure,
-                                       const Payload& payloadIn) {
+                                       const Payload& payload_in) {
   std::vector<Committed> out;
   if (unsure.empty()) return out;
   std::vector<int8_t> force(cands.size(), -1);
   auto run = [&] {
-    out.push_back(sandbox(actual, cands, force.data(), -1, -1, payloadIn));
+    out.push_back(sandbox(actual, cands, force.data(), -1, -1, payload_in));
   };
   size_t g0 = 0;
   while (g0 < unsure.size()) {

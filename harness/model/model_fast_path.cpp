@@ -16,7 +16,7 @@ namespace {
 // open interval by moving Embree's ends. No culls here, so the facing only
 // gives hit_kind: computed when a program reads it.
 Committed embreeClosestHit(const ModelScene& scene, RTCIntersectContext& ctx, const TraceRay& r,
-                           uint32_t flags, bool needFacing) {
+                           uint32_t flags, bool need_facing) {
   Committed best;
   RTCRayHit rh = embreeRay(r, flags);
   if (!validRay(r, rh)) return best;
@@ -26,7 +26,7 @@ Committed embreeClosestHit(const ModelScene& scene, RTCIntersectContext& ctx, co
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return best;
   best = {true,          rh.ray.tfar, rh.hit.instID[0], rh.hit.geomID,
           rh.hit.primID, 0xFEu,       rh.hit.u,         rh.hit.v};
-  if (needFacing) {
+  if (need_facing) {
     ModelCandidate cand;
     cand.instance = best.instance;
     cand.geometry = best.geometry;
@@ -121,9 +121,9 @@ void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
   const std::vector<Ray>& rays = sh_.c->rays.rays;
   const CPipeline& programs = *sh_.programs;
   const uint32_t words = records_ ? recordWords() : 0;
-  uint32_t pipeFlags = 0;
-  if (sh_.c->pipeline.flags & 0x1000) pipeFlags |= kRaySkipTriangles;
-  if (sh_.c->pipeline.flags & 0x2000) pipeFlags |= kRaySkipAabbs;
+  uint32_t pipe_flags = 0;
+  if (sh_.c->pipeline.flags & 0x1000) pipe_flags |= kRaySkipTriangles;
+  if (sh_.c->pipeline.flags & 0x2000) pipe_flags |= kRaySkipAabbs;
   const ModelScene& scene = *sh_.scene;
   const RTCScene top = scene.top;
   const bool robust = scene.tier == ModelTier::Robust;
@@ -132,25 +132,25 @@ void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
 
   const Ray& first = rays[begin];
   const TraceRay r0 = launchRay(first);
-  const bool quick = !((first.flags | pipeFlags) & kRaySkipClosestHit);
-  const CountsOnly* missCounts = quick ? countedMiss(r0) : nullptr;
-  uint32_t lastInstance = ~0u, lastGeometry = ~0u;
-  const CountsOnly* hitCounts = nullptr;
-  uint64_t hitPending = 0, missPending = 0;  // quick hits (for hitCounts) and misses
+  const bool quick = !((first.flags | pipe_flags) & kRaySkipClosestHit);
+  const CountsOnly* miss_counts = quick ? countedMiss(r0) : nullptr;
+  uint32_t last_instance = ~0u, last_geometry = ~0u;
+  const CountsOnly* hit_counts = nullptr;
+  uint64_t hit_pending = 0, miss_pending = 0;  // quick hits (for hit_counts) and misses
   auto flush = [this](const CountsOnly* k, uint64_t& n) {
     if (k && n)
       for (int c : k->counters) counters[c] += n;
     n = 0;
   };
-  const uint32_t runsRaygen = runs_offset_[kRunsRaygen], runsHit = runs_offset_[kRunsClosestHit],
-                 runsMiss = runs_offset_[kRunsMiss];
+  const uint32_t runs_raygen = runs_offset_[kRunsRaygen], runs_hit = runs_offset_[kRunsClosestHit],
+                 runs_miss = runs_offset_[kRunsMiss];
 
   for (uint32_t i = begin; i < end; ++i) {
     if (i + 8 < end) __builtin_prefetch(&rays[i + 8]);
     const Ray& ray = rays[i];
-    const uint32_t flags = ray.flags | pipeFlags;
+    const uint32_t flags = ray.flags | pipe_flags;
     uint32_t* rec = records_ ? records_ + static_cast<size_t>(i) * words : nullptr;
-    if (rec) rec[runsRaygen] += 1;
+    if (rec) rec[runs_raygen] += 1;
     // embreeRay + validRay + embreeClosestHit, for the launch ray itself.
     RTCRayHit rh = embreeRay(ray, flags);
     const bool valid = validLaunchRay(ray);
@@ -168,33 +168,33 @@ void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
     const bool hit = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
     if (quick && sameTraceParameters(ray, first)) {
       if (hit) {
-        if (rh.hit.instID[0] != lastInstance || rh.hit.geomID != lastGeometry) {
-          lastInstance = rh.hit.instID[0];
-          lastGeometry = rh.hit.geomID;
-          const CHitGroup* grp = groupOf(programs, hitRecord(lastInstance, lastGeometry, r0));
+        if (rh.hit.instID[0] != last_instance || rh.hit.geomID != last_geometry) {
+          last_instance = rh.hit.instID[0];
+          last_geometry = rh.hit.geomID;
+          const CHitGroup* grp = groupOf(programs, hitRecord(last_instance, last_geometry, r0));
           const CountsOnly* k = grp && grp->closest_hit && grp->closest_hit_counts.yes
                                     ? &grp->closest_hit_counts
                                     : nullptr;
-          if (k != hitCounts) {
-            flush(hitCounts, hitPending);
-            hitCounts = k;
+          if (k != hit_counts) {
+            flush(hit_counts, hit_pending);
+            hit_counts = k;
           }
         }
-        if (hitCounts) {
-          ++hitPending;
-          if (rec) rec[runsHit] += 1;
+        if (hit_counts) {
+          ++hit_pending;
+          if (rec) rec[runs_hit] += 1;
           continue;
         }
-      } else if (missCounts) {
-        ++missPending;
-        if (rec) rec[runsMiss] += 1;
+      } else if (miss_counts) {
+        ++miss_pending;
+        if (rec) rec[runs_miss] += 1;
         continue;
       }
     }
     shadeLaunchRay(i, ray, flags, rh, hit, rec);
   }
-  flush(hitCounts, hitPending);
-  flush(missCounts, missPending);
+  flush(hit_counts, hit_pending);
+  flush(miss_counts, miss_pending);
 }
 
 }  // namespace rayspec

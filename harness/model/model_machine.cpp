@@ -263,11 +263,11 @@ bool Machine::opOnDemand(const CExpr& e, StageEnv& env, Val& r) {
     }
     case OpCode::And:
     case OpCode::Or: {
-      const bool isAnd = n == OpCode::And;
-      r.b = isAnd;
+      const bool is_and = n == OpCode::And;
+      r.b = is_and;
       for (const CExpr& a : e.args) {
         const bool b = eval(a, env).b;
-        if (isAnd != b) {
+        if (is_and != b) {
           r.b = b;
           break;
         }
@@ -424,8 +424,8 @@ Flow Machine::execStmt(const CStmt& s, StageEnv& env) {
     case Stmt::Kind::Light: {
       if (!env.call) return Flow::Continue;
       static const std::vector<uint32_t> kEmpty;
-      const Vec3 P = env.call->position, N = env.call->normal;
-      env.call->color = lightColor(s.light, P, N, env.record_data ? *env.record_data : kEmpty);
+      const Vec3 p = env.call->position, n = env.call->normal;
+      env.call->color = lightColor(s.light, p, n, env.record_data ? *env.record_data : kEmpty);
       return Flow::Continue;
     }
     case Stmt::Kind::Call:
@@ -477,8 +477,8 @@ void Machine::execCall(const CStmt& s, StageEnv& env) {
 // The ray a trace statement traces: the launch ray (raygen) or the case's
 // defaults for nested traces, with what the statement gives.
 TraceRay Machine::tracedRay(const CStmt& s, StageEnv& env) {
-  const bool fromLaunch = env.stage == Stage::Raygen;
-  TraceRay r = launchRay(fromLaunch ? sh_.c->rays.rays[index_] : sh_.c->rays.defaults);
+  const bool from_launch = env.stage == Stage::Raygen;
+  TraceRay r = launchRay(from_launch ? sh_.c->rays.rays[index_] : sh_.c->rays.defaults);
   auto v3 = [&](int k, Vec3& out) {
     if (s.has[k]) {
       const Val v = eval(s.args[k], env);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "case/case.h"
+#include "model/model_faults.h"
 #include "model/model_program.h"
 #include "model/model_scene.h"
 #include "model/model_trace_context.h"
@@ -122,9 +123,8 @@ struct ModelShared {
   // Decided once per run from what the programs read: a direct hit needs its
   // facing only for hit_kind, its object-space ray only for object_ray_*.
   bool need_facing = true, need_object_ray = true;
-  bool raygen_traces_launch_ray = false;            // raygen is exactly `trace: {}`
-  ModelDeviation deviation = ModelDeviation::None;  // test only (planted faults)
-  CandidateOrder order = CandidateOrder::Distance;
+  bool raygen_traces_launch_ray = false;  // raygen is exactly `trace: {}`
+  ModelFaults faults;  // test only: the planted faults' hook (model/model_faults.h)
   // Some candidate may be undefined (a hit record beyond the region, a NaN
   // triangle): Machine::checkCandidates looks at every candidate.
   bool check_candidates = true;
@@ -188,19 +188,19 @@ class alignas(64) Machine {
   bool triangleInside(const Traversal& tr, const ModelCandidate& cand, size_t k,
                       const int8_t* force) const;
   Committed sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands,
-                    const int8_t* force, long prefer, long first, const Payload& payloadIn,
-                    const ShaderDecision* shaderForce = nullptr);
+                    const int8_t* force, long prefer, long first, const Payload& payload_in,
+                    const ShaderDecision* shader_force = nullptr);
   // sphere_hit in an intersection program: the model's value, or the forced
   // one of a what-if run; notes an unsure decision (model_exact_tier.cpp).
-  bool sphereHitDecision(StageEnv& env, bool modelValue, float disc);
+  bool sphereHitDecision(StageEnv& env, bool model_value, float disc);
   // Exact tier: marks the current ray ambiguous when this trace's answer could
   // differ on a device, with the legal answers (model_exact_tier.cpp).
   void classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& cands,
                      const std::vector<std::pair<size_t, double>>& reports,
-                     const std::vector<ShaderDecision>& shaderUnsure, const Payload& payloadIn);
+                     const std::vector<ShaderDecision>& shader_unsure, const Payload& payload_in);
   bool anyHitMayTerminate(const Traversal& tr, const std::vector<ModelCandidate>& cands) const;
   std::vector<Committed> whatIf(const Traversal& actual, const std::vector<ModelCandidate>& cands,
-                                const std::vector<size_t>& unsure, const Payload& payloadIn);
+                                const std::vector<size_t>& unsure, const Payload& payload_in);
   void runRaygen();
   // Raygen is `trace: {}` and traces take Embree's closest hit: the chunk's
   // rays are traced first, then shaded (model_fast_path.cpp).

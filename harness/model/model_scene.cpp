@@ -152,9 +152,9 @@ void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
     return DVec3{v[0], v[1], v[2]};
   };
   const DVec3 v0 = dv(tri[0]), v1 = dv(tri[1]), v2 = dv(tri[2]);
-  const DVec3 vertexErr = g->tier == ModelTier::Exact ? g->vertex_err : DVec3{};
-  if (watertightCertainMiss(wr, v0, v1, v2, vertexErr)) return;  // dropped below too (proof there)
-  WatertightHit h = watertightIntersectPrepared(wr, v0, v1, v2, vertexErr);
+  const DVec3 vertex_err = g->tier == ModelTier::Exact ? g->vertex_err : DVec3{};
+  if (watertightCertainMiss(wr, v0, v1, v2, vertex_err)) return;  // dropped below too (proof there)
+  WatertightHit h = watertightIntersectPrepared(wr, v0, v1, v2, vertex_err);
   if (!h.valid) return;
   if (!h.hit && h.ambiguity == TriAmbiguity::None) return;
   if (g->tier != ModelTier::Exact && !h.hit) return;
@@ -333,9 +333,9 @@ void fillTriangles(ModelGeometry& mg, const Geometry& g) {
 // in range.
 bool indexBufferUsable(const Geometry& g, uint32_t n) {
   if (g.indices.empty() || g.indices.size() < 3 * size_t{n}) return false;
-  uint32_t maxIndex = 0;  // one pass, no early exit: vectorizes
-  for (size_t i = 0; i < 3 * size_t{n}; ++i) maxIndex = std::max(maxIndex, g.indices[i]);
-  return n == 0 || size_t{maxIndex} < g.vertices.size();
+  uint32_t max_index = 0;  // one pass, no early exit: vectorizes
+  for (size_t i = 0; i < 3 * size_t{n}; ++i) max_index = std::max(max_index, g.indices[i]);
+  return n == 0 || size_t{max_index} < g.vertices.size();
 }
 
 // Whether every vertex (transformed) is ordinary: no NaN, nothing Embree
@@ -353,7 +353,7 @@ bool verticesOrdinary(const Geometry& g) {
 // only where someone reads them (candidates, own tests, an unusable index
 // buffer).
 void describeGeometry(ModelGeometry& mg, const Geometry& g, size_t bi, size_t gi, ModelTier tier,
-                      double ray_pad, bool keepTriangles, bool filters) {
+                      double ray_pad, bool keep_triangles, bool filters) {
   mg.kind = g.kind;
   mg.flags = g.flags;
   mg.blas = static_cast<uint32_t>(bi);
@@ -371,7 +371,7 @@ void describeGeometry(ModelGeometry& mg, const Geometry& g, size_t bi, size_t gi
   mg.indexed = indexBufferUsable(g, mg.count);
   const bool ordinary = mg.indexed && verticesOrdinary(g);
   mg.own_triangles = tier == ModelTier::Exact;
-  if (keepTriangles || filters || !ordinary || mg.own_triangles) fillTriangles(mg, g);
+  if (keep_triangles || filters || !ordinary || mg.own_triangles) fillTriangles(mg, g);
 }
 
 // Embree's triangle geometry: the case's own vertex sharing where it can
@@ -422,10 +422,10 @@ RTCGeometry embreeUserGeometry(RTCDevice device, ModelGeometry& mg) {
 }
 
 // One BLAS as an Embree scene of its geometries.
-void commitBlas(ModelScene& s, const Case& c, size_t bi, RTCSceneFlags sceneFlags) {
+void commitBlas(ModelScene& s, const Case& c, size_t bi, RTCSceneFlags scene_flags) {
   ModelBlas& mb = s.blases[bi];
   mb.scene = rtcNewScene(s.device);
-  rtcSetSceneFlags(mb.scene, sceneFlags);
+  rtcSetSceneFlags(mb.scene, scene_flags);
   for (ModelGeometry& mg : mb.geometries) {
     if (mg.count == 0) continue;
     RTCGeometry geom =
@@ -441,9 +441,9 @@ void commitBlas(ModelScene& s, const Case& c, size_t bi, RTCSceneFlags sceneFlag
 
 // The TLAS as an Embree scene of instances (a null BLAS: an inactive
 // instance, kept for its index but not attached).
-void commitInstances(ModelScene& s, const Case& c, RTCSceneFlags sceneFlags) {
+void commitInstances(ModelScene& s, const Case& c, RTCSceneFlags scene_flags) {
   s.top = rtcNewScene(s.device);
-  rtcSetSceneFlags(s.top, sceneFlags);
+  rtcSetSceneFlags(s.top, scene_flags);
   s.instances.resize(c.scene.instances.size());
   for (size_t ii = 0; ii < c.scene.instances.size(); ++ii) {
     const Instance& inst = c.scene.instances[ii];
@@ -468,29 +468,29 @@ void commitInstances(ModelScene& s, const Case& c, RTCSceneFlags sceneFlags) {
 }  // namespace
 
 void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
-                     bool keepTriangles) {
+                     bool keep_triangles) {
   s.tier = tier;
   s.device = newEmbreeDevice();
   s.blases.resize(c.scene.blases.size());
   // Exact tier: how far a device's and Embree's object-space rays may be off
   // and how far the exact test's ambiguity reaches, per BLAS (box_pad.h).
-  const std::vector<double> rayPad =
+  const std::vector<double> ray_pad =
       tier == ModelTier::Exact ? blasRayPads(c) : std::vector<double>();
-  bool anyOwn = false;
+  bool any_own = false;
   for (size_t bi = 0; bi < c.scene.blases.size(); ++bi) {
     const Blas& src = c.scene.blases[bi];
     s.blases[bi].geometries.resize(src.geometries.size());
     for (size_t gi = 0; gi < src.geometries.size(); ++gi) {
       ModelGeometry& mg = s.blases[bi].geometries[gi];
       describeGeometry(mg, src.geometries[gi], bi, gi, tier,
-                       tier == ModelTier::Exact ? rayPad[bi] : 0.0, keepTriangles, filters);
+                       tier == ModelTier::Exact ? ray_pad[bi] : 0.0, keep_triangles, filters);
       if (mg.kind == Geometry::Kind::Triangles) s.blases[bi].triangles = true;
-      anyOwn = anyOwn || mg.own_triangles;
+      any_own = any_own || mg.own_triangles;
     }
   }
   // Own triangle tests mean the collect-then-process path: Embree's triangles
   // report to it too, and their candidates need the per-primitive triangles.
-  if (anyOwn && !filters) {
+  if (any_own && !filters) {
     filters = true;
     for (size_t bi = 0; bi < c.scene.blases.size(); ++bi)
       for (ModelGeometry& mg : s.blases[bi].geometries)
@@ -498,10 +498,10 @@ void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
           fillTriangles(mg, c.scene.blases[bi].geometries[mg.index]);
   }
   s.filters = filters;
-  const RTCSceneFlags sceneFlags =
+  const RTCSceneFlags scene_flags =
       tier == ModelTier::Fast ? RTC_SCENE_FLAG_NONE : RTC_SCENE_FLAG_ROBUST;
-  for (size_t bi = 0; bi < c.scene.blases.size(); ++bi) commitBlas(s, c, bi, sceneFlags);
-  commitInstances(s, c, sceneFlags);
+  for (size_t bi = 0; bi < c.scene.blases.size(); ++bi) commitBlas(s, c, bi, scene_flags);
+  commitInstances(s, c, scene_flags);
 }
 
 }  // namespace rayspec

@@ -80,11 +80,11 @@ constexpr unsigned kMaskTriangles = 0x100, kMaskAabbs = 0x200;
 // (collect-then-process path); otherwise Embree's closest hit is used. A case
 // with triangles of the model's own test turns filters on (s.filters): its
 // traces take the collect-then-process path, which sees every triangle.
-// `keepTriangles`: fill ModelGeometry::triangles even where nothing but the
+// `keep_triangles`: fill ModelGeometry::triangles even where nothing but the
 // facing of a direct hit could read them (false: only where own triangle
 // tests, candidates or an unindexed Embree buffer need them).
 void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
-                     bool keepTriangles = true);
+                     bool keep_triangles = true);
 
 // True when Embree would drop this triangle although Vulkan keeps it active.
 bool needsOwnTriangleTest(const std::array<Vec3, 3>& tri);

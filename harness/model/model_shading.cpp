@@ -25,39 +25,40 @@ Vec3 normalize3(const Vec3& v) {
 
 }  // namespace
 
-F4 lightColor(const std::string& kind, const Vec3& P, const Vec3& N,
+F4 lightColor(const std::string& kind, const Vec3& position, const Vec3& normal,
               const std::vector<uint32_t>& rec) {
   return lightColor(kind == "point"  ? LightKind::Point
                     : kind == "spot" ? LightKind::Spot
                                      : LightKind::Directional,
-                    P, N, rec);
+                    position, normal, rec);
 }
 
-F4 lightColor(LightKind kind, const Vec3& P, const Vec3& N, const std::vector<uint32_t>& rec) {
+F4 lightColor(LightKind kind, const Vec3& position, const Vec3& normal,
+              const std::vector<uint32_t>& rec) {
   auto f = [&](uint32_t i) {
     return recordFloat(rec, i);
   };
   if (kind == LightKind::Point) {
-    const Vec3 L = sub3({f(0), f(1), f(2)}, P);
-    const float d2 = dot3(L, L);
-    const Vec3 l = div3(L, std::sqrt(d2));
-    const float k = std::max(dot3(N, l), 0.0f) / d2;
+    const Vec3 to_light = sub3({f(0), f(1), f(2)}, position);
+    const float d2 = dot3(to_light, to_light);
+    const Vec3 l = div3(to_light, std::sqrt(d2));
+    const float k = std::max(dot3(normal, l), 0.0f) / d2;
     return {k * f(3), k * f(4), k * f(5), 1.0f};
   }
   if (kind == LightKind::Spot) {
-    const Vec3 L = sub3({f(0), f(1), f(2)}, P);
-    const float d = std::sqrt(dot3(L, L));
-    const Vec3 l = div3(L, d);
+    const Vec3 to_light = sub3({f(0), f(1), f(2)}, position);
+    const float d = std::sqrt(dot3(to_light, to_light));
+    const Vec3 l = div3(to_light, d);
     const Vec3 nl = {-l[0], -l[1], -l[2]};
     const float cosang = dot3(nl, normalize3({f(3), f(4), f(5)}));
     const float s = std::clamp((cosang - f(7)) / (f(6) - f(7)), 0.0f, 1.0f);  // the smooth cone
-    const float c = s * std::max(dot3(N, l), 0.0f) / (d * d);
+    const float c = s * std::max(dot3(normal, l), 0.0f) / (d * d);
     return {c, c, c, 1.0f};
   }
   // directional
   const Vec3 n = normalize3({f(0), f(1), f(2)});
   const Vec3 l = {-n[0], -n[1], -n[2]};
-  const float k = std::max(dot3(N, l), 0.0f);
+  const float k = std::max(dot3(normal, l), 0.0f);
   return {k * f(3), k * f(4), k * f(5), 1.0f};
 }
 

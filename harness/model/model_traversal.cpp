@@ -24,12 +24,12 @@ const CHitGroup* groupOf(const CPipeline& p, const SbtRecord* rec) {
   return &p.groups[*rec->group];
 }
 
-bool resolveOpaque(uint32_t geomFlags, uint32_t instFlags, uint32_t rayFlags) {
-  if (rayFlags & kRayOpaque) return true;
-  if (rayFlags & kRayNoOpaque) return false;
-  if (instFlags & kInstanceForceOpaque) return true;
-  if (instFlags & kInstanceForceNoOpaque) return false;
-  return (geomFlags & kGeometryOpaque) != 0;
+bool resolveOpaque(uint32_t geom_flags, uint32_t inst_flags, uint32_t ray_flags) {
+  if (ray_flags & kRayOpaque) return true;
+  if (ray_flags & kRayNoOpaque) return false;
+  if (inst_flags & kInstanceForceOpaque) return true;
+  if (inst_flags & kInstanceForceNoOpaque) return false;
+  return (geom_flags & kGeometryOpaque) != 0;
 }
 
 Facing facing(const ModelScene& s, const ModelCandidate& c, const TraceRay& ray, uint32_t flags) {
@@ -80,14 +80,14 @@ void setHit(HitView& hv, float t, uint32_t kind, float b1, float b2) {
 }
 
 HitView viewOf(const ModelScene& s, const Case& c, const TraceRay& ray, uint32_t instance,
-               uint32_t geometry, uint32_t primitive, bool objectRay) {
+               uint32_t geometry, uint32_t primitive, bool object_ray) {
   HitView hv;
   const ModelInstance& mi = s.instances[instance];
   hv.instance = instance;
   hv.custom_index = c.scene.instances[instance].custom_index & 0xFFFFFF;
   hv.geometry = geometry;
   hv.primitive = primitive;
-  if (objectRay) {
+  if (object_ray) {
     hv.object_origin = applyAffine(mi.inverse_f, ray.origin, 1);
     hv.object_direction = applyAffine(mi.inverse_f, ray.direction, 0);
   }
@@ -147,7 +147,7 @@ double Machine::sphereRootError(const CStmt& s, const HitView& h, const StageEnv
 bool Machine::reportInside(const CStmt& s, StageEnv& env, Traversal& tr, float t) {
   // R-ISECT-REPORT, R-CAND-AABB-CLOSED: tmin <= t <= current tmax.
   bool inside = t >= tr.ray.tmin && static_cast<double>(t) <= tr.tmax_cur;
-  if (sh_.deviation == ModelDeviation::OpenAabbInterval)
+  if (sh_.faults.deviation == ModelDeviation::OpenAabbInterval)
     inside = t > tr.ray.tmin && static_cast<double>(t) < tr.tmax_cur;
   if (tr.reports && t >= tr.ray.tmin && t <= tr.ray.tmax + tr.tol(t))
     tr.reports->push_back({tr.cur_index, t});
@@ -163,9 +163,9 @@ bool Machine::reportInside(const CStmt& s, StageEnv& env, Traversal& tr, float t
       const double et = sphereRootError(s, h, env) + tr.tol(t);
       const bool own = tr.best.valid && tr.best.instance == h.instance &&
                        tr.best.geometry == h.geometry && tr.best.primitive == h.primitive;
-      const bool nearEnd = std::fabs(double(t) - tr.ray.tmin) <= et ||
-                           (!own && std::fabs(double(t) - tr.tmax_cur) <= et);
-      if (nearEnd) tr.shader_unsure->push_back({tr.cur_index, 1, ord, inside});
+      const bool near_end = std::fabs(double(t) - tr.ray.tmin) <= et ||
+                            (!own && std::fabs(double(t) - tr.tmax_cur) <= et);
+      if (near_end) tr.shader_unsure->push_back({tr.cur_index, 1, ord, inside});
     }
   }
   // What-if run preferring one candidate (R-TIE): it wins every tie, and a
@@ -262,19 +262,19 @@ void Machine::runIntersection(Traversal& tr, const ModelCandidate& cand, size_t 
 bool Machine::triangleInside(const Traversal& tr, const ModelCandidate& cand, size_t k,
                              const int8_t* force) const {
   bool inside = cand.t > tr.tmin && cand.t < tr.tmax_cur;
-  if (sh_.deviation == ModelDeviation::ClosedTriangleInterval && !tr.best.valid)
+  if (sh_.faults.deviation == ModelDeviation::ClosedTriangleInterval && !tr.best.valid)
     inside = cand.t >= tr.tmin && cand.t <= tr.tmax_cur;
   // What-if run forcing a hit at an interval end (tmin-tie, tmax-tie): a
   // float ray test may put it a step inside, unless every device computes
   // this t exactly (R-CAND-TRI-OPEN, model/exact_interval.h).
-  const bool exactOut =
+  const bool exact_out =
       (cand.exact_tmin && cand.t <= tr.tmin) || (cand.exact_tmax && cand.t >= tr.tmax_cur);
-  if (!inside && force && force[k] == 1 && !tr.best.valid && !exactOut &&
+  if (!inside && force && force[k] == 1 && !tr.best.valid && !exact_out &&
       cand.t > tr.tmin - tr.endTol(cand) && cand.t < tr.tmax_cur + tr.endTol(cand))
     inside = true;
   const bool tie = tr.exact && tr.ties(cand.t);
-  const bool bestPreferred = tr.isPreferred(tr.best.instance, tr.best.geometry, tr.best.primitive);
-  if (tie && (tr.prefer == static_cast<long>(k) || bestPreferred)) {
+  const bool best_preferred = tr.isPreferred(tr.best.instance, tr.best.geometry, tr.best.primitive);
+  if (tie && (tr.prefer == static_cast<long>(k) || best_preferred)) {
     // What-if run preferring one candidate (R-TIE).
     inside = tr.prefer == static_cast<long>(k) && cand.t > tr.tmin;
   } else if (!inside && tie &&
@@ -344,12 +344,12 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
   tr.tmax_cur = r.tmax;
   tr.exact = scene.tier == ModelTier::Exact;
   tr.payload = &payload;
-  const Payload payloadIn = payload;  // for the exact tier's what-if variants
+  const Payload payload_in = payload;  // for the exact tier's what-if variants
 
   RTCRayHit rh = embreeRay(r, tr.flags);
   std::vector<ModelCandidate>* cands = nullptr;
   std::vector<std::pair<size_t, double>> reports;  // exact tier: every report of the actual run
-  std::vector<ShaderDecision> shaderUnsure;        // exact tier: decisions rounding may flip
+  std::vector<ShaderDecision> shader_unsure;       // exact tier: decisions rounding may flip
   if (validRay(r, rh)) {
     if (cand_pool_.size() < depth) cand_pool_.resize(depth);
     cands = &cand_pool_[depth - 1];
@@ -366,7 +366,7 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
     rh.ray.tnear = std::max(0.0f, r.tmin - std::fabs(r.tmin) * 1e-5f);
     rh.ray.tfar = r.tmax + std::fabs(r.tmax) * 1e-5f;
     rtcIntersect1(scene.top, &tc.rtc, &rh);
-    const CandidateOrder order = sh_.order;
+    const CandidateOrder order = sh_.faults.order;
     std::sort(
         cands->begin(), cands->end(), [order](const ModelCandidate& a, const ModelCandidate& b) {
           const bool key =
@@ -375,7 +375,7 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
           return order == CandidateOrder::ReverseDistance ? a.t > b.t : a.t < b.t;
         });
     tr.reports = tr.exact ? &reports : nullptr;
-    tr.shader_unsure = tr.exact && sh_.programs->reads_sphere ? &shaderUnsure : nullptr;
+    tr.shader_unsure = tr.exact && sh_.programs->reads_sphere ? &shader_unsure : nullptr;
     decide(tr, *cands, nullptr, payload);
     tr.reports = nullptr;
     tr.shader_unsure = nullptr;
@@ -383,7 +383,7 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
   }
 
   if (cands && tr.exact && !ray_ambiguous_) {
-    classifyTrace(tr, *cands, reports, shaderUnsure, payloadIn);
+    classifyTrace(tr, *cands, reports, shader_unsure, payload_in);
     // R-UB: a legal answer of this trace whose record lies beyond its region.
     if (ray_ambiguous_ && !ray_undefined_ && !ambiguous.empty() && ambiguous.back().ray == index_)
       for (const Candidate& k : ambiguous.back().candidates) {

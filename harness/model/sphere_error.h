@@ -17,8 +17,8 @@ namespace rayspec {
 struct ObjectRayError {
   Vec3 origin{}, direction{};
 };
-ObjectRayError objectRayError(const std::array<float, 12>& inverse, const Vec3& worldOrigin,
-                              const Vec3& worldDirection);
+ObjectRayError objectRayError(const std::array<float, 12>& inverse, const Vec3& world_origin,
+                              const Vec3& world_direction);
 
 struct SphereError {
   double disc = 0;                   // the model's float discriminant, widened

@@ -78,7 +78,7 @@ namespace trace_detail {
 bool keyLess(uint32_t i0, uint32_t g0, uint32_t p0, uint32_t i1, uint32_t g1, uint32_t p1);
 const CHitGroup* groupOf(const CPipeline& p, const SbtRecord* rec);
 // R-OPACITY: ray flag, then instance flag, then the geometry's OPAQUE bit.
-bool resolveOpaque(uint32_t geomFlags, uint32_t instFlags, uint32_t rayFlags);
+bool resolveOpaque(uint32_t geom_flags, uint32_t inst_flags, uint32_t ray_flags);
 
 // Facing of a triangle candidate (R-FACE-DET) and its hit kind (R-HITKIND-TRI).
 struct Facing {
@@ -94,7 +94,7 @@ StageEnv hitStage(Stage stage, const std::vector<uint32_t>& record_data, Payload
 // A hit's own values on the view of its primitive.
 void setHit(HitView& hv, float t, uint32_t kind, float b1, float b2);
 HitView viewOf(const ModelScene& s, const Case& c, const TraceRay& ray, uint32_t instance,
-               uint32_t geometry, uint32_t primitive, bool objectRay = true);
+               uint32_t geometry, uint32_t primitive, bool object_ray = true);
 
 // An Embree ray for a launch ray (Ray) or a traced one (TraceRay): inline, the
 // fast path builds one per launch ray.

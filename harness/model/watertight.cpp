@@ -47,9 +47,9 @@ WatertightRay prepareWatertightRay(const DVec3& o, const DVec3& d, const FrameEr
   w.dsy = round * std::fabs(w.sy) +
           (err.direction[ky] + std::fabs(w.sy) * err.direction[kz]) / std::fabs(d[kz]);
   // The device's origin error, sheared: one shift of all three vertices.
-  w.shiftX = err.origin[kx] + std::fabs(w.sx) * err.origin[kz];
-  w.shiftY = err.origin[ky] + std::fabs(w.sy) * err.origin[kz];
-  w.dirErr = err.direction[kz] / std::fabs(d[kz]) + round;
+  w.shift_x = err.origin[kx] + std::fabs(w.sx) * err.origin[kz];
+  w.shift_y = err.origin[ky] + std::fabs(w.sy) * err.origin[kz];
+  w.dir_err = err.direction[kz] / std::fabs(d[kz]) + round;
   return w;
 }
 
@@ -67,11 +67,11 @@ struct ShearedTriangle {
 };
 
 ShearedTriangle shearTriangle(const WatertightRay& w, const DVec3* const v[3],
-                              const DVec3& vertexErr) {
+                              const DVec3& vertex_err) {
   const DVec3& o = w.o;
   const int kx = w.kx, ky = w.ky, kz = w.kz;
-  const double sx = w.sx, sy = w.sy, sz = w.sz, dsx = w.dsx, dsy = w.dsy, shiftX = w.shiftX,
-               shiftY = w.shiftY;
+  const double sx = w.sx, sy = w.sy, sz = w.sz, dsx = w.dsx, dsy = w.dsy, shift_x = w.shift_x,
+               shift_y = w.shift_y;
   const double round = kFrameRoundings * kUnitRoundoff;
   ShearedTriangle s;
   for (int i = 0; i < 3; ++i) {
@@ -82,11 +82,11 @@ ShearedTriangle shearTriangle(const WatertightRay& w, const DVec3* const v[3],
     // Per vertex: the vertex error through the shear, the shear's own error
     // along this vertex's depth, and the rounding of the translated, sheared
     // coordinate relative to its magnitude.
-    const double vx = vertexErr[kx] + std::fabs(sx) * vertexErr[kz];
-    const double vy = vertexErr[ky] + std::fabs(sy) * vertexErr[kz];
-    const double az = std::fabs(z) + w.origin_err[kz] + vertexErr[kz];
-    s.ex[i] = vx + dsx * az + round * (std::fabs(x) + std::fabs(sx) * std::fabs(z) + shiftX + vx);
-    s.ey[i] = vy + dsy * az + round * (std::fabs(y) + std::fabs(sy) * std::fabs(z) + shiftY + vy);
+    const double vx = vertex_err[kx] + std::fabs(sx) * vertex_err[kz];
+    const double vy = vertex_err[ky] + std::fabs(sy) * vertex_err[kz];
+    const double az = std::fabs(z) + w.origin_err[kz] + vertex_err[kz];
+    s.ex[i] = vx + dsx * az + round * (std::fabs(x) + std::fabs(sx) * std::fabs(z) + shift_x + vx);
+    s.ey[i] = vy + dsy * az + round * (std::fabs(y) + std::fabs(sy) * std::fabs(z) + shift_y + vy);
   }
   return s;
 }
@@ -94,7 +94,7 @@ ShearedTriangle shearTriangle(const WatertightRay& w, const DVec3* const v[3],
 // The edge functions e[i] (of the edge opposite vertex i) and the bound on
 // how far a device's may differ.
 void edgeFunctions(const WatertightRay& w, const ShearedTriangle& s, double e[3], double bound[3]) {
-  const double shiftX = w.shiftX, shiftY = w.shiftY;
+  const double shift_x = w.shift_x, shift_y = w.shift_y;
   const double round = kFrameRoundings * kUnitRoundoff;
   const double *px = s.px, *py = s.py, *ex = s.ex, *ey = s.ey;
   for (int i = 0; i < 3; ++i) {
@@ -102,17 +102,17 @@ void edgeFunctions(const WatertightRay& w, const ShearedTriangle& s, double e[3]
     e[i] = px[a] * py[b] - py[a] * px[b];
     const double ax = std::fabs(px[a]), ay = std::fabs(py[a]), bx = std::fabs(px[b]),
                  by = std::fabs(py[b]);
-    bound[i] = shiftX * std::fabs(py[b] - py[a]) + shiftY * std::fabs(px[b] - px[a]) + ax * ey[b] +
-               by * ex[a] + ay * ex[b] + bx * ey[a] + shiftX * (ey[a] + ey[b]) +
-               shiftY * (ex[a] + ex[b]) + ex[a] * ey[b] + ey[a] * ex[b] +
-               round * ((ax + shiftX + ex[a]) * (by + shiftY + ey[b]) +
-                        (ay + shiftY + ey[a]) * (bx + shiftX + ex[b]));
+    bound[i] = shift_x * std::fabs(py[b] - py[a]) + shift_y * std::fabs(px[b] - px[a]) +
+               ax * ey[b] + by * ex[a] + ay * ex[b] + bx * ey[a] + shift_x * (ey[a] + ey[b]) +
+               shift_y * (ex[a] + ex[b]) + ex[a] * ey[b] + ey[a] * ex[b] +
+               round * ((ax + shift_x + ex[a]) * (by + shift_y + ey[b]) +
+                        (ay + shift_y + ey[a]) * (bx + shift_x + ex[b]));
   }
 }
 
 // t, the barycentrics and t's error bound, where det (the sum of the edge
 // functions) is not 0. False when t is NaN.
-bool solveHit(const WatertightRay& w, const DVec3* const v[3], const DVec3& vertexErr,
+bool solveHit(const WatertightRay& w, const DVec3* const v[3], const DVec3& vertex_err,
               const ShearedTriangle& s, const double e[3], const double bound[3], double det,
               WatertightHit& r) {
   const int kz = w.kz;
@@ -121,16 +121,16 @@ bool solveHit(const WatertightRay& w, const DVec3* const v[3], const DVec3& vert
   r.b1 = e[1] / det;
   r.b2 = e[2] / det;
   if (std::isnan(r.t)) return false;
-  const double dirErr = w.dirErr;
-  double tErr = 0, depthErr = 0;
+  const double dir_err = w.dir_err;
+  double t_err = 0, depth_err = 0;
   for (int i = 0; i < 3; ++i) {
     const double az = std::fabs((*v[i])[kz] - w.o[kz]);
-    tErr += bound[i] * std::fabs(s.pz[i] - r.t);
-    depthErr =
-        std::max(depthErr, (w.origin_err[kz] + vertexErr[kz] + round * az) * std::fabs(w.sz) +
-                               dirErr * std::fabs(s.pz[i]));
+    t_err += bound[i] * std::fabs(s.pz[i] - r.t);
+    depth_err =
+        std::max(depth_err, (w.origin_err[kz] + vertex_err[kz] + round * az) * std::fabs(w.sz) +
+                                dir_err * std::fabs(s.pz[i]));
   }
-  r.t_err = tErr / std::fabs(det) + depthErr;
+  r.t_err = t_err / std::fabs(det) + depth_err;
   if (!std::isfinite(r.t_err)) r.t_err = 0;
   return true;
 }
@@ -139,12 +139,12 @@ bool solveHit(const WatertightRay& w, const DVec3* const v[3], const DVec3& vert
 // (the third clear) is that vertex, three is no shape at all; nearly edge-on
 // or degenerate, a device may see no triangle at all.
 TriAmbiguity nearEdges(const double e[3], const double bound[3], double det) {
-  const double detBound = bound[0] + bound[1] + bound[2];
+  const double det_bound = bound[0] + bound[1] + bound[2];
   int near = 0;
   for (int i = 0; i < 3; ++i)
     if (std::fabs(e[i]) <= bound[i]) ++near;
   if (near == 2 && det != 0.0) return TriAmbiguity::Vertex;
-  if (std::fabs(det) <= detBound || near == 3) return TriAmbiguity::Degenerate;
+  if (std::fabs(det) <= det_bound || near == 3) return TriAmbiguity::Degenerate;
   if (near == 1) return TriAmbiguity::Edge;
   return TriAmbiguity::None;
 }
@@ -152,14 +152,14 @@ TriAmbiguity nearEdges(const double e[3], const double bound[3], double det) {
 }  // namespace
 
 WatertightHit watertightIntersectPrepared(const WatertightRay& w, const DVec3& v0, const DVec3& v1,
-                                          const DVec3& v2, const DVec3& vertexErr) {
+                                          const DVec3& v2, const DVec3& vertex_err) {
   WatertightHit r;
   if (!w.valid) {
     r.valid = false;
     return r;
   }
   const DVec3* v[3] = {&v0, &v1, &v2};
-  const ShearedTriangle s = shearTriangle(w, v, vertexErr);
+  const ShearedTriangle s = shearTriangle(w, v, vertex_err);
   double e[3], bound[3];
   edgeFunctions(w, s, e, bound);
   for (int i = 0; i < 3; ++i)
@@ -177,18 +177,18 @@ WatertightHit watertightIntersectPrepared(const WatertightRay& w, const DVec3& v
   double side[3];
   for (int i = 0; i < 3; ++i)
     side[i] = e[i] != 0.0 ? e[i] : perturbedSide(s.px, s.py, (i + 1) % 3, (i + 2) % 3);
-  const bool anyNeg = side[0] < 0 || side[1] < 0 || side[2] < 0;
-  const bool anyPos = side[0] > 0 || side[1] > 0 || side[2] > 0;
+  const bool any_neg = side[0] < 0 || side[1] < 0 || side[2] < 0;
+  const bool any_pos = side[0] > 0 || side[1] > 0 || side[2] > 0;
   // Clear sides: an edge function beyond its bound.
-  const bool clearNeg = e[0] < -bound[0] || e[1] < -bound[1] || e[2] < -bound[2];
-  const bool clearPos = e[0] > bound[0] || e[1] > bound[1] || e[2] > bound[2];
+  const bool clear_neg = e[0] < -bound[0] || e[1] < -bound[1] || e[2] < -bound[2];
+  const bool clear_pos = e[0] > bound[0] || e[1] > bound[1] || e[2] > bound[2];
   const double det = e[0] + e[1] + e[2];
-  if (det != 0.0 && !solveHit(w, v, vertexErr, s, e, bound, det, r)) {
+  if (det != 0.0 && !solveHit(w, v, vertex_err, s, e, bound, det, r)) {
     r.valid = false;
     return r;
   }
-  r.hit = !(anyNeg && anyPos) && det != 0.0;
-  if (clearNeg && clearPos) return r;  // clearly outside
+  r.hit = !(any_neg && any_pos) && det != 0.0;
+  if (clear_neg && clear_pos) return r;  // clearly outside
   r.ambiguity = nearEdges(e, bound, det);
   return r;
 }

@@ -80,12 +80,13 @@ struct WatertightRay {
   bool valid = false;  // false: zero or NaN direction (never a hit)
   int kx = 0, ky = 0, kz = 0;
   double sx = 0, sy = 0, sz = 0;
-  double dsx = 0, dsy = 0;        // the shear a device derives from its own direction
-  double shiftX = 0, shiftY = 0;  // the device's origin error, sheared
-  double dirErr = 0;              // relative error of the depth scale
+  double dsx = 0, dsy = 0;          // the shear a device derives from its own direction
+  double shift_x = 0, shift_y = 0;  // the device's origin error, sheared
+  double dir_err = 0;               // relative error of the depth scale
 };
 WatertightRay prepareWatertightRay(const DVec3& o, const DVec3& d, const FrameError& err);
 WatertightHit watertightIntersectPrepared(const WatertightRay& ray, const DVec3& v0,
-                                          const DVec3& v1, const DVec3& v2, const DVec3& vertexErr);
+                                          const DVec3& v1, const DVec3& v2,
+                                          const DVec3& vertex_err);
 
 }  // namespace rayspec

@@ -140,15 +140,16 @@ void planStatements(const std::vector<StageProgram>& programs, const Pipeline& p
 
 // Shader record data and all-zero records in the SBT.
 void planShaderRecords(const Pipeline& pipe, Plan& plan) {
-  auto hasData = [](const std::vector<SbtRecord>& v) {
+  auto has_data = [](const std::vector<SbtRecord>& v) {
     return std::any_of(v.begin(), v.end(), [](const SbtRecord& r) { return !r.data.empty(); });
   };
-  auto hasZero = [](const std::vector<SbtRecord>& v) {
+  auto has_zero = [](const std::vector<SbtRecord>& v) {
     return std::any_of(v.begin(), v.end(), [](const SbtRecord& r) { return !r.group; });
   };
-  plan.shader_record_data = !pipe.raygen_data.empty() || hasData(pipe.sbt_miss) ||
-                            hasData(pipe.sbt_hit) || hasData(pipe.sbt_callable);
-  plan.zero_records = hasZero(pipe.sbt_miss) || hasZero(pipe.sbt_hit) || hasZero(pipe.sbt_callable);
+  plan.shader_record_data = !pipe.raygen_data.empty() || has_data(pipe.sbt_miss) ||
+                            has_data(pipe.sbt_hit) || has_data(pipe.sbt_callable);
+  plan.zero_records =
+      has_zero(pipe.sbt_miss) || has_zero(pipe.sbt_hit) || has_zero(pipe.sbt_callable);
 }
 
 // What the case keeps: counters, per-ray fields, images. Per-ray records

@@ -5,9 +5,9 @@ namespace rayspec {
 namespace {
 
 template <typename E, size_t N>
-bool parseByName(const std::string& name, E* out, const E (&all)[N], const char* (*nameOf)(E)) {
+bool parseByName(const std::string& name, E* out, const E (&all)[N], const char* (*name_of)(E)) {
   for (E e : all)
-    if (name == nameOf(e)) {
+    if (name == name_of(e)) {
       *out = e;
       return true;
     }

@@ -1,11 +1,8 @@
 #include "run/case_steps.h"
 
-#include <fnmatch.h>
-
 #include <filesystem>
 
 #include "compare/compare_results.h"
-#include "fault/planted_fault.h"
 #include "plan/plan.h"
 #include "report/baseline_gate.h"
 #include "report/case_cost.h"
@@ -13,10 +10,10 @@
 #include "results/file_name.h"
 #include "results/results_io.h"
 #include "run/device_results.h"
+#include "run/fault_seam.h"
 #include "run/judge_case.h"
 #include "run/model_adapter.h"
 #include "run/vulkan_adapter.h"
-#include "vulkan/device_errors.h"
 
 namespace rayspec {
 namespace {
@@ -29,42 +26,16 @@ Side modelSide(const RunOptions& opt) {
   return s;
 }
 
-// The fault planted in this case ("" none).
-std::string faultIn(const RunOptions& opt, const std::string& case_name) {
-  return fnmatch(opt.plant_fault_in.c_str(), case_name.c_str(), 0) == 0 ? opt.plant_fault
-                                                                        : std::string();
-}
-
 Side deviceSide(const RunOptions& opt, std::shared_ptr<const Results> model,
                 const std::string& fault) {
   const VulkanOptions vopt = vulkanOptions(opt);
   Side s{"device", "vulkan", [vopt] { return std::make_unique<VulkanAdapter>(vopt); }, {}};
-  if (!opt.device_results
-           .empty())  // a device run saved elsewhere, read back (run/device_results.h)
+  // A device run saved elsewhere, read back (run/device_results.h).
+  if (!opt.device_results.empty())
     s.make = [dir = opt.device_results] {
       return std::make_unique<SavedDevice>(dir);
     };
-  if (const std::optional<InjectedVkError> injected = deviceErrorFault(fault)) {
-    // A Vulkan call fails on purpose for this case only.
-    s.before = [e = *injected] {
-      injectVkError(e);
-    };
-    s.after = [fault, e = *injected](const Case&, const Plan&, Results&) -> std::string {
-      injectVkError({});
-      return "planted fault " + fault + ": " + e.call + " returns " + vkResultName(e.result);
-    };
-    return s;
-  }
-  if (!fault.empty())
-    s.after = [fault, model, out = opt.out](const Case& c, const Plan& plan,
-                                            Results& device) -> std::string {
-      raiseProcessFault(fault, c.name,
-                        out);  // crash, hang: only in a child (run loop refuses them in process)
-      if (isProcessFault(fault)) return {};
-      const FaultResult f = plantFault(fault, c, plan, device, *model);
-      return (f.applied ? "planted fault " : "planted fault not applicable: ") + fault + ": " +
-             f.what;
-    };
+  armDeviceSide(s, fault, std::move(model), opt.out);  // test only: run/fault_seam.h
   return s;
 }
 
@@ -124,9 +95,9 @@ SideFor modelSideFor(const RunOptions& opt) {
 
 SideFor deviceSideFor(const RunOptions& opt) {
   return [opt](const Case& c, const std::string& dir) {
-    const std::string fault = faultIn(opt, c.name);
+    const std::string fault = plantedFaultIn(opt, c.name);
     auto model = std::make_shared<Results>();
-    if (!fault.empty() && !deviceErrorFault(fault) && !opt.no_model) {
+    if (faultReadsModel(fault) && !opt.no_model) {
       // The model's answer, which a planted fault chooses its rays by, is the
       // bundle the model side of this case just wrote.
       std::string error;
@@ -222,7 +193,7 @@ CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string&
   std::string fault_note;
   if (want_device) {
     const auto side = [&] {
-      return deviceSide(opt_, std::make_shared<Results>(model), faultIn(opt_, c.name));
+      return deviceSide(opt_, std::make_shared<Results>(model), plantedFaultIn(opt_, c.name));
     };
     SideResult d =
         runSide(side, device_, slot ? slot->device : nullptr, slot, c, plan, dir + "/device");

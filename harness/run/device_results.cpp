@@ -10,7 +10,6 @@
 #include "results/content_hash.h"
 #include "results/results_io.h"
 #include "run/isolation.h"
-#include "vulkan/device_errors.h"
 
 namespace rayspec {
 namespace fs = std::filesystem;
@@ -58,9 +57,6 @@ std::string deviceResultsError(const RunOptions& opt) {
     return what + " with --no-device: the saved device results are the device side";
   if (!opt.device.empty())
     return what + " with --device: no device runs, the results were saved on one";
-  if (deviceErrorFault(opt.plant_fault))
-    return "the fault '" + opt.plant_fault +
-           "' makes a Vulkan call fail: it needs a live device, not " + what;
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) return what + ": not a folder";
   if (fs::weakly_canonical(dir, ec) == fs::weakly_canonical(opt.out, ec))

@@ -16,7 +16,6 @@
 #include <set>
 #include <thread>
 
-#include "fault/planted_fault.h"
 #include "metamorphic/motion_spec.h"
 #include "metamorphic/permute_case.h"
 #include "report/baseline_gate.h"

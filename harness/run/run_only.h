@@ -14,10 +14,4 @@ namespace rayspec {
 // run-only build the device side only, with a note on stdout saying so.
 RunOptions optionsForThisBuild(const RunOptions& requested);
 
-// What a run-only build cannot do of what `opt` asks: a planted fault made
-// from the model's results (record edits, case mutations; the process faults
-// and the Vulkan error faults still work). "" when nothing, and always in
-// the full build.
-std::string runOnlyError(const RunOptions& opt);
-
 }  // namespace rayspec

@@ -7,15 +7,14 @@
 #include <optional>
 #include <set>
 
-#include "fault/planted_fault.h"
 #include "report/outcome_json.h"
 #include "report/rule_catalog.h"
 #include "run/device_probe.h"
 #include "run/device_results.h"
+#include "run/fault_seam.h"
 #include "run/run_loop.h"
 #include "run/run_only.h"
 #include "run/shard.h"
-#include "vulkan/device_errors.h"
 
 namespace rayspec {
 namespace {
@@ -87,14 +86,8 @@ std::string optionError(const RunOptions& opt) {
   if (!opt.no_validation && opt.strict_validation && !validationLayerInstalled())
     return "the Khronos validation layer is not installed (vulkan-validationlayers); run "
            "tools/setup.sh";
-  if (!opt.plant_fault.empty() && !isFaultName(opt.plant_fault) &&
-      !deviceErrorFault(opt.plant_fault))
-    return "unknown fault '" + opt.plant_fault + "'";
-  if (isProcessFault(opt.plant_fault) && opt.no_isolation)
-    return "the fault '" + opt.plant_fault +
-           "' needs the device in a child process (no --no-isolation)";
   if (opt.no_device && opt.no_model) return "--no-device and --no-model: nothing would run";
-  if (std::string e = runOnlyError(opt); !e.empty()) return e;
+  if (std::string e = plantedFaultError(opt); !e.empty()) return e;
   return deviceResultsError(opt);
 }
 

@@ -43,23 +43,6 @@ const char* vkResultName(VkResult r) {
   }
 }
 
-namespace {
-InjectedVkError& injected() {
-  static InjectedVkError e;
-  return e;
-}
-}  // namespace
-
-void injectVkError(const InjectedVkError& e) {
-  injected() = e;
-}
-
-bool injectedVkError(const char* call, VkResult* result) {
-  if (injected().call.empty() || injected().call != call) return false;
-  *result = injected().result;
-  return true;
-}
-
 void vkCheck(VkResult r, const char* what) {
   if (r != VK_SUCCESS) throw VulkanError(std::string(what) + ": " + vkResultName(r), what, r);
 }

@@ -1,0 +1,28 @@
+// The model's fault-injection hook (test only). Planted faults (harness/fault/)
+// run the model as a device that breaks one rule; they reach the model through
+// ModelOptions::faults and nothing else. A product run leaves it at its
+// defaults, which are the model's own behaviour. README "The fault seam" lists
+// every such hook.
+#pragma once
+
+namespace rayspec {
+
+// One interval rule broken the way a faulty device would:
+//   ClosedTriangleInterval: a triangle at exactly the ray's tmin or tmax is a
+//     candidate (R-CAND-TRI-OPEN broken).
+//   OpenAabbInterval: reportIntersectionEXT at exactly tmin or the current
+//     tmax returns false (R-CAND-AABB-CLOSED broken).
+enum class ModelDeviation { None, ClosedTriangleInterval, OpenAabbInterval };
+
+// The order the model decides a trace's candidates in (R-ORDER-UNSPEC).
+// Distance is the model's own (near to far); the others stand for devices
+// that traverse otherwise: far to near, and the order of the build
+// (instance, geometry, primitive).
+enum class CandidateOrder { Distance, ReverseDistance, BuildOrder };
+
+struct ModelFaults {
+  ModelDeviation deviation = ModelDeviation::None;
+  CandidateOrder order = CandidateOrder::Distance;
+};
+
+}  // namespace rayspec

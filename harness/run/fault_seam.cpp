@@ -1,0 +1,84 @@
+#include "run/fault_seam.h"
+
+#include <fnmatch.h>
+
+#include <optional>
+
+#include "fault/planted_fault.h"
+#include "model/model_engine.h"
+#include "vulkan/device_errors.h"
+#include "vulkan/vk_fault_hook.h"
+
+namespace rayspec {
+namespace {
+
+// A Vulkan call fails on purpose for this case only.
+void armVulkanError(Side& s, const std::string& fault, const InjectedVkError& e) {
+  s.before = [e] {
+    injectVkError(e);
+  };
+  s.after = [fault, e](const Case&, const Plan&, Results&) -> std::string {
+    injectVkError({});
+    return "planted fault " + fault + ": " + e.call + " returns " + vkResultName(e.result);
+  };
+}
+
+// A crash or hang in the device's process (only in a child: the run loop
+// refuses them in process), or the results a faulty device gives.
+void armResultsFault(Side& s, const std::string& fault, std::shared_ptr<const Results> model,
+                     const std::string& run_dir) {
+  s.after = [fault, model, run_dir](const Case& c, const Plan& plan,
+                                    Results& device) -> std::string {
+    raiseProcessFault(fault, c.name, run_dir);
+    if (isProcessFault(fault)) return {};
+    const FaultResult f = plantFault(fault, c, plan, device, *model);
+    return (f.applied ? "planted fault " : "planted fault not applicable: ") + fault + ": " +
+           f.what;
+  };
+}
+
+}  // namespace
+
+std::string plantedFaultError(const RunOptions& opt) {
+  const std::string& name = opt.plant_fault;
+  if (name.empty()) return {};
+  const bool vulkan_error = deviceErrorFault(name).has_value();
+  if (!isFaultName(name) && !vulkan_error) return "unknown fault '" + name + "'";
+  if (isProcessFault(name) && opt.no_isolation)
+    return "the fault '" + name + "' needs the device in a child process (no --no-isolation)";
+  if (!modelInThisBuild() && !vulkan_error && !isProcessFault(name))
+    return "the fault '" + name +
+           "' is made from the model's results, which this run-only build lacks (crash, hang and "
+           "the Vulkan error faults work here; plant it when judging, with --device-results)";
+  if (vulkan_error && !opt.device_results.empty())
+    return "the fault '" + name +
+           "' makes a Vulkan call fail: it needs a live device, not --device-results";
+  return {};
+}
+
+std::string plantableFaultNames() {
+  std::string list;
+  for (const std::string& name : faultNames()) list += (list.empty() ? "" : ", ") + name;
+  for (const std::string& name : deviceErrorFaultNames()) list += ", " + name;
+  return list;
+}
+
+std::string plantedFaultIn(const RunOptions& opt, const std::string& case_name) {
+  return fnmatch(opt.plant_fault_in.c_str(), case_name.c_str(), 0) == 0 ? opt.plant_fault
+                                                                        : std::string();
+}
+
+bool faultReadsModel(const std::string& fault) {
+  return !fault.empty() && !deviceErrorFault(fault);
+}
+
+void armDeviceSide(Side& s, const std::string& fault, std::shared_ptr<const Results> model,
+                   const std::string& run_dir) {
+  if (fault.empty()) return;
+  if (const std::optional<InjectedVkError> injected = deviceErrorFault(fault))
+    armVulkanError(s, fault, *injected);
+  else
+    armResultsFault(s, fault, std::move(model), run_dir);
+}
+
+}  // namespace rayspec

@@ -1,0 +1,73 @@
+// The fault seam (run/fault_seam.h): which faults a run refuses, where a fault
+// is planted, and what each kind arms on the device side.
+#include <gtest/gtest.h>
+
+#include "case/parse_case.h"
+#include "plan/plan.h"
+#include "run/fault_seam.h"
+#include "vulkan/vk_fault_hook.h"
+
+namespace rayspec {
+namespace {
+
+TEST(FaultSeam, RefusesFaultsThatCannotBePlanted) {
+  RunOptions opt;
+  EXPECT_EQ(plantedFaultError(opt), "") << "no fault";
+  opt.plant_fault = "no-such-fault";
+  EXPECT_EQ(plantedFaultError(opt), "unknown fault 'no-such-fault'");
+  opt.plant_fault = "crash";
+  EXPECT_EQ(plantedFaultError(opt), "");
+  opt.no_isolation = true;
+  EXPECT_NE(plantedFaultError(opt).find("child process"), std::string::npos);
+  RunOptions saved;
+  saved.device_results = "/some/saved/run";
+  saved.plant_fault = "device-lost";
+  EXPECT_NE(plantedFaultError(saved).find("live device"), std::string::npos);
+  saved.plant_fault = "shift-t";
+  EXPECT_EQ(plantedFaultError(saved), "") << "planted in the loaded results";
+}
+
+TEST(FaultSeam, ListsEveryKindOfFault) {
+  const std::string names = plantableFaultNames();
+  for (const char* name : {"shift-t", "crash", "device-lost"})
+    EXPECT_NE(names.find(name), std::string::npos) << name << " in " << names;
+}
+
+TEST(FaultSeam, PlantsOnlyInTheCasesThatMatch) {
+  RunOptions opt;
+  opt.plant_fault = "shift-t";
+  opt.plant_fault_in = "anyhit/*";
+  EXPECT_EQ(plantedFaultIn(opt, "anyhit/ignore-all"), "shift-t");
+  EXPECT_EQ(plantedFaultIn(opt, "miss/clear"), "");
+  EXPECT_TRUE(faultReadsModel("shift-t"));
+  EXPECT_FALSE(faultReadsModel("device-lost")) << "a Vulkan call fails; no rays chosen";
+  EXPECT_FALSE(faultReadsModel(""));
+}
+
+TEST(FaultSeam, NoFaultLeavesTheSideAsItWas) {
+  Side s;
+  armDeviceSide(s, "", nullptr, "/tmp");
+  EXPECT_FALSE(s.before);
+  EXPECT_FALSE(s.after);
+}
+
+// A Vulkan error fault makes its call fail from `before` until `after`.
+TEST(FaultSeam, VulkanErrorFaultFailsItsCallUntilTheSideEnds) {
+  Side s;
+  armDeviceSide(s, "device-lost", nullptr, "/tmp");
+  ASSERT_TRUE(s.before);
+  ASSERT_TRUE(s.after);
+  EXPECT_FALSE(injectedVkError("vkWaitForFences").has_value());
+  s.before();
+  const std::optional<VkResult> injected = injectedVkError("vkWaitForFences");
+  EXPECT_FALSE(injectedVkError("vkQueueSubmit").has_value()) << "only the fault's own call";
+  Results r;
+  const std::string note = s.after(Case{}, Plan{}, r);
+  ASSERT_TRUE(injected.has_value());
+  EXPECT_EQ(*injected, VK_ERROR_DEVICE_LOST);
+  EXPECT_NE(note.find("planted fault device-lost"), std::string::npos) << note;
+  EXPECT_FALSE(injectedVkError("vkWaitForFences").has_value()) << "still failing after the side";
+}
+
+}  // namespace
+}  // namespace rayspec

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# ctest style/fault-seam: test-only hooks stay behind the fault seam (README
+# "The fault seam"). Planted faults live in harness/fault/ (and rayspec
+# mutate's generic wrong devices, harness/mutate/, build on them); the rest
+# of the product reaches them only through
+#   run/fault_seam.h       the run's one entry: refuse, place, arm a fault
+#   model/model_faults.h   the model's hook (ModelOptions::faults)
+#   vulkan/vk_fault_hook.h the Vulkan side's hook (obeyed by vkCall only)
+# Prints each use outside them; exits 1 if there is one.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+bad=0
+# check WHAT PATTERN ALLOWED...: product files (harness/) naming PATTERN
+# outside the ALLOWED path prefixes.
+check() {
+  local what=$1 pattern=$2
+  shift 2
+  local allowed=("$@") file line
+  while IFS=: read -r file line _; do
+    local ok=0 prefix
+    for prefix in "${allowed[@]}"; do [[ $file == "$prefix"* ]] && ok=1; done
+    if [[ $ok == 0 ]]; then
+      echo "check-fault-seam: $file:$line: $what outside the fault seam" >&2
+      bad=1
+    fi
+  done < <(grep -rnE "$pattern" harness --include='*.cpp' --include='*.h' || true)
+}
+
+check "a fault/ header" '#include "fault/' harness/fault/ harness/mutate/ harness/run/fault_seam.cpp
+check "the Vulkan fault hook" 'injectVkError|injectedVkError|InjectedVkError' \
+  harness/vulkan/vk_fault_hook. harness/vulkan/vk_check.h harness/vulkan/device_errors. \
+  harness/run/fault_seam.cpp
+check "the model's fault hook" 'ModelFaults|ModelDeviation|CandidateOrder|[.>]faults\b' \
+  harness/model/ harness/fault/
+check "the planted fault library" 'plantFault|raiseProcessFault|isProcessFault|faultTable\(' \
+  harness/fault/ harness/mutate/ harness/run/fault_seam.cpp
+
+[[ $bad == 0 ]] || exit 1
+echo "check-fault-seam: test-only hooks used only behind the fault seam"
