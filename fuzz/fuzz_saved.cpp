@@ -71,9 +71,9 @@ void resultsBundle(const std::string& text) {
   write(workDir() / "img.raw", rest.substr(0, image_bytes));
   write(workDir() / "records.bin",
         rest.size() > image_bytes ? rest.substr(image_bytes) : std::string());
-  std::string error;
-  const rayspec::Results r = rayspec::readResults(workDir().string(), &error);
-  if (!error.empty()) return;
+  const rayspec::Result<rayspec::Results> read = rayspec::readResults(workDir().string());
+  if (!read) return;
+  const rayspec::Results& r = *read;
   require(rayspec::caseNameProblem(r.case_name).empty());
   for (const rayspec::Image& im : r.images) {
     require(rayspec::fileNameProblem(im.name).empty());

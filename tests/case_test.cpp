@@ -587,7 +587,23 @@ TEST(ParseCaseFile, NameFamilyAndBadFiles) {
   EXPECT_GE(r.errors[0].loc.line, 2);
   r = parseCaseFile(root + "/bad/does-not-exist.yaml", root);
   ASSERT_EQ(r.errors.size(), 1u);
-  EXPECT_NE(r.errors[0].message.find("cannot open"), std::string::npos);
+  EXPECT_EQ(r.errors[0].format(), root + "/bad/does-not-exist.yaml:0:0: no such file");
+}
+
+// A case file over kMaxCaseFileBytes is refused unread, naming the file.
+TEST(ParseCaseFile, RefusesAHugeFile) {
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "rayspec-huge-case.yaml").string();
+  {
+    std::ofstream out(path);
+    out << "# " << std::string(kMaxCaseFileBytes, 'x') << "\n";
+  }
+  const ParseResult r = parseCaseFile(path, "/");
+  ASSERT_EQ(r.errors.size(), 1u);
+  EXPECT_EQ(r.errors[0].loc.file, path);
+  EXPECT_NE(r.errors[0].message.find("more than the 1048576"), std::string::npos)
+      << r.errors[0].message;
+  std::filesystem::remove(path);
 }
 
 TEST(ParseCaseFile, NameIsPathUnderRoot) {

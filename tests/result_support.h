@@ -16,4 +16,11 @@ T orError(Result<T> r, std::string* error) {
   return T{};
 }
 
+// Result<void>: true when it succeeded, else false with the error's text in *error.
+inline bool orError(Result<void> r, std::string* error) {
+  if (r) return true;
+  *error = r.error().format();
+  return false;
+}
+
 }  // namespace rayspec

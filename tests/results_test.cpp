@@ -6,6 +6,7 @@
 #include <fstream>
 #include <set>
 
+#include "result_support.h"
 #include "results/content_hash.h"
 #include "results/image_files.h"
 #include "results/record_layout.h"
@@ -66,7 +67,7 @@ TEST(ResultsIo, BundleRoundTripsEveryField) {
   const Results r = sampleResults();
   ASSERT_EQ(writeResults(r, dir, {"hit_t"}), "");
   std::string error;
-  const Results back = readResults(dir, &error);
+  const Results back = orError(readResults(dir), &error);
   ASSERT_EQ(error, "");
   EXPECT_EQ(back.case_name, r.case_name);
   EXPECT_EQ(back.device, r.device);
@@ -123,7 +124,7 @@ TEST(ResultsIo, BadBundlesNameTheFieldOrFile) {
     if (at != std::string::npos) text.replace(at, from.size(), to);
     std::ofstream(dir + "/results.json") << text;
     std::string error;
-    readResults(dir, &error);
+    orError(readResults(dir), &error);
     return error;
   };
   EXPECT_NE(
@@ -142,7 +143,7 @@ TEST(ResultsIo, BadBundlesNameTheFieldOrFile) {
   std::filesystem::resize_file(dir + "/records.bin",
                                std::filesystem::file_size(dir + "/records.bin") - 4);
   std::string error;
-  readResults(dir, &error);
+  orError(readResults(dir), &error);
   EXPECT_NE(error.find("records.bin holds " + std::to_string(6 * recordWords() * 4 - 4) +
                        " bytes; results.json says width x height x record words 3 x 2 x"),
             std::string::npos)
@@ -151,7 +152,7 @@ TEST(ResultsIo, BadBundlesNameTheFieldOrFile) {
 
 TEST(ResultsIo, MissingBundleIsAnError) {
   std::string error;
-  readResults("/nonexistent/rayspec", &error);
+  orError(readResults("/nonexistent/rayspec"), &error);
   EXPECT_NE(error.find("results.json"), std::string::npos);
 }
 

@@ -18,6 +18,7 @@
 #include "case/parse_case.h"
 #include "compare/compare_results.h"
 #include "report/rule_catalog.h"
+#include "result_support.h"
 #include "results/record_layout.h"
 #include "results/results_io.h"
 #include "run/case_steps.h"
@@ -165,7 +166,7 @@ TEST(Isolation, ModelCrashIsACrash) {
       << m.results.status_detail;
   // The dead side's bundle says so (a saved run judged elsewhere shows the crash).
   std::string error;
-  const Results saved = readResults(dir, &error);
+  const Results saved = orError(readResults(dir), &error);
   EXPECT_EQ(error, "");
   EXPECT_EQ(saved.status, SideStatus::Crash);
   EXPECT_EQ(saved.case_hash, c.source_hash);

@@ -25,14 +25,6 @@ TEST(TierRuns, NamesFoldersAndBundles) {
   EXPECT_EQ(shortDeviceName("llvmpipe (LLVM 15.0.6, 256 bits) (Mesa 25)"), "llvmpipe");
   EXPECT_EQ(shortDeviceName("NVIDIA H100"), "NVIDIA H100");
   EXPECT_FALSE(readRunBundle("/nonexistent/case/model", "test").has_value());
-  const std::string path =
-      (std::filesystem::temp_directory_path() / "rayspec-tiers-test.txt").string();
-  EXPECT_EQ(writeTextFile(path, "text\n"), "");
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  EXPECT_EQ(line, "text");
-  EXPECT_NE(writeTextFile("/nonexistent-dir/x.txt", "x"), "");
 }
 
 }  // namespace

@@ -92,7 +92,7 @@ TEST(SbtStride, RecordDataAndPaddingSetTheStride) {
         EXPECT_EQ(region->offset % limits.base_alignment, 0u);
       EXPECT_EQ(l.total_size, l.callable.offset + l.callable.size);
       std::string error;
-      EXPECT_TRUE(checkSbtLayout(l, limits, &error)) << error;
+      EXPECT_TRUE(orError(checkSbtLayout(l, limits), &error)) << error;
     }
   }
 }
@@ -108,33 +108,33 @@ TEST(SbtStride, EachRegionHasItsOwnPadding) {
   EXPECT_EQ(l.hit.offset, 64u + 2 * 4048u);  // 8160: a multiple of 32
   EXPECT_EQ(l.callable.offset, 8320u);       // 8160 + 3 * 48 = 8304, base-aligned
   std::string error;
-  EXPECT_TRUE(checkSbtLayout(l, lim, &error)) << error;
+  EXPECT_TRUE(orError(checkSbtLayout(l, lim), &error)) << error;
 }
 
 TEST(SbtStride, AStrideAboveMaxShaderGroupStrideIsRefusedNamingTheRegion) {
   std::string error;
   // 32 + 32 + 4033 = 4097 -> 4128 on an NVIDIA-like device: the hit region alone.
   SbtLayout l = computeSbtLayout(nvidiaLike(), shaped(32, {0, 4033, 0}));
-  EXPECT_FALSE(checkSbtLayout(l, nvidiaLike(), &error));
+  EXPECT_FALSE(orError(checkSbtLayout(l, nvidiaLike()), &error));
   EXPECT_NE(error.find("sbt hit region: stride 4128 > maxShaderGroupStride 4096"),
             std::string::npos)
       << error;
   // The same case fits lavapipe's 16384.
-  EXPECT_TRUE(
-      checkSbtLayout(computeSbtLayout(lavapipe(), shaped(32, {0, 4033, 0})), lavapipe(), &error))
+  EXPECT_TRUE(orError(
+      checkSbtLayout(computeSbtLayout(lavapipe(), shaped(32, {0, 4033, 0})), lavapipe()), &error))
       << error;
   // Exactly maxShaderGroupStride is allowed; one alignment step more is not.
   l = computeSbtLayout(lavapipe(), shaped(0, {16384 - 32, 0, 0}));
   EXPECT_EQ(l.miss.stride, 16384u);
-  EXPECT_TRUE(checkSbtLayout(l, lavapipe(), &error)) << error;
+  EXPECT_TRUE(orError(checkSbtLayout(l, lavapipe()), &error)) << error;
   l = computeSbtLayout(lavapipe(), shaped(0, {16384 - 31, 0, 0}));
   EXPECT_EQ(l.miss.stride, 16400u);
-  EXPECT_FALSE(checkSbtLayout(l, lavapipe(), &error));
+  EXPECT_FALSE(orError(checkSbtLayout(l, lavapipe()), &error));
   EXPECT_NE(error.find("sbt miss region"), std::string::npos) << error;
   // An empty region's padding does not matter (its stride is 0).
   l = computeSbtLayout(nvidiaLike(), shaped(32, {0, 0, 60000}, 1, 1, 0));
   EXPECT_EQ(l.callable.stride, 0u);
-  EXPECT_TRUE(checkSbtLayout(l, nvidiaLike(), &error)) << error;
+  EXPECT_TRUE(orError(checkSbtLayout(l, nvidiaLike()), &error)) << error;
 }
 
 TEST(SbtStride, RecordsLieAtTheirStrideWithZeroPadding) {
@@ -149,7 +149,9 @@ TEST(SbtStride, RecordsLieAtTheirStrideWithZeroPadding) {
   ASSERT_EQ(l.hit.stride, 4048u);
   std::vector<uint8_t> bytes;
   std::string error;
-  ASSERT_TRUE(writeSbt(l, lim, p, fakeHandles(p, lim), &bytes, &error)) << error;
+  error.clear();
+  bytes = orError(writeSbt(l, lim, p, fakeHandles(p, lim)), &error);
+  ASSERT_EQ(error, "");
   // raygen: handle 0x10, its two words right after it
   EXPECT_EQ(bytes[0], 0x10);
   EXPECT_EQ(wordAt(bytes, 32), 0xAAAA0001u);
@@ -176,11 +178,15 @@ TEST(SbtStride, DataPastTheRecordDataBytesIsAnError) {
   p.sbt_hit = {{0, {1, 2}}};  // 8 bytes of data, 4 bytes per record
   std::vector<uint8_t> bytes;
   std::string error;
-  EXPECT_FALSE(writeSbt(computeSbtLayout(lim, p), lim, p, fakeHandles(p, lim), &bytes, &error));
+  error.clear();
+  bytes = orError(writeSbt(computeSbtLayout(lim, p), lim, p, fakeHandles(p, lim)), &error);
+  EXPECT_NE(error, "");
   EXPECT_NE(error.find("sbt hit record 0: 2 data words (at most 1)"), std::string::npos) << error;
   p.sbt_hit = {{0, {1}}};
   p.raygen_data = {1, 2};
-  EXPECT_FALSE(writeSbt(computeSbtLayout(lim, p), lim, p, fakeHandles(p, lim), &bytes, &error));
+  error.clear();
+  bytes = orError(writeSbt(computeSbtLayout(lim, p), lim, p, fakeHandles(p, lim)), &error);
+  EXPECT_NE(error, "");
   EXPECT_NE(error.find("sbt raygen record 0"), std::string::npos) << error;
 }
 
@@ -188,7 +194,7 @@ TEST(SbtStride, DataPastTheRecordDataBytesIsAnError) {
 
 bool rayTracingDeviceExists() {
   std::string error;
-  for (const DeviceInfo& d : listDevices(&error))
+  for (const DeviceInfo& d : orError(listDevices(), &error))
     if (d.ray_tracing_pipeline && d.acceleration_structure) return true;
   return false;
 }

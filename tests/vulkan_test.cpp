@@ -77,7 +77,7 @@ TEST(SbtLayout, LavapipeNumbers) {
   EXPECT_EQ(l.callable.size, 64u);
   EXPECT_EQ(l.total_size, 448u);
   std::string error;
-  EXPECT_TRUE(checkSbtLayout(l, lavapipeLimits(), &error)) << error;
+  EXPECT_TRUE(orError(checkSbtLayout(l, lavapipeLimits()), &error)) << error;
 }
 
 TEST(SbtLayout, NvidiaLikeNumbersAlignRegionsTo64) {
@@ -92,7 +92,7 @@ TEST(SbtLayout, NvidiaLikeNumbersAlignRegionsTo64) {
   EXPECT_EQ(l.callable.offset, 192u);
   EXPECT_EQ(l.total_size, 256u);
   std::string error;
-  EXPECT_TRUE(checkSbtLayout(l, nvidiaLimits(), &error)) << error;
+  EXPECT_TRUE(orError(checkSbtLayout(l, nvidiaLimits()), &error)) << error;
 
   SbtLimits wide = nvidiaLimits();
   wide.base_alignment = 128;
@@ -100,7 +100,7 @@ TEST(SbtLayout, NvidiaLikeNumbersAlignRegionsTo64) {
   EXPECT_EQ(w.miss.offset, 128u);
   EXPECT_EQ(w.hit.offset, 256u);
   EXPECT_EQ(w.callable.offset, 384u);
-  EXPECT_TRUE(checkSbtLayout(w, wide, &error)) << error;
+  EXPECT_TRUE(orError(checkSbtLayout(w, wide), &error)) << error;
 }
 
 TEST(SbtLayout, StrideRoundsUpToHandleAlignment) {
@@ -112,7 +112,7 @@ TEST(SbtLayout, StrideRoundsUpToHandleAlignment) {
   EXPECT_EQ(l.hit.offset, 256u);
   EXPECT_EQ(l.callable.size, 0u);
   std::string error;
-  EXPECT_TRUE(checkSbtLayout(l, odd, &error)) << error;
+  EXPECT_TRUE(orError(checkSbtLayout(l, odd), &error)) << error;
 }
 
 TEST(SbtLayout, EmptyRegionsAreAllZero) {
@@ -130,13 +130,13 @@ TEST(SbtLayout, StrideAboveMaxShaderGroupStrideIsRejected) {
   tight.max_stride = 32;
   SbtLayout l = computeSbtLayout(tight, groups(1, 1, 0));
   std::string error;
-  EXPECT_FALSE(checkSbtLayout(l, tight, &error));
+  EXPECT_FALSE(orError(checkSbtLayout(l, tight), &error));
   EXPECT_NE(error.find("maxShaderGroupStride"), std::string::npos) << error;
   for (const SbtLimits& real : {lavapipeLimits(), nvidiaLimits()}) {
     SbtLayout ok = computeSbtLayout(real, groups(3, 4, 2));
     for (const SbtRegion* r : {&ok.raygen, &ok.miss, &ok.hit, &ok.callable})
       EXPECT_LE(r->stride, real.max_stride);
-    EXPECT_TRUE(checkSbtLayout(ok, real, &error)) << error;
+    EXPECT_TRUE(orError(checkSbtLayout(ok, real), &error)) << error;
   }
 }
 
@@ -145,7 +145,7 @@ TEST(SbtLayout, MisalignedRegionIsRejected) {
   l.hit.offset += 16;
   l.total_size += 16;
   std::string error;
-  EXPECT_FALSE(checkSbtLayout(l, lavapipeLimits(), &error));
+  EXPECT_FALSE(orError(checkSbtLayout(l, lavapipeLimits()), &error));
   EXPECT_NE(error.find("shaderGroupBaseAlignment"), std::string::npos) << error;
 }
 
@@ -155,7 +155,9 @@ TEST(SbtLayout, DefaultRecordsAreOnePerGroupInOrder) {
   SbtLayout l = computeSbtLayout(lim, p);
   std::vector<uint8_t> bytes;
   std::string error;
-  ASSERT_TRUE(writeSbt(l, lim, p, fakeHandles(p, lim), &bytes, &error)) << error;
+  error.clear();
+  bytes = orError(writeSbt(l, lim, p, fakeHandles(p, lim)), &error);
+  ASSERT_EQ(error, "");
   ASSERT_EQ(bytes.size(), l.total_size);
   EXPECT_TRUE(allBytes(bytes, 0, 32, 0x10));                   // raygen group 0
   EXPECT_TRUE(allBytes(bytes, 32, 32, 0));                     // its data
@@ -179,7 +181,9 @@ TEST(SbtLayout, ZeroRecordsAndRecordData) {
     EXPECT_EQ(l.callable.count, 2u);
     std::vector<uint8_t> bytes;
     std::string error;
-    ASSERT_TRUE(writeSbt(l, lim, p, fakeHandles(p, lim), &bytes, &error)) << error;
+    error.clear();
+    bytes = orError(writeSbt(l, lim, p, fakeHandles(p, lim)), &error);
+    ASSERT_EQ(error, "");
     const uint64_t s = l.hit.stride;
     // raygen data right after the handle
     EXPECT_EQ(wordAt(bytes, lim.handle_size), 0xAAAA0001u);
@@ -214,16 +218,22 @@ TEST(SbtLayout, BadRecordsAreErrors) {
   p.sbt_hit = {rec(1)};  // only hit group 0 exists
   std::vector<uint8_t> bytes;
   std::string error;
-  EXPECT_FALSE(writeSbt(computeSbtLayout(lim, p), lim, p, fakeHandles(p, lim), &bytes, &error));
+  error.clear();
+  bytes = orError(writeSbt(computeSbtLayout(lim, p), lim, p, fakeHandles(p, lim)), &error);
+  EXPECT_NE(error, "");
   EXPECT_NE(error.find("out of range"), std::string::npos) << error;
 
   p.sbt_hit = {rec(0, std::vector<uint32_t>(9, 1))};  // 9 data words
-  EXPECT_FALSE(writeSbt(computeSbtLayout(lim, p), lim, p, fakeHandles(p, lim), &bytes, &error));
+  error.clear();
+  bytes = orError(writeSbt(computeSbtLayout(lim, p), lim, p, fakeHandles(p, lim)), &error);
+  EXPECT_NE(error, "");
   EXPECT_NE(error.find("data words"), std::string::npos) << error;
 
   p.sbt_hit = {rec(0)};
   std::vector<uint8_t> short_handles(lim.handle_size);  // one handle for three groups
-  EXPECT_FALSE(writeSbt(computeSbtLayout(lim, p), lim, p, short_handles, &bytes, &error));
+  error.clear();
+  bytes = orError(writeSbt(computeSbtLayout(lim, p), lim, p, short_handles), &error);
+  EXPECT_NE(error, "");
 }
 
 // ------------------------------------------------------------- on the device
@@ -310,7 +320,7 @@ std::unique_ptr<VulkanEngine> makeBackend() {
 
 bool rayTracingDeviceExists() {
   std::string error;
-  for (const DeviceInfo& d : listDevices(&error))
+  for (const DeviceInfo& d : orError(listDevices(), &error))
     if (d.ray_tracing_pipeline && d.acceleration_structure) return true;
   return false;
 }
@@ -328,7 +338,7 @@ uint32_t field(const Results& r, uint32_t ray, const char* name) {
 TEST(VulkanDevice, ListsARayTracingDevice) {
   SKIP_WITHOUT_RT_DEVICE();
   std::string error;
-  auto devices = listDevices(&error);
+  auto devices = orError(listDevices(), &error);
   ASSERT_FALSE(devices.empty()) << error;
   bool found = false;
   for (const DeviceInfo& d : devices) {

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "accuracy/accuracy_table.h"
+#include "base/whole_file.h"
 #include "library/case_discovery.h"
 #include "run/run_loop.h"
 #include "tiers/tier_runs.h"
@@ -116,9 +117,10 @@ int runAccuracy(const AccuracyOptions& opt) {
       return rc;
   std::filesystem::create_directories(opt.out);
   const std::string table = formatAccuracyTable(rows);
-  std::string error = writeTextFile(opt.out + "/accuracy.txt", table);
-  if (error.empty())
-    error = writeTextFile(opt.out + "/accuracy.json", accuracyJson(rows).dump(2) + "\n");
+  Result<void> written = writeWholeFile(opt.out + "/accuracy.txt", table);
+  if (written)
+    written = writeWholeFile(opt.out + "/accuracy.json", accuracyJson(rows).dump(2) + "\n");
+  std::string error = written ? std::string() : written.error().format();
   if (error.empty()) {
     const std::vector<PlotPanel> panels = accuracyPanels(rows);
     if (panels.empty()) {

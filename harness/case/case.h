@@ -119,6 +119,9 @@ struct SbtRecord {
 // the raygen region (one record) has no padding.
 constexpr uint32_t kMaxShaderRecordDataBytes = 32;  // 8 words
 constexpr uint32_t kMaxSbtPaddingBytes = 65536;
+// A case or sweep file larger than this is refused unread (the largest in
+// cases/ holds 16 KB).
+constexpr uint64_t kMaxCaseFileBytes = 1u << 20;
 struct SbtPadding {
   uint32_t miss = 0, hit = 0, callable = 0;  // bytes
 };

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "base/visible_text.h"
+#include "base/whole_file.h"
 #include "case/case_parts.h"
 #include "results/content_hash.h"
 #include "results/file_name.h"
@@ -133,20 +134,18 @@ ParseResult parseCaseText(const std::string& yaml, const std::string& file_name,
 ParseResult parseCaseFile(const std::string& path, const std::string& cases_root,
                           const std::vector<std::string>* catalog) {
   namespace fs = std::filesystem;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+  const Result<std::string> text = readWholeFile(path, kMaxCaseFileBytes);
+  if (!text) {
     ParseResult result;
-    result.errors.push_back({SourceLoc{path, 0, 0, ""}, "cannot open the case file"});
+    result.errors.push_back(text.error());
     return result;
   }
-  std::stringstream text;
-  text << in.rdbuf();
   std::error_code ec;
   fs::path rel =
       fs::weakly_canonical(path, ec).lexically_relative(fs::weakly_canonical(cases_root, ec));
   if (rel.empty() || *rel.begin() == "..") rel = fs::path(path).filename();
   rel.replace_extension();
-  return parseCaseText(text.str(), path, rel.generic_string(), catalog);
+  return parseCaseText(*text, path, rel.generic_string(), catalog);
 }
 
 }  // namespace rayspec

@@ -60,20 +60,21 @@ CaseOutcome failedOutcome(const std::string& name, Status s, const std::string& 
 }
 
 CaseOutcome compareOne(const Pair& p, const CompareOptions& opt, std::vector<std::string>* rules) {
-  std::string error;
-  Results a = readResults(p.a.string(), &error);
-  const std::string name = p.name.empty() ? a.case_name : p.name;
+  Result<Results> read_a = readResults(p.a.string());
   // An unreadable bundle or case file is not the driver's fault: a CaseError.
-  if (!error.empty()) return caseErrorOutcome(name, {}, "bundle", error);
+  if (!read_a)
+    return caseErrorOutcome(p.name.empty() ? p.a.string() : p.name, {}, "bundle",
+                            read_a.error().format());
+  const Results& a = *read_a;
+  const std::string name = p.name.empty() ? a.case_name : p.name;
   if (!isBundle(p.b))
     return failedOutcome(name, Status::NotSupported,
                          "no reference: " + p.b.string() + " has no results");
-  Results b = readResults(p.b.string(), &error);
-  if (!error.empty()) return caseErrorOutcome(name, {}, "bundle", error);
-  if (!p.ambiguity.empty()) {
-    const Results m = readResults(p.ambiguity.string(), &error);
-    if (error.empty()) b.ambiguous = m.ambiguous;
-  }
+  Result<Results> read_b = readResults(p.b.string());
+  if (!read_b) return caseErrorOutcome(name, {}, "bundle", read_b.error().format());
+  Results& b = *read_b;
+  if (!p.ambiguity.empty())
+    if (const Result<Results> m = readResults(p.ambiguity.string())) b.ambiguous = m->ambiguous;
   const std::string file = a.case_file.empty() ? b.case_file : a.case_file;
   const std::optional<CaseFile> found = findCase(a.case_name, file, opt.cases_dir);
   ParseResult parsed;

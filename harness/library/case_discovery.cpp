@@ -8,6 +8,7 @@
 #include <map>
 #include <sstream>
 
+#include "base/whole_file.h"
 #include "library/expand_sweep.h"
 #include "results/file_name.h"
 
@@ -32,13 +33,9 @@ std::string nameOf(const std::string& path, const std::string& cases_dir) {
 }
 
 std::vector<CaseFile> expand(const std::string& path, const std::string& name) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    return {CaseFile{
-        path, name, false, {}, {Error{SourceLoc{path, 0, 0, ""}, "cannot open the case file"}}}};
-  std::stringstream text;
-  text << in.rdbuf();
-  SweepExpansion ex = expandSweep(text.str(), path, name);
+  const Result<std::string> text = readWholeFile(path, kMaxCaseFileBytes);
+  if (!text) return {CaseFile{path, name, false, {}, {text.error()}}};
+  SweepExpansion ex = expandSweep(*text, path, name);
   if (!ex.errors.empty()) return {CaseFile{path, name, false, {}, std::move(ex.errors)}};
   std::vector<CaseFile> out;
   for (SweepVariant& v : ex.variants)

@@ -7,30 +7,14 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
+#include "base/whole_file.h"
 #include "plot/line_plot.h"
 
 extern char** environ;
 
 namespace rayspec {
 namespace {
-
-Result<void> writeScript(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) return errorMessage("cannot write " + path);
-  return {};
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Runs `gnuplot script` with its output into `log`; the exit status, or -1
 // with errno set where it could not start.
@@ -61,11 +45,13 @@ Result<void> writePlots(const std::string& path, const std::vector<PlotPanel>& p
                         const PlotLayout& layout) {
   if (panels.empty()) return errorMessage("nothing to plot: no panel");
   const std::string script = path + ".gp", log = path + ".gnuplot-log";
-  if (Result<void> r = writeScript(script, gnuplotScript(path, panels, layout)); !r) return r;
+  if (Result<void> r = writeWholeFile(script, gnuplotScript(path, panels, layout)); !r) return r;
   std::error_code ec;
   std::filesystem::remove(path, ec);  // an old image must not pass for a new one
   const int rc = runGnuplot(script, log);
-  const std::string printed = slurp(log);
+  // What gnuplot printed, for the error (its first 64 KiB).
+  const Result<std::string> printed_text = readWholeFile(log, 64u << 10);
+  const std::string printed = printed_text ? *printed_text : printed_text.error().format();
   std::filesystem::remove(log, ec);
   if (rc < 0)
     return errorMessage("cannot run gnuplot for " + path + ": " + std::strerror(errno) +

@@ -1,4 +1,5 @@
 #include "report/rule_catalog.h"
+#include "base/whole_file.h"
 
 #include <filesystem>
 #include <fstream>
@@ -9,6 +10,8 @@
 namespace rayspec {
 
 namespace {
+
+constexpr uint64_t kMaxRuleCatalogBytes = 1u << 20;
 
 // An error at a place in the catalog (line and column from yaml-cpp's mark).
 Error catalogError(const std::string& path, const YAML::Mark& m, const std::string& field,
@@ -23,12 +26,11 @@ Result<std::vector<Rule>> loadRuleCatalog(const std::string& path) {
   if (!std::filesystem::is_regular_file(path, ec))
     return errorMessage(path +
                         ": no such rule catalog (expected a file of `R-LABEL: title` lines)");
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
+  const Result<std::string> text = readWholeFile(path, kMaxRuleCatalogBytes);
+  if (!text) return text.error();
   YAML::Node root;
   try {
-    root = YAML::Load(text.str());
+    root = YAML::Load(*text);
   } catch (const YAML::Exception& e) {
     return catalogError(path, e.mark, "", "malformed YAML: " + e.msg);
   }

@@ -314,20 +314,20 @@ std::string readResultsJson(std::istream& in, const fs::path& dir, Results& r) {
 
 }  // namespace
 
-Results readResults(const std::string& dir_name, std::string* error) {
+Result<Results> readResults(const std::string& dir_name) {
   Results r;
   const fs::path dir(dir_name);
   std::ifstream in(dir / "results.json");
-  if (!in) {
-    *error = "no results.json in " + dir.string();
-    return r;
-  }
-  if ((*error = readResultsJson(in, dir, r)); !error->empty()) return r;
+  if (!in) return errorMessage("no results.json in " + dir.string());
+  if (std::string e = readResultsJson(in, dir, r); !e.empty()) return errorMessage(std::move(e));
   // No records at all when the case records nothing per ray (or its side died).
   const std::string implied = "width x height x record words " + std::to_string(r.width) + " x " +
                               std::to_string(r.height) + " x " + std::to_string(recordWords());
-  *error = readSizedWords(dir / "records.bin", uint64_t(r.width) * r.height * recordWords(), true,
-                          implied, r.records);
+  if (std::string e =
+          readSizedWords(dir / "records.bin", uint64_t(r.width) * r.height * recordWords(), true,
+                         implied, r.records);
+      !e.empty())
+    return errorMessage(std::move(e));
   return r;
 }
 

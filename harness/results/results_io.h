@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "base/result.h"
 #include "results/results.h"
 
 namespace rayspec {
@@ -39,8 +40,8 @@ std::string writeResults(const Results& r, const std::string& dir,
 std::string writeRecordsCsv(const Results& r, const std::string& path,
                             const std::vector<std::string>& kept_fields);
 
-// Reads a bundle back; error set on failure.
-Results readResults(const std::string& dir, std::string* error);
+// Reads a bundle back (results.json, records.bin, the images).
+Result<Results> readResults(const std::string& dir);
 
 // One field of one record as text ("1.5", "0.25 0.5"); empty when the field
 // is recordable and was not written.

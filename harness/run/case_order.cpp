@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "results/whole_file.h"
+#include "base/whole_file.h"
 
 namespace rayspec {
 namespace {
@@ -45,8 +45,7 @@ void saveCaseSeconds(const std::string& cache_dir, const std::map<std::string, d
   std::error_code ec;
   std::filesystem::create_directories(cache_dir, ec);
   const std::string text = nlohmann::json(all).dump(0) + "\n";
-  writeFileWhole(cachePath(cache_dir), text.data(),
-                 text.size());  // runs beside this one read it too
+  (void)writeWholeFile(cachePath(cache_dir), text);  // a cache, which runs beside this one read
 }
 
 std::vector<size_t> longestFirst(const std::vector<std::string>& names,

@@ -100,9 +100,10 @@ SideFor deviceSideFor(const RunOptions& opt) {
     if (faultReadsModel(fault) && !opt.no_model) {
       // The model's answer, which a planted fault chooses its rays by, is the
       // bundle the model side of this case just wrote.
-      std::string error;
-      *model = readResults(std::filesystem::path(dir).parent_path().string() + "/model", &error);
-      if (!error.empty()) throw HarnessError("device side: the model's results: " + error);
+      Result<Results> read =
+          readResults(std::filesystem::path(dir).parent_path().string() + "/model");
+      if (!read) throw HarnessError("device side: the model's results: " + read.error().format());
+      *model = std::move(*read);
     }
     return deviceSide(opt, model, fault);
   };

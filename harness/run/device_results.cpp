@@ -28,9 +28,9 @@ Results SavedDevice::run(const Case& c, const Plan&) {
                                               ": the case did not run there, nothing was compared");
     return r;
   }
-  std::string error;
-  Results r = readResults(bundle, &error);
-  if (!error.empty()) throw HarnessError("saved device results: " + error);
+  Result<Results> read = readResults(bundle);
+  if (!read) throw HarnessError("saved device results: " + read.error().format());
+  Results& r = *read;
   const std::string json = bundle + "/results.json";
   if (r.case_name != c.name)
     throw HarnessError(json + ": the bundle is case '" + r.case_name + "', not '" + c.name + "'");

@@ -27,9 +27,9 @@ std::string noDeviceReason(const IcdManifest& m) {
 }  // namespace
 
 std::vector<DeviceInfo> listDevicesOrWhyNot(std::string* why, std::string* loader_error) {
-  std::string error;
-  std::vector<DeviceInfo> devices = listDevices(&error);
-  if (loader_error) *loader_error = error;
+  Result<std::vector<DeviceInfo>> listed = listDevices();
+  if (loader_error) *loader_error = listed ? std::string() : listed.error().format();
+  std::vector<DeviceInfo> devices = listed ? std::move(*listed) : std::vector<DeviceInfo>{};
   if (!devices.empty()) return devices;
   std::string text;
   const IcdSearch search = findIcdManifests();
@@ -50,11 +50,11 @@ IcdProbe probeIcd(const IcdManifest& manifest, const ChildLimits& limits) {
         setenv("VK_DRIVER_FILES", manifest.path.c_str(), 1);
         setenv("VK_ICD_FILENAMES", manifest.path.c_str(), 1);
         unsetenv("VK_ADD_DRIVER_FILES");
-        std::string error;
-        const std::vector<DeviceInfo> devices = listDevices(&error);
+        const Result<std::vector<DeviceInfo>> listed = listDevices();
+        const std::vector<DeviceInfo> devices = listed ? *listed : std::vector<DeviceInfo>{};
         std::string why;
         if (devices.empty())
-          why = noDeviceReason(manifest) + (error.empty() ? "" : " (" + error + ")");
+          why = noDeviceReason(manifest) + (listed ? "" : " (" + listed.error().format() + ")");
         message = nlohmann::json{{"devices", devices}, {"why", why}}.dump();
         return 0;
       },

@@ -83,12 +83,12 @@ SideResult collect(const std::string& label, const std::string& backend_name, co
         return ended(backend_name, c, plan, SideStatus::Crash, describeChildEnd(end, who, limits),
                      end.seconds, dir);
   }
-  std::string error;
   StepCosts parent;  // the parent's own steps for this side
   StepTimer read_time(parent, CostStep::ReadBundle);
-  out.results = readResults(dir, &error);
+  Result<Results> read = readResults(dir);
   read_time.stop();
-  if (!error.empty()) throw HarnessError(label + " side: " + error);
+  if (!read) throw HarnessError(label + " side: " + read.error().format());
+  out.results = std::move(*read);
   out.note = end.message;
   StepTimer image_time(parent, CostStep::ImageFiles);
   for (const Image& im : out.results.images) {

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "base/whole_file.h"
 #include "library/case_discovery.h"
 #include "run/run_loop.h"
 #include "stability/stability_table.h"
@@ -102,9 +103,10 @@ int runStability(const StabilityOptions& opt) {
     }
   std::filesystem::create_directories(opt.out);
   const std::string table = formatStabilityTable(entries);
-  std::string error = writeTextFile(opt.out + "/stability.txt", table);
-  if (error.empty())
-    error = writeTextFile(opt.out + "/stability.json", stabilityJson(entries).dump(2) + "\n");
+  Result<void> written = writeWholeFile(opt.out + "/stability.txt", table);
+  if (written)
+    written = writeWholeFile(opt.out + "/stability.json", stabilityJson(entries).dump(2) + "\n");
+  std::string error = written ? std::string() : written.error().format();
   if (error.empty()) {
     const PlotLayout layout{static_cast<int>(stabilitySources(entries).size()), 330, 290,
                             "Leaks and double hits per 1000 rays (rows: families; columns: "

@@ -43,25 +43,19 @@ int runTiers(const TierRuns& runs) {
 }
 
 std::optional<Results> readRunBundle(const std::string& dir, const std::string& command) {
-  std::string error;
-  Results r = readResults(dir, &error);
-  if (!error.empty() || !r.ok()) {
+  Result<Results> r = readResults(dir);
+  if (!r || !r->ok()) {
+    const std::string why = r ? r->statusText() : r.error().format();
     std::fprintf(stderr, "rayspec %s: %s: %s; left out\n", command.c_str(), dir.c_str(),
-                 error.empty() ? r.statusText().c_str() : error.c_str());
+                 why.c_str());
     return std::nullopt;
   }
-  return r;
+  return std::move(*r);
 }
 
 std::string shortDeviceName(const std::string& device) {
   const size_t cut = device.find(" (");
   return cut == std::string::npos ? device : device.substr(0, cut);
-}
-
-std::string writeTextFile(const std::string& path, const std::string& text) {
-  std::ofstream f(path);
-  f << text;
-  return f.good() ? "" : path + ": cannot write";
 }
 
 }  // namespace rayspec

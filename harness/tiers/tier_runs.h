@@ -43,7 +43,4 @@ std::optional<Results> readRunBundle(const std::string& dir, const std::string& 
 // The device's name up to its first " (": "llvmpipe (LLVM 15, ...)" -> "llvmpipe".
 std::string shortDeviceName(const std::string& device);
 
-// Writes a text file; "" or what went wrong.
-std::string writeTextFile(const std::string& path, const std::string& text);
-
 }  // namespace rayspec

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstring>
+#include <optional>
 #include <vector>
 
 #include "vulkan/context.h"
@@ -160,8 +161,9 @@ Result<void> selectDevice(VulkanContext& ctx, const std::string& filter) {
   return errorMessage(why);
 }
 
-std::vector<DeviceInfo> listDevices(std::string* error) {
+Result<std::vector<DeviceInfo>> listDevices() {
   std::vector<DeviceInfo> out;
+  std::optional<Error> error;
   VulkanContext ctx;
   try {
     createInstance(ctx, false);
@@ -173,9 +175,10 @@ std::vector<DeviceInfo> listDevices(std::string* error) {
             "vkEnumeratePhysicalDevices");
     for (uint32_t i = 0; i < count; ++i) out.push_back(describeDevice(physicals[i], i));
   } catch (const std::exception& e) {
-    if (error) *error = e.what();
+    error = errorMessage(e.what());
   }
   destroyInstance(ctx);
+  if (error) return *error;
   return out;
 }
 

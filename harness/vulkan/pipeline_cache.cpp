@@ -12,7 +12,7 @@
 #include <mutex>
 #include <vector>
 
-#include "results/whole_file.h"
+#include "base/whole_file.h"
 #include "vulkan/context.h"
 
 namespace rayspec {
@@ -121,8 +121,8 @@ void closePipelineCache(const VulkanContext& ctx, VkPipelineCache cache) {
     if (lock >= 0) flock(lock, LOCK_EX);
     mergeSaved(ctx, cache, path);
     const std::vector<char> data = cacheData(ctx, cache);
-    if (!data.empty()) writeFileWhole(path, data.data(), data.size());
-    if (lock >= 0) close(lock);  // releases the lock
+    if (!data.empty()) (void)writeWholeFile(path, data.data(), data.size());  // a cache
+    if (lock >= 0) close(lock);                                               // releases the lock
   }
   vkDestroyPipelineCache(ctx.device, cache, nullptr);
 }

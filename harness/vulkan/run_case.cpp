@@ -72,10 +72,9 @@ void checkCaseSupport(const VulkanContext& ctx, const Case& c) {
   // refuse, before anything is built.
   const SbtLimits limits = deviceSbtLimits(ctx);
   const Pipeline& p = c.pipeline;
-  std::string error;
-  if (!checkSbtLayout(computeSbtLayout(limits, p), limits, &error))
+  if (const Result<void> fits = checkSbtLayout(computeSbtLayout(limits, p), limits); !fits)
     throw NotSupportedError(
-        error + " (a record is the " + std::to_string(limits.handle_size) +
+        fits.error().format() + " (a record is the " + std::to_string(limits.handle_size) +
         "-byte handle + pipeline.sbt.record_data " + std::to_string(p.sbt_record_data) +
         " + pipeline.sbt.padding: miss " + std::to_string(p.sbt_padding.miss) + ", hit " +
         std::to_string(p.sbt_padding.hit) + ", callable " + std::to_string(p.sbt_padding.callable) +

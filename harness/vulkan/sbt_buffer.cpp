@@ -22,12 +22,12 @@ SbtBuffer createSbtBuffer(const VulkanContext& ctx, const Pipeline& p, VkPipelin
   SbtLimits limits = deviceSbtLimits(ctx);
   SbtBuffer out;
   out.layout = computeSbtLayout(limits, p);
-  std::string error;
-  if (!checkSbtLayout(out.layout, limits, &error)) throw NotSupportedError(error);
-  std::vector<uint8_t> handles = groupHandles(ctx, pipeline, sbtGroupCount(p));
-  std::vector<uint8_t> bytes;
-  if (!writeSbt(out.layout, limits, p, handles, &bytes, &error))
-    throw VulkanError(error + ": VK_ERROR_UNKNOWN");
+  if (const Result<void> fits = checkSbtLayout(out.layout, limits); !fits)
+    throw NotSupportedError(fits.error().format());
+  const std::vector<uint8_t> handles = groupHandles(ctx, pipeline, sbtGroupCount(p));
+  const Result<std::vector<uint8_t>> table = writeSbt(out.layout, limits, p, handles);
+  if (!table) throw VulkanError(table.error().format() + ": VK_ERROR_UNKNOWN");
+  const std::vector<uint8_t>& bytes = *table;
   Buffer buffer = createBuffer(
       ctx, bytes.size() + limits.base_alignment,
       VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,

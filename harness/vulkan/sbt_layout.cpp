@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <utility>
 
 #include "base/align.h"
 
@@ -15,43 +16,57 @@ std::vector<SbtRecord> orDefault(const std::vector<SbtRecord>& given, size_t gro
   return out;
 }
 
-bool writeRecord(const SbtLimits& limits, uint32_t record_data, uint64_t at,
-                 std::optional<uint32_t> group, uint32_t group_base, uint32_t group_limit,
-                 const std::vector<uint32_t>& data, const std::vector<uint8_t>& handles,
-                 std::vector<uint8_t>* out, const std::string& what, std::string* error) {
-  if (!group) return true;  // all-zero record (R-SBT-ZERO): handle and data stay zero
-  if (*group >= group_limit) {
-    *error = what + ": group " + std::to_string(*group) + " out of range (" +
-             std::to_string(group_limit) + " groups)";
-    return false;
-  }
-  if (data.size() * 4 > std::min(record_data, kSbtRecordDataBytes)) {
-    *error = what + ": " + std::to_string(data.size()) + " data words (at most " +
-             std::to_string(std::min(record_data, kSbtRecordDataBytes) / 4) + ")";
-    return false;
-  }
-  uint64_t src = static_cast<uint64_t>(group_base + *group) * limits.handle_size;
-  if (src + limits.handle_size > handles.size()) {
-    *error = what + ": handle array too short";
-    return false;
-  }
-  std::memcpy(out->data() + at, handles.data() + src, limits.handle_size);
+// One record (group handle, then data words) into `out` at byte `at`.
+Result<void> writeRecord(const SbtLimits& limits, uint32_t record_data, uint64_t at,
+                         std::optional<uint32_t> group, uint32_t group_base, uint32_t group_limit,
+                         const std::vector<uint32_t>& data, const std::vector<uint8_t>& handles,
+                         std::vector<uint8_t>& out, const std::string& what) {
+  if (!group) return {};  // all-zero record (R-SBT-ZERO): handle and data stay zero
+  if (*group >= group_limit)
+    return errorMessage(what + ": group " + std::to_string(*group) + " out of range (" +
+                        std::to_string(group_limit) + " groups)");
+  const uint32_t room = std::min(record_data, kSbtRecordDataBytes);
+  if (data.size() * 4 > room)
+    return errorMessage(what + ": " + std::to_string(data.size()) + " data words (at most " +
+                        std::to_string(room / 4) + ")");
+  const uint64_t src = static_cast<uint64_t>(group_base + *group) * limits.handle_size;
+  if (src + limits.handle_size > handles.size())
+    return errorMessage(what + ": handle array too short");
+  std::memcpy(out.data() + at, handles.data() + src, limits.handle_size);
   if (!data.empty())
-    std::memcpy(out->data() + at + limits.handle_size, data.data(), data.size() * 4);
-  return true;
+    std::memcpy(out.data() + at + limits.handle_size, data.data(), data.size() * 4);
+  return {};
 }
 
-bool writeRegion(const SbtLimits& limits, uint32_t record_data, const SbtRegion& region,
-                 const std::vector<SbtRecord>& records, uint32_t group_base, uint32_t group_limit,
-                 const std::vector<uint8_t>& handles, std::vector<uint8_t>* out, const char* name,
-                 std::string* error) {
+// The records of one region, each from its group among group_limit groups
+// that start at group_base.
+Result<void> writeRegion(const SbtLimits& limits, uint32_t record_data, const SbtRegion& region,
+                         const std::vector<SbtRecord>& records, uint32_t group_base,
+                         uint32_t group_limit, const std::vector<uint8_t>& handles,
+                         std::vector<uint8_t>& out, const char* name) {
   for (size_t i = 0; i < records.size(); ++i) {
-    std::string what = std::string("sbt ") + name + " record " + std::to_string(i);
-    if (!writeRecord(limits, record_data, region.offset + i * region.stride, records[i].group,
-                     group_base, group_limit, records[i].data, handles, out, what, error))
-      return false;
+    const std::string what = std::string("sbt ") + name + " record " + std::to_string(i);
+    if (Result<void> r =
+            writeRecord(limits, record_data, region.offset + i * region.stride, records[i].group,
+                        group_base, group_limit, records[i].data, handles, out, what);
+        !r)
+      return r;
   }
-  return true;
+  return {};
+}
+
+// The rule of vkCmdTraceRaysKHR a non-empty region breaks ("" none).
+std::string regionProblem(const SbtRegion& r, const SbtLimits& limits, uint64_t total_size) {
+  if (r.offset % limits.base_alignment)
+    return "offset " + std::to_string(r.offset) + " not a multiple of shaderGroupBaseAlignment";
+  if (r.stride % limits.handle_alignment)
+    return "stride " + std::to_string(r.stride) + " not a multiple of shaderGroupHandleAlignment";
+  if (r.stride > limits.max_stride)
+    return "stride " + std::to_string(r.stride) + " > maxShaderGroupStride " +
+           std::to_string(limits.max_stride);
+  if (r.stride < limits.handle_size) return "stride smaller than the handle";
+  if (r.offset + r.size > total_size) return "past the end of the table";
+  return {};
 }
 
 }  // namespace
@@ -105,72 +120,44 @@ SbtLayout computeSbtLayout(const SbtLimits& limits, const Pipeline& p) {
   return layout;
 }
 
-bool checkSbtLayout(const SbtLayout& layout, const SbtLimits& limits, std::string* error) {
-  struct Named {
-    const char* name;
-    const SbtRegion* region;
-  };
-  const Named regions[] = {{"raygen", &layout.raygen},
-                           {"miss", &layout.miss},
-                           {"hit", &layout.hit},
-                           {"callable", &layout.callable}};
-  for (const Named& n : regions) {
-    const SbtRegion& r = *n.region;
-    std::string name = std::string("sbt ") + n.name + " region";
-    if (r.size == 0) continue;
-    if (r.offset % limits.base_alignment) {
-      *error = name + ": offset " + std::to_string(r.offset) +
-               " not a multiple of shaderGroupBaseAlignment";
-      return false;
-    }
-    if (r.stride % limits.handle_alignment) {
-      *error = name + ": stride " + std::to_string(r.stride) +
-               " not a multiple of shaderGroupHandleAlignment";
-      return false;
-    }
-    if (r.stride > limits.max_stride) {
-      *error = name + ": stride " + std::to_string(r.stride) + " > maxShaderGroupStride " +
-               std::to_string(limits.max_stride);
-      return false;
-    }
-    if (r.stride < limits.handle_size) {
-      *error = name + ": stride smaller than the handle";
-      return false;
-    }
-    if (r.offset + r.size > layout.total_size) {
-      *error = name + ": past the end of the table";
-      return false;
-    }
-  }
-  if (layout.raygen.size != layout.raygen.stride) {
-    *error = "sbt raygen region: size != stride";
-    return false;
-  }
-  return true;
+Result<void> checkSbtLayout(const SbtLayout& layout, const SbtLimits& limits) {
+  const std::pair<const char*, const SbtRegion*> regions[] = {{"raygen", &layout.raygen},
+                                                              {"miss", &layout.miss},
+                                                              {"hit", &layout.hit},
+                                                              {"callable", &layout.callable}};
+  for (const auto& [name, region] : regions)
+    if (region->size != 0)
+      if (const std::string problem = regionProblem(*region, limits, layout.total_size);
+          !problem.empty())
+        return errorMessage(std::string("sbt ") + name + " region: " + problem);
+  if (layout.raygen.size != layout.raygen.stride)
+    return errorMessage("sbt raygen region: size != stride");
+  return {};
 }
 
-bool writeSbt(const SbtLayout& layout, const SbtLimits& limits, const Pipeline& p,
-              const std::vector<uint8_t>& handles, std::vector<uint8_t>* out, std::string* error) {
-  out->assign(layout.total_size, 0);
-  std::string ignored;
-  if (!error) error = &ignored;
+Result<std::vector<uint8_t>> writeSbt(const SbtLayout& layout, const SbtLimits& limits,
+                                      const Pipeline& p, const std::vector<uint8_t>& handles) {
+  std::vector<uint8_t> out(layout.total_size, 0);
+  const uint64_t need = static_cast<uint64_t>(sbtGroupCount(p)) * limits.handle_size;
+  if (handles.size() < need)
+    return errorMessage("sbt: " + std::to_string(handles.size()) + " handle bytes, need " +
+                        std::to_string(need));
   SbtRecord raygen;
   raygen.group = 0;
   raygen.data = p.raygen_data;
-  const uint64_t need = static_cast<uint64_t>(sbtGroupCount(p)) * limits.handle_size;
-  if (handles.size() < need) {
-    *error =
-        "sbt: " + std::to_string(handles.size()) + " handle bytes, need " + std::to_string(need);
-    return false;
-  }
   const uint32_t k = p.sbt_record_data;
-  return writeRegion(limits, k, layout.raygen, {raygen}, 0, 1, handles, out, "raygen", error) &&
-         writeRegion(limits, k, layout.miss, sbtMissRecords(p), sbtMissGroup(p, 0),
-                     static_cast<uint32_t>(p.miss.size()), handles, out, "miss", error) &&
-         writeRegion(limits, k, layout.hit, sbtHitRecords(p), sbtHitGroup(p, 0),
-                     static_cast<uint32_t>(p.hit_groups.size()), handles, out, "hit", error) &&
-         writeRegion(limits, k, layout.callable, sbtCallableRecords(p), sbtCallableGroup(p, 0),
-                     static_cast<uint32_t>(p.callables.size()), handles, out, "callable", error);
+  Result<void> r = writeRegion(limits, k, layout.raygen, {raygen}, 0, 1, handles, out, "raygen");
+  if (r)
+    r = writeRegion(limits, k, layout.miss, sbtMissRecords(p), sbtMissGroup(p, 0),
+                    static_cast<uint32_t>(p.miss.size()), handles, out, "miss");
+  if (r)
+    r = writeRegion(limits, k, layout.hit, sbtHitRecords(p), sbtHitGroup(p, 0),
+                    static_cast<uint32_t>(p.hit_groups.size()), handles, out, "hit");
+  if (r)
+    r = writeRegion(limits, k, layout.callable, sbtCallableRecords(p), sbtCallableGroup(p, 0),
+                    static_cast<uint32_t>(p.callables.size()), handles, out, "callable");
+  if (!r) return r.error();
+  return out;
 }
 
 }  // namespace rayspec

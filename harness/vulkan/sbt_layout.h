@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "base/result.h"
 #include "case/case.h"
 
 namespace rayspec {
@@ -66,15 +67,15 @@ SbtLayout computeSbtLayout(const SbtLimits& limits, const Pipeline& p);
 
 // Checks the layout against the rules of vkCmdTraceRaysKHR (strides multiple of
 // the handle alignment and <= maxShaderGroupStride, offsets multiple of the
-// base alignment, raygen size == stride). false with *error naming the rule.
-bool checkSbtLayout(const SbtLayout& layout, const SbtLimits& limits, std::string* error);
+// base alignment, raygen size == stride); the error names the rule.
+Result<void> checkSbtLayout(const SbtLayout& layout, const SbtLimits& limits);
 
 // The table bytes (layout.total_size): per record the handle of its group
 // (handles: sbtGroupCount(p) * handle_size bytes, as the device returns them),
 // then its data words; all-zero records stay zero, and so does the padding.
-// false with *error for a group index out of range or more data words than
-// the record holds (pipeline.sbt_record_data / 4).
-bool writeSbt(const SbtLayout& layout, const SbtLimits& limits, const Pipeline& p,
-              const std::vector<uint8_t>& handles, std::vector<uint8_t>* out, std::string* error);
+// An error for a group index out of range or more data words than the
+// record holds (pipeline.sbt_record_data / 4).
+Result<std::vector<uint8_t>> writeSbt(const SbtLayout& layout, const SbtLimits& limits,
+                                      const Pipeline& p, const std::vector<uint8_t>& handles);
 
 }  // namespace rayspec

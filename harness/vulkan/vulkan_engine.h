@@ -63,7 +63,7 @@ struct DeviceInfo {
 };
 
 // Every physical device the loader sees (with or without ray tracing).
-std::vector<DeviceInfo> listDevices(std::string* error);
+Result<std::vector<DeviceInfo>> listDevices();
 
 struct VulkanContext;  // internal (vulkan/context.h)
 

@@ -1,0 +1,26 @@
+// Whole files. Read: at most a given size (every file rayspec reads is input,
+// and a huge one is refused before it is read). Written whole or not at all:
+// into a temporary name beside it (unique per process and thread), then
+// renamed over it, so that a reader (another worker, another run) never
+// sees half a file.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "base/result.h"
+
+namespace rayspec {
+
+// The file's bytes; an error about the file (Error::loc.file) when it is no
+// file, cannot be read or holds more than max_bytes.
+Result<std::string> readWholeFile(const std::string& path, uint64_t max_bytes);
+
+// An error naming the file when it could not be written (nothing is left
+// behind then).
+Result<void> writeWholeFile(const std::string& path, const void* data, size_t size);
+Result<void> writeWholeFile(const std::string& path, std::string_view text);
+
+}  // namespace rayspec
