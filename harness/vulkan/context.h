@@ -42,6 +42,8 @@ struct VulkanContext {
 // asked for and installed). Throws VulkanError.
 void createInstance(VulkanContext& ctx, bool want_validation);
 void destroyInstance(VulkanContext& ctx);
+// Every physical device of the instance, in the loader's order.
+std::vector<VkPhysicalDevice> physicalDevices(VkInstance instance);
 
 // device_select.cpp
 DeviceInfo describeDevice(VkPhysicalDevice physical, uint32_t index);

@@ -129,11 +129,8 @@ DeviceInfo describeDevice(VkPhysicalDevice physical, uint32_t index) {
 }
 
 Result<void> selectDevice(VulkanContext& ctx, const std::string& filter) {
-  uint32_t count = 0;
-  vkCheck(vkEnumeratePhysicalDevices(ctx.instance, &count, nullptr), "vkEnumeratePhysicalDevices");
-  std::vector<VkPhysicalDevice> physicals(count);
-  vkCheck(vkEnumeratePhysicalDevices(ctx.instance, &count, physicals.data()),
-          "vkEnumeratePhysicalDevices");
+  const std::vector<VkPhysicalDevice> physicals = physicalDevices(ctx.instance);
+  const uint32_t count = static_cast<uint32_t>(physicals.size());
   std::string seen;
   for (uint32_t i = 0; i < count; ++i) {
     DeviceInfo d = describeDevice(physicals[i], i);
@@ -167,13 +164,8 @@ Result<std::vector<DeviceInfo>> listDevices() {
   VulkanContext ctx;
   try {
     createInstance(ctx, false);
-    uint32_t count = 0;
-    vkCheck(vkEnumeratePhysicalDevices(ctx.instance, &count, nullptr),
-            "vkEnumeratePhysicalDevices");
-    std::vector<VkPhysicalDevice> physicals(count);
-    vkCheck(vkEnumeratePhysicalDevices(ctx.instance, &count, physicals.data()),
-            "vkEnumeratePhysicalDevices");
-    for (uint32_t i = 0; i < count; ++i) out.push_back(describeDevice(physicals[i], i));
+    const std::vector<VkPhysicalDevice> physicals = physicalDevices(ctx.instance);
+    for (uint32_t i = 0; i < physicals.size(); ++i) out.push_back(describeDevice(physicals[i], i));
   } catch (const std::exception& e) {
     error = errorMessage(e.what());
   }

@@ -26,12 +26,8 @@ std::string libraryWithoutLayers(uint32_t index) {
   std::string library;
   try {
     createInstance(plain, false);
-    uint32_t count = 0;
-    vkCheck(vkEnumeratePhysicalDevices(plain.instance, &count, nullptr),
-            "vkEnumeratePhysicalDevices");
-    std::vector<VkPhysicalDevice> physicals(count);
-    vkCheck(vkEnumeratePhysicalDevices(plain.instance, &count, physicals.data()),
-            "vkEnumeratePhysicalDevices");
+    const std::vector<VkPhysicalDevice> physicals = physicalDevices(plain.instance);
+    const uint32_t count = static_cast<uint32_t>(physicals.size());
     if (index < count) {
       plain.physical = physicals[index];
       createDevice(plain);

@@ -70,4 +70,14 @@ void destroyInstance(VulkanContext& ctx) {
   ctx.instance = VK_NULL_HANDLE;
 }
 
+std::vector<VkPhysicalDevice> physicalDevices(VkInstance instance) {
+  uint32_t count = 0;
+  vkCheck(vkEnumeratePhysicalDevices(instance, &count, nullptr), "vkEnumeratePhysicalDevices");
+  std::vector<VkPhysicalDevice> physicals(count);
+  vkCheck(vkEnumeratePhysicalDevices(instance, &count, physicals.data()),
+          "vkEnumeratePhysicalDevices");
+  physicals.resize(count);
+  return physicals;
+}
+
 }  // namespace rayspec
