@@ -83,11 +83,15 @@ outputs:
     - {name: primitive, from: primitive_id}
 )";
 
-TEST(ParseCase, GoodCaseValues) {
+// kGood, parsed without an error.
+Case goodCase() {
   ParseResult r = parse(kGood);
-  ASSERT_TRUE(r.errors.empty()) << allErrors(r);
-  ASSERT_TRUE(r.value);
-  const Case& c = *r.value;
+  EXPECT_TRUE(r.errors.empty()) << allErrors(r);
+  return r.value ? *r.value : Case{};
+}
+
+TEST(ParseCase, GoodCaseValues) {
+  const Case c = goodCase();
   EXPECT_EQ(c.name, "family/t");
   EXPECT_EQ(c.family, "family");
   EXPECT_EQ(c.rules, (std::vector<std::string>{"R-IGNORE", "R-MISS-XOR-CHIT"}));
@@ -103,7 +107,10 @@ TEST(ParseCase, GoodCaseValues) {
   EXPECT_EQ(balls.kind, Geometry::Kind::Aabbs);
   ASSERT_EQ(balls.aabbs.size(), 2u);
   EXPECT_TRUE(std::isnan(balls.aabbs[1][0]));
+}
 
+TEST(ParseCase, GoodCaseInstancesAndRays) {
+  const Case c = goodCase();
   ASSERT_EQ(c.scene.instances.size(), 3u);
   const Instance& i0 = c.scene.instances[0];
   EXPECT_EQ(i0.blas, 0u);
@@ -126,7 +133,10 @@ TEST(ParseCase, GoodCaseValues) {
   EXPECT_EQ(c.rays.rays[0].cull_mask, 0x1FFu);
   EXPECT_FLOAT_EQ(c.rays.rays[0].tmin, 0.001f);
   EXPECT_FLOAT_EQ(c.rays.rays[0].tmax, 100.0f);
+}
 
+TEST(ParseCase, GoodCasePipeline) {
+  const Case c = goodCase();
   // Default raygen and default SBT.
   ASSERT_EQ(c.pipeline.raygen.size(), 1u);
   EXPECT_EQ(c.pipeline.raygen[0].kind, Stmt::Kind::Trace);

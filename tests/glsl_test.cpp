@@ -112,10 +112,8 @@ Stmt trace(Expr origin, Expr direction) {
   return s;
 }
 
-// A case using every statement kind in every stage that allows it.
-Case fullCase() {
-  Case c;
-  c.name = "test/every-statement";
+// The scene of fullCase: a triangle and two boxes, one instance each.
+void fullScene(Case& c) {
   Blas tri{"tri", {}, {}};
   Geometry g;
   g.vertices = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
@@ -130,6 +128,10 @@ Case fullCase() {
   i0.blas = 0;
   i1.blas = 1;
   c.scene.instances = {i0, i1};
+}
+
+// Two rays down the z axis, every counter, record field and image.
+void fullRaysAndOutputs(Case& c) {
   c.rays.width = 2;
   c.rays.height = 1;
   Ray r;
@@ -160,8 +162,10 @@ Case fullCase() {
                        "world_ray_direction"};
   c.outputs.images = {
       {"primitive", "primitive_id", {}}, {"color", "color", {}}, {"t", "hit_t", {}}};
+}
 
-  Pipeline& p = c.pipeline;
+// raygen traces, records and calls; the two miss shaders trace again and call.
+void fullRaygenAndMiss(Pipeline& p) {
   p.max_recursion = 3;
   Stmt rg = kind(Stmt::Kind::Trace);
   rg.trace.tmax = {f(50.0)};
@@ -174,6 +178,10 @@ Case fullCase() {
                  {trace(b("world_ray_origin"), v3(0, 0, 1)),
                   record({{"value", op("add", {b("child.value"), u(1)})}})})},
             {call(u(1), {{"value", u(3)}}), record({{"value", b("callee.value")}})}};
+}
+
+// The triangles' closest-hit (traces, calls) and any-hit (ignores, terminates).
+HitGroup fullTriangleGroup() {
   HitGroup tris;
   tris.closest_hit =
       Program{count("closesthit"),
@@ -196,6 +204,11 @@ Case fullCase() {
                        {kind(Stmt::Kind::Terminate)})}),
               assign(Stmt::Kind::SetPayload, {{"value", op("add", {b("payload.value"), u(1)})}}),
               record({{"barycentrics", op("sub", {b("barycentrics"), v2(0.5, 0.5)})}})};
+  return tris;
+}
+
+// The boxes' intersection shader (reports spheres), closest-hit and any-hit.
+HitGroup fullSphereGroup() {
   HitGroup spheres;
   Stmt rep = kind(Stmt::Kind::Report);
   rep.t = op("sphere_near");
@@ -211,7 +224,18 @@ Case fullCase() {
               record({{"color", op("vec4", {op("length", {b("aabb_max")})})}})};
   spheres.closest_hit = Program{recordBuiltins({"hit", "barycentrics", "hit_kind"})};
   spheres.any_hit = Program{ifs(op("eq", {b("hit_kind"), u(5)}), {kind(Stmt::Kind::Ignore)})};
-  p.hit_groups = {tris, spheres};
+  return spheres;
+}
+
+// A case using every statement kind in every stage that allows it.
+Case fullCase() {
+  Case c;
+  c.name = "test/every-statement";
+  fullScene(c);
+  fullRaysAndOutputs(c);
+  Pipeline& p = c.pipeline;
+  fullRaygenAndMiss(p);
+  p.hit_groups = {fullTriangleGroup(), fullSphereGroup()};
   p.callables = {
       {light("point"), record({{"color", b("call.color")}})},
       {light("spot"), assign(Stmt::Kind::SetCall, {{"value", op("add", {b("call.value"), u(1)})}})},

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# ctest style/function-length: no function of harness/ longer than 80 lines
+# ctest style/function-length: no function of harness/, tests/, bench/ or
+# fuzz/ longer than 80 lines
 # (universal-ctags finds where each starts and ends), except the data tables
 # and the functions not yet split that tools/long-functions.txt lists, each
 # with the length it may not grow past. A listed function now within 80 lines
@@ -8,7 +9,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 LIMIT=80
 list=tools/long-functions.txt
-found=$(ctags -R --languages=C++ --kinds-C++=f --fields=+ne -x --_xformat="%{end} %{line} %F %N" harness |
+found=$(ctags -R --languages=C++ --kinds-C++=f --fields=+ne -x --_xformat="%{end} %{line} %F %N" harness tests bench fuzz |
   awk -v limit=$LIMIT '{n = $1 - $2 + 1; if (n > limit) print $3, $4, n}' | sort)
 [[ -n $(ctags --version 2>/dev/null | grep -i universal) ]] || { echo "check-function-length: universal-ctags is missing (tools/setup.sh)" >&2; exit 2; }
 status=0
