@@ -58,6 +58,9 @@ Results sampleResults() {
                          {{true, 0, 0, 1}, {true, 0, 0, 2}},
                          {{true, 0, 0, 1}, {true, 0, 0, 2}}});
   r.t_bounds.push_back({5, 0.25f});
+  r.repeat_dependent.push_back(
+      {2, (1u << recordFieldIndex("value")) | (1u << recordFieldIndex("color"))});
+  r.repeat_counters = {"miss"};
   return r;
 }
 
@@ -81,6 +84,10 @@ TEST(ResultsIo, BundleRoundTripsEveryField) {
   EXPECT_EQ(back.ambiguous[0].candidates.size(), 2u);
   EXPECT_EQ(back.ambiguous[0].candidates[1].primitive, 2u);
   EXPECT_EQ(back.ambiguous[0].shared_triangles.size(), 2u);
+  ASSERT_EQ(back.repeat_dependent.size(), 1u);
+  EXPECT_EQ(back.repeat_dependent[0].ray, 2u);
+  EXPECT_EQ(back.repeat_dependent[0].fields, r.repeat_dependent[0].fields);
+  EXPECT_EQ(back.repeat_counters, r.repeat_counters);
   ASSERT_EQ(back.t_bounds.size(), 1u);
   EXPECT_EQ(back.t_bounds[0].ray, 5u);
   EXPECT_EQ(back.t_bounds[0].bound, 0.25f);
@@ -131,6 +138,9 @@ TEST(ResultsIo, BadBundlesNameTheFieldOrFile) {
       edited("\"seconds\": 0.25", "\"seconds\": \"soon\"").find("results.json: field 'seconds': "),
       std::string::npos);
   EXPECT_NE(edited("\"channels\": 4", "\"channels\": true").find("field 'images.channels'"),
+            std::string::npos);
+  EXPECT_NE(edited("\"fields\": [\n", "\"fields\": [\"no_such_field\",\n")
+                .find("unknown field 'no_such_field'"),
             std::string::npos);
   EXPECT_NE(edited("\"name\": \"color\"", "\"name\": \"../color\"")
                 .find("images: name '../color' holds '/'"),

@@ -20,10 +20,6 @@ struct Fields {
   uint32_t offset(int index) const { return recordFields()[index].offset; }
 };
 
-bool written(const uint32_t* rec, int index) {
-  return (rec[kRecordWrittenMaskWord] >> index) & 1u;
-}
-
 // Closest-hit ran, or any-hit saw a candidate, or the stages recorded hit = 1.
 bool found(const Fields& f, const uint32_t* rec) {
   return rec[f.chit] > 0 || rec[f.ahit] > 0 || (written(rec, f.hit) && rec[f.offset(f.hit)] == 1);

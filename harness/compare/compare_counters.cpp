@@ -73,9 +73,12 @@ void compareCounters(const Case& c, const Results& device, const Results& model,
   // R-UB: what a ray with undefined behaviour counts is anyone's guess.
   std::set<std::string> moved;
   if (undefined_rays) moved = countersUndefinedRaysMayMove(c);
+  // R-AHIT-DUP: a counter a repeated any-hit moves.
+  const std::set<std::string> repeat(model.repeat_counters.begin(), model.repeat_counters.end());
   for (auto& [name, mode] : modes) {
     const bool undefined = moved.count(name) > 0;
-    if (undefined) mode = CounterMode::Informational;
+    const bool repeated = repeat.count(name) > 0;
+    if (undefined || repeated) mode = CounterMode::Informational;
     const auto d_it = device.counters.find(name);
     const auto m_it = model.counters.find(name);
     const uint64_t d = d_it == device.counters.end() ? 0 : d_it->second;
@@ -112,6 +115,10 @@ void compareCounters(const Case& c, const Results& device, const Results& model,
     if (undefined)
       f.message = values + " (informational: " + std::to_string(undefined_rays) +
                   " rays with undefined behaviour, R-UB, may have moved it)";
+    else if (repeated)
+      f.message = values +
+                  " (informational: a device may run any-hit more than once for a "
+                  "primitive, R-AHIT-DUP, and that moves it)";
     if (!ok) {
       f.status = Status::Fail;
       f.message = values + (slack ? within : "");

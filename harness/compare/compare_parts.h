@@ -41,7 +41,6 @@ void compareEqualImages(const Plan& plan, const Results& device, const Results& 
 
 // Words of one per-ray record (record_words.cpp).
 float asFloat(uint32_t w);
-bool written(const uint32_t* rec, int field_index);  // false for index -1
 uint32_t fieldWord(const uint32_t* rec, const char* name);
 // The model's wider t bound of a ray (TBound), 0 when none.
 float tBound(const std::map<uint32_t, float>& t_bounds, uint32_t ray);

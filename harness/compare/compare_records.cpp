@@ -117,6 +117,10 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
   for (const RecordField& f : recordFields())
     if (f.automatic && !traversalDependent(f)) fields.push_back(&f);
 
+  // R-AHIT-DUP: per ray, the fields a repeated any-hit may change.
+  std::map<uint32_t, uint32_t> repeat;
+  for (const RepeatDependentRay& d : model.repeat_dependent) repeat[d.ray] = d.fields;
+
   const TraceShape shape = traceShape(c);
   std::map<std::string, FindingBuilder> mismatches;
   std::map<std::string, FindingBuilder> wrongs;
@@ -130,13 +134,16 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
     const uint32_t ray = static_cast<uint32_t>(i);
     if (undefined.count(ray)) continue;  // R-UB: never judged
     const float t_bound = tBound(t_bounds, ray);
+    const auto repeated = repeat.find(ray);
+    const uint32_t repeat_fields = repeated == repeat.end() ? 0 : repeated->second;
     if (const auto it = ambiguous.find(ray); it != ambiguous.end()) {
+      if (repeat_fields) continue;  // its legal answers and what repetition changes: not judged
       checkAmbiguous(c, *it->second, d, wrongs, leak);
       checkAmbiguousShared(c, shape, *it->second, d, m, fields, t_bound, wrongs);
       continue;
     }
     for (const RecordField* f : fields) {
-      if (sameField(*f, d, m, t_bound)) continue;
+      if (((repeat_fields >> f->index) & 1u) || sameField(*f, d, m, t_bound)) continue;
       FindingBuilder& b = mismatches[f->name];
       if (b.finding.message.empty())
         b.finding = {

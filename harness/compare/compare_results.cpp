@@ -2,6 +2,7 @@
 
 #include <set>
 
+#include "compare/any_hit_repeat_verdict.h"
 #include "compare/compare_parts.h"
 #include "compare/undefined_behaviour.h"
 
@@ -61,6 +62,8 @@ Verdict compareResults(const Case& c, const Plan& plan, const Results& device,
     v.add(f);
     return v;
   }
+  // R-AHIT-DUP: what any-hit repetition may change is diagnosed or left out.
+  if (!judgeAnyHitRepeat(c, model, v)) return v;
   // Rays left out of every per-ray comparison: the ambiguous ones are checked
   // against their legal answers instead; the undefined ones (R-UB) not at all.
   std::set<uint32_t> ambiguous, undefined;

@@ -13,10 +13,6 @@ float asFloat(uint32_t w) {
   return std::bit_cast<float>(w);
 }
 
-bool written(const uint32_t* rec, int field_index) {
-  return field_index >= 0 && ((rec[kRecordWrittenMaskWord] >> field_index) & 1u);
-}
-
 uint32_t fieldWord(const uint32_t* rec, const char* name) {
   return rec[findRecordField(name)->offset];
 }

@@ -87,6 +87,7 @@ std::string hitAttributesLost(Case& c, ModelOptions& o);
 std::string callableDataNotReturned(Case& c, ModelOptions& o);
 std::string nestedTraceDropped(Case& c, ModelOptions& o);
 std::string intersectionRunsTwice(Case& c, ModelOptions& o);
+std::string anyHitRunsTwice(Case& c, ModelOptions& o);
 std::string hitRecordShifted(Case& c, ModelOptions& o);
 std::string instanceSbtOffsetIgnored(Case& c, ModelOptions& o);
 std::string missRecordShifted(Case& c, ModelOptions& o);

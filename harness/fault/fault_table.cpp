@@ -133,6 +133,10 @@ std::vector<FaultImpl> programAndOrderMutations() {
        "a callable's writes to its data never reach the caller", nullptr, callableDataNotReturned},
       {"nested-trace-dropped", K::CaseMutation,
        "traces from closest-hit and miss do nothing (no recursion)", nullptr, nestedTraceDropped},
+      {"any-hit-runs-twice", K::CaseMutation,
+       "legal: any-hit runs twice in a row for a primitive whose geometry lacks "
+       "no_duplicate_any_hit",
+       nullptr, anyHitRunsTwice},
       {"intersection-runs-twice", K::CaseMutation,
        "legal: every intersection shader runs twice in a row for its primitive", nullptr,
        intersectionRunsTwice},

@@ -159,6 +159,18 @@ std::string nestedTraceDropped(Case& c, ModelOptions&) {
       "nested traces do nothing");
 }
 
+// R-AHIT-DUP, legal: any-hit runs twice in a row for each candidate of a
+// geometry without NO_DUPLICATE_ANY_HIT_INVOCATION (the model's own repeat).
+std::string anyHitRunsTwice(Case& c, ModelOptions& o) {
+  o.any_hit_repeat = AnyHitRepeat::All;
+  size_t n = 0;
+  for (const Blas& b : c.scene.blases)
+    for (const Geometry& g : b.geometries) n += !(g.flags & kGeometryNoDuplicateAnyHit);
+  bool any_hit = false;
+  for (const HitGroup& g : c.pipeline.hit_groups) any_hit = any_hit || g.any_hit.has_value();
+  return describeCount(any_hit ? n : 0, "geometries without no_duplicate_any_hit repeat any-hit");
+}
+
 std::string intersectionRunsTwice(Case& c, ModelOptions&) {
   size_t n = 0;
   for (HitGroup& g : c.pipeline.hit_groups)

@@ -83,12 +83,13 @@ ClaimProof proveClaim(const Case& c, const Plan& plan, const Results& model, con
     p.note = rf->pending;
     return p;
   }
-  bool broken = false, exercised = false;
+  bool broken = false, exercised = false, varied = false, break_applied = false;
   for (const std::string& f : rf->breaks) {
     p.outcomes.push_back(plant(f, false, c, plan, model, perfect, rule));
     const FaultOutcome& o = p.outcomes.back();
     // Proven only by the verdict a break should give, with a finding that names the rule.
     broken = broken || (o.changed && o.status == rf->expect && o.names_rule);
+    break_applied = break_applied || o.applied;
   }
   for (const std::string& f : rf->legal) {
     p.outcomes.push_back(plant(f, true, c, plan, model, perfect, rule));
@@ -99,8 +100,12 @@ ClaimProof proveClaim(const Case& c, const Plan& plan, const Results& model, con
       return p;
     }
     exercised = exercised || o.applied;
+    varied = varied || (o.applied && o.changed);
   }
-  const bool proven = rf->breaks.empty() ? exercised : broken;
+  // Where no break applies (R-AHIT-DUP without the flag: nothing is
+  // forbidden), the claim is that the case tolerates the rule's freedom: a
+  // legal variation must change the device's results, and still pass.
+  const bool proven = rf->breaks.empty() ? exercised : break_applied ? broken : varied;
   p.result = proven ? ClaimResult::Proven : ClaimResult::Hollow;
   if (!proven)
     p.note = rf->breaks.empty() ? "no legal variation finds anything to vary"

@@ -137,11 +137,15 @@ FaultResult duplicateAnyHit(RecordFaultArgs& a) {
       !findClear(
           a, [&](uint32_t r) { return dev.get(r, "any_hit_runs") > 0; }, &ray))
     return notApplicable("no clear ray ran any-hit");
+  // One more run, on primitives it ran on already (their any_hit_slots bits
+  // now repeated too).
   const uint32_t before = dev.get(ray, "any_hit_runs");
   dev.set(ray, "any_hit_runs", before + 1);
+  dev.set(ray, "any_hit_repeats", dev.get(ray, "any_hit_repeats") | dev.get(ray, "any_hit_slots"));
   const std::string counter = dev.bumpCounter(anyHitCounters(a.c), +1);
   return describeRay(ray, "any_hit_runs " + std::to_string(before) + " -> " +
-                              std::to_string(before + 1) + counterNote(counter, +1));
+                              std::to_string(before + 1) + ", its primitives repeated" +
+                              counterNote(counter, +1));
 }
 
 // A leak: a ray through an edge or vertex misses every triangle there, where

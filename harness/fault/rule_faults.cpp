@@ -26,7 +26,7 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-CULL-OPQ", {"opacity-cull-ignored"}, {}},
       {"R-AHIT-OPAQUE-SKIP", {"any-hit-on-opaque"}, {}},
       {"R-AHIT-UNUSED", {"unused-any-hit-ignores"}, {}},
-      {"R-AHIT-DUP", {"duplicate-any-hit"}, {}},
+      {"R-AHIT-DUP", {"duplicate-any-hit"}, {"any-hit-runs-twice"}},
       {"R-AHIT-CLOSEST", {"closest-any-hit-skipped"}, {}},
       {"R-IGNORE", {"ignore-accepts", "code-after-ignore-runs"}, {}},
       {"R-TERMINATE", {"terminate-continues", "code-after-terminate-runs"}, {}},

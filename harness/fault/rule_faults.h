@@ -4,7 +4,9 @@
 // (the model's own, see perfectDevice), makes the comparison give `expect`;
 // and no legal variation the rule allows may make it fail. Rules that only
 // grant a freedom (R-ISECT-MULTI) are proven by a legal variation that finds
-// something to vary in the case and still passes.
+// something to vary in the case and still passes; so is a case where none of
+// a rule's breaking faults applies (R-AHIT-DUP on geometry without
+// no_duplicate_any_hit, where nothing is forbidden, only allowed).
 #pragma once
 
 #include <string>

@@ -13,6 +13,7 @@
 #include <sys/mman.h>
 #endif
 
+#include "model/any_hit_repeat.h"
 #include "model/model_machine.h"
 #include "model/model_program.h"
 #include "model/model_scene.h"
@@ -171,6 +172,7 @@ ModelShared sharedState(const Case& c, const Plan& plan, const ModelOptions& opt
   shared.direct =
       !scene.filters && !hasOwnTriangles(scene) && opt.faults.order == CandidateOrder::Distance;
   shared.faults = opt.faults;
+  shared.any_hit_repeat = opt.any_hit_repeat;
   shared.need_facing = programs.reads(kBiHitKind);
   // Read by the candidate path only (Machine::checkCandidates): a direct
   // run sees no candidates, so it is not worked out there.
@@ -313,6 +315,10 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
     r.setStatus(SideStatus::Crash, std::string("model: ") + e.what());
     r.records.clear();  // chunks no worker reached were never zeroed
     r.images.clear();
+  }
+  if (r.ok() && opt.tier == ModelTier::Exact && opt.any_hit_repeat == AnyHitRepeat::None) {
+    StepTimer repeat_time(r.cost, CostStep::ModelTrace);
+    findAnyHitRepeatDependence(c, plan, opt, r);
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

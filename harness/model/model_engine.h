@@ -31,10 +31,19 @@ ModelTier parseModelTier(
     const std::string& name);  // fast|robust|exact; throws std::invalid_argument
 const char* modelTierName(ModelTier t);
 
+// R-AHIT-DUP: without NO_DUPLICATE_ANY_HIT_INVOCATION a device may run
+// any-hit more than once for the same primitive. The model runs it once
+// (None). First runs the first any-hit of each launch ray twice in a row, All
+// every one; a geometry with the flag always runs it once. Legal behaviour
+// both: the exact tier runs them to find what repetition can change
+// (any_hit_repeat.cpp), and a planted fault stands for such a device.
+enum class AnyHitRepeat { None, First, All };
+
 struct ModelOptions {
   ModelTier tier = ModelTier::Exact;
   unsigned threads = 0;  // 0 = all cores
-  ModelFaults faults;    // test only: the planted faults' hook (model/model_faults.h)
+  AnyHitRepeat any_hit_repeat = AnyHitRepeat::None;
+  ModelFaults faults;  // test only: the planted faults' hook (model/model_faults.h)
 };
 
 Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt);

@@ -74,6 +74,20 @@ void Machine::markAnyHit(const HitView& hv) {
   rec_[slots_offset_] |= bit;
 }
 
+Flow Machine::runAnyHit(const CProgram& p, StageEnv& a, const HitView& hv,
+                        uint32_t geometry_flags) {
+  markAnyHit(hv);
+  const Flow first = exec(p, a);
+  const AnyHitRepeat repeat = sh_.any_hit_repeat;
+  if (first == Flow::Terminate || repeat == AnyHitRepeat::None ||
+      (geometry_flags & kGeometryNoDuplicateAnyHit) ||
+      (repeat == AnyHitRepeat::First && repeated_any_hit_))
+    return first;
+  repeated_any_hit_ = true;
+  markAnyHit(hv);
+  return exec(p, a);
+}
+
 void Machine::record(int idx, const Val& v, ValueType t) {
   if (!rec_ || idx < 0) return;
   const RecordField& f = recordFields()[idx];
@@ -580,6 +594,7 @@ void Machine::runRays(uint32_t begin, uint32_t end) {
     rec_ = records_ ? records_ + static_cast<size_t>(i) * words : nullptr;
     ray_ambiguous_ = false;
     ray_undefined_ = false;
+    repeated_any_hit_ = false;
     call_nesting_ = 0;
     bumpRuns(kRunsRaygen);
     if (sh_.raygen_traces_launch_ray) {

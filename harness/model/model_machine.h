@@ -125,6 +125,7 @@ struct ModelShared {
   bool need_facing = true, need_object_ray = true;
   bool raygen_traces_launch_ray = false;  // raygen is exactly `trace: {}`
   ModelFaults faults;  // test only: the planted faults' hook (model/model_faults.h)
+  AnyHitRepeat any_hit_repeat = AnyHitRepeat::None;  // R-AHIT-DUP (model_engine.h)
   // Some candidate may be undefined (a hit record beyond the region, a NaN
   // triangle): Machine::checkCandidates looks at every candidate.
   bool check_candidates = true;
@@ -172,6 +173,10 @@ class alignas(64) Machine {
   // any-hit runs on a primitive: its run count and its bit in any_hit_slots
   // (any_hit_repeats when set already; results/record_layout.h).
   void markAnyHit(const HitView& hv);
+  // Runs any-hit `p` for a candidate, marked, and again (AnyHitRepeat,
+  // R-AHIT-DUP) where its geometry lacks NO_DUPLICATE_ANY_HIT_INVOCATION and
+  // the first run did not terminate: the second run's answer stands.
+  Flow runAnyHit(const CProgram& p, StageEnv& a, const HitView& hv, uint32_t geometry_flags);
   // `site`: the trace statement (or raygen's `trace: {}` of the launch ray),
   // named when the trace is undefined.
   Payload trace(const TraceRay& r, uint32_t depth, const CStmt* site);  // model_traversal.cpp
@@ -250,7 +255,8 @@ class alignas(64) Machine {
   uint32_t index_ = 0, x_ = 0, y_ = 0;
   bool ray_ambiguous_ = false;
   bool ray_undefined_ = false;
-  uint32_t call_nesting_ = 0;  // callables running now (kMaxCallableNesting)
+  bool repeated_any_hit_ = false;  // AnyHitRepeat::First: this launch ray repeated one
+  uint32_t call_nesting_ = 0;      // callables running now (kMaxCallableNesting)
   std::vector<SbtRecord> default_miss_, default_hit_, default_callable_;
   std::vector<std::vector<ModelCandidate>> cand_pool_;
   uint32_t runs_offset_[6] = {};

@@ -11,6 +11,15 @@
 #include "model/traversal.h"
 
 namespace rayspec {
+namespace {
+
+// The flags of the geometry a candidate belongs to.
+uint32_t geometryFlags(const ModelScene& scene, const ModelCandidate& c) {
+  return scene.blases[scene.instances[c.instance].blas].geometries[c.geometry].flags;
+}
+
+}  // namespace
+
 namespace trace_detail {
 
 bool keyLess(uint32_t i0, uint32_t g0, uint32_t p0, uint32_t i1, uint32_t g1, uint32_t p1) {
@@ -193,11 +202,10 @@ Flow Machine::report(const CStmt& s, StageEnv& env) {
     setHit(hv, t, kind, attr.f[0], attr.f[1]);
     Flow ah = Flow::Continue;
     if (!tr->cur_opaque && tr->cur_group && tr->cur_group->any_hit) {
-      markAnyHit(hv);
       // R-TMAX-VIEW: any-hit sees the candidate's t.
       StageEnv a =
           hitStage(Stage::AnyHit, tr->cur_rec->data, tr->payload, tr->ray, hv, t, tr->depth);
-      ah = exec(*tr->cur_group->any_hit, a);
+      ah = runAnyHit(*tr->cur_group->any_hit, a, hv, geometryFlags(*sh_.scene, *tr->cur));
     }
     if (ah != Flow::Ignore) {
       accepted = true;
@@ -320,9 +328,8 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
     if (!opaque && grp && grp->any_hit) {
       HitView hv = viewOf(scene, c, r, cand.instance, cand.geometry, cand.primitive);
       setHit(hv, static_cast<float>(cand.t), f.kind, cand.b1, cand.b2);
-      markAnyHit(hv);
       StageEnv a = hitStage(Stage::AnyHit, rec->data, &payload, r, hv, hv.t, tr.depth);
-      ah = exec(*grp->any_hit, a);
+      ah = runAnyHit(*grp->any_hit, a, hv, g.flags);
       if (ah == Flow::Ignore) continue;
     }
     // Exact tier, R-PREC: how far a device's t may lie (its frame's rounding).

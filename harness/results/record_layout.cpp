@@ -87,4 +87,8 @@ uint32_t recordWords() {
   return last.offset + last.words;
 }
 
+bool written(const uint32_t* rec, int field_index) {
+  return field_index >= 0 && ((rec[kRecordWrittenMaskWord] >> field_index) & 1u);
+}
+
 }  // namespace rayspec

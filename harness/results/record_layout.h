@@ -46,4 +46,8 @@ constexpr uint32_t anyHitSlot(uint32_t instance, uint32_t geometry, uint32_t pri
 // invocations (any_hit_runs, intersection_runs, any_hit_slots,
 // any_hit_repeats): never compared word for word with the model's.
 bool traversalDependent(const RecordField& f);
+// Whether a record's stages wrote the field of this index (the written-mask
+// word); false for index -1.
+bool written(const uint32_t* rec, int field_index);
+
 }  // namespace rayspec

@@ -109,6 +109,13 @@ struct TBound {
   float bound = 0;  // |device t - model t| may reach this
 };
 
+// R-AHIT-DUP: a ray some of whose compared fields a device that runs any-hit
+// more than once for a primitive may leave otherwise (model/any_hit_repeat.h).
+struct RepeatDependentRay {
+  uint32_t ray = 0;
+  uint32_t fields = 0;  // bit i: recordFields()[i]
+};
+
 struct Results {
   bool ok() const { return status == SideStatus::Ok; }
   // "ok", or "Crash: <detail>".
@@ -131,6 +138,10 @@ struct Results {
   std::vector<TBound> t_bounds;         // model, exact tier: clear rays with a wider t bound
   std::vector<UndefinedRay>
       undefined;  // model: rays whose behaviour is undefined (R-UB), one per ray
+  // model, exact tier (R-AHIT-DUP): rays whose fields any-hit repetition may
+  // change, and the counters it may move.
+  std::vector<RepeatDependentRay> repeat_dependent;
+  std::vector<std::string> repeat_counters;
   std::vector<std::string> validation_messages;  // validation-layer errors (device)
   double seconds = 0.0;   // wall time of the execution (setup + trace + read-back)
   StepCosts cost;         // what each step of this side took (results/step_cost.h)

@@ -115,6 +115,48 @@ std::string writeRecordsCsv(const Results& r, const std::string& path,
   return out ? std::string() : "cannot write " + path;
 }
 
+namespace {
+
+// The rays the model found ambiguous, bounded, undefined or dependent on
+// any-hit repetition, into results.json (readRayNotes reads them back).
+void writeRayNotes(const Results& r, json& j) {
+  j["ambiguous"] = json::array();
+  for (const RayAmbiguity& a : r.ambiguous) {
+    json cands = json::array();
+    for (const Candidate& c : a.candidates)
+      cands.push_back({{"hit", c.hit},
+                       {"instance", c.instance},
+                       {"geometry", c.geometry},
+                       {"primitive", c.primitive}});
+    json shared = json::array();
+    for (const Candidate& c : a.shared_triangles)
+      shared.push_back({{"hit", c.hit},
+                        {"instance", c.instance},
+                        {"geometry", c.geometry},
+                        {"primitive", c.primitive}});
+    j["ambiguous"].push_back({{"ray", a.ray},
+                              {"reason", ambiguityReasonName(a.reason)},
+                              {"candidates", cands},
+                              {"shared_triangles", shared}});
+  }
+  j["t_bounds"] = json::array();
+  for (const TBound& b : r.t_bounds) j["t_bounds"].push_back({{"ray", b.ray}, {"bound", b.bound}});
+  j["undefined"] = json::array();
+  for (const UndefinedRay& u : r.undefined)
+    j["undefined"].push_back(
+        {{"ray", u.ray}, {"reason", undefinedReasonName(u.reason)}, {"what", u.what}});
+  j["repeat_dependent"] = json::array();
+  for (const RepeatDependentRay& d : r.repeat_dependent) {
+    json names = json::array();
+    for (const RecordField& f : recordFields())
+      if ((d.fields >> f.index) & 1u) names.push_back(f.name);
+    j["repeat_dependent"].push_back({{"ray", d.ray}, {"fields", names}});
+  }
+  j["repeat_counters"] = r.repeat_counters;
+}
+
+}  // namespace
+
 std::string writeResults(const Results& r, const std::string& dir_name,
                          const std::vector<std::string>& kept_fields) {
   return writeResults(r, dir_name, kept_fields, BundleFiles{});
@@ -155,31 +197,7 @@ std::string writeResults(const Results& r, const std::string& dir_name,
     const std::string err = writeImageFiles(im, dir.string());
     if (!err.empty()) return err;
   }
-  j["ambiguous"] = json::array();
-  for (const RayAmbiguity& a : r.ambiguous) {
-    json cands = json::array();
-    for (const Candidate& c : a.candidates)
-      cands.push_back({{"hit", c.hit},
-                       {"instance", c.instance},
-                       {"geometry", c.geometry},
-                       {"primitive", c.primitive}});
-    json shared = json::array();
-    for (const Candidate& c : a.shared_triangles)
-      shared.push_back({{"hit", c.hit},
-                        {"instance", c.instance},
-                        {"geometry", c.geometry},
-                        {"primitive", c.primitive}});
-    j["ambiguous"].push_back({{"ray", a.ray},
-                              {"reason", ambiguityReasonName(a.reason)},
-                              {"candidates", cands},
-                              {"shared_triangles", shared}});
-  }
-  j["t_bounds"] = json::array();
-  for (const TBound& b : r.t_bounds) j["t_bounds"].push_back({{"ray", b.ray}, {"bound", b.bound}});
-  j["undefined"] = json::array();
-  for (const UndefinedRay& u : r.undefined)
-    j["undefined"].push_back(
-        {{"ray", u.ray}, {"reason", undefinedReasonName(u.reason)}, {"what", u.what}});
+  writeRayNotes(r, j);
   if (!writeWords(dir / "records.bin", r.records))
     return "cannot write records.bin in " + dir.string();
   if (files.records_csv)
@@ -272,6 +290,24 @@ void readRayNotes(const json& j, FieldReader& field, Results& r) {
       u.what = field(ju, "undefined.what");
       r.undefined.push_back(std::move(u));
     }
+  if (j.contains("repeat_dependent"))
+    for (const json& jd : field(j, "repeat_dependent")) {
+      RepeatDependentRay d;
+      d.ray = field(jd, "repeat_dependent.ray");
+      if (uint64_t{d.ray} >= uint64_t{r.width} * r.height)
+        throw std::runtime_error("repeat_dependent.ray: " + std::to_string(d.ray) +
+                                 " is outside the launch");
+      for (const json& jn : field(jd, "repeat_dependent.fields")) {
+        const int index = recordFieldIndex(jn.get<std::string>());
+        if (index < 0)
+          throw std::runtime_error("repeat_dependent.fields: unknown field '" +
+                                   jn.get<std::string>() + "'");
+        d.fields |= 1u << index;
+      }
+      r.repeat_dependent.push_back(d);
+    }
+  if (j.contains("repeat_counters"))
+    r.repeat_counters = field(j, "repeat_counters").get<std::vector<std::string>>();
   for (const json& ja : field(j, "ambiguous")) {
     RayAmbiguity a;
     a.ray = field(ja, "ambiguous.ray");
