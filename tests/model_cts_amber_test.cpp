@@ -1,0 +1,74 @@
+// The CTS's own ray tracing Amber scripts, rewritten as cases (cases/cts-amber/):
+// each case file names the numbers of its script's EXPECT line in a comment,
+//   # cts-expect: FIELD = V0 V1 ...
+// one value per launch ray in launch order, and the model's exact tier must
+// give exactly those (a field no stage wrote reads 0, as the script's images
+// start filled with 0). A change to the model that breaks agreement with the
+// CTS fails here.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <fstream>
+#include <sstream>
+
+#include "model/model_engine.h"
+#include "plan/plan.h"
+#include "results/record_layout.h"
+#include "suite_cases.h"
+
+namespace rayspec {
+namespace {
+
+struct CtsExpect {
+  std::string field;
+  std::vector<std::string> values;
+};
+
+// The `# cts-expect:` line of a case file; an empty field when there is none.
+CtsExpect ctsExpect(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  const std::string tag = "# cts-expect:";
+  while (std::getline(in, line)) {
+    if (line.rfind(tag, 0) != 0) continue;
+    std::istringstream s(line.substr(tag.size()));
+    CtsExpect e;
+    std::string equals, v;
+    s >> e.field >> equals;
+    while (s >> v) e.values.push_back(v);
+    return e;
+  }
+  return {};
+}
+
+// The field of ray `ray` as the script's image would hold it.
+bool sameAsExpected(const RecordField& f, const uint32_t* rec, const std::string& expected) {
+  const uint32_t word = rec[f.offset];
+  if (f.type == FieldType::Float) return std::bit_cast<float>(word) == std::stof(expected);
+  return word == static_cast<uint32_t>(std::stoul(expected));
+}
+
+TEST(CtsAmber, TheModelGivesEachScriptsExpectedValues) {
+  size_t ported = 0;
+  for (const CaseFile& file : suiteCases()) {
+    if (file.name.rfind("cts-amber/", 0) != 0) continue;
+    ++ported;
+    const CtsExpect e = ctsExpect(file.path);
+    ASSERT_FALSE(e.field.empty()) << file.path << ": no `# cts-expect: FIELD = ...` line";
+    const RecordField* f = findRecordField(e.field);
+    ASSERT_NE(f, nullptr) << file.path << ": unknown field " << e.field;
+    const ParseResult parsed = loadSuiteCase(file);
+    ASSERT_TRUE(parsed.value) << file.name;
+    const Results r = runOnModel(*parsed.value, derivePlan(*parsed.value), ModelOptions{});
+    ASSERT_TRUE(r.ok()) << file.name << ": " << r.statusText();
+    const uint32_t words = recordWords();
+    ASSERT_EQ(r.records.size() / words, e.values.size()) << file.name << ": one value a ray";
+    for (size_t i = 0; i < e.values.size(); ++i)
+      EXPECT_TRUE(sameAsExpected(*f, &r.records[i * words], e.values[i]))
+          << file.name << " ray " << i << ": " << e.field << " is not " << e.values[i];
+  }
+  EXPECT_GE(ported, 5u) << "cases/cts-amber/ holds fewer scripts than were ported";
+}
+
+}  // namespace
+}  // namespace rayspec
