@@ -117,28 +117,25 @@ std::string writeRecordsCsv(const Results& r, const std::string& path,
 
 namespace {
 
+json candidatesJson(const std::vector<Candidate>& candidates) {
+  json out = json::array();
+  for (const Candidate& c : candidates)
+    out.push_back({{"hit", c.hit},
+                   {"instance", c.instance},
+                   {"geometry", c.geometry},
+                   {"primitive", c.primitive}});
+  return out;
+}
+
 // The rays the model found ambiguous, bounded, undefined or dependent on
 // any-hit repetition, into results.json (readRayNotes reads them back).
 void writeRayNotes(const Results& r, json& j) {
   j["ambiguous"] = json::array();
-  for (const RayAmbiguity& a : r.ambiguous) {
-    json cands = json::array();
-    for (const Candidate& c : a.candidates)
-      cands.push_back({{"hit", c.hit},
-                       {"instance", c.instance},
-                       {"geometry", c.geometry},
-                       {"primitive", c.primitive}});
-    json shared = json::array();
-    for (const Candidate& c : a.shared_triangles)
-      shared.push_back({{"hit", c.hit},
-                        {"instance", c.instance},
-                        {"geometry", c.geometry},
-                        {"primitive", c.primitive}});
+  for (const RayAmbiguity& a : r.ambiguous)
     j["ambiguous"].push_back({{"ray", a.ray},
                               {"reason", ambiguityReasonName(a.reason)},
-                              {"candidates", cands},
-                              {"shared_triangles", shared}});
-  }
+                              {"candidates", candidatesJson(a.candidates)},
+                              {"shared_triangles", candidatesJson(a.shared_triangles)}});
   j["t_bounds"] = json::array();
   for (const TBound& b : r.t_bounds) j["t_bounds"].push_back({{"ray", b.ray}, {"bound", b.bound}});
   j["undefined"] = json::array();
