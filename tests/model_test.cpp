@@ -241,6 +241,29 @@ TEST(Model, CompiledOpsPerRay) {
   EXPECT_GT(hits, 100);
 }
 
+// round: to the nearest whole number, halfway cases to even (GLSL roundEven).
+TEST(Model, RoundIsHalfToEven) {
+  Case c = baseCase({grid(4, kGeometryOpaque)}, gridRays(), 40);
+  Program chit;
+  chit.push_back(recordExpr("hit", lit(1)));
+  // value = round(launch_id_x / 2): x = 1, 3, 5, ... are halfway cases.
+  chit.push_back(recordExpr(
+      "value",
+      op("uint", {op("round", {op("mul", {op("float", {bi("launch_id_x")}), litf(0.5)})})})));
+  c.pipeline.hit_groups[0].closest_hit = chit;
+  Results r = run(c, ModelTier::Fast, 2);
+  ASSERT_EQ(r.statusText(), "ok");
+  int hits = 0;
+  for (uint32_t i = 0; i < 1600; ++i) {
+    if (word(r, i, "hit") != 1) continue;
+    ++hits;
+    const uint32_t x = i % 40, half = x / 2;
+    const uint32_t expect = x % 2 == 0 ? half : (half % 2 == 0 ? half : half + 1);
+    EXPECT_EQ(word(r, i, "value"), expect) << "x = " << x;
+  }
+  EXPECT_GT(hits, 100);
+}
+
 TEST(Model, FacingCullsFlipAndDisable) {
   Ray up = downRay(0.5f, -0.5f, -5);
   up.direction = {0, 0, 1};

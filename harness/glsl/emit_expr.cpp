@@ -108,6 +108,7 @@ std::string op(const Expr& e, const StageContext& ctx) {
   if (n == "even" && need(1)) return "((" + a[0] + " & 1u) == 0u)";
   if ((n == "float" || n == "uint" || n == "length" || n == "normalize") && need(1))
     return n + "(" + a[0] + ")";
+  if (n == "round" && need(1)) return "roundEven(" + a[0] + ")";
   if (n == "vec2" || n == "vec3" || n == "vec4") return n + join(", ");
   if ((n == "x" || n == "y" || n == "z" || n == "w") && need(1)) return a[0] + "." + n;
   if (n == "sphere_hit") return "rs_sphere_current().hit";

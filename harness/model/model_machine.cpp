@@ -323,6 +323,8 @@ Val Machine::op(const CExpr& e, StageEnv& env) {
                       : f >= 4294967295.0f    ? 0xFFFFFFFFu
                                               : static_cast<uint32_t>(f));
     }
+    case OpCode::RoundEven:  // the default rounding mode: to nearest, ties to even
+      return fromFloat(std::nearbyint(a[0].f[0]));
     case OpCode::Vec: {
       const int cnt = static_cast<int>(e.index);
       for (int k = 0; k < cnt; ++k)

@@ -73,6 +73,7 @@ enum class OpCode : uint8_t {
   Even,
   ToFloat,
   ToUint,
+  RoundEven,
   Vec,
   X,
   Y,

@@ -32,6 +32,9 @@ const std::vector<OpInfo>& ops() {
       {"even", 1, 1, kAllStages, "Uint is even -> Bool"},
       {"float", 1, 1, kAllStages, "Uint -> Float"},
       {"uint", 1, 1, kAllStages, "Float -> Uint, truncation toward zero"},
+      {"round", 1, 1, kAllStages,
+       "Float -> the nearest whole Float, halfway cases to even (GLSL roundEven: the same on "
+       "every device)"},
       {"vec2", 1, 2, kAllStages, "Float scalars -> Vec2 (a single Float splats)"},
       {"vec3", 1, 3, kAllStages, "Float scalars -> Vec3 (a single Float splats)"},
       {"vec4", 1, 4, kAllStages, "Float scalars -> Vec4 (a single Float splats)"},

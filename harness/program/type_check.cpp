@@ -209,6 +209,7 @@ Typing (*typingRule(const std::string& name))(Expr&) {
       {"even", typeUnary<V::Uint, V::Bool>},
       {"float", typeUnary<V::Uint, V::Float>},
       {"uint", typeUnary<V::Float, V::Uint>},
+      {"round", typeUnary<V::Float, V::Float>},
       {"vec2", typeVectorOf},
       {"vec3", typeVectorOf},
       {"vec4", typeVectorOf},
