@@ -1,13 +1,14 @@
 // Unit tests of the CPU reference model: hand-built cases per rule family,
 // outcomes derived from the geometry (helpers: model_support.h).
 #include <gtest/gtest.h>
-#include <bit>
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <set>
@@ -216,6 +217,18 @@ TEST(Model, DirectPathMixedTraceParametersMatchGeneralPath) {
 
 // Compiled programs keep the meaning of ops (arithmetic, comparisons,
 // vectors, short-circuit and/or) per ray.
+// On each of the 1600 rays of gridRays() that hit, value == expect(ray); and
+// more than 100 hit.
+void expectValueOnHits(const Results& r, const std::function<uint32_t(uint32_t)>& expect) {
+  int hits = 0;
+  for (uint32_t i = 0; i < 1600; ++i) {
+    if (word(r, i, "hit") != 1) continue;
+    ++hits;
+    EXPECT_EQ(word(r, i, "value"), expect(i)) << "ray " << i;
+  }
+  EXPECT_GT(hits, 100);
+}
+
 TEST(Model, CompiledOpsPerRay) {
   Case c = baseCase({grid(4, kGeometryOpaque)}, gridRays(), 40);
   Program chit;
@@ -230,15 +243,10 @@ TEST(Model, CompiledOpsPerRay) {
   c.pipeline.hit_groups[0].closest_hit = chit;
   Results r = run(c, ModelTier::Fast, 2);
   ASSERT_EQ(r.statusText(), "ok");
-  int hits = 0;
-  for (uint32_t i = 0; i < 1600; ++i) {
-    if (word(r, i, "hit") != 1) continue;
-    ++hits;
+  expectValueOnHits(r, [&r](uint32_t i) {
     const uint32_t p = word(r, i, "primitive_id"), x = i % 40;
-    const uint32_t expect = (p & 1) && x < 20 ? 7 : p * 3 + x % 5;
-    EXPECT_EQ(word(r, i, "value"), expect) << i;
-  }
-  EXPECT_GT(hits, 100);
+    return (p & 1) && x < 20 ? 7 : p * 3 + x % 5;
+  });
 }
 
 // round: to the nearest whole number, halfway cases to even (GLSL roundEven).
@@ -253,15 +261,10 @@ TEST(Model, RoundIsHalfToEven) {
   c.pipeline.hit_groups[0].closest_hit = chit;
   Results r = run(c, ModelTier::Fast, 2);
   ASSERT_EQ(r.statusText(), "ok");
-  int hits = 0;
-  for (uint32_t i = 0; i < 1600; ++i) {
-    if (word(r, i, "hit") != 1) continue;
-    ++hits;
+  expectValueOnHits(r, [](uint32_t i) {
     const uint32_t x = i % 40, half = x / 2;
-    const uint32_t expect = x % 2 == 0 ? half : (half % 2 == 0 ? half : half + 1);
-    EXPECT_EQ(word(r, i, "value"), expect) << "x = " << x;
-  }
-  EXPECT_GT(hits, 100);
+    return x % 2 == 0 ? half : (half % 2 == 0 ? half : half + 1);
+  });
 }
 
 TEST(Model, FacingCullsFlipAndDisable) {

@@ -111,11 +111,7 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
   std::map<uint32_t, float> t_bounds;
   for (const TBound& b : model.t_bounds) t_bounds[b.ray] = b.bound;
 
-  std::vector<const RecordField*> fields;
-  for (const std::string& name : plan.record_fields)
-    if (const RecordField* f = findRecordField(name)) fields.push_back(f);
-  for (const RecordField& f : recordFields())
-    if (f.automatic && !traversalDependent(f)) fields.push_back(&f);
+  const std::vector<const RecordField*> fields = comparedRecordFields(plan);
 
   // R-AHIT-DUP: per ray, the fields a repeated any-hit may change.
   std::map<uint32_t, uint32_t> repeat;

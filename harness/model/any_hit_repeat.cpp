@@ -16,17 +16,6 @@ bool writesPayloadOrRecord(const Program& p) {
   return writes;
 }
 
-// The fields the comparison judges exactly: the case's own and the automatic
-// ones that do not depend on the traversal (compare/compare_records.cpp).
-std::vector<const RecordField*> judgedFields(const Plan& plan) {
-  std::vector<const RecordField*> fields;
-  for (const std::string& name : plan.record_fields)
-    if (const RecordField* f = findRecordField(name)) fields.push_back(f);
-  for (const RecordField& f : recordFields())
-    if (f.automatic && !traversalDependent(f)) fields.push_back(&f);
-  return fields;
-}
-
 // Per ray, the judged fields whose words differ between `once` and `repeated`.
 void noteDifferentFields(const std::vector<const RecordField*>& fields, const Results& repeated,
                          Results& once, std::vector<uint32_t>& masks) {
@@ -69,7 +58,7 @@ bool anyHitRepeatMayMatter(const Case& c) {
 void findAnyHitRepeatDependence(const Case& c, const Plan& plan, const ModelOptions& opt,
                                 Results& once) {
   if (!anyHitRepeatMayMatter(c)) return;
-  const std::vector<const RecordField*> fields = judgedFields(plan);
+  const std::vector<const RecordField*> fields = comparedRecordFields(plan);
   std::vector<uint32_t> masks(once.records.size() / recordWords(), 0);
   for (AnyHitRepeat repeat : {AnyHitRepeat::First, AnyHitRepeat::All}) {
     ModelOptions repeating = opt;

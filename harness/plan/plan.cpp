@@ -229,4 +229,13 @@ std::vector<std::string> Plan::describe() const {
   return lines;
 }
 
+std::vector<const RecordField*> comparedRecordFields(const Plan& plan) {
+  std::vector<const RecordField*> fields;
+  for (const std::string& name : plan.record_fields)
+    if (const RecordField* f = findRecordField(name)) fields.push_back(f);
+  for (const RecordField& f : recordFields())
+    if (f.automatic && !traversalDependent(f)) fields.push_back(&f);
+  return fields;
+}
+
 }  // namespace rayspec

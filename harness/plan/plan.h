@@ -41,6 +41,11 @@ struct Plan {
 
 Plan derivePlan(const Case& c);
 
+struct RecordField;
+// The record fields a comparison judges per ray: the plan's own, then the
+// automatic ones that do not depend on the traversal (results/record_layout.h).
+std::vector<const RecordField*> comparedRecordFields(const Plan& plan);
+
 // The plan with every effect switched on: every flag of Plan set, every
 // recordable field kept and shown as an image (named after it), the case's
 // counters. What a case would cost without the plan (bench/plan_saving.cpp).
