@@ -152,6 +152,19 @@ TEST(ParseCaseErrors, NestedTraceNeedsRecursion) {
   expectError(parse(s), 10, "closest_hit[1].trace", "max_recursion >= 2");
 }
 
+// The payload a trace starts with: color and value only, typed as the payload's.
+TEST(ParseCaseErrors, TraceStartPayload) {
+  std::string s = kProgramCase;
+  s.replace(s.find("[count: miss]"), 13, "[]");
+  std::string a = s, b = s;
+  a.replace(a.find("BODY"), 4,
+            "trace: {origin: hit_position, direction: [0, 0, 1], payload: {depth: 1}}");
+  expectError(parse(a), 10, "closest_hit[1].trace.payload", "depth");
+  b.replace(b.find("BODY"), 4,
+            "trace: {origin: hit_position, direction: [0, 0, 1], payload: {value: hit_t}}");
+  expectError(parse(b), 10, "closest_hit[1].trace.payload.value", "expected Uint, got Float");
+}
+
 TEST(ParseCaseErrors, SbtIndexOutOfRange) {
   const std::string text = R"(rules: [R-SBT-MISS]
 rays:

@@ -1,7 +1,8 @@
 // The CTS's own ray tracing Amber scripts, rewritten as cases (cases/cts-amber/):
 // each case file names the numbers of its script's EXPECT line in a comment,
-//   # cts-expect: FIELD = V0 V1 ...
-// one value per launch ray in launch order, and the model's exact tier must
+//   # cts-expect: FIELD [FIELD ...] = V0 V1 ...
+// one value per launch ray and field, in launch order (the fields of one ray
+// together, as written), and the model's exact tier must
 // give exactly those (a field no stage wrote reads 0, as the script's images
 // start filled with 0). FIELD may also be `round(100*barycentrics.x)`: the
 // model's barycentric x times 100, rounded half to even (barycentrics.amber).
@@ -22,7 +23,7 @@ namespace rayspec {
 namespace {
 
 struct CtsExpect {
-  std::string field;
+  std::vector<std::string> fields;
   std::vector<std::string> values;
 };
 
@@ -35,8 +36,8 @@ CtsExpect ctsExpect(const std::string& path) {
     if (line.rfind(tag, 0) != 0) continue;
     std::istringstream s(line.substr(tag.size()));
     CtsExpect e;
-    std::string equals, v;
-    s >> e.field >> equals;
+    std::string v;
+    while (s >> v && v != "=") e.fields.push_back(v);
     while (s >> v) e.values.push_back(v);
     return e;
   }
@@ -63,20 +64,25 @@ TEST(CtsAmber, TheModelGivesEachScriptsExpectedValues) {
     if (file.name.rfind("cts-amber/", 0) != 0) continue;
     ++ported;
     const CtsExpect e = ctsExpect(file.path);
-    ASSERT_FALSE(e.field.empty()) << file.path << ": no `# cts-expect: FIELD = ...` line";
-    ASSERT_TRUE(e.field == kRoundedBarycentric || findRecordField(e.field))
-        << file.path << ": unknown field " << e.field;
+    ASSERT_FALSE(e.fields.empty()) << file.path << ": no `# cts-expect: FIELD = ...` line";
+    for (const std::string& field : e.fields)
+      ASSERT_TRUE(field == kRoundedBarycentric || findRecordField(field))
+          << file.path << ": unknown field " << field;
     const ParseResult parsed = loadSuiteCase(file);
     ASSERT_TRUE(parsed.value) << file.name;
     const Results r = runOnModel(*parsed.value, derivePlan(*parsed.value), ModelOptions{});
     ASSERT_TRUE(r.ok()) << file.name << ": " << r.statusText();
     const uint32_t words = recordWords();
-    ASSERT_EQ(r.records.size() / words, e.values.size()) << file.name << ": one value a ray";
-    for (size_t i = 0; i < e.values.size(); ++i)
-      EXPECT_TRUE(sameAsExpected(e.field, &r.records[i * words], e.values[i]))
-          << file.name << " ray " << i << ": " << e.field << " is not " << e.values[i];
+    const size_t per_ray = e.fields.size();
+    ASSERT_EQ(r.records.size() / words * per_ray, e.values.size())
+        << file.name << ": one value a ray and field";
+    for (size_t i = 0; i < e.values.size(); ++i) {
+      const std::string& field = e.fields[i % per_ray];
+      EXPECT_TRUE(sameAsExpected(field, &r.records[i / per_ray * words], e.values[i]))
+          << file.name << " ray " << i / per_ray << ": " << field << " is not " << e.values[i];
+    }
   }
-  EXPECT_GE(ported, 5u) << "cases/cts-amber/ holds fewer scripts than were ported";
+  EXPECT_GE(ported, 8u) << "cases/cts-amber/ holds fewer scripts than were ported";
 }
 
 }  // namespace

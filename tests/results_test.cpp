@@ -28,7 +28,19 @@ TEST(RecordLayout, FieldsAreContiguousUniqueAndFitTheWrittenMask) {
     next += f.words;
   }
   EXPECT_EQ(recordWords(), next);
-  EXPECT_LE(recordFields().size(), 32u) << "the written mask is one 32-bit word";
+  // The written mask is one 32-bit word: a recordable field's bit is its
+  // index, and the automatic fields (no bit) come after all of them.
+  bool automatic_seen = false;
+  for (const RecordField& f : recordFields()) {
+    if (!f.automatic) {
+      EXPECT_FALSE(automatic_seen) << f.name;
+      EXPECT_LT(f.index, 32u) << f.name;
+    }
+    automatic_seen = automatic_seen || f.automatic;
+  }
+  EXPECT_TRUE(isFreeField("value7"));
+  EXPECT_FALSE(isFreeField("value8"));
+  EXPECT_FALSE(isFreeField("hit_t"));
   EXPECT_EQ(recordFieldIndex("hit"), 0);
   EXPECT_EQ(findRecordField("nonsense"), nullptr);
   EXPECT_TRUE(findRecordField("any_hit_runs")->automatic);

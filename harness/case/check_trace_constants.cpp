@@ -1,10 +1,12 @@
 // Static diagnosis of undefined behaviour (R-UB) in the traces and calls of a
 // case, where the values are constants: a hit record that an instance, a
 // geometry and the trace's sbt_offset / sbt_stride reach beyond the hit
-// region (R-SBT-HIT), a miss index beyond the miss region (R-SBT-MISS), a
-// callable index beyond the callable region (R-SBT-CALL), and a trace's own
-// negative or NaN tmin / tmax, or tmax below tmin. A value that depends on
-// anything read at run time is left to the model.
+// region (R-SBT-HIT), a callable index beyond the callable region
+// (R-SBT-CALL), and a trace's own negative or NaN tmin / tmax, or tmax below
+// tmin. A value that depends on anything read at run time is left to the
+// model, and so is a miss index beyond the miss region (R-SBT-MISS): that is
+// undefined only for a ray that misses (a pipeline whose rays all hit needs
+// no miss shader), which the model finds ray by ray.
 #include <bit>
 #include <cmath>
 #include <sstream>
@@ -128,7 +130,7 @@ class TraceChecker {
     // In raygen a missing argument comes from each launch ray; elsewhere from the defaults.
     std::vector<LaunchParameters> bases = {{c_.rays.defaults, c_.rays.defaults_loc}};
     if (stage == Stage::Raygen && !launch_.empty()) bases = launch_;
-    bool hit_noted = false, miss_noted = false;
+    bool hit_noted = false;
     for (const LaunchParameters& base : bases) {
       const TraceValues v = traceValues(t, base.ray);
       // Values a launch ray gave (not the trace itself) are named by the ray they come from.
@@ -144,13 +146,6 @@ class TraceChecker {
         note(at, UndefinedReason::HitRecordOutOfRange,
              hit + from({&t.flags, &t.cull_mask, &t.sbt_offset, &t.sbt_stride}));
         hit_noted = true;
-      }
-      // R-SBT-MISS: only the low 16 bits of the miss index count.
-      if (v.miss && (*v.miss & 0xFFFF) >= c_.pipeline.sbt_miss.size() && !miss_noted) {
-        note(t.miss.empty() ? at : t.miss.front().loc, UndefinedReason::MissRecordOutOfRange,
-             "miss index " + std::to_string(*v.miss) + " is out of range: " +
-                 regionSize(c_.pipeline.sbt_miss.size(), "miss", "miss shader") + from({&t.miss}));
-        miss_noted = true;
       }
     }
     // The trace's own interval (the launch rays' and the defaults' are checked where they are

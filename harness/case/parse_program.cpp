@@ -86,8 +86,12 @@ bool parseTrace(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& 
   if (v.IsNull()) return true;
   if (!r.expectMap(v, f,
                    {"origin", "direction", "tmin", "tmax", "flags", "cull_mask", "sbt_offset",
-                    "sbt_stride", "miss"}))
+                    "sbt_stride", "miss", "payload"}))
     return false;
+  bool ok = true;
+  // The payload the trace starts with (zero where not given), into s.assigns.
+  if (const YAML::Node p = YamlReader::get(v, "payload"); p.IsDefined())
+    ok = parseAssigns(r, p, f + ".payload", {"color", "value"}, s);
   TraceArgs& t = s.trace;
   struct Slot {
     const char* key;
@@ -102,7 +106,6 @@ bool parseTrace(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& 
                         {"sbt_offset", &t.sbt_offset},
                         {"sbt_stride", &t.sbt_stride},
                         {"miss", &t.miss}};
-  bool ok = true;
   for (const Slot& slot : slots) {
     const YAML::Node a = YamlReader::get(v, slot.key);
     if (!a.IsDefined()) continue;

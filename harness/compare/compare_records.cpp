@@ -26,11 +26,10 @@ std::string fieldRule(const std::string& field) {
                                                            {"raygen_runs", "R-BUILTIN"},
                                                            {"hit_kind", "R-HITKIND-TRI"},
                                                            {"hit_t", "R-PREC"},
-                                                           {"color", "R-PAYLOAD"},
-                                                           {"value", "R-PAYLOAD"},
                                                            {"ray_tmax", "R-TMAX-VIEW"},
                                                            {"ray_tmin", "R-TMAX-VIEW"},
                                                            {"depth", "R-RECURSION"}};
+  if (isFreeField(field)) return "R-PAYLOAD";
   const auto it = rules.find(field);
   return it == rules.end() ? "R-BUILTIN" : it->second;
 }

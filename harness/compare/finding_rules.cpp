@@ -5,6 +5,7 @@
 #include <set>
 
 #include "program/walk_program.h"
+#include "results/record_layout.h"
 
 namespace rayspec {
 namespace {
@@ -12,7 +13,8 @@ namespace {
 using Rules = std::vector<std::string>;
 
 // Rules that decide whether a trace hits and which candidate it commits: any
-// of them shows in the hit, the identity fields, t, and which shaders ran.
+// of them shows in the hit, the identity fields, t, and which shaders ran
+// (facing among them: with a culling flag it decides what is culled).
 const Rules& decisionRules() {
   static const Rules r = {
       "R-CAND-TRI-OPEN", "R-CAND-AABB-CLOSED", "R-TIE",       "R-ORDER-UNSPEC",     "R-INST-XFORM",
@@ -20,7 +22,7 @@ const Rules& decisionRules() {
       "R-FACE-CULL",     "R-OPACITY",          "R-CULL-OPQ",  "R-AHIT-OPAQUE-SKIP", "R-AHIT-UNUSED",
       "R-AHIT-CLOSEST",  "R-IGNORE",           "R-TERMINATE", "R-ISECT-REPORT",     "R-TOFH",
       "R-MISS-XOR-CHIT", "R-SBT-HIT",          "R-SBT-MISS",  "R-SBT-ZERO",         "R-INACTIVE",
-      "R-DEGEN",         "R-WATERTIGHT",       "R-PREC"};
+      "R-DEGEN",         "R-WATERTIGHT",       "R-PREC",      "R-FACE-DET"};
   return r;
 }
 
@@ -55,8 +57,7 @@ std::vector<std::string> rulesEvidencedByField(const std::string& field) {
   if (decision.count(field)) return join({&decisionRules()}, {"R-BUILTIN"});
   if (field == "hit_kind")
     return join({&decisionRules()}, {"R-HITKIND-TRI", "R-FACE-DET", "R-BUILTIN"});
-  if (field == "color" || field == "color2" || field == "value")
-    return join({&dataRules(), &decisionRules()});
+  if (isFreeField(field)) return join({&dataRules(), &decisionRules()});
   if (field == "ray_tmin" || field == "ray_tmax")
     return join({&decisionRules()}, {"R-TMAX-VIEW", "R-BUILTIN"});
   if (field == "depth") return {"R-RECURSION", "R-BUILTIN"};

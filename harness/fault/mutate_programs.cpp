@@ -146,6 +146,18 @@ std::string payloadWritesLost(Case& c, ModelOptions&) {
   return describeCount(removeEverywhere(c, Stmt::Kind::SetPayload), "payload writes lost");
 }
 
+std::string payloadStartLost(Case& c, ModelOptions&) {
+  size_t n = 0;
+  forEachProgram(c.pipeline, [&](Program& p, Stage) {
+    forEachStmt(p, [&](Stmt& s) {
+      if (s.kind != Stmt::Kind::Trace || s.assigns.empty()) return;
+      s.assigns.clear();
+      ++n;
+    });
+  });
+  return describeCount(n, "traces start with a zero payload");
+}
+
 std::string callableDataNotReturned(Case& c, ModelOptions&) {
   const StageMask callable = stageBit(Stage::Callable);
   return describeCount(removeEverywhere(c, Stmt::Kind::SetCall, callable) +

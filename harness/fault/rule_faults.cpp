@@ -45,7 +45,7 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-SBT-RECORD", {"shader-record-data-zeroed"}, {}},
       {"R-RECURSION", {"nested-trace-dropped"}, {}},
       {"R-CALLABLE", {"callable-data-not-returned"}, {}},
-      {"R-PAYLOAD", {"payload-writes-lost", "hit-attributes-lost"}, {}},
+      {"R-PAYLOAD", {"payload-writes-lost", "payload-start-lost", "hit-attributes-lost"}, {}},
       {"R-BUILTIN", {"builtin-wrong", "swap-primitive-id", "shift-t"}, {}},
       {"R-INACTIVE", {"inactive-renumbered", "inactive-revived", "inactive-hides-last-active"}, {}},
       {"R-DEGEN", {"degenerate-hit"}, {}},

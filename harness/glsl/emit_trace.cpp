@@ -47,9 +47,15 @@ void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
     }
     out.line(std::string(a.type) + " " + a.local + " = " + value + ";");
   }
+  // The payload the trace starts with: every value read before any is written.
+  std::string color = "vec4(0.0)", value = "0u";
+  for (const auto& [field, expr] : s.assigns)
+    (field == "color" ? color : value) = emitExpr(expr, ctx);
+  out.line("vec4 rs_start_color = " + color + ";");
+  out.line("uint rs_start_value = " + value + ";");
   const std::string p = raygen ? "payload" : "child";
-  out.line(p + ".color = vec4(0.0);");
-  out.line(p + ".value = 0u;");
+  out.line(p + ".color = rs_start_color;");
+  out.line(p + ".value = rs_start_value;");
   out.line(p + ".depth = " + (raygen ? std::string("1u") : "payload.depth + 1u") + ";");
   out.line("traceRayEXT(rs_tlas, rs_flags, rs_cull_mask, rs_sbt_offset, rs_sbt_stride, rs_miss,");
   out.line("            rs_origin, rs_tmin, rs_direction, rs_tmax, " +

@@ -522,8 +522,22 @@ TraceRay Machine::tracedRay(const CStmt& s, StageEnv& env) {
   return r;
 }
 
+// The payload a trace starts with: what the statement gives, zero elsewhere.
+Payload Machine::startPayload(const CStmt& s, StageEnv& env) {
+  Payload p;
+  for (const CAssign& a : s.assigns) {
+    const Val v = eval(a.value, env);
+    if (a.slot == Slot::Color)
+      p.color = v.f;
+    else if (a.slot == Slot::Value)
+      p.value = v.u;
+  }
+  return p;
+}
+
 void Machine::execTrace(const CStmt& s, StageEnv& env) {
   TraceRay r = tracedRay(s, env);
+  const Payload start = startPayload(s, env);
   const uint32_t depth = env.stage == Stage::Raygen ? 1 : env.depth + 1;
   if (depth > std::max<uint32_t>(sh_.c->pipeline.max_recursion, 1)) {
     // R-RECURSION, R-UB: the ray is undefined; the model skips the trace
@@ -536,7 +550,7 @@ void Machine::execTrace(const CStmt& s, StageEnv& env) {
                         std::to_string(sh_.c->pipeline.max_recursion));
     return;
   }
-  Payload p = trace(r, depth, &s);
+  Payload p = trace(r, depth, &s, start);
   if (env.stage == Stage::Raygen && env.payload)
     *env.payload = p;
   else

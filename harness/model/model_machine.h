@@ -165,6 +165,7 @@ class alignas(64) Machine {
   void execSet(const CStmt& s, StageEnv& env);    // set payload / set call data
   void execCall(const CStmt& s, StageEnv& env);   // executeCallableEXT
   void execTrace(const CStmt& s, StageEnv& env);  // traceRayEXT
+  Payload startPayload(const CStmt& s, StageEnv& env);
   TraceRay tracedRay(const CStmt& s, StageEnv& env);
   void record(int field, const Val& v, ValueType t);
   void bumpRuns(int which) {  // kRuns* above
@@ -179,7 +180,8 @@ class alignas(64) Machine {
   Flow runAnyHit(const CProgram& p, StageEnv& a, const HitView& hv, uint32_t geometry_flags);
   // `site`: the trace statement (or raygen's `trace: {}` of the launch ray),
   // named when the trace is undefined.
-  Payload trace(const TraceRay& r, uint32_t depth, const CStmt* site);  // model_traversal.cpp
+  // model_traversal.cpp; `payload` is what the trace starts with
+  Payload trace(const TraceRay& r, uint32_t depth, const CStmt* site, Payload payload = {});
   Committed directHit(const TraceRay& r, uint32_t flags);
   Committed traverse(const TraceRay& r, uint32_t flags, uint32_t depth, Payload& payload);
   void shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Committed& best,

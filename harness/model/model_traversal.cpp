@@ -224,11 +224,10 @@ Flow Machine::report(const CStmt& s, StageEnv& env) {
   return exec(accepted ? s.then_ : s.else_, env);
 }
 
-Payload Machine::trace(const TraceRay& r, uint32_t depth, const CStmt* site) {
+Payload Machine::trace(const TraceRay& r, uint32_t depth, const CStmt* site, Payload payload) {
   uint32_t flags = r.flags;
   if (sh_.c->pipeline.flags & 0x1000) flags |= kRaySkipTriangles;
   if (sh_.c->pipeline.flags & 0x2000) flags |= kRaySkipAabbs;
-  Payload payload;
   payload.depth = depth;
   // R-UB: a ray with a non-finite, NaN or negative parameter finds nothing
   // (validRay keeps it from Embree) and misses; one with an illegal flag

@@ -195,7 +195,7 @@ class Checker {
       for (Expr& e : *slot.exprs)
         if (auto r = as(e, slot.type, std::string("trace ") + slot.name)) return r;
     }
-    return std::nullopt;
+    return dataFields(s, false);  // the payload the trace starts with
   }
 
   Stage stage_;

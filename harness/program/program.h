@@ -57,7 +57,9 @@ struct Stmt {
     Terminate,   // terminateRayEXT (any-hit only)
     Report,      // reportIntersectionEXT(t, kind) (intersection only);
                  // then_ runs if it returned true, else_ if false
-    Trace,       // traceRayEXT with `trace`; payload result readable as child.*
+    Trace,       // traceRayEXT with `trace`, the payload starting as `assigns`
+                 // ("color", "value"; zero where not given) evaluated before
+                 // the trace; the result readable as child.* (payload.* in raygen)
     Call,        // executeCallableEXT(call_index) with data fields `assigns`
                  // ("position", "normal", "value", "color"); result as callee.*
     Light,       // callable only: call.color = light_<light>(call.position,
@@ -66,7 +68,7 @@ struct Stmt {
   };
   Kind kind = Kind::Count;
   std::string counter;                                // Count
-  std::vector<std::pair<std::string, Expr>> assigns;  // Record/SetPayload/SetCall/Call
+  std::vector<std::pair<std::string, Expr>> assigns;  // Record/SetPayload/SetCall/Call/Trace
   Expr cond;                                          // If
   Expr t, hit_kind;                                   // Report
   std::vector<Expr> attribute;                        // Report: optional Vec2 hit

@@ -34,6 +34,13 @@ std::vector<RecordField> buildFields() {
       {"value", FieldType::Uint, 1, false},
       {"color", FieldType::Float, 4, false},
       {"color2", FieldType::Float, 4, false},
+      {"value1", FieldType::Uint, 1, false},
+      {"value2", FieldType::Uint, 1, false},
+      {"value3", FieldType::Uint, 1, false},
+      {"value4", FieldType::Uint, 1, false},
+      {"value5", FieldType::Uint, 1, false},
+      {"value6", FieldType::Uint, 1, false},
+      {"value7", FieldType::Uint, 1, false},
       {"raygen_runs", FieldType::Uint, 1, true},
       {"miss_runs", FieldType::Uint, 1, true},
       {"closest_hit_runs", FieldType::Uint, 1, true},
@@ -88,7 +95,13 @@ uint32_t recordWords() {
 }
 
 bool written(const uint32_t* rec, int field_index) {
-  return field_index >= 0 && ((rec[kRecordWrittenMaskWord] >> field_index) & 1u);
+  return field_index >= 0 && field_index < 32 &&
+         ((rec[kRecordWrittenMaskWord] >> field_index) & 1u);
+}
+
+bool isFreeField(std::string_view name) {
+  return name == "color" || name == "color2" || name == "value" ||
+         (name.size() == 6 && name.substr(0, 5) == "value" && name[5] >= '1' && name[5] <= '7');
 }
 
 }  // namespace rayspec

@@ -27,6 +27,9 @@ const std::vector<RecordField>& recordFields();
 const RecordField* findRecordField(std::string_view name);
 int recordFieldIndex(std::string_view name);  // -1 when unknown
 constexpr uint32_t kRecordWrittenMaskWord = 0;
+// A field no built-in fills: it holds what a program computes (color, color2,
+// value, value1 .. value7).
+bool isFreeField(std::string_view name);
 uint32_t recordWords();  // words per ray
 
 // Names of the automatic counters, in the order of the fields that hold them.
