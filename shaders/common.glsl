@@ -26,7 +26,12 @@ ivec2 rs_image_texel(int width) {
 }
 
 #ifdef RS_USE_TLAS
+#ifdef RS_TLAS_COUNT
+// Several top levels (scene.instances[].tlas): a trace names one by a constant.
+layout(set = 0, binding = RS_BINDING_TLAS) uniform accelerationStructureEXT rs_tlas[RS_TLAS_COUNT];
+#else
 layout(set = 0, binding = RS_BINDING_TLAS) uniform accelerationStructureEXT rs_tlas;
+#endif
 #endif
 
 #ifdef RS_USE_RAYS

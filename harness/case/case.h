@@ -3,6 +3,7 @@
 // the GLSL generator, the Vulkan backend and the model. No expected values.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <map>
@@ -82,12 +83,26 @@ struct Instance {
   uint32_t custom_index = 0;  // 24 bits
   uint32_t sbt_offset = 0;    // 24 bits
   uint32_t flags = 0;         // InstanceFlag bits
+  // The top level it belongs to (0 .. kMaxTlases - 1). Every top level holds
+  // all instances in this list's order, those of the other levels inactive
+  // (a null BLAS reference), so gl_InstanceID is the position in this list
+  // whichever level a trace traverses.
+  uint32_t tlas = 0;
   SourceLoc loc;
 };
+
+constexpr uint32_t kMaxTlases = 8;
 
 struct Scene {
   std::vector<Blas> blases;
   std::vector<Instance> instances;
+  // How many top levels the scene has: one past the highest Instance::tlas
+  // (a level no instance names is built empty); at least 1.
+  uint32_t tlasCount() const {
+    uint32_t n = 1;
+    for (const Instance& i : instances) n = std::max(n, i.tlas + 1);
+    return n;
+  }
 };
 
 // One ray of the launch, exactly as uploaded to the device (float32).

@@ -127,6 +127,9 @@ class TraceChecker {
 
   void trace(const Stmt& s, Stage stage) {
     const TraceArgs& t = s.trace;
+    if (t.tlas >= c_.scene.tlasCount())
+      r_.error(t.tlas_loc, "top level " + std::to_string(t.tlas) + ", but the scene has " +
+                               std::to_string(c_.scene.tlasCount()) + " (scene.instances[].tlas)");
     // In raygen a missing argument comes from each launch ray; elsewhere from the defaults.
     std::vector<LaunchParameters> bases = {{c_.rays.defaults, c_.rays.defaults_loc}};
     if (stage == Stage::Raygen && !launch_.empty()) bases = launch_;

@@ -86,9 +86,16 @@ bool parseTrace(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& 
   if (v.IsNull()) return true;
   if (!r.expectMap(v, f,
                    {"origin", "direction", "tmin", "tmax", "flags", "cull_mask", "sbt_offset",
-                    "sbt_stride", "miss", "payload"}))
+                    "sbt_stride", "miss", "payload", "tlas"}))
     return false;
   bool ok = true;
+  if (const YAML::Node l = YamlReader::get(v, "tlas"); l.IsDefined()) {
+    s.trace.tlas_loc = r.loc(l, f + ".tlas");
+    if (auto index = r.uint(l, f + ".tlas", kMaxTlases - 1))
+      s.trace.tlas = *index;
+    else
+      ok = false;
+  }
   // The payload the trace starts with (zero where not given), into s.assigns.
   if (const YAML::Node p = YamlReader::get(v, "payload"); p.IsDefined())
     ok = parseAssigns(r, p, f + ".payload", {"color", "value"}, s);

@@ -145,7 +145,7 @@ void parseInstance(YamlReader& r, const YAML::Node& n, const std::string& field,
                    Instance& inst) {
   inst.loc = r.loc(n, field);
   if (!r.expectMap(n, field,
-                   {"blas", "transform", "mask", "custom_index", "sbt_offset", "flags"}) ||
+                   {"blas", "transform", "mask", "custom_index", "sbt_offset", "flags", "tlas"}) ||
       !r.require(n, field, "blas"))
     return;
   const YAML::Node b = YamlReader::get(n, "blas");
@@ -175,6 +175,8 @@ void parseInstance(YamlReader& r, const YAML::Node& n, const std::string& field,
     if (auto v = r.uint(m, field + ".sbt_offset", 0xFFFFFF)) inst.sbt_offset = *v;
   if (auto f = YamlReader::get(n, "flags"); f.IsDefined())
     if (auto bits = r.flags(f, field + ".flags", instanceFlagNames())) inst.flags = *bits;
+  if (auto t = YamlReader::get(n, "tlas"); t.IsDefined())
+    if (auto v = r.uint(t, field + ".tlas", kMaxTlases - 1)) inst.tlas = *v;
 }
 
 }  // namespace

@@ -22,7 +22,7 @@ std::vector<std::string> judgedRepeatCounters(const Case& c, const Results& mode
 // "3 rays (first: 0 4 9), fields value color; counters hits".
 std::string whatRepeatChanges(const Results& model, const std::vector<std::string>& counters) {
   std::string s;
-  uint32_t fields = 0;
+  FieldMask fields = 0;
   for (const RepeatDependentRay& d : model.repeat_dependent) fields |= d.fields;
   if (!model.repeat_dependent.empty()) {
     s = std::to_string(model.repeat_dependent.size()) + " rays (first:";
@@ -30,7 +30,7 @@ std::string whatRepeatChanges(const Results& model, const std::vector<std::strin
       s += " " + std::to_string(model.repeat_dependent[i].ray);
     s += "), fields";
     for (const RecordField& f : recordFields())
-      if ((fields >> f.index) & 1u) s += std::string(" ") + f.name;
+      if (fields & fieldBit(f.index)) s += std::string(" ") + f.name;
   }
   if (!counters.empty()) {
     s += s.empty() ? "counters" : "; counters";

@@ -32,7 +32,7 @@ void compareImages(const Plan& plan, const Results& device, const Results& model
     std::set<uint32_t> image_masked = masked;
     const int field = recordFieldIndex(di.field);
     for (const RepeatDependentRay& d : model.repeat_dependent)
-      if (field >= 0 && ((d.fields >> field) & 1u)) image_masked.insert(d.ray);
+      if (field >= 0 && (d.fields & fieldBit(field))) image_masked.insert(d.ray);
     const PixelCount count =
         countFailingPixels(prepareImagePair(di, *mi, image_masked, thresholds.tolerance));
     if (!count.failing) continue;

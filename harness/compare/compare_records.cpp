@@ -113,7 +113,7 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
   const std::vector<const RecordField*> fields = comparedRecordFields(plan);
 
   // R-AHIT-DUP: per ray, the fields a repeated any-hit may change.
-  std::map<uint32_t, uint32_t> repeat;
+  std::map<uint32_t, FieldMask> repeat;
   for (const RepeatDependentRay& d : model.repeat_dependent) repeat[d.ray] = d.fields;
 
   const TraceShape shape = traceShape(c);
@@ -130,7 +130,7 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
     if (undefined.count(ray)) continue;  // R-UB: never judged
     const float t_bound = tBound(t_bounds, ray);
     const auto repeated = repeat.find(ray);
-    const uint32_t repeat_fields = repeated == repeat.end() ? 0 : repeated->second;
+    const FieldMask repeat_fields = repeated == repeat.end() ? 0 : repeated->second;
     if (const auto it = ambiguous.find(ray); it != ambiguous.end()) {
       if (repeat_fields) continue;  // its legal answers and what repetition changes: not judged
       checkAmbiguous(c, *it->second, d, wrongs, leak);
@@ -138,7 +138,7 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
       continue;
     }
     for (const RecordField* f : fields) {
-      if (((repeat_fields >> f->index) & 1u) || sameField(*f, d, m, t_bound)) continue;
+      if ((repeat_fields & fieldBit(f->index)) || sameField(*f, d, m, t_bound)) continue;
       FindingBuilder& b = mismatches[f->name];
       if (b.finding.message.empty())
         b.finding = {

@@ -84,6 +84,7 @@ std::string closestAnyHitSkipped(Case& c, ModelOptions& o);
 std::string unusedAnyHitIgnores(Case& c, ModelOptions& o);
 std::string payloadWritesLost(Case& c, ModelOptions& o);
 std::string payloadStartLost(Case& c, ModelOptions& o);
+std::string tlasIgnored(Case& c, ModelOptions& o);
 std::string hitAttributesLost(Case& c, ModelOptions& o);
 std::string callableDataNotReturned(Case& c, ModelOptions& o);
 std::string nestedTraceDropped(Case& c, ModelOptions& o);

@@ -129,6 +129,8 @@ std::vector<FaultImpl> programAndOrderMutations() {
       {"payload-start-lost", K::CaseMutation,
        "every trace starts with a zero payload, whatever the caller wrote into it", nullptr,
        payloadStartLost},
+      {"tlas-ignored", K::CaseMutation,
+       "every trace traverses the first top level, whichever one it names", nullptr, tlasIgnored},
       {"hit-attributes-lost", K::CaseMutation,
        "the attribute an intersection shader reports is lost (reads 0)", nullptr,
        hitAttributesLost},

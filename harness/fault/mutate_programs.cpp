@@ -158,6 +158,18 @@ std::string payloadStartLost(Case& c, ModelOptions&) {
   return describeCount(n, "traces start with a zero payload");
 }
 
+std::string tlasIgnored(Case& c, ModelOptions&) {
+  size_t n = 0;
+  forEachProgram(c.pipeline, [&](Program& p, Stage) {
+    forEachStmt(p, [&](Stmt& s) {
+      if (s.kind != Stmt::Kind::Trace || s.trace.tlas == 0) return;
+      s.trace.tlas = 0;
+      ++n;
+    });
+  });
+  return describeCount(n, "traces traverse the first top level instead of the one they name");
+}
+
 std::string callableDataNotReturned(Case& c, ModelOptions&) {
   const StageMask callable = stageBit(Stage::Callable);
   return describeCount(removeEverywhere(c, Stmt::Kind::SetCall, callable) +

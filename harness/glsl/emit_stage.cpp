@@ -54,6 +54,8 @@ void defines(const StageContext& ctx, GlslWriter& out) {
   const bool raygen = ctx.stage == Stage::Raygen;
   out.line("// Bindings and layouts from harness/glsl/bindings.h and results/record_layout.h.");
   out.line(define("RS_BINDING_TLAS", kBindingTlas));
+  // Several top levels: rs_tlas is an array of them, indexed by constants.
+  if (ctx.c.scene.tlasCount() > 1) out.line(define("RS_TLAS_COUNT", ctx.c.scene.tlasCount()));
   out.line(define("RS_BINDING_RAYS", kBindingRays));
   out.line(define("RS_BINDING_RECORDS", kBindingRecords));
   out.line(define("RS_BINDING_COUNTERS", kBindingCounters));

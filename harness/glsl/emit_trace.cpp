@@ -57,7 +57,11 @@ void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
   out.line(p + ".color = rs_start_color;");
   out.line(p + ".value = rs_start_value;");
   out.line(p + ".depth = " + (raygen ? std::string("1u") : "payload.depth + 1u") + ";");
-  out.line("traceRayEXT(rs_tlas, rs_flags, rs_cull_mask, rs_sbt_offset, rs_sbt_stride, rs_miss,");
+  const std::string tlas = ctx.c.scene.tlasCount() > 1
+                               ? "rs_tlas[" + std::to_string(s.trace.tlas) + "]"
+                               : std::string("rs_tlas");
+  out.line("traceRayEXT(" + tlas +
+           ", rs_flags, rs_cull_mask, rs_sbt_offset, rs_sbt_stride, rs_miss,");
   out.line("            rs_origin, rs_tmin, rs_direction, rs_tmax, " +
            std::string(raygen ? "0" : "1") + ");");
   out.close();

@@ -18,7 +18,7 @@ bool writesPayloadOrRecord(const Program& p) {
 
 // Per ray, the judged fields whose words differ between `once` and `repeated`.
 void noteDifferentFields(const std::vector<const RecordField*>& fields, const Results& repeated,
-                         Results& once, std::vector<uint32_t>& masks) {
+                         Results& once, std::vector<FieldMask>& masks) {
   const uint32_t words = recordWords();
   if (repeated.records.size() != once.records.size()) return;
   for (size_t ray = 0; ray < masks.size(); ++ray) {
@@ -28,7 +28,7 @@ void noteDifferentFields(const std::vector<const RecordField*>& fields, const Re
       if (!std::equal(a + f->offset, a + f->offset + f->words, b + f->offset) ||
           (!f->automatic &&
            written(a, static_cast<int>(f->index)) != written(b, static_cast<int>(f->index))))
-        masks[ray] |= 1u << f->index;
+        masks[ray] |= fieldBit(f->index);
   }
 }
 
@@ -59,7 +59,7 @@ void findAnyHitRepeatDependence(const Case& c, const Plan& plan, const ModelOpti
                                 Results& once) {
   if (!anyHitRepeatMayMatter(c)) return;
   const std::vector<const RecordField*> fields = comparedRecordFields(plan);
-  std::vector<uint32_t> masks(once.records.size() / recordWords(), 0);
+  std::vector<FieldMask> masks(once.records.size() / recordWords(), 0);
   for (AnyHitRepeat repeat : {AnyHitRepeat::First, AnyHitRepeat::All}) {
     ModelOptions repeating = opt;
     repeating.any_hit_repeat = repeat;

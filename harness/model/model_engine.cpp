@@ -180,7 +180,7 @@ ModelShared sharedState(const Case& c, const Plan& plan, const ModelOptions& opt
       !shared.direct && (hitRecordMayBeOutOfRange(c, false) || hasNanTriangles(scene));
   shared.raygen_traces_launch_ray =
       programs.raygen.size() == 1 && programs.raygen[0].kind == Stmt::Kind::Trace &&
-      programs.raygen[0].assigns.empty() &&
+      programs.raygen[0].assigns.empty() && programs.raygen[0].src->trace.tlas == 0 &&
       std::none_of(programs.raygen[0].has.begin(), programs.raygen[0].has.end(),
                    [](bool b) { return b; });
   shared.need_object_ray = programs.reads(kBiObjectOrigin) || programs.reads(kBiObjectDirection) ||

@@ -22,7 +22,7 @@ Committed embreeClosestHit(const ModelScene& scene, RTCIntersectContext& ctx, co
   if (!validRay(r, rh)) return best;
   rh.ray.tnear = scene.tier == ModelTier::Robust ? nextUp(r.tmin) : r.tmin;
   rh.ray.tfar = nextDown(r.tmax);
-  rtcIntersect1(scene.top, &ctx, &rh);
+  rtcIntersect1(scene.tops[r.tlas], &ctx, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return best;
   best = {true,          rh.ray.tfar, rh.hit.instID[0], rh.hit.geomID,
           rh.hit.primID, 0xFEu,       rh.hit.u,         rh.hit.v};
@@ -125,7 +125,7 @@ void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
   if (sh_.c->pipeline.flags & 0x1000) pipe_flags |= kRaySkipTriangles;
   if (sh_.c->pipeline.flags & 0x2000) pipe_flags |= kRaySkipAabbs;
   const ModelScene& scene = *sh_.scene;
-  const RTCScene top = scene.top;
+  const RTCScene top = scene.tops[0];  // launch rays traverse the first top level
   const bool robust = scene.tier == ModelTier::Robust;
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);

@@ -519,6 +519,7 @@ TraceRay Machine::tracedRay(const CStmt& s, StageEnv& env) {
   u1(CStmt::kSbtOffset, r.sbt_offset);
   u1(CStmt::kSbtStride, r.sbt_stride);
   u1(CStmt::kMiss, r.miss);
+  if (s.src) r.tlas = s.src->trace.tlas;
   return r;
 }
 

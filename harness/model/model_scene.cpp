@@ -288,7 +288,8 @@ bool needsOwnTriangleTest(const std::array<Vec3, 3>& tri) {
 }
 
 ModelScene::~ModelScene() {
-  if (top) rtcReleaseScene(top);
+  for (RTCScene t : tops)
+    if (t) rtcReleaseScene(t);
   for (ModelBlas& b : blases)
     if (b.scene) rtcReleaseScene(b.scene);
   if (device) rtcReleaseDevice(device);
@@ -439,11 +440,15 @@ void commitBlas(ModelScene& s, const Case& c, size_t bi, RTCSceneFlags scene_fla
   rtcCommitScene(mb.scene);
 }
 
-// The TLAS as an Embree scene of instances (a null BLAS: an inactive
-// instance, kept for its index but not attached).
+// Each TLAS as an Embree scene of its instances (a null BLAS, or an
+// instance of another level: inactive there, kept for its index but not
+// attached).
 void commitInstances(ModelScene& s, const Case& c, RTCSceneFlags scene_flags) {
-  s.top = rtcNewScene(s.device);
-  rtcSetSceneFlags(s.top, scene_flags);
+  s.tops.resize(c.scene.tlasCount());
+  for (RTCScene& top : s.tops) {
+    top = rtcNewScene(s.device);
+    rtcSetSceneFlags(top, scene_flags);
+  }
   s.instances.resize(c.scene.instances.size());
   for (size_t ii = 0; ii < c.scene.instances.size(); ++ii) {
     const Instance& inst = c.scene.instances[ii];
@@ -459,10 +464,10 @@ void commitInstances(ModelScene& s, const Case& c, RTCSceneFlags scene_flags) {
     rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, inst.transform.data());
     rtcSetGeometryMask(geom, inst.mask & 0xFF);
     rtcCommitGeometry(geom);
-    rtcAttachGeometryByID(s.top, geom, static_cast<unsigned>(ii));
+    rtcAttachGeometryByID(s.tops[inst.tlas], geom, static_cast<unsigned>(ii));
     rtcReleaseGeometry(geom);
   }
-  rtcCommitScene(s.top);
+  for (RTCScene top : s.tops) rtcCommitScene(top);
 }
 
 }  // namespace

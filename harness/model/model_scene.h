@@ -61,7 +61,9 @@ struct ModelScene {
   ModelTier tier = ModelTier::Exact;
   bool filters = false;  // Embree triangles report every candidate to the model
   RTCDevice device = nullptr;
-  RTCScene top = nullptr;
+  // One Embree scene per top level (Scene::tlasCount()), each holding the
+  // instances of that level under their index in Scene::instances.
+  std::vector<RTCScene> tops;
   std::vector<ModelBlas> blases;
   std::vector<ModelInstance> instances;
 

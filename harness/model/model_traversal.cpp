@@ -371,7 +371,7 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
     // Slightly wider than the interval: the model checks both ends itself.
     rh.ray.tnear = std::max(0.0f, r.tmin - std::fabs(r.tmin) * 1e-5f);
     rh.ray.tfar = r.tmax + std::fabs(r.tmax) * 1e-5f;
-    rtcIntersect1(scene.top, &tc.rtc, &rh);
+    rtcIntersect1(scene.tops[r.tlas], &tc.rtc, &rh);
     const CandidateOrder order = sh_.faults.order;
     std::sort(
         cands->begin(), cands->end(), [order](const ModelCandidate& a, const ModelCandidate& b) {

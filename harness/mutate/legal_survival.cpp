@@ -149,11 +149,11 @@ bool everyGeometryNoDuplicate(const Case& c) {
 // exactly those out.
 bool onlyRepeatDependentChanged(const MutantInput& in, const Results& mutated) {
   if (in.model.repeat_dependent.empty()) return false;
-  std::map<uint32_t, uint32_t> masks;
+  std::map<uint32_t, FieldMask> masks;
   for (const RepeatDependentRay& d : in.model.repeat_dependent) masks[d.ray] = d.fields;
   const auto dependent = [&masks](uint32_t ray, uint32_t index) {
     const auto it = masks.find(ray);
-    return it != masks.end() && ((it->second >> index) & 1u);
+    return it != masks.end() && (it->second & fieldBit(index));
   };
   const uint32_t words = recordWords();
   if (mutated.records.size() != in.model.records.size()) return false;

@@ -45,6 +45,8 @@ struct Expr {
 struct TraceArgs {
   std::vector<Expr> origin, direction, tmin, tmax;  // 0 or 1 element each
   std::vector<Expr> flags, cull_mask, sbt_offset, sbt_stride, miss;
+  uint32_t tlas = 0;  // which top level (a constant: Instance::tlas)
+  SourceLoc tlas_loc;
 };
 
 struct Stmt {

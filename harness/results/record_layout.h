@@ -27,6 +27,11 @@ const std::vector<RecordField>& recordFields();
 const RecordField* findRecordField(std::string_view name);
 int recordFieldIndex(std::string_view name);  // -1 when unknown
 constexpr uint32_t kRecordWrittenMaskWord = 0;
+// A set of fields by index (every field, automatic ones included).
+using FieldMask = uint64_t;
+constexpr FieldMask fieldBit(uint32_t index) {
+  return FieldMask{1} << index;
+}
 // A field no built-in fills: it holds what a program computes (color, color2,
 // value, value1 .. value7).
 bool isFreeField(std::string_view name);

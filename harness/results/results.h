@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "results/record_layout.h"
 #include "results/step_cost.h"
 #include "results/undefined_reason.h"
 
@@ -113,7 +114,7 @@ struct TBound {
 // more than once for a primitive may leave otherwise (model/any_hit_repeat.h).
 struct RepeatDependentRay {
   uint32_t ray = 0;
-  uint32_t fields = 0;  // bit i: recordFields()[i]
+  FieldMask fields = 0;  // fieldBit(i): recordFields()[i]
 };
 
 struct Results {

@@ -146,7 +146,7 @@ void writeRayNotes(const Results& r, json& j) {
   for (const RepeatDependentRay& d : r.repeat_dependent) {
     json names = json::array();
     for (const RecordField& f : recordFields())
-      if ((d.fields >> f.index) & 1u) names.push_back(f.name);
+      if (d.fields & fieldBit(f.index)) names.push_back(f.name);
     j["repeat_dependent"].push_back({{"ray", d.ray}, {"fields", names}});
   }
   j["repeat_counters"] = r.repeat_counters;
@@ -299,7 +299,7 @@ void readRayNotes(const json& j, FieldReader& field, Results& r) {
         if (index < 0)
           throw std::runtime_error("repeat_dependent.fields: unknown field '" +
                                    jn.get<std::string>() + "'");
-        d.fields |= 1u << index;
+        d.fields |= fieldBit(index);
       }
       r.repeat_dependent.push_back(d);
     }

@@ -194,9 +194,12 @@ BlasBuilds createBlases(const VulkanContext& ctx, std::vector<BlasBuild>& builds
   return out;
 }
 
-// The TLAS's instances as the device reads them (a null BLAS: address 0).
-std::vector<VkAccelerationStructureInstanceKHR> tlasInstances(
-    const Scene& scene, const std::vector<BlasBuild>& builds) {
+// The instances of top level `level` as the device reads them: every
+// instance of the scene, in order; a null BLAS, or an instance of another
+// level, has address 0 (inactive, R-INACTIVE).
+std::vector<VkAccelerationStructureInstanceKHR> tlasInstances(const Scene& scene,
+                                                              const std::vector<BlasBuild>& builds,
+                                                              uint32_t level) {
   std::vector<VkAccelerationStructureInstanceKHR> instances;
   for (const Instance& inst : scene.instances) {
     VkAccelerationStructureInstanceKHR vi{};
@@ -206,7 +209,8 @@ std::vector<VkAccelerationStructureInstanceKHR> tlasInstances(
     vi.instanceShaderBindingTableRecordOffset = inst.sbt_offset & 0xFFFFFF;
     vi.flags = inst.flags & 0xFF;
     vi.accelerationStructureReference =
-        inst.blas && *inst.blas < builds.size() ? builds[*inst.blas].address : 0;
+        inst.tlas == level && inst.blas && *inst.blas < builds.size() ? builds[*inst.blas].address
+                                                                      : 0;
     instances.push_back(vi);
   }
   return instances;
@@ -250,8 +254,9 @@ VkDeviceAddress createScratch(const VulkanContext& ctx, const ScratchPlan& scrat
 
 }  // namespace
 
-VkAccelerationStructureKHR recordSceneBuild(const VulkanContext& ctx, const Scene& scene,
-                                            VkCommandBuffer cmd, Cleanup& cleanup) {
+std::vector<VkAccelerationStructureKHR> recordSceneBuild(const VulkanContext& ctx,
+                                                         const Scene& scene, VkCommandBuffer cmd,
+                                                         Cleanup& cleanup) {
   ScratchPlan scratch;
   scratch.align = ctx.as_props.minAccelerationStructureScratchOffsetAlignment;
   const std::vector<bool> used = reachedBlases(scene);
@@ -265,19 +270,32 @@ VkAccelerationStructureKHR recordSceneBuild(const VulkanContext& ctx, const Scen
         createUploadBuffer(ctx, packer.bytes().data(), packer.bytes().size(), kInputUsage, cleanup);
   BlasBuilds blases = createBlases(ctx, builds, used, inputs.address, scratch, cleanup);
 
-  const std::vector<VkAccelerationStructureInstanceKHR> instances = tlasInstances(scene, builds);
+  // One TLAS per level, each over all instances (the other levels' inactive).
+  const uint32_t levels = scene.tlasCount();
+  const uint32_t instance_count = static_cast<uint32_t>(scene.instances.size());
+  std::vector<VkAccelerationStructureInstanceKHR> instances;
+  for (uint32_t level = 0; level < levels; ++level) {
+    const auto own = tlasInstances(scene, builds, level);
+    instances.insert(instances.end(), own.begin(), own.end());
+  }
   Buffer instance_buffer = createUploadBuffer(
       ctx, instances.data(), instances.size() * sizeof(VkAccelerationStructureInstanceKHR),
       kInputUsage, cleanup);
-  const uint32_t instance_count = static_cast<uint32_t>(instances.size());
-  std::vector<VkAccelerationStructureGeometryKHR> tlas_geometry;
-  VkAccelerationStructureBuildGeometryInfoKHR tlas_info =
-      createTlas(ctx, instance_buffer.address, instance_count, tlas_geometry, scratch, cleanup);
+  std::vector<std::vector<VkAccelerationStructureGeometryKHR>> tlas_geometry(levels);
+  std::vector<VkAccelerationStructureBuildGeometryInfoKHR> tlas_infos;
+  for (uint32_t level = 0; level < levels; ++level)
+    tlas_infos.push_back(
+        createTlas(ctx,
+                   instance_buffer.address +
+                       level * instance_count * sizeof(VkAccelerationStructureInstanceKHR),
+                   instance_count, tlas_geometry[level], scratch, cleanup));
 
   const VkDeviceAddress scratch_base = createScratch(ctx, scratch, cleanup);
   for (size_t i = 0; i < blases.infos.size(); ++i)
     blases.infos[i].scratchData.deviceAddress = scratch_base + scratch.offsets[i];
-  tlas_info.scratchData.deviceAddress = scratch_base + scratch.offsets.back();
+  for (uint32_t level = 0; level < levels; ++level)
+    tlas_infos[level].scratchData.deviceAddress =
+        scratch_base + scratch.offsets[blases.infos.size() + level];
 
   if (!blases.infos.empty()) {
     ctx.fn.cmdBuildAccelerationStructures(cmd, static_cast<uint32_t>(blases.infos.size()),
@@ -286,10 +304,13 @@ VkAccelerationStructureKHR recordSceneBuild(const VulkanContext& ctx, const Scen
   }
   VkAccelerationStructureBuildRangeInfoKHR tlas_range{};
   tlas_range.primitiveCount = instance_count;
-  const VkAccelerationStructureBuildRangeInfoKHR* tlas_ranges = &tlas_range;
-  ctx.fn.cmdBuildAccelerationStructures(cmd, 1, &tlas_info, &tlas_ranges);
+  const std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> tlas_ranges(levels,
+                                                                                 &tlas_range);
+  ctx.fn.cmdBuildAccelerationStructures(cmd, levels, tlas_infos.data(), tlas_ranges.data());
   barrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
-  return tlas_info.dstAccelerationStructure;
+  std::vector<VkAccelerationStructureKHR> tlases;
+  for (const auto& info : tlas_infos) tlases.push_back(info.dstAccelerationStructure);
+  return tlases;
 }
 
 }  // namespace rayspec

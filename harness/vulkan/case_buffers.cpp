@@ -92,14 +92,15 @@ CaseBuffers createCaseBuffers(const VulkanContext& ctx, const Case& c, const Pla
   return out;
 }
 
-std::vector<DescriptorItem> descriptorItems(const CaseBuffers& b, VkAccelerationStructureKHR tlas) {
+std::vector<DescriptorItem> descriptorItems(const CaseBuffers& b,
+                                            const std::vector<VkAccelerationStructureKHR>& tlases) {
   std::vector<DescriptorItem> items;
   for (uint32_t binding : b.bindings) {
     DescriptorItem it;
     it.binding = binding;
     if (binding == kBindingTlas) {
       it.type = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
-      it.tlas = tlas;
+      it.tlases = tlases;
     } else if (binding >= kBindingFirstImage) {
       it.type = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
       it.view = b.images.at(binding - kBindingFirstImage).view;

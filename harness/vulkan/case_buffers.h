@@ -48,8 +48,9 @@ std::set<uint32_t> caseBindings(const Plan& plan, const std::set<uint32_t>& decl
 CaseBuffers createCaseBuffers(const VulkanContext& ctx, const Case& c, const Plan& plan,
                               const std::set<uint32_t>& bindings, Cleanup& cleanup);
 
-// The descriptor items of the bindings (the TLAS at kBindingTlas).
-std::vector<DescriptorItem> descriptorItems(const CaseBuffers& b, VkAccelerationStructureKHR tlas);
+// The descriptor items of the bindings (the TLASes, by level, at kBindingTlas).
+std::vector<DescriptorItem> descriptorItems(const CaseBuffers& b,
+                                            const std::vector<VkAccelerationStructureKHR>& tlases);
 
 // records, counters (by plan.counters name) and images into r, after the
 // trace finished.

@@ -12,6 +12,13 @@ constexpr VkShaderStageFlags kRayTracingStages =
     VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR | VK_SHADER_STAGE_ANY_HIT_BIT_KHR |
     VK_SHADER_STAGE_INTERSECTION_BIT_KHR | VK_SHADER_STAGE_CALLABLE_BIT_KHR;
 
+// An array of top levels for the TLAS binding, one descriptor elsewhere.
+uint32_t descriptorCount(const DescriptorItem& it) {
+  return it.type == VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR
+             ? static_cast<uint32_t>(it.tlases.size())
+             : 1;
+}
+
 }  // namespace
 
 VkDescriptorSetLayout createSetLayout(const VulkanContext& ctx,
@@ -21,7 +28,7 @@ VkDescriptorSetLayout createSetLayout(const VulkanContext& ctx,
     VkDescriptorSetLayoutBinding b{};
     b.binding = it.binding;
     b.descriptorType = it.type;
-    b.descriptorCount = 1;
+    b.descriptorCount = descriptorCount(it);
     b.stageFlags = kRayTracingStages;
     bindings.push_back(b);
   }
@@ -39,7 +46,7 @@ VkDescriptorSetLayout createSetLayout(const VulkanContext& ctx,
 VkDescriptorSet createDescriptorSet(const VulkanContext& ctx, VkDescriptorSetLayout layout,
                                     const std::vector<DescriptorItem>& items, Cleanup& cleanup) {
   std::map<VkDescriptorType, uint32_t> counts;
-  for (const DescriptorItem& it : items) counts[it.type]++;
+  for (const DescriptorItem& it : items) counts[it.type] += descriptorCount(it);
   std::vector<VkDescriptorPoolSize> sizes;
   for (const auto& [type, n] : counts) sizes.push_back({type, n});
   VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -68,12 +75,12 @@ VkDescriptorSet createDescriptorSet(const VulkanContext& ctx, VkDescriptorSetLay
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     w.dstSet = set;
     w.dstBinding = it.binding;
-    w.descriptorCount = 1;
+    w.descriptorCount = descriptorCount(it);
     w.descriptorType = it.type;
     if (it.type == VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR) {
       structures[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
-      structures[i].accelerationStructureCount = 1;
-      structures[i].pAccelerationStructures = &it.tlas;
+      structures[i].accelerationStructureCount = w.descriptorCount;
+      structures[i].pAccelerationStructures = it.tlases.data();
       w.pNext = &structures[i];
     } else if (it.type == VK_DESCRIPTOR_TYPE_STORAGE_IMAGE) {
       images[i] = {VK_NULL_HANDLE, it.view, VK_IMAGE_LAYOUT_GENERAL};

@@ -14,9 +14,10 @@ namespace rayspec {
 struct DescriptorItem {
   uint32_t binding = 0;
   VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  VkBuffer buffer = VK_NULL_HANDLE;                  // STORAGE_BUFFER (whole buffer)
-  VkAccelerationStructureKHR tlas = VK_NULL_HANDLE;  // ACCELERATION_STRUCTURE_KHR
-  VkImageView view = VK_NULL_HANDLE;                 // STORAGE_IMAGE (layout GENERAL)
+  VkBuffer buffer = VK_NULL_HANDLE;  // STORAGE_BUFFER (whole buffer)
+  // ACCELERATION_STRUCTURE_KHR: one, or an array (the top levels by index)
+  std::vector<VkAccelerationStructureKHR> tlases;
+  VkImageView view = VK_NULL_HANDLE;  // STORAGE_IMAGE (layout GENERAL)
 };
 
 // Every item visible to all ray tracing stages.

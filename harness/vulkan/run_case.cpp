@@ -101,12 +101,13 @@ void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results&
   // before the trace, across submissions on the one queue).
   StepTimer build_time(r.cost, CostStep::AccelerationBuild);
   VkCommandBuffer build = beginCommands(ctx, cleanup);
-  VkAccelerationStructureKHR tlas = recordSceneBuild(ctx, c.scene, build, cleanup);
+  const std::vector<VkAccelerationStructureKHR> tlases =
+      recordSceneBuild(ctx, c.scene, build, cleanup);
   submitAndWait(ctx, build, kTraceTimeoutNs);
   build_time.stop();
 
   StepTimer layout_time(r.cost, CostStep::Buffers);
-  std::vector<DescriptorItem> items = descriptorItems(buffers, tlas);
+  std::vector<DescriptorItem> items = descriptorItems(buffers, tlases);
   VkDescriptorSetLayout set_layout = createSetLayout(ctx, items, cleanup);
   VkPipelineLayout pipeline_layout = createPipelineLayout(ctx, set_layout, cleanup);
   layout_time.stop();
