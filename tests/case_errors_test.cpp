@@ -165,6 +165,35 @@ TEST(ParseCaseErrors, TraceStartPayload) {
   expectError(parse(b), 10, "closest_hit[1].trace.payload.value", "expected Uint, got Float");
 }
 
+// pipeline.libraries: each group in range and in at most one library, no
+// empty library.
+TEST(ParseCaseErrors, PipelineLibraries) {
+  const std::string base = R"(rules: [R-LIBRARY]
+rays:
+  list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]
+pipeline:
+  miss: [[], []]
+  hit_groups: [{closest_hit: []}]
+  libraries: @LIBS@
+)";
+  auto with = [&](const std::string& libs) {
+    std::string s = base;
+    s.replace(s.find("@LIBS@"), 6, libs);
+    return parse(s);
+  };
+  ParseResult ok = with("[{miss: [1], libraries: [{hit_groups: [0]}]}]");
+  ASSERT_TRUE(ok.value) << allErrors(ok);
+  ASSERT_EQ(ok.value->pipeline.libraries.size(), 1u);
+  EXPECT_EQ(ok.value->pipeline.libraries[0].miss, std::vector<uint32_t>{1});
+  EXPECT_EQ(ok.value->pipeline.libraries[0].libraries[0].hit_groups, std::vector<uint32_t>{0});
+  expectError(with("[{miss: [2]}]"), 7, "pipeline.libraries[0].miss[0]",
+              "pipeline.miss has 2 entries, no 2");
+  expectError(with("[{miss: [1]}, {miss: [1]}]"), 7, "pipeline.libraries[1].miss[0]",
+              "already in a library");
+  expectError(with("[{}]"), 7, "pipeline.libraries[0]", "at least one group or library");
+  expectError(with("[{raygen: true}]"), 7, "pipeline.libraries[0].raygen", "");
+}
+
 TEST(ParseCaseErrors, SbtIndexOutOfRange) {
   const std::string text = R"(rules: [R-SBT-MISS]
 rays:

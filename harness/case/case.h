@@ -146,6 +146,19 @@ struct HitGroup {
   SourceLoc loc;
 };
 
+// A pipeline library (VK_KHR_pipeline_library): the groups it holds, by
+// index into Pipeline::miss / hit_groups / callables, and the libraries it
+// links in turn. A group no library holds is the linked pipeline's own
+// (raygen always is).
+struct PipelineLibrary {
+  std::vector<uint32_t> miss, hit_groups, callables;
+  std::vector<PipelineLibrary> libraries;
+  SourceLoc loc;
+};
+
+// At most this many libraries in one case, counting nested ones.
+constexpr size_t kMaxPipelineLibraries = 16;
+
 struct Pipeline {
   uint32_t max_recursion = 1;
   uint32_t flags = 0;  // pipeline flags: skip_triangles / skip_aabbs (VkPipelineCreateFlags values
@@ -160,6 +173,9 @@ struct Pipeline {
   uint32_t sbt_record_data =
       kMaxShaderRecordDataBytes;  // bytes of data per record: 0..32, multiple of 4
   SbtPadding sbt_padding;
+  // Empty: one pipeline. Otherwise the pipeline is linked from these
+  // libraries and its own groups (R-LIBRARY); shaders observe the same.
+  std::vector<PipelineLibrary> libraries;
 };
 
 struct ImageOutput {

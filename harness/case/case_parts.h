@@ -14,6 +14,8 @@ void parseScene(YamlReader& r, const YAML::Node& n, Scene& scene);
 // The scene first: the `aim` form aims at one of its meshes.
 void parseRays(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& rays);
 void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& pipeline);
+// pipeline.libraries (parse_libraries.cpp), after the groups are parsed.
+void parseLibraries(YamlReader& r, const YAML::Node& n, Pipeline& pipeline);
 void parseOutputs(YamlReader& r, const YAML::Node& n, Outputs& outputs);
 
 // A generated mesh (`grid`, `fan` or `triangulation` in a `triangles` map):

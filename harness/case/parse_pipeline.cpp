@@ -134,7 +134,7 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
   if (!n.IsDefined()) return;
   if (!r.expectMap(n, "pipeline",
                    {"max_recursion", "flags", "raygen", "raygen_data", "miss", "hit_groups",
-                    "callables", "sbt"}))
+                    "callables", "sbt", "libraries"}))
     return;
   if (auto v = YamlReader::get(n, "max_recursion"); v.IsDefined())
     if (auto x = r.uint(v, "pipeline.max_recursion", 31)) {
@@ -166,6 +166,8 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
   if (auto v = YamlReader::get(n, "hit_groups"); v.IsDefined()) parseHitGroups(r, v, p.hit_groups);
   if (auto v = YamlReader::get(n, "callables"); v.IsDefined())
     parsePrograms(r, v, "pipeline.callables", p.callables);
+
+  if (auto v = YamlReader::get(n, "libraries"); v.IsDefined()) parseLibraries(r, v, p);
 
   p.sbt_miss = defaultRegion(p.miss.size());
   p.sbt_hit = defaultRegion(p.hit_groups.size());

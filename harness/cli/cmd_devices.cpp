@@ -34,6 +34,7 @@ void printLimits(const DeviceInfo& d) {
   std::printf("        maxRayDispatchInvocationCount  %u\n", d.max_ray_dispatch_invocation_count);
   std::printf("        accelerationStructureHostCommands %s\n",
               d.acceleration_structure_host_commands ? "yes" : "no");
+  std::printf("        VK_KHR_pipeline_library        %s\n", d.pipeline_library ? "yes" : "no");
 }
 
 // One manifest's devices; returns how many are usable.

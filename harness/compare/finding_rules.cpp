@@ -46,9 +46,14 @@ Rules join(std::initializer_list<const Rules*> parts, Rules own = {}) {
   return own;
 }
 
-}  // namespace
+// Rules of how the pipeline is built: whatever shaders observe, any field or
+// counter may show them broken.
+const Rules& pipelineRules() {
+  static const Rules r = {"R-LIBRARY"};
+  return r;
+}
 
-std::vector<std::string> rulesEvidencedByField(const std::string& field) {
+std::vector<std::string> fieldRules(const std::string& field) {
   static const std::set<std::string> decision = {
       "hit",   "instance_id",  "instance_custom_index", "geometry_index", "primitive_id",
       "hit_t", "barycentrics", "hit_position",          "miss_runs",      "closest_hit_runs"};
@@ -70,7 +75,7 @@ std::vector<std::string> rulesEvidencedByField(const std::string& field) {
   return {"R-BUILTIN"};
 }
 
-std::vector<std::string> rulesEvidencedByCounter(const Case& c, const std::string& counter) {
+std::vector<std::string> counterRules(const Case& c, const std::string& counter) {
   std::set<Stage> stages;
   auto visit = [&](const Program& p, Stage stage) {
     walkStatements(p, [&](const Stmt& s) {
@@ -106,6 +111,16 @@ std::vector<std::string> rulesEvidencedByCounter(const Case& c, const std::strin
     }
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<std::string> rulesEvidencedByField(const std::string& field) {
+  return join({&pipelineRules()}, fieldRules(field));
+}
+
+std::vector<std::string> rulesEvidencedByCounter(const Case& c, const std::string& counter) {
+  return join({&pipelineRules()}, counterRules(c, counter));
 }
 
 std::string findingRule(const std::vector<std::string>& evidenced,

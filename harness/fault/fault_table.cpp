@@ -129,6 +129,10 @@ std::vector<FaultImpl> programAndOrderMutations() {
       {"payload-start-lost", K::CaseMutation,
        "every trace starts with a zero payload, whatever the caller wrote into it", nullptr,
        payloadStartLost},
+      {"library-groups-lost", K::CaseMutation,
+       "the groups a pipeline library holds do nothing once linked (their shaders run empty, "
+       "any-hit and intersection absent)",
+       nullptr, libraryGroupsLost},
       {"tlas-ignored", K::CaseMutation,
        "every trace traverses the first top level, whichever one it names", nullptr, tlasIgnored},
       {"hit-attributes-lost", K::CaseMutation,

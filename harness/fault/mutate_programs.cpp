@@ -170,6 +170,29 @@ std::string tlasIgnored(Case& c, ModelOptions&) {
   return describeCount(n, "traces traverse the first top level instead of the one they name");
 }
 
+// R-LIBRARY: a linked pipeline that loses what its libraries hold.
+size_t loseLibraryGroups(Pipeline& p, const std::vector<PipelineLibrary>& libs) {
+  size_t n = 0;
+  for (const PipelineLibrary& lib : libs) {
+    for (uint32_t i : lib.miss) p.miss[i].clear();
+    for (uint32_t i : lib.callables) p.callables[i].clear();
+    for (uint32_t i : lib.hit_groups) {
+      HitGroup& g = p.hit_groups[i];
+      if (g.closest_hit) g.closest_hit->clear();
+      g.any_hit.reset();
+      if (g.intersection) g.intersection->clear();
+    }
+    n += lib.miss.size() + lib.callables.size() + lib.hit_groups.size() +
+         loseLibraryGroups(p, lib.libraries);
+  }
+  return n;
+}
+
+std::string libraryGroupsLost(Case& c, ModelOptions&) {
+  return describeCount(loseLibraryGroups(c.pipeline, c.pipeline.libraries),
+                       "groups of pipeline libraries do nothing");
+}
+
 std::string callableDataNotReturned(Case& c, ModelOptions&) {
   const StageMask callable = stageBit(Stage::Callable);
   return describeCount(removeEverywhere(c, Stmt::Kind::SetCall, callable) +

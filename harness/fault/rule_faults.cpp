@@ -54,6 +54,7 @@ const std::vector<RuleFaults>& ruleFaults() {
        {"inactive-renumbered", "inactive-revived", "inactive-hides-last-active", "tlas-ignored"},
        {}},
       {"R-DEGEN", {"degenerate-hit"}, {}},
+      {"R-LIBRARY", {"library-groups-lost"}, {}},
       {"R-UB", {}, {}, fail, "never checked for a result (robustness probe only)"},
   };
   return table;

@@ -55,9 +55,10 @@ void createDevice(VulkanContext& ctx) {
   rt_on.pNext = &as_on;
   ctx.primitive_culling = rt.rayTraversalPrimitiveCulling == VK_TRUE;
 
-  const char* extensions[] = {VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
-                              VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
-                              VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
+  std::vector<const char*> extensions = {VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
+                                         VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
+                                         VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
+  if (ctx.info.pipeline_library) extensions.push_back(VK_KHR_PIPELINE_LIBRARY_EXTENSION_NAME);
   float priority = 1.0f;
   VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
   queue.queueFamilyIndex = ctx.queue_family;
@@ -67,8 +68,8 @@ void createDevice(VulkanContext& ctx) {
   info.pNext = &on;
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queue;
-  info.enabledExtensionCount = 3;
-  info.ppEnabledExtensionNames = extensions;
+  info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
   vkCheck(vkCreateDevice(ctx.physical, &info, nullptr, &ctx.device), "vkCreateDevice");
   vkGetDeviceQueue(ctx.device, ctx.queue_family, 0, &ctx.queue);
   ctx.fn = loadDeviceFunctions(ctx.device);

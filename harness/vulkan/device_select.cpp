@@ -50,6 +50,7 @@ void readExtensions(VkPhysicalDevice physical, DeviceInfo& d) {
   d.acceleration_structure_extension =
       hasDeviceExtension(exts, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME) &&
       hasDeviceExtension(exts, VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME);
+  d.pipeline_library = hasDeviceExtension(exts, VK_KHR_PIPELINE_LIBRARY_EXTENSION_NAME);
 }
 
 // Identity (UUIDs, driver) and the ray tracing pipeline's properties.

@@ -1,5 +1,6 @@
 #include "vulkan/pipeline.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "spirv/compile_glsl.h"
@@ -77,6 +78,30 @@ VkRayTracingShaderGroupCreateInfoKHR group(VkRayTracingShaderGroupTypeKHR type) 
   return g;
 }
 
+VkRayTracingShaderGroupCreateInfoKHR caseGroup(const CompiledPipeline& compiled, uint32_t id,
+                                               StageList& stages) {
+  const uint32_t miss = static_cast<uint32_t>(compiled.miss.size());
+  const uint32_t hits = static_cast<uint32_t>(compiled.hit_groups.size());
+  auto general = [&](const CompiledShader& s) {
+    VkRayTracingShaderGroupCreateInfoKHR g = group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR);
+    g.generalShader = stages.add(s);
+    return g;
+  };
+  if (id == 0) return general(compiled.raygen);
+  if (id <= miss) return general(compiled.miss[id - 1]);
+  if (id <= miss + hits) {
+    const CompiledGroup& cg = compiled.hit_groups[id - 1 - miss];
+    VkRayTracingShaderGroupCreateInfoKHR g =
+        group(cg.intersection ? VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR
+                              : VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR);
+    g.closestHitShader = stages.add(cg.closest_hit);
+    g.anyHitShader = stages.add(cg.any_hit);
+    g.intersectionShader = stages.add(cg.intersection);
+    return g;
+  }
+  return general(compiled.callables.at(id - 1 - miss - hits));
+}
+
 }  // namespace
 
 CompiledPipeline compilePipeline(const GeneratedPipeline& generated, StepCosts* costs) {
@@ -107,38 +132,38 @@ VkPipelineLayout createPipelineLayout(const VulkanContext& ctx, VkDescriptorSetL
   return layout;
 }
 
-VkPipeline createRayTracingPipeline(const VulkanContext& ctx, const CompiledPipeline& compiled,
-                                    VkPipelineLayout layout, uint32_t max_recursion,
-                                    VkPipelineCreateFlags flags, Cleanup& cleanup) {
+uint32_t caseGroupCount(const CompiledPipeline& compiled) {
+  return static_cast<uint32_t>(1 + compiled.miss.size() + compiled.hit_groups.size() +
+                               compiled.callables.size());
+}
+
+VkPipeline createPipelineObject(const VulkanContext& ctx, const CompiledPipeline& compiled,
+                                const PipelinePart& part, Cleanup& cleanup) {
   Cleanup modules;
   StageList stages(ctx, modules);
   std::vector<VkRayTracingShaderGroupCreateInfoKHR> groups;
-  auto general = [&](const CompiledShader& s) {
-    VkRayTracingShaderGroupCreateInfoKHR g = group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR);
-    g.generalShader = stages.add(s);
-    groups.push_back(g);
-  };
-  general(compiled.raygen);
-  for (const CompiledShader& s : compiled.miss) general(s);
-  for (const CompiledGroup& cg : compiled.hit_groups) {
-    VkRayTracingShaderGroupCreateInfoKHR g =
-        group(cg.intersection ? VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR
-                              : VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR);
-    g.closestHitShader = stages.add(cg.closest_hit);
-    g.anyHitShader = stages.add(cg.any_hit);
-    g.intersectionShader = stages.add(cg.intersection);
-    groups.push_back(g);
-  }
-  for (const CompiledShader& s : compiled.callables) general(s);
+  for (uint32_t id : part.groups) groups.push_back(caseGroup(compiled, id, stages));
 
   VkRayTracingPipelineCreateInfoKHR info{VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR};
-  info.flags = flags;
+  info.flags = part.flags;
   info.stageCount = static_cast<uint32_t>(stages.stages().size());
   info.pStages = stages.stages().data();
   info.groupCount = static_cast<uint32_t>(groups.size());
   info.pGroups = groups.data();
-  info.maxPipelineRayRecursionDepth = max_recursion;
-  info.layout = layout;
+  info.maxPipelineRayRecursionDepth = part.max_recursion;
+  info.layout = part.layout;
+  VkPipelineLibraryCreateInfoKHR libraries{VK_STRUCTURE_TYPE_PIPELINE_LIBRARY_CREATE_INFO_KHR};
+  VkRayTracingPipelineInterfaceCreateInfoKHR interface {
+    VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_INTERFACE_CREATE_INFO_KHR
+  };
+  if (part.linked) {
+    libraries.libraryCount = static_cast<uint32_t>(part.libraries.size());
+    libraries.pLibraries = part.libraries.data();
+    info.pLibraryInfo = &libraries;
+    interface.maxPipelineRayPayloadSize = kMaxPayloadBytes;
+    interface.maxPipelineRayHitAttributeSize = ctx.rt_props.maxRayHitAttributeSize;
+    info.pLibraryInterface = &interface;
+  }
   VkPipeline pipeline = VK_NULL_HANDLE;
   vkCall("vkCreateRayTracingPipelinesKHR", [&] {
     return ctx.fn.createRayTracingPipelines(ctx.device, VK_NULL_HANDLE, ctx.pipeline_cache, 1,
@@ -149,13 +174,16 @@ VkPipeline createRayTracingPipeline(const VulkanContext& ctx, const CompiledPipe
   return pipeline;
 }
 
-std::vector<uint8_t> groupHandles(const VulkanContext& ctx, VkPipeline pipeline,
-                                  uint32_t group_count) {
-  std::vector<uint8_t> handles(static_cast<size_t>(group_count) *
-                               ctx.rt_props.shaderGroupHandleSize);
-  vkCheck(ctx.fn.getRayTracingShaderGroupHandles(ctx.device, pipeline, 0, group_count,
-                                                 handles.size(), handles.data()),
+std::vector<uint8_t> groupHandles(const VulkanContext& ctx, const RayTracingPipeline& pipeline) {
+  const size_t size = ctx.rt_props.shaderGroupHandleSize;
+  const uint32_t count = static_cast<uint32_t>(pipeline.group_index.size());
+  std::vector<uint8_t> linked(count * size);
+  vkCheck(ctx.fn.getRayTracingShaderGroupHandles(ctx.device, pipeline.pipeline, 0, count,
+                                                 linked.size(), linked.data()),
           "vkGetRayTracingShaderGroupHandlesKHR");
+  std::vector<uint8_t> handles(linked.size());
+  for (uint32_t g = 0; g < count; ++g)
+    std::copy_n(&linked[pipeline.group_index[g] * size], size, &handles[g * size]);
   return handles;
 }
 

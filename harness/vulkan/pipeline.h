@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "case/case.h"
 #include "glsl/generate_glsl.h"
 #include "results/step_cost.h"
 #include "vulkan/cleanup.h"
@@ -50,13 +51,46 @@ std::set<uint32_t> declaredBindings(const CompiledPipeline& compiled);
 VkPipelineLayout createPipelineLayout(const VulkanContext& ctx, VkDescriptorSetLayout set_layout,
                                       Cleanup& cleanup);
 
-// Throws VulkanError.
-VkPipeline createRayTracingPipeline(const VulkanContext& ctx, const CompiledPipeline& compiled,
-                                    VkPipelineLayout layout, uint32_t max_recursion,
-                                    VkPipelineCreateFlags flags, Cleanup& cleanup);
+// The groups of a case, in sbt_layout.h's order (raygen, miss..., hit
+// groups..., callables...): 1 + miss + hit groups + callables.
+uint32_t caseGroupCount(const CompiledPipeline& compiled);
 
-// The group handles, sbtGroupCount * shaderGroupHandleSize bytes.
-std::vector<uint8_t> groupHandles(const VulkanContext& ctx, VkPipeline pipeline,
-                                  uint32_t group_count);
+// The interface a pipeline linked from libraries declares: no payload or
+// callable data of shaders/payload.glsl is larger (RsPayload 24 bytes,
+// RsCallData 48).
+constexpr uint32_t kMaxPayloadBytes = 64;
+
+// One vkCreateRayTracingPipelinesKHR call: the case groups `groups` (ids in
+// caseGroupCount's order) in that order, linking `libraries` when `linked`
+// (then with the library interface). Throws VulkanError.
+struct PipelinePart {
+  std::vector<uint32_t> groups;
+  std::vector<VkPipeline> libraries;
+  bool linked = false;
+  VkPipelineCreateFlags flags = 0;
+  uint32_t max_recursion = 1;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+};
+VkPipeline createPipelineObject(const VulkanContext& ctx, const CompiledPipeline& compiled,
+                                const PipelinePart& part, Cleanup& cleanup);
+
+// The case's pipeline (pipeline_libraries.cpp): one pipeline, or linked from
+// the case's pipeline libraries (R-LIBRARY), each a library pipeline of its
+// own groups and libraries. group_index[g] is where case group g sits in the
+// linked pipeline: its own groups first, then each library's in the order
+// linked, recursively (the specification's order of a linked pipeline's
+// groups). Throws VulkanError.
+struct RayTracingPipeline {
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  std::vector<uint32_t> group_index;
+};
+RayTracingPipeline createRayTracingPipeline(const VulkanContext& ctx,
+                                            const CompiledPipeline& compiled, const Pipeline& p,
+                                            VkPipelineLayout layout, Cleanup& cleanup);
+
+// The group handles in the case's group order, sbtGroupCount *
+// shaderGroupHandleSize bytes (read from the linked pipeline through
+// group_index).
+std::vector<uint8_t> groupHandles(const VulkanContext& ctx, const RayTracingPipeline& pipeline);
 
 }  // namespace rayspec

@@ -49,6 +49,8 @@ void checkCaseSupport(const VulkanContext& ctx, const Case& c) {
     throw VulkanError("case has " + std::to_string(c.rays.rays.size()) + " rays for a " +
                       std::to_string(c.rays.width) + "x" + std::to_string(c.rays.height) +
                       " launch: VK_ERROR_UNKNOWN");
+  if (!c.pipeline.libraries.empty() && !d.pipeline_library)
+    throw NotSupportedError("pipeline.libraries: the device lacks VK_KHR_pipeline_library");
   if (c.pipeline.max_recursion > d.max_ray_recursion_depth)
     throw NotSupportedError("max_recursion " + std::to_string(c.pipeline.max_recursion) +
                             " > device maxRayRecursionDepth " +
@@ -112,8 +114,8 @@ void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results&
   VkPipelineLayout pipeline_layout = createPipelineLayout(ctx, set_layout, cleanup);
   layout_time.stop();
   StepTimer pipeline_time(r.cost, CostStep::PipelineCreation);
-  VkPipeline pipeline = createRayTracingPipeline(
-      ctx, compiled, pipeline_layout, c.pipeline.max_recursion, c.pipeline.flags, cleanup);
+  const RayTracingPipeline pipeline =
+      createRayTracingPipeline(ctx, compiled, c.pipeline, pipeline_layout, cleanup);
   pipeline_time.stop();
   StepTimer sbt_time(r.cost, CostStep::Sbt);
   SbtBuffer sbt = createSbtBuffer(ctx, c.pipeline, pipeline, cleanup);
@@ -125,7 +127,7 @@ void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results&
   StepTimer trace_time(r.cost, CostStep::Trace);
   VkCommandBuffer cmd = beginCommands(ctx, cleanup);
   recordImageClears(cmd, buffers.images);
-  recordTrace(ctx, cmd, pipeline, pipeline_layout, set, sbt.layout, sbt.base, c.rays.width,
+  recordTrace(ctx, cmd, pipeline.pipeline, pipeline_layout, set, sbt.layout, sbt.base, c.rays.width,
               c.rays.height);
   recordReadback(cmd, buffers.images, buffers.image_readback, buffers.image_extent.width,
                  buffers.image_extent.height);

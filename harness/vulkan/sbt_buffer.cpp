@@ -17,14 +17,14 @@ SbtLimits deviceSbtLimits(const VulkanContext& ctx) {
   return l;
 }
 
-SbtBuffer createSbtBuffer(const VulkanContext& ctx, const Pipeline& p, VkPipeline pipeline,
-                          Cleanup& cleanup) {
+SbtBuffer createSbtBuffer(const VulkanContext& ctx, const Pipeline& p,
+                          const RayTracingPipeline& pipeline, Cleanup& cleanup) {
   SbtLimits limits = deviceSbtLimits(ctx);
   SbtBuffer out;
   out.layout = computeSbtLayout(limits, p);
   if (const Result<void> fits = checkSbtLayout(out.layout, limits); !fits)
     throw NotSupportedError(fits.error().format());
-  const std::vector<uint8_t> handles = groupHandles(ctx, pipeline, sbtGroupCount(p));
+  const std::vector<uint8_t> handles = groupHandles(ctx, pipeline);
   const Result<std::vector<uint8_t>> table = writeSbt(out.layout, limits, p, handles);
   if (!table) throw VulkanError(table.error().format() + ": VK_ERROR_UNKNOWN");
   const std::vector<uint8_t>& bytes = *table;

@@ -7,6 +7,7 @@
 #include "case/case.h"
 #include "vulkan/cleanup.h"
 #include "vulkan/context.h"
+#include "vulkan/pipeline.h"
 #include "vulkan/sbt_layout.h"
 
 namespace rayspec {
@@ -20,7 +21,7 @@ struct SbtBuffer {
 
 // Throws NotSupportedError for a layout the device's limits refuse (run_case
 // checks that before building anything), VulkanError for a bad record.
-SbtBuffer createSbtBuffer(const VulkanContext& ctx, const Pipeline& p, VkPipeline pipeline,
-                          Cleanup& cleanup);
+SbtBuffer createSbtBuffer(const VulkanContext& ctx, const Pipeline& p,
+                          const RayTracingPipeline& pipeline, Cleanup& cleanup);
 
 }  // namespace rayspec

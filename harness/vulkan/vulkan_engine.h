@@ -60,6 +60,8 @@ struct DeviceInfo {
   uint32_t max_image_dimension_2d = 0, max_storage_buffer_range = 0;
   uint64_t max_launch_size[3] = {0, 0, 0};
   bool acceleration_structure_host_commands = false;
+  // Optional features a case may need (NotSupported without them).
+  bool pipeline_library = false;  // VK_KHR_pipeline_library
 };
 
 // Every physical device the loader sees (with or without ray tracing).

@@ -1,0 +1,84 @@
+// The case's ray tracing pipeline, monolithic or linked from the case's
+// pipeline libraries (pipeline.libraries, VK_KHR_pipeline_library).
+#include <set>
+
+#include "vulkan/pipeline.h"
+#include "vulkan/sbt_layout.h"
+
+namespace rayspec {
+namespace {
+
+// Case group ids (caseGroupCount's order) of one library's own groups.
+std::vector<uint32_t> ownGroups(const Pipeline& p, const PipelineLibrary& lib) {
+  std::set<uint32_t> ids;
+  for (uint32_t i : lib.miss) ids.insert(sbtMissGroup(p, i));
+  for (uint32_t i : lib.hit_groups) ids.insert(sbtHitGroup(p, i));
+  for (uint32_t i : lib.callables) ids.insert(sbtCallableGroup(p, i));
+  return {ids.begin(), ids.end()};
+}
+
+void collectPlaced(const Pipeline& p, const std::vector<PipelineLibrary>& libs,
+                   std::set<uint32_t>& placed) {
+  for (const PipelineLibrary& lib : libs) {
+    for (uint32_t id : ownGroups(p, lib)) placed.insert(id);
+    collectPlaced(p, lib.libraries, placed);
+  }
+}
+
+struct Linker {
+  const VulkanContext& ctx;
+  const CompiledPipeline& compiled;
+  const Pipeline& p;
+  VkPipelineLayout layout;
+  Cleanup& cleanup;
+
+  PipelinePart part(std::vector<uint32_t> groups, VkPipelineCreateFlags extra) const {
+    PipelinePart out;
+    out.groups = std::move(groups);
+    out.flags = p.flags | extra;
+    out.max_recursion = p.max_recursion;
+    out.layout = layout;
+    return out;
+  }
+
+  // Creates the libraries of `libs` (children first) into `part`; appends
+  // their groups, in the linked pipeline's order, to `order`.
+  void link(const std::vector<PipelineLibrary>& libs, PipelinePart& into,
+            std::vector<uint32_t>& order) {
+    into.linked = !libs.empty();
+    for (const PipelineLibrary& lib : libs) {
+      PipelinePart own = part(ownGroups(p, lib), VK_PIPELINE_CREATE_LIBRARY_BIT_KHR);
+      std::vector<uint32_t> lib_order = own.groups;
+      link(lib.libraries, own, lib_order);
+      own.linked = true;  // a library always declares the interface
+      into.libraries.push_back(createPipelineObject(ctx, compiled, own, cleanup));
+      order.insert(order.end(), lib_order.begin(), lib_order.end());
+    }
+  }
+};
+
+}  // namespace
+
+RayTracingPipeline createRayTracingPipeline(const VulkanContext& ctx,
+                                            const CompiledPipeline& compiled, const Pipeline& p,
+                                            VkPipelineLayout layout, Cleanup& cleanup) {
+  const uint32_t count = caseGroupCount(compiled);
+  std::set<uint32_t> placed;
+  collectPlaced(p, p.libraries, placed);
+  Linker linker{ctx, compiled, p, layout, cleanup};
+  std::vector<uint32_t> own;
+  for (uint32_t id = 0; id < count; ++id)
+    if (!placed.count(id)) own.push_back(id);
+  PipelinePart top = linker.part(own, 0);
+  std::vector<uint32_t> order = own;
+  linker.link(p.libraries, top, order);
+
+  RayTracingPipeline out;
+  out.pipeline = createPipelineObject(ctx, compiled, top, cleanup);
+  out.group_index.assign(count, 0);
+  for (uint32_t linked = 0; linked < order.size(); ++linked)
+    out.group_index[order[linked]] = linked;
+  return out;
+}
+
+}  // namespace rayspec
