@@ -194,6 +194,43 @@ pipeline:
   expectError(with("[{raygen: true}]"), 7, "pipeline.libraries[0].raygen", "");
 }
 
+// pipeline.raygens / raygen_group, and flags written as numbers.
+TEST(ParseCaseErrors, RaygenGroupsAndRawFlags) {
+  const std::string base = R"(rules: [R-RAYGEN-REGION]
+scene:
+  blas:
+    t:
+      - triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}
+  instances: [{blas: t, flags: @FLAGS@}]
+rays:
+  list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]
+pipeline:
+  @RAYGEN@
+  hit_groups: [{closest_hit: []}]
+)";
+  auto with = [&](const std::string& flags, const std::string& raygen) {
+    std::string s = base;
+    s.replace(s.find("@FLAGS@"), 7, flags);
+    s.replace(s.find("@RAYGEN@"), 8, raygen);
+    return parse(s);
+  };
+  ParseResult ok =
+      with("[1, force_opaque]", "raygens: [[trace: {}], [count: x]]\n  raygen_group: 0");
+  EXPECT_FALSE(ok.value) << "the other raygen is type-checked too: x is no declared counter";
+  ok = with("[1, force_opaque]", "raygens: [[], [trace: {}], []]\n  raygen_group: 1");
+  ASSERT_TRUE(ok.value) << allErrors(ok);
+  EXPECT_EQ(ok.value->scene.instances[0].flags, kInstanceFacingCullDisable | kInstanceForceOpaque);
+  EXPECT_EQ(ok.value->pipeline.raygen_group, 1u);
+  EXPECT_EQ(ok.value->pipeline.raygenGroupCount(), 3u);
+  EXPECT_EQ(ok.value->pipeline.raygen.size(), 1u);
+  expectError(with("[0x40]", "raygens: [[trace: {}]]"), 6, "scene.instances[0].flags[0]",
+              "bits 0x40 of 64 are no known flag");
+  expectError(with("[]", "raygens: [[trace: {}]]\n  raygen_group: 1"), 11, "pipeline.raygen_group",
+              "");
+  expectError(with("[]", "raygen: [trace: {}]\n  raygen_group: 0"), 11, "pipeline.raygen_group",
+              "needs pipeline.raygens");
+}
+
 TEST(ParseCaseErrors, SbtIndexOutOfRange) {
   const std::string text = R"(rules: [R-SBT-MISS]
 rays:

@@ -34,7 +34,14 @@ enum InstanceFlag : uint32_t {
   kInstanceFlipFacing = 0x2,         // "triangle_flip_facing"
   kInstanceForceOpaque = 0x4,        // "force_opaque"
   kInstanceForceNoOpaque = 0x8,      // "force_no_opaque"
+  // VK_EXT_opacity_micromap: no rayspec geometry has a micromap, so they
+  // change nothing traversal sees; a device without the extension runs a
+  // case that sets them as NotSupported.
+  kInstanceForceOpacityMicromap2State = 0x10,  // "force_opacity_micromap_2_state"
+  kInstanceDisableOpacityMicromaps = 0x20,     // "disable_opacity_micromaps"
 };
+constexpr uint32_t kInstanceOpacityMicromapFlags =
+    kInstanceForceOpacityMicromap2State | kInstanceDisableOpacityMicromaps;
 
 // Vulkan ray flags (gl_RayFlags*EXT values), written in cases by the names
 // opaque, no_opaque, terminate_on_first_hit, skip_closest_hit, cull_back_facing,
@@ -163,7 +170,17 @@ struct Pipeline {
   uint32_t max_recursion = 1;
   uint32_t flags = 0;  // pipeline flags: skip_triangles / skip_aabbs (VkPipelineCreateFlags values
                        // 0x1000 / 0x2000)
-  Program raygen;      // default: [trace: {}]
+  Program raygen;      // default: [trace: {}]; the raygen the launch runs
+  // Several raygen groups (pipeline.raygens): `raygen` is group raygen_group,
+  // other_raygens the rest in group order. The raygen region's record
+  // selects raygen_group (R-RAYGEN-REGION); the others never run.
+  uint32_t raygen_group = 0;
+  std::vector<Program> other_raygens;
+  uint32_t raygenGroupCount() const { return 1 + static_cast<uint32_t>(other_raygens.size()); }
+  // Raygen group g's program.
+  const Program& raygenOfGroup(uint32_t g) const {
+    return g == raygen_group ? raygen : other_raygens[g < raygen_group ? g : g - 1];
+  }
   std::vector<uint32_t> raygen_data;  // raygen shader record data
   std::vector<Program> miss;
   std::vector<HitGroup> hit_groups;

@@ -35,6 +35,8 @@ void checkPrograms(YamlReader& r, Case& c, const YAML::Node& /*pipeline_node*/) 
                             std::to_string(p.max_recursion) + ")");
   };
   check(p.raygen, Stage::Raygen, "pipeline.raygen");
+  for (size_t i = 0; i < p.other_raygens.size(); ++i)
+    check(p.other_raygens[i], Stage::Raygen, "pipeline.raygens");
   for (size_t i = 0; i < p.miss.size(); ++i)
     check(p.miss[i], Stage::Miss, "pipeline.miss[" + std::to_string(i) + "]");
   for (size_t i = 0; i < p.hit_groups.size(); ++i) {

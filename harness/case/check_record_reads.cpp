@@ -79,6 +79,7 @@ void checkRecordReads(YamlReader& r, const Case& c) {
   if (p.sbt_record_data >= kMaxShaderRecordDataBytes) return;  // every read fits
   ReadChecker check(r, p.sbt_record_data);
   check.program(p.raygen, "pipeline.raygen");
+  for (const Program& g : p.other_raygens) check.program(g, "pipeline.raygens");
   for (size_t i = 0; i < p.miss.size(); ++i)
     check.program(p.miss[i], "pipeline.miss[" + std::to_string(i) + "]");
   for (size_t i = 0; i < p.hit_groups.size(); ++i) {

@@ -192,6 +192,7 @@ void checkTraceConstants(YamlReader& r, const Case& c) {
   TraceChecker check(r, c);
   const Pipeline& p = c.pipeline;
   check.program(p.raygen, Stage::Raygen);
+  for (const Program& g : p.other_raygens) check.program(g, Stage::Raygen);
   for (const Program& m : p.miss) check.program(m, Stage::Miss);
   for (const HitGroup& g : p.hit_groups) {
     if (g.closest_hit) check.program(*g.closest_hit, Stage::ClosestHit);

@@ -12,10 +12,13 @@ const FlagTable& geometryFlagNames() {
 }
 
 const FlagTable& instanceFlagNames() {
-  static const FlagTable t = {{"triangle_facing_cull_disable", kInstanceFacingCullDisable},
-                              {"triangle_flip_facing", kInstanceFlipFacing},
-                              {"force_opaque", kInstanceForceOpaque},
-                              {"force_no_opaque", kInstanceForceNoOpaque}};
+  static const FlagTable t = {
+      {"triangle_facing_cull_disable", kInstanceFacingCullDisable},
+      {"triangle_flip_facing", kInstanceFlipFacing},
+      {"force_opaque", kInstanceForceOpaque},
+      {"force_no_opaque", kInstanceForceNoOpaque},
+      {"force_opacity_micromap_2_state", kInstanceForceOpacityMicromap2State},
+      {"disable_opacity_micromaps", kInstanceDisableOpacityMicromaps}};
   return t;
 }
 

@@ -123,6 +123,37 @@ void parseHitGroups(YamlReader& r, const YAML::Node& n, std::vector<HitGroup>& o
   }
 }
 
+// pipeline.raygens: several raygen groups, pipeline.raygen_group the one the
+// raygen region selects (default 0); instead of pipeline.raygen.
+void parseRaygenGroups(YamlReader& r, const YAML::Node& n, Pipeline& p) {
+  const YAML::Node list = YamlReader::get(n, "raygens");
+  const YAML::Node group = YamlReader::get(n, "raygen_group");
+  if (!list.IsDefined()) {
+    if (group.IsDefined()) r.error(group, "pipeline.raygen_group", "needs pipeline.raygens");
+    return;
+  }
+  if (YamlReader::has(n, "raygen"))
+    r.error(list, "pipeline.raygens", "give pipeline.raygen or pipeline.raygens, not both");
+  std::vector<Program> programs;
+  if (r.expectSeq(list, "pipeline.raygens"))
+    for (size_t i = 0; i < list.size(); ++i) {
+      Program prog;
+      parseProgram(r, list[i], "pipeline.raygens[" + std::to_string(i) + "]", prog);
+      programs.push_back(std::move(prog));
+    }
+  if (programs.empty()) {
+    r.error(list, "pipeline.raygens", "needs at least one raygen program");
+    return;
+  }
+  uint32_t selected = 0;
+  if (group.IsDefined())
+    if (auto g = r.uint(group, "pipeline.raygen_group", programs.size() - 1)) selected = *g;
+  p.raygen_group = selected;
+  p.raygen = programs[selected];
+  for (size_t i = 0; i < programs.size(); ++i)
+    if (i != selected) p.other_raygens.push_back(std::move(programs[i]));
+}
+
 }  // namespace
 
 void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
@@ -133,8 +164,8 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
   p.raygen.push_back(trace);  // default raygen: [trace: {}]
   if (!n.IsDefined()) return;
   if (!r.expectMap(n, "pipeline",
-                   {"max_recursion", "flags", "raygen", "raygen_data", "miss", "hit_groups",
-                    "callables", "sbt", "libraries"}))
+                   {"max_recursion", "flags", "raygen", "raygens", "raygen_group", "raygen_data",
+                    "miss", "hit_groups", "callables", "sbt", "libraries"}))
     return;
   if (auto v = YamlReader::get(n, "max_recursion"); v.IsDefined())
     if (auto x = r.uint(v, "pipeline.max_recursion", 31)) {
@@ -147,6 +178,7 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
     p.raygen.clear();
     parseProgram(r, v, "pipeline.raygen", p.raygen);
   }
+  parseRaygenGroups(r, n, p);
   // The record shape first: the data of every record must fit in it.
   const YAML::Node sbt = YamlReader::get(n, "sbt");
   const bool sbt_ok =

@@ -225,6 +225,27 @@ std::optional<uint32_t> YamlReader::flags(
     const std::string f = field + "[" + std::to_string(i) + "]";
     const YAML::Node item = n[i];
     bool found = false;
+    // A number stands for its bits (as a script's raw flag value); each must
+    // be a known flag's.
+    if (item.IsScalar() && !item.Scalar().empty() &&
+        std::isdigit(static_cast<unsigned char>(item.Scalar()[0]))) {
+      uint32_t known = 0;
+      for (const auto& entry : table) known |= entry.second;
+      const std::optional<uint32_t> raw = uint(item, f);
+      if (!raw) {
+        ok = false;
+        continue;
+      }
+      if (*raw & ~known) {
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "bits 0x%X of %u are no known flag", *raw & ~known, *raw);
+        error(item, f, buf);
+        ok = false;
+        continue;
+      }
+      bits |= *raw;
+      continue;
+    }
     if (item.IsScalar())
       for (const auto& [name, bit] : table)
         if (item.Scalar() == name) {

@@ -35,6 +35,7 @@ void printLimits(const DeviceInfo& d) {
   std::printf("        accelerationStructureHostCommands %s\n",
               d.acceleration_structure_host_commands ? "yes" : "no");
   std::printf("        VK_KHR_pipeline_library        %s\n", d.pipeline_library ? "yes" : "no");
+  std::printf("        VK_EXT_opacity_micromap        %s\n", d.opacity_micromap ? "yes" : "no");
 }
 
 // One manifest's devices; returns how many are usable.

@@ -82,6 +82,7 @@ int runShow(const ShowOptions& opt) {
   if (!opt.no_glsl) {
     const GeneratedPipeline g = generateGlsl(c, plan);
     printShader(g.raygen);
+    for (const auto& other : g.other_raygens) printShader(other);
     for (const auto& m : g.miss) printShader(m);
     for (const auto& h : g.hit_groups) {
       if (h.intersection) printShader(*h.intersection);

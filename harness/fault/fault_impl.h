@@ -85,6 +85,7 @@ std::string unusedAnyHitIgnores(Case& c, ModelOptions& o);
 std::string payloadWritesLost(Case& c, ModelOptions& o);
 std::string payloadStartLost(Case& c, ModelOptions& o);
 std::string tlasIgnored(Case& c, ModelOptions& o);
+std::string raygenGroupIgnored(Case& c, ModelOptions& o);
 std::string libraryGroupsLost(Case& c, ModelOptions& o);
 std::string hitAttributesLost(Case& c, ModelOptions& o);
 std::string callableDataNotReturned(Case& c, ModelOptions& o);

@@ -133,6 +133,9 @@ std::vector<FaultImpl> programAndOrderMutations() {
        "the groups a pipeline library holds do nothing once linked (their shaders run empty, "
        "any-hit and intersection absent)",
        nullptr, libraryGroupsLost},
+      {"raygen-group-ignored", K::CaseMutation,
+       "the launch runs raygen group 0, whichever group the raygen region's record holds", nullptr,
+       raygenGroupIgnored},
       {"tlas-ignored", K::CaseMutation,
        "every trace traverses the first top level, whichever one it names", nullptr, tlasIgnored},
       {"hit-attributes-lost", K::CaseMutation,

@@ -193,6 +193,15 @@ std::string libraryGroupsLost(Case& c, ModelOptions&) {
                        "groups of pipeline libraries do nothing");
 }
 
+// R-RAYGEN-REGION: the launch runs group 0 (other_raygens[0] when another
+// group is selected).
+std::string raygenGroupIgnored(Case& c, ModelOptions&) {
+  Pipeline& p = c.pipeline;
+  if (p.raygen_group == 0) return "";
+  std::swap(p.raygen, p.other_raygens[0]);
+  return "the launch runs raygen group 0 instead of group " + std::to_string(p.raygen_group);
+}
+
 std::string callableDataNotReturned(Case& c, ModelOptions&) {
   const StageMask callable = stageBit(Stage::Callable);
   return describeCount(removeEverywhere(c, Stmt::Kind::SetCall, callable) +

@@ -55,6 +55,7 @@ const std::vector<RuleFaults>& ruleFaults() {
        {}},
       {"R-DEGEN", {"degenerate-hit"}, {}},
       {"R-LIBRARY", {"library-groups-lost"}, {}},
+      {"R-RAYGEN-REGION", {"raygen-group-ignored"}, {}},
       {"R-UB", {}, {}, fail, "never checked for a result (robustness probe only)"},
   };
   return table;

@@ -11,6 +11,10 @@ GeneratedPipeline generateGlsl(const Case& c, const Plan& plan) {
   const Pipeline& p = c.pipeline;
   GeneratedPipeline g;
   g.raygen = emitStage(c, plan, Stage::Raygen, "raygen", p.raygen);
+  g.raygen_group = p.raygen_group;
+  for (size_t i = 0; i < p.other_raygens.size(); ++i)
+    g.other_raygens.push_back(
+        emitStage(c, plan, Stage::Raygen, "raygen.other" + std::to_string(i), p.other_raygens[i]));
   for (size_t i = 0; i < p.miss.size(); ++i)
     g.miss.push_back(emitStage(c, plan, Stage::Miss, "miss" + std::to_string(i), p.miss[i]));
   for (size_t i = 0; i < p.hit_groups.size(); ++i) {

@@ -25,6 +25,8 @@ struct GeneratedGroup {
 
 struct GeneratedPipeline {
   GeneratedShader raygen;
+  std::vector<GeneratedShader> other_raygens;  // parallel to Pipeline::other_raygens
+  uint32_t raygen_group = 0;                   // Pipeline::raygen_group
   std::vector<GeneratedShader> miss;
   std::vector<GeneratedGroup> hit_groups;  // parallel to Pipeline::hit_groups
   std::vector<GeneratedShader> callables;

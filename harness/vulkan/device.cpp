@@ -59,6 +59,9 @@ void createDevice(VulkanContext& ctx) {
                                          VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
                                          VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
   if (ctx.info.pipeline_library) extensions.push_back(VK_KHR_PIPELINE_LIBRARY_EXTENSION_NAME);
+  // Its dependency synchronization2 is core from Vulkan 1.3.
+  if (ctx.info.opacity_micromap && ctx.info.api_version_number >= VK_API_VERSION_1_3)
+    extensions.push_back(VK_EXT_OPACITY_MICROMAP_EXTENSION_NAME);
   float priority = 1.0f;
   VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
   queue.queueFamilyIndex = ctx.queue_family;

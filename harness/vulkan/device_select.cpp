@@ -51,6 +51,7 @@ void readExtensions(VkPhysicalDevice physical, DeviceInfo& d) {
       hasDeviceExtension(exts, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME) &&
       hasDeviceExtension(exts, VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME);
   d.pipeline_library = hasDeviceExtension(exts, VK_KHR_PIPELINE_LIBRARY_EXTENSION_NAME);
+  d.opacity_micromap = hasDeviceExtension(exts, VK_EXT_OPACITY_MICROMAP_EXTENSION_NAME);
 }
 
 // Identity (UUIDs, driver) and the ray tracing pipeline's properties.

@@ -80,6 +80,7 @@ VkRayTracingShaderGroupCreateInfoKHR group(VkRayTracingShaderGroupTypeKHR type) 
 
 VkRayTracingShaderGroupCreateInfoKHR caseGroup(const CompiledPipeline& compiled, uint32_t id,
                                                StageList& stages) {
+  const uint32_t raygens = 1 + static_cast<uint32_t>(compiled.other_raygens.size());
   const uint32_t miss = static_cast<uint32_t>(compiled.miss.size());
   const uint32_t hits = static_cast<uint32_t>(compiled.hit_groups.size());
   auto general = [&](const CompiledShader& s) {
@@ -87,7 +88,11 @@ VkRayTracingShaderGroupCreateInfoKHR caseGroup(const CompiledPipeline& compiled,
     g.generalShader = stages.add(s);
     return g;
   };
-  if (id == 0) return general(compiled.raygen);
+  const uint32_t selected = compiled.raygen_group;
+  if (id < raygens)
+    return general(id == selected ? compiled.raygen
+                                  : compiled.other_raygens[id < selected ? id : id - 1]);
+  id -= raygens - 1;  // now 1 + the index among miss, hit groups, callables
   if (id <= miss) return general(compiled.miss[id - 1]);
   if (id <= miss + hits) {
     const CompiledGroup& cg = compiled.hit_groups[id - 1 - miss];
@@ -107,6 +112,9 @@ VkRayTracingShaderGroupCreateInfoKHR caseGroup(const CompiledPipeline& compiled,
 CompiledPipeline compilePipeline(const GeneratedPipeline& generated, StepCosts* costs) {
   CompiledPipeline out;
   out.raygen = compileOne(generated.raygen, costs);
+  out.raygen_group = generated.raygen_group;
+  for (const GeneratedShader& s : generated.other_raygens)
+    out.other_raygens.push_back(compileOne(s, costs));
   for (const GeneratedShader& s : generated.miss) out.miss.push_back(compileOne(s, costs));
   for (const GeneratedGroup& g : generated.hit_groups) {
     CompiledGroup cg;
@@ -133,8 +141,8 @@ VkPipelineLayout createPipelineLayout(const VulkanContext& ctx, VkDescriptorSetL
 }
 
 uint32_t caseGroupCount(const CompiledPipeline& compiled) {
-  return static_cast<uint32_t>(1 + compiled.miss.size() + compiled.hit_groups.size() +
-                               compiled.callables.size());
+  return static_cast<uint32_t>(1 + compiled.other_raygens.size() + compiled.miss.size() +
+                               compiled.hit_groups.size() + compiled.callables.size());
 }
 
 VkPipeline createPipelineObject(const VulkanContext& ctx, const CompiledPipeline& compiled,

@@ -36,6 +36,8 @@ struct CompiledGroup {
 
 struct CompiledPipeline {
   CompiledShader raygen;
+  std::vector<CompiledShader> other_raygens;  // parallel to Pipeline::other_raygens
+  uint32_t raygen_group = 0;                  // Pipeline::raygen_group
   std::vector<CompiledShader> miss;
   std::vector<CompiledGroup> hit_groups;
   std::vector<CompiledShader> callables;

@@ -1,5 +1,7 @@
 #include "vulkan/run_case.h"
 
+#include <algorithm>
+
 #include "glsl/generate_glsl.h"
 #include "vulkan/acceleration_structure.h"
 #include "vulkan/case_buffers.h"
@@ -49,6 +51,12 @@ void checkCaseSupport(const VulkanContext& ctx, const Case& c) {
     throw VulkanError("case has " + std::to_string(c.rays.rays.size()) + " rays for a " +
                       std::to_string(c.rays.width) + "x" + std::to_string(c.rays.height) +
                       " launch: VK_ERROR_UNKNOWN");
+  const bool micromap_flags =
+      std::any_of(c.scene.instances.begin(), c.scene.instances.end(),
+                  [](const Instance& i) { return i.flags & kInstanceOpacityMicromapFlags; });
+  if (micromap_flags && !(d.opacity_micromap && d.api_version_number >= VK_API_VERSION_1_3))
+    throw NotSupportedError(
+        "scene.instances[].flags: opacity micromap flags need VK_EXT_opacity_micromap");
   if (!c.pipeline.libraries.empty() && !d.pipeline_library)
     throw NotSupportedError("pipeline.libraries: the device lacks VK_KHR_pipeline_library");
   if (c.pipeline.max_recursion > d.max_ray_recursion_depth)

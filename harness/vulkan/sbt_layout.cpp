@@ -72,16 +72,17 @@ std::string regionProblem(const SbtRegion& r, const SbtLimits& limits, uint64_t 
 }  // namespace
 
 uint32_t sbtGroupCount(const Pipeline& p) {
-  return static_cast<uint32_t>(1 + p.miss.size() + p.hit_groups.size() + p.callables.size());
+  return static_cast<uint32_t>(p.raygenGroupCount() + p.miss.size() + p.hit_groups.size() +
+                               p.callables.size());
 }
-uint32_t sbtMissGroup(const Pipeline&, uint32_t i) {
-  return 1 + i;
+uint32_t sbtMissGroup(const Pipeline& p, uint32_t i) {
+  return p.raygenGroupCount() + i;
 }
 uint32_t sbtHitGroup(const Pipeline& p, uint32_t i) {
-  return static_cast<uint32_t>(1 + p.miss.size() + i);
+  return static_cast<uint32_t>(p.raygenGroupCount() + p.miss.size() + i);
 }
 uint32_t sbtCallableGroup(const Pipeline& p, uint32_t i) {
-  return static_cast<uint32_t>(1 + p.miss.size() + p.hit_groups.size() + i);
+  return static_cast<uint32_t>(p.raygenGroupCount() + p.miss.size() + p.hit_groups.size() + i);
 }
 
 std::vector<SbtRecord> sbtMissRecords(const Pipeline& p) {
@@ -143,10 +144,11 @@ Result<std::vector<uint8_t>> writeSbt(const SbtLayout& layout, const SbtLimits& 
     return errorMessage("sbt: " + std::to_string(handles.size()) + " handle bytes, need " +
                         std::to_string(need));
   SbtRecord raygen;
-  raygen.group = 0;
+  raygen.group = p.raygen_group;
   raygen.data = p.raygen_data;
   const uint32_t k = p.sbt_record_data;
-  Result<void> r = writeRegion(limits, k, layout.raygen, {raygen}, 0, 1, handles, out, "raygen");
+  Result<void> r = writeRegion(limits, k, layout.raygen, {raygen}, 0, p.raygenGroupCount(), handles,
+                               out, "raygen");
   if (r)
     r = writeRegion(limits, k, layout.miss, sbtMissRecords(p), sbtMissGroup(p, 0),
                     static_cast<uint32_t>(p.miss.size()), handles, out, "miss");

@@ -3,10 +3,13 @@
 //
 // Group order in the pipeline, and so in the handle array of
 // vkGetRayTracingShaderGroupHandlesKHR:
-//   group 0                  raygen
-//   groups 1 .. M            miss shaders, in case order        (M = miss count)
-//   groups M+1 .. M+H        hit groups, in case order          (H = hit group count)
-//   groups M+H+1 .. M+H+C    callables, in case order           (C = callable count)
+//   groups 0 .. R-1          raygens (R = 1 + other raygens); group
+//                            pipeline.raygen_group is the one the raygen
+//                            region's record selects
+//   groups R .. R+M-1        miss shaders, in case order        (M = miss count)
+//   then the H hit groups and the C callables, each in case order
+// (a pipeline linked from libraries orders them otherwise: pipeline.h's
+// RayTracingPipeline::group_index maps this order to its own).
 //
 // Every record is the group handle followed by K = pipeline.sbt_record_data
 // bytes of shader record data (0..32, default 32; zero unless the case gives

@@ -30,6 +30,7 @@ void scan(const std::vector<uint32_t>& words, std::set<uint32_t>* out) {
 std::set<uint32_t> declaredBindings(const CompiledPipeline& compiled) {
   std::set<uint32_t> out;
   scan(compiled.raygen.spirv, &out);
+  for (const CompiledShader& s : compiled.other_raygens) scan(s.spirv, &out);
   for (const CompiledShader& s : compiled.miss) scan(s.spirv, &out);
   for (const CompiledGroup& g : compiled.hit_groups)
     for (const auto* s : {&g.closest_hit, &g.any_hit, &g.intersection})

@@ -62,6 +62,7 @@ struct DeviceInfo {
   bool acceleration_structure_host_commands = false;
   // Optional features a case may need (NotSupported without them).
   bool pipeline_library = false;  // VK_KHR_pipeline_library
+  bool opacity_micromap = false;  // VK_EXT_opacity_micromap (on a Vulkan 1.3 device)
 };
 
 // Every physical device the loader sees (with or without ray tracing).
