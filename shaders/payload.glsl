@@ -2,8 +2,9 @@
 // Model counterpart: harness/model (the same fields, the same start values).
 
 // Payload of every trace (location 0 in raygen and as the incoming payload;
-// location 1 for a nested trace). A trace starts with color 0, value 0 and
-// depth = 1 from raygen, the caller's depth + 1 from a nested trace.
+// location 1 for a nested trace). A trace starts with the color and value its
+// statement gives (`trace: {payload: ...}`, 0 where not given) and depth = 1
+// from raygen, the caller's depth + 1 from a nested trace.
 struct RsPayload {
   vec4 color;
   uint value;

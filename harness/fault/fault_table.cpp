@@ -129,15 +129,6 @@ std::vector<FaultImpl> programAndOrderMutations() {
       {"payload-start-lost", K::CaseMutation,
        "every trace starts with a zero payload, whatever the caller wrote into it", nullptr,
        payloadStartLost},
-      {"library-groups-lost", K::CaseMutation,
-       "the groups a pipeline library holds do nothing once linked (their shaders run empty, "
-       "any-hit and intersection absent)",
-       nullptr, libraryGroupsLost},
-      {"raygen-group-ignored", K::CaseMutation,
-       "the launch runs raygen group 0, whichever group the raygen region's record holds", nullptr,
-       raygenGroupIgnored},
-      {"tlas-ignored", K::CaseMutation,
-       "every trace traverses the first top level, whichever one it names", nullptr, tlasIgnored},
       {"hit-attributes-lost", K::CaseMutation,
        "the attribute an intersection shader reports is lost (reads 0)", nullptr,
        hitAttributesLost},
@@ -186,6 +177,22 @@ std::vector<FaultImpl> programAndOrderMutations() {
 }
 
 // Faults of the device's child process.
+// Faults of how the pipeline and the top levels are built.
+std::vector<FaultImpl> pipelineMutations() {
+  using K = FaultKind;
+  return {
+      {"library-groups-lost", K::CaseMutation,
+       "the groups a pipeline library holds do nothing once linked (their shaders run empty, "
+       "any-hit and intersection absent)",
+       nullptr, libraryGroupsLost},
+      {"raygen-group-ignored", K::CaseMutation,
+       "the launch runs raygen group 0, whichever group the raygen region's record holds", nullptr,
+       raygenGroupIgnored},
+      {"tlas-ignored", K::CaseMutation,
+       "every trace traverses the first top level, whichever one it names", nullptr, tlasIgnored},
+  };
+}
+
 std::vector<FaultImpl> processFaults() {
   using K = FaultKind;
   return {
@@ -205,7 +212,8 @@ std::vector<FaultImpl> processFaults() {
 const std::vector<FaultImpl>& faultImpls() {
   static const std::vector<FaultImpl> table = [] {
     std::vector<FaultImpl> all;
-    for (auto part : {recordEdits, sceneAndFlagMutations, programAndOrderMutations, processFaults})
+    for (auto part : {recordEdits, sceneAndFlagMutations, programAndOrderMutations,
+                      pipelineMutations, processFaults})
       for (FaultImpl& f : part()) all.push_back(std::move(f));
     return all;
   }();
