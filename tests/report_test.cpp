@@ -304,6 +304,20 @@ TEST(Baseline, MalformedLineNamesFileAndLine) {
 namespace rayspec {
 namespace {
 
+TEST(RunSummary, CountsNotSupportedCasesByWhatTheDeviceLacks) {
+  RunSummary summary(3);
+  const std::string lib = "pipeline.libraries: the device lacks VK_KHR_pipeline_library";
+  summary.add({"fam/a", {}, Status::NotSupported, "vulkan: NotSupported: " + lib});
+  summary.add({"fam/b", {}, Status::NotSupported, "vulkan: NotSupported: " + lib});
+  summary.add({"fam/c", {}, Status::NotSupported, "vulkan: NotSupported: max_recursion 40 > 31"});
+  testing::internal::CaptureStdout();
+  summary.print();
+  const std::string out = testing::internal::GetCapturedStdout();
+  EXPECT_NE(out.find("NotSupported, by what the device lacks:"), std::string::npos) << out;
+  EXPECT_NE(out.find("      2  " + lib), std::string::npos) << out;
+  EXPECT_NE(out.find("      1  max_recursion 40 > 31"), std::string::npos) << out;
+}
+
 TEST(RunSummary, CaseErrorsAreListedApartFromTheDevicesFailures) {
   RunSummary summary(4);
   testing::internal::CaptureStdout();

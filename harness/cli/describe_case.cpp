@@ -27,6 +27,22 @@ void describeRecords(std::ostringstream& s, const char* region,
   s << '\n';
 }
 
+// pipeline.libraries as an indented tree.
+void describeLibraries(const std::vector<PipelineLibrary>& libs, const std::string& indent,
+                       std::ostringstream& s) {
+  auto list = [](const char* what, const std::vector<uint32_t>& v) {
+    std::string out;
+    for (uint32_t i : v)
+      out += std::string(out.empty() ? " " : ", ") + what + " " + std::to_string(i);
+    return out;
+  };
+  for (const PipelineLibrary& lib : libs) {
+    s << indent << "library:" << list("miss", lib.miss) << list("hit group", lib.hit_groups)
+      << list("callable", lib.callables) << '\n';
+    describeLibraries(lib.libraries, indent + "  ", s);
+  }
+}
+
 }  // namespace
 
 std::string describeCase(const Case& c) {
@@ -71,6 +87,10 @@ std::string describeCase(const Case& c) {
   }
   for (size_t i = 0; i < p.callables.size(); ++i)
     s << "  callable " << i << ": " << statementCount(p.callables[i]) << " statements\n";
+  if (p.raygenGroupCount() > 1)
+    s << "  raygen groups: " << p.raygenGroupCount() << ", the region selects " << p.raygen_group
+      << '\n';
+  describeLibraries(p.libraries, "  ", s);
   if (p.sbt_record_data != kMaxShaderRecordDataBytes || p.sbt_padding.miss || p.sbt_padding.hit ||
       p.sbt_padding.callable)
     s << "  sbt record: handle + " << p.sbt_record_data << " data bytes + padding (miss "

@@ -15,6 +15,24 @@ std::string gateTag(const CaseOutcome& o) {
                                            : std::string("  [") + gateWord(o.baseline) + "]";
 }
 
+// What a NotSupported case's device lacks: its headline after the last
+// "NotSupported: " (the backend's own words).
+std::string notSupportedReason(const CaseOutcome& o) {
+  const std::string tag = "NotSupported: ";
+  const size_t at = o.headline.rfind(tag);
+  return at == std::string::npos ? o.headline : o.headline.substr(at + tag.size());
+}
+
+// How many cases each missing feature or limit made NotSupported.
+void printNotSupportedReasons(const std::vector<CaseOutcome>& outcomes) {
+  std::map<std::string, int> reasons;
+  for (const CaseOutcome& o : outcomes)
+    if (o.status == Status::NotSupported) ++reasons[notSupportedReason(o)];
+  if (reasons.empty()) return;
+  std::printf("NotSupported, by what the device lacks:\n");
+  for (const auto& [reason, n] : reasons) std::printf("  %5d  %s\n", n, reason.c_str());
+}
+
 }  // namespace
 
 void RunSummary::starting(const std::string& name) {
@@ -59,6 +77,7 @@ void RunSummary::print() const {
   for (const CaseOutcome& o : outcomes_) ++counts[o.status];
   std::printf("\n==== rayspec summary: %zu cases ====\n", outcomes_.size());
   for (Status s : kAllStatuses) std::printf("  %-15s %d\n", statusName(s), counts[s]);
+  printNotSupportedReasons(outcomes_);
   bool header = false;
   for (const CaseOutcome& o : outcomes_) {
     if (o.status == Status::CaseError) continue;  // listed apart below
