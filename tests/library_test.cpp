@@ -124,6 +124,24 @@ TEST(ExpandSweep, ErrorsNameTheFileLineAndField) {
             "f.sweep.yaml:3:1: sweep: malformed YAML: end of sequence flow not found");
 }
 
+// A parameter no variant brings in would make variants that differ in name
+// only (or not at all): an error at the block, naming it.
+TEST(ExpandSweep, AParameterNeverUsedIsAnError) {
+  auto first = [](const std::string& text) {
+    const SweepExpansion ex = expandSweep(text, "f.sweep.yaml", "x/f");
+    return ex.errors.empty() ? std::string("no error") : ex.errors[0].format();
+  };
+  EXPECT_EQ(first("sweep:\n  name: a${b}\n  product: {b: [1, 2], c: [3]}\nrules: [R-MASK]\n"),
+            "f.sweep.yaml:3:12: sweep.product.c: parameter 'c' is never used: no ${c} in the "
+            "case or its name");
+  EXPECT_EQ(first("sweep:\n  name: a${b}\n  rows: [{b: 1, c: 2}]\nrules: [R-MASK]\n"),
+            "f.sweep.yaml:3:9: sweep.rows: parameter 'c' is never used: no ${c} in the case or "
+            "its name");
+  EXPECT_EQ(first("sweep:\n  name: a${b}\n  product: {b: ['${c}'], c: [3]}\nrules: [R-MASK]\n"),
+            "no error")
+      << "a parameter used only inside another's value is used";
+}
+
 TEST(CaseDiscovery, SweepVariantsAreCasesAndTheFilterMatchesEitherName) {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / "rayspec_library_test";

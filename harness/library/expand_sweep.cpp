@@ -124,7 +124,8 @@ class Expander {
 // An unknown name is an error (once per place); so is a value that keeps
 // bringing itself back.
 std::string substitute(const std::string& line, const Params& params, const std::string& file,
-                       int line_no, const std::string& field, std::vector<Error>* errors) {
+                       int line_no, const std::string& field, std::vector<Error>* errors,
+                       std::set<std::string>* used = nullptr) {
   std::string out = line;
   std::vector<size_t> opens;  // positions of the "${" not closed yet (one pass, left to right)
   std::set<std::string> unknown;
@@ -166,6 +167,7 @@ std::string substitute(const std::string& line, const Params& params, const std:
                                std::to_string(kMaxLineBytes >> 10) + " KiB)"});
       return {};
     }
+    if (used) used->insert(name);
     out.replace(open, i + 1 - open, *value);
     i = open;  // the value may hold ${...} of its own, or complete an enclosing one
   }
@@ -299,9 +301,12 @@ void expandVariants(Expander& ex, const YAML::Node& sweep, const std::vector<std
       const YAML::Mark nm = name_node.Mark();
       SweepVariant v;
       v.name = name + "/" +
-               substitute(name_node.Scalar(), params, file, nm.line + 1, "sweep.name", &found);
+               substitute(name_node.Scalar(), params, file, nm.line + 1, "sweep.name", &found,
+                          &result.used);
       for (size_t i = 0; i < lines.size(); ++i)
-        v.text += substitute(lines[i], params, file, static_cast<int>(i) + 1, "", &found) + "\n";
+        v.text +=
+            substitute(lines[i], params, file, static_cast<int>(i) + 1, "", &found, &result.used) +
+            "\n";
       for (Error& e : found) {
         if (!errors_said.insert(e.format()).second) continue;
         if (!result.variants.empty()) e.message += " (in variant " + v.name + ")";
@@ -327,6 +332,21 @@ void expandVariants(Expander& ex, const YAML::Node& sweep, const std::vector<std
   }
 }
 
+// A parameter no variant's text or name ever brings in is a mistake (a
+// value written but never used: the variants would not differ by it).
+void checkEveryParameterUsed(Expander& ex, const YAML::Node& sweep, const std::vector<Params>& rows,
+                             const Product& product, const std::set<std::string>& used) {
+  for (const auto& [key, values] : product)
+    if (!used.count(key))
+      ex.error(sweep["product"], "sweep.product." + key,
+               "parameter '" + key + "' is never used: no ${" + key + "} in the case or its name");
+  if (rows.empty()) return;
+  for (const auto& [key, value] : rows.front())
+    if (!used.count(key))
+      ex.error(sweep["rows"], "sweep.rows",
+               "parameter '" + key + "' is never used: no ${" + key + "} in the case or its name");
+}
+
 SweepExpansion expandChecked(const std::string& text, const std::string& file,
                              const std::string& name) {
   SweepExpansion result;
@@ -350,6 +370,7 @@ SweepExpansion expandChecked(const std::string& text, const std::string& file,
   for (int i = block->first; i < block->second && i < static_cast<int>(lines.size()); ++i)
     lines[i].clear();
   expandVariants(ex, sweep, lines, rows, product, file, name, result);
+  checkEveryParameterUsed(ex, sweep, rows, product, result.used);
   if (!result.errors.empty()) result.variants.clear();
   return result;
 }

@@ -17,6 +17,7 @@
 // Variants: each row (or one empty row) times every product combination.
 #pragma once
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -33,7 +34,8 @@ struct SweepVariant {
 
 struct SweepExpansion {
   std::vector<SweepVariant> variants;
-  std::vector<Error> errors;  // problems of the sweep block or of a ${...}; then no variants
+  std::vector<Error> errors;   // problems of the sweep block or of a ${...}; then no variants
+  std::set<std::string> used;  // the parameters some variant brings in
 };
 
 bool isSweepFile(const std::string& path);  // the name ends in .sweep.yaml
