@@ -176,7 +176,6 @@ std::vector<FaultImpl> programAndOrderMutations() {
   };
 }
 
-// Faults of the device's child process.
 // Faults of how the pipeline and the top levels are built.
 std::vector<FaultImpl> pipelineMutations() {
   using K = FaultKind;
@@ -193,6 +192,7 @@ std::vector<FaultImpl> pipelineMutations() {
   };
 }
 
+// Faults of the device's child process.
 std::vector<FaultImpl> processFaults() {
   using K = FaultKind;
   return {

@@ -456,36 +456,35 @@ Flow Machine::execStmt(const CStmt& s, StageEnv& env) {
   return Flow::Continue;
 }
 
+namespace {
+
+// One assignment into a payload or callable data: color and value, and for
+// callable data also position and normal.
+template <typename Data>
+void writeSlot(Data& d, Slot slot, const Val& v) {
+  if (slot == Slot::Color) d.color = v.f;
+  if (slot == Slot::Value) d.value = v.u;
+  if constexpr (requires { d.position; }) {
+    if (slot == Slot::Position) d.position = {v.f[0], v.f[1], v.f[2]};
+    if (slot == Slot::Normal) d.normal = {v.f[0], v.f[1], v.f[2]};
+  }
+}
+
+}  // namespace
+
 void Machine::execSet(const CStmt& s, StageEnv& env) {
   for (const CAssign& a : s.assigns) {
     const Val v = eval(a.value, env);
-    if (s.kind == Stmt::Kind::SetPayload && env.payload) {
-      if (a.slot == Slot::Color)
-        env.payload->color = v.f;
-      else if (a.slot == Slot::Value)
-        env.payload->value = v.u;
-    } else if (s.kind == Stmt::Kind::SetCall && env.call) {
-      if (a.slot == Slot::Color)
-        env.call->color = v.f;
-      else if (a.slot == Slot::Value)
-        env.call->value = v.u;
-    }
+    if (s.kind == Stmt::Kind::SetPayload && env.payload)
+      writeSlot(*env.payload, a.slot, v);
+    else if (s.kind == Stmt::Kind::SetCall && env.call)
+      writeSlot(*env.call, a.slot, v);
   }
 }
 
 void Machine::execCall(const CStmt& s, StageEnv& env) {
   CallData d;
-  for (const CAssign& a : s.assigns) {
-    const Val v = eval(a.value, env);
-    if (a.slot == Slot::Color)
-      d.color = v.f;
-    else if (a.slot == Slot::Value)
-      d.value = v.u;
-    else if (a.slot == Slot::Position)
-      d.position = {v.f[0], v.f[1], v.f[2]};
-    else if (a.slot == Slot::Normal)
-      d.normal = {v.f[0], v.f[1], v.f[2]};
-  }
+  for (const CAssign& a : s.assigns) writeSlot(d, a.slot, eval(a.value, env));
   callCallable(eval(s.call_index, env).u, d, env.depth, s);
   env.callee = d;
 }
@@ -526,13 +525,7 @@ TraceRay Machine::tracedRay(const CStmt& s, StageEnv& env) {
 // The payload a trace starts with: what the statement gives, zero elsewhere.
 Payload Machine::startPayload(const CStmt& s, StageEnv& env) {
   Payload p;
-  for (const CAssign& a : s.assigns) {
-    const Val v = eval(a.value, env);
-    if (a.slot == Slot::Color)
-      p.color = v.f;
-    else if (a.slot == Slot::Value)
-      p.value = v.u;
-  }
+  for (const CAssign& a : s.assigns) writeSlot(p, a.slot, eval(a.value, env));
   return p;
 }
 
