@@ -140,11 +140,6 @@ VkPipelineLayout createPipelineLayout(const VulkanContext& ctx, VkDescriptorSetL
   return layout;
 }
 
-uint32_t caseGroupCount(const CompiledPipeline& compiled) {
-  return static_cast<uint32_t>(1 + compiled.other_raygens.size() + compiled.miss.size() +
-                               compiled.hit_groups.size() + compiled.callables.size());
-}
-
 VkPipeline createPipelineObject(const VulkanContext& ctx, const CompiledPipeline& compiled,
                                 const PipelinePart& part, Cleanup& cleanup) {
   Cleanup modules;

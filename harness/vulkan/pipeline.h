@@ -53,17 +53,13 @@ std::set<uint32_t> declaredBindings(const CompiledPipeline& compiled);
 VkPipelineLayout createPipelineLayout(const VulkanContext& ctx, VkDescriptorSetLayout set_layout,
                                       Cleanup& cleanup);
 
-// The groups of a case, in sbt_layout.h's order (raygen, miss..., hit
-// groups..., callables...): 1 + miss + hit groups + callables.
-uint32_t caseGroupCount(const CompiledPipeline& compiled);
-
 // The interface a pipeline linked from libraries declares: no payload or
 // callable data of shaders/payload.glsl is larger (RsPayload 24 bytes,
 // RsCallData 48).
 constexpr uint32_t kMaxPayloadBytes = 64;
 
 // One vkCreateRayTracingPipelinesKHR call: the case groups `groups` (ids in
-// caseGroupCount's order) in that order, linking `libraries` when `linked`
+// sbt_layout.h's group order) in that order, linking `libraries` when `linked`
 // (then with the library interface). Throws VulkanError.
 struct PipelinePart {
   std::vector<uint32_t> groups;

@@ -8,7 +8,7 @@
 namespace rayspec {
 namespace {
 
-// Case group ids (caseGroupCount's order) of one library's own groups.
+// Case group ids (sbt_layout.h's group order) of one library's own groups.
 std::vector<uint32_t> ownGroups(const Pipeline& p, const PipelineLibrary& lib) {
   std::set<uint32_t> ids;
   for (uint32_t i : lib.miss) ids.insert(sbtMissGroup(p, i));
@@ -62,7 +62,7 @@ struct Linker {
 RayTracingPipeline createRayTracingPipeline(const VulkanContext& ctx,
                                             const CompiledPipeline& compiled, const Pipeline& p,
                                             VkPipelineLayout layout, Cleanup& cleanup) {
-  const uint32_t count = caseGroupCount(compiled);
+  const uint32_t count = sbtGroupCount(p);
   std::set<uint32_t> placed;
   collectPlaced(p, p.libraries, placed);
   Linker linker{ctx, compiled, p, layout, cleanup};
