@@ -361,7 +361,12 @@ TEST_F(GenerateGlsl, NestedTracesUseTheCaseDefaultsAndTheNextDepth) {
   EXPECT_NE(chit.find("child.depth = payload.depth + 1u;"), std::string::npos);
   EXPECT_NE(chit.find("float rs_tmin = " + glslFloat(0.001f) + ";"), std::string::npos) << chit;
   EXPECT_NE(chit.find("float rs_tmax = 100.0;"), std::string::npos);
-  EXPECT_NE(chit.find("layout(location = 1) rayPayloadEXT RsPayload child;"), std::string::npos);
+  // The nested trace's payload (location 0 of the case, 1 in this stage: its
+  // incoming payload is 0), copied into `child` after the trace.
+  EXPECT_NE(chit.find("layout(location = 1) rayPayloadEXT RsPayload rs_payload_0;"),
+            std::string::npos);
+  EXPECT_NE(chit.find("rs_payload_0.depth = payload.depth + 1u;"), std::string::npos);
+  EXPECT_NE(chit.find("child = rs_payload_0;"), std::string::npos);
   // Raygen: the launch's ray, with the given tmax overriding it.
   const std::string& rg = g.raygen.glsl;
   EXPECT_NE(rg.find("RsRay rs_ray = rs_load_ray(rs_launch_index());"), std::string::npos);

@@ -14,6 +14,7 @@
 #include "base/affine.h"
 #include "base/source_loc.h"
 #include "base/vec3.h"
+#include "program/payload_words.h"
 #include "program/program.h"
 #include "results/undefined_reason.h"
 
@@ -150,8 +151,16 @@ struct SbtPadding {
 
 struct HitGroup {
   std::optional<Program> closest_hit, any_hit, intersection;
+  uint32_t payload = 0;  // its incoming payload has the type of this location (Pipeline::payloads)
   SourceLoc loc;
 };
+
+// Payload types (pipeline.payloads), by the location a trace names: color,
+// value and depth, then `words` more uint words (payload.word0 ..). At most
+// kMaxPayloadLocations locations; the largest type is 24 + 4 * 10 = 64 bytes
+// (kMaxPayloadBytes, the pipeline libraries' interface).
+constexpr uint32_t kMaxPayloadLocations = 4;
+constexpr uint32_t kMaxPayloadWords = kPayloadWordNames;
 
 // A pipeline library (VK_KHR_pipeline_library): the groups it holds, by
 // index into Pipeline::miss / hit_groups / callables, and the libraries it
@@ -183,7 +192,20 @@ struct Pipeline {
   }
   std::vector<uint32_t> raygen_data;  // raygen shader record data
   std::vector<Program> miss;
+  std::vector<uint32_t> miss_payload;  // per miss shader: the location whose payload type it takes
+  uint32_t missPayload(size_t i) const { return i < miss_payload.size() ? miss_payload[i] : 0; }
   std::vector<HitGroup> hit_groups;
+  // Extra words of each location's payload type; default one location, none.
+  std::vector<uint32_t> payload_words{0};
+  // Bytes of a location's payload type: RsPayload (vec4, uint, uint) + 4 per word.
+  uint32_t payloadBytes(size_t location) const {
+    return 24 + 4 * (location < payload_words.size() ? payload_words[location] : 0);
+  }
+  uint32_t maxPayloadWords() const {
+    uint32_t n = 0;
+    for (uint32_t w : payload_words) n = std::max(n, w);
+    return n;
+  }
   std::vector<Program> callables;
   // SBT regions. Default when not written: one record per shader / group, in order.
   std::vector<SbtRecord> sbt_miss, sbt_hit, sbt_callable;

@@ -16,6 +16,13 @@ void parseRays(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& ray
 void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& pipeline);
 // pipeline.libraries (parse_libraries.cpp), after the groups are parsed.
 void parseLibraries(YamlReader& r, const YAML::Node& n, Pipeline& pipeline);
+// pipeline.payloads (parse_payloads.cpp), before the shaders that name a location.
+void parsePayloadTypes(YamlReader& r, const YAML::Node& n, Pipeline& pipeline);
+// A location of pipeline.payloads (a constant); nullopt, with an error, when none.
+std::optional<uint32_t> parsePayloadLocation(YamlReader& r, const YAML::Node& n,
+                                             const std::string& field, const Pipeline& pipeline);
+// pipeline.miss: programs, or {program, payload: location}.
+void parseMissShaders(YamlReader& r, const YAML::Node& n, Pipeline& pipeline);
 void parseOutputs(YamlReader& r, const YAML::Node& n, Outputs& outputs);
 
 // A generated mesh (`grid`, `fan` or `triangulation` in a `triangles` map):
@@ -46,5 +53,9 @@ void checkRecordReads(YamlReader& r, const Case& c);
 // constants: SBT indices beyond their regions, a trace's bad tmin / tmax.
 // Needs the types checkPrograms fills in.
 void checkTraceConstants(YamlReader& r, const Case& c);
+
+// Every payload location a trace names, and every payload word a program
+// reads or writes, within the payload type it has (pipeline.payloads).
+void checkPayloadWords(YamlReader& r, const Case& c);
 
 }  // namespace rayspec

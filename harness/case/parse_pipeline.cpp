@@ -95,7 +95,8 @@ void parsePrograms(YamlReader& r, const YAML::Node& n, const std::string& field,
   }
 }
 
-void parseHitGroups(YamlReader& r, const YAML::Node& n, std::vector<HitGroup>& out) {
+void parseHitGroups(YamlReader& r, const YAML::Node& n, const Pipeline& p,
+                    std::vector<HitGroup>& out) {
   if (!r.expectSeq(n, "pipeline.hit_groups")) return;
   for (size_t i = 0; i < n.size(); ++i) {
     const std::string f = "pipeline.hit_groups[" + std::to_string(i) + "]";
@@ -105,7 +106,9 @@ void parseHitGroups(YamlReader& r, const YAML::Node& n, std::vector<HitGroup>& o
       out.push_back(std::move(g));
       continue;
     }
-    if (r.expectMap(n[i], f, {"closest_hit", "any_hit", "intersection"})) {
+    if (r.expectMap(n[i], f, {"closest_hit", "any_hit", "intersection", "payload"})) {
+      if (auto v = YamlReader::get(n[i], "payload"); v.IsDefined())
+        g.payload = parsePayloadLocation(r, v, f + ".payload", p).value_or(0);
       struct Slot {
         const char* key;
         std::optional<Program>* prog;
@@ -165,7 +168,7 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
   if (!n.IsDefined()) return;
   if (!r.expectMap(n, "pipeline",
                    {"max_recursion", "flags", "raygen", "raygens", "raygen_group", "raygen_data",
-                    "miss", "hit_groups", "callables", "sbt", "libraries"}))
+                    "miss", "hit_groups", "callables", "sbt", "libraries", "payloads"}))
     return;
   if (auto v = YamlReader::get(n, "max_recursion"); v.IsDefined())
     if (auto x = r.uint(v, "pipeline.max_recursion", 31)) {
@@ -193,9 +196,10 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
       checkDataFits(r, v, "pipeline.raygen_data", words->size(), p.sbt_record_data);
       p.raygen_data = *words;
     }
-  if (auto v = YamlReader::get(n, "miss"); v.IsDefined())
-    parsePrograms(r, v, "pipeline.miss", p.miss);
-  if (auto v = YamlReader::get(n, "hit_groups"); v.IsDefined()) parseHitGroups(r, v, p.hit_groups);
+  if (auto v = YamlReader::get(n, "payloads"); v.IsDefined()) parsePayloadTypes(r, v, p);
+  if (auto v = YamlReader::get(n, "miss"); v.IsDefined()) parseMissShaders(r, v, p);
+  if (auto v = YamlReader::get(n, "hit_groups"); v.IsDefined())
+    parseHitGroups(r, v, p, p.hit_groups);
   if (auto v = YamlReader::get(n, "callables"); v.IsDefined())
     parsePrograms(r, v, "pipeline.callables", p.callables);
 

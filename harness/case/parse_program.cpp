@@ -41,6 +41,14 @@ bool parseAssigns(YamlReader& r, const YAML::Node& n, const std::string& field,
   return ok;
 }
 
+// A payload's fields: color, value and the words of its type (checkPayloadWords).
+bool parsePayloadAssigns(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt& s) {
+  return parseAssigns(r, n, field,
+                      {"color", "value", "word0", "word1", "word2", "word3", "word4", "word5",
+                       "word6", "word7", "word8", "word9"},
+                      s);
+}
+
 bool parseRecord(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
   s.kind = Stmt::Kind::Record;
   if (v.IsMap()) {
@@ -86,7 +94,7 @@ bool parseTrace(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& 
   if (v.IsNull()) return true;
   if (!r.expectMap(v, f,
                    {"origin", "direction", "tmin", "tmax", "flags", "cull_mask", "sbt_offset",
-                    "sbt_stride", "miss", "payload", "tlas"}))
+                    "sbt_stride", "miss", "payload", "tlas", "location"}))
     return false;
   bool ok = true;
   if (const YAML::Node l = YamlReader::get(v, "tlas"); l.IsDefined()) {
@@ -96,9 +104,16 @@ bool parseTrace(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& 
     else
       ok = false;
   }
+  if (const YAML::Node l = YamlReader::get(v, "location"); l.IsDefined()) {
+    s.trace.location_loc = r.loc(l, f + ".location");
+    if (auto index = r.uint(l, f + ".location", kMaxPayloadLocations - 1))
+      s.trace.location = *index;
+    else
+      ok = false;
+  }
   // The payload the trace starts with (zero where not given), into s.assigns.
   if (const YAML::Node p = YamlReader::get(v, "payload"); p.IsDefined())
-    ok = parseAssigns(r, p, f + ".payload", {"color", "value"}, s);
+    ok = parsePayloadAssigns(r, p, f + ".payload", s) && ok;
   TraceArgs& t = s.trace;
   struct Slot {
     const char* key;
@@ -222,7 +237,7 @@ bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stm
   if (key == "record") return parseRecord(r, v, f, s);
   if (key == "payload") {
     s.kind = Stmt::Kind::SetPayload;
-    return parseAssigns(r, v, f, {"color", "value"}, s);
+    return parsePayloadAssigns(r, v, f, s);
   }
   if (key == "call_data") {
     s.kind = Stmt::Kind::SetCall;

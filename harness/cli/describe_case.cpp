@@ -76,13 +76,16 @@ std::string describeCase(const Case& c) {
   s << "Pipeline: max recursion " << p.max_recursion << ", flags " << hex(p.flags) << '\n';
   s << "  raygen: " << statementCount(p.raygen) << " statements\n";
   for (size_t i = 0; i < p.miss.size(); ++i)
-    s << "  miss " << i << ": " << statementCount(p.miss[i]) << " statements\n";
+    s << "  miss " << i << ": " << statementCount(p.miss[i]) << " statements"
+      << (p.missPayload(i) ? ", payload type of location " + std::to_string(p.missPayload(i)) : "")
+      << '\n';
   for (size_t i = 0; i < p.hit_groups.size(); ++i) {
     const HitGroup& g = p.hit_groups[i];
     s << "  hit group " << i << ":";
     if (g.closest_hit) s << " closest-hit(" << statementCount(*g.closest_hit) << ")";
     if (g.any_hit) s << " any-hit(" << statementCount(*g.any_hit) << ")";
     if (g.intersection) s << " intersection(" << statementCount(*g.intersection) << ")";
+    if (g.payload) s << ", payload type of location " << g.payload;
     s << '\n';
   }
   for (size_t i = 0; i < p.callables.size(); ++i)
@@ -91,6 +94,12 @@ std::string describeCase(const Case& c) {
     s << "  raygen groups: " << p.raygenGroupCount() << ", the region selects " << p.raygen_group
       << '\n';
   describeLibraries(p.libraries, "  ", s);
+  if (p.payload_words.size() > 1 || p.maxPayloadWords() > 0) {
+    s << "  payload types by location:";
+    for (size_t l = 0; l < p.payload_words.size(); ++l)
+      s << " " << l << ": " << p.payloadBytes(l) << " bytes";
+    s << '\n';
+  }
   if (p.sbt_record_data != kMaxShaderRecordDataBytes || p.sbt_padding.miss || p.sbt_padding.hit ||
       p.sbt_padding.callable)
     s << "  sbt record: handle + " << p.sbt_record_data << " data bytes + padding (miss "

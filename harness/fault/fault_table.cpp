@@ -129,6 +129,10 @@ std::vector<FaultImpl> programAndOrderMutations() {
       {"payload-start-lost", K::CaseMutation,
        "every trace starts with a zero payload, whatever the caller wrote into it", nullptr,
        payloadStartLost},
+      {"payload-words-lost", K::CaseMutation,
+       "only the first 24 bytes of a payload come back: writes to its words "
+       "(pipeline.payloads) are lost",
+       nullptr, payloadWordsLost},
       {"hit-attributes-lost", K::CaseMutation,
        "the attribute an intersection shader reports is lost (reads 0)", nullptr,
        hitAttributesLost},

@@ -1,8 +1,11 @@
 // Case mutations of the stage programs: a device that gets a statement's
 // meaning wrong acts as the correct one on the changed program.
+#include <algorithm>
+
 #include "fault/fault_impl.h"
 #include "fault/program_edit.h"
 #include "program/builtins.h"
+#include "program/payload_words.h"
 
 namespace rayspec {
 namespace {
@@ -156,6 +159,24 @@ std::string payloadStartLost(Case& c, ModelOptions&) {
     });
   });
   return describeCount(n, "traces start with a zero payload");
+}
+
+// A device that copies back only the first 24 bytes of a payload (color,
+// value, depth): what miss, closest-hit and any-hit write into its words is lost.
+std::string payloadWordsLost(Case& c, ModelOptions&) {
+  size_t n = 0;
+  forEachProgram(c.pipeline, [&](Program& p, Stage) {
+    forEachStmt(p, [&](Stmt& s) {
+      if (s.kind != Stmt::Kind::SetPayload) return;
+      auto& a = s.assigns;
+      const size_t before = a.size();
+      a.erase(std::remove_if(a.begin(), a.end(),
+                             [](const auto& f) { return payloadWordField(f.first).has_value(); }),
+              a.end());
+      n += before - a.size();
+    });
+  });
+  return describeCount(n, "payload word writes lost on the way back");
 }
 
 std::string tlasIgnored(Case& c, ModelOptions&) {

@@ -45,7 +45,9 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-SBT-RECORD", {"shader-record-data-zeroed"}, {}},
       {"R-RECURSION", {"nested-trace-dropped"}, {}},
       {"R-CALLABLE", {"callable-data-not-returned"}, {}},
-      {"R-PAYLOAD", {"payload-writes-lost", "payload-start-lost", "hit-attributes-lost"}, {}},
+      {"R-PAYLOAD",
+       {"payload-writes-lost", "payload-start-lost", "payload-words-lost", "hit-attributes-lost"},
+       {}},
       {"R-BUILTIN", {"builtin-wrong", "swap-primitive-id", "shift-t"}, {}},
       // Several top levels are built as copies of the instance list, the other
       // levels' instances inactive (Instance::tlas): which instances a trace

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "glsl/glsl_literal.h"
+#include "program/payload_words.h"
 
 namespace rayspec {
 namespace {
@@ -75,6 +76,8 @@ std::string builtin(const std::string& name, Stage stage) {
       {"callee.color", "callee.color"},
       {"callee.value", "callee.value"},
   };
+  if (auto w = payloadWordBuiltin(name))  // payload.word3 -> payload.words[3]
+    return std::string(w->child ? "child" : "payload") + ".words[" + std::to_string(w->index) + "]";
   if (name == "hit") {
     if (stage == Stage::ClosestHit) return "1u";
     if (stage == Stage::Miss) return "0u";

@@ -4,6 +4,7 @@
 
 #include "glsl/bindings.h"
 #include "glsl/embedded_shaders.h"
+#include "glsl/emit_payloads.h"
 #include "glsl/emit_stmt.h"
 #include "glsl/glsl_writer.h"
 #include "glsl/stage_context.h"
@@ -90,11 +91,7 @@ void interfaceVariables(const StageContext& ctx, GlslWriter& out) {
   const Stage s = ctx.stage;
   out.line("");
   out.line("// ---- interface of this stage ----");
-  if (s == Stage::Raygen) out.line("layout(location = 0) rayPayloadEXT RsPayload payload;");
-  if (s == Stage::Miss || s == Stage::ClosestHit || s == Stage::AnyHit)
-    out.line("layout(location = 0) rayPayloadInEXT RsPayload payload;");
-  if (u.trace && (s == Stage::Miss || s == Stage::ClosestHit))
-    out.line("layout(location = 1) rayPayloadEXT RsPayload child;");
+  emitPayloadVariables(ctx, out);
   if (s == Stage::Callable) out.line("layout(location = 0) callableDataInEXT RsCallData call;");
   if (u.call)
     out.line("layout(location = " + std::to_string(calleeLocation(s)) +
@@ -150,8 +147,8 @@ void imageStores(const StageContext& ctx, GlslWriter& out) {
 }  // namespace
 
 GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const std::string& name,
-                          const Program& program) {
-  StageContext ctx{c, plan, stage, name, findStageUses(program, stage, plan)};
+                          const Program& program, uint32_t payload_location) {
+  StageContext ctx{c, plan, stage, name, findStageUses(program, stage, plan), payload_location};
   if (plan.records) ctx.uses.record_fields.insert(recordFieldIndex(runsField(stage)));
   if (plan.records && stage == Stage::AnyHit)
     for (const char* f : {"any_hit_slots", "any_hit_repeats"})
@@ -170,6 +167,7 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
   defines(ctx, out);
   include("common.glsl", out);
   include("payload.glsl", out);
+  emitPayloadStructs(ctx, out);
   if (u.scene && stage == Stage::Intersection) include("scene.glsl", out);
   if (u.sphere && stage == Stage::Intersection) include("sphere.glsl", out);
   if (u.light) include("lights.glsl", out);
@@ -185,12 +183,8 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
              std::to_string(kAnyHitSlotGeometryFactor) + "u + uint(gl_PrimitiveID)) & 31u);");
   if (stage == Stage::Raygen) {
     if (u.launch_ray) out.line("RsRay rs_ray = rs_load_ray(rs_launch_index());");
-    out.line("payload.color = vec4(0.0);");
-    out.line("payload.value = 0u;");
-    out.line("payload.depth = 1u;");
   }
-  if (u.trace && (stage == Stage::Miss || stage == Stage::ClosestHit))
-    out.line("child.color = vec4(0.0);  child.value = 0u;  child.depth = payload.depth + 1u;");
+  emitPayloadStart(ctx, out);
   if (u.call) out.line("callee = RsCallData(vec4(0.0), vec3(0.0), 0u, vec3(0.0), 0u);");
   out.line("// ---- program ----");
   emitProgram(program, ctx, out);

@@ -6,7 +6,9 @@
 
 namespace rayspec {
 
+// payload_location: the location whose payload type a miss, closest-hit or
+// any-hit receives (Pipeline::miss_payload, HitGroup::payload).
 GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const std::string& name,
-                          const Program& program);
+                          const Program& program, uint32_t payload_location = 0);
 
 }  // namespace rayspec

@@ -5,6 +5,7 @@
 
 #include "glsl/emit_expr.h"
 #include "glsl/emit_trace.h"
+#include "program/payload_words.h"
 #include "results/record_layout.h"
 
 namespace rayspec {
@@ -53,8 +54,11 @@ void record(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
 // payload.x = ... / call.x = ..., in the order written.
 void assignFields(const Stmt& s, const std::string& target, const StageContext& ctx,
                   GlslWriter& out) {
-  for (const auto& [field, value] : s.assigns)
-    out.line(target + "." + field + " = " + emitExpr(value, ctx) + ";");
+  for (const auto& [field, value] : s.assigns) {
+    const auto word = payloadWordField(field);  // word3 -> words[3]
+    const std::string member = word ? "words[" + std::to_string(*word) + "]" : field;
+    out.line(target + "." + member + " = " + emitExpr(value, ctx) + ";");
+  }
 }
 
 void report(const Stmt& s, const StageContext& ctx, GlslWriter& out) {

@@ -1,7 +1,9 @@
 #include "glsl/emit_trace.h"
 
 #include "glsl/emit_expr.h"
+#include "glsl/emit_payloads.h"
 #include "glsl/glsl_literal.h"
+#include "program/payload_words.h"
 
 namespace rayspec {
 namespace {
@@ -13,6 +15,32 @@ struct Arg {
   const std::vector<Expr>* given;
   std::string fallback;  // GLSL; empty = required
 };
+
+// The payload a trace starts with, in the variable of its location: every
+// value read before any is written; depth 1 from raygen, else this stage's + 1.
+void startPayload(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
+  const uint32_t location = s.trace.location;
+  const std::vector<uint32_t>& types = ctx.c.pipeline.payload_words;
+  const uint32_t words = location < types.size() ? types[location] : 0;
+  std::string color = "vec4(0.0)", value = "0u";
+  std::vector<std::string> word(words, "0u");
+  for (const auto& [field, expr] : s.assigns) {
+    if (field == "color") color = emitExpr(expr, ctx);
+    if (field == "value") value = emitExpr(expr, ctx);
+    if (auto i = payloadWordField(field); i && *i < words) word[*i] = emitExpr(expr, ctx);
+  }
+  out.line("vec4 rs_start_color = " + color + ";");
+  out.line("uint rs_start_value = " + value + ";");
+  for (uint32_t i = 0; i < words; ++i)
+    out.line("uint rs_start_word" + std::to_string(i) + " = " + word[i] + ";");
+  const std::string p = outgoingPayload(location);
+  out.line(p + ".color = rs_start_color;");
+  out.line(p + ".value = rs_start_value;");
+  out.line(p + ".depth = " +
+           (ctx.stage == Stage::Raygen ? std::string("1u") : "payload.depth + 1u") + ";");
+  for (uint32_t i = 0; i < words; ++i)
+    out.line(p + ".words[" + std::to_string(i) + "] = rs_start_word" + std::to_string(i) + ";");
+}
 
 }  // namespace
 
@@ -47,23 +75,15 @@ void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
     }
     out.line(std::string(a.type) + " " + a.local + " = " + value + ";");
   }
-  // The payload the trace starts with: every value read before any is written.
-  std::string color = "vec4(0.0)", value = "0u";
-  for (const auto& [field, expr] : s.assigns)
-    (field == "color" ? color : value) = emitExpr(expr, ctx);
-  out.line("vec4 rs_start_color = " + color + ";");
-  out.line("uint rs_start_value = " + value + ";");
-  const std::string p = raygen ? "payload" : "child";
-  out.line(p + ".color = rs_start_color;");
-  out.line(p + ".value = rs_start_value;");
-  out.line(p + ".depth = " + (raygen ? std::string("1u") : "payload.depth + 1u") + ";");
+  startPayload(s, ctx, out);
   const std::string tlas = ctx.c.scene.tlasCount() > 1
                                ? "rs_tlas[" + std::to_string(s.trace.tlas) + "]"
                                : std::string("rs_tlas");
   out.line("traceRayEXT(" + tlas +
            ", rs_flags, rs_cull_mask, rs_sbt_offset, rs_sbt_stride, rs_miss,");
   out.line("            rs_origin, rs_tmin, rs_direction, rs_tmax, " +
-           std::string(raygen ? "0" : "1") + ");");
+           std::to_string(outgoingLocation(ctx, s.trace.location)) + ");");
+  emitPayloadResult(ctx, s.trace.location, out);
   out.close();
 }
 

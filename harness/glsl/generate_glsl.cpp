@@ -16,16 +16,17 @@ GeneratedPipeline generateGlsl(const Case& c, const Plan& plan) {
     g.other_raygens.push_back(
         emitStage(c, plan, Stage::Raygen, "raygen.other" + std::to_string(i), p.other_raygens[i]));
   for (size_t i = 0; i < p.miss.size(); ++i)
-    g.miss.push_back(emitStage(c, plan, Stage::Miss, "miss" + std::to_string(i), p.miss[i]));
+    g.miss.push_back(
+        emitStage(c, plan, Stage::Miss, "miss" + std::to_string(i), p.miss[i], p.missPayload(i)));
   for (size_t i = 0; i < p.hit_groups.size(); ++i) {
     const HitGroup& h = p.hit_groups[i];
     const std::string prefix = "hit" + std::to_string(i) + ".";
     GeneratedGroup group;
     if (h.closest_hit)
       group.closest_hit =
-          emitStage(c, plan, Stage::ClosestHit, prefix + "closest_hit", *h.closest_hit);
+          emitStage(c, plan, Stage::ClosestHit, prefix + "closest_hit", *h.closest_hit, h.payload);
     if (h.any_hit && plan.any_hit)
-      group.any_hit = emitStage(c, plan, Stage::AnyHit, prefix + "any_hit", *h.any_hit);
+      group.any_hit = emitStage(c, plan, Stage::AnyHit, prefix + "any_hit", *h.any_hit, h.payload);
     if (h.intersection && plan.intersection)
       group.intersection =
           emitStage(c, plan, Stage::Intersection, prefix + "intersection", *h.intersection);

@@ -12,16 +12,17 @@ namespace rayspec {
 
 // What a stage program uses, found by walking it once.
 struct StageUses {
-  bool trace = false;           // a traceRayEXT (raygen: payload; else: child)
-  bool launch_ray = false;      // raygen: some trace takes a field from this launch's ray
-  bool call = false;            // executeCallableEXT
-  bool light = false;           // light: -> lights.glsl
-  bool shader_record = false;   // shader_record_* or light
-  bool scene = false;           // aabb_min / aabb_max / sphere_*
-  bool sphere = false;          // sphere_*
-  bool hit_attribute = false;   // barycentrics read, or a report written
-  bool counters = false;        // a count of a kept counter
-  std::set<int> record_fields;  // indices (recordFields()) of fields written
+  bool trace = false;                  // a traceRayEXT (raygen: payload; else: child)
+  std::set<uint32_t> trace_locations;  // the payload locations its traces pass
+  bool launch_ray = false;             // raygen: some trace takes a field from this launch's ray
+  bool call = false;                   // executeCallableEXT
+  bool light = false;                  // light: -> lights.glsl
+  bool shader_record = false;          // shader_record_* or light
+  bool scene = false;                  // aabb_min / aabb_max / sphere_*
+  bool sphere = false;                 // sphere_*
+  bool hit_attribute = false;          // barycentrics read, or a report written
+  bool counters = false;               // a count of a kept counter
+  std::set<int> record_fields;         // indices (recordFields()) of fields written
 };
 
 StageUses findStageUses(const Program& program, Stage stage, const Plan& plan);
@@ -32,6 +33,7 @@ struct StageContext {
   Stage stage;
   std::string name;  // "raygen", "miss0", "hit1.any_hit", ...
   StageUses uses;
+  uint32_t payload_location = 0;  // miss, closest-hit, any-hit: the type of their incoming payload
 };
 
 // The location of the callable data this stage passes to executeCallableEXT.

@@ -60,6 +60,7 @@ void visitProgram(const Program& p, Stage stage, const Plan& plan, StageUses& u)
         break;
       case Stmt::Kind::Trace: {
         u.trace = true;
+        u.trace_locations.insert(s.trace.location);
         for (const auto& a : s.assigns) visitExpr(a.second, u);
         const TraceArgs& t = s.trace;
         for (const auto* v : {&t.origin, &t.direction, &t.tmin, &t.tmax, &t.flags, &t.cull_mask,

@@ -100,15 +100,50 @@ void Machine::record(int idx, const Val& v, ValueType t) {
   rec_[kRecordWrittenMaskWord] |= 1u << idx;
 }
 
+// The payload and callable data a stage reads (payload.*, child.*, call.*, callee.*).
+Val Machine::dataBuiltin(const CExpr& e, StageEnv& env) {
+  static const Payload kNoPayload;
+  static const CallData kNoCall;
+  const Payload* pl = env.payload ? env.payload : &kNoPayload;
+  const CallData* cd = env.call ? env.call : &kNoCall;
+  switch (e.builtin) {
+    case kBiPayloadColor:
+      return fromVec4(pl->color);
+    case kBiPayloadValue:
+      return fromUint(pl->value);
+    case kBiPayloadWord:
+      return fromUint(pl->words[e.index % kMaxPayloadWords]);
+    case kBiChildColor:
+      return fromVec4(env.child.color);
+    case kBiChildValue:
+      return fromUint(env.child.value);
+    case kBiChildWord:
+      return fromUint(env.child.words[e.index % kMaxPayloadWords]);
+    case kBiCallPosition:
+      return fromVec3(cd->position);
+    case kBiCallNormal:
+      return fromVec3(cd->normal);
+    case kBiCallColor:
+      return fromVec4(cd->color);
+    case kBiCallValue:
+      return fromUint(cd->value);
+    case kBiCalleeColor:
+      return fromVec4(env.callee.color);
+    case kBiCalleeValue:
+      return fromUint(env.callee.value);
+    default:
+      break;
+  }
+  if (error.empty())
+    error = "model: unknown built-in '" + (e.src ? e.src->name : std::string("?")) + "'";
+  return Val{};
+}
+
 Val Machine::builtin(const CExpr& e, StageEnv& env) {
   static const HitView kNone;
   static const TraceRay kNoRay;
-  static const Payload kNoPayload;
-  static const CallData kNoCall;
   const HitView* hv = env.hit ? env.hit : &kNone;
   const TraceRay* r = env.ray ? env.ray : &kNoRay;
-  const Payload* pl = env.payload ? env.payload : &kNoPayload;
-  const CallData* cd = env.call ? env.call : &kNoCall;
   switch (e.builtin) {
     case kBiLaunchX:
       return fromUint(x_);
@@ -160,34 +195,11 @@ Val Machine::builtin(const CExpr& e, StageEnv& env) {
       for (int k = 0; k < 3; ++k) p[k] = r->origin[k] + hv->t * r->direction[k];
       return fromVec3(p);
     }
-    case kBiPayloadColor:
-      return fromVec4(pl->color);
-    case kBiPayloadValue:
-      return fromUint(pl->value);
     case kBiDepth:
       return fromUint(env.depth);
-    case kBiChildColor:
-      return fromVec4(env.child.color);
-    case kBiChildValue:
-      return fromUint(env.child.value);
-    case kBiCallPosition:
-      return fromVec3(cd->position);
-    case kBiCallNormal:
-      return fromVec3(cd->normal);
-    case kBiCallColor:
-      return fromVec4(cd->color);
-    case kBiCallValue:
-      return fromUint(cd->value);
-    case kBiCalleeColor:
-      return fromVec4(env.callee.color);
-    case kBiCalleeValue:
-      return fromUint(env.callee.value);
     default:
-      break;
+      return dataBuiltin(e, env);
   }
-  if (error.empty())
-    error = "model: unknown built-in '" + (e.src ? e.src->name : std::string("?")) + "'";
-  return Val{};
 }
 
 Val Machine::eval(const CExpr& e, StageEnv& env) {
@@ -458,12 +470,16 @@ Flow Machine::execStmt(const CStmt& s, StageEnv& env) {
 
 namespace {
 
-// One assignment into a payload or callable data: color and value, and for
-// callable data also position and normal.
+// One assignment into a payload or callable data: color and value, for a
+// payload its words, and for callable data also position and normal.
 template <typename Data>
-void writeSlot(Data& d, Slot slot, const Val& v) {
+void writeSlot(Data& d, const CAssign& a, const Val& v) {
+  const Slot slot = a.slot;
   if (slot == Slot::Color) d.color = v.f;
   if (slot == Slot::Value) d.value = v.u;
+  if constexpr (requires { d.words; }) {
+    if (slot == Slot::Word) d.words[a.word % kMaxPayloadWords] = v.u;
+  }
   if constexpr (requires { d.position; }) {
     if (slot == Slot::Position) d.position = {v.f[0], v.f[1], v.f[2]};
     if (slot == Slot::Normal) d.normal = {v.f[0], v.f[1], v.f[2]};
@@ -476,15 +492,15 @@ void Machine::execSet(const CStmt& s, StageEnv& env) {
   for (const CAssign& a : s.assigns) {
     const Val v = eval(a.value, env);
     if (s.kind == Stmt::Kind::SetPayload && env.payload)
-      writeSlot(*env.payload, a.slot, v);
+      writeSlot(*env.payload, a, v);
     else if (s.kind == Stmt::Kind::SetCall && env.call)
-      writeSlot(*env.call, a.slot, v);
+      writeSlot(*env.call, a, v);
   }
 }
 
 void Machine::execCall(const CStmt& s, StageEnv& env) {
   CallData d;
-  for (const CAssign& a : s.assigns) writeSlot(d, a.slot, eval(a.value, env));
+  for (const CAssign& a : s.assigns) writeSlot(d, a, eval(a.value, env));
   callCallable(eval(s.call_index, env).u, d, env.depth, s);
   env.callee = d;
 }
@@ -525,7 +541,8 @@ TraceRay Machine::tracedRay(const CStmt& s, StageEnv& env) {
 // The payload a trace starts with: what the statement gives, zero elsewhere.
 Payload Machine::startPayload(const CStmt& s, StageEnv& env) {
   Payload p;
-  for (const CAssign& a : s.assigns) writeSlot(p, a.slot, eval(a.value, env));
+  for (const CAssign& a : s.assigns) writeSlot(p, a, eval(a.value, env));
+  if (s.src) p.location = s.src->trace.location;
   return p;
 }
 

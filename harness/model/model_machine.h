@@ -22,6 +22,8 @@ struct Payload {
   std::array<float, 4> color{};
   uint32_t value = 0;
   uint32_t depth = 0;
+  uint32_t location = 0;  // the trace's payload location (its type: Pipeline::payload_words)
+  std::array<uint32_t, kMaxPayloadWords> words{};
 };
 
 struct CallData {
@@ -155,6 +157,7 @@ class alignas(64) Machine {
   friend class TraceClassifier;  // model_exact_tier.cpp: classifyTrace's steps
   Val eval(const CExpr& e, StageEnv& env);
   Val builtin(const CExpr& e, StageEnv& env);
+  Val dataBuiltin(const CExpr& e, StageEnv& env);
   Val op(const CExpr& e, StageEnv& env);
   // The ops op() runs before evaluating arguments (spheres, shader record
   // words, short-circuit and/or); false for any other op.
@@ -250,6 +253,16 @@ class alignas(64) Machine {
   void checkCandidates(const Traversal& tr, const std::vector<ModelCandidate>& cands);
   void hitRecordOutOfRange(uint32_t instance, uint32_t geometry, const TraceRay& r);
   void missRecordOutOfRange(const TraceRay& r);
+  // A shader declaring the incoming payload type of location `shader_location`
+  // reached by a trace whose payload has another type.
+  // The shader is named `list`[index]`stage` ("pipeline.miss", 2, "").
+  void checkPayloadType(const Payload& p, uint32_t shader_location, const char* list,
+                        uint32_t index, const char* stage) {
+    if (sh_.c->pipeline.payload_words.size() > 1 && !ray_undefined_)
+      payloadTypeDiffers(p, shader_location, list, index, stage);
+  }
+  void payloadTypeDiffers(const Payload& p, uint32_t shader_location, const char* list,
+                          uint32_t index, const char* stage);
   void divisionByZero(const CExpr& e);
 
   const ModelShared& sh_;

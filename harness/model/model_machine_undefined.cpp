@@ -9,6 +9,7 @@
 //   CallableOutOfRange   the call is skipped (model_machine.cpp)
 //   DivisionByZero       uint a / 0 = 0xFFFFFFFF, a % 0 = 0
 //   RecursionTooDeep     the trace or call is skipped
+//   PayloadType          the shader runs on the trace's payload as it is
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -140,6 +141,22 @@ void Machine::missRecordOutOfRange(const TraceRay& r) {
   markUndefined(UndefinedReason::MissRecordOutOfRange,
                 "pipeline.sbt.miss: miss index " + std::to_string(r.miss & 0xFFFF) +
                     ", the miss region has " + std::to_string(default_miss_.size()));
+}
+
+void Machine::payloadTypeDiffers(const Payload& p, uint32_t shader_location, const char* list,
+                                 uint32_t index, const char* stage) {
+  const std::vector<uint32_t>& words = sh_.c->pipeline.payload_words;
+  const std::string shader = std::string(list) + "[" + std::to_string(index) + "]" + stage;
+  auto words_of = [&](uint32_t location) {
+    return location < words.size() ? words[location] : 0u;
+  };
+  if (words_of(p.location) == words_of(shader_location)) return;
+  markUndefined(UndefinedReason::PayloadType,
+                shader + ": its incoming payload has the type of location " +
+                    std::to_string(shader_location) + " (" +
+                    std::to_string(words_of(shader_location)) +
+                    " words), the trace passes location " + std::to_string(p.location) + " (" +
+                    std::to_string(words_of(p.location)) + " words)");
 }
 
 void Machine::divisionByZero(const CExpr& e) {

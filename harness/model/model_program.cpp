@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "program/payload_words.h"
 #include "results/record_layout.h"
 
 namespace rayspec {
@@ -39,7 +40,9 @@ const std::vector<std::string>& builtinNames() {
                                                  "call.color",
                                                  "call.value",
                                                  "callee.color",
-                                                 "callee.value"};
+                                                 "callee.value",
+                                                 "payload.word<i>",
+                                                 "child.word<i>"};
   return names;
 }
 
@@ -110,7 +113,11 @@ struct Compiler {
         break;
       case Expr::Kind::Builtin: {
         const auto& names = builtinNames();
-        const auto it = std::find(names.begin(), names.end(), e.name);
+        const auto word = payloadWordBuiltin(e.name);  // payload.word3: word<i>, index 3
+        if (word) r.index = word->index;
+        const auto it =
+            std::find(names.begin(), names.end(),
+                      word ? (word->child ? "child.word<i>" : "payload.word<i>") : e.name);
         if (it != names.end()) {
           r.builtin = static_cast<uint8_t>(it - names.begin());
           out.read_bits |= uint64_t{1} << r.builtin;
@@ -139,6 +146,7 @@ struct Compiler {
     if (f == "value") return Slot::Value;
     if (f == "position") return Slot::Position;
     if (f == "normal") return Slot::Normal;
+    if (payloadWordField(f)) return Slot::Word;
     return Slot::None;
   }
 
@@ -165,6 +173,7 @@ struct Compiler {
         if (a.field >= 0 && recordFields()[a.field].automatic) a.field = -1;
       } else {
         a.slot = slotOf(field);
+        if (auto w = payloadWordField(field)) a.word = static_cast<uint8_t>(*w);
       }
       r.assigns.push_back(std::move(a));
     }
@@ -241,6 +250,7 @@ CPipeline compilePipeline(const Case& c, const Plan& plan) {
     cg.intersection = add(g.intersection);
     if (cg.closest_hit) cg.closest_hit_counts = countsOnly(*cg.closest_hit);
     cg.any_hit_terminates = cg.any_hit && hasTerminate(*cg.any_hit);
+    cg.payload = g.payload;
     out.any_hit_terminates = out.any_hit_terminates || cg.any_hit_terminates;
     out.groups.push_back(cg);
   }

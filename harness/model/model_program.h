@@ -55,6 +55,8 @@ enum Builtin : uint8_t {
   kBiCallValue,
   kBiCalleeColor,
   kBiCalleeValue,
+  kBiPayloadWord,  // CExpr::index: the word
+  kBiChildWord,
   kBiCount,
   kBiUnknown = 0xFF
 };
@@ -106,18 +108,19 @@ struct CExpr {
   ValueType type = ValueType::Uint;
   uint8_t builtin = kBiUnknown;  // Builtin
   OpCode op = OpCode::Unknown;   // Op
-  uint32_t index = 0;            // RecordUint/RecordFloat: word; Vec: component count
-  Val literal;                   // Literal
+  uint32_t index = 0;  // RecordUint/RecordFloat: word; Vec: component count; payload/child word
+  Val literal;         // Literal
   std::vector<CExpr> args;
   const Expr* src = nullptr;  // for error messages
 };
 
-enum class Slot : uint8_t { Color, Value, Position, Normal, None };
+enum class Slot : uint8_t { Color, Value, Position, Normal, Word, None };
 enum class LightKind : uint8_t { Point, Spot, Directional };
 
 struct CAssign {
   int field = -1;          // Record: record field index (-1: unknown or automatic)
   Slot slot = Slot::None;  // SetPayload / SetCall / Call
+  uint8_t word = 0;        // Slot::Word: which payload word
   CExpr value;
 };
 
@@ -165,6 +168,7 @@ struct CHitGroup {
   const CProgram* intersection = nullptr;
   CountsOnly closest_hit_counts;
   bool any_hit_terminates = false;  // the any-hit has a `terminate` (R-ORDER-UNSPEC)
+  uint32_t payload = 0;             // HitGroup::payload: the location whose type it takes
 };
 // Does the program hold a `terminate` statement (at any nesting)?
 bool hasTerminate(const CProgram& p);

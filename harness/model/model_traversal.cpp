@@ -203,6 +203,8 @@ Flow Machine::report(const CStmt& s, StageEnv& env) {
     Flow ah = Flow::Continue;
     if (!tr->cur_opaque && tr->cur_group && tr->cur_group->any_hit) {
       // R-TMAX-VIEW: any-hit sees the candidate's t.
+      checkPayloadType(*tr->payload, tr->cur_group->payload, "pipeline.hit_groups",
+                       *tr->cur_rec->group, ".any_hit");
       StageEnv a =
           hitStage(Stage::AnyHit, tr->cur_rec->data, tr->payload, tr->ray, hv, t, tr->depth);
       ah = runAnyHit(*tr->cur_group->any_hit, a, hv, geometryFlags(*sh_.scene, *tr->cur));
@@ -327,6 +329,7 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
     if (!opaque && grp && grp->any_hit) {
       HitView hv = viewOf(scene, c, r, cand.instance, cand.geometry, cand.primitive);
       setHit(hv, static_cast<float>(cand.t), f.kind, cand.b1, cand.b2);
+      checkPayloadType(payload, grp->payload, "pipeline.hit_groups", *rec->group, ".any_hit");
       StageEnv a = hitStage(Stage::AnyHit, rec->data, &payload, r, hv, hv.t, tr.depth);
       ah = runAnyHit(*grp->any_hit, a, hv, g.flags);
       if (ah == Flow::Ignore) continue;
@@ -412,6 +415,8 @@ void Machine::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Com
       // R-UB: the closest-hit's record beyond the hit region; the model runs none.
       if (!rec && !ray_undefined_) hitRecordOutOfRange(best.instance, best.geometry, r);
       const CHitGroup* grp = groupOf(*sh_.programs, rec);
+      if (grp && grp->closest_hit)
+        checkPayloadType(payload, grp->payload, "pipeline.hit_groups", *rec->group, ".closest_hit");
       if (grp && grp->closest_hit && grp->closest_hit_counts.yes) {
         bump(grp->closest_hit_counts);
         bumpRuns(kRunsClosestHit);
@@ -430,6 +435,9 @@ void Machine::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Com
     if (mi >= default_miss_.size() && !ray_undefined_) missRecordOutOfRange(r);
     if (mi < default_miss_.size()) {
       const SbtRecord& rec = default_miss_[mi];
+      if (rec.group && *rec.group < c.pipeline.miss.size())
+        checkPayloadType(payload, c.pipeline.missPayload(*rec.group), "pipeline.miss", *rec.group,
+                         "");
       if (rec.group && *rec.group < c.pipeline.miss.size() &&
           sh_.programs->miss_counts[*rec.group].yes) {
         bump(sh_.programs->miss_counts[*rec.group]);

@@ -1,6 +1,8 @@
 // The table of built-ins, as documented in builtins.h.
 #include "program/builtins.h"
 
+#include "program/payload_words.h"
+
 namespace rayspec {
 namespace {
 
@@ -39,10 +41,15 @@ const std::vector<BuiltinInfo>& builtins() {
        "color of the incoming payload; in raygen the payload of its last trace"},
       {"payload.value", ValueType::Uint, M | C | A | R,
        "value of the incoming payload; in raygen the payload of its last trace"},
+      {"payload.word<i>", ValueType::Uint, M | C | A | R,
+       "word i (0..9) of the incoming payload, within its type's pipeline.payloads words; in "
+       "raygen the payload of its last trace (0 beyond that trace's type)"},
       {"depth", ValueType::Uint, M | C | A,
        "trace depth: 1 for a trace from raygen, +1 per nested trace"},
       {"child.color", ValueType::Vec4, C | M, "color of the payload of this stage's last trace"},
       {"child.value", ValueType::Uint, C | M, "value of the payload of this stage's last trace"},
+      {"child.word<i>", ValueType::Uint, C | M,
+       "word i of the payload of this stage's last trace (0 beyond that trace's type)"},
       {"call.position", ValueType::Vec3, K, "position of the incoming callable data"},
       {"call.normal", ValueType::Vec3, K, "normal of the incoming callable data"},
       {"call.color", ValueType::Vec4, K, "color of the incoming callable data"},
@@ -56,6 +63,9 @@ const std::vector<BuiltinInfo>& builtins() {
 }
 
 const BuiltinInfo* findBuiltin(const std::string& name) {
+  // payload.word3 is the table's payload.word<i>.
+  if (auto w = payloadWordBuiltin(name))
+    return findBuiltin(w->child ? "child.word<i>" : "payload.word<i>");
   for (const BuiltinInfo& b : builtins())
     if (name == b.name) return &b;
   return nullptr;

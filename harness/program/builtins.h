@@ -51,10 +51,12 @@ struct BuiltinInfo {
 //   aabb_min, aabb_max (Vec3; intersection: the primitive's box, object space)
 //   payload.color (Vec4), payload.value (Uint): the incoming payload in miss,
 //       closest-hit and any-hit; in raygen, the payload of its last trace
+//   payload.word<i> (Uint, i = 0..9): word i of the incoming payload (its
+//       type's pipeline.payloads words), in raygen of the last trace's payload
 //   depth (Uint; miss, closest-hit, any-hit: 1 for a trace from raygen, +1 per
 //       nested trace)
 //   child.color (Vec4), child.value (Uint): the payload of this stage's last
-//       nested trace (closest-hit, miss)
+//       nested trace (closest-hit, miss); child.word<i> (Uint) its word i
 //   call.position, call.normal (Vec3), call.color (Vec4), call.value (Uint):
 //       the incoming callable data (callable)
 //   callee.color (Vec4), callee.value (Uint): the callable data after this

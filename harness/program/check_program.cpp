@@ -7,6 +7,7 @@
 #include "program/builtins.h"
 #include "program/check_expr.h"
 #include "program/ops.h"
+#include "program/payload_words.h"
 #include "results/record_layout.h"
 
 namespace rayspec {
@@ -97,8 +98,9 @@ class Checker {
       case Stmt::Kind::Record:
         return record(s);
       case Stmt::Kind::SetPayload:
+        return dataFields(s, Data::Payload);
       case Stmt::Kind::SetCall:
-        return dataFields(s, false);
+        return dataFields(s, Data::CallData);
       case Stmt::Kind::Ignore:
       case Stmt::Kind::Terminate:
         return std::nullopt;
@@ -117,7 +119,7 @@ class Checker {
         return trace(s);
       case Stmt::Kind::Call:
         if (auto r = as(s.call_index, ValueType::Uint, "call index")) return r;
-        return dataFields(s, true);
+        return dataFields(s, Data::Call);
       case Stmt::Kind::Light:
         if (s.light != "point" && s.light != "spot" && s.light != "directional")
           return ProgramError{"unknown light '" + s.light + "' (point, spot, directional)", s.loc};
@@ -150,19 +152,25 @@ class Checker {
     return std::nullopt;
   }
 
-  // payload / call_data fields (color, value), and for `call` also position, normal.
-  std::optional<ProgramError> dataFields(Stmt& s, bool call) {
+  // payload / call_data fields (color, value), for a payload also its words
+  // (word<i>), and for `call` also position, normal.
+  enum class Data { Payload, CallData, Call };
+  std::optional<ProgramError> dataFields(Stmt& s, Data data) {
+    const bool call = data == Data::Call;
     for (auto& [name, value] : s.assigns) {
       ValueType want;
       if (name == "color")
         want = ValueType::Vec4;
-      else if (name == "value")
+      else if (name == "value" || (data == Data::Payload && payloadWordField(name)))
         want = ValueType::Uint;
       else if (call && (name == "position" || name == "normal"))
         want = ValueType::Vec3;
       else
         return ProgramError{"unknown field '" + name + "' (" +
-                                (call ? "position, normal, color, value" : "color, value") + ")",
+                                (call                    ? "position, normal, color, value"
+                                 : data == Data::Payload ? "color, value, word0 .. word9"
+                                                         : "color, value") +
+                                ")",
                             value.loc};
       if (auto r = as(value, want, name)) return r;
     }
@@ -195,7 +203,7 @@ class Checker {
       for (Expr& e : *slot.exprs)
         if (auto r = as(e, slot.type, std::string("trace ") + slot.name)) return r;
     }
-    return dataFields(s, false);  // the payload the trace starts with
+    return dataFields(s, Data::Payload);  // the payload the trace starts with
   }
 
   Stage stage_;

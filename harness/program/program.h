@@ -47,13 +47,15 @@ struct TraceArgs {
   std::vector<Expr> flags, cull_mask, sbt_offset, sbt_stride, miss;
   uint32_t tlas = 0;  // which top level (a constant: Instance::tlas)
   SourceLoc tlas_loc;
+  uint32_t location = 0;  // the payload location passed (a constant: Pipeline::payload_words)
+  SourceLoc location_loc;
 };
 
 struct Stmt {
   enum class Kind {
     Count,       // counter += 1 (global, atomic), name in `counter`
     Record,      // per-ray record fields of this launch: assigns[i] = (field, value)
-    SetPayload,  // incoming payload (hit/miss/any-hit) fields: "color", "value"
+    SetPayload,  // incoming payload (hit/miss/any-hit) fields: "color", "value", "word<i>"
     SetCall,     // incoming callable data (callable stage): "color", "value"
     Ignore,      // ignoreIntersectionEXT (any-hit only)
     Terminate,   // terminateRayEXT (any-hit only)

@@ -112,6 +112,8 @@ const char* undefinedReasonName(UndefinedReason r) {
       return "division-by-zero";
     case UndefinedReason::RecursionTooDeep:
       return "recursion-too-deep";
+    case UndefinedReason::PayloadType:
+      return "payload-type";
   }
   return "ray-parameters";
 }
@@ -121,7 +123,7 @@ bool parseUndefinedReason(const std::string& name, UndefinedReason* out) {
       UndefinedReason::RayParameters,       UndefinedReason::NanTriangle,
       UndefinedReason::HitRecordOutOfRange, UndefinedReason::MissRecordOutOfRange,
       UndefinedReason::CallableOutOfRange,  UndefinedReason::DivisionByZero,
-      UndefinedReason::RecursionTooDeep};
+      UndefinedReason::RecursionTooDeep,    UndefinedReason::PayloadType};
   return parseByName(name, out, all, undefinedReasonName);
 }
 

@@ -15,6 +15,7 @@ enum class UndefinedReason {
   CallableOutOfRange,
   DivisionByZero,    // integer division or modulo by zero in a stage program
   RecursionTooDeep,  // traceRay beyond max_recursion, or callables nested too deeply
+  PayloadType,       // the shader reached declares another incoming payload type than the trace's
 };
 const char* undefinedReasonName(UndefinedReason r);
 bool parseUndefinedReason(const std::string& name, UndefinedReason* out);

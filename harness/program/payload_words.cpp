@@ -1,0 +1,25 @@
+#include "program/payload_words.h"
+
+namespace rayspec {
+
+std::optional<uint32_t> payloadWordField(const std::string& field) {
+  const std::string prefix = "word";
+  if (field.size() != prefix.size() + 1 || field.compare(0, prefix.size(), prefix) != 0)
+    return std::nullopt;
+  const char d = field.back();
+  if (d < '0' || d > '9') return std::nullopt;
+  const uint32_t i = static_cast<uint32_t>(d - '0');
+  if (i >= kPayloadWordNames) return std::nullopt;
+  return i;
+}
+
+std::optional<PayloadWordRead> payloadWordBuiltin(const std::string& name) {
+  for (bool child : {false, true}) {
+    const std::string prefix = child ? "child." : "payload.";
+    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    if (auto i = payloadWordField(name.substr(prefix.size()))) return PayloadWordRead{child, *i};
+  }
+  return std::nullopt;
+}
+
+}  // namespace rayspec

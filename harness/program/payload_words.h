@@ -1,0 +1,28 @@
+// The extra uint words of a payload type (pipeline.payloads[].words): how a
+// program names them. An assignment to a payload writes `word<i>`; a program
+// reads `payload.word<i>` (the incoming payload, in raygen the last trace's)
+// and `child.word<i>` (the last nested trace's payload).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace rayspec {
+
+// At most this many words in one payload type (mirrored by case.h's
+// kMaxPayloadWords; the names word0 .. word9).
+constexpr uint32_t kPayloadWordNames = 10;
+
+// "word<i>" -> i for i < kPayloadWordNames; nullopt for any other name.
+std::optional<uint32_t> payloadWordField(const std::string& field);
+
+// A built-in name "payload.word<i>" or "child.word<i>": its prefix
+// ("payload" / "child") and i; nullopt for any other name.
+struct PayloadWordRead {
+  bool child = false;
+  uint32_t index = 0;
+};
+std::optional<PayloadWordRead> payloadWordBuiltin(const std::string& name);
+
+}  // namespace rayspec
