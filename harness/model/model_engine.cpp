@@ -184,6 +184,7 @@ ModelShared sharedState(const Case& c, const Plan& plan, const ModelOptions& opt
       c.pipeline.payload_words.size() == 1 &&
       std::none_of(programs.raygen[0].has.begin(), programs.raygen[0].has.end(),
                    [](bool b) { return b; });
+  shared.payload_types = c.pipeline.payload_words.size() > 1;
   shared.need_object_ray = programs.reads(kBiObjectOrigin) || programs.reads(kBiObjectDirection) ||
                            programs.reads_sphere;
   return shared;

@@ -127,6 +127,7 @@ struct ModelShared {
   // facing only for hit_kind, its object-space ray only for object_ray_*.
   bool need_facing = true, need_object_ray = true;
   bool raygen_traces_launch_ray = false;  // raygen is exactly `trace: {}`
+  bool payload_types = false;             // pipeline.payloads declares several locations
   ModelFaults faults;  // test only: the planted faults' hook (model/model_faults.h)
   AnyHitRepeat any_hit_repeat = AnyHitRepeat::None;  // R-AHIT-DUP (model_engine.h)
   // Some candidate may be undefined (a hit record beyond the region, a NaN
@@ -258,7 +259,7 @@ class alignas(64) Machine {
   // The shader is named `list`[index]`stage` ("pipeline.miss", 2, "").
   void checkPayloadType(const Payload& p, uint32_t shader_location, const char* list,
                         uint32_t index, const char* stage) {
-    if (sh_.c->pipeline.payload_words.size() > 1 && !ray_undefined_)
+    if (sh_.payload_types && !ray_undefined_)
       payloadTypeDiffers(p, shader_location, list, index, stage);
   }
   void payloadTypeDiffers(const Payload& p, uint32_t shader_location, const char* list,
