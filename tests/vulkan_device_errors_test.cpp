@@ -94,17 +94,43 @@ TEST(DeviceErrors, ADispatchTooLargeForTheDeviceIsNotSupported) {
   ctx.rt_props.shaderGroupBaseAlignment = 64;
   ctx.rt_props.maxShaderGroupStride = 4096;
   ctx.primitive_culling = true;
-  EXPECT_NO_THROW(checkCaseSupport(ctx, c));
+  EXPECT_NO_THROW(checkCaseSupport(ctx, c, derivePlan(c)));
   ctx.info.max_ray_dispatch_invocation_count = 17;
   try {
-    checkCaseSupport(ctx, c);
+    checkCaseSupport(ctx, c, derivePlan(c));
     ADD_FAILURE() << "no NotSupportedError";
   } catch (const NotSupportedError& e) {
     EXPECT_STREQ(e.what(), "launch of 18 rays > maxRayDispatchInvocationCount 17");
   }
   ctx.info.max_ray_dispatch_invocation_count = 1u << 20;
   ctx.info.max_launch_size[0] = 5;
-  EXPECT_THROW(checkCaseSupport(ctx, c), NotSupportedError);
+  EXPECT_THROW(checkCaseSupport(ctx, c, derivePlan(c)), NotSupportedError);
+}
+
+TEST(DeviceErrors, TheCullMaskBuiltinWithoutMaintenance1IsNotSupported) {
+  const Case c = suiteCase("builtins/cull-mask");
+  ASSERT_FALSE(c.name.empty());
+  const Plan plan = derivePlan(c);
+  ASSERT_TRUE(plan.cull_mask_builtin);
+  VulkanContext ctx;
+  ctx.info.max_ray_recursion_depth = 31;
+  for (uint64_t& size : ctx.info.max_launch_size) size = 1u << 16;
+  ctx.info.max_ray_dispatch_invocation_count = 1u << 20;
+  ctx.rt_props.shaderGroupHandleSize = 32;
+  ctx.rt_props.shaderGroupHandleAlignment = 32;
+  ctx.rt_props.shaderGroupBaseAlignment = 64;
+  ctx.rt_props.maxShaderGroupStride = 4096;
+  ctx.primitive_culling = true;
+  ctx.info.ray_tracing_maintenance1 = true;
+  EXPECT_NO_THROW(checkCaseSupport(ctx, c, plan));
+  ctx.info.ray_tracing_maintenance1 = false;
+  try {
+    checkCaseSupport(ctx, c, plan);
+    ADD_FAILURE() << "no NotSupportedError";
+  } catch (const NotSupportedError& e) {
+    EXPECT_NE(std::string(e.what()).find("VK_KHR_ray_tracing_maintenance1"), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

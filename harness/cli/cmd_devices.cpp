@@ -36,6 +36,8 @@ void printLimits(const DeviceInfo& d) {
               d.acceleration_structure_host_commands ? "yes" : "no");
   std::printf("        VK_KHR_pipeline_library        %s\n", d.pipeline_library ? "yes" : "no");
   std::printf("        VK_EXT_opacity_micromap        %s\n", d.opacity_micromap ? "yes" : "no");
+  std::printf("        VK_KHR_ray_tracing_maintenance1 %s\n",
+              d.ray_tracing_maintenance1 ? "yes" : "no");
 }
 
 // One manifest's devices; returns how many are usable.

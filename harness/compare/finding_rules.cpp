@@ -30,7 +30,7 @@ const Rules& decisionRules() {
 // data, shader records, nesting.
 const Rules& dataRules() {
   static const Rules r = {"R-PAYLOAD",   "R-CALLABLE",  "R-SBT-CALL", "R-SBT-RECORD",
-                          "R-RECURSION", "R-TMAX-VIEW", "R-BUILTIN"};
+                          "R-RECURSION", "R-TMAX-VIEW", "R-BUILTIN",  "R-CULLMASK-BUILTIN"};
   return r;
 }
 

@@ -100,8 +100,8 @@ std::vector<FaultImpl> sceneAndFlagMutations() {
   };
 }
 
-// Case mutations of the programs, the SBT, the order and the interval.
-std::vector<FaultImpl> programAndOrderMutations() {
+// Case mutations of the stage programs.
+std::vector<FaultImpl> programMutations() {
   using K = FaultKind;
   return {
       // Case mutations: stage programs.
@@ -133,6 +133,9 @@ std::vector<FaultImpl> programAndOrderMutations() {
        "only the first 24 bytes of a payload come back: writes to its words "
        "(pipeline.payloads) are lost",
        nullptr, payloadWordsLost},
+      {"cull-mask-builtin-default", K::CaseMutation,
+       "gl_CullMaskEXT reads 0xFF whatever cull mask the trace passed", nullptr,
+       cullMaskBuiltinDefault},
       {"hit-attributes-lost", K::CaseMutation,
        "the attribute an intersection shader reports is lost (reads 0)", nullptr,
        hitAttributesLost},
@@ -147,7 +150,13 @@ std::vector<FaultImpl> programAndOrderMutations() {
       {"intersection-runs-twice", K::CaseMutation,
        "legal: every intersection shader runs twice in a row for its primitive", nullptr,
        intersectionRunsTwice},
-      // Case mutations: the shader binding table.
+  };
+}
+
+// Case mutations of the shader binding table, the candidate order and the interval.
+std::vector<FaultImpl> sbtAndOrderMutations() {
+  using K = FaultKind;
+  return {
       {"hit-record-shifted", K::CaseMutation,
        "closest-hit of the wrong SBT record (record i runs record i+1's group)", nullptr,
        hitRecordShifted},
@@ -216,7 +225,7 @@ std::vector<FaultImpl> processFaults() {
 const std::vector<FaultImpl>& faultImpls() {
   static const std::vector<FaultImpl> table = [] {
     std::vector<FaultImpl> all;
-    for (auto part : {recordEdits, sceneAndFlagMutations, programAndOrderMutations,
+    for (auto part : {recordEdits, sceneAndFlagMutations, programMutations, sbtAndOrderMutations,
                       pipelineMutations, processFaults})
       for (FaultImpl& f : part()) all.push_back(std::move(f));
     return all;

@@ -6,6 +6,7 @@
 #include "fault/program_edit.h"
 #include "program/builtins.h"
 #include "program/payload_words.h"
+#include "program/walk_program.h"
 
 namespace rayspec {
 namespace {
@@ -177,6 +178,23 @@ std::string payloadWordsLost(Case& c, ModelOptions&) {
     });
   });
   return describeCount(n, "payload word writes lost on the way back");
+}
+
+// R-CULLMASK-BUILTIN: a device that never wires gl_CullMaskEXT to the
+// trace's cull mask, reading the all-instances mask 0xFF instead.
+std::string cullMaskBuiltinDefault(Case& c, ModelOptions&) {
+  size_t n = 0;
+  forEachProgram(c.pipeline, [&](Program& p, Stage) {
+    editExpressions(p, [&](Expr& e) {
+      if (e.kind != Expr::Kind::Builtin || e.name != "cull_mask") return;
+      e.kind = Expr::Kind::Literal;
+      e.type = ValueType::Uint;
+      e.literal = {0xFF};
+      e.name.clear();
+      ++n;
+    });
+  });
+  return describeCount(n, "reads of gl_CullMaskEXT give 0xFF");
 }
 
 std::string tlasIgnored(Case& c, ModelOptions&) {

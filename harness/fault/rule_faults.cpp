@@ -58,6 +58,7 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-DEGEN", {"degenerate-hit"}, {}},
       {"R-LIBRARY", {"library-groups-lost"}, {}},
       {"R-RAYGEN-REGION", {"raygen-group-ignored"}, {}},
+      {"R-CULLMASK-BUILTIN", {"cull-mask-builtin-default"}, {}},
       {"R-UB", {}, {}, fail, "never checked for a result (robustness probe only)"},
   };
   return table;

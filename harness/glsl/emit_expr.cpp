@@ -56,6 +56,7 @@ std::string builtin(const std::string& name, Stage stage) {
       {"ray_tmin", "gl_RayTminEXT"},
       {"ray_tmax", "gl_RayTmaxEXT"},
       {"incoming_ray_flags", "gl_IncomingRayFlagsEXT"},
+      {"cull_mask", "(gl_CullMaskEXT & 0xFFu)"},
       {"world_ray_origin", "gl_WorldRayOriginEXT"},
       {"world_ray_direction", "gl_WorldRayDirectionEXT"},
       {"object_ray_origin", "gl_ObjectRayOriginEXT"},

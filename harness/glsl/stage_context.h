@@ -21,6 +21,7 @@ struct StageUses {
   bool scene = false;                  // aabb_min / aabb_max / sphere_*
   bool sphere = false;                 // sphere_*
   bool hit_attribute = false;          // barycentrics read, or a report written
+  bool cull_mask = false;              // gl_CullMaskEXT read (GL_EXT_ray_cull_mask)
   bool counters = false;               // a count of a kept counter
   std::set<int> record_fields;         // indices (recordFields()) of fields written
 };

@@ -184,6 +184,8 @@ Val Machine::builtin(const CExpr& e, StageEnv& env) {
       return fromFloat(r->tmin);
     case kBiTmax:
       return fromFloat(env.tmax_view);
+    case kBiCullMask:  // the low 8 bits only (program/builtins.h)
+      return fromUint(r->cull_mask & 0xFFu);
     case kBiFlags:
       return fromUint(r->flags);
     case kBiWorldOrigin:

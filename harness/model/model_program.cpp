@@ -42,7 +42,8 @@ const std::vector<std::string>& builtinNames() {
                                                  "callee.color",
                                                  "callee.value",
                                                  "payload.word<i>",
-                                                 "child.word<i>"};
+                                                 "child.word<i>",
+                                                 "cull_mask"};
   return names;
 }
 

@@ -57,6 +57,7 @@ enum Builtin : uint8_t {
   kBiCalleeValue,
   kBiPayloadWord,  // CExpr::index: the word
   kBiChildWord,
+  kBiCullMask,
   kBiCount,
   kBiUnknown = 0xFF
 };

@@ -129,11 +129,12 @@ void planStatements(const std::vector<StageProgram>& programs, const Pipeline& p
       if (s.kind == Stmt::Kind::Call) plan.callables = true;
       if (s.kind == Stmt::Kind::Trace && sp.stage != Stage::Raygen) plan.nested_trace = true;
     });
-    if (sp.stage == Stage::Intersection)
-      walkExpressions(*sp.program, [&](const Expr& e) {
-        if (e.name == "aabb_min" || e.name == "aabb_max" || e.name.rfind("sphere_", 0) == 0)
-          plan.scene_data = true;
-      });
+    walkExpressions(*sp.program, [&](const Expr& e) {
+      if (e.kind == Expr::Kind::Builtin && e.name == "cull_mask") plan.cull_mask_builtin = true;
+      if (sp.stage == Stage::Intersection &&
+          (e.name == "aabb_min" || e.name == "aabb_max" || e.name.rfind("sphere_", 0) == 0))
+        plan.scene_data = true;
+    });
   }
   plan.trace_depth = plan.nested_trace ? std::max<uint32_t>(pipe.max_recursion, 1) : 1;
 }
@@ -217,6 +218,7 @@ std::vector<std::string> Plan::describe() const {
   line(scene_data, "scene data buffer (AABBs read by intersection programs)");
   line(shader_record_data, "shader record data");
   line(zero_records, "all-zero SBT records");
+  line(cull_mask_builtin, "gl_CullMaskEXT read (VK_KHR_ray_tracing_maintenance1)");
   std::string counters_line = "counters:";
   for (const auto& c : counters) counters_line += " " + c;
   lines.push_back("  " + counters_line);

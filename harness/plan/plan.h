@@ -28,6 +28,8 @@ struct Plan {
   bool masks = false;          // an instance mask or a cull mask is not 0xFF
   bool opacity_flags = false;  // opaque/no_opaque/cull_opaque/cull_no_opaque or force_* flags
   bool scene_data = false;     // an intersection program reads the AABBs (aabb_*, sphere_*)
+  bool cull_mask_builtin = false;          // a stage reads cull_mask (gl_CullMaskEXT: needs
+                                           // VK_KHR_ray_tracing_maintenance1)
   bool shader_record_data = false;         // some SBT record carries data
   bool zero_records = false;               // some SBT record is all zero
   std::vector<std::string> counters;       // counters kept

@@ -27,6 +27,10 @@ const std::vector<BuiltinInfo>& builtins() {
       {"ray_tmin", ValueType::Float, I | A | C | M, "gl_RayTminEXT"},
       {"ray_tmax", ValueType::Float, I | A | C | M, "gl_RayTmaxEXT"},
       {"incoming_ray_flags", ValueType::Uint, I | A | C | M, "gl_IncomingRayFlagsEXT"},
+      {"cull_mask", ValueType::Uint, I | A | C | M,
+       "gl_CullMaskEXT & 0xFF: the low 8 bits of the cull mask the trace passed, the bits "
+       "every reading of the specification agrees on (VK_KHR_ray_tracing_maintenance1; "
+       "NotSupported without it)"},
       {"world_ray_origin", ValueType::Vec3, I | A | C | M, "gl_WorldRayOriginEXT"},
       {"world_ray_direction", ValueType::Vec3, I | A | C | M, "gl_WorldRayDirectionEXT"},
       {"object_ray_origin", ValueType::Vec3, I | A | C, "gl_ObjectRayOriginEXT"},

@@ -41,7 +41,11 @@ struct BuiltinInfo {
 //   hit_kind (Uint; any-hit, closest-hit)
 //   hit_t (Float; any-hit: candidate t; closest-hit: the hit's t)
 //   hit (Uint; closest-hit 1, miss 0)
-//   ray_tmin, ray_tmax (Float), incoming_ray_flags (Uint),
+//   ray_tmin, ray_tmax (Float), incoming_ray_flags (Uint), cull_mask (Uint:
+//       gl_CullMaskEXT & 0xFF, VK_KHR_ray_tracing_maintenance1; the
+//       specification says the built-in holds the mask passed, OpTraceRayKHR
+//       uses only its low 8 bits, and lavapipe (Mesa 25) keeps only those:
+//       the upper 24 bits are not judged),
 //   world_ray_origin, world_ray_direction (Vec3)
 //       (intersection, any-hit, closest-hit, miss)
 //   object_ray_origin, object_ray_direction (Vec3; intersection, any-hit, closest-hit)

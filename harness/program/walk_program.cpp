@@ -3,27 +3,22 @@
 namespace rayspec {
 namespace {
 
-void walkExpr(const Expr& e, const std::function<void(const Expr&)>& visit) {
+// One walker for const and mutable programs: P is Program or const Program,
+// E is Expr or const Expr.
+template <typename E, typename Visit>
+void walkExpr(E& e, const Visit& visit) {
   visit(e);
-  for (const Expr& a : e.args) walkExpr(a, visit);
+  for (auto& a : e.args) walkExpr(a, visit);
 }
 
-void walkList(const std::vector<Expr>& list, const std::function<void(const Expr&)>& visit) {
-  for (const Expr& e : list) walkExpr(e, visit);
+template <typename L, typename Visit>
+void walkList(L& list, const Visit& visit) {
+  for (auto& e : list) walkExpr(e, visit);
 }
 
-}  // namespace
-
-void walkStatements(const Program& p, const std::function<void(const Stmt&)>& visit) {
-  for (const Stmt& s : p) {
-    visit(s);
-    walkStatements(s.then_, visit);
-    walkStatements(s.else_, visit);
-  }
-}
-
-void walkOwnExpressions(const Stmt& s, const std::function<void(const Expr&)>& visit) {
-  for (const auto& [field, value] : s.assigns) walkExpr(value, visit);
+template <typename S, typename Visit>
+void ownExpressions(S& s, const Visit& visit) {
+  for (auto& [field, value] : s.assigns) walkExpr(value, visit);
   switch (s.kind) {
     case Stmt::Kind::If:
       walkExpr(s.cond, visit);
@@ -37,9 +32,9 @@ void walkOwnExpressions(const Stmt& s, const std::function<void(const Expr&)>& v
       walkExpr(s.call_index, visit);
       break;
     case Stmt::Kind::Trace: {
-      const TraceArgs& t = s.trace;
-      for (const auto* list : {&t.origin, &t.direction, &t.tmin, &t.tmax, &t.flags, &t.cull_mask,
-                               &t.sbt_offset, &t.sbt_stride, &t.miss})
+      auto& t = s.trace;
+      for (auto* list : {&t.origin, &t.direction, &t.tmin, &t.tmax, &t.flags, &t.cull_mask,
+                         &t.sbt_offset, &t.sbt_stride, &t.miss})
         walkList(*list, visit);
       break;
     }
@@ -48,8 +43,31 @@ void walkOwnExpressions(const Stmt& s, const std::function<void(const Expr&)>& v
   }
 }
 
+template <typename P, typename Visit>
+void statements(P& p, const Visit& visit) {
+  for (auto& s : p) {
+    visit(s);
+    statements(s.then_, visit);
+    statements(s.else_, visit);
+  }
+}
+
+}  // namespace
+
+void walkStatements(const Program& p, const std::function<void(const Stmt&)>& visit) {
+  statements(p, visit);
+}
+
+void walkOwnExpressions(const Stmt& s, const std::function<void(const Expr&)>& visit) {
+  ownExpressions(s, visit);
+}
+
 void walkExpressions(const Program& p, const std::function<void(const Expr&)>& visit) {
-  walkStatements(p, [&](const Stmt& s) { walkOwnExpressions(s, visit); });
+  statements(p, [&](const Stmt& s) { ownExpressions(s, visit); });
+}
+
+void editExpressions(Program& p, const std::function<void(Expr&)>& visit) {
+  statements(p, [&](Stmt& s) { ownExpressions(s, visit); });
 }
 
 }  // namespace rayspec

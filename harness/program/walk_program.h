@@ -11,5 +11,7 @@ void walkStatements(const Program& p, const std::function<void(const Stmt&)>& vi
 void walkExpressions(const Program& p, const std::function<void(const Expr&)>& visit);
 // The expressions of s itself (not of the statements nested in it).
 void walkOwnExpressions(const Stmt& s, const std::function<void(const Expr&)>& visit);
+// Every expression of a program (nested ones included), to change in place.
+void editExpressions(Program& p, const std::function<void(Expr&)>& visit);
 
 }  // namespace rayspec

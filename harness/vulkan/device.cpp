@@ -48,17 +48,24 @@ void createDevice(VulkanContext& ctx) {
   v12_on.scalarBlockLayout = v12.scalarBlockLayout;
   v12_on.vulkanMemoryModel = v12.vulkanMemoryModel;
   v12_on.vulkanMemoryModelDeviceScope = v12.vulkanMemoryModelDeviceScope;
+  VkPhysicalDeviceRayTracingMaintenance1FeaturesKHR maintenance1_on{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_MAINTENANCE_1_FEATURES_KHR};
+  maintenance1_on.rayTracingMaintenance1 = VK_TRUE;
   VkPhysicalDeviceFeatures2 on{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   on.features.shaderInt64 = have.features.shaderInt64;
   on.pNext = &v12_on;
   v12_on.pNext = &rt_on;
   rt_on.pNext = &as_on;
+  // gl_CullMaskEXT (the cull_mask built-in): describeDevice found the feature.
+  if (ctx.info.ray_tracing_maintenance1) as_on.pNext = &maintenance1_on;
   ctx.primitive_culling = rt.rayTraversalPrimitiveCulling == VK_TRUE;
 
   std::vector<const char*> extensions = {VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
                                          VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
                                          VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
   if (ctx.info.pipeline_library) extensions.push_back(VK_KHR_PIPELINE_LIBRARY_EXTENSION_NAME);
+  if (ctx.info.ray_tracing_maintenance1)
+    extensions.push_back(VK_KHR_RAY_TRACING_MAINTENANCE_1_EXTENSION_NAME);
   // Its dependency synchronization2 is core from Vulkan 1.3.
   if (ctx.info.opacity_micromap && ctx.info.api_version_number >= VK_API_VERSION_1_3)
     extensions.push_back(VK_EXT_OPACITY_MICROMAP_EXTENSION_NAME);

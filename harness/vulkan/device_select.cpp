@@ -52,6 +52,8 @@ void readExtensions(VkPhysicalDevice physical, DeviceInfo& d) {
       hasDeviceExtension(exts, VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME);
   d.pipeline_library = hasDeviceExtension(exts, VK_KHR_PIPELINE_LIBRARY_EXTENSION_NAME);
   d.opacity_micromap = hasDeviceExtension(exts, VK_EXT_OPACITY_MICROMAP_EXTENSION_NAME);
+  d.ray_tracing_maintenance1 =
+      hasDeviceExtension(exts, VK_KHR_RAY_TRACING_MAINTENANCE_1_EXTENSION_NAME);
 }
 
 // Identity (UUIDs, driver) and the ray tracing pipeline's properties.
@@ -96,10 +98,13 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
   VkPhysicalDeviceAccelerationStructureFeaturesKHR as_features{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
+  VkPhysicalDeviceRayTracingMaintenance1FeaturesKHR maintenance1{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_MAINTENANCE_1_FEATURES_KHR};
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   void** next = &features.pNext;
   if (d.ray_tracing_extension) chain(next, rt_features);
   if (d.acceleration_structure_extension) chain(next, as_features);
+  if (d.ray_tracing_maintenance1) chain(next, maintenance1);
   vkGetPhysicalDeviceFeatures2(physical, &features);
   const bool vk12 = d.api_version_number >= VK_API_VERSION_1_2;
   d.ray_tracing_pipeline = vk12 && d.ray_tracing_extension && rt_features.rayTracingPipeline;
@@ -107,6 +112,7 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
       vk12 && d.acceleration_structure_extension && as_features.accelerationStructure;
   d.acceleration_structure_host_commands =
       d.acceleration_structure_extension && as_features.accelerationStructureHostCommands;
+  d.ray_tracing_maintenance1 = d.ray_tracing_maintenance1 && maintenance1.rayTracingMaintenance1;
 }
 
 }  // namespace

@@ -44,7 +44,7 @@ bool usesSkipRayFlags(const Rays& rays) {
 
 }  // namespace
 
-void checkCaseSupport(const VulkanContext& ctx, const Case& c) {
+void checkCaseSupport(const VulkanContext& ctx, const Case& c, const Plan& plan) {
   const DeviceInfo& d = ctx.info;
   if (c.rays.rays.size() != static_cast<size_t>(c.rays.width) * c.rays.height ||
       c.rays.rays.empty())
@@ -57,6 +57,9 @@ void checkCaseSupport(const VulkanContext& ctx, const Case& c) {
   if (micromap_flags && !(d.opacity_micromap && d.api_version_number >= VK_API_VERSION_1_3))
     throw NotSupportedError(
         "scene.instances[].flags: opacity micromap flags need VK_EXT_opacity_micromap");
+  if (plan.cull_mask_builtin && !d.ray_tracing_maintenance1)
+    throw NotSupportedError(
+        "cull_mask: gl_CullMaskEXT needs VK_KHR_ray_tracing_maintenance1 (rayTracingMaintenance1)");
   if (!c.pipeline.libraries.empty() && !d.pipeline_library)
     throw NotSupportedError("pipeline.libraries: the device lacks VK_KHR_pipeline_library");
   if (c.pipeline.max_recursion > d.max_ray_recursion_depth)
@@ -93,7 +96,7 @@ void checkCaseSupport(const VulkanContext& ctx, const Case& c) {
 }
 
 void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results& r) {
-  checkCaseSupport(ctx, c);
+  checkCaseSupport(ctx, c, plan);
   StepTimer glsl(r.cost, CostStep::GlslGeneration);
   const GeneratedPipeline generated = generateGlsl(c, plan);
   glsl.stop();

@@ -11,7 +11,7 @@ namespace rayspec {
 // Throws NotSupportedError when the device's limits or features cannot run
 // the case (recursion depth, launch size, dispatch size, primitive culling,
 // the SBT's strides), before anything is built.
-void checkCaseSupport(const VulkanContext& ctx, const Case& c);
+void checkCaseSupport(const VulkanContext& ctx, const Case& c, const Plan& plan);
 
 // Fills r's outputs; throws ShaderCompileError, NotSupportedError or
 // VulkanError (VulkanEngine::run turns them into the status). Every object

@@ -63,6 +63,9 @@ struct DeviceInfo {
   // Optional features a case may need (NotSupported without them).
   bool pipeline_library = false;  // VK_KHR_pipeline_library
   bool opacity_micromap = false;  // VK_EXT_opacity_micromap (on a Vulkan 1.3 device)
+  // VK_KHR_ray_tracing_maintenance1 with its rayTracingMaintenance1 feature
+  // (gl_CullMaskEXT, the cull_mask built-in).
+  bool ray_tracing_maintenance1 = false;
 };
 
 // Every physical device the loader sees (with or without ray tracing).
