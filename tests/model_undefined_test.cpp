@@ -262,6 +262,94 @@ outputs:
   }
 }
 
+// ---- NullShader (R-NULL-SHADERS) -------------------------------------------
+
+// Ray 0 hits through record 0; ray 1 hits the triangle of the all-zero hit
+// record 1; ray 2 misses through the all-zero miss record 1; ray 3 misses
+// through miss record 0. FLAGS and OPACITY are filled in by each test.
+const char* kNullShader = R"(rules: [R-UB]
+scene:
+  blas:
+    tri:
+      - triangles:
+          vertices: [[-1, -1, 0], [2, -1, 0], [-1, 2, 0]]
+        flags: OPACITY
+  instances:
+    - {blas: tri}
+    - {blas: tri, sbt_offset: 1, transform: {translate: [10, 0, 0]}}
+rays:
+  list:
+    - {origin: [0, 0, 1], direction: [0, 0, -1]}
+    - {origin: [10, 0, 1], direction: [0, 0, -1]}
+    - {origin: [50, 0, 1], direction: [0, 0, -1], miss: 1}
+    - {origin: [50, 0, 1], direction: [0, 0, -1]}
+pipeline:
+  flags: FLAGS
+  miss:
+    - [record: {hit: 0}]
+  hit_groups:
+    - any_hit: [record: {value1: 5}]
+      closest_hit: [record: {hit: 1}]
+  sbt:
+    miss: [0, zero]
+    hit: [0, zero]
+outputs:
+  per_ray: [hit, value1]
+)";
+
+Case nullShaderCase(const std::string& flags, const std::string& opacity) {
+  std::string text = kNullShader;
+  text.replace(text.find("FLAGS"), 5, flags);
+  text.replace(text.find("OPACITY"), 7, opacity);
+  return parseInline(text);
+}
+
+TEST(ModelUndefined, AZeroRecordWhereANoNullFlagPromisesAShader) {
+  const std::string any_hit = "pipeline.sbt.hit: record 1 is all zero where an any-hit would run";
+  const std::string closest =
+      "pipeline.sbt.hit: record 1 is all zero where a closest-hit would run";
+  const std::string miss = "pipeline.sbt.miss: record 1 is all zero where a miss shader would run";
+  struct Variant {
+    const char* flags;
+    const char* opacity;
+    std::map<uint32_t, Expected> undefined;
+  };
+  const Variant variants[] = {
+      {"[]", "[]", {}},  // without a flag a zero record runs nothing: defined
+      {"[no_null_any_hit]", "[]", {{1, {UndefinedReason::NullShader, any_hit}}}},
+      // An opaque triangle runs no any-hit: the promise is not tested.
+      {"[no_null_any_hit]", "[opaque]", {}},
+      {"[no_null_closest_hit]", "[opaque]", {{1, {UndefinedReason::NullShader, closest}}}},
+      {"[no_null_miss]", "[]", {{2, {UndefinedReason::NullShader, miss}}}},
+      {"[no_null_any_hit, no_null_miss]",
+       "[]",
+       {{1, {UndefinedReason::NullShader, "no_null_any_hit"}},
+        {2, {UndefinedReason::NullShader, "no_null_miss"}}}},
+  };
+  for (const Variant& v : variants) {
+    SCOPED_TRACE(std::string(v.flags) + " " + v.opacity);
+    const Case c = nullShaderCase(v.flags, v.opacity);
+    for (ModelTier tier : kTiers) {
+      const Results r = runTier(c, tier);
+      expectUndefined(r, v.undefined, modelTierName(tier));
+      EXPECT_EQ(word(r, 0, "hit"), 1u);
+    }
+  }
+}
+
+TEST(ModelUndefined, NoNullFlagsNeedTheShaderInEveryHitGroup) {
+  std::string text = kNullShader;
+  text.replace(text.find("FLAGS"), 5, "[no_null_any_hit, no_null_closest_hit]");
+  text.replace(text.find("OPACITY"), 7, "[]");
+  text.replace(text.find("    - any_hit: [record: {value1: 5}]\n"), 37, "    - ");
+  const ParseResult p = parseCaseText(text, "model/inline.yaml", "model/inline");
+  ASSERT_EQ(p.errors.size(), 1u);
+  EXPECT_EQ(p.errors[0].loc.field, "pipeline.hit_groups[0]");
+  EXPECT_NE(p.errors[0].message.find("no_null_any_hit, so every hit group needs an any_hit"),
+            std::string::npos)
+      << p.errors[0].message;
+}
+
 // ---- DivisionByZero -------------------------------------------------------
 
 const char* kDivision = R"(rules: [R-UB]

@@ -12,10 +12,18 @@ using FlagTable = std::vector<std::pair<const char*, uint32_t>>;
 const FlagTable& geometryFlagNames();  // opaque, no_duplicate_any_hit
 const FlagTable& instanceFlagNames();  // triangle_facing_cull_disable, ...
 const FlagTable& rayFlagNames();       // opaque, no_opaque, terminate_on_first_hit, ...
-const FlagTable& pipelineFlagNames();  // skip_triangles, skip_aabbs
+const FlagTable& pipelineFlagNames();  // skip_triangles, skip_aabbs, no_null_*
 
 // VkPipelineCreateFlagBits values of the pipeline flags.
 constexpr uint32_t kPipelineSkipTriangles = 0x1000;
 constexpr uint32_t kPipelineSkipAabbs = 0x2000;
+// NO_NULL_*_SHADERS (R-NULL-SHADERS): the shader of that kind is present
+// wherever it would run; reaching an all-zero record for one is undefined.
+constexpr uint32_t kPipelineNoNullAnyHit = 0x4000;
+constexpr uint32_t kPipelineNoNullClosestHit = 0x8000;
+constexpr uint32_t kPipelineNoNullMiss = 0x10000;
+constexpr uint32_t kPipelineNoNullIntersection = 0x20000;
+constexpr uint32_t kPipelineNoNullShaders = kPipelineNoNullAnyHit | kPipelineNoNullClosestHit |
+                                            kPipelineNoNullMiss | kPipelineNoNullIntersection;
 
 }  // namespace rayspec

@@ -157,6 +157,22 @@ void parseRaygenGroups(YamlReader& r, const YAML::Node& n, Pipeline& p) {
     if (i != selected) p.other_raygens.push_back(std::move(programs[i]));
 }
 
+// R-NULL-SHADERS: under no_null_any_hit / no_null_closest_hit every hit
+// group names that shader (VUID-VkRayTracingPipelineCreateInfoKHR-flags-03470,
+// -03471); an all-zero SBT record is what may still be reached (undefined).
+void checkNoNullGroups(YamlReader& r, const Pipeline& p) {
+  for (const HitGroup& g : p.hit_groups) {
+    if ((p.flags & kPipelineNoNullAnyHit) && !g.any_hit)
+      r.error(g.loc,
+              "pipeline.flags has no_null_any_hit, so every hit group needs an any_hit "
+              "(VUID-VkRayTracingPipelineCreateInfoKHR-flags-03470)");
+    if ((p.flags & kPipelineNoNullClosestHit) && !g.closest_hit)
+      r.error(g.loc,
+              "pipeline.flags has no_null_closest_hit, so every hit group needs a "
+              "closest_hit (VUID-VkRayTracingPipelineCreateInfoKHR-flags-03471)");
+  }
+}
+
 }  // namespace
 
 void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
@@ -204,6 +220,7 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
     parsePrograms(r, v, "pipeline.callables", p.callables);
 
   if (auto v = YamlReader::get(n, "libraries"); v.IsDefined()) parseLibraries(r, v, p);
+  checkNoNullGroups(r, p);
 
   p.sbt_miss = defaultRegion(p.miss.size());
   p.sbt_hit = defaultRegion(p.hit_groups.size());

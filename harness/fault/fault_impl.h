@@ -86,6 +86,7 @@ std::string payloadWritesLost(Case& c, ModelOptions& o);
 std::string payloadStartLost(Case& c, ModelOptions& o);
 std::string payloadWordsLost(Case& c, ModelOptions& o);
 std::string cullMaskBuiltinDefault(Case& c, ModelOptions& o);
+std::string noNullShadersDropped(Case& c, ModelOptions& o);
 std::string tlasIgnored(Case& c, ModelOptions& o);
 std::string raygenGroupIgnored(Case& c, ModelOptions& o);
 std::string libraryGroupsLost(Case& c, ModelOptions& o);

@@ -133,6 +133,9 @@ std::vector<FaultImpl> programMutations() {
        "only the first 24 bytes of a payload come back: writes to its words "
        "(pipeline.payloads) are lost",
        nullptr, payloadWordsLost},
+      {"no-null-shaders-dropped", K::CaseMutation,
+       "a pipeline with no_null_* flags runs as if every shader of those kinds were absent",
+       nullptr, noNullShadersDropped},
       {"cull-mask-builtin-default", K::CaseMutation,
        "gl_CullMaskEXT reads 0xFF whatever cull mask the trace passed", nullptr,
        cullMaskBuiltinDefault},

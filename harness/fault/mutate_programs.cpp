@@ -2,6 +2,7 @@
 // meaning wrong acts as the correct one on the changed program.
 #include <algorithm>
 
+#include "case/flag_names.h"
 #include "fault/fault_impl.h"
 #include "fault/program_edit.h"
 #include "program/builtins.h"
@@ -195,6 +196,21 @@ std::string cullMaskBuiltinDefault(Case& c, ModelOptions&) {
     });
   });
   return describeCount(n, "reads of gl_CullMaskEXT give 0xFF");
+}
+
+// R-NULL-SHADERS: a device that reads a NO_NULL_*_SHADERS flag backwards,
+// running the pipeline as if every shader of that kind were absent.
+std::string noNullShadersDropped(Case& c, ModelOptions&) {
+  const uint32_t flags = c.pipeline.flags;
+  size_t n = 0;
+  for (HitGroup& g : c.pipeline.hit_groups) {
+    if ((flags & kPipelineNoNullAnyHit) && g.any_hit) n += (g.any_hit.reset(), 1);
+    if ((flags & kPipelineNoNullClosestHit) && g.closest_hit) n += (g.closest_hit.reset(), 1);
+    if ((flags & kPipelineNoNullIntersection) && g.intersection) n += (g.intersection.reset(), 1);
+  }
+  if (flags & kPipelineNoNullMiss)
+    for (Program& m : c.pipeline.miss) n += (m.clear(), 1);
+  return describeCount(n, "shaders a no_null_* flag promises run as absent");
 }
 
 std::string tlasIgnored(Case& c, ModelOptions&) {

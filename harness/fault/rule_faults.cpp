@@ -59,6 +59,7 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-LIBRARY", {"library-groups-lost"}, {}},
       {"R-RAYGEN-REGION", {"raygen-group-ignored"}, {}},
       {"R-CULLMASK-BUILTIN", {"cull-mask-builtin-default"}, {}},
+      {"R-NULL-SHADERS", {"no-null-shaders-dropped"}, {}},
       {"R-UB", {}, {}, fail, "never checked for a result (robustness probe only)"},
   };
   return table;

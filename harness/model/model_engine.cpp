@@ -13,6 +13,7 @@
 #include <sys/mman.h>
 #endif
 
+#include "case/flag_names.h"
 #include "model/any_hit_repeat.h"
 #include "model/model_machine.h"
 #include "model/model_program.h"
@@ -169,15 +170,19 @@ ModelShared sharedState(const Case& c, const Plan& plan, const ModelOptions& opt
   shared.plan = &plan;
   shared.scene = &scene;
   shared.programs = &programs;
-  shared.direct =
-      !scene.filters && !hasOwnTriangles(scene) && opt.faults.order == CandidateOrder::Distance;
+  // A NO_NULL any-hit or intersection promise is checked on every candidate
+  // (Machine::checkCandidates), which a direct run does not see.
+  const bool no_null_candidates =
+      (c.pipeline.flags & (kPipelineNoNullAnyHit | kPipelineNoNullIntersection)) != 0;
+  shared.direct = !scene.filters && !hasOwnTriangles(scene) &&
+                  opt.faults.order == CandidateOrder::Distance && !no_null_candidates;
   shared.faults = opt.faults;
   shared.any_hit_repeat = opt.any_hit_repeat;
   shared.need_facing = programs.reads(kBiHitKind);
   // Read by the candidate path only (Machine::checkCandidates): a direct
   // run sees no candidates, so it is not worked out there.
-  shared.check_candidates =
-      !shared.direct && (hitRecordMayBeOutOfRange(c, false) || hasNanTriangles(scene));
+  shared.check_candidates = !shared.direct && (hitRecordMayBeOutOfRange(c, false) ||
+                                               hasNanTriangles(scene) || no_null_candidates);
   shared.raygen_traces_launch_ray =
       programs.raygen.size() == 1 && programs.raygen[0].kind == Stmt::Kind::Trace &&
       programs.raygen[0].assigns.empty() && programs.raygen[0].src->trace.tlas == 0 &&

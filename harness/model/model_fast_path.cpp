@@ -3,6 +3,7 @@
 // or for a block of launch rays whose programs are counts only.
 #include <bit>
 
+#include "case/flag_names.h"
 #include "model/traversal.h"
 #include "results/record_layout.h"
 
@@ -122,8 +123,8 @@ void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
   const CPipeline& programs = *sh_.programs;
   const uint32_t words = records_ ? recordWords() : 0;
   uint32_t pipe_flags = 0;
-  if (sh_.c->pipeline.flags & 0x1000) pipe_flags |= kRaySkipTriangles;
-  if (sh_.c->pipeline.flags & 0x2000) pipe_flags |= kRaySkipAabbs;
+  if (sh_.c->pipeline.flags & kPipelineSkipTriangles) pipe_flags |= kRaySkipTriangles;
+  if (sh_.c->pipeline.flags & kPipelineSkipAabbs) pipe_flags |= kRaySkipAabbs;
   const ModelScene& scene = *sh_.scene;
   const RTCScene top = scene.tops[0];  // launch rays traverse the first top level
   const bool robust = scene.tier == ModelTier::Robust;

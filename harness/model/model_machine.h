@@ -265,6 +265,14 @@ class alignas(64) Machine {
   void payloadTypeDiffers(const Payload& p, uint32_t shader_location, const char* list,
                           uint32_t index, const char* stage);
   void divisionByZero(const CExpr& e);
+  // R-NULL-SHADERS: a shader of kind `flag` (a pipeline flag no_null_*) would
+  // run from an all-zero SBT record of `region`: undefined when the pipeline
+  // has that flag.
+  void nullShader(uint32_t flag, const char* shader, const char* region, uint32_t record) {
+    if ((sh_.c->pipeline.flags & flag) && !ray_undefined_)
+      nullShaderReached(flag, shader, region, record);
+  }
+  void nullShaderReached(uint32_t flag, const char* shader, const char* region, uint32_t record);
 
   const ModelShared& sh_;
   uint32_t* records_;

@@ -10,6 +10,7 @@
 //   DivisionByZero       uint a / 0 = 0xFFFFFFFF, a % 0 = 0
 //   RecursionTooDeep     the trace or call is skipped
 //   PayloadType          the shader runs on the trace's payload as it is
+//   NullShader           no shader runs (as for any all-zero record)
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -159,6 +160,17 @@ void Machine::payloadTypeDiffers(const Payload& p, uint32_t shader_location, con
                     std::to_string(words_of(p.location)) + " words)");
 }
 
+void Machine::nullShaderReached(uint32_t flag, const char* shader, const char* region,
+                                uint32_t record) {
+  std::string name = "no_null_*";
+  for (const auto& [n, bit] : pipelineFlagNames())
+    if (bit == flag) name = n;
+  markUndefined(UndefinedReason::NullShader, std::string("pipeline.sbt.") + region + ": record " +
+                                                 std::to_string(record) + " is all zero where " +
+                                                 shader + " would run, which pipeline.flags " +
+                                                 name + " rules out");
+}
+
 void Machine::divisionByZero(const CExpr& e) {
   if (ray_undefined_) return;
   const std::string field =
@@ -192,15 +204,23 @@ void Machine::checkCandidates(const Traversal& tr, const std::vector<ModelCandid
     const double tl = tr.tol(cand.t);
     if (cand.t < r.tmin - tl || cand.t > r.tmax + tl) continue;
     // A device reads the record of every box (its intersection shader runs)
-    // and of every non-opaque triangle (its any-hit may run), in any order.
-    if (hitRecord(cand.instance, cand.geometry, r)) continue;
+    // and of every non-opaque triangle (its any-hit may run), in any order:
+    // beyond the hit region, or all zero where the pipeline promises that
+    // shader (R-NULL-SHADERS), the ray is undefined.
+    const SbtRecord* rec = hitRecord(cand.instance, cand.geometry, r);
+    if (rec && rec->group) continue;
     const bool needed =
         cand.aabb || (!opaque && (cand.hit || cand.ambiguity != TriAmbiguity::None) &&
                       !facing(scene, cand, r, tr.flags).culled);
-    if (needed) {
+    if (needed && !rec) {
       hitRecordOutOfRange(cand.instance, cand.geometry, r);
       return;
     }
+    if (needed)
+      nullShader(cand.aabb ? kPipelineNoNullIntersection : kPipelineNoNullAnyHit,
+                 cand.aabb ? "an intersection shader" : "an any-hit", "hit",
+                 static_cast<uint32_t>(hitRecordIndex(cand.instance, cand.geometry, r)));
+    if (ray_undefined_) return;
   }
 }
 

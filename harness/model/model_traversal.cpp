@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "case/flag_names.h"
 #include "model/sphere_error.h"
 #include "model/traversal.h"
 
@@ -228,8 +229,8 @@ Flow Machine::report(const CStmt& s, StageEnv& env) {
 
 Payload Machine::trace(const TraceRay& r, uint32_t depth, const CStmt* site, Payload payload) {
   uint32_t flags = r.flags;
-  if (sh_.c->pipeline.flags & 0x1000) flags |= kRaySkipTriangles;
-  if (sh_.c->pipeline.flags & 0x2000) flags |= kRaySkipAabbs;
+  if (sh_.c->pipeline.flags & kPipelineSkipTriangles) flags |= kRaySkipTriangles;
+  if (sh_.c->pipeline.flags & kPipelineSkipAabbs) flags |= kRaySkipAabbs;
   payload.depth = depth;
   // R-UB: a ray with a non-finite, NaN or negative parameter finds nothing
   // (validRay keeps it from Embree) and misses; one with an illegal flag
@@ -415,6 +416,9 @@ void Machine::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Com
       // R-UB: the closest-hit's record beyond the hit region; the model runs none.
       if (!rec && !ray_undefined_) hitRecordOutOfRange(best.instance, best.geometry, r);
       const CHitGroup* grp = groupOf(*sh_.programs, rec);
+      if (rec && !rec->group)
+        nullShader(kPipelineNoNullClosestHit, "a closest-hit", "hit",
+                   static_cast<uint32_t>(hitRecordIndex(best.instance, best.geometry, r)));
       if (grp && grp->closest_hit)
         checkPayloadType(payload, grp->payload, "pipeline.hit_groups", *rec->group, ".closest_hit");
       if (grp && grp->closest_hit && grp->closest_hit_counts.yes) {
@@ -435,6 +439,7 @@ void Machine::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Com
     if (mi >= default_miss_.size() && !ray_undefined_) missRecordOutOfRange(r);
     if (mi < default_miss_.size()) {
       const SbtRecord& rec = default_miss_[mi];
+      if (!rec.group) nullShader(kPipelineNoNullMiss, "a miss shader", "miss", mi);
       if (rec.group && *rec.group < c.pipeline.miss.size())
         checkPayloadType(payload, c.pipeline.missPayload(*rec.group), "pipeline.miss", *rec.group,
                          "");

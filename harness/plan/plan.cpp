@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "case/flag_names.h"
 #include "plan/walk_program.h"
 
 namespace rayspec {
@@ -95,9 +96,9 @@ bool planGeometry(const Scene& scene, Plan& plan) {
 
 // What the ray flags and the pipeline's skip flags add or take away.
 void applyRayFlags(const TraceFlags& flags, uint32_t pipeline_flags, Plan& plan) {
-  // 0x1000 skip triangles, 0x2000 skip aabbs
-  if ((pipeline_flags & 0x1000) || (flags.all & kRaySkipTriangles)) plan.triangles = false;
-  if ((pipeline_flags & 0x2000) || (flags.all & kRaySkipAabbs)) plan.aabbs = false;
+  if ((pipeline_flags & kPipelineSkipTriangles) || (flags.all & kRaySkipTriangles))
+    plan.triangles = false;
+  if ((pipeline_flags & kPipelineSkipAabbs) || (flags.all & kRaySkipAabbs)) plan.aabbs = false;
   if (flags.mask_bits_clear) plan.masks = true;
   if (flags.any & (kRayCullBackFacing | kRayCullFrontFacing)) plan.facing_culls = true;
   if (flags.any & (kRayOpaque | kRayNoOpaque | kRayCullOpaque | kRayCullNoOpaque))
@@ -119,6 +120,9 @@ void planStages(const Pipeline& pipe, const TraceFlags& flags, bool non_opaque_g
       (non_opaque_geometry || (flags.any & kRayNoOpaque)) && !every_ray_opaque;
   plan.any_hit = group_any_hit && can_be_non_opaque && (plan.triangles || plan.aabbs);
   plan.intersection = group_intersection && plan.aabbs;
+  // R-NULL-SHADERS: under no_null_any_hit every hit group names its any-hit
+  // (VUID-VkRayTracingPipelineCreateInfoKHR-flags-03470), whether or not it can run.
+  if (pipe.flags & kPipelineNoNullAnyHit) plan.any_hit = group_any_hit;
 }
 
 // What the statements do: callables, nested traces (and the depth), scene

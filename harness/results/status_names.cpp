@@ -114,6 +114,8 @@ const char* undefinedReasonName(UndefinedReason r) {
       return "recursion-too-deep";
     case UndefinedReason::PayloadType:
       return "payload-type";
+    case UndefinedReason::NullShader:
+      return "null-shader";
   }
   return "ray-parameters";
 }
@@ -123,7 +125,8 @@ bool parseUndefinedReason(const std::string& name, UndefinedReason* out) {
       UndefinedReason::RayParameters,       UndefinedReason::NanTriangle,
       UndefinedReason::HitRecordOutOfRange, UndefinedReason::MissRecordOutOfRange,
       UndefinedReason::CallableOutOfRange,  UndefinedReason::DivisionByZero,
-      UndefinedReason::RecursionTooDeep,    UndefinedReason::PayloadType};
+      UndefinedReason::RecursionTooDeep,    UndefinedReason::PayloadType,
+      UndefinedReason::NullShader};
   return parseByName(name, out, all, undefinedReasonName);
 }
 

@@ -16,6 +16,7 @@ enum class UndefinedReason {
   DivisionByZero,    // integer division or modulo by zero in a stage program
   RecursionTooDeep,  // traceRay beyond max_recursion, or callables nested too deeply
   PayloadType,       // the shader reached declares another incoming payload type than the trace's
+  NullShader,        // a NO_NULL_*_SHADERS pipeline reaches an all-zero record for that shader
 };
 const char* undefinedReasonName(UndefinedReason r);
 bool parseUndefinedReason(const std::string& name, UndefinedReason* out);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "case/flag_names.h"
 #include "glsl/generate_glsl.h"
 #include "vulkan/acceleration_structure.h"
 #include "vulkan/case_buffers.h"
@@ -16,10 +17,6 @@ namespace rayspec {
 namespace {
 
 constexpr uint64_t kTraceTimeoutNs = 240ull * 1000 * 1000 * 1000;
-constexpr uint32_t kPipelineSkipTriangles =
-    0x1000;  // VK_PIPELINE_CREATE_RAY_TRACING_SKIP_TRIANGLES_BIT_KHR
-constexpr uint32_t kPipelineSkipAabbs =
-    0x2000;  // VK_PIPELINE_CREATE_RAY_TRACING_SKIP_AABBS_BIT_KHR
 
 // Waits for the device before destroying the case's objects, on every path.
 struct CaseScope {
