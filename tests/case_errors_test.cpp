@@ -12,6 +12,18 @@ namespace {
 
 // ---- errors: line and field ----
 
+TEST(ParseCaseErrors, UnknownTraceCommand) {
+  const std::string text = R"(rules: [R-MASK]
+scene:
+  instances: []
+rays:
+  list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]
+  command: indirect3
+)";
+  ParseResult r = parse(text);
+  expectError(r, 6, "rays.command", "unknown trace command 'indirect3'");
+}
+
 TEST(ParseCaseErrors, UnknownKey) {
   const std::string text = R"(rules: [R-MASK]
 scene:

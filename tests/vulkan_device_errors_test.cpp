@@ -107,6 +107,32 @@ TEST(DeviceErrors, ADispatchTooLargeForTheDeviceIsNotSupported) {
   EXPECT_THROW(checkCaseSupport(ctx, c, derivePlan(c)), NotSupportedError);
 }
 
+TEST(DeviceErrors, AnIndirectTraceWithoutItsFeatureIsNotSupported) {
+  for (const char* name : {"sbt/indirect/indirect-4x3", "sbt/indirect/indirect2-4x3"}) {
+    SCOPED_TRACE(name);
+    const Case c = suiteCase(name);
+    ASSERT_FALSE(c.name.empty());
+    VulkanContext ctx;
+    ctx.info.max_ray_recursion_depth = 31;
+    for (uint64_t& size : ctx.info.max_launch_size) size = 1u << 16;
+    ctx.info.max_ray_dispatch_invocation_count = 1u << 20;
+    ctx.rt_props.shaderGroupHandleSize = 32;
+    ctx.rt_props.shaderGroupHandleAlignment = 32;
+    ctx.rt_props.shaderGroupBaseAlignment = 64;
+    ctx.rt_props.maxShaderGroupStride = 4096;
+    ctx.primitive_culling = true;
+    ctx.info.trace_rays_indirect = ctx.info.trace_rays_indirect2 = true;
+    EXPECT_NO_THROW(checkCaseSupport(ctx, c, derivePlan(c)));
+    ctx.info.trace_rays_indirect = ctx.info.trace_rays_indirect2 = false;
+    try {
+      checkCaseSupport(ctx, c, derivePlan(c));
+      ADD_FAILURE() << "no NotSupportedError";
+    } catch (const NotSupportedError& e) {
+      EXPECT_NE(std::string(e.what()).find("rays.command indirect"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(DeviceErrors, TheCullMaskBuiltinWithoutMaintenance1IsNotSupported) {
   const Case c = suiteCase("builtins/cull-mask");
   ASSERT_FALSE(c.name.empty());

@@ -120,8 +120,16 @@ struct Ray {
   uint32_t flags = 0, cull_mask = 0xFF, sbt_offset = 0, sbt_stride = 1, miss = 0;
 };
 
+// The command that launches the rays (R-INDIRECT): vkCmdTraceRaysKHR, or
+// vkCmdTraceRaysIndirectKHR with the launch size in a buffer, or
+// vkCmdTraceRaysIndirect2KHR with the SBT regions in it too. Shaders observe
+// the same whichever it is.
+enum class TraceCommand { Direct, Indirect, Indirect2 };
+const char* traceCommandName(TraceCommand c);  // trace_rays, indirect, indirect2
+
 struct Rays {
-  uint32_t width = 1, height = 1;    // launch size; width*height == rays.size()
+  uint32_t width = 1, height = 1;  // launch size; width*height == rays.size()
+  TraceCommand command = TraceCommand::Direct;
   std::vector<Ray> rays;             // row-major, index = y * width + x
   Ray defaults;                      // tmin/tmax/flags/... used for camera rays and nested traces
   SourceLoc defaults_loc;            // the `rays` map

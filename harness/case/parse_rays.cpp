@@ -249,13 +249,39 @@ void parseAim(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& rays
   rays.height = 1;
 }
 
+// rays.command: trace_rays (default), indirect or indirect2.
+void parseTraceCommand(YamlReader& r, const YAML::Node& v, Rays& rays) {
+  const auto name = r.string(v, "rays.command");
+  if (!name) return;
+  for (TraceCommand c : {TraceCommand::Direct, TraceCommand::Indirect, TraceCommand::Indirect2})
+    if (*name == traceCommandName(c)) {
+      rays.command = c;
+      return;
+    }
+  r.error(v, "rays.command",
+          "unknown trace command '" + *name + "' (trace_rays, indirect, indirect2)");
+}
+
 }  // namespace
+
+const char* traceCommandName(TraceCommand c) {
+  switch (c) {
+    case TraceCommand::Direct:
+      return "trace_rays";
+    case TraceCommand::Indirect:
+      return "indirect";
+    case TraceCommand::Indirect2:
+      return "indirect2";
+  }
+  return "trace_rays";
+}
 
 void parseRays(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& rays) {
   if (!r.expectMap(n, "rays",
                    {"camera", "grid", "list", "aim", "tmin", "tmax", "flags", "cull_mask",
-                    "sbt_offset", "sbt_stride", "miss"}))
+                    "sbt_offset", "sbt_stride", "miss", "command"}))
     return;
+  if (auto v = YamlReader::get(n, "command"); v.IsDefined()) parseTraceCommand(r, v, rays);
   parseRayFields(r, n, "rays", rays.defaults);
   rays.defaults_loc = r.loc(n, "rays");
   noteUndefinedRay(r, n, "rays", rays.defaults, false);

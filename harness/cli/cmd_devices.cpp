@@ -38,6 +38,8 @@ void printLimits(const DeviceInfo& d) {
   std::printf("        VK_EXT_opacity_micromap        %s\n", d.opacity_micromap ? "yes" : "no");
   std::printf("        VK_KHR_ray_tracing_maintenance1 %s\n",
               d.ray_tracing_maintenance1 ? "yes" : "no");
+  std::printf("        vkCmdTraceRaysIndirectKHR      %s\n", d.trace_rays_indirect ? "yes" : "no");
+  std::printf("        vkCmdTraceRaysIndirect2KHR     %s\n", d.trace_rays_indirect2 ? "yes" : "no");
 }
 
 // One manifest's devices; returns how many are usable.

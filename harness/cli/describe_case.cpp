@@ -71,7 +71,8 @@ std::string describeCase(const Case& c) {
   }
   s << "Rays: " << c.rays.width << " x " << c.rays.height << " (" << c.rays.rays.size()
     << " rays), defaults tmin " << c.rays.defaults.tmin << " tmax " << c.rays.defaults.tmax
-    << " flags " << hex(c.rays.defaults.flags) << '\n';
+    << " flags " << hex(c.rays.defaults.flags) << ", launched by "
+    << traceCommandName(c.rays.command) << '\n';
   const Pipeline& p = c.pipeline;
   s << "Pipeline: max recursion " << p.max_recursion << ", flags " << hex(p.flags) << '\n';
   s << "  raygen: " << statementCount(p.raygen) << " statements\n";

@@ -50,6 +50,7 @@ FaultResult hitKindFlipped(RecordFaultArgs& a);
 FaultResult inactiveRenumbered(RecordFaultArgs& a);
 FaultResult tmaxViewInitial(RecordFaultArgs& a);
 FaultResult builtinWrong(RecordFaultArgs& a);
+FaultResult indirectLaunchShort(RecordFaultArgs& a);
 FaultResult tieAnsweredNeither(RecordFaultArgs& a);  // record_faults_ties.cpp
 
 // Case mutations: scene (mutate_scene.cpp), boxes (mutate_boxes.cpp), ray

@@ -37,6 +37,9 @@ std::vector<FaultImpl> recordEdits() {
        tmaxViewInitial},
       {"builtin-wrong", K::RecordEdit, "a built-in a stage reads is off by one on a clear ray",
        builtinWrong},
+      {"indirect-launch-short", K::RecordEdit,
+       "an indirect trace reads the launch height as one less: the last row never runs",
+       indirectLaunchShort},
       {"tie-answered-neither", K::RecordEdit,
        "a hit tied with another at the committed t (or at an interval end) is answered with "
        "neither: a miss",

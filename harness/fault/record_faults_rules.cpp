@@ -168,6 +168,18 @@ FaultResult tmaxViewInitial(RecordFaultArgs& a) {
                                 std::to_string(edited - 1) + " more rays)");
 }
 
+// R-INDIRECT: a device that reads the launch height of an indirect trace
+// as one less: the last row of the launch never runs raygen.
+FaultResult indirectLaunchShort(RecordFaultArgs& a) {
+  if (a.c.rays.command == TraceCommand::Direct)
+    return notApplicable("the case traces with vkCmdTraceRaysKHR, not an indirect command");
+  const uint32_t width = a.c.rays.width, height = a.c.rays.height;
+  if (height < 2) return notApplicable("a one-row launch has no row to lose");
+  for (uint32_t x = 0; x < width; ++x) a.dev.set((height - 1) * width + x, "raygen_runs", 0);
+  return {true, "the launch ran " + std::to_string(width) + " x " + std::to_string(height - 1) +
+                    ": raygen_runs 0 on row " + std::to_string(height - 1)};
+}
+
 FaultResult builtinWrong(RecordFaultArgs& a) {
   const std::vector<FieldWrite> writes = fieldWrites(a.c);
   for (const std::string& field : a.c.outputs.per_ray) {

@@ -60,6 +60,7 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-RAYGEN-REGION", {"raygen-group-ignored"}, {}},
       {"R-CULLMASK-BUILTIN", {"cull-mask-builtin-default"}, {}},
       {"R-NULL-SHADERS", {"no-null-shaders-dropped"}, {}},
+      {"R-INDIRECT", {"indirect-launch-short"}, {}},
       {"R-UB", {}, {}, fail, "never checked for a result (robustness probe only)"},
   };
   return table;

@@ -15,7 +15,8 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DeviceInfo, index, name, driver_name, driver_
                                    max_shader_group_stride, max_ray_dispatch_invocation_count,
                                    max_image_dimension_2d, max_storage_buffer_range,
                                    max_launch_size, acceleration_structure_host_commands,
-                                   pipeline_library, opacity_micromap, ray_tracing_maintenance1)
+                                   pipeline_library, opacity_micromap, ray_tracing_maintenance1,
+                                   trace_rays_indirect, trace_rays_indirect2)
 
 namespace {
 

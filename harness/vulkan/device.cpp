@@ -38,6 +38,7 @@ void createDevice(VulkanContext& ctx) {
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
   rt_on.rayTracingPipeline = VK_TRUE;
   rt_on.rayTraversalPrimitiveCulling = rt.rayTraversalPrimitiveCulling;
+  rt_on.rayTracingPipelineTraceRaysIndirect = ctx.info.trace_rays_indirect;
   VkPhysicalDeviceAccelerationStructureFeaturesKHR as_on{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
   as_on.accelerationStructure = VK_TRUE;
@@ -51,6 +52,7 @@ void createDevice(VulkanContext& ctx) {
   VkPhysicalDeviceRayTracingMaintenance1FeaturesKHR maintenance1_on{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_MAINTENANCE_1_FEATURES_KHR};
   maintenance1_on.rayTracingMaintenance1 = VK_TRUE;
+  maintenance1_on.rayTracingPipelineTraceRaysIndirect2 = ctx.info.trace_rays_indirect2;
   VkPhysicalDeviceFeatures2 on{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   on.features.shaderInt64 = have.features.shaderInt64;
   on.pNext = &v12_on;

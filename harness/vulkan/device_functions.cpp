@@ -26,6 +26,9 @@ DeviceFunctions loadDeviceFunctions(VkDevice device) {
   load(device, "vkCreateRayTracingPipelinesKHR", &f.createRayTracingPipelines);
   load(device, "vkGetRayTracingShaderGroupHandlesKHR", &f.getRayTracingShaderGroupHandles);
   load(device, "vkCmdTraceRaysKHR", &f.cmdTraceRays);
+  load(device, "vkCmdTraceRaysIndirectKHR", &f.cmdTraceRaysIndirect);
+  f.cmdTraceRaysIndirect2 = reinterpret_cast<PFN_vkCmdTraceRaysIndirect2KHR>(
+      vkGetDeviceProcAddr(device, "vkCmdTraceRaysIndirect2KHR"));
   return f;
 }
 

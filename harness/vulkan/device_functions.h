@@ -15,6 +15,9 @@ struct DeviceFunctions {
   PFN_vkCreateRayTracingPipelinesKHR createRayTracingPipelines = nullptr;
   PFN_vkGetRayTracingShaderGroupHandlesKHR getRayTracingShaderGroupHandles = nullptr;
   PFN_vkCmdTraceRaysKHR cmdTraceRays = nullptr;
+  PFN_vkCmdTraceRaysIndirectKHR cmdTraceRaysIndirect = nullptr;
+  // Only where VK_KHR_ray_tracing_maintenance1 is enabled (else null).
+  PFN_vkCmdTraceRaysIndirect2KHR cmdTraceRaysIndirect2 = nullptr;
 };
 
 // Throws VulkanError naming the first entry point the device does not give.

@@ -112,6 +112,9 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
       vk12 && d.acceleration_structure_extension && as_features.accelerationStructure;
   d.acceleration_structure_host_commands =
       d.acceleration_structure_extension && as_features.accelerationStructureHostCommands;
+  d.trace_rays_indirect = d.ray_tracing_pipeline && rt_features.rayTracingPipelineTraceRaysIndirect;
+  d.trace_rays_indirect2 = d.ray_tracing_maintenance1 && d.ray_tracing_pipeline &&
+                           maintenance1.rayTracingPipelineTraceRaysIndirect2;
   d.ray_tracing_maintenance1 = d.ray_tracing_maintenance1 && maintenance1.rayTracingMaintenance1;
 }
 

@@ -54,6 +54,13 @@ void checkCaseSupport(const VulkanContext& ctx, const Case& c, const Plan& plan)
   if (micromap_flags && !(d.opacity_micromap && d.api_version_number >= VK_API_VERSION_1_3))
     throw NotSupportedError(
         "scene.instances[].flags: opacity micromap flags need VK_EXT_opacity_micromap");
+  if (c.rays.command == TraceCommand::Indirect && !d.trace_rays_indirect)
+    throw NotSupportedError(
+        "rays.command indirect: the device lacks rayTracingPipelineTraceRaysIndirect");
+  if (c.rays.command == TraceCommand::Indirect2 && !d.trace_rays_indirect2)
+    throw NotSupportedError(
+        "rays.command indirect2: the device lacks VK_KHR_ray_tracing_maintenance1's "
+        "rayTracingPipelineTraceRaysIndirect2");
   if (plan.cull_mask_builtin && !d.ray_tracing_maintenance1)
     throw NotSupportedError(
         "cull_mask: gl_CullMaskEXT needs VK_KHR_ray_tracing_maintenance1 (rayTracingMaintenance1)");
@@ -135,8 +142,8 @@ void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results&
   StepTimer trace_time(r.cost, CostStep::Trace);
   VkCommandBuffer cmd = beginCommands(ctx, cleanup);
   recordImageClears(cmd, buffers.images);
-  recordTrace(ctx, cmd, pipeline.pipeline, pipeline_layout, set, sbt.layout, sbt.base, c.rays.width,
-              c.rays.height);
+  recordTrace(ctx, cmd, pipeline.pipeline, pipeline_layout, set, sbt.layout, sbt.base, c.rays,
+              cleanup);
   recordReadback(cmd, buffers.images, buffers.image_readback, buffers.image_extent.width,
                  buffers.image_extent.height);
   submitAndWait(ctx, cmd, kTraceTimeoutNs);

@@ -1,5 +1,7 @@
 #include "vulkan/trace.h"
 
+#include "vulkan/vk_check.h"
+
 namespace rayspec {
 namespace {
 
@@ -47,7 +49,7 @@ void recordImageClears(VkCommandBuffer cmd, const std::vector<StorageImage>& ima
 
 void recordTrace(const VulkanContext& ctx, VkCommandBuffer cmd, VkPipeline pipeline,
                  VkPipelineLayout layout, VkDescriptorSet set, const SbtLayout& sbt,
-                 VkDeviceAddress sbt_base, uint32_t width, uint32_t height) {
+                 VkDeviceAddress sbt_base, const Rays& rays, Cleanup& cleanup) {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, layout, 0, 1, &set, 0,
                           nullptr);
@@ -55,7 +57,41 @@ void recordTrace(const VulkanContext& ctx, VkCommandBuffer cmd, VkPipeline pipel
   VkStridedDeviceAddressRegionKHR miss = region(sbt_base, sbt.miss);
   VkStridedDeviceAddressRegionKHR hit = region(sbt_base, sbt.hit);
   VkStridedDeviceAddressRegionKHR callable = region(sbt_base, sbt.callable);
-  ctx.fn.cmdTraceRays(cmd, &raygen, &miss, &hit, &callable, width, height, 1);
+  const uint32_t width = rays.width, height = rays.height;
+  constexpr VkBufferUsageFlags kUsage =
+      VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
+  switch (rays.command) {
+    case TraceCommand::Direct:
+      ctx.fn.cmdTraceRays(cmd, &raygen, &miss, &hit, &callable, width, height, 1);
+      return;
+    case TraceCommand::Indirect: {
+      const VkTraceRaysIndirectCommandKHR size{width, height, 1};
+      const Buffer b = createUploadBuffer(ctx, &size, sizeof size, kUsage, cleanup);
+      ctx.fn.cmdTraceRaysIndirect(cmd, &raygen, &miss, &hit, &callable, b.address);
+      return;
+    }
+    case TraceCommand::Indirect2: {
+      const VkTraceRaysIndirectCommand2KHR all{raygen.deviceAddress,
+                                               raygen.size,
+                                               miss.deviceAddress,
+                                               miss.size,
+                                               miss.stride,
+                                               hit.deviceAddress,
+                                               hit.size,
+                                               hit.stride,
+                                               callable.deviceAddress,
+                                               callable.size,
+                                               callable.stride,
+                                               width,
+                                               height,
+                                               1};
+      const Buffer b = createUploadBuffer(ctx, &all, sizeof all, kUsage, cleanup);
+      if (!ctx.fn.cmdTraceRaysIndirect2)
+        throw VulkanError("vkGetDeviceProcAddr(vkCmdTraceRaysIndirect2KHR): missing");
+      ctx.fn.cmdTraceRaysIndirect2(cmd, b.address);
+      return;
+    }
+  }
 }
 
 void recordReadback(VkCommandBuffer cmd, const std::vector<StorageImage>& images,

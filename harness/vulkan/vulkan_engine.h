@@ -66,6 +66,9 @@ struct DeviceInfo {
   // VK_KHR_ray_tracing_maintenance1 with its rayTracingMaintenance1 feature
   // (gl_CullMaskEXT, the cull_mask built-in).
   bool ray_tracing_maintenance1 = false;
+  // vkCmdTraceRaysIndirectKHR (rayTracingPipelineTraceRaysIndirect) and
+  // vkCmdTraceRaysIndirect2KHR (maintenance1's rayTracingPipelineTraceRaysIndirect2).
+  bool trace_rays_indirect = false, trace_rays_indirect2 = false;
 };
 
 // Every physical device the loader sees (with or without ray tracing).
