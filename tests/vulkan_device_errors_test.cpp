@@ -82,9 +82,8 @@ TEST(DeviceErrors, TheNextCaseRunsAfterEachError) {
 }
 
 // A launch beyond the device's limits is NotSupported before anything is built.
-TEST(DeviceErrors, ADispatchTooLargeForTheDeviceIsNotSupported) {
-  const Case c = suiteCase("sbt/hit-group-index");  // a 6x3 launch
-  ASSERT_FALSE(c.name.empty());
+// A device whose limits fit every case checked here (no Vulkan behind it).
+VulkanContext ampleContext() {
   VulkanContext ctx;
   ctx.info.max_ray_recursion_depth = 31;
   for (uint64_t& size : ctx.info.max_launch_size) size = 1u << 16;
@@ -94,6 +93,13 @@ TEST(DeviceErrors, ADispatchTooLargeForTheDeviceIsNotSupported) {
   ctx.rt_props.shaderGroupBaseAlignment = 64;
   ctx.rt_props.maxShaderGroupStride = 4096;
   ctx.primitive_culling = true;
+  return ctx;
+}
+
+TEST(DeviceErrors, ADispatchTooLargeForTheDeviceIsNotSupported) {
+  const Case c = suiteCase("sbt/hit-group-index");  // a 6x3 launch
+  ASSERT_FALSE(c.name.empty());
+  VulkanContext ctx = ampleContext();
   EXPECT_NO_THROW(checkCaseSupport(ctx, c, derivePlan(c)));
   ctx.info.max_ray_dispatch_invocation_count = 17;
   try {
@@ -112,15 +118,7 @@ TEST(DeviceErrors, AnIndirectTraceWithoutItsFeatureIsNotSupported) {
     SCOPED_TRACE(name);
     const Case c = suiteCase(name);
     ASSERT_FALSE(c.name.empty());
-    VulkanContext ctx;
-    ctx.info.max_ray_recursion_depth = 31;
-    for (uint64_t& size : ctx.info.max_launch_size) size = 1u << 16;
-    ctx.info.max_ray_dispatch_invocation_count = 1u << 20;
-    ctx.rt_props.shaderGroupHandleSize = 32;
-    ctx.rt_props.shaderGroupHandleAlignment = 32;
-    ctx.rt_props.shaderGroupBaseAlignment = 64;
-    ctx.rt_props.maxShaderGroupStride = 4096;
-    ctx.primitive_culling = true;
+    VulkanContext ctx = ampleContext();
     ctx.info.trace_rays_indirect = ctx.info.trace_rays_indirect2 = true;
     EXPECT_NO_THROW(checkCaseSupport(ctx, c, derivePlan(c)));
     ctx.info.trace_rays_indirect = ctx.info.trace_rays_indirect2 = false;
@@ -138,15 +136,7 @@ TEST(DeviceErrors, TheCullMaskBuiltinWithoutMaintenance1IsNotSupported) {
   ASSERT_FALSE(c.name.empty());
   const Plan plan = derivePlan(c);
   ASSERT_TRUE(plan.cull_mask_builtin);
-  VulkanContext ctx;
-  ctx.info.max_ray_recursion_depth = 31;
-  for (uint64_t& size : ctx.info.max_launch_size) size = 1u << 16;
-  ctx.info.max_ray_dispatch_invocation_count = 1u << 20;
-  ctx.rt_props.shaderGroupHandleSize = 32;
-  ctx.rt_props.shaderGroupHandleAlignment = 32;
-  ctx.rt_props.shaderGroupBaseAlignment = 64;
-  ctx.rt_props.maxShaderGroupStride = 4096;
-  ctx.primitive_culling = true;
+  VulkanContext ctx = ampleContext();
   ctx.info.ray_tracing_maintenance1 = true;
   EXPECT_NO_THROW(checkCaseSupport(ctx, c, plan));
   ctx.info.ray_tracing_maintenance1 = false;

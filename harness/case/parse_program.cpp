@@ -89,6 +89,18 @@ bool parseRecord(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt&
   return ok;
 }
 
+// A trace's constant index `key` (tlas, location) up to max, and where it is
+// written; false when it is there but not such a number.
+bool constantIndex(YamlReader& r, const YAML::Node& v, const std::string& f, const char* key,
+                   uint32_t max, uint32_t& out, SourceLoc& loc) {
+  const YAML::Node n = YamlReader::get(v, key);
+  if (!n.IsDefined()) return true;
+  loc = r.loc(n, f + "." + key);
+  const auto index = r.uint(n, f + "." + key, max);
+  if (index) out = *index;
+  return index.has_value();
+}
+
 bool parseTrace(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
   s.kind = Stmt::Kind::Trace;
   if (v.IsNull()) return true;
@@ -96,21 +108,10 @@ bool parseTrace(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& 
                    {"origin", "direction", "tmin", "tmax", "flags", "cull_mask", "sbt_offset",
                     "sbt_stride", "miss", "payload", "tlas", "location"}))
     return false;
-  bool ok = true;
-  if (const YAML::Node l = YamlReader::get(v, "tlas"); l.IsDefined()) {
-    s.trace.tlas_loc = r.loc(l, f + ".tlas");
-    if (auto index = r.uint(l, f + ".tlas", kMaxTlases - 1))
-      s.trace.tlas = *index;
-    else
-      ok = false;
-  }
-  if (const YAML::Node l = YamlReader::get(v, "location"); l.IsDefined()) {
-    s.trace.location_loc = r.loc(l, f + ".location");
-    if (auto index = r.uint(l, f + ".location", kMaxPayloadLocations - 1))
-      s.trace.location = *index;
-    else
-      ok = false;
-  }
+  bool ok = constantIndex(r, v, f, "tlas", kMaxTlases - 1, s.trace.tlas, s.trace.tlas_loc);
+  ok = constantIndex(r, v, f, "location", kMaxPayloadLocations - 1, s.trace.location,
+                     s.trace.location_loc) &&
+       ok;
   // The payload the trace starts with (zero where not given), into s.assigns.
   if (const YAML::Node p = YamlReader::get(v, "payload"); p.IsDefined())
     ok = parsePayloadAssigns(r, p, f + ".payload", s) && ok;
