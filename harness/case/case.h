@@ -183,8 +183,20 @@ struct PipelineLibrary {
 // At most this many libraries in one case, counting nested ones.
 constexpr size_t kMaxPipelineLibraries = 16;
 
+// Callables nested this deep fit the default pipeline stack size, which holds
+// two callable frames (Vulkan, "Ray Tracing Pipeline Stack": ... + 2 x
+// callableStackMax). pipeline.callable_depth sets a stack size for up to
+// kMaxCallableDepth (R-STACK).
+constexpr uint32_t kDefaultCallableDepth = 2;
+constexpr uint32_t kMaxCallableDepth = 16;
+
 struct Pipeline {
   uint32_t max_recursion = 1;
+  // Empty: the default stack size (kDefaultCallableDepth callable frames).
+  // Set: the pipeline has the dynamic stack size state and the trace sets a
+  // size that covers callables nested this deep (R-STACK).
+  std::optional<uint32_t> callable_depth;
+  uint32_t callableDepth() const { return callable_depth.value_or(kDefaultCallableDepth); }
   uint32_t flags = 0;  // pipeline flags: skip_triangles / skip_aabbs (VkPipelineCreateFlags values
                        // 0x1000 / 0x2000)
   Program raygen;      // default: [trace: {}]; the raygen the launch runs

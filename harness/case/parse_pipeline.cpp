@@ -182,14 +182,20 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
   trace.loc = r.loc(n, "pipeline.raygen");
   p.raygen.push_back(trace);  // default raygen: [trace: {}]
   if (!n.IsDefined()) return;
-  if (!r.expectMap(n, "pipeline",
-                   {"max_recursion", "flags", "raygen", "raygens", "raygen_group", "raygen_data",
-                    "miss", "hit_groups", "callables", "sbt", "libraries", "payloads"}))
+  if (!r.expectMap(
+          n, "pipeline",
+          {"max_recursion", "flags", "raygen", "raygens", "raygen_group", "raygen_data", "miss",
+           "hit_groups", "callables", "sbt", "libraries", "payloads", "callable_depth"}))
     return;
   if (auto v = YamlReader::get(n, "max_recursion"); v.IsDefined())
     if (auto x = r.uint(v, "pipeline.max_recursion", 31)) {
       if (*x == 0) r.error(v, "pipeline.max_recursion", "must be at least 1 (raygen traces)");
       p.max_recursion = *x;
+    }
+  if (auto v = YamlReader::get(n, "callable_depth"); v.IsDefined())
+    if (auto x = r.uint(v, "pipeline.callable_depth", kMaxCallableDepth)) {
+      if (*x == 0) r.error(v, "pipeline.callable_depth", "must be at least 1");
+      p.callable_depth = *x;
     }
   if (auto v = YamlReader::get(n, "flags"); v.IsDefined())
     if (auto x = r.flags(v, "pipeline.flags", pipelineFlagNames())) p.flags = *x;

@@ -74,7 +74,11 @@ std::string describeCase(const Case& c) {
     << " flags " << hex(c.rays.defaults.flags) << ", launched by "
     << traceCommandName(c.rays.command) << '\n';
   const Pipeline& p = c.pipeline;
-  s << "Pipeline: max recursion " << p.max_recursion << ", flags " << hex(p.flags) << '\n';
+  s << "Pipeline: max recursion " << p.max_recursion << ", flags " << hex(p.flags) << ", "
+    << (p.callable_depth
+            ? "stack size set for callables " + std::to_string(*p.callable_depth) + " deep"
+            : "default stack size (callables " + std::to_string(kDefaultCallableDepth) + " deep)")
+    << '\n';
   s << "  raygen: " << statementCount(p.raygen) << " statements\n";
   for (size_t i = 0; i < p.miss.size(); ++i)
     s << "  miss " << i << ": " << statementCount(p.miss[i]) << " statements"

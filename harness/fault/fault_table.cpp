@@ -208,6 +208,10 @@ std::vector<FaultImpl> pipelineMutations() {
        raygenGroupIgnored},
       {"tlas-ignored", K::CaseMutation,
        "every trace traverses the first top level, whichever one it names", nullptr, tlasIgnored},
+      {"stack-size-ignored", K::CaseMutation,
+       "the pipeline stack size a trace sets is ignored: callables nested deeper than the "
+       "default stack's two frames do nothing",
+       nullptr, stackSizeIgnored},
   };
 }
 

@@ -61,6 +61,7 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-CULLMASK-BUILTIN", {"cull-mask-builtin-default"}, {}},
       {"R-NULL-SHADERS", {"no-null-shaders-dropped"}, {}},
       {"R-INDIRECT", {"indirect-launch-short"}, {}},
+      {"R-STACK", {"stack-size-ignored"}, {}},
       {"R-UB", {}, {}, fail, "never checked for a result (robustness probe only)"},
   };
   return table;

@@ -23,6 +23,10 @@ enum class CandidateOrder { Distance, ReverseDistance, BuildOrder };
 struct ModelFaults {
   ModelDeviation deviation = ModelDeviation::None;
   CandidateOrder order = CandidateOrder::Distance;
+  // R-STACK broken: the stack size a case sets is ignored, so a callable
+  // nested deeper than the default stack's kDefaultCallableDepth frames does
+  // nothing (its caller's data stays as it was).
+  bool stack_size_ignored = false;
 };
 
 }  // namespace rayspec

@@ -571,7 +571,7 @@ void Machine::execTrace(const CStmt& s, StageEnv& env) {
 }
 
 // R-UB: an index beyond the callable region, or callables nested beyond the
-// default stack, make the ray undefined; the model then skips the call (the
+// pipeline's stack (R-STACK), make the ray undefined; the model then skips the call (the
 // data stays as the caller wrote it).
 void Machine::callCallable(uint32_t index, CallData& data, uint32_t depth, const CStmt& site) {
   auto field = [&](const char* sub) {
@@ -586,14 +586,16 @@ void Machine::callCallable(uint32_t index, CallData& data, uint32_t depth, const
                         std::to_string(default_callable_.size()));
     return;
   }
-  if (call_nesting_ >= kMaxCallableNesting) {
+  const Pipeline& p = sh_.c->pipeline;
+  if (call_nesting_ >= p.callableDepth()) {
     if (!ray_undefined_)
       markUndefined(UndefinedReason::RecursionTooDeep,
                     field("") + ": callables nested " + std::to_string(call_nesting_ + 1) +
-                        " deep, the default pipeline stack holds " +
-                        std::to_string(kMaxCallableNesting));
+                        " deep, the " + (p.callable_depth ? "stack size set" : "default stack") +
+                        " (pipeline.callable_depth) holds " + std::to_string(p.callableDepth()));
     return;
   }
+  if (call_nesting_ >= kDefaultCallableDepth && sh_.faults.stack_size_ignored) return;
   const SbtRecord& rec = default_callable_[index];
   if (!rec.group || *rec.group >= sh_.c->pipeline.callables.size()) return;  // R-SBT-ZERO
   bumpRuns(kRunsCallable);

@@ -102,12 +102,6 @@ struct StageEnv {
 
 enum class Flow { Continue, Ignore, Terminate };
 
-// Callables nested deeper than this (a callable calling a callable calling a
-// third) exceed the default pipeline stack size, which holds two callable
-// frames (Vulkan, "Ray Tracing Pipeline Stack": ... + 2 x callableStackMax);
-// the suite never sets a stack size, so deeper nesting is undefined (R-UB).
-constexpr uint32_t kMaxCallableNesting = 2;
-
 enum RunsField {
   kRunsRaygen,
   kRunsMiss,
@@ -281,7 +275,7 @@ class alignas(64) Machine {
   bool ray_ambiguous_ = false;
   bool ray_undefined_ = false;
   bool repeated_any_hit_ = false;  // AnyHitRepeat::First: this launch ray repeated one
-  uint32_t call_nesting_ = 0;      // callables running now (kMaxCallableNesting)
+  uint32_t call_nesting_ = 0;      // callables running now (Pipeline::callableDepth)
   std::vector<SbtRecord> default_miss_, default_hit_, default_callable_;
   std::vector<std::vector<ModelCandidate>> cand_pool_;
   uint32_t runs_offset_[6] = {};

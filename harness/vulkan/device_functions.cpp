@@ -25,6 +25,8 @@ DeviceFunctions loadDeviceFunctions(VkDevice device) {
   load(device, "vkCmdBuildAccelerationStructuresKHR", &f.cmdBuildAccelerationStructures);
   load(device, "vkCreateRayTracingPipelinesKHR", &f.createRayTracingPipelines);
   load(device, "vkGetRayTracingShaderGroupHandlesKHR", &f.getRayTracingShaderGroupHandles);
+  load(device, "vkGetRayTracingShaderGroupStackSizeKHR", &f.getRayTracingShaderGroupStackSize);
+  load(device, "vkCmdSetRayTracingPipelineStackSizeKHR", &f.cmdSetRayTracingPipelineStackSize);
   load(device, "vkCmdTraceRaysKHR", &f.cmdTraceRays);
   load(device, "vkCmdTraceRaysIndirectKHR", &f.cmdTraceRaysIndirect);
   f.cmdTraceRaysIndirect2 = reinterpret_cast<PFN_vkCmdTraceRaysIndirect2KHR>(

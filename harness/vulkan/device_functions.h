@@ -14,6 +14,8 @@ struct DeviceFunctions {
   PFN_vkCmdBuildAccelerationStructuresKHR cmdBuildAccelerationStructures = nullptr;
   PFN_vkCreateRayTracingPipelinesKHR createRayTracingPipelines = nullptr;
   PFN_vkGetRayTracingShaderGroupHandlesKHR getRayTracingShaderGroupHandles = nullptr;
+  PFN_vkGetRayTracingShaderGroupStackSizeKHR getRayTracingShaderGroupStackSize = nullptr;
+  PFN_vkCmdSetRayTracingPipelineStackSizeKHR cmdSetRayTracingPipelineStackSize = nullptr;
   PFN_vkCmdTraceRaysKHR cmdTraceRays = nullptr;
   PFN_vkCmdTraceRaysIndirectKHR cmdTraceRaysIndirect = nullptr;
   // Only where VK_KHR_ray_tracing_maintenance1 is enabled (else null).

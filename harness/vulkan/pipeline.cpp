@@ -167,6 +167,13 @@ VkPipeline createPipelineObject(const VulkanContext& ctx, const CompiledPipeline
     interface.maxPipelineRayHitAttributeSize = ctx.rt_props.maxRayHitAttributeSize;
     info.pLibraryInterface = &interface;
   }
+  const VkDynamicState stack_size = VK_DYNAMIC_STATE_RAY_TRACING_PIPELINE_STACK_SIZE_KHR;
+  VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+  if (part.dynamic_stack_size) {
+    dynamic.dynamicStateCount = 1;
+    dynamic.pDynamicStates = &stack_size;
+    info.pDynamicState = &dynamic;
+  }
   VkPipeline pipeline = VK_NULL_HANDLE;
   vkCall("vkCreateRayTracingPipelinesKHR", [&] {
     return ctx.fn.createRayTracingPipelines(ctx.device, VK_NULL_HANDLE, ctx.pipeline_cache, 1,

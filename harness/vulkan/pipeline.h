@@ -68,6 +68,7 @@ struct PipelinePart {
   VkPipelineCreateFlags flags = 0;
   uint32_t max_recursion = 1;
   VkPipelineLayout layout = VK_NULL_HANDLE;
+  bool dynamic_stack_size = false;  // VK_DYNAMIC_STATE_RAY_TRACING_PIPELINE_STACK_SIZE_KHR
 };
 VkPipeline createPipelineObject(const VulkanContext& ctx, const CompiledPipeline& compiled,
                                 const PipelinePart& part, Cleanup& cleanup);
@@ -78,9 +79,17 @@ VkPipeline createPipelineObject(const VulkanContext& ctx, const CompiledPipeline
 // linked pipeline: its own groups first, then each library's in the order
 // linked, recursively (the specification's order of a linked pipeline's
 // groups). Throws VulkanError.
+// group_site[g] is the pipeline object that creates case group g (the linked
+// pipeline or one of its libraries) and its index among that object's own
+// groups: vkGetRayTracingShaderGroupStackSizeKHR counts only those.
+struct GroupSite {
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  uint32_t index = 0;
+};
 struct RayTracingPipeline {
   VkPipeline pipeline = VK_NULL_HANDLE;
   std::vector<uint32_t> group_index;
+  std::vector<GroupSite> group_site;
 };
 RayTracingPipeline createRayTracingPipeline(const VulkanContext& ctx,
                                             const CompiledPipeline& compiled, const Pipeline& p,

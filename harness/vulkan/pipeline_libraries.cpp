@@ -31,6 +31,11 @@ struct Linker {
   const Pipeline& p;
   VkPipelineLayout layout;
   Cleanup& cleanup;
+  std::vector<GroupSite>& sites;  // by case group id
+
+  void place(const PipelinePart& part, VkPipeline object) const {
+    for (uint32_t i = 0; i < part.groups.size(); ++i) sites.at(part.groups[i]) = {object, i};
+  }
 
   PipelinePart part(std::vector<uint32_t> groups, VkPipelineCreateFlags extra) const {
     PipelinePart out;
@@ -52,6 +57,7 @@ struct Linker {
       link(lib.libraries, own, lib_order);
       own.linked = true;  // a library always declares the interface
       into.libraries.push_back(createPipelineObject(ctx, compiled, own, cleanup));
+      place(own, into.libraries.back());
       order.insert(order.end(), lib_order.begin(), lib_order.end());
     }
   }
@@ -65,16 +71,19 @@ RayTracingPipeline createRayTracingPipeline(const VulkanContext& ctx,
   const uint32_t count = sbtGroupCount(p);
   std::set<uint32_t> placed;
   collectPlaced(p, p.libraries, placed);
-  Linker linker{ctx, compiled, p, layout, cleanup};
+  RayTracingPipeline out;
+  out.group_site.assign(count, {});
+  Linker linker{ctx, compiled, p, layout, cleanup, out.group_site};
   std::vector<uint32_t> own;
   for (uint32_t id = 0; id < count; ++id)
     if (!placed.count(id)) own.push_back(id);
   PipelinePart top = linker.part(own, 0);
+  top.dynamic_stack_size = p.callable_depth.has_value();
   std::vector<uint32_t> order = own;
   linker.link(p.libraries, top, order);
 
-  RayTracingPipeline out;
   out.pipeline = createPipelineObject(ctx, compiled, top, cleanup);
+  linker.place(top, out.pipeline);
   out.group_index.assign(count, 0);
   for (uint32_t linked = 0; linked < order.size(); ++linked)
     out.group_index[order[linked]] = linked;

@@ -10,6 +10,7 @@
 #include "vulkan/descriptors.h"
 #include "vulkan/pipeline.h"
 #include "vulkan/sbt_buffer.h"
+#include "vulkan/stack_size.h"
 #include "vulkan/trace.h"
 #include "vulkan/vk_check.h"
 
@@ -131,6 +132,10 @@ void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results&
   StepTimer pipeline_time(r.cost, CostStep::PipelineCreation);
   const RayTracingPipeline pipeline =
       createRayTracingPipeline(ctx, compiled, c.pipeline, pipeline_layout, cleanup);
+  std::optional<VkDeviceSize> stack_size;
+  if (c.pipeline.callable_depth)
+    stack_size = pipelineStackSize(queryShaderStackSizes(ctx, compiled, c.pipeline, pipeline),
+                                   c.pipeline.max_recursion, *c.pipeline.callable_depth);
   pipeline_time.stop();
   StepTimer sbt_time(r.cost, CostStep::Sbt);
   SbtBuffer sbt = createSbtBuffer(ctx, c.pipeline, pipeline, cleanup);
@@ -142,8 +147,8 @@ void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results&
   StepTimer trace_time(r.cost, CostStep::Trace);
   VkCommandBuffer cmd = beginCommands(ctx, cleanup);
   recordImageClears(cmd, buffers.images);
-  recordTrace(ctx, cmd, pipeline.pipeline, pipeline_layout, set, sbt.layout, sbt.base, c.rays,
-              cleanup);
+  recordTrace(ctx, cmd, {pipeline.pipeline, pipeline_layout, set, stack_size}, sbt.layout, sbt.base,
+              c.rays, cleanup);
   recordReadback(cmd, buffers.images, buffers.image_readback, buffers.image_extent.width,
                  buffers.image_extent.height);
   submitAndWait(ctx, cmd, kTraceTimeoutNs);

@@ -47,12 +47,14 @@ void recordImageClears(VkCommandBuffer cmd, const std::vector<StorageImage>& ima
                        static_cast<uint32_t>(to_shader.size()), to_shader.data());
 }
 
-void recordTrace(const VulkanContext& ctx, VkCommandBuffer cmd, VkPipeline pipeline,
-                 VkPipelineLayout layout, VkDescriptorSet set, const SbtLayout& sbt,
-                 VkDeviceAddress sbt_base, const Rays& rays, Cleanup& cleanup) {
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, layout, 0, 1, &set, 0,
-                          nullptr);
+void recordTrace(const VulkanContext& ctx, VkCommandBuffer cmd, const TraceBinding& bound,
+                 const SbtLayout& sbt, VkDeviceAddress sbt_base, const Rays& rays,
+                 Cleanup& cleanup) {
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, bound.pipeline);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, bound.layout, 0, 1,
+                          &bound.set, 0, nullptr);
+  if (bound.stack_size)
+    ctx.fn.cmdSetRayTracingPipelineStackSize(cmd, static_cast<uint32_t>(*bound.stack_size));
   VkStridedDeviceAddressRegionKHR raygen = region(sbt_base, sbt.raygen);
   VkStridedDeviceAddressRegionKHR miss = region(sbt_base, sbt.miss);
   VkStridedDeviceAddressRegionKHR hit = region(sbt_base, sbt.hit);

@@ -4,6 +4,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <optional>
 #include <vector>
 
 #include "case/case.h"
@@ -17,14 +18,23 @@ namespace rayspec {
 // UNDEFINED -> GENERAL, cleared to zero, visible to ray tracing shaders.
 void recordImageClears(VkCommandBuffer cmd, const std::vector<StorageImage>& images);
 
-// Binds the pipeline and set 0, traces width x height x 1 with the SBT at
-// sbt_base (base-aligned) laid out as layout, by the command the case names
+// What a trace binds: the pipeline, its layout and set 0, and where the case
+// sets one (pipeline.callable_depth, R-STACK), the pipeline stack size.
+struct TraceBinding {
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkDescriptorSet set = VK_NULL_HANDLE;
+  std::optional<VkDeviceSize> stack_size;  // vkCmdSetRayTracingPipelineStackSizeKHR
+};
+
+// Binds `bound`, traces width x height x 1 with the SBT at sbt_base
+// (base-aligned) laid out as layout, by the command the case names
 // (rays.command): vkCmdTraceRaysKHR, or vkCmdTraceRaysIndirectKHR /
 // vkCmdTraceRaysIndirect2KHR reading a buffer (made here, freed by cleanup)
 // that holds the launch size, and for indirect2 the SBT regions too.
-void recordTrace(const VulkanContext& ctx, VkCommandBuffer cmd, VkPipeline pipeline,
-                 VkPipelineLayout layout, VkDescriptorSet set, const SbtLayout& sbt,
-                 VkDeviceAddress sbt_base, const Rays& rays, Cleanup& cleanup);
+void recordTrace(const VulkanContext& ctx, VkCommandBuffer cmd, const TraceBinding& bound,
+                 const SbtLayout& sbt, VkDeviceAddress sbt_base, const Rays& rays,
+                 Cleanup& cleanup);
 
 // Shader writes -> host reads, and each image copied into its host buffer
 // (tightly packed rows).
