@@ -10,9 +10,11 @@
 //   RS_USE_SHADER_RECORD  this stage's shader record data (8 words)
 // Model counterpart: harness/model (records, counters, shader record data).
 
-// Launch index of this ray: y * width + x.
+// Launch index of this ray: (z * height + y) * width + x (a 3D launch's z
+// layers one below the other).
 uint rs_launch_index() {
-  return gl_LaunchIDEXT.y * gl_LaunchSizeEXT.x + gl_LaunchIDEXT.x;
+  return (gl_LaunchIDEXT.z * gl_LaunchSizeEXT.y + gl_LaunchIDEXT.y) * gl_LaunchSizeEXT.x +
+         gl_LaunchIDEXT.x;
 }
 
 // The texel of this launch's ray in an image `width` texels wide: the

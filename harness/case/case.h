@@ -128,7 +128,16 @@ enum class TraceCommand { Direct, Indirect, Indirect2 };
 const char* traceCommandName(TraceCommand c);  // trace_rays, indirect, indirect2
 
 struct Rays {
-  uint32_t width = 1, height = 1;  // launch size; width*height == rays.size()
+  // The records' shape: width = launch[0], height = launch[1] x launch[2]
+  // (a 3D launch's z layers one below the other); width*height == rays.size().
+  uint32_t width = 1, height = 1;
+  // The launch size the trace command gets (rays.launch, R-LAUNCH-3D; when
+  // not given, width x height x 1). The rays are in launch order: x fastest,
+  // then y, then z. A zero dimension launches nothing: then there are no rays.
+  std::optional<std::array<uint32_t, 3>> launch;
+  std::array<uint32_t, 3> launchSize() const {
+    return launch ? *launch : std::array<uint32_t, 3>{width, height, 1};
+  }
   TraceCommand command = TraceCommand::Direct;
   std::vector<Ray> rays;             // row-major, index = y * width + x
   Ray defaults;                      // tmin/tmax/flags/... used for camera rays and nested traces

@@ -75,8 +75,12 @@ void parseTop(YamlReader& r, const YAML::Node& root, const std::vector<std::stri
   if (auto s = YamlReader::get(root, "scene"); s.IsDefined() && !s.IsNull())
     parseScene(r, s, c.scene);
   if (r.require(root, "", "rays")) parseRays(r, YamlReader::get(root, "rays"), c.scene, c.rays);
-  if (auto o = YamlReader::get(root, "outputs"); o.IsDefined() && !o.IsNull())
+  if (auto o = YamlReader::get(root, "outputs"); o.IsDefined() && !o.IsNull()) {
     parseOutputs(r, o, c.outputs);
+    if (!c.outputs.images.empty() && c.rays.rays.empty() && r.errorCount() == 0)
+      r.error(c.outputs.images[0].loc,
+              "a launch with a zero dimension (rays.launch) has no texels for an image");
+  }
   const YAML::Node pipeline = YamlReader::get(root, "pipeline");
   parsePipeline(r, pipeline, c.pipeline);
   checkPrograms(r, c, pipeline);

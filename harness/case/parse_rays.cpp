@@ -262,6 +262,39 @@ void parseTraceCommand(YamlReader& r, const YAML::Node& v, Rays& rays) {
           "unknown trace command '" + *name + "' (trace_rays, indirect, indirect2)");
 }
 
+// rays.launch: [width, height, depth], the launch the trace command gets
+// (R-LAUNCH-3D). Its size must equal the number of rays the form gave
+// (taken in launch order), unless a dimension is 0: such a launch runs
+// nothing, and the case keeps no rays.
+void parseLaunch(YamlReader& r, const YAML::Node& n, Rays& rays) {
+  const std::string field = "rays.launch";
+  if (!n.IsSequence() || n.size() != 3) {
+    r.error(n, field, "expected [width, height, depth]");
+    return;
+  }
+  std::array<uint32_t, 3> launch{};
+  for (size_t k = 0; k < 3; ++k) {
+    auto v = r.uint(n[k], field + "[" + std::to_string(k) + "]", 1u << 24);
+    if (!v) return;
+    launch[k] = *v;
+  }
+  const uint64_t count = uint64_t(launch[0]) * launch[1] * launch[2];
+  if (count != 0 && count != rays.rays.size()) {
+    r.error(n, field,
+            std::to_string(launch[0]) + " x " + std::to_string(launch[1]) + " x " +
+                std::to_string(launch[2]) + " = " + std::to_string(count) +
+                " rays, but the rays give " + std::to_string(rays.rays.size()));
+    return;
+  }
+  rays.launch = launch;
+  rays.width = launch[0];
+  rays.height = launch[1] * launch[2];
+  if (count == 0) {
+    rays.rays.clear();
+    rays.list_locs.clear();
+  }
+}
+
 }  // namespace
 
 const char* traceCommandName(TraceCommand c) {
@@ -279,7 +312,7 @@ const char* traceCommandName(TraceCommand c) {
 void parseRays(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& rays) {
   if (!r.expectMap(n, "rays",
                    {"camera", "grid", "list", "aim", "tmin", "tmax", "flags", "cull_mask",
-                    "sbt_offset", "sbt_stride", "miss", "command"}))
+                    "sbt_offset", "sbt_stride", "miss", "command", "launch"}))
     return;
   if (auto v = YamlReader::get(n, "command"); v.IsDefined()) parseTraceCommand(r, v, rays);
   parseRayFields(r, n, "rays", rays.defaults);
@@ -299,6 +332,8 @@ void parseRays(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& ray
     parseAim(r, YamlReader::get(n, "aim"), scene, rays);
   else
     parseList(r, YamlReader::get(n, "list"), rays);
+  if (auto v = YamlReader::get(n, "launch"); v.IsDefined() && !rays.rays.empty())
+    parseLaunch(r, v, rays);
 }
 
 }  // namespace rayspec

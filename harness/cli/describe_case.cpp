@@ -69,10 +69,10 @@ std::string describeCase(const Case& c) {
       << hex(in.mask) << ", custom " << in.custom_index << ", sbt offset " << in.sbt_offset
       << ", flags " << hex(in.flags) << '\n';
   }
-  s << "Rays: " << c.rays.width << " x " << c.rays.height << " (" << c.rays.rays.size()
-    << " rays), defaults tmin " << c.rays.defaults.tmin << " tmax " << c.rays.defaults.tmax
-    << " flags " << hex(c.rays.defaults.flags) << ", launched by "
-    << traceCommandName(c.rays.command) << '\n';
+  s << "Rays: " << c.rays.launchSize()[0] << " x " << c.rays.launchSize()[1] << " x "
+    << c.rays.launchSize()[2] << " (" << c.rays.rays.size() << " rays), defaults tmin "
+    << c.rays.defaults.tmin << " tmax " << c.rays.defaults.tmax << " flags "
+    << hex(c.rays.defaults.flags) << ", launched by " << traceCommandName(c.rays.command) << '\n';
   const Pipeline& p = c.pipeline;
   s << "Pipeline: max recursion " << p.max_recursion << ", flags " << hex(p.flags) << ", "
     << (p.callable_depth

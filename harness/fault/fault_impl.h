@@ -51,6 +51,8 @@ FaultResult inactiveRenumbered(RecordFaultArgs& a);
 FaultResult tmaxViewInitial(RecordFaultArgs& a);
 FaultResult builtinWrong(RecordFaultArgs& a);
 FaultResult indirectLaunchShort(RecordFaultArgs& a);
+FaultResult launchDepthLost(RecordFaultArgs& a);
+FaultResult zeroLaunchRuns(RecordFaultArgs& a);
 FaultResult tieAnsweredNeither(RecordFaultArgs& a);  // record_faults_ties.cpp
 
 // Case mutations: scene (mutate_scene.cpp), boxes (mutate_boxes.cpp), ray

@@ -40,6 +40,10 @@ std::vector<FaultImpl> recordEdits() {
       {"indirect-launch-short", K::RecordEdit,
        "an indirect trace reads the launch height as one less: the last row never runs",
        indirectLaunchShort},
+      {"launch-depth-lost", K::RecordEdit,
+       "a 3D launch runs only its first z layer: raygen never runs for z >= 1", launchDepthLost},
+      {"zero-launch-runs", K::RecordEdit,
+       "a launch with a zero dimension runs raygen once (its counter counts 1)", zeroLaunchRuns},
       {"tie-answered-neither", K::RecordEdit,
        "a hit tied with another at the committed t (or at an interval end) is answered with "
        "neither: a miss",

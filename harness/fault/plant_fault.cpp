@@ -34,7 +34,9 @@ FaultResult plantFault(const std::string& name, const Case& c, const Plan& plan,
   const FaultImpl* f = findImpl(name);
   if (!f) return notApplicable("unknown fault '" + name + "'");
   if (f->kind == FaultKind::Process) return notApplicable("a process fault");
-  if (device.records.empty() || device.records.size() != model.records.size())
+  // A zero-sized launch has no records, and its counters may still be wrong.
+  const bool zero_launch = c.rays.rays.empty();
+  if (device.records.size() != model.records.size() || (device.records.empty() && !zero_launch))
     return notApplicable("no per-ray records to corrupt");
   if (f->kind == FaultKind::CaseMutation) return runMutated(*f, c, device);
   RecordEdit dev{device};

@@ -180,6 +180,31 @@ FaultResult indirectLaunchShort(RecordFaultArgs& a) {
                     ": raygen_runs 0 on row " + std::to_string(height - 1)};
 }
 
+// R-LAUNCH-3D: a device that launches only the first z layer of a 3D
+// launch: raygen never runs for z >= 1.
+FaultResult launchDepthLost(RecordFaultArgs& a) {
+  const std::array<uint32_t, 3> launch = a.c.rays.launchSize();
+  if (launch[2] < 2 || a.c.rays.rays.empty())
+    return notApplicable("the launch has one z layer (rays.launch)");
+  const uint32_t layer = launch[0] * launch[1];
+  for (uint32_t ray = layer; ray < a.dev.rays(); ++ray) a.dev.set(ray, "raygen_runs", 0);
+  return {true, "the launch ran " + std::to_string(launch[0]) + " x " + std::to_string(launch[1]) +
+                    " x 1 of " + std::to_string(launch[2]) + " layers: raygen_runs 0 on " +
+                    std::to_string(a.dev.rays() - layer) + " rays"};
+}
+
+// R-LAUNCH-3D: a device that runs a launch with a zero dimension as one
+// invocation: raygen's first counter counts 1.
+FaultResult zeroLaunchRuns(RecordFaultArgs& a) {
+  if (!a.c.rays.rays.empty()) return notApplicable("the launch has rays");
+  const std::string counter = a.dev.bumpCounter(
+      countersIn(a.c,
+                 [&](const std::function<void(const Program&)>& f) { f(a.c.pipeline.raygen); }),
+      1);
+  if (counter.empty()) return notApplicable("raygen counts nothing");
+  return {true, "the zero-sized launch ran raygen once: counter '" + counter + "' + 1"};
+}
+
 FaultResult builtinWrong(RecordFaultArgs& a) {
   const std::vector<FieldWrite> writes = fieldWrites(a.c);
   for (const std::string& field : a.c.outputs.per_ray) {

@@ -47,6 +47,8 @@ std::string builtin(const std::string& name, Stage stage) {
       {"launch_id_y", "gl_LaunchIDEXT.y"},
       {"launch_size_x", "gl_LaunchSizeEXT.x"},
       {"launch_size_y", "gl_LaunchSizeEXT.y"},
+      {"launch_id_z", "gl_LaunchIDEXT.z"},
+      {"launch_size_z", "gl_LaunchSizeEXT.z"},
       {"primitive_id", "uint(gl_PrimitiveID)"},
       {"instance_id", "uint(gl_InstanceID)"},
       {"instance_custom_index", "uint(gl_InstanceCustomIndexEXT)"},

@@ -53,7 +53,8 @@ std::vector<SbtRecord> defaults(size_t n) {
 
 }  // namespace
 
-Machine::Machine(const ModelShared& shared, uint32_t* records) : sh_(shared), records_(records) {
+Machine::Machine(const ModelShared& shared, uint32_t* records)
+    : sh_(shared), records_(records), launch_(shared.c->rays.launchSize()) {
   counters.assign(sh_.plan->counters.size(), 0);
   const Pipeline& p = sh_.c->pipeline;
   default_miss_ = p.sbt_miss.empty() ? defaults(p.miss.size()) : p.sbt_miss;
@@ -147,12 +148,16 @@ Val Machine::builtin(const CExpr& e, StageEnv& env) {
   switch (e.builtin) {
     case kBiLaunchX:
       return fromUint(x_);
-    case kBiLaunchY:
-      return fromUint(y_);
+    case kBiLaunchY:  // the records' row y_ is launch z x launch height + launch y
+      return fromUint(y_ % launch_[1]);
+    case kBiLaunchZ:
+      return fromUint(y_ / launch_[1]);
     case kBiLaunchW:
-      return fromUint(sh_.c->rays.width);
+      return fromUint(launch_[0]);
     case kBiLaunchH:
-      return fromUint(sh_.c->rays.height);
+      return fromUint(launch_[1]);
+    case kBiLaunchD:
+      return fromUint(launch_[2]);
     case kBiPrimitive:
       return fromUint(hv->primitive);
     case kBiInstance:

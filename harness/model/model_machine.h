@@ -272,6 +272,7 @@ class alignas(64) Machine {
   uint32_t* records_;
   uint32_t* rec_ = nullptr;  // this launch's record
   uint32_t index_ = 0, x_ = 0, y_ = 0;
+  std::array<uint32_t, 3> launch_{};  // Rays::launchSize()
   bool ray_ambiguous_ = false;
   bool ray_undefined_ = false;
   bool repeated_any_hit_ = false;  // AnyHitRepeat::First: this launch ray repeated one

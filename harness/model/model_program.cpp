@@ -12,6 +12,8 @@ const std::vector<std::string>& builtinNames() {
                                                  "launch_id_y",
                                                  "launch_size_x",
                                                  "launch_size_y",
+                                                 "launch_id_z",
+                                                 "launch_size_z",
                                                  "primitive_id",
                                                  "instance_id",
                                                  "instance_custom_index",

@@ -26,6 +26,8 @@ enum Builtin : uint8_t {
   kBiLaunchY,
   kBiLaunchW,
   kBiLaunchH,
+  kBiLaunchZ,
+  kBiLaunchD,
   kBiPrimitive,
   kBiInstance,
   kBiCustomIndex,

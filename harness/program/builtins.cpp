@@ -16,6 +16,8 @@ const std::vector<BuiltinInfo>& builtins() {
       {"launch_id_y", ValueType::Uint, kAllStages, "y of gl_LaunchIDEXT"},
       {"launch_size_x", ValueType::Uint, kAllStages, "x of gl_LaunchSizeEXT"},
       {"launch_size_y", ValueType::Uint, kAllStages, "y of gl_LaunchSizeEXT"},
+      {"launch_id_z", ValueType::Uint, kAllStages, "z of gl_LaunchIDEXT (rays.launch)"},
+      {"launch_size_z", ValueType::Uint, kAllStages, "z of gl_LaunchSizeEXT (rays.launch)"},
       {"primitive_id", ValueType::Uint, I | A | C, "gl_PrimitiveID"},
       {"instance_id", ValueType::Uint, I | A | C, "gl_InstanceID"},
       {"instance_custom_index", ValueType::Uint, I | A | C, "gl_InstanceCustomIndexEXT"},

@@ -35,7 +35,8 @@ struct BuiltinInfo {
 };
 
 // Table of all built-ins:
-//   launch_id_x, launch_id_y, launch_size_x, launch_size_y (Uint, all stages)
+//   launch_id_x, launch_id_y, launch_id_z, launch_size_x, launch_size_y,
+//       launch_size_z (Uint, all stages)
 //   primitive_id, instance_id, instance_custom_index, geometry_index
 //       (Uint; intersection, any-hit, closest-hit)
 //   hit_kind (Uint; any-hit, closest-hit)

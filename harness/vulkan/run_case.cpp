@@ -40,12 +40,29 @@ bool usesSkipRayFlags(const Rays& rays) {
   return false;
 }
 
+std::string sizeText(const uint64_t (&size)[3]) {
+  return std::to_string(size[0]) + " x " + std::to_string(size[1]) + " x " +
+         std::to_string(size[2]);
+}
+
+// Each dimension within maxComputeWorkGroupCount * maxComputeWorkGroupSize.
+void checkLaunchSize(const DeviceInfo& d, const std::array<uint32_t, 3>& launch) {
+  const uint64_t size[3] = {launch[0], launch[1], launch[2]};
+  for (int k = 0; k < 3; ++k)
+    if (size[k] > d.max_launch_size[k])
+      throw NotSupportedError("launch " + sizeText(size) +
+                              " > maxComputeWorkGroupCount * maxComputeWorkGroupSize (" +
+                              sizeText(d.max_launch_size) + ")");
+}
+
 }  // namespace
 
 void checkCaseSupport(const VulkanContext& ctx, const Case& c, const Plan& plan) {
   const DeviceInfo& d = ctx.info;
+  const std::array<uint32_t, 3> launch = c.rays.launchSize();
+  const uint64_t launch_rays = uint64_t(launch[0]) * launch[1] * launch[2];
   if (c.rays.rays.size() != static_cast<size_t>(c.rays.width) * c.rays.height ||
-      c.rays.rays.empty())
+      c.rays.rays.size() != launch_rays)
     throw VulkanError("case has " + std::to_string(c.rays.rays.size()) + " rays for a " +
                       std::to_string(c.rays.width) + "x" + std::to_string(c.rays.height) +
                       " launch: VK_ERROR_UNKNOWN");
@@ -71,14 +88,9 @@ void checkCaseSupport(const VulkanContext& ctx, const Case& c, const Plan& plan)
     throw NotSupportedError("max_recursion " + std::to_string(c.pipeline.max_recursion) +
                             " > device maxRayRecursionDepth " +
                             std::to_string(d.max_ray_recursion_depth));
-  if (c.rays.width > d.max_launch_size[0] || c.rays.height > d.max_launch_size[1])
-    throw NotSupportedError(
-        "launch " + std::to_string(c.rays.width) + "x" + std::to_string(c.rays.height) +
-        " > maxComputeWorkGroupCount * maxComputeWorkGroupSize (" +
-        std::to_string(d.max_launch_size[0]) + "x" + std::to_string(d.max_launch_size[1]) + ")");
-  uint64_t launch = static_cast<uint64_t>(c.rays.width) * c.rays.height;
-  if (launch > d.max_ray_dispatch_invocation_count)
-    throw NotSupportedError("launch of " + std::to_string(launch) +
+  checkLaunchSize(d, launch);
+  if (launch_rays > d.max_ray_dispatch_invocation_count)
+    throw NotSupportedError("launch of " + std::to_string(launch_rays) +
                             " rays > maxRayDispatchInvocationCount " +
                             std::to_string(d.max_ray_dispatch_invocation_count));
   if (!ctx.primitive_culling &&

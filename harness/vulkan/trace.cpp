@@ -59,15 +59,16 @@ void recordTrace(const VulkanContext& ctx, VkCommandBuffer cmd, const TraceBindi
   VkStridedDeviceAddressRegionKHR miss = region(sbt_base, sbt.miss);
   VkStridedDeviceAddressRegionKHR hit = region(sbt_base, sbt.hit);
   VkStridedDeviceAddressRegionKHR callable = region(sbt_base, sbt.callable);
-  const uint32_t width = rays.width, height = rays.height;
+  const std::array<uint32_t, 3> launch = rays.launchSize();
+  const uint32_t width = launch[0], height = launch[1], depth = launch[2];
   constexpr VkBufferUsageFlags kUsage =
       VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
   switch (rays.command) {
     case TraceCommand::Direct:
-      ctx.fn.cmdTraceRays(cmd, &raygen, &miss, &hit, &callable, width, height, 1);
+      ctx.fn.cmdTraceRays(cmd, &raygen, &miss, &hit, &callable, width, height, depth);
       return;
     case TraceCommand::Indirect: {
-      const VkTraceRaysIndirectCommandKHR size{width, height, 1};
+      const VkTraceRaysIndirectCommandKHR size{width, height, depth};
       const Buffer b = createUploadBuffer(ctx, &size, sizeof size, kUsage, cleanup);
       ctx.fn.cmdTraceRaysIndirect(cmd, &raygen, &miss, &hit, &callable, b.address);
       return;
@@ -86,7 +87,7 @@ void recordTrace(const VulkanContext& ctx, VkCommandBuffer cmd, const TraceBindi
                                                callable.stride,
                                                width,
                                                height,
-                                               1};
+                                               depth};
       const Buffer b = createUploadBuffer(ctx, &all, sizeof all, kUsage, cleanup);
       if (!ctx.fn.cmdTraceRaysIndirect2)
         throw VulkanError("vkGetDeviceProcAddr(vkCmdTraceRaysIndirect2KHR): missing");

@@ -27,7 +27,7 @@ struct TraceBinding {
   std::optional<VkDeviceSize> stack_size;  // vkCmdSetRayTracingPipelineStackSizeKHR
 };
 
-// Binds `bound`, traces width x height x 1 with the SBT at sbt_base
+// Binds `bound`, traces rays.launch (width x height x depth) with the SBT at sbt_base
 // (base-aligned) laid out as layout, by the command the case names
 // (rays.command): vkCmdTraceRaysKHR, or vkCmdTraceRaysIndirectKHR /
 // vkCmdTraceRaysIndirect2KHR reading a buffer (made here, freed by cleanup)
