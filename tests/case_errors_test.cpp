@@ -35,9 +35,9 @@ rays:
   expectError(r, 3, "scene.instancess", "unknown key");
   expectError(r, 5, "rays.list[0].tmaxx", "unknown key");
   EXPECT_EQ(r.errors.size(), 2u) << allErrors(r);
-  EXPECT_EQ(
-      r.errors[0].format(),
-      "t.yaml:3:3: scene.instancess: unknown key 'instancess' (expected one of: blas, instances)");
+  EXPECT_EQ(r.errors[0].format(),
+            "t.yaml:3:3: scene.instancess: unknown key 'instancess' (expected one of: blas, "
+            "instances, build)");
 }
 
 const char* kScene = R"(rules: [R-MASK]

@@ -36,6 +36,11 @@ seeds() {
   echo "$dir"
 }
 
+# Per input: a case may legally expand to 2^24 rays (a 4096 x 4096 grid or
+# camera): about 1 GB and 8 s under the sanitizers here, and a sweep input
+# parses up to 4 such variants, on a CI machine that runs other tests beside
+# it. -timeout and -rss_limit_mb leave room for that; a hang or a runaway
+# allocation still fails.
 limit=(-max_total_time="$seconds")
 [ -n "${FUZZ_RUNS:-}" ] && limit=(-runs="$FUZZ_RUNS")
 for target in "${targets[@]}"; do
@@ -44,6 +49,6 @@ for target in "${targets[@]}"; do
   [ "$target" = fuzz_case ] && dict=(-dict=../fuzz/case.dict)
   mkdir -p "build-fuzz/corpus-$target"
   echo "== $target"
-  (cd build-fuzz && ./fuzz/"$target" "corpus-$target" "${seed#build-fuzz/}" "${dict[@]}" "${limit[@]}" -timeout=10 \
-    -rss_limit_mb=2048 -max_len=16384 -print_final_stats=1 -jobs=1 -workers=1)
+  (cd build-fuzz && ./fuzz/"$target" "corpus-$target" "${seed#build-fuzz/}" "${dict[@]}" "${limit[@]}" -timeout=120 \
+    -rss_limit_mb=6144 -max_len=16384 -print_final_stats=1 -jobs=1 -workers=1)
 done

@@ -101,9 +101,22 @@ struct Instance {
 
 constexpr uint32_t kMaxTlases = 8;
 
+// How every acceleration structure is built (scene.build): its build flags
+// (VkBuildAccelerationStructureFlagsKHR, default PREFER_FAST_TRACE), and a
+// copy (R-AS-COPY) the traces use instead of what was built: clone
+// (vkCmdCopyAccelerationStructureKHR, CLONE) or compact (COMPACT, at the
+// compacted size the device reports). Shaders observe the same either way.
+enum class AsCopy { None, Clone, Compact };
+const char* asCopyName(AsCopy c);  // none, clone, compact
+struct AsBuild {
+  uint32_t flags = 0x4;
+  AsCopy copy = AsCopy::None;
+};
+
 struct Scene {
   std::vector<Blas> blases;
   std::vector<Instance> instances;
+  AsBuild build;
   // How many top levels the scene has: one past the highest Instance::tlas
   // (a level no instance names is built empty); at least 1.
   uint32_t tlasCount() const {

@@ -46,4 +46,13 @@ const FlagTable& pipelineFlagNames() {
   return t;
 }
 
+const FlagTable& buildFlagNames() {
+  static const FlagTable t = {{"allow_update", kBuildAllowUpdate},
+                              {"allow_compaction", kBuildAllowCompaction},
+                              {"prefer_fast_trace", kBuildPreferFastTrace},
+                              {"prefer_fast_build", kBuildPreferFastBuild},
+                              {"low_memory", kBuildLowMemory}};
+  return t;
+}
+
 }  // namespace rayspec

@@ -13,6 +13,7 @@ const FlagTable& geometryFlagNames();  // opaque, no_duplicate_any_hit
 const FlagTable& instanceFlagNames();  // triangle_facing_cull_disable, ...
 const FlagTable& rayFlagNames();       // opaque, no_opaque, terminate_on_first_hit, ...
 const FlagTable& pipelineFlagNames();  // skip_triangles, skip_aabbs, no_null_*
+const FlagTable& buildFlagNames();     // prefer_fast_trace, prefer_fast_build, ...
 
 // VkPipelineCreateFlagBits values of the pipeline flags.
 constexpr uint32_t kPipelineSkipTriangles = 0x1000;
@@ -25,5 +26,12 @@ constexpr uint32_t kPipelineNoNullMiss = 0x10000;
 constexpr uint32_t kPipelineNoNullIntersection = 0x20000;
 constexpr uint32_t kPipelineNoNullShaders = kPipelineNoNullAnyHit | kPipelineNoNullClosestHit |
                                             kPipelineNoNullMiss | kPipelineNoNullIntersection;
+
+// VkBuildAccelerationStructureFlagBitsKHR values of scene.build.flags.
+constexpr uint32_t kBuildAllowUpdate = 0x1;
+constexpr uint32_t kBuildAllowCompaction = 0x2;
+constexpr uint32_t kBuildPreferFastTrace = 0x4;
+constexpr uint32_t kBuildPreferFastBuild = 0x8;
+constexpr uint32_t kBuildLowMemory = 0x10;
 
 }  // namespace rayspec

@@ -179,10 +179,47 @@ void parseInstance(YamlReader& r, const YAML::Node& n, const std::string& field,
     if (auto v = r.uint(t, field + ".tlas", kMaxTlases - 1)) inst.tlas = *v;
 }
 
+// scene.build: {flags: [..], copy: none | clone | compact} (R-AS-COPY).
+void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
+  const std::string f = "scene.build";
+  if (!r.expectMap(n, f, {"flags", "copy"})) return;
+  if (auto v = YamlReader::get(n, "flags"); v.IsDefined())
+    if (auto x = r.flags(v, f + ".flags", buildFlagNames())) {
+      if ((*x & kBuildPreferFastTrace) && (*x & kBuildPreferFastBuild))
+        r.error(v, f + ".flags",
+                "prefer_fast_trace and prefer_fast_build together "
+                "(VUID-VkAccelerationStructureBuildGeometryInfoKHR-flags-03796)");
+      build.flags = *x;
+    }
+  const YAML::Node copy = YamlReader::get(n, "copy");
+  if (!copy.IsDefined()) return;
+  const auto name = r.string(copy, f + ".copy");
+  if (!name) return;
+  for (AsCopy c : {AsCopy::None, AsCopy::Clone, AsCopy::Compact})
+    if (*name == asCopyName(c)) {
+      build.copy = c;
+      return;
+    }
+  r.error(copy, f + ".copy", "unknown copy '" + *name + "' (none, clone, compact)");
+}
+
 }  // namespace
 
+const char* asCopyName(AsCopy c) {
+  switch (c) {
+    case AsCopy::None:
+      return "none";
+    case AsCopy::Clone:
+      return "clone";
+    case AsCopy::Compact:
+      return "compact";
+  }
+  return "none";
+}
+
 void parseScene(YamlReader& r, const YAML::Node& n, Scene& scene) {
-  if (!r.expectMap(n, "scene", {"blas", "instances"})) return;
+  if (!r.expectMap(n, "scene", {"blas", "instances", "build"})) return;
+  if (auto b = YamlReader::get(n, "build"); b.IsDefined()) parseBuild(r, b, scene.build);
   if (auto b = YamlReader::get(n, "blas"); b.IsDefined() && !b.IsNull()) parseBlases(r, b, scene);
   const YAML::Node insts = YamlReader::get(n, "instances");
   if (!insts.IsDefined() || insts.IsNull()) return;

@@ -216,6 +216,9 @@ std::vector<FaultImpl> pipelineMutations() {
        "the pipeline stack size a trace sets is ignored: callables nested deeper than the "
        "default stack's two frames do nothing",
        nullptr, stackSizeIgnored},
+      {"copy-drops-instance", K::CaseMutation,
+       "a cloned or compacted top level loses its last active instance", nullptr,
+       copyDropsInstance},
   };
 }
 

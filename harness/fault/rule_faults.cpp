@@ -62,6 +62,7 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-NULL-SHADERS", {"no-null-shaders-dropped"}, {}},
       {"R-INDIRECT", {"indirect-launch-short"}, {}},
       {"R-STACK", {"stack-size-ignored"}, {}},
+      {"R-AS-COPY", {"copy-drops-instance"}, {}},
       {"R-LAUNCH-3D", {"launch-depth-lost", "zero-launch-runs"}, {}},
       {"R-UB", {}, {}, fail, "never checked for a result (robustness probe only)"},
   };

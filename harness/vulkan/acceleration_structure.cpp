@@ -3,10 +3,42 @@
 #include <cstring>
 #include <vector>
 
+#include "case/flag_names.h"
+#include "vulkan/acceleration_copy.h"
+#include "vulkan/commands.h"
 #include "vulkan/memory.h"
 #include "vulkan/vk_check.h"
 
 namespace rayspec {
+VkAccelerationStructureKHR createStructure(const VulkanContext& ctx,
+                                           VkAccelerationStructureTypeKHR type, VkDeviceSize size,
+                                           Cleanup& cleanup) {
+  Buffer storage = createBuffer(ctx, size,
+                                VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR |
+                                    VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                                MemoryUse::Device, cleanup);
+  VkAccelerationStructureCreateInfoKHR info{
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR};
+  info.buffer = storage.buffer;
+  info.size = size;
+  info.type = type;
+  VkAccelerationStructureKHR as = VK_NULL_HANDLE;
+  vkCheck(ctx.fn.createAccelerationStructure(ctx.device, &info, nullptr, &as),
+          "vkCreateAccelerationStructureKHR");
+  VkDevice device = ctx.device;
+  auto destroy = ctx.fn.destroyAccelerationStructure;
+  cleanup.add([device, destroy, as] { destroy(device, as, nullptr); });
+  return as;
+}
+
+void recordStructureBarrier(VkCommandBuffer cmd, VkPipelineStageFlags dst_stage) {
+  VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  mb.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
+  mb.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, dst_stage, 0, 1,
+                       &mb, 0, nullptr, 0, nullptr);
+}
+
 namespace {
 
 constexpr VkBufferUsageFlags kInputUsage =
@@ -36,6 +68,7 @@ struct BlasBuild {
   std::vector<uint64_t> offsets;  // per geometry: data, index, transform (packer offsets)
   VkAccelerationStructureKHR handle = VK_NULL_HANDLE;
   VkDeviceAddress address = 0;
+  VkDeviceSize size = 0;  // accelerationStructureSize
 };
 
 constexpr uint64_t kNone = ~0ull;
@@ -95,48 +128,23 @@ void patchAddresses(BlasBuild& b, VkDeviceAddress base) {
   }
 }
 
+// scene.build's flags, and ALLOW_COMPACTION where the structures are compacted.
+VkBuildAccelerationStructureFlagsKHR buildFlags(const AsBuild& build) {
+  return build.flags | (build.copy == AsCopy::Compact ? kBuildAllowCompaction : 0u);
+}
+
 VkAccelerationStructureBuildGeometryInfoKHR buildInfo(
     VkAccelerationStructureTypeKHR type,
-    const std::vector<VkAccelerationStructureGeometryKHR>& geos) {
+    const std::vector<VkAccelerationStructureGeometryKHR>& geos,
+    VkBuildAccelerationStructureFlagsKHR flags) {
   VkAccelerationStructureBuildGeometryInfoKHR info{
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
   info.type = type;
-  info.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR;
+  info.flags = flags;
   info.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
   info.geometryCount = static_cast<uint32_t>(geos.size());
   info.pGeometries = geos.data();
   return info;
-}
-
-// Creates the structure's storage buffer and the structure; returns its
-// build scratch size.
-VkAccelerationStructureKHR createStructure(const VulkanContext& ctx,
-                                           VkAccelerationStructureTypeKHR type, VkDeviceSize size,
-                                           Cleanup& cleanup) {
-  Buffer storage = createBuffer(ctx, size,
-                                VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR |
-                                    VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-                                MemoryUse::Device, cleanup);
-  VkAccelerationStructureCreateInfoKHR info{
-      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR};
-  info.buffer = storage.buffer;
-  info.size = size;
-  info.type = type;
-  VkAccelerationStructureKHR as = VK_NULL_HANDLE;
-  vkCheck(ctx.fn.createAccelerationStructure(ctx.device, &info, nullptr, &as),
-          "vkCreateAccelerationStructureKHR");
-  VkDevice device = ctx.device;
-  auto destroy = ctx.fn.destroyAccelerationStructure;
-  cleanup.add([device, destroy, as] { destroy(device, as, nullptr); });
-  return as;
-}
-
-void barrier(VkCommandBuffer cmd, VkPipelineStageFlags dst_stage) {
-  VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  mb.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
-  mb.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, dst_stage, 0, 1,
-                       &mb, 0, nullptr, 0, nullptr);
 }
 
 // The builds of one command buffer and their places in one scratch buffer.
@@ -158,6 +166,13 @@ struct BlasBuilds {
   std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
 };
 
+VkDeviceAddress structureAddress(const VulkanContext& ctx, VkAccelerationStructureKHR as) {
+  VkAccelerationStructureDeviceAddressInfoKHR ai{
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_DEVICE_ADDRESS_INFO_KHR};
+  ai.accelerationStructure = as;
+  return ctx.fn.getAccelerationStructureDeviceAddress(ctx.device, &ai);
+}
+
 std::vector<bool> reachedBlases(const Scene& scene) {
   std::vector<bool> used(scene.blases.size(), false);
   for (const Instance& inst : scene.instances)
@@ -166,7 +181,8 @@ std::vector<bool> reachedBlases(const Scene& scene) {
 }
 
 BlasBuilds createBlases(const VulkanContext& ctx, std::vector<BlasBuild>& builds,
-                        const std::vector<bool>& used, VkDeviceAddress inputs, ScratchPlan& scratch,
+                        const std::vector<bool>& used, VkDeviceAddress inputs,
+                        VkBuildAccelerationStructureFlagsKHR flags, ScratchPlan& scratch,
                         Cleanup& cleanup) {
   BlasBuilds out;
   for (size_t i = 0; i < builds.size(); ++i) {
@@ -174,19 +190,17 @@ BlasBuilds createBlases(const VulkanContext& ctx, std::vector<BlasBuild>& builds
     BlasBuild& b = builds[i];
     patchAddresses(b, inputs);
     VkAccelerationStructureBuildGeometryInfoKHR info =
-        buildInfo(VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, b.geometries);
+        buildInfo(VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, b.geometries, flags);
     VkAccelerationStructureBuildSizesInfoKHR sizes{
         VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
     ctx.fn.getAccelerationStructureBuildSizes(ctx.device,
                                               VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
                                               &info, b.max_primitives.data(), &sizes);
-    b.handle = createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR,
-                               sizes.accelerationStructureSize, cleanup);
+    b.size = sizes.accelerationStructureSize;
+    b.handle =
+        createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, b.size, cleanup);
     info.dstAccelerationStructure = b.handle;
-    VkAccelerationStructureDeviceAddressInfoKHR ai{
-        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_DEVICE_ADDRESS_INFO_KHR};
-    ai.accelerationStructure = b.handle;
-    b.address = ctx.fn.getAccelerationStructureDeviceAddress(ctx.device, &ai);
+    b.address = structureAddress(ctx, b.handle);
     scratch.add(sizes.buildScratchSize);
     out.infos.push_back(info);
     out.ranges.push_back(b.ranges.data());
@@ -220,8 +234,9 @@ std::vector<VkAccelerationStructureInstanceKHR> tlasInstances(const Scene& scene
 // placed. `geometry` must outlive the build info that points to it.
 VkAccelerationStructureBuildGeometryInfoKHR createTlas(
     const VulkanContext& ctx, VkDeviceAddress instances, uint32_t instance_count,
+    VkBuildAccelerationStructureFlagsKHR flags,
     std::vector<VkAccelerationStructureGeometryKHR>& geometry, ScratchPlan& scratch,
-    Cleanup& cleanup) {
+    VkDeviceSize& size, Cleanup& cleanup) {
   geometry.assign(1, VkAccelerationStructureGeometryKHR{});
   geometry[0].sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR;
   geometry[0].geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
@@ -230,13 +245,14 @@ VkAccelerationStructureBuildGeometryInfoKHR createTlas(
   geometry[0].geometry.instances.arrayOfPointers = VK_FALSE;
   geometry[0].geometry.instances.data.deviceAddress = instances;
   VkAccelerationStructureBuildGeometryInfoKHR info =
-      buildInfo(VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, geometry);
+      buildInfo(VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, geometry, flags);
   VkAccelerationStructureBuildSizesInfoKHR sizes{
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
   ctx.fn.getAccelerationStructureBuildSizes(
       ctx.device, VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &info, &instance_count, &sizes);
-  info.dstAccelerationStructure = createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
-                                                  sizes.accelerationStructureSize, cleanup);
+  size = sizes.accelerationStructureSize;
+  info.dstAccelerationStructure =
+      createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, size, cleanup);
   scratch.add(sizes.buildScratchSize);
   return info;
 }
@@ -252,11 +268,44 @@ VkDeviceAddress createScratch(const VulkanContext& ctx, const ScratchPlan& scrat
   return alignUp(buffer.address, scratch.align);
 }
 
+// The instances of every top level, one level after the other, as the
+// device reads them (tlasInstances).
+std::vector<VkAccelerationStructureInstanceKHR> allInstances(const Scene& scene,
+                                                             const std::vector<BlasBuild>& builds) {
+  std::vector<VkAccelerationStructureInstanceKHR> instances;
+  for (uint32_t level = 0; level < scene.tlasCount(); ++level) {
+    const auto own = tlasInstances(scene, builds, level);
+    instances.insert(instances.end(), own.begin(), own.end());
+  }
+  return instances;
+}
+
+// R-AS-COPY: the BLASes replaced by their copies, and the instance buffer
+// rewritten to reference the copies.
+void copyBlases(const VulkanContext& ctx, const Scene& scene, std::vector<BlasBuild>& builds,
+                Buffer& instance_buffer, Cleanup& cleanup) {
+  std::vector<BuiltStructure> from;
+  for (const BlasBuild& b : builds)
+    if (b.handle) from.push_back({b.handle, b.size});
+  const std::vector<BuiltStructure> to = copyStructures(
+      ctx, from, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, scene.build.copy, cleanup);
+  size_t k = 0;
+  for (BlasBuild& b : builds)
+    if (b.handle) {
+      b.handle = to[k].handle;
+      b.size = to[k++].size;
+      b.address = structureAddress(ctx, b.handle);
+    }
+  const auto instances = allInstances(scene, builds);
+  std::memcpy(instance_buffer.mapped, instances.data(),
+              instances.size() * sizeof(VkAccelerationStructureInstanceKHR));
+}
+
 }  // namespace
 
-std::vector<VkAccelerationStructureKHR> recordSceneBuild(const VulkanContext& ctx,
-                                                         const Scene& scene, VkCommandBuffer cmd,
-                                                         Cleanup& cleanup) {
+std::vector<VkAccelerationStructureKHR> buildScene(const VulkanContext& ctx, const Scene& scene,
+                                                   Cleanup& cleanup) {
+  const VkBuildAccelerationStructureFlagsKHR flags = buildFlags(scene.build);
   ScratchPlan scratch;
   scratch.align = ctx.as_props.minAccelerationStructureScratchOffsetAlignment;
   const std::vector<bool> used = reachedBlases(scene);
@@ -268,27 +317,24 @@ std::vector<VkAccelerationStructureKHR> recordSceneBuild(const VulkanContext& ct
   if (!packer.bytes().empty())
     inputs =
         createUploadBuffer(ctx, packer.bytes().data(), packer.bytes().size(), kInputUsage, cleanup);
-  BlasBuilds blases = createBlases(ctx, builds, used, inputs.address, scratch, cleanup);
+  BlasBuilds blases = createBlases(ctx, builds, used, inputs.address, flags, scratch, cleanup);
 
   // One TLAS per level, each over all instances (the other levels' inactive).
   const uint32_t levels = scene.tlasCount();
   const uint32_t instance_count = static_cast<uint32_t>(scene.instances.size());
-  std::vector<VkAccelerationStructureInstanceKHR> instances;
-  for (uint32_t level = 0; level < levels; ++level) {
-    const auto own = tlasInstances(scene, builds, level);
-    instances.insert(instances.end(), own.begin(), own.end());
-  }
+  const auto instances = allInstances(scene, builds);
   Buffer instance_buffer = createUploadBuffer(
       ctx, instances.data(), instances.size() * sizeof(VkAccelerationStructureInstanceKHR),
       kInputUsage, cleanup);
   std::vector<std::vector<VkAccelerationStructureGeometryKHR>> tlas_geometry(levels);
   std::vector<VkAccelerationStructureBuildGeometryInfoKHR> tlas_infos;
+  std::vector<BuiltStructure> tlases(levels);
   for (uint32_t level = 0; level < levels; ++level)
-    tlas_infos.push_back(
-        createTlas(ctx,
-                   instance_buffer.address +
-                       level * instance_count * sizeof(VkAccelerationStructureInstanceKHR),
-                   instance_count, tlas_geometry[level], scratch, cleanup));
+    tlas_infos.push_back(createTlas(
+        ctx,
+        instance_buffer.address +
+            level * instance_count * sizeof(VkAccelerationStructureInstanceKHR),
+        instance_count, flags, tlas_geometry[level], scratch, tlases[level].size, cleanup));
 
   const VkDeviceAddress scratch_base = createScratch(ctx, scratch, cleanup);
   for (size_t i = 0; i < blases.infos.size(); ++i)
@@ -297,20 +343,31 @@ std::vector<VkAccelerationStructureKHR> recordSceneBuild(const VulkanContext& ct
     tlas_infos[level].scratchData.deviceAddress =
         scratch_base + scratch.offsets[blases.infos.size() + level];
 
+  VkCommandBuffer cmd = beginCommands(ctx, cleanup);
   if (!blases.infos.empty()) {
     ctx.fn.cmdBuildAccelerationStructures(cmd, static_cast<uint32_t>(blases.infos.size()),
                                           blases.infos.data(), blases.ranges.data());
-    barrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR);
+    recordStructureBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR);
+  }
+  if (scene.build.copy != AsCopy::None) {
+    submitAndWait(ctx, cmd, kBuildTimeoutNs);
+    copyBlases(ctx, scene, builds, instance_buffer, cleanup);
+    cmd = beginCommands(ctx, cleanup);
   }
   VkAccelerationStructureBuildRangeInfoKHR tlas_range{};
   tlas_range.primitiveCount = instance_count;
   const std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> tlas_ranges(levels,
                                                                                  &tlas_range);
   ctx.fn.cmdBuildAccelerationStructures(cmd, levels, tlas_infos.data(), tlas_ranges.data());
-  barrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
-  std::vector<VkAccelerationStructureKHR> tlases;
-  for (const auto& info : tlas_infos) tlases.push_back(info.dstAccelerationStructure);
-  return tlases;
+  recordStructureBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
+  submitAndWait(ctx, cmd, kBuildTimeoutNs);
+  for (uint32_t level = 0; level < levels; ++level)
+    tlases[level].handle = tlas_infos[level].dstAccelerationStructure;
+  std::vector<VkAccelerationStructureKHR> out;
+  for (const BuiltStructure& t : copyStructures(
+           ctx, tlases, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, scene.build.copy, cleanup))
+    out.push_back(t.handle);
+  return out;
 }
 
 }  // namespace rayspec

@@ -10,15 +10,29 @@
 
 namespace rayspec {
 
-// Records into cmd: one BLAS build per case Blas that some instance references
-// (all in one vkCmdBuildAccelerationStructuresKHR), a barrier, the TLAS build
-// (an instance with a null BLAS gets accelerationStructureReference 0), and a
-// barrier making the TLAS readable by ray tracing shaders. Buffers and
-// structures live until cleanup runs. One TLAS per top level
-// (Scene::tlasCount()), each over all instances in order, those of the
-// other levels with reference 0. Returns them by level.
-std::vector<VkAccelerationStructureKHR> recordSceneBuild(const VulkanContext& ctx,
-                                                         const Scene& scene, VkCommandBuffer cmd,
-                                                         Cleanup& cleanup);
+// How long a submission of builds or copies may take.
+constexpr uint64_t kBuildTimeoutNs = 240ull * 1000 * 1000 * 1000;
+
+// Builds the scene and returns its top levels, ready for ray tracing
+// shaders: one BLAS build per case Blas that some instance references (all
+// in one vkCmdBuildAccelerationStructuresKHR), a barrier, the TLAS builds (an
+// instance with a null BLAS gets accelerationStructureReference 0), with the
+// flags of scene.build. One TLAS per top level (Scene::tlasCount()), each
+// over all instances in order, those of the other levels with reference 0.
+// One submission; with scene.build.copy (R-AS-COPY) the BLASes are copied
+// before the TLASes are built over the copies, and the TLASes are copied in
+// turn: the traces see only copies. Buffers and structures live until
+// cleanup runs. Throws VulkanError.
+std::vector<VkAccelerationStructureKHR> buildScene(const VulkanContext& ctx, const Scene& scene,
+                                                   Cleanup& cleanup);
+
+// The structure's storage buffer and the structure (size bytes), destroyed
+// by cleanup.
+VkAccelerationStructureKHR createStructure(const VulkanContext& ctx,
+                                           VkAccelerationStructureTypeKHR type, VkDeviceSize size,
+                                           Cleanup& cleanup);
+
+// Acceleration structure writes -> reads by dst_stage.
+void recordStructureBarrier(VkCommandBuffer cmd, VkPipelineStageFlags dst_stage);
 
 }  // namespace rayspec

@@ -23,6 +23,9 @@ DeviceFunctions loadDeviceFunctions(VkDevice device) {
   load(device, "vkGetAccelerationStructureDeviceAddressKHR",
        &f.getAccelerationStructureDeviceAddress);
   load(device, "vkCmdBuildAccelerationStructuresKHR", &f.cmdBuildAccelerationStructures);
+  load(device, "vkCmdCopyAccelerationStructureKHR", &f.cmdCopyAccelerationStructure);
+  load(device, "vkCmdWriteAccelerationStructuresPropertiesKHR",
+       &f.cmdWriteAccelerationStructuresProperties);
   load(device, "vkCreateRayTracingPipelinesKHR", &f.createRayTracingPipelines);
   load(device, "vkGetRayTracingShaderGroupHandlesKHR", &f.getRayTracingShaderGroupHandles);
   load(device, "vkGetRayTracingShaderGroupStackSizeKHR", &f.getRayTracingShaderGroupStackSize);

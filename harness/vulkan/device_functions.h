@@ -12,6 +12,9 @@ struct DeviceFunctions {
   PFN_vkGetAccelerationStructureBuildSizesKHR getAccelerationStructureBuildSizes = nullptr;
   PFN_vkGetAccelerationStructureDeviceAddressKHR getAccelerationStructureDeviceAddress = nullptr;
   PFN_vkCmdBuildAccelerationStructuresKHR cmdBuildAccelerationStructures = nullptr;
+  PFN_vkCmdCopyAccelerationStructureKHR cmdCopyAccelerationStructure = nullptr;
+  PFN_vkCmdWriteAccelerationStructuresPropertiesKHR cmdWriteAccelerationStructuresProperties =
+      nullptr;
   PFN_vkCreateRayTracingPipelinesKHR createRayTracingPipelines = nullptr;
   PFN_vkGetRayTracingShaderGroupHandlesKHR getRayTracingShaderGroupHandles = nullptr;
   PFN_vkGetRayTracingShaderGroupStackSizeKHR getRayTracingShaderGroupStackSize = nullptr;

@@ -130,10 +130,7 @@ void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results&
   // told apart from the trace's (the build's closing barrier orders them
   // before the trace, across submissions on the one queue).
   StepTimer build_time(r.cost, CostStep::AccelerationBuild);
-  VkCommandBuffer build = beginCommands(ctx, cleanup);
-  const std::vector<VkAccelerationStructureKHR> tlases =
-      recordSceneBuild(ctx, c.scene, build, cleanup);
-  submitAndWait(ctx, build, kTraceTimeoutNs);
+  const std::vector<VkAccelerationStructureKHR> tlases = buildScene(ctx, c.scene, cleanup);
   build_time.stop();
 
   StepTimer layout_time(r.cost, CostStep::Buffers);

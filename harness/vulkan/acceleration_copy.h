@@ -1,0 +1,32 @@
+// Copies of acceleration structures (scene.build.copy, R-AS-COPY): clones at
+// the size they were created with, or compacted copies at the size the
+// device reports after the build (a query pool of
+// VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR). Each step is a
+// submission of its own, waited on.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <vector>
+
+#include "case/case.h"
+#include "vulkan/cleanup.h"
+#include "vulkan/context.h"
+
+namespace rayspec {
+
+// One structure to copy: the handle and the size it was created with.
+struct BuiltStructure {
+  VkAccelerationStructureKHR handle = VK_NULL_HANDLE;
+  VkDeviceSize size = 0;
+};
+
+// The copies of `from` (all of `type`, built and complete), in order, made by
+// vkCmdCopyAccelerationStructureKHR in `mode` (Clone or Compact), readable by
+// builds and ray tracing shaders once this returns. Throws VulkanError.
+std::vector<BuiltStructure> copyStructures(const VulkanContext& ctx,
+                                           const std::vector<BuiltStructure>& from,
+                                           VkAccelerationStructureTypeKHR type, AsCopy mode,
+                                           Cleanup& cleanup);
+
+}  // namespace rayspec
