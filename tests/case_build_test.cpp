@@ -1,5 +1,6 @@
-// scene.build (R-AS-COPY): the build flags and the copy a case asks for, and
-// each error at its line and field.
+// scene.build (R-AS-COPY): the build flags and the copy a case asks for;
+// scene.update (R-AS-UPDATE): the scene after the update and the one first
+// built; each error at its line and field.
 #include <gtest/gtest.h>
 
 #include "case/flag_names.h"
@@ -59,6 +60,63 @@ TEST(SceneBuild, ErrorsNameTheLineAndField) {
     EXPECT_FALSE(r.value) << b.build;
     const std::string e = firstError(r);
     EXPECT_NE(e.find("t.yaml:3"), std::string::npos) << e;
+    EXPECT_NE(e.find(b.field), std::string::npos) << e;
+    EXPECT_NE(e.find(b.message), std::string::npos) << e;
+  }
+}
+
+ParseResult parseUpdate(const std::string& update) {
+  return parseCaseText(
+      "rules: [R-AS-UPDATE]\n"
+      "scene:\n"
+      "  blas:\n"
+      "    t: [{triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}}]\n"
+      "  instances: [{blas: t}, {blas: t, sbt_offset: 1}]\n"
+      "  update: " +
+          update +
+          "\n"
+          "rays:\n"
+          "  list: [{origin: [0.2, 0.2, 1], direction: [0, 0, -1]}]\n"
+          "pipeline:\n"
+          "  hit_groups: [{closest_hit: [record: [hit]]}, {closest_hit: [record: [hit]]}]\n"
+          "outputs:\n"
+          "  per_ray: [hit]\n",
+      "t.yaml", "t/t");
+}
+
+TEST(SceneUpdate, TheSceneIsAfterTheUpdateAndBuiltHoldsTheFirstBuild) {
+  const ParseResult r = parseUpdate(
+      "{blas: {t: [{vertices: [[0, 0, 1], [1, 0, 1], [0, 1, 1]]}]}, instances: [{instance: 1, "
+      "transform: {translate: [5, 0, 0]}, mask: 3}]}");
+  ASSERT_TRUE(r.value) << firstError(r);
+  const Scene& after = r.value->scene;
+  ASSERT_TRUE(after.built);
+  EXPECT_EQ(after.blases[0].geometries[0].vertices[0][2], 1.0f);
+  EXPECT_EQ(after.built->blases[0].geometries[0].vertices[0][2], 0.0f);
+  EXPECT_EQ(after.instances[1].mask, 3u);
+  EXPECT_EQ(after.instances[1].sbt_offset, 1u);  // kept
+  EXPECT_EQ(after.instances[1].blas, after.built->instances[1].blas);
+  EXPECT_EQ(after.built->instances[1].mask, 0xFFu);
+  EXPECT_TRUE(after.build.flags & kBuildAllowUpdate);
+  EXPECT_TRUE(after.built->build.flags & kBuildAllowUpdate);
+}
+
+TEST(SceneUpdate, ErrorsNameTheLineAndField) {
+  struct Bad {
+    std::string update, field, message;
+  } bad[] = {
+      {"{blas: {t: [{vertices: [[0, 0, 1]]}]}}", "scene.update.blas.t[0].vertices",
+       "1 entries, but the geometry was built with 3"},
+      {"{blas: {u: [{}]}}", "scene.update.blas.u", "unknown BLAS 'u'"},
+      {"{blas: {t: [{}, {}]}}", "scene.update.blas.t", "the BLAS has 1 geometries"},
+      {"{instances: [{instance: 2, mask: 1}]}", "scene.update.instances[0].instance",
+       "but the scene has 2"},
+      {"{instances: [{instance: 0, blas: t}]}", "scene.update.instances[0]", "unknown key 'blas'"}};
+  for (const Bad& b : bad) {
+    const ParseResult r = parseUpdate(b.update);
+    EXPECT_FALSE(r.value) << b.update;
+    const std::string e = firstError(r);
+    EXPECT_NE(e.find("t.yaml:6"), std::string::npos) << e;
     EXPECT_NE(e.find(b.field), std::string::npos) << e;
     EXPECT_NE(e.find(b.message), std::string::npos) << e;
   }

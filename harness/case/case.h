@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -117,6 +118,10 @@ struct Scene {
   std::vector<Blas> blases;
   std::vector<Instance> instances;
   AsBuild build;
+  // R-AS-UPDATE (scene.update): the scene as first built, when an update then
+  // moves it; this Scene is the one after the update, what the traces see.
+  // The device builds `built` with ALLOW_UPDATE and updates it into this one.
+  std::shared_ptr<const Scene> built;
   // How many top levels the scene has: one past the highest Instance::tlas
   // (a level no instance names is built empty); at least 1.
   uint32_t tlasCount() const {

@@ -11,6 +11,12 @@
 namespace rayspec {
 
 void parseScene(YamlReader& r, const YAML::Node& n, Scene& scene);
+// scene.update (parse_update.cpp): `scene` as parsed becomes Scene::built,
+// and `scene` the scene after the update.
+void parseSceneUpdate(YamlReader& r, const YAML::Node& n, Scene& scene);
+// One instance of scene.instances (its blas named among scene.blases).
+void parseInstance(YamlReader& r, const YAML::Node& n, const std::string& field, const Scene& scene,
+                   Instance& inst);
 // The scene first: the `aim` form aims at one of its meshes.
 void parseRays(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& rays);
 void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& pipeline);

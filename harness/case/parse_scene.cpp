@@ -141,7 +141,9 @@ void parseBlases(YamlReader& r, const YAML::Node& n, Scene& scene) {
   }
 }
 
-void parseInstance(YamlReader& r, const YAML::Node& n, const std::string& field, Scene& scene,
+}  // namespace
+
+void parseInstance(YamlReader& r, const YAML::Node& n, const std::string& field, const Scene& scene,
                    Instance& inst) {
   inst.loc = r.loc(n, field);
   if (!r.expectMap(n, field,
@@ -178,6 +180,8 @@ void parseInstance(YamlReader& r, const YAML::Node& n, const std::string& field,
   if (auto t = YamlReader::get(n, "tlas"); t.IsDefined())
     if (auto v = r.uint(t, field + ".tlas", kMaxTlases - 1)) inst.tlas = *v;
 }
+
+namespace {
 
 // scene.build: {flags: [..], copy: none | clone | compact} (R-AS-COPY).
 void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
@@ -218,17 +222,17 @@ const char* asCopyName(AsCopy c) {
 }
 
 void parseScene(YamlReader& r, const YAML::Node& n, Scene& scene) {
-  if (!r.expectMap(n, "scene", {"blas", "instances", "build"})) return;
+  if (!r.expectMap(n, "scene", {"blas", "instances", "build", "update"})) return;
   if (auto b = YamlReader::get(n, "build"); b.IsDefined()) parseBuild(r, b, scene.build);
   if (auto b = YamlReader::get(n, "blas"); b.IsDefined() && !b.IsNull()) parseBlases(r, b, scene);
   const YAML::Node insts = YamlReader::get(n, "instances");
-  if (!insts.IsDefined() || insts.IsNull()) return;
-  if (!r.expectSeq(insts, "scene.instances")) return;
-  for (size_t i = 0; i < insts.size(); ++i) {
-    Instance inst;
-    parseInstance(r, insts[i], "scene.instances[" + std::to_string(i) + "]", scene, inst);
-    scene.instances.push_back(inst);
-  }
+  if (insts.IsDefined() && !insts.IsNull() && r.expectSeq(insts, "scene.instances"))
+    for (size_t i = 0; i < insts.size(); ++i) {
+      Instance inst;
+      parseInstance(r, insts[i], "scene.instances[" + std::to_string(i) + "]", scene, inst);
+      scene.instances.push_back(inst);
+    }
+  if (auto u = YamlReader::get(n, "update"); u.IsDefined()) parseSceneUpdate(r, u, scene);
 }
 
 }  // namespace rayspec

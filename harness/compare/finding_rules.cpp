@@ -50,7 +50,7 @@ Rules join(std::initializer_list<const Rules*> parts, Rules own = {}) {
 // counter may show them broken.
 const Rules& pipelineRules() {
   static const Rules r = {"R-LIBRARY", "R-RAYGEN-REGION", "R-NULL-SHADERS", "R-INDIRECT",
-                          "R-STACK",   "R-LAUNCH-3D",     "R-AS-COPY"};
+                          "R-STACK",   "R-LAUNCH-3D",     "R-AS-COPY",      "R-AS-UPDATE"};
   return r;
 }
 

@@ -219,6 +219,9 @@ std::vector<FaultImpl> pipelineMutations() {
       {"copy-drops-instance", K::CaseMutation,
        "a cloned or compacted top level loses its last active instance", nullptr,
        copyDropsInstance},
+      {"update-ignored", K::CaseMutation,
+       "an acceleration structure update changes nothing: traces see the scene as first built",
+       nullptr, updateIgnored},
   };
 }
 

@@ -151,20 +151,57 @@ VkAccelerationStructureBuildGeometryInfoKHR buildInfo(
 struct ScratchPlan {
   VkDeviceSize align = 0;
   VkDeviceSize total = 0;
-  std::vector<VkDeviceSize> offsets;  // one a build, in order
-  void add(VkDeviceSize size) {
+  VkDeviceSize add(VkDeviceSize size) {
     total = alignUp(total, align);
-    offsets.push_back(total);
+    const VkDeviceSize at = total;
     total += size;
+    return at;
   }
 };
 
-// The BLAS builds: their structures created at the sizes the driver asks
-// for, their scratch placed. Only BLASes some instance reaches are built.
-struct BlasBuilds {
+// Builds (or updates) of one level recorded in one vkCmdBuildAccelerationStructuresKHR,
+// each with its scratch offset, and each structure's update scratch size.
+struct Builds {
   std::vector<VkAccelerationStructureBuildGeometryInfoKHR> infos;
   std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
+  std::vector<VkDeviceSize> scratch_offsets, update_scratch;
+  std::vector<size_t> blas;  // BLAS builds: the scene's BLAS index of each
+
+  void add(const VkAccelerationStructureBuildGeometryInfoKHR& info,
+           const VkAccelerationStructureBuildRangeInfoKHR* range, VkDeviceSize scratch_offset) {
+    infos.push_back(info);
+    ranges.push_back(range);
+    scratch_offsets.push_back(scratch_offset);
+  }
+  void placeScratch(VkDeviceAddress base) {
+    for (size_t i = 0; i < infos.size(); ++i)
+      infos[i].scratchData.deviceAddress = base + scratch_offsets[i];
+  }
+  void record(const VulkanContext& ctx, VkCommandBuffer cmd, VkPipelineStageFlags next) const {
+    if (infos.empty()) return;
+    ctx.fn.cmdBuildAccelerationStructures(cmd, static_cast<uint32_t>(infos.size()), infos.data(),
+                                          ranges.data());
+    recordStructureBarrier(cmd, next);
+  }
 };
+
+// The same builds in UPDATE mode (R-AS-UPDATE): each structure updated in
+// place from `geometries[i]` (which must outlive the result).
+Builds updatesOf(
+    const Builds& built,
+    const std::vector<const std::vector<VkAccelerationStructureGeometryKHR>*>& geometries,
+    const std::vector<const VkAccelerationStructureBuildRangeInfoKHR*>& ranges,
+    ScratchPlan& scratch) {
+  Builds out;
+  for (size_t i = 0; i < built.infos.size(); ++i) {
+    VkAccelerationStructureBuildGeometryInfoKHR info = built.infos[i];
+    info.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR;
+    info.srcAccelerationStructure = info.dstAccelerationStructure;
+    info.pGeometries = geometries[i]->data();
+    out.add(info, ranges[i], scratch.add(built.update_scratch[i]));
+  }
+  return out;
+}
 
 VkDeviceAddress structureAddress(const VulkanContext& ctx, VkAccelerationStructureKHR as) {
   VkAccelerationStructureDeviceAddressInfoKHR ai{
@@ -180,15 +217,15 @@ std::vector<bool> reachedBlases(const Scene& scene) {
   return used;
 }
 
-BlasBuilds createBlases(const VulkanContext& ctx, std::vector<BlasBuild>& builds,
-                        const std::vector<bool>& used, VkDeviceAddress inputs,
-                        VkBuildAccelerationStructureFlagsKHR flags, ScratchPlan& scratch,
-                        Cleanup& cleanup) {
-  BlasBuilds out;
+// The BLAS builds: their structures created at the sizes the driver asks
+// for, their scratch placed. Only BLASes some instance reaches are built.
+Builds createBlases(const VulkanContext& ctx, std::vector<BlasBuild>& builds,
+                    const std::vector<bool>& used, VkBuildAccelerationStructureFlagsKHR flags,
+                    ScratchPlan& scratch, Cleanup& cleanup) {
+  Builds out;
   for (size_t i = 0; i < builds.size(); ++i) {
     if (!used[i]) continue;
     BlasBuild& b = builds[i];
-    patchAddresses(b, inputs);
     VkAccelerationStructureBuildGeometryInfoKHR info =
         buildInfo(VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, b.geometries, flags);
     VkAccelerationStructureBuildSizesInfoKHR sizes{
@@ -201,9 +238,9 @@ BlasBuilds createBlases(const VulkanContext& ctx, std::vector<BlasBuild>& builds
         createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, b.size, cleanup);
     info.dstAccelerationStructure = b.handle;
     b.address = structureAddress(ctx, b.handle);
-    scratch.add(sizes.buildScratchSize);
-    out.infos.push_back(info);
-    out.ranges.push_back(b.ranges.data());
+    out.add(info, b.ranges.data(), scratch.add(sizes.buildScratchSize));
+    out.update_scratch.push_back(sizes.updateScratchSize);
+    out.blas.push_back(i);
   }
   return out;
 }
@@ -230,31 +267,58 @@ std::vector<VkAccelerationStructureInstanceKHR> tlasInstances(const Scene& scene
   return instances;
 }
 
-// The TLAS build over an instance buffer: its structure created, its scratch
-// placed. `geometry` must outlive the build info that points to it.
-VkAccelerationStructureBuildGeometryInfoKHR createTlas(
-    const VulkanContext& ctx, VkDeviceAddress instances, uint32_t instance_count,
-    VkBuildAccelerationStructureFlagsKHR flags,
-    std::vector<VkAccelerationStructureGeometryKHR>& geometry, ScratchPlan& scratch,
-    VkDeviceSize& size, Cleanup& cleanup) {
-  geometry.assign(1, VkAccelerationStructureGeometryKHR{});
-  geometry[0].sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR;
-  geometry[0].geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
-  geometry[0].geometry.instances.sType =
-      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
-  geometry[0].geometry.instances.arrayOfPointers = VK_FALSE;
-  geometry[0].geometry.instances.data.deviceAddress = instances;
-  VkAccelerationStructureBuildGeometryInfoKHR info =
-      buildInfo(VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, geometry, flags);
-  VkAccelerationStructureBuildSizesInfoKHR sizes{
-      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
-  ctx.fn.getAccelerationStructureBuildSizes(
-      ctx.device, VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &info, &instance_count, &sizes);
-  size = sizes.accelerationStructureSize;
-  info.dstAccelerationStructure =
-      createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, size, cleanup);
-  scratch.add(sizes.buildScratchSize);
-  return info;
+// The instances of every top level, one level after the other.
+std::vector<VkAccelerationStructureInstanceKHR> allInstances(const Scene& scene,
+                                                             const std::vector<BlasBuild>& builds) {
+  std::vector<VkAccelerationStructureInstanceKHR> instances;
+  for (uint32_t level = 0; level < scene.tlasCount(); ++level) {
+    const auto own = tlasInstances(scene, builds, level);
+    instances.insert(instances.end(), own.begin(), own.end());
+  }
+  return instances;
+}
+
+// The instance geometry of each level over an instance buffer holding every
+// level's instances one after the other.
+std::vector<std::vector<VkAccelerationStructureGeometryKHR>> instanceGeometry(
+    VkDeviceAddress instances, uint32_t levels, uint32_t instance_count) {
+  std::vector<std::vector<VkAccelerationStructureGeometryKHR>> out(levels);
+  for (uint32_t level = 0; level < levels; ++level) {
+    VkAccelerationStructureGeometryKHR g{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
+    g.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
+    g.geometry.instances.sType =
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
+    g.geometry.instances.arrayOfPointers = VK_FALSE;
+    g.geometry.instances.data.deviceAddress =
+        instances + level * instance_count * sizeof(VkAccelerationStructureInstanceKHR);
+    out[level].push_back(g);
+  }
+  return out;
+}
+
+// The TLAS builds over `geometry` (one a level): structures created, scratch placed.
+Builds createTlases(const VulkanContext& ctx,
+                    const std::vector<std::vector<VkAccelerationStructureGeometryKHR>>& geometry,
+                    uint32_t instance_count, const VkAccelerationStructureBuildRangeInfoKHR* range,
+                    VkBuildAccelerationStructureFlagsKHR flags, ScratchPlan& scratch,
+                    std::vector<BuiltStructure>& structures, Cleanup& cleanup) {
+  Builds out;
+  for (const auto& g : geometry) {
+    VkAccelerationStructureBuildGeometryInfoKHR info =
+        buildInfo(VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, g, flags);
+    VkAccelerationStructureBuildSizesInfoKHR sizes{
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
+    ctx.fn.getAccelerationStructureBuildSizes(ctx.device,
+                                              VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
+                                              &info, &instance_count, &sizes);
+    info.dstAccelerationStructure =
+        createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
+                        sizes.accelerationStructureSize, cleanup);
+    structures.push_back({info.dstAccelerationStructure, sizes.accelerationStructureSize});
+    out.add(info, range, scratch.add(sizes.buildScratchSize));
+    out.update_scratch.push_back(sizes.updateScratchSize);
+  }
+  return out;
 }
 
 // One scratch buffer for every build; its address aligned up to the
@@ -268,106 +332,142 @@ VkDeviceAddress createScratch(const VulkanContext& ctx, const ScratchPlan& scrat
   return alignUp(buffer.address, scratch.align);
 }
 
-// The instances of every top level, one level after the other, as the
-// device reads them (tlasInstances).
-std::vector<VkAccelerationStructureInstanceKHR> allInstances(const Scene& scene,
-                                                             const std::vector<BlasBuild>& builds) {
-  std::vector<VkAccelerationStructureInstanceKHR> instances;
-  for (uint32_t level = 0; level < scene.tlasCount(); ++level) {
-    const auto own = tlasInstances(scene, builds, level);
-    instances.insert(instances.end(), own.begin(), own.end());
+// The builds of one scene: BLASes (and their updates), then TLASes (and
+// their updates), each level's instances in a host-visible buffer so that
+// copies of the BLASes can be referenced once they exist.
+class SceneBuilder {
+ public:
+  SceneBuilder(const VulkanContext& ctx, const Scene& scene, Cleanup& cleanup)
+      : ctx_(ctx), scene_(scene), first_(scene.built ? *scene.built : scene), cleanup_(cleanup) {
+    scratch_.align = ctx.as_props.minAccelerationStructureScratchOffsetAlignment;
   }
-  return instances;
-}
 
-// R-AS-COPY: the BLASes replaced by their copies, and the instance buffer
-// rewritten to reference the copies.
-void copyBlases(const VulkanContext& ctx, const Scene& scene, std::vector<BlasBuild>& builds,
-                Buffer& instance_buffer, Cleanup& cleanup) {
-  std::vector<BuiltStructure> from;
-  for (const BlasBuild& b : builds)
-    if (b.handle) from.push_back({b.handle, b.size});
-  const std::vector<BuiltStructure> to = copyStructures(
-      ctx, from, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, scene.build.copy, cleanup);
-  size_t k = 0;
-  for (BlasBuild& b : builds)
-    if (b.handle) {
-      b.handle = to[k].handle;
-      b.size = to[k++].size;
-      b.address = structureAddress(ctx, b.handle);
+  std::vector<VkAccelerationStructureKHR> run() {
+    describeBlases();
+    createTopLevels();
+    const VkDeviceAddress base = createScratch(ctx_, scratch_, cleanup_);
+    for (Builds* b : {&blases_, &blas_updates_, &tlases_, &tlas_updates_}) b->placeScratch(base);
+    VkCommandBuffer cmd = beginCommands(ctx_, cleanup_);
+    blases_.record(ctx_, cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR);
+    blas_updates_.record(ctx_, cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR);
+    if (scene_.build.copy != AsCopy::None) {
+      submitAndWait(ctx_, cmd, kBuildTimeoutNs);
+      copyBlases();
+      cmd = beginCommands(ctx_, cleanup_);
     }
-  const auto instances = allInstances(scene, builds);
-  std::memcpy(instance_buffer.mapped, instances.data(),
-              instances.size() * sizeof(VkAccelerationStructureInstanceKHR));
-}
+    const VkPipelineStageFlags next = VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
+                                      VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR;
+    tlases_.record(ctx_, cmd, next);
+    tlas_updates_.record(ctx_, cmd, next);
+    submitAndWait(ctx_, cmd, kBuildTimeoutNs);
+    std::vector<VkAccelerationStructureKHR> out;
+    for (const BuiltStructure& t :
+         copyStructures(ctx_, tlas_structures_, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
+                        scene_.build.copy, cleanup_))
+      out.push_back(t.handle);
+    return out;
+  }
+
+ private:
+  // Every reached BLAS of the scene as first built, and (scene.update) the
+  // geometry it is updated to: one input buffer for both.
+  void describeBlases() {
+    const std::vector<bool> used = reachedBlases(first_);
+    InputPacker packer;
+    builds_.resize(first_.blases.size());
+    updates_.resize(scene_.built ? first_.blases.size() : 0);
+    for (size_t i = 0; i < first_.blases.size(); ++i) {
+      if (!used[i]) continue;
+      describeBlas(first_.blases[i], packer, builds_[i]);
+      if (scene_.built) describeBlas(scene_.blases[i], packer, updates_[i]);
+    }
+    if (!packer.bytes().empty()) {
+      const Buffer inputs = createUploadBuffer(ctx_, packer.bytes().data(), packer.bytes().size(),
+                                               kInputUsage, cleanup_);
+      for (BlasBuild& b : builds_) patchAddresses(b, inputs.address);
+      for (BlasBuild& b : updates_) patchAddresses(b, inputs.address);
+    }
+    const VkBuildAccelerationStructureFlagsKHR flags = buildFlags(scene_.build);
+    blases_ = createBlases(ctx_, builds_, used, flags, scratch_, cleanup_);
+    if (!scene_.built) return;
+    std::vector<const std::vector<VkAccelerationStructureGeometryKHR>*> geometries;
+    std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
+    for (size_t i : blases_.blas) {
+      geometries.push_back(&updates_[i].geometries);
+      ranges.push_back(updates_[i].ranges.data());
+    }
+    blas_updates_ = updatesOf(blases_, geometries, ranges, scratch_);
+  }
+
+  // One TLAS per level, each over all instances (the other levels'
+  // inactive); with scene.update, their update to the moved instances.
+  void createTopLevels() {
+    const uint32_t levels = first_.tlasCount();
+    instance_count_ = static_cast<uint32_t>(first_.instances.size());
+    tlas_range_.primitiveCount = instance_count_;
+    const VkDeviceSize bytes = std::max<VkDeviceSize>(1, size_t(levels) * instance_count_) *
+                               sizeof(VkAccelerationStructureInstanceKHR);
+    first_instances_ = createBuffer(ctx_, bytes, kInputUsage, MemoryUse::Host, cleanup_);
+    writeInstances(first_, first_instances_);
+    const VkBuildAccelerationStructureFlagsKHR flags = buildFlags(scene_.build);
+    tlas_geometry_ = instanceGeometry(first_instances_.address, levels, instance_count_);
+    tlases_ = createTlases(ctx_, tlas_geometry_, instance_count_, &tlas_range_, flags, scratch_,
+                           tlas_structures_, cleanup_);
+    if (!scene_.built) return;
+    moved_instances_ = createBuffer(ctx_, bytes, kInputUsage, MemoryUse::Host, cleanup_);
+    writeInstances(scene_, moved_instances_);
+    moved_geometry_ = instanceGeometry(moved_instances_.address, levels, instance_count_);
+    std::vector<const std::vector<VkAccelerationStructureGeometryKHR>*> geometries;
+    for (const auto& g : moved_geometry_) geometries.push_back(&g);
+    tlas_updates_ = updatesOf(
+        tlases_, geometries,
+        std::vector<const VkAccelerationStructureBuildRangeInfoKHR*>(levels, &tlas_range_),
+        scratch_);
+  }
+
+  void writeInstances(const Scene& scene, Buffer& buffer) const {
+    const auto instances = allInstances(scene, builds_);
+    if (!instances.empty())
+      std::memcpy(buffer.mapped, instances.data(),
+                  instances.size() * sizeof(VkAccelerationStructureInstanceKHR));
+  }
+
+  // R-AS-COPY: the BLASes replaced by their copies, and the instance buffers
+  // rewritten to reference the copies.
+  void copyBlases() {
+    std::vector<BuiltStructure> from;
+    for (size_t i : blases_.blas) from.push_back({builds_[i].handle, builds_[i].size});
+    const std::vector<BuiltStructure> to = copyStructures(
+        ctx_, from, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, scene_.build.copy, cleanup_);
+    for (size_t k = 0; k < to.size(); ++k) {
+      BlasBuild& b = builds_[blases_.blas[k]];
+      b.handle = to[k].handle;
+      b.size = to[k].size;
+      b.address = structureAddress(ctx_, b.handle);
+    }
+    writeInstances(first_, first_instances_);
+    if (scene_.built) writeInstances(scene_, moved_instances_);
+  }
+
+  const VulkanContext& ctx_;
+  const Scene& scene_;  // as the traces see it
+  const Scene& first_;  // as first built (scene.update: Scene::built)
+  Cleanup& cleanup_;
+  ScratchPlan scratch_;
+  std::vector<BlasBuild> builds_, updates_;
+  Builds blases_, blas_updates_, tlases_, tlas_updates_;
+  uint32_t instance_count_ = 0;
+  VkAccelerationStructureBuildRangeInfoKHR tlas_range_{};
+  Buffer first_instances_, moved_instances_;
+  std::vector<std::vector<VkAccelerationStructureGeometryKHR>> tlas_geometry_, moved_geometry_;
+  std::vector<BuiltStructure> tlas_structures_;
+};
 
 }  // namespace
 
 std::vector<VkAccelerationStructureKHR> buildScene(const VulkanContext& ctx, const Scene& scene,
                                                    Cleanup& cleanup) {
-  const VkBuildAccelerationStructureFlagsKHR flags = buildFlags(scene.build);
-  ScratchPlan scratch;
-  scratch.align = ctx.as_props.minAccelerationStructureScratchOffsetAlignment;
-  const std::vector<bool> used = reachedBlases(scene);
-  InputPacker packer;
-  std::vector<BlasBuild> builds(scene.blases.size());
-  for (size_t i = 0; i < scene.blases.size(); ++i)
-    if (used[i]) describeBlas(scene.blases[i], packer, builds[i]);
-  Buffer inputs;
-  if (!packer.bytes().empty())
-    inputs =
-        createUploadBuffer(ctx, packer.bytes().data(), packer.bytes().size(), kInputUsage, cleanup);
-  BlasBuilds blases = createBlases(ctx, builds, used, inputs.address, flags, scratch, cleanup);
-
-  // One TLAS per level, each over all instances (the other levels' inactive).
-  const uint32_t levels = scene.tlasCount();
-  const uint32_t instance_count = static_cast<uint32_t>(scene.instances.size());
-  const auto instances = allInstances(scene, builds);
-  Buffer instance_buffer = createUploadBuffer(
-      ctx, instances.data(), instances.size() * sizeof(VkAccelerationStructureInstanceKHR),
-      kInputUsage, cleanup);
-  std::vector<std::vector<VkAccelerationStructureGeometryKHR>> tlas_geometry(levels);
-  std::vector<VkAccelerationStructureBuildGeometryInfoKHR> tlas_infos;
-  std::vector<BuiltStructure> tlases(levels);
-  for (uint32_t level = 0; level < levels; ++level)
-    tlas_infos.push_back(createTlas(
-        ctx,
-        instance_buffer.address +
-            level * instance_count * sizeof(VkAccelerationStructureInstanceKHR),
-        instance_count, flags, tlas_geometry[level], scratch, tlases[level].size, cleanup));
-
-  const VkDeviceAddress scratch_base = createScratch(ctx, scratch, cleanup);
-  for (size_t i = 0; i < blases.infos.size(); ++i)
-    blases.infos[i].scratchData.deviceAddress = scratch_base + scratch.offsets[i];
-  for (uint32_t level = 0; level < levels; ++level)
-    tlas_infos[level].scratchData.deviceAddress =
-        scratch_base + scratch.offsets[blases.infos.size() + level];
-
-  VkCommandBuffer cmd = beginCommands(ctx, cleanup);
-  if (!blases.infos.empty()) {
-    ctx.fn.cmdBuildAccelerationStructures(cmd, static_cast<uint32_t>(blases.infos.size()),
-                                          blases.infos.data(), blases.ranges.data());
-    recordStructureBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR);
-  }
-  if (scene.build.copy != AsCopy::None) {
-    submitAndWait(ctx, cmd, kBuildTimeoutNs);
-    copyBlases(ctx, scene, builds, instance_buffer, cleanup);
-    cmd = beginCommands(ctx, cleanup);
-  }
-  VkAccelerationStructureBuildRangeInfoKHR tlas_range{};
-  tlas_range.primitiveCount = instance_count;
-  const std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> tlas_ranges(levels,
-                                                                                 &tlas_range);
-  ctx.fn.cmdBuildAccelerationStructures(cmd, levels, tlas_infos.data(), tlas_ranges.data());
-  recordStructureBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
-  submitAndWait(ctx, cmd, kBuildTimeoutNs);
-  for (uint32_t level = 0; level < levels; ++level)
-    tlases[level].handle = tlas_infos[level].dstAccelerationStructure;
-  std::vector<VkAccelerationStructureKHR> out;
-  for (const BuiltStructure& t : copyStructures(
-           ctx, tlases, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, scene.build.copy, cleanup))
-    out.push_back(t.handle);
-  return out;
+  return SceneBuilder(ctx, scene, cleanup).run();
 }
 
 }  // namespace rayspec
