@@ -15,6 +15,7 @@
 #include "base/affine.h"
 #include "base/source_loc.h"
 #include "base/vec3.h"
+#include "case/vertex_format.h"
 #include "program/payload_words.h"
 #include "program/program.h"
 #include "results/undefined_reason.h"
@@ -67,8 +68,11 @@ struct Geometry {
   uint32_t flags = 0;  // GeometryFlag bits
   // Triangles: vertices (float32, NaN allowed), indices (uint32) or empty for
   // non-indexed (each 3 consecutive vertices one triangle).
-  std::vector<Vec3> vertices;
+  std::vector<Vec3> vertices;  // as the vertex format stores them (storedVertex)
   std::vector<uint32_t> indices;
+  VertexFormat vertex_format = VertexFormat::Float3;  // R-VERTEX-FORMAT
+  bool index16 = false;                               // VK_INDEX_TYPE_UINT16
+  std::vector<Vec3> written;           // the positions as written, where the format rounds them
   std::optional<Transform> transform;  // optional geometry transform (triangles)
   // Aabbs: min x,y,z, max x,y,z per primitive.
   std::vector<std::array<float, 6>> aabbs;

@@ -8,9 +8,12 @@
 namespace rayspec {
 namespace {
 
-bool parseTriangles(YamlReader& r, const YAML::Node& n, const std::string& field, Geometry& g) {
+bool parseTriangleData(YamlReader& r, const YAML::Node& n, const std::string& field, Geometry& g) {
   g.kind = Geometry::Kind::Triangles;
-  if (!r.expectMap(n, field, {"grid", "fan", "triangulation", "vertices", "indices"})) return false;
+  if (!r.expectMap(
+          n, field,
+          {"grid", "fan", "triangulation", "vertices", "indices", "vertex_format", "index_type"}))
+    return false;
   if (const std::optional<bool> generated = parseGeneratedMesh(r, n, field, g)) return *generated;
   if (!r.require(n, field, "vertices")) return false;
   const YAML::Node verts = YamlReader::get(n, "vertices");
@@ -58,6 +61,55 @@ bool parseTriangles(YamlReader& r, const YAML::Node& n, const std::string& field
     ok = false;
   }
   return ok;
+}
+
+// triangles.vertex_format and index_type (R-VERTEX-FORMAT): every position
+// checked against the format and replaced by what the format stores.
+bool parseFormats(YamlReader& r, const YAML::Node& n, const std::string& field, Geometry& g) {
+  bool ok = true;
+  if (const YAML::Node v = YamlReader::get(n, "vertex_format"); v.IsDefined()) {
+    const auto name = r.string(v, field + ".vertex_format");
+    const auto format = name ? vertexFormatFromName(*name) : std::nullopt;
+    if (name && !format)
+      r.error(v, field + ".vertex_format",
+              "unknown vertex format '" + *name + "' (" + vertexFormatNames() + ")");
+    if (!format) return false;
+    g.vertex_format = *format;
+  }
+  if (g.vertex_format != VertexFormat::Float3) {
+    g.written = g.vertices;
+    for (size_t i = 0; i < g.vertices.size() && ok; ++i)
+      if (const std::string problem = vertexFormatProblem(g.vertex_format, g.vertices[i]);
+          !problem.empty()) {
+        r.error(n, field + ".vertices[" + std::to_string(i) + "]", problem);
+        ok = false;
+      }
+    for (Vec3& v : g.vertices) v = storedVertex(g.vertex_format, v);
+  }
+  if (const YAML::Node t = YamlReader::get(n, "index_type"); t.IsDefined()) {
+    const auto name = r.string(t, field + ".index_type");
+    if (!name) return false;
+    if (*name != "uint16" && *name != "uint32") {
+      r.error(t, field + ".index_type", "unknown index type '" + *name + "' (uint16, uint32)");
+      return false;
+    }
+    g.index16 = *name == "uint16";
+    if (g.index16 && g.indices.empty()) {
+      r.error(t, field + ".index_type", "uint16 needs indices");
+      ok = false;
+    }
+    if (g.index16 && g.vertices.size() > 65536) {
+      r.error(t, field + ".index_type",
+              "uint16 indices reach 65536 vertices, the geometry has " +
+                  std::to_string(g.vertices.size()));
+      ok = false;
+    }
+  }
+  return ok;
+}
+
+bool parseTriangles(YamlReader& r, const YAML::Node& n, const std::string& field, Geometry& g) {
+  return parseTriangleData(r, n, field, g) && parseFormats(r, n, field, g);
 }
 
 bool parseAabbs(YamlReader& r, const YAML::Node& n, const std::string& field, Geometry& g) {

@@ -18,6 +18,17 @@
 namespace rayspec {
 namespace {
 
+// A new position, as the geometry's vertex format stores it.
+void setVertex(YamlReader& r, const YAML::Node& n, const std::string& f, Geometry& g, size_t i,
+               const Vec3& v) {
+  if (const std::string problem = vertexFormatProblem(g.vertex_format, v); !problem.empty()) {
+    r.error(n, f, problem);
+    return;
+  }
+  if (!g.written.empty()) g.written[i] = v;
+  g.vertices[i] = storedVertex(g.vertex_format, v);
+}
+
 // One geometry's new positions or boxes, the same count as before.
 void updateGeometry(YamlReader& r, const YAML::Node& n, const std::string& f, Geometry& g) {
   if (n.IsNull()) return;
@@ -38,8 +49,9 @@ void updateGeometry(YamlReader& r, const YAML::Node& n, const std::string& f, Ge
     const std::string fi = fl + "[" + std::to_string(i) + "]";
     if (triangles) {
       if (auto v = r.numbers<3>(list[i], fi, true))
-        g.vertices[i] = {static_cast<float>((*v)[0]), static_cast<float>((*v)[1]),
-                         static_cast<float>((*v)[2])};
+        setVertex(r, list[i], fi, g, i,
+                  {static_cast<float>((*v)[0]), static_cast<float>((*v)[1]),
+                   static_cast<float>((*v)[2])});
     } else if (auto v = r.numbers<6>(list[i], fi, true)) {
       for (int k = 0; k < 6; ++k) g.aabbs[i][k] = static_cast<float>((*v)[k]);
     }

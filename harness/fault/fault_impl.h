@@ -96,6 +96,7 @@ std::string libraryGroupsLost(Case& c, ModelOptions& o);
 std::string stackSizeIgnored(Case& c, ModelOptions& o);
 std::string copyDropsInstance(Case& c, ModelOptions& o);
 std::string updateIgnored(Case& c, ModelOptions& o);
+std::string vertexFormatIgnored(Case& c, ModelOptions& o);
 std::string hitAttributesLost(Case& c, ModelOptions& o);
 std::string callableDataNotReturned(Case& c, ModelOptions& o);
 std::string nestedTraceDropped(Case& c, ModelOptions& o);

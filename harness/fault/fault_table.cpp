@@ -222,6 +222,10 @@ std::vector<FaultImpl> pipelineMutations() {
       {"update-ignored", K::CaseMutation,
        "an acceleration structure update changes nothing: traces see the scene as first built",
        nullptr, updateIgnored},
+      {"vertex-format-ignored", K::CaseMutation,
+       "vertices in half or snorm16 formats are traced where the case wrote them, not where the "
+       "format puts them",
+       nullptr, vertexFormatIgnored},
   };
 }
 

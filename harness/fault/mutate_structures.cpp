@@ -26,4 +26,17 @@ std::string updateIgnored(Case& c, ModelOptions&) {
   return "the update was ignored: the scene as first built";
 }
 
+// R-VERTEX-FORMAT broken: a device that does not round positions to their
+// vertex format (triangles.vertex_format): the positions as the case wrote them.
+std::string vertexFormatIgnored(Case& c, ModelOptions&) {
+  size_t n = 0;
+  for (Blas& b : c.scene.blases)
+    for (Geometry& g : b.geometries)
+      if (!g.written.empty() && g.written != g.vertices) {
+        g.vertices = g.written;
+        ++n;
+      }
+  return n ? std::to_string(n) + " geometries traced at their unrounded positions" : "";
+}
+
 }  // namespace rayspec

@@ -31,6 +31,24 @@ VkAccelerationStructureKHR createStructure(const VulkanContext& ctx,
   return as;
 }
 
+VkFormat vkVertexFormat(VertexFormat f) {
+  switch (f) {
+    case VertexFormat::Float3:
+      return VK_FORMAT_R32G32B32_SFLOAT;
+    case VertexFormat::Float2:
+      return VK_FORMAT_R32G32_SFLOAT;
+    case VertexFormat::Half4:
+      return VK_FORMAT_R16G16B16A16_SFLOAT;
+    case VertexFormat::Half2:
+      return VK_FORMAT_R16G16_SFLOAT;
+    case VertexFormat::Snorm16x4:
+      return VK_FORMAT_R16G16B16A16_SNORM;
+    case VertexFormat::Snorm16x2:
+      return VK_FORMAT_R16G16_SNORM;
+  }
+  return VK_FORMAT_R32G32B32_SFLOAT;
+}
+
 void recordStructureBarrier(VkCommandBuffer cmd, VkPipelineStageFlags dst_stage) {
   VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   mb.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
@@ -85,12 +103,20 @@ void describeBlas(const Blas& blas, InputPacker& packer, BlasBuild& b) {
       geo.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
       auto& t = geo.geometry.triangles;
       t.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR;
-      t.vertexFormat = VK_FORMAT_R32G32B32_SFLOAT;
-      t.vertexStride = sizeof(Vec3);
+      t.vertexFormat = vkVertexFormat(g.vertex_format);
+      t.vertexStride = vertexStride(g.vertex_format);
       t.maxVertex = g.vertices.empty() ? 0 : static_cast<uint32_t>(g.vertices.size() - 1);
-      data = packer.add(g.vertices.data(), g.vertices.size() * sizeof(Vec3));
-      t.indexType = g.indices.empty() ? VK_INDEX_TYPE_NONE_KHR : VK_INDEX_TYPE_UINT32;
-      if (!g.indices.empty()) index = packer.add(g.indices.data(), g.indices.size() * 4);
+      const std::vector<uint8_t> vertices = encodeVertices(g.vertex_format, g.vertices);
+      data = packer.add(vertices.data(), vertices.size());
+      t.indexType = g.indices.empty() ? VK_INDEX_TYPE_NONE_KHR
+                    : g.index16       ? VK_INDEX_TYPE_UINT16
+                                      : VK_INDEX_TYPE_UINT32;
+      if (g.index16) {
+        const std::vector<uint16_t> narrow(g.indices.begin(), g.indices.end());
+        index = packer.add(narrow.data(), narrow.size() * 2);
+      } else if (!g.indices.empty()) {
+        index = packer.add(g.indices.data(), g.indices.size() * 4);
+      }
       if (g.transform) {
         static_assert(sizeof(VkTransformMatrixKHR) == sizeof(Transform));
         transform = packer.add(g.transform->data(), sizeof(Transform));

@@ -10,6 +10,9 @@
 
 namespace rayspec {
 
+// The VkFormat of a vertex format (R-VERTEX-FORMAT).
+VkFormat vkVertexFormat(VertexFormat f);
+
 // How long a submission of builds or copies may take.
 constexpr uint64_t kBuildTimeoutNs = 240ull * 1000 * 1000 * 1000;
 

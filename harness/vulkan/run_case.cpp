@@ -55,6 +55,21 @@ void checkLaunchSize(const DeviceInfo& d, const std::array<uint32_t, 3>& launch)
                               sizeText(d.max_launch_size) + ")");
 }
 
+// R-VERTEX-FORMAT: every vertex format the scene uses must be one the device
+// builds acceleration structures from.
+void checkVertexFormats(const VulkanContext& ctx, const Scene& scene) {
+  for (const Blas& b : scene.blases)
+    for (const Geometry& g : b.geometries) {
+      if (g.kind != Geometry::Kind::Triangles || g.vertex_format == VertexFormat::Float3) continue;
+      VkFormatProperties props{};
+      vkGetPhysicalDeviceFormatProperties(ctx.physical, vkVertexFormat(g.vertex_format), &props);
+      if (!(props.bufferFeatures & VK_FORMAT_FEATURE_ACCELERATION_STRUCTURE_VERTEX_BUFFER_BIT_KHR))
+        throw NotSupportedError("triangles.vertex_format " +
+                                std::string(vertexFormatName(g.vertex_format)) +
+                                ": the device cannot build acceleration structures from it");
+    }
+}
+
 }  // namespace
 
 void checkCaseSupport(const VulkanContext& ctx, const Case& c, const Plan& plan) {
@@ -89,6 +104,7 @@ void checkCaseSupport(const VulkanContext& ctx, const Case& c, const Plan& plan)
                             " > device maxRayRecursionDepth " +
                             std::to_string(d.max_ray_recursion_depth));
   checkLaunchSize(d, launch);
+  checkVertexFormats(ctx, c.scene);
   if (launch_rays > d.max_ray_dispatch_invocation_count)
     throw NotSupportedError("launch of " + std::to_string(launch_rays) +
                             " rays > maxRayDispatchInvocationCount " +
