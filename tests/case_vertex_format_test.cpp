@@ -3,6 +3,7 @@
 // triangles.vertex_format and index_type at their line and field.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 
 #include "case/parse_case.h"
@@ -20,6 +21,23 @@ TEST(VertexFormat, StoredPositionsAreRoundedAsTheFormatDefines) {
   EXPECT_EQ(storedVertex(VertexFormat::Half2, Vec3{1.0f, 2.0f, 0.0f})[2], 0.0f);
   EXPECT_EQ(storedVertex(VertexFormat::Snorm16x2, Vec3{-1.0f, 1.0f, 0.0f}),
             (Vec3{-1.0f, 1.0f, 0.0f}));
+}
+
+TEST(VertexFormat, HalfRoundsToNearestEvenThroughTheWholeRange) {
+  auto half = [](float x) {
+    return storedVertex(VertexFormat::Half2, Vec3{x, 0, 0})[0];
+  };
+  EXPECT_EQ(half(1.0f), 1.0f);
+  EXPECT_EQ(half(1000.3f), 1000.5f);    // spacing 0.5 between 512 and 1024
+  EXPECT_EQ(half(1000.25f), 1000.0f);   // a tie: to the even neighbour
+  EXPECT_EQ(half(1000.75f), 1001.0f);   // a tie: to the even neighbour
+  EXPECT_EQ(half(65504.0f), 65504.0f);  // the largest half
+  EXPECT_EQ(half(-2.0f), -2.0f);
+  EXPECT_EQ(half(std::ldexp(1.0f, -24)), std::ldexp(1.0f, -24));  // the smallest subnormal
+  EXPECT_EQ(half(std::ldexp(1.0f, -26)), 0.0f);
+  EXPECT_EQ(half(std::ldexp(3.0f, -26)), std::ldexp(1.0f, -24));
+  EXPECT_TRUE(std::isnan(half(NAN)));
+  EXPECT_EQ(half(0.1f), 0.0999755859375f);
 }
 
 TEST(VertexFormat, ProblemsNameWhatTheFormatCannotHold) {

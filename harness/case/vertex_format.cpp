@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 namespace rayspec {
 namespace {
@@ -35,6 +36,41 @@ constexpr float kHalfMax = 65504.0f;
 
 int16_t snormBits(float v) {
   return static_cast<int16_t>(std::lround(v * 32767.0f));
+}
+
+// IEEE 754 binary16 bits of f, rounded to nearest even (overflow: infinity).
+// Written out because not every compiler here has _Float16 on x86.
+uint16_t halfBits(float f) {
+  uint32_t x = 0;
+  std::memcpy(&x, &f, 4);
+  const uint32_t sign = (x >> 16) & 0x8000, exp = (x >> 23) & 0xFF;
+  uint32_t mant = x & 0x7FFFFF;
+  if (exp == 0xFF) return static_cast<uint16_t>(sign | 0x7C00 | (mant ? 0x200 : 0));
+  const int e = int(exp) - 127 + 15;
+  if (e >= 0x1F) return static_cast<uint16_t>(sign | 0x7C00);
+  uint32_t shift = 13, base = uint32_t(e) << 10;
+  if (e <= 0) {  // a subnormal half: h x 2^-24
+    if (e < -10) return static_cast<uint16_t>(sign);
+    mant |= 0x800000;
+    shift = uint32_t(14 - e);
+    base = 0;
+  }
+  uint32_t half = base | (mant >> shift);
+  const uint32_t rest = mant & ((1u << shift) - 1), halfway = 1u << (shift - 1);
+  if (rest > halfway || (rest == halfway && (half & 1))) ++half;  // a carry is still right
+  return static_cast<uint16_t>(sign | half);
+}
+
+float halfValue(uint16_t h) {
+  const uint32_t exp = (h >> 10) & 0x1F, mant = h & 0x3FF;
+  float f = 0.0f;
+  if (exp == 0)
+    f = std::ldexp(static_cast<float>(mant), -24);
+  else if (exp == 0x1F)
+    f = mant ? std::numeric_limits<float>::quiet_NaN() : std::numeric_limits<float>::infinity();
+  else
+    f = std::ldexp(static_cast<float>(mant | 0x400), int(exp) - 25);
+  return (h & 0x8000) ? -f : f;
 }
 
 }  // namespace
@@ -85,7 +121,7 @@ Vec3 storedVertex(VertexFormat f, const Vec3& v) {
   Vec3 out{0.0f, 0.0f, 0.0f};
   for (uint32_t k = 0; k < vertexComponents(f); ++k) {
     if (isHalf(f))
-      out[k] = static_cast<float>(static_cast<_Float16>(v[k]));
+      out[k] = halfValue(halfBits(v[k]));
     else if (isSnorm(f))
       out[k] = std::max(snormBits(v[k]) / 32767.0f, -1.0f);
     else
@@ -103,7 +139,7 @@ std::vector<uint8_t> encodeVertices(VertexFormat f, const std::vector<Vec3>& ver
     for (uint32_t k = 0; k < stride / (isHalf(f) || isSnorm(f) ? 2 : 4); ++k) {
       const bool w = k == 3;  // the fourth component of half4 / snorm16x4: 1
       if (isHalf(f)) {
-        const _Float16 h = static_cast<_Float16>(w ? 1.0f : v[k]);
+        const uint16_t h = halfBits(w ? 1.0f : v[k]);
         std::memcpy(at + 2 * k, &h, 2);
       } else if (isSnorm(f)) {
         const int16_t s = w ? int16_t(32767) : snormBits(v[k]);

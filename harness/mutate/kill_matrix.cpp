@@ -90,7 +90,11 @@ std::string killMatrixText(const KillMatrix& m) {
          std::to_string(legal) + " survive legally, " + std::to_string(m.unexplained()) +
          " survive with no reason (holes)\n";
   out += "Null device: killed on " + std::to_string(m.nullKilled()) + " of " +
-         std::to_string(m.judged) + " judged cases (" + percent(m.nullKilled(), m.judged) + ")\n";
+         std::to_string(m.judged) + " judged cases (" + percent(m.nullKilled(), m.judged) + ")";
+  if (m.nullApplied() < m.judged)
+    out += "; on " + std::to_string(m.judged - m.nullApplied()) +
+           " it changes nothing: their device answer is all zero (a launch with no rays)";
+  out += "\n";
   out += std::to_string(m.judged) + " of " + std::to_string(m.cases) + " cases judged";
   out += m.not_judged.empty() ? "\n" : "; not judged:\n";
   for (const auto& [name, why] : m.not_judged) out += "  " + name + ": " + why + "\n";

@@ -30,6 +30,11 @@ struct KillMatrix {
   size_t nullKilled() const {
     return by_kind.count("null-device") ? by_kind.at("null-device").killed : 0;
   }
+  // Judged cases where the null device changes something: not those whose
+  // device answer is all zero already (a launch with no rays, R-LAUNCH-3D).
+  size_t nullApplied() const {
+    return by_kind.count("null-device") ? by_kind.at("null-device").applied : 0;
+  }
 };
 
 KillMatrix buildKillMatrix(const std::vector<CaseMutation>& cases);

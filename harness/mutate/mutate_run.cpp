@@ -84,7 +84,7 @@ int runMutate(const MutateOptions& opt) {
     std::fprintf(stderr, "rayspec mutate: no case of %s could be judged\n", opt.run_dir.c_str());
     return 1;
   }
-  return m.unexplained() == 0 && m.nullKilled() == m.judged ? 0 : 1;
+  return m.unexplained() == 0 && m.nullKilled() == m.nullApplied() ? 0 : 1;
 }
 
 }  // namespace rayspec
