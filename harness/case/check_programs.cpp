@@ -15,6 +15,35 @@ const Stmt* findTrace(const Program& p) {
   return trace;
 }
 
+// A read of vertex_position<i> (gl_HitTriangleVertexPositionsEXT), or nullptr.
+const Expr* findPositionFetch(const Program& p) {
+  const Expr* found = nullptr;
+  walkExpressions(p, [&](const Expr& e) {
+    if (!found && e.kind == Expr::Kind::Builtin && e.name.rfind("vertex_position", 0) == 0)
+      found = &e;
+  });
+  return found;
+}
+
+// Vulkan allows gl_HitTriangleVertexPositionsEXT only where the hit kind is a
+// triangle's (VUID-HitTriangleVertexPositionsKHR-08750): never in a hit group
+// with an intersection shader, whose hits are boxes'.
+void checkPositionFetch(YamlReader& r, const HitGroup& g, const std::string& field) {
+  if (!g.intersection) return;
+  for (const Program* prog :
+       {g.closest_hit ? &*g.closest_hit : nullptr, g.any_hit ? &*g.any_hit : nullptr}) {
+    const Expr* e = prog ? findPositionFetch(*prog) : nullptr;
+    if (!e) continue;
+    SourceLoc loc = e->loc;
+    if (loc.file.empty()) loc.file = r.file();
+    if (loc.field.empty()) loc.field = field;
+    r.error(loc, e->name +
+                     ": a group with an intersection shader hits boxes, and vertex positions "
+                     "exist only for triangle hits (VUID-HitTriangleVertexPositionsKHR-08750)");
+    return;
+  }
+}
+
 }  // namespace
 
 void checkPrograms(YamlReader& r, Case& c, const YAML::Node& /*pipeline_node*/) {
@@ -45,6 +74,7 @@ void checkPrograms(YamlReader& r, Case& c, const YAML::Node& /*pipeline_node*/) 
     if (g.closest_hit) check(*g.closest_hit, Stage::ClosestHit, f + "closest_hit");
     if (g.any_hit) check(*g.any_hit, Stage::AnyHit, f + "any_hit");
     if (g.intersection) check(*g.intersection, Stage::Intersection, f + "intersection");
+    checkPositionFetch(r, g, "pipeline.hit_groups[" + std::to_string(i) + "]");
   }
   for (size_t i = 0; i < p.callables.size(); ++i)
     check(p.callables[i], Stage::Callable, "pipeline.callables[" + std::to_string(i) + "]");

@@ -51,7 +51,8 @@ const FlagTable& buildFlagNames() {
                               {"allow_compaction", kBuildAllowCompaction},
                               {"prefer_fast_trace", kBuildPreferFastTrace},
                               {"prefer_fast_build", kBuildPreferFastBuild},
-                              {"low_memory", kBuildLowMemory}};
+                              {"low_memory", kBuildLowMemory},
+                              {"allow_data_access", kBuildAllowDataAccess}};
   return t;
 }
 

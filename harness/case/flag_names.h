@@ -33,5 +33,8 @@ constexpr uint32_t kBuildAllowCompaction = 0x2;
 constexpr uint32_t kBuildPreferFastTrace = 0x4;
 constexpr uint32_t kBuildPreferFastBuild = 0x8;
 constexpr uint32_t kBuildLowMemory = 0x10;
+// ALLOW_DATA_ACCESS (VK_KHR_ray_tracing_position_fetch): added wherever a
+// stage reads vertex_position<i>.
+constexpr uint32_t kBuildAllowDataAccess = 0x800;
 
 }  // namespace rayspec

@@ -40,6 +40,11 @@ void printLimits(const DeviceInfo& d) {
               d.ray_tracing_maintenance1 ? "yes" : "no");
   std::printf("        vkCmdTraceRaysIndirectKHR      %s\n", d.trace_rays_indirect ? "yes" : "no");
   std::printf("        vkCmdTraceRaysIndirect2KHR     %s\n", d.trace_rays_indirect2 ? "yes" : "no");
+  std::printf("        VK_KHR_ray_tracing_position_fetch %s\n", d.position_fetch ? "yes" : "no");
+  std::string formats;
+  for (const std::string& f : d.vertex_formats) formats += " " + f;
+  std::printf("        vertex formats (AS build)     %s\n",
+              formats.empty() ? " none" : formats.c_str());
 }
 
 // One manifest's devices; returns how many are usable.

@@ -49,9 +49,9 @@ Rules join(std::initializer_list<const Rules*> parts, Rules own = {}) {
 // Rules of how the pipeline is built: whatever shaders observe, any field or
 // counter may show them broken.
 const Rules& pipelineRules() {
-  static const Rules r = {"R-LIBRARY",  "R-RAYGEN-REGION", "R-NULL-SHADERS",
-                          "R-INDIRECT", "R-STACK",         "R-LAUNCH-3D",
-                          "R-AS-COPY",  "R-AS-UPDATE",     "R-VERTEX-FORMAT"};
+  static const Rules r = {"R-LIBRARY",       "R-RAYGEN-REGION", "R-NULL-SHADERS", "R-INDIRECT",
+                          "R-STACK",         "R-LAUNCH-3D",     "R-AS-COPY",      "R-AS-UPDATE",
+                          "R-VERTEX-FORMAT", "R-POSITION-FETCH"};
   return r;
 }
 

@@ -226,6 +226,10 @@ std::vector<FaultImpl> pipelineMutations() {
        "vertices in half or snorm16 formats are traced where the case wrote them, not where the "
        "format puts them",
        nullptr, vertexFormatIgnored},
+      {"position-fetch-world-space", K::CaseMutation,
+       "gl_HitTriangleVertexPositionsEXT gives the vertices through the instance transform "
+       "(world space), not in object space",
+       nullptr, positionFetchWorldSpace},
   };
 }
 

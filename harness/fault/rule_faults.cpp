@@ -65,6 +65,7 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-AS-COPY", {"copy-drops-instance"}, {}},
       {"R-AS-UPDATE", {"update-ignored"}, {}},
       {"R-VERTEX-FORMAT", {"vertex-format-ignored"}, {}},
+      {"R-POSITION-FETCH", {"position-fetch-world-space"}, {}},
       {"R-LAUNCH-3D", {"launch-depth-lost", "zero-launch-runs"}, {}},
       {"R-UB", {}, {}, fail, "never checked for a result (robustness probe only)"},
   };

@@ -22,6 +22,7 @@ struct StageUses {
   bool sphere = false;                 // sphere_*
   bool hit_attribute = false;          // barycentrics read, or a report written
   bool cull_mask = false;              // gl_CullMaskEXT read (GL_EXT_ray_cull_mask)
+  bool position_fetch = false;         // vertex_position<i> read (shaders/position_fetch.glsl)
   bool counters = false;               // a count of a kept counter
   std::set<int> record_fields;         // indices (recordFields()) of fields written
 };

@@ -15,6 +15,7 @@ void visitExpr(const Expr& e, StageUses& u) {
     if (e.name == "aabb_min" || e.name == "aabb_max") u.scene = true;
     if (e.name == "barycentrics") u.hit_attribute = true;
     if (e.name == "cull_mask") u.cull_mask = true;
+    if (e.name.rfind("vertex_position", 0) == 0) u.position_fetch = true;
   } else if (e.kind == Expr::Kind::Op) {
     if (e.name.rfind("sphere_", 0) == 0) u.scene = u.sphere = true;
     if (e.name.rfind("shader_record_", 0) == 0) u.shader_record = true;

@@ -297,10 +297,10 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
     StepTimer scene_time(r.cost, CostStep::ModelScene);
     const CPipeline programs = compilePipeline(c, plan);
     ModelScene scene;
-    // Per-primitive triangles are read by candidates, own tests, or the
-    // facing of a direct hit when a program reads hit_kind.
+    // Per-primitive triangles are read by candidates, own tests, the
+    // facing of a direct hit when a program reads hit_kind, and vertex_position<i>.
     buildModelScene(scene, c, opt.tier, needsCandidates(c, plan, opt.tier),
-                    programs.reads(kBiHitKind));
+                    programs.reads(kBiHitKind) || plan.position_fetch);
     const ModelShared shared = sharedState(c, plan, opt, scene, programs);
     scene_time.stop();
     StepTimer trace_time(r.cost, CostStep::ModelTrace);

@@ -27,6 +27,9 @@ struct ModelFaults {
   // nested deeper than the default stack's kDefaultCallableDepth frames does
   // nothing (its caller's data stays as it was).
   bool stack_size_ignored = false;
+  // R-POSITION-FETCH broken: vertex_position<i> reads the vertex in world
+  // space (through the instance transform) instead of object space.
+  bool position_fetch_world_space = false;
 };
 
 }  // namespace rayspec

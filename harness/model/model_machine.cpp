@@ -140,6 +140,16 @@ Val Machine::dataBuiltin(const CExpr& e, StageEnv& env) {
   return Val{};
 }
 
+// vertex_position<i>: the hit triangle's vertex in object space (zero for a
+// box, where reading it is refused at parse time). The planted fault
+// position_fetch_world_space takes it through the instance transform.
+Val Machine::vertexPosition(const HitView& hv, int i) const {
+  if (!hv.vertices) return Val{};
+  const Vec3& p = (*hv.vertices)[static_cast<size_t>(i)];
+  if (!sh_.faults.position_fetch_world_space) return fromVec3(p);
+  return fromVec3(applyAffine(sh_.c->scene.instances[hv.instance].transform, p, 1.0f));
+}
+
 Val Machine::builtin(const CExpr& e, StageEnv& env) {
   static const HitView kNone;
   static const TraceRay kNoRay;
@@ -204,6 +214,10 @@ Val Machine::builtin(const CExpr& e, StageEnv& env) {
     }
     case kBiDepth:
       return fromUint(env.depth);
+    case kBiVertex0:
+    case kBiVertex1:
+    case kBiVertex2:
+      return vertexPosition(*hv, e.builtin - kBiVertex0);
     default:
       return dataBuiltin(e, env);
   }

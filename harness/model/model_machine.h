@@ -60,6 +60,9 @@ struct HitView {
   float t = 0, b1 = 0, b2 = 0;
   Vec3 object_origin{}, object_direction{};
   Vec3 aabb_min{}, aabb_max{};
+  // A triangle hit's vertices in object space (geometry transform applied):
+  // the vertex_position<i> built-ins; nullptr for a box.
+  const std::array<Vec3, 3>* vertices = nullptr;
 };
 
 struct Traversal;
@@ -153,6 +156,7 @@ class alignas(64) Machine {
   Val eval(const CExpr& e, StageEnv& env);
   Val builtin(const CExpr& e, StageEnv& env);
   Val dataBuiltin(const CExpr& e, StageEnv& env);
+  Val vertexPosition(const HitView& hv, int i) const;
   Val op(const CExpr& e, StageEnv& env);
   // The ops op() runs before evaluating arguments (spheres, shader record
   // words, short-circuit and/or); false for any other op.

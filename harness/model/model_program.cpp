@@ -45,7 +45,10 @@ const std::vector<std::string>& builtinNames() {
                                                  "callee.value",
                                                  "payload.word<i>",
                                                  "child.word<i>",
-                                                 "cull_mask"};
+                                                 "cull_mask",
+                                                 "vertex_position0",
+                                                 "vertex_position1",
+                                                 "vertex_position2"};
   return names;
 }
 

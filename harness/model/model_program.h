@@ -60,6 +60,9 @@ enum Builtin : uint8_t {
   kBiPayloadWord,  // CExpr::index: the word
   kBiChildWord,
   kBiCullMask,
+  kBiVertex0,  // kBiVertex0 + i: vertex_position<i>
+  kBiVertex1,
+  kBiVertex2,
   kBiCount,
   kBiUnknown = 0xFF
 };

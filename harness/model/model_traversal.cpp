@@ -106,6 +106,8 @@ HitView viewOf(const ModelScene& s, const Case& c, const TraceRay& ray, uint32_t
     const auto& a = g.aabbs[primitive];
     hv.aabb_min = {a[0], a[1], a[2]};
     hv.aabb_max = {a[3], a[4], a[5]};
+  } else if (primitive < g.triangles.size()) {
+    hv.vertices = &g.triangles[primitive];
   }
   return hv;
 }

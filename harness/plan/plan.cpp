@@ -135,6 +135,8 @@ void planStatements(const std::vector<StageProgram>& programs, const Pipeline& p
     });
     walkExpressions(*sp.program, [&](const Expr& e) {
       if (e.kind == Expr::Kind::Builtin && e.name == "cull_mask") plan.cull_mask_builtin = true;
+      if (e.kind == Expr::Kind::Builtin && e.name.rfind("vertex_position", 0) == 0)
+        plan.position_fetch = true;
       if (sp.stage == Stage::Intersection &&
           (e.name == "aabb_min" || e.name == "aabb_max" || e.name.rfind("sphere_", 0) == 0))
         plan.scene_data = true;
@@ -223,6 +225,9 @@ std::vector<std::string> Plan::describe() const {
   line(shader_record_data, "shader record data");
   line(zero_records, "all-zero SBT records");
   line(cull_mask_builtin, "gl_CullMaskEXT read (VK_KHR_ray_tracing_maintenance1)");
+  line(position_fetch,
+       "gl_HitTriangleVertexPositionsEXT read (VK_KHR_ray_tracing_position_fetch, structures "
+       "built with ALLOW_DATA_ACCESS)");
   std::string counters_line = "counters:";
   for (const auto& c : counters) counters_line += " " + c;
   lines.push_back("  " + counters_line);

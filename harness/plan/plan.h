@@ -30,6 +30,10 @@ struct Plan {
   bool scene_data = false;     // an intersection program reads the AABBs (aabb_*, sphere_*)
   bool cull_mask_builtin = false;          // a stage reads cull_mask (gl_CullMaskEXT: needs
                                            // VK_KHR_ray_tracing_maintenance1)
+  bool position_fetch = false;             // a stage reads vertex_position<i>
+                                           // (gl_HitTriangleVertexPositionsEXT: needs
+                                           // VK_KHR_ray_tracing_position_fetch, and
+                                           // every structure built with ALLOW_DATA_ACCESS)
   bool shader_record_data = false;         // some SBT record carries data
   bool zero_records = false;               // some SBT record is all zero
   std::vector<std::string> counters;       // counters kept

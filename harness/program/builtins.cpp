@@ -41,6 +41,15 @@ const std::vector<BuiltinInfo>& builtins() {
        "the hit attribute: triangle barycentrics (b1, b2), or what the intersection shader "
        "reported"},
       {"hit_position", ValueType::Vec3, A | C, "world ray origin + hit_t * world ray direction"},
+      {"vertex_position0", ValueType::Vec3, A | C,
+       "gl_HitTriangleVertexPositionsEXT[0]: the hit triangle's first vertex in object space, "
+       "through the geometry transform (VK_KHR_ray_tracing_position_fetch; triangle hits only)"},
+      {"vertex_position1", ValueType::Vec3, A | C,
+       "gl_HitTriangleVertexPositionsEXT[1]: the hit triangle's second vertex (as "
+       "vertex_position0)"},
+      {"vertex_position2", ValueType::Vec3, A | C,
+       "gl_HitTriangleVertexPositionsEXT[2]: the hit triangle's third vertex (as "
+       "vertex_position0)"},
       {"aabb_min", ValueType::Vec3, I, "min corner of the primitive's AABB (object space)"},
       {"aabb_max", ValueType::Vec3, I, "max corner of the primitive's AABB (object space)"},
       {"payload.color", ValueType::Vec4, M | C | A | R,

@@ -53,6 +53,11 @@ struct BuiltinInfo {
 //   barycentrics (Vec2; any-hit, closest-hit: the hit attribute; triangle
 //       barycentrics (b1, b2), or what the intersection shader reported)
 //   hit_position (Vec3; any-hit, closest-hit: world origin + hit_t * world direction)
+//   vertex_position0, vertex_position1, vertex_position2 (Vec3; any-hit,
+//       closest-hit of triangle hits: gl_HitTriangleVertexPositionsEXT[i], the
+//       hit triangle's vertices in object space in the order the geometry
+//       gives them, through its geometry transform; as stored by the vertex
+//       format; VK_KHR_ray_tracing_position_fetch)
 //   aabb_min, aabb_max (Vec3; intersection: the primitive's box, object space)
 //   payload.color (Vec4), payload.value (Uint): the incoming payload in miss,
 //       closest-hit and any-hit; in raygen, the payload of its last trace

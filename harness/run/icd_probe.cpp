@@ -6,17 +6,15 @@
 
 namespace rayspec {
 
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(DeviceInfo, index, name, driver_name, driver_info, api_version,
-                                   api_version_number, device_uuid, ray_tracing_extension,
-                                   acceleration_structure_extension, ray_tracing_pipeline,
-                                   acceleration_structure, shader_group_handle_size,
-                                   shader_group_handle_alignment, shader_group_base_alignment,
-                                   max_ray_recursion_depth, max_ray_hit_attribute_size,
-                                   max_shader_group_stride, max_ray_dispatch_invocation_count,
-                                   max_image_dimension_2d, max_storage_buffer_range,
-                                   max_launch_size, acceleration_structure_host_commands,
-                                   pipeline_library, opacity_micromap, ray_tracing_maintenance1,
-                                   trace_rays_indirect, trace_rays_indirect2)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(
+    DeviceInfo, index, name, driver_name, driver_info, api_version, api_version_number, device_uuid,
+    ray_tracing_extension, acceleration_structure_extension, ray_tracing_pipeline,
+    acceleration_structure, shader_group_handle_size, shader_group_handle_alignment,
+    shader_group_base_alignment, max_ray_recursion_depth, max_ray_hit_attribute_size,
+    max_shader_group_stride, max_ray_dispatch_invocation_count, max_image_dimension_2d,
+    max_storage_buffer_range, max_launch_size, acceleration_structure_host_commands,
+    pipeline_library, opacity_micromap, ray_tracing_maintenance1, trace_rays_indirect,
+    trace_rays_indirect2, position_fetch, vertex_formats)
 
 namespace {
 

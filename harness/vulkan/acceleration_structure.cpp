@@ -363,8 +363,13 @@ VkDeviceAddress createScratch(const VulkanContext& ctx, const ScratchPlan& scrat
 // copies of the BLASes can be referenced once they exist.
 class SceneBuilder {
  public:
-  SceneBuilder(const VulkanContext& ctx, const Scene& scene, Cleanup& cleanup)
-      : ctx_(ctx), scene_(scene), first_(scene.built ? *scene.built : scene), cleanup_(cleanup) {
+  SceneBuilder(const VulkanContext& ctx, const Scene& scene,
+               VkBuildAccelerationStructureFlagsKHR extra_flags, Cleanup& cleanup)
+      : ctx_(ctx),
+        scene_(scene),
+        first_(scene.built ? *scene.built : scene),
+        flags_(buildFlags(scene.build) | extra_flags),
+        cleanup_(cleanup) {
     scratch_.align = ctx.as_props.minAccelerationStructureScratchOffsetAlignment;
   }
 
@@ -413,8 +418,7 @@ class SceneBuilder {
       for (BlasBuild& b : builds_) patchAddresses(b, inputs.address);
       for (BlasBuild& b : updates_) patchAddresses(b, inputs.address);
     }
-    const VkBuildAccelerationStructureFlagsKHR flags = buildFlags(scene_.build);
-    blases_ = createBlases(ctx_, builds_, used, flags, scratch_, cleanup_);
+    blases_ = createBlases(ctx_, builds_, used, flags_, scratch_, cleanup_);
     if (!scene_.built) return;
     std::vector<const std::vector<VkAccelerationStructureGeometryKHR>*> geometries;
     std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
@@ -435,9 +439,8 @@ class SceneBuilder {
                                sizeof(VkAccelerationStructureInstanceKHR);
     first_instances_ = createBuffer(ctx_, bytes, kInputUsage, MemoryUse::Host, cleanup_);
     writeInstances(first_, first_instances_);
-    const VkBuildAccelerationStructureFlagsKHR flags = buildFlags(scene_.build);
     tlas_geometry_ = instanceGeometry(first_instances_.address, levels, instance_count_);
-    tlases_ = createTlases(ctx_, tlas_geometry_, instance_count_, &tlas_range_, flags, scratch_,
+    tlases_ = createTlases(ctx_, tlas_geometry_, instance_count_, &tlas_range_, flags_, scratch_,
                            tlas_structures_, cleanup_);
     if (!scene_.built) return;
     moved_instances_ = createBuffer(ctx_, bytes, kInputUsage, MemoryUse::Host, cleanup_);
@@ -476,8 +479,9 @@ class SceneBuilder {
   }
 
   const VulkanContext& ctx_;
-  const Scene& scene_;  // as the traces see it
-  const Scene& first_;  // as first built (scene.update: Scene::built)
+  const Scene& scene_;                                // as the traces see it
+  const Scene& first_;                                // as first built (scene.update: Scene::built)
+  const VkBuildAccelerationStructureFlagsKHR flags_;  // every build's and update's
   Cleanup& cleanup_;
   ScratchPlan scratch_;
   std::vector<BlasBuild> builds_, updates_;
@@ -492,8 +496,9 @@ class SceneBuilder {
 }  // namespace
 
 std::vector<VkAccelerationStructureKHR> buildScene(const VulkanContext& ctx, const Scene& scene,
+                                                   VkBuildAccelerationStructureFlagsKHR extra_flags,
                                                    Cleanup& cleanup) {
-  return SceneBuilder(ctx, scene, cleanup).run();
+  return SceneBuilder(ctx, scene, extra_flags, cleanup).run();
 }
 
 }  // namespace rayspec

@@ -24,9 +24,11 @@ constexpr uint64_t kBuildTimeoutNs = 240ull * 1000 * 1000 * 1000;
 // over all instances in order, those of the other levels with reference 0.
 // One submission; with scene.build.copy (R-AS-COPY) the BLASes are copied
 // before the TLASes are built over the copies, and the TLASes are copied in
-// turn: the traces see only copies. Buffers and structures live until
-// cleanup runs. Throws VulkanError.
+// turn: the traces see only copies. extra_flags join scene.build's flags on
+// every build (ALLOW_DATA_ACCESS where a stage fetches vertex positions).
+// Buffers and structures live until cleanup runs. Throws VulkanError.
 std::vector<VkAccelerationStructureKHR> buildScene(const VulkanContext& ctx, const Scene& scene,
+                                                   VkBuildAccelerationStructureFlagsKHR extra_flags,
                                                    Cleanup& cleanup);
 
 // The structure's storage buffer and the structure (size bytes), destroyed

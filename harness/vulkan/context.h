@@ -17,6 +17,7 @@ namespace rayspec {
 struct VulkanContext {
   VkInstance instance = VK_NULL_HANDLE;
   bool validation = false;
+  uint32_t validation_layer_version = 0;  // its specVersion while validation is on
   std::unique_ptr<DebugCapture> capture = std::make_unique<DebugCapture>();
   VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
 
@@ -29,6 +30,9 @@ struct VulkanContext {
   VkPhysicalDeviceProperties props{};
   VkPhysicalDeviceMemoryProperties memory{};
   bool primitive_culling = false;  // rayTraversalPrimitiveCulling enabled
+  // rayTracingPositionFetch enabled: the device has it and no validation
+  // layer older than the extension is on (vulkan/position_fetch.h).
+  bool position_fetch = false;
 
   VkDevice device = VK_NULL_HANDLE;
   uint32_t queue_family = 0;

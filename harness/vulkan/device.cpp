@@ -3,9 +3,43 @@
 #include <vector>
 
 #include "vulkan/context.h"
+#include "vulkan/position_fetch.h"
 #include "vulkan/vk_check.h"
 
 namespace rayspec {
+
+namespace {
+
+// Position fetch, unless a validation layer that predates it is on: that
+// layer would report its feature structure and its SPIR-V as errors.
+void enablePositionFetch(VulkanContext& ctx, VkPhysicalDeviceFeatures2& on,
+                         PositionFetchFeatures& feature) {
+  ctx.position_fetch =
+      ctx.info.position_fetch &&
+      (!ctx.validation || ctx.validation_layer_version >= kPositionFetchHeaderVersion);
+  if (!ctx.position_fetch) return;
+  feature.ray_tracing_position_fetch = VK_TRUE;
+  feature.p_next = on.pNext;
+  on.pNext = &feature;
+}
+
+// The device extensions enabled: ray tracing, and the optional ones the
+// device has (describeDevice found them).
+std::vector<const char*> deviceExtensions(const VulkanContext& ctx) {
+  std::vector<const char*> extensions = {VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
+                                         VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
+                                         VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
+  if (ctx.info.pipeline_library) extensions.push_back(VK_KHR_PIPELINE_LIBRARY_EXTENSION_NAME);
+  if (ctx.info.ray_tracing_maintenance1)
+    extensions.push_back(VK_KHR_RAY_TRACING_MAINTENANCE_1_EXTENSION_NAME);
+  if (ctx.position_fetch) extensions.push_back(kPositionFetchExtension);
+  // Its dependency synchronization2 is core from Vulkan 1.3.
+  if (ctx.info.opacity_micromap && ctx.info.api_version_number >= VK_API_VERSION_1_3)
+    extensions.push_back(VK_EXT_OPACITY_MICROMAP_EXTENSION_NAME);
+  return extensions;
+}
+
+}  // namespace
 
 void createDevice(VulkanContext& ctx) {
   uint32_t count = 0;
@@ -60,17 +94,11 @@ void createDevice(VulkanContext& ctx) {
   rt_on.pNext = &as_on;
   // gl_CullMaskEXT (the cull_mask built-in): describeDevice found the feature.
   if (ctx.info.ray_tracing_maintenance1) as_on.pNext = &maintenance1_on;
+  PositionFetchFeatures position_fetch_on;
+  enablePositionFetch(ctx, on, position_fetch_on);
   ctx.primitive_culling = rt.rayTraversalPrimitiveCulling == VK_TRUE;
 
-  std::vector<const char*> extensions = {VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
-                                         VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
-                                         VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
-  if (ctx.info.pipeline_library) extensions.push_back(VK_KHR_PIPELINE_LIBRARY_EXTENSION_NAME);
-  if (ctx.info.ray_tracing_maintenance1)
-    extensions.push_back(VK_KHR_RAY_TRACING_MAINTENANCE_1_EXTENSION_NAME);
-  // Its dependency synchronization2 is core from Vulkan 1.3.
-  if (ctx.info.opacity_micromap && ctx.info.api_version_number >= VK_API_VERSION_1_3)
-    extensions.push_back(VK_EXT_OPACITY_MICROMAP_EXTENSION_NAME);
+  const std::vector<const char*> extensions = deviceExtensions(ctx);
   float priority = 1.0f;
   VkDeviceQueueCreateInfo queue{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
   queue.queueFamilyIndex = ctx.queue_family;

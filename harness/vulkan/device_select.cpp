@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "vulkan/context.h"
+#include "vulkan/position_fetch.h"
 #include "vulkan/vk_check.h"
 
 namespace rayspec {
@@ -54,6 +55,42 @@ void readExtensions(VkPhysicalDevice physical, DeviceInfo& d) {
   d.opacity_micromap = hasDeviceExtension(exts, VK_EXT_OPACITY_MICROMAP_EXTENSION_NAME);
   d.ray_tracing_maintenance1 =
       hasDeviceExtension(exts, VK_KHR_RAY_TRACING_MAINTENANCE_1_EXTENSION_NAME);
+  d.position_fetch = hasDeviceExtension(exts, kPositionFetchExtension);
+}
+
+// Vertex formats a device may build triangles from: rayspec's own (named as
+// in triangles.vertex_format) and others devices report.
+struct NamedFormat {
+  VkFormat format;
+  const char* name;
+};
+constexpr NamedFormat kVertexFormatCandidates[] = {
+    {VK_FORMAT_R32G32B32_SFLOAT, "float3"},
+    {VK_FORMAT_R32G32_SFLOAT, "float2"},
+    {VK_FORMAT_R16G16B16A16_SFLOAT, "half4"},
+    {VK_FORMAT_R16G16_SFLOAT, "half2"},
+    {VK_FORMAT_R16G16B16A16_SNORM, "snorm16x4"},
+    {VK_FORMAT_R16G16_SNORM, "snorm16x2"},
+    {VK_FORMAT_R32G32B32A32_SFLOAT, "R32G32B32A32_SFLOAT"},
+    {VK_FORMAT_R16G16B16_SFLOAT, "R16G16B16_SFLOAT"},
+    {VK_FORMAT_R16G16B16_SNORM, "R16G16B16_SNORM"},
+    {VK_FORMAT_R16G16B16A16_UNORM, "R16G16B16A16_UNORM"},
+    {VK_FORMAT_R16G16_UNORM, "R16G16_UNORM"},
+    {VK_FORMAT_R8G8B8A8_SNORM, "R8G8B8A8_SNORM"},
+    {VK_FORMAT_R8G8_SNORM, "R8G8_SNORM"},
+    {VK_FORMAT_R8G8B8A8_UNORM, "R8G8B8A8_UNORM"},
+    {VK_FORMAT_R8G8_UNORM, "R8G8_UNORM"},
+    {VK_FORMAT_A2B10G10R10_UNORM_PACK32, "A2B10G10R10_UNORM_PACK32"},
+};
+
+void readVertexFormats(VkPhysicalDevice physical, DeviceInfo& d) {
+  if (!d.acceleration_structure_extension) return;
+  for (const NamedFormat& f : kVertexFormatCandidates) {
+    VkFormatProperties props{};
+    vkGetPhysicalDeviceFormatProperties(physical, f.format, &props);
+    if (props.bufferFeatures & VK_FORMAT_FEATURE_ACCELERATION_STRUCTURE_VERTEX_BUFFER_BIT_KHR)
+      d.vertex_formats.push_back(f.name);
+  }
 }
 
 // Identity (UUIDs, driver) and the ray tracing pipeline's properties.
@@ -100,11 +137,16 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
   VkPhysicalDeviceRayTracingMaintenance1FeaturesKHR maintenance1{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_MAINTENANCE_1_FEATURES_KHR};
+  PositionFetchFeatures position_fetch;
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   void** next = &features.pNext;
   if (d.ray_tracing_extension) chain(next, rt_features);
   if (d.acceleration_structure_extension) chain(next, as_features);
   if (d.ray_tracing_maintenance1) chain(next, maintenance1);
+  if (d.position_fetch) {
+    *next = &position_fetch;
+    next = &position_fetch.p_next;
+  }
   vkGetPhysicalDeviceFeatures2(physical, &features);
   const bool vk12 = d.api_version_number >= VK_API_VERSION_1_2;
   d.ray_tracing_pipeline = vk12 && d.ray_tracing_extension && rt_features.rayTracingPipeline;
@@ -116,6 +158,8 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
   d.trace_rays_indirect2 = d.ray_tracing_maintenance1 && d.ray_tracing_pipeline &&
                            maintenance1.rayTracingPipelineTraceRaysIndirect2;
   d.ray_tracing_maintenance1 = d.ray_tracing_maintenance1 && maintenance1.rayTracingMaintenance1;
+  d.position_fetch =
+      d.position_fetch && d.acceleration_structure && position_fetch.ray_tracing_position_fetch;
 }
 
 }  // namespace
@@ -136,6 +180,7 @@ DeviceInfo describeDevice(VkPhysicalDevice physical, uint32_t index) {
   readExtensions(physical, d);
   readProperties(physical, d);
   readFeatures(physical, d);
+  readVertexFormats(physical, d);
   return d;
 }
 

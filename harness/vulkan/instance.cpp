@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cstring>
 #include <vector>
 
@@ -9,14 +10,16 @@ namespace {
 
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
-bool hasLayer(const char* name) {
+// The layer's specVersion (the Vulkan header it was built with), 0 when it
+// is not installed.
+uint32_t layerVersion(const char* name) {
   uint32_t count = 0;
-  if (vkEnumerateInstanceLayerProperties(&count, nullptr) != VK_SUCCESS) return false;
+  if (vkEnumerateInstanceLayerProperties(&count, nullptr) != VK_SUCCESS) return 0;
   std::vector<VkLayerProperties> layers(count);
-  if (vkEnumerateInstanceLayerProperties(&count, layers.data()) != VK_SUCCESS) return false;
+  if (vkEnumerateInstanceLayerProperties(&count, layers.data()) != VK_SUCCESS) return 0;
   for (const VkLayerProperties& l : layers)
-    if (std::strcmp(l.layerName, name) == 0) return true;
-  return false;
+    if (std::strcmp(l.layerName, name) == 0) return std::max<uint32_t>(1, l.specVersion);
+  return 0;
 }
 
 bool hasInstanceExtension(const char* name, const char* layer) {
@@ -33,7 +36,8 @@ bool hasInstanceExtension(const char* name, const char* layer) {
 }  // namespace
 
 void createInstance(VulkanContext& ctx, bool want_validation) {
-  ctx.validation = want_validation && hasLayer(kValidationLayer) &&
+  const uint32_t layer_version = want_validation ? layerVersion(kValidationLayer) : 0;
+  ctx.validation = layer_version != 0 &&
                    (hasInstanceExtension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME, nullptr) ||
                     hasInstanceExtension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME, kValidationLayer));
 
@@ -60,6 +64,7 @@ void createInstance(VulkanContext& ctx, bool want_validation) {
   info.ppEnabledExtensionNames = extensions.data();
   vkCheck(vkCreateInstance(&info, nullptr, &ctx.instance), "vkCreateInstance");
   if (ctx.validation) ctx.messenger = createDebugMessenger(ctx.instance, ctx.capture.get());
+  ctx.validation_layer_version = ctx.validation ? layer_version : 0;
 }
 
 void destroyInstance(VulkanContext& ctx) {

@@ -69,6 +69,13 @@ struct DeviceInfo {
   // vkCmdTraceRaysIndirectKHR (rayTracingPipelineTraceRaysIndirect) and
   // vkCmdTraceRaysIndirect2KHR (maintenance1's rayTracingPipelineTraceRaysIndirect2).
   bool trace_rays_indirect = false, trace_rays_indirect2 = false;
+  // VK_KHR_ray_tracing_position_fetch with its rayTracingPositionFetch
+  // feature (gl_HitTriangleVertexPositionsEXT, the vertex_position<i> built-ins).
+  bool position_fetch = false;
+  // The vertex formats the device builds triangles from
+  // (ACCELERATION_STRUCTURE_VERTEX_BUFFER): rayspec's names (float3, half2,
+  // ...) for the formats a case may name, the VkFormat's name otherwise.
+  std::vector<std::string> vertex_formats;
 };
 
 // Every physical device the loader sees (with or without ray tracing).
