@@ -51,13 +51,9 @@ bool parseTriangleData(YamlReader& r, const YAML::Node& n, const std::string& fi
       r.error(idx, field + ".indices", "the index count is not a multiple of 3");
       ok = false;
     }
-    if (ok && g.indices.empty()) {
-      r.error(idx, field + ".indices", "no triangles");
-      ok = false;
-    }
-  } else if (g.vertices.size() % 3 != 0 || g.vertices.empty()) {
+  } else if (g.vertices.size() % 3 != 0) {
     r.error(verts, field + ".vertices",
-            "without indices, the vertex count must be a non-zero multiple of 3");
+            "without indices, the vertex count must be a multiple of 3");
     ok = false;
   }
   return ok;
@@ -114,11 +110,7 @@ bool parseTriangles(YamlReader& r, const YAML::Node& n, const std::string& field
 
 bool parseAabbs(YamlReader& r, const YAML::Node& n, const std::string& field, Geometry& g) {
   g.kind = Geometry::Kind::Aabbs;
-  if (!r.expectSeq(n, field)) return false;
-  if (n.size() == 0) {
-    r.error(n, field, "no AABBs");
-    return false;
-  }
+  if (!r.expectSeq(n, field)) return false;  // none: an empty geometry
   bool ok = true;
   for (size_t i = 0; i < n.size(); ++i) {
     const std::string f = field + "[" + std::to_string(i) + "]";
@@ -174,7 +166,6 @@ void parseBlases(YamlReader& r, const YAML::Node& n, Scene& scene) {
     b.loc = r.loc(it->first, field);
     const YAML::Node geoms = it->second;
     if (r.expectSeq(geoms, field)) {
-      if (geoms.size() == 0) r.error(geoms, field, "a BLAS needs at least one geometry");
       for (size_t i = 0; i < geoms.size(); ++i) {
         Geometry g;
         parseGeometry(r, geoms[i], field + "[" + std::to_string(i) + "]", g);

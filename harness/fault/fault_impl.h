@@ -98,6 +98,7 @@ std::string copyDropsInstance(Case& c, ModelOptions& o);
 std::string updateIgnored(Case& c, ModelOptions& o);
 std::string vertexFormatIgnored(Case& c, ModelOptions& o);
 std::string positionFetchWorldSpace(Case& c, ModelOptions& o);
+std::string emptyGeometryRenumbered(Case& c, ModelOptions& o);
 std::string hitAttributesLost(Case& c, ModelOptions& o);
 std::string callableDataNotReturned(Case& c, ModelOptions& o);
 std::string nestedTraceDropped(Case& c, ModelOptions& o);

@@ -230,6 +230,10 @@ std::vector<FaultImpl> pipelineMutations() {
        "gl_HitTriangleVertexPositionsEXT gives the vertices through the instance transform "
        "(world space), not in object space",
        nullptr, positionFetchWorldSpace},
+      {"empty-geometry-renumbered", K::CaseMutation,
+       "geometries without primitives and instances of empty BLASes do not count for the "
+       "geometry index, instance id and SBT index of the others",
+       nullptr, emptyGeometryRenumbered},
   };
 }
 

@@ -39,4 +39,26 @@ std::string vertexFormatIgnored(Case& c, ModelOptions&) {
   return n ? std::to_string(n) + " geometries traced at their unrounded positions" : "";
 }
 
+// Empty geometries and acceleration structures broken: a device that leaves
+// geometries without primitives, and instances of BLASes without any, out
+// when it numbers the rest (gl_GeometryIndexEXT, gl_InstanceID and the SBT
+// index that follows from them).
+std::string emptyGeometryRenumbered(Case& c, ModelOptions&) {
+  if (c.scene.built) return "";
+  size_t geometries = 0, instances = 0;
+  for (Blas& b : c.scene.blases) {
+    const size_t before = b.geometries.size();
+    std::erase_if(b.geometries, [](const Geometry& g) { return g.primitiveCount() == 0; });
+    geometries += before - b.geometries.size();
+  }
+  const size_t before = c.scene.instances.size();
+  std::erase_if(c.scene.instances, [&](const Instance& i) {
+    return i.blas && c.scene.blases[*i.blas].geometries.empty();
+  });
+  instances = before - c.scene.instances.size();
+  if (geometries + instances == 0) return "";
+  return std::to_string(geometries) + " empty geometries and " + std::to_string(instances) +
+         " instances of empty BLASes left out of the numbering";
+}
+
 }  // namespace rayspec

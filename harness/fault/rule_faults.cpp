@@ -37,7 +37,8 @@ const std::vector<RuleFaults>& ruleFaults() {
        {"drop-miss", "chit-after-ignore", "miss-after-closest-hit", "skip-closest-hit-ignored"},
        {}},
       {"R-SBT-HIT",
-       {"hit-record-shifted", "instance-sbt-offset-ignored", "custom-index-truncated"},
+       {"hit-record-shifted", "instance-sbt-offset-ignored", "custom-index-truncated",
+        "empty-geometry-renumbered"},
        {}},
       {"R-SBT-MISS", {"miss-record-shifted"}, {}},
       {"R-SBT-CALL", {"callable-record-shifted", "callable-index-ignored"}, {}},
@@ -48,7 +49,9 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-PAYLOAD",
        {"payload-writes-lost", "payload-start-lost", "payload-words-lost", "hit-attributes-lost"},
        {}},
-      {"R-BUILTIN", {"builtin-wrong", "swap-primitive-id", "shift-t"}, {}},
+      {"R-BUILTIN",
+       {"builtin-wrong", "swap-primitive-id", "shift-t", "empty-geometry-renumbered"},
+       {}},
       // Several top levels are built as copies of the instance list, the other
       // levels' instances inactive (Instance::tlas): which instances a trace
       // finds active is which level it names.
