@@ -7,7 +7,12 @@
 #   cat OUT/bundles.tar.xz.* | tar -C DIR -xJf -
 #   ./build/rayspec run --device-results DIR/run --baseline references/baselines/nvidia.csv --out JUDGED
 #   ./build/rayspec mutate DIR/run --out MUTATED
-# Usage: [RAYSPEC_DEVICE_RUNS=2] [RAYSPEC_DEVICE_REFERENCE=1] bash tools/device-run-suite.sh OUT [run options]
+# RAYSPEC_DEVICE_NO_LAYER=FILTER also runs the cases FILTER names without the
+# validation layer (for extensions newer than the carried layer, such as
+# position fetch: see references/baselines/nvidia.csv), bundled apart in
+# OUT/no-layer.tar.xz (judge DIR/no-layer the same way).
+# Usage: [RAYSPEC_DEVICE_RUNS=2] [RAYSPEC_DEVICE_REFERENCE=1] [RAYSPEC_DEVICE_NO_LAYER=FILTER]
+#        bash tools/device-run-suite.sh OUT [run options]
 set -euo pipefail
 out=$1
 shift
@@ -38,6 +43,13 @@ if [[ -n "${RAYSPEC_DEVICE_REFERENCE:-}" ]]; then
   ./rayspec run --cases cases --rules spec-rules.yaml --icd "$icd" --device NVIDIA --strict-validation \
     --cache-dir "$work/p/cache" --process-per-case --out "$work/reference" "$@" > "$out/reference.log" 2>&1 || true
   echo "process per case, whole suite: $(( ($(date +%s%N) - start) / 1000000 )) ms wall" | tee -a "$out/timing.txt"
+fi
+if [[ -n "${RAYSPEC_DEVICE_NO_LAYER:-}" ]]; then
+  ./rayspec run --cases cases --rules spec-rules.yaml --icd "$icd" --device NVIDIA --no-validation \
+    --cache-dir "$work/p/cache" --filter "$RAYSPEC_DEVICE_NO_LAYER" --out "$work/no-layer" \
+    > "$out/no-layer.log" 2>&1 || true
+  (cd "$work" && find no-layer -path '*/device/*' -type f -print0 |
+    tar --null -T - -cf - | xz -T0 -6 > "$out/no-layer.tar.xz")
 fi
 cp "$work/run/summary.txt" "$out/" 2>/dev/null || true
 cd "$work"
