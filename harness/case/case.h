@@ -111,8 +111,10 @@ constexpr uint32_t kMaxTlases = 8;
 // copy (R-AS-COPY) the traces use instead of what was built: clone
 // (vkCmdCopyAccelerationStructureKHR, CLONE) or compact (COMPACT, at the
 // compacted size the device reports). Shaders observe the same either way.
-enum class AsCopy { None, Clone, Compact };
-const char* asCopyName(AsCopy c);  // none, clone, compact
+// serialize: to memory and back (vkCmdCopyAccelerationStructureToMemoryKHR,
+// vkCmdCopyMemoryToAccelerationStructureKHR).
+enum class AsCopy { None, Clone, Compact, Serialize };
+const char* asCopyName(AsCopy c);  // none, clone, compact, serialize
 struct AsBuild {
   uint32_t flags = 0x4;
   AsCopy copy = AsCopy::None;

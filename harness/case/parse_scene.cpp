@@ -242,12 +242,12 @@ void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
   if (!copy.IsDefined()) return;
   const auto name = r.string(copy, f + ".copy");
   if (!name) return;
-  for (AsCopy c : {AsCopy::None, AsCopy::Clone, AsCopy::Compact})
+  for (AsCopy c : {AsCopy::None, AsCopy::Clone, AsCopy::Compact, AsCopy::Serialize})
     if (*name == asCopyName(c)) {
       build.copy = c;
       return;
     }
-  r.error(copy, f + ".copy", "unknown copy '" + *name + "' (none, clone, compact)");
+  r.error(copy, f + ".copy", "unknown copy '" + *name + "' (none, clone, compact, serialize)");
 }
 
 }  // namespace
@@ -260,6 +260,8 @@ const char* asCopyName(AsCopy c) {
       return "clone";
     case AsCopy::Compact:
       return "compact";
+    case AsCopy::Serialize:
+      return "serialize";
   }
   return "none";
 }

@@ -1,19 +1,22 @@
 #include "vulkan/acceleration_copy.h"
 
+#include <cstring>
+
 #include "vulkan/acceleration_structure.h"
 #include "vulkan/commands.h"
+#include "vulkan/memory.h"
 #include "vulkan/vk_check.h"
 
 namespace rayspec {
 namespace {
 
-// The compacted size of each structure, as the device reports it.
-std::vector<VkDeviceSize> compactedSizes(const VulkanContext& ctx,
-                                         const std::vector<BuiltStructure>& from,
-                                         Cleanup& cleanup) {
+// A size of each structure the device reports (compacted or serialized).
+std::vector<VkDeviceSize> queriedSizes(const VulkanContext& ctx,
+                                       const std::vector<BuiltStructure>& from, VkQueryType query,
+                                       Cleanup& cleanup) {
   const uint32_t count = static_cast<uint32_t>(from.size());
   VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-  info.queryType = VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR;
+  info.queryType = query;
   info.queryCount = count;
   VkQueryPool pool = VK_NULL_HANDLE;
   vkCheck(vkCreateQueryPool(ctx.device, &info, nullptr, &pool), "vkCreateQueryPool");
@@ -23,19 +26,129 @@ std::vector<VkDeviceSize> compactedSizes(const VulkanContext& ctx,
   for (const BuiltStructure& s : from) handles.push_back(s.handle);
   VkCommandBuffer cmd = beginCommands(ctx, cleanup);
   vkCmdResetQueryPool(cmd, pool, 0, count);
-  ctx.fn.cmdWriteAccelerationStructuresProperties(
-      cmd, count, handles.data(), VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR, pool, 0);
+  ctx.fn.cmdWriteAccelerationStructuresProperties(cmd, count, handles.data(), query, pool, 0);
   submitAndWait(ctx, cmd, kBuildTimeoutNs);
   std::vector<VkDeviceSize> sizes(count);
   vkCheck(vkGetQueryPoolResults(ctx.device, pool, 0, count, count * sizeof(VkDeviceSize),
                                 sizes.data(), sizeof(VkDeviceSize),
                                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
           "vkGetQueryPoolResults");
-  for (size_t i = 0; i < count; ++i)
+  return sizes;
+}
+
+// The compacted size of each structure, as the device reports it.
+std::vector<VkDeviceSize> compactedSizes(const VulkanContext& ctx,
+                                         const std::vector<BuiltStructure>& from,
+                                         Cleanup& cleanup) {
+  const std::vector<VkDeviceSize> sizes =
+      queriedSizes(ctx, from, VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR, cleanup);
+  for (size_t i = 0; i < sizes.size(); ++i)
     if (sizes[i] == 0 || sizes[i] > from[i].size)
       throw VulkanError("compacted size " + std::to_string(sizes[i]) + " of a structure of " +
                         std::to_string(from[i].size) + " bytes: VK_ERROR_UNKNOWN");
   return sizes;
+}
+
+// Serialized data: driverUUID, compatibility UUID, then 64-bit sizes (the
+// serialized size, the deserialized size, the handle count) and the handles.
+constexpr VkDeviceSize kSerializedAlignment = 256;  // of src / dst device addresses
+constexpr VkDeviceSize kDeserializedSizeOffset = 2 * VK_UUID_SIZE + 8;
+
+// Each structure serialized into host-visible memory (one buffer, each at
+// a 256-byte aligned offset), its header checked: the device must call its
+// own data compatible, and the sizes must be those it reported.
+struct Serialized {
+  Buffer memory;
+  std::vector<VkDeviceSize> offsets, deserialized_sizes;
+};
+
+void checkSerializedHeader(const VulkanContext& ctx, const uint8_t* data, VkDeviceSize size) {
+  VkAccelerationStructureVersionInfoKHR version{
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_VERSION_INFO_KHR};
+  version.pVersionData = data;
+  VkAccelerationStructureCompatibilityKHR compatible =
+      VK_ACCELERATION_STRUCTURE_COMPATIBILITY_INCOMPATIBLE_KHR;
+  ctx.fn.getDeviceAccelerationStructureCompatibility(ctx.device, &version, &compatible);
+  if (compatible != VK_ACCELERATION_STRUCTURE_COMPATIBILITY_COMPATIBLE_KHR)
+    throw VulkanError(
+        "vkGetDeviceAccelerationStructureCompatibilityKHR calls the device's own serialized "
+        "structure incompatible: VK_ERROR_INCOMPATIBLE_DRIVER");
+  uint64_t serialized = 0;
+  std::memcpy(&serialized, data + 2 * VK_UUID_SIZE, sizeof(serialized));
+  if (serialized != size)
+    throw VulkanError("serialized data says it holds " + std::to_string(serialized) +
+                      " bytes, the query said " + std::to_string(size) + ": VK_ERROR_UNKNOWN");
+}
+
+Serialized serialize(const VulkanContext& ctx, const std::vector<BuiltStructure>& from,
+                     Cleanup& cleanup) {
+  const std::vector<VkDeviceSize> sizes =
+      queriedSizes(ctx, from, VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_SIZE_KHR, cleanup);
+  Serialized s;
+  VkDeviceSize total = 0;
+  for (VkDeviceSize size : sizes) {
+    s.offsets.push_back(total);
+    total += (size + kSerializedAlignment - 1) / kSerializedAlignment * kSerializedAlignment;
+  }
+  s.memory = createBuffer(ctx, total + kSerializedAlignment,
+                          VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
+                              VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
+                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                          MemoryUse::Host, cleanup);
+  const VkDeviceSize base =
+      (s.memory.address + kSerializedAlignment - 1) / kSerializedAlignment * kSerializedAlignment -
+      s.memory.address;
+  VkCommandBuffer cmd = beginCommands(ctx, cleanup);
+  for (size_t i = 0; i < from.size(); ++i) {
+    s.offsets[i] += base;
+    VkCopyAccelerationStructureToMemoryInfoKHR copy{
+        VK_STRUCTURE_TYPE_COPY_ACCELERATION_STRUCTURE_TO_MEMORY_INFO_KHR};
+    copy.src = from[i].handle;
+    copy.dst.deviceAddress = s.memory.address + s.offsets[i];
+    copy.mode = VK_COPY_ACCELERATION_STRUCTURE_MODE_SERIALIZE_KHR;
+    ctx.fn.cmdCopyAccelerationStructureToMemory(cmd, &copy);
+  }
+  // The serialized bytes, written as transfers in the build stage, read by
+  // the host.
+  VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                       VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0, nullptr);
+  submitAndWait(ctx, cmd, kBuildTimeoutNs);
+  for (size_t i = 0; i < from.size(); ++i) {
+    const auto* data = static_cast<const uint8_t*>(s.memory.mapped) + s.offsets[i];
+    checkSerializedHeader(ctx, data, sizes[i]);
+    uint64_t deserialized = 0;
+    std::memcpy(&deserialized, data + kDeserializedSizeOffset, sizeof(deserialized));
+    s.deserialized_sizes.push_back(deserialized);
+  }
+  return s;
+}
+
+// R-AS-COPY by serialization: each structure to memory, then from memory
+// into a new structure of the size the data names.
+std::vector<BuiltStructure> serializeAndBack(const VulkanContext& ctx,
+                                             const std::vector<BuiltStructure>& from,
+                                             VkAccelerationStructureTypeKHR type,
+                                             Cleanup& cleanup) {
+  const Serialized s = serialize(ctx, from, cleanup);
+  std::vector<BuiltStructure> to;
+  VkCommandBuffer cmd = beginCommands(ctx, cleanup);
+  for (size_t i = 0; i < from.size(); ++i) {
+    const VkDeviceSize size = s.deserialized_sizes[i];
+    to.push_back({createStructure(ctx, type, size, cleanup), size});
+    VkCopyMemoryToAccelerationStructureInfoKHR copy{
+        VK_STRUCTURE_TYPE_COPY_MEMORY_TO_ACCELERATION_STRUCTURE_INFO_KHR};
+    copy.src.deviceAddress = s.memory.address + s.offsets[i];
+    copy.dst = to.back().handle;
+    copy.mode = VK_COPY_ACCELERATION_STRUCTURE_MODE_DESERIALIZE_KHR;
+    ctx.fn.cmdCopyMemoryToAccelerationStructure(cmd, &copy);
+  }
+  recordStructureBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
+                                  VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
+  submitAndWait(ctx, cmd, kBuildTimeoutNs);
+  return to;
 }
 
 }  // namespace
@@ -45,6 +158,7 @@ std::vector<BuiltStructure> copyStructures(const VulkanContext& ctx,
                                            VkAccelerationStructureTypeKHR type, AsCopy mode,
                                            Cleanup& cleanup) {
   if (from.empty() || mode == AsCopy::None) return from;
+  if (mode == AsCopy::Serialize) return serializeAndBack(ctx, from, type, cleanup);
   std::vector<VkDeviceSize> sizes;
   for (const BuiltStructure& s : from) sizes.push_back(s.size);
   if (mode == AsCopy::Compact) sizes = compactedSizes(ctx, from, cleanup);

@@ -1,8 +1,10 @@
 // Copies of acceleration structures (scene.build.copy, R-AS-COPY): clones at
 // the size they were created with, or compacted copies at the size the
 // device reports after the build (a query pool of
-// VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR). Each step is a
-// submission of its own, waited on.
+// VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR), or serialized
+// to host-visible memory and deserialized into new structures (the data's
+// header checked: compatible with the device, the sizes it reported). Each
+// step is a submission of its own, waited on.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -22,7 +24,8 @@ struct BuiltStructure {
 };
 
 // The copies of `from` (all of `type`, built and complete), in order, made by
-// vkCmdCopyAccelerationStructureKHR in `mode` (Clone or Compact), readable by
+// vkCmdCopyAccelerationStructureKHR in `mode` (Clone or Compact), or through
+// memory (Serialize), readable by
 // builds and ray tracing shaders once this returns. Throws VulkanError.
 std::vector<BuiltStructure> copyStructures(const VulkanContext& ctx,
                                            const std::vector<BuiltStructure>& from,

@@ -24,6 +24,12 @@ DeviceFunctions loadDeviceFunctions(VkDevice device) {
        &f.getAccelerationStructureDeviceAddress);
   load(device, "vkCmdBuildAccelerationStructuresKHR", &f.cmdBuildAccelerationStructures);
   load(device, "vkCmdCopyAccelerationStructureKHR", &f.cmdCopyAccelerationStructure);
+  load(device, "vkCmdCopyAccelerationStructureToMemoryKHR",
+       &f.cmdCopyAccelerationStructureToMemory);
+  load(device, "vkCmdCopyMemoryToAccelerationStructureKHR",
+       &f.cmdCopyMemoryToAccelerationStructure);
+  load(device, "vkGetDeviceAccelerationStructureCompatibilityKHR",
+       &f.getDeviceAccelerationStructureCompatibility);
   load(device, "vkCmdWriteAccelerationStructuresPropertiesKHR",
        &f.cmdWriteAccelerationStructuresProperties);
   load(device, "vkCreateRayTracingPipelinesKHR", &f.createRayTracingPipelines);
