@@ -50,7 +50,8 @@ TEST(SceneBuild, FlagsAndCopyAreRead) {
 TEST(SceneBuild, ErrorsNameTheLineAndField) {
   struct Bad {
     std::string build, field, message;
-  } bad[] = {{"{copy: serialize}", "scene.build.copy", "unknown copy 'serialize'"},
+  } bad[] = {{"{copy: deserialize}", "scene.build.copy",
+              "unknown copy 'deserialize' (none, clone, compact, serialize)"},
              {"{flags: [prefer_fast_trace, prefer_fast_build]}", "scene.build.flags",
               "prefer_fast_trace and prefer_fast_build together"},
              {"{flags: [fastest]}", "scene.build.flags", "fastest"},
