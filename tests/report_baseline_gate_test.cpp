@@ -214,5 +214,23 @@ TEST(MergeRuns, RefusesTwoDevicesAndACaseTwice) {
   EXPECT_NE(mergeRuns({a}, a, Baseline{}, {}).error, "");
 }
 
+TEST(BaselineGate, AThroughPathAddsItsOwnEntries) {
+  std::string error;
+  const std::string csv = writeFile("paths.csv", "fam/known,Fail\nfam/other,Fail\n");
+  writeFile("paths-through-serialize.csv",
+            "# what serialize changes\nfam/other,Crash\nfam/new,Crash\n");
+  const Baseline plain = orError(loadBaselineSet(csv, "", ""), &error);
+  EXPECT_EQ(plain.expected.at("fam/other"), Status::Fail);
+  EXPECT_EQ(plain.through_file, "");
+  const Baseline other_path = orError(loadBaselineSet(csv, "", "", "clone"), &error);
+  EXPECT_EQ(other_path.expected.count("fam/new"), 0u);
+  const Baseline b = orError(loadBaselineSet(csv, "", "", "serialize"), &error);
+  EXPECT_EQ(error, "");
+  EXPECT_NE(b.through_file.find("paths-through-serialize.csv"), std::string::npos);
+  EXPECT_EQ(b.expected.at("fam/known"), Status::Fail);
+  EXPECT_EQ(b.expected.at("fam/other"), Status::Crash);
+  EXPECT_EQ(b.expected.at("fam/new"), Status::Crash);
+}
+
 }  // namespace
 }  // namespace rayspec

@@ -5,6 +5,7 @@
 #include "cli/commands.h"
 #include "cli/option_checks.h"
 #include "cli/subcommands.h"
+#include "metamorphic/feature_path.h"
 #include "metamorphic/motion_spec.h"
 #include "run/fault_seam.h"
 #include "run/run_loop.h"
@@ -105,7 +106,14 @@ void addIsolationOptions(CLI::App* run, RunOptions& run_opt) {
 
 // Runs that change what is run: saved device results, permuted and moved
 // scenes, and (tests only) planted faults.
-void addVariantOptions(CLI::App* run, RunOptions& run_opt, std::string& move_spec) {
+// Options whose text becomes a value once parsing is done.
+struct VariantTexts {
+  std::string move_spec, through_name;
+};
+
+void addVariantOptions(CLI::App* run, RunOptions& run_opt, VariantTexts& texts) {
+  std::string& move_spec = texts.move_spec;
+  std::string& through_name = texts.through_name;
   const std::string fault_list = plantableFaultNames();
   run->add_option("--device-results", run_opt.device_results,
                   "Run no device: judge the device bundles a run saved in this folder "
@@ -124,6 +132,19 @@ void addVariantOptions(CLI::App* run, RunOptions& run_opt, std::string& move_spe
             return parseMotionSpec(spec, &why) ? std::string() : why;
           },
           "MOTION");
+  run->add_option("--through", through_name,
+                  "Send every case through a feature path that must not change what shaders "
+                  "observe (" +
+                      featurePathNames() +
+                      "; a case that takes its own way there is NotSupported, as is one the device "
+                      "cannot take)")
+      ->check(
+          [](const std::string& name) {
+            return featurePathFromName(name)
+                       ? std::string()
+                       : "unknown feature path '" + name + "' (" + featurePathNames() + ")";
+          },
+          "PATH");
   run->add_option("--plant-fault", run_opt.plant_fault,
                   "Test only: corrupt the device's results in a known way (" + fault_list + ")");
   run->add_option("--plant-fault-in", run_opt.plant_fault_in,
@@ -136,16 +157,18 @@ void addVariantOptions(CLI::App* run, RunOptions& run_opt, std::string& move_spe
 Subcommand addRunCommand(CLI::App& app) {
   auto* run = app.add_subcommand("run", "Run cases on a device and on the model");
   auto opt = std::make_shared<RunOptions>();
-  auto move_spec = std::make_shared<std::string>();
+  auto texts = std::make_shared<VariantTexts>();
   addSelectionOptions(run, *opt);
   addSideOptions(run, *opt);
   addIsolationOptions(run, *opt);
-  addVariantOptions(run, *opt, *move_spec);
-  return {run, [opt, move_spec] {
-            if (!move_spec->empty()) {
+  addVariantOptions(run, *opt, *texts);
+  return {run, [opt, texts] {
+            if (!texts->move_spec.empty()) {
               std::string why;  // checked while parsing
-              opt->move = parseMotionSpec(*move_spec, &why);
+              opt->move = parseMotionSpec(texts->move_spec, &why);
             }
+            if (!texts->through_name.empty())
+              opt->through = featurePathFromName(texts->through_name);
             return runCases(*opt);
           }};
 }

@@ -123,12 +123,21 @@ std::string siblingFile(const std::string& baseline_csv, const std::string& suff
   return std::filesystem::exists(sibling) ? sibling.string() : std::string();
 }
 
-Result<Baseline> loadBaselineSet(const std::string& csv, std::string flakes, std::string skips) {
+Result<Baseline> loadBaselineSet(const std::string& csv, std::string flakes, std::string skips,
+                                 const std::string& through) {
   Baseline b;
   if (!csv.empty()) {
     Result<Baseline> read = loadBaseline(csv);
     if (!read) return read.error();
     b = std::move(*read);
+  }
+  if (const std::string path_file =
+          through.empty() ? std::string() : siblingFile(csv, "-through-" + through + ".csv");
+      !path_file.empty()) {
+    Result<Baseline> read = loadBaseline(path_file);
+    if (!read) return read.error();
+    for (const auto& [name, status] : read->expected) b.expected[name] = status;
+    b.through_file = path_file;
   }
   if (flakes.empty()) flakes = siblingFile(csv, "-flakes.txt");
   if (skips.empty()) skips = siblingFile(csv, "-skips.txt");

@@ -42,6 +42,7 @@ constexpr size_t kMaxBaselineBytes = 16u << 20;
 
 struct Baseline {
   std::string file, flakes_file, skips_file;  // "" when not used
+  std::string through_file;                   // entries added for a --through path ("": none)
   std::map<std::string, Status> expected;     // case name -> status
   std::map<std::string, int> line_of;         // case name -> its line in `file`
   std::vector<NamePattern> flakes, skips;
@@ -68,7 +69,11 @@ const NamePattern* findPattern(const std::vector<NamePattern>& patterns, const s
 std::string siblingFile(const std::string& baseline_csv, const std::string& suffix);
 
 // The whole set: the CSV (may be ""), and the flakes and skips files (given,
-// or the CSV's siblings), or the first problem, naming file and line.
-Result<Baseline> loadBaselineSet(const std::string& csv, std::string flakes, std::string skips);
+// or the CSV's siblings), or the first problem, naming file and line. With
+// `through` (a --through feature path's name), the entries of
+// <stem>-through-<through>.csv beside the CSV, if it exists, are added over
+// the CSV's: what that path changes for this driver (Baseline::through_file).
+Result<Baseline> loadBaselineSet(const std::string& csv, std::string flakes, std::string skips,
+                                 const std::string& through = "");
 
 }  // namespace rayspec

@@ -16,6 +16,7 @@
 #include <set>
 #include <thread>
 
+#include "metamorphic/feature_path.h"
 #include "metamorphic/motion_spec.h"
 #include "metamorphic/permute_case.h"
 #include "report/baseline_gate.h"
@@ -41,6 +42,21 @@ namespace {
 
 // --move and a case it cannot move exactly: NotSupported, saying why (the
 // case's verdict under the motion is unknown, never a pass).
+// A case --through does not send through its path: NotSupported, saying why.
+CaseOutcome notThroughOutcome(const std::string& name, FeaturePath path, const std::string& why) {
+  CaseOutcome o;
+  o.name = name;
+  o.verdict.add({Status::NotSupported,
+                 "through",
+                 std::string("not run: --through ") + featurePathName(path) + ": " + why,
+                 {},
+                 0});
+  o.deriveFromVerdict();
+  o.baseline = BaselineMatch::Skipped;
+  o.baseline_note = "not run under --through";
+  return o;
+}
+
 CaseOutcome notMovedOutcome(const std::string& name, const std::string& why) {
   CaseOutcome o;
   o.name = name;
@@ -98,6 +114,15 @@ PreparedRun prepareCases(const std::vector<CaseFile>& files, const RunOptions& o
         if (opt.move)
           changed = moveCase(changed ? *changed : *parsed.value, *opt.move, &not_moved,
                              MoveScope::Verdict);
+        std::string not_through;
+        if (opt.through && !(opt.move && !changed)) {
+          changed = throughPath(changed ? *changed : *parsed.value, *opt.through, &not_through);
+          if (!changed) {
+            p.ready = notThroughOutcome(f.name, *opt.through, not_through);
+            run.planned.push_back(std::move(p));
+            continue;
+          }
+        }
         if (opt.move && !changed) {
           p.ready = notMovedOutcome(f.name, not_moved);
         } else {
@@ -272,6 +297,9 @@ void announceRun(const RunOptions& opt, unsigned jobs, const Baseline& baseline)
   if (opt.permute)
     std::printf("Permuted: primitives and instances, seed %llu\n",
                 (unsigned long long)*opt.permute);
+  if (opt.through)
+    std::printf("Through: every case by %s (a case that takes its own way there is NotSupported)\n",
+                featurePathName(*opt.through));
   if (opt.move)
     std::printf(
         "Moved: every case by the rigid motion %s (a case it cannot move exactly is "
@@ -289,6 +317,8 @@ void announceRun(const RunOptions& opt, unsigned jobs, const Baseline& baseline)
   if (!baseline.file.empty()) {
     std::printf("Baseline: %s (%zu known results)\n", baseline.file.c_str(),
                 baseline.expected.size());
+    if (!baseline.through_file.empty())
+      std::printf("  with what --through changes: %s\n", baseline.through_file.c_str());
     std::vector<std::string> library;
     for (const CaseFile& f : findCases(opt.cases_dir, "*")) library.push_back(f.name);
     for (const std::string& w : unknownEntries(baseline, library))

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "metamorphic/feature_path.h"
 #include "metamorphic/transform_case.h"
 #include "run/cache_dir.h"
 
@@ -64,6 +65,8 @@ struct RunOptions {
       permute;  // run each case with primitives and instances permuted (metamorphic/)
   std::optional<RigidMotion>
       move;  // run each case moved by this exact rigid motion (metamorphic/transform_case.h)
+  std::optional<FeaturePath>
+      through;  // run each case through this feature path (metamorphic/feature_path.h)
   std::string device_results;  // judge device bundles saved in this run folder instead of running a
                                // device (run/device_results.h)
 };

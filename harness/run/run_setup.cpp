@@ -163,7 +163,8 @@ RunInfo startRunInfo(const RunOptions& opt, size_t planned_cases) {
 }
 
 Result<Baseline> loadRunBaseline(const RunOptions& opt) {
-  return loadBaselineSet(opt.baseline, opt.flakes, opt.skips);
+  return loadBaselineSet(opt.baseline, opt.flakes, opt.skips,
+                         opt.through ? featurePathName(*opt.through) : "");
 }
 
 Result<ChosenDevice> chooseDevice(const RunOptions& opt, const std::vector<CaseFile>& files,

@@ -84,6 +84,12 @@ Serialized serialize(const VulkanContext& ctx, const std::vector<BuiltStructure>
                      Cleanup& cleanup) {
   const std::vector<VkDeviceSize> sizes =
       queriedSizes(ctx, from, VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_SIZE_KHR, cleanup);
+  for (size_t i = 0; i < sizes.size(); ++i)
+    if (sizes[i] < kDeserializedSizeOffset + 16)  // the header: two UUIDs, three sizes
+      throw VulkanError("the serialization size query gave " + std::to_string(sizes[i]) +
+                        " bytes for structure " + std::to_string(i) +
+                        ", less than the header every serialized structure holds: "
+                        "VK_ERROR_UNKNOWN");
   Serialized s;
   VkDeviceSize total = 0;
   for (VkDeviceSize size : sizes) {

@@ -1,0 +1,33 @@
+// Feature paths (--through): a way of building and launching that must not
+// change what shaders observe, applied to every case of a run so that the
+// path meets every family (R-INDIRECT, R-LIBRARY, R-AS-COPY, R-AS-UPDATE).
+// The model's expectation stays the case's own; a case that already takes
+// another way of the same kind (its own launch command, libraries, copy or
+// update) is not sent through it, and says why.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "case/case.h"
+
+namespace rayspec {
+
+enum class FeaturePath {
+  Indirect,   // rays.command indirect: vkCmdTraceRaysIndirectKHR
+  Indirect2,  // rays.command indirect2: vkCmdTraceRaysIndirect2KHR
+  Libraries,  // every miss, hit and callable group in one pipeline library
+  Clone,      // scene.build.copy clone
+  Compact,    // scene.build.copy compact
+  Serialize,  // scene.build.copy serialize
+  Update,     // built with ALLOW_UPDATE, then updated in place to the same scene
+};
+
+const char* featurePathName(FeaturePath p);
+std::optional<FeaturePath> featurePathFromName(const std::string& name);
+const std::string& featurePathNames();  // "indirect, indirect2, ..." for help and errors
+
+// The case sent through `path`, or nullopt with *why_not set.
+std::optional<Case> throughPath(const Case& c, FeaturePath path, std::string* why_not);
+
+}  // namespace rayspec

@@ -1,0 +1,76 @@
+// --through (metamorphic/feature_path.h): each feature path changes only how
+// the case is launched or built, and a case that takes its own way there is
+// left alone with the reason.
+#include <gtest/gtest.h>
+
+#include "case/flag_names.h"
+#include "case/parse_case.h"
+#include "metamorphic/feature_path.h"
+
+namespace rayspec {
+namespace {
+
+Case simpleCase(const std::string& extra_scene = "", const std::string& extra_rays = "") {
+  const ParseResult p = parseCaseText(
+      "rules: [R-MASK]\n"
+      "scene:\n"
+      "  blas:\n"
+      "    tri: [{triangles: {vertices: [[-1, -1, 0], [1, -1, 0], [-1, 1, 0]]}}]\n"
+      "  instances: [{blas: tri}]\n" +
+          extra_scene +
+          "rays:\n"
+          "  list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]\n" +
+          extra_rays +
+          "pipeline:\n"
+          "  miss: [[record: {hit: 0}]]\n"
+          "  hit_groups: [{closest_hit: [record: [hit]]}]\n"
+          "  callables: [[call_data: {value: 1}]]\n"
+          "outputs:\n"
+          "  per_ray: [hit]\n",
+      "t.yaml", "t/t");
+  EXPECT_TRUE(p.value) << (p.errors.empty() ? "" : p.errors[0].format());
+  return p.value ? *p.value : Case{};
+}
+
+TEST(FeaturePath, NamesRoundTrip) {
+  for (FeaturePath p :
+       {FeaturePath::Indirect, FeaturePath::Indirect2, FeaturePath::Libraries, FeaturePath::Clone,
+        FeaturePath::Compact, FeaturePath::Serialize, FeaturePath::Update})
+    EXPECT_EQ(featurePathFromName(featurePathName(p)), p) << featurePathName(p);
+  EXPECT_FALSE(featurePathFromName("sideways"));
+  EXPECT_NE(featurePathNames().find("serialize"), std::string::npos);
+}
+
+TEST(FeaturePath, EachPathChangesItsOwnField) {
+  const Case c = simpleCase();
+  std::string why;
+  EXPECT_EQ(throughPath(c, FeaturePath::Indirect, &why)->rays.command, TraceCommand::Indirect);
+  EXPECT_EQ(throughPath(c, FeaturePath::Indirect2, &why)->rays.command, TraceCommand::Indirect2);
+  EXPECT_EQ(throughPath(c, FeaturePath::Serialize, &why)->scene.build.copy, AsCopy::Serialize);
+  EXPECT_EQ(throughPath(c, FeaturePath::Compact, &why)->scene.build.copy, AsCopy::Compact);
+  const Case lib = *throughPath(c, FeaturePath::Libraries, &why);
+  ASSERT_EQ(lib.pipeline.libraries.size(), 1u);
+  EXPECT_EQ(lib.pipeline.libraries[0].miss, (std::vector<uint32_t>{0}));
+  EXPECT_EQ(lib.pipeline.libraries[0].hit_groups, (std::vector<uint32_t>{0}));
+  EXPECT_EQ(lib.pipeline.libraries[0].callables, (std::vector<uint32_t>{0}));
+  const Case updated = *throughPath(c, FeaturePath::Update, &why);
+  ASSERT_TRUE(updated.scene.built);
+  EXPECT_TRUE(updated.scene.build.flags & kBuildAllowUpdate);
+  EXPECT_EQ(updated.scene.built->instances.size(), c.scene.instances.size());
+  EXPECT_EQ(updated.scene.blases[0].geometries[0].vertices,
+            updated.scene.built->blases[0].geometries[0].vertices);
+}
+
+TEST(FeaturePath, ACaseWithItsOwnWayThereIsLeftAlone) {
+  std::string why;
+  const Case copied = simpleCase("  build: {copy: clone}\n");
+  EXPECT_FALSE(throughPath(copied, FeaturePath::Serialize, &why));
+  EXPECT_NE(why.find("copies"), std::string::npos) << why;
+  const Case indirect = simpleCase("", "  command: indirect2\n");
+  EXPECT_FALSE(throughPath(indirect, FeaturePath::Indirect, &why));
+  EXPECT_NE(why.find("launch command"), std::string::npos) << why;
+  EXPECT_TRUE(throughPath(indirect, FeaturePath::Update, &why));
+}
+
+}  // namespace
+}  // namespace rayspec
