@@ -41,6 +41,8 @@ void printLimits(const DeviceInfo& d) {
   std::printf("        vkCmdTraceRaysIndirectKHR      %s\n", d.trace_rays_indirect ? "yes" : "no");
   std::printf("        vkCmdTraceRaysIndirect2KHR     %s\n", d.trace_rays_indirect2 ? "yes" : "no");
   std::printf("        VK_KHR_ray_tracing_position_fetch %s\n", d.position_fetch ? "yes" : "no");
+  std::printf("        VK_EXT_pipeline_library_group_handles %s\n",
+              d.library_group_handles ? "yes" : "no");
   std::string formats;
   for (const std::string& f : d.vertex_formats) formats += " " + f;
   std::printf("        vertex formats (AS build)     %s\n",

@@ -55,6 +55,12 @@ Verdict compareResults(const Case& c, const Plan& plan, const Results& device,
                 " validation-layer error(s); first: " + device.validation_messages.front();
     v.add(f);
   }
+  for (const std::string& what : device.device_findings) {
+    Finding f;
+    f.rule = "R-LIBRARY";
+    f.message = what;
+    v.add(f);
+  }
   if (device.width != model.width || device.height != model.height ||
       device.records.size() != model.records.size()) {
     Finding f;

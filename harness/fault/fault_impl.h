@@ -53,6 +53,7 @@ FaultResult builtinWrong(RecordFaultArgs& a);
 FaultResult indirectLaunchShort(RecordFaultArgs& a);
 FaultResult launchDepthLost(RecordFaultArgs& a);
 FaultResult zeroLaunchRuns(RecordFaultArgs& a);
+FaultResult libraryHandleDiffers(RecordFaultArgs& a);
 FaultResult tieAnsweredNeither(RecordFaultArgs& a);  // record_faults_ties.cpp
 
 // Case mutations: scene (mutate_scene.cpp), boxes (mutate_boxes.cpp), ray

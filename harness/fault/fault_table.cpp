@@ -44,6 +44,10 @@ std::vector<FaultImpl> recordEdits() {
        "a 3D launch runs only its first z layer: raygen never runs for z >= 1", launchDepthLost},
       {"zero-launch-runs", K::RecordEdit,
        "a launch with a zero dimension runs raygen once (its counter counts 1)", zeroLaunchRuns},
+      {"library-handle-differs", K::RecordEdit,
+       "a group handle read from a pipeline library differs from its handle in the linked "
+       "pipeline",
+       libraryHandleDiffers},
       {"tie-answered-neither", K::RecordEdit,
        "a hit tied with another at the committed t (or at an interval end) is answered with "
        "neither: a miss",

@@ -230,3 +230,18 @@ FaultResult builtinWrong(RecordFaultArgs& a) {
 }
 
 }  // namespace rayspec
+
+namespace rayspec {
+
+// R-LIBRARY with VK_EXT_pipeline_library_group_handles: a device whose group
+// handle read from a library differs from the same group's handle in the
+// linked pipeline (the check vulkan/library_group_handles.h makes).
+FaultResult libraryHandleDiffers(RecordFaultArgs& a) {
+  if (a.c.pipeline.libraries.empty()) return notApplicable("the case links no pipeline library");
+  a.dev.w.device_findings.push_back(
+      "group 1 (library group 0): its handle read from the library differs from its handle in "
+      "the linked pipeline (planted)");
+  return {true, "a library group's handle differs from the linked pipeline's"};
+}
+
+}  // namespace rayspec

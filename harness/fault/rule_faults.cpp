@@ -59,7 +59,7 @@ const std::vector<RuleFaults>& ruleFaults() {
        {"inactive-renumbered", "inactive-revived", "inactive-hides-last-active", "tlas-ignored"},
        {}},
       {"R-DEGEN", {"degenerate-hit"}, {}},
-      {"R-LIBRARY", {"library-groups-lost"}, {}},
+      {"R-LIBRARY", {"library-groups-lost", "library-handle-differs"}, {}},
       {"R-RAYGEN-REGION", {"raygen-group-ignored"}, {}},
       {"R-CULLMASK-BUILTIN", {"cull-mask-builtin-default"}, {}},
       {"R-NULL-SHADERS", {"no-null-shaders-dropped"}, {}},

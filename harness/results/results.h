@@ -144,8 +144,13 @@ struct Results {
   std::vector<RepeatDependentRay> repeat_dependent;
   std::vector<std::string> repeat_counters;
   std::vector<std::string> validation_messages;  // validation-layer errors (device)
-  double seconds = 0.0;   // wall time of the execution (setup + trace + read-back)
-  StepCosts cost;         // what each step of this side took (results/step_cost.h)
+  // Device: what the device broke that only the device shows, one line each,
+  // each a Fail of R-LIBRARY (library group handles that differ from the
+  // linked pipeline's, vulkan/library_group_handles.h).
+  std::vector<std::string> device_findings;
+  uint32_t library_handles_compared = 0;  // device: library group handles checked that way
+  double seconds = 0.0;                   // wall time of the execution (setup + trace + read-back)
+  StepCosts cost;                         // what each step of this side took (results/step_cost.h)
   std::string case_file;  // path of the case's YAML file (`rayspec compare` re-parses it)
   uint64_t case_hash =
       0;  // Case::source_hash of the case run: a saved bundle judged later must match it

@@ -181,6 +181,8 @@ std::string writeResults(const Results& r, const std::string& dir_name,
   j["record_words"] = recordWords();
   j["counters"] = r.counters;
   j["validation_messages"] = r.validation_messages;
+  j["device_findings"] = r.device_findings;
+  j["library_handles_compared"] = r.library_handles_compared;
   j["images"] = json::array();
   for (const Image& im : r.images) {
     j["images"].push_back({{"name", im.name},
@@ -244,6 +246,9 @@ void readHeader(const json& j, FieldReader& field, Results& r) {
     r.case_hash = std::stoull(field(j, "case_hash").get<std::string>(), nullptr, 16);
   r.counters = field(j, "counters").get<std::map<std::string, uint64_t>>();
   r.validation_messages = field(j, "validation_messages").get<std::vector<std::string>>();
+  if (j.contains("device_findings"))  // bundles saved before it was kept have none
+    r.device_findings = field(j, "device_findings").get<std::vector<std::string>>();
+  r.library_handles_compared = j.value("library_handles_compared", 0u);
 }
 
 // The images and their NAME.raw texels; the message of the first that does

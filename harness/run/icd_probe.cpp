@@ -14,7 +14,7 @@ NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(
     max_shader_group_stride, max_ray_dispatch_invocation_count, max_image_dimension_2d,
     max_storage_buffer_range, max_launch_size, acceleration_structure_host_commands,
     pipeline_library, opacity_micromap, ray_tracing_maintenance1, trace_rays_indirect,
-    trace_rays_indirect2, position_fetch, vertex_formats)
+    trace_rays_indirect2, position_fetch, library_group_handles, vertex_formats)
 
 namespace {
 

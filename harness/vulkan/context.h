@@ -33,6 +33,9 @@ struct VulkanContext {
   // rayTracingPositionFetch enabled: the device has it and no validation
   // layer older than the extension is on (vulkan/position_fetch.h).
   bool position_fetch = false;
+  // pipelineLibraryGroupHandles enabled, on the same terms
+  // (vulkan/library_group_handles.h): library handles are compared.
+  bool library_group_handles = false;
 
   VkDevice device = VK_NULL_HANDLE;
   uint32_t queue_family = 0;

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "vulkan/context.h"
+#include "vulkan/library_group_handles.h"
 #include "vulkan/position_fetch.h"
 #include "vulkan/vk_check.h"
 
@@ -23,6 +24,18 @@ void enablePositionFetch(VulkanContext& ctx, VkPhysicalDeviceFeatures2& on,
   on.pNext = &feature;
 }
 
+// Library group handles, on the same terms as position fetch (1.3.240).
+void enableLibraryGroupHandles(VulkanContext& ctx, VkPhysicalDeviceFeatures2& on,
+                               LibraryGroupHandlesFeatures& feature) {
+  ctx.library_group_handles =
+      ctx.info.library_group_handles &&
+      (!ctx.validation || ctx.validation_layer_version >= kLibraryGroupHandlesHeaderVersion);
+  if (!ctx.library_group_handles) return;
+  feature.pipeline_library_group_handles = VK_TRUE;
+  feature.p_next = on.pNext;
+  on.pNext = &feature;
+}
+
 // The device extensions enabled: ray tracing, and the optional ones the
 // device has (describeDevice found them).
 std::vector<const char*> deviceExtensions(const VulkanContext& ctx) {
@@ -33,6 +46,7 @@ std::vector<const char*> deviceExtensions(const VulkanContext& ctx) {
   if (ctx.info.ray_tracing_maintenance1)
     extensions.push_back(VK_KHR_RAY_TRACING_MAINTENANCE_1_EXTENSION_NAME);
   if (ctx.position_fetch) extensions.push_back(kPositionFetchExtension);
+  if (ctx.library_group_handles) extensions.push_back(kLibraryGroupHandlesExtension);
   // Its dependency synchronization2 is core from Vulkan 1.3.
   if (ctx.info.opacity_micromap && ctx.info.api_version_number >= VK_API_VERSION_1_3)
     extensions.push_back(VK_EXT_OPACITY_MICROMAP_EXTENSION_NAME);
@@ -96,6 +110,8 @@ void createDevice(VulkanContext& ctx) {
   if (ctx.info.ray_tracing_maintenance1) as_on.pNext = &maintenance1_on;
   PositionFetchFeatures position_fetch_on;
   enablePositionFetch(ctx, on, position_fetch_on);
+  LibraryGroupHandlesFeatures group_handles_on;
+  enableLibraryGroupHandles(ctx, on, group_handles_on);
   ctx.primitive_culling = rt.rayTraversalPrimitiveCulling == VK_TRUE;
 
   const std::vector<const char*> extensions = deviceExtensions(ctx);

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "vulkan/context.h"
+#include "vulkan/library_group_handles.h"
 #include "vulkan/position_fetch.h"
 #include "vulkan/vk_check.h"
 
@@ -56,6 +57,8 @@ void readExtensions(VkPhysicalDevice physical, DeviceInfo& d) {
   d.ray_tracing_maintenance1 =
       hasDeviceExtension(exts, VK_KHR_RAY_TRACING_MAINTENANCE_1_EXTENSION_NAME);
   d.position_fetch = hasDeviceExtension(exts, kPositionFetchExtension);
+  d.library_group_handles =
+      d.pipeline_library && hasDeviceExtension(exts, kLibraryGroupHandlesExtension);
 }
 
 // Vertex formats a device may build triangles from: rayspec's own (named as
@@ -138,6 +141,7 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
   VkPhysicalDeviceRayTracingMaintenance1FeaturesKHR maintenance1{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_MAINTENANCE_1_FEATURES_KHR};
   PositionFetchFeatures position_fetch;
+  LibraryGroupHandlesFeatures group_handles;
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   void** next = &features.pNext;
   if (d.ray_tracing_extension) chain(next, rt_features);
@@ -146,6 +150,10 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
   if (d.position_fetch) {
     *next = &position_fetch;
     next = &position_fetch.p_next;
+  }
+  if (d.library_group_handles) {
+    *next = &group_handles;
+    next = &group_handles.p_next;
   }
   vkGetPhysicalDeviceFeatures2(physical, &features);
   const bool vk12 = d.api_version_number >= VK_API_VERSION_1_2;
@@ -160,6 +168,7 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
   d.ray_tracing_maintenance1 = d.ray_tracing_maintenance1 && maintenance1.rayTracingMaintenance1;
   d.position_fetch =
       d.position_fetch && d.acceleration_structure && position_fetch.ray_tracing_position_fetch;
+  d.library_group_handles = d.library_group_handles && group_handles.pipeline_library_group_handles;
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "vulkan/case_buffers.h"
 #include "vulkan/commands.h"
 #include "vulkan/descriptors.h"
+#include "vulkan/library_group_handles.h"
 #include "vulkan/pipeline.h"
 #include "vulkan/sbt_buffer.h"
 #include "vulkan/stack_size.h"
@@ -64,6 +65,8 @@ void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results&
   StepTimer pipeline_time(r.cost, CostStep::PipelineCreation);
   const RayTracingPipeline pipeline =
       createRayTracingPipeline(ctx, compiled, c.pipeline, pipeline_layout, cleanup);
+  if (ctx.library_group_handles)
+    r.device_findings = libraryHandleMismatches(ctx, pipeline, &r.library_handles_compared);
   std::optional<VkDeviceSize> stack_size;
   if (c.pipeline.callable_depth)
     stack_size = pipelineStackSize(queryShaderStackSizes(ctx, compiled, c.pipeline, pipeline),

@@ -72,6 +72,9 @@ struct DeviceInfo {
   // VK_KHR_ray_tracing_position_fetch with its rayTracingPositionFetch
   // feature (gl_HitTriangleVertexPositionsEXT, the vertex_position<i> built-ins).
   bool position_fetch = false;
+  // VK_EXT_pipeline_library_group_handles with its pipelineLibraryGroupHandles
+  // feature (library group handles identical to the linked pipeline's).
+  bool library_group_handles = false;
   // The vertex formats the device builds triangles from
   // (ACCELERATION_STRUCTURE_VERTEX_BUFFER): rayspec's names (float3, half2,
   // ...) for the formats a case may name, the VkFormat's name otherwise.
