@@ -21,6 +21,13 @@ inline std::string allErrors(const ParseResult& r) {
   return s;
 }
 
+// The case a text holds; a parse error fails the test (and gives an empty case).
+inline Case parsedCase(const std::string& text) {
+  const ParseResult r = parse(text);
+  EXPECT_TRUE(r.value.has_value()) << allErrors(r);
+  return r.value ? *r.value : Case{};
+}
+
 // Expects an error on `line` whose field contains `field` and message contains `text`.
 inline void expectError(const ParseResult& r, int line, const std::string& field,
                         const std::string& text = "") {

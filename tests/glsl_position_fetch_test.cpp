@@ -5,7 +5,7 @@
 // layer where SPIRV-Tools predates the capability).
 #include <gtest/gtest.h>
 
-#include "case/parse_case.h"
+#include "case_support.h"
 #include "glsl/generate_glsl.h"
 #include "plan/plan.h"
 #include "spirv/compile_glsl.h"
@@ -14,7 +14,7 @@ namespace rayspec {
 namespace {
 
 Case positionCase() {
-  const ParseResult p = parseCaseText(
+  return parsedCase(
       "rules: [R-POSITION-FETCH]\n"
       "scene:\n"
       "  blas:\n"
@@ -26,10 +26,7 @@ Case positionCase() {
       "  hit_groups:\n"
       "    - closest_hit: [record: {hit_position: vertex_position2}]\n"
       "outputs:\n"
-      "  per_ray: [hit_position]\n",
-      "t.yaml", "t/t");
-  EXPECT_TRUE(p.value) << (p.errors.empty() ? "" : p.errors[0].format());
-  return p.value ? *p.value : Case{};
+      "  per_ray: [hit_position]\n");
 }
 
 TEST(PositionFetch, TheGlslDeclaresTheBuiltInAndCompiles) {

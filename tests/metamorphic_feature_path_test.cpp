@@ -4,32 +4,29 @@
 #include <gtest/gtest.h>
 
 #include "case/flag_names.h"
-#include "case/parse_case.h"
+#include "case_support.h"
 #include "metamorphic/feature_path.h"
 
 namespace rayspec {
 namespace {
 
 Case simpleCase(const std::string& extra_scene = "", const std::string& extra_rays = "") {
-  const ParseResult p = parseCaseText(
+  return parsedCase(
       "rules: [R-MASK]\n"
       "scene:\n"
       "  blas:\n"
       "    tri: [{triangles: {vertices: [[-1, -1, 0], [1, -1, 0], [-1, 1, 0]]}}]\n"
       "  instances: [{blas: tri}]\n" +
-          extra_scene +
-          "rays:\n"
-          "  list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]\n" +
-          extra_rays +
-          "pipeline:\n"
-          "  miss: [[record: {hit: 0}]]\n"
-          "  hit_groups: [{closest_hit: [record: [hit]]}]\n"
-          "  callables: [[call_data: {value: 1}]]\n"
-          "outputs:\n"
-          "  per_ray: [hit]\n",
-      "t.yaml", "t/t");
-  EXPECT_TRUE(p.value) << (p.errors.empty() ? "" : p.errors[0].format());
-  return p.value ? *p.value : Case{};
+      extra_scene +
+      "rays:\n"
+      "  list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]\n" +
+      extra_rays +
+      "pipeline:\n"
+      "  miss: [[record: {hit: 0}]]\n"
+      "  hit_groups: [{closest_hit: [record: [hit]]}]\n"
+      "  callables: [[call_data: {value: 1}]]\n"
+      "outputs:\n"
+      "  per_ray: [hit]\n");
 }
 
 TEST(FeaturePath, NamesRoundTrip) {

@@ -4,7 +4,7 @@
 // validation layer older than the extension the feature stays off.
 #include <gtest/gtest.h>
 
-#include "case/parse_case.h"
+#include "case_support.h"
 #include "plan/plan.h"
 #include "vulkan/vulkan_engine.h"
 
@@ -12,7 +12,7 @@ namespace rayspec {
 namespace {
 
 Case libraryCase() {
-  const ParseResult p = parseCaseText(
+  return parsedCase(
       "rules: [R-LIBRARY]\n"
       "scene:\n"
       "  blas:\n"
@@ -26,10 +26,7 @@ Case libraryCase() {
       "  hit_groups: [{closest_hit: [record: [hit]]}]\n"
       "  libraries: [{miss: [0], libraries: [{hit_groups: [0]}]}]\n"
       "outputs:\n"
-      "  per_ray: [hit]\n",
-      "t.yaml", "t/t");
-  EXPECT_TRUE(p.value) << (p.errors.empty() ? "" : p.errors[0].format());
-  return p.value ? *p.value : Case{};
+      "  per_ray: [hit]\n");
 }
 
 bool deviceHasGroupHandles() {

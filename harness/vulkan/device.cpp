@@ -11,29 +11,36 @@ namespace rayspec {
 
 namespace {
 
-// Position fetch, unless a validation layer that predates it is on: that
-// layer would report its feature structure and its SPIR-V as errors.
-void enablePositionFetch(VulkanContext& ctx, VkPhysicalDeviceFeatures2& on,
-                         PositionFetchFeatures& feature) {
-  ctx.position_fetch =
-      ctx.info.position_fetch &&
-      (!ctx.validation || ctx.validation_layer_version >= kPositionFetchHeaderVersion);
-  if (!ctx.position_fetch) return;
-  feature.ray_tracing_position_fetch = VK_TRUE;
+// Whether a feature newer than some validation layers may be enabled: no
+// layer is on, or the one on knows it (its header version `since` or later).
+// An older layer reports the feature structure and the SPIR-V that uses it as
+// errors (Debian 12's is 1.3.239).
+bool layerKnows(const VulkanContext& ctx, uint32_t since) {
+  return !ctx.validation || ctx.validation_layer_version >= since;
+}
+
+template <typename Feature>
+void chainFeature(VkPhysicalDeviceFeatures2& on, Feature& feature) {
   feature.p_next = on.pNext;
   on.pNext = &feature;
 }
 
-// Library group handles, on the same terms as position fetch (1.3.240).
-void enableLibraryGroupHandles(VulkanContext& ctx, VkPhysicalDeviceFeatures2& on,
-                               LibraryGroupHandlesFeatures& feature) {
+// Position fetch (1.3.249) and library group handles (1.3.240), where the
+// device has them and the layer knows them.
+void enableNewerFeatures(VulkanContext& ctx, VkPhysicalDeviceFeatures2& on,
+                         PositionFetchFeatures& position_fetch,
+                         LibraryGroupHandlesFeatures& group_handles) {
+  ctx.position_fetch = ctx.info.position_fetch && layerKnows(ctx, kPositionFetchHeaderVersion);
+  if (ctx.position_fetch) {
+    position_fetch.ray_tracing_position_fetch = VK_TRUE;
+    chainFeature(on, position_fetch);
+  }
   ctx.library_group_handles =
-      ctx.info.library_group_handles &&
-      (!ctx.validation || ctx.validation_layer_version >= kLibraryGroupHandlesHeaderVersion);
-  if (!ctx.library_group_handles) return;
-  feature.pipeline_library_group_handles = VK_TRUE;
-  feature.p_next = on.pNext;
-  on.pNext = &feature;
+      ctx.info.library_group_handles && layerKnows(ctx, kLibraryGroupHandlesHeaderVersion);
+  if (ctx.library_group_handles) {
+    group_handles.pipeline_library_group_handles = VK_TRUE;
+    chainFeature(on, group_handles);
+  }
 }
 
 // The device extensions enabled: ray tracing, and the optional ones the
@@ -109,9 +116,8 @@ void createDevice(VulkanContext& ctx) {
   // gl_CullMaskEXT (the cull_mask built-in): describeDevice found the feature.
   if (ctx.info.ray_tracing_maintenance1) as_on.pNext = &maintenance1_on;
   PositionFetchFeatures position_fetch_on;
-  enablePositionFetch(ctx, on, position_fetch_on);
   LibraryGroupHandlesFeatures group_handles_on;
-  enableLibraryGroupHandles(ctx, on, group_handles_on);
+  enableNewerFeatures(ctx, on, position_fetch_on, group_handles_on);
   ctx.primitive_culling = rt.rayTraversalPrimitiveCulling == VK_TRUE;
 
   const std::vector<const char*> extensions = deviceExtensions(ctx);
