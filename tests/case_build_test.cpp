@@ -5,31 +5,13 @@
 
 #include "case/flag_names.h"
 #include "case/parse_case.h"
+#include "case_support.h"
 
 namespace rayspec {
 namespace {
 
 ParseResult parseBuild(const std::string& build) {
-  return parseCaseText(
-      "rules: [R-AS-COPY]\n"
-      "scene:\n"
-      "  build: " +
-          build +
-          "\n"
-          "  blas:\n"
-          "    t: [{triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}}]\n"
-          "  instances: [{blas: t}]\n"
-          "rays:\n"
-          "  list: [{origin: [0.2, 0.2, 1], direction: [0, 0, -1]}]\n"
-          "pipeline:\n"
-          "  hit_groups: [{closest_hit: [record: [hit]]}]\n"
-          "outputs:\n"
-          "  per_ray: [hit]\n",
-      "t.yaml", "t/t");
-}
-
-std::string firstError(const ParseResult& r) {
-  return r.errors.empty() ? std::string("(no error)") : r.errors[0].format();
+  return parseCaseText(oneTriangleText("R-AS-COPY", build, ""), "t.yaml", "t/t");
 }
 
 TEST(SceneBuild, DefaultsToPreferFastTraceWithoutCopy) {

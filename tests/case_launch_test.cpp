@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "case/parse_case.h"
+#include "case_support.h"
 
 namespace rayspec {
 namespace {
@@ -24,10 +25,6 @@ ParseResult parseWith(const std::string& launch, const std::string& outputs = ""
           "  per_ray: [value]\n" +
           outputs,
       "t.yaml", "t/t");
-}
-
-std::string firstError(const ParseResult& r) {
-  return r.errors.empty() ? std::string("(no error)") : r.errors[0].format();
 }
 
 TEST(Launch, ThreeDimensionsShapeTheRecordsAsLayers) {

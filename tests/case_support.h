@@ -21,6 +21,31 @@ inline std::string allErrors(const ParseResult& r) {
   return s;
 }
 
+// The first error, formatted, or "(no error)".
+inline std::string firstError(const ParseResult& r) {
+  return r.errors.empty() ? std::string("(no error)") : r.errors[0].format();
+}
+
+// A case of one triangle and one ray that hits it, for the tests of one
+// scene field: `build` is scene.build's value ("" for none) and
+// `triangle_extra` more fields of the triangles' map ("" for none).
+inline std::string oneTriangleText(const std::string& rule, const std::string& build,
+                                   const std::string& triangle_extra) {
+  return "rules: [" + rule + "]\n" + "scene:\n" +
+         (build.empty() ? std::string() : "  build: " + build + "\n") +
+         "  blas:\n"
+         "    t: [{triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]" +
+         (triangle_extra.empty() ? std::string() : ", " + triangle_extra) +
+         "}}]\n"
+         "  instances: [{blas: t}]\n"
+         "rays:\n"
+         "  list: [{origin: [0.2, 0.2, 1], direction: [0, 0, -1]}]\n"
+         "pipeline:\n"
+         "  hit_groups: [{closest_hit: [record: [hit]]}]\n"
+         "outputs:\n"
+         "  per_ray: [hit]\n";
+}
+
 // The case a text holds; a parse error fails the test (and gives an empty case).
 inline Case parsedCase(const std::string& text) {
   const ParseResult r = parse(text);

@@ -8,6 +8,7 @@
 
 #include "case/parse_case.h"
 #include "case/vertex_format.h"
+#include "case_support.h"
 
 namespace rayspec {
 namespace {
@@ -69,21 +70,7 @@ TEST(VertexFormat, EncodedBytesHoldTheStoredValues) {
 }
 
 ParseResult parseTriangles(const std::string& extra) {
-  return parseCaseText(
-      "rules: [R-VERTEX-FORMAT]\n"
-      "scene:\n"
-      "  blas:\n"
-      "    t: [{triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]], " +
-          extra +
-          "}}]\n"
-          "  instances: [{blas: t}]\n"
-          "rays:\n"
-          "  list: [{origin: [0.2, 0.2, 1], direction: [0, 0, -1]}]\n"
-          "pipeline:\n"
-          "  hit_groups: [{closest_hit: [record: [hit]]}]\n"
-          "outputs:\n"
-          "  per_ray: [hit]\n",
-      "t.yaml", "t/t");
+  return parseCaseText(oneTriangleText("R-VERTEX-FORMAT", "", extra), "t.yaml", "t/t");
 }
 
 TEST(VertexFormat, ParseErrorsNameTheLineAndField) {
