@@ -46,6 +46,9 @@ std::optional<std::vector<uint32_t>> parseRecordData(YamlReader& r, const YAML::
 
 // A stage program (a list of statements); false when something failed.
 bool parseProgram(YamlReader& r, const YAML::Node& n, const std::string& field, Program& out);
+// pipeline.functions, and the body of every `invoke` copied into its call site
+// (parse_functions.cpp); an invoke of no such function is an error at its line.
+void expandFunctions(YamlReader& r, const YAML::Node& functions, Pipeline& p);
 bool parseExpr(YamlReader& r, const YAML::Node& n, const std::string& field, Expr& out);
 
 // Checks every program of the pipeline for its stage (program/ops.h checkProgram).

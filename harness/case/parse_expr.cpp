@@ -1,6 +1,7 @@
 // Expressions of stage programs (see program/program.h for the syntax).
 #include "case/case_parts.h"
 #include "program/builtins.h"
+#include "program/locals.h"
 #include "program/ops.h"
 
 namespace rayspec {
@@ -40,6 +41,15 @@ bool parseScalarExpr(YamlReader& r, const YAML::Node& n, const std::string& fiel
     return false;
   }
   if (numberLiteral(n, out)) return true;
+  if (s.rfind("var.", 0) == 0) {  // a local variable (program/locals.h)
+    out.kind = Expr::Kind::Local;
+    out.name = s.substr(4);
+    if (isLocalName(out.name)) return true;
+    r.error(n, field,
+            "'" + s +
+                "': a local's name is a lower-case letter, then letters, digits or _ (at most 32)");
+    return false;
+  }
   if (findBuiltin(s)) {
     out.kind = Expr::Kind::Builtin;
     out.name = s;

@@ -182,10 +182,10 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
   trace.loc = r.loc(n, "pipeline.raygen");
   p.raygen.push_back(trace);  // default raygen: [trace: {}]
   if (!n.IsDefined()) return;
-  if (!r.expectMap(
-          n, "pipeline",
-          {"max_recursion", "flags", "raygen", "raygens", "raygen_group", "raygen_data", "miss",
-           "hit_groups", "callables", "sbt", "libraries", "payloads", "callable_depth"}))
+  if (!r.expectMap(n, "pipeline",
+                   {"max_recursion", "flags", "raygen", "raygens", "raygen_group", "raygen_data",
+                    "miss", "hit_groups", "callables", "sbt", "libraries", "payloads",
+                    "callable_depth", "functions"}))
     return;
   if (auto v = YamlReader::get(n, "max_recursion"); v.IsDefined())
     if (auto x = r.uint(v, "pipeline.max_recursion", 31)) {
@@ -224,6 +224,7 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
     parseHitGroups(r, v, p, p.hit_groups);
   if (auto v = YamlReader::get(n, "callables"); v.IsDefined())
     parsePrograms(r, v, "pipeline.callables", p.callables);
+  expandFunctions(r, YamlReader::get(n, "functions"), p);
 
   if (auto v = YamlReader::get(n, "libraries"); v.IsDefined()) parseLibraries(r, v, p);
   checkNoNullGroups(r, p);

@@ -2,6 +2,7 @@
 #include "case/case_parts.h"
 #include "case/flag_names.h"
 #include "program/builtins.h"
+#include "program/locals.h"
 
 namespace rayspec {
 namespace {
@@ -198,20 +199,155 @@ bool parseIf(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt&
   return ok;
 }
 
+// A map whose keys are names the case chooses.
+bool anyMap(YamlReader& r, const YAML::Node& n, const std::string& field) {
+  if (n.IsMap()) return true;
+  r.error(n, field, "expected a map");
+  return false;
+}
+
+// repeat: COUNT, with var: NAME, from: FIRST and do: [..].
+bool parseRepeat(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt& s) {
+  s.kind = Stmt::Kind::Repeat;
+  if (!r.expectMap(n, field, {"repeat", "var", "from", "do"})) return false;
+  bool ok = parseExpr(r, YamlReader::get(n, "repeat"), field + ".repeat", s.count);
+  s.from.type = ValueType::Uint;
+  s.from.literal = {0.0};
+  s.from.loc = s.loc;
+  if (auto v = YamlReader::get(n, "from"); v.IsDefined())
+    ok = parseExpr(r, v, field + ".from", s.from) && ok;
+  if (auto v = YamlReader::get(n, "var"); v.IsDefined()) {
+    auto name = r.string(v, field + ".var");
+    ok = name.has_value() && ok;
+    if (name) s.local = *name;
+  }
+  if (auto v = YamlReader::get(n, "do"); v.IsDefined())
+    ok = parseBlock(r, v, field + ".do", s.then_) && ok;
+  return ok;
+}
+
+// switch: VALUE, with cases: {LABEL: [..], ...} and default: [..].
+bool parseSwitch(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt& s) {
+  s.kind = Stmt::Kind::Switch;
+  if (!r.expectMap(n, field, {"switch", "cases", "default"})) return false;
+  bool ok = parseExpr(r, YamlReader::get(n, "switch"), field + ".switch", s.cond);
+  if (auto v = YamlReader::get(n, "cases"); v.IsDefined()) {
+    if (!anyMap(r, v, field + ".cases")) return false;
+    for (auto it = v.begin(); it != v.end(); ++it) {
+      const std::string key = it->first.IsScalar() ? it->first.Scalar() : "?";
+      const std::string fc = field + ".cases." + key;
+      Stmt c;
+      c.kind = Stmt::Kind::Case;
+      c.loc = r.loc(it->first, fc);
+      const auto label = r.uint(it->first, fc, 0xFFFFFFFFu);
+      ok = label.has_value() && parseBlock(r, it->second, fc, c.then_) && ok;
+      if (label) c.size = *label;
+      s.then_.push_back(std::move(c));
+    }
+  }
+  if (auto v = YamlReader::get(n, "default"); v.IsDefined())
+    ok = parseBlock(r, v, field + ".default", s.else_) && ok;
+  return ok;
+}
+
+// invoke: FUNCTION, with with: {PARAM: expr}; the body is filled in by
+// expandInvokes (parse_functions.cpp).
+bool parseInvoke(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt& s) {
+  s.kind = Stmt::Kind::Invoke;
+  if (!r.expectMap(n, field, {"invoke", "with"})) return false;
+  auto name = r.string(YamlReader::get(n, "invoke"), field + ".invoke");
+  if (!name) return false;
+  s.local = *name;
+  const YAML::Node with = YamlReader::get(n, "with");
+  if (!with.IsDefined()) return true;
+  if (!anyMap(r, with, field + ".with")) return false;
+  bool ok = true;
+  for (auto it = with.begin(); it != with.end(); ++it) {
+    const std::string key = it->first.IsScalar() ? it->first.Scalar() : "?";
+    Expr e;
+    ok = parseExpr(r, it->second, field + ".with." + key, e) && ok;
+    s.assigns.emplace_back(key, std::move(e));
+  }
+  return ok;
+}
+
+// array: {name: NAME, of: TYPE, size: N}
+bool parseArray(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::Array;
+  if (!r.expectMap(v, f, {"name", "of", "size"}) || !r.require(v, f, "name") ||
+      !r.require(v, f, "size"))
+    return false;
+  auto name = r.string(YamlReader::get(v, "name"), f + ".name");
+  auto size = r.uint(YamlReader::get(v, "size"), f + ".size", kMaxArrayElements);
+  if (name) s.local = *name;
+  if (size) s.size = *size;
+  bool ok = name && size;
+  if (auto t = YamlReader::get(v, "of"); t.IsDefined()) {
+    auto type_name = r.string(t, f + ".of");
+    const auto type = type_name ? valueTypeNamed(*type_name) : std::nullopt;
+    if (!type || *type == ValueType::Bool) {
+      if (type_name) r.error(t, f + ".of", "an array holds uint, float, vec2, vec3 or vec4");
+      return false;
+    }
+    s.local_type = *type;
+  }
+  return ok;
+}
+
+// store: {array: NAME, index: expr, value: expr}
+bool parseStore(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::Store;
+  if (!r.expectMap(v, f, {"array", "index", "value"}) || !r.require(v, f, "array") ||
+      !r.require(v, f, "index") || !r.require(v, f, "value"))
+    return false;
+  auto name = r.string(YamlReader::get(v, "array"), f + ".array");
+  if (name) s.local = *name;
+  bool ok = name && parseExpr(r, YamlReader::get(v, "index"), f + ".index", s.index);
+  Expr e;
+  ok = parseExpr(r, YamlReader::get(v, "value"), f + ".value", e) && ok;
+  s.assigns.emplace_back("value", std::move(e));
+  return ok;
+}
+
+// let / set: {NAME: expr, ...}
+bool parseLocals(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  if (!anyMap(r, v, f)) return false;
+  bool ok = true;
+  for (auto it = v.begin(); it != v.end(); ++it) {
+    const std::string name = it->first.IsScalar() ? it->first.Scalar() : "?";
+    if (!isLocalName(name)) {
+      r.error(it->first, f + "." + name,
+              "a local's name is a lower-case letter, then letters, digits or _ (at most 32)");
+      ok = false;
+      continue;
+    }
+    Expr e;
+    ok = parseExpr(r, it->second, f + "." + name, e) && ok;
+    s.assigns.emplace_back(name, std::move(e));
+  }
+  return ok;
+}
+
+bool scalarStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt& s) {
+  static const std::pair<const char*, Stmt::Kind> kScalars[] = {
+      {"ignore", Stmt::Kind::Ignore},
+      {"terminate", Stmt::Kind::Terminate},
+      {"break", Stmt::Kind::Break},
+      {"continue", Stmt::Kind::Continue},
+      {"return", Stmt::Kind::Return}};
+  for (const auto& [name, kind] : kScalars)
+    if (n.Scalar() == name) {
+      s.kind = kind;
+      return true;
+    }
+  r.error(n, field,
+          "unknown statement '" + n.Scalar() + "' (ignore, terminate, break, continue, return)");
+  return false;
+}
+
 bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt& s) {
   s.loc = r.loc(n, field);
-  if (n.IsScalar()) {
-    if (n.Scalar() == "ignore") {
-      s.kind = Stmt::Kind::Ignore;
-      return true;
-    }
-    if (n.Scalar() == "terminate") {
-      s.kind = Stmt::Kind::Terminate;
-      return true;
-    }
-    r.error(n, field, "unknown statement '" + n.Scalar() + "'");
-    return false;
-  }
+  if (n.IsScalar()) return scalarStmt(r, n, field, s);
   if (!n.IsMap() || n.size() == 0) {
     r.error(n, field, "expected a statement ({count: NAME}, {record: ...}, ignore, ...)");
     return false;
@@ -219,6 +355,18 @@ bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stm
   if (YamlReader::has(n, "if")) {
     s.loc = r.loc(n, field + ".if");
     return parseIf(r, n, field, s);
+  }
+  if (YamlReader::has(n, "repeat")) {
+    s.loc = r.loc(n, field + ".repeat");
+    return parseRepeat(r, n, field, s);
+  }
+  if (YamlReader::has(n, "switch")) {
+    s.loc = r.loc(n, field + ".switch");
+    return parseSwitch(r, n, field, s);
+  }
+  if (YamlReader::has(n, "invoke")) {
+    s.loc = r.loc(n, field + ".invoke");
+    return parseInvoke(r, n, field, s);
   }
   if (n.size() != 1) {
     r.error(n, field, "one statement per list item (or if/then/else)");
@@ -245,6 +393,12 @@ bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stm
     return parseAssigns(r, v, f, {"color", "value"}, s);
   }
   if (key == "report") return parseReport(r, v, f, s);
+  if (key == "let" || key == "set") {
+    s.kind = key == "let" ? Stmt::Kind::Let : Stmt::Kind::Set;
+    return parseLocals(r, v, f, s);
+  }
+  if (key == "array") return parseArray(r, v, f, s);
+  if (key == "store") return parseStore(r, v, f, s);
   if (key == "trace") return parseTrace(r, v, f, s);
   if (key == "call") return parseCall(r, v, f, s);
   if (key == "light") {
@@ -261,7 +415,8 @@ bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stm
   r.error(it->first, f,
           "unknown statement '" + key +
               "' (count, record, payload, call_data, ignore, terminate, report, trace, call, "
-              "light, if)");
+              "light, if, let, set, array, store, repeat, switch, invoke, break, continue, "
+              "return)");
   return false;
 }
 

@@ -40,6 +40,18 @@ std::map<std::string, CounterMode> counterModes(const Case& c) {
   return modes;
 }
 
+namespace {
+
+bool holdsTraceOrCall(const Stmt& s) {
+  bool holds = false;
+  walkStatements(s.then_, [&](const Stmt& x) {
+    holds = holds || x.kind == Stmt::Kind::Trace || x.kind == Stmt::Kind::Call;
+  });
+  return holds;
+}
+
+}  // namespace
+
 std::set<std::string> countersUndefinedRaysMayMove(const Case& c) {
   std::set<std::string> moved;
   auto every = [&](const Program& p) {
@@ -56,6 +68,9 @@ std::set<std::string> countersUndefinedRaysMayMove(const Case& c) {
   bool after_undefined =
       false;  // in program order: a statement where a ray's behaviour may be undefined came first
   walkStatements(pipe.raygen, [&](const Stmt& s) {
+    // A repeat runs its body again after its traces and calls; a function's
+    // body is walked where it is invoked.
+    if (s.kind == Stmt::Kind::Repeat && holdsTraceOrCall(s)) after_undefined = true;
     if (s.kind == Stmt::Kind::Count && after_undefined) moved.insert(s.counter);
     if (s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::Call) after_undefined = true;
     walkOwnExpressions(s, [&](const Expr& e) {

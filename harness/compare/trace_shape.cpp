@@ -51,7 +51,7 @@ void topLevelCounts(const Program& p, std::map<std::string, uint32_t>& counts,
   std::set<std::string> top;
   bool ended = false;
   for (const Stmt& s : p) {
-    if (s.kind == Stmt::Kind::Ignore || s.kind == Stmt::Kind::Terminate) ended = true;
+    if (mayEndProgram(s)) ended = true;
     if (s.kind == Stmt::Kind::Count && !ended) ++counts[s.counter];
   }
   std::map<std::string, uint32_t> every;
@@ -154,7 +154,7 @@ bool countedByProgramsAlone(const Case& c, const std::string& counter) {
     size_t top = 0, all = 0;
     bool ended = false;
     for (const Stmt& s : p) {
-      if (s.kind == Stmt::Kind::Ignore || s.kind == Stmt::Kind::Terminate) ended = true;
+      if (mayEndProgram(s)) ended = true;
       if (s.kind == Stmt::Kind::Count && s.counter == counter && !ended) ++top;
     }
     size_t calls_top = 0, calls = 0;

@@ -234,6 +234,15 @@ std::vector<FaultImpl> pipelineMutations() {
        "gl_HitTriangleVertexPositionsEXT gives the vertices through the instance transform "
        "(world space), not in object space",
        nullptr, positionFetchWorldSpace},
+      {"locals-lost-across-calls", K::CaseMutation,
+       "a shader's local variables read zero after its traceRayEXT, executeCallableEXT or "
+       "reportIntersectionEXT (live values spilled and restored wrongly)",
+       nullptr, localsLostAcrossCalls},
+      {"loop-trip-off-by-one", K::CaseMutation, "every repeat runs one trip more than its count",
+       nullptr, loopTripOffByOne},
+      {"function-ignore-lost", K::CaseMutation,
+       "ignoreIntersectionEXT and terminateRayEXT inside a function only return from it", nullptr,
+       functionIgnoreLost},
       {"empty-geometry-renumbered", K::CaseMutation,
        "geometries without primitives and instances of empty BLASes do not count for the "
        "geometry index, instance id and SBT index of the others",

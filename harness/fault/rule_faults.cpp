@@ -28,8 +28,10 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-AHIT-UNUSED", {"unused-any-hit-ignores"}, {}},
       {"R-AHIT-DUP", {"duplicate-any-hit"}, {"any-hit-runs-twice"}},
       {"R-AHIT-CLOSEST", {"closest-any-hit-skipped"}, {}},
-      {"R-IGNORE", {"ignore-accepts", "code-after-ignore-runs"}, {}},
-      {"R-TERMINATE", {"terminate-continues", "code-after-terminate-runs"}, {}},
+      {"R-IGNORE", {"ignore-accepts", "code-after-ignore-runs", "function-ignore-lost"}, {}},
+      {"R-TERMINATE",
+       {"terminate-continues", "code-after-terminate-runs", "function-ignore-lost"},
+       {}},
       {"R-ISECT-REPORT", {"report-return-inverted", "report-kind-dropped"}, {}},
       {"R-TMAX-VIEW", {"tmax-view-initial"}, {}},
       {"R-TOFH", {"first-hit-flag-ignored"}, {"reverse-order"}},
@@ -70,6 +72,8 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-VERTEX-FORMAT", {"vertex-format-ignored"}, {}},
       {"R-POSITION-FETCH", {"position-fetch-world-space"}, {}},
       {"R-LAUNCH-3D", {"launch-depth-lost", "zero-launch-runs"}, {}},
+      {"R-LIVE-STATE", {"locals-lost-across-calls"}, {}},
+      {"R-CONTROL-FLOW", {"loop-trip-off-by-one", "function-ignore-lost"}, {}},
       {"R-UB", {}, {}, fail, "never checked for a result (robustness probe only)"},
   };
   return table;

@@ -118,6 +118,7 @@ std::string op(const Expr& e, const StageContext& ctx) {
   if ((n == "float" || n == "uint" || n == "length" || n == "normalize") && need(1))
     return n + "(" + a[0] + ")";
   if (n == "round" && need(1)) return "roundEven(" + a[0] + ")";
+  if (n == "load" && need(2)) return a[0] + "[" + arrayIndex(a[0], a[1]) + "]";
   if (n == "vec2" || n == "vec3" || n == "vec4") return n + join(", ");
   if ((n == "x" || n == "y" || n == "z" || n == "w") && need(1)) return a[0] + "." + n;
   if (n == "sphere_hit") return "rs_sphere_current().hit";
@@ -139,8 +140,18 @@ std::string emitExpr(const Expr& e, const StageContext& ctx) {
       return builtin(e.name, ctx.stage);
     case Expr::Kind::Op:
       return op(e, ctx);
+    case Expr::Kind::Local:
+      return localName(e.name);
   }
   return problem("expression kind");
+}
+
+std::string localName(const std::string& name) {
+  return "v_" + name;
+}
+
+std::string arrayIndex(const std::string& array, const std::string& index) {
+  return "(" + index + ") % uint(" + array + ".length())";
 }
 
 const char* glslType(ValueType t) {

@@ -16,4 +16,9 @@ std::string emitExpr(const Expr& e, const StageContext& ctx);
 // GLSL type name of a value type ("uint", "vec3", ...).
 const char* glslType(ValueType t);
 
+// A local variable's GLSL name (var.NAME -> v_NAME).
+std::string localName(const std::string& name);
+// An array local's index expression: index modulo its size, as the model does.
+std::string arrayIndex(const std::string& array, const std::string& index);
+
 }  // namespace rayspec

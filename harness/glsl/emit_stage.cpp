@@ -4,6 +4,7 @@
 
 #include "glsl/bindings.h"
 #include "glsl/embedded_shaders.h"
+#include "glsl/emit_control.h"
 #include "glsl/emit_payloads.h"
 #include "glsl/emit_stmt.h"
 #include "glsl/glsl_writer.h"
@@ -175,6 +176,9 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
   if (u.light) include("lights.glsl", out);
   if (u.position_fetch) include("position_fetch.glsl", out);
   interfaceVariables(ctx, out);
+  // Raygen's launch ray is global: a function's trace may take its fields.
+  if (stage == Stage::Raygen && u.launch_ray) out.line("RsRay rs_ray;");
+  emitFunctions(program, ctx, out);
 
   out.line("");
   out.open("void main() {");
@@ -185,7 +189,7 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
              std::to_string(kAnyHitSlotInstanceFactor) + "u + gl_GeometryIndexEXT * " +
              std::to_string(kAnyHitSlotGeometryFactor) + "u + uint(gl_PrimitiveID)) & 31u);");
   if (stage == Stage::Raygen) {
-    if (u.launch_ray) out.line("RsRay rs_ray = rs_load_ray(rs_launch_index());");
+    if (u.launch_ray) out.line("rs_ray = rs_load_ray(rs_launch_index());");
   }
   emitPayloadStart(ctx, out);
   if (u.call) out.line("callee = RsCallData(vec4(0.0), vec3(0.0), 0u, vec3(0.0), 0u);");

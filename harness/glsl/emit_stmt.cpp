@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "glsl/emit_control.h"
 #include "glsl/emit_expr.h"
 #include "glsl/emit_trace.h"
 #include "program/payload_words.h"
@@ -149,6 +150,9 @@ void emitProgram(const Program& program, const StageContext& ctx, GlslWriter& ou
         break;
       case Stmt::Kind::If:
         ifStmt(s, ctx, out);
+        break;
+      default:
+        emitControl(s, ctx, out);
         break;
     }
   }

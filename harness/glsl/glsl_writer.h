@@ -26,10 +26,13 @@ class GlslWriter {
     ++depth_;
   }  // "} else {"
   const std::string& text() const { return out_; }
+  // A number no other call returns: unique names of helper variables.
+  int nextId() { return next_id_++; }
 
  private:
   std::string out_;
   int depth_ = 0;
+  int next_id_ = 0;
 };
 
 }  // namespace rayspec

@@ -73,10 +73,23 @@ void visitProgram(const Program& p, Stage stage, const Plan& plan, StageUses& u)
         break;
       }
       case Stmt::Kind::If:
+      case Stmt::Kind::Switch:
         visitExpr(s.cond, u);
         break;
-      case Stmt::Kind::Ignore:
-      case Stmt::Kind::Terminate:
+      case Stmt::Kind::Repeat:
+        visitExpr(s.count, u);
+        visitExpr(s.from, u);
+        break;
+      case Stmt::Kind::Store:
+        visitExpr(s.index, u);
+        for (const auto& a : s.assigns) visitExpr(a.second, u);
+        break;
+      case Stmt::Kind::Let:
+      case Stmt::Kind::Set:
+      case Stmt::Kind::Invoke:
+        for (const auto& a : s.assigns) visitExpr(a.second, u);
+        break;
+      default:  // ignore, terminate, array, break, continue, return, case
         break;
     }
     visitProgram(s.then_, stage, plan, u);

@@ -30,6 +30,9 @@ struct ModelFaults {
   // R-POSITION-FETCH broken: vertex_position<i> reads the vertex in world
   // space (through the instance transform) instead of object space.
   bool position_fetch_world_space = false;
+  // Live state broken: a shader's local variables read zero after a trace,
+  // a callable call or a report (a driver that spills and restores them wrongly).
+  bool locals_lost_across_calls = false;
 };
 
 }  // namespace rayspec

@@ -231,6 +231,8 @@ Val Machine::eval(const CExpr& e, StageEnv& env) {
       return builtin(e, env);
     case Expr::Kind::Op:
       return op(e, env);
+    case Expr::Kind::Local:
+      return e.index < env.locals.size() ? env.locals[e.index] : Val{};
   }
   return Val{};
 }
@@ -319,6 +321,13 @@ bool Machine::opOnDemand(const CExpr& e, StageEnv& env, Val& r) {
           break;
         }
       }
+      return true;
+    }
+    case OpCode::Load: {  // an element of an array local, index modulo its size
+      const CExpr& array = e.args[0];
+      const uint32_t n = std::max<uint32_t>(array.size, 1);
+      const size_t slot = array.index + eval(e.args[1], env).u % n;
+      r = slot < env.locals.size() ? env.locals[slot] : Val{};
       return true;
     }
     case OpCode::Unknown:
@@ -479,14 +488,27 @@ Flow Machine::execStmt(const CStmt& s, StageEnv& env) {
     }
     case Stmt::Kind::Call:
       execCall(s, env);
+      loseLocals(env);
       return Flow::Continue;
     case Stmt::Kind::Trace:
       execTrace(s, env);
+      loseLocals(env);
       return Flow::Continue;
-    case Stmt::Kind::Report:
-      return report(s, env);
+    case Stmt::Kind::Report: {
+      const Flow f = report(s, env);
+      loseLocals(env);
+      return f;
+    }
+    default:
+      return execControl(s, env);
   }
   return Flow::Continue;
+}
+
+// The planted fault locals_lost_across_calls: a device that does not keep a
+// shader's live values across a trace, call or report reads them as zero.
+void Machine::loseLocals(StageEnv& env) const {
+  if (sh_.faults.locals_lost_across_calls) std::fill(env.locals.begin(), env.locals.end(), Val{});
 }
 
 namespace {

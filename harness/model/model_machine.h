@@ -101,9 +101,12 @@ struct StageEnv {
   float tmax_view = 0;
   uint32_t depth = 0;
   Traversal* traversal = nullptr;  // intersection (report) and any-hit
+  std::vector<Val> locals;         // the frame's local variables (program/locals.h slots)
 };
 
-enum class Flow { Continue, Ignore, Terminate };
+// How a statement ends: go on, ignore / terminate (any-hit), or leave a
+// repeat (Break), an iteration (Next) or a function (Return).
+enum class Flow { Continue, Ignore, Terminate, Break, Next, Return };
 
 enum RunsField {
   kRunsRaygen,
@@ -165,7 +168,12 @@ class alignas(64) Machine {
   Val arithmetic(const CExpr& e, const Val* a);
   Flow exec(const CProgram& p, StageEnv& env);
   Flow execStmt(const CStmt& s, StageEnv& env);
-  void execSet(const CStmt& s, StageEnv& env);    // set payload / set call data
+  void execSet(const CStmt& s, StageEnv& env);      // set payload / set call data
+  Flow execControl(const CStmt& s, StageEnv& env);  // let .. return (model_control_flow.cpp)
+  Flow execRepeat(const CStmt& s, StageEnv& env);
+  Flow execSwitch(const CStmt& s, StageEnv& env);
+  Flow execInvoke(const CStmt& s, StageEnv& env);
+  void loseLocals(StageEnv& env) const;
   void execCall(const CStmt& s, StageEnv& env);   // executeCallableEXT
   void execTrace(const CStmt& s, StageEnv& env);  // traceRayEXT
   Payload startPayload(const CStmt& s, StageEnv& env);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "program/locals.h"
 #include "program/payload_words.h"
 #include "results/record_layout.h"
 
@@ -96,11 +97,13 @@ const OpName kOps[] = {{"sphere_hit", OpCode::SphereHit},
                        {"max", OpCode::Max},
                        {"light_point", OpCode::LightPoint},
                        {"light_spot", OpCode::LightSpot},
-                       {"light_directional", OpCode::LightDirectional}};
+                       {"light_directional", OpCode::LightDirectional},
+                       {"load", OpCode::Load}};
 
 struct Compiler {
   const Plan& plan;
   CPipeline& out;
+  LocalScope scope;  // the locals visible where the compiler is (their slots)
 
   CExpr expr(const Expr& e) {
     CExpr r;
@@ -108,6 +111,12 @@ struct Compiler {
     r.type = e.type;
     r.src = &e;
     switch (e.kind) {
+      case Expr::Kind::Local:
+        if (const LocalInfo* info = scope.find(e.name)) {
+          r.index = info->slot;
+          r.size = info->elements;
+        }
+        break;
       case Expr::Kind::Literal:
         if (e.type == ValueType::Uint)
           r.literal.u = static_cast<uint32_t>(e.literal.empty() ? 0 : e.literal[0]);
@@ -159,14 +168,69 @@ struct Compiler {
   CProgram program(const Program& p) {
     CProgram r;
     r.reserve(p.size());
+    scope.openBlock();
     for (const Stmt& s : p) r.push_back(stmt(s));
+    scope.closeBlock();
     return r;
   }
+
+  int slotOfLocal(const std::string& name) {
+    const LocalInfo* info = scope.find(name);
+    return info ? static_cast<int>(info->slot) : -1;
+  }
+
+  // let, set, array, store, repeat, switch, invoke: locals get their slots in
+  // the order the checker declared them (program/locals.h).
+  void controlFlow(const Stmt& s, CStmt& r) {
+    for (const auto& [name, e] : s.assigns) {
+      CAssign a;
+      a.value = expr(e);
+      if (s.kind == Stmt::Kind::Let) a.field = static_cast<int>(scope.declare(name, {e.type}).slot);
+      if (s.kind == Stmt::Kind::Set) a.field = slotOfLocal(name);
+      r.assigns.push_back(std::move(a));
+    }
+    if (s.kind == Stmt::Kind::Array) {
+      r.slot = static_cast<int>(scope.declare(s.local, {s.local_type, s.size}).slot);
+      r.size = s.size;
+    } else if (s.kind == Stmt::Kind::Store) {
+      const LocalInfo* info = scope.find(s.local);
+      r.slot = info ? static_cast<int>(info->slot) : -1;
+      r.size = info ? info->elements : 0;
+      r.index = expr(s.index);
+    } else if (s.kind == Stmt::Kind::Repeat) {
+      r.count = expr(s.count);
+      r.from = expr(s.from);
+      scope.openBlock();
+      if (!s.local.empty())
+        r.slot = static_cast<int>(scope.declare(s.local, {ValueType::Uint, 0, true}).slot);
+      r.then_ = program(s.then_);
+      scope.closeBlock();
+    } else if (s.kind == Stmt::Kind::Switch) {
+      r.cond = expr(s.cond);
+      r.then_ = program(s.then_);
+      r.else_ = program(s.else_);
+    } else if (s.kind == Stmt::Kind::Case) {
+      r.size = s.size;
+      r.then_ = program(s.then_);
+    } else if (s.kind == Stmt::Kind::Invoke) {
+      LocalScope::Frame caller = scope.openFrame();
+      for (const auto& [name, type] : s.params) scope.declare(name, {type});
+      r.then_ = program(s.then_);
+      r.size = scope.frameSlots();
+      scope.closeFrame(std::move(caller));
+    }
+  }
+
+  static bool isControlFlow(Stmt::Kind k) { return k >= Stmt::Kind::Let; }
 
   CStmt stmt(const Stmt& s) {
     CStmt r;
     r.kind = s.kind;
     r.src = &s;
+    if (isControlFlow(s.kind)) {
+      controlFlow(s, r);
+      return r;
+    }
     if (s.kind == Stmt::Kind::Count) {
       const auto it = std::find(plan.counters.begin(), plan.counters.end(), s.counter);
       r.counter = it == plan.counters.end() ? -1 : static_cast<int>(it - plan.counters.begin());

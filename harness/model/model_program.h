@@ -106,6 +106,7 @@ enum class OpCode : uint8_t {
   LightPoint,
   LightSpot,
   LightDirectional,
+  Load,
   Unknown
 };
 
@@ -114,7 +115,9 @@ struct CExpr {
   ValueType type = ValueType::Uint;
   uint8_t builtin = kBiUnknown;  // Builtin
   OpCode op = OpCode::Unknown;   // Op
-  uint32_t index = 0;  // RecordUint/RecordFloat: word; Vec: component count; payload/child word
+  uint32_t index = 0;  // RecordUint/RecordFloat: word; Vec: component count; payload/child
+                       // word; Local: its (first) slot in the frame
+  uint32_t size = 0;   // Local: an array's elements (0: a scalar)
   Val literal;         // Literal
   std::vector<CExpr> args;
   const Expr* src = nullptr;  // for error messages
@@ -124,7 +127,7 @@ enum class Slot : uint8_t { Color, Value, Position, Normal, Word, None };
 enum class LightKind : uint8_t { Point, Spot, Directional };
 
 struct CAssign {
-  int field = -1;          // Record: record field index (-1: unknown or automatic)
+  int field = -1;  // Record: record field index (-1: unknown or automatic); Let/Set: the slot
   Slot slot = Slot::None;  // SetPayload / SetCall / Call
   uint8_t word = 0;        // Slot::Word: which payload word
   CExpr value;
@@ -154,6 +157,11 @@ struct CStmt {
   };
   std::array<bool, kTraceArgs> has{};
   std::array<CExpr, kTraceArgs> args;
+  // Control flow: Array/Store/Repeat: the local's slot (Repeat: -1 without a
+  // variable); Array/Store: elements; Case: the label; Invoke: the frame's slots.
+  int slot = -1;
+  uint32_t size = 0;
+  CExpr count, from, index;  // Repeat, Store
   std::vector<CStmt> then_, else_;
   const Stmt* src = nullptr;  // for the case field a diagnosis names
 };

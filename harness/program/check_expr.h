@@ -4,16 +4,18 @@
 
 #include <optional>
 
+#include "program/locals.h"
 #include "program/ops.h"
 
 namespace rayspec {
 
 // Fills e.type (and its arguments'); the error names the innermost bad node.
-std::optional<ProgramError> checkExpr(Expr& e, Stage stage);
+std::optional<ProgramError> checkExpr(Expr& e, Stage stage, const LocalScope* locals = nullptr);
 
 // Checks e and requires type `want`; a Uint literal is accepted (and retyped)
 // where a Float is wanted. `what` names the slot in the message ("report t").
 std::optional<ProgramError> checkExprAs(Expr& e, Stage stage, ValueType want,
-                                        const std::string& what);
+                                        const std::string& what,
+                                        const LocalScope* locals = nullptr);
 
 }  // namespace rayspec

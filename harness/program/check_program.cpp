@@ -6,6 +6,7 @@
 
 #include "program/builtins.h"
 #include "program/check_expr.h"
+#include "program/constant_value.h"
 #include "program/ops.h"
 #include "program/payload_words.h"
 #include "results/record_layout.h"
@@ -34,6 +35,17 @@ constexpr StmtRule kStmtRules[] = {
     {Stmt::Kind::Call, "call", R | C | M | K},
     {Stmt::Kind::Light, "light", K},
     {Stmt::Kind::If, "if", kAllStages},
+    {Stmt::Kind::Let, "let", kAllStages},
+    {Stmt::Kind::Set, "set", kAllStages},
+    {Stmt::Kind::Array, "array", kAllStages},
+    {Stmt::Kind::Store, "store", kAllStages},
+    {Stmt::Kind::Repeat, "repeat", kAllStages},
+    {Stmt::Kind::Break, "break", kAllStages},
+    {Stmt::Kind::Continue, "continue", kAllStages},
+    {Stmt::Kind::Switch, "switch", kAllStages},
+    {Stmt::Kind::Case, "case", kAllStages},
+    {Stmt::Kind::Invoke, "invoke", kAllStages},
+    {Stmt::Kind::Return, "return", kAllStages},
 };
 
 const StmtRule& ruleOf(Stmt::Kind k) {
@@ -77,9 +89,12 @@ class Checker {
       : stage_(stage), counters_(counters), fields_(fields) {}
 
   std::optional<ProgramError> block(std::vector<Stmt>& stmts) {
+    scope_.openBlock();
+    std::optional<ProgramError> r;
     for (Stmt& s : stmts)
-      if (auto r = stmt(s)) return r;
-    return std::nullopt;
+      if ((r = stmt(s))) break;
+    scope_.closeBlock();
+    return r;
   }
 
  private:
@@ -128,12 +143,157 @@ class Checker {
         if (auto r = as(s.cond, ValueType::Bool, "if condition")) return r;
         if (auto r = block(s.then_)) return r;
         return block(s.else_);
+      default:
+        return controlFlow(s);
     }
     return ProgramError{"unknown statement", s.loc};
   }
 
+  // let, set, array, store, repeat, break, continue, switch, invoke, return.
+  std::optional<ProgramError> controlFlow(Stmt& s) {
+    switch (s.kind) {
+      case Stmt::Kind::Let:
+        return let(s);
+      case Stmt::Kind::Set:
+        return set(s);
+      case Stmt::Kind::Array:
+        return array(s);
+      case Stmt::Kind::Store:
+        return store(s);
+      case Stmt::Kind::Repeat:
+        return repeat(s);
+      case Stmt::Kind::Break:
+        if (breakable_.empty() || breakable_.back() != 'L')
+          return ProgramError{breakable_.empty()
+                                  ? "'break' outside a repeat"
+                                  : "'break' directly in a switch case (GLSL would leave the "
+                                    "switch, not the repeat): put it in an if",
+                              s.loc};
+        return std::nullopt;
+      case Stmt::Kind::Continue:
+        if (std::find(breakable_.begin(), breakable_.end(), 'L') == breakable_.end())
+          return ProgramError{"'continue' outside a repeat", s.loc};
+        return std::nullopt;
+      case Stmt::Kind::Switch:
+        return switchStmt(s);
+      case Stmt::Kind::Invoke:
+        return invoke(s);
+      case Stmt::Kind::Return:
+        return std::nullopt;
+      default:
+        return ProgramError{"'case' outside a switch", s.loc};
+    }
+  }
+
+  std::optional<ProgramError> declare(const Stmt& s, const std::string& name, LocalInfo info) {
+    if (!isLocalName(name))
+      return ProgramError{
+          "local name '" + name + "': a lower-case letter, then letters, digits or _ (at most 32)",
+          s.loc};
+    if (scope_.find(name))
+      return ProgramError{"local '" + name + "' is already declared here", s.loc};
+    scope_.declare(name, info);
+    return std::nullopt;
+  }
+
+  std::optional<ProgramError> let(Stmt& s) {
+    for (auto& [name, value] : s.assigns) {
+      if (auto r = checkExpr(value, stage_, &scope_)) return r;
+      if (auto r = declare(s, name, {value.type})) return r;
+    }
+    return std::nullopt;
+  }
+
+  std::optional<ProgramError> set(Stmt& s) {
+    for (auto& [name, value] : s.assigns) {
+      const LocalInfo* info = scope_.find(name);
+      if (!info || info->elements || info->read_only)
+        return ProgramError{"set " + name + ": " +
+                                (!info            ? "no local of that name is declared here"
+                                 : info->elements ? "an array (write an element with store)"
+                                                  : "a repeat's variable is read-only"),
+                            value.loc};
+      if (auto r = as(value, info->type, "set " + name)) return r;
+    }
+    return std::nullopt;
+  }
+
+  std::optional<ProgramError> array(Stmt& s) {
+    if (s.size < 1 || s.size > kMaxArrayElements || s.local_type == ValueType::Bool)
+      return ProgramError{"array " + s.local + ": 1 to " + std::to_string(kMaxArrayElements) +
+                              " elements of uint, float, vec2, vec3 or vec4",
+                          s.loc};
+    return declare(s, s.local, {s.local_type, s.size});
+  }
+
+  std::optional<ProgramError> store(Stmt& s) {
+    const LocalInfo* info = scope_.find(s.local);
+    if (!info || !info->elements)
+      return ProgramError{"store: '" + s.local + "' is not an array declared here", s.loc};
+    if (auto r = as(s.index, ValueType::Uint, "store index")) return r;
+    for (auto& [name, value] : s.assigns)
+      if (auto r = as(value, info->type, "store value")) return r;
+    return std::nullopt;
+  }
+
+  std::optional<ProgramError> repeat(Stmt& s) {
+    if (auto r = as(s.count, ValueType::Uint, "repeat count")) return r;
+    if (auto r = as(s.from, ValueType::Uint, "repeat from")) return r;
+    if (const auto n = constantUint(s.count); n && *n > kMaxLoopTrips)
+      return ProgramError{
+          "repeat count " + std::to_string(*n) + " is above " + std::to_string(kMaxLoopTrips),
+          s.count.loc};
+    scope_.openBlock();
+    std::optional<ProgramError> r;
+    if (!s.local.empty()) r = declare(s, s.local, {ValueType::Uint, 0, true});
+    breakable_.push_back('L');
+    if (!r) r = block(s.then_);
+    breakable_.pop_back();
+    scope_.closeBlock();
+    return r;
+  }
+
+  std::optional<ProgramError> switchStmt(Stmt& s) {
+    if (auto r = as(s.cond, ValueType::Uint, "switch value")) return r;
+    breakable_.push_back('S');
+    std::optional<ProgramError> r;
+    std::vector<uint32_t> labels;
+    for (Stmt& c : s.then_) {
+      if (c.kind != Stmt::Kind::Case || std::count(labels.begin(), labels.end(), c.size))
+        r = ProgramError{"switch case " + std::to_string(c.size) + " is given twice", c.loc};
+      labels.push_back(c.size);
+      if (!r) r = block(c.then_);
+      if (r) break;
+    }
+    if (!r) r = block(s.else_);
+    breakable_.pop_back();
+    return r;
+  }
+
+  // The arguments in the caller's scope, the body in a frame of its own.
+  std::optional<ProgramError> invoke(Stmt& s) {
+    if (s.assigns.size() != s.params.size())
+      return ProgramError{
+          "invoke " + s.local + ": takes " + std::to_string(s.params.size()) + " argument(s)",
+          s.loc};
+    for (size_t i = 0; i < s.params.size(); ++i)
+      if (auto r = as(s.assigns[i].second, s.params[i].second,
+                      "invoke " + s.local + " argument " + s.params[i].first))
+        return r;
+    LocalScope::Frame caller = scope_.openFrame();
+    std::vector<char> loops;
+    std::swap(loops, breakable_);
+    std::optional<ProgramError> r;
+    for (const auto& [name, type] : s.params)
+      if (!r) r = declare(s, name, {type});
+    if (!r) r = block(s.then_);
+    std::swap(loops, breakable_);
+    scope_.closeFrame(std::move(caller));
+    return r;
+  }
+
   std::optional<ProgramError> as(Expr& e, ValueType want, const std::string& what) {
-    return checkExprAs(e, stage_, want, what);
+    return checkExprAs(e, stage_, want, what, &scope_);
   }
 
   std::optional<ProgramError> record(Stmt& s) {
@@ -207,6 +367,8 @@ class Checker {
   }
 
   Stage stage_;
+  LocalScope scope_;
+  std::vector<char> breakable_;  // 'L' a repeat, 'S' a switch, innermost last
   const std::vector<std::string>& counters_;
   const std::vector<std::string>& fields_;
 };

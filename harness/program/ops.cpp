@@ -28,6 +28,8 @@ const std::vector<OpInfo>& ops() {
       {"and", 2, kMany, kAllStages, "all arguments true (Bool)"},
       {"or", 2, kMany, kAllStages, "any argument true (Bool)"},
       {"not", 1, 1, kAllStages, "negation (Bool)"},
+      {"load", 2, 2, kAllStages,
+       "element (index % size) of an array local: {load: [var.NAME, index]}"},
       {"odd", 1, 1, kAllStages, "Uint is odd -> Bool"},
       {"even", 1, 1, kAllStages, "Uint is even -> Bool"},
       {"float", 1, 1, kAllStages, "Uint -> Float"},

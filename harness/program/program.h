@@ -29,7 +29,7 @@ int componentCount(ValueType t);  // Bool/Uint/Float 1, Vec2 2, ...
 //                          "payload.color", ...);
 //   {op: arg} / {op: [args]} -> Op (see ops.h: add, eq, odd, sphere_near, ...).
 struct Expr {
-  enum class Kind { Literal, Builtin, Op };
+  enum class Kind { Literal, Builtin, Op, Local };  // Local: `var.NAME`, name NAME
   Kind kind = Kind::Literal;
   ValueType type = ValueType::Uint;  // filled by the type checker
   std::vector<double> literal;       // Literal: 1..4 components
@@ -69,6 +69,19 @@ struct Stmt {
     Light,       // callable only: call.color = light_<light>(call.position,
                  // call.normal, shader record floats) from shaders/lights.glsl
     If,          // if (cond) then_ else else_
+    // Control flow and local variables (cases/README.md, "Control flow").
+    Let,       // declare locals: assigns[i] = (name, initial value)
+    Set,       // assign declared locals: assigns[i] = (name, value)
+    Array,     // declare `local`: an array of `size` elements of `local_type`, all zero
+    Store,     // local[index % size] = assigns[0].second
+    Repeat,    // for k in 0 .. min(count, kMaxLoopTrips)-1: local := from + k; then_
+    Break,     // leave the innermost repeat
+    Continue,  // next iteration of the innermost repeat
+    Switch,    // switch (cond): then_ holds Case statements, else_ the default
+    Case,      // one label of a switch (`size`), its body in then_
+    Invoke,    // call function `local` with arguments assigns (params' order); the
+               // function's body, copied at parse time, in then_
+    Return,    // leave the function (in a stage's own program: end the stage)
   };
   Kind kind = Kind::Count;
   std::string counter;                                // Count
@@ -80,10 +93,24 @@ struct Stmt {
   Expr call_index;                                    // Call
   std::string light;                                  // Light: point|spot|directional
   TraceArgs trace;                                    // Trace
-  std::vector<Stmt> then_, else_;                     // If, Report
+  std::string local;  // Array, Store: the array; Repeat: its variable (optional);
+                      // Invoke: the function
+  ValueType local_type = ValueType::Uint;  // Array: the element type
+  uint32_t size = 0;                       // Array: elements; Case: the label
+  Expr count, from, index;                 // Repeat: trip count, first value; Store: index
+  std::vector<std::pair<std::string, ValueType>> params;  // Invoke: the function's parameters
+  std::vector<Stmt> then_, else_;  // If, Report, Repeat (body), Switch (cases, default),
+                                   // Case and Invoke (body)
   SourceLoc loc;
 };
 
 using Program = std::vector<Stmt>;
+
+// Bounds of the control-flow vocabulary, the same on both sides: a repeat runs
+// at most kMaxLoopTrips times (a larger count is clamped), an array holds at
+// most kMaxArrayElements, functions nest at most kMaxFunctionNesting deep.
+constexpr uint32_t kMaxLoopTrips = 1024;
+constexpr uint32_t kMaxArrayElements = 128;
+constexpr uint32_t kMaxFunctionNesting = 8;
 
 }  // namespace rayspec

@@ -231,7 +231,34 @@ Typing (*typingRule(const std::string& name))(Expr&) {
   return nullptr;
 }
 
-std::optional<ProgramError> checkOp(Expr& e, Stage stage, const OpInfo& op) {
+// {load: [var.NAME, index]}: an element of an array local.
+Typing typeLoad(Expr& e, Stage stage, const LocalScope* locals) {
+  Expr& array = e.args[0];
+  const LocalInfo* info =
+      array.kind == Expr::Kind::Local && locals ? locals->find(array.name) : nullptr;
+  if (!info || info->elements == 0)
+    return err(e, "operator 'load' reads an array local: {load: [var.NAME, index]}");
+  array.type = info->type;
+  if (auto r = checkExpr(e.args[1], stage, locals)) return r;
+  if (e.args[1].type != ValueType::Uint) return badArguments(e, "need an array and a Uint index");
+  e.type = info->type;
+  return std::nullopt;
+}
+
+Typing typeLocal(Expr& e, const LocalScope* locals) {
+  const LocalInfo* info = locals ? locals->find(e.name) : nullptr;
+  if (!info)
+    return err(e, "local 'var." + e.name +
+                      "' is not declared here (let, array, repeat var, or a parameter)");
+  if (info->elements)
+    return err(e, "'var." + e.name + "' is an array: read an element with {load: [var." + e.name +
+                      ", index]}");
+  e.type = info->type;
+  return std::nullopt;
+}
+
+std::optional<ProgramError> checkOp(Expr& e, Stage stage, const OpInfo& op,
+                                    const LocalScope* locals) {
   const std::string& name = e.name;
   const int n = static_cast<int>(e.args.size());
   if (!(op.stages & stageBit(stage)))
@@ -243,16 +270,19 @@ std::optional<ProgramError> checkOp(Expr& e, Stage stage, const OpInfo& op) {
     return err(e,
                "operator '" + name + "' takes " + want + " argument(s), got " + std::to_string(n));
   }
+  if (name == "load") return typeLoad(e, stage, locals);
   for (Expr& arg : e.args)
-    if (auto r = checkExpr(arg, stage)) return r;
+    if (auto r = checkExpr(arg, stage, locals)) return r;
   if (const auto rule = typingRule(name)) return rule(e);
   return err(e, "operator '" + name + "' has no typing rule");
 }
 
 }  // namespace
 
-std::optional<ProgramError> checkExpr(Expr& e, Stage stage) {
+std::optional<ProgramError> checkExpr(Expr& e, Stage stage, const LocalScope* locals) {
   switch (e.kind) {
+    case Expr::Kind::Local:
+      return typeLocal(e, locals);
     case Expr::Kind::Literal:
       return checkLiteral(e);
     case Expr::Kind::Builtin: {
@@ -266,15 +296,15 @@ std::optional<ProgramError> checkExpr(Expr& e, Stage stage) {
     case Expr::Kind::Op: {
       const OpInfo* op = findOp(e.name);
       if (!op) return err(e, "unknown operator '" + e.name + "'");
-      return checkOp(e, stage, *op);
+      return checkOp(e, stage, *op, locals);
     }
   }
   return err(e, "malformed expression");
 }
 
 std::optional<ProgramError> checkExprAs(Expr& e, Stage stage, ValueType want,
-                                        const std::string& what) {
-  if (auto r = checkExpr(e, stage)) return r;
+                                        const std::string& what, const LocalScope* locals) {
+  if (auto r = checkExpr(e, stage, locals)) return r;
   if (want == ValueType::Float && isUintLiteral(e)) e.type = ValueType::Float;
   if (e.type != want)
     return err(e, what + ": expected " + valueTypeName(want) + ", got " + valueTypeName(e.type));

@@ -21,7 +21,15 @@ void ownExpressions(S& s, const Visit& visit) {
   for (auto& [field, value] : s.assigns) walkExpr(value, visit);
   switch (s.kind) {
     case Stmt::Kind::If:
+    case Stmt::Kind::Switch:
       walkExpr(s.cond, visit);
+      break;
+    case Stmt::Kind::Repeat:
+      walkExpr(s.count, visit);
+      walkExpr(s.from, visit);
+      break;
+    case Stmt::Kind::Store:
+      walkExpr(s.index, visit);
       break;
     case Stmt::Kind::Report:
       walkExpr(s.t, visit);
@@ -53,6 +61,18 @@ void statements(P& p, const Visit& visit) {
 }
 
 }  // namespace
+
+bool mayEndProgram(const Stmt& s) {
+  bool ends = false;
+  auto visit = [&](const Stmt& x) {
+    ends = ends || x.kind == Stmt::Kind::Ignore || x.kind == Stmt::Kind::Terminate ||
+           x.kind == Stmt::Kind::Return;
+  };
+  visit(s);
+  statements(s.then_, visit);
+  statements(s.else_, visit);
+  return ends;
+}
 
 void walkStatements(const Program& p, const std::function<void(const Stmt&)>& visit) {
   statements(p, visit);

@@ -1,0 +1,73 @@
+// Faults of shader code (R-LIVE-STATE, R-CONTROL-FLOW): a compiler that loses
+// a shader's live values across a call, runs a loop once too often, or turns
+// ignore / terminate inside a function into a plain return.
+#include "fault/fault_impl.h"
+#include "fault/program_edit.h"
+
+namespace rayspec {
+namespace {
+
+bool declaresLocal(const Stmt& s) {
+  return s.kind == Stmt::Kind::Let || s.kind == Stmt::Kind::Array ||
+         (s.kind == Stmt::Kind::Repeat && !s.local.empty()) ||
+         (s.kind == Stmt::Kind::Invoke && !s.params.empty());
+}
+
+// Every statement inside a function body (the bodies copied into invokes).
+void forEachFunctionStmt(Case& c, const std::function<void(Stmt&)>& visit) {
+  forEachProgram(c.pipeline, [&](Program& p, Stage) {
+    forEachStmt(p, [&](Stmt& s) {
+      if (s.kind == Stmt::Kind::Invoke) forEachStmt(s.then_, visit);
+    });
+  });
+}
+
+}  // namespace
+
+std::string localsLostAcrossCalls(Case& c, ModelOptions& o) {
+  bool locals = false;
+  size_t calls = 0;
+  forEachProgram(c.pipeline, [&](Program& p, Stage) {
+    forEachStmt(p, [&](Stmt& s) {
+      locals = locals || declaresLocal(s);
+      calls +=
+          s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::Call || s.kind == Stmt::Kind::Report;
+    });
+  });
+  if (!locals) return "";
+  o.faults.locals_lost_across_calls = true;
+  return describeCount(calls, "traces, calls and reports after which every local reads zero");
+}
+
+std::string loopTripOffByOne(Case& c, ModelOptions&) {
+  size_t n = 0;
+  forEachProgram(c.pipeline, [&](Program& p, Stage) {
+    forEachStmt(p, [&](Stmt& s) {
+      if (s.kind != Stmt::Kind::Repeat) return;
+      Expr one;
+      one.type = ValueType::Uint;
+      one.literal = {1.0};
+      Expr more;
+      more.kind = Expr::Kind::Op;
+      more.name = "add";
+      more.type = ValueType::Uint;
+      more.loc = s.count.loc;
+      more.args = {std::move(s.count), one};
+      s.count = std::move(more);
+      ++n;
+    });
+  });
+  return describeCount(n, "repeats run one trip more");
+}
+
+std::string functionIgnoreLost(Case& c, ModelOptions&) {
+  size_t n = 0;
+  forEachFunctionStmt(c, [&](Stmt& s) {
+    if (s.kind != Stmt::Kind::Ignore && s.kind != Stmt::Kind::Terminate) return;
+    s.kind = Stmt::Kind::Return;
+    ++n;
+  });
+  return describeCount(n, "ignores and terminates inside functions only return");
+}
+
+}  // namespace rayspec

@@ -1,0 +1,152 @@
+// Control flow and locals as GLSL: let, set, array, store, repeat, break,
+// continue, switch, invoke, return; and the functions a stage invokes.
+#include "glsl/emit_control.h"
+
+#include <set>
+
+#include "glsl/emit_expr.h"
+#include "glsl/emit_stmt.h"
+
+namespace rayspec {
+namespace {
+
+std::string zeroOf(ValueType t) {
+  switch (t) {
+    case ValueType::Bool:
+      return "false";
+    case ValueType::Uint:
+      return "0u";
+    case ValueType::Float:
+      return "0.0";
+    default:
+      return std::string(glslType(t)) + "(0.0)";
+  }
+}
+
+std::string functionName(const std::string& name) {
+  return "rs_fn_" + name;
+}
+
+void array(const Stmt& s, GlslWriter& out) {
+  const std::string name = localName(s.local), n = std::to_string(s.size) + "u";
+  out.line(std::string(glslType(s.local_type)) + " " + name + "[" + std::to_string(s.size) + "];");
+  out.line("for (uint rs_z = 0u; rs_z < " + n + "; ++rs_z) " + name +
+           "[rs_z] = " + zeroOf(s.local_type) + ";");
+}
+
+// The count and the first value are evaluated once, before the first trip.
+void repeat(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
+  const std::string id = std::to_string(out.nextId());
+  const std::string trips = "rs_trips" + id, from = "rs_from" + id, k = "rs_k" + id;
+  out.open("{  // repeat");
+  out.line("uint " + trips + " = min(" + emitExpr(s.count, ctx) + ", " +
+           std::to_string(kMaxLoopTrips) + "u);");
+  out.line("uint " + from + " = " + emitExpr(s.from, ctx) + ";");
+  out.open("for (uint " + k + " = 0u; " + k + " < " + trips + "; ++" + k + ") {");
+  if (!s.local.empty()) out.line("uint " + localName(s.local) + " = " + from + " + " + k + ";");
+  emitProgram(s.then_, ctx, out);
+  out.close();
+  out.close();
+}
+
+// Each case ends with break: no case falls through to the next.
+void switchStmt(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
+  out.open("switch (" + emitExpr(s.cond, ctx) + ") {");
+  for (const Stmt& c : s.then_) {
+    out.open("case " + std::to_string(c.size) + "u: {");
+    emitProgram(c.then_, ctx, out);
+    out.line("break;");
+    out.close();
+  }
+  out.open("default: {");
+  emitProgram(s.else_, ctx, out);
+  out.line("break;");
+  out.close();
+  out.close();
+}
+
+void invoke(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
+  std::string args;
+  for (const auto& [name, value] : s.assigns)
+    args += (args.empty() ? "" : ", ") + emitExpr(value, ctx);
+  out.line(functionName(s.local) + "(" + args + ");");
+}
+
+// Callees first: GLSL wants a function defined (or declared) before its use.
+void defineFunctions(const Program& p, const StageContext& ctx, std::set<std::string>& done,
+                     GlslWriter& out) {
+  for (const Stmt& s : p) {
+    if (s.kind != Stmt::Kind::Invoke) {
+      defineFunctions(s.then_, ctx, done, out);
+      defineFunctions(s.else_, ctx, done, out);
+      continue;
+    }
+    if (done.count(s.local)) continue;
+    defineFunctions(s.then_, ctx, done, out);
+    done.insert(s.local);
+    std::string params;
+    for (const auto& [name, type] : s.params)
+      params += (params.empty() ? "" : ", ") + std::string(glslType(type)) + " " + localName(name);
+    out.line("");
+    out.open("void " + functionName(s.local) + "(" + params + ") {");
+    emitProgram(s.then_, ctx, out);
+    out.close();
+  }
+}
+
+}  // namespace
+
+void emitControl(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
+  switch (s.kind) {
+    case Stmt::Kind::Let:
+      for (const auto& [name, value] : s.assigns)
+        out.line(std::string(glslType(value.type)) + " " + localName(name) + " = " +
+                 emitExpr(value, ctx) + ";");
+      return;
+    case Stmt::Kind::Set:
+      for (const auto& [name, value] : s.assigns)
+        out.line(localName(name) + " = " + emitExpr(value, ctx) + ";");
+      return;
+    case Stmt::Kind::Array:
+      array(s, out);
+      return;
+    case Stmt::Kind::Store:
+      if (s.assigns.empty()) return;
+      out.line(localName(s.local) + "[" + arrayIndex(localName(s.local), emitExpr(s.index, ctx)) +
+               "] = " + emitExpr(s.assigns[0].second, ctx) + ";");
+      return;
+    case Stmt::Kind::Repeat:
+      repeat(s, ctx, out);
+      return;
+    case Stmt::Kind::Break:
+      out.line("break;");
+      return;
+    case Stmt::Kind::Continue:
+      out.line("continue;");
+      return;
+    case Stmt::Kind::Return:
+      out.line("return;");
+      return;
+    case Stmt::Kind::Switch:
+      switchStmt(s, ctx, out);
+      return;
+    case Stmt::Kind::Invoke:
+      invoke(s, ctx, out);
+      return;
+    default:
+      out.raw("#error rayspec: a case label outside a switch\n");
+      return;
+  }
+}
+
+void emitFunctions(const Program& program, const StageContext& ctx, GlslWriter& out) {
+  std::set<std::string> done;
+  GlslWriter functions;
+  defineFunctions(program, ctx, done, functions);
+  if (done.empty()) return;
+  out.line("");
+  out.line("// ---- functions (pipeline.functions) ----");
+  out.raw(functions.text());
+}
+
+}  // namespace rayspec

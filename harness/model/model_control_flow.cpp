@@ -1,0 +1,88 @@
+// The model's meaning of the control-flow statements (program/program.h):
+// locals, arrays, repeat, break, continue, switch, invoke and return.
+#include <algorithm>
+
+#include "model/model_machine.h"
+
+namespace rayspec {
+namespace {
+
+void setLocal(StageEnv& env, size_t slot, const Val& v) {
+  if (slot >= env.locals.size()) env.locals.resize(slot + 1);
+  env.locals[slot] = v;
+}
+
+}  // namespace
+
+Flow Machine::execControl(const CStmt& s, StageEnv& env) {
+  switch (s.kind) {
+    case Stmt::Kind::Let:
+    case Stmt::Kind::Set:
+      for (const CAssign& a : s.assigns)
+        if (a.field >= 0) setLocal(env, static_cast<size_t>(a.field), eval(a.value, env));
+      return Flow::Continue;
+    case Stmt::Kind::Array:
+      if (s.slot < 0) return Flow::Continue;
+      env.locals.resize(std::max(env.locals.size(), static_cast<size_t>(s.slot) + s.size));
+      std::fill_n(env.locals.begin() + s.slot, s.size, Val{});
+      return Flow::Continue;
+    case Stmt::Kind::Store: {
+      if (s.slot < 0 || s.size == 0 || s.assigns.empty()) return Flow::Continue;
+      const uint32_t i = eval(s.index, env).u % s.size;
+      setLocal(env, static_cast<size_t>(s.slot) + i, eval(s.assigns[0].value, env));
+      return Flow::Continue;
+    }
+    case Stmt::Kind::Repeat:
+      return execRepeat(s, env);
+    case Stmt::Kind::Break:
+      return Flow::Break;
+    case Stmt::Kind::Continue:
+      return Flow::Next;
+    case Stmt::Kind::Return:
+      return Flow::Return;
+    case Stmt::Kind::Switch:
+      return execSwitch(s, env);
+    case Stmt::Kind::Invoke:
+      return execInvoke(s, env);
+    default:
+      return Flow::Continue;
+  }
+}
+
+// At most kMaxLoopTrips iterations; the variable is from + k in iteration k.
+Flow Machine::execRepeat(const CStmt& s, StageEnv& env) {
+  const uint32_t trips = std::min(eval(s.count, env).u, kMaxLoopTrips);
+  const uint32_t from = eval(s.from, env).u;
+  for (uint32_t k = 0; k < trips; ++k) {
+    if (s.slot >= 0) {
+      Val v;
+      v.u = from + k;
+      setLocal(env, static_cast<size_t>(s.slot), v);
+    }
+    const Flow f = exec(s.then_, env);
+    if (f == Flow::Break) break;
+    if (f != Flow::Continue && f != Flow::Next) return f;
+  }
+  return Flow::Continue;
+}
+
+// The case whose label is the value, else the default; no fall-through.
+Flow Machine::execSwitch(const CStmt& s, StageEnv& env) {
+  const uint32_t v = eval(s.cond, env).u;
+  for (const CStmt& c : s.then_)
+    if (c.size == v) return exec(c.then_, env);
+  return exec(s.else_, env);
+}
+
+// The arguments evaluated in the caller's frame, the body in a frame of its
+// own; the caller's locals are back as they were afterwards.
+Flow Machine::execInvoke(const CStmt& s, StageEnv& env) {
+  std::vector<Val> frame(std::max<size_t>(s.size, s.assigns.size()));
+  for (size_t i = 0; i < s.assigns.size(); ++i) frame[i] = eval(s.assigns[i].value, env);
+  std::swap(frame, env.locals);
+  const Flow f = exec(s.then_, env);
+  std::swap(frame, env.locals);
+  return f == Flow::Return ? Flow::Continue : f;
+}
+
+}  // namespace rayspec

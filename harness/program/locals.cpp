@@ -1,0 +1,64 @@
+#include "program/locals.h"
+
+#include <algorithm>
+
+namespace rayspec {
+
+bool isLocalName(const std::string& name) {
+  if (name.empty() || name.size() > 32 || name[0] < 'a' || name[0] > 'z') return false;
+  return std::all_of(name.begin(), name.end(), [](char ch) {
+    return (ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') || ch == '_';
+  });
+}
+
+namespace {
+constexpr const char* kGlslNames[] = {"bool", "uint", "float", "vec2", "vec3", "vec4"};
+}
+
+std::optional<ValueType> valueTypeNamed(const std::string& name) {
+  for (int i = 0; i < 6; ++i)
+    if (name == kGlslNames[i]) return static_cast<ValueType>(i);
+  return std::nullopt;
+}
+
+const LocalInfo* LocalScope::find(const std::string& name) const {
+  for (auto it = names_.rbegin(); it != names_.rend(); ++it)
+    if (it->first == name) return &it->second;
+  return nullptr;
+}
+
+const LocalInfo& LocalScope::declare(const std::string& name, LocalInfo info) {
+  info.slot = next_slot_;
+  next_slot_ += std::max<uint32_t>(info.elements, 1);
+  frame_slots_ = std::max(frame_slots_, next_slot_);
+  names_.emplace_back(name, info);
+  return names_.back().second;
+}
+
+void LocalScope::closeBlock() {
+  if (blocks_.empty()) return;
+  const size_t keep = blocks_.back();
+  blocks_.pop_back();
+  names_.resize(keep);
+  // Slots of a closed block are free again for its siblings.
+  next_slot_ = 0;
+  for (const auto& [name, info] : names_)
+    next_slot_ = std::max(next_slot_, info.slot + std::max<uint32_t>(info.elements, 1));
+}
+
+LocalScope::Frame LocalScope::openFrame() {
+  Frame saved{std::move(names_), std::move(blocks_), next_slot_, frame_slots_};
+  names_.clear();
+  blocks_.clear();
+  next_slot_ = frame_slots_ = 0;
+  return saved;
+}
+
+void LocalScope::closeFrame(Frame saved) {
+  names_ = std::move(saved.names);
+  blocks_ = std::move(saved.blocks);
+  next_slot_ = saved.next_slot;
+  frame_slots_ = saved.frame_slots;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,54 @@
+// Local variables of stage programs and functions: `let`, `array`, a
+// repeat's variable and a function's parameters, read as `var.NAME`. A local
+// is visible from its declaration to the end of its block; a function sees
+// only its parameters and its own locals (as in GLSL).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "program/program.h"
+
+namespace rayspec {
+
+// A lower-case letter, then lower-case letters, digits or '_', 32 at most.
+bool isLocalName(const std::string& name);
+
+// The type a case file names in lower case, as GLSL does: bool, uint, float,
+// vec2, vec3, vec4.
+std::optional<ValueType> valueTypeNamed(const std::string& name);
+
+struct LocalInfo {
+  ValueType type = ValueType::Uint;  // an array's element type
+  uint32_t elements = 0;             // an array's size; 0 for a scalar
+  bool read_only = false;            // a repeat's variable
+  uint32_t slot = 0;                 // first slot in the frame (model)
+};
+
+// The locals visible at one point: blocks nest, functions start a new frame.
+class LocalScope {
+ public:
+  const LocalInfo* find(const std::string& name) const;
+  // Declares a local in the innermost block; its slot is the frame's next.
+  const LocalInfo& declare(const std::string& name, LocalInfo info);
+  void openBlock() { blocks_.push_back(names_.size()); }
+  void closeBlock();
+  // A function's frame: nothing of the caller is visible in it.
+  struct Frame {
+    std::vector<std::pair<std::string, LocalInfo>> names;
+    std::vector<size_t> blocks;
+    uint32_t next_slot = 0, frame_slots = 0;
+  };
+  Frame openFrame();
+  void closeFrame(Frame saved);
+  uint32_t frameSlots() const { return frame_slots_; }  // slots the frame needs
+
+ private:
+  std::vector<std::pair<std::string, LocalInfo>> names_;
+  std::vector<size_t> blocks_;
+  uint32_t next_slot_ = 0, frame_slots_ = 0;
+};
+
+}  // namespace rayspec

@@ -1,0 +1,100 @@
+// The GLSL of control flow and functions: a function is defined once, before
+// main and after the functions it calls, ignore / terminate stay inside it,
+// and every module compiles and passes spirv-val.
+#include <gtest/gtest.h>
+
+#include "case_support.h"
+#include "glsl/generate_glsl.h"
+#include "plan/plan.h"
+#include "spirv/compile_glsl.h"
+
+namespace rayspec {
+namespace {
+
+Case functionCase() {
+  return parsedCase(
+      "rules: [R-CONTROL-FLOW]\n"
+      "scene:\n"
+      "  blas:\n"
+      "    tri: [{triangles: {vertices: [[-1, -1, 0], [1, -1, 0], [0, 1, 0]]}}]\n"
+      "  instances: [{blas: tri}]\n"
+      "rays:\n"
+      "  list: [{origin: [0, 0, 5], direction: [0, 0, -1]}]\n"
+      "pipeline:\n"
+      "  functions:\n"
+      "    inner:\n"
+      "      params: {n: uint}\n"
+      "      do:\n"
+      "        - if: {odd: var.n}\n"
+      "          then: [ignore]\n"
+      "    outer:\n"
+      "      params: {v: vec3}\n"
+      "      do:\n"
+      "        - repeat: 2\n"
+      "          var: i\n"
+      "          do: [{invoke: inner, with: {n: {add: [primitive_id, var.i]}}}]\n"
+      "  hit_groups:\n"
+      "    - any_hit:\n"
+      "        - invoke: outer\n"
+      "          with: {v: [1.0, 2.0, 3.0]}\n"
+      "        - switch: primitive_id\n"
+      "          cases: {0: [terminate]}\n"
+      "      closest_hit: [record: [hit]]\n"
+      "outputs:\n"
+      "  per_ray: [hit]\n");
+}
+
+TEST(GlslControlFlow, FunctionsComeBeforeTheirCallersAndCompile) {
+  const Case c = functionCase();
+  const GeneratedPipeline g = generateGlsl(c, derivePlan(c));
+  ASSERT_TRUE(g.hit_groups.at(0).any_hit);
+  const std::string& glsl = g.hit_groups[0].any_hit->glsl;
+  const size_t inner = glsl.find("void rs_fn_inner(uint v_n) {");
+  const size_t outer = glsl.find("void rs_fn_outer(vec3 v_v) {");
+  const size_t main = glsl.find("void main() {");
+  ASSERT_NE(inner, std::string::npos) << glsl;
+  EXPECT_LT(inner, outer);
+  EXPECT_LT(outer, main);
+  EXPECT_EQ(glsl.find("void rs_fn_inner", inner + 1), std::string::npos);  // once
+  EXPECT_NE(glsl.find("ignoreIntersectionEXT;", inner), std::string::npos);
+  EXPECT_LT(glsl.find("ignoreIntersectionEXT;", inner), outer);
+  EXPECT_NE(glsl.find("rs_fn_outer(vec3(1.0, 2.0, 3.0));", main), std::string::npos);
+  const SpirvResult spirv = compileGlsl(glsl, Stage::AnyHit);
+  EXPECT_TRUE(spirv.error.empty()) << spirv.error;
+  // The closest-hit invokes nothing: no function there.
+  EXPECT_EQ(g.hit_groups[0].closest_hit->glsl.find("rs_fn_"), std::string::npos);
+}
+
+TEST(GlslControlFlow, ALoopEvaluatesItsCountOnceAndClampsIt) {
+  const Case c = parsedCase(
+      "rules: [R-CONTROL-FLOW]\n"
+      "scene:\n"
+      "  blas:\n"
+      "    tri: [{triangles: {vertices: [[-1, -1, 0], [1, -1, 0], [0, 1, 0]]}}]\n"
+      "  instances: [{blas: tri}]\n"
+      "rays:\n"
+      "  list: [{origin: [0, 0, 5], direction: [0, 0, -1]}]\n"
+      "pipeline:\n"
+      "  raygen:\n"
+      "    - array: {name: a, of: vec2, size: 4}\n"
+      "    - repeat: launch_id_x\n"
+      "      var: i\n"
+      "      do:\n"
+      "        - store: {array: a, index: var.i, value: [1.0, 2.0]}\n"
+      "        - trace: {}\n"
+      "    - record: {barycentrics: {load: [var.a, 2]}}\n"
+      "  hit_groups: [{closest_hit: [count: c]}]\n"
+      "outputs:\n"
+      "  counters: [c]\n"
+      "  per_ray: [barycentrics]\n");
+  const GeneratedPipeline g = generateGlsl(c, derivePlan(c));
+  const std::string& glsl = g.raygen.glsl;
+  EXPECT_NE(glsl.find("vec2 v_a[4];"), std::string::npos) << glsl;
+  EXPECT_NE(glsl.find("min(gl_LaunchIDEXT.x, 1024u)"), std::string::npos);
+  EXPECT_NE(glsl.find("v_a[(2u) % uint(v_a.length())]"), std::string::npos);
+  const SpirvResult spirv = compileGlsl(glsl, Stage::Raygen);
+  EXPECT_TRUE(spirv.error.empty()) << spirv.error;
+}
+
+}  // namespace
+}  // namespace rayspec
