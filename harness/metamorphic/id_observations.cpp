@@ -62,7 +62,12 @@ struct Observer {
         if (s.kind == Stmt::Kind::Record && field == name && isId(value)) continue;
         expr(value);
       }
-      if (s.kind == Stmt::Kind::If) expr(s.cond);
+      if (s.kind == Stmt::Kind::If || s.kind == Stmt::Kind::Switch) expr(s.cond);
+      if (s.kind == Stmt::Kind::Repeat) {
+        expr(s.count);
+        expr(s.from);
+      }
+      if (s.kind == Stmt::Kind::Store) expr(s.index);
       if (s.kind == Stmt::Kind::Report) {
         expr(s.t);
         expr(s.hit_kind);
