@@ -240,6 +240,10 @@ std::vector<FaultImpl> pipelineMutations() {
        nullptr, localsLostAcrossCalls},
       {"loop-trip-off-by-one", K::CaseMutation, "every repeat runs one trip more than its count",
        nullptr, loopTripOffByOne},
+      {"transform-builtins-swapped", K::CaseMutation,
+       "gl_ObjectToWorldEXT and gl_WorldToObjectEXT (and their 3x4 forms) each read the other "
+       "matrix",
+       nullptr, transformBuiltinsSwapped},
       {"function-ignore-lost", K::CaseMutation,
        "ignoreIntersectionEXT and terminateRayEXT inside a function only return from it", nullptr,
        functionIgnoreLost},

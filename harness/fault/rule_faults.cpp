@@ -52,7 +52,8 @@ const std::vector<RuleFaults>& ruleFaults() {
        {"payload-writes-lost", "payload-start-lost", "payload-words-lost", "hit-attributes-lost"},
        {}},
       {"R-BUILTIN",
-       {"builtin-wrong", "swap-primitive-id", "shift-t", "empty-geometry-renumbered"},
+       {"builtin-wrong", "swap-primitive-id", "shift-t", "empty-geometry-renumbered",
+        "transform-builtins-swapped"},
        {}},
       // Several top levels are built as copies of the instance list, the other
       // levels' instances inactive (Instance::tlas): which instances a trace

@@ -33,6 +33,9 @@ struct ModelFaults {
   // Live state broken: a shader's local variables read zero after a trace,
   // a callable call or a report (a driver that spills and restores them wrongly).
   bool locals_lost_across_calls = false;
+  // R-BUILTIN broken: gl_ObjectToWorldEXT and gl_WorldToObjectEXT (and their
+  // 3x4 forms) each read the other matrix.
+  bool transform_builtins_swapped = false;
 };
 
 }  // namespace rayspec

@@ -150,6 +150,23 @@ Val Machine::vertexPosition(const HitView& hv, int i) const {
   return fromVec3(applyAffine(sh_.c->scene.instances[hv.instance].transform, p, 1.0f));
 }
 
+// object_to_world<c> / _3x4_<r> (k = c, or 4 + r) and world_to_object's
+// (k + 7): the hit instance's transform and its inverse, both row-major 3x4.
+// The planted fault transform_builtins_swapped gives each the other.
+Val Machine::transformBuiltin(const HitView& hv, int k) const {
+  if (hv.instance >= sh_.scene->instances.size()) return Val{};
+  const bool inverse = (k >= 7) != sh_.faults.transform_builtins_swapped;
+  const ModelInstance& mi = sh_.scene->instances[hv.instance];
+  const Transform& m = inverse ? mi.inverse_f : mi.src->transform;
+  const int i = k % 7;
+  Val v;
+  if (i < 4)
+    v.f = {m[i], m[4 + i], m[8 + i], 0};  // column i of mat4x3
+  else
+    v.f = {m[4 * (i - 4)], m[4 * (i - 4) + 1], m[4 * (i - 4) + 2], m[4 * (i - 4) + 3]};  // row
+  return v;
+}
+
 Val Machine::builtin(const CExpr& e, StageEnv& env) {
   static const HitView kNone;
   static const TraceRay kNoRay;
@@ -219,6 +236,8 @@ Val Machine::builtin(const CExpr& e, StageEnv& env) {
     case kBiVertex2:
       return vertexPosition(*hv, e.builtin - kBiVertex0);
     default:
+      if (e.builtin >= kBiObjectToWorld0 && e.builtin < kBiTransformEnd)
+        return transformBuiltin(*hv, e.builtin - kBiObjectToWorld0);
       return dataBuiltin(e, env);
   }
 }

@@ -174,6 +174,7 @@ class alignas(64) Machine {
   Flow execSwitch(const CStmt& s, StageEnv& env);
   Flow execInvoke(const CStmt& s, StageEnv& env);
   void loseLocals(StageEnv& env) const;
+  Val transformBuiltin(const HitView& hv, int k) const;
   void execCall(const CStmt& s, StageEnv& env);   // executeCallableEXT
   void execTrace(const CStmt& s, StageEnv& env);  // traceRayEXT
   Payload startPayload(const CStmt& s, StageEnv& env);

@@ -49,7 +49,21 @@ const std::vector<std::string>& builtinNames() {
                                                  "cull_mask",
                                                  "vertex_position0",
                                                  "vertex_position1",
-                                                 "vertex_position2"};
+                                                 "vertex_position2",
+                                                 "object_to_world0",
+                                                 "object_to_world1",
+                                                 "object_to_world2",
+                                                 "object_to_world3",
+                                                 "object_to_world_3x4_0",
+                                                 "object_to_world_3x4_1",
+                                                 "object_to_world_3x4_2",
+                                                 "world_to_object0",
+                                                 "world_to_object1",
+                                                 "world_to_object2",
+                                                 "world_to_object3",
+                                                 "world_to_object_3x4_0",
+                                                 "world_to_object_3x4_1",
+                                                 "world_to_object_3x4_2"};
   return names;
 }
 

@@ -63,7 +63,10 @@ enum Builtin : uint8_t {
   kBiVertex0,  // kBiVertex0 + i: vertex_position<i>
   kBiVertex1,
   kBiVertex2,
-  kBiCount,
+  kBiObjectToWorld0,  // + c: object_to_world<c>, then + 4 + r: object_to_world_3x4_<r>
+  kBiWorldToObject0 = kBiObjectToWorld0 + 7,  // the same for world_to_object
+  kBiTransformEnd = kBiWorldToObject0 + 7,
+  kBiCount = kBiTransformEnd,
   kBiUnknown = 0xFF
 };
 const std::vector<std::string>& builtinNames();
