@@ -260,6 +260,18 @@ struct Pipeline {
     return n;
   }
   std::vector<Program> callables;
+  // Specialization constants (pipeline.constants), and the values some
+  // shaders take (pipeline.specialize, by GeneratedShader name: "raygen",
+  // "miss0", "hit1.any_hit", "callable2", ...), by constant index.
+  std::vector<SpecConstant> constants;
+  std::map<std::string, std::map<size_t, double>> specialize;
+  // Constant k's value in shader `shader`.
+  double constantIn(const std::string& shader, size_t k) const {
+    const auto s = specialize.find(shader);
+    if (s != specialize.end())
+      if (const auto v = s->second.find(k); v != s->second.end()) return v->second;
+    return k < constants.size() ? constants[k].value : 0.0;
+  }
   // SBT regions. Default when not written: one record per shader / group, in order.
   std::vector<SbtRecord> sbt_miss, sbt_hit, sbt_callable;
   uint32_t sbt_record_data =

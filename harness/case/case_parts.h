@@ -49,6 +49,10 @@ bool parseProgram(YamlReader& r, const YAML::Node& n, const std::string& field, 
 // pipeline.functions, and the body of every `invoke` copied into its call site
 // (parse_functions.cpp); an invoke of no such function is an error at its line.
 void expandFunctions(YamlReader& r, const YAML::Node& functions, Pipeline& p);
+// pipeline.constants and pipeline.specialize (parse_constants.cpp); the
+// latter names shaders, so it is read after the programs.
+void parseConstants(YamlReader& r, const YAML::Node& n, Pipeline& p);
+void parseSpecialize(YamlReader& r, const YAML::Node& n, Pipeline& p);
 bool parseExpr(YamlReader& r, const YAML::Node& n, const std::string& field, Expr& out);
 
 // Checks every program of the pipeline for its stage (program/ops.h checkProgram).

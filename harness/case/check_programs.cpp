@@ -50,7 +50,8 @@ void checkPrograms(YamlReader& r, Case& c, const YAML::Node& /*pipeline_node*/) 
   Pipeline& p = c.pipeline;
   auto check = [&](Program& prog, Stage stage, const std::string& field) {
     if (r.isBadProgram(field)) return;
-    if (auto e = checkProgram(prog, stage, c.outputs.counters, c.outputs.per_ray)) {
+    if (auto e = checkProgram(prog, stage, c.outputs.counters, c.outputs.per_ray,
+                              c.pipeline.constants)) {
       SourceLoc loc = e->loc;
       if (loc.file.empty()) loc.file = r.file();
       if (loc.field.empty()) loc.field = field;

@@ -50,6 +50,11 @@ bool parseScalarExpr(YamlReader& r, const YAML::Node& n, const std::string& fiel
                 "': a local's name is a lower-case letter, then letters, digits or _ (at most 32)");
     return false;
   }
+  if (s.rfind("const.", 0) == 0) {  // a specialization constant (pipeline.constants)
+    out.kind = Expr::Kind::Constant;
+    out.name = s.substr(6);
+    return true;
+  }
   if (findBuiltin(s)) {
     out.kind = Expr::Kind::Builtin;
     out.name = s;

@@ -138,7 +138,8 @@ class Expander {
   // The arguments by name, put in the parameters' order.
   bool arguments(Stmt& s, const FunctionDef& def) {
     std::vector<std::pair<std::string, Expr>> ordered;
-    for (const auto& [name, type] : def.params) {
+    for (const auto& param : def.params) {
+      const std::string& name = param.first;
       auto a = std::find_if(s.assigns.begin(), s.assigns.end(),
                             [&](const auto& x) { return x.first == name; });
       if (a == s.assigns.end()) {

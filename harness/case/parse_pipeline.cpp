@@ -185,7 +185,7 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
   if (!r.expectMap(n, "pipeline",
                    {"max_recursion", "flags", "raygen", "raygens", "raygen_group", "raygen_data",
                     "miss", "hit_groups", "callables", "sbt", "libraries", "payloads",
-                    "callable_depth", "functions"}))
+                    "callable_depth", "functions", "constants", "specialize"}))
     return;
   if (auto v = YamlReader::get(n, "max_recursion"); v.IsDefined())
     if (auto x = r.uint(v, "pipeline.max_recursion", 31)) {
@@ -219,12 +219,14 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
       p.raygen_data = *words;
     }
   if (auto v = YamlReader::get(n, "payloads"); v.IsDefined()) parsePayloadTypes(r, v, p);
+  if (auto v = YamlReader::get(n, "constants"); v.IsDefined()) parseConstants(r, v, p);
   if (auto v = YamlReader::get(n, "miss"); v.IsDefined()) parseMissShaders(r, v, p);
   if (auto v = YamlReader::get(n, "hit_groups"); v.IsDefined())
     parseHitGroups(r, v, p, p.hit_groups);
   if (auto v = YamlReader::get(n, "callables"); v.IsDefined())
     parsePrograms(r, v, "pipeline.callables", p.callables);
   expandFunctions(r, YamlReader::get(n, "functions"), p);
+  if (auto v = YamlReader::get(n, "specialize"); v.IsDefined()) parseSpecialize(r, v, p);
 
   if (auto v = YamlReader::get(n, "libraries"); v.IsDefined()) parseLibraries(r, v, p);
   checkNoNullGroups(r, p);

@@ -103,6 +103,7 @@ std::string localsLostAcrossCalls(Case& c, ModelOptions& o);
 std::string loopTripOffByOne(Case& c, ModelOptions& o);
 std::string functionIgnoreLost(Case& c, ModelOptions& o);
 std::string transformBuiltinsSwapped(Case& c, ModelOptions& o);
+std::string specializationIgnored(Case& c, ModelOptions& o);
 std::string emptyGeometryRenumbered(Case& c, ModelOptions& o);
 std::string hitAttributesLost(Case& c, ModelOptions& o);
 std::string callableDataNotReturned(Case& c, ModelOptions& o);

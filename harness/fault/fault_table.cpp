@@ -244,6 +244,10 @@ std::vector<FaultImpl> pipelineMutations() {
        "gl_ObjectToWorldEXT and gl_WorldToObjectEXT (and their 3x4 forms) each read the other "
        "matrix",
        nullptr, transformBuiltinsSwapped},
+      {"specialization-ignored", K::CaseMutation,
+       "every shader runs with the specialization constants' defaults, whatever its "
+       "VkSpecializationInfo sets",
+       nullptr, specializationIgnored},
       {"function-ignore-lost", K::CaseMutation,
        "ignoreIntersectionEXT and terminateRayEXT inside a function only return from it", nullptr,
        functionIgnoreLost},

@@ -1,6 +1,7 @@
 // Faults of shader code (R-LIVE-STATE, R-CONTROL-FLOW): a compiler that loses
-// a shader's live values across a call, runs a loop once too often, or turns
-// ignore / terminate inside a function into a plain return.
+// a shader's live values across a call, runs a loop once too often, turns
+// ignore / terminate inside a function into a plain return, or ignores the
+// specialization constants a stage is created with.
 #include "fault/fault_impl.h"
 #include "fault/program_edit.h"
 
@@ -68,6 +69,13 @@ std::string functionIgnoreLost(Case& c, ModelOptions&) {
     ++n;
   });
   return describeCount(n, "ignores and terminates inside functions only return");
+}
+
+std::string specializationIgnored(Case& c, ModelOptions&) {
+  size_t n = 0;
+  for (const auto& [shader, values] : c.pipeline.specialize) n += values.size();
+  c.pipeline.specialize.clear();
+  return describeCount(n, "specialization constants a shader sets keep their defaults");
 }
 
 }  // namespace rayspec

@@ -74,7 +74,9 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-POSITION-FETCH", {"position-fetch-world-space"}, {}},
       {"R-LAUNCH-3D", {"launch-depth-lost", "zero-launch-runs"}, {}},
       {"R-LIVE-STATE", {"locals-lost-across-calls"}, {}},
-      {"R-CONTROL-FLOW", {"loop-trip-off-by-one", "function-ignore-lost"}, {}},
+      {"R-CONTROL-FLOW",
+       {"loop-trip-off-by-one", "function-ignore-lost", "specialization-ignored"},
+       {}},
       {"R-UB", {}, {}, fail, "never checked for a result (robustness probe only)"},
   };
   return table;

@@ -156,6 +156,8 @@ std::string emitExpr(const Expr& e, const StageContext& ctx) {
       return op(e, ctx);
     case Expr::Kind::Local:
       return localName(e.name);
+    case Expr::Kind::Constant:
+      return "c_" + e.name;
   }
   return problem("expression kind");
 }

@@ -1,10 +1,12 @@
 #include "glsl/emit_stage.h"
 
 #include <algorithm>
+#include <bit>
 
 #include "glsl/bindings.h"
 #include "glsl/embedded_shaders.h"
 #include "glsl/emit_control.h"
+#include "glsl/emit_expr.h"
 #include "glsl/emit_payloads.h"
 #include "glsl/emit_stmt.h"
 #include "glsl/glsl_writer.h"
@@ -145,6 +147,39 @@ void imageStores(const StageContext& ctx, GlslWriter& out) {
   }
 }
 
+// pipeline.constants, each with its default; the pipeline's
+// VkSpecializationInfo gives a shader its pipeline.specialize values.
+void specializationConstants(const StageContext& ctx, GlslWriter& out) {
+  const std::vector<SpecConstant>& constants = ctx.c.pipeline.constants;
+  if (constants.empty()) return;
+  out.line("");
+  out.line("// ---- specialization constants (pipeline.constants) ----");
+  for (size_t k = 0; k < constants.size(); ++k) {
+    const SpecConstant& c = constants[k];
+    Expr value;
+    value.type = c.type;
+    value.literal = {c.value};
+    out.line("layout(constant_id = " + std::to_string(k) + ") const " + glslType(c.type) + " c_" +
+             c.name + " = " + emitExpr(value, ctx) + ";");
+  }
+}
+
+// The 32-bit values of the constants pipeline.specialize sets for `shader`.
+std::vector<std::pair<uint32_t, uint32_t>> specializationOf(const Case& c,
+                                                            const std::string& shader) {
+  std::vector<std::pair<uint32_t, uint32_t>> out;
+  const auto it = c.pipeline.specialize.find(shader);
+  if (it == c.pipeline.specialize.end()) return out;
+  for (const auto& [k, v] : it->second) {
+    const ValueType t = c.pipeline.constants[k].type;
+    const uint32_t bits = t == ValueType::Float  ? std::bit_cast<uint32_t>(static_cast<float>(v))
+                          : t == ValueType::Bool ? (v != 0 ? 1u : 0u)
+                                                 : static_cast<uint32_t>(v);
+    out.emplace_back(static_cast<uint32_t>(k), bits);
+  }
+  return out;
+}
+
 }  // namespace
 
 GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const std::string& name,
@@ -176,6 +211,7 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
   if (u.light) include("lights.glsl", out);
   if (u.position_fetch) include("position_fetch.glsl", out);
   interfaceVariables(ctx, out);
+  specializationConstants(ctx, out);
   // Raygen's launch ray is global: a function's trace may take its fields.
   if (stage == Stage::Raygen && u.launch_ray) out.line("RsRay rs_ray;");
   emitFunctions(program, ctx, out);
@@ -200,7 +236,7 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
     imageStores(ctx, out);
   }
   out.close();
-  return {stage, name, out.text()};
+  return {stage, name, out.text(), specializationOf(c, name)};
 }
 
 }  // namespace rayspec

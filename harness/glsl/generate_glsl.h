@@ -17,6 +17,9 @@ struct GeneratedShader {
   Stage stage;
   std::string name;  // "raygen", "miss0", "hit1.any_hit", "callable2"
   std::string glsl;
+  // (constant_id, 32-bit value) of the specialization constants this shader
+  // sets (pipeline.specialize); the others keep their defaults.
+  std::vector<std::pair<uint32_t, uint32_t>> specialization;
 };
 
 struct GeneratedGroup {

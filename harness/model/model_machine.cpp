@@ -245,6 +245,7 @@ Val Machine::builtin(const CExpr& e, StageEnv& env) {
 Val Machine::eval(const CExpr& e, StageEnv& env) {
   switch (e.kind) {
     case Expr::Kind::Literal:
+    case Expr::Kind::Constant:  // compiled to a literal (model_program.cpp)
       return e.literal;
     case Expr::Kind::Builtin:
       return builtin(e, env);

@@ -117,7 +117,24 @@ const OpName kOps[] = {{"sphere_hit", OpCode::SphereHit},
 struct Compiler {
   const Plan& plan;
   CPipeline& out;
-  LocalScope scope;  // the locals visible where the compiler is (their slots)
+  const Pipeline& pipeline;
+  LocalScope scope;    // the locals visible where the compiler is (their slots)
+  std::string shader;  // the shader compiled (its name picks pipeline.specialize's values)
+
+  // const.NAME: a literal of the value this shader takes.
+  void constant(const Expr& e, CExpr& r) const {
+    r.kind = Expr::Kind::Literal;
+    for (size_t k = 0; k < pipeline.constants.size(); ++k) {
+      if (pipeline.constants[k].name != e.name) continue;
+      const double v = pipeline.constantIn(shader, k);
+      if (e.type == ValueType::Float)
+        r.literal.f[0] = static_cast<float>(v);
+      else if (e.type == ValueType::Bool)
+        r.literal.b = v != 0;
+      else
+        r.literal.u = static_cast<uint32_t>(v);
+    }
+  }
 
   CExpr expr(const Expr& e) {
     CExpr r;
@@ -125,6 +142,9 @@ struct Compiler {
     r.type = e.type;
     r.src = &e;
     switch (e.kind) {
+      case Expr::Kind::Constant:
+        constant(e, r);
+        break;
       case Expr::Kind::Local:
         if (const LocalInfo* info = scope.find(e.name)) {
           r.index = info->slot;
@@ -313,25 +333,31 @@ CountsOnly countsOnly(const CProgram& p) {
 
 CPipeline compilePipeline(const Case& c, const Plan& plan) {
   CPipeline out;
-  Compiler k{plan, out};
   const Pipeline& p = c.pipeline;
+  Compiler k{plan, out, p};
+  k.shader = "raygen";
   out.raygen = k.program(p.raygen);
   for (const Program& m : p.miss) {
+    k.shader = "miss" + std::to_string(out.miss.size());
     out.miss.push_back(k.program(m));
     out.miss_counts.push_back(countsOnly(out.miss.back()));
   }
-  for (const Program& m : p.callables) out.callables.push_back(k.program(m));
+  for (const Program& m : p.callables) {
+    k.shader = "callable" + std::to_string(out.callables.size());
+    out.callables.push_back(k.program(m));
+  }
   out.hit_programs.reserve(p.hit_groups.size() * 3);  // stable addresses for the groups
   for (const HitGroup& g : p.hit_groups) {
     CHitGroup cg;
-    auto add = [&](const std::optional<Program>& prog) -> const CProgram* {
+    auto add = [&](const std::optional<Program>& prog, const char* stage) -> const CProgram* {
       if (!prog) return nullptr;
+      k.shader = "hit" + std::to_string(out.groups.size()) + "." + stage;
       out.hit_programs.push_back(k.program(*prog));
       return &out.hit_programs.back();
     };
-    cg.closest_hit = add(g.closest_hit);
-    cg.any_hit = add(g.any_hit);
-    cg.intersection = add(g.intersection);
+    cg.closest_hit = add(g.closest_hit, "closest_hit");
+    cg.any_hit = add(g.any_hit, "any_hit");
+    cg.intersection = add(g.intersection, "intersection");
     if (cg.closest_hit) cg.closest_hit_counts = countsOnly(*cg.closest_hit);
     cg.any_hit_terminates = cg.any_hit && hasTerminate(*cg.any_hit);
     cg.payload = g.payload;

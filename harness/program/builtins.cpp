@@ -8,10 +8,49 @@ namespace {
 
 using namespace stage_letters;
 
+std::vector<BuiltinInfo> rayAndDataBuiltins();
+
+// gl_ObjectToWorldEXT, gl_WorldToObjectEXT and their 3x4 forms.
+std::vector<BuiltinInfo> instanceMatrixBuiltins() {
+  return {
+      {"object_to_world0", ValueType::Vec3, I | A | C,
+       "gl_ObjectToWorldEXT[0]: column 0 of the instance's object-to-world matrix (4 columns "
+       "of 3; object_to_world1..3 the others, 3 the translation)"},
+      {"object_to_world1", ValueType::Vec3, I | A | C, "gl_ObjectToWorldEXT[1]"},
+      {"object_to_world2", ValueType::Vec3, I | A | C, "gl_ObjectToWorldEXT[2]"},
+      {"object_to_world3", ValueType::Vec3, I | A | C, "gl_ObjectToWorldEXT[3]"},
+      {"world_to_object0", ValueType::Vec3, I | A | C,
+       "gl_WorldToObjectEXT[0]: column 0 of the inverse (world_to_object1..3 the others)"},
+      {"world_to_object1", ValueType::Vec3, I | A | C, "gl_WorldToObjectEXT[1]"},
+      {"world_to_object2", ValueType::Vec3, I | A | C, "gl_WorldToObjectEXT[2]"},
+      {"world_to_object3", ValueType::Vec3, I | A | C, "gl_WorldToObjectEXT[3]"},
+      {"object_to_world_3x4_0", ValueType::Vec4, I | A | C,
+       "gl_ObjectToWorld3x4EXT[0]: row 0 of the 3x4 object-to-world matrix (_1, _2 the others)"},
+      {"object_to_world_3x4_1", ValueType::Vec4, I | A | C, "gl_ObjectToWorld3x4EXT[1]"},
+      {"object_to_world_3x4_2", ValueType::Vec4, I | A | C, "gl_ObjectToWorld3x4EXT[2]"},
+      {"world_to_object_3x4_0", ValueType::Vec4, I | A | C,
+       "gl_WorldToObject3x4EXT[0]: row 0 of the 3x4 world-to-object matrix (_1, _2 the others)"},
+      {"world_to_object_3x4_1", ValueType::Vec4, I | A | C, "gl_WorldToObject3x4EXT[1]"},
+      {"world_to_object_3x4_2", ValueType::Vec4, I | A | C, "gl_WorldToObject3x4EXT[2]"},
+  };
+}
+
 }  // namespace
 
 const std::vector<BuiltinInfo>& builtins() {
-  static const std::vector<BuiltinInfo> table = {
+  static const std::vector<BuiltinInfo> table = [] {
+    std::vector<BuiltinInfo> all = rayAndDataBuiltins();
+    for (const BuiltinInfo& b : instanceMatrixBuiltins()) all.push_back(b);
+    return all;
+  }();
+  return table;
+}
+
+namespace {
+
+// Every built-in but the instance matrices.
+std::vector<BuiltinInfo> rayAndDataBuiltins() {
+  return {
       {"launch_id_x", ValueType::Uint, kAllStages, "x of gl_LaunchIDEXT"},
       {"launch_id_y", ValueType::Uint, kAllStages, "y of gl_LaunchIDEXT"},
       {"launch_size_x", ValueType::Uint, kAllStages, "x of gl_LaunchSizeEXT"},
@@ -50,25 +89,6 @@ const std::vector<BuiltinInfo>& builtins() {
       {"vertex_position2", ValueType::Vec3, A | C,
        "gl_HitTriangleVertexPositionsEXT[2]: the hit triangle's third vertex (as "
        "vertex_position0)"},
-      {"object_to_world0", ValueType::Vec3, I | A | C,
-       "gl_ObjectToWorldEXT[0]: column 0 of the instance's object-to-world matrix (4 columns "
-       "of 3; object_to_world1..3 the others, 3 the translation)"},
-      {"object_to_world1", ValueType::Vec3, I | A | C, "gl_ObjectToWorldEXT[1]"},
-      {"object_to_world2", ValueType::Vec3, I | A | C, "gl_ObjectToWorldEXT[2]"},
-      {"object_to_world3", ValueType::Vec3, I | A | C, "gl_ObjectToWorldEXT[3]"},
-      {"world_to_object0", ValueType::Vec3, I | A | C,
-       "gl_WorldToObjectEXT[0]: column 0 of the inverse (world_to_object1..3 the others)"},
-      {"world_to_object1", ValueType::Vec3, I | A | C, "gl_WorldToObjectEXT[1]"},
-      {"world_to_object2", ValueType::Vec3, I | A | C, "gl_WorldToObjectEXT[2]"},
-      {"world_to_object3", ValueType::Vec3, I | A | C, "gl_WorldToObjectEXT[3]"},
-      {"object_to_world_3x4_0", ValueType::Vec4, I | A | C,
-       "gl_ObjectToWorld3x4EXT[0]: row 0 of the 3x4 object-to-world matrix (_1, _2 the others)"},
-      {"object_to_world_3x4_1", ValueType::Vec4, I | A | C, "gl_ObjectToWorld3x4EXT[1]"},
-      {"object_to_world_3x4_2", ValueType::Vec4, I | A | C, "gl_ObjectToWorld3x4EXT[2]"},
-      {"world_to_object_3x4_0", ValueType::Vec4, I | A | C,
-       "gl_WorldToObject3x4EXT[0]: row 0 of the 3x4 world-to-object matrix (_1, _2 the others)"},
-      {"world_to_object_3x4_1", ValueType::Vec4, I | A | C, "gl_WorldToObject3x4EXT[1]"},
-      {"world_to_object_3x4_2", ValueType::Vec4, I | A | C, "gl_WorldToObject3x4EXT[2]"},
       {"aabb_min", ValueType::Vec3, I, "min corner of the primitive's AABB (object space)"},
       {"aabb_max", ValueType::Vec3, I, "max corner of the primitive's AABB (object space)"},
       {"payload.color", ValueType::Vec4, M | C | A | R,
@@ -93,8 +113,9 @@ const std::vector<BuiltinInfo>& builtins() {
       {"callee.value", ValueType::Uint, R | C | M | K,
        "value of the callable data after this stage's last call"},
   };
-  return table;
 }
+
+}  // namespace
 
 const BuiltinInfo* findBuiltin(const std::string& name) {
   // payload.word3 is the table's payload.word<i>.

@@ -85,8 +85,10 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
 class Checker {
  public:
   Checker(Stage stage, const std::vector<std::string>& counters,
-          const std::vector<std::string>& fields)
-      : stage_(stage), counters_(counters), fields_(fields) {}
+          const std::vector<std::string>& fields, const std::vector<SpecConstant>& constants)
+      : stage_(stage), counters_(counters), fields_(fields) {
+    scope_.setConstants(&constants);
+  }
 
   std::optional<ProgramError> block(std::vector<Stmt>& stmts) {
     scope_.openBlock();
@@ -377,8 +379,9 @@ class Checker {
 
 std::optional<ProgramError> checkProgram(Program& p, Stage stage,
                                          const std::vector<std::string>& counters,
-                                         const std::vector<std::string>& per_ray_fields) {
-  return Checker(stage, counters, per_ray_fields).block(p);
+                                         const std::vector<std::string>& per_ray_fields,
+                                         const std::vector<SpecConstant>& constants) {
+  return Checker(stage, counters, per_ray_fields, constants).block(p);
 }
 
 }  // namespace rayspec

@@ -21,6 +21,13 @@ std::optional<ValueType> valueTypeNamed(const std::string& name) {
   return std::nullopt;
 }
 
+const SpecConstant* LocalScope::findConstant(const std::string& name) const {
+  if (!constants_) return nullptr;
+  for (const SpecConstant& c : *constants_)
+    if (c.name == name) return &c;
+  return nullptr;
+}
+
 const LocalInfo* LocalScope::find(const std::string& name) const {
   for (auto it = names_.rbegin(); it != names_.rend(); ++it)
     if (it->first == name) return &it->second;

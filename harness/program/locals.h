@@ -44,8 +44,12 @@ class LocalScope {
   Frame openFrame();
   void closeFrame(Frame saved);
   uint32_t frameSlots() const { return frame_slots_; }  // slots the frame needs
+  // The specialization constants `const.NAME` reads (seen in every frame).
+  void setConstants(const std::vector<SpecConstant>* constants) { constants_ = constants; }
+  const SpecConstant* findConstant(const std::string& name) const;
 
  private:
+  const std::vector<SpecConstant>* constants_ = nullptr;
   std::vector<std::pair<std::string, LocalInfo>> names_;
   std::vector<size_t> blocks_;
   uint32_t next_slot_ = 0, frame_slots_ = 0;

@@ -62,6 +62,7 @@ struct ProgramError {
 };
 std::optional<ProgramError> checkProgram(Program& p, Stage stage,
                                          const std::vector<std::string>& counters,
-                                         const std::vector<std::string>& per_ray_fields);
+                                         const std::vector<std::string>& per_ray_fields,
+                                         const std::vector<SpecConstant>& constants = {});
 
 }  // namespace rayspec

@@ -29,7 +29,9 @@ int componentCount(ValueType t);  // Bool/Uint/Float 1, Vec2 2, ...
 //                          "payload.color", ...);
 //   {op: arg} / {op: [args]} -> Op (see ops.h: add, eq, odd, sphere_near, ...).
 struct Expr {
-  enum class Kind { Literal, Builtin, Op, Local };  // Local: `var.NAME`, name NAME
+  // Local: `var.NAME`, Constant: `const.NAME` (a specialization constant);
+  // name NAME.
+  enum class Kind { Literal, Builtin, Op, Local, Constant };
   Kind kind = Kind::Literal;
   ValueType type = ValueType::Uint;  // filled by the type checker
   std::vector<double> literal;       // Literal: 1..4 components
@@ -105,6 +107,16 @@ struct Stmt {
 };
 
 using Program = std::vector<Stmt>;
+
+// A specialization constant (pipeline.constants): constant_id is its index;
+// its value in a shader is pipeline.specialize's for that shader, else this
+// default. Uint, Float or Bool.
+struct SpecConstant {
+  std::string name;
+  ValueType type = ValueType::Uint;
+  double value = 0;
+  SourceLoc loc;
+};
 
 // Bounds of the control-flow vocabulary, the same on both sides: a repeat runs
 // at most kMaxLoopTrips times (a larger count is clamped), an array holds at

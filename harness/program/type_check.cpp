@@ -283,6 +283,12 @@ std::optional<ProgramError> checkExpr(Expr& e, Stage stage, const LocalScope* lo
   switch (e.kind) {
     case Expr::Kind::Local:
       return typeLocal(e, locals);
+    case Expr::Kind::Constant: {
+      const SpecConstant* k = locals ? locals->findConstant(e.name) : nullptr;
+      if (!k) return err(e, "'const." + e.name + "' is not in pipeline.constants");
+      e.type = k->type;
+      return std::nullopt;
+    }
     case Expr::Kind::Literal:
       return checkLiteral(e);
     case Expr::Kind::Builtin: {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <deque>
 
 #include "spirv/compile_glsl.h"
 #include "vulkan/vk_check.h"
@@ -17,7 +18,7 @@ CompiledShader compileOne(const GeneratedShader& g, StepCosts* costs) {
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   if (r.words.empty())
     throw ShaderCompileError(g.name + ": " + (r.error.empty() ? "no SPIR-V" : r.error));
-  return {g.stage, g.name, std::move(r.words)};
+  return {g.stage, g.name, std::move(r.words), g.specialization};
 }
 
 VkShaderStageFlagBits vkStage(Stage s) {
@@ -55,6 +56,7 @@ class StageList {
     stage.stage = vkStage(s.stage);
     stage.module = module;
     stage.pName = "main";
+    stage.pSpecializationInfo = specialization(s);
     stages_.push_back(stage);
     return static_cast<uint32_t>(stages_.size() - 1);
   }
@@ -64,9 +66,30 @@ class StageList {
   const std::vector<VkPipelineShaderStageCreateInfo>& stages() const { return stages_; }
 
  private:
+  // Each constant a 4-byte entry of the shader's own data; null when it sets none.
+  const VkSpecializationInfo* specialization(const CompiledShader& s) {
+    if (s.specialization.empty()) return nullptr;
+    Specialization& sp = specializations_.emplace_back();
+    for (const auto& [id, bits] : s.specialization) {
+      sp.entries.push_back({id, static_cast<uint32_t>(4 * sp.data.size()), 4});
+      sp.data.push_back(bits);
+    }
+    sp.info.mapEntryCount = static_cast<uint32_t>(sp.entries.size());
+    sp.info.pMapEntries = sp.entries.data();
+    sp.info.dataSize = 4 * sp.data.size();
+    sp.info.pData = sp.data.data();
+    return &sp.info;
+  }
+
+  struct Specialization {
+    std::vector<VkSpecializationMapEntry> entries;
+    std::vector<uint32_t> data;
+    VkSpecializationInfo info{};
+  };
   const VulkanContext& ctx_;
   Cleanup& local_;
   std::vector<VkPipelineShaderStageCreateInfo> stages_;
+  std::deque<Specialization> specializations_;  // stable addresses
 };
 
 VkRayTracingShaderGroupCreateInfoKHR group(VkRayTracingShaderGroupTypeKHR type) {

@@ -28,6 +28,7 @@ struct CompiledShader {
   Stage stage = Stage::Raygen;
   std::string name;
   std::vector<uint32_t> spirv;
+  std::vector<std::pair<uint32_t, uint32_t>> specialization;  // GeneratedShader's
 };
 
 struct CompiledGroup {
