@@ -260,6 +260,9 @@ struct Pipeline {
     return n;
   }
   std::vector<Program> callables;
+  // Extra uint words of the hit attribute after its vec2
+  // (pipeline.hit_attribute.words, 0..kMaxAttributeWords).
+  uint32_t attribute_words = 0;
   // Specialization constants (pipeline.constants), and the values some
   // shaders take (pipeline.specialize, by GeneratedShader name: "raygen",
   // "miss0", "hit1.any_hit", "callable2", ...), by constant index.

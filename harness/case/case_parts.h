@@ -53,6 +53,11 @@ void expandFunctions(YamlReader& r, const YAML::Node& functions, Pipeline& p);
 // latter names shaders, so it is read after the programs.
 void parseConstants(YamlReader& r, const YAML::Node& n, Pipeline& p);
 void parseSpecialize(YamlReader& r, const YAML::Node& n, Pipeline& p);
+// Hit attribute words (check_attribute_words.cpp): a report's word<i> and an
+// attribute.word<i> read within pipeline.hit_attribute.words, and read only
+// in a hit group with an intersection shader (a triangle's attribute is its
+// barycentrics).
+void checkAttributeWords(YamlReader& r, const Pipeline& p);
 bool parseExpr(YamlReader& r, const YAML::Node& n, const std::string& field, Expr& out);
 
 // Checks every program of the pipeline for its stage (program/ops.h checkProgram).

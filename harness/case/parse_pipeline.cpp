@@ -185,7 +185,7 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
   if (!r.expectMap(n, "pipeline",
                    {"max_recursion", "flags", "raygen", "raygens", "raygen_group", "raygen_data",
                     "miss", "hit_groups", "callables", "sbt", "libraries", "payloads",
-                    "callable_depth", "functions", "constants", "specialize"}))
+                    "callable_depth", "functions", "constants", "specialize", "hit_attribute"}))
     return;
   if (auto v = YamlReader::get(n, "max_recursion"); v.IsDefined())
     if (auto x = r.uint(v, "pipeline.max_recursion", 31)) {
@@ -220,6 +220,11 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
     }
   if (auto v = YamlReader::get(n, "payloads"); v.IsDefined()) parsePayloadTypes(r, v, p);
   if (auto v = YamlReader::get(n, "constants"); v.IsDefined()) parseConstants(r, v, p);
+  if (auto v = YamlReader::get(n, "hit_attribute");
+      v.IsDefined() && r.expectMap(v, "pipeline.hit_attribute", {"words"}))
+    if (auto w = YamlReader::get(v, "words"); w.IsDefined())
+      if (auto x = r.uint(w, "pipeline.hit_attribute.words", kMaxAttributeWords))
+        p.attribute_words = *x;
   if (auto v = YamlReader::get(n, "miss"); v.IsDefined()) parseMissShaders(r, v, p);
   if (auto v = YamlReader::get(n, "hit_groups"); v.IsDefined())
     parseHitGroups(r, v, p, p.hit_groups);
@@ -230,6 +235,7 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
 
   if (auto v = YamlReader::get(n, "libraries"); v.IsDefined()) parseLibraries(r, v, p);
   checkNoNullGroups(r, p);
+  checkAttributeWords(r, p);
 
   p.sbt_miss = defaultRegion(p.miss.size());
   p.sbt_hit = defaultRegion(p.hit_groups.size());

@@ -157,7 +157,10 @@ bool parseTrace(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& 
 
 bool parseReport(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
   s.kind = Stmt::Kind::Report;
-  if (!r.expectMap(v, f, {"t", "kind", "attribute", "accepted", "rejected"})) return false;
+  if (!r.expectMap(v, f,
+                   {"t", "kind", "attribute", "word0", "word1", "word2", "word3", "word4", "word5",
+                    "accepted", "rejected"}))
+    return false;
   if (!(r.require(v, f, "t") & r.require(v, f, "kind"))) return false;
   bool ok = parseExpr(r, YamlReader::get(v, "t"), f + ".t", s.t);
   ok = parseExpr(r, YamlReader::get(v, "kind"), f + ".kind", s.hit_kind) && ok;
@@ -166,6 +169,12 @@ bool parseReport(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt&
     ok = parseExpr(r, a, f + ".attribute", e) && ok;
     s.attribute.push_back(std::move(e));
   }
+  for (const char* key : {"word0", "word1", "word2", "word3", "word4", "word5"})
+    if (auto a = YamlReader::get(v, key); a.IsDefined()) {
+      Expr e;
+      ok = parseExpr(r, a, f + "." + key, e) && ok;
+      s.assigns.emplace_back(key, std::move(e));
+    }
   if (auto a = YamlReader::get(v, "accepted"); a.IsDefined())
     ok = parseBlock(r, a, f + ".accepted", s.then_) && ok;
   if (auto a = YamlReader::get(v, "rejected"); a.IsDefined())

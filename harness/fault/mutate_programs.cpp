@@ -106,8 +106,9 @@ std::string reportKindDropped(Case& c, ModelOptions&) {
 std::string hitAttributesLost(Case& c, ModelOptions&) {
   return describeCount(eachReport(c,
                                   [](Stmt& s) {
-                                    const bool had = !s.attribute.empty();
+                                    const bool had = !s.attribute.empty() || !s.assigns.empty();
                                     s.attribute.clear();
+                                    s.assigns.clear();  // its words
                                     return had;
                                   }),
                        "reports lose their attribute");

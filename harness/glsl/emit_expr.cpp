@@ -96,6 +96,7 @@ std::string builtin(const std::string& name, Stage stage) {
       {"callee.color", "callee.color"},
       {"callee.value", "callee.value"},
   };
+  if (auto w = attributeWordBuiltin(name)) return "rs_attr.words[" + std::to_string(*w) + "]";
   if (auto w = payloadWordBuiltin(name))  // payload.word3 -> payload.words[3]
     return std::string(w->child ? "child" : "payload") + ".words[" + std::to_string(w->index) + "]";
   if (name == "hit") {
@@ -151,6 +152,7 @@ std::string emitExpr(const Expr& e, const StageContext& ctx) {
     case Expr::Kind::Literal:
       return literal(e);
     case Expr::Kind::Builtin:
+      if (e.name == "barycentrics" && ctx.attribute_words) return "rs_attr.bary";
       return builtin(e.name, ctx.stage);
     case Expr::Kind::Op:
       return op(e, ctx);

@@ -99,8 +99,16 @@ void interfaceVariables(const StageContext& ctx, GlslWriter& out) {
   if (u.call)
     out.line("layout(location = " + std::to_string(calleeLocation(s)) +
              ") callableDataEXT RsCallData callee;");
-  if (u.hit_attribute && (s == Stage::ClosestHit || s == Stage::AnyHit || s == Stage::Intersection))
-    out.line("hitAttributeEXT vec2 rs_attr;");
+  if (u.hit_attribute &&
+      (s == Stage::ClosestHit || s == Stage::AnyHit || s == Stage::Intersection)) {
+    if (ctx.attribute_words) {  // pipeline.hit_attribute.words: 8 + 4 x words bytes
+      out.line("struct RsAttr { vec2 bary; uint words[" + std::to_string(ctx.attribute_words) +
+               "]; };");
+      out.line("hitAttributeEXT RsAttr rs_attr;");
+    } else {
+      out.line("hitAttributeEXT vec2 rs_attr;");
+    }
+  }
   if (s == Stage::Raygen && ctx.plan.records) {
     for (size_t i = 0; i < ctx.plan.images.size(); ++i) {
       const ImageOutput& img = ctx.plan.images[i];
@@ -183,8 +191,10 @@ std::vector<std::pair<uint32_t, uint32_t>> specializationOf(const Case& c,
 }  // namespace
 
 GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const std::string& name,
-                          const Program& program, uint32_t payload_location) {
-  StageContext ctx{c, plan, stage, name, findStageUses(program, stage, plan), payload_location};
+                          const Program& program, uint32_t payload_location,
+                          uint32_t attribute_words) {
+  StageContext ctx{
+      c, plan, stage, name, findStageUses(program, stage, plan), payload_location, attribute_words};
   if (plan.records) ctx.uses.record_fields.insert(recordFieldIndex(runsField(stage)));
   if (plan.records && stage == Stage::AnyHit)
     for (const char* f : {"any_hit_slots", "any_hit_repeats"})

@@ -63,8 +63,16 @@ void assignFields(const Stmt& s, const std::string& target, const StageContext& 
 }
 
 void report(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
-  out.line("rs_attr = " +
+  const std::string bary = ctx.attribute_words ? "rs_attr.bary" : "rs_attr";
+  out.line(bary + " = " +
            (s.attribute.empty() ? std::string("vec2(0.0)") : emitExpr(s.attribute[0], ctx)) + ";");
+  // Words the report does not give are zero.
+  for (uint32_t i = 0; i < ctx.attribute_words; ++i) {
+    std::string value = "0u";
+    for (const auto& [name, e] : s.assigns)
+      if (payloadWordField(name) == i) value = emitExpr(e, ctx);
+    out.line("rs_attr.words[" + std::to_string(i) + "] = " + value + ";");
+  }
   const std::string call =
       "reportIntersectionEXT(" + emitExpr(s.t, ctx) + ", " + emitExpr(s.hit_kind, ctx) + ")";
   if (s.then_.empty() && s.else_.empty()) {

@@ -22,14 +22,16 @@ GeneratedPipeline generateGlsl(const Case& c, const Plan& plan) {
     const HitGroup& h = p.hit_groups[i];
     const std::string prefix = "hit" + std::to_string(i) + ".";
     GeneratedGroup group;
+    const uint32_t words = h.intersection ? p.attribute_words : 0;
     if (h.closest_hit)
-      group.closest_hit =
-          emitStage(c, plan, Stage::ClosestHit, prefix + "closest_hit", *h.closest_hit, h.payload);
+      group.closest_hit = emitStage(c, plan, Stage::ClosestHit, prefix + "closest_hit",
+                                    *h.closest_hit, h.payload, words);
     if (h.any_hit && plan.any_hit)
-      group.any_hit = emitStage(c, plan, Stage::AnyHit, prefix + "any_hit", *h.any_hit, h.payload);
+      group.any_hit =
+          emitStage(c, plan, Stage::AnyHit, prefix + "any_hit", *h.any_hit, h.payload, words);
     if (h.intersection && plan.intersection)
-      group.intersection =
-          emitStage(c, plan, Stage::Intersection, prefix + "intersection", *h.intersection);
+      group.intersection = emitStage(c, plan, Stage::Intersection, prefix + "intersection",
+                                     *h.intersection, 0, words);
     g.hit_groups.push_back(std::move(group));
   }
   for (size_t i = 0; i < p.callables.size(); ++i)

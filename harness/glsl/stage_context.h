@@ -36,6 +36,9 @@ struct StageContext {
   std::string name;  // "raygen", "miss0", "hit1.any_hit", ...
   StageUses uses;
   uint32_t payload_location = 0;  // miss, closest-hit, any-hit: the type of their incoming payload
+  // A stage of a hit group with an intersection shader: the hit attribute's
+  // words (pipeline.hit_attribute.words); 0 elsewhere (a plain vec2).
+  uint32_t attribute_words = 0;
 };
 
 // The location of the callable data this stage passes to executeCallableEXT.

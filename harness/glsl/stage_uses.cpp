@@ -1,6 +1,7 @@
 #include <algorithm>
 
 #include "glsl/stage_context.h"
+#include "program/payload_words.h"
 #include "results/record_layout.h"
 
 namespace rayspec {
@@ -13,7 +14,7 @@ bool kept(const std::vector<std::string>& names, const std::string& name) {
 void visitExpr(const Expr& e, StageUses& u) {
   if (e.kind == Expr::Kind::Builtin) {
     if (e.name == "aabb_min" || e.name == "aabb_max") u.scene = true;
-    if (e.name == "barycentrics") u.hit_attribute = true;
+    if (e.name == "barycentrics" || attributeWordBuiltin(e.name)) u.hit_attribute = true;
     if (e.name == "cull_mask") u.cull_mask = true;
     if (e.name.rfind("vertex_position", 0) == 0) u.position_fetch = true;
   } else if (e.kind == Expr::Kind::Op) {

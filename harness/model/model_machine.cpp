@@ -235,6 +235,8 @@ Val Machine::builtin(const CExpr& e, StageEnv& env) {
     case kBiVertex1:
     case kBiVertex2:
       return vertexPosition(*hv, e.builtin - kBiVertex0);
+    case kBiAttributeWord:
+      return fromUint(hv->words[e.index % kMaxAttributeWords]);
     default:
       if (e.builtin >= kBiObjectToWorld0 && e.builtin < kBiTransformEnd)
         return transformBuiltin(*hv, e.builtin - kBiObjectToWorld0);

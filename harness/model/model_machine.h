@@ -63,6 +63,8 @@ struct HitView {
   // A triangle hit's vertices in object space (geometry transform applied):
   // the vertex_position<i> built-ins; nullptr for a box.
   const std::array<Vec3, 3>* vertices = nullptr;
+  // The words a report gave the hit attribute (attribute.word<i>).
+  std::array<uint32_t, kMaxAttributeWords> words{};
 };
 
 struct Traversal;
@@ -87,6 +89,7 @@ struct Committed {
   // Exact tier: bound on a device's t beyond the model's (a sphere root's
   // rounding, a triangle's frame error).
   double t_err = 0;
+  std::array<uint32_t, kMaxAttributeWords> words{};  // a report's attribute words
 };
 
 struct StageEnv {

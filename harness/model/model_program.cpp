@@ -63,7 +63,8 @@ const std::vector<std::string>& builtinNames() {
                                                  "world_to_object3",
                                                  "world_to_object_3x4_0",
                                                  "world_to_object_3x4_1",
-                                                 "world_to_object_3x4_2"};
+                                                 "world_to_object_3x4_2",
+                                                 "attribute.word<i>"};
   return names;
 }
 
@@ -163,10 +164,13 @@ struct Compiler {
       case Expr::Kind::Builtin: {
         const auto& names = builtinNames();
         const auto word = payloadWordBuiltin(e.name);  // payload.word3: word<i>, index 3
+        const auto attribute_word = attributeWordBuiltin(e.name);
         if (word) r.index = word->index;
-        const auto it =
-            std::find(names.begin(), names.end(),
-                      word ? (word->child ? "child.word<i>" : "payload.word<i>") : e.name);
+        if (attribute_word) r.index = *attribute_word;
+        const auto it = std::find(names.begin(), names.end(),
+                                  word ? (word->child ? "child.word<i>" : "payload.word<i>")
+                                  : attribute_word ? "attribute.word<i>"
+                                                   : e.name);
         if (it != names.end()) {
           r.builtin = static_cast<uint8_t>(it - names.begin());
           out.read_bits |= uint64_t{1} << r.builtin;

@@ -66,7 +66,8 @@ enum Builtin : uint8_t {
   kBiObjectToWorld0,  // + c: object_to_world<c>, then + 4 + r: object_to_world_3x4_<r>
   kBiWorldToObject0 = kBiObjectToWorld0 + 7,  // the same for world_to_object
   kBiTransformEnd = kBiWorldToObject0 + 7,
-  kBiCount = kBiTransformEnd,
+  kBiAttributeWord = kBiTransformEnd,  // CExpr::index: the word
+  kBiCount,
   kBiUnknown = 0xFF
 };
 const std::vector<std::string>& builtinNames();

@@ -203,6 +203,7 @@ Flow Machine::report(const CStmt& s, StageEnv& env) {
   if (reportInside(s, env, *tr, t)) {
     HitView hv = *env.hit;
     setHit(hv, t, kind, attr.f[0], attr.f[1]);
+    for (const CAssign& a : s.assigns) hv.words[a.word % kMaxAttributeWords] = eval(a.value, env).u;
     Flow ah = Flow::Continue;
     if (!tr->cur_opaque && tr->cur_group && tr->cur_group->any_hit) {
       // R-TMAX-VIEW: any-hit sees the candidate's t.
@@ -216,6 +217,7 @@ Flow Machine::report(const CStmt& s, StageEnv& env) {
       accepted = true;
       tr->best = {true, static_cast<double>(t), hv.instance, hv.geometry, hv.primitive, kind, hv.b1,
                   hv.b2};
+      tr->best.words = hv.words;
       // R-PREC: how far a device's root may lie from this one.
       if (tr->exact && reportsSphereRoot(s, env)) tr->best.t_err = sphereRootError(s, hv, env);
       tr->tmax_cur = t;
@@ -430,6 +432,7 @@ void Machine::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Com
         HitView hv =
             viewOf(scene, c, r, best.instance, best.geometry, best.primitive, sh_.need_object_ray);
         setHit(hv, static_cast<float>(best.t), best.kind, best.b1, best.b2);
+        hv.words = best.words;
         bumpRuns(kRunsClosestHit);
         StageEnv env = hitStage(Stage::ClosestHit, rec->data, &payload, r, hv, hv.t, depth);
         exec(*grp->closest_hit, env);

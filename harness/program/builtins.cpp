@@ -89,6 +89,9 @@ std::vector<BuiltinInfo> rayAndDataBuiltins() {
       {"vertex_position2", ValueType::Vec3, A | C,
        "gl_HitTriangleVertexPositionsEXT[2]: the hit triangle's third vertex (as "
        "vertex_position0)"},
+      {"attribute.word<i>", ValueType::Uint, A | C,
+       "word i (0..5) of the hit attribute (pipeline.hit_attribute.words), as the intersection "
+       "shader reported it; hit groups with an intersection shader only"},
       {"aabb_min", ValueType::Vec3, I, "min corner of the primitive's AABB (object space)"},
       {"aabb_max", ValueType::Vec3, I, "max corner of the primitive's AABB (object space)"},
       {"payload.color", ValueType::Vec4, M | C | A | R,
@@ -121,6 +124,7 @@ const BuiltinInfo* findBuiltin(const std::string& name) {
   // payload.word3 is the table's payload.word<i>.
   if (auto w = payloadWordBuiltin(name))
     return findBuiltin(w->child ? "child.word<i>" : "payload.word<i>");
+  if (attributeWordBuiltin(name)) return findBuiltin("attribute.word<i>");
   for (const BuiltinInfo& b : builtins())
     if (name == b.name) return &b;
   return nullptr;

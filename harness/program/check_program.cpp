@@ -129,6 +129,8 @@ class Checker {
         if (s.attribute.size() > 1) return ProgramError{"report takes one attribute", s.loc};
         for (Expr& e : s.attribute)
           if (auto r = as(e, ValueType::Vec2, "report attribute")) return r;
+        for (auto& [name, value] : s.assigns)
+          if (auto r = as(value, ValueType::Uint, "report " + name)) return r;
         if (auto r = block(s.then_)) return r;
         return block(s.else_);
       }

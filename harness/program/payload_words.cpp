@@ -22,4 +22,12 @@ std::optional<PayloadWordRead> payloadWordBuiltin(const std::string& name) {
   return std::nullopt;
 }
 
+std::optional<uint32_t> attributeWordBuiltin(const std::string& name) {
+  const std::string prefix = "attribute.";
+  if (name.compare(0, prefix.size(), prefix) != 0) return std::nullopt;
+  const auto i = payloadWordField(name.substr(prefix.size()));
+  if (!i || *i >= kMaxAttributeWords) return std::nullopt;
+  return i;
+}
+
 }  // namespace rayspec

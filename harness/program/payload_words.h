@@ -25,4 +25,12 @@ struct PayloadWordRead {
 };
 std::optional<PayloadWordRead> payloadWordBuiltin(const std::string& name);
 
+// The extra uint words of the hit attribute (pipeline.hit_attribute.words):
+// a report writes `word<i>`, any-hit and closest-hit read `attribute.word<i>`.
+// The vec2 and 6 words fill the 32 bytes every device allows
+// (maxRayHitAttributeSize).
+constexpr uint32_t kMaxAttributeWords = 6;
+// "attribute.word<i>" -> i for i < kMaxAttributeWords; nullopt otherwise.
+std::optional<uint32_t> attributeWordBuiltin(const std::string& name);
+
 }  // namespace rayspec
