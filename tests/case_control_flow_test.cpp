@@ -84,6 +84,58 @@ TEST(CaseControlFlow, FunctionsAreKnownNotRecursiveAndGetTheirArguments) {
               13, "do", "not allowed in raygen");
 }
 
+TEST(CaseControlFlow, ConstantsAreDeclaredTypedAndSetForShadersThatExist) {
+  const std::string constants =
+      "  constants: {n: 2, scale: 0.5, on: true}\n"
+      "  specialize:\n";
+  expectError(parse(withRaygen("    - record: {value: const.m}\n")), 10, "value",
+              "not in pipeline.constants");
+  expectError(
+      parse(withRaygen("    - record: {value: const.n}\n", constants + "    miss7: {n: 3}\n")), 13,
+      "specialize.miss7", "no shader 'miss7'");
+  expectError(
+      parse(withRaygen("    - record: {value: const.n}\n", constants + "    raygen: {k: 3}\n")), 13,
+      "specialize.raygen.k", "no constant 'k'");
+  expectError(
+      parse(withRaygen("    - record: {value: const.n}\n", constants + "    raygen: {n: 2.5}\n")),
+      13, "specialize.raygen.n", "is a Uint");
+  const ParseResult good =
+      parse(withRaygen("    - record: {value: const.n}\n", constants + "    raygen: {n: 9}\n"));
+  ASSERT_TRUE(good.value.has_value()) << allErrors(good);
+  EXPECT_EQ(good.value->pipeline.constantIn("raygen", 0), 9.0);
+  EXPECT_EQ(good.value->pipeline.constantIn("miss0", 0), 2.0);
+  EXPECT_EQ(good.value->pipeline.constants[2].type, ValueType::Bool);
+}
+
+// A procedural group's attribute words: within pipeline.hit_attribute, read
+// only where an intersection shader reports them.
+TEST(CaseControlFlow, AttributeWordsStayWithinTheirTypeAndTheBoxes) {
+  const std::string head =
+      "rules: [R-PAYLOAD]\n"
+      "scene:\n"
+      "  blas:\n"
+      "    b: [{aabbs: [[-1, -1, -1, 1, 1, 1]]}]\n"
+      "    t: [{triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}}]\n"
+      "  instances: [{blas: b}, {blas: t, sbt_offset: 1}]\n"
+      "rays:\n"
+      "  list: [{origin: [0, 0, 5], direction: [0, 0, -1]}]\n"
+      "pipeline:\n"
+      "  hit_attribute: {words: 2}\n"
+      "  hit_groups:\n";
+  const std::string tail = "outputs:\n  per_ray: [value]\n";
+  expectError(parse(head + "    - intersection: [report: {t: 1.0, kind: 1, word2: 5}]\n" +
+                    "    - closest_hit: [record: {value: 1}]\n" + tail),
+              12, "word2", "has 2 word(s)");
+  expectError(parse(head + "    - intersection: [report: {t: 1.0, kind: 1}]\n" +
+                    "    - closest_hit: [record: {value: attribute.word0}]\n" + tail),
+              13, "value", "triangles");
+  const ParseResult good =
+      parse(head + "    - intersection: [report: {t: 1.0, kind: 1, word1: 5}]\n" +
+            "      closest_hit: [record: {value: attribute.word1}]\n" +
+            "    - closest_hit: [record: {value: 1}]\n" + tail);
+  EXPECT_TRUE(good.value.has_value()) << allErrors(good);
+}
+
 TEST(CaseControlFlow, AGoodProgramParses) {
   const ParseResult r = parse(withRaygen(
       "    - let: {s: 0}\n"

@@ -96,5 +96,37 @@ TEST(GlslControlFlow, ALoopEvaluatesItsCountOnceAndClampsIt) {
   EXPECT_TRUE(spirv.error.empty()) << spirv.error;
 }
 
+// Each shader gets the values pipeline.specialize sets for it, as 32-bit
+// words by constant_id; every stage declares every constant with its default.
+TEST(GlslControlFlow, SpecializationReachesEachShader) {
+  const Case c = parsedCase(
+      "rules: [R-CONTROL-FLOW]\n"
+      "scene:\n"
+      "  blas:\n"
+      "    tri: [{triangles: {vertices: [[-1, -1, 0], [1, -1, 0], [0, 1, 0]]}}]\n"
+      "  instances: [{blas: tri}]\n"
+      "rays:\n"
+      "  list: [{origin: [0, 0, 5], direction: [0, 0, -1]}]\n"
+      "pipeline:\n"
+      "  constants: {n: 2, scale: 0.5, on: false}\n"
+      "  specialize: {raygen: {scale: 2, on: true}, miss0: {n: 7}}\n"
+      "  raygen: [trace: {}, {if: const.on, then: [{record: {hit_t: const.scale}}]}]\n"
+      "  miss: [[payload: {value: const.n}]]\n"
+      "  hit_groups: [{closest_hit: [payload: {value: 1}]}]\n"
+      "outputs:\n"
+      "  per_ray: [hit_t]\n");
+  const GeneratedPipeline g = generateGlsl(c, derivePlan(c));
+  using Pairs = std::vector<std::pair<uint32_t, uint32_t>>;
+  EXPECT_EQ(g.raygen.specialization, (Pairs{{1, 0x40000000u}, {2, 1u}}));
+  EXPECT_EQ(g.miss.at(0).specialization, (Pairs{{0, 7u}}));
+  EXPECT_TRUE(g.hit_groups.at(0).closest_hit->specialization.empty());
+  EXPECT_NE(g.raygen.glsl.find("layout(constant_id = 1) const float c_scale = 0.5;"),
+            std::string::npos)
+      << g.raygen.glsl;
+  EXPECT_NE(g.miss[0].glsl.find("payload.value = c_n;"), std::string::npos);
+  const SpirvResult spirv = compileGlsl(g.raygen.glsl, Stage::Raygen);
+  EXPECT_TRUE(spirv.error.empty()) << spirv.error;
+}
+
 }  // namespace
 }  // namespace rayspec

@@ -6,8 +6,10 @@ namespace rayspec::model_test {
 namespace {
 
 // Four rays along x (launch_id_x 0..3) that all miss; `raygen` is the raygen
-// program (YAML, indented by four), `extra` more pipeline fields.
-Case missCase(const std::string& raygen, const std::string& extra = "") {
+// program (YAML, indented by four), `extra` more pipeline fields, `miss` the
+// miss shader's program.
+Case missCase(const std::string& raygen, const std::string& extra = "",
+              const std::string& miss = "[payload: {value: 5}]") {
   return parseInline(
       "rules: [R-CONTROL-FLOW]\n"
       "scene:\n"
@@ -18,8 +20,8 @@ Case missCase(const std::string& raygen, const std::string& extra = "") {
       "  grid: {size: [4, 1], origin: [10, 10, 1], du: [1, 0, 0], dv: [0, 1, 0], "
       "direction: [0, 0, -1]}\n"
       "pipeline:\n" +
-      extra +
-      "  miss: [[payload: {value: 5}]]\n"
+      extra + "  miss: [" + miss +
+      "]\n"
       "  hit_groups: [{closest_hit: [payload: {value: 6}]}]\n"
       "  raygen:\n" +
       raygen +
@@ -122,6 +124,18 @@ TEST(ModelControlFlow, LocalsLiveAcrossATrace) {
   o.faults.locals_lost_across_calls = true;
   const Results lost = runOnModel(c, derivePlan(c), o);
   EXPECT_EQ(values(lost, "value"), (V{0, 0, 0, 0}));
+}
+
+TEST(ModelControlFlow, EachShaderReadsItsOwnSpecialization) {
+  const Case c = missCase(
+      "    - trace: {}\n"
+      "    - record: {value: const.n, value1: payload.value}\n",
+      "  constants: {n: 2}\n"
+      "  specialize: {raygen: {n: 40}}\n",
+      "[payload: {value: const.n}]");
+  const Results r = runTier(c, ModelTier::Fast);
+  EXPECT_EQ(values(r, "value"), (V{40, 40, 40, 40}));  // raygen's own value
+  EXPECT_EQ(values(r, "value1"), (V{2, 2, 2, 2}));     // the miss keeps the default
 }
 
 }  // namespace

@@ -173,6 +173,14 @@ void checkNoNullGroups(YamlReader& r, const Pipeline& p) {
   }
 }
 
+// pipeline.hit_attribute: {words: N}, the hit attribute's words after its vec2.
+void parseHitAttribute(YamlReader& r, const YAML::Node& v, Pipeline& p) {
+  if (!r.expectMap(v, "pipeline.hit_attribute", {"words"})) return;
+  if (auto w = YamlReader::get(v, "words"); w.IsDefined())
+    if (auto x = r.uint(w, "pipeline.hit_attribute.words", kMaxAttributeWords))
+      p.attribute_words = *x;
+}
+
 }  // namespace
 
 void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
@@ -220,11 +228,7 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
     }
   if (auto v = YamlReader::get(n, "payloads"); v.IsDefined()) parsePayloadTypes(r, v, p);
   if (auto v = YamlReader::get(n, "constants"); v.IsDefined()) parseConstants(r, v, p);
-  if (auto v = YamlReader::get(n, "hit_attribute");
-      v.IsDefined() && r.expectMap(v, "pipeline.hit_attribute", {"words"}))
-    if (auto w = YamlReader::get(v, "words"); w.IsDefined())
-      if (auto x = r.uint(w, "pipeline.hit_attribute.words", kMaxAttributeWords))
-        p.attribute_words = *x;
+  if (auto v = YamlReader::get(n, "hit_attribute"); v.IsDefined()) parseHitAttribute(r, v, p);
   if (auto v = YamlReader::get(n, "miss"); v.IsDefined()) parseMissShaders(r, v, p);
   if (auto v = YamlReader::get(n, "hit_groups"); v.IsDefined())
     parseHitGroups(r, v, p, p.hit_groups);
