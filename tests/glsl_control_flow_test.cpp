@@ -11,7 +11,8 @@
 namespace rayspec {
 namespace {
 
-Case functionCase() {
+// One triangle under one ray, with the pipeline and outputs `rest` gives.
+Case triangleCase(const std::string& rest) {
   return parsedCase(
       "rules: [R-CONTROL-FLOW]\n"
       "scene:\n"
@@ -20,7 +21,12 @@ Case functionCase() {
       "  instances: [{blas: tri}]\n"
       "rays:\n"
       "  list: [{origin: [0, 0, 5], direction: [0, 0, -1]}]\n"
-      "pipeline:\n"
+      "pipeline:\n" +
+      rest);
+}
+
+Case functionCase() {
+  return triangleCase(
       "  functions:\n"
       "    inner:\n"
       "      params: {n: uint}\n"
@@ -66,15 +72,7 @@ TEST(GlslControlFlow, FunctionsComeBeforeTheirCallersAndCompile) {
 }
 
 TEST(GlslControlFlow, ALoopEvaluatesItsCountOnceAndClampsIt) {
-  const Case c = parsedCase(
-      "rules: [R-CONTROL-FLOW]\n"
-      "scene:\n"
-      "  blas:\n"
-      "    tri: [{triangles: {vertices: [[-1, -1, 0], [1, -1, 0], [0, 1, 0]]}}]\n"
-      "  instances: [{blas: tri}]\n"
-      "rays:\n"
-      "  list: [{origin: [0, 0, 5], direction: [0, 0, -1]}]\n"
-      "pipeline:\n"
+  const Case c = triangleCase(
       "  raygen:\n"
       "    - array: {name: a, of: vec2, size: 4}\n"
       "    - repeat: launch_id_x\n"
@@ -99,15 +97,7 @@ TEST(GlslControlFlow, ALoopEvaluatesItsCountOnceAndClampsIt) {
 // Each shader gets the values pipeline.specialize sets for it, as 32-bit
 // words by constant_id; every stage declares every constant with its default.
 TEST(GlslControlFlow, SpecializationReachesEachShader) {
-  const Case c = parsedCase(
-      "rules: [R-CONTROL-FLOW]\n"
-      "scene:\n"
-      "  blas:\n"
-      "    tri: [{triangles: {vertices: [[-1, -1, 0], [1, -1, 0], [0, 1, 0]]}}]\n"
-      "  instances: [{blas: tri}]\n"
-      "rays:\n"
-      "  list: [{origin: [0, 0, 5], direction: [0, 0, -1]}]\n"
-      "pipeline:\n"
+  const Case c = triangleCase(
       "  constants: {n: 2, scale: 0.5, on: false}\n"
       "  specialize: {raygen: {scale: 2, on: true}, miss0: {n: 7}}\n"
       "  raygen: [trace: {}, {if: const.on, then: [{record: {hit_t: const.scale}}]}]\n"
