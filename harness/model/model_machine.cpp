@@ -1,5 +1,6 @@
-// The stage-program interpreter of the model (the meaning of every statement,
-// built-in and op; program/program.h, builtins.h, ops.h).
+// The stage-program interpreter of the model: the meaning of every statement
+// and op (program/program.h, ops.h); built-ins in model_builtins.cpp, control
+// flow in model_control_flow.cpp.
 #include "model/model_machine.h"
 
 #include <algorithm>
@@ -18,27 +19,6 @@ uint32_t fbits(float f) {
 }
 float bitsf(uint32_t u) {
   return std::bit_cast<float>(u);
-}
-
-Val fromVec3(const Vec3& v) {
-  Val r;
-  r.f = {v[0], v[1], v[2], 0};
-  return r;
-}
-Val fromVec4(const std::array<float, 4>& v) {
-  Val r;
-  r.f = v;
-  return r;
-}
-Val fromUint(uint32_t u) {
-  Val r;
-  r.u = u;
-  return r;
-}
-Val fromFloat(float f) {
-  Val r;
-  r.f[0] = f;
-  return r;
 }
 
 bool isVec(ValueType t) {
@@ -99,149 +79,6 @@ void Machine::record(int idx, const Val& v, ValueType t) {
       rec_[f.offset + k] = fbits(t == ValueType::Uint && k == 0 ? static_cast<float>(v.u) : v.f[k]);
   }
   rec_[kRecordWrittenMaskWord] |= 1u << idx;
-}
-
-// The payload and callable data a stage reads (payload.*, child.*, call.*, callee.*).
-Val Machine::dataBuiltin(const CExpr& e, StageEnv& env) {
-  static const Payload kNoPayload;
-  static const CallData kNoCall;
-  const Payload* pl = env.payload ? env.payload : &kNoPayload;
-  const CallData* cd = env.call ? env.call : &kNoCall;
-  switch (e.builtin) {
-    case kBiPayloadColor:
-      return fromVec4(pl->color);
-    case kBiPayloadValue:
-      return fromUint(pl->value);
-    case kBiPayloadWord:
-      return fromUint(pl->words[e.index % kMaxPayloadWords]);
-    case kBiChildColor:
-      return fromVec4(env.child.color);
-    case kBiChildValue:
-      return fromUint(env.child.value);
-    case kBiChildWord:
-      return fromUint(env.child.words[e.index % kMaxPayloadWords]);
-    case kBiCallPosition:
-      return fromVec3(cd->position);
-    case kBiCallNormal:
-      return fromVec3(cd->normal);
-    case kBiCallColor:
-      return fromVec4(cd->color);
-    case kBiCallValue:
-      return fromUint(cd->value);
-    case kBiCalleeColor:
-      return fromVec4(env.callee.color);
-    case kBiCalleeValue:
-      return fromUint(env.callee.value);
-    default:
-      break;
-  }
-  if (error.empty())
-    error = "model: unknown built-in '" + (e.src ? e.src->name : std::string("?")) + "'";
-  return Val{};
-}
-
-// vertex_position<i>: the hit triangle's vertex in object space (zero for a
-// box, where reading it is refused at parse time). The planted fault
-// position_fetch_world_space takes it through the instance transform.
-Val Machine::vertexPosition(const HitView& hv, int i) const {
-  if (!hv.vertices) return Val{};
-  const Vec3& p = (*hv.vertices)[static_cast<size_t>(i)];
-  if (!sh_.faults.position_fetch_world_space) return fromVec3(p);
-  return fromVec3(applyAffine(sh_.c->scene.instances[hv.instance].transform, p, 1.0f));
-}
-
-// object_to_world<c> / _3x4_<r> (k = c, or 4 + r) and world_to_object's
-// (k + 7): the hit instance's transform and its inverse, both row-major 3x4.
-// The planted fault transform_builtins_swapped gives each the other.
-Val Machine::transformBuiltin(const HitView& hv, int k) const {
-  if (hv.instance >= sh_.scene->instances.size()) return Val{};
-  const bool inverse = (k >= 7) != sh_.faults.transform_builtins_swapped;
-  const ModelInstance& mi = sh_.scene->instances[hv.instance];
-  const Transform& m = inverse ? mi.inverse_f : mi.src->transform;
-  const int i = k % 7;
-  Val v;
-  if (i < 4)
-    v.f = {m[i], m[4 + i], m[8 + i], 0};  // column i of mat4x3
-  else
-    v.f = {m[4 * (i - 4)], m[4 * (i - 4) + 1], m[4 * (i - 4) + 2], m[4 * (i - 4) + 3]};  // row
-  return v;
-}
-
-Val Machine::builtin(const CExpr& e, StageEnv& env) {
-  static const HitView kNone;
-  static const TraceRay kNoRay;
-  const HitView* hv = env.hit ? env.hit : &kNone;
-  const TraceRay* r = env.ray ? env.ray : &kNoRay;
-  switch (e.builtin) {
-    case kBiLaunchX:
-      return fromUint(x_);
-    case kBiLaunchY:  // the records' row y_ is launch z x launch height + launch y
-      return fromUint(y_ % launch_[1]);
-    case kBiLaunchZ:
-      return fromUint(y_ / launch_[1]);
-    case kBiLaunchW:
-      return fromUint(launch_[0]);
-    case kBiLaunchH:
-      return fromUint(launch_[1]);
-    case kBiLaunchD:
-      return fromUint(launch_[2]);
-    case kBiPrimitive:
-      return fromUint(hv->primitive);
-    case kBiInstance:
-      return fromUint(hv->instance);
-    case kBiCustomIndex:
-      return fromUint(hv->custom_index);
-    case kBiGeometry:
-      return fromUint(hv->geometry);
-    case kBiHitKind:
-      return fromUint(hv->hit_kind);
-    case kBiHitT:
-      return fromFloat(hv->t);
-    case kBiHit:
-      return fromUint(env.stage == Stage::ClosestHit ? 1u : 0u);
-    case kBiBarycentrics: {
-      Val v;
-      v.f = {hv->b1, hv->b2, 0, 0};
-      return v;
-    }
-    case kBiAabbMin:
-      return fromVec3(hv->aabb_min);
-    case kBiAabbMax:
-      return fromVec3(hv->aabb_max);
-    case kBiObjectOrigin:
-      return fromVec3(hv->object_origin);
-    case kBiObjectDirection:
-      return fromVec3(hv->object_direction);
-    case kBiTmin:
-      return fromFloat(r->tmin);
-    case kBiTmax:
-      return fromFloat(env.tmax_view);
-    case kBiCullMask:  // the low 8 bits only (program/builtins.h)
-      return fromUint(r->cull_mask & 0xFFu);
-    case kBiFlags:
-      return fromUint(r->flags);
-    case kBiWorldOrigin:
-      return fromVec3(r->origin);
-    case kBiWorldDirection:
-      return fromVec3(r->direction);
-    case kBiHitPosition: {
-      Vec3 p;
-      for (int k = 0; k < 3; ++k) p[k] = r->origin[k] + hv->t * r->direction[k];
-      return fromVec3(p);
-    }
-    case kBiDepth:
-      return fromUint(env.depth);
-    case kBiVertex0:
-    case kBiVertex1:
-    case kBiVertex2:
-      return vertexPosition(*hv, e.builtin - kBiVertex0);
-    case kBiAttributeWord:
-      return fromUint(hv->words[e.index % kMaxAttributeWords]);
-    default:
-      if (e.builtin >= kBiObjectToWorld0 && e.builtin < kBiTransformEnd)
-        return transformBuiltin(*hv, e.builtin - kBiObjectToWorld0);
-      return dataBuiltin(e, env);
-  }
 }
 
 Val Machine::eval(const CExpr& e, StageEnv& env) {

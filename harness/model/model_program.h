@@ -20,6 +20,27 @@ struct Val {
   bool b = false;
 };
 
+inline Val fromVec3(const Vec3& v) {
+  Val r;
+  r.f = {v[0], v[1], v[2], 0};
+  return r;
+}
+inline Val fromVec4(const std::array<float, 4>& v) {
+  Val r;
+  r.f = v;
+  return r;
+}
+inline Val fromUint(uint32_t u) {
+  Val r;
+  r.u = u;
+  return r;
+}
+inline Val fromFloat(float f) {
+  Val r;
+  r.f[0] = f;
+  return r;
+}
+
 // Built-ins, in the order of builtinNames().
 enum Builtin : uint8_t {
   kBiLaunchX,
