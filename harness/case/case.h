@@ -268,6 +268,23 @@ struct Pipeline {
   // "miss0", "hit1.any_hit", "callable2", ...), by constant index.
   std::vector<SpecConstant> constants;
   std::map<std::string, std::map<size_t, double>> specialize;
+  // A shader's name, as GLSL generation, pipeline.specialize and `rayspec
+  // show` use it: "raygen", "raygen.other<i>", "miss<i>",
+  // "hit<i>.closest_hit" / ".any_hit" / ".intersection", "callable<i>" (i: the
+  // other raygen, miss shader, hit group or callable).
+  static std::string shaderName(Stage stage, size_t i, bool other_raygen = false) {
+    const std::string n = std::to_string(i);
+    switch (stage) {
+      case Stage::Raygen:
+        return other_raygen ? "raygen.other" + n : "raygen";
+      case Stage::Miss:
+        return "miss" + n;
+      case Stage::Callable:
+        return "callable" + n;
+      default:
+        return "hit" + n + "." + stageName(stage);
+    }
+  }
   // Constant k's value in shader `shader`.
   double constantIn(const std::string& shader, size_t k) const {
     const auto s = specialize.find(shader);

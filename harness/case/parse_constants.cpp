@@ -27,18 +27,18 @@ std::optional<SpecConstant> constantLiteral(YamlReader& r, const YAML::Node& n,
 
 // The names of the shaders the case has (GeneratedShader names).
 std::vector<std::string> shaderNames(const Pipeline& p) {
-  std::vector<std::string> names = {"raygen"};
+  std::vector<std::string> names = {Pipeline::shaderName(Stage::Raygen, 0)};
   for (size_t i = 0; i < p.other_raygens.size(); ++i)
-    names.push_back("raygen.other" + std::to_string(i));
-  for (size_t i = 0; i < p.miss.size(); ++i) names.push_back("miss" + std::to_string(i));
+    names.push_back(Pipeline::shaderName(Stage::Raygen, i, true));
+  for (size_t i = 0; i < p.miss.size(); ++i) names.push_back(Pipeline::shaderName(Stage::Miss, i));
   for (size_t i = 0; i < p.hit_groups.size(); ++i) {
     const HitGroup& g = p.hit_groups[i];
-    const std::string prefix = "hit" + std::to_string(i) + ".";
-    if (g.closest_hit) names.push_back(prefix + "closest_hit");
-    if (g.any_hit) names.push_back(prefix + "any_hit");
-    if (g.intersection) names.push_back(prefix + "intersection");
+    if (g.closest_hit) names.push_back(Pipeline::shaderName(Stage::ClosestHit, i));
+    if (g.any_hit) names.push_back(Pipeline::shaderName(Stage::AnyHit, i));
+    if (g.intersection) names.push_back(Pipeline::shaderName(Stage::Intersection, i));
   }
-  for (size_t i = 0; i < p.callables.size(); ++i) names.push_back("callable" + std::to_string(i));
+  for (size_t i = 0; i < p.callables.size(); ++i)
+    names.push_back(Pipeline::shaderName(Stage::Callable, i));
   return names;
 }
 

@@ -10,33 +10,34 @@ namespace rayspec {
 GeneratedPipeline generateGlsl(const Case& c, const Plan& plan) {
   const Pipeline& p = c.pipeline;
   GeneratedPipeline g;
-  g.raygen = emitStage(c, plan, Stage::Raygen, "raygen", p.raygen);
+  g.raygen = emitStage(c, plan, Stage::Raygen, Pipeline::shaderName(Stage::Raygen, 0), p.raygen);
   g.raygen_group = p.raygen_group;
   for (size_t i = 0; i < p.other_raygens.size(); ++i)
-    g.other_raygens.push_back(
-        emitStage(c, plan, Stage::Raygen, "raygen.other" + std::to_string(i), p.other_raygens[i]));
+    g.other_raygens.push_back(emitStage(
+        c, plan, Stage::Raygen, Pipeline::shaderName(Stage::Raygen, i, true), p.other_raygens[i]));
   for (size_t i = 0; i < p.miss.size(); ++i)
-    g.miss.push_back(
-        emitStage(c, plan, Stage::Miss, "miss" + std::to_string(i), p.miss[i], p.missPayload(i)));
+    g.miss.push_back(emitStage(c, plan, Stage::Miss, Pipeline::shaderName(Stage::Miss, i),
+                               p.miss[i], p.missPayload(i)));
   for (size_t i = 0; i < p.hit_groups.size(); ++i) {
     const HitGroup& h = p.hit_groups[i];
-    const std::string prefix = "hit" + std::to_string(i) + ".";
     GeneratedGroup group;
     const uint32_t words = h.intersection ? p.attribute_words : 0;
     if (h.closest_hit)
-      group.closest_hit = emitStage(c, plan, Stage::ClosestHit, prefix + "closest_hit",
-                                    *h.closest_hit, h.payload, words);
+      group.closest_hit =
+          emitStage(c, plan, Stage::ClosestHit, Pipeline::shaderName(Stage::ClosestHit, i),
+                    *h.closest_hit, h.payload, words);
     if (h.any_hit && plan.any_hit)
-      group.any_hit =
-          emitStage(c, plan, Stage::AnyHit, prefix + "any_hit", *h.any_hit, h.payload, words);
+      group.any_hit = emitStage(c, plan, Stage::AnyHit, Pipeline::shaderName(Stage::AnyHit, i),
+                                *h.any_hit, h.payload, words);
     if (h.intersection && plan.intersection)
-      group.intersection = emitStage(c, plan, Stage::Intersection, prefix + "intersection",
-                                     *h.intersection, 0, words);
+      group.intersection =
+          emitStage(c, plan, Stage::Intersection, Pipeline::shaderName(Stage::Intersection, i),
+                    *h.intersection, 0, words);
     g.hit_groups.push_back(std::move(group));
   }
   for (size_t i = 0; i < p.callables.size(); ++i)
-    g.callables.push_back(
-        emitStage(c, plan, Stage::Callable, "callable" + std::to_string(i), p.callables[i]));
+    g.callables.push_back(emitStage(c, plan, Stage::Callable,
+                                    Pipeline::shaderName(Stage::Callable, i), p.callables[i]));
   return g;
 }
 

@@ -339,29 +339,29 @@ CPipeline compilePipeline(const Case& c, const Plan& plan) {
   CPipeline out;
   const Pipeline& p = c.pipeline;
   Compiler k{plan, out, p};
-  k.shader = "raygen";
+  k.shader = Pipeline::shaderName(Stage::Raygen, 0);
   out.raygen = k.program(p.raygen);
   for (const Program& m : p.miss) {
-    k.shader = "miss" + std::to_string(out.miss.size());
+    k.shader = Pipeline::shaderName(Stage::Miss, out.miss.size());
     out.miss.push_back(k.program(m));
     out.miss_counts.push_back(countsOnly(out.miss.back()));
   }
   for (const Program& m : p.callables) {
-    k.shader = "callable" + std::to_string(out.callables.size());
+    k.shader = Pipeline::shaderName(Stage::Callable, out.callables.size());
     out.callables.push_back(k.program(m));
   }
   out.hit_programs.reserve(p.hit_groups.size() * 3);  // stable addresses for the groups
   for (const HitGroup& g : p.hit_groups) {
     CHitGroup cg;
-    auto add = [&](const std::optional<Program>& prog, const char* stage) -> const CProgram* {
+    auto add = [&](const std::optional<Program>& prog, Stage stage) -> const CProgram* {
       if (!prog) return nullptr;
-      k.shader = "hit" + std::to_string(out.groups.size()) + "." + stage;
+      k.shader = Pipeline::shaderName(stage, out.groups.size());
       out.hit_programs.push_back(k.program(*prog));
       return &out.hit_programs.back();
     };
-    cg.closest_hit = add(g.closest_hit, "closest_hit");
-    cg.any_hit = add(g.any_hit, "any_hit");
-    cg.intersection = add(g.intersection, "intersection");
+    cg.closest_hit = add(g.closest_hit, Stage::ClosestHit);
+    cg.any_hit = add(g.any_hit, Stage::AnyHit);
+    cg.intersection = add(g.intersection, Stage::Intersection);
     if (cg.closest_hit) cg.closest_hit_counts = countsOnly(*cg.closest_hit);
     cg.any_hit_terminates = cg.any_hit && hasTerminate(*cg.any_hit);
     cg.payload = g.payload;

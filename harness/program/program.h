@@ -71,7 +71,8 @@ struct Stmt {
     Light,       // callable only: call.color = light_<light>(call.position,
                  // call.normal, shader record floats) from shaders/lights.glsl
     If,          // if (cond) then_ else else_
-    // Control flow and local variables (cases/README.md, "Control flow").
+    // Control flow and local variables (cases/README.md, "Control flow"); kept
+    // last: the model's compiler tells them by order (Kind >= Let).
     Let,       // declare locals: assigns[i] = (name, initial value)
     Set,       // assign declared locals: assigns[i] = (name, value)
     Array,     // declare `local`: an array of `size` elements of `local_type`, all zero
