@@ -11,9 +11,10 @@ struct RsPayload {
   uint depth;
 };
 
-// Callable data (location 0 in raygen / closest-hit / miss, location 1 inside
-// a callable, whose incoming data is at location 0). Fields a `call` does not
-// give are zero.
+// Callable data of location L (pipeline.callable_data; declared at L in
+// raygen / closest-hit / miss, at L + 1 inside a callable, whose incoming data
+// is at location 0), RsCallDataW<N> when the type has N more words
+// (harness/glsl/emit_call_data.cpp). Fields a `call` does not give are zero.
 struct RsCallData {
   vec4 color;
   vec3 position;

@@ -60,7 +60,7 @@ TEST(Names, StageAndTypeNames) {
 TEST(Builtins, TableMatchesDocumentation) {
   std::set<std::string> names;
   for (const BuiltinInfo& b : builtins()) EXPECT_TRUE(names.insert(b.name).second) << b.name;
-  EXPECT_EQ(builtins().size(), 56u);
+  EXPECT_EQ(builtins().size(), 58u);
   EXPECT_EQ(findBuiltin("launch_id_z")->stages, kAllStages);
   const BuiltinInfo* t = findBuiltin("hit_t");
   ASSERT_NE(t, nullptr);

@@ -203,6 +203,12 @@ struct HitGroup {
 constexpr uint32_t kMaxPayloadLocations = 4;
 constexpr uint32_t kMaxPayloadWords = kPayloadWordNames;
 
+// Callable data types (pipeline.callable_data), by the location a call
+// names: RsCallData (color, position, value, normal: 48 bytes), then `words`
+// more uint words (call.word0 ..), up to 88 bytes.
+constexpr uint32_t kMaxCallDataLocations = 4;
+constexpr uint32_t kMaxCallDataWords = kPayloadWordNames;
+
 // A pipeline library (VK_KHR_pipeline_library): the groups it holds, by
 // index into Pipeline::miss / hit_groups / callables, and the libraries it
 // links in turn. A group no library holds is the linked pipeline's own
@@ -260,6 +266,18 @@ struct Pipeline {
     return n;
   }
   std::vector<Program> callables;
+  std::vector<uint32_t> callable_data;  // per callable: the location whose data type it takes
+  uint32_t callableData(size_t i) const { return i < callable_data.size() ? callable_data[i] : 0; }
+  // Extra words of each location's callable data type; default one location, none.
+  std::vector<uint32_t> call_data_words{0};
+  uint32_t callDataWords(size_t location) const {
+    return location < call_data_words.size() ? call_data_words[location] : 0;
+  }
+  uint32_t maxCallDataWords() const {
+    uint32_t n = 0;
+    for (uint32_t w : call_data_words) n = std::max(n, w);
+    return n;
+  }
   // Extra uint words of the hit attribute after its vec2
   // (pipeline.hit_attribute.words, 0..kMaxAttributeWords).
   uint32_t attribute_words = 0;
@@ -297,6 +315,9 @@ struct Pipeline {
   uint32_t sbt_record_data =
       kMaxShaderRecordDataBytes;  // bytes of data per record: 0..32, multiple of 4
   SbtPadding sbt_padding;
+  // The shader record block's members (pipeline.sbt.record_layout); none
+  // declared: shader_record_uint / _float read its words.
+  ShaderRecordLayout record_layout;
   // Empty: one pipeline. Otherwise the pipeline is linked from these
   // libraries and its own groups (R-LIBRARY); shaders observe the same.
   std::vector<PipelineLibrary> libraries;

@@ -29,6 +29,25 @@ std::optional<uint32_t> parsePayloadLocation(YamlReader& r, const YAML::Node& n,
                                              const std::string& field, const Pipeline& pipeline);
 // pipeline.miss: programs, or {program, payload: location}.
 void parseMissShaders(YamlReader& r, const YAML::Node& n, Pipeline& pipeline);
+// Types by location with `words` more uint words: pipeline.payloads and
+// pipeline.callable_data.
+struct WordTypes {
+  const char* field;  // "pipeline.payloads"
+  const char* what;   // "payload"
+  uint32_t max_locations, max_words;
+};
+void parseWordTypes(YamlReader& r, const YAML::Node& n, const WordTypes& types,
+                    std::vector<uint32_t>& out);
+// A location among `declared` (a constant); nullopt, with an error, when none.
+std::optional<uint32_t> parseWordLocation(YamlReader& r, const YAML::Node& n,
+                                          const std::string& field, const WordTypes& types,
+                                          size_t declared);
+// pipeline.sbt.record_layout (parse_record_layout.cpp), after record_data.
+void parseRecordLayout(YamlReader& r, const YAML::Node& n, Pipeline& pipeline);
+// pipeline.callable_data (parse_call_data.cpp), before the callables; then
+// pipeline.callables: programs, or {program, call_data: location}.
+void parseCallDataTypes(YamlReader& r, const YAML::Node& n, Pipeline& pipeline);
+void parseCallables(YamlReader& r, const YAML::Node& n, Pipeline& pipeline);
 void parseOutputs(YamlReader& r, const YAML::Node& n, Outputs& outputs);
 
 // A generated mesh (`grid`, `fan` or `triangulation` in a `triangles` map):
@@ -72,8 +91,9 @@ void checkRecordReads(YamlReader& r, const Case& c);
 // Needs the types checkPrograms fills in.
 void checkTraceConstants(YamlReader& r, const Case& c);
 
-// Every payload location a trace names, and every payload word a program
-// reads or writes, within the payload type it has (pipeline.payloads).
-void checkPayloadWords(YamlReader& r, const Case& c);
+// Every payload location a trace names and callable data location a call
+// names, and every word a program reads or writes, within the type it has
+// (pipeline.payloads, pipeline.callable_data; check_data_words.cpp).
+void checkDataWords(YamlReader& r, const Case& c);
 
 }  // namespace rayspec

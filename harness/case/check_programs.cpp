@@ -51,7 +51,7 @@ void checkPrograms(YamlReader& r, Case& c, const YAML::Node& /*pipeline_node*/) 
   auto check = [&](Program& prog, Stage stage, const std::string& field) {
     if (r.isBadProgram(field)) return;
     if (auto e = checkProgram(prog, stage, c.outputs.counters, c.outputs.per_ray,
-                              c.pipeline.constants)) {
+                              c.pipeline.constants, &c.pipeline.record_layout)) {
       SourceLoc loc = e->loc;
       if (loc.file.empty()) loc.file = r.file();
       if (loc.field.empty()) loc.field = field;

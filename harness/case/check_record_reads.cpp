@@ -4,6 +4,8 @@
 // ops) read floats 0..5 (point, directional) or 0..7 (spot). A read past the
 // data would read the record's padding or the next record: an error at the
 // read. Every index is a literal (program/type_check.cpp), so all are known.
+// Where pipeline.sbt.record_layout declares the record's members, the block
+// holds those members only: every word or light read is an error.
 #include "case/case_parts.h"
 #include "program/walk_program.h"
 
@@ -40,18 +42,20 @@ uint32_t bytesRead(const Expr& e, std::string* what) {
 
 class ReadChecker {
  public:
-  ReadChecker(YamlReader& r, uint32_t record_data) : r_(r), k_(record_data) {}
+  ReadChecker(YamlReader& r, uint32_t record_data, bool members)
+      : r_(r), k_(record_data), members_(members) {}
 
   void program(const Program& p, const std::string& field) {
     if (r_.isBadProgram(field)) return;
     walkExpressions(p, [&](const Expr& e) {
       std::string what;
-      if (const uint32_t n = bytesRead(e, &what); n > k_) fail(e.loc, field, what);
+      if (const uint32_t n = bytesRead(e, &what); n > k_ || (n && members_))
+        fail(e.loc, field, what);
     });
     walkStatements(p, [&](const Stmt& s) {
       if (s.kind != Stmt::Kind::Light) return;
       const uint32_t n = lightBytes(s.light);
-      if (n > k_)
+      if (n > k_ || members_)
         fail(s.loc, field,
              "light: " + s.light + " reads floats 0.." + std::to_string(n / 4 - 1) + " (bytes 0.." +
                  std::to_string(n - 1) + ")");
@@ -63,6 +67,12 @@ class ReadChecker {
     SourceLoc loc = at;
     if (loc.file.empty()) loc.file = r_.file();
     if (loc.field.empty()) loc.field = field;
+    if (members_) {
+      r_.error(loc, what +
+                        ", but pipeline.sbt.record_layout declares the record's members: read "
+                        "them as shader_record.NAME");
+      return;
+    }
     r_.error(loc, what + " of its shader record, past pipeline.sbt.record_data (" +
                       std::to_string(k_) +
                       " bytes per record): it would read the padding or the next record");
@@ -70,14 +80,16 @@ class ReadChecker {
 
   YamlReader& r_;
   uint32_t k_;
+  bool members_;
 };
 
 }  // namespace
 
 void checkRecordReads(YamlReader& r, const Case& c) {
   const Pipeline& p = c.pipeline;
-  if (p.sbt_record_data >= kMaxShaderRecordDataBytes) return;  // every read fits
-  ReadChecker check(r, p.sbt_record_data);
+  const bool members = p.record_layout.declared();
+  if (p.sbt_record_data >= kMaxShaderRecordDataBytes && !members) return;  // every read fits
+  ReadChecker check(r, p.sbt_record_data, members);
   check.program(p.raygen, "pipeline.raygen");
   for (const Program& g : p.other_raygens) check.program(g, "pipeline.raygens");
   for (size_t i = 0; i < p.miss.size(); ++i)

@@ -85,7 +85,7 @@ void parseTop(YamlReader& r, const YAML::Node& root, const std::vector<std::stri
   parsePipeline(r, pipeline, c.pipeline);
   checkPrograms(r, c, pipeline);
   checkRecordReads(r, c);
-  checkPayloadWords(r, c);
+  checkDataWords(r, c);
   if (r.errorCount() == 0) checkTraceConstants(r, c);
   judgeStaticUndefined(r, c);
 }

@@ -50,6 +50,11 @@ bool parseScalarExpr(YamlReader& r, const YAML::Node& n, const std::string& fiel
                 "': a local's name is a lower-case letter, then letters, digits or _ (at most 32)");
     return false;
   }
+  if (s.rfind("shader_record.", 0) == 0) {  // a member of pipeline.sbt.record_layout
+    out.kind = Expr::Kind::RecordMember;
+    out.name = s.substr(14);
+    return true;
+  }
   if (s.rfind("const.", 0) == 0) {  // a specialization constant (pipeline.constants)
     out.kind = Expr::Kind::Constant;
     out.name = s.substr(6);

@@ -7,35 +7,48 @@
 
 namespace rayspec {
 
-void parsePayloadTypes(YamlReader& r, const YAML::Node& n, Pipeline& p) {
-  const std::string f = "pipeline.payloads";
+void parseWordTypes(YamlReader& r, const YAML::Node& n, const WordTypes& types,
+                    std::vector<uint32_t>& out) {
+  const std::string f = types.field;
   if (!r.expectSeq(n, f)) return;
-  if (n.size() == 0 || n.size() > kMaxPayloadLocations) {
+  if (n.size() == 0 || n.size() > types.max_locations) {
     r.error(n, f,
-            "needs 1 to " + std::to_string(kMaxPayloadLocations) +
-                " payload types (one per location), got " + std::to_string(n.size()));
+            "needs 1 to " + std::to_string(types.max_locations) + " " + types.what +
+                " types (one per location), got " + std::to_string(n.size()));
     return;
   }
-  p.payload_words.assign(n.size(), 0);
+  out.assign(n.size(), 0);
   for (size_t i = 0; i < n.size(); ++i) {
     const std::string fi = f + "[" + std::to_string(i) + "]";
-    if (n[i].IsNull()) continue;  // `- {}`: color, value, depth only
+    if (n[i].IsNull()) continue;  // `- {}`: the fixed members only
     if (!r.expectMap(n[i], fi, {"words"})) continue;
     if (auto v = YamlReader::get(n[i], "words"); v.IsDefined())
-      if (auto w = r.uint(v, fi + ".words", kMaxPayloadWords)) p.payload_words[i] = *w;
+      if (auto w = r.uint(v, fi + ".words", types.max_words)) out[i] = *w;
   }
+}
+
+void parsePayloadTypes(YamlReader& r, const YAML::Node& n, Pipeline& p) {
+  parseWordTypes(r, n, {"pipeline.payloads", "payload", kMaxPayloadLocations, kMaxPayloadWords},
+                 p.payload_words);
+}
+
+std::optional<uint32_t> parseWordLocation(YamlReader& r, const YAML::Node& n,
+                                          const std::string& field, const WordTypes& types,
+                                          size_t declared) {
+  auto k = r.uint(n, field);
+  if (k && *k >= declared) {
+    r.error(n, field,
+            std::string(types.what) + " location " + std::to_string(*k) + ", but " + types.field +
+                " declares " + std::to_string(declared));
+    return std::nullopt;
+  }
+  return k;
 }
 
 std::optional<uint32_t> parsePayloadLocation(YamlReader& r, const YAML::Node& n,
                                              const std::string& field, const Pipeline& p) {
-  auto k = r.uint(n, field);
-  if (k && *k >= p.payload_words.size()) {
-    r.error(n, field,
-            "payload location " + std::to_string(*k) + ", but pipeline.payloads declares " +
-                std::to_string(p.payload_words.size()));
-    return std::nullopt;
-  }
-  return k;
+  return parseWordLocation(r, n, field, {"pipeline.payloads", "payload", 0, 0},
+                           p.payload_words.size());
 }
 
 void parseMissShaders(YamlReader& r, const YAML::Node& n, Pipeline& p) {

@@ -85,16 +85,6 @@ std::vector<SbtRecord> defaultRegion(size_t n) {
   return region;
 }
 
-void parsePrograms(YamlReader& r, const YAML::Node& n, const std::string& field,
-                   std::vector<Program>& out) {
-  if (!r.expectSeq(n, field)) return;
-  for (size_t i = 0; i < n.size(); ++i) {
-    Program p;
-    parseProgram(r, n[i], field + "[" + std::to_string(i) + "]", p);
-    out.push_back(std::move(p));
-  }
-}
-
 void parseHitGroups(YamlReader& r, const YAML::Node& n, const Pipeline& p,
                     std::vector<HitGroup>& out) {
   if (!r.expectSeq(n, "pipeline.hit_groups")) return;
@@ -190,10 +180,11 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
   trace.loc = r.loc(n, "pipeline.raygen");
   p.raygen.push_back(trace);  // default raygen: [trace: {}]
   if (!n.IsDefined()) return;
-  if (!r.expectMap(n, "pipeline",
-                   {"max_recursion", "flags", "raygen", "raygens", "raygen_group", "raygen_data",
-                    "miss", "hit_groups", "callables", "sbt", "libraries", "payloads",
-                    "callable_depth", "functions", "constants", "specialize", "hit_attribute"}))
+  if (!r.expectMap(
+          n, "pipeline",
+          {"max_recursion", "flags", "raygen", "raygens", "raygen_group", "raygen_data", "miss",
+           "hit_groups", "callables", "sbt", "libraries", "payloads", "callable_depth", "functions",
+           "constants", "specialize", "hit_attribute", "callable_data"}))
     return;
   if (auto v = YamlReader::get(n, "max_recursion"); v.IsDefined())
     if (auto x = r.uint(v, "pipeline.max_recursion", 31)) {
@@ -214,12 +205,13 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
   parseRaygenGroups(r, n, p);
   // The record shape first: the data of every record must fit in it.
   const YAML::Node sbt = YamlReader::get(n, "sbt");
-  const bool sbt_ok =
-      sbt.IsDefined() &&
-      r.expectMap(sbt, "pipeline.sbt", {"record_data", "padding", "miss", "hit", "callable"});
+  const bool sbt_ok = sbt.IsDefined() && r.expectMap(sbt, "pipeline.sbt",
+                                                     {"record_data", "padding", "miss", "hit",
+                                                      "callable", "record_layout"});
   if (sbt_ok) {
     if (auto v = YamlReader::get(sbt, "record_data"); v.IsDefined()) parseRecordDataBytes(r, v, p);
     if (auto v = YamlReader::get(sbt, "padding"); v.IsDefined()) parsePadding(r, v, p.sbt_padding);
+    if (auto v = YamlReader::get(sbt, "record_layout"); v.IsDefined()) parseRecordLayout(r, v, p);
   }
   if (auto v = YamlReader::get(n, "raygen_data"); v.IsDefined())
     if (auto words = parseRecordData(r, v, "pipeline.raygen_data")) {
@@ -232,8 +224,8 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
   if (auto v = YamlReader::get(n, "miss"); v.IsDefined()) parseMissShaders(r, v, p);
   if (auto v = YamlReader::get(n, "hit_groups"); v.IsDefined())
     parseHitGroups(r, v, p, p.hit_groups);
-  if (auto v = YamlReader::get(n, "callables"); v.IsDefined())
-    parsePrograms(r, v, "pipeline.callables", p.callables);
+  if (auto v = YamlReader::get(n, "callable_data"); v.IsDefined()) parseCallDataTypes(r, v, p);
+  if (auto v = YamlReader::get(n, "callables"); v.IsDefined()) parseCallables(r, v, p);
   expandFunctions(r, YamlReader::get(n, "functions"), p);
   if (auto v = YamlReader::get(n, "specialize"); v.IsDefined()) parseSpecialize(r, v, p);
 

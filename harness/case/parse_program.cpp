@@ -42,7 +42,7 @@ bool parseAssigns(YamlReader& r, const YAML::Node& n, const std::string& field,
   return ok;
 }
 
-// A payload's fields: color, value and the words of its type (checkPayloadWords).
+// A payload's fields: color, value and the words of its type (checkDataWords).
 bool parsePayloadAssigns(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt& s) {
   return parseAssigns(r, n, field,
                       {"color", "value", "word0", "word1", "word2", "word3", "word4", "word5",
@@ -184,10 +184,17 @@ bool parseReport(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt&
 
 bool parseCall(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
   s.kind = Stmt::Kind::Call;
-  if (!r.expectMap(v, f, {"index", "position", "normal", "value", "color"})) return false;
+  if (!r.expectMap(v, f,
+                   {"index", "location", "position", "normal", "value", "color", "word0", "word1",
+                    "word2", "word3", "word4", "word5", "word6", "word7", "word8", "word9"}))
+    return false;
   if (!r.require(v, f, "index")) return false;
   bool ok = parseExpr(r, YamlReader::get(v, "index"), f + ".index", s.call_index);
-  for (const char* key : {"position", "normal", "value", "color"}) {
+  ok = constantIndex(r, v, f, "location", kMaxCallDataLocations - 1, s.call_location,
+                     s.call_location_loc) &&
+       ok;
+  for (const char* key : {"position", "normal", "value", "color", "word0", "word1", "word2",
+                          "word3", "word4", "word5", "word6", "word7", "word8", "word9"}) {
     const YAML::Node a = YamlReader::get(v, key);
     if (!a.IsDefined()) continue;
     Expr e;
@@ -399,7 +406,7 @@ bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stm
   }
   if (key == "call_data") {
     s.kind = Stmt::Kind::SetCall;
-    return parseAssigns(r, v, f, {"color", "value"}, s);
+    return parsePayloadAssigns(r, v, f, s);  // color, value, word0 .. word9
   }
   if (key == "report") return parseReport(r, v, f, s);
   if (key == "let" || key == "set") {

@@ -43,6 +43,29 @@ void describeLibraries(const std::vector<PipelineLibrary>& libs, const std::stri
   }
 }
 
+// The payload and callable data types by location, and the shader record
+// block's members, where the case declares them.
+void describeInterfaceTypes(const Pipeline& p, std::ostringstream& s) {
+  if (p.payload_words.size() > 1 || p.maxPayloadWords() > 0) {
+    s << "  payload types by location:";
+    for (size_t l = 0; l < p.payload_words.size(); ++l)
+      s << " " << l << ": " << p.payloadBytes(l) << " bytes";
+    s << '\n';
+  }
+  if (p.call_data_words.size() > 1 || p.maxCallDataWords() > 0) {
+    s << "  callable data types by location:";
+    for (size_t l = 0; l < p.call_data_words.size(); ++l)
+      s << " " << l << ": " << 48 + 4 * p.callDataWords(l) << " bytes";
+    s << '\n';
+  }
+  if (p.record_layout.declared()) {
+    s << "  shader record members (" << (p.record_layout.scalar ? "scalar" : "std430") << "):";
+    for (const RecordMember& m : p.record_layout.members)
+      s << " " << m.name << " (" << valueTypeName(m.type) << ") at byte " << m.offset;
+    s << '\n';
+  }
+}
+
 }  // namespace
 
 std::string describeCase(const Case& c) {
@@ -94,17 +117,16 @@ std::string describeCase(const Case& c) {
     s << '\n';
   }
   for (size_t i = 0; i < p.callables.size(); ++i)
-    s << "  callable " << i << ": " << statementCount(p.callables[i]) << " statements\n";
+    s << "  callable " << i << ": " << statementCount(p.callables[i]) << " statements"
+      << (p.callableData(i)
+              ? ", callable data type of location " + std::to_string(p.callableData(i))
+              : "")
+      << '\n';
   if (p.raygenGroupCount() > 1)
     s << "  raygen groups: " << p.raygenGroupCount() << ", the region selects " << p.raygen_group
       << '\n';
   describeLibraries(p.libraries, "  ", s);
-  if (p.payload_words.size() > 1 || p.maxPayloadWords() > 0) {
-    s << "  payload types by location:";
-    for (size_t l = 0; l < p.payload_words.size(); ++l)
-      s << " " << l << ": " << p.payloadBytes(l) << " bytes";
-    s << '\n';
-  }
+  describeInterfaceTypes(p, s);
   if (p.sbt_record_data != kMaxShaderRecordDataBytes || p.sbt_padding.miss || p.sbt_padding.hit ||
       p.sbt_padding.callable)
     s << "  sbt record: handle + " << p.sbt_record_data << " data bytes + padding (miss "

@@ -89,6 +89,7 @@ std::string unusedAnyHitIgnores(Case& c, ModelOptions& o);
 std::string payloadWritesLost(Case& c, ModelOptions& o);
 std::string payloadStartLost(Case& c, ModelOptions& o);
 std::string payloadWordsLost(Case& c, ModelOptions& o);
+std::string callDataWordsLost(Case& c, ModelOptions& o);
 std::string cullMaskBuiltinDefault(Case& c, ModelOptions& o);
 std::string noNullShadersDropped(Case& c, ModelOptions& o);
 std::string tlasIgnored(Case& c, ModelOptions& o);
@@ -118,6 +119,7 @@ std::string callableIndexIgnored(Case& c, ModelOptions& o);
 std::string customIndexTruncated(Case& c, ModelOptions& o);
 std::string zeroRecordRunsGroup0(Case& c, ModelOptions& o);
 std::string shaderRecordDataZeroed(Case& c, ModelOptions& o);
+std::string recordLayoutSwapped(Case& c, ModelOptions& o);
 std::string reverseOrder(Case& c, ModelOptions& o);
 std::string buildOrderFirstHit(Case& c, ModelOptions& o);
 // The interval ends (mutate_intervals.cpp).

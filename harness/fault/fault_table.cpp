@@ -155,6 +155,10 @@ std::vector<FaultImpl> programMutations() {
        hitAttributesLost},
       {"callable-data-not-returned", K::CaseMutation,
        "a callable's writes to its data never reach the caller", nullptr, callableDataNotReturned},
+      {"call-data-words-lost", K::CaseMutation,
+       "only the first 48 bytes of callable data come back: a callable's writes to its words "
+       "(pipeline.callable_data) are lost",
+       nullptr, callDataWordsLost},
       {"nested-trace-dropped", K::CaseMutation,
        "traces from closest-hit and miss do nothing (no recursion)", nullptr, nestedTraceDropped},
       {"any-hit-runs-twice", K::CaseMutation,
@@ -188,6 +192,10 @@ std::vector<FaultImpl> sbtAndOrderMutations() {
        "an all-zero SBT record runs the shaders of group 0", nullptr, zeroRecordRunsGroup0},
       {"shader-record-data-zeroed", K::CaseMutation,
        "shaders read zeros instead of their shader record data", nullptr, shaderRecordDataZeroed},
+      {"record-layout-swapped", K::CaseMutation,
+       "the shader record block is laid out by the other rule (std430 for scalar, scalar for "
+       "std430)",
+       nullptr, recordLayoutSwapped},
       // Case mutations: candidate order (a model option).
       {"reverse-order", K::CaseMutation, "legal: candidates are found far to near", nullptr,
        reverseOrder},

@@ -164,13 +164,14 @@ std::string payloadStartLost(Case& c, ModelOptions&) {
   return describeCount(n, "traces start with a zero payload");
 }
 
-// A device that copies back only the first 24 bytes of a payload (color,
-// value, depth): what miss, closest-hit and any-hit write into its words is lost.
-std::string payloadWordsLost(Case& c, ModelOptions&) {
+namespace {
+
+// Removes the word writes of every `kind` statement; how many.
+size_t wordWritesLost(Case& c, Stmt::Kind kind) {
   size_t n = 0;
   forEachProgram(c.pipeline, [&](Program& p, Stage) {
     forEachStmt(p, [&](Stmt& s) {
-      if (s.kind != Stmt::Kind::SetPayload) return;
+      if (s.kind != kind) return;
       auto& a = s.assigns;
       const size_t before = a.size();
       a.erase(std::remove_if(a.begin(), a.end(),
@@ -179,7 +180,22 @@ std::string payloadWordsLost(Case& c, ModelOptions&) {
       n += before - a.size();
     });
   });
-  return describeCount(n, "payload word writes lost on the way back");
+  return n;
+}
+
+}  // namespace
+
+// A device that copies back only the first 24 bytes of a payload (color,
+// value, depth): what miss, closest-hit and any-hit write into its words is lost.
+std::string payloadWordsLost(Case& c, ModelOptions&) {
+  return describeCount(wordWritesLost(c, Stmt::Kind::SetPayload),
+                       "payload word writes lost on the way back");
+}
+
+// The same for callable data (its first 48 bytes): a callable's word writes are lost.
+std::string callDataWordsLost(Case& c, ModelOptions&) {
+  return describeCount(wordWritesLost(c, Stmt::Kind::SetCall),
+                       "callable data word writes lost on the way back");
 }
 
 // R-CULLMASK-BUILTIN: a device that never wires gl_CullMaskEXT to the

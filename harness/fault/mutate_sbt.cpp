@@ -5,6 +5,7 @@
 #include "fault/fault_impl.h"
 #include "fault/program_edit.h"
 #include "plan/walk_program.h"
+#include "program/shader_record_layout.h"
 
 namespace rayspec {
 namespace {
@@ -127,6 +128,22 @@ std::string shaderRecordDataZeroed(Case& c, ModelOptions&) {
   for (std::vector<SbtRecord>* region : {&p.sbt_hit, &p.sbt_miss, &p.sbt_callable})
     for (SbtRecord& r : *region) zero(r.data);
   return n ? std::to_string(n) + " shader record words read as 0" : std::string();
+}
+
+// A device that lays the shader record block out by the other rule (std430
+// for scalar, scalar for std430): the members read other words.
+std::string recordLayoutSwapped(Case& c, ModelOptions&) {
+  ShaderRecordLayout& l = c.pipeline.record_layout;
+  if (!l.declared()) return {};
+  const ShaderRecordLayout before = l;
+  l.scalar = !l.scalar;
+  layOutShaderRecord(l);
+  size_t moved = 0;
+  for (size_t i = 0; i < l.members.size(); ++i)
+    moved += l.members[i].offset != before.members[i].offset;
+  if (!moved) return {};
+  return std::to_string(moved) + " shader record member(s) read at their " +
+         (l.scalar ? "scalar" : "std430") + " offsets";
 }
 
 }  // namespace rayspec

@@ -97,6 +97,8 @@ std::string builtin(const std::string& name, Stage stage) {
       {"callee.value", "callee.value"},
   };
   if (auto w = attributeWordBuiltin(name)) return "rs_attr.words[" + std::to_string(*w) + "]";
+  if (auto w = callWordBuiltin(name))  // callee.word3 -> callee.words[3]
+    return std::string(w->callee ? "callee" : "call") + ".words[" + std::to_string(w->index) + "]";
   if (auto w = payloadWordBuiltin(name))  // payload.word3 -> payload.words[3]
     return std::string(w->child ? "child" : "payload") + ".words[" + std::to_string(w->index) + "]";
   if (name == "hit") {
@@ -160,6 +162,8 @@ std::string emitExpr(const Expr& e, const StageContext& ctx) {
       return localName(e.name);
     case Expr::Kind::Constant:
       return "c_" + e.name;
+    case Expr::Kind::RecordMember:
+      return "rs_members." + e.name;
   }
   return problem("expression kind");
 }

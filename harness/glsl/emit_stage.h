@@ -6,11 +6,12 @@
 
 namespace rayspec {
 
-// payload_location: the location whose payload type a miss, closest-hit or
-// any-hit receives (Pipeline::miss_payload, HitGroup::payload);
+// incoming_location: the location whose payload type a miss, closest-hit or
+// any-hit receives (Pipeline::miss_payload, HitGroup::payload), or whose
+// callable data type a callable receives (Pipeline::callable_data);
 // attribute_words: a procedural hit group's stages, the hit attribute's words.
 GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const std::string& name,
-                          const Program& program, uint32_t payload_location = 0,
+                          const Program& program, uint32_t incoming_location = 0,
                           uint32_t attribute_words = 0);
 
 }  // namespace rayspec

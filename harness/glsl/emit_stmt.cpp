@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "glsl/emit_call_data.h"
 #include "glsl/emit_control.h"
 #include "glsl/emit_expr.h"
 #include "glsl/emit_trace.h"

@@ -87,30 +87,4 @@ void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
   out.close();
 }
 
-void emitCall(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
-  if (ctx.stage == Stage::AnyHit || ctx.stage == Stage::Intersection) {
-    out.raw(std::string("#error rayspec: call is not allowed in ") + stageName(ctx.stage) + "\n");
-    return;
-  }
-  struct Field {
-    const char* name;
-    const char* zero;
-  };
-  const Field fields[] = {
-      {"color", "vec4(0.0)"}, {"position", "vec3(0.0)"}, {"value", "0u"}, {"normal", "vec3(0.0)"}};
-  out.open("{  // call");
-  out.line("RsCallData rs_data;");
-  for (const Field& f : fields) {
-    std::string value = f.zero;
-    for (const auto& [name, expr] : s.assigns)
-      if (name == f.name) value = emitExpr(expr, ctx);
-    out.line(std::string("rs_data.") + f.name + " = " + value + ";");
-  }
-  out.line("rs_data.pad = 0u;");
-  out.line("uint rs_index = " + emitExpr(s.call_index, ctx) + ";");
-  out.line("callee = rs_data;");
-  out.line("executeCallableEXT(rs_index, " + std::to_string(calleeLocation(ctx.stage)) + ");");
-  out.close();
-}
-
 }  // namespace rayspec

@@ -1,7 +1,7 @@
-// traceRayEXT and executeCallableEXT statements as GLSL. Arguments are
-// evaluated into locals first, then the outgoing payload / callable data is
-// reset, then the call is made: an argument that reads child.* / callee.* (or,
-// in raygen, payload.*) sees the result of the previous trace or call.
+// traceRayEXT statements as GLSL. Arguments are evaluated into locals first,
+// then the outgoing payload is reset, then the trace is made: an argument that
+// reads child.* (or, in raygen, payload.*) sees the result of the previous
+// trace (emit_call_data.h does the same for executeCallableEXT).
 #pragma once
 
 #include "glsl/glsl_writer.h"
@@ -10,6 +10,5 @@
 namespace rayspec {
 
 void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out);
-void emitCall(const Stmt& s, const StageContext& ctx, GlslWriter& out);
 
 }  // namespace rayspec

@@ -37,7 +37,8 @@ GeneratedPipeline generateGlsl(const Case& c, const Plan& plan) {
   }
   for (size_t i = 0; i < p.callables.size(); ++i)
     g.callables.push_back(emitStage(c, plan, Stage::Callable,
-                                    Pipeline::shaderName(Stage::Callable, i), p.callables[i]));
+                                    Pipeline::shaderName(Stage::Callable, i), p.callables[i],
+                                    p.callableData(i)));
   return g;
 }
 

@@ -16,8 +16,10 @@ struct StageUses {
   std::set<uint32_t> trace_locations;  // the payload locations its traces pass
   bool launch_ray = false;             // raygen: some trace takes a field from this launch's ray
   bool call = false;                   // executeCallableEXT
+  std::set<uint32_t> call_locations;   // the callable data locations its calls pass
   bool light = false;                  // light: -> lights.glsl
   bool shader_record = false;          // shader_record_* or light
+  bool record_members = false;         // shader_record.NAME (pipeline.sbt.record_layout)
   bool scene = false;                  // aabb_min / aabb_max / sphere_*
   bool sphere = false;                 // sphere_*
   bool hit_attribute = false;          // barycentrics read, or a report written
@@ -36,14 +38,10 @@ struct StageContext {
   std::string name;  // "raygen", "miss0", "hit1.any_hit", ...
   StageUses uses;
   uint32_t payload_location = 0;  // miss, closest-hit, any-hit: the type of their incoming payload
+  uint32_t call_data_location = 0;  // callable: the type of its incoming callable data
   // A stage of a hit group with an intersection shader: the hit attribute's
   // words (pipeline.hit_attribute.words); 0 elsewhere (a plain vec2).
   uint32_t attribute_words = 0;
 };
-
-// The location of the callable data this stage passes to executeCallableEXT.
-inline int calleeLocation(Stage s) {
-  return s == Stage::Callable ? 1 : 0;
-}
 
 }  // namespace rayspec

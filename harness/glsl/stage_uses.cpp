@@ -21,6 +21,8 @@ void visitExpr(const Expr& e, StageUses& u) {
     if (e.name.rfind("sphere_", 0) == 0) u.scene = u.sphere = true;
     if (e.name.rfind("shader_record_", 0) == 0) u.shader_record = true;
     if (e.name.rfind("light_", 0) == 0) u.light = u.shader_record = true;
+  } else if (e.kind == Expr::Kind::RecordMember) {
+    u.record_members = true;
   }
   for (const Expr& a : e.args) visitExpr(a, u);
 }
@@ -49,6 +51,7 @@ void visitProgram(const Program& p, Stage stage, const Plan& plan, StageUses& u)
         break;
       case Stmt::Kind::Call:
         u.call = true;
+        u.call_locations.insert(s.call_location);
         visitExpr(s.call_index, u);
         for (const auto& a : s.assigns) visitExpr(a.second, u);
         break;

@@ -36,6 +36,10 @@ Val Machine::dataBuiltin(const CExpr& e, StageEnv& env) {
       return fromVec4(env.callee.color);
     case kBiCalleeValue:
       return fromUint(env.callee.value);
+    case kBiCallWord:
+      return fromUint(cd->words[e.index % kMaxCallDataWords]);
+    case kBiCalleeWord:
+      return fromUint(env.callee.words[e.index % kMaxCallDataWords]);
     default:
       break;
   }

@@ -81,6 +81,19 @@ void Machine::record(int idx, const Val& v, ValueType t) {
   rec_[kRecordWrittenMaskWord] |= 1u << idx;
 }
 
+// A member of the shader record block: its words from e.index on, as its
+// type (a word past the record's data reads 0).
+Val Machine::recordMember(const CExpr& e, const StageEnv& env) {
+  auto word = [&](uint32_t k) {
+    const uint32_t i = e.index + k;
+    return env.record_data && i < env.record_data->size() ? (*env.record_data)[i] : 0u;
+  };
+  if (e.type == ValueType::Uint) return fromUint(word(0));
+  Val r;
+  for (int k = 0; k < componentCount(e.type); ++k) r.f[k] = bitsf(word(k));
+  return r;
+}
+
 Val Machine::eval(const CExpr& e, StageEnv& env) {
   switch (e.kind) {
     case Expr::Kind::Literal:
@@ -92,6 +105,8 @@ Val Machine::eval(const CExpr& e, StageEnv& env) {
       return op(e, env);
     case Expr::Kind::Local:
       return e.index < env.locals.size() ? env.locals[e.index] : Val{};
+    case Expr::Kind::RecordMember:
+      return recordMember(e, env);
   }
   return Val{};
 }
@@ -403,6 +418,7 @@ void Machine::execSet(const CStmt& s, StageEnv& env) {
 void Machine::execCall(const CStmt& s, StageEnv& env) {
   CallData d;
   for (const CAssign& a : s.assigns) writeSlot(d, a, eval(a.value, env));
+  if (s.src) d.location = s.src->call_location;
   callCallable(eval(s.call_index, env).u, d, env.depth, s);
   env.callee = d;
 }
@@ -498,6 +514,8 @@ void Machine::callCallable(uint32_t index, CallData& data, uint32_t depth, const
   if (call_nesting_ >= kDefaultCallableDepth && sh_.faults.stack_size_ignored) return;
   const SbtRecord& rec = default_callable_[index];
   if (!rec.group || *rec.group >= sh_.c->pipeline.callables.size()) return;  // R-SBT-ZERO
+  if (p.callDataWords(p.callableData(*rec.group)) != p.callDataWords(data.location))
+    callDataTypeDiffers(data, *rec.group);
   bumpRuns(kRunsCallable);
   StageEnv env;
   env.stage = Stage::Callable;

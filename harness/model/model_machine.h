@@ -30,6 +30,8 @@ struct CallData {
   std::array<float, 4> color{};
   std::array<float, 3> position{}, normal{};
   uint32_t value = 0;
+  uint32_t location = 0;  // the call's data location (its type: Pipeline::call_data_words)
+  std::array<uint32_t, kMaxCallDataWords> words{};
 };
 
 struct TraceRay {
@@ -162,6 +164,8 @@ class alignas(64) Machine {
   Val eval(const CExpr& e, StageEnv& env);
   Val builtin(const CExpr& e, StageEnv& env);
   Val dataBuiltin(const CExpr& e, StageEnv& env);
+  // shader_record.NAME: its words in the record data (pipeline.sbt.record_layout).
+  static Val recordMember(const CExpr& e, const StageEnv& env);
   Val vertexPosition(const HitView& hv, int i) const;
   Val op(const CExpr& e, StageEnv& env);
   // The ops op() runs before evaluating arguments (spheres, shader record
@@ -272,6 +276,8 @@ class alignas(64) Machine {
     if (sh_.payload_types && !ray_undefined_)
       payloadTypeDiffers(p, shader_location, list, index, stage);
   }
+  // A callable declaring another incoming callable data type than the call passes.
+  void callDataTypeDiffers(const CallData& d, uint32_t callable);
   void payloadTypeDiffers(const Payload& p, uint32_t shader_location, const char* list,
                           uint32_t index, const char* stage);
   void divisionByZero(const CExpr& e);

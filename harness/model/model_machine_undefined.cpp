@@ -11,6 +11,7 @@
 //   RecursionTooDeep     the trace or call is skipped
 //   PayloadType          the shader runs on the trace's payload as it is
 //   NullShader           no shader runs (as for any all-zero record)
+//   CallDataType         the callable runs on the call's data as it is
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -158,6 +159,18 @@ void Machine::payloadTypeDiffers(const Payload& p, uint32_t shader_location, con
                     std::to_string(words_of(shader_location)) +
                     " words), the trace passes location " + std::to_string(p.location) + " (" +
                     std::to_string(words_of(p.location)) + " words)");
+}
+
+void Machine::callDataTypeDiffers(const CallData& d, uint32_t callable) {
+  if (ray_undefined_) return;
+  const Pipeline& p = sh_.c->pipeline;
+  const uint32_t own = p.callableData(callable);
+  markUndefined(UndefinedReason::CallDataType,
+                "pipeline.callables[" + std::to_string(callable) +
+                    "]: its incoming callable data has the type of location " +
+                    std::to_string(own) + " (" + std::to_string(p.callDataWords(own)) +
+                    " words), the call passes location " + std::to_string(d.location) + " (" +
+                    std::to_string(p.callDataWords(d.location)) + " words)");
 }
 
 void Machine::nullShaderReached(uint32_t flag, const char* shader, const char* region,

@@ -64,7 +64,9 @@ const std::vector<std::string>& builtinNames() {
                                                  "world_to_object_3x4_0",
                                                  "world_to_object_3x4_1",
                                                  "world_to_object_3x4_2",
-                                                 "attribute.word<i>"};
+                                                 "attribute.word<i>",
+                                                 "call.word<i>",
+                                                 "callee.word<i>"};
   return names;
 }
 
@@ -146,6 +148,9 @@ struct Compiler {
       case Expr::Kind::Constant:
         constant(e, r);
         break;
+      case Expr::Kind::RecordMember:  // its first word in the record's data
+        if (const RecordMember* m = pipeline.record_layout.find(e.name)) r.index = m->offset / 4;
+        break;
       case Expr::Kind::Local:
         if (const LocalInfo* info = scope.find(e.name)) {
           r.index = info->slot;
@@ -165,12 +170,16 @@ struct Compiler {
         const auto& names = builtinNames();
         const auto word = payloadWordBuiltin(e.name);  // payload.word3: word<i>, index 3
         const auto attribute_word = attributeWordBuiltin(e.name);
+        const auto call_word = callWordBuiltin(e.name);
         if (word) r.index = word->index;
         if (attribute_word) r.index = *attribute_word;
-        const auto it = std::find(names.begin(), names.end(),
-                                  word ? (word->child ? "child.word<i>" : "payload.word<i>")
-                                  : attribute_word ? "attribute.word<i>"
-                                                   : e.name);
+        if (call_word) r.index = call_word->index;
+        const auto it =
+            std::find(names.begin(), names.end(),
+                      word             ? (word->child ? "child.word<i>" : "payload.word<i>")
+                      : attribute_word ? "attribute.word<i>"
+                      : call_word      ? (call_word->callee ? "callee.word<i>" : "call.word<i>")
+                                       : e.name);
         if (it != names.end()) {
           r.builtin = static_cast<uint8_t>(it - names.begin());
           out.read_bits |= uint64_t{1} << r.builtin;

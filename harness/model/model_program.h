@@ -88,6 +88,8 @@ enum Builtin : uint8_t {
   kBiWorldToObject0 = kBiObjectToWorld0 + 7,  // the same for world_to_object
   kBiTransformEnd = kBiWorldToObject0 + 7,
   kBiAttributeWord = kBiTransformEnd,  // CExpr::index: the word
+  kBiCallWord,                         // CExpr::index: the word
+  kBiCalleeWord,
   kBiCount,
   kBiUnknown = 0xFF
 };

@@ -115,6 +115,11 @@ std::vector<BuiltinInfo> rayAndDataBuiltins() {
        "color of the callable data after this stage's last call"},
       {"callee.value", ValueType::Uint, R | C | M | K,
        "value of the callable data after this stage's last call"},
+      {"call.word<i>", ValueType::Uint, K,
+       "word i (0..9) of the incoming callable data, within its type's pipeline.callable_data "
+       "words"},
+      {"callee.word<i>", ValueType::Uint, R | C | M | K,
+       "word i of the callable data after this stage's last call (0 beyond that call's type)"},
   };
 }
 
@@ -125,6 +130,8 @@ const BuiltinInfo* findBuiltin(const std::string& name) {
   if (auto w = payloadWordBuiltin(name))
     return findBuiltin(w->child ? "child.word<i>" : "payload.word<i>");
   if (attributeWordBuiltin(name)) return findBuiltin("attribute.word<i>");
+  if (auto w = callWordBuiltin(name))
+    return findBuiltin(w->callee ? "callee.word<i>" : "call.word<i>");
   for (const BuiltinInfo& b : builtins())
     if (name == b.name) return &b;
   return nullptr;

@@ -68,9 +68,11 @@ struct BuiltinInfo {
 //   child.color (Vec4), child.value (Uint): the payload of this stage's last
 //       nested trace (closest-hit, miss); child.word<i> (Uint) its word i
 //   call.position, call.normal (Vec3), call.color (Vec4), call.value (Uint):
-//       the incoming callable data (callable)
-//   callee.color (Vec4), callee.value (Uint): the callable data after this
-//       stage's last call (raygen, closest-hit, miss, callable)
+//       the incoming callable data (callable); call.word<i> (Uint) its word
+//       i (its type's pipeline.callable_data words)
+//   callee.color (Vec4), callee.value (Uint), callee.word<i> (Uint): the
+//       callable data after this stage's last call (raygen, closest-hit,
+//       miss, callable)
 const std::vector<BuiltinInfo>& builtins();
 const BuiltinInfo* findBuiltin(const std::string& name);
 

@@ -85,9 +85,11 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
 class Checker {
  public:
   Checker(Stage stage, const std::vector<std::string>& counters,
-          const std::vector<std::string>& fields, const std::vector<SpecConstant>& constants)
+          const std::vector<std::string>& fields, const std::vector<SpecConstant>& constants,
+          const ShaderRecordLayout* record_layout)
       : stage_(stage), counters_(counters), fields_(fields) {
     scope_.setConstants(&constants);
+    scope_.setRecordLayout(record_layout);
   }
 
   std::optional<ProgramError> block(std::vector<Stmt>& stmts) {
@@ -316,8 +318,8 @@ class Checker {
     return std::nullopt;
   }
 
-  // payload / call_data fields (color, value), for a payload also its words
-  // (word<i>), and for `call` also position, normal.
+  // payload / call_data fields (color, value, word<i>), and for `call` also
+  // position, normal.
   enum class Data { Payload, CallData, Call };
   std::optional<ProgramError> dataFields(Stmt& s, Data data) {
     const bool call = data == Data::Call;
@@ -325,15 +327,14 @@ class Checker {
       ValueType want;
       if (name == "color")
         want = ValueType::Vec4;
-      else if (name == "value" || (data == Data::Payload && payloadWordField(name)))
+      else if (name == "value" || payloadWordField(name))
         want = ValueType::Uint;
       else if (call && (name == "position" || name == "normal"))
         want = ValueType::Vec3;
       else
         return ProgramError{"unknown field '" + name + "' (" +
-                                (call                    ? "position, normal, color, value"
-                                 : data == Data::Payload ? "color, value, word0 .. word9"
-                                                         : "color, value") +
+                                (call ? "position, normal, color, value, word0 .. word9"
+                                      : "color, value, word0 .. word9") +
                                 ")",
                             value.loc};
       if (auto r = as(value, want, name)) return r;
@@ -382,8 +383,9 @@ class Checker {
 std::optional<ProgramError> checkProgram(Program& p, Stage stage,
                                          const std::vector<std::string>& counters,
                                          const std::vector<std::string>& per_ray_fields,
-                                         const std::vector<SpecConstant>& constants) {
-  return Checker(stage, counters, per_ray_fields, constants).block(p);
+                                         const std::vector<SpecConstant>& constants,
+                                         const ShaderRecordLayout* record_layout) {
+  return Checker(stage, counters, per_ray_fields, constants, record_layout).block(p);
 }
 
 }  // namespace rayspec

@@ -47,9 +47,15 @@ class LocalScope {
   // The specialization constants `const.NAME` reads (seen in every frame).
   void setConstants(const std::vector<SpecConstant>* constants) { constants_ = constants; }
   const SpecConstant* findConstant(const std::string& name) const;
+  // The shader record block's members `shader_record.NAME` reads.
+  void setRecordLayout(const ShaderRecordLayout* layout) { record_layout_ = layout; }
+  const RecordMember* findRecordMember(const std::string& name) const {
+    return record_layout_ ? record_layout_->find(name) : nullptr;
+  }
 
  private:
   const std::vector<SpecConstant>* constants_ = nullptr;
+  const ShaderRecordLayout* record_layout_ = nullptr;
   std::vector<std::pair<std::string, LocalInfo>> names_;
   std::vector<size_t> blocks_;
   uint32_t next_slot_ = 0, frame_slots_ = 0;

@@ -63,6 +63,7 @@ struct ProgramError {
 std::optional<ProgramError> checkProgram(Program& p, Stage stage,
                                          const std::vector<std::string>& counters,
                                          const std::vector<std::string>& per_ray_fields,
-                                         const std::vector<SpecConstant>& constants = {});
+                                         const std::vector<SpecConstant>& constants = {},
+                                         const ShaderRecordLayout* record_layout = nullptr);
 
 }  // namespace rayspec

@@ -22,6 +22,15 @@ std::optional<PayloadWordRead> payloadWordBuiltin(const std::string& name) {
   return std::nullopt;
 }
 
+std::optional<CallWordRead> callWordBuiltin(const std::string& name) {
+  for (bool callee : {false, true}) {
+    const std::string prefix = callee ? "callee." : "call.";
+    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    if (auto i = payloadWordField(name.substr(prefix.size()))) return CallWordRead{callee, *i};
+  }
+  return std::nullopt;
+}
+
 std::optional<uint32_t> attributeWordBuiltin(const std::string& name) {
   const std::string prefix = "attribute.";
   if (name.compare(0, prefix.size(), prefix) != 0) return std::nullopt;

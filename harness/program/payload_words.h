@@ -25,6 +25,17 @@ struct PayloadWordRead {
 };
 std::optional<PayloadWordRead> payloadWordBuiltin(const std::string& name);
 
+// The extra uint words of a callable data type
+// (pipeline.callable_data[].words): a call and call_data write `word<i>`; a
+// callable reads `call.word<i>` (its incoming data), a caller
+// `callee.word<i>` (its last call's data). The same names word0 .. word9.
+struct CallWordRead {
+  bool callee = false;
+  uint32_t index = 0;
+};
+// "call.word<i>" or "callee.word<i>": which and i; nullopt for any other name.
+std::optional<CallWordRead> callWordBuiltin(const std::string& name);
+
 // The extra uint words of the hit attribute (pipeline.hit_attribute.words):
 // a report writes `word<i>`, any-hit and closest-hit read `attribute.word<i>`.
 // The vec2 and 6 words fill the 32 bytes every device allows

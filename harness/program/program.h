@@ -29,9 +29,10 @@ int componentCount(ValueType t);  // Bool/Uint/Float 1, Vec2 2, ...
 //                          "payload.color", ...);
 //   {op: arg} / {op: [args]} -> Op (see ops.h: add, eq, odd, sphere_near, ...).
 struct Expr {
-  // Local: `var.NAME`, Constant: `const.NAME` (a specialization constant);
-  // name NAME.
-  enum class Kind { Literal, Builtin, Op, Local, Constant };
+  // Local: `var.NAME`, Constant: `const.NAME` (a specialization constant),
+  // RecordMember: `shader_record.NAME` (a member of the shader record block,
+  // pipeline.sbt.record_layout); name NAME.
+  enum class Kind { Literal, Builtin, Op, Local, Constant, RecordMember };
   Kind kind = Kind::Literal;
   ValueType type = ValueType::Uint;  // filled by the type checker
   std::vector<double> literal;       // Literal: 1..4 components
@@ -94,8 +95,11 @@ struct Stmt {
   std::vector<Expr> attribute;                        // Report: optional Vec2 hit
                                                       // attribute; vec2(0) when absent
   Expr call_index;                                    // Call
-  std::string light;                                  // Light: point|spot|directional
-  TraceArgs trace;                                    // Trace
+  uint32_t call_location = 0;  // Call: the callable data location passed (a constant:
+                               // Pipeline::call_data_words)
+  SourceLoc call_location_loc;
+  std::string light;  // Light: point|spot|directional
+  TraceArgs trace;    // Trace
   std::string local;  // Array, Store: the array; Repeat: its variable (optional);
                       // Invoke: the function
   ValueType local_type = ValueType::Uint;  // Array: the element type
@@ -117,6 +121,27 @@ struct SpecConstant {
   ValueType type = ValueType::Uint;
   double value = 0;
   SourceLoc loc;
+};
+
+// The shader record block's members (pipeline.sbt.record_layout), in the
+// order declared, each Uint, Float or a vector, at the byte offset the block's
+// layout gives it (std430 or scalar; shader_record_layout.h lays them out).
+struct RecordMember {
+  std::string name;
+  ValueType type = ValueType::Uint;
+  uint32_t offset = 0;
+  SourceLoc loc;
+};
+struct ShaderRecordLayout {
+  bool scalar = false;  // GL_EXT_scalar_block_layout's scalar, else std430
+  std::vector<RecordMember> members;
+  uint32_t bytes = 0;  // the end of the last member
+  bool declared() const { return !members.empty(); }
+  const RecordMember* find(const std::string& name) const {
+    for (const RecordMember& m : members)
+      if (m.name == name) return &m;
+    return nullptr;
+  }
 };
 
 // Bounds of the control-flow vocabulary, the same on both sides: a repeat runs

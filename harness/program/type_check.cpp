@@ -289,6 +289,14 @@ std::optional<ProgramError> checkExpr(Expr& e, Stage stage, const LocalScope* lo
       e.type = k->type;
       return std::nullopt;
     }
+    case Expr::Kind::RecordMember: {
+      const RecordMember* m = locals ? locals->findRecordMember(e.name) : nullptr;
+      if (!m)
+        return err(e,
+                   "'shader_record." + e.name + "' is not a member of pipeline.sbt.record_layout");
+      e.type = m->type;
+      return std::nullopt;
+    }
     case Expr::Kind::Literal:
       return checkLiteral(e);
     case Expr::Kind::Builtin: {

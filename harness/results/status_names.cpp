@@ -116,6 +116,8 @@ const char* undefinedReasonName(UndefinedReason r) {
       return "payload-type";
     case UndefinedReason::NullShader:
       return "null-shader";
+    case UndefinedReason::CallDataType:
+      return "call-data-type";
   }
   return "ray-parameters";
 }
@@ -126,7 +128,7 @@ bool parseUndefinedReason(const std::string& name, UndefinedReason* out) {
       UndefinedReason::HitRecordOutOfRange, UndefinedReason::MissRecordOutOfRange,
       UndefinedReason::CallableOutOfRange,  UndefinedReason::DivisionByZero,
       UndefinedReason::RecursionTooDeep,    UndefinedReason::PayloadType,
-      UndefinedReason::NullShader};
+      UndefinedReason::NullShader,          UndefinedReason::CallDataType};
   return parseByName(name, out, all, undefinedReasonName);
 }
 

@@ -17,6 +17,7 @@ enum class UndefinedReason {
   RecursionTooDeep,  // traceRay beyond max_recursion, or callables nested too deeply
   PayloadType,       // the shader reached declares another incoming payload type than the trace's
   NullShader,        // a NO_NULL_*_SHADERS pipeline reaches an all-zero record for that shader
+  CallDataType,      // the callable reached declares another incoming data type than the call's
 };
 const char* undefinedReasonName(UndefinedReason r);
 bool parseUndefinedReason(const std::string& name, UndefinedReason* out);

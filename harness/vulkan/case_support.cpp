@@ -94,6 +94,10 @@ void checkCaseSupport(const VulkanContext& ctx, const Case& c, const Plan& plan)
         "rays.command indirect2: the device lacks VK_KHR_ray_tracing_maintenance1's "
         "rayTracingPipelineTraceRaysIndirect2");
   if (plan.position_fetch) checkPositionFetch(ctx);
+  if (c.pipeline.record_layout.declared() && c.pipeline.record_layout.scalar &&
+      !d.scalar_block_layout)
+    throw NotSupportedError(
+        "pipeline.sbt.record_layout: a scalar shader record block needs scalarBlockLayout");
   if (plan.cull_mask_builtin && !d.ray_tracing_maintenance1)
     throw NotSupportedError(
         "cull_mask: gl_CullMaskEXT needs VK_KHR_ray_tracing_maintenance1 (rayTracingMaintenance1)");

@@ -102,6 +102,7 @@ void createDevice(VulkanContext& ctx) {
     throw VulkanError("bufferDeviceAddress not supported: VK_ERROR_FEATURE_NOT_PRESENT");
   v12_on.bufferDeviceAddress = VK_TRUE;
   v12_on.scalarBlockLayout = v12.scalarBlockLayout;
+  ctx.info.scalar_block_layout = v12.scalarBlockLayout;
   v12_on.vulkanMemoryModel = v12.vulkanMemoryModel;
   v12_on.vulkanMemoryModelDeviceScope = v12.vulkanMemoryModelDeviceScope;
   VkPhysicalDeviceRayTracingMaintenance1FeaturesKHR maintenance1_on{

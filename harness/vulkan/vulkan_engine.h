@@ -72,6 +72,9 @@ struct DeviceInfo {
   // VK_KHR_ray_tracing_position_fetch with its rayTracingPositionFetch
   // feature (gl_HitTriangleVertexPositionsEXT, the vertex_position<i> built-ins).
   bool position_fetch = false;
+  // Vulkan 1.2's scalarBlockLayout (a scalar shader record block,
+  // pipeline.sbt.record_layout).
+  bool scalar_block_layout = false;
   // VK_EXT_pipeline_library_group_handles with its pipelineLibraryGroupHandles
   // feature (library group handles identical to the linked pipeline's).
   bool library_group_handles = false;

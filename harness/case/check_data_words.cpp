@@ -1,0 +1,135 @@
+// The payload and callable data locations traces and calls name, and the
+// words programs read and write, against the types of pipeline.payloads and
+// pipeline.callable_data:
+// - a trace's location must be declared, its starting words
+//   (trace.payload.word<i>) within its location's type; a miss, closest-hit
+//   or any-hit reads and writes words of its own incoming type only (its
+//   `payload:` location); raygen's payload.word<i> and a stage's
+//   child.word<i> (the last trace's payload) are within the largest type;
+// - the same for a call (call.location, call.word<i>), a callable's
+//   call.word<i> and call_data words (its `call_data:` location), and a
+//   stage's callee.word<i> (the last call's data).
+#include "case/case_parts.h"
+#include "program/walk_program.h"
+
+namespace rayspec {
+namespace {
+
+// The words of a stage's own incoming payload and callable data types.
+struct Incoming {
+  uint32_t payload = 0, call = 0;
+};
+
+class WordChecker {
+ public:
+  WordChecker(YamlReader& r, const Pipeline& p) : r_(r), p_(p) {}
+
+  void program(const Program& prog, const std::string& field, Incoming incoming) {
+    if (r_.isBadProgram(field)) return;
+    walkExpressions(prog, [&](const Expr& e) {
+      if (e.kind == Expr::Kind::Builtin) read(e, field, incoming);
+    });
+    walkStatements(prog, [&](const Stmt& s) {
+      if (s.kind == Stmt::Kind::SetPayload)
+        writes(s, field, "payload.", incoming.payload, "this shader's payload type");
+      if (s.kind == Stmt::Kind::SetCall)
+        writes(s, field, "call_data.", incoming.call, "this callable's data type");
+      if (s.kind == Stmt::Kind::Trace) trace(s, field);
+      if (s.kind == Stmt::Kind::Call) call(s, field);
+    });
+  }
+
+ private:
+  void read(const Expr& e, const std::string& field, Incoming incoming) {
+    if (auto w = payloadWordBuiltin(e.name))
+      within(e.loc, field, e.name, w->index, w->child ? p_.maxPayloadWords() : incoming.payload,
+             w->child ? "the largest payload type" : "this shader's payload type");
+    if (auto w = callWordBuiltin(e.name))
+      within(e.loc, field, e.name, w->index, w->callee ? p_.maxCallDataWords() : incoming.call,
+             w->callee ? "the largest callable data type" : "this callable's data type");
+  }
+
+  void writes(const Stmt& s, const std::string& field, const std::string& prefix, uint32_t words,
+              const std::string& type) {
+    for (const auto& [name, value] : s.assigns)
+      if (auto i = payloadWordField(name)) within(value.loc, field, prefix + name, *i, words, type);
+  }
+
+  void trace(const Stmt& s, const std::string& field) {
+    const uint32_t location = s.trace.location;
+    if (!declared(location, p_.payload_words.size(), s.trace.location_loc, field,
+                  "payload location", "pipeline.payloads"))
+      return;
+    writes(s, field, "trace.payload.", p_.payload_words[location],
+           "location " + std::to_string(location) + "'s payload type");
+  }
+
+  void call(const Stmt& s, const std::string& field) {
+    const uint32_t location = s.call_location;
+    if (!declared(location, p_.call_data_words.size(),
+                  s.call_location_loc.line ? s.call_location_loc : s.loc, field,
+                  "callable data location", "pipeline.callable_data"))
+      return;
+    writes(s, field, "call.", p_.call_data_words[location],
+           "location " + std::to_string(location) + "'s callable data type");
+  }
+
+  bool declared(uint32_t location, size_t count, const SourceLoc& at, const std::string& field,
+                const std::string& what, const std::string& list) {
+    if (location < count) return true;
+    error(at, field,
+          what + " " + std::to_string(location) + ", but " + list + " declares " +
+              std::to_string(count));
+    return false;
+  }
+
+  void within(const SourceLoc& at, const std::string& field, const std::string& what,
+              uint32_t index, uint32_t words, const std::string& type) {
+    if (index < words) return;
+    error(at, field,
+          what + ": word " + std::to_string(index) + ", but " + type + " has " +
+              std::to_string(words) + " word(s) (" +
+              (type.find("callable") != std::string::npos ? "pipeline.callable_data"
+                                                          : "pipeline.payloads") +
+              "[].words)");
+  }
+
+  void error(const SourceLoc& at, const std::string& field, const std::string& message) {
+    SourceLoc loc = at;
+    if (loc.file.empty()) loc.file = r_.file();
+    if (loc.field.empty()) loc.field = field;
+    r_.error(loc, message);
+  }
+
+  YamlReader& r_;
+  const Pipeline& p_;
+};
+
+}  // namespace
+
+void checkDataWords(YamlReader& r, const Case& c) {
+  const Pipeline& p = c.pipeline;
+  WordChecker check(r, p);
+  auto payload_of = [&](uint32_t location) {
+    return location < p.payload_words.size() ? p.payload_words[location] : 0u;
+  };
+  const Incoming raygen{p.maxPayloadWords(), 0};
+  check.program(p.raygen, "pipeline.raygen", raygen);
+  for (const Program& g : p.other_raygens) check.program(g, "pipeline.raygens", raygen);
+  for (size_t i = 0; i < p.miss.size(); ++i)
+    check.program(p.miss[i], "pipeline.miss[" + std::to_string(i) + "]",
+                  {payload_of(p.missPayload(i)), 0});
+  for (size_t i = 0; i < p.hit_groups.size(); ++i) {
+    const HitGroup& g = p.hit_groups[i];
+    const std::string f = "pipeline.hit_groups[" + std::to_string(i) + "].";
+    const Incoming in{payload_of(g.payload), 0};
+    if (g.closest_hit) check.program(*g.closest_hit, f + "closest_hit", in);
+    if (g.any_hit) check.program(*g.any_hit, f + "any_hit", in);
+    if (g.intersection) check.program(*g.intersection, f + "intersection", {});
+  }
+  for (size_t i = 0; i < p.callables.size(); ++i)
+    check.program(p.callables[i], "pipeline.callables[" + std::to_string(i) + "]",
+                  {0, p.callDataWords(p.callableData(i))});
+}
+
+}  // namespace rayspec
