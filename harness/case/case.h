@@ -18,6 +18,7 @@
 #include "case/vertex_format.h"
 #include "program/payload_words.h"
 #include "program/program.h"
+#include "program/stage_interface.h"
 #include "results/undefined_reason.h"
 
 namespace rayspec {
@@ -352,6 +353,16 @@ struct StaticUndefined {
   std::string message;
 };
 
+// A shader the case expects the compiler to reject (expect_rejected,
+// R-STAGE-INTERFACE): its name (Pipeline::shaderName) and the uses of an
+// interface its stage cannot declare that the checker found in it
+// (program/stage_interface.h).
+struct ExpectedRejection {
+  std::string shader;
+  std::vector<InterfaceUse> uses;
+  SourceLoc loc;
+};
+
 struct Case {
   std::string name;  // e.g. "anyhit/ignore-odd-primitives"
   std::string file;  // path of the YAML file
@@ -365,6 +376,9 @@ struct Case {
   Pipeline pipeline;
   Outputs outputs;
   std::vector<StaticUndefined> static_undefined;  // only in a case that claims R-UB
+  // Shaders the compiler must reject; a case with any runs no launch: it is
+  // judged by compiling them (run/judge_rejections.h).
+  std::vector<ExpectedRejection> expected_rejections;
   bool claims(const std::string& rule) const {
     for (const std::string& r : rules)
       if (r == rule) return true;

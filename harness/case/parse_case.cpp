@@ -64,10 +64,25 @@ void checkCaseName(YamlReader& r, const Case& c) {
               "'" + c.name + "' cannot name a results folder: '" + part + "' " + problem);
 }
 
+// expect_rejected: [shader names] (R-STAGE-INTERFACE); checkPrograms finds
+// what each does that its stage cannot.
+void parseExpectedRejections(YamlReader& r, const YAML::Node& n, Case& c) {
+  if (!r.expectSeq(n, "expect_rejected")) return;
+  for (size_t i = 0; i < n.size(); ++i) {
+    const std::string f = "expect_rejected[" + std::to_string(i) + "]";
+    if (auto name = r.string(n[i], f)) c.expected_rejections.push_back({*name, {}, r.loc(n[i], f)});
+  }
+  if (!c.claims("R-STAGE-INTERFACE"))
+    r.error(n, "expect_rejected",
+            "a case that expects a rejection claims R-STAGE-INTERFACE (and runs no launch)");
+}
+
 void parseTop(YamlReader& r, const YAML::Node& root, const std::vector<std::string>* catalog,
               Case& c) {
   r.checkDuplicateKeys(root);
-  if (!r.expectMap(root, "", {"rules", "description", "scene", "rays", "pipeline", "outputs"}))
+  if (!r.expectMap(
+          root, "",
+          {"rules", "description", "scene", "rays", "pipeline", "outputs", "expect_rejected"}))
     return;
   if (r.require(root, "", "rules")) parseRules(r, YamlReader::get(root, "rules"), catalog, c.rules);
   if (auto d = YamlReader::get(root, "description"); d.IsDefined())
@@ -83,6 +98,8 @@ void parseTop(YamlReader& r, const YAML::Node& root, const std::vector<std::stri
   }
   const YAML::Node pipeline = YamlReader::get(root, "pipeline");
   parsePipeline(r, pipeline, c.pipeline);
+  if (auto e = YamlReader::get(root, "expect_rejected"); e.IsDefined())
+    parseExpectedRejections(r, e, c);
   checkPrograms(r, c, pipeline);
   checkRecordReads(r, c);
   checkDataWords(r, c);

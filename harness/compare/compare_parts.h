@@ -15,6 +15,10 @@ namespace rayspec {
 // ambiguous rays give each counter the slack their legal answers allow; a
 // counter that follows a stage's run count (trace_shape.h) must also agree
 // with the device's own per-ray records.
+// R-STAGE-INTERFACE: every shader the case expects the compiler to reject
+// (the model names them) was rejected on the device side (compare_rejections.cpp).
+void compareRejections(const Case& c, const Results& device, const Results& model, Verdict& v);
+
 void compareCounters(const Case& c, const Results& device, const Results& model,
                      size_t undefined_rays, Verdict& v);
 // `undefined`: rays left out (R-UB), as in compareAnyHitRuns.

@@ -120,6 +120,7 @@ std::string customIndexTruncated(Case& c, ModelOptions& o);
 std::string zeroRecordRunsGroup0(Case& c, ModelOptions& o);
 std::string shaderRecordDataZeroed(Case& c, ModelOptions& o);
 std::string recordLayoutSwapped(Case& c, ModelOptions& o);
+FaultResult stageInterfaceAccepted(RecordFaultArgs& a);
 std::string reverseOrder(Case& c, ModelOptions& o);
 std::string buildOrderFirstHit(Case& c, ModelOptions& o);
 // The interval ends (mutate_intervals.cpp).

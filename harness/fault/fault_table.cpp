@@ -13,6 +13,10 @@ std::vector<FaultImpl> recordEdits() {
   return {
       // Record edits of the device's own results.
       {"drop-miss", K::RecordEdit, "a clear ray that missed runs no miss shader", dropMiss},
+      {"stage-interface-accepted", K::RecordEdit,
+       "the compiler accepts a payload in an intersection shader and a hit attribute in a miss "
+       "shader",
+       stageInterfaceAccepted},
       {"swap-primitive-id", K::RecordEdit, "two clear hit rays report each other's primitive id",
        swapPrimitiveId},
       {"chit-after-ignore", K::RecordEdit,

@@ -35,7 +35,8 @@ FaultResult plantFault(const std::string& name, const Case& c, const Plan& plan,
   if (!f) return notApplicable("unknown fault '" + name + "'");
   if (f->kind == FaultKind::Process) return notApplicable("a process fault");
   // A zero-sized launch has no records, and its counters may still be wrong.
-  const bool zero_launch = c.rays.rays.empty();
+  // Nor does a case whose shaders are only compiled (expect_rejected).
+  const bool zero_launch = c.rays.rays.empty() || !c.expected_rejections.empty();
   if (device.records.size() != model.records.size() || (device.records.empty() && !zero_launch))
     return notApplicable("no per-ray records to corrupt");
   if (f->kind == FaultKind::CaseMutation) return runMutated(*f, c, device);

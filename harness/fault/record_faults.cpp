@@ -49,6 +49,15 @@ FaultResult notApplicable(const std::string& why) {
   return {false, why};
 }
 
+// R-STAGE-INTERFACE: a compiler that accepts every shader a case expects it
+// to reject.
+FaultResult stageInterfaceAccepted(RecordFaultArgs& a) {
+  if (a.dev.w.rejected.empty()) return notApplicable("the case expects no rejection");
+  const size_t n = a.dev.w.rejected.size();
+  a.dev.w.rejected.clear();
+  return {true, std::to_string(n) + " shader(s) the compiler must reject accepted"};
+}
+
 FaultResult dropMiss(RecordFaultArgs& a) {
   uint32_t ray;
   if (!findClear(

@@ -46,6 +46,7 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-SBT-CALL", {"callable-record-shifted", "callable-index-ignored"}, {}},
       {"R-SBT-ZERO", {"zero-record-runs-group-0"}, {}},
       {"R-SBT-RECORD", {"shader-record-data-zeroed", "record-layout-swapped"}, {}},
+      {"R-STAGE-INTERFACE", {"stage-interface-accepted"}, {}},
       {"R-RECURSION", {"nested-trace-dropped"}, {}},
       {"R-CALLABLE", {"callable-data-not-returned", "call-data-words-lost"}, {}},
       {"R-PAYLOAD",

@@ -51,7 +51,7 @@ uint32_t outgoingLocation(const StageContext& ctx, uint32_t location) {
 }
 
 void emitPayloadVariables(const StageContext& ctx, GlslWriter& out) {
-  if (receivesPayload(ctx.stage))
+  if (receivesPayload(ctx.stage) || (ctx.rejected && ctx.uses.incoming_payload))
     out.line("layout(location = 0) rayPayloadInEXT " +
              payloadTypeName(wordsAt(ctx, ctx.payload_location)) + " payload;");
   if (!ctx.uses.trace) {

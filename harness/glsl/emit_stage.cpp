@@ -111,7 +111,7 @@ void interfaceVariables(const StageContext& ctx, GlslWriter& out) {
   emitPayloadVariables(ctx, out);
   emitCallDataVariables(ctx, out);
   if (u.hit_attribute &&
-      (s == Stage::ClosestHit || s == Stage::AnyHit || s == Stage::Intersection)) {
+      (s == Stage::ClosestHit || s == Stage::AnyHit || s == Stage::Intersection || ctx.rejected)) {
     if (ctx.attribute_words) {  // pipeline.hit_attribute.words: 8 + 4 x words bytes
       out.line("struct RsAttr { vec2 bary; uint words[" + std::to_string(ctx.attribute_words) +
                "]; };");
@@ -207,6 +207,9 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
   StageContext ctx{c, plan, stage, name, findStageUses(program, stage, plan)};
   (stage == Stage::Callable ? ctx.call_data_location : ctx.payload_location) = incoming_location;
   ctx.attribute_words = attribute_words;
+  for (const ExpectedRejection& e : c.expected_rejections)
+    if (e.shader == name) ctx.rejected = true;
+  if (ctx.rejected && stage == Stage::Miss) ctx.attribute_words = c.pipeline.attribute_words;
   if (plan.records) ctx.uses.record_fields.insert(recordFieldIndex(runsField(stage)));
   if (plan.records && stage == Stage::AnyHit)
     for (const char* f : {"any_hit_slots", "any_hit_repeats"})

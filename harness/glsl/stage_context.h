@@ -23,6 +23,7 @@ struct StageUses {
   bool scene = false;                  // aabb_min / aabb_max / sphere_*
   bool sphere = false;                 // sphere_*
   bool hit_attribute = false;          // barycentrics read, or a report written
+  bool incoming_payload = false;       // payload.* read (outside raygen) or written
   bool cull_mask = false;              // gl_CullMaskEXT read (GL_EXT_ray_cull_mask)
   bool position_fetch = false;         // vertex_position<i> read (shaders/position_fetch.glsl)
   bool counters = false;               // a count of a kept counter
@@ -42,6 +43,10 @@ struct StageContext {
   // A stage of a hit group with an intersection shader: the hit attribute's
   // words (pipeline.hit_attribute.words); 0 elsewhere (a plain vec2).
   uint32_t attribute_words = 0;
+  // The case expects the compiler to reject this shader (expect_rejected):
+  // it declares the interface its program uses even where its stage cannot
+  // (program/stage_interface.h), so that the compiler sees the real misuse.
+  bool rejected = false;
 };
 
 }  // namespace rayspec

@@ -16,6 +16,9 @@ void visitExpr(const Expr& e, StageUses& u) {
     if (e.name == "aabb_min" || e.name == "aabb_max") u.scene = true;
     if (e.name == "barycentrics" || attributeWordBuiltin(e.name)) u.hit_attribute = true;
     if (e.name == "cull_mask") u.cull_mask = true;
+    if (e.name == "payload.color" || e.name == "payload.value" ||
+        (payloadWordBuiltin(e.name) && !payloadWordBuiltin(e.name)->child))
+      u.incoming_payload = true;
     if (e.name.rfind("vertex_position", 0) == 0) u.position_fetch = true;
   } else if (e.kind == Expr::Kind::Op) {
     if (e.name.rfind("sphere_", 0) == 0) u.scene = u.sphere = true;
@@ -46,6 +49,9 @@ void visitProgram(const Program& p, Stage stage, const Plan& plan, StageUses& u)
         }
         break;
       case Stmt::Kind::SetPayload:
+        u.incoming_payload = true;
+        for (const auto& a : s.assigns) visitExpr(a.second, u);
+        break;
       case Stmt::Kind::SetCall:
         for (const auto& a : s.assigns) visitExpr(a.second, u);
         break;

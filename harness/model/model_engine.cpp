@@ -286,6 +286,10 @@ bool modelInThisBuild() {
 Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
   Results r = emptyResults(c, plan, opt);
+  // A case that expects its compiler to reject shaders launches nothing; the
+  // reference is the checker's (program/stage_interface.h): every one is.
+  for (const ExpectedRejection& e : c.expected_rejections) r.rejected.push_back(e.shader);
+  if (!c.expected_rejections.empty()) return r;
   const size_t n = static_cast<size_t>(c.rays.width) * c.rays.height;
   if (c.rays.rays.size() != n) {
     r.setStatus(SideStatus::Crash, "the case has " + std::to_string(c.rays.rays.size()) +

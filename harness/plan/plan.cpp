@@ -182,6 +182,14 @@ Plan derivePlan(const Case& c) {
   planStatements(programs, c.pipeline, plan);
   planShaderRecords(c.pipeline, plan);
   planOutputs(c, plan);
+  if (!c.expected_rejections.empty()) {
+    // The case launches nothing (its shaders are only compiled, R-STAGE-INTERFACE):
+    // no records, counters or images to read back.
+    plan.records = false;
+    plan.record_fields.clear();
+    plan.counters.clear();
+    plan.images.clear();
+  }
   return plan;
 }
 

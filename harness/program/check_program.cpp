@@ -86,10 +86,11 @@ class Checker {
  public:
   Checker(Stage stage, const std::vector<std::string>& counters,
           const std::vector<std::string>& fields, const std::vector<SpecConstant>& constants,
-          const ShaderRecordLayout* record_layout)
+          const ShaderRecordLayout* record_layout, std::vector<InterfaceUse>* interface_uses)
       : stage_(stage), counters_(counters), fields_(fields) {
     scope_.setConstants(&constants);
     scope_.setRecordLayout(record_layout);
+    scope_.waiveInterfaceRules(interface_uses);
   }
 
   std::optional<ProgramError> block(std::vector<Stmt>& stmts) {
@@ -104,7 +105,9 @@ class Checker {
  private:
   std::optional<ProgramError> stmt(Stmt& s) {
     const StmtRule& rule = ruleOf(s.kind);
-    if (!(rule.stages & stageBit(stage_)))
+    const bool waived = s.kind == Stmt::Kind::SetPayload && forbiddenInterface(stage_, "") &&
+                        scope_.letThrough(*forbiddenInterface(stage_, ""), "payload", s.loc);
+    if (!(rule.stages & stageBit(stage_)) && !waived)
       return ProgramError{std::string("'") + rule.name + "' is not allowed in " +
                               stageName(stage_) + " (allowed in: " + stageList(rule.stages) + ")",
                           s.loc};
@@ -384,8 +387,10 @@ std::optional<ProgramError> checkProgram(Program& p, Stage stage,
                                          const std::vector<std::string>& counters,
                                          const std::vector<std::string>& per_ray_fields,
                                          const std::vector<SpecConstant>& constants,
-                                         const ShaderRecordLayout* record_layout) {
-  return Checker(stage, counters, per_ray_fields, constants, record_layout).block(p);
+                                         const ShaderRecordLayout* record_layout,
+                                         std::vector<InterfaceUse>* interface_uses) {
+  return Checker(stage, counters, per_ray_fields, constants, record_layout, interface_uses)
+      .block(p);
 }
 
 }  // namespace rayspec

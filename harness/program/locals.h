@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "program/program.h"
+#include "program/stage_interface.h"
 
 namespace rayspec {
 
@@ -47,6 +48,16 @@ class LocalScope {
   // The specialization constants `const.NAME` reads (seen in every frame).
   void setConstants(const std::vector<SpecConstant>* constants) { constants_ = constants; }
   const SpecConstant* findConstant(const std::string& name) const;
+  // Forbidden interface uses (program/stage_interface.h) are noted here
+  // instead of refused, for a shader the case expects to be rejected.
+  void waiveInterfaceRules(std::vector<InterfaceUse>* uses) { interface_uses_ = uses; }
+  // Whether a use of `qualifier` was let through (and noted).
+  bool letThrough(const std::string& qualifier, const std::string& what,
+                  const SourceLoc& loc) const {
+    if (!interface_uses_) return false;
+    interface_uses_->push_back({qualifier, what, loc});
+    return true;
+  }
   // The shader record block's members `shader_record.NAME` reads.
   void setRecordLayout(const ShaderRecordLayout* layout) { record_layout_ = layout; }
   const RecordMember* findRecordMember(const std::string& name) const {
@@ -56,6 +67,7 @@ class LocalScope {
  private:
   const std::vector<SpecConstant>* constants_ = nullptr;
   const ShaderRecordLayout* record_layout_ = nullptr;
+  std::vector<InterfaceUse>* interface_uses_ = nullptr;
   std::vector<std::pair<std::string, LocalInfo>> names_;
   std::vector<size_t> blocks_;
   uint32_t next_slot_ = 0, frame_slots_ = 0;

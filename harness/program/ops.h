@@ -8,6 +8,7 @@
 
 #include "program/builtins.h"
 #include "program/program.h"
+#include "program/stage_interface.h"
 
 namespace rayspec {
 
@@ -64,6 +65,7 @@ std::optional<ProgramError> checkProgram(Program& p, Stage stage,
                                          const std::vector<std::string>& counters,
                                          const std::vector<std::string>& per_ray_fields,
                                          const std::vector<SpecConstant>& constants = {},
-                                         const ShaderRecordLayout* record_layout = nullptr);
+                                         const ShaderRecordLayout* record_layout = nullptr,
+                                         std::vector<InterfaceUse>* interface_uses = nullptr);
 
 }  // namespace rayspec

@@ -302,8 +302,11 @@ std::optional<ProgramError> checkExpr(Expr& e, Stage stage, const LocalScope* lo
     case Expr::Kind::Builtin: {
       const BuiltinInfo* b = findBuiltin(e.name);
       if (!b) return err(e, "unknown built-in '" + e.name + "'");
-      if (!(b->stages & stageBit(stage)))
-        return err(e, "built-in '" + e.name + "' cannot be read in " + stageName(stage));
+      if (!(b->stages & stageBit(stage))) {
+        const auto q = forbiddenInterface(stage, e.name);
+        if (!q || !locals || !locals->letThrough(*q, e.name, e.loc))
+          return err(e, "built-in '" + e.name + "' cannot be read in " + stageName(stage));
+      }
       e.type = b->type;
       return std::nullopt;
     }

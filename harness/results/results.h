@@ -148,6 +148,11 @@ struct Results {
   // each a Fail of R-LIBRARY (library group handles that differ from the
   // linked pipeline's, vulkan/library_group_handles.h).
   std::vector<std::string> device_findings;
+  // A case that expects its compiler to reject shaders (expect_rejected,
+  // R-STAGE-INTERFACE) launches nothing: the device side names each shader
+  // glslang refused for the forbidden interface; the model names every one
+  // the case expects.
+  std::vector<std::string> rejected;
   uint32_t library_handles_compared = 0;  // device: library group handles checked that way
   double seconds = 0.0;                   // wall time of the execution (setup + trace + read-back)
   StepCosts cost;                         // what each step of this side took (results/step_cost.h)

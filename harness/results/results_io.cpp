@@ -182,6 +182,7 @@ std::string writeResults(const Results& r, const std::string& dir_name,
   j["counters"] = r.counters;
   j["validation_messages"] = r.validation_messages;
   j["device_findings"] = r.device_findings;
+  j["rejected"] = r.rejected;
   j["library_handles_compared"] = r.library_handles_compared;
   j["images"] = json::array();
   for (const Image& im : r.images) {
@@ -248,6 +249,8 @@ void readHeader(const json& j, FieldReader& field, Results& r) {
   r.validation_messages = field(j, "validation_messages").get<std::vector<std::string>>();
   if (j.contains("device_findings"))  // bundles saved before it was kept have none
     r.device_findings = field(j, "device_findings").get<std::vector<std::string>>();
+  if (j.contains("rejected"))  // nor rejections
+    r.rejected = field(j, "rejected").get<std::vector<std::string>>();
   r.library_handles_compared = j.value("library_handles_compared", 0u);
 }
 

@@ -8,6 +8,7 @@
 #include "vulkan/case_buffers.h"
 #include "vulkan/commands.h"
 #include "vulkan/descriptors.h"
+#include "vulkan/expected_rejections.h"
 #include "vulkan/library_group_handles.h"
 #include "vulkan/pipeline.h"
 #include "vulkan/sbt_buffer.h"
@@ -36,6 +37,10 @@ struct CaseScope {
 }  // namespace
 
 void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results& r) {
+  if (!c.expected_rejections.empty()) {  // compiled, never launched
+    compileExpectedRejections(c, plan, r);
+    return;
+  }
   checkCaseSupport(ctx, c, plan);
   StepTimer glsl(r.cost, CostStep::GlslGeneration);
   const GeneratedPipeline generated = generateGlsl(c, plan);
