@@ -10,18 +10,8 @@ namespace {
 // Raygen calls callable 0 (location 1, six words) with words 0 and 5;
 // callable 0 calls callable 1 (location 2, two words) and keeps its answer;
 // the closest-hit calls callable 1 itself.
-const char* kCallDataTypes = R"(rules: [R-CALLABLE]
-scene:
-  blas:
-    tri:
-      - triangles:
-          vertices: [[-1, -1, 0], [2, -1, 0], [-1, 2, 0]]
-  instances: [{blas: tri}]
-rays:
-  list:
-    - {origin: [0, 0, 1], direction: [0, 0, -1]}
-    - {origin: [50, 0, 1], direction: [0, 0, -1]}
-pipeline:
+const std::string kCallDataTypes = std::string("rules: [R-CALLABLE]\n") + kTriangleHitAndMiss +
+                                   R"(pipeline:
   callable_data: [{}, {words: 6}, {words: 2}]
   raygen:
     - call: {index: 0, location: 1, word0: {add: [launch_id_x, 10]}, word5: 50, value: 1}
@@ -64,36 +54,28 @@ TEST(ModelCallData, CallDataWordsTravelWithTheTypeOfTheirLocation) {
   }
 }
 
-// An error of the callable data types names the line and field.
-std::string firstError(std::string text, const std::string& from, const std::string& to) {
-  text.replace(text.find(from), from.size(), to);
-  const ParseResult p = parseCaseText(text, "model/inline.yaml", "model/inline");
-  if (p.errors.empty()) return "(no error)";
-  return p.errors[0].loc.field + ": " + p.errors[0].message;
-}
-
 TEST(ModelCallData, LocationsAndWordsOutsideTheirTypesAreErrors) {
-  EXPECT_NE(firstError(kCallDataTypes, "{index: 1, location: 2, word1: 8}",
-                       "{index: 1, location: 3, word1: 8}")
+  EXPECT_NE(firstErrorAfter(kCallDataTypes, "{index: 1, location: 2, word1: 8}",
+                            "{index: 1, location: 3, word1: 8}")
                 .find("pipeline.hit_groups[0].closest_hit[0].call.location: callable data "
                       "location 3, but pipeline.callable_data declares 3"),
             std::string::npos);
-  EXPECT_NE(
-      firstError(kCallDataTypes, "location: 2, word1: call.word5", "location: 2, word2: call.word5")
-          .find("word 2, but location 2's callable data type has 2 word(s)"),
-      std::string::npos);
-  EXPECT_NE(
-      firstError(kCallDataTypes, "{word1: {mul: [call.word1, 3]}", "{word1: {mul: [call.word4, 3]}")
-          .find("pipeline.callables[1]"),
-      std::string::npos);
-  EXPECT_NE(firstError(kCallDataTypes, "{call_data: 2, program", "{call_data: 5, program")
+  EXPECT_NE(firstErrorAfter(kCallDataTypes, "location: 2, word1: call.word5",
+                            "location: 2, word2: call.word5")
+                .find("word 2, but location 2's callable data type has 2 word(s)"),
+            std::string::npos);
+  EXPECT_NE(firstErrorAfter(kCallDataTypes, "{word1: {mul: [call.word1, 3]}",
+                            "{word1: {mul: [call.word4, 3]}")
+                .find("pipeline.callables[1]"),
+            std::string::npos);
+  EXPECT_NE(firstErrorAfter(kCallDataTypes, "{call_data: 2, program", "{call_data: 5, program")
                 .find("pipeline.callables[1].call_data: callable data location 5, but "
                       "pipeline.callable_data declares 3"),
             std::string::npos);
-  EXPECT_NE(firstError(kCallDataTypes, "[{}, {words: 6}, {words: 2}]", "[{}, {words: 11}]")
+  EXPECT_NE(firstErrorAfter(kCallDataTypes, "[{}, {words: 6}, {words: 2}]", "[{}, {words: 11}]")
                 .find("pipeline.callable_data[1].words"),
             std::string::npos);
-  EXPECT_NE(firstError(kCallDataTypes, "value: callee.word0,", "value: callee.word6,")
+  EXPECT_NE(firstErrorAfter(kCallDataTypes, "value: callee.word0,", "value: callee.word6,")
                 .find("callee.word6: word 6, but the largest callable data type has 6"),
             std::string::npos);
 }

@@ -13,18 +13,8 @@ namespace {
 // trace starts from the first one's result plus 5. Closest-hit adds 100 and
 // traces again (nested, toward nothing) starting from its own payload times
 // 2, and keeps the miss's answer (+1000) in value1.
-const char* kStartPayload = R"(rules: [R-PAYLOAD]
-scene:
-  blas:
-    tri:
-      - triangles:
-          vertices: [[-1, -1, 0], [2, -1, 0], [-1, 2, 0]]
-  instances: [{blas: tri}]
-rays:
-  list:
-    - {origin: [0, 0, 1], direction: [0, 0, -1]}
-    - {origin: [50, 0, 1], direction: [0, 0, -1]}
-pipeline:
+const std::string kStartPayload = std::string("rules: [R-PAYLOAD]\n") + kTriangleHitAndMiss +
+                                  R"(pipeline:
   max_recursion: 2
   raygen:
     - trace: {payload: {value: 7, color: [1.0, 2.0, 3.0, 4.0]}}
@@ -63,18 +53,8 @@ TEST(ModelPayload, ATraceStartsWithThePayloadItsStatementGives) {
 }
 
 // The case file cases/recursion/payload-types.yaml, as its description works out.
-const char* kPayloadTypes = R"(rules: [R-PAYLOAD]
-scene:
-  blas:
-    tri:
-      - triangles:
-          vertices: [[-1, -1, 0], [2, -1, 0], [-1, 2, 0]]
-  instances: [{blas: tri}]
-rays:
-  list:
-    - {origin: [0, 0, 1], direction: [0, 0, -1]}
-    - {origin: [50, 0, 1], direction: [0, 0, -1]}
-pipeline:
+const std::string kPayloadTypes = std::string("rules: [R-PAYLOAD]\n") + kTriangleHitAndMiss +
+                                  R"(pipeline:
   max_recursion: 2
   payloads: [{}, {words: 10}, {words: 2}]
   raygen:
@@ -120,38 +100,30 @@ TEST(ModelPayload, PayloadWordsTravelWithTheTypeOfTheirLocation) {
   }
 }
 
-// An error of the payload types names the line and field.
-std::string firstError(std::string text, const std::string& from, const std::string& to) {
-  text.replace(text.find(from), from.size(), to);
-  const ParseResult p = parseCaseText(text, "model/inline.yaml", "model/inline");
-  if (p.errors.empty()) return "(no error)";
-  return p.errors[0].loc.field + ": " + p.errors[0].message;
-}
-
 TEST(ModelPayload, PayloadLocationsAndWordsOutsideTheirTypesAreErrors) {
-  EXPECT_NE(firstError(kPayloadTypes, "location: 2,", "location: 3,")
+  EXPECT_NE(firstErrorAfter(kPayloadTypes, "location: 2,", "location: 3,")
                 .find("pipeline.hit_groups[0].closest_hit[1].trace.location: payload location 3, "
                       "but pipeline.payloads declares 3"),
             std::string::npos);
-  EXPECT_NE(firstError(kPayloadTypes, "payload: {word0: payload.word5}",
-                       "payload: {word2: payload.word5}")
+  EXPECT_NE(firstErrorAfter(kPayloadTypes, "payload: {word0: payload.word5}",
+                            "payload: {word2: payload.word5}")
                 .find("word 2, but location 2's payload type has 2 word(s)"),
             std::string::npos);
-  EXPECT_NE(firstError(kPayloadTypes, "{word1: {add: [payload.word0, 7]}}",
-                       "{word1: {add: [payload.word3, 7]}}")
+  EXPECT_NE(firstErrorAfter(kPayloadTypes, "{word1: {add: [payload.word0, 7]}}",
+                            "{word1: {add: [payload.word3, 7]}}")
                 .find("pipeline.miss[1]"),
             std::string::npos);
-  EXPECT_NE(firstError(kPayloadTypes, "{payload: 2, program", "{payload: 4, program")
+  EXPECT_NE(firstErrorAfter(kPayloadTypes, "{payload: 2, program", "{payload: 4, program")
                 .find("pipeline.miss[1].payload: payload location 4, but pipeline.payloads "
                       "declares 3"),
             std::string::npos);
-  EXPECT_NE(firstError(kPayloadTypes, "[{}, {words: 10}, {words: 2}]", "[{}, {words: 11}]")
+  EXPECT_NE(firstErrorAfter(kPayloadTypes, "[{}, {words: 10}, {words: 2}]", "[{}, {words: 11}]")
                 .find("pipeline.payloads[1].words"),
             std::string::npos);
-  EXPECT_NE(
-      firstError(kPayloadTypes, "record: {value: payload.value,", "record: {value: payload.word10,")
-          .find("payload.word10"),
-      std::string::npos);
+  EXPECT_NE(firstErrorAfter(kPayloadTypes, "record: {value: payload.value,",
+                            "record: {value: payload.word10,")
+                .find("payload.word10"),
+            std::string::npos);
 }
 
 TEST(ModelPayload, AShaderOfAnotherPayloadTypeMakesTheRayUndefined) {

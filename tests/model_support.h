@@ -32,6 +32,30 @@ inline Case parseInline(const std::string& yaml, const std::string& name = "mode
 }
 
 // The model's results for a case in one tier.
+// The first parse error of `text` with `from` replaced by `to`, as
+// "field: message"; "(no error)" when it parses.
+inline std::string firstErrorAfter(std::string text, const std::string& from,
+                                   const std::string& to) {
+  text.replace(text.find(from), from.size(), to);
+  const ParseResult p = parseCaseText(text, "model/inline.yaml", "model/inline");
+  if (p.errors.empty()) return "(no error)";
+  return p.errors[0].loc.field + ": " + p.errors[0].message;
+}
+
+// One triangle under ray 0 (it hits) and nothing under ray 1 (it misses):
+// the scene and rays of a case whose pipeline follows.
+inline const char* kTriangleHitAndMiss = R"(scene:
+  blas:
+    tri:
+      - triangles:
+          vertices: [[-1, -1, 0], [2, -1, 0], [-1, 2, 0]]
+  instances: [{blas: tri}]
+rays:
+  list:
+    - {origin: [0, 0, 1], direction: [0, 0, -1]}
+    - {origin: [50, 0, 1], direction: [0, 0, -1]}
+)";
+
 inline Results runTier(const Case& c, ModelTier tier, unsigned threads = 2) {
   const Plan plan = derivePlan(c);
   return runOnModel(c, plan, ModelOptions{tier, threads});
