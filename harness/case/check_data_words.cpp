@@ -15,6 +15,9 @@
 namespace rayspec {
 namespace {
 
+constexpr const char* kPayloads = "pipeline.payloads";
+constexpr const char* kCallData = "pipeline.callable_data";
+
 // The words of a stage's own incoming payload and callable data types.
 struct Incoming {
   uint32_t payload = 0, call = 0;
@@ -31,9 +34,9 @@ class WordChecker {
     });
     walkStatements(prog, [&](const Stmt& s) {
       if (s.kind == Stmt::Kind::SetPayload)
-        writes(s, field, "payload.", incoming.payload, "this shader's payload type");
+        writes(s, field, "payload.", incoming.payload, "this shader's payload type", kPayloads);
       if (s.kind == Stmt::Kind::SetCall)
-        writes(s, field, "call_data.", incoming.call, "this callable's data type");
+        writes(s, field, "call_data.", incoming.call, "this callable's data type", kCallData);
       if (s.kind == Stmt::Kind::Trace) trace(s, field);
       if (s.kind == Stmt::Kind::Call) call(s, field);
     });
@@ -43,35 +46,36 @@ class WordChecker {
   void read(const Expr& e, const std::string& field, Incoming incoming) {
     if (auto w = payloadWordBuiltin(e.name))
       within(e.loc, field, e.name, w->index, w->child ? p_.maxPayloadWords() : incoming.payload,
-             w->child ? "the largest payload type" : "this shader's payload type");
+             w->child ? "the largest payload type" : "this shader's payload type", kPayloads);
     if (auto w = callWordBuiltin(e.name))
       within(e.loc, field, e.name, w->index, w->callee ? p_.maxCallDataWords() : incoming.call,
-             w->callee ? "the largest callable data type" : "this callable's data type");
+             w->callee ? "the largest callable data type" : "this callable's data type", kCallData);
   }
 
   void writes(const Stmt& s, const std::string& field, const std::string& prefix, uint32_t words,
-              const std::string& type) {
+              const std::string& type, const char* list) {
     for (const auto& [name, value] : s.assigns)
-      if (auto i = payloadWordField(name)) within(value.loc, field, prefix + name, *i, words, type);
+      if (auto i = payloadWordField(name))
+        within(value.loc, field, prefix + name, *i, words, type, list);
   }
 
   void trace(const Stmt& s, const std::string& field) {
     const uint32_t location = s.trace.location;
     if (!declared(location, p_.payload_words.size(), s.trace.location_loc, field,
-                  "payload location", "pipeline.payloads"))
+                  "payload location", kPayloads))
       return;
     writes(s, field, "trace.payload.", p_.payload_words[location],
-           "location " + std::to_string(location) + "'s payload type");
+           "location " + std::to_string(location) + "'s payload type", kPayloads);
   }
 
   void call(const Stmt& s, const std::string& field) {
     const uint32_t location = s.call_location;
     if (!declared(location, p_.call_data_words.size(),
                   s.call_location_loc.line ? s.call_location_loc : s.loc, field,
-                  "callable data location", "pipeline.callable_data"))
+                  "callable data location", kCallData))
       return;
     writes(s, field, "call.", p_.call_data_words[location],
-           "location " + std::to_string(location) + "'s callable data type");
+           "location " + std::to_string(location) + "'s callable data type", kCallData);
   }
 
   bool declared(uint32_t location, size_t count, const SourceLoc& at, const std::string& field,
@@ -84,14 +88,11 @@ class WordChecker {
   }
 
   void within(const SourceLoc& at, const std::string& field, const std::string& what,
-              uint32_t index, uint32_t words, const std::string& type) {
+              uint32_t index, uint32_t words, const std::string& type, const char* list) {
     if (index < words) return;
     error(at, field,
           what + ": word " + std::to_string(index) + ", but " + type + " has " +
-              std::to_string(words) + " word(s) (" +
-              (type.find("callable") != std::string::npos ? "pipeline.callable_data"
-                                                          : "pipeline.payloads") +
-              "[].words)");
+              std::to_string(words) + " word(s) (" + list + "[].words)");
   }
 
   void error(const SourceLoc& at, const std::string& field, const std::string& message) {
