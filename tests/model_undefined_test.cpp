@@ -232,18 +232,7 @@ TEST(ModelUndefined, ShaderBindingTableRangesOnTheDirectPath) {
 // A pipeline without a miss shader (no miss region at all) is legal while
 // no ray misses: the miss record is looked up only by a miss (R-SBT-MISS).
 TEST(ModelUndefined, NoMissShaderIsUndefinedOnlyForARayThatMisses) {
-  const char* text = R"(rules: [R-UB]
-scene:
-  blas:
-    tri:
-      - triangles:
-          vertices: [[-1, -1, 0], [2, -1, 0], [-1, 2, 0]]
-  instances: [{blas: tri}]
-rays:
-  list:
-    - {origin: [0, 0, 1], direction: [0, 0, -1]}
-    - {origin: [50, 0, 1], direction: [0, 0, -1]}
-pipeline:
+  const std::string text = std::string("rules: [R-UB]\n") + kTriangleHitAndMiss + R"(pipeline:
   raygen: [trace: {}, trace: {origin: [0.5, 0, 1]}]
   hit_groups:
     - closest_hit: [record: [hit]]
