@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -20,7 +21,9 @@ struct ShowRun {
 
 // Runs `rayspec ARGS` from the source folder; stdout and stderr apart.
 ShowRun rayspec(const std::string& args) {
-  const std::string dir = std::string(RAYSPEC_TEST_OUT) + "/show";
+  // One folder per process: ctest runs this binary's suites (cli/show,
+  // cli/list-rules) at once, and shared output files would race.
+  const std::string dir = std::string(RAYSPEC_TEST_OUT) + "/show/run-" + std::to_string(::getpid());
   fs::create_directories(dir);
   const std::string out = dir + "/stdout", err = dir + "/stderr";
   const std::string command =
