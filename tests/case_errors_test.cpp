@@ -271,7 +271,7 @@ TEST(ParseCaseErrors, MissingAndMisc) {
   expectError(r, 2, "rays.camera", "degenerate");
   r = parse(
       "rules: [R-MASK]\nrays: {list: [{origin: [0, 0, 1], direction: [0, 0, -1]}], grid: {}}\n");
-  expectError(r, 2, "rays", "exactly one of camera, grid, list or aim");
+  expectError(r, 2, "rays", "exactly one of camera, grid, list, aim or same");
   r = parse(
       "rules: [R-MASK]\nrays: {list: [{origin: [0, 0, 1], direction: [0, 0, -1]}]}\noutputs: "
       "{per_ray: [miss_runs, colour], images: [{name: x, from: hit}]}\n");

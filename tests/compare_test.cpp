@@ -52,6 +52,22 @@ TEST(Compare, ExactCounterMismatchFails) {
   EXPECT_NE(v.headline().find("miss"), std::string::npos);
 }
 
+// A case that keeps only counters (plan.records off, as builtins/launch-wide):
+// its counters are judged against the model's alone, with no records to
+// agree with, and still fail when they differ.
+TEST(Compare, CountersWithoutRecordsAreJudgedAgainstTheModelAlone) {
+  const Case c = sampleCase();
+  Results d = sampleResults("vulkan"), m = sampleResults("model");
+  d.records.clear();
+  m.records.clear();
+  EXPECT_EQ(compareResults(c, samplePlan(c), d, m).status, Status::Pass);
+  d.counters["miss"] += 1;
+  const Verdict v = compareResults(c, samplePlan(c), d, m);
+  EXPECT_EQ(v.status, Status::Fail);
+  EXPECT_TRUE(findingNames(v, Status::Fail, "counter 'miss' (exact)")) << v.headline();
+  EXPECT_FALSE(findingNames(v, Status::Fail, "the records disagree")) << v.headline();
+}
+
 TEST(Compare, ClearRayFieldMismatchNamesRuleAndRay) {
   const Case c = sampleCase();
   Results d = sampleResults("vulkan");

@@ -484,6 +484,23 @@ TEST(GenerateGlslMinimal, NothingThePlanDoesNotName) {
   EXPECT_EQ(spirvBindings(r.words), (std::set<uint32_t>{kBindingTlas}));
 }
 
+// rays.same: the rays buffer holds one ray, and raygen loads it for every id.
+TEST(GenerateGlslMinimal, TheSameRayIsLoadedForEveryLaunchId) {
+  Case c;
+  c.name = "test/same";
+  Plan plan;
+  c.pipeline.raygen = {kind(Stmt::Kind::Trace)};
+  c.pipeline.miss = {{}};
+  const std::string per_id = generateGlsl(c, plan).raygen.glsl;
+  EXPECT_NE(per_id.find("rs_ray = rs_load_ray(rs_launch_index());"), std::string::npos) << per_id;
+  c.rays.same = true;
+  const std::string same = generateGlsl(c, plan).raygen.glsl;
+  EXPECT_NE(same.find("rs_ray = rs_load_ray(0u);"), std::string::npos) << same;
+  EXPECT_EQ(same.find("rs_load_ray(rs_launch_index())"), std::string::npos) << same;
+  const SpirvResult r = compileGlsl(same, Stage::Raygen);
+  EXPECT_TRUE(r.error.empty()) << r.error;
+}
+
 TEST_F(GenerateGlsl, OutputIsDeterministic) {
   GeneratedPipeline again = generateGlsl(c, plan);
   EXPECT_EQ(allText(allShaders(again)), allText(shaders));

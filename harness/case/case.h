@@ -154,7 +154,7 @@ const char* traceCommandName(TraceCommand c);  // trace_rays, indirect, indirect
 
 struct Rays {
   // The records' shape: width = launch[0], height = launch[1] x launch[2]
-  // (a 3D launch's z layers one below the other); width*height == rays.size().
+  // (a 3D launch's z layers one below the other); width*height == launchRays().
   uint32_t width = 1, height = 1;
   // The launch size the trace command gets (rays.launch, R-LAUNCH-3D; when
   // not given, width x height x 1). The rays are in launch order: x fastest,
@@ -164,7 +164,12 @@ struct Rays {
     return launch ? *launch : std::array<uint32_t, 3>{width, height, 1};
   }
   TraceCommand command = TraceCommand::Direct;
-  std::vector<Ray> rays;             // row-major, index = y * width + x
+  std::vector<Ray> rays;  // row-major, index = y * width + x
+  // rays.same: every launch id traces rays[0], the one ray kept (a launch
+  // too wide to list, up to 2^24 ids; zero ids keep none).
+  bool same = false;
+  const Ray& launchRay(size_t index) const { return same ? rays.front() : rays[index]; }
+  size_t launchRays() const { return same ? static_cast<size_t>(width) * height : rays.size(); }
   Ray defaults;                      // tmin/tmax/flags/... used for camera rays and nested traces
   SourceLoc defaults_loc;            // the `rays` map
   std::vector<SourceLoc> list_locs;  // `list` form: where each ray is written (empty otherwise)

@@ -1,4 +1,4 @@
-// rays: defaults, then exactly one of camera / grid / list / aim.
+// rays: defaults, then exactly one of camera / grid / list / aim / same.
 #include <cmath>
 #include <sstream>
 
@@ -146,6 +146,25 @@ void parseGrid(YamlReader& r, const YAML::Node& n, Rays& rays) {
   rays.rays = gridRays(g, rays.defaults);
 }
 
+// One ray written out (a list entry, rays.same): origin and direction, then
+// the per-ray fields over the defaults already in `ray`. False on an error.
+bool parseOneRay(YamlReader& r, const YAML::Node& n, const std::string& field, Ray& ray) {
+  if (!r.expectMap(n, field,
+                   {"origin", "direction", "tmin", "tmax", "flags", "cull_mask", "sbt_offset",
+                    "sbt_stride", "miss"}) ||
+      !(r.require(n, field, "origin") & r.require(n, field, "direction")))
+    return false;
+  auto o = r.numbers<3>(YamlReader::get(n, "origin"), field + ".origin", true);
+  auto d = r.numbers<3>(YamlReader::get(n, "direction"), field + ".direction", true);
+  for (int k = 0; k < 3; ++k) {
+    if (o) ray.origin[k] = static_cast<float>((*o)[k]);
+    if (d) ray.direction[k] = static_cast<float>((*d)[k]);
+  }
+  parseRayFields(r, n, field, ray);
+  noteUndefinedRay(r, n, field, ray, true);
+  return o && d;
+}
+
 void parseList(YamlReader& r, const YAML::Node& n, Rays& rays) {
   const std::string field = "rays.list";
   if (!r.expectSeq(n, field)) return;
@@ -157,24 +176,22 @@ void parseList(YamlReader& r, const YAML::Node& n, Rays& rays) {
     const std::string f = field + "[" + std::to_string(i) + "]";
     const YAML::Node item = n[i];
     Ray ray = rays.defaults;
-    if (r.expectMap(item, f,
-                    {"origin", "direction", "tmin", "tmax", "flags", "cull_mask", "sbt_offset",
-                     "sbt_stride", "miss"}) &&
-        (r.require(item, f, "origin") & r.require(item, f, "direction"))) {
-      auto o = r.numbers<3>(YamlReader::get(item, "origin"), f + ".origin", true);
-      auto d = r.numbers<3>(YamlReader::get(item, "direction"), f + ".direction", true);
-      for (int k = 0; k < 3; ++k) {
-        if (o) ray.origin[k] = static_cast<float>((*o)[k]);
-        if (d) ray.direction[k] = static_cast<float>((*d)[k]);
-      }
-      parseRayFields(r, item, f, ray);
-      noteUndefinedRay(r, item, f, ray, true);
-    }
+    parseOneRay(r, item, f, ray);
     rays.rays.push_back(ray);
     rays.list_locs.push_back(r.loc(item, f));
   }
   rays.width = static_cast<uint32_t>(rays.rays.size());
   rays.height = 1;
+}
+
+// rays.same: one ray, which every launch id traces; rays.launch gives the
+// launch's size.
+void parseSame(YamlReader& r, const YAML::Node& n, Rays& rays) {
+  Ray ray = rays.defaults;
+  if (!parseOneRay(r, n, "rays.same", ray)) return;
+  rays.rays = {ray};
+  rays.list_locs = {r.loc(n, "rays.same")};
+  rays.same = true;
 }
 
 bool featureList(YamlReader& r, const YAML::Node& at, const std::string& f, AimSpec& spec) {
@@ -265,7 +282,8 @@ void parseTraceCommand(YamlReader& r, const YAML::Node& v, Rays& rays) {
 // rays.launch: [width, height, depth], the launch the trace command gets
 // (R-LAUNCH-3D). Its size must equal the number of rays the form gave
 // (taken in launch order), unless a dimension is 0: such a launch runs
-// nothing, and the case keeps no rays.
+// nothing, and the case keeps no rays. With rays.same any size up to 2^24
+// rays goes: every id traces the one ray.
 void parseLaunch(YamlReader& r, const YAML::Node& n, Rays& rays) {
   const std::string field = "rays.launch";
   if (!n.IsSequence() || n.size() != 3) {
@@ -279,7 +297,11 @@ void parseLaunch(YamlReader& r, const YAML::Node& n, Rays& rays) {
     launch[k] = *v;
   }
   const uint64_t count = uint64_t(launch[0]) * launch[1] * launch[2];
-  if (count != 0 && count != rays.rays.size()) {
+  if (rays.same && count > (1u << 24)) {
+    r.error(n, field, "at most 2^24 rays in a launch");
+    return;
+  }
+  if (!rays.same && count != 0 && count != rays.rays.size()) {
     r.error(n, field,
             std::to_string(launch[0]) + " x " + std::to_string(launch[1]) + " x " +
                 std::to_string(launch[2]) + " = " + std::to_string(count) +
@@ -311,7 +333,7 @@ const char* traceCommandName(TraceCommand c) {
 
 void parseRays(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& rays) {
   if (!r.expectMap(n, "rays",
-                   {"camera", "grid", "list", "aim", "tmin", "tmax", "flags", "cull_mask",
+                   {"camera", "grid", "list", "aim", "same", "tmin", "tmax", "flags", "cull_mask",
                     "sbt_offset", "sbt_stride", "miss", "command", "launch"}))
     return;
   if (auto v = YamlReader::get(n, "command"); v.IsDefined()) parseTraceCommand(r, v, rays);
@@ -319,9 +341,14 @@ void parseRays(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& ray
   rays.defaults_loc = r.loc(n, "rays");
   noteUndefinedRay(r, n, "rays", rays.defaults, false);
   const int forms = YamlReader::has(n, "camera") + YamlReader::has(n, "grid") +
-                    YamlReader::has(n, "list") + YamlReader::has(n, "aim");
+                    YamlReader::has(n, "list") + YamlReader::has(n, "aim") +
+                    YamlReader::has(n, "same");
   if (forms != 1) {
-    r.error(n, "rays", "exactly one of camera, grid, list or aim is required");
+    r.error(n, "rays", "exactly one of camera, grid, list, aim or same is required");
+    return;
+  }
+  if (YamlReader::has(n, "same") && !YamlReader::has(n, "launch")) {
+    r.error(n, "rays", "rays.same needs rays.launch: the launch size every id of it traces");
     return;
   }
   if (YamlReader::has(n, "camera"))
@@ -330,6 +357,8 @@ void parseRays(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& ray
     parseGrid(r, YamlReader::get(n, "grid"), rays);
   else if (YamlReader::has(n, "aim"))
     parseAim(r, YamlReader::get(n, "aim"), scene, rays);
+  else if (YamlReader::has(n, "same"))
+    parseSame(r, YamlReader::get(n, "same"), rays);
   else
     parseList(r, YamlReader::get(n, "list"), rays);
   if (auto v = YamlReader::get(n, "launch"); v.IsDefined() && !rays.rays.empty())

@@ -93,8 +93,9 @@ std::string describeCase(const Case& c) {
       << ", flags " << hex(in.flags) << '\n';
   }
   s << "Rays: " << c.rays.launchSize()[0] << " x " << c.rays.launchSize()[1] << " x "
-    << c.rays.launchSize()[2] << " (" << c.rays.rays.size() << " rays), defaults tmin "
-    << c.rays.defaults.tmin << " tmax " << c.rays.defaults.tmax << " flags "
+    << c.rays.launchSize()[2] << " ("
+    << (c.rays.same ? "every id the same ray" : std::to_string(c.rays.rays.size()) + " rays")
+    << "), defaults tmin " << c.rays.defaults.tmin << " tmax " << c.rays.defaults.tmax << " flags "
     << hex(c.rays.defaults.flags) << ", launched by " << traceCommandName(c.rays.command) << '\n';
   const Pipeline& p = c.pipeline;
   s << "Pipeline: max recursion " << p.max_recursion << ", flags " << hex(p.flags) << ", "

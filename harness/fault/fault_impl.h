@@ -104,6 +104,8 @@ std::string localsLostAcrossCalls(Case& c, ModelOptions& o);
 std::string loopTripOffByOne(Case& c, ModelOptions& o);
 std::string functionIgnoreLost(Case& c, ModelOptions& o);
 std::string transformBuiltinsSwapped(Case& c, ModelOptions& o);
+std::string wideLaunchTruncated(Case& c, ModelOptions& o);
+std::string launchIdXWrapped(Case& c, ModelOptions& o);
 std::string specializationIgnored(Case& c, ModelOptions& o);
 std::string emptyGeometryRenumbered(Case& c, ModelOptions& o);
 std::string hitAttributesLost(Case& c, ModelOptions& o);

@@ -256,6 +256,13 @@ std::vector<FaultImpl> pipelineMutations() {
        "gl_ObjectToWorldEXT and gl_WorldToObjectEXT (and their 3x4 forms) each read the other "
        "matrix",
        nullptr, transformBuiltinsSwapped},
+      {"wide-launch-truncated", K::CaseMutation,
+       "a launch wider than 65536 ids in x runs raygen only for x below 65536", nullptr,
+       wideLaunchTruncated},
+      {"launch-id-x-wrapped", K::CaseMutation,
+       "gl_LaunchIDEXT.x reads modulo 65536 in every stage (a launch wider than that repeats "
+       "the first ids)",
+       nullptr, launchIdXWrapped},
       {"specialization-ignored", K::CaseMutation,
        "every shader runs with the specialization constants' defaults, whatever its "
        "VkSpecializationInfo sets",

@@ -30,14 +30,14 @@ FaultResult runMutated(const FaultImpl& f, const Case& c, Results& device) {
 
 FaultResult plantFault(const std::string& name, const Case& c, const Plan& plan, Results& device,
                        const Results& model) {
-  (void)plan;
   const FaultImpl* f = findImpl(name);
   if (!f) return notApplicable("unknown fault '" + name + "'");
   if (f->kind == FaultKind::Process) return notApplicable("a process fault");
   // A zero-sized launch has no records, and its counters may still be wrong.
-  // Nor does a case whose shaders are only compiled (expect_rejected).
-  const bool zero_launch = c.rays.rays.empty() || !c.expected_rejections.empty();
-  if (device.records.size() != model.records.size() || (device.records.empty() && !zero_launch))
+  // Nor does a case whose shaders are only compiled (expect_rejected), nor
+  // one that keeps only counters (plan.records off).
+  const bool no_records = c.rays.rays.empty() || !c.expected_rejections.empty() || !plan.records;
+  if (device.records.size() != model.records.size() || (device.records.empty() && !no_records))
     return notApplicable("no per-ray records to corrupt");
   if (f->kind == FaultKind::CaseMutation) return runMutated(*f, c, device);
   RecordEdit dev{device};

@@ -154,7 +154,7 @@ FaultResult tmaxViewInitial(RecordFaultArgs& a) {
   uint32_t edited = 0, first = 0;
   for (uint32_t ray = 0; ray < a.dev.rays(); ++ray) {
     if (a.ambiguous.count(ray) || a.dev.get(ray, "closest_hit_runs") == 0) continue;
-    const float initial = literal ? *literal : c.rays.rays[ray].tmax;
+    const float initial = literal ? *literal : c.rays.launchRay(ray).tmax;
     bool changed = false;
     for (const auto& [field, k] : slots) {
       if (!a.dev.written(ray, field) || a.dev.getFloat(ray, field, k) == initial) continue;

@@ -54,7 +54,7 @@ const std::vector<RuleFaults>& ruleFaults() {
        {}},
       {"R-BUILTIN",
        {"builtin-wrong", "swap-primitive-id", "shift-t", "empty-geometry-renumbered",
-        "transform-builtins-swapped"},
+        "transform-builtins-swapped", "launch-id-x-wrapped"},
        {}},
       // Several top levels are built as copies of the instance list, the other
       // levels' instances inactive (Instance::tlas): which instances a trace
@@ -73,7 +73,7 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-AS-UPDATE", {"update-ignored"}, {}},
       {"R-VERTEX-FORMAT", {"vertex-format-ignored"}, {}},
       {"R-POSITION-FETCH", {"position-fetch-world-space"}, {}},
-      {"R-LAUNCH-3D", {"launch-depth-lost", "zero-launch-runs"}, {}},
+      {"R-LAUNCH-3D", {"launch-depth-lost", "zero-launch-runs", "wide-launch-truncated"}, {}},
       {"R-LIVE-STATE", {"locals-lost-across-calls"}, {}},
       {"R-CONTROL-FLOW",
        {"loop-trip-off-by-one", "function-ignore-lost", "specialization-ignored"},

@@ -253,7 +253,10 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
              std::to_string(kAnyHitSlotInstanceFactor) + "u + gl_GeometryIndexEXT * " +
              std::to_string(kAnyHitSlotGeometryFactor) + "u + uint(gl_PrimitiveID)) & 31u);");
   if (stage == Stage::Raygen) {
-    if (u.launch_ray) out.line("rs_ray = rs_load_ray(rs_launch_index());");
+    // rays.same: one ray in the buffer, which every launch id traces.
+    if (u.launch_ray)
+      out.line(ctx.c.rays.same ? "rs_ray = rs_load_ray(0u);"
+                               : "rs_ray = rs_load_ray(rs_launch_index());");
   }
   emitPayloadStart(ctx, out);
   emitCallDataStart(ctx, out);

@@ -291,8 +291,8 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
   for (const ExpectedRejection& e : c.expected_rejections) r.rejected.push_back(e.shader);
   if (!c.expected_rejections.empty()) return r;
   const size_t n = static_cast<size_t>(c.rays.width) * c.rays.height;
-  if (c.rays.rays.size() != n) {
-    r.setStatus(SideStatus::Crash, "the case has " + std::to_string(c.rays.rays.size()) +
+  if (c.rays.launchRays() != n) {
+    r.setStatus(SideStatus::Crash, "the case has " + std::to_string(c.rays.launchRays()) +
                                        " rays for a " + std::to_string(c.rays.width) + "x" +
                                        std::to_string(c.rays.height) + " launch");
     return r;

@@ -119,7 +119,7 @@ void Machine::shadeLaunchRay(uint32_t i, const Ray& ray, uint32_t flags, const R
 }
 
 void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
-  const std::vector<Ray>& rays = sh_.c->rays.rays;
+  const Rays& rays = sh_.c->rays;
   const CPipeline& programs = *sh_.programs;
   const uint32_t words = records_ ? recordWords() : 0;
   uint32_t pipe_flags = 0;
@@ -131,7 +131,7 @@ void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
 
-  const Ray& first = rays[begin];
+  const Ray& first = rays.launchRay(begin);
   const TraceRay r0 = launchRay(first);
   const bool quick = !((first.flags | pipe_flags) & kRaySkipClosestHit);
   const CountsOnly* miss_counts = quick ? countedMiss(r0) : nullptr;
@@ -147,8 +147,8 @@ void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
                  runs_miss = runs_offset_[kRunsMiss];
 
   for (uint32_t i = begin; i < end; ++i) {
-    if (i + 8 < end) __builtin_prefetch(&rays[i + 8]);
-    const Ray& ray = rays[i];
+    if (!rays.same && i + 8 < end) __builtin_prefetch(&rays.rays[i + 8]);
+    const Ray& ray = rays.launchRay(i);
     const uint32_t flags = ray.flags | pipe_flags;
     uint32_t* rec = records_ ? records_ + static_cast<size_t>(i) * words : nullptr;
     if (rec) rec[runs_raygen] += 1;

@@ -427,7 +427,7 @@ void Machine::execCall(const CStmt& s, StageEnv& env) {
 // defaults for nested traces, with what the statement gives.
 TraceRay Machine::tracedRay(const CStmt& s, StageEnv& env) {
   const bool from_launch = env.stage == Stage::Raygen;
-  TraceRay r = launchRay(from_launch ? sh_.c->rays.rays[index_] : sh_.c->rays.defaults);
+  TraceRay r = launchRay(from_launch ? sh_.c->rays.launchRay(index_) : sh_.c->rays.defaults);
   auto v3 = [&](int k, Vec3& out) {
     if (s.has[k]) {
       const Val v = eval(s.args[k], env);
@@ -536,9 +536,9 @@ void Machine::runRays(uint32_t begin, uint32_t end) {
   x_ = begin % width;
   y_ = begin / width;
   const uint32_t words = recordWords();
-  const std::vector<Ray>& rays = sh_.c->rays.rays;
+  const Rays& rays = sh_.c->rays;
   for (uint32_t i = begin; i < end; ++i) {
-    if (i + 8 < end) __builtin_prefetch(&rays[i + 8]);  // rays stream from memory
+    if (!rays.same && i + 8 < end) __builtin_prefetch(&rays.rays[i + 8]);  // rays stream in
     index_ = i;
     rec_ = records_ ? records_ + static_cast<size_t>(i) * words : nullptr;
     ray_ambiguous_ = false;
@@ -548,7 +548,7 @@ void Machine::runRays(uint32_t begin, uint32_t end) {
     bumpRuns(kRunsRaygen);
     if (sh_.raygen_traces_launch_ray) {
       // Raygen is one `trace: {}` of this launch's ray: no stage environment needed.
-      trace(launchRay(rays[i]), 1, &sh_.programs->raygen[0]);
+      trace(launchRay(rays.launchRay(i)), 1, &sh_.programs->raygen[0]);
     } else {
       runRaygen();
     }

@@ -75,9 +75,9 @@ void checkCaseSupport(const VulkanContext& ctx, const Case& c, const Plan& plan)
   const DeviceInfo& d = ctx.info;
   const std::array<uint32_t, 3> launch = c.rays.launchSize();
   const uint64_t launch_rays = uint64_t(launch[0]) * launch[1] * launch[2];
-  if (c.rays.rays.size() != static_cast<size_t>(c.rays.width) * c.rays.height ||
-      c.rays.rays.size() != launch_rays)
-    throw VulkanError("case has " + std::to_string(c.rays.rays.size()) + " rays for a " +
+  if (c.rays.launchRays() != static_cast<size_t>(c.rays.width) * c.rays.height ||
+      c.rays.launchRays() != launch_rays)
+    throw VulkanError("case has " + std::to_string(c.rays.launchRays()) + " rays for a " +
                       std::to_string(c.rays.width) + "x" + std::to_string(c.rays.height) +
                       " launch: VK_ERROR_UNKNOWN");
   const bool micromap_flags =

@@ -1,0 +1,76 @@
+// Faults of launches wider than 65536 ids in x (R-LAUNCH-3D, R-BUILTIN): a
+// device that maps a launch onto compute workgroups and stops, or wraps the
+// id, at 65536 (the smallest maxComputeWorkGroupCount[0] the spec allows,
+// plus one).
+#include "fault/fault_impl.h"
+#include "fault/program_edit.h"
+#include "program/walk_program.h"
+
+namespace rayspec {
+namespace {
+
+constexpr uint32_t kWrapIds = 65536;
+
+Expr uintLiteral(uint32_t v, const SourceLoc& loc) {
+  Expr e;
+  e.type = ValueType::Uint;
+  e.literal = {static_cast<double>(v)};
+  e.loc = loc;
+  return e;
+}
+
+Expr launchIdX(const SourceLoc& loc) {
+  Expr e;
+  e.kind = Expr::Kind::Builtin;
+  e.type = ValueType::Uint;
+  e.name = "launch_id_x";
+  e.loc = loc;
+  return e;
+}
+
+}  // namespace
+
+// R-LAUNCH-3D: raygen runs only for launch x below 65536; the ids beyond
+// run nothing.
+std::string wideLaunchTruncated(Case& c, ModelOptions&) {
+  if (c.rays.launchSize()[0] <= kWrapIds) return "";
+  Stmt stop;
+  stop.kind = Stmt::Kind::If;
+  stop.loc = c.rays.defaults_loc;
+  stop.cond.kind = Expr::Kind::Op;
+  stop.cond.name = "ge";
+  stop.cond.type = ValueType::Bool;
+  stop.cond.loc = stop.loc;
+  stop.cond.args = {launchIdX(stop.loc), uintLiteral(kWrapIds, stop.loc)};
+  Stmt end;
+  end.kind = Stmt::Kind::Return;
+  end.loc = stop.loc;
+  stop.then_.push_back(end);
+  c.pipeline.raygen.insert(c.pipeline.raygen.begin(), stop);
+  return describeCount(c.rays.launchSize()[0] - kWrapIds,
+                       "launch ids in x from 65536 on that run no raygen");
+}
+
+// R-BUILTIN: every stage reads gl_LaunchIDEXT.x modulo 65536.
+std::string launchIdXWrapped(Case& c, ModelOptions&) {
+  if (c.rays.launchSize()[0] <= kWrapIds) return "";
+  // The reads first, then the edits: an edited read holds a read of its own.
+  std::vector<Expr*> reads;
+  forEachProgram(c.pipeline, [&](Program& p, Stage) {
+    editExpressions(p, [&](Expr& e) {
+      if (e.kind == Expr::Kind::Builtin && e.name == "launch_id_x") reads.push_back(&e);
+    });
+  });
+  for (Expr* e : reads) {
+    Expr wrapped;
+    wrapped.kind = Expr::Kind::Op;
+    wrapped.name = "mod";
+    wrapped.type = ValueType::Uint;
+    wrapped.loc = e->loc;
+    wrapped.args = {*e, uintLiteral(kWrapIds, e->loc)};
+    *e = std::move(wrapped);
+  }
+  return describeCount(reads.size(), "reads of gl_LaunchIDEXT.x that wrap at 65536");
+}
+
+}  // namespace rayspec
