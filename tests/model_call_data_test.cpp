@@ -72,7 +72,7 @@ TEST(ModelCallData, LocationsAndWordsOutsideTheirTypesAreErrors) {
                 .find("pipeline.callables[1].call_data: callable data location 5, but "
                       "pipeline.callable_data declares 3"),
             std::string::npos);
-  EXPECT_NE(firstErrorAfter(kCallDataTypes, "[{}, {words: 6}, {words: 2}]", "[{}, {words: 11}]")
+  EXPECT_NE(firstErrorAfter(kCallDataTypes, "[{}, {words: 6}, {words: 2}]", "[{}, {words: 53}]")
                 .find("pipeline.callable_data[1].words"),
             std::string::npos);
   EXPECT_NE(firstErrorAfter(kCallDataTypes, "value: callee.word0,", "value: callee.word6,")

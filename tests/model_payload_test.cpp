@@ -117,7 +117,7 @@ TEST(ModelPayload, PayloadLocationsAndWordsOutsideTheirTypesAreErrors) {
                 .find("pipeline.miss[1].payload: payload location 4, but pipeline.payloads "
                       "declares 3"),
             std::string::npos);
-  EXPECT_NE(firstErrorAfter(kPayloadTypes, "[{}, {words: 10}, {words: 2}]", "[{}, {words: 11}]")
+  EXPECT_NE(firstErrorAfter(kPayloadTypes, "[{}, {words: 10}, {words: 2}]", "[{}, {words: 59}]")
                 .find("pipeline.payloads[1].words"),
             std::string::npos);
   EXPECT_NE(firstErrorAfter(kPayloadTypes, "record: {value: payload.value,",

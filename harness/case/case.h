@@ -204,16 +204,17 @@ struct HitGroup {
 
 // Payload types (pipeline.payloads), by the location a trace names: color,
 // value and depth, then `words` more uint words (payload.word0 ..). At most
-// kMaxPayloadLocations locations; the largest type is 24 + 4 * 10 = 64 bytes
-// (kMaxPayloadBytes, the pipeline libraries' interface).
+// kMaxPayloadLocations locations; the largest type is 24 + 4 * 58 = 256 bytes
+// (a pipeline linked from libraries declares the case's largest:
+// vulkan/pipeline.h interfacePayloadBytes).
 constexpr uint32_t kMaxPayloadLocations = 4;
 constexpr uint32_t kMaxPayloadWords = kPayloadWordNames;
 
 // Callable data types (pipeline.callable_data), by the location a call
 // names: RsCallData (color, position, value, normal: 48 bytes), then `words`
-// more uint words (call.word0 ..), up to 88 bytes.
+// more uint words (call.word0 ..), up to 48 + 4 * 52 = 256 bytes.
 constexpr uint32_t kMaxCallDataLocations = 4;
-constexpr uint32_t kMaxCallDataWords = kPayloadWordNames;
+constexpr uint32_t kMaxCallDataWords = kPayloadWordNames - 6;
 
 // A pipeline library (VK_KHR_pipeline_library): the groups it holds, by
 // index into Pipeline::miss / hit_groups / callables, and the libraries it
@@ -279,6 +280,8 @@ struct Pipeline {
   uint32_t callDataWords(size_t location) const {
     return location < call_data_words.size() ? call_data_words[location] : 0;
   }
+  // Bytes of callable data with that many words: RsCallData (48 bytes) + 4 per word.
+  static uint32_t callDataBytes(uint32_t words) { return 48 + 4 * words; }
   uint32_t maxCallDataWords() const {
     uint32_t n = 0;
     for (uint32_t w : call_data_words) n = std::max(n, w);

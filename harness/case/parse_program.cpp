@@ -22,14 +22,23 @@ bool parseBlock(YamlReader& r, const YAML::Node& n, const std::string& field,
   return ok;
 }
 
-// {name: expr, ...} with names from `allowed`, into s.assigns.
+// The words a payload or callable data type may have (payload_words.h),
+// as the key lists of errors name them.
+bool isWordKey(const std::string& key) {
+  return payloadWordField(key).has_value();
+}
+std::string wordKeys() {
+  return "word0 .. word" + std::to_string(kPayloadWordNames - 1);
+}
+
+// {name: expr, ...} with names from `allowed` and the words, into s.assigns.
 bool parseAssigns(YamlReader& r, const YAML::Node& n, const std::string& field,
                   std::initializer_list<const char*> allowed, Stmt& s) {
-  if (!r.expectMap(n, field, allowed)) return false;
+  if (!r.expectMap(n, field, allowed, isWordKey, wordKeys())) return false;
   bool ok = true;
   for (auto it = n.begin(); it != n.end(); ++it) {
     const std::string name = it->first.Scalar();
-    bool known = false;
+    bool known = isWordKey(name);
     for (const char* a : allowed) known = known || name == a;
     if (!known) {
       ok = false;
@@ -44,10 +53,7 @@ bool parseAssigns(YamlReader& r, const YAML::Node& n, const std::string& field,
 
 // A payload's fields: color, value and the words of its type (checkDataWords).
 bool parsePayloadAssigns(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt& s) {
-  return parseAssigns(r, n, field,
-                      {"color", "value", "word0", "word1", "word2", "word3", "word4", "word5",
-                       "word6", "word7", "word8", "word9"},
-                      s);
+  return parseAssigns(r, n, field, {"color", "value"}, s);
 }
 
 bool parseRecord(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
@@ -184,21 +190,20 @@ bool parseReport(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt&
 
 bool parseCall(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
   s.kind = Stmt::Kind::Call;
-  if (!r.expectMap(v, f,
-                   {"index", "location", "position", "normal", "value", "color", "word0", "word1",
-                    "word2", "word3", "word4", "word5", "word6", "word7", "word8", "word9"}))
+  if (!r.expectMap(v, f, {"index", "location", "position", "normal", "value", "color"}, isWordKey,
+                   wordKeys()))
     return false;
   if (!r.require(v, f, "index")) return false;
   bool ok = parseExpr(r, YamlReader::get(v, "index"), f + ".index", s.call_index);
   ok = constantIndex(r, v, f, "location", kMaxCallDataLocations - 1, s.call_location,
                      s.call_location_loc) &&
        ok;
-  for (const char* key : {"position", "normal", "value", "color", "word0", "word1", "word2",
-                          "word3", "word4", "word5", "word6", "word7", "word8", "word9"}) {
-    const YAML::Node a = YamlReader::get(v, key);
-    if (!a.IsDefined()) continue;
+  for (auto it = v.begin(); it != v.end(); ++it) {
+    const std::string key = it->first.IsScalar() ? it->first.Scalar() : "";
+    if (key != "position" && key != "normal" && key != "value" && key != "color" && !isWordKey(key))
+      continue;
     Expr e;
-    ok = parseExpr(r, a, f + "." + key, e) && ok;
+    ok = parseExpr(r, it->second, f + "." + key, e) && ok;
     s.assigns.emplace_back(key, std::move(e));
   }
   return ok;
@@ -406,7 +411,7 @@ bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stm
   }
   if (key == "call_data") {
     s.kind = Stmt::Kind::SetCall;
-    return parsePayloadAssigns(r, v, f, s);  // color, value, word0 .. word9
+    return parsePayloadAssigns(r, v, f, s);  // color, value and the words
   }
   if (key == "report") return parseReport(r, v, f, s);
   if (key == "let" || key == "set") {

@@ -134,6 +134,13 @@ bool YamlReader::has(const YAML::Node& n, const char* key) {
 
 bool YamlReader::expectMap(const YAML::Node& n, const std::string& field,
                            std::initializer_list<const char*> allowed) {
+  return expectMap(n, field, allowed, nullptr, "");
+}
+
+bool YamlReader::expectMap(const YAML::Node& n, const std::string& field,
+                           std::initializer_list<const char*> allowed,
+                           const std::function<bool(const std::string&)>& more,
+                           const std::string& more_text) {
   last_field_ = field;
   if (!n.IsMap()) {
     error(n, field, "expected a map");
@@ -143,9 +150,11 @@ bool YamlReader::expectMap(const YAML::Node& n, const std::string& field,
     const std::string key = it->first.IsScalar() ? it->first.Scalar() : std::string("?");
     bool known = false;
     for (const char* a : allowed) known = known || key == a;
+    known = known || (more && more(key));
     if (!known) {
       std::string list;
       for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
+      if (more) list += ", " + more_text;
       error(it->first, field.empty() ? key : field + "." + key,
             "unknown key '" + key + "' (expected one of: " + list + ")");
     }

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
 #include <optional>
 #include <set>
@@ -43,6 +44,11 @@ class YamlReader {
   // A map whose keys are all in `allowed`; each unknown key is an error.
   bool expectMap(const YAML::Node& n, const std::string& field,
                  std::initializer_list<const char*> allowed);
+  // The same, with the keys `more` accepts allowed too (named in the error
+  // as `more_text`, e.g. "word0 .. word57").
+  bool expectMap(const YAML::Node& n, const std::string& field,
+                 std::initializer_list<const char*> allowed,
+                 const std::function<bool(const std::string&)>& more, const std::string& more_text);
   bool expectSeq(const YAML::Node& n, const std::string& field);
   // Requires `key` present in map n; reports "missing" at n.
   bool require(const YAML::Node& n, const std::string& field, const char* key);

@@ -99,7 +99,7 @@ std::vector<BuiltinInfo> rayAndDataBuiltins() {
       {"payload.value", ValueType::Uint, M | C | A | R,
        "value of the incoming payload; in raygen the payload of its last trace"},
       {"payload.word<i>", ValueType::Uint, M | C | A | R,
-       "word i (0..9) of the incoming payload, within its type's pipeline.payloads words; in "
+       "word i (0..57) of the incoming payload, within its type's pipeline.payloads words; in "
        "raygen the payload of its last trace (0 beyond that trace's type)"},
       {"depth", ValueType::Uint, M | C | A,
        "trace depth: 1 for a trace from raygen, +1 per nested trace"},
@@ -116,7 +116,7 @@ std::vector<BuiltinInfo> rayAndDataBuiltins() {
       {"callee.value", ValueType::Uint, R | C | M | K,
        "value of the callable data after this stage's last call"},
       {"call.word<i>", ValueType::Uint, K,
-       "word i (0..9) of the incoming callable data, within its type's pipeline.callable_data "
+       "word i (0..51) of the incoming callable data, within its type's pipeline.callable_data "
        "words"},
       {"callee.word<i>", ValueType::Uint, R | C | M | K,
        "word i of the callable data after this stage's last call (0 beyond that call's type)"},

@@ -335,11 +335,10 @@ class Checker {
       else if (call && (name == "position" || name == "normal"))
         want = ValueType::Vec3;
       else
-        return ProgramError{"unknown field '" + name + "' (" +
-                                (call ? "position, normal, color, value, word0 .. word9"
-                                      : "color, value, word0 .. word9") +
-                                ")",
-                            value.loc};
+        return ProgramError{
+            "unknown field '" + name + "' (" +
+                (call ? "position, normal, color, value, word<i>" : "color, value, word<i>") + ")",
+            value.loc};
       if (auto r = as(value, want, name)) return r;
     }
     return std::nullopt;

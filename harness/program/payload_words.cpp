@@ -4,11 +4,15 @@ namespace rayspec {
 
 std::optional<uint32_t> payloadWordField(const std::string& field) {
   const std::string prefix = "word";
-  if (field.size() != prefix.size() + 1 || field.compare(0, prefix.size(), prefix) != 0)
+  if (field.compare(0, prefix.size(), prefix) != 0) return std::nullopt;
+  const std::string digits = field.substr(prefix.size());
+  if (digits.empty() || digits.size() > 2 || (digits.size() > 1 && digits[0] == '0'))
     return std::nullopt;
-  const char d = field.back();
-  if (d < '0' || d > '9') return std::nullopt;
-  const uint32_t i = static_cast<uint32_t>(d - '0');
+  uint32_t i = 0;
+  for (char d : digits) {
+    if (d < '0' || d > '9') return std::nullopt;
+    i = i * 10 + static_cast<uint32_t>(d - '0');
+  }
   if (i >= kPayloadWordNames) return std::nullopt;
   return i;
 }

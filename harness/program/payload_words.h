@@ -11,10 +11,11 @@
 namespace rayspec {
 
 // At most this many words in one payload type (mirrored by case.h's
-// kMaxPayloadWords; the names word0 .. word9).
-constexpr uint32_t kPayloadWordNames = 10;
+// kMaxPayloadWords; the names word0 .. word57: a 256-byte payload).
+constexpr uint32_t kPayloadWordNames = 58;
 
-// "word<i>" -> i for i < kPayloadWordNames; nullopt for any other name.
+// "word<i>" (i written in decimal, no leading zero) -> i for
+// i < kPayloadWordNames; nullopt for any other name.
 std::optional<uint32_t> payloadWordField(const std::string& field);
 
 // A built-in name "payload.word<i>" or "child.word<i>": its prefix
@@ -28,7 +29,8 @@ std::optional<PayloadWordRead> payloadWordBuiltin(const std::string& name);
 // The extra uint words of a callable data type
 // (pipeline.callable_data[].words): a call and call_data write `word<i>`; a
 // callable reads `call.word<i>` (its incoming data), a caller
-// `callee.word<i>` (its last call's data). The same names word0 .. word9.
+// `callee.word<i>` (its last call's data). The same names, word0 .. word51
+// (case.h kMaxCallDataWords).
 struct CallWordRead {
   bool callee = false;
   uint32_t index = 0;

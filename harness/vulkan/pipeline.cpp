@@ -186,7 +186,7 @@ VkPipeline createPipelineObject(const VulkanContext& ctx, const CompiledPipeline
     libraries.libraryCount = static_cast<uint32_t>(part.libraries.size());
     libraries.pLibraries = part.libraries.data();
     info.pLibraryInfo = &libraries;
-    interface.maxPipelineRayPayloadSize = kMaxPayloadBytes;
+    interface.maxPipelineRayPayloadSize = part.max_payload_bytes;
     interface.maxPipelineRayHitAttributeSize = ctx.rt_props.maxRayHitAttributeSize;
     info.pLibraryInterface = &interface;
   }

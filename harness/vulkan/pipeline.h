@@ -54,10 +54,12 @@ std::set<uint32_t> declaredBindings(const CompiledPipeline& compiled);
 VkPipelineLayout createPipelineLayout(const VulkanContext& ctx, VkDescriptorSetLayout set_layout,
                                       Cleanup& cleanup);
 
-// The interface a pipeline linked from libraries declares: no payload or
-// callable data of shaders/payload.glsl is larger (RsPayload 24 bytes,
-// RsCallData 48).
-constexpr uint32_t kMaxPayloadBytes = 64;
+// The interface a pipeline linked from libraries declares
+// (maxPipelineRayPayloadSize, the same for every library and the linked
+// pipeline): the case's largest payload or callable data type of
+// shaders/payload.glsl (RsPayload 24 bytes, RsCallData 48, each with its
+// type's words: pipeline.payloads, pipeline.callable_data).
+uint32_t interfacePayloadBytes(const Pipeline& p);
 
 // One vkCreateRayTracingPipelinesKHR call: the case groups `groups` (ids in
 // sbt_layout.h's group order) in that order, linking `libraries` when `linked`
@@ -68,6 +70,7 @@ struct PipelinePart {
   bool linked = false;
   VkPipelineCreateFlags flags = 0;
   uint32_t max_recursion = 1;
+  uint32_t max_payload_bytes = 0;  // the library interface's (interfacePayloadBytes)
   VkPipelineLayout layout = VK_NULL_HANDLE;
   bool dynamic_stack_size = false;  // VK_DYNAMIC_STATE_RAY_TRACING_PIPELINE_STACK_SIZE_KHR
 };

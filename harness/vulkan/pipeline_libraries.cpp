@@ -1,5 +1,6 @@
 // The case's ray tracing pipeline, monolithic or linked from the case's
 // pipeline libraries (pipeline.libraries, VK_KHR_pipeline_library).
+#include <algorithm>
 #include <set>
 
 #include "vulkan/pipeline.h"
@@ -42,6 +43,7 @@ struct Linker {
     out.groups = std::move(groups);
     out.flags = p.flags | extra;
     out.max_recursion = p.max_recursion;
+    out.max_payload_bytes = interfacePayloadBytes(p);
     out.layout = layout;
     return out;
   }
@@ -64,6 +66,13 @@ struct Linker {
 };
 
 }  // namespace
+
+uint32_t interfacePayloadBytes(const Pipeline& p) {
+  uint32_t payload = 0;
+  for (size_t location = 0; location < p.payload_words.size(); ++location)
+    payload = std::max(payload, p.payloadBytes(location));
+  return std::max(payload, p.callDataBytes(p.maxCallDataWords()));
+}
 
 RayTracingPipeline createRayTracingPipeline(const VulkanContext& ctx,
                                             const CompiledPipeline& compiled, const Pipeline& p,
