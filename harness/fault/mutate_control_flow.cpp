@@ -45,15 +45,12 @@ std::string loopTripOffByOne(Case& c, ModelOptions&) {
   forEachProgram(c.pipeline, [&](Program& p, Stage) {
     forEachStmt(p, [&](Stmt& s) {
       if (s.kind != Stmt::Kind::Repeat) return;
-      Expr one;
-      one.type = ValueType::Uint;
-      one.literal = {1.0};
       Expr more;
       more.kind = Expr::Kind::Op;
       more.name = "add";
       more.type = ValueType::Uint;
       more.loc = s.count.loc;
-      more.args = {std::move(s.count), one};
+      more.args = {std::move(s.count), uintLiteral(1, more.loc)};
       s.count = std::move(more);
       ++n;
     });

@@ -11,14 +11,6 @@ namespace {
 
 constexpr uint32_t kWrapIds = 65536;
 
-Expr uintLiteral(uint32_t v, const SourceLoc& loc) {
-  Expr e;
-  e.type = ValueType::Uint;
-  e.literal = {static_cast<double>(v)};
-  e.loc = loc;
-  return e;
-}
-
 Expr launchIdX(const SourceLoc& loc) {
   Expr e;
   e.kind = Expr::Kind::Builtin;

@@ -92,12 +92,7 @@ std::string reportKindDropped(Case& c, ModelOptions&) {
                                     if (s.hit_kind.kind == Expr::Kind::Literal &&
                                         !s.hit_kind.literal.empty() && s.hit_kind.literal[0] == 0)
                                       return false;
-                                    Expr zero;
-                                    zero.kind = Expr::Kind::Literal;
-                                    zero.type = ValueType::Uint;
-                                    zero.literal = {0};
-                                    zero.loc = s.hit_kind.loc;
-                                    s.hit_kind = zero;
+                                    s.hit_kind = uintLiteral(0, s.hit_kind.loc);
                                     return true;
                                   }),
                        "reports lose their hit kind");
@@ -205,10 +200,7 @@ std::string cullMaskBuiltinDefault(Case& c, ModelOptions&) {
   forEachProgram(c.pipeline, [&](Program& p, Stage) {
     editExpressions(p, [&](Expr& e) {
       if (e.kind != Expr::Kind::Builtin || e.name != "cull_mask") return;
-      e.kind = Expr::Kind::Literal;
-      e.type = ValueType::Uint;
-      e.literal = {0xFF};
-      e.name.clear();
+      e = uintLiteral(0xFF, e.loc);
       ++n;
     });
   });

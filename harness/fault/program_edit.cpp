@@ -36,6 +36,15 @@ void forEachProgram(const Pipeline& p, const std::function<void(const Program&, 
   for (const Program& k : p.callables) visit(k, Stage::Callable);
 }
 
+Expr uintLiteral(uint32_t v, const SourceLoc& loc) {
+  Expr e;
+  e.kind = Expr::Kind::Literal;
+  e.type = ValueType::Uint;
+  e.literal = {static_cast<double>(v)};
+  e.loc = loc;
+  return e;
+}
+
 void forEachProgram(Pipeline& p, const std::function<void(Program&, Stage)>& visit) {
   // One walk for both: the const one hands out what this pipeline owns.
   forEachProgram(static_cast<const Pipeline&>(p),

@@ -16,6 +16,8 @@ void forEachProgram(const Pipeline& p, const std::function<void(const Program&, 
 void forEachBlock(Program& p, const std::function<void(std::vector<Stmt>&)>& visit);
 // Every statement, nested ones included.
 void forEachStmt(Program& p, const std::function<void(Stmt&)>& visit);
+// A Uint literal written at `loc`, for the expressions a mutation puts in.
+Expr uintLiteral(uint32_t v, const SourceLoc& loc);
 // "N what" (empty when n is 0): what a mutation changed, or nothing.
 std::string describeCount(size_t n, const std::string& what);
 
