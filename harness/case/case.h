@@ -209,12 +209,15 @@ struct HitGroup {
 // vulkan/pipeline.h interfacePayloadBytes).
 constexpr uint32_t kMaxPayloadLocations = 4;
 constexpr uint32_t kMaxPayloadWords = kPayloadWordNames;
+constexpr uint32_t kPayloadBaseBytes = 24;   // RsPayload (shaders/payload.glsl)
+constexpr uint32_t kCallDataBaseBytes = 48;  // RsCallData
+constexpr uint32_t kMaxDataTypeBytes = kPayloadBaseBytes + 4 * kMaxPayloadWords;  // 256
 
 // Callable data types (pipeline.callable_data), by the location a call
 // names: RsCallData (color, position, value, normal: 48 bytes), then `words`
 // more uint words (call.word0 ..), up to 48 + 4 * 52 = 256 bytes.
 constexpr uint32_t kMaxCallDataLocations = 4;
-constexpr uint32_t kMaxCallDataWords = kPayloadWordNames - 6;
+constexpr uint32_t kMaxCallDataWords = (kMaxDataTypeBytes - kCallDataBaseBytes) / 4;
 
 // A pipeline library (VK_KHR_pipeline_library): the groups it holds, by
 // index into Pipeline::miss / hit_groups / callables, and the libraries it
@@ -265,7 +268,7 @@ struct Pipeline {
   std::vector<uint32_t> payload_words{0};
   // Bytes of a location's payload type: RsPayload (vec4, uint, uint) + 4 per word.
   uint32_t payloadBytes(size_t location) const {
-    return 24 + 4 * (location < payload_words.size() ? payload_words[location] : 0);
+    return kPayloadBaseBytes + 4 * (location < payload_words.size() ? payload_words[location] : 0);
   }
   uint32_t maxPayloadWords() const {
     uint32_t n = 0;
@@ -281,7 +284,7 @@ struct Pipeline {
     return location < call_data_words.size() ? call_data_words[location] : 0;
   }
   // Bytes of callable data with that many words: RsCallData (48 bytes) + 4 per word.
-  static uint32_t callDataBytes(uint32_t words) { return 48 + 4 * words; }
+  static uint32_t callDataBytes(uint32_t words) { return kCallDataBaseBytes + 4 * words; }
   uint32_t maxCallDataWords() const {
     uint32_t n = 0;
     for (uint32_t w : call_data_words) n = std::max(n, w);
