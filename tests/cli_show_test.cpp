@@ -57,6 +57,23 @@ TEST(Show, AMissingCaseFileIsAClearErrorAndANonZeroExit) {
   EXPECT_NE(ok.out.find("Case builtins/closest-hit-and-miss"), std::string::npos);
 }
 
+// A case file outside the cases folder is named by its stem, with no family
+// (issue 43: it was shown as a family of its own).
+TEST(Show, AFileOutsideTheCasesFolderHasNoFamily) {
+  const std::string dir =
+      std::string(RAYSPEC_TEST_OUT) + "/show/outside-" + std::to_string(::getpid());
+  fs::create_directories(dir);
+  fs::copy_file(RAYSPEC_SOURCE_DIR "/cases/anyhit/ignore-odd-primitives.yaml", dir + "/mine.yaml",
+                fs::copy_options::overwrite_existing);
+  const ShowRun r = show(dir + "/mine.yaml --no-glsl");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("Case mine  ("), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("family: (none: a file outside the cases folder)"), std::string::npos)
+      << r.out;
+  const ShowRun inside = show("anyhit/ignore-odd-primitives --no-glsl");
+  EXPECT_NE(inside.out.find("family: anyhit\n"), std::string::npos) << inside.out;
+}
+
 TEST(Show, AnUnknownRuleLabelIsAnErrorAtItsLineAndColumn) {
   const std::string path = std::string(RAYSPEC_TEST_OUT) + "/show/unknown-rule.yaml";
   fs::create_directories(fs::path(path).parent_path());

@@ -67,7 +67,8 @@ TEST(CompareShared, CountersMustAgreeWithTheDevicesOwnRecords) {
 TEST(CompareShared, AmbiguousRaysKeepWhatEveryAnswerShares) {
   const Case c = oneTraceCase();
   Results m = sampleResults("model");
-  m.ambiguous.push_back({0, AmbiguityReason::Edge, {{true, 0, 0, 0}, {true, 0, 0, 1}}});
+  // Both triangles of the edge at the model's t (2.0).
+  m.ambiguous.push_back({0, AmbiguityReason::Edge, {{true, 0, 0, 0, 2.0}, {true, 0, 0, 1, 2.0}}});
   Results legal = sampleResults("vulkan");
   setUint(legal, 0, "primitive_id", 1);
   legal.images[0].texels[0] = 1;
@@ -86,9 +87,19 @@ TEST(CompareShared, AmbiguousRaysKeepWhatEveryAnswerShares) {
   countFromRecords(nothing);
   EXPECT_TRUE(
       findingNames(compareResults(c, samplePlan(c), nothing, m), Status::Fail, "R-MISS-XOR-CHIT"));
-  Results far = legal;  // the same t for every hit through the edge
+  Results far = legal;  // the t of no legal hit
   setFloat(far, 0, "hit_t", 2.5f);
   EXPECT_TRUE(findingNames(compareResults(c, samplePlan(c), far, m), Status::Fail, "hit_t"));
+  // A legal answer behind the edge (the any-hit ignored the other triangle)
+  // has a t of its own: a device taking it at that t passes (issue 43).
+  Results behind_model = m;
+  behind_model.ambiguous.back().candidates.push_back({true, 0, 0, 2, 2.5});
+  Results behind = far;
+  setUint(behind, 0, "primitive_id", 2);
+  behind.images[0].texels[0] = 2;
+  EXPECT_FALSE(
+      findingNames(compareResults(c, samplePlan(c), behind, behind_model), Status::Fail, "hit_t"))
+      << compareResults(c, samplePlan(c), behind, behind_model).headline();
   Results image = legal;  // the image must show the device's own record
   image.images[0].texels[0] = 0;
   EXPECT_TRUE(

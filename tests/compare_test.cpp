@@ -28,6 +28,23 @@ TEST(Tolerances, DocumentedBounds) {
   EXPECT_TRUE(toleranceFor("hit_t").matches(NAN, NAN));
 }
 
+// A Fail in several fields names each with its ray count, not only the first.
+TEST(Verdict, TheHeadlineNamesEveryFindingOfItsStatus) {
+  Verdict v;
+  v.add({Status::Fail, "R-BUILTIN", "per-ray field 'instance_id' differs", {0, 1}, 2});
+  v.add({Status::QualityWarning, "R-WATERTIGHT", "a leak", {5}, 1});
+  v.add({Status::Fail, "R-BUILTIN", "per-ray field 'hit_kind' differs", {1}, 1});
+  const std::string h = v.headline();
+  EXPECT_EQ(h.rfind("Fail: R-BUILTIN: per-ray field 'instance_id' differs (2 rays; first: 0 1)", 0),
+            0u)
+      << h;
+  EXPECT_NE(h.find("also R-BUILTIN: per-ray field 'hit_kind' differs (1 rays)"), std::string::npos)
+      << h;
+  EXPECT_EQ(h.find("leak"), std::string::npos) << "a finding of another status: " << h;
+  for (int i = 0; i < 10; ++i) v.add({Status::Fail, "R-X", "field " + std::to_string(i), {}, 3});
+  EXPECT_NE(v.headline().find("; and 5 more"), std::string::npos) << v.headline();
+}
+
 TEST(Compare, IdenticalResultsPass) {
   const Case c = sampleCase();
   const Verdict v =

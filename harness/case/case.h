@@ -374,12 +374,17 @@ struct ExpectedRejection {
   SourceLoc loc;
 };
 
+// A case name's family: its first folder ("anyhit" of
+// "anyhit/ignore-odd-primitives"); none ("") for a name of one part, a file
+// outside the cases folder named by its stem.
+std::string caseFamily(const std::string& name);
+
 struct Case {
   std::string name;  // e.g. "anyhit/ignore-odd-primitives"
   std::string file;  // path of the YAML file
   uint64_t source_hash =
       0;  // contentHash of the text parsed (a sweep: the variant's); --permute mixes in its seed
-  std::string family;              // first path component of name ("anyhit")
+  std::string family;              // caseFamily(name): "anyhit"; "" for a file outside cases/
   std::vector<std::string> rules;  // rule labels of spec-rules.md
   std::string description;
   Scene scene;

@@ -109,6 +109,11 @@ void parseTop(YamlReader& r, const YAML::Node& root, const std::vector<std::stri
 
 }  // namespace
 
+std::string caseFamily(const std::string& name) {
+  const size_t slash = name.find('/');
+  return slash == std::string::npos ? std::string() : name.substr(0, slash);
+}
+
 ParseResult parseCaseText(const std::string& yaml, const std::string& file_name,
                           const std::string& name, const std::vector<std::string>* catalog) {
   ParseResult result;
@@ -117,7 +122,7 @@ ParseResult parseCaseText(const std::string& yaml, const std::string& file_name,
   c.name = name;
   c.file = file_name;
   c.source_hash = contentHash(yaml);
-  c.family = name.substr(0, name.find('/'));
+  c.family = caseFamily(name);
   checkCaseName(r, c);
   auto at = [&](const YAML::Mark& m) {
     return SourceLoc{file_name, m.line >= 0 ? m.line + 1 : 1, m.column >= 0 ? m.column + 1 : 1, ""};

@@ -71,7 +71,8 @@ void describeInterfaceTypes(const Pipeline& p, std::ostringstream& s) {
 std::string describeCase(const Case& c) {
   std::ostringstream s;
   s << "Case " << c.name << "  (" << c.file << ")\n";
-  s << "  family: " << c.family << "\n  rules:";
+  s << "  family: " << (c.family.empty() ? "(none: a file outside the cases folder)" : c.family)
+    << "\n  rules:";
   for (const auto& r : c.rules) s << ' ' << r;
   s << '\n';
   if (!c.description.empty()) s << "  " << c.description << '\n';

@@ -27,6 +27,10 @@ Verdict backendVerdict(const Results& r) {
       f.status = Status::Fail;
       f.rule = "driver";
       break;
+    case SideStatus::InvalidShader:
+      f.status = Status::CaseError;
+      f.rule = "generated-shader";
+      break;
   }
   f.message = r.backend + ": " + r.statusText();
   v.add(f);

@@ -69,6 +69,10 @@ void Verdict::add(Finding f) {
   findings.push_back(std::move(f));
 }
 
+namespace {
+constexpr size_t kHeadlineOthers = 6;  // findings named after the first, at most
+}  // namespace
+
 std::string Verdict::headline() const {
   const Finding* worst = nullptr;
   for (const Finding& f : findings)
@@ -85,6 +89,16 @@ std::string Verdict::headline() const {
     for (uint32_t r : worst->rays) s << ' ' << r;
     s << ')';
   }
+  // Every other finding of the same status, with its ray count: a Fail in
+  // three fields names all three.
+  size_t also = 0;
+  for (const Finding& f : findings) {
+    if (&f == worst || f.status != status) continue;
+    if (++also > kHeadlineOthers) continue;
+    s << (also == 1 ? "; also " : "; ") << (f.rule.empty() ? "" : f.rule + ": ") << f.message;
+    if (f.ray_count) s << " (" << f.ray_count << " rays)";
+  }
+  if (also > kHeadlineOthers) s << "; and " << also - kHeadlineOthers << " more";
   return s.str();
 }
 

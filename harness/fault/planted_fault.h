@@ -54,6 +54,15 @@ FaultResult plantFault(const std::string& name, const Case& c, const Plan& plan,
 // ran it for one (R-WATERTIGHT). Otherwise the model's results unchanged.
 Results perfectDevice(const Case& c, const Results& model);
 
+// The model's exact tier as a device that answers every ambiguous ray by its
+// legal answer of index `answer` (modulo their number; 0: the model's own),
+// the ray's shaders run as that answer makes them run (legalAnswerDevice);
+// or that passes between the triangles of every shared edge or vertex it
+// crosses where that changes the answer (passBetweenEdgesDevice: R-WATERTIGHT,
+// a "should", not met). Each as perfectDevice gives it; `threads` for the model.
+Results legalAnswerDevice(const Case& c, const Plan& plan, uint32_t answer, unsigned threads);
+Results passBetweenEdgesDevice(const Case& c, const Plan& plan, unsigned threads);
+
 // crash: raises SIGSEGV; crash-once: the same, but only the first time the
 // case runs into the run folder run_dir (a flaky driver: the re-run passes);
 // crash-if-reused: the same, but only in a process that raised it for a case

@@ -67,7 +67,12 @@ void emitCallDataVariables(const StageContext& ctx, GlslWriter& out) {
   if (ctx.stage == Stage::Callable)
     out.line("layout(location = 0) callableDataInEXT " +
              callDataTypeName(p.callDataWords(ctx.call_data_location)) + " call;");
-  if (!ctx.uses.call) return;
+  if (!ctx.uses.call) {
+    // callee.* read in a stage that never calls: all zero, as the model has it.
+    if (ctx.uses.reads_callee)
+      out.line(callDataTypeName(p.maxCallDataWords()) + " callee;  // no call: all zero");
+    return;
+  }
   for (uint32_t l : ctx.uses.call_locations)
     out.line("layout(location = " + std::to_string(calleeLocation(ctx, l)) + ") callableDataEXT " +
              callDataTypeName(p.callDataWords(l)) + " " + calleeVariable(l) + ";");
@@ -75,7 +80,7 @@ void emitCallDataVariables(const StageContext& ctx, GlslWriter& out) {
 }
 
 void emitCallDataStart(const StageContext& ctx, GlslWriter& out) {
-  if (!ctx.uses.call) return;
+  if (!ctx.uses.call && !ctx.uses.reads_callee) return;
   for (const Member& m : kMembers) out.line(std::string("callee.") + m.name + " = " + m.zero + ";");
   out.line("callee.pad = 0u;");
   const uint32_t n = ctx.c.pipeline.maxCallDataWords();

@@ -55,9 +55,10 @@ void emitPayloadVariables(const StageContext& ctx, GlslWriter& out) {
     out.line("layout(location = 0) rayPayloadInEXT " +
              payloadTypeName(wordsAt(ctx, ctx.payload_location)) + " payload;");
   if (!ctx.uses.trace) {
-    // Raygen reads `payload` even when it never traces (all zero).
-    if (ctx.stage == Stage::Raygen)
-      out.line(payloadTypeName(ctx.c.pipeline.maxPayloadWords()) + " payload;");
+    // Raygen reads `payload`, closest-hit and miss `child`, even when they
+    // never trace (all zero, as the model has it).
+    if (ctx.stage == Stage::Raygen || ctx.uses.reads_child)
+      out.line(payloadTypeName(ctx.c.pipeline.maxPayloadWords()) + " " + resultName(ctx) + ";");
     return;
   }
   for (uint32_t l : ctx.uses.trace_locations)
@@ -69,7 +70,7 @@ void emitPayloadVariables(const StageContext& ctx, GlslWriter& out) {
 
 void emitPayloadStart(const StageContext& ctx, GlslWriter& out) {
   const bool raygen = ctx.stage == Stage::Raygen;
-  if (!raygen && !ctx.uses.trace) return;
+  if (!raygen && !ctx.uses.trace && !ctx.uses.reads_child) return;
   const std::string r = resultName(ctx);
   out.line(r + ".color = vec4(0.0);");
   out.line(r + ".value = 0u;");

@@ -15,7 +15,9 @@ struct StageUses {
   bool trace = false;                  // a traceRayEXT (raygen: payload; else: child)
   std::set<uint32_t> trace_locations;  // the payload locations its traces pass
   bool launch_ray = false;             // raygen: some trace takes a field from this launch's ray
+  bool reads_child = false;            // child.* read (closest-hit, miss): zero before a trace
   bool call = false;                   // executeCallableEXT
+  bool reads_callee = false;           // callee.* read: zero before a call
   std::set<uint32_t> call_locations;   // the callable data locations its calls pass
   bool light = false;                  // light: -> lights.glsl
   bool shader_record = false;          // shader_record_* or light

@@ -42,13 +42,15 @@ class TraceClassifier {
   void tryShaderDecisions(const std::vector<ShaderDecision>& shader_unsure);
   // A committed t whose rounding may exceed hit_t's tolerance: its bound.
   void boundT();
-  // Marks the ray ambiguous with its legal answers, if a reason was found.
-  void finish();
+  // Marks the ray ambiguous with its legal answers, if a reason was found;
+  // how to decide as the legal device ModelFaults asks for, if any.
+  std::optional<WhatIf> finish();
 
  private:
   bool eligible(const ModelCandidate& cand) const;
-  void add(bool hit, uint32_t i, uint32_t g, uint32_t p);
-  void addCommitted(const Committed& b);
+  void addCommitted(const Committed& b, const WhatIf& how);
+  void addLeak(const Committed& b, const WhatIf& how);
+  static WhatIf actual() { return {true, {}, -1, -1, {}}; }
   bool sameAsCommitted(const Committed& b) const;
 
   Machine& m_;
@@ -57,6 +59,8 @@ class TraceClassifier {
   const Payload& payload_in_;
   const ModelScene& scene_;
   RayAmbiguity amb_;
+  std::vector<WhatIf> hows_;               // how each of amb_.candidates is reached
+  std::vector<WhatIf> leak_hows_;          // how each of amb_.leak_answers is reached
   std::optional<AmbiguityReason> reason_;  // the first reason found
   double reason_t_ = 0;                    // the t of the candidate that gave it
   std::vector<size_t> unsure_;             // candidates whose decision could flip
@@ -78,17 +82,42 @@ bool TraceClassifier::eligible(const ModelCandidate& cand) const {
   return !(cand.t < r.tmin - tl || cand.t > r.tmax + tl);
 }
 
-void TraceClassifier::add(bool hit, uint32_t i, uint32_t g, uint32_t p) {
-  for (const Candidate& k : amb_.candidates)
-    if (k.hit == hit && (!hit || (k.instance == i && k.geometry == g && k.primitive == p))) return;
-  amb_.candidates.push_back({hit, i, g, p});
+namespace {
+
+Candidate answerOf(const Committed& b) {
+  if (!b.valid) return {};
+  return {true, b.instance, b.geometry, b.primitive, b.t};
 }
 
-void TraceClassifier::addCommitted(const Committed& b) {
-  if (b.valid)
-    add(true, b.instance, b.geometry, b.primitive);
-  else
-    add(false, 0, 0, 0);
+bool sameAnswer(const Candidate& a, const Candidate& b) {
+  return a.hit == b.hit && (!a.hit || (a.instance == b.instance && a.geometry == b.geometry &&
+                                       a.primitive == b.primitive));
+}
+
+bool listed(const std::vector<Candidate>& list, const Candidate& k) {
+  return std::any_of(list.begin(), list.end(),
+                     [&](const Candidate& l) { return sameAnswer(l, k); });
+}
+
+}  // namespace
+
+void TraceClassifier::addCommitted(const Committed& b, const WhatIf& how) {
+  const Candidate k = answerOf(b);
+  for (Candidate& l : amb_.candidates)
+    if (sameAnswer(l, k)) {
+      // One primitive committed at two t (a box's reports): its t is not one.
+      if (k.hit && !(std::fabs(l.t - k.t) <= tr_.tol(k.t))) l.t = NAN;
+      return;
+    }
+  amb_.candidates.push_back(k);
+  hows_.push_back(how);
+}
+
+void TraceClassifier::addLeak(const Committed& b, const WhatIf& how) {
+  const Candidate k = answerOf(b);
+  if (listed(amb_.leak_answers, k)) return;
+  amb_.leak_answers.push_back(k);
+  leak_hows_.push_back(how);
 }
 
 void TraceClassifier::findUnsure() {
@@ -156,11 +185,13 @@ void TraceClassifier::tryUnsure() {
   if (!reason_ && !faces_) return;
   // The legal answers: this run's, and those of the what-if runs where the
   // unsure candidates decide otherwise (whatIf).
-  addCommitted(tr_.best);
-  for (const Committed& b : m_.whatIf(tr_, cands_, unsure_, payload_in_)) {
-    if (!sameAsCommitted(b) && !reason_) reason_ = AmbiguityReason::AabbFace;
-    addCommitted(b);
+  addCommitted(tr_.best, actual());
+  std::vector<WhatIfAnswer> leaks;
+  for (const WhatIfAnswer& a : m_.whatIf(tr_, cands_, unsure_, payload_in_, &leaks)) {
+    if (!sameAsCommitted(a.best) && !reason_) reason_ = AmbiguityReason::AabbFace;
+    addCommitted(a.best, a.how);
   }
+  for (const WhatIfAnswer& a : leaks) addLeak(a.best, a.how);
 }
 
 // R-TIE, R-ORDER-UNSPEC: candidates confirmed at the committed t (within the
@@ -208,8 +239,8 @@ void TraceClassifier::tryOrders(const std::vector<std::pair<size_t, double>>& re
   if (prefers.empty() && firsts.size() <= 1) return;
   const bool before = !amb_.candidates.empty();
   bool differs = false, differs_first = false;
-  auto add_one = [&](const Committed& b) {
-    addCommitted(b);
+  auto add_one = [&](const Committed& b, const WhatIf& how) {
+    addCommitted(b, how);
     const bool d = b.valid != tr_.best.valid || (b.valid && (b.instance != tr_.best.instance ||
                                                              b.geometry != tr_.best.geometry ||
                                                              b.primitive != tr_.best.primitive));
@@ -217,22 +248,27 @@ void TraceClassifier::tryOrders(const std::vector<std::pair<size_t, double>>& re
     return d;
   };
   const size_t saved = amb_.candidates.size();
-  add_one(tr_.best);
-  for (long k : prefers) add_one(m_.sandbox(tr_, cands_, nullptr, k, -1, payload_in_));
+  add_one(tr_.best, actual());
+  for (long k : prefers) {
+    const WhatIf how{false, {}, k, -1, {}};
+    add_one(m_.sandbox(tr_, cands_, how, payload_in_), how);
+  }
   if (firsts.size() > 1)
     for (long k : firsts) {
       // An edge or vertex triangle the model left out may be the device's first hit.
-      std::vector<int8_t> force(cands_.size(), -1);
-      if (cands_[k].ambiguity != TriAmbiguity::None) force[k] = 1;
-      differs_first =
-          add_one(m_.sandbox(tr_, cands_, force.data(), -1, k, payload_in_)) || differs_first;
+      WhatIf how{false, std::vector<int8_t>(cands_.size(), -1), -1, k, {}};
+      if (cands_[k].ambiguity != TriAmbiguity::None) how.force[k] = 1;
+      differs_first = add_one(m_.sandbox(tr_, cands_, how, payload_in_), how) || differs_first;
     }
   const bool ambiguous_now = tofh ? differs : (differs || tied.size() >= 2);
   if (ambiguous_now && !reason_)
     reason_ = tofh            ? AmbiguityReason::FirstHit
               : differs_first ? AmbiguityReason::Order
                               : AmbiguityReason::TTie;
-  if (!ambiguous_now && !before) amb_.candidates.resize(saved);
+  if (!ambiguous_now && !before) {
+    amb_.candidates.resize(saved);
+    hows_.resize(saved);
+  }
 }
 
 // R-PREC: an intersection program's decision that rounding may flip (sphere
@@ -240,11 +276,11 @@ void TraceClassifier::tryOrders(const std::vector<std::pair<size_t, double>>& re
 // the ray is ambiguous, as the device's counters may differ.
 void TraceClassifier::tryShaderDecisions(const std::vector<ShaderDecision>& shader_unsure) {
   if (shader_unsure.empty()) return;
-  addCommitted(tr_.best);
+  addCommitted(tr_.best, actual());
   for (const ShaderDecision& d : shader_unsure) {
-    ShaderDecision flipped = d;
-    flipped.value = !d.value;
-    addCommitted(m_.sandbox(tr_, cands_, nullptr, -1, -1, payload_in_, &flipped));
+    WhatIf how{false, {}, -1, -1, d};
+    how.shader->value = !d.value;
+    addCommitted(m_.sandbox(tr_, cands_, how, payload_in_), how);
   }
   if (!reason_) reason_ = AmbiguityReason::ShaderArith;
 }
@@ -259,17 +295,31 @@ void TraceClassifier::boundT() {
     m_.t_bounds.push_back({m_.index_, static_cast<float>(tr_.best.t_err)});
 }
 
-void TraceClassifier::finish() {
-  if (!reason_) return;
+std::optional<WhatIf> TraceClassifier::finish() {
+  if (!reason_) return std::nullopt;
   amb_.reason = *reason_;
+  // A leak answer that is also a legal one is legal.
+  for (size_t k = amb_.leak_answers.size(); k-- > 0;)
+    if (listed(amb_.candidates, amb_.leak_answers[k])) {
+      amb_.leak_answers.erase(amb_.leak_answers.begin() + static_cast<long>(k));
+      leak_hows_.erase(leak_hows_.begin() + static_cast<long>(k));
+    }
+  std::optional<WhatIf> chosen;
+  const ModelFaults& f = m_.sh_.faults;
+  if (f.pass_between_edges && !leak_hows_.empty())
+    chosen = leak_hows_.front();
+  else if (f.legal_answer && !hows_.empty())
+    chosen = hows_[f.legal_answer % hows_.size()];
   m_.ambiguous.push_back(std::move(amb_));
   m_.ray_ambiguous_ = true;
+  return chosen;
 }
 
-void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& candidates,
-                            const std::vector<std::pair<size_t, double>>& reports,
-                            const std::vector<ShaderDecision>& shader_unsure,
-                            const Payload& payload_in) {
+std::optional<WhatIf> Machine::classifyTrace(Traversal& tr,
+                                             const std::vector<ModelCandidate>& candidates,
+                                             const std::vector<std::pair<size_t, double>>& reports,
+                                             const std::vector<ShaderDecision>& shader_unsure,
+                                             const Payload& payload_in) {
   TraceClassifier c(*this, tr, candidates, payload_in);
   c.findUnsure();
   c.findSharedTriangles();
@@ -277,7 +327,7 @@ void Machine::classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& ca
   c.tryOrders(reports);
   c.tryShaderDecisions(shader_unsure);
   c.boundT();
-  c.finish();
+  return c.finish();
 }
 
 // R-ORDER-UNSPEC: an any-hit that may terminate runs on one of the candidates
@@ -314,37 +364,49 @@ bool Machine::sphereHitDecision(StageEnv& env, bool model_value, float disc) {
   return model_value;
 }
 
-// One what-if run of the decision in a sandbox: counters, record and error
-// are restored afterwards, the payload is a copy of the trace's incoming one.
-Committed Machine::sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands,
-                           const int8_t* force, long prefer, long first, const Payload& payload_in,
-                           const ShaderDecision* shader_force) {
-  const std::vector<uint64_t> saved_counters = counters;
-  const std::string saved_error = error;
-  std::vector<uint32_t> saved_record;
-  if (rec_) saved_record.assign(rec_, rec_ + recordWords());
+Committed Machine::decideAs(const Traversal& actual, const std::vector<ModelCandidate>& cands,
+                            const WhatIf& how, Payload& payload) {
   Traversal v(*this, actual.ray);
   v.flags = actual.flags;
   v.depth = actual.depth;
   v.tmin = actual.tmin;
   v.tmax_cur = actual.ray.tmax;
   v.exact = actual.exact;
-  v.prefer = prefer;
-  v.first = first;
-  v.shader_force = shader_force;
-  if (prefer >= 0) {
-    const ModelCandidate& p = cands[static_cast<size_t>(prefer)];
+  v.prefer = how.prefer;
+  v.first = how.first;
+  v.shader_force = how.shader ? &*how.shader : nullptr;
+  if (how.prefer >= 0) {
+    const ModelCandidate& p = cands[static_cast<size_t>(how.prefer)];
     v.prefer_key[0] = p.instance;
     v.prefer_key[1] = p.geometry;
     v.prefer_key[2] = p.primitive;
   }
-  Payload p = payload_in;
-  v.payload = &p;
-  decide(v, cands, force, p);
-  counters = saved_counters;
-  error = saved_error;
-  if (rec_) std::copy(saved_record.begin(), saved_record.end(), rec_);
+  v.payload = &payload;
+  decide(v, cands, how.force.empty() ? nullptr : how.force.data(), payload);
   return v.best;
+}
+
+Machine::MachineState Machine::saveState() const {
+  MachineState s{counters, {}, error};
+  if (rec_) s.record.assign(rec_, rec_ + recordWords());
+  return s;
+}
+
+void Machine::restoreState(const MachineState& s) {
+  counters = s.counters;
+  error = s.error;
+  if (rec_) std::copy(s.record.begin(), s.record.end(), rec_);
+}
+
+// One what-if run of the decision in a sandbox: counters, record and error
+// are restored afterwards, the payload is a copy of the trace's incoming one.
+Committed Machine::sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands,
+                           const WhatIf& how, const Payload& payload_in) {
+  const MachineState saved = saveState();
+  Payload p = payload_in;
+  const Committed best = decideAs(actual, cands, how, p);
+  restoreState(saved);
+  return best;
 }
 
 // What-if runs of the decision for an ambiguous trace: the unsure candidates
@@ -353,15 +415,16 @@ Committed Machine::sandbox(const Traversal& actual, const std::vector<ModelCandi
 // shared edge's triangles is hit); a group of one may also be no hit. Stage
 // programs run again, in a sandbox: their counters, record and payload
 // effects are undone.
-std::vector<Committed> Machine::whatIf(const Traversal& actual,
-                                       const std::vector<ModelCandidate>& cands,
-                                       const std::vector<size_t>& unsure,
-                                       const Payload& payload_in) {
-  std::vector<Committed> out;
+std::vector<WhatIfAnswer> Machine::whatIf(const Traversal& actual,
+                                          const std::vector<ModelCandidate>& cands,
+                                          const std::vector<size_t>& unsure,
+                                          const Payload& payload_in,
+                                          std::vector<WhatIfAnswer>* leaks) {
+  std::vector<WhatIfAnswer> out;
   if (unsure.empty()) return out;
-  std::vector<int8_t> force(cands.size(), -1);
-  auto run = [&] {
-    out.push_back(sandbox(actual, cands, force.data(), -1, -1, payload_in));
+  WhatIf how{false, std::vector<int8_t>(cands.size(), -1), -1, -1, {}};
+  auto run = [&](std::vector<WhatIfAnswer>& into) {
+    into.push_back({sandbox(actual, cands, how, payload_in), how});
   };
   size_t g0 = 0;
   while (g0 < unsure.size()) {
@@ -370,14 +433,14 @@ std::vector<Committed> Machine::whatIf(const Traversal& actual,
                                      actual.tol(cands[unsure[g1]].t))
       ++g1;
     for (size_t a = g0; a < g1; ++a) {
-      for (size_t b = g0; b < g1; ++b) force[unsure[b]] = a == b ? 1 : 0;
-      run();
+      for (size_t b = g0; b < g1; ++b) how.force[unsure[b]] = a == b ? 1 : 0;
+      run(out);
     }
-    if (g1 - g0 == 1) {
-      force[unsure[g0]] = 0;
-      run();
-    }
-    for (size_t b = g0; b < g1; ++b) force[unsure[b]] = -1;
+    // No triangle of the group hit: legal for a group of one (a border), a
+    // leak between the triangles of a group of two or more.
+    for (size_t b = g0; b < g1; ++b) how.force[unsure[b]] = 0;
+    run(g1 - g0 == 1 ? out : *leaks);
+    for (size_t b = g0; b < g1; ++b) how.force[unsure[b]] = -1;
     g0 = g1;
   }
   return out;

@@ -36,6 +36,13 @@ struct ModelFaults {
   // R-BUILTIN broken: gl_ObjectToWorldEXT and gl_WorldToObjectEXT (and their
   // 3x4 forms) each read the other matrix.
   bool transform_builtins_swapped = false;
+  // Legal devices (rayspec mutate): every ambiguous trace takes the answer of
+  // this index among its legal answers (modulo their number; 0: the model's
+  // own), with its shaders run as that answer makes them run.
+  uint32_t legal_answer = 0;
+  // R-WATERTIGHT not met (a "should"): every trace through a shared edge or
+  // vertex passes between its triangles, where that changes the answer.
+  bool pass_between_edges = false;
 };
 
 }  // namespace rayspec

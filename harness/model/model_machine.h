@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -92,6 +93,22 @@ struct Committed {
   // rounding, a triangle's frame error).
   double t_err = 0;
   std::array<uint32_t, kMaxAttributeWords> words{};  // a report's attribute words
+};
+
+// How one what-if run of the exact tier decides (Machine::sandbox):
+// candidates forced to be a hit (1) or not (0), -1 the model's own decision;
+// the candidate that wins every tie (prefer) or is processed first (first),
+// -1 none; an intersection program's decision flipped. `actual`: the trace's
+// own run, no what-if.
+struct WhatIf {
+  bool actual = false;
+  std::vector<int8_t> force;  // empty: none forced
+  long prefer = -1, first = -1;
+  std::optional<ShaderDecision> shader;
+};
+struct WhatIfAnswer {
+  Committed best;
+  WhatIf how;
 };
 
 struct StageEnv {
@@ -213,20 +230,39 @@ class alignas(64) Machine {
                        const SbtRecord* rec, const CHitGroup* grp);
   bool triangleInside(const Traversal& tr, const ModelCandidate& cand, size_t k,
                       const int8_t* force) const;
+  // One decision of the trace as `how` says, on `payload` (decideAs), and the
+  // same in a sandbox: counters, record and error restored, the payload a
+  // copy of the trace's incoming one (sandbox).
+  // What a sandbox keeps: the counters, the launch's record and the error.
+  struct MachineState {
+    std::vector<uint64_t> counters;
+    std::vector<uint32_t> record;
+    std::string error;
+  };
+  MachineState saveState() const;
+  void restoreState(const MachineState& s);
+  Committed decideAs(const Traversal& actual, const std::vector<ModelCandidate>& cands,
+                     const WhatIf& how, Payload& payload);
   Committed sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands,
-                    const int8_t* force, long prefer, long first, const Payload& payload_in,
-                    const ShaderDecision* shader_force = nullptr);
+                    const WhatIf& how, const Payload& payload_in);
   // sphere_hit in an intersection program: the model's value, or the forced
   // one of a what-if run; notes an unsure decision (model_exact_tier.cpp).
   bool sphereHitDecision(StageEnv& env, bool model_value, float disc);
   // Exact tier: marks the current ray ambiguous when this trace's answer could
   // differ on a device, with the legal answers (model_exact_tier.cpp).
-  void classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& cands,
-                     const std::vector<std::pair<size_t, double>>& reports,
-                     const std::vector<ShaderDecision>& shader_unsure, const Payload& payload_in);
+  // Returns how to decide the trace as a legal device that takes another of
+  // its answers (ModelFaults::legal_answer, pass_between_edges), if asked.
+  std::optional<WhatIf> classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& cands,
+                                      const std::vector<std::pair<size_t, double>>& reports,
+                                      const std::vector<ShaderDecision>& shader_unsure,
+                                      const Payload& payload_in);
   bool anyHitMayTerminate(const Traversal& tr, const std::vector<ModelCandidate>& cands) const;
-  std::vector<Committed> whatIf(const Traversal& actual, const std::vector<ModelCandidate>& cands,
-                                const std::vector<size_t>& unsure, const Payload& payload_in);
+  // `leaks`: the answers of devices passing between the triangles of a
+  // shared edge or vertex (no triangle of a group of two or more hit).
+  std::vector<WhatIfAnswer> whatIf(const Traversal& actual,
+                                   const std::vector<ModelCandidate>& cands,
+                                   const std::vector<size_t>& unsure, const Payload& payload_in,
+                                   std::vector<WhatIfAnswer>* leaks);
   void runRaygen();
   // Raygen is `trace: {}` and traces take Embree's closest hit: the chunk's
   // rays are traced first, then shaded (model_fast_path.cpp).

@@ -359,6 +359,10 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
   tr.exact = scene.tier == ModelTier::Exact;
   tr.payload = &payload;
   const Payload payload_in = payload;  // for the exact tier's what-if variants
+  // A legal device's other answer (ModelFaults) replays the trace from here.
+  const ModelFaults& f = sh_.faults;
+  std::optional<MachineState> before;
+  if (tr.exact && (f.legal_answer || f.pass_between_edges) && !ray_ambiguous_) before = saveState();
 
   RTCRayHit rh = embreeRay(r, tr.flags);
   std::vector<ModelCandidate>* cands = nullptr;
@@ -397,7 +401,13 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
   }
 
   if (cands && tr.exact && !ray_ambiguous_) {
-    classifyTrace(tr, *cands, reports, shader_unsure, payload_in);
+    const std::optional<WhatIf> chosen =
+        classifyTrace(tr, *cands, reports, shader_unsure, payload_in);
+    if (chosen && before && !chosen->actual) {
+      restoreState(*before);
+      payload = payload_in;
+      tr.best = decideAs(tr, *cands, *chosen, payload);
+    }
     // R-UB: a legal answer of this trace whose record lies beyond its region.
     if (ray_ambiguous_ && !ray_undefined_ && !ambiguous.empty() && ambiguous.back().ray == index_)
       for (const Candidate& k : ambiguous.back().candidates) {

@@ -39,6 +39,14 @@ KillMatrix buildKillMatrix(const std::vector<CaseMutation>& cases) {
   std::set<std::string> families;
   for (const CaseMutation& c : cases) {
     ++m.cases;
+    size_t applied = 0;
+    for (const LegalDevice& d : c.legal_devices) {
+      if (!d.applied) continue;
+      ++applied;
+      if (d.false_alarm) m.false_alarms.push_back({c.name, d.name, d.rule, d.headline, d.ray});
+    }
+    m.legal_variants += applied;
+    m.legal_cases += applied ? 1 : 0;
     if (!c.judged) {
       m.not_judged.push_back({c.name, c.not_judged});
       continue;
@@ -98,6 +106,13 @@ std::string killMatrixText(const KillMatrix& m) {
   out += std::to_string(m.judged) + " of " + std::to_string(m.cases) + " cases judged";
   out += m.not_judged.empty() ? "\n" : "; not judged:\n";
   for (const auto& [name, why] : m.not_judged) out += "  " + name + ": " + why + "\n";
+  out += "Legal devices: " + std::to_string(m.false_alarms.size()) + " false alarms of " +
+         std::to_string(m.legal_variants) + " variants (" + std::to_string(m.legal_cases) +
+         " cases)\n";
+  for (const FalseAlarm& a : m.false_alarms)
+    out += "  false alarm: " + a.case_name + "  " + a.device + "  ray " +
+           (a.ray < 0 ? std::string("-") : std::to_string(a.ray)) + "  " + a.rule + ": " +
+           a.headline + "\n";
   if (m.unexplained()) {
     out += "\nSurvivors with no reason (holes):\n";
     for (const Survivor& s : m.survivors)
@@ -126,6 +141,15 @@ std::string killMatrixJson(const KillMatrix& m, const std::string& run_dir,
   for (const Survivor& s : m.survivors)
     j["survivors"].push_back(
         {{"case", s.case_name}, {"mutant", s.mutant}, {"what", s.what}, {"reason", s.reason}});
+  j["legal_devices"] = {{"variants", m.legal_variants},
+                        {"cases", m.legal_cases},
+                        {"false_alarms", nlohmann::json::array()}};
+  for (const FalseAlarm& a : m.false_alarms)
+    j["legal_devices"]["false_alarms"].push_back({{"case", a.case_name},
+                                                  {"device", a.device},
+                                                  {"rule", a.rule},
+                                                  {"ray", a.ray},
+                                                  {"headline", a.headline}});
   j["not_judged"] = nlohmann::json::array();
   for (const auto& [name, why] : m.not_judged)
     j["not_judged"].push_back({{"case", name}, {"why", why}});

@@ -19,6 +19,12 @@ struct Survivor {
   std::string case_name, mutant, what, reason;  // reason "": unexplained
 };
 
+// A legal device that failed (legal_devices.h): the judge's false alarm.
+struct FalseAlarm {
+  std::string case_name, device, rule, headline;
+  int64_t ray = -1;
+};
+
 struct KillMatrix {
   std::vector<std::string> families;                             // sorted
   std::map<std::string, std::map<std::string, KillCell>> cells;  // [kind][family]
@@ -26,6 +32,10 @@ struct KillMatrix {
   size_t cases = 0, judged = 0;
   std::vector<std::pair<std::string, std::string>> not_judged;  // case, why
   std::vector<Survivor> survivors;
+  // Legal devices: variants judged, the cases they were judged on, and each
+  // that failed.
+  size_t legal_variants = 0, legal_cases = 0;
+  std::vector<FalseAlarm> false_alarms;
   size_t unexplained() const;
   size_t nullKilled() const {
     return by_kind.count("null-device") ? by_kind.at("null-device").killed : 0;

@@ -6,10 +6,6 @@
 namespace rayspec {
 namespace {
 
-std::string familyOf(const std::string& name) {
-  return name.substr(0, name.find('/'));
-}
-
 MutantOutcome judgeMutant(const MutantInput& in, const GenericMutant& g, const Results& device) {
   MutantOutcome o;
   o.kind = g.kind;
@@ -32,10 +28,11 @@ MutantOutcome judgeMutant(const MutantInput& in, const GenericMutant& g, const R
 }  // namespace
 
 CaseMutation mutateCase(const Case& c, const Plan& plan, const Results& device,
-                        const Results& model) {
+                        const Results& model, unsigned threads) {
   CaseMutation out;
   out.name = c.name;
-  out.family = familyOf(c.name);
+  out.family = c.family;
+  out.legal_devices = judgeLegalDevices(c, plan, model, threads);
   const Verdict unmutated = compareResults(c, plan, device, model);
   if (unmutated.status != Status::Pass && unmutated.status != Status::QualityWarning) {
     out.not_judged = "the device results as saved: " + unmutated.headline();

@@ -6,6 +6,7 @@
 
 #include "compare/verdict.h"
 #include "mutate/generic_mutant.h"
+#include "mutate/legal_devices.h"
 
 namespace rayspec {
 
@@ -23,11 +24,14 @@ struct CaseMutation {
   bool judged = false;       // false: the unmutated results do not pass, or were not there
   std::string not_judged;    // why
   std::vector<MutantOutcome> mutants;
+  std::vector<LegalDevice> legal_devices;  // each must not fail (legal_devices.h)
 };
 
 // The unmutated device results must pass (Pass or QualityWarning) for the
 // mutants to say anything; then each mutant is applied to a copy and judged.
+// The legal devices are judged whatever the saved results say (they are
+// made from the model); `threads` for their model runs.
 CaseMutation mutateCase(const Case& c, const Plan& plan, const Results& device,
-                        const Results& model);
+                        const Results& model, unsigned threads = 0);
 
 }  // namespace rayspec

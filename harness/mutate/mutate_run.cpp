@@ -16,7 +16,7 @@ namespace {
 CaseMutation notJudged(const std::string& name, const std::string& why) {
   CaseMutation m;
   m.name = name;
-  m.family = name.substr(0, name.find('/'));
+  m.family = caseFamily(name);
   m.not_judged = why;
   return m;
 }
@@ -41,7 +41,7 @@ CaseMutation mutateOne(const CaseFile& f, const MutateOptions& opt) {
   mo.threads = opt.threads;
   const Results model = runOnModel(c, plan, mo);
   if (!model.ok()) return notJudged(f.name, "model: " + model.statusText());
-  return mutateCase(c, plan, device, model);
+  return mutateCase(c, plan, device, model, opt.threads);
 }
 
 bool writeFile(const fs::path& p, const std::string& text) {
@@ -84,7 +84,8 @@ int runMutate(const MutateOptions& opt) {
     std::fprintf(stderr, "rayspec mutate: no case of %s could be judged\n", opt.run_dir.c_str());
     return 1;
   }
-  return m.unexplained() == 0 && m.nullKilled() == m.nullApplied() ? 0 : 1;
+  return m.unexplained() == 0 && m.nullKilled() == m.nullApplied() && m.false_alarms.empty() ? 0
+                                                                                             : 1;
 }
 
 }  // namespace rayspec

@@ -61,7 +61,7 @@ struct BuiltinInfo {
 //   aabb_min, aabb_max (Vec3; intersection: the primitive's box, object space)
 //   payload.color (Vec4), payload.value (Uint): the incoming payload in miss,
 //       closest-hit and any-hit; in raygen, the payload of its last trace
-//   payload.word<i> (Uint, i = 0..9): word i of the incoming payload (its
+//   payload.word<i> (Uint, i below kMaxPayloadWords, 0..57): word i of the incoming payload (its
 //       type's pipeline.payloads words), in raygen of the last trace's payload
 //   depth (Uint; miss, closest-hit, any-hit: 1 for a trace from raygen, +1 per
 //       nested trace)
@@ -69,7 +69,7 @@ struct BuiltinInfo {
 //       nested trace (closest-hit, miss); child.word<i> (Uint) its word i
 //   call.position, call.normal (Vec3), call.color (Vec4), call.value (Uint):
 //       the incoming callable data (callable); call.word<i> (Uint) its word
-//       i (its type's pipeline.callable_data words)
+//       i (its type's pipeline.callable_data words, i below kMaxCallDataWords, 0..51)
 //   callee.color (Vec4), callee.value (Uint), callee.word<i> (Uint): the
 //       callable data after this stage's last call (raygen, closest-hit,
 //       miss, callable)

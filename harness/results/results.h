@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -58,8 +59,11 @@ struct Image {
 // says why. Not the verdict's Status (compare/verdict.h), which judges both.
 // Refused: the driver refused something a conformant driver must accept (a
 // valid pipeline within the limits): the case Fails.
-enum class SideStatus { Ok, NotSupported, Crash, Timeout, Refused };
-const char* sideStatusName(SideStatus s);  // "ok", "NotSupported", "Crash", "Timeout", "Refused"
+// InvalidShader: a stage rayspec generated did not compile or validate (our
+// error, never the device's: the case gets CaseError).
+enum class SideStatus { Ok, NotSupported, Crash, Timeout, Refused, InvalidShader };
+// "ok", "NotSupported", "Crash", "Timeout", "Refused", "InvalidShader"
+const char* sideStatusName(SideStatus s);
 bool parseSideStatus(const std::string& name, SideStatus* out);
 
 // Why the model's exact tier found a ray numerically ambiguous. Stable names
@@ -91,6 +95,9 @@ struct UndefinedRay {
 struct Candidate {
   bool hit = false;  // false: a miss is a legal answer
   uint32_t instance = 0, geometry = 0, primitive = 0;
+  // A hit's t as that answer commits it; NaN where unknown (a miss, or a
+  // results.json written before candidates carried it).
+  double t = std::numeric_limits<double>::quiet_NaN();
 };
 struct RayAmbiguity {
   uint32_t ray = 0;  // launch index y * width + x
@@ -100,6 +107,10 @@ struct RayAmbiguity {
   // the shared edge or vertex (each once; `hit`: the model's own decision,
   // one of them where the mesh is closed); a watertight device finds one.
   std::vector<Candidate> shared_triangles;
+  // Answers a device reaches only by passing between the triangles of a
+  // shared edge or vertex (R-WATERTIGHT, a "should"): none of them is in
+  // `candidates`; a device taking one gets a QualityWarning, not a Fail.
+  std::vector<Candidate> leak_answers;
 };
 
 // A ray whose hit t a device may compute further from the model's than the

@@ -4,6 +4,7 @@
 #include <bit>
 #include <charconv>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -119,11 +120,14 @@ namespace {
 
 json candidatesJson(const std::vector<Candidate>& candidates) {
   json out = json::array();
-  for (const Candidate& c : candidates)
-    out.push_back({{"hit", c.hit},
-                   {"instance", c.instance},
-                   {"geometry", c.geometry},
-                   {"primitive", c.primitive}});
+  for (const Candidate& c : candidates) {
+    json j = {{"hit", c.hit},
+              {"instance", c.instance},
+              {"geometry", c.geometry},
+              {"primitive", c.primitive}};
+    if (std::isfinite(c.t)) j["t"] = c.t;
+    out.push_back(std::move(j));
+  }
   return out;
 }
 
@@ -135,7 +139,8 @@ void writeRayNotes(const Results& r, json& j) {
     j["ambiguous"].push_back({{"ray", a.ray},
                               {"reason", ambiguityReasonName(a.reason)},
                               {"candidates", candidatesJson(a.candidates)},
-                              {"shared_triangles", candidatesJson(a.shared_triangles)}});
+                              {"shared_triangles", candidatesJson(a.shared_triangles)},
+                              {"leak_answers", candidatesJson(a.leak_answers)}});
   j["t_bounds"] = json::array();
   for (const TBound& b : r.t_bounds) j["t_bounds"].push_back({{"ray", b.ray}, {"bound", b.bound}});
   j["undefined"] = json::array();
@@ -279,6 +284,25 @@ std::string readImages(const json& j, FieldReader& field, const fs::path& dir, R
   return {};
 }
 
+// One list of an ambiguous ray's answers (ambiguous.<key>); absent and not
+// `required` (older bundles): none. A hit's t where written. Throws on a bad value.
+std::vector<Candidate> readCandidates(FieldReader& field, const json& ja, const std::string& key,
+                                      bool required) {
+  std::vector<Candidate> out;
+  if (!required && !ja.contains(key)) return out;
+  const std::string path = "ambiguous." + key;
+  for (const json& jc : field(ja, path)) {
+    Candidate k;
+    k.hit = jc.contains("hit") || required ? field(jc, path + ".hit").get<bool>() : true;
+    k.instance = field(jc, path + ".instance");
+    k.geometry = field(jc, path + ".geometry");
+    k.primitive = field(jc, path + ".primitive");
+    if (jc.contains("t")) k.t = field(jc, path + ".t");
+    out.push_back(k);
+  }
+  return out;
+}
+
 // The rays the model bounded, found undefined, or found ambiguous. Throws on
 // a bad value.
 void readRayNotes(const json& j, FieldReader& field, Results& r) {
@@ -319,17 +343,9 @@ void readRayNotes(const json& j, FieldReader& field, Results& r) {
     if (!parseAmbiguityReason(field(ja, "ambiguous.reason").get<std::string>(), &a.reason))
       throw std::runtime_error("ambiguous.reason: unknown value '" +
                                field(ja, "ambiguous.reason").get<std::string>() + "'");
-    for (const json& jc : field(ja, "ambiguous.candidates"))
-      a.candidates.push_back({field(jc, "ambiguous.candidates.hit"),
-                              field(jc, "ambiguous.candidates.instance"),
-                              field(jc, "ambiguous.candidates.geometry"),
-                              field(jc, "ambiguous.candidates.primitive")});
-    if (ja.contains("shared_triangles"))
-      for (const json& js : field(ja, "ambiguous.shared_triangles"))
-        a.shared_triangles.push_back({js.value("hit", true),
-                                      field(js, "ambiguous.shared_triangles.instance"),
-                                      field(js, "ambiguous.shared_triangles.geometry"),
-                                      field(js, "ambiguous.shared_triangles.primitive")});
+    a.candidates = readCandidates(field, ja, "candidates", true);
+    a.shared_triangles = readCandidates(field, ja, "shared_triangles", false);
+    a.leak_answers = readCandidates(field, ja, "leak_answers", false);
     r.ambiguous.push_back(std::move(a));
   }
 }

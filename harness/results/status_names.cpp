@@ -28,13 +28,16 @@ const char* sideStatusName(SideStatus s) {
       return "Timeout";
     case SideStatus::Refused:
       return "Refused";
+    case SideStatus::InvalidShader:
+      return "InvalidShader";
   }
   return "Crash";
 }
 
 bool parseSideStatus(const std::string& name, SideStatus* out) {
-  static const SideStatus all[] = {SideStatus::Ok, SideStatus::NotSupported, SideStatus::Crash,
-                                   SideStatus::Timeout, SideStatus::Refused};
+  static const SideStatus all[] = {SideStatus::Ok,      SideStatus::NotSupported,
+                                   SideStatus::Crash,   SideStatus::Timeout,
+                                   SideStatus::Refused, SideStatus::InvalidShader};
   return parseByName(name, out, all, sideStatusName);
 }
 

@@ -229,6 +229,34 @@ class RunBook {
   std::atomic<bool> stopped_{false};
 };
 
+// A crash in a worker that ran other cases before is not charged to this
+// case until it crashes alone: the case runs again, each side in a process of
+// its own (into the same folder). If it does not crash there it is judged by
+// that run, and the crash becomes a finding of its own ("crashes only in a
+// reused process": the driver trips over what an earlier case left). False:
+// a signal stopped it.
+bool judgeCrashAlone(const CaseRunner& runner, const Case& c, const CaseSlot* slot,
+                     CaseOutcome& outcome, bool& interrupted) {
+  if (outcome.status != Status::Crash || !slot || (!slot->model && !slot->device)) return true;
+  std::printf("        %s: crashed in a reused worker: running it alone\n", c.name.c_str());
+  const CaseSlot alone{slot->index, nullptr, nullptr};
+  CaseOutcome fresh =
+      guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted, "", &alone); });
+  if (interrupted) return false;
+  if (fresh.status == Status::Crash) return true;
+  fresh.verdict.add({Status::QualityWarning,
+                     "reused-process",
+                     "crashes only in a reused process: " + outcome.headline +
+                         " in a worker that ran other cases before; alone, in processes of its "
+                         "own, it ran and was judged",
+                     {},
+                     0});
+  fresh.deriveFromVerdict();
+  fresh.cost += outcome.cost;
+  outcome = std::move(fresh);
+  return true;
+}
+
 // One case: run, judged by the baseline, run again when the baseline did not
 // expect the result (into <case>/rerun, to tell a flake). nullopt: a signal
 // stopped it (nothing measured, nothing said).
@@ -239,6 +267,7 @@ std::optional<CaseOutcome> runOneCase(const CaseRunner& runner, const Case& c, c
   CaseOutcome outcome =
       guardCase(c.name, c.rules, [&] { return runner.run(c, &interrupted, "", slot); });
   if (interrupted) return std::nullopt;
+  if (!judgeCrashAlone(runner, c, slot, outcome, interrupted)) return std::nullopt;
   outcome.cost[CostSide::Parent] += p.parse_cost;
   if (applyBaseline(baseline, outcome)) {
     std::printf("        %s: unexpected %s: running it again\n", c.name.c_str(),

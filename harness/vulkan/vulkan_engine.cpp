@@ -66,7 +66,9 @@ Results VulkanEngine::run(const Case& c, const Plan& plan) {
     }
     runCase(*ctx_, c, plan, r);
   } catch (const ShaderCompileError& e) {
-    r.setStatus(SideStatus::Crash, std::string("shader compile: ") + e.what());
+    r.setStatus(
+        SideStatus::InvalidShader,
+        std::string("rayspec generated a stage that does not compile or validate: ") + e.what());
   } catch (const NotSupportedError& e) {
     r.setStatus(SideStatus::NotSupported, e.what());
   } catch (const VulkanError& e) {

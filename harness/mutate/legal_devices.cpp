@@ -1,0 +1,138 @@
+#include "mutate/legal_devices.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "compare/compare_results.h"
+#include "fault/planted_fault.h"
+#include "fault/record_edit.h"
+#include "results/record_layout.h"
+#include "results/tolerances.h"
+
+namespace rayspec {
+namespace {
+
+// The most legal answers tried per ray: answer-1 .. answer-7.
+constexpr uint32_t kMaxAnswers = 8;
+
+struct Variant {
+  std::string name;
+  Results device;
+  bool applied = false;
+  std::string what;
+};
+
+// A legal device made by the model, with whether it differs from the model.
+Variant madeBy(const std::string& name, Results device, const Case& c, const Results& model,
+               const std::string& what) {
+  Variant v{name, std::move(device), false, what};
+  if (!v.device.ok()) {
+    v.what = "the model does not run so: " + v.device.statusText();
+    return v;
+  }
+  v.applied = !sameOutput(v.device, perfectDevice(c, model));
+  if (!v.applied) v.what = "changes nothing here: " + what;
+  return v;
+}
+
+// answer-<j>: every ambiguous ray takes its j-th legal answer.
+std::vector<Variant> answerVariants(const Case& c, const Plan& plan, const Results& model,
+                                    unsigned threads) {
+  size_t answers = 0;
+  for (const RayAmbiguity& a : model.ambiguous) answers = std::max(answers, a.candidates.size());
+  std::vector<Variant> out;
+  for (uint32_t j = 1; j < std::min<size_t>(answers, kMaxAnswers); ++j)
+    out.push_back(madeBy("answer-" + std::to_string(j), legalAnswerDevice(c, plan, j, threads), c,
+                         model,
+                         "every ambiguous ray takes legal answer " + std::to_string(j) +
+                             " (modulo its number of answers)"));
+  return out;
+}
+
+Variant passBetween(const Case& c, const Plan& plan, const Results& model, unsigned threads) {
+  const bool any = std::any_of(model.ambiguous.begin(), model.ambiguous.end(),
+                               [](const RayAmbiguity& a) { return !a.leak_answers.empty(); });
+  if (!any)
+    return {"pass-between-edges", {}, false, "no ray where passing between changes the answer"};
+  return madeBy("pass-between-edges", passBetweenEdgesDevice(c, plan, threads), c, model,
+                "rays through a shared edge or vertex pass between its triangles");
+}
+
+// Each planted fault the catalog calls legal, on the model's own answer.
+std::vector<Variant> legalFaults(const Case& c, const Plan& plan, const Results& model) {
+  std::vector<Variant> out;
+  for (const FaultInfo& f : faultTable()) {
+    if (f.breaks.rfind("legal:", 0) != 0) continue;
+    Variant v{f.name, perfectDevice(c, model), false, f.breaks};
+    const FaultResult r = plantFault(f.name, c, plan, v.device, model);
+    v.applied = r.applied && !sameOutput(v.device, perfectDevice(c, model));
+    v.what = r.applied ? f.breaks + " (" + r.what + ")" : r.what;
+    out.push_back(std::move(v));
+  }
+  return out;
+}
+
+// tolerance-bound: each written hit_t and barycentric 0.9 of its allowed
+// error away from the model's (up, or down where up would cross an end).
+Variant toleranceBound(const Case& c, const Results& model) {
+  Variant v{"tolerance-bound", perfectDevice(c, model), false, ""};
+  RecordEdit dev{v.device};
+  size_t moved = 0;
+  for (uint32_t ray = 0; ray < dev.rays(); ++ray)
+    for (const auto& [field, words] : {std::pair<const char*, uint32_t>{"hit_t", 1u},
+                                       std::pair<const char*, uint32_t>{"barycentrics", 2u}}) {
+      if (!findRecordField(field) || findRecordField(field)->automatic || !dev.written(ray, field))
+        continue;
+      const Tolerance tol = toleranceFor(field);
+      for (uint32_t w = 0; w < words; ++w) {
+        const float x = dev.getFloat(ray, field, w);
+        if (!std::isfinite(x)) continue;
+        const double step = 0.9 * (tol.abs + tol.rel * std::max(std::fabs(double(x)), 1.0));
+        dev.setFloat(ray, field, static_cast<float>(x + step), w);
+        ++moved;
+      }
+    }
+  v.applied = moved > 0;
+  v.what = moved ? std::to_string(moved) +
+                       " hit_t and barycentric values moved by 0.9 of their "
+                       "tolerance"
+                 : "no hit_t or barycentrics recorded";
+  return v;
+}
+
+LegalDevice judge(const Case& c, const Plan& plan, const Results& model, Variant v) {
+  LegalDevice d;
+  d.name = v.name;
+  d.applied = v.applied;
+  d.what = v.what;
+  if (!v.applied) return d;
+  v.device.backend = "vulkan";
+  const Verdict verdict = compareResults(c, plan, v.device, model);
+  d.status = verdict.status;
+  d.headline = verdict.headline();
+  d.false_alarm = isFailing(verdict.status);
+  for (const Finding& f : verdict.findings)
+    if (d.false_alarm && d.rule.empty() && isFailing(f.status)) {
+      d.rule = f.rule;
+      if (!f.rays.empty()) d.ray = f.rays[0];
+    }
+  return d;
+}
+
+}  // namespace
+
+std::vector<LegalDevice> judgeLegalDevices(const Case& c, const Plan& plan, const Results& model,
+                                           unsigned threads) {
+  std::vector<Variant> variants;
+  if (!model.records.empty()) {
+    variants = answerVariants(c, plan, model, threads);
+    variants.push_back(passBetween(c, plan, model, threads));
+    variants.push_back(toleranceBound(c, model));
+  }
+  for (Variant& v : legalFaults(c, plan, model)) variants.push_back(std::move(v));
+  std::vector<LegalDevice> out;
+  for (Variant& v : variants) out.push_back(judge(c, plan, model, std::move(v)));
+  return out;
+}
+
+}  // namespace rayspec

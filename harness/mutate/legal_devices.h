@@ -1,0 +1,45 @@
+// The dual of the kill matrix: devices the specification allows that differ
+// from the model, each judged by the usual comparison against the model. A
+// correct driver never fails, so each must Pass (or QualityWarning where a
+// "should" is not met); a Fail is a false alarm of the judge.
+//   answer-<j>          every ambiguous ray takes its j-th legal answer, its
+//                       shaders run as that answer makes them run (the model
+//                       replays the trace so: fault/planted_fault.h)
+//   pass-between-edges  every ray through a shared edge or vertex passes
+//                       between its triangles where that changes the answer
+//                       (R-WATERTIGHT, a "should": QualityWarning at most)
+//   <legal fault>       each planted fault the catalog calls legal (any-hit
+//                       repeated without NO_DUPLICATE, candidates far to near, ...)
+//   tolerance-bound     every written hit_t and barycentric moved by 0.9 of
+//                       the error the comparison allows
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "case/case.h"
+#include "compare/verdict.h"
+#include "plan/plan.h"
+#include "results/results.h"
+
+namespace rayspec {
+
+struct LegalDevice {
+  std::string name;
+  bool applied = false;  // false: the variant does not differ from the model here
+  std::string what;      // what it changes, or why it does not apply
+  Status status = Status::Pass;
+  std::string headline;  // the verdict's
+  bool false_alarm = false;
+  // A false alarm's first failing finding: its rule and first ray.
+  std::string rule;
+  int64_t ray = -1;
+};
+
+// The legal devices of one case, each judged against `model` (the exact
+// tier's run of the case, as `rayspec mutate` makes it); `threads` for the
+// model's runs of the answer variants (0: every core).
+std::vector<LegalDevice> judgeLegalDevices(const Case& c, const Plan& plan, const Results& model,
+                                           unsigned threads);
+
+}  // namespace rayspec

@@ -1,0 +1,166 @@
+// A correct driver never fails: a ray through a shared edge answered by each
+// of its legal answers, the shaders run as that answer makes them run
+// (ModelFaults::legal_answer), Passes; a device passing between the edge's
+// triangles (ModelFaults::pass_between_edges) gets a QualityWarning naming
+// the ray (compare_records.cpp, ambiguous_shared.cpp); and the legal devices
+// of `rayspec mutate` (mutate/legal_devices.h) find no false alarm there.
+#include <gtest/gtest.h>
+
+#include "compare/compare_results.h"
+#include "fault/planted_fault.h"
+#include "model_support.h"
+#include "mutate/legal_devices.h"
+
+namespace rayspec {
+namespace {
+
+using model_test::parseInline;
+
+// Two non-opaque triangles share the diagonal x = y of a square at z = 0; a
+// floor lies behind at z = -2. Ray 0 meets the diagonal exactly; ray 1 hits
+// the square clearly. `any_hit` is the hit group's any-hit program.
+std::string edgeCase(const std::string& any_hit) {
+  return R"(rules: [R-WATERTIGHT]
+description: an edge ray with a floor behind
+scene:
+  blas:
+    square:
+      - triangles:
+          vertices: [[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]]
+          indices: [0, 1, 2, 0, 2, 3]
+        flags: []
+    floor:
+      - triangles:
+          vertices: [[-9, -9, -2], [9, -9, -2], [0, 9, -2]]
+        flags: []
+  instances: [{blas: square}, {blas: floor}]
+rays:
+  list:
+    - {origin: [0.25, 0.25, 5], direction: [0, 0, -1]}
+    - {origin: [0.5, -0.5, 5], direction: [0, 0, -1]}
+  tmin: 0.001
+  tmax: 100
+pipeline:
+  miss:
+    - [count: miss, record: {hit: 0}]
+  hit_groups:
+    - any_hit: )" +
+         any_hit + R"(
+      closest_hit:
+        - count: chit
+        - record: [hit, instance_id, primitive_id, hit_t, barycentrics]
+outputs:
+  counters: [miss, chit]
+  per_ray: [hit, instance_id, primitive_id, hit_t, barycentrics]
+)";
+}
+
+Results runAs(const Case& c, uint32_t legal_answer, bool pass_between) {
+  ModelOptions o{ModelTier::Exact, 1};
+  o.faults.legal_answer = legal_answer;
+  o.faults.pass_between_edges = pass_between;
+  Results r = perfectDevice(c, runOnModel(c, derivePlan(c), o));
+  r.backend = "vulkan";
+  return r;
+}
+
+const RayAmbiguity* rayZero(const Results& model) {
+  for (const RayAmbiguity& a : model.ambiguous)
+    if (a.ray == 0) return &a;
+  return nullptr;
+}
+
+TEST(LegalAnswers, EveryLegalAnswerOfAnEdgeRayPassesWithItsOwnT) {
+  // The odd triangle is ignored: the ray may take the even one (t 5) or, by
+  // the odd one, the floor behind (t 7). Each is a legal, watertight answer.
+  const Case c = parseInline(edgeCase("[{if: {odd: primitive_id}, then: [ignore]}]"));
+  const Results model = runOnModel(c, derivePlan(c), ModelOptions{ModelTier::Exact, 1});
+  const RayAmbiguity* a = rayZero(model);
+  ASSERT_NE(a, nullptr);
+  EXPECT_EQ(a->reason, AmbiguityReason::Edge);
+  std::set<uint32_t> instances;
+  for (const Candidate& k : a->candidates)
+    if (k.hit) instances.insert(k.instance);
+  ASSERT_EQ(instances, (std::set<uint32_t>{0, 1})) << "the square and the floor are legal";
+  std::set<uint32_t> taken;
+  for (uint32_t j = 0; j < a->candidates.size(); ++j) {
+    const Results device = runAs(c, j, false);
+    const uint32_t* rec = &device.records[0];
+    taken.insert(rec[findRecordField("instance_id")->offset]);
+    const Verdict v = compareResults(c, derivePlan(c), device, model);
+    EXPECT_EQ(v.status, Status::Pass) << "answer " << j << ": " << v.headline();
+  }
+  EXPECT_EQ(taken, (std::set<uint32_t>{0, 1})) << "each legal answer was taken by a device";
+}
+
+TEST(LegalAnswers, AWrongTOnALegalAnswerStillFails) {
+  const Case c = parseInline(edgeCase("[{if: {odd: primitive_id}, then: [ignore]}]"));
+  const Results model = runOnModel(c, derivePlan(c), ModelOptions{ModelTier::Exact, 1});
+  Results device = runAs(c, 1, false);
+  float* t = reinterpret_cast<float*>(&device.records[findRecordField("hit_t")->offset]);
+  *t += 0.5f;  // between the square's 5 and the floor's 7: no legal hit's t
+  const Verdict v = compareResults(c, derivePlan(c), device, model);
+  EXPECT_EQ(v.status, Status::Fail) << v.headline();
+}
+
+TEST(LegalAnswers, PassingBetweenTheTrianglesOfASharedEdgeIsAQualityWarning) {
+  // Neither triangle is ignored: a watertight device hits one of them, and
+  // the floor is reached only between them.
+  const Case c = parseInline(edgeCase("[{if: {eq: [primitive_id, 7]}, then: [ignore]}]"));
+  const Results model = runOnModel(c, derivePlan(c), ModelOptions{ModelTier::Exact, 1});
+  const RayAmbiguity* a = rayZero(model);
+  ASSERT_NE(a, nullptr);
+  ASSERT_EQ(a->leak_answers.size(), 1u);
+  EXPECT_EQ(a->leak_answers[0].instance, 1u);
+  EXPECT_NEAR(a->leak_answers[0].t, 7.0, 1e-5);
+  const Results device = runAs(c, 0, true);
+  EXPECT_EQ(device.records[findRecordField("instance_id")->offset], 1u);
+  const Verdict v = compareResults(c, derivePlan(c), device, model);
+  EXPECT_EQ(v.status, Status::QualityWarning) << v.headline();
+  bool named = false;
+  for (const Finding& f : v.findings)
+    named = named || (f.rule == "R-WATERTIGHT" && f.status == Status::QualityWarning &&
+                      f.rays == std::vector<uint32_t>{0});
+  EXPECT_TRUE(named) << v.headline();
+}
+
+TEST(LegalDevices, EachLegalVariantOfTheEdgeCasePasses) {
+  for (const char* any_hit : {"[{if: {odd: primitive_id}, then: [ignore]}]",
+                              "[{if: {eq: [primitive_id, 7]}, then: [ignore]}]"}) {
+    const Case c = parseInline(edgeCase(any_hit));
+    const Plan plan = derivePlan(c);
+    const Results model = runOnModel(c, plan, ModelOptions{ModelTier::Exact, 1});
+    std::map<std::string, LegalDevice> by_name;
+    for (const LegalDevice& d : judgeLegalDevices(c, plan, model, 1)) by_name[d.name] = d;
+    for (const auto& [name, d] : by_name)
+      EXPECT_FALSE(d.false_alarm) << any_hit << " " << name << ": " << d.headline;
+    ASSERT_TRUE(by_name.count("answer-1"));
+    EXPECT_TRUE(by_name["answer-1"].applied) << by_name["answer-1"].what;
+    ASSERT_TRUE(by_name.count("tolerance-bound"));
+    EXPECT_TRUE(by_name["tolerance-bound"].applied);
+    EXPECT_EQ(by_name["tolerance-bound"].status, Status::Pass);
+    ASSERT_TRUE(by_name.count("any-hit-runs-twice"));
+    EXPECT_TRUE(by_name["any-hit-runs-twice"].applied) << by_name["any-hit-runs-twice"].what;
+  }
+}
+
+// The judge as it was before this check knew each legal hit's t (issue 43:
+// every answer of an edge ray was taken to have the model's t): the legal
+// devices must catch it. Here the candidates' t are dropped to NaN and the
+// model's own t put in their place, as the old check assumed.
+TEST(LegalDevices, AJudgeThatAssumesOneTPerEdgeRayIsCaught) {
+  const Case c = parseInline(edgeCase("[{if: {odd: primitive_id}, then: [ignore]}]"));
+  const Plan plan = derivePlan(c);
+  Results model = runOnModel(c, plan, ModelOptions{ModelTier::Exact, 1});
+  const float own_t =
+      reinterpret_cast<const float&>(model.records[findRecordField("hit_t")->offset]);
+  for (RayAmbiguity& a : model.ambiguous)
+    for (Candidate& k : a.candidates) k.t = own_t;
+  bool caught = false;
+  for (const LegalDevice& d : judgeLegalDevices(c, plan, model, 1))
+    caught = caught || (d.false_alarm && d.rule == "R-PREC" && d.ray == 0);
+  EXPECT_TRUE(caught) << "a judge holding every legal hit to the model's t fails a legal device";
+}
+
+}  // namespace
+}  // namespace rayspec
