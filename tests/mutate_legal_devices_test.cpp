@@ -124,6 +124,25 @@ TEST(LegalAnswers, PassingBetweenTheTrianglesOfASharedEdgeIsAQualityWarning) {
   EXPECT_TRUE(named) << v.headline();
 }
 
+// With nothing behind the edge, passing between its triangles is a miss: the
+// miss and closest-hit counters move with it, as far as the device's own
+// records show leaks (a QualityWarning), and no further (a Fail).
+TEST(LegalAnswers, CountersMoveWithALeakOnlyAsFarAsTheRecordsShowIt) {
+  std::string text = edgeCase("[{if: {eq: [primitive_id, 7]}, then: [ignore]}]");
+  const std::string floor = "[[-9, -9, -2], [9, -9, -2], [0, 9, -2]]";
+  text.replace(text.find(floor), floor.size(), "[[50, 50, -2], [60, 50, -2], [50, 60, -2]]");
+  const Case c = parseInline(text);
+  const Results model = runOnModel(c, derivePlan(c), ModelOptions{ModelTier::Exact, 1});
+  const Results leaky = runAs(c, 0, true);
+  EXPECT_EQ(leaky.counters.at("miss"), model.counters.at("miss") + 1);
+  const Verdict v = compareResults(c, derivePlan(c), leaky, model);
+  EXPECT_EQ(v.status, Status::QualityWarning) << v.headline();
+  Results counted = perfectDevice(c, model);  // the same counters, no leak in its records
+  counted.backend = "vulkan";
+  counted.counters = leaky.counters;
+  EXPECT_EQ(compareResults(c, derivePlan(c), counted, model).status, Status::Fail);
+}
+
 TEST(LegalDevices, EachLegalVariantOfTheEdgeCasePasses) {
   for (const char* any_hit : {"[{if: {odd: primitive_id}, then: [ignore]}]",
                               "[{if: {eq: [primitive_id, 7]}, then: [ignore]}]"}) {

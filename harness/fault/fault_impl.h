@@ -102,6 +102,8 @@ std::string vertexFormatIgnored(Case& c, ModelOptions& o);
 std::string positionFetchWorldSpace(Case& c, ModelOptions& o);
 std::string localsLostAcrossCalls(Case& c, ModelOptions& o);
 std::string loopTripOffByOne(Case& c, ModelOptions& o);
+std::string bitwiseXorAsOr(Case& c, ModelOptions& o);
+std::string floatBitsConverted(Case& c, ModelOptions& o);
 std::string functionIgnoreLost(Case& c, ModelOptions& o);
 std::string transformBuiltinsSwapped(Case& c, ModelOptions& o);
 std::string wideLaunchTruncated(Case& c, ModelOptions& o);
@@ -124,6 +126,7 @@ std::string shaderRecordDataZeroed(Case& c, ModelOptions& o);
 std::string recordLayoutSwapped(Case& c, ModelOptions& o);
 FaultResult stageInterfaceAccepted(RecordFaultArgs& a);
 std::string reverseOrder(Case& c, ModelOptions& o);
+std::string passBetweenEdges(Case& c, ModelOptions& o);
 std::string buildOrderFirstHit(Case& c, ModelOptions& o);
 // The interval ends (mutate_intervals.cpp).
 std::string closedTriangleInterval(Case& c, ModelOptions& o);

@@ -203,6 +203,10 @@ std::vector<FaultImpl> sbtAndOrderMutations() {
       // Case mutations: candidate order (a model option).
       {"reverse-order", K::CaseMutation, "legal: candidates are found far to near", nullptr,
        reverseOrder},
+      {"pass-between-edges", K::CaseMutation,
+       "rays through a shared edge or vertex pass between its triangles (to what lies behind, or "
+       "a miss)",
+       nullptr, passBetweenEdges},
       {"build-order-first-hit", K::CaseMutation,
        "the answer depends on the order: the first confirmed candidate in build order wins",
        nullptr, buildOrderFirstHit},
@@ -252,6 +256,11 @@ std::vector<FaultImpl> pipelineMutations() {
        nullptr, localsLostAcrossCalls},
       {"loop-trip-off-by-one", K::CaseMutation, "every repeat runs one trip more than its count",
        nullptr, loopTripOffByOne},
+      {"bitwise-xor-as-or", K::CaseMutation, "bit_xor (^) is computed as bit_or (|)", nullptr,
+       bitwiseXorAsOr},
+      {"float-bits-converted", K::CaseMutation,
+       "floatBitsToUint and uintBitsToFloat convert the value instead of keeping its bits", nullptr,
+       floatBitsConverted},
       {"transform-builtins-swapped", K::CaseMutation,
        "gl_ObjectToWorldEXT and gl_WorldToObjectEXT (and their 3x4 forms) each read the other "
        "matrix",

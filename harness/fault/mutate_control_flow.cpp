@@ -4,6 +4,7 @@
 // specialization constants a stage is created with.
 #include "fault/fault_impl.h"
 #include "fault/program_edit.h"
+#include "program/walk_program.h"
 
 namespace rayspec {
 namespace {
@@ -23,7 +24,32 @@ void forEachFunctionStmt(Case& c, const std::function<void(Stmt&)>& visit) {
   });
 }
 
+// Every `from` op renamed `to` (an op of the same argument and result types).
+size_t renameOps(Case& c, const std::string& from, const std::string& to) {
+  size_t n = 0;
+  forEachProgram(c.pipeline, [&](Program& p, Stage) {
+    editExpressions(p, [&](Expr& e) {
+      if (e.kind != Expr::Kind::Op || e.name != from) return;
+      e.name = to;
+      ++n;
+    });
+  });
+  return n;
+}
+
 }  // namespace
+
+// A compiler that emits an inclusive or for an exclusive one.
+std::string bitwiseXorAsOr(Case& c, ModelOptions&) {
+  return describeCount(renameOps(c, "bit_xor", "bit_or"), "bit_xor computed as bit_or");
+}
+
+// A compiler that converts where it should reinterpret: floatBitsToUint as
+// uint(), uintBitsToFloat as float().
+std::string floatBitsConverted(Case& c, ModelOptions&) {
+  return describeCount(renameOps(c, "float_bits", "uint") + renameOps(c, "bits_float", "float"),
+                       "bit casts converted as values");
+}
 
 std::string localsLostAcrossCalls(Case& c, ModelOptions& o) {
   bool locals = false;

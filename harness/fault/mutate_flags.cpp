@@ -54,6 +54,13 @@ std::string reverseOrder(Case&, ModelOptions& o) {
   return "candidates decided far to near";
 }
 
+// R-WATERTIGHT not met: rays through a shared edge or vertex pass between
+// its triangles where that changes the answer (what lies behind, or a miss).
+std::string passBetweenEdges(Case&, ModelOptions& o) {
+  o.faults.pass_between_edges = true;
+  return "rays through shared edges pass between their triangles";
+}
+
 // An order-dependent device: every trace ends at its first confirmed
 // candidate in the order of the build (instance, geometry, primitive).
 std::string buildOrderFirstHit(Case& c, ModelOptions& o) {

@@ -291,10 +291,20 @@ std::string anyHitRunsTwice(Case& c, ModelOptions& o) {
   return describeCount(any_hit ? n : 0, "geometries without no_duplicate_any_hit repeat any-hit");
 }
 
+// R-ISECT-MULTI, legal: an intersection shader runs twice for its primitive.
+// Its second run reports again, and any-hit runs again for that report; a
+// device must not do so on a NO_DUPLICATE_ANY_HIT_INVOCATION geometry
+// (R-AHIT-DUP), so with any such box geometry in the scene a hit group with
+// an any-hit keeps one run.
 std::string intersectionRunsTwice(Case& c, ModelOptions&) {
+  bool no_duplicate_boxes = false;
+  for (const Blas& b : c.scene.blases)
+    for (const Geometry& g : b.geometries)
+      no_duplicate_boxes = no_duplicate_boxes || (g.kind == Geometry::Kind::Aabbs &&
+                                                  (g.flags & kGeometryNoDuplicateAnyHit));
   size_t n = 0;
   for (HitGroup& g : c.pipeline.hit_groups)
-    if (g.intersection && !g.intersection->empty()) {
+    if (g.intersection && !g.intersection->empty() && !(no_duplicate_boxes && g.any_hit)) {
       const Program once = *g.intersection;
       g.intersection->insert(g.intersection->end(), once.begin(), once.end());
       ++n;

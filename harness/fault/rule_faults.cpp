@@ -12,7 +12,7 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-ORDER-UNSPEC", {"build-order-first-hit"}, {"reverse-order"}},
       {"R-INST-XFORM", {"instance-transform-inverted"}, {}},
       {"R-PREC", {"shift-t"}, {}},
-      {"R-WATERTIGHT", {"leak-edge", "double-hit-edge"}, {}, qw},
+      {"R-WATERTIGHT", {"leak-edge", "double-hit-edge", "pass-between-edges"}, {}, qw},
       {"R-AABB-CONS", {"box-entered-from-inside-missed"}, {}},
       {"R-ISECT-MULTI", {}, {"intersection-runs-twice"}},
       {"R-ISECT-CLOSEST", {"closest-box-skipped"}, {}},
@@ -76,7 +76,8 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-LAUNCH-3D", {"launch-depth-lost", "zero-launch-runs", "wide-launch-truncated"}, {}},
       {"R-LIVE-STATE", {"locals-lost-across-calls"}, {}},
       {"R-CONTROL-FLOW",
-       {"loop-trip-off-by-one", "function-ignore-lost", "specialization-ignored"},
+       {"loop-trip-off-by-one", "function-ignore-lost", "specialization-ignored",
+        "bitwise-xor-as-or", "float-bits-converted"},
        {}},
       {"R-UB", {}, {}, fail, "never checked for a result (robustness probe only)"},
   };

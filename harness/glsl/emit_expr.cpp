@@ -126,14 +126,21 @@ std::string op(const Expr& e, const StageContext& ctx) {
     return s + ")";
   };
   static const std::map<std::string, const char*> binary = {
-      {"add", " + "}, {"sub", " - "},  {"mul", " * "}, {"div", " / "}, {"mod", " % "},
-      {"eq", " == "}, {"ne", " != "},  {"lt", " < "},  {"le", " <= "}, {"gt", " > "},
-      {"ge", " >= "}, {"and", " && "}, {"or", " || "}};
+      {"add", " + "}, {"sub", " - "},     {"mul", " * "},    {"div", " / "},
+      {"mod", " % "}, {"eq", " == "},     {"ne", " != "},    {"lt", " < "},
+      {"le", " <= "}, {"gt", " > "},      {"ge", " >= "},    {"and", " && "},
+      {"or", " || "}, {"bit_and", " & "}, {"bit_or", " | "}, {"bit_xor", " ^ "}};
   if (auto it = binary.find(n); it != binary.end() && need(2)) return join(it->second);
   if ((n == "min" || n == "max" || n == "dot") && need(2))
     return n + "(" + a[0] + ", " + a[1] + ")";
   if (n == "not" && need(1)) return "(!" + a[0] + ")";
   if (n == "odd" && need(1)) return "((" + a[0] + " & 1u) != 0u)";
+  if (n == "bit_not" && need(1)) return "(~" + a[0] + ")";
+  // A shift of 32 or more is undefined in GLSL: the amount modulo 32, as the model.
+  if (n == "shl" && need(2)) return "(" + a[0] + " << (" + a[1] + " & 31u))";
+  if (n == "shr" && need(2)) return "(" + a[0] + " >> (" + a[1] + " & 31u))";
+  if (n == "float_bits" && need(1)) return "floatBitsToUint(" + a[0] + ")";
+  if (n == "bits_float" && need(1)) return "uintBitsToFloat(" + a[0] + ")";
   if (n == "even" && need(1)) return "((" + a[0] + " & 1u) == 0u)";
   if ((n == "float" || n == "uint" || n == "length" || n == "normalize") && need(1))
     return n + "(" + a[0] + ")";

@@ -213,6 +213,28 @@ bool Machine::opOnDemand(const CExpr& e, StageEnv& env, Val& r) {
   }
 }
 
+namespace {
+
+// bit_and .. shr on Uint (a shift by b % 32, as the generated GLSL does).
+uint32_t bitwise(OpCode n, uint32_t a, uint32_t b) {
+  switch (n) {
+    case OpCode::BitAnd:
+      return a & b;
+    case OpCode::BitOr:
+      return a | b;
+    case OpCode::BitXor:
+      return a ^ b;
+    case OpCode::BitNot:
+      return ~a;
+    case OpCode::Shl:
+      return a << (b & 31u);
+    default:  // Shr
+      return a >> (b & 31u);
+  }
+}
+
+}  // namespace
+
 Val Machine::op(const CExpr& e, StageEnv& env) {
   const OpCode n = e.op;
   Val r;
@@ -228,6 +250,17 @@ Val Machine::op(const CExpr& e, StageEnv& env) {
     case OpCode::Odd:
       r.b = (a[0].u & 1u) != 0;
       return r;
+    case OpCode::BitAnd:
+    case OpCode::BitOr:
+    case OpCode::BitXor:
+    case OpCode::BitNot:
+    case OpCode::Shl:
+    case OpCode::Shr:
+      return fromUint(bitwise(n, a[0].u, a[1].u));
+    case OpCode::FloatBits:
+      return fromUint(std::bit_cast<uint32_t>(a[0].f[0]));
+    case OpCode::BitsFloat:
+      return fromFloat(std::bit_cast<float>(a[0].u));
     case OpCode::Even:
       r.b = (a[0].u & 1u) == 0;
       return r;

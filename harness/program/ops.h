@@ -28,6 +28,9 @@ struct OpInfo {
 //   min, max              same numeric type
 //   eq, ne, lt, le, gt, ge -> Bool; args the same scalar type
 //   and, or (2+ Bool args), not (1 Bool)
+//   bit_and, bit_or, bit_xor (Uint, Uint -> Uint), bit_not (Uint -> Uint)
+//   shl, shr              Uint, Uint -> Uint: a shifted by b % 32 (logical)
+//   float_bits (Float -> Uint: its bits), bits_float (Uint -> Float: as bits)
 //   odd, even             Uint -> Bool
 //   float (Uint -> Float), uint (Float -> Uint, truncation toward zero)
 //   vec2, vec3, vec4      Float scalars -> vector (a single Float splats)

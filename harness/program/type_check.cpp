@@ -95,6 +95,13 @@ Typing typeMod(Expr& e) {
   return std::nullopt;
 }
 
+Typing typeBitwise(Expr& e) {  // bit_and bit_or bit_xor shl shr
+  if (e.args[0].type != ValueType::Uint || e.args[1].type != ValueType::Uint)
+    return badArguments(e, "need Uint, Uint");
+  e.type = ValueType::Uint;
+  return std::nullopt;
+}
+
 Typing typeMinMax(Expr& e) {
   auto& a = e.args;
   unifyLiterals(a[0], a[1]);
@@ -205,6 +212,14 @@ Typing (*typingRule(const std::string& name))(Expr&) {
       {"and", typeLogic},
       {"or", typeLogic},
       {"not", typeLogic},
+      {"bit_and", typeBitwise},
+      {"bit_or", typeBitwise},
+      {"bit_xor", typeBitwise},
+      {"shl", typeBitwise},
+      {"shr", typeBitwise},
+      {"bit_not", typeUnary<V::Uint, V::Uint>},
+      {"float_bits", typeUnary<V::Float, V::Uint>},
+      {"bits_float", typeUnary<V::Uint, V::Float>},
       {"odd", typeUnary<V::Uint, V::Bool>},
       {"even", typeUnary<V::Uint, V::Bool>},
       {"float", typeUnary<V::Uint, V::Float>},

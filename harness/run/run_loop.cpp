@@ -247,8 +247,9 @@ bool judgeCrashAlone(const CaseRunner& runner, const Case& c, const CaseSlot* sl
   fresh.verdict.add({Status::QualityWarning,
                      "reused-process",
                      "crashes only in a reused process: " + outcome.headline +
-                         " in a worker that ran other cases before; alone, in processes of its "
-                         "own, it ran and was judged",
+                         " in a long-lived worker; alone, in processes of its own, it ran and "
+                         "was judged (a driver that trips over what earlier cases left, or a "
+                         "flake)",
                      {},
                      0});
   fresh.deriveFromVerdict();
