@@ -110,21 +110,18 @@ run() {
   echo "== drivers: here, then inside $ENV_DIR"
   ./build/rayspec devices --icd "$ICD" | grep -E '^ +(\[|driver )' || true
   inside sh -c "cd $WORK/pack && LD_LIBRARY_PATH=lib ./rayspec devices --icd $ICD" | grep -E '^ +(\[|driver )' || true
-  # The cases with inactive instances or primitives (a null instance, mask
-  # 0x00, NaN) in processes of their own inside: Mesa 26.2.6 then reads BVH
-  # slots it never wrote (references/driver-reports/lavapipe-inactive-before-active.md);
-  # in a worker that ran cases before they hold stale data and it crashes,
-  # where a fresh process reads zeros and only loses the object. The crash
-  # moves with what ran before; the loss, which the baseline lists, does not.
-  # accel/* too: their top levels with inactive instances (accel/copy,
-  # accel/update) and their empty BLASes (accel/empty-*) take the same path.
-  # The other cases share workers (57 s against 150 s for a process per case).
+  # Mesa 26.2.6 reads BVH slots it never wrote for inactive instances and
+  # primitives (references/driver-reports/lavapipe-inactive-before-active.md):
+  # in a worker that ran cases before they may hold stale data and it crashes,
+  # where a fresh process reads zeros and only loses the object. The run
+  # re-runs a case that crashed in a reused worker alone, judges it by that
+  # run and reports "crashes only in a reused process" beside it (README,
+  # Isolation), so no case needs a process of its own here.
   echo "== the run inside (device side only; exit 3 is the run-only build's)"
   local rc=0
   inside sh -c 'icd=$1; shift; cd "$0/pack" && RAYSPEC_CACHE_DIR="$0/pack/cache" MESA_SHADER_CACHE_DIR="$0/mesa-cache" LD_LIBRARY_PATH=lib \
     ./rayspec run --cases cases --rules spec-rules.yaml --icd "$icd" --strict-validation \
-      --process-per-case-for "inactive/*" --process-per-case-for "culling/mask-combinations/*" \
-      --process-per-case-for "accel/*" --out "$0/out" "$@" >"$0/run.log" 2>&1' \
+      --out "$0/out" "$@" >"$0/run.log" 2>&1' \
     "$WORK" "$ICD" "${args[@]}" || rc=$?
   tail -n 5 "$ENV_DIR$WORK/run.log"
   # 1: a case failed or crashed inside (judged below, against the baseline);

@@ -258,6 +258,8 @@ std::vector<FaultImpl> pipelineMutations() {
        nullptr, loopTripOffByOne},
       {"bitwise-xor-as-or", K::CaseMutation, "bit_xor (^) is computed as bit_or (|)", nullptr,
        bitwiseXorAsOr},
+      {"cross-operands-swapped", K::CaseMutation, "cross(a, b) is computed as cross(b, a)", nullptr,
+       crossOperandsSwapped},
       {"float-bits-converted", K::CaseMutation,
        "floatBitsToUint and uintBitsToFloat convert the value instead of keeping its bits", nullptr,
        floatBitsConverted},

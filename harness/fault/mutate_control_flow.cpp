@@ -44,6 +44,19 @@ std::string bitwiseXorAsOr(Case& c, ModelOptions&) {
   return describeCount(renameOps(c, "bit_xor", "bit_or"), "bit_xor computed as bit_or");
 }
 
+// A compiler that swaps the operands of cross(): every product's sign flips.
+std::string crossOperandsSwapped(Case& c, ModelOptions&) {
+  size_t n = 0;
+  forEachProgram(c.pipeline, [&](Program& p, Stage) {
+    editExpressions(p, [&](Expr& e) {
+      if (e.kind != Expr::Kind::Op || e.name != "cross" || e.args.size() != 2) return;
+      std::swap(e.args[0], e.args[1]);
+      ++n;
+    });
+  });
+  return describeCount(n, "cross products with their operands swapped");
+}
+
 // A compiler that converts where it should reinterpret: floatBitsToUint as
 // uint(), uintBitsToFloat as float().
 std::string floatBitsConverted(Case& c, ModelOptions&) {

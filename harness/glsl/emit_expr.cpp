@@ -131,7 +131,7 @@ std::string op(const Expr& e, const StageContext& ctx) {
       {"le", " <= "}, {"gt", " > "},      {"ge", " >= "},    {"and", " && "},
       {"or", " || "}, {"bit_and", " & "}, {"bit_or", " | "}, {"bit_xor", " ^ "}};
   if (auto it = binary.find(n); it != binary.end() && need(2)) return join(it->second);
-  if ((n == "min" || n == "max" || n == "dot") && need(2))
+  if ((n == "min" || n == "max" || n == "dot" || n == "cross") && need(2))
     return n + "(" + a[0] + ", " + a[1] + ")";
   if (n == "not" && need(1)) return "(!" + a[0] + ")";
   if (n == "odd" && need(1)) return "((" + a[0] + " & 1u) != 0u)";

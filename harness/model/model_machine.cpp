@@ -215,22 +215,36 @@ bool Machine::opOnDemand(const CExpr& e, StageEnv& env, Val& r) {
 
 namespace {
 
-// bit_and .. shr on Uint (a shift by b % 32, as the generated GLSL does).
-uint32_t bitwise(OpCode n, uint32_t a, uint32_t b) {
+// bit_and .. shr on Uint (a shift by b % 32, as the generated GLSL does),
+// and the bit casts.
+Val bitOp(OpCode n, const Val* a) {
+  const uint32_t x = a[0].u, y = a[1].u;
   switch (n) {
     case OpCode::BitAnd:
-      return a & b;
+      return fromUint(x & y);
     case OpCode::BitOr:
-      return a | b;
+      return fromUint(x | y);
     case OpCode::BitXor:
-      return a ^ b;
+      return fromUint(x ^ y);
     case OpCode::BitNot:
-      return ~a;
+      return fromUint(~x);
     case OpCode::Shl:
-      return a << (b & 31u);
-    default:  // Shr
-      return a >> (b & 31u);
+      return fromUint(x << (y & 31u));
+    case OpCode::Shr:
+      return fromUint(x >> (y & 31u));
+    case OpCode::FloatBits:
+      return fromUint(std::bit_cast<uint32_t>(a[0].f[0]));
+    default:  // BitsFloat
+      return fromFloat(std::bit_cast<float>(x));
   }
+}
+
+Val crossProduct(const Val* a) {
+  Val r;
+  r.f = {a[0].f[1] * a[1].f[2] - a[0].f[2] * a[1].f[1],
+         a[0].f[2] * a[1].f[0] - a[0].f[0] * a[1].f[2],
+         a[0].f[0] * a[1].f[1] - a[0].f[1] * a[1].f[0], 0.0f};
+  return r;
 }
 
 }  // namespace
@@ -256,11 +270,9 @@ Val Machine::op(const CExpr& e, StageEnv& env) {
     case OpCode::BitNot:
     case OpCode::Shl:
     case OpCode::Shr:
-      return fromUint(bitwise(n, a[0].u, a[1].u));
     case OpCode::FloatBits:
-      return fromUint(std::bit_cast<uint32_t>(a[0].f[0]));
     case OpCode::BitsFloat:
-      return fromFloat(std::bit_cast<float>(a[0].u));
+      return bitOp(n, a);
     case OpCode::Even:
       r.b = (a[0].u & 1u) == 0;
       return r;
@@ -292,6 +304,8 @@ Val Machine::op(const CExpr& e, StageEnv& env) {
       return fromFloat(a[0].f[2]);
     case OpCode::W:
       return fromFloat(a[0].f[3]);
+    case OpCode::Cross:
+      return crossProduct(a);
     case OpCode::Dot:
     case OpCode::Length:
     case OpCode::Normalize:

@@ -123,6 +123,7 @@ enum class OpCode : uint8_t {
   Z,
   W,
   Dot,
+  Cross,
   Length,
   Normalize,
   Eq,

@@ -54,6 +54,7 @@ const std::vector<OpInfo>& ops() {
       {"z", 1, 1, kAllStages, "third component of a vector -> Float"},
       {"w", 1, 1, kAllStages, "fourth component of a vector -> Float"},
       {"dot", 2, 2, kAllStages, "dot product of two vectors of the same size -> Float"},
+      {"cross", 2, 2, kAllStages, "cross product of two Vec3 -> Vec3"},
       {"length", 1, 1, kAllStages, "length of a vector -> Float"},
       {"normalize", 1, 1, kAllStages, "vector / its length"},
       {"sphere_hit", 0, 0, kIsect,

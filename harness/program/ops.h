@@ -35,7 +35,7 @@ struct OpInfo {
 //   float (Uint -> Float), uint (Float -> Uint, truncation toward zero)
 //   vec2, vec3, vec4      Float scalars -> vector (a single Float splats)
 //   x, y, z, w            component of a vector -> Float
-//   dot (2 same vectors -> Float), length (vector -> Float),
+//   dot (2 same vectors -> Float), cross (2 Vec3 -> Vec3), length (vector -> Float),
 //   normalize (vector -> same)
 //   sphere_hit (no args -> Bool), sphere_near, sphere_far (no args -> Float):
 //       intersection only. The sphere inscribed in the primitive's AABB

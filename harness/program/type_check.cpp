@@ -165,6 +165,13 @@ Typing typeDot(Expr& e) {
   return std::nullopt;
 }
 
+Typing typeCross(Expr& e) {
+  if (e.args[0].type != ValueType::Vec3 || e.args[1].type != ValueType::Vec3)
+    return badArguments(e, "need two Vec3");
+  e.type = ValueType::Vec3;
+  return std::nullopt;
+}
+
 Typing typeLengthNormalize(Expr& e) {
   if (!isVector(e.args[0].type)) return badArguments(e, "need a vector");
   e.type = e.name == "length" ? ValueType::Float : e.args[0].type;
@@ -233,6 +240,7 @@ Typing (*typingRule(const std::string& name))(Expr&) {
       {"z", typeComponent},
       {"w", typeComponent},
       {"dot", typeDot},
+      {"cross", typeCross},
       {"length", typeLengthNormalize},
       {"normalize", typeLengthNormalize},
       {"sphere_hit", typeFixed<V::Bool>},
