@@ -6,6 +6,7 @@
 // a device's crash.
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <random>
 #include <set>
 
@@ -166,14 +167,38 @@ std::vector<std::string> operatorForms(Stage stage, std::vector<std::string>* sk
   return out;
 }
 
-std::vector<const GeneratedShader*> stagesOf(const GeneratedPipeline& g) {
-  std::vector<const GeneratedShader*> out{&g.raygen};
-  for (const GeneratedShader& s : g.miss) out.push_back(&s);
-  for (const GeneratedGroup& h : g.hit_groups)
-    for (const auto* s : {&h.closest_hit, &h.any_hit, &h.intersection})
-      if (*s) out.push_back(&**s);
-  for (const GeneratedShader& s : g.callables) out.push_back(&s);
-  return out;
+// Each stage's statements in a random order (`statement` makes the i-th of
+// list), `rounds` times; every distinct module compiled and validated. The
+// number of modules; a failure names the round, stage and message.
+template <typename T>
+size_t compileShuffled(std::map<Stage, std::vector<T>>& lists, int rounds, uint32_t seed,
+                       const std::function<std::string(const T&, size_t)>& statement) {
+  std::mt19937 rng(seed);
+  std::set<std::string> seen;
+  size_t modules = 0;
+  for (int round = 0; round < rounds; ++round) {
+    std::map<Stage, std::string> programs;
+    for (auto& [stage, list] : lists) {
+      std::shuffle(list.begin(), list.end(), rng);
+      std::string text;
+      for (size_t i = 0; i < list.size(); ++i) text += (i ? ", " : "") + statement(list[i], i);
+      programs[stage] = text.empty() ? "{count: c}" : text;
+    }
+    const std::string yaml = caseText(programs);
+    const ParseResult p = parseCaseText(yaml, "gen/random.yaml", "gen/random");
+    if (!p.value) {
+      ADD_FAILURE() << p.errors.front().format() << "\n" << yaml;
+      return modules;
+    }
+    const GeneratedPipeline g = generateGlsl(*p.value, derivePlan(*p.value));
+    for (const GeneratedShader* sh : everyStage(g)) {
+      if (!seen.insert(sh->glsl).second) continue;
+      ++modules;
+      const SpirvResult r = compileGlsl(sh->glsl, sh->stage);
+      EXPECT_EQ(r.error, "") << "round " << round << ", " << sh->name;
+    }
+  }
+  return modules;
 }
 
 TEST(GeneratedStages, EveryBuiltinInRandomOrderIsValidSpirv) {
@@ -187,31 +212,9 @@ TEST(GeneratedStages, EveryBuiltinInRandomOrderIsValidSpirv) {
   // Vocabulary built-ins outside the skeleton: payload, call data and
   // attribute words, vertex positions and the like.
   EXPECT_GT(total, 120u) << "skipped: " << ::testing::PrintToString(skipped);
-  std::mt19937 rng(20261127);
-  std::set<std::string> seen;
-  size_t modules = 0, invalid = 0;
-  for (int round = 0; round < 24; ++round) {
-    std::map<Stage, std::string> programs;
-    for (auto& [stage, list] : reads) {
-      std::shuffle(list.begin(), list.end(), rng);
-      std::string text;
-      for (size_t i = 0; i < list.size(); ++i) text += (i ? ", " : "") + readStatement(*list[i], i);
-      programs[stage] = text.empty() ? "{count: c}" : text;
-    }
-    const std::string yaml = caseText(programs);
-    const ParseResult p = parseCaseText(yaml, "gen/random.yaml", "gen/random");
-    ASSERT_TRUE(p.value) << p.errors.front().format() << "\n" << yaml;
-    const GeneratedPipeline g = generateGlsl(*p.value, derivePlan(*p.value));
-    for (const GeneratedShader* sh : stagesOf(g)) {
-      if (!seen.insert(sh->glsl).second) continue;
-      ++modules;
-      const SpirvResult r = compileGlsl(sh->glsl, sh->stage);
-      if (r.error.empty()) continue;
-      ++invalid;
-      ADD_FAILURE() << "round " << round << ", " << sh->name << ":\n" << r.error;
-    }
-  }
-  EXPECT_EQ(invalid, 0u);
+  const size_t modules = compileShuffled<const BuiltinInfo*>(
+      reads, 24, 20261127,
+      [](const BuiltinInfo* const& b, size_t i) { return readStatement(*b, i); });
   EXPECT_GT(modules, 100u);
 }
 
@@ -224,32 +227,10 @@ TEST(GeneratedStages, EveryOperatorFormInRandomOrderIsValidSpirv) {
     total += forms[s.stage].size();
   }
   EXPECT_GT(total, 300u) << "skipped: " << ::testing::PrintToString(skipped);
-  std::mt19937 rng(1127);
-  std::set<std::string> seen;
-  size_t modules = 0, invalid = 0;
-  for (int round = 0; round < 6; ++round) {
-    std::map<Stage, std::string> programs;
-    for (auto& [stage, list] : forms) {
-      std::shuffle(list.begin(), list.end(), rng);
-      std::string text;
-      for (size_t i = 0; i < list.size(); ++i)
-        text +=
-            (i ? ", " : "") + std::string("{let: {o") + std::to_string(i) + ": " + list[i] + "}}";
-      programs[stage] = text.empty() ? "{count: c}" : text;
-    }
-    const ParseResult p = parseCaseText(caseText(programs), "gen/ops.yaml", "gen/ops");
-    ASSERT_TRUE(p.value) << p.errors.front().format();
-    const GeneratedPipeline g = generateGlsl(*p.value, derivePlan(*p.value));
-    for (const GeneratedShader* sh : stagesOf(g)) {
-      if (!seen.insert(sh->glsl).second) continue;
-      ++modules;
-      const SpirvResult r = compileGlsl(sh->glsl, sh->stage);
-      if (r.error.empty()) continue;
-      ++invalid;
-      ADD_FAILURE() << "round " << round << ", " << sh->name << ":\n" << r.error;
-    }
-  }
-  EXPECT_EQ(invalid, 0u);
+  const size_t modules =
+      compileShuffled<std::string>(forms, 6, 1127, [](const std::string& form, size_t i) {
+        return "{let: {o" + std::to_string(i) + ": " + form + "}}";
+      });
   EXPECT_GT(modules, 30u);
 }
 

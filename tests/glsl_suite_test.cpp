@@ -15,16 +15,6 @@
 namespace rayspec {
 namespace {
 
-std::vector<const GeneratedShader*> stagesOf(const GeneratedPipeline& g) {
-  std::vector<const GeneratedShader*> out{&g.raygen};
-  for (const GeneratedShader& s : g.miss) out.push_back(&s);
-  for (const GeneratedGroup& h : g.hit_groups)
-    for (const auto* s : {&h.closest_hit, &h.any_hit, &h.intersection})
-      if (*s) out.push_back(&**s);
-  for (const GeneratedShader& s : g.callables) out.push_back(&s);
-  return out;
-}
-
 TEST(GenerateGlslSuite, EveryStageOfEveryCaseIsValidSpirv) {
   std::set<std::string> seen;  // GLSL texts already compiled (sweeps repeat stages)
   size_t cases = 0, modules = 0;
@@ -33,7 +23,7 @@ TEST(GenerateGlslSuite, EveryStageOfEveryCaseIsValidSpirv) {
     if (!parsed.value) continue;  // the case's own test reports its errors
     ++cases;
     const GeneratedPipeline g = generateGlsl(*parsed.value, derivePlan(*parsed.value));
-    for (const GeneratedShader* sh : stagesOf(g)) {
+    for (const GeneratedShader* sh : everyStage(g)) {
       if (!seen.insert(std::to_string(int(sh->stage)) + sh->glsl).second) continue;
       ++modules;
       SpirvResult r = compileGlsl(sh->glsl, sh->stage);

@@ -42,4 +42,15 @@ GeneratedPipeline generateGlsl(const Case& c, const Plan& plan) {
   return g;
 }
 
+std::vector<const GeneratedShader*> everyStage(const GeneratedPipeline& g) {
+  std::vector<const GeneratedShader*> out{&g.raygen};
+  for (const auto* list : {&g.other_raygens, &g.miss})
+    for (const GeneratedShader& s : *list) out.push_back(&s);
+  for (const GeneratedGroup& h : g.hit_groups)
+    for (const auto* s : {&h.closest_hit, &h.any_hit, &h.intersection})
+      if (*s) out.push_back(&**s);
+  for (const GeneratedShader& s : g.callables) out.push_back(&s);
+  return out;
+}
+
 }  // namespace rayspec

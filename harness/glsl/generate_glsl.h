@@ -37,4 +37,8 @@ struct GeneratedPipeline {
 
 GeneratedPipeline generateGlsl(const Case& c, const Plan& plan);
 
+// Every stage of g: raygen, the other raygens, miss, each hit group's
+// closest-hit, any-hit and intersection, callables.
+std::vector<const GeneratedShader*> everyStage(const GeneratedPipeline& g);
+
 }  // namespace rayspec

@@ -7,13 +7,8 @@ namespace rayspec {
 namespace {
 
 const GeneratedShader* shaderNamed(const GeneratedPipeline& g, const std::string& name) {
-  if (g.raygen.name == name) return &g.raygen;
-  for (const auto* list : {&g.other_raygens, &g.miss, &g.callables})
-    for (const GeneratedShader& s : *list)
-      if (s.name == name) return &s;
-  for (const GeneratedGroup& h : g.hit_groups)
-    for (const auto* s : {&h.closest_hit, &h.any_hit, &h.intersection})
-      if (*s && (*s)->name == name) return &**s;
+  for (const GeneratedShader* s : everyStage(g))
+    if (s->name == name) return s;
   return nullptr;
 }
 
