@@ -260,6 +260,8 @@ std::vector<FaultImpl> pipelineMutations() {
        bitwiseXorAsOr},
       {"cross-operands-swapped", K::CaseMutation, "cross(a, b) is computed as cross(b, a)", nullptr,
        crossOperandsSwapped},
+      {"matrix-transposed", K::CaseMutation, "a matrix times a vector uses the transpose", nullptr,
+       matrixTransposed},
       {"float-bits-converted", K::CaseMutation,
        "floatBitsToUint and uintBitsToFloat convert the value instead of keeping its bits", nullptr,
        floatBitsConverted},

@@ -44,6 +44,12 @@ std::string bitwiseXorAsOr(Case& c, ModelOptions&) {
   return describeCount(renameOps(c, "bit_xor", "bit_or"), "bit_xor computed as bit_or");
 }
 
+// A compiler that drops a transpose: mat3_mul computed as mat3_tmul.
+std::string matrixTransposed(Case& c, ModelOptions&) {
+  return describeCount(renameOps(c, "mat3_mul", "mat3_tmul"),
+                       "matrix products computed with the transpose");
+}
+
 // A compiler that swaps the operands of cross(): every product's sign flips.
 std::string crossOperandsSwapped(Case& c, ModelOptions&) {
   size_t n = 0;

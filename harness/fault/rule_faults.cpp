@@ -77,7 +77,7 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-LIVE-STATE", {"locals-lost-across-calls"}, {}},
       {"R-CONTROL-FLOW",
        {"loop-trip-off-by-one", "function-ignore-lost", "specialization-ignored",
-        "bitwise-xor-as-or", "float-bits-converted", "cross-operands-swapped"},
+        "bitwise-xor-as-or", "float-bits-converted", "cross-operands-swapped", "matrix-transposed"},
        {}},
       {"R-UB", {}, {}, fail, "never checked for a result (robustness probe only)"},
   };

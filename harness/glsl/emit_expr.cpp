@@ -136,6 +136,10 @@ std::string op(const Expr& e, const StageContext& ctx) {
   if (n == "not" && need(1)) return "(!" + a[0] + ")";
   if (n == "odd" && need(1)) return "((" + a[0] + " & 1u) != 0u)";
   if (n == "bit_not" && need(1)) return "(~" + a[0] + ")";
+  if (n == "mat3_mul" && need(4))
+    return "(mat3(" + a[0] + ", " + a[1] + ", " + a[2] + ") * " + a[3] + ")";
+  if (n == "mat3_tmul" && need(4))
+    return "(transpose(mat3(" + a[0] + ", " + a[1] + ", " + a[2] + ")) * " + a[3] + ")";
   // A shift of 32 or more is undefined in GLSL: the amount modulo 32, as the model.
   if (n == "shl" && need(2)) return "(" + a[0] + " << (" + a[1] + " & 31u))";
   if (n == "shr" && need(2)) return "(" + a[0] + " >> (" + a[1] + " & 31u))";

@@ -239,6 +239,16 @@ Val bitOp(OpCode n, const Val* a) {
   }
 }
 
+// mat3_mul: c0 v.x + c1 v.y + c2 v.z; mat3_tmul: (c0.v, c1.v, c2.v).
+Val matrixTimes(OpCode n, const Val* a) {
+  const auto& v = a[3].f;
+  Val r;
+  for (int k = 0; k < 3; ++k)
+    r.f[k] = n == OpCode::Mat3Mul ? a[0].f[k] * v[0] + a[1].f[k] * v[1] + a[2].f[k] * v[2]
+                                  : a[k].f[0] * v[0] + a[k].f[1] * v[1] + a[k].f[2] * v[2];
+  return r;
+}
+
 Val crossProduct(const Val* a) {
   Val r;
   r.f = {a[0].f[1] * a[1].f[2] - a[0].f[2] * a[1].f[1],
@@ -306,6 +316,9 @@ Val Machine::op(const CExpr& e, StageEnv& env) {
       return fromFloat(a[0].f[3]);
     case OpCode::Cross:
       return crossProduct(a);
+    case OpCode::Mat3Mul:
+    case OpCode::Mat3TMul:
+      return matrixTimes(n, a);
     case OpCode::Dot:
     case OpCode::Length:
     case OpCode::Normalize:

@@ -124,6 +124,8 @@ enum class OpCode : uint8_t {
   W,
   Dot,
   Cross,
+  Mat3Mul,
+  Mat3TMul,
   Length,
   Normalize,
   Eq,

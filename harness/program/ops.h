@@ -36,6 +36,8 @@ struct OpInfo {
 //   vec2, vec3, vec4      Float scalars -> vector (a single Float splats)
 //   x, y, z, w            component of a vector -> Float
 //   dot (2 same vectors -> Float), cross (2 Vec3 -> Vec3), length (vector -> Float),
+//   mat3_mul, mat3_tmul (4 Vec3: columns c0 c1 c2 of a 3x3 matrix and v ->
+//       Vec3): the matrix times v, and its transpose times v
 //   normalize (vector -> same)
 //   sphere_hit (no args -> Bool), sphere_near, sphere_far (no args -> Float):
 //       intersection only. The sphere inscribed in the primitive's AABB

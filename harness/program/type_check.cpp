@@ -165,9 +165,9 @@ Typing typeDot(Expr& e) {
   return std::nullopt;
 }
 
-Typing typeCross(Expr& e) {
-  if (e.args[0].type != ValueType::Vec3 || e.args[1].type != ValueType::Vec3)
-    return badArguments(e, "need two Vec3");
+Typing typeVec3Only(Expr& e) {  // cross, mat3_mul, mat3_tmul
+  for (const Expr& a : e.args)
+    if (a.type != ValueType::Vec3) return badArguments(e, "need Vec3 arguments");
   e.type = ValueType::Vec3;
   return std::nullopt;
 }
@@ -240,7 +240,9 @@ Typing (*typingRule(const std::string& name))(Expr&) {
       {"z", typeComponent},
       {"w", typeComponent},
       {"dot", typeDot},
-      {"cross", typeCross},
+      {"cross", typeVec3Only},
+      {"mat3_mul", typeVec3Only},
+      {"mat3_tmul", typeVec3Only},
       {"length", typeLengthNormalize},
       {"normalize", typeLengthNormalize},
       {"sphere_hit", typeFixed<V::Bool>},
