@@ -1,5 +1,6 @@
 #include "results/record_layout.h"
 
+#include <set>
 #include <string_view>
 #include <unordered_map>
 
@@ -41,6 +42,14 @@ std::vector<RecordField> buildFields() {
       {"value5", FieldType::Uint, 1, false},
       {"value6", FieldType::Uint, 1, false},
       {"value7", FieldType::Uint, 1, false},
+      // Free fields beyond value7 and color2 (issue 43: loops folded their
+      // results into single numbers). The written mask is one word: every
+      // field a case writes has an index below 32 (record_layout.h).
+      {"value8", FieldType::Uint, 1, false},
+      {"value9", FieldType::Uint, 1, false},
+      {"value10", FieldType::Uint, 1, false},
+      {"value11", FieldType::Uint, 1, false},
+      {"color3", FieldType::Float, 4, false},
       {"raygen_runs", FieldType::Uint, 1, true},
       {"miss_runs", FieldType::Uint, 1, true},
       {"closest_hit_runs", FieldType::Uint, 1, true},
@@ -100,8 +109,10 @@ bool written(const uint32_t* rec, int field_index) {
 }
 
 bool isFreeField(std::string_view name) {
-  return name == "color" || name == "color2" || name == "value" ||
-         (name.size() == 6 && name.substr(0, 5) == "value" && name[5] >= '1' && name[5] <= '7');
+  static const std::set<std::string_view> kFree = {
+      "value",  "value1", "value2",  "value3",  "value4", "value5", "value6", "value7",
+      "value8", "value9", "value10", "value11", "color",  "color2", "color3"};
+  return kFree.count(name) > 0;
 }
 
 }  // namespace rayspec

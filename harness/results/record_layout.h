@@ -32,8 +32,9 @@ using FieldMask = uint64_t;
 constexpr FieldMask fieldBit(uint32_t index) {
   return FieldMask{1} << index;
 }
-// A field no built-in fills: it holds what a program computes (color, color2,
-// value, value1 .. value7).
+// A field no built-in fills: it holds what a program computes (value,
+// value1 .. value11, color, color2, color3). Every field a case may write has
+// an index below 32: its bit in the written mask (word kRecordWrittenMaskWord).
 bool isFreeField(std::string_view name);
 uint32_t recordWords();  // words per ray
 
