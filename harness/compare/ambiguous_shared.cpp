@@ -104,16 +104,9 @@ bool tOfALegalHit(const RayAmbiguity& a, const uint32_t* d, float t_bound) {
   tol.abs = std::max(tol.abs, static_cast<double>(t_bound));
   const float t = asFloat(d[findRecordField("hit_t")->offset]);
   for (const auto* list : {&a.candidates, &a.leak_answers})
-    for (const Candidate& k : *list) {
-      if (!k.hit) continue;
-      bool fits = true;
-      for (const char* f : {"primitive_id", "instance_id", "geometry_index"}) {
-        const int i = recordFieldIndex(f);
-        const uint32_t want = f[0] == 'p' ? k.primitive : f[0] == 'i' ? k.instance : k.geometry;
-        fits = fits && (!written(d, i) || fieldWord(d, f) == want);
-      }
-      if (fits && (!std::isfinite(k.t) || tol.matches(t, static_cast<float>(k.t)))) return true;
-    }
+    for (const Candidate& k : *list)
+      if (hitFits(d, k) && (!std::isfinite(k.t) || tol.matches(t, static_cast<float>(k.t))))
+        return true;
   return false;
 }
 

@@ -98,12 +98,7 @@ bool tookLeakAnswer(const RayAmbiguity& a, const uint32_t* rec) {
   const bool hit = fieldWord(rec, "closest_hit_runs") > 0 ||
                    (written(rec, recordFieldIndex("hit")) && fieldWord(rec, "hit") == 1);
   auto fits = [&](const Candidate& k) {
-    if (!k.hit) return !hit;
-    for (const char* f : {"primitive_id", "instance_id", "geometry_index"}) {
-      const uint32_t want = f[0] == 'p' ? k.primitive : f[0] == 'i' ? k.instance : k.geometry;
-      if (written(rec, recordFieldIndex(f)) && fieldWord(rec, f) != want) return false;
-    }
-    return hit;
+    return k.hit ? hit && hitFits(rec, k) : !hit;
   };
   return std::any_of(a.leak_answers.begin(), a.leak_answers.end(), fits) &&
          std::none_of(a.candidates.begin(), a.candidates.end(), fits);

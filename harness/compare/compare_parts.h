@@ -46,6 +46,9 @@ void compareEqualImages(const Plan& plan, const Results& device, const Results& 
 // Words of one per-ray record (record_words.cpp).
 float asFloat(uint32_t w);
 uint32_t fieldWord(const uint32_t* rec, const char* name);
+// The record's hit is the legal (or leak) answer k: k is a hit, and every
+// identity field the record wrote (primitive, instance, geometry) is k's.
+bool hitFits(const uint32_t* rec, const Candidate& k);
 // The model's wider t bound of a ray (TBound), 0 when none.
 float tBound(const std::map<uint32_t, float>& t_bounds, uint32_t ray);
 // One field of one ray as the model has it: written alike, and equal (floats

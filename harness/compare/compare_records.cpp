@@ -34,15 +34,6 @@ std::string fieldRule(const std::string& field) {
   return it == rules.end() ? "R-BUILTIN" : it->second;
 }
 
-// The device's hit fits the answer k: its identity fields, where written.
-bool hitIs(const uint32_t* rec, const Candidate& k) {
-  const int prim = recordFieldIndex("primitive_id"), inst = recordFieldIndex("instance_id"),
-            geom = recordFieldIndex("geometry_index");
-  return k.hit && (!written(rec, prim) || fieldWord(rec, "primitive_id") == k.primitive) &&
-         (!written(rec, inst) || fieldWord(rec, "instance_id") == k.instance) &&
-         (!written(rec, geom) || fieldWord(rec, "geometry_index") == k.geometry);
-}
-
 // The device's answer for an ambiguous ray, checked against the legal set.
 // A hit only a device passing between the triangles of a shared edge or
 // vertex reaches goes to `passed` (R-WATERTIGHT, a "should").
@@ -61,7 +52,7 @@ void checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
   bool legal = false, miss_legal = false;
   for (const Candidate& k : a.candidates) {
     miss_legal = miss_legal || !k.hit;
-    legal = legal || (device_hit && hitIs(rec, k));
+    legal = legal || (device_hit && hitFits(rec, k));
   }
   if (!device_hit) {
     // A miss where triangles share the crossed edge or close a fan around the
@@ -92,7 +83,7 @@ void checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
     return;
   }
   const bool behind_edge = std::any_of(a.leak_answers.begin(), a.leak_answers.end(),
-                                       [&](const Candidate& k) { return hitIs(rec, k); });
+                                       [&](const Candidate& k) { return hitFits(rec, k); });
   if (!legal && behind_edge) {
     passed.addRay(a.ray);
   } else if (!legal) {

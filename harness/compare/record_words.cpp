@@ -17,6 +17,14 @@ uint32_t fieldWord(const uint32_t* rec, const char* name) {
   return rec[findRecordField(name)->offset];
 }
 
+bool hitFits(const uint32_t* rec, const Candidate& k) {
+  const auto fits = [&](const char* field, uint32_t want) {
+    return !written(rec, recordFieldIndex(field)) || fieldWord(rec, field) == want;
+  };
+  return k.hit && fits("primitive_id", k.primitive) && fits("instance_id", k.instance) &&
+         fits("geometry_index", k.geometry);
+}
+
 float tBound(const std::map<uint32_t, float>& t_bounds, uint32_t ray) {
   const auto b = t_bounds.find(ray);
   return b == t_bounds.end() ? 0.0f : b->second;
