@@ -22,60 +22,63 @@ struct Variant {
   std::string what;
 };
 
-// A legal device made by the model, with whether it differs from the model.
-Variant madeBy(const std::string& name, Results device, const Case& c, const Results& model,
+// A legal device made by the model, with whether it differs from `base`
+// (the model's own answers as a device: perfectDevice).
+Variant madeBy(const std::string& name, Results device, const Results& base,
                const std::string& what) {
   Variant v{name, std::move(device), false, what};
   if (!v.device.ok()) {
     v.what = "the model does not run so: " + v.device.statusText();
     return v;
   }
-  v.applied = !sameOutput(v.device, perfectDevice(c, model));
+  v.applied = !sameOutput(v.device, base);
   if (!v.applied) v.what = "changes nothing here: " + what;
   return v;
 }
 
 // answer-<j>: every ambiguous ray takes its j-th legal answer.
 std::vector<Variant> answerVariants(const Case& c, const Plan& plan, const Results& model,
-                                    unsigned threads) {
+                                    const Results& base, unsigned threads) {
   size_t answers = 0;
   for (const RayAmbiguity& a : model.ambiguous) answers = std::max(answers, a.candidates.size());
   std::vector<Variant> out;
   for (uint32_t j = 1; j < std::min<size_t>(answers, kMaxAnswers); ++j)
-    out.push_back(madeBy("answer-" + std::to_string(j), legalAnswerDevice(c, plan, j, threads), c,
-                         model,
+    out.push_back(madeBy("answer-" + std::to_string(j), legalAnswerDevice(c, plan, j, threads),
+                         base,
                          "every ambiguous ray takes legal answer " + std::to_string(j) +
                              " (modulo its number of answers)"));
   return out;
 }
 
-Variant passBetween(const Case& c, const Plan& plan, const Results& model, unsigned threads) {
+Variant passBetween(const Case& c, const Plan& plan, const Results& model, const Results& base,
+                    unsigned threads) {
   const bool any = std::any_of(model.ambiguous.begin(), model.ambiguous.end(),
                                [](const RayAmbiguity& a) { return !a.leak_answers.empty(); });
   if (!any)
     return {"pass-between-edges", {}, false, "no ray where passing between changes the answer"};
-  return madeBy("pass-between-edges", passBetweenEdgesDevice(c, plan, threads), c, model,
+  return madeBy("pass-between-edges", passBetweenEdgesDevice(c, plan, threads), base,
                 "rays through a shared edge or vertex pass between its triangles");
 }
 
 // Each planted fault the catalog calls legal, on the model's own answer.
-std::vector<Variant> legalFaults(const Case& c, const Plan& plan, const Results& model) {
+std::vector<Variant> legalFaults(const Case& c, const Plan& plan, const Results& model,
+                                 const Results& base) {
   std::vector<Variant> out;
   for (const FaultInfo& f : faultTable()) {
     if (f.breaks.rfind("legal:", 0) != 0) continue;
-    Variant v{f.name, perfectDevice(c, model), false, f.breaks};
+    Variant v{f.name, base, false, f.breaks};
     const FaultResult r = plantFault(f.name, c, plan, v.device, model);
-    v.applied = r.applied && !sameOutput(v.device, perfectDevice(c, model));
+    v.applied = r.applied && !sameOutput(v.device, base);
     v.what = r.applied ? f.breaks + " (" + r.what + ")" : r.what;
     out.push_back(std::move(v));
   }
   return out;
 }
 
-// tolerance-bound: each written hit_t and barycentric 0.9 of its allowed
-// error away from the model's (up, or down where up would cross an end).
-Variant toleranceBound(const Case& c, const Results& model) {
-  Variant v{"tolerance-bound", perfectDevice(c, model), false, ""};
+// tolerance-bound: each written hit_t and barycentric moved up by 0.9 of its
+// allowed error.
+Variant toleranceBound(const Results& base) {
+  Variant v{"tolerance-bound", base, false, ""};
   RecordEdit dev{v.device};
   size_t moved = 0;
   for (uint32_t ray = 0; ray < dev.rays(); ++ray)
@@ -123,13 +126,14 @@ LegalDevice judge(const Case& c, const Plan& plan, const Results& model, Variant
 
 std::vector<LegalDevice> judgeLegalDevices(const Case& c, const Plan& plan, const Results& model,
                                            unsigned threads) {
+  const Results base = perfectDevice(c, model);
   std::vector<Variant> variants;
   if (!model.records.empty()) {
-    variants = answerVariants(c, plan, model, threads);
-    variants.push_back(passBetween(c, plan, model, threads));
-    variants.push_back(toleranceBound(c, model));
+    variants = answerVariants(c, plan, model, base, threads);
+    variants.push_back(passBetween(c, plan, model, base, threads));
+    variants.push_back(toleranceBound(base));
   }
-  for (Variant& v : legalFaults(c, plan, model)) variants.push_back(std::move(v));
+  for (Variant& v : legalFaults(c, plan, model, base)) variants.push_back(std::move(v));
   std::vector<LegalDevice> out;
   for (Variant& v : variants) out.push_back(judge(c, plan, model, std::move(v)));
   return out;
