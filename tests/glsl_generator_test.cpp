@@ -6,6 +6,10 @@
 // a device's crash.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <cstdlib>
+#include <fstream>
 #include <functional>
 #include <random>
 #include <set>
@@ -41,6 +45,8 @@ rays:
   list:
     - {origin: [0, 0, 3], direction: [0, 0, -1]}
 pipeline:
+  payloads: [{words: 3}]
+  callable_data: [{words: 2}]
   raygen: [RAYGEN, {trace: {}}, {call: {index: 0}}]
   miss:
     - [MISS]
@@ -167,6 +173,21 @@ std::vector<std::string> operatorForms(Stage stage, std::vector<std::string>* sk
   return out;
 }
 
+// With RAYSPEC_GENERATED_SPIRV set to a folder, every module compiled is also
+// written there (N.spv), for another validator to check
+// (tools/second-driver.sh generated: Debian sid's spirv-val).
+void keepModule(const std::vector<uint32_t>& words) {
+  static size_t n = 0;
+  const char* dir = std::getenv("RAYSPEC_GENERATED_SPIRV");
+  if (!dir || !*dir || words.empty()) return;
+  const std::string path =
+      std::string(dir) + "/" + std::to_string(getpid()) + "-" + std::to_string(n++) + ".spv";
+  std::ofstream out(path, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(words.data()),
+            static_cast<std::streamsize>(words.size() * sizeof(uint32_t)));
+  EXPECT_TRUE(out.good()) << "cannot write " << path;
+}
+
 // Each stage's statements in a random order (`statement` makes the i-th of
 // list), `rounds` times; every distinct module compiled and validated. The
 // number of modules; a failure names the round, stage and message.
@@ -196,6 +217,7 @@ size_t compileShuffled(std::map<Stage, std::vector<T>>& lists, int rounds, uint3
       ++modules;
       const SpirvResult r = compileGlsl(sh->glsl, sh->stage);
       EXPECT_EQ(r.error, "") << "round " << round << ", " << sh->name;
+      keepModule(r.words);
     }
   }
   return modules;

@@ -148,5 +148,78 @@ TEST(ModelPayload, AShaderOfAnotherPayloadTypeMakesTheRayUndefined) {
   }
 }
 
+// Words indexed by a value (payload_word .. callee_word, store: payload.words
+// and call.words), each index modulo the words of its array's type: the
+// incoming payload's own type (4 words at location 1), a child's and a
+// callee's the largest type's (4; 3), the incoming callable data's its own (3).
+const std::string kIndexedWords = std::string("rules: [R-PAYLOAD]\n") + kTriangleHitAndMiss +
+                                  R"(pipeline:
+  max_recursion: 2
+  payloads: [{}, {words: 4}, {words: 2}]
+  callable_data: [{}, {words: 3}]
+  raygen:
+    - trace: {location: 1, payload: {word0: 1}}
+    - record: {value: payload.value, value1: {payload_word: 6}, value2: {payload_word: 7},
+               value3: {payload_word: 4}}
+  miss:
+    - {payload: 1, program: [store: {array: payload.words, index: {add: [launch_id_x, 5]}, value: 9}]}
+    - {payload: 2, program: [store: {array: payload.words, index: 3, value: 77}]}
+  hit_groups:
+    - payload: 1
+      closest_hit:
+        - repeat: 3
+          var: k
+          from: 1
+          do:
+            - store: {array: payload.words, index: var.k,
+                      value: {add: [{mul: [{payload_word: {sub: [var.k, 1]}}, 10]}, var.k]}}
+        - trace: {location: 2, miss: 1, origin: [0.0, 0.0, 1.0], direction: [0.0, 0.0, 1.0]}
+        - store: {array: payload.words, index: 4, value: {add: [{child_word: 5}, {child_word: 2}]}}
+        - call: {index: 0, location: 1, word0: {payload_word: 2}}
+        - payload: {value: {callee_word: 4}}
+  callables:
+    - {call_data: 1, program: [store: {array: call.words, index: 4, value: {add: [{call_word: 3}, 1]}}]}
+outputs:
+  per_ray: [value, value1, value2, value3]
+)";
+
+TEST(ModelPayload, WordsIndexedByAValueWrapAtTheirTypesWords) {
+  const Case c = parseInline(kIndexedWords);
+  for (ModelTier tier : kTiers) {
+    const Results r = runTier(c, tier);
+    SCOPED_TRACE(modelTierName(tier));
+    // Hit: words 1, 11, 112, 1123; the nested miss writes word 3 % 2 = 1 of
+    // its two (77), child word 5 % 4 = 1 is 77 and child word 2 lies beyond
+    // that type (0): word 4 % 4 = 0 becomes 77. The callable gets word 0 =
+    // 112 and writes word 4 % 3 = 1 = call word 3 % 3 = 0, plus 1.
+    EXPECT_EQ(word(r, 0, "value"), 113u);
+    EXPECT_EQ(word(r, 0, "value1"), 112u);  // word 6 % 4 = 2
+    EXPECT_EQ(word(r, 0, "value2"), 1123u);
+    EXPECT_EQ(word(r, 0, "value3"), 77u);
+    // Miss (launch id 1): word (1 + 5) % 4 = 2 is 9; word 0 as it started.
+    EXPECT_EQ(word(r, 1, "value"), 0u);
+    EXPECT_EQ(word(r, 1, "value1"), 9u);
+    EXPECT_EQ(word(r, 1, "value2"), 0u);
+    EXPECT_EQ(word(r, 1, "value3"), 1u);
+  }
+}
+
+TEST(ModelPayload, AnIndexedWordNeedsATypeWithWordsAndAStageThatHoldsIt) {
+  std::string none = kIndexedWords;
+  none.replace(none.find("{}, {words: 4}, {words: 2}"), 26, "{}, {}, {}");
+  const ParseResult p = parseCaseText(none, "indexed.yaml", "indexed");
+  ASSERT_FALSE(p.value);
+  EXPECT_NE(p.errors.front().format().find("indexes words, but"), std::string::npos)
+      << p.errors.front().format();
+  std::string raygen = kIndexedWords;
+  raygen.replace(raygen.find("    - record: {value: payload.value,"), 0,
+                 "    - store: {array: payload.words, index: 0, value: 1}\n");
+  const ParseResult q = parseCaseText(raygen, "indexed.yaml", "indexed");
+  ASSERT_FALSE(q.value);
+  EXPECT_NE(q.errors.front().format().find("payload.words is not writable in raygen"),
+            std::string::npos)
+      << q.errors.front().format();
+}
+
 }  // namespace
 }  // namespace rayspec::model_test

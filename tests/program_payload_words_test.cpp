@@ -35,5 +35,21 @@ TEST(PayloadWords, BuiltinsNameTheirPrefixAndWord) {
   EXPECT_FALSE(attributeWordBuiltin("attribute.word10"));
 }
 
+TEST(PayloadWords, IndexedArraysHaveOneNameEach) {
+  for (WordArray w : {WordArray::Payload, WordArray::Child, WordArray::Call, WordArray::Callee}) {
+    const std::string name = wordArrayName(w);
+    // The op is the array's name with "s" dropped and "." as "_".
+    const std::string op = name.substr(0, name.find('.')) + "_word";
+    EXPECT_EQ(wordArrayOfOp(op), w) << op;
+  }
+  // Only the incoming data is written by a store.
+  EXPECT_EQ(wordArrayOfStore("payload.words"), WordArray::Payload);
+  EXPECT_EQ(wordArrayOfStore("call.words"), WordArray::Call);
+  EXPECT_FALSE(wordArrayOfStore("child.words"));
+  EXPECT_FALSE(wordArrayOfStore("callee.words"));
+  EXPECT_FALSE(wordArrayOfStore("words"));
+  EXPECT_FALSE(wordArrayOfOp("payload.word"));
+}
+
 }  // namespace
 }  // namespace rayspec

@@ -11,6 +11,8 @@
 #       OUT/spirv-val.txt  every SPIR-V module that run compiled, checked by the environment's spirv-val
 #       OUT/judged   that run judged here against FILE (default references/baselines/lavapipe-26.csv)
 #   tools/second-driver.sh compare RUN_A RUN_B    # rayspec compare of two judged or saved runs
+#   tools/second-driver.sh generated OUT    # the generator test's modules (tests/glsl_generator_test.cpp:
+#       random programs over the whole vocabulary) through the environment's spirv-val: OUT/spirv-val.txt
 #
 # The environment lives in $RAYSPEC_SECOND_DRIVER (default /var/cache/rayspec/sid).
 # `run` exits 77 when it does not exist (ctest counts that as skipped), 1 when
@@ -70,17 +72,17 @@ install_pack() {
   PACK_STAGE="$ENV_DIR$WORK/pack" bash tools/pack-device.sh >/dev/null
 }
 
-# Every module of the pack's SPIR-V cache, which the run inside used (and
-# added to where it compiled more), through the environment's spirv-val, as
-# many at once as there are cores; OUT/spirv-val.txt names each module it
-# rejects, with why.
+# Every module of a folder inside the environment (default: the pack's SPIR-V
+# cache, which the run inside used and added to where it compiled more),
+# through the environment's spirv-val, as many at once as there are cores;
+# OUT/spirv-val.txt names each module it rejects, with why.
 check_spirv() {
-  local out=$1 n bad
-  n=$(find "$ENV_DIR$WORK/pack/cache/spirv" -name '*.spv' | wc -l)
+  local out=$1 modules=${2:-$WORK/pack/cache/spirv} n bad
+  n=$(find "$ENV_DIR$modules" -name '*.spv' | wc -l)
   # shellcheck disable=SC2016  # expanded inside the environment
   local each='m=$(spirv-val --target-env vulkan1.2 "$0" 2>&1) || printf "%s: INVALID\n%s\n" "$0" "$m"'
   inside sh -c 'cd "$0" && find . -name "*.spv" -print0 | xargs -0 -r -P "$(nproc)" -n 1 sh -c "$1"' \
-    "$WORK/pack/cache/spirv" "$each" >"$out/spirv-val.txt"
+    "$modules" "$each" >"$out/spirv-val.txt"
   bad=$(grep -c ': INVALID$' "$out/spirv-val.txt" || true)
   echo "spirv-val $(inside spirv-val --version | head -n 1 | awk '{print $2}'): $((n - bad)) of $n modules valid" |
     tee -a "$out/spirv-val.txt"
@@ -145,10 +147,27 @@ run() {
   exit "$judged"
 }
 
+# The generator test (build/tests/test_glsl, GeneratedStages.*) writes every
+# module it compiled into the environment, whose spirv-val checks them all.
+generated() {
+  [[ $# -eq 1 ]] || die "usage: tools/second-driver.sh generated OUT"
+  ready || die "no environment in $ENV_DIR: run tools/second-driver.sh prepare" 77
+  [[ $(id -u) -eq 0 ]] || die "generated needs root (chroot)"
+  local out modules="$WORK/generated"
+  out=$(realpath -m "$1")
+  mkdir -p "$out"
+  rm -rf "${ENV_DIR:?}$modules"
+  mkdir -p "$ENV_DIR$modules"
+  RAYSPEC_GENERATED_SPIRV="$ENV_DIR$modules" ./build/tests/test_glsl --gtest_filter='GeneratedStages.*' \
+    >"$out/generator-test.txt" || die "the generator test failed: $out/generator-test.txt" 1
+  check_spirv "$out" "$modules" || die "spirv-val rejected generated modules: $out/spirv-val.txt" 1
+}
+
 case ${1:-} in
   prepare) prepare ;;
   versions) versions ;;
   run) shift; run "$@" ;;
   compare) shift; exec ./build/rayspec compare "$@" ;;
-  *) die "usage: tools/second-driver.sh prepare | versions | run OUT [--baseline FILE] [options] | compare A B" ;;
+  generated) shift; generated "$@" ;;
+  *) die "usage: tools/second-driver.sh prepare | versions | run OUT [--baseline FILE] [options] | compare A B | generated OUT" ;;
 esac

@@ -290,6 +290,27 @@ struct Pipeline {
     for (uint32_t w : call_data_words) n = std::max(n, w);
     return n;
   }
+  // The words an indexed read or write of `which` ranges over in a stage whose
+  // incoming payload or callable data has the type of `incoming_location`
+  // (program/payload_words.h): the incoming type's for Payload (outside
+  // raygen) and Call; the largest type's for raygen's Payload, Child and
+  // Callee, which hold any trace's or call's result.
+  uint32_t indexedWords(WordArray which, Stage stage, uint32_t incoming_location) const {
+    switch (which) {
+      case WordArray::Payload:
+        return stage == Stage::Raygen ? maxPayloadWords() : payloadWordsAt(incoming_location);
+      case WordArray::Child:
+        return maxPayloadWords();
+      case WordArray::Call:
+        return callDataWords(incoming_location);
+      case WordArray::Callee:
+        return maxCallDataWords();
+    }
+    return 0;
+  }
+  uint32_t payloadWordsAt(size_t location) const {
+    return location < payload_words.size() ? payload_words[location] : 0;
+  }
   // Extra uint words of the hit attribute after its vec2
   // (pipeline.hit_attribute.words, 0..kMaxAttributeWords).
   uint32_t attribute_words = 0;

@@ -18,9 +18,10 @@ namespace {
 constexpr const char* kPayloads = "pipeline.payloads";
 constexpr const char* kCallData = "pipeline.callable_data";
 
-// The words of a stage's own incoming payload and callable data types.
+// A stage and the location of its own incoming payload or callable data type.
 struct Incoming {
-  uint32_t payload = 0, call = 0;
+  Stage stage = Stage::Raygen;
+  uint32_t location = 0;
 };
 
 class WordChecker {
@@ -29,27 +30,66 @@ class WordChecker {
 
   void program(const Program& prog, const std::string& field, Incoming incoming) {
     if (r_.isBadProgram(field)) return;
+    in_ = incoming;
     walkExpressions(prog, [&](const Expr& e) {
-      if (e.kind == Expr::Kind::Builtin) read(e, field, incoming);
+      if (e.kind == Expr::Kind::Builtin) read(e, field);
+      if (auto which = e.kind == Expr::Kind::Op ? wordArrayOfOp(e.name) : std::nullopt)
+        indexed(e.loc, field, "{" + e.name + ": ...}", *which);
     });
     walkStatements(prog, [&](const Stmt& s) {
       if (s.kind == Stmt::Kind::SetPayload)
-        writes(s, field, "payload.", incoming.payload, "this shader's payload type", kPayloads);
+        writes(s, field, "payload.", words(WordArray::Payload), typeOf(WordArray::Payload),
+               kPayloads);
       if (s.kind == Stmt::Kind::SetCall)
-        writes(s, field, "call_data.", incoming.call, "this callable's data type", kCallData);
+        writes(s, field, "call_data.", words(WordArray::Call), typeOf(WordArray::Call), kCallData);
+      if (auto which = s.kind == Stmt::Kind::Store ? wordArrayOfStore(s.local) : std::nullopt)
+        indexed(s.loc, field, "store to " + s.local, *which);
       if (s.kind == Stmt::Kind::Trace) trace(s, field);
       if (s.kind == Stmt::Kind::Call) call(s, field);
     });
   }
 
  private:
-  void read(const Expr& e, const std::string& field, Incoming incoming) {
-    if (auto w = payloadWordBuiltin(e.name))
-      within(e.loc, field, e.name, w->index, w->child ? p_.maxPayloadWords() : incoming.payload,
-             w->child ? "the largest payload type" : "this shader's payload type", kPayloads);
-    if (auto w = callWordBuiltin(e.name))
-      within(e.loc, field, e.name, w->index, w->callee ? p_.maxCallDataWords() : incoming.call,
-             w->callee ? "the largest callable data type" : "this callable's data type", kCallData);
+  uint32_t words(WordArray which) const { return p_.indexedWords(which, in_.stage, in_.location); }
+
+  std::string typeOf(WordArray which) const {
+    const bool own = in_.stage != Stage::Raygen;
+    switch (which) {
+      case WordArray::Payload:
+        return own ? "this shader's payload type" : "the largest payload type";
+      case WordArray::Child:
+        return "the largest payload type";
+      case WordArray::Call:
+        return "this callable's data type";
+      case WordArray::Callee:
+        return "the largest callable data type";
+    }
+    return "";
+  }
+
+  static const char* listOf(WordArray which) {
+    return which == WordArray::Payload || which == WordArray::Child ? kPayloads : kCallData;
+  }
+
+  void read(const Expr& e, const std::string& field) {
+    if (auto w = payloadWordBuiltin(e.name)) {
+      const WordArray which = w->child ? WordArray::Child : WordArray::Payload;
+      within(e.loc, field, e.name, w->index, words(which), typeOf(which), kPayloads);
+    }
+    if (auto w = callWordBuiltin(e.name)) {
+      const WordArray which = w->callee ? WordArray::Callee : WordArray::Call;
+      within(e.loc, field, e.name, w->index, words(which), typeOf(which), kCallData);
+    }
+  }
+
+  // A read or store indexed by a value takes its index modulo the words: the
+  // type must have some.
+  void indexed(const SourceLoc& at, const std::string& field, const std::string& what,
+               WordArray which) {
+    if (words(which) > 0) return;
+    error(at, field,
+          what + " indexes words, but " + typeOf(which) + " has none (" + listOf(which) +
+              "[].words)");
   }
 
   void writes(const Stmt& s, const std::string& field, const std::string& prefix, uint32_t words,
@@ -104,6 +144,7 @@ class WordChecker {
 
   YamlReader& r_;
   const Pipeline& p_;
+  Incoming in_;
 };
 
 }  // namespace
@@ -111,26 +152,24 @@ class WordChecker {
 void checkDataWords(YamlReader& r, const Case& c) {
   const Pipeline& p = c.pipeline;
   WordChecker check(r, p);
-  auto payload_of = [&](uint32_t location) {
-    return location < p.payload_words.size() ? p.payload_words[location] : 0u;
-  };
-  const Incoming raygen{p.maxPayloadWords(), 0};
+  const Incoming raygen{Stage::Raygen, 0};
   check.program(p.raygen, "pipeline.raygen", raygen);
   for (const Program& g : p.other_raygens) check.program(g, "pipeline.raygens", raygen);
   for (size_t i = 0; i < p.miss.size(); ++i)
     check.program(p.miss[i], "pipeline.miss[" + std::to_string(i) + "]",
-                  {payload_of(p.missPayload(i)), 0});
+                  {Stage::Miss, p.missPayload(i)});
   for (size_t i = 0; i < p.hit_groups.size(); ++i) {
     const HitGroup& g = p.hit_groups[i];
     const std::string f = "pipeline.hit_groups[" + std::to_string(i) + "].";
-    const Incoming in{payload_of(g.payload), 0};
-    if (g.closest_hit) check.program(*g.closest_hit, f + "closest_hit", in);
-    if (g.any_hit) check.program(*g.any_hit, f + "any_hit", in);
-    if (g.intersection) check.program(*g.intersection, f + "intersection", {});
+    if (g.closest_hit)
+      check.program(*g.closest_hit, f + "closest_hit", {Stage::ClosestHit, g.payload});
+    if (g.any_hit) check.program(*g.any_hit, f + "any_hit", {Stage::AnyHit, g.payload});
+    if (g.intersection)
+      check.program(*g.intersection, f + "intersection", {Stage::Intersection, 0});
   }
   for (size_t i = 0; i < p.callables.size(); ++i)
     check.program(p.callables[i], "pipeline.callables[" + std::to_string(i) + "]",
-                  {0, p.callDataWords(p.callableData(i))});
+                  {Stage::Callable, p.callableData(i)});
 }
 
 }  // namespace rayspec

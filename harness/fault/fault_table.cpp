@@ -146,7 +146,7 @@ std::vector<FaultImpl> programMutations() {
        payloadStartLost},
       {"payload-words-lost", K::CaseMutation,
        "only the first 24 bytes of a payload come back: writes to its words "
-       "(pipeline.payloads) are lost",
+       "(pipeline.payloads), named or indexed, are lost",
        nullptr, payloadWordsLost},
       {"no-null-shaders-dropped", K::CaseMutation,
        "a pipeline with no_null_* flags runs as if every shader of those kinds were absent",
@@ -161,7 +161,7 @@ std::vector<FaultImpl> programMutations() {
        "a callable's writes to its data never reach the caller", nullptr, callableDataNotReturned},
       {"call-data-words-lost", K::CaseMutation,
        "only the first 48 bytes of callable data come back: a callable's writes to its words "
-       "(pipeline.callable_data) are lost",
+       "(pipeline.callable_data), named or indexed, are lost",
        nullptr, callDataWordsLost},
       {"nested-trace-dropped", K::CaseMutation,
        "traces from closest-hit and miss do nothing (no recursion)", nullptr, nestedTraceDropped},
@@ -258,6 +258,10 @@ std::vector<FaultImpl> pipelineMutations() {
        nullptr, loopTripOffByOne},
       {"bitwise-xor-as-or", K::CaseMutation, "bit_xor (^) is computed as bit_or (|)", nullptr,
        bitwiseXorAsOr},
+      {"word-index-off-by-one", K::CaseMutation,
+       "a payload or callable data word indexed by a value is read and written one word too "
+       "far ((i + 1) % N)",
+       nullptr, wordIndexOffByOne},
       {"cross-operands-swapped", K::CaseMutation, "cross(a, b) is computed as cross(b, a)", nullptr,
        crossOperandsSwapped},
       {"matrix-transposed", K::CaseMutation, "a matrix times a vector uses the transpose", nullptr,

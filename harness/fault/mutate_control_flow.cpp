@@ -4,6 +4,7 @@
 // specialization constants a stage is created with.
 #include "fault/fault_impl.h"
 #include "fault/program_edit.h"
+#include "program/payload_words.h"
 #include "program/walk_program.h"
 
 namespace rayspec {
@@ -68,6 +69,32 @@ std::string crossOperandsSwapped(Case& c, ModelOptions&) {
 std::string floatBitsConverted(Case& c, ModelOptions&) {
   return describeCount(renameOps(c, "float_bits", "uint") + renameOps(c, "bits_float", "float"),
                        "bit casts converted as values");
+}
+
+// A compiler that addresses a data array one word too far: every payload,
+// child, call and callee word indexed by a value is word (i + 1) % N.
+std::string wordIndexOffByOne(Case& c, ModelOptions&) {
+  size_t n = 0;
+  auto onePast = [&](Expr& index) {
+    Expr more;
+    more.kind = Expr::Kind::Op;
+    more.name = "add";
+    more.type = ValueType::Uint;
+    more.loc = index.loc;
+    more.args = {std::move(index), uintLiteral(1, more.loc)};
+    index = std::move(more);
+    ++n;
+  };
+  forEachProgram(c.pipeline, [&](Program& p, Stage) {
+    editExpressions(p, [&](Expr& e) {
+      if (e.kind == Expr::Kind::Op && wordArrayOfOp(e.name) && e.args.size() == 1)
+        onePast(e.args[0]);
+    });
+    forEachStmt(p, [&](Stmt& s) {
+      if (s.kind == Stmt::Kind::Store && wordArrayOfStore(s.local)) onePast(s.index);
+    });
+  });
+  return describeCount(n, "indexed payload and callable data words one word too far");
 }
 
 std::string localsLostAcrossCalls(Case& c, ModelOptions& o) {

@@ -161,10 +161,14 @@ std::string payloadStartLost(Case& c, ModelOptions&) {
 
 namespace {
 
-// Removes the word writes of every `kind` statement; how many.
-size_t wordWritesLost(Case& c, Stmt::Kind kind) {
+// Removes the word writes of every `kind` statement, and the stores into
+// `indexed` (payload.words / call.words); how many.
+size_t wordWritesLost(Case& c, Stmt::Kind kind, WordArray indexed) {
   size_t n = 0;
   forEachProgram(c.pipeline, [&](Program& p, Stage) {
+    n += removeStmts(p, [&](const Stmt& s) {
+      return s.kind == Stmt::Kind::Store && wordArrayOfStore(s.local) == indexed;
+    });
     forEachStmt(p, [&](Stmt& s) {
       if (s.kind != kind) return;
       auto& a = s.assigns;
@@ -183,13 +187,13 @@ size_t wordWritesLost(Case& c, Stmt::Kind kind) {
 // A device that copies back only the first 24 bytes of a payload (color,
 // value, depth): what miss, closest-hit and any-hit write into its words is lost.
 std::string payloadWordsLost(Case& c, ModelOptions&) {
-  return describeCount(wordWritesLost(c, Stmt::Kind::SetPayload),
+  return describeCount(wordWritesLost(c, Stmt::Kind::SetPayload, WordArray::Payload),
                        "payload word writes lost on the way back");
 }
 
 // The same for callable data (its first 48 bytes): a callable's word writes are lost.
 std::string callDataWordsLost(Case& c, ModelOptions&) {
-  return describeCount(wordWritesLost(c, Stmt::Kind::SetCall),
+  return describeCount(wordWritesLost(c, Stmt::Kind::SetCall, WordArray::Call),
                        "callable data word writes lost on the way back");
 }
 

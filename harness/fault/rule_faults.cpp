@@ -3,9 +3,12 @@
 
 namespace rayspec {
 
-const std::vector<RuleFaults>& ruleFaults() {
-  const Status qw = Status::QualityWarning, fail = Status::Fail;
-  static const std::vector<RuleFaults> table = {
+namespace {
+
+// The rules of traversal and of what the stages of one trace do.
+std::vector<RuleFaults> traversalRules() {
+  const Status qw = Status::QualityWarning;
+  return {
       {"R-CAND-TRI-OPEN", {"closed-triangle-interval"}, {}},
       {"R-CAND-AABB-CLOSED", {"open-aabb-interval"}, {}},
       {"R-TIE", {"tie-answered-neither"}, {}},
@@ -38,6 +41,14 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-MISS-XOR-CHIT",
        {"drop-miss", "chit-after-ignore", "miss-after-closest-hit", "skip-closest-hit-ignored"},
        {}},
+  };
+}
+
+// The rules of the pipeline around traversal: the SBT, data between stages,
+// built-ins, structures, launches and shader code.
+std::vector<RuleFaults> pipelineRules() {
+  const Status fail = Status::Fail;
+  return {
       {"R-SBT-HIT",
        {"hit-record-shifted", "instance-sbt-offset-ignored", "custom-index-truncated",
         "empty-geometry-renumbered"},
@@ -50,7 +61,8 @@ const std::vector<RuleFaults>& ruleFaults() {
       {"R-RECURSION", {"nested-trace-dropped"}, {}},
       {"R-CALLABLE", {"callable-data-not-returned", "call-data-words-lost"}, {}},
       {"R-PAYLOAD",
-       {"payload-writes-lost", "payload-start-lost", "payload-words-lost", "hit-attributes-lost"},
+       {"payload-writes-lost", "payload-start-lost", "payload-words-lost", "hit-attributes-lost",
+        "word-index-off-by-one"},
        {}},
       {"R-BUILTIN",
        {"builtin-wrong", "swap-primitive-id", "shift-t", "empty-geometry-renumbered",
@@ -81,6 +93,16 @@ const std::vector<RuleFaults>& ruleFaults() {
        {}},
       {"R-UB", {}, {}, fail, "never checked for a result (robustness probe only)"},
   };
+}
+
+}  // namespace
+
+const std::vector<RuleFaults>& ruleFaults() {
+  static const std::vector<RuleFaults> table = [] {
+    std::vector<RuleFaults> all = traversalRules();
+    for (RuleFaults& r : pipelineRules()) all.push_back(std::move(r));
+    return all;
+  }();
   return table;
 }
 

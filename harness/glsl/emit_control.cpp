@@ -6,6 +6,7 @@
 
 #include "glsl/emit_expr.h"
 #include "glsl/emit_stmt.h"
+#include "program/payload_words.h"
 
 namespace rayspec {
 namespace {
@@ -110,11 +111,14 @@ void emitControl(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
     case Stmt::Kind::Array:
       array(s, out);
       return;
-    case Stmt::Kind::Store:
+    case Stmt::Kind::Store: {
       if (s.assigns.empty()) return;
-      out.line(localName(s.local) + "[" + arrayIndex(localName(s.local), emitExpr(s.index, ctx)) +
+      // An array local, or a data array: store: {array: payload.words} -> payload.words[..]
+      const std::string array = wordArrayOfStore(s.local) ? s.local : localName(s.local);
+      out.line(array + "[" + arrayIndex(array, emitExpr(s.index, ctx)) +
                "] = " + emitExpr(s.assigns[0].second, ctx) + ";");
       return;
+    }
     case Stmt::Kind::Repeat:
       repeat(s, ctx, out);
       return;

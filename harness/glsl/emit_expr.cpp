@@ -150,6 +150,10 @@ std::string op(const Expr& e, const StageContext& ctx) {
     return n + "(" + a[0] + ")";
   if (n == "round" && need(1)) return "roundEven(" + a[0] + ")";
   if (n == "load" && need(2)) return a[0] + "[" + arrayIndex(a[0], a[1]) + "]";
+  if (const auto words = wordArrayOfOp(n); words && need(1)) {
+    const std::string array = wordArrayName(*words);  // payload_word: payload.words[i % N]
+    return array + "[" + arrayIndex(array, a[0]) + "]";
+  }
   if (n == "vec2" || n == "vec3" || n == "vec4") return n + join(", ");
   if ((n == "x" || n == "y" || n == "z" || n == "w") && need(1)) return a[0] + "." + n;
   if (n == "sphere_hit") return "rs_sphere_current().hit";

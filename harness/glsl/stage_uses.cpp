@@ -26,6 +26,11 @@ void visitExpr(const Expr& e, StageUses& u) {
     if (e.name.rfind("sphere_", 0) == 0) u.scene = u.sphere = true;
     if (e.name.rfind("shader_record_", 0) == 0) u.shader_record = true;
     if (e.name.rfind("light_", 0) == 0) u.light = u.shader_record = true;
+    if (const auto words = wordArrayOfOp(e.name)) {
+      u.incoming_payload = u.incoming_payload || *words == WordArray::Payload;
+      u.reads_child = u.reads_child || *words == WordArray::Child;
+      u.reads_callee = u.reads_callee || *words == WordArray::Callee;
+    }
   } else if (e.kind == Expr::Kind::RecordMember) {
     u.record_members = true;
   }
@@ -93,6 +98,7 @@ void visitProgram(const Program& p, Stage stage, const Plan& plan, StageUses& u)
         visitExpr(s.from, u);
         break;
       case Stmt::Kind::Store:
+        if (wordArrayOfStore(s.local) == WordArray::Payload) u.incoming_payload = true;
         visitExpr(s.index, u);
         for (const auto& a : s.assigns) visitExpr(a.second, u);
         break;

@@ -48,6 +48,22 @@ Val Machine::dataBuiltin(const CExpr& e, StageEnv& env) {
   return Val{};
 }
 
+uint32_t* Machine::dataWord(WordArray which, uint32_t words, uint32_t index, StageEnv& env) {
+  if (words == 0) return nullptr;
+  const uint32_t i = index % words;
+  switch (which) {
+    case WordArray::Payload:
+      return env.payload && i < kMaxPayloadWords ? &env.payload->words[i] : nullptr;
+    case WordArray::Child:
+      return i < kMaxPayloadWords ? &env.child.words[i] : nullptr;
+    case WordArray::Call:
+      return env.call && i < kMaxCallDataWords ? &env.call->words[i] : nullptr;
+    case WordArray::Callee:
+      return i < kMaxCallDataWords ? &env.callee.words[i] : nullptr;
+  }
+  return nullptr;
+}
+
 // vertex_position<i>: the hit triangle's vertex in object space (zero for a
 // box, where reading it is refused at parse time). The planted fault
 // position_fetch_world_space takes it through the instance transform.

@@ -27,6 +27,12 @@ Flow Machine::execControl(const CStmt& s, StageEnv& env) {
       std::fill_n(env.locals.begin() + s.slot, s.size, Val{});
       return Flow::Continue;
     case Stmt::Kind::Store: {
+      if (s.words) {  // payload.words / call.words
+        uint32_t* w = dataWord(*s.words, s.size, eval(s.index, env).u, env);
+        const uint32_t v = s.assigns.empty() ? 0u : eval(s.assigns[0].value, env).u;
+        if (w) *w = v;
+        return Flow::Continue;
+      }
       if (s.slot < 0 || s.size == 0 || s.assigns.empty()) return Flow::Continue;
       const uint32_t i = eval(s.index, env).u % s.size;
       setLocal(env, static_cast<size_t>(s.slot) + i, eval(s.assigns[0].value, env));

@@ -204,6 +204,12 @@ bool Machine::opOnDemand(const CExpr& e, StageEnv& env, Val& r) {
       r = slot < env.locals.size() ? env.locals[slot] : Val{};
       return true;
     }
+    case OpCode::DataWord: {
+      const uint32_t* w =
+          dataWord(static_cast<WordArray>(e.index), e.size, eval(e.args[0], env).u, env);
+      r = fromUint(w ? *w : 0u);
+      return true;
+    }
     case OpCode::Unknown:
       if (error.empty())
         error = "model: unknown op '" + (e.src ? e.src->name : std::string("?")) + "'";

@@ -181,6 +181,10 @@ class alignas(64) Machine {
   Val eval(const CExpr& e, StageEnv& env);
   Val builtin(const CExpr& e, StageEnv& env);
   Val dataBuiltin(const CExpr& e, StageEnv& env);
+  // Word index % words of a data array indexed by a value (payload_word ..
+  // callee_word, store: payload.words / call.words); null where the stage has
+  // no such data or the type no words.
+  static uint32_t* dataWord(WordArray which, uint32_t words, uint32_t index, StageEnv& env);
   // shader_record.NAME: its words in the record data (pipeline.sbt.record_layout).
   static Val recordMember(const CExpr& e, const StageEnv& env);
   Val vertexPosition(const HitView& hv, int i) const;

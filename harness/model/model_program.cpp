@@ -126,14 +126,32 @@ const OpName kOps[] = {{"sphere_hit", OpCode::SphereHit},
                        {"light_point", OpCode::LightPoint},
                        {"light_spot", OpCode::LightSpot},
                        {"light_directional", OpCode::LightDirectional},
-                       {"load", OpCode::Load}};
+                       {"load", OpCode::Load},
+                       {"payload_word", OpCode::DataWord},
+                       {"child_word", OpCode::DataWord},
+                       {"call_word", OpCode::DataWord},
+                       {"callee_word", OpCode::DataWord}};
 
 struct Compiler {
   const Plan& plan;
   CPipeline& out;
   const Pipeline& pipeline;
-  LocalScope scope;    // the locals visible where the compiler is (their slots)
-  std::string shader;  // the shader compiled (its name picks pipeline.specialize's values)
+  LocalScope scope;             // the locals visible where the compiler is (their slots)
+  std::string shader;           // the shader compiled (its name picks pipeline.specialize's values)
+  Stage stage = Stage::Raygen;  // the stage compiled
+  uint32_t incoming_location = 0;  // its incoming payload's or callable data's location
+
+  // Starts a shader: its name, stage and incoming data location.
+  void begin(Stage s, size_t index, uint32_t location) {
+    shader = Pipeline::shaderName(s, index);
+    stage = s;
+    incoming_location = location;
+  }
+
+  // The words an indexed read or store of `which` ranges over in this stage.
+  uint32_t indexedWords(WordArray which) const {
+    return pipeline.indexedWords(which, stage, incoming_location);
+  }
 
   // const.NAME: a literal of the value this shader takes.
   void constant(const Expr& e, CExpr& r) const {
@@ -203,6 +221,10 @@ struct Compiler {
         if (r.op == OpCode::SphereHit || r.op == OpCode::SphereNear || r.op == OpCode::SphereFar)
           out.reads_sphere = true;
         if (r.op == OpCode::Vec) r.index = e.name == "vec2" ? 2 : e.name == "vec3" ? 3 : 4;
+        if (const auto which = wordArrayOfOp(e.name)) {
+          r.index = static_cast<uint32_t>(*which);
+          r.size = indexedWords(*which);
+        }
         if (r.op == OpCode::RecordUint || r.op == OpCode::RecordFloat)
           r.index =
               e.args.empty()
@@ -250,6 +272,11 @@ struct Compiler {
     if (s.kind == Stmt::Kind::Array) {
       r.slot = static_cast<int>(scope.declare(s.local, {s.local_type, s.size}).slot);
       r.size = s.size;
+    } else if (const auto which =
+                   s.kind == Stmt::Kind::Store ? wordArrayOfStore(s.local) : std::nullopt) {
+      r.words = *which;
+      r.size = indexedWords(*which);
+      r.index = expr(s.index);
     } else if (s.kind == Stmt::Kind::Store) {
       const LocalInfo* info = scope.find(s.local);
       r.slot = info ? static_cast<int>(info->slot) : -1;
@@ -359,15 +386,15 @@ CPipeline compilePipeline(const Case& c, const Plan& plan) {
   CPipeline out;
   const Pipeline& p = c.pipeline;
   Compiler k{plan, out, p};
-  k.shader = Pipeline::shaderName(Stage::Raygen, 0);
+  k.begin(Stage::Raygen, 0, 0);
   out.raygen = k.program(p.raygen);
   for (const Program& m : p.miss) {
-    k.shader = Pipeline::shaderName(Stage::Miss, out.miss.size());
+    k.begin(Stage::Miss, out.miss.size(), p.missPayload(out.miss.size()));
     out.miss.push_back(k.program(m));
     out.miss_counts.push_back(countsOnly(out.miss.back()));
   }
   for (const Program& m : p.callables) {
-    k.shader = Pipeline::shaderName(Stage::Callable, out.callables.size());
+    k.begin(Stage::Callable, out.callables.size(), p.callableData(out.callables.size()));
     out.callables.push_back(k.program(m));
   }
   out.hit_programs.reserve(p.hit_groups.size() * 3);  // stable addresses for the groups
@@ -375,7 +402,7 @@ CPipeline compilePipeline(const Case& c, const Plan& plan) {
     CHitGroup cg;
     auto add = [&](const std::optional<Program>& prog, Stage stage) -> const CProgram* {
       if (!prog) return nullptr;
-      k.shader = Pipeline::shaderName(stage, out.groups.size());
+      k.begin(stage, out.groups.size(), g.payload);
       out.hit_programs.push_back(k.program(*prog));
       return &out.hit_programs.back();
     };

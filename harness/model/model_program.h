@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -145,6 +146,7 @@ enum class OpCode : uint8_t {
   LightSpot,
   LightDirectional,
   Load,
+  DataWord,  // payload_word .. callee_word: CExpr::index the WordArray, size its words
   Unknown
 };
 
@@ -200,6 +202,8 @@ struct CStmt {
   int slot = -1;
   uint32_t size = 0;
   CExpr count, from, index;  // Repeat, Store
+  // Store to payload.words / call.words (size: its words); nullopt: to a local.
+  std::optional<WordArray> words;
   std::vector<CStmt> then_, else_;
   const Stmt* src = nullptr;  // for the case field a diagnosis names
 };

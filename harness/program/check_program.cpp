@@ -236,12 +236,28 @@ class Checker {
   }
 
   std::optional<ProgramError> store(Stmt& s) {
+    if (const auto words = wordArrayOfStore(s.local)) return storeWord(s, *words);
     const LocalInfo* info = scope_.find(s.local);
     if (!info || !info->elements)
       return ProgramError{"store: '" + s.local + "' is not an array declared here", s.loc};
     if (auto r = as(s.index, ValueType::Uint, "store index")) return r;
     for (auto& [name, value] : s.assigns)
       if (auto r = as(value, info->type, "store value")) return r;
+    return std::nullopt;
+  }
+
+  // store: {array: payload.words | call.words, ...}: a word of the incoming
+  // payload (where `payload:` may write) or callable data (where `call_data:` may).
+  std::optional<ProgramError> storeWord(Stmt& s, WordArray words) {
+    const StmtRule& writer =
+        ruleOf(words == WordArray::Payload ? Stmt::Kind::SetPayload : Stmt::Kind::SetCall);
+    if (!(writer.stages & stageBit(stage_)))
+      return ProgramError{s.local + " is not writable in " + stageName(stage_) +
+                              " (allowed in: " + stageList(writer.stages) + ")",
+                          s.loc};
+    if (auto r = as(s.index, ValueType::Uint, "store index")) return r;
+    for (auto& [name, value] : s.assigns)
+      if (auto r = as(value, ValueType::Uint, "store value")) return r;
     return std::nullopt;
   }
 

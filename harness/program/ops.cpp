@@ -7,6 +7,11 @@ namespace {
 
 constexpr StageMask kIsect = stageBit(Stage::Intersection);
 constexpr int kMany = 16;  // and/or take 2 or more arguments
+using stage_letters::A;
+using stage_letters::C;
+using stage_letters::K;
+using stage_letters::M;
+using stage_letters::R;
 
 }  // namespace
 
@@ -37,6 +42,13 @@ const std::vector<OpInfo>& ops() {
       {"shl", 2, 2, kAllStages,
        "a << (b % 32) (Uint; GLSL leaves a shift of 32 or more undefined)"},
       {"shr", 2, 2, kAllStages, "a >> (b % 32) (Uint, logical)"},
+      {"payload_word", 1, 1, M | C | A | R,
+       "word (i % N) of the incoming payload (raygen: the last trace's), N its type's words"},
+      {"child_word", 1, 1, C | M,
+       "word (i % N) of the last nested trace's payload, N the largest payload type's words"},
+      {"call_word", 1, 1, K, "word (i % N) of the incoming callable data, N its type's words"},
+      {"callee_word", 1, 1, R | C | M | K,
+       "word (i % N) of the last call's data, N the largest callable data type's words"},
       {"float_bits", 1, 1, kAllStages, "the bits of a Float as Uint (floatBitsToUint)"},
       {"bits_float", 1, 1, kAllStages, "a Uint's bits as Float (uintBitsToFloat)"},
       {"odd", 1, 1, kAllStages, "Uint is odd -> Bool"},

@@ -43,4 +43,32 @@ std::optional<uint32_t> attributeWordBuiltin(const std::string& name) {
   return i;
 }
 
+std::optional<WordArray> wordArrayOfOp(const std::string& op) {
+  if (op == "payload_word") return WordArray::Payload;
+  if (op == "child_word") return WordArray::Child;
+  if (op == "call_word") return WordArray::Call;
+  if (op == "callee_word") return WordArray::Callee;
+  return std::nullopt;
+}
+
+const char* wordArrayName(WordArray which) {
+  switch (which) {
+    case WordArray::Payload:
+      return "payload.words";
+    case WordArray::Child:
+      return "child.words";
+    case WordArray::Call:
+      return "call.words";
+    case WordArray::Callee:
+      return "callee.words";
+  }
+  return "";
+}
+
+std::optional<WordArray> wordArrayOfStore(const std::string& array) {
+  for (WordArray w : {WordArray::Payload, WordArray::Call})
+    if (array == wordArrayName(w)) return w;
+  return std::nullopt;
+}
+
 }  // namespace rayspec

@@ -46,4 +46,23 @@ constexpr uint32_t kMaxAttributeWords = 6;
 // "attribute.word<i>" -> i for i < kMaxAttributeWords; nullopt otherwise.
 std::optional<uint32_t> attributeWordBuiltin(const std::string& name);
 
+// Words indexed by a value (cases/README.md, "Words indexed by a value"):
+// the ops {payload_word: i}, {child_word: i}, {call_word: i} and
+// {callee_word: i} read, and `store: {array: payload.words | call.words,
+// index: i, value: v}` writes, word i % N of one data array, N the words of
+// that array's type as the stage declares it (Pipeline::indexedWords).
+enum class WordArray : uint8_t {
+  Payload,  // the incoming payload (miss, closest-hit, any-hit); in raygen the last trace's
+  Child,    // the last nested trace's payload (closest-hit, miss)
+  Call,     // the incoming callable data (callable)
+  Callee,   // the last call's data
+};
+// "payload_word" / "child_word" / "call_word" / "callee_word"; nullopt otherwise.
+std::optional<WordArray> wordArrayOfOp(const std::string& op);
+// The array's name: "payload.words", "child.words", "call.words",
+// "callee.words" (a store's `array:`, and the GLSL member it is).
+const char* wordArrayName(WordArray which);
+// A store's array "payload.words" / "call.words"; nullopt otherwise.
+std::optional<WordArray> wordArrayOfStore(const std::string& array);
+
 }  // namespace rayspec
