@@ -48,14 +48,17 @@ TEST(SceneBuild, ErrorsNameTheLineAndField) {
   }
 }
 
-ParseResult parseUpdate(const std::string& update) {
+ParseResult parseUpdate(const std::string& update, const std::string& build = "") {
   return parseCaseText(
       "rules: [R-AS-UPDATE]\n"
       "scene:\n"
-      "  blas:\n"
-      "    t: [{triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}}]\n"
-      "  instances: [{blas: t}, {blas: t, sbt_offset: 1}]\n"
-      "  update: " +
+      "  build: {" +
+          build +
+          "}\n"
+          "  blas:\n"
+          "    t: [{triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}}]\n"
+          "  instances: [{blas: t}, {blas: t, sbt_offset: 1}]\n"
+          "  update: " +
           update +
           "\n"
           "rays:\n"
@@ -73,15 +76,15 @@ TEST(SceneUpdate, TheSceneIsAfterTheUpdateAndBuiltHoldsTheFirstBuild) {
       "transform: {translate: [5, 0, 0]}, mask: 3}]}");
   ASSERT_TRUE(r.value) << firstError(r);
   const Scene& after = r.value->scene;
-  ASSERT_TRUE(after.built);
+  ASSERT_EQ(after.updates(), 1u);
   EXPECT_EQ(after.blases[0].geometries[0].vertices[0][2], 1.0f);
-  EXPECT_EQ(after.built->blases[0].geometries[0].vertices[0][2], 0.0f);
+  EXPECT_EQ(after.earlier.front()->blases[0].geometries[0].vertices[0][2], 0.0f);
   EXPECT_EQ(after.instances[1].mask, 3u);
   EXPECT_EQ(after.instances[1].sbt_offset, 1u);  // kept
-  EXPECT_EQ(after.instances[1].blas, after.built->instances[1].blas);
-  EXPECT_EQ(after.built->instances[1].mask, 0xFFu);
+  EXPECT_EQ(after.instances[1].blas, after.earlier.front()->instances[1].blas);
+  EXPECT_EQ(after.earlier.front()->instances[1].mask, 0xFFu);
   EXPECT_TRUE(after.build.flags & kBuildAllowUpdate);
-  EXPECT_TRUE(after.built->build.flags & kBuildAllowUpdate);
+  EXPECT_TRUE(after.earlier.front()->build.flags & kBuildAllowUpdate);
 }
 
 TEST(SceneUpdate, ErrorsNameTheLineAndField) {
@@ -99,7 +102,53 @@ TEST(SceneUpdate, ErrorsNameTheLineAndField) {
     const ParseResult r = parseUpdate(b.update);
     EXPECT_FALSE(r.value) << b.update;
     const std::string e = firstError(r);
-    EXPECT_NE(e.find("t.yaml:6"), std::string::npos) << e;
+    EXPECT_NE(e.find("t.yaml:7"), std::string::npos) << e;
+    EXPECT_NE(e.find(b.field), std::string::npos) << e;
+    EXPECT_NE(e.find(b.message), std::string::npos) << e;
+  }
+}
+
+TEST(SceneUpdate, AListUpdatesInTurnAndKeepsEveryState) {
+  const ParseResult r = parseUpdate(
+      "[{blas: {t: [{vertices: [[0, 0, 1], [1, 0, 1], [0, 1, 1]]}]}}, "
+      "{instances: [{instance: 1, mask: 3}]}, "
+      "{blas: {t: [{vertices: [[0, 0, 2], [1, 0, 2], [0, 1, 2]]}]}}]",
+      "copy: clone, order: [update, copy, update, update]");
+  ASSERT_TRUE(r.value) << firstError(r);
+  const Scene& s = r.value->scene;
+  ASSERT_EQ(s.updates(), 3u);
+  EXPECT_EQ(s.earlier[0]->blases[0].geometries[0].vertices[0][2], 0.0f);
+  EXPECT_EQ(s.earlier[1]->blases[0].geometries[0].vertices[0][2], 1.0f);
+  EXPECT_EQ(s.earlier[1]->instances[1].mask, 0xFFu);
+  EXPECT_EQ(s.earlier[2]->instances[1].mask, 3u);  // the second update's
+  EXPECT_EQ(s.blases[0].geometries[0].vertices[0][2], 2.0f);
+  EXPECT_EQ(s.instances[1].mask, 3u);  // kept by the third
+  EXPECT_EQ(s.updatesBeforeCopy(), 1u);
+  for (const auto& e : s.earlier) EXPECT_TRUE(e->earlier.empty());
+  // Without an order: every update, then the copy.
+  const ParseResult d = parseUpdate("[{}, {}]", "copy: compact");
+  ASSERT_TRUE(d.value) << firstError(d);
+  EXPECT_EQ(d.value->scene.updatesBeforeCopy(), 2u);
+}
+
+TEST(SceneUpdate, AnOrderNamesEachUpdateAndTheCopyOnce) {
+  struct Bad {
+    std::string update, build, field, message;
+  } bad[] = {{"[{}, {}]", "copy: clone, order: [update, copy]", "scene.build.order",
+              "names 1 update(s) and 1 copy, but the scene has 2 update(s)"},
+             {"[{}]", "order: [update, copy]", "scene.build.order", "no copy (scene.build.copy)"},
+             {"[{}]", "copy: clone, order: [update]", "scene.build.order", "one copy"},
+             {"[{}]", "copy: clone, order: [update, clone]", "scene.build.order[1]",
+              "unknown step 'clone'"},
+             {"[{}]", "copy: serialize, order: [copy, update]", "scene.build.order",
+              "an update after a serialize copy"},
+             {"[]", "", "scene.update", "0 updates: a list holds 1 to 4"},
+             {"[{}, {}, {}, {}, {}]", "", "scene.update", "5 updates"},
+             {"[{}, {blas: {u: [{}]}}]", "", "scene.update[1].blas.u", "unknown BLAS 'u'"}};
+  for (const Bad& b : bad) {
+    const ParseResult r = parseUpdate(b.update, b.build);
+    EXPECT_FALSE(r.value) << b.update << " / " << b.build;
+    const std::string e = firstError(r);
     EXPECT_NE(e.find(b.field), std::string::npos) << e;
     EXPECT_NE(e.find(b.message), std::string::npos) << e;
   }

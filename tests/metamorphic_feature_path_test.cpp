@@ -51,11 +51,11 @@ TEST(FeaturePath, EachPathChangesItsOwnField) {
   EXPECT_EQ(lib.pipeline.libraries[0].hit_groups, (std::vector<uint32_t>{0}));
   EXPECT_EQ(lib.pipeline.libraries[0].callables, (std::vector<uint32_t>{0}));
   const Case updated = *throughPath(c, FeaturePath::Update, &why);
-  ASSERT_TRUE(updated.scene.built);
+  ASSERT_EQ(updated.scene.updates(), 1u);
   EXPECT_TRUE(updated.scene.build.flags & kBuildAllowUpdate);
-  EXPECT_EQ(updated.scene.built->instances.size(), c.scene.instances.size());
+  EXPECT_EQ(updated.scene.earlier.front()->instances.size(), c.scene.instances.size());
   EXPECT_EQ(updated.scene.blases[0].geometries[0].vertices,
-            updated.scene.built->blases[0].geometries[0].vertices);
+            updated.scene.earlier.front()->blases[0].geometries[0].vertices);
 }
 
 TEST(FeaturePath, ACaseWithItsOwnWayThereIsLeftAlone) {

@@ -119,16 +119,31 @@ const char* asCopyName(AsCopy c);  // none, clone, compact, serialize
 struct AsBuild {
   uint32_t flags = 0x4;
   AsCopy copy = AsCopy::None;
+  // scene.build.order: how many of the updates (scene.update) run before the
+  // copy; the rest update the copies. Default: every update, then the copy.
+  std::optional<uint32_t> updates_before_copy;
 };
+
+// At most this many updates in one scene (scene.update as a list).
+constexpr uint32_t kMaxUpdates = 4;
 
 struct Scene {
   std::vector<Blas> blases;
   std::vector<Instance> instances;
   AsBuild build;
-  // R-AS-UPDATE (scene.update): the scene as first built, when an update then
-  // moves it; this Scene is the one after the update, what the traces see.
-  // The device builds `built` with ALLOW_UPDATE and updates it into this one.
-  std::shared_ptr<const Scene> built;
+  // R-AS-UPDATE (scene.update): the scene as first built, then as each update
+  // but the last left it; this Scene is the one after the last update, what
+  // the traces see. The device builds earlier.front() with ALLOW_UPDATE and
+  // updates it in place into each later state in turn.
+  std::vector<std::shared_ptr<const Scene>> earlier;
+  size_t updates() const { return earlier.size(); }
+  // The scene as first built: earlier.front(), or this one without updates.
+  const Scene& firstBuilt() const { return earlier.empty() ? *this : *earlier.front(); }
+  // The updates that run before the copy (build.updates_before_copy, at most
+  // every update).
+  size_t updatesBeforeCopy() const {
+    return std::min<size_t>(build.updates_before_copy.value_or(updates()), updates());
+  }
   // How many top levels the scene has: one past the highest Instance::tlas
   // (a level no instance names is built empty); at least 1.
   uint32_t tlasCount() const {

@@ -14,6 +14,8 @@ void parseScene(YamlReader& r, const YAML::Node& n, Scene& scene);
 // scene.update (parse_update.cpp): `scene` as parsed becomes Scene::built,
 // and `scene` the scene after the update.
 void parseSceneUpdate(YamlReader& r, const YAML::Node& n, Scene& scene);
+// scene.build.order, once scene.update and scene.build.copy are known.
+void parseBuildOrder(YamlReader& r, const YAML::Node& n, Scene& scene);
 // One instance of scene.instances (its blas named among scene.blases).
 void parseInstance(YamlReader& r, const YAML::Node& n, const std::string& field, const Scene& scene,
                    Instance& inst);

@@ -229,7 +229,7 @@ namespace {
 // scene.build: {flags: [..], copy: none | clone | compact} (R-AS-COPY).
 void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
   const std::string f = "scene.build";
-  if (!r.expectMap(n, f, {"flags", "copy"})) return;
+  if (!r.expectMap(n, f, {"flags", "copy", "order"})) return;
   if (auto v = YamlReader::get(n, "flags"); v.IsDefined())
     if (auto x = r.flags(v, f + ".flags", buildFlagNames())) {
       if ((*x & kBuildPreferFastTrace) && (*x & kBuildPreferFastBuild))
@@ -278,6 +278,8 @@ void parseScene(YamlReader& r, const YAML::Node& n, Scene& scene) {
       scene.instances.push_back(inst);
     }
   if (auto u = YamlReader::get(n, "update"); u.IsDefined()) parseSceneUpdate(r, u, scene);
+  if (auto b = YamlReader::get(n, "build"); b.IsMap())
+    if (auto o = YamlReader::get(b, "order"); o.IsDefined()) parseBuildOrder(r, o, scene);
 }
 
 }  // namespace rayspec

@@ -4,6 +4,8 @@
 //       NAME: [{vertices: [...]}, {aabbs: [...]}, {}]   # one entry a geometry
 //     instances:
 //       - {instance: 1, transform: ..., mask: .., custom_index: .., sbt_offset: ..}
+// or a list of such updates (at most kMaxUpdates), each applied in place to
+// what the one before left.
 // Triangles get new vertex positions (as many as before), boxes new boxes (as
 // many as before), `{}` keeps a geometry; an instance gets a new transform,
 // mask, custom index or SBT offset. Counts, indices, flags and the BLAS an
@@ -58,14 +60,14 @@ void updateGeometry(YamlReader& r, const YAML::Node& n, const std::string& f, Ge
   }
 }
 
-void updateBlases(YamlReader& r, const YAML::Node& n, Scene& after) {
+void updateBlases(YamlReader& r, const YAML::Node& n, const std::string& field, Scene& after) {
   if (!n.IsMap()) {
-    r.error(n, "scene.update.blas", "expected a map: BLAS name -> one entry per geometry");
+    r.error(n, field + ".blas", "expected a map: BLAS name -> one entry per geometry");
     return;
   }
   for (const auto& kv : n) {
     const std::string name = kv.first.as<std::string>("");
-    const std::string f = "scene.update.blas." + name;
+    const std::string f = field + ".blas." + name;
     Blas* blas = nullptr;
     for (Blas& b : after.blases)
       if (b.name == name) blas = &b;
@@ -87,8 +89,8 @@ void updateBlases(YamlReader& r, const YAML::Node& n, Scene& after) {
   }
 }
 
-void updateInstances(YamlReader& r, const YAML::Node& n, Scene& after) {
-  const std::string f = "scene.update.instances";
+void updateInstances(YamlReader& r, const YAML::Node& n, const std::string& field, Scene& after) {
+  const std::string f = field + ".instances";
   if (!r.expectSeq(n, f)) return;
   for (size_t i = 0; i < n.size(); ++i) {
     const std::string fi = f + "[" + std::to_string(i) + "]";
@@ -119,17 +121,75 @@ void updateInstances(YamlReader& r, const YAML::Node& n, Scene& after) {
   }
 }
 
+// One update (`field`: its place in the file), applied to `scene`.
+void parseOneUpdate(YamlReader& r, const YAML::Node& n, const std::string& field, Scene& scene) {
+  if (!r.expectMap(n, field, {"blas", "instances"})) return;
+  Scene after = scene;
+  if (auto b = YamlReader::get(n, "blas"); b.IsDefined()) updateBlases(r, b, field, after);
+  if (auto i = YamlReader::get(n, "instances"); i.IsDefined()) updateInstances(r, i, field, after);
+  after.build.flags |= kBuildAllowUpdate;
+  scene.build.flags |= kBuildAllowUpdate;
+  Scene before = scene;
+  before.earlier.clear();
+  after.earlier.push_back(std::make_shared<const Scene>(std::move(before)));
+  scene = std::move(after);
+}
+
 }  // namespace
 
 void parseSceneUpdate(YamlReader& r, const YAML::Node& n, Scene& scene) {
-  if (!r.expectMap(n, "scene.update", {"blas", "instances"})) return;
-  Scene after = scene;
-  if (auto b = YamlReader::get(n, "blas"); b.IsDefined()) updateBlases(r, b, after);
-  if (auto i = YamlReader::get(n, "instances"); i.IsDefined()) updateInstances(r, i, after);
-  after.build.flags |= kBuildAllowUpdate;
-  scene.build.flags |= kBuildAllowUpdate;
-  after.built = std::make_shared<const Scene>(scene);
-  scene = std::move(after);
+  if (!n.IsSequence()) {
+    parseOneUpdate(r, n, "scene.update", scene);
+    return;
+  }
+  if (n.size() == 0 || n.size() > kMaxUpdates) {
+    r.error(
+        n, "scene.update",
+        std::to_string(n.size()) + " updates: a list holds 1 to " + std::to_string(kMaxUpdates));
+    return;
+  }
+  for (size_t k = 0; k < n.size(); ++k)
+    parseOneUpdate(r, n[k], "scene.update[" + std::to_string(k) + "]", scene);
+}
+
+// scene.build.order: [update, copy, update, ...]: each update of scene.update
+// once, in its order, and the copy (scene.build.copy) once where it runs.
+void parseBuildOrder(YamlReader& r, const YAML::Node& n, Scene& scene) {
+  const std::string f = "scene.build.order";
+  if (!r.expectSeq(n, f)) return;
+  uint32_t updates = 0, copies = 0;
+  std::optional<uint32_t> before_copy;
+  for (size_t i = 0; i < n.size(); ++i) {
+    const auto step = r.string(n[i], f + "[" + std::to_string(i) + "]");
+    if (!step) return;
+    if (*step == "update") {
+      ++updates;
+    } else if (*step == "copy") {
+      ++copies;
+      before_copy = updates;
+    } else {
+      r.error(n[i], f + "[" + std::to_string(i) + "]",
+              "unknown step '" + *step + "' (update, copy)");
+      return;
+    }
+  }
+  const bool copied = scene.build.copy != AsCopy::None;
+  if (updates != scene.updates() || copies != (copied ? 1u : 0u)) {
+    r.error(n, f,
+            "names " + std::to_string(updates) + " update(s) and " + std::to_string(copies) +
+                " copy, but the scene has " + std::to_string(scene.updates()) +
+                " update(s) (scene.update) and " + (copied ? "one copy" : "no copy") +
+                " (scene.build.copy): name each once");
+    return;
+  }
+  if (scene.build.copy == AsCopy::Serialize && before_copy && *before_copy < updates) {
+    r.error(n, f,
+            "an update after a serialize copy: a deserialized structure counts as never built "
+            "with ALLOW_UPDATE (VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03667); copy "
+            "last");
+    return;
+  }
+  scene.build.updates_before_copy = before_copy;
 }
 
 }  // namespace rayspec

@@ -98,6 +98,8 @@ std::string libraryGroupsLost(Case& c, ModelOptions& o);
 std::string stackSizeIgnored(Case& c, ModelOptions& o);
 std::string copyDropsInstance(Case& c, ModelOptions& o);
 std::string updateIgnored(Case& c, ModelOptions& o);
+std::string laterUpdatesIgnored(Case& c, ModelOptions& o);
+std::string copyUpdateIgnored(Case& c, ModelOptions& o);
 std::string vertexFormatIgnored(Case& c, ModelOptions& o);
 std::string positionFetchWorldSpace(Case& c, ModelOptions& o);
 std::string localsLostAcrossCalls(Case& c, ModelOptions& o);

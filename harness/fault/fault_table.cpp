@@ -242,6 +242,12 @@ std::vector<FaultImpl> pipelineMutations() {
       {"update-ignored", K::CaseMutation,
        "an acceleration structure update changes nothing: traces see the scene as first built",
        nullptr, updateIgnored},
+      {"later-updates-ignored", K::CaseMutation,
+       "only the first update of a structure takes effect: a second update changes nothing",
+       nullptr, laterUpdatesIgnored},
+      {"copy-update-ignored", K::CaseMutation,
+       "an update of a cloned, compacted or deserialized structure changes nothing", nullptr,
+       copyUpdateIgnored},
       {"vertex-format-ignored", K::CaseMutation,
        "vertices in half or snorm16 formats are traced where the case wrote them, not where the "
        "format puts them",

@@ -75,7 +75,7 @@ std::string floatBitsConverted(Case& c, ModelOptions&) {
 // child, call and callee word indexed by a value is word (i + 1) % N.
 std::string wordIndexOffByOne(Case& c, ModelOptions&) {
   size_t n = 0;
-  auto onePast = [&](Expr& index) {
+  auto one_past = [&](Expr& index) {
     Expr more;
     more.kind = Expr::Kind::Op;
     more.name = "add";
@@ -88,10 +88,10 @@ std::string wordIndexOffByOne(Case& c, ModelOptions&) {
   forEachProgram(c.pipeline, [&](Program& p, Stage) {
     editExpressions(p, [&](Expr& e) {
       if (e.kind == Expr::Kind::Op && wordArrayOfOp(e.name) && e.args.size() == 1)
-        onePast(e.args[0]);
+        one_past(e.args[0]);
     });
     forEachStmt(p, [&](Stmt& s) {
-      if (s.kind == Stmt::Kind::Store && wordArrayOfStore(s.local)) onePast(s.index);
+      if (s.kind == Stmt::Kind::Store && wordArrayOfStore(s.local)) one_past(s.index);
     });
   });
   return describeCount(n, "indexed payload and callable data words one word too far");

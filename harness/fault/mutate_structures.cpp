@@ -20,10 +20,32 @@ std::string copyDropsInstance(Case& c, ModelOptions&) {
 // R-AS-UPDATE broken: an update (scene.update) that changes nothing, as a
 // device whose refit keeps the old vertices, boxes and instances.
 std::string updateIgnored(Case& c, ModelOptions&) {
-  if (!c.scene.built) return "";
-  const std::shared_ptr<const Scene> built = c.scene.built;
+  if (!c.scene.updates()) return "";
+  const std::shared_ptr<const Scene> built = c.scene.earlier.front();
   c.scene = *built;
   return "the update was ignored: the scene as first built";
+}
+
+// R-AS-UPDATE broken for a structure updated before: the first update takes
+// effect, every later one changes nothing (a refit that works only from a
+// fresh build).
+std::string laterUpdatesIgnored(Case& c, ModelOptions&) {
+  if (c.scene.updates() < 2) return "";
+  const size_t updates = c.scene.updates();
+  const std::shared_ptr<const Scene> first = c.scene.earlier[1];
+  c.scene = *first;
+  return "updates 2 to " + std::to_string(updates) + " were ignored: the scene after the first";
+}
+
+// R-AS-UPDATE broken on copies (scene.build.order with an update after the
+// copy): updating a cloned, compacted or deserialized structure changes
+// nothing, as a device whose copy loses what a refit needs.
+std::string copyUpdateIgnored(Case& c, ModelOptions&) {
+  const size_t before = c.scene.updatesBeforeCopy(), updates = c.scene.updates();
+  if (c.scene.build.copy == AsCopy::None || before == updates) return "";
+  const std::shared_ptr<const Scene> at_copy = c.scene.earlier[before];
+  c.scene = *at_copy;
+  return "the " + std::to_string(updates - before) + " update(s) of the copies were ignored";
 }
 
 // R-VERTEX-FORMAT broken: a device that does not round positions to their
@@ -44,7 +66,7 @@ std::string vertexFormatIgnored(Case& c, ModelOptions&) {
 // when it numbers the rest (gl_GeometryIndexEXT, gl_InstanceID and the SBT
 // index that follows from them).
 std::string emptyGeometryRenumbered(Case& c, ModelOptions&) {
-  if (c.scene.built) return "";
+  if (c.scene.updates()) return "";
   size_t geometries = 0, instances = 0;
   for (Blas& b : c.scene.blases) {
     const size_t before = b.geometries.size();

@@ -82,7 +82,7 @@ std::vector<RuleFaults> pipelineRules() {
       {"R-INDIRECT", {"indirect-launch-short"}, {}},
       {"R-STACK", {"stack-size-ignored"}, {}},
       {"R-AS-COPY", {"copy-drops-instance"}, {}},
-      {"R-AS-UPDATE", {"update-ignored"}, {}},
+      {"R-AS-UPDATE", {"update-ignored", "later-updates-ignored", "copy-update-ignored"}, {}},
       {"R-VERTEX-FORMAT", {"vertex-format-ignored"}, {}},
       {"R-POSITION-FETCH", {"position-fetch-world-space"}, {}},
       {"R-LAUNCH-3D", {"launch-depth-lost", "zero-launch-runs", "wide-launch-truncated"}, {}},

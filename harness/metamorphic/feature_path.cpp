@@ -60,12 +60,12 @@ bool copied(Case& c, AsCopy copy, std::string* why_not) {
 // Built with ALLOW_UPDATE, then updated in place to the very same geometry
 // and instances (scene.update with nothing moved).
 bool updatedInPlace(Case& c, std::string* why_not) {
-  if (c.scene.built) {
+  if (c.scene.updates()) {
     *why_not = "the case updates its structures itself";
     return false;
   }
   c.scene.build.flags |= kBuildAllowUpdate;
-  c.scene.built = std::make_shared<const Scene>(c.scene);
+  c.scene.earlier.push_back(std::make_shared<const Scene>(c.scene));
   return true;
 }
 

@@ -1,6 +1,7 @@
 #include "vulkan/acceleration_structure.h"
 
 #include <cstring>
+#include <functional>
 #include <vector>
 
 #include "case/flag_names.h"
@@ -358,100 +359,121 @@ VkDeviceAddress createScratch(const VulkanContext& ctx, const ScratchPlan& scrat
   return alignUp(buffer.address, scratch.align);
 }
 
-// The builds of one scene: BLASes (and their updates), then TLASes (and
-// their updates), each level's instances in a host-visible buffer so that
-// copies of the BLASes can be referenced once they exist.
+// The builds of one scene: BLASes, their updates and copy in the order of
+// scene.build.order, then TLASes over the final BLASes, their updates and
+// copy in the same order. Each state's instances (as first built, after each
+// update) in a host-visible buffer, written once the BLASes are final.
 class SceneBuilder {
  public:
   SceneBuilder(const VulkanContext& ctx, const Scene& scene,
                VkBuildAccelerationStructureFlagsKHR extra_flags, Cleanup& cleanup)
-      : ctx_(ctx),
-        scene_(scene),
-        first_(scene.built ? *scene.built : scene),
-        flags_(buildFlags(scene.build) | extra_flags),
-        cleanup_(cleanup) {
+      : ctx_(ctx), scene_(scene), flags_(buildFlags(scene.build) | extra_flags), cleanup_(cleanup) {
+    for (const auto& e : scene.earlier) states_.push_back(e.get());
+    states_.push_back(&scene);
     scratch_.align = ctx.as_props.minAccelerationStructureScratchOffsetAlignment;
   }
 
   std::vector<VkAccelerationStructureKHR> run() {
     describeBlases();
     createTopLevels();
-    const VkDeviceAddress base = createScratch(ctx_, scratch_, cleanup_);
-    for (Builds* b : {&blases_, &blas_updates_, &tlases_, &tlas_updates_}) b->placeScratch(base);
+    placeScratch(createScratch(ctx_, scratch_, cleanup_));
     VkCommandBuffer cmd = beginCommands(ctx_, cleanup_);
-    blases_.record(ctx_, cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR);
-    blas_updates_.record(ctx_, cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR);
-    if (scene_.build.copy != AsCopy::None) {
-      submitAndWait(ctx_, cmd, kBuildTimeoutNs);
-      copyBlases();
-      cmd = beginCommands(ctx_, cleanup_);
-    }
-    const VkPipelineStageFlags next = VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
-                                      VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR;
-    tlases_.record(ctx_, cmd, next);
-    tlas_updates_.record(ctx_, cmd, next);
+    runLevel(cmd, blases_, blas_updates_, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+             [this] { copyBlases(); });
+    for (size_t k = 0; k < states_.size(); ++k) writeInstances(*states_[k], instances_[k]);
+    runLevel(cmd, tlases_, tlas_updates_,
+             VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
+                 VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+             [this] { copyTlases(); });
     submitAndWait(ctx_, cmd, kBuildTimeoutNs);
     std::vector<VkAccelerationStructureKHR> out;
-    for (const BuiltStructure& t :
-         copyStructures(ctx_, tlas_structures_, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
-                        scene_.build.copy, cleanup_))
-      out.push_back(t.handle);
+    for (const BuiltStructure& t : tlas_structures_) out.push_back(t.handle);
     return out;
   }
 
  private:
-  // Every reached BLAS of the scene as first built, and (scene.update) the
-  // geometry it is updated to: one input buffer for both.
+  const Scene& first() const { return *states_.front(); }
+  size_t updates() const { return states_.size() - 1; }
+
+  void placeScratch(VkDeviceAddress base) {
+    blases_.placeScratch(base);
+    tlases_.placeScratch(base);
+    for (Builds& b : blas_updates_) b.placeScratch(base);
+    for (Builds& b : tlas_updates_) b.placeScratch(base);
+  }
+
+  // One level: its builds, then each update in turn, the copy (submitted and
+  // waited on, then the updates after it retargeted to the copies) where
+  // scene.build.order puts it.
+  void runLevel(VkCommandBuffer& cmd, const Builds& builds, const std::vector<Builds>& updates,
+                VkPipelineStageFlags next, const std::function<void()>& copy) {
+    builds.record(ctx_, cmd, next);
+    const size_t copy_at =
+        scene_.build.copy == AsCopy::None ? updates.size() + 1 : scene_.updatesBeforeCopy();
+    for (size_t k = 0; k <= updates.size(); ++k) {
+      if (k == copy_at) {
+        submitAndWait(ctx_, cmd, kBuildTimeoutNs);
+        copy();
+        cmd = beginCommands(ctx_, cleanup_);
+      }
+      if (k < updates.size()) updates[k].record(ctx_, cmd, next);
+    }
+  }
+
+  // Every reached BLAS of the scene as first built, and the geometry each
+  // update moves it to: one input buffer for all.
   void describeBlases() {
-    const std::vector<bool> used = reachedBlases(first_);
+    const std::vector<bool> used = reachedBlases(first());
     InputPacker packer;
-    builds_.resize(first_.blases.size());
-    updates_.resize(scene_.built ? first_.blases.size() : 0);
-    for (size_t i = 0; i < first_.blases.size(); ++i) {
+    builds_.resize(first().blases.size());
+    updates_.assign(updates(), std::vector<BlasBuild>(first().blases.size()));
+    for (size_t i = 0; i < first().blases.size(); ++i) {
       if (!used[i]) continue;
-      describeBlas(first_.blases[i], packer, builds_[i]);
-      if (scene_.built) describeBlas(scene_.blases[i], packer, updates_[i]);
+      describeBlas(first().blases[i], packer, builds_[i]);
+      for (size_t k = 0; k < updates(); ++k)
+        describeBlas(states_[k + 1]->blases[i], packer, updates_[k][i]);
     }
     if (!packer.bytes().empty()) {
       const Buffer inputs = createUploadBuffer(ctx_, packer.bytes().data(), packer.bytes().size(),
                                                kInputUsage, cleanup_);
       for (BlasBuild& b : builds_) patchAddresses(b, inputs.address);
-      for (BlasBuild& b : updates_) patchAddresses(b, inputs.address);
+      for (auto& state : updates_)
+        for (BlasBuild& b : state) patchAddresses(b, inputs.address);
     }
     blases_ = createBlases(ctx_, builds_, used, flags_, scratch_, cleanup_);
-    if (!scene_.built) return;
-    std::vector<const std::vector<VkAccelerationStructureGeometryKHR>*> geometries;
-    std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
-    for (size_t i : blases_.blas) {
-      geometries.push_back(&updates_[i].geometries);
-      ranges.push_back(updates_[i].ranges.data());
+    for (const auto& state : updates_) {
+      std::vector<const std::vector<VkAccelerationStructureGeometryKHR>*> geometries;
+      std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
+      for (size_t i : blases_.blas) {
+        geometries.push_back(&state[i].geometries);
+        ranges.push_back(state[i].ranges.data());
+      }
+      blas_updates_.push_back(updatesOf(blases_, geometries, ranges, scratch_));
     }
-    blas_updates_ = updatesOf(blases_, geometries, ranges, scratch_);
   }
 
   // One TLAS per level, each over all instances (the other levels'
-  // inactive); with scene.update, their update to the moved instances.
+  // inactive); per update, their update to that state's instances.
   void createTopLevels() {
-    const uint32_t levels = first_.tlasCount();
-    instance_count_ = static_cast<uint32_t>(first_.instances.size());
+    const uint32_t levels = first().tlasCount();
+    instance_count_ = static_cast<uint32_t>(first().instances.size());
     tlas_range_.primitiveCount = instance_count_;
     const VkDeviceSize bytes = std::max<VkDeviceSize>(1, size_t(levels) * instance_count_) *
                                sizeof(VkAccelerationStructureInstanceKHR);
-    first_instances_ = createBuffer(ctx_, bytes, kInputUsage, MemoryUse::Host, cleanup_);
-    writeInstances(first_, first_instances_);
-    tlas_geometry_ = instanceGeometry(first_instances_.address, levels, instance_count_);
-    tlases_ = createTlases(ctx_, tlas_geometry_, instance_count_, &tlas_range_, flags_, scratch_,
+    for (size_t k = 0; k < states_.size(); ++k) {
+      instances_.push_back(createBuffer(ctx_, bytes, kInputUsage, MemoryUse::Host, cleanup_));
+      geometry_.push_back(instanceGeometry(instances_.back().address, levels, instance_count_));
+    }
+    tlases_ = createTlases(ctx_, geometry_[0], instance_count_, &tlas_range_, flags_, scratch_,
                            tlas_structures_, cleanup_);
-    if (!scene_.built) return;
-    moved_instances_ = createBuffer(ctx_, bytes, kInputUsage, MemoryUse::Host, cleanup_);
-    writeInstances(scene_, moved_instances_);
-    moved_geometry_ = instanceGeometry(moved_instances_.address, levels, instance_count_);
-    std::vector<const std::vector<VkAccelerationStructureGeometryKHR>*> geometries;
-    for (const auto& g : moved_geometry_) geometries.push_back(&g);
-    tlas_updates_ = updatesOf(
-        tlases_, geometries,
-        std::vector<const VkAccelerationStructureBuildRangeInfoKHR*>(levels, &tlas_range_),
-        scratch_);
+    for (size_t k = 1; k < states_.size(); ++k) {
+      std::vector<const std::vector<VkAccelerationStructureGeometryKHR>*> geometries;
+      for (const auto& g : geometry_[k]) geometries.push_back(&g);
+      tlas_updates_.push_back(updatesOf(
+          tlases_, geometries,
+          std::vector<const VkAccelerationStructureBuildRangeInfoKHR*>(levels, &tlas_range_),
+          scratch_));
+    }
   }
 
   void writeInstances(const Scene& scene, Buffer& buffer) const {
@@ -461,35 +483,57 @@ class SceneBuilder {
                   instances.size() * sizeof(VkAccelerationStructureInstanceKHR));
   }
 
-  // R-AS-COPY: the BLASes replaced by their copies, and the instance buffers
-  // rewritten to reference the copies.
+  // The updates from the copy on act on the copies (R-AS-COPY, R-AS-UPDATE).
+  static void retarget(std::vector<Builds>& updates, size_t from,
+                       const std::vector<VkAccelerationStructureKHR>& handles) {
+    for (size_t k = from; k < updates.size(); ++k)
+      for (size_t i = 0; i < updates[k].infos.size() && i < handles.size(); ++i)
+        updates[k].infos[i].srcAccelerationStructure =
+            updates[k].infos[i].dstAccelerationStructure = handles[i];
+  }
+
+  // R-AS-COPY: the BLASes replaced by their copies (the instance buffers,
+  // written after, reference the copies).
   void copyBlases() {
     std::vector<BuiltStructure> from;
     for (size_t i : blases_.blas) from.push_back({builds_[i].handle, builds_[i].size});
     const std::vector<BuiltStructure> to = copyStructures(
         ctx_, from, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, scene_.build.copy, cleanup_);
+    std::vector<VkAccelerationStructureKHR> handles;
     for (size_t k = 0; k < to.size(); ++k) {
       BlasBuild& b = builds_[blases_.blas[k]];
       b.handle = to[k].handle;
       b.size = to[k].size;
       b.address = structureAddress(ctx_, b.handle);
+      handles.push_back(b.handle);
     }
-    writeInstances(first_, first_instances_);
-    if (scene_.built) writeInstances(scene_, moved_instances_);
+    retarget(blas_updates_, scene_.updatesBeforeCopy(), handles);
+  }
+
+  // The TLASes replaced by their copies.
+  void copyTlases() {
+    tlas_structures_ =
+        copyStructures(ctx_, tlas_structures_, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
+                       scene_.build.copy, cleanup_);
+    std::vector<VkAccelerationStructureKHR> handles;
+    for (const BuiltStructure& t : tlas_structures_) handles.push_back(t.handle);
+    retarget(tlas_updates_, scene_.updatesBeforeCopy(), handles);
   }
 
   const VulkanContext& ctx_;
-  const Scene& scene_;                                // as the traces see it
-  const Scene& first_;                                // as first built (scene.update: Scene::built)
+  const Scene& scene_;                // as the traces see it
+  std::vector<const Scene*> states_;  // as first built, after each update (the last: scene_)
   const VkBuildAccelerationStructureFlagsKHR flags_;  // every build's and update's
   Cleanup& cleanup_;
   ScratchPlan scratch_;
-  std::vector<BlasBuild> builds_, updates_;
-  Builds blases_, blas_updates_, tlases_, tlas_updates_;
+  std::vector<BlasBuild> builds_;
+  std::vector<std::vector<BlasBuild>> updates_;  // per update: each BLAS's new geometry
+  Builds blases_, tlases_;
+  std::vector<Builds> blas_updates_, tlas_updates_;  // per update
   uint32_t instance_count_ = 0;
   VkAccelerationStructureBuildRangeInfoKHR tlas_range_{};
-  Buffer first_instances_, moved_instances_;
-  std::vector<std::vector<VkAccelerationStructureGeometryKHR>> tlas_geometry_, moved_geometry_;
+  std::vector<Buffer> instances_;                                                       // per state
+  std::vector<std::vector<std::vector<VkAccelerationStructureGeometryKHR>>> geometry_;  // per state
   std::vector<BuiltStructure> tlas_structures_;
 };
 
