@@ -17,6 +17,12 @@ std::string percent(size_t part, size_t whole) {
   return text;
 }
 
+std::string seconds(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f s", s);
+  return text;
+}
+
 std::string cellText(const KillCell& c) {
   if (!c.applied) return ".";
   return std::to_string(c.killed) + "/" + std::to_string(c.applied);
@@ -47,6 +53,8 @@ KillMatrix buildKillMatrix(const std::vector<CaseMutation>& cases) {
     }
     m.legal_variants += applied;
     m.legal_cases += applied ? 1 : 0;
+    m.legal_seconds += c.legal_seconds;
+    m.mutant_seconds += c.mutant_seconds;
     if (!c.judged) {
       m.not_judged.push_back({c.name, c.not_judged});
       continue;
@@ -109,6 +117,8 @@ std::string killMatrixText(const KillMatrix& m) {
   out += "Legal devices: " + std::to_string(m.false_alarms.size()) + " false alarms of " +
          std::to_string(m.legal_variants) + " variants (" + std::to_string(m.legal_cases) +
          " cases)\n";
+  out += "Time, summed over the cases: legal devices " + seconds(m.legal_seconds) +
+         ", generic mutants " + seconds(m.mutant_seconds) + "\n";
   for (const FalseAlarm& a : m.false_alarms)
     out += "  false alarm: " + a.case_name + "  " + a.device + "  ray " +
            (a.ray < 0 ? std::string("-") : std::to_string(a.ray)) + "  " + a.rule + ": " +
@@ -141,6 +151,7 @@ std::string killMatrixJson(const KillMatrix& m, const std::string& run_dir,
   for (const Survivor& s : m.survivors)
     j["survivors"].push_back(
         {{"case", s.case_name}, {"mutant", s.mutant}, {"what", s.what}, {"reason", s.reason}});
+  j["seconds"] = {{"legal_devices", m.legal_seconds}, {"generic_mutants", m.mutant_seconds}};
   j["legal_devices"] = {{"variants", m.legal_variants},
                         {"cases", m.legal_cases},
                         {"false_alarms", nlohmann::json::array()}};

@@ -36,6 +36,8 @@ struct KillMatrix {
   // that failed.
   size_t legal_variants = 0, legal_cases = 0;
   std::vector<FalseAlarm> false_alarms;
+  // Wall seconds summed over the cases: the legal devices, the generic mutants.
+  double legal_seconds = 0, mutant_seconds = 0;
   size_t unexplained() const;
   size_t nullKilled() const {
     return by_kind.count("null-device") ? by_kind.at("null-device").killed : 0;

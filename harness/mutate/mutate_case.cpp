@@ -1,6 +1,9 @@
 #include "mutate/mutate_case.h"
 
+#include <chrono>
+
 #include "compare/compare_results.h"
+
 #include "mutate/legal_survival.h"
 
 namespace rayspec {
@@ -32,7 +35,10 @@ CaseMutation mutateCase(const Case& c, const Plan& plan, const Results& device,
   CaseMutation out;
   out.name = c.name;
   out.family = c.family;
+  const auto start = std::chrono::steady_clock::now();
   out.legal_devices = judgeLegalDevices(c, plan, model, threads);
+  const auto legal_done = std::chrono::steady_clock::now();
+  out.legal_seconds = std::chrono::duration<double>(legal_done - start).count();
   const Verdict unmutated = compareResults(c, plan, device, model);
   if (unmutated.status != Status::Pass && unmutated.status != Status::QualityWarning) {
     out.not_judged = "the device results as saved: " + unmutated.headline();
@@ -42,6 +48,8 @@ CaseMutation mutateCase(const Case& c, const Plan& plan, const Results& device,
   const MutantInput in{c, plan, model};
   for (const GenericMutant& g : genericMutants(c, device))
     out.mutants.push_back(judgeMutant(in, g, device));
+  out.mutant_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - legal_done).count();
   return out;
 }
 

@@ -25,6 +25,8 @@ struct CaseMutation {
   std::string not_judged;    // why
   std::vector<MutantOutcome> mutants;
   std::vector<LegalDevice> legal_devices;  // each must not fail (legal_devices.h)
+  // Wall seconds spent on the legal devices and on the generic mutants.
+  double legal_seconds = 0, mutant_seconds = 0;
 };
 
 // The unmutated device results must pass (Pass or QualityWarning) for the
