@@ -7,6 +7,12 @@
 //                                       length of img.raw, which follows; the
 //                                       rest is records.bin
 //   3  a run folder's summary.json      report/outcome_json.h
+//   4  a SPIR-V cache entry             spirv/spirv_cache.h: up to the first
+//                                       NUL byte the .sum file, the rest the
+//                                       .spv module; the property: it is a
+//                                       miss (no sum of the fuzzer's can match
+//                                       SHA-256 of the key and module), or the
+//                                       module is exactly what the test wrote
 // Every input must end in a value or an error: never a crash, a hang, a leak
 // or undefined behaviour. And the path-escape property: whatever a reader
 // accepts is safe to make paths of (case names, image names) and sized as
@@ -25,6 +31,8 @@
 #include "results/file_name.h"
 #include "results/record_layout.h"
 #include "results/results_io.h"
+#include "spirv/compile_glsl.h"
+#include "spirv/spirv_cache.h"
 
 namespace {
 namespace fs = std::filesystem;
@@ -91,6 +99,24 @@ void summaryFile(const std::string& text) {
     require(rayspec::caseNameProblem(o.name).empty());
 }
 
+void spirvCacheEntry(const std::string& text) {
+  const size_t nul = text.find('\0');
+  const std::string key = rayspec::spirvCacheKey("fuzz", rayspec::Stage::Miss);
+  write(workDir() / rayspec::spirvCacheSumName(key), text.substr(0, nul));
+  write(workDir() / rayspec::spirvCacheFileName(key),
+        nul == std::string::npos ? std::string() : text.substr(nul + 1));
+  rayspec::setSpirvCacheDir(workDir().string());
+  rayspec::clearSpirvMemoryCache();
+  std::vector<uint32_t> words;
+  require(!rayspec::spirvCacheLookup(key, words));
+  // What the cache itself writes reads back.
+  const std::vector<uint32_t> module = {0x07230203u, 0x00010400u, 0u, 1u, 0u};
+  rayspec::spirvCacheStore(key, module);
+  rayspec::clearSpirvMemoryCache();
+  require(rayspec::spirvCacheLookup(key, words) && words == module);
+  rayspec::setSpirvCacheDir("");
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -99,7 +125,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   fs::remove_all(workDir(), ec);
   fs::create_directories(workDir(), ec);
   const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
-  switch (data[0] % 4) {
+  switch (data[0] % 5) {
     case 0:
       baselineFile(text);
       break;
@@ -109,8 +135,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     case 2:
       resultsBundle(text);
       break;
-    default:
+    case 3:
       summaryFile(text);
+      break;
+    default:
+      spirvCacheEntry(text);
       break;
   }
   return 0;

@@ -100,11 +100,11 @@ TEST(GlslControlFlow, SpecializationReachesEachShader) {
   const Case c = triangleCase(
       "  constants: {n: 2, scale: 0.5, on: false}\n"
       "  specialize: {raygen: {scale: 2, on: true}, miss0: {n: 7}}\n"
-      "  raygen: [trace: {}, {if: const.on, then: [{record: {hit_t: const.scale}}]}]\n"
+      "  raygen: [trace: {}, {if: const.on, then: [{record: {ray_tmin: const.scale}}]}]\n"
       "  miss: [[payload: {value: const.n}]]\n"
       "  hit_groups: [{closest_hit: [payload: {value: 1}]}]\n"
       "outputs:\n"
-      "  per_ray: [hit_t]\n");
+      "  per_ray: [ray_tmin]\n");
   const GeneratedPipeline g = generateGlsl(c, derivePlan(c));
   using Pairs = std::vector<std::pair<uint32_t, uint32_t>>;
   EXPECT_EQ(g.raygen.specialization, (Pairs{{1, 0x40000000u}, {2, 1u}}));

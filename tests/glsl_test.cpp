@@ -223,7 +223,7 @@ HitGroup fullSphereGroup() {
       Program{recordBuiltins({"object_ray_origin"}), ifs(op("sphere_hit"), {rep}, {rep2}),
               record({{"color", op("vec4", {op("length", {b("aabb_max")})})}})};
   spheres.closest_hit = Program{recordBuiltins({"hit", "barycentrics", "hit_kind"}),
-                                record({{"hit_t", op("round", {b("hit_t")})}})};
+                                record({{"ray_tmax", op("round", {b("hit_t")})}})};
   spheres.any_hit = Program{ifs(op("eq", {b("hit_kind"), u(5)}), {kind(Stmt::Kind::Ignore)})};
   return spheres;
 }

@@ -361,10 +361,10 @@ pipeline:
   miss:
     - [record: {hit: 0}]
   hit_groups:
-    - closest_hit: [record: {hit: 1, primitive_id: {mod: [7, {sub: [launch_id_x, 1]}]}}]
+    - closest_hit: [record: {hit: 1, value1: {mod: [7, {sub: [launch_id_x, 1]}]}}]
 outputs:
   counters: []
-  per_ray: [hit, primitive_id, value]
+  per_ray: [hit, value1, value]
 )";
 
 TEST(ModelUndefined, UintDivisionAndModuloByZero) {
@@ -379,10 +379,10 @@ TEST(ModelUndefined, UintDivisionAndModuloByZero) {
            "pipeline.raygen[1].record.value: uint division by zero"}},
          {1,
           {UndefinedReason::DivisionByZero,
-           "pipeline.hit_groups[0].closest_hit[0].record.primitive_id: uint modulo by zero"}}},
+           "pipeline.hit_groups[0].closest_hit[0].record.value1: uint modulo by zero"}}},
         modelTierName(tier));
     EXPECT_EQ(word(r, 2, "value"), 50u);
-    EXPECT_EQ(word(r, 2, "primitive_id"), 0u);    // 7 mod 1
+    EXPECT_EQ(word(r, 2, "value1"), 0u);          // 7 mod 1
     EXPECT_EQ(word(r, 0, "value"), 0xFFFFFFFFu);  // the documented value
   }
 }

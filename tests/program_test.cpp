@@ -228,9 +228,9 @@ TEST(CheckProgram, CountersMustBeDeclared) {
 
 TEST(CheckProgram, RecordFields) {
   Stmt s = stmt(Stmt::Kind::Record, 2);
-  s.assigns = {{"hit_t", lit(1)}};  // Uint literal where Float is wanted: promoted
+  s.assigns = {{"ray_tmin", lit(1)}};  // Uint literal where Float is wanted: promoted
   Program p = {s};
-  EXPECT_FALSE(checkProgram(p, Stage::Miss, {}, {"hit_t"}));
+  EXPECT_FALSE(checkProgram(p, Stage::Miss, {}, {"ray_tmin"}));
   EXPECT_EQ(p[0].assigns[0].second.type, ValueType::Float);
   // not declared
   auto e = checkProgram(p, Stage::Miss, {}, {"hit"});

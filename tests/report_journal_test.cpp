@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "report/case_journal.h"
+#include "report/escape.h"
 #include "report/outcome_json.h"
 #include "report/write_reports.h"
 
@@ -59,6 +60,29 @@ TEST(Journal, ABadLineInTheMiddleIsAnErrorNamingIt) {
 
 // summary.json written at the start (no case, interrupted) and a journal of
 // the cases that ended: the saved run is the journal's.
+// A summary.json names each case's images, which become links in
+// report.html: a name that climbs out is an error (issue 44).
+TEST(Journal, AnImageNameThatClimbsIsRefused) {
+  const std::string dir = freshDir("image-name");
+  CaseOutcome o = outcome("family/a", Status::Pass);
+  o.images = {"../../../../tmp/probe"};
+  RunInfo info;
+  info.device = "dev";
+  info.model_tier = "exact";
+  ASSERT_EQ(writeSummaryJson({o}, info, dir + "/summary.json"), "");
+  const Result<SavedRun> saved = readSavedRun(dir);
+  ASSERT_FALSE(saved);
+  EXPECT_NE(saved.error().format().find("'images': '../../../../tmp/probe'"), std::string::npos)
+      << saved.error().format();
+}
+
+// Control bytes in a saved message stay out of the XML (junit.xml,
+// report.html): shown as \xNN.
+TEST(Journal, ControlBytesNeverReachTheXml) {
+  const std::string escaped = xmlEscape(std::string("bell\x07 esc\x1b nul") + '\0' + "<&>\xff");
+  EXPECT_EQ(escaped, "bell\\x07 esc\\x1B nul\\x00&lt;&amp;&gt;\\xFF");
+}
+
 TEST(Journal, AnInterruptedRunIsReadFromItsJournal) {
   const std::string dir = freshDir("interrupted");
   RunInfo info;

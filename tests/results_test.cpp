@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
+
 #include <bit>
 #include <cstring>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -173,6 +175,31 @@ TEST(ResultsIo, BadBundlesNameTheFieldOrFile) {
                        " bytes; results.json says width x height x record words 3 x 2 x"),
             std::string::npos)
       << error;
+}
+
+// An image whose width x height x channels x 4 bytes wraps 64 bits (issue
+// 44: 2^30 x 2^30 x 4 channels matched an empty .raw) is an error, as is a
+// channel count no image has.
+TEST(ResultsIo, ImageSizesThatWrapAreErrors) {
+  const std::string dir = testing::TempDir() + "/rayspec-results-wrap";
+  const auto edited = [&](uint64_t width, uint64_t height, uint64_t channels) {
+    std::filesystem::remove_all(dir);
+    EXPECT_EQ(writeResults(sampleResults(), dir, {}), "");
+    nlohmann::json j = nlohmann::json::parse(std::ifstream(dir + "/results.json"));
+    j["images"][1]["width"] = width;
+    j["images"][1]["height"] = height;
+    j["images"][1]["channels"] = channels;
+    std::ofstream(dir + "/results.json") << j.dump();
+    std::filesystem::resize_file(dir + "/color.raw", 0);
+    std::string error;
+    orError(readResults(dir), &error);
+    return error;
+  };
+  EXPECT_NE(edited(1u << 30, 1u << 30, 4).find("more words than a file can hold"),
+            std::string::npos);
+  EXPECT_NE(edited(1u << 30, 1u << 30, 1).find("color.raw holds 0 bytes"), std::string::npos);
+  EXPECT_NE(edited(3, 2, 5).find("1 to 4 channels"), std::string::npos);
+  EXPECT_NE(edited(3, 2, 0).find("1 to 4 channels"), std::string::npos);
 }
 
 TEST(ResultsIo, MissingBundleIsAnError) {

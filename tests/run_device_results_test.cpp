@@ -101,6 +101,29 @@ TEST(SavedDevice, BundleOfAnotherCaseOrWithoutHashIsRefused) {
   EXPECT_THROW(SavedDevice(old).run(c, derivePlan(c)), HarnessError);
 }
 
+// A bundle's counters are those the case keeps: a counter it does not declare
+// (mutate would make mutants of it) refuses the bundle, naming the counter.
+TEST(SavedDevice, ACounterTheCaseDoesNotKeepRefusesTheBundle) {
+  const Case c = parsed(caseText());
+  const Plan plan = derivePlan(c);
+  ASSERT_FALSE(plan.counters.empty());
+  const std::string dir = savedRun("counters");
+  Results r = save(dir, c, c.name, c.source_hash);
+  for (const std::string& kept : plan.counters) r.counters[kept] = 1;
+  ASSERT_EQ(writeResults(r, savedBundleDir(dir, c.name), {}), "");
+  EXPECT_NO_THROW(SavedDevice(dir).run(c, plan));
+  r.counters["junk"] = 5;
+  ASSERT_EQ(writeResults(r, savedBundleDir(dir, c.name), {}), "");
+  try {
+    SavedDevice(dir).run(c, plan);
+    ADD_FAILURE() << "a bundle with an undeclared counter was accepted";
+  } catch (const HarnessError& e) {
+    EXPECT_NE(std::string(e.what()).find("counter 'junk' is not one the case keeps"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(SavedDevice, PermutedCaseHasItsOwnHash) {
   const Case c = parsed(caseText());
   const uint64_t seed1 = permuteCase(c, 1).permuted.source_hash;

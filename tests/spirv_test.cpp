@@ -1,7 +1,9 @@
 // GLSL -> SPIR-V through glslang, validated by SPIRV-Tools, cached by content.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "spirv/compile_glsl.h"
@@ -119,6 +121,60 @@ TEST(CompileGlsl, DiskCacheSurvivesTheMemoryCache) {
   EXPECT_EQ(first.words, third.words);
   setSpirvCacheDir("");
   std::filesystem::remove_all(dir);
+}
+
+TEST(CompileGlsl, CacheKeysAreSha256) {
+  const std::string key = spirvCacheKey("x", Stage::Miss);
+  EXPECT_EQ(key.size(), 64u);
+  EXPECT_EQ(key.find_first_not_of("0123456789abcdef"), std::string::npos);
+}
+
+// Poisoned entries (issue 44): another text's module under this key, junk
+// after the magic number, a FIFO, a link: each is a miss, compiled anew and
+// rewritten, never a module used for this text.
+TEST(CompileGlsl, APoisonedCacheEntryIsAMissAndIsRewritten) {
+  namespace fs = std::filesystem;
+  const fs::path dir =
+      fs::temp_directory_path() /
+      ("rayspec-spirv-poison-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+  fs::remove_all(dir);
+  setSpirvCacheDir(dir.string());
+  const std::string glsl = std::string(kAnyHit) + "// poisoned cache test\n";
+  const std::string other = std::string(kAnyHit) + "// another text\n";
+  const SpirvResult good = compileGlsl(glsl, Stage::AnyHit);
+  const SpirvResult foreign = compileGlsl(other, Stage::AnyHit);
+  ASSERT_TRUE(good.error.empty() && foreign.error.empty());
+  const std::string key = spirvCacheKey(glsl, Stage::AnyHit);
+  const std::string other_key = spirvCacheKey(other, Stage::AnyHit);
+  const fs::path spv = dir / spirvCacheFileName(key), sum = dir / spirvCacheSumName(key);
+  auto recompiles = [&](const std::string& what) {
+    clearSpirvMemoryCache();
+    const SpirvResult r = compileGlsl(glsl, Stage::AnyHit);
+    EXPECT_FALSE(r.from_cache) << what;
+    EXPECT_EQ(r.words, good.words) << what;
+    EXPECT_EQ(fs::symlink_status(spv).type(), fs::file_type::regular) << what;
+  };
+  // Another text's module and sum copied under this key.
+  fs::copy_file(dir / spirvCacheFileName(other_key), spv, fs::copy_options::overwrite_existing);
+  fs::copy_file(dir / spirvCacheSumName(other_key), sum, fs::copy_options::overwrite_existing);
+  recompiles("another text's entry");
+  // Junk after the magic number, the sum left as it was.
+  {
+    std::fstream f(spv, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(8);
+    f.write("junkjunk", 8);
+  }
+  recompiles("junk after the magic");
+  // A FIFO in place of the module (opening it would block).
+  fs::remove(spv);
+  ASSERT_EQ(::mkfifo(spv.c_str(), 0600), 0);
+  recompiles("a FIFO");
+  // A link to a file elsewhere.
+  fs::remove(spv);
+  fs::create_symlink(dir / spirvCacheFileName(other_key), spv);
+  recompiles("a link");
+  setSpirvCacheDir("");
+  fs::remove_all(dir);
 }
 
 }  // namespace

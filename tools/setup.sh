@@ -15,7 +15,7 @@ PACKAGES=(
   libembree-dev libtbb-dev
   libopenimageio-dev openimageio-tools
   libgtest-dev libgmock-dev googletest libbenchmark-dev
-  libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libre2-dev
+  libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libre2-dev libssl-dev
   chromium fonts-dejavu-core gnuplot-nox
   clang libclang-rt-14-dev clang-format universal-ctags
   ccache

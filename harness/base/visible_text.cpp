@@ -1,6 +1,7 @@
 #include "base/visible_text.h"
 
 #include <cstdio>
+#include <string>
 
 namespace rayspec {
 
@@ -16,6 +17,11 @@ std::string visibleText(const std::string& text) {
     out += hex;
   }
   return out;
+}
+
+std::string visibleText(const std::string& text, size_t max_bytes) {
+  const std::string out = visibleText(text.substr(0, max_bytes));
+  return text.size() > max_bytes ? out + "... (" + std::to_string(text.size()) + " bytes)" : out;
 }
 
 }  // namespace rayspec

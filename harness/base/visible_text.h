@@ -3,10 +3,13 @@
 // harness's own messages are ASCII) written as \xNN.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 namespace rayspec {
 
 std::string visibleText(const std::string& text);
+// At most max_bytes of it, then "... (N bytes)" when it is longer.
+std::string visibleText(const std::string& text, size_t max_bytes);
 
 }  // namespace rayspec

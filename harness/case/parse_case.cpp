@@ -5,12 +5,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 
 #include "base/visible_text.h"
 #include "base/whole_file.h"
 #include "case/case_parts.h"
+#include "case/yaml_shape.h"
 #include "results/content_hash.h"
 #include "results/file_name.h"
 
@@ -18,17 +18,37 @@ namespace rayspec {
 
 namespace {
 
+// A rule label: "R-", then words of capitals and digits joined by single
+// '-' (R-AHIT-DUP), at most 64 characters. A plain scanner: no regular
+// expression runs on input text.
+bool isRuleLabel(const std::string& s) {
+  if (s.size() > 64 || s.rfind("R-", 0) != 0) return false;
+  bool word = false;  // the current word has a character
+  for (size_t i = 2; i < s.size(); ++i) {
+    const char c = s[i];
+    if ((c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9')) {
+      word = true;
+    } else if (c == '-' && word) {
+      word = false;
+    } else {
+      return false;
+    }
+  }
+  return word;
+}
+
 void parseRules(YamlReader& r, const YAML::Node& n, const std::vector<std::string>* catalog,
                 std::vector<std::string>& rules) {
   if (!r.expectSeq(n, "rules")) return;
   if (n.size() == 0) r.error(n, "rules", "at least one rule label is required");
-  static const std::regex label("R-[A-Z0-9]+(-[A-Z0-9]+)*");
   for (size_t i = 0; i < n.size(); ++i) {
     const std::string f = "rules[" + std::to_string(i) + "]";
     auto s = r.string(n[i], f);
     if (!s) continue;
-    if (!std::regex_match(*s, label)) {
-      r.error(n[i], f, "'" + *s + "' is not a rule label (R-NAME, see shared/spec-rules.md)");
+    if (!isRuleLabel(*s)) {
+      r.error(
+          n[i], f,
+          "'" + visibleText(*s, 80) + "' is not a rule label (R-NAME, see shared/spec-rules.md)");
       continue;
     }
     if (catalog && std::find(catalog->begin(), catalog->end(), *s) == catalog->end()) {
@@ -130,9 +150,16 @@ ParseResult parseCaseText(const std::string& yaml, const std::string& file_name,
   YAML::Node root;
   try {
     root = YAML::Load(yaml);
+  } catch (const YAML::DeepRecursion& e) {
+    r.error(at(e.mark), yamlTooDeepMessage());
+    return result;
   } catch (const YAML::Exception& e) {
     r.error(at(e.mark), "malformed YAML: " + (e.msg.empty() ? std::string(e.what()) : e.msg) +
                             " (expected YAML syntax: `key: value` maps, `- item` or [a, b] lists)");
+    return result;
+  }
+  if (const auto problem = yamlShapeProblem(root)) {
+    r.error(at(problem->mark), problem->message);
     return result;
   }
   if (!root.IsDefined() || root.IsNull()) {

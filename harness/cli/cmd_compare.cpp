@@ -10,6 +10,7 @@
 
 #include "case/parse_case.h"
 #include "cli/commands.h"
+#include "cli/option_checks.h"
 #include "report/rule_catalog.h"
 #include "report/run_summary.h"
 #include "report/write_reports.h"
@@ -108,6 +109,11 @@ int runCompare(const CompareOptions& opt) {
                    side.c_str());
       return kExitSetup;
     }
+  if (const std::string overlap = outputOverlapsInputs(opt.out, {opt.a, opt.b}); !overlap.empty()) {
+    std::fprintf(stderr, "rayspec compare: %s: its reports would replace what is compared\n",
+                 overlap.c_str());
+    return kExitSetup;
+  }
   const std::vector<Pair> pairs = pairsOf(opt.a, opt.b);
   if (pairs.empty()) {
     std::fprintf(stderr,

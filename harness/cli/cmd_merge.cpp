@@ -1,6 +1,7 @@
 #include <cstdio>
 
 #include "cli/commands.h"
+#include "cli/option_checks.h"
 #include "report/merge_runs.h"
 #include "report/rule_catalog.h"
 #include "report/run_summary.h"
@@ -9,6 +10,11 @@
 namespace rayspec {
 
 int runMerge(const MergeOptions& opt) {
+  if (const std::string overlap = outputOverlapsInputs(opt.out, opt.dirs); !overlap.empty()) {
+    std::fprintf(stderr, "rayspec merge: %s: the merged run would replace what is merged\n",
+                 overlap.c_str());
+    return kExitSetup;
+  }
   const Result<Baseline> loaded = loadBaselineSet(opt.baseline, opt.flakes, opt.skips);
   if (!loaded) {
     std::fprintf(stderr, "rayspec merge: %s\n", loaded.error().format().c_str());

@@ -2,8 +2,11 @@
 // Embree reference model, and compares what happened.
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
+#include <string>
 #include <vector>
 
+#include "cli/option_checks.h"
 #include "cli/subcommands.h"
 
 int main(int argc, char** argv) {
@@ -24,7 +27,19 @@ int main(int argc, char** argv) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : 2;
   }
-  for (const Subcommand& s : subcommands)
-    if (s.command->parsed()) return s.run();
+  for (const Subcommand& s : subcommands) {
+    if (!s.command->parsed()) continue;
+    // CLI11 checks values given, not defaults: an --out left at its default
+    // is held to the same checks here.
+    const CLI::Option* out = s.command->get_option_no_throw("--out");
+    if (out && out->count() == 0)
+      if (const std::string problem = outputFolderProblem(out->as<std::string>());
+          !problem.empty()) {
+        std::fprintf(stderr, "rayspec %s: --out: %s\n", s.command->get_name().c_str(),
+                     problem.c_str());
+        return 2;
+      }
+    return s.run();
+  }
   return 2;
 }

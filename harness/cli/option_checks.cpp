@@ -2,14 +2,15 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
+#include "base/plain_tree.h"
+
 namespace rayspec {
 namespace fs = std::filesystem;
-
-namespace {
 
 std::string outputFolderProblem(const std::string& dir) {
   if (dir.empty()) return "the output folder is empty (give a folder)";
@@ -21,16 +22,50 @@ std::string outputFolderProblem(const std::string& dir) {
     return "the output folder " + dir + " is a file";
   fs::create_directories(dir, ec);
   if (ec) return "the output folder " + dir + " cannot be created: " + ec.message();
+  // Nothing is ever written or deleted through a link in it: such entries go
+  // themselves, and the user is told.
+  for (const std::string& odd : removeOddEntries(dir))
+    std::fprintf(stderr, "rayspec: removed from the output folder: %s (never followed)\n",
+                 odd.c_str());
   const fs::path probe = fs::path(dir) / ".rayspec-write-probe";
   const bool writable = static_cast<bool>(std::ofstream(probe) << "");
   fs::remove(probe, ec);
   return writable ? std::string() : "the output folder " + dir + " is not writable";
 }
 
-}  // namespace
-
 CLI::Validator outputFolder() {
   return CLI::Validator(outputFolderProblem, "FOLDER");
+}
+
+namespace {
+
+fs::path resolved(const std::string& dir) {
+  std::error_code ec;
+  const fs::path p = fs::weakly_canonical(fs::absolute(dir), ec);
+  return ec ? fs::absolute(dir).lexically_normal() : p;
+}
+
+// `inner` is `outer` or lies inside it, component by component.
+bool within(const fs::path& inner, const fs::path& outer) {
+  auto i = inner.begin();
+  for (auto o = outer.begin(); o != outer.end(); ++o, ++i) {
+    if (o->empty()) continue;  // a trailing separator
+    if (i == inner.end() || *i != *o) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string outputOverlapsInputs(const std::string& out, const std::vector<std::string>& inputs) {
+  const fs::path o = resolved(out);
+  for (const std::string& in : inputs) {
+    const fs::path i = resolved(in);
+    if (within(o, i) && within(i, o)) return "the output folder " + out + " is the input " + in;
+    if (within(i, o)) return "the output folder " + out + " holds the input " + in;
+    if (within(o, i)) return "the output folder " + out + " lies inside the input " + in;
+  }
+  return "";
 }
 
 CLI::Validator positiveSeconds() {

@@ -92,16 +92,21 @@ void addIsolationOptions(CLI::App* run, RunOptions& run_opt) {
                   "pipelines would otherwise miss the shader cache)")
       ->check(CLI::IsMember({"auto", "yes", "no"}))
       ->capture_default_str();
-  run->add_flag("--process-per-case", run_opt.process_per_case,
-                "Each side of each case in a process of its own instead of long-lived workers "
-                "(slower; a new VkInstance and VkDevice per case)");
-  run->add_option("--process-per-case-for", run_opt.process_per_case_for,
-                  "Only the cases whose name matches one of these globs each in a process of its "
-                  "own, the others in workers (a driver that leaves state behind that these "
-                  "cases trip over)");
+  CLI::Option* per_case =
+      run->add_flag("--process-per-case", run_opt.process_per_case,
+                    "Each side of each case in a process of its own instead of long-lived workers "
+                    "(slower; a new VkInstance and VkDevice per case)");
+  CLI::Option* per_case_for = run->add_option(
+      "--process-per-case-for", run_opt.process_per_case_for,
+      "Only the cases whose name matches one of these globs each in a process of its "
+      "own, the others in workers (a driver that leaves state behind that these "
+      "cases trip over)");
+  // Processes of their own and no processes at all cannot both hold.
   run->add_flag("--no-isolation", run_opt.no_isolation,
                 "Run the model and the device in this process (one VkDevice for every case; no "
-                "timeout, no memory limit, a crash ends the run)");
+                "timeout, no memory limit, a crash ends the run)")
+      ->excludes(per_case)
+      ->excludes(per_case_for);
 }
 
 // Runs that change what is run: saved device results, permuted and moved

@@ -9,6 +9,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "base/result.h"
+#include "case/yaml_shape.h"
 
 namespace rayspec {
 namespace {
@@ -224,9 +225,13 @@ Result<YAML::Node> loadSweepBlock(const std::vector<std::string>& lines, std::pa
   YAML::Node root;
   try {
     root = YAML::Load(text);
+  } catch (const YAML::DeepRecursion& e) {
+    return Error{locOf(file, e.mark, "sweep"), yamlTooDeepMessage()};
   } catch (const YAML::Exception& e) {
     return Error{locOf(file, e.mark, "sweep"), "malformed YAML: " + e.msg};
   }
+  if (const auto problem = yamlShapeProblem(root))
+    return Error{locOf(file, problem->mark, "sweep"), problem->message};
   if (!root.IsMap())
     return Error{SourceLoc{file, block.first + 1, 1, "sweep"},
                  "the `sweep:` line does not start a map (cases/README.md, Sweeps)"};

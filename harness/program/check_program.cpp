@@ -332,6 +332,14 @@ class Checker {
       if (!contains(fields_, name))
         return ProgramError{"per-ray field '" + name + "' is not declared in outputs.per_ray",
                             value.loc};
+      if (isHitIdentityField(name) && !(value.kind == Expr::Kind::Builtin && value.name == name))
+        return ProgramError{"per-ray field '" + name +
+                                "' holds the built-in of that name: the judge reads it as the "
+                                "hit itself. Record `" +
+                                name +
+                                "` there, and other values in a free field (value, "
+                                "value1 .. value11)",
+                            value.loc};
       if (auto r = as(value, fieldValueType(*f), "record " + name)) return r;
     }
     return std::nullopt;

@@ -45,8 +45,7 @@ Result<void> forEachEntry(const std::string& path, F line) {
 
 // What a line shows in a message: at most 120 bytes, invisible bytes as \xNN.
 std::string shown(const std::string& line) {
-  const std::string out = visibleText(line.substr(0, 120));
-  return line.size() > 120 ? out + "... (" + std::to_string(line.size()) + " bytes)" : out;
+  return visibleText(line, 120);
 }
 
 }  // namespace

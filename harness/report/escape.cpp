@@ -1,10 +1,13 @@
 #include "report/escape.h"
 
-#include <regex>
+#include "base/visible_text.h"
 
 namespace rayspec {
 
-std::string xmlEscape(const std::string& text) {
+std::string xmlEscape(const std::string& raw) {
+  // XML 1.0 allows no control byte but tab, newline and carriage return, and
+  // only well-formed UTF-8: a saved message's other bytes are shown as \xNN.
+  const std::string text = visibleText(raw);
   std::string out;
   out.reserve(text.size());
   for (char c : text) {
@@ -45,8 +48,12 @@ const char* const kCsvFieldPattern = R"("(?:[^"]|"")*"|[^,"]*)";
 
 std::string csvFieldText(const std::string& field) {
   if (field.size() < 2 || field.front() != '"' || field.back() != '"') return field;
-  static const std::regex doubled("\"\"");
-  return std::regex_replace(field.substr(1, field.size() - 2), doubled, "\"");
+  std::string out;
+  for (size_t i = 1; i + 1 < field.size(); ++i) {
+    out += field[i];
+    if (field[i] == '"' && field[i + 1] == '"' && i + 2 < field.size()) ++i;  // "" is one "
+  }
+  return out;
 }
 
 }  // namespace rayspec

@@ -5,7 +5,9 @@
 
 namespace rayspec {
 
-std::string xmlEscape(const std::string& text);  // & < > " '
+// & < > " ' escaped; control bytes (but tab, newline) and non-ASCII bytes
+// as \xNN (base/visible_text.h), so the document stays well-formed XML.
+std::string xmlEscape(const std::string& text);
 // A CSV field (RFC 4180): quoted, with inner quotes doubled, when it holds
 // a comma, a quote or a line break; as it is otherwise.
 std::string csvField(const std::string& text);

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <map>
 
+#include "base/plain_tree.h"
 #include "report/baseline_gate.h"
 #include "report/rule_catalog.h"
 
@@ -16,6 +17,9 @@ std::string copyCaseFolder(const std::string& from, const std::string& to,
                            const std::string& name) {
   const fs::path src = fs::path(from) / name, dst = fs::path(to) / name;
   std::error_code ec;
+  if (const std::string odd = plainPathProblem(from, name); !odd.empty())
+    return "refusing to merge " + src.string() + ": " + odd +
+           " (a shard holds only regular files and folders)";
   if (!fs::exists(src, ec)) return {};  // a CaseError or skipped case may have none
   fs::remove_all(dst, ec);
   fs::create_directories(dst.parent_path(), ec);

@@ -1,13 +1,12 @@
 #include "report/outcome_json.h"
 
-#include "report/case_journal.h"
-
-#include "results/file_name.h"
-
-#include "report/case_cost.h"
-
 #include <fstream>
 #include <stdexcept>
+
+#include "base/visible_text.h"
+#include "report/case_cost.h"
+#include "report/case_journal.h"
+#include "results/file_name.h"
 
 namespace rayspec {
 namespace {
@@ -102,6 +101,9 @@ CaseOutcome outcomeFromJson(const nlohmann::json& j) {
     o.baseline_note = j.value("baseline_note", "");
     o.device_name = j.value("device_name", "");
     o.images = j.value("images", std::vector<std::string>{});
+    for (const std::string& im : o.images)  // each becomes a file name in the report's links
+      if (const std::string problem = fileNameProblem(im); !problem.empty())
+        throw std::runtime_error("'images': '" + visibleText(im, 80) + "' " + problem);
     if (j.contains("cost")) o.cost = caseCostFromJson(j.at("cost"));
     for (const nlohmann::json& f : j.at("findings"))
       o.verdict.findings.push_back({statusField(f, "status"), f.at("rule").get<std::string>(),

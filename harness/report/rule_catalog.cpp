@@ -1,5 +1,6 @@
 #include "report/rule_catalog.h"
 #include "base/whole_file.h"
+#include "case/yaml_shape.h"
 
 #include <filesystem>
 #include <fstream>
@@ -31,9 +32,13 @@ Result<std::vector<Rule>> loadRuleCatalog(const std::string& path) {
   YAML::Node root;
   try {
     root = YAML::Load(*text);
+  } catch (const YAML::DeepRecursion& e) {
+    return catalogError(path, e.mark, "", yamlTooDeepMessage());
   } catch (const YAML::Exception& e) {
     return catalogError(path, e.mark, "", "malformed YAML: " + e.msg);
   }
+  if (const auto problem = yamlShapeProblem(root))
+    return catalogError(path, problem->mark, "", problem->message);
   if (!root.IsMap())
     return Error{SourceLoc{path, 1, 1, ""}, "expected a map of `R-LABEL: title` lines"};
   std::vector<Rule> rules;

@@ -115,4 +115,9 @@ bool isFreeField(std::string_view name) {
   return kFree.count(name) > 0;
 }
 
+bool isHitIdentityField(std::string_view name) {
+  return name == "primitive_id" || name == "instance_id" || name == "geometry_index" ||
+         name == "hit_t";
+}
+
 }  // namespace rayspec

@@ -36,6 +36,11 @@ constexpr FieldMask fieldBit(uint32_t index) {
 // value1 .. value11, color, color2, color3). Every field a case may write has
 // an index below 32: its bit in the written mask (word kRecordWrittenMaskWord).
 bool isFreeField(std::string_view name);
+// The fields the judge reads as the hit itself (which primitive of which
+// geometry and instance, at which t: compare/record_words.cpp hitFits and
+// the legal-t check): a case may record only the built-in of the same name
+// there (program/check_program.cpp).
+bool isHitIdentityField(std::string_view name);
 uint32_t recordWords();  // words per ray
 
 // Names of the automatic counters, in the order of the fields that hold them.

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -37,6 +38,10 @@ bool writeWords(const fs::path& path, const Words& words) {
 std::string readSizedWords(const fs::path& path, uint64_t expected, bool empty_ok,
                            const std::string& implied, BulkWords& words) {
   std::error_code ec;
+  if (expected > std::numeric_limits<uint64_t>::max() / 4)
+    return "results.json says " + implied + ": more words than a file can hold";
+  if (!fs::is_regular_file(fs::symlink_status(path, ec)))
+    return "cannot read " + path.string() + ": not a regular file";
   const uint64_t bytes = fs::file_size(path, ec);
   if (ec) return "cannot read " + path.string();
   if (bytes != expected * 4 && !(empty_ok && bytes == 0))
@@ -275,7 +280,15 @@ std::string readImages(const json& j, FieldReader& field, const fs::path& dir, R
     const std::string implied = "image " + im.name + ": width x height x channels " +
                                 std::to_string(im.width) + " x " + std::to_string(im.height) +
                                 " x " + std::to_string(im.channels);
-    const uint64_t words = uint64_t(im.width) * im.height * im.channels;
+    if (im.channels < 1 || im.channels > 4)
+      throw std::runtime_error("images.channels: " + std::to_string(im.channels) +
+                               " (an image has 1 to 4 channels)");
+    // Each factor is at most 2^30 (sizeField): the product fits 64 bits only
+    // with 4 channels at most and is checked before it is used.
+    const uint64_t texels = uint64_t(im.width) * im.height;
+    if (im.width && texels / im.width != im.height)
+      throw std::runtime_error("images: width x height overflows");
+    const uint64_t words = texels * im.channels;
     if (std::string e = readSizedWords(dir / (im.name + ".raw"), words, false, implied, im.texels);
         !e.empty())
       return e;

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/visible_text.h"
 #include "model/model_engine.h"
 #include "results/content_hash.h"
 #include "results/results_io.h"
@@ -18,7 +19,7 @@ std::string savedBundleDir(const std::string& dir, const std::string& case_name)
   return (fs::path(dir) / case_name / "device").string();
 }
 
-Results SavedDevice::run(const Case& c, const Plan&) {
+Results SavedDevice::run(const Case& c, const Plan& plan) {
   const std::string bundle = savedBundleDir(dir_, c.name);
   if (!fs::exists(fs::path(bundle) / "results.json")) {
     Results r;
@@ -43,6 +44,12 @@ Results SavedDevice::run(const Case& c, const Plan&) {
                        contentHashText(c.source_hash) +
                        ": the case changed since it ran there (or --permute or --move differs); "
                        "run it there again");
+  // A saved bundle holds the counters the case keeps, no others: a counter
+  // it does not declare is not the device's answer to this case.
+  for (const auto& [name, value] : r.counters)
+    if (std::find(plan.counters.begin(), plan.counters.end(), name) == plan.counters.end())
+      throw HarnessError(json + ": counter '" + visibleText(name, 80) +
+                         "' is not one the case keeps (outputs.counters)");
   return r;
 }
 

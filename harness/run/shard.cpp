@@ -1,8 +1,11 @@
 #include "run/shard.h"
 
+#include <cctype>
 #include <cstdlib>
 #include <fstream>
-#include <regex>
+#include <optional>
+
+#include "base/visible_text.h"
 
 namespace rayspec {
 
@@ -10,14 +13,40 @@ std::string Shard::describe() const {
   return "shard " + std::to_string(index + 1) + " of " + std::to_string(count);
 }
 
+namespace {
+
+// 1 to 6 decimal digits from `at` (spaces around them skipped); nullopt
+// otherwise. A plain scanner: no regular expression runs on input text.
+std::optional<unsigned> numberAt(const std::string& text, size_t& at) {
+  while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at]))) ++at;
+  const size_t start = at;
+  unsigned v = 0;
+  while (at < text.size() && std::isdigit(static_cast<unsigned char>(text[at])) && at - start < 7)
+    v = v * 10 + static_cast<unsigned>(text[at++] - '0');
+  const size_t digits = at - start;
+  while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at]))) ++at;
+  if (digits == 0 || digits > 6) return std::nullopt;
+  return v;
+}
+
+// The whole of `text` is one number of 1 to 6 digits.
+std::optional<unsigned> wholeNumber(const std::string& text) {
+  size_t at = 0;
+  const auto v = numberAt(text, at);
+  return v && at == text.size() ? v : std::nullopt;
+}
+
+}  // namespace
+
 Result<Shard> parseShard(const std::string& text) {
-  static const std::regex form(R"(^\s*([0-9]{1,6})\s*/\s*([0-9]{1,6})\s*$)");
-  std::smatch m;
-  if (std::regex_match(text, m, form)) {
-    const unsigned i = std::stoul(m[1]), n = std::stoul(m[2]);
-    if (i >= 1 && i <= n) return Shard{i - 1, n};
-  }
-  return errorMessage("--shard expects I/N with 1 <= I <= N (e.g. 2/4), got '" + text + "'");
+  size_t at = 0;
+  const auto i = numberAt(text, at);
+  const bool slash = i && at < text.size() && text[at] == '/';
+  if (slash) ++at;
+  const auto n = slash ? numberAt(text, at) : std::nullopt;
+  if (n && at == text.size() && *i >= 1 && *i <= *n) return Shard{*i - 1, *n};
+  return errorMessage("--shard expects I/N with 1 <= I <= N (e.g. 2/4), got '" +
+                      visibleText(text, 80) + "'");
 }
 
 namespace {
@@ -30,12 +59,11 @@ Result<std::optional<Shard>> shardFromVariables(const char* index_name, const ch
   const char* total = std::getenv(total_name);
   const char* index = std::getenv(index_name);
   if (!total || !index) return std::optional<Shard>();
-  static const std::regex number(R"(^[0-9]{1,6}$)");
-  if (std::regex_match(total, number) && std::regex_match(index, number)) {
-    const unsigned n = std::stoul(total), i = std::stoul(index);
-    if (n >= 1 && i >= first && i - first < n) return std::optional<Shard>(Shard{i - first, n});
-  }
-  return errorMessage(std::string(index_name) + "=" + index + " and " + total_name + "=" + total +
+  const auto n = wholeNumber(total), i = wholeNumber(index);
+  if (n && i && *n >= 1 && *i >= first && *i - first < *n)
+    return std::optional<Shard>(Shard{*i - first, *n});
+  return errorMessage(std::string(index_name) + "=" + visibleText(index, 80) + " and " +
+                      total_name + "=" + visibleText(total, 80) +
                       " do not name a shard (the index counts from " + std::to_string(first) +
                       (first ? " to" : " and is below") + " the total)");
 }

@@ -107,7 +107,7 @@ std::string validate(const std::vector<uint32_t>& words) {
 
 SpirvResult compileGlsl(const std::string& glsl, Stage stage) {
   SpirvResult result;
-  const uint64_t key = spirvCacheKey(glsl, stage);
+  const std::string key = spirvCacheKey(glsl, stage);
   if (spirvCacheLookup(key, result.words)) {
     result.from_cache = true;
     return result;

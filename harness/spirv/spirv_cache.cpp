@@ -1,28 +1,31 @@
 #include "spirv/spirv_cache.h"
 
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <string_view>
 #include <thread>
 #include <unordered_map>
 
 #include <unistd.h>
 
 #include "base/whole_file.h"
-#include "results/content_hash.h"
+#include "results/sha256.h"
 #include "spirv/compile_glsl.h"
 
 namespace rayspec {
+namespace fs = std::filesystem;
 namespace {
 
 // Bump when the compile options change, so old cache files are not reused.
-constexpr char kCacheVersion[] = "rayspec-spirv-2:vk1.2:spv1.4:builtin-inputs";
+constexpr char kCacheVersion[] = "rayspec-spirv-3:vk1.2:spv1.4:builtin-inputs";
 constexpr uint32_t kSpirvMagic = 0x07230203;
 
 struct Cache {
   std::mutex mutex;
-  std::unordered_map<uint64_t, std::vector<uint32_t>> memory;
+  std::unordered_map<std::string, std::vector<uint32_t>> memory;
   std::string dir;
 };
 
@@ -31,39 +34,68 @@ Cache& cache() {
   return c;
 }
 
-bool readFile(const std::filesystem::path& path, std::vector<uint32_t>& words) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) return false;
-  const std::streamsize size = in.tellg();
-  if (size < 20 || size % 4 != 0) return false;
-  std::vector<uint32_t> data(static_cast<size_t>(size) / 4);
-  in.seekg(0);
-  if (!in.read(reinterpret_cast<char*>(data.data()), size)) return false;
+std::string_view bytesOf(const std::vector<uint32_t>& words) {
+  return {reinterpret_cast<const char*>(words.data()), words.size() * sizeof(uint32_t)};
+}
+
+// The sum an entry's .sum file holds: the module bound to its key.
+std::string entrySum(const std::string& key, const std::vector<uint32_t>& words) {
+  return sha256Hex({key, "\n", bytesOf(words)});
+}
+
+bool isRegularFile(const fs::path& p) {
+  std::error_code ec;
+  return fs::symlink_status(p, ec).type() == fs::file_type::regular;
+}
+
+// The module at `dir`/<key>.spv when the entry checks out (see the header).
+bool readEntry(const fs::path& dir, const std::string& key, std::vector<uint32_t>& words) {
+  const fs::path spv = dir / spirvCacheFileName(key), sum = dir / spirvCacheSumName(key);
+  if (!isRegularFile(spv) || !isRegularFile(sum)) return false;
+  const Result<std::string> module = readWholeFile(spv.string(), kMaxCachedModuleBytes);
+  const Result<std::string> stored = readWholeFile(sum.string(), 256);
+  if (!module || !stored || module->size() < 20 || module->size() % 4 != 0) return false;
+  std::vector<uint32_t> data(module->size() / 4);
+  std::memcpy(data.data(), module->data(), module->size());
   if (data[0] != kSpirvMagic) return false;
+  if (stored->substr(0, stored->find_first_of(" \n")) != entrySum(key, data)) return false;
   words = std::move(data);
   return true;
 }
 
-void writeFile(const std::filesystem::path& path, const std::vector<uint32_t>& words) {
-  (void)writeWholeFile(path.string(), words.data(), words.size() * 4);  // a cache: only slower
+// Whatever is at `p` when it is not a regular file (a link, a FIFO) goes, so
+// that the write below replaces it rather than follows or blocks on it.
+void clearOddEntry(const fs::path& p) {
+  std::error_code ec;
+  const fs::file_type t = fs::symlink_status(p, ec).type();
+  if (t != fs::file_type::not_found && t != fs::file_type::regular) fs::remove(p, ec);
+}
+
+void writeEntry(const fs::path& dir, const std::string& key, const std::vector<uint32_t>& words) {
+  const fs::path spv = dir / spirvCacheFileName(key), sum = dir / spirvCacheSumName(key);
+  clearOddEntry(spv);
+  clearOddEntry(sum);
+  // A cache: a failed write only makes the next run slower.
+  if (writeWholeFile(spv.string(), words.data(), words.size() * 4))
+    (void)writeWholeFile(sum.string(), entrySum(key, words) + "\n");
 }
 
 }  // namespace
 
-uint64_t spirvCacheKey(const std::string& glsl, Stage stage) {
-  uint64_t h = contentHash(kContentHashSeed, kCacheVersion, sizeof(kCacheVersion));
-  const unsigned char s = static_cast<unsigned char>(stage);
-  h = contentHash(h, &s, 1);
-  return contentHash(h, glsl.data(), glsl.size());
+std::string spirvCacheKey(const std::string& glsl, Stage stage) {
+  const char s = static_cast<char>(stage);
+  return sha256Hex({kCacheVersion, std::string_view(&s, 1), glsl});
 }
 
-std::string spirvCacheFileName(uint64_t key) {
-  char name[32];
-  std::snprintf(name, sizeof(name), "%016llx.spv", static_cast<unsigned long long>(key));
-  return name;
+std::string spirvCacheFileName(const std::string& key) {
+  return key + ".spv";
 }
 
-bool spirvCacheLookup(uint64_t key, std::vector<uint32_t>& words) {
+std::string spirvCacheSumName(const std::string& key) {
+  return key + ".sum";
+}
+
+bool spirvCacheLookup(const std::string& key, std::vector<uint32_t>& words) {
   Cache& c = cache();
   std::string dir;
   {
@@ -75,14 +107,13 @@ bool spirvCacheLookup(uint64_t key, std::vector<uint32_t>& words) {
     }
     dir = c.dir;
   }
-  if (dir.empty()) return false;
-  if (!readFile(std::filesystem::path(dir) / spirvCacheFileName(key), words)) return false;
+  if (dir.empty() || !readEntry(dir, key, words)) return false;
   std::lock_guard<std::mutex> lock(c.mutex);
   c.memory.emplace(key, words);
   return true;
 }
 
-void spirvCacheStore(uint64_t key, const std::vector<uint32_t>& words) {
+void spirvCacheStore(const std::string& key, const std::vector<uint32_t>& words) {
   Cache& c = cache();
   std::string dir;
   {
@@ -90,7 +121,7 @@ void spirvCacheStore(uint64_t key, const std::vector<uint32_t>& words) {
     c.memory[key] = words;
     dir = c.dir;
   }
-  if (!dir.empty()) writeFile(std::filesystem::path(dir) / spirvCacheFileName(key), words);
+  if (!dir.empty()) writeEntry(dir, key, words);
 }
 
 void clearSpirvMemoryCache() {

@@ -1,5 +1,10 @@
-// The SPIR-V cache: content hash -> words, in memory and, when setSpirvCacheDir
-// named a folder, on disk as <dir>/<16 hex digits>.spv. Thread-safe.
+// The SPIR-V cache: key -> words, in memory and, when setSpirvCacheDir named
+// a folder, on disk as <dir>/<key>.spv (the module as it is, for spirv-val
+// and the device pack) beside <dir>/<key>.sum (SHA-256 of the key and the
+// module). An entry on disk is used only when both are regular files, the
+// module is within kMaxCachedModuleBytes and SPIR-V, and the sum matches it
+// and its key; anything else is a miss, and the entry is written anew (a
+// link or FIFO in its place removed first). Thread-safe.
 #pragma once
 
 #include <cstdint>
@@ -10,12 +15,16 @@
 
 namespace rayspec {
 
-// FNV-1a 64 of a version tag, the stage and the GLSL text.
-uint64_t spirvCacheKey(const std::string& glsl, Stage stage);
-std::string spirvCacheFileName(uint64_t key);  // "0123456789abcdef.spv"
+constexpr uint64_t kMaxCachedModuleBytes = 16ull << 20;
 
-bool spirvCacheLookup(uint64_t key, std::vector<uint32_t>& words);
-void spirvCacheStore(uint64_t key, const std::vector<uint32_t>& words);
+// SHA-256 of a version tag, the stage and the GLSL text (64 hex digits): a
+// module found under it was compiled from that text.
+std::string spirvCacheKey(const std::string& glsl, Stage stage);
+std::string spirvCacheFileName(const std::string& key);  // "<key>.spv"
+std::string spirvCacheSumName(const std::string& key);   // "<key>.sum"
+
+bool spirvCacheLookup(const std::string& key, std::vector<uint32_t>& words);
+void spirvCacheStore(const std::string& key, const std::vector<uint32_t>& words);
 
 // Drops the in-memory entries (the disk cache stays); for tests.
 void clearSpirvMemoryCache();

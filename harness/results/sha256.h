@@ -1,0 +1,15 @@
+// SHA-256 (OpenSSL's libcrypto), as 64 lower-case hex digits: the hash of
+// anything a collision of would turn into a verdict, such as the SPIR-V
+// cache's keys and the check of each entry (spirv/spirv_cache.h).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace rayspec {
+
+// The digest of the pieces, one after the other.
+std::string sha256Hex(std::initializer_list<std::string_view> pieces);
+
+}  // namespace rayspec

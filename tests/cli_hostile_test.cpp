@@ -1,0 +1,168 @@
+// Hostile inputs, round two (issue 44): links inside output folders and
+// shards, an output that is an input, YAML anchors that refer to themselves
+// or expand without bound, poisoned SPIR-V cache entries, option pairs that
+// cannot both hold. Each ends in a clear error or a judged run, and nothing
+// outside the run's folders is touched.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "cli_helpers.h"
+
+namespace {
+namespace fs = std::filesystem;
+using cli::caseArg;
+using cli::fresh;
+using cli::sh;
+using cli::slurp;
+
+const std::string kCase = "results/miss-xor-closest-hit";
+
+// A folder outside every run folder, with a marker file, that must survive.
+std::string victim(const std::string& root, const std::string& name) {
+  const std::string dir = root + "/" + name;
+  fs::create_directories(dir);
+  std::ofstream(dir + "/keep.txt") << "keep";
+  return dir;
+}
+
+size_t filesUnder(const std::string& dir) {
+  size_t n = 0;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) n += e.is_regular_file();
+  return n;
+}
+
+// A case file whose raygen is an alias of its own anchor (it would nest
+// without end).
+const char* kSelfAlias = R"(rules: [R-MISS-XOR-CHIT]
+scene:
+  blas:
+    t: [{triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}}]
+  instances: [{blas: t}]
+rays:
+  list: [{origin: [0.2, 0.2, 1], direction: [0, 0, -1]}]
+pipeline:
+  raygen: &p [{if: true, then: *p}]
+outputs:
+  per_ray: [value]
+)";
+
+// A case file of 40 aliases, each doubling the one before: 2^40 nodes.
+std::string aliasBomb() {
+  std::string text =
+      "rules: [R-MISS-XOR-CHIT]\nscene:\n  blas:\n"
+      "    t: [{triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}}]\n"
+      "  instances: [{blas: t}]\nrays:\n  list: [{origin: [0.2, 0.2, 1], direction: [0, 0, "
+      "-1]}]\nx:\n  a0: &a0 {add: [1, 2]}\n";
+  for (int i = 1; i <= 40; ++i)
+    text += "  a" + std::to_string(i) + ": &a" + std::to_string(i) + " {add: [*a" +
+            std::to_string(i - 1) + ", *a" + std::to_string(i - 1) + "]}\n";
+  return text + "pipeline:\n  raygen: [{record: {value: *a40}}]\noutputs:\n  per_ray: [value]\n";
+}
+
+// Issue 44's "done means": an --out holding a link to a folder outside it, a
+// SPIR-V cache whose entries are all poisoned, and a self-referring case and
+// an alias bomb among good cases. The run finishes: the good cases are
+// judged, the bad ones are CaseErrors naming what is wrong, the link is
+// removed (not followed) and the folder it pointed to keeps its file.
+TEST(Hostile, ARunAmongLinksPoisonAndBombsJudgesTheGoodCases) {
+  const std::string root = fresh("hostile-run");
+  const std::string kept = victim(root, "outside");
+  const std::string out = root + "/out";
+  fs::create_directories(out + "/results");
+  fs::create_symlink(kept, out + "/results/miss-xor-closest-hit");
+  fs::create_symlink(kept + "/keep.txt", out + "/summary.txt");
+  const std::string cases = root + "/cases";
+  fs::create_directories(cases);
+  std::ofstream(cases + "/self.yaml") << kSelfAlias;
+  std::ofstream(cases + "/bomb.yaml") << aliasBomb();
+  // First fill a cache, then poison every entry: junk after the magic number.
+  const std::string cache = root + "/cache";
+  ASSERT_EQ(sh(cli::kBin + " run --no-validation" + caseArg(kCase) + " --cache-dir " + cache +
+                   " --out " + root + "/warm",
+               root + "/warm.txt"),
+            0)
+      << slurp(root + "/warm.txt");
+  size_t poisoned = 0;
+  for (const auto& e : fs::directory_iterator(cache + "/spirv"))
+    if (e.path().extension() == ".spv") {
+      std::fstream f(e.path(), std::ios::in | std::ios::out | std::ios::binary);
+      f.seekp(8);
+      f.write("junkjunk", 8);
+      ++poisoned;
+    }
+  ASSERT_GT(poisoned, 0u);
+  const int rc =
+      sh(cli::kBin + " run --no-validation" + caseArg(kCase) + " --case " + cases +
+             "/self.yaml --case " + cases + "/bomb.yaml --cache-dir " + cache + " --out " + out,
+         root + "/run.txt");
+  const std::string log = slurp(root + "/run.txt");
+  EXPECT_EQ(rc, 1) << log;  // the two CaseErrors fail the run; the good case is judged
+  EXPECT_NE(log.find("removed from the output folder"), std::string::npos) << log;
+  EXPECT_NE(log.find(kCase), std::string::npos) << log;
+  const std::string summary = slurp(out + "/summary.txt");
+  EXPECT_NE(summary.find(kCase + ": Pass"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("nests deeper than 100 levels"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("expands to more than"), std::string::npos) << summary;
+  EXPECT_EQ(slurp(kept + "/keep.txt"), "keep");
+  EXPECT_EQ(filesUnder(kept), 1u);
+  EXPECT_FALSE(fs::is_symlink(out + "/results/miss-xor-closest-hit"));
+}
+
+// A shard whose case folder is a link to a folder elsewhere: merge refuses
+// it, and the merged output holds none of that folder's files.
+TEST(Hostile, MergeRefusesALinkInAShard) {
+  const std::string root = fresh("hostile-merge");
+  const std::string shard = root + "/shard";
+  ASSERT_EQ(sh(cli::kBin + " run --no-validation" + caseArg(kCase) + " --out " + shard,
+               root + "/shard.txt"),
+            0)
+      << slurp(root + "/shard.txt");
+  const std::string kept = victim(root, "secret");
+  fs::remove_all(shard + "/" + kCase);
+  fs::create_symlink(kept, shard + "/" + kCase);
+  const std::string out = root + "/merged";
+  const int rc = sh(cli::kBin + " merge " + shard + " --out " + out, root + "/merge.txt");
+  const std::string log = slurp(root + "/merge.txt");
+  EXPECT_NE(rc, 0) << log;
+  EXPECT_NE(log.find("is a symbolic link"), std::string::npos) << log;
+  EXPECT_FALSE(fs::exists(out + "/" + kCase + "/keep.txt"));
+  EXPECT_EQ(slurp(kept + "/keep.txt"), "keep");
+}
+
+// compare with its --out one of the folders it compares (as given, through
+// "A/." or a link): exit 2, and A keeps every file.
+TEST(Hostile, CompareRefusesAnOutputThatIsAnInput) {
+  const std::string root = fresh("hostile-compare");
+  const std::string a = root + "/a";
+  ASSERT_EQ(
+      sh(cli::kBin + " run --no-validation" + caseArg(kCase) + " --out " + a, root + "/a.txt"), 0)
+      << slurp(root + "/a.txt");
+  fs::create_symlink(a, root + "/link-to-a");
+  const size_t before = filesUnder(a);
+  for (const std::string& out : {a, a + "/.", root + "/link-to-a", root}) {
+    const int rc = sh(cli::kBin + " compare " + a + " " + a + " --out " + out, root + "/c.txt");
+    const std::string log = slurp(root + "/c.txt");
+    EXPECT_EQ(rc, 2) << out << "\n" << log;
+    EXPECT_NE(log.find("its reports would replace what is compared"), std::string::npos) << log;
+    EXPECT_EQ(filesUnder(a), before) << out;
+  }
+}
+
+// Processes of their own and no processes at all: refused before anything runs.
+TEST(Hostile, ProcessPerCaseForAndNoIsolationAreRefusedTogether) {
+  const std::string root = fresh("hostile-options");
+  for (const std::string& pair : {std::string(" --process-per-case-for 'results/*' --no-isolation"),
+                                  std::string(" --no-isolation --process-per-case")}) {
+    const int rc =
+        sh(cli::kBin + " run --no-validation" + caseArg(kCase) + pair + " --out " + root + "/out",
+           root + "/o.txt");
+    const std::string log = slurp(root + "/o.txt");
+    EXPECT_EQ(rc, 2) << pair << "\n" << log;
+    EXPECT_NE(log.find("excludes"), std::string::npos) << log;
+  }
+}
+
+}  // namespace
