@@ -13,6 +13,11 @@
 //                                       miss (no sum of the fuzzer's can match
 //                                       SHA-256 of the key and module), or the
 //                                       module is exactly what the test wrote
+//   5  a shard to merge                 report/merge_runs.h: the input is its
+//                                       summary.json; every case it names has
+//                                       its folder as a link to a folder
+//                                       outside; the property: the merged
+//                                       output never holds that folder's file
 // Every input must end in a value or an error: never a crash, a hang, a leak
 // or undefined behaviour. And the path-escape property: whatever a reader
 // accepts is safe to make paths of (case names, image names) and sized as
@@ -27,6 +32,7 @@
 #include <string>
 
 #include "report/baseline.h"
+#include "report/merge_runs.h"
 #include "report/outcome_json.h"
 #include "results/file_name.h"
 #include "results/record_layout.h"
@@ -117,6 +123,25 @@ void spirvCacheEntry(const std::string& text) {
   rayspec::setSpirvCacheDir("");
 }
 
+void mergedShard(const std::string& text) {
+  const fs::path shard = workDir() / "shard", outside = workDir() / "outside",
+                 out = workDir() / "merged";
+  fs::create_directories(shard);
+  fs::create_directories(outside);
+  write(outside / "secret.txt", "secret");
+  write(shard / "summary.json", text);
+  const rayspec::Result<rayspec::SavedRun> run = rayspec::readSavedRun(shard.string());
+  if (!run) return;
+  std::error_code ec;
+  for (const rayspec::CaseOutcome& o : run->outcomes) {
+    fs::create_directories((shard / o.name).parent_path(), ec);
+    fs::create_directory_symlink(outside, shard / o.name, ec);
+  }
+  (void)rayspec::mergeRuns({shard.string()}, out.string(), rayspec::Baseline{}, {});
+  for (fs::recursive_directory_iterator it(out, ec), end; !ec && it != end; it.increment(ec))
+    require(it->path().filename() != "secret.txt");
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -125,7 +150,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   fs::remove_all(workDir(), ec);
   fs::create_directories(workDir(), ec);
   const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
-  switch (data[0] % 5) {
+  switch (data[0] % 6) {
     case 0:
       baselineFile(text);
       break;
@@ -138,8 +163,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     case 3:
       summaryFile(text);
       break;
-    default:
+    case 4:
       spirvCacheEntry(text);
+      break;
+    default:
+      mergedShard(text);
       break;
   }
   return 0;

@@ -98,3 +98,46 @@ TEST(CaseYamlShape, TheHitsOwnFieldsHoldOnlyTheirBuiltIn) {
 
 }  // namespace
 }  // namespace rayspec
+
+namespace rayspec {
+namespace {
+
+// Totals a case is held to before the parent allocates (issue 44: 120 grids
+// of 2^22 cells grew the parent to 8.7 GB; records of a 2^24-id launch took
+// 7.1 GB): each a CaseError naming the field and the limit.
+TEST(CaseLimits, PrimitivesOfAllGeometriesTogether) {
+  std::string text = "rules: [R-MISS-XOR-CHIT]\nscene:\n  blas:\n    t:\n";
+  for (int i = 0; i < 5; ++i)
+    text += "      - triangles: {grid: {cells: [2048, 2048], size: [1.0, 1.0]}}\n";
+  text +=
+      "  instances: [{blas: t}]\nrays:\n  list: [{origin: [0.2, 0.2, 1], direction: [0, 0, "
+      "-1]}]\npipeline:\n  raygen: [{count: c}]\noutputs:\n  counters: [c]\n";
+  const ParseResult r = parse(text);
+  ASSERT_FALSE(r.value);
+  EXPECT_NE(firstError(r).find("scene.blas.t[2]: the scene's geometries hold more than 2^24"),
+            std::string::npos)
+      << firstError(r);
+}
+
+TEST(CaseLimits, RecordsOfAWideLaunch) {
+  const std::string head =
+      "rules: [R-MISS-XOR-CHIT]\nscene:\n  blas:\n"
+      "    t: [{triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}}]\n"
+      "  instances: [{blas: t}]\nrays:\n  same: {origin: [0.2, 0.2, 1], direction: [0, 0, "
+      "-1]}\n  launch: [16777216, 1, 1]\npipeline:\n  raygen: [{count: c}, "
+      "{record: {value: 1}}]\n";
+  const ParseResult records = parse(head + "outputs:\n  counters: [c]\n  per_ray: [value]\n");
+  ASSERT_FALSE(records.value);
+  EXPECT_NE(firstError(records).find("outputs: the launch's 16777216 rays would write"),
+            std::string::npos)
+      << firstError(records);
+  EXPECT_NE(firstError(records).find("at most 1 GiB"), std::string::npos);
+  // Counters alone: no records, no limit.
+  std::string counters = head;
+  counters.replace(counters.find(", {record: {value: 1}}"), 22, "");
+  const ParseResult ok = parse(counters + "outputs:\n  counters: [c]\n");
+  EXPECT_TRUE(ok.value) << firstError(ok);
+}
+
+}  // namespace
+}  // namespace rayspec

@@ -151,6 +151,43 @@ TEST(Hostile, CompareRefusesAnOutputThatIsAnInput) {
   }
 }
 
+// A run records its variant (--through, --permute, --move): resuming it,
+// judging its saved device results or merging it as another variant is
+// refused (issue 44: all three exited 0).
+TEST(Hostile, RunsOfAnotherVariantNeverMix) {
+  const std::string root = fresh("hostile-variant");
+  const std::string through = root + "/through";
+  const std::string plain = root + "/plain";
+  ASSERT_EQ(
+      sh(cli::kBin + " run --no-validation --through update" + caseArg(kCase) + " --out " + through,
+         root + "/through.txt"),
+      0)
+      << slurp(root + "/through.txt");
+  ASSERT_EQ(sh(cli::kBin + " run --no-validation" + caseArg(kCase) + " --out " + plain,
+               root + "/plain.txt"),
+            0)
+      << slurp(root + "/plain.txt");
+  EXPECT_NE(slurp(through + "/summary.json").find("\"variant\": \"through update\""),
+            std::string::npos);
+  struct Mixed {
+    std::string command, message;
+  } mixed[] = {
+      {" run --no-validation --resume" + caseArg(kCase) + " --out " + through,
+       "ran its cases by through update, this run would run them as written"},
+      {" run --no-validation --through update --device-results " + plain + caseArg(kCase) +
+           " --out " + root + "/judged",
+       "ran its cases as written, this run would judge them by through update"},
+      {" merge " + through + " " + plain + " --out " + root + "/merged",
+       "only runs of one variant merge"},
+  };
+  for (const Mixed& m : mixed) {
+    const int rc = sh(cli::kBin + m.command, root + "/mixed.txt");
+    const std::string log = slurp(root + "/mixed.txt");
+    EXPECT_EQ(rc, 2) << m.command << "\n" << log;
+    EXPECT_NE(log.find(m.message), std::string::npos) << log;
+  }
+}
+
 // Processes of their own and no processes at all: refused before anything runs.
 TEST(Hostile, ProcessPerCaseForAndNoIsolationAreRefusedTogether) {
   const std::string root = fresh("hostile-options");

@@ -87,7 +87,7 @@ TEST(ExpandSweep, ASweepTooLargeIsAnErrorNotAnExhaustedMachine) {
       "f.sweep.yaml", "x/f");
   ASSERT_EQ(many.errors.size(), 1u);
   EXPECT_EQ(many.errors[0].format(),
-            "f.sweep.yaml:2:3: sweep: makes more than 10000 cases; split it");
+            "f.sweep.yaml:2:3: sweep: makes more than 1024 cases; split it");
   std::string doubling = "sweep:\n  name: n\n  product:\n    v0: [x]\n";
   for (int i = 1; i <= 24; ++i)
     doubling += "    v" + std::to_string(i) + ": ['${v" + std::to_string(i - 1) + "}${v" +

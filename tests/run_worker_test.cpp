@@ -3,10 +3,12 @@
 // of memory costs only itself, and the next one gets a new process.
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -34,6 +36,14 @@ Worker::Serve misbehaving() {
     if (request == "hog") {
       std::vector<std::vector<char>> held;
       for (;;) held.emplace_back(64u << 20, 'x');
+    }
+    if (request == "shared-hog") {  // shared mappings: RLIMIT_DATA does not count them
+      for (;;) {
+        void* p =
+            mmap(nullptr, 64u << 20, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+        if (p == MAP_FAILED) return "mmap failed";
+        std::memset(p, 'x', 64u << 20);
+      }
     }
     return std::to_string(getpid());
   };
@@ -90,6 +100,20 @@ TEST(WorkerMemoryLimit, OutOfMemoryEndsTheProcessWithItsStatus) {
   Worker w(misbehaving(), {}, ChildLimits{60, 256u << 20});
   const Worker::Reply hog = w.call("hog");
   EXPECT_FALSE(hog.replied);
+  EXPECT_EQ(hog.end.how, ChildEnd::How::Exited);
+  EXPECT_EQ(hog.end.code, kChildOutOfMemory);
+  EXPECT_TRUE(w.call("pid").replied);
+}
+
+// Shared mappings (as lavapipe makes) are outside RLIMIT_DATA: the parent's
+// watch of the resident set ends the worker all the same (issue 44: a worker
+// under --memory-limit 8G reached 13.5 GB).
+TEST(WorkerMemoryLimit, SharedMappingsCountToo) {
+  if (!memoryLimitApplies())
+    GTEST_SKIP() << "AddressSanitizer build: no memory limit is set on children";
+  Worker w(misbehaving(), {}, ChildLimits{60, 256u << 20});
+  const Worker::Reply hog = w.call("shared-hog");
+  EXPECT_FALSE(hog.replied) << hog.text;
   EXPECT_EQ(hog.end.how, ChildEnd::How::Exited);
   EXPECT_EQ(hog.end.code, kChildOutOfMemory);
   EXPECT_TRUE(w.call("pid").replied);

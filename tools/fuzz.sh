@@ -2,9 +2,10 @@
 # Fuzzes, each for SECONDS (default 60) or RUNS executions (FUZZ_RUNS=N):
 #   fuzz_case   the case parser, sweep expansion and plan (fuzz/fuzz_case.cpp),
 #               from a corpus made of cases/ and fuzz/case.dict;
-#   fuzz_saved  baselines, flakes and skips files, results bundles and
-#               summary.json (fuzz/fuzz_saved.cpp), from references/baselines/
-#               and fuzz/seeds/, with the path-escape property.
+#   fuzz_saved  baselines, flakes and skips files, results bundles,
+#               summary.json, SPIR-V cache entries and shards to merge
+#               (fuzz/fuzz_saved.cpp), from references/baselines/ and
+#               fuzz/seeds/, with the path-escape property.
 # TARGETS (default both) picks one: tools/fuzz.sh 600 fuzz_saved.
 # Builds the `fuzz` preset (clang, ASan, UBSan) first. Exit 0: no crash,
 # hang, leak, sanitizer report or broken property. A finding is left as
@@ -32,6 +33,8 @@ seeds() {
     { printf '\001'; printf '^anyhit/\n(a|b)*c$  # comment\nsbt/.*-aabbs\n'; } >"$dir/patterns"
     { printf '\002'; cat fuzz/seeds/results-bundle.bin; } >"$dir/results-bundle"
     { printf '\003'; cat fuzz/seeds/summary.json; } >"$dir/summary"
+    { printf '\004'; printf 'not-a-sum'; printf '\000'; printf '\003\002\043\007'; } >"$dir/spirv-entry"
+    { printf '\005'; cat fuzz/seeds/summary.json; } >"$dir/shard"
   fi
   echo "$dir"
 }

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Builds the run-only binary (preset `device`: no model, so no Embree or TBB;
 # no OpenImageIO; no tests) and packs it with the cases, the rule catalog,
-# the shared libraries a bare GPU machine may lack (yaml-cpp; ldd decides) and
-# the validation layer, and the SPIR-V of every stage (cache/spirv), into
+# the shared libraries a bare GPU machine may lack (yaml-cpp, libcrypto; ldd
+# decides) and the validation layer, and the SPIR-V of every stage
+# (cache/spirv: KEY.spv beside KEY.sum, spirv/spirv_cache.h), into
 # .device/pack.tar.xz (ignored by git). There:
 #   mkdir -p /tmp/p && tar -C /tmp/p -xJf pack.tar.xz && cd /tmp/p
 #   LD_LIBRARY_PATH=lib VK_LAYER_PATH=layer ./rayspec run --cases cases --rules spec-rules.yaml \
@@ -28,7 +29,7 @@ cp -r cases references/spec-rules.yaml "$stage/"
 build-device/rayspec run --cases cases --rules references/spec-rules.yaml --no-validation \
   --cache-dir "$stage/cache" --out "$stage/filling" >/dev/null 2>&1 || true
 rm -rf "$stage/filling" "$stage/cache/case-seconds.json" "$stage/cache/pipelines"
-for lib in $(ldd build-device/rayspec | awk '/=>/ {print $3}' | grep -E 'yaml-cpp'); do cp -L "$lib" "$stage/lib/"; done
+for lib in $(ldd build-device/rayspec | awk '/=>/ {print $3}' | grep -E 'yaml-cpp|libcrypto'); do cp -L "$lib" "$stage/lib/"; done
 layer_json=/usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json
 cp /usr/lib/x86_64-linux-gnu/libVkLayer_khronos_validation.so "$stage/layer/"
 sed 's#"library_path": "libVkLayer_khronos_validation.so"#"library_path": "./libVkLayer_khronos_validation.so"#' \

@@ -107,6 +107,15 @@ struct Instance {
 
 constexpr uint32_t kMaxTlases = 8;
 
+// Totals a case is held to, checked while it is read, before the parent
+// allocates beyond them (each a CaseError naming the field and the limit;
+// README.md, "Limits"): primitives of all geometries together (one grid
+// alone may hold 2^23), instances, and the bytes of the per-ray records and
+// images a launch writes.
+constexpr uint64_t kMaxScenePrimitives = 1ull << 24;
+constexpr uint64_t kMaxInstances = 1ull << 20;
+constexpr uint64_t kMaxOutputBytes = 1ull << 30;
+
 // How every acceleration structure is built (scene.build): its build flags
 // (VkBuildAccelerationStructureFlagsKHR, default PREFER_FAST_TRACE), and a
 // copy (R-AS-COPY) the traces use instead of what was built: clone

@@ -13,6 +13,7 @@
 #include "case/yaml_shape.h"
 #include "results/content_hash.h"
 #include "results/file_name.h"
+#include "results/record_layout.h"
 
 namespace rayspec {
 
@@ -84,6 +85,21 @@ void checkCaseName(YamlReader& r, const Case& c) {
               "'" + c.name + "' cannot name a results folder: '" + part + "' " + problem);
 }
 
+// The bytes the launch's per-ray records and images take (each image at most
+// 4 words a texel), against kMaxOutputBytes: a case that would make the run
+// hold more is refused before anything is allocated.
+void checkOutputBytes(YamlReader& r, const YAML::Node& outputs, const Case& c) {
+  const uint64_t rays = c.rays.launchRays();
+  const uint64_t record_bytes = c.outputs.per_ray.empty() ? 0 : rays * recordWords() * 4;
+  const uint64_t image_bytes = c.outputs.images.size() * rays * 16;
+  if (record_bytes + image_bytes <= kMaxOutputBytes) return;
+  r.error(outputs, "outputs",
+          "the launch's " + std::to_string(rays) + " rays would write " +
+              std::to_string((record_bytes + image_bytes) >> 20) +
+              " MiB of per-ray records and images: at most 1 GiB (README.md, Limits); record "
+              "fewer rays, or only counters");
+}
+
 // expect_rejected: [shader names] (R-STAGE-INTERFACE); checkPrograms finds
 // what each does that its stage cannot.
 void parseExpectedRejections(YamlReader& r, const YAML::Node& n, Case& c) {
@@ -115,6 +131,7 @@ void parseTop(YamlReader& r, const YAML::Node& root, const std::vector<std::stri
     if (!c.outputs.images.empty() && c.rays.rays.empty() && r.errorCount() == 0)
       r.error(c.outputs.images[0].loc,
               "a launch with a zero dimension (rays.launch) has no texels for an image");
+    checkOutputBytes(r, o, c);
   }
   const YAML::Node pipeline = YamlReader::get(root, "pipeline");
   parsePipeline(r, pipeline, c.pipeline);

@@ -159,6 +159,7 @@ void parseBlases(YamlReader& r, const YAML::Node& n, Scene& scene) {
     r.error(n, "scene.blas", "expected a map of name -> list of geometries");
     return;
   }
+  uint64_t primitives = 0;
   for (auto it = n.begin(); it != n.end(); ++it) {
     Blas b;
     b.name = it->first.IsScalar() ? it->first.Scalar() : "?";
@@ -168,7 +169,15 @@ void parseBlases(YamlReader& r, const YAML::Node& n, Scene& scene) {
     if (r.expectSeq(geoms, field)) {
       for (size_t i = 0; i < geoms.size(); ++i) {
         Geometry g;
-        parseGeometry(r, geoms[i], field + "[" + std::to_string(i) + "]", g);
+        const std::string fi = field + "[" + std::to_string(i) + "]";
+        parseGeometry(r, geoms[i], fi, g);
+        primitives += g.primitiveCount();
+        if (primitives > kMaxScenePrimitives) {
+          r.error(geoms[i], fi,
+                  "the scene's geometries hold more than 2^24 primitives together (a "
+                  "limit of every case: README.md, Limits)");
+          return;
+        }
         b.geometries.push_back(std::move(g));
       }
       for (size_t i = 1; i < b.geometries.size(); ++i)
@@ -271,7 +280,10 @@ void parseScene(YamlReader& r, const YAML::Node& n, Scene& scene) {
   if (auto b = YamlReader::get(n, "build"); b.IsDefined()) parseBuild(r, b, scene.build);
   if (auto b = YamlReader::get(n, "blas"); b.IsDefined() && !b.IsNull()) parseBlases(r, b, scene);
   const YAML::Node insts = YamlReader::get(n, "instances");
-  if (insts.IsDefined() && !insts.IsNull() && r.expectSeq(insts, "scene.instances"))
+  if (insts.IsDefined() && !insts.IsNull() && insts.IsSequence() && insts.size() > kMaxInstances)
+    r.error(insts, "scene.instances",
+            std::to_string(insts.size()) + " instances: at most 2^20 (README.md, Limits)");
+  else if (insts.IsDefined() && !insts.IsNull() && r.expectSeq(insts, "scene.instances"))
     for (size_t i = 0; i < insts.size(); ++i) {
       Instance inst;
       parseInstance(r, insts[i], "scene.instances[" + std::to_string(i) + "]", scene, inst);

@@ -77,8 +77,9 @@ void addIsolationOptions(CLI::App* run, RunOptions& run_opt) {
       ->check(positiveSeconds())
       ->capture_default_str();
   run->add_option("--memory-limit", run_opt.memory_limit,
-                  "Memory each worker process may hold (RLIMIT_DATA; e.g. 8G, 512M; 0: no limit); "
-                  "beyond it the case that was running is a Crash")
+                  "Memory each worker process may hold (e.g. 8G, 512M; 0: no limit): its private "
+                  "data (RLIMIT_DATA) and its resident set, shared mappings included (watched "
+                  "every 50 ms); beyond it the case that was running is a Crash")
       ->transform(CLI::AsSizeValue(false))
       ->check(memoryLimit())
       ->default_str(std::to_string(kDefaultMemoryLimit >> 30) + "G");

@@ -14,10 +14,10 @@
 namespace rayspec {
 namespace {
 
-constexpr size_t kMaxVariants = 10000;         // cases one sweep may make
-constexpr size_t kMaxLineBytes = 64u << 10;    // one substituted line
-constexpr int kMaxSubstitutions = 10000;       // in one line
-constexpr size_t kMaxSweepBytes = 256u << 20;  // all variants' text together
+constexpr size_t kMaxVariants = 1024;        // cases one sweep may make
+constexpr size_t kMaxLineBytes = 64u << 10;  // one substituted line
+constexpr int kMaxSubstitutions = 10000;     // in one line
+constexpr size_t kMaxSweepBytes = 8u << 20;  // all variants' text together
 
 using Params = std::vector<std::pair<std::string, std::string>>;  // name -> YAML text, in order
 
@@ -319,7 +319,7 @@ void expandVariants(Expander& ex, const YAML::Node& sweep, const std::vector<std
       }
       total_bytes += v.text.size();
       if (total_bytes > kMaxSweepBytes)
-        ex.error(sweep, "sweep", "its cases' text grows beyond 256 MiB; split it");
+        ex.error(sweep, "sweep", "its cases' text grows beyond 8 MiB; split it");
       if (++names_seen[v.name] == 2)
         ex.error(name_node, "sweep.name",
                  "two variants are both named '" + v.name +

@@ -35,6 +35,10 @@ std::string copyCaseFolder(const std::string& from, const std::string& to,
 
 }  // namespace
 
+std::string variantText(const std::string& variant) {
+  return variant.empty() ? "as written" : "by " + variant;
+}
+
 MergeResult mergeRuns(const std::vector<std::string>& dirs, const std::string& out,
                       const Baseline& baseline, const std::vector<Rule>& catalog) {
   MergeResult m;
@@ -52,6 +56,11 @@ MergeResult mergeRuns(const std::vector<std::string>& dirs, const std::string& o
       return m;
     }
     SavedRun& run = *read;
+    if (!runs.empty() && run.info.variant != runs[0].info.variant) {
+      m.error = dir + " ran its cases " + variantText(run.info.variant) + ", " + dirs[0] + " " +
+                variantText(runs[0].info.variant) + ": only runs of one variant merge";
+      return m;
+    }
     if (!runs.empty() && (run.info.device != runs[0].info.device ||
                           run.info.model_tier != runs[0].info.model_tier)) {
       m.error = dir + " was run on '" + run.info.device + "' (model " + run.info.model_tier +

@@ -146,6 +146,7 @@ Result<SavedRun> readSavedRun(const std::string& dir) {
     run.info.started = j.at("started").get<std::string>();
     run.info.baseline = j.value("baseline", "");
     run.info.icd = j.value("icd", "");
+    run.info.variant = j.value("variant", "");
     run.info.validation = j.at("validation").get<bool>();
     run.info.teardown_errors = j.at("teardown_validation_errors").get<std::vector<std::string>>();
     run.info.planned_cases = j.at("planned_cases").get<size_t>();

@@ -86,6 +86,7 @@ std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const Run
   nlohmann::json j;
   j["device"] = info.device;
   j["icd"] = info.icd;
+  j["variant"] = info.variant;
   j["model_tier"] = info.model_tier;
   j["started"] = info.started;
   j["baseline"] = info.baseline;

@@ -28,6 +28,10 @@ struct RunInfo {
   std::string device, model_tier, started;
   std::string baseline;  // the baseline file the run was judged by ("" none)
   std::string icd;       // the driver manifest the device came from ("" when unknown)
+  // What the run did to every case (run/run_options.h runVariant): "" for the
+  // cases as written. Runs of another variant never resume, judge or merge
+  // into each other.
+  std::string variant;
   bool validation = false;
   size_t planned_cases = 0;  // cases the run set out to run (0: as many as it has outcomes)
   // Not every planned case ran: the run is still going, was stopped by a
@@ -38,6 +42,9 @@ struct RunInfo {
   std::vector<Rule> catalog;
   std::map<std::string, std::vector<std::string>> coverage;  // rule -> cases
 };
+
+// A run variant for people: "as written" or "by through update".
+std::string variantText(const std::string& variant);
 
 // deqp-runner's name for a status.
 const char* deqpStatusName(Status s);

@@ -16,6 +16,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <new>
 #include <sstream>
 #include <thread>
@@ -137,6 +138,7 @@ ChildEnd runChild(const std::function<int(std::string& message)>& body, const Ch
 
   int wstatus = 0;
   bool eof = false;
+  MemoryWatch memory(pid, limits.memory_limit);
   for (;;) {
     if (!eof) eof = drain(fds[0], end.message);
     const pid_t done = waitpid(pid, &wstatus, WNOHANG);
@@ -144,14 +146,17 @@ ChildEnd runChild(const std::function<int(std::string& message)>& body, const Ch
     const bool lost = done < 0 && errno != EINTR;
     const bool interrupted = interruptSignal() != 0;
     const bool late = limits.timeout_seconds > 0 && elapsed() > limits.timeout_seconds;
-    if (lost || interrupted || late) {
+    const bool too_big = !lost && !interrupted && !late && memory.over();
+    if (lost || interrupted || late || too_big) {
       kill(pid, SIGKILL);
       while (waitpid(pid, &wstatus, 0) < 0 && errno == EINTR) {
       }
       close(fds[0]);
       end.how = interrupted ? ChildEnd::How::Interrupted
                 : late      ? ChildEnd::How::TimedOut
+                : too_big   ? ChildEnd::How::Exited
                             : ChildEnd::How::NotStarted;
+      if (too_big) end.code = kChildOutOfMemory;
       if (end.how == ChildEnd::How::NotStarted) end.error = "lost the child process";
       end.seconds = elapsed();
       return end;
@@ -171,6 +176,22 @@ ChildEnd runChild(const std::function<int(std::string& message)>& body, const Ch
   // A child killed by the terminal's SIGINT with the rest of the process group.
   if (interruptSignal() != 0 && !end.ok()) end.how = ChildEnd::How::Interrupted;
   return end;
+}
+
+uint64_t residentBytes(pid_t pid) {
+  std::ifstream statm("/proc/" + std::to_string(pid) + "/statm");
+  uint64_t size = 0, resident = 0;
+  if (!(statm >> size >> resident)) return 0;
+  return resident * static_cast<uint64_t>(sysconf(_SC_PAGESIZE));
+}
+
+bool MemoryWatch::over() {
+  if (!limit_ || !memoryLimitApplies()) return false;
+  const double now =
+      std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  if (last_ >= 0 && now - last_ < 0.05) return false;
+  last_ = now;
+  return residentBytes(pid_) > limit_;
 }
 
 std::string formatBytes(uint64_t bytes) {

@@ -2,13 +2,15 @@
 // it does (crash, hang, exhaust memory) ends only the child. The child dies
 // with its parent (PR_SET_PDEATHSIG, checked against the race with the
 // parent's death), gets the default SIGINT / SIGTERM dispositions back, and
-// may hold at most `memory_limit` bytes of private writable memory
-// (RLIMIT_DATA: heap, anonymous maps, thread stacks; address space only
-// reserved, as glibc's malloc arenas and Embree reserve it, does not count, so
-// the limit does not grow with the number of cores). An `operator new` beyond
-// it ends the child with kChildOutOfMemory. The parent
-// kills the child after `timeout_seconds`, or at once when the run was
-// interrupted (run/interrupt.h).
+// may hold at most `memory_limit` bytes, bounded twice: RLIMIT_DATA in the
+// child (heap, anonymous maps, thread stacks: an `operator new` beyond it
+// ends the child with kChildOutOfMemory; address space only reserved, as
+// glibc's malloc arenas and Embree reserve it, does not count), and the
+// parent's watch of its resident set (shared mappings included, which
+// RLIMIT_DATA leaves out and lavapipe uses): read every 50 ms, beyond the
+// limit the parent kills the child and it ends as kChildOutOfMemory too. The
+// parent kills the child after `timeout_seconds`, or at once when the run
+// was interrupted (run/interrupt.h).
 #pragma once
 
 #include <sys/types.h>
@@ -38,7 +40,7 @@ bool memoryLimitApplies();
 
 struct ChildLimits {
   double timeout_seconds = 0;  // 0: none
-  uint64_t memory_limit = 0;   // bytes of private writable memory (RLIMIT_DATA); 0: none
+  uint64_t memory_limit = 0;   // bytes (RLIMIT_DATA and the resident set); 0: none
 };
 
 // Exit statuses the child itself chooses.
@@ -77,5 +79,20 @@ std::string describeChildEnd(const ChildEnd& end, const std::string& who,
 
 // "8 GiB", "512 MiB".
 std::string formatBytes(uint64_t bytes);
+
+// The parent's watch of a child's resident set (/proc/PID/statm), read at
+// most every 50 ms: over() when the limit applies and the child holds more.
+class MemoryWatch {
+ public:
+  MemoryWatch(pid_t pid, uint64_t limit) : pid_(pid), limit_(limit) {}
+  bool over();
+
+ private:
+  pid_t pid_;
+  uint64_t limit_;
+  double last_ = -1;  // seconds on the steady clock of the last read
+};
+// Bytes resident in `pid`'s memory now (0 when it cannot be read).
+uint64_t residentBytes(pid_t pid);
 
 }  // namespace rayspec

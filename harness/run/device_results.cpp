@@ -8,6 +8,7 @@
 
 #include "base/visible_text.h"
 #include "model/model_engine.h"
+#include "report/outcome_json.h"
 #include "results/content_hash.h"
 #include "results/results_io.h"
 #include "run/isolation.h"
@@ -69,6 +70,14 @@ std::string deviceResultsError(const RunOptions& opt) {
   if (fs::weakly_canonical(dir, ec) == fs::weakly_canonical(opt.out, ec))
     return what +
            " is the --out folder: the run would remove the results it reads; give another --out";
+  // The saved run did its cases by a variant (--through, --permute, --move):
+  // they are judged by the same one only.
+  if (fs::exists(fs::path(dir) / "summary.json", ec))
+    if (const Result<SavedRun> saved = readSavedRun(dir);
+        saved && saved->info.variant != runVariant(opt))
+      return what + " ran its cases " + variantText(saved->info.variant) +
+             ", this run would judge them " + variantText(runVariant(opt)) +
+             ": give the same --through, --permute and --move";
   return {};
 }
 

@@ -71,4 +71,9 @@ struct RunOptions {
                                // device (run/device_results.h)
 };
 
+// What the run does to every case (--through, --permute, --move), as the run
+// folder records it (RunInfo::variant): "" for the cases as written, else
+// e.g. "through update; permute 7; move -y,x,z".
+std::string runVariant(const RunOptions& opt);
+
 }  // namespace rayspec

@@ -78,6 +78,9 @@ std::string resumeError(const SavedRun& saved, const RunInfo& info, const std::s
   if (saved.info.device != info.device)
     return "--resume: " + out + " was run on '" + saved.info.device + "', this run is on '" +
            info.device + "'";
+  if (saved.info.variant != info.variant)
+    return "--resume: " + out + " ran its cases " + variantText(saved.info.variant) +
+           ", this run would run them " + variantText(info.variant);
   return {};
 }
 
@@ -151,6 +154,7 @@ RunInfo startRunInfo(const RunOptions& opt, size_t planned_cases) {
   RunInfo info;
   info.started = timeNow();
   info.model_tier = opt.no_model ? "none" : opt.model_tier;
+  info.variant = runVariant(opt);
   info.planned_cases = planned_cases;
   info.interrupted = true;  // until the last case is done: a run killed before then stays marked
   if (Result<std::vector<Rule>> catalog = loadRuleCatalog(opt.rules_file))

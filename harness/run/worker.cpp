@@ -184,6 +184,7 @@ bool Worker::await(Reply& reply, double timeout_seconds) {
   std::string buffer;
   char kind = 0;
   char chunk[65536];
+  MemoryWatch memory(pid_, limits_.memory_limit);
   for (;;) {
     if (wholeMessage(buffer, &kind, &reply.text)) {
       reply.replied = true;
@@ -211,6 +212,12 @@ bool Worker::await(Reply& reply, double timeout_seconds) {
     }
     if (timeout_seconds > 0 && since(start) > timeout_seconds) {
       reply.end = reap(ChildEnd::How::TimedOut);
+      break;
+    }
+    if (memory.over()) {  // the resident set, shared mappings included
+      reply.end = reap(ChildEnd::How::Exited);
+      reply.end.how = ChildEnd::How::Exited;
+      reply.end.code = kChildOutOfMemory;
       break;
     }
   }
