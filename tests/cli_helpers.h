@@ -40,6 +40,15 @@ inline std::string slurp(const std::string& path) {
   return s.str();
 }
 
+// A folder outside every run folder, with a marker file keep.txt ("keep"),
+// that must survive whatever a test does to the runs beside it.
+inline std::string victim(const std::string& root, const std::string& name) {
+  const std::string dir = root + "/" + name;
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "/keep.txt") << "keep";
+  return dir;
+}
+
 // An empty folder for one test under the build's test output.
 inline std::string fresh(const std::string& name) {
   const std::string dir = std::string(RAYSPEC_TEST_OUT) + "/" + name;

@@ -17,16 +17,9 @@ using cli::caseArg;
 using cli::fresh;
 using cli::sh;
 using cli::slurp;
+using cli::victim;
 
 const std::string kCase = "results/miss-xor-closest-hit";
-
-// A folder outside every run folder, with a marker file, that must survive.
-std::string victim(const std::string& root, const std::string& name) {
-  const std::string dir = root + "/" + name;
-  fs::create_directories(dir);
-  std::ofstream(dir + "/keep.txt") << "keep";
-  return dir;
-}
 
 size_t filesUnder(const std::string& dir) {
   size_t n = 0;

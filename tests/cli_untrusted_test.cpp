@@ -18,6 +18,7 @@ using cli::caseArg;
 using cli::fresh;
 using cli::sh;
 using cli::slurp;
+using cli::victim;
 
 const std::string kImages = "anyhit/ignore-odd-primitives";  // a case with images
 
@@ -26,14 +27,6 @@ nlohmann::json readJson(const std::string& path) {
 }
 void writeJson(const std::string& path, const nlohmann::json& j) {
   std::ofstream(path) << j.dump(1);
-}
-
-// A folder outside every run folder, with a marker file, that must survive.
-std::string victim(const std::string& root, const std::string& name) {
-  const std::string dir = root + "/" + name;
-  fs::create_directories(dir);
-  std::ofstream(dir + "/keep.txt") << "keep";
-  return dir;
 }
 
 // One run of kImages, device and model, saved once for every test.

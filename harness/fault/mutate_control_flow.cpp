@@ -38,6 +38,17 @@ size_t renameOps(Case& c, const std::string& from, const std::string& to) {
   return n;
 }
 
+// `e` becomes e + 1 (a Uint expression), written where e was.
+void addOne(Expr& e) {
+  Expr more;
+  more.kind = Expr::Kind::Op;
+  more.name = "add";
+  more.type = ValueType::Uint;
+  more.loc = e.loc;
+  more.args = {std::move(e), uintLiteral(1, more.loc)};
+  e = std::move(more);
+}
+
 }  // namespace
 
 // A compiler that emits an inclusive or for an exclusive one.
@@ -76,13 +87,7 @@ std::string floatBitsConverted(Case& c, ModelOptions&) {
 std::string wordIndexOffByOne(Case& c, ModelOptions&) {
   size_t n = 0;
   auto one_past = [&](Expr& index) {
-    Expr more;
-    more.kind = Expr::Kind::Op;
-    more.name = "add";
-    more.type = ValueType::Uint;
-    more.loc = index.loc;
-    more.args = {std::move(index), uintLiteral(1, more.loc)};
-    index = std::move(more);
+    addOne(index);
     ++n;
   };
   forEachProgram(c.pipeline, [&](Program& p, Stage) {
@@ -117,13 +122,7 @@ std::string loopTripOffByOne(Case& c, ModelOptions&) {
   forEachProgram(c.pipeline, [&](Program& p, Stage) {
     forEachStmt(p, [&](Stmt& s) {
       if (s.kind != Stmt::Kind::Repeat) return;
-      Expr more;
-      more.kind = Expr::Kind::Op;
-      more.name = "add";
-      more.type = ValueType::Uint;
-      more.loc = s.count.loc;
-      more.args = {std::move(s.count), uintLiteral(1, more.loc)};
-      s.count = std::move(more);
+      addOne(s.count);
       ++n;
     });
   });
