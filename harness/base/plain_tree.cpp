@@ -1,6 +1,7 @@
 #include "base/plain_tree.h"
 
 #include <filesystem>
+#include <utility>
 
 namespace rayspec {
 namespace fs = std::filesystem;
@@ -22,18 +23,22 @@ std::string oddEntry(const fs::path& p) {
   }
 }
 
-}  // namespace
-
-std::string plainTreeProblem(const std::string& root, bool root_may_link) {
+// Every entry below `root` (not following links) that is not a regular file
+// or a folder: its path and what it is. A folder that cannot be read is said
+// in `*error`.
+std::vector<std::pair<fs::path, std::string>> oddEntriesBelow(const fs::path& root,
+                                                              std::string* error) {
+  std::vector<std::pair<fs::path, std::string>> odd;
   std::error_code ec;
-  if (!root_may_link)
-    if (std::string odd = oddEntry(root); !odd.empty()) return odd;
-  if (!fs::is_directory(root, ec)) return "";
+  if (!fs::is_directory(root, ec)) return odd;
   for (fs::recursive_directory_iterator it(root, fs::directory_options::none, ec), end;
        !ec && it != end; it.increment(ec))
-    if (std::string odd = oddEntry(it->path()); !odd.empty()) return odd;
-  return ec ? "cannot read " + root + ": " + ec.message() : "";
+    if (std::string what = oddEntry(it->path()); !what.empty()) odd.emplace_back(it->path(), what);
+  if (ec) *error = "cannot read " + root.string() + ": " + ec.message();
+  return odd;
 }
+
+}  // namespace
 
 std::string plainPathProblem(const std::string& base, const std::string& relative) {
   fs::path at = base;
@@ -42,22 +47,19 @@ std::string plainPathProblem(const std::string& base, const std::string& relativ
     at /= part;
     if (std::string odd = oddEntry(at); !odd.empty()) return odd;
   }
-  return plainTreeProblem(at.string());
+  std::string error;
+  const auto odd = oddEntriesBelow(at, &error);
+  return odd.empty() ? error : odd.front().second;
 }
 
 std::vector<std::string> removeOddEntries(const std::string& root) {
-  std::vector<std::string> odd_entries;
-  std::error_code ec;
-  if (!fs::is_directory(root, ec)) return odd_entries;
-  std::vector<fs::path> odd;
-  for (fs::recursive_directory_iterator it(root, fs::directory_options::none, ec), end;
-       !ec && it != end; it.increment(ec))
-    if (std::string what = oddEntry(it->path()); !what.empty()) {
-      odd.push_back(it->path());
-      odd_entries.push_back(what);
-    }
-  for (const fs::path& p : odd) fs::remove(p, ec);  // the entry itself: a link is not followed
-  return odd_entries;
+  std::vector<std::string> removed;
+  std::string unreadable;  // what could not be read holds nothing to remove here
+  for (const auto& [path, what] : oddEntriesBelow(root, &unreadable)) {
+    std::error_code ec;
+    if (fs::remove(path, ec)) removed.push_back(what);  // the entry itself: a link is not followed
+  }
+  return removed;
 }
 
 }  // namespace rayspec

@@ -146,8 +146,6 @@ struct Scene {
   // updates it in place into each later state in turn.
   std::vector<std::shared_ptr<const Scene>> earlier;
   size_t updates() const { return earlier.size(); }
-  // The scene as first built: earlier.front(), or this one without updates.
-  const Scene& firstBuilt() const { return earlier.empty() ? *this : *earlier.front(); }
   // The updates that run before the copy (build.updates_before_copy, at most
   // every update).
   size_t updatesBeforeCopy() const {
@@ -290,9 +288,13 @@ struct Pipeline {
   std::vector<HitGroup> hit_groups;
   // Extra words of each location's payload type; default one location, none.
   std::vector<uint32_t> payload_words{0};
+  // Extra words of a location's payload type (0 for a location not declared).
+  uint32_t payloadWords(size_t location) const {
+    return location < payload_words.size() ? payload_words[location] : 0;
+  }
   // Bytes of a location's payload type: RsPayload (vec4, uint, uint) + 4 per word.
   uint32_t payloadBytes(size_t location) const {
-    return kPayloadBaseBytes + 4 * (location < payload_words.size() ? payload_words[location] : 0);
+    return kPayloadBaseBytes + 4 * payloadWords(location);
   }
   uint32_t maxPayloadWords() const {
     uint32_t n = 0;
@@ -322,7 +324,7 @@ struct Pipeline {
   uint32_t indexedWords(WordArray which, Stage stage, uint32_t incoming_location) const {
     switch (which) {
       case WordArray::Payload:
-        return stage == Stage::Raygen ? maxPayloadWords() : payloadWordsAt(incoming_location);
+        return stage == Stage::Raygen ? maxPayloadWords() : payloadWords(incoming_location);
       case WordArray::Child:
         return maxPayloadWords();
       case WordArray::Call:
@@ -331,9 +333,6 @@ struct Pipeline {
         return maxCallDataWords();
     }
     return 0;
-  }
-  uint32_t payloadWordsAt(size_t location) const {
-    return location < payload_words.size() ? payload_words[location] : 0;
   }
   // Extra uint words of the hit attribute after its vec2
   // (pipeline.hit_attribute.words, 0..kMaxAttributeWords).

@@ -5,11 +5,6 @@
 namespace rayspec {
 namespace {
 
-uint32_t wordsAt(const StageContext& ctx, uint32_t location) {
-  const std::vector<uint32_t>& w = ctx.c.pipeline.payload_words;
-  return location < w.size() ? w[location] : 0;
-}
-
 bool receivesPayload(Stage s) {
   return s == Stage::Miss || s == Stage::ClosestHit || s == Stage::AnyHit;
 }
@@ -53,7 +48,7 @@ uint32_t outgoingLocation(const StageContext& ctx, uint32_t location) {
 void emitPayloadVariables(const StageContext& ctx, GlslWriter& out) {
   if (receivesPayload(ctx.stage) || (ctx.rejected && ctx.uses.incoming_payload))
     out.line("layout(location = 0) rayPayloadInEXT " +
-             payloadTypeName(wordsAt(ctx, ctx.payload_location)) + " payload;");
+             payloadTypeName(ctx.c.pipeline.payloadWords(ctx.payload_location)) + " payload;");
   if (!ctx.uses.trace) {
     // Raygen reads `payload`, closest-hit and miss `child`, even when they
     // never trace (all zero, as the model has it).
@@ -63,7 +58,7 @@ void emitPayloadVariables(const StageContext& ctx, GlslWriter& out) {
   }
   for (uint32_t l : ctx.uses.trace_locations)
     out.line("layout(location = " + std::to_string(outgoingLocation(ctx, l)) + ") rayPayloadEXT " +
-             payloadTypeName(wordsAt(ctx, l)) + " " + outgoingPayload(l) + ";");
+             payloadTypeName(ctx.c.pipeline.payloadWords(l)) + " " + outgoingPayload(l) + ";");
   out.line(payloadTypeName(ctx.c.pipeline.maxPayloadWords()) + " " + resultName(ctx) +
            ";  // the last trace's payload");
 }
@@ -81,7 +76,8 @@ void emitPayloadStart(const StageContext& ctx, GlslWriter& out) {
 
 void emitPayloadResult(const StageContext& ctx, uint32_t location, GlslWriter& out) {
   const std::string r = resultName(ctx), p = outgoingPayload(location);
-  const uint32_t n = wordsAt(ctx, location), largest = ctx.c.pipeline.maxPayloadWords();
+  const uint32_t n = ctx.c.pipeline.payloadWords(location),
+                 largest = ctx.c.pipeline.maxPayloadWords();
   if (n == largest) {
     out.line(r + " = " + p + ";");
     return;

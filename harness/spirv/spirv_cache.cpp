@@ -1,15 +1,10 @@
 #include "spirv/spirv_cache.h"
 
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <mutex>
 #include <string_view>
-#include <thread>
 #include <unordered_map>
-
-#include <unistd.h>
 
 #include "base/whole_file.h"
 #include "results/sha256.h"
