@@ -142,4 +142,39 @@ TEST(List, SweepVariantsAreCasesOfTheirOwn) {
   EXPECT_NE(one.out.find("Case sbt/rows/row-1"), std::string::npos) << one.out;
 }
 
+// `rayspec compile` fills a SPIR-V cache with no device: every stage of the
+// family compiled once, then all found there; a KEY.spv beside each KEY.sum.
+TEST(Compile, FillsTheCacheThenFindsEverything) {
+  const fs::path cache = fs::path(RAYSPEC_TEST_OUT) / "compile-cache";
+  fs::remove_all(cache);
+  const ShowRun first = rayspec("compile --filter 'sbt/*' --cache-dir " + cache.string());
+  ASSERT_EQ(first.status, 0) << first.out << first.err;
+  EXPECT_NE(first.out.find("0 from the cache, 0 failed"), std::string::npos) << first.out;
+  int spv = 0, sums = 0;
+  for (const auto& e : fs::directory_iterator(cache / "spirv")) {
+    spv += e.path().extension() == ".spv";
+    sums += e.path().extension() == ".sum";
+  }
+  EXPECT_GT(spv, 10);
+  EXPECT_EQ(spv, sums);
+  const ShowRun again = rayspec("compile --filter 'sbt/*' --cache-dir " + cache.string());
+  EXPECT_EQ(again.status, 0) << again.err;
+  EXPECT_NE(again.out.find(": 0 compiled"), std::string::npos) << again.out;
+}
+
+// A case that does not parse: its error, and exit 1 once the others are done.
+TEST(Compile, ACaseThatDoesNotParseFailsTheCommand) {
+  const fs::path dir = fs::path(RAYSPEC_TEST_OUT) / "compile-cases";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "sbt");
+  fs::copy_file(fs::path(RAYSPEC_SOURCE_DIR) / "cases/sbt/hit-group-index.yaml",
+                dir / "sbt/hit-group-index.yaml");
+  std::ofstream(dir / "sbt/broken.yaml") << "scene: [\n";
+  const ShowRun r = rayspec("compile --cases " + dir.string() + " --cache-dir ''");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("broken.yaml"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("1 cases, "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("1 cases do not parse"), std::string::npos) << r.out;
+}
+
 }  // namespace

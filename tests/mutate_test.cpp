@@ -72,6 +72,30 @@ TEST(Mutate, DeclaredExactCounterHasNoSlack) {
   }
 }
 
+// Every one of basic2's 20,736 rays commits the same box (all are ties):
+// no two records differ, so swap-rays changes nothing and says so, found by
+// one pass over the rays (the search was quadratic: 100 s in the kill matrix).
+TEST(Mutate, SwapRaysOverOneAnswerIsNotApplied) {
+  const CaseMutation m = mutateSuiteCase("cts-amber/basic2/without-micromap-flags");
+  ASSERT_TRUE(m.judged) << m.not_judged;
+  const MutantOutcome* o = find(m, "swap-rays");
+  ASSERT_NE(o, nullptr);
+  EXPECT_FALSE(o->mutation.applied);
+  EXPECT_NE(o->mutation.what.find("no two rays with different records"), std::string::npos)
+      << o->mutation.what;
+}
+
+// Where rays differ, the first ray and the first that differs from it swap.
+TEST(Mutate, SwapRaysSwapsTheFirstDifferingPair) {
+  const CaseMutation m = mutateSuiteCase("anyhit/ignore-odd-primitives");
+  const MutantOutcome* o = find(m, "swap-rays");
+  ASSERT_NE(o, nullptr);
+  ASSERT_TRUE(o->mutation.applied) << o->mutation.what;
+  ASSERT_EQ(o->mutation.rays.size(), 2u);
+  EXPECT_LT(o->mutation.rays[0], o->mutation.rays[1]);
+  EXPECT_TRUE(o->killed) << o->headline;
+}
+
 // Robustness probes: raygen's count before the trace is exact even there.
 TEST(Mutate, NullDeviceFailsTheUndefinedRaysProbe) {
   const CaseMutation m = mutateSuiteCase("robustness/undefined-rays");

@@ -42,7 +42,7 @@ scratch=$(mktemp -d /var/tmp/rayspec-bare.XXXXXX)
 mounted=()
 cleanup() {
   local m
-  for m in "${mounted[@]}"; do umount "$m" || true; done
+  for m in "${mounted[@]}"; do umount -R "$m" || true; done
   if [[ $keep -eq 1 ]]; then echo "bare-machine: kept $scratch"; else rm -rf "$scratch"; fi
 }
 trap cleanup EXIT
@@ -53,7 +53,11 @@ if [[ $chroot_mode -eq 1 ]]; then
   started=$EPOCHREALTIME
   debootstrap --variant=minbase bookworm "$scratch/root" http://deb.debian.org/debian >"$scratch/debootstrap.log"
   debootstrap_seconds=$(awk -v a="$started" -v b="$EPOCHREALTIME" 'BEGIN { printf "%.0f", b - a }')
-  for m in proc dev sys; do mount --bind "/$m" "$scratch/root/$m" && mounted+=("$scratch/root/$m"); done
+  # Recursive binds: /dev/pts and /dev/shm as a real machine has them
+  # (cli/isolation opens a pseudo-terminal).
+  for m in proc dev sys; do
+    mount --rbind "/$m" "$scratch/root/$m" && mount --make-rslave "$scratch/root/$m" && mounted+=("$scratch/root/$m")
+  done
   cp /etc/resolv.conf "$scratch/root/etc/resolv.conf"
   base=$scratch/root/work
   inside=/work

@@ -3,7 +3,8 @@
 # test per suite, PREFIX/<Suite>, running `PROGRAM --gtest_filter=<Suite>.*`.
 # One process runs a suite's tests, instead of one process per test (each
 # start loads OpenImageIO's few hundred libraries: about 0.2 s).
-# EXCLUDE: suites left out (;-separated); LABELS: the tests' labels. A suite
+# EXCLUDE: suites left out (;-separated); LABELS: the tests' labels;
+# ENVIRONMENT: their environment (NAME=VALUE). A suite
 # in which a test skips (GTEST_SKIP) is reported skipped, never passed: a test
 # that skips where the build lacks something sits in a suite of its own.
 cmake_minimum_required(VERSION 3.25)
@@ -25,6 +26,6 @@ foreach(line IN LISTS lines)
   endif()
   string(APPEND script "add_test([==[${PREFIX}${suite}]==] [==[${PROGRAM}]==] [==[--gtest_filter=${suite}.*]==])\n"
                        "set_tests_properties([==[${PREFIX}${suite}]==] PROPERTIES LABELS [==[${LABELS}]==] "
-                       "SKIP_REGULAR_EXPRESSION [==[\\[  SKIPPED \\]]==])\n")
+                       "ENVIRONMENT [==[${ENVIRONMENT}]==] SKIP_REGULAR_EXPRESSION [==[\\[  SKIPPED \\]]==])\n")
 endforeach()
 file(WRITE "${OUT}" "${script}")

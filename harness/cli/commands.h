@@ -35,6 +35,12 @@ struct ListOptions {
   std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
 };
 
+struct CompileOptions {
+  std::string filter = "*";
+  std::string cases_dir = RAYSPEC_SOURCE_DIR "/cases";
+  std::string cache_dir = defaultCacheDir();
+};
+
 struct MergeOptions {
   std::vector<std::string> dirs;  // run folders to join
   std::string out = "rayspec-merged";
@@ -48,6 +54,7 @@ inline constexpr const char* kIcdOptionHelp =
 int runDevices(const DevicesOptions& opt);
 int runShow(const ShowOptions& opt);
 int runList(const ListOptions& opt);
+int runCompile(const CompileOptions& opt);
 int runCompare(const CompareOptions& opt);
 int runMerge(const MergeOptions& opt);
 

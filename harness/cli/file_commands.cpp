@@ -1,5 +1,5 @@
 // The subcommands on saved files and folders, cases and devices: devices,
-// compare, merge, show, list.
+// compare, merge, show, list, compile.
 #include <memory>
 
 #include "cli/commands.h"
@@ -97,6 +97,25 @@ Subcommand addListCommand(CLI::App& app) {
 
   return {list, [opt] {
             return runList(*opt);
+          }};
+}
+
+Subcommand addCompileCommand(CLI::App& app) {
+  auto* compile = app.add_subcommand(
+      "compile",
+      "Compile the SPIR-V of every generated stage into the cache folder (no device, nothing run); "
+      "exit 1 when a stage does not compile");
+  auto opt = std::make_shared<CompileOptions>();
+  CompileOptions& compile_opt = *opt;
+  compile->add_option("--filter", compile_opt.filter, "Only cases whose name matches this glob")
+      ->capture_default_str();
+  compile->add_option("--cases", compile_opt.cases_dir, "Folder of case files")
+      ->capture_default_str();
+  compile->add_option("--cache-dir", compile_opt.cache_dir, "Folder of the SPIR-V cache")
+      ->capture_default_str();
+
+  return {compile, [opt] {
+            return runCompile(*opt);
           }};
 }
 

@@ -22,6 +22,7 @@ Subcommand addCompareCommand(CLI::App& app);
 Subcommand addMergeCommand(CLI::App& app);
 Subcommand addShowCommand(CLI::App& app);
 Subcommand addListCommand(CLI::App& app);
+Subcommand addCompileCommand(CLI::App& app);
 // cli/study_commands.cpp: studies made of runs
 Subcommand addStabilityCommand(CLI::App& app);
 Subcommand addAccuracyCommand(CLI::App& app);
