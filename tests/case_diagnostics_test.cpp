@@ -11,19 +11,15 @@
 #include <sstream>
 
 #include "case/parse_case.h"
+#include "case_support.h"
 #include "suite_cases.h"
 
 namespace rayspec {
 namespace {
 
-ParseResult parse(const std::string& text, const std::vector<std::string>* catalog = nullptr) {
+ParseResult parseDiagnostics(const std::string& text,
+                             const std::vector<std::string>* catalog = nullptr) {
   return parseCaseText(text, "d.yaml", "family/d", catalog);
-}
-
-std::string allErrors(const ParseResult& r) {
-  std::string s;
-  for (const Error& e : r.errors) s += e.format() + "\n";
-  return s;
 }
 
 // The error at line:col whose field is `field` and whose message holds `text`.
@@ -77,31 +73,35 @@ std::string twoGeometries(const std::string& hit, const std::string& offset = "0
 
 TEST(CaseStaticUndefined, HitRecordBeyondTheHitRegionIsACaseError) {
   // Geometry 1 with stride 1 reads hit record 1; one hit group, no sbt block: one record.
-  ParseResult r = parse(twoGeometries("  hit_groups: [{closest_hit: []}]"));
+  ParseResult r = parseDiagnostics(twoGeometries("  hit_groups: [{closest_hit: []}]"));
   EXPECT_ERROR_AT(r, 16, 7, "pipeline.raygen[0].trace", "hit record 1 is out of range");
   EXPECT_NE(allErrors(r).find("geometry 1"), std::string::npos);
   ASSERT_EQ(r.undefined.size(), 1u);
   EXPECT_EQ(r.undefined[0].reason, UndefinedReason::HitRecordOutOfRange);
   // A record per geometry (sbt block or a group each) is fine.
   EXPECT_TRUE(
-      parse(twoGeometries("  hit_groups: [{closest_hit: []}]\n  sbt: {hit: [0, 0]}")).value);
-  EXPECT_TRUE(parse(twoGeometries("  hit_groups: [{closest_hit: []}, {closest_hit: []}]")).value);
+      parseDiagnostics(twoGeometries("  hit_groups: [{closest_hit: []}]\n  sbt: {hit: [0, 0]}"))
+          .value);
+  EXPECT_TRUE(
+      parseDiagnostics(twoGeometries("  hit_groups: [{closest_hit: []}, {closest_hit: []}]"))
+          .value);
   // A launch ray's own sbt_offset (low 4 bits count) can reach beyond too; the message names the
   // ray.
-  r = parse(twoGeometries("  hit_groups: [{}, {}]", "0x11"));
+  r = parseDiagnostics(twoGeometries("  hit_groups: [{}, {}]", "0x11"));
   EXPECT_ERROR_AT(r, 16, 7, "pipeline.raygen[0].trace", "hit record 2 is out of range");
   EXPECT_NE(allErrors(r).find("rays.list[1]"), std::string::npos) << allErrors(r);
-  EXPECT_TRUE(parse(twoGeometries("  hit_groups: [{}, {}]", "0x10")).value)
+  EXPECT_TRUE(parseDiagnostics(twoGeometries("  hit_groups: [{}, {}]", "0x10")).value)
       << "0x10 acts as 0 (R-SBT-HIT)";
   // Geometry nothing can reach: a masked-out instance, triangles skipped by the pipeline.
-  EXPECT_TRUE(parse(twoGeometries("  hit_groups: [{}]", "0", "0")).value);
-  EXPECT_TRUE(parse(twoGeometries("  hit_groups: [{}]", "0", "0xFF", "[skip_triangles]")).value);
+  EXPECT_TRUE(parseDiagnostics(twoGeometries("  hit_groups: [{}]", "0", "0")).value);
+  EXPECT_TRUE(
+      parseDiagnostics(twoGeometries("  hit_groups: [{}]", "0", "0xFF", "[skip_triangles]")).value);
 }
 
 TEST(CaseStaticUndefined, DynamicSbtValuesAreLeftToTheModel) {
   std::string text = twoGeometries("  hit_groups: [{}]");
   text.replace(text.find("trace: {}"), 9, "trace: {sbt_offset: launch_id_x, miss: launch_id_y}");
-  const ParseResult r = parse(text);
+  const ParseResult r = parseDiagnostics(text);
   EXPECT_TRUE(r.value) << allErrors(r);
 }
 
@@ -138,27 +138,28 @@ std::string programs(const std::string& miss, const std::string& call,
 // A miss index beyond the miss region is undefined only for a ray that
 // misses (R-SBT-MISS): the model judges it ray by ray (model_undefined_test).
 TEST(CaseStaticUndefined, MissIndexBeyondTheMissRegionIsLeftToTheModel) {
-  EXPECT_TRUE(parse(programs("1", "0")).value);
-  ParseResult r = parse(programs("2", "0"));
+  EXPECT_TRUE(parseDiagnostics(programs("1", "0")).value);
+  ParseResult r = parseDiagnostics(programs("2", "0"));
   EXPECT_TRUE(r.value) << allErrors(r);
-  r = parse(programs("{add: [1, 1]}", "0"));
+  r = parseDiagnostics(programs("{add: [1, 1]}", "0"));
   EXPECT_TRUE(r.value) << allErrors(r);
 }
 
 TEST(CaseStaticUndefined, CallableIndexBeyondTheCallableRegionIsACaseError) {
-  ParseResult r = parse(programs("0", "1"));
+  ParseResult r = parseDiagnostics(programs("0", "1"));
   EXPECT_ERROR_AT(r, 8, 21, "pipeline.raygen[1].call.index", "callable index 1 is out of range");
   EXPECT_EQ(r.undefined.at(0).reason, UndefinedReason::CallableOutOfRange);
-  r = parse(programs("0", "{mul: [3, 2]}"));
+  r = parseDiagnostics(programs("0", "{mul: [3, 2]}"));
   EXPECT_ERROR_AT(r, 8, 21, "pipeline.raygen[1].call.index", "callable index 6");
-  EXPECT_TRUE(parse(programs("0", "{sub: [launch_id_x, launch_id_x]}")).value) << "not a constant";
+  EXPECT_TRUE(parseDiagnostics(programs("0", "{sub: [launch_id_x, launch_id_x]}")).value)
+      << "not a constant";
 }
 
 TEST(CaseStaticUndefined, NegativeOrNanTminAndTmaxBelowTminAreCaseErrors) {
   // In a trace.
-  ParseResult r = parse(programs("0", "0", "-1"));
+  ParseResult r = parseDiagnostics(programs("0", "0", "-1"));
   EXPECT_ERROR_AT(r, 10, 64, "pipeline.miss[0][0].trace.tmin", "trace tmin is negative or NaN");
-  r = parse(programs("0", "0", "2", "1"));
+  r = parseDiagnostics(programs("0", "0", "2", "1"));
   EXPECT_ERROR_AT(r, 10, 73, "pipeline.miss[0][0].trace.tmax", "trace tmax is below tmin");
   // In rays: the defaults and a list entry.
   const std::string rays = R"(rules: [R-CAND-TRI-OPEN]
@@ -171,7 +172,7 @@ rays:
   tmax: -4
 pipeline: {miss: [[]]}
 )";
-  r = parse(rays);
+  r = parseDiagnostics(rays);
   EXPECT_ERROR_AT(r, 4, 56, "rays.list[0].tmax", "tmax 0.0001 is below tmin 0.001");
   EXPECT_ERROR_AT(r, 5, 56, "rays.list[1].tmin", "tmin is NaN");
   EXPECT_ERROR_AT(r, 6, 16, "rays.list[2].origin", "not finite");
@@ -193,7 +194,7 @@ outputs:
   auto with = [&](const std::string& e) {
     std::string s = text;
     s.replace(s.find("@EXPR@"), 6, e);
-    return parse(s);
+    return parseDiagnostics(s);
   };
   ParseResult r = with("{div: [launch_id_x, {sub: [2, 2]}]}");
   EXPECT_ERROR_AT(r, 6, 25, "pipeline.miss[0][0].record.value", "Uint division by a constant zero");
@@ -207,7 +208,7 @@ outputs:
 TEST(CaseStaticUndefined, ARobustnessProbeKeepsItsUndefinedBehaviour) {
   std::string text = programs("5", "0", "-1");
   text.replace(text.find("R-SBT-MISS"), 10, "R-UB");
-  const ParseResult r = parse(text);
+  const ParseResult r = parseDiagnostics(text);
   ASSERT_TRUE(r.value) << allErrors(r);
   ASSERT_EQ(r.value->static_undefined.size(), 1u);
   EXPECT_EQ(r.value->static_undefined[0].reason, UndefinedReason::RayParameters);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "case/parse_case.h"
+#include "case_support.h"
 
 namespace rayspec {
 namespace {
@@ -29,43 +30,37 @@ outputs:
 )" + images;
 }
 
-ParseResult parse(const std::string& images) {
+ParseResult parseImages(const std::string& images) {
   return parseCaseText(caseWithImages(images), "t.yaml", "family/t");
-}
-
-std::string errors(const ParseResult& r) {
-  std::string s;
-  for (const Error& e : r.errors) s += e.format() + "\n";
-  return s;
 }
 
 TEST(ParseImages, EqualToNamesAnotherImage) {
   const ParseResult r =
-      parse("    - {name: a, from: color}\n    - {name: b, from: color2, equal_to: a}\n");
-  ASSERT_TRUE(r.value) << errors(r);
+      parseImages("    - {name: a, from: color}\n    - {name: b, from: color2, equal_to: a}\n");
+  ASSERT_TRUE(r.value) << allErrors(r);
   EXPECT_EQ(r.value->outputs.images[1].equal_to, "a");
   EXPECT_TRUE(r.value->outputs.images[0].equal_to.empty());
 }
 
 TEST(ParseImages, EqualToAnUnknownImageOrItselfIsAnError) {
   for (const char* other : {"nope", "b"}) {
-    const ParseResult r = parse(
+    const ParseResult r = parseImages(
         std::string("    - {name: a, from: color}\n    - {name: b, from: color2, equal_to: ") +
         other + "}\n");
     ASSERT_FALSE(r.value) << other;
-    ASSERT_EQ(r.errors.size(), 1u) << errors(r);
-    EXPECT_EQ(r.errors[0].loc.line, 20) << errors(r);
+    ASSERT_EQ(r.errors.size(), 1u) << allErrors(r);
+    EXPECT_EQ(r.errors[0].loc.line, 20) << allErrors(r);
     EXPECT_GT(r.errors[0].loc.column, 0);
     EXPECT_EQ(r.errors[0].loc.field, "outputs.images[1].equal_to");
-    EXPECT_NE(r.errors[0].message.find("is not another image"), std::string::npos) << errors(r);
+    EXPECT_NE(r.errors[0].message.find("is not another image"), std::string::npos) << allErrors(r);
   }
 }
 
 TEST(ParseImages, EqualToAnImageOfAnotherTexelFormatIsAnError) {
   const ParseResult r =
-      parse("    - {name: a, from: hit}\n    - {name: b, from: color2, equal_to: a}\n");
+      parseImages("    - {name: a, from: hit}\n    - {name: b, from: color2, equal_to: a}\n");
   ASSERT_FALSE(r.value);
-  EXPECT_NE(errors(r).find("different texel formats"), std::string::npos) << errors(r);
+  EXPECT_NE(allErrors(r).find("different texel formats"), std::string::npos) << allErrors(r);
 }
 
 }  // namespace

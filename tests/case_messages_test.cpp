@@ -10,19 +10,15 @@
 #include <sstream>
 
 #include "case/parse_case.h"
+#include "case_support.h"
 
 namespace rayspec {
 namespace {
 
-ParseResult parse(const std::string& text, const std::vector<std::string>* catalog = nullptr,
-                  const std::string& name = "family/m") {
+ParseResult parseMessages(const std::string& text,
+                          const std::vector<std::string>* catalog = nullptr,
+                          const std::string& name = "family/m") {
   return parseCaseText(text, "m.yaml", name, catalog);
-}
-
-std::string allErrors(const ParseResult& r) {
-  std::string s;
-  for (const Error& e : r.errors) s += e.format() + "\n";
-  return s;
 }
 
 bool hasError(const ParseResult& r, int line, int column, const std::string& field,
@@ -45,13 +41,13 @@ outputs:
 )";
 
 TEST(ParseMessages, DuplicateKeysAreErrorsWithLineColumnAndKeyPath) {
-  ASSERT_TRUE(parse(kMinimal).value) << allErrors(parse(kMinimal));
-  ParseResult r =
-      parse(std::string(kMinimal) + "rays: {list: [{origin: [0, 0, 2], direction: [0, 0, -1]}]}\n");
+  ASSERT_TRUE(parseMessages(kMinimal).value) << allErrors(parseMessages(kMinimal));
+  ParseResult r = parseMessages(std::string(kMinimal) +
+                                "rays: {list: [{origin: [0, 0, 2], direction: [0, 0, -1]}]}\n");
   EXPECT_TRUE(hasError(r, 9, 1, "rays", "duplicate key 'rays' (first at line 2)")) << allErrors(r);
   EXPECT_FALSE(r.value);
   // Deeper: in a flow map of a list item, and in a block map.
-  r = parse(R"(rules: [R-MASK]
+  r = parseMessages(R"(rules: [R-MASK]
 rays:
   list: [{origin: [0, 0, 1], direction: [0, 0, -1], origin: [1, 1, 1]}]
 pipeline:
@@ -78,12 +74,12 @@ TEST(ParseMessages, InvisibleBytesAreShownInMessages) {
 TEST(ParseMessages, UnknownRuleLabelsAreReportedAtTheLabel) {
   const std::string text = "rules: [R-MASK, R-NO-SUCH-RULE]\n" + std::string(kMinimal).substr(16);
   const std::vector<std::string> catalog = {"R-MASK", "R-UB"};
-  ParseResult r = parse(text, &catalog);
+  ParseResult r = parseMessages(text, &catalog);
   EXPECT_TRUE(hasError(r, 1, 17, "rules[1]", "unknown rule label 'R-NO-SUCH-RULE'"))
       << allErrors(r);
   EXPECT_FALSE(r.value);
-  EXPECT_TRUE(parse(text).value) << "without a catalog only the label's form is checked";
-  EXPECT_TRUE(parse(kMinimal, &catalog).value);
+  EXPECT_TRUE(parseMessages(text).value) << "without a catalog only the label's form is checked";
+  EXPECT_TRUE(parseMessages(kMinimal, &catalog).value);
 }
 
 TEST(ParseMessages, ImageAndCaseNamesMustBeFileNames) {
@@ -91,7 +87,7 @@ TEST(ParseMessages, ImageAndCaseNamesMustBeFileNames) {
     std::string s = kMinimal;
     s += "  per_ray: [hit]\n  images: [{name: " + name + ", from: hit}]\n";
     s.replace(s.find("[count: miss]"), 13, "[count: miss, record: {hit: 0}]");
-    return parse(s);
+    return parseMessages(s);
   };
   EXPECT_TRUE(with_image("hit-map_2.v1").value) << allErrors(with_image("hit-map_2.v1"));
   for (const std::string& bad :
@@ -107,20 +103,20 @@ TEST(ParseMessages, ImageAndCaseNamesMustBeFileNames) {
   }
   EXPECT_TRUE(with_image(std::string(100, 'x')).value) << "100 bytes is the most";
   // A case's name names its results folder.
-  ParseResult r = parse(kMinimal, nullptr, "family/bad name");
+  ParseResult r = parseMessages(kMinimal, nullptr, "family/bad name");
   ASSERT_FALSE(r.errors.empty());
   EXPECT_EQ(r.errors[0].format().rfind(
                 "m.yaml:1:1: case name: 'family/bad name' cannot name a results folder", 0),
             0u)
       << allErrors(r);
-  EXPECT_FALSE(parse(kMinimal, nullptr, "family/..").value);
-  EXPECT_TRUE(parse(kMinimal, nullptr, "family/fine-name_2").value);
+  EXPECT_FALSE(parseMessages(kMinimal, nullptr, "family/..").value);
+  EXPECT_TRUE(parseMessages(kMinimal, nullptr, "family/fine-name_2").value);
 }
 
 TEST(ParseMessages, ANonScalarCounterNameIsAFieldErrorNotABadConversion) {
   std::string s = kMinimal;
   s.replace(s.find("counters: [miss]"), 16, "counters: [miss, {[a]: at_least}]");
-  const ParseResult r = parse(s);
+  const ParseResult r = parseMessages(s);
   EXPECT_TRUE(hasError(r, 8, 21, "outputs.counters[1]", "expected a string")) << allErrors(r);
   EXPECT_EQ(allErrors(r).find("bad conversion"), std::string::npos) << allErrors(r);
 }

@@ -6,24 +6,19 @@
 #include <string>
 
 #include "case/parse_case.h"
+#include "case_support.h"
 
 namespace rayspec {
 namespace {
 
-ParseResult parse(const std::string& text) {
+ParseResult parseRecord(const std::string& text) {
   return parseCaseText(text, "s.yaml", "sbt/s");
-}
-
-std::string allErrors(const ParseResult& r) {
-  std::string s;
-  for (const Error& e : r.errors) s += e.format() + "\n";
-  return s;
 }
 
 // An error at line:column (0: any column) of field (empty: any field) whose
 // message holds text.
-bool errorAt(const ParseResult& r, int line, int column, const std::string& field,
-             const std::string& text) {
+bool recordErrorAt(const ParseResult& r, int line, int column, const std::string& field,
+                   const std::string& text) {
   for (const Error& e : r.errors)
     if (e.loc.file == "s.yaml" && e.loc.line == line && (column == 0 || e.loc.column == column) &&
         (field.empty() || e.loc.field == field) && e.message.find(text) != std::string::npos)
@@ -32,7 +27,7 @@ bool errorAt(const ParseResult& r, int line, int column, const std::string& fiel
 }
 
 #define EXPECT_ERROR_AT(r, line, column, field, text)                                    \
-  EXPECT_TRUE(errorAt(r, line, column, field, text))                                     \
+  EXPECT_TRUE(recordErrorAt(r, line, column, field, text))                               \
       << "expected s.yaml:" << line << ":" << column << ": " << field << ": ..." << text \
       << "...; got:\n"                                                                   \
       << allErrors(r)
@@ -71,19 +66,19 @@ outputs:
 }
 
 TEST(SbtRecordShape, DefaultsAndValues) {
-  ParseResult r = parse(caseText("    miss: [0]"));
+  ParseResult r = parseRecord(caseText("    miss: [0]"));
   ASSERT_TRUE(r.value) << allErrors(r);
   EXPECT_EQ(r.value->pipeline.sbt_record_data, 32u);
   EXPECT_EQ(r.value->pipeline.sbt_padding.hit, 0u);
 
-  r = parse(caseText("    record_data: 0\n    padding: 4000"));
+  r = parseRecord(caseText("    record_data: 0\n    padding: 4000"));
   ASSERT_TRUE(r.value) << allErrors(r);
   EXPECT_EQ(r.value->pipeline.sbt_record_data, 0u);
   EXPECT_EQ(r.value->pipeline.sbt_padding.miss, 4000u);
   EXPECT_EQ(r.value->pipeline.sbt_padding.hit, 4000u);
   EXPECT_EQ(r.value->pipeline.sbt_padding.callable, 4000u);
 
-  r = parse(caseText("    record_data: 0x10\n    padding: {hit: 32, callable: 65536}"));
+  r = parseRecord(caseText("    record_data: 0x10\n    padding: {hit: 32, callable: 65536}"));
   ASSERT_TRUE(r.value) << allErrors(r);
   EXPECT_EQ(r.value->pipeline.sbt_record_data, 16u);
   EXPECT_EQ(r.value->pipeline.sbt_padding.miss, 0u);
@@ -92,41 +87,43 @@ TEST(SbtRecordShape, DefaultsAndValues) {
 }
 
 TEST(SbtRecordShape, BadValuesAreFieldErrors) {
-  EXPECT_ERROR_AT(parse(caseText("    record_data: 6")), 15, 18, "pipeline.sbt.record_data",
+  EXPECT_ERROR_AT(parseRecord(caseText("    record_data: 6")), 15, 18, "pipeline.sbt.record_data",
                   "multiple of 4");
-  EXPECT_ERROR_AT(parse(caseText("    record_data: 36")), 15, 18, "pipeline.sbt.record_data", "");
-  EXPECT_ERROR_AT(parse(caseText("    padding: 65537")), 15, 14, "pipeline.sbt.padding", "");
-  EXPECT_ERROR_AT(parse(caseText("    padding: -1")), 15, 14, "pipeline.sbt.padding", "");
-  EXPECT_ERROR_AT(parse(caseText("    padding: {raygen: 32}")), 15, 15,
-                  "pipeline.sbt.padding.raygen", "unknown key");
-  EXPECT_ERROR_AT(parse(caseText("    padding: {hit: 70000}")), 15, 0, "pipeline.sbt.padding.hit",
+  EXPECT_ERROR_AT(parseRecord(caseText("    record_data: 36")), 15, 18, "pipeline.sbt.record_data",
                   "");
-  EXPECT_ERROR_AT(parse(caseText("    stride: 64")), 15, 5, "pipeline.sbt.stride", "unknown key");
+  EXPECT_ERROR_AT(parseRecord(caseText("    padding: 65537")), 15, 14, "pipeline.sbt.padding", "");
+  EXPECT_ERROR_AT(parseRecord(caseText("    padding: -1")), 15, 14, "pipeline.sbt.padding", "");
+  EXPECT_ERROR_AT(parseRecord(caseText("    padding: {raygen: 32}")), 15, 15,
+                  "pipeline.sbt.padding.raygen", "unknown key");
+  EXPECT_ERROR_AT(parseRecord(caseText("    padding: {hit: 70000}")), 15, 0,
+                  "pipeline.sbt.padding.hit", "");
+  EXPECT_ERROR_AT(parseRecord(caseText("    stride: 64")), 15, 5, "pipeline.sbt.stride",
+                  "unknown key");
 }
 
 TEST(SbtRecordShape, RecordDataPastTheRecordIsAnErrorAtTheData) {
-  ParseResult r =
-      parse(caseText("    record_data: 8\n    hit: [{group: 0, data: {uints: [1, 2]}}]\n    miss: "
-                     "[{group: 0, data: {floats: [1, 2, 3]}}]"));
+  ParseResult r = parseRecord(
+      caseText("    record_data: 8\n    hit: [{group: 0, data: {uints: [1, 2]}}]\n    miss: "
+               "[{group: 0, data: {floats: [1, 2, 3]}}]"));
   EXPECT_ERROR_AT(
       r, 17, 0, "pipeline.sbt.miss[0].data",
       "3 word(s) (12 bytes) of shader record data do not fit in pipeline.sbt.record_data (8 bytes");
   EXPECT_EQ(r.errors.size(), 1u) << allErrors(r);  // the hit record's 2 words fit
 
-  r = parse(caseText("    record_data: 0\n    callable: [{group: 0, data: {uints: [7]}}]"));
+  r = parseRecord(caseText("    record_data: 0\n    callable: [{group: 0, data: {uints: [7]}}]"));
   EXPECT_ERROR_AT(r, 16, 0, "pipeline.sbt.callable[0].data", "do not fit");
 
   // raygen's data too, wherever the sbt block stands.
-  r = parse(caseText("    record_data: 4", "0", "0", "{uints: [1, 2]}"));
+  r = parseRecord(caseText("    record_data: 4", "0", "0", "{uints: [1, 2]}"));
   EXPECT_ERROR_AT(r, 10, 16, "pipeline.raygen_data",
                   "2 word(s) (8 bytes) of shader record data do not fit");
-  EXPECT_TRUE(parse(caseText("    record_data: 4", "0", "0", "{uints: [1]}")).value);
+  EXPECT_TRUE(parseRecord(caseText("    record_data: 4", "0", "0", "{uints: [1]}")).value);
 }
 
 TEST(SbtRecordShape, ReadsPastTheRecordDataAreErrorsAtTheRead) {
   // Word 1 is bytes 4..7: inside 8 bytes, outside 4.
-  EXPECT_TRUE(parse(caseText("    record_data: 8", "{shader_record_uint: 1}")).value);
-  ParseResult r = parse(caseText("    record_data: 4", "{shader_record_uint: 1}"));
+  EXPECT_TRUE(parseRecord(caseText("    record_data: 8", "{shader_record_uint: 1}")).value);
+  ParseResult r = parseRecord(caseText("    record_data: 4", "{shader_record_uint: 1}"));
   for (int line : {11, 12, 13})  // miss, closest-hit, callable
     EXPECT_ERROR_AT(r, line, 0, "",
                     "shader_record_uint(1) reads bytes 4..7 of its shader record, past "
@@ -135,21 +132,22 @@ TEST(SbtRecordShape, ReadsPastTheRecordDataAreErrorsAtTheRead) {
   EXPECT_NE(allErrors(r).find("pipeline.hit_groups[0].closest_hit"), std::string::npos)
       << allErrors(r);
 
-  r = parse(caseText("    record_data: 0", "0", "{uint: {shader_record_float: 0}}"));
+  r = parseRecord(caseText("    record_data: 0", "0", "{uint: {shader_record_float: 0}}"));
   EXPECT_ERROR_AT(r, 9, 0, "", "shader_record_float(0) reads bytes 0..3");
   EXPECT_NE(allErrors(r).find("pipeline.raygen"), std::string::npos) << allErrors(r);
 
   // A read nested in an expression, and one in a branch.
-  r = parse(caseText("    record_data: 28", "{add: [1, {shader_record_uint: 7}]}"));
+  r = parseRecord(caseText("    record_data: 28", "{add: [1, {shader_record_uint: 7}]}"));
   EXPECT_EQ(r.errors.size(), 3u) << allErrors(r);
-  EXPECT_TRUE(parse(caseText("    record_data: 32", "{add: [1, {shader_record_uint: 7}]}")).value);
+  EXPECT_TRUE(
+      parseRecord(caseText("    record_data: 32", "{add: [1, {shader_record_uint: 7}]}")).value);
 }
 
 TEST(SbtRecordShape, LightsReadSixOrEightFloats) {
   auto with_light = [](const std::string& k, const std::string& light) {
     std::string s = caseText("    record_data: " + k);
     s.replace(s.find("[[call_data: {value: 0}]]"), 25, "[[light: " + light + "]]");
-    return parse(s);
+    return parseRecord(s);
   };
   EXPECT_TRUE(with_light("24", "point").value);
   EXPECT_TRUE(with_light("24", "directional").value);
@@ -161,8 +159,8 @@ TEST(SbtRecordShape, LightsReadSixOrEightFloats) {
 
   // The light_* ops read the same floats, in any stage.
   const std::string op = "{uint: {x: {light_directional: [[0.0, 0.0, 0.0], [0.0, 0.0, 1.0]]}}}";
-  EXPECT_TRUE(parse(caseText("    record_data: 24", op)).value);
-  r = parse(caseText("    record_data: 16", op));
+  EXPECT_TRUE(parseRecord(caseText("    record_data: 24", op)).value);
+  r = parseRecord(caseText("    record_data: 16", op));
   EXPECT_EQ(r.errors.size(), 3u) << allErrors(r);
   EXPECT_ERROR_AT(r, 12, 0, "", "light_directional reads floats 0..5 (bytes 0..23)");
 }

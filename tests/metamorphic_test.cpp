@@ -24,7 +24,7 @@
 namespace rayspec {
 namespace {
 
-Case parse(const std::string& yaml) {
+Case parseCase(const std::string& yaml) {
   return model_test::parseInline(yaml, "metamorphic/m");
 }
 
@@ -71,7 +71,7 @@ outputs:
 )";
 
 TEST(IdObservations, WhatProgramsObserveOfAnId) {
-  const Case c = parse(kGrid);
+  const Case c = parseCase(kGrid);
   const IdObservations prim = observeId(c.pipeline, "primitive_id");
   EXPECT_FALSE(prim.exact);  // recorded as itself: led back
   EXPECT_TRUE(prim.parity);
@@ -120,7 +120,7 @@ TEST(IdObservations, WhatProgramsObserveOfAnId) {
 }
 
 TEST(PermuteCase, DeterministicAndKeepsEveryPrimitiveAndInstance) {
-  const Case c = parse(kGrid);
+  const Case c = parseCase(kGrid);
   const CasePermutation a = permuteCase(c, 7), b = permuteCase(c, 7), d = permuteCase(c, 8);
   EXPECT_EQ(a.instance_of, b.instance_of);
   EXPECT_EQ(a.primitive_of, b.primitive_of);
@@ -162,7 +162,7 @@ TEST(PermuteCase, DeterministicAndKeepsEveryPrimitiveAndInstance) {
 // The check sees an answer that moved: a permuted run whose clear ray is
 // edited to another primitive, or to another instance, or to a miss.
 TEST(ComparePermuted, NoticesAMovedAnswer) {
-  const Case c = parse(kGrid);
+  const Case c = parseCase(kGrid);
   const Results original = model(c);
   const CasePermutation p = permuteCase(c, 3);
   const Results permuted = model(p.permuted);
@@ -214,7 +214,11 @@ TEST(ComparePermuted, EveryCaseFileKeepsItsAnswers) {
     bool any = false;
     for (uint64_t seed : {1u, 2u, 3u}) {
       const CasePermutation p = permuteCase(c, seed);
-      any = any || p.primitivesMoved() || p.instancesMoved();
+      // A permutation that moves nothing (one primitive, one instance) is the
+      // case itself: nothing about order to check, and a 4M-ray launch to
+      // trace again for it.
+      if (!p.primitivesMoved() && !p.instancesMoved()) continue;
+      any = true;
       for (const std::string& problem : comparePermuted(p, original, model(p.permuted)))
         ADD_FAILURE() << c.name << ": " << problem;
     }

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "read_text.h"
 #include "report/baseline.h"
 #include "report/baseline_gate.h"
 #include "report/merge_runs.h"
@@ -22,13 +23,6 @@ std::string writeFile(const std::string& name, const std::string& text) {
   const std::string path = testing_support::testDir() + "/" + name;
   std::ofstream(path) << text;
   return path;
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 CaseOutcome outcome(const std::string& name, Status s) {

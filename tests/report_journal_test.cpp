@@ -13,7 +13,7 @@
 namespace rayspec {
 namespace {
 
-CaseOutcome outcome(const std::string& name, Status s) {
+CaseOutcome judgedOutcome(const std::string& name, Status s) {
   CaseOutcome o;
   o.name = name;
   o.verdict.add({s, "R-MISS", "said", {}, 0});
@@ -32,9 +32,10 @@ std::string freshDir(const std::string& name) {
 TEST(Journal, LastLineOfACaseWinsAndACutLineIsLeftOut) {
   const std::string dir = freshDir("cut");
   ASSERT_EQ(startJournal(dir), "");
-  ASSERT_EQ(appendJournal(outcome("f/a", Status::Fail), dir), "");
-  ASSERT_EQ(appendJournal(outcome("f/b", Status::Pass), dir), "");
-  ASSERT_EQ(appendJournal(outcome("f/a", Status::Pass), dir), "");  // a resumed run judged it again
+  ASSERT_EQ(appendJournal(judgedOutcome("f/a", Status::Fail), dir), "");
+  ASSERT_EQ(appendJournal(judgedOutcome("f/b", Status::Pass), dir), "");
+  ASSERT_EQ(appendJournal(judgedOutcome("f/a", Status::Pass), dir),
+            "");  // a resumed run judged it again
   std::ofstream(dir + "/" + kJournalFile, std::ios::app) << R"({"name": "f/c", "sta)";
   const auto journal = readJournal(dir);
   ASSERT_TRUE(journal) << journal.error().format();
@@ -48,9 +49,9 @@ TEST(Journal, LastLineOfACaseWinsAndACutLineIsLeftOut) {
 
 TEST(Journal, ABadLineInTheMiddleIsAnErrorNamingIt) {
   const std::string dir = freshDir("bad");
-  ASSERT_EQ(appendJournal(outcome("f/a", Status::Pass), dir), "");
+  ASSERT_EQ(appendJournal(judgedOutcome("f/a", Status::Pass), dir), "");
   std::ofstream(dir + "/" + kJournalFile, std::ios::app) << "[1, 2]\n";
-  ASSERT_EQ(appendJournal(outcome("f/b", Status::Pass), dir), "");
+  ASSERT_EQ(appendJournal(judgedOutcome("f/b", Status::Pass), dir), "");
   const auto journal = readJournal(dir);
   ASSERT_FALSE(journal);
   const std::string error = journal.error().format();
@@ -64,7 +65,7 @@ TEST(Journal, ABadLineInTheMiddleIsAnErrorNamingIt) {
 // report.html: a name that climbs out is an error (issue 44).
 TEST(Journal, AnImageNameThatClimbsIsRefused) {
   const std::string dir = freshDir("image-name");
-  CaseOutcome o = outcome("family/a", Status::Pass);
+  CaseOutcome o = judgedOutcome("family/a", Status::Pass);
   o.images = {"../../../../tmp/probe"};
   RunInfo info;
   info.device = "dev";
@@ -92,7 +93,7 @@ TEST(Journal, AnInterruptedRunIsReadFromItsJournal) {
   info.interrupted = true;
   ASSERT_EQ(writeReports({}, info, dir), "");
   ASSERT_EQ(startJournal(dir), "");
-  ASSERT_EQ(appendJournal(outcome("f/a", Status::Pass), dir), "");
+  ASSERT_EQ(appendJournal(judgedOutcome("f/a", Status::Pass), dir), "");
   const Result<SavedRun> saved = readSavedRun(dir);
   ASSERT_TRUE(saved) << saved.error().format();
   ASSERT_EQ(saved->outcomes.size(), 1u);

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "read_text.h"
 #include "report/baseline.h"
 #include "report/baseline_gate.h"
 #include "report/escape.h"
@@ -18,13 +19,6 @@
 
 namespace rayspec {
 namespace {
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::vector<CaseOutcome> outcomes() {
   std::vector<CaseOutcome> v(3);

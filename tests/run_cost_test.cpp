@@ -17,7 +17,7 @@ namespace rayspec {
 namespace {
 namespace fs = std::filesystem;
 
-const std::string kCase = RAYSPEC_SOURCE_DIR "/cases/results/miss-xor-closest-hit.yaml";
+const std::string kCaseFile = RAYSPEC_SOURCE_DIR "/cases/results/miss-xor-closest-hit.yaml";
 const std::string kName = "results/miss-xor-closest-hit";
 
 std::string freshDir(const std::string& name) {
@@ -35,7 +35,7 @@ nlohmann::json readJson(const std::string& path) {
 
 RunOptions oneCase(const std::string& out, const std::string& cache) {
   RunOptions o;
-  o.case_files = {kCase};
+  o.case_files = {kCaseFile};
   o.out = out;
   o.cache_dir = cache;
   o.no_validation = true;

@@ -15,22 +15,22 @@
 #include "run/fault_seam.h"
 #include "run/isolation.h"
 #include "run/run_only.h"
+#include "suite_cases.h"
 #include "temp_dir.h"
 
 namespace rayspec {
 namespace {
 namespace fs = std::filesystem;
 
-const std::string kCases = RAYSPEC_SOURCE_DIR "/cases";
 const std::string kCase = "results/miss-xor-closest-hit";
 
 std::string caseText() {
-  std::ifstream in(kCases + "/" + kCase + ".yaml");
+  std::ifstream in(kSuiteCases + "/" + kCase + ".yaml");
   return std::string((std::istreambuf_iterator<char>(in)), {});
 }
 
 Case parsed(const std::string& text) {
-  const ParseResult p = parseCaseText(text, kCases + "/" + kCase + ".yaml", kCase);
+  const ParseResult p = parseCaseText(text, kSuiteCases + "/" + kCase + ".yaml", kCase);
   EXPECT_TRUE(p.value) << (p.errors.empty() ? "" : p.errors[0].format());
   return p.value ? *p.value : Case{};
 }

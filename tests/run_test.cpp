@@ -27,19 +27,12 @@
 #include "run/model_adapter.h"
 #include "run/run_loop.h"
 #include "run/vulkan_adapter.h"
+#include "suite_cases.h"
 #include "temp_dir.h"
 
 namespace rayspec {
 namespace {
 namespace fs = std::filesystem;
-
-const std::string kCases = RAYSPEC_SOURCE_DIR "/cases";
-
-Case loadCase(const std::string& name) {
-  ParseResult p = parseCaseFile(kCases + "/" + name + ".yaml", kCases);
-  EXPECT_TRUE(p.value) << (p.errors.empty() ? "" : p.errors[0].format());
-  return p.value ? *p.value : Case{};
-}
 
 std::string tempDir(const std::string& name) {
   return freshTempDir("rayspec-run-test/" + name);
@@ -81,7 +74,7 @@ Side deviceSide() {
 // ---- item 1: one Backend interface, two adapters ----------------------------
 
 TEST(Backend, ModelAndDeviceAnswerThroughOneInterface) {
-  const Case c = loadCase("results/miss-xor-closest-hit");
+  const Case c = suiteCaseFile("results/miss-xor-closest-hit");
   const Plan plan = derivePlan(c);
   VulkanOptions v;
   v.validation = false;
@@ -104,7 +97,7 @@ TEST(Backend, DeviceThatIsNotThereAnswersNotSupportedWithWhy) {
   v.validation = false;
   VulkanAdapter device(v);
   EXPECT_FALSE(device.found());
-  const Case c = loadCase("results/miss-xor-closest-hit");
+  const Case c = suiteCaseFile("results/miss-xor-closest-hit");
   const Results r = device.run(c, derivePlan(c));
   EXPECT_EQ(r.status, SideStatus::NotSupported);
   EXPECT_NE(r.status_detail.find("nosuchdevice"), std::string::npos) << r.status_detail;
@@ -113,7 +106,7 @@ TEST(Backend, DeviceThatIsNotThereAnswersNotSupportedWithWhy) {
 // ---- item 2: both sides through one isolation function ----------------------
 
 TEST(Isolation, BothSidesRunIsolatedAndAgree) {
-  const Case c = loadCase("results/miss-xor-closest-hit");
+  const Case c = suiteCaseFile("results/miss-xor-closest-hit");
   const Plan plan = derivePlan(c);
   const std::string dir = tempDir("both-sides");
   const ChildLimits limits{60, kDefaultMemoryLimit};
@@ -129,7 +122,7 @@ TEST(Isolation, BothSidesRunIsolatedAndAgree) {
 
 TEST(Isolation, EmbreeAndTbbStartUnderTheDefaultMemoryLimit) {
   // Every thread of the model (a case with callables, lights and a camera).
-  const Case c = loadCase("callable/lights");
+  const Case c = suiteCaseFile("callable/lights");
   const Plan plan = derivePlan(c);
   const SideResult m = runIsolated(modelSide(), c, plan, ChildLimits{120, kDefaultMemoryLimit},
                                    tempDir("big-model"));
@@ -138,7 +131,7 @@ TEST(Isolation, EmbreeAndTbbStartUnderTheDefaultMemoryLimit) {
 }
 
 TEST(Isolation, ModelHangIsATimeout) {
-  const Case c = loadCase("results/miss-xor-closest-hit");
+  const Case c = suiteCaseFile("results/miss-xor-closest-hit");
   const auto start = std::chrono::steady_clock::now();
   const SideResult m = runIsolated(misbehavingSide([] {
                                      for (;;) pause();
@@ -153,7 +146,7 @@ TEST(Isolation, ModelHangIsATimeout) {
 }
 
 TEST(Isolation, ModelCrashIsACrash) {
-  const Case c = loadCase("results/miss-xor-closest-hit");
+  const Case c = suiteCaseFile("results/miss-xor-closest-hit");
   const std::string dir = tempDir("crash");
   // SIG_DFL: the signal itself, not AddressSanitizer's report of it (asan preset).
   const SideResult m = runIsolated(misbehavingSide([] {
@@ -175,7 +168,7 @@ TEST(Isolation, ModelCrashIsACrash) {
 TEST(IsolationMemoryLimit, ModelBeyondTheMemoryLimitIsACrash) {
   if (!memoryLimitApplies())
     GTEST_SKIP() << "AddressSanitizer build: no memory limit is set on children";
-  const Case c = loadCase("results/miss-xor-closest-hit");
+  const Case c = suiteCaseFile("results/miss-xor-closest-hit");
   // Without a limit it holds 1 GiB and answers; under 256 MiB it cannot.
   auto hog = [] {
     std::vector<std::unique_ptr<char[]>> blocks;
@@ -192,7 +185,7 @@ TEST(IsolationMemoryLimit, ModelBeyondTheMemoryLimitIsACrash) {
 }
 
 TEST(Isolation, BundleThatCannotBeWrittenIsAHarnessErrorNotACrash) {
-  const Case c = loadCase("results/miss-xor-closest-hit");
+  const Case c = suiteCaseFile("results/miss-xor-closest-hit");
   const std::string dir = tempDir("unwritable");
   std::ofstream(dir + "/file") << "a file where the bundle's folder should go";
   EXPECT_THROW(runIsolated(modelSide(), c, derivePlan(c), ChildLimits{60, 0}, dir + "/file/model"),
@@ -323,9 +316,9 @@ TEST(CaseSteps, UnknownRuleLabelIsACaseError) {
   const auto catalog = loadRuleCatalog(RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml");
   ASSERT_TRUE(catalog) << catalog.error().format();
   const std::vector<std::string> labels = ruleLabels(*catalog);
-  const std::string path = kCases + "/results/miss-xor-closest-hit.yaml";
-  EXPECT_FALSE(
-      caseFileError({path, "results/miss-xor-closest-hit"}, parseCaseFile(path, kCases, &labels)))
+  const std::string path = kSuiteCases + "/results/miss-xor-closest-hit.yaml";
+  EXPECT_FALSE(caseFileError({path, "results/miss-xor-closest-hit"},
+                             parseCaseFile(path, kSuiteCases, &labels)))
       << "a good case is no error";
   const std::string dir = tempDir("rule-label");
   const std::string bad = dir + "/unknown-rule.yaml";

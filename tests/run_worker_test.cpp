@@ -132,18 +132,12 @@ TEST(Worker, ClosingOneWorkerIsSeenByItAlone) {
   EXPECT_EQ(b.close(), "b done");
 }
 
-Case loadCase(const std::string& name) {
-  ParseResult p = parseCaseFile(kSuiteCases + "/" + name + ".yaml", kSuiteCases);
-  EXPECT_TRUE(p.value) << (p.errors.empty() ? "" : p.errors[0].format());
-  return p.value ? *p.value : Case{};
-}
-
 // The model side of three cases in one worker; the middle one crashes it
 // (a planted crash), the last runs in a new worker and passes.
 TEST(SideWorker, CrashedCaseIsACrashAndTheNextCaseGetsANewWorker) {
-  const std::vector<Case> cases{loadCase("results/miss-xor-closest-hit"),
-                                loadCase("anyhit/ignore-odd-primitives"),
-                                loadCase("results/miss-xor-closest-hit")};
+  const std::vector<Case> cases{suiteCaseFile("results/miss-xor-closest-hit"),
+                                suiteCaseFile("anyhit/ignore-odd-primitives"),
+                                suiteCaseFile("results/miss-xor-closest-hit")};
   const SideFor side_for = [](const Case&, const std::string& dir) {
     Side s{"model", "model", [] { return std::make_unique<ModelAdapter>(ModelOptions{}); }, {}};
     if (dir.find("/crash/") != std::string::npos)

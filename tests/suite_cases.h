@@ -9,6 +9,9 @@
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
+
+#include "case/parse_case.h"
 #include "library/case_discovery.h"
 
 namespace rayspec {
@@ -44,6 +47,14 @@ inline std::optional<CaseFile> suiteCase(const std::string& name) {
 
 inline ParseResult loadSuiteCase(const CaseFile& f) {
   return loadCase(f, kSuiteCases);
+}
+
+// The case of the suite's file NAME.yaml (not a sweep), parsed; an empty
+// case, and a failed expectation, when it does not parse.
+inline Case suiteCaseFile(const std::string& name) {
+  ParseResult p = parseCaseFile(kSuiteCases + "/" + name + ".yaml", kSuiteCases);
+  EXPECT_TRUE(p.value) << (p.errors.empty() ? "" : p.errors[0].format());
+  return p.value ? *p.value : Case{};
 }
 
 }  // namespace rayspec

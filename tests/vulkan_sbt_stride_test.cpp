@@ -16,6 +16,7 @@
 #include "results/record_layout.h"
 #include "vulkan/sbt_layout.h"
 #include "vulkan/vulkan_engine.h"
+#include "vulkan_support.h"
 
 namespace rayspec {
 namespace {
@@ -191,13 +192,6 @@ TEST(SbtStride, DataPastTheRecordDataBytesIsAnError) {
 }
 
 // ------------------------------------------------------------- on the device
-
-bool rayTracingDeviceExists() {
-  std::string error;
-  for (const DeviceInfo& d : orError(listDevices(), &error))
-    if (d.ray_tracing_pipeline && d.acceleration_structure) return true;
-  return false;
-}
 
 // One triangle (hit record 1 through instance SBT offset 1) and one ray
 // beside it; closest-hit and miss record their record's first word.

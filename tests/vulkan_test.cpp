@@ -19,6 +19,7 @@
 #include "vulkan/sbt_layout.h"
 #include "vulkan/vk_check.h"
 #include "vulkan/vulkan_engine.h"
+#include "vulkan_support.h"
 
 namespace rayspec {
 namespace {
@@ -316,13 +317,6 @@ std::unique_ptr<VulkanEngine> makeBackend() {
   auto backend = orError(VulkanEngine::create(VulkanOptions{}), &error);
   if (!backend) ADD_FAILURE() << "backend: " << error;
   return backend;
-}
-
-bool rayTracingDeviceExists() {
-  std::string error;
-  for (const DeviceInfo& d : orError(listDevices(), &error))
-    if (d.ray_tracing_pipeline && d.acceleration_structure) return true;
-  return false;
 }
 
 #define SKIP_WITHOUT_RT_DEVICE()                                           \
