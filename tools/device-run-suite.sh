@@ -7,6 +7,7 @@
 #   cat OUT/bundles.tar.xz.* | tar -C DIR -xJf -
 #   ./build/rayspec run --device-results DIR/run --baseline references/baselines/nvidia.csv --out JUDGED
 #   ./build/rayspec mutate DIR/run --out MUTATED
+#   mkdir -p .device/pipelines && cp OUT/pipelines/*.bin .device/pipelines/   # the next pack carries them
 # RAYSPEC_DEVICE_NO_LAYER=FILTER also runs the cases FILTER names without the
 # validation layer (for extensions newer than the carried layer, such as
 # position fetch: see references/baselines/nvidia.csv), bundled apart in
@@ -35,6 +36,7 @@ for n in $(seq 1 "${RAYSPEC_DEVICE_RUNS:-1}"); do
   ./rayspec run --cases cases --rules spec-rules.yaml --icd "$icd" --device NVIDIA --strict-validation \
     --cache-dir "$work/p/cache" --out "$work/run" "$@" > "$out/run$n.log" 2>&1 || true
   echo "run $n, whole suite: $(( ($(date +%s%N) - start) / 1000000 )) ms wall" | tee -a "$out/timing.txt"
+  cp "$work/run/summary.txt" "$out/summary$n.txt" 2>/dev/null || true
 done
 # RAYSPEC_DEVICE_REFERENCE=1: the same run with a process per case side
 # (--process-per-case, the way runs went before workers), timed beside it.
@@ -52,6 +54,11 @@ if [[ -n "${RAYSPEC_DEVICE_NO_LAYER:-}" ]]; then
     tar --null -T - -cf - | xz -T0 -6 > "$out/no-layer.tar.xz")
 fi
 cp "$work/run/summary.txt" "$out/" 2>/dev/null || true
+# The driver's pipeline cache the runs made (cache/pipelines: one file per
+# device and driver version), for the next pack to carry: put OUT/pipelines/
+# into .device/pipelines/ here, and tools/pack-device.sh packs it.
+mkdir -p "$out/pipelines"
+cp "$work/p/cache/pipelines/"*.bin "$out/pipelines/" 2>/dev/null || true
 cd "$work"
 # The device bundles of the run.
 find run -path '*/device/*' -type f \( -name results.json -o -name records.bin -o -name '*.raw' \) -print0 |

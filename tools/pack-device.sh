@@ -29,6 +29,14 @@ cp -r cases references/spec-rules.yaml "$stage/"
 # device, no trace (a run of the suite on lavapipe did this before, compiling
 # every pipeline with LLVM on the way: 11 minutes on a bare 2-core machine).
 build-device/rayspec compile --cases cases --cache-dir "$stage/cache"
+# The driver pipeline caches a GPU run brought back (tools/device-run-suite.sh:
+# OUT/pipelines, kept in .device/pipelines): a driver finds its own file
+# (named by device and driver version, its header checked) and creates its
+# pipelines from it instead of compiling them (on an H200, 80 of the 108 s
+# of a cold run's cases); any other driver ignores them.
+if compgen -G ".device/pipelines/*.bin" >/dev/null; then
+  mkdir -p "$stage/cache/pipelines" && cp .device/pipelines/*.bin "$stage/cache/pipelines/"
+fi
 for lib in $(ldd build-device/rayspec | awk '/=>/ {print $3}' | grep -E 'yaml-cpp|libcrypto'); do cp -L "$lib" "$stage/lib/"; done
 layer_json=/usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json
 cp /usr/lib/x86_64-linux-gnu/libVkLayer_khronos_validation.so "$stage/layer/"

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -30,11 +31,21 @@ std::string& cacheDir() {
   return dir;
 }
 
+// Named by what makes two caches interchangeable (pipelineCacheUUID, with the
+// vendor, the device model and the driver version): another GPU of the same
+// model and driver, a new machine given a pack, finds the file.
 std::string cacheFile(const VulkanContext& ctx) {
   std::lock_guard<std::mutex> lock(dirMutex());
-  if (cacheDir().empty() || ctx.info.device_uuid.empty()) return {};
-  return cacheDir() + "/" + ctx.info.device_uuid + "-" + std::to_string(ctx.props.driverVersion) +
-         ".bin";
+  if (cacheDir().empty()) return {};
+  char ids[32];
+  std::snprintf(ids, sizeof ids, "%04x-%04x-", ctx.props.vendorID, ctx.props.deviceID);
+  std::string uuid;
+  for (uint8_t b : ctx.props.pipelineCacheUUID) {
+    char hex[3];
+    std::snprintf(hex, sizeof hex, "%02x", b);
+    uuid += hex;
+  }
+  return cacheDir() + "/" + ids + uuid + "-" + std::to_string(ctx.props.driverVersion) + ".bin";
 }
 
 // The header every pipeline cache starts with (VkPipelineCacheHeaderVersionOne):

@@ -1,5 +1,5 @@
-// A VkPipelineCache per driver, kept between runs: <dir>/<device UUID>-
-// <driver UUID>-<driver version>.bin, loaded when a device is made and saved
+// A VkPipelineCache per driver, kept between runs: <dir>/<vendor>-<device>-
+// <pipelineCacheUUID>-<driver version>.bin (ids in hex), loaded when a device is made and saved
 // when it is destroyed: merged with what the file holds then (other workers
 // save theirs too), under a lock on <file>.lock, and written whole under a
 // temporary name, then renamed, so that no reader sees half a file. A file is input
