@@ -75,12 +75,13 @@ TEST(Cost, EveryStepAppearsAndTheSumsAgree) {
   EXPECT_FALSE(cost["device"].contains("spirv_cache_hit")) << "a fresh cache cannot hit";
   // accounted is the sum of every step; without the reports (written after the
   // case's clock stops) it is the case's wall time, give or take the
-  // bookkeeping between steps.
+  // bookkeeping between steps (a few milliseconds either way: 1.3 ms over
+  // was seen with the machine's two cores busy under ctest -j2).
   const double accounted = cost["accounted"].get<double>(), seconds = cost["seconds"].get<double>();
   EXPECT_NEAR(accounted, sumOf(cost["parent"]) + sumOf(cost["model"]) + sumOf(cost["device"]),
               1e-9);
   const double without_reports = accounted - cost["parent"]["reports"].get<double>();
-  EXPECT_LE(without_reports, seconds * 1.01 + 1e-3);
+  EXPECT_LE(without_reports, seconds * 1.01 + 5e-3);
   EXPECT_GE(without_reports, seconds * 0.9 - 5e-3);
   // summary.json: the run's totals are this case's, per side and by step.
   const nlohmann::json run = readJson(out + "/summary.json")["cost"];

@@ -7,6 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <new>
 
 #include "model/model_shading.h"
 #include "results/record_layout.h"
@@ -265,14 +266,32 @@ Val crossProduct(const Val* a) {
 
 }  // namespace
 
+namespace {
+
+// An operator's argument slots, built in place: zeroing four Vals before
+// filling them cost as much as the operator itself (a 4M-id launch
+// interprets some 30 operators an id). Slots past the arguments read as zero.
+union ArgSlots {
+  ArgSlots() {}
+  template <typename Eval>
+  size_t fill(size_t count, Eval eval) {
+    const size_t n = std::min<size_t>(count, 4);
+    for (size_t i = 0; i < n; ++i) new (&v[i]) Val(eval(i));
+    for (size_t i = n; i < 4; ++i) new (&v[i]) Val();
+    return n;
+  }
+  operator Val*() { return v; }
+  Val v[4];
+};
+
+}  // namespace
+
 Val Machine::op(const CExpr& e, StageEnv& env) {
   const OpCode n = e.op;
   Val r;
   if (opOnDemand(e, env, r)) return r;
-  // Every remaining op takes at most 4 arguments (vec4).
-  Val a[4];
-  const size_t na = std::min<size_t>(e.args.size(), 4);
-  for (size_t i = 0; i < na; ++i) a[i] = eval(e.args[i], env);
+  ArgSlots a;  // every remaining op takes at most 4 arguments (vec4)
+  const size_t na = a.fill(e.args.size(), [&](size_t i) { return eval(e.args[i], env); });
   switch (n) {
     case OpCode::Not:
       r.b = !a[0].b;
