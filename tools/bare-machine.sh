@@ -7,7 +7,8 @@
 #   tools/bare-machine.sh [--chroot] [--command test|run] [--out FILE] [--keep]
 #     --chroot     a new Debian 12 (debootstrap minbase) with nothing installed:
 #                  the packages are part of the time (root; needs Debian's mirror)
-#     --command    test: bash tools/test.sh (default); run: bash tools/run-suite.sh
+#     --command    test: bash tools/test.sh (default); full: bash tools/test.sh --full
+#                  (what CI runs); run: bash tools/run-suite.sh
 #     --out FILE   the table (default references/runs/bare-machine-COMMAND.txt)
 #     --keep       keep the scratch folder (printed; command.log is the whole
 #                  output) instead of removing it
@@ -33,8 +34,9 @@ while [[ $# -gt 0 ]]; do
 done
 case "$command" in
   test) script=tools/test.sh ;;
+  full) script="tools/test.sh --full" ;;
   run) script=tools/run-suite.sh ;;
-  *) echo "bare-machine: --command must be test or run, not $command" >&2; exit 2 ;;
+  *) echo "bare-machine: --command must be test, full or run, not $command" >&2; exit 2 ;;
 esac
 [[ -d ../shared ]] || { echo "bare-machine: ../shared is not beside the checkout" >&2; exit 2; }
 out=${out:-references/runs/bare-machine-$command.txt}
