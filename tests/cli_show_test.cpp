@@ -104,13 +104,20 @@ TEST(List, EveryRuleHasACase) {
   EXPECT_NE(r.out.find("(probes: undefined behaviour is never judged"), std::string::npos);
 }
 
-// A folder whose cases leave rules unclaimed: exit 1, each uncovered rule named.
-TEST(List, ARuleWithoutACaseFailsTheListing) {
-  const fs::path dir = fs::path(RAYSPEC_TEST_OUT) / "list-cases";
+// A case folder, made anew under the tests' output, holding only
+// cases/sbt/hit-group-index.yaml.
+fs::path folderWithOneCase(const std::string& name) {
+  const fs::path dir = fs::path(RAYSPEC_TEST_OUT) / name;
   fs::remove_all(dir);
   fs::create_directories(dir / "sbt");
   fs::copy_file(fs::path(RAYSPEC_SOURCE_DIR) / "cases/sbt/hit-group-index.yaml",
                 dir / "sbt/hit-group-index.yaml");
+  return dir;
+}
+
+// A folder whose cases leave rules unclaimed: exit 1, each uncovered rule named.
+TEST(List, ARuleWithoutACaseFailsTheListing) {
+  const fs::path dir = folderWithOneCase("list-cases");
   const ShowRun r = rayspec("list --rules --cases " + dir.string());
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.out.find("R-MASK  instance mask"), std::string::npos) << r.out;
@@ -164,11 +171,7 @@ TEST(Compile, FillsTheCacheThenFindsEverything) {
 
 // A case that does not parse: its error, and exit 1 once the others are done.
 TEST(Compile, ACaseThatDoesNotParseFailsTheCommand) {
-  const fs::path dir = fs::path(RAYSPEC_TEST_OUT) / "compile-cases";
-  fs::remove_all(dir);
-  fs::create_directories(dir / "sbt");
-  fs::copy_file(fs::path(RAYSPEC_SOURCE_DIR) / "cases/sbt/hit-group-index.yaml",
-                dir / "sbt/hit-group-index.yaml");
+  const fs::path dir = folderWithOneCase("compile-cases");
   std::ofstream(dir / "sbt/broken.yaml") << "scene: [\n";
   const ShowRun r = rayspec("compile --cases " + dir.string() + " --cache-dir ''");
   EXPECT_EQ(r.status, 1);
