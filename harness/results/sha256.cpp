@@ -2,9 +2,10 @@
 
 #include <openssl/evp.h>
 
-#include <cstdio>
 #include <memory>
 #include <stdexcept>
+
+#include "base/hex_text.h"
 
 namespace rayspec {
 
@@ -17,13 +18,7 @@ std::string sha256Hex(std::initializer_list<std::string_view> pieces) {
   unsigned int size = 0;
   ok = ok && EVP_DigestFinal_ex(ctx.get(), digest, &size) == 1;
   if (!ok) throw std::runtime_error("libcrypto: SHA-256 failed");
-  std::string hex;
-  char byte[3];
-  for (unsigned int i = 0; i < size; ++i) {
-    std::snprintf(byte, sizeof byte, "%02x", digest[i]);
-    hex += byte;
-  }
-  return hex;
+  return hexBytes(digest, size);
 }
 
 }  // namespace rayspec

@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "base/hex_text.h"
 #include "vulkan/context.h"
 #include "vulkan/library_group_handles.h"
 #include "vulkan/position_fetch.h"
@@ -21,13 +22,6 @@ bool hasDeviceExtension(const std::vector<VkExtensionProperties>& exts, const ch
 std::string versionString(uint32_t v) {
   return std::to_string(VK_API_VERSION_MAJOR(v)) + "." + std::to_string(VK_API_VERSION_MINOR(v)) +
          "." + std::to_string(VK_API_VERSION_PATCH(v));
-}
-
-std::string hexBytes(const uint8_t* bytes, size_t n) {
-  static constexpr char kDigits[] = "0123456789abcdef";
-  std::string out;
-  for (size_t i = 0; i < n; ++i) out += {kDigits[bytes[i] >> 4], kDigits[bytes[i] & 15]};
-  return out;
 }
 
 std::string lower(std::string s) {

@@ -13,6 +13,7 @@
 #include <mutex>
 #include <vector>
 
+#include "base/hex_text.h"
 #include "base/whole_file.h"
 #include "vulkan/context.h"
 
@@ -39,13 +40,8 @@ std::string cacheFile(const VulkanContext& ctx) {
   if (cacheDir().empty()) return {};
   char ids[32];
   std::snprintf(ids, sizeof ids, "%04x-%04x-", ctx.props.vendorID, ctx.props.deviceID);
-  std::string uuid;
-  for (uint8_t b : ctx.props.pipelineCacheUUID) {
-    char hex[3];
-    std::snprintf(hex, sizeof hex, "%02x", b);
-    uuid += hex;
-  }
-  return cacheDir() + "/" + ids + uuid + "-" + std::to_string(ctx.props.driverVersion) + ".bin";
+  return cacheDir() + "/" + ids + hexBytes(ctx.props.pipelineCacheUUID, VK_UUID_SIZE) + "-" +
+         std::to_string(ctx.props.driverVersion) + ".bin";
 }
 
 // The header every pipeline cache starts with (VkPipelineCacheHeaderVersionOne):
