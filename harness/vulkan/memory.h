@@ -1,5 +1,6 @@
-// The small allocator of the backend: one VkDeviceMemory per buffer or image
-// (a case creates a few dozen at most), destroyed through the case's Cleanup.
+// The small allocator of the backend: a case's buffers placed one after
+// another in a few memory blocks of the case (Cleanup::blocks), an image in a
+// VkDeviceMemory of its own; all of it freed through the case's Cleanup.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -19,10 +20,10 @@ enum class MemoryUse {
 
 struct Buffer {
   VkBuffer buffer = VK_NULL_HANDLE;
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  VkDeviceSize size = 0;        // as asked for (the buffer is at least 16 bytes)
-  VkDeviceAddress address = 0;  // when usage has SHADER_DEVICE_ADDRESS
-  void* mapped = nullptr;       // MemoryUse::Host
+  VkDeviceMemory memory = VK_NULL_HANDLE;  // the case's block it is placed in, shared
+  VkDeviceSize size = 0;                   // as asked for (the buffer is at least 16 bytes)
+  VkDeviceAddress address = 0;             // when usage has SHADER_DEVICE_ADDRESS
+  void* mapped = nullptr;                  // MemoryUse::Host
 };
 
 // A zero size gives a 16-byte buffer (Vulkan forbids empty buffers).
