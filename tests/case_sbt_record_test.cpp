@@ -26,7 +26,7 @@ bool recordErrorAt(const ParseResult& r, int line, int column, const std::string
   return false;
 }
 
-#define EXPECT_ERROR_AT(r, line, column, field, text)                                    \
+#define EXPECT_RECORD_ERROR_AT(r, line, column, field, text)                             \
   EXPECT_TRUE(recordErrorAt(r, line, column, field, text))                               \
       << "expected s.yaml:" << line << ":" << column << ": " << field << ": ..." << text \
       << "...; got:\n"                                                                   \
@@ -87,36 +87,38 @@ TEST(SbtRecordShape, DefaultsAndValues) {
 }
 
 TEST(SbtRecordShape, BadValuesAreFieldErrors) {
-  EXPECT_ERROR_AT(parseRecord(caseText("    record_data: 6")), 15, 18, "pipeline.sbt.record_data",
-                  "multiple of 4");
-  EXPECT_ERROR_AT(parseRecord(caseText("    record_data: 36")), 15, 18, "pipeline.sbt.record_data",
-                  "");
-  EXPECT_ERROR_AT(parseRecord(caseText("    padding: 65537")), 15, 14, "pipeline.sbt.padding", "");
-  EXPECT_ERROR_AT(parseRecord(caseText("    padding: -1")), 15, 14, "pipeline.sbt.padding", "");
-  EXPECT_ERROR_AT(parseRecord(caseText("    padding: {raygen: 32}")), 15, 15,
-                  "pipeline.sbt.padding.raygen", "unknown key");
-  EXPECT_ERROR_AT(parseRecord(caseText("    padding: {hit: 70000}")), 15, 0,
-                  "pipeline.sbt.padding.hit", "");
-  EXPECT_ERROR_AT(parseRecord(caseText("    stride: 64")), 15, 5, "pipeline.sbt.stride",
-                  "unknown key");
+  EXPECT_RECORD_ERROR_AT(parseRecord(caseText("    record_data: 6")), 15, 18,
+                         "pipeline.sbt.record_data", "multiple of 4");
+  EXPECT_RECORD_ERROR_AT(parseRecord(caseText("    record_data: 36")), 15, 18,
+                         "pipeline.sbt.record_data", "");
+  EXPECT_RECORD_ERROR_AT(parseRecord(caseText("    padding: 65537")), 15, 14,
+                         "pipeline.sbt.padding", "");
+  EXPECT_RECORD_ERROR_AT(parseRecord(caseText("    padding: -1")), 15, 14, "pipeline.sbt.padding",
+                         "");
+  EXPECT_RECORD_ERROR_AT(parseRecord(caseText("    padding: {raygen: 32}")), 15, 15,
+                         "pipeline.sbt.padding.raygen", "unknown key");
+  EXPECT_RECORD_ERROR_AT(parseRecord(caseText("    padding: {hit: 70000}")), 15, 0,
+                         "pipeline.sbt.padding.hit", "");
+  EXPECT_RECORD_ERROR_AT(parseRecord(caseText("    stride: 64")), 15, 5, "pipeline.sbt.stride",
+                         "unknown key");
 }
 
 TEST(SbtRecordShape, RecordDataPastTheRecordIsAnErrorAtTheData) {
   ParseResult r = parseRecord(
       caseText("    record_data: 8\n    hit: [{group: 0, data: {uints: [1, 2]}}]\n    miss: "
                "[{group: 0, data: {floats: [1, 2, 3]}}]"));
-  EXPECT_ERROR_AT(
+  EXPECT_RECORD_ERROR_AT(
       r, 17, 0, "pipeline.sbt.miss[0].data",
       "3 word(s) (12 bytes) of shader record data do not fit in pipeline.sbt.record_data (8 bytes");
   EXPECT_EQ(r.errors.size(), 1u) << allErrors(r);  // the hit record's 2 words fit
 
   r = parseRecord(caseText("    record_data: 0\n    callable: [{group: 0, data: {uints: [7]}}]"));
-  EXPECT_ERROR_AT(r, 16, 0, "pipeline.sbt.callable[0].data", "do not fit");
+  EXPECT_RECORD_ERROR_AT(r, 16, 0, "pipeline.sbt.callable[0].data", "do not fit");
 
   // raygen's data too, wherever the sbt block stands.
   r = parseRecord(caseText("    record_data: 4", "0", "0", "{uints: [1, 2]}"));
-  EXPECT_ERROR_AT(r, 10, 16, "pipeline.raygen_data",
-                  "2 word(s) (8 bytes) of shader record data do not fit");
+  EXPECT_RECORD_ERROR_AT(r, 10, 16, "pipeline.raygen_data",
+                         "2 word(s) (8 bytes) of shader record data do not fit");
   EXPECT_TRUE(parseRecord(caseText("    record_data: 4", "0", "0", "{uints: [1]}")).value);
 }
 
@@ -125,15 +127,15 @@ TEST(SbtRecordShape, ReadsPastTheRecordDataAreErrorsAtTheRead) {
   EXPECT_TRUE(parseRecord(caseText("    record_data: 8", "{shader_record_uint: 1}")).value);
   ParseResult r = parseRecord(caseText("    record_data: 4", "{shader_record_uint: 1}"));
   for (int line : {11, 12, 13})  // miss, closest-hit, callable
-    EXPECT_ERROR_AT(r, line, 0, "",
-                    "shader_record_uint(1) reads bytes 4..7 of its shader record, past "
-                    "pipeline.sbt.record_data (4 bytes per record)");
+    EXPECT_RECORD_ERROR_AT(r, line, 0, "",
+                           "shader_record_uint(1) reads bytes 4..7 of its shader record, past "
+                           "pipeline.sbt.record_data (4 bytes per record)");
   EXPECT_EQ(r.errors.size(), 3u) << allErrors(r);
   EXPECT_NE(allErrors(r).find("pipeline.hit_groups[0].closest_hit"), std::string::npos)
       << allErrors(r);
 
   r = parseRecord(caseText("    record_data: 0", "0", "{uint: {shader_record_float: 0}}"));
-  EXPECT_ERROR_AT(r, 9, 0, "", "shader_record_float(0) reads bytes 0..3");
+  EXPECT_RECORD_ERROR_AT(r, 9, 0, "", "shader_record_float(0) reads bytes 0..3");
   EXPECT_NE(allErrors(r).find("pipeline.raygen"), std::string::npos) << allErrors(r);
 
   // A read nested in an expression, and one in a branch.
@@ -153,16 +155,17 @@ TEST(SbtRecordShape, LightsReadSixOrEightFloats) {
   EXPECT_TRUE(with_light("24", "directional").value);
   EXPECT_TRUE(with_light("32", "spot").value);
   ParseResult r = with_light("28", "spot");
-  EXPECT_ERROR_AT(r, 13, 0, "", "light: spot reads floats 0..7 (bytes 0..31) of its shader record");
+  EXPECT_RECORD_ERROR_AT(r, 13, 0, "",
+                         "light: spot reads floats 0..7 (bytes 0..31) of its shader record");
   r = with_light("20", "point");
-  EXPECT_ERROR_AT(r, 13, 0, "", "light: point reads floats 0..5 (bytes 0..23)");
+  EXPECT_RECORD_ERROR_AT(r, 13, 0, "", "light: point reads floats 0..5 (bytes 0..23)");
 
   // The light_* ops read the same floats, in any stage.
   const std::string op = "{uint: {x: {light_directional: [[0.0, 0.0, 0.0], [0.0, 0.0, 1.0]]}}}";
   EXPECT_TRUE(parseRecord(caseText("    record_data: 24", op)).value);
   r = parseRecord(caseText("    record_data: 16", op));
   EXPECT_EQ(r.errors.size(), 3u) << allErrors(r);
-  EXPECT_ERROR_AT(r, 12, 0, "", "light_directional reads floats 0..5 (bytes 0..23)");
+  EXPECT_RECORD_ERROR_AT(r, 12, 0, "", "light_directional reads floats 0..5 (bytes 0..23)");
 }
 
 }  // namespace

@@ -97,9 +97,11 @@ TEST(Model, TriangleIntervalIsOpen) {
     // Embree's robust kernel rounds t at tmax below it on AVX2-only
     // processors (README, "Model tiers"): its tmax end is not checked.
     const bool tmax_exact = tier != ModelTier::Robust;
-    for (uint32_t ray : {0u, 1u, 3u, 4u})
-      if (tmax_exact || ray == 1u || ray == 4u)
+    for (uint32_t ray : {0u, 1u, 3u, 4u}) {
+      if (tmax_exact || ray == 1u || ray == 4u) {
         EXPECT_EQ(word(r, ray, "hit"), 0u) << modelTierName(tier) << " " << ray;
+      }
+    }
     EXPECT_EQ(word(r, 2, "hit"), 1u) << modelTierName(tier);
     EXPECT_TRUE(r.ambiguous.empty()) << modelTierName(tier);
   }

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "glsl/glsl_literal.h"
+#include "program/builtins.h"
 #include "program/payload_words.h"
 
 namespace rayspec {
@@ -37,68 +38,9 @@ std::string literal(const Expr& e) {
   return problem("literal type");
 }
 
-// hit_t reads gl_RayTmaxEXT, not gl_HitTEXT: GLSL_EXT_ray_tracing makes
-// gl_HitTEXT an alias of gl_RayTmaxEXT in any-hit and closest-hit, but glslang
-// 12 gives each name its own input variable, and a stage that reads both then
-// declares two RayTmaxKHR inputs (VUID-StandaloneSpirv-OpEntryPoint-09658).
+// The GLSL a built-in is read as (program/builtin_table.h), the word<i>
+// families by their index and hit by the stage.
 std::string builtin(const std::string& name, Stage stage) {
-  static const std::map<std::string, std::string> table = {
-      {"launch_id_x", "gl_LaunchIDEXT.x"},
-      {"launch_id_y", "gl_LaunchIDEXT.y"},
-      {"launch_size_x", "gl_LaunchSizeEXT.x"},
-      {"launch_size_y", "gl_LaunchSizeEXT.y"},
-      {"launch_id_z", "gl_LaunchIDEXT.z"},
-      {"launch_size_z", "gl_LaunchSizeEXT.z"},
-      {"primitive_id", "uint(gl_PrimitiveID)"},
-      {"instance_id", "uint(gl_InstanceID)"},
-      {"instance_custom_index", "uint(gl_InstanceCustomIndexEXT)"},
-      {"geometry_index", "uint(gl_GeometryIndexEXT)"},
-      {"hit_kind", "gl_HitKindEXT"},
-      {"hit_t", "gl_RayTmaxEXT"},
-      {"ray_tmin", "gl_RayTminEXT"},
-      {"ray_tmax", "gl_RayTmaxEXT"},
-      {"incoming_ray_flags", "gl_IncomingRayFlagsEXT"},
-      {"cull_mask", "(gl_CullMaskEXT & 0xFFu)"},
-      {"world_ray_origin", "gl_WorldRayOriginEXT"},
-      {"world_ray_direction", "gl_WorldRayDirectionEXT"},
-      {"object_ray_origin", "gl_ObjectRayOriginEXT"},
-      {"object_ray_direction", "gl_ObjectRayDirectionEXT"},
-      {"barycentrics", "rs_attr"},
-      {"hit_position", "(gl_WorldRayOriginEXT + gl_RayTmaxEXT * gl_WorldRayDirectionEXT)"},
-      {"vertex_position0", "rs_hit_positions[0]"},
-      {"vertex_position1", "rs_hit_positions[1]"},
-      {"vertex_position2", "rs_hit_positions[2]"},
-      {"object_to_world0", "gl_ObjectToWorldEXT[0]"},
-      {"object_to_world1", "gl_ObjectToWorldEXT[1]"},
-      {"object_to_world2", "gl_ObjectToWorldEXT[2]"},
-      {"object_to_world3", "gl_ObjectToWorldEXT[3]"},
-      // The 3x4 forms through the 4x3 matrix: glslang 12 writes SPIR-V the
-      // validator rejects ("Matrix access is out of bounds") when a stage
-      // reads gl_*3x4EXT before gl_*EXT (design.md, round 4).
-      {"object_to_world_3x4_0", "transpose(gl_ObjectToWorldEXT)[0]"},
-      {"object_to_world_3x4_1", "transpose(gl_ObjectToWorldEXT)[1]"},
-      {"object_to_world_3x4_2", "transpose(gl_ObjectToWorldEXT)[2]"},
-      {"world_to_object0", "gl_WorldToObjectEXT[0]"},
-      {"world_to_object1", "gl_WorldToObjectEXT[1]"},
-      {"world_to_object2", "gl_WorldToObjectEXT[2]"},
-      {"world_to_object3", "gl_WorldToObjectEXT[3]"},
-      {"world_to_object_3x4_0", "transpose(gl_WorldToObjectEXT)[0]"},
-      {"world_to_object_3x4_1", "transpose(gl_WorldToObjectEXT)[1]"},
-      {"world_to_object_3x4_2", "transpose(gl_WorldToObjectEXT)[2]"},
-      {"aabb_min", "rs_aabb_min()"},
-      {"aabb_max", "rs_aabb_max()"},
-      {"payload.color", "payload.color"},
-      {"payload.value", "payload.value"},
-      {"depth", "payload.depth"},
-      {"child.color", "child.color"},
-      {"child.value", "child.value"},
-      {"call.position", "call.position"},
-      {"call.normal", "call.normal"},
-      {"call.color", "call.color"},
-      {"call.value", "call.value"},
-      {"callee.color", "callee.color"},
-      {"callee.value", "callee.value"},
-  };
   if (auto w = attributeWordBuiltin(name)) return "rs_attr.words[" + std::to_string(*w) + "]";
   if (auto w = callWordBuiltin(name))  // callee.word3 -> callee.words[3]
     return std::string(w->callee ? "callee" : "call") + ".words[" + std::to_string(w->index) + "]";
@@ -109,8 +51,8 @@ std::string builtin(const std::string& name, Stage stage) {
     if (stage == Stage::Miss) return "0u";
     return problem("hit outside closest_hit and miss");
   }
-  auto it = table.find(name);
-  return it != table.end() ? it->second : problem("unknown builtin " + name);
+  const BuiltinInfo* info = findBuiltin(name);
+  return info && info->glsl ? info->glsl : problem("unknown builtin " + name);
 }
 
 std::string op(const Expr& e, const StageContext& ctx) {

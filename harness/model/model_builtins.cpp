@@ -96,7 +96,9 @@ Val Machine::builtin(const CExpr& e, StageEnv& env) {
   static const TraceRay kNoRay;
   const HitView* hv = env.hit ? env.hit : &kNone;
   const TraceRay* r = env.ray ? env.ray : &kNoRay;
-  switch (e.builtin) {
+  // Every row of program/builtin_table.h, no default: a row the model gives
+  // no meaning fails the build (-Werror=switch).
+  switch (static_cast<Builtin>(e.builtin)) {
     case kBiLaunchX:
       return fromUint(x_);
     case kBiLaunchY:  // the records' row y_ is launch z x launch height + launch y
@@ -161,11 +163,43 @@ Val Machine::builtin(const CExpr& e, StageEnv& env) {
       return vertexPosition(*hv, e.builtin - kBiVertex0);
     case kBiAttributeWord:
       return fromUint(hv->words[e.index % kMaxAttributeWords]);
-    default:
-      if (e.builtin >= kBiObjectToWorld0 && e.builtin < kBiTransformEnd)
-        return transformBuiltin(*hv, e.builtin - kBiObjectToWorld0);
+    case kBiObjectToWorld0:
+    case kBiObjectToWorld1:
+    case kBiObjectToWorld2:
+    case kBiObjectToWorld3:
+    case kBiObjectToWorld3x4_0:
+    case kBiObjectToWorld3x4_1:
+    case kBiObjectToWorld3x4_2:
+    case kBiWorldToObject0:
+    case kBiWorldToObject1:
+    case kBiWorldToObject2:
+    case kBiWorldToObject3:
+    case kBiWorldToObject3x4_0:
+    case kBiWorldToObject3x4_1:
+    case kBiWorldToObject3x4_2:
+      return transformBuiltin(*hv, e.builtin - kBiObjectToWorld0);
+    case kBiPayloadColor:
+    case kBiPayloadValue:
+    case kBiPayloadWord:
+    case kBiChildColor:
+    case kBiChildValue:
+    case kBiChildWord:
+    case kBiCallPosition:
+    case kBiCallNormal:
+    case kBiCallColor:
+    case kBiCallValue:
+    case kBiCallWord:
+    case kBiCalleeColor:
+    case kBiCalleeValue:
+    case kBiCalleeWord:
       return dataBuiltin(e, env);
+    case kBiCount:
+    case kBiUnknown:
+      break;
   }
+  if (error.empty())
+    error = "model: unknown built-in '" + (e.src ? e.src->name : std::string("?")) + "'";
+  return Val{};
 }
 
 }  // namespace rayspec

@@ -8,68 +8,6 @@
 
 namespace rayspec {
 
-const std::vector<std::string>& builtinNames() {
-  static const std::vector<std::string> names = {"launch_id_x",
-                                                 "launch_id_y",
-                                                 "launch_size_x",
-                                                 "launch_size_y",
-                                                 "launch_id_z",
-                                                 "launch_size_z",
-                                                 "primitive_id",
-                                                 "instance_id",
-                                                 "instance_custom_index",
-                                                 "geometry_index",
-                                                 "hit_kind",
-                                                 "hit_t",
-                                                 "hit",
-                                                 "barycentrics",
-                                                 "aabb_min",
-                                                 "aabb_max",
-                                                 "object_ray_origin",
-                                                 "object_ray_direction",
-                                                 "ray_tmin",
-                                                 "ray_tmax",
-                                                 "incoming_ray_flags",
-                                                 "world_ray_origin",
-                                                 "world_ray_direction",
-                                                 "hit_position",
-                                                 "payload.color",
-                                                 "payload.value",
-                                                 "depth",
-                                                 "child.color",
-                                                 "child.value",
-                                                 "call.position",
-                                                 "call.normal",
-                                                 "call.color",
-                                                 "call.value",
-                                                 "callee.color",
-                                                 "callee.value",
-                                                 "payload.word<i>",
-                                                 "child.word<i>",
-                                                 "cull_mask",
-                                                 "vertex_position0",
-                                                 "vertex_position1",
-                                                 "vertex_position2",
-                                                 "object_to_world0",
-                                                 "object_to_world1",
-                                                 "object_to_world2",
-                                                 "object_to_world3",
-                                                 "object_to_world_3x4_0",
-                                                 "object_to_world_3x4_1",
-                                                 "object_to_world_3x4_2",
-                                                 "world_to_object0",
-                                                 "world_to_object1",
-                                                 "world_to_object2",
-                                                 "world_to_object3",
-                                                 "world_to_object_3x4_0",
-                                                 "world_to_object_3x4_1",
-                                                 "world_to_object_3x4_2",
-                                                 "attribute.word<i>",
-                                                 "call.word<i>",
-                                                 "callee.word<i>"};
-  return names;
-}
-
 namespace {
 
 struct OpName {
@@ -196,23 +134,14 @@ struct Compiler {
             r.literal.f[k] = static_cast<float>(e.literal[k]);
         break;
       case Expr::Kind::Builtin: {
-        const auto& names = builtinNames();
         const auto word = payloadWordBuiltin(e.name);  // payload.word3: word<i>, index 3
         const auto attribute_word = attributeWordBuiltin(e.name);
         const auto call_word = callWordBuiltin(e.name);
         if (word) r.index = word->index;
         if (attribute_word) r.index = *attribute_word;
         if (call_word) r.index = call_word->index;
-        const auto it =
-            std::find(names.begin(), names.end(),
-                      word             ? (word->child ? "child.word<i>" : "payload.word<i>")
-                      : attribute_word ? "attribute.word<i>"
-                      : call_word      ? (call_word->callee ? "callee.word<i>" : "call.word<i>")
-                                       : e.name);
-        if (it != names.end()) {
-          r.builtin = static_cast<uint8_t>(it - names.begin());
-          out.read_bits |= uint64_t{1} << r.builtin;
-        }
+        r.builtin = builtinId(findBuiltin(e.name));
+        if (r.builtin != kBiUnknown) out.read_bits.set(r.builtin);
         break;
       }
       case Expr::Kind::Op:

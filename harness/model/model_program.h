@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <bitset>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -12,6 +13,7 @@
 
 #include "case/case.h"
 #include "plan/plan.h"
+#include "program/builtins.h"
 
 namespace rayspec {
 
@@ -41,60 +43,6 @@ inline Val fromFloat(float f) {
   r.f[0] = f;
   return r;
 }
-
-// Built-ins, in the order of builtinNames().
-enum Builtin : uint8_t {
-  kBiLaunchX,
-  kBiLaunchY,
-  kBiLaunchW,
-  kBiLaunchH,
-  kBiLaunchZ,
-  kBiLaunchD,
-  kBiPrimitive,
-  kBiInstance,
-  kBiCustomIndex,
-  kBiGeometry,
-  kBiHitKind,
-  kBiHitT,
-  kBiHit,
-  kBiBarycentrics,
-  kBiAabbMin,
-  kBiAabbMax,
-  kBiObjectOrigin,
-  kBiObjectDirection,
-  kBiTmin,
-  kBiTmax,
-  kBiFlags,
-  kBiWorldOrigin,
-  kBiWorldDirection,
-  kBiHitPosition,
-  kBiPayloadColor,
-  kBiPayloadValue,
-  kBiDepth,
-  kBiChildColor,
-  kBiChildValue,
-  kBiCallPosition,
-  kBiCallNormal,
-  kBiCallColor,
-  kBiCallValue,
-  kBiCalleeColor,
-  kBiCalleeValue,
-  kBiPayloadWord,  // CExpr::index: the word
-  kBiChildWord,
-  kBiCullMask,
-  kBiVertex0,  // kBiVertex0 + i: vertex_position<i>
-  kBiVertex1,
-  kBiVertex2,
-  kBiObjectToWorld0,  // + c: object_to_world<c>, then + 4 + r: object_to_world_3x4_<r>
-  kBiWorldToObject0 = kBiObjectToWorld0 + 7,  // the same for world_to_object
-  kBiTransformEnd = kBiWorldToObject0 + 7,
-  kBiAttributeWord = kBiTransformEnd,  // CExpr::index: the word
-  kBiCallWord,                         // CExpr::index: the word
-  kBiCalleeWord,
-  kBiCount,
-  kBiUnknown = 0xFF
-};
-const std::vector<std::string>& builtinNames();
 
 enum class OpCode : uint8_t {
   SphereHit,
@@ -235,10 +183,10 @@ struct CPipeline {
   std::vector<CountsOnly> miss_counts;
   std::vector<CProgram> hit_programs;  // storage for the groups' programs
   std::vector<CHitGroup> groups;
-  uint64_t read_bits = 0;           // bit (1 << Builtin) for every built-in any program reads
+  std::bitset<kBiCount> read_bits;  // every built-in any program reads
   bool reads_sphere = false;        // sphere_* ops (read the object-space ray and the box)
   bool any_hit_terminates = false;  // some group's any-hit has a `terminate`
-  bool reads(Builtin b) const { return (read_bits >> b) & 1u; }
+  bool reads(Builtin b) const { return read_bits.test(b); }
 };
 
 CPipeline compilePipeline(const Case& c, const Plan& plan);
