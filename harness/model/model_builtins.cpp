@@ -91,14 +91,11 @@ Val Machine::transformBuiltin(const HitView& hv, int k) const {
   return v;
 }
 
-Val Machine::builtin(const CExpr& e, StageEnv& env) {
-  static const HitView kNone;
+// The launch and the ray: launch_*, ray_*, flags, cull mask, world ray, depth, hit.
+Val Machine::rayBuiltin(const CExpr& e, const StageEnv& env) const {
   static const TraceRay kNoRay;
-  const HitView* hv = env.hit ? env.hit : &kNone;
   const TraceRay* r = env.ray ? env.ray : &kNoRay;
-  // Every row of program/builtin_table.h, no default: a row the model gives
-  // no meaning fails the build (-Werror=switch).
-  switch (static_cast<Builtin>(e.builtin)) {
+  switch (e.builtin) {
     case kBiLaunchX:
       return fromUint(x_);
     case kBiLaunchY:  // the records' row y_ is launch z x launch height + launch y
@@ -111,6 +108,35 @@ Val Machine::builtin(const CExpr& e, StageEnv& env) {
       return fromUint(launch_[1]);
     case kBiLaunchD:
       return fromUint(launch_[2]);
+    case kBiTmin:
+      return fromFloat(r->tmin);
+    case kBiTmax:
+      return fromFloat(env.tmax_view);
+    case kBiCullMask:  // the low 8 bits only (program/builtin_table.h)
+      return fromUint(r->cull_mask & 0xFFu);
+    case kBiFlags:
+      return fromUint(r->flags);
+    case kBiWorldOrigin:
+      return fromVec3(r->origin);
+    case kBiWorldDirection:
+      return fromVec3(r->direction);
+    case kBiDepth:
+      return fromUint(env.depth);
+    case kBiHit:
+      return fromUint(env.stage == Stage::ClosestHit ? 1u : 0u);
+    default:
+      return Val{};  // builtin() sends no other
+  }
+}
+
+// The hit or candidate: its ids, kind, t, attributes, box, object-space ray,
+// position and vertices.
+Val Machine::hitBuiltin(const CExpr& e, const StageEnv& env) const {
+  static const HitView kNone;
+  static const TraceRay kNoRay;
+  const HitView* hv = env.hit ? env.hit : &kNone;
+  const TraceRay* r = env.ray ? env.ray : &kNoRay;
+  switch (e.builtin) {
     case kBiPrimitive:
       return fromUint(hv->primitive);
     case kBiInstance:
@@ -123,8 +149,6 @@ Val Machine::builtin(const CExpr& e, StageEnv& env) {
       return fromUint(hv->hit_kind);
     case kBiHitT:
       return fromFloat(hv->t);
-    case kBiHit:
-      return fromUint(env.stage == Stage::ClosestHit ? 1u : 0u);
     case kBiBarycentrics: {
       Val v;
       v.f = {hv->b1, hv->b2, 0, 0};
@@ -138,31 +162,56 @@ Val Machine::builtin(const CExpr& e, StageEnv& env) {
       return fromVec3(hv->object_origin);
     case kBiObjectDirection:
       return fromVec3(hv->object_direction);
-    case kBiTmin:
-      return fromFloat(r->tmin);
-    case kBiTmax:
-      return fromFloat(env.tmax_view);
-    case kBiCullMask:  // the low 8 bits only (program/builtins.h)
-      return fromUint(r->cull_mask & 0xFFu);
-    case kBiFlags:
-      return fromUint(r->flags);
-    case kBiWorldOrigin:
-      return fromVec3(r->origin);
-    case kBiWorldDirection:
-      return fromVec3(r->direction);
     case kBiHitPosition: {
       Vec3 p;
       for (int k = 0; k < 3; ++k) p[k] = r->origin[k] + hv->t * r->direction[k];
       return fromVec3(p);
     }
+    case kBiAttributeWord:
+      return fromUint(hv->words[e.index % kMaxAttributeWords]);
+    default:
+      return Val{};  // builtin() sends no other
+  }
+}
+
+// Every row of program/builtin_table.h, with no default: a row the model
+// gives no meaning fails the build (-Werror=switch).
+Val Machine::builtin(const CExpr& e, StageEnv& env) {
+  static const HitView kNone;
+  switch (static_cast<Builtin>(e.builtin)) {
+    case kBiLaunchX:
+    case kBiLaunchY:
+    case kBiLaunchZ:
+    case kBiLaunchW:
+    case kBiLaunchH:
+    case kBiLaunchD:
+    case kBiTmin:
+    case kBiTmax:
+    case kBiCullMask:
+    case kBiFlags:
+    case kBiWorldOrigin:
+    case kBiWorldDirection:
     case kBiDepth:
-      return fromUint(env.depth);
+    case kBiHit:
+      return rayBuiltin(e, env);
+    case kBiPrimitive:
+    case kBiInstance:
+    case kBiCustomIndex:
+    case kBiGeometry:
+    case kBiHitKind:
+    case kBiHitT:
+    case kBiBarycentrics:
+    case kBiAabbMin:
+    case kBiAabbMax:
+    case kBiObjectOrigin:
+    case kBiObjectDirection:
+    case kBiHitPosition:
+    case kBiAttributeWord:
+      return hitBuiltin(e, env);
     case kBiVertex0:
     case kBiVertex1:
     case kBiVertex2:
-      return vertexPosition(*hv, e.builtin - kBiVertex0);
-    case kBiAttributeWord:
-      return fromUint(hv->words[e.index % kMaxAttributeWords]);
+      return vertexPosition(env.hit ? *env.hit : kNone, e.builtin - kBiVertex0);
     case kBiObjectToWorld0:
     case kBiObjectToWorld1:
     case kBiObjectToWorld2:
@@ -177,7 +226,7 @@ Val Machine::builtin(const CExpr& e, StageEnv& env) {
     case kBiWorldToObject3x4_0:
     case kBiWorldToObject3x4_1:
     case kBiWorldToObject3x4_2:
-      return transformBuiltin(*hv, e.builtin - kBiObjectToWorld0);
+      return transformBuiltin(env.hit ? *env.hit : kNone, e.builtin - kBiObjectToWorld0);
     case kBiPayloadColor:
     case kBiPayloadValue:
     case kBiPayloadWord:

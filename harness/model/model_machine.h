@@ -180,6 +180,8 @@ class alignas(64) Machine {
   friend class TraceClassifier;  // model_exact_tier.cpp: classifyTrace's steps
   Val eval(const CExpr& e, StageEnv& env);
   Val builtin(const CExpr& e, StageEnv& env);
+  Val rayBuiltin(const CExpr& e, const StageEnv& env) const;
+  Val hitBuiltin(const CExpr& e, const StageEnv& env) const;
   Val dataBuiltin(const CExpr& e, StageEnv& env);
   // Word index % words of a data array indexed by a value (payload_word ..
   // callee_word, store: payload.words / call.words); null where the stage has
