@@ -8,6 +8,14 @@
 //   box p of a geometry    6 float words: min xyz, max xyz
 // Assumes gl_InstanceID is the instance's position in the case's instance list.
 // Model counterpart: the model reads the same boxes from the Case.
+// The primitive is the current one's (gl_*), or what RS_HIT_INSTANCE,
+// RS_HIT_GEOMETRY and RS_HIT_PRIMITIVE name where they are defined first (a
+// ray query's candidate: harness/glsl/emit_ray_query.cpp).
+#ifndef RS_HIT_INSTANCE
+#define RS_HIT_INSTANCE uint(gl_InstanceID)
+#define RS_HIT_GEOMETRY uint(gl_GeometryIndexEXT)
+#define RS_HIT_PRIMITIVE uint(gl_PrimitiveID)
+#endif
 
 layout(set = 0, binding = RS_BINDING_SCENE, std430) readonly buffer RsScene {
   uint rs_scene[];
@@ -15,9 +23,9 @@ layout(set = 0, binding = RS_BINDING_SCENE, std430) readonly buffer RsScene {
 
 // First word of the current primitive's box.
 uint rs_scene_box_word() {
-  uint table = rs_scene[1u + uint(gl_InstanceID)];
-  uint first = rs_scene[table + uint(gl_GeometryIndexEXT)];
-  return first + 6u * uint(gl_PrimitiveID);
+  uint table = rs_scene[1u + RS_HIT_INSTANCE];
+  uint first = rs_scene[table + RS_HIT_GEOMETRY];
+  return first + 6u * RS_HIT_PRIMITIVE;
 }
 
 vec3 rs_aabb_min() {

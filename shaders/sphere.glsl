@@ -27,8 +27,12 @@ RsSphere rs_sphere(vec3 bmin, vec3 bmax, vec3 o, vec3 d) {
   return sp;
 }
 
-// The sphere of the primitive this intersection shader runs for.
+// The sphere of the primitive this intersection shader runs for (the object
+// ray is RS_OBJECT_RAY_ORIGIN / _DIRECTION where defined first, as scene.glsl).
+#ifndef RS_OBJECT_RAY_ORIGIN
+#define RS_OBJECT_RAY_ORIGIN gl_ObjectRayOriginEXT
+#define RS_OBJECT_RAY_DIRECTION gl_ObjectRayDirectionEXT
+#endif
 RsSphere rs_sphere_current() {
-  return rs_sphere(rs_aabb_min(), rs_aabb_max(), gl_ObjectRayOriginEXT,
-                   gl_ObjectRayDirectionEXT);
+  return rs_sphere(rs_aabb_min(), rs_aabb_max(), RS_OBJECT_RAY_ORIGIN, RS_OBJECT_RAY_DIRECTION);
 }

@@ -128,8 +128,8 @@ void emitControl(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
     case Stmt::Kind::Continue:
       out.line("continue;");
       return;
-    case Stmt::Kind::Return:
-      out.line("return;");
+    case Stmt::Kind::Return:  // an inlined any-hit that ends accepts
+      out.line(ctx.inlined && ctx.stage == Stage::AnyHit ? "return kRsAccept;" : "return;");
       return;
     case Stmt::Kind::Switch:
       switchStmt(s, ctx, out);

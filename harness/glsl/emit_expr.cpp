@@ -39,8 +39,11 @@ std::string literal(const Expr& e) {
 }
 
 // The GLSL a built-in is read as (program/builtin_table.h), the word<i>
-// families by their index and hit by the stage.
-std::string builtin(const std::string& name, Stage stage) {
+// families by their index and hit by the stage; inlined in raygen, through
+// the ray query (its candidate in any-hit and intersection, its committed
+// intersection in closest-hit).
+std::string builtin(const std::string& name, const StageContext& ctx) {
+  const Stage stage = ctx.stage;
   if (auto w = attributeWordBuiltin(name)) return "rs_attr.words[" + std::to_string(*w) + "]";
   if (auto w = callWordBuiltin(name))  // callee.word3 -> callee.words[3]
     return std::string(w->callee ? "callee" : "call") + ".words[" + std::to_string(w->index) + "]";
@@ -52,7 +55,18 @@ std::string builtin(const std::string& name, Stage stage) {
     return problem("hit outside closest_hit and miss");
   }
   const BuiltinInfo* info = findBuiltin(name);
-  return info && info->glsl ? info->glsl : problem("unknown builtin " + name);
+  if (!ctx.inlined || !info)
+    return info && info->glsl ? info->glsl : problem("unknown builtin " + name);
+  if (name == "ray_tmax")  // the hit's t, the committed t so far, the trace's tmax
+    return stage == Stage::Intersection ? "rs_current_tmax()"
+           : stage == Stage::Miss       ? "rs_q_tmax"
+                                        : "rs_hit_t";
+  if (!info->ray_query) return problem(name + " cannot be read by a ray query");
+  std::string spelled = info->ray_query;
+  const std::string committed = stage == Stage::ClosestHit ? "true" : "false";
+  for (size_t at; (at = spelled.find("$c")) != std::string::npos;)
+    spelled.replace(at, 2, committed);
+  return spelled;
 }
 
 std::string op(const Expr& e, const StageContext& ctx) {
@@ -115,7 +129,7 @@ std::string emitExpr(const Expr& e, const StageContext& ctx) {
       return literal(e);
     case Expr::Kind::Builtin:
       if (e.name == "barycentrics" && ctx.attribute_words) return "rs_attr.bary";
-      return builtin(e.name, ctx.stage);
+      return builtin(e.name, ctx);
     case Expr::Kind::Op:
       return op(e, ctx);
     case Expr::Kind::Local:

@@ -9,6 +9,7 @@
 #include "glsl/emit_control.h"
 #include "glsl/emit_expr.h"
 #include "glsl/emit_payloads.h"
+#include "glsl/emit_ray_query.h"
 #include "glsl/emit_stmt.h"
 #include "glsl/glsl_writer.h"
 #include "glsl/stage_context.h"
@@ -21,8 +22,9 @@ std::string define(const std::string& name, uint32_t value) {
   return "#define " + name + " " + std::to_string(value);
 }
 
-// The automatic run-count field a stage bumps.
-const char* runsField(Stage s) {
+}  // namespace
+
+const char* stageRunsField(Stage s) {
   switch (s) {
     case Stage::Raygen:
       return "raygen_runs";
@@ -40,6 +42,8 @@ const char* runsField(Stage s) {
   return "raygen_runs";
 }
 
+namespace {
+
 void include(const std::string& file, GlslWriter& out) {
   const auto& shaders = embeddedShaders();
   auto it = shaders.find(file);
@@ -52,6 +56,18 @@ void include(const std::string& file, GlslWriter& out) {
   out.raw(it->second);
   if (!it->second.empty() && it->second.back() != '\n') out.raw("\n");
   out.line("// ---- end of shaders/" + file + " ----");
+}
+
+// scene.glsl and sphere.glsl read the ray query's candidate (inlined
+// intersection programs, glsl/emit_ray_query.h). The query is declared later,
+// where the macros are used.
+void rayQueryCandidateMacros(GlslWriter& out) {
+  out.line("#define RS_HIT_INSTANCE uint(rayQueryGetIntersectionInstanceIdEXT(rs_rq, false))");
+  out.line("#define RS_HIT_GEOMETRY uint(rayQueryGetIntersectionGeometryIndexEXT(rs_rq, false))");
+  out.line("#define RS_HIT_PRIMITIVE uint(rayQueryGetIntersectionPrimitiveIndexEXT(rs_rq, false))");
+  out.line("#define RS_OBJECT_RAY_ORIGIN rayQueryGetIntersectionObjectRayOriginEXT(rs_rq, false)");
+  out.line(
+      "#define RS_OBJECT_RAY_DIRECTION rayQueryGetIntersectionObjectRayDirectionEXT(rs_rq, false)");
 }
 
 void defines(const StageContext& ctx, GlslWriter& out) {
@@ -210,14 +226,17 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
   for (const ExpectedRejection& e : c.expected_rejections)
     if (e.shader == name) ctx.rejected = true;
   if (ctx.rejected && stage == Stage::Miss) ctx.attribute_words = c.pipeline.attribute_words;
-  if (plan.records) ctx.uses.record_fields.insert(recordFieldIndex(runsField(stage)));
+  if (plan.records) ctx.uses.record_fields.insert(recordFieldIndex(stageRunsField(stage)));
   if (plan.records && stage == Stage::AnyHit)
     for (const char* f : {"any_hit_slots", "any_hit_repeats"})
       ctx.uses.record_fields.insert(recordFieldIndex(f));
+  const bool ray_query = stage == Stage::Raygen && c.pipeline.ray_query;
+  if (ray_query) addInlinedUses(ctx);
   const StageUses& u = ctx.uses;
   GlslWriter out;
   out.line("#version 460");
   out.line("#extension GL_EXT_ray_tracing : require");
+  if (ray_query) out.line("#extension GL_EXT_ray_query : require");
   // The records live behind a buffer reference (shaders/common.glsl): a large
   // launch's records may exceed maxStorageBufferRange (128 MiB on lavapipe).
   if (plan.records) out.line("#extension GL_EXT_buffer_reference : require");
@@ -234,19 +253,22 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
   include("payload.glsl", out);
   emitPayloadStructs(ctx, out);
   emitCallDataStructs(ctx, out);
-  if (u.scene && stage == Stage::Intersection) include("scene.glsl", out);
-  if (u.sphere && stage == Stage::Intersection) include("sphere.glsl", out);
+  if (ray_query) out.line("rayQueryEXT rs_rq;  // every trace's (glsl/emit_ray_query.h)");
+  if (u.scene && ray_query) rayQueryCandidateMacros(out);
+  if (u.scene && (stage == Stage::Intersection || ray_query)) include("scene.glsl", out);
+  if (u.sphere && (stage == Stage::Intersection || ray_query)) include("sphere.glsl", out);
   if (u.light) include("lights.glsl", out);
   if (u.position_fetch) include("position_fetch.glsl", out);
   interfaceVariables(ctx, out);
   specializationConstants(ctx, out);
   // Raygen's launch ray is global: a function's trace may take its fields.
   if (stage == Stage::Raygen && u.launch_ray) out.line("RsRay rs_ray;");
+  if (ray_query) emitInlinedStages(ctx, out);
   emitFunctions(program, ctx, out);
 
   out.line("");
   out.open("void main() {");
-  if (plan.records) out.line("rs_bump_runs(" + fieldOffsetMacro(runsField(stage)) + ");");
+  if (plan.records) out.line("rs_bump_runs(" + fieldOffsetMacro(stageRunsField(stage)) + ");");
   if (plan.records && stage == Stage::AnyHit)
     out.line("rs_mark_any_hit(" + fieldOffsetMacro("any_hit_slots") + ", " +
              fieldOffsetMacro("any_hit_repeats") + ", (uint(gl_InstanceID) * " +

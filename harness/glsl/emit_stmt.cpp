@@ -63,6 +63,25 @@ void assignFields(const Stmt& s, const std::string& target, const StageContext& 
   }
 }
 
+// A report in an intersection inlined in raygen: the group's report function
+// (glsl/emit_ray_query.cpp); an any-hit that terminated ends the shader.
+void reportInlined(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
+  out.open("{  // report");
+  out.line("const bool rs_accepted = rs_report_" + std::to_string(ctx.group) + "(rs_ah_payload, " +
+           emitExpr(s.t, ctx) + ", " + emitExpr(s.hit_kind, ctx) + ", rs_attr);");
+  out.line("if (rs_q_done) return;");
+  if (!s.then_.empty() || !s.else_.empty()) {
+    out.open("if (rs_accepted) {");
+    emitProgram(s.then_, ctx, out);
+    if (!s.else_.empty()) {
+      out.reopen("} else {");
+      emitProgram(s.else_, ctx, out);
+    }
+    out.close();
+  }
+  out.close();
+}
+
 void report(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
   const std::string bary = ctx.attribute_words ? "rs_attr.bary" : "rs_attr";
   out.line(bary + " = " +
@@ -73,6 +92,10 @@ void report(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
     for (const auto& [name, e] : s.assigns)
       if (payloadWordField(name) == i) value = emitExpr(e, ctx);
     out.line("rs_attr.words[" + std::to_string(i) + "] = " + value + ";");
+  }
+  if (ctx.inlined) {
+    reportInlined(s, ctx, out);
+    return;
   }
   const std::string call =
       "reportIntersectionEXT(" + emitExpr(s.t, ctx) + ", " + emitExpr(s.hit_kind, ctx) + ")";
@@ -114,7 +137,10 @@ void terminator(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
             " is only allowed in any_hit\n");
     return;
   }
-  out.line(ignore ? "ignoreIntersectionEXT;" : "terminateRayEXT;");
+  if (ctx.inlined)  // the any-hit function's verdict (glsl/emit_ray_query.h)
+    out.line(ignore ? "return kRsIgnore;" : "return kRsTerminate;");
+  else
+    out.line(ignore ? "ignoreIntersectionEXT;" : "terminateRayEXT;");
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include "glsl/emit_expr.h"
 #include "glsl/emit_payloads.h"
+#include "glsl/emit_ray_query.h"
 #include "glsl/glsl_literal.h"
 #include "program/payload_words.h"
 
@@ -76,6 +77,12 @@ void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
     out.line(std::string(a.type) + " " + a.local + " = " + value + ";");
   }
   startPayload(s, ctx, out);
+  if (ctx.c.pipeline.ray_query) {  // raygen's traces as ray query loops
+    emitRayQueryTrace(s, ctx, out);
+    emitPayloadResult(ctx, s.trace.location, out);
+    out.close();
+    return;
+  }
   const std::string tlas = ctx.c.scene.tlasCount() > 1
                                ? "rs_tlas[" + std::to_string(s.trace.tlas) + "]"
                                : std::string("rs_tlas");

@@ -49,6 +49,12 @@ struct StageContext {
   // it declares the interface its program uses even where its stage cannot
   // (program/stage_interface.h), so that the compiler sees the real misuse.
   bool rejected = false;
+  // The program is emitted as a function of raygen that a ray query loop
+  // calls (Pipeline::ray_query, glsl/emit_ray_query.h): built-ins are read
+  // through the query, any-hit's ignore / terminate return its verdict, a
+  // report calls the group's report function. `group`: its hit group.
+  bool inlined = false;
+  uint32_t group = 0;
 };
 
 }  // namespace rayspec

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "case/flag_names.h"
+#include "metamorphic/ray_query_path.h"
 
 namespace rayspec {
 namespace {
@@ -15,7 +16,7 @@ constexpr PathName kPaths[] = {
     {FeaturePath::Indirect, "indirect"},   {FeaturePath::Indirect2, "indirect2"},
     {FeaturePath::Libraries, "libraries"}, {FeaturePath::Clone, "clone"},
     {FeaturePath::Compact, "compact"},     {FeaturePath::Serialize, "serialize"},
-    {FeaturePath::Update, "update"},
+    {FeaturePath::Update, "update"},       {FeaturePath::RayQuery, "ray-query"},
 };
 
 // The launch by an indirect command, where the case launches directly.
@@ -116,6 +117,9 @@ std::optional<Case> throughPath(const Case& c, FeaturePath path, std::string* wh
       break;
     case FeaturePath::Update:
       ok = updatedInPlace(out, why_not);
+      break;
+    case FeaturePath::RayQuery:
+      ok = inlinedByRayQuery(out, why_not);
       break;
   }
   if (!ok) return std::nullopt;

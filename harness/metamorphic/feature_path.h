@@ -1,6 +1,7 @@
 // Feature paths (--through): a way of building and launching that must not
 // change what shaders observe, applied to every case of a run so that the
-// path meets every family (R-INDIRECT, R-LIBRARY, R-AS-COPY, R-AS-UPDATE).
+// path meets every family (R-INDIRECT, R-LIBRARY, R-AS-COPY, R-AS-UPDATE,
+// R-RQ-EQUIV).
 // The model's expectation stays the case's own; a case that already takes
 // another way of the same kind (its own launch command, libraries, copy or
 // update) is not sent through it, and says why.
@@ -21,6 +22,7 @@ enum class FeaturePath {
   Compact,    // scene.build.copy compact
   Serialize,  // scene.build.copy serialize
   Update,     // built with ALLOW_UPDATE, then updated in place to the same scene
+  RayQuery,   // every trace a ray query loop in raygen (metamorphic/ray_query_path.h)
 };
 
 const char* featurePathName(FeaturePath p);

@@ -5,11 +5,17 @@
 // model's meaning of each is one exhaustive switch (model/model_builtins.cpp),
 // which fails to build when a row has none.
 //
-// X(Id, "name", type, stages, "GLSL", "meaning"):
+// X(Id, "name", type, stages, "GLSL", "ray query GLSL", "meaning"):
 //   stages: the letters of program/builtins.h (R raygen, M miss, C
 //     closest-hit, A any-hit, I intersection, K callable);
 //   GLSL: the expression the stage reads, or nullptr where the emitter spells
-//     it itself (hit by stage; the word<i> families by index).
+//     it itself (hit by stage; the word<i> families by index);
+//   ray query GLSL: the same value where the stage runs inlined in raygen
+//     (--through ray-query, glsl/emit_ray_query.h): read through the query
+//     rs_rq, $c standing for its committed flag (false in any-hit and
+//     intersection, true in closest-hit); nullptr where the emitter spells
+//     it (hit, ray_tmax by stage, the word<i> families) or it cannot be read
+//     inlined (vertex_position<i>).
 // Rows that are indexed families stay together in this order (the model and
 // the emitter count from their first row): vertex_position0..2, the
 // transforms (object_to_world0..3, _3x4_0..2, then world_to_object's).
@@ -22,120 +28,141 @@
 // The 3x4 transforms are read through the 4x3 matrix: glslang 12 writes SPIR-V
 // the validator rejects ("Matrix access is out of bounds") when a stage reads
 // gl_*3x4EXT before gl_*EXT (design.md, round 4).
-#define RAYSPEC_BUILTINS(X)                                                                    \
-  X(LaunchX, "launch_id_x", Uint, kAllStages, "gl_LaunchIDEXT.x", "x of gl_LaunchIDEXT")       \
-  X(LaunchY, "launch_id_y", Uint, kAllStages, "gl_LaunchIDEXT.y", "y of gl_LaunchIDEXT")       \
-  X(LaunchW, "launch_size_x", Uint, kAllStages, "gl_LaunchSizeEXT.x", "x of gl_LaunchSizeEXT") \
-  X(LaunchH, "launch_size_y", Uint, kAllStages, "gl_LaunchSizeEXT.y", "y of gl_LaunchSizeEXT") \
-  X(LaunchZ, "launch_id_z", Uint, kAllStages, "gl_LaunchIDEXT.z",                              \
-    "z of gl_LaunchIDEXT (rays.launch)")                                                       \
-  X(LaunchD, "launch_size_z", Uint, kAllStages, "gl_LaunchSizeEXT.z",                          \
-    "z of gl_LaunchSizeEXT (rays.launch)")                                                     \
-  X(Primitive, "primitive_id", Uint, I | A | C, "uint(gl_PrimitiveID)", "gl_PrimitiveID")      \
-  X(Instance, "instance_id", Uint, I | A | C, "uint(gl_InstanceID)", "gl_InstanceID")          \
-  X(CustomIndex, "instance_custom_index", Uint, I | A | C, "uint(gl_InstanceCustomIndexEXT)",  \
-    "gl_InstanceCustomIndexEXT")                                                               \
-  X(Geometry, "geometry_index", Uint, I | A | C, "uint(gl_GeometryIndexEXT)",                  \
-    "gl_GeometryIndexEXT")                                                                     \
-  X(HitKind, "hit_kind", Uint, A | C, "gl_HitKindEXT", "gl_HitKindEXT")                        \
-  X(HitT, "hit_t", Float, A | C, "gl_RayTmaxEXT",                                              \
-    "gl_HitTEXT: in any-hit the candidate's t, in closest-hit the hit's t")                    \
-  X(Hit, "hit", Uint, C | M, nullptr, "1 in closest-hit, 0 in miss")                           \
-  X(Barycentrics, "barycentrics", Vec2, A | C, "rs_attr",                                      \
-    "the hit attribute: triangle barycentrics (b1, b2), or what the intersection shader "      \
-    "reported")                                                                                \
-  X(AabbMin, "aabb_min", Vec3, I, "rs_aabb_min()",                                             \
-    "min corner of the primitive's AABB (object space)")                                       \
-  X(AabbMax, "aabb_max", Vec3, I, "rs_aabb_max()",                                             \
-    "max corner of the primitive's AABB (object space)")                                       \
-  X(ObjectOrigin, "object_ray_origin", Vec3, I | A | C, "gl_ObjectRayOriginEXT",               \
-    "gl_ObjectRayOriginEXT")                                                                   \
-  X(ObjectDirection, "object_ray_direction", Vec3, I | A | C, "gl_ObjectRayDirectionEXT",      \
-    "gl_ObjectRayDirectionEXT")                                                                \
-  X(Tmin, "ray_tmin", Float, I | A | C | M, "gl_RayTminEXT", "gl_RayTminEXT")                  \
-  X(Tmax, "ray_tmax", Float, I | A | C | M, "gl_RayTmaxEXT", "gl_RayTmaxEXT")                  \
-  X(Flags, "incoming_ray_flags", Uint, I | A | C | M, "gl_IncomingRayFlagsEXT",                \
-    "gl_IncomingRayFlagsEXT")                                                                  \
-  X(WorldOrigin, "world_ray_origin", Vec3, I | A | C | M, "gl_WorldRayOriginEXT",              \
-    "gl_WorldRayOriginEXT")                                                                    \
-  X(WorldDirection, "world_ray_direction", Vec3, I | A | C | M, "gl_WorldRayDirectionEXT",     \
-    "gl_WorldRayDirectionEXT")                                                                 \
-  X(HitPosition, "hit_position", Vec3, A | C,                                                  \
-    "(gl_WorldRayOriginEXT + gl_RayTmaxEXT * gl_WorldRayDirectionEXT)",                        \
-    "world ray origin + hit_t * world ray direction")                                          \
-  X(PayloadColor, "payload.color", Vec4, M | C | A | R, "payload.color",                       \
-    "color of the incoming payload; in raygen the payload of its last trace")                  \
-  X(PayloadValue, "payload.value", Uint, M | C | A | R, "payload.value",                       \
-    "value of the incoming payload; in raygen the payload of its last trace")                  \
-  X(Depth, "depth", Uint, M | C | A, "payload.depth",                                          \
-    "trace depth: 1 for a trace from raygen, +1 per nested trace")                             \
-  X(ChildColor, "child.color", Vec4, C | M, "child.color",                                     \
-    "color of the payload of this stage's last trace")                                         \
-  X(ChildValue, "child.value", Uint, C | M, "child.value",                                     \
-    "value of the payload of this stage's last trace")                                         \
-  X(CallPosition, "call.position", Vec3, K, "call.position",                                   \
-    "position of the incoming callable data")                                                  \
-  X(CallNormal, "call.normal", Vec3, K, "call.normal", "normal of the incoming callable data") \
-  X(CallColor, "call.color", Vec4, K, "call.color", "color of the incoming callable data")     \
-  X(CallValue, "call.value", Uint, K, "call.value", "value of the incoming callable data")     \
-  X(CalleeColor, "callee.color", Vec4, R | C | M | K, "callee.color",                          \
-    "color of the callable data after this stage's last call")                                 \
-  X(CalleeValue, "callee.value", Uint, R | C | M | K, "callee.value",                          \
-    "value of the callable data after this stage's last call")                                 \
-  X(PayloadWord, "payload.word<i>", Uint, M | C | A | R, nullptr,                              \
-    "word i (0..57) of the incoming payload, within its type's pipeline.payloads words; in "   \
-    "raygen the payload of its last trace (0 beyond that trace's type)")                       \
-  X(ChildWord, "child.word<i>", Uint, C | M, nullptr,                                          \
-    "word i of the payload of this stage's last trace (0 beyond that trace's type)")           \
-  X(CullMask, "cull_mask", Uint, I | A | C | M, "(gl_CullMaskEXT & 0xFFu)",                    \
-    "gl_CullMaskEXT & 0xFF: the low 8 bits of the cull mask the trace passed, the bits "       \
-    "every reading of the specification agrees on (VK_KHR_ray_tracing_maintenance1; "          \
-    "NotSupported without it)")                                                                \
-  X(Vertex0, "vertex_position0", Vec3, A | C, "rs_hit_positions[0]",                           \
-    "gl_HitTriangleVertexPositionsEXT[0]: the hit triangle's first vertex in object space, "   \
-    "through the geometry transform (VK_KHR_ray_tracing_position_fetch; triangle hits only)")  \
-  X(Vertex1, "vertex_position1", Vec3, A | C, "rs_hit_positions[1]",                           \
-    "gl_HitTriangleVertexPositionsEXT[1]: the hit triangle's second vertex (as "               \
-    "vertex_position0)")                                                                       \
-  X(Vertex2, "vertex_position2", Vec3, A | C, "rs_hit_positions[2]",                           \
-    "gl_HitTriangleVertexPositionsEXT[2]: the hit triangle's third vertex (as "                \
-    "vertex_position0)")                                                                       \
-  X(ObjectToWorld0, "object_to_world0", Vec3, I | A | C, "gl_ObjectToWorldEXT[0]",             \
-    "gl_ObjectToWorldEXT[0]: column 0 of the instance's object-to-world matrix (4 columns "    \
-    "of 3; object_to_world1..3 the others, 3 the translation)")                                \
-  X(ObjectToWorld1, "object_to_world1", Vec3, I | A | C, "gl_ObjectToWorldEXT[1]",             \
-    "gl_ObjectToWorldEXT[1]")                                                                  \
-  X(ObjectToWorld2, "object_to_world2", Vec3, I | A | C, "gl_ObjectToWorldEXT[2]",             \
-    "gl_ObjectToWorldEXT[2]")                                                                  \
-  X(ObjectToWorld3, "object_to_world3", Vec3, I | A | C, "gl_ObjectToWorldEXT[3]",             \
-    "gl_ObjectToWorldEXT[3]")                                                                  \
-  X(ObjectToWorld3x4_0, "object_to_world_3x4_0", Vec4, I | A | C,                              \
-    "transpose(gl_ObjectToWorldEXT)[0]",                                                       \
-    "gl_ObjectToWorld3x4EXT[0]: row 0 of the 3x4 object-to-world matrix (_1, _2 the others)")  \
-  X(ObjectToWorld3x4_1, "object_to_world_3x4_1", Vec4, I | A | C,                              \
-    "transpose(gl_ObjectToWorldEXT)[1]", "gl_ObjectToWorld3x4EXT[1]")                          \
-  X(ObjectToWorld3x4_2, "object_to_world_3x4_2", Vec4, I | A | C,                              \
-    "transpose(gl_ObjectToWorldEXT)[2]", "gl_ObjectToWorld3x4EXT[2]")                          \
-  X(WorldToObject0, "world_to_object0", Vec3, I | A | C, "gl_WorldToObjectEXT[0]",             \
-    "gl_WorldToObjectEXT[0]: column 0 of the inverse (world_to_object1..3 the others)")        \
-  X(WorldToObject1, "world_to_object1", Vec3, I | A | C, "gl_WorldToObjectEXT[1]",             \
-    "gl_WorldToObjectEXT[1]")                                                                  \
-  X(WorldToObject2, "world_to_object2", Vec3, I | A | C, "gl_WorldToObjectEXT[2]",             \
-    "gl_WorldToObjectEXT[2]")                                                                  \
-  X(WorldToObject3, "world_to_object3", Vec3, I | A | C, "gl_WorldToObjectEXT[3]",             \
-    "gl_WorldToObjectEXT[3]")                                                                  \
-  X(WorldToObject3x4_0, "world_to_object_3x4_0", Vec4, I | A | C,                              \
-    "transpose(gl_WorldToObjectEXT)[0]",                                                       \
-    "gl_WorldToObject3x4EXT[0]: row 0 of the 3x4 world-to-object matrix (_1, _2 the others)")  \
-  X(WorldToObject3x4_1, "world_to_object_3x4_1", Vec4, I | A | C,                              \
-    "transpose(gl_WorldToObjectEXT)[1]", "gl_WorldToObject3x4EXT[1]")                          \
-  X(WorldToObject3x4_2, "world_to_object_3x4_2", Vec4, I | A | C,                              \
-    "transpose(gl_WorldToObjectEXT)[2]", "gl_WorldToObject3x4EXT[2]")                          \
-  X(AttributeWord, "attribute.word<i>", Uint, A | C, nullptr,                                  \
-    "word i (0..5) of the hit attribute (pipeline.hit_attribute.words), as the intersection "  \
-    "shader reported it; hit groups with an intersection shader only")                         \
-  X(CallWord, "call.word<i>", Uint, K, nullptr,                                                \
-    "word i (0..51) of the incoming callable data, within its type's pipeline.callable_data "  \
-    "words")                                                                                   \
-  X(CalleeWord, "callee.word<i>", Uint, R | C | M | K, nullptr,                                \
+#define RAYSPEC_BUILTINS(X)                                                                        \
+  X(LaunchX, "launch_id_x", Uint, kAllStages, "gl_LaunchIDEXT.x", "gl_LaunchIDEXT.x",              \
+    "x of gl_LaunchIDEXT")                                                                         \
+  X(LaunchY, "launch_id_y", Uint, kAllStages, "gl_LaunchIDEXT.y", "gl_LaunchIDEXT.y",              \
+    "y of gl_LaunchIDEXT")                                                                         \
+  X(LaunchW, "launch_size_x", Uint, kAllStages, "gl_LaunchSizeEXT.x", "gl_LaunchSizeEXT.x",        \
+    "x of gl_LaunchSizeEXT")                                                                       \
+  X(LaunchH, "launch_size_y", Uint, kAllStages, "gl_LaunchSizeEXT.y", "gl_LaunchSizeEXT.y",        \
+    "y of gl_LaunchSizeEXT")                                                                       \
+  X(LaunchZ, "launch_id_z", Uint, kAllStages, "gl_LaunchIDEXT.z", "gl_LaunchIDEXT.z",              \
+    "z of gl_LaunchIDEXT (rays.launch)")                                                           \
+  X(LaunchD, "launch_size_z", Uint, kAllStages, "gl_LaunchSizeEXT.z", "gl_LaunchSizeEXT.z",        \
+    "z of gl_LaunchSizeEXT (rays.launch)")                                                         \
+  X(Primitive, "primitive_id", Uint, I | A | C, "uint(gl_PrimitiveID)",                            \
+    "uint(rayQueryGetIntersectionPrimitiveIndexEXT(rs_rq, $c))", "gl_PrimitiveID")                 \
+  X(Instance, "instance_id", Uint, I | A | C, "uint(gl_InstanceID)",                               \
+    "uint(rayQueryGetIntersectionInstanceIdEXT(rs_rq, $c))", "gl_InstanceID")                      \
+  X(CustomIndex, "instance_custom_index", Uint, I | A | C, "uint(gl_InstanceCustomIndexEXT)",      \
+    "uint(rayQueryGetIntersectionInstanceCustomIndexEXT(rs_rq, $c))", "gl_InstanceCustomIndexEXT") \
+  X(Geometry, "geometry_index", Uint, I | A | C, "uint(gl_GeometryIndexEXT)",                      \
+    "uint(rayQueryGetIntersectionGeometryIndexEXT(rs_rq, $c))", "gl_GeometryIndexEXT")             \
+  X(HitKind, "hit_kind", Uint, A | C, "gl_HitKindEXT", "rs_hit_kind", "gl_HitKindEXT")             \
+  X(HitT, "hit_t", Float, A | C, "gl_RayTmaxEXT", "rs_hit_t",                                      \
+    "gl_HitTEXT: in any-hit the candidate's t, in closest-hit the hit's t")                        \
+  X(Hit, "hit", Uint, C | M, nullptr, nullptr, "1 in closest-hit, 0 in miss")                      \
+  X(Barycentrics, "barycentrics", Vec2, A | C, "rs_attr", "rs_attr",                               \
+    "the hit attribute: triangle barycentrics (b1, b2), or what the intersection shader reported") \
+  X(AabbMin, "aabb_min", Vec3, I, "rs_aabb_min()", "rs_aabb_min()",                                \
+    "min corner of the primitive's AABB (object space)")                                           \
+  X(AabbMax, "aabb_max", Vec3, I, "rs_aabb_max()", "rs_aabb_max()",                                \
+    "max corner of the primitive's AABB (object space)")                                           \
+  X(ObjectOrigin, "object_ray_origin", Vec3, I | A | C, "gl_ObjectRayOriginEXT",                   \
+    "rayQueryGetIntersectionObjectRayOriginEXT(rs_rq, $c)", "gl_ObjectRayOriginEXT")               \
+  X(ObjectDirection, "object_ray_direction", Vec3, I | A | C, "gl_ObjectRayDirectionEXT",          \
+    "rayQueryGetIntersectionObjectRayDirectionEXT(rs_rq, $c)", "gl_ObjectRayDirectionEXT")         \
+  X(Tmin, "ray_tmin", Float, I | A | C | M, "gl_RayTminEXT", "rayQueryGetRayTMinEXT(rs_rq)",       \
+    "gl_RayTminEXT")                                                                               \
+  X(Tmax, "ray_tmax", Float, I | A | C | M, "gl_RayTmaxEXT", nullptr, "gl_RayTmaxEXT")             \
+  X(Flags, "incoming_ray_flags", Uint, I | A | C | M, "gl_IncomingRayFlagsEXT", "rs_q_flags",      \
+    "gl_IncomingRayFlagsEXT")                                                                      \
+  X(WorldOrigin, "world_ray_origin", Vec3, I | A | C | M, "gl_WorldRayOriginEXT",                  \
+    "rayQueryGetWorldRayOriginEXT(rs_rq)", "gl_WorldRayOriginEXT")                                 \
+  X(WorldDirection, "world_ray_direction", Vec3, I | A | C | M, "gl_WorldRayDirectionEXT",         \
+    "rayQueryGetWorldRayDirectionEXT(rs_rq)", "gl_WorldRayDirectionEXT")                           \
+  X(HitPosition, "hit_position", Vec3, A | C,                                                      \
+    "(gl_WorldRayOriginEXT + gl_RayTmaxEXT * gl_WorldRayDirectionEXT)",                            \
+    "(rayQueryGetWorldRayOriginEXT(rs_rq) + rs_hit_t * rayQueryGetWorldRayDirectionEXT(rs_rq))",   \
+    "world ray origin + hit_t * world ray direction")                                              \
+  X(PayloadColor, "payload.color", Vec4, M | C | A | R, "payload.color", "payload.color",          \
+    "color of the incoming payload; in raygen the payload of its last trace")                      \
+  X(PayloadValue, "payload.value", Uint, M | C | A | R, "payload.value", "payload.value",          \
+    "value of the incoming payload; in raygen the payload of its last trace")                      \
+  X(Depth, "depth", Uint, M | C | A, "payload.depth", "payload.depth",                             \
+    "trace depth: 1 for a trace from raygen, +1 per nested trace")                                 \
+  X(ChildColor, "child.color", Vec4, C | M, "child.color", "child.color",                          \
+    "color of the payload of this stage's last trace")                                             \
+  X(ChildValue, "child.value", Uint, C | M, "child.value", "child.value",                          \
+    "value of the payload of this stage's last trace")                                             \
+  X(CallPosition, "call.position", Vec3, K, "call.position", "call.position",                      \
+    "position of the incoming callable data")                                                      \
+  X(CallNormal, "call.normal", Vec3, K, "call.normal", "call.normal",                              \
+    "normal of the incoming callable data")                                                        \
+  X(CallColor, "call.color", Vec4, K, "call.color", "call.color",                                  \
+    "color of the incoming callable data")                                                         \
+  X(CallValue, "call.value", Uint, K, "call.value", "call.value",                                  \
+    "value of the incoming callable data")                                                         \
+  X(CalleeColor, "callee.color", Vec4, R | C | M | K, "callee.color", "callee.color",              \
+    "color of the callable data after this stage's last call")                                     \
+  X(CalleeValue, "callee.value", Uint, R | C | M | K, "callee.value", "callee.value",              \
+    "value of the callable data after this stage's last call")                                     \
+  X(PayloadWord, "payload.word<i>", Uint, M | C | A | R, nullptr, nullptr,                         \
+    "word i (0..57) of the incoming payload, within its type's pipeline.payloads words; in "       \
+    "raygen the payload of its last trace (0 beyond that trace's type)")                           \
+  X(ChildWord, "child.word<i>", Uint, C | M, nullptr, nullptr,                                     \
+    "word i of the payload of this stage's last trace (0 beyond that trace's type)")               \
+  X(CullMask, "cull_mask", Uint, I | A | C | M, "(gl_CullMaskEXT & 0xFFu)",                        \
+    "(rs_q_cull_mask & 0xFFu)",                                                                    \
+    "gl_CullMaskEXT & 0xFF: the low 8 bits of the cull mask the trace passed, the bits every "     \
+    "reading of the specification agrees on (VK_KHR_ray_tracing_maintenance1; NotSupported "       \
+    "without it)")                                                                                 \
+  X(Vertex0, "vertex_position0", Vec3, A | C, "rs_hit_positions[0]", nullptr,                      \
+    "gl_HitTriangleVertexPositionsEXT[0]: the hit triangle's first vertex in object space, "       \
+    "through the geometry transform (VK_KHR_ray_tracing_position_fetch; triangle hits only)")      \
+  X(Vertex1, "vertex_position1", Vec3, A | C, "rs_hit_positions[1]", nullptr,                      \
+    "gl_HitTriangleVertexPositionsEXT[1]: the hit triangle's second vertex (as vertex_position0)") \
+  X(Vertex2, "vertex_position2", Vec3, A | C, "rs_hit_positions[2]", nullptr,                      \
+    "gl_HitTriangleVertexPositionsEXT[2]: the hit triangle's third vertex (as vertex_position0)")  \
+  X(ObjectToWorld0, "object_to_world0", Vec3, I | A | C, "gl_ObjectToWorldEXT[0]",                 \
+    "rayQueryGetIntersectionObjectToWorldEXT(rs_rq, $c)[0]",                                       \
+    "gl_ObjectToWorldEXT[0]: column 0 of the instance's object-to-world matrix (4 columns of 3; "  \
+    "object_to_world1..3 the others, 3 the translation)")                                          \
+  X(ObjectToWorld1, "object_to_world1", Vec3, I | A | C, "gl_ObjectToWorldEXT[1]",                 \
+    "rayQueryGetIntersectionObjectToWorldEXT(rs_rq, $c)[1]", "gl_ObjectToWorldEXT[1]")             \
+  X(ObjectToWorld2, "object_to_world2", Vec3, I | A | C, "gl_ObjectToWorldEXT[2]",                 \
+    "rayQueryGetIntersectionObjectToWorldEXT(rs_rq, $c)[2]", "gl_ObjectToWorldEXT[2]")             \
+  X(ObjectToWorld3, "object_to_world3", Vec3, I | A | C, "gl_ObjectToWorldEXT[3]",                 \
+    "rayQueryGetIntersectionObjectToWorldEXT(rs_rq, $c)[3]", "gl_ObjectToWorldEXT[3]")             \
+  X(ObjectToWorld3x4_0, "object_to_world_3x4_0", Vec4, I | A | C,                                  \
+    "transpose(gl_ObjectToWorldEXT)[0]",                                                           \
+    "transpose(rayQueryGetIntersectionObjectToWorldEXT(rs_rq, $c))[0]",                            \
+    "gl_ObjectToWorld3x4EXT[0]: row 0 of the 3x4 object-to-world matrix (_1, _2 the others)")      \
+  X(ObjectToWorld3x4_1, "object_to_world_3x4_1", Vec4, I | A | C,                                  \
+    "transpose(gl_ObjectToWorldEXT)[1]",                                                           \
+    "transpose(rayQueryGetIntersectionObjectToWorldEXT(rs_rq, $c))[1]",                            \
+    "gl_ObjectToWorld3x4EXT[1]")                                                                   \
+  X(ObjectToWorld3x4_2, "object_to_world_3x4_2", Vec4, I | A | C,                                  \
+    "transpose(gl_ObjectToWorldEXT)[2]",                                                           \
+    "transpose(rayQueryGetIntersectionObjectToWorldEXT(rs_rq, $c))[2]",                            \
+    "gl_ObjectToWorld3x4EXT[2]")                                                                   \
+  X(WorldToObject0, "world_to_object0", Vec3, I | A | C, "gl_WorldToObjectEXT[0]",                 \
+    "rayQueryGetIntersectionWorldToObjectEXT(rs_rq, $c)[0]",                                       \
+    "gl_WorldToObjectEXT[0]: column 0 of the inverse (world_to_object1..3 the others)")            \
+  X(WorldToObject1, "world_to_object1", Vec3, I | A | C, "gl_WorldToObjectEXT[1]",                 \
+    "rayQueryGetIntersectionWorldToObjectEXT(rs_rq, $c)[1]", "gl_WorldToObjectEXT[1]")             \
+  X(WorldToObject2, "world_to_object2", Vec3, I | A | C, "gl_WorldToObjectEXT[2]",                 \
+    "rayQueryGetIntersectionWorldToObjectEXT(rs_rq, $c)[2]", "gl_WorldToObjectEXT[2]")             \
+  X(WorldToObject3, "world_to_object3", Vec3, I | A | C, "gl_WorldToObjectEXT[3]",                 \
+    "rayQueryGetIntersectionWorldToObjectEXT(rs_rq, $c)[3]", "gl_WorldToObjectEXT[3]")             \
+  X(WorldToObject3x4_0, "world_to_object_3x4_0", Vec4, I | A | C,                                  \
+    "transpose(gl_WorldToObjectEXT)[0]",                                                           \
+    "transpose(rayQueryGetIntersectionWorldToObjectEXT(rs_rq, $c))[0]",                            \
+    "gl_WorldToObject3x4EXT[0]: row 0 of the 3x4 world-to-object matrix (_1, _2 the others)")      \
+  X(WorldToObject3x4_1, "world_to_object_3x4_1", Vec4, I | A | C,                                  \
+    "transpose(gl_WorldToObjectEXT)[1]",                                                           \
+    "transpose(rayQueryGetIntersectionWorldToObjectEXT(rs_rq, $c))[1]",                            \
+    "gl_WorldToObject3x4EXT[1]")                                                                   \
+  X(WorldToObject3x4_2, "world_to_object_3x4_2", Vec4, I | A | C,                                  \
+    "transpose(gl_WorldToObjectEXT)[2]",                                                           \
+    "transpose(rayQueryGetIntersectionWorldToObjectEXT(rs_rq, $c))[2]",                            \
+    "gl_WorldToObject3x4EXT[2]")                                                                   \
+  X(AttributeWord, "attribute.word<i>", Uint, A | C, nullptr, nullptr,                             \
+    "word i (0..5) of the hit attribute (pipeline.hit_attribute.words), as the intersection "      \
+    "shader reported it; hit groups with an intersection shader only")                             \
+  X(CallWord, "call.word<i>", Uint, K, nullptr, nullptr,                                           \
+    "word i (0..51) of the incoming callable data, within its type's pipeline.callable_data "      \
+    "words")                                                                                       \
+  X(CalleeWord, "callee.word<i>", Uint, R | C | M | K, nullptr, nullptr,                           \
     "word i of the callable data after this stage's last call (0 beyond that call's type)")

@@ -34,8 +34,9 @@ struct BuiltinInfo {
   const char* name;
   ValueType type;
   StageMask stages;
-  const char* glsl;     // the GLSL a stage reads; nullptr: the emitter spells it
-  const char* meaning;  // one line, shown by `rayspec show` and in errors
+  const char* glsl;       // the GLSL a stage reads; nullptr: the emitter spells it
+  const char* ray_query;  // inlined in raygen ($c: committed); nullptr: word<i>, hit, vertices
+  const char* meaning;    // one line, shown by `rayspec show` and in errors
 };
 
 // Every built-in, in the order of program/builtin_table.h: kBi<Id>.

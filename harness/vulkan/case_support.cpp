@@ -94,6 +94,10 @@ void checkCaseSupport(const VulkanContext& ctx, const Case& c, const Plan& plan)
         "rays.command indirect2: the device lacks VK_KHR_ray_tracing_maintenance1's "
         "rayTracingPipelineTraceRaysIndirect2");
   if (plan.position_fetch) checkPositionFetch(ctx);
+  if (c.pipeline.ray_query && !ctx.ray_query)
+    throw NotSupportedError(
+        "traces by ray query (--through ray-query): the device lacks "
+        "VK_KHR_ray_query's rayQuery");
   if (c.pipeline.record_layout.declared() && c.pipeline.record_layout.scalar &&
       !d.scalar_block_layout)
     throw NotSupportedError(

@@ -1,5 +1,6 @@
 // Logical device: one compute-capable queue, the ray tracing extensions and
 // the features listed in vulkan_engine.h.
+#include <string_view>
 #include <vector>
 
 #include "vulkan/context.h"
@@ -43,6 +44,32 @@ void enableNewerFeatures(VulkanContext& ctx, VkPhysicalDeviceFeatures2& on,
   }
 }
 
+bool hasExtension(VkPhysicalDevice physical, const char* name) {
+  uint32_t count = 0;
+  vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, nullptr);
+  std::vector<VkExtensionProperties> all(count);
+  vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, all.data());
+  for (const VkExtensionProperties& e : all)
+    if (std::string_view(e.extensionName) == name) return true;
+  return false;
+}
+
+// Ray queries (Pipeline::ray_query) where the device has them.
+void enableRayQuery(VulkanContext& ctx, VkPhysicalDeviceFeatures2& on,
+                    VkPhysicalDeviceRayQueryFeaturesKHR& ray_query) {
+  if (!hasExtension(ctx.physical, VK_KHR_RAY_QUERY_EXTENSION_NAME)) return;
+  VkPhysicalDeviceRayQueryFeaturesKHR have{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
+  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  features.pNext = &have;
+  vkGetPhysicalDeviceFeatures2(ctx.physical, &features);
+  ctx.ray_query = have.rayQuery == VK_TRUE;
+  if (!ctx.ray_query) return;
+  ray_query.rayQuery = VK_TRUE;
+  ray_query.pNext = on.pNext;
+  on.pNext = &ray_query;
+}
+
 // The device extensions enabled: ray tracing, and the optional ones the
 // device has (describeDevice found them).
 std::vector<const char*> deviceExtensions(const VulkanContext& ctx) {
@@ -54,6 +81,7 @@ std::vector<const char*> deviceExtensions(const VulkanContext& ctx) {
     extensions.push_back(VK_KHR_RAY_TRACING_MAINTENANCE_1_EXTENSION_NAME);
   if (ctx.position_fetch) extensions.push_back(kPositionFetchExtension);
   if (ctx.library_group_handles) extensions.push_back(kLibraryGroupHandlesExtension);
+  if (ctx.ray_query) extensions.push_back(VK_KHR_RAY_QUERY_EXTENSION_NAME);
   // Its dependency synchronization2 is core from Vulkan 1.3.
   if (ctx.info.opacity_micromap && ctx.info.api_version_number >= VK_API_VERSION_1_3)
     extensions.push_back(VK_EXT_OPACITY_MICROMAP_EXTENSION_NAME);
@@ -119,6 +147,9 @@ void createDevice(VulkanContext& ctx) {
   PositionFetchFeatures position_fetch_on;
   LibraryGroupHandlesFeatures group_handles_on;
   enableNewerFeatures(ctx, on, position_fetch_on, group_handles_on);
+  VkPhysicalDeviceRayQueryFeaturesKHR ray_query_on{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
+  enableRayQuery(ctx, on, ray_query_on);
   ctx.primitive_culling = rt.rayTraversalPrimitiveCulling == VK_TRUE;
 
   const std::vector<const char*> extensions = deviceExtensions(ctx);

@@ -1,0 +1,339 @@
+#include "glsl/emit_ray_query.h"
+
+#include <string>
+
+#include "glsl/emit_call_data.h"
+#include "glsl/emit_payloads.h"
+#include "glsl/emit_stage.h"
+#include "glsl/emit_stmt.h"
+#include "program/builtins.h"
+#include "results/record_layout.h"
+
+namespace rayspec {
+namespace {
+
+std::string str(uint32_t v) {
+  return std::to_string(v);
+}
+
+// The one payload type (metamorphic/ray_query_path.h refuses several).
+std::string payloadType(const Case& c) {
+  return payloadTypeName(c.pipeline.payloadWords(0));
+}
+
+uint32_t attributeWords(const Pipeline& p, const HitGroup& h) {
+  return h.intersection ? p.attribute_words : 0;
+}
+
+std::string attributeType(uint32_t words) {
+  return words ? "RsAttr" : "vec2";
+}
+
+// The attribute a group's stages receive from barycentrics `bary` and, for a
+// procedural group, the words `words` (GLSL of a uint[N]).
+std::string attributeValue(uint32_t group_words, const std::string& bary,
+                           const std::string& words) {
+  return group_words ? "RsAttr(" + bary + ", " + words + ")" : bary;
+}
+
+std::string zeroWords(uint32_t n) {
+  std::string s = "uint[" + str(n) + "](";
+  for (uint32_t i = 0; i < n; ++i) s += i ? ", 0u" : "0u";
+  return s + ")";
+}
+
+// A built-in of the query's candidate (program/builtin_table.h).
+std::string candidate(const char* name) {
+  std::string s = findBuiltin(name)->ray_query;
+  s.replace(s.find("$c"), 2, "false");
+  return s;
+}
+
+bool anyHitRuns(const StageContext& raygen, const HitGroup& h) {
+  return h.any_hit && raygen.plan.any_hit;
+}
+
+bool intersectionRuns(const StageContext& raygen, const HitGroup& h) {
+  return h.intersection && raygen.plan.intersection;
+}
+
+StageContext inlinedContext(const StageContext& raygen, Stage stage, uint32_t index,
+                            const Program& program, uint32_t words) {
+  StageContext ctx{raygen.c, raygen.plan, stage, Pipeline::shaderName(stage, index),
+                   findStageUses(program, stage, raygen.plan)};
+  ctx.attribute_words = words;
+  ctx.inlined = true;
+  ctx.group = index;
+  return ctx;
+}
+
+// An inlined program's function: its stage's run count and any-hit slot as
+// the stage's main() has them, zero child and callee data, then the program.
+void inlinedBody(const StageContext& ctx, const Program& program, GlslWriter& out) {
+  if (ctx.plan.records)
+    out.line("rs_bump_runs(" + fieldOffsetMacro(stageRunsField(ctx.stage)) + ");");
+  if (ctx.plan.records && ctx.stage == Stage::AnyHit)
+    out.line("rs_mark_any_hit(" + fieldOffsetMacro("any_hit_slots") + ", " +
+             fieldOffsetMacro("any_hit_repeats") + ", (" + candidate("instance_id") + " * " +
+             str(kAnyHitSlotInstanceFactor) + "u + " + candidate("geometry_index") + " * " +
+             str(kAnyHitSlotGeometryFactor) + "u + " + candidate("primitive_id") + ") & 31u);");
+  if (ctx.uses.reads_child) {
+    out.line(payloadTypeName(ctx.c.pipeline.maxPayloadWords()) + " child;");
+    emitPayloadStart(ctx, out);
+  }
+  if (ctx.uses.call || ctx.uses.reads_callee) {
+    out.line(callDataTypeName(ctx.c.pipeline.maxCallDataWords()) + " callee;");
+    emitCallDataStart(ctx, out);
+  }
+  emitProgram(program, ctx, out);
+}
+
+// The query and what the loop keeps: the trace's arguments the inlined
+// programs read, and the attribute and kind of a generated intersection.
+void queryState(const StageContext& raygen, GlslWriter& out) {
+  const uint32_t words = raygen.c.pipeline.attribute_words;
+  out.line("");
+  out.line("// ---- the ray query and its state (glsl/emit_ray_query.h) ----");
+  out.line("const uint kRsIgnore = 0u, kRsAccept = 1u, kRsTerminate = 2u;  // any-hit verdicts");
+  out.line("uint rs_q_flags, rs_q_cull_mask, rs_q_sbt_offset, rs_q_sbt_stride;");
+  out.line("float rs_q_tmax;");
+  out.line("bool rs_q_done;  // an any-hit terminated inside a report");
+  out.line("uint rs_c_kind;  // the committed generated intersection's kind and attribute");
+  out.line("vec2 rs_c_bary;");
+  if (words) {
+    out.line("struct RsAttr { vec2 bary; uint words[" + str(words) + "]; };");
+    out.line("uint rs_c_words[" + str(words) + "];");
+  }
+  out.open("float rs_current_tmax() {  // gl_RayTmaxEXT in an intersection shader");
+  out.line(
+      "return rayQueryGetIntersectionTypeEXT(rs_rq, true) == "
+      "gl_RayQueryCommittedIntersectionNoneEXT ? rs_q_tmax : "
+      "rayQueryGetIntersectionTEXT(rs_rq, true);");
+  out.close();
+}
+
+// The group of the candidate's or committed intersection's hit record
+// (R-SBT-HIT), 0xFFFFFFFF for an all-zero record or one beyond the region;
+// rs_hit_group_of(c) calls it with the query's values (c: committed, a
+// constant, as the getters want).
+void hitGroupFunction(const Pipeline& p, GlslWriter& out) {
+  out.open("uint rs_hit_group(uint instance_offset, uint geometry) {");
+  out.line(
+      "const uint record = (instance_offset & 0xFFFFFFu) + geometry * (rs_q_sbt_stride & "
+      "0xFu) + (rs_q_sbt_offset & 0xFu);");
+  out.open("switch (record) {");
+  const size_t records = p.sbt_hit.empty() ? p.hit_groups.size() : p.sbt_hit.size();
+  for (size_t r = 0; r < records; ++r) {
+    const std::optional<uint32_t> g =
+        p.sbt_hit.empty() ? std::optional<uint32_t>(r) : p.sbt_hit[r].group;
+    if (g) out.line("case " + str(static_cast<uint32_t>(r)) + "u: return " + str(*g) + "u;");
+  }
+  out.line("default: break;");
+  out.close();
+  out.line("return 0xFFFFFFFFu;");
+  out.close();
+  out.line(
+      "#define rs_hit_group_of(c) rs_hit_group("
+      "rayQueryGetIntersectionInstanceShaderBindingTableRecordOffsetEXT(rs_rq, c), "
+      "uint(rayQueryGetIntersectionGeometryIndexEXT(rs_rq, c)))");
+}
+
+// A procedural group's report: the reported t in [tmin, committed t], the
+// any-hit's verdict (none for an opaque box), then the generated intersection.
+void reportFunction(const StageContext& raygen, uint32_t g, GlslWriter& out) {
+  const HitGroup& h = raygen.c.pipeline.hit_groups[g];
+  const uint32_t words = attributeWords(raygen.c.pipeline, h);
+  out.open("bool rs_report_" + str(g) + "(inout " + payloadType(raygen.c) +
+           " rs_ah_payload, float rs_t, uint rs_kind, " + attributeType(words) + " rs_attr) {");
+  out.line("if (rs_t < rayQueryGetRayTMinEXT(rs_rq) || rs_t > rs_current_tmax()) return false;");
+  out.line("uint rs_verdict = kRsAccept;");
+  if (anyHitRuns(raygen, h))
+    out.line("if (!rayQueryGetIntersectionCandidateAABBOpaqueEXT(rs_rq)) rs_verdict = rs_any_hit_" +
+             str(g) + "(rs_ah_payload, rs_attr, rs_t, rs_kind);");
+  out.line("if (rs_verdict == kRsIgnore) return false;");
+  out.line("rayQueryGenerateIntersectionEXT(rs_rq, rs_t);");
+  out.line("rs_c_kind = rs_kind;");
+  out.line(words ? "rs_c_bary = rs_attr.bary;" : "rs_c_bary = rs_attr;");
+  if (words) out.line("rs_c_words = rs_attr.words;");
+  out.open(
+      "if (rs_verdict == kRsTerminate || (rs_q_flags & gl_RayFlagsTerminateOnFirstHitEXT) != 0u) "
+      "{");
+  out.line("rayQueryTerminateEXT(rs_rq);");
+  out.line("rs_q_done = true;");
+  out.close();
+  out.line("return true;");
+  out.close();
+}
+
+// Group g's any-hit, report, intersection and closest-hit functions.
+void hitGroupFunctions(const StageContext& raygen, uint32_t g, GlslWriter& out) {
+  const HitGroup& h = raygen.c.pipeline.hit_groups[g];
+  const uint32_t words = attributeWords(raygen.c.pipeline, h);
+  const std::string payload = "inout " + payloadType(raygen.c) + " payload";
+  const std::string hit_args =
+      payload + ", " + attributeType(words) + " rs_attr, float rs_hit_t, uint rs_hit_kind) {";
+  if (anyHitRuns(raygen, h)) {
+    out.open("uint rs_any_hit_" + str(g) + "(" + hit_args);
+    inlinedBody(inlinedContext(raygen, Stage::AnyHit, g, *h.any_hit, words), *h.any_hit, out);
+    out.line("return kRsAccept;");
+    out.close();
+  }
+  if (intersectionRuns(raygen, h)) {
+    reportFunction(raygen, g, out);
+    out.open("void rs_intersection_" + str(g) + "(inout " + payloadType(raygen.c) +
+             " rs_ah_payload) {");
+    out.line(attributeType(words) +
+             " rs_attr = " + attributeValue(words, "vec2(0.0)", zeroWords(words)) + ";");
+    inlinedBody(inlinedContext(raygen, Stage::Intersection, g, *h.intersection, words),
+                *h.intersection, out);
+    out.close();
+  }
+  if (h.closest_hit) {
+    out.open("void rs_closest_hit_" + str(g) + "(" + hit_args);
+    inlinedBody(inlinedContext(raygen, Stage::ClosestHit, g, *h.closest_hit, words), *h.closest_hit,
+                out);
+    out.close();
+  }
+}
+
+// A switch over the hit groups that have `has`, each case `call(g)`.
+template <typename Has, typename Call>
+void groupSwitch(const StageContext& ctx, const std::string& on, Has has, Call call,
+                 GlslWriter& out) {
+  out.open("switch (" + on + ") {");
+  const std::vector<HitGroup>& groups = ctx.c.pipeline.hit_groups;
+  for (uint32_t g = 0; g < groups.size(); ++g)
+    if (has(groups[g])) out.line("case " + str(g) + "u: " + call(g) + " break;");
+  out.line("default: break;");
+  out.close();
+}
+
+// The loop: each candidate decided by its group's any-hit or intersection.
+void candidateLoop(const StageContext& ctx, const std::string& payload, GlslWriter& out) {
+  const Pipeline& p = ctx.c.pipeline;
+  out.open("while (rayQueryProceedEXT(rs_rq)) {");
+  out.line("const uint rs_group = rs_hit_group_of(false);");
+  out.open(
+      "if (rayQueryGetIntersectionTypeEXT(rs_rq, false) == "
+      "gl_RayQueryCandidateIntersectionTriangleEXT) {");
+  out.line("const vec2 rs_bary = rayQueryGetIntersectionBarycentricsEXT(rs_rq, false);");
+  out.line("const float rs_t = rayQueryGetIntersectionTEXT(rs_rq, false);");
+  out.line(
+      "const uint rs_kind = rayQueryGetIntersectionFrontFaceEXT(rs_rq, false) ? 0xFEu : "
+      "0xFFu;");
+  out.line("uint rs_verdict = kRsAccept;");
+  groupSwitch(
+      ctx, "rs_group", [&](const HitGroup& h) { return anyHitRuns(ctx, h); },
+      [&](uint32_t g) {
+        const uint32_t words = attributeWords(p, p.hit_groups[g]);
+        return "rs_verdict = rs_any_hit_" + str(g) + "(" + payload + ", " +
+               attributeValue(words, "rs_bary", zeroWords(words)) + ", rs_t, rs_kind);";
+      },
+      out);
+  out.line("if (rs_verdict != kRsIgnore) rayQueryConfirmIntersectionEXT(rs_rq);");
+  out.line("if (rs_verdict == kRsTerminate) rayQueryTerminateEXT(rs_rq);");
+  out.reopen("} else {");
+  groupSwitch(
+      ctx, "rs_group", [&](const HitGroup& h) { return intersectionRuns(ctx, h); },
+      [&](uint32_t g) { return "rs_intersection_" + str(g) + "(" + payload + ");"; }, out);
+  out.close();
+  out.close();
+}
+
+// After the loop: the committed intersection's closest-hit, or the miss.
+void committedStage(const StageContext& ctx, const std::string& payload, GlslWriter& out) {
+  const Pipeline& p = ctx.c.pipeline;
+  out.line("const uint rs_committed = rayQueryGetIntersectionTypeEXT(rs_rq, true);");
+  out.open("if (rs_committed == gl_RayQueryCommittedIntersectionNoneEXT) {");
+  out.open("switch (rs_miss & 0xFFFFu) {  // R-SBT-MISS: the low 16 bits");
+  const size_t records = p.sbt_miss.empty() ? p.miss.size() : p.sbt_miss.size();
+  for (size_t r = 0; r < records; ++r) {
+    const std::optional<uint32_t> m =
+        p.sbt_miss.empty() ? std::optional<uint32_t>(r) : p.sbt_miss[r].group;
+    if (m && *m < p.miss.size())
+      out.line("case " + str(static_cast<uint32_t>(r)) + "u: rs_miss_" + str(*m) + "(" + payload +
+               "); break;");
+  }
+  out.line("default: break;");
+  out.close();
+  out.reopen("} else if ((rs_flags & gl_RayFlagsSkipClosestHitShaderEXT) == 0u) {");
+  out.line("const uint rs_group = rs_hit_group_of(true);");
+  out.line("const float rs_t = rayQueryGetIntersectionTEXT(rs_rq, true);");
+  out.line("const bool rs_triangle = rs_committed == gl_RayQueryCommittedIntersectionTriangleEXT;");
+  out.line(
+      "const vec2 rs_bary = rs_triangle ? rayQueryGetIntersectionBarycentricsEXT(rs_rq, true) "
+      ": rs_c_bary;");
+  out.line(
+      "const uint rs_kind = rs_triangle ? (rayQueryGetIntersectionFrontFaceEXT(rs_rq, true) ? "
+      "0xFEu : 0xFFu) : rs_c_kind;");
+  groupSwitch(
+      ctx, "rs_group", [](const HitGroup& h) { return h.closest_hit.has_value(); },
+      [&](uint32_t g) {
+        const uint32_t words = attributeWords(p, p.hit_groups[g]);
+        const std::string w = words ? "rs_triangle ? " + zeroWords(words) + " : rs_c_words" : "";
+        return "rs_closest_hit_" + str(g) + "(" + payload + ", " +
+               attributeValue(words, "rs_bary", w) + ", rs_t, rs_kind);";
+      },
+      out);
+  out.close();
+}
+
+}  // namespace
+
+void addInlinedUses(StageContext& raygen) {
+  const Pipeline& p = raygen.c.pipeline;
+  auto add = [&](Stage stage, const Program& program) {
+    const StageUses u = findStageUses(program, stage, raygen.plan);
+    StageUses& r = raygen.uses;
+    r.counters = r.counters || u.counters;
+    r.record_fields.insert(u.record_fields.begin(), u.record_fields.end());
+    if (raygen.plan.records) r.record_fields.insert(recordFieldIndex(stageRunsField(stage)));
+    r.call = r.call || u.call;
+    r.call_locations.insert(u.call_locations.begin(), u.call_locations.end());
+    r.scene = r.scene || u.scene;
+    r.sphere = r.sphere || u.sphere;
+  };
+  for (const Program& m : p.miss) add(Stage::Miss, m);
+  for (const HitGroup& h : p.hit_groups) {
+    if (h.closest_hit) add(Stage::ClosestHit, *h.closest_hit);
+    if (anyHitRuns(raygen, h)) add(Stage::AnyHit, *h.any_hit);
+    if (intersectionRuns(raygen, h)) add(Stage::Intersection, *h.intersection);
+  }
+  if (raygen.plan.records)
+    for (const char* f : {"any_hit_slots", "any_hit_repeats"})
+      raygen.uses.record_fields.insert(recordFieldIndex(f));
+}
+
+void emitInlinedStages(const StageContext& raygen, GlslWriter& out) {
+  const Pipeline& p = raygen.c.pipeline;
+  queryState(raygen, out);
+  hitGroupFunction(p, out);
+  out.line("");
+  out.line("// ---- the hit group and miss programs, inlined ----");
+  for (uint32_t g = 0; g < p.hit_groups.size(); ++g) hitGroupFunctions(raygen, g, out);
+  for (uint32_t m = 0; m < p.miss.size(); ++m) {
+    out.open("void rs_miss_" + str(m) + "(inout " + payloadType(raygen.c) + " payload) {");
+    inlinedBody(inlinedContext(raygen, Stage::Miss, m, p.miss[m], 0), p.miss[m], out);
+    out.close();
+  }
+}
+
+void emitRayQueryTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
+  const std::string tlas =
+      ctx.c.scene.tlasCount() > 1 ? "rs_tlas[" + str(s.trace.tlas) + "]" : std::string("rs_tlas");
+  const std::string payload = outgoingPayload(s.trace.location);
+  out.line("rs_q_flags = rs_flags;");
+  out.line("rs_q_cull_mask = rs_cull_mask;");
+  out.line("rs_q_sbt_offset = rs_sbt_offset;");
+  out.line("rs_q_sbt_stride = rs_sbt_stride;");
+  out.line("rs_q_tmax = rs_tmax;");
+  out.line("rs_q_done = false;");
+  // skip_closest_hit is the loop's to honour, not the query's.
+  out.line("rayQueryInitializeEXT(rs_rq, " + tlas +
+           ", rs_flags & ~gl_RayFlagsSkipClosestHitShaderEXT, rs_cull_mask, rs_origin, rs_tmin, "
+           "rs_direction, rs_tmax);");
+  candidateLoop(ctx, payload, out);
+  committedStage(ctx, payload, out);
+}
+
+}  // namespace rayspec
