@@ -6,10 +6,13 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "cli_helpers.h"
+#include "vulkan/device_info_fields.h"
 
 namespace {
 namespace fs = std::filesystem;
@@ -40,20 +43,46 @@ std::string brokenManifest(const std::string& dir) {
   return path;
 }
 
+// What `rayspec devices` printed of one manifest: from its "ICD" line to the
+// next; "" when it printed none.
+std::string manifestBlock(const std::string& log, const std::string& manifest) {
+  const size_t at = log.find("ICD " + manifest + " ");
+  if (at == std::string::npos) return {};
+  return log.substr(at, log.find("\nICD ", at + 1) - at);
+}
+
 TEST(Icd, DevicesListsLavapipeUsableWithItsManifest) {
   const std::string lvp = lavapipeManifest();
   ASSERT_FALSE(lvp.empty()) << "lavapipe is not installed";
   const std::string out = fresh("icd-devices");
   EXPECT_EQ(sh(kBin + " devices", out + "/log"), 0);
   const std::string log = slurp(out + "/log");
-  const size_t at = log.find("ICD " + lvp + " ");
-  ASSERT_NE(at, std::string::npos) << log;
-  const std::string block = log.substr(at, log.find("\nICD ", at + 1) - at);
+  const std::string block = manifestBlock(log, lvp);
+  ASSERT_FALSE(block.empty()) << log;
   EXPECT_NE(block.find("llvmpipe"), std::string::npos) << block;
   EXPECT_NE(block.find(": USABLE"), std::string::npos) << block;
   EXPECT_NE(block.find("select: --icd " + lvp + " --device 'llvmpipe"), std::string::npos) << block;
   EXPECT_NE(block.find("maxRayRecursionDepth"), std::string::npos) << block;
   EXPECT_NE(log.find("usable device"), std::string::npos) << log;
+}
+
+// Every labelled row of vulkan/device_info_fields.h is a line of a usable
+// device's limits, scalarBlockLayout among them (lavapipe has it).
+TEST(Icd, DevicesPrintsEveryLimitOfTheFieldList) {
+  const std::string lvp = lavapipeManifest();
+  ASSERT_FALSE(lvp.empty()) << "lavapipe is not installed";
+  const std::string out = fresh("icd-devices-limits");
+  EXPECT_EQ(sh(kBin + " devices --icd " + lvp, out + "/log"), 0);
+  const std::string block = manifestBlock(slurp(out + "/log"), lvp);
+  ASSERT_NE(block.find(": USABLE"), std::string::npos) << block;
+  std::vector<std::string> labels;
+#define RAYSPEC_DEVICE_INFO_LABEL(type, member, key, label, ...) \
+  if (const char* l = label) labels.push_back(l);
+  RAYSPEC_DEVICE_INFO_FIELDS(RAYSPEC_DEVICE_INFO_LABEL)
+#undef RAYSPEC_DEVICE_INFO_LABEL
+  for (const std::string& label : labels)
+    EXPECT_NE(block.find("\n        " + label + " "), std::string::npos) << label << "\n" << block;
+  EXPECT_TRUE(std::regex_search(block, std::regex("\n        scalarBlockLayout +yes\n"))) << block;
 }
 
 TEST(Icd, RunOnLavapipeByItsManifest) {

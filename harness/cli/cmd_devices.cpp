@@ -24,29 +24,36 @@ std::string shellWord(const std::string& s) {
   return q + "'";
 }
 
+// A value of DeviceInfo as `rayspec devices` prints it.
+std::string deviceValueText(uint32_t v) {
+  return std::to_string(v);
+}
+std::string deviceValueText(bool v) {
+  return v ? "yes" : "no";
+}
+std::string deviceValueText(const std::string& v) {
+  return v;
+}
+std::string deviceValueText(const DeviceLaunchSize& v) {
+  return std::to_string(v[0]) + " x " + std::to_string(v[1]) + " x " + std::to_string(v[2]);
+}
+std::string deviceValueText(const std::vector<std::string>& v) {
+  std::string text;
+  for (const std::string& s : v) text += (text.empty() ? "" : " ") + s;
+  return text.empty() ? "none" : text;
+}
+
+// One line of the limits; none for a field without a label.
+void printDeviceField(const char* label, const std::string& value) {
+  if (label) std::printf("        %-30s %s\n", label, value.c_str());
+}
+
+// The rows of vulkan/device_info_fields.h that have a label, in its order.
 void printLimits(const DeviceInfo& d) {
-  std::printf("        shaderGroupHandleSize          %u\n", d.shader_group_handle_size);
-  std::printf("        shaderGroupHandleAlignment     %u\n", d.shader_group_handle_alignment);
-  std::printf("        shaderGroupBaseAlignment       %u\n", d.shader_group_base_alignment);
-  std::printf("        maxRayRecursionDepth           %u\n", d.max_ray_recursion_depth);
-  std::printf("        maxRayHitAttributeSize         %u\n", d.max_ray_hit_attribute_size);
-  std::printf("        maxShaderGroupStride           %u\n", d.max_shader_group_stride);
-  std::printf("        maxRayDispatchInvocationCount  %u\n", d.max_ray_dispatch_invocation_count);
-  std::printf("        accelerationStructureHostCommands %s\n",
-              d.acceleration_structure_host_commands ? "yes" : "no");
-  std::printf("        VK_KHR_pipeline_library        %s\n", d.pipeline_library ? "yes" : "no");
-  std::printf("        VK_EXT_opacity_micromap        %s\n", d.opacity_micromap ? "yes" : "no");
-  std::printf("        VK_KHR_ray_tracing_maintenance1 %s\n",
-              d.ray_tracing_maintenance1 ? "yes" : "no");
-  std::printf("        vkCmdTraceRaysIndirectKHR      %s\n", d.trace_rays_indirect ? "yes" : "no");
-  std::printf("        vkCmdTraceRaysIndirect2KHR     %s\n", d.trace_rays_indirect2 ? "yes" : "no");
-  std::printf("        VK_KHR_ray_tracing_position_fetch %s\n", d.position_fetch ? "yes" : "no");
-  std::printf("        VK_EXT_pipeline_library_group_handles %s\n",
-              d.library_group_handles ? "yes" : "no");
-  std::string formats;
-  for (const std::string& f : d.vertex_formats) formats += " " + f;
-  std::printf("        vertex formats (AS build)     %s\n",
-              formats.empty() ? " none" : formats.c_str());
+#define RAYSPEC_DEVICE_INFO_LINE(type, member, key, label, meaning) \
+  printDeviceField(label, deviceValueText(d.member));
+  RAYSPEC_DEVICE_INFO_FIELDS(RAYSPEC_DEVICE_INFO_LINE)
+#undef RAYSPEC_DEVICE_INFO_LINE
 }
 
 // One manifest's devices; returns how many are usable.

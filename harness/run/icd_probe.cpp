@@ -4,17 +4,9 @@
 
 #include <nlohmann/json.hpp>
 
-namespace rayspec {
+#include "run/device_info_json.h"
 
-NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(
-    DeviceInfo, index, name, driver_name, driver_info, api_version, api_version_number, device_uuid,
-    ray_tracing_extension, acceleration_structure_extension, ray_tracing_pipeline,
-    acceleration_structure, shader_group_handle_size, shader_group_handle_alignment,
-    shader_group_base_alignment, max_ray_recursion_depth, max_ray_hit_attribute_size,
-    max_shader_group_stride, max_ray_dispatch_invocation_count, max_image_dimension_2d,
-    max_storage_buffer_range, max_launch_size, acceleration_structure_host_commands,
-    pipeline_library, opacity_micromap, ray_tracing_maintenance1, trace_rays_indirect,
-    trace_rays_indirect2, position_fetch, library_group_handles, vertex_formats)
+namespace rayspec {
 
 namespace {
 
@@ -55,7 +47,9 @@ IcdProbe probeIcd(const IcdManifest& manifest, const ChildLimits& limits) {
         std::string why;
         if (devices.empty())
           why = noDeviceReason(manifest) + (listed ? "" : " (" + listed.error().format() + ")");
-        message = nlohmann::json{{"devices", devices}, {"why", why}}.dump();
+        nlohmann::json listed_json = nlohmann::json::array();
+        for (const DeviceInfo& d : devices) listed_json.push_back(deviceInfoJson(d));
+        message = nlohmann::json{{"devices", listed_json}, {"why", why}}.dump();
         return 0;
       },
       limits);
@@ -65,7 +59,10 @@ IcdProbe probeIcd(const IcdManifest& manifest, const ChildLimits& limits) {
   }
   const nlohmann::json j = nlohmann::json::parse(end.message, nullptr, false);
   try {
-    probe.devices = j.at("devices").get<std::vector<DeviceInfo>>();
+    std::vector<DeviceInfo> devices;
+    for (const nlohmann::json& d : j.at("devices").get<std::vector<nlohmann::json>>())
+      devices.push_back(deviceInfoFromJson(d));
+    probe.devices = std::move(devices);
     probe.failure = j.at("why").get<std::string>();
   } catch (const std::exception& e) {
     probe.failure = std::string("the probe of this driver answered nothing readable: ") + e.what();

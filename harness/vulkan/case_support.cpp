@@ -20,14 +20,14 @@ bool usesSkipRayFlags(const Rays& rays) {
   return false;
 }
 
-std::string sizeText(const uint64_t (&size)[3]) {
+std::string sizeText(const DeviceLaunchSize& size) {
   return std::to_string(size[0]) + " x " + std::to_string(size[1]) + " x " +
          std::to_string(size[2]);
 }
 
 // Each dimension within maxComputeWorkGroupCount * maxComputeWorkGroupSize.
 void checkLaunchSize(const DeviceInfo& d, const std::array<uint32_t, 3>& launch) {
-  const uint64_t size[3] = {launch[0], launch[1], launch[2]};
+  const DeviceLaunchSize size = {launch[0], launch[1], launch[2]};
   for (int k = 0; k < 3; ++k)
     if (size[k] > d.max_launch_size[k])
       throw NotSupportedError("launch " + sizeText(size) +

@@ -126,8 +126,11 @@ void readProperties(VkPhysicalDevice physical, DeviceInfo& d) {
   }
 }
 
-// Whether ray tracing pipelines and acceleration structures are enabled.
+// The features the device has: ray tracing pipelines and acceleration
+// structures (what rayspec needs) and the optional ones.
 void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
+  VkPhysicalDeviceVulkan12Features v12_features{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
   VkPhysicalDeviceRayTracingPipelineFeaturesKHR rt_features{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
   VkPhysicalDeviceAccelerationStructureFeaturesKHR as_features{
@@ -138,6 +141,8 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
   LibraryGroupHandlesFeatures group_handles;
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   void** next = &features.pNext;
+  const bool vk12 = d.api_version_number >= VK_API_VERSION_1_2;
+  if (vk12) chain(next, v12_features);
   if (d.ray_tracing_extension) chain(next, rt_features);
   if (d.acceleration_structure_extension) chain(next, as_features);
   if (d.ray_tracing_maintenance1) chain(next, maintenance1);
@@ -150,7 +155,7 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
     next = &group_handles.p_next;
   }
   vkGetPhysicalDeviceFeatures2(physical, &features);
-  const bool vk12 = d.api_version_number >= VK_API_VERSION_1_2;
+  d.scalar_block_layout = vk12 && v12_features.scalarBlockLayout;
   d.ray_tracing_pipeline = vk12 && d.ray_tracing_extension && rt_features.rayTracingPipeline;
   d.acceleration_structure =
       vk12 && d.acceleration_structure_extension && as_features.accelerationStructure;

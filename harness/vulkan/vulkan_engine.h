@@ -21,6 +21,7 @@
 #include "case/case.h"
 #include "plan/plan.h"
 #include "results/results.h"
+#include "vulkan/device_info_fields.h"
 
 namespace rayspec {
 
@@ -39,49 +40,12 @@ struct VulkanOptions {
 // starts the numbering afresh. Elsewhere one device serves every case.
 bool devicePerCase(const std::string& driver_name);
 
+// What rayspec knows of a physical device: a member per row of
+// vulkan/device_info_fields.h, which says what each holds.
 struct DeviceInfo {
-  uint32_t index = 0;  // position in vkEnumeratePhysicalDevices
-  std::string name, driver_name, driver_info, api_version;
-  uint32_t api_version_number = 0;  // VkPhysicalDeviceProperties::apiVersion
-  std::string device_uuid;          // deviceUUID-driverUUID in hex (Vulkan 1.1; "" below)
-  // The extensions (VK_KHR_acceleration_structure with
-  // VK_KHR_deferred_host_operations) ...
-  bool ray_tracing_extension = false, acceleration_structure_extension = false;
-  bool cpu =
-      false;  // VK_PHYSICAL_DEVICE_TYPE_CPU (lavapipe): the device's work is this machine's cores
-  // ... and the features on a Vulkan 1.2 device (what rayspec needs).
-  bool ray_tracing_pipeline = false, acceleration_structure = false;
-  uint32_t shader_group_handle_size = 0, shader_group_handle_alignment = 0,
-           shader_group_base_alignment = 0, max_ray_recursion_depth = 0,
-           max_ray_hit_attribute_size = 0, max_shader_group_stride = 0,
-           max_ray_dispatch_invocation_count = 0;
-  // Launch and binding limits a case's size meets (vkCmdTraceRaysKHR: each
-  // launch dimension at most maxComputeWorkGroupCount * maxComputeWorkGroupSize).
-  uint32_t max_image_dimension_2d = 0, max_storage_buffer_range = 0;
-  uint64_t max_launch_size[3] = {0, 0, 0};
-  bool acceleration_structure_host_commands = false;
-  // Optional features a case may need (NotSupported without them).
-  bool pipeline_library = false;  // VK_KHR_pipeline_library
-  bool opacity_micromap = false;  // VK_EXT_opacity_micromap (on a Vulkan 1.3 device)
-  // VK_KHR_ray_tracing_maintenance1 with its rayTracingMaintenance1 feature
-  // (gl_CullMaskEXT, the cull_mask built-in).
-  bool ray_tracing_maintenance1 = false;
-  // vkCmdTraceRaysIndirectKHR (rayTracingPipelineTraceRaysIndirect) and
-  // vkCmdTraceRaysIndirect2KHR (maintenance1's rayTracingPipelineTraceRaysIndirect2).
-  bool trace_rays_indirect = false, trace_rays_indirect2 = false;
-  // VK_KHR_ray_tracing_position_fetch with its rayTracingPositionFetch
-  // feature (gl_HitTriangleVertexPositionsEXT, the vertex_position<i> built-ins).
-  bool position_fetch = false;
-  // Vulkan 1.2's scalarBlockLayout (a scalar shader record block,
-  // pipeline.sbt.record_layout).
-  bool scalar_block_layout = false;
-  // VK_EXT_pipeline_library_group_handles with its pipelineLibraryGroupHandles
-  // feature (library group handles identical to the linked pipeline's).
-  bool library_group_handles = false;
-  // The vertex formats the device builds triangles from
-  // (ACCELERATION_STRUCTURE_VERTEX_BUFFER): rayspec's names (float3, half2,
-  // ...) for the formats a case may name, the VkFormat's name otherwise.
-  std::vector<std::string> vertex_formats;
+#define RAYSPEC_DEVICE_INFO_MEMBER(type, member, ...) type member{};
+  RAYSPEC_DEVICE_INFO_FIELDS(RAYSPEC_DEVICE_INFO_MEMBER)
+#undef RAYSPEC_DEVICE_INFO_MEMBER
 };
 
 // Every physical device the loader sees (with or without ray tracing).

@@ -1,0 +1,93 @@
+// The one list of what rayspec knows of a physical device. Everything else is
+// generated from it: the members of DeviceInfo (vulkan/vulkan_engine.h, each
+// value-initialised: 0, false, empty), the JSON a driver probe's child sends
+// its parent, both ways (run/device_info_json.h), and the limits `rayspec
+// devices` prints under a usable device (cli/cmd_devices.cpp), in this order.
+// What each member holds is read from the device in vulkan/device_select.cpp.
+//
+// X(type, member, "json key", "label", "meaning"):
+//   type: a type with no comma in it (an alias where it has one: DeviceLaunchSize);
+//   label: the name `rayspec devices` prints before the value, nullptr where
+//     it prints none (the name, driver and Vulkan version are in the device's
+//     heading line instead);
+//   meaning: what the value is, in a line.
+// The ray tracing properties are 0 without VK_KHR_ray_tracing_pipeline, and
+// the features false on a device below Vulkan 1.2 (rayspec needs 1.2). From
+// pipeline_library to library_group_handles, what a case may need and the
+// device may lack: such a case is NotSupported there.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rayspec {
+
+// Per launch dimension (x, y, z).
+using DeviceLaunchSize = std::array<uint64_t, 3>;
+
+}  // namespace rayspec
+
+#define RAYSPEC_DEVICE_INFO_FIELDS(X)                                                              \
+  X(uint32_t, index, "index", nullptr, "position in vkEnumeratePhysicalDevices")                   \
+  X(std::string, name, "name", nullptr, "deviceName")                                              \
+  X(std::string, driver_name, "driver_name", nullptr, "driverName (Vulkan 1.2; \"\" below)")       \
+  X(std::string, driver_info, "driver_info", nullptr, "driverInfo (Vulkan 1.2; \"\" below)")       \
+  X(std::string, api_version, "api_version", nullptr, "apiVersion as major.minor.patch")           \
+  X(uint32_t, api_version_number, "api_version_number", nullptr,                                   \
+    "VkPhysicalDeviceProperties::apiVersion")                                                      \
+  X(std::string, device_uuid, "device_uuid", nullptr,                                              \
+    "deviceUUID-driverUUID in hex (Vulkan 1.1; \"\" below)")                                       \
+  X(bool, ray_tracing_extension, "ray_tracing_extension", nullptr,                                 \
+    "VK_KHR_ray_tracing_pipeline is offered")                                                      \
+  X(bool, acceleration_structure_extension, "acceleration_structure_extension", nullptr,           \
+    "VK_KHR_acceleration_structure and VK_KHR_deferred_host_operations are offered")               \
+  X(bool, cpu, "cpu", nullptr,                                                                     \
+    "VK_PHYSICAL_DEVICE_TYPE_CPU (lavapipe): the device's work is this machine's cores")           \
+  X(bool, ray_tracing_pipeline, "ray_tracing_pipeline", nullptr,                                   \
+    "the rayTracingPipeline feature on a Vulkan 1.2 device")                                       \
+  X(bool, acceleration_structure, "acceleration_structure", nullptr,                               \
+    "the accelerationStructure feature on a Vulkan 1.2 device")                                    \
+  X(uint32_t, shader_group_handle_size, "shader_group_handle_size", "shaderGroupHandleSize",       \
+    "ray tracing pipeline property")                                                               \
+  X(uint32_t, shader_group_handle_alignment, "shader_group_handle_alignment",                      \
+    "shaderGroupHandleAlignment", "ray tracing pipeline property")                                 \
+  X(uint32_t, shader_group_base_alignment, "shader_group_base_alignment",                          \
+    "shaderGroupBaseAlignment", "ray tracing pipeline property")                                   \
+  X(uint32_t, max_ray_recursion_depth, "max_ray_recursion_depth", "maxRayRecursionDepth",          \
+    "ray tracing pipeline property")                                                               \
+  X(uint32_t, max_ray_hit_attribute_size, "max_ray_hit_attribute_size", "maxRayHitAttributeSize",  \
+    "ray tracing pipeline property")                                                               \
+  X(uint32_t, max_shader_group_stride, "max_shader_group_stride", "maxShaderGroupStride",          \
+    "ray tracing pipeline property")                                                               \
+  X(uint32_t, max_ray_dispatch_invocation_count, "max_ray_dispatch_invocation_count",              \
+    "maxRayDispatchInvocationCount", "ray tracing pipeline property")                              \
+  X(uint32_t, max_image_dimension_2d, "max_image_dimension_2d", nullptr,                           \
+    "maxImageDimension2D: the widest and tallest image a case may write")                          \
+  X(uint32_t, max_storage_buffer_range, "max_storage_buffer_range", nullptr,                       \
+    "maxStorageBufferRange: the largest buffer a case may bind")                                   \
+  X(DeviceLaunchSize, max_launch_size, "max_launch_size", nullptr,                                 \
+    "maxComputeWorkGroupCount * maxComputeWorkGroupSize: the largest vkCmdTraceRaysKHR launch")    \
+  X(bool, acceleration_structure_host_commands, "acceleration_structure_host_commands",            \
+    "accelerationStructureHostCommands", "the acceleration structure feature")                     \
+  X(bool, pipeline_library, "pipeline_library", "VK_KHR_pipeline_library",                         \
+    "VK_KHR_pipeline_library is offered")                                                          \
+  X(bool, opacity_micromap, "opacity_micromap", "VK_EXT_opacity_micromap",                         \
+    "VK_EXT_opacity_micromap is offered (rayspec enables it on Vulkan 1.3 only)")                  \
+  X(bool, ray_tracing_maintenance1, "ray_tracing_maintenance1", "VK_KHR_ray_tracing_maintenance1", \
+    "the extension with its rayTracingMaintenance1 feature (gl_CullMaskEXT, cull_mask)")           \
+  X(bool, trace_rays_indirect, "trace_rays_indirect", "vkCmdTraceRaysIndirectKHR",                 \
+    "rayTracingPipelineTraceRaysIndirect")                                                         \
+  X(bool, trace_rays_indirect2, "trace_rays_indirect2", "vkCmdTraceRaysIndirect2KHR",              \
+    "maintenance1's rayTracingPipelineTraceRaysIndirect2")                                         \
+  X(bool, position_fetch, "position_fetch", "VK_KHR_ray_tracing_position_fetch",                   \
+    "the extension with its rayTracingPositionFetch feature (the vertex_position<i> built-ins)")   \
+  X(bool, scalar_block_layout, "scalar_block_layout", "scalarBlockLayout",                         \
+    "Vulkan 1.2's feature (a scalar shader record block, pipeline.sbt.record_layout)")             \
+  X(bool, library_group_handles, "library_group_handles", "VK_EXT_pipeline_library_group_handles", \
+    "the extension with its pipelineLibraryGroupHandles feature (a library's group handles "       \
+    "are the linked pipeline's)")                                                                  \
+  X(std::vector<std::string>, vertex_formats, "vertex_formats", "vertex formats (AS build)",       \
+    "formats of ACCELERATION_STRUCTURE_VERTEX_BUFFER: rayspec's names (float3, half2, ...) "       \
+    "for those a case may name, the VkFormat's name otherwise")
