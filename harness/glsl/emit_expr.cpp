@@ -115,6 +115,11 @@ std::string op(const Expr& e, const StageContext& ctx) {
   if (n == "sphere_hit") return "rs_sphere_current().hit";
   if (n == "sphere_near") return "rs_sphere_current().t_near";
   if (n == "sphere_far") return "rs_sphere_current().t_far";
+  if (n.rfind("shader_record_", 0) == 0 && need(1) && ctx.inlined) {  // glsl/emit_ray_query.h
+    const std::string word =
+        std::string(ctx.stage == Stage::Miss ? "rs_miss" : "rs_hit") + "_record_word(" + a[0] + ")";
+    return n == "shader_record_float" ? "uintBitsToFloat(" + word + ")" : word;
+  }
   if (n == "shader_record_uint" && need(1)) return "rs_shader_record_uint(" + a[0] + ")";
   if (n == "shader_record_float" && need(1)) return "rs_shader_record_float(" + a[0] + ")";
   if (n.rfind("light_", 0) == 0 && need(2)) return "rs_" + n + "(" + a[0] + ", " + a[1] + ")";

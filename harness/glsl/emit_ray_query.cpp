@@ -112,6 +112,32 @@ void queryState(const StageContext& raygen, GlslWriter& out) {
   out.close();
 }
 
+// The shader record data of one SBT region's records, and the word i of the
+// record an inlined stage runs for (its shader_record_uint / _float reads):
+// rs_q_<region>_record, set where the record is chosen.
+void recordData(const std::string& region, const std::vector<SbtRecord>& records, uint32_t words,
+                GlslWriter& out) {
+  const std::string fn = "uint rs_" + region + "_record_word(uint i) {";
+  const size_t n = records.size() * words;
+  out.line("uint rs_q_" + region + "_record;");
+  if (n == 0) {
+    out.line(fn + " return 0u; }");
+    return;
+  }
+  std::string table = "const uint kRs_" + region + "_data[" + std::to_string(n) + "] = uint[](";
+  for (size_t r = 0; r < records.size(); ++r)
+    for (uint32_t w = 0; w < words; ++w) {
+      const uint32_t v = w < records[r].data.size() ? records[r].data[w] : 0u;
+      table += (r || w ? ", " : "") + str(v) + "u";
+    }
+  out.line(table + ");");
+  out.open(fn);
+  out.line("return rs_q_" + region + "_record < " + std::to_string(records.size()) + "u && i < " +
+           str(words) + "u ? kRs_" + region + "_data[rs_q_" + region + "_record * " + str(words) +
+           "u + i] : 0u;");
+  out.close();
+}
+
 // The group of the candidate's or committed intersection's hit record
 // (R-SBT-HIT), 0xFFFFFFFF for an all-zero record or one beyond the region;
 // rs_hit_group_of(c) calls it with the query's values (c: committed, a
@@ -121,17 +147,25 @@ void hitGroupFunction(const Pipeline& p, GlslWriter& out) {
   out.line(
       "const uint record = (instance_offset & 0xFFFFFFu) + geometry * (rs_q_sbt_stride & "
       "0xFu) + (rs_q_sbt_offset & 0xFu);");
-  out.open("switch (record) {");
+  out.line("rs_q_hit_record = record;");
+  // A table, not a switch: lavapipe 25 overflows its stack compiling a switch
+  // of the 325 records of sbt/hit-index-aabbs.
   const size_t records = p.sbt_hit.empty() ? p.hit_groups.size() : p.sbt_hit.size();
-  for (size_t r = 0; r < records; ++r) {
-    const std::optional<uint32_t> g =
-        p.sbt_hit.empty() ? std::optional<uint32_t>(r) : p.sbt_hit[r].group;
-    if (g) out.line("case " + str(static_cast<uint32_t>(r)) + "u: return " + str(*g) + "u;");
+  if (records == 0) {
+    out.line("return 0xFFFFFFFFu;");
+    out.close();
+  } else {
+    std::string table = "const uint kRsHitGroups[" + std::to_string(records) + "] = uint[](";
+    for (size_t r = 0; r < records; ++r) {
+      const std::optional<uint32_t> g =
+          p.sbt_hit.empty() ? std::optional<uint32_t>(r) : p.sbt_hit[r].group;
+      table += (r ? ", " : "") + str(g.value_or(0xFFFFFFFFu)) + "u";
+    }
+    out.line(table + ");");
+    out.line("return record < " + std::to_string(records) +
+             "u ? kRsHitGroups[record] : 0xFFFFFFFFu;");
+    out.close();
   }
-  out.line("default: break;");
-  out.close();
-  out.line("return 0xFFFFFFFFu;");
-  out.close();
   out.line(
       "#define rs_hit_group_of(c) rs_hit_group("
       "rayQueryGetIntersectionInstanceShaderBindingTableRecordOffsetEXT(rs_rq, c), "
@@ -245,7 +279,8 @@ void committedStage(const StageContext& ctx, const std::string& payload, GlslWri
   const Pipeline& p = ctx.c.pipeline;
   out.line("const uint rs_committed = rayQueryGetIntersectionTypeEXT(rs_rq, true);");
   out.open("if (rs_committed == gl_RayQueryCommittedIntersectionNoneEXT) {");
-  out.open("switch (rs_miss & 0xFFFFu) {  // R-SBT-MISS: the low 16 bits");
+  out.line("rs_q_miss_record = rs_miss & 0xFFFFu;  // R-SBT-MISS: the low 16 bits");
+  out.open("switch (rs_q_miss_record) {");
   const size_t records = p.sbt_miss.empty() ? p.miss.size() : p.sbt_miss.size();
   for (size_t r = 0; r < records; ++r) {
     const std::optional<uint32_t> m =
@@ -307,6 +342,8 @@ void addInlinedUses(StageContext& raygen) {
 void emitInlinedStages(const StageContext& raygen, GlslWriter& out) {
   const Pipeline& p = raygen.c.pipeline;
   queryState(raygen, out);
+  recordData("hit", p.sbt_hit, p.sbt_record_data / 4, out);
+  recordData("miss", p.sbt_miss, p.sbt_record_data / 4, out);
   hitGroupFunction(p, out);
   out.line("");
   out.line("// ---- the hit group and miss programs, inlined ----");

@@ -9,10 +9,10 @@ namespace {
 std::string notInlinable(const Program& program) {
   std::string why;
   std::function<void(const Expr&)> expr = [&](const Expr& e) {
-    if (e.kind == Expr::Kind::RecordMember ||
-        (e.kind == Expr::Kind::Op &&
-         (e.name.rfind("shader_record_", 0) == 0 || e.name.rfind("light_", 0) == 0)))
-      why = "it reads shader record data, which only its own shader's record holds";
+    if (e.kind == Expr::Kind::RecordMember)
+      why = "it reads shader record members (pipeline.sbt.record_layout)";
+    if (e.kind == Expr::Kind::Op && e.name.rfind("light_", 0) == 0)
+      why = "a hit or miss stage lights (light_* reads its shader record)";
     if (e.kind == Expr::Kind::Builtin && e.name.rfind("vertex_position", 0) == 0)
       why = "it reads vertex positions (position fetch is not generated for ray queries yet)";
     for (const Expr& a : e.args) expr(a);

@@ -1,6 +1,5 @@
 // Logical device: one compute-capable queue, the ray tracing extensions and
 // the features listed in vulkan_engine.h.
-#include <string_view>
 #include <vector>
 
 #include "vulkan/context.h"
@@ -44,26 +43,11 @@ void enableNewerFeatures(VulkanContext& ctx, VkPhysicalDeviceFeatures2& on,
   }
 }
 
-bool hasExtension(VkPhysicalDevice physical, const char* name) {
-  uint32_t count = 0;
-  vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, nullptr);
-  std::vector<VkExtensionProperties> all(count);
-  vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, all.data());
-  for (const VkExtensionProperties& e : all)
-    if (std::string_view(e.extensionName) == name) return true;
-  return false;
-}
-
-// Ray queries (Pipeline::ray_query) where the device has them.
+// Ray queries (Pipeline::ray_query) where the device has them
+// (describeDevice found the extension and its feature).
 void enableRayQuery(VulkanContext& ctx, VkPhysicalDeviceFeatures2& on,
                     VkPhysicalDeviceRayQueryFeaturesKHR& ray_query) {
-  if (!hasExtension(ctx.physical, VK_KHR_RAY_QUERY_EXTENSION_NAME)) return;
-  VkPhysicalDeviceRayQueryFeaturesKHR have{
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
-  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
-  features.pNext = &have;
-  vkGetPhysicalDeviceFeatures2(ctx.physical, &features);
-  ctx.ray_query = have.rayQuery == VK_TRUE;
+  ctx.ray_query = ctx.info.ray_query;
   if (!ctx.ray_query) return;
   ray_query.rayQuery = VK_TRUE;
   ray_query.pNext = on.pNext;

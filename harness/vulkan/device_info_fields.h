@@ -73,6 +73,8 @@ using DeviceLaunchSize = std::array<uint64_t, 3>;
     "accelerationStructureHostCommands", "the acceleration structure feature")                     \
   X(bool, pipeline_library, "pipeline_library", "VK_KHR_pipeline_library",                         \
     "VK_KHR_pipeline_library is offered")                                                          \
+  X(bool, ray_query, "ray_query", "VK_KHR_ray_query",                                              \
+    "VK_KHR_ray_query and its rayQuery feature (--through ray-query)")                             \
   X(bool, opacity_micromap, "opacity_micromap", "VK_EXT_opacity_micromap",                         \
     "VK_EXT_opacity_micromap is offered (rayspec enables it on Vulkan 1.3 only)")                  \
   X(bool, ray_tracing_maintenance1, "ray_tracing_maintenance1", "VK_KHR_ray_tracing_maintenance1", \

@@ -47,6 +47,7 @@ void readExtensions(VkPhysicalDevice physical, DeviceInfo& d) {
       hasDeviceExtension(exts, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME) &&
       hasDeviceExtension(exts, VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME);
   d.pipeline_library = hasDeviceExtension(exts, VK_KHR_PIPELINE_LIBRARY_EXTENSION_NAME);
+  d.ray_query = hasDeviceExtension(exts, VK_KHR_RAY_QUERY_EXTENSION_NAME);
   d.opacity_micromap = hasDeviceExtension(exts, VK_EXT_OPACITY_MICROMAP_EXTENSION_NAME);
   d.ray_tracing_maintenance1 =
       hasDeviceExtension(exts, VK_KHR_RAY_TRACING_MAINTENANCE_1_EXTENSION_NAME);
@@ -137,6 +138,8 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
   VkPhysicalDeviceRayTracingMaintenance1FeaturesKHR maintenance1{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_MAINTENANCE_1_FEATURES_KHR};
+  VkPhysicalDeviceRayQueryFeaturesKHR ray_query{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
   PositionFetchFeatures position_fetch;
   LibraryGroupHandlesFeatures group_handles;
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
@@ -146,6 +149,7 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
   if (d.ray_tracing_extension) chain(next, rt_features);
   if (d.acceleration_structure_extension) chain(next, as_features);
   if (d.ray_tracing_maintenance1) chain(next, maintenance1);
+  if (d.ray_query) chain(next, ray_query);
   if (d.position_fetch) {
     *next = &position_fetch;
     next = &position_fetch.p_next;
@@ -168,6 +172,7 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
   d.position_fetch =
       d.position_fetch && d.acceleration_structure && position_fetch.ray_tracing_position_fetch;
   d.library_group_handles = d.library_group_handles && group_handles.pipeline_library_group_handles;
+  d.ray_query = d.ray_query && ray_query.rayQuery;
 }
 
 }  // namespace
