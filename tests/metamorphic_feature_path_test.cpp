@@ -32,7 +32,7 @@ Case simpleCase(const std::string& extra_scene = "", const std::string& extra_ra
 TEST(FeaturePath, NamesRoundTrip) {
   for (FeaturePath p :
        {FeaturePath::Indirect, FeaturePath::Indirect2, FeaturePath::Libraries, FeaturePath::Clone,
-        FeaturePath::Compact, FeaturePath::Serialize, FeaturePath::Update})
+        FeaturePath::Compact, FeaturePath::Serialize, FeaturePath::Update, FeaturePath::RayQuery})
     EXPECT_EQ(featurePathFromName(featurePathName(p)), p) << featurePathName(p);
   EXPECT_FALSE(featurePathFromName("sideways"));
   EXPECT_NE(featurePathNames().find("serialize"), std::string::npos);
@@ -56,6 +56,25 @@ TEST(FeaturePath, EachPathChangesItsOwnField) {
   EXPECT_EQ(updated.scene.earlier.front()->instances.size(), c.scene.instances.size());
   EXPECT_EQ(updated.scene.blases[0].geometries[0].vertices,
             updated.scene.earlier.front()->blases[0].geometries[0].vertices);
+  EXPECT_TRUE(throughPath(c, FeaturePath::RayQuery, &why)->pipeline.ray_query);
+}
+
+// What the ray query form cannot express keeps a case off the path, named.
+TEST(FeaturePath, RayQueryRefusesWhatItCannotInline) {
+  std::string why;
+  const Case own = *throughPath(simpleCase(), FeaturePath::RayQuery, &why);
+  EXPECT_FALSE(throughPath(own, FeaturePath::RayQuery, &why));
+  EXPECT_NE(why.find("by ray query itself"), std::string::npos) << why;
+  Case nested = simpleCase();
+  Stmt trace;
+  trace.kind = Stmt::Kind::Trace;
+  nested.pipeline.hit_groups[0].closest_hit->push_back(trace);
+  EXPECT_FALSE(throughPath(nested, FeaturePath::RayQuery, &why));
+  EXPECT_NE(why.find("closest-hit or miss traces"), std::string::npos) << why;
+  Case flagged = simpleCase();
+  flagged.pipeline.flags = 0x1000;
+  EXPECT_FALSE(throughPath(flagged, FeaturePath::RayQuery, &why));
+  EXPECT_NE(why.find("pipeline flags"), std::string::npos) << why;
 }
 
 TEST(FeaturePath, ACaseWithItsOwnWayThereIsLeftAlone) {

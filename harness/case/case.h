@@ -272,8 +272,9 @@ struct Pipeline {
                        // 0x1000 / 0x2000)
   Program raygen;      // default: [trace: {}]; the raygen the launch runs
   // Every trace is a ray query loop in raygen that runs the hit group and
-  // miss programs inlined (--through ray-query, R-RQ-EQUIV,
-  // glsl/emit_ray_query.h); the other stages stay in the pipeline, unrun.
+  // miss programs inlined (pipeline.traces: ray_query, --through ray-query,
+  // R-RQ-EQUIV, glsl/emit_ray_query.h); the other stages stay in the
+  // pipeline, unrun.
   bool ray_query = false;
   // Several raygen groups (pipeline.raygens): `raygen` is group raygen_group,
   // other_raygens the rest in group order. The raygen region's record

@@ -10,6 +10,7 @@
 #include "base/visible_text.h"
 #include "base/whole_file.h"
 #include "case/case_parts.h"
+#include "case/ray_query_inlining.h"
 #include "case/yaml_shape.h"
 #include "results/content_hash.h"
 #include "results/file_name.h"
@@ -76,6 +77,14 @@ void judgeStaticUndefined(YamlReader& r, Case& c) {
 }
 
 // The case's name becomes folder names of a run (OUT/<family>/<name>/).
+// pipeline.traces: ray_query in a case its ray query form cannot express.
+void checkRayQueryForm(YamlReader& r, const Case& c, const YAML::Node& pipeline) {
+  if (!c.pipeline.ray_query) return;
+  if (const std::string why = rayQueryObstacle(c, true); !why.empty())
+    r.error(YamlReader::get(pipeline, "traces"), "pipeline.traces",
+            "ray_query cannot express this case: " + why);
+}
+
 void checkCaseName(YamlReader& r, const Case& c) {
   std::string part;
   std::istringstream parts(c.name);
@@ -138,6 +147,7 @@ void parseTop(YamlReader& r, const YAML::Node& root, const std::vector<std::stri
   if (auto e = YamlReader::get(root, "expect_rejected"); e.IsDefined())
     parseExpectedRejections(r, e, c);
   checkPrograms(r, c, pipeline);
+  checkRayQueryForm(r, c, pipeline);
   checkRecordReads(r, c);
   checkDataWords(r, c);
   if (r.errorCount() == 0) checkTraceConstants(r, c);

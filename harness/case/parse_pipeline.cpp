@@ -173,6 +173,18 @@ void parseHitAttribute(YamlReader& r, const YAML::Node& v, Pipeline& p) {
 
 }  // namespace
 
+// pipeline.traces: trace_ray (traceRayEXT, the default) or ray_query (every
+// trace a ray query loop, R-RQ-EQUIV); what the ray query form cannot express
+// is checked with the whole case (parse_case.cpp).
+void parseTraces(YamlReader& r, const YAML::Node& v, Pipeline& p) {
+  const std::optional<std::string> s = r.string(v, "pipeline.traces");
+  if (!s) return;
+  if (*s == "ray_query")
+    p.ray_query = true;
+  else if (*s != "trace_ray")
+    r.error(v, "pipeline.traces", "must be trace_ray or ray_query, not '" + *s + "'");
+}
+
 void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
   p.raygen.clear();
   Stmt trace;
@@ -184,7 +196,7 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
           n, "pipeline",
           {"max_recursion", "flags", "raygen", "raygens", "raygen_group", "raygen_data", "miss",
            "hit_groups", "callables", "sbt", "libraries", "payloads", "callable_depth", "functions",
-           "constants", "specialize", "hit_attribute", "callable_data"}))
+           "constants", "specialize", "hit_attribute", "callable_data", "traces"}))
     return;
   if (auto v = YamlReader::get(n, "max_recursion"); v.IsDefined())
     if (auto x = r.uint(v, "pipeline.max_recursion", 31)) {
@@ -232,6 +244,7 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
   if (auto v = YamlReader::get(n, "libraries"); v.IsDefined()) parseLibraries(r, v, p);
   checkNoNullGroups(r, p);
   checkAttributeWords(r, p);
+  if (auto v = YamlReader::get(n, "traces"); v.IsDefined()) parseTraces(r, v, p);
 
   p.sbt_miss = defaultRegion(p.miss.size());
   p.sbt_hit = defaultRegion(p.hit_groups.size());

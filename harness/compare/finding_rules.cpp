@@ -46,13 +46,14 @@ Rules join(std::initializer_list<const Rules*> parts, Rules own = {}) {
   return own;
 }
 
-// Rules of how the pipeline is built and how shader code runs: whatever
-// shaders observe, any field or counter may show them broken.
+// Rules of how the pipeline is built and how shader code runs (and whether
+// it runs through ray queries): whatever shaders observe, any field or
+// counter may show them broken.
 const Rules& pipelineRules() {
-  static const Rules r = {"R-LIBRARY",        "R-RAYGEN-REGION", "R-NULL-SHADERS",
-                          "R-INDIRECT",       "R-STACK",         "R-LAUNCH-3D",
-                          "R-AS-COPY",        "R-AS-UPDATE",     "R-VERTEX-FORMAT",
-                          "R-POSITION-FETCH", "R-LIVE-STATE",    "R-CONTROL-FLOW"};
+  static const Rules r = {"R-LIBRARY",       "R-RAYGEN-REGION",  "R-NULL-SHADERS", "R-INDIRECT",
+                          "R-STACK",         "R-LAUNCH-3D",      "R-AS-COPY",      "R-AS-UPDATE",
+                          "R-VERTEX-FORMAT", "R-POSITION-FETCH", "R-LIVE-STATE",   "R-CONTROL-FLOW",
+                          "R-RQ-EQUIV"};
   return r;
 }
 

@@ -91,6 +91,13 @@ std::vector<RuleFaults> pipelineRules() {
        {"loop-trip-off-by-one", "function-ignore-lost", "specialization-ignored",
         "bitwise-xor-as-or", "float-bits-converted", "cross-operands-swapped", "matrix-transposed"},
        {}},
+      // A ray query loop that decides candidates, commits or reads built-ins
+      // otherwise than the pipeline's stages would (pipeline.traces: ray_query).
+      {"R-RQ-EQUIV",
+       {"ignore-accepts", "terminate-continues", "any-hit-on-opaque", "report-return-inverted",
+        "hit-attributes-lost", "skip-closest-hit-ignored", "first-hit-flag-ignored",
+        "tmax-view-initial", "transform-builtins-swapped", "builtin-wrong"},
+       {}},
       {"R-UB", {}, {}, fail, "never checked for a result (robustness probe only)"},
   };
 }

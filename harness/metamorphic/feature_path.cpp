@@ -3,7 +3,7 @@
 #include <memory>
 
 #include "case/flag_names.h"
-#include "metamorphic/ray_query_path.h"
+#include "case/ray_query_inlining.h"
 
 namespace rayspec {
 namespace {
@@ -70,6 +70,14 @@ bool updatedInPlace(Case& c, std::string* why_not) {
   return true;
 }
 
+// Every trace a ray query loop, where nothing is in the way.
+bool tracedByRayQuery(Case& c, std::string* why_not) {
+  *why_not = rayQueryObstacle(c);
+  if (!why_not->empty()) return false;
+  c.pipeline.ray_query = true;
+  return true;
+}
+
 }  // namespace
 
 const char* featurePathName(FeaturePath p) {
@@ -119,7 +127,7 @@ std::optional<Case> throughPath(const Case& c, FeaturePath path, std::string* wh
       ok = updatedInPlace(out, why_not);
       break;
     case FeaturePath::RayQuery:
-      ok = inlinedByRayQuery(out, why_not);
+      ok = tracedByRayQuery(out, why_not);
       break;
   }
   if (!ok) return std::nullopt;

@@ -22,7 +22,7 @@ enum class FeaturePath {
   Compact,    // scene.build.copy compact
   Serialize,  // scene.build.copy serialize
   Update,     // built with ALLOW_UPDATE, then updated in place to the same scene
-  RayQuery,   // every trace a ray query loop in raygen (metamorphic/ray_query_path.h)
+  RayQuery,   // every trace a ray query loop in raygen (case/ray_query_inlining.h)
 };
 
 const char* featurePathName(FeaturePath p);

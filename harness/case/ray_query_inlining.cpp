@@ -1,6 +1,6 @@
-#include "metamorphic/ray_query_path.h"
+#include "case/ray_query_inlining.h"
 
-#include <functional>
+#include "program/walk_program.h"
 
 namespace rayspec {
 namespace {
@@ -8,30 +8,20 @@ namespace {
 // What a program holds that its inlined form cannot express, or "".
 std::string notInlinable(const Program& program) {
   std::string why;
-  std::function<void(const Expr&)> expr = [&](const Expr& e) {
+  walkExpressions(program, [&](const Expr& e) {
     if (e.kind == Expr::Kind::RecordMember)
       why = "it reads shader record members (pipeline.sbt.record_layout)";
     if (e.kind == Expr::Kind::Op && e.name.rfind("light_", 0) == 0)
       why = "a hit or miss stage lights (light_* reads its shader record)";
     if (e.kind == Expr::Kind::Builtin && e.name.rfind("vertex_position", 0) == 0)
       why = "it reads vertex positions (position fetch is not generated for ray queries yet)";
-    for (const Expr& a : e.args) expr(a);
-  };
-  std::function<void(const Program&)> walk = [&](const Program& p) {
-    for (const Stmt& s : p) {
-      if (s.kind == Stmt::Kind::Trace)
-        why = "a closest-hit or miss traces (nested ray queries are not generated yet)";
-      if (s.kind == Stmt::Kind::Invoke) why = "a hit or miss stage calls a function";
-      if (s.kind == Stmt::Kind::Light) why = "a stage reads shader record data (light)";
-      for (const auto& a : s.assigns) expr(a.second);
-      for (const Expr* e : {&s.cond, &s.t, &s.hit_kind, &s.call_index, &s.count, &s.from, &s.index})
-        expr(*e);
-      for (const Expr& e : s.attribute) expr(e);
-      walk(s.then_);
-      walk(s.else_);
-    }
-  };
-  walk(program);
+  });
+  walkStatements(program, [&](const Stmt& s) {
+    if (s.kind == Stmt::Kind::Trace)
+      why = "a closest-hit or miss traces (nested ray queries are not generated yet)";
+    if (s.kind == Stmt::Kind::Invoke) why = "a hit or miss stage calls a function";
+    if (s.kind == Stmt::Kind::Light) why = "a stage reads shader record data (light)";
+  });
   return why;
 }
 
@@ -46,27 +36,17 @@ std::string notInlinable(const Pipeline& p) {
   return "";
 }
 
-// Why the case as a whole cannot be inlined, or "".
-std::string caseNotInlinable(const Case& c) {
+}  // namespace
+
+std::string rayQueryObstacle(const Case& c, bool own) {
   const Pipeline& p = c.pipeline;
-  if (p.ray_query) return "the case traces by ray query itself";
+  if (p.ray_query && !own) return "the case traces by ray query itself";
   if (!c.expected_rejections.empty()) return "the case expects a shader to be rejected";
   if (p.flags) return "its pipeline flags (skip_triangles / skip_aabbs) apply to traceRayEXT only";
   if (p.payload_words.size() > 1) return "it declares several payload types";
   for (const auto& [shader, values] : p.specialize)
     if (shader.rfind("raygen", 0) != 0) return "it specializes a constant for " + shader + " alone";
   return notInlinable(p);
-}
-
-}  // namespace
-
-bool inlinedByRayQuery(Case& c, std::string* why_not) {
-  if (std::string why = caseNotInlinable(c); !why.empty()) {
-    *why_not = why;
-    return false;
-  }
-  c.pipeline.ray_query = true;
-  return true;
 }
 
 }  // namespace rayspec
