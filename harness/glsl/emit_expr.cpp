@@ -61,12 +61,8 @@ std::string builtin(const std::string& name, const StageContext& ctx) {
     return stage == Stage::Intersection ? "rs_current_tmax()"
            : stage == Stage::Miss       ? "rs_q_tmax"
                                         : "rs_hit_t";
-  if (!info->ray_query) return problem(name + " cannot be read by a ray query");
-  std::string spelled = info->ray_query;
-  const std::string committed = stage == Stage::ClosestHit ? "true" : "false";
-  for (size_t at; (at = spelled.find("$c")) != std::string::npos;)
-    spelled.replace(at, 2, committed);
-  return spelled;
+  const std::string spelled = rayQuerySpelling(*info, stage == Stage::ClosestHit);
+  return spelled.empty() ? problem(name + " cannot be read by a ray query") : spelled;
 }
 
 std::string op(const Expr& e, const StageContext& ctx) {

@@ -16,7 +16,7 @@ std::string str(uint32_t v) {
   return std::to_string(v);
 }
 
-// The one payload type (metamorphic/ray_query_path.h refuses several).
+// The one payload type (case/ray_query_inlining.h refuses several).
 std::string payloadType(const Case& c) {
   return payloadTypeName(c.pipeline.payloadWords(0));
 }
@@ -44,9 +44,7 @@ std::string zeroWords(uint32_t n) {
 
 // A built-in of the query's candidate (program/builtin_table.h).
 std::string candidate(const char* name) {
-  std::string s = findBuiltin(name)->ray_query;
-  s.replace(s.find("$c"), 2, "false");
-  return s;
+  return rayQuerySpelling(*findBuiltin(name), false);
 }
 
 bool anyHitRuns(const StageContext& raygen, const HitGroup& h) {

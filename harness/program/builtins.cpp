@@ -32,4 +32,12 @@ Builtin builtinId(const BuiltinInfo* info) {
   return info ? static_cast<Builtin>(info - builtins().data()) : kBiUnknown;
 }
 
+std::string rayQuerySpelling(const BuiltinInfo& info, bool committed) {
+  if (!info.ray_query) return "";
+  std::string s = info.ray_query;
+  for (size_t at; (at = s.find("$c")) != std::string::npos;)
+    s.replace(at, 2, committed ? "true" : "false");
+  return s;
+}
+
 }  // namespace rayspec

@@ -62,5 +62,8 @@ const std::vector<BuiltinInfo>& builtins();
 const BuiltinInfo* findBuiltin(const std::string& name);
 // Its Builtin (kBiUnknown for nullptr).
 Builtin builtinId(const BuiltinInfo* info);
+// Its ray query spelling for the candidate (committed false) or the committed
+// intersection; "" where it has none (BuiltinInfo::ray_query).
+std::string rayQuerySpelling(const BuiltinInfo& info, bool committed);
 
 }  // namespace rayspec
