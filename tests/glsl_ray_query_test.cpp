@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "case/flag_names.h"
 #include "glsl/generate_glsl.h"
 #include "spirv/compile_glsl.h"
 #include "suite_cases.h"
@@ -35,6 +36,19 @@ TEST(RayQueryGlsl, RaygenRunsTheLoopAndTheInlinedPrograms) {
   const SpirvResult r = compileGlsl(g, Stage::Raygen);
   EXPECT_TRUE(r.error.empty()) << r.error;
   EXPECT_FALSE(r.words.empty());
+}
+
+// The pipeline's skip_triangles / skip_aabbs act on traceRayEXT alone: the
+// query takes them as ray flags (0x100, 0x200), gl_IncomingRayFlagsEXT not.
+TEST(RayQueryGlsl, PipelineSkipFlagsBecomeTheQuerysRayFlags) {
+  Case c = suiteCaseFile("ray-query/any-hit-and-intersection");
+  c.pipeline.flags = kPipelineSkipTriangles | kPipelineSkipAabbs;
+  const std::string g = generateGlsl(c, derivePlan(c)).raygen.glsl;
+  EXPECT_NE(g.find("(rs_flags & ~gl_RayFlagsSkipClosestHitShaderEXT) | 768u"), std::string::npos)
+      << g;
+  EXPECT_NE(g.find("rs_q_flags = rs_flags;"), std::string::npos);
+  c.pipeline.flags = 0;
+  EXPECT_EQ(generateGlsl(c, derivePlan(c)).raygen.glsl.find("| 768u"), std::string::npos);
 }
 
 TEST(RayQueryGlsl, ThePipelineFormIsUnchanged) {

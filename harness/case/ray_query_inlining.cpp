@@ -42,7 +42,6 @@ std::string rayQueryObstacle(const Case& c, bool own) {
   const Pipeline& p = c.pipeline;
   if (p.ray_query && !own) return "the case traces by ray query itself";
   if (!c.expected_rejections.empty()) return "the case expects a shader to be rejected";
-  if (p.flags) return "its pipeline flags (skip_triangles / skip_aabbs) apply to traceRayEXT only";
   if (p.payload_words.size() > 1) return "it declares several payload types";
   for (const auto& [shader, values] : p.specialize)
     if (shader.rfind("raygen", 0) != 0) return "it specializes a constant for " + shader + " alone";

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "case/flag_names.h"
 #include "glsl/emit_call_data.h"
 #include "glsl/emit_payloads.h"
 #include "glsl/emit_stage.h"
@@ -363,10 +364,16 @@ void emitRayQueryTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) 
   out.line("rs_q_sbt_stride = rs_sbt_stride;");
   out.line("rs_q_tmax = rs_tmax;");
   out.line("rs_q_done = false;");
-  // skip_closest_hit is the loop's to honour, not the query's.
+  // skip_closest_hit is the loop's to honour, not the query's; the pipeline's
+  // skip_triangles / skip_aabbs, which act on traceRayEXT alone, become the
+  // query's ray flags (gl_IncomingRayFlagsEXT stays the trace's: rs_q_flags).
+  const uint32_t p_flags = ctx.c.pipeline.flags;
+  const uint32_t skip = (p_flags & kPipelineSkipTriangles ? kRaySkipTriangles : 0u) |
+                        (p_flags & kPipelineSkipAabbs ? kRaySkipAabbs : 0u);
   out.line("rayQueryInitializeEXT(rs_rq, " + tlas +
-           ", rs_flags & ~gl_RayFlagsSkipClosestHitShaderEXT, rs_cull_mask, rs_origin, rs_tmin, "
-           "rs_direction, rs_tmax);");
+           ", (rs_flags & ~gl_RayFlagsSkipClosestHitShaderEXT)" +
+           (skip ? " | " + str(skip) + "u" : std::string()) +
+           ", rs_cull_mask, rs_origin, rs_tmin, rs_direction, rs_tmax);");
   candidateLoop(ctx, payload, out);
   committedStage(ctx, payload, out);
 }
