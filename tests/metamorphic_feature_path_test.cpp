@@ -71,10 +71,14 @@ TEST(FeaturePath, RayQueryRefusesWhatItCannotInline) {
   nested.pipeline.hit_groups[0].closest_hit->push_back(trace);
   EXPECT_FALSE(throughPath(nested, FeaturePath::RayQuery, &why));
   EXPECT_NE(why.find("closest-hit or miss traces"), std::string::npos) << why;
+  Case typed = simpleCase();
+  typed.pipeline.payload_words = {0, 2};
+  EXPECT_FALSE(throughPath(typed, FeaturePath::RayQuery, &why));
+  EXPECT_NE(why.find("several payload types"), std::string::npos) << why;
+  // The pipeline's skip flags become the query's ray flags: no obstacle.
   Case flagged = simpleCase();
-  flagged.pipeline.flags = 0x1000;
-  EXPECT_FALSE(throughPath(flagged, FeaturePath::RayQuery, &why));
-  EXPECT_NE(why.find("pipeline flags"), std::string::npos) << why;
+  flagged.pipeline.flags = kPipelineSkipTriangles;
+  EXPECT_TRUE(throughPath(flagged, FeaturePath::RayQuery, &why)) << why;
 }
 
 TEST(FeaturePath, ACaseWithItsOwnWayThereIsLeftAlone) {
