@@ -94,7 +94,7 @@ void checkCaseSupport(const VulkanContext& ctx, const Case& c, const Plan& plan)
         "rays.command indirect2: the device lacks VK_KHR_ray_tracing_maintenance1's "
         "rayTracingPipelineTraceRaysIndirect2");
   if (plan.position_fetch) checkPositionFetch(ctx);
-  if (c.pipeline.ray_query && !ctx.ray_query)
+  if (c.pipeline.ray_query && !d.ray_query)
     throw NotSupportedError(
         "traces by ray query (--through ray-query): the device lacks "
         "VK_KHR_ray_query's rayQuery");

@@ -36,9 +36,6 @@ struct VulkanContext {
   // pipelineLibraryGroupHandles enabled, on the same terms
   // (vulkan/library_group_handles.h): library handles are compared.
   bool library_group_handles = false;
-  // VK_KHR_ray_query's rayQuery enabled: the device has it (Pipeline::ray_query
-  // cases are NotSupported without it).
-  bool ray_query = false;
 
   VkDevice device = VK_NULL_HANDLE;
   uint32_t queue_family = 0;

@@ -45,10 +45,9 @@ void enableNewerFeatures(VulkanContext& ctx, VkPhysicalDeviceFeatures2& on,
 
 // Ray queries (Pipeline::ray_query) where the device has them
 // (describeDevice found the extension and its feature).
-void enableRayQuery(VulkanContext& ctx, VkPhysicalDeviceFeatures2& on,
+void enableRayQuery(const VulkanContext& ctx, VkPhysicalDeviceFeatures2& on,
                     VkPhysicalDeviceRayQueryFeaturesKHR& ray_query) {
-  ctx.ray_query = ctx.info.ray_query;
-  if (!ctx.ray_query) return;
+  if (!ctx.info.ray_query) return;
   ray_query.rayQuery = VK_TRUE;
   ray_query.pNext = on.pNext;
   on.pNext = &ray_query;
@@ -65,7 +64,7 @@ std::vector<const char*> deviceExtensions(const VulkanContext& ctx) {
     extensions.push_back(VK_KHR_RAY_TRACING_MAINTENANCE_1_EXTENSION_NAME);
   if (ctx.position_fetch) extensions.push_back(kPositionFetchExtension);
   if (ctx.library_group_handles) extensions.push_back(kLibraryGroupHandlesExtension);
-  if (ctx.ray_query) extensions.push_back(VK_KHR_RAY_QUERY_EXTENSION_NAME);
+  if (ctx.info.ray_query) extensions.push_back(VK_KHR_RAY_QUERY_EXTENSION_NAME);
   // Its dependency synchronization2 is core from Vulkan 1.3.
   if (ctx.info.opacity_micromap && ctx.info.api_version_number >= VK_API_VERSION_1_3)
     extensions.push_back(VK_EXT_OPACITY_MICROMAP_EXTENSION_NAME);
