@@ -6,10 +6,10 @@
 namespace rayspec {
 
 const char* caseSetName(CaseSet s) {
-  return s == CaseSet::Ordinary ? "ordinary" : "hard";
+  return nameOf(s);
 }
 const char* sourceKindName(SourceKind k) {
-  return k == SourceKind::ModelTier ? "model" : "device";
+  return nameOf(k);
 }
 
 void addToRow(std::vector<AccuracyRow>& rows, const AccuracyRow& one) {

@@ -9,14 +9,19 @@
 #include <nlohmann/json.hpp>
 
 #include "accuracy/ray_disagreements.h"
+#include "base/enum_names.h"
 #include "plot/line_plot.h"
 
 namespace rayspec {
 
-enum class CaseSet { Ordinary, Hard };
+#define RAYSPEC_CASE_SETS(X) X(Ordinary, "ordinary") X(Hard, "hard")
+enum class CaseSet { RAYSPEC_CASE_SETS(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(CaseSet, RAYSPEC_CASE_SETS);
 const char* caseSetName(CaseSet s);  // "ordinary", "hard"
 
-enum class SourceKind { ModelTier, Device };
+#define RAYSPEC_SOURCE_KINDS(X) X(ModelTier, "model") X(Device, "device")
+enum class SourceKind { RAYSPEC_SOURCE_KINDS(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(SourceKind, RAYSPEC_SOURCE_KINDS);
 const char* sourceKindName(SourceKind k);  // "model", "device"
 
 struct AccuracyRow {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "base/affine.h"
+#include "base/enum_names.h"
 #include "base/source_loc.h"
 #include "base/vec3.h"
 #include "case/vertex_format.h"
@@ -123,7 +124,10 @@ constexpr uint64_t kMaxOutputBytes = 1ull << 30;
 // compacted size the device reports). Shaders observe the same either way.
 // serialize: to memory and back (vkCmdCopyAccelerationStructureToMemoryKHR,
 // vkCmdCopyMemoryToAccelerationStructureKHR).
-enum class AsCopy { None, Clone, Compact, Serialize };
+#define RAYSPEC_AS_COPIES(X) \
+  X(None, "none") X(Clone, "clone") X(Compact, "compact") X(Serialize, "serialize")
+enum class AsCopy { RAYSPEC_AS_COPIES(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(AsCopy, RAYSPEC_AS_COPIES);
 const char* asCopyName(AsCopy c);  // none, clone, compact, serialize
 struct AsBuild {
   uint32_t flags = 0x4;
@@ -171,7 +175,10 @@ struct Ray {
 // vkCmdTraceRaysIndirectKHR with the launch size in a buffer, or
 // vkCmdTraceRaysIndirect2KHR with the SBT regions in it too. Shaders observe
 // the same whichever it is.
-enum class TraceCommand { Direct, Indirect, Indirect2 };
+#define RAYSPEC_TRACE_COMMANDS(X) \
+  X(Direct, "trace_rays") X(Indirect, "indirect") X(Indirect2, "indirect2")
+enum class TraceCommand { RAYSPEC_TRACE_COMMANDS(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(TraceCommand, RAYSPEC_TRACE_COMMANDS);
 const char* traceCommandName(TraceCommand c);  // trace_rays, indirect, indirect2
 
 struct Rays {

@@ -320,15 +320,7 @@ void parseLaunch(YamlReader& r, const YAML::Node& n, Rays& rays) {
 }  // namespace
 
 const char* traceCommandName(TraceCommand c) {
-  switch (c) {
-    case TraceCommand::Direct:
-      return "trace_rays";
-    case TraceCommand::Indirect:
-      return "indirect";
-    case TraceCommand::Indirect2:
-      return "indirect2";
-  }
-  return "trace_rays";
+  return nameOf(c);
 }
 
 void parseRays(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& rays) {

@@ -262,17 +262,7 @@ void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
 }  // namespace
 
 const char* asCopyName(AsCopy c) {
-  switch (c) {
-    case AsCopy::None:
-      return "none";
-    case AsCopy::Clone:
-      return "clone";
-    case AsCopy::Compact:
-      return "compact";
-    case AsCopy::Serialize:
-      return "serialize";
-  }
-  return "none";
+  return nameOf(c);
 }
 
 void parseScene(YamlReader& r, const YAML::Node& n, Scene& scene) {

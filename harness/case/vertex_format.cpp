@@ -4,6 +4,8 @@
 #include <cstring>
 #include <limits>
 
+#include "base/enum_names.h"
+
 namespace rayspec {
 namespace {
 
@@ -86,11 +88,7 @@ std::optional<VertexFormat> vertexFormatFromName(const std::string& name) {
 }
 
 const std::string& vertexFormatNames() {
-  static const std::string names = [] {
-    std::string s;
-    for (const FormatInfo& i : kFormats) s += (s.empty() ? "" : ", ") + std::string(i.name);
-    return s;
-  }();
+  static const std::string names = namesJoined(kFormats);
   return names;
 }
 

@@ -5,17 +5,7 @@
 namespace rayspec {
 
 const char* counterModeName(CounterMode m) {
-  switch (m) {
-    case CounterMode::Exact:
-      return "exact";
-    case CounterMode::AtLeast:
-      return "at_least";
-    case CounterMode::AtMost:
-      return "at_most";
-    case CounterMode::Informational:
-      return "informational";
-  }
-  return "informational";
+  return nameOf(m);
 }
 
 std::map<std::string, CounterMode> counterModes(const Case& c) {

@@ -27,11 +27,15 @@
 #include <set>
 #include <string>
 
+#include "base/enum_names.h"
 #include "case/case.h"
 
 namespace rayspec {
 
-enum class CounterMode { Exact, AtLeast, AtMost, Informational };
+#define RAYSPEC_COUNTER_MODES(X) \
+  X(Exact, "exact") X(AtLeast, "at_least") X(AtMost, "at_most") X(Informational, "informational")
+enum class CounterMode { RAYSPEC_COUNTER_MODES(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(CounterMode, RAYSPEC_COUNTER_MODES);
 const char* counterModeName(CounterMode m);
 
 std::map<std::string, CounterMode> counterModes(const Case& c);

@@ -27,33 +27,10 @@ int severity(Status s) {
 
 }  // namespace
 
-const char* statusName(Status s) {
-  switch (s) {
-    case Status::Pass:
-      return "Pass";
-    case Status::Fail:
-      return "Fail";
-    case Status::QualityWarning:
-      return "QualityWarning";
-    case Status::NotSupported:
-      return "NotSupported";
-    case Status::Crash:
-      return "Crash";
-    case Status::Timeout:
-      return "Timeout";
-    case Status::CaseError:
-      return "CaseError";
-  }
-  return "Crash";
-}
-
 bool parseStatus(const std::string& name, Status* out) {
-  for (Status s : kAllStatuses)
-    if (name == statusName(s)) {
-      *out = s;
-      return true;
-    }
-  return false;
+  const std::optional<Status> s = valueNamed<Status>(name);
+  if (s) *out = *s;
+  return s.has_value();
 }
 
 Status worse(Status a, Status b) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "base/enum_names.h"
 #include "results/results.h"
 
 namespace rayspec {
@@ -14,11 +15,21 @@ namespace rayspec {
 // Stable names: baselines and results.csv refer to them. CaseError: the case
 // itself is at fault (a malformed file, or undefined behaviour the model
 // diagnosed in it, R-UB); the device is not blamed for it.
-enum class Status { Pass, Fail, QualityWarning, NotSupported, Crash, Timeout, CaseError };
-inline constexpr std::array<Status, 7> kAllStatuses = {
-    Status::Pass,  Status::Fail,    Status::QualityWarning, Status::NotSupported,
-    Status::Crash, Status::Timeout, Status::CaseError};
-const char* statusName(Status s);
+// Rows: X(Status, "name", "deqp-runner's name").
+#define RAYSPEC_STATUSES(X)                   \
+  X(Pass, "Pass", "Pass")                     \
+  X(Fail, "Fail", "Fail")                     \
+  X(QualityWarning, "QualityWarning", "Warn") \
+  X(NotSupported, "NotSupported", "Skip")     \
+  X(Crash, "Crash", "Crash")                  \
+  X(Timeout, "Timeout", "Timeout")            \
+  X(CaseError, "CaseError", "Fail") /* deqp-runner has no name for it */
+enum class Status { RAYSPEC_STATUSES(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(Status, RAYSPEC_STATUSES);
+inline constexpr auto kAllStatuses = enumValues<Status>();
+inline const char* statusName(Status s) {
+  return nameOf(s);
+}
 bool parseStatus(const std::string& name, Status* out);
 // The worse of two statuses (Crash > Timeout > Fail > CaseError > QualityWarning > NotSupported >
 // Pass). A run fails on any of Crash, Timeout, Fail and CaseError.

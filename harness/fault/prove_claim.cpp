@@ -35,24 +35,6 @@ FaultOutcome plant(const std::string& fault, bool legal, const Case& c, const Pl
 
 }  // namespace
 
-const char* claimResultName(ClaimResult r) {
-  switch (r) {
-    case ClaimResult::Proven:
-      return "proven";
-    case ClaimResult::Hollow:
-      return "hollow";
-    case ClaimResult::FailsLegal:
-      return "fails a legal device";
-    case ClaimResult::Pending:
-      return "pending";
-    case ClaimResult::NotChecked:
-      return "not checked";
-    case ClaimResult::UnknownRule:
-      return "unknown rule";
-  }
-  return "?";
-}
-
 std::string ClaimProof::describe() const {
   std::ostringstream s;
   s << rule << ": " << claimResultName(result);

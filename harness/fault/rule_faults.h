@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "base/enum_names.h"
 #include "case/case.h"
 #include "compare/verdict.h"
 #include "plan/plan.h"
@@ -42,15 +43,21 @@ struct FaultOutcome {
   std::string headline;     // the verdict's
 };
 
-enum class ClaimResult {
-  Proven,       // a break gives `expect` (and no legal variation fails)
-  Hollow,       // no break changes the verdict: nothing shows the rule is checked
-  FailsLegal,   // a legal variation fails: the case depends on a freedom of the rule
-  Pending,      // the rule has no fault yet (RuleFaults::pending)
-  NotChecked,   // R-UB: never checked for a result
-  UnknownRule,  // not in the table
-};
-const char* claimResultName(ClaimResult r);
+#define RAYSPEC_CLAIM_RESULTS(X)                                                       \
+  /* a break gives `expect` (and no legal variation fails) */                          \
+  X(Proven, "proven")                                                                  \
+  /* no break changes the verdict: nothing shows the rule is checked */                \
+  X(Hollow, "hollow")                                                                  \
+  /* a legal variation fails: the case depends on a freedom of the rule */             \
+  X(FailsLegal, "fails a legal device")                                                \
+  X(Pending, "pending")          /* the rule has no fault yet (RuleFaults::pending) */ \
+  X(NotChecked, "not checked")   /* R-UB: never checked for a result */                \
+  X(UnknownRule, "unknown rule") /* not in the table */
+enum class ClaimResult { RAYSPEC_CLAIM_RESULTS(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(ClaimResult, RAYSPEC_CLAIM_RESULTS);
+inline const char* claimResultName(ClaimResult r) {
+  return nameOf(r);
+}
 
 struct ClaimProof {
   std::string rule;

@@ -8,17 +8,6 @@
 namespace rayspec {
 namespace {
 
-struct PathName {
-  FeaturePath path;
-  const char* name;
-};
-constexpr PathName kPaths[] = {
-    {FeaturePath::Indirect, "indirect"},   {FeaturePath::Indirect2, "indirect2"},
-    {FeaturePath::Libraries, "libraries"}, {FeaturePath::Clone, "clone"},
-    {FeaturePath::Compact, "compact"},     {FeaturePath::Serialize, "serialize"},
-    {FeaturePath::Update, "update"},       {FeaturePath::RayQuery, "ray-query"},
-};
-
 // The launch by an indirect command, where the case launches directly.
 bool launchIndirect(Case& c, TraceCommand command, std::string* why_not) {
   if (c.rays.command != TraceCommand::Direct) {
@@ -81,23 +70,15 @@ bool tracedByRayQuery(Case& c, std::string* why_not) {
 }  // namespace
 
 const char* featurePathName(FeaturePath p) {
-  for (const PathName& n : kPaths)
-    if (n.path == p) return n.name;
-  return "?";
+  return nameOf(p);
 }
 
 std::optional<FeaturePath> featurePathFromName(const std::string& name) {
-  for (const PathName& n : kPaths)
-    if (name == n.name) return n.path;
-  return std::nullopt;
+  return valueNamed<FeaturePath>(name);
 }
 
 const std::string& featurePathNames() {
-  static const std::string names = [] {
-    std::string s;
-    for (const PathName& n : kPaths) s += (s.empty() ? "" : ", ") + std::string(n.name);
-    return s;
-  }();
+  static const std::string names = namesJoined(enumNames<FeaturePath>());
   return names;
 }
 

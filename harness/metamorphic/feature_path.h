@@ -10,20 +10,24 @@
 #include <optional>
 #include <string>
 
+#include "base/enum_names.h"
 #include "case/case.h"
 
 namespace rayspec {
 
-enum class FeaturePath {
-  Indirect,   // rays.command indirect: vkCmdTraceRaysIndirectKHR
-  Indirect2,  // rays.command indirect2: vkCmdTraceRaysIndirect2KHR
-  Libraries,  // every miss, hit and callable group in one pipeline library
-  Clone,      // scene.build.copy clone
-  Compact,    // scene.build.copy compact
-  Serialize,  // scene.build.copy serialize
-  Update,     // built with ALLOW_UPDATE, then updated in place to the same scene
-  RayQuery,   // every trace a ray query loop in raygen (case/ray_query_inlining.h)
-};
+#define RAYSPEC_FEATURE_PATHS(X)                                                             \
+  X(Indirect, "indirect")   /* rays.command indirect: vkCmdTraceRaysIndirectKHR */           \
+  X(Indirect2, "indirect2") /* rays.command indirect2: vkCmdTraceRaysIndirect2KHR */         \
+  X(Libraries, "libraries") /* every miss, hit and callable group in one pipeline library */ \
+  X(Clone, "clone")         /* scene.build.copy clone */                                     \
+  X(Compact, "compact")     /* scene.build.copy compact */                                   \
+  X(Serialize, "serialize") /* scene.build.copy serialize */                                 \
+  /* built with ALLOW_UPDATE, then updated in place to the same scene */                     \
+  X(Update, "update")                                                                        \
+  /* every trace a ray query loop in raygen (case/ray_query_inlining.h) */                   \
+  X(RayQuery, "ray-query")
+enum class FeaturePath { RAYSPEC_FEATURE_PATHS(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(FeaturePath, RAYSPEC_FEATURE_PATHS);
 
 const char* featurePathName(FeaturePath p);
 std::optional<FeaturePath> featurePathFromName(const std::string& name);

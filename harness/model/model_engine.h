@@ -19,6 +19,7 @@
 
 #include <string>
 
+#include "base/enum_names.h"
 #include "case/case.h"
 #include "model/model_faults.h"
 #include "plan/plan.h"
@@ -26,7 +27,9 @@
 
 namespace rayspec {
 
-enum class ModelTier { Fast, Robust, Exact };
+#define RAYSPEC_MODEL_TIERS(X) X(Fast, "fast") X(Robust, "robust") X(Exact, "exact")
+enum class ModelTier { RAYSPEC_MODEL_TIERS(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(ModelTier, RAYSPEC_MODEL_TIERS);
 ModelTier parseModelTier(
     const std::string& name);  // fast|robust|exact; throws std::invalid_argument
 const char* modelTierName(ModelTier t);

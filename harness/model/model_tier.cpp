@@ -13,15 +13,7 @@ ModelTier parseModelTier(const std::string& name) {
 }
 
 const char* modelTierName(ModelTier t) {
-  switch (t) {
-    case ModelTier::Fast:
-      return "fast";
-    case ModelTier::Robust:
-      return "robust";
-    case ModelTier::Exact:
-      return "exact";
-  }
-  return "?";
+  return nameOf(t);
 }
 
 }  // namespace rayspec

@@ -11,13 +11,9 @@ bool isLocalName(const std::string& name) {
   });
 }
 
-namespace {
-constexpr const char* kGlslNames[] = {"bool", "uint", "float", "vec2", "vec3", "vec4"};
-}
-
 std::optional<ValueType> valueTypeNamed(const std::string& name) {
-  for (int i = 0; i < 6; ++i)
-    if (name == kGlslNames[i]) return static_cast<ValueType>(i);
+  for (ValueType t : enumValues<ValueType>())
+    if (name == valueTypeSpelling(t)) return t;
   return std::nullopt;
 }
 

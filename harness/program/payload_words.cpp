@@ -52,17 +52,7 @@ std::optional<WordArray> wordArrayOfOp(const std::string& op) {
 }
 
 const char* wordArrayName(WordArray which) {
-  switch (which) {
-    case WordArray::Payload:
-      return "payload.words";
-    case WordArray::Child:
-      return "child.words";
-    case WordArray::Call:
-      return "call.words";
-    case WordArray::Callee:
-      return "callee.words";
-  }
-  return "";
+  return nameOf(which);
 }
 
 std::optional<WordArray> wordArrayOfStore(const std::string& array) {

@@ -4,6 +4,8 @@
 // and `child.word<i>` (the last nested trace's payload).
 #pragma once
 
+#include "base/enum_names.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -51,12 +53,14 @@ std::optional<uint32_t> attributeWordBuiltin(const std::string& name);
 // {callee_word: i} read, and `store: {array: payload.words | call.words,
 // index: i, value: v}` writes, word i % N of one data array, N the words of
 // that array's type as the stage declares it (Pipeline::indexedWords).
-enum class WordArray : uint8_t {
-  Payload,  // the incoming payload (miss, closest-hit, any-hit); in raygen the last trace's
-  Child,    // the last nested trace's payload (closest-hit, miss)
-  Call,     // the incoming callable data (callable)
-  Callee,   // the last call's data
-};
+#define RAYSPEC_WORD_ARRAYS(X)                                                        \
+  /* the incoming payload (miss, closest-hit, any-hit); in raygen the last trace's */ \
+  X(Payload, "payload.words")                                                         \
+  X(Child, "child.words")   /* the last nested trace's payload (closest-hit, miss) */ \
+  X(Call, "call.words")     /* the incoming callable data (callable) */               \
+  X(Callee, "callee.words") /* the last call's data */
+enum class WordArray : uint8_t { RAYSPEC_WORD_ARRAYS(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(WordArray, RAYSPEC_WORD_ARRAYS);
 // "payload_word" / "child_word" / "call_word" / "callee_word"; nullopt otherwise.
 std::optional<WordArray> wordArrayOfOp(const std::string& op);
 // The array's name: "payload.words", "child.words", "call.words",

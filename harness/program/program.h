@@ -8,17 +8,34 @@
 #include <string>
 #include <vector>
 
+#include "base/enum_names.h"
 #include "base/source_loc.h"
 
 namespace rayspec {
 
-enum class Stage { Raygen, Miss, ClosestHit, AnyHit, Intersection, Callable };
-const char* stageName(Stage s);  // "raygen", "miss", "closest_hit", ...
+#define RAYSPEC_STAGES(X)                                           \
+  X(Raygen, "raygen")                                               \
+  X(Miss, "miss") X(ClosestHit, "closest_hit") X(AnyHit, "any_hit") \
+      X(Intersection, "intersection") X(Callable, "callable")
+enum class Stage { RAYSPEC_STAGES(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(Stage, RAYSPEC_STAGES);
+inline const char* stageName(Stage s) {
+  return nameOf(s);
+}
 
 // Value types of expressions. Bool only appears in conditions.
-enum class ValueType { Bool, Uint, Float, Vec2, Vec3, Vec4 };
-const char* valueTypeName(ValueType t);
-int componentCount(ValueType t);  // Bool/Uint/Float 1, Vec2 2, ...
+// Rows: X(ValueType, "name", "the case's and GLSL's spelling", components).
+#define RAYSPEC_VALUE_TYPES(X)                                                        \
+  X(Bool, "Bool", "bool", 1)                                                          \
+  X(Uint, "Uint", "uint", 1) X(Float, "Float", "float", 1) X(Vec2, "Vec2", "vec2", 2) \
+      X(Vec3, "Vec3", "vec3", 3) X(Vec4, "Vec4", "vec4", 4)
+enum class ValueType { RAYSPEC_VALUE_TYPES(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(ValueType, RAYSPEC_VALUE_TYPES);
+inline const char* valueTypeName(ValueType t) {
+  return nameOf(t);
+}
+const char* valueTypeSpelling(ValueType t);  // "bool", "uint", ..., "vec4"
+int componentCount(ValueType t);             // Bool/Uint/Float 1, Vec2 2, ...
 
 // An expression, written in YAML as
 //   a number            -> literal (Uint if written without '.', 'e', or sign

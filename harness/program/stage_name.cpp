@@ -3,53 +3,18 @@
 
 namespace rayspec {
 
-const char* stageName(Stage s) {
-  switch (s) {
-    case Stage::Raygen:
-      return "raygen";
-    case Stage::Miss:
-      return "miss";
-    case Stage::ClosestHit:
-      return "closest_hit";
-    case Stage::AnyHit:
-      return "any_hit";
-    case Stage::Intersection:
-      return "intersection";
-    case Stage::Callable:
-      return "callable";
-  }
-  return "?";
-}
-
-const char* valueTypeName(ValueType t) {
-  switch (t) {
-    case ValueType::Bool:
-      return "Bool";
-    case ValueType::Uint:
-      return "Uint";
-    case ValueType::Float:
-      return "Float";
-    case ValueType::Vec2:
-      return "Vec2";
-    case ValueType::Vec3:
-      return "Vec3";
-    case ValueType::Vec4:
-      return "Vec4";
-  }
-  return "?";
+const char* valueTypeSpelling(ValueType t) {
+#define RAYSPEC_VALUE_TYPE_SPELLING(id, name, spelling, components) spelling,
+  static constexpr const char* kSpellings[] = {RAYSPEC_VALUE_TYPES(RAYSPEC_VALUE_TYPE_SPELLING)};
+#undef RAYSPEC_VALUE_TYPE_SPELLING
+  return kSpellings[static_cast<size_t>(t)];
 }
 
 int componentCount(ValueType t) {
-  switch (t) {
-    case ValueType::Vec2:
-      return 2;
-    case ValueType::Vec3:
-      return 3;
-    case ValueType::Vec4:
-      return 4;
-    default:
-      return 1;
-  }
+#define RAYSPEC_VALUE_TYPE_COMPONENTS(id, name, spelling, components) components,
+  static constexpr int kComponents[] = {RAYSPEC_VALUE_TYPES(RAYSPEC_VALUE_TYPE_COMPONENTS)};
+#undef RAYSPEC_VALUE_TYPE_COMPONENTS
+  return kComponents[static_cast<size_t>(t)];
 }
 
 }  // namespace rayspec

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "base/enum_names.h"
 #include "compare/verdict.h"
 #include "results/step_cost.h"
 
@@ -18,15 +19,17 @@ struct RayRow {
 
 // How a case's result stands against the driver's baseline (report/baseline.h,
 // judged by report/baseline_gate.h).
-enum class BaselineMatch {
-  None,            // no baseline, or a result it says nothing about: judged by its status alone
-  Expected,        // the baseline lists exactly this result
-  UnexpectedPass,  // the baseline expects a failure and the case no longer fails: update the
-                   // baseline
-  KnownFlake,      // an unexpected result of a case the flakes file names
-  Flake,           // an unexpected failure that its re-run did not repeat
-  Skipped,         // named by the skips file: not run
-};
+#define RAYSPEC_BASELINE_MATCHES(X)                                                       \
+  /* no baseline, or a result it says nothing about: judged by its status alone */        \
+  X(None, "")                                                                             \
+  X(Expected, "expected") /* the baseline lists exactly this result */                    \
+  /* the baseline expects a failure and the case no longer fails: update the baseline */  \
+  X(UnexpectedPass, "unexpected_pass")                                                    \
+  X(KnownFlake, "known_flake") /* an unexpected result of a case the flakes file names */ \
+  X(Flake, "flake")            /* an unexpected failure that its re-run did not repeat */ \
+  X(Skipped, "skipped")        /* named by the skips file: not run */
+enum class BaselineMatch { RAYSPEC_BASELINE_MATCHES(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(BaselineMatch, RAYSPEC_BASELINE_MATCHES);
 
 struct CaseOutcome {
   std::string name;

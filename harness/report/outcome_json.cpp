@@ -25,21 +25,7 @@ Status statusField(const nlohmann::json& j, const char* key) {
 }  // namespace
 
 const char* baselineMatchName(BaselineMatch m) {
-  switch (m) {
-    case BaselineMatch::None:
-      return "";
-    case BaselineMatch::Expected:
-      return "expected";
-    case BaselineMatch::UnexpectedPass:
-      return "unexpected_pass";
-    case BaselineMatch::KnownFlake:
-      return "known_flake";
-    case BaselineMatch::Flake:
-      return "flake";
-    case BaselineMatch::Skipped:
-      return "skipped";
-  }
-  return "";
+  return nameOf(m);
 }
 
 nlohmann::json outcomeJson(const CaseOutcome& o) {

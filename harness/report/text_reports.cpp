@@ -15,23 +15,10 @@
 namespace rayspec {
 
 const char* deqpStatusName(Status s) {
-  switch (s) {
-    case Status::Pass:
-      return "Pass";
-    case Status::Fail:
-      return "Fail";
-    case Status::QualityWarning:
-      return "Warn";
-    case Status::NotSupported:
-      return "Skip";
-    case Status::Crash:
-      return "Crash";
-    case Status::Timeout:
-      return "Timeout";
-    case Status::CaseError:
-      return "Fail";  // deqp-runner has no name for it
-  }
-  return "Crash";
+#define RAYSPEC_DEQP_NAME(id, name, deqp) deqp,
+  static constexpr const char* kDeqpNames[] = {RAYSPEC_STATUSES(RAYSPEC_DEQP_NAME)};
+#undef RAYSPEC_DEQP_NAME
+  return kDeqpNames[static_cast<size_t>(s)];
 }
 
 std::string writeResultsCsv(const std::vector<CaseOutcome>& outcomes, const std::string& path) {

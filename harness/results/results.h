@@ -61,26 +61,44 @@ struct Image {
 // valid pipeline within the limits): the case Fails.
 // InvalidShader: a stage rayspec generated did not compile or validate (our
 // error, never the device's: the case gets CaseError).
-enum class SideStatus { Ok, NotSupported, Crash, Timeout, Refused, InvalidShader };
-// "ok", "NotSupported", "Crash", "Timeout", "Refused", "InvalidShader"
-const char* sideStatusName(SideStatus s);
-bool parseSideStatus(const std::string& name, SideStatus* out);
+#define RAYSPEC_SIDE_STATUSES(X)                                                                \
+  X(Ok, "ok")                                                                                   \
+  X(NotSupported, "NotSupported") X(Crash, "Crash") X(Timeout, "Timeout") X(Refused, "Refused") \
+      X(InvalidShader, "InvalidShader")
+enum class SideStatus { RAYSPEC_SIDE_STATUSES(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(SideStatus, RAYSPEC_SIDE_STATUSES);
+inline const char* sideStatusName(SideStatus s) {
+  return nameOf(s);
+}
+inline bool parseSideStatus(const std::string& name, SideStatus* out) {
+  return parseEnumName(name, out);
+}
 
 // Why the model's exact tier found a ray numerically ambiguous. Stable names
 // (results.json): see ambiguityReasonName().
-enum class AmbiguityReason {
-  Edge,         // near an edge shared by two triangles (or a border edge)
-  Vertex,       // near a vertex (two or more edges within the bound)
-  TmaxTie,      // a hit within rounding of tmax
-  TminTie,      // a hit within rounding of tmin
-  TTie,         // equal t in different primitives or instances
-  FirstHit,     // TerminateOnFirstHit: which hit comes first is unspecified (R-TOFH)
-  Order,        // the answer depends on the traversal order (a terminating any-hit, R-ORDER-UNSPEC)
-  AabbFace,     // the ray passes within rounding of an AABB face
-  ShaderArith,  // an intersection program's decision within rounding (R-PREC)
-};
-const char* ambiguityReasonName(AmbiguityReason r);
-bool parseAmbiguityReason(const std::string& name, AmbiguityReason* out);
+// Rows: X(AmbiguityReason, "name", the rule a device answering outside the legal set breaks).
+#define RAYSPEC_AMBIGUITY_REASONS(X)                                                           \
+  /* near an edge shared by two triangles (or a border edge) */                                \
+  X(Edge, "edge", "R-WATERTIGHT")                                                              \
+  X(Vertex, "vertex", "R-WATERTIGHT") /* near a vertex (two or more edges within the bound) */ \
+  X(TmaxTie, "tmax-tie", "R-TIE")     /* a hit within rounding of tmax */                      \
+  X(TminTie, "tmin-tie", "R-TIE")     /* a hit within rounding of tmin */                      \
+  X(TTie, "t-tie", "R-TIE")           /* equal t in different primitives or instances */       \
+  /* TerminateOnFirstHit: which hit comes first is unspecified (R-TOFH) */                     \
+  X(FirstHit, "first-hit", "R-TOFH")                                                           \
+  /* the answer depends on the traversal order (a terminating any-hit, R-ORDER-UNSPEC) */      \
+  X(Order, "order", "R-ORDER-UNSPEC")                                                          \
+  X(AabbFace, "aabb-face", "R-AABB-CONS") /* the ray passes within rounding of an AABB face */ \
+  /* an intersection program's decision within rounding (R-PREC) */                            \
+  X(ShaderArith, "shader-arith", "R-PREC")
+enum class AmbiguityReason { RAYSPEC_AMBIGUITY_REASONS(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(AmbiguityReason, RAYSPEC_AMBIGUITY_REASONS);
+inline const char* ambiguityReasonName(AmbiguityReason r) {
+  return nameOf(r);
+}
+inline bool parseAmbiguityReason(const std::string& name, AmbiguityReason* out) {
+  return parseEnumName(name, out);
+}
 // The rule a device answering outside the legal set breaks.
 const char* ruleForAmbiguity(AmbiguityReason r);
 

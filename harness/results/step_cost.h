@@ -10,43 +10,55 @@
 #include <cstddef>
 #include <string>
 
+#include "base/enum_names.h"
+
 namespace rayspec {
 
-enum class CostStep {
-  // the parent
-  Parse,       // reading and parsing the case file (sweep expansion included)
-  Plan,        // deriving the plan
-  Process,     // a child's start and end: the side's wall time less the steps it reported
-  ReadBundle,  // reading a side's results bundle back
-  ImageFiles,  // PNG / EXR files of a side's images
-  Comparison,  // judging the case (compare, verdict, diff images, failing rays)
-  Reports,     // rewriting the run's reports with the case
-  RecordsCsv,  // records.csv of both sides (a case that did not pass, or --records-csv)
-  // either side, in its process
-  BackendSetup,  // making the backend: Vulkan instance and device (validation layer); nothing much
-                 // for the model
-  BackendTeardown,  // closing it (device destruction, the layer's last messages)
-  WriteBundle,      // writing the results bundle
-  // the device
-  GlslGeneration,     // the stage programs as GLSL
-  SpirvCompile,       // glslang + SPIRV-Tools, SPIR-V cache miss
-  SpirvCacheHit,      // SPIR-V taken from the cache
-  PipelineCreation,   // vkCreateRayTracingPipelinesKHR (shader modules included)
-  Buffers,            // case buffers, descriptor set and layouts
-  AccelerationBuild,  // BLAS + TLAS builds, recorded and waited on
-  Sbt,                // group handles and the shader binding table
-  Trace,              // vkCmdTraceRaysKHR, recorded and waited on
-  ReadBack,           // records, counters and images to host memory
-  CaseCleanup,        // waiting for the device and destroying the case's objects
-  // the model
-  ModelScene,  // Embree scene and the programs
-  ModelTrace,  // every ray through the model
-};
-inline constexpr size_t kCostSteps = static_cast<size_t>(CostStep::ModelTrace) + 1;
+#define RAYSPEC_COST_STEPS(X)                                                                      \
+  /* the parent */                                                                                 \
+  X(Parse, "parse") /* reading and parsing the case file (sweep expansion included) */             \
+  X(Plan, "plan")   /* deriving the plan */                                                        \
+  X(Process,                                                                                       \
+    "process") /* a child's start and end: the side's wall time less the steps it reported */      \
+  X(ReadBundle, "read_bundle") /* reading a side's results bundle back */                          \
+  X(ImageFiles, "image_files") /* PNG / EXR files of a side's images */                            \
+  X(Comparison, "comparison") /* judging the case (compare, verdict, diff images, failing rays) */ \
+  X(Reports, "reports")       /* rewriting the run's reports with the case */                      \
+  X(RecordsCsv,                                                                                    \
+    "records_csv") /* records.csv of both sides (a case that did not pass, or --records-csv) */    \
+  /* either side, in its process */                                                                \
+  X(BackendSetup, "backend_setup") /* making the backend: Vulkan instance and device (validation   \
+                                      layer); nothing much */                                      \
+  /* for the model */                                                                              \
+  X(BackendTeardown,                                                                               \
+    "backend_teardown")          /* closing it (device destruction, the layer's last messages) */  \
+  X(WriteBundle, "write_bundle") /* writing the results bundle */                                  \
+  /* the device */                                                                                 \
+  X(GlslGeneration, "glsl_generation") /* the stage programs as GLSL */                            \
+  X(SpirvCompile, "spirv_compile")     /* glslang + SPIRV-Tools, SPIR-V cache miss */              \
+  X(SpirvCacheHit, "spirv_cache_hit")  /* SPIR-V taken from the cache */                           \
+  X(PipelineCreation,                                                                              \
+    "pipeline_creation") /* vkCreateRayTracingPipelinesKHR (shader modules included) */            \
+  X(Buffers, "buffers")  /* case buffers, descriptor set and layouts */                            \
+  X(AccelerationBuild, "acceleration_build") /* BLAS + TLAS builds, recorded and waited on */      \
+  X(Sbt, "sbt")                              /* group handles and the shader binding table */      \
+  X(Trace, "trace")                          /* vkCmdTraceRaysKHR, recorded and waited on */       \
+  X(ReadBack, "read_back")                   /* records, counters and images to host memory */     \
+  X(CaseCleanup, "case_cleanup") /* waiting for the device and destroying the case's objects */    \
+  /* the model */                                                                                  \
+  X(ModelScene, "model_scene") /* Embree scene and the programs */                                 \
+  X(ModelTrace, "model_trace") /* every ray through the model */
+enum class CostStep { RAYSPEC_COST_STEPS(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(CostStep, RAYSPEC_COST_STEPS);
+inline constexpr size_t kCostSteps = enumCount<CostStep>();
 
 // Stable name ("spirv_compile"); parseCostStep reads it back.
-const char* costStepName(CostStep s);
-bool parseCostStep(const std::string& name, CostStep* out);
+inline const char* costStepName(CostStep s) {
+  return nameOf(s);
+}
+inline bool parseCostStep(const std::string& name, CostStep* out) {
+  return parseEnumName(name, out);
+}
 
 struct StepCosts {
   std::array<double, kCostSteps> seconds{};
@@ -60,9 +72,13 @@ struct StepCosts {
 // Who spent the time: the parent (the run loop), or a side (its process's
 // own steps, plus what the parent spent on it: process, read_bundle,
 // image_files).
-enum class CostSide { Parent, Model, Device };
-inline constexpr size_t kCostSides = 3;
-const char* costSideName(CostSide s);  // "parent", "model", "device"
+#define RAYSPEC_COST_SIDES(X) X(Parent, "parent") X(Model, "model") X(Device, "device")
+enum class CostSide { RAYSPEC_COST_SIDES(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(CostSide, RAYSPEC_COST_SIDES);
+inline constexpr size_t kCostSides = enumCount<CostSide>();
+inline const char* costSideName(CostSide s) {
+  return nameOf(s);
+}
 
 struct CaseCost {
   std::array<StepCosts, kCostSides> sides;

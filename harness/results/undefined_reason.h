@@ -4,22 +4,36 @@
 
 #include <string>
 
+#include "base/enum_names.h"
+
 namespace rayspec {
 
 // Such rays are never judged; the device only has to survive them.
-enum class UndefinedReason {
-  RayParameters,  // non-finite origin/direction, NaN, tmin < 0, tmax < tmin
-  NanTriangle,    // a candidate triangle has NaN in Y or Z (not X: that one is inactive)
-  HitRecordOutOfRange,
-  MissRecordOutOfRange,
-  CallableOutOfRange,
-  DivisionByZero,    // integer division or modulo by zero in a stage program
-  RecursionTooDeep,  // traceRay beyond max_recursion, or callables nested too deeply
-  PayloadType,       // the shader reached declares another incoming payload type than the trace's
-  NullShader,        // a NO_NULL_*_SHADERS pipeline reaches an all-zero record for that shader
-  CallDataType,      // the callable reached declares another incoming data type than the call's
-};
-const char* undefinedReasonName(UndefinedReason r);
-bool parseUndefinedReason(const std::string& name, UndefinedReason* out);
+#define RAYSPEC_UNDEFINED_REASONS(X)                                               \
+  /* non-finite origin/direction, NaN, tmin < 0, tmax < tmin */                    \
+  X(RayParameters, "ray-parameters")                                               \
+  /* a candidate triangle has NaN in Y or Z (not X: that one is inactive) */       \
+  X(NanTriangle, "nan-triangle")                                                   \
+  X(HitRecordOutOfRange, "hit-record-out-of-range")                                \
+  X(MissRecordOutOfRange, "miss-record-out-of-range")                              \
+  X(CallableOutOfRange, "callable-out-of-range")                                   \
+  /* integer division or modulo by zero in a stage program */                      \
+  X(DivisionByZero, "division-by-zero")                                            \
+  /* traceRay beyond max_recursion, or callables nested too deeply */              \
+  X(RecursionTooDeep, "recursion-too-deep")                                        \
+  /* the shader reached declares another incoming payload type than the trace's */ \
+  X(PayloadType, "payload-type")                                                   \
+  /* a NO_NULL_*_SHADERS pipeline reaches an all-zero record for that shader */    \
+  X(NullShader, "null-shader")                                                     \
+  /* the callable reached declares another incoming data type than the call's */   \
+  X(CallDataType, "call-data-type")
+enum class UndefinedReason { RAYSPEC_UNDEFINED_REASONS(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(UndefinedReason, RAYSPEC_UNDEFINED_REASONS);
+inline const char* undefinedReasonName(UndefinedReason r) {
+  return nameOf(r);
+}
+inline bool parseUndefinedReason(const std::string& name, UndefinedReason* out) {
+  return parseEnumName(name, out);
+}
 
 }  // namespace rayspec
