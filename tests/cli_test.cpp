@@ -3,6 +3,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -209,35 +210,89 @@ class ReportRun : public ::testing::Test {
 std::string ReportRun::out_;
 int ReportRun::rc_ = -1;
 
+// The DOM headless Chromium has once report.html (and its script) loaded at
+// the address's fragment, which may set the page's filter ("" on failure,
+// the reason in a test failure).
+std::string reportDom(const std::string& out, const std::string& fragment,
+                      const std::string& name) {
+  const std::string profile = fresh("chromium-profile-" + name);
+  const std::string dom = out + "/dom-" + name + ".html";
+  const int rc =
+      sh("chromium --headless --no-sandbox --disable-gpu --disable-background-networking "
+         "--disable-component-update --disable-sync --no-first-run --allow-file-access-from-files "
+         "--virtual-time-budget=5000 --user-data-dir=" +
+             profile + " --dump-dom 'file://" + out + "/report.html" + fragment + "' > " + dom +
+             " 2> " + out + "/chromium-stderr.txt; cat " + dom,
+         out + "/chromium-log.txt");
+  EXPECT_EQ(rc, 0) << slurp(out + "/chromium-stderr.txt");
+  return rc == 0 ? slurp(dom) : std::string();
+}
+
+std::string bodyTag(const std::string& dom) {
+  std::smatch m;
+  return std::regex_search(dom, m, std::regex(R"(<body[^>]*>)")) ? m.str() : std::string();
+}
+
+// Whether the filter hid the element of a case: its opening tag as the DOM has it.
+bool caseHidden(const std::string& dom, const std::string& name) {
+  const size_t id = dom.find("id=\"" + name + "\"");
+  EXPECT_NE(id, std::string::npos) << name;
+  if (id == std::string::npos) return false;
+  const size_t open = dom.rfind('<', id);
+  return dom.substr(open, dom.find('>', id) - open).find(" hidden") != std::string::npos;
+}
+
 TEST_F(ReportRun, ReportHtmlOpensInChromiumWithEveryImageShown) {
   ASSERT_EQ(rc_, 1) << slurp(out_ + "/log.txt");
   const std::string c = out_ + "/anyhit/ignore-odd-primitives";
   for (const char* side : {"/device/", "/model/", "/diff/"})
     ASSERT_TRUE(fs::exists(c + side + "primitive.png")) << c + side << "primitive.png";
-  const std::string profile = fresh("chromium-profile");
-  const std::string dom = out_ + "/dom.html";
-  const int rc =
-      sh("chromium --headless --no-sandbox --disable-gpu --disable-background-networking "
-         "--disable-component-update --disable-sync --no-first-run --allow-file-access-from-files "
-         "--virtual-time-budget=5000 --user-data-dir=" +
-             profile + " --dump-dom file://" + out_ + "/report.html > " + dom + " 2> " + out_ +
-             "/chromium-stderr.txt; cat " + dom,
-         out_ + "/chromium-log.txt");
-  ASSERT_EQ(rc, 0) << slurp(out_ + "/chromium-stderr.txt");
-  const std::string text = slurp(dom);
-  std::smatch m;
-  ASSERT_TRUE(std::regex_search(text, m, std::regex(R"(<body[^>]*>)"))) << text.substr(0, 400);
-  const std::string body = m.str();
+  const std::string text = reportDom(out_, "", "plain");
+  const std::string body = bodyTag(text);
+  ASSERT_FALSE(body.empty()) << text.substr(0, 400);
   EXPECT_NE(body.find("data-checked=\"1\""), std::string::npos)
       << "the page's check never ran: " << body;
   EXPECT_NE(body.find("data-broken-images=\"0\""), std::string::npos) << body;
   EXPECT_NE(body.find("data-script-errors=\"0\""), std::string::npos) << body;
+  EXPECT_NE(body.find("data-shown=\"3\""), std::string::npos) << "no filter: every case" << body;
   std::smatch images;
   ASSERT_TRUE(std::regex_search(body, images, std::regex(R"re(data-images="([0-9]+)")re"))) << body;
   EXPECT_GE(std::stoi(images[1]), 3) << "device, model and difference images of the failing case";
-  // The failing case comes first, with its per-ray table.
+  // The failing case comes first, with its per-ray table folded.
   EXPECT_LT(text.find("anyhit/ignore-odd-primitives"), text.find("results/miss-xor-closest-hit"));
-  EXPECT_NE(text.find("<th>device</th><th>model</th>"), std::string::npos);
+  EXPECT_NE(text.find("<th>field</th><th>device</th><th>model</th>"), std::string::npos);
+}
+
+// The filter, set from the address as a link of the summary tables sets it:
+// by status, family, rule and text, the cases it leaves out hidden.
+TEST_F(ReportRun, ReportHtmlFiltersByStatusFamilyRuleAndText) {
+  ASSERT_EQ(rc_, 1) << slurp(out_ + "/log.txt");
+  const std::string fail = "anyhit/ignore-odd-primitives", miss = "results/miss-xor-closest-hit",
+                    edges = "watertight/shared-edges";
+  struct Filter {
+    std::string fragment, name;
+    std::vector<std::string> shown;
+  };
+  const std::vector<Filter> filters{
+      {"#filter?status=Pass", "status", {miss, edges}},
+      {"#filter?family=anyhit", "family", {fail}},
+      {"#filter?rule=R-MISS-XOR-CHIT", "rule", {fail, miss}},
+      {"#filter?q=XOR-CLOSEST", "search", {miss}},
+      {"#filter?family=watertight&status=Fail", "nothing", {}},
+  };
+  for (const Filter& f : filters) {
+    SCOPED_TRACE(f.fragment);
+    const std::string dom = reportDom(out_, f.fragment, f.name);
+    const std::string body = bodyTag(dom);
+    EXPECT_NE(body.find("data-script-errors=\"0\""), std::string::npos) << body;
+    EXPECT_NE(body.find("data-shown=\"" + std::to_string(f.shown.size()) + "\""), std::string::npos)
+        << body;
+    for (const std::string& name : {fail, miss, edges})
+      EXPECT_EQ(caseHidden(dom, name),
+                std::find(f.shown.begin(), f.shown.end(), name) == f.shown.end())
+          << name;
+    EXPECT_NE(dom.find(std::to_string(f.shown.size()) + " of 3 cases shown"), std::string::npos);
+  }
 }
 
 TEST_F(ReportRun, ResultsCsvReadsBackAsDeqpRunnerCsv) {

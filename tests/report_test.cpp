@@ -143,9 +143,8 @@ TEST(Reports, CaseErrorsAreGroupedApartInHtmlTextAndJson) {
   const std::string dir = testing_support::testDir() + "/rayspec-report-test-case-error-groups";
   ASSERT_EQ(writeReports(outcomesWithUndefinedBehaviour(), RunInfo{}, dir), "");
   const std::string html = slurp(dir + "/report.html");
-  const size_t failing = html.find("<h2>Failing cases</h2>"),
-               errors = html.find("<h2>Case errors</h2>"),
-               others = html.find("<h2>Other cases</h2>"),
+  const size_t failing = html.find("<h2>Failing cases ("), errors = html.find("<h2>Case errors ("),
+               others = html.find("<h2>Other cases ("),
                broken = html.find("id=\"builtins/broken\"");
   ASSERT_NE(errors, std::string::npos);
   EXPECT_LT(failing, errors);

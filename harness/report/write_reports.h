@@ -9,10 +9,13 @@
 //                 people, one block per case, CaseError cases apart
 //   failures.csv  the results the baseline did not expect, in baseline form
 //                 (report/baseline_gate.h); every failure when there is none
-//   report.html   whether the run is complete, failing cases first, then the case
-//                 errors (the case at fault, not the device), device / model /
-//                 difference images side by side, per-ray tables of failing rays,
-//                 undefined rays apart, rule coverage
+//   report.html   whether the run is complete, counts by status per family and
+//                 per rule (rule coverage with them), a filter (status, family,
+//                 rule, text); failing cases first, then the case errors (the case
+//                 at fault, not the device), each with its findings and, folded,
+//                 device / model / difference images side by side, undefined rays
+//                 apart and per-ray tables of failing rays (the differing fields
+//                 shown); a row per other case (report/report_case_html.h)
 #pragma once
 
 #include <map>
