@@ -13,10 +13,15 @@
 
 namespace rayspec {
 
-#define RAYSPEC_STAGES(X)                                           \
-  X(Raygen, "raygen")                                               \
-  X(Miss, "miss") X(ClosestHit, "closest_hit") X(AnyHit, "any_hit") \
-      X(Intersection, "intersection") X(Callable, "callable")
+// clang-format off
+#define RAYSPEC_STAGES(X)           \
+  X(Raygen, "raygen")               \
+  X(Miss, "miss")                   \
+  X(ClosestHit, "closest_hit")      \
+  X(AnyHit, "any_hit")              \
+  X(Intersection, "intersection")   \
+  X(Callable, "callable")
+// clang-format on
 enum class Stage { RAYSPEC_STAGES(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(Stage, RAYSPEC_STAGES);
 inline const char* stageName(Stage s) {
@@ -25,10 +30,15 @@ inline const char* stageName(Stage s) {
 
 // Value types of expressions. Bool only appears in conditions.
 // Rows: X(ValueType, "name", "the case's and GLSL's spelling", components).
-#define RAYSPEC_VALUE_TYPES(X)                                                        \
-  X(Bool, "Bool", "bool", 1)                                                          \
-  X(Uint, "Uint", "uint", 1) X(Float, "Float", "float", 1) X(Vec2, "Vec2", "vec2", 2) \
-      X(Vec3, "Vec3", "vec3", 3) X(Vec4, "Vec4", "vec4", 4)
+// clang-format off
+#define RAYSPEC_VALUE_TYPES(X)      \
+  X(Bool, "Bool", "bool", 1)        \
+  X(Uint, "Uint", "uint", 1)        \
+  X(Float, "Float", "float", 1)     \
+  X(Vec2, "Vec2", "vec2", 2)        \
+  X(Vec3, "Vec3", "vec3", 3)        \
+  X(Vec4, "Vec4", "vec4", 4)
+// clang-format on
 enum class ValueType { RAYSPEC_VALUE_TYPES(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(ValueType, RAYSPEC_VALUE_TYPES);
 inline const char* valueTypeName(ValueType t) {

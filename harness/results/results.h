@@ -61,10 +61,10 @@ struct Image {
 // valid pipeline within the limits): the case Fails.
 // InvalidShader: a stage rayspec generated did not compile or validate (our
 // error, never the device's: the case gets CaseError).
-#define RAYSPEC_SIDE_STATUSES(X)                                                                \
-  X(Ok, "ok")                                                                                   \
-  X(NotSupported, "NotSupported") X(Crash, "Crash") X(Timeout, "Timeout") X(Refused, "Refused") \
-      X(InvalidShader, "InvalidShader")
+#define RAYSPEC_SIDE_STATUSES(X)  \
+  X(Ok, "ok")                     \
+  X(NotSupported, "NotSupported") \
+  X(Crash, "Crash") X(Timeout, "Timeout") X(Refused, "Refused") X(InvalidShader, "InvalidShader")
 enum class SideStatus { RAYSPEC_SIDE_STATUSES(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(SideStatus, RAYSPEC_SIDE_STATUSES);
 inline const char* sideStatusName(SideStatus s) {
