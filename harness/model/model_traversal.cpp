@@ -1,7 +1,8 @@
-// traceRayEXT in the model: Embree enumerates, the model decides (see the
-// order documented in model_engine.h), then closest-hit or miss runs. The
-// exact tier's ambiguity check is in model_exact_tier.cpp, the path without
-// decisions in model_fast_path.cpp.
+// ModelTracer (model_tracer.h): Embree enumerates, the tracer decides (see
+// the order documented in model_engine.h), then closest-hit or miss runs.
+// An intersection program's reports and any-hit go through HitProtocol
+// (hit_protocol.cpp); the exact tier's ambiguity check is in
+// model_exact_tier.cpp, the path without decisions in model_fast_path.cpp.
 #include <algorithm>
 #include <bit>
 #include <cmath>

@@ -32,7 +32,7 @@ class StageInterpreter {
  private:
   // shader_record.NAME: its words in the record data (pipeline.sbt.record_layout).
   static Val recordMember(const CExpr& e, const StageEnv& env);
-  Val op(const CExpr& e, StageEnv& env);
+  Val op(const CExpr& e, StageEnv& env);  // stage_interpreter_ops.cpp
   // The ops op() runs before evaluating arguments (spheres, shader record
   // words, short-circuit and/or); false for any other op.
   bool opOnDemand(const CExpr& e, StageEnv& env, Val& r);
