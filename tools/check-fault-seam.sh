@@ -4,7 +4,8 @@
 # mutate's generic wrong devices, harness/mutate/, build on them); the rest
 # of the product reaches them only through
 #   run/fault_seam.h       the run's one entry: refuse, place, arm a fault
-#   model/model_faults.h   the model's hook (ModelOptions::faults)
+#   model/model_faults.h   the model's hook (ModelOptions::faults), read in
+#                          the model by model/model_fault_seam.* alone
 #   vulkan/vk_fault_hook.h the Vulkan side's hook (obeyed by vkCall only)
 # Prints each use outside them; exits 1 if there is one.
 set -euo pipefail
@@ -31,8 +32,11 @@ check "a fault/ header" '#include "fault/' harness/fault/ harness/mutate/ harnes
 check "the Vulkan fault hook" 'injectVkError|injectedVkError|InjectedVkError' \
   harness/vulkan/vk_fault_hook. harness/vulkan/vk_check.h harness/vulkan/device_errors. \
   harness/run/fault_seam.cpp
+# Inside the model only its seam reads a knob; model_faults.h defines them
+# and model_engine.h carries them in (ModelOptions::faults).
 check "the model's fault hook" 'ModelFaults|ModelDeviation|CandidateOrder|[.>]faults\b' \
-  harness/model/ harness/fault/
+  harness/model/model_fault_seam. harness/model/model_faults.h harness/model/model_engine.h \
+  harness/fault/
 check "the planted fault library" 'plantFault|raiseProcessFault|isProcessFault|faultTable\(' \
   harness/fault/ harness/mutate/ harness/run/fault_seam.cpp
 

@@ -1,12 +1,12 @@
 // The model's meaning of every built-in (program/builtins.h): the launch,
 // the hit or candidate, the ray, the instance matrices, vertex positions,
 // and the payload and callable data a stage reads.
-#include "model/model_machine.h"
+#include "model/model_builtins.h"
 
 namespace rayspec {
 
 // The payload and callable data a stage reads (payload.*, child.*, call.*, callee.*).
-Val Machine::dataBuiltin(const CExpr& e, StageEnv& env) {
+Val ModelBuiltins::dataBuiltin(const CExpr& e, StageEnv& env) const {
   static const Payload kNoPayload;
   static const CallData kNoCall;
   const Payload* pl = env.payload ? env.payload : &kNoPayload;
@@ -43,12 +43,11 @@ Val Machine::dataBuiltin(const CExpr& e, StageEnv& env) {
     default:
       break;
   }
-  if (error.empty())
-    error = "model: unknown built-in '" + (e.src ? e.src->name : std::string("?")) + "'";
+  unknown(e);
   return Val{};
 }
 
-uint32_t* Machine::dataWord(WordArray which, uint32_t words, uint32_t index, StageEnv& env) {
+uint32_t* ModelBuiltins::dataWord(WordArray which, uint32_t words, uint32_t index, StageEnv& env) {
   if (words == 0) return nullptr;
   const uint32_t i = index % words;
   switch (which) {
@@ -67,19 +66,19 @@ uint32_t* Machine::dataWord(WordArray which, uint32_t words, uint32_t index, Sta
 // vertex_position<i>: the hit triangle's vertex in object space (zero for a
 // box, where reading it is refused at parse time). The planted fault
 // position_fetch_world_space takes it through the instance transform.
-Val Machine::vertexPosition(const HitView& hv, int i) const {
+Val ModelBuiltins::vertexPosition(const HitView& hv, int i) const {
   if (!hv.vertices) return Val{};
   const Vec3& p = (*hv.vertices)[static_cast<size_t>(i)];
-  if (!sh_.faults.position_fetch_world_space) return fromVec3(p);
+  if (!sh_.fault_seam.positionFetchWorldSpace()) return fromVec3(p);
   return fromVec3(applyAffine(sh_.c->scene.instances[hv.instance].transform, p, 1.0f));
 }
 
 // object_to_world<c> / _3x4_<r> (k = c, or 4 + r) and world_to_object's
 // (k + 7): the hit instance's transform and its inverse, both row-major 3x4.
 // The planted fault transform_builtins_swapped gives each the other.
-Val Machine::transformBuiltin(const HitView& hv, int k) const {
+Val ModelBuiltins::transformBuiltin(const HitView& hv, int k) const {
   if (hv.instance >= sh_.scene->instances.size()) return Val{};
-  const bool inverse = (k >= 7) != sh_.faults.transform_builtins_swapped;
+  const bool inverse = (k >= 7) != sh_.fault_seam.transformBuiltinsSwapped();
   const ModelInstance& mi = sh_.scene->instances[hv.instance];
   const Transform& m = inverse ? mi.inverse_f : mi.src->transform;
   const int i = k % 7;
@@ -92,22 +91,22 @@ Val Machine::transformBuiltin(const HitView& hv, int k) const {
 }
 
 // The launch and the ray: launch_*, ray_*, flags, cull mask, world ray, depth, hit.
-Val Machine::rayBuiltin(const CExpr& e, const StageEnv& env) const {
+Val ModelBuiltins::rayBuiltin(const CExpr& e, const StageEnv& env) const {
   static const TraceRay kNoRay;
   const TraceRay* r = env.ray ? env.ray : &kNoRay;
   switch (e.builtin) {
     case kBiLaunchX:
-      return fromUint(x_);
-    case kBiLaunchY:  // the records' row y_ is launch z x launch height + launch y
-      return fromUint(y_ % launch_[1]);
+      return fromUint(st_.x);
+    case kBiLaunchY:  // the records' row y is launch z x launch height + launch y
+      return fromUint(st_.y % st_.launch[1]);
     case kBiLaunchZ:
-      return fromUint(y_ / launch_[1]);
+      return fromUint(st_.y / st_.launch[1]);
     case kBiLaunchW:
-      return fromUint(launch_[0]);
+      return fromUint(st_.launch[0]);
     case kBiLaunchH:
-      return fromUint(launch_[1]);
+      return fromUint(st_.launch[1]);
     case kBiLaunchD:
-      return fromUint(launch_[2]);
+      return fromUint(st_.launch[2]);
     case kBiTmin:
       return fromFloat(r->tmin);
     case kBiTmax:
@@ -131,7 +130,7 @@ Val Machine::rayBuiltin(const CExpr& e, const StageEnv& env) const {
 
 // The hit or candidate: its ids, kind, t, attributes, box, object-space ray,
 // position and vertices.
-Val Machine::hitBuiltin(const CExpr& e, const StageEnv& env) const {
+Val ModelBuiltins::hitBuiltin(const CExpr& e, const StageEnv& env) const {
   static const HitView kNone;
   static const TraceRay kNoRay;
   const HitView* hv = env.hit ? env.hit : &kNone;
@@ -176,7 +175,7 @@ Val Machine::hitBuiltin(const CExpr& e, const StageEnv& env) const {
 
 // Every row of program/builtin_table.h, with no default: a row the model
 // gives no meaning fails the build (-Werror=switch).
-Val Machine::builtin(const CExpr& e, StageEnv& env) {
+Val ModelBuiltins::read(const CExpr& e, StageEnv& env) const {
   static const HitView kNone;
   switch (static_cast<Builtin>(e.builtin)) {
     case kBiLaunchX:
@@ -246,9 +245,13 @@ Val Machine::builtin(const CExpr& e, StageEnv& env) {
     case kBiUnknown:
       break;
   }
-  if (error.empty())
-    error = "model: unknown built-in '" + (e.src ? e.src->name : std::string("?")) + "'";
+  unknown(e);
   return Val{};
+}
+
+void ModelBuiltins::unknown(const CExpr& e) const {
+  if (st_.error.empty())
+    st_.error = "model: unknown built-in '" + (e.src ? e.src->name : std::string("?")) + "'";
 }
 
 }  // namespace rayspec

@@ -2,7 +2,7 @@
 // locals, arrays, repeat, break, continue, switch, invoke and return.
 #include <algorithm>
 
-#include "model/model_machine.h"
+#include "model/stage_interpreter.h"
 
 namespace rayspec {
 namespace {
@@ -14,7 +14,7 @@ void setLocal(StageEnv& env, size_t slot, const Val& v) {
 
 }  // namespace
 
-Flow Machine::execControl(const CStmt& s, StageEnv& env) {
+Flow StageInterpreter::execControl(const CStmt& s, StageEnv& env) {
   switch (s.kind) {
     case Stmt::Kind::Let:
     case Stmt::Kind::Set:
@@ -28,7 +28,7 @@ Flow Machine::execControl(const CStmt& s, StageEnv& env) {
       return Flow::Continue;
     case Stmt::Kind::Store: {
       if (s.words) {  // payload.words / call.words
-        uint32_t* w = dataWord(*s.words, s.size, eval(s.index, env).u, env);
+        uint32_t* w = ModelBuiltins::dataWord(*s.words, s.size, eval(s.index, env).u, env);
         const uint32_t v = s.assigns.empty() ? 0u : eval(s.assigns[0].value, env).u;
         if (w) *w = v;
         return Flow::Continue;
@@ -56,7 +56,7 @@ Flow Machine::execControl(const CStmt& s, StageEnv& env) {
 }
 
 // At most kMaxLoopTrips iterations; the variable is from + k in iteration k.
-Flow Machine::execRepeat(const CStmt& s, StageEnv& env) {
+Flow StageInterpreter::execRepeat(const CStmt& s, StageEnv& env) {
   const uint32_t trips = std::min(eval(s.count, env).u, kMaxLoopTrips);
   const uint32_t from = eval(s.from, env).u;
   for (uint32_t k = 0; k < trips; ++k) {
@@ -73,7 +73,7 @@ Flow Machine::execRepeat(const CStmt& s, StageEnv& env) {
 }
 
 // The case whose label is the value, else the default; no fall-through.
-Flow Machine::execSwitch(const CStmt& s, StageEnv& env) {
+Flow StageInterpreter::execSwitch(const CStmt& s, StageEnv& env) {
   const uint32_t v = eval(s.cond, env).u;
   for (const CStmt& c : s.then_)
     if (c.size == v) return exec(c.then_, env);
@@ -82,7 +82,7 @@ Flow Machine::execSwitch(const CStmt& s, StageEnv& env) {
 
 // The arguments evaluated in the caller's frame, the body in a frame of its
 // own; the caller's locals are back as they were afterwards.
-Flow Machine::execInvoke(const CStmt& s, StageEnv& env) {
+Flow StageInterpreter::execInvoke(const CStmt& s, StageEnv& env) {
   std::vector<Val> frame(std::max<size_t>(s.size, s.assigns.size()));
   for (size_t i = 0; i < s.assigns.size(); ++i) frame[i] = eval(s.assigns[i].value, env);
   std::swap(frame, env.locals);

@@ -60,7 +60,7 @@ uint64_t hitRecordReach(const Case& c, bool non_opaque, uint32_t offset, uint32_
   return top;
 }
 
-// Could a hit record lie beyond the hit region (R-UB, Machine::checkCandidates)?
+// Could a hit record lie beyond the hit region (R-UB, ModelTracer::checkCandidates)?
 // The reach with the rays' largest SBT offset and stride (a trace that sets
 // them: any 4-bit value). The rays are read only when the largest 4-bit
 // values could reach beyond the region: a scan of every launch ray is a
@@ -171,15 +171,15 @@ ModelShared sharedState(const Case& c, const Plan& plan, const ModelOptions& opt
   shared.scene = &scene;
   shared.programs = &programs;
   // A NO_NULL any-hit or intersection promise is checked on every candidate
-  // (Machine::checkCandidates), which a direct run does not see.
+  // (ModelTracer::checkCandidates), which a direct run does not see.
   const bool no_null_candidates =
       (c.pipeline.flags & (kPipelineNoNullAnyHit | kPipelineNoNullIntersection)) != 0;
-  shared.direct = !scene.filters && !hasOwnTriangles(scene) &&
-                  opt.faults.order == CandidateOrder::Distance && !no_null_candidates;
-  shared.faults = opt.faults;
+  shared.fault_seam = ModelFaultSeam(opt);
+  shared.direct = !scene.filters && !hasOwnTriangles(scene) && shared.fault_seam.distanceOrder() &&
+                  !no_null_candidates;
   shared.any_hit_repeat = opt.any_hit_repeat;
   shared.need_facing = programs.reads(kBiHitKind);
-  // Read by the candidate path only (Machine::checkCandidates): a direct
+  // Read by the candidate path only (ModelTracer::checkCandidates): a direct
   // run sees no candidates, so it is not worked out there.
   shared.check_candidates = !shared.direct && (hitRecordMayBeOutOfRange(c, false) ||
                                                hasNanTriangles(scene) || no_null_candidates);
@@ -247,11 +247,11 @@ void gatherMachines(const std::vector<std::unique_ptr<Machine>>& machines, const
   for (auto& m : machines) {
     if (!m) continue;
     for (size_t k = 0; k < plan.counters.size(); ++k)
-      r.counters[plan.counters[k]] += m->counters[k];
-    r.ambiguous.insert(r.ambiguous.end(), m->ambiguous.begin(), m->ambiguous.end());
-    r.t_bounds.insert(r.t_bounds.end(), m->t_bounds.begin(), m->t_bounds.end());
-    r.undefined.insert(r.undefined.end(), m->undefined.begin(), m->undefined.end());
-    if (!m->error.empty() && r.ok()) r.setStatus(SideStatus::Crash, m->error);
+      r.counters[plan.counters[k]] += m->state().counters[k];
+    r.ambiguous.insert(r.ambiguous.end(), m->state().ambiguous.begin(), m->state().ambiguous.end());
+    r.t_bounds.insert(r.t_bounds.end(), m->state().t_bounds.begin(), m->state().t_bounds.end());
+    r.undefined.insert(r.undefined.end(), m->state().undefined.begin(), m->state().undefined.end());
+    if (!m->state().error.empty() && r.ok()) r.setStatus(SideStatus::Crash, m->state().error);
   }
   std::sort(r.ambiguous.begin(), r.ambiguous.end(),
             [](const RayAmbiguity& a, const RayAmbiguity& b) { return a.ray < b.ray; });

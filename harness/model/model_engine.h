@@ -13,7 +13,7 @@
 // Undefined behaviour (R-UB) is diagnosed, never judged: Results.undefined
 // lists each launch ray whose behaviour the specification leaves undefined,
 // with the first reason and the case field at fault; the model goes on for
-// that ray in the defined way model/model_machine_undefined.cpp documents,
+// that ray in the defined way model/launch_state_undefined.cpp documents,
 // and the other rays are unaffected.
 #pragma once
 

@@ -9,6 +9,7 @@
 #include <optional>
 #include <set>
 
+#include "model/model_tracer.h"
 #include "model/sphere_error.h"
 #include "model/traversal.h"
 #include "results/record_layout.h"
@@ -18,15 +19,15 @@ namespace rayspec {
 
 using namespace trace_detail;
 
-// The steps of Machine::classifyTrace over one trace: which candidates are
+// The steps of ModelTracer::classifyTrace over one trace: which candidates are
 // unsure, the answers the what-if runs give, the reason the ray is
 // ambiguous (the first found), and the answers it may legally have.
 class TraceClassifier {
  public:
-  TraceClassifier(Machine& m, Traversal& tr, const std::vector<ModelCandidate>& cands,
+  TraceClassifier(ModelTracer& m, Traversal& tr, const std::vector<ModelCandidate>& cands,
                   const Payload& payload_in)
       : m_(m), tr_(tr), cands_(cands), payload_in_(payload_in), scene_(*m.sh_.scene) {
-    amb_.ray = m.index_;
+    amb_.ray = m.st_.index;
   }
 
   // Triangles near an edge, vertex or interval end, and grazed boxes.
@@ -43,7 +44,7 @@ class TraceClassifier {
   // A committed t whose rounding may exceed hit_t's tolerance: its bound.
   void boundT();
   // Marks the ray ambiguous with its legal answers, if a reason was found;
-  // how to decide as the legal device ModelFaults asks for, if any.
+  // how to decide as the legal device the fault seam asks for, if any.
   std::optional<WhatIf> finish();
 
  private:
@@ -53,7 +54,7 @@ class TraceClassifier {
   static WhatIf actual() { return {true, {}, -1, -1, {}}; }
   bool sameAsCommitted(const Committed& b) const;
 
-  Machine& m_;
+  ModelTracer& m_;
   Traversal& tr_;
   const std::vector<ModelCandidate>& cands_;
   const Payload& payload_in_;
@@ -292,7 +293,7 @@ void TraceClassifier::boundT() {
   if (!tr_.best.valid || tr_.best.t_err <= 0) return;
   const Tolerance tol = toleranceFor("hit_t");
   if (tr_.best.t_err > tol.abs + tol.rel * std::max(std::fabs(tr_.best.t), 1.0))
-    m_.t_bounds.push_back({m_.index_, static_cast<float>(tr_.best.t_err)});
+    m_.st_.t_bounds.push_back({m_.st_.index, static_cast<float>(tr_.best.t_err)});
 }
 
 std::optional<WhatIf> TraceClassifier::finish() {
@@ -305,21 +306,17 @@ std::optional<WhatIf> TraceClassifier::finish() {
       leak_hows_.erase(leak_hows_.begin() + static_cast<long>(k));
     }
   std::optional<WhatIf> chosen;
-  const ModelFaults& f = m_.sh_.faults;
-  if (f.pass_between_edges && !leak_hows_.empty())
-    chosen = leak_hows_.front();
-  else if (f.legal_answer && !hows_.empty())
-    chosen = hows_[f.legal_answer % hows_.size()];
-  m_.ambiguous.push_back(std::move(amb_));
-  m_.ray_ambiguous_ = true;
+  if (const auto taken = m_.sh_.fault_seam.answerTaken(hows_.size(), leak_hows_.size()))
+    chosen = taken->leak ? leak_hows_[taken->index] : hows_[taken->index];
+  m_.st_.ambiguous.push_back(std::move(amb_));
+  m_.st_.ray_ambiguous = true;
   return chosen;
 }
 
-std::optional<WhatIf> Machine::classifyTrace(Traversal& tr,
-                                             const std::vector<ModelCandidate>& candidates,
-                                             const std::vector<std::pair<size_t, double>>& reports,
-                                             const std::vector<ShaderDecision>& shader_unsure,
-                                             const Payload& payload_in) {
+std::optional<WhatIf> ModelTracer::classifyTrace(
+    Traversal& tr, const std::vector<ModelCandidate>& candidates,
+    const std::vector<std::pair<size_t, double>>& reports,
+    const std::vector<ShaderDecision>& shader_unsure, const Payload& payload_in) {
   TraceClassifier c(*this, tr, candidates, payload_in);
   c.findUnsure();
   c.findSharedTriangles();
@@ -332,8 +329,8 @@ std::optional<WhatIf> Machine::classifyTrace(Traversal& tr,
 
 // R-ORDER-UNSPEC: an any-hit that may terminate runs on one of the candidates
 // (a box, or a non-opaque triangle in the interval): the order decides.
-bool Machine::anyHitMayTerminate(const Traversal& tr,
-                                 const std::vector<ModelCandidate>& cands) const {
+bool ModelTracer::anyHitMayTerminate(const Traversal& tr,
+                                     const std::vector<ModelCandidate>& cands) const {
   if (!sh_.programs->any_hit_terminates) return false;
   const ModelScene& scene = *sh_.scene;
   for (const ModelCandidate& cand : cands) {
@@ -341,32 +338,15 @@ bool Machine::anyHitMayTerminate(const Traversal& tr,
     const ModelInstance& mi = scene.instances[cand.instance];
     const ModelGeometry& g = scene.blases[mi.blas].geometries[cand.geometry];
     if (resolveOpaque(g.flags, mi.src->flags, tr.flags)) continue;
-    const CHitGroup* grp = groupOf(*sh_.programs, hitRecord(cand.instance, cand.geometry, tr.ray));
+    const CHitGroup* grp = groupOf(*sh_.programs, sbt_.hit(cand.instance, cand.geometry, tr.ray));
     if (grp && grp->any_hit_terminates) return true;
   }
   return false;
 }
 
-bool Machine::sphereHitDecision(StageEnv& env, bool model_value, float disc) {
-  Traversal* tr = env.traversal;
-  if (!tr->exact || !tr->cur || env.stage != Stage::Intersection) return model_value;
-  const uint32_t ord = tr->sphere_ord++;
-  if (const ShaderDecision* f = tr->forced(0, ord)) return f->value;
-  if (tr->shader_unsure && env.hit && env.ray) {
-    const HitView& h = *env.hit;
-    const ModelInstance& mi = sh_.scene->instances[h.instance];
-    const SphereError se =
-        sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
-                    objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
-    if (std::fabs(double(disc)) <= se.disc_err)
-      tr->shader_unsure->push_back({tr->cur_index, 0, ord, model_value});
-  }
-  return model_value;
-}
-
-Committed Machine::decideAs(const Traversal& actual, const std::vector<ModelCandidate>& cands,
-                            const WhatIf& how, Payload& payload) {
-  Traversal v(*this, actual.ray);
+Committed ModelTracer::decideAs(const Traversal& actual, const std::vector<ModelCandidate>& cands,
+                                const WhatIf& how, Payload& payload) {
+  Traversal v(actual.ray);
   v.flags = actual.flags;
   v.depth = actual.depth;
   v.tmin = actual.tmin;
@@ -386,26 +366,14 @@ Committed Machine::decideAs(const Traversal& actual, const std::vector<ModelCand
   return v.best;
 }
 
-Machine::MachineState Machine::saveState() const {
-  MachineState s{counters, {}, error};
-  if (rec_) s.record.assign(rec_, rec_ + recordWords());
-  return s;
-}
-
-void Machine::restoreState(const MachineState& s) {
-  counters = s.counters;
-  error = s.error;
-  if (rec_) std::copy(s.record.begin(), s.record.end(), rec_);
-}
-
 // One what-if run of the decision in a sandbox: counters, record and error
 // are restored afterwards, the payload is a copy of the trace's incoming one.
-Committed Machine::sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands,
-                           const WhatIf& how, const Payload& payload_in) {
-  const MachineState saved = saveState();
+Committed ModelTracer::sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands,
+                               const WhatIf& how, const Payload& payload_in) {
+  const LaunchState::Saved saved = st_.save();
   Payload p = payload_in;
   const Committed best = decideAs(actual, cands, how, p);
-  restoreState(saved);
+  st_.restore(saved);
   return best;
 }
 
@@ -415,11 +383,11 @@ Committed Machine::sandbox(const Traversal& actual, const std::vector<ModelCandi
 // shared edge's triangles is hit); a group of one may also be no hit. Stage
 // programs run again, in a sandbox: their counters, record and payload
 // effects are undone.
-std::vector<WhatIfAnswer> Machine::whatIf(const Traversal& actual,
-                                          const std::vector<ModelCandidate>& cands,
-                                          const std::vector<size_t>& unsure,
-                                          const Payload& payload_in,
-                                          std::vector<WhatIfAnswer>* leaks) {
+std::vector<WhatIfAnswer> ModelTracer::whatIf(const Traversal& actual,
+                                              const std::vector<ModelCandidate>& cands,
+                                              const std::vector<size_t>& unsure,
+                                              const Payload& payload_in,
+                                              std::vector<WhatIfAnswer>* leaks) {
   std::vector<WhatIfAnswer> out;
   if (unsure.empty()) return out;
   WhatIf how{false, std::vector<int8_t>(cands.size(), -1), -1, -1, {}};

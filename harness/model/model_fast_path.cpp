@@ -4,6 +4,7 @@
 #include <bit>
 
 #include "case/flag_names.h"
+#include "model/model_tracer.h"
 #include "model/traversal.h"
 #include "results/record_layout.h"
 
@@ -39,7 +40,7 @@ Committed embreeClosestHit(const ModelScene& scene, RTCIntersectContext& ctx, co
 
 }  // namespace
 
-Committed Machine::directHit(const TraceRay& r, uint32_t flags) {
+Committed ModelTracer::directHit(const TraceRay& r, uint32_t flags) {
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
   return embreeClosestHit(*sh_.scene, ctx, r, flags, sh_.need_facing);
@@ -83,18 +84,18 @@ inline bool validLaunchRay(const Ray& ray) {
 
 // The miss shader a launch ray's miss index selects, when all it does is
 // count; null otherwise.
-const CountsOnly* Machine::countedMiss(const TraceRay& r0) const {
+const CountsOnly* ModelTracer::countedMiss(const TraceRay& r0) const {
   const CPipeline& programs = *sh_.programs;
   const uint32_t mi = r0.miss & 0xFFFF;
-  if (mi < default_miss_.size() && default_miss_[mi].group &&
-      *default_miss_[mi].group < programs.miss.size() &&
-      programs.miss_counts[*default_miss_[mi].group].yes)
-    return &programs.miss_counts[*default_miss_[mi].group];
+  if (mi < sbt_.miss().size() && sbt_.miss()[mi].group &&
+      *sbt_.miss()[mi].group < programs.miss.size() &&
+      programs.miss_counts[*sbt_.miss()[mi].group].yes)
+    return &programs.miss_counts[*sbt_.miss()[mi].group];
   return nullptr;
 }
 
-void Machine::shadeLaunchRay(uint32_t i, const Ray& ray, uint32_t flags, const RTCRayHit& rh,
-                             bool hit, uint32_t* rec) {
+void ModelTracer::shadeLaunchRay(uint32_t i, const Ray& ray, uint32_t flags, const RTCRayHit& rh,
+                                 bool hit, uint32_t* rec) {
   const TraceRay r = launchRay(ray);
   Committed h;
   if (hit) {
@@ -108,20 +109,20 @@ void Machine::shadeLaunchRay(uint32_t i, const Ray& ray, uint32_t flags, const R
       h.kind = facing(*sh_.scene, cand, r, flags).kind;
     }
   }
-  index_ = i;
-  x_ = i % sh_.c->rays.width;
-  y_ = i / sh_.c->rays.width;
-  rec_ = rec;
-  ray_ambiguous_ = false;
+  st_.index = i;
+  st_.x = i % sh_.c->rays.width;
+  st_.y = i / sh_.c->rays.width;
+  st_.rec = rec;
+  st_.ray_ambiguous = false;
   Payload payload;
   payload.depth = 1;
   shade(r, flags, 1, h, payload);
 }
 
-void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
+void ModelTracer::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
   const Rays& rays = sh_.c->rays;
   const CPipeline& programs = *sh_.programs;
-  const uint32_t words = records_ ? recordWords() : 0;
+  const uint32_t words = st_.records ? recordWords() : 0;
   uint32_t pipe_flags = 0;
   if (sh_.c->pipeline.flags & kPipelineSkipTriangles) pipe_flags |= kRaySkipTriangles;
   if (sh_.c->pipeline.flags & kPipelineSkipAabbs) pipe_flags |= kRaySkipAabbs;
@@ -140,26 +141,26 @@ void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
   uint64_t hit_pending = 0, miss_pending = 0;  // quick hits (for hit_counts) and misses
   auto flush = [this](const CountsOnly* k, uint64_t& n) {
     if (k && n)
-      for (int c : k->counters) counters[c] += n;
+      for (int c : k->counters) st_.counters[c] += n;
     n = 0;
   };
-  const uint32_t runs_raygen = runs_offset_[kRunsRaygen], runs_hit = runs_offset_[kRunsClosestHit],
-                 runs_miss = runs_offset_[kRunsMiss];
+  const uint32_t runs_raygen = st_.runsOffset(kRunsRaygen),
+                 runs_hit = st_.runsOffset(kRunsClosestHit), runs_miss = st_.runsOffset(kRunsMiss);
 
   for (uint32_t i = begin; i < end; ++i) {
     if (!rays.same && i + 8 < end) __builtin_prefetch(&rays.rays[i + 8]);
     const Ray& ray = rays.launchRay(i);
     const uint32_t flags = ray.flags | pipe_flags;
-    uint32_t* rec = records_ ? records_ + static_cast<size_t>(i) * words : nullptr;
+    uint32_t* rec = st_.records ? st_.records + static_cast<size_t>(i) * words : nullptr;
     if (rec) rec[runs_raygen] += 1;
     // embreeRay + validRay + embreeClosestHit, for the launch ray itself.
     RTCRayHit rh = embreeRay(ray, flags);
     const bool valid = validLaunchRay(ray);
-    ray_undefined_ = false;
+    st_.ray_undefined = false;
     if (!valid || (ray.flags & kExclusiveRayFlags)) {
       // R-UB: diagnosed; such a ray is not traced (a miss) or keeps its flags.
-      index_ = i;
-      checkRayParameters(launchRay(ray), &programs.raygen[0], 1);
+      st_.index = i;
+      st_.checkRayParameters(launchRay(ray), &programs.raygen[0], 1);
     }
     if (valid) {
       rh.ray.tnear = robust ? nextUp(ray.tmin) : ray.tmin;
@@ -172,7 +173,7 @@ void Machine::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
         if (rh.hit.instID[0] != last_instance || rh.hit.geomID != last_geometry) {
           last_instance = rh.hit.instID[0];
           last_geometry = rh.hit.geomID;
-          const CHitGroup* grp = groupOf(programs, hitRecord(last_instance, last_geometry, r0));
+          const CHitGroup* grp = groupOf(programs, sbt_.hit(last_instance, last_geometry, r0));
           const CountsOnly* k = grp && grp->closest_hit && grp->closest_hit_counts.yes
                                     ? &grp->closest_hit_counts
                                     : nullptr;

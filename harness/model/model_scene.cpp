@@ -6,6 +6,7 @@
 #include <string>
 
 #include "base/affine.h"
+#include "base/error_bounds.h"
 #include "base/float_steps.h"
 #include "base/slab.h"
 #include "case/transform.h"
@@ -58,12 +59,12 @@ void ownTriangleBounds(const RTCBoundsFunctionArguments* args) {
       // (padded by its finite size too: a flat region still has thickness for
       // the BVH, the model's own test decides).
       const std::array<double, 6>& r = it->second;
-      double size = 1e-30;
+      double size = kMagnitudeFloor;
       for (double x : r)
         if (std::isfinite(x)) size = std::max(size, std::fabs(x));
       for (int a = 0; a < 3; ++a) {
-        lo[a] = clampLarge(static_cast<float>(r[a] - 1e-5 * size));
-        hi[a] = clampLarge(static_cast<float>(r[a + 3] + 1e-5 * size));
+        lo[a] = clampLarge(static_cast<float>(r[a] - kEnumerationPadRel * size));
+        hi[a] = clampLarge(static_cast<float>(r[a + 3] + kEnumerationPadRel * size));
       }
       setBounds(b, lo, hi);
       return;
@@ -73,7 +74,8 @@ void ownTriangleBounds(const RTCBoundsFunctionArguments* args) {
   // (and rays an instance's rounding may move onto it): model/box_pad.cpp
   // says why this much is enough. Rounded outward to float.
   for (int k = 0; k < 3; ++k) {
-    const double m = std::max({std::fabs(double(lo[k])), std::fabs(double(hi[k])), 1e-30});
+    const double m =
+        std::max({std::fabs(double(lo[k])), std::fabs(double(hi[k])), kMagnitudeFloor});
     const double pad = kBoxMagnitudeSteps * kUnitRoundoff * m + g->ray_pad + 4 * g->vertex_err[k];
     lo[k] = clampLarge(floatBelow(lo[k] - pad));
     hi[k] = clampLarge(floatAbove(hi[k] + pad));
@@ -94,7 +96,7 @@ void aabbBounds(const RTCBoundsFunctionArguments* args) {
     v[k] = std::isnan(a[k]) ? (k < 3 ? -kEmbreeLarge : kEmbreeLarge) : a[k];
   for (int k = 0; k < 3; ++k) {
     // Conservative (R-AABB-CONS): a little slack, so grazing rays are enumerated.
-    const float pad = std::max({std::fabs(v[k]), std::fabs(v[k + 3]), 1e-30f}) * 1e-6f;
+    const float pad = boxSlackF(v[k], v[k + 3]);
     v[k] = clampLarge(v[k] - pad);
     v[k + 3] = clampLarge(v[k + 3] + pad);
   }
@@ -131,7 +133,7 @@ void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
       const std::array<double, 6>& box = it->second;
       DVec3 lo, hi;
       for (int k = 0; k < 3; ++k) {
-        const double slack = 1e-6 * std::max({std::fabs(box[k]), std::fabs(box[k + 3]), 1e-30});
+        const double slack = boxSlack(box[k], box[k + 3]);
         lo[k] = box[k] - slack;
         hi[k] = box[k + 3] + slack;
       }
@@ -188,8 +190,7 @@ void aabbIntersect(const RTCIntersectFunctionNArguments* args) {
   const auto& a = g->aabbs[args->primID];
   DVec3 lo, hi;  // the box with a little slack
   for (int k = 0; k < 3; ++k) {
-    const double slack =
-        1e-6 * std::max({std::fabs(double(a[k])), std::fabs(double(a[k + 3])), 1e-30});
+    const double slack = boxSlack(a[k], a[k + 3]);
     lo[k] = a[k] - slack;
     hi[k] = a[k + 3] + slack;
   }
@@ -202,9 +203,9 @@ void aabbIntersect(const RTCIntersectFunctionNArguments* args) {
     DVec3 in_lo, in_hi;
     for (int k = 0; k < 3; ++k) {
       const double l = a[k], h = a[k + 3];
-      const double bound =
-          kDeviceRelTolerance * std::max({std::fabs(l), std::fabs(h), std::fabs(o[k]), 1e-30}) +
-          1e-6 * std::max({std::fabs(l), std::fabs(h), 1e-30});
+      const double bound = kDeviceRelTolerance * std::max({std::fabs(l), std::fabs(h),
+                                                           std::fabs(o[k]), kMagnitudeFloor}) +
+                           boxSlack(l, h);
       in_lo[k] = l + bound;
       in_hi[k] = h - bound;
     }

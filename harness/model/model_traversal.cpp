@@ -1,26 +1,22 @@
-// traceRayEXT in the model: Embree enumerates, the model decides (see the
-// order documented in model_engine.h), then closest-hit or miss runs. The
-// exact tier's ambiguity check is in model_exact_tier.cpp, the path without
-// decisions in model_fast_path.cpp.
+// ModelTracer (model_tracer.h): Embree enumerates, the tracer decides (see
+// the order documented in model_engine.h), then closest-hit or miss runs.
+// An intersection program's reports and any-hit go through HitProtocol
+// (hit_protocol.cpp); the exact tier's ambiguity check is in
+// model_exact_tier.cpp, the path without decisions in model_fast_path.cpp.
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
 
+#include "base/error_bounds.h"
 #include "case/flag_names.h"
+#include "model/hit_protocol.h"
+#include "model/model_tracer.h"
 #include "model/sphere_error.h"
+#include "model/stage_interpreter.h"
 #include "model/traversal.h"
 
 namespace rayspec {
-namespace {
-
-// The flags of the geometry a candidate belongs to.
-uint32_t geometryFlags(const ModelScene& scene, const ModelCandidate& c) {
-  return scene.blases[scene.instances[c.instance].blas].geometries[c.geometry].flags;
-}
-
-}  // namespace
-
 namespace trace_detail {
 
 bool keyLess(uint32_t i0, uint32_t g0, uint32_t p0, uint32_t i1, uint32_t g1, uint32_t p1) {
@@ -126,112 +122,7 @@ bool validRay(const TraceRay& r, const RTCRayHit& rh) {
 
 using namespace trace_detail;
 
-// R-SBT-HIT: instance offset (24 bits) + geometry x stride + offset (4 bits each).
-uint64_t Machine::hitRecordIndex(uint32_t instance, uint32_t geometry, const TraceRay& r) const {
-  const Instance& inst = sh_.c->scene.instances[instance];
-  return static_cast<uint64_t>(inst.sbt_offset & 0xFFFFFF) +
-         static_cast<uint64_t>(geometry) * (r.sbt_stride & 0xF) + (r.sbt_offset & 0xF);
-}
-
-// Beyond the hit region: nullptr (R-UB, checkCandidates / shade mark the ray).
-const SbtRecord* Machine::hitRecord(uint32_t instance, uint32_t geometry, const TraceRay& r) const {
-  const uint64_t idx = hitRecordIndex(instance, geometry, r);
-  return idx < default_hit_.size() ? &default_hit_[idx] : nullptr;
-}
-
-namespace {
-
-bool reportsSphereRoot(const CStmt& s, const StageEnv& env) {
-  return s.t.kind == Expr::Kind::Op &&
-         (s.t.op == OpCode::SphereNear || s.t.op == OpCode::SphereFar) && env.hit && env.ray;
-}
-
-}  // namespace
-
-double Machine::sphereRootError(const CStmt& s, const HitView& h, const StageEnv& env) const {
-  const ModelInstance& mi = sh_.scene->instances[h.instance];
-  const SphereError se =
-      sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
-                  objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
-  return s.t.op == OpCode::SphereNear ? se.near_err : se.far_err;
-}
-
-bool Machine::reportInside(const CStmt& s, StageEnv& env, Traversal& tr, float t) {
-  // R-ISECT-REPORT, R-CAND-AABB-CLOSED: tmin <= t <= current tmax.
-  bool inside = t >= tr.ray.tmin && static_cast<double>(t) <= tr.tmax_cur;
-  if (sh_.faults.deviation == ModelDeviation::OpenAabbInterval)
-    inside = t > tr.ray.tmin && static_cast<double>(t) < tr.tmax_cur;
-  if (tr.reports && t >= tr.ray.tmin && t <= tr.ray.tmax + tr.tol(t))
-    tr.reports->push_back({tr.cur_index, t});
-  if (tr.exact) {
-    // R-PREC: a sphere root within its error bound of an interval end may
-    // fall on either side on a device. Not against the current candidate's
-    // own committed report: the device compares its own roots consistently.
-    const uint32_t ord = tr.report_ord++;
-    if (const ShaderDecision* f = tr.forced(1, ord)) {
-      inside = f->value;
-    } else if (tr.shader_unsure && reportsSphereRoot(s, env)) {
-      const HitView& h = *env.hit;
-      const double et = sphereRootError(s, h, env) + tr.tol(t);
-      const bool own = tr.best.valid && tr.best.instance == h.instance &&
-                       tr.best.geometry == h.geometry && tr.best.primitive == h.primitive;
-      const bool near_end = std::fabs(double(t) - tr.ray.tmin) <= et ||
-                            (!own && std::fabs(double(t) - tr.tmax_cur) <= et);
-      if (near_end) tr.shader_unsure->push_back({tr.cur_index, 1, ord, inside});
-    }
-  }
-  // What-if run preferring one candidate (R-TIE): it wins every tie, and a
-  // committed preferred hit loses none.
-  if (tr.prefer >= 0 && t >= tr.ray.tmin && tr.ties(t)) {
-    if (tr.cur_index == static_cast<size_t>(tr.prefer))
-      inside = true;
-    else if (tr.isPreferred(tr.best.instance, tr.best.geometry, tr.best.primitive))
-      inside = false;
-  }
-  return inside;
-}
-
-Flow Machine::report(const CStmt& s, StageEnv& env) {
-  Traversal* tr = env.traversal;
-  if (!tr || !tr->cur) return Flow::Continue;
-  const Val tv = eval(s.t, env);
-  const float t = s.t.type == ValueType::Uint ? static_cast<float>(tv.u) : tv.f[0];
-  const uint32_t kind = eval(s.hit_kind, env).u;
-  Val attr;
-  if (s.has_attribute) attr = eval(s.attribute, env);
-  bool accepted = false;
-  if (reportInside(s, env, *tr, t)) {
-    HitView hv = *env.hit;
-    setHit(hv, t, kind, attr.f[0], attr.f[1]);
-    for (const CAssign& a : s.assigns) hv.words[a.word % kMaxAttributeWords] = eval(a.value, env).u;
-    Flow ah = Flow::Continue;
-    if (!tr->cur_opaque && tr->cur_group && tr->cur_group->any_hit) {
-      // R-TMAX-VIEW: any-hit sees the candidate's t.
-      checkPayloadType(*tr->payload, tr->cur_group->payload, "pipeline.hit_groups",
-                       *tr->cur_rec->group, ".any_hit");
-      StageEnv a =
-          hitStage(Stage::AnyHit, tr->cur_rec->data, tr->payload, tr->ray, hv, t, tr->depth);
-      ah = runAnyHit(*tr->cur_group->any_hit, a, hv, geometryFlags(*sh_.scene, *tr->cur));
-    }
-    if (ah != Flow::Ignore) {
-      accepted = true;
-      tr->best = {true, static_cast<double>(t), hv.instance, hv.geometry, hv.primitive, kind, hv.b1,
-                  hv.b2};
-      tr->best.words = hv.words;
-      // R-PREC: how far a device's root may lie from this one.
-      if (tr->exact && reportsSphereRoot(s, env)) tr->best.t_err = sphereRootError(s, hv, env);
-      tr->tmax_cur = t;
-      env.tmax_view = t;
-      if (ah == Flow::Terminate || (tr->flags & kRayTerminateOnFirstHit)) {
-        tr->stop = true;
-        return Flow::Terminate;  // R-TERMINATE: the intersection program stops too
-      }
-    }
-  }
-  return exec(accepted ? s.then_ : s.else_, env);
-}
-
-Payload Machine::trace(const TraceRay& r, uint32_t depth, const CStmt* site, Payload payload) {
+Payload ModelTracer::trace(const TraceRay& r, uint32_t depth, const CStmt* site, Payload payload) {
   uint32_t flags = r.flags;
   if (sh_.c->pipeline.flags & kPipelineSkipTriangles) flags |= kRaySkipTriangles;
   if (sh_.c->pipeline.flags & kPipelineSkipAabbs) flags |= kRaySkipAabbs;
@@ -239,44 +130,19 @@ Payload Machine::trace(const TraceRay& r, uint32_t depth, const CStmt* site, Pay
   // R-UB: a ray with a non-finite, NaN or negative parameter finds nothing
   // (validRay keeps it from Embree) and misses; one with an illegal flag
   // combination is traced with its flags as the model resolves them.
-  checkRayParameters(r, site, depth);
+  st_.checkRayParameters(r, site, depth);
   const Committed best = sh_.direct ? directHit(r, flags) : traverse(r, flags, depth, payload);
   shade(r, flags, depth, best, payload);
   return payload;
 }
 
-// The model's decision over the sorted candidates (R-ORDER-UNSPEC: in
-// ascending distance). `force`, when given, overrides per candidate whether a
-// triangle is a hit (-1: the model's own decision, 0: no, 1: yes).
-// An AABB candidate: its intersection program runs (R-TMAX-VIEW: it sees the
-// closest t so far); its reports decide (report()).
-void Machine::runIntersection(Traversal& tr, const ModelCandidate& cand, size_t k, bool opaque,
-                              const SbtRecord* rec, const CHitGroup* grp) {
-  const TraceRay& r = tr.ray;
-  HitView hv = viewOf(*sh_.scene, *sh_.c, r, cand.instance, cand.geometry, cand.primitive);
-  tr.cur = &cand;
-  tr.cur_index = k;
-  tr.cur_opaque = opaque;
-  if (tr.reports) tr.reports->push_back({k, NAN});  // it ran (the exact tier's tie check)
-  tr.sphere_ord = 0;
-  tr.report_ord = 0;
-  tr.cur_rec = rec;
-  tr.cur_group = grp;
-  bumpRuns(kRunsIntersection);
-  StageEnv env = hitStage(Stage::Intersection, rec->data, nullptr, r, hv,
-                          static_cast<float>(tr.tmax_cur), tr.depth);
-  env.traversal = &tr;
-  exec(*grp->intersection, env);
-  tr.cur = nullptr;
-}
-
 // Whether a triangle candidate's t is in the interval (open, R-CAND-TRI-OPEN),
 // with the what-if runs' forced hits and preferences and the exact tier's
 // tie rule.
-bool Machine::triangleInside(const Traversal& tr, const ModelCandidate& cand, size_t k,
-                             const int8_t* force) const {
+bool ModelTracer::triangleInside(const Traversal& tr, const ModelCandidate& cand, size_t k,
+                                 const int8_t* force) const {
   bool inside = cand.t > tr.tmin && cand.t < tr.tmax_cur;
-  if (sh_.faults.deviation == ModelDeviation::ClosedTriangleInterval && !tr.best.valid)
+  if (sh_.fault_seam.closedTriangleInterval() && !tr.best.valid)
     inside = cand.t >= tr.tmin && cand.t <= tr.tmax_cur;
   // What-if run forcing a hit at an interval end (tmin-tie, tmax-tie): a
   // float ray test may put it a step inside, unless every device computes
@@ -300,8 +166,11 @@ bool Machine::triangleInside(const Traversal& tr, const ModelCandidate& cand, si
   return inside;
 }
 
-void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, const int8_t* force,
-                     Payload& payload) {
+// The model's decision over the sorted candidates (R-ORDER-UNSPEC: in
+// ascending distance). `force`, when given, overrides per candidate whether a
+// triangle is a hit (-1: the model's own decision, 0: no, 1: yes).
+void ModelTracer::decide(Traversal& tr, const std::vector<ModelCandidate>& cands,
+                         const int8_t* force, Payload& payload) {
   const Case& c = *sh_.c;
   const ModelScene& scene = *sh_.scene;
   const TraceRay& r = tr.ray;
@@ -317,13 +186,13 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
     const bool opaque = resolveOpaque(g.flags, mi.src->flags, tr.flags);
     if ((tr.flags & kRayCullOpaque) && opaque) continue;
     if ((tr.flags & kRayCullNoOpaque) && !opaque) continue;
-    const SbtRecord* rec = hitRecord(cand.instance, cand.geometry, r);
+    const SbtRecord* rec = sbt_.hit(cand.instance, cand.geometry, r);
     const CHitGroup* grp = groupOf(*sh_.programs, rec);
     if (cand.aabb) {
       if (force && force[k] == 0) continue;
       // A preferred box entered at the committed t (within the error bound) still runs.
       if (cand.t > tr.tmax_cur && !(tr.prefer == static_cast<long>(k) && tr.ties(cand.t))) continue;
-      if (grp && grp->intersection) runIntersection(tr, cand, k, opaque, rec, grp);
+      if (grp && grp->intersection) hits_.runIntersection(tr, cand, k, opaque, rec, grp);
       continue;
     }
     if (!(force && force[k] >= 0 ? force[k] == 1 : cand.hit)) continue;
@@ -334,9 +203,9 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
     if (!opaque && grp && grp->any_hit) {
       HitView hv = viewOf(scene, c, r, cand.instance, cand.geometry, cand.primitive);
       setHit(hv, static_cast<float>(cand.t), f.kind, cand.b1, cand.b2);
-      checkPayloadType(payload, grp->payload, "pipeline.hit_groups", *rec->group, ".any_hit");
+      st_.checkPayloadType(payload, grp->payload, "pipeline.hit_groups", *rec->group, ".any_hit");
       StageEnv a = hitStage(Stage::AnyHit, rec->data, &payload, r, hv, hv.t, tr.depth);
-      ah = runAnyHit(*grp->any_hit, a, hv, g.flags);
+      ah = hits_.runAnyHit(*grp->any_hit, a, hv, g.flags);
       if (ah == Flow::Ignore) continue;
     }
     // Exact tier, R-PREC: how far a device's t may lie (its frame's rounding).
@@ -349,9 +218,10 @@ void Machine::decide(Traversal& tr, const std::vector<ModelCandidate>& cands, co
 
 // Every candidate from Embree, decided by the model in order (see
 // model_engine.h), then the exact tier's ambiguity check.
-Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, Payload& payload) {
+Committed ModelTracer::traverse(const TraceRay& r, uint32_t flags, uint32_t depth,
+                                Payload& payload) {
   const ModelScene& scene = *sh_.scene;
-  Traversal tr(*this, r);
+  Traversal tr(r);
   tr.flags = flags;
   tr.depth = depth;
   tr.tmin = r.tmin;
@@ -359,10 +229,9 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
   tr.exact = scene.tier == ModelTier::Exact;
   tr.payload = &payload;
   const Payload payload_in = payload;  // for the exact tier's what-if variants
-  // A legal device's other answer (ModelFaults) replays the trace from here.
-  const ModelFaults& f = sh_.faults;
-  std::optional<MachineState> before;
-  if (tr.exact && (f.legal_answer || f.pass_between_edges) && !ray_ambiguous_) before = saveState();
+  // A legal device's other answer (ModelFaultSeam) replays the trace from here.
+  std::optional<LaunchState::Saved> before;
+  if (tr.exact && sh_.fault_seam.answersOtherwise() && !st_.ray_ambiguous) before = st_.save();
 
   RTCRayHit rh = embreeRay(r, tr.flags);
   std::vector<ModelCandidate>* cands = nullptr;
@@ -381,16 +250,15 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
     tc.tmax = r.tmax;
     tc.candidates = cands;
     // Slightly wider than the interval: the model checks both ends itself.
-    rh.ray.tnear = std::max(0.0f, r.tmin - std::fabs(r.tmin) * 1e-5f);
-    rh.ray.tfar = r.tmax + std::fabs(r.tmax) * 1e-5f;
+    rh.ray.tnear = std::max(0.0f, r.tmin - std::fabs(r.tmin) * kEnumerationPadRelF);
+    rh.ray.tfar = r.tmax + std::fabs(r.tmax) * kEnumerationPadRelF;
     rtcIntersect1(scene.tops[r.tlas], &tc.rtc, &rh);
-    const CandidateOrder order = sh_.faults.order;
+    const ModelFaultSeam& seam = sh_.fault_seam;
     std::sort(
-        cands->begin(), cands->end(), [order](const ModelCandidate& a, const ModelCandidate& b) {
-          const bool key =
-              keyLess(a.instance, a.geometry, a.primitive, b.instance, b.geometry, b.primitive);
-          if (order == CandidateOrder::BuildOrder || a.t == b.t) return key;
-          return order == CandidateOrder::ReverseDistance ? a.t > b.t : a.t < b.t;
+        cands->begin(), cands->end(), [&seam](const ModelCandidate& a, const ModelCandidate& b) {
+          return seam.decidedBefore(
+              a.t, b.t,
+              keyLess(a.instance, a.geometry, a.primitive, b.instance, b.geometry, b.primitive));
         });
     tr.reports = tr.exact ? &reports : nullptr;
     tr.shader_unsure = tr.exact && sh_.programs->reads_sphere ? &shader_unsure : nullptr;
@@ -400,70 +268,72 @@ Committed Machine::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, P
     checkCandidates(tr, *cands);
   }
 
-  if (cands && tr.exact && !ray_ambiguous_) {
+  if (cands && tr.exact && !st_.ray_ambiguous) {
     const std::optional<WhatIf> chosen =
         classifyTrace(tr, *cands, reports, shader_unsure, payload_in);
     if (chosen && before && !chosen->actual) {
-      restoreState(*before);
+      st_.restore(*before);
       payload = payload_in;
       tr.best = decideAs(tr, *cands, *chosen, payload);
     }
     // R-UB: a legal answer of this trace whose record lies beyond its region.
-    if (ray_ambiguous_ && !ray_undefined_ && !ambiguous.empty() && ambiguous.back().ray == index_)
-      for (const Candidate& k : ambiguous.back().candidates) {
-        if (k.hit && !(tr.flags & kRaySkipClosestHit) && !hitRecord(k.instance, k.geometry, r))
-          hitRecordOutOfRange(k.instance, k.geometry, r);
-        if (!k.hit && (r.miss & 0xFFFF) >= default_miss_.size()) missRecordOutOfRange(r);
+    if (st_.ray_ambiguous && !st_.ray_undefined && !st_.ambiguous.empty() &&
+        st_.ambiguous.back().ray == st_.index)
+      for (const Candidate& k : st_.ambiguous.back().candidates) {
+        if (k.hit && !(tr.flags & kRaySkipClosestHit) && !sbt_.hit(k.instance, k.geometry, r))
+          st_.hitRecordOutOfRange(k.instance, k.geometry, r);
+        if (!k.hit && (r.miss & 0xFFFF) >= sbt_.miss().size()) st_.missRecordOutOfRange(r);
       }
   }
   return tr.best;
 }
 
 // R-MISS-XOR-CHIT: closest-hit or miss for the committed hit.
-void Machine::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Committed& best,
-                    Payload& payload) {
+void ModelTracer::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Committed& best,
+                        Payload& payload) {
   const Case& c = *sh_.c;
   const ModelScene& scene = *sh_.scene;
   if (best.valid) {
     if (!(flags & kRaySkipClosestHit)) {
-      const SbtRecord* rec = hitRecord(best.instance, best.geometry, r);
+      const SbtRecord* rec = sbt_.hit(best.instance, best.geometry, r);
       // R-UB: the closest-hit's record beyond the hit region; the model runs none.
-      if (!rec && !ray_undefined_) hitRecordOutOfRange(best.instance, best.geometry, r);
+      if (!rec && !st_.ray_undefined) st_.hitRecordOutOfRange(best.instance, best.geometry, r);
       const CHitGroup* grp = groupOf(*sh_.programs, rec);
       if (rec && !rec->group)
-        nullShader(kPipelineNoNullClosestHit, "a closest-hit", "hit",
-                   static_cast<uint32_t>(hitRecordIndex(best.instance, best.geometry, r)));
+        st_.nullShader(kPipelineNoNullClosestHit, "a closest-hit", "hit",
+                       static_cast<uint32_t>(sbt_.hitIndex(best.instance, best.geometry, r)));
       if (grp && grp->closest_hit)
-        checkPayloadType(payload, grp->payload, "pipeline.hit_groups", *rec->group, ".closest_hit");
+        st_.checkPayloadType(payload, grp->payload, "pipeline.hit_groups", *rec->group,
+                             ".closest_hit");
       if (grp && grp->closest_hit && grp->closest_hit_counts.yes) {
-        bump(grp->closest_hit_counts);
-        bumpRuns(kRunsClosestHit);
+        st_.bump(grp->closest_hit_counts);
+        st_.bumpRuns(kRunsClosestHit);
       } else if (grp && grp->closest_hit) {
         HitView hv =
             viewOf(scene, c, r, best.instance, best.geometry, best.primitive, sh_.need_object_ray);
         setHit(hv, static_cast<float>(best.t), best.kind, best.b1, best.b2);
         hv.words = best.words;
-        bumpRuns(kRunsClosestHit);
+        st_.bumpRuns(kRunsClosestHit);
         StageEnv env = hitStage(Stage::ClosestHit, rec->data, &payload, r, hv, hv.t, depth);
-        exec(*grp->closest_hit, env);
+        interp_.exec(*grp->closest_hit, env);
       }
     }
   } else {
     const uint32_t mi = r.miss & 0xFFFF;
     // R-UB: beyond the miss region; the model runs no miss shader.
-    if (mi >= default_miss_.size() && !ray_undefined_) missRecordOutOfRange(r);
-    if (mi < default_miss_.size()) {
-      const SbtRecord& rec = default_miss_[mi];
-      if (!rec.group) nullShader(kPipelineNoNullMiss, "a miss shader", "miss", mi);
+    if (mi >= sbt_.miss().size() && !st_.ray_undefined) st_.missRecordOutOfRange(r);
+    if (mi < sbt_.miss().size()) {
+      const SbtRecord& rec = sbt_.miss()[mi];
+      if (!rec.group) st_.nullShader(kPipelineNoNullMiss, "a miss shader", "miss", mi);
       if (rec.group && *rec.group < c.pipeline.miss.size())
-        checkPayloadType(payload, c.pipeline.missPayload(*rec.group), "pipeline.miss", *rec.group,
-                         "");
+        st_.checkPayloadType(payload, c.pipeline.missPayload(*rec.group), "pipeline.miss",
+                             *rec.group, "");
       if (rec.group && *rec.group < c.pipeline.miss.size() &&
           sh_.programs->miss_counts[*rec.group].yes) {
-        bump(sh_.programs->miss_counts[*rec.group]);
-        bumpRuns(kRunsMiss);
+        st_.bump(sh_.programs->miss_counts[*rec.group]);
+        st_.bumpRuns(kRunsMiss);
       } else if (rec.group && *rec.group < c.pipeline.miss.size()) {
-        bumpRuns(kRunsMiss);
+        st_.bumpRuns(kRunsMiss);
         StageEnv env;
         env.stage = Stage::Miss;
         env.record_data = &rec.data;
@@ -471,9 +341,54 @@ void Machine::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Com
         env.ray = &r;
         env.tmax_view = r.tmax;
         env.depth = depth;
-        exec(sh_.programs->miss[*rec.group], env);
+        interp_.exec(sh_.programs->miss[*rec.group], env);
       }
     }
+  }
+}
+
+void ModelTracer::checkCandidates(const Traversal& tr, const std::vector<ModelCandidate>& cands) {
+  if (st_.ray_undefined || !sh_.check_candidates) return;
+  const ModelScene& scene = *sh_.scene;
+  const TraceRay& r = tr.ray;
+  for (const ModelCandidate& cand : cands) {
+    const ModelInstance& mi = scene.instances[cand.instance];
+    const ModelGeometry& g = scene.blases[mi.blas].geometries[cand.geometry];
+    // R-CULL-OPQ drops it whatever it is (Embree has applied the masks and skips).
+    const bool opaque = resolveOpaque(g.flags, mi.src->flags, tr.flags);
+    if (((tr.flags & kRayCullOpaque) && opaque) || ((tr.flags & kRayCullNoOpaque) && !opaque))
+      continue;
+    if (cand.nan_triangle) {
+      const Geometry& src = sh_.c->scene.blases[mi.blas].geometries[cand.geometry];
+      const std::string field = !src.loc.field.empty()
+                                    ? src.loc.field
+                                    : "scene.blas." + sh_.c->scene.blases[mi.blas].name + "[" +
+                                          std::to_string(cand.geometry) + "]";
+      st_.markUndefined(UndefinedReason::NanTriangle,
+                        field + ": triangle " + std::to_string(cand.primitive) +
+                            " has NaN in Y or Z (instance " + std::to_string(cand.instance) + ")");
+      return;
+    }
+    const double tl = tr.tol(cand.t);
+    if (cand.t < r.tmin - tl || cand.t > r.tmax + tl) continue;
+    // A device reads the record of every box (its intersection shader runs)
+    // and of every non-opaque triangle (its any-hit may run), in any order:
+    // beyond the hit region, or all zero where the pipeline promises that
+    // shader (R-NULL-SHADERS), the ray is undefined.
+    const SbtRecord* rec = sbt_.hit(cand.instance, cand.geometry, r);
+    if (rec && rec->group) continue;
+    const bool needed =
+        cand.aabb || (!opaque && (cand.hit || cand.ambiguity != TriAmbiguity::None) &&
+                      !facing(scene, cand, r, tr.flags).culled);
+    if (needed && !rec) {
+      st_.hitRecordOutOfRange(cand.instance, cand.geometry, r);
+      return;
+    }
+    if (needed)
+      st_.nullShader(cand.aabb ? kPipelineNoNullIntersection : kPipelineNoNullAnyHit,
+                     cand.aabb ? "an intersection shader" : "an any-hit", "hit",
+                     static_cast<uint32_t>(sbt_.hitIndex(cand.instance, cand.geometry, r)));
+    if (st_.ray_undefined) return;
   }
 }
 

@@ -1,7 +1,9 @@
-// The model's traversal state and the helpers its three parts share:
-// model_traversal.cpp (candidates decided in order, reports, closest-hit or
-// miss), model_exact_tier.cpp (the exact tier's ambiguity and what-if runs)
-// and model_fast_path.cpp (Embree's own closest hit, no decisions to make).
+// The state of one trace between ModelTracer (model_tracer.h) and the
+// any-hit / intersection protocol (hit_protocol.h), and the helpers they
+// share: model_traversal.cpp (candidates decided in order, closest-hit or
+// miss), model_exact_tier.cpp (the exact tier's ambiguity and what-if runs),
+// model_fast_path.cpp (Embree's own closest hit, no decisions to make) and
+// hit_protocol.cpp (intersection programs' reports, any-hit).
 #pragma once
 
 #include <embree3/rtcore.h>
@@ -17,13 +19,16 @@
 
 #include "base/affine.h"
 #include "base/float_steps.h"
-#include "model/model_machine.h"
+#include "model/model_program.h"
+#include "model/model_scene.h"
+#include "model/model_stage_env.h"
+#include "model/model_trace_context.h"
+#include "model/model_what_if.h"
 #include "model/watertight.h"
 
 namespace rayspec {
 
 struct Traversal {
-  Machine& m;
   const TraceRay& ray;
   uint32_t flags = 0;  // ray flags with the pipeline's skip flags
   uint32_t depth = 1;
@@ -56,7 +61,7 @@ struct Traversal {
     return f && f->kind == kind && f->ordinal == ordinal && f->cand == cur_index ? f : nullptr;
   }
 
-  Traversal(Machine& machine, const TraceRay& r) : m(machine), ray(r) {}
+  explicit Traversal(const TraceRay& r) : ray(r) {}
   bool isPreferred(uint32_t i, uint32_t g, uint32_t p) const {
     return prefer >= 0 && prefer_key[0] == i && prefer_key[1] == g && prefer_key[2] == p;
   }

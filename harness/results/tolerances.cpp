@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/error_bounds.h"
+
 namespace rayspec {
 
 bool Tolerance::matches(float device, float model) const {
@@ -13,9 +15,9 @@ bool Tolerance::matches(float device, float model) const {
 }
 
 Tolerance toleranceFor(std::string_view field) {
-  if (field == "barycentrics") return {1e-4, 0.0};
-  if (field == "color" || field == "color2") return {1e-4, 1e-4};
-  return {1e-5, 1e-5};
+  if (field == "barycentrics") return {kBarycentricTolerance, 0.0};
+  if (field == "color" || field == "color2") return {kColorTolerance, kColorTolerance};
+  return {kFieldTolerance, kFieldTolerance};
 }
 
 }  // namespace rayspec

@@ -6,6 +6,7 @@
 //                                   unit-size triangle)
 //   positions and directions        abs 1e-5, rel 1e-5
 //   color                           abs 1e-4, rel 1e-4 (lights divide by d^2)
+// The numbers are named, with where each comes from, in base/error_bounds.h.
 #pragma once
 
 #include <string>

@@ -6,7 +6,7 @@
 //   NanTriangle          the triangle is never a hit (model_scene.cpp)
 //   HitRecordOutOfRange  no shader of that record runs
 //   MissRecordOutOfRange no miss shader runs
-//   CallableOutOfRange   the call is skipped (model_machine.cpp)
+//   CallableOutOfRange   the call is skipped (stage_interpreter.cpp)
 //   DivisionByZero       uint a / 0 = 0xFFFFFFFF, a % 0 = 0
 //   RecursionTooDeep     the trace or call is skipped
 //   PayloadType          the shader runs on the trace's payload as it is
@@ -17,11 +17,9 @@
 #include <string>
 
 #include "case/flag_names.h"
-#include "model/traversal.h"
+#include "model/launch_state.h"
 
 namespace rayspec {
-
-using namespace trace_detail;
 
 namespace {
 
@@ -104,22 +102,22 @@ bool defined(const TraceRay& r) {
 
 }  // namespace
 
-void Machine::markUndefined(UndefinedReason why, std::string what) {
-  if (ray_undefined_) return;
-  ray_undefined_ = true;
-  undefined.push_back({index_, why, std::move(what)});
+void LaunchState::markUndefined(UndefinedReason why, std::string what) {
+  if (ray_undefined) return;
+  ray_undefined = true;
+  undefined.push_back({index, why, std::move(what)});
 }
 
-bool Machine::checkRayParameters(const TraceRay& r, const CStmt* site, uint32_t depth) {
+bool LaunchState::checkRayParameters(const TraceRay& r, const CStmt* site, uint32_t depth) {
   if (defined(r)) return false;
   const RayProblem p = rayProblem(r);
   if (p.arg < 0) return false;
-  if (ray_undefined_) return true;
+  if (ray_undefined) return true;
   std::string where;
   if (site && site->has[p.arg])
     where = fieldOf(site, "trace") + "." + kTraceArgNames[p.arg];
   else if (depth == 1)  // raygen's trace of the launch ray's own parameter
-    where = "rays: launch ray " + std::to_string(index_) + " " + kTraceArgNames[p.arg];
+    where = "rays: launch ray " + std::to_string(index) + " " + kTraceArgNames[p.arg];
   else  // a nested trace takes the rays defaults
     where = std::string("rays.") + kTraceArgNames[p.arg] + " (the default of " +
             fieldOf(site, "a nested trace") + ")";
@@ -127,26 +125,25 @@ bool Machine::checkRayParameters(const TraceRay& r, const CStmt* site, uint32_t 
   return true;
 }
 
-void Machine::hitRecordOutOfRange(uint32_t instance, uint32_t geometry, const TraceRay& r) {
+void LaunchState::hitRecordOutOfRange(uint32_t instance, uint32_t geometry, const TraceRay& r) {
   const Instance& inst = sh_.c->scene.instances[instance];
   markUndefined(UndefinedReason::HitRecordOutOfRange,
-                "pipeline.sbt.hit: record " +
-                    std::to_string(hitRecordIndex(instance, geometry, r)) +
-                    ", the hit region has " + std::to_string(default_hit_.size()) + " (instance " +
+                "pipeline.sbt.hit: record " + std::to_string(sbt_.hitIndex(instance, geometry, r)) +
+                    ", the hit region has " + std::to_string(sbt_.hitCount()) + " (instance " +
                     std::to_string(instance) + " sbt_offset " +
                     std::to_string(inst.sbt_offset & 0xFFFFFF) + " + geometry " +
                     std::to_string(geometry) + " x stride " + std::to_string(r.sbt_stride & 0xF) +
                     " + sbt_offset " + std::to_string(r.sbt_offset & 0xF) + ")");
 }
 
-void Machine::missRecordOutOfRange(const TraceRay& r) {
+void LaunchState::missRecordOutOfRange(const TraceRay& r) {
   markUndefined(UndefinedReason::MissRecordOutOfRange,
                 "pipeline.sbt.miss: miss index " + std::to_string(r.miss & 0xFFFF) +
-                    ", the miss region has " + std::to_string(default_miss_.size()));
+                    ", the miss region has " + std::to_string(sbt_.miss().size()));
 }
 
-void Machine::payloadTypeDiffers(const Payload& p, uint32_t shader_location, const char* list,
-                                 uint32_t index, const char* stage) {
+void LaunchState::payloadTypeDiffers(const Payload& p, uint32_t shader_location, const char* list,
+                                     uint32_t index, const char* stage) {
   const std::vector<uint32_t>& words = sh_.c->pipeline.payload_words;
   const std::string shader = std::string(list) + "[" + std::to_string(index) + "]" + stage;
   auto words_of = [&](uint32_t location) {
@@ -161,8 +158,8 @@ void Machine::payloadTypeDiffers(const Payload& p, uint32_t shader_location, con
                     std::to_string(words_of(p.location)) + " words)");
 }
 
-void Machine::callDataTypeDiffers(const CallData& d, uint32_t callable) {
-  if (ray_undefined_) return;
+void LaunchState::callDataTypeDiffers(const CallData& d, uint32_t callable) {
+  if (ray_undefined) return;
   const Pipeline& p = sh_.c->pipeline;
   const uint32_t own = p.callableData(callable);
   markUndefined(UndefinedReason::CallDataType,
@@ -173,8 +170,8 @@ void Machine::callDataTypeDiffers(const CallData& d, uint32_t callable) {
                     std::to_string(p.callDataWords(d.location)) + " words)");
 }
 
-void Machine::nullShaderReached(uint32_t flag, const char* shader, const char* region,
-                                uint32_t record) {
+void LaunchState::nullShaderReached(uint32_t flag, const char* shader, const char* region,
+                                    uint32_t record) {
   std::string name = "no_null_*";
   for (const auto& [n, bit] : pipelineFlagNames())
     if (bit == flag) name = n;
@@ -184,57 +181,12 @@ void Machine::nullShaderReached(uint32_t flag, const char* shader, const char* r
                                                  name + " rules out");
 }
 
-void Machine::divisionByZero(const CExpr& e) {
-  if (ray_undefined_) return;
+void LaunchState::divisionByZero(const CExpr& e) {
+  if (ray_undefined) return;
   const std::string field =
       e.src && !e.src->loc.field.empty() ? e.src->loc.field : std::string(e.src ? e.src->name : "");
   markUndefined(UndefinedReason::DivisionByZero,
                 field + ": uint " + (e.op == OpCode::Mod ? "modulo" : "division") + " by zero");
-}
-
-void Machine::checkCandidates(const Traversal& tr, const std::vector<ModelCandidate>& cands) {
-  if (ray_undefined_ || !sh_.check_candidates) return;
-  const ModelScene& scene = *sh_.scene;
-  const TraceRay& r = tr.ray;
-  for (const ModelCandidate& cand : cands) {
-    const ModelInstance& mi = scene.instances[cand.instance];
-    const ModelGeometry& g = scene.blases[mi.blas].geometries[cand.geometry];
-    // R-CULL-OPQ drops it whatever it is (Embree has applied the masks and skips).
-    const bool opaque = resolveOpaque(g.flags, mi.src->flags, tr.flags);
-    if (((tr.flags & kRayCullOpaque) && opaque) || ((tr.flags & kRayCullNoOpaque) && !opaque))
-      continue;
-    if (cand.nan_triangle) {
-      const Geometry& src = sh_.c->scene.blases[mi.blas].geometries[cand.geometry];
-      const std::string field = !src.loc.field.empty()
-                                    ? src.loc.field
-                                    : "scene.blas." + sh_.c->scene.blases[mi.blas].name + "[" +
-                                          std::to_string(cand.geometry) + "]";
-      markUndefined(UndefinedReason::NanTriangle,
-                    field + ": triangle " + std::to_string(cand.primitive) +
-                        " has NaN in Y or Z (instance " + std::to_string(cand.instance) + ")");
-      return;
-    }
-    const double tl = tr.tol(cand.t);
-    if (cand.t < r.tmin - tl || cand.t > r.tmax + tl) continue;
-    // A device reads the record of every box (its intersection shader runs)
-    // and of every non-opaque triangle (its any-hit may run), in any order:
-    // beyond the hit region, or all zero where the pipeline promises that
-    // shader (R-NULL-SHADERS), the ray is undefined.
-    const SbtRecord* rec = hitRecord(cand.instance, cand.geometry, r);
-    if (rec && rec->group) continue;
-    const bool needed =
-        cand.aabb || (!opaque && (cand.hit || cand.ambiguity != TriAmbiguity::None) &&
-                      !facing(scene, cand, r, tr.flags).culled);
-    if (needed && !rec) {
-      hitRecordOutOfRange(cand.instance, cand.geometry, r);
-      return;
-    }
-    if (needed)
-      nullShader(cand.aabb ? kPipelineNoNullIntersection : kPipelineNoNullAnyHit,
-                 cand.aabb ? "an intersection shader" : "an any-hit", "hit",
-                 static_cast<uint32_t>(hitRecordIndex(cand.instance, cand.geometry, r)));
-    if (ray_undefined_) return;
-  }
 }
 
 }  // namespace rayspec

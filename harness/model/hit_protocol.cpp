@@ -1,0 +1,164 @@
+// The any-hit / intersection protocol (hit_protocol.h).
+#include "model/hit_protocol.h"
+
+#include <cmath>
+
+#include "case/flag_names.h"
+#include "model/sphere_error.h"
+#include "model/stage_interpreter.h"
+#include "model/traversal.h"
+
+namespace rayspec {
+
+using namespace trace_detail;
+
+namespace {
+
+// The flags of the geometry a candidate belongs to.
+uint32_t geometryFlags(const ModelScene& scene, const ModelCandidate& c) {
+  return scene.blases[scene.instances[c.instance].blas].geometries[c.geometry].flags;
+}
+
+bool reportsSphereRoot(const CStmt& s, const StageEnv& env) {
+  return s.t.kind == Expr::Kind::Op &&
+         (s.t.op == OpCode::SphereNear || s.t.op == OpCode::SphereFar) && env.hit && env.ray;
+}
+
+}  // namespace
+
+void HitProtocol::runIntersection(Traversal& tr, const ModelCandidate& cand, size_t k, bool opaque,
+                                  const SbtRecord* rec, const CHitGroup* grp) {
+  const TraceRay& r = tr.ray;
+  HitView hv = viewOf(*sh_.scene, *sh_.c, r, cand.instance, cand.geometry, cand.primitive);
+  tr.cur = &cand;
+  tr.cur_index = k;
+  tr.cur_opaque = opaque;
+  if (tr.reports) tr.reports->push_back({k, NAN});  // it ran (the exact tier's tie check)
+  tr.sphere_ord = 0;
+  tr.report_ord = 0;
+  tr.cur_rec = rec;
+  tr.cur_group = grp;
+  st_.bumpRuns(kRunsIntersection);
+  StageEnv env = hitStage(Stage::Intersection, rec->data, nullptr, r, hv,
+                          static_cast<float>(tr.tmax_cur), tr.depth);
+  env.traversal = &tr;
+  interp_.exec(*grp->intersection, env);
+  tr.cur = nullptr;
+}
+
+Flow HitProtocol::runAnyHit(const CProgram& p, StageEnv& a, const HitView& hv,
+                            uint32_t geometry_flags) {
+  st_.markAnyHit(hv);
+  const Flow first = interp_.exec(p, a);
+  const AnyHitRepeat repeat = sh_.any_hit_repeat;
+  if (first == Flow::Terminate || repeat == AnyHitRepeat::None ||
+      (geometry_flags & kGeometryNoDuplicateAnyHit) ||
+      (repeat == AnyHitRepeat::First && st_.repeated_any_hit))
+    return first;
+  st_.repeated_any_hit = true;
+  st_.markAnyHit(hv);
+  return interp_.exec(p, a);
+}
+
+double HitProtocol::sphereRootError(const CStmt& s, const HitView& h, const StageEnv& env) const {
+  const ModelInstance& mi = sh_.scene->instances[h.instance];
+  const SphereError se =
+      sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
+                  objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
+  return s.t.op == OpCode::SphereNear ? se.near_err : se.far_err;
+}
+
+bool HitProtocol::reportInside(const CStmt& s, StageEnv& env, Traversal& tr, float t) {
+  // R-ISECT-REPORT, R-CAND-AABB-CLOSED: tmin <= t <= current tmax.
+  bool inside = t >= tr.ray.tmin && static_cast<double>(t) <= tr.tmax_cur;
+  if (sh_.fault_seam.openAabbInterval())
+    inside = t > tr.ray.tmin && static_cast<double>(t) < tr.tmax_cur;
+  if (tr.reports && t >= tr.ray.tmin && t <= tr.ray.tmax + tr.tol(t))
+    tr.reports->push_back({tr.cur_index, t});
+  if (tr.exact) {
+    // R-PREC: a sphere root within its error bound of an interval end may
+    // fall on either side on a device. Not against the current candidate's
+    // own committed report: the device compares its own roots consistently.
+    const uint32_t ord = tr.report_ord++;
+    if (const ShaderDecision* f = tr.forced(1, ord)) {
+      inside = f->value;
+    } else if (tr.shader_unsure && reportsSphereRoot(s, env)) {
+      const HitView& h = *env.hit;
+      const double et = sphereRootError(s, h, env) + tr.tol(t);
+      const bool own = tr.best.valid && tr.best.instance == h.instance &&
+                       tr.best.geometry == h.geometry && tr.best.primitive == h.primitive;
+      const bool near_end = std::fabs(double(t) - tr.ray.tmin) <= et ||
+                            (!own && std::fabs(double(t) - tr.tmax_cur) <= et);
+      if (near_end) tr.shader_unsure->push_back({tr.cur_index, 1, ord, inside});
+    }
+  }
+  // What-if run preferring one candidate (R-TIE): it wins every tie, and a
+  // committed preferred hit loses none.
+  if (tr.prefer >= 0 && t >= tr.ray.tmin && tr.ties(t)) {
+    if (tr.cur_index == static_cast<size_t>(tr.prefer))
+      inside = true;
+    else if (tr.isPreferred(tr.best.instance, tr.best.geometry, tr.best.primitive))
+      inside = false;
+  }
+  return inside;
+}
+
+Flow HitProtocol::report(const CStmt& s, StageEnv& env) {
+  Traversal* tr = env.traversal;
+  if (!tr || !tr->cur) return Flow::Continue;
+  const Val tv = interp_.eval(s.t, env);
+  const float t = s.t.type == ValueType::Uint ? static_cast<float>(tv.u) : tv.f[0];
+  const uint32_t kind = interp_.eval(s.hit_kind, env).u;
+  Val attr;
+  if (s.has_attribute) attr = interp_.eval(s.attribute, env);
+  bool accepted = false;
+  if (reportInside(s, env, *tr, t)) {
+    HitView hv = *env.hit;
+    setHit(hv, t, kind, attr.f[0], attr.f[1]);
+    for (const CAssign& a : s.assigns)
+      hv.words[a.word % kMaxAttributeWords] = interp_.eval(a.value, env).u;
+    Flow ah = Flow::Continue;
+    if (!tr->cur_opaque && tr->cur_group && tr->cur_group->any_hit) {
+      // R-TMAX-VIEW: any-hit sees the candidate's t.
+      st_.checkPayloadType(*tr->payload, tr->cur_group->payload, "pipeline.hit_groups",
+                           *tr->cur_rec->group, ".any_hit");
+      StageEnv a =
+          hitStage(Stage::AnyHit, tr->cur_rec->data, tr->payload, tr->ray, hv, t, tr->depth);
+      ah = runAnyHit(*tr->cur_group->any_hit, a, hv, geometryFlags(*sh_.scene, *tr->cur));
+    }
+    if (ah != Flow::Ignore) {
+      accepted = true;
+      tr->best = {true, static_cast<double>(t), hv.instance, hv.geometry, hv.primitive, kind, hv.b1,
+                  hv.b2};
+      tr->best.words = hv.words;
+      // R-PREC: how far a device's root may lie from this one.
+      if (tr->exact && reportsSphereRoot(s, env)) tr->best.t_err = sphereRootError(s, hv, env);
+      tr->tmax_cur = t;
+      env.tmax_view = t;
+      if (ah == Flow::Terminate || (tr->flags & kRayTerminateOnFirstHit)) {
+        tr->stop = true;
+        return Flow::Terminate;  // R-TERMINATE: the intersection program stops too
+      }
+    }
+  }
+  return interp_.exec(accepted ? s.then_ : s.else_, env);
+}
+
+bool HitProtocol::sphereHitDecision(StageEnv& env, bool model_value, float disc) {
+  Traversal* tr = env.traversal;
+  if (!tr->exact || !tr->cur || env.stage != Stage::Intersection) return model_value;
+  const uint32_t ord = tr->sphere_ord++;
+  if (const ShaderDecision* f = tr->forced(0, ord)) return f->value;
+  if (tr->shader_unsure && env.hit && env.ray) {
+    const HitView& h = *env.hit;
+    const ModelInstance& mi = sh_.scene->instances[h.instance];
+    const SphereError se =
+        sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
+                    objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
+    if (std::fabs(double(disc)) <= se.disc_err)
+      tr->shader_unsure->push_back({tr->cur_index, 0, ord, model_value});
+  }
+  return model_value;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,121 @@
+// The launch ray a Machine is on and what its launch rays leave behind:
+// counters, the ray's record, ambiguous, bounded and undefined rays, and the
+// first case error. Every part of the Machine writes here and nowhere else,
+// so the exact tier's what-if runs can save and restore it (save, restore).
+// The R-UB diagnoses are here too (launch_state_undefined.cpp): each marks
+// the current launch ray once, with the first reason.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "model/model_sbt.h"
+#include "model/model_shared.h"
+#include "model/model_stage_env.h"
+#include "results/results.h"
+
+namespace rayspec {
+
+// A stage's run counter in the record (raygen_runs .. callable_runs).
+enum RunsField {
+  kRunsRaygen,
+  kRunsMiss,
+  kRunsClosestHit,
+  kRunsAnyHit,
+  kRunsIntersection,
+  kRunsCallable
+};
+
+struct LaunchState {
+  LaunchState(const ModelShared& shared, const ModelSbt& sbt, uint32_t* records_in);
+
+  // What the launch rays leave behind.
+  std::vector<uint64_t> counters;
+  std::vector<RayAmbiguity> ambiguous;
+  std::vector<TBound> t_bounds;
+  // R-UB: launch rays whose behaviour is undefined, the first reason each.
+  // A what-if run of the exact tier may add one too: a legal path into
+  // undefined behaviour makes the ray undefined.
+  std::vector<UndefinedRay> undefined;
+  std::string error;  // first case error (an unknown built-in or op)
+
+  // The launch ray now.
+  uint32_t* records = nullptr;  // ray i's record at records + i * recordWords()
+  uint32_t* rec = nullptr;      // this launch ray's record
+  uint32_t index = 0, x = 0, y = 0;
+  std::array<uint32_t, 3> launch{};  // Rays::launchSize()
+  bool ray_ambiguous = false;
+  bool ray_undefined = false;
+  bool repeated_any_hit = false;  // AnyHitRepeat::First: this launch ray repeated one
+  uint32_t call_nesting = 0;      // callables running now (Pipeline::callableDepth)
+
+  // Starts launch ray i (its record, its flags cleared).
+  void startRay(uint32_t i);
+  void record(int field, const Val& v, ValueType t);
+  void bumpRuns(int which) {  // kRuns* above
+    if (rec) rec[runs_offset_[which]] += 1;
+  }
+  uint32_t runsOffset(int which) const { return runs_offset_[which]; }
+  // any-hit runs on a primitive: its run count and its bit in any_hit_slots
+  // (any_hit_repeats when set already; results/record_layout.h).
+  void markAnyHit(const HitView& hv);
+  void bump(const CountsOnly& k) {
+    if (k.counters.size() == 1) {
+      counters[k.counters[0]] += 1;
+      return;
+    }
+    for (int i : k.counters) counters[i] += 1;
+  }
+
+  // What a sandbox keeps: the counters, the launch's record and the error.
+  struct Saved {
+    std::vector<uint64_t> counters;
+    std::vector<uint32_t> record;
+    std::string error;
+  };
+  Saved save() const;
+  void restore(const Saved& s);
+
+  // Undefined behaviour (R-UB), launch_state_undefined.cpp; the model then
+  // goes on in the documented way of each caller.
+  void markUndefined(UndefinedReason why, std::string what);
+  // Non-finite origin or direction, NaN or negative tmin, tmax below tmin,
+  // an illegal flag combination: true when the ray is undefined (it is then
+  // traced as nothing: no candidate, a miss). `site`: the trace statement
+  // (or raygen's `trace: {}` of the launch ray).
+  bool checkRayParameters(const TraceRay& r, const CStmt* site, uint32_t depth);
+  void hitRecordOutOfRange(uint32_t instance, uint32_t geometry, const TraceRay& r);
+  void missRecordOutOfRange(const TraceRay& r);
+  // A shader declaring the incoming payload type of location `shader_location`
+  // reached by a trace whose payload has another type.
+  // The shader is named `list`[index]`stage` ("pipeline.miss", 2, "").
+  void checkPayloadType(const Payload& p, uint32_t shader_location, const char* list,
+                        uint32_t index, const char* stage) {
+    if (sh_.payload_types && !ray_undefined)
+      payloadTypeDiffers(p, shader_location, list, index, stage);
+  }
+  // A callable declaring another incoming callable data type than the call passes.
+  void callDataTypeDiffers(const CallData& d, uint32_t callable);
+  void divisionByZero(const CExpr& e);
+  // R-NULL-SHADERS: a shader of kind `flag` (a pipeline flag no_null_*) would
+  // run from an all-zero SBT record of `region`: undefined when the pipeline
+  // has that flag.
+  void nullShader(uint32_t flag, const char* shader, const char* region, uint32_t record) {
+    if ((sh_.c->pipeline.flags & flag) && !ray_undefined)
+      nullShaderReached(flag, shader, region, record);
+  }
+
+ private:
+  void payloadTypeDiffers(const Payload& p, uint32_t shader_location, const char* list,
+                          uint32_t index, const char* stage);
+  void nullShaderReached(uint32_t flag, const char* shader, const char* region, uint32_t record);
+
+  const ModelShared& sh_;
+  const ModelSbt& sbt_;
+  uint32_t runs_offset_[6] = {};
+  uint32_t slots_offset_ = 0, repeats_offset_ = 0;  // any_hit_slots, any_hit_repeats
+};
+
+}  // namespace rayspec

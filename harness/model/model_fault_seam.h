@@ -1,0 +1,64 @@
+// The one place the model reads its planted faults (ModelFaults,
+// model/model_faults.h; test only). Every other model file asks this seam
+// a question named for the rule it decides, and style/fault-seam
+// (tools/check-fault-seam.sh) fails when another model file reads a knob.
+// A product run builds it from ModelOptions left at their defaults: each
+// answer is then the model's own behaviour.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+
+#include "model/model_faults.h"
+
+namespace rayspec {
+
+struct ModelOptions;
+
+class ModelFaultSeam {
+ public:
+  ModelFaultSeam() = default;
+  explicit ModelFaultSeam(const ModelOptions& opt);
+
+  // R-CAND-TRI-OPEN broken: a triangle at exactly tmin or tmax is a candidate.
+  bool closedTriangleInterval() const {
+    return f_.deviation == ModelDeviation::ClosedTriangleInterval;
+  }
+  // R-CAND-AABB-CLOSED broken: a report at exactly tmin or tmax is refused.
+  bool openAabbInterval() const { return f_.deviation == ModelDeviation::OpenAabbInterval; }
+  // R-ORDER-UNSPEC: candidates decided near to far, the model's own order
+  // (only then may a trace take Embree's own closest hit).
+  bool distanceOrder() const { return f_.order == CandidateOrder::Distance; }
+  // Whether candidate a (at t_a, with the key (instance, geometry,
+  // primitive) smaller than b's: key_less) is decided before b (at t_b).
+  bool decidedBefore(double t_a, double t_b, bool key_less) const {
+    if (f_.order == CandidateOrder::BuildOrder || t_a == t_b) return key_less;
+    return f_.order == CandidateOrder::ReverseDistance ? t_a > t_b : t_a < t_b;
+  }
+  // R-STACK broken: a callable nested past the default stack does nothing.
+  bool stackSizeIgnored() const { return f_.stack_size_ignored; }
+  // R-POSITION-FETCH broken: vertex_position<i> in world space.
+  bool positionFetchWorldSpace() const { return f_.position_fetch_world_space; }
+  // R-BUILTIN broken: object_to_world and world_to_object swapped.
+  bool transformBuiltinsSwapped() const { return f_.transform_builtins_swapped; }
+  // Live state broken: locals read zero after a trace, call or report.
+  bool localsLostAcrossCalls() const { return f_.locals_lost_across_calls; }
+  // A legal device (rayspec mutate) or one passing between shared edges:
+  // an ambiguous trace is replayed as another of its answers.
+  bool answersOtherwise() const { return f_.legal_answer != 0 || f_.pass_between_edges; }
+  // Which of an ambiguous trace's answers such a device takes: the first of
+  // its `leaks` answers passing between shared edges (R-WATERTIGHT not met)
+  // when there is one, else the legal answer of ModelFaults::legal_answer
+  // among `legal`; none: the model's own.
+  struct Answer {
+    bool leak = false;
+    size_t index = 0;
+  };
+  std::optional<Answer> answerTaken(size_t legal, size_t leaks) const;
+
+ private:
+  ModelFaults f_;
+};
+
+}  // namespace rayspec

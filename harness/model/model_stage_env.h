@@ -1,0 +1,87 @@
+// What a stage program sees: the payload and callable data it reads and
+// writes, the ray of its trace, the hit or candidate (HitView) and its
+// frame (StageEnv), and how a statement ends (Flow).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "case/case.h"
+#include "model/model_program.h"
+
+namespace rayspec {
+
+struct Payload {
+  std::array<float, 4> color{};
+  uint32_t value = 0;
+  uint32_t depth = 0;
+  uint32_t location = 0;  // the trace's payload location (its type: Pipeline::payload_words)
+  std::array<uint32_t, kMaxPayloadWords> words{};
+};
+
+struct CallData {
+  std::array<float, 4> color{};
+  std::array<float, 3> position{}, normal{};
+  uint32_t value = 0;
+  uint32_t location = 0;  // the call's data location (its type: Pipeline::call_data_words)
+  std::array<uint32_t, kMaxCallDataWords> words{};
+};
+
+struct TraceRay {
+  Vec3 origin{}, direction{};
+  float tmin = 0, tmax = 0;
+  uint32_t flags = 0, cull_mask = 0xFF, sbt_offset = 0, sbt_stride = 1, miss = 0;
+  uint32_t tlas = 0;  // the top level traversed
+};
+
+// The trace of a launch's own ray (`trace: {}` in raygen).
+inline TraceRay launchRay(const Ray& base) {
+  TraceRay r;
+  r.origin = base.origin;
+  r.direction = base.direction;
+  r.tmin = base.tmin;
+  r.tmax = base.tmax;
+  r.flags = base.flags;
+  r.cull_mask = base.cull_mask;
+  r.sbt_offset = base.sbt_offset;
+  r.sbt_stride = base.sbt_stride;
+  r.miss = base.miss;
+  return r;
+}
+
+// Built-ins of a hit or candidate.
+struct HitView {
+  uint32_t primitive = 0, instance = 0, custom_index = 0, geometry = 0, hit_kind = 0;
+  float t = 0, b1 = 0, b2 = 0;
+  Vec3 object_origin{}, object_direction{};
+  Vec3 aabb_min{}, aabb_max{};
+  // A triangle hit's vertices in object space (geometry transform applied):
+  // the vertex_position<i> built-ins; nullptr for a box.
+  const std::array<Vec3, 3>* vertices = nullptr;
+  // The words a report gave the hit attribute (attribute.word<i>).
+  std::array<uint32_t, kMaxAttributeWords> words{};
+};
+
+struct Traversal;
+
+struct StageEnv {
+  Stage stage = Stage::Raygen;
+  const std::vector<uint32_t>* record_data = nullptr;
+  Payload* payload = nullptr;  // incoming payload, or raygen's last trace payload
+  Payload child;               // last nested trace (closest-hit, miss)
+  CallData* call = nullptr;    // incoming callable data
+  CallData callee;             // after this stage's last call
+  const TraceRay* ray = nullptr;
+  const HitView* hit = nullptr;
+  float tmax_view = 0;
+  uint32_t depth = 0;
+  Traversal* traversal = nullptr;  // intersection (report) and any-hit
+  std::vector<Val> locals;         // the frame's local variables (program/locals.h slots)
+};
+
+// How a statement ends: go on, ignore / terminate (any-hit), or leave a
+// repeat (Break), an iteration (Next) or a function (Return).
+enum class Flow { Continue, Ignore, Terminate, Break, Next, Return };
+
+}  // namespace rayspec

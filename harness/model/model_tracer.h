@@ -1,0 +1,93 @@
+// traceRayEXT in the model: Embree enumerates a trace's candidates, the
+// tracer decides them in order (model_engine.h), the exact tier checks
+// whether a device could answer otherwise (model_exact_tier.cpp), then
+// closest-hit or miss runs (model_traversal.cpp); a trace with nothing to
+// decide takes Embree's own closest hit (model_fast_path.cpp). The programs
+// a candidate runs go through HitProtocol, closest-hit and miss through the
+// StageInterpreter.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "model/launch_state.h"
+#include "model/model_sbt.h"
+#include "model/model_shared.h"
+#include "model/model_stage_env.h"
+#include "model/model_trace_context.h"
+#include "model/model_what_if.h"
+
+namespace rayspec {
+
+struct Traversal;
+class StageInterpreter;
+class HitProtocol;
+
+class ModelTracer {
+ public:
+  ModelTracer(const ModelShared& shared, LaunchState& state, const ModelSbt& sbt,
+              StageInterpreter& interp, HitProtocol& hits)
+      : sh_(shared), st_(state), sbt_(sbt), interp_(interp), hits_(hits) {}
+  // One trace; `site`: the trace statement (or raygen's `trace: {}` of the
+  // launch ray), named when the trace is undefined; `payload` is what the
+  // trace starts with.
+  Payload trace(const TraceRay& r, uint32_t depth, const CStmt* site, Payload payload = {});
+  // Raygen is `trace: {}` and traces take Embree's closest hit: the launch
+  // rays [begin, end) are traced and shaded in one pass (model_fast_path.cpp).
+  void runLaunchRaysDirect(uint32_t begin, uint32_t end);
+
+ private:
+  friend class TraceClassifier;  // model_exact_tier.cpp: classifyTrace's steps
+  Committed directHit(const TraceRay& r, uint32_t flags);
+  Committed traverse(const TraceRay& r, uint32_t flags, uint32_t depth, Payload& payload);
+  // R-MISS-XOR-CHIT: closest-hit or miss for the committed hit.
+  void shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Committed& best,
+             Payload& payload);
+  void decide(Traversal& tr, const std::vector<ModelCandidate>& cands, const int8_t* force,
+              Payload& payload);
+  // Whether a triangle candidate's t counts (decide's step).
+  bool triangleInside(const Traversal& tr, const ModelCandidate& cand, size_t k,
+                      const int8_t* force) const;
+  // R-UB: every candidate a device may need the hit record of (an AABB, a
+  // non-opaque triangle) with the record beyond the hit region, and a
+  // triangle with NaN in Y or Z whose region the ray crosses.
+  void checkCandidates(const Traversal& tr, const std::vector<ModelCandidate>& cands);
+  // One decision of the trace as `how` says, on `payload` (decideAs), and the
+  // same in a sandbox: the launch state restored, the payload a copy of the
+  // trace's incoming one (sandbox).
+  Committed decideAs(const Traversal& actual, const std::vector<ModelCandidate>& cands,
+                     const WhatIf& how, Payload& payload);
+  Committed sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands,
+                    const WhatIf& how, const Payload& payload_in);
+  // Exact tier: marks the current ray ambiguous when this trace's answer could
+  // differ on a device, with the legal answers (model_exact_tier.cpp).
+  // Returns how to decide the trace as a legal device that takes another of
+  // its answers (ModelFaultSeam::answerTaken), if asked.
+  std::optional<WhatIf> classifyTrace(Traversal& tr, const std::vector<ModelCandidate>& cands,
+                                      const std::vector<std::pair<size_t, double>>& reports,
+                                      const std::vector<ShaderDecision>& shader_unsure,
+                                      const Payload& payload_in);
+  bool anyHitMayTerminate(const Traversal& tr, const std::vector<ModelCandidate>& cands) const;
+  // `leaks`: the answers of devices passing between the triangles of a
+  // shared edge or vertex (no triangle of a group of two or more hit).
+  std::vector<WhatIfAnswer> whatIf(const Traversal& actual,
+                                   const std::vector<ModelCandidate>& cands,
+                                   const std::vector<size_t>& unsure, const Payload& payload_in,
+                                   std::vector<WhatIfAnswer>* leaks);
+  // runLaunchRaysDirect's way for a launch ray that is not only counted: as
+  // trace() does, with the ray's launch state and Embree's answer.
+  const CountsOnly* countedMiss(const TraceRay& r0) const;
+  void shadeLaunchRay(uint32_t i, const Ray& ray, uint32_t flags, const RTCRayHit& rh, bool hit,
+                      uint32_t* rec);
+
+  const ModelShared& sh_;
+  LaunchState& st_;
+  const ModelSbt& sbt_;
+  StageInterpreter& interp_;
+  HitProtocol& hits_;
+  std::vector<std::vector<ModelCandidate>> cand_pool_;  // per trace depth
+};
+
+}  // namespace rayspec

@@ -1,0 +1,55 @@
+// The exact tier's what-if runs (model_exact_tier.cpp): the hit a decision
+// commits, an intersection program's decision that rounding may flip, and
+// how one what-if run decides.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "model/model_program.h"
+
+namespace rayspec {
+
+// Exact tier, R-PREC: a decision of an intersection program that float
+// rounding may flip on a device (reason "shader-arith"): the n-th (ordinal)
+// sphere_hit (kind 0) or report interval test (kind 1) of candidate `cand`'s
+// intersection program, and the value it took (or is forced to take).
+struct ShaderDecision {
+  size_t cand = 0;
+  uint8_t kind = 0;
+  uint32_t ordinal = 0;
+  bool value = false;
+};
+
+// The hit a traversal committed.
+struct Committed {
+  bool valid = false;
+  double t = 0;
+  uint32_t instance = 0, geometry = 0, primitive = 0, kind = 0;
+  float b1 = 0, b2 = 0;
+  // Exact tier: bound on a device's t beyond the model's (a sphere root's
+  // rounding, a triangle's frame error).
+  double t_err = 0;
+  std::array<uint32_t, kMaxAttributeWords> words{};  // a report's attribute words
+};
+
+// How one what-if run of the exact tier decides (ModelTracer::sandbox):
+// candidates forced to be a hit (1) or not (0), -1 the model's own decision;
+// the candidate that wins every tie (prefer) or is processed first (first),
+// -1 none; an intersection program's decision flipped. `actual`: the trace's
+// own run, no what-if.
+struct WhatIf {
+  bool actual = false;
+  std::vector<int8_t> force;  // empty: none forced
+  long prefer = -1, first = -1;
+  std::optional<ShaderDecision> shader;
+};
+struct WhatIfAnswer {
+  Committed best;
+  WhatIf how;
+};
+
+}  // namespace rayspec

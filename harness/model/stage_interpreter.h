@@ -1,0 +1,62 @@
+// The stage-program interpreter of the model: the meaning of every statement
+// and op (program/program.h, ops.h). It reads built-ins through
+// ModelBuiltins, writes counters and records to the LaunchState, and leaves
+// the rest to the two parts it calls back: a trace statement to ModelTracer
+// (trace), a report and sphere_hit in an intersection program to
+// HitProtocol (report, sphereHitDecision).
+#pragma once
+
+#include <cstdint>
+
+#include "model/launch_state.h"
+#include "model/model_builtins.h"
+#include "model/model_sbt.h"
+#include "model/model_shared.h"
+#include "model/model_stage_env.h"
+
+namespace rayspec {
+
+class ModelTracer;
+class HitProtocol;
+
+class StageInterpreter {
+ public:
+  StageInterpreter(const ModelShared& shared, LaunchState& state, const ModelSbt& sbt,
+                   const ModelBuiltins& builtins, ModelTracer& tracer, HitProtocol& hits)
+      : sh_(shared), st_(state), sbt_(sbt), builtins_(builtins), tracer_(tracer), hits_(hits) {}
+  Flow exec(const CProgram& p, StageEnv& env);
+  Val eval(const CExpr& e, StageEnv& env);
+  // Raygen's program for the current launch ray.
+  void runRaygen();
+
+ private:
+  // shader_record.NAME: its words in the record data (pipeline.sbt.record_layout).
+  static Val recordMember(const CExpr& e, const StageEnv& env);
+  Val op(const CExpr& e, StageEnv& env);  // stage_interpreter_ops.cpp
+  // The ops op() runs before evaluating arguments (spheres, shader record
+  // words, short-circuit and/or); false for any other op.
+  bool opOnDemand(const CExpr& e, StageEnv& env, Val& r);
+  // add sub mul div min max on evaluated arguments.
+  Val arithmetic(const CExpr& e, const Val* a);
+  Flow execStmt(const CStmt& s, StageEnv& env);
+  void execSet(const CStmt& s, StageEnv& env);      // set payload / set call data
+  Flow execControl(const CStmt& s, StageEnv& env);  // let .. return (model_control_flow.cpp)
+  Flow execRepeat(const CStmt& s, StageEnv& env);
+  Flow execSwitch(const CStmt& s, StageEnv& env);
+  Flow execInvoke(const CStmt& s, StageEnv& env);
+  void loseLocals(StageEnv& env) const;
+  void execCall(const CStmt& s, StageEnv& env);   // executeCallableEXT
+  void execTrace(const CStmt& s, StageEnv& env);  // traceRayEXT
+  Payload startPayload(const CStmt& s, StageEnv& env);
+  TraceRay tracedRay(const CStmt& s, StageEnv& env);
+  void callCallable(uint32_t index, CallData& data, uint32_t depth, const CStmt& site);
+
+  const ModelShared& sh_;
+  LaunchState& st_;
+  const ModelSbt& sbt_;
+  const ModelBuiltins& builtins_;
+  ModelTracer& tracer_;
+  HitProtocol& hits_;
+};
+
+}  // namespace rayspec
