@@ -66,6 +66,28 @@ TEST(ReadmeCtsTable, EveryGroupOnceAndTheCountsSumToTheMustpassTotal) {
   EXPECT_EQ(total, 19206);
 }
 
+// A folder a row's notes name in parentheses, e.g. "(builtins/launch-zero)":
+// its cases exist and are among the row's globs, so the notes cannot place
+// a capability in a folder that does not hold it.
+TEST(ReadmeCtsTable, EveryFolderTheNotesNameIsAmongTheRowsCases) {
+  const std::regex folder("\\(([a-z0-9-]+/[a-z0-9/*-]+)\\)");
+  for (const GroupRow& r : readmeRows()) {
+    std::set<std::string> row_cases;
+    for (const std::string& g : r.globs)
+      for (const CaseFile& f : findCases(kSuiteCases, g)) row_cases.insert(f.name);
+    for (std::sregex_iterator m(r.notes.begin(), r.notes.end(), folder), end; m != end; ++m) {
+      std::string named = (*m)[1];
+      if (named.back() != '*') named += "*";
+      const std::vector<CaseFile> found = findCases(kSuiteCases, named);
+      EXPECT_FALSE(found.empty()) << r.group << ": the notes name " << named << ", no case";
+      bool listed = false;
+      for (const CaseFile& f : found) listed = listed || row_cases.count(f.name);
+      EXPECT_TRUE(listed) << r.group << ": the notes name " << named
+                          << ", which none of the row's globs covers";
+    }
+  }
+}
+
 TEST(ReadmeCtsTable, EveryCaseGlobMatchesSuiteCases) {
   for (const GroupRow& r : readmeRows())
     for (const std::string& g : r.globs)
