@@ -31,12 +31,12 @@
 #include <fstream>
 #include <string>
 
+#include "bundle/results_io.h"
 #include "report/baseline.h"
 #include "report/merge_runs.h"
 #include "report/outcome_json.h"
 #include "results/file_name.h"
 #include "results/record_layout.h"
-#include "results/results_io.h"
 #include "spirv/compile_glsl.h"
 #include "spirv/spirv_cache.h"
 

@@ -1,4 +1,4 @@
-// Step costs: names, the timer, JSON (results/step_cost.h, step_cost_json.h).
+// Step costs: names and the timer (results/step_cost.h).
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -8,7 +8,6 @@
 #include <thread>
 
 #include "results/step_cost.h"
-#include "results/step_cost_json.h"
 
 namespace rayspec {
 namespace {
@@ -49,18 +48,6 @@ TEST(StepCost, TimerAddsOnceAndSumsAdd) {
   cc[CostSide::Device] = c;
   cc[CostSide::Parent].add(CostStep::Reports, 0.5);
   EXPECT_DOUBLE_EQ(cc.total(), c.total() + 0.5);
-}
-
-TEST(StepCost, JsonKeepsTheStepsThatTookTimeAndRefusesUnknownOnes) {
-  StepCosts c;
-  c.add(CostStep::SpirvCompile, 0.25);
-  c.add(CostStep::ModelTrace, 1.5);
-  const nlohmann::json j = costJson(c);
-  EXPECT_EQ(j.size(), 2u);
-  EXPECT_EQ(j["spirv_compile"], 0.25);
-  const StepCosts back = costFromJson(j);
-  EXPECT_EQ(back.seconds, c.seconds);
-  EXPECT_THROW(costFromJson(nlohmann::json{{"warp_drive", 1.0}}), std::runtime_error);
 }
 
 }  // namespace

@@ -6,11 +6,11 @@
 #include <filesystem>
 #include <fstream>
 
+#include "bundle/results_io.h"
 #include "case/parse_case.h"
 #include "metamorphic/permute_case.h"
 #include "model/model_engine.h"
 #include "results/record_layout.h"
-#include "results/results_io.h"
 #include "run/device_results.h"
 #include "run/fault_seam.h"
 #include "run/isolation.h"

@@ -15,12 +15,12 @@
 #include <sstream>
 #include <thread>
 
+#include "bundle/results_io.h"
 #include "case/parse_case.h"
 #include "compare/compare_results.h"
 #include "report/rule_catalog.h"
 #include "result_support.h"
 #include "results/record_layout.h"
-#include "results/results_io.h"
 #include "run/case_steps.h"
 #include "run/child_process.h"
 #include "run/isolation.h"

@@ -8,6 +8,8 @@
 #include <ctime>
 #include <filesystem>
 
+#include "bundle/image_files.h"
+#include "bundle/results_io.h"
 #include "case/parse_case.h"
 #include "cli/commands.h"
 #include "cli/option_checks.h"
@@ -15,8 +17,6 @@
 #include "report/run_summary.h"
 #include "report/write_reports.h"
 #include "results/file_name.h"
-#include "results/image_files.h"
-#include "results/results_io.h"
 #include "run/case_steps.h"
 #include "run/judge_case.h"
 #include "run/run_loop.h"

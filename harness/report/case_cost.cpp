@@ -5,7 +5,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "results/step_cost_json.h"
+#include "bundle/step_cost_json.h"
 
 namespace rayspec {
 namespace {

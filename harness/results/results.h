@@ -2,7 +2,7 @@
 // A results bundle on disk is a folder: results.json (everything below but the
 // image pixels), records.bin (the raw per-ray words), and one NAME.raw per
 // image (raw little-endian 32-bit texels) plus NAME.png / NAME.exr when the
-// binary is built with OpenImageIO. See results/results_io.h.
+// binary is built with OpenImageIO. See bundle/results_io.h.
 #pragma once
 
 #include <cstdint>

@@ -2,13 +2,13 @@
 
 #include <filesystem>
 
+#include "bundle/results_io.h"
 #include "compare/compare_results.h"
 #include "plan/plan.h"
 #include "report/baseline_gate.h"
 #include "report/case_cost.h"
 #include "report/case_journal.h"
 #include "results/file_name.h"
-#include "results/results_io.h"
 #include "run/device_results.h"
 #include "run/fault_seam.h"
 #include "run/judge_case.h"

@@ -7,10 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include "base/visible_text.h"
+#include "bundle/results_io.h"
 #include "model/model_engine.h"
 #include "report/outcome_json.h"
 #include "results/content_hash.h"
-#include "results/results_io.h"
 #include "run/isolation.h"
 
 namespace rayspec {

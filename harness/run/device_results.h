@@ -1,6 +1,6 @@
 // Judging a device run saved elsewhere: `rayspec run --device-results DIR`
 // runs the model here and, in place of a device, reads each case's device
-// bundle DIR/<case>/device/ (results/results_io.h; what a run-only build's
+// bundle DIR/<case>/device/ (bundle/results_io.h; what a run-only build's
 // `rayspec run --out DIR` writes), then judges exactly as a live run would:
 // planted faults apply to the loaded results, crashes and timeouts saved
 // there are this case's Crash and Timeout.

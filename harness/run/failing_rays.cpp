@@ -2,8 +2,8 @@
 
 #include <set>
 
+#include "bundle/results_io.h"
 #include "results/record_layout.h"
-#include "results/results_io.h"
 
 namespace rayspec {
 

@@ -5,9 +5,9 @@
 #include <memory>
 #include <utility>
 
+#include "bundle/image_files.h"
+#include "bundle/results_io.h"
 #include "plan/plan.h"
-#include "results/image_files.h"
-#include "results/results_io.h"
 
 namespace rayspec {
 namespace {

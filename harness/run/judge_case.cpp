@@ -1,7 +1,7 @@
 #include "run/judge_case.h"
 
+#include "bundle/image_files.h"
 #include "compare/compare_results.h"
-#include "results/image_files.h"
 #include "run/failing_rays.h"
 
 namespace rayspec {

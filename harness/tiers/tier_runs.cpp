@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <fstream>
 
+#include "bundle/results_io.h"
 #include "library/case_discovery.h"
-#include "results/results_io.h"
 #include "run/run_loop.h"
 
 namespace rayspec {

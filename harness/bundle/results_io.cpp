@@ -1,4 +1,4 @@
-#include "results/results_io.h"
+#include "bundle/results_io.h"
 
 #include <algorithm>
 #include <bit>
@@ -12,11 +12,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bundle/image_files.h"
+#include "bundle/step_cost_json.h"
 #include "results/content_hash.h"
 #include "results/file_name.h"
-#include "results/image_files.h"
 #include "results/record_layout.h"
-#include "results/step_cost_json.h"
 
 namespace rayspec {
 namespace fs = std::filesystem;

@@ -1,11 +1,11 @@
-#include "results/image_files.h"
+#include "bundle/image_files.h"
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <filesystem>
 
-#include "results/results_io.h"
+#include "bundle/results_io.h"
 
 #ifdef RAYSPEC_WITH_OIIO
 #include <OpenImageIO/imageio.h>

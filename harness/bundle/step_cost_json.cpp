@@ -1,4 +1,4 @@
-#include "results/step_cost_json.h"
+#include "bundle/step_cost_json.h"
 
 #include <stdexcept>
 
