@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "base/result.h"
 #include "case/case.h"
 
 namespace rayspec {
@@ -29,7 +30,7 @@ const char* featurePathName(FeaturePath p);
 std::optional<FeaturePath> featurePathFromName(const std::string& name);
 const std::string& featurePathNames();  // "indirect, indirect2, ..." for help and errors
 
-// The case sent through `path`, or nullopt with *why_not set.
-std::optional<Case> throughPath(const Case& c, FeaturePath path, std::string* why_not);
+// The case sent through `path`, or the error saying why it cannot go.
+Result<Case> throughPath(const Case& c, FeaturePath path);
 
 }  // namespace rayspec
