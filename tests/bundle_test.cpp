@@ -51,7 +51,7 @@ TEST(ResultsIo, BundleRoundTripsEveryField) {
   const std::string dir = testing::TempDir() + "/rayspec-results-io";
   std::filesystem::remove_all(dir);
   const Results r = sampleResults();
-  ASSERT_EQ(writeResults(r, dir, {"hit_t"}), "");
+  ASSERT_TRUE(writeResults(r, dir, {"hit_t"}).ok());
   std::string error;
   const Results back = orError(readResults(dir), &error);
   ASSERT_EQ(error, "");
@@ -96,7 +96,7 @@ TEST(ResultsIo, BadBundlesNameTheFieldOrFile) {
   const std::string dir = testing::TempDir() + "/rayspec-results-bad";
   const auto edited = [&](const std::string& from, const std::string& to) {
     std::filesystem::remove_all(dir);
-    EXPECT_EQ(writeResults(sampleResults(), dir, {"hit_t"}), "");
+    EXPECT_TRUE(writeResults(sampleResults(), dir, {"hit_t"}).ok());
     std::ifstream in(dir + "/results.json");
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const size_t at = text.find(from);
@@ -140,7 +140,7 @@ TEST(ResultsIo, ImageSizesThatWrapAreErrors) {
   const std::string dir = testing::TempDir() + "/rayspec-results-wrap";
   const auto edited = [&](uint64_t width, uint64_t height, uint64_t channels) {
     std::filesystem::remove_all(dir);
-    EXPECT_EQ(writeResults(sampleResults(), dir, {}), "");
+    EXPECT_TRUE(writeResults(sampleResults(), dir, {}).ok());
     nlohmann::json j = nlohmann::json::parse(std::ifstream(dir + "/results.json"));
     j["images"][1]["width"] = width;
     j["images"][1]["height"] = height;

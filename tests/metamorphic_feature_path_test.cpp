@@ -6,6 +6,7 @@
 #include "case/flag_names.h"
 #include "case_support.h"
 #include "metamorphic/feature_path.h"
+#include "result_support.h"
 
 namespace rayspec {
 namespace {
@@ -41,55 +42,59 @@ TEST(FeaturePath, NamesRoundTrip) {
 TEST(FeaturePath, EachPathChangesItsOwnField) {
   const Case c = simpleCase();
   std::string why;
-  EXPECT_EQ(throughPath(c, FeaturePath::Indirect, &why)->rays.command, TraceCommand::Indirect);
-  EXPECT_EQ(throughPath(c, FeaturePath::Indirect2, &why)->rays.command, TraceCommand::Indirect2);
-  EXPECT_EQ(throughPath(c, FeaturePath::Serialize, &why)->scene.build.copy, AsCopy::Serialize);
-  EXPECT_EQ(throughPath(c, FeaturePath::Compact, &why)->scene.build.copy, AsCopy::Compact);
-  const Case lib = *throughPath(c, FeaturePath::Libraries, &why);
+  EXPECT_EQ(valueOrMessage(throughPath(c, FeaturePath::Indirect), &why)->rays.command,
+            TraceCommand::Indirect);
+  EXPECT_EQ(valueOrMessage(throughPath(c, FeaturePath::Indirect2), &why)->rays.command,
+            TraceCommand::Indirect2);
+  EXPECT_EQ(valueOrMessage(throughPath(c, FeaturePath::Serialize), &why)->scene.build.copy,
+            AsCopy::Serialize);
+  EXPECT_EQ(valueOrMessage(throughPath(c, FeaturePath::Compact), &why)->scene.build.copy,
+            AsCopy::Compact);
+  const Case lib = *valueOrMessage(throughPath(c, FeaturePath::Libraries), &why);
   ASSERT_EQ(lib.pipeline.libraries.size(), 1u);
   EXPECT_EQ(lib.pipeline.libraries[0].miss, (std::vector<uint32_t>{0}));
   EXPECT_EQ(lib.pipeline.libraries[0].hit_groups, (std::vector<uint32_t>{0}));
   EXPECT_EQ(lib.pipeline.libraries[0].callables, (std::vector<uint32_t>{0}));
-  const Case updated = *throughPath(c, FeaturePath::Update, &why);
+  const Case updated = *valueOrMessage(throughPath(c, FeaturePath::Update), &why);
   ASSERT_EQ(updated.scene.updates(), 1u);
   EXPECT_TRUE(updated.scene.build.flags & kBuildAllowUpdate);
   EXPECT_EQ(updated.scene.earlier.front()->instances.size(), c.scene.instances.size());
   EXPECT_EQ(updated.scene.blases[0].geometries[0].vertices,
             updated.scene.earlier.front()->blases[0].geometries[0].vertices);
-  EXPECT_TRUE(throughPath(c, FeaturePath::RayQuery, &why)->pipeline.ray_query);
+  EXPECT_TRUE(valueOrMessage(throughPath(c, FeaturePath::RayQuery), &why)->pipeline.ray_query);
 }
 
 // What the ray query form cannot express keeps a case off the path, named.
 TEST(FeaturePath, RayQueryRefusesWhatItCannotInline) {
   std::string why;
-  const Case own = *throughPath(simpleCase(), FeaturePath::RayQuery, &why);
-  EXPECT_FALSE(throughPath(own, FeaturePath::RayQuery, &why));
+  const Case own = *valueOrMessage(throughPath(simpleCase(), FeaturePath::RayQuery), &why);
+  EXPECT_FALSE(valueOrMessage(throughPath(own, FeaturePath::RayQuery), &why));
   EXPECT_NE(why.find("by ray query itself"), std::string::npos) << why;
   Case nested = simpleCase();
   Stmt trace;
   trace.kind = Stmt::Kind::Trace;
   nested.pipeline.hit_groups[0].closest_hit->push_back(trace);
-  EXPECT_FALSE(throughPath(nested, FeaturePath::RayQuery, &why));
+  EXPECT_FALSE(valueOrMessage(throughPath(nested, FeaturePath::RayQuery), &why));
   EXPECT_NE(why.find("closest-hit or miss traces"), std::string::npos) << why;
   Case typed = simpleCase();
   typed.pipeline.payload_words = {0, 2};
-  EXPECT_FALSE(throughPath(typed, FeaturePath::RayQuery, &why));
+  EXPECT_FALSE(valueOrMessage(throughPath(typed, FeaturePath::RayQuery), &why));
   EXPECT_NE(why.find("several payload types"), std::string::npos) << why;
   // The pipeline's skip flags become the query's ray flags: no obstacle.
   Case flagged = simpleCase();
   flagged.pipeline.flags = kPipelineSkipTriangles;
-  EXPECT_TRUE(throughPath(flagged, FeaturePath::RayQuery, &why)) << why;
+  EXPECT_TRUE(valueOrMessage(throughPath(flagged, FeaturePath::RayQuery), &why)) << why;
 }
 
 TEST(FeaturePath, ACaseWithItsOwnWayThereIsLeftAlone) {
   std::string why;
   const Case copied = simpleCase("  build: {copy: clone}\n");
-  EXPECT_FALSE(throughPath(copied, FeaturePath::Serialize, &why));
+  EXPECT_FALSE(valueOrMessage(throughPath(copied, FeaturePath::Serialize), &why));
   EXPECT_NE(why.find("copies"), std::string::npos) << why;
   const Case indirect = simpleCase("", "  command: indirect2\n");
-  EXPECT_FALSE(throughPath(indirect, FeaturePath::Indirect, &why));
+  EXPECT_FALSE(valueOrMessage(throughPath(indirect, FeaturePath::Indirect), &why));
   EXPECT_NE(why.find("launch command"), std::string::npos) << why;
-  EXPECT_TRUE(throughPath(indirect, FeaturePath::Update, &why));
+  EXPECT_TRUE(valueOrMessage(throughPath(indirect, FeaturePath::Update), &why));
 }
 
 }  // namespace

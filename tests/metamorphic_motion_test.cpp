@@ -7,19 +7,21 @@
 #include "case/parse_case.h"
 #include "metamorphic/motion_spec.h"
 #include "metamorphic/transform_case.h"
+#include "result_support.h"
 
 namespace rayspec {
 namespace {
 
 TEST(MotionSpec, ReadsSignedAxesAndATranslationAndWritesThemBack) {
   std::string why;
-  const std::optional<RigidMotion> turn = parseMotionSpec("-y,x,z", &why);
+  const std::optional<RigidMotion> turn = valueOrMessage(parseMotionSpec("-y,x,z"), &why);
   ASSERT_TRUE(turn) << why;
   EXPECT_EQ(turn->axis, (std::array<int, 3>{1, 0, 2}));
   EXPECT_EQ(turn->sign, (std::array<int, 3>{-1, 1, 1}));
   EXPECT_EQ(turn->translate, (std::array<double, 3>{0, 0, 0}));
   EXPECT_EQ(motionSpecText(*turn), "-y,x,z");
-  const std::optional<RigidMotion> moved = parseMotionSpec("z, -x, +y, 1024, -2048, 0.5", &why);
+  const std::optional<RigidMotion> moved =
+      valueOrMessage(parseMotionSpec("z, -x, +y, 1024, -2048, 0.5"), &why);
   ASSERT_TRUE(moved) << why;
   EXPECT_EQ(moved->translate, (std::array<double, 3>{1024, -2048, 0.5}));
   EXPECT_EQ(motionSpecText(*moved), "z,-x,y,1024,-2048,0.5");
@@ -27,17 +29,17 @@ TEST(MotionSpec, ReadsSignedAxesAndATranslationAndWritesThemBack) {
 
 TEST(MotionSpec, BadTextSaysWhatIsWrong) {
   std::string why;
-  EXPECT_FALSE(parseMotionSpec("x,y", &why));
+  EXPECT_FALSE(valueOrMessage(parseMotionSpec("x,y"), &why));
   EXPECT_NE(why.find("three signed axes"), std::string::npos) << why;
-  EXPECT_FALSE(parseMotionSpec("x,x,z", &why));
+  EXPECT_FALSE(valueOrMessage(parseMotionSpec("x,x,z"), &why));
   EXPECT_NE(why.find("once"), std::string::npos) << why;
-  EXPECT_FALSE(parseMotionSpec("x,w,z", &why));
+  EXPECT_FALSE(valueOrMessage(parseMotionSpec("x,w,z"), &why));
   EXPECT_NE(why.find("'w' (term 2)"), std::string::npos) << why;
-  EXPECT_FALSE(parseMotionSpec("x,y,z,1,2,nan", &why));
+  EXPECT_FALSE(valueOrMessage(parseMotionSpec("x,y,z,1,2,nan"), &why));
   EXPECT_NE(why.find("term 6"), std::string::npos) << why;
-  EXPECT_FALSE(parseMotionSpec("x,y,z,1,2", &why));
+  EXPECT_FALSE(valueOrMessage(parseMotionSpec("x,y,z,1,2"), &why));
   // A translation term that is no float (the moved sums are float sums).
-  EXPECT_FALSE(parseMotionSpec("x,y,z,0,0,0.1", &why));
+  EXPECT_FALSE(valueOrMessage(parseMotionSpec("x,y,z,0,0,0.1"), &why));
   EXPECT_NE(why.find("'0.1' (term 6): not a finite number exact in float"), std::string::npos)
       << why;
 }
@@ -65,16 +67,16 @@ TEST(MoveCase, VerdictScopeMovesCasesThatBranchOrDoMoreThanTrace) {
   ParseResult p = parseCaseText(kBranching, "b.yaml", "family/b");
   ASSERT_TRUE(p.value) << (p.errors.empty() ? "" : p.errors.front().format());
   std::string why;
-  const RigidMotion m = *parseMotionSpec("-y,x,z,2,-4,8", &why);
+  const RigidMotion m = *valueOrMessage(parseMotionSpec("-y,x,z,2,-4,8"), &why);
   // The count check's scope refuses it (a branch could change its mind).
-  EXPECT_FALSE(moveCase(*p.value, m, &why, MoveScope::SameGeometry));
-  const std::optional<Case> moved = moveCase(*p.value, m, &why, MoveScope::Verdict);
+  EXPECT_FALSE(valueOrMessage(moveCase(*p.value, m, MoveScope::SameGeometry), &why));
+  const std::optional<Case> moved = valueOrMessage(moveCase(*p.value, m, MoveScope::Verdict), &why);
   ASSERT_TRUE(moved) << why;
   EXPECT_EQ(moved->rays.rays[0].origin, (Vec3{1.75f, -3.75f, 9}));
   EXPECT_TRUE(std::isnan(moved->rays.rays[1].origin[1]));  // an undefined ray stays undefined
   EXPECT_NE(moved->source_hash,
             p.value->source_hash);  // a saved bundle of the unmoved case does not match
-  const std::optional<Case> again = moveCase(*p.value, m, &why, MoveScope::Verdict);
+  const std::optional<Case> again = valueOrMessage(moveCase(*p.value, m, MoveScope::Verdict), &why);
   EXPECT_EQ(again->source_hash, moved->source_hash);
 }
 
@@ -85,7 +87,9 @@ TEST(MoveCase, ATraceWithItsOwnOriginOrDirectionIsNotMoved) {
   ParseResult p = parseCaseText(text, "b.yaml", "family/b");
   ASSERT_TRUE(p.value) << (p.errors.empty() ? "" : p.errors.front().format());
   std::string why;
-  EXPECT_FALSE(moveCase(*p.value, *parseMotionSpec("x,y,-z", &why), &why, MoveScope::Verdict));
+  EXPECT_FALSE(valueOrMessage(
+      moveCase(*p.value, *valueOrMessage(parseMotionSpec("x,y,-z"), &why), MoveScope::Verdict),
+      &why));
   EXPECT_NE(why.find("its own origin or direction"), std::string::npos) << why;
 }
 
@@ -96,13 +100,16 @@ TEST(MoveCase, ASumThatRoundsInDoubleIsNotExact) {
   ParseResult p = parseCaseText(kBranching, "b.yaml", "family/b");
   ASSERT_TRUE(p.value) << (p.errors.empty() ? "" : p.errors.front().format());
   std::string why;
-  const std::optional<RigidMotion> far = parseMotionSpec("x,y,z,1152921504606846976,0,0", &why);
+  const std::optional<RigidMotion> far =
+      valueOrMessage(parseMotionSpec("x,y,z,1152921504606846976,0,0"), &why);
   ASSERT_TRUE(far) << why;
-  EXPECT_FALSE(moveCase(*p.value, *far, &why, MoveScope::Verdict));
+  EXPECT_FALSE(valueOrMessage(moveCase(*p.value, *far, MoveScope::Verdict), &why));
   EXPECT_NE(why.find("not exact in float"), std::string::npos) << why;
   // 1024 keeps every sum exact: moved.
   EXPECT_TRUE(
-      moveCase(*p.value, *parseMotionSpec("x,y,z,1024,0,0", &why), &why, MoveScope::Verdict))
+      valueOrMessage(moveCase(*p.value, *valueOrMessage(parseMotionSpec("x,y,z,1024,0,0"), &why),
+                              MoveScope::Verdict),
+                     &why))
       << why;
 }
 

@@ -9,6 +9,7 @@
 #include "metamorphic/transform_case.h"
 #include "model/model_engine.h"
 #include "plan/plan.h"
+#include "result_support.h"
 #include "stability/leak_counts.h"
 #include "suite_cases.h"
 
@@ -34,16 +35,17 @@ TEST(MoveCase, MapsInstancesAndRaysExactly) {
   ASSERT_TRUE(p.value);
   std::string why;
   // new x = -old y + 1024, new y = old x, new z = old z (a turn by 90 degrees about z).
-  const std::optional<Case> m = moveCase(*p.value, {{1, 0, 2}, {-1, 1, 1}, {1024, 0, 0}}, &why);
+  const std::optional<Case> m =
+      valueOrMessage(moveCase(*p.value, {{1, 0, 2}, {-1, 1, 1}, {1024, 0, 0}}), &why);
   ASSERT_TRUE(m) << why;
   EXPECT_EQ(m->rays.rays[0].origin, (Vec3{1023.5f, 3.25f, 2}));
   EXPECT_EQ(m->rays.rays[0].direction, (Vec3{-0.5f, 0, -1}));
   EXPECT_EQ(m->scene.instances[0].transform,
             (Transform{0, -1, 0, 1023.5f, 1, 0, 0, 3, 0, 0, 1, 0}));
   // Not exact in float: 2^25 + 0.5.
-  EXPECT_FALSE(moveCase(*p.value, {{0, 1, 2}, {1, 1, 1}, {33554432, 0, 0}}, &why));
+  EXPECT_FALSE(valueOrMessage(moveCase(*p.value, {{0, 1, 2}, {1, 1, 1}, {33554432, 0, 0}}), &why));
   EXPECT_NE(why.find("not exact"), std::string::npos);
-  EXPECT_FALSE(moveCase(*p.value, {{0, 0, 2}, {1, 1, 1}, {0, 0, 0}}, &why));
+  EXPECT_FALSE(valueOrMessage(moveCase(*p.value, {{0, 0, 2}, {1, 1, 1}, {0, 0, 0}}), &why));
   EXPECT_NE(why.find("signed permutation"), std::string::npos);
 }
 
@@ -76,7 +78,7 @@ TEST(MoveCase, StabilityFamiliesKeepTheirCounts) {
     ++cases;
     for (const RigidMotion& m : motions) {
       std::string why;
-      const std::optional<Case> mc = moveCase(c, m, &why);
+      const std::optional<Case> mc = valueOrMessage(moveCase(c, m), &why);
       if (!mc) {
         ++refused;  // a translation that is not exact at this scale: not this case's check
         continue;

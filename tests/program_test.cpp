@@ -98,59 +98,65 @@ TEST(Ops, TableMatchesDocumentation) {
   EXPECT_EQ(findOp("frobnicate"), nullptr);
 }
 
+// typeCheck's error message, "" when the expression checks.
+std::string typeCheckMessage(Expr& e, Stage stage) {
+  const Result<void> r = typeCheck(e, stage);
+  return r ? std::string() : r.error().message;
+}
+
 TEST(TypeCheck, InfersTypes) {
   Expr e = op("add", {builtin("hit_t"), lit(1, ValueType::Float)});
-  EXPECT_EQ(typeCheck(e, Stage::ClosestHit), "");
+  EXPECT_EQ(typeCheckMessage(e, Stage::ClosestHit), "");
   EXPECT_EQ(e.type, ValueType::Float);
 
   Expr v = op("mul", {builtin("world_ray_direction"), lit(2)});  // Uint literal promoted
-  EXPECT_EQ(typeCheck(v, Stage::Miss), "");
+  EXPECT_EQ(typeCheckMessage(v, Stage::Miss), "");
   EXPECT_EQ(v.type, ValueType::Vec3);
   EXPECT_EQ(v.args[1].type, ValueType::Float);
 
   Expr c = op("eq", {builtin("hit_kind"), lit(254)});
-  EXPECT_EQ(typeCheck(c, Stage::AnyHit), "");
+  EXPECT_EQ(typeCheckMessage(c, Stage::AnyHit), "");
   EXPECT_EQ(c.type, ValueType::Bool);
 
   Expr s = op("vec4", {lit(1, ValueType::Float)});
-  EXPECT_EQ(typeCheck(s, Stage::Raygen), "");
+  EXPECT_EQ(typeCheckMessage(s, Stage::Raygen), "");
   EXPECT_EQ(s.type, ValueType::Vec4);
 
   Expr x = op("y", {builtin("barycentrics")});
-  EXPECT_EQ(typeCheck(x, Stage::ClosestHit), "");
+  EXPECT_EQ(typeCheckMessage(x, Stage::ClosestHit), "");
   EXPECT_EQ(x.type, ValueType::Float);
 
   Expr n = op("sphere_near", {});
-  EXPECT_EQ(typeCheck(n, Stage::Intersection), "");
+  EXPECT_EQ(typeCheckMessage(n, Stage::Intersection), "");
   EXPECT_EQ(n.type, ValueType::Float);
 }
 
 TEST(TypeCheck, RejectsBadTypes) {
   Expr e = op("odd", {builtin("hit_t")});
-  EXPECT_NE(typeCheck(e, Stage::ClosestHit).find("need Uint"), std::string::npos);
+  EXPECT_NE(typeCheckMessage(e, Stage::ClosestHit).find("need Uint"), std::string::npos);
   Expr a = op("add", {builtin("primitive_id"), builtin("hit_t")});
-  EXPECT_NE(typeCheck(a, Stage::ClosestHit), "");
+  EXPECT_NE(typeCheckMessage(a, Stage::ClosestHit), "");
   Expr z = op("z", {builtin("barycentrics")});  // Vec2 has no z
-  EXPECT_NE(typeCheck(z, Stage::ClosestHit), "");
+  EXPECT_NE(typeCheckMessage(z, Stage::ClosestHit), "");
   Expr d = op("dot", {vec({1, 2}), vec({1, 2, 3})});
-  EXPECT_NE(typeCheck(d, Stage::Raygen), "");
+  EXPECT_NE(typeCheckMessage(d, Stage::Raygen), "");
   Expr div0 = op("div", {lit(4), lit(0)});
-  EXPECT_NE(typeCheck(div0, Stage::Raygen).find("zero"), std::string::npos);
+  EXPECT_NE(typeCheckMessage(div0, Stage::Raygen).find("zero"), std::string::npos);
   Expr rec = op("shader_record_uint", {lit(8)});
-  EXPECT_NE(typeCheck(rec, Stage::Miss), "");
+  EXPECT_NE(typeCheckMessage(rec, Stage::Miss), "");
   Expr arity = op("not", {lit(1, ValueType::Bool), lit(0, ValueType::Bool)});
-  EXPECT_NE(typeCheck(arity, Stage::Miss).find("argument"), std::string::npos);
+  EXPECT_NE(typeCheckMessage(arity, Stage::Miss).find("argument"), std::string::npos);
 }
 
 TEST(ConstantValue, FoldsUintOperatorsAndLeavesRunTimeValuesOpen) {
   Expr e = op("add", {op("mul", {lit(3), lit(4)}), op("sub", {lit(1), lit(2)})});
-  ASSERT_EQ(typeCheck(e, Stage::Raygen), "");
+  ASSERT_EQ(typeCheckMessage(e, Stage::Raygen), "");
   EXPECT_EQ(constantUint(e), 11u) << "3*4 + (1-2) modulo 2^32";
   Expr m = op("min", {op("mod", {lit(17), lit(5)}), op("div", {lit(9), lit(2)})});
-  ASSERT_EQ(typeCheck(m, Stage::Raygen), "");
+  ASSERT_EQ(typeCheckMessage(m, Stage::Raygen), "");
   EXPECT_EQ(constantUint(m), 2u);
   Expr dynamic = op("add", {builtin("launch_id_x"), lit(1)});
-  ASSERT_EQ(typeCheck(dynamic, Stage::Raygen), "");
+  ASSERT_EQ(typeCheckMessage(dynamic, Stage::Raygen), "");
   EXPECT_FALSE(constantUint(dynamic));
   Expr f = lit(2.5, ValueType::Float);
   EXPECT_FALSE(constantUint(f));
@@ -159,25 +165,26 @@ TEST(ConstantValue, FoldsUintOperatorsAndLeavesRunTimeValuesOpen) {
 
 TEST(TypeCheck, UintDivisionOrModuloByAConstantZeroIsAnError) {
   Expr d = op("div", {builtin("launch_id_x"), op("sub", {lit(3), lit(3)})});
-  EXPECT_NE(typeCheck(d, Stage::Raygen).find("Uint division by a constant zero"),
+  EXPECT_NE(typeCheckMessage(d, Stage::Raygen).find("Uint division by a constant zero"),
             std::string::npos);
   Expr m = op("mod", {builtin("launch_id_y"), op("mul", {lit(0), builtin("launch_id_x")})});
-  EXPECT_EQ(typeCheck(m, Stage::Raygen), "") << "0 * a run-time value is not folded";
+  EXPECT_EQ(typeCheckMessage(m, Stage::Raygen), "") << "0 * a run-time value is not folded";
   Expr m0 = op("mod", {builtin("launch_id_y"), op("min", {lit(0), lit(4)})});
-  EXPECT_NE(typeCheck(m0, Stage::Raygen).find("Uint modulo by a constant zero"), std::string::npos);
+  EXPECT_NE(typeCheckMessage(m0, Stage::Raygen).find("Uint modulo by a constant zero"),
+            std::string::npos);
   Expr fine = op("div", {lit(4), builtin("launch_id_x")});
-  EXPECT_EQ(typeCheck(fine, Stage::Raygen), "");
+  EXPECT_EQ(typeCheckMessage(fine, Stage::Raygen), "");
 }
 
 TEST(TypeCheck, StagePermissions) {
   Expr t = builtin("hit_t");
-  EXPECT_NE(typeCheck(t, Stage::Miss).find("cannot be read in miss"), std::string::npos);
+  EXPECT_NE(typeCheckMessage(t, Stage::Miss).find("cannot be read in miss"), std::string::npos);
   Expr s = op("sphere_hit", {});
-  EXPECT_NE(typeCheck(s, Stage::AnyHit), "");
+  EXPECT_NE(typeCheckMessage(s, Stage::AnyHit), "");
   Expr a = builtin("aabb_max");
-  EXPECT_EQ(typeCheck(a, Stage::Intersection), "");
+  EXPECT_EQ(typeCheckMessage(a, Stage::Intersection), "");
   Expr u = builtin("unknown_thing");
-  EXPECT_NE(typeCheck(u, Stage::Raygen).find("unknown built-in"), std::string::npos);
+  EXPECT_NE(typeCheckMessage(u, Stage::Raygen).find("unknown built-in"), std::string::npos);
 }
 
 TEST(CheckProgram, StatementKindsPerStage) {

@@ -2,6 +2,7 @@
 // one with the error's text in *error, so a test can assert on both.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -14,6 +15,15 @@ T orError(Result<T> r, std::string* error) {
   if (r) return std::move(*r);
   *error = r.error().format();
   return T{};
+}
+
+// The value, or nullopt with the error's message in *error: for tests that
+// assert on whether there was a value, then on the message.
+template <typename T>
+std::optional<T> valueOrMessage(Result<T> r, std::string* error) {
+  if (r) return std::move(*r);
+  *error = r.error().message;
+  return std::nullopt;
 }
 
 // Result<void>: true when it succeeded, else false with the error's text in *error.

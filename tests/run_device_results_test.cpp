@@ -50,7 +50,7 @@ Results save(const std::string& dir, const Case& c, const std::string& bundle_ca
   r.height = 1;
   r.case_hash = hash;
   r.records.assign(2 * recordWords(), 7u);
-  EXPECT_EQ(writeResults(r, savedBundleDir(dir, c.name), {}), "");
+  EXPECT_TRUE(writeResults(r, savedBundleDir(dir, c.name), {}).ok());
   return r;
 }
 
@@ -60,7 +60,9 @@ TEST(SavedDevice, ReadsTheCasesBundleAsTheDevicesResults) {
   const Results saved = save(dir, c, c.name, c.source_hash);
   SavedDevice device(dir);
   EXPECT_EQ(device.name(), "vulkan");
-  const Results r = device.run(c, derivePlan(c));
+  const Result<Results> read = device.run(c, derivePlan(c));
+  ASSERT_TRUE(read) << read.error().format();
+  const Results& r = *read;
   EXPECT_TRUE(r.ok()) << r.statusText();
   EXPECT_EQ(r.device, "saved device");
   EXPECT_EQ(r.records, saved.records);
@@ -70,7 +72,9 @@ TEST(SavedDevice, ReadsTheCasesBundleAsTheDevicesResults) {
 TEST(SavedDevice, NoBundleIsNotSupportedNeverAPass) {
   const Case c = parsed(caseText());
   const std::string dir = savedRun("none");
-  const Results r = SavedDevice(dir).run(c, derivePlan(c));
+  const Result<Results> read = SavedDevice(dir).run(c, derivePlan(c));
+  ASSERT_TRUE(read) << read.error().format();
+  const Results& r = *read;
   EXPECT_EQ(r.status, SideStatus::NotSupported);
   EXPECT_NE(r.status_detail.find("did not run there"), std::string::npos) << r.status_detail;
   EXPECT_EQ(savedDevices(dir, {CaseFile{"", c.name}}), "");
@@ -83,22 +87,24 @@ TEST(SavedDevice, BundleOfAChangedCaseIsRefused) {
   // The same case with one more line (a comment): not the case that ran there.
   const Case edited = parsed(caseText() + "\n# edited since\n");
   EXPECT_NE(edited.source_hash, c.source_hash);
-  try {
-    SavedDevice(dir).run(edited, derivePlan(edited));
-    ADD_FAILURE() << "a bundle of a changed case was accepted";
-  } catch (const HarnessError& e) {
-    EXPECT_NE(std::string(e.what()).find("the case changed since it ran there"), std::string::npos)
-        << e.what();
-  }
+  const Result<Results> read = SavedDevice(dir).run(edited, derivePlan(edited));
+  ASSERT_FALSE(read) << "a bundle of a changed case was accepted";
+  EXPECT_EQ(read.error().kind, ErrorKind::Harness);
+  EXPECT_NE(read.error().message.find("the case changed since it ran there"), std::string::npos)
+      << read.error().message;
 }
 
 TEST(SavedDevice, BundleOfAnotherCaseOrWithoutHashIsRefused) {
   const Case c = parsed(caseText());
   const std::string other = savedRun("other"), old = savedRun("old");
   save(other, c, "results/another-case", c.source_hash);
-  EXPECT_THROW(SavedDevice(other).run(c, derivePlan(c)), HarnessError);
+  const Result<Results> another = SavedDevice(other).run(c, derivePlan(c));
+  ASSERT_FALSE(another);
+  EXPECT_EQ(another.error().kind, ErrorKind::Harness);
   save(old, c, c.name, 0);
-  EXPECT_THROW(SavedDevice(old).run(c, derivePlan(c)), HarnessError);
+  const Result<Results> unhashed = SavedDevice(old).run(c, derivePlan(c));
+  ASSERT_FALSE(unhashed);
+  EXPECT_EQ(unhashed.error().kind, ErrorKind::Harness);
 }
 
 // A bundle's counters are those the case keeps: a counter it does not declare
@@ -110,18 +116,15 @@ TEST(SavedDevice, ACounterTheCaseDoesNotKeepRefusesTheBundle) {
   const std::string dir = savedRun("counters");
   Results r = save(dir, c, c.name, c.source_hash);
   for (const std::string& kept : plan.counters) r.counters[kept] = 1;
-  ASSERT_EQ(writeResults(r, savedBundleDir(dir, c.name), {}), "");
-  EXPECT_NO_THROW(SavedDevice(dir).run(c, plan));
+  ASSERT_TRUE(writeResults(r, savedBundleDir(dir, c.name), {}).ok());
+  EXPECT_TRUE(SavedDevice(dir).run(c, plan).ok());
   r.counters["junk"] = 5;
-  ASSERT_EQ(writeResults(r, savedBundleDir(dir, c.name), {}), "");
-  try {
-    SavedDevice(dir).run(c, plan);
-    ADD_FAILURE() << "a bundle with an undeclared counter was accepted";
-  } catch (const HarnessError& e) {
-    EXPECT_NE(std::string(e.what()).find("counter 'junk' is not one the case keeps"),
-              std::string::npos)
-        << e.what();
-  }
+  ASSERT_TRUE(writeResults(r, savedBundleDir(dir, c.name), {}).ok());
+  const Result<Results> junk = SavedDevice(dir).run(c, plan);
+  ASSERT_FALSE(junk) << "a bundle with an undeclared counter was accepted";
+  EXPECT_NE(junk.error().message.find("counter 'junk' is not one the case keeps"),
+            std::string::npos)
+      << junk.error().message;
 }
 
 TEST(SavedDevice, PermutedCaseHasItsOwnHash) {

@@ -44,7 +44,7 @@ class MisbehavingModel : public Backend {
   explicit MisbehavingModel(std::function<void()> act) : act_(std::move(act)) {}
   std::string name() const override { return "model"; }
   std::string description() const override { return "a model that misbehaves"; }
-  Results run(const Case& c, const Plan&) override {
+  Result<Results> run(const Case& c, const Plan&) override {
     act_();
     Results r;
     r.backend = name();
@@ -84,7 +84,7 @@ TEST(Backend, ModelAndDeviceAnswerThroughOneInterface) {
   EXPECT_EQ(device->name(), "vulkan");
   EXPECT_NE(model->description().find("exact"), std::string::npos) << model->description();
   EXPECT_NE(device->description().find("llvmpipe"), std::string::npos) << device->description();
-  const Results m = model->run(c, plan), d = device->run(c, plan);
+  const Results m = *model->run(c, plan), d = *device->run(c, plan);
   ASSERT_TRUE(m.ok()) << m.statusText();
   ASSERT_TRUE(d.ok()) << d.statusText();
   EXPECT_EQ(compareResults(c, plan, d, m).status, Status::Pass);
@@ -98,7 +98,7 @@ TEST(Backend, DeviceThatIsNotThereAnswersNotSupportedWithWhy) {
   VulkanAdapter device(v);
   EXPECT_FALSE(device.found());
   const Case c = suiteCaseFile("results/miss-xor-closest-hit");
-  const Results r = device.run(c, derivePlan(c));
+  const Results r = *device.run(c, derivePlan(c));
   EXPECT_EQ(r.status, SideStatus::NotSupported);
   EXPECT_NE(r.status_detail.find("nosuchdevice"), std::string::npos) << r.status_detail;
 }
@@ -110,8 +110,8 @@ TEST(Isolation, BothSidesRunIsolatedAndAgree) {
   const Plan plan = derivePlan(c);
   const std::string dir = tempDir("both-sides");
   const ChildLimits limits{60, kDefaultMemoryLimit};
-  const SideResult m = runIsolated(modelSide(), c, plan, limits, dir + "/model");
-  const SideResult d = runIsolated(deviceSide(), c, plan, limits, dir + "/device");
+  const SideResult m = *runIsolated(modelSide(), c, plan, limits, dir + "/model");
+  const SideResult d = *runIsolated(deviceSide(), c, plan, limits, dir + "/device");
   ASSERT_TRUE(m.results.ok()) << m.results.statusText();
   ASSERT_TRUE(d.results.ok()) << d.results.statusText();
   EXPECT_EQ(m.results.backend, "model");
@@ -124,8 +124,8 @@ TEST(Isolation, EmbreeAndTbbStartUnderTheDefaultMemoryLimit) {
   // Every thread of the model (a case with callables, lights and a camera).
   const Case c = suiteCaseFile("callable/lights");
   const Plan plan = derivePlan(c);
-  const SideResult m = runIsolated(modelSide(), c, plan, ChildLimits{120, kDefaultMemoryLimit},
-                                   tempDir("big-model"));
+  const SideResult m = *runIsolated(modelSide(), c, plan, ChildLimits{120, kDefaultMemoryLimit},
+                                    tempDir("big-model"));
   EXPECT_TRUE(m.results.ok()) << m.results.statusText();
   EXPECT_EQ(m.results.records.size(), size_t(c.rays.width) * c.rays.height * recordWords());
 }
@@ -133,10 +133,10 @@ TEST(Isolation, EmbreeAndTbbStartUnderTheDefaultMemoryLimit) {
 TEST(Isolation, ModelHangIsATimeout) {
   const Case c = suiteCaseFile("results/miss-xor-closest-hit");
   const auto start = std::chrono::steady_clock::now();
-  const SideResult m = runIsolated(misbehavingSide([] {
-                                     for (;;) pause();
-                                   }),
-                                   c, derivePlan(c), ChildLimits{1, 0}, tempDir("hang"));
+  const SideResult m = *runIsolated(misbehavingSide([] {
+                                      for (;;) pause();
+                                    }),
+                                    c, derivePlan(c), ChildLimits{1, 0}, tempDir("hang"));
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
   EXPECT_EQ(m.results.status, SideStatus::Timeout);
   EXPECT_EQ(m.results.backend, "model");
@@ -149,11 +149,11 @@ TEST(Isolation, ModelCrashIsACrash) {
   const Case c = suiteCaseFile("results/miss-xor-closest-hit");
   const std::string dir = tempDir("crash");
   // SIG_DFL: the signal itself, not AddressSanitizer's report of it (asan preset).
-  const SideResult m = runIsolated(misbehavingSide([] {
-                                     std::signal(SIGSEGV, SIG_DFL);
-                                     std::raise(SIGSEGV);
-                                   }),
-                                   c, derivePlan(c), ChildLimits{30, 0}, dir);
+  const SideResult m = *runIsolated(misbehavingSide([] {
+                                      std::signal(SIGSEGV, SIG_DFL);
+                                      std::raise(SIGSEGV);
+                                    }),
+                                    c, derivePlan(c), ChildLimits{30, 0}, dir);
   EXPECT_EQ(m.results.status, SideStatus::Crash);
   EXPECT_NE(m.results.status_detail.find("the model process died of signal 11"), std::string::npos)
       << m.results.status_detail;
@@ -177,8 +177,8 @@ TEST(IsolationMemoryLimit, ModelBeyondTheMemoryLimitIsACrash) {
       std::fill_n(blocks.back().get(), 64 << 20, char(i));
     }
   };
-  const SideResult m = runIsolated(misbehavingSide(hog), c, derivePlan(c),
-                                   ChildLimits{60, 256u << 20}, tempDir("memory"));
+  const SideResult m = *runIsolated(misbehavingSide(hog), c, derivePlan(c),
+                                    ChildLimits{60, 256u << 20}, tempDir("memory"));
   EXPECT_EQ(m.results.status, SideStatus::Crash);
   EXPECT_EQ(m.results.status_detail,
             "the model process ran out of memory (--memory-limit 256 MiB)");
@@ -188,8 +188,11 @@ TEST(Isolation, BundleThatCannotBeWrittenIsAHarnessErrorNotACrash) {
   const Case c = suiteCaseFile("results/miss-xor-closest-hit");
   const std::string dir = tempDir("unwritable");
   std::ofstream(dir + "/file") << "a file where the bundle's folder should go";
-  EXPECT_THROW(runIsolated(modelSide(), c, derivePlan(c), ChildLimits{60, 0}, dir + "/file/model"),
-               HarnessError);
+  const Result<SideResult> m =
+      runIsolated(modelSide(), c, derivePlan(c), ChildLimits{60, 0}, dir + "/file/model");
+  ASSERT_FALSE(m) << "a bundle that cannot be written was read back";
+  EXPECT_EQ(m.error().kind, ErrorKind::Harness);
+  EXPECT_EQ(m.error().message.rfind("model side: ", 0), 0u) << m.error().message;
 }
 
 // ---- item 3: a child dies with its parent ------------------------------------
@@ -264,6 +267,16 @@ TEST(CaseSteps, ExceptionWhileJudgingIsACaseError) {
   EXPECT_EQ(o.rules, std::vector<std::string>{"R-IGNORE"});
   EXPECT_NE(o.headline.find("File name too long"), std::string::npos) << o.headline;
   EXPECT_TRUE(isFailing(o.status));
+}
+
+TEST(CaseSteps, ErrorOfAStepIsACaseError) {
+  const CaseOutcome o = guardCase("fam/unreadable", {"R-IGNORE"}, []() -> Result<CaseOutcome> {
+    return errorOf(ErrorKind::Harness, "model side: no results.json in out/fam/unreadable/model");
+  });
+  EXPECT_EQ(o.status, Status::CaseError);
+  EXPECT_EQ(o.headline,
+            "CaseError: harness: the harness failed on this case: model side: no results.json "
+            "in out/fam/unreadable/model");
 }
 
 TEST(CaseSteps, ExceptionWhileReportingIsACaseErrorAndTheReportsAreStillWritten) {

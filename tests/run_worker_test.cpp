@@ -28,11 +28,12 @@ namespace fs = std::filesystem;
 
 // A worker that answers with its pid, and misbehaves on request.
 Worker::Serve misbehaving() {
-  return [](const std::string& request) -> std::string {
+  return [](const std::string& request) -> Result<std::string> {
     if (request == "crash") raise(SIGSEGV);
     if (request == "hang")
       for (;;) pause();
-    if (request == "throw") throw std::runtime_error("bad request");
+    if (request == "fail") return errorMessage("bad request");
+    if (request == "throw") return std::to_string(std::stoul("no number"));  // the library throws
     if (request == "hog") {
       std::vector<std::vector<char>> held;
       for (;;) held.emplace_back(64u << 20, 'x');
@@ -41,7 +42,7 @@ Worker::Serve misbehaving() {
       for (;;) {
         void* p =
             mmap(nullptr, 64u << 20, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
-        if (p == MAP_FAILED) return "mmap failed";
+        if (p == MAP_FAILED) return std::string("mmap failed");
         std::memset(p, 'x', 64u << 20);
       }
     }
@@ -84,13 +85,17 @@ TEST(Worker, HangIsKilledAtTheTimeout) {
   EXPECT_TRUE(w.call("pid").replied);
 }
 
-TEST(Worker, ExceptionIsAReplyAndTheProcessGoesOn) {
+TEST(Worker, ErrorOrExceptionIsAReplyAndTheProcessGoesOn) {
   Worker w(misbehaving(), {}, ChildLimits{30, 0});
   const std::string first = w.call("pid").text;
+  const Worker::Reply failed = w.call("fail");
+  EXPECT_TRUE(failed.replied);
+  EXPECT_TRUE(failed.failed);
+  EXPECT_EQ(failed.text, "bad request");
   const Worker::Reply thrown = w.call("throw");
   EXPECT_TRUE(thrown.replied);
-  EXPECT_TRUE(thrown.threw);
-  EXPECT_EQ(thrown.text, "bad request");
+  EXPECT_TRUE(thrown.failed);
+  EXPECT_EQ(thrown.text, "stoul");
   EXPECT_EQ(w.call("pid").text, first);
 }
 
@@ -138,7 +143,7 @@ TEST(SideWorker, CrashedCaseIsACrashAndTheNextCaseGetsANewWorker) {
   const std::vector<Case> cases{suiteCaseFile("results/miss-xor-closest-hit"),
                                 suiteCaseFile("anyhit/ignore-odd-primitives"),
                                 suiteCaseFile("results/miss-xor-closest-hit")};
-  const SideFor side_for = [](const Case&, const std::string& dir) {
+  const SideFor side_for = [](const Case&, const std::string& dir) -> Result<Side> {
     Side s{"model", "model", [] { return std::make_unique<ModelAdapter>(ModelOptions{}); }, {}};
     if (dir.find("/crash/") != std::string::npos)
       s.before = [] {
@@ -148,15 +153,15 @@ TEST(SideWorker, CrashedCaseIsACrashAndTheNextCaseGetsANewWorker) {
   };
   SideWorker worker("model", "model", cases, side_for, ChildLimits{60, 0});
   const std::string dir = freshTempDir("rayspec-worker-test/side");
-  const SideResult first = worker.run(0, derivePlan(cases[0]), dir + "/ok/0/model");
+  const SideResult first = *worker.run(0, derivePlan(cases[0]), dir + "/ok/0/model");
   EXPECT_TRUE(first.results.ok()) << first.results.statusText();
-  const SideResult crashed = worker.run(1, derivePlan(cases[1]), dir + "/crash/1/model");
+  const SideResult crashed = *worker.run(1, derivePlan(cases[1]), dir + "/crash/1/model");
   EXPECT_EQ(crashed.results.status, SideStatus::Crash);
   EXPECT_NE(crashed.results.status_detail.find("signal 11"), std::string::npos)
       << crashed.results.status_detail;
   EXPECT_EQ(crashed.results.case_name, "anyhit/ignore-odd-primitives")
       << "the crash is the case that ran";
-  const SideResult last = worker.run(2, derivePlan(cases[2]), dir + "/ok/2/model");
+  const SideResult last = *worker.run(2, derivePlan(cases[2]), dir + "/ok/2/model");
   EXPECT_TRUE(last.results.ok()) << last.results.statusText();
   EXPECT_EQ(worker.processesStarted(), 2);
   EXPECT_TRUE(worker.close().empty());

@@ -15,30 +15,46 @@ namespace {
 
 TEST(DeviceErrors, EachFailedCallHasItsStatus) {
   const DeviceErrorStatus lost =
-      classifyVulkanError(VulkanError("x", "vkQueueSubmit", VK_ERROR_DEVICE_LOST));
+      classifyVulkanError(deviceError("x", "vkQueueSubmit", VK_ERROR_DEVICE_LOST));
   EXPECT_EQ(lost.status, SideStatus::Crash);
   EXPECT_TRUE(lost.device_lost);
   EXPECT_EQ(
       lost.detail,
       "device lost: vkQueueSubmit returned VK_ERROR_DEVICE_LOST; the next case gets a new device");
   for (VkResult oom : {VK_ERROR_OUT_OF_DEVICE_MEMORY, VK_ERROR_OUT_OF_HOST_MEMORY}) {
-    const DeviceErrorStatus s = classifyVulkanError(VulkanError("x", "vkAllocateMemory", oom));
+    const DeviceErrorStatus s = classifyVulkanError(deviceError("x", "vkAllocateMemory", oom));
     EXPECT_EQ(s.status, SideStatus::NotSupported);
     EXPECT_FALSE(s.device_lost);
     EXPECT_EQ(s.detail.rfind("out of memory: vkAllocateMemory returned VK_ERROR_OUT_OF_", 0), 0u)
         << s.detail;
   }
   const DeviceErrorStatus refused = classifyVulkanError(
-      VulkanError("x", "vkCreateRayTracingPipelinesKHR", VK_ERROR_INITIALIZATION_FAILED));
+      deviceError("x", "vkCreateRayTracingPipelinesKHR", VK_ERROR_INITIALIZATION_FAILED));
   EXPECT_EQ(refused.status, SideStatus::Refused);
   EXPECT_NE(refused.detail.find("the driver refused the pipeline"), std::string::npos);
-  const DeviceErrorStatus other = classifyVulkanError(VulkanError(
+  const DeviceErrorStatus other = classifyVulkanError(deviceError(
       "vkMapMemory: VK_ERROR_MEMORY_MAP_FAILED", "vkMapMemory", VK_ERROR_MEMORY_MAP_FAILED));
   EXPECT_EQ(other.status, SideStatus::Crash);
   EXPECT_EQ(other.detail, "vkMapMemory: VK_ERROR_MEMORY_MAP_FAILED");
   for (const std::string& name : deviceErrorFaultNames())
     EXPECT_TRUE(deviceErrorFault(name)) << name;
   EXPECT_FALSE(deviceErrorFault("crash"));
+}
+
+TEST(DeviceErrors, AFailedCallIsADeviceErrorNamingTheCallAndItsResult) {
+  EXPECT_TRUE(vkCheck(VK_SUCCESS, "vkQueueSubmit").ok());
+  const Result<void> lost = vkCheck(VK_ERROR_DEVICE_LOST, "vkQueueSubmit");
+  ASSERT_FALSE(lost);
+  EXPECT_EQ(lost.error().kind, ErrorKind::Device);
+  EXPECT_EQ(lost.error().call, "vkQueueSubmit");
+  EXPECT_EQ(lost.error().result, "VK_ERROR_DEVICE_LOST");
+  EXPECT_EQ(lost.error().message, "vkQueueSubmit: VK_ERROR_DEVICE_LOST");
+  EXPECT_TRUE(classifyVulkanError(lost.error()).device_lost);
+  // Not one call's failure: a Crash that says what went wrong.
+  const DeviceErrorStatus no_call =
+      classifyVulkanError(deviceError("no compute queue family: VK_ERROR_FEATURE_NOT_PRESENT"));
+  EXPECT_EQ(no_call.status, SideStatus::Crash);
+  EXPECT_EQ(no_call.detail, "no compute queue family: VK_ERROR_FEATURE_NOT_PRESENT");
 }
 
 Case suiteCase(const std::string& name) {
@@ -100,17 +116,17 @@ TEST(DeviceErrors, ADispatchTooLargeForTheDeviceIsNotSupported) {
   const Case c = suiteCase("sbt/hit-group-index");  // a 6x3 launch
   ASSERT_FALSE(c.name.empty());
   VulkanContext ctx = ampleContext();
-  EXPECT_NO_THROW(checkCaseSupport(ctx, c, derivePlan(c)));
+  EXPECT_TRUE(checkCaseSupport(ctx, c, derivePlan(c)).ok());
   ctx.info.max_ray_dispatch_invocation_count = 17;
-  try {
-    checkCaseSupport(ctx, c, derivePlan(c));
-    ADD_FAILURE() << "no NotSupportedError";
-  } catch (const NotSupportedError& e) {
-    EXPECT_STREQ(e.what(), "launch of 18 rays > maxRayDispatchInvocationCount 17");
-  }
+  const Result<void> too_many = checkCaseSupport(ctx, c, derivePlan(c));
+  ASSERT_FALSE(too_many);
+  EXPECT_EQ(too_many.error().kind, ErrorKind::NotSupported);
+  EXPECT_EQ(too_many.error().message, "launch of 18 rays > maxRayDispatchInvocationCount 17");
   ctx.info.max_ray_dispatch_invocation_count = 1u << 20;
   ctx.info.max_launch_size[0] = 5;
-  EXPECT_THROW(checkCaseSupport(ctx, c, derivePlan(c)), NotSupportedError);
+  const Result<void> too_wide = checkCaseSupport(ctx, c, derivePlan(c));
+  ASSERT_FALSE(too_wide);
+  EXPECT_EQ(too_wide.error().kind, ErrorKind::NotSupported);
 }
 
 TEST(DeviceErrors, AnIndirectTraceWithoutItsFeatureIsNotSupported) {
@@ -120,14 +136,13 @@ TEST(DeviceErrors, AnIndirectTraceWithoutItsFeatureIsNotSupported) {
     ASSERT_FALSE(c.name.empty());
     VulkanContext ctx = ampleContext();
     ctx.info.trace_rays_indirect = ctx.info.trace_rays_indirect2 = true;
-    EXPECT_NO_THROW(checkCaseSupport(ctx, c, derivePlan(c)));
+    EXPECT_TRUE(checkCaseSupport(ctx, c, derivePlan(c)).ok());
     ctx.info.trace_rays_indirect = ctx.info.trace_rays_indirect2 = false;
-    try {
-      checkCaseSupport(ctx, c, derivePlan(c));
-      ADD_FAILURE() << "no NotSupportedError";
-    } catch (const NotSupportedError& e) {
-      EXPECT_NE(std::string(e.what()).find("rays.command indirect"), std::string::npos) << e.what();
-    }
+    const Result<void> lacking = checkCaseSupport(ctx, c, derivePlan(c));
+    ASSERT_FALSE(lacking);
+    EXPECT_EQ(lacking.error().kind, ErrorKind::NotSupported);
+    EXPECT_NE(lacking.error().message.find("rays.command indirect"), std::string::npos)
+        << lacking.error().message;
   }
 }
 
@@ -138,15 +153,13 @@ TEST(DeviceErrors, TheCullMaskBuiltinWithoutMaintenance1IsNotSupported) {
   ASSERT_TRUE(plan.cull_mask_builtin);
   VulkanContext ctx = ampleContext();
   ctx.info.ray_tracing_maintenance1 = true;
-  EXPECT_NO_THROW(checkCaseSupport(ctx, c, plan));
+  EXPECT_TRUE(checkCaseSupport(ctx, c, plan).ok());
   ctx.info.ray_tracing_maintenance1 = false;
-  try {
-    checkCaseSupport(ctx, c, plan);
-    ADD_FAILURE() << "no NotSupportedError";
-  } catch (const NotSupportedError& e) {
-    EXPECT_NE(std::string(e.what()).find("VK_KHR_ray_tracing_maintenance1"), std::string::npos)
-        << e.what();
-  }
+  const Result<void> lacking = checkCaseSupport(ctx, c, plan);
+  ASSERT_FALSE(lacking);
+  EXPECT_EQ(lacking.error().kind, ErrorKind::NotSupported);
+  EXPECT_NE(lacking.error().message.find("VK_KHR_ray_tracing_maintenance1"), std::string::npos)
+      << lacking.error().message;
 }
 
 }  // namespace

@@ -21,10 +21,12 @@ class MemoryTest : public ::testing::Test {
  protected:
   void SetUp() override {
     if (!rayTracingDeviceExists()) GTEST_SKIP() << "no ray tracing device on this machine";
-    createInstance(ctx_, true);
+    const Result<void> instance = createInstance(ctx_, true);
+    ASSERT_TRUE(instance.ok()) << instance.error().message;
     Result<void> picked = selectDevice(ctx_, "");
     ASSERT_TRUE(picked.ok()) << picked.error().message;
-    createDevice(ctx_);
+    const Result<void> device = createDevice(ctx_);
+    ASSERT_TRUE(device.ok()) << device.error().message;
   }
   void TearDown() override {
     if (ctx_.device) destroyDevice(ctx_);
@@ -41,8 +43,8 @@ TEST_F(MemoryTest, ACaseBuffersShareBlocksOnAlignedBoundaries) {
   {
     Cleanup cleanup;
     for (VkDeviceSize size : {VkDeviceSize(1), VkDeviceSize(100), VkDeviceSize(4096)})
-      host.push_back(createBuffer(ctx_, size, kUsage, MemoryUse::Host, cleanup));
-    const Buffer device = createBuffer(ctx_, 1000, kUsage, MemoryUse::Device, cleanup);
+      host.push_back(*createBuffer(ctx_, size, kUsage, MemoryUse::Host, cleanup));
+    const Buffer device = *createBuffer(ctx_, 1000, kUsage, MemoryUse::Device, cleanup);
     // Host buffers of one memory type: one block; the device buffer's type
     // may be the same one (lavapipe) or another.
     EXPECT_LE(cleanup.blocks().size(), 2u);
@@ -68,8 +70,8 @@ TEST_F(MemoryTest, ACaseBuffersShareBlocksOnAlignedBoundaries) {
 
 TEST_F(MemoryTest, ALargeBufferGetsABlockOfItsOwn) {
   Cleanup cleanup;
-  const Buffer small = createBuffer(ctx_, 64, kUsage, MemoryUse::Host, cleanup);
-  const Buffer large = createBuffer(ctx_, VkDeviceSize(5) << 20, kUsage, MemoryUse::Host, cleanup);
+  const Buffer small = *createBuffer(ctx_, 64, kUsage, MemoryUse::Host, cleanup);
+  const Buffer large = *createBuffer(ctx_, VkDeviceSize(5) << 20, kUsage, MemoryUse::Host, cleanup);
   EXPECT_NE(small.memory, large.memory);
   EXPECT_EQ(cleanup.blocks().size(), 2u);
   std::memset(large.mapped, 7, large.size);  // all of it is mapped and writable

@@ -12,4 +12,11 @@ std::string Error::format() const {
   return s + visibleText(message);
 }
 
+Error withContext(const std::string& context, const Error& e) {
+  Error out = e;
+  out.loc = {};
+  out.message = context + (e.loc.file.empty() ? e.message : e.format());
+  return out;
+}
+
 }  // namespace rayspec

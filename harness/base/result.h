@@ -3,6 +3,10 @@
 //   Result<Baseline> b = loadBaseline(...);
 //   if (!b) return setupFailed(b.error());
 //   use(*b);
+// Where a failed step only passes its error up, the macros below say so in
+// one line, so that a function reads as its named steps:
+//   RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx, cleanup));
+//   RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd, timeout));
 #pragma once
 
 #include <optional>
@@ -46,3 +50,23 @@ class [[nodiscard]] Result<void> {
 };
 
 }  // namespace rayspec
+
+#define RAYSPEC_TRY_JOIN2(a, b) a##b
+#define RAYSPEC_TRY_JOIN(a, b) RAYSPEC_TRY_JOIN2(a, b)
+
+// RAYSPEC_TRY(DECLARATION, EXPR): EXPR is a Result<T>; on an error the
+// enclosing function returns it (its own return type a Result of any T),
+// else DECLARATION (e.g. `Buffer b`, or an existing variable) takes the
+// value. Expands to two statements: not the lone body of an if or a loop.
+#define RAYSPEC_TRY(declaration, expr)                         \
+  auto RAYSPEC_TRY_JOIN(rayspec_tried_, __LINE__) = (expr);    \
+  if (!RAYSPEC_TRY_JOIN(rayspec_tried_, __LINE__))             \
+    return RAYSPEC_TRY_JOIN(rayspec_tried_, __LINE__).error(); \
+  declaration = std::move(*RAYSPEC_TRY_JOIN(rayspec_tried_, __LINE__))
+
+// RAYSPEC_TRY_VOID(EXPR): EXPR is a Result of any T, its value unused; on an
+// error the enclosing function returns it.
+#define RAYSPEC_TRY_VOID(expr)                                                          \
+  do {                                                                                  \
+    if (auto rayspec_tried = (expr); !rayspec_tried.ok()) return rayspec_tried.error(); \
+  } while (false)

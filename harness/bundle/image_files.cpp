@@ -30,15 +30,18 @@ std::string writeOne(const std::string& path, OIIO::ImageSpec spec, const void* 
 
 }  // namespace
 
-std::string writeImageFiles(const Image& im, const std::string& dir) {
+Result<void> writeImageFiles(const Image& im, const std::string& dir) {
   const std::vector<uint8_t> preview = previewPixels(im);
   OIIO::ImageSpec png(static_cast<int>(im.width), static_cast<int>(im.height), 4,
                       OIIO::TypeDesc::UINT8);
-  std::string err = writeOne(dir + "/" + im.name + ".png", png, preview.data());
-  if (!err.empty() || !im.is_float) return err;
+  if (std::string err = writeOne(dir + "/" + im.name + ".png", png, preview.data()); !err.empty())
+    return errorMessage(std::move(err));
+  if (!im.is_float) return {};
   OIIO::ImageSpec exr(static_cast<int>(im.width), static_cast<int>(im.height),
                       static_cast<int>(im.channels), OIIO::TypeDesc::FLOAT);
-  return writeOne(dir + "/" + im.name + ".exr", exr, im.texels.data());
+  if (std::string err = writeOne(dir + "/" + im.name + ".exr", exr, im.texels.data()); !err.empty())
+    return errorMessage(std::move(err));
+  return {};
 }
 
 std::string writeDiffImage(const Image& a, const Image& b, const std::string& dir) {
@@ -77,7 +80,7 @@ bool imageFilesSupported() {
 
 #else
 
-std::string writeImageFiles(const Image&, const std::string&) {
+Result<void> writeImageFiles(const Image&, const std::string&) {
   return {};
 }
 std::string writeDiffImage(const Image&, const Image&, const std::string&) {

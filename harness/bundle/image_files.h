@@ -5,13 +5,14 @@
 
 #include <string>
 
+#include "base/result.h"
 #include "results/results.h"
 
 namespace rayspec {
 
-// Writes dir/NAME.png (and dir/NAME.exr for float images). Returns an error
-// message, empty on success or when built without OpenImageIO.
-std::string writeImageFiles(const Image& image, const std::string& dir);
+// Writes dir/NAME.png (and dir/NAME.exr for float images), or the error;
+// built without OpenImageIO, writes nothing and succeeds.
+Result<void> writeImageFiles(const Image& image, const std::string& dir);
 
 // Writes dir/NAME.png showing where two images of the same size differ: red
 // where texels differ (brighter for larger float differences), grey where equal.

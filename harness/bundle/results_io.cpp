@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
-#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
@@ -54,12 +53,17 @@ std::string readSizedWords(const fs::path& path, uint64_t expected, bool empty_o
   return in ? std::string() : "cannot read " + path.string();
 }
 
+// An error about a value in dir/results.json: "DIR/results.json: MESSAGE".
+Error badValue(const fs::path& dir, const std::string& message) {
+  return errorMessage((dir / "results.json").string() + ": " + message);
+}
+
 // A count from results.json that sizes a file: at most 2^30 (a 4 GiB file).
-uint64_t sizeField(const json& value, const char* key) {
+Result<uint32_t> sizeField(const fs::path& dir, const json& value, const char* key) {
   const uint64_t v = value.get<uint64_t>();
   if (v > (1u << 30))
-    throw std::runtime_error(std::string(key) + ": " + std::to_string(v) + " is too large");
-  return v;
+    return badValue(dir, std::string(key) + ": " + std::to_string(v) + " is too large");
+  return static_cast<uint32_t>(v);
 }
 
 // One field's words as text, %.9g for floats ("1.5", "0.25 0.5"), appended.
@@ -83,8 +87,8 @@ bool fieldWritten(const RecordField& f, int index, const uint32_t* rec) {
 
 }  // namespace
 
-std::string writeRecordsCsv(const Results& r, const std::string& path,
-                            const std::vector<std::string>& kept) {
+Result<void> writeRecordsCsv(const Results& r, const std::string& path,
+                             const std::vector<std::string>& kept) {
   struct Column {
     const RecordField* field;
     int index;
@@ -118,7 +122,8 @@ std::string writeRecordsCsv(const Results& r, const std::string& path,
     }
   }
   out.write(text.data(), static_cast<std::streamsize>(text.size()));
-  return out ? std::string() : "cannot write " + path;
+  if (!out) return errorMessage("cannot write " + path);
+  return {};
 }
 
 namespace {
@@ -164,18 +169,18 @@ void writeRayNotes(const Results& r, json& j) {
 
 }  // namespace
 
-std::string writeResults(const Results& r, const std::string& dir_name,
-                         const std::vector<std::string>& kept_fields) {
+Result<void> writeResults(const Results& r, const std::string& dir_name,
+                          const std::vector<std::string>& kept_fields) {
   return writeResults(r, dir_name, kept_fields, BundleFiles{});
 }
 
-std::string writeResults(const Results& r, const std::string& dir_name,
-                         const std::vector<std::string>& kept_fields, const BundleFiles& files) {
+Result<void> writeResults(const Results& r, const std::string& dir_name,
+                          const std::vector<std::string>& kept_fields, const BundleFiles& files) {
   const auto start = std::chrono::steady_clock::now();
   const fs::path dir(dir_name);
   std::error_code ec;
   fs::create_directories(dir, ec);
-  if (ec) return "cannot create " + dir.string() + ": " + ec.message();
+  if (ec) return errorMessage("cannot create " + dir.string() + ": " + ec.message());
 
   json j;
   j["case"] = r.case_name;
@@ -202,18 +207,15 @@ std::string writeResults(const Results& r, const std::string& dir_name,
                            {"height", im.height},
                            {"channels", im.channels},
                            {"float", im.is_float}});
-    if (!writeWords(dir / (im.name + ".raw"), im.texels)) return "cannot write image " + im.name;
-    if (!files.image_files) continue;
-    const std::string err = writeImageFiles(im, dir.string());
-    if (!err.empty()) return err;
+    if (!writeWords(dir / (im.name + ".raw"), im.texels))
+      return errorMessage("cannot write image " + im.name);
+    if (files.image_files) RAYSPEC_TRY_VOID(writeImageFiles(im, dir.string()));
   }
   writeRayNotes(r, j);
   if (!writeWords(dir / "records.bin", r.records))
-    return "cannot write records.bin in " + dir.string();
+    return errorMessage("cannot write records.bin in " + dir.string());
   if (files.records_csv)
-    if (std::string err = writeRecordsCsv(r, (dir / "records.csv").string(), kept_fields);
-        !err.empty())
-      return err;
+    RAYSPEC_TRY_VOID(writeRecordsCsv(r, (dir / "records.csv").string(), kept_fields));
   // results.json last, with the time of writing the rest of the bundle.
   StepCosts cost = r.cost;
   cost.add(CostStep::WriteBundle,
@@ -226,8 +228,10 @@ std::string writeResults(const Results& r, const std::string& dir_name,
 namespace {
 
 // Reads the fields of results.json by dotted path, remembering the last one
-// for the message when its value has the wrong type.
+// for the message when its value has the wrong type (nlohmann-json throws
+// then: readResultsJson catches it).
 struct FieldReader {
+  fs::path dir;  // the bundle's
   std::string where;
   const json& operator()(const json& object, const std::string& path) {
     where = path;
@@ -236,22 +240,26 @@ struct FieldReader {
 };
 
 // The bundle's own fields: case, backend, device, status, size, costs,
-// counters and validation messages. Throws on a bad value.
-void readHeader(const json& j, FieldReader& field, Results& r) {
+// counters and validation messages; or the error of a bad value.
+Result<void> readHeader(const json& j, FieldReader& field, Results& r) {
   r.case_name = field(j, "case");
   if (const std::string problem = caseNameProblem(r.case_name); !problem.empty())
-    throw std::runtime_error("case: '" + r.case_name.substr(0, 120) +
-                             "' is no case name: " + problem);
+    return badValue(field.dir,
+                    "case: '" + r.case_name.substr(0, 120) + "' is no case name: " + problem);
   r.backend = field(j, "backend");
   r.device = field(j, "device");
   if (!parseSideStatus(field(j, "status").get<std::string>(), &r.status))
-    throw std::runtime_error("status: unknown value '" + field(j, "status").get<std::string>() +
-                             "'");
+    return badValue(field.dir,
+                    "status: unknown value '" + field(j, "status").get<std::string>() + "'");
   r.status_detail = j.value("status_detail", std::string());
-  r.width = static_cast<uint32_t>(sizeField(field(j, "width"), "width"));
-  r.height = static_cast<uint32_t>(sizeField(field(j, "height"), "height"));
+  RAYSPEC_TRY(r.width, sizeField(field.dir, field(j, "width"), "width"));
+  RAYSPEC_TRY(r.height, sizeField(field.dir, field(j, "height"), "height"));
   r.seconds = field(j, "seconds");
-  if (j.contains("cost")) r.cost = costFromJson(field(j, "cost"));
+  if (j.contains("cost")) {
+    const Result<StepCosts> cost = costFromJson(field(j, "cost"));
+    if (!cost) return badValue(field.dir, cost.error().message);
+    r.cost = *cost;
+  }
   r.case_file = j.value("case_file", std::string());
   if (j.contains("case_hash"))
     r.case_hash = std::stoull(field(j, "case_hash").get<std::string>(), nullptr, 16);
@@ -262,43 +270,45 @@ void readHeader(const json& j, FieldReader& field, Results& r) {
   if (j.contains("rejected"))  // nor rejections
     r.rejected = field(j, "rejected").get<std::vector<std::string>>();
   r.library_handles_compared = j.value("library_handles_compared", 0u);
+  return {};
 }
 
-// The images and their NAME.raw texels; the message of the first that does
-// not read, or "". Throws on a bad value.
-std::string readImages(const json& j, FieldReader& field, const fs::path& dir, Results& r) {
+// The images and their NAME.raw texels; or the error of a bad value or of
+// the first file that does not read.
+Result<void> readImages(const json& j, FieldReader& field, Results& r) {
+  const fs::path& dir = field.dir;
   for (const json& ji : field(j, "images")) {
     Image im;
     im.name = field(ji, "images.name");
     if (const std::string problem = fileNameProblem(im.name); !problem.empty())
-      throw std::runtime_error("images: name '" + im.name.substr(0, 120) + "' " + problem);
+      return badValue(dir, "images: name '" + im.name.substr(0, 120) + "' " + problem);
     im.field = field(ji, "images.field");
-    im.width = static_cast<uint32_t>(sizeField(field(ji, "images.width"), "images.width"));
-    im.height = static_cast<uint32_t>(sizeField(field(ji, "images.height"), "images.height"));
-    im.channels = static_cast<uint32_t>(sizeField(field(ji, "images.channels"), "images.channels"));
+    RAYSPEC_TRY(im.width, sizeField(dir, field(ji, "images.width"), "images.width"));
+    RAYSPEC_TRY(im.height, sizeField(dir, field(ji, "images.height"), "images.height"));
+    RAYSPEC_TRY(im.channels, sizeField(dir, field(ji, "images.channels"), "images.channels"));
     im.is_float = field(ji, "images.float");
     const std::string implied = "image " + im.name + ": width x height x channels " +
                                 std::to_string(im.width) + " x " + std::to_string(im.height) +
                                 " x " + std::to_string(im.channels);
     if (im.channels < 1 || im.channels > 4)
-      throw std::runtime_error("images.channels: " + std::to_string(im.channels) +
+      return badValue(dir, "images.channels: " + std::to_string(im.channels) +
                                " (an image has 1 to 4 channels)");
     // Each factor is at most 2^30 (sizeField): the product fits 64 bits only
     // with 4 channels at most and is checked before it is used.
     const uint64_t texels = uint64_t(im.width) * im.height;
     if (im.width && texels / im.width != im.height)
-      throw std::runtime_error("images: width x height overflows");
+      return badValue(dir, "images: width x height overflows");
     const uint64_t words = texels * im.channels;
     if (std::string e = readSizedWords(dir / (im.name + ".raw"), words, false, implied, im.texels);
         !e.empty())
-      return e;
+      return errorMessage(std::move(e));
     r.images.push_back(std::move(im));
   }
   return {};
 }
 
 // One list of an ambiguous ray's answers (ambiguous.<key>); absent and not
-// `required` (older bundles): none. A hit's t where written. Throws on a bad value.
+// `required` (older bundles): none. A hit's t where written.
 std::vector<Candidate> readCandidates(FieldReader& field, const json& ja, const std::string& key,
                                       bool required) {
   std::vector<Candidate> out;
@@ -316,9 +326,9 @@ std::vector<Candidate> readCandidates(FieldReader& field, const json& ja, const 
   return out;
 }
 
-// The rays the model bounded, found undefined, or found ambiguous. Throws on
-// a bad value.
-void readRayNotes(const json& j, FieldReader& field, Results& r) {
+// The rays the model bounded, found undefined, or found ambiguous; or the
+// error of a bad value.
+Result<void> readRayNotes(const json& j, FieldReader& field, Results& r) {
   if (j.contains("t_bounds"))
     for (const json& jb : field(j, "t_bounds"))
       r.t_bounds.push_back({field(jb, "t_bounds.ray"), field(jb, "t_bounds.bound")});
@@ -327,8 +337,8 @@ void readRayNotes(const json& j, FieldReader& field, Results& r) {
       UndefinedRay u;
       u.ray = field(ju, "undefined.ray");
       if (!parseUndefinedReason(field(ju, "undefined.reason").get<std::string>(), &u.reason))
-        throw std::runtime_error("undefined.reason: unknown value '" +
-                                 field(ju, "undefined.reason").get<std::string>() + "'");
+        return badValue(field.dir, "undefined.reason: unknown value '" +
+                                       field(ju, "undefined.reason").get<std::string>() + "'");
       u.what = field(ju, "undefined.what");
       r.undefined.push_back(std::move(u));
     }
@@ -337,13 +347,13 @@ void readRayNotes(const json& j, FieldReader& field, Results& r) {
       RepeatDependentRay d;
       d.ray = field(jd, "repeat_dependent.ray");
       if (uint64_t{d.ray} >= uint64_t{r.width} * r.height)
-        throw std::runtime_error("repeat_dependent.ray: " + std::to_string(d.ray) +
-                                 " is outside the launch");
+        return badValue(
+            field.dir, "repeat_dependent.ray: " + std::to_string(d.ray) + " is outside the launch");
       for (const json& jn : field(jd, "repeat_dependent.fields")) {
         const int index = recordFieldIndex(jn.get<std::string>());
         if (index < 0)
-          throw std::runtime_error("repeat_dependent.fields: unknown field '" +
-                                   jn.get<std::string>() + "'");
+          return badValue(field.dir,
+                          "repeat_dependent.fields: unknown field '" + jn.get<std::string>() + "'");
         d.fields |= fieldBit(index);
       }
       r.repeat_dependent.push_back(d);
@@ -354,32 +364,39 @@ void readRayNotes(const json& j, FieldReader& field, Results& r) {
     RayAmbiguity a;
     a.ray = field(ja, "ambiguous.ray");
     if (!parseAmbiguityReason(field(ja, "ambiguous.reason").get<std::string>(), &a.reason))
-      throw std::runtime_error("ambiguous.reason: unknown value '" +
-                               field(ja, "ambiguous.reason").get<std::string>() + "'");
+      return badValue(field.dir, "ambiguous.reason: unknown value '" +
+                                     field(ja, "ambiguous.reason").get<std::string>() + "'");
     a.candidates = readCandidates(field, ja, "candidates", true);
     a.shared_triangles = readCandidates(field, ja, "shared_triangles", false);
     a.leak_answers = readCandidates(field, ja, "leak_answers", false);
     r.ambiguous.push_back(std::move(a));
   }
+  return {};
 }
 
-// results.json into r; the message, naming the file and field, or "".
-std::string readResultsJson(std::istream& in, const fs::path& dir, Results& r) {
-  FieldReader field;
+// results.json into r; or the error, naming the file and field.
+Result<void> readResultsJsonFields(std::istream& in, FieldReader& field, Results& r) {
+  const json j = json::parse(in);
+  RAYSPEC_TRY_VOID(readHeader(j, field, r));
+  if (field(j, "record_words").get<uint32_t>() != recordWords())
+    return errorMessage(field.dir.string() + ": record layout differs from this build");
+  RAYSPEC_TRY_VOID(readImages(j, field, r));
+  return readRayNotes(j, field, r);
+}
+
+// readResultsJsonFields, with what nlohmann-json (a value of the wrong type,
+// a missing field, text that is no JSON) and std::stoull throw made an Error.
+Result<void> readResultsJson(std::istream& in, const fs::path& dir, Results& r) {
+  FieldReader field{dir, {}};
   try {
-    const json j = json::parse(in);
-    readHeader(j, field, r);
-    if (field(j, "record_words").get<uint32_t>() != recordWords())
-      return dir.string() + ": record layout differs from this build";
-    if (std::string e = readImages(j, field, dir, r); !e.empty()) return e;
-    readRayNotes(j, field, r);
+    return readResultsJsonFields(in, field, r);
   } catch (const nlohmann::json::exception& e) {
-    return (dir / "results.json").string() +
-           (field.where.empty() ? "" : ": field '" + field.where + "'") + ": " + e.what();
+    return errorMessage((dir / "results.json").string() +
+                        (field.where.empty() ? "" : ": field '" + field.where + "'") + ": " +
+                        e.what());
   } catch (const std::exception& e) {
-    return (dir / "results.json").string() + ": " + e.what();
+    return badValue(dir, e.what());
   }
-  return {};
 }
 
 }  // namespace
@@ -389,7 +406,7 @@ Result<Results> readResults(const std::string& dir_name) {
   const fs::path dir(dir_name);
   std::ifstream in(dir / "results.json");
   if (!in) return errorMessage("no results.json in " + dir.string());
-  if (std::string e = readResultsJson(in, dir, r); !e.empty()) return errorMessage(std::move(e));
+  RAYSPEC_TRY_VOID(readResultsJson(in, dir, r));
   // No records at all when the case records nothing per ray (or its side died).
   const std::string implied = "width x height x record words " + std::to_string(r.width) + " x " +
                               std::to_string(r.height) + " x " + std::to_string(recordWords());

@@ -19,9 +19,9 @@
 namespace rayspec {
 
 // Writes the bundle into dir (created). `kept_fields` are the record fields
-// written to records.csv. Returns an error message, empty on success.
-std::string writeResults(const Results& r, const std::string& dir,
-                         const std::vector<std::string>& kept_fields);
+// written to records.csv.
+Result<void> writeResults(const Results& r, const std::string& dir,
+                          const std::vector<std::string>& kept_fields);
 
 // Which derived files a bundle gets besides results.json, records.bin and
 // NAME.raw. Without image_files no NAME.png / NAME.exr (a forked child must
@@ -33,12 +33,12 @@ struct BundleFiles {
   bool image_files = true;
   bool records_csv = true;
 };
-std::string writeResults(const Results& r, const std::string& dir,
-                         const std::vector<std::string>& kept_fields, const BundleFiles& files);
+Result<void> writeResults(const Results& r, const std::string& dir,
+                          const std::vector<std::string>& kept_fields, const BundleFiles& files);
 
 // records.csv alone: x, y, the kept fields where written, the automatic ones.
-std::string writeRecordsCsv(const Results& r, const std::string& path,
-                            const std::vector<std::string>& kept_fields);
+Result<void> writeRecordsCsv(const Results& r, const std::string& path,
+                             const std::vector<std::string>& kept_fields);
 
 // Reads a bundle back (results.json, records.bin, the images).
 Result<Results> readResults(const std::string& dir);

@@ -1,7 +1,5 @@
 #include "bundle/step_cost_json.h"
 
-#include <stdexcept>
-
 namespace rayspec {
 
 nlohmann::json costJson(const StepCosts& costs) {
@@ -11,11 +9,11 @@ nlohmann::json costJson(const StepCosts& costs) {
   return j;
 }
 
-StepCosts costFromJson(const nlohmann::json& j) {
+Result<StepCosts> costFromJson(const nlohmann::json& j) {
   StepCosts costs;
   for (const auto& [name, value] : j.items()) {
     CostStep step;
-    if (!parseCostStep(name, &step)) throw std::runtime_error("cost: unknown step '" + name + "'");
+    if (!parseCostStep(name, &step)) return errorMessage("cost: unknown step '" + name + "'");
     costs[step] = value.get<double>();
   }
   return costs;

@@ -134,8 +134,8 @@ void addVariantOptions(CLI::App* run, RunOptions& run_opt, VariantTexts& texts) 
                   "it cannot move exactly is NotSupported)")
       ->check(
           [](const std::string& spec) {
-            std::string why;
-            return parseMotionSpec(spec, &why) ? std::string() : why;
+            const Result<RigidMotion> motion = parseMotionSpec(spec);
+            return motion ? std::string() : motion.error().message;
           },
           "MOTION");
   run->add_option("--through", through_name,
@@ -169,10 +169,9 @@ Subcommand addRunCommand(CLI::App& app) {
   addIsolationOptions(run, *opt);
   addVariantOptions(run, *opt, *texts);
   return {run, [opt, texts] {
-            if (!texts->move_spec.empty()) {
-              std::string why;  // checked while parsing
-              opt->move = parseMotionSpec(texts->move_spec, &why);
-            }
+            if (!texts->move_spec.empty())  // checked while parsing
+              if (Result<RigidMotion> motion = parseMotionSpec(texts->move_spec))
+                opt->move = *motion;
             if (!texts->through_name.empty())
               opt->through = featurePathFromName(texts->through_name);
             return runCases(*opt);

@@ -9,62 +9,57 @@ namespace rayspec {
 namespace {
 
 // The launch by an indirect command, where the case launches directly.
-bool launchIndirect(Case& c, TraceCommand command, std::string* why_not) {
+Result<void> launchIndirect(Case& c, TraceCommand command) {
   if (c.rays.command != TraceCommand::Direct) {
-    *why_not = "the case chooses its own launch command";
-    return false;
+    return errorMessage("the case chooses its own launch command");
   }
   c.rays.command = command;
-  return true;
+  return {};
 }
 
 // One library holding every miss, hit and callable group; the linked
 // pipeline keeps raygen.
-bool intoLibrary(Case& c, std::string* why_not) {
+Result<void> intoLibrary(Case& c) {
   Pipeline& p = c.pipeline;
   if (!p.libraries.empty()) {
-    *why_not = "the case builds its own pipeline libraries";
-    return false;
+    return errorMessage("the case builds its own pipeline libraries");
   }
   PipelineLibrary lib;
   for (uint32_t i = 0; i < p.miss.size(); ++i) lib.miss.push_back(i);
   for (uint32_t i = 0; i < p.hit_groups.size(); ++i) lib.hit_groups.push_back(i);
   for (uint32_t i = 0; i < p.callables.size(); ++i) lib.callables.push_back(i);
   if (lib.miss.empty() && lib.hit_groups.empty() && lib.callables.empty()) {
-    *why_not = "the case has no group but raygen to put in a library";
-    return false;
+    return errorMessage("the case has no group but raygen to put in a library");
   }
   p.libraries.push_back(std::move(lib));
-  return true;
+  return {};
 }
 
-bool copied(Case& c, AsCopy copy, std::string* why_not) {
+Result<void> copied(Case& c, AsCopy copy) {
   if (c.scene.build.copy != AsCopy::None) {
-    *why_not = "the case copies its structures its own way";
-    return false;
+    return errorMessage("the case copies its structures its own way");
   }
   c.scene.build.copy = copy;
-  return true;
+  return {};
 }
 
 // Built with ALLOW_UPDATE, then updated in place to the very same geometry
 // and instances (scene.update with nothing moved).
-bool updatedInPlace(Case& c, std::string* why_not) {
+Result<void> updatedInPlace(Case& c) {
   if (c.scene.updates()) {
-    *why_not = "the case updates its structures itself";
-    return false;
+    return errorMessage("the case updates its structures itself");
   }
   c.scene.build.flags |= kBuildAllowUpdate;
   c.scene.earlier.push_back(std::make_shared<const Scene>(c.scene));
-  return true;
+  return {};
 }
 
 // Every trace a ray query loop, where nothing is in the way.
-bool tracedByRayQuery(Case& c, std::string* why_not) {
-  *why_not = rayQueryObstacle(c);
-  if (!why_not->empty()) return false;
+Result<void> tracedByRayQuery(Case& c) {
+  if (std::string obstacle = rayQueryObstacle(c); !obstacle.empty())
+    return errorMessage(std::move(obstacle));
   c.pipeline.ray_query = true;
-  return true;
+  return {};
 }
 
 }  // namespace
@@ -82,36 +77,34 @@ const std::string& featurePathNames() {
   return names;
 }
 
-std::optional<Case> throughPath(const Case& c, FeaturePath path, std::string* why_not) {
+Result<Case> throughPath(const Case& c, FeaturePath path) {
   Case out = c;
-  bool ok = false;
   switch (path) {
     case FeaturePath::Indirect:
-      ok = launchIndirect(out, TraceCommand::Indirect, why_not);
+      RAYSPEC_TRY_VOID(launchIndirect(out, TraceCommand::Indirect));
       break;
     case FeaturePath::Indirect2:
-      ok = launchIndirect(out, TraceCommand::Indirect2, why_not);
+      RAYSPEC_TRY_VOID(launchIndirect(out, TraceCommand::Indirect2));
       break;
     case FeaturePath::Libraries:
-      ok = intoLibrary(out, why_not);
+      RAYSPEC_TRY_VOID(intoLibrary(out));
       break;
     case FeaturePath::Clone:
-      ok = copied(out, AsCopy::Clone, why_not);
+      RAYSPEC_TRY_VOID(copied(out, AsCopy::Clone));
       break;
     case FeaturePath::Compact:
-      ok = copied(out, AsCopy::Compact, why_not);
+      RAYSPEC_TRY_VOID(copied(out, AsCopy::Compact));
       break;
     case FeaturePath::Serialize:
-      ok = copied(out, AsCopy::Serialize, why_not);
+      RAYSPEC_TRY_VOID(copied(out, AsCopy::Serialize));
       break;
     case FeaturePath::Update:
-      ok = updatedInPlace(out, why_not);
+      RAYSPEC_TRY_VOID(updatedInPlace(out));
       break;
     case FeaturePath::RayQuery:
-      ok = tracedByRayQuery(out, why_not);
+      RAYSPEC_TRY_VOID(tracedByRayQuery(out));
       break;
   }
-  if (!ok) return std::nullopt;
   return out;
 }
 

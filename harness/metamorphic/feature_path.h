@@ -11,6 +11,7 @@
 #include <string>
 
 #include "base/enum_names.h"
+#include "base/result.h"
 #include "case/case.h"
 
 namespace rayspec {
@@ -33,7 +34,7 @@ const char* featurePathName(FeaturePath p);
 std::optional<FeaturePath> featurePathFromName(const std::string& name);
 const std::string& featurePathNames();  // "indirect, indirect2, ..." for help and errors
 
-// The case sent through `path`, or nullopt with *why_not set.
-std::optional<Case> throughPath(const Case& c, FeaturePath path, std::string* why_not);
+// The case sent through `path`, or the error saying why it cannot go.
+Result<Case> throughPath(const Case& c, FeaturePath path);
 
 }  // namespace rayspec

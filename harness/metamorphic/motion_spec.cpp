@@ -47,34 +47,30 @@ std::string numberText(double v) {
 
 }  // namespace
 
-std::optional<RigidMotion> parseMotionSpec(const std::string& spec, std::string* why_not) {
+Result<RigidMotion> parseMotionSpec(const std::string& spec) {
   const std::vector<std::string> parts = splitCommas(spec);
   if (parts.size() != 3 && parts.size() != 6) {
-    *why_not = "'" + spec +
-               "': expected three signed axes (e.g. -y,x,z), optionally followed by three "
-               "translation terms";
-    return std::nullopt;
+    return errorMessage("'" + spec +
+                        "': expected three signed axes (e.g. -y,x,z), optionally followed by three "
+                        "translation terms");
   }
   RigidMotion m;
   std::array<int, 3> seen{0, 0, 0};
   for (int k = 0; k < 3; ++k) {
     if (!parseSignedAxis(parts[k], &m.axis[k], &m.sign[k])) {
-      *why_not = "'" + parts[k] + "' (term " + std::to_string(k + 1) +
-                 "): not a signed axis (x, -y, +z, ...)";
-      return std::nullopt;
+      return errorMessage("'" + parts[k] + "' (term " + std::to_string(k + 1) +
+                          "): not a signed axis (x, -y, +z, ...)");
     }
     ++seen[m.axis[k]];
   }
   if (seen != std::array<int, 3>{1, 1, 1}) {
-    *why_not = "'" + spec + "': each of x, y and z must appear once";
-    return std::nullopt;
+    return errorMessage("'" + spec + "': each of x, y and z must appear once");
   }
   for (int k = 0; k < 3 && parts.size() == 6; ++k)
     if (!parseNumber(parts[3 + k], &m.translate[k]) ||
         double(float(m.translate[k])) != m.translate[k]) {
-      *why_not = "'" + parts[3 + k] + "' (term " + std::to_string(4 + k) +
-                 "): not a finite number exact in float";
-      return std::nullopt;
+      return errorMessage("'" + parts[3 + k] + "' (term " + std::to_string(4 + k) +
+                          "): not a finite number exact in float");
     }
   return m;
 }

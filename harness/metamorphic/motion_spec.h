@@ -13,8 +13,8 @@
 
 namespace rayspec {
 
-// The motion, or nullopt with *why_not saying what is wrong with the text.
-std::optional<RigidMotion> parseMotionSpec(const std::string& spec, std::string* why_not);
+// The motion, or the error saying what is wrong with the text.
+Result<RigidMotion> parseMotionSpec(const std::string& spec);
 
 // The motion written back in the same form (translation terms only where one
 // is not 0), e.g. "-y,x,z" or "z,x,y,1024,-2048,0".

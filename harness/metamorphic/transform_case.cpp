@@ -64,27 +64,24 @@ bool exactSum(float a, double b, float* out) {
 
 }  // namespace
 
-std::optional<Case> moveCase(const Case& c, const RigidMotion& m, std::string* why_not,
-                             MoveScope scope) {
+Result<Case> moveCase(const Case& c, const RigidMotion& m, MoveScope scope) {
   std::array<int, 3> seen{0, 0, 0};
   for (int k = 0; k < 3; ++k) {
     if (m.axis[k] < 0 || m.axis[k] > 2 || (m.sign[k] != 1 && m.sign[k] != -1)) {
-      *why_not = "the motion is not a signed permutation of the axes";
-      return std::nullopt;
+      return errorMessage("the motion is not a signed permutation of the axes");
     }
     ++seen[m.axis[k]];
   }
   if (seen != std::array<int, 3>{1, 1, 1}) {
-    *why_not = "the motion is not a signed permutation of the axes";
-    return std::nullopt;
+    return errorMessage("the motion is not a signed permutation of the axes");
   }
   if (scope == MoveScope::SameGeometry && !tracesOnlyTheLaunchRay(c)) {
-    *why_not = "a stage traces rays of its own (or branches): only the launch rays would move";
-    return std::nullopt;
+    return errorMessage(
+        "a stage traces rays of its own (or branches): only the launch rays would move");
   }
   if (anyTraceSetsItsOwnRay(c)) {
-    *why_not = "a trace gives its own origin or direction: only the launch rays would move";
-    return std::nullopt;
+    return errorMessage(
+        "a trace gives its own origin or direction: only the launch rays would move");
   }
   Case out = c;
   for (Instance& inst : out.scene.instances) {
@@ -94,8 +91,7 @@ std::optional<Case> moveCase(const Case& c, const RigidMotion& m, std::string* w
       const int row = m.axis[k];
       for (int col = 0; col < 3; ++col) n[k * 4 + col] = m.sign[k] * t[row * 4 + col];
       if (!exactSum(m.sign[k] * t[row * 4 + 3], m.translate[k], &n[k * 4 + 3])) {
-        *why_not = "an instance translation plus the motion's is not exact in float";
-        return std::nullopt;
+        return errorMessage("an instance translation plus the motion's is not exact in float");
       }
     }
     inst.transform = n;
@@ -105,8 +101,7 @@ std::optional<Case> moveCase(const Case& c, const RigidMotion& m, std::string* w
     for (int k = 0; k < 3; ++k) {
       n.direction[k] = m.sign[k] * r.direction[m.axis[k]];
       if (!exactSum(m.sign[k] * r.origin[m.axis[k]], m.translate[k], &n.origin[k])) {
-        *why_not = "a ray origin plus the motion's translation is not exact in float";
-        return std::nullopt;
+        return errorMessage("a ray origin plus the motion's translation is not exact in float");
       }
     }
     r = n;

@@ -23,6 +23,7 @@
 #include <optional>
 #include <string>
 
+#include "base/result.h"
 #include "case/case.h"
 
 namespace rayspec {
@@ -33,11 +34,11 @@ struct RigidMotion {
   std::array<double, 3> translate{0, 0, 0};
 };
 
-// The moved case, or nullopt with *why_not set: the motion is not a signed
-// permutation, a sum is not exact in float, or the case traces other rays.
+// The moved case, or the error: the motion is not a signed permutation, a
+// sum is not exact in float, or the case traces other rays.
 // Its source_hash mixes in the motion (motion_spec.h's text).
 enum class MoveScope { SameGeometry, Verdict };
-std::optional<Case> moveCase(const Case& c, const RigidMotion& m, std::string* why_not,
-                             MoveScope scope = MoveScope::SameGeometry);
+Result<Case> moveCase(const Case& c, const RigidMotion& m,
+                      MoveScope scope = MoveScope::SameGeometry);
 
 }  // namespace rayspec

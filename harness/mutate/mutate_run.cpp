@@ -30,12 +30,9 @@ CaseMutation mutateOne(const CaseFile& f, const MutateOptions& opt) {
   }
   const Case& c = *parsed.value;
   const Plan plan = derivePlan(c);
-  Results device;
-  try {
-    device = SavedDevice(opt.run_dir).run(c, plan);
-  } catch (const std::exception& e) {
-    return notJudged(f.name, e.what());
-  }
+  const Result<Results> saved = SavedDevice(opt.run_dir).run(c, plan);
+  if (!saved) return notJudged(f.name, saved.error().format());
+  const Results& device = *saved;
   if (!device.ok()) return notJudged(f.name, "device: " + device.statusText());
   ModelOptions mo;
   mo.threads = opt.threads;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "base/result.h"
 #include "program/builtins.h"
 #include "program/program.h"
 #include "program/stage_interface.h"
@@ -56,9 +57,10 @@ struct OpInfo {
 const std::vector<OpInfo>& ops();
 const OpInfo* findOp(const std::string& name);
 
-// Fills Expr::type for e and its arguments; returns an error message (empty
-// when fine). `stage` decides which built-ins and ops are allowed.
-std::string typeCheck(Expr& e, Stage stage);
+// Fills Expr::type for e and its arguments, or the error (its message only:
+// checkExpr in check_expr.h keeps the node). `stage` decides which built-ins
+// and ops are allowed.
+Result<void> typeCheck(Expr& e, Stage stage);
 
 // Checks a whole program for a stage (statement kinds allowed in the stage,
 // expression types, field names); returns the first error with its location.

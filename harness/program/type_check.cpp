@@ -357,9 +357,9 @@ std::optional<ProgramError> checkExprAs(Expr& e, Stage stage, ValueType want,
   return std::nullopt;
 }
 
-std::string typeCheck(Expr& e, Stage stage) {
-  auto r = checkExpr(e, stage);
-  return r ? r->message : std::string();
+Result<void> typeCheck(Expr& e, Stage stage) {
+  if (const std::optional<ProgramError> r = checkExpr(e, stage)) return errorMessage(r->message);
+  return {};
 }
 
 }  // namespace rayspec

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
-#include <stdexcept>
 
 #include "bundle/step_cost_json.h"
 
@@ -26,14 +25,14 @@ nlohmann::json caseCostJson(const CaseCost& cost) {
   return j;
 }
 
-CaseCost caseCostFromJson(const nlohmann::json& j) {
+Result<CaseCost> caseCostFromJson(const nlohmann::json& j) {
   CaseCost cost;
   for (const auto& item : j.items()) {
     const std::string name = item.key();  // not a structured binding: clang 14 cannot capture one
     const auto side = std::find_if(std::begin(kSides), std::end(kSides),
                                    [&name](CostSide s) { return name == costSideName(s); });
-    if (side == std::end(kSides)) throw std::runtime_error("cost: unknown side '" + name + "'");
-    cost[*side] = costFromJson(item.value());
+    if (side == std::end(kSides)) return errorMessage("cost: unknown side '" + name + "'");
+    RAYSPEC_TRY(cost[*side], costFromJson(item.value()));
   }
   return cost;
 }

@@ -12,13 +12,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/result.h"
 #include "report/case_outcome.h"
 
 namespace rayspec {
 
 nlohmann::json caseCostJson(const CaseCost& cost);
-// Throws std::runtime_error naming an unknown side or step.
-CaseCost caseCostFromJson(const nlohmann::json& j);
+// The cost, or the error naming an unknown side or step (a value of the
+// wrong type: nlohmann-json's exception, for the reader of the JSON).
+Result<CaseCost> caseCostFromJson(const nlohmann::json& j);
 
 // cost.json of one case; an error message or "".
 std::string writeCaseCost(const CaseOutcome& outcome, const std::string& path);

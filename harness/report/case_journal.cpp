@@ -27,6 +27,19 @@ std::string appendJournal(const CaseOutcome& outcome, const std::string& dir) {
   return out ? std::string() : "cannot append to " + journalPath(dir);
 }
 
+namespace {
+
+// One line of the journal, with what nlohmann-json throws made an Error.
+Result<CaseOutcome> journalLine(const std::string& line) {
+  try {
+    return outcomeFromJson(nlohmann::json::parse(line));
+  } catch (const std::exception& e) {
+    return errorMessage(e.what());
+  }
+}
+
+}  // namespace
+
 Result<std::optional<std::vector<CaseOutcome>>> readJournal(const std::string& dir) {
   std::vector<CaseOutcome> out;
   std::ifstream in(journalPath(dir));
@@ -36,17 +49,16 @@ Result<std::optional<std::vector<CaseOutcome>>> readJournal(const std::string& d
   for (size_t number = 1; std::getline(in, line); ++number) {
     if (line.empty()) continue;
     const bool last = in.peek() == std::char_traits<char>::eof();
-    try {
-      CaseOutcome o = outcomeFromJson(nlohmann::json::parse(line));
-      if (auto it = at.find(o.name); it != at.end())
-        out[it->second] = std::move(o);
-      else {
-        at[o.name] = out.size();
-        out.push_back(std::move(o));
-      }
-    } catch (const std::exception& e) {
+    Result<CaseOutcome> o = journalLine(line);
+    if (!o) {
       if (last) break;  // the line a kill cut short
-      return Error{SourceLoc{journalPath(dir), static_cast<int>(number), 1, ""}, e.what()};
+      return Error{SourceLoc{journalPath(dir), static_cast<int>(number), 1, ""}, o.error().message};
+    }
+    if (auto it = at.find(o->name); it != at.end())
+      out[it->second] = std::move(*o);
+    else {
+      at[o->name] = out.size();
+      out.push_back(std::move(*o));
     }
   }
   return std::optional<std::vector<CaseOutcome>>(std::move(out));

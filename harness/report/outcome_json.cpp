@@ -1,7 +1,6 @@
 #include "report/outcome_json.h"
 
 #include <fstream>
-#include <stdexcept>
 
 #include "base/visible_text.h"
 #include "report/case_cost.h"
@@ -15,11 +14,62 @@ constexpr BaselineMatch kMatches[] = {BaselineMatch::None,           BaselineMat
                                       BaselineMatch::UnexpectedPass, BaselineMatch::KnownFlake,
                                       BaselineMatch::Flake,          BaselineMatch::Skipped};
 
-Status statusField(const nlohmann::json& j, const char* key) {
+Result<Status> statusField(const nlohmann::json& j, const char* key) {
   Status s;
   if (!parseStatus(j.at(key).get<std::string>(), &s))
-    throw std::runtime_error(std::string("'") + key + "' is not a status: " + j.at(key).dump());
+    return errorMessage(std::string("'") + key + "' is not a status: " + j.at(key).dump());
   return s;
+}
+
+// The verdict's findings and undefined rays, and the failing rays.
+Result<void> outcomeVerdict(const nlohmann::json& j, CaseOutcome& o) {
+  for (const nlohmann::json& f : j.at("findings")) {
+    RAYSPEC_TRY(const Status status, statusField(f, "status"));
+    o.verdict.findings.push_back(
+        {status, f.at("rule").get<std::string>(), f.at("message").get<std::string>(),
+         f.at("rays").get<std::vector<uint32_t>>(), f.at("ray_count").get<uint32_t>()});
+  }
+  for (const nlohmann::json& u : j.at("undefined")) {
+    UndefinedRays r;
+    if (!parseUndefinedReason(u.at("reason").get<std::string>(), &r.reason))
+      return errorMessage("'reason' is not an undefined-behaviour reason: " +
+                          u.at("reason").dump());
+    r.ray_count = u.at("ray_count").get<uint32_t>();
+    r.rays = u.at("rays").get<std::vector<uint32_t>>();
+    r.what = u.at("what").get<std::string>();
+    o.verdict.undefined.push_back(r);
+  }
+  for (const nlohmann::json& r : j.value("failing_rays", nlohmann::json::array()))
+    o.failing_rays.push_back({r.at("ray").get<uint32_t>(), r.at("x").get<uint32_t>(),
+                              r.at("y").get<uint32_t>(), r.at("field").get<std::string>(),
+                              r.at("device").get<std::string>(), r.at("model").get<std::string>()});
+  return {};
+}
+
+// Every field but the name. nlohmann-json's exceptions (a missing field, a
+// value of the wrong type) go to outcomeFromJson, which catches them.
+Result<void> outcomeFields(const nlohmann::json& j, CaseOutcome& o) {
+  RAYSPEC_TRY(o.status, statusField(j, "status"));
+  o.headline = j.at("headline").get<std::string>();
+  o.seconds = j.at("seconds").get<double>();
+  o.device_seconds = j.at("device_seconds").get<double>();
+  o.model_seconds = j.at("model_seconds").get<double>();
+  o.rules = j.at("rules").get<std::vector<std::string>>();
+  const std::string match = j.value("baseline", "");
+  bool known = false;
+  for (BaselineMatch m : kMatches)
+    if (match == baselineMatchName(m)) o.baseline = m, known = true;
+  if (!known) return errorMessage("'baseline' is not a baseline result: " + match);
+  o.baseline_note = j.value("baseline_note", "");
+  o.device_name = j.value("device_name", "");
+  o.images = j.value("images", std::vector<std::string>{});
+  for (const std::string& im : o.images)  // each becomes a file name in the report's links
+    if (const std::string problem = fileNameProblem(im); !problem.empty())
+      return errorMessage("'images': '" + visibleText(im, 80) + "' " + problem);
+  if (j.contains("cost")) {
+    RAYSPEC_TRY(o.cost, caseCostFromJson(j.at("cost")));
+  }
+  return outcomeVerdict(j, o);
 }
 
 }  // namespace
@@ -66,55 +116,20 @@ nlohmann::json outcomeJson(const CaseOutcome& o) {
   return c;
 }
 
-CaseOutcome outcomeFromJson(const nlohmann::json& j) {
+Result<CaseOutcome> outcomeFromJson(const nlohmann::json& j) {
   CaseOutcome o;
-  o.name = j.at("name").get<std::string>();
-  if (const std::string problem = caseNameProblem(o.name); !problem.empty())
-    throw std::runtime_error("cases: name '" + o.name.substr(0, 120) +
-                             "' is no case name: " + problem);
   try {
-    o.status = statusField(j, "status");
-    o.headline = j.at("headline").get<std::string>();
-    o.seconds = j.at("seconds").get<double>();
-    o.device_seconds = j.at("device_seconds").get<double>();
-    o.model_seconds = j.at("model_seconds").get<double>();
-    o.rules = j.at("rules").get<std::vector<std::string>>();
-    const std::string match = j.value("baseline", "");
-    bool known = false;
-    for (BaselineMatch m : kMatches)
-      if (match == baselineMatchName(m)) o.baseline = m, known = true;
-    if (!known) throw std::runtime_error("'baseline' is not a baseline result: " + match);
-    o.baseline_note = j.value("baseline_note", "");
-    o.device_name = j.value("device_name", "");
-    o.images = j.value("images", std::vector<std::string>{});
-    for (const std::string& im : o.images)  // each becomes a file name in the report's links
-      if (const std::string problem = fileNameProblem(im); !problem.empty())
-        throw std::runtime_error("'images': '" + visibleText(im, 80) + "' " + problem);
-    if (j.contains("cost")) o.cost = caseCostFromJson(j.at("cost"));
-    for (const nlohmann::json& f : j.at("findings"))
-      o.verdict.findings.push_back({statusField(f, "status"), f.at("rule").get<std::string>(),
-                                    f.at("message").get<std::string>(),
-                                    f.at("rays").get<std::vector<uint32_t>>(),
-                                    f.at("ray_count").get<uint32_t>()});
-    for (const nlohmann::json& u : j.at("undefined")) {
-      UndefinedRays r;
-      if (!parseUndefinedReason(u.at("reason").get<std::string>(), &r.reason))
-        throw std::runtime_error("'reason' is not an undefined-behaviour reason: " +
-                                 u.at("reason").dump());
-      r.ray_count = u.at("ray_count").get<uint32_t>();
-      r.rays = u.at("rays").get<std::vector<uint32_t>>();
-      r.what = u.at("what").get<std::string>();
-      o.verdict.undefined.push_back(r);
-    }
-    for (const nlohmann::json& r : j.value("failing_rays", nlohmann::json::array()))
-      o.failing_rays.push_back({r.at("ray").get<uint32_t>(), r.at("x").get<uint32_t>(),
-                                r.at("y").get<uint32_t>(), r.at("field").get<std::string>(),
-                                r.at("device").get<std::string>(),
-                                r.at("model").get<std::string>()});
+    o.name = j.at("name").get<std::string>();
   } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error("case " + o.name + ": " + e.what());
-  } catch (const std::runtime_error& e) {
-    throw std::runtime_error("case " + o.name + ": " + e.what());
+    return errorMessage(e.what());
+  }
+  if (const std::string problem = caseNameProblem(o.name); !problem.empty())
+    return errorMessage("cases: name '" + o.name.substr(0, 120) + "' is no case name: " + problem);
+  try {
+    if (const Result<void> read = outcomeFields(j, o); !read)
+      return errorMessage("case " + o.name + ": " + read.error().message);
+  } catch (const nlohmann::json::exception& e) {
+    return errorMessage("case " + o.name + ": " + e.what());
   }
   o.verdict.status = o.status;
   return o;
@@ -137,7 +152,11 @@ Result<SavedRun> readSavedRun(const std::string& dir) {
     run.info.teardown_errors = j.at("teardown_validation_errors").get<std::vector<std::string>>();
     run.info.planned_cases = j.at("planned_cases").get<size_t>();
     run.info.interrupted = j.at("interrupted").get<bool>();
-    for (const nlohmann::json& c : j.at("cases")) run.outcomes.push_back(outcomeFromJson(c));
+    for (const nlohmann::json& c : j.at("cases")) {
+      Result<CaseOutcome> outcome = outcomeFromJson(c);
+      if (!outcome) return withContext(path + ": ", outcome.error());
+      run.outcomes.push_back(std::move(*outcome));
+    }
   } catch (const std::exception& e) {
     return errorMessage(path + ": " + e.what());
   }

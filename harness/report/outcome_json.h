@@ -17,8 +17,9 @@ namespace rayspec {
 const char* baselineMatchName(BaselineMatch m);  // "" for None, "expected", "unexpected_pass", ...
 
 nlohmann::json outcomeJson(const CaseOutcome& outcome);
-// Throws std::runtime_error naming the field that is missing or wrong.
-CaseOutcome outcomeFromJson(const nlohmann::json& j);
+// The outcome, or the error naming the case and the field that is missing or
+// wrong.
+Result<CaseOutcome> outcomeFromJson(const nlohmann::json& j);
 
 // A run folder's summary.json read back: what ran, and every case's outcome
 // in the order they ran.

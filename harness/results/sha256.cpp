@@ -3,13 +3,12 @@
 #include <openssl/evp.h>
 
 #include <memory>
-#include <stdexcept>
 
 #include "base/hex_text.h"
 
 namespace rayspec {
 
-std::string sha256Hex(std::initializer_list<std::string_view> pieces) {
+Result<std::string> sha256Hex(std::initializer_list<std::string_view> pieces) {
   const std::unique_ptr<EVP_MD_CTX, decltype(&EVP_MD_CTX_free)> ctx(EVP_MD_CTX_new(),
                                                                     &EVP_MD_CTX_free);
   bool ok = ctx && EVP_DigestInit_ex(ctx.get(), EVP_sha256(), nullptr) == 1;
@@ -17,7 +16,7 @@ std::string sha256Hex(std::initializer_list<std::string_view> pieces) {
   unsigned char digest[EVP_MAX_MD_SIZE];
   unsigned int size = 0;
   ok = ok && EVP_DigestFinal_ex(ctx.get(), digest, &size) == 1;
-  if (!ok) throw std::runtime_error("libcrypto: SHA-256 failed");
+  if (!ok) return errorMessage("libcrypto: SHA-256 failed");
   return hexBytes(digest, size);
 }
 

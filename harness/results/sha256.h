@@ -7,9 +7,12 @@
 #include <string>
 #include <string_view>
 
+#include "base/result.h"
+
 namespace rayspec {
 
-// The digest of the pieces, one after the other.
-std::string sha256Hex(std::initializer_list<std::string_view> pieces);
+// The digest of the pieces, one after the other; the error when libcrypto
+// fails (it cannot allocate).
+Result<std::string> sha256Hex(std::initializer_list<std::string_view> pieces);
 
 }  // namespace rayspec

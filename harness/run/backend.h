@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "base/result.h"
 #include "case/case.h"
 #include "plan/plan.h"
 #include "results/results.h"
@@ -22,8 +23,11 @@ class Backend {
   virtual std::string name() const = 0;
   // For people: the device and driver, or the model's engine and tier.
   virtual std::string description() const = 0;
-  // Runs one case. Never throws: a failure is in the status of the Results.
-  virtual Results run(const Case& c, const Plan& plan) = 0;
+  // Runs one case: what the case did on the backend, a failure included, is
+  // in the status of the Results. An Error is the harness's own
+  // (ErrorKind::Harness: saved results that do not fit the case): the case
+  // becomes a CaseError.
+  virtual Result<Results> run(const Case& c, const Plan& plan) = 0;
   // Releases the engine; returns what went wrong while doing so (validation
   // errors the layer reports at device destruction).
   virtual std::vector<std::string> close() = 0;

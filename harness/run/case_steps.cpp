@@ -71,14 +71,15 @@ CaseOutcome oneSideOutcome(const Case& c, const Plan& plan, const Results& devic
 
 // The per-ray records as text (records.csv beside each side's bundle), for
 // people looking into the case.
-void writeRecordsCsvFiles(const std::string& dir, const Results& device, const Results& model,
-                          const Plan& plan) {
+Result<void> writeRecordsCsvFiles(const std::string& dir, const Results& device,
+                                  const Results& model, const Plan& plan) {
   for (const auto& [side, r] : {std::pair{"/device", &device}, std::pair{"/model", &model}})
     if (std::filesystem::is_directory(dir + side))
-      if (const std::string e =
+      if (const Result<void> written =
               writeRecordsCsv(*r, dir + side + "/records.csv", plan.record_fields);
-          !e.empty())
-        throw HarnessError(e);
+          !written)
+        return errorOf(ErrorKind::Harness, written.error().format());
+  return {};
 }
 
 bool ended(const Results& r) {
@@ -88,13 +89,13 @@ bool ended(const Results& r) {
 }  // namespace
 
 SideFor modelSideFor(const RunOptions& opt) {
-  return [opt](const Case&, const std::string&) {
+  return [opt](const Case&, const std::string&) -> Result<Side> {
     return modelSide(opt);
   };
 }
 
 SideFor deviceSideFor(const RunOptions& opt) {
-  return [opt](const Case& c, const std::string& dir) {
+  return [opt](const Case& c, const std::string& dir) -> Result<Side> {
     const std::string fault = plantedFaultIn(opt, c.name);
     auto model = std::make_shared<Results>();
     if (faultReadsModel(fault) && !opt.no_model) {
@@ -102,7 +103,9 @@ SideFor deviceSideFor(const RunOptions& opt) {
       // bundle the model side of this case just wrote.
       Result<Results> read =
           readResults(std::filesystem::path(dir).parent_path().string() + "/model");
-      if (!read) throw HarnessError("device side: the model's results: " + read.error().format());
+      if (!read)
+        return errorOf(ErrorKind::Harness,
+                       "device side: the model's results: " + read.error().format());
       *model = std::move(*read);
     }
     return deviceSide(opt, model, fault);
@@ -130,10 +133,13 @@ std::optional<CaseOutcome> caseFileError(const CaseFile& file, const ParseResult
 }
 
 CaseOutcome guardCase(const std::string& name, const std::vector<std::string>& rules,
-                      const std::function<CaseOutcome()>& step) {
+                      const std::function<Result<CaseOutcome>()>& step) {
   try {
-    return step();
-  } catch (const std::exception& e) {
+    Result<CaseOutcome> out = step();
+    if (out) return std::move(*out);
+    return caseErrorOutcome(name, rules, "harness",
+                            "the harness failed on this case: " + out.error().format());
+  } catch (const std::exception& e) {  // the standard library's, or the model tier's name
     return caseErrorOutcome(name, rules, "harness",
                             std::string("the harness failed on this case: ") + e.what());
   }
@@ -147,16 +153,16 @@ CaseRunner::CaseRunner(const RunOptions& options, Backend* device, Backend* mode
   }
 }
 
-SideResult CaseRunner::runSide(const std::function<Side()>& side, Backend* in_process,
-                               SideWorker* worker, const CaseSlot* slot, const Case& c,
-                               const Plan& plan, const std::string& dir) const {
+Result<SideResult> CaseRunner::runSide(const std::function<Side()>& side, Backend* in_process,
+                                       SideWorker* worker, const CaseSlot* slot, const Case& c,
+                                       const Plan& plan, const std::string& dir) const {
   if (in_process) return runInProcess(side(), *in_process, c, plan, dir);
   if (worker) return worker->run(slot->index, plan, dir);
   return runIsolated(side(), c, plan, ChildLimits{opt_.timeout, opt_.memory_limit}, dir);
 }
 
-CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string& subfolder,
-                            const CaseSlot* slot) const {
+Result<CaseOutcome> CaseRunner::run(const Case& c, bool* interrupted, const std::string& subfolder,
+                                    const CaseSlot* slot) const {
   *interrupted = false;
   StepCosts parent;
   StepTimer plan_time(parent, CostStep::Plan);
@@ -174,9 +180,9 @@ CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string&
   Results device, model;
   const bool want_device = !opt_.no_device, want_model = !opt_.no_model;
   if (want_model) {
-    SideResult m = runSide([&] { return modelSide(opt_); }, model_, slot ? slot->model : nullptr,
-                           slot, c, plan, dir + "/model");
-    if ((*interrupted = m.interrupted)) return {};
+    RAYSPEC_TRY(SideResult m, runSide([&] { return modelSide(opt_); }, model_,
+                                      slot ? slot->model : nullptr, slot, c, plan, dir + "/model"));
+    if ((*interrupted = m.interrupted)) return CaseOutcome{};
     model = std::move(m.results);
     if (ended(model)) {
       // The model crashed or hung: nothing to judge the device by.
@@ -196,9 +202,9 @@ CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string&
     const auto side = [&] {
       return deviceSide(opt_, std::make_shared<Results>(model), plantedFaultIn(opt_, c.name));
     };
-    SideResult d =
-        runSide(side, device_, slot ? slot->device : nullptr, slot, c, plan, dir + "/device");
-    if ((*interrupted = d.interrupted)) return {};
+    RAYSPEC_TRY(SideResult d, runSide(side, device_, slot ? slot->device : nullptr, slot, c, plan,
+                                      dir + "/device"));
+    if ((*interrupted = d.interrupted)) return CaseOutcome{};
     device = std::move(d.results);
     fault_note = d.note;
   }
@@ -214,7 +220,7 @@ CaseOutcome CaseRunner::run(const Case& c, bool* interrupted, const std::string&
   out.device_name = device.device;
   if (out.status != Status::Pass || opt_.records_csv) {
     StepTimer csv_time(parent, CostStep::RecordsCsv);
-    writeRecordsCsvFiles(dir, device, model, plan);
+    RAYSPEC_TRY_VOID(writeRecordsCsvFiles(dir, device, model, plan));
   }
   return costed(std::move(out), device, model);
 }

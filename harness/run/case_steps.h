@@ -5,7 +5,7 @@
 //   CaseRunner     the model side first (a planted fault chooses its rays by
 //                  the model's answer), then the device side, which gets the
 //                  model's results; then the judgement
-//   guardCase      an exception in any of it is that case's CaseError
+//   guardCase      an error in any of it is that case's CaseError
 //   journalCase    the case joins the run's journal as it ends
 //   writeRunReports  the reports in full (now and then, and at the end); a
 //                  case whose details break them is a CaseError and the
@@ -37,9 +37,10 @@ CaseOutcome caseErrorOutcome(const std::string& name, const std::vector<std::str
 // The CaseError of a case file that did not parse; none when it is usable.
 std::optional<CaseOutcome> caseFileError(const CaseFile& file, const ParseResult& parsed);
 
-// step(), or the CaseError naming the exception it threw.
+// step(), or the CaseError naming the error it returned (or the exception of
+// the standard library that escaped it).
 CaseOutcome guardCase(const std::string& name, const std::vector<std::string>& rules,
-                      const std::function<CaseOutcome()>& step);
+                      const std::function<Result<CaseOutcome>()>& step);
 
 // The sides of any case made where they run (a worker process, run/isolation.h).
 SideFor modelSideFor(const RunOptions& opt);
@@ -61,17 +62,17 @@ class CaseRunner {
   // --device-results and --no-isolation the runner reads the saved bundles
   // in this process itself.
   CaseRunner(const RunOptions& options, Backend* device, Backend* model);
-  // Runs the case on the sides asked for and judges it. Throws HarnessError.
+  // Runs the case on the sides asked for and judges it; or the Harness error.
   // *interrupted: a signal stopped a side; the outcome means nothing then.
   // The bundles go to <out>/<case name><subfolder> (a re-run: "/rerun").
   // With a slot, the sides run in its workers.
-  CaseOutcome run(const Case& c, bool* interrupted, const std::string& subfolder = "",
-                  const CaseSlot* slot = nullptr) const;
+  Result<CaseOutcome> run(const Case& c, bool* interrupted, const std::string& subfolder = "",
+                          const CaseSlot* slot = nullptr) const;
 
  private:
-  SideResult runSide(const std::function<Side()>& side, Backend* in_process, SideWorker* worker,
-                     const CaseSlot* slot, const Case& c, const Plan& plan,
-                     const std::string& dir) const;
+  Result<SideResult> runSide(const std::function<Side()>& side, Backend* in_process,
+                             SideWorker* worker, const CaseSlot* slot, const Case& c,
+                             const Plan& plan, const std::string& dir) const;
   const RunOptions& opt_;
   Backend* device_;
   Backend* model_;

@@ -45,9 +45,11 @@ struct ChildLimits {
 
 // Exit statuses the child itself chooses.
 inline constexpr int kChildOutOfMemory = 113;  // operator new failed under the memory limit
-inline constexpr int kChildException = 114;    // an exception escaped the body (message: what())
-inline constexpr int kChildOrphaned = 115;     // the parent was gone before the child started
-inline constexpr int kChildLeaked = 116;       // AddressSanitizer build: LeakSanitizer found a leak
+// The body failed: it returned this with the error as its message, or an
+// exception escaped it (message: what()).
+inline constexpr int kChildException = 114;
+inline constexpr int kChildOrphaned = 115;  // the parent was gone before the child started
+inline constexpr int kChildLeaked = 116;    // AddressSanitizer build: LeakSanitizer found a leak
 
 struct ChildEnd {
   enum class How { Exited, Signaled, TimedOut, Interrupted, NotStarted };

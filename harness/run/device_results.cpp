@@ -20,7 +20,7 @@ std::string savedBundleDir(const std::string& dir, const std::string& case_name)
   return (fs::path(dir) / case_name / "device").string();
 }
 
-Results SavedDevice::run(const Case& c, const Plan& plan) {
+Result<Results> SavedDevice::run(const Case& c, const Plan& plan) {
   const std::string bundle = savedBundleDir(dir_, c.name);
   if (!fs::exists(fs::path(bundle) / "results.json")) {
     Results r;
@@ -31,27 +31,29 @@ Results SavedDevice::run(const Case& c, const Plan& plan) {
     return r;
   }
   Result<Results> read = readResults(bundle);
-  if (!read) throw HarnessError("saved device results: " + read.error().format());
+  if (!read) return errorOf(ErrorKind::Harness, "saved device results: " + read.error().format());
   Results& r = *read;
   const std::string json = bundle + "/results.json";
   if (r.case_name != c.name)
-    throw HarnessError(json + ": the bundle is case '" + r.case_name + "', not '" + c.name + "'");
+    return errorOf(ErrorKind::Harness,
+                   json + ": the bundle is case '" + r.case_name + "', not '" + c.name + "'");
   if (r.case_hash == 0)
-    throw HarnessError(
-        json + ": records no case_hash (saved by an older rayspec): run the case there again");
+    return errorOf(ErrorKind::Harness, json +
+                                           ": records no case_hash (saved by an older "
+                                           "rayspec): run the case there again");
   if (r.case_hash != c.source_hash)
-    throw HarnessError(json + ": case_hash " + contentHashText(r.case_hash) +
-                       ", but the case here (" + c.file + ") hashes to " +
-                       contentHashText(c.source_hash) +
+    return errorOf(ErrorKind::Harness,
+                   json + ": case_hash " + contentHashText(r.case_hash) + ", but the case here (" +
+                       c.file + ") hashes to " + contentHashText(c.source_hash) +
                        ": the case changed since it ran there (or --permute or --move differs); "
                        "run it there again");
   // A saved bundle holds the counters the case keeps, no others: a counter
   // it does not declare is not the device's answer to this case.
   for (const auto& [name, value] : r.counters)
     if (std::find(plan.counters.begin(), plan.counters.end(), name) == plan.counters.end())
-      throw HarnessError(json + ": counter '" + visibleText(name, 80) +
-                         "' is not one the case keeps (outputs.counters)");
-  return r;
+      return errorOf(ErrorKind::Harness, json + ": counter '" + visibleText(name, 80) +
+                                             "' is not one the case keeps (outputs.counters)");
+  return std::move(r);
 }
 
 std::string deviceResultsError(const RunOptions& opt) {

@@ -23,14 +23,14 @@
 
 namespace rayspec {
 
-// A device that "runs" a case by reading its saved bundle. Throws
-// HarnessError (run/isolation.h) for a bundle that does not belong to the case.
+// A device that "runs" a case by reading its saved bundle. A bundle that does
+// not read, or does not belong to the case, is an ErrorKind::Harness error.
 class SavedDevice : public Backend {
  public:
   explicit SavedDevice(std::string dir) : dir_(std::move(dir)) {}
   std::string name() const override { return "vulkan"; }
   std::string description() const override { return "device results saved in " + dir_; }
-  Results run(const Case& c, const Plan& plan) override;
+  Result<Results> run(const Case& c, const Plan& plan) override;
   std::vector<std::string> close() override { return {}; }
 
  private:

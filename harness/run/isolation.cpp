@@ -16,11 +16,16 @@ namespace {
 // always, records.csv where the case does not pass, run/case_steps.h).
 constexpr BundleFiles kChildBundle{false, false};
 
+// A Harness error (the case becomes a CaseError).
+Error harnessError(std::string message) {
+  return errorOf(ErrorKind::Harness, std::move(message));
+}
+
 // The part both ways share: run, name the results, let `after` see them.
-Results runSide(const Side& side, Backend& backend, const Case& c, const Plan& plan,
-                std::string* note) {
+Result<Results> runSide(const Side& side, Backend& backend, const Case& c, const Plan& plan,
+                        std::string* note) {
   if (side.before) side.before();
-  Results r = backend.run(c, plan);
+  RAYSPEC_TRY(Results r, backend.run(c, plan));
   r.case_name = c.name;
   r.case_file = c.file;
   r.case_hash = c.source_hash;
@@ -51,16 +56,16 @@ SideResult ended(const std::string& backend_name, const Case& c, const Plan& pla
   out.results = failed(backend_name, c, status, detail, seconds);
   std::error_code ec;
   std::filesystem::remove_all(dir, ec);
-  writeResults(out.results, dir, plan.record_fields, kChildBundle);
+  (void)writeResults(out.results, dir, plan.record_fields, kChildBundle);  // best effort
   return out;
 }
 
 // The parent's half of a side run in another process: how the process ended
 // made into Results (Crash, Timeout), or the bundle it wrote read back and its
-// pictures written.
-SideResult collect(const std::string& label, const std::string& backend_name, const Case& c,
-                   const Plan& plan, const ChildEnd& end, const ChildLimits& limits,
-                   const std::string& dir) {
+// pictures written; or the Harness error of a child that could not report.
+Result<SideResult> collect(const std::string& label, const std::string& backend_name, const Case& c,
+                           const Plan& plan, const ChildEnd& end, const ChildLimits& limits,
+                           const std::string& dir) {
   const std::string who = "the " + label + " process";
   SideResult out;
   switch (end.how) {
@@ -76,9 +81,9 @@ SideResult collect(const std::string& label, const std::string& backend_name, co
       return ended(backend_name, c, plan, SideStatus::Crash, describeChildEnd(end, who, limits),
                    end.seconds, dir);
     case ChildEnd::How::NotStarted:
-      throw HarnessError(describeChildEnd(end, who, limits));
+      return harnessError(describeChildEnd(end, who, limits));
     case ChildEnd::How::Exited:
-      if (end.code == kChildException) throw HarnessError(label + " side: " + end.message);
+      if (end.code == kChildException) return harnessError(label + " side: " + end.message);
       if (end.code != 0)
         return ended(backend_name, c, plan, SideStatus::Crash, describeChildEnd(end, who, limits),
                      end.seconds, dir);
@@ -87,14 +92,13 @@ SideResult collect(const std::string& label, const std::string& backend_name, co
   StepTimer read_time(parent, CostStep::ReadBundle);
   Result<Results> read = readResults(dir);
   read_time.stop();
-  if (!read) throw HarnessError(label + " side: " + read.error().format());
+  if (!read) return harnessError(label + " side: " + read.error().format());
   out.results = std::move(*read);
   out.note = end.message;
   StepTimer image_time(parent, CostStep::ImageFiles);
-  for (const Image& im : out.results.images) {
-    const std::string err = writeImageFiles(im, dir);
-    if (!err.empty()) throw HarnessError(label + " side: " + err);
-  }
+  for (const Image& im : out.results.images)
+    if (const Result<void> written = writeImageFiles(im, dir); !written)
+      return harnessError(label + " side: " + written.error().format());
   image_time.stop();
   // What the child did not account for: fork, exit, the loader, waiting.
   parent.add(CostStep::Process, std::max(0.0, end.seconds - out.results.cost.total()));
@@ -102,27 +106,35 @@ SideResult collect(const std::string& label, const std::string& backend_name, co
   return out;
 }
 
+// The child's work under runIsolated: makes the backend, runs the case,
+// closes the backend and writes the bundle (not the pictures: the parent
+// writes them). `note`: what `after` said.
+Result<void> runAndWrite(const Side& side, const Case& c, const Plan& plan, const std::string& dir,
+                         std::string& note) {
+  StepCosts setup;
+  StepTimer setup_time(setup, CostStep::BackendSetup);
+  std::unique_ptr<Backend> backend = side.make();
+  setup_time.stop();
+  RAYSPEC_TRY(Results r, runSide(side, *backend, c, plan, &note));
+  r.cost += setup;
+  StepTimer teardown_time(r.cost, CostStep::BackendTeardown);
+  for (const std::string& m : backend->close())
+    r.validation_messages.push_back("at device teardown: " + m);
+  backend.reset();
+  teardown_time.stop();
+  return writeResults(r, dir, plan.record_fields, kChildBundle);
+}
+
 }  // namespace
 
-SideResult runIsolated(const Side& side, const Case& c, const Plan& plan, const ChildLimits& limits,
-                       const std::string& dir) {
+Result<SideResult> runIsolated(const Side& side, const Case& c, const Plan& plan,
+                               const ChildLimits& limits, const std::string& dir) {
   const ChildEnd end = runChild(
       [&](std::string& message) {
-        StepCosts setup;
-        StepTimer setup_time(setup, CostStep::BackendSetup);
-        std::unique_ptr<Backend> backend = side.make();
-        setup_time.stop();
-        Results r = runSide(side, *backend, c, plan, &message);
-        r.cost += setup;
-        StepTimer teardown_time(r.cost, CostStep::BackendTeardown);
-        for (const std::string& m : backend->close())
-          r.validation_messages.push_back("at device teardown: " + m);
-        backend.reset();
-        teardown_time.stop();
-        const std::string err = writeResults(r, dir, plan.record_fields,
-                                             kChildBundle);  // the parent writes the pictures
-        if (!err.empty()) throw HarnessError(err);
-        return 0;
+        // An error reaches the parent as the message of a kChildException end.
+        const Result<void> ran = runAndWrite(side, c, plan, dir, message);
+        if (!ran) message = ran.error().format();
+        return ran ? 0 : kChildException;
       },
       limits);
   return collect(side.label, side.backend_name, c, plan, end, limits, dir);
@@ -137,24 +149,23 @@ struct ServedSide {
   SideFor side_for;
   std::unique_ptr<Backend> backend;
 
-  std::string serve(const std::string& request) {
+  Result<std::string> serve(const std::string& request) {
     const size_t newline = request.find('\n');
     const size_t index = std::stoul(request.substr(0, newline));
     const std::string dir = request.substr(newline + 1);
     const Case& c = cases->at(index);
     const Plan plan = derivePlan(c);
-    const Side side = side_for(c, dir);
+    RAYSPEC_TRY(const Side side, side_for(c, dir));
     StepCosts setup;
     if (!backend) {
       StepTimer setup_time(setup, CostStep::BackendSetup);
       backend = side.make();
     }
     std::string note;
-    Results r = runSide(side, *backend, c, plan, &note);
+    RAYSPEC_TRY(Results r, runSide(side, *backend, c, plan, &note));
     r.cost += setup;
-    const std::string err =
-        writeResults(r, dir, plan.record_fields, kChildBundle);  // the parent writes the pictures
-    if (!err.empty()) throw HarnessError(err);
+    // The parent writes the pictures.
+    RAYSPEC_TRY_VOID(writeResults(r, dir, plan.record_fields, kChildBundle));
     return note;
   }
 
@@ -187,9 +198,9 @@ SideWorker::SideWorker(std::string label, std::string backend_name, const std::v
       limits_(limits),
       worker_(servedSide(cases, std::move(side_for)), limits) {}
 
-SideResult SideWorker::run(size_t index, const Plan& plan, const std::string& dir) {
+Result<SideResult> SideWorker::run(size_t index, const Plan& plan, const std::string& dir) {
   const Worker::Reply reply = worker_.call(std::to_string(index) + "\n" + dir);
-  if (reply.threw) throw HarnessError(label_ + " side: " + reply.text);
+  if (reply.failed) return harnessError(label_ + " side: " + reply.text);
   ChildEnd end = reply.end;
   end.seconds = reply.seconds;
   end.message = reply.text;
@@ -207,15 +218,15 @@ std::vector<std::string> SideWorker::close() {
   return out;
 }
 
-SideResult runInProcess(const Side& side, Backend& backend, const Case& c, const Plan& plan,
-                        const std::string& dir) {
+Result<SideResult> runInProcess(const Side& side, Backend& backend, const Case& c, const Plan& plan,
+                                const std::string& dir) {
   SideResult out;
-  out.results = runSide(side, backend, c, plan, &out.note);
+  RAYSPEC_TRY(out.results, runSide(side, backend, c, plan, &out.note));
   StepTimer write_time(out.results.cost, CostStep::WriteBundle);
-  const std::string err =
+  const Result<void> written =
       writeResults(out.results, dir, plan.record_fields, BundleFiles{true, false});
   write_time.stop();
-  if (!err.empty()) throw HarnessError(side.label + " side: " + err);
+  if (!written) return harnessError(side.label + " side: " + written.error().format());
   return out;
 }
 

@@ -12,7 +12,6 @@
 #pragma once
 
 #include <functional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -21,14 +20,6 @@
 #include "run/worker.h"
 
 namespace rayspec {
-
-// The case or the harness is at fault, not the backend: the results bundle
-// could not be written or read, an exception escaped. The run loop makes the
-// case a CaseError.
-class HarnessError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 struct Side {
   std::string label;         // "model" or "device": names the process in messages
@@ -48,14 +39,18 @@ struct SideResult {
       false;  // a signal stopped the run while this side ran: the results mean nothing
 };
 
-// In a child process under `limits`; the bundle goes to `dir`. Throws
-// HarnessError (see above).
-SideResult runIsolated(const Side& side, const Case& c, const Plan& plan, const ChildLimits& limits,
-                       const std::string& dir);
+// The functions below that run a side return an ErrorKind::Harness error
+// when the case or the harness is at fault, not the backend: the results
+// bundle could not be written or read, the child could not report. The run
+// loop makes the case a CaseError.
+
+// In a child process under `limits`; the bundle goes to `dir`.
+Result<SideResult> runIsolated(const Side& side, const Case& c, const Plan& plan,
+                               const ChildLimits& limits, const std::string& dir);
 
 // Makes a case's side where it runs (in the worker process); `dir` is the
 // side's bundle folder.
-using SideFor = std::function<Side(const Case& c, const std::string& dir)>;
+using SideFor = std::function<Result<Side>(const Case& c, const std::string& dir)>;
 
 // One side of many cases in a long-lived worker process (run/worker.h): the
 // backend is made at the worker's first case and lives across cases; a case
@@ -67,8 +62,8 @@ class SideWorker {
   // is a fork of this process and sees them as they were then).
   SideWorker(std::string label, std::string backend_name, const std::vector<Case>& cases,
              SideFor side_for, const ChildLimits& limits);
-  // cases[index] on this side; the bundle goes to `dir`. Throws HarnessError.
-  SideResult run(size_t index, const Plan& plan, const std::string& dir);
+  // cases[index] on this side; the bundle goes to `dir`.
+  Result<SideResult> run(size_t index, const Plan& plan, const std::string& dir);
   // Ends the worker: what its backend reported at teardown (validation errors
   // at device destruction).
   std::vector<std::string> close();
@@ -82,7 +77,7 @@ class SideWorker {
 };
 
 // In this process, with a backend that lives across cases (--no-isolation).
-SideResult runInProcess(const Side& side, Backend& backend, const Case& c, const Plan& plan,
-                        const std::string& dir);
+Result<SideResult> runInProcess(const Side& side, Backend& backend, const Case& c, const Plan& plan,
+                                const std::string& dir);
 
 }  // namespace rayspec

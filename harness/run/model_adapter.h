@@ -11,7 +11,9 @@ class ModelAdapter : public Backend {
   explicit ModelAdapter(const ModelOptions& options) : options_(options) {}
   std::string name() const override { return "model"; }
   std::string description() const override;
-  Results run(const Case& c, const Plan& plan) override { return runOnModel(c, plan, options_); }
+  Result<Results> run(const Case& c, const Plan& plan) override {
+    return runOnModel(c, plan, options_);
+  }
   std::vector<std::string> close() override { return {}; }
 
  private:

@@ -111,17 +111,22 @@ PreparedRun prepareCases(const std::vector<CaseFile>& files, const RunOptions& o
         std::optional<Case> changed;  // --permute, --move: the case as it runs
         if (opt.permute) changed = permuteCase(*parsed.value, *opt.permute).permuted;
         std::string not_moved;
-        if (opt.move)
-          changed = moveCase(changed ? *changed : *parsed.value, *opt.move, &not_moved,
-                             MoveScope::Verdict);
-        std::string not_through;
+        if (opt.move) {
+          Result<Case> moved =
+              moveCase(changed ? *changed : *parsed.value, *opt.move, MoveScope::Verdict);
+          if (moved)
+            changed = std::move(*moved);
+          else
+            changed.reset(), not_moved = moved.error().message;
+        }
         if (opt.through && !(opt.move && !changed)) {
-          changed = throughPath(changed ? *changed : *parsed.value, *opt.through, &not_through);
-          if (!changed) {
-            p.ready = notThroughOutcome(f.name, *opt.through, not_through);
+          Result<Case> through = throughPath(changed ? *changed : *parsed.value, *opt.through);
+          if (!through) {
+            p.ready = notThroughOutcome(f.name, *opt.through, through.error().message);
             run.planned.push_back(std::move(p));
             continue;
           }
+          changed = std::move(*through);
         }
         if (opt.move && !changed) {
           p.ready = notMovedOutcome(f.name, not_moved);

@@ -23,7 +23,7 @@ std::string VulkanAdapter::description() const {
   return backend_->device().name + " (" + backend_->device().driver_info + ")";
 }
 
-Results VulkanAdapter::run(const Case& c, const Plan& plan) {
+Result<Results> VulkanAdapter::run(const Case& c, const Plan& plan) {
   if (backend_) return backend_->run(c, plan);
   Results r;
   r.backend = name();

@@ -19,7 +19,7 @@ class VulkanAdapter : public Backend {
   explicit VulkanAdapter(const VulkanOptions& options);
   std::string name() const override { return "vulkan"; }
   std::string description() const override;
-  Results run(const Case& c, const Plan& plan) override;
+  Result<Results> run(const Case& c, const Plan& plan) override;
   std::vector<std::string> close() override;
 
   bool found() const { return backend_ != nullptr; }

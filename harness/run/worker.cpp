@@ -85,8 +85,14 @@ bool receiveRequest(int fd, std::string* request) {
     char kind = 'R';
     std::string reply;
     try {
-      reply = serve(request);
-    } catch (const std::exception& e) {
+      Result<std::string> served = serve(request);
+      if (served) {
+        reply = std::move(*served);
+      } else {
+        kind = 'E';
+        reply = served.error().format();
+      }
+    } catch (const std::exception& e) {  // the standard library's (std::bad_alloc ...)
       kind = 'E';
       reply = e.what();
     }
@@ -188,7 +194,7 @@ bool Worker::await(Reply& reply, double timeout_seconds) {
   for (;;) {
     if (wholeMessage(buffer, &kind, &reply.text)) {
       reply.replied = true;
-      reply.threw = kind == 'E';
+      reply.failed = kind == 'E';
       reply.end.how = ChildEnd::How::Exited;
       reply.end.code = 0;
       return true;

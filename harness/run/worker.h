@@ -9,8 +9,9 @@
 // When the child ends without replying (crash, out of memory, timeout: the
 // parent kills it, interrupt: likewise), call() says how, as runChild's
 // ChildEnd does, and the next call() starts a new child: whatever the request
-// did costs only that request. An exception escaping `serve` is a reply of
-// its own kind (Reply::threw) and the child goes on.
+// did costs only that request. An error `serve` returns (or an exception of
+// the standard library escaping it) is a reply of its own kind
+// (Reply::failed) and the child goes on.
 #pragma once
 
 #include "base/result.h"
@@ -27,14 +28,14 @@ namespace rayspec {
 
 class Worker {
  public:
-  // Runs in the child, once per request: the reply.
-  using Serve = std::function<std::string(const std::string& request)>;
+  // Runs in the child, once per request: the reply, or the error.
+  using Serve = std::function<Result<std::string>(const std::string& request)>;
   // Runs in the child when the parent closes it: the last reply.
   using Finish = std::function<std::string()>;
 
   struct Reply {
     bool replied = false;  // the child answered; otherwise `end` says how it ended
-    bool threw = false;    // the answer is the message of an exception `serve` threw
+    bool failed = false;   // the answer is the message of the error `serve` returned
     std::string text;
     ChildEnd end;        // replied: how = Exited, code 0
     double seconds = 0;  // from the request sent to the reply (or the end)

@@ -108,7 +108,7 @@ std::string validate(const std::vector<uint32_t>& words) {
 SpirvResult compileGlsl(const std::string& glsl, Stage stage) {
   SpirvResult result;
   const std::string key = spirvCacheKey(glsl, stage);
-  if (spirvCacheLookup(key, result.words)) {
+  if (!key.empty() && spirvCacheLookup(key, result.words)) {
     result.from_cache = true;
     return result;
   }
@@ -124,7 +124,7 @@ SpirvResult compileGlsl(const std::string& glsl, Stage stage) {
     result.words.clear();
     return result;
   }
-  spirvCacheStore(key, result.words);
+  if (!key.empty()) spirvCacheStore(key, result.words);
   return result;
 }
 

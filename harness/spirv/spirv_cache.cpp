@@ -34,7 +34,7 @@ std::string_view bytesOf(const std::vector<uint32_t>& words) {
 }
 
 // The sum an entry's .sum file holds: the module bound to its key.
-std::string entrySum(const std::string& key, const std::vector<uint32_t>& words) {
+Result<std::string> entrySum(const std::string& key, const std::vector<uint32_t>& words) {
   return sha256Hex({key, "\n", bytesOf(words)});
 }
 
@@ -53,7 +53,8 @@ bool readEntry(const fs::path& dir, const std::string& key, std::vector<uint32_t
   std::vector<uint32_t> data(module->size() / 4);
   std::memcpy(data.data(), module->data(), module->size());
   if (data[0] != kSpirvMagic) return false;
-  if (stored->substr(0, stored->find_first_of(" \n")) != entrySum(key, data)) return false;
+  const Result<std::string> expected = entrySum(key, data);
+  if (!expected || stored->substr(0, stored->find_first_of(" \n")) != *expected) return false;
   words = std::move(data);
   return true;
 }
@@ -71,15 +72,17 @@ void writeEntry(const fs::path& dir, const std::string& key, const std::vector<u
   clearOddEntry(spv);
   clearOddEntry(sum);
   // A cache: a failed write only makes the next run slower.
-  if (writeWholeFile(spv.string(), words.data(), words.size() * 4))
-    (void)writeWholeFile(sum.string(), entrySum(key, words) + "\n");
+  const Result<std::string> entry_sum = entrySum(key, words);
+  if (entry_sum && writeWholeFile(spv.string(), words.data(), words.size() * 4))
+    (void)writeWholeFile(sum.string(), *entry_sum + "\n");
 }
 
 }  // namespace
 
 std::string spirvCacheKey(const std::string& glsl, Stage stage) {
   const char s = static_cast<char>(stage);
-  return sha256Hex({kCacheVersion, std::string_view(&s, 1), glsl});
+  const Result<std::string> key = sha256Hex({kCacheVersion, std::string_view(&s, 1), glsl});
+  return key ? *key : std::string();
 }
 
 std::string spirvCacheFileName(const std::string& key) {

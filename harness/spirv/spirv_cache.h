@@ -18,7 +18,8 @@ namespace rayspec {
 constexpr uint64_t kMaxCachedModuleBytes = 16ull << 20;
 
 // SHA-256 of a version tag, the stage and the GLSL text (64 hex digits): a
-// module found under it was compiled from that text.
+// module found under it was compiled from that text. "" when libcrypto
+// cannot make one: the cache is not used then (compileGlsl).
 std::string spirvCacheKey(const std::string& glsl, Stage stage);
 std::string spirvCacheFileName(const std::string& key);  // "<key>.spv"
 std::string spirvCacheSumName(const std::string& key);   // "<key>.sum"

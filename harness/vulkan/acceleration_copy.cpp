@@ -11,41 +11,44 @@ namespace rayspec {
 namespace {
 
 // A size of each structure the device reports (compacted or serialized).
-std::vector<VkDeviceSize> queriedSizes(const VulkanContext& ctx,
-                                       const std::vector<BuiltStructure>& from, VkQueryType query,
-                                       Cleanup& cleanup) {
+Result<std::vector<VkDeviceSize>> queriedSizes(const VulkanContext& ctx,
+                                               const std::vector<BuiltStructure>& from,
+                                               VkQueryType query, Cleanup& cleanup) {
   const uint32_t count = static_cast<uint32_t>(from.size());
   VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
   info.queryType = query;
   info.queryCount = count;
   VkQueryPool pool = VK_NULL_HANDLE;
-  vkCheck(vkCreateQueryPool(ctx.device, &info, nullptr, &pool), "vkCreateQueryPool");
+  RAYSPEC_TRY_VOID(
+      vkCheck(vkCreateQueryPool(ctx.device, &info, nullptr, &pool), "vkCreateQueryPool"));
   VkDevice device = ctx.device;
   cleanup.add([device, pool] { vkDestroyQueryPool(device, pool, nullptr); });
   std::vector<VkAccelerationStructureKHR> handles;
   for (const BuiltStructure& s : from) handles.push_back(s.handle);
-  VkCommandBuffer cmd = beginCommands(ctx, cleanup);
+  RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx, cleanup));
   vkCmdResetQueryPool(cmd, pool, 0, count);
   ctx.fn.cmdWriteAccelerationStructuresProperties(cmd, count, handles.data(), query, pool, 0);
-  submitAndWait(ctx, cmd, kBuildTimeoutNs);
+  RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd, kBuildTimeoutNs));
   std::vector<VkDeviceSize> sizes(count);
-  vkCheck(vkGetQueryPoolResults(ctx.device, pool, 0, count, count * sizeof(VkDeviceSize),
-                                sizes.data(), sizeof(VkDeviceSize),
-                                VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-          "vkGetQueryPoolResults");
+  RAYSPEC_TRY_VOID(
+      vkCheck(vkGetQueryPoolResults(ctx.device, pool, 0, count, count * sizeof(VkDeviceSize),
+                                    sizes.data(), sizeof(VkDeviceSize),
+                                    VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+              "vkGetQueryPoolResults"));
   return sizes;
 }
 
 // The compacted size of each structure, as the device reports it.
-std::vector<VkDeviceSize> compactedSizes(const VulkanContext& ctx,
-                                         const std::vector<BuiltStructure>& from,
-                                         Cleanup& cleanup) {
-  const std::vector<VkDeviceSize> sizes =
-      queriedSizes(ctx, from, VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR, cleanup);
+Result<std::vector<VkDeviceSize>> compactedSizes(const VulkanContext& ctx,
+                                                 const std::vector<BuiltStructure>& from,
+                                                 Cleanup& cleanup) {
+  RAYSPEC_TRY(
+      const std::vector<VkDeviceSize> sizes,
+      queriedSizes(ctx, from, VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR, cleanup));
   for (size_t i = 0; i < sizes.size(); ++i)
     if (sizes[i] == 0 || sizes[i] > from[i].size)
-      throw VulkanError("compacted size " + std::to_string(sizes[i]) + " of a structure of " +
-                        std::to_string(from[i].size) + " bytes: VK_ERROR_UNKNOWN");
+      return deviceError("compacted size " + std::to_string(sizes[i]) + " of a structure of " +
+                         std::to_string(from[i].size) + " bytes: VK_ERROR_UNKNOWN");
   return sizes;
 }
 
@@ -62,7 +65,8 @@ struct Serialized {
   std::vector<VkDeviceSize> offsets, deserialized_sizes;
 };
 
-void checkSerializedHeader(const VulkanContext& ctx, const uint8_t* data, VkDeviceSize size) {
+Result<void> checkSerializedHeader(const VulkanContext& ctx, const uint8_t* data,
+                                   VkDeviceSize size) {
   VkAccelerationStructureVersionInfoKHR version{
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_VERSION_INFO_KHR};
   version.pVersionData = data;
@@ -70,41 +74,45 @@ void checkSerializedHeader(const VulkanContext& ctx, const uint8_t* data, VkDevi
       VK_ACCELERATION_STRUCTURE_COMPATIBILITY_INCOMPATIBLE_KHR;
   ctx.fn.getDeviceAccelerationStructureCompatibility(ctx.device, &version, &compatible);
   if (compatible != VK_ACCELERATION_STRUCTURE_COMPATIBILITY_COMPATIBLE_KHR)
-    throw VulkanError(
+    return deviceError(
         "vkGetDeviceAccelerationStructureCompatibilityKHR calls the device's own serialized "
         "structure incompatible: VK_ERROR_INCOMPATIBLE_DRIVER");
   uint64_t serialized = 0;
   std::memcpy(&serialized, data + 2 * VK_UUID_SIZE, sizeof(serialized));
   if (serialized != size)
-    throw VulkanError("serialized data says it holds " + std::to_string(serialized) +
-                      " bytes, the query said " + std::to_string(size) + ": VK_ERROR_UNKNOWN");
+    return deviceError("serialized data says it holds " + std::to_string(serialized) +
+                       " bytes, the query said " + std::to_string(size) + ": VK_ERROR_UNKNOWN");
+  return {};
 }
 
-Serialized serialize(const VulkanContext& ctx, const std::vector<BuiltStructure>& from,
-                     Cleanup& cleanup) {
-  const std::vector<VkDeviceSize> sizes =
-      queriedSizes(ctx, from, VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_SIZE_KHR, cleanup);
+Result<Serialized> serialize(const VulkanContext& ctx, const std::vector<BuiltStructure>& from,
+                             Cleanup& cleanup) {
+  RAYSPEC_TRY(const std::vector<VkDeviceSize> sizes,
+              queriedSizes(ctx, from, VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_SIZE_KHR,
+                           cleanup));
   for (size_t i = 0; i < sizes.size(); ++i)
     if (sizes[i] < kDeserializedSizeOffset + 16)  // the header: two UUIDs, three sizes
-      throw VulkanError("the serialization size query gave " + std::to_string(sizes[i]) +
-                        " bytes for structure " + std::to_string(i) +
-                        ", less than the header every serialized structure holds: "
-                        "VK_ERROR_UNKNOWN");
+      return deviceError("the serialization size query gave " + std::to_string(sizes[i]) +
+                         " bytes for structure " + std::to_string(i) +
+                         ", less than the header every serialized structure holds: "
+                         "VK_ERROR_UNKNOWN");
   Serialized s;
   VkDeviceSize total = 0;
   for (VkDeviceSize size : sizes) {
     s.offsets.push_back(total);
     total += (size + kSerializedAlignment - 1) / kSerializedAlignment * kSerializedAlignment;
   }
-  s.memory = createBuffer(ctx, total + kSerializedAlignment,
-                          VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
-                              VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
-                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                          MemoryUse::Host, cleanup);
+  RAYSPEC_TRY(
+      s.memory,
+      createBuffer(ctx, total + kSerializedAlignment,
+                   VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
+                       VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
+                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                   MemoryUse::Host, cleanup));
   const VkDeviceSize base =
       (s.memory.address + kSerializedAlignment - 1) / kSerializedAlignment * kSerializedAlignment -
       s.memory.address;
-  VkCommandBuffer cmd = beginCommands(ctx, cleanup);
+  RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx, cleanup));
   for (size_t i = 0; i < from.size(); ++i) {
     s.offsets[i] += base;
     VkCopyAccelerationStructureToMemoryInfoKHR copy{
@@ -121,10 +129,10 @@ Serialized serialize(const VulkanContext& ctx, const std::vector<BuiltStructure>
   to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
                        VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0, nullptr);
-  submitAndWait(ctx, cmd, kBuildTimeoutNs);
+  RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd, kBuildTimeoutNs));
   for (size_t i = 0; i < from.size(); ++i) {
     const auto* data = static_cast<const uint8_t*>(s.memory.mapped) + s.offsets[i];
-    checkSerializedHeader(ctx, data, sizes[i]);
+    RAYSPEC_TRY_VOID(checkSerializedHeader(ctx, data, sizes[i]));
     uint64_t deserialized = 0;
     std::memcpy(&deserialized, data + kDeserializedSizeOffset, sizeof(deserialized));
     s.deserialized_sizes.push_back(deserialized);
@@ -134,16 +142,18 @@ Serialized serialize(const VulkanContext& ctx, const std::vector<BuiltStructure>
 
 // R-AS-COPY by serialization: each structure to memory, then from memory
 // into a new structure of the size the data names.
-std::vector<BuiltStructure> serializeAndBack(const VulkanContext& ctx,
-                                             const std::vector<BuiltStructure>& from,
-                                             VkAccelerationStructureTypeKHR type,
-                                             Cleanup& cleanup) {
-  const Serialized s = serialize(ctx, from, cleanup);
+Result<std::vector<BuiltStructure>> serializeAndBack(const VulkanContext& ctx,
+                                                     const std::vector<BuiltStructure>& from,
+                                                     VkAccelerationStructureTypeKHR type,
+                                                     Cleanup& cleanup) {
+  RAYSPEC_TRY(const Serialized s, serialize(ctx, from, cleanup));
   std::vector<BuiltStructure> to;
-  VkCommandBuffer cmd = beginCommands(ctx, cleanup);
+  RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx, cleanup));
   for (size_t i = 0; i < from.size(); ++i) {
     const VkDeviceSize size = s.deserialized_sizes[i];
-    to.push_back({createStructure(ctx, type, size, cleanup), size});
+    RAYSPEC_TRY(const VkAccelerationStructureKHR copy_handle,
+                createStructure(ctx, type, size, cleanup));
+    to.push_back({copy_handle, size});
     VkCopyMemoryToAccelerationStructureInfoKHR copy{
         VK_STRUCTURE_TYPE_COPY_MEMORY_TO_ACCELERATION_STRUCTURE_INFO_KHR};
     copy.src.deviceAddress = s.memory.address + s.offsets[i];
@@ -153,25 +163,29 @@ std::vector<BuiltStructure> serializeAndBack(const VulkanContext& ctx,
   }
   recordStructureBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
                                   VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
-  submitAndWait(ctx, cmd, kBuildTimeoutNs);
+  RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd, kBuildTimeoutNs));
   return to;
 }
 
 }  // namespace
 
-std::vector<BuiltStructure> copyStructures(const VulkanContext& ctx,
-                                           const std::vector<BuiltStructure>& from,
-                                           VkAccelerationStructureTypeKHR type, AsCopy mode,
-                                           Cleanup& cleanup) {
+Result<std::vector<BuiltStructure>> copyStructures(const VulkanContext& ctx,
+                                                   const std::vector<BuiltStructure>& from,
+                                                   VkAccelerationStructureTypeKHR type, AsCopy mode,
+                                                   Cleanup& cleanup) {
   if (from.empty() || mode == AsCopy::None) return from;
   if (mode == AsCopy::Serialize) return serializeAndBack(ctx, from, type, cleanup);
   std::vector<VkDeviceSize> sizes;
   for (const BuiltStructure& s : from) sizes.push_back(s.size);
-  if (mode == AsCopy::Compact) sizes = compactedSizes(ctx, from, cleanup);
+  if (mode == AsCopy::Compact) {
+    RAYSPEC_TRY(sizes, compactedSizes(ctx, from, cleanup));
+  }
   std::vector<BuiltStructure> to;
-  VkCommandBuffer cmd = beginCommands(ctx, cleanup);
+  RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx, cleanup));
   for (size_t i = 0; i < from.size(); ++i) {
-    to.push_back({createStructure(ctx, type, sizes[i], cleanup), sizes[i]});
+    RAYSPEC_TRY(const VkAccelerationStructureKHR copy_handle,
+                createStructure(ctx, type, sizes[i], cleanup));
+    to.push_back({copy_handle, sizes[i]});
     VkCopyAccelerationStructureInfoKHR copy{VK_STRUCTURE_TYPE_COPY_ACCELERATION_STRUCTURE_INFO_KHR};
     copy.src = from[i].handle;
     copy.dst = to.back().handle;
@@ -181,7 +195,7 @@ std::vector<BuiltStructure> copyStructures(const VulkanContext& ctx,
   }
   recordStructureBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
                                   VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
-  submitAndWait(ctx, cmd, kBuildTimeoutNs);
+  RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd, kBuildTimeoutNs));
   return to;
 }
 

@@ -26,10 +26,10 @@ struct BuiltStructure {
 // The copies of `from` (all of `type`, built and complete), in order, made by
 // vkCmdCopyAccelerationStructureKHR in `mode` (Clone or Compact), or through
 // memory (Serialize), readable by
-// builds and ray tracing shaders once this returns. Throws VulkanError.
-std::vector<BuiltStructure> copyStructures(const VulkanContext& ctx,
-                                           const std::vector<BuiltStructure>& from,
-                                           VkAccelerationStructureTypeKHR type, AsCopy mode,
-                                           Cleanup& cleanup);
+// builds and ray tracing shaders once this returns. Or the Device error.
+Result<std::vector<BuiltStructure>> copyStructures(const VulkanContext& ctx,
+                                                   const std::vector<BuiltStructure>& from,
+                                                   VkAccelerationStructureTypeKHR type, AsCopy mode,
+                                                   Cleanup& cleanup);
 
 }  // namespace rayspec

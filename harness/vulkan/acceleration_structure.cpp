@@ -11,21 +11,22 @@
 #include "vulkan/vk_check.h"
 
 namespace rayspec {
-VkAccelerationStructureKHR createStructure(const VulkanContext& ctx,
-                                           VkAccelerationStructureTypeKHR type, VkDeviceSize size,
-                                           Cleanup& cleanup) {
-  Buffer storage = createBuffer(ctx, size,
-                                VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR |
-                                    VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-                                MemoryUse::Device, cleanup);
+Result<VkAccelerationStructureKHR> createStructure(const VulkanContext& ctx,
+                                                   VkAccelerationStructureTypeKHR type,
+                                                   VkDeviceSize size, Cleanup& cleanup) {
+  RAYSPEC_TRY(const Buffer storage,
+              createBuffer(ctx, size,
+                           VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR |
+                               VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                           MemoryUse::Device, cleanup));
   VkAccelerationStructureCreateInfoKHR info{
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR};
   info.buffer = storage.buffer;
   info.size = size;
   info.type = type;
   VkAccelerationStructureKHR as = VK_NULL_HANDLE;
-  vkCheck(ctx.fn.createAccelerationStructure(ctx.device, &info, nullptr, &as),
-          "vkCreateAccelerationStructureKHR");
+  RAYSPEC_TRY_VOID(vkCheck(ctx.fn.createAccelerationStructure(ctx.device, &info, nullptr, &as),
+                           "vkCreateAccelerationStructureKHR"));
   VkDevice device = ctx.device;
   auto destroy = ctx.fn.destroyAccelerationStructure;
   cleanup.add([device, destroy, as] { destroy(device, as, nullptr); });
@@ -246,9 +247,10 @@ std::vector<bool> reachedBlases(const Scene& scene) {
 
 // The BLAS builds: their structures created at the sizes the driver asks
 // for, their scratch placed. Only BLASes some instance reaches are built.
-Builds createBlases(const VulkanContext& ctx, std::vector<BlasBuild>& builds,
-                    const std::vector<bool>& used, VkBuildAccelerationStructureFlagsKHR flags,
-                    ScratchPlan& scratch, Cleanup& cleanup) {
+Result<Builds> createBlases(const VulkanContext& ctx, std::vector<BlasBuild>& builds,
+                            const std::vector<bool>& used,
+                            VkBuildAccelerationStructureFlagsKHR flags, ScratchPlan& scratch,
+                            Cleanup& cleanup) {
   Builds out;
   for (size_t i = 0; i < builds.size(); ++i) {
     if (!used[i]) continue;
@@ -261,8 +263,8 @@ Builds createBlases(const VulkanContext& ctx, std::vector<BlasBuild>& builds,
                                               VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
                                               &info, b.max_primitives.data(), &sizes);
     b.size = sizes.accelerationStructureSize;
-    b.handle =
-        createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, b.size, cleanup);
+    RAYSPEC_TRY(b.handle, createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR,
+                                          b.size, cleanup));
     info.dstAccelerationStructure = b.handle;
     b.address = structureAddress(ctx, b.handle);
     out.add(info, b.ranges.data(), scratch.add(sizes.buildScratchSize));
@@ -324,11 +326,12 @@ std::vector<std::vector<VkAccelerationStructureGeometryKHR>> instanceGeometry(
 }
 
 // The TLAS builds over `geometry` (one a level): structures created, scratch placed.
-Builds createTlases(const VulkanContext& ctx,
-                    const std::vector<std::vector<VkAccelerationStructureGeometryKHR>>& geometry,
-                    uint32_t instance_count, const VkAccelerationStructureBuildRangeInfoKHR* range,
-                    VkBuildAccelerationStructureFlagsKHR flags, ScratchPlan& scratch,
-                    std::vector<BuiltStructure>& structures, Cleanup& cleanup) {
+Result<Builds> createTlases(
+    const VulkanContext& ctx,
+    const std::vector<std::vector<VkAccelerationStructureGeometryKHR>>& geometry,
+    uint32_t instance_count, const VkAccelerationStructureBuildRangeInfoKHR* range,
+    VkBuildAccelerationStructureFlagsKHR flags, ScratchPlan& scratch,
+    std::vector<BuiltStructure>& structures, Cleanup& cleanup) {
   Builds out;
   for (const auto& g : geometry) {
     VkAccelerationStructureBuildGeometryInfoKHR info =
@@ -338,9 +341,9 @@ Builds createTlases(const VulkanContext& ctx,
     ctx.fn.getAccelerationStructureBuildSizes(ctx.device,
                                               VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
                                               &info, &instance_count, &sizes);
-    info.dstAccelerationStructure =
-        createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
-                        sizes.accelerationStructureSize, cleanup);
+    RAYSPEC_TRY(info.dstAccelerationStructure,
+                createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
+                                sizes.accelerationStructureSize, cleanup));
     structures.push_back({info.dstAccelerationStructure, sizes.accelerationStructureSize});
     out.add(info, range, scratch.add(sizes.buildScratchSize));
     out.update_scratch.push_back(sizes.updateScratchSize);
@@ -350,12 +353,12 @@ Builds createTlases(const VulkanContext& ctx,
 
 // One scratch buffer for every build; its address aligned up to the
 // scratch alignment. Returns that aligned address.
-VkDeviceAddress createScratch(const VulkanContext& ctx, const ScratchPlan& scratch,
-                              Cleanup& cleanup) {
-  Buffer buffer =
-      createBuffer(ctx, scratch.total + scratch.align,
-                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-                   MemoryUse::Device, cleanup);
+Result<VkDeviceAddress> createScratch(const VulkanContext& ctx, const ScratchPlan& scratch,
+                                      Cleanup& cleanup) {
+  RAYSPEC_TRY(const Buffer buffer, createBuffer(ctx, scratch.total + scratch.align,
+                                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                                    VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                                                MemoryUse::Device, cleanup));
   return alignUp(buffer.address, scratch.align);
 }
 
@@ -373,19 +376,21 @@ class SceneBuilder {
     scratch_.align = ctx.as_props.minAccelerationStructureScratchOffsetAlignment;
   }
 
-  std::vector<VkAccelerationStructureKHR> run() {
-    describeBlases();
-    createTopLevels();
-    placeScratch(createScratch(ctx_, scratch_, cleanup_));
-    VkCommandBuffer cmd = beginCommands(ctx_, cleanup_);
-    runLevel(cmd, blases_, blas_updates_, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-             [this] { copyBlases(); });
+  Result<std::vector<VkAccelerationStructureKHR>> run() {
+    RAYSPEC_TRY_VOID(describeBlases());
+    RAYSPEC_TRY_VOID(createTopLevels());
+    RAYSPEC_TRY(const VkDeviceAddress scratch, createScratch(ctx_, scratch_, cleanup_));
+    placeScratch(scratch);
+    RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx_, cleanup_));
+    RAYSPEC_TRY_VOID(runLevel(cmd, blases_, blas_updates_,
+                              VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                              [this] { return copyBlases(); }));
     for (size_t k = 0; k < states_.size(); ++k) writeInstances(*states_[k], instances_[k]);
-    runLevel(cmd, tlases_, tlas_updates_,
-             VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
-                 VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
-             [this] { copyTlases(); });
-    submitAndWait(ctx_, cmd, kBuildTimeoutNs);
+    RAYSPEC_TRY_VOID(runLevel(cmd, tlases_, tlas_updates_,
+                              VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
+                                  VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+                              [this] { return copyTlases(); }));
+    RAYSPEC_TRY_VOID(submitAndWait(ctx_, cmd, kBuildTimeoutNs));
     std::vector<VkAccelerationStructureKHR> out;
     for (const BuiltStructure& t : tlas_structures_) out.push_back(t.handle);
     return out;
@@ -405,24 +410,26 @@ class SceneBuilder {
   // One level: its builds, then each update in turn, the copy (submitted and
   // waited on, then the updates after it retargeted to the copies) where
   // scene.build.order puts it.
-  void runLevel(VkCommandBuffer& cmd, const Builds& builds, const std::vector<Builds>& updates,
-                VkPipelineStageFlags next, const std::function<void()>& copy) {
+  Result<void> runLevel(VkCommandBuffer& cmd, const Builds& builds,
+                        const std::vector<Builds>& updates, VkPipelineStageFlags next,
+                        const std::function<Result<void>()>& copy) {
     builds.record(ctx_, cmd, next);
     const size_t copy_at =
         scene_.build.copy == AsCopy::None ? updates.size() + 1 : scene_.updatesBeforeCopy();
     for (size_t k = 0; k <= updates.size(); ++k) {
       if (k == copy_at) {
-        submitAndWait(ctx_, cmd, kBuildTimeoutNs);
-        copy();
-        cmd = beginCommands(ctx_, cleanup_);
+        RAYSPEC_TRY_VOID(submitAndWait(ctx_, cmd, kBuildTimeoutNs));
+        RAYSPEC_TRY_VOID(copy());
+        RAYSPEC_TRY(cmd, beginCommands(ctx_, cleanup_));
       }
       if (k < updates.size()) updates[k].record(ctx_, cmd, next);
     }
+    return {};
   }
 
   // Every reached BLAS of the scene as first built, and the geometry each
   // update moves it to: one input buffer for all.
-  void describeBlases() {
+  Result<void> describeBlases() {
     const std::vector<bool> used = reachedBlases(first());
     InputPacker packer;
     builds_.resize(first().blases.size());
@@ -434,13 +441,14 @@ class SceneBuilder {
         describeBlas(states_[k + 1]->blases[i], packer, updates_[k][i]);
     }
     if (!packer.bytes().empty()) {
-      const Buffer inputs = createUploadBuffer(ctx_, packer.bytes().data(), packer.bytes().size(),
-                                               kInputUsage, cleanup_);
+      RAYSPEC_TRY(const Buffer inputs,
+                  createUploadBuffer(ctx_, packer.bytes().data(), packer.bytes().size(),
+                                     kInputUsage, cleanup_));
       for (BlasBuild& b : builds_) patchAddresses(b, inputs.address);
       for (auto& state : updates_)
         for (BlasBuild& b : state) patchAddresses(b, inputs.address);
     }
-    blases_ = createBlases(ctx_, builds_, used, flags_, scratch_, cleanup_);
+    RAYSPEC_TRY(blases_, createBlases(ctx_, builds_, used, flags_, scratch_, cleanup_));
     for (const auto& state : updates_) {
       std::vector<const std::vector<VkAccelerationStructureGeometryKHR>*> geometries;
       std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
@@ -450,22 +458,24 @@ class SceneBuilder {
       }
       blas_updates_.push_back(updatesOf(blases_, geometries, ranges, scratch_));
     }
+    return {};
   }
 
   // One TLAS per level, each over all instances (the other levels'
   // inactive); per update, their update to that state's instances.
-  void createTopLevels() {
+  Result<void> createTopLevels() {
     const uint32_t levels = first().tlasCount();
     instance_count_ = static_cast<uint32_t>(first().instances.size());
     tlas_range_.primitiveCount = instance_count_;
     const VkDeviceSize bytes = std::max<VkDeviceSize>(1, size_t(levels) * instance_count_) *
                                sizeof(VkAccelerationStructureInstanceKHR);
     for (size_t k = 0; k < states_.size(); ++k) {
-      instances_.push_back(createBuffer(ctx_, bytes, kInputUsage, MemoryUse::Host, cleanup_));
+      RAYSPEC_TRY(instances_.emplace_back(),
+                  createBuffer(ctx_, bytes, kInputUsage, MemoryUse::Host, cleanup_));
       geometry_.push_back(instanceGeometry(instances_.back().address, levels, instance_count_));
     }
-    tlases_ = createTlases(ctx_, geometry_[0], instance_count_, &tlas_range_, flags_, scratch_,
-                           tlas_structures_, cleanup_);
+    RAYSPEC_TRY(tlases_, createTlases(ctx_, geometry_[0], instance_count_, &tlas_range_, flags_,
+                                      scratch_, tlas_structures_, cleanup_));
     for (size_t k = 1; k < states_.size(); ++k) {
       std::vector<const std::vector<VkAccelerationStructureGeometryKHR>*> geometries;
       for (const auto& g : geometry_[k]) geometries.push_back(&g);
@@ -474,6 +484,7 @@ class SceneBuilder {
           std::vector<const VkAccelerationStructureBuildRangeInfoKHR*>(levels, &tlas_range_),
           scratch_));
     }
+    return {};
   }
 
   void writeInstances(const Scene& scene, Buffer& buffer) const {
@@ -494,11 +505,12 @@ class SceneBuilder {
 
   // R-AS-COPY: the BLASes replaced by their copies (the instance buffers,
   // written after, reference the copies).
-  void copyBlases() {
+  Result<void> copyBlases() {
     std::vector<BuiltStructure> from;
     for (size_t i : blases_.blas) from.push_back({builds_[i].handle, builds_[i].size});
-    const std::vector<BuiltStructure> to = copyStructures(
-        ctx_, from, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, scene_.build.copy, cleanup_);
+    RAYSPEC_TRY(const std::vector<BuiltStructure> to,
+                copyStructures(ctx_, from, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR,
+                               scene_.build.copy, cleanup_));
     std::vector<VkAccelerationStructureKHR> handles;
     for (size_t k = 0; k < to.size(); ++k) {
       BlasBuild& b = builds_[blases_.blas[k]];
@@ -508,16 +520,18 @@ class SceneBuilder {
       handles.push_back(b.handle);
     }
     retarget(blas_updates_, scene_.updatesBeforeCopy(), handles);
+    return {};
   }
 
   // The TLASes replaced by their copies.
-  void copyTlases() {
-    tlas_structures_ =
-        copyStructures(ctx_, tlas_structures_, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
-                       scene_.build.copy, cleanup_);
+  Result<void> copyTlases() {
+    RAYSPEC_TRY(tlas_structures_,
+                copyStructures(ctx_, tlas_structures_, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
+                               scene_.build.copy, cleanup_));
     std::vector<VkAccelerationStructureKHR> handles;
     for (const BuiltStructure& t : tlas_structures_) handles.push_back(t.handle);
     retarget(tlas_updates_, scene_.updatesBeforeCopy(), handles);
+    return {};
   }
 
   const VulkanContext& ctx_;
@@ -539,9 +553,9 @@ class SceneBuilder {
 
 }  // namespace
 
-std::vector<VkAccelerationStructureKHR> buildScene(const VulkanContext& ctx, const Scene& scene,
-                                                   VkBuildAccelerationStructureFlagsKHR extra_flags,
-                                                   Cleanup& cleanup) {
+Result<std::vector<VkAccelerationStructureKHR>> buildScene(
+    const VulkanContext& ctx, const Scene& scene, VkBuildAccelerationStructureFlagsKHR extra_flags,
+    Cleanup& cleanup) {
   return SceneBuilder(ctx, scene, extra_flags, cleanup).run();
 }
 

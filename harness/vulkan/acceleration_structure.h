@@ -26,16 +26,16 @@ constexpr uint64_t kBuildTimeoutNs = 240ull * 1000 * 1000 * 1000;
 // before the TLASes are built over the copies, and the TLASes are copied in
 // turn: the traces see only copies. extra_flags join scene.build's flags on
 // every build (ALLOW_DATA_ACCESS where a stage fetches vertex positions).
-// Buffers and structures live until cleanup runs. Throws VulkanError.
-std::vector<VkAccelerationStructureKHR> buildScene(const VulkanContext& ctx, const Scene& scene,
-                                                   VkBuildAccelerationStructureFlagsKHR extra_flags,
-                                                   Cleanup& cleanup);
+// Buffers and structures live until cleanup runs. Or the Device error.
+Result<std::vector<VkAccelerationStructureKHR>> buildScene(
+    const VulkanContext& ctx, const Scene& scene, VkBuildAccelerationStructureFlagsKHR extra_flags,
+    Cleanup& cleanup);
 
 // The structure's storage buffer and the structure (size bytes), destroyed
 // by cleanup.
-VkAccelerationStructureKHR createStructure(const VulkanContext& ctx,
-                                           VkAccelerationStructureTypeKHR type, VkDeviceSize size,
-                                           Cleanup& cleanup);
+Result<VkAccelerationStructureKHR> createStructure(const VulkanContext& ctx,
+                                                   VkAccelerationStructureTypeKHR type,
+                                                   VkDeviceSize size, Cleanup& cleanup);
 
 // Acceleration structure writes -> reads by dst_stage.
 void recordStructureBarrier(VkCommandBuffer cmd, VkPipelineStageFlags dst_stage);

@@ -19,19 +19,20 @@ bool isFloatField(const std::string& field) {
 
 }  // namespace
 
-ImageExtent imageExtent(uint32_t launch_width, uint32_t launch_height, uint32_t max_dimension) {
+Result<ImageExtent> imageExtent(uint32_t launch_width, uint32_t launch_height,
+                                uint32_t max_dimension) {
   if (launch_width <= max_dimension && launch_height <= max_dimension)
-    return {launch_width, launch_height};
+    return ImageExtent{launch_width, launch_height};
   const uint64_t rays = uint64_t(launch_width) * launch_height;
   const uint64_t rows = (rays + max_dimension - 1) / max_dimension;
   if (rows > max_dimension)
-    throw NotSupportedError("an image of " + std::to_string(rays) + " texels does not fit " +
-                            std::to_string(max_dimension) + "x" + std::to_string(max_dimension) +
-                            " (maxImageDimension2D)");
-  return {max_dimension, static_cast<uint32_t>(rows)};
+    return notSupported("an image of " + std::to_string(rays) + " texels does not fit " +
+                        std::to_string(max_dimension) + "x" + std::to_string(max_dimension) +
+                        " (maxImageDimension2D)");
+  return ImageExtent{max_dimension, static_cast<uint32_t>(rows)};
 }
 
-std::set<uint32_t> caseBindings(const Plan& plan, const std::set<uint32_t>& declared) {
+Result<std::set<uint32_t>> caseBindings(const Plan& plan, const std::set<uint32_t>& declared) {
   std::set<uint32_t> b = {kBindingTlas, kBindingRays};
   if (plan.records) b.insert(kBindingRecords);
   if (!plan.counters.empty()) b.insert(kBindingCounters);
@@ -40,54 +41,61 @@ std::set<uint32_t> caseBindings(const Plan& plan, const std::set<uint32_t>& decl
     b.insert(kBindingFirstImage + static_cast<uint32_t>(i));
   for (uint32_t d : declared) {
     if (d >= kBindingFirstImage + plan.images.size())
-      throw VulkanError("shaders declare binding " + std::to_string(d) +
-                        " that no plan output backs: VK_ERROR_UNKNOWN");
+      return deviceError("shaders declare binding " + std::to_string(d) +
+                         " that no plan output backs: VK_ERROR_UNKNOWN");
     b.insert(d);
   }
   return b;
 }
 
-CaseBuffers createCaseBuffers(const VulkanContext& ctx, const Case& c, const Plan& plan,
-                              const std::set<uint32_t>& bindings, Cleanup& cleanup) {
+Result<CaseBuffers> createCaseBuffers(const VulkanContext& ctx, const Case& c, const Plan& plan,
+                                      const std::set<uint32_t>& bindings, Cleanup& cleanup) {
   CaseBuffers out;
   out.bindings = bindings;
   std::vector<uint32_t> packed = packRays(c.rays);
   if (packed.size() * 4 > ctx.info.max_storage_buffer_range)
-    throw NotSupportedError(std::to_string(c.rays.rays.size()) + " rays take " +
-                            std::to_string(packed.size() * 4) + " bytes > maxStorageBufferRange " +
-                            std::to_string(ctx.info.max_storage_buffer_range));
-  out.rays = createUploadBuffer(ctx, packed.data(), packed.size() * 4, kStorage, cleanup);
+    return notSupported(std::to_string(c.rays.rays.size()) + " rays take " +
+                        std::to_string(packed.size() * 4) + " bytes > maxStorageBufferRange " +
+                        std::to_string(ctx.info.max_storage_buffer_range));
+  RAYSPEC_TRY(out.rays,
+              createUploadBuffer(ctx, packed.data(), packed.size() * 4, kStorage, cleanup));
   const uint64_t rays = static_cast<uint64_t>(c.rays.width) * c.rays.height;
   if (bindings.count(kBindingRecords)) {
     uint64_t bytes = rays * recordWords() * 4;
     // Reached by device address (shaders/common.glsl): no maxStorageBufferRange limit.
-    out.records = createBuffer(ctx, bytes, kStorage | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-                               MemoryUse::Host, cleanup);
+    RAYSPEC_TRY(out.records,
+                createBuffer(ctx, bytes, kStorage | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                             MemoryUse::Host, cleanup));
     std::memset(out.records.mapped, 0, bytes);
     const uint64_t address = out.records.address;
-    out.records_ref = createUploadBuffer(ctx, &address, sizeof(address), kStorage, cleanup);
+    RAYSPEC_TRY(out.records_ref,
+                createUploadBuffer(ctx, &address, sizeof(address), kStorage, cleanup));
   }
   if (bindings.count(kBindingCounters)) {
     uint64_t bytes = (plan.counters.empty() ? 1 : plan.counters.size()) * 4;
-    out.counters = createBuffer(ctx, bytes, kStorage, MemoryUse::Host, cleanup);
+    RAYSPEC_TRY(out.counters, createBuffer(ctx, bytes, kStorage, MemoryUse::Host, cleanup));
     std::memset(out.counters.mapped, 0, bytes);
   }
   if (bindings.count(kBindingScene)) {
     std::vector<uint32_t> scene = packSceneData(c.scene);
-    out.scene = createUploadBuffer(ctx, scene.data(), scene.size() * 4, kStorage, cleanup);
+    RAYSPEC_TRY(out.scene,
+                createUploadBuffer(ctx, scene.data(), scene.size() * 4, kStorage, cleanup));
   }
-  if (!plan.images.empty())
-    out.image_extent = imageExtent(c.rays.width, c.rays.height, ctx.info.max_image_dimension_2d);
+  if (!plan.images.empty()) {
+    RAYSPEC_TRY(out.image_extent,
+                imageExtent(c.rays.width, c.rays.height, ctx.info.max_image_dimension_2d));
+  }
   const uint64_t texels = uint64_t(out.image_extent.width) * out.image_extent.height;
   for (const ImageOutput& img : plan.images) {
     bool is_float = isFloatField(img.field);
     out.image_float.push_back(is_float);
-    out.images.push_back(
+    RAYSPEC_TRY(
+        out.images.emplace_back(),
         createStorageImage(ctx, out.image_extent.width, out.image_extent.height,
                            is_float ? VK_FORMAT_R32G32B32A32_SFLOAT : VK_FORMAT_R32_UINT, cleanup));
-    out.image_readback.push_back(createBuffer(ctx, texels * (is_float ? 16 : 4),
-                                              VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Host,
-                                              cleanup));
+    RAYSPEC_TRY(out.image_readback.emplace_back(),
+                createBuffer(ctx, texels * (is_float ? 16 : 4), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                             MemoryUse::Host, cleanup));
   }
   return out;
 }

@@ -21,11 +21,12 @@ namespace rayspec {
 // device allows. The raygen stores ray i at (i % width, i / width)
 // (shaders/common.glsl, rs_image_texel), so the texels read back in order
 // are the launch's rays in order whatever the extent; launch ids are not
-// touched. Throws NotSupportedError when even folded the image does not fit.
+// touched. The NotSupported error when even folded the image does not fit.
 struct ImageExtent {
   uint32_t width = 0, height = 0;
 };
-ImageExtent imageExtent(uint32_t launch_width, uint32_t launch_height, uint32_t max_dimension);
+Result<ImageExtent> imageExtent(uint32_t launch_width, uint32_t launch_height,
+                                uint32_t max_dimension);
 
 struct CaseBuffers {
   std::set<uint32_t> bindings;  // the bindings in use
@@ -40,13 +41,14 @@ struct CaseBuffers {
 // The bindings the plan needs (TLAS and rays always; records when
 // plan.records; counters when the plan keeps some; scene data when
 // plan.scene_data; one image each) united with those the shaders declare.
-// Throws VulkanError for a declared binding nothing can back.
-std::set<uint32_t> caseBindings(const Plan& plan, const std::set<uint32_t>& declared);
+// A Device error for a declared binding nothing can back.
+Result<std::set<uint32_t>> caseBindings(const Plan& plan, const std::set<uint32_t>& declared);
 
 // Host buffers filled (rays, scene data) or zeroed (records, counters), and
-// the storage images. Only for the bindings given.
-CaseBuffers createCaseBuffers(const VulkanContext& ctx, const Case& c, const Plan& plan,
-                              const std::set<uint32_t>& bindings, Cleanup& cleanup);
+// the storage images. Only for the bindings given. The NotSupported error
+// when the rays do not fit a storage buffer, else the Device error.
+Result<CaseBuffers> createCaseBuffers(const VulkanContext& ctx, const Case& c, const Plan& plan,
+                                      const std::set<uint32_t>& bindings, Cleanup& cleanup);
 
 // The descriptor items of the bindings (the TLASes, by level, at kBindingTlas).
 std::vector<DescriptorItem> descriptorItems(const CaseBuffers& b,

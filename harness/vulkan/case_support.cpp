@@ -1,5 +1,5 @@
 // Whether the device can run a case: the features, extensions and limits the
-// case needs, each missing one a NotSupportedError that names it.
+// case needs, each missing one a NotSupported error that names it.
 #include <algorithm>
 
 #include "case/flag_names.h"
@@ -26,28 +26,30 @@ std::string sizeText(const DeviceLaunchSize& size) {
 }
 
 // Each dimension within maxComputeWorkGroupCount * maxComputeWorkGroupSize.
-void checkLaunchSize(const DeviceInfo& d, const std::array<uint32_t, 3>& launch) {
+Result<void> checkLaunchSize(const DeviceInfo& d, const std::array<uint32_t, 3>& launch) {
   const DeviceLaunchSize size = {launch[0], launch[1], launch[2]};
   for (int k = 0; k < 3; ++k)
     if (size[k] > d.max_launch_size[k])
-      throw NotSupportedError("launch " + sizeText(size) +
-                              " > maxComputeWorkGroupCount * maxComputeWorkGroupSize (" +
-                              sizeText(d.max_launch_size) + ")");
+      return notSupported("launch " + sizeText(size) +
+                          " > maxComputeWorkGroupCount * maxComputeWorkGroupSize (" +
+                          sizeText(d.max_launch_size) + ")");
+  return {};
 }
 
 // R-VERTEX-FORMAT: every vertex format the scene uses must be one the device
 // builds acceleration structures from.
-void checkVertexFormats(const VulkanContext& ctx, const Scene& scene) {
+Result<void> checkVertexFormats(const VulkanContext& ctx, const Scene& scene) {
   for (const Blas& b : scene.blases)
     for (const Geometry& g : b.geometries) {
       if (g.kind != Geometry::Kind::Triangles || g.vertex_format == VertexFormat::Float3) continue;
       VkFormatProperties props{};
       vkGetPhysicalDeviceFormatProperties(ctx.physical, vkVertexFormat(g.vertex_format), &props);
       if (!(props.bufferFeatures & VK_FORMAT_FEATURE_ACCELERATION_STRUCTURE_VERTEX_BUFFER_BIT_KHR))
-        throw NotSupportedError("triangles.vertex_format " +
-                                std::string(vertexFormatName(g.vertex_format)) +
-                                ": the device cannot build acceleration structures from it");
+        return notSupported("triangles.vertex_format " +
+                            std::string(vertexFormatName(g.vertex_format)) +
+                            ": the device cannot build acceleration structures from it");
     }
+  return {};
 }
 
 std::string versionText(uint32_t v) {
@@ -57,83 +59,85 @@ std::string versionText(uint32_t v) {
 
 // gl_HitTriangleVertexPositionsEXT: the device's feature, and a validation
 // layer (when on) that knows the extension.
-void checkPositionFetch(const VulkanContext& ctx) {
+Result<void> checkPositionFetch(const VulkanContext& ctx) {
   if (!ctx.info.position_fetch)
-    throw NotSupportedError(
+    return notSupported(
         "vertex_position<i>: gl_HitTriangleVertexPositionsEXT needs "
         "VK_KHR_ray_tracing_position_fetch (rayTracingPositionFetch)");
   if (!ctx.position_fetch)
-    throw NotSupportedError(
+    return notSupported(
         "vertex_position<i>: the validation layer (" + versionText(ctx.validation_layer_version) +
         ") predates VK_KHR_ray_tracing_position_fetch (1.3.249) and would report its SPIR-V as "
         "an error; a newer layer runs it (tools/second-driver.sh)");
+  return {};
 }
 
 }  // namespace
 
-void checkCaseSupport(const VulkanContext& ctx, const Case& c, const Plan& plan) {
+Result<void> checkCaseSupport(const VulkanContext& ctx, const Case& c, const Plan& plan) {
   const DeviceInfo& d = ctx.info;
   const std::array<uint32_t, 3> launch = c.rays.launchSize();
   const uint64_t launch_rays = uint64_t(launch[0]) * launch[1] * launch[2];
   if (c.rays.launchRays() != static_cast<size_t>(c.rays.width) * c.rays.height ||
       c.rays.launchRays() != launch_rays)
-    throw VulkanError("case has " + std::to_string(c.rays.launchRays()) + " rays for a " +
-                      std::to_string(c.rays.width) + "x" + std::to_string(c.rays.height) +
-                      " launch: VK_ERROR_UNKNOWN");
+    return deviceError("case has " + std::to_string(c.rays.launchRays()) + " rays for a " +
+                       std::to_string(c.rays.width) + "x" + std::to_string(c.rays.height) +
+                       " launch: VK_ERROR_UNKNOWN");
   const bool micromap_flags =
       std::any_of(c.scene.instances.begin(), c.scene.instances.end(),
                   [](const Instance& i) { return i.flags & kInstanceOpacityMicromapFlags; });
   if (micromap_flags && !(d.opacity_micromap && d.api_version_number >= VK_API_VERSION_1_3))
-    throw NotSupportedError(
+    return notSupported(
         "scene.instances[].flags: opacity micromap flags need VK_EXT_opacity_micromap");
   if (c.rays.command == TraceCommand::Indirect && !d.trace_rays_indirect)
-    throw NotSupportedError(
+    return notSupported(
         "rays.command indirect: the device lacks rayTracingPipelineTraceRaysIndirect");
   if (c.rays.command == TraceCommand::Indirect2 && !d.trace_rays_indirect2)
-    throw NotSupportedError(
+    return notSupported(
         "rays.command indirect2: the device lacks VK_KHR_ray_tracing_maintenance1's "
         "rayTracingPipelineTraceRaysIndirect2");
-  if (plan.position_fetch) checkPositionFetch(ctx);
+  if (plan.position_fetch) RAYSPEC_TRY_VOID(checkPositionFetch(ctx));
   if (c.pipeline.ray_query && !d.ray_query)
-    throw NotSupportedError(
+    return notSupported(
         "traces by ray query (--through ray-query): the device lacks "
         "VK_KHR_ray_query's rayQuery");
   if (c.pipeline.record_layout.declared() && c.pipeline.record_layout.scalar &&
       !d.scalar_block_layout)
-    throw NotSupportedError(
+    return notSupported(
         "pipeline.sbt.record_layout: a scalar shader record block needs scalarBlockLayout");
   if (plan.cull_mask_builtin && !d.ray_tracing_maintenance1)
-    throw NotSupportedError(
+    return notSupported(
         "cull_mask: gl_CullMaskEXT needs VK_KHR_ray_tracing_maintenance1 (rayTracingMaintenance1)");
   if (!c.pipeline.libraries.empty() && !d.pipeline_library)
-    throw NotSupportedError("pipeline.libraries: the device lacks VK_KHR_pipeline_library");
+    return notSupported("pipeline.libraries: the device lacks VK_KHR_pipeline_library");
   if (c.pipeline.max_recursion > d.max_ray_recursion_depth)
-    throw NotSupportedError("max_recursion " + std::to_string(c.pipeline.max_recursion) +
-                            " > device maxRayRecursionDepth " +
-                            std::to_string(d.max_ray_recursion_depth));
-  checkLaunchSize(d, launch);
-  checkVertexFormats(ctx, c.scene);
+    return notSupported("max_recursion " + std::to_string(c.pipeline.max_recursion) +
+                        " > device maxRayRecursionDepth " +
+                        std::to_string(d.max_ray_recursion_depth));
+  RAYSPEC_TRY_VOID(checkLaunchSize(d, launch));
+  RAYSPEC_TRY_VOID(checkVertexFormats(ctx, c.scene));
   if (launch_rays > d.max_ray_dispatch_invocation_count)
-    throw NotSupportedError("launch of " + std::to_string(launch_rays) +
-                            " rays > maxRayDispatchInvocationCount " +
-                            std::to_string(d.max_ray_dispatch_invocation_count));
+    return notSupported("launch of " + std::to_string(launch_rays) +
+                        " rays > maxRayDispatchInvocationCount " +
+                        std::to_string(d.max_ray_dispatch_invocation_count));
   if (!ctx.primitive_culling &&
       ((c.pipeline.flags & (kPipelineSkipTriangles | kPipelineSkipAabbs)) ||
        usesSkipRayFlags(c.rays)))
-    throw NotSupportedError("skip_triangles / skip_aabbs need rayTraversalPrimitiveCulling");
+    return notSupported("skip_triangles / skip_aabbs need rayTraversalPrimitiveCulling");
   // The shader binding table's shape (pipeline.sbt.record_data / padding):
   // a stride above maxShaderGroupStride, or any layout the device's limits
   // refuse, before anything is built.
   const SbtLimits limits = deviceSbtLimits(ctx);
   const Pipeline& p = c.pipeline;
   if (const Result<void> fits = checkSbtLayout(computeSbtLayout(limits, p), limits); !fits)
-    throw NotSupportedError(
+    return notSupported(
         fits.error().format() + " (a record is the " + std::to_string(limits.handle_size) +
         "-byte handle + pipeline.sbt.record_data " + std::to_string(p.sbt_record_data) +
         " + pipeline.sbt.padding: miss " + std::to_string(p.sbt_padding.miss) + ", hit " +
         std::to_string(p.sbt_padding.hit) + ", callable " + std::to_string(p.sbt_padding.callable) +
         " bytes, aligned up to shaderGroupHandleAlignment " +
         std::to_string(limits.handle_alignment) + ")");
+  return {};
 }
 
 }  // namespace rayspec

@@ -4,12 +4,13 @@
 
 namespace rayspec {
 
-VkCommandBuffer beginCommands(const VulkanContext& ctx, Cleanup& cleanup) {
+Result<VkCommandBuffer> beginCommands(const VulkanContext& ctx, Cleanup& cleanup) {
   VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   pool_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
   pool_info.queueFamilyIndex = ctx.queue_family;
   VkCommandPool pool = VK_NULL_HANDLE;
-  vkCheck(vkCreateCommandPool(ctx.device, &pool_info, nullptr, &pool), "vkCreateCommandPool");
+  RAYSPEC_TRY_VOID(
+      vkCheck(vkCreateCommandPool(ctx.device, &pool_info, nullptr, &pool), "vkCreateCommandPool"));
   VkDevice device = ctx.device;
   cleanup.add([device, pool] { vkDestroyCommandPool(device, pool, nullptr); });
 
@@ -18,18 +19,20 @@ VkCommandBuffer beginCommands(const VulkanContext& ctx, Cleanup& cleanup) {
   alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
   alloc.commandBufferCount = 1;
   VkCommandBuffer cmd = VK_NULL_HANDLE;
-  vkCheck(vkAllocateCommandBuffers(ctx.device, &alloc, &cmd), "vkAllocateCommandBuffers");
+  RAYSPEC_TRY_VOID(
+      vkCheck(vkAllocateCommandBuffers(ctx.device, &alloc, &cmd), "vkAllocateCommandBuffers"));
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  vkCheck(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
+  RAYSPEC_TRY_VOID(vkCheck(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer"));
   return cmd;
 }
 
-void submitAndWait(const VulkanContext& ctx, VkCommandBuffer cmd, uint64_t timeout_ns) {
-  vkCheck(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+Result<void> submitAndWait(const VulkanContext& ctx, VkCommandBuffer cmd, uint64_t timeout_ns) {
+  RAYSPEC_TRY_VOID(vkCheck(vkEndCommandBuffer(cmd), "vkEndCommandBuffer"));
   VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
   VkFence fence = VK_NULL_HANDLE;
-  vkCheck(vkCreateFence(ctx.device, &fence_info, nullptr, &fence), "vkCreateFence");
+  RAYSPEC_TRY_VOID(
+      vkCheck(vkCreateFence(ctx.device, &fence_info, nullptr, &fence), "vkCreateFence"));
   Cleanup local;
   VkDevice device = ctx.device;
   VkQueue queue = ctx.queue;
@@ -42,9 +45,11 @@ void submitAndWait(const VulkanContext& ctx, VkCommandBuffer cmd, uint64_t timeo
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &cmd;
-  vkCheck(vkQueueSubmit(ctx.queue, 1, &submit, fence), "vkQueueSubmit");
-  vkCall("vkWaitForFences",
-         [&] { return vkWaitForFences(ctx.device, 1, &fence, VK_TRUE, timeout_ns); });
+  RAYSPEC_TRY_VOID(vkCheck(vkQueueSubmit(ctx.queue, 1, &submit, fence), "vkQueueSubmit"));
+  RAYSPEC_TRY_VOID(vkCall("vkWaitForFences", [&] {
+    return vkWaitForFences(ctx.device, 1, &fence, VK_TRUE, timeout_ns);
+  }));
+  return {};
 }
 
 }  // namespace rayspec

@@ -46,19 +46,21 @@ struct VulkanContext {
 };
 
 // instance.cpp: creates ctx.instance (+ validation layer and messenger when
-// asked for and installed). Throws VulkanError.
-void createInstance(VulkanContext& ctx, bool want_validation);
+// asked for and installed), or the Device error; what was made before the
+// error is in ctx for destroyInstance.
+Result<void> createInstance(VulkanContext& ctx, bool want_validation);
 void destroyInstance(VulkanContext& ctx);
 // Every physical device of the instance, in the loader's order.
-std::vector<VkPhysicalDevice> physicalDevices(VkInstance instance);
+Result<std::vector<VkPhysicalDevice>> physicalDevices(VkInstance instance);
 
 // device_select.cpp
 DeviceInfo describeDevice(VkPhysicalDevice physical, uint32_t index);
 // Picks ctx.physical / ctx.info, or the error that says none fits.
 Result<void> selectDevice(VulkanContext& ctx, const std::string& filter);
 
-// device.cpp: creates ctx.device, ctx.queue and loads ctx.fn. Throws VulkanError.
-void createDevice(VulkanContext& ctx);
+// device.cpp: creates ctx.device, ctx.queue and loads ctx.fn, or the Device
+// error (a device made before it is in ctx for destroyDevice).
+Result<void> createDevice(VulkanContext& ctx);
 void destroyDevice(VulkanContext& ctx);
 
 }  // namespace rayspec

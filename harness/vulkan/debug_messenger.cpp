@@ -44,13 +44,14 @@ VkDebugUtilsMessengerCreateInfoEXT DebugCapture::createInfo() {
   return info;
 }
 
-VkDebugUtilsMessengerEXT createDebugMessenger(VkInstance instance, DebugCapture* capture) {
+Result<VkDebugUtilsMessengerEXT> createDebugMessenger(VkInstance instance, DebugCapture* capture) {
   auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
       vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
-  if (!create) throw VulkanError("vkGetInstanceProcAddr(vkCreateDebugUtilsMessengerEXT): missing");
+  if (!create) return deviceError("vkGetInstanceProcAddr(vkCreateDebugUtilsMessengerEXT): missing");
   VkDebugUtilsMessengerCreateInfoEXT info = capture->createInfo();
   VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
-  vkCheck(create(instance, &info, nullptr, &messenger), "vkCreateDebugUtilsMessengerEXT");
+  RAYSPEC_TRY_VOID(
+      vkCheck(create(instance, &info, nullptr, &messenger), "vkCreateDebugUtilsMessengerEXT"));
   return messenger;
 }
 

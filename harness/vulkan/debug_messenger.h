@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "base/result.h"
+
 namespace rayspec {
 
 class DebugCapture {
@@ -24,7 +26,8 @@ class DebugCapture {
   std::vector<std::string> errors_;
 };
 
-VkDebugUtilsMessengerEXT createDebugMessenger(VkInstance instance, DebugCapture* capture);
+// A messenger feeding `capture`, or the Device error.
+Result<VkDebugUtilsMessengerEXT> createDebugMessenger(VkInstance instance, DebugCapture* capture);
 void destroyDebugMessenger(VkInstance instance, VkDebugUtilsMessengerEXT messenger);
 
 }  // namespace rayspec

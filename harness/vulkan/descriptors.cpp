@@ -21,8 +21,9 @@ uint32_t descriptorCount(const DescriptorItem& it) {
 
 }  // namespace
 
-VkDescriptorSetLayout createSetLayout(const VulkanContext& ctx,
-                                      const std::vector<DescriptorItem>& items, Cleanup& cleanup) {
+Result<VkDescriptorSetLayout> createSetLayout(const VulkanContext& ctx,
+                                              const std::vector<DescriptorItem>& items,
+                                              Cleanup& cleanup) {
   std::vector<VkDescriptorSetLayoutBinding> bindings;
   for (const DescriptorItem& it : items) {
     VkDescriptorSetLayoutBinding b{};
@@ -36,15 +37,16 @@ VkDescriptorSetLayout createSetLayout(const VulkanContext& ctx,
   info.bindingCount = static_cast<uint32_t>(bindings.size());
   info.pBindings = bindings.data();
   VkDescriptorSetLayout layout = VK_NULL_HANDLE;
-  vkCheck(vkCreateDescriptorSetLayout(ctx.device, &info, nullptr, &layout),
-          "vkCreateDescriptorSetLayout");
+  RAYSPEC_TRY_VOID(vkCheck(vkCreateDescriptorSetLayout(ctx.device, &info, nullptr, &layout),
+                           "vkCreateDescriptorSetLayout"));
   VkDevice device = ctx.device;
   cleanup.add([device, layout] { vkDestroyDescriptorSetLayout(device, layout, nullptr); });
   return layout;
 }
 
-VkDescriptorSet createDescriptorSet(const VulkanContext& ctx, VkDescriptorSetLayout layout,
-                                    const std::vector<DescriptorItem>& items, Cleanup& cleanup) {
+Result<VkDescriptorSet> createDescriptorSet(const VulkanContext& ctx, VkDescriptorSetLayout layout,
+                                            const std::vector<DescriptorItem>& items,
+                                            Cleanup& cleanup) {
   std::map<VkDescriptorType, uint32_t> counts;
   for (const DescriptorItem& it : items) counts[it.type] += descriptorCount(it);
   std::vector<VkDescriptorPoolSize> sizes;
@@ -54,7 +56,8 @@ VkDescriptorSet createDescriptorSet(const VulkanContext& ctx, VkDescriptorSetLay
   pool_info.poolSizeCount = static_cast<uint32_t>(sizes.size());
   pool_info.pPoolSizes = sizes.data();
   VkDescriptorPool pool = VK_NULL_HANDLE;
-  vkCheck(vkCreateDescriptorPool(ctx.device, &pool_info, nullptr, &pool), "vkCreateDescriptorPool");
+  RAYSPEC_TRY_VOID(vkCheck(vkCreateDescriptorPool(ctx.device, &pool_info, nullptr, &pool),
+                           "vkCreateDescriptorPool"));
   VkDevice device = ctx.device;
   cleanup.add([device, pool] { vkDestroyDescriptorPool(device, pool, nullptr); });
 
@@ -63,7 +66,8 @@ VkDescriptorSet createDescriptorSet(const VulkanContext& ctx, VkDescriptorSetLay
   alloc.descriptorSetCount = 1;
   alloc.pSetLayouts = &layout;
   VkDescriptorSet set = VK_NULL_HANDLE;
-  vkCheck(vkAllocateDescriptorSets(ctx.device, &alloc, &set), "vkAllocateDescriptorSets");
+  RAYSPEC_TRY_VOID(
+      vkCheck(vkAllocateDescriptorSets(ctx.device, &alloc, &set), "vkAllocateDescriptorSets"));
 
   // Stable storage for the pointed-to infos.
   std::vector<VkDescriptorBufferInfo> buffers(items.size());

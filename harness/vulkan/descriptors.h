@@ -21,10 +21,12 @@ struct DescriptorItem {
 };
 
 // Every item visible to all ray tracing stages.
-VkDescriptorSetLayout createSetLayout(const VulkanContext& ctx,
-                                      const std::vector<DescriptorItem>& items, Cleanup& cleanup);
+Result<VkDescriptorSetLayout> createSetLayout(const VulkanContext& ctx,
+                                              const std::vector<DescriptorItem>& items,
+                                              Cleanup& cleanup);
 // A pool sized for items, one set from it, written.
-VkDescriptorSet createDescriptorSet(const VulkanContext& ctx, VkDescriptorSetLayout layout,
-                                    const std::vector<DescriptorItem>& items, Cleanup& cleanup);
+Result<VkDescriptorSet> createDescriptorSet(const VulkanContext& ctx, VkDescriptorSetLayout layout,
+                                            const std::vector<DescriptorItem>& items,
+                                            Cleanup& cleanup);
 
 }  // namespace rayspec

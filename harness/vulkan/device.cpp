@@ -73,7 +73,7 @@ std::vector<const char*> deviceExtensions(const VulkanContext& ctx) {
 
 }  // namespace
 
-void createDevice(VulkanContext& ctx) {
+Result<void> createDevice(VulkanContext& ctx) {
   uint32_t count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(ctx.physical, &count, nullptr);
   std::vector<VkQueueFamilyProperties> families(count);
@@ -85,7 +85,7 @@ void createDevice(VulkanContext& ctx) {
       found = true;
     }
   }
-  if (!found) throw VulkanError("no compute queue family: VK_ERROR_FEATURE_NOT_PRESENT");
+  if (!found) return deviceError("no compute queue family: VK_ERROR_FEATURE_NOT_PRESENT");
 
   // What the device supports.
   VkPhysicalDeviceRayTracingPipelineFeaturesKHR rt{
@@ -110,7 +110,7 @@ void createDevice(VulkanContext& ctx) {
   as_on.accelerationStructure = VK_TRUE;
   VkPhysicalDeviceVulkan12Features v12_on{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
   if (!v12.bufferDeviceAddress)
-    throw VulkanError("bufferDeviceAddress not supported: VK_ERROR_FEATURE_NOT_PRESENT");
+    return deviceError("bufferDeviceAddress not supported: VK_ERROR_FEATURE_NOT_PRESENT");
   v12_on.bufferDeviceAddress = VK_TRUE;
   v12_on.scalarBlockLayout = v12.scalarBlockLayout;
   ctx.info.scalar_block_layout = v12.scalarBlockLayout;
@@ -147,9 +147,11 @@ void createDevice(VulkanContext& ctx) {
   info.pQueueCreateInfos = &queue;
   info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
   info.ppEnabledExtensionNames = extensions.data();
-  vkCheck(vkCreateDevice(ctx.physical, &info, nullptr, &ctx.device), "vkCreateDevice");
+  RAYSPEC_TRY_VOID(
+      vkCheck(vkCreateDevice(ctx.physical, &info, nullptr, &ctx.device), "vkCreateDevice"));
   vkGetDeviceQueue(ctx.device, ctx.queue_family, 0, &ctx.queue);
-  ctx.fn = loadDeviceFunctions(ctx.device);
+  RAYSPEC_TRY(ctx.fn, loadDeviceFunctions(ctx.device));
+  return {};
 }
 
 void destroyDevice(VulkanContext& ctx) {

@@ -19,15 +19,16 @@ const std::vector<NamedFault>& faults() {
 
 }  // namespace
 
-DeviceErrorStatus classifyVulkanError(const VulkanError& e) {
+DeviceErrorStatus classifyVulkanError(const Error& e) {
   DeviceErrorStatus s;
   const std::string call = e.call.empty() ? std::string("a Vulkan call") : e.call;
-  const std::string result = vkResultName(e.result);
-  if (e.result == VK_ERROR_DEVICE_LOST) {
+  const std::string& result = e.result;
+  if (result == vkResultName(VK_ERROR_DEVICE_LOST)) {
     s.status = SideStatus::Crash;
     s.device_lost = true;
     s.detail = "device lost: " + call + " returned " + result + "; the next case gets a new device";
-  } else if (e.result == VK_ERROR_OUT_OF_DEVICE_MEMORY || e.result == VK_ERROR_OUT_OF_HOST_MEMORY) {
+  } else if (result == vkResultName(VK_ERROR_OUT_OF_DEVICE_MEMORY) ||
+             result == vkResultName(VK_ERROR_OUT_OF_HOST_MEMORY)) {
     s.status = SideStatus::NotSupported;
     s.detail =
         "out of memory: " + call + " returned " + result + "; the device cannot hold this case";
@@ -37,7 +38,7 @@ DeviceErrorStatus classifyVulkanError(const VulkanError& e) {
                " for a pipeline the validation layer accepted";
   } else {
     s.status = SideStatus::Crash;
-    s.detail = e.what();
+    s.detail = e.format();
   }
   return s;
 }

@@ -24,7 +24,8 @@ struct DeviceErrorStatus {
   bool device_lost = false;  // the VkDevice must be made again before the next case
 };
 
-DeviceErrorStatus classifyVulkanError(const VulkanError& e);
+// What a Device error (vulkan/vk_check.h deviceError) means for the case.
+DeviceErrorStatus classifyVulkanError(const Error& e);
 
 // The planted faults of this kind: name -> the call that fails and how.
 std::optional<InjectedVkError> deviceErrorFault(const std::string& name);

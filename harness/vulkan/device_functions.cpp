@@ -7,39 +7,45 @@
 namespace rayspec {
 namespace {
 
+// Loads one entry point; `missing` keeps the name of the first that is not there.
 template <typename Fn>
-void load(VkDevice device, const char* name, Fn* out) {
+void load(VkDevice device, const char* name, Fn* out, std::string& missing) {
   *out = reinterpret_cast<Fn>(vkGetDeviceProcAddr(device, name));
-  if (!*out) throw VulkanError(std::string("vkGetDeviceProcAddr(") + name + "): missing");
+  if (!*out && missing.empty()) missing = name;
 }
 
 }  // namespace
 
-DeviceFunctions loadDeviceFunctions(VkDevice device) {
+Result<DeviceFunctions> loadDeviceFunctions(VkDevice device) {
   DeviceFunctions f;
-  load(device, "vkCreateAccelerationStructureKHR", &f.createAccelerationStructure);
-  load(device, "vkDestroyAccelerationStructureKHR", &f.destroyAccelerationStructure);
-  load(device, "vkGetAccelerationStructureBuildSizesKHR", &f.getAccelerationStructureBuildSizes);
+  std::string missing;
+  load(device, "vkCreateAccelerationStructureKHR", &f.createAccelerationStructure, missing);
+  load(device, "vkDestroyAccelerationStructureKHR", &f.destroyAccelerationStructure, missing);
+  load(device, "vkGetAccelerationStructureBuildSizesKHR", &f.getAccelerationStructureBuildSizes,
+       missing);
   load(device, "vkGetAccelerationStructureDeviceAddressKHR",
-       &f.getAccelerationStructureDeviceAddress);
-  load(device, "vkCmdBuildAccelerationStructuresKHR", &f.cmdBuildAccelerationStructures);
-  load(device, "vkCmdCopyAccelerationStructureKHR", &f.cmdCopyAccelerationStructure);
-  load(device, "vkCmdCopyAccelerationStructureToMemoryKHR",
-       &f.cmdCopyAccelerationStructureToMemory);
-  load(device, "vkCmdCopyMemoryToAccelerationStructureKHR",
-       &f.cmdCopyMemoryToAccelerationStructure);
+       &f.getAccelerationStructureDeviceAddress, missing);
+  load(device, "vkCmdBuildAccelerationStructuresKHR", &f.cmdBuildAccelerationStructures, missing);
+  load(device, "vkCmdCopyAccelerationStructureKHR", &f.cmdCopyAccelerationStructure, missing);
+  load(device, "vkCmdCopyAccelerationStructureToMemoryKHR", &f.cmdCopyAccelerationStructureToMemory,
+       missing);
+  load(device, "vkCmdCopyMemoryToAccelerationStructureKHR", &f.cmdCopyMemoryToAccelerationStructure,
+       missing);
   load(device, "vkGetDeviceAccelerationStructureCompatibilityKHR",
-       &f.getDeviceAccelerationStructureCompatibility);
+       &f.getDeviceAccelerationStructureCompatibility, missing);
   load(device, "vkCmdWriteAccelerationStructuresPropertiesKHR",
-       &f.cmdWriteAccelerationStructuresProperties);
-  load(device, "vkCreateRayTracingPipelinesKHR", &f.createRayTracingPipelines);
-  load(device, "vkGetRayTracingShaderGroupHandlesKHR", &f.getRayTracingShaderGroupHandles);
-  load(device, "vkGetRayTracingShaderGroupStackSizeKHR", &f.getRayTracingShaderGroupStackSize);
-  load(device, "vkCmdSetRayTracingPipelineStackSizeKHR", &f.cmdSetRayTracingPipelineStackSize);
-  load(device, "vkCmdTraceRaysKHR", &f.cmdTraceRays);
-  load(device, "vkCmdTraceRaysIndirectKHR", &f.cmdTraceRaysIndirect);
+       &f.cmdWriteAccelerationStructuresProperties, missing);
+  load(device, "vkCreateRayTracingPipelinesKHR", &f.createRayTracingPipelines, missing);
+  load(device, "vkGetRayTracingShaderGroupHandlesKHR", &f.getRayTracingShaderGroupHandles, missing);
+  load(device, "vkGetRayTracingShaderGroupStackSizeKHR", &f.getRayTracingShaderGroupStackSize,
+       missing);
+  load(device, "vkCmdSetRayTracingPipelineStackSizeKHR", &f.cmdSetRayTracingPipelineStackSize,
+       missing);
+  load(device, "vkCmdTraceRaysKHR", &f.cmdTraceRays, missing);
+  load(device, "vkCmdTraceRaysIndirectKHR", &f.cmdTraceRaysIndirect, missing);
   f.cmdTraceRaysIndirect2 = reinterpret_cast<PFN_vkCmdTraceRaysIndirect2KHR>(
       vkGetDeviceProcAddr(device, "vkCmdTraceRaysIndirect2KHR"));
+  if (!missing.empty()) return deviceError("vkGetDeviceProcAddr(" + missing + "): missing");
   return f;
 }
 

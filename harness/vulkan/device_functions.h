@@ -4,6 +4,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include "base/result.h"
+
 namespace rayspec {
 
 struct DeviceFunctions {
@@ -29,7 +31,8 @@ struct DeviceFunctions {
   PFN_vkCmdTraceRaysIndirect2KHR cmdTraceRaysIndirect2 = nullptr;
 };
 
-// Throws VulkanError naming the first entry point the device does not give.
-DeviceFunctions loadDeviceFunctions(VkDevice device);
+// The entry points, or the Device error naming the first one the device
+// does not give.
+Result<DeviceFunctions> loadDeviceFunctions(VkDevice device);
 
 }  // namespace rayspec

@@ -198,7 +198,7 @@ DeviceInfo describeDevice(VkPhysicalDevice physical, uint32_t index) {
 }
 
 Result<void> selectDevice(VulkanContext& ctx, const std::string& filter) {
-  const std::vector<VkPhysicalDevice> physicals = physicalDevices(ctx.instance);
+  RAYSPEC_TRY(const std::vector<VkPhysicalDevice> physicals, physicalDevices(ctx.instance));
   const uint32_t count = static_cast<uint32_t>(physicals.size());
   std::string seen;
   for (uint32_t i = 0; i < count; ++i) {
@@ -227,19 +227,23 @@ Result<void> selectDevice(VulkanContext& ctx, const std::string& filter) {
   return errorMessage(why);
 }
 
-Result<std::vector<DeviceInfo>> listDevices() {
+namespace {
+
+// Every physical device of a new instance in ctx (which the caller destroys).
+Result<std::vector<DeviceInfo>> describeAll(VulkanContext& ctx) {
+  RAYSPEC_TRY_VOID(createInstance(ctx, false));
+  RAYSPEC_TRY(const std::vector<VkPhysicalDevice> physicals, physicalDevices(ctx.instance));
   std::vector<DeviceInfo> out;
-  std::optional<Error> error;
+  for (uint32_t i = 0; i < physicals.size(); ++i) out.push_back(describeDevice(physicals[i], i));
+  return out;
+}
+
+}  // namespace
+
+Result<std::vector<DeviceInfo>> listDevices() {
   VulkanContext ctx;
-  try {
-    createInstance(ctx, false);
-    const std::vector<VkPhysicalDevice> physicals = physicalDevices(ctx.instance);
-    for (uint32_t i = 0; i < physicals.size(); ++i) out.push_back(describeDevice(physicals[i], i));
-  } catch (const std::exception& e) {
-    error = errorMessage(e.what());
-  }
+  Result<std::vector<DeviceInfo>> out = describeAll(ctx);
   destroyInstance(ctx);
-  if (error) return *error;
   return out;
 }
 

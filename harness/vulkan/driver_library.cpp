@@ -21,24 +21,23 @@ std::string libraryOf(VkDevice device) {
   return info.dli_fname;
 }
 
+// The library of device `index` of a new instance in `plain` (which the
+// caller destroys); "" when there is no such device.
+Result<std::string> libraryOfIndex(VulkanContext& plain, uint32_t index) {
+  RAYSPEC_TRY_VOID(createInstance(plain, false));
+  RAYSPEC_TRY(const std::vector<VkPhysicalDevice> physicals, physicalDevices(plain.instance));
+  if (index >= physicals.size()) return std::string();
+  plain.physical = physicals[index];
+  RAYSPEC_TRY_VOID(createDevice(plain));
+  return libraryOf(plain.device);
+}
+
 std::string libraryWithoutLayers(uint32_t index) {
   VulkanContext plain;
-  std::string library;
-  try {
-    createInstance(plain, false);
-    const std::vector<VkPhysicalDevice> physicals = physicalDevices(plain.instance);
-    const uint32_t count = static_cast<uint32_t>(physicals.size());
-    if (index < count) {
-      plain.physical = physicals[index];
-      createDevice(plain);
-      library = libraryOf(plain.device);
-    }
-  } catch (const std::exception&) {
-    library.clear();  // unknown
-  }
+  const Result<std::string> library = libraryOfIndex(plain, index);
   destroyDevice(plain);
   destroyInstance(plain);
-  return library;
+  return library ? *library : std::string();  // unknown on an error
 }
 
 }  // namespace

@@ -35,7 +35,7 @@ bool hasInstanceExtension(const char* name, const char* layer) {
 
 }  // namespace
 
-void createInstance(VulkanContext& ctx, bool want_validation) {
+Result<void> createInstance(VulkanContext& ctx, bool want_validation) {
   const uint32_t layer_version = want_validation ? layerVersion(kValidationLayer) : 0;
   ctx.validation = layer_version != 0 &&
                    (hasInstanceExtension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME, nullptr) ||
@@ -62,9 +62,12 @@ void createInstance(VulkanContext& ctx, bool want_validation) {
   info.ppEnabledLayerNames = layers.data();
   info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
   info.ppEnabledExtensionNames = extensions.data();
-  vkCheck(vkCreateInstance(&info, nullptr, &ctx.instance), "vkCreateInstance");
-  if (ctx.validation) ctx.messenger = createDebugMessenger(ctx.instance, ctx.capture.get());
+  RAYSPEC_TRY_VOID(vkCheck(vkCreateInstance(&info, nullptr, &ctx.instance), "vkCreateInstance"));
+  if (ctx.validation) {
+    RAYSPEC_TRY(ctx.messenger, createDebugMessenger(ctx.instance, ctx.capture.get()));
+  }
   ctx.validation_layer_version = ctx.validation ? layer_version : 0;
+  return {};
 }
 
 void destroyInstance(VulkanContext& ctx) {
@@ -75,12 +78,13 @@ void destroyInstance(VulkanContext& ctx) {
   ctx.instance = VK_NULL_HANDLE;
 }
 
-std::vector<VkPhysicalDevice> physicalDevices(VkInstance instance) {
+Result<std::vector<VkPhysicalDevice>> physicalDevices(VkInstance instance) {
   uint32_t count = 0;
-  vkCheck(vkEnumeratePhysicalDevices(instance, &count, nullptr), "vkEnumeratePhysicalDevices");
+  RAYSPEC_TRY_VOID(
+      vkCheck(vkEnumeratePhysicalDevices(instance, &count, nullptr), "vkEnumeratePhysicalDevices"));
   std::vector<VkPhysicalDevice> physicals(count);
-  vkCheck(vkEnumeratePhysicalDevices(instance, &count, physicals.data()),
-          "vkEnumeratePhysicalDevices");
+  RAYSPEC_TRY_VOID(vkCheck(vkEnumeratePhysicalDevices(instance, &count, physicals.data()),
+                           "vkEnumeratePhysicalDevices"));
   physicals.resize(count);
   return physicals;
 }

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "base/result.h"
+
 namespace rayspec {
 
 struct VulkanContext;
@@ -32,9 +34,10 @@ struct LibraryGroupHandlesFeatures {
 // R-LIBRARY with the feature enabled: every group that lives in a library,
 // its handle read from that library against its handle in the linked
 // pipeline; one line for each that differs (empty: all identical, or the
-// pipeline links no library). *compared: how many groups were compared.
-std::vector<std::string> libraryHandleMismatches(const VulkanContext& ctx,
-                                                 const RayTracingPipeline& pipeline,
-                                                 uint32_t* compared);
+// pipeline links no library), or the Device error of a handle query.
+// *compared: how many groups were compared.
+Result<std::vector<std::string>> libraryHandleMismatches(const VulkanContext& ctx,
+                                                         const RayTracingPipeline& pipeline,
+                                                         uint32_t* compared);
 
 }  // namespace rayspec

@@ -8,8 +8,8 @@
 namespace rayspec {
 namespace {
 
-uint32_t findMemoryType(const VulkanContext& ctx, uint32_t type_bits,
-                        VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred) {
+Result<uint32_t> findMemoryType(const VulkanContext& ctx, uint32_t type_bits,
+                                VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred) {
   for (int pass = 0; pass < 2; ++pass) {
     VkMemoryPropertyFlags want = pass == 0 ? (required | preferred) : required;
     for (uint32_t i = 0; i < ctx.memory.memoryTypeCount; ++i) {
@@ -17,10 +17,10 @@ uint32_t findMemoryType(const VulkanContext& ctx, uint32_t type_bits,
       if ((ctx.memory.memoryTypes[i].propertyFlags & want) == want) return i;
     }
   }
-  throw VulkanError("no memory type fits: VK_ERROR_OUT_OF_DEVICE_MEMORY");
+  return deviceError("no memory type fits: VK_ERROR_OUT_OF_DEVICE_MEMORY");
 }
 
-uint32_t memoryTypeFor(const VulkanContext& ctx, uint32_t type_bits, MemoryUse use) {
+Result<uint32_t> memoryTypeFor(const VulkanContext& ctx, uint32_t type_bits, MemoryUse use) {
   return use == MemoryUse::Host
              ? findMemoryType(
                    ctx, type_bits,
@@ -28,8 +28,8 @@ uint32_t memoryTypeFor(const VulkanContext& ctx, uint32_t type_bits, MemoryUse u
              : findMemoryType(ctx, type_bits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
 }
 
-VkDeviceMemory allocate(const VulkanContext& ctx, VkDeviceSize size, uint32_t type,
-                        bool device_address) {
+Result<VkDeviceMemory> allocate(const VulkanContext& ctx, VkDeviceSize size, uint32_t type,
+                                bool device_address) {
   VkMemoryAllocateFlagsInfo flags{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_FLAGS_INFO};
   flags.flags = VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT;
   VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
@@ -37,7 +37,8 @@ VkDeviceMemory allocate(const VulkanContext& ctx, VkDeviceSize size, uint32_t ty
   info.allocationSize = size;
   info.memoryTypeIndex = type;
   VkDeviceMemory memory = VK_NULL_HANDLE;
-  vkCall("vkAllocateMemory", [&] { return vkAllocateMemory(ctx.device, &info, nullptr, &memory); });
+  RAYSPEC_TRY_VOID(vkCall("vkAllocateMemory",
+                          [&] { return vkAllocateMemory(ctx.device, &info, nullptr, &memory); }));
   return memory;
 }
 
@@ -53,19 +54,20 @@ constexpr VkDeviceSize kPlacementAlignment = 256;
 
 // A new block of `type` for at least `bytes`, its free added to the case's
 // Cleanup; mapped when the type is host-visible.
-MemoryBlock& newBlock(const VulkanContext& ctx, uint32_t type, VkDeviceSize bytes,
-                      Cleanup& cleanup) {
+Result<MemoryBlock*> newBlock(const VulkanContext& ctx, uint32_t type, VkDeviceSize bytes,
+                              Cleanup& cleanup) {
   MemoryBlock block;
   block.type = type;
   block.size = std::max(bytes, kBlockBytes);
-  block.memory = allocate(ctx, block.size, type, true);
+  RAYSPEC_TRY(block.memory, allocate(ctx, block.size, type, true));
   VkDevice device = ctx.device;
   VkDeviceMemory memory = block.memory;
   cleanup.add([device, memory] { vkFreeMemory(device, memory, nullptr); });
   if (ctx.memory.memoryTypes[type].propertyFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
-    vkCheck(vkMapMemory(device, block.memory, 0, VK_WHOLE_SIZE, 0, &block.mapped), "vkMapMemory");
+    RAYSPEC_TRY_VOID(vkCheck(vkMapMemory(device, block.memory, 0, VK_WHOLE_SIZE, 0, &block.mapped),
+                             "vkMapMemory"));
   cleanup.blocks().push_back(block);
-  return cleanup.blocks().back();
+  return &cleanup.blocks().back();
 }
 
 struct Placement {
@@ -76,9 +78,9 @@ struct Placement {
 
 // Where a buffer with these requirements goes: the first of the case's blocks
 // of its memory type with room, else a new block.
-Placement place(const VulkanContext& ctx, const VkMemoryRequirements& req, MemoryUse use,
-                Cleanup& cleanup) {
-  const uint32_t type = memoryTypeFor(ctx, req.memoryTypeBits, use);
+Result<Placement> place(const VulkanContext& ctx, const VkMemoryRequirements& req, MemoryUse use,
+                        Cleanup& cleanup) {
+  RAYSPEC_TRY(const uint32_t type, memoryTypeFor(ctx, req.memoryTypeBits, use));
   const VkDeviceSize alignment = std::max<VkDeviceSize>(req.alignment, kPlacementAlignment);
   MemoryBlock* chosen = nullptr;
   if (req.size <= kBlockBytes / 4)
@@ -87,17 +89,25 @@ Placement place(const VulkanContext& ctx, const VkMemoryRequirements& req, Memor
         chosen = &b;
         break;
       }
-  if (!chosen) chosen = &newBlock(ctx, type, req.size, cleanup);
+  if (!chosen) {
+    RAYSPEC_TRY(chosen, newBlock(ctx, type, req.size, cleanup));
+  }
   const VkDeviceSize offset = alignUp(chosen->used, alignment);
   chosen->used = offset + req.size;
   void* mapped = chosen->mapped ? static_cast<uint8_t*>(chosen->mapped) + offset : nullptr;
-  return {chosen->memory, offset, mapped};
+  return Placement{chosen->memory, offset, mapped};
+}
+
+// Memory of its own for an image with these requirements.
+Result<VkDeviceMemory> imageMemory(const VulkanContext& ctx, const VkMemoryRequirements& req) {
+  RAYSPEC_TRY(const uint32_t type, memoryTypeFor(ctx, req.memoryTypeBits, MemoryUse::Device));
+  return allocate(ctx, req.size, type, false);
 }
 
 }  // namespace
 
-Buffer createBuffer(const VulkanContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
-                    MemoryUse use, Cleanup& cleanup) {
+Result<Buffer> createBuffer(const VulkanContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
+                            MemoryUse use, Cleanup& cleanup) {
   Buffer b;
   b.size = size;
   VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
@@ -105,21 +115,22 @@ Buffer createBuffer(const VulkanContext& ctx, VkDeviceSize size, VkBufferUsageFl
   info.usage = usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   VkDevice device = ctx.device;
-  vkCheck(vkCreateBuffer(device, &info, nullptr, &b.buffer), "vkCreateBuffer");
+  RAYSPEC_TRY_VOID(vkCheck(vkCreateBuffer(device, &info, nullptr, &b.buffer), "vkCreateBuffer"));
   VkMemoryRequirements req{};
   vkGetBufferMemoryRequirements(device, b.buffer, &req);
-  Placement at{};
-  try {
-    at = place(ctx, req, use, cleanup);
-  } catch (...) {
+  // The buffer joins the Cleanup only after its block (which is freed after
+  // it): until then it is destroyed here when no block can be had.
+  const Result<Placement> at = place(ctx, req, use, cleanup);
+  if (!at) {
     vkDestroyBuffer(device, b.buffer, nullptr);
-    throw;
+    return at.error();
   }
   VkBuffer buffer = b.buffer;  // destroyed before the block it is placed in is freed
   cleanup.add([device, buffer] { vkDestroyBuffer(device, buffer, nullptr); });
-  b.memory = at.memory;
-  vkCheck(vkBindBufferMemory(device, b.buffer, at.memory, at.offset), "vkBindBufferMemory");
-  if (use == MemoryUse::Host) b.mapped = at.mapped;
+  b.memory = at->memory;
+  RAYSPEC_TRY_VOID(
+      vkCheck(vkBindBufferMemory(device, b.buffer, at->memory, at->offset), "vkBindBufferMemory"));
+  if (use == MemoryUse::Host) b.mapped = at->mapped;
   const bool device_address = usage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
   if (device_address) {
     VkBufferDeviceAddressInfo ai{VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO};
@@ -129,15 +140,15 @@ Buffer createBuffer(const VulkanContext& ctx, VkDeviceSize size, VkBufferUsageFl
   return b;
 }
 
-Buffer createUploadBuffer(const VulkanContext& ctx, const void* data, VkDeviceSize bytes,
-                          VkBufferUsageFlags usage, Cleanup& cleanup) {
-  Buffer b = createBuffer(ctx, bytes, usage, MemoryUse::Host, cleanup);
+Result<Buffer> createUploadBuffer(const VulkanContext& ctx, const void* data, VkDeviceSize bytes,
+                                  VkBufferUsageFlags usage, Cleanup& cleanup) {
+  RAYSPEC_TRY(Buffer b, createBuffer(ctx, bytes, usage, MemoryUse::Host, cleanup));
   if (bytes) std::memcpy(b.mapped, data, bytes);
   return b;
 }
 
-StorageImage createStorageImage(const VulkanContext& ctx, uint32_t width, uint32_t height,
-                                VkFormat format, Cleanup& cleanup) {
+Result<StorageImage> createStorageImage(const VulkanContext& ctx, uint32_t width, uint32_t height,
+                                        VkFormat format, Cleanup& cleanup) {
   StorageImage img;
   img.format = format;
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
@@ -153,30 +164,33 @@ StorageImage createStorageImage(const VulkanContext& ctx, uint32_t width, uint32
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   VkDevice device = ctx.device;
-  vkCheck(vkCreateImage(device, &info, nullptr, &img.image), "vkCreateImage");
+  RAYSPEC_TRY_VOID(vkCheck(vkCreateImage(device, &info, nullptr, &img.image), "vkCreateImage"));
   VkMemoryRequirements req{};
   vkGetImageMemoryRequirements(device, img.image, &req);
-  try {
-    img.memory =
-        allocate(ctx, req.size, memoryTypeFor(ctx, req.memoryTypeBits, MemoryUse::Device), false);
-  } catch (...) {
+  // The image joins the Cleanup with its memory: until then it is destroyed
+  // here when no memory can be had.
+  const Result<VkDeviceMemory> memory_of = imageMemory(ctx, req);
+  if (!memory_of) {
     vkDestroyImage(device, img.image, nullptr);
-    throw;
+    return memory_of.error();
   }
+  img.memory = *memory_of;
   VkImage image = img.image;
   VkDeviceMemory memory = img.memory;
   cleanup.add([device, image, memory] {
     vkDestroyImage(device, image, nullptr);
     vkFreeMemory(device, memory, nullptr);
   });
-  vkCheck(vkBindImageMemory(device, img.image, img.memory, 0), "vkBindImageMemory");
+  RAYSPEC_TRY_VOID(
+      vkCheck(vkBindImageMemory(device, img.image, img.memory, 0), "vkBindImageMemory"));
 
   VkImageViewCreateInfo view{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
   view.image = img.image;
   view.viewType = VK_IMAGE_VIEW_TYPE_2D;
   view.format = format;
   view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-  vkCheck(vkCreateImageView(device, &view, nullptr, &img.view), "vkCreateImageView");
+  RAYSPEC_TRY_VOID(
+      vkCheck(vkCreateImageView(device, &view, nullptr, &img.view), "vkCreateImageView"));
   VkImageView v = img.view;
   cleanup.add([device, v] { vkDestroyImageView(device, v, nullptr); });
   return img;

@@ -27,11 +27,13 @@ struct Buffer {
 };
 
 // A zero size gives a 16-byte buffer (Vulkan forbids empty buffers).
-Buffer createBuffer(const VulkanContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
-                    MemoryUse use, Cleanup& cleanup);
+// Each returns the Device error of the call that failed; what was made before
+// it is in the Cleanup.
+Result<Buffer> createBuffer(const VulkanContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
+                            MemoryUse use, Cleanup& cleanup);
 // Host buffer holding a copy of data[0..bytes).
-Buffer createUploadBuffer(const VulkanContext& ctx, const void* data, VkDeviceSize bytes,
-                          VkBufferUsageFlags usage, Cleanup& cleanup);
+Result<Buffer> createUploadBuffer(const VulkanContext& ctx, const void* data, VkDeviceSize bytes,
+                                  VkBufferUsageFlags usage, Cleanup& cleanup);
 
 struct StorageImage {
   VkImage image = VK_NULL_HANDLE;
@@ -41,7 +43,7 @@ struct StorageImage {
 };
 
 // 2D, optimal tiling, usage STORAGE | TRANSFER_SRC | TRANSFER_DST, layout UNDEFINED.
-StorageImage createStorageImage(const VulkanContext& ctx, uint32_t width, uint32_t height,
-                                VkFormat format, Cleanup& cleanup);
+Result<StorageImage> createStorageImage(const VulkanContext& ctx, uint32_t width, uint32_t height,
+                                        VkFormat format, Cleanup& cleanup);
 
 }  // namespace rayspec

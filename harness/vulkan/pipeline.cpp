@@ -10,15 +10,16 @@
 namespace rayspec {
 namespace {
 
-CompiledShader compileOne(const GeneratedShader& g, StepCosts* costs) {
+Result<CompiledShader> compileOne(const GeneratedShader& g, StepCosts* costs) {
   const auto start = std::chrono::steady_clock::now();
   SpirvResult r = compileGlsl(g.glsl, g.stage);
   if (costs)
     costs->add(r.from_cache ? CostStep::SpirvCacheHit : CostStep::SpirvCompile,
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   if (r.words.empty())
-    throw ShaderCompileError(g.name + ": " + (r.error.empty() ? "no SPIR-V" : r.error));
-  return {g.stage, g.name, std::move(r.words), g.specialization};
+    return errorOf(ErrorKind::ShaderCompile,
+                   g.name + ": " + (r.error.empty() ? "no SPIR-V" : r.error));
+  return CompiledShader{g.stage, g.name, std::move(r.words), g.specialization};
 }
 
 VkShaderStageFlagBits vkStage(Stage s) {
@@ -44,12 +45,14 @@ VkShaderStageFlagBits vkStage(Stage s) {
 class StageList {
  public:
   StageList(const VulkanContext& ctx, Cleanup& local) : ctx_(ctx), local_(local) {}
-  uint32_t add(const CompiledShader& s) {
+  // The stage's index, or the Device error.
+  Result<uint32_t> add(const CompiledShader& s) {
     VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     info.codeSize = s.spirv.size() * 4;
     info.pCode = s.spirv.data();
     VkShaderModule module = VK_NULL_HANDLE;
-    vkCheck(vkCreateShaderModule(ctx_.device, &info, nullptr, &module), "vkCreateShaderModule");
+    RAYSPEC_TRY_VOID(vkCheck(vkCreateShaderModule(ctx_.device, &info, nullptr, &module),
+                             "vkCreateShaderModule"));
     VkDevice device = ctx_.device;
     local_.add([device, module] { vkDestroyShaderModule(device, module, nullptr); });
     VkPipelineShaderStageCreateInfo stage{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
@@ -60,8 +63,8 @@ class StageList {
     stages_.push_back(stage);
     return static_cast<uint32_t>(stages_.size() - 1);
   }
-  uint32_t add(const std::optional<CompiledShader>& s) {
-    return s ? add(*s) : VK_SHADER_UNUSED_KHR;
+  Result<uint32_t> add(const std::optional<CompiledShader>& s) {
+    return s ? add(*s) : Result<uint32_t>(VK_SHADER_UNUSED_KHR);
   }
   const std::vector<VkPipelineShaderStageCreateInfo>& stages() const { return stages_; }
 
@@ -101,14 +104,14 @@ VkRayTracingShaderGroupCreateInfoKHR group(VkRayTracingShaderGroupTypeKHR type) 
   return g;
 }
 
-VkRayTracingShaderGroupCreateInfoKHR caseGroup(const CompiledPipeline& compiled, uint32_t id,
-                                               StageList& stages) {
+Result<VkRayTracingShaderGroupCreateInfoKHR> caseGroup(const CompiledPipeline& compiled,
+                                                       uint32_t id, StageList& stages) {
   const uint32_t raygens = 1 + static_cast<uint32_t>(compiled.other_raygens.size());
   const uint32_t miss = static_cast<uint32_t>(compiled.miss.size());
   const uint32_t hits = static_cast<uint32_t>(compiled.hit_groups.size());
-  auto general = [&](const CompiledShader& s) {
+  auto general = [&](const CompiledShader& s) -> Result<VkRayTracingShaderGroupCreateInfoKHR> {
     VkRayTracingShaderGroupCreateInfoKHR g = group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR);
-    g.generalShader = stages.add(s);
+    RAYSPEC_TRY(g.generalShader, stages.add(s));
     return g;
   };
   const uint32_t selected = compiled.raygen_group;
@@ -122,9 +125,9 @@ VkRayTracingShaderGroupCreateInfoKHR caseGroup(const CompiledPipeline& compiled,
     VkRayTracingShaderGroupCreateInfoKHR g =
         group(cg.intersection ? VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR
                               : VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR);
-    g.closestHitShader = stages.add(cg.closest_hit);
-    g.anyHitShader = stages.add(cg.any_hit);
-    g.intersectionShader = stages.add(cg.intersection);
+    RAYSPEC_TRY(g.closestHitShader, stages.add(cg.closest_hit));
+    RAYSPEC_TRY(g.anyHitShader, stages.add(cg.any_hit));
+    RAYSPEC_TRY(g.intersectionShader, stages.add(cg.intersection));
     return g;
   }
   return general(compiled.callables.at(id - 1 - miss - hits));
@@ -132,43 +135,55 @@ VkRayTracingShaderGroupCreateInfoKHR caseGroup(const CompiledPipeline& compiled,
 
 }  // namespace
 
-CompiledPipeline compilePipeline(const GeneratedPipeline& generated, StepCosts* costs) {
+Result<CompiledPipeline> compilePipeline(const GeneratedPipeline& generated, StepCosts* costs) {
   CompiledPipeline out;
-  out.raygen = compileOne(generated.raygen, costs);
+  RAYSPEC_TRY(out.raygen, compileOne(generated.raygen, costs));
   out.raygen_group = generated.raygen_group;
-  for (const GeneratedShader& s : generated.other_raygens)
-    out.other_raygens.push_back(compileOne(s, costs));
-  for (const GeneratedShader& s : generated.miss) out.miss.push_back(compileOne(s, costs));
-  for (const GeneratedGroup& g : generated.hit_groups) {
-    CompiledGroup cg;
-    if (g.closest_hit) cg.closest_hit = compileOne(*g.closest_hit, costs);
-    if (g.any_hit) cg.any_hit = compileOne(*g.any_hit, costs);
-    if (g.intersection) cg.intersection = compileOne(*g.intersection, costs);
-    out.hit_groups.push_back(std::move(cg));
+  for (const GeneratedShader& s : generated.other_raygens) {
+    RAYSPEC_TRY(out.other_raygens.emplace_back(), compileOne(s, costs));
   }
-  for (const GeneratedShader& s : generated.callables)
-    out.callables.push_back(compileOne(s, costs));
+  for (const GeneratedShader& s : generated.miss) {
+    RAYSPEC_TRY(out.miss.emplace_back(), compileOne(s, costs));
+  }
+  for (const GeneratedGroup& g : generated.hit_groups) {
+    CompiledGroup& cg = out.hit_groups.emplace_back();
+    if (g.closest_hit) {
+      RAYSPEC_TRY(cg.closest_hit, compileOne(*g.closest_hit, costs));
+    }
+    if (g.any_hit) {
+      RAYSPEC_TRY(cg.any_hit, compileOne(*g.any_hit, costs));
+    }
+    if (g.intersection) {
+      RAYSPEC_TRY(cg.intersection, compileOne(*g.intersection, costs));
+    }
+  }
+  for (const GeneratedShader& s : generated.callables) {
+    RAYSPEC_TRY(out.callables.emplace_back(), compileOne(s, costs));
+  }
   return out;
 }
 
-VkPipelineLayout createPipelineLayout(const VulkanContext& ctx, VkDescriptorSetLayout set_layout,
-                                      Cleanup& cleanup) {
+Result<VkPipelineLayout> createPipelineLayout(const VulkanContext& ctx,
+                                              VkDescriptorSetLayout set_layout, Cleanup& cleanup) {
   VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   info.setLayoutCount = 1;
   info.pSetLayouts = &set_layout;
   VkPipelineLayout layout = VK_NULL_HANDLE;
-  vkCheck(vkCreatePipelineLayout(ctx.device, &info, nullptr, &layout), "vkCreatePipelineLayout");
+  RAYSPEC_TRY_VOID(vkCheck(vkCreatePipelineLayout(ctx.device, &info, nullptr, &layout),
+                           "vkCreatePipelineLayout"));
   VkDevice device = ctx.device;
   cleanup.add([device, layout] { vkDestroyPipelineLayout(device, layout, nullptr); });
   return layout;
 }
 
-VkPipeline createPipelineObject(const VulkanContext& ctx, const CompiledPipeline& compiled,
-                                const PipelinePart& part, Cleanup& cleanup) {
+Result<VkPipeline> createPipelineObject(const VulkanContext& ctx, const CompiledPipeline& compiled,
+                                        const PipelinePart& part, Cleanup& cleanup) {
   Cleanup modules;
   StageList stages(ctx, modules);
   std::vector<VkRayTracingShaderGroupCreateInfoKHR> groups;
-  for (uint32_t id : part.groups) groups.push_back(caseGroup(compiled, id, stages));
+  for (uint32_t id : part.groups) {
+    RAYSPEC_TRY(groups.emplace_back(), caseGroup(compiled, id, stages));
+  }
 
   VkRayTracingPipelineCreateInfoKHR info{VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR};
   info.flags = part.flags;
@@ -198,22 +213,24 @@ VkPipeline createPipelineObject(const VulkanContext& ctx, const CompiledPipeline
     info.pDynamicState = &dynamic;
   }
   VkPipeline pipeline = VK_NULL_HANDLE;
-  vkCall("vkCreateRayTracingPipelinesKHR", [&] {
+  RAYSPEC_TRY_VOID(vkCall("vkCreateRayTracingPipelinesKHR", [&] {
     return ctx.fn.createRayTracingPipelines(ctx.device, VK_NULL_HANDLE, ctx.pipeline_cache, 1,
                                             &info, nullptr, &pipeline);
-  });
+  }));
   VkDevice device = ctx.device;
   cleanup.add([device, pipeline] { vkDestroyPipeline(device, pipeline, nullptr); });
   return pipeline;
 }
 
-std::vector<uint8_t> groupHandles(const VulkanContext& ctx, const RayTracingPipeline& pipeline) {
+Result<std::vector<uint8_t>> groupHandles(const VulkanContext& ctx,
+                                          const RayTracingPipeline& pipeline) {
   const size_t size = ctx.rt_props.shaderGroupHandleSize;
   const uint32_t count = static_cast<uint32_t>(pipeline.group_index.size());
   std::vector<uint8_t> linked(count * size);
-  vkCheck(ctx.fn.getRayTracingShaderGroupHandles(ctx.device, pipeline.pipeline, 0, count,
-                                                 linked.size(), linked.data()),
-          "vkGetRayTracingShaderGroupHandlesKHR");
+  RAYSPEC_TRY_VOID(
+      vkCheck(ctx.fn.getRayTracingShaderGroupHandles(ctx.device, pipeline.pipeline, 0, count,
+                                                     linked.size(), linked.data()),
+              "vkGetRayTracingShaderGroupHandlesKHR"));
   std::vector<uint8_t> handles(linked.size());
   for (uint32_t g = 0; g < count; ++g)
     std::copy_n(&linked[pipeline.group_index[g] * size], size, &handles[g * size]);

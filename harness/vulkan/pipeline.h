@@ -7,7 +7,6 @@
 
 #include <optional>
 #include <set>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -18,11 +17,6 @@
 #include "vulkan/context.h"
 
 namespace rayspec {
-
-// A generated stage glslang or SPIRV-Tools rejected; what() = "<name>: <message>".
-struct ShaderCompileError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 struct CompiledShader {
   Stage stage = Stage::Raygen;
@@ -44,15 +38,17 @@ struct CompiledPipeline {
   std::vector<CompiledShader> callables;
 };
 
-// compileGlsl on every stage; throws ShaderCompileError. The time of each
+// compileGlsl on every stage, or the ShaderCompile error of a generated stage
+// glslang or SPIRV-Tools rejected ("<name>: <message>"). The time of each
 // stage goes to costs (when given): spirv_cache_hit or spirv_compile.
-CompiledPipeline compilePipeline(const GeneratedPipeline& generated, StepCosts* costs = nullptr);
+Result<CompiledPipeline> compilePipeline(const GeneratedPipeline& generated,
+                                         StepCosts* costs = nullptr);
 
 // Binding numbers (descriptor set 0) the SPIR-V of any stage declares.
 std::set<uint32_t> declaredBindings(const CompiledPipeline& compiled);
 
-VkPipelineLayout createPipelineLayout(const VulkanContext& ctx, VkDescriptorSetLayout set_layout,
-                                      Cleanup& cleanup);
+Result<VkPipelineLayout> createPipelineLayout(const VulkanContext& ctx,
+                                              VkDescriptorSetLayout set_layout, Cleanup& cleanup);
 
 // The interface a pipeline linked from libraries declares
 // (maxPipelineRayPayloadSize, the same for every library and the linked
@@ -63,7 +59,7 @@ uint32_t interfacePayloadBytes(const Pipeline& p);
 
 // One vkCreateRayTracingPipelinesKHR call: the case groups `groups` (ids in
 // sbt_layout.h's group order) in that order, linking `libraries` when `linked`
-// (then with the library interface). Throws VulkanError.
+// (then with the library interface); or the Device error.
 struct PipelinePart {
   std::vector<uint32_t> groups;
   std::vector<VkPipeline> libraries;
@@ -74,15 +70,15 @@ struct PipelinePart {
   VkPipelineLayout layout = VK_NULL_HANDLE;
   bool dynamic_stack_size = false;  // VK_DYNAMIC_STATE_RAY_TRACING_PIPELINE_STACK_SIZE_KHR
 };
-VkPipeline createPipelineObject(const VulkanContext& ctx, const CompiledPipeline& compiled,
-                                const PipelinePart& part, Cleanup& cleanup);
+Result<VkPipeline> createPipelineObject(const VulkanContext& ctx, const CompiledPipeline& compiled,
+                                        const PipelinePart& part, Cleanup& cleanup);
 
 // The case's pipeline (pipeline_libraries.cpp): one pipeline, or linked from
 // the case's pipeline libraries (R-LIBRARY), each a library pipeline of its
 // own groups and libraries. group_index[g] is where case group g sits in the
 // linked pipeline: its own groups first, then each library's in the order
 // linked, recursively (the specification's order of a linked pipeline's
-// groups). Throws VulkanError.
+// groups). Or the Device error.
 // group_site[g] is the pipeline object that creates case group g (the linked
 // pipeline or one of its libraries) and its index among that object's own
 // groups: vkGetRayTracingShaderGroupStackSizeKHR counts only those.
@@ -95,13 +91,15 @@ struct RayTracingPipeline {
   std::vector<uint32_t> group_index;
   std::vector<GroupSite> group_site;
 };
-RayTracingPipeline createRayTracingPipeline(const VulkanContext& ctx,
-                                            const CompiledPipeline& compiled, const Pipeline& p,
-                                            VkPipelineLayout layout, Cleanup& cleanup);
+Result<RayTracingPipeline> createRayTracingPipeline(const VulkanContext& ctx,
+                                                    const CompiledPipeline& compiled,
+                                                    const Pipeline& p, VkPipelineLayout layout,
+                                                    Cleanup& cleanup);
 
 // The group handles in the case's group order, sbtGroupCount *
 // shaderGroupHandleSize bytes (read from the linked pipeline through
 // group_index).
-std::vector<uint8_t> groupHandles(const VulkanContext& ctx, const RayTracingPipeline& pipeline);
+Result<std::vector<uint8_t>> groupHandles(const VulkanContext& ctx,
+                                          const RayTracingPipeline& pipeline);
 
 }  // namespace rayspec

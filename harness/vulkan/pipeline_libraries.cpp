@@ -50,18 +50,19 @@ struct Linker {
 
   // Creates the libraries of `libs` (children first) into `part`; appends
   // their groups, in the linked pipeline's order, to `order`.
-  void link(const std::vector<PipelineLibrary>& libs, PipelinePart& into,
-            std::vector<uint32_t>& order) {
+  Result<void> link(const std::vector<PipelineLibrary>& libs, PipelinePart& into,
+                    std::vector<uint32_t>& order) {
     into.linked = !libs.empty();
     for (const PipelineLibrary& lib : libs) {
       PipelinePart own = part(ownGroups(p, lib), VK_PIPELINE_CREATE_LIBRARY_BIT_KHR);
       std::vector<uint32_t> lib_order = own.groups;
-      link(lib.libraries, own, lib_order);
+      RAYSPEC_TRY_VOID(link(lib.libraries, own, lib_order));
       own.linked = true;  // a library always declares the interface
-      into.libraries.push_back(createPipelineObject(ctx, compiled, own, cleanup));
+      RAYSPEC_TRY(into.libraries.emplace_back(), createPipelineObject(ctx, compiled, own, cleanup));
       place(own, into.libraries.back());
       order.insert(order.end(), lib_order.begin(), lib_order.end());
     }
+    return {};
   }
 };
 
@@ -74,9 +75,10 @@ uint32_t interfacePayloadBytes(const Pipeline& p) {
   return std::max(payload, p.callDataBytes(p.maxCallDataWords()));
 }
 
-RayTracingPipeline createRayTracingPipeline(const VulkanContext& ctx,
-                                            const CompiledPipeline& compiled, const Pipeline& p,
-                                            VkPipelineLayout layout, Cleanup& cleanup) {
+Result<RayTracingPipeline> createRayTracingPipeline(const VulkanContext& ctx,
+                                                    const CompiledPipeline& compiled,
+                                                    const Pipeline& p, VkPipelineLayout layout,
+                                                    Cleanup& cleanup) {
   const uint32_t count = sbtGroupCount(p);
   std::set<uint32_t> placed;
   collectPlaced(p, p.libraries, placed);
@@ -89,9 +91,9 @@ RayTracingPipeline createRayTracingPipeline(const VulkanContext& ctx,
   PipelinePart top = linker.part(own, 0);
   top.dynamic_stack_size = p.callable_depth.has_value();
   std::vector<uint32_t> order = own;
-  linker.link(p.libraries, top, order);
+  RAYSPEC_TRY_VOID(linker.link(p.libraries, top, order));
 
-  out.pipeline = createPipelineObject(ctx, compiled, top, cleanup);
+  RAYSPEC_TRY(out.pipeline, createPipelineObject(ctx, compiled, top, cleanup));
   linker.place(top, out.pipeline);
   out.group_index.assign(count, 0);
   for (uint32_t linked = 0; linked < order.size(); ++linked)

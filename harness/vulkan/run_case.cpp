@@ -36,65 +36,69 @@ struct CaseScope {
 
 }  // namespace
 
-void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results& r) {
+Result<void> runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results& r) {
   if (!c.expected_rejections.empty()) {  // compiled, never launched
     compileExpectedRejections(c, plan, r);
-    return;
+    return {};
   }
-  checkCaseSupport(ctx, c, plan);
+  RAYSPEC_TRY_VOID(checkCaseSupport(ctx, c, plan));
   StepTimer glsl(r.cost, CostStep::GlslGeneration);
   const GeneratedPipeline generated = generateGlsl(c, plan);
   glsl.stop();
-  CompiledPipeline compiled = compilePipeline(generated, &r.cost);
+  RAYSPEC_TRY(const CompiledPipeline compiled, compilePipeline(generated, &r.cost));
 
   CaseScope scope(ctx.device, r.cost);
   Cleanup& cleanup = scope.cleanup;
   StepTimer buffer_time(r.cost, CostStep::Buffers);
-  CaseBuffers buffers =
-      createCaseBuffers(ctx, c, plan, caseBindings(plan, declaredBindings(compiled)), cleanup);
+  RAYSPEC_TRY(const std::set<uint32_t> bindings, caseBindings(plan, declaredBindings(compiled)));
+  RAYSPEC_TRY(CaseBuffers buffers, createCaseBuffers(ctx, c, plan, bindings, cleanup));
   buffer_time.stop();
 
   // The scene's builds in a submission of their own, so that their cost is
   // told apart from the trace's (the build's closing barrier orders them
   // before the trace, across submissions on the one queue).
   StepTimer build_time(r.cost, CostStep::AccelerationBuild);
-  const std::vector<VkAccelerationStructureKHR> tlases =
-      buildScene(ctx, c.scene, plan.position_fetch ? kBuildAllowDataAccess : 0u, cleanup);
+  RAYSPEC_TRY(const std::vector<VkAccelerationStructureKHR> tlases,
+              buildScene(ctx, c.scene, plan.position_fetch ? kBuildAllowDataAccess : 0u, cleanup));
   build_time.stop();
 
   StepTimer layout_time(r.cost, CostStep::Buffers);
   std::vector<DescriptorItem> items = descriptorItems(buffers, tlases);
-  VkDescriptorSetLayout set_layout = createSetLayout(ctx, items, cleanup);
-  VkPipelineLayout pipeline_layout = createPipelineLayout(ctx, set_layout, cleanup);
+  RAYSPEC_TRY(const VkDescriptorSetLayout set_layout, createSetLayout(ctx, items, cleanup));
+  RAYSPEC_TRY(const VkPipelineLayout pipeline_layout,
+              createPipelineLayout(ctx, set_layout, cleanup));
   layout_time.stop();
   StepTimer pipeline_time(r.cost, CostStep::PipelineCreation);
-  const RayTracingPipeline pipeline =
-      createRayTracingPipeline(ctx, compiled, c.pipeline, pipeline_layout, cleanup);
-  if (ctx.library_group_handles)
-    r.device_findings = libraryHandleMismatches(ctx, pipeline, &r.library_handles_compared);
+  RAYSPEC_TRY(const RayTracingPipeline pipeline,
+              createRayTracingPipeline(ctx, compiled, c.pipeline, pipeline_layout, cleanup));
+  if (ctx.library_group_handles) {
+    RAYSPEC_TRY(r.device_findings,
+                libraryHandleMismatches(ctx, pipeline, &r.library_handles_compared));
+  }
   std::optional<VkDeviceSize> stack_size;
   if (c.pipeline.callable_depth)
     stack_size = pipelineStackSize(queryShaderStackSizes(ctx, compiled, c.pipeline, pipeline),
                                    c.pipeline.max_recursion, *c.pipeline.callable_depth);
   pipeline_time.stop();
   StepTimer sbt_time(r.cost, CostStep::Sbt);
-  SbtBuffer sbt = createSbtBuffer(ctx, c.pipeline, pipeline, cleanup);
+  RAYSPEC_TRY(const SbtBuffer sbt, createSbtBuffer(ctx, c.pipeline, pipeline, cleanup));
   sbt_time.stop();
   StepTimer set_time(r.cost, CostStep::Buffers);
-  VkDescriptorSet set = createDescriptorSet(ctx, set_layout, items, cleanup);
+  RAYSPEC_TRY(const VkDescriptorSet set, createDescriptorSet(ctx, set_layout, items, cleanup));
   set_time.stop();
 
   StepTimer trace_time(r.cost, CostStep::Trace);
-  VkCommandBuffer cmd = beginCommands(ctx, cleanup);
+  RAYSPEC_TRY(const VkCommandBuffer cmd, beginCommands(ctx, cleanup));
   recordImageClears(cmd, buffers.images);
-  recordTrace(ctx, cmd, {pipeline.pipeline, pipeline_layout, set, stack_size}, sbt.layout, sbt.base,
-              c.rays, cleanup);
+  RAYSPEC_TRY_VOID(recordTrace(ctx, cmd, {pipeline.pipeline, pipeline_layout, set, stack_size},
+                               sbt.layout, sbt.base, c.rays, cleanup));
   recordReadback(cmd, buffers.images, buffers.image_readback, buffers.image_extent.width,
                  buffers.image_extent.height);
-  submitAndWait(ctx, cmd, kTraceTimeoutNs);
+  RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd, kTraceTimeoutNs));
   trace_time.stop();
   StepTimer read_time(r.cost, CostStep::ReadBack);
   readResults(buffers, plan, c.rays.width, c.rays.height, r);
+  return {};
 }
 
 }  // namespace rayspec

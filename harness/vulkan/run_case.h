@@ -8,14 +8,14 @@
 
 namespace rayspec {
 
-// Throws NotSupportedError when the device's limits or features cannot run
+// The NotSupported error when the device's limits or features cannot run
 // the case (recursion depth, launch size, dispatch size, primitive culling,
 // the SBT's strides), before anything is built.
-void checkCaseSupport(const VulkanContext& ctx, const Case& c, const Plan& plan);
+Result<void> checkCaseSupport(const VulkanContext& ctx, const Case& c, const Plan& plan);
 
-// Fills r's outputs; throws ShaderCompileError, NotSupportedError or
-// VulkanError (VulkanEngine::run turns them into the status). Every object
-// it creates is destroyed before it returns or throws.
-void runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results& r);
+// Fills r's outputs, or returns a ShaderCompile, NotSupported or Device
+// error (VulkanEngine::run turns it into the status). Every object it
+// creates is destroyed before it returns, on every path (its Cleanup).
+Result<void> runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results& r);
 
 }  // namespace rayspec

@@ -19,9 +19,9 @@ struct SbtBuffer {
   VkDeviceAddress base = 0;  // device address of the table (base-aligned)
 };
 
-// Throws NotSupportedError for a layout the device's limits refuse (run_case
-// checks that before building anything), VulkanError for a bad record.
-SbtBuffer createSbtBuffer(const VulkanContext& ctx, const Pipeline& p,
-                          const RayTracingPipeline& pipeline, Cleanup& cleanup);
+// The NotSupported error for a layout the device's limits refuse (run_case
+// checks that before building anything), a Device error for a bad record.
+Result<SbtBuffer> createSbtBuffer(const VulkanContext& ctx, const Pipeline& p,
+                                  const RayTracingPipeline& pipeline, Cleanup& cleanup);
 
 }  // namespace rayspec

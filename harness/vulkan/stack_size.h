@@ -23,8 +23,8 @@ struct ShaderStackSizes {
 VkDeviceSize pipelineStackSize(const ShaderStackSizes& s, uint32_t max_recursion,
                                uint32_t callable_depth);
 
-// Every shader of every group of the linked pipeline, by kind. Throws
-// VulkanError.
+// Every shader of every group of the linked pipeline, by kind (the query
+// cannot fail: it answers a size).
 ShaderStackSizes queryShaderStackSizes(const VulkanContext& ctx, const CompiledPipeline& compiled,
                                        const Pipeline& p, const RayTracingPipeline& pipeline);
 

@@ -47,9 +47,9 @@ void recordImageClears(VkCommandBuffer cmd, const std::vector<StorageImage>& ima
                        static_cast<uint32_t>(to_shader.size()), to_shader.data());
 }
 
-void recordTrace(const VulkanContext& ctx, VkCommandBuffer cmd, const TraceBinding& bound,
-                 const SbtLayout& sbt, VkDeviceAddress sbt_base, const Rays& rays,
-                 Cleanup& cleanup) {
+Result<void> recordTrace(const VulkanContext& ctx, VkCommandBuffer cmd, const TraceBinding& bound,
+                         const SbtLayout& sbt, VkDeviceAddress sbt_base, const Rays& rays,
+                         Cleanup& cleanup) {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, bound.pipeline);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, bound.layout, 0, 1,
                           &bound.set, 0, nullptr);
@@ -66,12 +66,12 @@ void recordTrace(const VulkanContext& ctx, VkCommandBuffer cmd, const TraceBindi
   switch (rays.command) {
     case TraceCommand::Direct:
       ctx.fn.cmdTraceRays(cmd, &raygen, &miss, &hit, &callable, width, height, depth);
-      return;
+      return {};
     case TraceCommand::Indirect: {
       const VkTraceRaysIndirectCommandKHR size{width, height, depth};
-      const Buffer b = createUploadBuffer(ctx, &size, sizeof size, kUsage, cleanup);
+      RAYSPEC_TRY(const Buffer b, createUploadBuffer(ctx, &size, sizeof size, kUsage, cleanup));
       ctx.fn.cmdTraceRaysIndirect(cmd, &raygen, &miss, &hit, &callable, b.address);
-      return;
+      return {};
     }
     case TraceCommand::Indirect2: {
       const VkTraceRaysIndirectCommand2KHR all{raygen.deviceAddress,
@@ -88,13 +88,14 @@ void recordTrace(const VulkanContext& ctx, VkCommandBuffer cmd, const TraceBindi
                                                width,
                                                height,
                                                depth};
-      const Buffer b = createUploadBuffer(ctx, &all, sizeof all, kUsage, cleanup);
+      RAYSPEC_TRY(const Buffer b, createUploadBuffer(ctx, &all, sizeof all, kUsage, cleanup));
       if (!ctx.fn.cmdTraceRaysIndirect2)
-        throw VulkanError("vkGetDeviceProcAddr(vkCmdTraceRaysIndirect2KHR): missing");
+        return deviceError("vkGetDeviceProcAddr(vkCmdTraceRaysIndirect2KHR): missing");
       ctx.fn.cmdTraceRaysIndirect2(cmd, b.address);
-      return;
+      return {};
     }
   }
+  return {};
 }
 
 void recordReadback(VkCommandBuffer cmd, const std::vector<StorageImage>& images,

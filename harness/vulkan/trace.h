@@ -31,10 +31,11 @@ struct TraceBinding {
 // (base-aligned) laid out as layout, by the command the case names
 // (rays.command): vkCmdTraceRaysKHR, or vkCmdTraceRaysIndirectKHR /
 // vkCmdTraceRaysIndirect2KHR reading a buffer (made here, freed by cleanup)
-// that holds the launch size, and for indirect2 the SBT regions too.
-void recordTrace(const VulkanContext& ctx, VkCommandBuffer cmd, const TraceBinding& bound,
-                 const SbtLayout& sbt, VkDeviceAddress sbt_base, const Rays& rays,
-                 Cleanup& cleanup);
+// that holds the launch size, and for indirect2 the SBT regions too. Or the
+// Device error.
+Result<void> recordTrace(const VulkanContext& ctx, VkCommandBuffer cmd, const TraceBinding& bound,
+                         const SbtLayout& sbt, VkDeviceAddress sbt_base, const Rays& rays,
+                         Cleanup& cleanup);
 
 // Shader writes -> host reads, and each image copied into its host buffer
 // (tightly packed rows).

@@ -43,8 +43,20 @@ const char* vkResultName(VkResult r) {
   }
 }
 
-void vkCheck(VkResult r, const char* what) {
-  if (r != VK_SUCCESS) throw VulkanError(std::string(what) + ": " + vkResultName(r), what, r);
+Error deviceError(std::string message, std::string call, VkResult result) {
+  Error e = errorOf(ErrorKind::Device, std::move(message));
+  e.call = std::move(call);
+  e.result = vkResultName(result);
+  return e;
+}
+
+Error notSupported(std::string message) {
+  return errorOf(ErrorKind::NotSupported, std::move(message));
+}
+
+Result<void> vkCheck(VkResult r, const char* what) {
+  if (r == VK_SUCCESS) return {};
+  return deviceError(std::string(what) + ": " + vkResultName(r), what, r);
 }
 
 }  // namespace rayspec

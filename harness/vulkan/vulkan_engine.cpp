@@ -20,18 +20,15 @@ VulkanEngine::~VulkanEngine() {
 Result<std::unique_ptr<VulkanEngine>> VulkanEngine::create(const VulkanOptions& options) {
   std::unique_ptr<VulkanEngine> backend(new VulkanEngine());
   VulkanContext& ctx = *backend->ctx_;
-  try {
-    createInstance(ctx, options.validation);
-    if (Result<void> selected = selectDevice(ctx, options.device_filter); !selected)
-      return selected.error();
-    createDevice(ctx);
-    backend->has_device_ = true;
-    backend->device_per_case_ =
-        options.device_per_case.value_or(devicePerCase(ctx.info.driver_name));
-    if (!backend->device_per_case_) ctx.pipeline_cache = openPipelineCache(ctx);
-  } catch (const std::exception& e) {
-    return errorMessage(e.what());  // the destructor releases what exists
-  }
+  // On an error the destructor releases what exists (a device made before
+  // the error included: has_device_ follows ctx.device).
+  RAYSPEC_TRY_VOID(createInstance(ctx, options.validation));
+  RAYSPEC_TRY_VOID(selectDevice(ctx, options.device_filter));
+  const Result<void> device = createDevice(ctx);
+  backend->has_device_ = ctx.device != VK_NULL_HANDLE;
+  if (!device) return device.error();
+  backend->device_per_case_ = options.device_per_case.value_or(devicePerCase(ctx.info.driver_name));
+  if (!backend->device_per_case_) ctx.pipeline_cache = openPipelineCache(ctx);
   return backend;
 }
 
@@ -53,32 +50,11 @@ Results VulkanEngine::run(const Case& c, const Plan& plan) {
   r.height = c.rays.height;
   ctx_->capture->take();  // messages from before this run are not its own
   try {
-    if (device_lost_) {  // the last case lost the device: this one gets a new one
-      releaseDevice();
-      has_device_ = false;
-      device_lost_ = false;
-    }
-    if (!has_device_) {
-      StepTimer setup_time(r.cost, CostStep::BackendSetup);
-      createDevice(*ctx_);
-      has_device_ = true;
-      if (!device_per_case_) ctx_->pipeline_cache = openPipelineCache(*ctx_);
-    }
-    runCase(*ctx_, c, plan, r);
-  } catch (const ShaderCompileError& e) {
-    r.setStatus(
-        SideStatus::InvalidShader,
-        std::string("rayspec generated a stage that does not compile or validate: ") + e.what());
-  } catch (const NotSupportedError& e) {
-    r.setStatus(SideStatus::NotSupported, e.what());
-  } catch (const VulkanError& e) {
-    const DeviceErrorStatus s = classifyVulkanError(e);
-    r.setStatus(s.status, s.detail);
-    device_lost_ = device_lost_ || s.device_lost;
+    if (const Result<void> ran = runOnDevice(c, plan, r); !ran) setErrorStatus(ran.error(), r);
   } catch (const std::exception& e) {
+    // The standard library's own (std::bad_alloc, a vector's at()): the case
+    // crashed the backend, and the run goes on.
     r.setStatus(SideStatus::Crash, e.what());
-  } catch (...) {
-    r.setStatus(SideStatus::Crash, "unknown exception");
   }
   if (device_per_case_ && has_device_) {
     StepTimer teardown_time(r.cost, CostStep::BackendTeardown);
@@ -92,6 +68,44 @@ Results VulkanEngine::run(const Case& c, const Plan& plan) {
   r.validation_messages = ctx_->capture->take();
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
+}
+
+Result<void> VulkanEngine::runOnDevice(const Case& c, const Plan& plan, Results& r) {
+  if (device_lost_) {  // the last case lost the device: this one gets a new one
+    releaseDevice();
+    has_device_ = false;
+    device_lost_ = false;
+  }
+  if (!has_device_) {
+    StepTimer setup_time(r.cost, CostStep::BackendSetup);
+    const Result<void> made = createDevice(*ctx_);
+    has_device_ = ctx_->device != VK_NULL_HANDLE;  // released after the case, even on an error
+    if (!made) return made.error();
+    if (!device_per_case_) ctx_->pipeline_cache = openPipelineCache(*ctx_);
+  }
+  return runCase(*ctx_, c, plan, r);
+}
+
+void VulkanEngine::setErrorStatus(const Error& e, Results& r) {
+  switch (e.kind) {
+    case ErrorKind::ShaderCompile:
+      r.setStatus(SideStatus::InvalidShader,
+                  "rayspec generated a stage that does not compile or validate: " + e.format());
+      return;
+    case ErrorKind::NotSupported:
+      r.setStatus(SideStatus::NotSupported, e.format());
+      return;
+    case ErrorKind::Device: {
+      const DeviceErrorStatus s = classifyVulkanError(e);
+      r.setStatus(s.status, s.detail);
+      device_lost_ = device_lost_ || s.device_lost;
+      return;
+    }
+    case ErrorKind::Input:
+    case ErrorKind::Harness:
+      r.setStatus(SideStatus::Crash, e.format());
+      return;
+  }
 }
 
 void VulkanEngine::releaseDevice() {

@@ -69,7 +69,7 @@ class VulkanEngine {
   // validation layer on, asks a second, layer-free instance (driver_library.cpp).
   std::string driverLibrary() const;
 
-  // Never throws. status: Ok, NotSupported or Crash, with the detail. With a
+  // status: Ok, or what went wrong (setErrorStatus), with the detail. With a
   // device per case, what the layer reports as the device is destroyed is the
   // case's own.
   Results run(const Case& c, const Plan& plan);
@@ -82,6 +82,12 @@ class VulkanEngine {
  private:
   VulkanEngine();
   void releaseDevice();  // saves the pipeline cache, destroys the device
+  // The case on the device (made anew first when there is none, or it was lost).
+  Result<void> runOnDevice(const Case& c, const Plan& plan, Results& r);
+  // The status an error of the case gives: ShaderCompile InvalidShader,
+  // NotSupported NotSupported, Device what classifyVulkanError says (and a
+  // lost device is made anew for the next case), any other Crash.
+  void setErrorStatus(const Error& e, Results& r);
   std::unique_ptr<VulkanContext> ctx_;
   bool device_lost_ = false;      // a case lost the device: the next run makes a new one
   bool device_per_case_ = false;  // devicePerCase(): made before and destroyed after each case
