@@ -54,7 +54,7 @@ TEST(BoxPad, EveryKeptTriangleLiesInABoxTheRayCrosses) {
       if (!p.value || !p.errors.empty()) continue;
       const Case& c = *p.value;
       ModelScene s;
-      buildModelScene(s, c, ModelTier::Exact, true);
+      ASSERT_TRUE(buildModelScene(s, c, ModelTier::Exact, true).ok());
       ++cases;
       for (const ModelInstance& mi : s.instances) {
         if (mi.blas < 0) continue;

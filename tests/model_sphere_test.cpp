@@ -198,7 +198,7 @@ TEST(ModelSphere, MixedSceneRay638477IsTangent) {
   ASSERT_GT(c.rays.rays.size(), index);
   const Ray ray = c.rays.rays[index];
   ModelScene scene;
-  buildModelScene(scene, c, ModelTier::Exact, true);
+  ASSERT_TRUE(buildModelScene(scene, c, ModelTier::Exact, true).ok());
   const ModelInstance& mi = scene.instances[1];
   const auto& aabbs = c.scene.blases[mi.blas].geometries[0].aabbs;
   bool tangent = false;

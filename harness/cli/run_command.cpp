@@ -14,6 +14,12 @@
 namespace rayspec {
 namespace {
 
+std::vector<std::string> modelTierNames() {
+  std::vector<std::string> names;
+  for (const EnumName<ModelTier>& row : enumNames<ModelTier>()) names.push_back(row.name);
+  return names;
+}
+
 // Which cases run, on which device, into which folder, judged against what.
 void addSelectionOptions(CLI::App* run, RunOptions& run_opt) {
   run->add_option("--device", run_opt.device,
@@ -27,7 +33,7 @@ void addSelectionOptions(CLI::App* run, RunOptions& run_opt) {
   run->add_option("--cases", run_opt.cases_dir, "Folder of case files")->capture_default_str();
   run->add_option("--case", run_opt.case_files, "Run these case files (instead of --cases)");
   run->add_option("--model", run_opt.model_tier, "Model precision tier: fast, robust or exact")
-      ->check(CLI::IsMember({"fast", "robust", "exact"}))
+      ->check(CLI::IsMember(modelTierNames()))
       ->capture_default_str();
   run->add_option(
       "--baseline", run_opt.baseline,

@@ -303,8 +303,12 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
     ModelScene scene;
     // Per-primitive triangles are read by candidates, own tests, the
     // facing of a direct hit when a program reads hit_kind, and vertex_position<i>.
-    buildModelScene(scene, c, opt.tier, needsCandidates(c, plan, opt.tier),
-                    programs.reads(kBiHitKind) || plan.position_fetch);
+    if (Result<void> built = buildModelScene(scene, c, opt.tier, needsCandidates(c, plan, opt.tier),
+                                             programs.reads(kBiHitKind) || plan.position_fetch);
+        !built) {
+      r.setStatus(SideStatus::Crash, "model: " + built.error().message);
+      return r;
+    }
     const ModelShared shared = sharedState(c, plan, opt, scene, programs);
     scene_time.stop();
     StepTimer trace_time(r.cost, CostStep::ModelTrace);

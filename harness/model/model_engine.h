@@ -17,6 +17,7 @@
 // and the other rays are unaffected.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "base/enum_names.h"
@@ -30,8 +31,8 @@ namespace rayspec {
 #define RAYSPEC_MODEL_TIERS(X) X(Fast, "fast") X(Robust, "robust") X(Exact, "exact")
 enum class ModelTier { RAYSPEC_MODEL_TIERS(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(ModelTier, RAYSPEC_MODEL_TIERS);
-ModelTier parseModelTier(
-    const std::string& name);  // fast|robust|exact; throws std::invalid_argument
+// "fast", "robust", "exact"; nullopt for another name.
+std::optional<ModelTier> parseModelTier(const std::string& name);
 const char* modelTierName(ModelTier t);
 
 // R-AHIT-DUP: without NO_DUPLICATE_ANY_HIT_INVOCATION a device may run

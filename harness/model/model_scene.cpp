@@ -298,11 +298,11 @@ ModelScene::~ModelScene() {
 
 namespace {
 
-RTCDevice newEmbreeDevice() {
+Result<RTCDevice> newEmbreeDevice() {
   RTCDevice device = rtcNewDevice(nullptr);
   if (device) return device;
   const RTCError e = rtcGetDeviceError(nullptr);
-  throw std::runtime_error(
+  return errorMessage(
       e == RTC_ERROR_OUT_OF_MEMORY
           ? "rtcNewDevice failed: out of memory (a --memory-limit too low for Embree?)"
           : "rtcNewDevice failed (Embree error " + std::to_string(int(e)) + ")");
@@ -473,10 +473,11 @@ void commitInstances(ModelScene& s, const Case& c, RTCSceneFlags scene_flags) {
 
 }  // namespace
 
-void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
-                     bool keep_triangles) {
+Result<void> buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
+                             bool keep_triangles) {
   s.tier = tier;
-  s.device = newEmbreeDevice();
+  RAYSPEC_TRY(RTCDevice device, newEmbreeDevice());
+  s.device = device;
   s.blases.resize(c.scene.blases.size());
   // Exact tier: how far a device's and Embree's object-space rays may be off
   // and how far the exact test's ambiguity reaches, per BLAS (box_pad.h).
@@ -508,6 +509,7 @@ void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
       tier == ModelTier::Fast ? RTC_SCENE_FLAG_NONE : RTC_SCENE_FLAG_ROBUST;
   for (size_t bi = 0; bi < c.scene.blases.size(); ++bi) commitBlas(s, c, bi, scene_flags);
   commitInstances(s, c, scene_flags);
+  return {};
 }
 
 }  // namespace rayspec

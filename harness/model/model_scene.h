@@ -12,6 +12,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "base/result.h"
 #include "case/case.h"
 #include "model/frame_error.h"
 #include "model/model_engine.h"
@@ -85,8 +86,9 @@ constexpr unsigned kMaskTriangles = 0x100, kMaskAabbs = 0x200;
 // `keep_triangles`: fill ModelGeometry::triangles even where nothing but the
 // facing of a direct hit could read them (false: only where own triangle
 // tests, candidates or an unindexed Embree buffer need them).
-void buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
-                     bool keep_triangles = true);
+// An error only where Embree cannot make a device (out of memory).
+Result<void> buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool filters,
+                             bool keep_triangles = true);
 
 // True when Embree would drop this triangle although Vulkan keeps it active.
 bool needsOwnTriangleTest(const std::array<Vec3, 3>& tri);

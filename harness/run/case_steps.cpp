@@ -20,7 +20,7 @@ namespace {
 
 Side modelSide(const RunOptions& opt) {
   ModelOptions mopt;
-  mopt.tier = parseModelTier(opt.model_tier);
+  mopt.tier = checkedModelTier(opt);
   mopt.threads = opt.threads;
   Side s{"model", "model", [mopt] { return std::make_unique<ModelAdapter>(mopt); }, {}};
   return s;

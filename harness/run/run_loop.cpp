@@ -432,7 +432,7 @@ int finishRun(RunBook& book, RunInfo& info, const RunOptions& opt, size_t planne
 // Without isolation the model runs in this process; with it, in workers.
 std::unique_ptr<ModelAdapter> inProcessModel(const RunOptions& opt) {
   if (opt.no_model || !opt.no_isolation) return nullptr;
-  return std::make_unique<ModelAdapter>(ModelOptions{parseModelTier(opt.model_tier), opt.threads});
+  return std::make_unique<ModelAdapter>(ModelOptions{checkedModelTier(opt), opt.threads});
 }
 
 // The cases in files, dealt to `jobs` slots, judged and reported.

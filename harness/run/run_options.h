@@ -8,6 +8,7 @@
 
 #include "metamorphic/feature_path.h"
 #include "metamorphic/transform_case.h"
+#include "model/model_engine.h"
 #include "run/cache_dir.h"
 
 namespace rayspec {
@@ -75,5 +76,9 @@ struct RunOptions {
 // folder records it (RunInfo::variant): "" for the cases as written, else
 // e.g. "through update; permute 7; move -y,x,z".
 std::string runVariant(const RunOptions& opt);
+
+// --model as a tier: the name optionError (run/run_setup.h) has checked,
+// so Exact only stands in for a name no run gets past that check with.
+ModelTier checkedModelTier(const RunOptions& opt);
 
 }  // namespace rayspec

@@ -90,6 +90,9 @@ std::string optionError(const RunOptions& opt) {
     return "the Khronos validation layer is not installed (vulkan-validationlayers); run "
            "tools/setup.sh";
   if (opt.no_device && opt.no_model) return "--no-device and --no-model: nothing would run";
+  if (!parseModelTier(opt.model_tier))
+    return "model tier '" + opt.model_tier + "': the tiers are " +
+           namesJoined(enumNames<ModelTier>());
   if (std::string e = plantedFaultError(opt); !e.empty()) return e;
   return deviceResultsError(opt);
 }
@@ -121,6 +124,10 @@ ChosenDevice savedDevice(const RunOptions& opt, const std::vector<CaseFile>& fil
 }
 
 }  // namespace
+
+ModelTier checkedModelTier(const RunOptions& opt) {
+  return parseModelTier(opt.model_tier).value_or(ModelTier::Exact);
+}
 
 int setupFailed(const Error& why) {
   std::fprintf(stderr, "rayspec run: %s\n", why.format().c_str());
