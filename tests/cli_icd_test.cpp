@@ -85,6 +85,36 @@ TEST(Icd, DevicesPrintsEveryLimitOfTheFieldList) {
   EXPECT_TRUE(std::regex_search(block, std::regex("\n        scalarBlockLayout +yes\n"))) << block;
 }
 
+// The required limits against lavapipe's baseline of known violations: each
+// listed violation is expected; without the baseline they fail the command,
+// and a baseline that lists a limit the driver meets is out of date.
+TEST(Icd, CheckLimitsJudgesEachRequiredLimitAgainstTheBaseline) {
+  const std::string lvp = lavapipeManifest();
+  ASSERT_FALSE(lvp.empty()) << "lavapipe is not installed";
+  const std::string out = fresh("icd-check-limits");
+  const std::string baseline =
+      std::string(RAYSPEC_SOURCE_DIR) + "/references/baselines/lavapipe-limits.csv";
+  EXPECT_EQ(
+      sh(kBin + " devices --check-limits --icd " + lvp + " --baseline " + baseline, out + "/with"),
+      0)
+      << slurp(out + "/with");
+  const std::string with = slurp(out + "/with");
+  EXPECT_NE(with.find("Fail         limits/maxPrimitiveCount: "), std::string::npos) << with;
+  EXPECT_NE(with.find("Pass         limits/shaderGroupHandleSize: 32, exactly 32"),
+            std::string::npos)
+      << with;
+  EXPECT_NE(with.find("0 unexpected), 0 unexpected passes."), std::string::npos) << with;
+
+  EXPECT_EQ(sh(kBin + " devices --check-limits --icd " + lvp, out + "/without"), 1);
+  EXPECT_NE(slurp(out + "/without").find("(UNEXPECTED)"), std::string::npos);
+
+  std::ofstream(out + "/stale.csv") << "limits/shaderGroupHandleSize,Fail\n";
+  EXPECT_EQ(sh(kBin + " devices --check-limits --icd " + lvp + " --baseline " + out + "/stale.csv",
+               out + "/stale"),
+            1);
+  EXPECT_NE(slurp(out + "/stale").find("the baseline expects Fail: update it"), std::string::npos);
+}
+
 TEST(Icd, RunOnLavapipeByItsManifest) {
   const std::string lvp = lavapipeManifest();
   ASSERT_FALSE(lvp.empty());

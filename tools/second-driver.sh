@@ -11,6 +11,8 @@
 #       OUT/spirv-val.txt  every SPIR-V module that run compiled, checked by the environment's spirv-val
 #       OUT/judged   that run judged here against FILE (default references/baselines/lavapipe-26.csv)
 #   tools/second-driver.sh compare RUN_A RUN_B    # rayspec compare of two judged or saved runs
+#   tools/second-driver.sh limits [BASELINE]  # the environment's lavapipe: rayspec devices --check-limits
+#       judged against BASELINE (default references/baselines/lavapipe-26-limits.csv)
 #   tools/second-driver.sh generated OUT    # the generator test's modules (tests/glsl_generator_test.cpp:
 #       random programs over the whole vocabulary) through the environment's spirv-val: OUT/spirv-val.txt
 #
@@ -163,11 +165,26 @@ generated() {
   check_spirv "$out" "$modules" || die "spirv-val rejected generated modules: $out/spirv-val.txt" 1
 }
 
+# The environment's lavapipe's ray tracing limits against the specification's
+# required ones (rayspec devices --check-limits), judged against BASELINE.
+limits() {
+  local baseline=${1:-references/baselines/lavapipe-26-limits.csv}
+  ready || die "no environment in $ENV_DIR: run tools/second-driver.sh prepare" 77
+  [[ -f "$baseline" ]] || die "baseline $baseline is missing"
+  [[ $(id -u) -eq 0 ]] || die "limits needs root (chroot)"
+  install_pack
+  cp "$baseline" "$ENV_DIR$WORK/pack/limits-baseline.csv"
+  trap unmount_inside EXIT
+  mount_inside
+  inside sh -c "cd $WORK/pack && LD_LIBRARY_PATH=lib VK_LAYER_PATH=layer ./rayspec devices --check-limits --icd $ICD --baseline limits-baseline.csv"
+}
+
 case ${1:-} in
   prepare) prepare ;;
+  limits) shift; limits "$@" ;;
   versions) versions ;;
   run) shift; run "$@" ;;
   compare) shift; exec ./build/rayspec compare "$@" ;;
   generated) shift; generated "$@" ;;
-  *) die "usage: tools/second-driver.sh prepare | versions | run OUT [--baseline FILE] [options] | compare A B | generated OUT" ;;
+  *) die "usage: tools/second-driver.sh prepare | versions | run OUT [--baseline FILE] [options] | limits [BASELINE] | compare A B | generated OUT" ;;
 esac

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "cli/commands.h"
+#include "cli/limits_check.h"
 #include "run/icd_probe.h"
 #include "vulkan/device_usability.h"
 #include "vulkan/icd_environment.h"
@@ -26,6 +27,9 @@ std::string shellWord(const std::string& s) {
 
 // A value of DeviceInfo as `rayspec devices` prints it.
 std::string deviceValueText(uint32_t v) {
+  return std::to_string(v);
+}
+std::string deviceValueText(uint64_t v) {
   return std::to_string(v);
 }
 std::string deviceValueText(bool v) {
@@ -56,8 +60,15 @@ void printLimits(const DeviceInfo& d) {
 #undef RAYSPEC_DEVICE_INFO_LINE
 }
 
+// What --check-limits adds: the baseline of known violations and the tally.
+struct LimitsRun {
+  bool check = false;
+  Baseline baseline;
+  LimitsVerdict verdict;
+};
+
 // One manifest's devices; returns how many are usable.
-int printProbe(const IcdProbe& p) {
+int printProbe(const IcdProbe& p, LimitsRun& limits) {
   std::printf("ICD %s (library %s%s%s)\n", p.manifest.path.c_str(), p.manifest.library_path.c_str(),
               p.manifest.api_version.empty() ? "" : ", Vulkan ", p.manifest.api_version.c_str());
   if (p.devices.empty())
@@ -77,6 +88,12 @@ int printProbe(const IcdProbe& p) {
     std::printf("        select: --icd %s --device %s\n", shellWord(p.manifest.path).c_str(),
                 shellWord(d.name).c_str());
     printLimits(d);
+    if (!limits.check) continue;
+    const LimitsVerdict v = printLimitChecks(d, limits.baseline);
+    limits.verdict.violations += v.violations;
+    limits.verdict.expected += v.expected;
+    limits.verdict.unexpected += v.unexpected;
+    limits.verdict.unexpected_passes += v.unexpected_passes;
   }
   return usable;
 }
@@ -96,9 +113,18 @@ int runDevices(const DevicesOptions& opt) {
   for (const std::string& p : search.places) places += (places.empty() ? "" : ", ") + p;
   std::printf("Driver manifests from %s%s: %s\n\n", icdSourceName(search.source).c_str(),
               opt.icd_files.empty() ? "" : " (--icd)", places.c_str());
+  LimitsRun limits{opt.check_limits, {}, {}};
+  if (!opt.limits_baseline.empty()) {
+    Result<Baseline> b = loadBaseline(opt.limits_baseline);
+    if (!b) {
+      std::fprintf(stderr, "rayspec devices: %s\n", b.error().format().c_str());
+      return 2;
+    }
+    limits.baseline = std::move(*b);
+  }
   int usable = 0;
   for (const IcdManifest& m : search.manifests)
-    usable += printProbe(probeIcd(m, ChildLimits{kProbeSeconds, 0}));
+    usable += printProbe(probeIcd(m, ChildLimits{kProbeSeconds, 0}), limits);
   for (const std::string& e : search.errors) std::printf("NOT USABLE: %s\n", e.c_str());
   const size_t manifests = search.manifests.size() + search.errors.size();
   if (usable == 0) {
@@ -110,7 +136,14 @@ int runDevices(const DevicesOptions& opt) {
   }
   std::printf("\n%d usable device%s through %zu driver manifest%s.\n", usable,
               usable == 1 ? "" : "s", manifests, manifests == 1 ? "" : "s");
-  return 0;
+  if (!limits.check) return 0;
+  const LimitsVerdict& v = limits.verdict;
+  std::printf(
+      "Required limits: %d violation%s (%d expected by the baseline, %d unexpected), %d "
+      "unexpected pass%s.\n",
+      v.violations, v.violations == 1 ? "" : "s", v.expected, v.unexpected, v.unexpected_passes,
+      v.unexpected_passes == 1 ? "" : "es");
+  return v.unexpected > 0 || v.unexpected_passes > 0 ? 1 : 0;
 }
 
 }  // namespace rayspec

@@ -12,6 +12,8 @@ namespace rayspec {
 struct DevicesOptions {
   bool no_validation = false;
   std::vector<std::string> icd_files;  // --icd: probe only these driver manifests
+  bool check_limits = false;           // --check-limits: each usable device's required limits
+  std::string limits_baseline;         // --baseline: the limits a driver is known to break
 };
 
 struct ShowOptions {

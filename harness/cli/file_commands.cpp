@@ -15,6 +15,15 @@ Subcommand addDevicesCommand(CLI::App& app) {
   devices->add_flag("--no-validation", devices_opt.no_validation,
                     "Do not load the Khronos validation layer");
   devices->add_option("--icd", devices_opt.icd_files, kIcdOptionHelp)->delimiter(':');
+  devices->add_flag("--check-limits", devices_opt.check_limits,
+                    "Check each usable device's ray tracing limits against the minimums and "
+                    "maximums the Vulkan specification requires (exit 1 on a violation the "
+                    "baseline does not list)");
+  devices
+      ->add_option("--baseline", devices_opt.limits_baseline,
+                   "With --check-limits: the violations this driver is known for "
+                   "(`limits/<limit>,Fail` lines, e.g. references/baselines/lavapipe-limits.csv)")
+      ->check(CLI::ExistingFile);
 
   return {devices, [opt] {
             return runDevices(*opt);

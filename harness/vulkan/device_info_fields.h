@@ -63,6 +63,32 @@ using DeviceLaunchSize = std::array<uint64_t, 3>;
     "ray tracing pipeline property")                                                               \
   X(uint32_t, max_ray_dispatch_invocation_count, "max_ray_dispatch_invocation_count",              \
     "maxRayDispatchInvocationCount", "ray tracing pipeline property")                              \
+  X(uint32_t, shader_group_handle_capture_replay_size, "shader_group_handle_capture_replay_size",  \
+    "shaderGroupHandleCaptureReplaySize", "ray tracing pipeline property")                         \
+  X(uint64_t, max_geometry_count, "max_geometry_count", "maxGeometryCount",                        \
+    "acceleration structure property")                                                             \
+  X(uint64_t, max_instance_count, "max_instance_count", "maxInstanceCount",                        \
+    "acceleration structure property")                                                             \
+  X(uint64_t, max_primitive_count, "max_primitive_count", "maxPrimitiveCount",                     \
+    "acceleration structure property")                                                             \
+  X(uint32_t, max_per_stage_descriptor_acceleration_structures,                                    \
+    "max_per_stage_descriptor_acceleration_structures",                                            \
+    "maxPerStageDescriptorAccelerationStructures", "acceleration structure property")              \
+  X(uint32_t, max_per_stage_descriptor_update_after_bind_acceleration_structures,                  \
+    "max_per_stage_descriptor_update_after_bind_acceleration_structures",                          \
+    "maxPerStageDescriptorUpdateAfterBindAccelerationStructures",                                  \
+    "acceleration structure property")                                                             \
+  X(uint32_t, max_descriptor_set_acceleration_structures,                                          \
+    "max_descriptor_set_acceleration_structures", "maxDescriptorSetAccelerationStructures",        \
+    "acceleration structure property")                                                             \
+  X(uint32_t, max_descriptor_set_update_after_bind_acceleration_structures,                        \
+    "max_descriptor_set_update_after_bind_acceleration_structures",                                \
+    "maxDescriptorSetUpdateAfterBindAccelerationStructures", "acceleration structure property")    \
+  X(uint32_t, min_acceleration_structure_scratch_offset_alignment,                                 \
+    "min_acceleration_structure_scratch_offset_alignment",                                         \
+    "minAccelerationStructureScratchOffsetAlignment", "acceleration structure property")           \
+  X(bool, acceleration_structure_update_after_bind, "acceleration_structure_update_after_bind",    \
+    "descriptorBindingAccelerationStructureUpdateAfterBind", "acceleration structure feature")     \
   X(uint32_t, max_image_dimension_2d, "max_image_dimension_2d", nullptr,                           \
     "maxImageDimension2D: the widest and tallest image a case may write")                          \
   X(uint32_t, max_storage_buffer_range, "max_storage_buffer_range", nullptr,                       \

@@ -124,6 +124,21 @@ void readProperties(VkPhysicalDevice physical, DeviceInfo& d) {
     d.max_ray_hit_attribute_size = rt.maxRayHitAttributeSize;
     d.max_shader_group_stride = rt.maxShaderGroupStride;
     d.max_ray_dispatch_invocation_count = rt.maxRayDispatchInvocationCount;
+    d.shader_group_handle_capture_replay_size = rt.shaderGroupHandleCaptureReplaySize;
+  }
+  if (d.acceleration_structure_extension) {
+    d.max_geometry_count = as.maxGeometryCount;
+    d.max_instance_count = as.maxInstanceCount;
+    d.max_primitive_count = as.maxPrimitiveCount;
+    d.max_per_stage_descriptor_acceleration_structures =
+        as.maxPerStageDescriptorAccelerationStructures;
+    d.max_per_stage_descriptor_update_after_bind_acceleration_structures =
+        as.maxPerStageDescriptorUpdateAfterBindAccelerationStructures;
+    d.max_descriptor_set_acceleration_structures = as.maxDescriptorSetAccelerationStructures;
+    d.max_descriptor_set_update_after_bind_acceleration_structures =
+        as.maxDescriptorSetUpdateAfterBindAccelerationStructures;
+    d.min_acceleration_structure_scratch_offset_alignment =
+        as.minAccelerationStructureScratchOffsetAlignment;
   }
 }
 
@@ -165,6 +180,9 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
       vk12 && d.acceleration_structure_extension && as_features.accelerationStructure;
   d.acceleration_structure_host_commands =
       d.acceleration_structure_extension && as_features.accelerationStructureHostCommands;
+  d.acceleration_structure_update_after_bind =
+      d.acceleration_structure_extension &&
+      as_features.descriptorBindingAccelerationStructureUpdateAfterBind;
   d.trace_rays_indirect = d.ray_tracing_pipeline && rt_features.rayTracingPipelineTraceRaysIndirect;
   d.trace_rays_indirect2 = d.ray_tracing_maintenance1 && d.ray_tracing_pipeline &&
                            maintenance1.rayTracingPipelineTraceRaysIndirect2;

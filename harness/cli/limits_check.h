@@ -1,0 +1,22 @@
+// `rayspec devices --check-limits`: each usable device's ray tracing limits
+// against the Vulkan specification's required ones (vulkan/required_limits.h),
+// judged against a baseline of known violations the way `rayspec run` judges
+// cases: a violation it does not list fails, one it lists that is gone is an
+// unexpected pass (the baseline wants updating).
+#pragma once
+
+#include <string>
+
+#include "report/baseline.h"
+#include "vulkan/vulkan_engine.h"
+
+namespace rayspec {
+
+struct LimitsVerdict {
+  int violations = 0, expected = 0, unexpected = 0, unexpected_passes = 0;
+};
+
+// Prints one line per limit; counts what the baseline says of them.
+LimitsVerdict printLimitChecks(const DeviceInfo& d, const Baseline& baseline);
+
+}  // namespace rayspec
