@@ -14,6 +14,7 @@
 #include "bundle/results_io.h"
 #include "result_support.h"
 #include "results/record_layout.h"
+#include "test_dir.h"
 
 namespace rayspec {
 namespace {
@@ -86,6 +87,30 @@ TEST(ResultsIo, BundleRoundTripsEveryField) {
   if (imageFilesSupported()) {
     EXPECT_TRUE(std::filesystem::exists(dir + "/primitive.png"));
     EXPECT_TRUE(std::filesystem::exists(dir + "/color.exr"));
+  }
+}
+
+// The difference picture of two images: written where they differ; a file
+// that cannot be written is the harness's error (none without OpenImageIO).
+TEST(ImageFiles, DiffImageIsWrittenOrItsErrorSaid) {
+  Image a;
+  a.name = "color";
+  a.width = 2;
+  a.height = 1;
+  a.channels = 1;
+  a.texels = {1, 2};
+  Image b = a;
+  b.texels = {1, 3};
+  const std::string dir = testing_support::testDir() + "/diff-image";
+  std::filesystem::remove_all(dir);
+  ASSERT_EQ(errorText(writeDiffImage(a, b, dir)), "");
+  EXPECT_EQ(std::filesystem::exists(dir + "/color.png"), imageFilesSupported());
+  const Result<void> nowhere = writeDiffImage(a, b, "/dev/null/diff");
+  EXPECT_EQ(nowhere.ok(), !imageFilesSupported());
+  if (!nowhere) {
+    EXPECT_EQ(nowhere.error().kind, ErrorKind::Harness);
+    EXPECT_NE(nowhere.error().message.find("/dev/null/diff/color.png"), std::string::npos)
+        << nowhere.error().message;
   }
 }
 

@@ -107,7 +107,7 @@ TEST(BaselineGate, FailuresCsvIsABaselineOfWhatWasUnexpected) {
       outcome("fam/new", Status::Timeout), outcome("fam/fine", Status::Pass)};
   for (CaseOutcome& o : all) applyBaseline(b, o);
   const std::string path = testing_support::testDir() + "/failures.csv";
-  ASSERT_EQ(writeFailuresCsv(all, b.file, path), "");
+  ASSERT_EQ(errorText(writeFailuresCsv(all, b.file, path)), "");
   const std::string text = slurp(path);
   EXPECT_EQ(text.find("fam/known"), std::string::npos) << text;
   EXPECT_EQ(text.find("fam/fine"), std::string::npos) << text;
@@ -173,7 +173,7 @@ std::string runFolder(const std::string& name, const std::string& device,
   info.model_tier = "exact";
   info.started = "2026-11-23 10:00:00 UTC";
   info.planned_cases = cases.size();
-  EXPECT_EQ(writeReports(cases, info, dir), "");
+  EXPECT_EQ(errorText(writeReports(cases, info, dir)), "");
   for (const CaseOutcome& o : cases) {
     std::filesystem::create_directories(dir + "/" + o.name + "/device");
     std::ofstream(dir + "/" + o.name + "/device/results.json") << "{}";
@@ -188,12 +188,12 @@ TEST(MergeRuns, ShardsJoinIntoOneRun) {
                                   {outcome("fam/a", Status::Pass), outcome("fam/c", Status::Pass)});
   const std::string out = testing_support::testDir() + "/merged";
   std::filesystem::remove_all(out);
-  const MergeResult m = mergeRuns({a, b}, out, Baseline{}, {});
-  ASSERT_EQ(m.error, "");
-  ASSERT_EQ(m.run.outcomes.size(), 4u);
-  EXPECT_EQ(m.run.outcomes[0].name, "fam/a");
-  EXPECT_EQ(m.run.outcomes[3].name, "fam/d");
-  EXPECT_EQ(m.run.info.planned_cases, 4u);
+  const Result<SavedRun> m = mergeRuns({a, b}, out, Baseline{}, {});
+  ASSERT_TRUE(m) << m.error().format();
+  ASSERT_EQ(m->outcomes.size(), 4u);
+  EXPECT_EQ(m->outcomes[0].name, "fam/a");
+  EXPECT_EQ(m->outcomes[3].name, "fam/d");
+  EXPECT_EQ(m->info.planned_cases, 4u);
   EXPECT_TRUE(std::filesystem::exists(out + "/fam/d/device/results.json"));
   const Result<SavedRun> back = readSavedRun(out);
   ASSERT_TRUE(back) << back.error().format();
@@ -206,11 +206,12 @@ TEST(MergeRuns, RefusesTwoDevicesAndACaseTwice) {
   const std::string b = runFolder("m-b", "NVIDIA H100", {outcome("fam/b", Status::Pass)});
   const std::string c = runFolder("m-c", "llvmpipe", {outcome("fam/a", Status::Fail)});
   const std::string out = testing_support::testDir() + "/m-out";
-  EXPECT_NE(mergeRuns({a, b}, out, Baseline{}, {}).error.find("NVIDIA H100"), std::string::npos);
-  const std::string twice = mergeRuns({a, c}, out, Baseline{}, {}).error;
+  EXPECT_NE(errorText(mergeRuns({a, b}, out, Baseline{}, {})).find("NVIDIA H100"),
+            std::string::npos);
+  const std::string twice = errorText(mergeRuns({a, c}, out, Baseline{}, {}));
   EXPECT_NE(twice.find("fam/a"), std::string::npos) << twice;
   EXPECT_NE(twice.find("m-c"), std::string::npos) << twice;
-  EXPECT_NE(mergeRuns({a}, a, Baseline{}, {}).error, "");
+  EXPECT_NE(errorText(mergeRuns({a}, a, Baseline{}, {})), "");
 }
 
 TEST(BaselineGate, AThroughPathAddsItsOwnEntries) {

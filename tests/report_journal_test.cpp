@@ -9,6 +9,7 @@
 #include "report/escape.h"
 #include "report/outcome_json.h"
 #include "report/write_reports.h"
+#include "result_support.h"
 
 namespace rayspec {
 namespace {
@@ -31,10 +32,10 @@ std::string freshDir(const std::string& name) {
 
 TEST(Journal, LastLineOfACaseWinsAndACutLineIsLeftOut) {
   const std::string dir = freshDir("cut");
-  ASSERT_EQ(startJournal(dir), "");
-  ASSERT_EQ(appendJournal(judgedOutcome("f/a", Status::Fail), dir), "");
-  ASSERT_EQ(appendJournal(judgedOutcome("f/b", Status::Pass), dir), "");
-  ASSERT_EQ(appendJournal(judgedOutcome("f/a", Status::Pass), dir),
+  ASSERT_EQ(errorText(startJournal(dir)), "");
+  ASSERT_EQ(errorText(appendJournal(judgedOutcome("f/a", Status::Fail), dir)), "");
+  ASSERT_EQ(errorText(appendJournal(judgedOutcome("f/b", Status::Pass), dir)), "");
+  ASSERT_EQ(errorText(appendJournal(judgedOutcome("f/a", Status::Pass), dir)),
             "");  // a resumed run judged it again
   std::ofstream(dir + "/" + kJournalFile, std::ios::app) << R"({"name": "f/c", "sta)";
   const auto journal = readJournal(dir);
@@ -49,9 +50,9 @@ TEST(Journal, LastLineOfACaseWinsAndACutLineIsLeftOut) {
 
 TEST(Journal, ABadLineInTheMiddleIsAnErrorNamingIt) {
   const std::string dir = freshDir("bad");
-  ASSERT_EQ(appendJournal(judgedOutcome("f/a", Status::Pass), dir), "");
+  ASSERT_EQ(errorText(appendJournal(judgedOutcome("f/a", Status::Pass), dir)), "");
   std::ofstream(dir + "/" + kJournalFile, std::ios::app) << "[1, 2]\n";
-  ASSERT_EQ(appendJournal(judgedOutcome("f/b", Status::Pass), dir), "");
+  ASSERT_EQ(errorText(appendJournal(judgedOutcome("f/b", Status::Pass), dir)), "");
   const auto journal = readJournal(dir);
   ASSERT_FALSE(journal);
   const std::string error = journal.error().format();
@@ -70,7 +71,7 @@ TEST(Journal, AnImageNameThatClimbsIsRefused) {
   RunInfo info;
   info.device = "dev";
   info.model_tier = "exact";
-  ASSERT_EQ(writeSummaryJson({o}, info, dir + "/summary.json"), "");
+  ASSERT_EQ(errorText(writeSummaryJson({o}, info, dir + "/summary.json")), "");
   const Result<SavedRun> saved = readSavedRun(dir);
   ASSERT_FALSE(saved);
   EXPECT_NE(saved.error().format().find("'images': '../../../../tmp/probe'"), std::string::npos)
@@ -91,17 +92,43 @@ TEST(Journal, AnInterruptedRunIsReadFromItsJournal) {
   info.model_tier = "exact";
   info.planned_cases = 3;
   info.interrupted = true;
-  ASSERT_EQ(writeReports({}, info, dir), "");
-  ASSERT_EQ(startJournal(dir), "");
-  ASSERT_EQ(appendJournal(judgedOutcome("f/a", Status::Pass), dir), "");
+  ASSERT_EQ(errorText(writeReports({}, info, dir)), "");
+  ASSERT_EQ(errorText(startJournal(dir)), "");
+  ASSERT_EQ(errorText(appendJournal(judgedOutcome("f/a", Status::Pass), dir)), "");
   const Result<SavedRun> saved = readSavedRun(dir);
   ASSERT_TRUE(saved) << saved.error().format();
   ASSERT_EQ(saved->outcomes.size(), 1u);
   EXPECT_EQ(saved->outcomes[0].name, "f/a");
   // A finished run is its summary.json, whatever its journal holds.
   info.interrupted = false;
-  ASSERT_EQ(writeReports({}, info, dir), "");
+  ASSERT_EQ(errorText(writeReports({}, info, dir)), "");
   EXPECT_TRUE(readSavedRun(dir)->outcomes.empty());
+}
+
+// A case whose details JSON cannot hold: an Input error (the case is at
+// fault, report/json_text.h), and the journal and summary.json stay as they were.
+TEST(Journal, DetailsThatAreNotUtf8AreAnInputErrorAndNothingIsAppended) {
+  const std::string dir = freshDir("utf8");
+  ASSERT_EQ(errorText(appendJournal(judgedOutcome("f/a", Status::Pass), dir)), "");
+  const Result<void> appended = appendJournal(judgedOutcome("f/\xfe", Status::Pass), dir);
+  ASSERT_FALSE(appended);
+  EXPECT_EQ(appended.error().kind, ErrorKind::Input);
+  const auto journal = readJournal(dir);
+  ASSERT_TRUE(journal) << journal.error().format();
+  ASSERT_EQ((*journal)->size(), 1u);
+  const Result<void> summary =
+      writeSummaryJson({judgedOutcome("f/\xfe", Status::Pass)}, RunInfo{}, dir + "/summary.json");
+  ASSERT_FALSE(summary);
+  EXPECT_EQ(summary.error().kind, ErrorKind::Input);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/summary.json"));
+}
+
+// A file that cannot be written is the harness's error, naming the file.
+TEST(Journal, AJournalThatCannotBeWrittenIsAHarnessError) {
+  const Result<void> started = startJournal("/nonexistent-rayspec-dir");
+  ASSERT_FALSE(started);
+  EXPECT_EQ(started.error().kind, ErrorKind::Harness);
+  EXPECT_EQ(started.error().message, "cannot write /nonexistent-rayspec-dir/outcomes.jsonl");
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "read_text.h"
 #include "report/report_tally.h"
 #include "report/write_reports.h"
+#include "result_support.h"
 #include "test_dir.h"
 
 namespace rayspec {
@@ -68,7 +69,7 @@ TEST(ReportPage, SummaryCountsLinkToTheFilterThatShowsThem) {
   RunInfo info;
   info.catalog = {{"R-A", "rule a"}, {"R-Z", "rule z"}};
   info.coverage = {{"R-A", {"anyhit/a", "anyhit/b"}}, {"R-Z", {}}};
-  ASSERT_EQ(writeReports(tallyCases(), info, dir), "");
+  ASSERT_EQ(errorText(writeReports(tallyCases(), info, dir)), "");
   const std::string html = slurp(dir + "/report.html");
   EXPECT_NE(html.find("<tr><td>anyhit</td><td class=\"n\"><a href=\"#filter?family=anyhit\">2</a>"
                       "</td><td class=\"n\"><a href=\"#filter?family=anyhit&amp;status=Pass\">1"),
@@ -92,7 +93,8 @@ TEST(ReportPage, SummaryCountsLinkToTheFilterThatShowsThem) {
 // is the option's value and the case's data-f.
 TEST(ReportPage, FilterLinksEncodeTheValueTheOptionsHold) {
   const std::string path = testing_support::testDir() + "/rayspec-report-page-encoding.html";
-  ASSERT_EQ(writeReportHtml({pageCase("odd fam&\xff/c", Status::Pass, {"R-A"})}, RunInfo{}, path),
+  ASSERT_EQ(errorText(writeReportHtml({pageCase("odd fam&\xff/c", Status::Pass, {"R-A"})},
+                                      RunInfo{}, path)),
             "");
   const std::string html = slurp(path);
   EXPECT_NE(html.find("<a href=\"#filter?family=odd%20fam%26%5CxFF\">1</a>"), std::string::npos)
@@ -120,7 +122,7 @@ size_t pageBytes(int passing, int failing, const std::string& name) {
                          Status::Pass, {"R-IGNORE", "R-MISS-XOR-CHIT"}));
   for (int i = 0; i < failing; ++i) v.push_back(syntheticFailure(i));
   const std::string dir = testing_support::testDir() + "/rayspec-report-page-" + name;
-  EXPECT_EQ(writeReports(v, RunInfo{}, dir), "");
+  EXPECT_EQ(errorText(writeReports(v, RunInfo{}, dir)), "");
   return slurp(dir + "/report.html").size();
 }
 
@@ -138,7 +140,7 @@ TEST(ReportPage, GrowsByAShortRowPerPassingCaseAndABoundedBlockPerFailure) {
 TEST(ReportPage, FailuresShowTheirFindingsAndFoldTheRaysShowingOnlyDifferingFields) {
   std::vector<CaseOutcome> v{pageCase("fam/ok", Status::Pass, {"R-IGNORE"}), syntheticFailure(1)};
   const std::string dir = testing_support::testDir() + "/rayspec-report-page-rays";
-  ASSERT_EQ(writeReports(v, RunInfo{}, dir), "");
+  ASSERT_EQ(errorText(writeReports(v, RunInfo{}, dir)), "");
   const std::string html = slurp(dir + "/report.html");
   const size_t block = html.find("id=\"family1/failing-case-1\"");
   const size_t details = html.find("<details>", block), rays = html.find("class=\"rays\"", block);

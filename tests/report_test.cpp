@@ -52,7 +52,7 @@ TEST(CaseOutcomeVerdict, StatusAndHeadlineComeFromTheVerdict) {
 
 TEST(Reports, ResultsCsvIsDeqpRunnerCsv) {
   const std::string dir = testing_support::testDir() + "/rayspec-report-test";
-  ASSERT_EQ(writeReports(outcomes(), RunInfo{}, dir), "");
+  ASSERT_EQ(errorText(writeReports(outcomes(), RunInfo{}, dir)), "");
   std::ifstream in(dir + "/results.csv");
   std::string line;
   std::vector<std::string> lines;
@@ -69,7 +69,7 @@ TEST(Reports, InterruptedRunSaysSoInEveryReport) {
   RunInfo info;
   info.planned_cases = 5;
   info.interrupted = true;
-  ASSERT_EQ(writeReports(outcomes(), info, dir), "");
+  ASSERT_EQ(errorText(writeReports(outcomes(), info, dir)), "");
   const std::string json = slurp(dir + "/summary.json");
   EXPECT_NE(json.find("\"interrupted\": true"), std::string::npos) << json;
   EXPECT_NE(json.find("\"planned_cases\": 5"), std::string::npos) << json;
@@ -79,7 +79,7 @@ TEST(Reports, InterruptedRunSaysSoInEveryReport) {
 
   info.planned_cases = 3;
   info.interrupted = false;
-  ASSERT_EQ(writeReports(outcomes(), info, dir), "");
+  ASSERT_EQ(errorText(writeReports(outcomes(), info, dir)), "");
   EXPECT_NE(slurp(dir + "/summary.json").find("\"interrupted\": false"), std::string::npos);
   EXPECT_EQ(slurp(dir + "/summary.txt").rfind("complete: 3 of 3 cases\n", 0), 0u);
   EXPECT_EQ(slurp(dir + "/report.html").find("INTERRUPTED"), std::string::npos);
@@ -87,7 +87,7 @@ TEST(Reports, InterruptedRunSaysSoInEveryReport) {
 
 TEST(Reports, HtmlPutsFailingCasesFirstEscapesAndCarriesItsSelfCheck) {
   const std::string dir = testing_support::testDir() + "/rayspec-report-test-html";
-  ASSERT_EQ(writeReports(outcomes(), RunInfo{}, dir), "");
+  ASSERT_EQ(errorText(writeReports(outcomes(), RunInfo{}, dir)), "");
   const std::string html = slurp(dir + "/report.html");
   EXPECT_LT(html.find("id=\"anyhit/failing\""), html.find("id=\"results/passing\""));
   EXPECT_LT(html.find("id=\"watertight/leaky\""), html.find("id=\"results/passing\""));
@@ -128,7 +128,7 @@ std::vector<CaseOutcome> outcomesWithUndefinedBehaviour() {
 
 TEST(Reports, CaseErrorIsFailInResultsCsvAndAFailureInJunit) {
   const std::string dir = testing_support::testDir() + "/rayspec-report-test-case-error";
-  ASSERT_EQ(writeReports(outcomesWithUndefinedBehaviour(), RunInfo{}, dir), "");
+  ASSERT_EQ(errorText(writeReports(outcomesWithUndefinedBehaviour(), RunInfo{}, dir)), "");
   const std::string csv = slurp(dir + "/results.csv");
   EXPECT_NE(csv.find("builtins/broken,Fail,"), std::string::npos) << csv;
   const std::string junit = slurp(dir + "/junit.xml");
@@ -141,7 +141,7 @@ TEST(Reports, CaseErrorIsFailInResultsCsvAndAFailureInJunit) {
 
 TEST(Reports, CaseErrorsAreGroupedApartInHtmlTextAndJson) {
   const std::string dir = testing_support::testDir() + "/rayspec-report-test-case-error-groups";
-  ASSERT_EQ(writeReports(outcomesWithUndefinedBehaviour(), RunInfo{}, dir), "");
+  ASSERT_EQ(errorText(writeReports(outcomesWithUndefinedBehaviour(), RunInfo{}, dir)), "");
   const std::string html = slurp(dir + "/report.html");
   const size_t failing = html.find("<h2>Failing cases ("), errors = html.find("<h2>Case errors ("),
                others = html.find("<h2>Other cases ("),
@@ -161,7 +161,7 @@ TEST(Reports, CaseErrorsAreGroupedApartInHtmlTextAndJson) {
 
 TEST(Reports, UndefinedRaysAreShownPerCaseApartFromTheFindings) {
   const std::string dir = testing_support::testDir() + "/rayspec-report-test-undefined";
-  ASSERT_EQ(writeReports(outcomesWithUndefinedBehaviour(), RunInfo{}, dir), "");
+  ASSERT_EQ(errorText(writeReports(outcomesWithUndefinedBehaviour(), RunInfo{}, dir)), "");
   const std::string html = slurp(dir + "/report.html");
   const size_t probe = html.find("id=\"robustness/probe\"");
   const size_t table = html.find("<table class=\"undefined\">", probe);
@@ -231,7 +231,7 @@ TEST(Baseline, ExpectedFailureDoesNotFailTheRunAndIsReportedAsExpected) {
   EXPECT_TRUE(with_new_failure.failed()) << "a failure the baseline does not list fails the run";
 
   const std::string csv = testing_support::testDir() + "/baseline-results.csv";
-  ASSERT_EQ(writeResultsCsv({broken, fixed, other}, csv), "");
+  ASSERT_EQ(errorText(writeResultsCsv({broken, fixed, other}, csv)), "");
   std::ifstream in(csv);
   std::string a, c, d;
   std::getline(in, a);
@@ -257,7 +257,7 @@ TEST(Baseline, ReadsNamesBackFromResultsCsv) {
   std::vector<CaseOutcome> outcomes;
   for (const std::string& n : names) outcomes.push_back({n, {}, Status::Fail, "Fail: x"});
   const std::string csv = testing_support::testDir() + "/quoted-results.csv";
-  ASSERT_EQ(writeResultsCsv(outcomes, csv), "");
+  ASSERT_EQ(errorText(writeResultsCsv(outcomes, csv)), "");
   // A baseline made from results.csv: each line's name field as it was written, the rayspec status,
   // a comment.
   std::ifstream in(csv);

@@ -33,4 +33,11 @@ inline bool orError(Result<void> r, std::string* error) {
   return false;
 }
 
+// "" when it succeeded, else the error's text: a test asserts it is "" and
+// shows the error when it is not, or looks for words in it.
+template <typename T>
+std::string errorText(const Result<T>& r) {
+  return r ? std::string() : r.error().format();
+}
+
 }  // namespace rayspec

@@ -10,6 +10,7 @@
 #include "case/parse_case.h"
 #include "metamorphic/permute_case.h"
 #include "model/model_engine.h"
+#include "result_support.h"
 #include "results/record_layout.h"
 #include "run/device_results.h"
 #include "run/fault_seam.h"
@@ -139,22 +140,22 @@ TEST(DeviceResultsOptions, RefusedWhereTheyCannotWork) {
   const std::string dir = savedRun("options");
   RunOptions opt;
   opt.out = savedRun("options-out");
-  EXPECT_EQ(deviceResultsError(opt), "") << "not asked for";
+  EXPECT_EQ(errorText(deviceResultsError(opt)), "") << "not asked for";
   opt.device_results = dir;
-  EXPECT_EQ(deviceResultsError(opt), "");
+  EXPECT_EQ(errorText(deviceResultsError(opt)), "");
   RunOptions same = opt;
   same.out = dir + "/.";
-  EXPECT_NE(deviceResultsError(same).find("is the --out folder"), std::string::npos)
-      << deviceResultsError(same);
+  EXPECT_NE(errorText(deviceResultsError(same)).find("is the --out folder"), std::string::npos)
+      << errorText(deviceResultsError(same));
   RunOptions missing = opt;
   missing.device_results = dir + "/nothing-here";
-  EXPECT_NE(deviceResultsError(missing).find("not a folder"), std::string::npos);
+  EXPECT_NE(errorText(deviceResultsError(missing)).find("not a folder"), std::string::npos);
   RunOptions no_model = opt;
   no_model.no_model = true;
-  EXPECT_NE(deviceResultsError(no_model), "");
+  EXPECT_NE(errorText(deviceResultsError(no_model)), "");
   RunOptions no_device = opt;
   no_device.no_device = true;
-  EXPECT_NE(deviceResultsError(no_device), "");
+  EXPECT_NE(errorText(deviceResultsError(no_device)), "");
 }
 
 // This test program is the full build's: the model is there and the options
@@ -164,7 +165,7 @@ TEST(RunOnly, TheFullBuildKeepsItsModel) {
   RunOptions opt;
   opt.plant_fault = "shift-t";
   EXPECT_FALSE(optionsForThisBuild(opt).no_model);
-  EXPECT_EQ(plantedFaultError(opt), "") << "a fault made from the model's results";
+  EXPECT_EQ(errorText(plantedFaultError(opt)), "") << "a fault made from the model's results";
 }
 
 }  // namespace

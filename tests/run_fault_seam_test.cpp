@@ -4,6 +4,7 @@
 
 #include "case/parse_case.h"
 #include "plan/plan.h"
+#include "result_support.h"
 #include "run/fault_seam.h"
 #include "vulkan/vk_fault_hook.h"
 
@@ -12,19 +13,19 @@ namespace {
 
 TEST(FaultSeam, RefusesFaultsThatCannotBePlanted) {
   RunOptions opt;
-  EXPECT_EQ(plantedFaultError(opt), "") << "no fault";
+  EXPECT_EQ(errorText(plantedFaultError(opt)), "") << "no fault";
   opt.plant_fault = "no-such-fault";
-  EXPECT_EQ(plantedFaultError(opt), "unknown fault 'no-such-fault'");
+  EXPECT_EQ(errorText(plantedFaultError(opt)), "unknown fault 'no-such-fault'");
   opt.plant_fault = "crash";
-  EXPECT_EQ(plantedFaultError(opt), "");
+  EXPECT_EQ(errorText(plantedFaultError(opt)), "");
   opt.no_isolation = true;
-  EXPECT_NE(plantedFaultError(opt).find("child process"), std::string::npos);
+  EXPECT_NE(errorText(plantedFaultError(opt)).find("child process"), std::string::npos);
   RunOptions saved;
   saved.device_results = "/some/saved/run";
   saved.plant_fault = "device-lost";
-  EXPECT_NE(plantedFaultError(saved).find("live device"), std::string::npos);
+  EXPECT_NE(errorText(plantedFaultError(saved)).find("live device"), std::string::npos);
   saved.plant_fault = "shift-t";
-  EXPECT_EQ(plantedFaultError(saved), "") << "planted in the loaded results";
+  EXPECT_EQ(errorText(plantedFaultError(saved)), "") << "planted in the loaded results";
 }
 
 TEST(FaultSeam, ListsEveryKindOfFault) {

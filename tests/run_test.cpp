@@ -15,9 +15,12 @@
 #include <sstream>
 #include <thread>
 
+#include <nlohmann/json.hpp>
+
 #include "bundle/results_io.h"
 #include "case/parse_case.h"
 #include "compare/compare_results.h"
+#include "report/case_journal.h"
 #include "report/rule_catalog.h"
 #include "result_support.h"
 #include "results/record_layout.h"
@@ -279,17 +282,17 @@ TEST(CaseSteps, ErrorOfAStepIsACaseError) {
             "in out/fam/unreadable/model");
 }
 
-TEST(CaseSteps, ExceptionWhileReportingIsACaseErrorAndTheReportsAreStillWritten) {
+TEST(CaseSteps, DetailsTheReportsCannotHoldAreACaseErrorAndTheReportsAreStillWritten) {
   const std::string dir = tempDir("report-seam");
-  // The report writer, with a seam: it throws on an image name the file system refuses.
+  // The report writer, with a seam: an image name the file system refuses is
+  // a case's detail the reports cannot hold (ErrorKind::Input).
   const ReportWriter writer = [](const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
-                                 const std::string& out) {
+                                 const std::string& out) -> Result<void> {
     for (const CaseOutcome& o : outcomes)
       for (const std::string& im : o.images)
         if (im.size() > 255)
-          throw fs::filesystem_error("status",
-                                     fs::path(out + "/" + o.name + "/device/" + im + ".png"),
-                                     std::make_error_code(std::errc::filename_too_long));
+          return errorOf(ErrorKind::Input, out + "/" + o.name + "/device/" + im.substr(0, 8) +
+                                               "...png: File name too long");
     return writeReports(outcomes, info, out);
   };
   CaseOutcome long_image;
@@ -300,9 +303,11 @@ TEST(CaseSteps, ExceptionWhileReportingIsACaseErrorAndTheReportsAreStillWritten)
   RunInfo info;
   info.planned_cases = 2;
   std::vector<CaseOutcome> outcomes{long_image, next};
-  EXPECT_EQ(writeRunReports(outcomes, Baseline{}, info, dir, writer), "");
+  EXPECT_EQ(errorText(writeRunReports(outcomes, Baseline{}, info, dir, writer)), "");
   ASSERT_EQ(outcomes.size(), 2u);
   EXPECT_EQ(outcomes[0].status, Status::CaseError);
+  EXPECT_NE(outcomes[0].headline.find("the reports could not show this case: "), std::string::npos)
+      << outcomes[0].headline;
   EXPECT_NE(outcomes[0].headline.find("File name too long"), std::string::npos);
   EXPECT_EQ(outcomes[1].status, Status::Pass);
   EXPECT_FALSE(fs::exists(dir + "/.report-check")) << "the scratch folder is left behind";
@@ -312,6 +317,70 @@ TEST(CaseSteps, ExceptionWhileReportingIsACaseErrorAndTheReportsAreStillWritten)
   std::getline(csv, second);
   EXPECT_EQ(first.rfind("fam/long-image,Fail,", 0), 0u) << first;
   EXPECT_EQ(second.rfind("fam/next,Pass,", 0), 0u) << second;
+}
+
+// nlohmann-json cannot write text that is not UTF-8: the real writers turn
+// its exception into an Input error, and the case whose message holds such
+// text becomes the CaseError, while the others keep their verdicts.
+TEST(CaseSteps, TextThatIsNotUtf8IsACaseErrorOfThatCaseAlone) {
+  const std::string dir = tempDir("report-utf8");
+  CaseOutcome broken;
+  broken.name = "fam/broken";
+  broken.verdict.add({Status::Fail, "R-MISS", "bad byte \xff here", {}, 0});
+  broken.deriveFromVerdict();
+  CaseOutcome fine;
+  fine.name = "fam/fine";
+  fine.verdict.add({Status::Pass, "R-MISS", "fine", {}, 0});
+  fine.deriveFromVerdict();
+  RunInfo info;
+  std::vector<CaseOutcome> outcomes{broken, fine};
+  ASSERT_EQ(errorText(writeRunReports(outcomes, Baseline{}, info, dir)), "");
+  EXPECT_EQ(outcomes[0].status, Status::CaseError);
+  EXPECT_NE(outcomes[0].headline.find("the reports could not show this case: "), std::string::npos)
+      << outcomes[0].headline;
+  EXPECT_NE(outcomes[0].headline.find("UTF-8"), std::string::npos) << outcomes[0].headline;
+  EXPECT_EQ(outcomes[1].status, Status::Pass);
+  std::ifstream summary(dir + "/summary.json");
+  const nlohmann::json j = nlohmann::json::parse(summary);
+  EXPECT_EQ(j.at("case_errors"), nlohmann::json::array({"fam/broken"}));
+}
+
+// A report that cannot be written at all is the run's error, not any case's:
+// no case is looked at alone and every verdict stays.
+TEST(CaseSteps, ReportsThatCannotBeWrittenLeaveTheCasesAsTheyWere) {
+  int calls = 0;
+  const ReportWriter writer = [&calls](const std::vector<CaseOutcome>&, const RunInfo&,
+                                       const std::string& out) -> Result<void> {
+    ++calls;
+    return errorOf(ErrorKind::Harness, "cannot write " + out + "/results.csv");
+  };
+  CaseOutcome one;
+  one.name = "fam/one";
+  std::vector<CaseOutcome> outcomes{one};
+  const Result<void> written =
+      writeRunReports(outcomes, Baseline{}, RunInfo{}, tempDir("report-io"), writer);
+  ASSERT_FALSE(written);
+  EXPECT_EQ(written.error().kind, ErrorKind::Harness);
+  EXPECT_NE(written.error().message.find("results.csv"), std::string::npos);
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(outcomes[0].status, Status::Pass);
+}
+
+// The journal refuses such a case the same way: it joins as a CaseError.
+TEST(CaseSteps, JournalTakesACaseItCannotShowAsACaseError) {
+  const std::string dir = tempDir("journal-utf8");
+  CaseOutcome o;
+  o.name = "fam/broken";
+  o.verdict.add({Status::Pass, "R-MISS", "\xc3(", {}, 0});
+  o.deriveFromVerdict();
+  journalCase(o, Baseline{}, dir);
+  EXPECT_EQ(o.status, Status::CaseError);
+  EXPECT_NE(o.headline.find("the reports could not show this case"), std::string::npos);
+  const auto journal = readJournal(dir);
+  ASSERT_TRUE(journal) << journal.error().format();
+  ASSERT_TRUE(*journal);
+  ASSERT_EQ((*journal)->size(), 1u);
+  EXPECT_EQ((*journal)->at(0).status, Status::CaseError);
 }
 
 TEST(CaseSteps, CaseFileThatDoesNotParseIsACaseError) {

@@ -16,14 +16,18 @@ namespace rayspec {
 #ifdef RAYSPEC_WITH_OIIO
 namespace {
 
-std::string writeOne(const std::string& path, OIIO::ImageSpec spec, const void* pixels) {
+// The image file at `path`; the error (ErrorKind::Harness) names it and says
+// what OpenImageIO said.
+Result<void> writeOne(const std::string& path, OIIO::ImageSpec spec, const void* pixels) {
   // Without a DateTime, the EXR writer stamps the current time (capDate):
   // two runs would write different files for the same image.
   spec.attribute("DateTime", "");
   auto out = OIIO::ImageOutput::create(path);
-  if (!out) return "OpenImageIO cannot create " + path + ": " + OIIO::geterror();
+  if (!out)
+    return errorOf(ErrorKind::Harness,
+                   "OpenImageIO cannot create " + path + ": " + OIIO::geterror());
   if (!out->open(path, spec) || !out->write_image(spec.format, pixels))
-    return path + ": " + out->geterror();
+    return errorOf(ErrorKind::Harness, path + ": " + out->geterror());
   out->close();
   return {};
 }
@@ -34,17 +38,14 @@ Result<void> writeImageFiles(const Image& im, const std::string& dir) {
   const std::vector<uint8_t> preview = previewPixels(im);
   OIIO::ImageSpec png(static_cast<int>(im.width), static_cast<int>(im.height), 4,
                       OIIO::TypeDesc::UINT8);
-  if (std::string err = writeOne(dir + "/" + im.name + ".png", png, preview.data()); !err.empty())
-    return errorMessage(std::move(err));
+  RAYSPEC_TRY_VOID(writeOne(dir + "/" + im.name + ".png", png, preview.data()));
   if (!im.is_float) return {};
   OIIO::ImageSpec exr(static_cast<int>(im.width), static_cast<int>(im.height),
                       static_cast<int>(im.channels), OIIO::TypeDesc::FLOAT);
-  if (std::string err = writeOne(dir + "/" + im.name + ".exr", exr, im.texels.data()); !err.empty())
-    return errorMessage(std::move(err));
-  return {};
+  return writeOne(dir + "/" + im.name + ".exr", exr, im.texels.data());
 }
 
-std::string writeDiffImage(const Image& a, const Image& b, const std::string& dir) {
+Result<void> writeDiffImage(const Image& a, const Image& b, const std::string& dir) {
   if (a.texels.size() != b.texels.size() || a.width != b.width || a.height != b.height) return {};
   std::vector<uint8_t> px(static_cast<size_t>(a.width) * a.height * 4, 0);
   for (size_t p = 0; p < static_cast<size_t>(a.width) * a.height; ++p) {
@@ -83,7 +84,7 @@ bool imageFilesSupported() {
 Result<void> writeImageFiles(const Image&, const std::string&) {
   return {};
 }
-std::string writeDiffImage(const Image&, const Image&, const std::string&) {
+Result<void> writeDiffImage(const Image&, const Image&, const std::string&) {
   return {};
 }
 bool imageFilesSupported() {

@@ -34,23 +34,24 @@ bool writeWords(const fs::path& path, const Words& words) {
 // Reads path as whole words after checking that it holds `expected` words
 // (or none, when empty_ok); the error names the file, its size and the size
 // results.json implies.
-std::string readSizedWords(const fs::path& path, uint64_t expected, bool empty_ok,
-                           const std::string& implied, BulkWords& words) {
+Result<void> readSizedWords(const fs::path& path, uint64_t expected, bool empty_ok,
+                            const std::string& implied, BulkWords& words) {
   std::error_code ec;
   if (expected > std::numeric_limits<uint64_t>::max() / 4)
-    return "results.json says " + implied + ": more words than a file can hold";
+    return errorMessage("results.json says " + implied + ": more words than a file can hold");
   if (!fs::is_regular_file(fs::symlink_status(path, ec)))
-    return "cannot read " + path.string() + ": not a regular file";
+    return errorMessage("cannot read " + path.string() + ": not a regular file");
   const uint64_t bytes = fs::file_size(path, ec);
-  if (ec) return "cannot read " + path.string();
+  if (ec) return errorMessage("cannot read " + path.string());
   if (bytes != expected * 4 && !(empty_ok && bytes == 0))
-    return path.string() + " holds " + std::to_string(bytes) + " bytes; results.json says " +
-           implied + " = " + std::to_string(expected) + " words (" + std::to_string(expected * 4) +
-           " bytes)";
+    return errorMessage(path.string() + " holds " + std::to_string(bytes) +
+                        " bytes; results.json says " + implied + " = " + std::to_string(expected) +
+                        " words (" + std::to_string(expected * 4) + " bytes)");
   std::ifstream in(path, std::ios::binary);
   words.resize(bytes / 4);
   in.read(reinterpret_cast<char*>(words.data()), static_cast<std::streamsize>(bytes));
-  return in ? std::string() : "cannot read " + path.string();
+  if (!in) return errorMessage("cannot read " + path.string());
+  return {};
 }
 
 // An error about a value in dir/results.json: "DIR/results.json: MESSAGE".
@@ -299,9 +300,7 @@ Result<void> readImages(const json& j, FieldReader& field, Results& r) {
     if (im.width && texels / im.width != im.height)
       return badValue(dir, "images: width x height overflows");
     const uint64_t words = texels * im.channels;
-    if (std::string e = readSizedWords(dir / (im.name + ".raw"), words, false, implied, im.texels);
-        !e.empty())
-      return errorMessage(std::move(e));
+    RAYSPEC_TRY_VOID(readSizedWords(dir / (im.name + ".raw"), words, false, implied, im.texels));
     r.images.push_back(std::move(im));
   }
   return {};
@@ -410,11 +409,8 @@ Result<Results> readResults(const std::string& dir_name) {
   // No records at all when the case records nothing per ray (or its side died).
   const std::string implied = "width x height x record words " + std::to_string(r.width) + " x " +
                               std::to_string(r.height) + " x " + std::to_string(recordWords());
-  if (std::string e =
-          readSizedWords(dir / "records.bin", uint64_t(r.width) * r.height * recordWords(), true,
-                         implied, r.records);
-      !e.empty())
-    return errorMessage(std::move(e));
+  RAYSPEC_TRY_VOID(readSizedWords(dir / "records.bin", uint64_t(r.width) * r.height * recordWords(),
+                                  true, implied, r.records));
   return r;
 }
 

@@ -143,8 +143,8 @@ int runCompare(const CompareOptions& opt) {
   }
   info.coverage = ruleCoverage(info.catalog, case_rules);
   summary.print();
-  const std::string err = writeReports(summary.outcomes(), info, opt.out);
-  if (!err.empty()) std::fprintf(stderr, "%s\n", err.c_str());
+  if (const Result<void> written = writeReports(summary.outcomes(), info, opt.out); !written)
+    std::fprintf(stderr, "%s\n", written.error().format().c_str());
   std::printf("Reports: %s/report.html, results.csv, junit.xml, summary.json\n", opt.out.c_str());
   if (summary.failed()) return kExitFailing;
   if (summary.allNotSupported()) {

@@ -23,26 +23,27 @@ int runMerge(const MergeOptions& opt) {
   const Baseline& baseline = *loaded;
   Result<std::vector<Rule>> catalog = loadRuleCatalog(opt.rules_file);
   if (!catalog) std::fprintf(stderr, "rayspec merge: %s\n", catalog.error().format().c_str());
-  const MergeResult merged =
+  const Result<SavedRun> run =
       mergeRuns(opt.dirs, opt.out, baseline, catalog ? *catalog : std::vector<Rule>{});
-  if (!merged.error.empty()) {
-    std::fprintf(stderr, "rayspec merge: %s\n", merged.error.c_str());
+  if (!run) {
+    std::fprintf(stderr, "rayspec merge: %s\n", run.error().format().c_str());
     return kExitSetup;
   }
-  RunSummary summary(merged.run.outcomes.size(), false);
-  for (const CaseOutcome& o : merged.run.outcomes) summary.add(o);
-  for (const std::string& m : merged.run.info.teardown_errors) summary.addTeardownError(m);
-  std::printf("Merged %zu folders: %zu cases on %s\n", opt.dirs.size(), merged.run.outcomes.size(),
-              merged.run.info.device.c_str());
+  const SavedRun& merged = *run;
+  RunSummary summary(merged.outcomes.size(), false);
+  for (const CaseOutcome& o : merged.outcomes) summary.add(o);
+  for (const std::string& m : merged.info.teardown_errors) summary.addTeardownError(m);
+  std::printf("Merged %zu folders: %zu cases on %s\n", opt.dirs.size(), merged.outcomes.size(),
+              merged.info.device.c_str());
   summary.print();
-  if (merged.run.info.interrupted)
-    std::printf("INTERRUPTED: %zu of %zu planned cases ran\n", merged.run.outcomes.size(),
-                merged.run.info.planned_cases);
+  if (merged.info.interrupted)
+    std::printf("INTERRUPTED: %zu of %zu planned cases ran\n", merged.outcomes.size(),
+                merged.info.planned_cases);
   std::printf("Reports: %s/report.html, results.csv, failures.csv, junit.xml, summary.json\n",
               opt.out.c_str());
-  const int status = runExitStatus(summary, merged.run.info.planned_cases, true, 0);
+  const int status = runExitStatus(summary, merged.info.planned_cases, true, 0);
   // A shard that stopped early: the cases it did not run are no pass.
-  return merged.run.info.interrupted && status == kExitPass ? kExitFailing : status;
+  return merged.info.interrupted && status == kExitPass ? kExitFailing : status;
 }
 
 }  // namespace rayspec

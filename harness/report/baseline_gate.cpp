@@ -80,8 +80,8 @@ bool failsRun(const CaseOutcome& o) {
   return isFailing(o.status);
 }
 
-std::string writeFailuresCsv(const std::vector<CaseOutcome>& outcomes,
-                             const std::string& baseline_file, const std::string& path) {
+Result<void> writeFailuresCsv(const std::vector<CaseOutcome>& outcomes,
+                              const std::string& baseline_file, const std::string& path) {
   std::ofstream out(path);
   out << "# Results "
       << (baseline_file.empty() ? "that fail the run (no baseline given)"
@@ -95,7 +95,8 @@ std::string writeFailuresCsv(const std::vector<CaseOutcome>& outcomes,
     if (!o.baseline_note.empty()) out << ": " << o.baseline_note;
     out << '\n';
   }
-  return out ? std::string() : "cannot write " + path;
+  if (!out) return errorOf(ErrorKind::Harness, "cannot write " + path);
+  return {};
 }
 
 const char* gateWord(BaselineMatch m) {

@@ -43,9 +43,10 @@ bool failsRun(const CaseOutcome& outcome);
 // The results the baseline did not expect (those that fail the run, and the
 // flakes), as a baseline-form CSV: `case,Status` with a comment saying what
 // was expected. Written as failures.csv into a run folder.
-// baseline_file: the baseline the run was judged by ("" none).
-std::string writeFailuresCsv(const std::vector<CaseOutcome>& outcomes,
-                             const std::string& baseline_file, const std::string& path);
+// baseline_file: the baseline the run was judged by ("" none). The error:
+// ErrorKind::Harness, the file not written.
+Result<void> writeFailuresCsv(const std::vector<CaseOutcome>& outcomes,
+                              const std::string& baseline_file, const std::string& path);
 
 // A few words for the console and the reports: "expected", "known flake", ...
 const char* gateWord(BaselineMatch m);

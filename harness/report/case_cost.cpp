@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "bundle/step_cost_json.h"
+#include "report/json_text.h"
 
 namespace rayspec {
 namespace {
@@ -37,14 +38,16 @@ Result<CaseCost> caseCostFromJson(const nlohmann::json& j) {
   return cost;
 }
 
-std::string writeCaseCost(const CaseOutcome& o, const std::string& path) {
+Result<void> writeCaseCost(const CaseOutcome& o, const std::string& path) {
   nlohmann::json j = caseCostJson(o.cost);
   j["case"] = o.name;
   j["seconds"] = o.seconds;
   j["accounted"] = o.cost.total();
+  RAYSPEC_TRY(const std::string text, jsonText(j, 1));
   std::ofstream out(path);
-  out << j.dump(1) << '\n';
-  return out ? std::string() : "cannot write " + path;
+  out << text << '\n';
+  if (!out) return errorOf(ErrorKind::Harness, "cannot write " + path);
+  return {};
 }
 
 CaseCost runCost(const std::vector<CaseOutcome>& outcomes) {

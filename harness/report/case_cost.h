@@ -22,8 +22,9 @@ nlohmann::json caseCostJson(const CaseCost& cost);
 // wrong type: nlohmann-json's exception, for the reader of the JSON).
 Result<CaseCost> caseCostFromJson(const nlohmann::json& j);
 
-// cost.json of one case; an error message or "".
-std::string writeCaseCost(const CaseOutcome& outcome, const std::string& path);
+// cost.json of one case; the error: ErrorKind::Harness, the file not written,
+// or ErrorKind::Input, the case's name not UTF-8 (report/json_text.h).
+Result<void> writeCaseCost(const CaseOutcome& outcome, const std::string& path);
 
 // Every case's cost summed.
 CaseCost runCost(const std::vector<CaseOutcome>& outcomes);

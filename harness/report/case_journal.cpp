@@ -3,6 +3,7 @@
 #include <fstream>
 #include <map>
 
+#include "report/json_text.h"
 #include "report/outcome_json.h"
 
 namespace rayspec {
@@ -14,17 +15,20 @@ std::string journalPath(const std::string& dir) {
 
 }  // namespace
 
-std::string startJournal(const std::string& dir) {
+Result<void> startJournal(const std::string& dir) {
   std::ofstream out(journalPath(dir), std::ios::trunc);
-  return out ? std::string() : "cannot write " + journalPath(dir);
+  if (!out) return errorOf(ErrorKind::Harness, "cannot write " + journalPath(dir));
+  return {};
 }
 
-std::string appendJournal(const CaseOutcome& outcome, const std::string& dir) {
-  const std::string line = outcomeJson(outcome).dump() + "\n";
+Result<void> appendJournal(const CaseOutcome& outcome, const std::string& dir) {
+  RAYSPEC_TRY(std::string line, jsonText(outcomeJson(outcome)));
+  line += '\n';  // the line whole in one write
   std::ofstream out(journalPath(dir), std::ios::app);
   out << line;
   out.flush();
-  return out ? std::string() : "cannot append to " + journalPath(dir);
+  if (!out) return errorOf(ErrorKind::Harness, "cannot append to " + journalPath(dir));
+  return {};
 }
 
 namespace {

@@ -18,11 +18,13 @@ namespace rayspec {
 
 inline constexpr const char* kJournalFile = "outcomes.jsonl";
 
-// Empties the journal of `dir` (a run that starts anew).
-std::string startJournal(const std::string& dir);
-// Appends the outcome; the error ("" none). Throws what outcomeJson throws
-// (a case whose details JSON cannot hold).
-std::string appendJournal(const CaseOutcome& outcome, const std::string& dir);
+// Empties the journal of `dir` (a run that starts anew); the error:
+// ErrorKind::Harness, the file not written.
+Result<void> startJournal(const std::string& dir);
+// Appends the outcome. The error: ErrorKind::Harness, the file not written;
+// ErrorKind::Input, a case whose details JSON cannot hold (text that is not
+// UTF-8, report/json_text.h), nothing appended.
+Result<void> appendJournal(const CaseOutcome& outcome, const std::string& dir);
 // The outcomes the journal holds (nullopt: `dir` has no journal), a case that
 // ended twice (a resumed run) by its last line; a last line cut short by a
 // kill is left out. The error: a line that is not an outcome (names the file

@@ -12,17 +12,15 @@
 
 namespace rayspec {
 
-struct MergeResult {
-  SavedRun run;       // info and outcomes (in case-name order)
-  std::string error;  // "" when merged; otherwise nothing was written
-};
-
 // Reads every folder in `dirs` and joins them into `out` (created; case
 // folders are hard-linked where the file system allows, copied otherwise).
 // Refuses folders from different devices or model tiers, a case found in two
 // folders, and `out` being one of `dirs`. A baseline that is not empty is
 // applied to every outcome anew (no re-runs: they happened in the runs).
-MergeResult mergeRuns(const std::vector<std::string>& dirs, const std::string& out,
-                      const Baseline& baseline, const std::vector<Rule>& catalog);
+// The merged run: its info and outcomes (in case-name order). The error: a
+// refusal or a folder that cannot be read, before anything is written; or a
+// case folder not copied or the reports not written (ErrorKind::Harness).
+Result<SavedRun> mergeRuns(const std::vector<std::string>& dirs, const std::string& out,
+                           const Baseline& baseline, const std::vector<Rule>& catalog);
 
 }  // namespace rayspec

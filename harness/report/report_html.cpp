@@ -195,8 +195,8 @@ void caseGroups(std::ostream& out, const std::vector<CaseOutcome>& outcomes,
 
 }  // namespace
 
-std::string writeReportHtml(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
-                            const std::string& path) {
+Result<void> writeReportHtml(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
+                             const std::string& path) {
   const std::string dir = std::filesystem::path(path).parent_path().string();
   std::ostringstream out;
   header(out, outcomes, info);
@@ -221,7 +221,8 @@ std::string writeReportHtml(const std::vector<CaseOutcome>& outcomes, const RunI
   out << "<script>" << kReportScript << "</script>\n</body></html>\n";
   std::ofstream file(path);
   file << out.str();
-  return file ? std::string() : "cannot write " + path;
+  if (!file) return errorOf(ErrorKind::Harness, "cannot write " + path);
+  return {};
 }
 
 }  // namespace rayspec

@@ -9,6 +9,7 @@
 #include "report/baseline_gate.h"
 #include "report/case_cost.h"
 #include "report/escape.h"
+#include "report/json_text.h"
 #include "report/outcome_json.h"
 #include "report/write_reports.h"
 
@@ -21,14 +22,15 @@ const char* deqpStatusName(Status s) {
   return kDeqpNames[static_cast<size_t>(s)];
 }
 
-std::string writeResultsCsv(const std::vector<CaseOutcome>& outcomes, const std::string& path) {
+Result<void> writeResultsCsv(const std::vector<CaseOutcome>& outcomes, const std::string& path) {
   std::ofstream out(path);
   for (const CaseOutcome& o : outcomes)
     out << csvField(o.name) << ',' << deqpResultName(o) << ',' << o.seconds << '\n';
-  return out ? std::string() : "cannot write " + path;
+  if (!out) return errorOf(ErrorKind::Harness, "cannot write " + path);
+  return {};
 }
 
-std::string writeJunitXml(const std::vector<CaseOutcome>& outcomes, const std::string& path) {
+Result<void> writeJunitXml(const std::vector<CaseOutcome>& outcomes, const std::string& path) {
   int failures = 0, skipped = 0, errors = 0;
   double total = 0;
   for (const CaseOutcome& o : outcomes) {
@@ -65,11 +67,12 @@ std::string writeJunitXml(const std::vector<CaseOutcome>& outcomes, const std::s
     out << "</testcase>\n";
   }
   out << "</testsuite></testsuites>\n";
-  return out ? std::string() : "cannot write " + path;
+  if (!out) return errorOf(ErrorKind::Harness, "cannot write " + path);
+  return {};
 }
 
-std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
-                             const std::string& path) {
+Result<void> writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
+                              const std::string& path) {
   nlohmann::json j;
   j["device"] = info.device;
   j["icd"] = info.icd;
@@ -95,9 +98,11 @@ std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const Run
   j["counts"] = counts;
   j["case_errors"] = case_errors;     // cases at fault themselves, not the device
   j["cost"] = runCostJson(outcomes);  // where the run's time went (report/case_cost.h)
+  RAYSPEC_TRY(const std::string text, jsonText(j, 1));
   std::ofstream out(path);
-  out << j.dump(1) << '\n';
-  return out ? std::string() : "cannot write " + path;
+  out << text << '\n';
+  if (!out) return errorOf(ErrorKind::Harness, "cannot write " + path);
+  return {};
 }
 
 std::string runCompleteness(const std::vector<CaseOutcome>& outcomes, const RunInfo& info) {
@@ -125,8 +130,8 @@ void caseText(std::ostream& out, const CaseOutcome& o) {
 
 }  // namespace
 
-std::string writeSummaryText(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
-                             const std::string& path) {
+Result<void> writeSummaryText(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
+                              const std::string& path) {
   std::ofstream out(path);
   out << runCompleteness(outcomes, info) << '\n';
   for (const CaseOutcome& o : outcomes)
@@ -139,21 +144,23 @@ std::string writeSummaryText(const std::vector<CaseOutcome>& outcomes, const Run
     caseText(out, o);
   }
   out << '\n' << runCostText(outcomes);
-  return out ? std::string() : "cannot write " + path;
+  if (!out) return errorOf(ErrorKind::Harness, "cannot write " + path);
+  return {};
 }
 
-std::string writeReports(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
-                         const std::string& dir) {
+Result<void> writeReports(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
+                          const std::string& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  if (ec) return "cannot create " + dir + ": " + ec.message();
-  for (const std::string& err : {writeResultsCsv(outcomes, dir + "/results.csv"),
-                                 writeJunitXml(outcomes, dir + "/junit.xml"),
-                                 writeSummaryJson(outcomes, info, dir + "/summary.json"),
-                                 writeSummaryText(outcomes, info, dir + "/summary.txt"),
-                                 writeFailuresCsv(outcomes, info.baseline, dir + "/failures.csv"),
-                                 writeReportHtml(outcomes, info, dir + "/report.html")})
-    if (!err.empty()) return err;
+  if (ec) return errorOf(ErrorKind::Harness, "cannot create " + dir + ": " + ec.message());
+  for (const Result<void>& written :
+       {writeResultsCsv(outcomes, dir + "/results.csv"),
+        writeJunitXml(outcomes, dir + "/junit.xml"),
+        writeSummaryJson(outcomes, info, dir + "/summary.json"),
+        writeSummaryText(outcomes, info, dir + "/summary.txt"),
+        writeFailuresCsv(outcomes, info.baseline, dir + "/failures.csv"),
+        writeReportHtml(outcomes, info, dir + "/report.html")})
+    if (!written) return written.error();
   return {};
 }
 

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "base/result.h"
 #include "report/case_outcome.h"
 #include "report/rule_catalog.h"
 
@@ -52,19 +53,23 @@ std::string variantText(const std::string& variant);
 // deqp-runner's name for a status.
 const char* deqpStatusName(Status s);
 
-std::string writeResultsCsv(const std::vector<CaseOutcome>& outcomes, const std::string& path);
-std::string writeJunitXml(const std::vector<CaseOutcome>& outcomes, const std::string& path);
-std::string writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
-                             const std::string& path);
-std::string writeSummaryText(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
-                             const std::string& path);
+// Each writer: ErrorKind::Harness when its file cannot be written ("cannot
+// write PATH"); the JSON one also ErrorKind::Input when a case's details are
+// text JSON cannot hold (report/json_text.h).
+Result<void> writeResultsCsv(const std::vector<CaseOutcome>& outcomes, const std::string& path);
+Result<void> writeJunitXml(const std::vector<CaseOutcome>& outcomes, const std::string& path);
+Result<void> writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
+                              const std::string& path);
+Result<void> writeSummaryText(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
+                              const std::string& path);
 // "complete: 12 of 12 cases" or "INTERRUPTED: 3 of 12 planned cases ran".
 std::string runCompleteness(const std::vector<CaseOutcome>& outcomes, const RunInfo& info);
-std::string writeReportHtml(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
-                            const std::string& path);
+Result<void> writeReportHtml(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
+                             const std::string& path);
 
-// All of the above into dir; returns the first error.
-std::string writeReports(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
-                         const std::string& dir);
+// All of the above into dir (each written even when one before failed);
+// returns the first error.
+Result<void> writeReports(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
+                          const std::string& dir);
 
 }  // namespace rayspec

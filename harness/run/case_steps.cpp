@@ -225,55 +225,57 @@ Result<CaseOutcome> CaseRunner::run(const Case& c, bool* interrupted, const std:
   return costed(std::move(out), device, model);
 }
 
+namespace {
+
+// The CaseError a case becomes when the reports cannot show its details.
+CaseOutcome unshownCase(const CaseOutcome& o, const Baseline& baseline, const Error& why) {
+  CaseOutcome out = caseErrorOutcome(o.name, o.rules, "harness",
+                                     "the reports could not show this case: " + why.format());
+  applyBaseline(baseline, out);
+  return out;
+}
+
+}  // namespace
+
 void journalCase(CaseOutcome& outcome, const Baseline& baseline, const std::string& dir) {
   StepTimer report_time(outcome.cost[CostSide::Parent], CostStep::Reports);
-  std::string err;
-  try {
-    err = appendJournal(outcome, dir);
-  } catch (const std::exception& e) {
+  Result<void> written = appendJournal(outcome, dir);
+  if (!written && written.error().kind == ErrorKind::Input) {
     // This case's details do not go into the reports: keep the case, as a CaseError, without them.
-    outcome = caseErrorOutcome(outcome.name, outcome.rules, "harness",
-                               std::string("the reports could not show this case: ") + e.what());
-    applyBaseline(baseline, outcome);
-    err = appendJournal(outcome, dir);
+    outcome = unshownCase(outcome, baseline, written.error());
+    written = appendJournal(outcome, dir);
   }
   report_time.stop();
   // Where the case's time went, beside its bundles (a skipped case has none;
   // a name that is no case name never became a folder of this run).
   if (caseNameProblem(outcome.name).empty() &&
       std::filesystem::is_directory(dir + "/" + outcome.name))
-    if (const std::string e = writeCaseCost(outcome, dir + "/" + outcome.name + "/cost.json");
-        !e.empty() && err.empty())
-      err = e;
-  if (!err.empty()) std::fprintf(stderr, "%s\n", err.c_str());
+    if (const Result<void> cost = writeCaseCost(outcome, dir + "/" + outcome.name + "/cost.json");
+        !cost && written)
+      written = cost;
+  if (!written) std::fprintf(stderr, "%s\n", written.error().format().c_str());
 }
 
-std::string writeRunReports(std::vector<CaseOutcome>& outcomes, const Baseline& baseline,
-                            const RunInfo& info, const std::string& dir,
-                            const ReportWriter& write) {
-  try {
-    return write(outcomes, info, dir);
-  } catch (const std::exception&) {
-  }
+Result<void> writeRunReports(std::vector<CaseOutcome>& outcomes, const Baseline& baseline,
+                             const RunInfo& info, const std::string& dir,
+                             const ReportWriter& write) {
+  const Result<void> written = write(outcomes, info, dir);
+  // Only a case's details are worth looking for case by case; a file that
+  // cannot be written fails alike for every case.
+  if (written || written.error().kind != ErrorKind::Input) return written;
   // Some case's details broke the reports: each case alone, into a scratch
   // folder, finds which; those become CaseErrors and the reports are written again.
   const std::string scratch = dir + "/.report-check";
-  for (CaseOutcome& o : outcomes) {
-    try {
-      write({o}, info, scratch);
-    } catch (const std::exception& e) {
-      o = caseErrorOutcome(o.name, o.rules, "harness",
-                           std::string("the reports could not show this case: ") + e.what());
-      applyBaseline(baseline, o);
-    }
-  }
+  for (CaseOutcome& o : outcomes)
+    if (const Result<void> alone = write({o}, info, scratch);
+        !alone && alone.error().kind == ErrorKind::Input)
+      o = unshownCase(o, baseline, alone.error());
   std::error_code ec;
   std::filesystem::remove_all(scratch, ec);
-  try {
-    return write(outcomes, info, dir);
-  } catch (const std::exception& e) {
-    return std::string("cannot write the reports: ") + e.what();
-  }
+  const Result<void> again = write(outcomes, info, dir);
+  if (!again && again.error().kind == ErrorKind::Input)
+    return errorOf(ErrorKind::Harness, "cannot write the reports: " + again.error().format());
+  return again;
 }
 
 }  // namespace rayspec

@@ -79,20 +79,24 @@ class CaseRunner {
   std::unique_ptr<Backend> saved_device_;  // --device-results in this process
 };
 
-// Writes the reports of a run folder; the run loop's is writeReports.
-using ReportWriter = std::function<std::string(const std::vector<CaseOutcome>&, const RunInfo&,
-                                               const std::string& dir)>;
+// Writes the reports of a run folder; the run loop's is writeReports. The
+// error: ErrorKind::Input when some case's details are what the reports
+// cannot hold, any other kind when they cannot be written at all.
+using ReportWriter = std::function<Result<void>(const std::vector<CaseOutcome>&, const RunInfo&,
+                                                const std::string& dir)>;
 
 // A case that ended joins the run's journal (report/case_journal.h), and
-// its cost.json its bundles; when its details cannot be written, the case
-// becomes a CaseError (judged by the baseline anew).
+// its cost.json its bundles; when its details cannot be written (an
+// ErrorKind::Input error), the case becomes a CaseError (judged by the
+// baseline anew). A file not written is said on stderr.
 void journalCase(CaseOutcome& outcome, const Baseline& baseline, const std::string& dir);
 
 // The reports of every case so far (report/write_reports.h); when a case's
 // details break them, that case becomes a CaseError (judged by the baseline
-// anew) and the reports are written without them. The error ("" none).
-std::string writeRunReports(std::vector<CaseOutcome>& outcomes, const Baseline& baseline,
-                            const RunInfo& info, const std::string& dir,
-                            const ReportWriter& write = writeReports);
+// anew) and the reports are written without them. The error: the reports
+// not written (ErrorKind::Harness, or what `write` returned).
+Result<void> writeRunReports(std::vector<CaseOutcome>& outcomes, const Baseline& baseline,
+                             const RunInfo& info, const std::string& dir,
+                             const ReportWriter& write = writeReports);
 
 }  // namespace rayspec

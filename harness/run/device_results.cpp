@@ -56,30 +56,33 @@ Result<Results> SavedDevice::run(const Case& c, const Plan& plan) {
   return std::move(r);
 }
 
-std::string deviceResultsError(const RunOptions& opt) {
+Result<void> deviceResultsError(const RunOptions& opt) {
   const std::string& dir = opt.device_results;
   if (dir.empty()) return {};
   const std::string what = "--device-results " + dir;
   if (!modelInThisBuild())
-    return what + ": this run-only build has no model to judge by; judge where the full build is";
-  if (opt.no_model) return what + " with --no-model: nothing to judge the saved results by";
+    return errorMessage(
+        what + ": this run-only build has no model to judge by; judge where the full build is");
+  if (opt.no_model)
+    return errorMessage(what + " with --no-model: nothing to judge the saved results by");
   if (opt.no_device)
-    return what + " with --no-device: the saved device results are the device side";
+    return errorMessage(what + " with --no-device: the saved device results are the device side");
   if (!opt.device.empty())
-    return what + " with --device: no device runs, the results were saved on one";
+    return errorMessage(what + " with --device: no device runs, the results were saved on one");
   std::error_code ec;
-  if (!fs::is_directory(dir, ec)) return what + ": not a folder";
+  if (!fs::is_directory(dir, ec)) return errorMessage(what + ": not a folder");
   if (fs::weakly_canonical(dir, ec) == fs::weakly_canonical(opt.out, ec))
-    return what +
-           " is the --out folder: the run would remove the results it reads; give another --out";
+    return errorMessage(
+        what +
+        " is the --out folder: the run would remove the results it reads; give another --out");
   // The saved run did its cases by a variant (--through, --permute, --move):
   // they are judged by the same one only.
   if (fs::exists(fs::path(dir) / "summary.json", ec))
     if (const Result<SavedRun> saved = readSavedRun(dir);
         saved && saved->info.variant != runVariant(opt))
-      return what + " ran its cases " + variantText(saved->info.variant) +
-             ", this run would judge them " + variantText(runVariant(opt)) +
-             ": give the same --through, --permute and --move";
+      return errorMessage(what + " ran its cases " + variantText(saved->info.variant) +
+                          ", this run would judge them " + variantText(runVariant(opt)) +
+                          ": give the same --through, --permute and --move");
   return {};
 }
 

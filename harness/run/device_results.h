@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "base/result.h"
 #include "library/case_discovery.h"
 #include "run/backend.h"
 #include "run/run_options.h"
@@ -40,11 +41,12 @@ class SavedDevice : public Backend {
 // DIR/<case>/device.
 std::string savedBundleDir(const std::string& dir, const std::string& case_name);
 
-// Why --device-results cannot work with the other options ("" when it can,
-// or when it is not given): no model in this build, --no-model, --no-device,
-// --device, a Vulkan error fault (they need a live device), DIR not a folder,
-// DIR the --out folder (the run would remove what it reads).
-std::string deviceResultsError(const RunOptions& opt);
+// Why --device-results cannot work with the other options, an
+// ErrorKind::Input error (none when it can, or when it is not given): no
+// model in this build, --no-model, --no-device, --device, a Vulkan error
+// fault (they need a live device), DIR not a folder, DIR the --out folder
+// (the run would remove what it reads).
+Result<void> deviceResultsError(const RunOptions& opt);
 
 // The devices these cases' saved bundles ran on, each once ("A" or "A, B");
 // "" when none of them has a bundle naming one.

@@ -39,20 +39,22 @@ void armResultsFault(Side& s, const std::string& fault, std::shared_ptr<const Re
 
 }  // namespace
 
-std::string plantedFaultError(const RunOptions& opt) {
+Result<void> plantedFaultError(const RunOptions& opt) {
   const std::string& name = opt.plant_fault;
   if (name.empty()) return {};
   const bool vulkan_error = deviceErrorFault(name).has_value();
-  if (!isFaultName(name) && !vulkan_error) return "unknown fault '" + name + "'";
+  if (!isFaultName(name) && !vulkan_error) return errorMessage("unknown fault '" + name + "'");
   if (isProcessFault(name) && opt.no_isolation)
-    return "the fault '" + name + "' needs the device in a child process (no --no-isolation)";
+    return errorMessage("the fault '" + name +
+                        "' needs the device in a child process (no --no-isolation)");
   if (!modelInThisBuild() && !vulkan_error && !isProcessFault(name))
-    return "the fault '" + name +
-           "' is made from the model's results, which this run-only build lacks (crash, hang and "
-           "the Vulkan error faults work here; plant it when judging, with --device-results)";
+    return errorMessage(
+        "the fault '" + name +
+        "' is made from the model's results, which this run-only build lacks (crash, hang and "
+        "the Vulkan error faults work here; plant it when judging, with --device-results)");
   if (vulkan_error && !opt.device_results.empty())
-    return "the fault '" + name +
-           "' makes a Vulkan call fail: it needs a live device, not --device-results";
+    return errorMessage("the fault '" + name +
+                        "' makes a Vulkan call fail: it needs a live device, not --device-results");
   return {};
 }
 

@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "base/result.h"
 #include "results/results.h"
 #include "run/isolation.h"
 #include "run/run_options.h"
@@ -18,8 +19,8 @@ namespace rayspec {
 // What stops the fault asked for from being planted in this run: a name that
 // is no fault, a process fault without child processes, a fault made from
 // the model's results in a run-only build, a Vulkan error fault on saved
-// results. "" when nothing does.
-std::string plantedFaultError(const RunOptions& opt);
+// results; an ErrorKind::Input error saying which.
+Result<void> plantedFaultError(const RunOptions& opt);
 
 // The names `--plant-fault` takes, comma-separated, for the option's help.
 std::string plantableFaultNames();

@@ -1,5 +1,7 @@
 #include "run/judge_case.h"
 
+#include <cstdio>
+
 #include "bundle/image_files.h"
 #include "compare/compare_results.h"
 #include "run/failing_rays.h"
@@ -16,7 +18,12 @@ CaseOutcome judgeCase(const Case& c, const Plan& plan, const Results& device, co
   out.verdict = compareResults(c, plan, device, model);
   for (const Image& di : device.images)
     for (const Image& mi : model.images)
-      if (di.name == mi.name && di.texels != mi.texels) writeDiffImage(di, mi, dir + "/diff");
+      if (di.name == mi.name && di.texels != mi.texels)
+        // A picture for people: the verdict stands without it, so its
+        // failure is said and not the case's.
+        if (const Result<void> diff = writeDiffImage(di, mi, dir + "/diff"); !diff)
+          std::fprintf(stderr, "%s: difference image: %s\n", c.name.c_str(),
+                       diff.error().format().c_str());
   out.failing_rays = failingRays(out.verdict, plan, device, model);
   for (const ImageOutput& im : plan.images) out.images.push_back(im.name);
   out.deriveFromVerdict();

@@ -191,10 +191,10 @@ class RunBook {
     std::lock_guard<std::mutex> lock(mutex_);
     return endedLocked();
   }
-  // The reports of what ended; the error ("" none).
-  std::string writeAll() {
+  // The reports of what ended (an error is said on stderr).
+  void writeAll() {
     std::lock_guard<std::mutex> lock(mutex_);
-    return writeReportsLocked();
+    writeReportsLocked();
   }
   std::vector<std::string> teardown() {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -210,16 +210,15 @@ class RunBook {
       if (o) out.push_back(*o);
     return out;
   }
-  std::string writeReportsLocked() {
+  void writeReportsLocked() {
     std::vector<CaseOutcome> all = endedLocked();
     info_.teardown_errors = teardown_;
-    const std::string err = writeRunReports(all, baseline_, info_, out_);
+    const Result<void> written = writeRunReports(all, baseline_, info_, out_);
     // A case the reports could not show stays the CaseError it became.
     size_t i = 0;
     for (std::optional<CaseOutcome>& o : outcomes_)
       if (o) *o = std::move(all[i++]);
-    if (!err.empty()) std::fprintf(stderr, "%s\n", err.c_str());
-    return err;
+    if (!written) std::fprintf(stderr, "%s\n", written.error().format().c_str());
   }
 
   std::mutex mutex_;
@@ -447,8 +446,8 @@ int runPreparedCases(const RunOptions& opt, const std::vector<CaseFile>& files,
   std::error_code ec;
   std::filesystem::create_directories(opt.out, ec);
   if (!opt.resume)
-    if (const std::string e = startJournal(opt.out); !e.empty())
-      std::fprintf(stderr, "rayspec run: %s\n", e.c_str());
+    if (const Result<void> started = startJournal(opt.out); !started)
+      std::fprintf(stderr, "rayspec run: %s\n", started.error().format().c_str());
   RunBook book(prepared, baseline, info, opt.out);
   book.writeAll();  // empty and marked interrupted until the run ends
   const std::vector<size_t> order = dealOrder(prepared, opt, jobs, book);

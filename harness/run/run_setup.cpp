@@ -57,9 +57,9 @@ Result<std::optional<Shard>> chosenShard(const RunOptions& opt) {
 }
 
 // --resume: what the run folder already holds must come from the same kind
-// of run. The message, or "".
-std::string resumeError(const SavedRun& saved, const RunInfo& info, const std::string& out,
-                        const std::vector<CaseFile>& files) {
+// of run. The error: ErrorKind::Input, saying why not.
+Result<void> resumeError(const SavedRun& saved, const RunInfo& info, const std::string& out,
+                         const std::vector<CaseFile>& files) {
   // Every case the folder holds must be selected again, or --resume would
   // drop it from results.csv and summary.json.
   std::set<std::string> selected;
@@ -69,31 +69,34 @@ std::string resumeError(const SavedRun& saved, const RunInfo& info, const std::s
   for (const CaseOutcome& o : saved.outcomes)
     if (!selected.count(o.name) && unselected++ == 0) first = o.name;
   if (unselected)
-    return "--resume: " + out + " holds " + std::to_string(unselected) +
-           " case(s) this run does not select (" + first + (unselected > 1 ? ", ..." : "") +
-           "): resume with the selection the run started with";
+    return errorMessage("--resume: " + out + " holds " + std::to_string(unselected) +
+                        " case(s) this run does not select (" + first +
+                        (unselected > 1 ? ", ..." : "") +
+                        "): resume with the selection the run started with");
   if (saved.info.model_tier != info.model_tier)
-    return "--resume: " + out + " was run with model tier '" + saved.info.model_tier +
-           "', this run uses '" + info.model_tier + "'";
+    return errorMessage("--resume: " + out + " was run with model tier '" + saved.info.model_tier +
+                        "', this run uses '" + info.model_tier + "'");
   if (saved.info.device != info.device)
-    return "--resume: " + out + " was run on '" + saved.info.device + "', this run is on '" +
-           info.device + "'";
+    return errorMessage("--resume: " + out + " was run on '" + saved.info.device +
+                        "', this run is on '" + info.device + "'");
   if (saved.info.variant != info.variant)
-    return "--resume: " + out + " ran its cases " + variantText(saved.info.variant) +
-           ", this run would run them " + variantText(info.variant);
+    return errorMessage("--resume: " + out + " ran its cases " + variantText(saved.info.variant) +
+                        ", this run would run them " + variantText(info.variant));
   return {};
 }
 
-// Options that cannot work together; the message, or "".
-std::string optionError(const RunOptions& opt) {
+// Options that cannot work together: an ErrorKind::Input error.
+Result<void> optionError(const RunOptions& opt) {
   if (!opt.no_validation && opt.strict_validation && !validationLayerInstalled())
-    return "the Khronos validation layer is not installed (vulkan-validationlayers); run "
-           "tools/setup.sh";
-  if (opt.no_device && opt.no_model) return "--no-device and --no-model: nothing would run";
+    return errorMessage(
+        "the Khronos validation layer is not installed (vulkan-validationlayers); run "
+        "tools/setup.sh");
+  if (opt.no_device && opt.no_model)
+    return errorMessage("--no-device and --no-model: nothing would run");
   if (!parseModelTier(opt.model_tier))
-    return "model tier '" + opt.model_tier + "': the tiers are " +
-           namesJoined(enumNames<ModelTier>());
-  if (std::string e = plantedFaultError(opt); !e.empty()) return e;
+    return errorMessage("model tier '" + opt.model_tier + "': the tiers are " +
+                        namesJoined(enumNames<ModelTier>()));
+  RAYSPEC_TRY_VOID(plantedFaultError(opt));
   return deviceResultsError(opt);
 }
 
@@ -138,7 +141,7 @@ Result<std::vector<CaseFile>> selectedCaseFiles(const RunOptions& opt) {
   std::vector<CaseFile> files = caseFiles(opt);
   if (files.empty())
     return errorMessage("no case matches '" + opt.filter + "' in " + opt.cases_dir);
-  if (std::string err = optionError(opt); !err.empty()) return errorMessage(std::move(err));
+  RAYSPEC_TRY_VOID(optionError(opt));
   return files;
 }
 
@@ -205,8 +208,7 @@ Result<std::map<std::string, CaseOutcome>> resumedCases(const RunOptions& opt, R
   Result<SavedRun> read = readSavedRun(opt.out);
   if (!read) return read.error();
   SavedRun& saved = *read;
-  if (std::string error = resumeError(saved, info, opt.out, files); !error.empty())
-    return errorMessage(error);
+  RAYSPEC_TRY_VOID(resumeError(saved, info, opt.out, files));
   info.started = saved.info.started;
   for (CaseOutcome& o : saved.outcomes) earlier[o.name] = std::move(o);
   std::printf("Resuming %s: %zu cases already ran\n", opt.out.c_str(), earlier.size());
