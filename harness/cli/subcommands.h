@@ -27,5 +27,7 @@ Subcommand addCompileCommand(CLI::App& app);
 Subcommand addStabilityCommand(CLI::App& app);
 Subcommand addAccuracyCommand(CLI::App& app);
 Subcommand addMutateCommand(CLI::App& app);
+// cli/reduce_command.cpp
+Subcommand addReduceCommand(CLI::App& app);
 
 }  // namespace rayspec

@@ -1,0 +1,175 @@
+#include "reduce/reduce_case.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "library/case_discovery.h"
+#include "model/model_engine.h"
+#include "reduce/case_size.h"
+#include "reduce/reduce_document.h"
+#include "reduce/reduce_report.h"
+#include "reduce/variant_judge.h"
+#include "reduce/yaml_sites.h"
+#include "report/rule_catalog.h"
+#include "run/cache_dir.h"
+#include "run/fault_seam.h"
+#include "run/run_setup.h"
+#include "vulkan/icd_environment.h"
+
+namespace rayspec {
+namespace fs = std::filesystem;
+namespace {
+
+int badInput(const std::string& why) {
+  std::fprintf(stderr, "rayspec reduce: %s\n", why.c_str());
+  return kReduceBadInput;
+}
+
+// The case asked for: a file (a sweep file only with one variant), else a
+// case name under the cases folder.
+Result<CaseFile> chosenCase(const ReduceOptions& opt) {
+  std::error_code ec;
+  if (fs::is_regular_file(opt.case_path, ec)) {
+    std::vector<CaseFile> files = caseFilesFor(opt.case_path, opt.run.cases_dir);
+    if (files.size() != 1)
+      return errorMessage(opt.case_path + " is a sweep file with " + std::to_string(files.size()) +
+                          " variants: name one, e.g. " +
+                          (files.empty() ? std::string("its variant") : files.front().name));
+    return files.front();
+  }
+  if (std::optional<CaseFile> f = findCase(opt.case_path, "", opt.run.cases_dir)) return *f;
+  return errorMessage(opt.case_path + ": no such case file, nor a case of that name in " +
+                      opt.run.cases_dir);
+}
+
+Result<std::string> caseText(const CaseFile& f) {
+  if (f.generated) return f.text;
+  std::ifstream in(f.path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  if (!in) return errorMessage(f.path + ": cannot read the case file");
+  return s.str();
+}
+
+Result<YAML::Node> loadDocument(const std::string& text, const std::string& path) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    return errorMessage(path + ": not YAML: " + e.what());
+  }
+}
+
+std::string quoted(const std::string& s) {
+  return s.find_first_of(" '\"$*?") == std::string::npos ? s : "'" + s + "'";
+}
+
+std::string reproduction(const ReduceOptions& opt) {
+  std::string c = "rayspec run --case " + quoted(opt.out + "/reduced.yaml");
+  if (!opt.run.device.empty()) c += " --device " + quoted(opt.run.device);
+  for (const std::string& icd : opt.run.icd_files) c += " --icd " + quoted(icd);
+  if (!opt.run.plant_fault.empty()) c += " --plant-fault " + opt.run.plant_fault;
+  if (opt.run.model_tier != "exact") c += " --model " + opt.run.model_tier;
+  return c;
+}
+
+std::vector<uint32_t> failingRaysOf(const CaseOutcome& o, const FailureSignature& s) {
+  std::set<uint32_t> rays;
+  for (const Finding& f : o.verdict.findings)
+    if (f.rule == s.rule && f.status == s.finding) rays.insert(f.rays.begin(), f.rays.end());
+  return {rays.begin(), rays.end()};
+}
+
+// The titles of a finding's rules ("R-A/R-B": each), from the catalog.
+std::string ruleTitle(const std::vector<Rule>& catalog, const std::string& labels) {
+  std::string out;
+  std::stringstream parts(labels);
+  for (std::string label; std::getline(parts, label, '/');)
+    for (const Rule& r : catalog)
+      if (r.label == label) out += (out.empty() ? "" : "; ") + label + ": " + r.title;
+  return out;
+}
+
+// The setup a reduction needs before its first variant: the options, the
+// driver manifests, the device. The error, or "".
+std::string setupError(ReduceOptions& opt, const CaseFile& f, RunInfo& info) {
+  if (!modelInThisBuild()) return "this run-only build has no model to judge variants by";
+  if (std::string e = plantedFaultError(opt.run); !e.empty()) return e;
+  const IcdSelection icd = useIcdFiles(opt.run.icd_files);
+  for (const std::string& note : icd.notes)
+    std::fprintf(stderr, "rayspec reduce: %s\n", note.c_str());
+  if (!icd.error.empty()) return icd.error;
+  Result<ChosenDevice> device = chooseDevice(opt.run, {f}, icd, info);
+  if (!device) return device.error().format();
+  useCacheDir(opt.run.cache_dir);
+  return "";
+}
+
+}  // namespace
+
+int runReduce(const ReduceOptions& requested) {
+  ReduceOptions opt = requested;
+  const auto start = std::chrono::steady_clock::now();
+  Result<CaseFile> f = chosenCase(opt);
+  if (!f) return badInput(f.error().format());
+  if (!f->errors.empty()) return badInput(f->errors.front().format());
+  Result<std::string> text = caseText(*f);
+  if (!text) return badInput(text.error().format());
+  Result<YAML::Node> doc = loadDocument(*text, f->path);
+  if (!doc) return badInput(doc.error().format());
+  Result<std::vector<Rule>> catalog = loadRuleCatalog(opt.run.rules_file);
+  if (!catalog) return badInput(catalog.error().format());
+  const std::vector<std::string> labels = ruleLabels(*catalog);
+  const ParseResult parsed = parseCaseText(*text, f->path, f->name, &labels);
+  if (!parsed.value || !parsed.errors.empty())
+    return badInput(parsed.errors.empty() ? f->path + ": cannot read the case"
+                                          : parsed.errors.front().format());
+  RunInfo info;
+  opt.run.out = opt.out + "/runs";
+  if (std::string e = setupError(opt, *f, info); !e.empty()) return badInput(e);
+
+  VariantJudge probe(opt.run, f->name, labels, {}, 1);
+  bool interrupted = false;
+  const CaseOutcome original = probe.judge(*text, &interrupted);
+  if (interrupted) return badInput("interrupted");
+  const std::optional<FailureSignature> signature = failureToKeep(original, opt.keep);
+  if (!signature) {
+    std::printf("%s does not fail%s to begin with: %s: %s\n", f->name.c_str(),
+                opt.keep.empty() ? "" : (" by " + opt.keep).c_str(), statusName(original.status),
+                original.headline.c_str());
+    return kReduceNotFailing;
+  }
+  std::printf("Reducing %s: keeps %s: %s%s\n", f->name.c_str(), statusName(signature->status),
+              signature->rule.empty() ? "" : (signature->rule + ": ").c_str(),
+              signature->message.c_str());
+  VariantJudge judge(opt.run, f->name, labels, *signature, opt.max_attempts);
+  YAML::Node reduced =
+      reduceDocument(*doc, *parsed.value, failingRaysOf(original, *signature), judge);
+
+  ReductionRecord r;
+  r.case_name = f->name;
+  r.case_path = f->path;
+  r.signature = *signature;
+  const CaseOutcome* kept = judge.keptOutcome(emitYaml(reduced));
+  r.outcome = kept ? *kept : original;
+  r.before = caseSize(*parsed.value);
+  const ParseResult after = parseCaseText(emitYaml(reduced), "reduced.yaml", f->name, &labels);
+  r.after = after.value ? caseSize(*after.value) : r.before;
+  r.device = info.device;
+  r.icd = info.icd;
+  r.fault = opt.run.plant_fault;
+  r.rule_title = ruleTitle(*catalog, signature->rule);
+  r.command = reproduction(opt);
+  r.attempts = judge.attempts();
+  reduced["description"] = reducedDescription(r);
+  r.reduced_text = "# Made by rayspec reduce; shown by: " + r.command + "\n" + emitYaml(reduced);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (std::string e = writeReduction(r, opt.out); !e.empty()) return badInput(e);
+  std::printf("%s", reductionSummary(r, opt.out).c_str());
+  return kReduceDone;
+}
+
+}  // namespace rayspec

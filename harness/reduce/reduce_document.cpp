@@ -1,0 +1,151 @@
+#include "reduce/reduce_document.h"
+
+#include <map>
+#include <set>
+
+#include "reduce/delta_debug.h"
+#include "reduce/rays_to_list.h"
+#include "reduce/yaml_sites.h"
+
+namespace rayspec {
+namespace {
+
+constexpr size_t kMaxListedRays = 4096;  // a longer launch is reduced in its own form
+constexpr int kMaxPasses = 6;
+
+// The document with `value` at path, kept when it still fails.
+bool tryReplace(YAML::Node& doc, const YamlPath& path, const YAML::Node& value,
+                const std::string& what, VariantJudge& judge) {
+  YAML::Node candidate = replacedAt(doc, path, value);
+  if (!judge.fails(emitYaml(candidate), what)) return false;
+  doc = candidate;
+  return true;
+}
+
+// A camera, grid or aim becomes a list: of the failing rays, else of all.
+void listTheRays(YAML::Node& doc, const Case& c, const std::vector<uint32_t>& failing,
+                 VariantJudge& judge) {
+  const YamlPath rays{{false, 0, "rays"}};
+  if (const std::optional<YAML::Node> some = raysAsList(nodeAt(doc, rays), c, failing))
+    if (tryReplace(doc, rays, *some, "rays: the failing rays as a list", judge)) return;
+  if (c.rays.rays.size() > kMaxListedRays) return;
+  std::vector<uint32_t> all;
+  for (uint32_t i = 0; i < c.rays.rays.size(); ++i) all.push_back(i);
+  if (const std::optional<YAML::Node> every = raysAsList(nodeAt(doc, rays), c, all))
+    tryReplace(doc, rays, *every, "rays: every ray as a list", judge);
+}
+
+YAML::Node flowSeq() {
+  YAML::Node n(YAML::NodeType::Sequence);
+  n.SetStyle(YAML::EmitterStyle::Flow);
+  return n;
+}
+
+// A generated mesh (grid, fan, triangulation) written out as its vertices
+// and indices, so that its triangles can go one by one.
+void writeOutMeshes(YAML::Node& doc, const Case& c, VariantJudge& judge) {
+  const YamlPath blas{{false, 0, "scene"}, {false, 0, "blas"}};
+  for (const Blas& b : c.scene.blases) {
+    for (size_t g = 0; g < b.geometries.size(); ++g) {
+      const YamlPath tri = {
+          blas[0], blas[1], {false, 0, b.name}, {true, g, ""}, {false, 0, "triangles"}};
+      const YAML::Node old = nodeAt(doc, tri);
+      if (!old.IsMap() || old["vertex_format"] ||
+          !(old["grid"] || old["fan"] || old["triangulation"]))
+        continue;
+      const Geometry& geo = b.geometries[g];
+      YAML::Node out(YAML::NodeType::Map);
+      YAML::Node vertices = flowSeq();
+      for (const Vec3& v : geo.vertices) {
+        YAML::Node p = flowSeq();
+        for (int k = 0; k < 3; ++k) p.push_back(floatText(v[k]));
+        vertices.push_back(p);
+      }
+      out["vertices"] = vertices;
+      if (!geo.indices.empty()) {
+        YAML::Node indices = flowSeq();
+        for (uint32_t i : geo.indices) indices.push_back(i);
+        out["indices"] = indices;
+      }
+      tryReplace(doc, tri, out, pathText(tri) + ": the generated mesh written out", judge);
+    }
+  }
+}
+
+// Indexed triangles keep only the vertices their indices name, renumbered.
+void dropUnusedVertices(YAML::Node& doc, VariantJudge& judge) {
+  for (const Site& site : reductionSites(doc)) {
+    if (site.part != "primitives" || site.path.back().key != "indices") continue;
+    YamlPath tri(site.path.begin(), site.path.end() - 1);
+    const YAML::Node indices = nodeAt(doc, site.path);
+    const YAML::Node vertices = nodeAt(doc, [&] {
+      YamlPath p = tri;
+      p.push_back({false, 0, "vertices"});
+      return p;
+    }());
+    if (!vertices.IsSequence()) continue;
+    std::set<size_t> used;
+    for (size_t i = 0; i < indices.size(); ++i) used.insert(indices[i].as<size_t>(0));
+    if (used.size() >= vertices.size() || *used.rbegin() >= vertices.size()) continue;
+    std::map<size_t, size_t> renumbered;
+    YAML::Node new_vertices(YAML::NodeType::Sequence), new_indices = flowSeq();
+    new_vertices.SetStyle(vertices.Style());
+    for (size_t v : used) {
+      renumbered[v] = renumbered.size();
+      new_vertices.push_back(vertices[v]);
+    }
+    for (size_t i = 0; i < indices.size(); ++i)
+      new_indices.push_back(renumbered[indices[i].as<size_t>(0)]);
+    YAML::Node map = YAML::Clone(nodeAt(doc, tri));
+    map["vertices"] = new_vertices;
+    map["indices"] = new_indices;
+    tryReplace(doc, tri, map, pathText(tri) + ": unused vertices dropped", judge);
+  }
+}
+
+std::string attemptText(const Site& site, const std::vector<size_t>& kept) {
+  std::string what = pathText(site.path) + " (" + site.part + "): keep " +
+                     std::to_string(kept.size()) + " of " + std::to_string(site.units);
+  if (site.kind == Site::Kind::MapKeys) {
+    what += " keys [";
+    for (size_t i = 0; i < kept.size(); ++i) what += (i ? ", " : "") + site.keys[kept[i]];
+    what += "]";
+  }
+  return what;
+}
+
+// One pass over the sites, listed again after each (a site that shrank
+// moves the paths of those after it). Whether anything went.
+bool onePass(YAML::Node& doc, VariantJudge& judge) {
+  bool progress = false;
+  for (size_t next = 0; !judge.stopped(); ++next) {
+    const std::vector<Site> sites = reductionSites(doc);
+    if (next >= sites.size()) break;
+    const Site& site = sites[next];
+    const DeltaResult r = deltaDebug(site.units, [&](const std::vector<size_t>& kept) {
+      return judge.fails(emitYaml(keepUnits(doc, site, kept)), attemptText(site, kept));
+    });
+    if (r.kept.size() < site.units) {
+      doc = keepUnits(doc, site, r.kept);
+      progress = true;
+    }
+  }
+  return progress;
+}
+
+}  // namespace
+
+YAML::Node reduceDocument(const YAML::Node& start, const Case& original,
+                          const std::vector<uint32_t>& failing, VariantJudge& judge) {
+  YAML::Node doc = YAML::Clone(start);
+  listTheRays(doc, original, failing, judge);
+  writeOutMeshes(doc, original, judge);
+  for (int pass = 0; pass < kMaxPasses && !judge.stopped(); ++pass) {
+    const bool progress = onePass(doc, judge);
+    dropUnusedVertices(doc, judge);
+    if (!progress) break;
+  }
+  return doc;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,106 @@
+#include "reduce/reduce_report.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace rayspec {
+namespace {
+
+bool writeText(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  return static_cast<bool>(out);
+}
+
+std::string seconds(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f s", s);
+  return buf;
+}
+
+// A table cell: no '|' or line break breaks the row.
+std::string cell(std::string s) {
+  for (char& ch : s)
+    if (ch == '|' || ch == '\n') ch = ' ';
+  return s;
+}
+
+std::string raysTable(const CaseOutcome& o) {
+  if (o.failing_rays.empty()) return "(no per-ray rows: the finding is not about single rays)\n";
+  std::string t = "| ray | x | y | field | device | model |\n|---|---|---|---|---|---|\n";
+  for (const RayRow& r : o.failing_rays)
+    t += "| " + std::to_string(r.ray) + " | " + std::to_string(r.x) + " | " + std::to_string(r.y) +
+         " | " + cell(r.field) + " | " + cell(r.device) + " | " + cell(r.model) +
+         (r.device != r.model ? " **differs**" : "") + " |\n";
+  return t;
+}
+
+std::string reportMarkdown(const ReductionRecord& r) {
+  const FailureSignature& s = r.signature;
+  std::string m =
+      "# " + r.case_name + ": " + (s.rule.empty() ? "" : s.rule + ": ") + s.message + "\n\n";
+  m += "Reduced by `rayspec reduce` from `" + r.case_path + "` in " + seconds(r.seconds) + " (" +
+       std::to_string(r.attempts.size()) + " variants tried): " + sizeChange(r.before, r.after) +
+       ".\n\n";
+  m += "- Device: " + (r.device.empty() ? std::string("unknown") : r.device) + "\n";
+  m += "- Driver manifest (ICD): " + (r.icd.empty() ? std::string("unknown") : r.icd) + "\n";
+  if (!r.fault.empty())
+    m += "- Planted fault (test only, standing in for a wrong device): " + r.fault + "\n";
+  m += "- Verdict: " + r.outcome.headline + "\n";
+  if (!s.rule.empty())
+    m += "- Rule (references/spec-rules.yaml): " + (r.rule_title.empty() ? s.rule : r.rule_title) +
+         "\n";
+  m += "\n## Reproduce\n\n```\n" + r.command + "\n```\n\n";
+  m += "## The case\n\n```yaml\n" + r.reduced_text + "```\n\n";
+  m += "## Failing rays, device against model\n\n" + raysTable(r.outcome);
+  return m;
+}
+
+std::string stepsText(const ReductionRecord& r) {
+  std::string t = "# " + std::to_string(r.attempts.size()) + " variants of " + r.case_name +
+                  ", in the order tried; kept: fails the same way (" +
+                  (r.signature.rule.empty() ? "" : r.signature.rule + ": ") + r.signature.message +
+                  ")\n";
+  size_t n = 0;
+  for (const Attempt& a : r.attempts) {
+    char head[64];
+    std::snprintf(head, sizeof head, "%4zu %6.2fs ", ++n, a.seconds);
+    t += head + a.what + "\n            -> " + a.verdict + "\n";
+  }
+  return t;
+}
+
+}  // namespace
+
+std::string reducedDescription(const ReductionRecord& r) {
+  const FailureSignature& s = r.signature;
+  std::string d = "Reduced by rayspec reduce from " + r.case_name + " (" + r.case_path +
+                  "): shows " + std::string(statusName(s.status)) + ": " +
+                  (s.rule.empty() ? "" : s.rule + ": ") + s.message;
+  if (!r.device.empty()) d += ", on " + r.device;
+  if (!r.fault.empty()) d += ", with the planted fault " + r.fault;
+  return d + ".";
+}
+
+std::string writeReduction(const ReductionRecord& r, const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  for (const auto& [name, text] :
+       {std::pair{"reduced.yaml", r.reduced_text}, std::pair{"report.md", reportMarkdown(r)},
+        std::pair{"steps.txt", stepsText(r)}})
+    if (!writeText(dir + "/" + name, text)) return "cannot write " + dir + "/" + name;
+  return "";
+}
+
+std::string reductionSummary(const ReductionRecord& r, const std::string& dir) {
+  size_t ran = 0, kept = 0;
+  for (const Attempt& a : r.attempts) ran += a.ran, kept += a.kept;
+  return "Reduced " + r.case_name + ": " + sizeChange(r.before, r.after) + "\n" + "  " +
+         std::to_string(r.attempts.size()) + " variants (" + std::to_string(ran) + " ran, " +
+         std::to_string(kept) + " kept) in " + seconds(r.seconds) + "\n" +
+         "  still: " + r.outcome.headline.substr(0, 300) + "\n" + "  " + dir +
+         "/reduced.yaml, report.md, steps.txt\n";
+}
+
+}  // namespace rayspec

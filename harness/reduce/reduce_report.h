@@ -1,0 +1,38 @@
+// What a reduction writes: DIR/reduced.yaml (a case file), DIR/report.md (the
+// bug report: the case, the command that shows it, the failing rays device
+// against model, the rule's text, the driver and device), DIR/steps.txt
+// (every attempt and its verdict).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "reduce/case_size.h"
+#include "reduce/failure_signature.h"
+#include "reduce/variant_judge.h"
+#include "report/case_outcome.h"
+
+namespace rayspec {
+
+struct ReductionRecord {
+  std::string case_name, case_path;
+  std::string reduced_text;  // reduced.yaml
+  FailureSignature signature;
+  CaseOutcome outcome;  // the reduced case's
+  CaseSize before, after;
+  double seconds = 0;
+  std::string device, icd, fault, rule_title;
+  std::string command;  // the one-line reproduction
+  std::vector<Attempt> attempts;
+};
+
+// The `description:` of the reduced case.
+std::string reducedDescription(const ReductionRecord& r);
+
+// The three files into dir; the error ("" none).
+std::string writeReduction(const ReductionRecord& r, const std::string& dir);
+
+// The summary printed at the end.
+std::string reductionSummary(const ReductionRecord& r, const std::string& dir);
+
+}  // namespace rayspec

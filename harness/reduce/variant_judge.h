@@ -1,0 +1,55 @@
+// Each variant of a reduction judged as `rayspec run` judges one case: parsed
+// by the case parser (a variant that does not parse is rejected without a
+// run), both sides run isolated in child processes (run/case_steps.h
+// CaseRunner), judged by the usual comparison; kept when it fails the way
+// the original did (reduce/failure_signature.h). Every attempt is logged.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "reduce/failure_signature.h"
+#include "run/case_steps.h"
+
+namespace rayspec {
+
+struct Attempt {
+  std::string what;     // the change tried
+  std::string verdict;  // "kept", or why not: "does not parse: ...", "Pass", ...
+  bool kept = false;
+  bool ran = false;  // the sides ran (it parsed)
+  double seconds = 0;
+};
+
+class VariantJudge {
+ public:
+  // name: the case's name (every variant runs under it, so a fault planted
+  // in cases matching a glob stays planted).
+  VariantJudge(const RunOptions& run, std::string name, std::vector<std::string> labels,
+               FailureSignature signature, size_t max_attempts);
+  // The case as text, run and judged: its outcome (a CaseError when it does
+  // not parse). *interrupted: a signal stopped it.
+  CaseOutcome judge(const std::string& text, bool* interrupted) const;
+  // Whether the variant fails the same way; a text seen before is not run again.
+  bool fails(const std::string& text, const std::string& what);
+  const std::vector<Attempt>& attempts() const { return attempts_; }
+  // No more attempts: the limit was reached or a signal stopped one.
+  bool stopped() const { return stopped_; }
+  // The outcome of a kept text (nullptr: none).
+  const CaseOutcome* keptOutcome(const std::string& text) const;
+
+ private:
+  const RunOptions& run_;
+  std::string name_;
+  std::vector<std::string> labels_;
+  FailureSignature signature_;
+  size_t max_attempts_;
+  CaseRunner runner_;
+  std::map<std::string, bool> seen_;
+  std::map<std::string, CaseOutcome> kept_;
+  std::vector<Attempt> attempts_;
+  bool stopped_ = false;
+};
+
+}  // namespace rayspec

@@ -1,0 +1,62 @@
+// `rayspec reduce` end to end on the device: a suite case broken by a
+// planted fault, reduced; the reduced case must still fail with the fault,
+// pass without it, and be smaller. Exit 1 for a case that does not fail, 2
+// for a file that is not there.
+#include <regex>
+
+#include "cli_helpers.h"
+
+namespace {
+
+using cli::kBin;
+using cli::sh;
+using cli::slurp;
+
+const char* const kCase = "inactive/before-active-mask-zero-instance/one-first";
+const char* const kFault = "instance-mask-ignored";
+
+TEST(Reduce, ReducedCaseFailsWithTheFaultAndPassesWithout) {
+  const std::string dir = cli::fresh("reduce-mask");
+  const std::string log = dir + "/reduce.log";
+  ASSERT_EQ(
+      sh(kBin + " reduce " + kCase + " --plant-fault " + kFault + " --out " + dir + "/out", log), 0)
+      << slurp(log);
+  const std::string reduced = dir + "/out/reduced.yaml";
+  ASSERT_TRUE(std::filesystem::exists(reduced)) << slurp(log);
+  const std::string report = slurp(dir + "/out/report.md");
+  EXPECT_NE(report.find("rayspec run --case"), std::string::npos);
+  EXPECT_NE(report.find("R-MASK: instance mask"), std::string::npos);  // the rule's text
+  EXPECT_NE(slurp(dir + "/out/steps.txt").find("-> kept"), std::string::npos);
+  // Smaller: the six rays and six instances of the original went.
+  std::smatch m;
+  const std::string out = slurp(log);
+  ASSERT_TRUE(std::regex_search(out, m, std::regex("rays 6 -> (\\d+), instances 6 -> (\\d+)")))
+      << out;
+  EXPECT_LT(std::stoi(m[1]), 6);
+  EXPECT_LT(std::stoi(m[2]), 6);
+  EXPECT_EQ(sh(kBin + " run --case " + reduced + " --plant-fault " + kFault + " --out " + dir +
+                   "/with-fault",
+               dir + "/with.log"),
+            1)
+      << slurp(dir + "/with.log");
+  EXPECT_EQ(sh(kBin + " run --case " + reduced + " --out " + dir + "/without-fault",
+               dir + "/without.log"),
+            0)
+      << slurp(dir + "/without.log");
+}
+
+TEST(Reduce, ACaseThatPassesIsNotReduced) {
+  const std::string dir = cli::fresh("reduce-pass");
+  EXPECT_EQ(sh(kBin + " reduce " + kCase + " --out " + dir + "/out", dir + "/log"), 1)
+      << slurp(dir + "/log");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out/reduced.yaml"));
+}
+
+TEST(Reduce, AMissingFileIsBadInputNamingIt) {
+  const std::string dir = cli::fresh("reduce-missing");
+  EXPECT_EQ(sh(kBin + " reduce " + dir + "/no-such-case.yaml --out " + dir + "/out", dir + "/log"),
+            2);
+  EXPECT_NE(slurp(dir + "/log").find("no-such-case.yaml"), std::string::npos);
+}
+
+}  // namespace

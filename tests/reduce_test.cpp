@@ -1,0 +1,203 @@
+// The reduction's pieces without a device: delta debugging on synthetic
+// tests, the document's sites and their edits, the failure signature.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "case/parse_case.h"
+#include "reduce/delta_debug.h"
+#include "reduce/failure_signature.h"
+#include "reduce/rays_to_list.h"
+#include "reduce/yaml_sites.h"
+
+namespace rayspec {
+namespace {
+
+// Fails while every element of `needed` is kept.
+SubsetTest needs(std::set<size_t> needed, size_t* asked = nullptr) {
+  return [needed, asked](const std::vector<size_t>& kept) {
+    if (asked) ++*asked;
+    for (size_t n : needed)
+      if (std::find(kept.begin(), kept.end(), n) == kept.end()) return false;
+    return true;
+  };
+}
+
+TEST(DeltaDebug, FindsTheOneElement) {
+  const DeltaResult r = deltaDebug(64, needs({37}));
+  EXPECT_EQ(r.kept, std::vector<size_t>({37}));
+  EXPECT_LT(r.tests, 20u);  // halves, not one by one
+}
+
+TEST(DeltaDebug, FindsElementsFarApart) {
+  EXPECT_EQ(deltaDebug(100, needs({0, 50, 99})).kept, std::vector<size_t>({0, 50, 99}));
+}
+
+TEST(DeltaDebug, EmptyWhenNothingIsNeeded) {
+  const DeltaResult r = deltaDebug(10, needs({}));
+  EXPECT_TRUE(r.kept.empty());
+  EXPECT_EQ(r.tests, 1u);
+}
+
+TEST(DeltaDebug, KeepsAllWhenAllAreNeeded) {
+  EXPECT_EQ(deltaDebug(5, needs({0, 1, 2, 3, 4})).kept, std::vector<size_t>({0, 1, 2, 3, 4}));
+}
+
+TEST(DeltaDebug, OneMinimalForAPairThatMustStayTogether) {
+  // Fails while 3 and 4 are both kept, or 8 alone is: either is 1-minimal.
+  const SubsetTest test = [](const std::vector<size_t>& kept) {
+    const auto has = [&](size_t n) {
+      return std::find(kept.begin(), kept.end(), n) != kept.end();
+    };
+    return (has(3) && has(4)) || has(8);
+  };
+  const DeltaResult r = deltaDebug(12, test);
+  ASSERT_FALSE(r.kept.empty());
+  for (size_t i = 0; i < r.kept.size(); ++i) {
+    std::vector<size_t> less = r.kept;
+    less.erase(less.begin() + i);
+    EXPECT_FALSE(test(less)) << "element " << r.kept[i] << " could still go";
+  }
+}
+
+TEST(DeltaDebug, SameTestSameAttempts) {
+  std::vector<std::vector<size_t>> first, second;
+  const auto logged = [](std::vector<std::vector<size_t>>& log) {
+    return [&log](const std::vector<size_t>& kept) {
+      log.push_back(kept);
+      return std::find(kept.begin(), kept.end(), 5) != kept.end();
+    };
+  };
+  deltaDebug(33, logged(first));
+  deltaDebug(33, logged(second));
+  EXPECT_EQ(first, second);
+}
+
+TEST(DeltaDebug, ZeroElements) {
+  size_t asked = 0;
+  EXPECT_TRUE(deltaDebug(0, needs({}, &asked)).kept.empty());
+  EXPECT_EQ(asked, 0u);
+}
+
+const char* const kSiteCase = R"(rules: [R-MISS-XOR-CHIT]
+scene:
+  blas:
+    tri:
+      - triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [0, 1, 1]]}
+  instances:
+    - {blas: tri, mask: 0x0F}
+    - {blas: tri, transform: {translate: [0, 0, 5]}}
+rays:
+  list:
+    - {origin: [0.25, 0.25, 3], direction: [0, 0, -1]}
+    - {origin: [0.25, 0.25, -3], direction: [0, 0, 1]}
+pipeline:
+  miss:
+    - [count: miss, record: {hit: 0}]
+  hit_groups:
+    - closest_hit: [count: closesthit, record: [hit, primitive_id]]
+outputs:
+  counters: [miss, closesthit]
+  per_ray: [hit, primitive_id]
+)";
+
+const Site* findSite(const std::vector<Site>& sites, const std::string& path) {
+  for (const Site& s : sites)
+    if (pathText(s.path) == path) return &s;
+  return nullptr;
+}
+
+TEST(ReduceSites, ListsTheCaseParts) {
+  const YAML::Node doc = YAML::Load(kSiteCase);
+  const std::vector<Site> sites = reductionSites(doc);
+  ASSERT_FALSE(sites.empty());
+  EXPECT_EQ(pathText(sites[0].path), "rays.list");  // rays first
+  const Site* vertices = findSite(sites, "scene.blas.tri[0].triangles.vertices");
+  ASSERT_NE(vertices, nullptr);
+  EXPECT_EQ(vertices->group, 3u);
+  EXPECT_EQ(vertices->units, 2u);  // two triangles
+  ASSERT_NE(findSite(sites, "scene.instances"), nullptr);
+  EXPECT_NE(findSite(sites, "pipeline.hit_groups[0].closest_hit"), nullptr);
+  // A vector is never a site: its length is its meaning.
+  EXPECT_EQ(findSite(sites, "rays.list[0].origin"), nullptr);
+}
+
+TEST(ReduceSites, KeptUnitsParseAsACase) {
+  const YAML::Node doc = YAML::Load(kSiteCase);
+  const std::vector<Site> sites = reductionSites(doc);
+  const Site* vertices = findSite(sites, "scene.blas.tri[0].triangles.vertices");
+  ASSERT_NE(vertices, nullptr);
+  const YAML::Node one = keepUnits(doc, *vertices, {1});
+  const ParseResult parsed = parseCaseText(emitYaml(one), "one.yaml", "reduce/one");
+  ASSERT_TRUE(parsed.value) << emitYaml(one);
+  ASSERT_EQ(parsed.value->scene.blases[0].geometries[0].primitiveCount(), 1u);
+  EXPECT_EQ(parsed.value->scene.blases[0].geometries[0].vertices[0][2], 1.0f);  // the second
+  // The original is untouched.
+  EXPECT_EQ(nodeAt(doc, vertices->path).size(), 6u);
+}
+
+TEST(ReduceSites, KeysGoToTheirDefaults) {
+  const YAML::Node doc = YAML::Load(kSiteCase);
+  const std::vector<Site> sites = reductionSites(doc);
+  const Site* inst = findSite(sites, "scene.instances[0]");
+  ASSERT_NE(inst, nullptr);
+  EXPECT_EQ(inst->keys, std::vector<std::string>({"mask"}));  // blas stays
+  const ParseResult parsed =
+      parseCaseText(emitYaml(keepUnits(doc, *inst, {})), "k.yaml", "reduce/k");
+  ASSERT_TRUE(parsed.value);
+  EXPECT_EQ(parsed.value->scene.instances[0].mask, 0xFFu);
+}
+
+TEST(ReduceRays, GridBecomesAListOfTheSameRays) {
+  const std::string text = R"(rules: [R-MISS-XOR-CHIT]
+scene:
+  blas:
+    tri:
+      - triangles: {vertices: [[-1, -1, 0], [2, -1, 0], [-1, 2, 0]]}
+  instances: [{blas: tri}]
+rays:
+  grid: {size: [3, 2], origin: [0.1, -0.3, 5], du: [0.37, 0, 0], dv: [0, 0.29, 0], direction: [0, 0.01, -1]}
+  tmax: 50
+pipeline:
+  miss: [[count: miss]]
+  hit_groups: [{closest_hit: [count: closesthit]}]
+outputs: {counters: [miss, closesthit]}
+)";
+  const ParseResult grid = parseCaseText(text, "g.yaml", "reduce/g");
+  ASSERT_TRUE(grid.value);
+  const YAML::Node doc = YAML::Load(text);
+  const std::optional<YAML::Node> list = raysAsList(doc["rays"], *grid.value, {1, 4});
+  ASSERT_TRUE(list);
+  const ParseResult listed =
+      parseCaseText(emitYaml(replacedAt(doc, {{false, 0, "rays"}}, *list)), "l.yaml", "reduce/l");
+  ASSERT_TRUE(listed.value);
+  ASSERT_EQ(listed.value->rays.rays.size(), 2u);
+  for (int k = 0; k < 3; ++k) {  // bit-exact
+    EXPECT_EQ(listed.value->rays.rays[0].origin[k], grid.value->rays.rays[1].origin[k]);
+    EXPECT_EQ(listed.value->rays.rays[1].origin[k], grid.value->rays.rays[4].origin[k]);
+    EXPECT_EQ(listed.value->rays.rays[1].direction[k], grid.value->rays.rays[4].direction[k]);
+  }
+  EXPECT_EQ(listed.value->rays.rays[1].tmax, 50.0f);
+}
+
+TEST(ReduceSignature, SameRuleAndKind) {
+  CaseOutcome o;
+  o.verdict.add({Status::Fail, "R-MASK", "per-ray field 'hit' differs (rays 3, 4)", {3, 4}, 2});
+  o.deriveFromVerdict();
+  const std::optional<FailureSignature> s = failureToKeep(o, "");
+  ASSERT_TRUE(s);
+  EXPECT_EQ(s->rule, "R-MASK");
+  CaseOutcome fewer;
+  fewer.verdict.add({Status::Fail, "R-MASK", "per-ray field 'hit' differs (rays 0)", {0}, 1});
+  fewer.deriveFromVerdict();
+  EXPECT_TRUE(failsTheSameWay(fewer, *s));
+  CaseOutcome other;
+  other.verdict.add({Status::Fail, "R-MASK", "per-ray field 'primitive_id' differs", {0}, 1});
+  other.deriveFromVerdict();
+  EXPECT_FALSE(failsTheSameWay(other, *s));
+  EXPECT_TRUE(failsTheSameWay(other, *failureToKeep(o, "R-MASK")));  // a rule: any kind
+  EXPECT_FALSE(failureToKeep(CaseOutcome{}, ""));                    // a pass: nothing to keep
+}
+
+}  // namespace
+}  // namespace rayspec
