@@ -22,6 +22,9 @@ namespace {
 void setDistinctValue(uint32_t& v, int& n) {
   v = 1000 + ++n;
 }
+void setDistinctValue(uint64_t& v, int& n) {
+  v = (uint64_t{1} << 40) + ++n;  // beyond 32 bits: the JSON keeps all 64
+}
 void setDistinctValue(bool& v, int& n) {
   ++n;
   v = true;

@@ -94,18 +94,18 @@ std::string ruleTitle(const std::vector<Rule>& catalog, const std::string& label
 }
 
 // The setup a reduction needs before its first variant: the options, the
-// driver manifests, the device. The error, or "".
-std::string setupError(ReduceOptions& opt, const CaseFile& f, RunInfo& info) {
-  if (!modelInThisBuild()) return "this run-only build has no model to judge variants by";
-  if (std::string e = plantedFaultError(opt.run); !e.empty()) return e;
+// driver manifests, the device.
+Result<void> reductionSetup(ReduceOptions& opt, const CaseFile& f, RunInfo& info) {
+  if (!modelInThisBuild())
+    return errorMessage("this run-only build has no model to judge variants by");
+  RAYSPEC_TRY_VOID(plantedFaultError(opt.run));
   const IcdSelection icd = useIcdFiles(opt.run.icd_files);
   for (const std::string& note : icd.notes)
     std::fprintf(stderr, "rayspec reduce: %s\n", note.c_str());
-  if (!icd.error.empty()) return icd.error;
-  Result<ChosenDevice> device = chooseDevice(opt.run, {f}, icd, info);
-  if (!device) return device.error().format();
+  if (!icd.error.empty()) return errorMessage(icd.error);
+  RAYSPEC_TRY_VOID(chooseDevice(opt.run, {f}, icd, info));
   useCacheDir(opt.run.cache_dir);
-  return "";
+  return {};
 }
 
 }  // namespace
@@ -129,7 +129,8 @@ int runReduce(const ReduceOptions& requested) {
                                           : parsed.errors.front().format());
   RunInfo info;
   opt.run.out = opt.out + "/runs";
-  if (std::string e = setupError(opt, *f, info); !e.empty()) return badInput(e);
+  if (Result<void> setup = reductionSetup(opt, *f, info); !setup)
+    return badInput(setup.error().format());
 
   VariantJudge probe(opt.run, f->name, labels, {}, 1);
   bool interrupted = false;
