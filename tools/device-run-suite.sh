@@ -26,7 +26,8 @@ icd=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
 export LD_LIBRARY_PATH="$work/p/lib:$work/gl/usr/lib/x86_64-linux-gnu:${LD_LIBRARY_PATH:-}"
 export VK_LAYER_PATH="$work/p/layer"
 cd "$work/p"
-./rayspec devices --icd "$icd" | tee "$out/devices.txt" || true
+# The device and its limits against the specification's required ones (exit 1 on a violation: kept going).
+./rayspec devices --check-limits --icd "$icd" | tee "$out/devices.txt" || true
 # One run, a worker pair per core (-j: one per core, at most 16), the SPIR-V
 # the pack brought (cache/spirv) and the pipeline caches the run makes;
 # RAYSPEC_DEVICE_RUNS=2 runs it again, warm (the bundles are the last run's).

@@ -10,8 +10,9 @@ namespace rayspec {
 namespace {
 
 void listWhatThereIs(DeviceProbe& p) {
-  std::string loader_error;  // the same as the adapter's error
-  for (const DeviceInfo& d : listDevicesOrWhyNot(&p.no_device, &loader_error)) {
+  const DeviceListing listing = listDevicesOrWhyNot();  // its loader error is the adapter's
+  p.no_device = listing.no_device;
+  for (const DeviceInfo& d : listing.devices) {
     const DeviceUsability u = deviceUsability(d);
     p.devices.push_back(
         "[" + std::to_string(d.index) + "] " + d.name +

@@ -18,11 +18,12 @@ std::string noDeviceReason(const IcdManifest& m) {
 
 }  // namespace
 
-std::vector<DeviceInfo> listDevicesOrWhyNot(std::string* why, std::string* loader_error) {
+DeviceListing listDevicesOrWhyNot() {
   Result<std::vector<DeviceInfo>> listed = listDevices();
-  if (loader_error) *loader_error = listed ? std::string() : listed.error().format();
-  std::vector<DeviceInfo> devices = listed ? std::move(*listed) : std::vector<DeviceInfo>{};
-  if (!devices.empty()) return devices;
+  DeviceListing out;
+  out.loader_error = listed ? std::string() : listed.error().format();
+  if (listed) out.devices = std::move(*listed);
+  if (!out.devices.empty()) return out;
   std::string text;
   const IcdSearch search = findIcdManifests();
   for (const std::string& e : search.errors) text += (text.empty() ? "" : "; ") + e;
@@ -30,8 +31,8 @@ std::vector<DeviceInfo> listDevicesOrWhyNot(std::string* why, std::string* loade
     text += (text.empty() ? "" : "; ") + ("ICD " + m.path + ": ") + noDeviceReason(m);
   if (search.manifests.empty() && search.errors.empty())
     text = "no ICD manifest found in " + icdSourceName(search.source);
-  if (why) *why = text;
-  return devices;
+  out.no_device = text;
+  return out;
 }
 
 IcdProbe probeIcd(const IcdManifest& manifest, const ChildLimits& limits) {

@@ -20,11 +20,15 @@ struct IcdProbe {
 
 IcdProbe probeIcd(const IcdManifest& manifest, const ChildLimits& limits);
 
-// In this process (a child's body): the devices the loader sees now, and when
-// there are none, why, told for each manifest it would read ("ICD FILE: the
-// driver library ... could not be loaded: ..."; "" when it finds devices),
-// and the loader's own error ("vkCreateInstance: ...", "" when none).
-std::vector<DeviceInfo> listDevicesOrWhyNot(std::string* why, std::string* loader_error);
+// What the loader shows in this process (a child's body).
+struct DeviceListing {
+  std::vector<DeviceInfo> devices;
+  // When there are none, why, told for each manifest it would read ("ICD
+  // FILE: the driver library ... could not be loaded: ..."; "" with devices).
+  std::string no_device;
+  std::string loader_error;  // the loader's own error ("vkCreateInstance: ..."; "" none)
+};
+DeviceListing listDevicesOrWhyNot();
 
 // The manifest (of those the loader reads now) that offers the device with
 // this deviceUUID-driverUUID: the only one there is, or the one whose probe
