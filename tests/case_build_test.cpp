@@ -48,6 +48,42 @@ TEST(SceneBuild, ErrorsNameTheLineAndField) {
   }
 }
 
+TEST(SceneBuild, LayoutFieldsAreRead) {
+  const ParseResult r = parseBuild(
+      "{instances_as_pointers: true, data_offsets: true, first_vertex: 3, vertex_stride: 20, "
+      "aabb_stride: 32}");
+  ASSERT_TRUE(r.value) << firstError(r);
+  const AsBuild& b = r.value->scene.build;
+  EXPECT_TRUE(b.instances_as_pointers);
+  EXPECT_TRUE(b.data_offsets);
+  EXPECT_EQ(b.first_vertex, 3u);
+  EXPECT_EQ(b.vertex_stride, 20u);
+  EXPECT_EQ(b.aabb_stride, 32u);
+  EXPECT_TRUE(b.customLayout());
+  EXPECT_FALSE(parseBuild("{}").value->scene.build.customLayout());
+}
+
+// A stride that does not fit the float3 vertices (12 bytes, 4 a component)
+// or a box (24 bytes, a multiple of 8) is refused at its field.
+TEST(SceneBuild, LayoutErrorsNameTheField) {
+  struct Bad {
+    std::string build, field, message;
+  } bad[] = {{"{vertex_stride: 8}", "scene.build.vertex_stride", "does not fit float3"},
+             {"{vertex_stride: 14}", "scene.build.vertex_stride", "a multiple of 4"},
+             {"{aabb_stride: 28}", "scene.build.aabb_stride", "a multiple of 8"},
+             {"{aabb_stride: 16}", "scene.build.aabb_stride", "at least 24"},
+             {"{vertex_stride: 2048}", "scene.build.vertex_stride", ""},
+             {"{first_vertex: 17}", "scene.build.first_vertex", ""},
+             {"{data_offsets: yes}", "scene.build.data_offsets", "true or false"}};
+  for (const Bad& b : bad) {
+    const ParseResult r = parseBuild(b.build);
+    EXPECT_FALSE(r.value) << b.build;
+    const std::string e = firstError(r);
+    EXPECT_NE(e.find(b.field), std::string::npos) << e;
+    EXPECT_NE(e.find(b.message), std::string::npos) << e;
+  }
+}
+
 ParseResult parseUpdate(const std::string& update, const std::string& build = "") {
   return parseCaseText(
       "rules: [R-AS-UPDATE]\n"

@@ -31,9 +31,9 @@ Case simpleCase(const std::string& extra_scene = "", const std::string& extra_ra
 }
 
 TEST(FeaturePath, NamesRoundTrip) {
-  for (FeaturePath p :
-       {FeaturePath::Indirect, FeaturePath::Indirect2, FeaturePath::Libraries, FeaturePath::Clone,
-        FeaturePath::Compact, FeaturePath::Serialize, FeaturePath::Update, FeaturePath::RayQuery})
+  for (FeaturePath p : {FeaturePath::Indirect, FeaturePath::Indirect2, FeaturePath::Libraries,
+                        FeaturePath::Clone, FeaturePath::Compact, FeaturePath::Serialize,
+                        FeaturePath::Update, FeaturePath::RayQuery, FeaturePath::Layouts})
     EXPECT_EQ(featurePathFromName(featurePathName(p)), p) << featurePathName(p);
   EXPECT_FALSE(featurePathFromName("sideways"));
   EXPECT_NE(featurePathNames().find("serialize"), std::string::npos);
@@ -84,6 +84,25 @@ TEST(FeaturePath, RayQueryRefusesWhatItCannotInline) {
   Case flagged = simpleCase();
   flagged.pipeline.flags = kPipelineSkipTriangles;
   EXPECT_TRUE(valueOrMessage(throughPath(flagged, FeaturePath::RayQuery), &why)) << why;
+}
+
+TEST(FeaturePath, LayoutsTurnsOnEveryLayout) {
+  std::string why;
+  const Case laid = *valueOrMessage(throughPath(simpleCase(), FeaturePath::Layouts), &why);
+  EXPECT_TRUE(laid.scene.build.instances_as_pointers);
+  EXPECT_TRUE(laid.scene.build.data_offsets);
+  EXPECT_EQ(laid.scene.build.vertex_stride, kLayoutsVertexStride);
+  EXPECT_EQ(laid.scene.build.aabb_stride, kLayoutsAabbStride);
+  EXPECT_EQ(laid.scene.build.first_vertex, 0u) << "lavapipe 25.0.7 applies it twice";
+  EXPECT_FALSE(valueOrMessage(throughPath(laid, FeaturePath::Layouts), &why));
+  EXPECT_NE(why.find("lays its build inputs out itself"), std::string::npos) << why;
+  // Every vertex format fits the path's stride: at least its size, a
+  // multiple of its component.
+  for (VertexFormat f : {VertexFormat::Float3, VertexFormat::Float2, VertexFormat::Half4,
+                         VertexFormat::Half2, VertexFormat::Snorm16x4, VertexFormat::Snorm16x2}) {
+    EXPECT_GE(kLayoutsVertexStride, vertexStride(f)) << vertexFormatName(f);
+    EXPECT_EQ(kLayoutsVertexStride % vertexComponentBytes(f), 0u) << vertexFormatName(f);
+  }
 }
 
 TEST(FeaturePath, ACaseWithItsOwnWayThereIsLeftAlone) {

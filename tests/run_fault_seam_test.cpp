@@ -70,5 +70,28 @@ TEST(FaultSeam, VulkanErrorFaultFailsItsCallUntilTheSideEnds) {
   EXPECT_FALSE(injectedVkError("vkWaitForFences").has_value()) << "still failing after the side";
 }
 
+// A layout fault holds from `before` until `after`, and says when the case
+// has no layout it could change.
+TEST(FaultSeam, LayoutFaultHoldsUntilTheSideEnds) {
+  EXPECT_NE(plantableFaultNames().find("pointers-reversed"), std::string::npos);
+  EXPECT_FALSE(faultReadsModel("stride-ignored"));
+  RunOptions saved;
+  saved.device_results = "/some/saved/run";
+  saved.plant_fault = "offsets-ignored";
+  EXPECT_NE(errorText(plantedFaultError(saved)).find("live device"), std::string::npos);
+  Side s;
+  armDeviceSide(s, "stride-ignored", nullptr, "/tmp");
+  ASSERT_TRUE(s.before);
+  ASSERT_TRUE(s.after);
+  s.before();
+  EXPECT_EQ(injectedLayoutFault(), LayoutFault::StrideIgnored);
+  Results r;
+  Case strided;
+  strided.scene.build.vertex_stride = 16;
+  EXPECT_EQ(s.after(strided, Plan{}, r).find("not applicable"), std::string::npos);
+  EXPECT_EQ(injectedLayoutFault(), LayoutFault::None);
+  EXPECT_NE(s.after(Case{}, Plan{}, r).find("not applicable"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace rayspec

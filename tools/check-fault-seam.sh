@@ -6,7 +6,9 @@
 #   run/fault_seam.h       the run's one entry: refuse, place, arm a fault
 #   model/model_faults.h   the model's hook (ModelOptions::faults), read in
 #                          the model by model/model_fault_seam.* alone
-#   vulkan/vk_fault_hook.h the Vulkan side's hook (obeyed by vkCall only)
+#   vulkan/vk_fault_hook.h the Vulkan side's hooks (a failing call, obeyed by
+#                          vkCall only; a build layout fault, read by
+#                          vulkan/acceleration_structure.cpp only)
 # Prints each use outside them; exits 1 if there is one.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -31,6 +33,9 @@ check() {
 check "a fault/ header" '#include "fault/' harness/fault/ harness/mutate/ harness/run/fault_seam.cpp
 check "the Vulkan fault hook" 'injectVkError|injectedVkError|InjectedVkError' \
   harness/vulkan/vk_fault_hook. harness/vulkan/vk_check.h harness/vulkan/device_errors. \
+  harness/run/fault_seam.cpp
+check "the build layout fault hook" 'injectLayoutFault|injectedLayoutFault' \
+  harness/vulkan/vk_fault_hook. harness/vulkan/acceleration_structure.cpp \
   harness/run/fault_seam.cpp
 # Inside the model only its seam reads a knob; model_faults.h defines them
 # and model_engine.h carries them in (ModelOptions::faults).

@@ -135,7 +135,29 @@ struct AsBuild {
   // scene.build.order: how many of the updates (scene.update) run before the
   // copy; the rest update the copies. Default: every update, then the copy.
   std::optional<uint32_t> updates_before_copy;
+  // How the build inputs are laid out in memory (vulkan/build_layout.h);
+  // shaders observe the same scene either way. instances_as_pointers: the
+  // TLAS reads an array of pointers (arrayOfPointers) to instances placed in
+  // reverse order with gaps. data_offsets: every input sits behind junk at a
+  // nonzero primitiveOffset / transformOffset. first_vertex: this many junk
+  // vertices before each geometry's own, skipped by firstVertex (its own
+  // field: lavapipe 25.0.7 applies firstVertex twice, see the baseline).
+  // vertex_stride, aabb_stride: bytes from one vertex / box to the next (0:
+  // tightly packed), the padding filled with junk.
+  bool instances_as_pointers = false;
+  bool data_offsets = false;
+  uint32_t first_vertex = 0;
+  uint32_t vertex_stride = 0;
+  uint32_t aabb_stride = 0;
+  bool customLayout() const {
+    return instances_as_pointers || data_offsets || first_vertex || vertex_stride || aabb_stride;
+  }
 };
+
+// scene.build.vertex_stride and aabb_stride: at most this many bytes.
+constexpr uint32_t kMaxInputStride = 1024;
+// scene.build.first_vertex: at most this many junk vertices.
+constexpr uint32_t kMaxFirstVertex = 16;
 
 // At most this many updates in one scene (scene.update as a list).
 constexpr uint32_t kMaxUpdates = 4;

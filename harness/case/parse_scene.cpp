@@ -235,10 +235,69 @@ void parseInstance(YamlReader& r, const YAML::Node& n, const std::string& field,
 
 namespace {
 
-// scene.build: {flags: [..], copy: none | clone | compact} (R-AS-COPY).
+// A yes/no field: true or false.
+std::optional<bool> parseSwitch(YamlReader& r, const YAML::Node& n, const std::string& field) {
+  const auto text = r.string(n, field);
+  if (!text) return std::nullopt;
+  if (*text == "true" || *text == "false") return *text == "true";
+  r.error(n, field, "expected true or false, not '" + *text + "'");
+  return std::nullopt;
+}
+
+// The input layout fields of scene.build (vulkan/build_layout.h). Strides
+// are checked against the formats once the geometries are known
+// (checkStrides); here only what every stride must be: aabb_stride a
+// multiple of 8 (VUID-VkAccelerationStructureGeometryAabbsDataKHR-stride-03545)
+// and at least one box, both at most kMaxInputStride.
+void parseBuildLayout(YamlReader& r, const YAML::Node& n, AsBuild& build) {
+  const std::string f = "scene.build";
+  if (auto v = YamlReader::get(n, "instances_as_pointers"); v.IsDefined())
+    build.instances_as_pointers = parseSwitch(r, v, f + ".instances_as_pointers").value_or(false);
+  if (auto v = YamlReader::get(n, "data_offsets"); v.IsDefined())
+    build.data_offsets = parseSwitch(r, v, f + ".data_offsets").value_or(false);
+  if (auto v = YamlReader::get(n, "first_vertex"); v.IsDefined())
+    build.first_vertex = r.uint(v, f + ".first_vertex", kMaxFirstVertex).value_or(0);
+  if (auto v = YamlReader::get(n, "vertex_stride"); v.IsDefined())
+    build.vertex_stride = r.uint(v, f + ".vertex_stride", kMaxInputStride).value_or(0);
+  if (auto v = YamlReader::get(n, "aabb_stride"); v.IsDefined()) {
+    build.aabb_stride = r.uint(v, f + ".aabb_stride", kMaxInputStride).value_or(0);
+    if (build.aabb_stride && (build.aabb_stride < 24 || build.aabb_stride % 8))
+      r.error(v, f + ".aabb_stride",
+              std::to_string(build.aabb_stride) +
+                  ": at least 24 (one box) and a multiple of 8 "
+                  "(VUID-VkAccelerationStructureGeometryAabbsDataKHR-stride-03545)");
+  }
+}
+
+// scene.build.vertex_stride against every triangle geometry's format: at
+// least one vertex, a multiple of its component size
+// (VUID-VkAccelerationStructureGeometryTrianglesDataKHR-vertexStride-03735).
+void checkStrides(YamlReader& r, const YAML::Node& n, const Scene& scene) {
+  const uint32_t stride = scene.build.vertex_stride;
+  if (!stride) return;
+  for (const Blas& b : scene.blases)
+    for (const Geometry& g : b.geometries) {
+      if (g.kind != Geometry::Kind::Triangles) continue;
+      const uint32_t vertex = vertexStride(g.vertex_format);
+      const uint32_t component = vertexComponentBytes(g.vertex_format);
+      if (stride >= vertex && stride % component == 0) continue;
+      r.error(YamlReader::get(n, "vertex_stride"), "scene.build.vertex_stride",
+              std::to_string(stride) + " does not fit " + vertexFormatName(g.vertex_format) +
+                  " (BLAS '" + b.name + "'): at least " + std::to_string(vertex) +
+                  " bytes and a multiple of " + std::to_string(component));
+      return;
+    }
+}
+
+// scene.build: {flags: [..], copy: none | clone | compact, layout fields}
+// (R-AS-COPY).
 void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
   const std::string f = "scene.build";
-  if (!r.expectMap(n, f, {"flags", "copy", "order"})) return;
+  if (!r.expectMap(n, f,
+                   {"flags", "copy", "order", "instances_as_pointers", "data_offsets",
+                    "first_vertex", "vertex_stride", "aabb_stride"}))
+    return;
+  parseBuildLayout(r, n, build);
   if (auto v = YamlReader::get(n, "flags"); v.IsDefined())
     if (auto x = r.flags(v, f + ".flags", buildFlagNames())) {
       if ((*x & kBuildPreferFastTrace) && (*x & kBuildPreferFastBuild))
@@ -280,8 +339,10 @@ void parseScene(YamlReader& r, const YAML::Node& n, Scene& scene) {
       scene.instances.push_back(inst);
     }
   if (auto u = YamlReader::get(n, "update"); u.IsDefined()) parseSceneUpdate(r, u, scene);
-  if (auto b = YamlReader::get(n, "build"); b.IsMap())
+  if (auto b = YamlReader::get(n, "build"); b.IsMap()) {
     if (auto o = YamlReader::get(b, "order"); o.IsDefined()) parseBuildOrder(r, o, scene);
+    checkStrides(r, b, scene);
+  }
 }
 
 }  // namespace rayspec

@@ -98,6 +98,9 @@ uint32_t vertexComponents(VertexFormat f) {
 uint32_t vertexStride(VertexFormat f) {
   return info(f).stride;
 }
+uint32_t vertexComponentBytes(VertexFormat f) {
+  return isHalf(f) || isSnorm(f) ? 2 : 4;
+}
 
 std::string vertexFormatProblem(VertexFormat f, const Vec3& v) {
   if (vertexComponents(f) == 2 && v[2] != 0.0f)

@@ -26,8 +26,9 @@ const char* vertexFormatName(VertexFormat f);  // float3, float2, half4, half2, 
 std::optional<VertexFormat> vertexFormatFromName(const std::string& name);
 const std::string& vertexFormatNames();  // "float3, float2, ..." for messages
 
-uint32_t vertexComponents(VertexFormat f);  // 2 or 3 positions used (half4/snorm16x4: 3)
-uint32_t vertexStride(VertexFormat f);      // bytes of one vertex
+uint32_t vertexComponents(VertexFormat f);      // 2 or 3 positions used (half4/snorm16x4: 3)
+uint32_t vertexStride(VertexFormat f);          // bytes of one vertex
+uint32_t vertexComponentBytes(VertexFormat f);  // bytes of one component: 4 or 2
 
 // Why `v` cannot be stored in `f` (empty when it can): a z other than 0 in a
 // two-component format, a value outside -1..1 in an snorm format, a finite

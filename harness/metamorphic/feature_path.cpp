@@ -62,6 +62,22 @@ Result<void> tracedByRayQuery(Case& c) {
   return {};
 }
 
+// Every build input laid out another way: instances behind pointers, every
+// input at offsets behind junk, vertices 20 bytes apart (fits every vertex
+// format: at least 12 bytes, a multiple of 4) and boxes 40. Not
+// first_vertex: lavapipe 25.0.7 applies it twice, which would fail every
+// triangle case; accel/layouts-first-vertex checks it alone.
+Result<void> laidOut(Case& c) {
+  if (c.scene.build.customLayout()) {
+    return errorMessage("the case lays its build inputs out itself");
+  }
+  c.scene.build.instances_as_pointers = true;
+  c.scene.build.data_offsets = true;
+  c.scene.build.vertex_stride = kLayoutsVertexStride;
+  c.scene.build.aabb_stride = kLayoutsAabbStride;
+  return {};
+}
+
 }  // namespace
 
 const char* featurePathName(FeaturePath p) {
@@ -103,6 +119,9 @@ Result<Case> throughPath(const Case& c, FeaturePath path) {
       break;
     case FeaturePath::RayQuery:
       RAYSPEC_TRY_VOID(tracedByRayQuery(out));
+      break;
+    case FeaturePath::Layouts:
+      RAYSPEC_TRY_VOID(laidOut(out));
       break;
   }
   return out;

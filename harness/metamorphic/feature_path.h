@@ -1,7 +1,7 @@
 // Feature paths (--through): a way of building and launching that must not
 // change what shaders observe, applied to every case of a run so that the
 // path meets every family (R-INDIRECT, R-LIBRARY, R-AS-COPY, R-AS-UPDATE,
-// R-RQ-EQUIV).
+// R-RQ-EQUIV), or laying the build inputs out another way (layouts).
 // The model's expectation stays the case's own; a case that already takes
 // another way of the same kind (its own launch command, libraries, copy or
 // update) is not sent through it, and says why.
@@ -26,9 +26,15 @@ namespace rayspec {
   /* built with ALLOW_UPDATE, then updated in place to the same scene */                     \
   X(Update, "update")                                                                        \
   /* every trace a ray query loop in raygen (case/ray_query_inlining.h) */                   \
-  X(RayQuery, "ray-query")
+  X(RayQuery, "ray-query")                                                                   \
+  /* build inputs behind pointers, at offsets, at padded strides (scene.build layouts) */    \
+  X(Layouts, "layouts")
 enum class FeaturePath { RAYSPEC_FEATURE_PATHS(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(FeaturePath, RAYSPEC_FEATURE_PATHS);
+
+// The strides of the layouts path.
+constexpr uint32_t kLayoutsVertexStride = 20;
+constexpr uint32_t kLayoutsAabbStride = 40;
 
 const char* featurePathName(FeaturePath p);
 std::optional<FeaturePath> featurePathFromName(const std::string& name);

@@ -23,6 +23,24 @@ void armVulkanError(Side& s, const std::string& fault, const InjectedVkError& e)
   };
 }
 
+// The builds lay their inputs out wrong for this case only. Where the case
+// asks for no layout the fault would change, it says so.
+void armLayoutFault(Side& s, const std::string& fault, LayoutFault f) {
+  s.before = [f] {
+    injectLayoutFault(f);
+  };
+  s.after = [fault](const Case& c, const Plan&, Results&) -> std::string {
+    injectLayoutFault(LayoutFault::None);
+    const AsBuild& b = c.scene.build;
+    const bool applies = fault == "stride-ignored"    ? b.vertex_stride || b.aabb_stride
+                         : fault == "offsets-ignored" ? b.data_offsets || b.first_vertex
+                                                      : b.instances_as_pointers;
+    return (applies ? "planted fault " : "planted fault not applicable: ") + fault +
+           (applies ? ": the builds misread the input layout"
+                    : ": the case asks for no such layout (scene.build)");
+  };
+}
+
 // A crash or hang in the device's process (only in a child: the run loop
 // refuses them in process), or the results a faulty device gives.
 void armResultsFault(Side& s, const std::string& fault, std::shared_ptr<const Results> model,
@@ -42,7 +60,7 @@ void armResultsFault(Side& s, const std::string& fault, std::shared_ptr<const Re
 Result<void> plantedFaultError(const RunOptions& opt) {
   const std::string& name = opt.plant_fault;
   if (name.empty()) return {};
-  const bool vulkan_error = deviceErrorFault(name).has_value();
+  const bool vulkan_error = deviceErrorFault(name).has_value() || layoutFault(name).has_value();
   if (!isFaultName(name) && !vulkan_error) return errorMessage("unknown fault '" + name + "'");
   if (isProcessFault(name) && opt.no_isolation)
     return errorMessage("the fault '" + name +
@@ -62,6 +80,7 @@ std::string plantableFaultNames() {
   std::string list;
   for (const std::string& name : faultNames()) list += (list.empty() ? "" : ", ") + name;
   for (const std::string& name : deviceErrorFaultNames()) list += ", " + name;
+  for (const std::string& name : layoutFaultNames()) list += ", " + name;
   return list;
 }
 
@@ -71,7 +90,7 @@ std::string plantedFaultIn(const RunOptions& opt, const std::string& case_name) 
 }
 
 bool faultReadsModel(const std::string& fault) {
-  return !fault.empty() && !deviceErrorFault(fault);
+  return !fault.empty() && !deviceErrorFault(fault) && !layoutFault(fault);
 }
 
 void armDeviceSide(Side& s, const std::string& fault, std::shared_ptr<const Results> model,
@@ -79,6 +98,8 @@ void armDeviceSide(Side& s, const std::string& fault, std::shared_ptr<const Resu
   if (fault.empty()) return;
   if (const std::optional<InjectedVkError> injected = deviceErrorFault(fault))
     armVulkanError(s, fault, *injected);
+  else if (const std::optional<LayoutFault> layout = layoutFault(fault))
+    armLayoutFault(s, fault, *layout);
   else
     armResultsFault(s, fault, std::move(model), run_dir);
 }

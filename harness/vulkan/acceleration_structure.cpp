@@ -2,10 +2,12 @@
 
 #include <cstring>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "case/flag_names.h"
 #include "vulkan/acceleration_copy.h"
+#include "vulkan/build_layout.h"
 #include "vulkan/commands.h"
 #include "vulkan/memory.h"
 #include "vulkan/vk_check.h"
@@ -93,50 +95,47 @@ struct BlasBuild {
 
 constexpr uint64_t kNone = ~0ull;
 
-// First pass: pack the inputs and fill the geometry descriptions with packer
-// offsets; addresses are patched once the input buffer exists.
-void describeBlas(const Blas& blas, InputPacker& packer, BlasBuild& b) {
+// First pass: pack the inputs (laid out as scene.build asks, with the
+// planted layout fault if any) and fill the geometry descriptions with
+// packer offsets; addresses are patched once the input buffer exists.
+void describeBlas(const Blas& blas, const AsBuild& layout, InputPacker& packer, BlasBuild& b) {
+  const LayoutFault fault = injectedLayoutFault();
+  auto place = [&packer](const std::vector<uint8_t>& bytes) {
+    return bytes.empty() ? kNone : packer.add(bytes.data(), bytes.size());
+  };
   for (const Geometry& g : blas.geometries) {
     VkAccelerationStructureGeometryKHR geo{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
     geo.flags = g.flags;
-    uint32_t primitives = g.primitiveCount();
     uint64_t data = kNone, index = kNone, transform = kNone;
+    VkAccelerationStructureBuildRangeInfoKHR range{};
     if (g.kind == Geometry::Kind::Triangles) {
+      const TriangleInputs in = layTriangles(g, layout, fault);
       geo.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
       auto& t = geo.geometry.triangles;
       t.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR;
       t.vertexFormat = vkVertexFormat(g.vertex_format);
-      t.vertexStride = vertexStride(g.vertex_format);
-      t.maxVertex = g.vertices.empty() ? 0 : static_cast<uint32_t>(g.vertices.size() - 1);
-      const std::vector<uint8_t> vertices = encodeVertices(g.vertex_format, g.vertices);
-      data = packer.add(vertices.data(), vertices.size());
+      t.vertexStride = in.stride;
+      t.maxVertex = in.max_vertex;
       t.indexType = g.indices.empty() ? VK_INDEX_TYPE_NONE_KHR
                     : g.index16       ? VK_INDEX_TYPE_UINT16
                                       : VK_INDEX_TYPE_UINT32;
-      if (g.index16) {
-        const std::vector<uint16_t> narrow(g.indices.begin(), g.indices.end());
-        index = packer.add(narrow.data(), narrow.size() * 2);
-      } else if (!g.indices.empty()) {
-        index = packer.add(g.indices.data(), g.indices.size() * 4);
-      }
-      if (g.transform) {
-        static_assert(sizeof(VkTransformMatrixKHR) == sizeof(Transform));
-        transform = packer.add(g.transform->data(), sizeof(Transform));
-      }
+      data = packer.add(in.vertices.data(), in.vertices.size());
+      index = place(in.indices);
+      transform = place(in.transform);
+      range = in.range;
     } else {
+      const AabbInputs in = layAabbs(g, layout, fault);
       geo.geometryType = VK_GEOMETRY_TYPE_AABBS_KHR;
       auto& a = geo.geometry.aabbs;
       a.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_AABBS_DATA_KHR;
-      a.stride = sizeof(VkAabbPositionsKHR);
-      static_assert(sizeof(VkAabbPositionsKHR) == sizeof(std::array<float, 6>));
-      data = packer.add(g.aabbs.data(), g.aabbs.size() * sizeof(VkAabbPositionsKHR));
+      a.stride = in.stride;
+      data = packer.add(in.boxes.data(), in.boxes.size());
+      range = in.range;
     }
     b.geometries.push_back(geo);
     b.offsets.insert(b.offsets.end(), {data, index, transform});
-    VkAccelerationStructureBuildRangeInfoKHR range{};
-    range.primitiveCount = primitives;
     b.ranges.push_back(range);
-    b.max_primitives.push_back(primitives);
+    b.max_primitives.push_back(range.primitiveCount);
   }
 }
 
@@ -307,19 +306,18 @@ std::vector<VkAccelerationStructureInstanceKHR> allInstances(const Scene& scene,
   return instances;
 }
 
-// The instance geometry of each level over an instance buffer holding every
-// level's instances one after the other.
+// The instance geometry of each level over an instance buffer laid out as
+// `layout` says.
 std::vector<std::vector<VkAccelerationStructureGeometryKHR>> instanceGeometry(
-    VkDeviceAddress instances, uint32_t levels, uint32_t instance_count) {
+    VkDeviceAddress instances, const InstanceLayout& layout, uint32_t levels) {
   std::vector<std::vector<VkAccelerationStructureGeometryKHR>> out(levels);
   for (uint32_t level = 0; level < levels; ++level) {
     VkAccelerationStructureGeometryKHR g{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
     g.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
     g.geometry.instances.sType =
         VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
-    g.geometry.instances.arrayOfPointers = VK_FALSE;
-    g.geometry.instances.data.deviceAddress =
-        instances + level * instance_count * sizeof(VkAccelerationStructureInstanceKHR);
+    g.geometry.instances.arrayOfPointers = layout.pointers() ? VK_TRUE : VK_FALSE;
+    g.geometry.instances.data.deviceAddress = instances + layout.dataOffset(level);
     out[level].push_back(g);
   }
   return out;
@@ -329,11 +327,12 @@ std::vector<std::vector<VkAccelerationStructureGeometryKHR>> instanceGeometry(
 Result<Builds> createTlases(
     const VulkanContext& ctx,
     const std::vector<std::vector<VkAccelerationStructureGeometryKHR>>& geometry,
-    uint32_t instance_count, const VkAccelerationStructureBuildRangeInfoKHR* range,
+    uint32_t instance_count, const std::vector<VkAccelerationStructureBuildRangeInfoKHR>& ranges,
     VkBuildAccelerationStructureFlagsKHR flags, ScratchPlan& scratch,
     std::vector<BuiltStructure>& structures, Cleanup& cleanup) {
   Builds out;
-  for (const auto& g : geometry) {
+  for (size_t level = 0; level < geometry.size(); ++level) {
+    const auto& g = geometry[level];
     VkAccelerationStructureBuildGeometryInfoKHR info =
         buildInfo(VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, g, flags);
     VkAccelerationStructureBuildSizesInfoKHR sizes{
@@ -345,7 +344,7 @@ Result<Builds> createTlases(
                 createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
                                 sizes.accelerationStructureSize, cleanup));
     structures.push_back({info.dstAccelerationStructure, sizes.accelerationStructureSize});
-    out.add(info, range, scratch.add(sizes.buildScratchSize));
+    out.add(info, &ranges[level], scratch.add(sizes.buildScratchSize));
     out.update_scratch.push_back(sizes.updateScratchSize);
   }
   return out;
@@ -436,9 +435,9 @@ class SceneBuilder {
     updates_.assign(updates(), std::vector<BlasBuild>(first().blases.size()));
     for (size_t i = 0; i < first().blases.size(); ++i) {
       if (!used[i]) continue;
-      describeBlas(first().blases[i], packer, builds_[i]);
+      describeBlas(first().blases[i], scene_.build, packer, builds_[i]);
       for (size_t k = 0; k < updates(); ++k)
-        describeBlas(states_[k + 1]->blases[i], packer, updates_[k][i]);
+        describeBlas(states_[k + 1]->blases[i], scene_.build, packer, updates_[k][i]);
     }
     if (!packer.bytes().empty()) {
       RAYSPEC_TRY(const Buffer inputs,
@@ -466,32 +465,34 @@ class SceneBuilder {
   Result<void> createTopLevels() {
     const uint32_t levels = first().tlasCount();
     instance_count_ = static_cast<uint32_t>(first().instances.size());
-    tlas_range_.primitiveCount = instance_count_;
-    const VkDeviceSize bytes = std::max<VkDeviceSize>(1, size_t(levels) * instance_count_) *
-                               sizeof(VkAccelerationStructureInstanceKHR);
+    layout_.emplace(scene_.build, levels, instance_count_, injectedLayoutFault());
+    for (uint32_t level = 0; level < levels; ++level) {
+      VkAccelerationStructureBuildRangeInfoKHR range{};
+      range.primitiveCount = instance_count_;
+      range.primitiveOffset = layout_->primitiveOffset(level);
+      tlas_ranges_.push_back(range);
+    }
     for (size_t k = 0; k < states_.size(); ++k) {
       RAYSPEC_TRY(instances_.emplace_back(),
-                  createBuffer(ctx_, bytes, kInputUsage, MemoryUse::Host, cleanup_));
-      geometry_.push_back(instanceGeometry(instances_.back().address, levels, instance_count_));
+                  createBuffer(ctx_, layout_->bytes(), kInputUsage, MemoryUse::Host, cleanup_));
+      geometry_.push_back(instanceGeometry(instances_.back().address, *layout_, levels));
     }
-    RAYSPEC_TRY(tlases_, createTlases(ctx_, geometry_[0], instance_count_, &tlas_range_, flags_,
+    RAYSPEC_TRY(tlases_, createTlases(ctx_, geometry_[0], instance_count_, tlas_ranges_, flags_,
                                       scratch_, tlas_structures_, cleanup_));
+    std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
+    for (const auto& range : tlas_ranges_) ranges.push_back(&range);
     for (size_t k = 1; k < states_.size(); ++k) {
       std::vector<const std::vector<VkAccelerationStructureGeometryKHR>*> geometries;
       for (const auto& g : geometry_[k]) geometries.push_back(&g);
-      tlas_updates_.push_back(updatesOf(
-          tlases_, geometries,
-          std::vector<const VkAccelerationStructureBuildRangeInfoKHR*>(levels, &tlas_range_),
-          scratch_));
+      tlas_updates_.push_back(updatesOf(tlases_, geometries, ranges, scratch_));
     }
     return {};
   }
 
+  // The state's instances (and pointers to them) where the layout puts them.
   void writeInstances(const Scene& scene, Buffer& buffer) const {
-    const auto instances = allInstances(scene, builds_);
-    if (!instances.empty())
-      std::memcpy(buffer.mapped, instances.data(),
-                  instances.size() * sizeof(VkAccelerationStructureInstanceKHR));
+    const std::vector<uint8_t> bytes = layout_->write(allInstances(scene, builds_), buffer.address);
+    std::memcpy(buffer.mapped, bytes.data(), bytes.size());
   }
 
   // The updates from the copy on act on the copies (R-AS-COPY, R-AS-UPDATE).
@@ -545,7 +546,8 @@ class SceneBuilder {
   Builds blases_, tlases_;
   std::vector<Builds> blas_updates_, tlas_updates_;  // per update
   uint32_t instance_count_ = 0;
-  VkAccelerationStructureBuildRangeInfoKHR tlas_range_{};
+  std::optional<InstanceLayout> layout_;
+  std::vector<VkAccelerationStructureBuildRangeInfoKHR> tlas_ranges_;                   // per level
   std::vector<Buffer> instances_;                                                       // per state
   std::vector<std::vector<std::vector<VkAccelerationStructureGeometryKHR>>> geometry_;  // per state
   std::vector<BuiltStructure> tlas_structures_;

@@ -1,15 +1,20 @@
-// The Vulkan side's fault-injection hook (test only). The planted faults
+// The Vulkan side's fault-injection hooks (test only). The planted faults
 // device-lost, out-of-device-memory and pipeline-refused (vulkan/
 // device_errors.h) make one Vulkan call fail on purpose; they reach the
 // Vulkan side through injectVkError and nothing else, and vkCall
-// (vulkan/vk_check.h) is the one place that obeys it. A product run never
-// sets it. README "The fault seam" lists every such hook.
+// (vulkan/vk_check.h) is the one place that obeys it. The layout faults
+// reach it through injectLayoutFault, read by vulkan/acceleration_structure.cpp
+// alone (which lays its inputs out by vulkan/build_layout.h with it). A product run never sets
+// either. README "The fault seam" lists every such hook.
 #pragma once
 
 #include <vulkan/vulkan.h>
 
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "base/enum_names.h"
 
 namespace rayspec {
 
@@ -24,5 +29,28 @@ void injectVkError(const InjectedVkError& e);
 
 // The answer that stands for a call of `call`; none: make the call.
 std::optional<VkResult> injectedVkError(const char* call);
+
+// The planted layout faults: the builds are given a wrong stride, offset or
+// pointer order over input bytes laid out as scene.build asks
+// (vulkan/build_layout.h), as a driver that misreads them would read them.
+//   stride-ignored     vertexStride / AABB stride of the tightly packed data
+//   offsets-ignored    primitiveOffset, firstVertex, transformOffset all 0
+//   pointers-reversed  each level's instance pointers in reverse order
+#define RAYSPEC_LAYOUT_FAULTS(X)                      \
+  X(None, "")                          /* no fault */ \
+  X(StrideIgnored, "stride-ignored")   /* tight */    \
+  X(OffsetsIgnored, "offsets-ignored") /* zeros */    \
+  X(PointersReversed, "pointers-reversed")
+enum class LayoutFault { RAYSPEC_LAYOUT_FAULTS(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(LayoutFault, RAYSPEC_LAYOUT_FAULTS);
+
+// Every later build in this process lays its inputs out with fault f, until
+// cleared (injectLayoutFault(LayoutFault::None)).
+void injectLayoutFault(LayoutFault f);
+LayoutFault injectedLayoutFault();
+
+// The layout fault named `name` (none: not one).
+std::optional<LayoutFault> layoutFault(const std::string& name);
+const std::vector<std::string>& layoutFaultNames();
 
 }  // namespace rayspec
