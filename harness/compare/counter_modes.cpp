@@ -20,6 +20,11 @@ std::map<std::string, CounterMode> counterModes(const Case& c) {
     if (g.any_hit) traversal_dependent(*g.any_hit);
     if (g.intersection) traversal_dependent(*g.intersection);
   }
+  // A ray_query's candidate blocks run as often as candidates are offered:
+  // in any order, possibly again, beyond the committed t or not (R-RQ-CANDIDATES).
+  walkStatements(c.pipeline.raygen, [&](const Stmt& s) {
+    if (s.kind == Stmt::Kind::RayQuery) traversal_dependent(s.then_);
+  });
   // What the case declares wins.
   for (const auto& [name, mode] : c.outputs.counter_modes) {
     if (mode == "exact") modes[name] = CounterMode::Exact;
@@ -35,7 +40,8 @@ namespace {
 bool holdsTraceOrCall(const Stmt& s) {
   bool holds = false;
   walkStatements(s.then_, [&](const Stmt& x) {
-    holds = holds || x.kind == Stmt::Kind::Trace || x.kind == Stmt::Kind::Call;
+    holds = holds || x.kind == Stmt::Kind::Trace || x.kind == Stmt::Kind::Call ||
+            x.kind == Stmt::Kind::RayQuery;
   });
   return holds;
 }
@@ -62,7 +68,8 @@ std::set<std::string> countersUndefinedRaysMayMove(const Case& c) {
     // body is walked where it is invoked.
     if (s.kind == Stmt::Kind::Repeat && holdsTraceOrCall(s)) after_undefined = true;
     if (s.kind == Stmt::Kind::Count && after_undefined) moved.insert(s.counter);
-    if (s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::Call) after_undefined = true;
+    if (s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::Call || s.kind == Stmt::Kind::RayQuery)
+      after_undefined = true;
     walkOwnExpressions(s, [&](const Expr& e) {
       if (e.kind == Expr::Kind::Op && e.type == ValueType::Uint &&
           (e.name == "div" || e.name == "mod"))
