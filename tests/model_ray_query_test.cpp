@@ -76,6 +76,25 @@ TEST(ModelRayQuery, GenerateOutsideItsIntervalIsUndefined) {
   EXPECT_NE(r.undefined[0].what.find("outside [tmin"), std::string::npos) << r.undefined[0].what;
 }
 
+TEST(ModelRayQuery, ACommittedValueWithNothingCommittedIsUndefined) {
+  Case c = suiteCaseFile("ray-query/confirm-nearest");
+  // after: record committed.t whether or not anything is committed.
+  Stmt read;
+  read.kind = Stmt::Kind::Record;
+  Expr t;
+  t.kind = Expr::Kind::Builtin;
+  t.name = "committed.t";
+  t.type = ValueType::Float;
+  read.assigns.emplace_back("value5", t);
+  c.pipeline.raygen[0].else_.push_back(read);
+  c.outputs.per_ray.push_back("value5");
+  const Results r = runOnModel(c, derivePlan(c), ModelOptions{});
+  // Only ray 4 (between the triangles: nothing to confirm) reads it undefined.
+  ASSERT_EQ(r.undefined.size(), 1u);
+  EXPECT_EQ(r.undefined[0].ray, 4u);
+  EXPECT_EQ(r.undefined[0].reason, UndefinedReason::QueryNothingCommitted);
+}
+
 TEST(ModelRayQuery, TerminateAndFirstHitEndTraversal) {
   for (ModelTier tier : kTiers) {
     const Results t = runSuiteCase("ray-query/terminate-middle", tier);

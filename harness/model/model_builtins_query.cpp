@@ -1,6 +1,8 @@
 // The ray query getters (program/builtin_table.h: candidate.*, committed.*,
 // query.*), read from the innermost query running (model/query_run.h):
 // what the matching ray tracing built-ins would hold for that hit (R-RQ-VALUES).
+#include <string>
+
 #include "model/model_builtins.h"
 #include "model/traversal.h"
 
@@ -76,7 +78,16 @@ Val ModelBuiltins::queryBuiltin(const CExpr& e, const StageEnv& env) const {
   // read the candidate while one is offered.
   if (!committed || (q->cand && sh_.fault_seam.queryCommittedReadsCandidate()))
     return queryHit(row, q->cand_view);
-  if (!best.valid) return Val{};  // undefined (R-RQ-VALUES): the parser cannot tell
+  if (!best.valid) {
+    // R-RQ-VALUES, R-UB: no committed intersection to read (a device may
+    // even crash: lavapipe does); the parser cannot tell, the model marks it.
+    const std::string what = e.src ? e.src->name : std::string("a committed value");
+    const std::string field = e.src && !e.src->loc.field.empty() ? e.src->loc.field : what;
+    if (!st_.ray_undefined)
+      st_.markUndefined(UndefinedReason::QueryNothingCommitted,
+                        field + ": " + what + " read with nothing committed");
+    return Val{};
+  }
   HitView hv = viewOf(scene, *sh_.c, q->ray, best.instance, best.geometry, best.primitive);
   setHit(hv, static_cast<float>(best.t), best.kind, best.b1, best.b2);
   return queryHit(row, hv);
