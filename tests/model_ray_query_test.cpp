@@ -123,6 +123,16 @@ TEST(ModelRayQuery, NestedQueriesAndLoopsKeepTheirOwnState) {
   EXPECT_FLOAT_EQ(fword(l, 0, "color", 3), 1.25f);
 }
 
+TEST(ModelRayQuery, ClosestHitAndMissRunQueriesInTheirOwnFrame) {
+  for (ModelTier tier : kTiers) {
+    const Results r = runSuiteCase("ray-query/query-in-hit-and-miss", tier);
+    EXPECT_EQ(column(r, "value", 3), (V{31, 1, 233})) << modelTierName(tier);
+    EXPECT_FLOAT_EQ(fword(r, 0, "color", 0), 2.0f);
+    EXPECT_FLOAT_EQ(fword(r, 0, "color", 1), -1.5f);  // the query's origin: the hit position
+    EXPECT_FLOAT_EQ(fword(r, 2, "color", 0), 15.0f);
+  }
+}
+
 TEST(ModelRayQuery, CandidateAndCommittedGettersReadTheirOwnHits) {
   const Results r = runSuiteCase("ray-query/candidate-vs-committed", ModelTier::Exact);
   EXPECT_EQ(column(r, "value", 2), (V{2, 2}));

@@ -47,10 +47,11 @@ std::string check(Program p, Stage stage = Stage::Raygen) {
   return e ? e->message : "";
 }
 
-TEST(RayQueryProgram, GettersRowsAreRaygenOnlyAndInOrder) {
+TEST(RayQueryProgram, GettersRowsAreInOrderForTheStagesThatMayTrace) {
+  using namespace stage_letters;
   for (int b = kBiQCandT; b <= kBiQWorldDirection; ++b) {
     const BuiltinInfo& info = builtins()[b];
-    EXPECT_EQ(info.stages, stageBit(Stage::Raygen)) << info.name;
+    EXPECT_EQ(info.stages, R | C | M | K) << info.name;
     EXPECT_NE(std::string(info.glsl).find("rs_query"), std::string::npos) << info.name;
   }
   // The committed row of each candidate row has the same suffix and type.
@@ -80,7 +81,10 @@ TEST(RayQueryProgram, GettersOnlyInsideTheirBlocks) {
       check({rayQuery({recordValue("candidate.aabb_opaque")}, {}, {})}).find("AABB candidate's"),
       std::string::npos);
   EXPECT_EQ(check({rayQuery({}, {recordValue("candidate.aabb_opaque")}, {})}), "");
-  EXPECT_NE(check({rayQuery({}, {}, {})}, Stage::ClosestHit).find("not allowed in closest_hit"),
+  // Outside raygen the query's origin and direction are required, as a trace's.
+  EXPECT_NE(check({rayQuery({}, {}, {})}, Stage::ClosestHit).find("outside raygen needs 'origin'"),
+            std::string::npos);
+  EXPECT_NE(check({rayQuery({}, {}, {})}, Stage::AnyHit).find("not allowed in any_hit"),
             std::string::npos);
 }
 

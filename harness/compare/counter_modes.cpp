@@ -22,9 +22,16 @@ std::map<std::string, CounterMode> counterModes(const Case& c) {
   }
   // A ray_query's candidate blocks run as often as candidates are offered:
   // in any order, possibly again, beyond the committed t or not (R-RQ-CANDIDATES).
-  walkStatements(c.pipeline.raygen, [&](const Stmt& s) {
-    if (s.kind == Stmt::Kind::RayQuery) traversal_dependent(s.then_);
-  });
+  auto queries = [&](const Program& p) {
+    walkStatements(p, [&](const Stmt& s) {
+      if (s.kind == Stmt::Kind::RayQuery) traversal_dependent(s.then_);
+    });
+  };
+  queries(c.pipeline.raygen);
+  for (const Program& p : c.pipeline.miss) queries(p);
+  for (const Program& p : c.pipeline.callables) queries(p);
+  for (const HitGroup& g : c.pipeline.hit_groups)
+    if (g.closest_hit) queries(*g.closest_hit);
   // What the case declares wins.
   for (const auto& [name, mode] : c.outputs.counter_modes) {
     if (mode == "exact") modes[name] = CounterMode::Exact;
