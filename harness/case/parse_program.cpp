@@ -108,21 +108,10 @@ bool constantIndex(YamlReader& r, const YAML::Node& v, const std::string& f, con
   return index.has_value();
 }
 
-bool parseTrace(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
-  s.kind = Stmt::Kind::Trace;
-  if (v.IsNull()) return true;
-  if (!r.expectMap(v, f,
-                   {"origin", "direction", "tmin", "tmax", "flags", "cull_mask", "sbt_offset",
-                    "sbt_stride", "miss", "payload", "tlas", "location"}))
-    return false;
-  bool ok = constantIndex(r, v, f, "tlas", kMaxTlases - 1, s.trace.tlas, s.trace.tlas_loc);
-  ok = constantIndex(r, v, f, "location", kMaxPayloadLocations - 1, s.trace.location,
-                     s.trace.location_loc) &&
-       ok;
-  // The payload the trace starts with (zero where not given), into s.assigns.
-  if (const YAML::Node p = YamlReader::get(v, "payload"); p.IsDefined())
-    ok = parsePayloadAssigns(r, p, f + ".payload", s) && ok;
-  TraceArgs& t = s.trace;
+// The trace fields a trace or ray_query gives (origin .. miss), each an
+// expression; flags also a list of ray flag names.
+bool parseTraceSlots(YamlReader& r, const YAML::Node& v, const std::string& f, TraceArgs& t) {
+  bool ok = true;
   struct Slot {
     const char* key;
     std::vector<Expr>* exprs;
@@ -158,6 +147,55 @@ bool parseTrace(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& 
     }
     slot.exprs->push_back(std::move(e));
   }
+  return ok;
+}
+
+bool parseTrace(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::Trace;
+  if (v.IsNull()) return true;
+  if (!r.expectMap(v, f,
+                   {"origin", "direction", "tmin", "tmax", "flags", "cull_mask", "sbt_offset",
+                    "sbt_stride", "miss", "payload", "tlas", "location"}))
+    return false;
+  bool ok = constantIndex(r, v, f, "tlas", kMaxTlases - 1, s.trace.tlas, s.trace.tlas_loc);
+  ok = constantIndex(r, v, f, "location", kMaxPayloadLocations - 1, s.trace.location,
+                     s.trace.location_loc) &&
+       ok;
+  // The payload the trace starts with (zero where not given), into s.assigns.
+  if (const YAML::Node p = YamlReader::get(v, "payload"); p.IsDefined())
+    ok = parsePayloadAssigns(r, p, f + ".payload", s) && ok;
+  return parseTraceSlots(r, v, f, s.trace) && ok;
+}
+
+// ray_query: {origin .., tlas, triangle: [..], aabb: [..], after: [..]}: the
+// query's fields as a trace's, its candidate blocks in then_ (Candidates,
+// size 0 triangles, 1 AABBs), `after` in else_.
+bool parseRayQuery(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::RayQuery;
+  if (!v.IsNull() && !r.expectMap(v, f,
+                                  {"origin", "direction", "tmin", "tmax", "flags", "cull_mask",
+                                   "tlas", "triangle", "aabb", "after"}))
+    return false;
+  bool ok = true;
+  if (!v.IsNull()) {
+    ok = constantIndex(r, v, f, "tlas", kMaxTlases - 1, s.trace.tlas, s.trace.tlas_loc);
+    ok = parseTraceSlots(r, v, f, s.trace) && ok;
+  }
+  const char* blocks[] = {"triangle", "aabb"};
+  for (uint32_t k = 0; k < 2; ++k) {
+    Stmt c;
+    c.kind = Stmt::Kind::Candidates;
+    c.size = k;
+    c.loc = s.loc;
+    if (const YAML::Node b = v.IsNull() ? YAML::Node() : YamlReader::get(v, blocks[k]);
+        b.IsDefined()) {
+      c.loc = r.loc(b, f + "." + blocks[k]);
+      ok = parseBlock(r, b, f + "." + blocks[k], c.then_) && ok;
+    }
+    s.then_.push_back(std::move(c));
+  }
+  if (const YAML::Node b = v.IsNull() ? YAML::Node() : YamlReader::get(v, "after"); b.IsDefined())
+    ok = parseBlock(r, b, f + ".after", s.else_) && ok;
   return ok;
 }
 
@@ -355,14 +393,17 @@ bool scalarStmt(YamlReader& r, const YAML::Node& n, const std::string& field, St
       {"terminate", Stmt::Kind::Terminate},
       {"break", Stmt::Kind::Break},
       {"continue", Stmt::Kind::Continue},
-      {"return", Stmt::Kind::Return}};
+      {"return", Stmt::Kind::Return},
+      {"confirm", Stmt::Kind::Confirm},
+      {"terminate_query", Stmt::Kind::TerminateQuery}};
   for (const auto& [name, kind] : kScalars)
     if (n.Scalar() == name) {
       s.kind = kind;
       return true;
     }
   r.error(n, field,
-          "unknown statement '" + n.Scalar() + "' (ignore, terminate, break, continue, return)");
+          "unknown statement '" + n.Scalar() +
+              "' (ignore, terminate, break, continue, return, confirm, terminate_query)");
   return false;
 }
 
@@ -421,6 +462,11 @@ bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stm
   if (key == "array") return parseArray(r, v, f, s);
   if (key == "store") return parseStore(r, v, f, s);
   if (key == "trace") return parseTrace(r, v, f, s);
+  if (key == "ray_query") return parseRayQuery(r, v, f, s);
+  if (key == "generate") {
+    s.kind = Stmt::Kind::Generate;
+    return parseExpr(r, v, f, s.t);
+  }
   if (key == "call") return parseCall(r, v, f, s);
   if (key == "light") {
     s.kind = Stmt::Kind::Light;
@@ -437,7 +483,7 @@ bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stm
           "unknown statement '" + key +
               "' (count, record, payload, call_data, ignore, terminate, report, trace, call, "
               "light, if, let, set, array, store, repeat, switch, invoke, break, continue, "
-              "return)");
+              "return, ray_query, confirm, generate, terminate_query)");
   return false;
 }
 

@@ -20,6 +20,18 @@ std::map<std::string, CounterMode> counterModes(const Case& c) {
     if (g.any_hit) traversal_dependent(*g.any_hit);
     if (g.intersection) traversal_dependent(*g.intersection);
   }
+  // A ray_query's candidate blocks run as often as candidates are offered:
+  // in any order, possibly again, beyond the committed t or not (R-RQ-CANDIDATES).
+  auto queries = [&](const Program& p) {
+    walkStatements(p, [&](const Stmt& s) {
+      if (s.kind == Stmt::Kind::RayQuery) traversal_dependent(s.then_);
+    });
+  };
+  queries(c.pipeline.raygen);
+  for (const Program& p : c.pipeline.miss) queries(p);
+  for (const Program& p : c.pipeline.callables) queries(p);
+  for (const HitGroup& g : c.pipeline.hit_groups)
+    if (g.closest_hit) queries(*g.closest_hit);
   // What the case declares wins.
   for (const auto& [name, mode] : c.outputs.counter_modes) {
     if (mode == "exact") modes[name] = CounterMode::Exact;
@@ -35,7 +47,8 @@ namespace {
 bool holdsTraceOrCall(const Stmt& s) {
   bool holds = false;
   walkStatements(s.then_, [&](const Stmt& x) {
-    holds = holds || x.kind == Stmt::Kind::Trace || x.kind == Stmt::Kind::Call;
+    holds = holds || x.kind == Stmt::Kind::Trace || x.kind == Stmt::Kind::Call ||
+            x.kind == Stmt::Kind::RayQuery;
   });
   return holds;
 }
@@ -62,7 +75,8 @@ std::set<std::string> countersUndefinedRaysMayMove(const Case& c) {
     // body is walked where it is invoked.
     if (s.kind == Stmt::Kind::Repeat && holdsTraceOrCall(s)) after_undefined = true;
     if (s.kind == Stmt::Kind::Count && after_undefined) moved.insert(s.counter);
-    if (s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::Call) after_undefined = true;
+    if (s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::Call || s.kind == Stmt::Kind::RayQuery)
+      after_undefined = true;
     walkOwnExpressions(s, [&](const Expr& e) {
       if (e.kind == Expr::Kind::Op && e.type == ValueType::Uint &&
           (e.name == "div" || e.name == "mod"))

@@ -9,9 +9,10 @@
 //                  without terminate (R-AHIT-CLOSEST, R-ISECT-CLOSEST);
 //   at_most        declared: at most as often, e.g. any-hit under
 //                  NO_DUPLICATE_ANY_HIT_INVOCATION with every candidate ignored;
-//   informational  counted in any-hit or intersection: depends on traversal
-//                  order and duplicate invocations (R-ORDER-UNSPEC, R-AHIT-DUP,
-//                  R-ISECT-MULTI), reported, never failed.
+//   informational  counted in any-hit or intersection, or in a ray_query's
+//                  candidate blocks: depends on traversal order and duplicate
+//                  invocations (R-ORDER-UNSPEC, R-AHIT-DUP, R-ISECT-MULTI,
+//                  R-RQ-CANDIDATES), reported, never failed.
 //
 // Modes are derived from the case (which stage counts), never declared in it:
 // every counter a raygen, miss, closest-hit or callable counts is exact, every

@@ -111,6 +111,14 @@ std::string matrixTransposed(Case& c, ModelOptions& o);
 std::string floatBitsConverted(Case& c, ModelOptions& o);
 std::string functionIgnoreLost(Case& c, ModelOptions& o);
 std::string transformBuiltinsSwapped(Case& c, ModelOptions& o);
+// Ray query statements (mutate_ray_query.cpp).
+std::string queryInitKeepsCommitted(Case& c, ModelOptions& o);
+std::string queryOffersOpaque(Case& c, ModelOptions& o);
+std::string queryConfirmIgnored(Case& c, ModelOptions& o);
+std::string queryGenerateIgnored(Case& c, ModelOptions& o);
+std::string queryTerminateIgnored(Case& c, ModelOptions& o);
+std::string queryCommittedReadsCandidate(Case& c, ModelOptions& o);
+std::string queryCustomIndexIsInstanceId(Case& c, ModelOptions& o);
 std::string wideLaunchTruncated(Case& c, ModelOptions& o);
 std::string launchIdXWrapped(Case& c, ModelOptions& o);
 std::string specializationIgnored(Case& c, ModelOptions& o);

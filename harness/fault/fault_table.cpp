@@ -301,6 +301,33 @@ std::vector<FaultImpl> pipelineMutations() {
 }
 
 // Faults of the device's child process.
+// The ray_query statement's rules broken (model/model_faults.h's rq_*).
+std::vector<FaultImpl> rayQueryMutations() {
+  using K = FaultKind;
+  return {
+      {"query-init-keeps-committed", K::CaseMutation,
+       "rayQueryInitializeEXT keeps the committed intersection of the launch ray's last query",
+       nullptr, queryInitKeepsCommitted},
+      {"query-offers-opaque", K::CaseMutation,
+       "a ray query returns opaque triangles as candidates (committed only when confirmed)",
+       nullptr, queryOffersOpaque},
+      {"query-confirm-ignored", K::CaseMutation, "rayQueryConfirmIntersectionEXT commits nothing",
+       nullptr, queryConfirmIgnored},
+      {"query-generate-ignored", K::CaseMutation, "rayQueryGenerateIntersectionEXT commits nothing",
+       nullptr, queryGenerateIgnored},
+      {"query-terminate-ignored", K::CaseMutation,
+       "neither rayQueryTerminateEXT nor a commit under TerminateOnFirstHit ends a ray query's "
+       "traversal",
+       nullptr, queryTerminateIgnored},
+      {"query-committed-reads-candidate", K::CaseMutation,
+       "the committed getters of a ray query read the current candidate while there is one",
+       nullptr, queryCommittedReadsCandidate},
+      {"query-custom-index-is-instance-id", K::CaseMutation,
+       "a ray query's instance custom index getters read the instance id", nullptr,
+       queryCustomIndexIsInstanceId},
+  };
+}
+
 std::vector<FaultImpl> processFaults() {
   using K = FaultKind;
   return {
@@ -321,7 +348,7 @@ const std::vector<FaultImpl>& faultImpls() {
   static const std::vector<FaultImpl> table = [] {
     std::vector<FaultImpl> all;
     for (auto part : {recordEdits, sceneAndFlagMutations, programMutations, sbtAndOrderMutations,
-                      pipelineMutations, processFaults})
+                      pipelineMutations, rayQueryMutations, processFaults})
       for (FaultImpl& f : part()) all.push_back(std::move(f));
     return all;
   }();

@@ -93,6 +93,12 @@ std::vector<RuleFaults> pipelineRules() {
        {}},
       // A ray query loop that decides candidates, commits or reads built-ins
       // otherwise than the pipeline's stages would (pipeline.traces: ray_query).
+      // The ray_query statement (cases/ray-query/).
+      {"R-RQ-INIT", {"query-init-keeps-committed"}, {}},
+      {"R-RQ-CANDIDATES", {"query-offers-opaque"}, {}},
+      {"R-RQ-COMMIT", {"query-confirm-ignored", "query-generate-ignored"}, {}},
+      {"R-RQ-TERMINATE", {"query-terminate-ignored"}, {}},
+      {"R-RQ-VALUES", {"query-committed-reads-candidate", "query-custom-index-is-instance-id"}, {}},
       {"R-RQ-EQUIV",
        {"ignore-accepts", "terminate-continues", "any-hit-on-opaque", "report-return-inverted",
         "hit-attributes-lost", "skip-closest-hit-ignored", "first-hit-flag-ignored",

@@ -55,7 +55,8 @@ std::string builtin(const std::string& name, const StageContext& ctx) {
     return problem("hit outside closest_hit and miss");
   }
   const BuiltinInfo* info = findBuiltin(name);
-  if (!ctx.inlined || !info)
+  // A ray_query's getters read its own query (rs_query), inlined or not.
+  if (!ctx.inlined || !info || isQueryBuiltin(builtinId(info)))
     return info && info->glsl ? info->glsl : problem("unknown builtin " + name);
   if (name == "ray_tmax")  // the hit's t, the committed t so far, the trace's tmax
     return stage == Stage::Intersection ? "rs_current_tmax()"

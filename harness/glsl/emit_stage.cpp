@@ -94,7 +94,7 @@ void defines(const StageContext& ctx, GlslWriter& out) {
       out.line(define("RS_BINDING_IMAGE_" + std::to_string(i),
                       kBindingFirstImage + static_cast<uint32_t>(i)));
   if (raygen && u.launch_ray) out.line("#define RS_USE_RAYS");
-  if (u.trace) out.line("#define RS_USE_TLAS");
+  if (u.trace || u.ray_query) out.line("#define RS_USE_TLAS");
   if (ctx.plan.records) out.line("#define RS_USE_RECORDS");
   if (u.counters) out.line("#define RS_USE_COUNTERS");
   if (u.shader_record) {
@@ -236,7 +236,7 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
   GlslWriter out;
   out.line("#version 460");
   out.line("#extension GL_EXT_ray_tracing : require");
-  if (ray_query) out.line("#extension GL_EXT_ray_query : require");
+  if (ray_query || u.ray_query) out.line("#extension GL_EXT_ray_query : require");
   // The records live behind a buffer reference (shaders/common.glsl): a large
   // launch's records may exceed maxStorageBufferRange (128 MiB on lavapipe).
   if (plan.records) out.line("#extension GL_EXT_buffer_reference : require");

@@ -6,6 +6,7 @@
 #include "glsl/emit_call_data.h"
 #include "glsl/emit_control.h"
 #include "glsl/emit_expr.h"
+#include "glsl/emit_query.h"
 #include "glsl/emit_trace.h"
 #include "program/payload_words.h"
 #include "results/record_layout.h"
@@ -185,6 +186,13 @@ void emitProgram(const Program& program, const StageContext& ctx, GlslWriter& ou
         break;
       case Stmt::Kind::If:
         ifStmt(s, ctx, out);
+        break;
+      case Stmt::Kind::RayQuery:
+      case Stmt::Kind::Candidates:
+      case Stmt::Kind::Confirm:
+      case Stmt::Kind::Generate:
+      case Stmt::Kind::TerminateQuery:
+        emitQueryStatement(s, ctx, out);
         break;
       default:
         emitControl(s, ctx, out);

@@ -41,6 +41,21 @@ void visitExprs(const std::vector<Expr>& v, StageUses& u) {
   for (const Expr& e : v) visitExpr(e, u);
 }
 
+// A ray_query (its fields; in raygen a missing one reads the launch ray) or
+// a generate (its t).
+void visitQuery(const Stmt& s, Stage stage, StageUses& u) {
+  if (s.kind == Stmt::Kind::Generate) {
+    visitExpr(s.t, u);
+    return;
+  }
+  u.ray_query = true;
+  const TraceArgs& t = s.trace;
+  for (const auto* v : {&t.origin, &t.direction, &t.tmin, &t.tmax, &t.flags, &t.cull_mask}) {
+    visitExprs(*v, u);
+    if (v->empty() && stage == Stage::Raygen) u.launch_ray = true;
+  }
+}
+
 void visitProgram(const Program& p, Stage stage, const Plan& plan, StageUses& u) {
   for (const Stmt& s : p) {
     switch (s.kind) {
@@ -89,6 +104,10 @@ void visitProgram(const Program& p, Stage stage, const Plan& plan, StageUses& u)
         }
         break;
       }
+      case Stmt::Kind::RayQuery:
+      case Stmt::Kind::Generate:
+        visitQuery(s, stage, u);
+        break;
       case Stmt::Kind::If:
       case Stmt::Kind::Switch:
         visitExpr(s.cond, u);

@@ -9,7 +9,11 @@ struct Observer {
   const std::string& name;
   IdObservations& out;
 
-  bool isId(const Expr& e) const { return e.kind == Expr::Kind::Builtin && e.name == name; }
+  // The built-in, or a ray query's getter of it (candidate.NAME, committed.NAME).
+  bool isId(const Expr& e) const {
+    return e.kind == Expr::Kind::Builtin &&
+           (e.name == name || e.name == "candidate." + name || e.name == "committed." + name);
+  }
   static bool isUintLiteral(const Expr& e) {
     return e.kind == Expr::Kind::Literal && e.literal.size() == 1 && e.literal[0] >= 0 &&
            e.literal[0] == static_cast<double>(static_cast<uint64_t>(e.literal[0])) &&
@@ -74,7 +78,8 @@ struct Observer {
         exprs(s.attribute);
       }
       if (s.kind == Stmt::Kind::Call) expr(s.call_index);
-      if (s.kind == Stmt::Kind::Trace)
+      if (s.kind == Stmt::Kind::Generate) expr(s.t);
+      if (s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::RayQuery)
         for (const std::vector<Expr>* a :
              {&s.trace.origin, &s.trace.direction, &s.trace.tmin, &s.trace.tmax, &s.trace.flags,
               &s.trace.cull_mask, &s.trace.sbt_offset, &s.trace.sbt_stride, &s.trace.miss})

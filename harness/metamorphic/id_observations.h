@@ -23,7 +23,8 @@ struct IdObservations {
   std::vector<uint64_t> classOf(uint64_t id) const;
 };
 
-// `builtin`: "primitive_id" or "instance_id".
+// `builtin`: "primitive_id" or "instance_id" (a ray query's candidate.* and
+// committed.* getters of it count as it).
 IdObservations observeId(const Pipeline& p, const std::string& builtin);
 
 }  // namespace rayspec

@@ -26,12 +26,12 @@ bool tracesOnlyTheLaunchRay(const Case& c) {
   return true;
 }
 
-// A trace anywhere that gives its own origin or direction: constants in them
-// would not move with the case.
+// A trace or ray query anywhere that gives its own origin or direction:
+// constants in them would not move with the case.
 bool setsOwnRay(const Program& p) {
   return std::any_of(p.begin(), p.end(), [](const Stmt& s) {
-    if (s.kind == Stmt::Kind::Trace && (!s.trace.origin.empty() || !s.trace.direction.empty()))
-      return true;
+    const bool traces = s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::RayQuery;
+    if (traces && (!s.trace.origin.empty() || !s.trace.direction.empty())) return true;
     return setsOwnRay(s.then_) || setsOwnRay(s.else_);
   });
 }
@@ -81,7 +81,7 @@ Result<Case> moveCase(const Case& c, const RigidMotion& m, MoveScope scope) {
   }
   if (anyTraceSetsItsOwnRay(c)) {
     return errorMessage(
-        "a trace gives its own origin or direction: only the launch rays would move");
+        "a trace or ray query gives its own origin or direction: only the launch rays would move");
   }
   Case out = c;
   for (Instance& inst : out.scene.instances) {

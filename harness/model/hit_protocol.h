@@ -38,11 +38,22 @@ class HitProtocol {
   // one of a what-if run; notes an unsure decision (exact tier).
   bool sphereHitDecision(StageEnv& env, bool model_value, float disc);
 
+  // Ray queries (hit_protocol_query.cpp): a candidate offered to its block
+  // (kind: a triangle's facing hit kind), the statements of the blocks, and
+  // a triangle committed.
+  void runQueryCandidate(Traversal& tr, const ModelCandidate& cand, size_t k, bool opaque,
+                         uint32_t kind);
+  void confirm(StageEnv& env);                   // rayQueryConfirmIntersectionEXT
+  void generate(const CStmt& s, StageEnv& env);  // rayQueryGenerateIntersectionEXT
+  void terminateQuery(StageEnv& env);            // rayQueryTerminateEXT
+  void commitQueryTriangle(Traversal& tr, const ModelCandidate& cand, uint32_t kind);
+
  private:
   // Whether a reported t becomes a candidate hit (report's first step).
   bool reportInside(const CStmt& s, StageEnv& env, Traversal& tr, float t);
   // R-PREC: how far a device's sphere root (a report's t) may lie from the
   // model's, for the hit h.
+  void endOnFirstHit(Traversal& tr) const;
   double sphereRootError(const CStmt& s, const HitView& h, const StageEnv& env) const;
 
   const ModelShared& sh_;

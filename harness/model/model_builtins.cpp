@@ -241,6 +241,10 @@ Val ModelBuiltins::read(const CExpr& e, StageEnv& env) const {
     case kBiCalleeValue:
     case kBiCalleeWord:
       return dataBuiltin(e, env);
+#define RAYSPEC_QUERY_CASE(id, ...) case kBi##id:
+      RAYSPEC_QUERY_BUILTINS(RAYSPEC_QUERY_CASE)
+#undef RAYSPEC_QUERY_CASE
+      return queryBuiltin(e, env);
     case kBiCount:
     case kBiUnknown:
       break;

@@ -26,6 +26,9 @@ class ModelBuiltins {
   Val dataBuiltin(const CExpr& e, StageEnv& env) const;
   Val vertexPosition(const HitView& hv, int i) const;
   Val transformBuiltin(const HitView& hv, int k) const;
+  // candidate.*, committed.*, query.* of the innermost query (model_builtins_query.cpp).
+  Val queryBuiltin(const CExpr& e, const StageEnv& env) const;
+  Val queryHit(int row, const HitView& hv) const;
   void unknown(const CExpr& e) const;
 
   const ModelShared& sh_;

@@ -88,7 +88,7 @@ bool hasNanTriangles(const ModelScene& s) {
 // Does any trace need the model to see every candidate (rather than Embree's
 // own closest hit)?
 bool needsCandidates(const Case& c, const Plan& plan, ModelTier tier) {
-  if (tier == ModelTier::Exact) return true;
+  if (tier == ModelTier::Exact || plan.ray_queries) return true;
   if (plan.any_hit || plan.aabbs || plan.intersection) return true;
   if (plan.facing_culls || plan.opacity_flags) return true;  // culls decided per candidate
   for (const Blas& b : c.scene.blases)

@@ -331,6 +331,7 @@ std::optional<WhatIf> ModelTracer::classifyTrace(
 // (a box, or a non-opaque triangle in the interval): the order decides.
 bool ModelTracer::anyHitMayTerminate(const Traversal& tr,
                                      const std::vector<ModelCandidate>& cands) const {
+  if (tr.query) return tr.query->may_terminate;  // R-RQ-TERMINATE: its blocks may end it
   if (!sh_.programs->any_hit_terminates) return false;
   const ModelScene& scene = *sh_.scene;
   for (const ModelCandidate& cand : cands) {
@@ -352,6 +353,7 @@ Committed ModelTracer::decideAs(const Traversal& actual, const std::vector<Model
   v.tmin = actual.tmin;
   v.tmax_cur = actual.ray.tmax;
   v.exact = actual.exact;
+  v.startQuery(actual.query);
   v.prefer = how.prefer;
   v.first = how.first;
   v.shader_force = how.shader ? &*how.shader : nullptr;
@@ -371,9 +373,17 @@ Committed ModelTracer::decideAs(const Traversal& actual, const std::vector<Model
 Committed ModelTracer::sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands,
                                const WhatIf& how, const Payload& payload_in) {
   const LaunchState::Saved saved = st_.save();
+  // A query's blocks change the frame of the stage that runs it: the what-if
+  // run starts from the frame as traversal began, and is undone.
+  std::optional<QueryFrameSaved> frame;
+  if (actual.query) {
+    frame = saveQueryFrame(*actual.query);
+    restoreQueryFrame(*actual.query, actual.query->frame_before);
+  }
   Payload p = payload_in;
   const Committed best = decideAs(actual, cands, how, p);
   st_.restore(saved);
+  if (frame) restoreQueryFrame(*actual.query, *frame);
   return best;
 }
 

@@ -44,6 +44,16 @@ class ModelFaultSeam {
   bool transformBuiltinsSwapped() const { return f_.transform_builtins_swapped; }
   // Live state broken: locals read zero after a trace, call or report.
   bool localsLostAcrossCalls() const { return f_.locals_lost_across_calls; }
+  // Ray queries: the rule each question stands for broken (ModelFaults' rq_*).
+  bool queryInitKeepsCommitted() const { return f_.rq_init_keeps_committed; }  // R-RQ-INIT
+  bool queryOffersOpaque() const { return f_.rq_opaque_offered; }              // R-RQ-CANDIDATES
+  bool queryConfirmIgnored() const { return f_.rq_confirm_ignored; }           // R-RQ-COMMIT
+  bool queryGenerateIgnored() const { return f_.rq_generate_ignored; }         // R-RQ-COMMIT
+  bool queryTerminateIgnored() const { return f_.rq_terminate_ignored; }       // R-RQ-TERMINATE
+  bool queryCommittedReadsCandidate() const { return f_.rq_committed_reads_candidate; }
+  bool queryCustomIndexIsInstanceId() const {  // R-RQ-VALUES
+    return f_.rq_custom_index_is_instance_id;
+  }  // R-RQ-VALUES
   // A legal device (rayspec mutate) or one passing between shared edges:
   // an ambiguous trace is replayed as another of its answers.
   bool answersOtherwise() const { return f_.legal_answer != 0 || f_.pass_between_edges; }

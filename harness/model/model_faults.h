@@ -40,6 +40,26 @@ struct ModelFaults {
   // this index among its legal answers (modulo their number; 0: the model's
   // own), with its shaders run as that answer makes them run.
   uint32_t legal_answer = 0;
+  // Ray queries (ray_query statements), each rule broken as a faulty device would:
+  //   rq_init_keeps_committed: rayQueryInitializeEXT keeps the committed
+  //     intersection of the launch ray's previous query (R-RQ-INIT);
+  //   rq_opaque_offered: opaque triangles are returned as candidates, and
+  //     committed only if confirmed (R-RQ-CANDIDATES);
+  //   rq_confirm_ignored: rayQueryConfirmIntersectionEXT commits nothing (R-RQ-COMMIT);
+  //   rq_generate_ignored: rayQueryGenerateIntersectionEXT commits nothing (R-RQ-COMMIT);
+  //   rq_terminate_ignored: neither rayQueryTerminateEXT nor a commit under
+  //     TerminateOnFirstHit ends traversal (R-RQ-TERMINATE);
+  //   rq_committed_reads_candidate: the committed getters read the current
+  //     candidate while there is one (R-RQ-VALUES);
+  //   rq_custom_index_is_instance_id: the instance custom index getters read
+  //     the instance id (R-RQ-VALUES).
+  bool rq_init_keeps_committed = false;
+  bool rq_opaque_offered = false;
+  bool rq_confirm_ignored = false;
+  bool rq_generate_ignored = false;
+  bool rq_terminate_ignored = false;
+  bool rq_committed_reads_candidate = false;
+  bool rq_custom_index_is_instance_id = false;
   // R-WATERTIGHT not met (a "should"): every trace through a shared edge or
   // vertex passes between its triangles, where that changes the answer.
   bool pass_between_edges = false;

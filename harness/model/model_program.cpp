@@ -4,6 +4,7 @@
 
 #include "program/locals.h"
 #include "program/payload_words.h"
+#include "program/walk_program.h"
 #include "results/record_layout.h"
 
 namespace rayspec {
@@ -275,7 +276,14 @@ struct Compiler {
       r.light = s.light == "point"  ? LightKind::Point
                 : s.light == "spot" ? LightKind::Spot
                                     : LightKind::Directional;
-    if (s.kind == Stmt::Kind::Trace) {
+    if (s.kind == Stmt::Kind::Generate) r.t = expr(s.t);
+    // A ray_query: size 1 when a candidate block may end its traversal.
+    if (s.kind == Stmt::Kind::RayQuery) {
+      walkStatements(s.then_, [&](const Stmt& x) {
+        if (x.kind == Stmt::Kind::TerminateQuery) r.size = 1;
+      });
+    }
+    if (s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::RayQuery) {
       const std::vector<Expr>* a[CStmt::kTraceArgs] = {
           &s.trace.origin,     &s.trace.direction,  &s.trace.tmin,
           &s.trace.tmax,       &s.trace.flags,      &s.trace.cull_mask,

@@ -146,7 +146,8 @@ struct CStmt {
   std::array<bool, kTraceArgs> has{};
   std::array<CExpr, kTraceArgs> args;
   // Control flow: Array/Store/Repeat: the local's slot (Repeat: -1 without a
-  // variable); Array/Store: elements; Case: the label; Invoke: the frame's slots.
+  // variable); Array/Store: elements; Case: the label; Invoke: the frame's slots;
+  // RayQuery: 1 when its candidate blocks hold terminate_query.
   int slot = -1;
   uint32_t size = 0;
   CExpr count, from, index;  // Repeat, Store

@@ -64,6 +64,7 @@ struct HitView {
 };
 
 struct Traversal;
+struct QueryRun;
 
 struct StageEnv {
   Stage stage = Stage::Raygen;
@@ -78,6 +79,7 @@ struct StageEnv {
   uint32_t depth = 0;
   Traversal* traversal = nullptr;  // intersection (report) and any-hit
   std::vector<Val> locals;         // the frame's local variables (program/locals.h slots)
+  QueryRun* query = nullptr;       // the innermost ray_query running (model/query_run.h)
 };
 
 // How a statement ends: go on, ignore / terminate (any-hit), or leave a

@@ -7,6 +7,7 @@
 // StageInterpreter.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <utility>
@@ -22,6 +23,7 @@
 namespace rayspec {
 
 struct Traversal;
+struct QueryRun;
 class StageInterpreter;
 class HitProtocol;
 
@@ -37,11 +39,18 @@ class ModelTracer {
   // Raygen is `trace: {}` and traces take Embree's closest hit: the launch
   // rays [begin, end) are traced and shaded in one pass (model_fast_path.cpp).
   void runLaunchRaysDirect(uint32_t begin, uint32_t end);
+  // A ray_query's traversal (model_query.cpp): q.ray traversed, its
+  // candidates decided by its blocks, what stays committed in q.committed.
+  void rayQuery(QueryRun& q, const CStmt* site);
 
  private:
   friend class TraceClassifier;  // model_exact_tier.cpp: classifyTrace's steps
   Committed directHit(const TraceRay& r, uint32_t flags);
-  Committed traverse(const TraceRay& r, uint32_t flags, uint32_t depth, Payload& payload);
+  Committed traverse(const TraceRay& r, uint32_t flags, uint32_t depth, Payload& payload,
+                     QueryRun* query = nullptr);
+  // decide() for a ray query (model_query.cpp): the candidate blocks decide,
+  // opaque triangles commit unoffered (R-RQ-CANDIDATES).
+  void decideQuery(Traversal& tr, const std::vector<ModelCandidate>& cands, const int8_t* force);
   // R-MISS-XOR-CHIT: closest-hit or miss for the committed hit.
   void shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Committed& best,
              Payload& payload);
@@ -88,6 +97,9 @@ class ModelTracer {
   StageInterpreter& interp_;
   HitProtocol& hits_;
   std::vector<std::vector<ModelCandidate>> cand_pool_;  // per trace depth
+  // Per ray query nesting level; fixed, so that a nested query's candidates
+  // never move the enclosing query's.
+  std::array<std::vector<ModelCandidate>, kMaxQueryNesting> query_pool_;
 };
 
 }  // namespace rayspec

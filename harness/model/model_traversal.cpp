@@ -171,6 +171,10 @@ bool ModelTracer::triangleInside(const Traversal& tr, const ModelCandidate& cand
 // triangle is a hit (-1: the model's own decision, 0: no, 1: yes).
 void ModelTracer::decide(Traversal& tr, const std::vector<ModelCandidate>& cands,
                          const int8_t* force, Payload& payload) {
+  if (tr.query) {
+    decideQuery(tr, cands, force);
+    return;
+  }
   const Case& c = *sh_.c;
   const ModelScene& scene = *sh_.scene;
   const TraceRay& r = tr.ray;
@@ -218,8 +222,8 @@ void ModelTracer::decide(Traversal& tr, const std::vector<ModelCandidate>& cands
 
 // Every candidate from Embree, decided by the model in order (see
 // model_engine.h), then the exact tier's ambiguity check.
-Committed ModelTracer::traverse(const TraceRay& r, uint32_t flags, uint32_t depth,
-                                Payload& payload) {
+Committed ModelTracer::traverse(const TraceRay& r, uint32_t flags, uint32_t depth, Payload& payload,
+                                QueryRun* query) {
   const ModelScene& scene = *sh_.scene;
   Traversal tr(r);
   tr.flags = flags;
@@ -228,18 +232,26 @@ Committed ModelTracer::traverse(const TraceRay& r, uint32_t flags, uint32_t dept
   tr.tmax_cur = r.tmax;
   tr.exact = scene.tier == ModelTier::Exact;
   tr.payload = &payload;
+  tr.startQuery(query);
   const Payload payload_in = payload;  // for the exact tier's what-if variants
   // A legal device's other answer (ModelFaultSeam) replays the trace from here.
   std::optional<LaunchState::Saved> before;
   if (tr.exact && sh_.fault_seam.answersOtherwise() && !st_.ray_ambiguous) before = st_.save();
+  if (query && tr.exact) query->frame_before = saveQueryFrame(*query);
 
   RTCRayHit rh = embreeRay(r, tr.flags);
   std::vector<ModelCandidate>* cands = nullptr;
   std::vector<std::pair<size_t, double>> reports;  // exact tier: every report of the actual run
   std::vector<ShaderDecision> shader_unsure;       // exact tier: decisions rounding may flip
   if (validRay(r, rh)) {
-    if (cand_pool_.size() < depth) cand_pool_.resize(depth);
-    cands = &cand_pool_[depth - 1];
+    // A query's candidates apart from the traces': a query's block may run
+    // another query, nested; a trace's by depth.
+    if (query) {
+      cands = &query_pool_[query->level % kMaxQueryNesting];
+    } else {
+      if (cand_pool_.size() < depth) cand_pool_.resize(depth);
+      cands = &cand_pool_[depth - 1];
+    }
     cands->clear();
     TraceContext tc;
     rtcInitIntersectContext(&tc.rtc);
@@ -265,7 +277,7 @@ Committed ModelTracer::traverse(const TraceRay& r, uint32_t flags, uint32_t dept
     decide(tr, *cands, nullptr, payload);
     tr.reports = nullptr;
     tr.shader_unsure = nullptr;
-    checkCandidates(tr, *cands);
+    if (!query) checkCandidates(tr, *cands);  // a query reads no hit record
   }
 
   if (cands && tr.exact && !st_.ray_ambiguous) {
@@ -273,11 +285,12 @@ Committed ModelTracer::traverse(const TraceRay& r, uint32_t flags, uint32_t dept
         classifyTrace(tr, *cands, reports, shader_unsure, payload_in);
     if (chosen && before && !chosen->actual) {
       st_.restore(*before);
+      if (query) restoreQueryFrame(*query, query->frame_before);
       payload = payload_in;
       tr.best = decideAs(tr, *cands, *chosen, payload);
     }
     // R-UB: a legal answer of this trace whose record lies beyond its region.
-    if (st_.ray_ambiguous && !st_.ray_undefined && !st_.ambiguous.empty() &&
+    if (!query && st_.ray_ambiguous && !st_.ray_undefined && !st_.ambiguous.empty() &&
         st_.ambiguous.back().ray == st_.index)
       for (const Candidate& k : st_.ambiguous.back().candidates) {
         if (k.hit && !(tr.flags & kRaySkipClosestHit) && !sbt_.hit(k.instance, k.geometry, r))

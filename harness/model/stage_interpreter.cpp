@@ -99,6 +99,19 @@ Flow StageInterpreter::execStmt(const CStmt& s, StageEnv& env) {
       loseLocals(env);
       return f;
     }
+    case Stmt::Kind::RayQuery:
+      return execRayQuery(s, env);
+    case Stmt::Kind::Confirm:
+      hits_.confirm(env);
+      return Flow::Continue;
+    case Stmt::Kind::Generate:
+      hits_.generate(s, env);
+      return Flow::Continue;
+    case Stmt::Kind::TerminateQuery:
+      hits_.terminateQuery(env);
+      return Flow::Continue;
+    case Stmt::Kind::Candidates:  // run by its ray_query's traversal only
+      return Flow::Continue;
     default:
       return execControl(s, env);
   }
@@ -257,6 +270,7 @@ void StageInterpreter::callCallable(uint32_t index, CallData& data, uint32_t dep
 }
 
 void StageInterpreter::runRaygen() {
+  last_query_ = {};
   StageEnv env;
   env.stage = Stage::Raygen;
   env.record_data = &sh_.c->pipeline.raygen_data;

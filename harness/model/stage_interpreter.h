@@ -13,6 +13,7 @@
 #include "model/model_sbt.h"
 #include "model/model_shared.h"
 #include "model/model_stage_env.h"
+#include "model/model_what_if.h"
 
 namespace rayspec {
 
@@ -45,8 +46,9 @@ class StageInterpreter {
   Flow execSwitch(const CStmt& s, StageEnv& env);
   Flow execInvoke(const CStmt& s, StageEnv& env);
   void loseLocals(StageEnv& env) const;
-  void execCall(const CStmt& s, StageEnv& env);   // executeCallableEXT
-  void execTrace(const CStmt& s, StageEnv& env);  // traceRayEXT
+  void execCall(const CStmt& s, StageEnv& env);      // executeCallableEXT
+  void execTrace(const CStmt& s, StageEnv& env);     // traceRayEXT
+  Flow execRayQuery(const CStmt& s, StageEnv& env);  // a ray_query statement (model_query.cpp)
   Payload startPayload(const CStmt& s, StageEnv& env);
   TraceRay tracedRay(const CStmt& s, StageEnv& env);
   void callCallable(uint32_t index, CallData& data, uint32_t depth, const CStmt& site);
@@ -57,6 +59,9 @@ class StageInterpreter {
   const ModelBuiltins& builtins_;
   ModelTracer& tracer_;
   HitProtocol& hits_;
+  // The launch ray's last query's committed intersection: where the planted
+  // fault rq_init_keeps_committed starts the next query.
+  Committed last_query_;
 };
 
 }  // namespace rayspec

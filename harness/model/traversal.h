@@ -24,6 +24,7 @@
 #include "model/model_stage_env.h"
 #include "model/model_trace_context.h"
 #include "model/model_what_if.h"
+#include "model/query_run.h"
 #include "model/watertight.h"
 
 namespace rayspec {
@@ -37,6 +38,9 @@ struct Traversal {
   bool stop = false;
   bool exact = false;
   Payload* payload = nullptr;
+  // A ray_query's traversal (model_query.cpp): its candidate blocks decide,
+  // no shader runs; null for traceRayEXT.
+  QueryRun* query = nullptr;
   // The AABB candidate whose intersection program runs.
   bool cur_opaque = false;
   const SbtRecord* cur_rec = nullptr;
@@ -62,6 +66,14 @@ struct Traversal {
   }
 
   explicit Traversal(const TraceRay& r) : ray(r) {}
+  // A ray query's traversal, from what it starts with committed (nothing,
+  // but for the planted fault rq_init_keeps_committed).
+  void startQuery(QueryRun* q) {
+    query = q;
+    if (!q || !q->start.valid) return;
+    best = q->start;
+    tmax_cur = best.t;
+  }
   bool isPreferred(uint32_t i, uint32_t g, uint32_t p) const {
     return prefer >= 0 && prefer_key[0] == i && prefer_key[1] == g && prefer_key[2] == p;
   }

@@ -55,7 +55,7 @@ TraceFlags traceFlags(const Case& c, const std::vector<StageProgram>& programs) 
   for (const Ray& r : c.rays.rays) f.add(r.flags, r.cull_mask);
   for (const auto& sp : programs)
     walkStatements(*sp.program, [&](const Stmt& s) {
-      if (s.kind != Stmt::Kind::Trace) return;
+      if (s.kind != Stmt::Kind::Trace && s.kind != Stmt::Kind::RayQuery) return;
       // Nested traces take the case defaults unless they say otherwise.
       uint32_t flags = s.trace.flags.empty()
                            ? (sp.stage == Stage::Raygen ? 0 : c.rays.defaults.flags)
@@ -132,6 +132,7 @@ void planStatements(const std::vector<StageProgram>& programs, const Pipeline& p
     walkStatements(*sp.program, [&](const Stmt& s) {
       if (s.kind == Stmt::Kind::Call) plan.callables = true;
       if (s.kind == Stmt::Kind::Trace && sp.stage != Stage::Raygen) plan.nested_trace = true;
+      if (s.kind == Stmt::Kind::RayQuery) plan.ray_queries = true;
     });
     walkExpressions(*sp.program, [&](const Expr& e) {
       if (e.kind == Expr::Kind::Builtin && e.name == "cull_mask") plan.cull_mask_builtin = true;
@@ -233,6 +234,7 @@ std::vector<std::string> Plan::describe() const {
   line(shader_record_data, "shader record data");
   line(zero_records, "all-zero SBT records");
   line(cull_mask_builtin, "gl_CullMaskEXT read (VK_KHR_ray_tracing_maintenance1)");
+  line(ray_queries, "ray_query statements (VK_KHR_ray_query)");
   line(position_fetch,
        "gl_HitTriangleVertexPositionsEXT read (VK_KHR_ray_tracing_position_fetch, structures "
        "built with ALLOW_DATA_ACCESS)");

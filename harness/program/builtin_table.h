@@ -16,6 +16,10 @@
 //     intersection, true in closest-hit); nullptr where the emitter spells
 //     it (hit, ray_tmax by stage, the word<i> families) or it cannot be read
 //     inlined (vertex_position<i>).
+// The ray query getters (candidate.*, committed.*, query.*) read the
+// innermost enclosing ray_query statement through the GLSL macro rs_query
+// (glsl/emit_query.cpp); the candidate rows and the committed rows are in the
+// same order (the model counts from kBiQCandT and kBiQCommittedT).
 // Rows that are indexed families stay together in this order (the model and
 // the emitter count from their first row): vertex_position0..2, the
 // transforms (object_to_world0..3, _3x4_0..2, then world_to_object's).
@@ -28,6 +32,135 @@
 // The 3x4 transforms are read through the 4x3 matrix: glslang 12 writes SPIR-V
 // the validator rejects ("Matrix access is out of bounds") when a stage reads
 // gl_*3x4EXT before gl_*EXT (design.md, round 4).
+// The ray query getters, a list of their own so that the model's one switch
+// can name them all at once (model/model_builtins.cpp).
+#define RAYSPEC_QUERY_BUILTINS(X)                                                                 \
+  X(QCandT, "candidate.t", Float, R | C | M | K, "rayQueryGetIntersectionTEXT(rs_query, false)",  \
+    nullptr, "the current candidate's t")                                                         \
+  X(QCandCustomIndex, "candidate.instance_custom_index", Uint, R | C | M | K,                     \
+    "uint(rayQueryGetIntersectionInstanceCustomIndexEXT(rs_query, false))", nullptr,              \
+    "the current candidate's instance custom index")                                              \
+  X(QCandInstance, "candidate.instance_id", Uint, R | C | M | K,                                  \
+    "uint(rayQueryGetIntersectionInstanceIdEXT(rs_query, false))", nullptr,                       \
+    "the current candidate's instance id")                                                        \
+  X(QCandSbtOffset, "candidate.sbt_record_offset", Uint, R | C | M | K,                           \
+    "rayQueryGetIntersectionInstanceShaderBindingTableRecordOffsetEXT(rs_query, false)", nullptr, \
+    "the current candidate's instance's SBT record offset")                                       \
+  X(QCandGeometry, "candidate.geometry_index", Uint, R | C | M | K,                               \
+    "uint(rayQueryGetIntersectionGeometryIndexEXT(rs_query, false))", nullptr,                    \
+    "the current candidate's geometry index")                                                     \
+  X(QCandPrimitive, "candidate.primitive_id", Uint, R | C | M | K,                                \
+    "uint(rayQueryGetIntersectionPrimitiveIndexEXT(rs_query, false))", nullptr,                   \
+    "the current candidate's primitive index")                                                    \
+  X(QCandBarycentrics, "candidate.barycentrics", Vec2, R | C | M | K,                             \
+    "rayQueryGetIntersectionBarycentricsEXT(rs_query, false)", nullptr,                           \
+    "the current candidate's barycentrics (triangles)")                                           \
+  X(QCandFrontFace, "candidate.front_face", Uint, R | C | M | K,                                  \
+    "uint(rayQueryGetIntersectionFrontFaceEXT(rs_query, false))", nullptr,                        \
+    "the current candidate's 1 front face, 0 back face (triangles)")                              \
+  X(QCandObjectOrigin, "candidate.object_ray_origin", Vec3, R | C | M | K,                        \
+    "rayQueryGetIntersectionObjectRayOriginEXT(rs_query, false)", nullptr,                        \
+    "the current candidate's object-space ray origin")                                            \
+  X(QCandObjectDirection, "candidate.object_ray_direction", Vec3, R | C | M | K,                  \
+    "rayQueryGetIntersectionObjectRayDirectionEXT(rs_query, false)", nullptr,                     \
+    "the current candidate's object-space ray direction")                                         \
+  X(QCandObjectToWorld0, "candidate.object_to_world0", Vec3, R | C | M | K,                       \
+    "rayQueryGetIntersectionObjectToWorldEXT(rs_query, false)[0]", nullptr,                       \
+    "the current candidate's column 0 of the object-to-world matrix")                             \
+  X(QCandObjectToWorld1, "candidate.object_to_world1", Vec3, R | C | M | K,                       \
+    "rayQueryGetIntersectionObjectToWorldEXT(rs_query, false)[1]", nullptr,                       \
+    "the current candidate's column 1 of the object-to-world matrix")                             \
+  X(QCandObjectToWorld2, "candidate.object_to_world2", Vec3, R | C | M | K,                       \
+    "rayQueryGetIntersectionObjectToWorldEXT(rs_query, false)[2]", nullptr,                       \
+    "the current candidate's column 2 of the object-to-world matrix")                             \
+  X(QCandObjectToWorld3, "candidate.object_to_world3", Vec3, R | C | M | K,                       \
+    "rayQueryGetIntersectionObjectToWorldEXT(rs_query, false)[3]", nullptr,                       \
+    "the current candidate's column 3 of the object-to-world matrix")                             \
+  X(QCandWorldToObject0, "candidate.world_to_object0", Vec3, R | C | M | K,                       \
+    "rayQueryGetIntersectionWorldToObjectEXT(rs_query, false)[0]", nullptr,                       \
+    "the current candidate's column 0 of the world-to-object matrix")                             \
+  X(QCandWorldToObject1, "candidate.world_to_object1", Vec3, R | C | M | K,                       \
+    "rayQueryGetIntersectionWorldToObjectEXT(rs_query, false)[1]", nullptr,                       \
+    "the current candidate's column 1 of the world-to-object matrix")                             \
+  X(QCandWorldToObject2, "candidate.world_to_object2", Vec3, R | C | M | K,                       \
+    "rayQueryGetIntersectionWorldToObjectEXT(rs_query, false)[2]", nullptr,                       \
+    "the current candidate's column 2 of the world-to-object matrix")                             \
+  X(QCandWorldToObject3, "candidate.world_to_object3", Vec3, R | C | M | K,                       \
+    "rayQueryGetIntersectionWorldToObjectEXT(rs_query, false)[3]", nullptr,                       \
+    "the current candidate's column 3 of the world-to-object matrix")                             \
+  X(QCandType, "candidate.type", Uint, R | C | M | K,                                             \
+    "uint(rayQueryGetIntersectionTypeEXT(rs_query, false))", nullptr,                             \
+    "the candidate's type: 0 triangle, 1 AABB")                                                   \
+  X(QCandAabbOpaque, "candidate.aabb_opaque", Uint, R | C | M | K,                                \
+    "uint(rayQueryGetIntersectionCandidateAABBOpaqueEXT(rs_query))", nullptr,                     \
+    "1 if the AABB candidate is opaque (after geometry, instance and ray flags)")                 \
+  X(QCommittedT, "committed.t", Float, R | C | M | K,                                             \
+    "rayQueryGetIntersectionTEXT(rs_query, true)", nullptr, "the committed intersection's t")     \
+  X(QCommittedCustomIndex, "committed.instance_custom_index", Uint, R | C | M | K,                \
+    "uint(rayQueryGetIntersectionInstanceCustomIndexEXT(rs_query, true))", nullptr,               \
+    "the committed intersection's instance custom index")                                         \
+  X(QCommittedInstance, "committed.instance_id", Uint, R | C | M | K,                             \
+    "uint(rayQueryGetIntersectionInstanceIdEXT(rs_query, true))", nullptr,                        \
+    "the committed intersection's instance id")                                                   \
+  X(QCommittedSbtOffset, "committed.sbt_record_offset", Uint, R | C | M | K,                      \
+    "rayQueryGetIntersectionInstanceShaderBindingTableRecordOffsetEXT(rs_query, true)", nullptr,  \
+    "the committed intersection's instance's SBT record offset")                                  \
+  X(QCommittedGeometry, "committed.geometry_index", Uint, R | C | M | K,                          \
+    "uint(rayQueryGetIntersectionGeometryIndexEXT(rs_query, true))", nullptr,                     \
+    "the committed intersection's geometry index")                                                \
+  X(QCommittedPrimitive, "committed.primitive_id", Uint, R | C | M | K,                           \
+    "uint(rayQueryGetIntersectionPrimitiveIndexEXT(rs_query, true))", nullptr,                    \
+    "the committed intersection's primitive index")                                               \
+  X(QCommittedBarycentrics, "committed.barycentrics", Vec2, R | C | M | K,                        \
+    "rayQueryGetIntersectionBarycentricsEXT(rs_query, true)", nullptr,                            \
+    "the committed intersection's barycentrics (triangles)")                                      \
+  X(QCommittedFrontFace, "committed.front_face", Uint, R | C | M | K,                             \
+    "uint(rayQueryGetIntersectionFrontFaceEXT(rs_query, true))", nullptr,                         \
+    "the committed intersection's 1 front face, 0 back face (triangles)")                         \
+  X(QCommittedObjectOrigin, "committed.object_ray_origin", Vec3, R | C | M | K,                   \
+    "rayQueryGetIntersectionObjectRayOriginEXT(rs_query, true)", nullptr,                         \
+    "the committed intersection's object-space ray origin")                                       \
+  X(QCommittedObjectDirection, "committed.object_ray_direction", Vec3, R | C | M | K,             \
+    "rayQueryGetIntersectionObjectRayDirectionEXT(rs_query, true)", nullptr,                      \
+    "the committed intersection's object-space ray direction")                                    \
+  X(QCommittedObjectToWorld0, "committed.object_to_world0", Vec3, R | C | M | K,                  \
+    "rayQueryGetIntersectionObjectToWorldEXT(rs_query, true)[0]", nullptr,                        \
+    "the committed intersection's column 0 of the object-to-world matrix")                        \
+  X(QCommittedObjectToWorld1, "committed.object_to_world1", Vec3, R | C | M | K,                  \
+    "rayQueryGetIntersectionObjectToWorldEXT(rs_query, true)[1]", nullptr,                        \
+    "the committed intersection's column 1 of the object-to-world matrix")                        \
+  X(QCommittedObjectToWorld2, "committed.object_to_world2", Vec3, R | C | M | K,                  \
+    "rayQueryGetIntersectionObjectToWorldEXT(rs_query, true)[2]", nullptr,                        \
+    "the committed intersection's column 2 of the object-to-world matrix")                        \
+  X(QCommittedObjectToWorld3, "committed.object_to_world3", Vec3, R | C | M | K,                  \
+    "rayQueryGetIntersectionObjectToWorldEXT(rs_query, true)[3]", nullptr,                        \
+    "the committed intersection's column 3 of the object-to-world matrix")                        \
+  X(QCommittedWorldToObject0, "committed.world_to_object0", Vec3, R | C | M | K,                  \
+    "rayQueryGetIntersectionWorldToObjectEXT(rs_query, true)[0]", nullptr,                        \
+    "the committed intersection's column 0 of the world-to-object matrix")                        \
+  X(QCommittedWorldToObject1, "committed.world_to_object1", Vec3, R | C | M | K,                  \
+    "rayQueryGetIntersectionWorldToObjectEXT(rs_query, true)[1]", nullptr,                        \
+    "the committed intersection's column 1 of the world-to-object matrix")                        \
+  X(QCommittedWorldToObject2, "committed.world_to_object2", Vec3, R | C | M | K,                  \
+    "rayQueryGetIntersectionWorldToObjectEXT(rs_query, true)[2]", nullptr,                        \
+    "the committed intersection's column 2 of the world-to-object matrix")                        \
+  X(QCommittedWorldToObject3, "committed.world_to_object3", Vec3, R | C | M | K,                  \
+    "rayQueryGetIntersectionWorldToObjectEXT(rs_query, true)[3]", nullptr,                        \
+    "the committed intersection's column 3 of the world-to-object matrix")                        \
+  X(QCommittedType, "committed.type", Uint, R | C | M | K,                                        \
+    "uint(rayQueryGetIntersectionTypeEXT(rs_query, true))", nullptr,                              \
+    "the committed type: 0 none, 1 triangle, 2 generated")                                        \
+  X(QTmin, "query.ray_tmin", Float, R | C | M | K, "rayQueryGetRayTMinEXT(rs_query)", nullptr,    \
+    "the tmin the query was initialized with")                                                    \
+  X(QFlags, "query.ray_flags", Uint, R | C | M | K, "rayQueryGetRayFlagsEXT(rs_query)", nullptr,  \
+    "the ray flags the query was initialized with")                                               \
+  X(QWorldOrigin, "query.world_ray_origin", Vec3, R | C | M | K,                                  \
+    "rayQueryGetWorldRayOriginEXT(rs_query)", nullptr,                                            \
+    "the world ray origin the query was initialized with")                                        \
+  X(QWorldDirection, "query.world_ray_direction", Vec3, R | C | M | K,                            \
+    "rayQueryGetWorldRayDirectionEXT(rs_query)", nullptr,                                         \
+    "the world ray direction the query was initialized with")
+
 #define RAYSPEC_BUILTINS(X)                                                                        \
   X(LaunchX, "launch_id_x", Uint, kAllStages, "gl_LaunchIDEXT.x", "gl_LaunchIDEXT.x",              \
     "x of gl_LaunchIDEXT")                                                                         \
@@ -164,5 +297,6 @@
   X(CallWord, "call.word<i>", Uint, K, nullptr, nullptr,                                           \
     "word i (0..51) of the incoming callable data, within its type's pipeline.callable_data "      \
     "words")                                                                                       \
+  RAYSPEC_QUERY_BUILTINS(X)                                                                        \
   X(CalleeWord, "callee.word<i>", Uint, R | C | M | K, nullptr, nullptr,                           \
     "word i of the callable data after this stage's last call (0 beyond that call's type)")

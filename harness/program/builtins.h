@@ -56,6 +56,17 @@ static_assert(kBiWorldToObject0 == kBiObjectToWorld0 + 7 &&
                   kBiTransformEnd == kBiObjectToWorld0 + 14,
               "object_to_world0..3, _3x4_0..2, then world_to_object's, in order");
 
+// The ray query getters: candidate.* then committed.*, the hit rows (t ..
+// world_to_object3) of each in the same order, then query.*.
+constexpr int kBiQueryHitRows = kBiQCandType - kBiQCandT;
+static_assert(kBiQueryHitRows == 18 && kBiQCommittedT == kBiQCandT + kBiQueryHitRows + 2 &&
+                  kBiQCommittedType == kBiQCommittedT + kBiQueryHitRows &&
+                  kBiQWorldDirection == kBiQCommittedType + 4,
+              "candidate.*, committed.* and query.* rows in order");
+constexpr bool isQueryBuiltin(int b) {
+  return b >= kBiQCandT && b <= kBiQWorldDirection;
+}
+
 // The table of program/builtin_table.h, indexed by Builtin.
 const std::vector<BuiltinInfo>& builtins();
 // The row a name reads: payload.word3 is payload.word<i>'s. nullptr: none.

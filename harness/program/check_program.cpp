@@ -34,6 +34,11 @@ constexpr StmtRule kStmtRules[] = {
     {Stmt::Kind::Trace, "trace", R | C | M},
     {Stmt::Kind::Call, "call", R | C | M | K},
     {Stmt::Kind::Light, "light", K},
+    {Stmt::Kind::RayQuery, "ray_query", R | C | M | K},
+    {Stmt::Kind::Candidates, "ray_query", R | C | M | K},
+    {Stmt::Kind::Confirm, "confirm", R | C | M | K},
+    {Stmt::Kind::Generate, "generate", R | C | M | K},
+    {Stmt::Kind::TerminateQuery, "terminate_query", R | C | M | K},
     {Stmt::Kind::If, "if", kAllStages},
     {Stmt::Kind::Let, "let", kAllStages},
     {Stmt::Kind::Set, "set", kAllStages},
@@ -140,8 +145,10 @@ class Checker {
         return block(s.else_);
       }
       case Stmt::Kind::Trace:
+        if (auto r = notInCandidates(s, "trace")) return r;
         return trace(s);
       case Stmt::Kind::Call:
+        if (auto r = notInCandidates(s, "call")) return r;
         if (auto r = as(s.call_index, ValueType::Uint, "call index")) return r;
         return dataFields(s, Data::Call);
       case Stmt::Kind::Light:
@@ -152,6 +159,13 @@ class Checker {
         if (auto r = as(s.cond, ValueType::Bool, "if condition")) return r;
         if (auto r = block(s.then_)) return r;
         return block(s.else_);
+      case Stmt::Kind::RayQuery:
+        return rayQuery(s);
+      case Stmt::Kind::Candidates:
+      case Stmt::Kind::Confirm:
+      case Stmt::Kind::Generate:
+      case Stmt::Kind::TerminateQuery:
+        return queryStatement(s);
       default:
         return controlFlow(s);
     }
@@ -188,10 +202,77 @@ class Checker {
       case Stmt::Kind::Invoke:
         return invoke(s);
       case Stmt::Kind::Return:
+        if (candidate_block_)
+          return ProgramError{
+              "'return' in a ray_query's triangle or aabb block (it would leave "
+              "the stage in the middle of the query's traversal)",
+              s.loc};
         return std::nullopt;
       default:
         return ProgramError{"'case' outside a switch", s.loc};
     }
+  }
+
+  // ray_query: its fields as a trace's (no SBT fields: a query runs no
+  // shader), its candidate blocks each a loop body of their own (break and
+  // continue stay inside, no return, no trace or call: the model may run a
+  // block again to try another legal order), then `after`.
+  std::optional<ProgramError> rayQuery(Stmt& s) {
+    if (query_depth_ >= kMaxQueryNesting)
+      return ProgramError{
+          "ray_query nested more than " + std::to_string(kMaxQueryNesting) + " deep", s.loc};
+    if (auto r = traceFields(s, "ray_query", 6)) return r;
+    using Block = LocalScope::QueryBlock;
+    const Block outer = scope_.queryBlock();
+    const bool outer_candidates = candidate_block_;
+    std::vector<char> loops;
+    std::swap(loops, breakable_);
+    ++query_depth_;
+    std::optional<ProgramError> r;
+    scope_.openBlock();  // as the model's compiler opens them (model_program.cpp)
+    for (Stmt& c : s.then_) {
+      scope_.setQueryBlock(c.size == 0 ? Block::Triangle : Block::Aabb);
+      candidate_block_ = true;
+      if (!r) r = block(c.then_);
+    }
+    scope_.closeBlock();
+    std::swap(loops, breakable_);
+    candidate_block_ = outer_candidates;
+    scope_.setQueryBlock(Block::After);
+    if (!r) r = block(s.else_);
+    --query_depth_;
+    scope_.setQueryBlock(outer);
+    return r;
+  }
+
+  // confirm (a triangle block), generate (an AABB block), terminate_query
+  // (either), of the innermost ray_query.
+  std::optional<ProgramError> queryStatement(Stmt& s) {
+    using Block = LocalScope::QueryBlock;
+    const Block b = scope_.queryBlock();
+    if (s.kind == Stmt::Kind::Confirm && b != Block::Triangle)
+      return ProgramError{
+          "'confirm' commits a triangle candidate: only in a ray_query's "
+          "triangle block",
+          s.loc};
+    if (s.kind == Stmt::Kind::Generate && b != Block::Aabb)
+      return ProgramError{"'generate' commits an AABB candidate: only in a ray_query's aabb block",
+                          s.loc};
+    if (s.kind == Stmt::Kind::TerminateQuery && b != Block::Triangle && b != Block::Aabb)
+      return ProgramError{"'terminate_query' only in a ray_query's triangle or aabb block", s.loc};
+    if (s.kind == Stmt::Kind::Candidates)
+      return ProgramError{"a candidate block outside a ray_query", s.loc};
+    if (s.kind == Stmt::Kind::Generate) return as(s.t, ValueType::Float, "generate t");
+    return std::nullopt;
+  }
+
+  std::optional<ProgramError> notInCandidates(const Stmt& s, const char* what) {
+    if (!candidate_block_ && !candidate_frame_) return std::nullopt;
+    return ProgramError{std::string("'") + what +
+                            "' in a ray_query's triangle or aabb block: the model may run a "
+                            "block again in another legal order, which it cannot do to a "
+                            "trace or call",
+                        s.loc};
   }
 
   std::optional<ProgramError> declare(const Stmt& s, const std::string& name, LocalInfo info) {
@@ -308,10 +389,21 @@ class Checker {
     LocalScope::Frame caller = scope_.openFrame();
     std::vector<char> loops;
     std::swap(loops, breakable_);
+    // A function sees no query of its caller (GLSL: it is another function);
+    // its return leaves only the function, but its traces would still run
+    // inside the caller's candidate block.
+    const LocalScope::QueryBlock query = scope_.queryBlock();
+    const bool candidates = candidate_block_, frame = candidate_frame_;
+    scope_.setQueryBlock(LocalScope::QueryBlock::None);
+    candidate_frame_ = candidates || frame;
+    candidate_block_ = false;
     std::optional<ProgramError> r;
     for (const auto& [name, type] : s.params)
       if (!r) r = declare(s, name, {type});
     if (!r) r = block(s.then_);
+    scope_.setQueryBlock(query);
+    candidate_block_ = candidates;
+    candidate_frame_ = frame;
     std::swap(loops, breakable_);
     scope_.closeFrame(std::move(caller));
     return r;
@@ -369,6 +461,12 @@ class Checker {
   }
 
   std::optional<ProgramError> trace(Stmt& s) {
+    if (auto r = traceFields(s, "trace", 9)) return r;
+    return dataFields(s, Data::Payload);  // the payload the trace starts with
+  }
+
+  // The first `slots` fields of a trace (origin .. miss), as `what` names them.
+  std::optional<ProgramError> traceFields(Stmt& s, const std::string& what, size_t slots_used) {
     TraceArgs& t = s.trace;
     struct Slot {
       std::vector<Expr>* exprs;
@@ -386,20 +484,24 @@ class Checker {
         {&t.sbt_stride, "sbt_stride", ValueType::Uint},
         {&t.miss, "miss", ValueType::Uint},
     };
-    for (Slot& slot : slots) {
+    for (size_t k = 0; k < slots_used; ++k) {
+      Slot& slot = slots[k];
       if (slot.exprs->size() > 1)
-        return ProgramError{std::string("trace ") + slot.name + " given twice", s.loc};
+        return ProgramError{what + " " + slot.name + " given twice", s.loc};
       if (slot.exprs->empty() && stage_ != Stage::Raygen && (slot.type == ValueType::Vec3))
-        return ProgramError{std::string("trace outside raygen needs '") + slot.name + "'", s.loc};
+        return ProgramError{what + " outside raygen needs '" + slot.name + "'", s.loc};
       for (Expr& e : *slot.exprs)
-        if (auto r = as(e, slot.type, std::string("trace ") + slot.name)) return r;
+        if (auto r = as(e, slot.type, what + " " + slot.name)) return r;
     }
-    return dataFields(s, Data::Payload);  // the payload the trace starts with
+    return std::nullopt;
   }
 
   Stage stage_;
   LocalScope scope_;
-  std::vector<char> breakable_;  // 'L' a repeat, 'S' a switch, innermost last
+  std::vector<char> breakable_;   // 'L' a repeat, 'S' a switch, innermost last
+  uint32_t query_depth_ = 0;      // ray_query statements around the one checked
+  bool candidate_block_ = false;  // in a ray_query's triangle or aabb block
+  bool candidate_frame_ = false;  // in a function invoked from one
   const std::vector<std::string>& counters_;
   const std::vector<std::string>& fields_;
 };

@@ -58,6 +58,11 @@ class LocalScope {
     interface_uses_->push_back({qualifier, what, loc});
     return true;
   }
+  // The block of the innermost ray_query the statements checked now are in:
+  // where its getters (candidate.*, committed.*, query.*) may be read.
+  enum class QueryBlock { None, Triangle, Aabb, After };
+  void setQueryBlock(QueryBlock b) { query_block_ = b; }
+  QueryBlock queryBlock() const { return query_block_; }
   // The shader record block's members `shader_record.NAME` reads.
   void setRecordLayout(const ShaderRecordLayout* layout) { record_layout_ = layout; }
   const RecordMember* findRecordMember(const std::string& name) const {
@@ -68,6 +73,7 @@ class LocalScope {
   const std::vector<SpecConstant>* constants_ = nullptr;
   const ShaderRecordLayout* record_layout_ = nullptr;
   std::vector<InterfaceUse>* interface_uses_ = nullptr;
+  QueryBlock query_block_ = QueryBlock::None;
   std::vector<std::pair<std::string, LocalInfo>> names_;
   std::vector<size_t> blocks_;
   uint32_t next_slot_ = 0, frame_slots_ = 0;

@@ -98,7 +98,16 @@ struct Stmt {
                  // ("position", "normal", "value", "color"); result as callee.*
     Light,       // callable only: call.color = light_<light>(call.position,
                  // call.normal, shader record floats) from shaders/lights.glsl
-    If,          // if (cond) then_ else else_
+    // Ray queries (GLSL_EXT_ray_query, cases/README.md "Ray queries"):
+    RayQuery,        // rayQueryInitializeEXT with `trace` (origin .. cull_mask, tlas),
+                     // then while rayQueryProceedEXT: a triangle candidate runs
+                     // then_[0]'s body, an AABB candidate then_[1]'s; else_ runs
+                     // after the loop ("after"). Its getters read the innermost query.
+    Candidates,      // a RayQuery's candidate block: size 0 triangles, 1 AABBs; body in then_
+    Confirm,         // rayQueryConfirmIntersectionEXT (a triangle block)
+    Generate,        // rayQueryGenerateIntersectionEXT(t) (an AABB block)
+    TerminateQuery,  // rayQueryTerminateEXT (a candidate block)
+    If,              // if (cond) then_ else else_
     // Control flow and local variables (cases/README.md, "Control flow"); kept
     // last: the model's compiler tells them by order (Kind >= Let).
     Let,       // declare locals: assigns[i] = (name, initial value)
@@ -118,7 +127,7 @@ struct Stmt {
   std::string counter;                                // Count
   std::vector<std::pair<std::string, Expr>> assigns;  // Record/SetPayload/SetCall/Call/Trace
   Expr cond;                                          // If
-  Expr t, hit_kind;                                   // Report
+  Expr t, hit_kind;                                   // Report; Generate: t
   std::vector<Expr> attribute;                        // Report: optional Vec2 hit
                                                       // attribute; vec2(0) when absent
   Expr call_index;                                    // Call
@@ -126,7 +135,7 @@ struct Stmt {
                                // Pipeline::call_data_words)
   SourceLoc call_location_loc;
   std::string light;  // Light: point|spot|directional
-  TraceArgs trace;    // Trace
+  TraceArgs trace;    // Trace; RayQuery (origin .. cull_mask, tlas)
   std::string local;  // Array, Store: the array; Repeat: its variable (optional);
                       // Invoke: the function
   ValueType local_type = ValueType::Uint;  // Array: the element type
@@ -177,5 +186,7 @@ struct ShaderRecordLayout {
 constexpr uint32_t kMaxLoopTrips = 1024;
 constexpr uint32_t kMaxArrayElements = 128;
 constexpr uint32_t kMaxFunctionNesting = 8;
+// ray_query statements nest at most this deep (one GLSL query variable each).
+constexpr uint32_t kMaxQueryNesting = 4;
 
 }  // namespace rayspec

@@ -286,6 +286,33 @@ Typing typeLocal(Expr& e, const LocalScope* locals) {
   return std::nullopt;
 }
 
+// A ray query getter (program/builtin_table.h) where the innermost ray_query
+// defines it: committed.* and query.* in any of its blocks, candidate.* in
+// its candidate blocks only (after traversal a candidate is undefined,
+// R-RQ-VALUES), a triangle's t, barycentrics and facing in a triangle block,
+// aabb_opaque in an aabb block.
+Typing typeQueryGetter(const Expr& e, const LocalScope* locals) {
+  using Block = LocalScope::QueryBlock;
+  const Block block = locals ? locals->queryBlock() : Block::None;
+  const std::string& n = e.name;
+  if (block == Block::None)
+    return err(e, "'" + n +
+                      "' reads a ray query: only inside a ray_query's triangle, aabb or "
+                      "after block");
+  if (n.rfind("candidate.", 0) != 0) return std::nullopt;
+  if (block == Block::After)
+    return err(e, "'" + n +
+                      "' reads the current candidate: only in a ray_query's triangle or aabb "
+                      "block (after traversal it is undefined, R-RQ-VALUES)");
+  const bool triangle_only =
+      n == "candidate.t" || n == "candidate.barycentrics" || n == "candidate.front_face";
+  if (block == Block::Aabb && triangle_only)
+    return err(e, "'" + n + "' is a triangle candidate's: not readable in an aabb block");
+  if (block == Block::Triangle && n == "candidate.aabb_opaque")
+    return err(e, "'" + n + "' is an AABB candidate's: not readable in a triangle block");
+  return std::nullopt;
+}
+
 std::optional<ProgramError> checkOp(Expr& e, Stage stage, const OpInfo& op,
                                     const LocalScope* locals) {
   const std::string& name = e.name;
@@ -337,6 +364,7 @@ std::optional<ProgramError> checkExpr(Expr& e, Stage stage, const LocalScope* lo
           return err(e, "built-in '" + e.name + "' cannot be read in " + stageName(stage));
       }
       e.type = b->type;
+      if (isQueryBuiltin(builtinId(b))) return typeQueryGetter(e, locals);
       return std::nullopt;
     }
     case Expr::Kind::Op: {

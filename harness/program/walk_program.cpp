@@ -39,6 +39,10 @@ void ownExpressions(S& s, const Visit& visit) {
     case Stmt::Kind::Call:
       walkExpr(s.call_index, visit);
       break;
+    case Stmt::Kind::Generate:
+      walkExpr(s.t, visit);
+      break;
+    case Stmt::Kind::RayQuery:
     case Stmt::Kind::Trace: {
       auto& t = s.trace;
       for (auto* list : {&t.origin, &t.direction, &t.tmin, &t.tmax, &t.flags, &t.cull_mask,

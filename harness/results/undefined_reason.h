@@ -26,7 +26,11 @@ namespace rayspec {
   /* a NO_NULL_*_SHADERS pipeline reaches an all-zero record for that shader */    \
   X(NullShader, "null-shader")                                                     \
   /* the callable reached declares another incoming data type than the call's */   \
-  X(CallDataType, "call-data-type")
+  X(CallDataType, "call-data-type")                                                \
+  /* rayQueryGenerateIntersectionEXT at a t outside [tmin, committed t] */         \
+  X(GenerateOutsideInterval, "generate-outside-interval")                          \
+  /* a ray query's committed value read with nothing committed */                  \
+  X(QueryNothingCommitted, "query-nothing-committed")
 enum class UndefinedReason { RAYSPEC_UNDEFINED_REASONS(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(UndefinedReason, RAYSPEC_UNDEFINED_REASONS);
 inline const char* undefinedReasonName(UndefinedReason r) {

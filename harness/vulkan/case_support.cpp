@@ -101,6 +101,8 @@ Result<void> checkCaseSupport(const VulkanContext& ctx, const Case& c, const Pla
     return notSupported(
         "traces by ray query (--through ray-query): the device lacks "
         "VK_KHR_ray_query's rayQuery");
+  if (plan.ray_queries && !d.ray_query)
+    return notSupported("ray_query statements: the device lacks VK_KHR_ray_query's rayQuery");
   if (c.pipeline.record_layout.declared() && c.pipeline.record_layout.scalar &&
       !d.scalar_block_layout)
     return notSupported(

@@ -1,0 +1,86 @@
+// Ray query rules broken (R-RQ-INIT .. R-RQ-VALUES): a device whose
+// ray_query statements keep the last query's commit, offer opaque triangles,
+// ignore confirm or terminate, or read committed values from the candidate
+// (the model's test-only hooks, model/model_faults.h).
+#include "fault/fault_impl.h"
+#include "program/walk_program.h"
+
+namespace rayspec {
+namespace {
+
+// How many statements of `kind` the case's programs hold.
+size_t countStatements(const Case& c, Stmt::Kind kind) {
+  size_t n = 0;
+  forEachProgram(c.pipeline, [&](const Program& p, Stage) {
+    walkStatements(p, [&](const Stmt& s) { n += s.kind == kind; });
+  });
+  return n;
+}
+
+}  // namespace
+
+std::string queryInitKeepsCommitted(Case& c, ModelOptions& o) {
+  const size_t n = countStatements(c, Stmt::Kind::RayQuery);
+  if (!n) return "";
+  o.faults.rq_init_keeps_committed = true;
+  return describeCount(n, "ray queries that start from the launch ray's last committed hit");
+}
+
+std::string queryOffersOpaque(Case& c, ModelOptions& o) {
+  const size_t n = countStatements(c, Stmt::Kind::RayQuery);
+  if (!n) return "";
+  o.faults.rq_opaque_offered = true;
+  return describeCount(n, "ray queries that return opaque triangles as candidates");
+}
+
+std::string queryConfirmIgnored(Case& c, ModelOptions& o) {
+  const size_t n = countStatements(c, Stmt::Kind::Confirm);
+  if (!n) return "";
+  o.faults.rq_confirm_ignored = true;
+  return describeCount(n, "confirms that commit nothing");
+}
+
+std::string queryGenerateIgnored(Case& c, ModelOptions& o) {
+  const size_t n = countStatements(c, Stmt::Kind::Generate);
+  if (!n) return "";
+  o.faults.rq_generate_ignored = true;
+  return describeCount(n, "generates that commit nothing");
+}
+
+// Ray flags come from the case's rays as well: every query may terminate on
+// its first hit.
+std::string queryTerminateIgnored(Case& c, ModelOptions& o) {
+  const size_t n = countStatements(c, Stmt::Kind::RayQuery);
+  if (!n) return "";
+  o.faults.rq_terminate_ignored = true;
+  return describeCount(n, "ray queries that neither terminate_query nor TerminateOnFirstHit end");
+}
+
+std::string queryCommittedReadsCandidate(Case& c, ModelOptions& o) {
+  size_t reads = 0;
+  auto visit = [&](const Program& p) {
+    walkExpressions(p, [&](const Expr& e) {
+      reads += e.kind == Expr::Kind::Builtin && e.name.rfind("committed.", 0) == 0 &&
+               e.name != "committed.type";
+    });
+  };
+  forEachProgram(c.pipeline, [&](Program& p, Stage) { visit(p); });
+  if (!reads) return "";
+  o.faults.rq_committed_reads_candidate = true;
+  return describeCount(reads, "committed getters that read the current candidate");
+}
+
+std::string queryCustomIndexIsInstanceId(Case& c, ModelOptions& o) {
+  size_t reads = 0;
+  forEachProgram(c.pipeline, [&](const Program& p, Stage) {
+    walkExpressions(p, [&](const Expr& e) {
+      reads += e.kind == Expr::Kind::Builtin && (e.name == "committed.instance_custom_index" ||
+                                                 e.name == "candidate.instance_custom_index");
+    });
+  });
+  if (!reads) return "";
+  o.faults.rq_custom_index_is_instance_id = true;
+  return describeCount(reads, "ray query custom index reads that give the instance id");
+}
+
+}  // namespace rayspec

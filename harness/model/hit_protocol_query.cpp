@@ -1,0 +1,95 @@
+// The ray query side of the hit protocol (hit_protocol.h): a candidate's
+// block runs in the query's frame; confirm, generate and terminate_query
+// act on the traversal deciding it (R-RQ-COMMIT, R-RQ-TERMINATE).
+#include <cmath>
+#include <string>
+
+#include "case/flag_names.h"
+#include "model/hit_protocol.h"
+#include "model/stage_interpreter.h"
+#include "model/traversal.h"
+
+namespace rayspec {
+
+using namespace trace_detail;
+
+void HitProtocol::runQueryCandidate(Traversal& tr, const ModelCandidate& cand, size_t k,
+                                    bool opaque, uint32_t kind) {
+  QueryRun& q = *tr.query;
+  HitView hv = viewOf(*sh_.scene, *sh_.c, tr.ray, cand.instance, cand.geometry, cand.primitive);
+  if (!cand.aabb) setHit(hv, static_cast<float>(cand.t), kind, cand.b1, cand.b2);
+  // A nested query's block may run while this one's runs: each keeps its own.
+  Traversal* const outer_tr = q.tr;
+  const ModelCandidate* const outer_cand = q.cand;
+  const HitView outer_view = q.cand_view;
+  const bool outer_opaque = q.cand_opaque;
+  q.tr = &tr;
+  q.cand = &cand;
+  q.cand_view = hv;
+  q.cand_opaque = opaque;
+  tr.cur = &cand;
+  tr.cur_index = k;
+  if (cand.aabb && tr.reports) tr.reports->push_back({k, NAN});  // it ran (R-TIE's check)
+  const CProgram& block = q.stmt->then_[cand.aabb ? 1 : 0].then_;
+  interp_.exec(block, *q.env);
+  tr.cur = nullptr;
+  q.tr = outer_tr;
+  q.cand = outer_cand;
+  q.cand_view = outer_view;
+  q.cand_opaque = outer_opaque;
+}
+
+// R-RQ-TERMINATE: under TerminateOnFirstHit the first commit ends traversal.
+void HitProtocol::endOnFirstHit(Traversal& tr) const {
+  if ((tr.flags & kRayTerminateOnFirstHit) && !sh_.fault_seam.queryTerminateIgnored())
+    tr.stop = true;
+}
+
+void HitProtocol::commitQueryTriangle(Traversal& tr, const ModelCandidate& cand, uint32_t kind) {
+  // Exact tier, R-PREC: how far a device's t may lie (its frame's rounding).
+  tr.best = {true, cand.t,  cand.instance, cand.geometry, cand.primitive,
+             kind, cand.b1, cand.b2,       cand.t_err};
+  tr.tmax_cur = cand.t;
+  endOnFirstHit(tr);
+}
+
+void HitProtocol::confirm(StageEnv& env) {
+  QueryRun* q = env.query;
+  if (!q || !q->tr || !q->cand || q->cand->aabb) return;
+  if (sh_.fault_seam.queryConfirmIgnored()) return;
+  commitQueryTriangle(*q->tr, *q->cand, q->cand_view.hit_kind);
+}
+
+void HitProtocol::generate(const CStmt& s, StageEnv& env) {
+  QueryRun* q = env.query;
+  if (!q || !q->tr || !q->cand || !q->cand->aabb) return;
+  Traversal& tr = *q->tr;
+  const Val tv = interp_.eval(s.t, env);
+  const float t = s.t.type == ValueType::Uint ? static_cast<float>(tv.u) : tv.f[0];
+  // R-RQ-COMMIT: in [tmin, committed t] (the query's tmax before a commit),
+  // as the query's getters give them (floats); outside, R-UB.
+  const float committed_t = static_cast<float>(tr.tmax_cur);
+  if (!(t >= q->ray.tmin && t <= committed_t)) {
+    if (!st_.ray_undefined)
+      st_.markUndefined(
+          UndefinedReason::GenerateOutsideInterval,
+          (s.src && !s.src->loc.field.empty() ? s.src->loc.field : std::string("generate")) +
+              ": t " + std::to_string(t) + " outside [tmin " + std::to_string(q->ray.tmin) +
+              ", committed t " + std::to_string(committed_t) + "]");
+    return;
+  }
+  if (sh_.fault_seam.queryGenerateIgnored()) return;
+  if (tr.reports) tr.reports->push_back({tr.cur_index, t});
+  const HitView& hv = q->cand_view;
+  tr.best = {true, static_cast<double>(t), hv.instance, hv.geometry, hv.primitive, 0, 0, 0};
+  tr.tmax_cur = t;
+  endOnFirstHit(tr);
+}
+
+void HitProtocol::terminateQuery(StageEnv& env) {
+  QueryRun* q = env.query;
+  if (!q || !q->tr || sh_.fault_seam.queryTerminateIgnored()) return;
+  q->tr->stop = true;  // R-RQ-TERMINATE: what is committed stays; the candidate is not committed
+}
+
+}  // namespace rayspec

@@ -1,0 +1,96 @@
+// The ray query getters (program/builtin_table.h: candidate.*, committed.*,
+// query.*), read from the innermost query running (model/query_run.h):
+// what the matching ray tracing built-ins would hold for that hit (R-RQ-VALUES).
+#include <string>
+
+#include "model/model_builtins.h"
+#include "model/traversal.h"
+
+namespace rayspec {
+
+using namespace trace_detail;
+
+// Row `row` of the hit getters (t .. world_to_object3) on the view of a hit.
+Val ModelBuiltins::queryHit(int row, const HitView& hv) const {
+  switch (row) {
+    case 0:
+      return fromFloat(hv.t);
+    case 1:  // the planted fault rq_custom_index_is_instance_id reads the id
+      return fromUint(sh_.fault_seam.queryCustomIndexIsInstanceId() ? hv.instance
+                                                                    : hv.custom_index);
+    case 2:
+      return fromUint(hv.instance);
+    case 3:  // the instance's SBT record offset (24 bits)
+      return fromUint(hv.instance < sh_.c->scene.instances.size()
+                          ? sh_.c->scene.instances[hv.instance].sbt_offset & 0xFFFFFFu
+                          : 0u);
+    case 4:
+      return fromUint(hv.geometry);
+    case 5:
+      return fromUint(hv.primitive);
+    case 6: {
+      Val v;
+      v.f = {hv.b1, hv.b2, 0, 0};
+      return v;
+    }
+    case 7:
+      return fromUint(hv.hit_kind == 0xFEu ? 1u : 0u);
+    case 8:
+      return fromVec3(hv.object_origin);
+    case 9:
+      return fromVec3(hv.object_direction);
+    default:  // object_to_world0..3, then world_to_object0..3
+      return transformBuiltin(hv, row < 14 ? row - 10 : 7 + (row - 14));
+  }
+}
+
+Val ModelBuiltins::queryBuiltin(const CExpr& e, const StageEnv& env) const {
+  const QueryRun* q = env.query;
+  if (!q) return Val{};
+  const Committed& best = q->tr ? q->tr->best : q->committed;
+  const ModelScene& scene = *sh_.scene;
+  switch (e.builtin) {
+    case kBiQTmin:
+      return fromFloat(q->ray.tmin);
+    case kBiQFlags:
+      return fromUint(q->ray.flags);
+    case kBiQWorldOrigin:
+      return fromVec3(q->ray.origin);
+    case kBiQWorldDirection:
+      return fromVec3(q->ray.direction);
+    case kBiQCandType:
+      return fromUint(q->cand && q->cand->aabb ? 1u : 0u);
+    case kBiQCandAabbOpaque:
+      return fromUint(q->cand_opaque ? 1u : 0u);
+    case kBiQCommittedType: {
+      if (!best.valid) return fromUint(0);
+      const ModelInstance& mi = scene.instances[best.instance];
+      const bool box =
+          scene.blases[mi.blas].geometries[best.geometry].kind == Geometry::Kind::Aabbs;
+      return fromUint(box ? 2u : 1u);
+    }
+    default:
+      break;
+  }
+  const bool committed = e.builtin >= kBiQCommittedT;
+  const int row = e.builtin - (committed ? kBiQCommittedT : kBiQCandT);
+  // The planted fault rq_committed_reads_candidate: the committed getters
+  // read the candidate while one is offered.
+  if (!committed || (q->cand && sh_.fault_seam.queryCommittedReadsCandidate()))
+    return queryHit(row, q->cand_view);
+  if (!best.valid) {
+    // R-RQ-VALUES, R-UB: no committed intersection to read (a device may
+    // even crash: lavapipe does); the parser cannot tell, the model marks it.
+    const std::string what = e.src ? e.src->name : std::string("a committed value");
+    const std::string field = e.src && !e.src->loc.field.empty() ? e.src->loc.field : what;
+    if (!st_.ray_undefined)
+      st_.markUndefined(UndefinedReason::QueryNothingCommitted,
+                        field + ": " + what + " read with nothing committed");
+    return Val{};
+  }
+  HitView hv = viewOf(scene, *sh_.c, q->ray, best.instance, best.geometry, best.primitive);
+  setHit(hv, static_cast<float>(best.t), best.kind, best.b1, best.b2);
+  return queryHit(row, hv);
+}
+
+}  // namespace rayspec
