@@ -48,18 +48,13 @@ void ModelTracer::rayQuery(QueryRun& q, const CStmt* site) {
 void ModelTracer::decideQuery(Traversal& tr, const std::vector<ModelCandidate>& cands,
                               const int8_t* force) {
   const ModelScene& scene = *sh_.scene;
-  const size_t n = cands.size();
-  const size_t first = tr.first >= 0 ? static_cast<size_t>(tr.first) : 0;
-  for (size_t pos = 0; pos < n; ++pos) {
-    // R-TOFH what-if: `first` ahead of all others, the rest in order.
-    const size_t k = tr.first < 0 ? pos : pos == 0 ? first : pos <= first ? pos - 1 : pos;
-    const ModelCandidate& cand = cands[k];
+  for (size_t pos = 0; pos < cands.size(); ++pos) {
     if (tr.stop) break;
-    const ModelInstance& mi = scene.instances[cand.instance];
-    const ModelGeometry& g = scene.blases[mi.blas].geometries[cand.geometry];
-    const bool opaque = resolveOpaque(g.flags, mi.src->flags, tr.flags);
-    if ((tr.flags & kRayCullOpaque) && opaque) continue;
-    if ((tr.flags & kRayCullNoOpaque) && !opaque) continue;
+    const std::optional<OrderedCandidate> at = candidateAt(tr, cands, pos);
+    if (!at) continue;
+    const size_t k = at->k;
+    const bool opaque = at->opaque;
+    const ModelCandidate& cand = cands[k];
     if (cand.aabb) {
       if (force && force[k] == 0) continue;
       // A box entered beyond the committed t may or may not be offered: the

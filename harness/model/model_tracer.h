@@ -56,6 +56,16 @@ class ModelTracer {
              Payload& payload);
   void decide(Traversal& tr, const std::vector<ModelCandidate>& cands, const int8_t* force,
               Payload& payload);
+  // The candidate decided at position `pos` (R-TOFH what-if: `tr.first`
+  // ahead of all others, the rest in order) and its opacity, or nullopt when
+  // the ray's cull-opaque flags skip it: decide's and decideQuery's first step.
+  struct OrderedCandidate {
+    size_t k;
+    bool opaque;
+  };
+  std::optional<OrderedCandidate> candidateAt(const Traversal& tr,
+                                              const std::vector<ModelCandidate>& cands,
+                                              size_t pos) const;
   // Whether a triangle candidate's t counts (decide's step).
   bool triangleInside(const Traversal& tr, const ModelCandidate& cand, size_t k,
                       const int8_t* force) const;

@@ -166,6 +166,19 @@ bool ModelTracer::triangleInside(const Traversal& tr, const ModelCandidate& cand
   return inside;
 }
 
+std::optional<ModelTracer::OrderedCandidate> ModelTracer::candidateAt(
+    const Traversal& tr, const std::vector<ModelCandidate>& cands, size_t pos) const {
+  const size_t first = tr.first >= 0 ? static_cast<size_t>(tr.first) : 0;
+  const size_t k = tr.first < 0 ? pos : pos == 0 ? first : pos <= first ? pos - 1 : pos;
+  const ModelCandidate& cand = cands[k];
+  const ModelInstance& mi = sh_.scene->instances[cand.instance];
+  const ModelGeometry& g = sh_.scene->blases[mi.blas].geometries[cand.geometry];
+  const bool opaque = resolveOpaque(g.flags, mi.src->flags, tr.flags);
+  if ((tr.flags & kRayCullOpaque) && opaque) return std::nullopt;
+  if ((tr.flags & kRayCullNoOpaque) && !opaque) return std::nullopt;
+  return OrderedCandidate{k, opaque};
+}
+
 // The model's decision over the sorted candidates (R-ORDER-UNSPEC: in
 // ascending distance). `force`, when given, overrides per candidate whether a
 // triangle is a hit (-1: the model's own decision, 0: no, 1: yes).
@@ -178,18 +191,13 @@ void ModelTracer::decide(Traversal& tr, const std::vector<ModelCandidate>& cands
   const Case& c = *sh_.c;
   const ModelScene& scene = *sh_.scene;
   const TraceRay& r = tr.ray;
-  const size_t n = cands.size();
-  const size_t first = tr.first >= 0 ? static_cast<size_t>(tr.first) : 0;
-  for (size_t pos = 0; pos < n; ++pos) {
-    // R-TOFH what-if: `first` ahead of all others, the rest in order.
-    const size_t k = tr.first < 0 ? pos : pos == 0 ? first : pos <= first ? pos - 1 : pos;
-    const ModelCandidate& cand = cands[k];
+  for (size_t pos = 0; pos < cands.size(); ++pos) {
     if (tr.stop) break;
-    const ModelInstance& mi = scene.instances[cand.instance];
-    const ModelGeometry& g = scene.blases[mi.blas].geometries[cand.geometry];
-    const bool opaque = resolveOpaque(g.flags, mi.src->flags, tr.flags);
-    if ((tr.flags & kRayCullOpaque) && opaque) continue;
-    if ((tr.flags & kRayCullNoOpaque) && !opaque) continue;
+    const std::optional<OrderedCandidate> at = candidateAt(tr, cands, pos);
+    if (!at) continue;
+    const size_t k = at->k;
+    const bool opaque = at->opaque;
+    const ModelCandidate& cand = cands[k];
     const SbtRecord* rec = sbt_.hit(cand.instance, cand.geometry, r);
     const CHitGroup* grp = groupOf(*sh_.programs, rec);
     if (cand.aabb) {
@@ -209,7 +217,9 @@ void ModelTracer::decide(Traversal& tr, const std::vector<ModelCandidate>& cands
       setHit(hv, static_cast<float>(cand.t), f.kind, cand.b1, cand.b2);
       st_.checkPayloadType(payload, grp->payload, "pipeline.hit_groups", *rec->group, ".any_hit");
       StageEnv a = hitStage(Stage::AnyHit, rec->data, &payload, r, hv, hv.t, tr.depth);
-      ah = hits_.runAnyHit(*grp->any_hit, a, hv, g.flags);
+      const ModelInstance& mi = scene.instances[cand.instance];
+      ah = hits_.runAnyHit(*grp->any_hit, a, hv,
+                           scene.blases[mi.blas].geometries[cand.geometry].flags);
       if (ah == Flow::Ignore) continue;
     }
     // Exact tier, R-PREC: how far a device's t may lie (its frame's rounding).

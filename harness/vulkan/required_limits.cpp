@@ -6,6 +6,9 @@
 namespace rayspec {
 namespace {
 
+// The word that names the limits footnote 9 of the table speaks of.
+constexpr std::string_view kUpdateAfterBind = "UpdateAfterBind";
+
 std::string requirementText(LimitBound bound, uint64_t required, bool power_of_two) {
   std::string text = bound == LimitBound::Min   ? "at least "
                      : bound == LimitBound::Max ? "at most "
@@ -33,7 +36,7 @@ bool meets(LimitBound bound, uint64_t value, uint64_t required, bool power_of_tw
 // the table: without it the limit may be zero).
 bool limitApplies(const DeviceInfo& d, const std::string& name, const char* structure) {
   if (std::string_view(structure) == kPipelineProperties) return d.ray_tracing_extension;
-  if (name.find("UpdateAfterBind") != std::string::npos)
+  if (name.find(kUpdateAfterBind) != std::string::npos)
     return d.acceleration_structure_extension && d.acceleration_structure_update_after_bind;
   return d.acceleration_structure_extension;
 }
@@ -55,9 +58,9 @@ std::vector<LimitCheck> checkRequiredLimits(const DeviceInfo& d) {
   // Footnote 9: where the feature is there, an UpdateAfterBind limit is at
   // least its ordinary counterpart too.
   for (LimitCheck& c : checks) {
-    const size_t at = c.name.find("UpdateAfterBind");
+    const size_t at = c.name.find(kUpdateAfterBind);
     if (at == std::string::npos || !c.applies) continue;
-    const std::string ordinary = c.name.substr(0, at) + c.name.substr(at + 15);
+    const std::string ordinary = c.name.substr(0, at) + c.name.substr(at + kUpdateAfterBind.size());
     for (const LimitCheck& o : checks)
       if (o.name == ordinary && c.value < o.value) {
         c.ok = false;
