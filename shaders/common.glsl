@@ -2,6 +2,9 @@
 // Every number below comes from #defines the generator writes before this
 // file (RS_BINDING_*, RS_RAY_WORDS, RS_RECORD_WORDS, RS_FIELD_<NAME> word
 // offsets, RS_BIT_<NAME> written-mask bits); none is retyped here.
+// RS_LAUNCH_ID and RS_LAUNCH_SIZE are gl_LaunchIDEXT and gl_LaunchSizeEXT, or
+// in raygen run as a compute shader the launch id and size it derives from
+// the dispatch (harness/glsl/emit_compute.h).
 // Optional parts, switched on by the generator only where the stage needs them:
 //   RS_USE_RAYS           the rays buffer (raygen)
 //   RS_USE_TLAS           the acceleration structure (stages that trace)
@@ -13,8 +16,7 @@
 // Launch index of this ray: (z * height + y) * width + x (a 3D launch's z
 // layers one below the other).
 uint rs_launch_index() {
-  return (gl_LaunchIDEXT.z * gl_LaunchSizeEXT.y + gl_LaunchIDEXT.y) * gl_LaunchSizeEXT.x +
-         gl_LaunchIDEXT.x;
+  return (RS_LAUNCH_ID.z * RS_LAUNCH_SIZE.y + RS_LAUNCH_ID.y) * RS_LAUNCH_SIZE.x + RS_LAUNCH_ID.x;
 }
 
 // The texel of this launch's ray in an image `width` texels wide: the

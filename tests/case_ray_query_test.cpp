@@ -37,7 +37,7 @@ std::string tracesCase(const std::string& traces,
 TEST(RayQueryCase, TracesTakesEitherForm) {
   EXPECT_TRUE(parsedCase(tracesCase("ray_query")).pipeline.ray_query);
   EXPECT_FALSE(parsedCase(tracesCase("trace_ray")).pipeline.ray_query);
-  expectError(parse(tracesCase("inline")), 9, "pipeline.traces", "trace_ray or ray_query");
+  expectError(parse(tracesCase("inline")), 9, "pipeline.traces", "must be trace_ray, ray_query");
 }
 
 TEST(RayQueryCase, WhatTheFormCannotExpressIsAnErrorAtTheField) {

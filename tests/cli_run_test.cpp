@@ -482,3 +482,29 @@ TEST(DeviceErrors, TheFailingCaseGetsItsStatusAndTheRunGoesOn) {
 }
 
 }  // namespace
+
+// --filter given twice runs the cases either glob matches, and no more; when
+// neither matches, the error names both.
+TEST(RunFilter, SeveralGlobsRunTheCasesOfEach) {
+  const std::string out = fresh("run-filters");
+  const std::string cases = " --cases " + cli::kCases;
+  // Only the model runs: every case is NotSupported, the run not refused (2).
+  EXPECT_NE(sh(kBin + " run --no-device" + cases +
+                   " --filter 'ray-query/compute-*' --filter 'anyhit/unused-any-hit' --out " + out,
+               out + "/log.txt"),
+            2)
+      << slurp(out + "/log.txt");
+  std::set<std::string> names;
+  const nlohmann::json summary = summaryOf(out);
+  for (const auto& c : summary["cases"]) names.insert(c["name"].get<std::string>());
+  EXPECT_EQ(names, (std::set<std::string>{"anyhit/unused-any-hit",
+                                          "ray-query/compute-any-hit-and-intersection",
+                                          "ray-query/compute-closest-hit-and-miss",
+                                          "ray-query/compute-query-in-loop"}));
+  const std::string none = fresh("run-filters-none");
+  EXPECT_NE(sh(kBin + " run --no-device" + cases + " --filter 'x/*' --filter 'y/*' --out " + none,
+               none + "/log.txt"),
+            0);
+  EXPECT_NE(slurp(none + "/log.txt").find("no case matches 'x/*' or 'y/*'"), std::string::npos)
+      << slurp(none + "/log.txt");
+}

@@ -88,7 +88,7 @@ TEST(GlslControlFlow, ALoopEvaluatesItsCountOnceAndClampsIt) {
   const GeneratedPipeline g = generateGlsl(c, derivePlan(c));
   const std::string& glsl = g.raygen.glsl;
   EXPECT_NE(glsl.find("vec2 v_a[4];"), std::string::npos) << glsl;
-  EXPECT_NE(glsl.find("min(gl_LaunchIDEXT.x, 1024u)"), std::string::npos);
+  EXPECT_NE(glsl.find("min(RS_LAUNCH_ID.x, 1024u)"), std::string::npos);
   EXPECT_NE(glsl.find("v_a[(2u) % uint(v_a.length())]"), std::string::npos);
   const SpirvResult spirv = compileGlsl(glsl, Stage::Raygen);
   EXPECT_TRUE(spirv.error.empty()) << spirv.error;

@@ -31,9 +31,10 @@ Case simpleCase(const std::string& extra_scene = "", const std::string& extra_ra
 }
 
 TEST(FeaturePath, NamesRoundTrip) {
-  for (FeaturePath p : {FeaturePath::Indirect, FeaturePath::Indirect2, FeaturePath::Libraries,
-                        FeaturePath::Clone, FeaturePath::Compact, FeaturePath::Serialize,
-                        FeaturePath::Update, FeaturePath::RayQuery, FeaturePath::Layouts})
+  for (FeaturePath p :
+       {FeaturePath::Indirect, FeaturePath::Indirect2, FeaturePath::Libraries, FeaturePath::Clone,
+        FeaturePath::Compact, FeaturePath::Serialize, FeaturePath::Update, FeaturePath::RayQuery,
+        FeaturePath::RayQueryCompute, FeaturePath::Layouts})
     EXPECT_EQ(featurePathFromName(featurePathName(p)), p) << featurePathName(p);
   EXPECT_FALSE(featurePathFromName("sideways"));
   EXPECT_NE(featurePathNames().find("serialize"), std::string::npos);
@@ -62,6 +63,9 @@ TEST(FeaturePath, EachPathChangesItsOwnField) {
   EXPECT_EQ(updated.scene.blases[0].geometries[0].vertices,
             updated.scene.earlier.front()->blases[0].geometries[0].vertices);
   EXPECT_TRUE(valueOrMessage(throughPath(c, FeaturePath::RayQuery), &why)->pipeline.ray_query);
+  const Case computed = *valueOrMessage(throughPath(c, FeaturePath::RayQueryCompute), &why);
+  EXPECT_TRUE(computed.pipeline.ray_query && computed.pipeline.from_compute);
+  EXPECT_FALSE(valueOrMessage(throughPath(c, FeaturePath::RayQuery), &why)->pipeline.from_compute);
 }
 
 // What the ray query form cannot express keeps a case off the path, named.

@@ -305,6 +305,11 @@ struct Pipeline {
   // R-RQ-EQUIV, glsl/emit_ray_query.h); the other stages stay in the
   // pipeline, unrun.
   bool ray_query = false;
+  // With ray_query: raygen runs as a compute shader (pipeline.traces:
+  // ray_query_compute, --through ray-query-compute): gl_LaunchIDEXT and
+  // gl_LaunchSizeEXT are read from the dispatch (glsl/emit_compute.h), no ray
+  // tracing pipeline is made, and the launch is one vkCmdDispatch.
+  bool from_compute = false;
   // Several raygen groups (pipeline.raygens): `raygen` is group raygen_group,
   // other_raygens the rest in group order. The raygen region's record
   // selects raygen_group (R-RAYGEN-REGION); the others never run.

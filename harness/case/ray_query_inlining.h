@@ -14,6 +14,11 @@ namespace rayspec {
 
 // "" when the case can be traced by ray queries, else what is in the way.
 // `own`: the case asks for it itself (its own pipeline.traces is not a reason).
+// With Pipeline::from_compute, what raygen as a compute shader cannot do too.
 std::string rayQueryObstacle(const Case& c, bool own = false);
+
+// What is in the way of --through ray-query-compute: rayQueryObstacle, and
+// what a compute shader cannot do (callables, shader record blocks).
+std::string computeRayQueryObstacle(const Case& c);
 
 }  // namespace rayspec

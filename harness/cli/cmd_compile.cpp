@@ -24,7 +24,7 @@ void compileCase(const Case& c, CompileCounts& n) {
   const GeneratedPipeline g = generateGlsl(c, derivePlan(c));
   ++n.cases;
   for (const GeneratedShader* s : everyStage(g)) {
-    const SpirvResult r = compileGlsl(s->glsl, s->stage);
+    const SpirvResult r = compileGlsl(s->glsl, s->stage, s->compute);
     ++n.stages;
     if (!r.from_cache && !r.words.empty()) ++n.compiled;
     if (r.words.empty()) {

@@ -25,8 +25,17 @@ void addSelectionOptions(CLI::App* run, RunOptions& run_opt) {
   run->add_option("--device", run_opt.device,
                   "Vulkan device name (substring); default: first with ray tracing");
   run->add_option("--icd", run_opt.icd_files, kIcdOptionHelp)->delimiter(':');
-  run->add_option("--filter", run_opt.filter,
-                  "Run only cases whose name matches this glob (e.g. 'anyhit/*')");
+  // One glob is RunOptions::filter; several are RunOptions::filters.
+  run->add_option_function<std::vector<std::string>>(
+      "--filter",
+      [&run_opt](const std::vector<std::string>& globs) {
+        if (globs.size() == 1)
+          run_opt.filter = globs.front();
+        else
+          run_opt.filters = globs;
+      },
+      "Run only cases whose name matches this glob (e.g. 'anyhit/*'); given again, cases that "
+      "match any of them");
   run->add_option("--out", run_opt.out, "Folder for results bundles and reports")
       ->check(outputFolder())
       ->capture_default_str();

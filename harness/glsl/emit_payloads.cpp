@@ -56,8 +56,11 @@ void emitPayloadVariables(const StageContext& ctx, GlslWriter& out) {
       out.line(payloadTypeName(ctx.c.pipeline.maxPayloadWords()) + " " + resultName(ctx) + ";");
     return;
   }
+  // A compute shader's traces are ray query loops: their payloads are plain.
   for (uint32_t l : ctx.uses.trace_locations)
-    out.line("layout(location = " + std::to_string(outgoingLocation(ctx, l)) + ") rayPayloadEXT " +
+    out.line((ctx.compute ? std::string()
+                          : "layout(location = " + std::to_string(outgoingLocation(ctx, l)) +
+                                ") rayPayloadEXT ") +
              payloadTypeName(ctx.c.pipeline.payloadWords(l)) + " " + outgoingPayload(l) + ";");
   out.line(payloadTypeName(ctx.c.pipeline.maxPayloadWords()) + " " + resultName(ctx) +
            ";  // the last trace's payload");

@@ -63,6 +63,7 @@ StageContext inlinedContext(const StageContext& raygen, Stage stage, uint32_t in
   ctx.attribute_words = words;
   ctx.inlined = true;
   ctx.group = index;
+  ctx.compute = raygen.compute;
   return ctx;
 }
 

@@ -12,6 +12,9 @@ GeneratedPipeline generateGlsl(const Case& c, const Plan& plan) {
   GeneratedPipeline g;
   g.raygen = emitStage(c, plan, Stage::Raygen, Pipeline::shaderName(Stage::Raygen, 0), p.raygen);
   g.raygen_group = p.raygen_group;
+  // Run as a compute shader, raygen is the whole program: no ray tracing
+  // pipeline holds the other stages.
+  if (p.from_compute) return g;
   for (size_t i = 0; i < p.other_raygens.size(); ++i)
     g.other_raygens.push_back(emitStage(
         c, plan, Stage::Raygen, Pipeline::shaderName(Stage::Raygen, i, true), p.other_raygens[i]));

@@ -20,6 +20,9 @@ struct GeneratedShader {
   // (constant_id, 32-bit value) of the specialization constants this shader
   // sets (pipeline.specialize); the others keep their defaults.
   std::vector<std::pair<uint32_t, uint32_t>> specialization;
+  // Raygen emitted as a compute shader (Pipeline::from_compute,
+  // glsl/emit_compute.h): compiled as one, run by a compute pipeline.
+  bool compute = false;
 };
 
 struct GeneratedGroup {

@@ -56,6 +56,9 @@ struct StageContext {
   // report calls the group's report function. `group`: its hit group.
   bool inlined = false;
   uint32_t group = 0;
+  // Raygen emitted as a compute shader (Pipeline::from_compute,
+  // glsl/emit_compute.h); inlined programs are emitted into it.
+  bool compute = false;
 };
 
 }  // namespace rayspec

@@ -62,6 +62,15 @@ Result<void> tracedByRayQuery(Case& c) {
   return {};
 }
 
+// Raygen, its traces ray query loops, run as a compute shader.
+Result<void> tracedFromCompute(Case& c) {
+  if (std::string obstacle = computeRayQueryObstacle(c); !obstacle.empty())
+    return errorMessage(std::move(obstacle));
+  c.pipeline.ray_query = true;
+  c.pipeline.from_compute = true;
+  return {};
+}
+
 // Every build input laid out another way: instances behind pointers, every
 // input at offsets behind junk, vertices 20 bytes apart (fits every vertex
 // format: at least 12 bytes, a multiple of 4) and boxes 40. Not
@@ -119,6 +128,9 @@ Result<Case> throughPath(const Case& c, FeaturePath path) {
       break;
     case FeaturePath::RayQuery:
       RAYSPEC_TRY_VOID(tracedByRayQuery(out));
+      break;
+    case FeaturePath::RayQueryCompute:
+      RAYSPEC_TRY_VOID(tracedFromCompute(out));
       break;
     case FeaturePath::Layouts:
       RAYSPEC_TRY_VOID(laidOut(out));

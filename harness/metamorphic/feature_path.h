@@ -27,6 +27,8 @@ namespace rayspec {
   X(Update, "update")                                                                        \
   /* every trace a ray query loop in raygen (case/ray_query_inlining.h) */                   \
   X(RayQuery, "ray-query")                                                                   \
+  /* the same loops in raygen run as a compute shader, one vkCmdDispatch */                  \
+  X(RayQueryCompute, "ray-query-compute")                                                    \
   /* build inputs behind pointers, at offsets, at padded strides (scene.build layouts) */    \
   X(Layouts, "layouts")
 enum class FeaturePath { RAYSPEC_FEATURE_PATHS(RAYSPEC_ENUMERATOR) };

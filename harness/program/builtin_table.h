@@ -162,17 +162,17 @@
     "the world ray direction the query was initialized with")
 
 #define RAYSPEC_BUILTINS(X)                                                                        \
-  X(LaunchX, "launch_id_x", Uint, kAllStages, "gl_LaunchIDEXT.x", "gl_LaunchIDEXT.x",              \
+  X(LaunchX, "launch_id_x", Uint, kAllStages, "RS_LAUNCH_ID.x", "RS_LAUNCH_ID.x",                  \
     "x of gl_LaunchIDEXT")                                                                         \
-  X(LaunchY, "launch_id_y", Uint, kAllStages, "gl_LaunchIDEXT.y", "gl_LaunchIDEXT.y",              \
+  X(LaunchY, "launch_id_y", Uint, kAllStages, "RS_LAUNCH_ID.y", "RS_LAUNCH_ID.y",                  \
     "y of gl_LaunchIDEXT")                                                                         \
-  X(LaunchW, "launch_size_x", Uint, kAllStages, "gl_LaunchSizeEXT.x", "gl_LaunchSizeEXT.x",        \
+  X(LaunchW, "launch_size_x", Uint, kAllStages, "RS_LAUNCH_SIZE.x", "RS_LAUNCH_SIZE.x",            \
     "x of gl_LaunchSizeEXT")                                                                       \
-  X(LaunchH, "launch_size_y", Uint, kAllStages, "gl_LaunchSizeEXT.y", "gl_LaunchSizeEXT.y",        \
+  X(LaunchH, "launch_size_y", Uint, kAllStages, "RS_LAUNCH_SIZE.y", "RS_LAUNCH_SIZE.y",            \
     "y of gl_LaunchSizeEXT")                                                                       \
-  X(LaunchZ, "launch_id_z", Uint, kAllStages, "gl_LaunchIDEXT.z", "gl_LaunchIDEXT.z",              \
+  X(LaunchZ, "launch_id_z", Uint, kAllStages, "RS_LAUNCH_ID.z", "RS_LAUNCH_ID.z",                  \
     "z of gl_LaunchIDEXT (rays.launch)")                                                           \
-  X(LaunchD, "launch_size_z", Uint, kAllStages, "gl_LaunchSizeEXT.z", "gl_LaunchSizeEXT.z",        \
+  X(LaunchD, "launch_size_z", Uint, kAllStages, "RS_LAUNCH_SIZE.z", "RS_LAUNCH_SIZE.z",            \
     "z of gl_LaunchSizeEXT (rays.launch)")                                                         \
   X(Primitive, "primitive_id", Uint, I | A | C, "uint(gl_PrimitiveID)",                            \
     "uint(rayQueryGetIntersectionPrimitiveIndexEXT(rs_rq, $c))", "gl_PrimitiveID")                 \

@@ -137,10 +137,22 @@ int setupFailed(const Error& why) {
   return kExitSetup;
 }
 
+namespace {
+
+// The glob, or the globs, --filter gave: "a/*' or 'b/*".
+std::string filterText(const RunOptions& opt) {
+  if (opt.filters.empty()) return opt.filter;
+  std::string text;
+  for (const std::string& g : opt.filters) text += (text.empty() ? "" : "' or '") + g;
+  return text;
+}
+
+}  // namespace
+
 Result<std::vector<CaseFile>> selectedCaseFiles(const RunOptions& opt) {
   std::vector<CaseFile> files = caseFiles(opt);
   if (files.empty())
-    return errorMessage("no case matches '" + opt.filter + "' in " + opt.cases_dir);
+    return errorMessage("no case matches '" + filterText(opt) + "' in " + opt.cases_dir);
   RAYSPEC_TRY_VOID(optionError(opt));
   return files;
 }

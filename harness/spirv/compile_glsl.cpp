@@ -25,9 +25,8 @@ void initializeOnce() {
 }
 
 // glslang front end + SPIR-V back end. Fills words, or error (quoting lines).
-void glslToSpirv(const std::string& glsl, Stage stage, std::vector<uint32_t>& words,
+void glslToSpirv(const std::string& glsl, EShLanguage lang, std::vector<uint32_t>& words,
                  std::string& error) {
-  const EShLanguage lang = glslangStage(stage);
   glslang::TShader shader(lang);
   const char* text = glsl.c_str();
   setUpShader(shader, &text, lang);
@@ -105,22 +104,22 @@ std::string validate(const std::vector<uint32_t>& words) {
 
 }  // namespace
 
-SpirvResult compileGlsl(const std::string& glsl, Stage stage) {
+SpirvResult compileGlsl(const std::string& glsl, Stage stage, bool compute) {
   SpirvResult result;
-  const std::string key = spirvCacheKey(glsl, stage);
+  const std::string key = spirvCacheKey(glsl, stage, compute);
   if (!key.empty() && spirvCacheLookup(key, result.words)) {
     result.from_cache = true;
     return result;
   }
   initializeOnce();
-  glslToSpirv(glsl, stage, result.words, result.error);
+  glslToSpirv(glsl, glslangStage(stage, compute), result.words, result.error);
   if (!result.error.empty()) {
     result.words.clear();
     return result;
   }
   const std::string invalid = validate(result.words);
   if (!invalid.empty()) {
-    result.error = invalid + describeSpirvFailure(glsl, stage);
+    result.error = invalid + describeSpirvFailure(glsl, stage, compute);
     result.words.clear();
     return result;
   }

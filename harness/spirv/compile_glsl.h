@@ -17,7 +17,8 @@ struct SpirvResult {
   bool from_cache = false;
 };
 
-SpirvResult compileGlsl(const std::string& glsl, Stage stage);
+// `compute`: the text is raygen run as a compute shader (glsl/emit_compute.h).
+SpirvResult compileGlsl(const std::string& glsl, Stage stage, bool compute = false);
 
 // Folder for the on-disk cache (created when missing); empty disables it.
 void setSpirvCacheDir(const std::string& dir);

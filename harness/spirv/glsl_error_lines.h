@@ -16,6 +16,6 @@ std::string quoteGlslLines(const std::string& log, const std::string& glsl);
 
 // For a module SPIRV-Tools rejected: recompiles with debug line info,
 // validates again and names the GLSL line of the failing instruction.
-std::string describeSpirvFailure(const std::string& glsl, Stage stage);
+std::string describeSpirvFailure(const std::string& glsl, Stage stage, bool compute = false);
 
 }  // namespace rayspec

@@ -79,8 +79,8 @@ void writeEntry(const fs::path& dir, const std::string& key, const std::vector<u
 
 }  // namespace
 
-std::string spirvCacheKey(const std::string& glsl, Stage stage) {
-  const char s = static_cast<char>(stage);
+std::string spirvCacheKey(const std::string& glsl, Stage stage, bool compute) {
+  const char s = compute ? 'C' : static_cast<char>(stage);
   const Result<std::string> key = sha256Hex({kCacheVersion, std::string_view(&s, 1), glsl});
   return key ? *key : std::string();
 }

@@ -20,7 +20,8 @@ constexpr uint64_t kMaxCachedModuleBytes = 16ull << 20;
 // SHA-256 of a version tag, the stage and the GLSL text (64 hex digits): a
 // module found under it was compiled from that text. "" when libcrypto
 // cannot make one: the cache is not used then (compileGlsl).
-std::string spirvCacheKey(const std::string& glsl, Stage stage);
+// `compute` (raygen run as a compute shader) is part of the stage.
+std::string spirvCacheKey(const std::string& glsl, Stage stage, bool compute = false);
 std::string spirvCacheFileName(const std::string& key);  // "<key>.spv"
 std::string spirvCacheSumName(const std::string& key);   // "<key>.sum"
 

@@ -15,8 +15,7 @@ namespace {
 constexpr uint32_t kOpLine = 8;
 constexpr uint32_t kHeaderWords = 5;
 
-std::vector<uint32_t> debugBuild(const std::string& glsl, Stage stage) {
-  const EShLanguage lang = glslangStage(stage);
+std::vector<uint32_t> debugBuild(const std::string& glsl, EShLanguage lang) {
   glslang::TShader shader(lang);
   const char* text = glsl.c_str();
   setUpShader(shader, &text, lang);
@@ -50,8 +49,8 @@ uint32_t lineOfInstruction(const std::vector<uint32_t>& words, size_t index) {
 
 }  // namespace
 
-std::string describeSpirvFailure(const std::string& glsl, Stage stage) {
-  const std::vector<uint32_t> words = debugBuild(glsl, stage);
+std::string describeSpirvFailure(const std::string& glsl, Stage stage, bool compute) {
+  const std::vector<uint32_t> words = debugBuild(glsl, glslangStage(stage, compute));
   if (words.empty()) return {};
   spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_2);
   size_t index = 0;

@@ -8,7 +8,9 @@
 
 namespace rayspec {
 
-inline EShLanguage glslangStage(Stage s) {
+// `compute`: raygen run as a compute shader (glsl/emit_compute.h).
+inline EShLanguage glslangStage(Stage s, bool compute = false) {
+  if (compute) return EShLangCompute;
   switch (s) {
     case Stage::Raygen:
       return EShLangRayGen;

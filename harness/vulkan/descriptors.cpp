@@ -7,10 +7,12 @@
 namespace rayspec {
 namespace {
 
-constexpr VkShaderStageFlags kRayTracingStages =
+// Compute too: raygen may run as a compute shader (Pipeline::from_compute).
+constexpr VkShaderStageFlags kShaderStages =
     VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_MISS_BIT_KHR |
     VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR | VK_SHADER_STAGE_ANY_HIT_BIT_KHR |
-    VK_SHADER_STAGE_INTERSECTION_BIT_KHR | VK_SHADER_STAGE_CALLABLE_BIT_KHR;
+    VK_SHADER_STAGE_INTERSECTION_BIT_KHR | VK_SHADER_STAGE_CALLABLE_BIT_KHR |
+    VK_SHADER_STAGE_COMPUTE_BIT;
 
 // An array of top levels for the TLAS binding, one descriptor elsewhere.
 uint32_t descriptorCount(const DescriptorItem& it) {
@@ -30,7 +32,7 @@ Result<VkDescriptorSetLayout> createSetLayout(const VulkanContext& ctx,
     b.binding = it.binding;
     b.descriptorType = it.type;
     b.descriptorCount = descriptorCount(it);
-    b.stageFlags = kRayTracingStages;
+    b.stageFlags = kShaderStages;
     bindings.push_back(b);
   }
   VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};

@@ -12,14 +12,14 @@ namespace {
 
 Result<CompiledShader> compileOne(const GeneratedShader& g, StepCosts* costs) {
   const auto start = std::chrono::steady_clock::now();
-  SpirvResult r = compileGlsl(g.glsl, g.stage);
+  SpirvResult r = compileGlsl(g.glsl, g.stage, g.compute);
   if (costs)
     costs->add(r.from_cache ? CostStep::SpirvCacheHit : CostStep::SpirvCompile,
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   if (r.words.empty())
     return errorOf(ErrorKind::ShaderCompile,
                    g.name + ": " + (r.error.empty() ? "no SPIR-V" : r.error));
-  return CompiledShader{g.stage, g.name, std::move(r.words), g.specialization};
+  return CompiledShader{g.stage, g.name, std::move(r.words), g.specialization, g.compute};
 }
 
 VkShaderStageFlagBits vkStage(Stage s) {
@@ -56,7 +56,7 @@ class StageList {
     VkDevice device = ctx_.device;
     local_.add([device, module] { vkDestroyShaderModule(device, module, nullptr); });
     VkPipelineShaderStageCreateInfo stage{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-    stage.stage = vkStage(s.stage);
+    stage.stage = s.compute ? VK_SHADER_STAGE_COMPUTE_BIT : vkStage(s.stage);
     stage.module = module;
     stage.pName = "main";
     stage.pSpecializationInfo = specialization(s);
@@ -174,6 +174,23 @@ Result<VkPipelineLayout> createPipelineLayout(const VulkanContext& ctx,
   VkDevice device = ctx.device;
   cleanup.add([device, layout] { vkDestroyPipelineLayout(device, layout, nullptr); });
   return layout;
+}
+
+Result<VkPipeline> createComputePipeline(const VulkanContext& ctx, const CompiledShader& shader,
+                                         VkPipelineLayout layout, Cleanup& cleanup) {
+  Cleanup modules;
+  StageList stages(ctx, modules);
+  RAYSPEC_TRY_VOID(stages.add(shader));
+  VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  info.stage = stages.stages().front();
+  info.layout = layout;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  RAYSPEC_TRY_VOID(
+      vkCheck(vkCreateComputePipelines(ctx.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+              "vkCreateComputePipelines"));
+  VkDevice device = ctx.device;
+  cleanup.add([device, pipeline] { vkDestroyPipeline(device, pipeline, nullptr); });
+  return pipeline;
 }
 
 Result<VkPipeline> createPipelineObject(const VulkanContext& ctx, const CompiledPipeline& compiled,

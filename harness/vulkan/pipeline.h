@@ -23,6 +23,7 @@ struct CompiledShader {
   std::string name;
   std::vector<uint32_t> spirv;
   std::vector<std::pair<uint32_t, uint32_t>> specialization;  // GeneratedShader's
+  bool compute = false;                                       // GeneratedShader's
 };
 
 struct CompiledGroup {
@@ -56,6 +57,11 @@ Result<VkPipelineLayout> createPipelineLayout(const VulkanContext& ctx,
 // shaders/payload.glsl (RsPayload 24 bytes, RsCallData 48, each with its
 // type's words: pipeline.payloads, pipeline.callable_data).
 uint32_t interfacePayloadBytes(const Pipeline& p);
+
+// Raygen run as a compute shader (Pipeline::from_compute): its compute
+// pipeline, or the Device error.
+Result<VkPipeline> createComputePipeline(const VulkanContext& ctx, const CompiledShader& shader,
+                                         VkPipelineLayout layout, Cleanup& cleanup);
 
 // One vkCreateRayTracingPipelinesKHR call: the case groups `groups` (ids in
 // sbt_layout.h's group order) in that order, linking `libraries` when `linked`

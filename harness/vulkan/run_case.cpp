@@ -34,6 +34,65 @@ struct CaseScope {
   Cleanup cleanup;
 };
 
+// What the launch binds: a ray tracing pipeline with its SBT (and stack
+// size), or raygen's compute pipeline (no SBT).
+struct Launch {
+  TraceBinding bound;
+  SbtBuffer sbt;
+};
+
+// The case's ray tracing pipeline and SBT; the library handles compared where
+// the context asks for it.
+Result<Launch> rayTracingLaunch(const VulkanContext& ctx, const Case& c,
+                                const CompiledPipeline& compiled, VkPipelineLayout layout,
+                                Cleanup& cleanup, Results& r) {
+  StepTimer pipeline_time(r.cost, CostStep::PipelineCreation);
+  RAYSPEC_TRY(const RayTracingPipeline pipeline,
+              createRayTracingPipeline(ctx, compiled, c.pipeline, layout, cleanup));
+  if (ctx.library_group_handles) {
+    RAYSPEC_TRY(r.device_findings,
+                libraryHandleMismatches(ctx, pipeline, &r.library_handles_compared));
+  }
+  Launch launch;
+  launch.bound = {pipeline.pipeline, layout, VK_NULL_HANDLE, std::nullopt};
+  if (c.pipeline.callable_depth)
+    launch.bound.stack_size =
+        pipelineStackSize(queryShaderStackSizes(ctx, compiled, c.pipeline, pipeline),
+                          c.pipeline.max_recursion, *c.pipeline.callable_depth);
+  pipeline_time.stop();
+  StepTimer sbt_time(r.cost, CostStep::Sbt);
+  RAYSPEC_TRY(launch.sbt, createSbtBuffer(ctx, c.pipeline, pipeline, cleanup));
+  return launch;
+}
+
+// Raygen's compute pipeline (Pipeline::from_compute).
+Result<Launch> computeLaunch(const VulkanContext& ctx, const CompiledPipeline& compiled,
+                             VkPipelineLayout layout, Cleanup& cleanup, Results& r) {
+  StepTimer pipeline_time(r.cost, CostStep::PipelineCreation);
+  Launch launch;
+  RAYSPEC_TRY(launch.bound.pipeline, createComputePipeline(ctx, compiled.raygen, layout, cleanup));
+  launch.bound.layout = layout;
+  return launch;
+}
+
+// Clears the images, launches (trace or dispatch), copies the outputs back
+// and waits for the device.
+Result<void> recordAndSubmit(const VulkanContext& ctx, const Case& c, const Launch& launch,
+                             const CaseBuffers& buffers, Cleanup& cleanup, Results& r) {
+  StepTimer trace_time(r.cost, CostStep::Trace);
+  RAYSPEC_TRY(const VkCommandBuffer cmd, beginCommands(ctx, cleanup));
+  recordImageClears(cmd, buffers.images);
+  if (c.pipeline.from_compute) {
+    recordDispatch(cmd, launch.bound, c.rays);
+  } else {
+    RAYSPEC_TRY_VOID(
+        recordTrace(ctx, cmd, launch.bound, launch.sbt.layout, launch.sbt.base, c.rays, cleanup));
+  }
+  recordReadback(cmd, buffers.images, buffers.image_readback, buffers.image_extent.width,
+                 buffers.image_extent.height);
+  return submitAndWait(ctx, cmd, kTraceTimeoutNs);
+}
+
 }  // namespace
 
 Result<void> runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results& r) {
@@ -68,34 +127,14 @@ Result<void> runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, 
   RAYSPEC_TRY(const VkPipelineLayout pipeline_layout,
               createPipelineLayout(ctx, set_layout, cleanup));
   layout_time.stop();
-  StepTimer pipeline_time(r.cost, CostStep::PipelineCreation);
-  RAYSPEC_TRY(const RayTracingPipeline pipeline,
-              createRayTracingPipeline(ctx, compiled, c.pipeline, pipeline_layout, cleanup));
-  if (ctx.library_group_handles) {
-    RAYSPEC_TRY(r.device_findings,
-                libraryHandleMismatches(ctx, pipeline, &r.library_handles_compared));
-  }
-  std::optional<VkDeviceSize> stack_size;
-  if (c.pipeline.callable_depth)
-    stack_size = pipelineStackSize(queryShaderStackSizes(ctx, compiled, c.pipeline, pipeline),
-                                   c.pipeline.max_recursion, *c.pipeline.callable_depth);
-  pipeline_time.stop();
-  StepTimer sbt_time(r.cost, CostStep::Sbt);
-  RAYSPEC_TRY(const SbtBuffer sbt, createSbtBuffer(ctx, c.pipeline, pipeline, cleanup));
-  sbt_time.stop();
+  RAYSPEC_TRY(Launch launch, c.pipeline.from_compute
+                                 ? computeLaunch(ctx, compiled, pipeline_layout, cleanup, r)
+                                 : rayTracingLaunch(ctx, c, compiled, pipeline_layout, cleanup, r));
   StepTimer set_time(r.cost, CostStep::Buffers);
-  RAYSPEC_TRY(const VkDescriptorSet set, createDescriptorSet(ctx, set_layout, items, cleanup));
+  RAYSPEC_TRY(launch.bound.set, createDescriptorSet(ctx, set_layout, items, cleanup));
   set_time.stop();
 
-  StepTimer trace_time(r.cost, CostStep::Trace);
-  RAYSPEC_TRY(const VkCommandBuffer cmd, beginCommands(ctx, cleanup));
-  recordImageClears(cmd, buffers.images);
-  RAYSPEC_TRY_VOID(recordTrace(ctx, cmd, {pipeline.pipeline, pipeline_layout, set, stack_size},
-                               sbt.layout, sbt.base, c.rays, cleanup));
-  recordReadback(cmd, buffers.images, buffers.image_readback, buffers.image_extent.width,
-                 buffers.image_extent.height);
-  RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd, kTraceTimeoutNs));
-  trace_time.stop();
+  RAYSPEC_TRY_VOID(recordAndSubmit(ctx, c, launch, buffers, cleanup, r));
   StepTimer read_time(r.cost, CostStep::ReadBack);
   readResults(buffers, plan, c.rays.width, c.rays.height, r);
   return {};

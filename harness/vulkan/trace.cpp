@@ -1,9 +1,15 @@
 #include "vulkan/trace.h"
 
+#include "glsl/emit_compute.h"
 #include "vulkan/vk_check.h"
 
 namespace rayspec {
 namespace {
+
+// The stages that write the outputs: ray tracing shaders, or raygen run as a
+// compute shader (Pipeline::from_compute).
+constexpr VkPipelineStageFlags kShaderStages =
+    VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
 
 VkStridedDeviceAddressRegionKHR region(VkDeviceAddress base, const SbtRegion& r) {
   if (r.size == 0) return {0, 0, 0};
@@ -42,9 +48,8 @@ void recordImageClears(VkCommandBuffer cmd, const std::vector<StorageImage>& ima
   VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
   for (const StorageImage& img : images)
     vkCmdClearColorImage(cmd, img.image, VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                       VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, 0, 0, nullptr, 0, nullptr,
-                       static_cast<uint32_t>(to_shader.size()), to_shader.data());
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, kShaderStages, 0, 0, nullptr, 0,
+                       nullptr, static_cast<uint32_t>(to_shader.size()), to_shader.data());
 }
 
 Result<void> recordTrace(const VulkanContext& ctx, VkCommandBuffer cmd, const TraceBinding& bound,
@@ -98,12 +103,20 @@ Result<void> recordTrace(const VulkanContext& ctx, VkCommandBuffer cmd, const Tr
   return {};
 }
 
+void recordDispatch(VkCommandBuffer cmd, const TraceBinding& bound, const Rays& rays) {
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, bound.pipeline);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, bound.layout, 0, 1, &bound.set, 0,
+                          nullptr);
+  const std::array<uint32_t, 3> groups = computeGroups(rays.launchSize());
+  if (groups[0] != 0) vkCmdDispatch(cmd, groups[0], groups[1], groups[2]);
+}
+
 void recordReadback(VkCommandBuffer cmd, const std::vector<StorageImage>& images,
                     const std::vector<Buffer>& image_buffers, uint32_t width, uint32_t height) {
   VkMemoryBarrier after_trace{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   after_trace.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
   after_trace.dstAccessMask = VK_ACCESS_HOST_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+  vkCmdPipelineBarrier(cmd, kShaderStages,
                        VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1,
                        &after_trace, 0, nullptr, 0, nullptr);
   if (images.empty()) return;

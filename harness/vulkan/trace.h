@@ -37,6 +37,12 @@ Result<void> recordTrace(const VulkanContext& ctx, VkCommandBuffer cmd, const Tr
                          const SbtLayout& sbt, VkDeviceAddress sbt_base, const Rays& rays,
                          Cleanup& cleanup);
 
+// Raygen run as a compute shader (Pipeline::from_compute): binds `bound`'s
+// compute pipeline and set 0 and dispatches the groups that cover
+// rays.launch (glsl/emit_compute.h); whatever rays.command says, the launch
+// is one vkCmdDispatch.
+void recordDispatch(VkCommandBuffer cmd, const TraceBinding& bound, const Rays& rays);
+
 // Shader writes -> host reads, and each image copied into its host buffer
 // (tightly packed rows).
 void recordReadback(VkCommandBuffer cmd, const std::vector<StorageImage>& images,
