@@ -93,6 +93,24 @@ TEST(Move, BothSidesRunTheMovedCaseAndAFaultStillFails) {
   EXPECT_EQ(readDeqpCsv(f.dir + "/fault/results.csv")["move/world-origin"], "Fail");
 }
 
+// R-PREC both ways: far from the origin the object-space origin is judged to
+// the size of the terms that cancelled in it (model/model_builtins.h), so a
+// device's rounding passes and a wrong built-in still fails. The suite's
+// builtins/closest-hit-and-miss (turned, scaled instances; closest-hit
+// records the object ray origin) moved 2048 away: lavapipe's origins differ
+// from the model's by some 1.2e-4 there, an ulp of 2048.
+TEST(Move, AFarObjectOriginIsJudgedToItsTermsNotItsResult) {
+  const std::string dir = fresh("move-far");
+  const std::string run = kBin + " run --no-validation --case " + cli::kCases +
+                          "builtins/closest-hit-and-miss.yaml --move=z,x,y,1024,-2048,0";
+  ASSERT_EQ(sh(run + " --out " + dir + "/moved", dir + "/moved.txt"), 0)
+      << slurp(dir + "/moved.txt");
+  EXPECT_EQ(readDeqpCsv(dir + "/moved/results.csv")["builtins/closest-hit-and-miss"], "Pass");
+  ASSERT_EQ(sh(run + " --plant-fault builtin-wrong --out " + dir + "/fault", dir + "/fault.txt"), 1)
+      << slurp(dir + "/fault.txt");
+  EXPECT_EQ(readDeqpCsv(dir + "/fault/results.csv")["builtins/closest-hit-and-miss"], "Fail");
+}
+
 // A baseline's known failure of a case the motion cannot move is not an
 // unexpected pass (the case did not run); a bad motion is exit 2.
 TEST(Move, ANotMovedCaseIsNeitherAPassNorAnUnexpectedPass) {

@@ -497,10 +497,10 @@ TEST(RunFilter, SeveralGlobsRunTheCasesOfEach) {
   std::set<std::string> names;
   const nlohmann::json summary = summaryOf(out);
   for (const auto& c : summary["cases"]) names.insert(c["name"].get<std::string>());
-  EXPECT_EQ(names, (std::set<std::string>{"anyhit/unused-any-hit",
-                                          "ray-query/compute-any-hit-and-intersection",
-                                          "ray-query/compute-closest-hit-and-miss",
-                                          "ray-query/compute-query-in-loop"}));
+  EXPECT_EQ(names,
+            (std::set<std::string>{
+                "anyhit/unused-any-hit", "ray-query/compute-any-hit-and-intersection",
+                "ray-query/compute-closest-hit-and-miss", "ray-query/compute-query-in-loop"}));
   const std::string none = fresh("run-filters-none");
   EXPECT_NE(sh(kBin + " run --no-device" + cases + " --filter 'x/*' --filter 'y/*' --out " + none,
                none + "/log.txt"),

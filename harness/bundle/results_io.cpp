@@ -154,6 +154,9 @@ void writeRayNotes(const Results& r, json& j) {
                               {"leak_answers", candidatesJson(a.leak_answers)}});
   j["t_bounds"] = json::array();
   for (const TBound& b : r.t_bounds) j["t_bounds"].push_back({{"ray", b.ray}, {"bound", b.bound}});
+  j["object_origin_bounds"] = json::array();
+  for (const TBound& b : r.object_origin_bounds)
+    j["object_origin_bounds"].push_back({{"ray", b.ray}, {"bound", b.bound}});
   j["undefined"] = json::array();
   for (const UndefinedRay& u : r.undefined)
     j["undefined"].push_back(
@@ -331,6 +334,10 @@ Result<void> readRayNotes(const json& j, FieldReader& field, Results& r) {
   if (j.contains("t_bounds"))
     for (const json& jb : field(j, "t_bounds"))
       r.t_bounds.push_back({field(jb, "t_bounds.ray"), field(jb, "t_bounds.bound")});
+  if (j.contains("object_origin_bounds"))
+    for (const json& jb : field(j, "object_origin_bounds"))
+      r.object_origin_bounds.push_back(
+          {field(jb, "object_origin_bounds.ray"), field(jb, "object_origin_bounds.bound")});
   if (j.contains("undefined"))
     for (const json& ju : field(j, "undefined")) {
       UndefinedRay u;

@@ -114,7 +114,7 @@ bool tOfALegalHit(const RayAmbiguity& a, const uint32_t* d, float t_bound) {
 
 void checkAmbiguousShared(const Case& c, const TraceShape& shape, const RayAmbiguity& a,
                           const uint32_t* d, const uint32_t* m,
-                          const std::vector<const RecordField*>& fields, float t_bound,
+                          const std::vector<const RecordField*>& fields, const RayBounds& bounds,
                           std::map<std::string, FindingBuilder>& wrongs) {
   const std::string why =
       " on a numerically ambiguous ray (" + std::string(ambiguityReasonName(a.reason)) + ")";
@@ -152,7 +152,7 @@ void checkAmbiguousShared(const Case& c, const TraceShape& shape, const RayAmbig
   for (const RecordField* f : fields)
     if (same_kind && !f->automatic && written(d, recordFieldIndex(f->name)) &&
         written(m, recordFieldIndex(f->name)) && sameForEveryAnswer(c, f->name) &&
-        !sameField(*f, d, m, t_bound))
+        !sameField(*f, d, m, bounds))
       addWrong(wrongs, std::string("every answer ") + f->name, "R-BUILTIN",
                std::string("per-ray field '") + f->name +
                    "' differs from the model's, though every answer of the kind taken (hit or "
@@ -163,7 +163,7 @@ void checkAmbiguousShared(const Case& c, const TraceShape& shape, const RayAmbig
       (d_chit && m_chit && sameIdentity(d, m)) || (d_miss && m_miss && !d_chit && !m_chit);
   if (same_answer && answerDecidesRecord(c)) {
     for (const RecordField* f : fields)
-      if (!sameField(*f, d, m, t_bound))
+      if (!sameField(*f, d, m, bounds))
         addWrong(wrongs, std::string("same answer ") + f->name, "R-PREC",
                  std::string("per-ray field '") + f->name +
                      "' differs from the model's where the device took the model's own answer" +
@@ -172,7 +172,7 @@ void checkAmbiguousShared(const Case& c, const TraceShape& shape, const RayAmbig
     return;
   }
   if (d_chit && m_chit && legalTKnown(a.reason) && written(d, recordFieldIndex("hit_t")) &&
-      written(m, recordFieldIndex("hit_t")) && !tOfALegalHit(a, d, t_bound))
+      written(m, recordFieldIndex("hit_t")) && !tOfALegalHit(a, d, bounds.t))
     addWrong(wrongs, "legal hit_t", "R-PREC",
              "hit_t is the t of no legal hit that fits the recorded identity" + why, a.ray);
 }

@@ -51,9 +51,15 @@ uint32_t fieldWord(const uint32_t* rec, const char* name);
 bool hitFits(const uint32_t* rec, const Candidate& k);
 // The model's wider t bound of a ray (TBound), 0 when none.
 float tBound(const std::map<uint32_t, float>& t_bounds, uint32_t ray);
+// What the model widens one ray's tolerances to (Results::t_bounds,
+// object_origin_bounds); 0: the field's own tolerance.
+struct RayBounds {
+  float t = 0;              // hit_t and ray_tmax
+  float object_origin = 0;  // object_ray_origin
+};
 // One field of one ray as the model has it: written alike, and equal (floats
-// within the field's tolerance, hit_t and ray_tmax widened to t_bound).
-bool sameField(const RecordField& f, const uint32_t* d, const uint32_t* m, float t_bound);
+// within the field's tolerance, widened to the ray's bounds).
+bool sameField(const RecordField& f, const uint32_t* d, const uint32_t* m, const RayBounds& bounds);
 
 // Collects the rays breaking one rule into one finding.
 struct FindingBuilder {
@@ -77,7 +83,7 @@ struct FindingBuilder {
 // `fields`: the record fields compared on clear rays.
 void checkAmbiguousShared(const Case& c, const TraceShape& shape, const RayAmbiguity& a,
                           const uint32_t* d, const uint32_t* m,
-                          const std::vector<const RecordField*>& fields, float t_bound,
+                          const std::vector<const RecordField*>& fields, const RayBounds& bounds,
                           std::map<std::string, FindingBuilder>& wrongs);
 
 }  // namespace rayspec

@@ -105,8 +105,9 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
   const size_t rays = device.records.size() / words;
   const auto ambiguous = ambiguityByRay(model);
   // R-PREC: clear rays whose t the model bounds more widely than the default.
-  std::map<uint32_t, float> t_bounds;
+  std::map<uint32_t, float> t_bounds, origin_bounds;
   for (const TBound& b : model.t_bounds) t_bounds[b.ray] = b.bound;
+  for (const TBound& b : model.object_origin_bounds) origin_bounds[b.ray] = b.bound;
 
   const std::vector<const RecordField*> fields = comparedRecordFields(plan);
 
@@ -130,17 +131,17 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
     const uint32_t* m = &model.records[i * words];
     const uint32_t ray = static_cast<uint32_t>(i);
     if (undefined.count(ray)) continue;  // R-UB: never judged
-    const float t_bound = tBound(t_bounds, ray);
+    const RayBounds bounds{tBound(t_bounds, ray), tBound(origin_bounds, ray)};
     const auto repeated = repeat.find(ray);
     const FieldMask repeat_fields = repeated == repeat.end() ? 0 : repeated->second;
     if (const auto it = ambiguous.find(ray); it != ambiguous.end()) {
       if (repeat_fields) continue;  // its legal answers and what repetition changes: not judged
       checkAmbiguous(c, *it->second, d, wrongs, leak, passed);
-      checkAmbiguousShared(c, shape, *it->second, d, m, fields, t_bound, wrongs);
+      checkAmbiguousShared(c, shape, *it->second, d, m, fields, bounds, wrongs);
       continue;
     }
     for (const RecordField* f : fields) {
-      if ((repeat_fields & fieldBit(f->index)) || sameField(*f, d, m, t_bound)) continue;
+      if ((repeat_fields & fieldBit(f->index)) || sameField(*f, d, m, bounds)) continue;
       FindingBuilder& b = mismatches[f->name];
       if (b.finding.message.empty())
         b.finding = {

@@ -32,11 +32,12 @@ float tBound(const std::map<uint32_t, float>& t_bounds, uint32_t ray) {
 
 namespace {
 
-// Each field's tolerance by field index, and whether the model's t bound
-// widens it (hit_t, ray_tmax): looked up once, not per ray.
+// Each field's tolerance by field index, and which of the model's bounds
+// widens it (hit_t, ray_tmax: t; object_ray_origin): looked up once, not per ray.
 struct FieldTolerance {
   Tolerance tol;
   bool widened_by_t_bound;
+  bool widened_by_origin_bound;
 };
 
 const std::vector<FieldTolerance>& fieldTolerances() {
@@ -44,7 +45,8 @@ const std::vector<FieldTolerance>& fieldTolerances() {
     std::vector<FieldTolerance> t;
     for (const RecordField& f : recordFields()) {
       const std::string_view name = f.name;
-      t.push_back({toleranceFor(f.name), name == "hit_t" || name == "ray_tmax"});
+      t.push_back({toleranceFor(f.name), name == "hit_t" || name == "ray_tmax",
+                   name == "object_ray_origin"});
     }
     return t;
   }();
@@ -53,7 +55,8 @@ const std::vector<FieldTolerance>& fieldTolerances() {
 
 }  // namespace
 
-bool sameField(const RecordField& f, const uint32_t* d, const uint32_t* m, float t_bound) {
+bool sameField(const RecordField& f, const uint32_t* d, const uint32_t* m,
+               const RayBounds& bounds) {
   const int index = static_cast<int>(f.index);
   if (!f.automatic && written(d, index) != written(m, index)) return false;
   if (!f.automatic && !written(d, index)) return true;
@@ -62,7 +65,9 @@ bool sameField(const RecordField& f, const uint32_t* d, const uint32_t* m, float
                         : std::equal(d + f.offset, d + f.offset + f.words, m + f.offset);
   const FieldTolerance& ft = fieldTolerances()[f.index];
   Tolerance tol = ft.tol;
-  if (ft.widened_by_t_bound) tol.abs = std::max(tol.abs, static_cast<double>(t_bound));
+  if (ft.widened_by_t_bound) tol.abs = std::max(tol.abs, static_cast<double>(bounds.t));
+  if (ft.widened_by_origin_bound)
+    tol.abs = std::max(tol.abs, static_cast<double>(bounds.object_origin));
   for (uint32_t k = 0; k < f.words; ++k)
     if (!tol.matches(asFloat(d[f.offset + k]), asFloat(m[f.offset + k]))) return false;
   return true;

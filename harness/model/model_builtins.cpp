@@ -3,6 +3,11 @@
 // and the payload and callable data a stage reads.
 #include "model/model_builtins.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include "results/tolerances.h"
+
 namespace rayspec {
 
 // The payload and callable data a stage reads (payload.*, child.*, call.*, callee.*).
@@ -130,6 +135,28 @@ Val ModelBuiltins::rayBuiltin(const CExpr& e, const StageEnv& env) const {
 
 // The hit or candidate: its ids, kind, t, attributes, box, object-space ray,
 // position and vertices.
+// The object-space origin is a float affine transform of the world origin,
+// row r: sum_j W[r][j] o_j + W[r][3]. Any order or fusing of those roundings
+// errs by some gamma(4) of the sum of the terms' magnitudes, which a far
+// translation cancelled in it leaves large beside the result (an origin at
+// 1030 in an instance translated by -1026 gives 4, off by an ulp of 1030).
+// The field's tolerance is relative to the result, so where the terms exceed
+// it, the ray's bound becomes the tolerance relative to the terms.
+void ModelBuiltins::noteObjectOriginBound(const HitView& hv, const Vec3& o) const {
+  if (!sh_.scene || hv.instance >= sh_.scene->instances.size()) return;
+  const std::array<float, 12>& w = sh_.scene->instances[hv.instance].inverse_f;
+  double terms = 0, result = 1;
+  for (int row = 0; row < 3; ++row) {
+    double sum = std::fabs(static_cast<double>(w[4 * row + 3]));
+    for (int j = 0; j < 3; ++j) sum += std::fabs(static_cast<double>(w[4 * row + j]) * o[j]);
+    terms = std::max(terms, sum);
+    result = std::max(result, std::fabs(static_cast<double>(hv.object_origin[row])));
+  }
+  if (terms <= result) return;
+  const Tolerance tol = toleranceFor("object_ray_origin");
+  st_.object_origin_bounds.push_back({st_.index, static_cast<float>(tol.abs + tol.rel * terms)});
+}
+
 Val ModelBuiltins::hitBuiltin(const CExpr& e, const StageEnv& env) const {
   static const HitView kNone;
   static const TraceRay kNoRay;
@@ -158,6 +185,7 @@ Val ModelBuiltins::hitBuiltin(const CExpr& e, const StageEnv& env) const {
     case kBiAabbMax:
       return fromVec3(hv->aabb_max);
     case kBiObjectOrigin:
+      noteObjectOriginBound(*hv, r->origin);
       return fromVec3(hv->object_origin);
     case kBiObjectDirection:
       return fromVec3(hv->object_direction);

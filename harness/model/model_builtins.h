@@ -30,6 +30,9 @@ class ModelBuiltins {
   Val queryBuiltin(const CExpr& e, const StageEnv& env) const;
   Val queryHit(int row, const HitView& hv) const;
   void unknown(const CExpr& e) const;
+  // Widens this ray's object_ray_origin tolerance where hv's world-to-object
+  // terms of the world origin are large beside the result (R-PREC).
+  void noteObjectOriginBound(const HitView& hv, const Vec3& world_origin) const;
 
   const ModelShared& sh_;
   LaunchState& st_;  // read: the launch index; written: the case error

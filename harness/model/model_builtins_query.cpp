@@ -76,8 +76,10 @@ Val ModelBuiltins::queryBuiltin(const CExpr& e, const StageEnv& env) const {
   const int row = e.builtin - (committed ? kBiQCommittedT : kBiQCandT);
   // The planted fault rq_committed_reads_candidate: the committed getters
   // read the candidate while one is offered.
-  if (!committed || (q->cand && sh_.fault_seam.queryCommittedReadsCandidate()))
+  if (!committed || (q->cand && sh_.fault_seam.queryCommittedReadsCandidate())) {
+    if (row == 8) noteObjectOriginBound(q->cand_view, q->ray.origin);
     return queryHit(row, q->cand_view);
+  }
   if (!best.valid) {
     // R-RQ-VALUES, R-UB: no committed intersection to read (a device may
     // even crash: lavapipe does); the parser cannot tell, the model marks it.
@@ -90,6 +92,7 @@ Val ModelBuiltins::queryBuiltin(const CExpr& e, const StageEnv& env) const {
   }
   HitView hv = viewOf(scene, *sh_.c, q->ray, best.instance, best.geometry, best.primitive);
   setHit(hv, static_cast<float>(best.t), best.kind, best.b1, best.b2);
+  if (row == 8) noteObjectOriginBound(hv, q->ray.origin);
   return queryHit(row, hv);
 }
 

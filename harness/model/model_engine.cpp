@@ -242,6 +242,16 @@ std::vector<std::unique_ptr<Machine>> traceInThreads(
 
 // The workers' counters, ambiguous, bounded and undefined rays into r, in
 // ray order (one t bound per ray: the widest of its traces).
+// Sorted by ray, one bound a ray: its widest.
+void keepWidestPerRay(std::vector<TBound>& bounds) {
+  std::sort(bounds.begin(), bounds.end(), [](const TBound& a, const TBound& b) {
+    return a.ray < b.ray || (a.ray == b.ray && a.bound > b.bound);
+  });
+  bounds.erase(std::unique(bounds.begin(), bounds.end(),
+                           [](const TBound& a, const TBound& b) { return a.ray == b.ray; }),
+               bounds.end());
+}
+
 void gatherMachines(const std::vector<std::unique_ptr<Machine>>& machines, const Plan& plan,
                     Results& r) {
   for (auto& m : machines) {
@@ -250,6 +260,9 @@ void gatherMachines(const std::vector<std::unique_ptr<Machine>>& machines, const
       r.counters[plan.counters[k]] += m->state().counters[k];
     r.ambiguous.insert(r.ambiguous.end(), m->state().ambiguous.begin(), m->state().ambiguous.end());
     r.t_bounds.insert(r.t_bounds.end(), m->state().t_bounds.begin(), m->state().t_bounds.end());
+    r.object_origin_bounds.insert(r.object_origin_bounds.end(),
+                                  m->state().object_origin_bounds.begin(),
+                                  m->state().object_origin_bounds.end());
     r.undefined.insert(r.undefined.end(), m->state().undefined.begin(), m->state().undefined.end());
     if (!m->state().error.empty() && r.ok()) r.setStatus(SideStatus::Crash, m->state().error);
   }
@@ -257,12 +270,8 @@ void gatherMachines(const std::vector<std::unique_ptr<Machine>>& machines, const
             [](const RayAmbiguity& a, const RayAmbiguity& b) { return a.ray < b.ray; });
   std::sort(r.undefined.begin(), r.undefined.end(),
             [](const UndefinedRay& a, const UndefinedRay& b) { return a.ray < b.ray; });
-  std::sort(r.t_bounds.begin(), r.t_bounds.end(), [](const TBound& a, const TBound& b) {
-    return a.ray < b.ray || (a.ray == b.ray && a.bound > b.bound);
-  });
-  r.t_bounds.erase(std::unique(r.t_bounds.begin(), r.t_bounds.end(),
-                               [](const TBound& a, const TBound& b) { return a.ray == b.ray; }),
-                   r.t_bounds.end());
+  keepWidestPerRay(r.t_bounds);
+  keepWidestPerRay(r.object_origin_bounds);
 }
 
 // The empty results of the model's run of c: names, size, counters at 0.

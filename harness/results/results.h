@@ -166,6 +166,10 @@ struct Results {
   std::vector<Image> images;
   std::vector<RayAmbiguity> ambiguous;  // model, exact tier: rays that are not clear
   std::vector<TBound> t_bounds;         // model, exact tier: clear rays with a wider t bound
+  // model: rays whose object-space ray origin was read under an instance
+  // whose world-to-object terms are large beside the result (a far
+  // translation cancelled): |device - model| may reach the bound.
+  std::vector<TBound> object_origin_bounds;
   std::vector<UndefinedRay>
       undefined;  // model: rays whose behaviour is undefined (R-UB), one per ray
   // model, exact tier (R-AHIT-DUP): rays whose fields any-hit repetition may
