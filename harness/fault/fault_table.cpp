@@ -249,8 +249,8 @@ std::vector<FaultImpl> pipelineMutations() {
        "an update of a cloned, compacted or deserialized structure changes nothing", nullptr,
        copyUpdateIgnored},
       {"vertex-format-ignored", K::CaseMutation,
-       "vertices in half or snorm16 formats are traced where the case wrote them, not where the "
-       "format puts them",
+       "vertices in half or normalized formats are traced where the case wrote them, not where "
+       "the format puts them",
        nullptr, vertexFormatIgnored},
       {"position-fetch-world-space", K::CaseMutation,
        "gl_HitTriangleVertexPositionsEXT gives the vertices through the instance transform "

@@ -8,11 +8,12 @@ namespace rayspec {
 namespace {
 
 // Junk vertex bytes: NaN in float and half formats (an inactive triangle,
-// R-INACTIVE); snorm16 has no NaN, so its largest value, 1.0, in every
-// component (0x7FFF little-endian).
+// R-INACTIVE); normalized codes have no NaN, so their largest value, 1.0, in
+// every component (all ones; an snorm code's top byte 0x7F, little-endian).
 void fillVertexJunk(VertexFormat f, uint8_t* at, size_t bytes) {
-  const bool snorm = f == VertexFormat::Snorm16x4 || f == VertexFormat::Snorm16x2;
-  for (size_t i = 0; i < bytes; ++i) at[i] = snorm && i % 2 ? 0x7F : 0xFF;
+  const bool snorm = vertexEncoding(f) == VertexEncoding::Snorm;
+  const size_t unit = vertexComponentBytes(f);
+  for (size_t i = 0; i < bytes; ++i) at[i] = snorm && i % unit == unit - 1 ? 0x7F : 0xFF;
 }
 
 // `count` items of `item` bytes from `tight`, each at `stride` bytes from the
@@ -47,7 +48,52 @@ std::vector<uint8_t> indexBytes(const Geometry& g, size_t junk) {
   return behindJunk(g.indices.data(), g.indices.size() * 4, junk, 0);
 }
 
+// Each packed 32-bit word's R (bits 0..9) and B (bits 20..29) exchanged.
+void swapRedBlue(std::vector<uint8_t>& bytes) {
+  for (size_t at = 0; at + 4 <= bytes.size(); at += 4) {
+    uint32_t w = 0;
+    std::memcpy(&w, bytes.data() + at, 4);
+    const uint32_t red = w & 0x3FF, blue = (w >> 20) & 0x3FF;
+    w = (w & ~0x3FF003FFu) | (red << 20) | blue;
+    std::memcpy(bytes.data() + at, &w, 4);
+  }
+}
+
 }  // namespace
+
+std::optional<VertexFormatMisread> vertexFormatMisread(VertexFormat f) {
+  using F = VertexFormat;
+  switch (f) {
+    case F::Float4:
+      return VertexFormatMisread{F::Float3};
+    case F::Half3:
+      return VertexFormatMisread{F::Half2};
+    case F::Unorm16x4:
+      return VertexFormatMisread{F::Snorm16x4};
+    case F::Unorm16x2:
+      return VertexFormatMisread{F::Snorm16x2};
+    case F::Snorm16x4:
+      return VertexFormatMisread{F::Unorm16x4};
+    case F::Snorm16x2:
+      return VertexFormatMisread{F::Unorm16x2};
+    case F::Unorm8x4:
+      return VertexFormatMisread{F::Snorm8x4};
+    case F::Unorm8x2:
+      return VertexFormatMisread{F::Snorm8x2};
+    case F::Snorm8x4:
+      return VertexFormatMisread{F::Unorm8x4};
+    case F::Snorm8x2:
+      return VertexFormatMisread{F::Unorm8x2};
+    case F::Unorm10x3:
+      return VertexFormatMisread{F::Unorm10x3, true};
+    case F::Float3:
+    case F::Float2:
+    case F::Half4:
+    case F::Half2:
+      break;
+  }
+  return std::nullopt;
+}
 
 TriangleInputs layTriangles(const Geometry& g, const AsBuild& build, LayoutFault fault) {
   TriangleInputs out;
@@ -58,8 +104,12 @@ TriangleInputs layTriangles(const Geometry& g, const AsBuild& build, LayoutFault
   auto junk = [&g](uint8_t* at, size_t n) {
     fillVertexJunk(g.vertex_format, at, n);
   };
-  out.vertices =
-      spread(encodeVertices(g.vertex_format, g.vertices), tight, out.stride, first, junk);
+  std::vector<uint8_t> encoded = encodeVertices(g.vertex_format, g.vertices);
+  out.format = g.vertex_format;
+  const std::optional<VertexFormatMisread> misread =
+      fault == LayoutFault::FormatMisread ? vertexFormatMisread(g.vertex_format) : std::nullopt;
+  if (misread && misread->swap_red_blue) swapRedBlue(encoded);
+  out.vertices = spread(encoded, tight, out.stride, first, junk);
   out.max_vertex = g.vertices.empty() ? 0 : first + static_cast<uint32_t>(g.vertices.size()) - 1;
   // Non-indexed, primitiveOffset moves the vertices; indexed, the indices.
   const size_t junk_bytes = offsets ? kJunkOffsetBytes : 0;
@@ -82,6 +132,11 @@ TriangleInputs layTriangles(const Geometry& g, const AsBuild& build, LayoutFault
     out.range.transformOffset = offsets && g.transform ? kJunkTransformBytes : 0;
   }
   if (fault == LayoutFault::StrideIgnored) out.stride = tight;
+  if (misread) {
+    out.format = misread->format;
+    // A smaller vertex: the driver steps by its size (never past the buffer).
+    if (vertexStride(misread->format) != tight) out.stride = vertexStride(misread->format);
+  }
   return out;
 }
 

@@ -15,6 +15,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "case/case.h"
@@ -28,15 +29,29 @@ constexpr uint32_t kJunkTransformBytes = 48;  // transformOffset: one junk matri
 constexpr uint32_t kJunkBoxes = 2;            // primitiveOffset of boxes, in strides
 
 // One triangle geometry's inputs: the bytes of its vertices, indices (empty:
-// none) and transform (empty: none), its stride, maxVertex and range (the
-// offsets relative to the start of each piece's bytes).
+// none) and transform (empty: none), the vertex format and stride the build
+// is told, maxVertex and range (the offsets relative to the start of each
+// piece's bytes).
 struct TriangleInputs {
   std::vector<uint8_t> vertices, indices, transform;
+  VertexFormat format = VertexFormat::Float3;
   uint32_t stride = 0;
   uint32_t max_vertex = 0;
   VkAccelerationStructureBuildRangeInfoKHR range{};
 };
 TriangleInputs layTriangles(const Geometry& g, const AsBuild& build, LayoutFault fault);
+
+// The planted fault vertex-format-misread (vk_fault_hook.h): how a driver
+// that confuses vertex format f reads it. Unorm codes are read as snorm and
+// snorm as unorm of the same width; float4 as float3 and half3 as half2, at
+// that format's vertex size (each vertex after the first begins inside an
+// earlier one); unorm10x3 with its R and B fields swapped. float3, float2,
+// half4 and half2: nullopt, read right.
+struct VertexFormatMisread {
+  VertexFormat format;         // the format the build is told
+  bool swap_red_blue = false;  // the packed word's bits 0..9 and 20..29 exchanged
+};
+std::optional<VertexFormatMisread> vertexFormatMisread(VertexFormat f);
 
 // One AABB geometry's inputs: its boxes, stride and range.
 struct AabbInputs {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "base/hex_text.h"
+#include "vulkan/acceleration_structure.h"
 #include "vulkan/context.h"
 #include "vulkan/library_group_handles.h"
 #include "vulkan/position_fetch.h"
@@ -57,38 +58,25 @@ void readExtensions(VkPhysicalDevice physical, DeviceInfo& d) {
 }
 
 // Vertex formats a device may build triangles from: rayspec's own (named as
-// in triangles.vertex_format) and others devices report.
-struct NamedFormat {
+// in triangles.vertex_format) and the one other format the Vulkan
+// specification lets a device list, which rayspec does not store.
+constexpr struct {
   VkFormat format;
   const char* name;
-};
-constexpr NamedFormat kVertexFormatCandidates[] = {
-    {VK_FORMAT_R32G32B32_SFLOAT, "float3"},
-    {VK_FORMAT_R32G32_SFLOAT, "float2"},
-    {VK_FORMAT_R16G16B16A16_SFLOAT, "half4"},
-    {VK_FORMAT_R16G16_SFLOAT, "half2"},
-    {VK_FORMAT_R16G16B16A16_SNORM, "snorm16x4"},
-    {VK_FORMAT_R16G16_SNORM, "snorm16x2"},
-    {VK_FORMAT_R32G32B32A32_SFLOAT, "R32G32B32A32_SFLOAT"},
-    {VK_FORMAT_R16G16B16_SFLOAT, "R16G16B16_SFLOAT"},
-    {VK_FORMAT_R16G16B16_SNORM, "R16G16B16_SNORM"},
-    {VK_FORMAT_R16G16B16A16_UNORM, "R16G16B16A16_UNORM"},
-    {VK_FORMAT_R16G16_UNORM, "R16G16_UNORM"},
-    {VK_FORMAT_R8G8B8A8_SNORM, "R8G8B8A8_SNORM"},
-    {VK_FORMAT_R8G8_SNORM, "R8G8_SNORM"},
-    {VK_FORMAT_R8G8B8A8_UNORM, "R8G8B8A8_UNORM"},
-    {VK_FORMAT_R8G8_UNORM, "R8G8_UNORM"},
-    {VK_FORMAT_A2B10G10R10_UNORM_PACK32, "A2B10G10R10_UNORM_PACK32"},
-};
+} kOtherVertexFormats[] = {{VK_FORMAT_R16G16B16_SNORM, "R16G16B16_SNORM"}};
 
 void readVertexFormats(VkPhysicalDevice physical, DeviceInfo& d) {
   if (!d.acceleration_structure_extension) return;
-  for (const NamedFormat& f : kVertexFormatCandidates) {
+  auto listed = [physical](VkFormat f) {
     VkFormatProperties props{};
-    vkGetPhysicalDeviceFormatProperties(physical, f.format, &props);
-    if (props.bufferFeatures & VK_FORMAT_FEATURE_ACCELERATION_STRUCTURE_VERTEX_BUFFER_BIT_KHR)
-      d.vertex_formats.push_back(f.name);
-  }
+    vkGetPhysicalDeviceFormatProperties(physical, f, &props);
+    return (props.bufferFeatures &
+            VK_FORMAT_FEATURE_ACCELERATION_STRUCTURE_VERTEX_BUFFER_BIT_KHR) != 0;
+  };
+  for (VertexFormat f : enumValues<VertexFormat>())
+    if (listed(vkVertexFormat(f))) d.vertex_formats.push_back(vertexFormatName(f));
+  for (const auto& other : kOtherVertexFormats)
+    if (listed(other.format)) d.vertex_formats.push_back(other.name);
 }
 
 // Identity (UUIDs, driver) and the ray tracing pipeline's properties.
