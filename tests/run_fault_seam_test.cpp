@@ -109,7 +109,7 @@ TEST(FaultSeam, FormatMisreadAppliesToFormatsItConfuses) {
   unorm.scene.blases[0].geometries[0].vertex_format = VertexFormat::Unorm8x2;
   EXPECT_EQ(s.after(unorm, Plan{}, r).find("not applicable"), std::string::npos);
   EXPECT_EQ(injectedLayoutFault(), LayoutFault::None);
-  unorm.scene.blases[0].geometries[0].vertex_format = VertexFormat::Half4;
+  unorm.scene.blases[0].geometries[0].vertex_format = VertexFormat::Float3;
   EXPECT_NE(s.after(unorm, Plan{}, r).find("no triangles in a format it misreads"),
             std::string::npos);
 }

@@ -86,10 +86,13 @@ std::optional<VertexFormatMisread> vertexFormatMisread(VertexFormat f) {
       return VertexFormatMisread{F::Unorm8x2};
     case F::Unorm10x3:
       return VertexFormatMisread{F::Unorm10x3, true};
-    case F::Float3:
     case F::Float2:
+      return VertexFormatMisread{F::Half4};
     case F::Half4:
+      return VertexFormatMisread{F::Float2};
     case F::Half2:
+      return VertexFormatMisread{F::Unorm16x2};
+    case F::Float3:  // no other format has its 12 bytes
       break;
   }
   return std::nullopt;
@@ -105,10 +108,10 @@ TriangleInputs layTriangles(const Geometry& g, const AsBuild& build, LayoutFault
     fillVertexJunk(g.vertex_format, at, n);
   };
   std::vector<uint8_t> encoded = encodeVertices(g.vertex_format, g.vertices);
-  out.format = g.vertex_format;
-  const std::optional<VertexFormatMisread> misread =
-      fault == LayoutFault::FormatMisread ? vertexFormatMisread(g.vertex_format) : std::nullopt;
-  if (misread && misread->swap_red_blue) swapRedBlue(encoded);
+  VertexFormatMisread misread{g.vertex_format};  // read right
+  if (fault == LayoutFault::FormatMisread)
+    misread = vertexFormatMisread(g.vertex_format).value_or(misread);
+  if (misread.swap_red_blue) swapRedBlue(encoded);
   out.vertices = spread(encoded, tight, out.stride, first, junk);
   out.max_vertex = g.vertices.empty() ? 0 : first + static_cast<uint32_t>(g.vertices.size()) - 1;
   // Non-indexed, primitiveOffset moves the vertices; indexed, the indices.
@@ -132,11 +135,9 @@ TriangleInputs layTriangles(const Geometry& g, const AsBuild& build, LayoutFault
     out.range.transformOffset = offsets && g.transform ? kJunkTransformBytes : 0;
   }
   if (fault == LayoutFault::StrideIgnored) out.stride = tight;
-  if (misread) {
-    out.format = misread->format;
-    // A smaller vertex: the driver steps by its size (never past the buffer).
-    if (vertexStride(misread->format) != tight) out.stride = vertexStride(misread->format);
-  }
+  out.format = misread.format;
+  // A smaller vertex misread: the driver steps by its size (never past the buffer).
+  if (vertexStride(misread.format) != tight) out.stride = vertexStride(misread.format);
   return out;
 }
 
