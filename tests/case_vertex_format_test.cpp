@@ -172,6 +172,27 @@ TEST(VertexFormat, EightAndSixteenBitCodesAndFloatsLieInTheirBytes) {
         << vertexFormatName(f);
 }
 
+// Every format's bytes, read back, are the stored positions: at the ends of
+// its range and between them.
+TEST(VertexFormat, DecodedBytesAreTheStoredPositions) {
+  for (VertexFormat f : enumValues<VertexFormat>()) {
+    const bool signed_range =
+        vertexEncoding(f) != VertexEncoding::Unorm && vertexEncoding(f) != VertexEncoding::Packed10;
+    const float lo = signed_range ? -1.0f : 0.0f;
+    std::vector<Vec3> v = {{lo, 1.0f, 0.30001f}, {0.0f, lo, 1.0f}, {0.7f, 0.123f, lo}};
+    if (vertexComponents(f) == 2)
+      for (Vec3& x : v) x[2] = 0.0f;
+    std::vector<Vec3> stored;
+    for (const Vec3& x : v) stored.push_back(storedVertex(f, x));
+    EXPECT_EQ(decodeVertices(f, encodeVertices(f, v), vertexStride(f), v.size()), stored)
+        << vertexFormatName(f);
+  }
+  const std::vector<Vec3> past = decodeVertices(
+      VertexFormat::Unorm8x2, encodeVertices(VertexFormat::Unorm8x2, {{1, 0, 0}}), 2, 2);
+  EXPECT_EQ(past[0], (Vec3{1, 0, 0}));
+  EXPECT_TRUE(std::isnan(past[1][0])) << "a vertex past the bytes";
+}
+
 ParseResult parseTriangles(const std::string& extra) {
   return parseCaseText(oneTriangleText("R-VERTEX-FORMAT", "", extra), "t.yaml", "t/t");
 }

@@ -97,6 +97,36 @@ void encodeVertex(VertexFormat f, const Vec3& v, uint8_t* at) {
   }
 }
 
+// The code of `bytes` little-endian bytes at `at`, sign-extended for snorm.
+int32_t getCode(const uint8_t* at, uint32_t bytes, bool sign) {
+  uint32_t bits = 0;
+  for (uint32_t b = 0; b < bytes; ++b) bits |= uint32_t{at[b]} << (8 * b);
+  const uint32_t top = 1u << (8 * bytes - 1);
+  if (sign && bytes < 4 && (bits & top)) bits |= ~((top << 1) - 1);
+  return static_cast<int32_t>(bits);
+}
+
+// The position one vertex of `f` at `at` stands for.
+Vec3 decodeVertex(VertexFormat f, const uint8_t* at) {
+  const FormatInfo& i = info(f);
+  Vec3 out{0.0f, 0.0f, 0.0f};
+  for (uint32_t k = 0; k < i.components; ++k) {
+    if (i.encoding == VertexEncoding::Float) {
+      std::memcpy(&out[k], at + 4 * k, 4);
+    } else if (i.encoding == VertexEncoding::Half) {
+      out[k] = halfValue(static_cast<uint16_t>(getCode(at + 2 * k, 2, false)));
+    } else if (i.encoding == VertexEncoding::Packed10) {
+      const uint32_t word = static_cast<uint32_t>(getCode(at, 4, false));
+      out[k] = vertexCodeValue(f, static_cast<int32_t>((word >> (10 * k)) & 0x3FF));
+    } else {
+      const uint32_t unit = i.bits / 8;
+      out[k] =
+          vertexCodeValue(f, getCode(at + unit * k, unit, i.encoding == VertexEncoding::Snorm));
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 const char* vertexFormatName(VertexFormat f) {
@@ -192,6 +222,16 @@ std::vector<uint8_t> encodeVertices(VertexFormat f, const std::vector<Vec3>& ver
   for (size_t i = 0; i < vertices.size(); ++i)
     encodeVertex(f, vertices[i], bytes.data() + i * stride);
   return bytes;
+}
+
+std::vector<Vec3> decodeVertices(VertexFormat f, const std::vector<uint8_t>& bytes, size_t stride,
+                                 size_t count) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::vector<Vec3> out(count, Vec3{nan, nan, nan});
+  for (size_t i = 0; i < count; ++i)
+    if (i * stride + vertexStride(f) <= bytes.size())
+      out[i] = decodeVertex(f, bytes.data() + i * stride);
+  return out;
 }
 
 }  // namespace rayspec

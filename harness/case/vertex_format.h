@@ -91,4 +91,11 @@ float vertexDecodeError(VertexFormat f);
 // The vertex buffer bytes of `vertices` in `f` (each stored as storedVertex).
 std::vector<uint8_t> encodeVertices(VertexFormat f, const std::vector<Vec3>& vertices);
 
+// The positions `count` vertices of `f` stand for, vertex i at byte
+// i * stride of `bytes` (as a build reads them; a vertex past the end of
+// `bytes`: NaN). decodeVertices(f, encodeVertices(f, v), vertexStride(f),
+// v.size()) is storedVertex of each.
+std::vector<Vec3> decodeVertices(VertexFormat f, const std::vector<uint8_t>& bytes, size_t stride,
+                                 size_t count);
+
 }  // namespace rayspec

@@ -252,6 +252,11 @@ std::vector<FaultImpl> pipelineMutations() {
        "vertices in half or normalized formats are traced where the case wrote them, not where "
        "the format puts them",
        nullptr, vertexFormatIgnored},
+      {"vertex-format-confused", K::CaseMutation,
+       "each vertex format is read as another (unorm as snorm and back, float2 as half4 and "
+       "back, half2 as unorm16x2, float4 as float3, half3 as half2, unorm10x3 with R and B "
+       "swapped): the model's side of the layout fault vertex-format-misread",
+       nullptr, vertexFormatConfused},
       {"position-fetch-world-space", K::CaseMutation,
        "gl_HitTriangleVertexPositionsEXT gives the vertices through the instance transform "
        "(world space), not in object space",

@@ -48,55 +48,7 @@ std::vector<uint8_t> indexBytes(const Geometry& g, size_t junk) {
   return behindJunk(g.indices.data(), g.indices.size() * 4, junk, 0);
 }
 
-// Each packed 32-bit word's R (bits 0..9) and B (bits 20..29) exchanged.
-void swapRedBlue(std::vector<uint8_t>& bytes) {
-  for (size_t at = 0; at + 4 <= bytes.size(); at += 4) {
-    uint32_t w = 0;
-    std::memcpy(&w, bytes.data() + at, 4);
-    const uint32_t red = w & 0x3FF, blue = (w >> 20) & 0x3FF;
-    w = (w & ~0x3FF003FFu) | (red << 20) | blue;
-    std::memcpy(bytes.data() + at, &w, 4);
-  }
-}
-
 }  // namespace
-
-std::optional<VertexFormatMisread> vertexFormatMisread(VertexFormat f) {
-  using F = VertexFormat;
-  switch (f) {
-    case F::Float4:
-      return VertexFormatMisread{F::Float3};
-    case F::Half3:
-      return VertexFormatMisread{F::Half2};
-    case F::Unorm16x4:
-      return VertexFormatMisread{F::Snorm16x4};
-    case F::Unorm16x2:
-      return VertexFormatMisread{F::Snorm16x2};
-    case F::Snorm16x4:
-      return VertexFormatMisread{F::Unorm16x4};
-    case F::Snorm16x2:
-      return VertexFormatMisread{F::Unorm16x2};
-    case F::Unorm8x4:
-      return VertexFormatMisread{F::Snorm8x4};
-    case F::Unorm8x2:
-      return VertexFormatMisread{F::Snorm8x2};
-    case F::Snorm8x4:
-      return VertexFormatMisread{F::Unorm8x4};
-    case F::Snorm8x2:
-      return VertexFormatMisread{F::Unorm8x2};
-    case F::Unorm10x3:
-      return VertexFormatMisread{F::Unorm10x3, true};
-    case F::Float2:
-      return VertexFormatMisread{F::Half4};
-    case F::Half4:
-      return VertexFormatMisread{F::Float2};
-    case F::Half2:
-      return VertexFormatMisread{F::Unorm16x2};
-    case F::Float3:  // no other format has its 12 bytes
-      break;
-  }
-  return std::nullopt;
-}
 
 TriangleInputs layTriangles(const Geometry& g, const AsBuild& build, LayoutFault fault) {
   TriangleInputs out;
@@ -111,7 +63,7 @@ TriangleInputs layTriangles(const Geometry& g, const AsBuild& build, LayoutFault
   VertexFormatMisread misread{g.vertex_format};  // read right
   if (fault == LayoutFault::FormatMisread)
     misread = vertexFormatMisread(g.vertex_format).value_or(misread);
-  if (misread.swap_red_blue) swapRedBlue(encoded);
+  misreadBytes(misread, encoded);
   out.vertices = spread(encoded, tight, out.stride, first, junk);
   out.max_vertex = g.vertices.empty() ? 0 : first + static_cast<uint32_t>(g.vertices.size()) - 1;
   // Non-indexed, primitiveOffset moves the vertices; indexed, the indices.
@@ -136,8 +88,7 @@ TriangleInputs layTriangles(const Geometry& g, const AsBuild& build, LayoutFault
   }
   if (fault == LayoutFault::StrideIgnored) out.stride = tight;
   out.format = misread.format;
-  // A smaller vertex misread: the driver steps by its size (never past the buffer).
-  if (vertexStride(misread.format) != tight) out.stride = vertexStride(misread.format);
+  out.stride = misreadStride(g.vertex_format, misread, out.stride);  // never past the buffer
   return out;
 }
 

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "case/case.h"
+#include "case/vertex_format_misread.h"
 #include "vulkan/vk_fault_hook.h"
 
 namespace rayspec {
@@ -40,19 +41,6 @@ struct TriangleInputs {
   VkAccelerationStructureBuildRangeInfoKHR range{};
 };
 TriangleInputs layTriangles(const Geometry& g, const AsBuild& build, LayoutFault fault);
-
-// The planted fault vertex-format-misread (vk_fault_hook.h): how a driver
-// that confuses vertex format f reads it. Unorm codes are read as snorm and
-// snorm as unorm of the same width; float2 as half4 and back, half2 as
-// unorm16x2 (the same bytes a vertex); float4 as float3 and half3 as half2,
-// at that format's vertex size (each vertex after the first begins inside
-// an earlier one); unorm10x3 with its R and B fields swapped. float3:
-// nullopt, read right (no other format has its size).
-struct VertexFormatMisread {
-  VertexFormat format;         // the format the build is told
-  bool swap_red_blue = false;  // the packed word's bits 0..9 and 20..29 exchanged
-};
-std::optional<VertexFormatMisread> vertexFormatMisread(VertexFormat f);
 
 // One AABB geometry's inputs: its boxes, stride and range.
 struct AabbInputs {
