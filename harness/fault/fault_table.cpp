@@ -236,6 +236,13 @@ std::vector<FaultImpl> pipelineMutations() {
        "the pipeline stack size a trace sets is ignored: callables nested deeper than the "
        "default stack's two frames do nothing",
        nullptr, stackSizeIgnored},
+  };
+}
+
+// Faults of acceleration structure copies, updates and vertex formats.
+std::vector<FaultImpl> structureMutations() {
+  using K = FaultKind;
+  return {
       {"copy-drops-instance", K::CaseMutation,
        "a cloned or compacted top level loses its last active instance", nullptr,
        copyDropsInstance},
@@ -261,6 +268,13 @@ std::vector<FaultImpl> pipelineMutations() {
        "gl_HitTriangleVertexPositionsEXT gives the vertices through the instance transform "
        "(world space), not in object space",
        nullptr, positionFetchWorldSpace},
+  };
+}
+
+// Faults of shader code, launches and geometry numbering.
+std::vector<FaultImpl> codeAndLaunchMutations() {
+  using K = FaultKind;
+  return {
       {"locals-lost-across-calls", K::CaseMutation,
        "a shader's local variables read zero after its traceRayEXT, executeCallableEXT or "
        "reportIntersectionEXT (live values spilled and restored wrongly)",
@@ -353,7 +367,8 @@ const std::vector<FaultImpl>& faultImpls() {
   static const std::vector<FaultImpl> table = [] {
     std::vector<FaultImpl> all;
     for (auto part : {recordEdits, sceneAndFlagMutations, programMutations, sbtAndOrderMutations,
-                      pipelineMutations, rayQueryMutations, processFaults})
+                      pipelineMutations, structureMutations, codeAndLaunchMutations,
+                      rayQueryMutations, processFaults})
       for (FaultImpl& f : part()) all.push_back(std::move(f));
     return all;
   }();
