@@ -80,7 +80,7 @@ const NormalizedRow kNormalizedRows[] = {
     {VertexFormat::Unorm16x4, 65535, false}, {VertexFormat::Unorm16x2, 65535, false},
     {VertexFormat::Snorm8x4, 127, true},     {VertexFormat::Snorm8x2, 127, true},
     {VertexFormat::Unorm8x4, 255, false},    {VertexFormat::Unorm8x2, 255, false},
-    {VertexFormat::Unorm10x3, 1023, false}};
+    {VertexFormat::Unorm10x3, 1023, false},  {VertexFormat::Snorm16x3, 32767, true}};
 
 TEST(VertexFormat, EveryNormalizedFormatHoldsTheEndsOfItsRange) {
   for (const NormalizedRow& n : kNormalizedRows) {

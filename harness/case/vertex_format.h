@@ -31,22 +31,23 @@ enum class VertexEncoding {
 //     component, components a build reads (2 or 3), bytes of one vertex)
 // The VkFormat column is a bare token, pasted by the Vulkan side alone
 // (vulkan/acceleration_structure.cpp), so this layer needs no Vulkan header.
-#define RAYSPEC_VERTEX_FORMATS(X)                                       \
-  X(Float3, "float3", R32G32B32_SFLOAT, Float, 32, 3, 12) /* default */ \
-  X(Float2, "float2", R32G32_SFLOAT, Float, 32, 2, 8)                   \
-  X(Half4, "half4", R16G16B16A16_SFLOAT, Half, 16, 3, 8)                \
-  X(Half2, "half2", R16G16_SFLOAT, Half, 16, 2, 4)                      \
-  X(Snorm16x4, "snorm16x4", R16G16B16A16_SNORM, Snorm, 16, 3, 8)        \
-  X(Snorm16x2, "snorm16x2", R16G16_SNORM, Snorm, 16, 2, 4)              \
-  X(Float4, "float4", R32G32B32A32_SFLOAT, Float, 32, 3, 16)            \
-  X(Half3, "half3", R16G16B16_SFLOAT, Half, 16, 3, 6)                   \
-  X(Unorm16x4, "unorm16x4", R16G16B16A16_UNORM, Unorm, 16, 3, 8)        \
-  X(Unorm16x2, "unorm16x2", R16G16_UNORM, Unorm, 16, 2, 4)              \
-  X(Snorm8x4, "snorm8x4", R8G8B8A8_SNORM, Snorm, 8, 3, 4)               \
-  X(Snorm8x2, "snorm8x2", R8G8_SNORM, Snorm, 8, 2, 2)                   \
-  X(Unorm8x4, "unorm8x4", R8G8B8A8_UNORM, Unorm, 8, 3, 4)               \
-  X(Unorm8x2, "unorm8x2", R8G8_UNORM, Unorm, 8, 2, 2)                   \
-  X(Unorm10x3, "unorm10x3", A2B10G10R10_UNORM_PACK32, Packed10, 10, 3, 4)
+#define RAYSPEC_VERTEX_FORMATS(X)                                         \
+  X(Float3, "float3", R32G32B32_SFLOAT, Float, 32, 3, 12) /* default */   \
+  X(Float2, "float2", R32G32_SFLOAT, Float, 32, 2, 8)                     \
+  X(Half4, "half4", R16G16B16A16_SFLOAT, Half, 16, 3, 8)                  \
+  X(Half2, "half2", R16G16_SFLOAT, Half, 16, 2, 4)                        \
+  X(Snorm16x4, "snorm16x4", R16G16B16A16_SNORM, Snorm, 16, 3, 8)          \
+  X(Snorm16x2, "snorm16x2", R16G16_SNORM, Snorm, 16, 2, 4)                \
+  X(Float4, "float4", R32G32B32A32_SFLOAT, Float, 32, 3, 16)              \
+  X(Half3, "half3", R16G16B16_SFLOAT, Half, 16, 3, 6)                     \
+  X(Unorm16x4, "unorm16x4", R16G16B16A16_UNORM, Unorm, 16, 3, 8)          \
+  X(Unorm16x2, "unorm16x2", R16G16_UNORM, Unorm, 16, 2, 4)                \
+  X(Snorm8x4, "snorm8x4", R8G8B8A8_SNORM, Snorm, 8, 3, 4)                 \
+  X(Snorm8x2, "snorm8x2", R8G8_SNORM, Snorm, 8, 2, 2)                     \
+  X(Unorm8x4, "unorm8x4", R8G8B8A8_UNORM, Unorm, 8, 3, 4)                 \
+  X(Unorm8x2, "unorm8x2", R8G8_UNORM, Unorm, 8, 2, 2)                     \
+  X(Unorm10x3, "unorm10x3", A2B10G10R10_UNORM_PACK32, Packed10, 10, 3, 4) \
+  X(Snorm16x3, "snorm16x3", R16G16B16_SNORM, Snorm, 16, 3, 6)
 enum class VertexFormat { RAYSPEC_VERTEX_FORMATS(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(VertexFormat, RAYSPEC_VERTEX_FORMATS);
 

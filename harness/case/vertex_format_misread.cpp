@@ -33,6 +33,8 @@ std::optional<VertexFormatMisread> vertexFormatMisread(VertexFormat f) {
       return VertexFormatMisread{F::Unorm8x4};
     case F::Snorm8x2:
       return VertexFormatMisread{F::Unorm8x2};
+    case F::Snorm16x3:
+      return VertexFormatMisread{F::Snorm16x2};
     case F::Unorm10x3:
       return VertexFormatMisread{F::Unorm10x3, true};
     case F::Float3:  // no other format has its 12 bytes

@@ -17,9 +17,9 @@ namespace rayspec {
 
 // Unorm codes are read as snorm and snorm as unorm of the same width; float2
 // as half4 and back, half2 as unorm16x2 (the same bytes a vertex); float4 as
-// float3 and half3 as half2, at that format's vertex size (each vertex after
-// the first begins inside an earlier one); unorm10x3 with its R and B fields
-// swapped. float3: nullopt, read right (no other format has its size).
+// float3, half3 as half2 and snorm16x3 as snorm16x2, at that format's vertex size (each vertex
+// after the first begins inside an earlier one); unorm10x3 with its R and B fields swapped. float3:
+// nullopt, read right (no other format has its size).
 struct VertexFormatMisread {
   VertexFormat format;         // the format the build is told
   bool swap_red_blue = false;  // the packed word's bits 0..9 and 20..29 exchanged

@@ -261,7 +261,8 @@ std::vector<FaultImpl> structureMutations() {
        nullptr, vertexFormatIgnored},
       {"vertex-format-confused", K::CaseMutation,
        "each vertex format is read as another (unorm as snorm and back, float2 as half4 and "
-       "back, half2 as unorm16x2, float4 as float3, half3 as half2, unorm10x3 with R and B "
+       "back, half2 as unorm16x2, float4 as float3, half3 as half2, snorm16x3 as snorm16x2, "
+       "unorm10x3 with R and B "
        "swapped): the model's side of the layout fault vertex-format-misread",
        nullptr, vertexFormatConfused},
       {"position-fetch-world-space", K::CaseMutation,

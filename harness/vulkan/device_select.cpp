@@ -57,26 +57,17 @@ void readExtensions(VkPhysicalDevice physical, DeviceInfo& d) {
       d.pipeline_library && hasDeviceExtension(exts, kLibraryGroupHandlesExtension);
 }
 
-// Vertex formats a device may build triangles from: rayspec's own (named as
-// in triangles.vertex_format) and the one other format the Vulkan
-// specification lets a device list, which rayspec does not store.
-constexpr struct {
-  VkFormat format;
-  const char* name;
-} kOtherVertexFormats[] = {{VK_FORMAT_R16G16B16_SNORM, "R16G16B16_SNORM"}};
-
+// Vertex formats a device may build triangles from, named as in
+// triangles.vertex_format: every format the Vulkan specification lets a
+// device list for acceleration structures is one of rayspec's.
 void readVertexFormats(VkPhysicalDevice physical, DeviceInfo& d) {
   if (!d.acceleration_structure_extension) return;
-  auto listed = [physical](VkFormat f) {
+  for (VertexFormat f : enumValues<VertexFormat>()) {
     VkFormatProperties props{};
-    vkGetPhysicalDeviceFormatProperties(physical, f, &props);
-    return (props.bufferFeatures &
-            VK_FORMAT_FEATURE_ACCELERATION_STRUCTURE_VERTEX_BUFFER_BIT_KHR) != 0;
-  };
-  for (VertexFormat f : enumValues<VertexFormat>())
-    if (listed(vkVertexFormat(f))) d.vertex_formats.push_back(vertexFormatName(f));
-  for (const auto& other : kOtherVertexFormats)
-    if (listed(other.format)) d.vertex_formats.push_back(other.name);
+    vkGetPhysicalDeviceFormatProperties(physical, vkVertexFormat(f), &props);
+    if (props.bufferFeatures & VK_FORMAT_FEATURE_ACCELERATION_STRUCTURE_VERTEX_BUFFER_BIT_KHR)
+      d.vertex_formats.push_back(vertexFormatName(f));
+  }
 }
 
 // Identity (UUIDs, driver) and the ray tracing pipeline's properties.

@@ -38,7 +38,8 @@ std::optional<VkResult> injectedVkError(const char* call);
 //   pointers-reversed  each level's instance pointers in reverse order
 //   vertex-format-misread  vertices read in a confused format (unorm as
 //                      snorm and back, float2 as half4 and back, float4 as
-//                      float3, half3 as half2, half2 as unorm16x2,
+//                      float3, half3 as half2, snorm16x3 as snorm16x2,
+//                      half2 as unorm16x2,
 //                      unorm10x3's R and B swapped: build_layout.h)
 #define RAYSPEC_LAYOUT_FAULTS(X)                      \
   X(None, "")                          /* no fault */ \
