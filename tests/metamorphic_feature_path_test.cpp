@@ -102,8 +102,7 @@ TEST(FeaturePath, LayoutsTurnsOnEveryLayout) {
   EXPECT_NE(why.find("lays its build inputs out itself"), std::string::npos) << why;
   // Every vertex format fits the path's stride: at least its size, a
   // multiple of its component.
-  for (VertexFormat f : {VertexFormat::Float3, VertexFormat::Float2, VertexFormat::Half4,
-                         VertexFormat::Half2, VertexFormat::Snorm16x4, VertexFormat::Snorm16x2}) {
+  for (VertexFormat f : enumValues<VertexFormat>()) {
     EXPECT_GE(kLayoutsVertexStride, vertexStride(f)) << vertexFormatName(f);
     EXPECT_EQ(kLayoutsVertexStride % vertexComponentBytes(f), 0u) << vertexFormatName(f);
   }

@@ -93,5 +93,26 @@ TEST(FaultSeam, LayoutFaultHoldsUntilTheSideEnds) {
   EXPECT_NE(s.after(Case{}, Plan{}, r).find("not applicable"), std::string::npos);
 }
 
+// vertex-format-misread applies where a triangle geometry has a format it
+// confuses, and says so where none has.
+TEST(FaultSeam, FormatMisreadAppliesToFormatsItConfuses) {
+  EXPECT_NE(plantableFaultNames().find("vertex-format-misread"), std::string::npos);
+  Side s;
+  armDeviceSide(s, "vertex-format-misread", nullptr, "/tmp");
+  ASSERT_TRUE(s.before);
+  s.before();
+  EXPECT_EQ(injectedLayoutFault(), LayoutFault::FormatMisread);
+  Results r;
+  Case unorm;
+  unorm.scene.blases.emplace_back();
+  unorm.scene.blases[0].geometries.emplace_back();
+  unorm.scene.blases[0].geometries[0].vertex_format = VertexFormat::Unorm8x2;
+  EXPECT_EQ(s.after(unorm, Plan{}, r).find("not applicable"), std::string::npos);
+  EXPECT_EQ(injectedLayoutFault(), LayoutFault::None);
+  unorm.scene.blases[0].geometries[0].vertex_format = VertexFormat::Float3;
+  EXPECT_NE(s.after(unorm, Plan{}, r).find("no triangles in a format it misreads"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace rayspec

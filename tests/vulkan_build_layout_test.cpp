@@ -104,6 +104,40 @@ TEST(BuildLayout, FaultsTellTheBuildsTheWrongLayout) {
   EXPECT_EQ(layAabbs(boxes, b, LayoutFault::OffsetsIgnored).range.primitiveOffset, 0u);
 }
 
+// vertex-format-misread: the build is told a confused format over the
+// same bytes (unorm10x3: its R and B fields swapped in the bytes).
+TEST(BuildLayout, FormatMisreadTellsTheBuildAnotherFormat) {
+  Geometry g;
+  g.vertices = {{0.25f, 0.5f, 1.0f}, {0, 0, 0}, {1, 0, 0}};
+  g.vertex_format = VertexFormat::Unorm8x4;
+  const TriangleInputs right = layTriangles(g, AsBuild{}, LayoutFault::None);
+  EXPECT_EQ(right.format, VertexFormat::Unorm8x4);
+  const TriangleInputs unorm = layTriangles(g, AsBuild{}, LayoutFault::FormatMisread);
+  EXPECT_EQ(unorm.format, VertexFormat::Snorm8x4);
+  EXPECT_EQ(unorm.vertices, right.vertices) << "the same bytes";
+  EXPECT_EQ(unorm.stride, 4u);
+  g.vertex_format = VertexFormat::Float4;
+  const TriangleInputs float4 = layTriangles(g, AsBuild{}, LayoutFault::FormatMisread);
+  EXPECT_EQ(float4.format, VertexFormat::Float3);
+  EXPECT_EQ(float4.stride, 12u) << "float3's vertex size";
+  EXPECT_EQ(float4.vertices.size(), 48u);
+  g.vertex_format = VertexFormat::Unorm10x3;
+  const TriangleInputs packed = layTriangles(g, AsBuild{}, LayoutFault::FormatMisread);
+  EXPECT_EQ(packed.format, VertexFormat::Unorm10x3);
+  uint32_t word = 0;
+  std::memcpy(&word, packed.vertices.data(), 4);
+  EXPECT_EQ(word & 0x3FF, 1023u) << "z in R's bits";
+  EXPECT_EQ((word >> 10) & 0x3FF, 512u) << "y stays";
+  EXPECT_EQ((word >> 20) & 0x3FF, 256u) << "x in B's bits";
+  EXPECT_EQ(word >> 30, 3u);
+  g.vertex_format = VertexFormat::Half3;
+  const TriangleInputs half3 = layTriangles(g, AsBuild{}, LayoutFault::FormatMisread);
+  EXPECT_EQ(half3.format, VertexFormat::Half2);
+  EXPECT_EQ(half3.stride, 4u) << "half2's vertex size";
+  g.vertex_format = VertexFormat::Float3;
+  EXPECT_EQ(layTriangles(g, AsBuild{}, LayoutFault::FormatMisread).format, VertexFormat::Float3);
+}
+
 std::vector<VkAccelerationStructureInstanceKHR> numberedInstances(uint32_t n) {
   std::vector<VkAccelerationStructureInstanceKHR> out(n);
   for (uint32_t i = 0; i < n; ++i) {

@@ -101,6 +101,7 @@ std::string updateIgnored(Case& c, ModelOptions& o);
 std::string laterUpdatesIgnored(Case& c, ModelOptions& o);
 std::string copyUpdateIgnored(Case& c, ModelOptions& o);
 std::string vertexFormatIgnored(Case& c, ModelOptions& o);
+std::string vertexFormatConfused(Case& c, ModelOptions& o);
 std::string positionFetchWorldSpace(Case& c, ModelOptions& o);
 std::string localsLostAcrossCalls(Case& c, ModelOptions& o);
 std::string loopTripOffByOne(Case& c, ModelOptions& o);

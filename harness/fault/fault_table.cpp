@@ -236,6 +236,13 @@ std::vector<FaultImpl> pipelineMutations() {
        "the pipeline stack size a trace sets is ignored: callables nested deeper than the "
        "default stack's two frames do nothing",
        nullptr, stackSizeIgnored},
+  };
+}
+
+// Faults of acceleration structure copies, updates and vertex formats.
+std::vector<FaultImpl> structureMutations() {
+  using K = FaultKind;
+  return {
       {"copy-drops-instance", K::CaseMutation,
        "a cloned or compacted top level loses its last active instance", nullptr,
        copyDropsInstance},
@@ -249,13 +256,26 @@ std::vector<FaultImpl> pipelineMutations() {
        "an update of a cloned, compacted or deserialized structure changes nothing", nullptr,
        copyUpdateIgnored},
       {"vertex-format-ignored", K::CaseMutation,
-       "vertices in half or snorm16 formats are traced where the case wrote them, not where the "
-       "format puts them",
+       "vertices in half or normalized formats are traced where the case wrote them, not where "
+       "the format puts them",
        nullptr, vertexFormatIgnored},
+      {"vertex-format-confused", K::CaseMutation,
+       "each vertex format is read as another (unorm as snorm and back, float2 as half4 and "
+       "back, half2 as unorm16x2, float4 as float3, half3 as half2, snorm16x3 as snorm16x2, "
+       "unorm10x3 with R and B "
+       "swapped): the model's side of the layout fault vertex-format-misread",
+       nullptr, vertexFormatConfused},
       {"position-fetch-world-space", K::CaseMutation,
        "gl_HitTriangleVertexPositionsEXT gives the vertices through the instance transform "
        "(world space), not in object space",
        nullptr, positionFetchWorldSpace},
+  };
+}
+
+// Faults of shader code, launches and geometry numbering.
+std::vector<FaultImpl> codeAndLaunchMutations() {
+  using K = FaultKind;
+  return {
       {"locals-lost-across-calls", K::CaseMutation,
        "a shader's local variables read zero after its traceRayEXT, executeCallableEXT or "
        "reportIntersectionEXT (live values spilled and restored wrongly)",
@@ -348,7 +368,8 @@ const std::vector<FaultImpl>& faultImpls() {
   static const std::vector<FaultImpl> table = [] {
     std::vector<FaultImpl> all;
     for (auto part : {recordEdits, sceneAndFlagMutations, programMutations, sbtAndOrderMutations,
-                      pipelineMutations, rayQueryMutations, processFaults})
+                      pipelineMutations, structureMutations, codeAndLaunchMutations,
+                      rayQueryMutations, processFaults})
       for (FaultImpl& f : part()) all.push_back(std::move(f));
     return all;
   }();

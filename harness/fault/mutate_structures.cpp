@@ -1,6 +1,7 @@
 // Acceleration structure operations broken. R-AS-COPY: a copy of a top level (scene.build.copy:
 // clone or compact) that loses an instance, as a device whose copy drops the last instance record:
 // the scene as that device traces it.
+#include "case/vertex_format_misread.h"
 #include "fault/fault_impl.h"
 
 namespace rayspec {
@@ -59,6 +60,23 @@ std::string vertexFormatIgnored(Case& c, ModelOptions&) {
         ++n;
       }
   return n ? std::to_string(n) + " geometries traced at their unrounded positions" : "";
+}
+
+// R-VERTEX-FORMAT broken another way: a device that reads each geometry's
+// vertex bytes in a format it confuses with the real one
+// (case/vertex_format_misread.h): the positions such a build traces. On a
+// device, the layout fault vertex-format-misread does the same.
+std::string vertexFormatConfused(Case& c, ModelOptions&) {
+  size_t n = 0;
+  for (Blas& b : c.scene.blases)
+    for (Geometry& g : b.geometries)
+      if (g.kind == Geometry::Kind::Triangles && vertexFormatMisread(g.vertex_format)) {
+        g.vertices = misreadVertices(g.vertex_format, g.vertices);
+        ++n;
+      }
+  return n ? std::to_string(n) +
+                 " geometries traced as a build that confuses their format reads them"
+           : "";
 }
 
 // Empty geometries and acceleration structures broken: a device that leaves

@@ -83,7 +83,7 @@ std::vector<RuleFaults> pipelineRules() {
       {"R-STACK", {"stack-size-ignored"}, {}},
       {"R-AS-COPY", {"copy-drops-instance"}, {}},
       {"R-AS-UPDATE", {"update-ignored", "later-updates-ignored", "copy-update-ignored"}, {}},
-      {"R-VERTEX-FORMAT", {"vertex-format-ignored"}, {}},
+      {"R-VERTEX-FORMAT", {"vertex-format-ignored", "vertex-format-confused"}, {}},
       {"R-POSITION-FETCH", {"position-fetch-world-space"}, {}},
       {"R-LAUNCH-3D", {"launch-depth-lost", "zero-launch-runs", "wide-launch-truncated"}, {}},
       {"R-LIVE-STATE", {"locals-lost-across-calls"}, {}},

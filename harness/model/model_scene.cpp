@@ -351,6 +351,25 @@ bool verticesOrdinary(const Geometry& g) {
   return ordinary;
 }
 
+// Exact tier: per component, how far a device's vertices may lie from the
+// model's: the decode of normalized codes (vertexDecodeError: c / (2^b - 1)
+// is no float, and a device may round it another way), carried through the
+// geometry transform, and that transform's own roundings.
+DVec3 deviceVertexError(const Geometry& g) {
+  const double decode = vertexDecodeError(g.vertex_format);
+  const uint32_t n = vertexComponents(g.vertex_format);
+  DVec3 e{};
+  if (!g.transform) {
+    for (uint32_t k = 0; k < n; ++k) e[k] = decode;
+    return e;
+  }
+  const Transform& m = *g.transform;
+  e = geometryVertexError(m, g.vertices);
+  for (int k = 0; k < 3; ++k)
+    for (uint32_t j = 0; j < n; ++j) e[k] += std::fabs(double(m[k * 4 + j])) * decode;
+  return e;
+}
+
 // The model's view of one geometry of BLAS bi; its per-primitive triangles
 // only where someone reads them (candidates, own tests, an unusable index
 // buffer).
@@ -362,8 +381,7 @@ void describeGeometry(ModelGeometry& mg, const Geometry& g, size_t bi, size_t gi
   mg.index = static_cast<uint32_t>(gi);
   mg.tier = tier;
   mg.ray_pad = ray_pad;
-  if (tier == ModelTier::Exact && g.transform)
-    mg.vertex_err = geometryVertexError(*g.transform, g.vertices);
+  if (tier == ModelTier::Exact) mg.vertex_err = deviceVertexError(g);
   if (g.kind == Geometry::Kind::Aabbs) {
     mg.aabbs = g.aabbs;
     mg.count = static_cast<uint32_t>(g.aabbs.size());

@@ -6,6 +6,7 @@
 
 #include "fault/planted_fault.h"
 #include "model/model_engine.h"
+#include "vulkan/build_layout.h"
 #include "vulkan/device_errors.h"
 #include "vulkan/vk_fault_hook.h"
 
@@ -23,21 +24,33 @@ void armVulkanError(Side& s, const std::string& fault, const InjectedVkError& e)
   };
 }
 
+// Whether layout fault f changes what this case's builds read, and if not,
+// why.
+std::string layoutFaultMisses(const Case& c, LayoutFault f) {
+  const AsBuild& b = c.scene.build;
+  if (f == LayoutFault::FormatMisread) {
+    for (const Blas& blas : c.scene.blases)
+      for (const Geometry& g : blas.geometries)
+        if (g.kind == Geometry::Kind::Triangles && vertexFormatMisread(g.vertex_format)) return "";
+    return "no triangles in a format it misreads (triangles.vertex_format)";
+  }
+  const bool applies = f == LayoutFault::StrideIgnored    ? b.vertex_stride || b.aabb_stride
+                       : f == LayoutFault::OffsetsIgnored ? b.data_offsets || b.first_vertex
+                                                          : b.instances_as_pointers;
+  return applies ? "" : "the case asks for no such layout (scene.build)";
+}
+
 // The builds lay their inputs out wrong for this case only. Where the case
 // asks for no layout the fault would change, it says so.
 void armLayoutFault(Side& s, const std::string& fault, LayoutFault f) {
   s.before = [f] {
     injectLayoutFault(f);
   };
-  s.after = [fault](const Case& c, const Plan&, Results&) -> std::string {
+  s.after = [fault, f](const Case& c, const Plan&, Results&) -> std::string {
     injectLayoutFault(LayoutFault::None);
-    const AsBuild& b = c.scene.build;
-    const bool applies = fault == "stride-ignored"    ? b.vertex_stride || b.aabb_stride
-                         : fault == "offsets-ignored" ? b.data_offsets || b.first_vertex
-                                                      : b.instances_as_pointers;
-    return (applies ? "planted fault " : "planted fault not applicable: ") + fault +
-           (applies ? ": the builds misread the input layout"
-                    : ": the case asks for no such layout (scene.build)");
+    const std::string misses = layoutFaultMisses(c, f);
+    return misses.empty() ? "planted fault " + fault + ": the builds misread the input layout"
+                          : "planted fault not applicable: " + fault + ": " + misses;
   };
 }
 

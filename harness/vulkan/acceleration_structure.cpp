@@ -36,20 +36,11 @@ Result<VkAccelerationStructureKHR> createStructure(const VulkanContext& ctx,
 }
 
 VkFormat vkVertexFormat(VertexFormat f) {
-  switch (f) {
-    case VertexFormat::Float3:
-      return VK_FORMAT_R32G32B32_SFLOAT;
-    case VertexFormat::Float2:
-      return VK_FORMAT_R32G32_SFLOAT;
-    case VertexFormat::Half4:
-      return VK_FORMAT_R16G16B16A16_SFLOAT;
-    case VertexFormat::Half2:
-      return VK_FORMAT_R16G16_SFLOAT;
-    case VertexFormat::Snorm16x4:
-      return VK_FORMAT_R16G16B16A16_SNORM;
-    case VertexFormat::Snorm16x2:
-      return VK_FORMAT_R16G16_SNORM;
-  }
+#define RAYSPEC_VK_VERTEX_FORMAT(id, name, vk, ...) \
+  case VertexFormat::id:                            \
+    return VK_FORMAT_##vk;
+  switch (f) { RAYSPEC_VERTEX_FORMATS(RAYSPEC_VK_VERTEX_FORMAT) }
+#undef RAYSPEC_VK_VERTEX_FORMAT
   return VK_FORMAT_R32G32B32_SFLOAT;
 }
 
@@ -113,7 +104,7 @@ void describeBlas(const Blas& blas, const AsBuild& layout, InputPacker& packer, 
       geo.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
       auto& t = geo.geometry.triangles;
       t.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR;
-      t.vertexFormat = vkVertexFormat(g.vertex_format);
+      t.vertexFormat = vkVertexFormat(in.format);
       t.vertexStride = in.stride;
       t.maxVertex = in.max_vertex;
       t.indexType = g.indices.empty() ? VK_INDEX_TYPE_NONE_KHR

@@ -8,11 +8,12 @@ namespace rayspec {
 namespace {
 
 // Junk vertex bytes: NaN in float and half formats (an inactive triangle,
-// R-INACTIVE); snorm16 has no NaN, so its largest value, 1.0, in every
-// component (0x7FFF little-endian).
+// R-INACTIVE); normalized codes have no NaN, so their largest value, 1.0, in
+// every component (all ones; an snorm code's top byte 0x7F, little-endian).
 void fillVertexJunk(VertexFormat f, uint8_t* at, size_t bytes) {
-  const bool snorm = f == VertexFormat::Snorm16x4 || f == VertexFormat::Snorm16x2;
-  for (size_t i = 0; i < bytes; ++i) at[i] = snorm && i % 2 ? 0x7F : 0xFF;
+  const bool snorm = vertexEncoding(f) == VertexEncoding::Snorm;
+  const size_t unit = vertexComponentBytes(f);
+  for (size_t i = 0; i < bytes; ++i) at[i] = snorm && i % unit == unit - 1 ? 0x7F : 0xFF;
 }
 
 // `count` items of `item` bytes from `tight`, each at `stride` bytes from the
@@ -58,8 +59,12 @@ TriangleInputs layTriangles(const Geometry& g, const AsBuild& build, LayoutFault
   auto junk = [&g](uint8_t* at, size_t n) {
     fillVertexJunk(g.vertex_format, at, n);
   };
-  out.vertices =
-      spread(encodeVertices(g.vertex_format, g.vertices), tight, out.stride, first, junk);
+  std::vector<uint8_t> encoded = encodeVertices(g.vertex_format, g.vertices);
+  VertexFormatMisread misread{g.vertex_format};  // read right
+  if (fault == LayoutFault::FormatMisread)
+    misread = vertexFormatMisread(g.vertex_format).value_or(misread);
+  misreadBytes(misread, encoded);
+  out.vertices = spread(encoded, tight, out.stride, first, junk);
   out.max_vertex = g.vertices.empty() ? 0 : first + static_cast<uint32_t>(g.vertices.size()) - 1;
   // Non-indexed, primitiveOffset moves the vertices; indexed, the indices.
   const size_t junk_bytes = offsets ? kJunkOffsetBytes : 0;
@@ -82,6 +87,8 @@ TriangleInputs layTriangles(const Geometry& g, const AsBuild& build, LayoutFault
     out.range.transformOffset = offsets && g.transform ? kJunkTransformBytes : 0;
   }
   if (fault == LayoutFault::StrideIgnored) out.stride = tight;
+  out.format = misread.format;
+  out.stride = misreadStride(g.vertex_format, misread, out.stride);  // never past the buffer
   return out;
 }
 

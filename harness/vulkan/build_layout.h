@@ -15,9 +15,11 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "case/case.h"
+#include "case/vertex_format_misread.h"
 #include "vulkan/vk_fault_hook.h"
 
 namespace rayspec {
@@ -28,10 +30,12 @@ constexpr uint32_t kJunkTransformBytes = 48;  // transformOffset: one junk matri
 constexpr uint32_t kJunkBoxes = 2;            // primitiveOffset of boxes, in strides
 
 // One triangle geometry's inputs: the bytes of its vertices, indices (empty:
-// none) and transform (empty: none), its stride, maxVertex and range (the
-// offsets relative to the start of each piece's bytes).
+// none) and transform (empty: none), the vertex format and stride the build
+// is told, maxVertex and range (the offsets relative to the start of each
+// piece's bytes).
 struct TriangleInputs {
   std::vector<uint8_t> vertices, indices, transform;
+  VertexFormat format = VertexFormat::Float3;
   uint32_t stride = 0;
   uint32_t max_vertex = 0;
   VkAccelerationStructureBuildRangeInfoKHR range{};

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "base/hex_text.h"
+#include "vulkan/acceleration_structure.h"
 #include "vulkan/context.h"
 #include "vulkan/library_group_handles.h"
 #include "vulkan/position_fetch.h"
@@ -56,38 +57,16 @@ void readExtensions(VkPhysicalDevice physical, DeviceInfo& d) {
       d.pipeline_library && hasDeviceExtension(exts, kLibraryGroupHandlesExtension);
 }
 
-// Vertex formats a device may build triangles from: rayspec's own (named as
-// in triangles.vertex_format) and others devices report.
-struct NamedFormat {
-  VkFormat format;
-  const char* name;
-};
-constexpr NamedFormat kVertexFormatCandidates[] = {
-    {VK_FORMAT_R32G32B32_SFLOAT, "float3"},
-    {VK_FORMAT_R32G32_SFLOAT, "float2"},
-    {VK_FORMAT_R16G16B16A16_SFLOAT, "half4"},
-    {VK_FORMAT_R16G16_SFLOAT, "half2"},
-    {VK_FORMAT_R16G16B16A16_SNORM, "snorm16x4"},
-    {VK_FORMAT_R16G16_SNORM, "snorm16x2"},
-    {VK_FORMAT_R32G32B32A32_SFLOAT, "R32G32B32A32_SFLOAT"},
-    {VK_FORMAT_R16G16B16_SFLOAT, "R16G16B16_SFLOAT"},
-    {VK_FORMAT_R16G16B16_SNORM, "R16G16B16_SNORM"},
-    {VK_FORMAT_R16G16B16A16_UNORM, "R16G16B16A16_UNORM"},
-    {VK_FORMAT_R16G16_UNORM, "R16G16_UNORM"},
-    {VK_FORMAT_R8G8B8A8_SNORM, "R8G8B8A8_SNORM"},
-    {VK_FORMAT_R8G8_SNORM, "R8G8_SNORM"},
-    {VK_FORMAT_R8G8B8A8_UNORM, "R8G8B8A8_UNORM"},
-    {VK_FORMAT_R8G8_UNORM, "R8G8_UNORM"},
-    {VK_FORMAT_A2B10G10R10_UNORM_PACK32, "A2B10G10R10_UNORM_PACK32"},
-};
-
+// Vertex formats a device may build triangles from, named as in
+// triangles.vertex_format: every format the Vulkan specification lets a
+// device list for acceleration structures is one of rayspec's.
 void readVertexFormats(VkPhysicalDevice physical, DeviceInfo& d) {
   if (!d.acceleration_structure_extension) return;
-  for (const NamedFormat& f : kVertexFormatCandidates) {
+  for (VertexFormat f : enumValues<VertexFormat>()) {
     VkFormatProperties props{};
-    vkGetPhysicalDeviceFormatProperties(physical, f.format, &props);
+    vkGetPhysicalDeviceFormatProperties(physical, vkVertexFormat(f), &props);
     if (props.bufferFeatures & VK_FORMAT_FEATURE_ACCELERATION_STRUCTURE_VERTEX_BUFFER_BIT_KHR)
-      d.vertex_formats.push_back(f.name);
+      d.vertex_formats.push_back(vertexFormatName(f));
   }
 }
 

@@ -36,11 +36,17 @@ std::optional<VkResult> injectedVkError(const char* call);
 //   stride-ignored     vertexStride / AABB stride of the tightly packed data
 //   offsets-ignored    primitiveOffset, firstVertex, transformOffset all 0
 //   pointers-reversed  each level's instance pointers in reverse order
+//   vertex-format-misread  vertices read in a confused format (unorm as
+//                      snorm and back, float2 as half4 and back, float4 as
+//                      float3, half3 as half2, snorm16x3 as snorm16x2,
+//                      half2 as unorm16x2,
+//                      unorm10x3's R and B swapped: build_layout.h)
 #define RAYSPEC_LAYOUT_FAULTS(X)                      \
   X(None, "")                          /* no fault */ \
   X(StrideIgnored, "stride-ignored")   /* tight */    \
   X(OffsetsIgnored, "offsets-ignored") /* zeros */    \
-  X(PointersReversed, "pointers-reversed")
+  X(PointersReversed, "pointers-reversed")            \
+  X(FormatMisread, "vertex-format-misread")
 enum class LayoutFault { RAYSPEC_LAYOUT_FAULTS(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(LayoutFault, RAYSPEC_LAYOUT_FAULTS);
 
