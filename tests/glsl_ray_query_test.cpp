@@ -28,7 +28,7 @@ TEST(RayQueryGlsl, RaygenRunsTheLoopAndTheInlinedPrograms) {
         "rayQueryGetIntersectionInstanceIdEXT(rs_rq, false)"})
     EXPECT_NE(g.find(needle), std::string::npos) << needle;
   // No stage's own interface: the inlined programs read the query.
-  const size_t inlined = g.find("// ---- the hit group and miss programs, inlined ----");
+  const size_t inlined = g.find("// ---- the hit group and miss programs, inlined at level 1 ----");
   ASSERT_NE(inlined, std::string::npos);
   for (const char* stage_only : {"gl_PrimitiveID", "gl_InstanceID", "gl_HitKindEXT",
                                  "gl_ObjectRayOriginEXT", "reportIntersectionEXT"})

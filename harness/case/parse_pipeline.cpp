@@ -173,16 +173,20 @@ void parseHitAttribute(YamlReader& r, const YAML::Node& v, Pipeline& p) {
 
 }  // namespace
 
-// pipeline.traces: trace_ray (traceRayEXT, the default) or ray_query (every
-// trace a ray query loop, R-RQ-EQUIV); what the ray query form cannot express
-// is checked with the whole case (parse_case.cpp).
+// pipeline.traces: trace_ray (traceRayEXT, the default), ray_query (every
+// trace a ray query loop, R-RQ-EQUIV) or ray_query_in_hit (the traces of
+// closest-hit and miss stages alone); what the ray query forms cannot
+// express is checked with the whole case (parse_case.cpp).
 void parseTraces(YamlReader& r, const YAML::Node& v, Pipeline& p) {
   const std::optional<std::string> s = r.string(v, "pipeline.traces");
   if (!s) return;
   if (*s == "ray_query")
     p.ray_query = true;
+  else if (*s == "ray_query_in_hit")
+    p.ray_query_in_hit = true;
   else if (*s != "trace_ray")
-    r.error(v, "pipeline.traces", "must be trace_ray or ray_query, not '" + *s + "'");
+    r.error(v, "pipeline.traces",
+            "must be trace_ray, ray_query or ray_query_in_hit, not '" + *s + "'");
 }
 
 void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {

@@ -56,6 +56,13 @@ struct StageContext {
   // report calls the group's report function. `group`: its hit group.
   bool inlined = false;
   uint32_t group = 0;
+  // Inlined: the level of nested queries it runs at (1: the host stage's
+  // own traces), its names suffixed from level 2 on (inlined_levels.h).
+  uint32_t level = 1;
+  uint32_t levels = 1;  // the host's levels: a trace at the last is skipped
+  // Inside a function (pipeline.functions) the program invokes: an inlined
+  // any-hit's verdict goes through rs_ah_verdict (inlined_functions.h).
+  bool in_function = false;
 };
 
 }  // namespace rayspec

@@ -27,6 +27,8 @@ namespace rayspec {
   X(Update, "update")                                                                        \
   /* every trace a ray query loop in raygen (case/ray_query_inlining.h) */                   \
   X(RayQuery, "ray-query")                                                                   \
+  /* closest-hit's and miss's traces ray query loops there (case/ray_query_inlining.h) */    \
+  X(RayQueryInHit, "ray-query-in-hit")                                                       \
   /* build inputs behind pointers, at offsets, at padded strides (scene.build layouts) */    \
   X(Layouts, "layouts")
 enum class FeaturePath { RAYSPEC_FEATURE_PATHS(RAYSPEC_ENUMERATOR) };
