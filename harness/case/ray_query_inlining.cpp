@@ -75,9 +75,10 @@ std::string commonObstacle(const Case& c, bool own) {
   if ((p.ray_query || p.ray_query_in_hit) && !own) return "the case traces by ray query itself";
   if (!c.expected_rejections.empty()) return "the case expects a shader to be rejected";
   if (p.payload_words.size() > 1) return "it declares several payload types";
-  // The inlined programs read the host's constants.
+  // The inlined programs read the host's constants; callables stay stages.
   for (const auto& [shader, values] : p.specialize)
-    if (shader.rfind("raygen", 0) != 0) return "it specializes a constant for " + shader + " alone";
+    if (shader.rfind("miss", 0) == 0 || shader.rfind("hit", 0) == 0)
+      return "it specializes a constant for " + shader + " alone";
   return notInlinable(p);
 }
 
