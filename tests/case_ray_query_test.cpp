@@ -37,15 +37,29 @@ std::string tracesCase(const std::string& traces,
 TEST(RayQueryCase, TracesTakesEitherForm) {
   EXPECT_TRUE(parsedCase(tracesCase("ray_query")).pipeline.ray_query);
   EXPECT_FALSE(parsedCase(tracesCase("trace_ray")).pipeline.ray_query);
-  expectError(parse(tracesCase("inline")), 9, "pipeline.traces", "must be trace_ray, ray_query");
+  expectError(parse(tracesCase("inline")), 9, "pipeline.traces",
+              "trace_ray, ray_query, ray_query_compute or ray_query_in_hit");
 }
 
-TEST(RayQueryCase, WhatTheFormCannotExpressIsAnErrorAtTheField) {
+// A closest-hit that traces: nested queries in raygen, or the closest-hit's
+// own queries; the in-hit form needs such a trace.
+TEST(RayQueryCase, NestedTracesTakeBothQueryForms) {
   const std::string nested = "[trace: {origin: [0, 0, 1], direction: [0, 0, -1]}]";
-  expectError(parse(tracesCase("ray_query", nested)), 9, "pipeline.traces",
-              "closest-hit or miss traces");
-  const ParseResult plain = parse(tracesCase("trace_ray", nested));
-  EXPECT_TRUE(plain.value.has_value()) << allErrors(plain);
+  EXPECT_TRUE(parsedCase(tracesCase("ray_query", nested)).pipeline.ray_query);
+  const Case in_hit = parsedCase(tracesCase("ray_query_in_hit", nested));
+  EXPECT_TRUE(in_hit.pipeline.ray_query_in_hit);
+  EXPECT_FALSE(in_hit.pipeline.ray_query);
+  expectError(parse(tracesCase("ray_query_in_hit")), 9, "pipeline.traces",
+              "ray_query_in_hit cannot express this case: no closest-hit or miss traces");
+}
+
+// Two trace sites in closest-hit over 31 levels would inline 2^31 copies.
+TEST(RayQueryCase, TooManyInlinedCopiesIsAnErrorAtTheField) {
+  std::string text = tracesCase("ray_query",
+                                "[trace: {origin: [0, 0, 1], direction: [0, 0, -1]}, "
+                                "trace: {origin: [0, 0, 2], direction: [0, 0, -1]}]");
+  text.replace(text.find("max_recursion: 2"), 16, "max_recursion: 31");
+  expectError(parse(text), 9, "pipeline.traces", "more than 64 copies");
 }
 
 }  // namespace

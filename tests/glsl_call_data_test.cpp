@@ -59,7 +59,7 @@ TEST(GlslCallData, EachLocationHasItsOwnVariableAndCompiles) {
             std::string::npos);
   EXPECT_NE(callable0.find("executeCallableEXT(rs_index, 3);"), std::string::npos);
   for (const GeneratedShader* s : {&g.raygen, &g.callables[0], &g.callables[1], &g.callables[2]}) {
-    const SpirvResult spirv = compileGlsl(s->glsl, s->stage);
+    const SpirvResult spirv = compileGlsl(s->glsl, s->stage, s->compute);
     EXPECT_TRUE(spirv.error.empty()) << s->name << ": " << spirv.error;
   }
 }

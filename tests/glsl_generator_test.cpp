@@ -215,7 +215,7 @@ size_t compileShuffled(std::map<Stage, std::vector<T>>& lists, int rounds, uint3
     for (const GeneratedShader* sh : everyStage(g)) {
       if (!seen.insert(sh->glsl).second) continue;
       ++modules;
-      const SpirvResult r = compileGlsl(sh->glsl, sh->stage);
+      const SpirvResult r = compileGlsl(sh->glsl, sh->stage, sh->compute);
       EXPECT_EQ(r.error, "") << "round " << round << ", " << sh->name;
       keepModule(r.words);
     }

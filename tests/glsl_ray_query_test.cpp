@@ -28,7 +28,7 @@ TEST(RayQueryGlsl, RaygenRunsTheLoopAndTheInlinedPrograms) {
         "rayQueryGetIntersectionInstanceIdEXT(rs_rq, false)"})
     EXPECT_NE(g.find(needle), std::string::npos) << needle;
   // No stage's own interface: the inlined programs read the query.
-  const size_t inlined = g.find("// ---- the hit group and miss programs, inlined ----");
+  const size_t inlined = g.find("// ---- the hit group and miss programs, inlined at level 1 ----");
   ASSERT_NE(inlined, std::string::npos);
   for (const char* stage_only : {"gl_PrimitiveID", "gl_InstanceID", "gl_HitKindEXT",
                                  "gl_ObjectRayOriginEXT", "reportIntersectionEXT"})
@@ -57,6 +57,72 @@ TEST(RayQueryGlsl, ThePipelineFormIsUnchanged) {
   const std::string g = generateGlsl(c, derivePlan(c)).raygen.glsl;
   EXPECT_NE(g.find("traceRayEXT("), std::string::npos);
   EXPECT_EQ(g.find("rayQuery"), std::string::npos);
+}
+
+size_t countIn(const std::string& text, const std::string& needle) {
+  size_t n = 0;
+  for (size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
+  return n;
+}
+
+// recursion/depth-three (max_recursion 3, closest-hit traces): three levels,
+// each its own query (level L > 1 by #define), loop and trace function, the
+// deepest first; the last level's trace is skipped, as the model skips it.
+TEST(RayQueryGlsl, NestedTracesAreOneQueryPerLevel) {
+  Case c = suiteCaseFile("recursion/depth-three");
+  c.pipeline.ray_query = true;
+  const std::string g = generateGlsl(c, derivePlan(c)).raygen.glsl;
+  EXPECT_EQ(countIn(g, "while (rayQueryProceedEXT(rs_rq))"), 3u);
+  EXPECT_EQ(countIn(g, "rayQueryEXT rs_rq;"), 3u);
+  for (const char* needle :
+       {"#define rs_rq rs_rq_d2", "#define rs_rq rs_rq_d3", "void rs_trace_d3(",
+        "void rs_trace_d2(", "void rs_trace(", "void rs_closest_hit_0_d2(",
+        "void rs_closest_hit_0_d3(", "beyond pipeline.max_recursion"})
+    EXPECT_NE(g.find(needle), std::string::npos) << needle;
+  EXPECT_LT(g.find("void rs_trace_d3("), g.find("void rs_trace_d2("));
+  EXPECT_LT(g.find("void rs_trace_d2("), g.find("void rs_trace("));
+  // Level 1's closest-hit calls level 2's trace, level 2's level 3's.
+  EXPECT_NE(g.find("rs_trace_d2(rs_payload_0"), std::string::npos);
+  EXPECT_NE(g.find("rs_trace_d3(rs_payload_0"), std::string::npos);
+  EXPECT_EQ(g.find("traceRayEXT("), std::string::npos);
+  const SpirvResult r = compileGlsl(g, Stage::Raygen);
+  EXPECT_TRUE(r.error.empty()) << r.error;
+}
+
+// ray_query_in_hit: raygen keeps traceRayEXT; the closest-hit hosts its own
+// trace's query and max_recursion - 1 levels of inlined programs.
+TEST(RayQueryGlsl, InHitTheClosestHitHostsItsTraces) {
+  Case c = suiteCaseFile("recursion/depth-three");
+  c.pipeline.ray_query_in_hit = true;
+  const GeneratedPipeline g = generateGlsl(c, derivePlan(c));
+  EXPECT_NE(g.raygen.glsl.find("traceRayEXT("), std::string::npos);
+  EXPECT_EQ(g.raygen.glsl.find("rayQuery"), std::string::npos);
+  const std::string& chit = g.hit_groups.at(0).closest_hit->glsl;
+  EXPECT_EQ(chit.find("traceRayEXT("), std::string::npos);
+  EXPECT_EQ(countIn(chit, "while (rayQueryProceedEXT(rs_rq))"), 2u);
+  EXPECT_NE(chit.find("rs_trace(rs_payload_0"), std::string::npos);
+  const SpirvResult r = compileGlsl(chit, Stage::ClosestHit);
+  EXPECT_TRUE(r.error.empty()) << r.error;
+}
+
+// An any-hit's ignore and terminate inside an invoked function: the function
+// sets the verdict and returns, the any-hit returns it after the invoke.
+TEST(RayQueryGlsl, FunctionsOfAnInlinedAnyHitPassTheVerdictBack) {
+  const std::optional<CaseFile> f = suiteCase("control/any-hit-functions/nested-stop-1");
+  ASSERT_TRUE(f);
+  const ParseResult parsed = loadSuiteCase(*f);
+  ASSERT_TRUE(parsed.value);
+  Case c = *parsed.value;
+  c.pipeline.ray_query = true;
+  const std::string g = generateGlsl(c, derivePlan(c)).raygen.glsl;
+  for (const char* needle :
+       {"void rs_fn_inner_hit0_any_hit(uint v_layer, uint v_stop, inout RsPayload payload",
+        "inout uint rs_ah_verdict)", "rs_ah_verdict = kRsIgnore; return;",
+        "rs_ah_verdict = kRsTerminate; return;", "if (rs_ah_verdict != kRsAccept) return;",
+        "if (rs_ah_verdict != kRsAccept) return rs_ah_verdict;", "uint rs_ah_verdict = kRsAccept;"})
+    EXPECT_NE(g.find(needle), std::string::npos) << needle;
+  const SpirvResult r = compileGlsl(g, Stage::Raygen);
+  EXPECT_TRUE(r.error.empty()) << r.error;
 }
 
 }  // namespace

@@ -26,7 +26,7 @@ TEST(GenerateGlslSuite, EveryStageOfEveryCaseIsValidSpirv) {
     for (const GeneratedShader* sh : everyStage(g)) {
       if (!seen.insert(std::to_string(int(sh->stage)) + sh->glsl).second) continue;
       ++modules;
-      SpirvResult r = compileGlsl(sh->glsl, sh->stage);
+      SpirvResult r = compileGlsl(sh->glsl, sh->stage, sh->compute);
       // A shader the case expects the compiler to reject (expect_rejected) must not compile.
       const auto& rejections = parsed.value->expected_rejections;
       const bool rejected =

@@ -332,7 +332,7 @@ TEST_F(GenerateGlsl, EveryStageCompilesToValidSpirv) {
   EXPECT_EQ(g.hit_groups.size(), 2u);
   EXPECT_EQ(g.hit_groups[1].intersection->name, "hit1.intersection");
   for (const auto& sh : shaders) {
-    SpirvResult r = compileGlsl(sh.glsl, sh.stage);
+    SpirvResult r = compileGlsl(sh.glsl, sh.stage, sh.compute);
     EXPECT_TRUE(r.error.empty()) << sh.name << ":\n" << r.error;
     EXPECT_FALSE(r.words.empty()) << sh.name;
   }
@@ -459,7 +459,7 @@ TEST(GenerateGlslMinimal, NothingThePlanDoesNotName) {
   EXPECT_FALSE(g.hit_groups[0].any_hit.has_value()) << "plan.any_hit is false";
   ASSERT_TRUE(g.hit_groups[0].closest_hit.has_value());
   for (const auto& sh : allShaders(g)) {
-    SpirvResult r = compileGlsl(sh.glsl, sh.stage);
+    SpirvResult r = compileGlsl(sh.glsl, sh.stage, sh.compute);
     ASSERT_TRUE(r.error.empty()) << sh.name << ":\n" << r.error;
     const std::set<uint32_t> bindings = spirvBindings(r.words);
     if (sh.stage == Stage::Raygen)
@@ -522,7 +522,7 @@ TEST_F(GenerateGlsl, ShaderRecordBlockHoldsTheRecordDataWords) {
     if (sh.glsl.find("#define RS_USE_SHADER_RECORD") == std::string::npos) continue;
     EXPECT_NE(sh.glsl.find("#define RS_SHADER_RECORD_WORDS 6\n"), std::string::npos) << sh.name;
     EXPECT_NE(sh.glsl.find("uint words[RS_SHADER_RECORD_WORDS];"), std::string::npos) << sh.name;
-    SpirvResult r = compileGlsl(sh.glsl, sh.stage);
+    SpirvResult r = compileGlsl(sh.glsl, sh.stage, sh.compute);
     EXPECT_TRUE(r.error.empty()) << sh.name << ":\n" << r.error;
   }
 }

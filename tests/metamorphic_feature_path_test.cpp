@@ -34,7 +34,7 @@ TEST(FeaturePath, NamesRoundTrip) {
   for (FeaturePath p :
        {FeaturePath::Indirect, FeaturePath::Indirect2, FeaturePath::Libraries, FeaturePath::Clone,
         FeaturePath::Compact, FeaturePath::Serialize, FeaturePath::Update, FeaturePath::RayQuery,
-        FeaturePath::RayQueryCompute, FeaturePath::Layouts})
+        FeaturePath::RayQueryCompute, FeaturePath::RayQueryInHit, FeaturePath::Layouts})
     EXPECT_EQ(featurePathFromName(featurePathName(p)), p) << featurePathName(p);
   EXPECT_FALSE(featurePathFromName("sideways"));
   EXPECT_NE(featurePathNames().find("serialize"), std::string::npos);
@@ -78,8 +78,12 @@ TEST(FeaturePath, RayQueryRefusesWhatItCannotInline) {
   Stmt trace;
   trace.kind = Stmt::Kind::Trace;
   nested.pipeline.hit_groups[0].closest_hit->push_back(trace);
+  nested.pipeline.hit_groups[0].closest_hit->push_back(trace);
+  nested.pipeline.max_recursion = 2;  // 1 + 2 copies of the inlined programs
+  EXPECT_TRUE(valueOrMessage(throughPath(nested, FeaturePath::RayQuery), &why)) << why;
+  nested.pipeline.max_recursion = 7;  // 1 + 2 + ... + 64
   EXPECT_FALSE(valueOrMessage(throughPath(nested, FeaturePath::RayQuery), &why));
-  EXPECT_NE(why.find("closest-hit or miss traces"), std::string::npos) << why;
+  EXPECT_NE(why.find("more than 64 copies"), std::string::npos) << why;
   Case typed = simpleCase();
   typed.pipeline.payload_words = {0, 2};
   EXPECT_FALSE(valueOrMessage(throughPath(typed, FeaturePath::RayQuery), &why));
@@ -88,6 +92,25 @@ TEST(FeaturePath, RayQueryRefusesWhatItCannotInline) {
   Case flagged = simpleCase();
   flagged.pipeline.flags = kPipelineSkipTriangles;
   EXPECT_TRUE(valueOrMessage(throughPath(flagged, FeaturePath::RayQuery), &why)) << why;
+}
+
+// The in-hit form: only a case whose closest-hit or miss traces goes, and
+// raygen keeps traceRayEXT (ray_query stays off).
+TEST(FeaturePath, RayQueryInHitTakesCasesThatTraceFromHitOrMiss) {
+  std::string why;
+  EXPECT_FALSE(valueOrMessage(throughPath(simpleCase(), FeaturePath::RayQueryInHit), &why));
+  EXPECT_NE(why.find("no closest-hit or miss traces"), std::string::npos) << why;
+  Case nested = simpleCase();
+  Stmt trace;
+  trace.kind = Stmt::Kind::Trace;
+  nested.pipeline.miss[0].push_back(trace);
+  nested.pipeline.max_recursion = 3;
+  const Case in_hit = *valueOrMessage(throughPath(nested, FeaturePath::RayQueryInHit), &why);
+  EXPECT_TRUE(in_hit.pipeline.ray_query_in_hit);
+  EXPECT_FALSE(in_hit.pipeline.ray_query);
+  EXPECT_FALSE(valueOrMessage(throughPath(in_hit, FeaturePath::RayQueryInHit), &why));
+  EXPECT_NE(why.find("by ray query itself"), std::string::npos) << why;
+  EXPECT_FALSE(valueOrMessage(throughPath(in_hit, FeaturePath::RayQuery), &why));
 }
 
 TEST(FeaturePath, LayoutsTurnsOnEveryLayout) {

@@ -232,5 +232,20 @@ TEST(BaselineGate, AThroughPathAddsItsOwnEntries) {
   EXPECT_EQ(b.expected.at("fam/new"), Status::Crash);
 }
 
+// ray-query-compute reads ray-query's file unless it has one of its own.
+TEST(BaselineGate, TheComputePathReadsTheRayQueryPathsFile) {
+  std::string error;
+  const std::string csv = writeFile("queries.csv", "fam/known,Fail\n");
+  writeFile("queries-through-ray-query.csv", "fam/known,Pass\n");
+  const Baseline b = orError(loadBaselineSet(csv, "", "", "ray-query-compute"), &error);
+  EXPECT_EQ(error, "");
+  EXPECT_NE(b.through_file.find("queries-through-ray-query.csv"), std::string::npos);
+  EXPECT_EQ(b.expected.at("fam/known"), Status::Pass);
+  writeFile("queries-through-ray-query-compute.csv", "fam/known,Crash\n");
+  const Baseline own = orError(loadBaselineSet(csv, "", "", "ray-query-compute"), &error);
+  EXPECT_EQ(own.expected.at("fam/known"), Status::Crash);
+  EXPECT_EQ(orError(loadBaselineSet(csv, "", "", "ray-query-in-hit"), &error).through_file, "");
+}
+
 }  // namespace
 }  // namespace rayspec

@@ -310,6 +310,10 @@ struct Pipeline {
   // gl_LaunchSizeEXT are read from the dispatch (glsl/emit_compute.h), no ray
   // tracing pipeline is made, and the launch is one vkCmdDispatch.
   bool from_compute = false;
+  // Raygen keeps traceRayEXT; each trace of a closest-hit or miss is a ray
+  // query loop in that stage running the programs inlined, as above
+  // (pipeline.traces: ray_query_in_hit, --through ray-query-in-hit).
+  bool ray_query_in_hit = false;
   // Several raygen groups (pipeline.raygens): `raygen` is group raygen_group,
   // other_raygens the rest in group order. The raygen region's record
   // selects raygen_group (R-RAYGEN-REGION); the others never run.

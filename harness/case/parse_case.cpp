@@ -79,10 +79,13 @@ void judgeStaticUndefined(YamlReader& r, Case& c) {
 // The case's name becomes folder names of a run (OUT/<family>/<name>/).
 // pipeline.traces: ray_query in a case its ray query form cannot express.
 void checkRayQueryForm(YamlReader& r, const Case& c, const YAML::Node& pipeline) {
-  if (!c.pipeline.ray_query) return;
-  if (const std::string why = rayQueryObstacle(c, true); !why.empty())
+  if (!c.pipeline.ray_query && !c.pipeline.ray_query_in_hit) return;
+  const std::string why =
+      c.pipeline.ray_query ? rayQueryObstacle(c, true) : rayQueryInHitObstacle(c, true);
+  if (!why.empty())
     r.error(YamlReader::get(pipeline, "traces"), "pipeline.traces",
-            "ray_query cannot express this case: " + why);
+            std::string(c.pipeline.ray_query ? "ray_query" : "ray_query_in_hit") +
+                " cannot express this case: " + why);
 }
 
 void checkCaseName(YamlReader& r, const Case& c) {

@@ -174,18 +174,22 @@ void parseHitAttribute(YamlReader& r, const YAML::Node& v, Pipeline& p) {
 }  // namespace
 
 // pipeline.traces: trace_ray (traceRayEXT, the default), ray_query (every
-// trace a ray query loop, R-RQ-EQUIV) or ray_query_compute (the same loops in
-// raygen run as a compute shader); what the ray query form cannot express is
-// checked with the whole case (parse_case.cpp).
+// trace a ray query loop, R-RQ-EQUIV), ray_query_compute (the same loops in
+// raygen run as a compute shader) or ray_query_in_hit (the traces of
+// closest-hit and miss stages alone); what the ray query forms cannot
+// express is checked with the whole case (parse_case.cpp).
 void parseTraces(YamlReader& r, const YAML::Node& v, Pipeline& p) {
   const std::optional<std::string> s = r.string(v, "pipeline.traces");
   if (!s) return;
   if (*s == "ray_query" || *s == "ray_query_compute") {
     p.ray_query = true;
     p.from_compute = *s == "ray_query_compute";
+  } else if (*s == "ray_query_in_hit") {
+    p.ray_query_in_hit = true;
   } else if (*s != "trace_ray") {
-    r.error(v, "pipeline.traces",
-            "must be trace_ray, ray_query or ray_query_compute, not '" + *s + "'");
+    r.error(
+        v, "pipeline.traces",
+        "must be trace_ray, ray_query, ray_query_compute or ray_query_in_hit, not '" + *s + "'");
   }
 }
 

@@ -1,5 +1,7 @@
 #include "case/ray_query_inlining.h"
 
+#include <algorithm>
+
 #include "program/walk_program.h"
 
 namespace rayspec {
@@ -17,9 +19,6 @@ std::string notInlinable(const Program& program) {
       why = "it reads vertex positions (position fetch is not generated for ray queries yet)";
   });
   walkStatements(program, [&](const Stmt& s) {
-    if (s.kind == Stmt::Kind::Trace)
-      why = "a closest-hit or miss traces (nested ray queries are not generated yet)";
-    if (s.kind == Stmt::Kind::Invoke) why = "a hit or miss stage calls a function";
     if (s.kind == Stmt::Kind::Light) why = "a stage reads shader record data (light)";
   });
   return why;
@@ -66,22 +65,96 @@ std::string computeObstacle(const Pipeline& p) {
   return "";
 }
 
-}  // namespace
+// The trace statements of a program, each invoke's function counted at the
+// invoke (a compiler inlines every call).
+uint64_t traceSites(const Program& p) {
+  uint64_t n = 0;
+  walkStatements(p, [&](const Stmt& s) { n += s.kind == Stmt::Kind::Trace; });
+  return n;
+}
 
-std::string rayQueryObstacle(const Case& c, bool own) {
+// Every closest-hit and miss program's trace sites: a level's inlined
+// programs hold this many calls of the next level's trace.
+uint64_t nestedSites(const Pipeline& p) {
+  uint64_t n = 0;
+  for (const Program& m : p.miss) n += traceSites(m);
+  for (const HitGroup& h : p.hit_groups)
+    if (h.closest_hit) n += traceSites(*h.closest_hit);
+  return n;
+}
+
+// Copies of the inlined programs a host with `sites` traces holds once its
+// calls are inlined: 1 + T + ... + T^(levels - 1) per site, T the nested
+// sites (glsl/inlined_levels.h); "" when within kMaxInlinedCopies.
+std::string tooManyCopies(uint64_t sites, uint64_t nested, uint32_t levels) {
+  uint64_t copies = 0, level_copies = sites;
+  for (uint32_t l = 0; l < levels && copies <= kMaxInlinedCopies; ++l) {
+    copies += level_copies;
+    level_copies *= nested;
+  }
+  if (copies <= kMaxInlinedCopies) return "";
+  return "its nested traces inline more than " + std::to_string(kMaxInlinedCopies) +
+         " copies of the hit and miss programs (" + std::to_string(nested) +
+         " trace sites in closest-hit and miss over " + std::to_string(levels) +
+         " levels of max_recursion; GLSL has no recursion)";
+}
+
+// What both forms refuse.
+std::string commonObstacle(const Case& c, bool own) {
   const Pipeline& p = c.pipeline;
-  if (p.ray_query && !own) return "the case traces by ray query itself";
+  if ((p.ray_query || p.ray_query_in_hit) && !own) return "the case traces by ray query itself";
   if (!c.expected_rejections.empty()) return "the case expects a shader to be rejected";
   if (p.payload_words.size() > 1) return "it declares several payload types";
+  // The inlined programs read the host's constants; callables stay stages.
   for (const auto& [shader, values] : p.specialize)
-    if (shader.rfind("raygen", 0) != 0) return "it specializes a constant for " + shader + " alone";
-  if (std::string why = notInlinable(p); !why.empty()) return why;
-  return p.from_compute ? computeObstacle(p) : "";
+    if (shader.rfind("miss", 0) == 0 || shader.rfind("hit", 0) == 0)
+      return "it specializes a constant for " + shader + " alone";
+  return notInlinable(p);
+}
+
+}  // namespace
+
+bool hitOrMissTraces(const Pipeline& p) {
+  auto traces = [](const Program& program) {
+    bool found = false;
+    walkStatements(program, [&](const Stmt& s) { found = found || s.kind == Stmt::Kind::Trace; });
+    return found;
+  };
+  for (const Program& m : p.miss)
+    if (traces(m)) return true;
+  for (const HitGroup& h : p.hit_groups)
+    if (h.closest_hit && traces(*h.closest_hit)) return true;
+  return false;
+}
+
+std::string rayQueryObstacle(const Case& c, bool own) {
+  if (std::string why = commonObstacle(c, own); !why.empty()) return why;
+  const Pipeline& p = c.pipeline;
+  if (p.from_compute)
+    if (std::string why = computeObstacle(p); !why.empty()) return why;
+  const uint64_t nested = nestedSites(p);
+  if (!nested) return "";  // one copy, the loops at raygen's traces as before
+  return tooManyCopies(traceSites(p.raygen), nested, std::max<uint32_t>(p.max_recursion, 1));
 }
 
 std::string computeRayQueryObstacle(const Case& c) {
   if (std::string why = rayQueryObstacle(c); !why.empty()) return why;
   return computeObstacle(c.pipeline);
+}
+
+std::string rayQueryInHitObstacle(const Case& c, bool own) {
+  if (std::string why = commonObstacle(c, own); !why.empty()) return why;
+  const Pipeline& p = c.pipeline;
+  const uint64_t nested = nestedSites(p);
+  if (!nested) return "no closest-hit or miss traces";
+  const uint32_t levels = std::max<uint32_t>(p.max_recursion, 2) - 1;
+  for (const Program& m : p.miss)
+    if (std::string why = tooManyCopies(traceSites(m), nested, levels); !why.empty()) return why;
+  for (const HitGroup& h : p.hit_groups)
+    if (h.closest_hit)
+      if (std::string why = tooManyCopies(traceSites(*h.closest_hit), nested, levels); !why.empty())
+        return why;
+  return "";
 }
 
 }  // namespace rayspec

@@ -127,6 +127,7 @@ std::string emptyGeometryRenumbered(Case& c, ModelOptions& o);
 std::string hitAttributesLost(Case& c, ModelOptions& o);
 std::string callableDataNotReturned(Case& c, ModelOptions& o);
 std::string nestedTraceDropped(Case& c, ModelOptions& o);
+std::string nestedTraceClobbersHit(Case& c, ModelOptions& o);
 std::string intersectionRunsTwice(Case& c, ModelOptions& o);
 std::string anyHitRunsTwice(Case& c, ModelOptions& o);
 std::string hitRecordShifted(Case& c, ModelOptions& o);

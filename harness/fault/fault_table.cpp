@@ -165,6 +165,10 @@ std::vector<FaultImpl> programMutations() {
        nullptr, callDataWordsLost},
       {"nested-trace-dropped", K::CaseMutation,
        "traces from closest-hit and miss do nothing (no recursion)", nullptr, nestedTraceDropped},
+      {"nested-trace-clobbers-hit", K::CaseMutation,
+       "after a nested trace that hits, the closest-hit that made it reads the nested hit's "
+       "built-ins (a nested ray query sharing its caller's query)",
+       nullptr, nestedTraceClobbersHit},
       {"any-hit-runs-twice", K::CaseMutation,
        "legal: any-hit runs twice in a row for a primitive whose geometry lacks "
        "no_duplicate_any_hit",

@@ -283,6 +283,20 @@ std::string nestedTraceDropped(Case& c, ModelOptions&) {
       "nested traces do nothing");
 }
 
+// A nested hit's built-ins replace its caller's (model/model_faults.h): what
+// a device whose nested query shares its caller's query would read, and
+// what lavapipe's pipeline reads (builtins/after-nested).
+std::string nestedTraceClobbersHit(Case& c, ModelOptions& o) {
+  size_t traces = 0;
+  for (const HitGroup& h : c.pipeline.hit_groups)
+    if (h.closest_hit)
+      walkStatements(*h.closest_hit, [&](const Stmt& s) { traces += s.kind == Stmt::Kind::Trace; });
+  if (!traces) return "";
+  o.faults.nested_trace_clobbers_hit = true;
+  return describeCount(traces,
+                       "closest-hit traces after which the nested hit's built-ins are read");
+}
+
 // R-AHIT-DUP, legal: any-hit runs twice in a row for each candidate of a
 // geometry without NO_DUPLICATE_ANY_HIT_INVOCATION (the model's own repeat).
 std::string anyHitRunsTwice(Case& c, ModelOptions& o) {

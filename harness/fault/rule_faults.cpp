@@ -66,7 +66,7 @@ std::vector<RuleFaults> pipelineRules() {
        {}},
       {"R-BUILTIN",
        {"builtin-wrong", "swap-primitive-id", "shift-t", "empty-geometry-renumbered",
-        "transform-builtins-swapped", "launch-id-x-wrapped"},
+        "transform-builtins-swapped", "launch-id-x-wrapped", "nested-trace-clobbers-hit"},
        {}},
       // Several top levels are built as copies of the instance list, the other
       // levels' instances inactive (Instance::tlas): which instances a trace
@@ -102,7 +102,8 @@ std::vector<RuleFaults> pipelineRules() {
       {"R-RQ-EQUIV",
        {"ignore-accepts", "terminate-continues", "any-hit-on-opaque", "report-return-inverted",
         "hit-attributes-lost", "skip-closest-hit-ignored", "first-hit-flag-ignored",
-        "tmax-view-initial", "transform-builtins-swapped", "builtin-wrong"},
+        "tmax-view-initial", "transform-builtins-swapped", "builtin-wrong",
+        "nested-trace-clobbers-hit"},
        {}},
       {"R-UB", {}, {}, fail, "never checked for a result (robustness probe only)"},
   };

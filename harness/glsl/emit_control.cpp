@@ -6,6 +6,7 @@
 
 #include "glsl/emit_expr.h"
 #include "glsl/emit_stmt.h"
+#include "glsl/inlined_functions.h"
 #include "program/payload_words.h"
 
 namespace rayspec {
@@ -22,10 +23,6 @@ std::string zeroOf(ValueType t) {
     default:
       return std::string(glslType(t)) + "(0.0)";
   }
-}
-
-std::string functionName(const std::string& name) {
-  return "rs_fn_" + name;
 }
 
 void array(const Stmt& s, GlslWriter& out) {
@@ -70,7 +67,10 @@ void invoke(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
   std::string args;
   for (const auto& [name, value] : s.assigns)
     args += (args.empty() ? "" : ", ") + emitExpr(value, ctx);
-  out.line(functionName(s.local) + "(" + args + ");");
+  const std::string extra = inlinedFunctionArgs(ctx);  // an inlined program's interface
+  args += args.empty() && !extra.empty() ? extra.substr(2) : extra;
+  out.line(functionName(s.local, ctx) + "(" + args + ");");
+  afterInlinedInvoke(ctx, out);
 }
 
 // Callees first: GLSL wants a function defined (or declared) before its use.
@@ -88,9 +88,13 @@ void defineFunctions(const Program& p, const StageContext& ctx, std::set<std::st
     std::string params;
     for (const auto& [name, type] : s.params)
       params += (params.empty() ? "" : ", ") + std::string(glslType(type)) + " " + localName(name);
+    const std::string extra = inlinedFunctionParams(ctx);
+    params += params.empty() && !extra.empty() ? extra.substr(2) : extra;
+    StageContext body = ctx;
+    body.in_function = true;
     out.line("");
-    out.open("void " + functionName(s.local) + "(" + params + ") {");
-    emitProgram(s.then_, ctx, out);
+    out.open("void " + functionName(s.local, ctx) + "(" + params + ") {");
+    emitProgram(s.then_, body, out);
     out.close();
   }
 }
@@ -129,7 +133,8 @@ void emitControl(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
       out.line("continue;");
       return;
     case Stmt::Kind::Return:  // an inlined any-hit that ends accepts
-      out.line(ctx.inlined && ctx.stage == Stage::AnyHit ? "return kRsAccept;" : "return;");
+      out.line(ctx.inlined && ctx.stage == Stage::AnyHit && !ctx.in_function ? "return kRsAccept;"
+                                                                             : "return;");
       return;
     case Stmt::Kind::Switch:
       switchStmt(s, ctx, out);

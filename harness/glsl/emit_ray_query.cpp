@@ -4,10 +4,14 @@
 
 #include "case/flag_names.h"
 #include "glsl/emit_call_data.h"
+#include "glsl/emit_control.h"
 #include "glsl/emit_payloads.h"
 #include "glsl/emit_stage.h"
 #include "glsl/emit_stmt.h"
+#include "glsl/inlined_functions.h"
+#include "glsl/inlined_levels.h"
 #include "program/builtins.h"
+#include "program/walk_program.h"
 #include "results/record_layout.h"
 
 namespace rayspec {
@@ -56,20 +60,30 @@ bool intersectionRuns(const StageContext& raygen, const HitGroup& h) {
   return h.intersection && raygen.plan.intersection;
 }
 
-StageContext inlinedContext(const StageContext& raygen, Stage stage, uint32_t index,
-                            const Program& program, uint32_t words) {
-  StageContext ctx{raygen.c, raygen.plan, stage, Pipeline::shaderName(stage, index),
-                   findStageUses(program, stage, raygen.plan)};
+StageContext inlinedContext(const StageContext& host, Stage stage, uint32_t index,
+                            const Program& program, uint32_t words, uint32_t level) {
+  StageContext ctx{host.c, host.plan, stage, Pipeline::shaderName(stage, index),
+                   findStageUses(program, stage, host.plan)};
   ctx.attribute_words = words;
   ctx.inlined = true;
   ctx.group = index;
-  ctx.compute = raygen.compute;
+  ctx.level = level;
+  ctx.levels = inlinedLevels(host);
+  ctx.compute = host.compute;
   return ctx;
+}
+
+bool invokes(const Program& program) {
+  bool found = false;
+  walkStatements(program, [&](const Stmt& s) { found = found || s.kind == Stmt::Kind::Invoke; });
+  return found;
 }
 
 // An inlined program's function: its stage's run count and any-hit slot as
 // the stage's main() has them, zero child and callee data, then the program.
 void inlinedBody(const StageContext& ctx, const Program& program, GlslWriter& out) {
+  if (ctx.stage == Stage::AnyHit && invokes(program))
+    out.line("uint rs_ah_verdict = kRsAccept;  // an invoked function's ignore or terminate");
   if (ctx.plan.records)
     out.line("rs_bump_runs(" + fieldOffsetMacro(stageRunsField(ctx.stage)) + ");");
   if (ctx.plan.records && ctx.stage == Stage::AnyHit)
@@ -77,7 +91,7 @@ void inlinedBody(const StageContext& ctx, const Program& program, GlslWriter& ou
              fieldOffsetMacro("any_hit_repeats") + ", (" + candidate("instance_id") + " * " +
              str(kAnyHitSlotInstanceFactor) + "u + " + candidate("geometry_index") + " * " +
              str(kAnyHitSlotGeometryFactor) + "u + " + candidate("primitive_id") + ") & 31u);");
-  if (ctx.uses.reads_child) {
+  if (ctx.uses.reads_child || ctx.uses.trace) {
     out.line(payloadTypeName(ctx.c.pipeline.maxPayloadWords()) + " child;");
     emitPayloadStart(ctx, out);
   }
@@ -88,22 +102,53 @@ void inlinedBody(const StageContext& ctx, const Program& program, GlslWriter& ou
   emitProgram(program, ctx, out);
 }
 
-// The query and what the loop keeps: the trace's arguments the inlined
-// programs read, and the attribute and kind of a generated intersection.
-void queryState(const StageContext& raygen, GlslWriter& out) {
-  const uint32_t words = raygen.c.pipeline.attribute_words;
+// The host declares the hit attribute's struct itself: a procedural group's
+// closest-hit that hosts (glsl/emit_stage.cpp's interface variables).
+bool hostDeclaresAttribute(const StageContext& host) {
+  return host.attribute_words && host.uses.hit_attribute && host.stage == Stage::ClosestHit;
+}
+
+// What every level shares: the any-hit verdicts, the attribute struct, the
+// record data tables and the group of a candidate's or committed record.
+void sharedState(const StageContext& host, GlslWriter& out) {
+  const Pipeline& p = host.c.pipeline;
+  const uint32_t words = p.attribute_words;
   out.line("");
-  out.line("// ---- the ray query and its state (glsl/emit_ray_query.h) ----");
+  out.line("// ---- what every level of ray queries shares (glsl/emit_ray_query.h) ----");
   out.line("const uint kRsIgnore = 0u, kRsAccept = 1u, kRsTerminate = 2u;  // any-hit verdicts");
+  if (words && !hostDeclaresAttribute(host))
+    out.line("struct RsAttr { vec2 bary; uint words[" + str(words) + "]; };");
+  for (const auto& [region, records] : {std::pair{"hit", &p.sbt_hit}, {"miss", &p.sbt_miss}}) {
+    const uint32_t n = static_cast<uint32_t>(records->size()) * (p.sbt_record_data / 4);
+    if (n == 0) continue;
+    std::string table = "const uint kRs_" + std::string(region) + "_data[" + str(n) + "] = uint[](";
+    for (size_t r = 0; r < records->size(); ++r)
+      for (uint32_t w = 0; w < p.sbt_record_data / 4; ++w) {
+        const uint32_t v = w < (*records)[r].data.size() ? (*records)[r].data[w] : 0u;
+        table += (r || w ? ", " : "") + str(v) + "u";
+      }
+    out.line(table + ");");
+  }
+  out.line(
+      "#define rs_hit_group_of(c) rs_hit_group("
+      "rayQueryGetIntersectionInstanceShaderBindingTableRecordOffsetEXT(rs_rq, c), "
+      "uint(rayQueryGetIntersectionGeometryIndexEXT(rs_rq, c)))");
+}
+
+// One level's query and what its loop keeps: the trace's arguments the
+// inlined programs read, and the attribute and kind of a generated
+// intersection. Level 1's query is declared before the shared GLSL.
+void queryState(const StageContext& host, uint32_t level, GlslWriter& out) {
+  const uint32_t words = host.c.pipeline.attribute_words;
+  out.line("");
+  out.line("// ---- the ray query of level " + str(level) + " and its state ----");
+  if (level > 1) out.line("rayQueryEXT rs_rq;");
   out.line("uint rs_q_flags, rs_q_cull_mask, rs_q_sbt_offset, rs_q_sbt_stride;");
   out.line("float rs_q_tmax;");
   out.line("bool rs_q_done;  // an any-hit terminated inside a report");
   out.line("uint rs_c_kind;  // the committed generated intersection's kind and attribute");
   out.line("vec2 rs_c_bary;");
-  if (words) {
-    out.line("struct RsAttr { vec2 bary; uint words[" + str(words) + "]; };");
-    out.line("uint rs_c_words[" + str(words) + "];");
-  }
+  if (words) out.line("uint rs_c_words[" + str(words) + "];");
   out.open("float rs_current_tmax() {  // gl_RayTmaxEXT in an intersection shader");
   out.line(
       "return rayQueryGetIntersectionTypeEXT(rs_rq, true) == "
@@ -112,27 +157,17 @@ void queryState(const StageContext& raygen, GlslWriter& out) {
   out.close();
 }
 
-// The shader record data of one SBT region's records, and the word i of the
-// record an inlined stage runs for (its shader_record_uint / _float reads):
-// rs_q_<region>_record, set where the record is chosen.
-void recordData(const std::string& region, const std::vector<SbtRecord>& records, uint32_t words,
-                GlslWriter& out) {
+// The word i of the record an inlined stage runs for (its shader_record_uint
+// / _float reads): rs_q_<region>_record, set where the record is chosen.
+void recordWord(const std::string& region, size_t records, uint32_t words, GlslWriter& out) {
   const std::string fn = "uint rs_" + region + "_record_word(uint i) {";
-  const size_t n = records.size() * words;
   out.line("uint rs_q_" + region + "_record;");
-  if (n == 0) {
+  if (records * words == 0) {
     out.line(fn + " return 0u; }");
     return;
   }
-  std::string table = "const uint kRs_" + region + "_data[" + std::to_string(n) + "] = uint[](";
-  for (size_t r = 0; r < records.size(); ++r)
-    for (uint32_t w = 0; w < words; ++w) {
-      const uint32_t v = w < records[r].data.size() ? records[r].data[w] : 0u;
-      table += (r || w ? ", " : "") + str(v) + "u";
-    }
-  out.line(table + ");");
   out.open(fn);
-  out.line("return rs_q_" + region + "_record < " + std::to_string(records.size()) + "u && i < " +
+  out.line("return rs_q_" + region + "_record < " + std::to_string(records) + "u && i < " +
            str(words) + "u ? kRs_" + region + "_data[rs_q_" + region + "_record * " + str(words) +
            "u + i] : 0u;");
   out.close();
@@ -154,36 +189,32 @@ void hitGroupFunction(const Pipeline& p, GlslWriter& out) {
   if (records == 0) {
     out.line("return 0xFFFFFFFFu;");
     out.close();
-  } else {
-    std::string table = "const uint kRsHitGroups[" + std::to_string(records) + "] = uint[](";
-    for (size_t r = 0; r < records; ++r) {
-      const std::optional<uint32_t> g =
-          p.sbt_hit.empty() ? std::optional<uint32_t>(r) : p.sbt_hit[r].group;
-      table += (r ? ", " : "") + str(g.value_or(0xFFFFFFFFu)) + "u";
-    }
-    out.line(table + ");");
-    out.line("return record < " + std::to_string(records) +
-             "u ? kRsHitGroups[record] : 0xFFFFFFFFu;");
-    out.close();
+    return;
   }
-  out.line(
-      "#define rs_hit_group_of(c) rs_hit_group("
-      "rayQueryGetIntersectionInstanceShaderBindingTableRecordOffsetEXT(rs_rq, c), "
-      "uint(rayQueryGetIntersectionGeometryIndexEXT(rs_rq, c)))");
+  std::string table = "const uint kRsHitGroups[" + std::to_string(records) + "] = uint[](";
+  for (size_t r = 0; r < records; ++r) {
+    const std::optional<uint32_t> g =
+        p.sbt_hit.empty() ? std::optional<uint32_t>(r) : p.sbt_hit[r].group;
+    table += (r ? ", " : "") + str(g.value_or(0xFFFFFFFFu)) + "u";
+  }
+  out.line(table + ");");
+  out.line("return record < " + std::to_string(records) +
+           "u ? kRsHitGroups[record] : 0xFFFFFFFFu;");
+  out.close();
 }
 
 // A procedural group's report: the reported t in [tmin, committed t], the
 // any-hit's verdict (none for an opaque box), then the generated intersection.
-void reportFunction(const StageContext& raygen, uint32_t g, GlslWriter& out) {
-  const HitGroup& h = raygen.c.pipeline.hit_groups[g];
-  const uint32_t words = attributeWords(raygen.c.pipeline, h);
-  out.open("bool rs_report_" + str(g) + "(inout " + payloadType(raygen.c) +
+void reportFunction(const StageContext& host, uint32_t g, uint32_t level, GlslWriter& out) {
+  const HitGroup& h = host.c.pipeline.hit_groups[g];
+  const uint32_t words = attributeWords(host.c.pipeline, h);
+  out.open("bool " + atLevel("rs_report_" + str(g), level) + "(inout " + payloadType(host.c) +
            " rs_ah_payload, float rs_t, uint rs_kind, " + attributeType(words) + " rs_attr) {");
   out.line("if (rs_t < rayQueryGetRayTMinEXT(rs_rq) || rs_t > rs_current_tmax()) return false;");
   out.line("uint rs_verdict = kRsAccept;");
-  if (anyHitRuns(raygen, h))
-    out.line("if (!rayQueryGetIntersectionCandidateAABBOpaqueEXT(rs_rq)) rs_verdict = rs_any_hit_" +
-             str(g) + "(rs_ah_payload, rs_attr, rs_t, rs_kind);");
+  if (anyHitRuns(host, h))
+    out.line("if (!rayQueryGetIntersectionCandidateAABBOpaqueEXT(rs_rq)) rs_verdict = " +
+             atLevel("rs_any_hit_" + str(g), level) + "(rs_ah_payload, rs_attr, rs_t, rs_kind);");
   out.line("if (rs_verdict == kRsIgnore) return false;");
   out.line("rayQueryGenerateIntersectionEXT(rs_rq, rs_t);");
   out.line("rs_c_kind = rs_kind;");
@@ -199,33 +230,40 @@ void reportFunction(const StageContext& raygen, uint32_t g, GlslWriter& out) {
   out.close();
 }
 
-// Group g's any-hit, report, intersection and closest-hit functions.
-void hitGroupFunctions(const StageContext& raygen, uint32_t g, GlslWriter& out) {
-  const HitGroup& h = raygen.c.pipeline.hit_groups[g];
-  const uint32_t words = attributeWords(raygen.c.pipeline, h);
-  const std::string payload = "inout " + payloadType(raygen.c) + " payload";
+// Group g's any-hit, report, intersection and closest-hit functions at `level`.
+void hitGroupFunctions(const StageContext& host, uint32_t g, uint32_t level, GlslWriter& out) {
+  const HitGroup& h = host.c.pipeline.hit_groups[g];
+  const uint32_t words = attributeWords(host.c.pipeline, h);
+  const std::string payload = "inout " + payloadType(host.c) + " payload";
   const std::string hit_args =
       payload + ", " + attributeType(words) + " rs_attr, float rs_hit_t, uint rs_hit_kind) {";
-  if (anyHitRuns(raygen, h)) {
-    out.open("uint rs_any_hit_" + str(g) + "(" + hit_args);
-    inlinedBody(inlinedContext(raygen, Stage::AnyHit, g, *h.any_hit, words), *h.any_hit, out);
+  auto context = [&](Stage stage, const Program& program) {
+    return inlinedContext(host, stage, g, program, words, level);
+  };
+  if (anyHitRuns(host, h)) {
+    const StageContext ctx = context(Stage::AnyHit, *h.any_hit);
+    emitFunctions(*h.any_hit, ctx, out);
+    out.open("uint " + atLevel("rs_any_hit_" + str(g), level) + "(" + hit_args);
+    inlinedBody(ctx, *h.any_hit, out);
     out.line("return kRsAccept;");
     out.close();
   }
-  if (intersectionRuns(raygen, h)) {
-    reportFunction(raygen, g, out);
-    out.open("void rs_intersection_" + str(g) + "(inout " + payloadType(raygen.c) +
-             " rs_ah_payload) {");
+  if (intersectionRuns(host, h)) {
+    reportFunction(host, g, level, out);
+    const StageContext ctx = context(Stage::Intersection, *h.intersection);
+    emitFunctions(*h.intersection, ctx, out);
+    out.open("void " + atLevel("rs_intersection_" + str(g), level) + "(inout " +
+             payloadType(host.c) + " rs_ah_payload) {");
     out.line(attributeType(words) +
              " rs_attr = " + attributeValue(words, "vec2(0.0)", zeroWords(words)) + ";");
-    inlinedBody(inlinedContext(raygen, Stage::Intersection, g, *h.intersection, words),
-                *h.intersection, out);
+    inlinedBody(ctx, *h.intersection, out);
     out.close();
   }
   if (h.closest_hit) {
-    out.open("void rs_closest_hit_" + str(g) + "(" + hit_args);
-    inlinedBody(inlinedContext(raygen, Stage::ClosestHit, g, *h.closest_hit, words), *h.closest_hit,
-                out);
+    const StageContext ctx = context(Stage::ClosestHit, *h.closest_hit);
+    emitFunctions(*h.closest_hit, ctx, out);
+    out.open("void " + atLevel("rs_closest_hit_" + str(g), level) + "(" + hit_args);
+    inlinedBody(ctx, *h.closest_hit, out);
     out.close();
   }
 }
@@ -242,9 +280,21 @@ void groupSwitch(const StageContext& ctx, const std::string& on, Has has, Call c
   out.close();
 }
 
+// The box candidate the scene reads of an inlined intersection take
+// (aabb_min, sphere_*: shaders/scene.glsl through emitCandidateMacros): the
+// level's query is not the one the shared functions were written with.
+void candidateBox(GlslWriter& out) {
+  out.line("rs_cand_instance = " + candidate("instance_id") + ";");
+  out.line("rs_cand_geometry = " + candidate("geometry_index") + ";");
+  out.line("rs_cand_primitive = " + candidate("primitive_id") + ";");
+  out.line("rs_cand_origin = " + candidate("object_ray_origin") + ";");
+  out.line("rs_cand_direction = " + candidate("object_ray_direction") + ";");
+}
+
 // The loop: each candidate decided by its group's any-hit or intersection.
-void candidateLoop(const StageContext& ctx, const std::string& payload, GlslWriter& out) {
-  const Pipeline& p = ctx.c.pipeline;
+void candidateLoop(const StageContext& host, uint32_t level, GlslWriter& out) {
+  const Pipeline& p = host.c.pipeline;
+  const std::string payload = "rs_trace_payload";
   out.open("while (rayQueryProceedEXT(rs_rq)) {");
   out.line("const uint rs_group = rs_hit_group_of(false);");
   out.open(
@@ -257,26 +307,31 @@ void candidateLoop(const StageContext& ctx, const std::string& payload, GlslWrit
       "0xFFu;");
   out.line("uint rs_verdict = kRsAccept;");
   groupSwitch(
-      ctx, "rs_group", [&](const HitGroup& h) { return anyHitRuns(ctx, h); },
+      host, "rs_group", [&](const HitGroup& h) { return anyHitRuns(host, h); },
       [&](uint32_t g) {
         const uint32_t words = attributeWords(p, p.hit_groups[g]);
-        return "rs_verdict = rs_any_hit_" + str(g) + "(" + payload + ", " +
+        return "rs_verdict = " + atLevel("rs_any_hit_" + str(g), level) + "(" + payload + ", " +
                attributeValue(words, "rs_bary", zeroWords(words)) + ", rs_t, rs_kind);";
       },
       out);
   out.line("if (rs_verdict != kRsIgnore) rayQueryConfirmIntersectionEXT(rs_rq);");
   out.line("if (rs_verdict == kRsTerminate) rayQueryTerminateEXT(rs_rq);");
   out.reopen("} else {");
+  if (host.uses.scene) candidateBox(out);
   groupSwitch(
-      ctx, "rs_group", [&](const HitGroup& h) { return intersectionRuns(ctx, h); },
-      [&](uint32_t g) { return "rs_intersection_" + str(g) + "(" + payload + ");"; }, out);
+      host, "rs_group", [&](const HitGroup& h) { return intersectionRuns(host, h); },
+      [&](uint32_t g) {
+        return atLevel("rs_intersection_" + str(g), level) + "(" + payload + ");";
+      },
+      out);
   out.close();
   out.close();
 }
 
 // After the loop: the committed intersection's closest-hit, or the miss.
-void committedStage(const StageContext& ctx, const std::string& payload, GlslWriter& out) {
-  const Pipeline& p = ctx.c.pipeline;
+void committedStage(const StageContext& host, uint32_t level, GlslWriter& out) {
+  const Pipeline& p = host.c.pipeline;
+  const std::string payload = "rs_trace_payload";
   out.line("const uint rs_committed = rayQueryGetIntersectionTypeEXT(rs_rq, true);");
   out.open("if (rs_committed == gl_RayQueryCommittedIntersectionNoneEXT) {");
   out.line("rs_q_miss_record = rs_miss & 0xFFFFu;  // R-SBT-MISS: the low 16 bits");
@@ -286,8 +341,8 @@ void committedStage(const StageContext& ctx, const std::string& payload, GlslWri
     const std::optional<uint32_t> m =
         p.sbt_miss.empty() ? std::optional<uint32_t>(r) : p.sbt_miss[r].group;
     if (m && *m < p.miss.size())
-      out.line("case " + str(static_cast<uint32_t>(r)) + "u: rs_miss_" + str(*m) + "(" + payload +
-               "); break;");
+      out.line("case " + str(static_cast<uint32_t>(r)) +
+               "u: " + atLevel("rs_miss_" + str(*m), level) + "(" + payload + "); break;");
   }
   out.line("default: break;");
   out.close();
@@ -302,63 +357,42 @@ void committedStage(const StageContext& ctx, const std::string& payload, GlslWri
       "const uint rs_kind = rs_triangle ? (rayQueryGetIntersectionFrontFaceEXT(rs_rq, true) ? "
       "0xFEu : 0xFFu) : rs_c_kind;");
   groupSwitch(
-      ctx, "rs_group", [](const HitGroup& h) { return h.closest_hit.has_value(); },
+      host, "rs_group", [](const HitGroup& h) { return h.closest_hit.has_value(); },
       [&](uint32_t g) {
         const uint32_t words = attributeWords(p, p.hit_groups[g]);
         const std::string w = words ? "rs_triangle ? " + zeroWords(words) + " : rs_c_words" : "";
-        return "rs_closest_hit_" + str(g) + "(" + payload + ", " +
+        return atLevel("rs_closest_hit_" + str(g), level) + "(" + payload + ", " +
                attributeValue(words, "rs_bary", w) + ", rs_t, rs_kind);";
       },
       out);
   out.close();
 }
 
-}  // namespace
-
-void addInlinedUses(StageContext& raygen) {
-  const Pipeline& p = raygen.c.pipeline;
-  auto add = [&](Stage stage, const Program& program) {
-    const StageUses u = findStageUses(program, stage, raygen.plan);
-    StageUses& r = raygen.uses;
-    r.counters = r.counters || u.counters;
-    r.record_fields.insert(u.record_fields.begin(), u.record_fields.end());
-    if (raygen.plan.records) r.record_fields.insert(recordFieldIndex(stageRunsField(stage)));
-    r.call = r.call || u.call;
-    r.call_locations.insert(u.call_locations.begin(), u.call_locations.end());
-    r.scene = r.scene || u.scene;
-    r.sphere = r.sphere || u.sphere;
-  };
-  for (const Program& m : p.miss) add(Stage::Miss, m);
-  for (const HitGroup& h : p.hit_groups) {
-    if (h.closest_hit) add(Stage::ClosestHit, *h.closest_hit);
-    if (anyHitRuns(raygen, h)) add(Stage::AnyHit, *h.any_hit);
-    if (intersectionRuns(raygen, h)) add(Stage::Intersection, *h.intersection);
+// rayQueryInitializeEXT on the trace's top level: with several, a switch
+// over the constant index the trace passes (rs_tlas_index).
+void initializeQuery(const StageContext& host, const std::string& flags, GlslWriter& out) {
+  const std::string rest =
+      ", " + flags + ", rs_cull_mask, rs_origin, rs_tmin, rs_direction, rs_tmax);";
+  const uint32_t n = host.c.scene.tlasCount();
+  if (n <= 1) {
+    out.line("rayQueryInitializeEXT(rs_rq, rs_tlas" + rest);
+    return;
   }
-  if (raygen.plan.records)
-    for (const char* f : {"any_hit_slots", "any_hit_repeats"})
-      raygen.uses.record_fields.insert(recordFieldIndex(f));
+  out.open("switch (rs_tlas_index) {");
+  for (uint32_t t = 0; t < n; ++t)
+    out.line("case " + str(t) + "u: rayQueryInitializeEXT(rs_rq, rs_tlas[" + str(t) + "]" + rest +
+             " break;");
+  out.line("default: break;");
+  out.close();
 }
 
-void emitInlinedStages(const StageContext& raygen, GlslWriter& out) {
-  const Pipeline& p = raygen.c.pipeline;
-  queryState(raygen, out);
-  recordData("hit", p.sbt_hit, p.sbt_record_data / 4, out);
-  recordData("miss", p.sbt_miss, p.sbt_record_data / 4, out);
-  hitGroupFunction(p, out);
-  out.line("");
-  out.line("// ---- the hit group and miss programs, inlined ----");
-  for (uint32_t g = 0; g < p.hit_groups.size(); ++g) hitGroupFunctions(raygen, g, out);
-  for (uint32_t m = 0; m < p.miss.size(); ++m) {
-    out.open("void rs_miss_" + str(m) + "(inout " + payloadType(raygen.c) + " payload) {");
-    inlinedBody(inlinedContext(raygen, Stage::Miss, m, p.miss[m], 0), p.miss[m], out);
-    out.close();
-  }
-}
-
-void emitRayQueryTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
-  const std::string tlas =
-      ctx.c.scene.tlasCount() > 1 ? "rs_tlas[" + str(s.trace.tlas) + "]" : std::string("rs_tlas");
-  const std::string payload = outgoingPayload(s.trace.location);
+// The trace of `level`: its arguments kept for the inlined programs, the
+// query initialised, the loop and the committed intersection's stage.
+void traceFunction(const StageContext& host, uint32_t level, GlslWriter& out) {
+  out.open("void " + atLevel("rs_trace", level) + "(inout " + payloadType(host.c) +
+           " rs_trace_payload, " + (host.c.scene.tlasCount() > 1 ? "uint rs_tlas_index, " : "") +
+           "uint rs_flags, uint rs_cull_mask, uint rs_sbt_offset, uint rs_sbt_stride, uint "
+           "rs_miss, vec3 rs_origin, float rs_tmin, vec3 rs_direction, float rs_tmax) {");
   out.line("rs_q_flags = rs_flags;");
   out.line("rs_q_cull_mask = rs_cull_mask;");
   out.line("rs_q_sbt_offset = rs_sbt_offset;");
@@ -368,15 +402,97 @@ void emitRayQueryTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) 
   // skip_closest_hit is the loop's to honour, not the query's; the pipeline's
   // skip_triangles / skip_aabbs, which act on traceRayEXT alone, become the
   // query's ray flags (gl_IncomingRayFlagsEXT stays the trace's: rs_q_flags).
-  const uint32_t p_flags = ctx.c.pipeline.flags;
+  const uint32_t p_flags = host.c.pipeline.flags;
   const uint32_t skip = (p_flags & kPipelineSkipTriangles ? kRaySkipTriangles : 0u) |
                         (p_flags & kPipelineSkipAabbs ? kRaySkipAabbs : 0u);
-  out.line("rayQueryInitializeEXT(rs_rq, " + tlas +
-           ", (rs_flags & ~gl_RayFlagsSkipClosestHitShaderEXT)" +
-           (skip ? " | " + str(skip) + "u" : std::string()) +
-           ", rs_cull_mask, rs_origin, rs_tmin, rs_direction, rs_tmax);");
-  candidateLoop(ctx, payload, out);
-  committedStage(ctx, payload, out);
+  initializeQuery(host,
+                  "(rs_flags & ~gl_RayFlagsSkipClosestHitShaderEXT)" +
+                      (skip ? " | " + str(skip) + "u" : std::string()),
+                  out);
+  candidateLoop(host, level, out);
+  committedStage(host, level, out);
+  out.close();
+}
+
+// One level's block: its state, every inlined program at that level, and
+// its trace function.
+void levelBlock(const StageContext& host, uint32_t level, GlslWriter& out) {
+  const Pipeline& p = host.c.pipeline;
+  openLevel(level, out);
+  queryState(host, level, out);
+  recordWord("hit", p.sbt_hit.size(), p.sbt_record_data / 4, out);
+  recordWord("miss", p.sbt_miss.size(), p.sbt_record_data / 4, out);
+  hitGroupFunction(p, out);
+  out.line("");
+  out.line("// ---- the hit group and miss programs, inlined at level " + str(level) + " ----");
+  for (uint32_t g = 0; g < p.hit_groups.size(); ++g) hitGroupFunctions(host, g, level, out);
+  for (uint32_t m = 0; m < p.miss.size(); ++m) {
+    const StageContext ctx = inlinedContext(host, Stage::Miss, m, p.miss[m], 0, level);
+    emitFunctions(p.miss[m], ctx, out);
+    out.open("void " + atLevel("rs_miss_" + str(m), level) + "(inout " + payloadType(host.c) +
+             " payload) {");
+    inlinedBody(ctx, p.miss[m], out);
+    out.close();
+  }
+  traceFunction(host, level, out);
+  closeLevel(level, out);
+}
+
+}  // namespace
+
+void emitCandidateMacros(GlslWriter& out) {
+  out.line("uint rs_cand_instance, rs_cand_geometry, rs_cand_primitive;  // set by each loop");
+  out.line("vec3 rs_cand_origin, rs_cand_direction;");
+  out.line("#define RS_HIT_INSTANCE rs_cand_instance");
+  out.line("#define RS_HIT_GEOMETRY rs_cand_geometry");
+  out.line("#define RS_HIT_PRIMITIVE rs_cand_primitive");
+  out.line("#define RS_OBJECT_RAY_ORIGIN rs_cand_origin");
+  out.line("#define RS_OBJECT_RAY_DIRECTION rs_cand_direction");
+}
+
+void addInlinedUses(StageContext& host) {
+  const Pipeline& p = host.c.pipeline;
+  auto add = [&](Stage stage, const Program& program) {
+    const StageUses u = findStageUses(program, stage, host.plan);
+    StageUses& r = host.uses;
+    r.counters = r.counters || u.counters;
+    r.record_fields.insert(u.record_fields.begin(), u.record_fields.end());
+    if (host.plan.records) r.record_fields.insert(recordFieldIndex(stageRunsField(stage)));
+    r.call = r.call || u.call;
+    r.call_locations.insert(u.call_locations.begin(), u.call_locations.end());
+    r.scene = r.scene || u.scene;
+    r.sphere = r.sphere || u.sphere;
+  };
+  for (const Program& m : p.miss) add(Stage::Miss, m);
+  for (const HitGroup& h : p.hit_groups) {
+    if (h.closest_hit) add(Stage::ClosestHit, *h.closest_hit);
+    if (anyHitRuns(host, h)) add(Stage::AnyHit, *h.any_hit);
+    if (intersectionRuns(host, h)) add(Stage::Intersection, *h.intersection);
+  }
+  if (host.plan.records)
+    for (const char* f : {"any_hit_slots", "any_hit_repeats"})
+      host.uses.record_fields.insert(recordFieldIndex(f));
+}
+
+void emitInlinedStages(const StageContext& host, GlslWriter& out) {
+  if (!host.uses.trace) return;  // nothing calls them (and no rs_tlas is bound)
+  sharedState(host, out);
+  // The deepest level first: a level's programs call the trace of the next.
+  for (uint32_t level = inlinedLevels(host); level >= 1; --level) levelBlock(host, level, out);
+}
+
+bool emitRayQueryTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
+  const uint32_t level = ctx.inlined ? ctx.level + 1 : 1;
+  if (ctx.inlined && ctx.level >= ctx.levels) {
+    out.line("// beyond pipeline.max_recursion: undefined (R-RECURSION, R-UB); skipped, as the");
+    out.line("// model skips it");
+    return false;
+  }
+  out.line(atLevel("rs_trace", level) + "(" + outgoingPayload(s.trace.location) + ", " +
+           (ctx.c.scene.tlasCount() > 1 ? str(s.trace.tlas) + "u, " : "") +
+           "rs_flags, rs_cull_mask, rs_sbt_offset, rs_sbt_stride, rs_miss, rs_origin, rs_tmin, "
+           "rs_direction, rs_tmax);");
+  return true;
 }
 
 }  // namespace rayspec

@@ -1,6 +1,8 @@
-// Raygen's traces as ray query loops (Pipeline::ray_query, --through
-// ray-query, R-RQ-EQUIV). Each hit group's any-hit, intersection and
-// closest-hit and each miss program become functions of raygen:
+// Traces as ray query loops (Pipeline::ray_query: raygen's, --through
+// ray-query; Pipeline::ray_query_in_hit: a closest-hit's or miss's,
+// --through ray-query-in-hit; R-RQ-EQUIV). The host stage (glsl/
+// inlined_levels.h) holds each hit group's any-hit, intersection and
+// closest-hit and each miss program as functions:
 //   while (rayQueryProceedEXT) a triangle candidate runs the any-hit of its
 //   record's group (ignore leaves it, accept confirms it, terminate confirms
 //   it and ends the query) and an AABB candidate the group's intersection,
@@ -10,7 +12,10 @@
 //   of its record's group (unless skip_closest_hit) or, with none, the miss
 //   the trace names. The hit record is the instance's offset + geometry x
 //   stride + offset, as traceRayEXT's; its group comes from the case's SBT.
-// The other stages stay in the pipeline and never run.
+// A trace made by an inlined closest-hit or miss is the same loop one level
+// down, with its own query, state and copies of the programs (levels are
+// written deepest first, each a function rs_trace[_d<L>]). The stages the
+// host replaces stay in the pipeline and never run from it.
 #pragma once
 
 #include "glsl/glsl_writer.h"
@@ -18,15 +23,23 @@
 
 namespace rayspec {
 
-// Raygen's uses grown by what the inlined programs use (their record fields,
-// counters, calls, scene reads).
-void addInlinedUses(StageContext& raygen);
+// The host's uses grown by what the inlined programs use (their record
+// fields, counters, calls, scene reads).
+void addInlinedUses(StageContext& host);
 
-// The query, its state and every inlined program, before raygen's own code.
-void emitInlinedStages(const StageContext& raygen, GlslWriter& out);
+// Before shaders/scene.glsl and sphere.glsl in a host: the box candidate
+// they read is the one the running loop sets (each level has its own query).
+void emitCandidateMacros(GlslWriter& out);
 
-// One trace in raygen, its arguments in rs_flags .. rs_tmax and its payload
-// started in rs_payload_<location>: the query loop and its closest-hit or miss.
-void emitRayQueryTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out);
+// The queries, their state and every inlined program at every level, before
+// the host's own code. Level 1's query, rs_rq, is declared before them.
+void emitInlinedStages(const StageContext& host, GlslWriter& out);
+
+// One trace of the host or of an inlined program, its arguments in rs_flags
+// .. rs_tmax and its payload started in rs_payload_<location>: a call of the
+// next level's trace function. False where the trace is beyond the last
+// level (pipeline.max_recursion), skipped as the model skips it: the payload
+// is then no result.
+bool emitRayQueryTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out);
 
 }  // namespace rayspec

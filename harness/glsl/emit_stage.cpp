@@ -13,6 +13,7 @@
 #include "glsl/emit_ray_query.h"
 #include "glsl/emit_stmt.h"
 #include "glsl/glsl_writer.h"
+#include "glsl/inlined_levels.h"
 #include "glsl/stage_context.h"
 #include "results/record_layout.h"
 
@@ -57,18 +58,6 @@ void include(const std::string& file, GlslWriter& out) {
   out.raw(it->second);
   if (!it->second.empty() && it->second.back() != '\n') out.raw("\n");
   out.line("// ---- end of shaders/" + file + " ----");
-}
-
-// scene.glsl and sphere.glsl read the ray query's candidate (inlined
-// intersection programs, glsl/emit_ray_query.h). The query is declared later,
-// where the macros are used.
-void rayQueryCandidateMacros(GlslWriter& out) {
-  out.line("#define RS_HIT_INSTANCE uint(rayQueryGetIntersectionInstanceIdEXT(rs_rq, false))");
-  out.line("#define RS_HIT_GEOMETRY uint(rayQueryGetIntersectionGeometryIndexEXT(rs_rq, false))");
-  out.line("#define RS_HIT_PRIMITIVE uint(rayQueryGetIntersectionPrimitiveIndexEXT(rs_rq, false))");
-  out.line("#define RS_OBJECT_RAY_ORIGIN rayQueryGetIntersectionObjectRayOriginEXT(rs_rq, false)");
-  out.line(
-      "#define RS_OBJECT_RAY_DIRECTION rayQueryGetIntersectionObjectRayDirectionEXT(rs_rq, false)");
 }
 
 void defines(const StageContext& ctx, GlslWriter& out) {
@@ -235,8 +224,8 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
   if (plan.records && stage == Stage::AnyHit)
     for (const char* f : {"any_hit_slots", "any_hit_repeats"})
       ctx.uses.record_fields.insert(recordFieldIndex(f));
-  const bool ray_query = stage == Stage::Raygen && c.pipeline.ray_query;
-  ctx.compute = ray_query && c.pipeline.from_compute;
+  const bool ray_query = hostsInlinedStages(c, stage, ctx.uses);
+  ctx.compute = stage == Stage::Raygen && c.pipeline.ray_query && c.pipeline.from_compute;
   if (ray_query) addInlinedUses(ctx);
   const StageUses& u = ctx.uses;
   GlslWriter out;
@@ -261,7 +250,7 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
   emitPayloadStructs(ctx, out);
   emitCallDataStructs(ctx, out);
   if (ray_query) out.line("rayQueryEXT rs_rq;  // every trace's (glsl/emit_ray_query.h)");
-  if (u.scene && ray_query) rayQueryCandidateMacros(out);
+  if (u.scene && ray_query) emitCandidateMacros(out);
   if (u.scene && (stage == Stage::Intersection || ray_query)) include("scene.glsl", out);
   if (u.sphere && (stage == Stage::Intersection || ray_query)) include("sphere.glsl", out);
   if (u.light) include("lights.glsl", out);

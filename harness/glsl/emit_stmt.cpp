@@ -8,6 +8,8 @@
 #include "glsl/emit_expr.h"
 #include "glsl/emit_query.h"
 #include "glsl/emit_trace.h"
+#include "glsl/inlined_functions.h"
+#include "glsl/inlined_levels.h"
 #include "program/payload_words.h"
 #include "results/record_layout.h"
 
@@ -68,8 +70,9 @@ void assignFields(const Stmt& s, const std::string& target, const StageContext& 
 // (glsl/emit_ray_query.cpp); an any-hit that terminated ends the shader.
 void reportInlined(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
   out.open("{  // report");
-  out.line("const bool rs_accepted = rs_report_" + std::to_string(ctx.group) + "(rs_ah_payload, " +
-           emitExpr(s.t, ctx) + ", " + emitExpr(s.hit_kind, ctx) + ", rs_attr);");
+  out.line(
+      "const bool rs_accepted = " + atLevel("rs_report_" + std::to_string(ctx.group), ctx.level) +
+      "(rs_ah_payload, " + emitExpr(s.t, ctx) + ", " + emitExpr(s.hit_kind, ctx) + ", rs_attr);");
   out.line("if (rs_q_done) return;");
   if (!s.then_.empty() || !s.else_.empty()) {
     out.open("if (rs_accepted) {");
@@ -139,7 +142,7 @@ void terminator(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
     return;
   }
   if (ctx.inlined)  // the any-hit function's verdict (glsl/emit_ray_query.h)
-    out.line(ignore ? "return kRsIgnore;" : "return kRsTerminate;");
+    out.line(inlinedVerdict(ignore, ctx));
   else
     out.line(ignore ? "ignoreIntersectionEXT;" : "terminateRayEXT;");
 }

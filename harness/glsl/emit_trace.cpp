@@ -4,6 +4,7 @@
 #include "glsl/emit_payloads.h"
 #include "glsl/emit_ray_query.h"
 #include "glsl/glsl_literal.h"
+#include "glsl/inlined_levels.h"
 #include "program/payload_words.h"
 
 namespace rayspec {
@@ -76,13 +77,16 @@ void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
     }
     out.line(std::string(a.type) + " " + a.local + " = " + value + ";");
   }
-  startPayload(s, ctx, out);
-  if (ctx.c.pipeline.ray_query) {  // raygen's traces as ray query loops
-    emitRayQueryTrace(s, ctx, out);
-    emitPayloadResult(ctx, s.trace.location, out);
+  if (tracesByRayQuery(ctx)) {  // a ray query loop (glsl/emit_ray_query.h)
+    const uint32_t l = s.trace.location;
+    if (ctx.inlined)  // a function's payload, not the stage's
+      out.line(payloadTypeName(ctx.c.pipeline.payloadWords(l)) + " " + outgoingPayload(l) + ";");
+    startPayload(s, ctx, out);
+    if (emitRayQueryTrace(s, ctx, out)) emitPayloadResult(ctx, l, out);
     out.close();
     return;
   }
+  startPayload(s, ctx, out);
   const std::string tlas = ctx.c.scene.tlasCount() > 1
                                ? "rs_tlas[" + std::to_string(s.trace.tlas) + "]"
                                : std::string("rs_tlas");

@@ -59,6 +59,13 @@ struct StageContext {
   // Raygen emitted as a compute shader (Pipeline::from_compute,
   // glsl/emit_compute.h); inlined programs are emitted into it.
   bool compute = false;
+  // Inlined: the level of nested queries it runs at (1: the host stage's
+  // own traces), its names suffixed from level 2 on (inlined_levels.h).
+  uint32_t level = 1;
+  uint32_t levels = 1;  // the host's levels: a trace at the last is skipped
+  // Inside a function (pipeline.functions) the program invokes: an inlined
+  // any-hit's verdict goes through rs_ah_verdict (inlined_functions.h).
+  bool in_function = false;
 };
 
 }  // namespace rayspec

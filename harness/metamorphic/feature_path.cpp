@@ -71,6 +71,15 @@ Result<void> tracedFromCompute(Case& c) {
   return {};
 }
 
+// The traces of closest-hit and miss stages ray query loops there, where
+// there are some and nothing is in the way.
+Result<void> tracedByRayQueryInHit(Case& c) {
+  if (std::string obstacle = rayQueryInHitObstacle(c); !obstacle.empty())
+    return errorMessage(std::move(obstacle));
+  c.pipeline.ray_query_in_hit = true;
+  return {};
+}
+
 // Every build input laid out another way: instances behind pointers, every
 // input at offsets behind junk, vertices 20 bytes apart (fits every vertex
 // format: at least 12 bytes, a multiple of 4) and boxes 40. Not
@@ -131,6 +140,9 @@ Result<Case> throughPath(const Case& c, FeaturePath path) {
       break;
     case FeaturePath::RayQueryCompute:
       RAYSPEC_TRY_VOID(tracedFromCompute(out));
+      break;
+    case FeaturePath::RayQueryInHit:
+      RAYSPEC_TRY_VOID(tracedByRayQueryInHit(out));
       break;
     case FeaturePath::Layouts:
       RAYSPEC_TRY_VOID(laidOut(out));

@@ -29,6 +29,8 @@ namespace rayspec {
   X(RayQuery, "ray-query")                                                                   \
   /* the same loops in raygen run as a compute shader, one vkCmdDispatch */                  \
   X(RayQueryCompute, "ray-query-compute")                                                    \
+  /* closest-hit's and miss's traces ray query loops there (case/ray_query_inlining.h) */    \
+  X(RayQueryInHit, "ray-query-in-hit")                                                       \
   /* build inputs behind pointers, at offsets, at padded strides (scene.build layouts) */    \
   X(Layouts, "layouts")
 enum class FeaturePath { RAYSPEC_FEATURE_PATHS(RAYSPEC_ENUMERATOR) };

@@ -42,6 +42,8 @@ class ModelFaultSeam {
   bool positionFetchWorldSpace() const { return f_.position_fetch_world_space; }
   // R-BUILTIN broken: object_to_world and world_to_object swapped.
   bool transformBuiltinsSwapped() const { return f_.transform_builtins_swapped; }
+  // R-BUILTIN, R-RQ-EQUIV broken: a nested hit's built-ins replace its caller's.
+  bool nestedTraceClobbersHit() const { return f_.nested_trace_clobbers_hit; }
   // Live state broken: locals read zero after a trace, call or report.
   bool localsLostAcrossCalls() const { return f_.locals_lost_across_calls; }
   // Ray queries: the rule each question stands for broken (ModelFaults' rq_*).

@@ -36,6 +36,11 @@ struct ModelFaults {
   // R-BUILTIN broken: gl_ObjectToWorldEXT and gl_WorldToObjectEXT (and their
   // 3x4 forms) each read the other matrix.
   bool transform_builtins_swapped = false;
+  // R-BUILTIN and R-RQ-EQUIV broken: after a nested trace that hits, the
+  // closest-hit that made it reads the nested hit's built-ins (a device
+  // whose nested query shares its caller's query, or lavapipe 25's pipeline:
+  // references/driver-reports/lavapipe-builtins-after-nested-trace.md).
+  bool nested_trace_clobbers_hit = false;
   // Legal devices (rayspec mutate): every ambiguous trace takes the answer of
   // this index among its legal answers (modulo their number; 0: the model's
   // own), with its shaders run as that answer makes them run.

@@ -101,6 +101,8 @@ class ModelTracer {
   void shadeLaunchRay(uint32_t i, const Ray& ray, uint32_t flags, const RTCRayHit& rh, bool hit,
                       uint32_t* rec);
 
+  void clobberCaller(const TraceRay& r, const Committed& best);  // a planted fault
+
   const ModelShared& sh_;
   LaunchState& st_;
   const ModelSbt& sbt_;
@@ -110,6 +112,9 @@ class ModelTracer {
   // Per ray query nesting level; fixed, so that a nested query's candidates
   // never move the enclosing query's.
   std::array<std::vector<ModelCandidate>, kMaxQueryNesting> query_pool_;
+  // The hit of the closest-hit running now (nullptr: none, or a miss): the
+  // planted fault nested_trace_clobbers_hit overwrites it with a nested hit.
+  HitView* shading_hit_ = nullptr;
 };
 
 }  // namespace rayspec

@@ -7,6 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "base/error_bounds.h"
 #include "case/flag_names.h"
@@ -311,6 +312,17 @@ Committed ModelTracer::traverse(const TraceRay& r, uint32_t flags, uint32_t dept
   return tr.best;
 }
 
+// The planted fault nested_trace_clobbers_hit: the closest-hit that made
+// this nested trace now reads its committed hit.
+void ModelTracer::clobberCaller(const TraceRay& r, const Committed& best) {
+  if (!shading_hit_ || !sh_.fault_seam.nestedTraceClobbersHit()) return;
+  HitView nested = viewOf(*sh_.scene, *sh_.c, r, best.instance, best.geometry, best.primitive,
+                          sh_.need_object_ray);
+  setHit(nested, static_cast<float>(best.t), best.kind, best.b1, best.b2);
+  nested.words = best.words;
+  *shading_hit_ = nested;
+}
+
 // R-MISS-XOR-CHIT: closest-hit or miss for the committed hit.
 void ModelTracer::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Committed& best,
                         Payload& payload) {
@@ -338,8 +350,11 @@ void ModelTracer::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const
         hv.words = best.words;
         st_.bumpRuns(kRunsClosestHit);
         StageEnv env = hitStage(Stage::ClosestHit, rec->data, &payload, r, hv, hv.t, depth);
+        HitView* caller = std::exchange(shading_hit_, &hv);
         interp_.exec(*grp->closest_hit, env);
+        shading_hit_ = caller;
       }
+      if (grp && grp->closest_hit) clobberCaller(r, best);
     }
   } else {
     const uint32_t mi = r.miss & 0xFFFF;
@@ -364,7 +379,9 @@ void ModelTracer::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const
         env.ray = &r;
         env.tmax_view = r.tmax;
         env.depth = depth;
+        HitView* caller = std::exchange(shading_hit_, nullptr);
         interp_.exec(sh_.programs->miss[*rec.group], env);
+        shading_hit_ = caller;
       }
     }
   }

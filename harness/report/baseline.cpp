@@ -122,6 +122,26 @@ std::string siblingFile(const std::string& baseline_csv, const std::string& suff
   return std::filesystem::exists(sibling) ? sibling.string() : std::string();
 }
 
+namespace {
+
+// The file of what feature path `through` changes for the driver of
+// baseline_csv: <driver>-through-<path>.csv. The ray query loops run from a
+// compute shader (ray-query-compute) change what those loops change, so
+// without a file of its own that path reads ray-query's.
+std::string throughFile(const std::string& baseline_csv, const std::string& through) {
+  if (through.empty()) return {};
+  if (std::string own = siblingFile(baseline_csv, "-through-" + through + ".csv"); !own.empty())
+    return own;
+  const std::string compute = "-compute";
+  if (through.size() > compute.size() &&
+      through.compare(through.size() - compute.size(), compute.size(), compute) == 0)
+    return siblingFile(baseline_csv,
+                       "-through-" + through.substr(0, through.size() - compute.size()) + ".csv");
+  return {};
+}
+
+}  // namespace
+
 Result<Baseline> loadBaselineSet(const std::string& csv, std::string flakes, std::string skips,
                                  const std::string& through) {
   Baseline b;
@@ -130,9 +150,7 @@ Result<Baseline> loadBaselineSet(const std::string& csv, std::string flakes, std
     if (!read) return read.error();
     b = std::move(*read);
   }
-  if (const std::string path_file =
-          through.empty() ? std::string() : siblingFile(csv, "-through-" + through + ".csv");
-      !path_file.empty()) {
+  if (const std::string path_file = throughFile(csv, through); !path_file.empty()) {
     Result<Baseline> read = loadBaseline(path_file);
     if (!read) return read.error();
     for (const auto& [name, status] : read->expected) b.expected[name] = status;

@@ -97,9 +97,9 @@ Result<void> checkCaseSupport(const VulkanContext& ctx, const Case& c, const Pla
         "rays.command indirect2: the device lacks VK_KHR_ray_tracing_maintenance1's "
         "rayTracingPipelineTraceRaysIndirect2");
   if (plan.position_fetch) RAYSPEC_TRY_VOID(checkPositionFetch(ctx));
-  if (c.pipeline.ray_query && !d.ray_query)
+  if ((c.pipeline.ray_query || c.pipeline.ray_query_in_hit) && !d.ray_query)
     return notSupported(
-        "traces by ray query (--through ray-query): the device lacks "
+        "traces by ray query (--through ray-query, ray-query-in-hit): the device lacks "
         "VK_KHR_ray_query's rayQuery");
   if (plan.ray_queries && !d.ray_query)
     return notSupported("ray_query statements: the device lacks VK_KHR_ray_query's rayQuery");
