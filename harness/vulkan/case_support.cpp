@@ -99,8 +99,8 @@ Result<void> checkCaseSupport(const VulkanContext& ctx, const Case& c, const Pla
   if (plan.position_fetch) RAYSPEC_TRY_VOID(checkPositionFetch(ctx));
   if ((c.pipeline.ray_query || c.pipeline.ray_query_in_hit) && !d.ray_query)
     return notSupported(
-        "traces by ray query (--through ray-query, ray-query-in-hit): the device lacks "
-        "VK_KHR_ray_query's rayQuery");
+        "traces by ray query (--through ray-query, ray-query-compute, ray-query-in-hit): the "
+        "device lacks VK_KHR_ray_query's rayQuery");
   if (plan.ray_queries && !d.ray_query)
     return notSupported("ray_query statements: the device lacks VK_KHR_ray_query's rayQuery");
   if (c.pipeline.record_layout.declared() && c.pipeline.record_layout.scalar &&
