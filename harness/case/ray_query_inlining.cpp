@@ -24,15 +24,21 @@ std::string notInlinable(const Program& program) {
   return why;
 }
 
-// The hit group and miss programs, the ones inlined.
-std::string notInlinable(const Pipeline& p) {
+// The first reason `check` gives for a hit group or miss program (the ones
+// inlined), or "".
+template <typename Check>
+std::string firstInlinedReason(const Pipeline& p, Check check) {
   for (const Program& m : p.miss)
-    if (std::string why = notInlinable(m); !why.empty()) return why;
+    if (std::string why = check(m); !why.empty()) return why;
   for (const HitGroup& h : p.hit_groups)
     for (const auto* program : {&h.closest_hit, &h.any_hit, &h.intersection})
       if (*program)
-        if (std::string why = notInlinable(**program); !why.empty()) return why;
+        if (std::string why = check(**program); !why.empty()) return why;
   return "";
+}
+
+std::string notInlinable(const Pipeline& p) {
+  return firstInlinedReason(p, [](const Program& q) { return notInlinable(q); });
 }
 
 // What raygen as a compute shader cannot do, in the program it runs or the
@@ -56,13 +62,7 @@ std::string notComputable(const Program& program) {
 
 std::string computeObstacle(const Pipeline& p) {
   if (std::string why = notComputable(p.raygen); !why.empty()) return why;
-  for (const Program& m : p.miss)
-    if (std::string why = notComputable(m); !why.empty()) return why;
-  for (const HitGroup& h : p.hit_groups)
-    for (const auto* program : {&h.closest_hit, &h.any_hit, &h.intersection})
-      if (*program)
-        if (std::string why = notComputable(**program); !why.empty()) return why;
-  return "";
+  return firstInlinedReason(p, notComputable);
 }
 
 // The trace statements of a program, each invoke's function counted at the
