@@ -95,6 +95,57 @@ TEST(ModelRayQuery, ACommittedValueWithNothingCommittedIsUndefined) {
   EXPECT_EQ(r.undefined[0].reason, UndefinedReason::QueryNothingCommitted);
 }
 
+// ray-query/position-fetch: the nearer instance 0 is offered and kept as a
+// candidate's; instance 1 (turned, scaled, moved) is committed. Both read
+// object-space vertices, whatever the transforms (R-POSITION-FETCH).
+TEST(ModelRayQuery, PositionFetchReadsTheCandidatesAndTheCommittedTriangle) {
+  for (ModelTier tier : kTiers) {
+    const Results r = runSuiteCase("ray-query/position-fetch", tier);
+    EXPECT_EQ(column(r, "value", 5), (V{1, 1, 1, 1, 0})) << modelTierName(tier);
+    EXPECT_EQ(column(r, "value2", 4), (V{1, 1, 1, 1}));
+    // Ray 0: the candidate of instance 0 is triangle 0, its second vertex
+    // (0.75, -0.75); instance 1's triangle 0 has third vertex (0.75, 0.75).
+    EXPECT_EQ(fword(r, 0, "color2", 0), 0.75f);
+    EXPECT_EQ(fword(r, 0, "color2", 1), -0.75f);
+    EXPECT_EQ(fword(r, 0, "color2", 3), 0.75f);
+    // Ray 1 commits triangle 1 (0, 2, 3): first vertex (-0.75, -0.75, 0.25), second (0.75, 0.75).
+    EXPECT_EQ(fword(r, 1, "color", 0), -0.75f);
+    EXPECT_EQ(fword(r, 1, "color", 2), 0.25f);
+    EXPECT_EQ(fword(r, 1, "hit_position", 1), 0.75f);
+    EXPECT_TRUE(r.undefined.empty());
+  }
+  ModelFaults world;
+  world.position_fetch_world_space = true;
+  const Results f = runSuiteCase("ray-query/position-fetch", ModelTier::Exact, world);
+  EXPECT_NE(fword(f, 1, "color", 2), 0.25f);  // instance 1 is moved 2 down
+}
+
+TEST(ModelRayQuery, PositionsOfACommittedBoxAreUndefined) {
+  // A box generated at its entry is committed; the after block then reads
+  // the committed positions, which only a triangle has.
+  const Case c = parseInline(
+      "rules: [R-RQ-VALUES]\n"
+      "scene:\n"
+      "  blas:\n"
+      "    box: [{aabbs: [[-1, -1, 1, 1, 1, 2]]}]\n"
+      "  instances: [{blas: box}]\n"
+      "rays:\n"
+      "  list: [{origin: [0, 0, 5], direction: [0, 0, -1]}]\n"
+      "pipeline:\n"
+      "  raygen:\n"
+      "    - ray_query:\n"
+      "        aabb: [generate: 3.0]\n"
+      "        after:\n"
+      "          - if: {eq: [committed.type, 2]}\n"
+      "            then: [record: {hit_position: committed.vertex_position0}]\n"
+      "outputs:\n"
+      "  per_ray: [hit_position]\n");
+  const Results r = runOnModel(c, derivePlan(c), ModelOptions{});
+  ASSERT_EQ(r.undefined.size(), 1u);
+  EXPECT_EQ(r.undefined[0].reason, UndefinedReason::QueryPositionsOfBox);
+  EXPECT_NE(r.undefined[0].what.find("vertex_position0"), std::string::npos);
+}
+
 TEST(ModelRayQuery, TerminateAndFirstHitEndTraversal) {
   for (ModelTier tier : kTiers) {
     const Results t = runSuiteCase("ray-query/terminate-middle", tier);

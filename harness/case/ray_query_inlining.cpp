@@ -15,8 +15,6 @@ std::string notInlinable(const Program& program) {
       why = "it reads shader record members (pipeline.sbt.record_layout)";
     if (e.kind == Expr::Kind::Op && e.name.rfind("light_", 0) == 0)
       why = "a hit or miss stage lights (light_* reads its shader record)";
-    if (e.kind == Expr::Kind::Builtin && e.name.rfind("vertex_position", 0) == 0)
-      why = "it reads vertex positions (position fetch is not generated for ray queries yet)";
   });
   walkStatements(program, [&](const Stmt& s) {
     if (s.kind == Stmt::Kind::Light) why = "a stage reads shader record data (light)";

@@ -236,7 +236,8 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
   // launch's records may exceed maxStorageBufferRange (128 MiB on lavapipe).
   if (plan.records) out.line("#extension GL_EXT_buffer_reference : require");
   if (u.cull_mask) out.line("#extension GL_EXT_ray_cull_mask : require");
-  if (u.position_fetch) out.line("#extension GL_EXT_spirv_intrinsics : require");
+  if (u.position_fetch || u.query_position_fetch)
+    out.line("#extension GL_EXT_spirv_intrinsics : require");
   if (u.record_members && c.pipeline.record_layout.scalar)
     out.line("#extension GL_EXT_scalar_block_layout : require");
   out.line("// rayspec case: " + (c.name.empty() ? std::string("(unnamed)") : c.name));
@@ -255,6 +256,7 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
   if (u.sphere && (stage == Stage::Intersection || ray_query)) include("sphere.glsl", out);
   if (u.light) include("lights.glsl", out);
   if (u.position_fetch) include("position_fetch.glsl", out);
+  if (u.query_position_fetch) include("query_position_fetch.glsl", out);
   if (ctx.compute) emitComputeShaderRecord(ctx, out);
   interfaceVariables(ctx, out);
   specializationConstants(ctx, out);

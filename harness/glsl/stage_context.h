@@ -29,6 +29,8 @@ struct StageUses {
   bool incoming_payload = false;       // payload.* read (outside raygen) or written
   bool cull_mask = false;              // gl_CullMaskEXT read (GL_EXT_ray_cull_mask)
   bool position_fetch = false;         // vertex_position<i> read (shaders/position_fetch.glsl)
+  bool query_position_fetch = false;   // a query's vertex positions read, or vertex_position<i>
+                                       // of an inlined stage (shaders/query_position_fetch.glsl)
   bool counters = false;               // a count of a kept counter
   std::set<int> record_fields;         // indices (recordFields()) of fields written
 };

@@ -20,6 +20,7 @@ void visitExpr(const Expr& e, StageUses& u) {
         (payloadWordBuiltin(e.name) && !payloadWordBuiltin(e.name)->child))
       u.incoming_payload = true;
     if (e.name.rfind("vertex_position", 0) == 0) u.position_fetch = true;
+    if (isQueryVertexPosition(e.name)) u.query_position_fetch = true;
     if (e.name.rfind("child.", 0) == 0) u.reads_child = true;
     if (e.name.rfind("callee.", 0) == 0) u.reads_callee = true;
   } else if (e.kind == Expr::Kind::Op) {

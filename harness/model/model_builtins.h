@@ -29,6 +29,7 @@ class ModelBuiltins {
   // candidate.*, committed.*, query.* of the innermost query (model_builtins_query.cpp).
   Val queryBuiltin(const CExpr& e, const StageEnv& env) const;
   Val queryHit(int row, const HitView& hv) const;
+  Val queryVertexPosition(const HitView& hv, int i) const;
   void unknown(const CExpr& e) const;
   // Widens this ray's object_ray_origin tolerance where hv's world-to-object
   // terms of the world origin are large beside the result (R-PREC).

@@ -39,9 +39,25 @@ Val ModelBuiltins::queryHit(int row, const HitView& hv) const {
       return fromVec3(hv.object_origin);
     case 9:
       return fromVec3(hv.object_direction);
+    case 18:
+    case 19:
+    case 20:
+      return queryVertexPosition(hv, row - 18);
     default:  // object_to_world0..3, then world_to_object0..3
       return transformBuiltin(hv, row < 14 ? row - 10 : 7 + (row - 14));
   }
+}
+
+// vertex_position<i> of the candidate or committed intersection
+// (rayQueryGetIntersectionTriangleVertexPositionsEXT): a triangle's only. A
+// box's has no positions to fetch: R-UB, which the parser cannot tell where
+// the intersection read is the committed one.
+Val ModelBuiltins::queryVertexPosition(const HitView& hv, int i) const {
+  if (!hv.vertices && !st_.ray_undefined)
+    st_.markUndefined(
+        UndefinedReason::QueryPositionsOfBox,
+        "a ray query's vertex_position" + std::to_string(i) + " read of an AABB intersection");
+  return vertexPosition(hv, i);
 }
 
 Val ModelBuiltins::queryBuiltin(const CExpr& e, const StageEnv& env) const {

@@ -6,6 +6,7 @@
 
 #include "case/flag_names.h"
 #include "plan/walk_program.h"
+#include "program/builtins.h"
 
 namespace rayspec {
 namespace {
@@ -136,7 +137,8 @@ void planStatements(const std::vector<StageProgram>& programs, const Pipeline& p
     });
     walkExpressions(*sp.program, [&](const Expr& e) {
       if (e.kind == Expr::Kind::Builtin && e.name == "cull_mask") plan.cull_mask_builtin = true;
-      if (e.kind == Expr::Kind::Builtin && e.name.rfind("vertex_position", 0) == 0)
+      if (e.kind == Expr::Kind::Builtin &&
+          (e.name.rfind("vertex_position", 0) == 0 || isQueryVertexPosition(e.name)))
         plan.position_fetch = true;
       if (sp.stage == Stage::Intersection &&
           (e.name == "aabb_min" || e.name == "aabb_max" || e.name.rfind("sphere_", 0) == 0))
@@ -236,7 +238,8 @@ std::vector<std::string> Plan::describe() const {
   line(cull_mask_builtin, "gl_CullMaskEXT read (VK_KHR_ray_tracing_maintenance1)");
   line(ray_queries, "ray_query statements (VK_KHR_ray_query)");
   line(position_fetch,
-       "gl_HitTriangleVertexPositionsEXT read (VK_KHR_ray_tracing_position_fetch, structures "
+       "vertex positions read (gl_HitTriangleVertexPositionsEXT or a ray query's: "
+       "VK_KHR_ray_tracing_position_fetch, structures "
        "built with ALLOW_DATA_ACCESS)");
   std::string counters_line = "counters:";
   for (const auto& c : counters) counters_line += " " + c;

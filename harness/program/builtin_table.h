@@ -14,8 +14,7 @@
 //     (--through ray-query, glsl/emit_ray_query.h): read through the query
 //     rs_rq, $c standing for its committed flag (false in any-hit and
 //     intersection, true in closest-hit); nullptr where the emitter spells
-//     it (hit, ray_tmax by stage, the word<i> families) or it cannot be read
-//     inlined (vertex_position<i>).
+//     it (hit, ray_tmax by stage, the word<i> families).
 // The ray query getters (candidate.*, committed.*, query.*) read the
 // innermost enclosing ray_query statement through the GLSL macro rs_query
 // (glsl/emit_query.cpp); the candidate rows and the committed rows are in the
@@ -35,129 +34,147 @@
 // The ray query getters, a list of their own so that the model's one switch
 // can name them all at once (model/model_builtins.cpp).
 #define RAYSPEC_QUERY_BUILTINS(X)                                                                 \
-  X(QCandT, "candidate.t", Float, R | C | M | K, "rayQueryGetIntersectionTEXT(rs_query, false)",  \
+  X(QCandT, "candidate.t", Float, kAllStages, "rayQueryGetIntersectionTEXT(rs_query, false)",     \
     nullptr, "the current candidate's t")                                                         \
-  X(QCandCustomIndex, "candidate.instance_custom_index", Uint, R | C | M | K,                     \
+  X(QCandCustomIndex, "candidate.instance_custom_index", Uint, kAllStages,                        \
     "uint(rayQueryGetIntersectionInstanceCustomIndexEXT(rs_query, false))", nullptr,              \
     "the current candidate's instance custom index")                                              \
-  X(QCandInstance, "candidate.instance_id", Uint, R | C | M | K,                                  \
+  X(QCandInstance, "candidate.instance_id", Uint, kAllStages,                                     \
     "uint(rayQueryGetIntersectionInstanceIdEXT(rs_query, false))", nullptr,                       \
     "the current candidate's instance id")                                                        \
-  X(QCandSbtOffset, "candidate.sbt_record_offset", Uint, R | C | M | K,                           \
+  X(QCandSbtOffset, "candidate.sbt_record_offset", Uint, kAllStages,                              \
     "rayQueryGetIntersectionInstanceShaderBindingTableRecordOffsetEXT(rs_query, false)", nullptr, \
     "the current candidate's instance's SBT record offset")                                       \
-  X(QCandGeometry, "candidate.geometry_index", Uint, R | C | M | K,                               \
+  X(QCandGeometry, "candidate.geometry_index", Uint, kAllStages,                                  \
     "uint(rayQueryGetIntersectionGeometryIndexEXT(rs_query, false))", nullptr,                    \
     "the current candidate's geometry index")                                                     \
-  X(QCandPrimitive, "candidate.primitive_id", Uint, R | C | M | K,                                \
+  X(QCandPrimitive, "candidate.primitive_id", Uint, kAllStages,                                   \
     "uint(rayQueryGetIntersectionPrimitiveIndexEXT(rs_query, false))", nullptr,                   \
     "the current candidate's primitive index")                                                    \
-  X(QCandBarycentrics, "candidate.barycentrics", Vec2, R | C | M | K,                             \
+  X(QCandBarycentrics, "candidate.barycentrics", Vec2, kAllStages,                                \
     "rayQueryGetIntersectionBarycentricsEXT(rs_query, false)", nullptr,                           \
     "the current candidate's barycentrics (triangles)")                                           \
-  X(QCandFrontFace, "candidate.front_face", Uint, R | C | M | K,                                  \
+  X(QCandFrontFace, "candidate.front_face", Uint, kAllStages,                                     \
     "uint(rayQueryGetIntersectionFrontFaceEXT(rs_query, false))", nullptr,                        \
     "the current candidate's 1 front face, 0 back face (triangles)")                              \
-  X(QCandObjectOrigin, "candidate.object_ray_origin", Vec3, R | C | M | K,                        \
+  X(QCandObjectOrigin, "candidate.object_ray_origin", Vec3, kAllStages,                           \
     "rayQueryGetIntersectionObjectRayOriginEXT(rs_query, false)", nullptr,                        \
     "the current candidate's object-space ray origin")                                            \
-  X(QCandObjectDirection, "candidate.object_ray_direction", Vec3, R | C | M | K,                  \
+  X(QCandObjectDirection, "candidate.object_ray_direction", Vec3, kAllStages,                     \
     "rayQueryGetIntersectionObjectRayDirectionEXT(rs_query, false)", nullptr,                     \
     "the current candidate's object-space ray direction")                                         \
-  X(QCandObjectToWorld0, "candidate.object_to_world0", Vec3, R | C | M | K,                       \
+  X(QCandObjectToWorld0, "candidate.object_to_world0", Vec3, kAllStages,                          \
     "rayQueryGetIntersectionObjectToWorldEXT(rs_query, false)[0]", nullptr,                       \
     "the current candidate's column 0 of the object-to-world matrix")                             \
-  X(QCandObjectToWorld1, "candidate.object_to_world1", Vec3, R | C | M | K,                       \
+  X(QCandObjectToWorld1, "candidate.object_to_world1", Vec3, kAllStages,                          \
     "rayQueryGetIntersectionObjectToWorldEXT(rs_query, false)[1]", nullptr,                       \
     "the current candidate's column 1 of the object-to-world matrix")                             \
-  X(QCandObjectToWorld2, "candidate.object_to_world2", Vec3, R | C | M | K,                       \
+  X(QCandObjectToWorld2, "candidate.object_to_world2", Vec3, kAllStages,                          \
     "rayQueryGetIntersectionObjectToWorldEXT(rs_query, false)[2]", nullptr,                       \
     "the current candidate's column 2 of the object-to-world matrix")                             \
-  X(QCandObjectToWorld3, "candidate.object_to_world3", Vec3, R | C | M | K,                       \
+  X(QCandObjectToWorld3, "candidate.object_to_world3", Vec3, kAllStages,                          \
     "rayQueryGetIntersectionObjectToWorldEXT(rs_query, false)[3]", nullptr,                       \
     "the current candidate's column 3 of the object-to-world matrix")                             \
-  X(QCandWorldToObject0, "candidate.world_to_object0", Vec3, R | C | M | K,                       \
+  X(QCandWorldToObject0, "candidate.world_to_object0", Vec3, kAllStages,                          \
     "rayQueryGetIntersectionWorldToObjectEXT(rs_query, false)[0]", nullptr,                       \
     "the current candidate's column 0 of the world-to-object matrix")                             \
-  X(QCandWorldToObject1, "candidate.world_to_object1", Vec3, R | C | M | K,                       \
+  X(QCandWorldToObject1, "candidate.world_to_object1", Vec3, kAllStages,                          \
     "rayQueryGetIntersectionWorldToObjectEXT(rs_query, false)[1]", nullptr,                       \
     "the current candidate's column 1 of the world-to-object matrix")                             \
-  X(QCandWorldToObject2, "candidate.world_to_object2", Vec3, R | C | M | K,                       \
+  X(QCandWorldToObject2, "candidate.world_to_object2", Vec3, kAllStages,                          \
     "rayQueryGetIntersectionWorldToObjectEXT(rs_query, false)[2]", nullptr,                       \
     "the current candidate's column 2 of the world-to-object matrix")                             \
-  X(QCandWorldToObject3, "candidate.world_to_object3", Vec3, R | C | M | K,                       \
+  X(QCandWorldToObject3, "candidate.world_to_object3", Vec3, kAllStages,                          \
     "rayQueryGetIntersectionWorldToObjectEXT(rs_query, false)[3]", nullptr,                       \
     "the current candidate's column 3 of the world-to-object matrix")                             \
-  X(QCandType, "candidate.type", Uint, R | C | M | K,                                             \
+  X(QCandVertex0, "candidate.vertex_position0", Vec3, kAllStages,                                 \
+    "rs_query_positions(rs_query, 0u)[0]", nullptr,                                               \
+    "the current candidate triangle's first vertex in object space (position fetch)")             \
+  X(QCandVertex1, "candidate.vertex_position1", Vec3, kAllStages,                                 \
+    "rs_query_positions(rs_query, 0u)[1]", nullptr,                                               \
+    "the current candidate triangle's second vertex in object space (position fetch)")            \
+  X(QCandVertex2, "candidate.vertex_position2", Vec3, kAllStages,                                 \
+    "rs_query_positions(rs_query, 0u)[2]", nullptr,                                               \
+    "the current candidate triangle's third vertex in object space (position fetch)")             \
+  X(QCandType, "candidate.type", Uint, kAllStages,                                                \
     "uint(rayQueryGetIntersectionTypeEXT(rs_query, false))", nullptr,                             \
     "the candidate's type: 0 triangle, 1 AABB")                                                   \
-  X(QCandAabbOpaque, "candidate.aabb_opaque", Uint, R | C | M | K,                                \
+  X(QCandAabbOpaque, "candidate.aabb_opaque", Uint, kAllStages,                                   \
     "uint(rayQueryGetIntersectionCandidateAABBOpaqueEXT(rs_query))", nullptr,                     \
     "1 if the AABB candidate is opaque (after geometry, instance and ray flags)")                 \
-  X(QCommittedT, "committed.t", Float, R | C | M | K,                                             \
-    "rayQueryGetIntersectionTEXT(rs_query, true)", nullptr, "the committed intersection's t")     \
-  X(QCommittedCustomIndex, "committed.instance_custom_index", Uint, R | C | M | K,                \
+  X(QCommittedT, "committed.t", Float, kAllStages, "rayQueryGetIntersectionTEXT(rs_query, true)", \
+    nullptr, "the committed intersection's t")                                                    \
+  X(QCommittedCustomIndex, "committed.instance_custom_index", Uint, kAllStages,                   \
     "uint(rayQueryGetIntersectionInstanceCustomIndexEXT(rs_query, true))", nullptr,               \
     "the committed intersection's instance custom index")                                         \
-  X(QCommittedInstance, "committed.instance_id", Uint, R | C | M | K,                             \
+  X(QCommittedInstance, "committed.instance_id", Uint, kAllStages,                                \
     "uint(rayQueryGetIntersectionInstanceIdEXT(rs_query, true))", nullptr,                        \
     "the committed intersection's instance id")                                                   \
-  X(QCommittedSbtOffset, "committed.sbt_record_offset", Uint, R | C | M | K,                      \
+  X(QCommittedSbtOffset, "committed.sbt_record_offset", Uint, kAllStages,                         \
     "rayQueryGetIntersectionInstanceShaderBindingTableRecordOffsetEXT(rs_query, true)", nullptr,  \
     "the committed intersection's instance's SBT record offset")                                  \
-  X(QCommittedGeometry, "committed.geometry_index", Uint, R | C | M | K,                          \
+  X(QCommittedGeometry, "committed.geometry_index", Uint, kAllStages,                             \
     "uint(rayQueryGetIntersectionGeometryIndexEXT(rs_query, true))", nullptr,                     \
     "the committed intersection's geometry index")                                                \
-  X(QCommittedPrimitive, "committed.primitive_id", Uint, R | C | M | K,                           \
+  X(QCommittedPrimitive, "committed.primitive_id", Uint, kAllStages,                              \
     "uint(rayQueryGetIntersectionPrimitiveIndexEXT(rs_query, true))", nullptr,                    \
     "the committed intersection's primitive index")                                               \
-  X(QCommittedBarycentrics, "committed.barycentrics", Vec2, R | C | M | K,                        \
+  X(QCommittedBarycentrics, "committed.barycentrics", Vec2, kAllStages,                           \
     "rayQueryGetIntersectionBarycentricsEXT(rs_query, true)", nullptr,                            \
     "the committed intersection's barycentrics (triangles)")                                      \
-  X(QCommittedFrontFace, "committed.front_face", Uint, R | C | M | K,                             \
+  X(QCommittedFrontFace, "committed.front_face", Uint, kAllStages,                                \
     "uint(rayQueryGetIntersectionFrontFaceEXT(rs_query, true))", nullptr,                         \
     "the committed intersection's 1 front face, 0 back face (triangles)")                         \
-  X(QCommittedObjectOrigin, "committed.object_ray_origin", Vec3, R | C | M | K,                   \
+  X(QCommittedObjectOrigin, "committed.object_ray_origin", Vec3, kAllStages,                      \
     "rayQueryGetIntersectionObjectRayOriginEXT(rs_query, true)", nullptr,                         \
     "the committed intersection's object-space ray origin")                                       \
-  X(QCommittedObjectDirection, "committed.object_ray_direction", Vec3, R | C | M | K,             \
+  X(QCommittedObjectDirection, "committed.object_ray_direction", Vec3, kAllStages,                \
     "rayQueryGetIntersectionObjectRayDirectionEXT(rs_query, true)", nullptr,                      \
     "the committed intersection's object-space ray direction")                                    \
-  X(QCommittedObjectToWorld0, "committed.object_to_world0", Vec3, R | C | M | K,                  \
+  X(QCommittedObjectToWorld0, "committed.object_to_world0", Vec3, kAllStages,                     \
     "rayQueryGetIntersectionObjectToWorldEXT(rs_query, true)[0]", nullptr,                        \
     "the committed intersection's column 0 of the object-to-world matrix")                        \
-  X(QCommittedObjectToWorld1, "committed.object_to_world1", Vec3, R | C | M | K,                  \
+  X(QCommittedObjectToWorld1, "committed.object_to_world1", Vec3, kAllStages,                     \
     "rayQueryGetIntersectionObjectToWorldEXT(rs_query, true)[1]", nullptr,                        \
     "the committed intersection's column 1 of the object-to-world matrix")                        \
-  X(QCommittedObjectToWorld2, "committed.object_to_world2", Vec3, R | C | M | K,                  \
+  X(QCommittedObjectToWorld2, "committed.object_to_world2", Vec3, kAllStages,                     \
     "rayQueryGetIntersectionObjectToWorldEXT(rs_query, true)[2]", nullptr,                        \
     "the committed intersection's column 2 of the object-to-world matrix")                        \
-  X(QCommittedObjectToWorld3, "committed.object_to_world3", Vec3, R | C | M | K,                  \
+  X(QCommittedObjectToWorld3, "committed.object_to_world3", Vec3, kAllStages,                     \
     "rayQueryGetIntersectionObjectToWorldEXT(rs_query, true)[3]", nullptr,                        \
     "the committed intersection's column 3 of the object-to-world matrix")                        \
-  X(QCommittedWorldToObject0, "committed.world_to_object0", Vec3, R | C | M | K,                  \
+  X(QCommittedWorldToObject0, "committed.world_to_object0", Vec3, kAllStages,                     \
     "rayQueryGetIntersectionWorldToObjectEXT(rs_query, true)[0]", nullptr,                        \
     "the committed intersection's column 0 of the world-to-object matrix")                        \
-  X(QCommittedWorldToObject1, "committed.world_to_object1", Vec3, R | C | M | K,                  \
+  X(QCommittedWorldToObject1, "committed.world_to_object1", Vec3, kAllStages,                     \
     "rayQueryGetIntersectionWorldToObjectEXT(rs_query, true)[1]", nullptr,                        \
     "the committed intersection's column 1 of the world-to-object matrix")                        \
-  X(QCommittedWorldToObject2, "committed.world_to_object2", Vec3, R | C | M | K,                  \
+  X(QCommittedWorldToObject2, "committed.world_to_object2", Vec3, kAllStages,                     \
     "rayQueryGetIntersectionWorldToObjectEXT(rs_query, true)[2]", nullptr,                        \
     "the committed intersection's column 2 of the world-to-object matrix")                        \
-  X(QCommittedWorldToObject3, "committed.world_to_object3", Vec3, R | C | M | K,                  \
+  X(QCommittedWorldToObject3, "committed.world_to_object3", Vec3, kAllStages,                     \
     "rayQueryGetIntersectionWorldToObjectEXT(rs_query, true)[3]", nullptr,                        \
     "the committed intersection's column 3 of the world-to-object matrix")                        \
-  X(QCommittedType, "committed.type", Uint, R | C | M | K,                                        \
+  X(QCommittedVertex0, "committed.vertex_position0", Vec3, kAllStages,                            \
+    "rs_query_positions(rs_query, 1u)[0]", nullptr,                                               \
+    "the committed triangle's first vertex in object space (position fetch)")                     \
+  X(QCommittedVertex1, "committed.vertex_position1", Vec3, kAllStages,                            \
+    "rs_query_positions(rs_query, 1u)[1]", nullptr,                                               \
+    "the committed triangle's second vertex in object space (position fetch)")                    \
+  X(QCommittedVertex2, "committed.vertex_position2", Vec3, kAllStages,                            \
+    "rs_query_positions(rs_query, 1u)[2]", nullptr,                                               \
+    "the committed triangle's third vertex in object space (position fetch)")                     \
+  X(QCommittedType, "committed.type", Uint, kAllStages,                                           \
     "uint(rayQueryGetIntersectionTypeEXT(rs_query, true))", nullptr,                              \
     "the committed type: 0 none, 1 triangle, 2 generated")                                        \
-  X(QTmin, "query.ray_tmin", Float, R | C | M | K, "rayQueryGetRayTMinEXT(rs_query)", nullptr,    \
+  X(QTmin, "query.ray_tmin", Float, kAllStages, "rayQueryGetRayTMinEXT(rs_query)", nullptr,       \
     "the tmin the query was initialized with")                                                    \
-  X(QFlags, "query.ray_flags", Uint, R | C | M | K, "rayQueryGetRayFlagsEXT(rs_query)", nullptr,  \
+  X(QFlags, "query.ray_flags", Uint, kAllStages, "rayQueryGetRayFlagsEXT(rs_query)", nullptr,     \
     "the ray flags the query was initialized with")                                               \
-  X(QWorldOrigin, "query.world_ray_origin", Vec3, R | C | M | K,                                  \
+  X(QWorldOrigin, "query.world_ray_origin", Vec3, kAllStages,                                     \
     "rayQueryGetWorldRayOriginEXT(rs_query)", nullptr,                                            \
     "the world ray origin the query was initialized with")                                        \
-  X(QWorldDirection, "query.world_ray_direction", Vec3, R | C | M | K,                            \
+  X(QWorldDirection, "query.world_ray_direction", Vec3, kAllStages,                               \
     "rayQueryGetWorldRayDirectionEXT(rs_query)", nullptr,                                         \
     "the world ray direction the query was initialized with")
 
@@ -241,12 +258,15 @@
     "gl_CullMaskEXT & 0xFF: the low 8 bits of the cull mask the trace passed, the bits every "     \
     "reading of the specification agrees on (VK_KHR_ray_tracing_maintenance1; NotSupported "       \
     "without it)")                                                                                 \
-  X(Vertex0, "vertex_position0", Vec3, A | C, "rs_hit_positions[0]", nullptr,                      \
+  X(Vertex0, "vertex_position0", Vec3, A | C, "rs_hit_positions[0]",                               \
+    "rs_query_positions(rs_rq, uint($c))[0]",                                                      \
     "gl_HitTriangleVertexPositionsEXT[0]: the hit triangle's first vertex in object space, "       \
     "through the geometry transform (VK_KHR_ray_tracing_position_fetch; triangle hits only)")      \
-  X(Vertex1, "vertex_position1", Vec3, A | C, "rs_hit_positions[1]", nullptr,                      \
+  X(Vertex1, "vertex_position1", Vec3, A | C, "rs_hit_positions[1]",                               \
+    "rs_query_positions(rs_rq, uint($c))[1]",                                                      \
     "gl_HitTriangleVertexPositionsEXT[1]: the hit triangle's second vertex (as vertex_position0)") \
-  X(Vertex2, "vertex_position2", Vec3, A | C, "rs_hit_positions[2]", nullptr,                      \
+  X(Vertex2, "vertex_position2", Vec3, A | C, "rs_hit_positions[2]",                               \
+    "rs_query_positions(rs_rq, uint($c))[2]",                                                      \
     "gl_HitTriangleVertexPositionsEXT[2]: the hit triangle's third vertex (as vertex_position0)")  \
   X(ObjectToWorld0, "object_to_world0", Vec3, I | A | C, "gl_ObjectToWorldEXT[0]",                 \
     "rayQueryGetIntersectionObjectToWorldEXT(rs_rq, $c)[0]",                                       \

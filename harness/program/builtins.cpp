@@ -32,6 +32,12 @@ Builtin builtinId(const BuiltinInfo* info) {
   return info ? static_cast<Builtin>(info - builtins().data()) : kBiUnknown;
 }
 
+bool isQueryVertexPosition(const std::string& name) {
+  const Builtin b = builtinId(findBuiltin(name));
+  return (b >= kBiQCandVertex0 && b <= kBiQCandVertex2) ||
+         (b >= kBiQCommittedVertex0 && b <= kBiQCommittedVertex2);
+}
+
 std::string rayQuerySpelling(const BuiltinInfo& info, bool committed) {
   if (!info.ray_query) return "";
   std::string s = info.ray_query;

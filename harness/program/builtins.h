@@ -57,15 +57,19 @@ static_assert(kBiWorldToObject0 == kBiObjectToWorld0 + 7 &&
               "object_to_world0..3, _3x4_0..2, then world_to_object's, in order");
 
 // The ray query getters: candidate.* then committed.*, the hit rows (t ..
-// world_to_object3) of each in the same order, then query.*.
+// world_to_object3, vertex_position0..2) of each in the same order, then query.*.
 constexpr int kBiQueryHitRows = kBiQCandType - kBiQCandT;
-static_assert(kBiQueryHitRows == 18 && kBiQCommittedT == kBiQCandT + kBiQueryHitRows + 2 &&
+static_assert(kBiQueryHitRows == 21 && kBiQCommittedT == kBiQCandT + kBiQueryHitRows + 2 &&
                   kBiQCommittedType == kBiQCommittedT + kBiQueryHitRows &&
                   kBiQWorldDirection == kBiQCommittedType + 4,
               "candidate.*, committed.* and query.* rows in order");
 constexpr bool isQueryBuiltin(int b) {
   return b >= kBiQCandT && b <= kBiQWorldDirection;
 }
+
+// candidate.vertex_position<i> or committed.vertex_position<i> (position
+// fetch through a ray query).
+bool isQueryVertexPosition(const std::string& name);
 
 // The table of program/builtin_table.h, indexed by Builtin.
 const std::vector<BuiltinInfo>& builtins();

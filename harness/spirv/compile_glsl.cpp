@@ -54,9 +54,10 @@ void glslToSpirv(const std::string& glsl, EShLanguage lang, std::vector<uint32_t
   words.assign(spirv.begin(), spirv.end());
 }
 
-// SPIR-V capability RayTracingPositionFetchKHR (the vertex_position<i>
-// built-ins, shaders/position_fetch.glsl).
-constexpr uint32_t kPositionFetchCapability = 5336;
+// SPIR-V capabilities RayTracingPositionFetchKHR (the vertex_position<i>
+// built-ins, shaders/position_fetch.glsl) and RayQueryPositionFetchKHR (a
+// ray query's, shaders/query_position_fetch.glsl).
+constexpr uint32_t kPositionFetchCapabilities[] = {5336, 5391};
 
 bool declaresCapability(const std::vector<uint32_t>& words, uint32_t capability) {
   constexpr uint32_t kOpCapability = 17, kHeaderWords = 5;
@@ -89,8 +90,9 @@ bool validatorKnowsPositionFetch() {
 // too old to parse it (vulkan/case_support.cpp then requires a layer that
 // knows the extension).
 std::string validate(const std::vector<uint32_t>& words) {
-  if (!validatorKnowsPositionFetch() && declaresCapability(words, kPositionFetchCapability))
-    return "";
+  if (!validatorKnowsPositionFetch())
+    for (uint32_t capability : kPositionFetchCapabilities)
+      if (declaresCapability(words, capability)) return "";
   spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_2);
   std::string messages;
   tools.SetMessageConsumer(
