@@ -16,6 +16,7 @@
 #include "model/model_scene.h"
 #include "model/watertight.h"
 #include "model_support.h"
+#include "suite_cases.h"
 
 namespace rayspec {
 namespace {
@@ -155,6 +156,22 @@ TEST(BoxPad, TighterThanTheFormerPads) {
   const double pad = blasRayPads(moved)[0];
   EXPECT_GT(pad, 2 * 2 * kU * 1e6);
   EXPECT_LT(pad, 1e-5 * 1e6 / 2);
+}
+
+// Many instances times many origins (accel/size-instances: 2^32 pairs, 40 s
+// exactly): the origins' bounding box corners stand in for them, and the
+// pads never shrink.
+TEST(BoxPad, TheOriginsBoxNeverShrinksAPad) {
+  for (const char* name : {"precision/huge-translations", "precision/vertex-and-edge-aim"}) {
+    const std::optional<CaseFile> f = suiteCase(name);
+    ASSERT_TRUE(f) << name;
+    const ParseResult p = loadSuiteCase(*f);
+    ASSERT_TRUE(p.value) << name;
+    const Case& c = *p.value;
+    const std::vector<double> hull = blasRayPads(c, 0), exact = blasRayPads(c, 1e300);
+    ASSERT_EQ(hull.size(), exact.size());
+    for (size_t b = 0; b < hull.size(); ++b) EXPECT_GE(hull[b], exact[b]) << name;
+  }
 }
 
 }  // namespace

@@ -54,6 +54,11 @@ void parseOutputs(YamlReader& r, const YAML::Node& n, Outputs& outputs);
 
 // A generated mesh (`grid`, `fan` or `triangulation` in a `triangles` map):
 // nullopt when n names none, else whether it parsed (then g holds the mesh).
+// `aabbs: {grid: {cells, size, center, height}}` (case/box_grid.h).
+bool parseBoxGrid(YamlReader& r, const YAML::Node& n, const std::string& field, Geometry& g);
+// A `scene.instances` entry `{grid: {cells, spacing, origin, instance}}`
+// (case/box_grid.h): its instances appended to scene.instances.
+void parseInstanceGrid(YamlReader& r, const YAML::Node& n, const std::string& field, Scene& scene);
 std::optional<bool> parseGeneratedMesh(YamlReader& r, const YAML::Node& n, const std::string& field,
                                        Geometry& g);
 

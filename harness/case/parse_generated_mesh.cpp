@@ -1,4 +1,6 @@
-// The generated meshes of a `triangles` map: grid, fan, triangulation.
+// The generated meshes of a `triangles` map: grid, fan, triangulation; the
+// generated boxes of an `aabbs` map and instances of a `scene.instances` entry.
+#include "case/box_grid.h"
 #include "case/case_parts.h"
 #include "case/triangle_fan.h"
 #include "case/triangle_grid.h"
@@ -108,6 +110,58 @@ bool parseTriangulation(YamlReader& r, const YAML::Node& m, const std::string& f
 }
 
 }  // namespace
+
+bool parseBoxGrid(YamlReader& r, const YAML::Node& n, const std::string& field, Geometry& g) {
+  g.kind = Geometry::Kind::Aabbs;
+  const std::string f = field + ".grid";
+  if (!r.expectMap(n, field, {"grid"}) || !r.require(n, field, "grid")) return false;
+  const YAML::Node grid = YamlReader::get(n, "grid");
+  if (!r.expectMap(grid, f, {"cells", "size", "center", "height"}) ||
+      !(r.require(grid, f, "cells") & r.require(grid, f, "size") & r.require(grid, f, "height")))
+    return false;
+  auto cells = parseCells(r, YamlReader::get(grid, "cells"), f + ".cells");
+  auto size = r.numbers<2>(YamlReader::get(grid, "size"), f + ".size");
+  auto center = parseCenter(r, grid, f);
+  auto height = r.number(YamlReader::get(grid, "height"), f + ".height");
+  if (!cells || !size || !center || !height) return false;
+  if (!((*size)[0] > 0 && (*size)[1] > 0 && *height >= 0)) {
+    r.error(grid, f, "size must be positive and height not negative");
+    return false;
+  }
+  makeBoxGrid((*cells)[0], (*cells)[1], *size, *center, *height, g);
+  return true;
+}
+
+void parseInstanceGrid(YamlReader& r, const YAML::Node& n, const std::string& field, Scene& scene) {
+  const std::string f = field + ".grid";
+  const YAML::Node grid = YamlReader::get(n, "grid");
+  if (!r.expectMap(n, field, {"grid"}) ||
+      !r.expectMap(grid, f, {"cells", "spacing", "origin", "instance"}) ||
+      !(r.require(grid, f, "cells") & r.require(grid, f, "spacing") &
+        r.require(grid, f, "instance")))
+    return;
+  auto cells = parseCells(r, YamlReader::get(grid, "cells"), f + ".cells");
+  auto spacing = r.numbers<2>(YamlReader::get(grid, "spacing"), f + ".spacing");
+  std::optional<std::array<double, 3>> origin = std::array<double, 3>{0, 0, 0};
+  if (YamlReader::has(grid, "origin"))
+    origin = r.numbers<3>(YamlReader::get(grid, "origin"), f + ".origin");
+  if (!cells || !spacing || !origin) return;
+  const uint64_t total = scene.instances.size() + uint64_t((*cells)[0]) * (*cells)[1];
+  if (total > kMaxInstances) {
+    r.error(grid, f + ".cells",
+            std::to_string(total) + " instances: at most 2^20 (README.md, Limits)");
+    return;
+  }
+  Instance proto;
+  const YAML::Node inst = YamlReader::get(grid, "instance");
+  parseInstance(r, inst, f + ".instance", scene, proto);
+  if (YamlReader::has(inst, "transform") || YamlReader::has(inst, "custom_index")) {
+    r.error(inst, f + ".instance",
+            "a grid's instances take their translation and custom index from the grid");
+    return;
+  }
+  appendInstanceGrid(proto, (*cells)[0], (*cells)[1], *spacing, *origin, scene.instances);
+}
 
 std::optional<bool> parseGeneratedMesh(YamlReader& r, const YAML::Node& n, const std::string& field,
                                        Geometry& g) {

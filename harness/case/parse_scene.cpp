@@ -110,6 +110,7 @@ bool parseTriangles(YamlReader& r, const YAML::Node& n, const std::string& field
 
 bool parseAabbs(YamlReader& r, const YAML::Node& n, const std::string& field, Geometry& g) {
   g.kind = Geometry::Kind::Aabbs;
+  if (n.IsMap()) return parseBoxGrid(r, n, field, g);
   if (!r.expectSeq(n, field)) return false;  // none: an empty geometry
   bool ok = true;
   for (size_t i = 0; i < n.size(); ++i) {
@@ -334,8 +335,13 @@ void parseScene(YamlReader& r, const YAML::Node& n, Scene& scene) {
             std::to_string(insts.size()) + " instances: at most 2^20 (README.md, Limits)");
   else if (insts.IsDefined() && !insts.IsNull() && r.expectSeq(insts, "scene.instances"))
     for (size_t i = 0; i < insts.size(); ++i) {
+      const std::string field = "scene.instances[" + std::to_string(i) + "]";
+      if (insts[i].IsMap() && YamlReader::has(insts[i], "grid")) {
+        parseInstanceGrid(r, insts[i], field, scene);
+        continue;
+      }
       Instance inst;
-      parseInstance(r, insts[i], "scene.instances[" + std::to_string(i) + "]", scene, inst);
+      parseInstance(r, insts[i], field, scene, inst);
       scene.instances.push_back(inst);
     }
   if (auto u = YamlReader::get(n, "update"); u.IsDefined()) parseSceneUpdate(r, u, scene);

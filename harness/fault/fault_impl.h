@@ -124,6 +124,7 @@ std::string wideLaunchTruncated(Case& c, ModelOptions& o);
 std::string launchIdXWrapped(Case& c, ModelOptions& o);
 std::string specializationIgnored(Case& c, ModelOptions& o);
 std::string emptyGeometryRenumbered(Case& c, ModelOptions& o);
+std::string buildCounts16Bit(Case& c, ModelOptions& o);
 std::string hitAttributesLost(Case& c, ModelOptions& o);
 std::string callableDataNotReturned(Case& c, ModelOptions& o);
 std::string nestedTraceDropped(Case& c, ModelOptions& o);

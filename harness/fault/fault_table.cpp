@@ -273,6 +273,10 @@ std::vector<FaultImpl> structureMutations() {
        "gl_HitTriangleVertexPositionsEXT gives the vertices through the instance transform "
        "(world space), not in object space",
        nullptr, positionFetchWorldSpace},
+      {"build-counts-16-bit", K::CaseMutation,
+       "a build keeps each geometry's primitive count and its instance count in 16 bits: "
+       "2^16 primitives or instances become none, 2^16 + k the first k",
+       nullptr, buildCounts16Bit},
   };
 }
 

@@ -101,4 +101,33 @@ std::string emptyGeometryRenumbered(Case& c, ModelOptions&) {
          " instances of empty BLASes left out of the numbering";
 }
 
+// Large builds broken (R-AS-SIZE): a device that keeps a build's primitive
+// count of each geometry and its instance count in 16 bits, so that 2^16
+// primitives or instances become none and 2^16 + k become the first k.
+std::string buildCounts16Bit(Case& c, ModelOptions&) {
+  if (c.scene.updates()) return "";
+  constexpr uint32_t kWrap = 1u << 16;
+  size_t geometries = 0;
+  for (Blas& b : c.scene.blases)
+    for (Geometry& g : b.geometries) {
+      const uint32_t n = g.primitiveCount();
+      if (n < kWrap) continue;
+      const size_t keep = n % kWrap;
+      if (g.kind == Geometry::Kind::Aabbs) {
+        g.aabbs.resize(keep);
+      } else if (!g.indices.empty()) {
+        g.indices.resize(3 * keep);
+      } else {
+        g.vertices.resize(3 * keep);
+        if (!g.written.empty()) g.written.resize(3 * keep);
+      }
+      ++geometries;
+    }
+  const bool instances = c.scene.instances.size() >= kWrap;
+  if (instances) c.scene.instances.resize(c.scene.instances.size() % kWrap);
+  if (!geometries && !instances) return "";
+  return std::to_string(geometries) + " geometries" + (instances ? " and the instance list" : "") +
+         " cut to their count modulo 2^16";
+}
+
 }  // namespace rayspec

@@ -106,7 +106,7 @@ DVec3 corner(const Box& b, int i) {
 
 }  // namespace
 
-std::vector<double> blasRayPads(const Case& c) {
+std::vector<double> blasRayPads(const Case& c, double exact_pairs) {
   const size_t nb = c.scene.blases.size();
   std::vector<Box> boxes(nb);
   for (size_t b = 0; b < nb; ++b) boxes[b] = blasBox(c.scene.blases[b]);
@@ -122,6 +122,16 @@ std::vector<double> blasRayPads(const Case& c) {
   }
   if (!world.empty())
     for (int i = 0; i < 8; ++i) origins.push_back(corner(world, i));
+  // Many instances times many origins (accel/size-instances: 2^16 x 2^16):
+  // the origins' bounding box corners instead. The distance to a box and |x|
+  // are convex in the origin, so their largest value over the corners is at
+  // least that over the origins: a pad as large or larger, never smaller.
+  if (double(origins.size()) * double(c.scene.instances.size()) > exact_pairs) {
+    Box hull;
+    for (const DVec3& q : origins) hull.add(q);
+    origins.clear();
+    for (int i = 0; i < 8; ++i) origins.push_back(corner(hull, i));
+  }
   std::vector<double> pad(nb, 0.0);
   for (const Instance& inst : c.scene.instances) {
     if (!inst.blas || *inst.blas >= nb || boxes[*inst.blas].empty()) continue;

@@ -18,7 +18,10 @@ constexpr double kBoxMagnitudeSteps = 4.0;
 // Per BLAS of the case: the object-space pad (absolute) for rays through any
 // of its instances: the ray's error (the device's and Embree's object-space
 // ray, Embree's float traversal) and the reach of the exact test's ambiguity
-// zone. Index = BLAS index; 0 for a BLAS no instance uses.
-std::vector<double> blasRayPads(const Case& c);
+// zone. Index = BLAS index; 0 for a BLAS no instance uses. Over more than
+// `exact_pairs` instance-origin pairs the origins' bounding box corners stand
+// in for the origins (pads as large or larger).
+constexpr double kExactPadPairs = double(1 << 24);  // about 0.2 s
+std::vector<double> blasRayPads(const Case& c, double exact_pairs = kExactPadPairs);
 
 }  // namespace rayspec
