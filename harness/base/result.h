@@ -6,7 +6,7 @@
 // Where a failed step only passes its error up, the macros below say so in
 // one line, so that a function reads as its named steps:
 //   RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx, cleanup));
-//   RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd, timeout));
+//   RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd));
 #pragma once
 
 #include <optional>

@@ -8,6 +8,7 @@ VulkanOptions vulkanOptions(const RunOptions& opt) {
   v.validation = !opt.no_validation;
   if (opt.device_per_case == "yes") v.device_per_case = true;
   if (opt.device_per_case == "no") v.device_per_case = false;
+  v.case_timeout_s = opt.timeout;
   return v;
 }
 

@@ -28,7 +28,7 @@ Result<std::vector<VkDeviceSize>> queriedSizes(const VulkanContext& ctx,
   RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx, cleanup));
   vkCmdResetQueryPool(cmd, pool, 0, count);
   ctx.fn.cmdWriteAccelerationStructuresProperties(cmd, count, handles.data(), query, pool, 0);
-  RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd, kBuildTimeoutNs));
+  RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd));
   std::vector<VkDeviceSize> sizes(count);
   RAYSPEC_TRY_VOID(
       vkCheck(vkGetQueryPoolResults(ctx.device, pool, 0, count, count * sizeof(VkDeviceSize),
@@ -129,7 +129,7 @@ Result<Serialized> serialize(const VulkanContext& ctx, const std::vector<BuiltSt
   to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
                        VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0, nullptr);
-  RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd, kBuildTimeoutNs));
+  RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd));
   for (size_t i = 0; i < from.size(); ++i) {
     const auto* data = static_cast<const uint8_t*>(s.memory.mapped) + s.offsets[i];
     RAYSPEC_TRY_VOID(checkSerializedHeader(ctx, data, sizes[i]));
@@ -163,7 +163,7 @@ Result<std::vector<BuiltStructure>> serializeAndBack(const VulkanContext& ctx,
   }
   recordStructureBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
                                   VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
-  RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd, kBuildTimeoutNs));
+  RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd));
   return to;
 }
 
@@ -195,7 +195,7 @@ Result<std::vector<BuiltStructure>> copyStructures(const VulkanContext& ctx,
   }
   recordStructureBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
                                   VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
-  RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd, kBuildTimeoutNs));
+  RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd));
   return to;
 }
 

@@ -380,7 +380,7 @@ class SceneBuilder {
                               VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
                                   VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
                               [this] { return copyTlases(); }));
-    RAYSPEC_TRY_VOID(submitAndWait(ctx_, cmd, kBuildTimeoutNs));
+    RAYSPEC_TRY_VOID(submitAndWait(ctx_, cmd));
     std::vector<VkAccelerationStructureKHR> out;
     for (const BuiltStructure& t : tlas_structures_) out.push_back(t.handle);
     return out;
@@ -408,7 +408,7 @@ class SceneBuilder {
         scene_.build.copy == AsCopy::None ? updates.size() + 1 : scene_.updatesBeforeCopy();
     for (size_t k = 0; k <= updates.size(); ++k) {
       if (k == copy_at) {
-        RAYSPEC_TRY_VOID(submitAndWait(ctx_, cmd, kBuildTimeoutNs));
+        RAYSPEC_TRY_VOID(submitAndWait(ctx_, cmd));
         RAYSPEC_TRY_VOID(copy());
         RAYSPEC_TRY(cmd, beginCommands(ctx_, cleanup_));
       }

@@ -13,9 +13,6 @@ namespace rayspec {
 // The VkFormat of a vertex format (R-VERTEX-FORMAT).
 VkFormat vkVertexFormat(VertexFormat f);
 
-// How long a submission of builds or copies may take.
-constexpr uint64_t kBuildTimeoutNs = 240ull * 1000 * 1000 * 1000;
-
 // Builds the scene and returns its top levels, ready for ray tracing
 // shaders: one BLAS build per case Blas that some instance references (all
 // in one vkCmdBuildAccelerationStructuresKHR), a barrier, the TLAS builds (an

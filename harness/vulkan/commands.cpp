@@ -27,7 +27,7 @@ Result<VkCommandBuffer> beginCommands(const VulkanContext& ctx, Cleanup& cleanup
   return cmd;
 }
 
-Result<void> submitAndWait(const VulkanContext& ctx, VkCommandBuffer cmd, uint64_t timeout_ns) {
+Result<void> submitAndWait(const VulkanContext& ctx, VkCommandBuffer cmd) {
   RAYSPEC_TRY_VOID(vkCheck(vkEndCommandBuffer(cmd), "vkEndCommandBuffer"));
   VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
   VkFence fence = VK_NULL_HANDLE;
@@ -47,7 +47,7 @@ Result<void> submitAndWait(const VulkanContext& ctx, VkCommandBuffer cmd, uint64
   submit.pCommandBuffers = &cmd;
   RAYSPEC_TRY_VOID(vkCheck(vkQueueSubmit(ctx.queue, 1, &submit, fence), "vkQueueSubmit"));
   RAYSPEC_TRY_VOID(vkCall("vkWaitForFences", [&] {
-    return vkWaitForFences(ctx.device, 1, &fence, VK_TRUE, timeout_ns);
+    return vkWaitForFences(ctx.device, 1, &fence, VK_TRUE, ctx.wait_timeout_ns);
   }));
   return {};
 }

@@ -14,6 +14,8 @@
 
 namespace rayspec {
 
+constexpr uint64_t kDefaultWaitTimeoutNs = 240ull * 1000 * 1000 * 1000;
+
 struct VulkanContext {
   VkInstance instance = VK_NULL_HANDLE;
   bool validation = false;
@@ -41,6 +43,11 @@ struct VulkanContext {
   uint32_t queue_family = 0;
   VkQueue queue = VK_NULL_HANDLE;
   DeviceFunctions fn;
+  // How long one submission (builds, copies, the launch) may run before it
+  // is VK_TIMEOUT: past the case's own device timeout (VulkanOptions), so
+  // that a slow first dispatch (lavapipe compiles shaders then) is judged by
+  // the case timeout the user set, not cut short here.
+  uint64_t wait_timeout_ns = kDefaultWaitTimeoutNs;
   VkPipelineCache pipeline_cache =
       VK_NULL_HANDLE;  // vulkan/pipeline_cache.h; none on a device per case
 };

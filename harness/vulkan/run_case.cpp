@@ -19,8 +19,6 @@
 namespace rayspec {
 namespace {
 
-constexpr uint64_t kTraceTimeoutNs = 240ull * 1000 * 1000 * 1000;
-
 // Waits for the device before destroying the case's objects, on every path.
 struct CaseScope {
   CaseScope(VkDevice d, StepCosts& c) : device(d), costs(c) {}
@@ -90,7 +88,7 @@ Result<void> recordAndSubmit(const VulkanContext& ctx, const Case& c, const Laun
   }
   recordReadback(cmd, buffers.images, buffers.image_readback, buffers.image_extent.width,
                  buffers.image_extent.height);
-  return submitAndWait(ctx, cmd, kTraceTimeoutNs);
+  return submitAndWait(ctx, cmd);
 }
 
 }  // namespace

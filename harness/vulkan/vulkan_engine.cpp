@@ -1,5 +1,6 @@
 #include "vulkan/vulkan_engine.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "vulkan/context.h"
@@ -13,6 +14,11 @@ namespace rayspec {
 
 VulkanEngine::VulkanEngine() : ctx_(std::make_unique<VulkanContext>()) {}
 
+uint64_t waitTimeoutNs(double case_timeout_s) {
+  const double ns = (case_timeout_s + 60.0) * 1e9;
+  return std::max(kDefaultWaitTimeoutNs, static_cast<uint64_t>(std::min(ns, 1e18)));
+}
+
 VulkanEngine::~VulkanEngine() {
   close();
 }
@@ -22,6 +28,7 @@ Result<std::unique_ptr<VulkanEngine>> VulkanEngine::create(const VulkanOptions& 
   VulkanContext& ctx = *backend->ctx_;
   // On an error the destructor releases what exists (a device made before
   // the error included: has_device_ follows ctx.device).
+  ctx.wait_timeout_ns = waitTimeoutNs(options.case_timeout_s);
   RAYSPEC_TRY_VOID(createInstance(ctx, options.validation));
   RAYSPEC_TRY_VOID(selectDevice(ctx, options.device_filter));
   const Result<void> device = createDevice(ctx);

@@ -30,6 +30,8 @@ struct VulkanOptions {
                                         // empty = first device with VK_KHR_ray_tracing_pipeline
   bool validation = true;               // enable VK_LAYER_KHRONOS_validation when installed
   std::optional<bool> device_per_case;  // a VkDevice per case; unset: devicePerCase(driver name)
+  double case_timeout_s = 0;            // the case's device timeout (0: none); a submission
+                                        // waits past it (VulkanContext::wait_timeout_ns)
 };
 
 // Whether each case gets a VkDevice of its own (the instance lives on). Yes
@@ -39,6 +41,10 @@ struct VulkanOptions {
 // compiled again (about 0.35 s a case, measured on Mesa 25.0.7); a new device
 // starts the numbering afresh. Elsewhere one device serves every case.
 bool devicePerCase(const std::string& driver_name);
+
+// A submission's fence wait: a minute past the case's device timeout, at
+// least 240 s (a hang guard where no timeout is set: --in-process).
+uint64_t waitTimeoutNs(double case_timeout_s);
 
 // What rayspec knows of a physical device: a member per row of
 // vulkan/device_info_fields.h, which says what each holds.
