@@ -149,6 +149,11 @@ struct AsBuild {
   uint32_t first_vertex = 0;
   uint32_t vertex_stride = 0;
   uint32_t aabb_stride = 0;
+  // scene.build.one_by_one: every build and update in a
+  // vkCmdBuildAccelerationStructuresKHR of its own, in sequence, all in the
+  // same scratch memory (the largest build's), a barrier between each (the
+  // default: each level's builds in one command, each its own scratch).
+  bool one_by_one = false;
   bool customLayout() const {
     return instances_as_pointers || data_offsets || first_vertex || vertex_stride || aabb_stride;
   }

@@ -296,9 +296,11 @@ void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
   const std::string f = "scene.build";
   if (!r.expectMap(n, f,
                    {"flags", "copy", "order", "instances_as_pointers", "data_offsets",
-                    "first_vertex", "vertex_stride", "aabb_stride"}))
+                    "first_vertex", "vertex_stride", "aabb_stride", "one_by_one"}))
     return;
   parseBuildLayout(r, n, build);
+  if (auto v = YamlReader::get(n, "one_by_one"); v.IsDefined())
+    build.one_by_one = parseSwitch(r, v, f + ".one_by_one").value_or(false);
   if (auto v = YamlReader::get(n, "flags"); v.IsDefined())
     if (auto x = r.flags(v, f + ".flags", buildFlagNames())) {
       if ((*x & kBuildPreferFastTrace) && (*x & kBuildPreferFastBuild))

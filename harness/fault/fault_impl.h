@@ -125,6 +125,7 @@ std::string launchIdXWrapped(Case& c, ModelOptions& o);
 std::string specializationIgnored(Case& c, ModelOptions& o);
 std::string emptyGeometryRenumbered(Case& c, ModelOptions& o);
 std::string buildCounts16Bit(Case& c, ModelOptions& o);
+std::string sharedScratchKeepsPrevious(Case& c, ModelOptions& o);
 std::string hitAttributesLost(Case& c, ModelOptions& o);
 std::string callableDataNotReturned(Case& c, ModelOptions& o);
 std::string nestedTraceDropped(Case& c, ModelOptions& o);

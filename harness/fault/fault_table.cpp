@@ -277,6 +277,10 @@ std::vector<FaultImpl> structureMutations() {
        "a build keeps each geometry's primitive count and its instance count in 16 bits: "
        "2^16 primitives or instances become none, 2^16 + k the first k",
        nullptr, buildCounts16Bit},
+      {"shared-scratch-keeps-previous", K::CaseMutation,
+       "builds one after another in the same scratch memory (scene.build.one_by_one) build "
+       "what the one before left there: every BLAS after the first traces as the one before it",
+       nullptr, sharedScratchKeepsPrevious},
   };
 }
 

@@ -130,4 +130,16 @@ std::string buildCounts16Bit(Case& c, ModelOptions&) {
          " cut to their count modulo 2^16";
 }
 
+// R-AS-BUILD broken: builds one after another in the same scratch memory
+// (scene.build.one_by_one) where each after the first finds the one before's
+// state in it and builds that: every BLAS but the first traced as the BLAS
+// before it in the scene's list.
+std::string sharedScratchKeepsPrevious(Case& c, ModelOptions&) {
+  if (!c.scene.build.one_by_one || c.scene.blases.size() < 2 || c.scene.updates()) return "";
+  for (size_t b = c.scene.blases.size(); b-- > 1;)
+    c.scene.blases[b].geometries = c.scene.blases[b - 1].geometries;
+  return std::to_string(c.scene.blases.size() - 1) +
+         " BLASes built as the one before them in the shared scratch";
+}
+
 }  // namespace rayspec

@@ -96,6 +96,14 @@ Result<void> laidOut(Case& c) {
   return {};
 }
 
+// Every build and update recorded in a command of its own, in sequence, in
+// the same scratch memory behind barriers.
+Result<void> builtOneByOne(Case& c) {
+  if (c.scene.build.one_by_one) return errorMessage("the case builds one by one itself");
+  c.scene.build.one_by_one = true;
+  return {};
+}
+
 }  // namespace
 
 const char* featurePathName(FeaturePath p) {
@@ -146,6 +154,9 @@ Result<Case> throughPath(const Case& c, FeaturePath path) {
       break;
     case FeaturePath::Layouts:
       RAYSPEC_TRY_VOID(laidOut(out));
+      break;
+    case FeaturePath::OneByOne:
+      RAYSPEC_TRY_VOID(builtOneByOne(out));
       break;
   }
   return out;

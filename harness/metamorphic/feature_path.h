@@ -1,7 +1,7 @@
 // Feature paths (--through): a way of building and launching that must not
 // change what shaders observe, applied to every case of a run so that the
 // path meets every family (R-INDIRECT, R-LIBRARY, R-AS-COPY, R-AS-UPDATE,
-// R-RQ-EQUIV), or laying the build inputs out another way (layouts).
+// R-RQ-EQUIV, R-AS-BUILD), or laying the build inputs out another way (layouts).
 // The model's expectation stays the case's own; a case that already takes
 // another way of the same kind (its own launch command, libraries, copy or
 // update) is not sent through it, and says why.
@@ -32,7 +32,9 @@ namespace rayspec {
   /* closest-hit's and miss's traces ray query loops there (case/ray_query_inlining.h) */    \
   X(RayQueryInHit, "ray-query-in-hit")                                                       \
   /* build inputs behind pointers, at offsets, at padded strides (scene.build layouts) */    \
-  X(Layouts, "layouts")
+  X(Layouts, "layouts")                                                                      \
+  /* every build and update in a command of its own, one scratch (scene.build.one_by_one) */ \
+  X(OneByOne, "one-by-one")
 enum class FeaturePath { RAYSPEC_FEATURE_PATHS(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(FeaturePath, RAYSPEC_FEATURE_PATHS);
 

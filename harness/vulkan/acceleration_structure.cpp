@@ -1,5 +1,6 @@
 #include "vulkan/acceleration_structure.h"
 
+#include <algorithm>
 #include <cstring>
 #include <functional>
 #include <optional>
@@ -53,6 +54,19 @@ void recordStructureBarrier(VkCommandBuffer cmd, VkPipelineStageFlags dst_stage)
 }
 
 namespace {
+
+// Between two builds sharing scratch memory: the first's scratch writes
+// before the next one's reads and writes (scratch is accessed as
+// ACCELERATION_STRUCTURE_READ/WRITE at the build stage).
+void recordScratchBarrier(VkCommandBuffer cmd) {
+  VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  mb.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
+  mb.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR |
+                     VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                       VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, 0, 1, &mb, 0,
+                       nullptr, 0, nullptr);
+}
 
 constexpr VkBufferUsageFlags kInputUsage =
     VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
@@ -169,7 +183,12 @@ VkAccelerationStructureBuildGeometryInfoKHR buildInfo(
 struct ScratchPlan {
   VkDeviceSize align = 0;
   VkDeviceSize total = 0;
+  bool shared = false;  // scene.build.one_by_one: every build at offset 0, one after another
   VkDeviceSize add(VkDeviceSize size) {
+    if (shared) {
+      total = std::max(total, size);
+      return 0;
+    }
     total = alignUp(total, align);
     const VkDeviceSize at = total;
     total += size;
@@ -195,10 +214,20 @@ struct Builds {
     for (size_t i = 0; i < infos.size(); ++i)
       infos[i].scratchData.deviceAddress = base + scratch_offsets[i];
   }
-  void record(const VulkanContext& ctx, VkCommandBuffer cmd, VkPipelineStageFlags next) const {
+  // All in one command, or (one_by_one) each in its own, the scratch they
+  // share written by one and then by the next behind a barrier.
+  void record(const VulkanContext& ctx, VkCommandBuffer cmd, VkPipelineStageFlags next,
+              bool one_by_one) const {
     if (infos.empty()) return;
-    ctx.fn.cmdBuildAccelerationStructures(cmd, static_cast<uint32_t>(infos.size()), infos.data(),
-                                          ranges.data());
+    if (!one_by_one) {
+      ctx.fn.cmdBuildAccelerationStructures(cmd, static_cast<uint32_t>(infos.size()), infos.data(),
+                                            ranges.data());
+    } else {
+      for (size_t i = 0; i < infos.size(); ++i) {
+        recordScratchBarrier(cmd);  // after the build before it, of this level or another
+        ctx.fn.cmdBuildAccelerationStructures(cmd, 1, &infos[i], &ranges[i]);
+      }
+    }
     recordStructureBarrier(cmd, next);
   }
 };
@@ -364,6 +393,7 @@ class SceneBuilder {
     for (const auto& e : scene.earlier) states_.push_back(e.get());
     states_.push_back(&scene);
     scratch_.align = ctx.as_props.minAccelerationStructureScratchOffsetAlignment;
+    scratch_.shared = scene.build.one_by_one;
   }
 
   Result<std::vector<VkAccelerationStructureKHR>> run() {
@@ -403,7 +433,7 @@ class SceneBuilder {
   Result<void> runLevel(VkCommandBuffer& cmd, const Builds& builds,
                         const std::vector<Builds>& updates, VkPipelineStageFlags next,
                         const std::function<Result<void>()>& copy) {
-    builds.record(ctx_, cmd, next);
+    builds.record(ctx_, cmd, next, scene_.build.one_by_one);
     const size_t copy_at =
         scene_.build.copy == AsCopy::None ? updates.size() + 1 : scene_.updatesBeforeCopy();
     for (size_t k = 0; k <= updates.size(); ++k) {
@@ -412,7 +442,7 @@ class SceneBuilder {
         RAYSPEC_TRY_VOID(copy());
         RAYSPEC_TRY(cmd, beginCommands(ctx_, cleanup_));
       }
-      if (k < updates.size()) updates[k].record(ctx_, cmd, next);
+      if (k < updates.size()) updates[k].record(ctx_, cmd, next, scene_.build.one_by_one);
     }
     return {};
   }

@@ -97,6 +97,8 @@ using DeviceLaunchSize = std::array<uint64_t, 3>;
     "maxComputeWorkGroupCount * maxComputeWorkGroupSize: the largest vkCmdTraceRaysKHR launch")    \
   X(bool, acceleration_structure_host_commands, "acceleration_structure_host_commands",            \
     "accelerationStructureHostCommands", "the acceleration structure feature")                     \
+  X(bool, acceleration_structure_indirect_build, "acceleration_structure_indirect_build",          \
+    "accelerationStructureIndirectBuild", "the acceleration structure feature")                    \
   X(bool, pipeline_library, "pipeline_library", "VK_KHR_pipeline_library",                         \
     "VK_KHR_pipeline_library is offered")                                                          \
   X(bool, ray_query, "ray_query", "VK_KHR_ray_query",                                              \

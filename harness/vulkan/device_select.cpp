@@ -159,6 +159,8 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
       vk12 && d.acceleration_structure_extension && as_features.accelerationStructure;
   d.acceleration_structure_host_commands =
       d.acceleration_structure_extension && as_features.accelerationStructureHostCommands;
+  d.acceleration_structure_indirect_build =
+      d.acceleration_structure_extension && as_features.accelerationStructureIndirectBuild;
   d.acceleration_structure_update_after_bind =
       d.acceleration_structure_extension &&
       as_features.descriptorBindingAccelerationStructureUpdateAfterBind;
