@@ -63,6 +63,20 @@ TEST(SceneBuild, LayoutFieldsAreRead) {
   EXPECT_FALSE(parseBuild("{}").value->scene.build.customLayout());
 }
 
+TEST(SceneBuild, OneByOneAndUpdateIntoAreRead) {
+  const ParseResult r = parseBuild("{one_by_one: true, update_into: other}");
+  ASSERT_TRUE(r.value) << firstError(r);
+  EXPECT_TRUE(r.value->scene.build.one_by_one);
+  EXPECT_TRUE(r.value->scene.build.update_into_other);
+  EXPECT_FALSE(parseBuild("{update_into: same}").value->scene.build.update_into_other);
+  for (const char* bad :
+       {"{update_into: elsewhere}", "{update_into: other, copy: clone}", "{one_by_one: 1}"}) {
+    const ParseResult b = parseBuild(bad);
+    EXPECT_FALSE(b.value) << bad;
+    EXPECT_NE(firstError(b).find("scene.build."), std::string::npos) << firstError(b);
+  }
+}
+
 // A stride that does not fit the float3 vertices (12 bytes, 4 a component)
 // or a box (24 bytes, a multiple of 8) is refused at its field.
 TEST(SceneBuild, LayoutErrorsNameTheField) {

@@ -34,7 +34,8 @@ TEST(FeaturePath, NamesRoundTrip) {
   for (FeaturePath p :
        {FeaturePath::Indirect, FeaturePath::Indirect2, FeaturePath::Libraries, FeaturePath::Clone,
         FeaturePath::Compact, FeaturePath::Serialize, FeaturePath::Update, FeaturePath::RayQuery,
-        FeaturePath::RayQueryCompute, FeaturePath::RayQueryInHit, FeaturePath::Layouts})
+        FeaturePath::RayQueryCompute, FeaturePath::RayQueryInHit, FeaturePath::Layouts,
+        FeaturePath::OneByOne, FeaturePath::UpdateIntoOther})
     EXPECT_EQ(featurePathFromName(featurePathName(p)), p) << featurePathName(p);
   EXPECT_FALSE(featurePathFromName("sideways"));
   EXPECT_NE(featurePathNames().find("serialize"), std::string::npos);
@@ -66,6 +67,16 @@ TEST(FeaturePath, EachPathChangesItsOwnField) {
   const Case computed = *valueOrMessage(throughPath(c, FeaturePath::RayQueryCompute), &why);
   EXPECT_TRUE(computed.pipeline.ray_query && computed.pipeline.from_compute);
   EXPECT_FALSE(valueOrMessage(throughPath(c, FeaturePath::RayQuery), &why)->pipeline.from_compute);
+  EXPECT_TRUE(valueOrMessage(throughPath(c, FeaturePath::OneByOne), &why)->scene.build.one_by_one);
+  const Case into = *valueOrMessage(throughPath(c, FeaturePath::UpdateIntoOther), &why);
+  EXPECT_TRUE(into.scene.build.update_into_other);
+  EXPECT_EQ(into.scene.updates(), 1u);  // no update of its own: one to the same scene
+  const Case twice = *valueOrMessage(throughPath(into, FeaturePath::UpdateIntoOther), &why);
+  EXPECT_EQ(twice.scene.updates(), 1u);  // its own update kept, not another added
+  Case copied = c;
+  copied.scene.build.copy = AsCopy::Clone;
+  EXPECT_FALSE(valueOrMessage(throughPath(copied, FeaturePath::UpdateIntoOther), &why));
+  EXPECT_NE(why.find("copies"), std::string::npos) << why;
 }
 
 // What the ray query form cannot express keeps a case off the path, named.

@@ -154,6 +154,10 @@ struct AsBuild {
   // same scratch memory (the largest build's), a barrier between each (the
   // default: each level's builds in one command, each its own scratch).
   bool one_by_one = false;
+  // scene.build.update_into: other: each update (scene.update) writes a new
+  // structure from the one before (source and destination differ); the
+  // traces use the last. Not with a copy (scene.build.copy).
+  bool update_into_other = false;
   bool customLayout() const {
     return instances_as_pointers || data_offsets || first_vertex || vertex_stride || aabb_stride;
   }

@@ -296,11 +296,18 @@ void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
   const std::string f = "scene.build";
   if (!r.expectMap(n, f,
                    {"flags", "copy", "order", "instances_as_pointers", "data_offsets",
-                    "first_vertex", "vertex_stride", "aabb_stride", "one_by_one"}))
+                    "first_vertex", "vertex_stride", "aabb_stride", "one_by_one", "update_into"}))
     return;
   parseBuildLayout(r, n, build);
   if (auto v = YamlReader::get(n, "one_by_one"); v.IsDefined())
     build.one_by_one = parseSwitch(r, v, f + ".one_by_one").value_or(false);
+  if (auto v = YamlReader::get(n, "update_into"); v.IsDefined())
+    if (auto into = r.string(v, f + ".update_into")) {
+      if (*into == "same" || *into == "other")
+        build.update_into_other = *into == "other";
+      else
+        r.error(v, f + ".update_into", "expected same or other, not '" + *into + "'");
+    }
   if (auto v = YamlReader::get(n, "flags"); v.IsDefined())
     if (auto x = r.flags(v, f + ".flags", buildFlagNames())) {
       if ((*x & kBuildPreferFastTrace) && (*x & kBuildPreferFastBuild))
@@ -350,6 +357,9 @@ void parseScene(YamlReader& r, const YAML::Node& n, Scene& scene) {
   if (auto b = YamlReader::get(n, "build"); b.IsMap()) {
     if (auto o = YamlReader::get(b, "order"); o.IsDefined()) parseBuildOrder(r, o, scene);
     checkStrides(r, b, scene);
+    if (scene.build.update_into_other && scene.build.copy != AsCopy::None)
+      r.error(YamlReader::get(b, "update_into"), "scene.build.update_into",
+              "an update into another structure is not combined with a copy (scene.build.copy)");
   }
 }
 

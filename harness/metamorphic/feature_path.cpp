@@ -104,6 +104,16 @@ Result<void> builtOneByOne(Case& c) {
   return {};
 }
 
+// Every update written into a second structure, source and destination
+// differing: a case's own updates, or else one to the same scene.
+Result<void> updatedIntoOther(Case& c) {
+  if (c.scene.build.copy != AsCopy::None)
+    return errorMessage("the case copies its structures (an update into another is not combined)");
+  if (!c.scene.updates()) RAYSPEC_TRY_VOID(updatedInPlace(c));
+  c.scene.build.update_into_other = true;
+  return {};
+}
+
 }  // namespace
 
 const char* featurePathName(FeaturePath p) {
@@ -157,6 +167,9 @@ Result<Case> throughPath(const Case& c, FeaturePath path) {
       break;
     case FeaturePath::OneByOne:
       RAYSPEC_TRY_VOID(builtOneByOne(out));
+      break;
+    case FeaturePath::UpdateIntoOther:
+      RAYSPEC_TRY_VOID(updatedIntoOther(out));
       break;
   }
   return out;

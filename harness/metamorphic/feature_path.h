@@ -16,25 +16,27 @@
 
 namespace rayspec {
 
-#define RAYSPEC_FEATURE_PATHS(X)                                                             \
-  X(Indirect, "indirect")   /* rays.command indirect: vkCmdTraceRaysIndirectKHR */           \
-  X(Indirect2, "indirect2") /* rays.command indirect2: vkCmdTraceRaysIndirect2KHR */         \
-  X(Libraries, "libraries") /* every miss, hit and callable group in one pipeline library */ \
-  X(Clone, "clone")         /* scene.build.copy clone */                                     \
-  X(Compact, "compact")     /* scene.build.copy compact */                                   \
-  X(Serialize, "serialize") /* scene.build.copy serialize */                                 \
-  /* built with ALLOW_UPDATE, then updated in place to the same scene */                     \
-  X(Update, "update")                                                                        \
-  /* every trace a ray query loop in raygen (case/ray_query_inlining.h) */                   \
-  X(RayQuery, "ray-query")                                                                   \
-  /* the same loops in raygen run as a compute shader, one vkCmdDispatch */                  \
-  X(RayQueryCompute, "ray-query-compute")                                                    \
-  /* closest-hit's and miss's traces ray query loops there (case/ray_query_inlining.h) */    \
-  X(RayQueryInHit, "ray-query-in-hit")                                                       \
-  /* build inputs behind pointers, at offsets, at padded strides (scene.build layouts) */    \
-  X(Layouts, "layouts")                                                                      \
-  /* every build and update in a command of its own, one scratch (scene.build.one_by_one) */ \
-  X(OneByOne, "one-by-one")
+#define RAYSPEC_FEATURE_PATHS(X)                                                              \
+  X(Indirect, "indirect")   /* rays.command indirect: vkCmdTraceRaysIndirectKHR */            \
+  X(Indirect2, "indirect2") /* rays.command indirect2: vkCmdTraceRaysIndirect2KHR */          \
+  X(Libraries, "libraries") /* every miss, hit and callable group in one pipeline library */  \
+  X(Clone, "clone")         /* scene.build.copy clone */                                      \
+  X(Compact, "compact")     /* scene.build.copy compact */                                    \
+  X(Serialize, "serialize") /* scene.build.copy serialize */                                  \
+  /* built with ALLOW_UPDATE, then updated in place to the same scene */                      \
+  X(Update, "update")                                                                         \
+  /* every trace a ray query loop in raygen (case/ray_query_inlining.h) */                    \
+  X(RayQuery, "ray-query")                                                                    \
+  /* the same loops in raygen run as a compute shader, one vkCmdDispatch */                   \
+  X(RayQueryCompute, "ray-query-compute")                                                     \
+  /* closest-hit's and miss's traces ray query loops there (case/ray_query_inlining.h) */     \
+  X(RayQueryInHit, "ray-query-in-hit")                                                        \
+  /* build inputs behind pointers, at offsets, at padded strides (scene.build layouts) */     \
+  X(Layouts, "layouts")                                                                       \
+  /* every build and update in a command of its own, one scratch (scene.build.one_by_one) */  \
+  X(OneByOne, "one-by-one")                                                                   \
+  /* updated into a second structure (scene.build.update_into other; no update: to itself) */ \
+  X(UpdateIntoOther, "update-into-other")
 enum class FeaturePath { RAYSPEC_FEATURE_PATHS(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(FeaturePath, RAYSPEC_FEATURE_PATHS);
 

@@ -202,7 +202,8 @@ struct Builds {
   std::vector<VkAccelerationStructureBuildGeometryInfoKHR> infos;
   std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
   std::vector<VkDeviceSize> scratch_offsets, update_scratch;
-  std::vector<size_t> blas;  // BLAS builds: the scene's BLAS index of each
+  std::vector<VkDeviceSize> sizes;  // each structure's accelerationStructureSize
+  std::vector<size_t> blas;         // BLAS builds: the scene's BLAS index of each
 
   void add(const VkAccelerationStructureBuildGeometryInfoKHR& info,
            const VkAccelerationStructureBuildRangeInfoKHR* range, VkDeviceSize scratch_offset) {
@@ -288,6 +289,7 @@ Result<Builds> createBlases(const VulkanContext& ctx, std::vector<BlasBuild>& bu
     b.address = structureAddress(ctx, b.handle);
     out.add(info, b.ranges.data(), scratch.add(sizes.buildScratchSize));
     out.update_scratch.push_back(sizes.updateScratchSize);
+    out.sizes.push_back(b.size);
     out.blas.push_back(i);
   }
   return out;
@@ -366,8 +368,28 @@ Result<Builds> createTlases(
     structures.push_back({info.dstAccelerationStructure, sizes.accelerationStructureSize});
     out.add(info, &ranges[level], scratch.add(sizes.buildScratchSize));
     out.update_scratch.push_back(sizes.updateScratchSize);
+    out.sizes.push_back(sizes.accelerationStructureSize);
   }
   return out;
+}
+
+// scene.build.update_into other: each update reads the structure the one
+// before wrote and writes a new one of the same size (source and destination
+// differ); returns the structures the last update wrote, which the traces use.
+Result<std::vector<VkAccelerationStructureKHR>> updateIntoOthers(
+    const VulkanContext& ctx, std::vector<Builds>& updates, const Builds& built,
+    VkAccelerationStructureTypeKHR type, Cleanup& cleanup) {
+  std::vector<VkAccelerationStructureKHR> current;
+  for (const auto& info : built.infos) current.push_back(info.dstAccelerationStructure);
+  for (Builds& update : updates)
+    for (size_t i = 0; i < update.infos.size(); ++i) {
+      RAYSPEC_TRY(VkAccelerationStructureKHR into,
+                  createStructure(ctx, type, built.sizes[i], cleanup));
+      update.infos[i].srcAccelerationStructure = current[i];
+      update.infos[i].dstAccelerationStructure = into;
+      current[i] = into;
+    }
+  return current;
 }
 
 // One scratch buffer for every build; its address aligned up to the
@@ -478,6 +500,16 @@ class SceneBuilder {
       }
       blas_updates_.push_back(updatesOf(blases_, geometries, ranges, scratch_));
     }
+    if (scene_.build.update_into_other && !blas_updates_.empty()) {
+      RAYSPEC_TRY(const std::vector<VkAccelerationStructureKHR> last,
+                  updateIntoOthers(ctx_, blas_updates_, blases_,
+                                   VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, cleanup_));
+      for (size_t k = 0; k < last.size(); ++k) {  // the instances reference these
+        BlasBuild& b = builds_[blases_.blas[k]];
+        b.handle = last[k];
+        b.address = structureAddress(ctx_, b.handle);
+      }
+    }
     return {};
   }
 
@@ -506,6 +538,12 @@ class SceneBuilder {
       std::vector<const std::vector<VkAccelerationStructureGeometryKHR>*> geometries;
       for (const auto& g : geometry_[k]) geometries.push_back(&g);
       tlas_updates_.push_back(updatesOf(tlases_, geometries, ranges, scratch_));
+    }
+    if (scene_.build.update_into_other && !tlas_updates_.empty()) {
+      RAYSPEC_TRY(const std::vector<VkAccelerationStructureKHR> last,
+                  updateIntoOthers(ctx_, tlas_updates_, tlases_,
+                                   VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, cleanup_));
+      for (size_t k = 0; k < last.size(); ++k) tlas_structures_[k].handle = last[k];
     }
     return {};
   }
