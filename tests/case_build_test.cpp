@@ -64,13 +64,14 @@ TEST(SceneBuild, LayoutFieldsAreRead) {
 }
 
 TEST(SceneBuild, OneByOneAndUpdateIntoAreRead) {
-  const ParseResult r = parseBuild("{one_by_one: true, update_into: other}");
+  const ParseResult r = parseBuild("{one_by_one: true, update_into: other, tlas_update: rebuild}");
   ASSERT_TRUE(r.value) << firstError(r);
+  EXPECT_TRUE(r.value->scene.build.tlas_rebuilt);
   EXPECT_TRUE(r.value->scene.build.one_by_one);
   EXPECT_TRUE(r.value->scene.build.update_into_other);
   EXPECT_FALSE(parseBuild("{update_into: same}").value->scene.build.update_into_other);
-  for (const char* bad :
-       {"{update_into: elsewhere}", "{update_into: other, copy: clone}", "{one_by_one: 1}"}) {
+  for (const char* bad : {"{update_into: elsewhere}", "{update_into: other, copy: clone}",
+                          "{one_by_one: 1}", "{tlas_update: refit}"}) {
     const ParseResult b = parseBuild(bad);
     EXPECT_FALSE(b.value) << bad;
     EXPECT_NE(firstError(b).find("scene.build."), std::string::npos) << firstError(b);

@@ -158,6 +158,10 @@ struct AsBuild {
   // structure from the one before (source and destination differ); the
   // traces use the last. Not with a copy (scene.build.copy).
   bool update_into_other = false;
+  // scene.build.tlas_update: rebuild: after each update the top levels are
+  // built anew (MODE_BUILD) over the updated BLASes and new instances, not
+  // updated.
+  bool tlas_rebuilt = false;
   bool customLayout() const {
     return instances_as_pointers || data_offsets || first_vertex || vertex_stride || aabb_stride;
   }

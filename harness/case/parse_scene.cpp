@@ -294,9 +294,10 @@ void checkStrides(YamlReader& r, const YAML::Node& n, const Scene& scene) {
 // (R-AS-COPY).
 void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
   const std::string f = "scene.build";
-  if (!r.expectMap(n, f,
-                   {"flags", "copy", "order", "instances_as_pointers", "data_offsets",
-                    "first_vertex", "vertex_stride", "aabb_stride", "one_by_one", "update_into"}))
+  if (!r.expectMap(
+          n, f,
+          {"flags", "copy", "order", "instances_as_pointers", "data_offsets", "first_vertex",
+           "vertex_stride", "aabb_stride", "one_by_one", "update_into", "tlas_update"}))
     return;
   parseBuildLayout(r, n, build);
   if (auto v = YamlReader::get(n, "one_by_one"); v.IsDefined())
@@ -307,6 +308,13 @@ void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
         build.update_into_other = *into == "other";
       else
         r.error(v, f + ".update_into", "expected same or other, not '" + *into + "'");
+    }
+  if (auto v = YamlReader::get(n, "tlas_update"); v.IsDefined())
+    if (auto how = r.string(v, f + ".tlas_update")) {
+      if (*how == "update" || *how == "rebuild")
+        build.tlas_rebuilt = *how == "rebuild";
+      else
+        r.error(v, f + ".tlas_update", "expected update or rebuild, not '" + *how + "'");
     }
   if (auto v = YamlReader::get(n, "flags"); v.IsDefined())
     if (auto x = r.flags(v, f + ".flags", buildFlagNames())) {

@@ -201,7 +201,7 @@ struct ScratchPlan {
 struct Builds {
   std::vector<VkAccelerationStructureBuildGeometryInfoKHR> infos;
   std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
-  std::vector<VkDeviceSize> scratch_offsets, update_scratch;
+  std::vector<VkDeviceSize> scratch_offsets, update_scratch, build_scratch;
   std::vector<VkDeviceSize> sizes;  // each structure's accelerationStructureSize
   std::vector<size_t> blas;         // BLAS builds: the scene's BLAS index of each
 
@@ -235,18 +235,22 @@ struct Builds {
 
 // The same builds in UPDATE mode (R-AS-UPDATE): each structure updated in
 // place from `geometries[i]` (which must outlive the result).
+// rebuild (scene.build.tlas_update rebuild, top levels only): built anew
+// from the new state's inputs instead (MODE_BUILD, no source).
 Builds updatesOf(
     const Builds& built,
     const std::vector<const std::vector<VkAccelerationStructureGeometryKHR>*>& geometries,
     const std::vector<const VkAccelerationStructureBuildRangeInfoKHR*>& ranges,
-    ScratchPlan& scratch) {
+    ScratchPlan& scratch, bool rebuild = false) {
   Builds out;
   for (size_t i = 0; i < built.infos.size(); ++i) {
     VkAccelerationStructureBuildGeometryInfoKHR info = built.infos[i];
-    info.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR;
-    info.srcAccelerationStructure = info.dstAccelerationStructure;
+    info.mode = rebuild ? VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR
+                        : VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR;
+    info.srcAccelerationStructure = rebuild ? VK_NULL_HANDLE : info.dstAccelerationStructure;
     info.pGeometries = geometries[i]->data();
-    out.add(info, ranges[i], scratch.add(built.update_scratch[i]));
+    out.add(info, ranges[i],
+            scratch.add(rebuild ? built.build_scratch[i] : built.update_scratch[i]));
   }
   return out;
 }
@@ -289,6 +293,7 @@ Result<Builds> createBlases(const VulkanContext& ctx, std::vector<BlasBuild>& bu
     b.address = structureAddress(ctx, b.handle);
     out.add(info, b.ranges.data(), scratch.add(sizes.buildScratchSize));
     out.update_scratch.push_back(sizes.updateScratchSize);
+    out.build_scratch.push_back(sizes.buildScratchSize);
     out.sizes.push_back(b.size);
     out.blas.push_back(i);
   }
@@ -368,6 +373,7 @@ Result<Builds> createTlases(
     structures.push_back({info.dstAccelerationStructure, sizes.accelerationStructureSize});
     out.add(info, &ranges[level], scratch.add(sizes.buildScratchSize));
     out.update_scratch.push_back(sizes.updateScratchSize);
+    out.build_scratch.push_back(sizes.buildScratchSize);
     out.sizes.push_back(sizes.accelerationStructureSize);
   }
   return out;
@@ -385,7 +391,8 @@ Result<std::vector<VkAccelerationStructureKHR>> updateIntoOthers(
     for (size_t i = 0; i < update.infos.size(); ++i) {
       RAYSPEC_TRY(VkAccelerationStructureKHR into,
                   createStructure(ctx, type, built.sizes[i], cleanup));
-      update.infos[i].srcAccelerationStructure = current[i];
+      if (update.infos[i].mode == VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR)
+        update.infos[i].srcAccelerationStructure = current[i];
       update.infos[i].dstAccelerationStructure = into;
       current[i] = into;
     }
@@ -537,7 +544,8 @@ class SceneBuilder {
     for (size_t k = 1; k < states_.size(); ++k) {
       std::vector<const std::vector<VkAccelerationStructureGeometryKHR>*> geometries;
       for (const auto& g : geometry_[k]) geometries.push_back(&g);
-      tlas_updates_.push_back(updatesOf(tlases_, geometries, ranges, scratch_));
+      tlas_updates_.push_back(
+          updatesOf(tlases_, geometries, ranges, scratch_, scene_.build.tlas_rebuilt));
     }
     if (scene_.build.update_into_other && !tlas_updates_.empty()) {
       RAYSPEC_TRY(const std::vector<VkAccelerationStructureKHR> last,
