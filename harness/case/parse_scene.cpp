@@ -236,6 +236,16 @@ void parseInstance(YamlReader& r, const YAML::Node& n, const std::string& field,
 
 namespace {
 
+// A field that is one of two words: false for `first`, true for `second`.
+std::optional<bool> parseEither(YamlReader& r, const YAML::Node& n, const std::string& field,
+                                const char* first, const char* second) {
+  const auto text = r.string(n, field);
+  if (!text) return std::nullopt;
+  if (*text == first || *text == second) return *text == second;
+  r.error(n, field, "expected " + std::string(first) + " or " + second + ", not '" + *text + "'");
+  return std::nullopt;
+}
+
 // A yes/no field: true or false.
 std::optional<bool> parseSwitch(YamlReader& r, const YAML::Node& n, const std::string& field) {
   const auto text = r.string(n, field);
@@ -303,19 +313,10 @@ void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
   if (auto v = YamlReader::get(n, "one_by_one"); v.IsDefined())
     build.one_by_one = parseSwitch(r, v, f + ".one_by_one").value_or(false);
   if (auto v = YamlReader::get(n, "update_into"); v.IsDefined())
-    if (auto into = r.string(v, f + ".update_into")) {
-      if (*into == "same" || *into == "other")
-        build.update_into_other = *into == "other";
-      else
-        r.error(v, f + ".update_into", "expected same or other, not '" + *into + "'");
-    }
+    build.update_into_other =
+        parseEither(r, v, f + ".update_into", "same", "other").value_or(false);
   if (auto v = YamlReader::get(n, "tlas_update"); v.IsDefined())
-    if (auto how = r.string(v, f + ".tlas_update")) {
-      if (*how == "update" || *how == "rebuild")
-        build.tlas_rebuilt = *how == "rebuild";
-      else
-        r.error(v, f + ".tlas_update", "expected update or rebuild, not '" + *how + "'");
-    }
+    build.tlas_rebuilt = parseEither(r, v, f + ".tlas_update", "update", "rebuild").value_or(false);
   if (auto v = YamlReader::get(n, "flags"); v.IsDefined())
     if (auto x = r.flags(v, f + ".flags", buildFlagNames())) {
       if ((*x & kBuildPreferFastTrace) && (*x & kBuildPreferFastBuild))

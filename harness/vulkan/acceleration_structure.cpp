@@ -196,8 +196,9 @@ struct ScratchPlan {
   }
 };
 
-// Builds (or updates) of one level recorded in one vkCmdBuildAccelerationStructuresKHR,
-// each with its scratch offset, and each structure's update scratch size.
+// Builds (or updates) of one level recorded in one vkCmdBuildAccelerationStructuresKHR
+// (or one each: scene.build.one_by_one), each with its scratch offset, and
+// each structure's size and build and update scratch sizes.
 struct Builds {
   std::vector<VkAccelerationStructureBuildGeometryInfoKHR> infos;
   std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
