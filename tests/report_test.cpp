@@ -327,6 +327,31 @@ TEST(RunSummary, CaseErrorsAreListedApartFromTheDevicesFailures) {
   EXPECT_TRUE(summary.failed()) << "a case error fails the run";
 }
 
+// --brief (ctest): the progress and the summary name only what fails the run,
+// so the first lines of a failing test's log are the failing cases.
+TEST(RunSummary, BriefPrintsOnlyWhatFailsTheRun) {
+  std::string error;
+  const Baseline b =
+      orError(loadBaseline(writeTemp("baseline-brief.csv", "fam/known,Fail\n")), &error);
+  ASSERT_EQ(error, "");
+  CaseOutcome known{"fam/known", {}, Status::Fail, "Fail: known"};
+  CaseOutcome passing{"fam/passing", {}, Status::Pass, "Pass"};
+  CaseOutcome unsupported{"fam/unsupported", {}, Status::NotSupported, "NotSupported: x"};
+  CaseOutcome broken{"fam/broken", {}, Status::Fail, "Fail: new"};
+  for (CaseOutcome* o : {&known, &passing, &unsupported, &broken}) applyBaseline(b, *o);
+  RunSummary summary(4, RunSummary::Progress::Brief);
+  testing::internal::CaptureStdout();
+  for (const CaseOutcome& o : {known, passing, unsupported, broken}) summary.add(o);
+  summary.print(true);
+  const std::string out = testing::internal::GetCapturedStdout();
+  EXPECT_LT(out.find("[4/4] fam/broken"), out.find("==== rayspec summary")) << out;
+  EXPECT_NE(out.find("  fam/broken "), std::string::npos) << out;
+  for (const char* quiet : {"fam/known", "fam/passing", "fam/unsupported"})
+    EXPECT_EQ(out.find(quiet), std::string::npos) << quiet << " in\n" << out;
+  EXPECT_NE(out.find("NotSupported    1"), std::string::npos) << "the counts stay\n" << out;
+  EXPECT_TRUE(summary.failed());
+}
+
 TEST(RuleCatalog, ErrorsNameFileLineAndWhatWasExpected) {
   const auto missing = loadRuleCatalog(testing_support::testDir() + "/no-such-catalog.yaml");
   ASSERT_FALSE(missing);

@@ -30,7 +30,7 @@ int runMerge(const MergeOptions& opt) {
     return kExitSetup;
   }
   const SavedRun& merged = *run;
-  RunSummary summary(merged.outcomes.size(), false);
+  RunSummary summary(merged.outcomes.size(), RunSummary::Progress::Quiet);
   for (const CaseOutcome& o : merged.outcomes) summary.add(o);
   for (const std::string& m : merged.info.teardown_errors) summary.addTeardownError(m);
   std::printf("Merged %zu folders: %zu cases on %s\n", opt.dirs.size(), merged.outcomes.size(),

@@ -36,7 +36,7 @@ void printNotSupportedReasons(const std::vector<CaseOutcome>& outcomes) {
 }  // namespace
 
 void RunSummary::starting(const std::string& name) {
-  if (!isatty(STDOUT_FILENO)) return;
+  if (progress_ == Progress::Quiet || !isatty(STDOUT_FILENO)) return;
   std::printf("\r[%zu/%zu] running %s...\x1b[K", outcomes_.size() + 1, total_, name.c_str());
   std::fflush(stdout);
   live_ = true;
@@ -44,7 +44,8 @@ void RunSummary::starting(const std::string& name) {
 
 void RunSummary::add(const CaseOutcome& o) {
   outcomes_.push_back(o);
-  if (!progress_) return;
+  if (progress_ == Progress::Quiet) return;
+  if (progress_ == Progress::Brief && !failsRun(o)) return;
   if (live_) std::printf("\r\x1b[K");
   live_ = false;
   std::printf("[%zu/%zu] %-44s %-14s device %7.3f s  model %7.3f s\n", outcomes_.size(), total_,
@@ -72,7 +73,7 @@ bool RunSummary::allNotSupported() const {
   return !outcomes_.empty();
 }
 
-void RunSummary::print() const {
+void RunSummary::print(bool brief) const {
   std::map<Status, int> counts;
   for (const CaseOutcome& o : outcomes_) ++counts[o.status];
   std::printf("\n==== rayspec summary: %zu cases ====\n", outcomes_.size());
@@ -82,7 +83,10 @@ void RunSummary::print() const {
   for (const CaseOutcome& o : outcomes_) {
     if (o.status == Status::CaseError) continue;  // listed apart below
     if (o.status == Status::Pass && o.baseline == BaselineMatch::None) continue;
-    if (!header) std::printf("Not passing, or not as the baseline expects:\n");
+    if (brief && !failsRun(o)) continue;
+    if (!header)
+      std::printf(brief ? "Failing the run (--brief lists no other):\n"
+                                               : "Not passing, or not as the baseline expects:\n");
     header = true;
     std::printf("  %-44s %s%s\n", o.name.c_str(), o.headline.c_str(), gateTag(o).c_str());
   }

@@ -11,13 +11,19 @@ namespace rayspec {
 
 class RunSummary {
  public:
-  // progress: a line per case as it is added (a merge adds them quietly).
-  explicit RunSummary(size_t total, bool progress = true) : total_(total), progress_(progress) {}
+  // What is printed as cases are added: every case; only what fails the run
+  // (ctest's runs, whose first lines a CI log keeps); nothing (a merge, or the
+  // run's closing summary).
+  enum class Progress { Every, Brief, Quiet };
+  explicit RunSummary(size_t total, Progress progress = Progress::Every)
+      : total_(total), progress_(progress) {}
   // On a terminal: a live "[i/N] running NAME..." line until add().
   void starting(const std::string& name);
   void add(const CaseOutcome& outcome);         // prints the progress line
   void addTeardownError(const std::string& m);  // validation errors at device destruction
-  void print() const;
+  // Counts, then the cases not passing or not as the baseline expects; brief:
+  // only those that fail the run.
+  void print(bool brief = false) const;
   const std::vector<CaseOutcome>& outcomes() const { return outcomes_; }
   const std::vector<std::string>& teardownErrors() const { return teardown_errors_; }
   bool failed() const;
@@ -25,7 +31,7 @@ class RunSummary {
 
  private:
   size_t total_;
-  bool progress_;
+  Progress progress_;
   bool live_ = false;  // a live line is on screen
   std::vector<CaseOutcome> outcomes_;
   std::vector<std::string> teardown_errors_;

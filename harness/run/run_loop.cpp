@@ -157,12 +157,13 @@ unsigned jobCount(const RunOptions& opt, size_t cases, bool gpu) {
 class RunBook {
  public:
   RunBook(const PreparedRun& prepared, const Baseline& baseline, RunInfo& info,
-          const std::string& out)
+          const std::string& out, bool brief)
       : outcomes_(prepared.planned.size()),
         baseline_(baseline),
         info_(info),
         out_(out),
-        progress_(prepared.planned.size()) {}
+        progress_(prepared.planned.size(),
+                  brief ? RunSummary::Progress::Brief : RunSummary::Progress::Every) {}
 
   // The case at `position` ended (or was ready): journal, progress line, and
   // the reports in full now and then.
@@ -416,10 +417,10 @@ int finishRun(RunBook& book, RunInfo& info, const RunOptions& opt, size_t planne
   info.coverage = ruleCoverage(info.catalog, case_rules);
   info.interrupted = ended.size() < planned;
   book.writeAll();
-  RunSummary summary(planned, false);
+  RunSummary summary(planned, RunSummary::Progress::Quiet);
   for (const CaseOutcome& o : book.ended()) summary.add(o);
   for (const std::string& m : book.teardown()) summary.addTeardownError(m);
-  summary.print();
+  summary.print(opt.brief);
   if (info.interrupted) std::printf("INTERRUPTED: %zu of %zu cases ran\n", ended.size(), planned);
   std::printf("Reports: %s/report.html, results.csv, junit.xml, summary.json\n", opt.out.c_str());
   const int status = runExitStatus(summary, planned, device_found, interruptSignal());
@@ -448,7 +449,7 @@ int runPreparedCases(const RunOptions& opt, const std::vector<CaseFile>& files,
   if (!opt.resume)
     if (const Result<void> started = startJournal(opt.out); !started)
       std::fprintf(stderr, "rayspec run: %s\n", started.error().format().c_str());
-  RunBook book(prepared, baseline, info, opt.out);
+  RunBook book(prepared, baseline, info, opt.out, opt.brief);
   book.writeAll();  // empty and marked interrupted until the run ends
   const std::vector<size_t> order = dealOrder(prepared, opt, jobs, book);
   catchInterrupts();
