@@ -48,7 +48,7 @@ TEST(LibraryGroupHandles, EveryLibraryGroupIsComparedAndIdentical) {
   const Results r = (*engine)->run(c, derivePlan(c));
   ASSERT_TRUE(r.ok()) << r.statusText();
   EXPECT_EQ(r.library_handles_compared, 2u);  // the miss group and the hit group
-  EXPECT_TRUE(r.device_findings.empty()) << r.device_findings.front();
+  EXPECT_TRUE(r.device_findings.empty()) << r.device_findings.front().message;
 }
 
 }  // namespace

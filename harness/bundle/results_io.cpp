@@ -200,7 +200,9 @@ Result<void> writeResults(const Results& r, const std::string& dir_name,
   j["record_words"] = recordWords();
   j["counters"] = r.counters;
   j["validation_messages"] = r.validation_messages;
-  j["device_findings"] = r.device_findings;
+  j["device_findings"] = json::array();
+  for (const DeviceFinding& f : r.device_findings)
+    j["device_findings"].push_back({{"rule", f.rule}, {"message", f.message}});
   j["rejected"] = r.rejected;
   j["library_handles_compared"] = r.library_handles_compared;
   j["images"] = json::array();
@@ -270,7 +272,13 @@ Result<void> readHeader(const json& j, FieldReader& field, Results& r) {
   r.counters = field(j, "counters").get<std::map<std::string, uint64_t>>();
   r.validation_messages = field(j, "validation_messages").get<std::vector<std::string>>();
   if (j.contains("device_findings"))  // bundles saved before it was kept have none
-    r.device_findings = field(j, "device_findings").get<std::vector<std::string>>();
+    for (const json& f : field(j, "device_findings")) {
+      if (f.is_string())  // saved before findings named their rule: all were R-LIBRARY's
+        r.device_findings.push_back({"R-LIBRARY", f.get<std::string>()});
+      else
+        r.device_findings.push_back(
+            {f.at("rule").get<std::string>(), f.at("message").get<std::string>()});
+    }
   if (j.contains("rejected"))  // nor rejections
     r.rejected = field(j, "rejected").get<std::vector<std::string>>();
   r.library_handles_compared = j.value("library_handles_compared", 0u);

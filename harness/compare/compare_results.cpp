@@ -59,10 +59,10 @@ Verdict compareResults(const Case& c, const Plan& plan, const Results& device,
                 " validation-layer error(s); first: " + device.validation_messages.front();
     v.add(f);
   }
-  for (const std::string& what : device.device_findings) {
+  for (const DeviceFinding& found : device.device_findings) {
     Finding f;
-    f.rule = "R-LIBRARY";
-    f.message = what;
+    f.rule = found.rule;
+    f.message = found.message;
     v.add(f);
   }
   if (!c.expected_rejections.empty()) {  // no launch: the compiler's answers only

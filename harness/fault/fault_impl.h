@@ -54,6 +54,7 @@ FaultResult indirectLaunchShort(RecordFaultArgs& a);
 FaultResult launchDepthLost(RecordFaultArgs& a);
 FaultResult zeroLaunchRuns(RecordFaultArgs& a);
 FaultResult libraryHandleDiffers(RecordFaultArgs& a);
+FaultResult memoryGuardOverwritten(RecordFaultArgs& a);
 FaultResult tieAnsweredNeither(RecordFaultArgs& a);  // record_faults_ties.cpp
 
 // Case mutations: scene (mutate_scene.cpp), boxes (mutate_boxes.cpp), ray

@@ -52,6 +52,11 @@ std::vector<FaultImpl> recordEdits() {
        "a group handle read from a pipeline library differs from its handle in the linked "
        "pipeline",
        libraryHandleDiffers},
+      {"memory-guard-overwritten", K::RecordEdit,
+       "a build writes past the accelerationStructureSize it reported: the guard after the "
+       "first structure changed (the finding the device side's guards make; "
+       "build-writes-past-size makes it on a live device)",
+       memoryGuardOverwritten},
       {"tie-answered-neither", K::RecordEdit,
        "a hit tied with another at the committed t (or at an interval end) is answered with "
        "neither: a miss",

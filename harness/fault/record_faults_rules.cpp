@@ -239,9 +239,21 @@ namespace rayspec {
 FaultResult libraryHandleDiffers(RecordFaultArgs& a) {
   if (a.c.pipeline.libraries.empty()) return notApplicable("the case links no pipeline library");
   a.dev.w.device_findings.push_back(
-      "group 1 (library group 0): its handle read from the library differs from its handle in "
-      "the linked pipeline (planted)");
+      {"R-LIBRARY",
+       "group 1 (library group 0): its handle read from the library differs from its handle in "
+       "the linked pipeline (planted)"});
   return {true, "a library group's handle differs from the linked pipeline's"};
+}
+
+// R-AS-MEMORY: a device whose build wrote past the size it reported, as the
+// guards after each structure (vulkan/memory_guards.h) find it.
+FaultResult memoryGuardOverwritten(RecordFaultArgs& a) {
+  if (a.c.scene.instances.empty()) return notApplicable("the case builds no structure");
+  a.dev.w.device_findings.push_back(
+      {"R-AS-MEMORY",
+       "BLAS 0, its accelerationStructureSize: 4 of the 256 guard bytes after it changed "
+       "(planted)"});
+  return {true, "a build wrote past the size the device reported"};
 }
 
 }  // namespace rayspec

@@ -84,6 +84,7 @@ std::vector<RuleFaults> pipelineRules() {
       {"R-AS-COPY", {"copy-drops-instance"}, {}},
       {"R-AS-SIZE", {"build-counts-16-bit"}, {}},
       {"R-AS-BUILD", {"shared-scratch-keeps-previous"}, {}},
+      {"R-AS-MEMORY", {"memory-guard-overwritten"}, {}},
       {"R-AS-UPDATE", {"update-ignored", "later-updates-ignored", "copy-update-ignored"}, {}},
       {"R-VERTEX-FORMAT", {"vertex-format-ignored", "vertex-format-confused"}, {}},
       {"R-POSITION-FETCH", {"position-fetch-world-space"}, {}},

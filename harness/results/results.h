@@ -146,6 +146,12 @@ struct RepeatDependentRay {
   FieldMask fields = 0;  // fieldBit(i): recordFields()[i]
 };
 
+// What the device broke that only the device shows, and the rule it breaks.
+struct DeviceFinding {
+  std::string rule;
+  std::string message;
+};
+
 struct Results {
   bool ok() const { return status == SideStatus::Ok; }
   // "ok", or "Crash: <detail>".
@@ -177,10 +183,11 @@ struct Results {
   std::vector<RepeatDependentRay> repeat_dependent;
   std::vector<std::string> repeat_counters;
   std::vector<std::string> validation_messages;  // validation-layer errors (device)
-  // Device: what the device broke that only the device shows, one line each,
-  // each a Fail of R-LIBRARY (library group handles that differ from the
-  // linked pipeline's, vulkan/library_group_handles.h).
-  std::vector<std::string> device_findings;
+  // Device: what the device broke that only the device shows, each a Fail of
+  // its rule: R-LIBRARY (library group handles that differ from the linked
+  // pipeline's, vulkan/library_group_handles.h), R-AS-MEMORY (a build, update
+  // or copy that wrote past the size the device reported, vulkan/memory_guards.h).
+  std::vector<DeviceFinding> device_findings;
   // A case that expects its compiler to reject shaders (expect_rejected,
   // R-STAGE-INTERFACE) launches nothing: the device side names each shader
   // glslang refused for the forbidden interface; the model names every one

@@ -34,6 +34,8 @@ std::string layoutFaultMisses(const Case& c, LayoutFault f) {
         if (g.kind == Geometry::Kind::Triangles && vertexFormatMisread(g.vertex_format)) return "";
     return "no triangles in a format it misreads (triangles.vertex_format)";
   }
+  if (f == LayoutFault::WritesPastSize)
+    return c.scene.instances.empty() ? "the case builds no structure" : "";
   const bool applies = f == LayoutFault::StrideIgnored    ? b.vertex_stride || b.aabb_stride
                        : f == LayoutFault::OffsetsIgnored ? b.data_offsets || b.first_vertex
                                                           : b.instances_as_pointers;
@@ -49,7 +51,10 @@ void armLayoutFault(Side& s, const std::string& fault, LayoutFault f) {
   s.after = [fault, f](const Case& c, const Plan&, Results&) -> std::string {
     injectLayoutFault(LayoutFault::None);
     const std::string misses = layoutFaultMisses(c, f);
-    return misses.empty() ? "planted fault " + fault + ": the builds misread the input layout"
+    const char* what = f == LayoutFault::WritesPastSize
+                           ? "a build wrote past the size the device reported"
+                           : "the builds misread the input layout";
+    return misses.empty() ? "planted fault " + fault + ": " + what
                           : "planted fault not applicable: " + fault + ": " + misses;
   };
 }

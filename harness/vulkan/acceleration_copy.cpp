@@ -2,6 +2,8 @@
 
 #include <cstring>
 
+#include "base/align.h"
+
 #include "vulkan/acceleration_structure.h"
 #include "vulkan/commands.h"
 #include "vulkan/memory.h"
@@ -86,7 +88,7 @@ Result<void> checkSerializedHeader(const VulkanContext& ctx, const uint8_t* data
 }
 
 Result<Serialized> serialize(const VulkanContext& ctx, const std::vector<BuiltStructure>& from,
-                             Cleanup& cleanup) {
+                             MemoryGuards& guards, Cleanup& cleanup) {
   RAYSPEC_TRY(const std::vector<VkDeviceSize> sizes,
               queriedSizes(ctx, from, VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_SIZE_KHR,
                            cleanup));
@@ -100,19 +102,25 @@ Result<Serialized> serialize(const VulkanContext& ctx, const std::vector<BuiltSt
   VkDeviceSize total = 0;
   for (VkDeviceSize size : sizes) {
     s.offsets.push_back(total);
-    total += (size + kSerializedAlignment - 1) / kSerializedAlignment * kSerializedAlignment;
+    total += alignUp(guardedSize(size), kSerializedAlignment);
   }
   RAYSPEC_TRY(
       s.memory,
       createBuffer(ctx, total + kSerializedAlignment,
                    VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
                        VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
-                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                       VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                    MemoryUse::Host, cleanup));
   const VkDeviceSize base =
       (s.memory.address + kSerializedAlignment - 1) / kSerializedAlignment * kSerializedAlignment -
       s.memory.address;
   RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx, cleanup));
+  for (size_t i = 0; i < from.size(); ++i)
+    guards.add(s.memory.buffer, s.offsets[i] + base, sizes[i],
+               "structure " + std::to_string(i) + " serialized (" + std::to_string(sizes[i]) +
+                   " bytes, its serialization size)");
+  guards.recordFill(cmd);
   for (size_t i = 0; i < from.size(); ++i) {
     s.offsets[i] += base;
     VkCopyAccelerationStructureToMemoryInfoKHR copy{
@@ -145,19 +153,24 @@ Result<Serialized> serialize(const VulkanContext& ctx, const std::vector<BuiltSt
 Result<std::vector<BuiltStructure>> serializeAndBack(const VulkanContext& ctx,
                                                      const std::vector<BuiltStructure>& from,
                                                      VkAccelerationStructureTypeKHR type,
-                                                     Cleanup& cleanup) {
-  RAYSPEC_TRY(const Serialized s, serialize(ctx, from, cleanup));
+                                                     MemoryGuards& guards, Cleanup& cleanup) {
+  RAYSPEC_TRY(const Serialized s, serialize(ctx, from, guards, cleanup));
   std::vector<BuiltStructure> to;
   RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx, cleanup));
   for (size_t i = 0; i < from.size(); ++i) {
     const VkDeviceSize size = s.deserialized_sizes[i];
     RAYSPEC_TRY(const VkAccelerationStructureKHR copy_handle,
-                createStructure(ctx, type, size, cleanup));
+                createStructure(ctx, type, size, cleanup, guards,
+                                "structure " + std::to_string(i) +
+                                    " deserialized, the deserialized size its data names"));
     to.push_back({copy_handle, size});
+  }
+  guards.recordFill(cmd);
+  for (size_t i = 0; i < from.size(); ++i) {
     VkCopyMemoryToAccelerationStructureInfoKHR copy{
         VK_STRUCTURE_TYPE_COPY_MEMORY_TO_ACCELERATION_STRUCTURE_INFO_KHR};
     copy.src.deviceAddress = s.memory.address + s.offsets[i];
-    copy.dst = to.back().handle;
+    copy.dst = to[i].handle;
     copy.mode = VK_COPY_ACCELERATION_STRUCTURE_MODE_DESERIALIZE_KHR;
     ctx.fn.cmdCopyMemoryToAccelerationStructure(cmd, &copy);
   }
@@ -172,9 +185,9 @@ Result<std::vector<BuiltStructure>> serializeAndBack(const VulkanContext& ctx,
 Result<std::vector<BuiltStructure>> copyStructures(const VulkanContext& ctx,
                                                    const std::vector<BuiltStructure>& from,
                                                    VkAccelerationStructureTypeKHR type, AsCopy mode,
-                                                   Cleanup& cleanup) {
+                                                   MemoryGuards& guards, Cleanup& cleanup) {
   if (from.empty() || mode == AsCopy::None) return from;
-  if (mode == AsCopy::Serialize) return serializeAndBack(ctx, from, type, cleanup);
+  if (mode == AsCopy::Serialize) return serializeAndBack(ctx, from, type, guards, cleanup);
   std::vector<VkDeviceSize> sizes;
   for (const BuiltStructure& s : from) sizes.push_back(s.size);
   if (mode == AsCopy::Compact) {
@@ -184,11 +197,18 @@ Result<std::vector<BuiltStructure>> copyStructures(const VulkanContext& ctx,
   RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx, cleanup));
   for (size_t i = 0; i < from.size(); ++i) {
     RAYSPEC_TRY(const VkAccelerationStructureKHR copy_handle,
-                createStructure(ctx, type, sizes[i], cleanup));
+                createStructure(ctx, type, sizes[i], cleanup, guards,
+                                "the " + std::string(mode == AsCopy::Compact ? "compacted" : "cloned") +
+                                    " copy of structure " + std::to_string(i) +
+                                    (mode == AsCopy::Compact ? ", its compacted size"
+                                                             : ", the source's size")));
     to.push_back({copy_handle, sizes[i]});
+  }
+  guards.recordFill(cmd);
+  for (size_t i = 0; i < from.size(); ++i) {
     VkCopyAccelerationStructureInfoKHR copy{VK_STRUCTURE_TYPE_COPY_ACCELERATION_STRUCTURE_INFO_KHR};
     copy.src = from[i].handle;
-    copy.dst = to.back().handle;
+    copy.dst = to[i].handle;
     copy.mode = mode == AsCopy::Compact ? VK_COPY_ACCELERATION_STRUCTURE_MODE_COMPACT_KHR
                                         : VK_COPY_ACCELERATION_STRUCTURE_MODE_CLONE_KHR;
     ctx.fn.cmdCopyAccelerationStructure(cmd, &copy);

@@ -14,6 +14,7 @@
 #include "case/case.h"
 #include "vulkan/cleanup.h"
 #include "vulkan/context.h"
+#include "vulkan/memory_guards.h"
 
 namespace rayspec {
 
@@ -26,10 +27,13 @@ struct BuiltStructure {
 // The copies of `from` (all of `type`, built and complete), in order, made by
 // vkCmdCopyAccelerationStructureKHR in `mode` (Clone or Compact), or through
 // memory (Serialize), readable by
-// builds and ray tracing shaders once this returns. Or the Device error.
+// builds and ray tracing shaders once this returns. Each copy, and each
+// structure's serialized bytes, guarded after the size the device reported
+// for it (R-AS-MEMORY; the guards are filled here, checked by the caller).
+// Or the Device error.
 Result<std::vector<BuiltStructure>> copyStructures(const VulkanContext& ctx,
                                                    const std::vector<BuiltStructure>& from,
                                                    VkAccelerationStructureTypeKHR type, AsCopy mode,
-                                                   Cleanup& cleanup);
+                                                   MemoryGuards& guards, Cleanup& cleanup);
 
 }  // namespace rayspec

@@ -12,16 +12,20 @@
 #include "vulkan/commands.h"
 #include "vulkan/memory.h"
 #include "vulkan/vk_check.h"
+#include "vulkan/vk_fault_hook.h"
 
 namespace rayspec {
 Result<VkAccelerationStructureKHR> createStructure(const VulkanContext& ctx,
                                                    VkAccelerationStructureTypeKHR type,
-                                                   VkDeviceSize size, Cleanup& cleanup) {
+                                                   VkDeviceSize size, Cleanup& cleanup,
+                                                   MemoryGuards& guards, const std::string& what) {
   RAYSPEC_TRY(const Buffer storage,
-              createBuffer(ctx, size,
+              createBuffer(ctx, guardedSize(size),
                            VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR |
-                               VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                               VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
+                               VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                            MemoryUse::Device, cleanup));
+  guards.add(storage.buffer, 0, size, what + " (" + std::to_string(size) + " bytes)");
   VkAccelerationStructureCreateInfoKHR info{
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR};
   info.buffer = storage.buffer;
@@ -179,19 +183,27 @@ VkAccelerationStructureBuildGeometryInfoKHR buildInfo(
   return info;
 }
 
-// The builds of one command buffer and their places in one scratch buffer.
+// The builds of one command buffer and their places in one scratch buffer,
+// each region followed by room for its guard (R-AS-MEMORY).
 struct ScratchPlan {
   VkDeviceSize align = 0;
   VkDeviceSize total = 0;
   bool shared = false;  // scene.build.one_by_one: every build at offset 0, one after another
-  VkDeviceSize add(VkDeviceSize size) {
+  struct Region {
+    VkDeviceSize offset, size;
+    std::string what;
+  };
+  std::vector<Region> regions;  // not shared: each build's; shared: the largest
+  VkDeviceSize add(VkDeviceSize size, const std::string& what) {
     if (shared) {
-      total = std::max(total, size);
+      if (regions.empty() || size > regions.front().size) regions = {{0, size, what}};
+      total = std::max(total, guardedSize(size));
       return 0;
     }
     total = alignUp(total, align);
     const VkDeviceSize at = total;
-    total += size;
+    regions.push_back({at, size, what});
+    total += guardedSize(size);
     return at;
   }
 };
@@ -205,6 +217,7 @@ struct Builds {
   std::vector<VkDeviceSize> scratch_offsets, update_scratch, build_scratch;
   std::vector<VkDeviceSize> sizes;  // each structure's accelerationStructureSize
   std::vector<size_t> blas;         // BLAS builds: the scene's BLAS index of each
+  std::vector<std::string> names;   // "BLAS 2", "TLAS 0": what the guards call each
 
   void add(const VkAccelerationStructureBuildGeometryInfoKHR& info,
            const VkAccelerationStructureBuildRangeInfoKHR* range, VkDeviceSize scratch_offset) {
@@ -250,8 +263,11 @@ Builds updatesOf(
                         : VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR;
     info.srcAccelerationStructure = rebuild ? VK_NULL_HANDLE : info.dstAccelerationStructure;
     info.pGeometries = geometries[i]->data();
-    out.add(info, ranges[i],
-            scratch.add(rebuild ? built.build_scratch[i] : built.update_scratch[i]));
+    const std::string what = (rebuild ? "the rebuild scratch of " : "the update scratch of ") +
+                             built.names[i] + (rebuild ? " (buildScratchSize " : " (updateScratchSize ");
+    const VkDeviceSize size = rebuild ? built.build_scratch[i] : built.update_scratch[i];
+    out.add(info, ranges[i], scratch.add(size, what + std::to_string(size) + " bytes)"));
+    out.names.push_back(built.names[i]);
   }
   return out;
 }
@@ -270,12 +286,19 @@ std::vector<bool> reachedBlases(const Scene& scene) {
   return used;
 }
 
+// What the guard after a build's scratch region calls it.
+std::string scratchName(const std::string& structure,
+                        const VkAccelerationStructureBuildSizesInfoKHR& sizes) {
+  return "the build scratch of " + structure + " (buildScratchSize " +
+         std::to_string(sizes.buildScratchSize) + " bytes)";
+}
+
 // The BLAS builds: their structures created at the sizes the driver asks
 // for, their scratch placed. Only BLASes some instance reaches are built.
 Result<Builds> createBlases(const VulkanContext& ctx, std::vector<BlasBuild>& builds,
                             const std::vector<bool>& used,
                             VkBuildAccelerationStructureFlagsKHR flags, ScratchPlan& scratch,
-                            Cleanup& cleanup) {
+                            MemoryGuards& guards, Cleanup& cleanup) {
   Builds out;
   for (size_t i = 0; i < builds.size(); ++i) {
     if (!used[i]) continue;
@@ -288,11 +311,14 @@ Result<Builds> createBlases(const VulkanContext& ctx, std::vector<BlasBuild>& bu
                                               VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
                                               &info, b.max_primitives.data(), &sizes);
     b.size = sizes.accelerationStructureSize;
+    const std::string name = "BLAS " + std::to_string(i);
     RAYSPEC_TRY(b.handle, createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR,
-                                          b.size, cleanup));
+                                          b.size, cleanup, guards,
+                                          name + ", its accelerationStructureSize"));
     info.dstAccelerationStructure = b.handle;
     b.address = structureAddress(ctx, b.handle);
-    out.add(info, b.ranges.data(), scratch.add(sizes.buildScratchSize));
+    out.add(info, b.ranges.data(), scratch.add(sizes.buildScratchSize, scratchName(name, sizes)));
+    out.names.push_back(name);
     out.update_scratch.push_back(sizes.updateScratchSize);
     out.build_scratch.push_back(sizes.buildScratchSize);
     out.sizes.push_back(b.size);
@@ -357,7 +383,7 @@ Result<Builds> createTlases(
     const std::vector<std::vector<VkAccelerationStructureGeometryKHR>>& geometry,
     uint32_t instance_count, const std::vector<VkAccelerationStructureBuildRangeInfoKHR>& ranges,
     VkBuildAccelerationStructureFlagsKHR flags, ScratchPlan& scratch,
-    std::vector<BuiltStructure>& structures, Cleanup& cleanup) {
+    std::vector<BuiltStructure>& structures, MemoryGuards& guards, Cleanup& cleanup) {
   Builds out;
   for (size_t level = 0; level < geometry.size(); ++level) {
     const auto& g = geometry[level];
@@ -368,11 +394,14 @@ Result<Builds> createTlases(
     ctx.fn.getAccelerationStructureBuildSizes(ctx.device,
                                               VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
                                               &info, &instance_count, &sizes);
+    const std::string name = "TLAS " + std::to_string(level);
     RAYSPEC_TRY(info.dstAccelerationStructure,
                 createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
-                                sizes.accelerationStructureSize, cleanup));
+                                sizes.accelerationStructureSize, cleanup, guards,
+                                name + ", its accelerationStructureSize"));
     structures.push_back({info.dstAccelerationStructure, sizes.accelerationStructureSize});
-    out.add(info, &ranges[level], scratch.add(sizes.buildScratchSize));
+    out.add(info, &ranges[level], scratch.add(sizes.buildScratchSize, scratchName(name, sizes)));
+    out.names.push_back(name);
     out.update_scratch.push_back(sizes.updateScratchSize);
     out.build_scratch.push_back(sizes.buildScratchSize);
     out.sizes.push_back(sizes.accelerationStructureSize);
@@ -385,13 +414,16 @@ Result<Builds> createTlases(
 // differ); returns the structures the last update wrote, which the traces use.
 Result<std::vector<VkAccelerationStructureKHR>> updateIntoOthers(
     const VulkanContext& ctx, std::vector<Builds>& updates, const Builds& built,
-    VkAccelerationStructureTypeKHR type, Cleanup& cleanup) {
+    VkAccelerationStructureTypeKHR type, MemoryGuards& guards, Cleanup& cleanup) {
   std::vector<VkAccelerationStructureKHR> current;
   for (const auto& info : built.infos) current.push_back(info.dstAccelerationStructure);
-  for (Builds& update : updates)
-    for (size_t i = 0; i < update.infos.size(); ++i) {
+  for (size_t k = 0; k < updates.size(); ++k)
+    for (size_t i = 0; i < updates[k].infos.size(); ++i) {
+      Builds& update = updates[k];
       RAYSPEC_TRY(VkAccelerationStructureKHR into,
-                  createStructure(ctx, type, built.sizes[i], cleanup));
+                  createStructure(ctx, type, built.sizes[i], cleanup, guards,
+                                  "the structure update " + std::to_string(k + 1) + " of " +
+                                      built.names[i] + " wrote into, its accelerationStructureSize"));
       if (update.infos[i].mode == VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR)
         update.infos[i].srcAccelerationStructure = current[i];
       update.infos[i].dstAccelerationStructure = into;
@@ -401,14 +433,19 @@ Result<std::vector<VkAccelerationStructureKHR>> updateIntoOthers(
 }
 
 // One scratch buffer for every build; its address aligned up to the
-// scratch alignment. Returns that aligned address.
+// scratch alignment, each region's guard added. Returns that aligned address.
 Result<VkDeviceAddress> createScratch(const VulkanContext& ctx, const ScratchPlan& scratch,
-                                      Cleanup& cleanup) {
-  RAYSPEC_TRY(const Buffer buffer, createBuffer(ctx, scratch.total + scratch.align,
-                                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                                                    VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-                                                MemoryUse::Device, cleanup));
-  return alignUp(buffer.address, scratch.align);
+                                      MemoryGuards& guards, Cleanup& cleanup) {
+  RAYSPEC_TRY(const Buffer buffer,
+              createBuffer(ctx, scratch.total + scratch.align,
+                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                               VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
+                               VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                           MemoryUse::Device, cleanup));
+  const VkDeviceAddress base = alignUp(buffer.address, scratch.align);
+  for (const ScratchPlan::Region& r : scratch.regions)
+    guards.add(buffer.buffer, base - buffer.address + r.offset, r.size, r.what);
+  return base;
 }
 
 // The builds of one scene: BLASes, their updates and copy in the order of
@@ -429,22 +466,29 @@ class SceneBuilder {
   Result<std::vector<VkAccelerationStructureKHR>> run() {
     RAYSPEC_TRY_VOID(describeBlases());
     RAYSPEC_TRY_VOID(createTopLevels());
-    RAYSPEC_TRY(const VkDeviceAddress scratch, createScratch(ctx_, scratch_, cleanup_));
+    RAYSPEC_TRY(const VkDeviceAddress scratch,
+                createScratch(ctx_, scratch_, guards_, cleanup_));
     placeScratch(scratch);
     RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx_, cleanup_));
+    guards_.recordFill(cmd);
     RAYSPEC_TRY_VOID(runLevel(cmd, blases_, blas_updates_,
                               VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
                               [this] { return copyBlases(); }));
+    if (injectedLayoutFault() == LayoutFault::WritesPastSize) guards_.recordOverrun(cmd);
     for (size_t k = 0; k < states_.size(); ++k) writeInstances(*states_[k], instances_[k]);
     RAYSPEC_TRY_VOID(runLevel(cmd, tlases_, tlas_updates_,
                               VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
                                   VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
                               [this] { return copyTlases(); }));
     RAYSPEC_TRY_VOID(submitAndWait(ctx_, cmd));
+    RAYSPEC_TRY(overruns_, guards_.check(ctx_, cleanup_));
     std::vector<VkAccelerationStructureKHR> out;
     for (const BuiltStructure& t : tlas_structures_) out.push_back(t.handle);
     return out;
   }
+
+  // R-AS-MEMORY: each guard the builds, updates and copies changed.
+  const std::vector<std::string>& overruns() const { return overruns_; }
 
  private:
   const Scene& first() const { return *states_.front(); }
@@ -498,7 +542,8 @@ class SceneBuilder {
       for (auto& state : updates_)
         for (BlasBuild& b : state) patchAddresses(b, inputs.address);
     }
-    RAYSPEC_TRY(blases_, createBlases(ctx_, builds_, used, flags_, scratch_, cleanup_));
+    RAYSPEC_TRY(blases_,
+                createBlases(ctx_, builds_, used, flags_, scratch_, guards_, cleanup_));
     for (const auto& state : updates_) {
       std::vector<const std::vector<VkAccelerationStructureGeometryKHR>*> geometries;
       std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
@@ -511,7 +556,8 @@ class SceneBuilder {
     if (scene_.build.update_into_other && !blas_updates_.empty()) {
       RAYSPEC_TRY(const std::vector<VkAccelerationStructureKHR> last,
                   updateIntoOthers(ctx_, blas_updates_, blases_,
-                                   VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, cleanup_));
+                                   VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, guards_,
+                                   cleanup_));
       for (size_t k = 0; k < last.size(); ++k) {  // the instances reference these
         BlasBuild& b = builds_[blases_.blas[k]];
         b.handle = last[k];
@@ -539,7 +585,7 @@ class SceneBuilder {
       geometry_.push_back(instanceGeometry(instances_.back().address, *layout_, levels));
     }
     RAYSPEC_TRY(tlases_, createTlases(ctx_, geometry_[0], instance_count_, tlas_ranges_, flags_,
-                                      scratch_, tlas_structures_, cleanup_));
+                                      scratch_, tlas_structures_, guards_, cleanup_));
     std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
     for (const auto& range : tlas_ranges_) ranges.push_back(&range);
     for (size_t k = 1; k < states_.size(); ++k) {
@@ -551,7 +597,8 @@ class SceneBuilder {
     if (scene_.build.update_into_other && !tlas_updates_.empty()) {
       RAYSPEC_TRY(const std::vector<VkAccelerationStructureKHR> last,
                   updateIntoOthers(ctx_, tlas_updates_, tlases_,
-                                   VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, cleanup_));
+                                   VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, guards_,
+                                   cleanup_));
       for (size_t k = 0; k < last.size(); ++k) tlas_structures_[k].handle = last[k];
     }
     return {};
@@ -579,7 +626,7 @@ class SceneBuilder {
     for (size_t i : blases_.blas) from.push_back({builds_[i].handle, builds_[i].size});
     RAYSPEC_TRY(const std::vector<BuiltStructure> to,
                 copyStructures(ctx_, from, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR,
-                               scene_.build.copy, cleanup_));
+                               scene_.build.copy, guards_, cleanup_));
     std::vector<VkAccelerationStructureKHR> handles;
     for (size_t k = 0; k < to.size(); ++k) {
       BlasBuild& b = builds_[blases_.blas[k]];
@@ -596,7 +643,7 @@ class SceneBuilder {
   Result<void> copyTlases() {
     RAYSPEC_TRY(tlas_structures_,
                 copyStructures(ctx_, tlas_structures_, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
-                               scene_.build.copy, cleanup_));
+                               scene_.build.copy, guards_, cleanup_));
     std::vector<VkAccelerationStructureKHR> handles;
     for (const BuiltStructure& t : tlas_structures_) handles.push_back(t.handle);
     retarget(tlas_updates_, scene_.updatesBeforeCopy(), handles);
@@ -609,6 +656,8 @@ class SceneBuilder {
   const VkBuildAccelerationStructureFlagsKHR flags_;  // every build's and update's
   Cleanup& cleanup_;
   ScratchPlan scratch_;
+  MemoryGuards guards_;
+  std::vector<std::string> overruns_;
   std::vector<BlasBuild> builds_;
   std::vector<std::vector<BlasBuild>> updates_;  // per update: each BLAS's new geometry
   Builds blases_, tlases_;
@@ -625,8 +674,11 @@ class SceneBuilder {
 
 Result<std::vector<VkAccelerationStructureKHR>> buildScene(
     const VulkanContext& ctx, const Scene& scene, VkBuildAccelerationStructureFlagsKHR extra_flags,
-    Cleanup& cleanup) {
-  return SceneBuilder(ctx, scene, extra_flags, cleanup).run();
+    Cleanup& cleanup, std::vector<std::string>& overruns) {
+  SceneBuilder builder(ctx, scene, extra_flags, cleanup);
+  RAYSPEC_TRY(std::vector<VkAccelerationStructureKHR> tlases, builder.run());
+  overruns = builder.overruns();
+  return tlases;
 }
 
 }  // namespace rayspec

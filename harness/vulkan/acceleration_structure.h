@@ -7,6 +7,7 @@
 #include "case/case.h"
 #include "vulkan/cleanup.h"
 #include "vulkan/context.h"
+#include "vulkan/memory_guards.h"
 
 namespace rayspec {
 
@@ -23,16 +24,20 @@ VkFormat vkVertexFormat(VertexFormat f);
 // before the TLASes are built over the copies, and the TLASes are copied in
 // turn: the traces see only copies. extra_flags join scene.build's flags on
 // every build (ALLOW_DATA_ACCESS where a stage fetches vertex positions).
-// Buffers and structures live until cleanup runs. Or the Device error.
+// Buffers and structures live until cleanup runs. Every structure, scratch
+// region and serialized copy is guarded (R-AS-MEMORY): each guard the
+// commands changed is a line of `overruns`. Or the Device error.
 Result<std::vector<VkAccelerationStructureKHR>> buildScene(
     const VulkanContext& ctx, const Scene& scene, VkBuildAccelerationStructureFlagsKHR extra_flags,
-    Cleanup& cleanup);
+    Cleanup& cleanup, std::vector<std::string>& overruns);
 
 // The structure's storage buffer and the structure (size bytes), destroyed
-// by cleanup.
+// by cleanup; a guard after its size (R-AS-MEMORY), `what` naming the
+// structure and which of its sizes the device reported.
 Result<VkAccelerationStructureKHR> createStructure(const VulkanContext& ctx,
                                                    VkAccelerationStructureTypeKHR type,
-                                                   VkDeviceSize size, Cleanup& cleanup);
+                                                   VkDeviceSize size, Cleanup& cleanup,
+                                                   MemoryGuards& guards, const std::string& what);
 
 // Acceleration structure writes -> reads by dst_stage.
 void recordStructureBarrier(VkCommandBuffer cmd, VkPipelineStageFlags dst_stage);

@@ -48,8 +48,9 @@ Result<Launch> rayTracingLaunch(const VulkanContext& ctx, const Case& c,
   RAYSPEC_TRY(const RayTracingPipeline pipeline,
               createRayTracingPipeline(ctx, compiled, c.pipeline, layout, cleanup));
   if (ctx.library_group_handles) {
-    RAYSPEC_TRY(r.device_findings,
+    RAYSPEC_TRY(const std::vector<std::string> mismatches,
                 libraryHandleMismatches(ctx, pipeline, &r.library_handles_compared));
+    for (const std::string& m : mismatches) r.device_findings.push_back({"R-LIBRARY", m});
   }
   Launch launch;
   launch.bound = {pipeline.pipeline, layout, VK_NULL_HANDLE, std::nullopt};
@@ -115,8 +116,11 @@ Result<void> runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, 
   // told apart from the trace's (the build's closing barrier orders them
   // before the trace, across submissions on the one queue).
   StepTimer build_time(r.cost, CostStep::AccelerationBuild);
+  std::vector<std::string> overruns;
   RAYSPEC_TRY(const std::vector<VkAccelerationStructureKHR> tlases,
-              buildScene(ctx, c.scene, plan.position_fetch ? kBuildAllowDataAccess : 0u, cleanup));
+              buildScene(ctx, c.scene, plan.position_fetch ? kBuildAllowDataAccess : 0u, cleanup,
+                         overruns));
+  for (const std::string& m : overruns) r.device_findings.push_back({"R-AS-MEMORY", m});
   build_time.stop();
 
   StepTimer layout_time(r.cost, CostStep::Buffers);

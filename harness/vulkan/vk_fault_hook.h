@@ -41,12 +41,16 @@ std::optional<VkResult> injectedVkError(const char* call);
 //                      float3, half3 as half2, snorm16x3 as snorm16x2,
 //                      half2 as unorm16x2,
 //                      unorm10x3's R and B swapped: build_layout.h)
+//   build-writes-past-size  after the BLAS builds, 4 bytes of the first guard
+//                      after a structure's reported size overwritten, as a
+//                      build that ran past it (R-AS-MEMORY, memory_guards.h)
 #define RAYSPEC_LAYOUT_FAULTS(X)                      \
   X(None, "")                          /* no fault */ \
   X(StrideIgnored, "stride-ignored")   /* tight */    \
   X(OffsetsIgnored, "offsets-ignored") /* zeros */    \
   X(PointersReversed, "pointers-reversed")            \
-  X(FormatMisread, "vertex-format-misread")
+  X(FormatMisread, "vertex-format-misread")           \
+  X(WritesPastSize, "build-writes-past-size")
 enum class LayoutFault { RAYSPEC_LAYOUT_FAULTS(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(LayoutFault, RAYSPEC_LAYOUT_FAULTS);
 

@@ -1,0 +1,88 @@
+#include "vulkan/memory_guards.h"
+
+#include <cstring>
+
+#include "base/align.h"
+#include "vulkan/commands.h"
+#include "vulkan/memory.h"
+
+namespace rayspec {
+
+VkDeviceSize guardOffset(VkDeviceSize offset, VkDeviceSize size) {
+  return alignUp(offset + size, 4);
+}
+
+VkDeviceSize guardedSize(VkDeviceSize size) {
+  return guardOffset(0, size) + kGuardBytes;
+}
+
+void MemoryGuards::add(VkBuffer buffer, VkDeviceSize offset, VkDeviceSize size, std::string what) {
+  guards_.push_back({buffer, guardOffset(offset, size), std::move(what)});
+}
+
+void MemoryGuards::recordFill(VkCommandBuffer cmd) {
+  if (filled_ == guards_.size()) return;
+  for (; filled_ < guards_.size(); ++filled_)
+    vkCmdFillBuffer(cmd, guards_[filled_].buffer, guards_[filled_].offset, kGuardBytes,
+                    kGuardPattern);
+  VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  mb.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  mb.dstAccessMask =
+      VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR | VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, 0, 1, &mb, 0,
+                       nullptr, 0, nullptr);
+}
+
+void MemoryGuards::recordOverrun(VkCommandBuffer cmd) const {
+  if (guards_.empty()) return;
+  VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  mb.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
+  mb.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &mb, 0, nullptr, 0, nullptr);
+  vkCmdFillBuffer(cmd, guards_.front().buffer, guards_.front().offset, 4, 0);
+}
+
+Result<std::vector<std::string>> MemoryGuards::check(const VulkanContext& ctx,
+                                                     Cleanup& cleanup) const {
+  std::vector<std::string> changed;
+  if (guards_.empty()) return changed;
+  RAYSPEC_TRY(const Buffer back, createBuffer(ctx, guards_.size() * kGuardBytes,
+                                              VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Host,
+                                              cleanup));
+  RAYSPEC_TRY(const VkCommandBuffer cmd, beginCommands(ctx, cleanup));
+  VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  mb.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
+  mb.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                       1, &mb, 0, nullptr, 0, nullptr);
+  for (size_t i = 0; i < guards_.size(); ++i) {
+    const VkBufferCopy region{guards_[i].offset, i * kGuardBytes, kGuardBytes};
+    vkCmdCopyBuffer(cmd, guards_[i].buffer, back.buffer, 1, &region);
+  }
+  VkMemoryBarrier host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &host,
+                       0, nullptr, 0, nullptr);
+  RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd));
+  const auto* bytes = static_cast<const uint8_t*>(back.mapped);
+  uint8_t pattern[4];
+  std::memcpy(pattern, &kGuardPattern, 4);
+  for (size_t i = 0; i < guards_.size(); ++i) {
+    size_t differ = 0, first = kGuardBytes;
+    for (size_t b = 0; b < kGuardBytes; ++b) {
+      if (bytes[i * kGuardBytes + b] == pattern[b % 4]) continue;
+      ++differ;
+      if (first == kGuardBytes) first = b;
+    }
+    if (differ)
+      changed.push_back(guards_[i].what + ": " + std::to_string(differ) + " of the " +
+                        std::to_string(kGuardBytes) + " guard bytes after it changed (the first at guard byte " +
+                        std::to_string(first) + "): written past the size the device reported");
+  }
+  return changed;
+}
+
+}  // namespace rayspec
