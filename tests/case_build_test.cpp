@@ -37,7 +37,9 @@ TEST(SceneBuild, ErrorsNameTheLineAndField) {
              {"{flags: [prefer_fast_trace, prefer_fast_build]}", "scene.build.flags",
               "prefer_fast_trace and prefer_fast_build together"},
              {"{flags: [fastest]}", "scene.build.flags", "fastest"},
-             {"{copies: clone}", "scene.build", "unknown key 'copies'"}};
+             {"{copies: clone}", "scene.build", "unknown key 'copies'"},
+             {"{command: cpu}", "scene.build.command",
+              "unknown build command 'cpu' (device, indirect, host)"}};
   for (const Bad& b : bad) {
     const ParseResult r = parseBuild(b.build);
     EXPECT_FALSE(r.value) << b.build;
@@ -203,6 +205,12 @@ TEST(SceneUpdate, AnOrderNamesEachUpdateAndTheCopyOnce) {
     EXPECT_NE(e.find(b.field), std::string::npos) << e;
     EXPECT_NE(e.find(b.message), std::string::npos) << e;
   }
+}
+
+TEST(SceneBuild, TheBuildCommandIsRead) {
+  EXPECT_EQ(parseBuild("{}").value->scene.build.command, BuildCommand::Device);
+  EXPECT_EQ(parseBuild("{command: indirect}").value->scene.build.command, BuildCommand::Indirect);
+  EXPECT_EQ(parseBuild("{command: host}").value->scene.build.command, BuildCommand::Host);
 }
 
 }  // namespace

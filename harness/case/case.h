@@ -129,8 +129,17 @@ constexpr uint64_t kMaxOutputBytes = 1ull << 30;
 enum class AsCopy { RAYSPEC_AS_COPIES(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(AsCopy, RAYSPEC_AS_COPIES);
 const char* asCopyName(AsCopy c);  // none, clone, compact, serialize
+// scene.build.command: how every build and update is recorded. device:
+// vkCmdBuildAccelerationStructuresKHR. indirect:
+// vkCmdBuildAccelerationStructuresIndirectKHR, each build's ranges read from
+// a device buffer (accelerationStructureIndirectBuild). host:
+// vkBuildAccelerationStructuresKHR on the host (accelerationStructureHostCommands).
+#define RAYSPEC_BUILD_COMMANDS(X) X(Device, "device") X(Indirect, "indirect") X(Host, "host")
+enum class BuildCommand { RAYSPEC_BUILD_COMMANDS(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(BuildCommand, RAYSPEC_BUILD_COMMANDS);
 struct AsBuild {
   uint32_t flags = 0x4;
+  BuildCommand command = BuildCommand::Device;
   AsCopy copy = AsCopy::None;
   // scene.build.order: how many of the updates (scene.update) run before the
   // copy; the rest update the copies. Default: every update, then the copy.

@@ -307,9 +307,18 @@ void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
   if (!r.expectMap(
           n, f,
           {"flags", "copy", "order", "instances_as_pointers", "data_offsets", "first_vertex",
-           "vertex_stride", "aabb_stride", "one_by_one", "update_into", "tlas_update"}))
+           "vertex_stride", "aabb_stride", "one_by_one", "update_into", "tlas_update", "command"}))
     return;
   parseBuildLayout(r, n, build);
+  if (auto v = YamlReader::get(n, "command"); v.IsDefined())
+    if (const auto name = r.string(v, f + ".command")) {
+      if (const auto command = valueNamed<BuildCommand>(*name))
+        build.command = *command;
+      else
+        r.error(v, f + ".command",
+                "unknown build command '" + *name + "' (" +
+                    namesJoined(enumNames<BuildCommand>()) + ")");
+    }
   if (auto v = YamlReader::get(n, "one_by_one"); v.IsDefined())
     build.one_by_one = parseSwitch(r, v, f + ".one_by_one").value_or(false);
   if (auto v = YamlReader::get(n, "update_into"); v.IsDefined())

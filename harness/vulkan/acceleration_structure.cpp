@@ -218,6 +218,13 @@ struct Builds {
   std::vector<VkDeviceSize> sizes;  // each structure's accelerationStructureSize
   std::vector<size_t> blas;         // BLAS builds: the scene's BLAS index of each
   std::vector<std::string> names;   // "BLAS 2", "TLAS 0": what the guards call each
+  // scene.build.command indirect: where the device reads each build's ranges
+  // (vkCmdBuildAccelerationStructuresIndirectKHR), their stride, and each
+  // build's most primitives per geometry (its ranges' counts).
+  std::vector<VkDeviceAddress> indirect_ranges;
+  std::vector<uint32_t> indirect_strides;
+  std::vector<std::vector<uint32_t>> max_counts;
+  std::vector<const uint32_t*> max_count_lists;
 
   void add(const VkAccelerationStructureBuildGeometryInfoKHR& info,
            const VkAccelerationStructureBuildRangeInfoKHR* range, VkDeviceSize scratch_offset) {
@@ -235,15 +242,52 @@ struct Builds {
               bool one_by_one) const {
     if (infos.empty()) return;
     if (!one_by_one) {
-      ctx.fn.cmdBuildAccelerationStructures(cmd, static_cast<uint32_t>(infos.size()), infos.data(),
-                                            ranges.data());
+      recordBuilds(ctx, cmd, 0, infos.size());
     } else {
       for (size_t i = 0; i < infos.size(); ++i) {
         recordScratchBarrier(cmd);  // after the build before it, of this level or another
-        ctx.fn.cmdBuildAccelerationStructures(cmd, 1, &infos[i], &ranges[i]);
+        recordBuilds(ctx, cmd, i, 1);
       }
     }
     recordStructureBarrier(cmd, next);
+  }
+  // Builds [first, first + count) in one command, direct or indirect.
+  void recordBuilds(const VulkanContext& ctx, VkCommandBuffer cmd, size_t first,
+                    size_t count) const {
+    const uint32_t n = static_cast<uint32_t>(count);
+    if (indirect_ranges.empty())
+      ctx.fn.cmdBuildAccelerationStructures(cmd, n, &infos[first], &ranges[first]);
+    else
+      ctx.fn.cmdBuildAccelerationStructuresIndirect(cmd, n, &infos[first], &indirect_ranges[first],
+                                                    &indirect_strides[first],
+                                                    &max_count_lists[first]);
+  }
+  // scene.build.command indirect: every build's ranges copied into one
+  // buffer the device reads them from.
+  Result<void> placeRangesForIndirect(const VulkanContext& ctx, Cleanup& cleanup) {
+    std::vector<VkAccelerationStructureBuildRangeInfoKHR> all;
+    std::vector<size_t> starts;
+    max_counts.assign(infos.size(), {});
+    for (size_t i = 0; i < infos.size(); ++i) {
+      starts.push_back(all.size());
+      for (uint32_t g = 0; g < infos[i].geometryCount; ++g) {
+        all.push_back(ranges[i][g]);
+        max_counts[i].push_back(ranges[i][g].primitiveCount);
+      }
+    }
+    if (infos.empty()) return {};
+    constexpr VkDeviceSize kRange = sizeof(VkAccelerationStructureBuildRangeInfoKHR);
+    RAYSPEC_TRY(const Buffer buffer,
+                createUploadBuffer(ctx, all.data(), all.size() * kRange,
+                                   VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                                       VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                                   cleanup));
+    for (size_t i = 0; i < infos.size(); ++i) {
+      indirect_ranges.push_back(buffer.address + starts[i] * kRange);
+      indirect_strides.push_back(static_cast<uint32_t>(kRange));
+      max_count_lists.push_back(max_counts[i].data());
+    }
+    return {};
   }
 };
 
@@ -469,6 +513,7 @@ class SceneBuilder {
     RAYSPEC_TRY(const VkDeviceAddress scratch,
                 createScratch(ctx_, scratch_, guards_, cleanup_));
     placeScratch(scratch);
+    if (scene_.build.command == BuildCommand::Indirect) RAYSPEC_TRY_VOID(placeRangesForIndirect());
     RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx_, cleanup_));
     guards_.recordFill(cmd);
     RAYSPEC_TRY_VOID(runLevel(cmd, blases_, blas_updates_,
@@ -493,6 +538,14 @@ class SceneBuilder {
  private:
   const Scene& first() const { return *states_.front(); }
   size_t updates() const { return states_.size() - 1; }
+
+  Result<void> placeRangesForIndirect() {
+    for (Builds* b : {&blases_, &tlases_})
+      RAYSPEC_TRY_VOID(b->placeRangesForIndirect(ctx_, cleanup_));
+    for (auto* updates : {&blas_updates_, &tlas_updates_})
+      for (Builds& b : *updates) RAYSPEC_TRY_VOID(b.placeRangesForIndirect(ctx_, cleanup_));
+    return {};
+  }
 
   void placeScratch(VkDeviceAddress base) {
     blases_.placeScratch(base);

@@ -96,6 +96,15 @@ Result<void> checkCaseSupport(const VulkanContext& ctx, const Case& c, const Pla
     return notSupported(
         "rays.command indirect2: the device lacks VK_KHR_ray_tracing_maintenance1's "
         "rayTracingPipelineTraceRaysIndirect2");
+  if (c.scene.build.command == BuildCommand::Indirect && !d.acceleration_structure_indirect_build)
+    return notSupported(
+        "scene.build.command indirect: the device lacks accelerationStructureIndirectBuild");
+  if (c.scene.build.command == BuildCommand::Host)
+    return notSupported(
+        d.acceleration_structure_host_commands
+            ? "scene.build.command host: rayspec records no host builds yet (the device has "
+              "accelerationStructureHostCommands)"
+            : "scene.build.command host: the device lacks accelerationStructureHostCommands");
   if (plan.position_fetch) RAYSPEC_TRY_VOID(checkPositionFetch(ctx));
   if ((c.pipeline.ray_query || c.pipeline.ray_query_in_hit) && !d.ray_query)
     return notSupported(

@@ -26,6 +26,9 @@ Result<DeviceFunctions> loadDeviceFunctions(VkDevice device) {
   load(device, "vkGetAccelerationStructureDeviceAddressKHR",
        &f.getAccelerationStructureDeviceAddress, missing);
   load(device, "vkCmdBuildAccelerationStructuresKHR", &f.cmdBuildAccelerationStructures, missing);
+  f.cmdBuildAccelerationStructuresIndirect =
+      reinterpret_cast<PFN_vkCmdBuildAccelerationStructuresIndirectKHR>(
+          vkGetDeviceProcAddr(device, "vkCmdBuildAccelerationStructuresIndirectKHR"));
   load(device, "vkCmdCopyAccelerationStructureKHR", &f.cmdCopyAccelerationStructure, missing);
   load(device, "vkCmdCopyAccelerationStructureToMemoryKHR", &f.cmdCopyAccelerationStructureToMemory,
        missing);

@@ -14,6 +14,8 @@ struct DeviceFunctions {
   PFN_vkGetAccelerationStructureBuildSizesKHR getAccelerationStructureBuildSizes = nullptr;
   PFN_vkGetAccelerationStructureDeviceAddressKHR getAccelerationStructureDeviceAddress = nullptr;
   PFN_vkCmdBuildAccelerationStructuresKHR cmdBuildAccelerationStructures = nullptr;
+  // Called only where accelerationStructureIndirectBuild is enabled (may be null elsewhere).
+  PFN_vkCmdBuildAccelerationStructuresIndirectKHR cmdBuildAccelerationStructuresIndirect = nullptr;
   PFN_vkCmdCopyAccelerationStructureKHR cmdCopyAccelerationStructure = nullptr;
   PFN_vkCmdCopyAccelerationStructureToMemoryKHR cmdCopyAccelerationStructureToMemory = nullptr;
   PFN_vkCmdCopyMemoryToAccelerationStructureKHR cmdCopyMemoryToAccelerationStructure = nullptr;
