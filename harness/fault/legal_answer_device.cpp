@@ -27,4 +27,10 @@ Results passBetweenEdgesDevice(const Case& c, const Plan& plan, unsigned threads
   return modelAs(c, plan, f, threads);
 }
 
+Results aabbNeighboursDevice(const Case& c, const Plan& plan, unsigned threads) {
+  ModelFaults f;
+  f.aabb_neighbours_run = true;
+  return modelAs(c, plan, f, threads);
+}
+
 }  // namespace rayspec

@@ -62,6 +62,10 @@ Results perfectDevice(const Case& c, const Results& model);
 // a "should", not met). Each as perfectDevice gives it; `threads` for the model.
 Results legalAnswerDevice(const Case& c, const Plan& plan, uint32_t answer, unsigned threads);
 Results passBetweenEdgesDevice(const Case& c, const Plan& plan, unsigned threads);
+// The model's exact tier as a device whose AABB test takes in each box's
+// neighbours (R-AABB-CONS: conservative, legal): intersection programs run
+// for every box grown by its own extent on each side.
+Results aabbNeighboursDevice(const Case& c, const Plan& plan, unsigned threads);
 
 // crash: raises SIGSEGV; crash-once: the same, but only the first time the
 // case runs into the run folder run_dir (a flaky driver: the re-run passes);

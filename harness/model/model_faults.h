@@ -68,6 +68,12 @@ struct ModelFaults {
   // R-WATERTIGHT not met (a "should"): every trace through a shared edge or
   // vertex passes between its triangles, where that changes the answer.
   bool pass_between_edges = false;
+  // R-AABB-CONS used to the full (legal): every box is tested as if grown by
+  // its own extent on each side, so intersection programs also run for the
+  // boxes beside the ones a ray enters (as NVIDIA's runs its neighbours'):
+  // a case whose intersection program reports without testing its box then
+  // answers otherwise.
+  bool aabb_neighbours_run = false;
 };
 
 }  // namespace rayspec

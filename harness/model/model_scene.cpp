@@ -96,7 +96,7 @@ void aabbBounds(const RTCBoundsFunctionArguments* args) {
     v[k] = std::isnan(a[k]) ? (k < 3 ? -kEmbreeLarge : kEmbreeLarge) : a[k];
   for (int k = 0; k < 3; ++k) {
     // Conservative (R-AABB-CONS): a little slack, so grazing rays are enumerated.
-    const float pad = boxSlackF(v[k], v[k + 3]);
+    const float pad = boxSlackF(v[k], v[k + 3]) + (g->aabbs_grown ? v[k + 3] - v[k] : 0.0f);
     v[k] = clampLarge(v[k] - pad);
     v[k + 3] = clampLarge(v[k + 3] + pad);
   }
@@ -194,10 +194,21 @@ void aabbIntersect(const RTCIntersectFunctionNArguments* args) {
     lo[k] = a[k] - slack;
     hi[k] = a[k + 3] + slack;
   }
-  const Span s = slabSpan(lo, hi, o, d);
-  if (s.t0 > s.t1 || s.t1 < tc->tmin || s.t0 > tc->tmax) return;
+  Span s = slabSpan(lo, hi, o, d);
+  const bool entered = !(s.t0 > s.t1 || s.t1 < tc->tmin || s.t0 > tc->tmax);
+  if (!entered && g->aabbs_grown) {  // a neighbour's intersection program runs too
+    for (int k = 0; k < 3; ++k) {
+      const double extent = double(a[k + 3]) - double(a[k]);
+      lo[k] -= extent;
+      hi[k] += extent;
+    }
+    s = slabSpan(lo, hi, o, d);
+    if (s.t0 > s.t1 || s.t1 < tc->tmin || s.t0 > tc->tmax) return;
+  } else if (!entered) {
+    return;
+  }
   ModelCandidate c;
-  if (g->tier == ModelTier::Exact) {
+  if (g->tier == ModelTier::Exact && entered) {
     // Does the ray still cross the box shrunk by the device's error bound?
     // If not, it only grazes a face (or passes just outside, within the slack).
     DVec3 in_lo, in_hi;
@@ -374,13 +385,14 @@ DVec3 deviceVertexError(const Geometry& g) {
 // only where someone reads them (candidates, own tests, an unusable index
 // buffer).
 void describeGeometry(ModelGeometry& mg, const Geometry& g, size_t bi, size_t gi, ModelTier tier,
-                      double ray_pad, bool keep_triangles, bool filters) {
+                      double ray_pad, bool keep_triangles, bool filters, bool grown) {
   mg.kind = g.kind;
   mg.flags = g.flags;
   mg.blas = static_cast<uint32_t>(bi);
   mg.index = static_cast<uint32_t>(gi);
   mg.tier = tier;
   mg.ray_pad = ray_pad;
+  mg.aabbs_grown = grown;
   if (tier == ModelTier::Exact) mg.vertex_err = deviceVertexError(g);
   if (g.kind == Geometry::Kind::Aabbs) {
     mg.aabbs = g.aabbs;
@@ -508,7 +520,8 @@ Result<void> buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool 
     for (size_t gi = 0; gi < src.geometries.size(); ++gi) {
       ModelGeometry& mg = s.blases[bi].geometries[gi];
       describeGeometry(mg, src.geometries[gi], bi, gi, tier,
-                       tier == ModelTier::Exact ? ray_pad[bi] : 0.0, keep_triangles, filters);
+                       tier == ModelTier::Exact ? ray_pad[bi] : 0.0, keep_triangles, filters,
+                       s.aabbs_grown);
       if (mg.kind == Geometry::Kind::Triangles) s.blases[bi].triangles = true;
       any_own = any_own || mg.own_triangles;
     }

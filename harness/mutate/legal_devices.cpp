@@ -60,6 +60,17 @@ Variant passBetween(const Case& c, const Plan& plan, const Results& model, const
                 "rays through a shared edge or vertex pass between its triangles");
 }
 
+// aabb-neighbours: intersection programs run for the boxes beside the
+// entered ones too (R-AABB-CONS).
+Variant aabbNeighbours(const Case& c, const Plan& plan, const Results& base, unsigned threads) {
+  bool boxes = false;
+  for (const Blas& b : c.scene.blases)
+    for (const Geometry& g : b.geometries) boxes = boxes || g.kind == Geometry::Kind::Aabbs;
+  if (!boxes) return {"aabb-neighbours", {}, false, "no AABB geometry"};
+  return madeBy("aabb-neighbours", aabbNeighboursDevice(c, plan, threads), base,
+                "intersection programs run for every box grown by its own extent on each side");
+}
+
 // Each planted fault the catalog calls legal, on the model's own answer.
 std::vector<Variant> legalFaults(const Case& c, const Plan& plan, const Results& model,
                                  const Results& base) {
@@ -131,6 +142,7 @@ std::vector<LegalDevice> judgeLegalDevices(const Case& c, const Plan& plan, cons
   if (!model.records.empty()) {
     variants = answerVariants(c, plan, model, base, threads);
     variants.push_back(passBetween(c, plan, model, base, threads));
+    variants.push_back(aabbNeighbours(c, plan, base, threads));
     variants.push_back(toleranceBound(base));
   }
   for (Variant& v : legalFaults(c, plan, model, base)) variants.push_back(std::move(v));

@@ -10,6 +10,8 @@
 //                       (R-WATERTIGHT, a "should": QualityWarning at most)
 //   <legal fault>       each planted fault the catalog calls legal (any-hit
 //                       repeated without NO_DUPLICATE, candidates far to near, ...)
+//   aabb-neighbours     intersection programs also run for the boxes beside
+//                       the entered ones (R-AABB-CONS: the test is conservative)
 //   tolerance-bound     every written hit_t and barycentric moved by 0.9 of
 //                       the error the comparison allows
 #pragma once
