@@ -181,5 +181,57 @@ TEST(LegalDevices, AJudgeThatAssumesOneTPerEdgeRayIsCaught) {
   EXPECT_TRUE(caught) << "a judge holding every legal hit to the model's t fails a legal device";
 }
 
+// R-AABB-CONS: two boxes side by side, a ray down the middle of the first.
+// An intersection program that reports without testing its box answers
+// otherwise on a device that runs it for the neighbour too (aabb-neighbours:
+// a false alarm the case, not the device, is to blame); one that reports
+// only where the ray crosses its box answers the same.
+std::string neighbourBoxes(const std::string& intersection) {
+  return R"(rules: [R-AABB-CONS]
+description: two boxes side by side
+scene:
+  blas:
+    boxes:
+      - aabbs: [[-2, -1, -1, 0, 1, 1], [0.5, -1, -1, 2.5, 1, 1]]
+  instances: [{blas: boxes}]
+rays:
+  list:
+    - {origin: [-1, 0, 5], direction: [0, 0, -1]}
+  tmin: 0.001
+  tmax: 100
+pipeline:
+  miss:
+    - [record: {hit: 0}]
+  hit_groups:
+    - intersection: )" +
+         intersection + R"(
+      closest_hit:
+        - record: [hit, primitive_id]
+outputs:
+  per_ray: [hit, primitive_id]
+)";
+}
+
+TEST(LegalDevices, AnIntersectionProgramRunForANeighbourBoxIsHeldToTheCase) {
+  const std::string unconditional = "[report: {t: {sub: [4.0, {float: primitive_id}]}, kind: 0}]";
+  const std::string tested =
+      "[{if: {and: [{le: [{x: aabb_min}, {x: object_ray_origin}]}, {le: [{x: object_ray_origin}, "
+      "{x: aabb_max}]}]}, then: " +
+      unconditional + "}]";
+  for (const auto& [program, alarm] : {std::pair{unconditional, true}, std::pair{tested, false}}) {
+    const Case c = parseInline(neighbourBoxes(program));
+    const Plan plan = derivePlan(c);
+    const Results model = runOnModel(c, plan, ModelOptions{ModelTier::Exact, 1});
+    bool found = false;
+    for (const LegalDevice& d : judgeLegalDevices(c, plan, model, 1)) {
+      if (d.name != "aabb-neighbours") continue;
+      found = true;
+      EXPECT_TRUE(d.applied || !alarm) << d.what;
+      EXPECT_EQ(d.false_alarm, alarm) << program << ": " << d.headline;
+    }
+    EXPECT_TRUE(found);
+  }
+}
+
 }  // namespace
 }  // namespace rayspec
