@@ -1,6 +1,7 @@
 // Runs checkProgram (program/ops.h) on every stage program of a case, and the
 // checks that need the whole pipeline (recursion depth of nested traces).
 #include "case/case_parts.h"
+#include "program/builtins.h"
 #include "program/ops.h"
 #include "program/walk_program.h"
 
@@ -19,7 +20,7 @@ const Stmt* findTrace(const Program& p) {
 const Expr* findPositionFetch(const Program& p) {
   const Expr* found = nullptr;
   walkExpressions(p, [&](const Expr& e) {
-    if (!found && e.kind == Expr::Kind::Builtin && e.name.rfind("vertex_position", 0) == 0)
+    if (!found && e.kind == Expr::Kind::Builtin && isHitVertexPosition(e.name))
       found = &e;
   });
   return found;

@@ -1,6 +1,7 @@
 #include <algorithm>
 
 #include "glsl/stage_context.h"
+#include "program/builtins.h"
 #include "program/payload_words.h"
 #include "results/record_layout.h"
 
@@ -19,7 +20,7 @@ void visitExpr(const Expr& e, StageUses& u) {
     if (e.name == "payload.color" || e.name == "payload.value" ||
         (payloadWordBuiltin(e.name) && !payloadWordBuiltin(e.name)->child))
       u.incoming_payload = true;
-    if (e.name.rfind("vertex_position", 0) == 0) u.position_fetch = true;
+    if (isHitVertexPosition(e.name)) u.position_fetch = true;
     if (isQueryVertexPosition(e.name)) u.query_position_fetch = true;
     if (e.name.rfind("child.", 0) == 0) u.reads_child = true;
     if (e.name.rfind("callee.", 0) == 0) u.reads_callee = true;

@@ -138,7 +138,7 @@ void planStatements(const std::vector<StageProgram>& programs, const Pipeline& p
     walkExpressions(*sp.program, [&](const Expr& e) {
       if (e.kind == Expr::Kind::Builtin && e.name == "cull_mask") plan.cull_mask_builtin = true;
       if (e.kind == Expr::Kind::Builtin &&
-          (e.name.rfind("vertex_position", 0) == 0 || isQueryVertexPosition(e.name)))
+          (isHitVertexPosition(e.name) || isQueryVertexPosition(e.name)))
         plan.position_fetch = true;
       if (sp.stage == Stage::Intersection &&
           (e.name == "aabb_min" || e.name == "aabb_max" || e.name.rfind("sphere_", 0) == 0))

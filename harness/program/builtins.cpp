@@ -32,6 +32,11 @@ Builtin builtinId(const BuiltinInfo* info) {
   return info ? static_cast<Builtin>(info - builtins().data()) : kBiUnknown;
 }
 
+bool isHitVertexPosition(const std::string& name) {
+  const Builtin b = builtinId(findBuiltin(name));
+  return b >= kBiVertex0 && b <= kBiVertex2;
+}
+
 bool isQueryVertexPosition(const std::string& name) {
   const Builtin b = builtinId(findBuiltin(name));
   return (b >= kBiQCandVertex0 && b <= kBiQCandVertex2) ||

@@ -70,6 +70,8 @@ constexpr bool isQueryBuiltin(int b) {
 // candidate.vertex_position<i> or committed.vertex_position<i> (position
 // fetch through a ray query).
 bool isQueryVertexPosition(const std::string& name);
+// vertex_position<i> (gl_HitTriangleVertexPositionsEXT in a hit stage).
+bool isHitVertexPosition(const std::string& name);
 
 // The table of program/builtin_table.h, indexed by Builtin.
 const std::vector<BuiltinInfo>& builtins();
