@@ -45,6 +45,31 @@ TEST(Reduce, ReducedCaseFailsWithTheFaultAndPassesWithout) {
       << slurp(dir + "/without.log");
 }
 
+// --device-command: each variant's device side run by a command (here this
+// build's own device-only run with the layout fault offsets-ignored, standing
+// in for another driver such as tools/second-driver.sh device), judged here.
+TEST(Reduce, ADeviceCommandRunsEachVariantsDeviceSide) {
+  const std::string dir = cli::fresh("reduce-command");
+  const std::string log = dir + "/reduce.log";
+  const std::string command = kBin +
+                              " run --no-model --cases \"$RAYSPEC_VARIANT_CASES\" --filter "
+                              "\"$RAYSPEC_VARIANT_NAME\" --out \"$RAYSPEC_VARIANT_OUT\" "
+                              "--plant-fault offsets-ignored";
+  ASSERT_EQ(sh(kBin + " reduce accel/layouts-triangles --device-command '" + command +
+                   "' --out " + dir + "/out",
+               log),
+            0)
+      << slurp(log);
+  const std::string out = slurp(log);
+  EXPECT_NE(out.find("Reduced accel/layouts-triangles"), std::string::npos) << out;
+  const std::string report = slurp(dir + "/out/report.md");
+  EXPECT_NE(report.find("--device-results"), std::string::npos) << report;
+  EXPECT_NE(report.find("the device `"), std::string::npos) << report;
+  // Every variant's device side ran through the command, none here.
+  EXPECT_TRUE(std::filesystem::exists(dir + "/out/runs/variant-1/device"));
+  EXPECT_TRUE(std::filesystem::exists(dir + "/out/cases/accel/layouts-triangles.yaml"));
+}
+
 TEST(Reduce, ACaseThatPassesIsNotReduced) {
   const std::string dir = cli::fresh("reduce-pass");
   EXPECT_EQ(sh(kBin + " reduce " + kCase + " --out " + dir + "/out", dir + "/log"), 1)

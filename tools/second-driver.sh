@@ -13,6 +13,9 @@
 #   tools/second-driver.sh compare RUN_A RUN_B    # rayspec compare of two judged or saved runs
 #   tools/second-driver.sh limits [BASELINE]  # the environment's lavapipe: rayspec devices --check-limits
 #       judged against BASELINE (default references/baselines/lavapipe-26-limits.csv)
+#   RAYSPEC_VARIANT_CASES=DIR RAYSPEC_VARIANT_NAME=NAME RAYSPEC_VARIANT_OUT=OUT tools/second-driver.sh device
+#       the device side of case NAME (DIR/NAME.yaml) by the environment's lavapipe, left in OUT as
+#       `rayspec run --out` leaves it: rayspec reduce --device-command 'bash tools/second-driver.sh device'
 #   tools/second-driver.sh generated OUT    # the generator test's modules (tests/glsl_generator_test.cpp:
 #       random programs over the whole vocabulary) through the environment's spirv-val: OUT/spirv-val.txt
 #
@@ -149,6 +152,30 @@ run() {
   exit "$judged"
 }
 
+# One case's device side, for `rayspec reduce --device-command`: the pack is
+# installed on the first call (again when build-device's rayspec is newer),
+# each case in a process of its own, the bundle moved to RAYSPEC_VARIANT_OUT.
+device() {
+  ready || { echo "second-driver: SKIPPED: no environment in $ENV_DIR"; exit 77; }
+  [[ $(id -u) -eq 0 ]] || die "device needs root (chroot)"
+  [[ -n ${RAYSPEC_VARIANT_CASES:-} && -n ${RAYSPEC_VARIANT_NAME:-} && -n ${RAYSPEC_VARIANT_OUT:-} ]] ||
+    die "device needs RAYSPEC_VARIANT_CASES, RAYSPEC_VARIANT_NAME and RAYSPEC_VARIANT_OUT"
+  [[ -x "$ENV_DIR$WORK/pack/rayspec" && ! build-device/rayspec -nt "$ENV_DIR$WORK/pack/rayspec" ]] ||
+    install_pack
+  rm -rf "$ENV_DIR$WORK/variant" && mkdir -p "$ENV_DIR$WORK/variant"
+  cp -r "$RAYSPEC_VARIANT_CASES" "$ENV_DIR$WORK/variant/cases"
+  trap unmount_inside EXIT
+  mount_inside
+  local rc=0
+  inside sh -c 'cd "$0/pack" && RAYSPEC_CACHE_DIR="$0/pack/cache" MESA_SHADER_CACHE_DIR="$0/mesa-cache" LD_LIBRARY_PATH=lib \
+    ./rayspec run --cases "$0/variant/cases" --filter "$2" --rules spec-rules.yaml --icd "$1" --strict-validation \
+      --process-per-case --out "$0/variant/out"' "$WORK" "$ICD" "$RAYSPEC_VARIANT_NAME" || rc=$?
+  unmount_inside
+  [[ $rc -eq 0 || $rc -eq 1 || $rc -eq 3 || $rc -eq 77 ]] || die "the run inside exited $rc" 1
+  rm -rf "$RAYSPEC_VARIANT_OUT" && mkdir -p "$(dirname "$RAYSPEC_VARIANT_OUT")"
+  mv "$ENV_DIR$WORK/variant/out" "$RAYSPEC_VARIANT_OUT"
+}
+
 # The generator test (build/tests/test_glsl, GeneratedStages.*) writes every
 # module it compiled into the environment, whose spirv-val checks them all.
 generated() {
@@ -186,5 +213,6 @@ case ${1:-} in
   run) shift; run "$@" ;;
   compare) shift; exec ./build/rayspec compare "$@" ;;
   generated) shift; generated "$@" ;;
-  *) die "usage: tools/second-driver.sh prepare | versions | run OUT [--baseline FILE] [options] | limits [BASELINE] | compare A B | generated OUT" ;;
+  device) device ;;
+  *) die "usage: tools/second-driver.sh prepare | versions | run OUT [--baseline FILE] [options] | limits [BASELINE] | compare A B | generated OUT | device (RAYSPEC_VARIANT_*)" ;;
 esac

@@ -39,6 +39,12 @@ Subcommand addReduceCommand(CLI::App& app) {
   reduce->add_option("--timeout", o.run.timeout, "Seconds per case side")
       ->check(positiveSeconds())
       ->capture_default_str();
+  reduce->add_option("--device-command", o.device_command,
+                     "Run each variant's device side by this shell command, not on a device "
+                     "here: it gets RAYSPEC_VARIANT_CASES (a folder holding the variant as "
+                     "<case name>.yaml), RAYSPEC_VARIANT_NAME and RAYSPEC_VARIANT_OUT (where it "
+                     "leaves what `rayspec run --out` writes); `tools/second-driver.sh device` is "
+                     "one, for the second driver");
   reduce->add_flag("--no-validation", o.run.no_validation,
                    "Do not load the Khronos validation layer");
   reduce->add_option("--plant-fault", o.run.plant_fault,

@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "base/whole_file.h"
 #include "library/case_discovery.h"
 #include "model/model_engine.h"
 #include "reduce/case_size.h"
@@ -67,7 +68,12 @@ std::string quoted(const std::string& s) {
   return s.find_first_of(" '\"$*?") == std::string::npos ? s : "'" + s + "'";
 }
 
-std::string reproduction(const ReduceOptions& opt) {
+std::string reproduction(const ReduceOptions& opt, const std::string& name) {
+  if (!opt.device_command.empty())  // the device is the command's: it runs OUT/cases, judged here
+    return "RAYSPEC_VARIANT_CASES=" + quoted(opt.out + "/cases") + " RAYSPEC_VARIANT_NAME=" +
+           quoted(name) + " RAYSPEC_VARIANT_OUT=" + quoted(opt.out + "/device") + " " +
+           opt.device_command + " && rayspec run --cases " + quoted(opt.out + "/cases") +
+           " --device-results " + quoted(opt.out + "/device");
   std::string c = "rayspec run --case " + quoted(opt.out + "/reduced.yaml");
   if (!opt.run.device.empty()) c += " --device " + quoted(opt.run.device);
   for (const std::string& icd : opt.run.icd_files) c += " --icd " + quoted(icd);
@@ -103,6 +109,11 @@ Result<void> reductionSetup(ReduceOptions& opt, const CaseFile& f, RunInfo& info
   for (const std::string& note : icd.notes)
     std::fprintf(stderr, "rayspec reduce: %s\n", note.c_str());
   if (!icd.error.empty()) return errorMessage(icd.error);
+  if (!opt.device_command.empty()) {  // no device here: the command runs each variant's
+    info.device = "the device `" + opt.device_command + "` runs";
+    useCacheDir(opt.run.cache_dir);
+    return {};
+  }
   RAYSPEC_TRY_VOID(chooseDevice(opt.run, {f}, icd, info));
   useCacheDir(opt.run.cache_dir);
   return {};
@@ -132,7 +143,7 @@ int runReduce(const ReduceOptions& requested) {
   if (Result<void> setup = reductionSetup(opt, *f, info); !setup)
     return badInput(setup.error().format());
 
-  VariantJudge probe(opt.run, f->name, labels, {}, 1);
+  VariantJudge probe(opt.run, f->name, labels, {}, 1, opt.device_command);
   bool interrupted = false;
   const CaseOutcome original = probe.judge(*text, &interrupted);
   if (interrupted) return badInput("interrupted");
@@ -146,7 +157,7 @@ int runReduce(const ReduceOptions& requested) {
   std::printf("Reducing %s: keeps %s: %s%s\n", f->name.c_str(), statusName(signature->status),
               signature->rule.empty() ? "" : (signature->rule + ": ").c_str(),
               signature->message.c_str());
-  VariantJudge judge(opt.run, f->name, labels, *signature, opt.max_attempts);
+  VariantJudge judge(opt.run, f->name, labels, *signature, opt.max_attempts, opt.device_command);
   YAML::Node reduced =
       reduceDocument(*doc, *parsed.value, failingRaysOf(original, *signature), judge);
 
@@ -163,12 +174,18 @@ int runReduce(const ReduceOptions& requested) {
   r.icd = info.icd;
   r.fault = opt.run.plant_fault;
   r.rule_title = ruleTitle(*catalog, signature->rule);
-  r.command = reproduction(opt);
+  r.command = reproduction(opt, f->name);
   r.attempts = judge.attempts();
   reduced["description"] = reducedDescription(r);
   r.reduced_text = "# Made by rayspec reduce; shown by: " + r.command + "\n" + emitYaml(reduced);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (std::string e = writeReduction(r, opt.out); !e.empty()) return badInput(e);
+  if (!opt.device_command.empty()) {  // where the reproduction's command reads it
+    std::error_code ec;
+    const std::string at = opt.out + "/cases/" + f->name + ".yaml";
+    std::filesystem::create_directories(std::filesystem::path(at).parent_path(), ec);
+    if (Result<void> w = writeWholeFile(at, r.reduced_text); !w) return badInput(w.error().format());
+  }
   std::printf("%s", reductionSummary(r, opt.out).c_str());
   return kReduceDone;
 }

@@ -16,6 +16,10 @@ struct ReduceOptions {
   std::string keep;  // "": the case's worst finding; a rule label; "crash"; a message's text
   size_t max_attempts = 3000;
   RunOptions run;  // the device, --icd, --plant-fault, the model tier, limits
+  // --device-command: each variant's device side run by this shell command,
+  // not by a device here (reduce/variant_judge.h: a driver this process
+  // cannot load, such as tools/second-driver.sh's).
+  std::string device_command;
 };
 
 // Exit statuses: 0 reduced (reduced.yaml, report.md, steps.txt written), 1

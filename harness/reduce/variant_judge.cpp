@@ -1,17 +1,53 @@
 #include "reduce/variant_judge.h"
 
 #include <chrono>
+#include <cstdlib>
+#include <filesystem>
+
+#include <sys/wait.h>
+
+#include "base/whole_file.h"
 
 namespace rayspec {
 
 VariantJudge::VariantJudge(const RunOptions& run, std::string name, std::vector<std::string> labels,
-                           FailureSignature signature, size_t max_attempts)
+                           FailureSignature signature, size_t max_attempts,
+                           std::string device_command)
     : run_(run),
       name_(std::move(name)),
       labels_(std::move(labels)),
       signature_(std::move(signature)),
       max_attempts_(max_attempts),
-      runner_(run, nullptr, nullptr) {}
+      runner_(run, nullptr, nullptr),
+      device_command_(std::move(device_command)) {}
+
+CaseOutcome VariantJudge::judgeByCommand(const std::string& text, const Case& c,
+                                         bool* interrupted) const {
+  namespace fs = std::filesystem;
+  const fs::path dir =
+      fs::absolute(fs::path(run_.out) / ("variant-" + std::to_string(++commands_run_)));
+  const fs::path cases = dir / "cases", device = dir / "device";
+  std::error_code ec;
+  fs::remove_all(dir, ec);
+  fs::create_directories((cases / name_).parent_path(), ec);
+  if (Result<void> written = writeWholeFile((cases / (name_ + ".yaml")).string(), text); !written)
+    return caseErrorOutcome(name_, c.rules, "harness", written.error().format());
+  const std::string env = "export RAYSPEC_VARIANT_CASES='" + cases.string() +
+                          "' RAYSPEC_VARIANT_NAME='" + name_ + "' RAYSPEC_VARIANT_OUT='" +
+                          device.string() + "'; ";
+  const std::string command = env + device_command_ + " >'" + (dir / "command.log").string() +
+                              "' 2>&1";
+  const int rc = std::system(command.c_str());
+  if (rc != -1 && WIFSIGNALED(rc) && (WTERMSIG(rc) == SIGINT || WTERMSIG(rc) == SIGTERM)) {
+    *interrupted = true;
+    return caseErrorOutcome(name_, c.rules, "harness", "the device command was stopped");
+  }
+  RunOptions saved = run_;
+  saved.device_results = device.string();
+  saved.out = (dir / "judged").string();
+  const CaseRunner runner(saved, nullptr, nullptr);
+  return guardCase(c.name, c.rules, [&] { return runner.run(c, interrupted); });
+}
 
 CaseOutcome VariantJudge::judge(const std::string& text, bool* interrupted) const {
   *interrupted = false;
@@ -23,6 +59,7 @@ CaseOutcome VariantJudge::judge(const std::string& text, bool* interrupted) cons
     return caseErrorOutcome(name_, {}, "case-file", message);
   }
   const Case& c = *parsed.value;
+  if (!device_command_.empty()) return judgeByCommand(text, c, interrupted);
   return guardCase(c.name, c.rules, [&] { return runner_.run(c, interrupted); });
 }
 

@@ -3,6 +3,13 @@
 // run), both sides run isolated in child processes (run/case_steps.h
 // CaseRunner), judged by the usual comparison; kept when it fails the way
 // the original did (reduce/failure_signature.h). Every attempt is logged.
+// With a device command, the device side of each variant is run by it
+// instead: the variant is written to RUN_OUT/variant-<n>/cases/<case name>.yaml,
+// the command runs with RAYSPEC_VARIANT_CASES (that folder), RAYSPEC_VARIANT_NAME
+// (the case's name) and RAYSPEC_VARIANT_OUT (RUN_OUT/variant-<n>/device: where it
+// must leave what `rayspec run --out` writes), and the bundle it left is
+// judged as `rayspec run --device-results` judges one (none: NotSupported,
+// so never kept).
 #pragma once
 
 #include <map>
@@ -27,10 +34,16 @@ class VariantJudge {
   // name: the case's name (every variant runs under it, so a fault planted
   // in cases matching a glob stays planted).
   VariantJudge(const RunOptions& run, std::string name, std::vector<std::string> labels,
-               FailureSignature signature, size_t max_attempts);
+               FailureSignature signature, size_t max_attempts, std::string device_command = "");
   // The case as text, run and judged: its outcome (a CaseError when it does
   // not parse). *interrupted: a signal stopped it.
   CaseOutcome judge(const std::string& text, bool* interrupted) const;
+
+ private:
+  // The device side by the device command, then the case judged from what it left.
+  CaseOutcome judgeByCommand(const std::string& text, const Case& c, bool* interrupted) const;
+
+ public:
   // Whether the variant fails the same way; a text seen before is not run again.
   bool fails(const std::string& text, const std::string& what);
   const std::vector<Attempt>& attempts() const { return attempts_; }
@@ -46,6 +59,8 @@ class VariantJudge {
   FailureSignature signature_;
   size_t max_attempts_;
   CaseRunner runner_;
+  std::string device_command_;
+  mutable size_t commands_run_ = 0;
   std::map<std::string, bool> seen_;
   std::map<std::string, CaseOutcome> kept_;
   std::vector<Attempt> attempts_;
