@@ -233,27 +233,39 @@ FaultResult builtinWrong(RecordFaultArgs& a) {
 
 namespace rayspec {
 
+namespace {
+
+// A finding only the device shows (Results::device_findings), as the device
+// side's own check would make it; the fault's description when it applies.
+FaultResult plantDeviceFinding(RecordFaultArgs& a, DeviceFinding finding, std::string what) {
+  a.dev.w.device_findings.push_back(std::move(finding));
+  return {true, std::move(what)};
+}
+
+}  // namespace
+
 // R-LIBRARY with VK_EXT_pipeline_library_group_handles: a device whose group
 // handle read from a library differs from the same group's handle in the
 // linked pipeline (the check vulkan/library_group_handles.h makes).
 FaultResult libraryHandleDiffers(RecordFaultArgs& a) {
   if (a.c.pipeline.libraries.empty()) return notApplicable("the case links no pipeline library");
-  a.dev.w.device_findings.push_back(
+  return plantDeviceFinding(
+      a,
       {"R-LIBRARY",
        "group 1 (library group 0): its handle read from the library differs from its handle in "
-       "the linked pipeline (planted)"});
-  return {true, "a library group's handle differs from the linked pipeline's"};
+       "the linked pipeline (planted)"},
+      "a library group's handle differs from the linked pipeline's");
 }
 
 // R-AS-MEMORY: a device whose build wrote past the size it reported, as the
 // guards after each structure (vulkan/memory_guards.h) find it.
 FaultResult memoryGuardOverwritten(RecordFaultArgs& a) {
   if (a.c.scene.instances.empty()) return notApplicable("the case builds no structure");
-  a.dev.w.device_findings.push_back(
-      {"R-AS-MEMORY",
-       "BLAS 0, its accelerationStructureSize: 4 of the 256 guard bytes after it changed "
-       "(planted)"});
-  return {true, "a build wrote past the size the device reported"};
+  return plantDeviceFinding(a,
+                            {"R-AS-MEMORY",
+                             "BLAS 0, its accelerationStructureSize: 4 of the 256 guard bytes "
+                             "after it changed (planted)"},
+                            "a build wrote past the size the device reported");
 }
 
 }  // namespace rayspec
