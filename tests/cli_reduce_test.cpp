@@ -55,8 +55,8 @@ TEST(Reduce, ADeviceCommandRunsEachVariantsDeviceSide) {
                               " run --no-model --cases \"$RAYSPEC_VARIANT_CASES\" --filter "
                               "\"$RAYSPEC_VARIANT_NAME\" --out \"$RAYSPEC_VARIANT_OUT\" "
                               "--plant-fault offsets-ignored";
-  ASSERT_EQ(sh(kBin + " reduce accel/layouts-triangles --device-command '" + command +
-                   "' --out " + dir + "/out",
+  ASSERT_EQ(sh(kBin + " reduce accel/layouts-triangles --device-command '" + command + "' --out " +
+                   dir + "/out",
                log),
             0)
       << slurp(log);

@@ -316,8 +316,8 @@ void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
         build.command = *command;
       else
         r.error(v, f + ".command",
-                "unknown build command '" + *name + "' (" +
-                    namesJoined(enumNames<BuildCommand>()) + ")");
+                "unknown build command '" + *name + "' (" + namesJoined(enumNames<BuildCommand>()) +
+                    ")");
     }
   if (auto v = YamlReader::get(n, "one_by_one"); v.IsDefined())
     build.one_by_one = parseSwitch(r, v, f + ".one_by_one").value_or(false);

@@ -310,7 +310,7 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
     StepTimer scene_time(r.cost, CostStep::ModelScene);
     const CPipeline programs = compilePipeline(c, plan);
     ModelScene scene;
-    scene.aabbs_grown = opt.faults.aabb_neighbours_run;
+    scene.aabbs_grown = ModelFaultSeam(opt).aabbNeighboursRun();
     // Per-primitive triangles are read by candidates, own tests, the
     // facing of a direct hit when a program reads hit_kind, and vertex_position<i>.
     if (Result<void> built = buildModelScene(scene, c, opt.tier, needsCandidates(c, plan, opt.tier),

@@ -68,6 +68,9 @@ class ModelFaultSeam {
     size_t index = 0;
   };
   std::optional<Answer> answerTaken(size_t legal, size_t leaks) const;
+  // A legal device (rayspec mutate, R-AABB-CONS): every box tested as if grown
+  // by its own extent on each side, so its neighbours' intersection programs run.
+  bool aabbNeighboursRun() const { return f_.aabb_neighbours_run; }
 
  private:
   ModelFaults f_;

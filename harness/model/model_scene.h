@@ -42,9 +42,9 @@ struct ModelGeometry {
   // and the exact test's ambiguity zone: model/box_pad.h).
   DVec3 vertex_err{};
   double ray_pad = 0;
-  // AABBs: tested as grown by their own extent on each side (ModelFaults::
-  // aabb_neighbours_run, a legal device); a ray that crosses only the grown
-  // box runs its intersection program all the same.
+  // AABBs: tested as grown by their own extent on each side (a legal device:
+  // ModelFaultSeam::aabbNeighboursRun); a ray that crosses only the grown box
+  // runs its intersection program all the same.
   bool aabbs_grown = false;
 };
 
@@ -64,7 +64,7 @@ struct ModelInstance {
 
 struct ModelScene {
   ModelTier tier = ModelTier::Exact;
-  bool filters = false;  // Embree triangles report every candidate to the model
+  bool filters = false;      // Embree triangles report every candidate to the model
   bool aabbs_grown = false;  // set before buildModelScene: ModelGeometry::aabbs_grown
   RTCDevice device = nullptr;
   // One Embree scene per top level (Scene::tlasCount()), each holding the

@@ -70,10 +70,11 @@ std::string quoted(const std::string& s) {
 
 std::string reproduction(const ReduceOptions& opt, const std::string& name) {
   if (!opt.device_command.empty())  // the device is the command's: it runs OUT/cases, judged here
-    return "RAYSPEC_VARIANT_CASES=" + quoted(opt.out + "/cases") + " RAYSPEC_VARIANT_NAME=" +
-           quoted(name) + " RAYSPEC_VARIANT_OUT=" + quoted(opt.out + "/device") + " " +
-           opt.device_command + " && rayspec run --cases " + quoted(opt.out + "/cases") +
-           " --device-results " + quoted(opt.out + "/device");
+    return "RAYSPEC_VARIANT_CASES=" + quoted(opt.out + "/cases") +
+           " RAYSPEC_VARIANT_NAME=" + quoted(name) +
+           " RAYSPEC_VARIANT_OUT=" + quoted(opt.out + "/device") + " " + opt.device_command +
+           " && rayspec run --cases " + quoted(opt.out + "/cases") + " --device-results " +
+           quoted(opt.out + "/device");
   std::string c = "rayspec run --case " + quoted(opt.out + "/reduced.yaml");
   if (!opt.run.device.empty()) c += " --device " + quoted(opt.run.device);
   for (const std::string& icd : opt.run.icd_files) c += " --icd " + quoted(icd);
@@ -184,7 +185,8 @@ int runReduce(const ReduceOptions& requested) {
     std::error_code ec;
     const std::string at = opt.out + "/cases/" + f->name + ".yaml";
     std::filesystem::create_directories(std::filesystem::path(at).parent_path(), ec);
-    if (Result<void> w = writeWholeFile(at, r.reduced_text); !w) return badInput(w.error().format());
+    if (Result<void> w = writeWholeFile(at, r.reduced_text); !w)
+      return badInput(w.error().format());
   }
   std::printf("%s", reductionSummary(r, opt.out).c_str());
   return kReduceDone;

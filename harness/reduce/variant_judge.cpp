@@ -35,8 +35,8 @@ CaseOutcome VariantJudge::judgeByCommand(const std::string& text, const Case& c,
   const std::string env = "export RAYSPEC_VARIANT_CASES='" + cases.string() +
                           "' RAYSPEC_VARIANT_NAME='" + name_ + "' RAYSPEC_VARIANT_OUT='" +
                           device.string() + "'; ";
-  const std::string command = env + device_command_ + " >'" + (dir / "command.log").string() +
-                              "' 2>&1";
+  const std::string command =
+      env + device_command_ + " >'" + (dir / "command.log").string() + "' 2>&1";
   const int rc = std::system(command.c_str());
   if (rc != -1 && WIFSIGNALED(rc) && (WTERMSIG(rc) == SIGINT || WTERMSIG(rc) == SIGTERM)) {
     *interrupted = true;

@@ -86,7 +86,7 @@ void RunSummary::print(bool brief) const {
     if (brief && !failsRun(o)) continue;
     if (!header)
       std::printf(brief ? "Failing the run (--brief lists no other):\n"
-                                               : "Not passing, or not as the baseline expects:\n");
+                        : "Not passing, or not as the baseline expects:\n");
     header = true;
     std::printf("  %-44s %s%s\n", o.name.c_str(), o.headline.c_str(), gateTag(o).c_str());
   }

@@ -43,7 +43,7 @@ struct RunOptions {
   bool no_validation = false;
   bool strict_validation = false;
   unsigned threads = 0;
-  bool brief = false;  // print only the cases that fail the run (ctest), not a line per case
+  bool brief = false;        // print only the cases that fail the run (ctest), not a line per case
   bool records_csv = false;  // records.csv in every bundle, not only where the case did not pass
   std::string cache_dir =
       defaultCacheDir();   // SPIR-V kept across processes and runs (run/cache_dir.h); "" off

@@ -196,12 +196,13 @@ Result<std::vector<BuiltStructure>> copyStructures(const VulkanContext& ctx,
   std::vector<BuiltStructure> to;
   RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx, cleanup));
   for (size_t i = 0; i < from.size(); ++i) {
-    RAYSPEC_TRY(const VkAccelerationStructureKHR copy_handle,
-                createStructure(ctx, type, sizes[i], cleanup, guards,
-                                "the " + std::string(mode == AsCopy::Compact ? "compacted" : "cloned") +
-                                    " copy of structure " + std::to_string(i) +
-                                    (mode == AsCopy::Compact ? ", its compacted size"
-                                                             : ", the source's size")));
+    RAYSPEC_TRY(
+        const VkAccelerationStructureKHR copy_handle,
+        createStructure(
+            ctx, type, sizes[i], cleanup, guards,
+            "the " + std::string(mode == AsCopy::Compact ? "compacted" : "cloned") +
+                " copy of structure " + std::to_string(i) +
+                (mode == AsCopy::Compact ? ", its compacted size" : ", the source's size")));
     to.push_back({copy_handle, sizes[i]});
   }
   guards.recordFill(cmd);

@@ -278,10 +278,10 @@ struct Builds {
     if (infos.empty()) return {};
     constexpr VkDeviceSize kRange = sizeof(VkAccelerationStructureBuildRangeInfoKHR);
     RAYSPEC_TRY(const Buffer buffer,
-                createUploadBuffer(ctx, all.data(), all.size() * kRange,
-                                   VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
-                                       VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-                                   cleanup));
+                createUploadBuffer(
+                    ctx, all.data(), all.size() * kRange,
+                    VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                    cleanup));
     for (size_t i = 0; i < infos.size(); ++i) {
       indirect_ranges.push_back(buffer.address + starts[i] * kRange);
       indirect_strides.push_back(static_cast<uint32_t>(kRange));
@@ -308,7 +308,8 @@ Builds updatesOf(
     info.srcAccelerationStructure = rebuild ? VK_NULL_HANDLE : info.dstAccelerationStructure;
     info.pGeometries = geometries[i]->data();
     const std::string what = (rebuild ? "the rebuild scratch of " : "the update scratch of ") +
-                             built.names[i] + (rebuild ? " (buildScratchSize " : " (updateScratchSize ");
+                             built.names[i] +
+                             (rebuild ? " (buildScratchSize " : " (updateScratchSize ");
     const VkDeviceSize size = rebuild ? built.build_scratch[i] : built.update_scratch[i];
     out.add(info, ranges[i], scratch.add(size, what + std::to_string(size) + " bytes)"));
     out.names.push_back(built.names[i]);
@@ -356,9 +357,9 @@ Result<Builds> createBlases(const VulkanContext& ctx, std::vector<BlasBuild>& bu
                                               &info, b.max_primitives.data(), &sizes);
     b.size = sizes.accelerationStructureSize;
     const std::string name = "BLAS " + std::to_string(i);
-    RAYSPEC_TRY(b.handle, createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR,
-                                          b.size, cleanup, guards,
-                                          name + ", its accelerationStructureSize"));
+    RAYSPEC_TRY(b.handle,
+                createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, b.size,
+                                cleanup, guards, name + ", its accelerationStructureSize"));
     info.dstAccelerationStructure = b.handle;
     b.address = structureAddress(ctx, b.handle);
     out.add(info, b.ranges.data(), scratch.add(sizes.buildScratchSize, scratchName(name, sizes)));
@@ -464,10 +465,11 @@ Result<std::vector<VkAccelerationStructureKHR>> updateIntoOthers(
   for (size_t k = 0; k < updates.size(); ++k)
     for (size_t i = 0; i < updates[k].infos.size(); ++i) {
       Builds& update = updates[k];
-      RAYSPEC_TRY(VkAccelerationStructureKHR into,
-                  createStructure(ctx, type, built.sizes[i], cleanup, guards,
-                                  "the structure update " + std::to_string(k + 1) + " of " +
-                                      built.names[i] + " wrote into, its accelerationStructureSize"));
+      RAYSPEC_TRY(
+          VkAccelerationStructureKHR into,
+          createStructure(ctx, type, built.sizes[i], cleanup, guards,
+                          "the structure update " + std::to_string(k + 1) + " of " +
+                              built.names[i] + " wrote into, its accelerationStructureSize"));
       if (update.infos[i].mode == VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR)
         update.infos[i].srcAccelerationStructure = current[i];
       update.infos[i].dstAccelerationStructure = into;
@@ -480,12 +482,12 @@ Result<std::vector<VkAccelerationStructureKHR>> updateIntoOthers(
 // scratch alignment, each region's guard added. Returns that aligned address.
 Result<VkDeviceAddress> createScratch(const VulkanContext& ctx, const ScratchPlan& scratch,
                                       MemoryGuards& guards, Cleanup& cleanup) {
-  RAYSPEC_TRY(const Buffer buffer,
-              createBuffer(ctx, scratch.total + scratch.align,
-                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
-                               VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
-                               VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                           MemoryUse::Device, cleanup));
+  RAYSPEC_TRY(
+      const Buffer buffer,
+      createBuffer(ctx, scratch.total + scratch.align,
+                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
+                       VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                   MemoryUse::Device, cleanup));
   const VkDeviceAddress base = alignUp(buffer.address, scratch.align);
   for (const ScratchPlan::Region& r : scratch.regions)
     guards.add(buffer.buffer, base - buffer.address + r.offset, r.size, r.what);
@@ -510,8 +512,7 @@ class SceneBuilder {
   Result<std::vector<VkAccelerationStructureKHR>> run() {
     RAYSPEC_TRY_VOID(describeBlases());
     RAYSPEC_TRY_VOID(createTopLevels());
-    RAYSPEC_TRY(const VkDeviceAddress scratch,
-                createScratch(ctx_, scratch_, guards_, cleanup_));
+    RAYSPEC_TRY(const VkDeviceAddress scratch, createScratch(ctx_, scratch_, guards_, cleanup_));
     placeScratch(scratch);
     if (scene_.build.command == BuildCommand::Indirect) RAYSPEC_TRY_VOID(placeRangesForIndirect());
     RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx_, cleanup_));
@@ -595,8 +596,7 @@ class SceneBuilder {
       for (auto& state : updates_)
         for (BlasBuild& b : state) patchAddresses(b, inputs.address);
     }
-    RAYSPEC_TRY(blases_,
-                createBlases(ctx_, builds_, used, flags_, scratch_, guards_, cleanup_));
+    RAYSPEC_TRY(blases_, createBlases(ctx_, builds_, used, flags_, scratch_, guards_, cleanup_));
     for (const auto& state : updates_) {
       std::vector<const std::vector<VkAccelerationStructureGeometryKHR>*> geometries;
       std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
@@ -607,10 +607,10 @@ class SceneBuilder {
       blas_updates_.push_back(updatesOf(blases_, geometries, ranges, scratch_));
     }
     if (scene_.build.update_into_other && !blas_updates_.empty()) {
-      RAYSPEC_TRY(const std::vector<VkAccelerationStructureKHR> last,
-                  updateIntoOthers(ctx_, blas_updates_, blases_,
-                                   VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, guards_,
-                                   cleanup_));
+      RAYSPEC_TRY(
+          const std::vector<VkAccelerationStructureKHR> last,
+          updateIntoOthers(ctx_, blas_updates_, blases_,
+                           VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, guards_, cleanup_));
       for (size_t k = 0; k < last.size(); ++k) {  // the instances reference these
         BlasBuild& b = builds_[blases_.blas[k]];
         b.handle = last[k];
@@ -648,10 +648,10 @@ class SceneBuilder {
           updatesOf(tlases_, geometries, ranges, scratch_, scene_.build.tlas_rebuilt));
     }
     if (scene_.build.update_into_other && !tlas_updates_.empty()) {
-      RAYSPEC_TRY(const std::vector<VkAccelerationStructureKHR> last,
-                  updateIntoOthers(ctx_, tlas_updates_, tlases_,
-                                   VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, guards_,
-                                   cleanup_));
+      RAYSPEC_TRY(
+          const std::vector<VkAccelerationStructureKHR> last,
+          updateIntoOthers(ctx_, tlas_updates_, tlases_,
+                           VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, guards_, cleanup_));
       for (size_t k = 0; k < last.size(); ++k) tlas_structures_[k].handle = last[k];
     }
     return {};

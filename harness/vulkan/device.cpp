@@ -71,21 +71,24 @@ std::vector<const char*> deviceExtensions(const VulkanContext& ctx) {
   return extensions;
 }
 
-}  // namespace
-
-Result<void> createDevice(VulkanContext& ctx) {
+// The first queue family with compute (ray tracing runs there).
+Result<void> chooseQueueFamily(VulkanContext& ctx) {
   uint32_t count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(ctx.physical, &count, nullptr);
   std::vector<VkQueueFamilyProperties> families(count);
   vkGetPhysicalDeviceQueueFamilyProperties(ctx.physical, &count, families.data());
-  bool found = false;
-  for (uint32_t i = 0; i < count && !found; ++i) {
+  for (uint32_t i = 0; i < count; ++i)
     if (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) {
       ctx.queue_family = i;
-      found = true;
+      return {};
     }
-  }
-  if (!found) return deviceError("no compute queue family: VK_ERROR_FEATURE_NOT_PRESENT");
+  return deviceError("no compute queue family: VK_ERROR_FEATURE_NOT_PRESENT");
+}
+
+}  // namespace
+
+Result<void> createDevice(VulkanContext& ctx) {
+  RAYSPEC_TRY_VOID(chooseQueueFamily(ctx));
 
   // What the device supports.
   VkPhysicalDeviceRayTracingPipelineFeaturesKHR rt{

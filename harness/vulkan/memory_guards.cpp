@@ -27,8 +27,8 @@ void MemoryGuards::recordFill(VkCommandBuffer cmd) {
                     kGuardPattern);
   VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   mb.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-  mb.dstAccessMask =
-      VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR | VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
+  mb.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR |
+                     VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
                        VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, 0, 1, &mb, 0,
                        nullptr, 0, nullptr);
@@ -48,9 +48,9 @@ Result<std::vector<std::string>> MemoryGuards::check(const VulkanContext& ctx,
                                                      Cleanup& cleanup) const {
   std::vector<std::string> changed;
   if (guards_.empty()) return changed;
-  RAYSPEC_TRY(const Buffer back, createBuffer(ctx, guards_.size() * kGuardBytes,
-                                              VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Host,
-                                              cleanup));
+  RAYSPEC_TRY(const Buffer back,
+              createBuffer(ctx, guards_.size() * kGuardBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                           MemoryUse::Host, cleanup));
   RAYSPEC_TRY(const VkCommandBuffer cmd, beginCommands(ctx, cleanup));
   VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   mb.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
@@ -79,7 +79,8 @@ Result<std::vector<std::string>> MemoryGuards::check(const VulkanContext& ctx,
     }
     if (differ)
       changed.push_back(guards_[i].what + ": " + std::to_string(differ) + " of the " +
-                        std::to_string(kGuardBytes) + " guard bytes after it changed (the first at guard byte " +
+                        std::to_string(kGuardBytes) +
+                        " guard bytes after it changed (the first at guard byte " +
                         std::to_string(first) + "): written past the size the device reported");
   }
   return changed;
