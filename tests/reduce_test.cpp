@@ -199,5 +199,25 @@ TEST(ReduceSignature, SameRuleAndKind) {
   EXPECT_FALSE(failureToKeep(CaseOutcome{}, ""));                    // a pass: nothing to keep
 }
 
+// --keep R-X finds the rule among a finding's labels, and keeps it whatever
+// else a variant's label names (a reduced case claims fewer rules).
+TEST(FailureSignature, AKeptRuleIsFoundAmongTheLabels) {
+  CaseOutcome o;
+  o.verdict.add({Status::Fail, "R-FACE-DET/R-INST-XFORM", "counter 'miss' (exact)", {}, 0});
+  o.deriveFromVerdict();
+  const std::optional<FailureSignature> s = failureToKeep(o, "R-FACE-DET");
+  ASSERT_TRUE(s);
+  EXPECT_EQ(s->rule, "R-FACE-DET");
+  EXPECT_FALSE(failureToKeep(o, "R-FACE"));  // a part names a whole rule, not a prefix
+  CaseOutcome reduced;
+  reduced.verdict.add({Status::Fail, "R-FACE-DET", "per-ray field 'hit' differs", {0}, 1});
+  reduced.deriveFromVerdict();
+  EXPECT_TRUE(failsTheSameWay(reduced, *s));
+  CaseOutcome other;
+  other.verdict.add({Status::Fail, "R-INST-XFORM", "per-ray field 'hit' differs", {0}, 1});
+  other.deriveFromVerdict();
+  EXPECT_FALSE(failsTheSameWay(other, *s));
+}
+
 }  // namespace
 }  // namespace rayspec

@@ -1,5 +1,6 @@
 #include "reduce/failure_signature.h"
 
+#include <algorithm>
 #include <cctype>
 
 namespace rayspec {
@@ -20,11 +21,26 @@ FailureSignature signatureOf(const CaseOutcome& o, const Finding& f, bool any_ki
   return s;
 }
 
+// Whether a finding's rule label ("R-A/R-B") names `rule`.
+bool labelNames(const std::string& label, const std::string& rule) {
+  size_t start = 0;
+  while (start <= label.size()) {
+    const size_t end = std::min(label.find('/', start), label.size());
+    if (label.compare(start, end - start, rule) == 0) return true;
+    start = end + 1;
+  }
+  return false;
+}
+
 bool ended(Status s) {
   return s == Status::Crash || s == Status::Timeout;
 }
 
 }  // namespace
+
+bool ruleMatches(const std::string& label, const FailureSignature& s) {
+  return s.rule_among_labels ? labelNames(label, s.rule) : label == s.rule;
+}
 
 std::string findingKind(const std::string& message) {
   std::string out;
@@ -52,7 +68,12 @@ std::optional<FailureSignature> failureToKeep(const CaseOutcome& o, const std::s
   for (const Finding& f : o.verdict.findings) {
     if (f.status != Status::Fail && f.status != Status::QualityWarning) continue;
     if (keep.empty() && f.status == o.status) return signatureOf(o, f, false);
-    if (!keep.empty() && isRuleLabel(keep) && f.rule == keep) return signatureOf(o, f, true);
+    if (!keep.empty() && isRuleLabel(keep) && labelNames(f.rule, keep)) {
+      FailureSignature s = signatureOf(o, f, true);
+      s.rule = keep;
+      s.rule_among_labels = true;
+      return s;
+    }
     if (!keep.empty() && !isRuleLabel(keep) && f.message.find(keep) != std::string::npos)
       return signatureOf(o, f, false);
   }
@@ -63,7 +84,8 @@ bool failsTheSameWay(const CaseOutcome& o, const FailureSignature& s) {
   if (o.status != s.status) return false;
   if (!s.undefined_allowed && !o.verdict.undefined.empty()) return false;
   for (const Finding& f : o.verdict.findings)
-    if (f.status == s.finding && f.rule == s.rule &&
+    if (f.status == s.finding &&
+        ruleMatches(f.rule, s) &&
         (s.kind.empty() || findingKind(f.message) == s.kind))
       return true;
   return false;

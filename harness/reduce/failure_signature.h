@@ -14,10 +14,17 @@ struct FailureSignature {
   Status status = Status::Fail;    // the case's status
   Status finding = Status::Fail;   // the finding's own status
   std::string rule;                // its rule ("" for a crash or timeout)
+  // --keep R-X: `rule` is that one rule, found among a finding's labels
+  // ("R-FACE-DET/R-INST-XFORM" has R-FACE-DET), whatever else they name.
+  bool rule_among_labels = false;
   std::string kind;                // findingKind of its message ("" any)
   std::string message;             // as first seen, for the reports
   bool undefined_allowed = false;  // the original had rays of undefined behaviour too
 };
+
+// Whether a finding's rule label is the signature's rule (or, with
+// rule_among_labels, names it).
+bool ruleMatches(const std::string& label, const FailureSignature& s);
 
 // The message with every run of digits, and every list of them, replaced by '#'.
 std::string findingKind(const std::string& message);

@@ -86,7 +86,7 @@ std::string reproduction(const ReduceOptions& opt, const std::string& name) {
 std::vector<uint32_t> failingRaysOf(const CaseOutcome& o, const FailureSignature& s) {
   std::set<uint32_t> rays;
   for (const Finding& f : o.verdict.findings)
-    if (f.rule == s.rule && f.status == s.finding) rays.insert(f.rays.begin(), f.rays.end());
+    if (ruleMatches(f.rule, s) && f.status == s.finding) rays.insert(f.rays.begin(), f.rays.end());
   return {rays.begin(), rays.end()};
 }
 

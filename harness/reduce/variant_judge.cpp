@@ -9,6 +9,14 @@
 #include "base/whole_file.h"
 
 namespace rayspec {
+namespace {
+
+RunOptions withoutFault(RunOptions run) {
+  run.plant_fault.clear();
+  return run;
+}
+
+}  // namespace
 
 VariantJudge::VariantJudge(const RunOptions& run, std::string name, std::vector<std::string> labels,
                            FailureSignature signature, size_t max_attempts,
@@ -19,6 +27,8 @@ VariantJudge::VariantJudge(const RunOptions& run, std::string name, std::vector<
       signature_(std::move(signature)),
       max_attempts_(max_attempts),
       runner_(run, nullptr, nullptr),
+      clean_run_(withoutFault(run)),
+      clean_runner_(clean_run_, nullptr, nullptr),
       device_command_(std::move(device_command)) {}
 
 CaseOutcome VariantJudge::judgeByCommand(const std::string& text, const Case& c,
@@ -86,11 +96,23 @@ bool VariantJudge::fails(const std::string& text, const std::string& what) {
                         out.verdict.findings.front().rule == "case-file");
   a.ran = parsed;
   a.kept = failsTheSameWay(out, signature_);
+  std::string clean_failure;
+  if (a.kept && !run_.plant_fault.empty()) {  // the failure must be the fault's alone
+    const ParseResult again = parseCaseText(text, "reduced.yaml", name_, labels_.empty() ? nullptr : &labels_);
+    const CaseOutcome clean =
+        guardCase(again.value->name, again.value->rules,
+                  [&] { return clean_runner_.run(*again.value, &interrupted); });
+    if (isFailing(clean.status)) {
+      a.kept = false;
+      clean_failure = "fails without the fault too: " + clean.headline;
+    }
+  }
   // The headline's first finding says enough for the log.
   const std::string headline =
       out.headline.size() > 200 ? out.headline.substr(0, 200) + " ..." : out.headline;
   a.verdict = a.kept ? "kept: " + headline
-                     : (parsed ? "rejected: " : "rejected, does not parse: ") + headline;
+                     : (parsed ? "rejected: " : "rejected, does not parse: ") +
+                           (clean_failure.empty() ? headline : clean_failure.substr(0, 200));
   attempts_.push_back(a);
   seen_[text] = a.kept;
   if (a.kept) kept_[text] = out;

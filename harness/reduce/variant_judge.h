@@ -44,7 +44,8 @@ class VariantJudge {
   CaseOutcome judgeByCommand(const std::string& text, const Case& c, bool* interrupted) const;
 
  public:
-  // Whether the variant fails the same way; a text seen before is not run again.
+  // Whether the variant fails the same way (and, with a planted fault, passes
+  // without it); a text seen before is not run again.
   bool fails(const std::string& text, const std::string& what);
   const std::vector<Attempt>& attempts() const { return attempts_; }
   // No more attempts: the limit was reached or a signal stopped one.
@@ -59,6 +60,10 @@ class VariantJudge {
   FailureSignature signature_;
   size_t max_attempts_;
   CaseRunner runner_;
+  // With a planted fault: the same run without it, which a kept variant
+  // must pass (the failure must stay the fault's, not the reduced case's own).
+  RunOptions clean_run_;
+  CaseRunner clean_runner_;
   std::string device_command_;
   mutable size_t commands_run_ = 0;
   std::map<std::string, bool> seen_;
