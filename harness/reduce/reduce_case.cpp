@@ -148,7 +148,18 @@ int runReduce(const ReduceOptions& requested) {
   bool interrupted = false;
   const CaseOutcome original = probe.judge(*text, &interrupted);
   if (interrupted) return badInput("interrupted");
-  const std::optional<FailureSignature> signature = failureToKeep(original, opt.keep);
+  std::optional<FailureSignature> signature = failureToKeep(original, opt.keep);
+  if (signature && !opt.run.plant_fault.empty()) {  // the failure must be the fault's
+    RunOptions clean = opt.run;
+    clean.plant_fault.clear();
+    const CaseOutcome without = VariantJudge(clean, f->name, labels, {}, 1).judge(*text, &interrupted);
+    if (interrupted) return badInput("interrupted");
+    if (isFailing(without.status)) {
+      std::printf("%s fails without the fault %s too: %s: %s\n", f->name.c_str(),
+                  opt.run.plant_fault.c_str(), statusName(without.status), without.headline.c_str());
+      return kReduceNotFailing;
+    }
+  }
   if (!signature) {
     std::printf("%s does not fail%s to begin with: %s: %s\n", f->name.c_str(),
                 opt.keep.empty() ? "" : (" by " + opt.keep).c_str(), statusName(original.status),
