@@ -150,6 +150,7 @@ struct RepeatDependentRay {
 struct DeviceFinding {
   std::string rule;
   std::string message;
+  bool operator==(const DeviceFinding&) const = default;
 };
 
 struct Results {
@@ -201,8 +202,8 @@ struct Results {
       0;  // Case::source_hash of the case run: a saved bundle judged later must match it
 };
 
-// What a trace produced is the same: counters, records and image texels
-// (results_queries.cpp).
+// What a trace produced is the same: counters, records, image texels, the
+// compiler's rejections and what only the device shows (results_queries.cpp).
 bool sameOutput(const Results& a, const Results& b);
 // The model's ambiguous rays by launch index.
 std::map<uint32_t, const RayAmbiguity*> ambiguityByRay(const Results& model);

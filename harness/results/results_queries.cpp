@@ -4,7 +4,7 @@ namespace rayspec {
 
 bool sameOutput(const Results& a, const Results& b) {
   if (a.records != b.records || a.counters != b.counters || a.images.size() != b.images.size() ||
-      a.rejected != b.rejected)
+      a.rejected != b.rejected || a.device_findings != b.device_findings)
     return false;
   for (size_t i = 0; i < a.images.size(); ++i)
     if (a.images[i].texels != b.images[i].texels) return false;
