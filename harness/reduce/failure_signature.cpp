@@ -84,8 +84,7 @@ bool failsTheSameWay(const CaseOutcome& o, const FailureSignature& s) {
   if (o.status != s.status) return false;
   if (!s.undefined_allowed && !o.verdict.undefined.empty()) return false;
   for (const Finding& f : o.verdict.findings)
-    if (f.status == s.finding &&
-        ruleMatches(f.rule, s) &&
+    if (f.status == s.finding && ruleMatches(f.rule, s) &&
         (s.kind.empty() || findingKind(f.message) == s.kind))
       return true;
   return false;

@@ -11,9 +11,9 @@
 namespace rayspec {
 
 struct FailureSignature {
-  Status status = Status::Fail;    // the case's status
-  Status finding = Status::Fail;   // the finding's own status
-  std::string rule;                // its rule ("" for a crash or timeout)
+  Status status = Status::Fail;   // the case's status
+  Status finding = Status::Fail;  // the finding's own status
+  std::string rule;               // its rule ("" for a crash or timeout)
   // --keep R-X: `rule` is that one rule, found among a finding's labels
   // ("R-FACE-DET/R-INST-XFORM" has R-FACE-DET), whatever else they name.
   bool rule_among_labels = false;

@@ -152,11 +152,13 @@ int runReduce(const ReduceOptions& requested) {
   if (signature && !opt.run.plant_fault.empty()) {  // the failure must be the fault's
     RunOptions clean = opt.run;
     clean.plant_fault.clear();
-    const CaseOutcome without = VariantJudge(clean, f->name, labels, {}, 1).judge(*text, &interrupted);
+    const CaseOutcome without =
+        VariantJudge(clean, f->name, labels, {}, 1).judge(*text, &interrupted);
     if (interrupted) return badInput("interrupted");
     if (isFailing(without.status)) {
       std::printf("%s fails without the fault %s too: %s: %s\n", f->name.c_str(),
-                  opt.run.plant_fault.c_str(), statusName(without.status), without.headline.c_str());
+                  opt.run.plant_fault.c_str(), statusName(without.status),
+                  without.headline.c_str());
       return kReduceNotFailing;
     }
   }

@@ -98,10 +98,11 @@ bool VariantJudge::fails(const std::string& text, const std::string& what) {
   a.kept = failsTheSameWay(out, signature_);
   std::string clean_failure;
   if (a.kept && !run_.plant_fault.empty()) {  // the failure must be the fault's alone
-    const ParseResult again = parseCaseText(text, "reduced.yaml", name_, labels_.empty() ? nullptr : &labels_);
-    const CaseOutcome clean =
-        guardCase(again.value->name, again.value->rules,
-                  [&] { return clean_runner_.run(*again.value, &interrupted); });
+    const ParseResult again =
+        parseCaseText(text, "reduced.yaml", name_, labels_.empty() ? nullptr : &labels_);
+    const CaseOutcome clean = guardCase(again.value->name, again.value->rules, [&] {
+      return clean_runner_.run(*again.value, &interrupted);
+    });
     if (isFailing(clean.status)) {
       a.kept = false;
       clean_failure = "fails without the fault too: " + clean.headline;

@@ -65,6 +65,12 @@ TriangleInputs layTriangles(const Geometry& g, const AsBuild& build, LayoutFault
     misread = vertexFormatMisread(g.vertex_format).value_or(misread);
   misreadBytes(misread, encoded);
   out.vertices = spread(encoded, tight, out.stride, first, junk);
+  // As many junk vertices after them: a driver that applies firstVertex twice
+  // (lavapipe 25.0.7) reads these, not whatever memory follows, so it answers
+  // the same in every run.
+  const size_t tail = size_t{first} * out.stride;
+  out.vertices.resize(out.vertices.size() + tail);
+  junk(out.vertices.data() + out.vertices.size() - tail, tail);
   out.max_vertex = g.vertices.empty() ? 0 : first + static_cast<uint32_t>(g.vertices.size()) - 1;
   // Non-indexed, primitiveOffset moves the vertices; indexed, the indices.
   const size_t junk_bytes = offsets ? kJunkOffsetBytes : 0;
