@@ -120,6 +120,21 @@ Result<void> reductionSetup(ReduceOptions& opt, const CaseFile& f, RunInfo& info
   return {};
 }
 
+// With a planted fault: whether the case fails without it too (then the
+// failure is not the fault's, and there is nothing of it to reduce).
+bool failsWithoutTheFault(const ReduceOptions& opt, const CaseFile& f,
+                          const std::vector<std::string>& labels, const std::string& text,
+                          bool* interrupted) {
+  if (opt.run.plant_fault.empty()) return false;
+  RunOptions clean = opt.run;
+  clean.plant_fault.clear();
+  const CaseOutcome without = VariantJudge(clean, f.name, labels, {}, 1).judge(text, interrupted);
+  if (*interrupted || !isFailing(without.status)) return *interrupted;
+  std::printf("%s fails without the fault %s too: %s: %s\n", f.name.c_str(),
+              opt.run.plant_fault.c_str(), statusName(without.status), without.headline.c_str());
+  return true;
+}
+
 }  // namespace
 
 int runReduce(const ReduceOptions& requested) {
@@ -149,19 +164,8 @@ int runReduce(const ReduceOptions& requested) {
   const CaseOutcome original = probe.judge(*text, &interrupted);
   if (interrupted) return badInput("interrupted");
   std::optional<FailureSignature> signature = failureToKeep(original, opt.keep);
-  if (signature && !opt.run.plant_fault.empty()) {  // the failure must be the fault's
-    RunOptions clean = opt.run;
-    clean.plant_fault.clear();
-    const CaseOutcome without =
-        VariantJudge(clean, f->name, labels, {}, 1).judge(*text, &interrupted);
-    if (interrupted) return badInput("interrupted");
-    if (isFailing(without.status)) {
-      std::printf("%s fails without the fault %s too: %s: %s\n", f->name.c_str(),
-                  opt.run.plant_fault.c_str(), statusName(without.status),
-                  without.headline.c_str());
-      return kReduceNotFailing;
-    }
-  }
+  if (signature && failsWithoutTheFault(opt, *f, labels, *text, &interrupted))
+    return interrupted ? badInput("interrupted") : kReduceNotFailing;
   if (!signature) {
     std::printf("%s does not fail%s to begin with: %s: %s\n", f->name.c_str(),
                 opt.keep.empty() ? "" : (" by " + opt.keep).c_str(), statusName(original.status),
