@@ -7,6 +7,8 @@
 #include "case/parse_case.h"
 #include "reduce/delta_debug.h"
 #include "reduce/failure_signature.h"
+#include "reduce/number_sites.h"
+#include "reduce/operand_sites.h"
 #include "reduce/rays_to_list.h"
 #include "reduce/yaml_sites.h"
 
@@ -217,6 +219,94 @@ TEST(FailureSignature, AKeptRuleIsFoundAmongTheLabels) {
   other.verdict.add({Status::Fail, "R-INST-XFORM", "per-ray field 'hit' differs", {0}, 1});
   other.deriveFromVerdict();
   EXPECT_FALSE(failsTheSameWay(other, *s));
+}
+
+const char* const kNumberCase = R"(rules: [R-MISS-XOR-CHIT]
+scene:
+  blas:
+    grid:
+      - triangles: {grid: {cells: [8, 4], size: [2, 2], center: [0, 0, 0]}}
+    boxes:
+      - aabbs: {grid: {cells: [16, 1], size: [2, 2], center: [0, 0, 0], height: 1}}
+  instances:
+    - {blas: grid, mask: 0x0F, custom_index: 7}
+rays:
+  grid: {size: [3, 2], origin: [-1, -1, 5], du: [0.5, 0, 0], dv: [0, 0.5, 0], direction: [0, 0, -1]}
+  tmin: 0.5
+pipeline:
+  miss:
+    - [count: miss]
+  hit_groups:
+    - closest_hit:
+        - repeat: 5
+          var: i
+          do: [count: closesthit]
+        - if: {lt: [hit_t, -3]}
+          then: [count: closesthit]
+outputs:
+  counters: [miss, closesthit]
+)";
+
+std::vector<std::string> numberPaths(const YAML::Node& doc) {
+  std::vector<std::string> out;
+  for (const NumberSite& s : numberSites(doc))
+    out.push_back(pathText(s.path) + "=" + std::to_string(s.value) + " " + s.part);
+  return out;
+}
+
+TEST(ReduceNumbers, ListsGeneratorsLaunchFieldsAndStatementNumbers) {
+  const YAML::Node doc = YAML::Load(kNumberCase);
+  EXPECT_EQ(numberPaths(doc), std::vector<std::string>({
+                                  "scene.blas.grid[0].triangles.grid.cells[0]=8 generator",
+                                  "scene.blas.grid[0].triangles.grid.cells[1]=4 generator",
+                                  "scene.blas.boxes[0].aabbs.grid.cells[0]=16 generator",
+                                  "scene.blas.boxes[0].aabbs.grid.cells[1]=1 generator",
+                                  "scene.instances[0].custom_index=7 instance field",
+                                  "scene.instances[0].mask=15 instance field",
+                                  "rays.grid.size[0]=3 launch",
+                                  "rays.grid.size[1]=2 launch",
+                                  "pipeline.hit_groups[0].closest_hit[0].repeat=5 statement",
+                              }));
+  // Not numbers to lower: coordinates and fractions (size, tmin 0.5), a
+  // negative constant (-3), zero, a name.
+}
+
+TEST(ReduceNumbers, WholeNumbersAreWrittenPlainly) {
+  EXPECT_EQ(wholeNumber(YAML::Node("12")), 12u);
+  EXPECT_EQ(wholeNumber(YAML::Node("0xFF")), 255u);
+  EXPECT_EQ(wholeNumber(YAML::Node("0")), 0u);
+  for (const char* no :
+       {"-1", "1.5", "1e3", "012", "0x", "12a", "miss", "", "99999999999999999999"})
+    EXPECT_FALSE(wholeNumber(YAML::Node(no))) << no;
+  EXPECT_FALSE(wholeNumber(YAML::Load("[1, 2]")));
+}
+
+TEST(ReduceNumbers, ALoweredGeneratorStillParses) {
+  const YAML::Node doc = YAML::Load(kNumberCase);
+  const std::vector<NumberSite> sites = numberSites(doc);
+  ASSERT_FALSE(sites.empty());
+  const YAML::Node lower = replacedAt(doc, sites[0].path, YAML::Node(uint64_t{1}));
+  const ParseResult parsed = parseCaseText(emitYaml(lower), "n.yaml", "reduce/n");
+  ASSERT_TRUE(parsed.value) << emitYaml(lower);
+  EXPECT_EQ(parsed.value->scene.blases[0].geometries[0].primitiveCount(), 2u * 4u);  // 1 x 4 cells
+}
+
+TEST(ReduceOperands, OperatorsOuterFirstWithTheirOperands) {
+  const YAML::Node doc = YAML::Load(R"(pipeline:
+  raygen:
+    - let: {a: {add: [{mod: [launch_id_x, 3]}, 1]}, b: {x: launch_id}}
+    - record: [a]
+)");
+  const std::vector<OperandSite> sites = operandSites(doc);
+  ASSERT_EQ(sites.size(), 3u);
+  EXPECT_EQ(pathText(sites[0].path), "pipeline.raygen[0].let.a");
+  EXPECT_EQ(sites[0].operands, 2u);
+  EXPECT_EQ(pathText(sites[1].path), "pipeline.raygen[0].let.a.add[0]");
+  EXPECT_EQ(emitYaml(operandOf(doc, sites[1], 0)), "launch_id_x\n");
+  EXPECT_EQ(pathText(sites[2].path), "pipeline.raygen[0].let.b");  // one operand, no list
+  EXPECT_EQ(sites[2].operands, 1u);
+  EXPECT_EQ(emitYaml(operandOf(doc, sites[2], 0)), "launch_id\n");
+  // `let` and `record` are statements, not operators.
 }
 
 }  // namespace

@@ -206,6 +206,17 @@ limits() {
   inside sh -c "cd $WORK/pack && LD_LIBRARY_PATH=lib VK_LAYER_PATH=layer ./rayspec devices --check-limits --icd $ICD --baseline limits-baseline.csv"
 }
 
+# One command at a time uses the environment: its pack, work folders and
+# mounts are shared, so a second command (CI's second-driver test while a
+# reduction runs variants) waits for the first. No lock where it cannot be
+# made (no root: every such command stops at its own check).
+lock_environment() {
+  mkdir -p "$(dirname "$ENV_DIR")" 2>/dev/null || return 0
+  { exec 9>>"$ENV_DIR.lock"; } 2>/dev/null || return 0
+  flock 9
+}
+
+[[ ${1:-} == compare ]] || lock_environment
 case ${1:-} in
   prepare) prepare ;;
   limits) shift; limits "$@" ;;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <set>
 
 namespace rayspec {
 namespace {
@@ -88,6 +89,13 @@ bool failsTheSameWay(const CaseOutcome& o, const FailureSignature& s) {
         (s.kind.empty() || findingKind(f.message) == s.kind))
       return true;
   return false;
+}
+
+std::vector<uint32_t> failingRays(const CaseOutcome& o, const FailureSignature& s) {
+  std::set<uint32_t> rays;
+  for (const Finding& f : o.verdict.findings)
+    if (ruleMatches(f.rule, s) && f.status == s.finding) rays.insert(f.rays.begin(), f.rays.end());
+  return {rays.begin(), rays.end()};
 }
 
 }  // namespace rayspec

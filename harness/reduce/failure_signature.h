@@ -3,8 +3,10 @@
 // taken out: "per-ray field 'hit' differs ...", "miss: device #, model #").
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "report/case_outcome.h"
 
@@ -38,5 +40,8 @@ std::optional<FailureSignature> failureToKeep(const CaseOutcome& o, const std::s
 
 // Whether `o` fails the way `s` says.
 bool failsTheSameWay(const CaseOutcome& o, const FailureSignature& s);
+
+// The rays of o's findings that fail the way `s` says, ascending.
+std::vector<uint32_t> failingRays(const CaseOutcome& o, const FailureSignature& s);
 
 }  // namespace rayspec

@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <set>
 #include <sstream>
 
 #include "base/whole_file.h"
@@ -83,13 +82,6 @@ std::string reproduction(const ReduceOptions& opt, const std::string& name) {
   return c;
 }
 
-std::vector<uint32_t> failingRaysOf(const CaseOutcome& o, const FailureSignature& s) {
-  std::set<uint32_t> rays;
-  for (const Finding& f : o.verdict.findings)
-    if (ruleMatches(f.rule, s) && f.status == s.finding) rays.insert(f.rays.begin(), f.rays.end());
-  return {rays.begin(), rays.end()};
-}
-
 // The titles of a finding's rules ("R-A/R-B": each), from the catalog.
 std::string ruleTitle(const std::vector<Rule>& catalog, const std::string& labels) {
   std::string out;
@@ -135,6 +127,18 @@ bool failsWithoutTheFault(const ReduceOptions& opt, const CaseFile& f,
   return true;
 }
 
+// The device and driver manifest the report names: this process's, or what
+// the device command's runs said they ran on.
+void nameTheDevice(ReductionRecord& r, const RunInfo& info, const VariantJudge& judge,
+                   const std::string& device_command) {
+  r.device = info.device;
+  r.icd = info.icd;
+  if (const VariantJudge::CommandDevice ran = judge.commandDevice(); !ran.device.empty()) {
+    r.device = ran.device + ", run by `" + device_command + "`";
+    r.icd = ran.icd;
+  }
+}
+
 }  // namespace
 
 int runReduce(const ReduceOptions& requested) {
@@ -177,7 +181,7 @@ int runReduce(const ReduceOptions& requested) {
               signature->message.c_str());
   VariantJudge judge(opt.run, f->name, labels, *signature, opt.max_attempts, opt.device_command);
   YAML::Node reduced =
-      reduceDocument(*doc, *parsed.value, failingRaysOf(original, *signature), judge);
+      reduceDocument(*doc, *parsed.value, failingRays(original, *signature), judge);
 
   ReductionRecord r;
   r.case_name = f->name;
@@ -188,8 +192,7 @@ int runReduce(const ReduceOptions& requested) {
   r.before = caseSize(*parsed.value);
   const ParseResult after = parseCaseText(emitYaml(reduced), "reduced.yaml", f->name, &labels);
   r.after = after.value ? caseSize(*after.value) : r.before;
-  r.device = info.device;
-  r.icd = info.icd;
+  nameTheDevice(r, info, judge, opt.device_command);
   r.fault = opt.run.plant_fault;
   r.rule_title = ruleTitle(*catalog, signature->rule);
   r.command = reproduction(opt, f->name);

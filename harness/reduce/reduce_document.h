@@ -1,7 +1,10 @@
 // The reduction of a case's document: the launch turned into a list of its
-// failing rays, generated meshes written out, then delta debugging over every
-// site (reduce/yaml_sites.h) in turn, pass after pass until a pass removes
-// nothing; indexed triangles lose the vertices no index names.
+// failing rays; the sizes lowered (a generator's cells, the launch: every
+// later variant builds and traces less) and the launch listed again;
+// generated meshes written out; then pass after pass until one changes
+// nothing: delta debugging over every site (reduce/yaml_sites.h) in turn,
+// unused vertices dropped, operators replaced by an operand
+// (reduce/operand_sites.h), every whole number lowered (reduce/number_sites.h).
 #pragma once
 
 #include <yaml-cpp/yaml.h>

@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 
 #include "base/whole_file.h"
+#include "report/outcome_json.h"
 
 namespace rayspec {
 namespace {
@@ -52,6 +53,8 @@ CaseOutcome VariantJudge::judgeByCommand(const std::string& text, const Case& c,
     *interrupted = true;
     return caseErrorOutcome(name_, c.rules, "harness", "the device command was stopped");
   }
+  if (Result<SavedRun> ran = readSavedRun(device.string()); ran)
+    last_device_ = {ran->info.device, ran->info.icd};
   RunOptions saved = run_;
   saved.device_results = device.string();
   saved.out = (dir / "judged").string();
@@ -59,18 +62,36 @@ CaseOutcome VariantJudge::judgeByCommand(const std::string& text, const Case& c,
   return guardCase(c.name, c.rules, [&] { return runner.run(c, interrupted); });
 }
 
-CaseOutcome VariantJudge::judge(const std::string& text, bool* interrupted) const {
-  *interrupted = false;
-  const ParseResult parsed =
+ParseResult VariantJudge::parse(const std::string& text, CaseOutcome* error) const {
+  ParseResult parsed =
       parseCaseText(text, "reduced.yaml", name_, labels_.empty() ? nullptr : &labels_);
-  if (!parsed.value || !parsed.errors.empty()) {
+  if ((!parsed.value || !parsed.errors.empty()) && error) {
     std::string message = parsed.errors.empty() ? "cannot read the case" : "";
     for (const Error& e : parsed.errors) message += (message.empty() ? "" : "; ") + e.format();
-    return caseErrorOutcome(name_, {}, "case-file", message);
+    *error = caseErrorOutcome(name_, {}, "case-file", message);
   }
-  const Case& c = *parsed.value;
+  return parsed;
+}
+
+CaseOutcome VariantJudge::judgeParsed(const std::string& text, const Case& c,
+                                      bool* interrupted) const {
   if (!device_command_.empty()) return judgeByCommand(text, c, interrupted);
   return guardCase(c.name, c.rules, [&] { return runner_.run(c, interrupted); });
+}
+
+CaseOutcome VariantJudge::judge(const std::string& text, bool* interrupted) const {
+  *interrupted = false;
+  CaseOutcome error;
+  const ParseResult parsed = parse(text, &error);
+  if (!parsed.value || !parsed.errors.empty()) return error;
+  return judgeParsed(text, *parsed.value, interrupted);
+}
+
+std::string VariantJudge::failureWithoutTheFault(const Case& c, bool* interrupted) const {
+  if (run_.plant_fault.empty()) return "";
+  const CaseOutcome clean =
+      guardCase(c.name, c.rules, [&] { return clean_runner_.run(c, interrupted); });
+  return isFailing(clean.status) ? "fails without the fault too: " + clean.headline : "";
 }
 
 bool VariantJudge::fails(const std::string& text, const std::string& what) {
@@ -82,31 +103,24 @@ bool VariantJudge::fails(const std::string& text, const std::string& what) {
   }
   const auto start = std::chrono::steady_clock::now();
   bool interrupted = false;
-  const CaseOutcome out = judge(text, &interrupted);
+  CaseOutcome out;
+  const ParseResult parsed_case = parse(text, &out);
+  const bool parsed = parsed_case.value && parsed_case.errors.empty();
+  if (parsed) out = judgeParsed(text, *parsed_case.value, &interrupted);
   Attempt a;
   a.what = what;
+  a.ran = parsed;
+  a.kept = !interrupted && failsTheSameWay(out, signature_);
+  // With a planted fault, the failure must be the fault's alone.
+  const std::string clean_failure =
+      a.kept ? failureWithoutTheFault(*parsed_case.value, &interrupted) : "";
+  a.kept = a.kept && clean_failure.empty();
   a.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (interrupted) {
     stopped_ = true;
     a.verdict = "interrupted";
     attempts_.push_back(a);
     return false;
-  }
-  const bool parsed = !(out.status == Status::CaseError && !out.verdict.findings.empty() &&
-                        out.verdict.findings.front().rule == "case-file");
-  a.ran = parsed;
-  a.kept = failsTheSameWay(out, signature_);
-  std::string clean_failure;
-  if (a.kept && !run_.plant_fault.empty()) {  // the failure must be the fault's alone
-    const ParseResult again =
-        parseCaseText(text, "reduced.yaml", name_, labels_.empty() ? nullptr : &labels_);
-    const CaseOutcome clean = guardCase(again.value->name, again.value->rules, [&] {
-      return clean_runner_.run(*again.value, &interrupted);
-    });
-    if (isFailing(clean.status)) {
-      a.kept = false;
-      clean_failure = "fails without the fault too: " + clean.headline;
-    }
   }
   // The headline's first finding says enough for the log.
   const std::string headline =
@@ -116,7 +130,10 @@ bool VariantJudge::fails(const std::string& text, const std::string& what) {
                            (clean_failure.empty() ? headline : clean_failure.substr(0, 200));
   attempts_.push_back(a);
   seen_[text] = a.kept;
-  if (a.kept) kept_[text] = out;
+  if (a.kept) {
+    kept_[text] = out;
+    kept_device_ = last_device_;
+  }
   return a.kept;
 }
 

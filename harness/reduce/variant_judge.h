@@ -39,9 +39,18 @@ class VariantJudge {
   // not parse). *interrupted: a signal stopped it.
   CaseOutcome judge(const std::string& text, bool* interrupted) const;
 
+  // The variant parsed by the case parser; where it does not parse and
+  // error is given, *error is the CaseError outcome that says why.
+  ParseResult parse(const std::string& text, CaseOutcome* error = nullptr) const;
+  const FailureSignature& signature() const { return signature_; }
+
  private:
+  // The parsed variant (its text for a device command) run and judged.
+  CaseOutcome judgeParsed(const std::string& text, const Case& c, bool* interrupted) const;
   // The device side by the device command, then the case judged from what it left.
   CaseOutcome judgeByCommand(const std::string& text, const Case& c, bool* interrupted) const;
+  // With a planted fault: why the parsed variant fails without it too ("": it does not).
+  std::string failureWithoutTheFault(const Case& c, bool* interrupted) const;
 
  public:
   // Whether the variant fails the same way (and, with a planted fault, passes
@@ -52,6 +61,15 @@ class VariantJudge {
   bool stopped() const { return stopped_; }
   // The outcome of a kept text (nullptr: none).
   const CaseOutcome* keptOutcome(const std::string& text) const;
+  // With a device command: the device and driver manifest its run of the
+  // last kept variant (or, none kept, of the last variant) says it ran on
+  // (empty: none said).
+  struct CommandDevice {
+    std::string device, icd;
+  };
+  CommandDevice commandDevice() const {
+    return kept_device_.device.empty() ? last_device_ : kept_device_;
+  }
 
  private:
   const RunOptions& run_;
@@ -66,6 +84,8 @@ class VariantJudge {
   CaseRunner clean_runner_;
   std::string device_command_;
   mutable size_t commands_run_ = 0;
+  mutable CommandDevice last_device_;
+  CommandDevice kept_device_;
   std::map<std::string, bool> seen_;
   std::map<std::string, CaseOutcome> kept_;
   std::vector<Attempt> attempts_;

@@ -25,16 +25,6 @@ bool present(const YAML::Node& n) {
   return n.IsDefined() && !n.IsNull();
 }
 
-YamlPath plus(YamlPath p, const std::string& key) {
-  p.push_back({false, 0, key});
-  return p;
-}
-
-YamlPath plus(YamlPath p, size_t index) {
-  p.push_back({true, index, ""});
-  return p;
-}
-
 bool isNumber(const YAML::Node& n) {
   if (!n.IsScalar() || n.Scalar().empty()) return false;
   const unsigned char c = static_cast<unsigned char>(n.Scalar()[0]);
@@ -123,6 +113,16 @@ void keySites(std::vector<Site>& sites, const YAML::Node& root) {
 }
 
 }  // namespace
+
+YamlPath plus(YamlPath p, const std::string& key) {
+  p.push_back({false, 0, key});
+  return p;
+}
+
+YamlPath plus(YamlPath p, size_t index) {
+  p.push_back({true, index, ""});
+  return p;
+}
 
 std::string pathText(const YamlPath& path) {
   std::string out;

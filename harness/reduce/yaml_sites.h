@@ -21,6 +21,10 @@ struct PathStep {
 };
 using YamlPath = std::vector<PathStep>;
 
+// The path one step further: to a map's key, or a list's element.
+YamlPath plus(YamlPath p, const std::string& key);
+YamlPath plus(YamlPath p, size_t index);
+
 // "scene.blas.tri[0].triangles.vertices"
 std::string pathText(const YamlPath& path);
 

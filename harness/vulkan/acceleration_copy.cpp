@@ -5,6 +5,7 @@
 #include "base/align.h"
 
 #include "vulkan/acceleration_structure.h"
+#include "vulkan/build_batch.h"
 #include "vulkan/commands.h"
 #include "vulkan/memory.h"
 #include "vulkan/vk_check.h"
@@ -132,11 +133,8 @@ Result<Serialized> serialize(const VulkanContext& ctx, const std::vector<BuiltSt
   }
   // The serialized bytes, written as transfers in the build stage, read by
   // the host.
-  VkMemoryBarrier to_host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  to_host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-  to_host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-                       VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &to_host, 0, nullptr, 0, nullptr);
+  recordMemoryBarrier(cmd, {kBuildStage, VK_ACCESS_TRANSFER_WRITE_BIT},
+                      {VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT});
   RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd));
   for (size_t i = 0; i < from.size(); ++i) {
     const auto* data = static_cast<const uint8_t*>(s.memory.mapped) + s.offsets[i];

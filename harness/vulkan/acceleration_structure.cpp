@@ -8,6 +8,7 @@
 
 #include "case/flag_names.h"
 #include "vulkan/acceleration_copy.h"
+#include "vulkan/build_batch.h"
 #include "vulkan/build_layout.h"
 #include "vulkan/commands.h"
 #include "vulkan/memory.h"
@@ -49,28 +50,7 @@ VkFormat vkVertexFormat(VertexFormat f) {
   return VK_FORMAT_R32G32B32_SFLOAT;
 }
 
-void recordStructureBarrier(VkCommandBuffer cmd, VkPipelineStageFlags dst_stage) {
-  VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  mb.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
-  mb.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, dst_stage, 0, 1,
-                       &mb, 0, nullptr, 0, nullptr);
-}
-
 namespace {
-
-// Between two builds sharing scratch memory: the first's scratch writes
-// before the next one's reads and writes (scratch is accessed as
-// ACCELERATION_STRUCTURE_READ/WRITE at the build stage).
-void recordScratchBarrier(VkCommandBuffer cmd) {
-  VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  mb.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
-  mb.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR |
-                     VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-                       VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, 0, 1, &mb, 0,
-                       nullptr, 0, nullptr);
-}
 
 constexpr VkBufferUsageFlags kInputUsage =
     VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
@@ -181,140 +161,6 @@ VkAccelerationStructureBuildGeometryInfoKHR buildInfo(
   info.geometryCount = static_cast<uint32_t>(geos.size());
   info.pGeometries = geos.data();
   return info;
-}
-
-// The builds of one command buffer and their places in one scratch buffer,
-// each region followed by room for its guard (R-AS-MEMORY).
-struct ScratchPlan {
-  VkDeviceSize align = 0;
-  VkDeviceSize total = 0;
-  bool shared = false;  // scene.build.one_by_one: every build at offset 0, one after another
-  struct Region {
-    VkDeviceSize offset, size;
-    std::string what;
-  };
-  std::vector<Region> regions;  // not shared: each build's; shared: the largest
-  VkDeviceSize add(VkDeviceSize size, const std::string& what) {
-    if (shared) {
-      if (regions.empty() || size > regions.front().size) regions = {{0, size, what}};
-      total = std::max(total, guardedSize(size));
-      return 0;
-    }
-    total = alignUp(total, align);
-    const VkDeviceSize at = total;
-    regions.push_back({at, size, what});
-    total += guardedSize(size);
-    return at;
-  }
-};
-
-// Builds (or updates) of one level recorded in one vkCmdBuildAccelerationStructuresKHR
-// (or one each: scene.build.one_by_one), each with its scratch offset, and
-// each structure's size and build and update scratch sizes.
-struct Builds {
-  std::vector<VkAccelerationStructureBuildGeometryInfoKHR> infos;
-  std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
-  std::vector<VkDeviceSize> scratch_offsets, update_scratch, build_scratch;
-  std::vector<VkDeviceSize> sizes;  // each structure's accelerationStructureSize
-  std::vector<size_t> blas;         // BLAS builds: the scene's BLAS index of each
-  std::vector<std::string> names;   // "BLAS 2", "TLAS 0": what the guards call each
-  // scene.build.command indirect: where the device reads each build's ranges
-  // (vkCmdBuildAccelerationStructuresIndirectKHR), their stride, and each
-  // build's most primitives per geometry (its ranges' counts).
-  std::vector<VkDeviceAddress> indirect_ranges;
-  std::vector<uint32_t> indirect_strides;
-  std::vector<std::vector<uint32_t>> max_counts;
-  std::vector<const uint32_t*> max_count_lists;
-
-  void add(const VkAccelerationStructureBuildGeometryInfoKHR& info,
-           const VkAccelerationStructureBuildRangeInfoKHR* range, VkDeviceSize scratch_offset) {
-    infos.push_back(info);
-    ranges.push_back(range);
-    scratch_offsets.push_back(scratch_offset);
-  }
-  void placeScratch(VkDeviceAddress base) {
-    for (size_t i = 0; i < infos.size(); ++i)
-      infos[i].scratchData.deviceAddress = base + scratch_offsets[i];
-  }
-  // All in one command, or (one_by_one) each in its own, the scratch they
-  // share written by one and then by the next behind a barrier.
-  void record(const VulkanContext& ctx, VkCommandBuffer cmd, VkPipelineStageFlags next,
-              bool one_by_one) const {
-    if (infos.empty()) return;
-    if (!one_by_one) {
-      recordBuilds(ctx, cmd, 0, infos.size());
-    } else {
-      for (size_t i = 0; i < infos.size(); ++i) {
-        recordScratchBarrier(cmd);  // after the build before it, of this level or another
-        recordBuilds(ctx, cmd, i, 1);
-      }
-    }
-    recordStructureBarrier(cmd, next);
-  }
-  // Builds [first, first + count) in one command, direct or indirect.
-  void recordBuilds(const VulkanContext& ctx, VkCommandBuffer cmd, size_t first,
-                    size_t count) const {
-    const uint32_t n = static_cast<uint32_t>(count);
-    if (indirect_ranges.empty())
-      ctx.fn.cmdBuildAccelerationStructures(cmd, n, &infos[first], &ranges[first]);
-    else
-      ctx.fn.cmdBuildAccelerationStructuresIndirect(cmd, n, &infos[first], &indirect_ranges[first],
-                                                    &indirect_strides[first],
-                                                    &max_count_lists[first]);
-  }
-  // scene.build.command indirect: every build's ranges copied into one
-  // buffer the device reads them from.
-  Result<void> placeRangesForIndirect(const VulkanContext& ctx, Cleanup& cleanup) {
-    std::vector<VkAccelerationStructureBuildRangeInfoKHR> all;
-    std::vector<size_t> starts;
-    max_counts.assign(infos.size(), {});
-    for (size_t i = 0; i < infos.size(); ++i) {
-      starts.push_back(all.size());
-      for (uint32_t g = 0; g < infos[i].geometryCount; ++g) {
-        all.push_back(ranges[i][g]);
-        max_counts[i].push_back(ranges[i][g].primitiveCount);
-      }
-    }
-    if (infos.empty()) return {};
-    constexpr VkDeviceSize kRange = sizeof(VkAccelerationStructureBuildRangeInfoKHR);
-    RAYSPEC_TRY(const Buffer buffer,
-                createUploadBuffer(
-                    ctx, all.data(), all.size() * kRange,
-                    VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-                    cleanup));
-    for (size_t i = 0; i < infos.size(); ++i) {
-      indirect_ranges.push_back(buffer.address + starts[i] * kRange);
-      indirect_strides.push_back(static_cast<uint32_t>(kRange));
-      max_count_lists.push_back(max_counts[i].data());
-    }
-    return {};
-  }
-};
-
-// The same builds in UPDATE mode (R-AS-UPDATE): each structure updated in
-// place from `geometries[i]` (which must outlive the result).
-// rebuild (scene.build.tlas_update rebuild, top levels only): built anew
-// from the new state's inputs instead (MODE_BUILD, no source).
-Builds updatesOf(
-    const Builds& built,
-    const std::vector<const std::vector<VkAccelerationStructureGeometryKHR>*>& geometries,
-    const std::vector<const VkAccelerationStructureBuildRangeInfoKHR*>& ranges,
-    ScratchPlan& scratch, bool rebuild = false) {
-  Builds out;
-  for (size_t i = 0; i < built.infos.size(); ++i) {
-    VkAccelerationStructureBuildGeometryInfoKHR info = built.infos[i];
-    info.mode = rebuild ? VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR
-                        : VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR;
-    info.srcAccelerationStructure = rebuild ? VK_NULL_HANDLE : info.dstAccelerationStructure;
-    info.pGeometries = geometries[i]->data();
-    const std::string what = (rebuild ? "the rebuild scratch of " : "the update scratch of ") +
-                             built.names[i] +
-                             (rebuild ? " (buildScratchSize " : " (updateScratchSize ");
-    const VkDeviceSize size = rebuild ? built.build_scratch[i] : built.update_scratch[i];
-    out.add(info, ranges[i], scratch.add(size, what + std::to_string(size) + " bytes)"));
-    out.names.push_back(built.names[i]);
-  }
-  return out;
 }
 
 VkDeviceAddress structureAddress(const VulkanContext& ctx, VkAccelerationStructureKHR as) {
@@ -476,22 +322,6 @@ Result<std::vector<VkAccelerationStructureKHR>> updateIntoOthers(
       current[i] = into;
     }
   return current;
-}
-
-// One scratch buffer for every build; its address aligned up to the
-// scratch alignment, each region's guard added. Returns that aligned address.
-Result<VkDeviceAddress> createScratch(const VulkanContext& ctx, const ScratchPlan& scratch,
-                                      MemoryGuards& guards, Cleanup& cleanup) {
-  RAYSPEC_TRY(
-      const Buffer buffer,
-      createBuffer(ctx, scratch.total + scratch.align,
-                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
-                       VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                   MemoryUse::Device, cleanup));
-  const VkDeviceAddress base = alignUp(buffer.address, scratch.align);
-  for (const ScratchPlan::Region& r : scratch.regions)
-    guards.add(buffer.buffer, base - buffer.address + r.offset, r.size, r.what);
-  return base;
 }
 
 // The builds of one scene: BLASes, their updates and copy in the order of

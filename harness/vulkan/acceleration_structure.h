@@ -39,7 +39,4 @@ Result<VkAccelerationStructureKHR> createStructure(const VulkanContext& ctx,
                                                    VkDeviceSize size, Cleanup& cleanup,
                                                    MemoryGuards& guards, const std::string& what);
 
-// Acceleration structure writes -> reads by dst_stage.
-void recordStructureBarrier(VkCommandBuffer cmd, VkPipelineStageFlags dst_stage);
-
 }  // namespace rayspec

@@ -52,4 +52,11 @@ Result<void> submitAndWait(const VulkanContext& ctx, VkCommandBuffer cmd) {
   return {};
 }
 
+void recordMemoryBarrier(VkCommandBuffer cmd, StageAccess src, StageAccess dst) {
+  VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  mb.srcAccessMask = src.access;
+  mb.dstAccessMask = dst.access;
+  vkCmdPipelineBarrier(cmd, src.stages, dst.stages, 0, 1, &mb, 0, nullptr, 0, nullptr);
+}
+
 }  // namespace rayspec

@@ -15,4 +15,15 @@ Result<VkCommandBuffer> beginCommands(const VulkanContext& ctx, Cleanup& cleanup
 // not finish in time).
 Result<void> submitAndWait(const VulkanContext& ctx, VkCommandBuffer cmd);
 
+// The stage of acceleration structure builds, updates and copies.
+constexpr VkPipelineStageFlags kBuildStage = VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR;
+
+// One global memory barrier: the src stages' src accesses made available to,
+// and visible for, the dst stages' dst accesses.
+struct StageAccess {
+  VkPipelineStageFlags stages;
+  VkAccessFlags access;
+};
+void recordMemoryBarrier(VkCommandBuffer cmd, StageAccess src, StageAccess dst);
+
 }  // namespace rayspec

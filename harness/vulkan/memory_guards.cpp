@@ -25,22 +25,15 @@ void MemoryGuards::recordFill(VkCommandBuffer cmd) {
   for (; filled_ < guards_.size(); ++filled_)
     vkCmdFillBuffer(cmd, guards_[filled_].buffer, guards_[filled_].offset, kGuardBytes,
                     kGuardPattern);
-  VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  mb.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-  mb.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR |
-                     VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                       VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, 0, 1, &mb, 0,
-                       nullptr, 0, nullptr);
+  recordMemoryBarrier(cmd, {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
+                      {kBuildStage, VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR |
+                                        VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR});
 }
 
 void MemoryGuards::recordOverrun(VkCommandBuffer cmd) const {
   if (guards_.empty()) return;
-  VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  mb.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
-  mb.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-                       VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &mb, 0, nullptr, 0, nullptr);
+  recordMemoryBarrier(cmd, {kBuildStage, VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR},
+                      {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT});
   vkCmdFillBuffer(cmd, guards_.front().buffer, guards_.front().offset, 4, 0);
 }
 
@@ -52,20 +45,14 @@ Result<std::vector<std::string>> MemoryGuards::check(const VulkanContext& ctx,
               createBuffer(ctx, guards_.size() * kGuardBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                            MemoryUse::Host, cleanup));
   RAYSPEC_TRY(const VkCommandBuffer cmd, beginCommands(ctx, cleanup));
-  VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  mb.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
-  mb.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
-                       1, &mb, 0, nullptr, 0, nullptr);
+  recordMemoryBarrier(cmd, {VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_WRITE_BIT},
+                      {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT});
   for (size_t i = 0; i < guards_.size(); ++i) {
     const VkBufferCopy region{guards_[i].offset, i * kGuardBytes, kGuardBytes};
     vkCmdCopyBuffer(cmd, guards_[i].buffer, back.buffer, 1, &region);
   }
-  VkMemoryBarrier host{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  host.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-  host.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &host,
-                       0, nullptr, 0, nullptr);
+  recordMemoryBarrier(cmd, {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
+                      {VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT});
   RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd));
   const auto* bytes = static_cast<const uint8_t*>(back.mapped);
   uint8_t pattern[4];

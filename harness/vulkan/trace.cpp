@@ -1,6 +1,7 @@
 #include "vulkan/trace.h"
 
 #include "glsl/emit_compute.h"
+#include "vulkan/commands.h"
 #include "vulkan/vk_check.h"
 
 namespace rayspec {
@@ -113,12 +114,9 @@ void recordDispatch(VkCommandBuffer cmd, const TraceBinding& bound, const Rays& 
 
 void recordReadback(VkCommandBuffer cmd, const std::vector<StorageImage>& images,
                     const std::vector<Buffer>& image_buffers, uint32_t width, uint32_t height) {
-  VkMemoryBarrier after_trace{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  after_trace.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-  after_trace.dstAccessMask = VK_ACCESS_HOST_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT;
-  vkCmdPipelineBarrier(cmd, kShaderStages,
-                       VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1,
-                       &after_trace, 0, nullptr, 0, nullptr);
+  recordMemoryBarrier(cmd, {kShaderStages, VK_ACCESS_SHADER_WRITE_BIT},
+                      {VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_ACCESS_HOST_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT});
   if (images.empty()) return;
   for (size_t i = 0; i < images.size(); ++i) {
     VkBufferImageCopy copy{};
@@ -127,11 +125,8 @@ void recordReadback(VkCommandBuffer cmd, const std::vector<StorageImage>& images
     vkCmdCopyImageToBuffer(cmd, images[i].image, VK_IMAGE_LAYOUT_GENERAL, image_buffers[i].buffer,
                            1, &copy);
   }
-  VkMemoryBarrier after_copy{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  after_copy.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-  after_copy.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
-                       &after_copy, 0, nullptr, 0, nullptr);
+  recordMemoryBarrier(cmd, {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
+                      {VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT});
 }
 
 }  // namespace rayspec
