@@ -2,6 +2,7 @@
 // planted fault, reduced; the reduced case must still fail with the fault,
 // pass without it, and be smaller. Exit 1 for a case that does not fail, 2
 // for a file that is not there.
+#include <fstream>
 #include <regex>
 
 #include "cli_helpers.h"
@@ -70,6 +71,57 @@ TEST(Reduce, ADeviceCommandRunsEachVariantsDeviceSide) {
   // Every variant's device side ran through the command, none here.
   EXPECT_TRUE(std::filesystem::exists(dir + "/out/runs/variant-1/device"));
   EXPECT_TRUE(std::filesystem::exists(dir + "/out/cases/accel/layouts-triangles.yaml"));
+}
+
+// Sizes, numbers and operators: a generated 4 x 4 grid, a 4 x 4 launch and a
+// loop of six trips, with a fault that runs every loop one trip more. The
+// reduction lowers the grid to one cell, lists one ray, lowers the trip
+// count to 0 and takes the `mul` by 1 away; the result still fails with the
+// fault and passes without it.
+TEST(Reduce, SizesNumbersAndOperatorsGoDown) {
+  const std::string dir = cli::fresh("reduce-numbers");
+  const std::string input = dir + "/loop.yaml";
+  std::ofstream(input) << R"(rules: [R-CONTROL-FLOW]
+scene:
+  blas:
+    grid:
+      - triangles: {grid: {cells: [4, 4], size: [2, 2], center: [0, 0, 0]}}
+  instances:
+    - {blas: grid}
+rays:
+  grid: {size: [4, 4], origin: [-0.95, -0.9, 5], du: [0.5, 0, 0], dv: [0, 0.5, 0], direction: [0, 0, -1]}
+pipeline:
+  miss:
+    - [count: miss]
+  hit_groups:
+    - closest_hit:
+        - let: {n: 0}
+        - repeat: 6
+          var: i
+          do: [set: {n: {add: [{mul: [var.n, 1]}, 1]}}]
+        - record: {value: var.n}
+outputs:
+  counters: [miss]
+  per_ray: [value]
+)";
+  const std::string log = dir + "/reduce.log";
+  ASSERT_EQ(
+      sh(kBin + " reduce " + input + " --plant-fault loop-trip-off-by-one --out " + dir + "/out",
+         log),
+      0)
+      << slurp(log);
+  EXPECT_NE(slurp(log).find("rays 16 -> 1,"), std::string::npos) << slurp(log);
+  const std::string reduced = slurp(dir + "/out/reduced.yaml");
+  EXPECT_NE(reduced.find("repeat: 0"), std::string::npos) << reduced;
+  EXPECT_EQ(reduced.find("mul:"), std::string::npos) << reduced;
+  EXPECT_EQ(reduced.find("cells: [4, 4]"), std::string::npos) << reduced;
+  const std::string steps = slurp(dir + "/out/steps.txt");
+  EXPECT_NE(steps.find("cells[0] (generator): 4 -> 1"), std::string::npos) << steps;
+  EXPECT_NE(steps.find("(operator): its operand 0"), std::string::npos) << steps;
+  const std::string run = kBin + " run --case " + dir + "/out/reduced.yaml --out " + dir;
+  EXPECT_EQ(sh(run + "/with --plant-fault loop-trip-off-by-one", dir + "/with.log"), 1)
+      << slurp(dir + "/with.log");
+  EXPECT_EQ(sh(run + "/without", dir + "/without.log"), 0) << slurp(dir + "/without.log");
 }
 
 TEST(Reduce, ACaseThatPassesIsNotReduced) {
