@@ -150,6 +150,32 @@ TEST(ReduceSites, KeysGoToTheirDefaults) {
   EXPECT_EQ(parsed.value->scene.instances[0].mask, 0xFFu);
 }
 
+TEST(ReduceSites, FlagsAndBuildOptionsMayGo) {
+  const YAML::Node doc = YAML::Load(R"(scene:
+  blas:
+    tri:
+      - triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}
+        flags: [opaque, no_duplicate_any_hit]
+  build: {flags: [allow_update, prefer_fast_build], copy: compact}
+  instances:
+    - {blas: tri, flags: [force_opaque]}
+rays:
+  flags: [opaque, cull_back_facing]
+  list:
+    - {origin: [0, 0, 1], direction: [0, 0, -1], flags: [skip_aabbs]}
+)");
+  const std::vector<Site> sites = reductionSites(doc);
+  for (const char* path : {"rays.flags", "rays.list[0].flags", "scene.instances[0].flags",
+                           "scene.blas.tri[0].flags", "scene.build.flags"}) {
+    const Site* s = findSite(sites, path);
+    ASSERT_NE(s, nullptr) << path;
+    EXPECT_EQ(s->part, "flags");
+  }
+  const Site* build = findSite(sites, "scene.build");
+  ASSERT_NE(build, nullptr);
+  EXPECT_EQ(build->keys, std::vector<std::string>({"flags", "copy"}));
+}
+
 TEST(ReduceRays, GridBecomesAListOfTheSameRays) {
   const std::string text = R"(rules: [R-MISS-XOR-CHIT]
 scene:

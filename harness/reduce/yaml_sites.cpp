@@ -98,6 +98,25 @@ void listSites(std::vector<Site>& sites, const YAML::Node& root, const YamlPath&
   }
 }
 
+// The flags lists of rays, instances, geometries and builds: each flag may go.
+void flagSites(std::vector<Site>& sites, const YAML::Node& root) {
+  const YamlPath rays{{false, 0, "rays"}};
+  addSeq(sites, root, plus(rays, "flags"), "flags");
+  const YAML::Node list = nodeAt(root, plus(rays, "list"));
+  for (size_t i = 0; list.IsSequence() && i < list.size(); ++i)
+    addSeq(sites, root, plus(plus(plus(rays, "list"), i), "flags"), "flags");
+  const YamlPath scene{{false, 0, "scene"}};
+  const YAML::Node inst = nodeAt(root, plus(scene, "instances"));
+  for (size_t i = 0; inst.IsSequence() && i < inst.size(); ++i)
+    addSeq(sites, root, plus(plus(plus(scene, "instances"), i), "flags"), "flags");
+  const YAML::Node blases = nodeAt(root, plus(scene, "blas"));
+  for (auto it = blases.begin(); blases.IsMap() && it != blases.end(); ++it)
+    for (size_t g = 0; it->second.IsSequence() && g < it->second.size(); ++g)
+      addSeq(sites, root, plus(plus(plus(plus(scene, "blas"), it->first.Scalar()), g), "flags"),
+             "flags");
+  addSeq(sites, root, plus(plus(scene, "build"), "flags"), "flags");
+}
+
 void keySites(std::vector<Site>& sites, const YAML::Node& root) {
   const YamlPath rays{{false, 0, "rays"}};
   addKeys(sites, root, rays, "ray defaults", {"camera", "grid", "list", "aim", "same"});
@@ -109,7 +128,9 @@ void keySites(std::vector<Site>& sites, const YAML::Node& root) {
   for (size_t i = 0; inst.IsSequence() && i < inst.size(); ++i)
     addKeys(sites, root, plus(instances, i), "instance fields", {"blas"});
   addKeys(sites, root, {{false, 0, "scene"}}, "scene parts", {"blas", "instances"});
+  addKeys(sites, root, {{false, 0, "scene"}, {false, 0, "build"}}, "build options");
   addKeys(sites, root, {{false, 0, "scene"}, {false, 0, "blas"}}, "bottom levels");
+  flagSites(sites, root);
 }
 
 }  // namespace

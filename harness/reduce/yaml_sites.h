@@ -1,7 +1,7 @@
 // The places of a case's YAML document that a reduction may shrink: lists
 // whose elements may go (rays, instances, geometries, primitives, statements,
-// shaders, output fields) and maps whose keys may go (a stage left to its
-// default, a ray's or instance's optional field). The reduction works on the
+// shaders, output fields, flags) and maps whose keys may go (a stage left to
+// its default, a ray's or instance's optional field, a build option). The reduction works on the
 // document, not on the parsed case, so every variant is a case file that the
 // normal parser judges (cases/README.md).
 #pragma once
