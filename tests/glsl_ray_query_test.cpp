@@ -6,6 +6,7 @@
 #include <string>
 
 #include "case/flag_names.h"
+#include "glsl/bindings.h"
 #include "glsl/generate_glsl.h"
 #include "spirv/compile_glsl.h"
 #include "suite_cases.h"
@@ -57,6 +58,59 @@ TEST(RayQueryGlsl, ThePipelineFormIsUnchanged) {
   const std::string g = generateGlsl(c, derivePlan(c)).raygen.glsl;
   EXPECT_NE(g.find("traceRayEXT("), std::string::npos);
   EXPECT_EQ(g.find("rayQuery"), std::string::npos);
+}
+
+// The SBT's tables (glsl/bindings.h): hit groups, miss programs, then the
+// records' data words, each record `record_data / 4` words.
+TEST(SbtTables, GroupsMissProgramsAndDataInOrder) {
+  Pipeline p;
+  p.hit_groups.resize(2);
+  p.miss.resize(1);
+  p.sbt_record_data = 8;
+  p.sbt_hit = {{1u, {7, 8}}, {std::nullopt, {}}, {0u, {9}}};
+  p.sbt_miss = {{0u, {5, 6}}, {3u, {}}};  // miss program 3 does not exist
+  const SbtTables t = packSbtTables(p);
+  EXPECT_EQ(t.hit_records, 3u);
+  EXPECT_EQ(t.miss_records, 2u);
+  EXPECT_EQ(t.record_words, 2u);
+  EXPECT_EQ(t.hit_groups, 0u);
+  EXPECT_EQ(t.miss_groups, 3u);
+  EXPECT_EQ(t.hit_data, 5u);
+  EXPECT_EQ(t.miss_data, 11u);
+  EXPECT_EQ(t.words, (std::vector<uint32_t>{1, kSbtNoGroup, 0, 0, kSbtNoGroup, 7, 8, 0, 0, 9, 0, 5,
+                                            6, 0, 0}));
+  // Without SBT lists record i is group / miss program i, its data zero.
+  Pipeline d;
+  d.hit_groups.resize(2);
+  d.miss.resize(1);
+  d.sbt_record_data = 4;
+  EXPECT_EQ(packSbtTables(d).words, (std::vector<uint32_t>{0, 1, 0, 0, 0, 0}));
+  // Never empty: a buffer of one word at least.
+  EXPECT_EQ(packSbtTables(Pipeline{}).words.size(), 1u);
+}
+
+// The inlined programs read the SBT from its buffer, not from constant
+// arrays: lavapipe 25 compiled sbt/hit-index-aabbs's 325 records of 8 words
+// as GLSL constants for over 10 minutes (a cold through/ray-query run).
+TEST(RayQueryGlsl, TheSbtIsReadFromItsTablesBuffer) {
+  const std::optional<CaseFile> f = suiteCase("sbt/hit-index-aabbs/offset-3-stride-0x11");
+  ASSERT_TRUE(f);
+  const ParseResult parsed = loadSuiteCase(*f);
+  ASSERT_TRUE(parsed.value);
+  EXPECT_FALSE(derivePlan(*parsed.value).sbt_tables);
+  Case c = *parsed.value;
+  c.pipeline.ray_query = true;  // as --through ray-query sends it
+  const Plan plan = derivePlan(c);
+  EXPECT_TRUE(plan.sbt_tables);
+  const std::string g = generateGlsl(c, plan).raygen.glsl;
+  for (const char* needle :
+       {"binding = RS_BINDING_SBT_TABLES", "kRsHitRecords = 325u", "kRsRecordWords = 8u",
+        "rs_sbt_tables[kRsHitGroups + record]", "rs_sbt_tables[kRsHitData + rs_q_hit_record",
+        "rs_sbt_tables[kRsMissGroups + rs_q_miss_record]"})
+    EXPECT_NE(g.find(needle), std::string::npos) << needle;
+  EXPECT_EQ(g.find("uint[]("), std::string::npos) << "a constant table";
+  const SpirvResult r = compileGlsl(g, Stage::Raygen);
+  EXPECT_TRUE(r.error.empty()) << r.error;
 }
 
 size_t countIn(const std::string& text, const std::string& needle) {

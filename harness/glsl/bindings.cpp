@@ -1,6 +1,8 @@
 #include "glsl/bindings.h"
 
+#include <algorithm>
 #include <bit>
+#include <optional>
 
 namespace rayspec {
 namespace {
@@ -57,6 +59,34 @@ std::vector<uint32_t> packSceneData(const Scene& scene) {
     if (blas && *blas < table.size()) words[1 + i] = table[*blas];
   }
   return words;
+}
+
+SbtTables packSbtTables(const Pipeline& p) {
+  SbtTables t;
+  t.hit_records = static_cast<uint32_t>(p.sbt_hit.empty() ? p.hit_groups.size() : p.sbt_hit.size());
+  t.miss_records = static_cast<uint32_t>(p.sbt_miss.empty() ? p.miss.size() : p.sbt_miss.size());
+  t.record_words = p.sbt_record_data / 4;
+  t.miss_groups = t.hit_groups + t.hit_records;
+  t.hit_data = t.miss_groups + t.miss_records;
+  t.miss_data = t.hit_data + t.hit_records * t.record_words;
+  t.words.assign(std::max<uint32_t>(t.miss_data + t.miss_records * t.record_words, 1), 0u);
+  auto group = [](const std::vector<SbtRecord>& list, uint32_t r) -> std::optional<uint32_t> {
+    return list.empty() ? std::optional<uint32_t>(r) : list[r].group;
+  };
+  for (uint32_t r = 0; r < t.hit_records; ++r)
+    t.words[t.hit_groups + r] = group(p.sbt_hit, r).value_or(kSbtNoGroup);
+  for (uint32_t r = 0; r < t.miss_records; ++r) {
+    const std::optional<uint32_t> m = group(p.sbt_miss, r);
+    t.words[t.miss_groups + r] = m && *m < p.miss.size() ? *m : kSbtNoGroup;
+  }
+  auto data = [&](const std::vector<SbtRecord>& list, uint32_t first) {
+    for (size_t r = 0; r < list.size(); ++r)
+      for (uint32_t w = 0; w < t.record_words && w < list[r].data.size(); ++w)
+        t.words[first + r * t.record_words + w] = list[r].data[w];
+  };
+  data(p.sbt_hit, t.hit_data);
+  data(p.sbt_miss, t.miss_data);
+  return t;
 }
 
 }  // namespace rayspec

@@ -11,13 +11,14 @@
 
 namespace rayspec {
 
-constexpr uint32_t kBindingTlas = 0;      // accelerationStructureEXT
-constexpr uint32_t kBindingRays = 1;      // readonly buffer: uint words, kRayWords per ray
-constexpr uint32_t kBindingRecords = 2;   // buffer: the device address (uint64) of the record
-                                          // words, recordWords() per ray (GL_EXT_buffer_reference)
-constexpr uint32_t kBindingCounters = 3;  // buffer: uint counters[plan.counters.size()]
-constexpr uint32_t kBindingScene = 4;     // readonly buffer: scene data for intersection programs
-constexpr uint32_t kBindingFirstImage = 5;  // one storage image per plan.images entry
+constexpr uint32_t kBindingTlas = 0;       // accelerationStructureEXT
+constexpr uint32_t kBindingRays = 1;       // readonly buffer: uint words, kRayWords per ray
+constexpr uint32_t kBindingRecords = 2;    // buffer: the device address (uint64) of the record
+                                           // words, recordWords() per ray (GL_EXT_buffer_reference)
+constexpr uint32_t kBindingCounters = 3;   // buffer: uint counters[plan.counters.size()]
+constexpr uint32_t kBindingScene = 4;      // readonly buffer: scene data for intersection programs
+constexpr uint32_t kBindingSbtTables = 5;  // readonly buffer: the SBT as tables (ray query forms)
+constexpr uint32_t kBindingFirstImage = 6;  // one storage image per plan.images entry
 
 // Ray layout, in 32-bit words: origin xyz, tmin, direction xyz, tmax, flags,
 // cull_mask, sbt_offset, sbt_stride, miss, 3 words padding.
@@ -39,5 +40,26 @@ std::vector<uint32_t> packRays(const Rays& rays);
 // included), so gl_InstanceID is the position in that list.
 constexpr uint32_t kSceneNoTable = 0xFFFFFFFFu;
 std::vector<uint32_t> packSceneData(const Scene& scene);
+
+// The SBT as tables, for the ray query forms (Pipeline::ray_query and
+// ray_query_in_hit; only built when plan.sbt_tables). Their inlined hit and
+// miss programs do not run from the SBT: the loop finds a record's hit group
+// or miss program, and the programs read their record's data words, here
+// (glsl/emit_ray_query.h). Tables in a buffer rather than constant arrays in
+// the shader: lavapipe 25 compiled sbt/hit-index-aabbs's 2,600 constant
+// words for over 10 minutes. In 32-bit words, at these offsets:
+//   hit_groups   one per hit record: its hit group, kSbtNoGroup when all-zero
+//   miss_groups  one per miss record: its miss program, kSbtNoGroup when
+//                all-zero or naming none
+//   hit_data     record_words per hit record: its data words, then zeros
+//   miss_data    the same for the miss records
+// Without pipeline.sbt lists, record i is group / miss program i, data zero.
+constexpr uint32_t kSbtNoGroup = 0xFFFFFFFFu;
+struct SbtTables {
+  uint32_t hit_records = 0, miss_records = 0, record_words = 0;
+  uint32_t hit_groups = 0, miss_groups = 0, hit_data = 0, miss_data = 0;  // word offsets
+  std::vector<uint32_t> words;  // never empty (a buffer of one word at least)
+};
+SbtTables packSbtTables(const Pipeline& p);
 
 }  // namespace rayspec

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "case/flag_names.h"
+#include "glsl/bindings.h"
 #include "glsl/emit_call_data.h"
 #include "glsl/emit_control.h"
 #include "glsl/emit_payloads.h"
@@ -109,7 +110,7 @@ bool hostDeclaresAttribute(const StageContext& host) {
 }
 
 // What every level shares: the any-hit verdicts, the attribute struct, the
-// record data tables and the group of a candidate's or committed record.
+// SBT tables (their buffer and offsets) and the group of a candidate's or committed record.
 void sharedState(const StageContext& host, GlslWriter& out) {
   const Pipeline& p = host.c.pipeline;
   const uint32_t words = p.attribute_words;
@@ -118,17 +119,16 @@ void sharedState(const StageContext& host, GlslWriter& out) {
   out.line("const uint kRsIgnore = 0u, kRsAccept = 1u, kRsTerminate = 2u;  // any-hit verdicts");
   if (words && !hostDeclaresAttribute(host))
     out.line("struct RsAttr { vec2 bary; uint words[" + str(words) + "]; };");
-  for (const auto& [region, records] : {std::pair{"hit", &p.sbt_hit}, {"miss", &p.sbt_miss}}) {
-    const uint32_t n = static_cast<uint32_t>(records->size()) * (p.sbt_record_data / 4);
-    if (n == 0) continue;
-    std::string table = "const uint kRs_" + std::string(region) + "_data[" + str(n) + "] = uint[](";
-    for (size_t r = 0; r < records->size(); ++r)
-      for (uint32_t w = 0; w < p.sbt_record_data / 4; ++w) {
-        const uint32_t v = w < (*records)[r].data.size() ? (*records)[r].data[w] : 0u;
-        table += (r || w ? ", " : "") + str(v) + "u";
-      }
-    out.line(table + ");");
-  }
+  const SbtTables tables = packSbtTables(p);
+  out.line("// The SBT as tables, laid out by packSbtTables (glsl/bindings.h).");
+  out.line(
+      "layout(set = 0, binding = RS_BINDING_SBT_TABLES, std430) readonly buffer RsSbtTables "
+      "{ uint rs_sbt_tables[]; };");
+  out.line("const uint kRsHitRecords = " + str(tables.hit_records) + "u, kRsMissRecords = " +
+           str(tables.miss_records) + "u, kRsRecordWords = " + str(tables.record_words) + "u;");
+  out.line("const uint kRsHitGroups = " + str(tables.hit_groups) + "u, kRsMissGroups = " +
+           str(tables.miss_groups) + "u, kRsHitData = " + str(tables.hit_data) +
+           "u, kRsMissData = " + str(tables.miss_data) + "u;");
   out.line(
       "#define rs_hit_group_of(c) rs_hit_group("
       "rayQueryGetIntersectionInstanceShaderBindingTableRecordOffsetEXT(rs_rq, c), "
@@ -159,17 +159,13 @@ void queryState(const StageContext& host, uint32_t level, GlslWriter& out) {
 
 // The word i of the record an inlined stage runs for (its shader_record_uint
 // / _float reads): rs_q_<region>_record, set where the record is chosen.
-void recordWord(const std::string& region, size_t records, uint32_t words, GlslWriter& out) {
-  const std::string fn = "uint rs_" + region + "_record_word(uint i) {";
-  out.line("uint rs_q_" + region + "_record;");
-  if (records * words == 0) {
-    out.line(fn + " return 0u; }");
-    return;
-  }
-  out.open(fn);
-  out.line("return rs_q_" + region + "_record < " + std::to_string(records) + "u && i < " +
-           str(words) + "u ? kRs_" + region + "_data[rs_q_" + region + "_record * " + str(words) +
-           "u + i] : 0u;");
+void recordWord(const std::string& region, const std::string& table, GlslWriter& out) {
+  const std::string record = "rs_q_" + region + "_record";
+  out.line("uint " + record + ";");
+  out.open("uint rs_" + region + "_record_word(uint i) {");
+  out.line("return " + record + " < kRs" + table +
+           "Records && i < kRsRecordWords ? rs_sbt_tables[kRs" + table + "Data + " + record +
+           " * kRsRecordWords + i] : 0u;");
   out.close();
 }
 
@@ -177,29 +173,14 @@ void recordWord(const std::string& region, size_t records, uint32_t words, GlslW
 // (R-SBT-HIT), 0xFFFFFFFF for an all-zero record or one beyond the region;
 // rs_hit_group_of(c) calls it with the query's values (c: committed, a
 // constant, as the getters want).
-void hitGroupFunction(const Pipeline& p, GlslWriter& out) {
+void hitGroupFunction(GlslWriter& out) {
   out.open("uint rs_hit_group(uint instance_offset, uint geometry) {");
   out.line(
       "const uint record = (instance_offset & 0xFFFFFFu) + geometry * (rs_q_sbt_stride & "
       "0xFu) + (rs_q_sbt_offset & 0xFu);");
   out.line("rs_q_hit_record = record;");
-  // A table, not a switch: lavapipe 25 overflows its stack compiling a switch
-  // of the 325 records of sbt/hit-index-aabbs.
-  const size_t records = p.sbt_hit.empty() ? p.hit_groups.size() : p.sbt_hit.size();
-  if (records == 0) {
-    out.line("return 0xFFFFFFFFu;");
-    out.close();
-    return;
-  }
-  std::string table = "const uint kRsHitGroups[" + std::to_string(records) + "] = uint[](";
-  for (size_t r = 0; r < records; ++r) {
-    const std::optional<uint32_t> g =
-        p.sbt_hit.empty() ? std::optional<uint32_t>(r) : p.sbt_hit[r].group;
-    table += (r ? ", " : "") + str(g.value_or(0xFFFFFFFFu)) + "u";
-  }
-  out.line(table + ");");
-  out.line("return record < " + std::to_string(records) +
-           "u ? kRsHitGroups[record] : 0xFFFFFFFFu;");
+  out.line("return record < kRsHitRecords ? rs_sbt_tables[kRsHitGroups + record] : " +
+           str(kSbtNoGroup) + "u;");
   out.close();
 }
 
@@ -335,15 +316,14 @@ void committedStage(const StageContext& host, uint32_t level, GlslWriter& out) {
   out.line("const uint rs_committed = rayQueryGetIntersectionTypeEXT(rs_rq, true);");
   out.open("if (rs_committed == gl_RayQueryCommittedIntersectionNoneEXT) {");
   out.line("rs_q_miss_record = rs_miss & 0xFFFFu;  // R-SBT-MISS: the low 16 bits");
-  out.open("switch (rs_q_miss_record) {");
-  const size_t records = p.sbt_miss.empty() ? p.miss.size() : p.sbt_miss.size();
-  for (size_t r = 0; r < records; ++r) {
-    const std::optional<uint32_t> m =
-        p.sbt_miss.empty() ? std::optional<uint32_t>(r) : p.sbt_miss[r].group;
-    if (m && *m < p.miss.size())
-      out.line("case " + str(static_cast<uint32_t>(r)) +
-               "u: " + atLevel("rs_miss_" + str(*m), level) + "(" + payload + "); break;");
-  }
+  out.line(
+      "const uint rs_miss_program = rs_q_miss_record < kRsMissRecords ? "
+      "rs_sbt_tables[kRsMissGroups + rs_q_miss_record] : " +
+      str(kSbtNoGroup) + "u;");
+  out.open("switch (rs_miss_program) {");
+  for (uint32_t m = 0; m < p.miss.size(); ++m)
+    out.line("case " + str(m) + "u: " + atLevel("rs_miss_" + str(m), level) + "(" + payload +
+             "); break;");
   out.line("default: break;");
   out.close();
   out.reopen("} else if ((rs_flags & gl_RayFlagsSkipClosestHitShaderEXT) == 0u) {");
@@ -420,9 +400,9 @@ void levelBlock(const StageContext& host, uint32_t level, GlslWriter& out) {
   const Pipeline& p = host.c.pipeline;
   openLevel(level, out);
   queryState(host, level, out);
-  recordWord("hit", p.sbt_hit.size(), p.sbt_record_data / 4, out);
-  recordWord("miss", p.sbt_miss.size(), p.sbt_record_data / 4, out);
-  hitGroupFunction(p, out);
+  recordWord("hit", "Hit", out);
+  recordWord("miss", "Miss", out);
+  hitGroupFunction(out);
   out.line("");
   out.line("// ---- the hit group and miss programs, inlined at level " + str(level) + " ----");
   for (uint32_t g = 0; g < p.hit_groups.size(); ++g) hitGroupFunctions(host, g, level, out);

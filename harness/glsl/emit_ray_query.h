@@ -11,7 +11,9 @@
 //   opaque box) accepts; then the committed intersection runs the closest-hit
 //   of its record's group (unless skip_closest_hit) or, with none, the miss
 //   the trace names. The hit record is the instance's offset + geometry x
-//   stride + offset, as traceRayEXT's; its group comes from the case's SBT.
+//   stride + offset, as traceRayEXT's; its group, the miss record's program
+//   and the records' data come from the case's SBT, laid out as tables in a
+//   buffer (glsl/bindings.h, packSbtTables).
 // A trace made by an inlined closest-hit or miss is the same loop one level
 // down, with its own query, state and copies of the programs (levels are
 // written deepest first, each a function rs_trace[_d<L>]). The stages the

@@ -71,6 +71,7 @@ void defines(const StageContext& ctx, GlslWriter& out) {
   out.line(define("RS_BINDING_RECORDS", kBindingRecords));
   out.line(define("RS_BINDING_COUNTERS", kBindingCounters));
   out.line(define("RS_BINDING_SCENE", kBindingScene));
+  out.line(define("RS_BINDING_SBT_TABLES", kBindingSbtTables));
   out.line(define("RS_RAY_WORDS", kRayWords));
   if (!ctx.compute) {  // a compute shader's: glsl/emit_compute.h
     out.line("#define RS_LAUNCH_ID gl_LaunchIDEXT");

@@ -160,6 +160,9 @@ void planShaderRecords(const Pipeline& pipe, Plan& plan) {
                             has_data(pipe.sbt_hit) || has_data(pipe.sbt_callable);
   plan.zero_records =
       has_zero(pipe.sbt_miss) || has_zero(pipe.sbt_hit) || has_zero(pipe.sbt_callable);
+  // The ray query forms' inlined programs find their group and read their
+  // record's data in tables (glsl/bindings.h, packSbtTables).
+  plan.sbt_tables = pipe.ray_query || pipe.ray_query_in_hit;
 }
 
 // What the case keeps: counters, per-ray fields, images. Per-ray records
@@ -201,7 +204,7 @@ Plan everyEffectPlan(const Case& c) {
   for (bool* flag : {&plan.triangles, &plan.aabbs, &plan.any_hit, &plan.intersection,
                      &plan.closest_hit, &plan.miss, &plan.callables, &plan.nested_trace,
                      &plan.facing_culls, &plan.masks, &plan.opacity_flags, &plan.scene_data,
-                     &plan.shader_record_data, &plan.zero_records, &plan.records})
+                     &plan.shader_record_data, &plan.zero_records, &plan.sbt_tables, &plan.records})
     *flag = true;
   plan.record_fields.clear();
   plan.images.clear();
@@ -235,6 +238,7 @@ std::vector<std::string> Plan::describe() const {
   line(scene_data, "scene data buffer (AABBs read by intersection programs)");
   line(shader_record_data, "shader record data");
   line(zero_records, "all-zero SBT records");
+  line(sbt_tables, "SBT tables buffer (hit groups, miss programs, record data for ray queries)");
   line(cull_mask_builtin, "gl_CullMaskEXT read (VK_KHR_ray_tracing_maintenance1)");
   line(ray_queries, "ray_query statements (VK_KHR_ray_query)");
   line(position_fetch,

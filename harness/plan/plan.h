@@ -37,6 +37,8 @@ struct Plan {
                                            // every structure built with ALLOW_DATA_ACCESS)
   bool shader_record_data = false;         // some SBT record carries data
   bool zero_records = false;               // some SBT record is all zero
+  bool sbt_tables = false;                 // the SBT as tables in a buffer: traced by ray
+                                           // queries (Pipeline::ray_query, ray_query_in_hit)
   std::vector<std::string> counters;       // counters kept
   std::vector<std::string> record_fields;  // per-ray fields kept (recordable ones)
   bool records = false;                    // a per-ray record buffer is needed

@@ -37,6 +37,7 @@ Result<std::set<uint32_t>> caseBindings(const Plan& plan, const std::set<uint32_
   if (plan.records) b.insert(kBindingRecords);
   if (!plan.counters.empty()) b.insert(kBindingCounters);
   if (plan.scene_data) b.insert(kBindingScene);
+  if (plan.sbt_tables) b.insert(kBindingSbtTables);
   for (size_t i = 0; i < plan.images.size(); ++i)
     b.insert(kBindingFirstImage + static_cast<uint32_t>(i));
   for (uint32_t d : declared) {
@@ -81,6 +82,11 @@ Result<CaseBuffers> createCaseBuffers(const VulkanContext& ctx, const Case& c, c
     RAYSPEC_TRY(out.scene,
                 createUploadBuffer(ctx, scene.data(), scene.size() * 4, kStorage, cleanup));
   }
+  if (bindings.count(kBindingSbtTables)) {
+    const SbtTables tables = packSbtTables(c.pipeline);
+    RAYSPEC_TRY(out.sbt_tables, createUploadBuffer(ctx, tables.words.data(),
+                                                   tables.words.size() * 4, kStorage, cleanup));
+  }
   if (!plan.images.empty()) {
     RAYSPEC_TRY(out.image_extent,
                 imageExtent(c.rays.width, c.rays.height, ctx.info.max_image_dimension_2d));
@@ -116,7 +122,8 @@ std::vector<DescriptorItem> descriptorItems(const CaseBuffers& b,
       it.buffer = binding == kBindingRays       ? b.rays.buffer
                   : binding == kBindingRecords  ? b.records_ref.buffer
                   : binding == kBindingCounters ? b.counters.buffer
-                                                : b.scene.buffer;
+                  : binding == kBindingScene    ? b.scene.buffer
+                                                : b.sbt_tables.buffer;
     }
     items.push_back(it);
   }

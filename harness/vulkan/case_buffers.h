@@ -31,7 +31,7 @@ Result<ImageExtent> imageExtent(uint32_t launch_width, uint32_t launch_height,
 struct CaseBuffers {
   std::set<uint32_t> bindings;  // the bindings in use
   ImageExtent image_extent;     // of every image
-  Buffer rays, records, counters, scene;
+  Buffer rays, records, counters, scene, sbt_tables;
   Buffer records_ref;                  // bound at kBindingRecords: the device address of `records`
   std::vector<StorageImage> images;    // parallel to plan.images
   std::vector<bool> image_float;       // rgba32f (else r32ui)
@@ -40,11 +40,11 @@ struct CaseBuffers {
 
 // The bindings the plan needs (TLAS and rays always; records when
 // plan.records; counters when the plan keeps some; scene data when
-// plan.scene_data; one image each) united with those the shaders declare.
-// A Device error for a declared binding nothing can back.
+// plan.scene_data; the SBT tables when plan.sbt_tables; one image each) united with those the
+// shaders declare. A Device error for a declared binding nothing can back.
 Result<std::set<uint32_t>> caseBindings(const Plan& plan, const std::set<uint32_t>& declared);
 
-// Host buffers filled (rays, scene data) or zeroed (records, counters), and
+// Host buffers filled (rays, scene data, SBT tables) or zeroed (records, counters), and
 // the storage images. Only for the bindings given. The NotSupported error
 // when the rays do not fit a storage buffer, else the Device error.
 Result<CaseBuffers> createCaseBuffers(const VulkanContext& ctx, const Case& c, const Plan& plan,
