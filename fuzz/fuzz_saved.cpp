@@ -18,6 +18,7 @@
 //                                       its folder as a link to a folder
 //                                       outside; the property: the merged
 //                                       output never holds that folder's file
+//   6  a run folder's case journal      report/case_journal.h (outcomes.jsonl)
 // Every input must end in a value or an error: never a crash, a hang, a leak
 // or undefined behaviour. And the path-escape property: whatever a reader
 // accepts is safe to make paths of (case names, image names) and sized as
@@ -33,6 +34,7 @@
 
 #include "bundle/results_io.h"
 #include "report/baseline.h"
+#include "report/case_journal.h"
 #include "report/merge_runs.h"
 #include "report/outcome_json.h"
 #include "results/file_name.h"
@@ -105,6 +107,14 @@ void summaryFile(const std::string& text) {
     require(rayspec::caseNameProblem(o.name).empty());
 }
 
+void caseJournal(const std::string& text) {
+  write(workDir() / rayspec::kJournalFile, text);
+  const auto outcomes = rayspec::readJournal(workDir().string());
+  if (!outcomes || !*outcomes) return;
+  for (const rayspec::CaseOutcome& o : **outcomes)
+    require(rayspec::caseNameProblem(o.name).empty());
+}
+
 void spirvCacheEntry(const std::string& text) {
   const size_t nul = text.find('\0');
   const std::string key = rayspec::spirvCacheKey("fuzz", rayspec::Stage::Miss);
@@ -150,7 +160,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   fs::remove_all(workDir(), ec);
   fs::create_directories(workDir(), ec);
   const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
-  switch (data[0] % 6) {
+  switch (data[0] % 7) {
     case 0:
       baselineFile(text);
       break;
@@ -166,8 +176,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     case 4:
       spirvCacheEntry(text);
       break;
-    default:
+    case 5:
       mergedShard(text);
+      break;
+    default:
+      caseJournal(text);
       break;
   }
   return 0;

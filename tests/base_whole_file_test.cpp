@@ -32,6 +32,18 @@ TEST(WholeFile, RefusesAFileOverItsLimit) {
   EXPECT_NE(error.find(path + ":0:0: 9 bytes, more than the 8"), std::string::npos) << error;
 }
 
+// A size that says nothing (a /proc file says 0) lets no more than the limit
+// through: what is read is counted, not only what the size said.
+TEST(WholeFile, ReadsNoMoreThanItsLimitWhateverTheSizeSaid) {
+  std::string error;
+  EXPECT_EQ(orError(readWholeFile("/proc/self/status", 16), &error), "");
+  EXPECT_NE(error.find("more than the 16 bytes"), std::string::npos) << error;
+  error.clear();
+  EXPECT_NE(orError(readWholeFile("/proc/self/status", 1u << 20), &error).find("Name:"),
+            std::string::npos)
+      << error;
+}
+
 TEST(WholeFile, NamesTheFileItCannotReadOrWrite) {
   std::string error;
   orError(readWholeFile("/nonexistent/rayspec.txt", 100), &error);

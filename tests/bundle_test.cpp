@@ -14,6 +14,7 @@
 #include "bundle/results_io.h"
 #include "result_support.h"
 #include "results/record_layout.h"
+#include "temp_dir.h"
 #include "test_dir.h"
 
 namespace rayspec {
@@ -121,6 +122,17 @@ TEST(ImageFiles, DiffImageIsWrittenOrItsErrorSaid) {
 // A saved bundle is input: a value of the wrong type names its field, a file
 // of the wrong size names the file and both sizes, a name that would climb out
 // of the bundle is refused before any file of that name is read.
+// results.json is input too: one over its limit is refused, before it is
+// read, by the error naming it.
+TEST(ResultsIo, AResultsJsonOverItsLimitIsRefused) {
+  const std::string dir = freshTempDir("rayspec-results-huge");
+  sparseFile(dir + "/results.json", kMaxResultsJsonBytes + 1);
+  std::string error;
+  orError(readResults(dir), &error);
+  EXPECT_NE(error.find(dir + "/results.json: "), std::string::npos) << error;
+  EXPECT_NE(error.find("more than the"), std::string::npos) << error;
+}
+
 TEST(ResultsIo, BadBundlesNameTheFieldOrFile) {
   const std::string dir = testing::TempDir() + "/rayspec-results-bad";
   const auto edited = [&](const std::string& from, const std::string& to) {

@@ -10,6 +10,7 @@
 #include "report/outcome_json.h"
 #include "report/write_reports.h"
 #include "result_support.h"
+#include "temp_dir.h"
 
 namespace rayspec {
 namespace {
@@ -46,6 +47,25 @@ TEST(Journal, LastLineOfACaseWinsAndACutLineIsLeftOut) {
   EXPECT_EQ(read[0].name, "f/a");
   EXPECT_EQ(read[0].status, Status::Pass);
   EXPECT_EQ(read[1].name, "f/b");
+}
+
+// The journal and summary.json of a saved run are input: over their limits,
+// each is refused, before it is read, by the error naming it.
+TEST(Journal, AJournalOrSummaryOverItsLimitIsRefused) {
+  const std::string dir = freshDir("huge");
+  sparseFile(dir + "/" + kJournalFile, kMaxJournalBytes + 1);
+  sparseFile(dir + "/summary.json", kMaxSummaryJsonBytes + 1);
+  const auto journal = readJournal(dir);
+  ASSERT_FALSE(journal);
+  const std::string journal_error = journal.error().format();
+  EXPECT_NE(journal_error.find(dir + "/" + kJournalFile + ": "), std::string::npos)
+      << journal_error;
+  EXPECT_NE(journal_error.find("more than the"), std::string::npos) << journal_error;
+  const Result<SavedRun> summary = readSavedRun(dir);
+  ASSERT_FALSE(summary);
+  const std::string summary_error = summary.error().format();
+  EXPECT_NE(summary_error.find(dir + "/summary.json: "), std::string::npos) << summary_error;
+  EXPECT_NE(summary_error.find("more than the"), std::string::npos) << summary_error;
 }
 
 TEST(Journal, ABadLineInTheMiddleIsAnErrorNamingIt) {

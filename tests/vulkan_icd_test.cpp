@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "result_support.h"
+#include "temp_dir.h"
 #include "vulkan/device_usability.h"
 #include "vulkan/icd_environment.h"
 #include "vulkan/icd_manifest.h"
@@ -89,6 +90,7 @@ TEST(IcdManifest, BadFilesAreErrorsNamingTheFile) {
       {write(dir + "/layer.json", R"({"layer": {"name": "x"}})"), "no \"ICD\" object"},
       {write(dir + "/nolib.json", R"({"ICD": {"api_version": "1.3.0"}})"), "no ICD.library_path"},
       {dir, "a folder"},
+      {sparseFile(dir + "/huge.json", kMaxIcdManifestBytes + 1), "more than the"},
   };
   for (const auto& [path, why] : bad) {
     const Result<IcdManifest> m = readIcdManifest(path);

@@ -3,7 +3,8 @@
 #   fuzz_case   the case parser, sweep expansion and plan (fuzz/fuzz_case.cpp),
 #               from a corpus made of cases/ and fuzz/case.dict;
 #   fuzz_saved  baselines, flakes and skips files, results bundles,
-#               summary.json, SPIR-V cache entries and shards to merge
+#               summary.json, SPIR-V cache entries, shards to merge and
+#               case journals
 #               (fuzz/fuzz_saved.cpp), from references/baselines/ and
 #               fuzz/seeds/, with the path-escape property.
 # TARGETS (default both) picks one: tools/fuzz.sh 600 fuzz_saved.
@@ -35,6 +36,7 @@ seeds() {
     { printf '\003'; cat fuzz/seeds/summary.json; } >"$dir/summary"
     { printf '\004'; printf 'not-a-sum'; printf '\000'; printf '\003\002\043\007'; } >"$dir/spirv-entry"
     { printf '\005'; cat fuzz/seeds/summary.json; } >"$dir/shard"
+    { printf '\006'; cat fuzz/seeds/outcomes.jsonl; } >"$dir/journal"
   fi
   echo "$dir"
 }

@@ -2,10 +2,10 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <sstream>
 #include <thread>
 
 namespace rayspec {
@@ -23,10 +23,25 @@ Result<std::string> readWholeFile(const std::string& path, uint64_t max_bytes) {
                 " such a file may hold");
   std::ifstream in(path, std::ios::binary);
   if (!in) return fail("cannot open");
-  std::ostringstream text;
-  text << in.rdbuf();
+  // At most one byte more than allowed, whatever the size said: a file that
+  // grew since, or one whose size says nothing (/proc), is refused too.
+  std::string text(static_cast<size_t>(std::min<uint64_t>(size, max_bytes)) + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
   if (in.bad()) return fail("cannot read");
-  return text.str();
+  text.resize(static_cast<size_t>(in.gcount()));
+  while (text.size() <= max_bytes && in) {  // grew past its size, within the limit
+    char more[4096];
+    in.read(more, sizeof more);
+    text.append(more, static_cast<size_t>(in.gcount()));
+  }
+  if (in.bad()) return fail("cannot read");
+  if (text.size() > max_bytes)
+    return fail("more than the " + std::to_string(max_bytes) + " bytes such a file may hold");
+  return text;
+}
+
+Error inOneMessage(const Error& e) {
+  return e.loc.file.empty() ? e : errorMessage(e.loc.file + ": " + e.message);
 }
 
 Result<void> writeWholeFile(const std::string& path, const void* data, size_t size) {

@@ -18,6 +18,10 @@ namespace rayspec {
 // file, cannot be read or holds more than max_bytes.
 Result<std::string> readWholeFile(const std::string& path, uint64_t max_bytes);
 
+// readWholeFile's error as one message, "PATH: WHAT", for readers whose
+// callers pass Error::message on.
+Error inOneMessage(const Error& e);
+
 // An error naming the file when it could not be written (nothing is left
 // behind then).
 Result<void> writeWholeFile(const std::string& path, const void* data, size_t size);

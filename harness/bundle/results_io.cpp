@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/whole_file.h"
 #include "bundle/image_files.h"
 #include "bundle/step_cost_json.h"
 #include "results/content_hash.h"
@@ -389,8 +390,8 @@ Result<void> readRayNotes(const json& j, FieldReader& field, Results& r) {
 }
 
 // results.json into r; or the error, naming the file and field.
-Result<void> readResultsJsonFields(std::istream& in, FieldReader& field, Results& r) {
-  const json j = json::parse(in);
+Result<void> readResultsJsonFields(const std::string& text, FieldReader& field, Results& r) {
+  const json j = json::parse(text);
   RAYSPEC_TRY_VOID(readHeader(j, field, r));
   if (field(j, "record_words").get<uint32_t>() != recordWords())
     return errorMessage(field.dir.string() + ": record layout differs from this build");
@@ -400,10 +401,10 @@ Result<void> readResultsJsonFields(std::istream& in, FieldReader& field, Results
 
 // readResultsJsonFields, with what nlohmann-json (a value of the wrong type,
 // a missing field, text that is no JSON) and std::stoull throw made an Error.
-Result<void> readResultsJson(std::istream& in, const fs::path& dir, Results& r) {
+Result<void> readResultsJson(const std::string& text, const fs::path& dir, Results& r) {
   FieldReader field{dir, {}};
   try {
-    return readResultsJsonFields(in, field, r);
+    return readResultsJsonFields(text, field, r);
   } catch (const nlohmann::json::exception& e) {
     return errorMessage((dir / "results.json").string() +
                         (field.where.empty() ? "" : ": field '" + field.where + "'") + ": " +
@@ -418,9 +419,13 @@ Result<void> readResultsJson(std::istream& in, const fs::path& dir, Results& r) 
 Result<Results> readResults(const std::string& dir_name) {
   Results r;
   const fs::path dir(dir_name);
-  std::ifstream in(dir / "results.json");
-  if (!in) return errorMessage("no results.json in " + dir.string());
-  RAYSPEC_TRY_VOID(readResultsJson(in, dir, r));
+  std::error_code ec;
+  if (!fs::exists(dir / "results.json", ec))
+    return errorMessage("no results.json in " + dir.string());
+  const Result<std::string> text =
+      readWholeFile((dir / "results.json").string(), kMaxResultsJsonBytes);
+  if (!text) return inOneMessage(text.error());
+  RAYSPEC_TRY_VOID(readResultsJson(*text, dir, r));
   // No records at all when the case records nothing per ray (or its side died).
   const std::string implied = "width x height x record words " + std::to_string(r.width) + " x " +
                               std::to_string(r.height) + " x " + std::to_string(recordWords());

@@ -10,6 +10,7 @@
 //   NAME.exr       float images at full precision (with OpenImageIO)
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,10 @@ Result<void> writeRecordsCsv(const Results& r, const std::string& path,
 
 // Reads a bundle back (results.json, records.bin, the images).
 Result<Results> readResults(const std::string& dir);
+
+// The most bytes a results.json may hold (its ambiguous rays' candidates
+// grow with the launch: 43 MB for accel/size-aabbs/1048576's 2^20 rays).
+constexpr uint64_t kMaxResultsJsonBytes = 512ull << 20;
 
 // One field of one record as text ("1.5", "0.25 0.5"); empty when the field
 // is recordable and was not written.

@@ -48,11 +48,9 @@ Result<CaseFile> chosenCase(const ReduceOptions& opt) {
 
 Result<std::string> caseText(const CaseFile& f) {
   if (f.generated) return f.text;
-  std::ifstream in(f.path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  if (!in) return errorMessage(f.path + ": cannot read the case file");
-  return s.str();
+  const Result<std::string> text = readWholeFile(f.path, kMaxCaseFileBytes);
+  if (!text) return inOneMessage(text.error());
+  return *text;
 }
 
 Result<YAML::Node> loadDocument(const std::string& text, const std::string& path) {
@@ -114,16 +112,11 @@ Result<void> reductionSetup(ReduceOptions& opt, const CaseFile& f, RunInfo& info
 
 // With a planted fault: whether the case fails without it too (then the
 // failure is not the fault's, and there is nothing of it to reduce).
-bool failsWithoutTheFault(const ReduceOptions& opt, const CaseFile& f,
-                          const std::vector<std::string>& labels, const std::string& text,
+bool failsWithoutTheFault(const VariantJudge& probe, const Case& c, const std::string& fault,
                           bool* interrupted) {
-  if (opt.run.plant_fault.empty()) return false;
-  RunOptions clean = opt.run;
-  clean.plant_fault.clear();
-  const CaseOutcome without = VariantJudge(clean, f.name, labels, {}, 1).judge(text, interrupted);
-  if (*interrupted || !isFailing(without.status)) return *interrupted;
-  std::printf("%s fails without the fault %s too: %s: %s\n", f.name.c_str(),
-              opt.run.plant_fault.c_str(), statusName(without.status), without.headline.c_str());
+  const std::string why = probe.failureWithoutTheFault(c, interrupted);
+  if (*interrupted || why.empty()) return *interrupted;
+  std::printf("%s (the fault: %s) %s\n", c.name.c_str(), fault.c_str(), why.c_str());
   return true;
 }
 
@@ -168,7 +161,7 @@ int runReduce(const ReduceOptions& requested) {
   const CaseOutcome original = probe.judge(*text, &interrupted);
   if (interrupted) return badInput("interrupted");
   std::optional<FailureSignature> signature = failureToKeep(original, opt.keep);
-  if (signature && failsWithoutTheFault(opt, *f, labels, *text, &interrupted))
+  if (signature && failsWithoutTheFault(probe, *parsed.value, opt.run.plant_fault, &interrupted))
     return interrupted ? badInput("interrupted") : kReduceNotFailing;
   if (!signature) {
     std::printf("%s does not fail%s to begin with: %s: %s\n", f->name.c_str(),

@@ -49,10 +49,11 @@ class VariantJudge {
   CaseOutcome judgeParsed(const std::string& text, const Case& c, bool* interrupted) const;
   // The device side by the device command, then the case judged from what it left.
   CaseOutcome judgeByCommand(const std::string& text, const Case& c, bool* interrupted) const;
-  // With a planted fault: why the parsed variant fails without it too ("": it does not).
-  std::string failureWithoutTheFault(const Case& c, bool* interrupted) const;
 
  public:
+  // With a planted fault: why the parsed variant fails without it too ("": it
+  // does not, or no fault is planted).
+  std::string failureWithoutTheFault(const Case& c, bool* interrupted) const;
   // Whether the variant fails the same way (and, with a planted fault, passes
   // without it); a text seen before is not run again.
   bool fails(const std::string& text, const std::string& what);

@@ -1,8 +1,11 @@
 #include "report/case_journal.h"
 
+#include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
 
+#include "base/whole_file.h"
 #include "report/json_text.h"
 #include "report/outcome_json.h"
 
@@ -46,8 +49,12 @@ Result<CaseOutcome> journalLine(const std::string& line) {
 
 Result<std::optional<std::vector<CaseOutcome>>> readJournal(const std::string& dir) {
   std::vector<CaseOutcome> out;
-  std::ifstream in(journalPath(dir));
-  if (!in) return std::optional<std::vector<CaseOutcome>>();
+  std::error_code ec;
+  if (!std::filesystem::exists(journalPath(dir), ec))
+    return std::optional<std::vector<CaseOutcome>>();
+  const Result<std::string> text = readWholeFile(journalPath(dir), kMaxJournalBytes);
+  if (!text) return inOneMessage(text.error());
+  std::istringstream in(*text);
   std::map<std::string, size_t> at;  // case name -> its place in out
   std::string line;
   for (size_t number = 1; std::getline(in, line); ++number) {

@@ -9,6 +9,7 @@
 
 #include "base/result.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -28,7 +29,8 @@ Result<void> appendJournal(const CaseOutcome& outcome, const std::string& dir);
 // The outcomes the journal holds (nullopt: `dir` has no journal), a case that
 // ended twice (a resumed run) by its last line; a last line cut short by a
 // kill is left out. The error: a line that is not an outcome (names the file
-// and line).
+// and line), or a journal of more than kMaxJournalBytes.
 Result<std::optional<std::vector<CaseOutcome>>> readJournal(const std::string& dir);
+constexpr uint64_t kMaxJournalBytes = 256ull << 20;  // as summary.json's
 
 }  // namespace rayspec

@@ -1,8 +1,10 @@
 #include "report/outcome_json.h"
 
+#include <filesystem>
 #include <fstream>
 
 #include "base/visible_text.h"
+#include "base/whole_file.h"
 #include "report/case_cost.h"
 #include "report/case_journal.h"
 #include "results/file_name.h"
@@ -138,10 +140,13 @@ Result<CaseOutcome> outcomeFromJson(const nlohmann::json& j) {
 Result<SavedRun> readSavedRun(const std::string& dir) {
   SavedRun run;
   const std::string path = dir + "/summary.json";
-  std::ifstream in(path);
-  if (!in) return errorMessage("cannot read " + path + " (not a rayspec run folder?)");
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec))
+    return errorMessage("cannot read " + path + " (not a rayspec run folder?)");
+  const Result<std::string> text = readWholeFile(path, kMaxSummaryJsonBytes);
+  if (!text) return inOneMessage(text.error());
   try {
-    const nlohmann::json j = nlohmann::json::parse(in);
+    const nlohmann::json j = nlohmann::json::parse(*text);
     run.info.device = j.at("device").get<std::string>();
     run.info.model_tier = j.at("model_tier").get<std::string>();
     run.info.started = j.at("started").get<std::string>();

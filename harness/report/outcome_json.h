@@ -4,6 +4,7 @@
 
 #include "base/result.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -31,5 +32,8 @@ struct SavedRun {
 // field that could not be read. A run marked interrupted takes its cases
 // from its journal (report/case_journal.h) where it has one.
 Result<SavedRun> readSavedRun(const std::string& dir);
+// The most bytes a summary.json may hold (about 2.6 kB a case: 1.9 MB for
+// 734 cases).
+constexpr uint64_t kMaxSummaryJsonBytes = 256ull << 20;
 
 }  // namespace rayspec

@@ -27,11 +27,9 @@ std::string cachePath(const std::string& cache_dir) {
 std::map<std::string, double> loadCaseSeconds(const std::string& cache_dir) {
   std::map<std::string, double> out;
   if (cache_dir.empty()) return out;
-  std::error_code ec;
-  const std::uintmax_t size = std::filesystem::file_size(cachePath(cache_dir), ec);
-  if (ec || size > kMaxCacheBytes) return out;
-  std::ifstream in(cachePath(cache_dir));
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  const Result<std::string> text = readWholeFile(cachePath(cache_dir), kMaxCacheBytes);
+  if (!text) return out;  // none yet, or not one to use: the run orders by name
+  const nlohmann::json j = nlohmann::json::parse(*text, nullptr, false);
   if (!j.is_object()) return out;
   for (const auto& [name, seconds] : j.items())
     if (seconds.is_number()) out[name] = seconds.get<double>();

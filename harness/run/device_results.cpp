@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/visible_text.h"
+#include "base/whole_file.h"
 #include "bundle/results_io.h"
 #include "model/model_engine.h"
 #include "report/outcome_json.h"
@@ -89,9 +90,10 @@ Result<void> deviceResultsError(const RunOptions& opt) {
 std::string savedDevices(const std::string& dir, const std::vector<CaseFile>& cases) {
   std::vector<std::string> devices;
   for (const CaseFile& c : cases) {
-    std::ifstream in(fs::path(savedBundleDir(dir, c.name)) / "results.json");
-    if (!in) continue;
-    const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+    const Result<std::string> text = readWholeFile(
+        (fs::path(savedBundleDir(dir, c.name)) / "results.json").string(), kMaxResultsJsonBytes);
+    if (!text) continue;
+    const nlohmann::json j = nlohmann::json::parse(*text, nullptr, false);
     if (j.is_discarded() || !j.contains("device") || !j["device"].is_string()) continue;
     const std::string device = j["device"];
     if (!device.empty() && std::find(devices.begin(), devices.end(), device) == devices.end())

@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/whole_file.h"
+
 namespace rayspec {
 namespace fs = std::filesystem;
 namespace {
@@ -83,9 +85,9 @@ Result<IcdManifest> readIcdManifest(const std::string& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) return fail("no such file");
   if (fs::is_directory(path, ec)) return fail("a folder, not a manifest file");
-  std::ifstream in(path);
-  if (!in) return fail("cannot be read");
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  const Result<std::string> text = readWholeFile(path, kMaxIcdManifestBytes);
+  if (!text) return fail(text.error().message);
+  const nlohmann::json j = nlohmann::json::parse(*text, nullptr, false);
   if (j.is_discarded()) return fail("not JSON");
   if (!j.is_object() || !j.contains("ICD") || !j["ICD"].is_object())
     return fail("not a Vulkan driver manifest (no \"ICD\" object)");

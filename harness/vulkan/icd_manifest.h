@@ -5,6 +5,7 @@
 // why a manifest's driver cannot be loaded.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,8 +21,10 @@ struct IcdManifest {
 };
 
 // Reads one manifest, or the error naming the file and what is wrong
-// (missing, unreadable, not JSON, no ICD.library_path).
+// (missing, unreadable, larger than kMaxIcdManifestBytes, not JSON, no
+// ICD.library_path).
 Result<IcdManifest> readIcdManifest(const std::string& path);
+constexpr uint64_t kMaxIcdManifestBytes = 1u << 20;  // Mesa's are under 200 bytes
 
 // Where the manifests were found and what was wrong with some of them.
 enum class IcdSource { DriverFilesVariable, IcdFilenamesVariable, StandardFolders };
