@@ -211,4 +211,44 @@ TEST_F(Untrusted, UnusableOptionsAreExit2AtTheStart) {
   EXPECT_FALSE(fs::exists("/summary.json"));
 }
 
+// Issue 56, items 14 and 16: a number is what it is written as. A sign, a
+// space, "0x" or a value past 64 bits is exit 2 naming the option, never
+// read as another number (-1 as no limit, 0x10 as 16 bytes).
+TEST_F(Untrusted, NumbersAreTakenOnlyAsWritten) {
+  const std::string spaces(100000, ' ');
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"--memory-limit -1", "--memory-limit"},
+      {"--memory-limit 0x10", "--memory-limit"},
+      {"--memory-limit 18446744073709551616", "--memory-limit"},
+      {"--memory-limit 99999999999999999T", "--memory-limit"},
+      {"--memory-limit ' 8G'", "--memory-limit"},
+      {"--timeout ' 5'", "--timeout"},
+      {"--timeout 0x10", "--timeout"},
+      {"--timeout 1e3", "--timeout"},
+      {"--jobs ' 2'", "--jobs"},
+      {"--jobs 0x2", "--jobs"},
+      {"--jobs -1", "--jobs"},
+      {"--threads +1", "--threads"},
+      {"--shard '" + spaces + "1/2'", "--shard"},
+      {"--shard '1 / 2'", "--shard"}};
+  for (const auto& [args, option] : bad) {
+    const int rc = sh(
+        cli::kBin + " run --no-device " + args + caseArg(kImages) + " --out " + root_ + "/numbers",
+        root_ + "/numbers.txt");
+    const std::string log = slurp(root_ + "/numbers.txt");
+    EXPECT_EQ(rc, 2) << args.substr(0, 60) << ": " << log.substr(0, 400);
+    EXPECT_NE(log.find(option), std::string::npos)
+        << args.substr(0, 60) << ": " << log.substr(0, 400);
+    EXPECT_LT(log.size(), 2000u) << args.substr(0, 60);
+    EXPECT_EQ(log.find("Reports:"), std::string::npos) << args.substr(0, 60);
+  }
+  // Plain numbers, with and without units, still run.
+  const int rc =
+      sh(cli::kBin + " run --no-device --memory-limit 512M --timeout 2.5 --jobs 1 " +
+             "--threads 1 --shard 1/1" + caseArg(kImages) + " --out " + root_ + "/numbers",
+         root_ + "/numbers.txt");
+  EXPECT_NE(rc, 2) << slurp(root_ + "/numbers.txt");
+  EXPECT_NE(slurp(root_ + "/numbers.txt").find("Reports:"), std::string::npos);
+}
+
 }  // namespace

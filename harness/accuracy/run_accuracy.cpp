@@ -63,7 +63,7 @@ int measureSet(const AccuracyOptions& opt, CaseSet set, const std::vector<std::s
                  caseSetName(set));
     return kExitPass;
   }
-  const std::string runs = opt.out + "/runs/" + caseSetName(set);
+  const std::string runs = opt.out + "/" + kStudyRunsFolder + "/" + caseSetName(set);
   if (const int rc = runTiers(
           {opt.run, globs, opt.tiers, runs, std::string(kCommand) + " " + caseSetName(set)});
       rc != kExitPass)
@@ -109,6 +109,11 @@ int runAccuracy(const AccuracyOptions& opt) {
                  "rayspec accuracy: the exact tier is the reference: it must be among the tiers\n");
     return kExitSetup;
   }
+  const Result<OutputFolder> held = claimStudyFolder(opt.out, kCommand);
+  if (!held) {
+    std::fprintf(stderr, "rayspec accuracy: %s\n", held.error().format().c_str());
+    return kExitSetup;
+  }
   std::vector<AccuracyRow> rows;
   for (CaseSet set : {CaseSet::Ordinary, CaseSet::Hard})
     if (const int rc =
@@ -117,15 +122,16 @@ int runAccuracy(const AccuracyOptions& opt) {
       return rc;
   std::filesystem::create_directories(opt.out);
   const std::string table = formatAccuracyTable(rows);
-  Result<void> written = writeWholeFile(opt.out + "/accuracy.txt", table);
+  Result<void> written = writeWholeFile(studyReport(opt.out, kCommand, "txt"), table);
   if (written)
-    written = writeWholeFile(opt.out + "/accuracy.json", accuracyJson(rows).dump(2) + "\n");
+    written =
+        writeWholeFile(studyReport(opt.out, kCommand, "json"), accuracyJson(rows).dump(2) + "\n");
   std::string error = written ? std::string() : written.error().format();
   if (error.empty()) {
     const std::vector<PlotPanel> panels = accuracyPanels(rows);
     if (panels.empty()) {
       error = "nothing to plot: no bundle was read";
-    } else if (Result<void> r = writePlots(opt.out + "/accuracy.png", panels,
+    } else if (Result<void> r = writePlots(studyReport(opt.out, kCommand, "png"), panels,
                                            {2, 560, 420, "What accuracy costs in time"});
                !r) {
       error = r.error().format();

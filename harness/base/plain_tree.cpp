@@ -52,14 +52,4 @@ std::string plainPathProblem(const std::string& base, const std::string& relativ
   return odd.empty() ? error : odd.front().second;
 }
 
-std::vector<std::string> removeOddEntries(const std::string& root) {
-  std::vector<std::string> removed;
-  std::string unreadable;  // what could not be read holds nothing to remove here
-  for (const auto& [path, what] : oddEntriesBelow(root, &unreadable)) {
-    std::error_code ec;
-    if (fs::remove(path, ec)) removed.push_back(what);  // the entry itself: a link is not followed
-  }
-  return removed;
-}
-
 }  // namespace rayspec

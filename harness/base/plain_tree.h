@@ -14,9 +14,4 @@ namespace rayspec {
 // the first entry that is not. A missing path is fine.
 std::string plainPathProblem(const std::string& base, const std::string& relative);
 
-// Makes the tree under `root` plain: every entry that is neither a regular
-// file nor a folder (a link, a FIFO, ...) is removed itself, never followed;
-// `root` itself is left as it is. What each entry removed was.
-std::vector<std::string> removeOddEntries(const std::string& root);
-
 }  // namespace rayspec

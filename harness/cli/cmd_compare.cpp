@@ -8,12 +8,14 @@
 #include <ctime>
 #include <filesystem>
 
+#include "base/output_folder.h"
 #include "bundle/image_files.h"
 #include "bundle/results_io.h"
 #include "case/parse_case.h"
 #include "cli/commands.h"
 #include "cli/option_checks.h"
 #include "report/rule_catalog.h"
+#include "report/run_folder_writes.h"
 #include "report/run_summary.h"
 #include "report/write_reports.h"
 #include "results/file_name.h"
@@ -120,6 +122,13 @@ int runCompare(const CompareOptions& opt) {
     std::fprintf(stderr,
                  "rayspec compare: %s holds no results (no results.json, no <case>/device/)\n",
                  opt.a.c_str());
+    return kExitSetup;
+  }
+  std::vector<std::string> names;
+  for (const Pair& p : pairs) names.push_back(p.name);
+  const Result<OutputFolder> held = claimOutputFolder(opt.out, runFolderWrites(names), "compare");
+  if (!held) {
+    std::fprintf(stderr, "rayspec compare: %s\n", held.error().format().c_str());
     return kExitSetup;
   }
   RunInfo info;

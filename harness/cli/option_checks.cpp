@@ -1,37 +1,15 @@
 #include "cli/option_checks.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-
-#include "base/plain_tree.h"
+#include <set>
 
 namespace rayspec {
 namespace fs = std::filesystem;
-
-std::string outputFolderProblem(const std::string& dir) {
-  if (dir.empty()) return "the output folder is empty (give a folder)";
-  std::error_code ec;
-  const fs::path canonical = fs::weakly_canonical(fs::absolute(dir), ec);
-  if (!ec && canonical == canonical.root_path())
-    return "the output folder " + dir + " is the filesystem root";
-  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
-    return "the output folder " + dir + " is a file";
-  fs::create_directories(dir, ec);
-  if (ec) return "the output folder " + dir + " cannot be created: " + ec.message();
-  // Nothing is ever written or deleted through a link in it: such entries go
-  // themselves, and the user is told.
-  for (const std::string& odd : removeOddEntries(dir))
-    std::fprintf(stderr, "rayspec: removed from the output folder: %s (never followed)\n",
-                 odd.c_str());
-  const fs::path probe = fs::path(dir) / ".rayspec-write-probe";
-  const bool writable = static_cast<bool>(std::ofstream(probe) << "");
-  fs::remove(probe, ec);
-  return writable ? std::string() : "the output folder " + dir + " is not writable";
-}
 
 CLI::Validator outputFolder() {
   return CLI::Validator(outputFolderProblem, "FOLDER");
@@ -68,28 +46,87 @@ std::string outputOverlapsInputs(const std::string& out, const std::vector<std::
   return "";
 }
 
+namespace {
+
+bool isDigit(char c) {
+  return c >= '0' && c <= '9';
+}
+
+// The count of decimal digits at the start of text.
+size_t leadingDigits(const std::string& text) {
+  size_t n = 0;
+  while (n < text.size() && isDigit(text[n])) ++n;
+  return n;
+}
+
+}  // namespace
+
 CLI::Validator positiveSeconds() {
   return CLI::Validator(
       [](const std::string& text) -> std::string {
-        char* end = nullptr;
-        const double v = std::strtod(text.c_str(), &end);
-        if (end == text.c_str() || *end != '\0' || !std::isfinite(v) || v <= 0)
-          return "'" + text + "' is no number of seconds above 0";
+        const size_t whole = leadingDigits(text);
+        const bool point = whole < text.size() && text[whole] == '.';
+        const size_t fraction = point ? leadingDigits(text.substr(whole + 1)) : 0;
+        const bool plain = whole + fraction > 0 && whole + point + fraction == text.size();
+        const double v = plain ? std::strtod(text.c_str(), nullptr) : 0;
+        if (!plain || !std::isfinite(v) || v <= 0)
+          return "'" + text + "' is no number of seconds above 0 (digits, a decimal point)";
         return {};
       },
       "SECONDS>0");
 }
 
+CLI::Validator wholeCount() {
+  return CLI::Validator(
+      [](const std::string& text) -> std::string {
+        if (text.empty() || leadingDigits(text) != text.size() || text.size() > 9)
+          return "'" + text + "' is no count (decimal digits only, at most 9)";
+        return {};
+      },
+      "COUNT");
+}
+
+namespace {
+
+// Empty when text is digits and an optional unit; else the problem.
+std::string memorySizeTextProblem(const std::string& text) {
+  const size_t digits = leadingDigits(text);
+  std::string unit = text.substr(digits);
+  for (char& c : unit) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  static const std::set<std::string> kUnits = {"",    "B", "K",  "KB",  "KIB", "M",  "MB",
+                                               "MIB", "G", "GB", "GIB", "T",   "TB", "TIB"};
+  if (digits > 0 && digits <= 20 && kUnits.count(unit) == 1) return "";
+  return "'" + text +
+         "' is no memory size (decimal digits, then K, M, G or T; e.g. 8G, 512M; 0: none)";
+}
+
+// Empty when bytes (decimal, as CLI::AsSizeValue wrote it) is a usable limit.
+std::string memoryLimitProblem(const std::string& bytes) {
+  errno = 0;
+  const unsigned long long v = std::strtoull(bytes.c_str(), nullptr, 10);
+  if (errno == ERANGE || bytes.empty() || leadingDigits(bytes) != bytes.size())
+    return "'" + bytes + "' bytes is more than a limit can be (below 2^64)";
+  if (v == 0 || v >= kMinMemoryLimit) return "";
+  return std::to_string(v >> 20) + " MiB is below " + std::to_string(kMinMemoryLimit >> 20) +
+         " MiB: a case side needs about that much to create its Vulkan device (validation "
+         "layer on) or the model's Embree device (0: no limit)";
+}
+
+}  // namespace
+
 CLI::Validator memoryLimit() {
   return CLI::Validator(
-      [](const std::string& bytes) -> std::string {
-        const unsigned long long v = std::strtoull(bytes.c_str(), nullptr, 10);
-        if (v == 0 || v >= kMinMemoryLimit) return {};
-        return std::to_string(v >> 20) + " MiB is below " + std::to_string(kMinMemoryLimit >> 20) +
-               " MiB: a case side needs about that much to create its Vulkan device (validation "
-               "layer on) or the model's Embree device (0: no limit)";
+      [](std::string& text) -> std::string {
+        if (std::string problem = memorySizeTextProblem(text); !problem.empty()) return problem;
+        const std::string written = text;
+        try {
+          if (std::string problem = CLI::AsSizeValue(false)(text); !problem.empty()) return problem;
+        } catch (const CLI::Error& e) {  // a size past 64 bits, say
+          return "'" + written + "' is no memory size: " + e.what();
+        }
+        return memoryLimitProblem(text);
       },
-      "BYTES");
+      "SIZE");
 }
 
 CLI::Validator decimalSeed() {

@@ -7,15 +7,12 @@
 #include <string>
 #include <vector>
 
+#include "base/output_folder.h"
+
 namespace rayspec {
 
-// An output folder: not empty, not the filesystem root, not a file; created
-// when missing and writable (a probe file is made and removed). Every entry
-// in it that is neither a regular file nor a folder (a link to write or
-// delete through, a FIFO) is removed itself, with a line on stderr. Empty
-// when the folder is usable; else the problem.
-std::string outputFolderProblem(const std::string& dir);
-// The same as a validator of an --out option.
+// An --out option's value: base/output_folder.h outputFolderProblem, which
+// changes nothing; the command claims the folder after its own checks.
 CLI::Validator outputFolder();
 
 // Empty when the output folder and every input folder lie apart; else the
@@ -24,11 +21,20 @@ CLI::Validator outputFolder();
 // would delete or overwrite what is read.
 std::string outputOverlapsInputs(const std::string& out, const std::vector<std::string>& inputs);
 
-// Seconds: a finite number above 0.
+// Every number an option takes is written plainly: digits (a decimal point
+// in seconds, a unit after a size), no sign, no space, no "0x", so that what
+// is checked is what is used.
+
+// Seconds: a finite number above 0 ("2", "0.5").
 CLI::Validator positiveSeconds();
 
-// A memory limit in bytes (after CLI::AsSizeValue): 0 (none) or at least
-// kMinMemoryLimit, below which a case side cannot even create its devices.
+// A count (jobs, threads, attempts): decimal digits only, at most 9 of them.
+CLI::Validator wholeCount();
+
+// A memory limit, as a transform to bytes: decimal digits and an optional
+// unit (K, M, G, T; KB, KiB ...), checked as written, then converted by
+// CLI::AsSizeValue; in bytes 0 (none) or at least kMinMemoryLimit, below
+// which a case side cannot even create its devices, and below 2^64.
 constexpr unsigned long long kMinMemoryLimit = 256ull << 20;
 CLI::Validator memoryLimit();
 

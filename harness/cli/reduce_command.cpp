@@ -30,6 +30,7 @@ Subcommand addReduceCommand(CLI::App& app) {
                      "QualityWarning), `crash` (a Crash or Timeout), or text of the finding's "
                      "message; default: the case's worst finding, same rule and kind");
   reduce->add_option("--max-attempts", o.max_attempts, "Variants to try at most")
+      ->check(wholeCount())
       ->capture_default_str();
   reduce->add_option("--device", o.run.device, "Vulkan device name (substring)");
   reduce->add_option("--icd", o.run.icd_files, kIcdOptionHelp)->delimiter(':');

@@ -74,6 +74,7 @@ void addSideOptions(CLI::App* run, RunOptions& run_opt) {
   run->add_flag("--strict-validation", run_opt.strict_validation,
                 "Fail when the validation layer is not installed (ctest sets this)");
   run->add_option("--threads", run_opt.threads, "Model threads (0: all cores)")
+      ->check(wholeCount())
       ->capture_default_str();
   run->add_flag("--brief", run_opt.brief,
                 "Print only the cases that fail the run as they end, and only them in the summary "
@@ -98,13 +99,13 @@ void addIsolationOptions(CLI::App* run, RunOptions& run_opt) {
                   "Memory each worker process may hold (e.g. 8G, 512M; 0: no limit): its private "
                   "data (RLIMIT_DATA) and its resident set, shared mappings included (watched "
                   "every 50 ms); beyond it the case that was running is a Crash")
-      ->transform(CLI::AsSizeValue(false))
-      ->check(memoryLimit())
+      ->transform(memoryLimit())
       ->default_str(std::to_string(kDefaultMemoryLimit >> 30) + "G");
   run->add_option(
          "-j,--jobs", run_opt.jobs,
          "Cases at once (0: one per core, at most 16; 4 on a GPU); each side of a case runs in a "
          "long-lived worker process, a new one after a crash, timeout or memory-limit hit")
+      ->check(wholeCount())
       ->capture_default_str();
   run->add_option("--device-per-case", run_opt.device_per_case,
                   "A VkDevice of its own for each case in a worker (auto: on lavapipe, whose "

@@ -88,6 +88,7 @@ Subcommand addMutateCommand(CLI::App& app) {
       ->capture_default_str();
   mutate->add_option("--filter", mutate_opt.filter, "Cases (glob)")->capture_default_str();
   mutate->add_option("--threads", mutate_opt.threads, "Model threads (0: all cores)")
+      ->check(wholeCount())
       ->capture_default_str();
 
   return {mutate, [opt] {

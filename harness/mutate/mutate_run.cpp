@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "base/output_folder.h"
+#include "base/whole_file.h"
 #include "library/case_discovery.h"
 #include "model/model_engine.h"
 #include "mutate/kill_matrix.h"
@@ -41,11 +43,9 @@ CaseMutation mutateOne(const CaseFile& f, const MutateOptions& opt) {
   return mutateCase(c, plan, device, model, opt.threads);
 }
 
-bool writeFile(const fs::path& p, const std::string& text) {
-  std::ofstream out(p, std::ios::binary);
-  out << text;
-  return static_cast<bool>(out);
-}
+// The reports of a kill matrix in --out.
+constexpr const char* kMutateText = "mutate.txt";
+constexpr const char* kMutateJson = "mutate.json";
 
 }  // namespace
 
@@ -61,6 +61,12 @@ int runMutate(const MutateOptions& opt) {
                  opt.run_dir.c_str());
     return 2;
   }
+  const Result<OutputFolder> held =
+      claimOutputFolder(opt.out, {kMutateText, kMutateJson}, "mutate");
+  if (!held) {
+    std::fprintf(stderr, "rayspec mutate: %s\n", held.error().format().c_str());
+    return 2;
+  }
   std::vector<CaseMutation> cases;
   for (const CaseFile& f : findCases(opt.cases_dir, opt.filter)) {
     if (!fs::exists(fs::path(savedBundleDir(opt.run_dir, f.name)) / "results.json")) continue;
@@ -69,12 +75,12 @@ int runMutate(const MutateOptions& opt) {
   const KillMatrix m = buildKillMatrix(cases);
   const std::string text = killMatrixText(m);
   std::printf("%s", text.c_str());
-  fs::create_directories(opt.out, ec);
   const std::string device = savedDevices(opt.run_dir, findCases(opt.cases_dir, opt.filter));
-  if (!writeFile(fs::path(opt.out) / "mutate.txt", text) ||
-      !writeFile(fs::path(opt.out) / "mutate.json", killMatrixJson(m, opt.run_dir, device))) {
-    std::fprintf(stderr, "rayspec mutate: cannot write %s/mutate.txt and mutate.json\n",
-                 opt.out.c_str());
+  Result<void> written = writeWholeFile(opt.out + "/" + kMutateText, text);
+  if (written)
+    written = writeWholeFile(opt.out + "/" + kMutateJson, killMatrixJson(m, opt.run_dir, device));
+  if (!written) {
+    std::fprintf(stderr, "rayspec mutate: %s\n", written.error().format().c_str());
     return 2;
   }
   if (!m.judged) {

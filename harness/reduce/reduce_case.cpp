@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "base/output_folder.h"
 #include "base/whole_file.h"
 #include "library/case_discovery.h"
 #include "model/model_engine.h"
@@ -151,8 +152,11 @@ int runReduce(const ReduceOptions& requested) {
   if (!parsed.value || !parsed.errors.empty())
     return badInput(parsed.errors.empty() ? f->path + ": cannot read the case"
                                           : parsed.errors.front().format());
+  const Result<OutputFolder> held =
+      claimOutputFolder(opt.out, {kReductionWrites.begin(), kReductionWrites.end()}, "reduce");
+  if (!held) return badInput(held.error().format());
   RunInfo info;
-  opt.run.out = opt.out + "/runs";
+  opt.run.out = opt.out + "/" + kReductionRunsFolder;
   if (Result<void> setup = reductionSetup(opt, *f, info); !setup)
     return badInput(setup.error().format());
 

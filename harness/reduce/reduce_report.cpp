@@ -86,9 +86,9 @@ std::string reducedDescription(const ReductionRecord& r) {
 std::string writeReduction(const ReductionRecord& r, const std::string& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  for (const auto& [name, text] :
-       {std::pair{"reduced.yaml", r.reduced_text}, std::pair{"report.md", reportMarkdown(r)},
-        std::pair{"steps.txt", stepsText(r)}})
+  for (const auto& [name, text] : {std::pair{kReducedCaseFile, r.reduced_text},
+                                   std::pair{kReductionReportFile, reportMarkdown(r)},
+                                   std::pair{kReductionStepsFile, stepsText(r)}})
     if (!writeText(dir + "/" + name, text)) return "cannot write " + dir + "/" + name;
   return "";
 }

@@ -4,6 +4,8 @@
 // (every attempt and its verdict).
 #pragma once
 
+#include <array>
+
 #include <string>
 #include <vector>
 
@@ -28,6 +30,18 @@ struct ReductionRecord {
 
 // The `description:` of the reduced case.
 std::string reducedDescription(const ReductionRecord& r);
+
+// What a reduction writes in its --out: the three files of writeReduction,
+// the runs of its variants (runs/) and, for a device command, the case files
+// it reads (cases/).
+inline constexpr const char* kReducedCaseFile = "reduced.yaml";
+inline constexpr const char* kReductionReportFile = "report.md";
+inline constexpr const char* kReductionStepsFile = "steps.txt";
+inline constexpr const char* kReductionRunsFolder = "runs";
+inline constexpr const char* kReductionCasesFolder = "cases";
+inline constexpr std::array<const char*, 5> kReductionWrites = {
+    kReducedCaseFile, kReductionReportFile, kReductionStepsFile, kReductionRunsFolder,
+    kReductionCasesFolder};
 
 // The three files into dir; the error ("" none).
 std::string writeReduction(const ReductionRecord& r, const std::string& dir);

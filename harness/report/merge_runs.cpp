@@ -4,9 +4,11 @@
 #include <filesystem>
 #include <map>
 
+#include "base/output_folder.h"
 #include "base/plain_tree.h"
 #include "report/baseline_gate.h"
 #include "report/rule_catalog.h"
+#include "report/run_folder_writes.h"
 
 namespace rayspec {
 namespace fs = std::filesystem;
@@ -68,6 +70,9 @@ Result<SavedRun> mergeRuns(const std::vector<std::string>& dirs, const std::stri
     runs.push_back(std::move(run));
   }
   if (runs.empty()) return errorMessage("no folder to merge");
+  std::vector<std::string> names;
+  for (const auto& [name, dir] : seen) names.push_back(name);
+  RAYSPEC_TRY(const OutputFolder held, claimOutputFolder(out, runFolderWrites(names), "merge"));
   SavedRun merged;
   RunInfo& info = merged.info;
   info = runs[0].info;

@@ -154,12 +154,12 @@ Result<void> writeReports(const std::vector<CaseOutcome>& outcomes, const RunInf
   std::filesystem::create_directories(dir, ec);
   if (ec) return errorOf(ErrorKind::Harness, "cannot create " + dir + ": " + ec.message());
   for (const Result<void>& written :
-       {writeResultsCsv(outcomes, dir + "/results.csv"),
-        writeJunitXml(outcomes, dir + "/junit.xml"),
-        writeSummaryJson(outcomes, info, dir + "/summary.json"),
-        writeSummaryText(outcomes, info, dir + "/summary.txt"),
-        writeFailuresCsv(outcomes, info.baseline, dir + "/failures.csv"),
-        writeReportHtml(outcomes, info, dir + "/report.html")})
+       {writeResultsCsv(outcomes, dir + "/" + kResultsCsvFile),
+        writeJunitXml(outcomes, dir + "/" + kJunitXmlFile),
+        writeSummaryJson(outcomes, info, dir + "/" + kSummaryJsonFile),
+        writeSummaryText(outcomes, info, dir + "/" + kSummaryTextFile),
+        writeFailuresCsv(outcomes, info.baseline, dir + "/" + kFailuresCsvFile),
+        writeReportHtml(outcomes, info, dir + "/" + kReportHtmlFile)})
     if (!written) return written.error();
   return {};
 }

@@ -18,6 +18,8 @@
 //                 shown); a row per other case (report/report_case_html.h)
 #pragma once
 
+#include <array>
+
 #include <map>
 #include <string>
 #include <vector>
@@ -66,6 +68,17 @@ Result<void> writeSummaryText(const std::vector<CaseOutcome>& outcomes, const Ru
 std::string runCompleteness(const std::vector<CaseOutcome>& outcomes, const RunInfo& info);
 Result<void> writeReportHtml(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
                              const std::string& path);
+
+// The names of the files above, as writeReports writes them into its folder.
+inline constexpr const char* kResultsCsvFile = "results.csv";
+inline constexpr const char* kJunitXmlFile = "junit.xml";
+inline constexpr const char* kSummaryJsonFile = "summary.json";
+inline constexpr const char* kSummaryTextFile = "summary.txt";
+inline constexpr const char* kFailuresCsvFile = "failures.csv";
+inline constexpr const char* kReportHtmlFile = "report.html";
+inline constexpr std::array<const char*, 6> kReportFiles = {kResultsCsvFile,  kJunitXmlFile,
+                                                            kSummaryJsonFile, kSummaryTextFile,
+                                                            kFailuresCsvFile, kReportHtmlFile};
 
 // All of the above into dir (each written even when one before failed);
 // returns the first error.

@@ -24,7 +24,7 @@ std::string fileNameProblem(const std::string& name) {
 
 void removeCaseOutputs(const std::string& case_dir) {
   std::error_code ec;
-  for (const char* part : {"device", "model", "diff", "rerun", "cost.json"})
+  for (const char* part : kCaseOutputs)
     std::filesystem::remove_all(std::filesystem::path(case_dir) / part, ec);
 }
 

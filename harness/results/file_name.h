@@ -2,6 +2,7 @@
 // digits, '-', '_' and '.', at most kMaxFileName bytes, not "." or "..".
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <string>
 
@@ -17,6 +18,11 @@ std::string fileNameProblem(const std::string& name);
 // name read from input (case files, sweeps, saved bundles, summaries,
 // baselines) that becomes a path below an output or input folder passes here.
 std::string caseNameProblem(const std::string& name);
+
+// What a case's run writes in its folder: its device and model bundles, diff
+// images, re-run and cost.json.
+inline constexpr std::array<const char*, 5> kCaseOutputs = {"device", "model", "diff", "rerun",
+                                                            "cost.json"};
 
 // Removes what a case's run writes in its folder (its device and model
 // bundles, diff images, re-run and cost.json) and nothing else: a folder the

@@ -16,6 +16,7 @@
 #include <set>
 #include <thread>
 
+#include "base/output_folder.h"
 #include "metamorphic/feature_path.h"
 #include "metamorphic/motion_spec.h"
 #include "metamorphic/permute_case.h"
@@ -23,6 +24,7 @@
 #include "report/case_journal.h"
 #include "report/outcome_json.h"
 #include "report/rule_catalog.h"
+#include "report/run_folder_writes.h"
 #include "run/cache_dir.h"
 #include "run/case_order.h"
 #include "run/case_steps.h"
@@ -459,6 +461,14 @@ int runPreparedCases(const RunOptions& opt, const std::vector<CaseFile>& files,
   return finishRun(book, info, opt, files.size(), device.found);
 }
 
+// The run folder, held until the run ends; nothing in it is written through
+// a link.
+Result<OutputFolder> claimRunFolder(const RunOptions& opt, const std::vector<CaseFile>& files) {
+  std::vector<std::string> names;
+  for (const CaseFile& f : files) names.push_back(f.name);
+  return claimOutputFolder(opt.out, runFolderWrites(names), "run");
+}
+
 }  // namespace
 
 // The steps of a run; a step that fails ends it before any case runs
@@ -477,6 +487,8 @@ int runCases(const RunOptions& requested) {
   const Result<Baseline> baseline = loadRunBaseline(opt);
   if (!baseline) return setupFailed(baseline.error());
   info.baseline = baseline->file;
+  const Result<OutputFolder> out = claimRunFolder(opt, *files);
+  if (!out) return setupFailed(out.error());
   Result<ChosenDevice> device = chooseDevice(opt, *files, icd, info);
   if (!device) return setupFailed(device.error());
   const unsigned jobs = jobCount(opt, files->size(), device->gpu);

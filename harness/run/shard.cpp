@@ -15,16 +15,15 @@ std::string Shard::describe() const {
 
 namespace {
 
-// 1 to 6 decimal digits from `at` (spaces around them skipped); nullopt
-// otherwise. A plain scanner: no regular expression runs on input text.
+// 1 to 6 decimal digits from `at`, nothing else (no sign, no space: as
+// every other number rayspec's options take); nullopt otherwise. A plain
+// scanner: no regular expression runs on input text.
 std::optional<unsigned> numberAt(const std::string& text, size_t& at) {
-  while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at]))) ++at;
   const size_t start = at;
   unsigned v = 0;
   while (at < text.size() && std::isdigit(static_cast<unsigned char>(text[at])) && at - start < 7)
     v = v * 10 + static_cast<unsigned>(text[at++] - '0');
   const size_t digits = at - start;
-  while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at]))) ++at;
   if (digits == 0 || digits > 6) return std::nullopt;
   return v;
 }

@@ -56,6 +56,8 @@ bool countBundle(const std::string& dir, LeakCounts* counts, std::string* device
 
 }  // namespace
 
+constexpr const char* kCommand = "stability";
+
 int runStability(const StabilityOptions& opt) {
   const std::vector<StabilityCase> cases = stabilityCases(opt.run);
   if (cases.empty()) {
@@ -65,9 +67,14 @@ int runStability(const StabilityOptions& opt) {
         opt.run.filter.c_str(), opt.run.cases_dir.c_str());
     return kExitSetup;
   }
+  const Result<OutputFolder> held = claimStudyFolder(opt.out, kCommand);
+  if (!held) {
+    std::fprintf(stderr, "rayspec stability: %s\n", held.error().format().c_str());
+    return kExitSetup;
+  }
   const bool with_device = !opt.run.no_device;
-  const std::string runs = opt.out + "/runs";
-  if (const int rc = runTiers({opt.run, {opt.run.filter}, opt.tiers, runs, "stability"});
+  const std::string runs = opt.out + "/" + kStudyRunsFolder;
+  if (const int rc = runTiers({opt.run, {opt.run.filter}, opt.tiers, runs, kCommand});
       rc != kExitPass)
     return rc;
   std::vector<StabilityEntry> entries;
@@ -103,15 +110,17 @@ int runStability(const StabilityOptions& opt) {
     }
   std::filesystem::create_directories(opt.out);
   const std::string table = formatStabilityTable(entries);
-  Result<void> written = writeWholeFile(opt.out + "/stability.txt", table);
+  Result<void> written = writeWholeFile(studyReport(opt.out, kCommand, "txt"), table);
   if (written)
-    written = writeWholeFile(opt.out + "/stability.json", stabilityJson(entries).dump(2) + "\n");
+    written = writeWholeFile(studyReport(opt.out, kCommand, "json"),
+                             stabilityJson(entries).dump(2) + "\n");
   std::string error = written ? std::string() : written.error().format();
   if (error.empty()) {
     const PlotLayout layout{static_cast<int>(stabilitySources(entries).size()), 330, 290,
                             "Leaks and double hits per 1000 rays (rows: families; columns: "
                             "model tiers and devices)"};
-    if (Result<void> r = writePlots(opt.out + "/stability.png", stabilityPanels(entries), layout);
+    if (Result<void> r =
+            writePlots(studyReport(opt.out, kCommand, "png"), stabilityPanels(entries), layout);
         !r)
       error = r.error().format();
   }

@@ -58,4 +58,14 @@ std::string shortDeviceName(const std::string& device) {
   return cut == std::string::npos ? device : device.substr(0, cut);
 }
 
+Result<OutputFolder> claimStudyFolder(const std::string& out, const std::string& command) {
+  std::vector<std::string> writes = {kStudyRunsFolder};
+  for (const char* ext : {"txt", "json", "png"}) writes.push_back(command + "." + ext);
+  return claimOutputFolder(out, writes, command);
+}
+
+std::string studyReport(const std::string& out, const std::string& command, const char* ext) {
+  return out + "/" + command + "." + ext;
+}
+
 }  // namespace rayspec

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "base/output_folder.h"
 #include "results/results.h"
 #include "run/run_options.h"
 
@@ -22,6 +23,14 @@ struct TierRuns {
   std::string out;                                               // the run folders: out/<tier>
   std::string command;  // "stability": names the progress lines and notes
 };
+
+// The --out of a study (`command`: "stability", "accuracy"), claimed for
+// it (base/output_folder.h): its tier runs in runs/ and its report
+// <command>.txt, .json and .png.
+inline constexpr const char* kStudyRunsFolder = "runs";
+Result<OutputFolder> claimStudyFolder(const std::string& out, const std::string& command);
+// The report file of a study with this extension ("txt", "json", "png").
+std::string studyReport(const std::string& out, const std::string& command, const char* ext);
 
 // The run folder of one tier.
 std::string tierRunDir(const std::string& out, const std::string& tier);
