@@ -56,7 +56,7 @@ std::optional<Results> readRunBundle(const std::string& dir, const std::string& 
 
 std::string shortDeviceName(const std::string& device) {
   const size_t cut = device.find(" (");
-  return cut == std::string::npos ? device : device.substr(0, cut);
+  return visibleLine(cut == std::string::npos ? device : device.substr(0, cut));
 }
 
 }  // namespace rayspec
