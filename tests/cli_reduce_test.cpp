@@ -2,8 +2,12 @@
 // planted fault, reduced; the reduced case must still fail with the fault,
 // pass without it, and be smaller. Exit 1 for a case that does not fail, 2
 // for a file that is not there.
+#include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <regex>
+#include <thread>
+#include <vector>
 
 #include "cli_helpers.h"
 
@@ -49,15 +53,16 @@ TEST(Reduce, ReducedCaseFailsWithTheFaultAndPassesWithout) {
 // --device-command: each variant's device side run by a command (here this
 // build's own device-only run with the layout fault offsets-ignored, standing
 // in for another driver such as tools/second-driver.sh device), judged here.
+const std::string kDeviceOnly = kBin +
+                                " run --no-model --cases \"$RAYSPEC_VARIANT_CASES\" --filter "
+                                "\"$RAYSPEC_VARIANT_NAME\" --out \"$RAYSPEC_VARIANT_OUT\" "
+                                "--plant-fault offsets-ignored";
+
 TEST(Reduce, ADeviceCommandRunsEachVariantsDeviceSide) {
   const std::string dir = cli::fresh("reduce-command");
   const std::string log = dir + "/reduce.log";
-  const std::string command = kBin +
-                              " run --no-model --cases \"$RAYSPEC_VARIANT_CASES\" --filter "
-                              "\"$RAYSPEC_VARIANT_NAME\" --out \"$RAYSPEC_VARIANT_OUT\" "
-                              "--plant-fault offsets-ignored";
-  ASSERT_EQ(sh(kBin + " reduce accel/layouts-triangles --device-command '" + command + "' --out " +
-                   dir + "/out",
+  ASSERT_EQ(sh(kBin + " reduce accel/layouts-triangles --device-command '" + kDeviceOnly +
+                   "' --out " + dir + "/out",
                log),
             0)
       << slurp(log);
@@ -128,6 +133,111 @@ TEST(Reduce, ACaseThatPassesIsNotReduced) {
   const std::string dir = cli::fresh("reduce-pass");
   EXPECT_EQ(sh(kBin + " reduce " + kCase + " --out " + dir + "/out", dir + "/log"), 1)
       << slurp(dir + "/log");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out/reduced.yaml"));
+}
+
+// A word for the shell this test's command lines go through.
+std::string quoted(const std::string& text) {
+  std::string out = "'";
+  for (char ch : text) out += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return out + "'";
+}
+
+// Every file called PWNED under dir.
+std::vector<std::string> pwned(const std::string& dir) {
+  std::vector<std::string> found;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir))
+    if (e.path().filename() == "PWNED") found.push_back(e.path().string());
+  return found;
+}
+
+// Issue 56, item 10: an --out path holding a quote and `$(touch PWNED)`.
+// The device command gets the paths in its environment, never in a shell
+// line, so nothing runs from the path; the reproduction report.md shows,
+// run by sh (with rayspec and sh standing in as functions that list their
+// arguments), passes the path as one word and runs nothing from it either.
+TEST(Reduce, AQuoteInTheOutPathRunsNothing) {
+  const std::string dir = cli::fresh("reduce-quoted"), work = dir + "/work";
+  std::filesystem::create_directories(work);
+  const std::string out = dir + "/o'$(touch PWNED)x`touch PWNED`";
+  const std::string log = dir + "/reduce.log";
+  ASSERT_EQ(sh("cd " + quoted(work) + " && " + kBin +
+                   " reduce accel/layouts-triangles --max-attempts 3 --device-command " +
+                   quoted(kDeviceOnly) + " --out " + quoted(out),
+               log),
+            0)
+      << slurp(log);
+  EXPECT_TRUE(std::filesystem::exists(out + "/runs/variant-1/device")) << slurp(log);
+  EXPECT_EQ(pwned(dir), std::vector<std::string>{}) << slurp(log);
+  // The reproduction, run: every word as given.
+  const std::string report = slurp(out + "/report.md");
+  const size_t at = report.find("## Reproduce\n\n```\n");
+  ASSERT_NE(at, std::string::npos) << report;
+  const size_t begin = report.find('\n', report.find("```", at)) + 1;
+  const std::string line = report.substr(begin, report.find("\n```", begin) - begin);
+  const std::string script = dir + "/reproduce.sh";
+  std::ofstream(script) << "rayspec() { printf '%s\\n' \"$@\" > rayspec-args.txt; }\n"
+                        << "sh() { printf '%s\\n' \"$@\" > sh-args.txt; }\n"
+                        << line << "\n";
+  ASSERT_EQ(sh("cd " + quoted(work) + " && /bin/sh " + quoted(script), dir + "/reproduce.log"), 0)
+      << line << "\n"
+      << slurp(dir + "/reproduce.log");
+  EXPECT_EQ(pwned(dir), std::vector<std::string>{}) << line;
+  EXPECT_EQ(slurp(work + "/sh-args.txt"), "-c\n" + kDeviceOnly + "\n") << line;
+  EXPECT_EQ(slurp(work + "/rayspec-args.txt"),
+            "run\n--cases\n" + out + "/cases\n--device-results\n" + out + "/device\n")
+      << line;
+}
+
+// Issue 56, item 12: a device command that runs past --timeout is killed
+// with its process group (the sleep it left in the background too), and
+// the reduction ends: exit 2 naming the command, the timeout and the log.
+TEST(Reduce, ADeviceCommandPastTheTimeoutIsKilledWithItsGroup) {
+  const std::string dir = cli::fresh("reduce-command-timeout");
+  const std::string pid_file = dir + "/sleeper.pid";
+  const std::string command = "sleep 300 & echo $! > " + pid_file + "; wait";
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(sh(kBin + " reduce accel/layouts-triangles --timeout 2 --device-command " +
+                   quoted(command) + " --out " + dir + "/out",
+               dir + "/log"),
+            2)
+      << slurp(dir + "/log");
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(60));
+  const std::string out = slurp(dir + "/log");
+  EXPECT_NE(out.find("the device command `" + command + "` ran longer than --timeout 2 s"),
+            std::string::npos)
+      << out;
+  EXPECT_NE(out.find(dir + "/out/runs/variant-1/command.log"), std::string::npos) << out;
+  std::ifstream in(pid_file);
+  int pid = 0;
+  ASSERT_TRUE(in >> pid) << "the command did not start its sleep";
+  // Gone, or a zombie no one has reaped yet: not running.
+  std::string stat = slurp("/proc/" + std::to_string(pid) + "/stat");
+  for (int i = 0; i < 50 && !stat.empty() && stat.find(") Z") == std::string::npos; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    stat = slurp("/proc/" + std::to_string(pid) + "/stat");
+  }
+  EXPECT_TRUE(stat.empty() || stat.find(") Z") != std::string::npos) << stat;
+}
+
+// Issue 56, item 12: a device command that exits 3 and writes nothing is no
+// case that does not fail: exit 2 naming the command, its status and its
+// log, which holds what it said.
+TEST(Reduce, ADeviceCommandThatFailsLeavingNothingIsExit2) {
+  const std::string dir = cli::fresh("reduce-command-fails");
+  const std::string command = "echo nothing here; exit 3";
+  EXPECT_EQ(sh(kBin + " reduce accel/layouts-triangles --device-command " + quoted(command) +
+                   " --out " + dir + "/out",
+               dir + "/log"),
+            2)
+      << slurp(dir + "/log");
+  const std::string out = slurp(dir + "/log"),
+                    command_log = dir + "/out/runs/variant-1/command.log";
+  EXPECT_NE(out.find("the device command `" + command +
+                     "` exited with status 3 and left no results (its log: " + command_log + ")"),
+            std::string::npos)
+      << out;
+  EXPECT_EQ(slurp(command_log), "nothing here\n");
   EXPECT_FALSE(std::filesystem::exists(dir + "/out/reduced.yaml"));
 }
 

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "hostile_text.h"
 #include "tiers/tier_runs.h"
 
 namespace rayspec {
@@ -26,6 +27,14 @@ TEST(TierRuns, NamesFoldersAndBundles) {
   EXPECT_EQ(shortDeviceName("llvmpipe (LLVM 15.0.6, 256 bits) (Mesa 25)"), "llvmpipe");
   EXPECT_EQ(shortDeviceName("NVIDIA H100"), "NVIDIA H100");
   EXPECT_FALSE(readRunBundle("/nonexistent/case/model", "test").has_value());
+}
+
+// A saved bundle's device name labels the tables: shown, never obeyed.
+TEST(TierRuns, ASavedDeviceNameIsShownNotObeyed) {
+  EXPECT_EQ(shortDeviceName("llvmpipe (LLVM 15.0.6, 256 bits)"), "llvmpipe");
+  const std::string label = shortDeviceName(testing_support::kHostileText);
+  EXPECT_EQ(testing_support::obeyedText(label), "") << label;
+  EXPECT_NE(label.find("\\x1B]52;"), std::string::npos) << label;
 }
 
 }  // namespace

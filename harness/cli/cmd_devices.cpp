@@ -4,6 +4,8 @@
 // and the options that select one.
 #include <cstdio>
 
+#include "base/shell_word.h"
+#include "base/visible_text.h"
 #include "cli/commands.h"
 #include "cli/limits_check.h"
 #include "run/icd_probe.h"
@@ -12,18 +14,6 @@
 
 namespace rayspec {
 namespace {
-
-// A word for the shell: quoted when it holds anything but [A-Za-z0-9._/-].
-std::string shellWord(const std::string& s) {
-  bool plain = !s.empty();
-  for (char c : s)
-    plain = plain && (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' ||
-                      c == '/' || c == '-');
-  if (plain) return s;
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
 
 // A value of DeviceInfo as `rayspec devices` prints it.
 std::string deviceValueText(uint32_t v) {
@@ -49,7 +39,7 @@ std::string deviceValueText(const std::vector<std::string>& v) {
 
 // One line of the limits; none for a field without a label.
 void printDeviceField(const char* label, const std::string& value) {
-  if (label) std::printf("        %-30s %s\n", label, value.c_str());
+  if (label) std::printf("        %-30s %s\n", label, visibleLine(value).c_str());
 }
 
 // The rows of vulkan/device_info_fields.h that have a label, in its order.
@@ -69,24 +59,27 @@ struct LimitsRun {
 
 // One manifest's devices; returns how many are usable.
 int printProbe(const IcdProbe& p, LimitsRun& limits) {
-  std::printf("ICD %s (library %s%s%s)\n", p.manifest.path.c_str(), p.manifest.library_path.c_str(),
-              p.manifest.api_version.empty() ? "" : ", Vulkan ", p.manifest.api_version.c_str());
+  std::printf("ICD %s (library %s%s%s)\n", visibleLine(p.manifest.path).c_str(),
+              visibleLine(p.manifest.library_path).c_str(),
+              p.manifest.api_version.empty() ? "" : ", Vulkan ",
+              visibleLine(p.manifest.api_version).c_str());
   if (p.devices.empty())
     std::printf("    NOT USABLE: %s\n",
-                p.failure.empty() ? "no physical device" : p.failure.c_str());
+                p.failure.empty() ? "no physical device" : visibleLine(p.failure).c_str());
   int usable = 0;
   for (const DeviceInfo& d : p.devices) {
     const DeviceUsability u = deviceUsability(d);
-    std::printf("    [%u] %s: %s%s\n", d.index, d.name.c_str(),
+    std::printf("    [%u] %s: %s%s\n", d.index, visibleLine(d.name).c_str(),
                 u == DeviceUsability::Usable ? "USABLE" : "NOT USABLE: ",
                 u == DeviceUsability::Usable ? "" : usabilityReason(u, d).c_str());
     std::printf("        driver %s (%s), Vulkan %s\n",
-                d.driver_name.empty() ? "?" : d.driver_name.c_str(), d.driver_info.c_str(),
-                d.api_version.c_str());
+                d.driver_name.empty() ? "?" : visibleLine(d.driver_name).c_str(),
+                visibleLine(d.driver_info).c_str(), visibleLine(d.api_version).c_str());
     if (u != DeviceUsability::Usable) continue;
     ++usable;
-    std::printf("        select: --icd %s --device %s\n", shellWord(p.manifest.path).c_str(),
-                shellWord(d.name).c_str());
+    std::printf("        select: --icd %s --device %s\n",
+                visibleLine(shellWord(p.manifest.path)).c_str(),
+                visibleLine(shellWord(d.name)).c_str());
     printLimits(d);
     if (!limits.check) continue;
     const LimitsVerdict v = printLimitChecks(d, limits.baseline);
@@ -125,7 +118,8 @@ int runDevices(const DevicesOptions& opt) {
   int usable = 0;
   for (const IcdManifest& m : search.manifests)
     usable += printProbe(probeIcd(m, ChildLimits{kProbeSeconds, 0}), limits);
-  for (const std::string& e : search.errors) std::printf("NOT USABLE: %s\n", e.c_str());
+  for (const std::string& e : search.errors)
+    std::printf("NOT USABLE: %s\n", visibleLine(e).c_str());
   const size_t manifests = search.manifests.size() + search.errors.size();
   if (usable == 0) {
     std::printf(

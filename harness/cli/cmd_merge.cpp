@@ -1,5 +1,6 @@
 #include <cstdio>
 
+#include "base/visible_text.h"
 #include "cli/commands.h"
 #include "cli/option_checks.h"
 #include "report/merge_runs.h"
@@ -17,7 +18,7 @@ int runMerge(const MergeOptions& opt) {
   }
   const Result<Baseline> loaded = loadBaselineSet(opt.baseline, opt.flakes, opt.skips);
   if (!loaded) {
-    std::fprintf(stderr, "rayspec merge: %s\n", loaded.error().format().c_str());
+    std::fprintf(stderr, "rayspec merge: %s\n", visibleLine(loaded.error().format()).c_str());
     return kExitSetup;
   }
   const Baseline& baseline = *loaded;
@@ -26,7 +27,7 @@ int runMerge(const MergeOptions& opt) {
   const Result<SavedRun> run =
       mergeRuns(opt.dirs, opt.out, baseline, catalog ? *catalog : std::vector<Rule>{});
   if (!run) {
-    std::fprintf(stderr, "rayspec merge: %s\n", run.error().format().c_str());
+    std::fprintf(stderr, "rayspec merge: %s\n", visibleLine(run.error().format()).c_str());
     return kExitSetup;
   }
   const SavedRun& merged = *run;
@@ -34,7 +35,7 @@ int runMerge(const MergeOptions& opt) {
   for (const CaseOutcome& o : merged.outcomes) summary.add(o);
   for (const std::string& m : merged.info.teardown_errors) summary.addTeardownError(m);
   std::printf("Merged %zu folders: %zu cases on %s\n", opt.dirs.size(), merged.outcomes.size(),
-              merged.info.device.c_str());
+              visibleLine(merged.info.device).c_str());
   summary.print();
   if (merged.info.interrupted)
     std::printf("INTERRUPTED: %zu of %zu planned cases ran\n", merged.outcomes.size(),

@@ -37,14 +37,19 @@ Subcommand addReduceCommand(CLI::App& app) {
   reduce->add_option("--cases", o.run.cases_dir, "Folder of case files")->capture_default_str();
   reduce->add_option("--model", o.run.model_tier, "Model precision tier")->capture_default_str();
   reduce->add_option("--rules", o.run.rules_file, "Rule catalog")->capture_default_str();
-  reduce->add_option("--timeout", o.run.timeout, "Seconds per case side")
+  reduce
+      ->add_option("--timeout", o.run.timeout,
+                   "Seconds per case side (and per run of --device-command)")
       ->check(positiveSeconds())
       ->capture_default_str();
   reduce->add_option("--device-command", o.device_command,
                      "Run each variant's device side by this shell command, not on a device "
                      "here: it gets RAYSPEC_VARIANT_CASES (a folder holding the variant as "
                      "<case name>.yaml), RAYSPEC_VARIANT_NAME and RAYSPEC_VARIANT_OUT (where it "
-                     "leaves what `rayspec run --out` writes); `tools/second-driver.sh device` is "
+                     "leaves what `rayspec run --out` writes) in its environment, its output "
+                     "goes to OUT/runs/variant-<n>/command.log, and --timeout bounds each run "
+                     "(its process group is killed); one that runs out of time, or fails leaving "
+                     "no results, ends the reduction (exit 2). `tools/second-driver.sh device` is "
                      "one, for the second driver");
   reduce->add_flag("--no-validation", o.run.no_validation,
                    "Do not load the Khronos validation layer");

@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/visible_text.h"
+
 namespace rayspec {
 namespace {
 
@@ -113,7 +115,7 @@ std::string killMatrixText(const KillMatrix& m) {
   out += "\n";
   out += std::to_string(m.judged) + " of " + std::to_string(m.cases) + " cases judged";
   out += m.not_judged.empty() ? "\n" : "; not judged:\n";
-  for (const auto& [name, why] : m.not_judged) out += "  " + name + ": " + why + "\n";
+  for (const auto& [name, why] : m.not_judged) out += "  " + name + ": " + visibleLine(why) + "\n";
   out += "Legal devices: " + std::to_string(m.false_alarms.size()) + " false alarms of " +
          std::to_string(m.legal_variants) + " variants (" + std::to_string(m.legal_cases) +
          " cases)\n";
@@ -122,7 +124,7 @@ std::string killMatrixText(const KillMatrix& m) {
   for (const FalseAlarm& a : m.false_alarms)
     out += "  false alarm: " + a.case_name + "  " + a.device + "  ray " +
            (a.ray < 0 ? std::string("-") : std::to_string(a.ray)) + "  " + a.rule + ": " +
-           a.headline + "\n";
+           visibleLine(a.headline) + "\n";
   if (m.unexplained()) {
     out += "\nSurvivors with no reason (holes):\n";
     for (const Survivor& s : m.survivors)

@@ -7,6 +7,8 @@
 #include <sstream>
 
 #include "base/output_folder.h"
+#include "base/shell_word.h"
+#include "base/visible_text.h"
 #include "base/whole_file.h"
 #include "library/case_discovery.h"
 #include "model/model_engine.h"
@@ -18,6 +20,7 @@
 #include "report/rule_catalog.h"
 #include "run/cache_dir.h"
 #include "run/fault_seam.h"
+#include "run/interrupt.h"
 #include "run/run_setup.h"
 #include "vulkan/icd_environment.h"
 
@@ -26,7 +29,7 @@ namespace fs = std::filesystem;
 namespace {
 
 int badInput(const std::string& why) {
-  std::fprintf(stderr, "rayspec reduce: %s\n", why.c_str());
+  std::fprintf(stderr, "rayspec reduce: %s\n", visibleLine(why).c_str());
   return kReduceBadInput;
 }
 
@@ -62,23 +65,30 @@ Result<YAML::Node> loadDocument(const std::string& text, const std::string& path
   }
 }
 
-std::string quoted(const std::string& s) {
-  return s.find_first_of(" '\"$*?") == std::string::npos ? s : "'" + s + "'";
-}
-
+// The command line that shows the failure, every word quoted for sh
+// (base/shell_word.h): a path or name holding a quote, `$(...)` or a
+// newline is text there, never shell code.
 std::string reproduction(const ReduceOptions& opt, const std::string& name) {
   if (!opt.device_command.empty())  // the device is the command's: it runs OUT/cases, judged here
-    return "RAYSPEC_VARIANT_CASES=" + quoted(opt.out + "/cases") +
-           " RAYSPEC_VARIANT_NAME=" + quoted(name) +
-           " RAYSPEC_VARIANT_OUT=" + quoted(opt.out + "/device") + " " + opt.device_command +
-           " && rayspec run --cases " + quoted(opt.out + "/cases") + " --device-results " +
-           quoted(opt.out + "/device");
-  std::string c = "rayspec run --case " + quoted(opt.out + "/reduced.yaml");
-  if (!opt.run.device.empty()) c += " --device " + quoted(opt.run.device);
-  for (const std::string& icd : opt.run.icd_files) c += " --icd " + quoted(icd);
-  if (!opt.run.plant_fault.empty()) c += " --plant-fault " + opt.run.plant_fault;
-  if (opt.run.model_tier != "exact") c += " --model " + opt.run.model_tier;
+    return "RAYSPEC_VARIANT_CASES=" + shellWord(opt.out + "/" + kReductionCasesFolder) +
+           " RAYSPEC_VARIANT_NAME=" + shellWord(name) +
+           " RAYSPEC_VARIANT_OUT=" + shellWord(opt.out + "/device") + " sh -c " +
+           shellWord(opt.device_command) + " && rayspec run --cases " +
+           shellWord(opt.out + "/" + kReductionCasesFolder) + " --device-results " + shellWord(opt.out + "/device");
+  std::string c = "rayspec run --case " + shellWord(opt.out + "/" + kReducedCaseFile);
+  if (!opt.run.device.empty()) c += " --device " + shellWord(opt.run.device);
+  for (const std::string& icd : opt.run.icd_files) c += " --icd " + shellWord(icd);
+  if (!opt.run.plant_fault.empty()) c += " --plant-fault " + shellWord(opt.run.plant_fault);
+  if (opt.run.model_tier != "exact") c += " --model " + shellWord(opt.run.model_tier);
   return c;
+}
+
+// Text as YAML comment lines: a line break in it (a path's) starts another
+// comment, never a line of YAML.
+std::string commentLines(const std::string& text) {
+  std::string out = "# ";
+  for (char ch : text) out += ch == '\n' ? std::string("\n# ") : std::string(1, ch);
+  return out + "\n";
 }
 
 // The titles of a finding's rules ("R-A/R-B": each), from the catalog.
@@ -104,6 +114,9 @@ Result<void> reductionSetup(ReduceOptions& opt, const CaseFile& f, RunInfo& info
   if (!opt.device_command.empty()) {  // no device here: the command runs each variant's
     info.device = "the device `" + opt.device_command + "` runs";
     useCacheDir(opt.run.cache_dir);
+    // The command runs in a process group of its own, which the terminal's
+    // Ctrl-C does not reach: the signal is caught here and the group killed.
+    catchInterrupts();
     return {};
   }
   RAYSPEC_TRY_VOID(chooseDevice(opt.run, {f}, icd, info));
@@ -117,7 +130,7 @@ bool failsWithoutTheFault(const VariantJudge& probe, const Case& c, const std::s
                           bool* interrupted) {
   const std::string why = probe.failureWithoutTheFault(c, interrupted);
   if (*interrupted || why.empty()) return *interrupted;
-  std::printf("%s (the fault: %s) %s\n", c.name.c_str(), fault.c_str(), why.c_str());
+  std::printf("%s (the fault: %s) %s\n", c.name.c_str(), fault.c_str(), visibleLine(why).c_str());
   return true;
 }
 
@@ -164,21 +177,23 @@ int runReduce(const ReduceOptions& requested) {
   bool interrupted = false;
   const CaseOutcome original = probe.judge(*text, &interrupted);
   if (interrupted) return badInput("interrupted");
+  if (!probe.commandFailure().empty()) return badInput(probe.commandFailure());
   std::optional<FailureSignature> signature = failureToKeep(original, opt.keep);
   if (signature && failsWithoutTheFault(probe, *parsed.value, opt.run.plant_fault, &interrupted))
     return interrupted ? badInput("interrupted") : kReduceNotFailing;
   if (!signature) {
     std::printf("%s does not fail%s to begin with: %s: %s\n", f->name.c_str(),
-                opt.keep.empty() ? "" : (" by " + opt.keep).c_str(), statusName(original.status),
-                original.headline.c_str());
+                opt.keep.empty() ? "" : (" by " + visibleLine(opt.keep)).c_str(),
+                statusName(original.status), visibleLine(original.headline).c_str());
     return kReduceNotFailing;
   }
   std::printf("Reducing %s: keeps %s: %s%s\n", f->name.c_str(), statusName(signature->status),
               signature->rule.empty() ? "" : (signature->rule + ": ").c_str(),
-              signature->message.c_str());
+              visibleLine(signature->message).c_str());
   VariantJudge judge(opt.run, f->name, labels, *signature, opt.max_attempts, opt.device_command);
   YAML::Node reduced =
       reduceDocument(*doc, *parsed.value, failingRays(original, *signature), judge);
+  if (!judge.commandFailure().empty()) return badInput(judge.commandFailure());
 
   ReductionRecord r;
   r.case_name = f->name;
@@ -195,12 +210,13 @@ int runReduce(const ReduceOptions& requested) {
   r.command = reproduction(opt, f->name);
   r.attempts = judge.attempts();
   reduced["description"] = reducedDescription(r);
-  r.reduced_text = "# Made by rayspec reduce; shown by: " + r.command + "\n" + emitYaml(reduced);
+  r.reduced_text =
+      commentLines("Made by rayspec reduce; shown by: " + r.command) + emitYaml(reduced);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (std::string e = writeReduction(r, opt.out); !e.empty()) return badInput(e);
   if (!opt.device_command.empty()) {  // where the reproduction's command reads it
     std::error_code ec;
-    const std::string at = opt.out + "/cases/" + f->name + ".yaml";
+    const std::string at = opt.out + "/" + kReductionCasesFolder + "/" + f->name + ".yaml";
     std::filesystem::create_directories(std::filesystem::path(at).parent_path(), ec);
     if (Result<void> w = writeWholeFile(at, r.reduced_text); !w)
       return badInput(w.error().format());

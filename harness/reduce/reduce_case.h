@@ -23,7 +23,8 @@ struct ReduceOptions {
 };
 
 // Exit statuses: 0 reduced (reduced.yaml, report.md, steps.txt written), 1
-// the case does not fail (that way) to begin with, 2 bad input.
+// the case does not fail (that way) to begin with, 2 bad input (a device
+// command that is no use among it: reduce/variant_judge.h).
 inline constexpr int kReduceDone = 0;
 inline constexpr int kReduceNotFailing = 1;
 inline constexpr int kReduceBadInput = 2;

@@ -1,8 +1,11 @@
 #include "reduce/reduce_report.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+
+#include "base/visible_text.h"
 
 namespace rayspec {
 namespace {
@@ -24,6 +27,19 @@ std::string cell(std::string s) {
   for (char& ch : s)
     if (ch == '|' || ch == '\n') ch = ' ';
   return s;
+}
+
+// A fenced code block of text: its fence longer than any run of backticks in
+// it, so that nothing in the text (a path's "```") ends the block early.
+std::string fenced(const std::string& text, const std::string& info = "") {
+  size_t longest = 0, run = 0;
+  for (char ch : text) {
+    run = ch == '`' ? run + 1 : 0;
+    longest = std::max(longest, run);
+  }
+  const std::string fence(std::max<size_t>(3, longest + 1), '`');
+  return fence + info + "\n" + text + (text.empty() || text.back() == '\n' ? "" : "\n") + fence +
+         "\n";
 }
 
 std::string raysTable(const CaseOutcome& o) {
@@ -51,8 +67,8 @@ std::string reportMarkdown(const ReductionRecord& r) {
   if (!s.rule.empty())
     m += "- Rule (references/spec-rules.yaml): " + (r.rule_title.empty() ? s.rule : r.rule_title) +
          "\n";
-  m += "\n## Reproduce\n\n```\n" + r.command + "\n```\n\n";
-  m += "## The case\n\n```yaml\n" + r.reduced_text + "```\n\n";
+  m += "\n## Reproduce\n\n" + fenced(r.command) + "\n";
+  m += "## The case\n\n" + fenced(r.reduced_text, "yaml") + "\n";
   m += "## Failing rays, device against model\n\n" + raysTable(r.outcome);
   return m;
 }
@@ -99,7 +115,7 @@ std::string reductionSummary(const ReductionRecord& r, const std::string& dir) {
   return "Reduced " + r.case_name + ": " + sizeChange(r.before, r.after) + "\n" + "  " +
          std::to_string(r.attempts.size()) + " variants (" + std::to_string(ran) + " ran, " +
          std::to_string(kept) + " kept) in " + seconds(r.seconds) + "\n" +
-         "  still: " + r.outcome.headline.substr(0, 300) + "\n" + "  " + dir +
+         "  still: " + visibleLine(r.outcome.headline.substr(0, 300)) + "\n" + "  " + dir +
          "/reduced.yaml, report.md, steps.txt\n";
 }
 

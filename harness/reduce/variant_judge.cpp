@@ -1,12 +1,10 @@
 #include "reduce/variant_judge.h"
 
 #include <chrono>
-#include <cstdlib>
 #include <filesystem>
 
-#include <sys/wait.h>
-
 #include "base/whole_file.h"
+#include "reduce/device_command.h"
 #include "report/outcome_json.h"
 
 namespace rayspec {
@@ -43,18 +41,26 @@ CaseOutcome VariantJudge::judgeByCommand(const std::string& text, const Case& c,
   fs::create_directories((cases / name_).parent_path(), ec);
   if (Result<void> written = writeWholeFile((cases / (name_ + ".yaml")).string(), text); !written)
     return caseErrorOutcome(name_, c.rules, "harness", written.error().format());
-  const std::string env = "export RAYSPEC_VARIANT_CASES='" + cases.string() +
-                          "' RAYSPEC_VARIANT_NAME='" + name_ + "' RAYSPEC_VARIANT_OUT='" +
-                          device.string() + "'; ";
-  const std::string command =
-      env + device_command_ + " >'" + (dir / "command.log").string() + "' 2>&1";
-  const int rc = std::system(command.c_str());
-  if (rc != -1 && WIFSIGNALED(rc) && (WTERMSIG(rc) == SIGINT || WTERMSIG(rc) == SIGTERM)) {
+  // The paths reach the command as variables only: no shell line holds them.
+  const DeviceCommand command{device_command_,
+                              {{"RAYSPEC_VARIANT_CASES", cases.string()},
+                               {"RAYSPEC_VARIANT_NAME", name_},
+                               {"RAYSPEC_VARIANT_OUT", device.string()}},
+                              (dir / "command.log").string(),
+                              run_.timeout};
+  const ChildEnd end = runDeviceCommand(command);
+  if (end.how == ChildEnd::How::Interrupted) {
     *interrupted = true;
     return caseErrorOutcome(name_, c.rules, "harness", "the device command was stopped");
   }
-  if (Result<SavedRun> ran = readSavedRun(device.string()); ran)
-    last_device_ = {ran->info.device, ran->info.icd};
+  const Result<SavedRun> ran = readSavedRun(device.string());
+  if (ran) last_device_ = {ran->info.device, ran->info.icd};
+  // Ran out of time, or ended badly leaving nothing to judge: the command is
+  // no use, and the reduction stops (runReduce: exit 2).
+  if (end.how == ChildEnd::How::TimedOut || (!end.ok() && !ran)) {
+    command_failure_ = deviceCommandFailure(command, end);
+    return caseErrorOutcome(name_, c.rules, "harness", command_failure_);
+  }
   RunOptions saved = run_;
   saved.device_results = device.string();
   saved.out = (dir / "judged").string();
@@ -116,9 +122,10 @@ bool VariantJudge::fails(const std::string& text, const std::string& what) {
       a.kept ? failureWithoutTheFault(*parsed_case.value, &interrupted) : "";
   a.kept = a.kept && clean_failure.empty();
   a.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (interrupted) {
+  if (interrupted || !command_failure_.empty()) {
     stopped_ = true;
-    a.verdict = "interrupted";
+    a.kept = false;
+    a.verdict = interrupted ? "interrupted" : command_failure_;
     attempts_.push_back(a);
     return false;
   }

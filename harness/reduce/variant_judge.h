@@ -9,7 +9,10 @@
 // (the case's name) and RAYSPEC_VARIANT_OUT (RUN_OUT/variant-<n>/device: where it
 // must leave what `rayspec run --out` writes), and the bundle it left is
 // judged as `rayspec run --device-results` judges one (none: NotSupported,
-// so never kept).
+// so never kept). The command runs as reduce/device_command.h runs it, under
+// --timeout; when it runs out of time, or ends badly (a non-zero exit, a
+// signal) leaving no results, it is no use: commandFailure() says why, and
+// no more variants are tried.
 #pragma once
 
 #include <map>
@@ -58,8 +61,11 @@ class VariantJudge {
   // without it); a text seen before is not run again.
   bool fails(const std::string& text, const std::string& what);
   const std::vector<Attempt>& attempts() const { return attempts_; }
-  // No more attempts: the limit was reached or a signal stopped one.
+  // No more attempts: the limit was reached, a signal stopped one, or the
+  // device command is no use.
   bool stopped() const { return stopped_; }
+  // Why the device command is no use, naming it and its log ("" it is).
+  const std::string& commandFailure() const { return command_failure_; }
   // The outcome of a kept text (nullptr: none).
   const CaseOutcome* keptOutcome(const std::string& text) const;
   // With a device command: the device and driver manifest its run of the
@@ -86,6 +92,7 @@ class VariantJudge {
   std::string device_command_;
   mutable size_t commands_run_ = 0;
   mutable CommandDevice last_device_;
+  mutable std::string command_failure_;
   CommandDevice kept_device_;
   std::map<std::string, bool> seen_;
   std::map<std::string, CaseOutcome> kept_;

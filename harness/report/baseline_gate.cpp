@@ -2,6 +2,7 @@
 
 #include <fstream>
 
+#include "base/visible_text.h"
 #include "report/escape.h"
 #include "report/write_reports.h"
 
@@ -91,8 +92,9 @@ Result<void> writeFailuresCsv(const std::vector<CaseOutcome>& outcomes,
          "flakes file.\n";
   for (const CaseOutcome& o : outcomes) {
     if (!failsRun(o) && o.baseline != BaselineMatch::Flake) continue;
-    out << csvField(o.name) << ',' << statusName(o.status) << "  # " << deqpResultName(o);
-    if (!o.baseline_note.empty()) out << ": " << o.baseline_note;
+    out << csvField(visibleLine(o.name)) << ',' << statusName(o.status) << "  # "
+        << deqpResultName(o);
+    if (!o.baseline_note.empty()) out << ": " << visibleLine(o.baseline_note);
     out << '\n';
   }
   if (!out) return errorOf(ErrorKind::Harness, "cannot write " + path);

@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include "base/visible_text.h"
 #include "report/baseline_gate.h"
 
 namespace rayspec {
@@ -13,6 +14,13 @@ namespace {
 std::string gateTag(const CaseOutcome& o) {
   return o.baseline == BaselineMatch::None ? std::string()
                                            : std::string("  [") + gateWord(o.baseline) + "]";
+}
+
+// A case's line: its name and headline, as they may come from input (a case
+// file's name, a saved run, the device's words) made visible, each one field.
+void printCaseLine(const CaseOutcome& o) {
+  std::printf("  %-44s %s%s\n", visibleLine(o.name).c_str(), visibleLine(o.headline).c_str(),
+              gateTag(o).c_str());
 }
 
 // What a NotSupported case's device lacks: its headline after the last
@@ -30,14 +38,16 @@ void printNotSupportedReasons(const std::vector<CaseOutcome>& outcomes) {
     if (o.status == Status::NotSupported) ++reasons[notSupportedReason(o)];
   if (reasons.empty()) return;
   std::printf("NotSupported, by what the device lacks:\n");
-  for (const auto& [reason, n] : reasons) std::printf("  %5d  %s\n", n, reason.c_str());
+  for (const auto& [reason, n] : reasons)
+    std::printf("  %5d  %s\n", n, visibleLine(reason).c_str());
 }
 
 }  // namespace
 
 void RunSummary::starting(const std::string& name) {
   if (progress_ == Progress::Quiet || !isatty(STDOUT_FILENO)) return;
-  std::printf("\r[%zu/%zu] running %s...\x1b[K", outcomes_.size() + 1, total_, name.c_str());
+  std::printf("\r[%zu/%zu] running %s...\x1b[K", outcomes_.size() + 1, total_,
+              visibleLine(name).c_str());
   std::fflush(stdout);
   live_ = true;
 }
@@ -49,10 +59,10 @@ void RunSummary::add(const CaseOutcome& o) {
   if (live_) std::printf("\r\x1b[K");
   live_ = false;
   std::printf("[%zu/%zu] %-44s %-14s device %7.3f s  model %7.3f s\n", outcomes_.size(), total_,
-              o.name.c_str(), statusName(o.status), o.device_seconds, o.model_seconds);
-  if (o.status != Status::Pass) std::printf("        %s\n", o.headline.c_str());
+              visibleLine(o.name).c_str(), statusName(o.status), o.device_seconds, o.model_seconds);
+  if (o.status != Status::Pass) std::printf("        %s\n", visibleLine(o.headline).c_str());
   if (o.baseline != BaselineMatch::None)
-    std::printf("        (%s: %s)\n", gateWord(o.baseline), o.baseline_note.c_str());
+    std::printf("        (%s: %s)\n", gateWord(o.baseline), visibleLine(o.baseline_note).c_str());
   std::fflush(stdout);
 }
 
@@ -88,14 +98,14 @@ void RunSummary::print(bool brief) const {
       std::printf(brief ? "Failing the run (--brief lists no other):\n"
                         : "Not passing, or not as the baseline expects:\n");
     header = true;
-    std::printf("  %-44s %s%s\n", o.name.c_str(), o.headline.c_str(), gateTag(o).c_str());
+    printCaseLine(o);
   }
   header = false;
   for (const CaseOutcome& o : outcomes_) {
     if (o.status != Status::CaseError) continue;
     if (!header) std::printf("Case errors (the case itself is at fault, not the device):\n");
     header = true;
-    std::printf("  %-44s %s%s\n", o.name.c_str(), o.headline.c_str(), gateTag(o).c_str());
+    printCaseLine(o);
   }
   size_t unexpected = 0, flakes = 0, gated = 0;
   for (const CaseOutcome& o : outcomes_) {
@@ -107,7 +117,7 @@ void RunSummary::print(bool brief) const {
     std::printf("Gate: %zu unexpected results fail the run, %zu flakes (see failures.csv)\n",
                 unexpected, flakes);
   for (const std::string& m : teardown_errors_)
-    std::printf("  validation error at device teardown: %s\n", m.c_str());
+    std::printf("  validation error at device teardown: %s\n", visibleLine(m).c_str());
 }
 
 }  // namespace rayspec

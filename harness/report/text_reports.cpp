@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/visible_text.h"
 #include "report/baseline_gate.h"
 #include "report/case_cost.h"
 #include "report/escape.h"
@@ -25,7 +26,7 @@ const char* deqpStatusName(Status s) {
 Result<void> writeResultsCsv(const std::vector<CaseOutcome>& outcomes, const std::string& path) {
   std::ofstream out(path);
   for (const CaseOutcome& o : outcomes)
-    out << csvField(o.name) << ',' << deqpResultName(o) << ',' << o.seconds << '\n';
+    out << csvField(visibleLine(o.name)) << ',' << deqpResultName(o) << ',' << o.seconds << '\n';
   if (!out) return errorOf(ErrorKind::Harness, "cannot write " + path);
   return {};
 }
@@ -116,15 +117,18 @@ std::string runCompleteness(const std::vector<CaseOutcome>& outcomes, const RunI
 
 namespace {
 
+// Text from input (a case file's name, a saved run, the device's words) made
+// visible, each field on its line.
 void caseText(std::ostream& out, const CaseOutcome& o) {
-  out << o.name << ": " << o.headline << '\n';
+  out << visibleLine(o.name) << ": " << visibleLine(o.headline) << '\n';
   for (const Finding& f : o.verdict.findings)
-    out << "    [" << statusName(f.status) << "] " << f.rule << ": " << f.message << '\n';
+    out << "    [" << statusName(f.status) << "] " << visibleLine(f.rule) << ": "
+        << visibleLine(f.message) << '\n';
   for (const UndefinedRays& u : o.verdict.undefined) {
     out << "    undefined (R-UB, not judged): " << undefinedReasonName(u.reason) << ", "
         << u.ray_count << " rays; first:";
     for (uint32_t r : u.rays) out << ' ' << r;
-    out << "; " << u.what << '\n';
+    out << "; " << visibleLine(u.what) << '\n';
   }
 }
 

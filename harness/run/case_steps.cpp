@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "base/visible_text.h"
 #include "bundle/results_io.h"
 #include "compare/compare_results.h"
 #include "plan/plan.h"
@@ -253,7 +254,7 @@ void journalCase(CaseOutcome& outcome, const Baseline& baseline, const std::stri
     if (const Result<void> cost = writeCaseCost(outcome, dir + "/" + outcome.name + "/cost.json");
         !cost && written)
       written = cost;
-  if (!written) std::fprintf(stderr, "%s\n", written.error().format().c_str());
+  if (!written) std::fprintf(stderr, "%s\n", visibleLine(written.error().format()).c_str());
 }
 
 Result<void> writeRunReports(std::vector<CaseOutcome>& outcomes, const Baseline& baseline,

@@ -131,8 +131,10 @@ ChildEnd runChild(const std::function<int(std::string& message)>& body, const Ch
   }
   if (pid == 0) {
     close(fds[0]);
+    if (limits.process_group) setpgid(0, 0);
     childMain(parent, fds[1], body, limits);
   }
+  if (limits.process_group) setpgid(pid, pid);  // both sides: whichever runs first
   close(fds[1]);
   fcntl(fds[0], F_SETFL, O_NONBLOCK);
 
@@ -148,7 +150,7 @@ ChildEnd runChild(const std::function<int(std::string& message)>& body, const Ch
     const bool late = limits.timeout_seconds > 0 && elapsed() > limits.timeout_seconds;
     const bool too_big = !lost && !interrupted && !late && memory.over();
     if (lost || interrupted || late || too_big) {
-      kill(pid, SIGKILL);
+      kill(limits.process_group ? -pid : pid, SIGKILL);
       while (waitpid(pid, &wstatus, 0) < 0 && errno == EINTR) {
       }
       close(fds[0]);

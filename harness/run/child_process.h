@@ -10,7 +10,8 @@
 // RLIMIT_DATA leaves out and lavapipe uses): read every 50 ms, beyond the
 // limit the parent kills the child and it ends as kChildOutOfMemory too. The
 // parent kills the child after `timeout_seconds`, or at once when the run
-// was interrupted (run/interrupt.h).
+// was interrupted (run/interrupt.h); with ChildLimits::process_group, its
+// whole process group.
 #pragma once
 
 #include <sys/types.h>
@@ -41,6 +42,10 @@ bool memoryLimitApplies();
 struct ChildLimits {
   double timeout_seconds = 0;  // 0: none
   uint64_t memory_limit = 0;   // bytes (RLIMIT_DATA and the resident set); 0: none
+  // The child leads a process group of its own, and a timeout or an
+  // interrupt kills the whole group: what a shell command it runs started
+  // goes with it. (Then the terminal's Ctrl-C reaches the parent alone.)
+  bool process_group = false;
 };
 
 // Exit statuses the child itself chooses.

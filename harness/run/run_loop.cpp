@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "base/output_folder.h"
+#include "base/visible_text.h"
 #include "metamorphic/feature_path.h"
 #include "metamorphic/motion_spec.h"
 #include "metamorphic/permute_case.h"
@@ -221,7 +222,7 @@ class RunBook {
     size_t i = 0;
     for (std::optional<CaseOutcome>& o : outcomes_)
       if (o) *o = std::move(all[i++]);
-    if (!written) std::fprintf(stderr, "%s\n", written.error().format().c_str());
+    if (!written) std::fprintf(stderr, "%s\n", visibleLine(written.error().format()).c_str());
   }
 
   std::mutex mutex_;
@@ -450,7 +451,7 @@ int runPreparedCases(const RunOptions& opt, const std::vector<CaseFile>& files,
   std::filesystem::create_directories(opt.out, ec);
   if (!opt.resume)
     if (const Result<void> started = startJournal(opt.out); !started)
-      std::fprintf(stderr, "rayspec run: %s\n", started.error().format().c_str());
+      std::fprintf(stderr, "rayspec run: %s\n", visibleLine(started.error().format()).c_str());
   RunBook book(prepared, baseline, info, opt.out, opt.brief);
   book.writeAll();  // empty and marked interrupted until the run ends
   const std::vector<size_t> order = dealOrder(prepared, opt, jobs, book);

@@ -7,6 +7,7 @@
 #include <optional>
 #include <set>
 
+#include "base/visible_text.h"
 #include "report/outcome_json.h"
 #include "report/rule_catalog.h"
 #include "run/device_probe.h"
@@ -121,8 +122,10 @@ ChosenDevice savedDevice(const RunOptions& opt, const std::vector<CaseFile>& fil
   ChosenDevice chosen;
   info.device = savedDevices(opt.device_results, files);
   chosen.found = !info.device.empty();
-  std::printf("Device results saved in %s (%s); no device runs here\n", opt.device_results.c_str(),
-              chosen.found ? info.device.c_str() : "none of these cases has a bundle there");
+  std::printf(
+      "Device results saved in %s (%s); no device runs here\n",
+      visibleLine(opt.device_results).c_str(),
+      chosen.found ? visibleLine(info.device).c_str() : "none of these cases has a bundle there");
   return chosen;
 }
 
@@ -133,7 +136,7 @@ ModelTier checkedModelTier(const RunOptions& opt) {
 }
 
 int setupFailed(const Error& why) {
-  std::fprintf(stderr, "rayspec run: %s\n", why.format().c_str());
+  std::fprintf(stderr, "rayspec run: %s\n", visibleLine(why.format()).c_str());
   return kExitSetup;
 }
 
@@ -206,8 +209,8 @@ Result<ChosenDevice> chooseDevice(const RunOptions& opt, const std::vector<CaseF
   chosen.gpu = !probe.cpu;
   info.device = probe.description;
   info.icd = !probe.icd.empty() || icd.files.size() != 1 ? probe.icd : icd.files[0];
-  std::printf("Device: %s, ICD %s%s%s\n", info.device.c_str(),
-              info.icd.empty() ? "unknown" : info.icd.c_str(),
+  std::printf("Device: %s, ICD %s%s%s\n", visibleLine(info.device).c_str(),
+              info.icd.empty() ? "unknown" : visibleLine(info.icd).c_str(),
               info.validation ? ", validation layer on" : ", validation layer OFF",
               opt.no_isolation ? ", in this process" : "");
   return chosen;

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "base/visible_text.h"
 #include "bundle/results_io.h"
 #include "library/case_discovery.h"
 #include "run/run_loop.h"
@@ -47,7 +48,7 @@ std::optional<Results> readRunBundle(const std::string& dir, const std::string& 
   if (!r || !r->ok()) {
     const std::string why = r ? r->statusText() : r.error().format();
     std::fprintf(stderr, "rayspec %s: %s: %s; left out\n", command.c_str(), dir.c_str(),
-                 why.c_str());
+                 visibleLine(why).c_str());
     return std::nullopt;
   }
   return std::move(*r);
@@ -55,7 +56,7 @@ std::optional<Results> readRunBundle(const std::string& dir, const std::string& 
 
 std::string shortDeviceName(const std::string& device) {
   const size_t cut = device.find(" (");
-  return cut == std::string::npos ? device : device.substr(0, cut);
+  return visibleLine(cut == std::string::npos ? device : device.substr(0, cut));
 }
 
 Result<OutputFolder> claimStudyFolder(const std::string& out, const std::string& command) {

@@ -49,7 +49,9 @@ int runTiers(const TierRuns& runs);
 // `command`) when it is missing or did not end normally.
 std::optional<Results> readRunBundle(const std::string& dir, const std::string& command);
 
-// The device's name up to its first " (": "llvmpipe (LLVM 15, ...)" -> "llvmpipe".
+// The device's name up to its first " (": "llvmpipe (LLVM 15, ...)" -> "llvmpipe";
+// a label of the tables (and their console copy), shown by the visible-text
+// rule (base/visible_text.h visibleLine): a saved bundle's name is input.
 std::string shortDeviceName(const std::string& device);
 
 }  // namespace rayspec
