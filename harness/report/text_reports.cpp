@@ -1,11 +1,13 @@
 // results.csv, junit.xml, summary.json and summary.txt.
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <map>
+#include <optional>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
+#include "base/whole_file.h"
 #include "report/baseline_gate.h"
 #include "report/case_cost.h"
 #include "report/escape.h"
@@ -23,11 +25,10 @@ const char* deqpStatusName(Status s) {
 }
 
 Result<void> writeResultsCsv(const std::vector<CaseOutcome>& outcomes, const std::string& path) {
-  std::ofstream out(path);
+  std::ostringstream out;
   for (const CaseOutcome& o : outcomes)
     out << csvField(o.name) << ',' << deqpResultName(o) << ',' << o.seconds << '\n';
-  if (!out) return errorOf(ErrorKind::Harness, "cannot write " + path);
-  return {};
+  return writeWholeFile(path, out.str());
 }
 
 Result<void> writeJunitXml(const std::vector<CaseOutcome>& outcomes, const std::string& path) {
@@ -40,7 +41,7 @@ Result<void> writeJunitXml(const std::vector<CaseOutcome>& outcomes, const std::
     skipped += o.status == Status::NotSupported;
     total += o.seconds;
   }
-  std::ofstream out(path);
+  std::ostringstream out;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   out << "<testsuites><testsuite name=\"rayspec\" tests=\"" << outcomes.size() << "\" failures=\""
       << failures << "\" errors=\"" << errors << "\" skipped=\"" << skipped << "\" time=\"" << total
@@ -67,8 +68,7 @@ Result<void> writeJunitXml(const std::vector<CaseOutcome>& outcomes, const std::
     out << "</testcase>\n";
   }
   out << "</testsuite></testsuites>\n";
-  if (!out) return errorOf(ErrorKind::Harness, "cannot write " + path);
-  return {};
+  return writeWholeFile(path, out.str());
 }
 
 Result<void> writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
@@ -99,10 +99,7 @@ Result<void> writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const Ru
   j["case_errors"] = case_errors;     // cases at fault themselves, not the device
   j["cost"] = runCostJson(outcomes);  // where the run's time went (report/case_cost.h)
   RAYSPEC_TRY(const std::string text, jsonText(j, 1));
-  std::ofstream out(path);
-  out << text << '\n';
-  if (!out) return errorOf(ErrorKind::Harness, "cannot write " + path);
-  return {};
+  return writeWholeFile(path, text + '\n');
 }
 
 std::string runCompleteness(const std::vector<CaseOutcome>& outcomes, const RunInfo& info) {
@@ -132,7 +129,7 @@ void caseText(std::ostream& out, const CaseOutcome& o) {
 
 Result<void> writeSummaryText(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
                               const std::string& path) {
-  std::ofstream out(path);
+  std::ostringstream out;
   out << runCompleteness(outcomes, info) << '\n';
   for (const CaseOutcome& o : outcomes)
     if (o.status != Status::CaseError) caseText(out, o);
@@ -144,8 +141,7 @@ Result<void> writeSummaryText(const std::vector<CaseOutcome>& outcomes, const Ru
     caseText(out, o);
   }
   out << '\n' << runCostText(outcomes);
-  if (!out) return errorOf(ErrorKind::Harness, "cannot write " + path);
-  return {};
+  return writeWholeFile(path, out.str());
 }
 
 Result<void> writeReports(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
@@ -153,15 +149,24 @@ Result<void> writeReports(const std::vector<CaseOutcome>& outcomes, const RunInf
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) return errorOf(ErrorKind::Harness, "cannot create " + dir + ": " + ec.message());
+  std::optional<Error> first;
+  std::string others;  // the other reports not written
   for (const Result<void>& written :
        {writeResultsCsv(outcomes, dir + "/results.csv"),
         writeJunitXml(outcomes, dir + "/junit.xml"),
         writeSummaryJson(outcomes, info, dir + "/summary.json"),
         writeSummaryText(outcomes, info, dir + "/summary.txt"),
         writeFailuresCsv(outcomes, info.baseline, dir + "/failures.csv"),
-        writeReportHtml(outcomes, info, dir + "/report.html")})
-    if (!written) return written.error();
-  return {};
+        writeReportHtml(outcomes, info, dir + "/report.html")}) {
+    if (written) continue;
+    if (!first)
+      first = written.error();
+    else
+      others += "; " + written.error().format();
+  }
+  if (!first) return {};
+  first->message += others;
+  return *first;
 }
 
 }  // namespace rayspec
