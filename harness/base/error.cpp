@@ -6,8 +6,8 @@ namespace rayspec {
 
 std::string Error::format() const {
   if (loc.file.empty()) return visibleText(message);
-  std::string s =
-      loc.file + ":" + std::to_string(loc.line) + ":" + std::to_string(loc.column) + ": ";
+  std::string s = visibleText(loc.file) + ":" + std::to_string(loc.line) + ":" +
+                  std::to_string(loc.column) + ": ";
   if (!loc.field.empty()) s += visibleText(loc.field) + ": ";
   return s + visibleText(message);
 }

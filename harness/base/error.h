@@ -37,7 +37,8 @@ struct Error {
   std::string result;
 
   // "FILE:LINE:COL: FIELD: MESSAGE" (the field when known), or MESSAGE when
-  // there is no file; input quoted in it made visible (base/visible_text.h).
+  // there is no file; input quoted in it, and the file's path, made visible
+  // (base/visible_text.h).
   std::string format() const;
 };
 
