@@ -18,7 +18,12 @@
 //                                       its folder as a link to a folder
 //                                       outside; the property: the merged
 //                                       output never holds that folder's file
-//   6  a run folder's case journal      report/case_journal.h (outcomes.jsonl)
+//   6  a run folder's case journal      report/case_journal.h (outcomes.jsonl);
+//                                       the property: a journal that reads
+//                                       reads again after an append (a
+//                                       resumed run's, after whatever half
+//                                       line a kill left), with the case
+//                                       appended
 // Every input must end in a value or an error: never a crash, a hang, a leak
 // or undefined behaviour. And the path-escape property: whatever a reader
 // accepts is safe to make paths of (case names, image names) and sized as
@@ -107,12 +112,26 @@ void summaryFile(const std::string& text) {
     require(rayspec::caseNameProblem(o.name).empty());
 }
 
+bool holds(const std::vector<rayspec::CaseOutcome>& outcomes, const std::string& name) {
+  for (const rayspec::CaseOutcome& o : outcomes)
+    if (o.name == name) return true;
+  return false;
+}
+
 void caseJournal(const std::string& text) {
   write(workDir() / rayspec::kJournalFile, text);
   const auto outcomes = rayspec::readJournal(workDir().string());
   if (!outcomes || !*outcomes) return;
   for (const rayspec::CaseOutcome& o : **outcomes)
     require(rayspec::caseNameProblem(o.name).empty());
+  rayspec::CaseOutcome appended;
+  appended.name = "fuzz/appended";
+  appended.verdict.add({rayspec::Status::Pass, "R-MISS", "passed", {}, 0});
+  appended.deriveFromVerdict();
+  require(static_cast<bool>(rayspec::appendJournal(appended, workDir().string())));
+  const auto again = rayspec::readJournal(workDir().string());
+  require(again && *again && holds(**again, appended.name));
+  require((*again)->size() == (*outcomes)->size() + !holds(**outcomes, appended.name));
 }
 
 void spirvCacheEntry(const std::string& text) {

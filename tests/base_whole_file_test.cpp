@@ -5,6 +5,8 @@
 #include <filesystem>
 
 #include "base/whole_file.h"
+#include "file_size_limit.h"
+#include "read_text.h"
 #include "result_support.h"
 #include "temp_dir.h"
 
@@ -55,6 +57,43 @@ TEST(WholeFile, NamesTheFileItCannotReadOrWrite) {
   error.clear();
   orError(readWholeFile(dir, 100), &error);
   EXPECT_NE(error.find("no such file"), std::string::npos) << "a folder is no file: " << error;
+}
+
+// Issue 56: a write that fails part-way (a disk that fills up) leaves the
+// copy that was there whole, and nothing beside it; the error names the file
+// and why.
+TEST(WholeFile, AWriteThatFailsLeavesTheFileThatWasThere) {
+  const std::string dir = freshTempDir("whole-file/full");
+  const std::string path = dir + "/summary.json";
+  std::string error;
+  ASSERT_TRUE(orError(writeWholeFile(path, std::string_view("{\"good\": true}\n")), &error))
+      << error;
+  {
+    const FileSizeLimit full(4096);
+    const Result<void> written = writeWholeFile(path, std::string(64 << 10, 'x'));
+    ASSERT_FALSE(written);
+    EXPECT_EQ(written.error().kind, ErrorKind::Harness);
+    EXPECT_EQ(written.error().format(), path + ": cannot write: File too large");
+  }
+  EXPECT_EQ(slurp(path), "{\"good\": true}\n");
+  size_t files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) files += entry.exists();
+  EXPECT_EQ(files, 1u) << "no temporary file is left";
+}
+
+// A folder where the file goes: the rename fails, the error says so, and the
+// folder and what it holds stay.
+TEST(WholeFile, AFolderInTheWayIsAnErrorNamingIt) {
+  const std::string dir = freshTempDir("whole-file/in-the-way");
+  const std::string path = dir + "/report.html";
+  std::filesystem::create_directories(path + "/inside");
+  const Result<void> written = writeWholeFile(path, std::string_view("<html></html>\n"));
+  ASSERT_FALSE(written);
+  EXPECT_EQ(written.error().format(), path + ": cannot write: Is a directory");
+  EXPECT_TRUE(std::filesystem::is_directory(path + "/inside"));
+  size_t entries = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) entries += entry.exists();
+  EXPECT_EQ(entries, 1u) << "no temporary file is left";
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include "library/case_discovery.h"
 #include "library/expand_sweep.h"
+#include "results/file_name.h"
 
 namespace rayspec {
 namespace {
@@ -207,7 +208,9 @@ TEST(CaseDiscovery, ClashingCaseNamesAreErrorsNamingTheFiles) {
             std::string::npos);
   EXPECT_NE(errors["fam/x"].find("is a folder of case 'fam/x/p'"), std::string::npos)
       << errors["fam/x"];
-  EXPECT_NE(errors["fam/e/"].find("is no case name"), std::string::npos) << errors["fam/e/"];
+  // The empty variant's name is none: its error goes under one that is.
+  EXPECT_NE(errors["fam/e/_"].find("case name 'fam/e/' is no case name"), std::string::npos)
+      << errors["fam/e/_"];
   EXPECT_EQ(errors.count("fam/e/r"), 0u);
   EXPECT_EQ(errors.count("fam/fine"), 0u);
   EXPECT_EQ(errors.count("fam/a-b"), 0u);
@@ -220,6 +223,36 @@ TEST(CaseDiscovery, ClashingCaseNamesAreErrorsNamingTheFiles) {
   EXPECT_NE(twice[0].errors[0].format().find("is made twice: by one.yaml and by two.yaml"),
             std::string::npos)
       << twice[0].errors[0].format();
+  fs::remove_all(dir);
+}
+
+// Issue 56: a case file named with a space or with bytes that are not UTF-8
+// is a CaseError under a name that is a case name (it becomes summary.json's,
+// the journal's and failures.csv's, whose readers refuse any other), the same
+// in every run of the folder; its error names the file as text can show it.
+TEST(CaseDiscovery, ABadlyNamedCaseFileIsAnErrorUnderANameThatIsOne) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "rayspec_library_bad_names_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "fam");
+  for (const char* name : {"my case", "bad\xff", "fine"})
+    std::ofstream(dir / "fam" / (std::string(name) + ".yaml")) << "rules: []\n";
+  std::map<std::string, std::string> errors;  // name -> its errors
+  for (const CaseFile& f : findCases(dir.string(), "*")) {
+    EXPECT_EQ(caseNameProblem(f.name), "") << f.name;
+    for (const Error& e : f.errors) errors[f.name] += e.format();
+  }
+  ASSERT_EQ(errors.size(), 2u);
+  EXPECT_NE(errors["fam/my_x20case"].find((dir / "fam/my case.yaml").string() +
+                                          ":0:0: name: case name 'fam/my case' is no case name"),
+            std::string::npos)
+      << errors["fam/my_x20case"];
+  EXPECT_NE(errors["fam/bad_xFF"].find((dir / "fam/bad\\xFF.yaml").string() +
+                                       ":0:0: name: case name 'fam/bad\\xFF' is no case name"),
+            std::string::npos)
+      << errors["fam/bad_xFF"];
+  EXPECT_NE(errors["fam/bad_xFF"].find("reported as 'fam/bad_xFF'"), std::string::npos);
+  EXPECT_EQ(findCases(dir.string(), "fam/my_x20case").size(), 1u) << "found by the name it has";
   fs::remove_all(dir);
 }
 

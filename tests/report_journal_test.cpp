@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "file_size_limit.h"
+#include "read_text.h"
 #include "report/case_journal.h"
 #include "report/escape.h"
 #include "report/outcome_json.h"
@@ -47,6 +49,51 @@ TEST(Journal, LastLineOfACaseWinsAndACutLineIsLeftOut) {
   EXPECT_EQ(read[0].name, "f/a");
   EXPECT_EQ(read[0].status, Status::Pass);
   EXPECT_EQ(read[1].name, "f/b");
+}
+
+// Issue 56: a run killed while it wrote a line leaves half of it; the next
+// append (a resumed run's) cuts it off first, twice over, and the journal
+// stays whole lines that read back.
+TEST(Journal, AnAppendAfterALineCutShortCutsItOff) {
+  const std::string dir = freshDir("resumed-after-cut");
+  const std::string path = dir + "/" + kJournalFile;
+  ASSERT_EQ(errorText(appendJournal(judgedOutcome("f/a", Status::Pass), dir)), "");
+  const std::string whole = slurp(path);
+  for (const char* name : {"f/b", "f/c"}) {
+    std::ofstream(path, std::ios::app) << R"({"name": "f/x", "status": "Pa)";
+    ASSERT_EQ(errorText(appendJournal(judgedOutcome(name, Status::Fail), dir)), "");
+  }
+  const std::string text = slurp(path);
+  EXPECT_EQ(text.find("f/x"), std::string::npos) << text;
+  EXPECT_EQ(text.substr(0, whole.size()), whole);
+  const auto journal = readJournal(dir);
+  ASSERT_TRUE(journal) << journal.error().format();
+  ASSERT_EQ((*journal)->size(), 3u);
+  EXPECT_EQ((**journal)[1].name, "f/b");
+  EXPECT_EQ((**journal)[2].name, "f/c");
+}
+
+// An append the disk cannot take leaves no half line: the journal is as it
+// was, and the error names it and why.
+TEST(Journal, AnAppendThatFailsLeavesTheJournalAsItWas) {
+  const std::string dir = freshDir("append-fails");
+  const std::string path = dir + "/" + kJournalFile;
+  ASSERT_EQ(errorText(appendJournal(judgedOutcome("f/a", Status::Pass), dir)), "");
+  const std::string before = slurp(path);
+  CaseOutcome big = judgedOutcome("f/b", Status::Fail);
+  big.headline = std::string(64 << 10, 'h');
+  {
+    const FileSizeLimit full(before.size() + 4096);
+    const Result<void> appended = appendJournal(big, dir);
+    ASSERT_FALSE(appended);
+    EXPECT_EQ(appended.error().kind, ErrorKind::Harness);
+    EXPECT_EQ(appended.error().message, "cannot append to " + path + ": File too large");
+  }
+  EXPECT_EQ(slurp(path), before);
+  ASSERT_EQ(errorText(appendJournal(judgedOutcome("f/c", Status::Pass), dir)), "");
+  const auto journal = readJournal(dir);
+  ASSERT_TRUE(journal) << journal.error().format();
+  EXPECT_EQ((*journal)->size(), 2u);
 }
 
 // The journal and summary.json of a saved run are input: over their limits,
@@ -148,7 +195,8 @@ TEST(Journal, AJournalThatCannotBeWrittenIsAHarnessError) {
   const Result<void> started = startJournal("/nonexistent-rayspec-dir");
   ASSERT_FALSE(started);
   EXPECT_EQ(started.error().kind, ErrorKind::Harness);
-  EXPECT_EQ(started.error().message, "cannot write /nonexistent-rayspec-dir/outcomes.jsonl");
+  EXPECT_EQ(started.error().message,
+            "cannot write /nonexistent-rayspec-dir/outcomes.jsonl: No such file or directory");
 }
 
 }  // namespace

@@ -37,6 +37,7 @@ seeds() {
     { printf '\004'; printf 'not-a-sum'; printf '\000'; printf '\003\002\043\007'; } >"$dir/spirv-entry"
     { printf '\005'; cat fuzz/seeds/summary.json; } >"$dir/shard"
     { printf '\006'; cat fuzz/seeds/outcomes.jsonl; } >"$dir/journal"
+    { printf '\006'; head -c -40 fuzz/seeds/outcomes.jsonl; } >"$dir/journal-cut"
   fi
   echo "$dir"
 }

@@ -37,7 +37,7 @@ struct Error {
   std::string result;
 
   // "FILE:LINE:COL: FIELD: MESSAGE" (the field when known), or MESSAGE when
-  // there is no file; the file's name and input quoted in it made visible
+  // there is no file; input quoted in it, and the file's path, made visible
   // (base/visible_text.h).
   std::string format() const;
 };

@@ -1,11 +1,14 @@
 #include "base/whole_file.h"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <system_error>
 #include <thread>
 
 namespace rayspec {
@@ -44,24 +47,43 @@ Error inOneMessage(const Error& e) {
   return e.loc.file.empty() ? e : errorMessage(e.loc.file + ": " + e.message);
 }
 
+namespace {
+
+// errno's words for an error number.
+std::string errorWords(int error) {
+  return std::error_code(error, std::generic_category()).message();
+}
+
+// All of data into fd (write(2) may take less than asked); 0, or errno.
+int writeAll(int fd, const char* data, size_t size) {
+  while (size > 0) {
+    const ssize_t n = ::write(fd, data, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return n < 0 ? errno : EIO;
+    data += n;
+    size -= static_cast<size_t>(n);
+  }
+  return 0;
+}
+
+}  // namespace
+
 Result<void> writeWholeFile(const std::string& path, const void* data, size_t size) {
   const std::string part = path + ".part." + std::to_string(::getpid()) + "-" +
                            std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id()));
-  std::error_code ec;
-  {
-    std::ofstream out(part, std::ios::binary | std::ios::trunc);
-    out.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
-    if (!out) {
-      out.close();
-      std::filesystem::remove(part, ec);
-      return errorMessage(path + ": cannot write");
-    }
-  }
-  std::filesystem::rename(part, path, ec);
-  if (!ec) return {};
-  const std::string why = ec.message();
-  std::filesystem::remove(part, ec);
-  return errorMessage(path + ": cannot write: " + why);
+  const auto failed = [&path](int error) {
+    return errorOf(ErrorKind::Harness, path + ": cannot write: " + errorWords(error));
+  };
+  // O_NOFOLLOW: a link planted at the temporary name is not written through.
+  const int fd = ::open(part.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0666);
+  if (fd < 0) return failed(errno);
+  int error = writeAll(fd, static_cast<const char*>(data), size);
+  // A file system that says it is full only when the file is closed (NFS) says it here.
+  if (::close(fd) != 0 && error == 0) error = errno;
+  if (error == 0 && ::rename(part.c_str(), path.c_str()) != 0) error = errno;
+  if (error == 0) return {};
+  ::unlink(part.c_str());
+  return failed(error);
 }
 
 Result<void> writeWholeFile(const std::string& path, std::string_view text) {

@@ -22,8 +22,9 @@ Result<std::string> readWholeFile(const std::string& path, uint64_t max_bytes);
 // callers pass Error::message on.
 Error inOneMessage(const Error& e);
 
-// An error naming the file when it could not be written (nothing is left
-// behind then).
+// The error: ErrorKind::Harness, "PATH: cannot write: WHY" (a full disk, a
+// folder in the way ...); nothing is left behind then, and a file that was at
+// path stays as it was.
 Result<void> writeWholeFile(const std::string& path, const void* data, size_t size);
 Result<void> writeWholeFile(const std::string& path, std::string_view text);
 

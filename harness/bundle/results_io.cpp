@@ -25,11 +25,8 @@ using nlohmann::json;
 namespace {
 
 template <typename Words>  // std::vector<uint32_t> or BulkWords
-bool writeWords(const fs::path& path, const Words& words) {
-  std::ofstream out(path, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(words.data()),
-            static_cast<std::streamsize>(words.size() * 4));
-  return static_cast<bool>(out);
+Result<void> writeWords(const fs::path& path, const Words& words) {
+  return writeWholeFile(path.string(), words.data(), words.size() * 4);
 }
 
 // Reads path as whole words after checking that it holds `expected` words
@@ -124,6 +121,7 @@ Result<void> writeRecordsCsv(const Results& r, const std::string& path,
     }
   }
   out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  out.close();  // the last of it reaches the file here (or fails to, on a full disk)
   if (!out) return errorMessage("cannot write " + path);
   return {};
 }
@@ -214,13 +212,11 @@ Result<void> writeResults(const Results& r, const std::string& dir_name,
                            {"height", im.height},
                            {"channels", im.channels},
                            {"float", im.is_float}});
-    if (!writeWords(dir / (im.name + ".raw"), im.texels))
-      return errorMessage("cannot write image " + im.name);
+    RAYSPEC_TRY_VOID(writeWords(dir / (im.name + ".raw"), im.texels));
     if (files.image_files) RAYSPEC_TRY_VOID(writeImageFiles(im, dir.string()));
   }
   writeRayNotes(r, j);
-  if (!writeWords(dir / "records.bin", r.records))
-    return errorMessage("cannot write records.bin in " + dir.string());
+  RAYSPEC_TRY_VOID(writeWords(dir / "records.bin", r.records));
   if (files.records_csv)
     RAYSPEC_TRY_VOID(writeRecordsCsv(r, (dir / "records.csv").string(), kept_fields));
   // results.json last, with the time of writing the rest of the bundle.
@@ -228,8 +224,7 @@ Result<void> writeResults(const Results& r, const std::string& dir_name,
   cost.add(CostStep::WriteBundle,
            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   j["cost"] = costJson(cost);
-  std::ofstream(dir / "results.json") << j.dump(1) << '\n';
-  return {};
+  return writeWholeFile((dir / "results.json").string(), j.dump(1) + '\n');
 }
 
 namespace {

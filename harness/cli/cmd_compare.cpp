@@ -152,8 +152,11 @@ int runCompare(const CompareOptions& opt) {
   }
   info.coverage = ruleCoverage(info.catalog, case_rules);
   summary.print();
-  if (const Result<void> written = writeReports(summary.outcomes(), info, opt.out); !written)
-    std::fprintf(stderr, "%s\n", written.error().format().c_str());
+  if (const Result<void> written = writeReports(summary.outcomes(), info, opt.out); !written) {
+    std::fprintf(stderr, "rayspec compare: the reports are not complete: %s\n",
+                 written.error().format().c_str());
+    return kExitReports;
+  }
   std::printf("Reports: %s/report.html, results.csv, junit.xml, summary.json\n", opt.out.c_str());
   if (summary.failed()) return kExitFailing;
   if (summary.allNotSupported()) {

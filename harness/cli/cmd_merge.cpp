@@ -28,7 +28,8 @@ int runMerge(const MergeOptions& opt) {
       mergeRuns(opt.dirs, opt.out, baseline, catalog ? *catalog : std::vector<Rule>{});
   if (!run) {
     std::fprintf(stderr, "rayspec merge: %s\n", visibleLine(run.error().format()).c_str());
-    return kExitSetup;
+    // Harness: the shards were read, but the merged folder not written.
+    return run.error().kind == ErrorKind::Harness ? kExitReports : kExitSetup;
   }
   const SavedRun& merged = *run;
   RunSummary summary(merged.outcomes.size(), RunSummary::Progress::Quiet);

@@ -32,10 +32,12 @@ std::vector<CaseFile> findCasesAny(const std::string& dir, const std::vector<std
 std::vector<CaseFile> caseFilesFor(const std::string& path, const std::string& cases_dir);
 
 // Case names become folders of a run: a name that is no case name (an empty
-// variant, a part that is ".."), a name two files make, or a name that is a
-// folder of another case (fam/a and fam/a/device: the second's bundles would
-// lie inside the first's folder) makes its entries errors naming the files.
-// Keeps the order and one entry per name (the first).
+// variant, a part that is "..", a space, bytes that are not UTF-8), a name two
+// files make, or a name that is a folder of another case (fam/a and
+// fam/a/device: the second's bundles would lie inside the first's folder)
+// makes its entries errors naming the files. A name that is no case name is
+// replaced by caseNameFor's (results/file_name.h), the name its CaseError is
+// reported under. Keeps the order and one entry per name (the first).
 void checkCaseNames(std::vector<CaseFile>& files);
 
 // The case called `name`: from `file` when given (a case file or a sweep

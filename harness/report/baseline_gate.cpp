@@ -1,8 +1,9 @@
 #include "report/baseline_gate.h"
 
-#include <fstream>
+#include <sstream>
 
 #include "base/visible_text.h"
+#include "base/whole_file.h"
 #include "report/escape.h"
 #include "report/write_reports.h"
 
@@ -83,7 +84,7 @@ bool failsRun(const CaseOutcome& o) {
 
 Result<void> writeFailuresCsv(const std::vector<CaseOutcome>& outcomes,
                               const std::string& baseline_file, const std::string& path) {
-  std::ofstream out(path);
+  std::ostringstream out;
   out << "# Results "
       << (baseline_file.empty() ? "that fail the run (no baseline given)"
                                 : "the baseline " + baseline_file + " did not expect")
@@ -97,8 +98,7 @@ Result<void> writeFailuresCsv(const std::vector<CaseOutcome>& outcomes,
     if (!o.baseline_note.empty()) out << ": " << visibleLine(o.baseline_note);
     out << '\n';
   }
-  if (!out) return errorOf(ErrorKind::Harness, "cannot write " + path);
-  return {};
+  return writeWholeFile(path, out.str());
 }
 
 const char* gateWord(BaselineMatch m) {

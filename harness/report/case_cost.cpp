@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 
+#include "base/whole_file.h"
 #include "bundle/step_cost_json.h"
 #include "report/json_text.h"
 
@@ -44,10 +44,7 @@ Result<void> writeCaseCost(const CaseOutcome& o, const std::string& path) {
   j["seconds"] = o.seconds;
   j["accounted"] = o.cost.total();
   RAYSPEC_TRY(const std::string text, jsonText(j, 1));
-  std::ofstream out(path);
-  out << text << '\n';
-  if (!out) return errorOf(ErrorKind::Harness, "cannot write " + path);
-  return {};
+  return writeWholeFile(path, text + '\n');
 }
 
 CaseCost runCost(const std::vector<CaseOutcome>& outcomes) {

@@ -5,12 +5,12 @@
 // failures and only a row per passing case.
 #include <cctype>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
 
 #include "base/visible_text.h"
+#include "base/whole_file.h"
 #include "report/escape.h"
 #include "report/report_case_html.h"
 #include "report/report_page_assets.h"
@@ -219,10 +219,7 @@ Result<void> writeReportHtml(const std::vector<CaseOutcome>& outcomes, const Run
   filterBar(out, outcomes, statuses);
   caseGroups(out, outcomes, dir);
   out << "<script>" << kReportScript << "</script>\n</body></html>\n";
-  std::ofstream file(path);
-  file << out.str();
-  if (!file) return errorOf(ErrorKind::Harness, "cannot write " + path);
-  return {};
+  return writeWholeFile(path, out.str());
 }
 
 }  // namespace rayspec

@@ -1,12 +1,14 @@
 // results.csv, junit.xml, summary.json and summary.txt.
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <map>
+#include <optional>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "base/visible_text.h"
+#include "base/whole_file.h"
 #include "report/baseline_gate.h"
 #include "report/case_cost.h"
 #include "report/escape.h"
@@ -24,11 +26,10 @@ const char* deqpStatusName(Status s) {
 }
 
 Result<void> writeResultsCsv(const std::vector<CaseOutcome>& outcomes, const std::string& path) {
-  std::ofstream out(path);
+  std::ostringstream out;
   for (const CaseOutcome& o : outcomes)
     out << csvField(visibleLine(o.name)) << ',' << deqpResultName(o) << ',' << o.seconds << '\n';
-  if (!out) return errorOf(ErrorKind::Harness, "cannot write " + path);
-  return {};
+  return writeWholeFile(path, out.str());
 }
 
 Result<void> writeJunitXml(const std::vector<CaseOutcome>& outcomes, const std::string& path) {
@@ -41,7 +42,7 @@ Result<void> writeJunitXml(const std::vector<CaseOutcome>& outcomes, const std::
     skipped += o.status == Status::NotSupported;
     total += o.seconds;
   }
-  std::ofstream out(path);
+  std::ostringstream out;
   out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   out << "<testsuites><testsuite name=\"rayspec\" tests=\"" << outcomes.size() << "\" failures=\""
       << failures << "\" errors=\"" << errors << "\" skipped=\"" << skipped << "\" time=\"" << total
@@ -68,8 +69,7 @@ Result<void> writeJunitXml(const std::vector<CaseOutcome>& outcomes, const std::
     out << "</testcase>\n";
   }
   out << "</testsuite></testsuites>\n";
-  if (!out) return errorOf(ErrorKind::Harness, "cannot write " + path);
-  return {};
+  return writeWholeFile(path, out.str());
 }
 
 Result<void> writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
@@ -100,10 +100,7 @@ Result<void> writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const Ru
   j["case_errors"] = case_errors;     // cases at fault themselves, not the device
   j["cost"] = runCostJson(outcomes);  // where the run's time went (report/case_cost.h)
   RAYSPEC_TRY(const std::string text, jsonText(j, 1));
-  std::ofstream out(path);
-  out << text << '\n';
-  if (!out) return errorOf(ErrorKind::Harness, "cannot write " + path);
-  return {};
+  return writeWholeFile(path, text + '\n');
 }
 
 std::string runCompleteness(const std::vector<CaseOutcome>& outcomes, const RunInfo& info) {
@@ -136,7 +133,7 @@ void caseText(std::ostream& out, const CaseOutcome& o) {
 
 Result<void> writeSummaryText(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
                               const std::string& path) {
-  std::ofstream out(path);
+  std::ostringstream out;
   out << runCompleteness(outcomes, info) << '\n';
   for (const CaseOutcome& o : outcomes)
     if (o.status != Status::CaseError) caseText(out, o);
@@ -148,8 +145,7 @@ Result<void> writeSummaryText(const std::vector<CaseOutcome>& outcomes, const Ru
     caseText(out, o);
   }
   out << '\n' << runCostText(outcomes);
-  if (!out) return errorOf(ErrorKind::Harness, "cannot write " + path);
-  return {};
+  return writeWholeFile(path, out.str());
 }
 
 Result<void> writeReports(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
@@ -157,15 +153,24 @@ Result<void> writeReports(const std::vector<CaseOutcome>& outcomes, const RunInf
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) return errorOf(ErrorKind::Harness, "cannot create " + dir + ": " + ec.message());
+  std::optional<Error> first;
+  std::string others;  // the other reports not written
   for (const Result<void>& written :
        {writeResultsCsv(outcomes, dir + "/" + kResultsCsvFile),
         writeJunitXml(outcomes, dir + "/" + kJunitXmlFile),
         writeSummaryJson(outcomes, info, dir + "/" + kSummaryJsonFile),
         writeSummaryText(outcomes, info, dir + "/" + kSummaryTextFile),
         writeFailuresCsv(outcomes, info.baseline, dir + "/" + kFailuresCsvFile),
-        writeReportHtml(outcomes, info, dir + "/" + kReportHtmlFile)})
-    if (!written) return written.error();
-  return {};
+        writeReportHtml(outcomes, info, dir + "/" + kReportHtmlFile)}) {
+    if (written) continue;
+    if (!first)
+      first = written.error();
+    else
+      others += "; " + written.error().format();
+  }
+  if (!first) return {};
+  first->message += others;
+  return *first;
 }
 
 }  // namespace rayspec

@@ -55,9 +55,11 @@ std::string variantText(const std::string& variant);
 // deqp-runner's name for a status.
 const char* deqpStatusName(Status s);
 
-// Each writer: ErrorKind::Harness when its file cannot be written ("cannot
-// write PATH"); the JSON one also ErrorKind::Input when a case's details are
-// text JSON cannot hold (report/json_text.h).
+// Each writer writes its file whole or not at all (base/whole_file.h: a
+// full disk leaves the copy that was there as it was). The error:
+// ErrorKind::Harness when its file cannot be written ("PATH: cannot write:
+// WHY"); the JSON one also ErrorKind::Input when a case's details are text
+// JSON cannot hold (report/json_text.h).
 Result<void> writeResultsCsv(const std::vector<CaseOutcome>& outcomes, const std::string& path);
 Result<void> writeJunitXml(const std::vector<CaseOutcome>& outcomes, const std::string& path);
 Result<void> writeSummaryJson(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
@@ -80,8 +82,9 @@ inline constexpr std::array<const char*, 6> kReportFiles = {kResultsCsvFile,  kJ
                                                             kSummaryJsonFile, kSummaryTextFile,
                                                             kFailuresCsvFile, kReportHtmlFile};
 
-// All of the above into dir (each written even when one before failed);
-// returns the first error.
+// All of the above into dir (each written even when one before failed). The
+// error: the first, its message followed by those of the other reports not
+// written.
 Result<void> writeReports(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
                           const std::string& dir);
 

@@ -24,6 +24,14 @@ std::string caseNameProblem(const std::string& name);
 inline constexpr std::array<const char*, 5> kCaseOutputs = {"device", "model", "diff", "rerun",
                                                             "cost.json"};
 
+// A case name standing for `name` (`name` itself when it is one): in each
+// part, every byte a file name may not hold as "_xNN" (a space "_x20"), "."
+// and ".." as "_x2E" and "_x2E_x2E", an empty part as "_", a part still
+// too long cut to kMaxFileName bytes. A case file badly named (a space, bytes
+// that are not UTF-8) is reported as a CaseError under it, a name that every
+// reader of a run's files (summary.json, the journal, baselines) accepts.
+std::string caseNameFor(const std::string& name);
+
 // Removes what a case's run writes in its folder (its device and model
 // bundles, diff images, re-run and cost.json) and nothing else: a folder the
 // user keeps beside them in --out survives.

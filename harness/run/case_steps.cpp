@@ -127,7 +127,7 @@ std::optional<CaseOutcome> caseFileError(const CaseFile& file, const ParseResult
   std::string message;
   for (const Error& e : parsed.errors) message += (message.empty() ? "" : "\n  ") + e.format();
   if (parsed.value && message.empty()) return std::nullopt;
-  if (message.empty()) message = file.path + ": cannot read the case file";
+  if (message.empty()) message = visibleText(file.path) + ": cannot read the case file";
   return caseErrorOutcome(file.name,
                           parsed.value ? parsed.value->rules : std::vector<std::string>{},
                           "case-file", message);

@@ -179,7 +179,8 @@ class RunBook {
     if (reported_ && now - last_reports_ < std::chrono::seconds(2)) return;
     reported_ = true;
     last_reports_ = now;
-    writeReportsLocked();
+    if (const Result<void> written = writeReportsLocked(); !written)
+      std::fprintf(stderr, "%s\n", written.error().format().c_str());
   }
   // On a terminal: a live line naming the case that started last.
   void starting(const std::string& name) {
@@ -195,10 +196,11 @@ class RunBook {
     std::lock_guard<std::mutex> lock(mutex_);
     return endedLocked();
   }
-  // The reports of what ended (an error is said on stderr).
-  void writeAll() {
+  // The reports of what ended. The error: a report not written (the copy
+  // that was there stays), naming it and why.
+  Result<void> writeAll() {
     std::lock_guard<std::mutex> lock(mutex_);
-    writeReportsLocked();
+    return writeReportsLocked();
   }
   std::vector<std::string> teardown() {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -214,7 +216,7 @@ class RunBook {
       if (o) out.push_back(*o);
     return out;
   }
-  void writeReportsLocked() {
+  Result<void> writeReportsLocked() {
     std::vector<CaseOutcome> all = endedLocked();
     info_.teardown_errors = teardown_;
     const Result<void> written = writeRunReports(all, baseline_, info_, out_);
@@ -222,7 +224,7 @@ class RunBook {
     size_t i = 0;
     for (std::optional<CaseOutcome>& o : outcomes_)
       if (o) *o = std::move(all[i++]);
-    if (!written) std::fprintf(stderr, "%s\n", visibleLine(written.error().format()).c_str());
+    return written;
   }
 
   std::mutex mutex_;
@@ -419,12 +421,17 @@ int finishRun(RunBook& book, RunInfo& info, const RunOptions& opt, size_t planne
   saveCaseSeconds(opt.cache_dir, seconds);
   info.coverage = ruleCoverage(info.catalog, case_rules);
   info.interrupted = ended.size() < planned;
-  book.writeAll();
+  const Result<void> reported = book.writeAll();
   RunSummary summary(planned, RunSummary::Progress::Quiet);
   for (const CaseOutcome& o : book.ended()) summary.add(o);
   for (const std::string& m : book.teardown()) summary.addTeardownError(m);
   summary.print(opt.brief);
   if (info.interrupted) std::printf("INTERRUPTED: %zu of %zu cases ran\n", ended.size(), planned);
+  if (!reported) {
+    std::fprintf(stderr, "rayspec run: the reports are not complete: %s\n",
+                 visibleLine(reported.error().format()).c_str());
+    return kExitReports;
+  }
   std::printf("Reports: %s/report.html, results.csv, junit.xml, summary.json\n", opt.out.c_str());
   const int status = runExitStatus(summary, planned, device_found, interruptSignal());
   if (status == kExitNothingCompared)
@@ -453,7 +460,9 @@ int runPreparedCases(const RunOptions& opt, const std::vector<CaseFile>& files,
     if (const Result<void> started = startJournal(opt.out); !started)
       std::fprintf(stderr, "rayspec run: %s\n", visibleLine(started.error().format()).c_str());
   RunBook book(prepared, baseline, info, opt.out, opt.brief);
-  book.writeAll();  // empty and marked interrupted until the run ends
+  // Empty and marked interrupted until the run ends.
+  if (const Result<void> written = book.writeAll(); !written)
+    std::fprintf(stderr, "rayspec run: %s\n", visibleLine(written.error().format()).c_str());
   const std::vector<size_t> order = dealOrder(prepared, opt, jobs, book);
   catchInterrupts();
   const CaseRunner runner(opt, device.adapter.get(), model.get());

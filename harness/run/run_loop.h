@@ -16,6 +16,8 @@ inline constexpr int kExitFailing =
 inline constexpr int kExitSetup =
     2;  // nothing ran: bad options, no such device, no case, bad baseline
 inline constexpr int kExitNothingCompared = 3;  // every case was NotSupported: nothing was compared
+inline constexpr int kExitReports =
+    4;  // the cases ran, but a report could not be written (the message names it and why)
 inline constexpr int kExitNotSupported =
     77;  // a single case, NotSupported on a device that exists (ctest's skip)
 // Interrupted by SIGINT / SIGTERM: 128 + the signal, reports marked interrupted.
