@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "base/output_folder.h"
+#include "base/visible_text.h"
 #include "bundle/image_files.h"
 #include "bundle/results_io.h"
 #include "case/parse_case.h"
@@ -128,7 +129,7 @@ int runCompare(const CompareOptions& opt) {
   for (const Pair& p : pairs) names.push_back(p.name);
   const Result<OutputFolder> held = claimOutputFolder(opt.out, runFolderWrites(names), "compare");
   if (!held) {
-    std::fprintf(stderr, "rayspec compare: %s\n", held.error().format().c_str());
+    std::fprintf(stderr, "rayspec compare: %s\n", visibleLine(held.error().format()).c_str());
     return kExitSetup;
   }
   RunInfo info;
@@ -154,7 +155,7 @@ int runCompare(const CompareOptions& opt) {
   summary.print();
   if (const Result<void> written = writeReports(summary.outcomes(), info, opt.out); !written) {
     std::fprintf(stderr, "rayspec compare: the reports are not complete: %s\n",
-                 written.error().format().c_str());
+                 visibleLine(written.error().format()).c_str());
     return kExitReports;
   }
   std::printf("Reports: %s/report.html, results.csv, junit.xml, summary.json\n", opt.out.c_str());

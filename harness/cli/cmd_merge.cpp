@@ -23,7 +23,8 @@ int runMerge(const MergeOptions& opt) {
   }
   const Baseline& baseline = *loaded;
   Result<std::vector<Rule>> catalog = loadRuleCatalog(opt.rules_file);
-  if (!catalog) std::fprintf(stderr, "rayspec merge: %s\n", catalog.error().format().c_str());
+  if (!catalog)
+    std::fprintf(stderr, "rayspec merge: %s\n", visibleLine(catalog.error().format()).c_str());
   const Result<SavedRun> run =
       mergeRuns(opt.dirs, opt.out, baseline, catalog ? *catalog : std::vector<Rule>{});
   if (!run) {

@@ -180,7 +180,7 @@ class RunBook {
     reported_ = true;
     last_reports_ = now;
     if (const Result<void> written = writeReportsLocked(); !written)
-      std::fprintf(stderr, "%s\n", written.error().format().c_str());
+      std::fprintf(stderr, "%s\n", visibleLine(written.error().format()).c_str());
   }
   // On a terminal: a live line naming the case that started last.
   void starting(const std::string& name) {
