@@ -71,7 +71,7 @@ void patternsFile(const std::string& text) {
   write(workDir() / "p.txt", text);
   const auto loaded = rayspec::loadNamePatterns((workDir() / "p.txt").string());
   if (!loaded) return;
-  const std::vector<rayspec::NamePattern>& patterns = *loaded;
+  const rayspec::NamePatterns& patterns = *loaded;
   for (const char* name :
        {"anyhit/ignore-odd-primitives", "aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa!", ""})
     (void)rayspec::findPattern(patterns, name);
