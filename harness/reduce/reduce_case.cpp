@@ -100,13 +100,12 @@ Result<void> reductionSetup(ReduceOptions& opt, const CaseFile& f, RunInfo& info
   for (const std::string& note : icd.notes)
     std::fprintf(stderr, "rayspec reduce: %s\n", note.c_str());
   if (!icd.error.empty()) return errorMessage(icd.error);
-  if (!opt.device_command.empty()) {  // no device here: the command runs each variant's
+  if (!opt.device_command.empty())  // no device here: the command runs each variant's
     info.device = "the device `" + opt.device_command + "` runs";
-    useCacheDir(opt.run.cache_dir);
-    return {};
-  }
-  RAYSPEC_TRY_VOID(chooseDevice(opt.run, {f}, icd, info));
-  useCacheDir(opt.run.cache_dir);
+  else
+    RAYSPEC_TRY_VOID(chooseDevice(opt.run, {f}, icd, info));
+  if (const Result<void> cached = useCacheDir(opt.run.cache_dir); !cached)
+    std::fprintf(stderr, "rayspec reduce: %s\n", cached.error().format().c_str());
   return {};
 }
 
