@@ -11,8 +11,12 @@
 //                                       NUL byte the .sum file, the rest the
 //                                       .spv module; the property: it is a
 //                                       miss (no sum of the fuzzer's can match
-//                                       SHA-256 of the key and module), or the
-//                                       module is exactly what the test wrote
+//                                       HMAC-SHA-256 of the key and module
+//                                       under a secret it never sees), also
+//                                       with the sum anyone can make (plain
+//                                       SHA-256 of the key and module, the
+//                                       format before the secret); what the
+//                                       cache itself writes reads back
 //   5  a shard to merge                 report/merge_runs.h: the input is its
 //                                       summary.json; every case it names has
 //                                       its folder as a link to a folder
@@ -44,6 +48,7 @@
 #include "report/outcome_json.h"
 #include "results/file_name.h"
 #include "results/record_layout.h"
+#include "results/sha256.h"
 #include "spirv/compile_glsl.h"
 #include "spirv/spirv_cache.h"
 
@@ -76,7 +81,7 @@ void patternsFile(const std::string& text) {
   write(workDir() / "p.txt", text);
   const auto loaded = rayspec::loadNamePatterns((workDir() / "p.txt").string());
   if (!loaded) return;
-  const std::vector<rayspec::NamePattern>& patterns = *loaded;
+  const rayspec::NamePatterns& patterns = *loaded;
   for (const char* name :
        {"anyhit/ignore-odd-primitives", "aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa!", ""})
     (void)rayspec::findPattern(patterns, name);
@@ -134,22 +139,35 @@ void caseJournal(const std::string& text) {
   require((*again)->size() == (*outcomes)->size() + !holds(**outcomes, appended.name));
 }
 
+// The secret of the SPIR-V cache (spirv/cache_secret.h) outside the cache
+// folder, as a user's is: the fuzzer writes only the folder.
+void useOwnConfigDir() {
+  static const fs::path dir =
+      fs::temp_directory_path() / ("rayspec-fuzz-saved-config-" + std::to_string(getpid()));
+  setenv("RAYSPEC_CONFIG_DIR", dir.c_str(), 1);
+}
+
 void spirvCacheEntry(const std::string& text) {
   const size_t nul = text.find('\0');
   const std::string key = rayspec::spirvCacheKey("fuzz", rayspec::Stage::Miss);
+  const std::string module = nul == std::string::npos ? std::string() : text.substr(nul + 1);
   write(workDir() / rayspec::spirvCacheSumName(key), text.substr(0, nul));
-  write(workDir() / rayspec::spirvCacheFileName(key),
-        nul == std::string::npos ? std::string() : text.substr(nul + 1));
-  rayspec::setSpirvCacheDir(workDir().string());
+  write(workDir() / rayspec::spirvCacheFileName(key), module);
+  useOwnConfigDir();
+  require(rayspec::setSpirvCacheDir(workDir().string()).ok());
   rayspec::clearSpirvMemoryCache();
   std::vector<uint32_t> words;
   require(!rayspec::spirvCacheLookup(key, words));
+  // The fuzzer's module under the sum anyone can make.
+  const auto plain = rayspec::sha256Hex({key, "\n", module});
+  write(workDir() / rayspec::spirvCacheSumName(key), plain ? *plain + "\n" : std::string());
+  require(!rayspec::spirvCacheLookup(key, words));
   // What the cache itself writes reads back.
-  const std::vector<uint32_t> module = {0x07230203u, 0x00010400u, 0u, 1u, 0u};
-  rayspec::spirvCacheStore(key, module);
+  const std::vector<uint32_t> written = {0x07230203u, 0x00010400u, 0u, 1u, 0u};
+  rayspec::spirvCacheStore(key, written);
   rayspec::clearSpirvMemoryCache();
-  require(rayspec::spirvCacheLookup(key, words) && words == module);
-  rayspec::setSpirvCacheDir("");
+  require(rayspec::spirvCacheLookup(key, words) && words == written);
+  (void)rayspec::setSpirvCacheDir("");
 }
 
 void mergedShard(const std::string& text) {

@@ -121,6 +121,45 @@ TEST(Gate, FlakesAndSkips) {
   EXPECT_EQ(summary["counts"]["Pass"], 1);
 }
 
+// Issue 56: a skips or flakes file of patterns that each compile large
+// (60,000 of x[a-z]{1000}, 780 KB: 3.1 GB before) is refused at the line
+// that passes the bound on their compiled size: exit 2 naming the file and
+// the line, whether --skips names it, it lies beside --baseline, or merge
+// --skips names it; no case runs.
+TEST(Gate, PatternsThatCompileLargeAreExit2AtTheLine) {
+  const std::string dir = fresh("gate-large-patterns");
+  std::string text = "# each compiles to about a thousand instructions\n";
+  for (int i = 0; i < 60000; ++i) text += "x[a-z]{1000}\n";
+  const std::string skips = write(dir + "/large-skips.txt", text);
+  fs::create_directories(dir + "/skips-beside");
+  fs::create_directories(dir + "/flakes-beside");
+  fs::create_directories(dir + "/shard");
+  const std::string beside = write(dir + "/skips-beside/driver.csv", "# nothing known\n");
+  const std::string flakes_beside = write(dir + "/flakes-beside/driver.csv", "# nothing known\n");
+  write(dir + "/skips-beside/driver-skips.txt", text);
+  write(dir + "/flakes-beside/driver-flakes.txt", text);
+  auto refused = [&](const std::string& name, const std::string& command, const std::string& file) {
+    const std::string log = dir + "/" + name + ".txt";
+    EXPECT_EQ(sh(command, log), 2) << name << "\n" << slurp(log);
+    const std::string said = slurp(log);
+    const size_t at = said.find(file + ":");
+    ASSERT_NE(at, std::string::npos) << name << "\n" << said;
+    const int line = std::atoi(said.c_str() + at + file.size() + 1);
+    EXPECT_GT(line, 2) << said;
+    EXPECT_LT(line, 400) << said;
+    EXPECT_NE(said.find("the patterns up to this one compile to"), std::string::npos) << said;
+  };
+  const std::string run = kBin + " run --no-validation" + caseArg(kA);
+  refused("run", run + " --skips " + skips + " --out " + dir + "/run", skips);
+  EXPECT_FALSE(fs::exists(dir + "/run/" + kA)) << "a case ran";
+  refused("beside", run + " --baseline " + beside + " --out " + dir + "/beside",
+          dir + "/skips-beside/driver-skips.txt");
+  refused("flakes", run + " --baseline " + flakes_beside + " --out " + dir + "/flakes",
+          dir + "/flakes-beside/driver-flakes.txt");
+  refused("merge", kBin + " merge " + dir + "/shard --skips " + skips + " --out " + dir + "/merged",
+          skips);
+}
+
 // Shards of one run, by --shard and by GoogleTest's variables, merged back
 // into the run they make together.
 TEST(Shards, ShardsMergeIntoTheWholeRun) {

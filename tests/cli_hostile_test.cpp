@@ -6,8 +6,13 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <utility>
+#include <vector>
 
 #include "cli_helpers.h"
 
@@ -193,6 +198,69 @@ TEST(Hostile, RunsOfAnotherVariantNeverMix) {
     EXPECT_EQ(rc, 2) << m.command << "\n" << log;
     EXPECT_NE(log.find(m.message), std::string::npos) << log;
   }
+}
+
+// The execution model of a SPIR-V module's first OpEntryPoint (0: none).
+uint32_t executionModel(const std::string& module) {
+  std::vector<uint32_t> words(module.size() / 4);
+  std::memcpy(words.data(), module.data(), words.size() * 4);
+  constexpr uint32_t kOpEntryPoint = 15;
+  for (size_t i = 5; i + 1 < words.size();) {
+    if ((words[i] & 0xFFFF) == kOpEntryPoint) return words[i + 1];
+    i += (words[i] >> 16) ? (words[i] >> 16) : 1;
+  }
+  return 0;
+}
+
+// Issue 56: a cache folder others can write (a shared RAYSPEC_CACHE_DIR, a
+// CI cache from another job) with another case's module under each of this
+// case's keys, its .sum recomputed as the cache checked it before (SHA-256
+// of the key and the module, which anyone can compute). The run compiles
+// the case's own stages again and passes: the forged entries are rewritten,
+// never a verdict on the device.
+TEST(Hostile, AForgedSpirvCacheIsNeverAVerdict) {
+  const std::string root = fresh("hostile-forged-cache");
+  const std::string env = "RAYSPEC_CONFIG_DIR=" + root + "/config ";
+  const std::string other_case = "culling/cull-opaque";
+  for (const auto& [name, c] : {std::pair{"mine", kCase}, std::pair{"other", other_case}})
+    ASSERT_EQ(sh(env + cli::kBin + " run --no-validation" + caseArg(c) + " --cache-dir " + root +
+                     "/" + name + "-cache --out " + root + "/" + name,
+                 root + "/" + name + ".txt"),
+              0)
+        << slurp(root + "/" + name + ".txt");
+  std::map<uint32_t, std::string> other_modules;  // execution model -> module
+  for (const auto& e : fs::directory_iterator(root + "/other-cache/spirv"))
+    if (e.path().extension() == ".spv") {
+      const std::string module = slurp(e.path().string());
+      other_modules[executionModel(module)] = module;
+    }
+  std::map<std::string, std::string> forged;  // .sum file -> the sum written there
+  for (const auto& e : fs::directory_iterator(root + "/mine-cache/spirv")) {
+    if (e.path().extension() != ".spv") continue;
+    const std::string mine = slurp(e.path().string());
+    const auto other = other_modules.find(executionModel(mine));
+    if (other == other_modules.end() || other->second == mine) continue;
+    std::ofstream(e.path(), std::ios::binary | std::ios::trunc) << other->second;
+    const std::string key = e.path().stem().string(), sum_file = root + "/sum.txt";
+    ASSERT_EQ(sh("{ printf '%s\\n' " + key + "; cat " + e.path().string() +
+                     "; } | sha256sum | cut -c1-64",
+                 sum_file),
+              0);
+    const std::string sum = slurp(sum_file);
+    ASSERT_EQ(sum.size(), 65u) << sum;
+    const std::string sum_path = root + "/mine-cache/spirv/" + key + ".sum";
+    std::ofstream(sum_path, std::ios::trunc) << sum;
+    forged[sum_path] = sum;
+  }
+  ASSERT_FALSE(forged.empty()) << "no stage of " << other_case << " to forge " << kCase
+                               << "'s with";
+  const int rc = sh(env + cli::kBin + " run --no-validation" + caseArg(kCase) + " --cache-dir " +
+                        root + "/mine-cache --out " + root + "/again",
+                    root + "/again.txt");
+  EXPECT_EQ(rc, 0) << slurp(root + "/again.txt");
+  EXPECT_NE(slurp(root + "/again/summary.txt").find(kCase + ": Pass"), std::string::npos)
+      << slurp(root + "/again/summary.txt");
+  for (const auto& [path, sum] : forged) EXPECT_NE(slurp(path), sum) << path << " was used";
 }
 
 // Processes of their own and no processes at all: refused before anything runs.

@@ -115,6 +115,43 @@ TEST(Icd, CheckLimitsJudgesEachRequiredLimitAgainstTheBaseline) {
   EXPECT_NE(slurp(out + "/stale").find("the baseline expects Fail: update it"), std::string::npos);
 }
 
+// Issue 56: a limits baseline entry that could never apply (a case, a limit
+// the table does not have, a status other than Fail) and a malformed line
+// are refused: exit 2, naming the file and line, before any driver is probed.
+TEST(Icd, ALimitsBaselineEntryThatNeverAppliesIsExit2AtItsLine) {
+  const std::string lvp = lavapipeManifest();
+  ASSERT_FALSE(lvp.empty()) << "lavapipe is not installed";
+  const std::string out = fresh("icd-limits-baseline");
+  const std::string known = "# known\nlimits/maxPrimitiveCount,Fail\n";
+  struct Bad {
+    std::string file, text, error;
+  };
+  const std::vector<Bad> bad = {
+      {"case.csv", known + "anyhit/ignore-odd-primitives,Fail\n",
+       ":3: anyhit/ignore-odd-primitives names no required limit"},
+      {"misspelt.csv", known + "limits/maxPrimitveCount,Fail\n",
+       ":3: limits/maxPrimitveCount names no required limit"},
+      {"lower-case.csv", "limits/maxprimitivecount,Fail\n",
+       ":1: limits/maxprimitivecount names no required limit"},
+      {"crash.csv", "limits/maxRayDispatchInvocationCount,Crash # why\n" + known,
+       ":1: limits/maxRayDispatchInvocationCount,Crash: a limits baseline lists known "
+       "violations only, each as Fail"},
+      {"pass.csv", known + "limits/shaderGroupHandleSize,Pass\n",
+       ":3: limits/shaderGroupHandleSize,Pass: a limits baseline"},
+      {"malformed.csv", known + "limits/maxGeometryCount\n", ":3: expected 'case,Status'"},
+  };
+  for (const Bad& b : bad) {
+    const std::string path = out + "/" + b.file;
+    std::ofstream(path) << b.text;
+    const std::string log = out + "/" + b.file + ".txt";
+    EXPECT_EQ(sh(kBin + " devices --check-limits --icd " + lvp + " --baseline " + path, log), 2)
+        << b.file << "\n"
+        << slurp(log);
+    EXPECT_NE(slurp(log).find(path + b.error), std::string::npos) << b.file << "\n" << slurp(log);
+    EXPECT_EQ(slurp(log).find("ICD "), std::string::npos) << b.file << ": probed nonetheless";
+  }
+}
+
 TEST(Icd, RunOnLavapipeByItsManifest) {
   const std::string lvp = lavapipeManifest();
   ASSERT_FALSE(lvp.empty());

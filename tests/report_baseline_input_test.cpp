@@ -35,7 +35,7 @@ TEST(BaselineInput, LongLinesAreReadNotRecursedInto) {
   EXPECT_LT(error.size(), 1000u);  // the line is shown cut, with its length
   EXPECT_NE(error.find("bytes)"), std::string::npos);
   error.clear();
-  std::vector<NamePattern> p =
+  NamePatterns p =
       orError(loadNamePatterns(writeInput("long-skips.txt", comment + "^fam/b$\n")), &error);
   EXPECT_EQ(error, "");
   ASSERT_EQ(p.size(), 1u);
@@ -53,7 +53,7 @@ TEST(BaselineInput, AByteOrderMarkIsDropped) {
   EXPECT_EQ(error, "");
   EXPECT_EQ(b.expected.count("fam/a"), 1u);
   EXPECT_EQ(b.expected.at("fam/b"), Status::Crash);
-  std::vector<NamePattern> p =
+  NamePatterns p =
       orError(loadNamePatterns(writeInput("bom-skips.txt", "\xEF\xBB\xBF^fam/a$\n")), &error);
   EXPECT_EQ(error, "");
   EXPECT_NE(findPattern(p, "fam/a"), nullptr);
@@ -70,7 +70,7 @@ TEST(BaselineInput, AByteOrderMarkIsDropped) {
 // backtracking matcher (it ran for over 11 minutes), linear in RE2.
 TEST(BaselineInput, NestedStarsMatchInLinearTime) {
   std::string error;
-  std::vector<NamePattern> p =
+  NamePatterns p =
       orError(loadNamePatterns(writeInput("evil-skips.txt", "^(.*)*(.*)*(.*)*(.*)*Z$\n")), &error);
   ASSERT_EQ(error, "");
   EXPECT_EQ(findPattern(p, "abcdefghijklmnopqrstuvwxyz"), nullptr);
@@ -109,6 +109,73 @@ TEST(BaselineInput, AnOversizedFileIsRefusedWithItsSize) {
   EXPECT_NE(error.find("huge.csv: " + std::to_string(kMaxBaselineBytes + 1) + " bytes"),
             std::string::npos)
       << error;
+}
+
+// Issue 56: 60,000 patterns of x[a-z]{1000} (780 KB; each compiles to about
+// a thousand RE2 instructions) took 3.1 GB. The patterns' compiled size is
+// bounded as a whole: the file is refused at the line that passes the bound,
+// long before its end, naming the file and that line.
+TEST(BaselineInput, PatternsThatCompileLargeAreRefusedAtTheLine) {
+  std::string text;
+  for (int i = 0; i < 60000; ++i) text += "x[a-z]{1000}\n";
+  std::string error;
+  orError(loadNamePatterns(writeInput("large-skips.txt", text)), &error);
+  const std::string at = "large-skips.txt:";
+  const size_t found = error.find(at);
+  ASSERT_NE(found, std::string::npos) << error;
+  const int line = std::stoi(error.substr(found + at.size()));
+  EXPECT_GT(line, 1);
+  EXPECT_LE(line, kMaxPatternInstructions / 1000 + 1) << error;
+  EXPECT_NE(error.find("the patterns up to this one compile to"), std::string::npos) << error;
+  EXPECT_NE(error.find("more than the " + std::to_string(kMaxPatternInstructions)),
+            std::string::npos)
+      << error;
+  // One pattern past the bound alone: refused at its line too.
+  std::string one;
+  for (int i = 0; i < 500; ++i) one += "x[a-z]{1000}";
+  orError(loadNamePatterns(writeInput("one-large-skips.txt", "^fam/\n" + one + "\n")), &error);
+  EXPECT_NE(error.find("one-large-skips.txt:2: '"), std::string::npos) << error.substr(0, 300);
+  EXPECT_NE(error.find("this pattern alone compiles to more RE2 instructions"), std::string::npos)
+      << error.substr(0, 300);
+}
+
+// Patterns that compile small but parse large (an empty group is 4 bytes and
+// no instruction; RE2 keeps each parse until the set compiles, and its
+// compiler crashed on 1 MiB of `|`): their text is bounded too, refused at
+// the line that passes it.
+TEST(BaselineInput, PatternsOfMuchTextAreRefusedAtTheLine) {
+  std::string groups;
+  for (int i = 0; i < 1000; ++i) groups += "(?:)";
+  std::string text = "# 4000 bytes a line\n";
+  for (int i = 0; i < 100; ++i) text += groups + "  # a comment does not count\n";
+  std::string error;
+  orError(loadNamePatterns(writeInput("much-text-skips.txt", text)), &error);
+  EXPECT_NE(error.find("much-text-skips.txt:67: '(?:)"), std::string::npos) << error.substr(0, 300);
+  EXPECT_NE(error.find("the patterns up to this one hold 264000 bytes, more than the " +
+                       std::to_string(kMaxPatternBytes)),
+            std::string::npos)
+      << error;
+}
+
+// Many small patterns fit; the pattern found is the first in the file that
+// matches, with its own line.
+TEST(BaselineInput, ManySmallPatternsMatchInTheFilesOrder) {
+  std::string text = "# small ones\n";
+  for (int i = 0; i < 5000; ++i) text += "^fam/case" + std::to_string(i) + "$\n";
+  text += "^fam/\n";
+  std::string error;
+  const NamePatterns p = orError(loadNamePatterns(writeInput("small-skips.txt", text)), &error);
+  ASSERT_EQ(error, "");
+  ASSERT_EQ(p.size(), 5001u);
+  const NamePattern* hit = findPattern(p, "fam/case4321");
+  ASSERT_NE(hit, nullptr);
+  EXPECT_EQ(hit->text, "^fam/case4321$");
+  EXPECT_EQ(hit->where, testing_support::testDir() + "/small-skips.txt:4323");
+  hit = findPattern(p, "fam/other");
+  ASSERT_NE(hit, nullptr);
+  EXPECT_EQ(hit->text, "^fam/");
+  EXPECT_EQ(findPattern(p, "other/case1"), nullptr);
+  EXPECT_EQ(findPattern(NamePatterns{}, "fam/case1"), nullptr);
 }
 
 }  // namespace

@@ -102,7 +102,7 @@ TEST(CompileGlsl, DiskCacheSurvivesTheMemoryCache) {
       std::filesystem::temp_directory_path() /
       ("rayspec-spirv-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
   std::filesystem::remove_all(dir);
-  setSpirvCacheDir(dir.string());
+  ASSERT_TRUE(setSpirvCacheDir(dir.string()).ok());
   const std::string glsl = std::string(kAnyHit) + "// disk cache test\n";
   SpirvResult first = compileGlsl(glsl, Stage::AnyHit);
   ASSERT_TRUE(first.error.empty()) << first.error;
@@ -119,7 +119,7 @@ TEST(CompileGlsl, DiskCacheSurvivesTheMemoryCache) {
   SpirvResult third = compileGlsl(glsl, Stage::AnyHit);
   EXPECT_FALSE(third.from_cache);
   EXPECT_EQ(first.words, third.words);
-  setSpirvCacheDir("");
+  (void)setSpirvCacheDir("");
   std::filesystem::remove_all(dir);
 }
 
@@ -138,7 +138,7 @@ TEST(CompileGlsl, APoisonedCacheEntryIsAMissAndIsRewritten) {
       fs::temp_directory_path() /
       ("rayspec-spirv-poison-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
   fs::remove_all(dir);
-  setSpirvCacheDir(dir.string());
+  ASSERT_TRUE(setSpirvCacheDir(dir.string()).ok());
   const std::string glsl = std::string(kAnyHit) + "// poisoned cache test\n";
   const std::string other = std::string(kAnyHit) + "// another text\n";
   const SpirvResult good = compileGlsl(glsl, Stage::AnyHit);
@@ -173,7 +173,7 @@ TEST(CompileGlsl, APoisonedCacheEntryIsAMissAndIsRewritten) {
   fs::remove(spv);
   fs::create_symlink(dir / spirvCacheFileName(other_key), spv);
   recompiles("a link");
-  setSpirvCacheDir("");
+  (void)setSpirvCacheDir("");
   fs::remove_all(dir);
 }
 

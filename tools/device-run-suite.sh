@@ -25,6 +25,7 @@ for deb in "$root"/.gl/*.deb; do dpkg-deb -x "$deb" "$work/gl"; done
 icd=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
 export LD_LIBRARY_PATH="$work/p/lib:$work/gl/usr/lib/x86_64-linux-gnu:${LD_LIBRARY_PATH:-}"
 export VK_LAYER_PATH="$work/p/layer"
+export RAYSPEC_CONFIG_DIR="$work/p/config"  # the key of the pack's SPIR-V cache (tools/pack-device.sh)
 cd "$work/p"
 # The device and its limits against the specification's required ones (exit 1 on a violation: kept going).
 ./rayspec devices --check-limits --icd "$icd" | tee "$out/devices.txt" || true

@@ -35,6 +35,7 @@ seeds() {
     { printf '\002'; cat fuzz/seeds/results-bundle.bin; } >"$dir/results-bundle"
     { printf '\003'; cat fuzz/seeds/summary.json; } >"$dir/summary"
     { printf '\004'; printf 'not-a-sum'; printf '\000'; printf '\003\002\043\007'; } >"$dir/spirv-entry"
+    { printf '\004'; cat fuzz/seeds/spirv-entry.bin; } >"$dir/spirv-keyed-entry"
     { printf '\005'; cat fuzz/seeds/summary.json; } >"$dir/shard"
     { printf '\006'; cat fuzz/seeds/outcomes.jsonl; } >"$dir/journal"
     { printf '\006'; head -c -40 fuzz/seeds/outcomes.jsonl; } >"$dir/journal-cut"

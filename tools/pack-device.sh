@@ -3,11 +3,12 @@
 # no OpenImageIO; no tests) and packs it with the cases, the rule catalog,
 # the shared libraries a bare GPU machine may lack (yaml-cpp, libcrypto; ldd
 # decides) and the validation layer, and the SPIR-V of every stage
-# (cache/spirv: KEY.spv beside KEY.sum, spirv/spirv_cache.h), into
+# (cache/spirv: KEY.spv beside KEY.sum, spirv/spirv_cache.h) with the key of
+# its sums (config/spirv-cache.key, spirv/cache_secret.h), into
 # .device/pack.tar.xz (ignored by git). There:
 #   mkdir -p /tmp/p && tar -C /tmp/p -xJf pack.tar.xz && cd /tmp/p
-#   LD_LIBRARY_PATH=lib VK_LAYER_PATH=layer ./rayspec run --cases cases --rules spec-rules.yaml \
-#     --cache-dir cache --out DIR
+#   RAYSPEC_CONFIG_DIR=config LD_LIBRARY_PATH=lib VK_LAYER_PATH=layer ./rayspec run --cases cases \
+#     --rules spec-rules.yaml --cache-dir cache --out DIR
 # It runs the device side only; bring DIR back and judge it where the full
 # build is: rayspec run --device-results DIR --out JUDGED (README.md).
 # PACK_STAGE=DIR (an empty or missing folder) leaves the pack unpacked there
@@ -28,7 +29,11 @@ cp -r cases references/spec-rules.yaml "$stage/"
 # that the GPU machine compiles no GLSL. `rayspec compile` runs nothing: no
 # device, no trace (a run of the suite on lavapipe did this before, compiling
 # every pipeline with LLVM on the way: 11 minutes on a bare 2-core machine).
-build-device/rayspec compile --cases cases --cache-dir "$stage/cache"
+# The sums are keyed with a key made for the pack alone (config/, beside the
+# cache, not in it), so the user's own key (~/.config/rayspec) never leaves
+# this machine; RAYSPEC_CONFIG_DIR=config names it there. A run there without
+# it finds every module a miss and compiles it again (the binary has glslang).
+RAYSPEC_CONFIG_DIR="$stage/config" build-device/rayspec compile --cases cases --cache-dir "$stage/cache"
 # The driver pipeline caches a GPU run brought back (tools/device-run-suite.sh:
 # OUT/pipelines, kept in .device/pipelines): a driver finds its own file
 # (named by device and driver version, its header checked) and creates its

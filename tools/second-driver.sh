@@ -131,7 +131,7 @@ run() {
   # their own, for a verdict that does not depend on the order of the run.
   echo "== the run inside (device side only; exit 3 is the run-only build's)"
   local rc=0
-  inside sh -c 'icd=$1; shift; cd "$0/pack" && RAYSPEC_CACHE_DIR="$0/pack/cache" MESA_SHADER_CACHE_DIR="$0/mesa-cache" LD_LIBRARY_PATH=lib \
+  inside sh -c 'icd=$1; shift; cd "$0/pack" && RAYSPEC_CACHE_DIR="$0/pack/cache" RAYSPEC_CONFIG_DIR="$0/pack/config" MESA_SHADER_CACHE_DIR="$0/mesa-cache" LD_LIBRARY_PATH=lib \
     ./rayspec run --cases cases --rules spec-rules.yaml --icd "$icd" --strict-validation \
       --process-per-case-for "inactive/*" --process-per-case-for "culling/mask-combinations/*" \
       --process-per-case-for "accel/*" --out "$0/out" "$@" >"$0/run.log" 2>&1' \
@@ -167,7 +167,7 @@ device() {
   trap unmount_inside EXIT
   mount_inside
   local rc=0
-  inside sh -c 'cd "$0/pack" && RAYSPEC_CACHE_DIR="$0/pack/cache" MESA_SHADER_CACHE_DIR="$0/mesa-cache" LD_LIBRARY_PATH=lib \
+  inside sh -c 'cd "$0/pack" && RAYSPEC_CACHE_DIR="$0/pack/cache" RAYSPEC_CONFIG_DIR="$0/pack/config" MESA_SHADER_CACHE_DIR="$0/mesa-cache" LD_LIBRARY_PATH=lib \
     ./rayspec run --cases "$0/variant/cases" --filter "$2" --rules spec-rules.yaml --icd "$1" --strict-validation \
       --process-per-case --out "$0/variant/out"' "$WORK" "$ICD" "$RAYSPEC_VARIANT_NAME" || rc=$?
   unmount_inside

@@ -44,7 +44,11 @@ int runCompile(const CompileOptions& opt) {
                  opt.cases_dir.c_str());
     return 2;
   }
-  useCacheDir(opt.cache_dir);
+  // What it compiles is for the cache on disk: without the cache's key, nothing would be kept.
+  if (const Result<void> cached = useCacheDir(opt.cache_dir); !cached) {
+    std::fprintf(stderr, "rayspec compile: %s\n", cached.error().format().c_str());
+    return 2;
+  }
   CompileCounts n;
   for (const CaseFile& f : files) {
     const ParseResult parsed = loadCase(f, opt.cases_dir, nullptr);

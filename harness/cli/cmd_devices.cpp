@@ -108,7 +108,7 @@ int runDevices(const DevicesOptions& opt) {
               opt.icd_files.empty() ? "" : " (--icd)", places.c_str());
   LimitsRun limits{opt.check_limits, {}, {}};
   if (!opt.limits_baseline.empty()) {
-    Result<Baseline> b = loadBaseline(opt.limits_baseline);
+    Result<Baseline> b = loadLimitsBaseline(opt.limits_baseline);
     if (!b) {
       std::fprintf(stderr, "rayspec devices: %s\n", b.error().format().c_str());
       return 2;

@@ -1,6 +1,10 @@
 #include "cli/limits_check.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <set>
+#include <utility>
+#include <vector>
 
 #include "report/baseline_gate.h"
 #include "vulkan/required_limits.h"
@@ -28,6 +32,26 @@ LimitsVerdict printLimitChecks(const DeviceInfo& d, const Baseline& baseline) {
                 note.c_str());
   }
   return v;
+}
+
+Result<Baseline> loadLimitsBaseline(const std::string& path) {
+  RAYSPEC_TRY(Baseline b, loadBaseline(path));
+  std::set<std::string> limits;
+  for (const LimitCheck& c : checkRequiredLimits(DeviceInfo{})) limits.insert(c.caseName());
+  std::vector<std::pair<int, std::string>> entries;  // in the file's order
+  for (const auto& [name, line] : b.line_of) entries.emplace_back(line, name);
+  std::sort(entries.begin(), entries.end());
+  for (const auto& [line, name] : entries) {
+    const std::string where = path + ":" + std::to_string(line) + ": " + name;
+    if (!limits.count(name))
+      return errorMessage(where +
+                          " names no required limit (a limits baseline lists limits/<name>, as "
+                          "`rayspec devices --check-limits` prints them)");
+    if (const Status s = b.expected.at(name); s != Status::Fail)
+      return errorMessage(where + "," + statusName(s) +
+                          ": a limits baseline lists known violations only, each as Fail");
+  }
+  return b;
 }
 
 }  // namespace rayspec

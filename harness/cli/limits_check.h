@@ -19,4 +19,11 @@ struct LimitsVerdict {
 // Prints one line per limit; counts what the baseline says of them.
 LimitsVerdict printLimitChecks(const DeviceInfo& d, const Baseline& baseline);
 
+// The baseline of known violations (--check-limits --baseline FILE): one
+// `limits/<name>,Fail` line per limit the driver is known to break. An entry
+// that names no limit of the table (a case, a misspelt limit) or says any
+// status but Fail would never apply: it is the error naming the file and
+// line, as is a malformed line.
+Result<Baseline> loadLimitsBaseline(const std::string& path);
+
 }  // namespace rayspec

@@ -101,6 +101,13 @@ std::string ruleTitle(const std::vector<Rule>& catalog, const std::string& label
   return out;
 }
 
+// The SPIR-V cache of the variants' runs; without one (no key for it) they
+// compile every stage, and the user is told.
+void useCacheDirOrSay(const std::string& dir) {
+  if (const Result<void> cached = useCacheDir(dir); !cached)
+    std::fprintf(stderr, "rayspec reduce: %s\n", visibleLine(cached.error().format()).c_str());
+}
+
 // The setup a reduction needs before its first variant: the options, the
 // driver manifests, the device.
 Result<void> reductionSetup(ReduceOptions& opt, const CaseFile& f, RunInfo& info) {
@@ -113,14 +120,14 @@ Result<void> reductionSetup(ReduceOptions& opt, const CaseFile& f, RunInfo& info
   if (!icd.error.empty()) return errorMessage(icd.error);
   if (!opt.device_command.empty()) {  // no device here: the command runs each variant's
     info.device = "the device `" + opt.device_command + "` runs";
-    useCacheDir(opt.run.cache_dir);
+    useCacheDirOrSay(opt.run.cache_dir);
     // The command runs in a process group of its own, which the terminal's
     // Ctrl-C does not reach: the signal is caught here and the group killed.
     catchInterrupts();
     return {};
   }
   RAYSPEC_TRY_VOID(chooseDevice(opt.run, {f}, icd, info));
-  useCacheDir(opt.run.cache_dir);
+  useCacheDirOrSay(opt.run.cache_dir);
   return {};
 }
 

@@ -1,7 +1,9 @@
 #include "report/baseline.h"
 
 #include <re2/re2.h>
+#include <re2/set.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -87,8 +89,71 @@ std::vector<std::string> unknownEntries(const Baseline& b, const std::vector<std
   return out;
 }
 
-Result<std::vector<NamePattern>> loadNamePatterns(const std::string& path) {
-  std::vector<NamePattern> out;
+struct CompiledPatterns {
+  RE2::Set set;
+};
+
+namespace {
+
+RE2::Options patternOptions(int64_t max_mem) {
+  RE2::Options options;
+  options.set_log_errors(false);
+  options.set_max_mem(max_mem);
+  return options;
+}
+
+// The error at `where` when the patterns up to `text` compile to more than
+// kMaxPatternInstructions (`instructions`: how many, or 0 when RE2 refused
+// the one alone).
+Error tooLarge(const std::string& where, const std::string& text, int64_t instructions) {
+  const std::string what =
+      instructions ? "the patterns up to this one compile to " + std::to_string(instructions) +
+                         " RE2 instructions, more than the "
+                   : "this pattern alone compiles to more RE2 instructions than the ";
+  return errorMessage(where + ": '" + shown(text) + "': " + what +
+                      std::to_string(kMaxPatternInstructions) +
+                      " a flakes or skips file may compile to");
+}
+
+// The error at `where` when the patterns up to `text` hold `bytes`, more
+// than kMaxPatternBytes.
+Error tooLong(const std::string& where, const std::string& text, int64_t bytes) {
+  return errorMessage(where + ": '" + shown(text) + "': the patterns up to this one hold " +
+                      std::to_string(bytes) + " bytes, more than the " +
+                      std::to_string(kMaxPatternBytes) +
+                      " a flakes or skips file may hold (comments aside)");
+}
+
+// For one pattern alone, a 16th of the set's memory: RE2 caps its program at
+// two thirds of that at 8 bytes an instruction (349,525 instructions), more
+// than kMaxPatternInstructions, so what it refuses alone is past them.
+constexpr int64_t kOnePatternMemory = kPatternSetMemory / 16;
+
+// How many instructions `text` compiles to alone, or the error at `where`.
+Result<int64_t> compiledSize(const std::string& text, const std::string& where) {
+  const RE2 regex(text, patternOptions(kOnePatternMemory));
+  if (regex.error_code() == RE2::ErrorPatternTooLarge) return tooLarge(where, text, 0);
+  if (!regex.ok())
+    return errorMessage(where + ": not a regular expression (RE2 syntax): '" + shown(text) + "' (" +
+                        regex.error() + ")");
+  return regex.ProgramSize();
+}
+
+// The first of `patterns` found in `name`, each compiled alone: where the
+// set's DFA gave up (it has room for its states, so this is not expected).
+const NamePattern* findOneByOne(const NamePatterns& patterns, const std::string& name) {
+  for (const NamePattern& p : patterns.list)
+    if (RE2::PartialMatch(name, RE2(p.text, patternOptions(kOnePatternMemory)))) return &p;
+  return nullptr;
+}
+
+}  // namespace
+
+Result<NamePatterns> loadNamePatterns(const std::string& path) {
+  NamePatterns out;
+  auto compiled = std::make_shared<CompiledPatterns>(
+      CompiledPatterns{RE2::Set(patternOptions(kPatternSetMemory), RE2::UNANCHORED)});
+  int64_t instructions = 0, bytes = 0;
   static const RE2 comment(R"(\s+#.*$)");
   Result<void> read = forEachEntry(path, [&](const std::string& line, int number) -> Result<void> {
     // A pattern may carry a trailing comment after whitespace and '#'.
@@ -96,23 +161,34 @@ Result<std::vector<NamePattern>> loadNamePatterns(const std::string& path) {
     RE2::Replace(&text, comment, "");
     text = trimmed(text);
     const std::string where = path + ":" + std::to_string(number);
-    RE2::Options options;
-    options.set_log_errors(false);
-    auto regex = std::make_shared<const RE2>(text, options);
-    if (!regex->ok())
+    if ((bytes += static_cast<int64_t>(text.size())) > kMaxPatternBytes)
+      return tooLong(where, text, bytes);
+    RAYSPEC_TRY(const int64_t size, compiledSize(text, where));
+    if ((instructions += size) > kMaxPatternInstructions)
+      return tooLarge(where, text, instructions);
+    std::string error;
+    if (compiled->set.Add(text, &error) < 0)
       return errorMessage(where + ": not a regular expression (RE2 syntax): '" + shown(text) +
-                          "' (" + regex->error() + ")");
-    out.push_back({text, where, std::move(regex)});
+                          "' (" + error + ")");
+    out.list.push_back({text, where});
     return {};
   });
   if (!read) return read.error();
+  if (out.list.empty()) return out;
+  if (!compiled->set.Compile())
+    return errorMessage(path + ": its patterns do not compile together within RE2's " +
+                        std::to_string(kPatternSetMemory) + " bytes");
+  out.compiled = std::move(compiled);
   return out;
 }
 
-const NamePattern* findPattern(const std::vector<NamePattern>& patterns, const std::string& name) {
-  for (const NamePattern& p : patterns)
-    if (RE2::PartialMatch(name, *p.regex)) return &p;
-  return nullptr;
+const NamePattern* findPattern(const NamePatterns& patterns, const std::string& name) {
+  if (!patterns.compiled) return nullptr;
+  std::vector<int> found;
+  RE2::Set::ErrorInfo info{RE2::Set::kNoError};
+  if (patterns.compiled->set.Match(name, &found, &info))
+    return &patterns.list.at(static_cast<size_t>(*std::min_element(found.begin(), found.end())));
+  return info.kind == RE2::Set::kNoError ? nullptr : findOneByOne(patterns, name);
 }
 
 std::string siblingFile(const std::string& baseline_csv, const std::string& suffix) {
@@ -162,7 +238,7 @@ Result<Baseline> loadBaselineSet(const std::string& csv, std::string flakes, std
                                       std::tuple{skips, &b.skips_file, &b.skips}}) {
     if (file.empty()) continue;
     *kept = file;
-    Result<std::vector<NamePattern>> read = loadNamePatterns(file);
+    Result<NamePatterns> read = loadNamePatterns(file);
     if (!read) return read.error();
     *patterns = std::move(*read);
   }

@@ -14,9 +14,9 @@ std::string defaultCacheDir() {
   return {};
 }
 
-void useCacheDir(const std::string& dir) {
-  setSpirvCacheDir(dir.empty() ? std::string() : dir + "/spirv");
+Result<void> useCacheDir(const std::string& dir) {
   setPipelineCacheDir(dir.empty() ? std::string() : dir + "/pipelines");
+  return setSpirvCacheDir(dir.empty() ? std::string() : dir + "/spirv");
 }
 
 }  // namespace rayspec

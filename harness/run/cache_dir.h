@@ -8,6 +8,8 @@
 
 #include <string>
 
+#include "base/result.h"
+
 namespace rayspec {
 
 // $RAYSPEC_CACHE_DIR, else $XDG_CACHE_HOME/rayspec, else $HOME/.cache/rayspec;
@@ -15,7 +17,9 @@ namespace rayspec {
 std::string defaultCacheDir();
 
 // Points the SPIR-V cache at <dir>/spirv and the pipeline caches at
-// <dir>/pipelines ("" : SPIR-V in memory only, no pipeline cache).
-void useCacheDir(const std::string& dir);
+// <dir>/pipelines ("" : SPIR-V in memory only, no pipeline cache). The error
+// when the SPIR-V cache's key cannot be had (spirv/cache_secret.h): its
+// SPIR-V stays in memory then, and the pipeline caches are used.
+Result<void> useCacheDir(const std::string& dir);
 
 }  // namespace rayspec

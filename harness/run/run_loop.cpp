@@ -450,7 +450,9 @@ int runPreparedCases(const RunOptions& opt, const std::vector<CaseFile>& files,
                      const Baseline& baseline, RunInfo& info, ChosenDevice& device, unsigned jobs,
                      std::map<std::string, CaseOutcome>& earlier) {
   std::unique_ptr<ModelAdapter> model = inProcessModel(opt);
-  useCacheDir(opt.cache_dir);  // before the first fork: every case process inherits it
+  // Before the first fork: every case process inherits it.
+  if (const Result<void> cached = useCacheDir(opt.cache_dir); !cached)
+    std::fprintf(stderr, "rayspec run: %s\n", cached.error().format().c_str());
   // Unknown rule labels are case-file errors at their line:col (the parser checks them).
   const PreparedRun prepared =
       prepareCases(files, opt, baseline, ruleLabels(info.catalog), earlier);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "base/result.h"
 #include "program/program.h"
 
 namespace rayspec {
@@ -21,6 +22,8 @@ struct SpirvResult {
 SpirvResult compileGlsl(const std::string& glsl, Stage stage, bool compute = false);
 
 // Folder for the on-disk cache (created when missing); empty disables it.
-void setSpirvCacheDir(const std::string& dir);
+// The error when the key of its sums (spirv/cache_secret.h) can be neither
+// read nor made: the cache stays in memory only then.
+Result<void> setSpirvCacheDir(const std::string& dir);
 
 }  // namespace rayspec

@@ -8,6 +8,7 @@
 
 #include "base/whole_file.h"
 #include "results/sha256.h"
+#include "spirv/cache_secret.h"
 #include "spirv/compile_glsl.h"
 
 namespace rayspec {
@@ -22,6 +23,7 @@ struct Cache {
   std::mutex mutex;
   std::unordered_map<std::string, std::vector<uint32_t>> memory;
   std::string dir;
+  std::string secret;  // keys the sums on disk (spirv/cache_secret.h); set with dir
 };
 
 Cache& cache() {
@@ -33,9 +35,11 @@ std::string_view bytesOf(const std::vector<uint32_t>& words) {
   return {reinterpret_cast<const char*>(words.data()), words.size() * sizeof(uint32_t)};
 }
 
-// The sum an entry's .sum file holds: the module bound to its key.
-Result<std::string> entrySum(const std::string& key, const std::vector<uint32_t>& words) {
-  return sha256Hex({key, "\n", bytesOf(words)});
+// The sum an entry's .sum file holds: the module bound to its key, under
+// the secret, which no one who can only write the cache folder holds.
+Result<std::string> entrySum(const std::string& secret, const std::string& key,
+                             const std::vector<uint32_t>& words) {
+  return hmacSha256Hex(secret, {key, "\n", bytesOf(words)});
 }
 
 bool isRegularFile(const fs::path& p) {
@@ -44,7 +48,8 @@ bool isRegularFile(const fs::path& p) {
 }
 
 // The module at `dir`/<key>.spv when the entry checks out (see the header).
-bool readEntry(const fs::path& dir, const std::string& key, std::vector<uint32_t>& words) {
+bool readEntry(const fs::path& dir, const std::string& secret, const std::string& key,
+               std::vector<uint32_t>& words) {
   const fs::path spv = dir / spirvCacheFileName(key), sum = dir / spirvCacheSumName(key);
   if (!isRegularFile(spv) || !isRegularFile(sum)) return false;
   const Result<std::string> module = readWholeFile(spv.string(), kMaxCachedModuleBytes);
@@ -53,7 +58,7 @@ bool readEntry(const fs::path& dir, const std::string& key, std::vector<uint32_t
   std::vector<uint32_t> data(module->size() / 4);
   std::memcpy(data.data(), module->data(), module->size());
   if (data[0] != kSpirvMagic) return false;
-  const Result<std::string> expected = entrySum(key, data);
+  const Result<std::string> expected = entrySum(secret, key, data);
   if (!expected || stored->substr(0, stored->find_first_of(" \n")) != *expected) return false;
   words = std::move(data);
   return true;
@@ -67,12 +72,13 @@ void clearOddEntry(const fs::path& p) {
   if (t != fs::file_type::not_found && t != fs::file_type::regular) fs::remove(p, ec);
 }
 
-void writeEntry(const fs::path& dir, const std::string& key, const std::vector<uint32_t>& words) {
+void writeEntry(const fs::path& dir, const std::string& secret, const std::string& key,
+                const std::vector<uint32_t>& words) {
   const fs::path spv = dir / spirvCacheFileName(key), sum = dir / spirvCacheSumName(key);
   clearOddEntry(spv);
   clearOddEntry(sum);
   // A cache: a failed write only makes the next run slower.
-  const Result<std::string> entry_sum = entrySum(key, words);
+  const Result<std::string> entry_sum = entrySum(secret, key, words);
   if (entry_sum && writeWholeFile(spv.string(), words.data(), words.size() * 4))
     (void)writeWholeFile(sum.string(), *entry_sum + "\n");
 }
@@ -95,7 +101,7 @@ std::string spirvCacheSumName(const std::string& key) {
 
 bool spirvCacheLookup(const std::string& key, std::vector<uint32_t>& words) {
   Cache& c = cache();
-  std::string dir;
+  std::string dir, secret;
   {
     std::lock_guard<std::mutex> lock(c.mutex);
     auto it = c.memory.find(key);
@@ -104,8 +110,9 @@ bool spirvCacheLookup(const std::string& key, std::vector<uint32_t>& words) {
       return true;
     }
     dir = c.dir;
+    secret = c.secret;
   }
-  if (dir.empty() || !readEntry(dir, key, words)) return false;
+  if (dir.empty() || !readEntry(dir, secret, key, words)) return false;
   std::lock_guard<std::mutex> lock(c.mutex);
   c.memory.emplace(key, words);
   return true;
@@ -113,13 +120,14 @@ bool spirvCacheLookup(const std::string& key, std::vector<uint32_t>& words) {
 
 void spirvCacheStore(const std::string& key, const std::vector<uint32_t>& words) {
   Cache& c = cache();
-  std::string dir;
+  std::string dir, secret;
   {
     std::lock_guard<std::mutex> lock(c.mutex);
     c.memory[key] = words;
     dir = c.dir;
+    secret = c.secret;
   }
-  if (!dir.empty()) writeEntry(dir, key, words);
+  if (!dir.empty()) writeEntry(dir, secret, key, words);
 }
 
 void clearSpirvMemoryCache() {
@@ -127,13 +135,18 @@ void clearSpirvMemoryCache() {
   cache().memory.clear();
 }
 
-void setSpirvCacheDir(const std::string& dir) {
-  if (!dir.empty()) {
+Result<void> setSpirvCacheDir(const std::string& dir) {
+  Result<std::string> secret = std::string();
+  if (!dir.empty()) secret = loadCacheSecret(cacheSecretFile());
+  if (secret) {
     std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
+    if (!dir.empty()) std::filesystem::create_directories(dir, ec);
   }
   std::lock_guard<std::mutex> lock(cache().mutex);
-  cache().dir = dir;
+  cache().dir = secret ? dir : std::string();
+  cache().secret = secret ? *secret : std::string();
+  if (!secret) return errorMessage("the SPIR-V cache on disk is off: " + secret.error().format());
+  return {};
 }
 
 }  // namespace rayspec

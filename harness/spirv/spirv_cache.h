@@ -1,10 +1,13 @@
 // The SPIR-V cache: key -> words, in memory and, when setSpirvCacheDir named
 // a folder, on disk as <dir>/<key>.spv (the module as it is, for spirv-val
-// and the device pack) beside <dir>/<key>.sum (SHA-256 of the key and the
-// module). An entry on disk is used only when both are regular files, the
-// module is within kMaxCachedModuleBytes and SPIR-V, and the sum matches it
-// and its key; anything else is a miss, and the entry is written anew (a
-// link or FIFO in its place removed first). Thread-safe.
+// and the device pack) beside <dir>/<key>.sum (HMAC-SHA-256 of the key and
+// the module under the user's secret, spirv/cache_secret.h: whoever can
+// write the folder but lacks the secret cannot make a sum that matches). An
+// entry on disk is used only when both are regular files, the module is
+// within kMaxCachedModuleBytes and SPIR-V, and the sum matches it and its
+// key; anything else (a sum made without the secret, such as a plain
+// SHA-256) is a miss, and the entry is written anew (a link or FIFO in its
+// place removed first). Thread-safe.
 #pragma once
 
 #include <cstdint>
