@@ -5,10 +5,14 @@
 
 namespace rayspec {
 
-std::string visibleText(const std::string& text) {
+namespace {
+
+// The text with every byte that is not printable ASCII (and, unless
+// `lines`, newline and tab too) written as \xNN.
+std::string escaped(const std::string& text, bool lines) {
   std::string out;
   for (unsigned char ch : text) {
-    if ((ch >= 0x20 && ch < 0x7F) || ch == '\n' || ch == '\t') {
+    if ((ch >= 0x20 && ch < 0x7F) || (lines && (ch == '\n' || ch == '\t'))) {
       out += static_cast<char>(ch);
       continue;
     }
@@ -17,6 +21,16 @@ std::string visibleText(const std::string& text) {
     out += hex;
   }
   return out;
+}
+
+}  // namespace
+
+std::string visibleText(const std::string& text) {
+  return escaped(text, true);
+}
+
+std::string visibleLine(const std::string& text) {
+  return escaped(text, false);
 }
 
 std::string visibleText(const std::string& text, size_t max_bytes) {

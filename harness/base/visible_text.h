@@ -11,5 +11,9 @@ namespace rayspec {
 std::string visibleText(const std::string& text);
 // At most max_bytes of it, then "... (N bytes)" when it is longer.
 std::string visibleText(const std::string& text, size_t max_bytes);
+// visibleText on one line: newline and tab written as \xNN too (a note that
+// becomes one line of failures.csv or of the console: a newline in it would
+// start a line of its own, saying what the text pleases).
+std::string visibleLine(const std::string& text);
 
 }  // namespace rayspec

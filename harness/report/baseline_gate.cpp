@@ -2,6 +2,7 @@
 
 #include <fstream>
 
+#include "base/visible_text.h"
 #include "report/escape.h"
 #include "report/write_reports.h"
 
@@ -48,7 +49,8 @@ void applyRerun(CaseOutcome& o, const CaseOutcome& rerun) {
   }
   o.baseline = BaselineMatch::Flake;
   o.baseline_note += std::string("; a flake: the re-run gave ") + statusName(rerun.status);
-  if (rerun.status != Status::Pass) o.baseline_note += " (" + rerun.headline + ")";
+  // The headline quotes what the case produced (a validation message): one line.
+  if (rerun.status != Status::Pass) o.baseline_note += " (" + visibleLine(rerun.headline) + ")";
 }
 
 CaseOutcome skippedOutcome(const std::string& name, const NamePattern& pattern) {
@@ -92,7 +94,8 @@ Result<void> writeFailuresCsv(const std::vector<CaseOutcome>& outcomes,
   for (const CaseOutcome& o : outcomes) {
     if (!failsRun(o) && o.baseline != BaselineMatch::Flake) continue;
     out << csvField(o.name) << ',' << statusName(o.status) << "  # " << deqpResultName(o);
-    if (!o.baseline_note.empty()) out << ": " << o.baseline_note;
+    // One line a case, whatever its note holds (read back from a saved run).
+    if (!o.baseline_note.empty()) out << ": " << visibleLine(o.baseline_note);
     out << '\n';
   }
   if (!out) return errorOf(ErrorKind::Harness, "cannot write " + path);
