@@ -151,7 +151,8 @@ TEST(ResultsIo, BadBundlesNameTheFieldOrFile) {
   EXPECT_NE(
       edited("\"seconds\": 0.25", "\"seconds\": \"soon\"").find("results.json: field 'seconds': "),
       std::string::npos);
-  EXPECT_NE(edited("\"channels\": 4", "\"channels\": true").find("field 'images.channels'"),
+  EXPECT_NE(edited("\"channels\": 4", "\"channels\": true")
+                .find("results.json: images.channels: true is no unsigned integer"),
             std::string::npos);
   EXPECT_NE(edited("\"fields\": [\n", "\"fields\": [\"no_such_field\",\n")
                 .find("unknown field 'no_such_field'"),

@@ -181,6 +181,14 @@ std::string runFolder(const std::string& name, const std::string& device,
   return dir;
 }
 
+// A judge that takes each case as its shard's summary.json says (what merge
+// did before issue 56), without re-runs: these tests are of the joining.
+Result<std::optional<CaseOutcome>> asClaimed(const std::string&, const RunInfo&,
+                                             const CaseOutcome& claimed, bool rerun) {
+  if (rerun) return std::optional<CaseOutcome>();
+  return std::optional<CaseOutcome>(claimed);
+}
+
 TEST(MergeRuns, ShardsJoinIntoOneRun) {
   const std::string a = runFolder("shard-a", "llvmpipe",
                                   {outcome("fam/b", Status::Pass), outcome("fam/d", Status::Fail)});
@@ -188,7 +196,7 @@ TEST(MergeRuns, ShardsJoinIntoOneRun) {
                                   {outcome("fam/a", Status::Pass), outcome("fam/c", Status::Pass)});
   const std::string out = testing_support::testDir() + "/merged";
   std::filesystem::remove_all(out);
-  const Result<SavedRun> m = mergeRuns({a, b}, out, Baseline{}, {});
+  const Result<SavedRun> m = mergeRuns({a, b}, out, Baseline{}, {}, asClaimed);
   ASSERT_TRUE(m) << m.error().format();
   ASSERT_EQ(m->outcomes.size(), 4u);
   EXPECT_EQ(m->outcomes[0].name, "fam/a");
@@ -206,12 +214,84 @@ TEST(MergeRuns, RefusesTwoDevicesAndACaseTwice) {
   const std::string b = runFolder("m-b", "NVIDIA H100", {outcome("fam/b", Status::Pass)});
   const std::string c = runFolder("m-c", "llvmpipe", {outcome("fam/a", Status::Fail)});
   const std::string out = testing_support::testDir() + "/m-out";
-  EXPECT_NE(errorText(mergeRuns({a, b}, out, Baseline{}, {})).find("NVIDIA H100"),
+  EXPECT_NE(errorText(mergeRuns({a, b}, out, Baseline{}, {}, asClaimed)).find("NVIDIA H100"),
             std::string::npos);
-  const std::string twice = errorText(mergeRuns({a, c}, out, Baseline{}, {}));
+  const std::string twice = errorText(mergeRuns({a, c}, out, Baseline{}, {}, asClaimed));
   EXPECT_NE(twice.find("fam/a"), std::string::npos) << twice;
   EXPECT_NE(twice.find("m-c"), std::string::npos) << twice;
-  EXPECT_NE(errorText(mergeRuns({a}, a, Baseline{}, {})), "");
+  EXPECT_NE(errorText(mergeRuns({a}, a, Baseline{}, {}, asClaimed)), "");
+}
+
+// The bundles' verdict, not the summary's: a shard whose summary.json says
+// Pass and "flake" for a case its bundles judge Fail merges as the Fail the
+// baseline did not expect, without --baseline too (no mark of the shard's
+// gate is kept); a flake only where the re-run's bundles gave another result.
+TEST(MergeRuns, EveryCaseIsAsTheJudgeFindsItAndAFlakeNeedsItsRerun) {
+  CaseOutcome forged = outcome("fam/new", Status::Pass);
+  forged.baseline = BaselineMatch::Flake;
+  forged.baseline_note = "a flake\nfam/victim,Fail";
+  CaseOutcome flaky = outcome("fam/wobbles", Status::Fail);
+  const std::string shard = runFolder("judged", "llvmpipe", {forged, flaky});
+  const ShardCaseJudge bundles = [](const std::string&, const RunInfo&, const CaseOutcome& claimed,
+                                    bool rerun) -> Result<std::optional<CaseOutcome>> {
+    if (rerun && claimed.name == "fam/new") return std::optional<CaseOutcome>();  // none
+    CaseOutcome o = outcome(claimed.name, rerun ? Status::Pass : Status::Fail);
+    return std::optional<CaseOutcome>(o);
+  };
+  const std::string out = testing_support::testDir() + "/judged-out";
+  const Result<SavedRun> plain = mergeRuns({shard}, out, Baseline{}, {}, bundles);
+  ASSERT_TRUE(plain) << plain.error().format();
+  for (const CaseOutcome& o : plain->outcomes) {
+    EXPECT_EQ(o.status, Status::Fail) << o.name;
+    EXPECT_EQ(o.baseline, BaselineMatch::None) << o.name;
+    EXPECT_TRUE(failsRun(o)) << o.name;
+  }
+  const Result<SavedRun> gated = mergeRuns({shard}, out, gate(), {}, bundles);
+  ASSERT_TRUE(gated) << gated.error().format();
+  ASSERT_EQ(gated->outcomes.size(), 2u);
+  const CaseOutcome& unexpected = gated->outcomes[0];
+  EXPECT_EQ(unexpected.name, "fam/new");
+  EXPECT_EQ(unexpected.baseline, BaselineMatch::None);
+  EXPECT_TRUE(failsRun(unexpected));
+  EXPECT_NE(unexpected.baseline_note.find("no re-run"), std::string::npos)
+      << unexpected.baseline_note;
+  EXPECT_EQ(gated->outcomes[1].baseline, BaselineMatch::Flake);
+  const std::string failures = slurp(out + "/failures.csv");
+  EXPECT_NE(failures.find("fam/new,Fail"), std::string::npos) << failures;
+  EXPECT_EQ(failures.find("fam/victim"), std::string::npos) << failures;
+  // A refusal of the judge is the merge's.
+  const ShardCaseJudge refuses = [](const std::string& dir, const RunInfo&, const CaseOutcome&,
+                                    bool) -> Result<std::optional<CaseOutcome>> {
+    return errorMessage(dir + "/summary.json: forged");
+  };
+  EXPECT_NE(errorText(mergeRuns({shard}, out, Baseline{}, {}, refuses)).find("forged"),
+            std::string::npos);
+}
+
+// A note is one line of failures.csv, whatever it holds: a newline in it
+// would add a line for another case.
+TEST(BaselineGate, ANoteIsOneLineOfFailuresCsv) {
+  CaseOutcome o = outcome("fam/new", Status::Fail);
+  o.baseline_note = "the baseline expects Pass\nfam/victim,Fail  # forged\r\n";
+  const std::string path = testing_support::testDir() + "/one-line.csv";
+  ASSERT_EQ(errorText(writeFailuresCsv({o}, "", path)), "");
+  std::istringstream lines(slurp(path));
+  std::string line;
+  int cases = 0;
+  while (std::getline(lines, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    ++cases;
+    EXPECT_EQ(line.rfind("fam/new,Fail", 0), 0u) << line;
+  }
+  EXPECT_EQ(cases, 1);
+  // A re-run's headline (what the case printed) joins the note as one line too.
+  CaseOutcome first = outcome("fam/x", Status::Fail);
+  CaseOutcome again = outcome("fam/x", Status::Crash);
+  again.headline = "Crash: died\nfam/victim,Fail";
+  applyRerun(first, again);
+  EXPECT_EQ(first.baseline_note.find('\n'), std::string::npos) << first.baseline_note;
+  EXPECT_NE(first.baseline_note.find("died\\x0Afam/victim"), std::string::npos)
+      << first.baseline_note;
 }
 
 TEST(BaselineGate, AThroughPathAddsItsOwnEntries) {

@@ -57,6 +57,15 @@ TEST(ContentHash, IsFnv1aAndPrintsAsSixteenHexDigits) {
   EXPECT_EQ(contentHashText(1), "0000000000000001");
 }
 
+// A hash read back is the text contentHashText writes, nothing else.
+TEST(ContentHash, ReadsBackOnlyWhatItWrites) {
+  EXPECT_EQ(contentHashFromText("af63dc4c8601ec8c"), 0xaf63dc4c8601ec8cull);
+  EXPECT_EQ(contentHashFromText(contentHashText(1)), 1u);
+  for (const std::string bad : {"", "-1", "0x63dc4c8601ec8c", "AF63DC4C8601EC8C", "af63dc4c8601ec8",
+                                "af63dc4c8601ec8c0", " f63dc4c8601ec8c", "af63dc4c8601ec8g"})
+    EXPECT_FALSE(contentHashFromText(bad)) << bad;
+}
+
 // BulkWords (DefaultInitAllocator): words given a value keep it through a
 // resize, grow and copy; assign(n, 0) zeroes; a copy compares equal.
 TEST(Results, BulkWordsKeepWhatWasWritten) {

@@ -33,6 +33,7 @@ seeds() {
     for f in references/baselines/*.csv; do { printf '\000'; cat "$f"; } >"$dir/baseline-$(basename "$f")"; done
     { printf '\001'; printf '^anyhit/\n(a|b)*c$  # comment\nsbt/.*-aabbs\n'; } >"$dir/patterns"
     { printf '\002'; cat fuzz/seeds/results-bundle.bin; } >"$dir/results-bundle"
+    { printf '\002'; cat fuzz/seeds/results-numbers.bin; } >"$dir/results-numbers"
     { printf '\003'; cat fuzz/seeds/summary.json; } >"$dir/summary"
     { printf '\004'; printf 'not-a-sum'; printf '\000'; printf '\003\002\043\007'; } >"$dir/spirv-entry"
     { printf '\004'; cat fuzz/seeds/spirv-entry.bin; } >"$dir/spirv-keyed-entry"

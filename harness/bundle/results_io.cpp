@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/visible_text.h"
 #include "base/whole_file.h"
 #include "bundle/image_files.h"
 #include "bundle/step_cost_json.h"
@@ -58,11 +59,22 @@ Error badValue(const fs::path& dir, const std::string& message) {
 }
 
 // A count from results.json that sizes a file: at most 2^30 (a 4 GiB file).
-Result<uint32_t> sizeField(const fs::path& dir, const json& value, const char* key) {
+constexpr uint64_t kMaxSize = 1u << 30;
+
+// An unsigned integer of results.json (a counter, a size, a ray, an id) of
+// at most `max`; the error names the field where it is anything else: 64.9,
+// -1, 1e3 and 2^64 are none (nlohmann-json would read them as 64, 2^64 - 1,
+// 1000 and 0).
+template <typename T>
+Result<T> unsignedValue(const fs::path& dir, const json& value, const std::string& key,
+                        uint64_t max = std::numeric_limits<T>::max()) {
+  if (!value.is_number_unsigned())
+    return badValue(dir, key + ": " + visibleText(value.dump(), 40) + " is no unsigned integer");
   const uint64_t v = value.get<uint64_t>();
-  if (v > (1u << 30))
-    return badValue(dir, std::string(key) + ": " + std::to_string(v) + " is too large");
-  return static_cast<uint32_t>(v);
+  if (v > max)
+    return badValue(dir, key + ": " + std::to_string(v) + " is too large (at most " +
+                             std::to_string(max) + ")");
+  return static_cast<T>(v);
 }
 
 // One field's words as text, %.9g for floats ("1.5", "0.25 0.5"), appended.
@@ -239,7 +251,24 @@ struct FieldReader {
     where = path;
     return object.at(path.substr(path.rfind('.') + 1));
   }
+  // The field as an unsigned integer (unsignedValue).
+  template <typename T>
+  Result<T> count(const json& object, const std::string& path,
+                  uint64_t max = std::numeric_limits<T>::max()) {
+    return unsignedValue<T>(dir, (*this)(object, path), path, max);
+  }
 };
+
+// The counters, each an unsigned integer (counters.NAME in the error).
+Result<void> readCounters(const json& j, FieldReader& field, Results& r) {
+  const json& counters = field(j, "counters");
+  if (!counters.is_object()) return badValue(field.dir, "counters: not an object");
+  for (const auto& [name, value] : counters.items()) {
+    RAYSPEC_TRY(r.counters[name],
+                unsignedValue<uint64_t>(field.dir, value, "counters." + visibleText(name, 80)));
+  }
+  return {};
+}
 
 // The bundle's own fields: case, backend, device, status, size, costs,
 // counters and validation messages; or the error of a bad value.
@@ -254,8 +283,8 @@ Result<void> readHeader(const json& j, FieldReader& field, Results& r) {
     return badValue(field.dir,
                     "status: unknown value '" + field(j, "status").get<std::string>() + "'");
   r.status_detail = j.value("status_detail", std::string());
-  RAYSPEC_TRY(r.width, sizeField(field.dir, field(j, "width"), "width"));
-  RAYSPEC_TRY(r.height, sizeField(field.dir, field(j, "height"), "height"));
+  RAYSPEC_TRY(r.width, field.count<uint32_t>(j, "width", kMaxSize));
+  RAYSPEC_TRY(r.height, field.count<uint32_t>(j, "height", kMaxSize));
   r.seconds = field(j, "seconds");
   if (j.contains("cost")) {
     const Result<StepCosts> cost = costFromJson(field(j, "cost"));
@@ -263,9 +292,15 @@ Result<void> readHeader(const json& j, FieldReader& field, Results& r) {
     r.cost = *cost;
   }
   r.case_file = j.value("case_file", std::string());
-  if (j.contains("case_hash"))
-    r.case_hash = std::stoull(field(j, "case_hash").get<std::string>(), nullptr, 16);
-  r.counters = field(j, "counters").get<std::map<std::string, uint64_t>>();
+  if (j.contains("case_hash")) {
+    const std::string hash = field(j, "case_hash").get<std::string>();
+    const std::optional<uint64_t> parsed = contentHashFromText(hash);
+    if (!parsed)
+      return badValue(field.dir, "case_hash: '" + visibleText(hash, 40) +
+                                     "' is no case hash (16 lower-case hex digits)");
+    r.case_hash = *parsed;
+  }
+  RAYSPEC_TRY_VOID(readCounters(j, field, r));
   r.validation_messages = field(j, "validation_messages").get<std::vector<std::string>>();
   if (j.contains("device_findings"))  // bundles saved before it was kept have none
     for (const json& f : field(j, "device_findings")) {
@@ -277,7 +312,9 @@ Result<void> readHeader(const json& j, FieldReader& field, Results& r) {
     }
   if (j.contains("rejected"))  // nor rejections
     r.rejected = field(j, "rejected").get<std::vector<std::string>>();
-  r.library_handles_compared = j.value("library_handles_compared", 0u);
+  if (j.contains("library_handles_compared")) {
+    RAYSPEC_TRY(r.library_handles_compared, field.count<uint32_t>(j, "library_handles_compared"));
+  }
   return {};
 }
 
@@ -291,9 +328,9 @@ Result<void> readImages(const json& j, FieldReader& field, Results& r) {
     if (const std::string problem = fileNameProblem(im.name); !problem.empty())
       return badValue(dir, "images: name '" + im.name.substr(0, 120) + "' " + problem);
     im.field = field(ji, "images.field");
-    RAYSPEC_TRY(im.width, sizeField(dir, field(ji, "images.width"), "images.width"));
-    RAYSPEC_TRY(im.height, sizeField(dir, field(ji, "images.height"), "images.height"));
-    RAYSPEC_TRY(im.channels, sizeField(dir, field(ji, "images.channels"), "images.channels"));
+    RAYSPEC_TRY(im.width, field.count<uint32_t>(ji, "images.width", kMaxSize));
+    RAYSPEC_TRY(im.height, field.count<uint32_t>(ji, "images.height", kMaxSize));
+    RAYSPEC_TRY(im.channels, field.count<uint32_t>(ji, "images.channels", kMaxSize));
     im.is_float = field(ji, "images.float");
     const std::string implied = "image " + im.name + ": width x height x channels " +
                                 std::to_string(im.width) + " x " + std::to_string(im.height) +
@@ -301,7 +338,7 @@ Result<void> readImages(const json& j, FieldReader& field, Results& r) {
     if (im.channels < 1 || im.channels > 4)
       return badValue(dir, "images.channels: " + std::to_string(im.channels) +
                                " (an image has 1 to 4 channels)");
-    // Each factor is at most 2^30 (sizeField): the product fits 64 bits only
+    // Each factor is at most 2^30 (kMaxSize): the product fits 64 bits only
     // with 4 channels at most and is checked before it is used.
     const uint64_t texels = uint64_t(im.width) * im.height;
     if (im.width && texels / im.width != im.height)
@@ -315,37 +352,45 @@ Result<void> readImages(const json& j, FieldReader& field, Results& r) {
 
 // One list of an ambiguous ray's answers (ambiguous.<key>); absent and not
 // `required` (older bundles): none. A hit's t where written.
-std::vector<Candidate> readCandidates(FieldReader& field, const json& ja, const std::string& key,
-                                      bool required) {
+Result<std::vector<Candidate>> readCandidates(FieldReader& field, const json& ja,
+                                              const std::string& key, bool required) {
   std::vector<Candidate> out;
   if (!required && !ja.contains(key)) return out;
   const std::string path = "ambiguous." + key;
   for (const json& jc : field(ja, path)) {
     Candidate k;
     k.hit = jc.contains("hit") || required ? field(jc, path + ".hit").get<bool>() : true;
-    k.instance = field(jc, path + ".instance");
-    k.geometry = field(jc, path + ".geometry");
-    k.primitive = field(jc, path + ".primitive");
+    RAYSPEC_TRY(k.instance, field.count<uint32_t>(jc, path + ".instance"));
+    RAYSPEC_TRY(k.geometry, field.count<uint32_t>(jc, path + ".geometry"));
+    RAYSPEC_TRY(k.primitive, field.count<uint32_t>(jc, path + ".primitive"));
     if (jc.contains("t")) k.t = field(jc, path + ".t");
     out.push_back(k);
   }
   return out;
 }
 
+// t_bounds or object_origin_bounds (absent in older bundles: none).
+Result<void> readBounds(const json& j, FieldReader& field, const std::string& key,
+                        std::vector<TBound>& out) {
+  if (!j.contains(key)) return {};
+  for (const json& jb : field(j, key)) {
+    TBound b;
+    RAYSPEC_TRY(b.ray, field.count<uint32_t>(jb, key + ".ray"));
+    b.bound = field(jb, key + ".bound");
+    out.push_back(b);
+  }
+  return {};
+}
+
 // The rays the model bounded, found undefined, or found ambiguous; or the
 // error of a bad value.
 Result<void> readRayNotes(const json& j, FieldReader& field, Results& r) {
-  if (j.contains("t_bounds"))
-    for (const json& jb : field(j, "t_bounds"))
-      r.t_bounds.push_back({field(jb, "t_bounds.ray"), field(jb, "t_bounds.bound")});
-  if (j.contains("object_origin_bounds"))
-    for (const json& jb : field(j, "object_origin_bounds"))
-      r.object_origin_bounds.push_back(
-          {field(jb, "object_origin_bounds.ray"), field(jb, "object_origin_bounds.bound")});
+  RAYSPEC_TRY_VOID(readBounds(j, field, "t_bounds", r.t_bounds));
+  RAYSPEC_TRY_VOID(readBounds(j, field, "object_origin_bounds", r.object_origin_bounds));
   if (j.contains("undefined"))
     for (const json& ju : field(j, "undefined")) {
       UndefinedRay u;
-      u.ray = field(ju, "undefined.ray");
+      RAYSPEC_TRY(u.ray, field.count<uint32_t>(ju, "undefined.ray"));
       if (!parseUndefinedReason(field(ju, "undefined.reason").get<std::string>(), &u.reason))
         return badValue(field.dir, "undefined.reason: unknown value '" +
                                        field(ju, "undefined.reason").get<std::string>() + "'");
@@ -355,7 +400,7 @@ Result<void> readRayNotes(const json& j, FieldReader& field, Results& r) {
   if (j.contains("repeat_dependent"))
     for (const json& jd : field(j, "repeat_dependent")) {
       RepeatDependentRay d;
-      d.ray = field(jd, "repeat_dependent.ray");
+      RAYSPEC_TRY(d.ray, field.count<uint32_t>(jd, "repeat_dependent.ray"));
       if (uint64_t{d.ray} >= uint64_t{r.width} * r.height)
         return badValue(
             field.dir, "repeat_dependent.ray: " + std::to_string(d.ray) + " is outside the launch");
@@ -372,13 +417,13 @@ Result<void> readRayNotes(const json& j, FieldReader& field, Results& r) {
     r.repeat_counters = field(j, "repeat_counters").get<std::vector<std::string>>();
   for (const json& ja : field(j, "ambiguous")) {
     RayAmbiguity a;
-    a.ray = field(ja, "ambiguous.ray");
+    RAYSPEC_TRY(a.ray, field.count<uint32_t>(ja, "ambiguous.ray"));
     if (!parseAmbiguityReason(field(ja, "ambiguous.reason").get<std::string>(), &a.reason))
       return badValue(field.dir, "ambiguous.reason: unknown value '" +
                                      field(ja, "ambiguous.reason").get<std::string>() + "'");
-    a.candidates = readCandidates(field, ja, "candidates", true);
-    a.shared_triangles = readCandidates(field, ja, "shared_triangles", false);
-    a.leak_answers = readCandidates(field, ja, "leak_answers", false);
+    RAYSPEC_TRY(a.candidates, readCandidates(field, ja, "candidates", true));
+    RAYSPEC_TRY(a.shared_triangles, readCandidates(field, ja, "shared_triangles", false));
+    RAYSPEC_TRY(a.leak_answers, readCandidates(field, ja, "leak_answers", false));
     r.ambiguous.push_back(std::move(a));
   }
   return {};
@@ -388,14 +433,15 @@ Result<void> readRayNotes(const json& j, FieldReader& field, Results& r) {
 Result<void> readResultsJsonFields(const std::string& text, FieldReader& field, Results& r) {
   const json j = json::parse(text);
   RAYSPEC_TRY_VOID(readHeader(j, field, r));
-  if (field(j, "record_words").get<uint32_t>() != recordWords())
+  RAYSPEC_TRY(const uint32_t record_words, field.count<uint32_t>(j, "record_words"));
+  if (record_words != recordWords())
     return errorMessage(field.dir.string() + ": record layout differs from this build");
   RAYSPEC_TRY_VOID(readImages(j, field, r));
   return readRayNotes(j, field, r);
 }
 
-// readResultsJsonFields, with what nlohmann-json (a value of the wrong type,
-// a missing field, text that is no JSON) and std::stoull throw made an Error.
+// readResultsJsonFields, with what nlohmann-json throws (a value of the
+// wrong type, a missing field, text that is no JSON) made an Error.
 Result<void> readResultsJson(const std::string& text, const fs::path& dir, Results& r) {
   FieldReader field{dir, {}};
   try {

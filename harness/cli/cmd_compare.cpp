@@ -3,6 +3,9 @@
 //   two run folders: for every case of A, A/<case>/device against
 //   B/<case>/device (one driver against another, today against last week);
 //   the rays' legal answers come from B's (else A's) model bundle.
+// Each case is the one of its name under --cases, made as the runs' variant
+// (summary.json) made it; every bundle must be that case's as it is here
+// (its case_hash), as `rayspec run --device-results` checks a saved one.
 #include <algorithm>
 #include <cstdio>
 #include <ctime>
@@ -12,17 +15,20 @@
 #include "base/visible_text.h"
 #include "bundle/image_files.h"
 #include "bundle/results_io.h"
-#include "case/parse_case.h"
 #include "cli/commands.h"
 #include "cli/option_checks.h"
+#include "report/outcome_json.h"
 #include "report/rule_catalog.h"
 #include "report/run_folder_writes.h"
 #include "report/run_summary.h"
 #include "report/write_reports.h"
 #include "results/file_name.h"
+#include "run/case_as_run.h"
 #include "run/case_steps.h"
+#include "run/device_results.h"
 #include "run/judge_case.h"
 #include "run/run_loop.h"
+#include "run/saved_case.h"
 
 namespace rayspec {
 namespace fs = std::filesystem;
@@ -63,35 +69,42 @@ CaseOutcome failedOutcome(const std::string& name, Status s, const std::string& 
   return o;
 }
 
-CaseOutcome compareOne(const Pair& p, const CompareOptions& opt, std::vector<std::string>* rules) {
+// Where the case the bundles are judged by comes from: looked up by name
+// under --cases (never a file a results.json names), made as the runs'
+// variant made it.
+struct CaseSource {
+  CaseIndex cases;
+  RunOptions variant;
+};
+
+CaseOutcome compareOne(const Pair& p, const CompareOptions& opt, const CaseSource& source,
+                       std::vector<std::string>* rules) {
   Result<Results> read_a = readResults(p.a.string());
   // An unreadable bundle or case file is not the driver's fault: a CaseError.
   if (!read_a)
     return caseErrorOutcome(p.name.empty() ? p.a.string() : p.name, {}, "bundle",
                             read_a.error().format());
-  const Results& a = *read_a;
-  const std::string name = p.name.empty() ? a.case_name : p.name;
+  const std::string name = p.name.empty() ? read_a->case_name : p.name;
   if (!isBundle(p.b))
     return failedOutcome(name, Status::NotSupported,
                          "no reference: " + p.b.string() + " has no results");
-  Result<Results> read_b = readResults(p.b.string());
-  if (!read_b) return caseErrorOutcome(name, {}, "bundle", read_b.error().format());
-  Results& b = *read_b;
-  if (!p.ambiguity.empty())
-    if (const Result<Results> m = readResults(p.ambiguity.string())) b.ambiguous = m->ambiguous;
-  const std::string file = a.case_file.empty() ? b.case_file : a.case_file;
-  const std::optional<CaseFile> found = findCase(a.case_name, file, opt.cases_dir);
-  ParseResult parsed;
-  if (found) parsed = loadCase(*found, opt.cases_dir);
-  if (!parsed.value) {
-    std::string message = "cannot re-read the case file of " + a.case_name + " (" + file + ")";
-    for (const Error& e : parsed.errors) message += "; " + e.format();
-    return caseErrorOutcome(name, {}, "case-file", message);
-  }
-  Case c = *parsed.value;
-  c.name = name;
+  const Result<Case> found = caseHere(name, source.variant, source.cases);
+  if (!found) return caseErrorOutcome(name, {}, "case-file", found.error().format());
+  const Case& c = *found;
   *rules = c.rules;
   const Plan plan = derivePlan(c);
+  // Each bundle is this case's as it is here (run/device_results.h).
+  if (const Result<void> mine = checkCaseBundle(*read_a, p.a.string(), c, plan); !mine)
+    return caseErrorOutcome(name, c.rules, "bundle", mine.error().format());
+  const Results& a = *read_a;
+  Result<Results> read_b = readCaseBundle(p.b.string(), c, plan);
+  if (!read_b) return caseErrorOutcome(name, c.rules, "bundle", read_b.error().format());
+  Results& b = *read_b;
+  if (!p.ambiguity.empty()) {
+    const Result<Results> m = readCaseBundle(p.ambiguity.string(), c, plan);
+    if (!m) return caseErrorOutcome(name, c.rules, "bundle", m.error().format());
+    b.ambiguous = m->ambiguous;
+  }
   const std::string dir = opt.out + "/" + name;
   removeCaseOutputs(dir);
   // Pictures for people, best effort: the comparison reads the texels.
@@ -101,6 +114,34 @@ CaseOutcome compareOne(const Pair& p, const CompareOptions& opt, std::vector<std
   o.device_name = a.device;
   o.seconds = a.seconds;
   return o;
+}
+
+// The variant the compared runs ran their cases by (summary.json of a run
+// folder; "" for bundles); the error: two runs of different variants, or a
+// summary.json that does not read.
+Result<std::string> comparedVariant(const CompareOptions& opt) {
+  std::optional<std::string> variant;
+  std::string first;
+  for (const std::string& side : {opt.a, opt.b}) {
+    std::error_code ec;
+    if (isBundle(side) || !fs::exists(fs::path(side) / "summary.json", ec)) continue;
+    RAYSPEC_TRY(const SavedRun run, readSavedRun(side));
+    if (variant && *variant != run.info.variant)
+      return errorMessage(side + " ran its cases " + variantText(run.info.variant) + ", " + first +
+                          " " + variantText(*variant) + ": only runs of one variant compare");
+    variant = run.info.variant;
+    first = side;
+  }
+  return variant.value_or("");
+}
+
+// The cases under --cases and the runs' variant; the error says why not.
+Result<CaseSource> caseSource(const CompareOptions& opt) {
+  CaseSource source{indexCases(opt.cases_dir), {}};
+  RAYSPEC_TRY(const std::string variant, comparedVariant(opt));
+  if (const Result<void> read = variantOptions(variant, source.variant); !read)
+    return errorMessage("variant '" + variant + "': " + read.error().message);
+  return source;
 }
 
 }  // namespace
@@ -116,6 +157,11 @@ int runCompare(const CompareOptions& opt) {
   if (const std::string overlap = outputOverlapsInputs(opt.out, {opt.a, opt.b}); !overlap.empty()) {
     std::fprintf(stderr, "rayspec compare: %s: its reports would replace what is compared\n",
                  overlap.c_str());
+    return kExitSetup;
+  }
+  const Result<CaseSource> source = caseSource(opt);
+  if (!source) {
+    std::fprintf(stderr, "rayspec compare: %s\n", source.error().format().c_str());
     return kExitSetup;
   }
   const std::vector<Pair> pairs = pairsOf(opt.a, opt.b);
@@ -146,7 +192,7 @@ int runCompare(const CompareOptions& opt) {
   for (const Pair& p : pairs) {
     summary.starting(p.name);
     std::vector<std::string> rules;
-    CaseOutcome o = guardCase(p.name, {}, [&] { return compareOne(p, opt, &rules); });
+    CaseOutcome o = guardCase(p.name, {}, [&] { return compareOne(p, opt, *source, &rules); });
     if (!rules.empty()) case_rules.push_back({o.name, rules});
     if (info.device.empty()) info.device = o.device_name;
     summary.add(o);

@@ -7,6 +7,7 @@
 #include "report/rule_catalog.h"
 #include "report/run_summary.h"
 #include "run/run_loop.h"
+#include "run/saved_case.h"
 
 namespace rayspec {
 
@@ -25,8 +26,10 @@ int runMerge(const MergeOptions& opt) {
   Result<std::vector<Rule>> catalog = loadRuleCatalog(opt.rules_file);
   if (!catalog)
     std::fprintf(stderr, "rayspec merge: %s\n", visibleLine(catalog.error().format()).c_str());
+  // Every case judged anew from its bundles, never a shard's summary.json on its word.
   const Result<SavedRun> run =
-      mergeRuns(opt.dirs, opt.out, baseline, catalog ? *catalog : std::vector<Rule>{});
+      mergeRuns(opt.dirs, opt.out, baseline, catalog ? *catalog : std::vector<Rule>{},
+                shardCaseJudge(opt.cases_dir));
   if (!run) {
     std::fprintf(stderr, "rayspec merge: %s\n", visibleLine(run.error().format()).c_str());
     // Harness: the shards were read, but the merged folder not written.

@@ -46,6 +46,7 @@ struct CompileOptions {
 struct MergeOptions {
   std::vector<std::string> dirs;  // run folders to join
   std::string out = "rayspec-merged";
+  std::string cases_dir = RAYSPEC_SOURCE_DIR "/cases";  // the cases their bundles are judged by
   std::string baseline, flakes, skips;
   std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
 };

@@ -45,7 +45,7 @@ Subcommand addCompareCommand(CLI::App& app) {
       ->capture_default_str();
   compare
       ->add_option("--cases", compare_opt.cases_dir,
-                   "Folder of case files (when a bundle's case file moved)")
+                   "Folder of case files (each bundle's case, by name; its case_hash must match)")
       ->capture_default_str();
 
   return {compare, [opt] {
@@ -70,6 +70,11 @@ Subcommand addMergeCommand(CLI::App& app) {
   merge->add_option("--flakes", merge_opt.flakes, "Flakes file (default: beside the baseline)");
   merge->add_option("--skips", merge_opt.skips, "Skips file (default: beside the baseline)");
   merge->add_option("--rules", merge_opt.rules_file, "Rule catalog")->capture_default_str();
+  merge
+      ->add_option("--cases", merge_opt.cases_dir,
+                   "Folder of case files: every case is judged anew from its bundles by its case "
+                   "here (its case_hash must match)")
+      ->capture_default_str();
 
   return {merge, [opt] {
             return runMerge(*opt);

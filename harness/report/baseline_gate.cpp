@@ -50,7 +50,8 @@ void applyRerun(CaseOutcome& o, const CaseOutcome& rerun) {
   }
   o.baseline = BaselineMatch::Flake;
   o.baseline_note += std::string("; a flake: the re-run gave ") + statusName(rerun.status);
-  if (rerun.status != Status::Pass) o.baseline_note += " (" + rerun.headline + ")";
+  // The headline quotes what the case produced (a validation message): one line.
+  if (rerun.status != Status::Pass) o.baseline_note += " (" + visibleLine(rerun.headline) + ")";
 }
 
 CaseOutcome skippedOutcome(const std::string& name, const NamePattern& pattern) {
@@ -95,6 +96,7 @@ Result<void> writeFailuresCsv(const std::vector<CaseOutcome>& outcomes,
     if (!failsRun(o) && o.baseline != BaselineMatch::Flake) continue;
     out << csvField(visibleLine(o.name)) << ',' << statusName(o.status) << "  # "
         << deqpResultName(o);
+    // One line a case, whatever its note holds (read back from a saved run).
     if (!o.baseline_note.empty()) out << ": " << visibleLine(o.baseline_note);
     out << '\n';
   }

@@ -14,6 +14,16 @@ namespace rayspec {
 namespace fs = std::filesystem;
 namespace {
 
+// The error (ErrorKind::Input) of a case folder `name` of shard `from` that
+// holds an entry that is no regular file or folder (a link would lead the
+// judge and the copy elsewhere).
+Result<void> plainCaseFolder(const std::string& from, const std::string& name) {
+  if (const std::string odd = plainPathProblem(from, name); !odd.empty())
+    return errorMessage("refusing to merge " + (fs::path(from) / name).string() + ": " + odd +
+                        " (a shard holds only regular files and folders)");
+  return {};
+}
+
 // The case folder `name` of `from` into `to`: hard links, or copies. The
 // error: ErrorKind::Input, an entry that is no regular file or folder;
 // ErrorKind::Harness, the copy failed.
@@ -21,9 +31,7 @@ Result<void> copyCaseFolder(const std::string& from, const std::string& to,
                             const std::string& name) {
   const fs::path src = fs::path(from) / name, dst = fs::path(to) / name;
   std::error_code ec;
-  if (const std::string odd = plainPathProblem(from, name); !odd.empty())
-    return errorMessage("refusing to merge " + src.string() + ": " + odd +
-                        " (a shard holds only regular files and folders)");
+  RAYSPEC_TRY_VOID(plainCaseFolder(from, name));
   if (!fs::exists(src, ec)) return {};  // a CaseError or skipped case may have none
   fs::remove_all(dst, ec);
   fs::create_directories(dst.parent_path(), ec);
@@ -39,6 +47,22 @@ Result<void> copyCaseFolder(const std::string& from, const std::string& to,
   return {};
 }
 
+// The case as `judge` finds it in `shard`, judged by the baseline anew; an
+// unexpected failure by its re-run there (a flake only where the re-run
+// gave another result).
+Result<void> judgeAnew(const ShardCaseJudge& judge, const Baseline& baseline,
+                       const std::string& shard, const RunInfo& info, CaseOutcome& o) {
+  RAYSPEC_TRY(std::optional<CaseOutcome> judged, judge(shard, info, o, false));
+  if (judged) o = std::move(*judged);
+  if (!applyBaseline(baseline, o)) return {};
+  RAYSPEC_TRY(const std::optional<CaseOutcome> rerun, judge(shard, info, o, true));
+  if (rerun)
+    applyRerun(o, *rerun);
+  else
+    o.baseline_note += "; " + shard + " holds no re-run of it to tell a flake by";
+  return {};
+}
+
 }  // namespace
 
 std::string variantText(const std::string& variant) {
@@ -46,7 +70,8 @@ std::string variantText(const std::string& variant) {
 }
 
 Result<SavedRun> mergeRuns(const std::vector<std::string>& dirs, const std::string& out,
-                           const Baseline& baseline, const std::vector<Rule>& catalog) {
+                           const Baseline& baseline, const std::vector<Rule>& catalog,
+                           const ShardCaseJudge& judge) {
   std::vector<SavedRun> runs;
   std::map<std::string, std::string> seen;  // case -> folder
   for (const std::string& dir : dirs) {
@@ -67,6 +92,10 @@ Result<SavedRun> mergeRuns(const std::vector<std::string>& dirs, const std::stri
     for (const CaseOutcome& o : run.outcomes)
       if (auto [it, fresh] = seen.emplace(o.name, dir); !fresh)
         return errorMessage("case " + o.name + " is in both " + it->second + " and " + dir);
+    for (CaseOutcome& o : run.outcomes) {
+      RAYSPEC_TRY_VOID(plainCaseFolder(dir, o.name));
+      RAYSPEC_TRY_VOID(judgeAnew(judge, baseline, dir, run.info, o));
+    }
     runs.push_back(std::move(run));
   }
   if (runs.empty()) return errorMessage("no folder to merge");
@@ -79,7 +108,7 @@ Result<SavedRun> mergeRuns(const std::vector<std::string>& dirs, const std::stri
   info.planned_cases = 0;
   info.teardown_errors.clear();
   info.catalog = catalog;
-  if (!baseline.empty()) info.baseline = baseline.file;
+  info.baseline = baseline.file;  // the shards' own are gone: every case was judged anew
   std::vector<std::pair<std::string, std::vector<std::string>>> case_rules;
   for (size_t i = 0; i < runs.size(); ++i) {
     const RunInfo& r = runs[i].info;
@@ -91,8 +120,6 @@ Result<SavedRun> mergeRuns(const std::vector<std::string>& dirs, const std::stri
                                 r.teardown_errors.end());
     for (CaseOutcome& o : runs[i].outcomes) {
       RAYSPEC_TRY_VOID(copyCaseFolder(dirs[i], out, o.name));
-      // A flake was found by its run's re-run, which a merge cannot repeat.
-      if (!baseline.empty() && o.baseline != BaselineMatch::Flake) applyBaseline(baseline, o);
       case_rules.push_back({o.name, o.rules});
       merged.outcomes.push_back(std::move(o));
     }

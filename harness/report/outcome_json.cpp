@@ -62,7 +62,7 @@ Result<void> outcomeFields(const nlohmann::json& j, CaseOutcome& o) {
   for (BaselineMatch m : kMatches)
     if (match == baselineMatchName(m)) o.baseline = m, known = true;
   if (!known) return errorMessage("'baseline' is not a baseline result: " + match);
-  o.baseline_note = j.value("baseline_note", "");
+  o.baseline_note = visibleLine(j.value("baseline_note", ""));  // a note is one line
   o.device_name = j.value("device_name", "");
   o.images = j.value("images", std::vector<std::string>{});
   for (const std::string& im : o.images)  // each becomes a file name in the report's links

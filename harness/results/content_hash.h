@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -20,5 +21,7 @@ inline uint64_t contentHash(std::string_view text) {
 
 // 16 lowercase hex digits.
 std::string contentHashText(uint64_t h);
+// contentHashText read back; nullopt for any other text ("-1", "0x1f", "12zz").
+std::optional<uint64_t> contentHashFromText(const std::string& text);
 
 }  // namespace rayspec

@@ -87,7 +87,39 @@ bool ended(const Results& r) {
   return r.status == SideStatus::Crash || r.status == SideStatus::Timeout;
 }
 
+// The model crashed or hung: nothing to judge the device by (it did not run).
+CaseOutcome noReferenceOutcome(const Case& c, const Plan& plan, const Results& model) {
+  Verdict v = backendVerdict(model);
+  v.add({Status::NotSupported,
+         "no-reference",
+         "the device side did not run: the model gave no reference",
+         {},
+         0});
+  return unjudged(c, plan, Results{}, model, v);
+}
+
 }  // namespace
+
+CaseOutcome judgeSides(const Case& c, const Plan& plan, const Results* device, const Results* model,
+                       const std::string& dir) {
+  CaseOutcome out;
+  if (model && ended(*model)) {
+    out = noReferenceOutcome(c, plan, *model);
+  } else if (device && model) {
+    out = judgeCase(c, plan, *device, *model, dir);
+    out.device_name = device->device;
+  } else if (device || model) {
+    out = oneSideOutcome(c, plan, device ? *device : Results{}, model ? *model : Results{},
+                         device != nullptr);
+    if (device) out.device_name = device->device;
+  } else {
+    Verdict v;
+    v.add({Status::NotSupported, "no-reference", "neither side ran", {}, 0});
+    out = unjudged(c, plan, Results{}, Results{}, v);
+  }
+  out.deriveFromVerdict();
+  return out;
+}
 
 SideFor modelSideFor(const RunOptions& opt) {
   return [opt](const Case&, const std::string&) -> Result<Side> {
@@ -185,18 +217,8 @@ Result<CaseOutcome> CaseRunner::run(const Case& c, bool* interrupted, const std:
                                       slot ? slot->model : nullptr, slot, c, plan, dir + "/model"));
     if ((*interrupted = m.interrupted)) return CaseOutcome{};
     model = std::move(m.results);
-    if (ended(model)) {
-      // The model crashed or hung: nothing to judge the device by.
-      Verdict v = backendVerdict(model);
-      v.add({Status::NotSupported,
-             "no-reference",
-             "the device side did not run: the model gave no reference",
-             {},
-             0});
-      CaseOutcome out = unjudged(c, plan, device, model, v);
-      out.deriveFromVerdict();
-      return costed(std::move(out), device, model);
-    }
+    // The model crashed or hung: the device side does not run.
+    if (ended(model)) return costed(judgeSides(c, plan, nullptr, &model, dir), device, model);
   }
   std::string fault_note;
   if (want_device) {
@@ -209,16 +231,12 @@ Result<CaseOutcome> CaseRunner::run(const Case& c, bool* interrupted, const std:
     device = std::move(d.results);
     fault_note = d.note;
   }
-  CaseOutcome out;
-  if (want_device && want_model) {
-    StepTimer judge_time(parent, CostStep::Comparison);
-    out = judgeCase(c, plan, device, model, dir);
-  } else {
-    out = oneSideOutcome(c, plan, device, model, want_device);
-  }
+  StepTimer judge_time(parent, CostStep::Comparison);
+  CaseOutcome out =
+      judgeSides(c, plan, want_device ? &device : nullptr, want_model ? &model : nullptr, dir);
+  judge_time.stop();
   if (!fault_note.empty()) out.verdict.add({Status::Pass, "planted-fault", fault_note, {}, 0});
   out.deriveFromVerdict();
-  out.device_name = device.device;
   if (out.status != Status::Pass || opt_.records_csv) {
     StepTimer csv_time(parent, CostStep::RecordsCsv);
     RAYSPEC_TRY_VOID(writeRecordsCsvFiles(dir, device, model, plan));

@@ -42,6 +42,15 @@ std::optional<CaseOutcome> caseFileError(const CaseFile& file, const ParseResult
 CaseOutcome guardCase(const std::string& name, const std::vector<std::string>& rules,
                       const std::function<Result<CaseOutcome>()>& step);
 
+// A case's outcome from what its sides gave (nullptr: that side did not
+// run): judged, device against model; the model's crash or hang (nothing to
+// judge the device by); or one side's own status, validation errors
+// included (never a pass: nothing was compared). `dir`: where the difference
+// images go ("" none). Shared by the run and by a saved run judged anew
+// (run/saved_case.h).
+CaseOutcome judgeSides(const Case& c, const Plan& plan, const Results* device, const Results* model,
+                       const std::string& dir);
+
 // The sides of any case made where they run (a worker process, run/isolation.h).
 SideFor modelSideFor(const RunOptions& opt);
 SideFor deviceSideFor(const RunOptions& opt);

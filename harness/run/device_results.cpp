@@ -21,19 +21,8 @@ std::string savedBundleDir(const std::string& dir, const std::string& case_name)
   return (fs::path(dir) / case_name / "device").string();
 }
 
-Result<Results> SavedDevice::run(const Case& c, const Plan& plan) {
-  const std::string bundle = savedBundleDir(dir_, c.name);
-  if (!fs::exists(fs::path(bundle) / "results.json")) {
-    Results r;
-    r.backend = name();
-    r.case_name = c.name;
-    r.setStatus(SideStatus::NotSupported, "no saved device results in " + bundle +
-                                              ": the case did not run there, nothing was compared");
-    return r;
-  }
-  Result<Results> read = readResults(bundle);
-  if (!read) return errorOf(ErrorKind::Harness, "saved device results: " + read.error().format());
-  Results& r = *read;
+Result<void> checkCaseBundle(const Results& r, const std::string& bundle, const Case& c,
+                             const Plan& plan) {
   const std::string json = bundle + "/results.json";
   if (r.case_name != c.name)
     return errorOf(ErrorKind::Harness,
@@ -49,12 +38,32 @@ Result<Results> SavedDevice::run(const Case& c, const Plan& plan) {
                        ": the case changed since it ran there (or --permute or --move differs); "
                        "run it there again");
   // A saved bundle holds the counters the case keeps, no others: a counter
-  // it does not declare is not the device's answer to this case.
+  // it does not declare is not the answer to this case.
   for (const auto& [name, value] : r.counters)
     if (std::find(plan.counters.begin(), plan.counters.end(), name) == plan.counters.end())
       return errorOf(ErrorKind::Harness, json + ": counter '" + visibleText(name, 80) +
                                              "' is not one the case keeps (outputs.counters)");
-  return std::move(r);
+  return {};
+}
+
+Result<Results> readCaseBundle(const std::string& bundle, const Case& c, const Plan& plan) {
+  Result<Results> read = readResults(bundle);
+  if (!read) return errorOf(ErrorKind::Harness, "saved results: " + read.error().format());
+  RAYSPEC_TRY_VOID(checkCaseBundle(*read, bundle, c, plan));
+  return read;
+}
+
+Result<Results> SavedDevice::run(const Case& c, const Plan& plan) {
+  const std::string bundle = savedBundleDir(dir_, c.name);
+  if (!fs::exists(fs::path(bundle) / "results.json")) {
+    Results r;
+    r.backend = name();
+    r.case_name = c.name;
+    r.setStatus(SideStatus::NotSupported, "no saved device results in " + bundle +
+                                              ": the case did not run there, nothing was compared");
+    return r;
+  }
+  return readCaseBundle(bundle, c, plan);
 }
 
 Result<void> deviceResultsError(const RunOptions& opt) {

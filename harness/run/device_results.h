@@ -38,6 +38,17 @@ class SavedDevice : public Backend {
   std::string dir_;
 };
 
+// The bundle in `dir` (a case's device or model folder of a saved run) read
+// back as the results of case `c`: the bundle must be that case's (its
+// name), of the case as it is here (case_hash: the case's text, with
+// --permute's seed and --move's motion mixed in; none: an older rayspec), and
+// hold only the counters the case keeps. The error (ErrorKind::Harness)
+// names dir/results.json and what differs.
+Result<Results> readCaseBundle(const std::string& dir, const Case& c, const Plan& plan);
+// Those checks of a bundle read from `dir` already (rayspec compare).
+Result<void> checkCaseBundle(const Results& r, const std::string& dir, const Case& c,
+                             const Plan& plan);
+
 // DIR/<case>/device.
 std::string savedBundleDir(const std::string& dir, const std::string& case_name);
 

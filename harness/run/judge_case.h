@@ -1,6 +1,6 @@
 // One case's outcome from its device and model results: the verdict, the
-// difference images (written to dir/diff), the failing rays' table. Shared by
-// `rayspec run` and `rayspec compare`.
+// difference images (written to dir/diff; none when dir is ""), the failing
+// rays' table. Shared by `rayspec run`, `rayspec compare` and `rayspec merge`.
 #pragma once
 
 #include <string>

@@ -20,13 +20,13 @@
 #include "base/visible_text.h"
 #include "metamorphic/feature_path.h"
 #include "metamorphic/motion_spec.h"
-#include "metamorphic/permute_case.h"
 #include "report/baseline_gate.h"
 #include "report/case_journal.h"
 #include "report/outcome_json.h"
 #include "report/rule_catalog.h"
 #include "report/run_folder_writes.h"
 #include "run/cache_dir.h"
+#include "run/case_as_run.h"
 #include "run/case_order.h"
 #include "run/case_steps.h"
 #include "run/device_probe.h"
@@ -42,38 +42,6 @@
 
 namespace rayspec {
 namespace {
-
-// --move and a case it cannot move exactly: NotSupported, saying why (the
-// case's verdict under the motion is unknown, never a pass).
-// A case --through does not send through its path: NotSupported, saying why.
-CaseOutcome notThroughOutcome(const std::string& name, FeaturePath path, const std::string& why) {
-  CaseOutcome o;
-  o.name = name;
-  o.verdict.add({Status::NotSupported,
-                 "through",
-                 std::string("not run: --through ") + featurePathName(path) + ": " + why,
-                 {},
-                 0});
-  o.deriveFromVerdict();
-  o.baseline = BaselineMatch::Skipped;
-  o.baseline_note = "not run under --through";
-  return o;
-}
-
-CaseOutcome notMovedOutcome(const std::string& name, const std::string& why) {
-  CaseOutcome o;
-  o.name = name;
-  o.verdict.add({Status::NotSupported,
-                 "move",
-                 "not run: --move cannot move this case exactly: " + why,
-                 {},
-                 0});
-  o.deriveFromVerdict();
-  o.baseline =
-      BaselineMatch::Skipped;  // not run: the baseline's expectation is neither met nor broken
-  o.baseline_note = "not run under --move";
-  return o;
-}
 
 // What becomes of each selected case file, decided before any case runs (the
 // workers are forks of this process and see the cases as they are then).
@@ -111,31 +79,13 @@ PreparedRun prepareCases(const std::vector<CaseFile>& files, const RunOptions& o
         applyBaseline(baseline, *error);
         p.ready = std::move(error);
       } else {
-        std::optional<Case> changed;  // --permute, --move: the case as it runs
-        if (opt.permute) changed = permuteCase(*parsed.value, *opt.permute).permuted;
-        std::string not_moved;
-        if (opt.move) {
-          Result<Case> moved =
-              moveCase(changed ? *changed : *parsed.value, *opt.move, MoveScope::Verdict);
-          if (moved)
-            changed = std::move(*moved);
-          else
-            changed.reset(), not_moved = moved.error().message;
-        }
-        if (opt.through && !(opt.move && !changed)) {
-          Result<Case> through = throughPath(changed ? *changed : *parsed.value, *opt.through);
-          if (!through) {
-            p.ready = notThroughOutcome(f.name, *opt.through, through.error().message);
-            run.planned.push_back(std::move(p));
-            continue;
-          }
-          changed = std::move(*through);
-        }
-        if (opt.move && !changed) {
-          p.ready = notMovedOutcome(f.name, not_moved);
+        // --permute, --move, --through: the case as it runs, or why it does not.
+        CaseAsRun as_run = caseAsRun(*parsed.value, opt);
+        if (as_run.not_run) {
+          p.ready = std::move(as_run.not_run);
         } else {
           p.index = run.cases.size();
-          run.cases.push_back(changed ? std::move(*changed) : *parsed.value);
+          run.cases.push_back(std::move(*as_run.runs));
         }
       }
     }
