@@ -74,7 +74,8 @@ std::string reproduction(const ReduceOptions& opt, const std::string& name) {
            " RAYSPEC_VARIANT_NAME=" + shellWord(name) +
            " RAYSPEC_VARIANT_OUT=" + shellWord(opt.out + "/device") + " sh -c " +
            shellWord(opt.device_command) + " && rayspec run --cases " +
-           shellWord(opt.out + "/" + kReductionCasesFolder) + " --device-results " + shellWord(opt.out + "/device");
+           shellWord(opt.out + "/" + kReductionCasesFolder) + " --device-results " +
+           shellWord(opt.out + "/device");
   std::string c = "rayspec run --case " + shellWord(opt.out + "/" + kReducedCaseFile);
   if (!opt.run.device.empty()) c += " --device " + shellWord(opt.run.device);
   for (const std::string& icd : opt.run.icd_files) c += " --icd " + shellWord(icd);
