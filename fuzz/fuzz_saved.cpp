@@ -31,10 +31,18 @@
 //                                       resumed run's, after whatever half
 //                                       line a kill left), with the case
 //                                       appended
+//   7  an output folder's lock file     base/output_folder.h, held by another
+//                                       open file (as another process would);
+//                                       the property: the claim is refused
+//                                       naming the holder in one visible line
+//                                       of bounded length, and succeeds once
+//                                       the holder lets go
 // Every input must end in a value or an error: never a crash, a hang, a leak
 // or undefined behaviour. And the path-escape property: whatever a reader
 // accepts is safe to make paths of (case names, image names) and sized as
 // results.json says; a violation aborts, which libFuzzer reports.
+#include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <cstddef>
@@ -45,6 +53,7 @@
 #include <optional>
 #include <string>
 
+#include "base/output_folder.h"
 #include "bundle/results_io.h"
 #include "report/baseline.h"
 #include "report/case_journal.h"
@@ -201,6 +210,24 @@ void mergedShard(const std::string& text) {
     require(it->path().filename() != "secret.txt");
 }
 
+void lockFile(const std::string& text) {
+  const fs::path out = workDir() / "out";
+  fs::create_directories(out);
+  write(out / rayspec::kOutputLockFile, text);
+  const int holder = open((out / rayspec::kOutputLockFile).c_str(), O_RDWR);
+  require(holder >= 0 && flock(holder, LOCK_EX | LOCK_NB) == 0);
+  {
+    const auto refused = rayspec::claimOutputFolder(out.string(), {}, "fuzz");
+    require(!refused);
+    const std::string message = refused.error().format();
+    require(message.find("in use by another") != std::string::npos);
+    require(message.size() < 4 * rayspec::kMaxLockHolderBytes + 512);
+    for (unsigned char c : message) require(c >= 0x20 && c < 0x7F);
+  }
+  close(holder);
+  require(static_cast<bool>(rayspec::claimOutputFolder(out.string(), {}, "fuzz")));
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -209,7 +236,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   fs::remove_all(workDir(), ec);
   fs::create_directories(workDir(), ec);
   const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
-  switch (data[0] % 7) {
+  switch (data[0] % 8) {
     case 0:
       baselineFile(text);
       break;
@@ -228,8 +255,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     case 5:
       mergedShard(text);
       break;
-    default:
+    case 6:
       caseJournal(text);
+      break;
+    default:
+      lockFile(text);
       break;
   }
   return 0;

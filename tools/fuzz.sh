@@ -40,6 +40,7 @@ seeds() {
     { printf '\005'; cat fuzz/seeds/summary.json; } >"$dir/shard"
     { printf '\006'; cat fuzz/seeds/outcomes.jsonl; } >"$dir/journal"
     { printf '\006'; head -c -40 fuzz/seeds/outcomes.jsonl; } >"$dir/journal-cut"
+    printf '\007rayspec run, process 1234, since 2026-12-06 05:00:00 UTC\n' >"$dir/lock"
   fi
   echo "$dir"
 }

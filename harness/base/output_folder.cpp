@@ -70,7 +70,7 @@ std::string holderOf(int fd) {
   const ssize_t n = pread(fd, text.data(), text.size(), 0);
   text.resize(n > 0 ? static_cast<size_t>(n) : 0);
   while (!text.empty() && text.back() == '\n') text.pop_back();
-  return text.empty() ? "a process that has not said who it is" : visibleText(text);
+  return text.empty() ? "a process that has not said who it is" : visibleLine(text);
 }
 
 void writeHolder(int fd, const std::string& command) {
