@@ -36,6 +36,17 @@ std::string casesFolder(const std::string& root, const std::vector<std::string>&
 
 // `rayspec run` of a cases folder into out (more options in `extra`), its
 // output in log. Its exit status.
+// One cases folder holding those of every shard (as a checkout's cases/
+// does), for merge, which judges each case anew by its case file.
+std::string mergeCases(const std::string& root, const std::vector<std::string>& folders) {
+  const std::string all = root + "/merge-cases";
+  fs::remove_all(all);
+  fs::create_directories(all);
+  for (const std::string& f : folders)
+    fs::copy(f, all, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+  return " --cases " + all;
+}
+
 int run(const std::string& cases, const std::string& out, const std::string& log,
         const std::string& extra = "") {
   return sh(cli::kBin + " run --no-validation --cases '" + cases + "' --out " + out + extra, log);
@@ -100,18 +111,19 @@ TEST(CutJournal, AFolderKilledMidLineTwiceResumesAndMerges) {
   // the cut case is not there, and the merge says the shard was interrupted
   // (exit 1).
   const std::string other = root + "/other";
-  ASSERT_EQ(run(casesFolder(other, {"other/d"}), other + "/out", other + "/run.txt"), 0)
-      << slurp(other + "/run.txt");
+  const std::string other_cases = casesFolder(other, {"other/d"});
+  ASSERT_EQ(run(other_cases, other + "/out", other + "/run.txt"), 0) << slurp(other + "/run.txt");
   const std::string merged = root + "/merged", cut = root + "/merged-cut";
-  EXPECT_EQ(
-      sh(cli::kBin + " merge " + out + " " + other + "/out --out " + merged, root + "/merge.txt"),
-      0)
+  const std::string with_cases = mergeCases(root, {cases, other_cases});
+  EXPECT_EQ(sh(cli::kBin + " merge " + out + " " + other + "/out --out " + merged + with_cases,
+               root + "/merge.txt"),
+            0)
       << slurp(root + "/merge.txt");
   EXPECT_EQ(summaryOf(merged)["counts"]["Pass"], 4);
   killMidLine(out, 0);
-  EXPECT_EQ(
-      sh(cli::kBin + " merge " + out + " " + other + "/out --out " + cut, root + "/merge-cut.txt"),
-      1)
+  EXPECT_EQ(sh(cli::kBin + " merge " + out + " " + other + "/out --out " + cut + with_cases,
+               root + "/merge-cut.txt"),
+            1)
       << slurp(root + "/merge-cut.txt");
   const nlohmann::json summary = summaryOf(cut);
   EXPECT_TRUE(summary["interrupted"].get<bool>());
@@ -191,18 +203,19 @@ TEST(BadCaseName, ASpaceOrABadByteInAFileNameIsACaseErrorAndTheFolderStillMerges
       << slurp(root + "/resume.txt");
   check(out, slurp(root + "/resume.txt"), 3);
   const std::string other = root + "/other";
-  ASSERT_EQ(run(casesFolder(other, {"other/d"}), other + "/out", other + "/run.txt"), 0)
-      << slurp(other + "/run.txt");
+  const std::string other_cases = casesFolder(other, {"other/d"});
+  ASSERT_EQ(run(other_cases, other + "/out", other + "/run.txt"), 0) << slurp(other + "/run.txt");
   const std::string merged = root + "/merged";
-  EXPECT_EQ(
-      sh(cli::kBin + " merge " + out + " " + other + "/out --out " + merged, root + "/merge.txt"),
-      1)
+  const std::string with_cases = mergeCases(root, {cases, other_cases});
+  EXPECT_EQ(sh(cli::kBin + " merge " + out + " " + other + "/out --out " + merged + with_cases,
+               root + "/merge.txt"),
+            1)
       << slurp(root + "/merge.txt");
   check(merged, slurp(root + "/merge.txt"), 4);
   // failures.csv, appended to a baseline as it says, is one that loads: the
   // two CaseErrors are then expected and the merge passes.
   EXPECT_EQ(sh(cli::kBin + " merge " + out + " " + other + "/out --out " + root +
-                   "/gated --baseline " + merged + "/failures.csv",
+                   "/gated --baseline " + merged + "/failures.csv" + with_cases,
                root + "/gated.txt"),
             0)
       << slurp(root + "/gated.txt");
