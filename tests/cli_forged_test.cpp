@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_helpers.h"
+#include "json_files.h"
 
 namespace {
 namespace fs = std::filesystem;
@@ -21,12 +22,8 @@ using cli::slurp;
 
 const std::string kForged = "anyhit/ignore-odd-primitives";
 
-nlohmann::json readForged(const std::string& path) {
-  return nlohmann::json::parse(std::ifstream(path));
-}
-void writeForged(const std::string& path, const nlohmann::json& j) {
-  std::ofstream(path) << j.dump(1);
-}
+using testing_support::readJsonFile;
+using testing_support::writeJsonFile;
 
 // Two runs of kForged, saved once for every test: one that passes, and one
 // with a planted failure judged by a baseline that expects none (so it is
@@ -54,9 +51,9 @@ class Forged : public ::testing::Test {
   // The shard's summary.json, edited by `edit`.
   template <typename Edit>
   static void editSummary(const std::string& shard, Edit edit) {
-    nlohmann::json j = readForged(shard + "/summary.json");
+    nlohmann::json j = readJsonFile(shard + "/summary.json");
     edit(j);
-    writeForged(shard + "/summary.json", j);
+    writeJsonFile(shard + "/summary.json", j);
   }
   // `rayspec merge SHARD ARGS --out root_/<name>-merged`: exit status and output.
   static std::pair<int, std::string> merged(const std::string& shard, const std::string& name,
@@ -94,7 +91,7 @@ TEST_F(Forged, AFailEditedToPassMergesAsTheFail) {
   EXPECT_EQ(rc, 1) << log;
   const std::string out = root_ + "/fail-to-pass-merged";
   EXPECT_EQ(cli::readDeqpCsv(out + "/results.csv")[kForged], "Fail") << log;
-  const nlohmann::json summary = readForged(out + "/summary.json");
+  const nlohmann::json summary = readJsonFile(out + "/summary.json");
   EXPECT_EQ(summary["cases"][0]["status"], "Fail");
   EXPECT_NE(summary["cases"][0].dump().find("summary.json says Pass"), std::string::npos)
       << summary["cases"][0].dump();
@@ -105,9 +102,9 @@ TEST_F(Forged, AFailEditedToPassMergesAsTheFail) {
 TEST_F(Forged, AValidationErrorInTheBundleIsNoPass) {
   const std::string shard = copyOf("good", "validation");
   const std::string json = shard + "/" + kForged + "/device/results.json";
-  nlohmann::json j = readForged(json);
+  nlohmann::json j = readJsonFile(json);
   j["validation_messages"] = {"VUID-vkCmdTraceRaysKHR-None-08606: the forged-away error"};
-  writeForged(json, j);
+  writeJsonFile(json, j);
   const auto [rc, log] = merged(shard, "validation");
   EXPECT_EQ(rc, 1) << log;
   const std::string out = root_ + "/validation-merged";
@@ -233,17 +230,17 @@ TEST_F(Forged, CompareChecksTheCaseHashAndLooksCasesUpByName) {
            root_ + "/" + name + ".txt");
     return std::pair<int, std::string>{rc, slurp(root_ + "/" + name + ".txt")};
   };
-  nlohmann::json j = readForged(bundle + "/results.json");
+  nlohmann::json j = readJsonFile(bundle + "/results.json");
   const nlohmann::json original = j;
   // Another case's file named: ignored, the case is looked up by its name.
   j["case_file"] = cli::kCases + "results/miss-xor-closest-hit.yaml";
-  writeForged(bundle + "/results.json", j);
+  writeJsonFile(bundle + "/results.json", j);
   auto [rc, log] = compared("compare-file");
   EXPECT_EQ(rc, 0) << log;
   // A case_hash that is not the case's: a CaseError naming the field.
   j = original;
   j["case_hash"] = "0123456789abcdef";
-  writeForged(bundle + "/results.json", j);
+  writeJsonFile(bundle + "/results.json", j);
   std::tie(rc, log) = compared("compare-hash");
   EXPECT_EQ(rc, 1) << log;
   EXPECT_NE(log.find("CaseError"), std::string::npos) << log;
@@ -253,14 +250,14 @@ TEST_F(Forged, CompareChecksTheCaseHashAndLooksCasesUpByName) {
   j = original;
   j["case"] = "results/miss-xor-closest-hit";
   j["case_file"] = cli::kCases + "results/miss-xor-closest-hit.yaml";
-  writeForged(bundle + "/results.json", j);
+  writeJsonFile(bundle + "/results.json", j);
   std::tie(rc, log) = compared("compare-other");
   EXPECT_EQ(rc, 1) << log;
   EXPECT_NE(log.find("CaseError"), std::string::npos) << log;
   // Run folders: A's bundle of a changed case is a CaseError too.
   j = original;
   j["case_hash"] = "0123456789abcdef";
-  writeForged(bundle + "/results.json", j);
+  writeJsonFile(bundle + "/results.json", j);
   rc = sh(cli::kBin + " compare " + saved + " " + root_ + "/good --out " + root_ + "/compare-runs",
           root_ + "/compare-runs.txt");
   log = slurp(root_ + "/compare-runs.txt");

@@ -101,6 +101,22 @@ TEST_F(OutLinks, CommandsThatRunTouchOnlyWhatTheyWrite) {
   EXPECT_TRUE(fs::is_regular_file(root_ + "/mutate/mutate.json")) << log;
 }
 
+TEST_F(OutLinks, StudiesAndReductionsTouchOnlyWhatTheyWrite) {
+  auto [rc, log] =
+      inProject("stability", "stability --no-device --filter 'stability/fan/mag-1-n7-seed1'");
+  EXPECT_EQ(rc, 0) << log;
+  EXPECT_TRUE(fs::is_regular_file(root_ + "/stability/stability.json")) << log;
+  std::tie(rc, log) = inProject("accuracy", "accuracy --no-device --ordinary '" + kCase +
+                                                "' --hard 'stability/fan/mag-1-n7-seed1'");
+  EXPECT_EQ(rc, 0) << log;
+  EXPECT_TRUE(fs::is_regular_file(root_ + "/accuracy/accuracy.json")) << log;
+  std::tie(rc, log) =
+      inProject("reduce",
+                "reduce inactive/before-active-mask-zero-instance/one-first --no-validation "
+                "--plant-fault instance-mask-ignored --max-attempts 3");
+  EXPECT_TRUE(fs::is_regular_file(root_ + "/reduce/reduced.yaml")) << rc << "\n" << log;
+}
+
 // A link, a FIFO or a socket where a command writes: it refuses, naming the
 // entry, before it writes anything, and the entry stays.
 TEST_F(OutLinks, ALinkWhereACommandWritesIsRefusedAndKept) {

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_helpers.h"
+#include "json_files.h"
 
 namespace {
 namespace fs = std::filesystem;
@@ -22,12 +23,8 @@ using cli::victim;
 
 const std::string kImages = "anyhit/ignore-odd-primitives";  // a case with images
 
-nlohmann::json readJson(const std::string& path) {
-  return nlohmann::json::parse(std::ifstream(path));
-}
-void writeJson(const std::string& path, const nlohmann::json& j) {
-  std::ofstream(path) << j.dump(1);
-}
+using testing_support::readJsonFile;
+using testing_support::writeJsonFile;
 
 // One run of kImages, device and model, saved once for every test.
 class Untrusted : public ::testing::Test {
@@ -69,12 +66,12 @@ TEST_F(Untrusted, TheSavedRunPasses) {
 TEST_F(Untrusted, AnImageNameThatClimbsIsACaseError) {
   const std::string saved = copyRun("image-climbs");
   const std::string json = saved + "/" + kImages + "/device/results.json";
-  nlohmann::json j = readJson(json);
+  nlohmann::json j = readJsonFile(json);
   ASSERT_FALSE(j["images"].empty());
   const std::string raw =
       saved + "/" + kImages + "/device/" + j["images"][0]["name"].get<std::string>() + ".raw";
   j["images"][0]["name"] = "../../../../evil/y";
-  writeJson(json, j);
+  writeJsonFile(json, j);
   fs::create_directories(root_ + "/evil");
   fs::copy_file(raw, root_ + "/evil/y.raw", fs::copy_options::overwrite_existing);
   const auto [rc, log] = judged(saved, "image-climbs");
@@ -89,7 +86,7 @@ TEST_F(Untrusted, AnImageNameThatClimbsIsACaseError) {
 TEST_F(Untrusted, AShortImageIsACaseErrorNamingTheSizes) {
   const std::string saved = copyRun("image-short");
   const std::string dir = saved + "/" + kImages + "/device/";
-  const nlohmann::json j = readJson(dir + "results.json");
+  const nlohmann::json j = readJsonFile(dir + "results.json");
   const std::string raw = dir + j["images"][0]["name"].get<std::string>() + ".raw";
   fs::resize_file(raw, fs::file_size(raw) / 2);
   const auto [rc, log] = judged(saved, "image-short");
@@ -105,9 +102,9 @@ TEST_F(Untrusted, AShortImageIsACaseErrorNamingTheSizes) {
 TEST_F(Untrusted, CompareNeverRemovesAFolderABundleNames) {
   const std::string saved = copyRun("compare-climbs");
   const std::string bundle = saved + "/" + kImages + "/device";
-  nlohmann::json j = readJson(bundle + "/results.json");
+  nlohmann::json j = readJsonFile(bundle + "/results.json");
   j["case"] = "../victim";
-  writeJson(bundle + "/results.json", j);
+  writeJsonFile(bundle + "/results.json", j);
   const std::string kept = victim(root_, "victim");
   const std::string out = root_ + "/compare-out";
   const int rc =
@@ -123,10 +120,10 @@ TEST_F(Untrusted, CompareNeverRemovesAFolderABundleNames) {
 // the file, and the folder beside --out survives.
 TEST_F(Untrusted, MergeNeverRemovesAFolderASummaryNames) {
   const std::string shard = copyRun("merge-climbs");
-  nlohmann::json j = readJson(shard + "/summary.json");
+  nlohmann::json j = readJsonFile(shard + "/summary.json");
   ASSERT_FALSE(j["cases"].empty());
   j["cases"][0]["name"] = "../victim2";
-  writeJson(shard + "/summary.json", j);
+  writeJsonFile(shard + "/summary.json", j);
   const std::string kept = victim(root_, "victim2");
   const std::string out = root_ + "/merge-out";
   const int rc = sh(cli::kBin + " merge " + shard + " --out " + out, root_ + "/merge-climbs.txt");
@@ -153,10 +150,10 @@ TEST_F(Untrusted, ARunRemovesOnlyWhatItWrote) {
 // A shard that stopped early is no passing merge: exit 1, saying so.
 TEST_F(Untrusted, MergingAnInterruptedShardIsNoPass) {
   const std::string shard = copyRun("merge-interrupted");
-  nlohmann::json j = readJson(shard + "/summary.json");
+  nlohmann::json j = readJsonFile(shard + "/summary.json");
   j["interrupted"] = true;
   j["planned_cases"] = 2;
-  writeJson(shard + "/summary.json", j);
+  writeJsonFile(shard + "/summary.json", j);
   const int rc = sh(cli::kBin + " merge " + shard + " --out " + root_ + "/merge-interrupted-out",
                     root_ + "/merge-interrupted.txt");
   const std::string log = slurp(root_ + "/merge-interrupted.txt");
