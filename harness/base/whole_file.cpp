@@ -68,9 +68,13 @@ int writeAll(int fd, const char* data, size_t size) {
 
 }  // namespace
 
+std::string partFileName(const std::string& path) {
+  return path + ".part." + std::to_string(::getpid()) + "-" +
+         std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id()));
+}
+
 Result<void> writeWholeFile(const std::string& path, const void* data, size_t size) {
-  const std::string part = path + ".part." + std::to_string(::getpid()) + "-" +
-                           std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id()));
+  const std::string part = partFileName(path);
   const auto failed = [&path](int error) {
     return errorOf(ErrorKind::Harness, path + ": cannot write: " + errorWords(error));
   };

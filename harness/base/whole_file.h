@@ -22,6 +22,10 @@ Result<std::string> readWholeFile(const std::string& path, uint64_t max_bytes);
 // callers pass Error::message on.
 Error inOneMessage(const Error& e);
 
+// The name of a file written beside `path` before it is renamed to it: one
+// of this process and thread's own (path.part.PID-THREAD).
+std::string partFileName(const std::string& path);
+
 // The error: ErrorKind::Harness, "PATH: cannot write: WHY" (a full disk, a
 // folder in the way ...); nothing is left behind then, and a file that was at
 // path stays as it was.

@@ -9,8 +9,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <functional>
-#include <thread>
+
+#include "base/whole_file.h"
 
 namespace rayspec {
 namespace fs = std::filesystem;
@@ -110,8 +110,7 @@ Result<std::string> loadCacheSecret(const std::string& file) {
   if (Result<std::string> held = readSecret(file)) return held;
   RAYSPEC_TRY_VOID(makePrivateFolder(fs::path(file).parent_path()));
   RAYSPEC_TRY(const std::string secret, randomSecret());
-  const std::string part = file + ".part." + std::to_string(::getpid()) + "-" +
-                           std::to_string(std::hash<std::thread::id>()(std::this_thread::get_id()));
+  const std::string part = partFileName(file);
   RAYSPEC_TRY_VOID(writePrivateFile(part, secret));
   return placeSecret(part, file, secret);
 }
