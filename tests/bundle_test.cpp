@@ -42,6 +42,11 @@ Results sampleResults() {
                          AmbiguityReason::Edge,
                          {{true, 0, 0, 1}, {true, 0, 0, 2}},
                          {{true, 0, 0, 1}, {true, 0, 0, 2}}});
+  // Two replays of ray 4's legal answers: the second moves "miss" down by one.
+  std::vector<uint32_t> replay(recordWords(), 0);
+  replay[findRecordField("hit_t")->offset] = std::bit_cast<uint32_t>(2.5f);
+  r.ambiguous[0].replays = {{replay, {}},
+                            {std::vector<uint32_t>(recordWords(), 7), {{"miss", -1}}}};
   r.t_bounds.push_back({5, 0.25f});
   r.object_origin_bounds.push_back({3, 0.0625f});
   r.repeat_dependent.push_back(
@@ -70,6 +75,7 @@ TEST(ResultsIo, BundleRoundTripsEveryField) {
   EXPECT_EQ(back.ambiguous[0].candidates.size(), 2u);
   EXPECT_EQ(back.ambiguous[0].candidates[1].primitive, 2u);
   EXPECT_EQ(back.ambiguous[0].shared_triangles.size(), 2u);
+  EXPECT_EQ(back.ambiguous[0].replays, r.ambiguous[0].replays);
   ASSERT_EQ(back.repeat_dependent.size(), 1u);
   EXPECT_EQ(back.repeat_dependent[0].ray, 2u);
   EXPECT_EQ(back.repeat_dependent[0].fields, r.repeat_dependent[0].fields);
@@ -163,6 +169,22 @@ TEST(ResultsIo, BadBundlesNameTheFieldOrFile) {
   EXPECT_NE(
       edited("\"case\": \"family/sample\"", "\"case\": \"/etc\"").find("'/etc' is no case name"),
       std::string::npos);
+  EXPECT_NE(edited("\"miss\": -1", "\"hit\": -1")
+                .find("ambiguous.replays.counter_moves.hit: no such counter"),
+            std::string::npos);
+  EXPECT_NE(edited("\"miss\": -1", "\"miss\": 18446744073709551615")
+                .find("ambiguous.replays.counter_moves.miss: not a signed 64-bit integer"),
+            std::string::npos);
+  // replays.bin one word short.
+  edited("\"width\": 3", "\"width\": 3");
+  std::filesystem::resize_file(dir + "/replays.bin",
+                               std::filesystem::file_size(dir + "/replays.bin") - 4);
+  std::string replay_error;
+  orError(readResults(dir), &replay_error);
+  EXPECT_NE(replay_error.find("replays.bin holds " + std::to_string(2 * recordWords() * 4 - 4) +
+                              " bytes; results.json says replays x record words 2 x"),
+            std::string::npos)
+      << replay_error;
   // records.bin one word short.
   edited("\"width\": 3", "\"width\": 3");
   std::filesystem::resize_file(dir + "/records.bin",

@@ -153,6 +153,24 @@ json candidatesJson(const std::vector<Candidate>& candidates) {
   return out;
 }
 
+// An ambiguous ray's replays (RayAmbiguity::replays) in results.json: each
+// one's counter moves; their records go to replays.bin (writeReplayRecords).
+json replaysJson(const std::vector<LegalReplay>& replays) {
+  json out = json::array();
+  for (const LegalReplay& r : replays) out.push_back({{"counter_moves", r.counter_moves}});
+  return out;
+}
+
+// The records of every ambiguous ray's replays, ray after ray, into
+// replays.bin (none where the case keeps no records).
+Result<void> writeReplayRecords(const Results& r, const fs::path& dir) {
+  std::vector<uint32_t> words;
+  for (const RayAmbiguity& a : r.ambiguous)
+    for (const LegalReplay& k : a.replays)
+      words.insert(words.end(), k.record.begin(), k.record.end());
+  return writeWords(dir / "replays.bin", words);
+}
+
 // The rays the model found ambiguous, bounded, undefined or dependent on
 // any-hit repetition, into results.json (readRayNotes reads them back).
 void writeRayNotes(const Results& r, json& j) {
@@ -162,7 +180,8 @@ void writeRayNotes(const Results& r, json& j) {
                               {"reason", ambiguityReasonName(a.reason)},
                               {"candidates", candidatesJson(a.candidates)},
                               {"shared_triangles", candidatesJson(a.shared_triangles)},
-                              {"leak_answers", candidatesJson(a.leak_answers)}});
+                              {"leak_answers", candidatesJson(a.leak_answers)},
+                              {"replays", replaysJson(a.replays)}});
   j["t_bounds"] = json::array();
   for (const TBound& b : r.t_bounds) j["t_bounds"].push_back({{"ray", b.ray}, {"bound", b.bound}});
   j["object_origin_bounds"] = json::array();
@@ -229,6 +248,7 @@ Result<void> writeResults(const Results& r, const std::string& dir_name,
   }
   writeRayNotes(r, j);
   RAYSPEC_TRY_VOID(writeWords(dir / "records.bin", r.records));
+  RAYSPEC_TRY_VOID(writeReplayRecords(r, dir));
   if (files.records_csv)
     RAYSPEC_TRY_VOID(writeRecordsCsv(r, (dir / "records.csv").string(), kept_fields));
   // results.json last, with the time of writing the rest of the bundle.
@@ -369,6 +389,31 @@ Result<std::vector<Candidate>> readCandidates(FieldReader& field, const json& ja
   return out;
 }
 
+// An ambiguous ray's replays (ambiguous.replays; absent in older bundles:
+// none), each one's counter moves: a counter of the bundle's, by a signed
+// 64-bit integer. Their records come from replays.bin (readReplayRecords).
+Result<std::vector<LegalReplay>> readReplays(FieldReader& field, const json& ja, const Results& r) {
+  std::vector<LegalReplay> out;
+  if (!ja.contains("replays")) return out;
+  for (const json& jr : field(ja, "ambiguous.replays")) {
+    LegalReplay k;
+    const json& moves = field(jr, "ambiguous.replays.counter_moves");
+    if (!moves.is_object())
+      return badValue(field.dir, "ambiguous.replays.counter_moves: not an object");
+    for (const auto& [name, value] : moves.items()) {
+      const std::string where = "ambiguous.replays.counter_moves." + visibleText(name, 80);
+      if (!r.counters.count(name)) return badValue(field.dir, where + ": no such counter");
+      if (!value.is_number_integer() ||
+          (value.is_number_unsigned() &&
+           value.get<uint64_t>() > uint64_t{std::numeric_limits<int64_t>::max()}))
+        return badValue(field.dir, where + ": not a signed 64-bit integer");
+      k.counter_moves[name] = value.get<int64_t>();
+    }
+    out.push_back(std::move(k));
+  }
+  return out;
+}
+
 // t_bounds or object_origin_bounds (absent in older bundles: none).
 Result<void> readBounds(const json& j, FieldReader& field, const std::string& key,
                         std::vector<TBound>& out) {
@@ -424,6 +469,7 @@ Result<void> readRayNotes(const json& j, FieldReader& field, Results& r) {
     RAYSPEC_TRY(a.candidates, readCandidates(field, ja, "candidates", true));
     RAYSPEC_TRY(a.shared_triangles, readCandidates(field, ja, "shared_triangles", false));
     RAYSPEC_TRY(a.leak_answers, readCandidates(field, ja, "leak_answers", false));
+    RAYSPEC_TRY(a.replays, readReplays(field, ja, r));
     r.ambiguous.push_back(std::move(a));
   }
   return {};
@@ -455,6 +501,27 @@ Result<void> readResultsJson(const std::string& text, const fs::path& dir, Resul
   }
 }
 
+// The records of the replays results.json lists, from replays.bin: one
+// each where the bundle has records, none where it has not.
+Result<void> readReplayRecords(const fs::path& dir, Results& r) {
+  uint64_t replays = 0;
+  for (const RayAmbiguity& a : r.ambiguous) replays += a.replays.size();
+  const uint64_t words = r.records.empty() ? 0 : replays * recordWords();
+  if (words == 0) return {};
+  BulkWords all;
+  RAYSPEC_TRY_VOID(readSizedWords(
+      dir / "replays.bin", words, false,
+      "replays x record words " + std::to_string(replays) + " x " + std::to_string(recordWords()),
+      all));
+  const uint32_t* w = all.data();
+  for (RayAmbiguity& a : r.ambiguous)
+    for (LegalReplay& k : a.replays) {
+      k.record.assign(w, w + recordWords());
+      w += recordWords();
+    }
+  return {};
+}
+
 }  // namespace
 
 Result<Results> readResults(const std::string& dir_name) {
@@ -472,6 +539,7 @@ Result<Results> readResults(const std::string& dir_name) {
                               std::to_string(r.height) + " x " + std::to_string(recordWords());
   RAYSPEC_TRY_VOID(readSizedWords(dir / "records.bin", uint64_t(r.width) * r.height * recordWords(),
                                   true, implied, r.records));
+  RAYSPEC_TRY_VOID(readReplayRecords(dir, r));
   return r;
 }
 

@@ -3,6 +3,8 @@
 //   results.json   case, backend, device, status, size, counters, images,
 //                  ambiguous rays, validation messages, seconds
 //   records.bin    the raw per-ray words (little-endian uint32)
+//   replays.bin    the model's: the record of each legal replay of each
+//                  ambiguous ray, in results.json's order (RayAmbiguity::replays)
 //   records.csv    the kept per-ray fields, one row per ray, for people
 //                  (a run writes it where the case did not pass, see BundleFiles)
 //   NAME.raw       each image's texels (little-endian 32-bit)

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <optional>
 #include <set>
 
 #include "compare/compare_parts.h"
@@ -69,25 +70,52 @@ uint64_t answersSlack(const Case& c, const std::string& name, const Results& mod
 }
 
 // Whether device count d stands within `slack` of the model's m, as the mode says.
-bool withinSlack(CounterMode mode, uint64_t d, uint64_t m, uint64_t slack) {
+bool withinSlack(CounterMode mode, uint64_t d, uint64_t m, const CounterSlack& slack) {
   switch (mode) {
     case CounterMode::Exact:
-      return (d > m ? d - m : m - d) <= slack;
+      return d <= m + slack.above && d + slack.below >= m;
     case CounterMode::AtLeast:
-      return d + slack >= m;
+      return d + slack.below >= m;
     case CounterMode::AtMost:
-      return d <= m + slack;
+      return d <= m + slack.above;
     case CounterMode::Informational:
       break;
   }
   return true;
 }
 
+// The replays' reach (CounterSlack), or nullopt where a ray has none.
+std::optional<CounterSlack> replaysSlack(const std::string& name, const Results& model) {
+  CounterSlack s{0, 0, true};
+  for (const RayAmbiguity& a : model.ambiguous) {
+    if (a.replays.empty()) return std::nullopt;
+    int64_t low = 0, high = 0;  // the model's own answer moves nothing
+    for (const LegalReplay& r : a.replays)
+      if (const auto it = r.counter_moves.find(name); it != r.counter_moves.end()) {
+        low = std::min(low, it->second);
+        high = std::max(high, it->second);
+      }
+    s.below += static_cast<uint64_t>(-low);
+    s.above += static_cast<uint64_t>(high);
+  }
+  return s;
+}
+
+std::string slackText(const CounterSlack& s) {
+  if (!s.replayed)
+    return " (within " + std::to_string(s.above) +
+           ", what the ambiguous rays' legal answers may move it)";
+  return " (within " + std::to_string(s.below) + " below and " + std::to_string(s.above) +
+         " above, what the ambiguous rays' legal answers, each replayed, move it)";
+}
+
 }  // namespace
 
-uint64_t counterSlack(const Case& c, const std::string& name, const Results& model) {
-  if (c.outputs.counter_modes.count(name) && c.outputs.counter_modes.at(name) == "exact") return 0;
-  return answersSlack(c, name, model);
+CounterSlack counterSlack(const Case& c, const std::string& name, const Results& model) {
+  if (c.outputs.counter_modes.count(name) && c.outputs.counter_modes.at(name) == "exact") return {};
+  if (const std::optional<CounterSlack> r = replaysSlack(name, model)) return *r;
+  const uint64_t slack = answersSlack(c, name, model);
+  return {slack, slack, false};
 }
 
 namespace {
@@ -132,6 +160,8 @@ void compareCounters(const Case& c, const Results& device, const Results& model,
   if (undefined_rays) moved = countersUndefinedRaysMayMove(c);
   // R-AHIT-DUP: a counter a repeated any-hit moves.
   const std::set<std::string> repeat(model.repeat_counters.begin(), model.repeat_counters.end());
+  std::map<std::string, int64_t> together;  // checkMovesTogether's, while every counter is within
+  bool all_within = true;
   for (auto& [name, mode] : modes) {
     const bool undefined = moved.count(name) > 0;
     const bool repeated = repeat.count(name) > 0;
@@ -147,9 +177,9 @@ void compareCounters(const Case& c, const Results& device, const Results& model,
     f.rule = findingRule(rulesEvidencedByCounter(c, name), c.rules, "counter");
     const std::string values = "counter '" + name + "' (" + counterModeName(mode) + "): device " +
                                std::to_string(d) + ", model " + std::to_string(m);
-    const uint64_t slack = mode == CounterMode::Informational ? 0 : counterSlack(c, name, model);
-    const std::string within = " (within " + std::to_string(slack) +
-                               ", what the ambiguous rays' legal answers may move it)";
+    const CounterSlack slack =
+        mode == CounterMode::Informational ? CounterSlack{} : counterSlack(c, name, model);
+    const std::string within = slackText(slack);
     const bool ok = withinSlack(mode, d, m, slack);
     if (mode != CounterMode::Exact)
       f.message = values;
@@ -162,7 +192,11 @@ void compareCounters(const Case& c, const Results& device, const Results& model,
       f.message = values +
                   " (informational: a device may run any-hit more than once for a "
                   "primitive, R-AHIT-DUP, and that moves it)";
-    if (!ok && withinSlack(mode, d, m, slack + leakSlack(c, name, device, model))) {
+    all_within = all_within && ok;
+    if (ok && mode == CounterMode::Exact && slack.replayed)
+      together[name] = static_cast<int64_t>(d) - static_cast<int64_t>(m);
+    const uint64_t leaks = ok ? 0 : leakSlack(c, name, device, model);
+    if (!ok && withinSlack(mode, d, m, {slack.below + leaks, slack.above + leaks, false})) {
       f.status = Status::QualityWarning;
       f.rule = "R-WATERTIGHT";
       f.message = values +
@@ -171,13 +205,14 @@ void compareCounters(const Case& c, const Results& device, const Results& model,
       v.add(f);
     } else if (!ok) {
       f.status = Status::Fail;
-      f.message = values + (slack ? within : "");
+      f.message = values + (slack.below || slack.above ? within : "");
       v.add(f);
     } else if (!f.message.empty()) {
       f.status = Status::Pass;
       v.add(f);
     }
   }
+  if (all_within) checkMovesTogether(c, together, model, v);
 }
 
 }  // namespace rayspec

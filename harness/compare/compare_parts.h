@@ -61,6 +61,20 @@ struct RayBounds {
 // within the field's tolerance, widened to the ray's bounds).
 bool sameField(const RecordField& f, const uint32_t* d, const uint32_t* m, const RayBounds& bounds);
 
+// An ambiguous ray with its legal answers replayed (RayAmbiguity::replays,
+// each with a record): nullptr where the device's record equals one of them
+// in every field of `fields` (as sameField compares); else the first field
+// in which the nearest of them (fewest fields differing) differs.
+const RecordField* fieldNoReplayLeaves(const RayAmbiguity& a, const uint32_t* d,
+                                       const std::vector<const RecordField*>& fields,
+                                       const RayBounds& bounds);
+// The exact counters whose slack the replays give (CounterSlack::replayed),
+// each within its own range, judged together (counter_moves_together.cpp):
+// `device_moves`, each one's device count less the model's, must be the sum
+// of one replay's moves per ambiguous ray; a Fail where it is none (nothing
+// where the sums are too many to follow).
+void checkMovesTogether(const Case& c, const std::map<std::string, int64_t>& device_moves,
+                        const Results& model, Verdict& v);
 // Collects the rays breaking one rule into one finding.
 struct FindingBuilder {
   Finding finding;

@@ -36,8 +36,9 @@ std::string fieldRule(const std::string& field) {
 
 // The device's answer for an ambiguous ray, checked against the legal set.
 // A hit only a device passing between the triangles of a shared edge or
-// vertex reaches goes to `passed` (R-WATERTIGHT, a "should").
-void checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
+// vertex reaches goes to `passed` (R-WATERTIGHT, a "should"). True where the
+// ray went to a finding (wrongs, leak or passed).
+bool checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
                     std::map<std::string, FindingBuilder>& wrongs, FindingBuilder& leak,
                     FindingBuilder& passed) {
   // A trace that ran no miss shader hit, whether or not closest-hit ran
@@ -70,7 +71,9 @@ void checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
         a.reason == AmbiguityReason::Edge || a.reason == AmbiguityReason::Vertex;
     if (shared || (!miss_legal && watertight && !crossesBorderOnly(c, a))) {
       leak.addRay(a.ray);
-    } else if (!miss_legal && !watertight) {
+      return true;
+    }
+    if (!miss_legal && !watertight) {
       const std::string rule = ruleForAmbiguity(a.reason);
       FindingBuilder& wrong = wrongs[rule + " miss"];
       if (wrong.finding.rule.empty())
@@ -79,14 +82,17 @@ void checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
                              std::string(ambiguityReasonName(a.reason)) +
                              ") missed, and no legal answer is a miss"};
       wrong.addRay(a.ray);
+      return true;
     }
-    return;
+    return false;
   }
   const bool behind_edge = std::any_of(a.leak_answers.begin(), a.leak_answers.end(),
                                        [&](const Candidate& k) { return hitFits(rec, k); });
   if (!legal && behind_edge) {
     passed.addRay(a.ray);
-  } else if (!legal) {
+    return true;
+  }
+  if (!legal) {
     const std::string rule = ruleForAmbiguity(a.reason);
     FindingBuilder& wrong = wrongs[rule];
     if (wrong.finding.rule.empty())
@@ -94,7 +100,31 @@ void checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
                        "numerically ambiguous ray (" + std::string(ambiguityReasonName(a.reason)) +
                            ") hit a primitive that is not one of its legal answers"};
     wrong.addRay(a.ray);
+    return true;
   }
+  return false;
+}
+
+// An ambiguous ray whose legal answers the model replayed: the device's
+// record must be one of them as a whole. One that is none goes to `wrongs`,
+// unless checkAmbiguous finds why first (a leak, a hit behind a shared
+// edge, an answer outside the legal set). True where the replays judged it.
+bool checkReplays(const Case& c, const RayAmbiguity& a, const uint32_t* d,
+                  const std::vector<const RecordField*>& fields, const RayBounds& bounds,
+                  std::map<std::string, FindingBuilder>& wrongs, FindingBuilder& leak,
+                  FindingBuilder& passed) {
+  if (a.replays.empty() || a.replays[0].record.size() != recordWords()) return false;
+  const RecordField* f = fieldNoReplayLeaves(a, d, fields, bounds);
+  if (!f || checkAmbiguous(c, a, d, wrongs, leak, passed)) return true;
+  FindingBuilder& b = wrongs[std::string("replay ") + f->name];
+  if (b.finding.rule.empty())
+    b.finding = {Status::Fail, ruleForField(f->name, c.rules),
+                 std::string("per-ray field '") + f->name +
+                     "' is what none of the legal answers of a numerically ambiguous ray (" +
+                     ambiguityReasonName(a.reason) +
+                     ") leaves, each replayed through the launch ray (the nearest differs there)"};
+  b.addRay(a.ray);
+  return true;
 }
 
 }  // namespace
@@ -136,6 +166,7 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
     const FieldMask repeat_fields = repeated == repeat.end() ? 0 : repeated->second;
     if (const auto it = ambiguous.find(ray); it != ambiguous.end()) {
       if (repeat_fields) continue;  // its legal answers and what repetition changes: not judged
+      if (checkReplays(c, *it->second, d, fields, bounds, wrongs, leak, passed)) continue;
       checkAmbiguous(c, *it->second, d, wrongs, leak, passed);
       checkAmbiguousShared(c, shape, *it->second, d, m, fields, bounds, wrongs);
       continue;

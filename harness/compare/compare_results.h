@@ -19,9 +19,17 @@ Verdict compareResults(const Case& c, const Plan& plan, const Results& device,
 // The status a backend reported as a verdict of its own; Pass for Ok.
 Verdict backendVerdict(const Results& r);
 
-// How far a legal device's exact (or at_least / at_most) counter may lie from
-// the model's: what the legal answers of the model's ambiguous rays can change
-// (compare_counters.cpp).
-uint64_t counterSlack(const Case& c, const std::string& counter, const Results& model);
+// How far a legal device's exact (or at_least / at_most) counter may lie
+// below and above the model's: what the legal answers of the model's
+// ambiguous rays can change (compare_counters.cpp). Where every ambiguous ray
+// has its answers replayed (RayAmbiguity::replays), the sums of each ray's
+// largest moves down and up; else a slack both ways from what the case's
+// shape tells.
+struct CounterSlack {
+  uint64_t below = 0, above = 0;
+  bool replayed = false;  // from the replays
+  bool operator==(const CounterSlack&) const = default;
+};
+CounterSlack counterSlack(const Case& c, const std::string& counter, const Results& model);
 
 }  // namespace rayspec

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "model/legal_replays.h"
 #include "model/model_sbt.h"
 #include "model/model_shared.h"
 #include "model/model_stage_env.h"
@@ -51,6 +52,9 @@ struct LaunchState {
   bool ray_undefined = false;
   bool repeated_any_hit = false;  // AnyHitRepeat::First: this launch ray repeated one
   uint32_t call_nesting = 0;      // callables running now (Pipeline::callableDepth)
+  // A legal replay of this launch ray (legal_replays.h): which answer each
+  // ambiguous trace takes; null on the model's own run.
+  ReplayScript* replay = nullptr;
 
   // Starts launch ray i (its record, its flags cleared).
   void startRay(uint32_t i);

@@ -178,6 +178,8 @@ ModelShared sharedState(const Case& c, const Plan& plan, const ModelOptions& opt
   shared.direct = !scene.filters && !hasOwnTriangles(scene) && shared.fault_seam.distanceOrder() &&
                   !no_null_candidates;
   shared.any_hit_repeat = opt.any_hit_repeat;
+  shared.replays = opt.tier == ModelTier::Exact && opt.any_hit_repeat == AnyHitRepeat::None &&
+                   !shared.fault_seam.answersOtherwise();
   shared.need_facing = programs.reads(kBiHitKind);
   // Read by the candidate path only (ModelTracer::checkCandidates): a direct
   // run sees no candidates, so it is not worked out there.

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <optional>
 #include <set>
+#include <type_traits>
 
 #include "model/model_tracer.h"
 #include "model/sphere_error.h"
@@ -60,7 +61,11 @@ class TraceClassifier {
   const Payload& payload_in_;
   const ModelScene& scene_;
   RayAmbiguity amb_;
-  std::vector<WhatIf> hows_;               // how each of amb_.candidates is reached
+  std::vector<WhatIf> hows_;  // how each of amb_.candidates is reached
+  // Every legal answer with a distinct effect (Committed::effect), the
+  // actual run's first: each a legal replay's choice here (legal_replays.cpp).
+  std::vector<WhatIf> replay_hows_;
+  std::vector<uint64_t> replay_effects_;
   std::vector<WhatIf> leak_hows_;          // how each of amb_.leak_answers is reached
   std::optional<AmbiguityReason> reason_;  // the first reason found
   double reason_t_ = 0;                    // the t of the candidate that gave it
@@ -103,6 +108,12 @@ bool listed(const std::vector<Candidate>& list, const Candidate& k) {
 }  // namespace
 
 void TraceClassifier::addCommitted(const Committed& b, const WhatIf& how) {
+  // The actual run's effect is the launch state's now, before any what-if.
+  const uint64_t effect = how.actual ? m_.effectOf(tr_.best, *tr_.payload, tr_.query) : b.effect;
+  if (std::find(replay_effects_.begin(), replay_effects_.end(), effect) == replay_effects_.end()) {
+    replay_effects_.push_back(effect);
+    replay_hows_.push_back(how);
+  }
   const Candidate k = answerOf(b);
   for (Candidate& l : amb_.candidates)
     if (sameAnswer(l, k)) {
@@ -248,7 +259,7 @@ void TraceClassifier::tryOrders(const std::vector<std::pair<size_t, double>>& re
     differs = differs || d;
     return d;
   };
-  const size_t saved = amb_.candidates.size();
+  const size_t saved = amb_.candidates.size(), saved_replays = replay_hows_.size();
   add_one(tr_.best, actual());
   for (long k : prefers) {
     const WhatIf how{false, {}, k, -1, {}};
@@ -269,6 +280,8 @@ void TraceClassifier::tryOrders(const std::vector<std::pair<size_t, double>>& re
   if (!ambiguous_now && !before) {
     amb_.candidates.resize(saved);
     hows_.resize(saved);
+    replay_hows_.resize(saved_replays);
+    replay_effects_.resize(saved_replays);
   }
 }
 
@@ -306,6 +319,13 @@ std::optional<WhatIf> TraceClassifier::finish() {
       leak_hows_.erase(leak_hows_.begin() + static_cast<long>(k));
     }
   std::optional<WhatIf> chosen;
+  if (ReplayScript* script = m_.st_.replay) {
+    // A legal replay (legal_replays.cpp): this trace takes the answer its
+    // script chooses; the model's own ambiguity of the ray is kept already.
+    chosen = replay_hows_[script->choose(replay_hows_.size())];
+    m_.st_.ray_ambiguous = true;
+    return chosen;
+  }
   if (const auto taken = m_.sh_.fault_seam.answerTaken(hows_.size(), leak_hows_.size()))
     chosen = taken->leak ? leak_hows_[taken->index] : hows_[taken->index];
   m_.st_.ambiguous.push_back(std::move(amb_));
@@ -381,10 +401,74 @@ Committed ModelTracer::sandbox(const Traversal& actual, const std::vector<ModelC
     restoreQueryFrame(*actual.query, actual.query->frame_before);
   }
   Payload p = payload_in;
-  const Committed best = decideAs(actual, cands, how, p);
+  Committed best = decideAs(actual, cands, how, p);
+  best.effect = effectOf(best, p, actual.query);
   st_.restore(saved);
   if (frame) restoreQueryFrame(*actual.query, *frame);
   return best;
+}
+
+namespace {
+
+// FNV-1a, 64 bits, over the bytes of values without padding.
+struct Digest {
+  uint64_t h = 14695981039346656037ull;
+  template <typename T>
+  void add(const T& v) {
+    static_assert(std::has_unique_object_representations_v<T> || std::is_floating_point_v<T>);
+    const auto* p = reinterpret_cast<const unsigned char*>(&v);
+    for (size_t i = 0; i < sizeof(T); ++i) h = (h ^ p[i]) * 1099511628211ull;
+  }
+  template <typename T, size_t N>
+  void add(const std::array<T, N>& a) {
+    for (const T& v : a) add(v);
+  }
+  void add(const Payload& p) {
+    add(p.color);
+    add(p.value);
+    add(p.depth);
+    add(p.location);
+    add(p.words);
+  }
+  void add(const Val& v) {
+    add(v.f);
+    add(v.u);
+    add(static_cast<uint8_t>(v.b));
+  }
+};
+
+}  // namespace
+
+uint64_t ModelTracer::effectOf(const Committed& b, const Payload& payload,
+                               const QueryRun* query) const {
+  Digest d;
+  d.add(static_cast<uint8_t>(b.valid));
+  if (b.valid) {
+    d.add(b.t);
+    d.add(b.instance);
+    d.add(b.geometry);
+    d.add(b.primitive);
+    d.add(b.kind);
+    d.add(b.b1);
+    d.add(b.b2);
+    d.add(b.words);
+  }
+  d.add(payload);
+  if (st_.rec)
+    for (uint32_t i = 0, n = recordWords(); i < n; ++i) d.add(st_.rec[i]);
+  for (uint64_t c : st_.counters) d.add(c);
+  if (query && query->env) {
+    for (const Val& v : query->env->locals) d.add(v);
+    d.add(query->env->child);
+    const CallData& k = query->env->callee;
+    d.add(k.color);
+    d.add(k.position);
+    d.add(k.normal);
+    d.add(k.value);
+    d.add(k.location);
+    d.add(k.words);
+  }
+  return d.h;
 }
 
 // What-if runs of the decision for an ambiguous trace: the unsure candidates

@@ -24,18 +24,26 @@ void Machine::runRays(uint32_t begin, uint32_t end) {
   const Rays& rays = sh_.c->rays;
   for (uint32_t i = begin; i < end; ++i) {
     if (!rays.same && i + 8 < end) __builtin_prefetch(&rays.rays[i + 8]);  // rays stream in
-    state_.startRay(i);
-    state_.bumpRuns(kRunsRaygen);
-    if (sh_.raygen_traces_launch_ray) {
-      // Raygen is one `trace: {}` of this launch's ray: no stage environment needed.
-      tracer_.trace(launchRay(rays.launchRay(i)), 1, &sh_.programs->raygen[0]);
-    } else {
-      interp_.runRaygen();
-    }
+    if (sh_.replays) counters_before_ = state_.counters;
+    const size_t ambiguous_before = state_.ambiguous.size();
+    runRay(i);
+    if (sh_.replays && state_.ambiguous.size() > ambiguous_before && !state_.ray_undefined)
+      replayLegalAnswers(i, ambiguous_before);
     if (++state_.x == width) {
       state_.x = 0;
       ++state_.y;
     }
+  }
+}
+
+void Machine::runRay(uint32_t i) {
+  state_.startRay(i);
+  state_.bumpRuns(kRunsRaygen);
+  if (sh_.raygen_traces_launch_ray) {
+    // Raygen is one `trace: {}` of this launch's ray: no stage environment needed.
+    tracer_.trace(launchRay(sh_.c->rays.launchRay(i)), 1, &sh_.programs->raygen[0]);
+  } else {
+    interp_.runRaygen();
   }
 }
 

@@ -10,7 +10,9 @@
 // traces), all into this Machine, so a Machine is neither copied nor moved.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "model/hit_protocol.h"
 #include "model/launch_state.h"
@@ -37,6 +39,14 @@ class alignas(64) Machine {
   const LaunchState& state() const { return state_; }
 
  private:
+  // Raygen for launch ray i.
+  void runRay(uint32_t i);
+  // Exact tier: each legal answer of ambiguous launch ray i replayed through
+  // the ray, into its RayAmbiguity (legal_replays.cpp); the ray's own record,
+  // counters and error stay the model's own.
+  void replayLegalAnswers(uint32_t i, size_t ambiguity);
+  LegalReplay replayOutcome(const LaunchState::Saved& own) const;
+
   const ModelShared& sh_;
   ModelSbt sbt_;
   LaunchState state_;
@@ -44,6 +54,7 @@ class alignas(64) Machine {
   StageInterpreter interp_;
   HitProtocol hits_;
   ModelTracer tracer_;
+  std::vector<uint64_t> counters_before_;  // the counters before the launch ray now
 };
 
 }  // namespace rayspec

@@ -24,6 +24,9 @@ struct ModelShared {
   bool payload_types = false;             // pipeline.payloads declares several locations
   ModelFaultSeam fault_seam;  // test only: the planted faults, read through this seam alone
   AnyHitRepeat any_hit_repeat = AnyHitRepeat::None;  // R-AHIT-DUP (model_engine.h)
+  // Exact tier, the model's own answers: each ambiguous launch ray's legal
+  // answers replayed (legal_replays.h).
+  bool replays = false;
   // Some candidate may be undefined (a hit record beyond the region, a NaN
   // triangle): ModelTracer::checkCandidates looks at every candidate.
   bool check_candidates = true;

@@ -80,6 +80,9 @@ class ModelTracer {
                      const WhatIf& how, Payload& payload);
   Committed sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands,
                     const WhatIf& how, const Payload& payload_in);
+  // The digest of what a decision left behind (Committed::effect): `best`,
+  // the payload, the launch state's record and counters, a query's frame.
+  uint64_t effectOf(const Committed& best, const Payload& payload, const QueryRun* query) const;
   // Exact tier: marks the current ray ambiguous when this trace's answer could
   // differ on a device, with the legal answers (model_exact_tier.cpp).
   // Returns how to decide the trace as a legal device that takes another of

@@ -247,7 +247,9 @@ Committed ModelTracer::traverse(const TraceRay& r, uint32_t flags, uint32_t dept
   const Payload payload_in = payload;  // for the exact tier's what-if variants
   // A legal device's other answer (ModelFaultSeam) replays the trace from here.
   std::optional<LaunchState::Saved> before;
-  if (tr.exact && sh_.fault_seam.answersOtherwise() && !st_.ray_ambiguous) before = st_.save();
+  // So does a legal replay (legal_replays.h), at every ambiguous trace.
+  if (tr.exact && ((sh_.fault_seam.answersOtherwise() && !st_.ray_ambiguous) || st_.replay))
+    before = st_.save();
   if (query && tr.exact) query->frame_before = saveQueryFrame(*query);
 
   RTCRayHit rh = embreeRay(r, tr.flags);
@@ -291,7 +293,7 @@ Committed ModelTracer::traverse(const TraceRay& r, uint32_t flags, uint32_t dept
     if (!query) checkCandidates(tr, *cands);  // a query reads no hit record
   }
 
-  if (cands && tr.exact && !st_.ray_ambiguous) {
+  if (cands && tr.exact && (!st_.ray_ambiguous || st_.replay)) {
     const std::optional<WhatIf> chosen =
         classifyTrace(tr, *cands, reports, shader_unsure, payload_in);
     if (chosen && before && !chosen->actual) {

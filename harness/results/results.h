@@ -117,6 +117,18 @@ struct Candidate {
   // results.json written before candidates carried it).
   double t = std::numeric_limits<double>::quiet_NaN();
 };
+// One legal answer of an ambiguous ray replayed through the whole launch
+// ray (model/legal_replays.cpp): every choice its ambiguous traces may make,
+// raygen, closest-hit, miss and callables run as that choice makes them run.
+// `record`: the launch ray's record so (empty where the case keeps none);
+// `counter_moves`: how far it moves each counter from the model's own run
+// (only the counters it moves).
+struct LegalReplay {
+  std::vector<uint32_t> record;
+  std::map<std::string, int64_t> counter_moves;
+  bool operator==(const LegalReplay&) const = default;
+};
+
 struct RayAmbiguity {
   uint32_t ray = 0;  // launch index y * width + x
   AmbiguityReason reason = AmbiguityReason::Edge;
@@ -129,6 +141,11 @@ struct RayAmbiguity {
   // shared edge or vertex (R-WATERTIGHT, a "should"): none of them is in
   // `candidates`; a device taking one gets a QualityWarning, not a Fail.
   std::vector<Candidate> leak_answers;
+  // Each distinct outcome of the ray's legal answers, the model's own among
+  // them; empty where there are more than the model replays
+  // (kMaxLegalReplays) or a bundle saved without them: then only what every
+  // answer shares is judged.
+  std::vector<LegalReplay> replays;
 };
 
 // A ray whose hit t a device may compute further from the model's than the

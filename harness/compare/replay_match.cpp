@@ -1,0 +1,29 @@
+// An ambiguous ray's record held to its legal answers as a whole: the
+// model's replays of each (model/legal_replays.h, RayAmbiguity::replays).
+#include "compare/compare_parts.h"
+
+namespace rayspec {
+
+const RecordField* fieldNoReplayLeaves(const RayAmbiguity& a, const uint32_t* d,
+                                       const std::vector<const RecordField*>& fields,
+                                       const RayBounds& bounds) {
+  const RecordField* nearest = nullptr;
+  size_t fewest = fields.size() + 1;
+  for (const LegalReplay& r : a.replays) {
+    const RecordField* first = nullptr;
+    size_t differ = 0;
+    for (const RecordField* f : fields)
+      if (!sameField(*f, d, r.record.data(), bounds)) {
+        if (!first) first = f;
+        ++differ;
+      }
+    if (differ == 0) return nullptr;
+    if (differ < fewest) {
+      fewest = differ;
+      nearest = first;
+    }
+  }
+  return nearest;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,58 @@
+// Each legal answer of an ambiguous launch ray replayed through the ray
+// (legal_replays.h): Machine::replayLegalAnswers.
+#include <algorithm>
+
+#include "model/model_machine.h"
+#include "results/record_layout.h"
+
+namespace rayspec {
+
+LegalReplay Machine::replayOutcome(const LaunchState::Saved& own) const {
+  LegalReplay r;
+  if (state_.rec) r.record.assign(state_.rec, state_.rec + recordWords());
+  for (size_t k = 0; k < state_.counters.size(); ++k)
+    if (state_.counters[k] != own.counters[k])
+      r.counter_moves[sh_.plan->counters[k]] =
+          static_cast<int64_t>(state_.counters[k]) - static_cast<int64_t>(own.counters[k]);
+  return r;
+}
+
+void Machine::replayLegalAnswers(uint32_t i, size_t ambiguity) {
+  const LaunchState::Saved own = state_.save();
+  const size_t undefined_before = state_.undefined.size();
+  ReplayScript script;
+  state_.replay = &script;
+  std::vector<LegalReplay> replays;
+  bool complete = true;
+  size_t runs = 0;
+  do {
+    if (++runs > kMaxReplayRuns) {
+      complete = false;
+      break;
+    }
+    state_.counters = counters_before_;
+    if (state_.rec) std::fill(state_.rec, state_.rec + recordWords(), 0u);
+    runRay(i);
+    // A legal answer whose path is undefined makes the ray undefined (R-UB).
+    if (state_.undefined.size() > undefined_before) {
+      complete = false;
+      break;
+    }
+    LegalReplay r = replayOutcome(own);
+    if (std::find(replays.begin(), replays.end(), r) == replays.end())
+      replays.push_back(std::move(r));
+    if (replays.size() > kMaxLegalReplays) {
+      complete = false;
+      break;
+    }
+  } while (script.advance());
+  state_.replay = nullptr;
+  const bool undefined = state_.undefined.size() > undefined_before;
+  state_.undefined.resize(undefined ? undefined_before + 1 : undefined_before);
+  state_.restore(own);
+  state_.ray_ambiguous = true;
+  state_.ray_undefined = undefined;
+  if (complete) state_.ambiguous[ambiguity].replays = std::move(replays);
+}
+
+}  // namespace rayspec

@@ -1,0 +1,181 @@
+// An ambiguous ray held to its legal answers as a whole (issue 55 item 3,
+// issue 62 classes 1 and 4): the model replays each legal answer through the
+// launch ray (model/legal_replays.h), and the judge takes a record that is
+// one of them, whatever fields it holds, and fails one that is none, even
+// where every field is one no legal answer writes alike.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+
+#include "compare/compare_results.h"
+#include "fault/planted_fault.h"
+#include "model_support.h"
+
+namespace rayspec {
+namespace {
+
+using namespace model_test;
+
+// Two instances of one triangle at one place (custom index 5 and 6): ray 0
+// meets both at t = 10 exactly, a tie (R-TIE); ray 1 misses. Closest-hit
+// records the custom index and counts it by its value.
+const char* kTieCase = R"(rules: [R-TIE]
+scene:
+  blas:
+    tri:
+      - triangles: {vertices: [[-5, -5, 0], [5, -5, 0], [0, 5, 0]]}
+  instances:
+    - {blas: tri, custom_index: 5}
+    - {blas: tri, custom_index: 6}
+rays:
+  list:
+    - {origin: [0.1, 0.2, 10], direction: [0, 0, -1]}
+    - {origin: [50, 0.2, 10], direction: [0, 0, -1]}
+pipeline:
+  miss:
+    - - record: {value: 1}
+  hit_groups:
+    - closest_hit:
+        - record: {value: instance_custom_index}
+        - if: {eq: [instance_custom_index, 5]}
+          then: [{count: five}]
+          else: [{count: six}]
+outputs:
+  per_ray: [value]
+  counters: [five, six]
+)";
+
+struct TieRun {
+  Case c;
+  Plan plan;
+  Results model;
+};
+
+TieRun tieRun() {
+  TieRun j;
+  j.c = parseInline(kTieCase, "model/replay-tie");
+  j.plan = derivePlan(j.c);
+  j.model = runOnModel(j.c, j.plan, ModelOptions{});
+  return j;
+}
+
+uint32_t* recordOf(Results& r, uint32_t ray) {
+  return &r.records[static_cast<size_t>(ray) * recordWords()];
+}
+
+bool failsSaying(const Verdict& v, const std::string& text) {
+  return v.status == Status::Fail &&
+         std::any_of(v.findings.begin(), v.findings.end(), [&](const Finding& f) {
+           return f.status == Status::Fail && f.message.find(text) != std::string::npos;
+         });
+}
+
+TEST(LegalReplays, EachAnswerOfATieIsReplayedThroughClosestHit) {
+  TieRun j = tieRun();
+  ASSERT_EQ(j.model.statusText(), "ok");
+  ASSERT_EQ(j.model.ambiguous.size(), 1u);
+  const RayAmbiguity& a = j.model.ambiguous[0];
+  EXPECT_EQ(a.reason, AmbiguityReason::TTie);
+  ASSERT_EQ(a.replays.size(), 2u);
+  std::vector<uint32_t> values;
+  for (const LegalReplay& r : a.replays)
+    values.push_back(r.record[findRecordField("value")->offset]);
+  std::sort(values.begin(), values.end());
+  EXPECT_EQ(values, (std::vector<uint32_t>{5, 6}));
+  // The other answer moves one count from one counter to the other.
+  const LegalReplay& other = a.replays[1];
+  EXPECT_EQ(other.counter_moves.size(), 2u);
+  // The model's own record and counters are its own answer's.
+  EXPECT_EQ(word(j.model, 0, "value"), a.replays[0].record[findRecordField("value")->offset]);
+  EXPECT_EQ(j.model.counters["five"] + j.model.counters["six"], 1u);
+}
+
+TEST(LegalReplays, EitherAnswerPassesAndNeitherFails) {
+  TieRun j = tieRun();
+  const Results own = perfectDevice(j.c, j.model);
+  const Verdict v0 = compareResults(j.c, j.plan, own, j.model);
+  EXPECT_EQ(v0.status, Status::Pass) << v0.headline();
+
+  // The other legal answer, record and counters together: Pass.
+  Results other = own;
+  const LegalReplay& r = j.model.ambiguous[0].replays[1];
+  std::copy(r.record.begin(), r.record.end(), recordOf(other, 0));
+  for (const auto& [name, move] : r.counter_moves)
+    other.counters[name] = static_cast<uint64_t>(static_cast<int64_t>(other.counters[name]) + move);
+  EXPECT_EQ(compareResults(j.c, j.plan, other, j.model).status, Status::Pass);
+
+  // A custom index neither instance has (no identity field tells the
+  // answers apart, so only the replays can judge it): Fail.
+  Results wrong = own;
+  recordOf(wrong, 0)[findRecordField("value")->offset] = 0;
+  EXPECT_TRUE(failsSaying(compareResults(j.c, j.plan, wrong, j.model),
+                          "is what none of the legal answers of a numerically ambiguous ray"));
+}
+
+TEST(LegalReplays, CountersMoveOnlyAsTheReplaysMoveThem) {
+  TieRun j = tieRun();
+  const Results own = perfectDevice(j.c, j.model);
+  // Neither counted (the old slack of one per ambiguous ray let this pass).
+  Results none = own;
+  none.counters["five"] = none.counters["six"] = 0;
+  const Verdict v = compareResults(j.c, j.plan, none, j.model);
+  EXPECT_EQ(v.status, Status::Fail);
+  // Both counted: the one ray has one answer, never two.
+  Results both = own;
+  both.counters["five"] = both.counters["six"] = 1;
+  EXPECT_EQ(compareResults(j.c, j.plan, both, j.model).status, Status::Fail);
+}
+
+// Issue 62 class 1: the launch's closest-hit records the primitive and a
+// nested trace's closest-hit the instance of another hit. A record mixing
+// two hits is whole when it is one of the replays; the model's own run
+// judged as a device passes, and so does each legal answer.
+TEST(LegalReplays, IdentityFieldsOfTwoTracesAreJudgedAsOneRecord) {
+  TieRun j = tieRun();
+  Case c = parseInline(R"(rules: [R-TIE]
+scene:
+  blas:
+    tri:
+      - triangles: {vertices: [[-5, -5, 0], [5, -5, 0], [0, 5, 0]]}
+    two:
+      - triangles: {vertices: [[-5, -5, -4], [5, -5, -4], [0, 5, -4], [-5, -5, -4], [5, -5, -4], [0, 5, -4]]}
+  instances:
+    - {blas: tri}
+    - {blas: two}
+    - {blas: two}
+rays:
+  list:
+    - {origin: [0.1, 0.2, 10], direction: [0, 0, -1]}
+pipeline:
+  max_recursion: 2
+  miss:
+    - - record: {value: 1}
+  hit_groups:
+    - closest_hit:
+        - if: {eq: [depth, 1]}
+          then:
+            - record: {primitive_id: primitive_id}
+            - trace: {origin: [0.1, 0.2, -1], direction: [0, 0, -1]}
+          else:
+            - record: {instance_id: instance_id}
+outputs:
+  per_ray: [primitive_id, instance_id, value]
+)",
+                       "model/replay-mixed");
+  const Plan plan = derivePlan(c);
+  const Results model = runOnModel(c, plan, ModelOptions{});
+  ASSERT_EQ(model.statusText(), "ok");
+  ASSERT_EQ(model.ambiguous.size(), 1u);
+  ASSERT_GE(model.ambiguous[0].replays.size(), 2u);
+  EXPECT_EQ(compareResults(c, plan, perfectDevice(c, model), model).status, Status::Pass);
+  for (const LegalReplay& r : model.ambiguous[0].replays) {
+    Results d = perfectDevice(c, model);
+    std::copy(r.record.begin(), r.record.end(), recordOf(d, 0));
+    EXPECT_EQ(compareResults(c, plan, d, model).status, Status::Pass);
+  }
+  (void)j;
+}
+
+}  // namespace
+}  // namespace rayspec
