@@ -362,6 +362,22 @@ std::vector<FaultImpl> rayQueryMutations() {
       {"query-custom-index-is-instance-id", K::CaseMutation,
        "a ray query's instance custom index getters read the instance id", nullptr,
        queryCustomIndexIsInstanceId},
+      {"query-commit-beyond-committed-t", K::CaseMutation,
+       "a ray query's commits leave its interval at tmax: a triangle beyond the committed t is "
+       "still offered and confirming it, like a generate beyond the committed t, replaces the "
+       "closer commit",
+       nullptr, queryCommitKeepsInterval},
+      {"query-confirm-only-first", K::CaseMutation,
+       "rayQueryConfirmIntersectionEXT commits nothing once something is committed: the second "
+       "of two confirmed candidates (offered far to near) is dropped",
+       nullptr, queryConfirmOnlyFirst},
+      {"query-candidate-type-swapped", K::CaseMutation,
+       "a ray query's candidate type reads AABB for a triangle and triangle for an AABB (each "
+       "runs the other block)",
+       nullptr, queryCandidateTypeSwapped},
+      {"query-front-face-inverted", K::CaseMutation,
+       "a ray query's front face getters read a triangle's other face (culling unchanged)", nullptr,
+       queryFrontFaceInverted},
   };
 }
 

@@ -2,6 +2,8 @@
 // ray_query statements keep the last query's commit, offer opaque triangles,
 // ignore confirm or terminate, or read committed values from the candidate
 // (the model's test-only hooks, model/model_faults.h).
+#include <initializer_list>
+
 #include "fault/fault_impl.h"
 #include "program/walk_program.h"
 
@@ -13,6 +15,18 @@ size_t countStatements(const Case& c, Stmt::Kind kind) {
   size_t n = 0;
   forEachProgram(c.pipeline, [&](const Program& p, Stage) {
     walkStatements(p, [&](const Stmt& s) { n += s.kind == kind; });
+  });
+  return n;
+}
+
+// How many getters named in `names` the case's programs read.
+size_t countGetters(const Case& c, std::initializer_list<const char*> names) {
+  size_t n = 0;
+  forEachProgram(c.pipeline, [&](const Program& p, Stage) {
+    walkExpressions(p, [&](const Expr& e) {
+      if (e.kind != Expr::Kind::Builtin) return;
+      for (const char* name : names) n += e.name == name;
+    });
   });
   return n;
 }
@@ -71,16 +85,52 @@ std::string queryCommittedReadsCandidate(Case& c, ModelOptions& o) {
 }
 
 std::string queryCustomIndexIsInstanceId(Case& c, ModelOptions& o) {
-  size_t reads = 0;
-  forEachProgram(c.pipeline, [&](const Program& p, Stage) {
-    walkExpressions(p, [&](const Expr& e) {
-      reads += e.kind == Expr::Kind::Builtin && (e.name == "committed.instance_custom_index" ||
-                                                 e.name == "candidate.instance_custom_index");
-    });
-  });
+  const size_t reads =
+      countGetters(c, {"committed.instance_custom_index", "candidate.instance_custom_index"});
   if (!reads) return "";
   o.faults.rq_custom_index_is_instance_id = true;
   return describeCount(reads, "ray query custom index reads that give the instance id");
+}
+
+// R-RQ-COMMIT: the closest commit stays, because a commit shrinks the
+// interval later candidates are tested in (R-RQ-CANDIDATES: as a trace's).
+std::string queryCommitKeepsInterval(Case& c, ModelOptions& o) {
+  const size_t n =
+      countStatements(c, Stmt::Kind::Confirm) + countStatements(c, Stmt::Kind::Generate);
+  if (!n) return "";
+  o.faults.rq_commit_keeps_interval = true;
+  return describeCount(n,
+                       "commits that leave the query's interval at its tmax (triangles beyond "
+                       "the committed t still offered, a generate beyond it accepted)");
+}
+
+// Candidates far to near (a legal order), so that the second confirm a
+// block makes is of a nearer candidate, which R-RQ-COMMIT commits.
+std::string queryConfirmOnlyFirst(Case& c, ModelOptions& o) {
+  const size_t n = countStatements(c, Stmt::Kind::Confirm);
+  if (!n) return "";
+  o.faults.rq_confirm_only_first = true;
+  o.faults.order = CandidateOrder::ReverseDistance;
+  return describeCount(n,
+                       "confirms that commit nothing once something is committed "
+                       "(candidates far to near)");
+}
+
+// The blocks are chosen by rayQueryGetIntersectionTypeEXT (glsl/emit_query.cpp).
+std::string queryCandidateTypeSwapped(Case& c, ModelOptions& o) {
+  const size_t n = countStatements(c, Stmt::Kind::RayQuery);
+  if (!n) return "";
+  o.faults.rq_candidate_type_swapped = true;
+  return describeCount(n,
+                       "ray queries whose candidates read the other type (and run the other "
+                       "block)");
+}
+
+std::string queryFrontFaceInverted(Case& c, ModelOptions& o) {
+  const size_t reads = countGetters(c, {"committed.front_face", "candidate.front_face"});
+  if (!reads) return "";
+  o.faults.rq_front_face_inverted = true;
+  return describeCount(reads, "ray query front face reads that give a triangle's other face");
 }
 
 }  // namespace rayspec

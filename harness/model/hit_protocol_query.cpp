@@ -30,7 +30,9 @@ void HitProtocol::runQueryCandidate(Traversal& tr, const ModelCandidate& cand, s
   tr.cur = &cand;
   tr.cur_index = k;
   if (cand.aabb && tr.reports) tr.reports->push_back({k, NAN});  // it ran (R-TIE's check)
-  const CProgram& block = q.stmt->then_[cand.aabb ? 1 : 0].then_;
+  // The planted fault rq_candidate_type_swapped runs the other kind's block.
+  const bool aabb_block = cand.aabb != sh_.fault_seam.queryCandidateTypeSwapped();
+  const CProgram& block = q.stmt->then_[aabb_block ? 1 : 0].then_;
   interp_.exec(block, *q.env);
   tr.cur = nullptr;
   q.tr = outer_tr;
@@ -49,7 +51,7 @@ void HitProtocol::commitQueryTriangle(Traversal& tr, const ModelCandidate& cand,
   // Exact tier, R-PREC: how far a device's t may lie (its frame's rounding).
   tr.best = {true, cand.t,  cand.instance, cand.geometry, cand.primitive,
              kind, cand.b1, cand.b2,       cand.t_err};
-  tr.tmax_cur = cand.t;
+  if (!sh_.fault_seam.queryCommitKeepsInterval()) tr.tmax_cur = cand.t;
   endOnFirstHit(tr);
 }
 
@@ -57,6 +59,7 @@ void HitProtocol::confirm(StageEnv& env) {
   QueryRun* q = env.query;
   if (!q || !q->tr || !q->cand || q->cand->aabb) return;
   if (sh_.fault_seam.queryConfirmIgnored()) return;
+  if (sh_.fault_seam.queryConfirmOnlyFirst() && q->tr->best.valid) return;
   commitQueryTriangle(*q->tr, *q->cand, q->cand_view.hit_kind);
 }
 
@@ -82,7 +85,7 @@ void HitProtocol::generate(const CStmt& s, StageEnv& env) {
   if (tr.reports) tr.reports->push_back({tr.cur_index, t});
   const HitView& hv = q->cand_view;
   tr.best = {true, static_cast<double>(t), hv.instance, hv.geometry, hv.primitive, 0, 0, 0};
-  tr.tmax_cur = t;
+  if (!sh_.fault_seam.queryCommitKeepsInterval()) tr.tmax_cur = t;
   endOnFirstHit(tr);
 }
 

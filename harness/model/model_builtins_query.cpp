@@ -33,8 +33,10 @@ Val ModelBuiltins::queryHit(int row, const HitView& hv) const {
       v.f = {hv.b1, hv.b2, 0, 0};
       return v;
     }
-    case 7:
-      return fromUint(hv.hit_kind == 0xFEu ? 1u : 0u);
+    case 7: {  // the planted fault rq_front_face_inverted reads a triangle's other face
+      const bool inverted = hv.vertices && sh_.fault_seam.queryFrontFaceInverted();
+      return fromUint((hv.hit_kind == 0xFEu) != inverted ? 1u : 0u);
+    }
     case 8:
       return fromVec3(hv.object_origin);
     case 9:
@@ -74,8 +76,9 @@ Val ModelBuiltins::queryBuiltin(const CExpr& e, const StageEnv& env) const {
       return fromVec3(q->ray.origin);
     case kBiQWorldDirection:
       return fromVec3(q->ray.direction);
-    case kBiQCandType:
-      return fromUint(q->cand && q->cand->aabb ? 1u : 0u);
+    case kBiQCandType:  // rq_candidate_type_swapped reads the other kind
+      return fromUint(
+          q->cand && (q->cand->aabb != sh_.fault_seam.queryCandidateTypeSwapped()) ? 1u : 0u);
     case kBiQCandAabbOpaque:
       return fromUint(q->cand_opaque ? 1u : 0u);
     case kBiQCommittedType: {

@@ -55,7 +55,11 @@ class ModelFaultSeam {
   bool queryCommittedReadsCandidate() const { return f_.rq_committed_reads_candidate; }
   bool queryCustomIndexIsInstanceId() const {  // R-RQ-VALUES
     return f_.rq_custom_index_is_instance_id;
-  }  // R-RQ-VALUES
+  }
+  bool queryCommitKeepsInterval() const { return f_.rq_commit_keeps_interval; }    // R-RQ-COMMIT
+  bool queryConfirmOnlyFirst() const { return f_.rq_confirm_only_first; }          // R-RQ-COMMIT
+  bool queryCandidateTypeSwapped() const { return f_.rq_candidate_type_swapped; }  // R-RQ-VALUES
+  bool queryFrontFaceInverted() const { return f_.rq_front_face_inverted; }        // R-RQ-VALUES
   // A legal device (rayspec mutate) or one passing between shared edges:
   // an ambiguous trace is replayed as another of its answers.
   bool answersOtherwise() const { return f_.legal_answer != 0 || f_.pass_between_edges; }

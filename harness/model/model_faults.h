@@ -57,7 +57,19 @@ struct ModelFaults {
   //   rq_committed_reads_candidate: the committed getters read the current
   //     candidate while there is one (R-RQ-VALUES);
   //   rq_custom_index_is_instance_id: the instance custom index getters read
-  //     the instance id (R-RQ-VALUES).
+  //     the instance id (R-RQ-VALUES);
+  //   rq_commit_keeps_interval: a commit does not shrink the query's interval:
+  //     triangles beyond the committed t are still offered, and a confirm of
+  //     one (or a generate beyond the committed t) replaces the closer
+  //     commit (R-RQ-COMMIT: the closest commit stays);
+  //   rq_confirm_only_first: rayQueryConfirmIntersectionEXT commits nothing
+  //     once something is committed: the second of two confirmed candidates
+  //     is dropped (R-RQ-COMMIT);
+  //   rq_candidate_type_swapped: the candidate type reads AABB for a triangle
+  //     and triangle for an AABB, so each candidate runs the other block
+  //     (R-RQ-VALUES);
+  //   rq_front_face_inverted: the front face getters of a triangle
+  //     intersection read the other face; culling is not changed (R-RQ-VALUES).
   bool rq_init_keeps_committed = false;
   bool rq_opaque_offered = false;
   bool rq_confirm_ignored = false;
@@ -65,6 +77,10 @@ struct ModelFaults {
   bool rq_terminate_ignored = false;
   bool rq_committed_reads_candidate = false;
   bool rq_custom_index_is_instance_id = false;
+  bool rq_commit_keeps_interval = false;
+  bool rq_confirm_only_first = false;
+  bool rq_candidate_type_swapped = false;
+  bool rq_front_face_inverted = false;
   // R-WATERTIGHT not met (a "should"): every trace through a shared edge or
   // vertex passes between its triangles, where that changes the answer.
   bool pass_between_edges = false;

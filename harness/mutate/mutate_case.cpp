@@ -5,6 +5,7 @@
 #include "compare/compare_results.h"
 
 #include "mutate/legal_survival.h"
+#include "mutate/planted_mutants.h"
 
 namespace rayspec {
 namespace {
@@ -48,6 +49,7 @@ CaseMutation mutateCase(const Case& c, const Plan& plan, const Results& device,
   const MutantInput in{c, plan, model};
   for (const GenericMutant& g : genericMutants(c, device))
     out.mutants.push_back(judgeMutant(in, g, device));
+  for (MutantOutcome& o : judgePlantedFaults(c, plan, model)) out.mutants.push_back(std::move(o));
   out.mutant_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - legal_done).count();
   return out;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "program/builtins.h"
+#include "program/check_bit_casts.h"
 #include "program/check_expr.h"
 #include "program/constant_value.h"
 #include "program/ops.h"
@@ -514,8 +515,10 @@ std::optional<ProgramError> checkProgram(Program& p, Stage stage,
                                          const std::vector<SpecConstant>& constants,
                                          const ShaderRecordLayout* record_layout,
                                          std::vector<InterfaceUse>* interface_uses) {
-  return Checker(stage, counters, per_ray_fields, constants, record_layout, interface_uses)
-      .block(p);
+  std::optional<ProgramError> error =
+      Checker(stage, counters, per_ray_fields, constants, record_layout, interface_uses).block(p);
+  if (!error) error = checkBitCasts(p, stage);  // exactness claims: after typing
+  return error;
 }
 
 }  // namespace rayspec

@@ -1,0 +1,20 @@
+// The planted faults the kill matrix judges beside the generic mutants: the
+// ray query faults of fault/ (query-*, each a device breaking one R-RQ
+// rule), planted in the model's own answers as a device (perfectDevice) and
+// judged against the model. A survivor may survive legally only where every
+// ray it changed has undefined behaviour: an ambiguous ray is no excuse (the
+// device's record is held to its legal answers as a whole, issue 55), so a
+// fault that survives on a case whose rays are all ambiguous is a hole.
+#pragma once
+
+#include <vector>
+
+#include "mutate/mutate_case.h"
+
+namespace rayspec {
+
+// Kind "planted-query", name "planted:<fault>"; one per query fault.
+std::vector<MutantOutcome> judgePlantedFaults(const Case& c, const Plan& plan,
+                                              const Results& model);
+
+}  // namespace rayspec

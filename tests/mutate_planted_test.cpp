@@ -1,0 +1,68 @@
+// The ray query faults in the kill matrix (mutate/planted_mutants.h): each
+// planted in the model's own answers and judged; a survivor is legal only
+// where every ray it changed is undefined, never because a ray is ambiguous.
+#include <gtest/gtest.h>
+
+#include "model/model_engine.h"
+#include "mutate/kill_matrix.h"
+#include "mutate/mutate_case.h"
+#include "suite_cases.h"
+
+namespace rayspec {
+namespace {
+
+CaseMutation mutateQueryCase(const std::string& name) {
+  const std::vector<CaseFile> files = findCases(kSuiteCases, name);
+  EXPECT_EQ(files.size(), 1u) << name;
+  const ParseResult parsed = loadSuiteCase(files.at(0));
+  EXPECT_TRUE(parsed.value) << name;
+  const Case& c = *parsed.value;
+  const Plan plan = derivePlan(c);
+  const Results model = runOnModel(c, plan, {});
+  Results device = model;
+  device.backend = "vulkan";
+  return mutateCase(c, plan, device, model);
+}
+
+const MutantOutcome* findPlanted(const CaseMutation& m, const std::string& fault) {
+  for (const MutantOutcome& o : m.mutants)
+    if (o.name == "planted:" + fault) return &o;
+  return nullptr;
+}
+
+// Every order of the three triangles and the box commits the closest: the
+// faults that commit beyond it or drop the second confirm are killed.
+TEST(MutatePlanted, QueryFaultsKilledOnConfirmEveryCandidate) {
+  const CaseMutation m = mutateQueryCase("ray-query/confirm-every-candidate");
+  ASSERT_TRUE(m.judged) << m.not_judged;
+  for (const char* fault :
+       {"query-commit-beyond-committed-t", "query-confirm-only-first", "query-confirm-ignored",
+        "query-candidate-type-swapped", "query-custom-index-is-instance-id"}) {
+    const MutantOutcome* o = findPlanted(m, fault);
+    ASSERT_NE(o, nullptr) << fault;
+    EXPECT_EQ(o->kind, "planted-query");
+    ASSERT_TRUE(o->mutation.applied) << fault << ": " << o->mutation.what;
+    EXPECT_TRUE(o->killed) << fault << " survives: " << o->headline;
+  }
+  // Nothing reads the front face: the fault does not apply.
+  const MutantOutcome* face = findPlanted(m, "query-front-face-inverted");
+  ASSERT_NE(face, nullptr);
+  EXPECT_FALSE(face->mutation.applied);
+}
+
+// The case's one ray is an exact tie (ambiguous): a fault that survives
+// there is a hole, not a legal survivor, and the matrix counts it so.
+TEST(MutatePlanted, ASurvivorOnAnAmbiguousRayIsAHole) {
+  const CaseMutation m = mutateQueryCase("ray-query/tie-two-instances");
+  ASSERT_TRUE(m.judged) << m.not_judged;
+  const MutantOutcome* o = findPlanted(m, "query-custom-index-is-instance-id");
+  ASSERT_NE(o, nullptr);
+  ASSERT_TRUE(o->mutation.applied) << o->mutation.what;
+  EXPECT_TRUE(o->killed || o->legal_reason.empty())
+      << "a legal reason on an ambiguous ray: " << o->legal_reason;
+  const KillMatrix k = buildKillMatrix({m});
+  if (!o->killed) EXPECT_GE(k.unexplained(), 1u);
+}
+
+}  // namespace
+}  // namespace rayspec
