@@ -39,7 +39,8 @@ Case withGuard(const std::string& guard) {
   std::string text = kTwoBoxes;
   text.replace(text.find("GUARD"), 5, guard);
   const ParseResult p = parseCaseText(text, "reduce/portable.yaml", "reduce/portable");
-  EXPECT_TRUE(p.value.has_value() && p.errors.empty()) << (p.errors.empty() ? "" : p.errors[0].format());
+  EXPECT_TRUE(p.value.has_value() && p.errors.empty())
+      << (p.errors.empty() ? "" : p.errors[0].format());
   return p.value ? *p.value : Case{};
 }
 
@@ -55,8 +56,7 @@ TEST(ReducePortability, ADroppedSphereTestIsNotPortable) {
   // approach to its sphere's centre), before box 0's hit at 4, whenever a
   // device runs it.
   const std::string why = check.whyNotPortable(withGuard("{ge: [sphere_far, ray_tmin]}"));
-  EXPECT_NE(why.find("not portable: legal device aabb-neighbours fails"), std::string::npos)
-      << why;
+  EXPECT_NE(why.find("not portable: legal device aabb-neighbours fails"), std::string::npos) << why;
 }
 
 }  // namespace

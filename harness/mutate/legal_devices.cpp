@@ -90,9 +90,10 @@ std::vector<Variant> legalFaults(const Case& c, const Plan& plan, const Results&
 // The bound the model widens a field of one ray to (Results::t_bounds for
 // hit_t, position_bounds for hit_position), 0 when none.
 double modelBound(const Results& model, const char* field, uint32_t ray) {
-  const std::vector<TBound>* bounds = std::string_view(field) == "hit_t"          ? &model.t_bounds
-                                      : std::string_view(field) == "hit_position" ? &model.position_bounds
-                                                                                  : nullptr;
+  const std::vector<TBound>* bounds = std::string_view(field) == "hit_t" ? &model.t_bounds
+                                      : std::string_view(field) == "hit_position"
+                                          ? &model.position_bounds
+                                          : nullptr;
   if (bounds)
     for (const TBound& b : *bounds)
       if (b.ray == ray) return b.bound;
