@@ -35,6 +35,7 @@ Results numberedResults() {
   r.ambiguous.push_back({1, AmbiguityReason::Edge, {{true, 0, 0, 1}, {true, 0, 0, 2}}, {}});
   r.t_bounds.push_back({1, 0.25f});
   r.object_origin_bounds.push_back({0, 0.5f});
+  r.position_bounds.push_back({1, 0.5f});
   r.undefined.push_back({0, UndefinedReason::RayParameters, "a NaN origin"});
   r.repeat_dependent.push_back({1, 1u << recordFieldIndex("value")});
   return r;
@@ -79,6 +80,7 @@ TEST(ResultsNumbers, ACounterOrSizeThatIsNoUnsignedIntegerNamesTheField) {
       {"/ambiguous/0/candidates/1/instance", "ambiguous.candidates.instance"},
       {"/t_bounds/0/ray", "t_bounds.ray"},
       {"/object_origin_bounds/0/ray", "object_origin_bounds.ray"},
+      {"/position_bounds/0/ray", "position_bounds.ray"},
       {"/undefined/0/ray", "undefined.ray"},
       {"/repeat_dependent/0/ray", "repeat_dependent.ray"},
   };

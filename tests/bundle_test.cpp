@@ -49,6 +49,7 @@ Results sampleResults() {
                             {std::vector<uint32_t>(recordWords(), 7), {{"miss", -1}}}};
   r.t_bounds.push_back({5, 0.25f});
   r.object_origin_bounds.push_back({3, 0.0625f});
+  r.position_bounds.push_back({4, 0.125f});
   r.repeat_dependent.push_back(
       {2, (1u << recordFieldIndex("value")) | (1u << recordFieldIndex("color"))});
   r.repeat_counters = {"miss"};
@@ -86,6 +87,9 @@ TEST(ResultsIo, BundleRoundTripsEveryField) {
   ASSERT_EQ(back.object_origin_bounds.size(), 1u);
   EXPECT_EQ(back.object_origin_bounds[0].ray, 3u);
   EXPECT_EQ(back.object_origin_bounds[0].bound, 0.0625f);
+  ASSERT_EQ(back.position_bounds.size(), 1u);
+  EXPECT_EQ(back.position_bounds[0].ray, 4u);
+  EXPECT_EQ(back.position_bounds[0].bound, 0.125f);
   // records.csv: header + one row per ray, the written hit_t shown, unwritten empty.
   std::ifstream csv(dir + "/records.csv");
   std::string header, row0, row1;

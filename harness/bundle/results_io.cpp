@@ -187,6 +187,9 @@ void writeRayNotes(const Results& r, json& j) {
   j["object_origin_bounds"] = json::array();
   for (const TBound& b : r.object_origin_bounds)
     j["object_origin_bounds"].push_back({{"ray", b.ray}, {"bound", b.bound}});
+  j["position_bounds"] = json::array();
+  for (const TBound& b : r.position_bounds)
+    j["position_bounds"].push_back({{"ray", b.ray}, {"bound", b.bound}});
   j["undefined"] = json::array();
   for (const UndefinedRay& u : r.undefined)
     j["undefined"].push_back(
@@ -414,7 +417,8 @@ Result<std::vector<LegalReplay>> readReplays(FieldReader& field, const json& ja,
   return out;
 }
 
-// t_bounds or object_origin_bounds (absent in older bundles: none).
+// t_bounds, object_origin_bounds or position_bounds (absent in older
+// bundles: none).
 Result<void> readBounds(const json& j, FieldReader& field, const std::string& key,
                         std::vector<TBound>& out) {
   if (!j.contains(key)) return {};
@@ -432,6 +436,7 @@ Result<void> readBounds(const json& j, FieldReader& field, const std::string& ke
 Result<void> readRayNotes(const json& j, FieldReader& field, Results& r) {
   RAYSPEC_TRY_VOID(readBounds(j, field, "t_bounds", r.t_bounds));
   RAYSPEC_TRY_VOID(readBounds(j, field, "object_origin_bounds", r.object_origin_bounds));
+  RAYSPEC_TRY_VOID(readBounds(j, field, "position_bounds", r.position_bounds));
   if (j.contains("undefined"))
     for (const json& ju : field(j, "undefined")) {
       UndefinedRay u;

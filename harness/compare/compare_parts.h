@@ -52,10 +52,11 @@ bool hitFits(const uint32_t* rec, const Candidate& k);
 // The model's wider t bound of a ray (TBound), 0 when none.
 float tBound(const std::map<uint32_t, float>& t_bounds, uint32_t ray);
 // What the model widens one ray's tolerances to (Results::t_bounds,
-// object_origin_bounds); 0: the field's own tolerance.
+// object_origin_bounds, position_bounds); 0: the field's own tolerance.
 struct RayBounds {
   float t = 0;              // hit_t and ray_tmax
   float object_origin = 0;  // object_ray_origin
+  float position = 0;       // hit_position: t's bound carried through the direction
 };
 // One field of one ray as the model has it: written alike, and equal (floats
 // within the field's tolerance, widened to the ray's bounds).

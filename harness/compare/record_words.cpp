@@ -33,11 +33,13 @@ float tBound(const std::map<uint32_t, float>& t_bounds, uint32_t ray) {
 namespace {
 
 // Each field's tolerance by field index, and which of the model's bounds
-// widens it (hit_t, ray_tmax: t; object_ray_origin): looked up once, not per ray.
+// widens it (hit_t, ray_tmax: t; object_ray_origin; hit_position: t's bound
+// carried through the direction): looked up once, not per ray.
 struct FieldTolerance {
   Tolerance tol;
   bool widened_by_t_bound;
   bool widened_by_origin_bound;
+  bool widened_by_position_bound;
 };
 
 const std::vector<FieldTolerance>& fieldTolerances() {
@@ -46,7 +48,7 @@ const std::vector<FieldTolerance>& fieldTolerances() {
     for (const RecordField& f : recordFields()) {
       const std::string_view name = f.name;
       t.push_back({toleranceFor(f.name), name == "hit_t" || name == "ray_tmax",
-                   name == "object_ray_origin"});
+                   name == "object_ray_origin", name == "hit_position"});
     }
     return t;
   }();
@@ -68,6 +70,8 @@ bool sameField(const RecordField& f, const uint32_t* d, const uint32_t* m,
   if (ft.widened_by_t_bound) tol.abs = std::max(tol.abs, static_cast<double>(bounds.t));
   if (ft.widened_by_origin_bound)
     tol.abs = std::max(tol.abs, static_cast<double>(bounds.object_origin));
+  if (ft.widened_by_position_bound)
+    tol.abs = std::max(tol.abs, static_cast<double>(bounds.position));
   for (uint32_t k = 0; k < f.words; ++k)
     if (!tol.matches(asFloat(d[f.offset + k]), asFloat(m[f.offset + k]))) return false;
   return true;

@@ -37,6 +37,7 @@ struct LaunchState {
   std::vector<RayAmbiguity> ambiguous;
   std::vector<TBound> t_bounds;
   std::vector<TBound> object_origin_bounds;  // Results::object_origin_bounds
+  std::vector<TBound> position_bounds;       // Results::position_bounds
   // R-UB: launch rays whose behaviour is undefined, the first reason each.
   // A what-if run of the exact tier may add one too: a legal path into
   // undefined behaviour makes the ray undefined.

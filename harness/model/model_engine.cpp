@@ -265,6 +265,8 @@ void gatherMachines(const std::vector<std::unique_ptr<Machine>>& machines, const
     r.object_origin_bounds.insert(r.object_origin_bounds.end(),
                                   m->state().object_origin_bounds.begin(),
                                   m->state().object_origin_bounds.end());
+    r.position_bounds.insert(r.position_bounds.end(), m->state().position_bounds.begin(),
+                             m->state().position_bounds.end());
     r.undefined.insert(r.undefined.end(), m->state().undefined.begin(), m->state().undefined.end());
     if (!m->state().error.empty() && r.ok()) r.setStatus(SideStatus::Crash, m->state().error);
   }
@@ -274,6 +276,7 @@ void gatherMachines(const std::vector<std::unique_ptr<Machine>>& machines, const
             [](const UndefinedRay& a, const UndefinedRay& b) { return a.ray < b.ray; });
   keepWidestPerRay(r.t_bounds);
   keepWidestPerRay(r.object_origin_bounds);
+  keepWidestPerRay(r.position_bounds);
 }
 
 // The empty results of the model's run of c: names, size, counters at 0.

@@ -301,12 +301,24 @@ void TraceClassifier::tryShaderDecisions(const std::vector<ShaderDecision>& shad
 
 // R-PREC: the committed t is a root whose rounding on a device may exceed
 // the comparison's tolerance for hit_t: the answer is sure, its t is checked
-// against this wider bound.
+// against this wider bound. hit_position (origin + t x direction) carries
+// the same error, each component scaled by the direction's: its bound is t's
+// times the direction's largest component.
 void TraceClassifier::boundT() {
   if (!tr_.best.valid || tr_.best.t_err <= 0) return;
   const Tolerance tol = toleranceFor("hit_t");
   if (tr_.best.t_err > tol.abs + tol.rel * std::max(std::fabs(tr_.best.t), 1.0))
     m_.st_.t_bounds.push_back({m_.st_.index, static_cast<float>(tr_.best.t_err)});
+  const Vec3& o = tr_.ray.origin;
+  const Vec3& d = tr_.ray.direction;
+  double scale = 0, position = 1;
+  for (int k = 0; k < 3; ++k) {
+    scale = std::max(scale, std::fabs(static_cast<double>(d[k])));
+    position = std::max(position, std::fabs(o[k] + tr_.best.t * static_cast<double>(d[k])));
+  }
+  const Tolerance ptol = toleranceFor("hit_position");
+  if (tr_.best.t_err * scale > ptol.abs + ptol.rel * position)
+    m_.st_.position_bounds.push_back({m_.st_.index, static_cast<float>(tr_.best.t_err * scale)});
 }
 
 std::optional<WhatIf> TraceClassifier::finish() {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 
 #include "compare/compare_results.h"
 #include "fault/planted_fault.h"
@@ -86,31 +87,47 @@ std::vector<Variant> legalFaults(const Case& c, const Plan& plan, const Results&
   return out;
 }
 
-// tolerance-bound: each written hit_t and barycentric moved up by 0.9 of its
-// allowed error.
-Variant toleranceBound(const Results& base) {
+// The bound the model widens a field of one ray to (Results::t_bounds for
+// hit_t, position_bounds for hit_position), 0 when none.
+double modelBound(const Results& model, const char* field, uint32_t ray) {
+  const std::vector<TBound>* bounds = std::string_view(field) == "hit_t" ? &model.t_bounds
+                                      : std::string_view(field) == "hit_position"
+                                          ? &model.position_bounds
+                                          : nullptr;
+  if (bounds)
+    for (const TBound& b : *bounds)
+      if (b.ray == ray) return b.bound;
+  return 0;
+}
+
+// tolerance-bound: each written hit_t, hit_position and barycentric moved up
+// by 0.9 of its allowed error, the model's bound of that ray included (a
+// sphere root's t and the position it gives).
+Variant toleranceBound(const Results& base, const Results& model) {
   Variant v{"tolerance-bound", base, false, ""};
   RecordEdit dev{v.device};
   size_t moved = 0;
   for (uint32_t ray = 0; ray < dev.rays(); ++ray)
     for (const auto& [field, words] : {std::pair<const char*, uint32_t>{"hit_t", 1u},
+                                       std::pair<const char*, uint32_t>{"hit_position", 3u},
                                        std::pair<const char*, uint32_t>{"barycentrics", 2u}}) {
       if (!findRecordField(field) || findRecordField(field)->automatic || !dev.written(ray, field))
         continue;
       const Tolerance tol = toleranceFor(field);
+      const double bound = modelBound(model, field, ray);
       for (uint32_t w = 0; w < words; ++w) {
         const float x = dev.getFloat(ray, field, w);
         if (!std::isfinite(x)) continue;
-        const double step = 0.9 * (tol.abs + tol.rel * std::max(std::fabs(double(x)), 1.0));
-        dev.setFloat(ray, field, static_cast<float>(x + step), w);
+        const double own = tol.abs + tol.rel * std::max(std::fabs(double(x)), 1.0);
+        dev.setFloat(ray, field, static_cast<float>(x + 0.9 * std::max(own, bound)), w);
         ++moved;
       }
     }
   v.applied = moved > 0;
   v.what = moved ? std::to_string(moved) +
-                       " hit_t and barycentric values moved by 0.9 of their "
-                       "tolerance"
-                 : "no hit_t or barycentrics recorded";
+                       " hit_t, hit_position and barycentric values moved by 0.9 of their "
+                       "tolerance or the model's bound"
+                 : "no hit_t, hit_position or barycentrics recorded";
   return v;
 }
 
@@ -143,7 +160,7 @@ std::vector<LegalDevice> judgeLegalDevices(const Case& c, const Plan& plan, cons
     variants = answerVariants(c, plan, model, base, threads);
     variants.push_back(passBetween(c, plan, model, base, threads));
     variants.push_back(aabbNeighbours(c, plan, base, threads));
-    variants.push_back(toleranceBound(base));
+    variants.push_back(toleranceBound(base, model));
   }
   for (Variant& v : legalFaults(c, plan, model, base)) variants.push_back(std::move(v));
   std::vector<LegalDevice> out;

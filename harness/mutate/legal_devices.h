@@ -12,8 +12,9 @@
 //                       repeated without NO_DUPLICATE, candidates far to near, ...)
 //   aabb-neighbours     intersection programs also run for the boxes beside
 //                       the entered ones (R-AABB-CONS: the test is conservative)
-//   tolerance-bound     every written hit_t and barycentric moved by 0.9 of
-//                       the error the comparison allows
+//   tolerance-bound     every written hit_t, hit_position and barycentric
+//                       moved by 0.9 of the error the comparison allows (the
+//                       model's t bound of the ray, carried into hit_position)
 #pragma once
 
 #include <string>

@@ -199,6 +199,7 @@ int runReduce(const ReduceOptions& requested) {
               signature->rule.empty() ? "" : (signature->rule + ": ").c_str(),
               visibleLine(signature->message).c_str());
   VariantJudge judge(opt.run, f->name, labels, *signature, opt.max_attempts, opt.device_command);
+  judge.keepPortable(*parsed.value);
   YAML::Node reduced =
       reduceDocument(*doc, *parsed.value, failingRays(original, *signature), judge);
   if (!judge.commandFailure().empty()) return badInput(judge.commandFailure());

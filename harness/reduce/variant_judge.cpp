@@ -121,6 +121,11 @@ bool VariantJudge::fails(const std::string& text, const std::string& what) {
   const std::string clean_failure =
       a.kept ? failureWithoutTheFault(*parsed_case.value, &interrupted) : "";
   a.kept = a.kept && clean_failure.empty();
+  // A step must keep the case portable: a correct device still passes it.
+  const std::string not_portable = a.kept && !interrupted && portability_
+                                       ? portability_->whyNotPortable(*parsed_case.value)
+                                       : "";
+  a.kept = a.kept && not_portable.empty();
   a.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (interrupted || !command_failure_.empty()) {
     stopped_ = true;
@@ -132,9 +137,12 @@ bool VariantJudge::fails(const std::string& text, const std::string& what) {
   // The headline's first finding says enough for the log.
   const std::string headline =
       out.headline.size() > 200 ? out.headline.substr(0, 200) + " ..." : out.headline;
-  a.verdict = a.kept ? "kept: " + headline
-                     : (parsed ? "rejected: " : "rejected, does not parse: ") +
-                           (clean_failure.empty() ? headline : clean_failure.substr(0, 200));
+  const std::string why_not = !clean_failure.empty()  ? clean_failure
+                              : !not_portable.empty() ? not_portable
+                                                      : headline;
+  a.verdict = a.kept
+                  ? "kept: " + headline
+                  : (parsed ? "rejected: " : "rejected, does not parse: ") + why_not.substr(0, 200);
   attempts_.push_back(a);
   seen_[text] = a.kept;
   if (a.kept) {

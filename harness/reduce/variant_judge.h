@@ -2,7 +2,9 @@
 // by the case parser (a variant that does not parse is rejected without a
 // run), both sides run isolated in child processes (run/case_steps.h
 // CaseRunner), judged by the usual comparison; kept when it fails the way
-// the original did (reduce/failure_signature.h). Every attempt is logged.
+// the original did (reduce/failure_signature.h) and, once keepPortable() is
+// called, every legal device still passes it (reduce/portability_check.h).
+// Every attempt is logged.
 // With a device command, the device side of each variant is run by it
 // instead: the variant is written to RUN_OUT/variant-<n>/cases/<case name>.yaml,
 // the command runs with RAYSPEC_VARIANT_CASES (that folder), RAYSPEC_VARIANT_NAME
@@ -16,10 +18,12 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "reduce/failure_signature.h"
+#include "reduce/portability_check.h"
 #include "run/case_steps.h"
 
 namespace rayspec {
@@ -57,8 +61,11 @@ class VariantJudge {
   // With a planted fault: why the parsed variant fails without it too ("": it
   // does not, or no fault is planted).
   std::string failureWithoutTheFault(const Case& c, bool* interrupted) const;
+  // From now on a variant is kept only where the legal devices that pass
+  // `original` pass it too (reduce/portability_check.h).
+  void keepPortable(const Case& original) { portability_.emplace(original, run_.threads); }
   // Whether the variant fails the same way (and, with a planted fault, passes
-  // without it); a text seen before is not run again.
+  // without it, and is portable); a text seen before is not run again.
   bool fails(const std::string& text, const std::string& what);
   const std::vector<Attempt>& attempts() const { return attempts_; }
   // No more attempts: the limit was reached, a signal stopped one, or the
@@ -94,6 +101,7 @@ class VariantJudge {
   mutable CommandDevice last_device_;
   mutable std::string command_failure_;
   CommandDevice kept_device_;
+  std::optional<PortabilityCheck> portability_;
   std::map<std::string, bool> seen_;
   std::map<std::string, CaseOutcome> kept_;
   std::vector<Attempt> attempts_;

@@ -194,6 +194,10 @@ struct Results {
   // whose world-to-object terms are large beside the result (a far
   // translation cancelled): |device - model| may reach the bound.
   std::vector<TBound> object_origin_bounds;
+  // model, exact tier: the t bound of t_bounds carried into hit_position
+  // (origin + t x direction): t's bound times the direction's largest
+  // component, where that exceeds hit_position's own tolerance.
+  std::vector<TBound> position_bounds;
   std::vector<UndefinedRay>
       undefined;  // model: rays whose behaviour is undefined (R-UB), one per ray
   // model, exact tier (R-AHIT-DUP): rays whose fields any-hit repetition may
