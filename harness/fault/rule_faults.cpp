@@ -98,8 +98,11 @@ std::vector<RuleFaults> pipelineRules() {
       // otherwise than the pipeline's stages would (pipeline.traces: ray_query).
       // The ray_query statement (cases/ray-query/).
       {"R-RQ-INIT", {"query-init-keeps-committed"}, {}},
-      {"R-RQ-CANDIDATES", {"query-offers-opaque"}, {}},
-      {"R-RQ-COMMIT", {"query-confirm-ignored", "query-generate-ignored"}, {}},
+      {"R-RQ-CANDIDATES", {"query-offers-opaque", "tlas-ignored"}, {}},
+      {"R-RQ-COMMIT",
+       {"query-confirm-ignored", "query-generate-ignored", "query-break-loses-commit",
+        "query-function-gets-copy"},
+       {}},
       {"R-RQ-TERMINATE", {"query-terminate-ignored"}, {}},
       {"R-RQ-VALUES", {"query-committed-reads-candidate", "query-custom-index-is-instance-id"}, {}},
       {"R-RQ-EQUIV",

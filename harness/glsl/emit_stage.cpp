@@ -233,6 +233,8 @@ GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const st
   out.line("#version 460");
   if (!ctx.compute) out.line("#extension GL_EXT_ray_tracing : require");
   if (ray_query || u.ray_query) out.line("#extension GL_EXT_ray_query : require");
+  // A trace's or query's dynamic top level index (glsl/emit_trace.h).
+  if (ctx.c.scene.tlasCount() > 1) out.line("#extension GL_EXT_nonuniform_qualifier : require");
   // The records live behind a buffer reference (shaders/common.glsl): a large
   // launch's records may exceed maxStorageBufferRange (128 MiB on lavapipe).
   if (plan.records) out.line("#extension GL_EXT_buffer_reference : require");

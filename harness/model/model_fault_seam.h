@@ -55,7 +55,9 @@ class ModelFaultSeam {
   bool queryCommittedReadsCandidate() const { return f_.rq_committed_reads_candidate; }
   bool queryCustomIndexIsInstanceId() const {  // R-RQ-VALUES
     return f_.rq_custom_index_is_instance_id;
-  }  // R-RQ-VALUES
+  }                                                                        // R-RQ-VALUES
+  bool queryBreakLosesCommit() const { return f_.rq_break_loses_commit; }  // R-RQ-COMMIT
+  bool queryFunctionGetsCopy() const { return f_.rq_function_gets_copy; }  // R-RQ-COMMIT
   // A legal device (rayspec mutate) or one passing between shared edges:
   // an ambiguous trace is replayed as another of its answers.
   bool answersOtherwise() const { return f_.legal_answer != 0 || f_.pass_between_edges; }

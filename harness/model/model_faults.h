@@ -57,7 +57,12 @@ struct ModelFaults {
   //   rq_committed_reads_candidate: the committed getters read the current
   //     candidate while there is one (R-RQ-VALUES);
   //   rq_custom_index_is_instance_id: the instance custom index getters read
-  //     the instance id (R-RQ-VALUES).
+  //     the instance id (R-RQ-VALUES);
+  //   rq_break_loses_commit: a query whose loop a break leaves before
+  //     rayQueryProceedEXT returns false has nothing committed (R-RQ-COMMIT:
+  //     a device that commits only when traversal completes);
+  //   rq_function_gets_copy: a function taking a query (query: true) gets a
+  //     copy: its confirm, generate and terminate_query reach nothing (R-RQ-COMMIT).
   bool rq_init_keeps_committed = false;
   bool rq_opaque_offered = false;
   bool rq_confirm_ignored = false;
@@ -65,6 +70,8 @@ struct ModelFaults {
   bool rq_terminate_ignored = false;
   bool rq_committed_reads_candidate = false;
   bool rq_custom_index_is_instance_id = false;
+  bool rq_break_loses_commit = false;
+  bool rq_function_gets_copy = false;
   // R-WATERTIGHT not met (a "should"): every trace through a shared edge or
   // vertex passes between its triangles, where that changes the answer.
   bool pass_between_edges = false;
