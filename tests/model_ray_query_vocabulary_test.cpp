@@ -6,7 +6,7 @@
 #include "suite_cases.h"
 
 namespace rayspec::model_test {
-namespace {
+namespace query_vocabulary {  // named: the unity build joins model_ray_query_test's helpers
 
 Results runSuiteCase(const char* name, ModelTier tier, const ModelFaults& faults = {}) {
   const Case c = suiteCaseFile(name);
@@ -80,7 +80,7 @@ const char* kQueryCase =
     "rules: [R-RQ-COMMIT]\n"
     "scene:\n"
     "  blas: {t: [{triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}}]}\n"
-    "  instances: [{blas: t}, {blas: t, tlas: 1}]\n"
+    "  instances: [{blas: t}, {blas: t, tlas: 0x1}]\n"
     "rays: {list: [{origin: [0.2, 0.2, 1], direction: [0, 0, -1]}]}\n"
     "pipeline:\n"
     "  functions:\n"
@@ -96,12 +96,12 @@ TEST(ModelRayQueryVocabulary, ParseAndCheckErrorsNameTheField) {
   const std::string text = kQueryCase;
   EXPECT_EQ(firstErrorAfter(text, "tlas: 1", "tlas: launch_id_x"), "(no error)");
   EXPECT_EQ(firstErrorAfter(text, "tlas: 1", "tlas: {add: [launch_id_x, 0.5]}"),
-            "pipeline.raygen[0].ray_query.tlas.add: operands of add must have the same type "
-            "(Uint, Float)");
+            "pipeline.raygen[0].ray_query.tlas: operator 'add': arguments are (Uint, Float); need "
+            "the same numeric type, or a Float with a vector");
   EXPECT_EQ(firstErrorAfter(text, "tlas: 1", "tlas: 1.0"),
-            "pipeline.raygen[0].ray_query.tlas: expected an unsigned integer <= 7");
-  EXPECT_EQ(firstErrorAfter(text, "tlas: 1", "tlas: hit_t"),
-            "pipeline.raygen[0].ray_query.tlas: ray_query tlas must be Uint, not Float");
+            "pipeline.raygen[0].ray_query.tlas: expected an unsigned integer (decimal or 0x hex)");
+  EXPECT_EQ(firstErrorAfter(text, "tlas: 1", "tlas: {mul: [0.5, 2.0]}"),
+            "pipeline.raygen[0].ray_query.tlas: ray_query tlas: expected Uint, got Float");
   // A break in `after` leaves no loop; in a function, none of the caller's.
   EXPECT_EQ(firstErrorAfter(text, "after: [record", "after: [break, record"),
             "pipeline.raygen[0].ray_query.after[0]: 'break' outside a repeat");
@@ -111,13 +111,15 @@ TEST(ModelRayQueryVocabulary, ParseAndCheckErrorsNameTheField) {
             "pipeline.functions.pick.do[0]: 'confirm' commits a triangle candidate: only in a "
             "ray_query's triangle block");
   EXPECT_EQ(firstErrorAfter(text, "  raygen:\n", "  raygen:\n    - invoke: pick\n"),
-            "pipeline.raygen[0]: invoke pick: the function takes a ray query (query: true); "
+            "pipeline.raygen[0].invoke: invoke pick: the function takes a ray query (query: true); "
             "invoke it in a ray_query's triangle, aabb or after block");
   EXPECT_EQ(firstErrorAfter(text, "query: true", "query: yes"),
             "pipeline.functions.pick.query: expected true or false, not 'yes'");
-  EXPECT_EQ(firstErrorAfter(text, "do: [confirm]", "do: [confirm, break]"),
+  std::string invoked = text;
+  invoked.replace(invoked.find("[confirm, break]"), 16, "[invoke: pick]");
+  EXPECT_EQ(firstErrorAfter(invoked, "do: [confirm]", "do: [confirm, break]"),
             "pipeline.functions.pick.do[1]: 'break' outside a repeat");
 }
 
-}  // namespace
+}  // namespace query_vocabulary
 }  // namespace rayspec::model_test
