@@ -62,6 +62,9 @@ void parseInstanceGrid(YamlReader& r, const YAML::Node& n, const std::string& fi
 std::optional<bool> parseGeneratedMesh(YamlReader& r, const YAML::Node& n, const std::string& field,
                                        Geometry& g);
 
+// A yes/no field: true or false (an error naming the field otherwise).
+std::optional<bool> parseTrueFalse(YamlReader& r, const YAML::Node& n, const std::string& field);
+
 // identity | 12 numbers | {translate, scale, rotate: {axis, degrees}}
 std::optional<Transform> parseTransform(YamlReader& r, const YAML::Node& n,
                                         const std::string& field);

@@ -12,6 +12,7 @@ namespace {
 
 struct FunctionDef {
   std::vector<std::pair<std::string, ValueType>> params;
+  bool query = false;  // takes the caller's ray query
   Program body;
   size_t statements = 0;  // in the body, nested ones included
   bool ok = true;
@@ -53,7 +54,8 @@ FunctionDefs parseDefs(YamlReader& r, const YAML::Node& n) {
   FunctionDefs defs;
   if (!n.IsDefined()) return defs;
   if (!n.IsMap()) {
-    r.error(n, "pipeline.functions", "expected a map {NAME: {params: {..}, do: [..]}}");
+    r.error(n, "pipeline.functions",
+            "expected a map {NAME: {params: {..}, query: true, do: [..]}}");
     return defs;
   }
   for (auto it = n.begin(); it != n.end(); ++it) {
@@ -66,9 +68,14 @@ FunctionDefs parseDefs(YamlReader& r, const YAML::Node& n) {
       continue;
     }
     const YAML::Node v = it->second;
-    if (!r.expectMap(v, f, {"params", "do"}) || !r.require(v, f, "do")) {
+    if (!r.expectMap(v, f, {"params", "query", "do"}) || !r.require(v, f, "do")) {
       def.ok = false;
       continue;
+    }
+    if (auto q = YamlReader::get(v, "query"); q.IsDefined()) {
+      const auto takes = parseTrueFalse(r, q, f + ".query");
+      def.ok = takes.has_value() && def.ok;
+      def.query = takes.value_or(false);
     }
     if (auto p = YamlReader::get(v, "params"); p.IsDefined())
       def.ok = parseParams(r, p, f + ".params", def) && def.ok;
@@ -128,6 +135,7 @@ class Expander {
       return false;
     }
     s.params = def.params;
+    s.query_param = def.query;
     s.then_ = def.body;
     stack_.push_back(s.local);
     block(s.then_);

@@ -1,4 +1,6 @@
 // Stage programs: a list of statements (table in cases/README.md).
+#include <cctype>
+
 #include "case/case_parts.h"
 #include "case/flag_names.h"
 #include "program/builtins.h"
@@ -108,6 +110,21 @@ bool constantIndex(YamlReader& r, const YAML::Node& v, const std::string& f, con
   return index.has_value();
 }
 
+// tlas: k (a constant: scene.instances[].tlas), or an expression that
+// indexes the top levels (one that starts with a digit is a constant).
+bool tlasField(YamlReader& r, const YAML::Node& v, const std::string& f, TraceArgs& t) {
+  const YAML::Node n = YamlReader::get(v, "tlas");
+  if (!n.IsDefined()) return true;
+  if (n.IsScalar() && !n.Scalar().empty() &&
+      std::isdigit(static_cast<unsigned char>(n.Scalar()[0])))
+    return constantIndex(r, v, f, "tlas", kMaxTlases - 1, t.tlas, t.tlas_loc);
+  t.tlas_loc = r.loc(n, f + ".tlas");
+  Expr e;
+  if (!parseExpr(r, n, f + ".tlas", e)) return false;
+  t.tlas_index.push_back(std::move(e));
+  return true;
+}
+
 // The trace fields a trace or ray_query gives (origin .. miss), each an
 // expression; flags also a list of ray flag names.
 bool parseTraceSlots(YamlReader& r, const YAML::Node& v, const std::string& f, TraceArgs& t) {
@@ -157,7 +174,7 @@ bool parseTrace(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& 
                    {"origin", "direction", "tmin", "tmax", "flags", "cull_mask", "sbt_offset",
                     "sbt_stride", "miss", "payload", "tlas", "location"}))
     return false;
-  bool ok = constantIndex(r, v, f, "tlas", kMaxTlases - 1, s.trace.tlas, s.trace.tlas_loc);
+  bool ok = tlasField(r, v, f, s.trace);
   ok = constantIndex(r, v, f, "location", kMaxPayloadLocations - 1, s.trace.location,
                      s.trace.location_loc) &&
        ok;
@@ -178,7 +195,7 @@ bool parseRayQuery(YamlReader& r, const YAML::Node& v, const std::string& f, Stm
     return false;
   bool ok = true;
   if (!v.IsNull()) {
-    ok = constantIndex(r, v, f, "tlas", kMaxTlases - 1, s.trace.tlas, s.trace.tlas_loc);
+    ok = tlasField(r, v, f, s.trace);
     ok = parseTraceSlots(r, v, f, s.trace) && ok;
   }
   const char* blocks[] = {"triangle", "aabb"};

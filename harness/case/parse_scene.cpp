@@ -246,15 +246,6 @@ std::optional<bool> parseEither(YamlReader& r, const YAML::Node& n, const std::s
   return std::nullopt;
 }
 
-// A yes/no field: true or false.
-std::optional<bool> parseSwitch(YamlReader& r, const YAML::Node& n, const std::string& field) {
-  const auto text = r.string(n, field);
-  if (!text) return std::nullopt;
-  if (*text == "true" || *text == "false") return *text == "true";
-  r.error(n, field, "expected true or false, not '" + *text + "'");
-  return std::nullopt;
-}
-
 // The input layout fields of scene.build (vulkan/build_layout.h). Strides
 // are checked against the formats once the geometries are known
 // (checkStrides); here only what every stride must be: aabb_stride a
@@ -263,9 +254,10 @@ std::optional<bool> parseSwitch(YamlReader& r, const YAML::Node& n, const std::s
 void parseBuildLayout(YamlReader& r, const YAML::Node& n, AsBuild& build) {
   const std::string f = "scene.build";
   if (auto v = YamlReader::get(n, "instances_as_pointers"); v.IsDefined())
-    build.instances_as_pointers = parseSwitch(r, v, f + ".instances_as_pointers").value_or(false);
+    build.instances_as_pointers =
+        parseTrueFalse(r, v, f + ".instances_as_pointers").value_or(false);
   if (auto v = YamlReader::get(n, "data_offsets"); v.IsDefined())
-    build.data_offsets = parseSwitch(r, v, f + ".data_offsets").value_or(false);
+    build.data_offsets = parseTrueFalse(r, v, f + ".data_offsets").value_or(false);
   if (auto v = YamlReader::get(n, "first_vertex"); v.IsDefined())
     build.first_vertex = r.uint(v, f + ".first_vertex", kMaxFirstVertex).value_or(0);
   if (auto v = YamlReader::get(n, "vertex_stride"); v.IsDefined())
@@ -320,7 +312,7 @@ void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
                     ")");
     }
   if (auto v = YamlReader::get(n, "one_by_one"); v.IsDefined())
-    build.one_by_one = parseSwitch(r, v, f + ".one_by_one").value_or(false);
+    build.one_by_one = parseTrueFalse(r, v, f + ".one_by_one").value_or(false);
   if (auto v = YamlReader::get(n, "update_into"); v.IsDefined())
     build.update_into_other =
         parseEither(r, v, f + ".update_into", "same", "other").value_or(false);
@@ -379,6 +371,14 @@ void parseScene(YamlReader& r, const YAML::Node& n, Scene& scene) {
       r.error(YamlReader::get(b, "update_into"), "scene.build.update_into",
               "an update into another structure is not combined with a copy (scene.build.copy)");
   }
+}
+
+std::optional<bool> parseTrueFalse(YamlReader& r, const YAML::Node& n, const std::string& field) {
+  const auto text = r.string(n, field);
+  if (!text) return std::nullopt;
+  if (*text == "true" || *text == "false") return *text == "true";
+  r.error(n, field, "expected true or false, not '" + *text + "'");
+  return std::nullopt;
 }
 
 }  // namespace rayspec

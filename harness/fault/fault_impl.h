@@ -119,6 +119,8 @@ std::string queryOffersOpaque(Case& c, ModelOptions& o);
 std::string queryConfirmIgnored(Case& c, ModelOptions& o);
 std::string queryGenerateIgnored(Case& c, ModelOptions& o);
 std::string queryTerminateIgnored(Case& c, ModelOptions& o);
+std::string queryBreakLosesCommit(Case& c, ModelOptions& o);
+std::string queryFunctionGetsCopy(Case& c, ModelOptions& o);
 std::string queryCommittedReadsCandidate(Case& c, ModelOptions& o);
 std::string queryCustomIndexIsInstanceId(Case& c, ModelOptions& o);
 std::string queryCommitKeepsInterval(Case& c, ModelOptions& o);

@@ -240,7 +240,9 @@ std::vector<FaultImpl> pipelineMutations() {
        "the launch runs raygen group 0, whichever group the raygen region's record holds", nullptr,
        raygenGroupIgnored},
       {"tlas-ignored", K::CaseMutation,
-       "every trace traverses the first top level, whichever one it names", nullptr, tlasIgnored},
+       "every trace and ray query traverses the first top level, whichever one it names (a "
+       "constant or a dynamic index)",
+       nullptr, tlasIgnored},
       {"stack-size-ignored", K::CaseMutation,
        "the pipeline stack size a trace sets is ignored: callables nested deeper than the "
        "default stack's two frames do nothing",
@@ -352,6 +354,14 @@ std::vector<FaultImpl> rayQueryMutations() {
        nullptr, queryConfirmIgnored},
       {"query-generate-ignored", K::CaseMutation, "rayQueryGenerateIntersectionEXT commits nothing",
        nullptr, queryGenerateIgnored},
+      {"query-break-loses-commit", K::CaseMutation,
+       "a ray query whose loop a break leaves before rayQueryProceedEXT returns false has "
+       "nothing committed",
+       nullptr, queryBreakLosesCommit},
+      {"query-function-gets-copy", K::CaseMutation,
+       "a function's rayQueryEXT parameter is a copy: its confirm, generate and terminate do not "
+       "reach the caller's query",
+       nullptr, queryFunctionGetsCopy},
       {"query-terminate-ignored", K::CaseMutation,
        "neither rayQueryTerminateEXT nor a commit under TerminateOnFirstHit ends a ray query's "
        "traversal",

@@ -230,12 +230,16 @@ std::string tlasIgnored(Case& c, ModelOptions&) {
   size_t n = 0;
   forEachProgram(c.pipeline, [&](Program& p, Stage) {
     forEachStmt(p, [&](Stmt& s) {
-      if (s.kind != Stmt::Kind::Trace || s.trace.tlas == 0) return;
+      if (s.kind != Stmt::Kind::Trace && s.kind != Stmt::Kind::RayQuery) return;
+      if (s.trace.tlas == 0 && s.trace.tlas_index.empty()) return;
       s.trace.tlas = 0;
+      s.trace.tlas_index.clear();  // a dynamic index too
       ++n;
     });
   });
-  return describeCount(n, "traces traverse the first top level instead of the one they name");
+  return describeCount(n,
+                       "traces and ray queries traverse the first top level instead of the one "
+                       "they name");
 }
 
 // R-LIBRARY: a linked pipeline that loses what its libraries hold.

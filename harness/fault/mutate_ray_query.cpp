@@ -31,6 +31,17 @@ size_t countGetters(const Case& c, std::initializer_list<const char*> names) {
   return n;
 }
 
+// How many candidate blocks of the case's ray queries may leave their loop.
+size_t loopLeavingBlocks(const Case& c) {
+  size_t n = 0;
+  forEachProgram(c.pipeline, [&](const Program& p, Stage) {
+    walkStatements(p, [&](const Stmt& s) {
+      if (s.kind == Stmt::Kind::Candidates) n += leavesQueryLoop(s.then_);
+    });
+  });
+  return n;
+}
+
 }  // namespace
 
 std::string queryInitKeepsCommitted(Case& c, ModelOptions& o) {
@@ -131,6 +142,23 @@ std::string queryFrontFaceInverted(Case& c, ModelOptions& o) {
   if (!reads) return "";
   o.faults.rq_front_face_inverted = true;
   return describeCount(reads, "ray query front face reads that give a triangle's other face");
+}
+
+std::string queryBreakLosesCommit(Case& c, ModelOptions& o) {
+  const size_t n = loopLeavingBlocks(c);
+  if (!n) return "";
+  o.faults.rq_break_loses_commit = true;
+  return describeCount(n, "candidate blocks whose break out of the loop loses what is committed");
+}
+
+std::string queryFunctionGetsCopy(Case& c, ModelOptions& o) {
+  size_t n = 0;
+  forEachProgram(c.pipeline, [&](const Program& p, Stage) {
+    walkStatements(p, [&](const Stmt& s) { n += s.kind == Stmt::Kind::Invoke && s.query_param; });
+  });
+  if (!n) return "";
+  o.faults.rq_function_gets_copy = true;
+  return describeCount(n, "calls of functions taking a ray query that get a copy of it");
 }
 
 }  // namespace rayspec

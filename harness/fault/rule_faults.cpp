@@ -98,10 +98,12 @@ std::vector<RuleFaults> pipelineRules() {
       // otherwise than the pipeline's stages would (pipeline.traces: ray_query).
       // The ray_query statement (cases/ray-query/).
       {"R-RQ-INIT", {"query-init-keeps-committed"}, {}},
-      {"R-RQ-CANDIDATES", {"query-offers-opaque", "query-commit-beyond-committed-t"}, {}},
+      {"R-RQ-CANDIDATES",
+       {"query-offers-opaque", "query-commit-beyond-committed-t", "tlas-ignored"},
+       {}},
       {"R-RQ-COMMIT",
        {"query-confirm-ignored", "query-generate-ignored", "query-commit-beyond-committed-t",
-        "query-confirm-only-first"},
+        "query-confirm-only-first", "query-break-loses-commit", "query-function-gets-copy"},
        {}},
       {"R-RQ-TERMINATE", {"query-terminate-ignored"}, {}},
       {"R-RQ-VALUES",

@@ -63,8 +63,11 @@ void switchStmt(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
   out.close();
 }
 
+// A function that takes the caller's query (query: true) gets it first, as
+// the rayQueryEXT parameter rs_query: GLSL passes the query object itself
+// (glslang: a pointer), so what the function does to it the caller's sees.
 void invoke(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
-  std::string args;
+  std::string args = s.query_param ? "rs_query" : "";
   for (const auto& [name, value] : s.assigns)
     args += (args.empty() ? "" : ", ") + emitExpr(value, ctx);
   const std::string extra = inlinedFunctionArgs(ctx);  // an inlined program's interface
@@ -85,7 +88,7 @@ void defineFunctions(const Program& p, const StageContext& ctx, std::set<std::st
     if (done.count(s.local)) continue;
     defineFunctions(s.then_, ctx, done, out);
     done.insert(s.local);
-    std::string params;
+    std::string params = s.query_param ? "rayQueryEXT rs_query" : "";
     for (const auto& [name, type] : s.params)
       params += (params.empty() ? "" : ", ") + std::string(glslType(type)) + " " + localName(name);
     const std::string extra = inlinedFunctionParams(ctx);

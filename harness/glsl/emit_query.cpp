@@ -4,6 +4,7 @@
 
 #include "glsl/emit_expr.h"
 #include "glsl/emit_stmt.h"
+#include "glsl/emit_trace.h"
 #include "glsl/glsl_literal.h"
 
 namespace rayspec {
@@ -61,14 +62,12 @@ const Program* candidateBlock(const Stmt& s, uint32_t which) {
 void rayQuery(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
   const uint32_t depth = t_query_depth;
   const std::string q = queryVariable(depth);
-  const std::string tlas = ctx.c.scene.tlasCount() > 1
-                               ? "rs_tlas[" + std::to_string(s.trace.tlas) + "]"
-                               : std::string("rs_tlas");
   out.open("{  // ray_query");
   fields(s, ctx, out);
+  tlasIndexLocal(s.trace, ctx, out);
   out.line("rayQueryEXT " + q + ";");
   nameQuery(depth, depth > 0, out);
-  out.line("rayQueryInitializeEXT(" + q + ", " + tlas +
+  out.line("rayQueryInitializeEXT(" + q + ", " + tlasOperand(s.trace, ctx) +
            ", rs_flags, rs_cull_mask, rs_origin, rs_tmin, rs_direction, rs_tmax);");
   ++t_query_depth;
   out.open("while (rayQueryProceedEXT(" + q + ")) {");

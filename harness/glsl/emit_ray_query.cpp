@@ -9,6 +9,7 @@
 #include "glsl/emit_payloads.h"
 #include "glsl/emit_stage.h"
 #include "glsl/emit_stmt.h"
+#include "glsl/emit_trace.h"
 #include "glsl/inlined_functions.h"
 #include "glsl/inlined_levels.h"
 #include "program/builtins.h"
@@ -470,7 +471,7 @@ bool emitRayQueryTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) 
     return false;
   }
   out.line(atLevel("rs_trace", level) + "(" + outgoingPayload(s.trace.location) + ", " +
-           (ctx.c.scene.tlasCount() > 1 ? str(s.trace.tlas) + "u, " : "") +
+           (ctx.c.scene.tlasCount() > 1 ? tlasIndex(s.trace, ctx) + ", " : "") +
            "rs_flags, rs_cull_mask, rs_sbt_offset, rs_sbt_stride, rs_miss, rs_origin, rs_tmin, "
            "rs_direction, rs_tmax);");
   return true;

@@ -46,6 +46,21 @@ void startPayload(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
 
 }  // namespace
 
+std::string tlasIndex(const TraceArgs& t, const StageContext& ctx) {
+  if (t.tlas_index.empty()) return std::to_string(t.tlas) + "u";
+  return "(rs_tlas_i % " + std::to_string(ctx.c.scene.tlasCount()) + "u)";
+}
+
+std::string tlasOperand(const TraceArgs& t, const StageContext& ctx) {
+  if (ctx.c.scene.tlasCount() <= 1) return "rs_tlas";
+  if (t.tlas_index.empty()) return "rs_tlas[" + std::to_string(t.tlas) + "]";
+  return "rs_tlas[nonuniformEXT" + tlasIndex(t, ctx) + "]";
+}
+
+void tlasIndexLocal(const TraceArgs& t, const StageContext& ctx, GlslWriter& out) {
+  if (!t.tlas_index.empty()) out.line("uint rs_tlas_i = " + emitExpr(t.tlas_index[0], ctx) + ";");
+}
+
 void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
   const bool raygen = ctx.stage == Stage::Raygen;
   if (!raygen && ctx.stage != Stage::ClosestHit && ctx.stage != Stage::Miss) {
@@ -77,6 +92,7 @@ void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
     }
     out.line(std::string(a.type) + " " + a.local + " = " + value + ";");
   }
+  tlasIndexLocal(t, ctx, out);
   if (tracesByRayQuery(ctx)) {  // a ray query loop (glsl/emit_ray_query.h)
     const uint32_t l = s.trace.location;
     if (ctx.inlined)  // a function's payload, not the stage's
@@ -87,10 +103,7 @@ void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
     return;
   }
   startPayload(s, ctx, out);
-  const std::string tlas = ctx.c.scene.tlasCount() > 1
-                               ? "rs_tlas[" + std::to_string(s.trace.tlas) + "]"
-                               : std::string("rs_tlas");
-  out.line("traceRayEXT(" + tlas +
+  out.line("traceRayEXT(" + tlasOperand(t, ctx) +
            ", rs_flags, rs_cull_mask, rs_sbt_offset, rs_sbt_stride, rs_miss,");
   out.line("            rs_origin, rs_tmin, rs_direction, rs_tmax, " +
            std::to_string(outgoingLocation(ctx, s.trace.location)) + ");");

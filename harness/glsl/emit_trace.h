@@ -11,4 +11,15 @@ namespace rayspec {
 
 void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out);
 
+// The top level a trace or ray_query names (TraceArgs::tlas or tlas_index):
+// its index as GLSL (a constant, or rs_tlas_i % the top levels: a dynamic
+// index wraps as an array local's does), and the acceleration structure
+// operand (rs_tlas, rs_tlas[k], rs_tlas[nonuniformEXT(..)]: an index that
+// may differ between invocations).
+std::string tlasIndex(const TraceArgs& t, const StageContext& ctx);
+std::string tlasOperand(const TraceArgs& t, const StageContext& ctx);
+// rs_tlas_i := the index expression, where there is one (evaluated with the
+// other arguments, before the payload is reset).
+void tlasIndexLocal(const TraceArgs& t, const StageContext& ctx, GlslWriter& out);
+
 }  // namespace rayspec

@@ -1,6 +1,7 @@
 // The ray query side of the hit protocol (hit_protocol.h): a candidate's
 // block runs in the query's frame; confirm, generate and terminate_query
-// act on the traversal deciding it (R-RQ-COMMIT, R-RQ-TERMINATE).
+// act on the traversal deciding it (R-RQ-COMMIT, R-RQ-TERMINATE), and a
+// break out of its loop ends it.
 #include <cmath>
 #include <string>
 
@@ -33,7 +34,12 @@ void HitProtocol::runQueryCandidate(Traversal& tr, const ModelCandidate& cand, s
   // The planted fault rq_candidate_type_swapped runs the other kind's block.
   const bool aabb_block = cand.aabb != sh_.fault_seam.queryCandidateTypeSwapped();
   const CProgram& block = q.stmt->then_[aabb_block ? 1 : 0].then_;
-  interp_.exec(block, *q.env);
+  // A break out of the proceed loop: no candidate follows; what is committed
+  // so far stays (R-RQ-COMMIT), unless the planted fault loses it.
+  if (interp_.exec(block, *q.env) == Flow::Break) {
+    tr.stop = true;
+    if (sh_.fault_seam.queryBreakLosesCommit()) tr.best = Committed{};
+  }
   tr.cur = nullptr;
   q.tr = outer_tr;
   q.cand = outer_cand;

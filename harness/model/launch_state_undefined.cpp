@@ -85,9 +85,9 @@ RayProblem rayProblem(const TraceRay& r) {
   return {};
 }
 
-const char* const kTraceArgNames[CStmt::kTraceArgs] = {"origin",     "direction",  "tmin",
-                                                       "tmax",       "flags",      "cull_mask",
-                                                       "sbt_offset", "sbt_stride", "miss"};
+const char* const kTraceArgNames[CStmt::kTraceArgs] = {
+    "origin",    "direction",  "tmin",       "tmax", "flags",
+    "cull_mask", "sbt_offset", "sbt_stride", "miss", "tlas"};
 
 // The common case, without building a message: every parameter defined.
 bool defined(const TraceRay& r) {

@@ -1,7 +1,9 @@
 // The model's meaning of the control-flow statements (program/program.h):
 // locals, arrays, repeat, break, continue, switch, invoke and return.
 #include <algorithm>
+#include <optional>
 
+#include "model/query_run.h"
 #include "model/stage_interpreter.h"
 
 namespace rayspec {
@@ -86,7 +88,18 @@ Flow StageInterpreter::execInvoke(const CStmt& s, StageEnv& env) {
   std::vector<Val> frame(std::max<size_t>(s.size, s.assigns.size()));
   for (size_t i = 0; i < s.assigns.size(); ++i) frame[i] = eval(s.assigns[i].value, env);
   std::swap(frame, env.locals);
+  // A function that takes the caller's query (query: true) acts on it; the
+  // planted fault query_function_gets_copy hands it a copy instead, whose
+  // confirm, generate and terminate_query reach no traversal.
+  QueryRun* const caller_query = env.query;
+  std::optional<QueryRun> copy;
+  if (s.src && s.src->query_param && env.query && sh_.fault_seam.queryFunctionGetsCopy()) {
+    copy = *env.query;
+    copy->tr = nullptr;
+    env.query = &*copy;
+  }
   const Flow f = exec(s.then_, env);
+  env.query = caller_query;
   std::swap(frame, env.locals);
   return f == Flow::Return ? Flow::Continue : f;
 }

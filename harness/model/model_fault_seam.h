@@ -60,6 +60,8 @@ class ModelFaultSeam {
   bool queryConfirmOnlyFirst() const { return f_.rq_confirm_only_first; }          // R-RQ-COMMIT
   bool queryCandidateTypeSwapped() const { return f_.rq_candidate_type_swapped; }  // R-RQ-VALUES
   bool queryFrontFaceInverted() const { return f_.rq_front_face_inverted; }        // R-RQ-VALUES
+  bool queryBreakLosesCommit() const { return f_.rq_break_loses_commit; }          // R-RQ-COMMIT
+  bool queryFunctionGetsCopy() const { return f_.rq_function_gets_copy; }          // R-RQ-COMMIT
   // A legal device (rayspec mutate) or one passing between shared edges:
   // an ambiguous trace is replayed as another of its answers.
   bool answersOtherwise() const { return f_.legal_answer != 0 || f_.pass_between_edges; }

@@ -69,7 +69,12 @@ struct ModelFaults {
   //     and triangle for an AABB, so each candidate runs the other block
   //     (R-RQ-VALUES);
   //   rq_front_face_inverted: the front face getters of a triangle
-  //     intersection read the other face; culling is not changed (R-RQ-VALUES).
+  //     intersection read the other face; culling is not changed (R-RQ-VALUES);
+  //   rq_break_loses_commit: a query whose loop a break leaves before
+  //     rayQueryProceedEXT returns false has nothing committed (R-RQ-COMMIT:
+  //     a device that commits only when traversal completes);
+  //   rq_function_gets_copy: a function taking a query (query: true) gets a
+  //     copy: its confirm, generate and terminate_query reach nothing (R-RQ-COMMIT).
   bool rq_init_keeps_committed = false;
   bool rq_opaque_offered = false;
   bool rq_confirm_ignored = false;
@@ -81,6 +86,8 @@ struct ModelFaults {
   bool rq_confirm_only_first = false;
   bool rq_candidate_type_swapped = false;
   bool rq_front_face_inverted = false;
+  bool rq_break_loses_commit = false;
+  bool rq_function_gets_copy = false;
   // R-WATERTIGHT not met (a "should"): every trace through a shared edge or
   // vertex passes between its triangles, where that changes the answer.
   bool pass_between_edges = false;

@@ -277,17 +277,20 @@ struct Compiler {
                 : s.light == "spot" ? LightKind::Spot
                                     : LightKind::Directional;
     if (s.kind == Stmt::Kind::Generate) r.t = expr(s.t);
-    // A ray_query: size 1 when a candidate block may end its traversal.
+    // A ray_query: size 1 when a candidate block may end its traversal
+    // (terminate_query, or a break out of its loop).
     if (s.kind == Stmt::Kind::RayQuery) {
       walkStatements(s.then_, [&](const Stmt& x) {
         if (x.kind == Stmt::Kind::TerminateQuery) r.size = 1;
       });
+      for (const Stmt& c : s.then_)
+        if (leavesQueryLoop(c.then_)) r.size = 1;  // a break leaves its loop
     }
     if (s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::RayQuery) {
       const std::vector<Expr>* a[CStmt::kTraceArgs] = {
-          &s.trace.origin,     &s.trace.direction,  &s.trace.tmin,
-          &s.trace.tmax,       &s.trace.flags,      &s.trace.cull_mask,
-          &s.trace.sbt_offset, &s.trace.sbt_stride, &s.trace.miss};
+          &s.trace.origin, &s.trace.direction, &s.trace.tmin,       &s.trace.tmax,
+          &s.trace.flags,  &s.trace.cull_mask, &s.trace.sbt_offset, &s.trace.sbt_stride,
+          &s.trace.miss,   &s.trace.tlas_index};
       for (int k = 0; k < CStmt::kTraceArgs; ++k)
         if (!a[k]->empty()) {
           r.has[k] = true;

@@ -129,8 +129,8 @@ struct CStmt {
   bool has_attribute = false;
   CExpr attribute;
   LightKind light = LightKind::Point;
-  // Trace: 9 optional arguments (origin, direction, tmin, tmax, flags,
-  // cull_mask, sbt_offset, sbt_stride, miss).
+  // Trace: 10 optional arguments (origin, direction, tmin, tmax, flags,
+  // cull_mask, sbt_offset, sbt_stride, miss, the top level's index).
   enum {
     kOrigin,
     kDirection,
@@ -141,6 +141,7 @@ struct CStmt {
     kSbtOffset,
     kSbtStride,
     kMiss,
+    kTlas,  // TraceArgs::tlas_index
     kTraceArgs
   };
   std::array<bool, kTraceArgs> has{};

@@ -193,6 +193,8 @@ TraceRay StageInterpreter::tracedRay(const CStmt& s, StageEnv& env) {
   u1(CStmt::kSbtStride, r.sbt_stride);
   u1(CStmt::kMiss, r.miss);
   if (s.src) r.tlas = s.src->trace.tlas;
+  // A dynamic index wraps as an array local's does (the GLSL takes it % N too).
+  if (s.has[CStmt::kTlas]) r.tlas = eval(s.args[CStmt::kTlas], env).u % sh_.c->scene.tlasCount();
   return r;
 }
 

@@ -187,6 +187,9 @@ class Checker {
       case Stmt::Kind::Repeat:
         return repeat(s);
       case Stmt::Kind::Break:
+        // In a ray_query's candidate block, outside any repeat: leaves the
+        // query's proceed loop (GLSL's break leaves the innermost loop).
+        if (breakable_.empty() && candidate_block_) return std::nullopt;
         if (breakable_.empty() || breakable_.back() != 'L')
           return ProgramError{breakable_.empty()
                                   ? "'break' outside a repeat"
@@ -195,6 +198,7 @@ class Checker {
                               s.loc};
         return std::nullopt;
       case Stmt::Kind::Continue:
+        if (breakable_.empty() && candidate_block_) return std::nullopt;  // the next candidate
         if (std::find(breakable_.begin(), breakable_.end(), 'L') == breakable_.end())
           return ProgramError{"'continue' outside a repeat", s.loc};
         return std::nullopt;
@@ -215,9 +219,10 @@ class Checker {
   }
 
   // ray_query: its fields as a trace's (no SBT fields: a query runs no
-  // shader), its candidate blocks each a loop body of their own (break and
-  // continue stay inside, no return, no trace or call: the model may run a
-  // block again to try another legal order), then `after`.
+  // shader), its candidate blocks the body of its proceed loop (a break or
+  // continue outside any repeat leaves it or goes on to the next candidate;
+  // no return, no trace or call: the model may run a block again to try
+  // another legal order), then `after`.
   std::optional<ProgramError> rayQuery(Stmt& s) {
     if (query_depth_ >= kMaxQueryNesting)
       return ProgramError{
@@ -387,15 +392,22 @@ class Checker {
       if (auto r = as(s.assigns[i].second, s.params[i].second,
                       "invoke " + s.local + " argument " + s.params[i].first))
         return r;
+    const LocalScope::QueryBlock query = scope_.queryBlock();
+    if (s.query_param && query == LocalScope::QueryBlock::None)
+      return ProgramError{"invoke " + s.local +
+                              ": the function takes a ray query (query: true); invoke it in a "
+                              "ray_query's triangle, aabb or after block",
+                          s.loc};
     LocalScope::Frame caller = scope_.openFrame();
     std::vector<char> loops;
     std::swap(loops, breakable_);
-    // A function sees no query of its caller (GLSL: it is another function);
+    // A function sees no query of its caller (GLSL: it is another function)
+    // unless it takes it (query: true: a rayQueryEXT parameter, the
+    // caller's innermost query, read and decided as in the caller's block);
     // its return leaves only the function, but its traces would still run
     // inside the caller's candidate block.
-    const LocalScope::QueryBlock query = scope_.queryBlock();
     const bool candidates = candidate_block_, frame = candidate_frame_;
-    scope_.setQueryBlock(LocalScope::QueryBlock::None);
+    if (!s.query_param) scope_.setQueryBlock(LocalScope::QueryBlock::None);
     candidate_frame_ = candidates || frame;
     candidate_block_ = false;
     std::optional<ProgramError> r;
@@ -494,6 +506,8 @@ class Checker {
       for (Expr& e : *slot.exprs)
         if (auto r = as(e, slot.type, what + " " + slot.name)) return r;
     }
+    for (Expr& e : t.tlas_index)
+      if (auto r = as(e, ValueType::Uint, what + " tlas")) return r;
     return std::nullopt;
   }
 

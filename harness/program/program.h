@@ -76,6 +76,9 @@ struct TraceArgs {
   std::vector<Expr> origin, direction, tmin, tmax;  // 0 or 1 element each
   std::vector<Expr> flags, cull_mask, sbt_offset, sbt_stride, miss;
   uint32_t tlas = 0;  // which top level (a constant: Instance::tlas)
+  // ... or 0 or 1 Uint expressions: the top level of index tlas_index % the
+  // scene's top levels (a dynamically indexed descriptor array, nonuniformEXT).
+  std::vector<Expr> tlas_index;
   SourceLoc tlas_loc;
   uint32_t location = 0;  // the payload location passed (a constant: Pipeline::payload_words)
   SourceLoc location_loc;
@@ -142,6 +145,8 @@ struct Stmt {
   uint32_t size = 0;                       // Array: elements; Case: the label
   Expr count, from, index;                 // Repeat: trip count, first value; Store: index
   std::vector<std::pair<std::string, ValueType>> params;  // Invoke: the function's parameters
+  bool query_param = false;  // Invoke: the function takes the caller's innermost ray query
+                             // (pipeline.functions' `query: true`; GLSL: a rayQueryEXT parameter)
   std::vector<Stmt> then_, else_;  // If, Report, Repeat (body), Switch (cases, default),
                                    // Case and Invoke (body)
   SourceLoc loc;

@@ -46,7 +46,7 @@ void ownExpressions(S& s, const Visit& visit) {
     case Stmt::Kind::Trace: {
       auto& t = s.trace;
       for (auto* list : {&t.origin, &t.direction, &t.tmin, &t.tmax, &t.flags, &t.cull_mask,
-                         &t.sbt_offset, &t.sbt_stride, &t.miss})
+                         &t.sbt_offset, &t.sbt_stride, &t.miss, &t.tlas_index})
         walkList(*list, visit);
       break;
     }
@@ -76,6 +76,16 @@ bool mayEndProgram(const Stmt& s) {
   statements(s.then_, visit);
   statements(s.else_, visit);
   return ends;
+}
+
+bool leavesQueryLoop(const Program& block) {
+  for (const Stmt& s : block) {
+    if (s.kind == Stmt::Kind::Break) return true;
+    if (s.kind == Stmt::Kind::If && (leavesQueryLoop(s.then_) || leavesQueryLoop(s.else_)))
+      return true;
+    if (s.kind == Stmt::Kind::RayQuery && leavesQueryLoop(s.else_)) return true;
+  }
+  return false;
 }
 
 void walkStatements(const Program& p, const std::function<void(const Stmt&)>& visit) {

@@ -15,6 +15,11 @@ void walkOwnExpressions(const Stmt& s, const std::function<void(const Expr&)>& v
 // ignore, a terminate or a return (conservative: a function's return only
 // ends the function).
 bool mayEndProgram(const Stmt& s);
+// Whether a ray_query's candidate block may leave the query's proceed loop:
+// it holds a `break` outside any repeat and switch (in an if, or in the
+// `after` of a ray_query nested in it), as GLSL's break leaves the innermost
+// loop.
+bool leavesQueryLoop(const Program& block);
 // Every expression of a program (nested ones included), to change in place.
 void editExpressions(Program& p, const std::function<void(Expr&)>& visit);
 
