@@ -234,6 +234,14 @@ void parseInstance(YamlReader& r, const YAML::Node& n, const std::string& field,
     if (auto v = r.uint(t, field + ".tlas", kMaxTlases - 1)) inst.tlas = *v;
 }
 
+std::optional<bool> parseSwitch(YamlReader& r, const YAML::Node& n, const std::string& field) {
+  const auto text = r.string(n, field);
+  if (!text) return std::nullopt;
+  if (*text == "true" || *text == "false") return *text == "true";
+  r.error(n, field, "expected true or false, not '" + *text + "'");
+  return std::nullopt;
+}
+
 namespace {
 
 // A field that is one of two words: false for `first`, true for `second`.
@@ -243,15 +251,6 @@ std::optional<bool> parseEither(YamlReader& r, const YAML::Node& n, const std::s
   if (!text) return std::nullopt;
   if (*text == first || *text == second) return *text == second;
   r.error(n, field, "expected " + std::string(first) + " or " + second + ", not '" + *text + "'");
-  return std::nullopt;
-}
-
-// A yes/no field: true or false.
-std::optional<bool> parseSwitch(YamlReader& r, const YAML::Node& n, const std::string& field) {
-  const auto text = r.string(n, field);
-  if (!text) return std::nullopt;
-  if (*text == "true" || *text == "false") return *text == "true";
-  r.error(n, field, "expected true or false, not '" + *text + "'");
   return std::nullopt;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "model/order_dependence.h"
 #include "program/locals.h"
 #include "program/payload_words.h"
 #include "program/walk_program.h"
@@ -296,6 +297,7 @@ struct Compiler {
     }
     r.then_ = program(s.then_);
     r.else_ = program(s.else_);
+    if (s.kind == Stmt::Kind::RayQuery) r.order_dependent = queryOrderDependence(r).yes;
     return r;
   }
 };
@@ -352,6 +354,7 @@ CPipeline compilePipeline(const Case& c, const Plan& plan) {
     out.any_hit_terminates = out.any_hit_terminates || cg.any_hit_terminates;
     out.groups.push_back(cg);
   }
+  out.order_dependent = pipelineOrderDependence(out).yes;
   return out;
 }
 

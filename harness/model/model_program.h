@@ -155,6 +155,9 @@ struct CStmt {
   std::optional<WordArray> words;
   std::vector<CStmt> then_, else_;
   const Stmt* src = nullptr;  // for the case field a diagnosis names
+  // RayQuery: its candidate blocks may depend on the order candidates
+  // arrive in (model/order_dependence.h).
+  bool order_dependent = false;
 };
 
 using CProgram = std::vector<CStmt>;
@@ -187,6 +190,9 @@ struct CPipeline {
   std::bitset<kBiCount> read_bits;  // every built-in any program reads
   bool reads_sphere = false;        // sphere_* ops (read the object-space ray and the box)
   bool any_hit_terminates = false;  // some group's any-hit has a `terminate`
+  // Its any-hit or intersection programs may depend on the order candidates
+  // arrive in (model/order_dependence.h).
+  bool order_dependent = false;
   bool reads(Builtin b) const { return read_bits.test(b); }
 };
 

@@ -170,7 +170,11 @@ bool ModelTracer::triangleInside(const Traversal& tr, const ModelCandidate& cand
 std::optional<ModelTracer::OrderedCandidate> ModelTracer::candidateAt(
     const Traversal& tr, const std::vector<ModelCandidate>& cands, size_t pos) const {
   const size_t first = tr.first >= 0 ? static_cast<size_t>(tr.first) : 0;
-  const size_t k = tr.first < 0 ? pos : pos == 0 ? first : pos <= first ? pos - 1 : pos;
+  const size_t k = tr.order       ? (*tr.order)[pos]
+                   : tr.first < 0 ? pos
+                   : pos == 0     ? first
+                   : pos <= first ? pos - 1
+                                  : pos;
   const ModelCandidate& cand = cands[k];
   const ModelInstance& mi = sh_.scene->instances[cand.instance];
   const ModelGeometry& g = sh_.scene->blases[mi.blas].geometries[cand.geometry];
@@ -279,9 +283,14 @@ Committed ModelTracer::traverse(const TraceRay& r, uint32_t flags, uint32_t dept
     const ModelFaultSeam& seam = sh_.fault_seam;
     std::sort(
         cands->begin(), cands->end(), [&seam](const ModelCandidate& a, const ModelCandidate& b) {
-          return seam.decidedBefore(
-              a.t, b.t,
-              keyLess(a.instance, a.geometry, a.primitive, b.instance, b.geometry, b.primitive));
+          const bool key_less =
+              keyLess(a.instance, a.geometry, a.primitive, b.instance, b.geometry, b.primitive);
+          if (seam.permutedOrder()) {  // a legal device's shuffle (rayspec mutate)
+            const uint64_t ra = seam.permutedRank(a.instance, a.geometry, a.primitive),
+                           rb = seam.permutedRank(b.instance, b.geometry, b.primitive);
+            return ra != rb ? ra < rb : key_less;
+          }
+          return seam.decidedBefore(a.t, b.t, key_less);
         });
     tr.reports = tr.exact ? &reports : nullptr;
     tr.shader_unsure = tr.exact && sh_.programs->reads_sphere ? &shader_unsure : nullptr;
