@@ -73,12 +73,13 @@ class TraceClassifier {
   const Payload& payload_in_;
   const ModelScene& scene_;
   RayAmbiguity amb_;
-  std::vector<WhatIf> hows_;               // how each of amb_.candidates is reached
-  std::vector<WhatIf> leak_hows_;          // how each of amb_.leak_answers is reached
-  std::optional<AmbiguityReason> reason_;  // the first reason found
-  double reason_t_ = 0;                    // the t of the candidate that gave it
-  std::vector<size_t> unsure_;             // candidates whose decision could flip
-  bool faces_ = false;                     // a grazed box among them
+  std::vector<WhatIf> hows_;                   // how each of amb_.candidates is reached
+  std::vector<WhatIf> leak_hows_;              // how each of amb_.leak_answers is reached
+  std::optional<AmbiguityReason> reason_;      // the first reason found
+  std::optional<AmbiguityReason> tie_reason_;  // reports tie (tryPermutations), if nothing else
+  double reason_t_ = 0;                        // the t of the candidate that gave it
+  std::vector<size_t> unsure_;                 // candidates whose decision could flip
+  bool faces_ = false;                         // a grazed box among them
 };
 
 // A triangle candidate that a device may see as a hit in the interval.
@@ -376,7 +377,11 @@ bool TraceClassifier::tryPermutations(const std::vector<std::pair<size_t, double
   if (seen.size() < 2) return true;
   if (sample) orderDependentPastBound(matter.size());
   for (size_t k = 0; k < seen.size(); ++k) addCommitted(seen[k].best, hows[k]);
-  if (!reason_)
+  // A tie alone names the reason only if nothing else does (a sphere's two
+  // roots at tangency tie because of its arithmetic: shader-arith).
+  if (!tofh && !dependent)
+    tie_reason_ = AmbiguityReason::TTie;
+  else if (!reason_)
     reason_ = tofh   ? AmbiguityReason::FirstHit
               : ties ? AmbiguityReason::TTie
                      : AmbiguityReason::Order;
@@ -408,6 +413,7 @@ void TraceClassifier::boundT() {
 }
 
 std::optional<WhatIf> TraceClassifier::finish() {
+  if (!reason_) reason_ = tie_reason_;
   if (!reason_) return std::nullopt;
   amb_.reason = *reason_;
   // A leak answer that is also a legal one is legal.
