@@ -44,9 +44,13 @@ void checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
   // (SkipClosestHit, or a hit group without one, runs neither): a hit of
   // unknown identity. Unless a miss may run nothing too (an all-zero miss
   // record, R-SBT-ZERO): then only what the shaders wrote tells.
-  // No miss record at all (a ray query's launch: no miss shader): neither.
-  bool silent_miss = c.pipeline.sbt_miss.empty();
+  bool silent_miss = false;
   for (const SbtRecord& r : c.pipeline.sbt_miss) silent_miss = silent_miss || !r.group;
+  // No miss record at all (a launch of ray queries only), no closest-hit run
+  // and no hit field: nothing tells a hit from a miss, or which.
+  if (c.pipeline.sbt_miss.empty() && fieldWord(rec, "closest_hit_runs") == 0 &&
+      !written(rec, recordFieldIndex("hit")))
+    return;
   const bool device_hit = fieldWord(rec, "closest_hit_runs") > 0 ||
                           (written(rec, recordFieldIndex("hit")) && fieldWord(rec, "hit") == 1) ||
                           (fieldWord(rec, "miss_runs") == 0 && !silent_miss);
