@@ -62,7 +62,8 @@ class TraceClassifier {
   // tryPermutations' steps: the candidates whose order may matter, whether
   // two reports tie, what the actual run left behind, and a case error
   // where a sample of the orders past the bound answers otherwise.
-  std::vector<uint32_t> orderedCandidates() const;
+  std::vector<uint32_t> orderedCandidates(
+      const std::vector<std::pair<size_t, double>>& reports) const;
   bool reportsTie(const std::vector<std::pair<size_t, double>>& reports) const;
   OrderOutcome actualOutcome() const;
   void orderDependentPastBound(size_t candidates);
@@ -287,11 +288,19 @@ void TraceClassifier::tryOrders(const std::vector<std::pair<size_t, double>>& re
   }
 }
 
-std::vector<uint32_t> TraceClassifier::orderedCandidates() const {
+// Hit or unsure triangles in the interval, and boxes; but a box whose
+// intersection program ran and reported nothing, where no intersection
+// program reads ray_tmax: no order makes it report.
+std::vector<uint32_t> TraceClassifier::orderedCandidates(
+    const std::vector<std::pair<size_t, double>>& reports) const {
+  std::vector<uint8_t> box(cands_.size(), 0);  // 1 ran, 2 reported
+  if (!tr_.query && !m_.sh_.programs->reads(kBiTmax))
+    for (const auto& [k, t] : reports) box[k] |= std::isnan(t) ? 1 : 2;
   std::vector<uint32_t> matter;
   for (size_t k = 0; k < cands_.size(); ++k) {
     const ModelCandidate& cand = cands_[k];
-    if (cand.aabb || ((cand.hit || cand.ambiguity != TriAmbiguity::None) && eligible(cand)))
+    if ((cand.aabb && box[k] != 1) ||
+        (!cand.aabb && (cand.hit || cand.ambiguity != TriAmbiguity::None) && eligible(cand)))
       matter.push_back(static_cast<uint32_t>(k));
   }
   return matter;
@@ -346,11 +355,12 @@ bool TraceClassifier::tryPermutations(const std::vector<std::pair<size_t, double
       tr_.query ? tr_.query->stmt->order_dependent : m_.sh_.programs->order_dependent;
   const bool ties = reportsTie(reports);
   if (!tofh && !dependent && !ties) return false;
-  const std::vector<uint32_t> matter = orderedCandidates();
+  const std::vector<uint32_t> matter = orderedCandidates(reports);
   const bool reported = std::any_of(reports.begin(), reports.end(),
                                     [](const auto& r) { return !std::isnan(r.second); });
+  // One candidate has no other order: only its own tied reports matter.
+  if (matter.size() <= 1 && !ties) return true;
   const bool keeps = !tr_.query && reported;  // a report may keep the committed hit
-  if (matter.size() <= 1 && !keeps) return true;
   const bool sample = matter.size() > kMaxOrderedCandidates;
   const std::vector<std::vector<uint32_t>> orders =
       sample ? sampleOrders(cands_.size(), matter) : everyOrder(cands_.size(), matter);
