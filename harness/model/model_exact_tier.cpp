@@ -385,7 +385,9 @@ bool TraceClassifier::tryPermutations(const std::vector<std::pair<size_t, double
       hows.push_back(std::move(how));
     }
   if (seen.size() < 2) return true;
-  if (sample) orderDependentPastBound(matter.size());
+  // Past the bound a case error, but where only tied reports may differ.
+  if (sample && (tr_.query || !m_.sh_.programs->order_ties_only))
+    orderDependentPastBound(matter.size());
   for (size_t k = 0; k < seen.size(); ++k) addCommitted(seen[k].best, hows[k]);
   // A tie alone names the reason only if nothing else does (a sphere's two
   // roots at tangency tie because of its arithmetic: shader-arith).

@@ -354,7 +354,9 @@ CPipeline compilePipeline(const Case& c, const Plan& plan) {
     out.any_hit_terminates = out.any_hit_terminates || cg.any_hit_terminates;
     out.groups.push_back(cg);
   }
-  out.order_dependent = pipelineOrderDependence(out).yes;
+  const OrderDependence order = pipelineOrderDependence(out);
+  out.order_dependent = order.yes;
+  out.order_ties_only = order.ties_only;
   return out;
 }
 

@@ -193,6 +193,7 @@ struct CPipeline {
   // Its any-hit or intersection programs may depend on the order candidates
   // arrive in (model/order_dependence.h).
   bool order_dependent = false;
+  bool order_ties_only = false;  // only through reports that tie (OrderDependence::ties_only)
   bool reads(Builtin b) const { return read_bits.test(b); }
 };
 

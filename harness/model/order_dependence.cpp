@@ -44,7 +44,7 @@ class Scan {
       if (const auto r = reads_.find(where); r != reads_.end())
         return {true, "reads " + name(where) + ", which a candidate writes", r->second};
     }
-    return {};
+    return tie_;
   }
 
  private:
@@ -142,8 +142,8 @@ class Scan {
     if (s.has_attribute) expr(s.attribute, s);
     switch (s.kind) {
       case Stmt::Kind::Report:
-        if (stage_ == Stage::Intersection && !ownT(s.t))
-          dependsBecause("reports a t that is not its box's own (reports there tie)", s);
+        if (stage_ == Stage::Intersection && !ownT(s.t) && !tie_.yes)
+          tie_ = {true, "reports a t that is not its box's own (reports there tie)", &s, true};
         break;
       case Stmt::Kind::Terminate:
       case Stmt::Kind::TerminateQuery:
@@ -176,6 +176,7 @@ class Scan {
   std::map<Where, Write> writes_;
   std::map<Where, const CStmt*> reads_;
   OrderDependence found_;
+  OrderDependence tie_;  // reports at a t not the box's own: ties only
 };
 
 }  // namespace
@@ -198,11 +199,12 @@ OrderDependence pipelineOrderDependence(const CPipeline& p) {
     if (g.intersection) {
       Scan own(false, Stage::Intersection);
       own.program(*g.intersection);
-      if (const OrderDependence d = own.result(); d.yes && !out.yes) out = d;
+      if (const OrderDependence d = own.result(); d.yes && (!out.yes || out.ties_only)) out = d;
       shared.program(*g.intersection);
     }
   }
-  return out.yes ? out : shared.result();
+  const OrderDependence d = shared.result();
+  return out.yes && !(out.ties_only && d.yes && !d.ties_only) ? out : d;
 }
 
 std::string statementPlace(const CStmt* s) {

@@ -28,6 +28,9 @@ struct OrderDependence {
   bool yes = false;
   std::string why;               // e.g. "reads committed.type"
   const CStmt* where = nullptr;  // the statement that makes it so (null: the block as a whole)
+  // Only reports at a t not the box's own: every order gives one of the tied
+  // reports' answers (past the bound a tie, not a case error).
+  bool ties_only = false;
 };
 
 // A ray_query statement's candidate blocks (its then_).
