@@ -249,7 +249,8 @@ TEST(ModelRayQuery, ParseErrorsNameTheField) {
             "in a ray_query's triangle block");
   EXPECT_EQ(firstErrorAfter(text, "triangle: [confirm]", "sides: [confirm]"),
             "pipeline.raygen[0].ray_query.sides: unknown key 'sides' (expected one of: origin, "
-            "direction, tmin, tmax, flags, cull_mask, tlas, triangle, aabb, after)");
+            "direction, tmin, tmax, flags, cull_mask, tlas, triangle, aabb, after, "
+            "order_dependent)");
   EXPECT_NE(firstErrorAfter(text, "value: committed.type", "value: candidate.t")
                 .find("after traversal it is undefined"),
             std::string::npos);

@@ -202,6 +202,7 @@ void writeRayNotes(const Results& r, json& j) {
     j["repeat_dependent"].push_back({{"ray", d.ray}, {"fields", names}});
   }
   j["repeat_counters"] = r.repeat_counters;
+  if (!r.order_dependent.empty()) j["order_dependent"] = r.order_dependent;
 }
 
 }  // namespace
@@ -465,6 +466,8 @@ Result<void> readRayNotes(const json& j, FieldReader& field, Results& r) {
     }
   if (j.contains("repeat_counters"))
     r.repeat_counters = field(j, "repeat_counters").get<std::vector<std::string>>();
+  if (j.contains("order_dependent"))
+    r.order_dependent = field(j, "order_dependent").get<std::vector<std::string>>();
   for (const json& ja : field(j, "ambiguous")) {
     RayAmbiguity a;
     RAYSPEC_TRY(a.ray, field.count<uint32_t>(ja, "ambiguous.ray"));

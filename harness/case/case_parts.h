@@ -11,6 +11,8 @@
 namespace rayspec {
 
 void parseScene(YamlReader& r, const YAML::Node& n, Scene& scene);
+// A yes/no field: true or false (parse_scene.cpp).
+std::optional<bool> parseSwitch(YamlReader& r, const YAML::Node& n, const std::string& field);
 // scene.update (parse_update.cpp): `scene` as parsed becomes Scene::built,
 // and `scene` the scene after the update.
 void parseSceneUpdate(YamlReader& r, const YAML::Node& n, Scene& scene);

@@ -184,19 +184,26 @@ bool parseTrace(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& 
   return parseTraceSlots(r, v, f, s.trace) && ok;
 }
 
-// ray_query: {origin .., tlas, triangle: [..], aabb: [..], after: [..]}: the
-// query's fields as a trace's, its candidate blocks in then_ (Candidates,
-// size 0 triangles, 1 AABBs), `after` in else_.
+// ray_query: {origin .., tlas, triangle: [..], aabb: [..], after: [..],
+// order_dependent}: the query's fields as a trace's, its candidate blocks in
+// then_ (Candidates, size 0 triangles, 1 AABBs), `after` in else_; size 1
+// where it says order_dependent: true.
 bool parseRayQuery(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
   s.kind = Stmt::Kind::RayQuery;
   if (!v.IsNull() && !r.expectMap(v, f,
                                   {"origin", "direction", "tmin", "tmax", "flags", "cull_mask",
-                                   "tlas", "triangle", "aabb", "after"}))
+                                   "tlas", "triangle", "aabb", "after", "order_dependent"}))
     return false;
   bool ok = true;
   if (!v.IsNull()) {
     ok = tlasField(r, v, f, s.trace);
     ok = parseTraceSlots(r, v, f, s.trace) && ok;
+    // Declared order-dependent: the model's exact tier tries every order.
+    if (const YAML::Node d = YamlReader::get(v, "order_dependent"); d.IsDefined()) {
+      const std::optional<bool> yes = parseSwitch(r, d, f + ".order_dependent");
+      ok = yes.has_value() && ok;
+      s.size = yes.value_or(false) ? 1 : 0;
+    }
   }
   const char* blocks[] = {"triangle", "aabb"};
   for (uint32_t k = 0; k < 2; ++k) {

@@ -234,6 +234,14 @@ void parseInstance(YamlReader& r, const YAML::Node& n, const std::string& field,
     if (auto v = r.uint(t, field + ".tlas", kMaxTlases - 1)) inst.tlas = *v;
 }
 
+std::optional<bool> parseSwitch(YamlReader& r, const YAML::Node& n, const std::string& field) {
+  const auto text = r.string(n, field);
+  if (!text) return std::nullopt;
+  if (*text == "true" || *text == "false") return *text == "true";
+  r.error(n, field, "expected true or false, not '" + *text + "'");
+  return std::nullopt;
+}
+
 namespace {
 
 // A field that is one of two words: false for `first`, true for `second`.

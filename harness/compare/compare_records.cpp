@@ -47,6 +47,11 @@ bool checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
   // record, R-SBT-ZERO): then only what the shaders wrote tells.
   bool silent_miss = false;
   for (const SbtRecord& r : c.pipeline.sbt_miss) silent_miss = silent_miss || !r.group;
+  // No miss record at all (a launch of ray queries only), no closest-hit or
+  // miss run and no hit field: nothing tells a hit from a miss, or which.
+  if (c.pipeline.sbt_miss.empty() && fieldWord(rec, "closest_hit_runs") == 0 &&
+      fieldWord(rec, "miss_runs") == 0 && !written(rec, recordFieldIndex("hit")))
+    return;
   const bool device_hit = fieldWord(rec, "closest_hit_runs") > 0 ||
                           (written(rec, recordFieldIndex("hit")) && fieldWord(rec, "hit") == 1) ||
                           (fieldWord(rec, "miss_runs") == 0 && !silent_miss);

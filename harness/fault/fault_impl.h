@@ -150,6 +150,8 @@ std::string shaderRecordDataZeroed(Case& c, ModelOptions& o);
 std::string recordLayoutSwapped(Case& c, ModelOptions& o);
 FaultResult stageInterfaceAccepted(RecordFaultArgs& a);
 std::string reverseOrder(Case& c, ModelOptions& o);
+template <uint32_t Seed>
+std::string permutedOrder(Case& c, ModelOptions& o);  // Seed 1, 2, 3
 std::string passBetweenEdges(Case& c, ModelOptions& o);
 std::string buildOrderFirstHit(Case& c, ModelOptions& o);
 // The interval ends (mutate_intervals.cpp).

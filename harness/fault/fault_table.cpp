@@ -212,6 +212,15 @@ std::vector<FaultImpl> sbtAndOrderMutations() {
       // Case mutations: candidate order (a model option).
       {"reverse-order", K::CaseMutation, "legal: candidates are found far to near", nullptr,
        reverseOrder},
+      {"permuted-order-1", K::CaseMutation,
+       "legal: candidates are found in a fixed shuffle (seed 1), whatever their t", nullptr,
+       permutedOrder<1>},
+      {"permuted-order-2", K::CaseMutation,
+       "legal: candidates are found in a fixed shuffle (seed 2), whatever their t", nullptr,
+       permutedOrder<2>},
+      {"permuted-order-3", K::CaseMutation,
+       "legal: candidates are found in a fixed shuffle (seed 3), whatever their t", nullptr,
+       permutedOrder<3>},
       {"pass-between-edges", K::CaseMutation,
        "rays through a shared edge or vertex pass between its triangles (to what lies behind, or "
        "a miss)",

@@ -54,6 +54,19 @@ std::string reverseOrder(Case&, ModelOptions& o) {
   return "candidates decided far to near";
 }
 
+// R-ORDER-UNSPEC, legal: the candidates decided in a fixed shuffle (seed
+// 1, 2 or 3), whatever their t: boxes entered at one t, ties and
+// order-dependent programs meet another order than near to far or far to near.
+template <uint32_t Seed>
+std::string permutedOrder(Case&, ModelOptions& o) {
+  o.faults.order = CandidateOrder::Permuted;
+  o.faults.order_seed = Seed;
+  return "candidates decided in shuffle " + std::to_string(Seed);
+}
+template std::string permutedOrder<1>(Case&, ModelOptions&);
+template std::string permutedOrder<2>(Case&, ModelOptions&);
+template std::string permutedOrder<3>(Case&, ModelOptions&);
+
 // R-WATERTIGHT not met: rays through a shared edge or vertex pass between
 // its triangles where that changes the answer (what lies behind, or a miss).
 std::string passBetweenEdges(Case&, ModelOptions& o) {

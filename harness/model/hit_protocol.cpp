@@ -92,6 +92,9 @@ bool HitProtocol::reportInside(const CStmt& s, StageEnv& env, Traversal& tr, flo
       if (near_end) tr.shader_unsure->push_back({tr.cur_index, 1, ord, inside});
     }
   }
+  // What-if run where a report at the committed t keeps the committed hit
+  // (R-TIE: keeping and replacing are both legal).
+  if (tr.tie_keeps && t >= tr.ray.tmin && tr.ties(t)) inside = false;
   // What-if run preferring one candidate (R-TIE): it wins every tie, and a
   // committed preferred hit loses none.
   if (tr.prefer >= 0 && t >= tr.ray.tmin && tr.ties(t)) {

@@ -43,6 +43,15 @@ struct LaunchState {
   // undefined behaviour makes the ray undefined.
   std::vector<UndefinedRay> undefined;
   std::string error;  // first case error (an unknown built-in or op)
+  // Exact tier, R-ORDER-UNSPEC: candidate programs whose answers depend on
+  // the order past what the model enumerates (Results::order_dependent),
+  // each named once (`place`, then the first ray's `what`).
+  std::vector<std::string> order_dependent;
+  void orderDependent(const std::string& place, const std::string& what) {
+    for (const std::string& o : order_dependent)
+      if (o.compare(0, place.size(), place) == 0) return;
+    order_dependent.push_back(place + what);
+  }
 
   // The launch ray now.
   uint32_t* records = nullptr;  // ray i's record at records + i * recordWords()

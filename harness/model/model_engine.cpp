@@ -268,6 +268,10 @@ void gatherMachines(const std::vector<std::unique_ptr<Machine>>& machines, const
     r.position_bounds.insert(r.position_bounds.end(), m->state().position_bounds.begin(),
                              m->state().position_bounds.end());
     r.undefined.insert(r.undefined.end(), m->state().undefined.begin(), m->state().undefined.end());
+    for (const std::string& o : m->state().order_dependent)
+      if (std::find(r.order_dependent.begin(), r.order_dependent.end(), o) ==
+          r.order_dependent.end())
+        r.order_dependent.push_back(o);
     if (!m->state().error.empty() && r.ok()) r.setStatus(SideStatus::Crash, m->state().error);
   }
   std::sort(r.ambiguous.begin(), r.ambiguous.end(),

@@ -10,7 +10,9 @@
 #include <set>
 #include <type_traits>
 
+#include "model/candidate_orders.h"
 #include "model/model_tracer.h"
+#include "model/order_dependence.h"
 #include "model/sphere_error.h"
 #include "model/traversal.h"
 #include "results/record_layout.h"
@@ -40,6 +42,10 @@ class TraceClassifier {
   // Ties at the committed t, and the first candidate under TerminateOnFirstHit
   // or a terminating any-hit.
   void tryOrders(const std::vector<std::pair<size_t, double>>& reports);
+  // Every order of the candidates that matter (a stated sample past
+  // kMaxOrderedCandidates) where the candidate programs may depend on it,
+  // under TerminateOnFirstHit, or where reports tie: false when none applies.
+  bool tryPermutations(const std::vector<std::pair<size_t, double>>& reports);
   // Intersection-program decisions within rounding.
   void tryShaderDecisions(const std::vector<ShaderDecision>& shader_unsure);
   // A committed t whose rounding may exceed hit_t's tolerance: its bound.
@@ -54,6 +60,14 @@ class TraceClassifier {
   void addLeak(const Committed& b, const WhatIf& how);
   static WhatIf actual() { return {true, {}, -1, -1, {}}; }
   bool sameAsCommitted(const Committed& b) const;
+  // tryPermutations' steps: the candidates whose order may matter, whether
+  // two reports tie, what the actual run left behind, and a case error
+  // where a sample of the orders past the bound answers otherwise.
+  std::vector<uint32_t> orderedCandidates(
+      const std::vector<std::pair<size_t, double>>& reports) const;
+  bool reportsTie(const std::vector<std::pair<size_t, double>>& reports) const;
+  OrderOutcome actualOutcome() const;
+  void orderDependentPastBound(size_t candidates);
 
   ModelTracer& m_;
   Traversal& tr_;
@@ -66,11 +80,12 @@ class TraceClassifier {
   // actual run's first: each a legal replay's choice here (legal_replays.cpp).
   std::vector<WhatIf> replay_hows_;
   std::vector<uint64_t> replay_effects_;
-  std::vector<WhatIf> leak_hows_;          // how each of amb_.leak_answers is reached
-  std::optional<AmbiguityReason> reason_;  // the first reason found
-  double reason_t_ = 0;                    // the t of the candidate that gave it
-  std::vector<size_t> unsure_;             // candidates whose decision could flip
-  bool faces_ = false;                     // a grazed box among them
+  std::vector<WhatIf> leak_hows_;              // how each of amb_.leak_answers is reached
+  std::optional<AmbiguityReason> reason_;      // the first reason found
+  std::optional<AmbiguityReason> tie_reason_;  // reports tie (tryPermutations), if nothing else
+  double reason_t_ = 0;                        // the t of the candidate that gave it
+  std::vector<size_t> unsure_;                 // candidates whose decision could flip
+  bool faces_ = false;                         // a grazed box among them
 };
 
 // A triangle candidate that a device may see as a hit in the interval.
@@ -214,10 +229,11 @@ void TraceClassifier::tryUnsure() {
 // order); those runs' answers are legal.
 void TraceClassifier::tryOrders(const std::vector<std::pair<size_t, double>>& reports) {
   const bool tofh = (tr_.flags & kRayTerminateOnFirstHit) != 0;
-  const bool terminates = !tofh && m_.anyHitMayTerminate(tr_, cands_);
+  const bool permuted = tryPermutations(reports);
+  const bool terminates = !tofh && !permuted && m_.anyHitMayTerminate(tr_, cands_);
   std::vector<long> prefers, firsts, potential;
   std::set<std::array<uint32_t, 3>> tied;  // distinct keys confirmable at the committed t
-  if (tofh || terminates) {
+  if ((tofh && !permuted) || terminates) {
     for (size_t k = 0; k < cands_.size(); ++k) {
       const ModelCandidate& cand = cands_[k];
       if (cand.aabb || ((cand.hit || cand.ambiguity != TriAmbiguity::None) && eligible(cand)))
@@ -285,6 +301,118 @@ void TraceClassifier::tryOrders(const std::vector<std::pair<size_t, double>>& re
   }
 }
 
+// Hit or unsure triangles in the interval, and boxes; but a box whose
+// intersection program ran and reported nothing, where no intersection
+// program reads ray_tmax: no order makes it report.
+std::vector<uint32_t> TraceClassifier::orderedCandidates(
+    const std::vector<std::pair<size_t, double>>& reports) const {
+  std::vector<uint8_t> box(cands_.size(), 0);  // 1 ran, 2 reported
+  if (!tr_.query && !m_.sh_.programs->reads(kBiTmax))
+    for (const auto& [k, t] : reports) box[k] |= std::isnan(t) ? 1 : 2;
+  std::vector<uint32_t> matter;
+  for (size_t k = 0; k < cands_.size(); ++k) {
+    const ModelCandidate& cand = cands_[k];
+    if ((cand.aabb && box[k] != 1) ||
+        (!cand.aabb && (cand.hit || cand.ambiguity != TriAmbiguity::None) && eligible(cand)))
+      matter.push_back(static_cast<uint32_t>(k));
+  }
+  return matter;
+}
+
+// R-TIE: two reports (of two boxes, or two of one box) at one t within the
+// error bound: which stays depends on the order, and on whether a report at
+// the committed t replaces it (both legal).
+bool TraceClassifier::reportsTie(const std::vector<std::pair<size_t, double>>& reports) const {
+  for (size_t a = 0; a < reports.size(); ++a)
+    for (size_t b = a + 1; b < reports.size(); ++b) {
+      const double ta = reports[a].second, tb = reports[b].second;
+      if (!std::isnan(ta) && !std::isnan(tb) && std::fabs(ta - tb) <= tr_.tol(ta)) return true;
+    }
+  return false;
+}
+
+OrderOutcome TraceClassifier::actualOutcome() const {
+  OrderOutcome o;
+  o.best = tr_.best;
+  if (m_.st_.rec) o.record.assign(m_.st_.rec, m_.st_.rec + recordWords());
+  if (tr_.payload) o.payload = *tr_.payload;
+  if (tr_.query) o.frame = saveQueryFrame(*tr_.query);
+  return o;
+}
+
+// Past the bound the sample's answers differ: the case is not portable
+// (CaseError, compare/order_dependent_verdict.h), named by the block.
+void TraceClassifier::orderDependentPastBound(size_t candidates) {
+  const OrderDependence d = tr_.query ? queryOrderDependence(*tr_.query->stmt)
+                                      : pipelineOrderDependence(*m_.sh_.programs);
+  const CStmt* where = d.where ? d.where : tr_.query ? tr_.query->stmt : nullptr;
+  std::string place = tr_.query
+                          ? "the candidate blocks of the ray_query at " + statementPlace(where)
+                          : "the any-hit or intersection program at " + statementPlace(where);
+  if (!d.why.empty()) place += " (" + d.why + ")";
+  m_.st_.orderDependent(place, ": launch ray " + std::to_string(m_.st_.index) + " meets " +
+                                   std::to_string(candidates) + " candidates, more than the " +
+                                   std::to_string(kMaxOrderedCandidates) +
+                                   " whose every order the model tries, and the orders it "
+                                   "tried leave different answers behind");
+}
+
+// R-ORDER-UNSPEC, R-TOFH, R-TIE: candidates arrive in any order (and a report
+// at the committed t may keep or replace it). Where that may change what a
+// trace leaves behind, each order of the candidates that matter runs in a
+// sandboxed what-if run; each distinct outcome (the committed hit, or the
+// record, payload or query frame) is a legal answer.
+bool TraceClassifier::tryPermutations(const std::vector<std::pair<size_t, double>>& reports) {
+  const bool tofh = (tr_.flags & kRayTerminateOnFirstHit) != 0;
+  const bool dependent =
+      tr_.query ? tr_.query->stmt->order_dependent : m_.sh_.programs->order_dependent;
+  const bool ties = reportsTie(reports);
+  if (!tofh && !dependent && !ties) return false;
+  const std::vector<uint32_t> matter = orderedCandidates(reports);
+  const bool reported = std::any_of(reports.begin(), reports.end(),
+                                    [](const auto& r) { return !std::isnan(r.second); });
+  // One candidate has no other order: only its own tied reports matter.
+  if (matter.size() <= 1 && !ties) return true;
+  const bool keeps = !tr_.query && reported;  // a report may keep the committed hit
+  const bool sample = matter.size() > kMaxOrderedCandidates;
+  const std::vector<std::vector<uint32_t>> orders =
+      sample ? sampleOrders(cands_.size(), matter) : everyOrder(cands_.size(), matter);
+  std::vector<OrderOutcome> seen{actualOutcome()};
+  std::vector<WhatIf> hows{actual()};
+  for (const std::vector<uint32_t>& order : orders)
+    for (const bool keep : {false, true}) {
+      if (keep && !keeps) continue;
+      WhatIf how{false, {}, -1, -1, {}, order, keep};
+      // An edge or vertex triangle the model left out may be a device's first hit.
+      if (!matter.empty() && cands_[order[matter[0]]].ambiguity != TriAmbiguity::None) {
+        how.force.assign(cands_.size(), -1);
+        how.force[order[matter[0]]] = 1;
+      }
+      OrderOutcome o;
+      m_.sandbox(tr_, cands_, how, payload_in_, &o);
+      const bool known = std::any_of(seen.begin(), seen.end(), [&](const OrderOutcome& s) {
+        return sameOutcome(s, o, tr_.tol(o.best.t));
+      });
+      if (known) continue;
+      seen.push_back(std::move(o));
+      hows.push_back(std::move(how));
+    }
+  if (seen.size() < 2) return true;
+  // Past the bound a case error, but where only tied reports may differ.
+  if (sample && (tr_.query || !m_.sh_.programs->order_ties_only))
+    orderDependentPastBound(matter.size());
+  for (size_t k = 0; k < seen.size(); ++k) addCommitted(seen[k].best, hows[k]);
+  // A tie alone names the reason only if nothing else does (a sphere's two
+  // roots at tangency tie because of its arithmetic: shader-arith).
+  if (!tofh && !dependent)
+    tie_reason_ = AmbiguityReason::TTie;
+  else if (!reason_)
+    reason_ = tofh   ? AmbiguityReason::FirstHit
+              : ties ? AmbiguityReason::TTie
+                     : AmbiguityReason::Order;
+  return true;
+}
+
 // R-PREC: an intersection program's decision that rounding may flip (sphere
 // discriminant or root near an end): each flipped alone in a what-if run;
 // the ray is ambiguous, as the device's counters may differ.
@@ -322,6 +450,7 @@ void TraceClassifier::boundT() {
 }
 
 std::optional<WhatIf> TraceClassifier::finish() {
+  if (!reason_) reason_ = tie_reason_;
   if (!reason_) return std::nullopt;
   amb_.reason = *reason_;
   // A leak answer that is also a legal one is legal.
@@ -389,6 +518,8 @@ Committed ModelTracer::decideAs(const Traversal& actual, const std::vector<Model
   v.prefer = how.prefer;
   v.first = how.first;
   v.shader_force = how.shader ? &*how.shader : nullptr;
+  v.order = how.order.empty() ? nullptr : &how.order;
+  v.tie_keeps = how.tie_keeps;
   if (how.prefer >= 0) {
     const ModelCandidate& p = cands[static_cast<size_t>(how.prefer)];
     v.prefer_key[0] = p.instance;
@@ -403,7 +534,7 @@ Committed ModelTracer::decideAs(const Traversal& actual, const std::vector<Model
 // One what-if run of the decision in a sandbox: counters, record and error
 // are restored afterwards, the payload is a copy of the trace's incoming one.
 Committed ModelTracer::sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands,
-                               const WhatIf& how, const Payload& payload_in) {
+                               const WhatIf& how, const Payload& payload_in, OrderOutcome* left) {
   const LaunchState::Saved saved = st_.save();
   // A query's blocks change the frame of the stage that runs it: the what-if
   // run starts from the frame as traversal began, and is undone.
@@ -415,6 +546,12 @@ Committed ModelTracer::sandbox(const Traversal& actual, const std::vector<ModelC
   Payload p = payload_in;
   Committed best = decideAs(actual, cands, how, p);
   best.effect = effectOf(best, p, actual.query);
+  if (left) {  // what this run leaves behind (tryPermutations)
+    left->best = best;
+    if (st_.rec) left->record.assign(st_.rec, st_.rec + recordWords());
+    left->payload = p;
+    if (actual.query) left->frame = saveQueryFrame(*actual.query);
+  }
   st_.restore(saved);
   if (frame) restoreQueryFrame(*actual.query, *frame);
   return best;

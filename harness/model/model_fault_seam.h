@@ -36,6 +36,10 @@ class ModelFaultSeam {
     if (f_.order == CandidateOrder::BuildOrder || t_a == t_b) return key_less;
     return f_.order == CandidateOrder::ReverseDistance ? t_a > t_b : t_a < t_b;
   }
+  // A legal device deciding candidates in a fixed shuffle (CandidateOrder::
+  // Permuted): whether it does, and a candidate's place in it, by its key.
+  bool permutedOrder() const { return f_.order == CandidateOrder::Permuted; }
+  uint64_t permutedRank(uint32_t instance, uint32_t geometry, uint32_t primitive) const;
   // R-STACK broken: a callable nested past the default stack does nothing.
   bool stackSizeIgnored() const { return f_.stack_size_ignored; }
   // R-POSITION-FETCH broken: vertex_position<i> in world space.

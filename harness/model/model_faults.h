@@ -16,13 +16,15 @@ enum class ModelDeviation { None, ClosedTriangleInterval, OpenAabbInterval };
 
 // The order the model decides a trace's candidates in (R-ORDER-UNSPEC).
 // Distance is the model's own (near to far); the others stand for devices
-// that traverse otherwise: far to near, and the order of the build
-// (instance, geometry, primitive).
-enum class CandidateOrder { Distance, ReverseDistance, BuildOrder };
+// that traverse otherwise: far to near, the order of the build (instance,
+// geometry, primitive), and a fixed shuffle of the candidates whatever their
+// t (ModelFaults::order_seed; boxes entered at one t reordered too).
+enum class CandidateOrder { Distance, ReverseDistance, BuildOrder, Permuted };
 
 struct ModelFaults {
   ModelDeviation deviation = ModelDeviation::None;
   CandidateOrder order = CandidateOrder::Distance;
+  uint32_t order_seed = 0;  // CandidateOrder::Permuted: which shuffle
   // R-STACK broken: the stack size a case sets is ignored, so a callable
   // nested deeper than the default stack's kDefaultCallableDepth frames does
   // nothing (its caller's data stays as it was).

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "model/order_dependence.h"
 #include "program/locals.h"
 #include "program/payload_words.h"
 #include "program/walk_program.h"
@@ -299,6 +300,7 @@ struct Compiler {
     }
     r.then_ = program(s.then_);
     r.else_ = program(s.else_);
+    if (s.kind == Stmt::Kind::RayQuery) r.order_dependent = queryOrderDependence(r).yes;
     return r;
   }
 };
@@ -355,6 +357,9 @@ CPipeline compilePipeline(const Case& c, const Plan& plan) {
     out.any_hit_terminates = out.any_hit_terminates || cg.any_hit_terminates;
     out.groups.push_back(cg);
   }
+  const OrderDependence order = pipelineOrderDependence(out);
+  out.order_dependent = order.yes;
+  out.order_ties_only = order.ties_only;
   return out;
 }
 

@@ -156,6 +156,9 @@ struct CStmt {
   std::optional<WordArray> words;
   std::vector<CStmt> then_, else_;
   const Stmt* src = nullptr;  // for the case field a diagnosis names
+  // RayQuery: its candidate blocks may depend on the order candidates
+  // arrive in (model/order_dependence.h).
+  bool order_dependent = false;
 };
 
 using CProgram = std::vector<CStmt>;
@@ -188,6 +191,10 @@ struct CPipeline {
   std::bitset<kBiCount> read_bits;  // every built-in any program reads
   bool reads_sphere = false;        // sphere_* ops (read the object-space ray and the box)
   bool any_hit_terminates = false;  // some group's any-hit has a `terminate`
+  // Its any-hit or intersection programs may depend on the order candidates
+  // arrive in (model/order_dependence.h).
+  bool order_dependent = false;
+  bool order_ties_only = false;  // only through reports that tie (OrderDependence::ties_only)
   bool reads(Builtin b) const { return read_bits.test(b); }
 };
 

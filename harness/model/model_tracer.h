@@ -24,6 +24,7 @@ namespace rayspec {
 
 struct Traversal;
 struct QueryRun;
+struct OrderOutcome;
 class StageInterpreter;
 class HitProtocol;
 
@@ -57,8 +58,8 @@ class ModelTracer {
   void decide(Traversal& tr, const std::vector<ModelCandidate>& cands, const int8_t* force,
               Payload& payload);
   // The candidate decided at position `pos` (R-TOFH what-if: `tr.first`
-  // ahead of all others, the rest in order) and its opacity, or nullopt when
-  // the ray's cull-opaque flags skip it: decide's and decideQuery's first step.
+  // ahead of all others, the rest in order; an order what-if: `tr.order`'s) and its opacity, or
+  // nullopt when the ray's cull-opaque flags skip it: decide's and decideQuery's first step.
   struct OrderedCandidate {
     size_t k;
     bool opaque;
@@ -78,8 +79,9 @@ class ModelTracer {
   // trace's incoming one (sandbox).
   Committed decideAs(const Traversal& actual, const std::vector<ModelCandidate>& cands,
                      const WhatIf& how, Payload& payload);
+  // `left`, when given, gets what the run leaves behind (the exact tier's orders).
   Committed sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands,
-                    const WhatIf& how, const Payload& payload_in);
+                    const WhatIf& how, const Payload& payload_in, OrderOutcome* left = nullptr);
   // The digest of what a decision left behind (Committed::effect): `best`,
   // the payload, the launch state's record and counters, a query's frame.
   uint64_t effectOf(const Committed& best, const Payload& payload, const QueryRun* query) const;

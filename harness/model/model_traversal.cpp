@@ -119,6 +119,21 @@ bool validRay(const TraceRay& r, const RTCRayHit& rh) {
   return (rh.ray.mask & 0xFF) != 0;
 }
 
+// R-ORDER-UNSPEC: the order the model decides candidates in (near to far,
+// or a legal device's order: ModelFaultSeam).
+void sortCandidates(std::vector<ModelCandidate>& cands, const ModelFaultSeam& seam) {
+  std::sort(cands.begin(), cands.end(), [&seam](const ModelCandidate& a, const ModelCandidate& b) {
+    const bool key_less =
+        keyLess(a.instance, a.geometry, a.primitive, b.instance, b.geometry, b.primitive);
+    if (seam.permutedOrder()) {  // a legal device's shuffle (rayspec mutate)
+      const uint64_t ra = seam.permutedRank(a.instance, a.geometry, a.primitive),
+                     rb = seam.permutedRank(b.instance, b.geometry, b.primitive);
+      return ra != rb ? ra < rb : key_less;
+    }
+    return seam.decidedBefore(a.t, b.t, key_less);
+  });
+}
+
 }  // namespace trace_detail
 
 using namespace trace_detail;
@@ -170,7 +185,11 @@ bool ModelTracer::triangleInside(const Traversal& tr, const ModelCandidate& cand
 std::optional<ModelTracer::OrderedCandidate> ModelTracer::candidateAt(
     const Traversal& tr, const std::vector<ModelCandidate>& cands, size_t pos) const {
   const size_t first = tr.first >= 0 ? static_cast<size_t>(tr.first) : 0;
-  const size_t k = tr.first < 0 ? pos : pos == 0 ? first : pos <= first ? pos - 1 : pos;
+  const size_t k = tr.order       ? (*tr.order)[pos]
+                   : tr.first < 0 ? pos
+                   : pos == 0     ? first
+                   : pos <= first ? pos - 1
+                                  : pos;
   const ModelCandidate& cand = cands[k];
   const ModelInstance& mi = sh_.scene->instances[cand.instance];
   const ModelGeometry& g = sh_.scene->blases[mi.blas].geometries[cand.geometry];
@@ -278,13 +297,7 @@ Committed ModelTracer::traverse(const TraceRay& r, uint32_t flags, uint32_t dept
     rh.ray.tnear = std::max(0.0f, r.tmin - std::fabs(r.tmin) * kEnumerationPadRelF);
     rh.ray.tfar = r.tmax + std::fabs(r.tmax) * kEnumerationPadRelF;
     rtcIntersect1(scene.tops[r.tlas], &tc.rtc, &rh);
-    const ModelFaultSeam& seam = sh_.fault_seam;
-    std::sort(
-        cands->begin(), cands->end(), [&seam](const ModelCandidate& a, const ModelCandidate& b) {
-          return seam.decidedBefore(
-              a.t, b.t,
-              keyLess(a.instance, a.geometry, a.primitive, b.instance, b.geometry, b.primitive));
-        });
+    sortCandidates(*cands, sh_.fault_seam);
     tr.reports = tr.exact ? &reports : nullptr;
     tr.shader_unsure = tr.exact && sh_.programs->reads_sphere ? &shader_unsure : nullptr;
     decide(tr, *cands, nullptr, payload);

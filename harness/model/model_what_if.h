@@ -43,13 +43,17 @@ struct Committed {
 // How one what-if run of the exact tier decides (ModelTracer::sandbox):
 // candidates forced to be a hit (1) or not (0), -1 the model's own decision;
 // the candidate that wins every tie (prefer) or is processed first (first),
-// -1 none; an intersection program's decision flipped. `actual`: the trace's
-// own run, no what-if.
+// -1 none; an intersection program's decision flipped; the order candidates
+// are processed in (a permutation of their indices; empty: the model's own,
+// R-ORDER-UNSPEC); whether a report at the committed t keeps the committed
+// hit instead of replacing it (R-TIE). `actual`: the trace's own run, no what-if.
 struct WhatIf {
   bool actual = false;
   std::vector<int8_t> force;  // empty: none forced
   long prefer = -1, first = -1;
   std::optional<ShaderDecision> shader;
+  std::vector<uint32_t> order;
+  bool tie_keeps = false;
 };
 struct WhatIfAnswer {
   Committed best;

@@ -142,8 +142,9 @@ struct Stmt {
   std::string local;  // Array, Store: the array; Repeat: its variable (optional);
                       // Invoke: the function
   ValueType local_type = ValueType::Uint;  // Array: the element type
-  uint32_t size = 0;                       // Array: elements; Case: the label
-  Expr count, from, index;                 // Repeat: trip count, first value; Store: index
+  uint32_t size = 0;        // Array: elements; Case: the label; RayQuery: 1 when declared
+                            // order_dependent (model/order_dependence.h)
+  Expr count, from, index;  // Repeat: trip count, first value; Store: index
   std::vector<std::pair<std::string, ValueType>> params;  // Invoke: the function's parameters
   bool query_param = false;  // Invoke: the function takes the caller's innermost ray query
                              // (pipeline.functions' `query: true`; GLSL: a rayQueryEXT parameter)

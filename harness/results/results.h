@@ -204,6 +204,10 @@ struct Results {
   // change, and the counters it may move.
   std::vector<RepeatDependentRay> repeat_dependent;
   std::vector<std::string> repeat_counters;
+  // model, exact tier (R-ORDER-UNSPEC): candidate programs whose answers
+  // depend on the order of more candidates than the model enumerates, each
+  // named by its block and file:line (compare/order_dependent_verdict.h).
+  std::vector<std::string> order_dependent;
   std::vector<std::string> validation_messages;  // validation-layer errors (device)
   // Device: what the device broke that only the device shows, each a Fail of
   // its rule: R-LIBRARY (library group handles that differ from the linked

@@ -1,0 +1,50 @@
+// The candidate orders the exact tier tries where a trace's candidate
+// programs may depend on the order candidates arrive in (R-ORDER-UNSPEC,
+// model/order_dependence.h), and what each order's what-if run leaves
+// behind (model_exact_tier.cpp, TraceClassifier::tryPermutations).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "model/model_what_if.h"
+#include "model/query_run.h"
+
+namespace rayspec {
+
+// Up to this many candidates that matter, every order is tried (6! = 720
+// what-if runs; measured: README "Order-dependent candidate programs");
+// beyond it, sampleOrders.
+constexpr size_t kMaxOrderedCandidates = 6;
+
+// Every processing order of `n` candidates (indices 0 .. n-1 in the model's
+// order) that reorders only those in `matter` (sorted; the others keep their
+// places): all permutations of `matter`, the model's own first.
+std::vector<std::vector<uint32_t>> everyOrder(size_t n, const std::vector<uint32_t>& matter);
+// Past kMaxOrderedCandidates, a stated sample of those orders: each candidate
+// of `matter` first (the rest in order), the reverse, every rotation, and
+// kSampledOrders orders shuffled with a fixed seed; the model's own first.
+constexpr size_t kSampledOrders = 32;
+std::vector<std::vector<uint32_t>> sampleOrders(size_t n, const std::vector<uint32_t>& matter);
+
+// What one what-if run leaves behind: the committed hit, the launch ray's
+// record (but the fields traversal order moves anyway: any_hit_runs ..,
+// results/record_layout.h traversalDependent), the payload and, for a ray
+// query, the frame its blocks ran in. Counters are left out: those candidate
+// programs bump are informational (compare/counter_modes.h).
+struct OrderOutcome {
+  Committed best;
+  std::vector<uint32_t> record;
+  Payload payload;
+  std::optional<QueryFrameSaved> frame;
+};
+// Whether two outcomes differ in the committed hit's identity (instance,
+// geometry, primitive, kind, attribute words; t within `t_tol`) or in what
+// is left behind.
+bool sameOutcome(const OrderOutcome& a, const OrderOutcome& b, double t_tol);
+// Whether they commit the same primitive (or both nothing).
+bool sameIdentity(const Committed& a, const Committed& b);
+
+}  // namespace rayspec
