@@ -51,7 +51,7 @@ bool checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
   // miss run and no hit field: nothing tells a hit from a miss, or which.
   if (c.pipeline.sbt_miss.empty() && fieldWord(rec, "closest_hit_runs") == 0 &&
       fieldWord(rec, "miss_runs") == 0 && !written(rec, recordFieldIndex("hit")))
-    return;
+    return false;
   const bool device_hit = fieldWord(rec, "closest_hit_runs") > 0 ||
                           (written(rec, recordFieldIndex("hit")) && fieldWord(rec, "hit") == 1) ||
                           (fieldWord(rec, "miss_runs") == 0 && !silent_miss);
