@@ -166,15 +166,19 @@ TEST(LegalDevices, EachLegalVariantOfTheEdgeCasePasses) {
 // The judge as it was before this check knew each legal hit's t (issue 43:
 // every answer of an edge ray was taken to have the model's t): the legal
 // devices must catch it. Here the candidates' t are dropped to NaN and the
-// model's own t put in their place, as the old check assumed.
+// model's own t put in their place, as the old check assumed; without the
+// replays (RayAmbiguity::replays: a ray past their bound, an older bundle),
+// whose records would give each answer's own t, the judge relies on them.
 TEST(LegalDevices, AJudgeThatAssumesOneTPerEdgeRayIsCaught) {
   const Case c = parseInline(edgeCase("[{if: {odd: primitive_id}, then: [ignore]}]"));
   const Plan plan = derivePlan(c);
   Results model = runOnModel(c, plan, ModelOptions{ModelTier::Exact, 1});
   const float own_t =
       reinterpret_cast<const float&>(model.records[findRecordField("hit_t")->offset]);
-  for (RayAmbiguity& a : model.ambiguous)
+  for (RayAmbiguity& a : model.ambiguous) {
+    a.replays.clear();
     for (Candidate& k : a.candidates) k.t = own_t;
+  }
   bool caught = false;
   for (const LegalDevice& d : judgeLegalDevices(c, plan, model, 1))
     caught = caught || (d.false_alarm && d.rule == "R-PREC" && d.ray == 0);

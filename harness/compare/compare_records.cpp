@@ -34,13 +34,17 @@ std::string fieldRule(const std::string& field) {
   return it == rules.end() ? "R-BUILTIN" : it->second;
 }
 
+// What checkAmbiguous made of the device's answer: one of the legal ones
+// (or one it cannot tell), a finding (wrongs, leak or passed), or one outside
+// the legal set that no rule forbids (a miss through a mesh's outer border).
+enum class DeviceAnswer { Legal, Finding, Outside };
+
 // The device's answer for an ambiguous ray, checked against the legal set.
 // A hit only a device passing between the triangles of a shared edge or
-// vertex reaches goes to `passed` (R-WATERTIGHT, a "should"). True where the
-// ray went to a finding (wrongs, leak or passed).
-bool checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
-                    std::map<std::string, FindingBuilder>& wrongs, FindingBuilder& leak,
-                    FindingBuilder& passed) {
+// vertex reaches goes to `passed` (R-WATERTIGHT, a "should").
+DeviceAnswer checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
+                            std::map<std::string, FindingBuilder>& wrongs, FindingBuilder& leak,
+                            FindingBuilder& passed) {
   // A trace that ran no miss shader hit, whether or not closest-hit ran
   // (SkipClosestHit, or a hit group without one, runs neither): a hit of
   // unknown identity. Unless a miss may run nothing too (an all-zero miss
@@ -51,7 +55,7 @@ bool checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
   // miss run and no hit field: nothing tells a hit from a miss, or which.
   if (c.pipeline.sbt_miss.empty() && fieldWord(rec, "closest_hit_runs") == 0 &&
       fieldWord(rec, "miss_runs") == 0 && !written(rec, recordFieldIndex("hit")))
-    return false;
+    return DeviceAnswer::Legal;
   const bool device_hit = fieldWord(rec, "closest_hit_runs") > 0 ||
                           (written(rec, recordFieldIndex("hit")) && fieldWord(rec, "hit") == 1) ||
                           (fieldWord(rec, "miss_runs") == 0 && !silent_miss);
@@ -76,7 +80,7 @@ bool checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
         a.reason == AmbiguityReason::Edge || a.reason == AmbiguityReason::Vertex;
     if (shared || (!miss_legal && watertight && !crossesBorderOnly(c, a))) {
       leak.addRay(a.ray);
-      return true;
+      return DeviceAnswer::Finding;
     }
     if (!miss_legal && !watertight) {
       const std::string rule = ruleForAmbiguity(a.reason);
@@ -87,15 +91,15 @@ bool checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
                              std::string(ambiguityReasonName(a.reason)) +
                              ") missed, and no legal answer is a miss"};
       wrong.addRay(a.ray);
-      return true;
+      return DeviceAnswer::Finding;
     }
-    return false;
+    return miss_legal ? DeviceAnswer::Legal : DeviceAnswer::Outside;
   }
   const bool behind_edge = std::any_of(a.leak_answers.begin(), a.leak_answers.end(),
                                        [&](const Candidate& k) { return hitFits(rec, k); });
   if (!legal && behind_edge) {
     passed.addRay(a.ray);
-    return true;
+    return DeviceAnswer::Finding;
   }
   if (!legal) {
     const std::string rule = ruleForAmbiguity(a.reason);
@@ -105,31 +109,28 @@ bool checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
                        "numerically ambiguous ray (" + std::string(ambiguityReasonName(a.reason)) +
                            ") hit a primitive that is not one of its legal answers"};
     wrong.addRay(a.ray);
-    return true;
+    return DeviceAnswer::Finding;
   }
-  return false;
+  return DeviceAnswer::Legal;
 }
 
-// An ambiguous ray whose legal answers the model replayed: the device's
-// record must be one of them as a whole. One that is none goes to `wrongs`,
-// unless checkAmbiguous finds why first (a leak, a hit behind a shared
-// edge, an answer outside the legal set). True where the replays judged it.
-bool checkReplays(const Case& c, const RayAmbiguity& a, const uint32_t* d,
-                  const std::vector<const RecordField*>& fields, const RayBounds& bounds,
-                  std::map<std::string, FindingBuilder>& wrongs, FindingBuilder& leak,
-                  FindingBuilder& passed) {
-  if (a.replays.empty() || a.replays[0].record.size() != recordWords()) return false;
-  const RecordField* f = fieldNoReplayLeaves(a, d, fields, bounds);
-  if (!f || checkAmbiguous(c, a, d, wrongs, leak, passed)) return true;
-  FindingBuilder& b = wrongs[std::string("replay ") + f->name];
+// An ambiguous ray whose legal answers the model replayed (each with a
+// record) whose record is one of them as a whole.
+bool hasReplays(const RayAmbiguity& a) {
+  return !a.replays.empty() && a.replays[0].record.size() == recordWords();
+}
+
+// A record that is none of the replays of the legal answers it took.
+void addUnreplayed(const Case& c, const RayAmbiguity& a, const RecordField& f,
+                   std::map<std::string, FindingBuilder>& wrongs) {
+  FindingBuilder& b = wrongs[std::string("replay ") + f.name];
   if (b.finding.rule.empty())
-    b.finding = {Status::Fail, ruleForField(f->name, c.rules),
-                 std::string("per-ray field '") + f->name +
+    b.finding = {Status::Fail, ruleForField(f.name, c.rules),
+                 std::string("per-ray field '") + f.name +
                      "' is what none of the legal answers of a numerically ambiguous ray (" +
                      ambiguityReasonName(a.reason) +
                      ") leaves, each replayed through the launch ray (the nearest differs there)"};
   b.addRay(a.ray);
-  return true;
 }
 
 }  // namespace
@@ -173,9 +174,21 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
     const FieldMask repeat_fields = repeated == repeat.end() ? 0 : repeated->second;
     if (const auto it = ambiguous.find(ray); it != ambiguous.end()) {
       if (repeat_fields) continue;  // its legal answers and what repetition changes: not judged
-      if (checkReplays(c, *it->second, d, fields, bounds, wrongs, leak, passed)) continue;
-      checkAmbiguous(c, *it->second, d, wrongs, leak, passed);
-      checkAmbiguousShared(c, shape, *it->second, d, m, fields, bounds, wrongs);
+      // Held to its legal answers as a whole where the model replayed them:
+      // a record that is one of them is legal; one that is none fails,
+      // unless it is a leak or an answer outside the legal set that no rule
+      // forbids (then held to what every answer shares, as without replays).
+      const RayAmbiguity& a = *it->second;
+      const RecordField* unreplayed =
+          hasReplays(a) ? fieldNoReplayLeaves(a, d, fields, bounds) : nullptr;
+      if (hasReplays(a) && !unreplayed) continue;
+      const DeviceAnswer answer = checkAmbiguous(c, a, d, wrongs, leak, passed);
+      if (answer == DeviceAnswer::Finding) continue;
+      if (unreplayed && answer == DeviceAnswer::Legal) {
+        addUnreplayed(c, a, *unreplayed, wrongs);
+        continue;
+      }
+      checkAmbiguousShared(c, shape, a, d, m, fields, bounds, wrongs);
       continue;
     }
     for (const RecordField* f : fields) {

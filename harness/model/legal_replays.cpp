@@ -17,15 +17,14 @@ LegalReplay Machine::replayOutcome(const LaunchState::Saved& own) const {
   return r;
 }
 
-void Machine::replayLegalAnswers(uint32_t i, size_t ambiguity) {
+void Machine::replayLegalAnswers(uint32_t i, size_t ambiguity, ReplayScript& script) {
   const LaunchState::Saved own = state_.save();
   const size_t undefined_before = state_.undefined.size();
-  ReplayScript script;
-  state_.replay = &script;
-  std::vector<LegalReplay> replays;
+  std::vector<LegalReplay> replays{replayOutcome(own)};
   bool complete = true;
-  size_t runs = 0;
-  do {
+  size_t runs = 1;
+  state_.replay = &script;
+  while (complete && script.advance()) {
     if (++runs > kMaxReplayRuns) {
       complete = false;
       break;
@@ -34,18 +33,12 @@ void Machine::replayLegalAnswers(uint32_t i, size_t ambiguity) {
     if (state_.rec) std::fill(state_.rec, state_.rec + recordWords(), 0u);
     runRay(i);
     // A legal answer whose path is undefined makes the ray undefined (R-UB).
-    if (state_.undefined.size() > undefined_before) {
-      complete = false;
-      break;
-    }
+    if (state_.undefined.size() > undefined_before) complete = false;
     LegalReplay r = replayOutcome(own);
     if (std::find(replays.begin(), replays.end(), r) == replays.end())
       replays.push_back(std::move(r));
-    if (replays.size() > kMaxLegalReplays) {
-      complete = false;
-      break;
-    }
-  } while (script.advance());
+    if (replays.size() > kMaxLegalReplays) complete = false;
+  }
   state_.replay = nullptr;
   const bool undefined = state_.undefined.size() > undefined_before;
   state_.undefined.resize(undefined ? undefined_before + 1 : undefined_before);

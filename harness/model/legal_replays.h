@@ -1,9 +1,11 @@
 // Exact tier: each legal answer of an ambiguous launch ray replayed through
-// the whole launch ray (Machine::replayLegalAnswers, legal_replays.cpp). A
+// the whole launch ray (Machine::replayLegalAnswers, legal_replays.cpp). The
+// model's own run is the first replay (every trace its actual answer); a
 // replay runs the ray again with a script saying which legal answer each of
 // its ambiguous traces takes, in the order they are met; the scripts are
 // every combination, each trace's answers as the choices before it leave
-// them (an odometer over a tree). Each distinct outcome (record, counters)
+// them (an odometer over a tree), and a trace before the one whose choice
+// changed is not classified again. Each distinct outcome (record, counters)
 // is kept in RayAmbiguity::replays; the judge holds the device's record to
 // one of them as a whole (compare/compare_records.cpp).
 #pragma once
@@ -11,6 +13,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <vector>
+
+#include "model/model_what_if.h"
 
 namespace rayspec {
 
@@ -23,13 +27,42 @@ struct ReplayScript {
   // The answer each ambiguous trace takes, in the order met (beyond the
   // list: 0, the trace's actual run).
   std::vector<uint32_t> choices;
-  // How many answers each ambiguous trace of this run had.
+  // How many answers each ambiguous trace of this run had, and which of the
+  // run's classified traces it was.
   std::vector<uint32_t> options;
+  std::vector<size_t> ambiguous_at;
+  // The legal answers of each classified trace of the run (none: a clear
+  // trace), kept for the next run up to the trace whose choice it changes:
+  // the same launch ray, the same choices before, the same classification.
+  std::vector<std::vector<WhatIf>> known;
+  size_t traces = 0;  // classified traces so far in this run
+  // The model's own run (the choices all 0): its first ambiguous trace is
+  // the ray's RayAmbiguity.
+  bool own = true;
 
-  // The answer the next ambiguous trace takes, of `answers`.
+  // A new launch ray's own run (the vectors keep their capacity).
+  void reset() {
+    choices.clear();
+    options.clear();
+    ambiguous_at.clear();
+    known.clear();
+    traces = 0;
+    own = true;
+  }
+  // The legal answers of the trace now, if an earlier run classified it.
+  const std::vector<WhatIf>* knownAnswers() const {
+    return traces < known.size() ? &known[traces] : nullptr;
+  }
+  // The trace now classified, with its legal answers (none: clear).
+  void classified(const std::vector<WhatIf>& answers) {
+    if (traces == known.size()) known.push_back(answers);
+    ++traces;
+  }
+  // The answer the trace just classified takes, of `answers`.
   size_t choose(size_t answers) {
     const size_t j = options.size();
     options.push_back(static_cast<uint32_t>(answers));
+    ambiguous_at.push_back(traces - 1);
     const size_t c = j < choices.size() ? choices[j] : 0;
     return c < answers ? c : 0;
   }
@@ -41,7 +74,11 @@ struct ReplayScript {
       if (choices[j] + 1 < options[j]) {
         ++choices[j];
         choices.resize(j + 1);
+        known.resize(ambiguous_at[j] + 1);
         options.clear();
+        ambiguous_at.clear();
+        traces = 0;
+        own = false;
         return true;
       }
     return false;

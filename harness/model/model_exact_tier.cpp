@@ -451,6 +451,8 @@ void TraceClassifier::boundT() {
 
 std::optional<WhatIf> TraceClassifier::finish() {
   if (!reason_) reason_ = tie_reason_;
+  ReplayScript* script = m_.st_.replay;
+  if (script) script->classified(reason_ ? replay_hows_ : std::vector<WhatIf>{});
   if (!reason_) return std::nullopt;
   amb_.reason = *reason_;
   // A leak answer that is also a legal one is legal.
@@ -460,18 +462,32 @@ std::optional<WhatIf> TraceClassifier::finish() {
       leak_hows_.erase(leak_hows_.begin() + static_cast<long>(k));
     }
   std::optional<WhatIf> chosen;
-  if (ReplayScript* script = m_.st_.replay) {
-    // A legal replay (legal_replays.cpp): this trace takes the answer its
-    // script chooses; the model's own ambiguity of the ray is kept already.
+  if (script && (!script->own || m_.st_.ray_ambiguous)) {
+    // A legal replay (legal_replays.cpp), or a later ambiguous trace of the
+    // model's own run: this trace takes the answer its script chooses; the
+    // ray's ambiguity is its first ambiguous trace's, kept already.
     chosen = replay_hows_[script->choose(replay_hows_.size())];
     m_.st_.ray_ambiguous = true;
     return chosen;
   }
+  if (script) script->choose(replay_hows_.size());  // the own run's first: its actual answer
   if (const auto taken = m_.sh_.fault_seam.answerTaken(hows_.size(), leak_hows_.size()))
     chosen = taken->leak ? leak_hows_[taken->index] : hows_[taken->index];
   m_.st_.ambiguous.push_back(std::move(amb_));
   m_.st_.ray_ambiguous = true;
   return chosen;
+}
+
+bool ModelTracer::replayKnownTrace(std::optional<WhatIf>& chosen) {
+  ReplayScript* script = st_.replay;
+  const std::vector<WhatIf>* known = script ? script->knownAnswers() : nullptr;
+  if (!known) return false;
+  script->classified(*known);
+  chosen.reset();
+  if (known->empty()) return true;
+  chosen = (*known)[script->choose(known->size())];
+  st_.ray_ambiguous = true;
+  return true;
 }
 
 std::optional<WhatIf> ModelTracer::classifyTrace(

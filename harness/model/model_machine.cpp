@@ -24,11 +24,18 @@ void Machine::runRays(uint32_t begin, uint32_t end) {
   const Rays& rays = sh_.c->rays;
   for (uint32_t i = begin; i < end; ++i) {
     if (!rays.same && i + 8 < end) __builtin_prefetch(&rays.rays[i + 8]);  // rays stream in
-    if (sh_.replays) counters_before_ = state_.counters;
-    const size_t ambiguous_before = state_.ambiguous.size();
-    runRay(i);
-    if (sh_.replays && state_.ambiguous.size() > ambiguous_before && !state_.ray_undefined)
-      replayLegalAnswers(i, ambiguous_before);
+    if (!sh_.replays) {
+      runRay(i);
+    } else {
+      counters_before_ = state_.counters;
+      const size_t ambiguous_before = state_.ambiguous.size();
+      script_.reset();  // the model's own run, the first replay
+      state_.replay = &script_;
+      runRay(i);
+      state_.replay = nullptr;
+      if (state_.ambiguous.size() > ambiguous_before && !state_.ray_undefined)
+        replayLegalAnswers(i, ambiguous_before, script_);
+    }
     if (++state_.x == width) {
       state_.x = 0;
       ++state_.y;

@@ -42,9 +42,10 @@ class alignas(64) Machine {
   // Raygen for launch ray i.
   void runRay(uint32_t i);
   // Exact tier: each legal answer of ambiguous launch ray i replayed through
-  // the ray, into its RayAmbiguity (legal_replays.cpp); the ray's own record,
-  // counters and error stay the model's own.
-  void replayLegalAnswers(uint32_t i, size_t ambiguity);
+  // the ray, into its RayAmbiguity (legal_replays.cpp), after the model's own
+  // run (`script`: its choices, all 0); the ray's own record, counters and
+  // error stay the model's own.
+  void replayLegalAnswers(uint32_t i, size_t ambiguity, ReplayScript& script);
   LegalReplay replayOutcome(const LaunchState::Saved& own) const;
 
   const ModelShared& sh_;
@@ -55,6 +56,7 @@ class alignas(64) Machine {
   HitProtocol hits_;
   ModelTracer tracer_;
   std::vector<uint64_t> counters_before_;  // the counters before the launch ray now
+  ReplayScript script_;                    // the launch ray's replays (legal_replays.h)
 };
 
 }  // namespace rayspec

@@ -93,6 +93,10 @@ class ModelTracer {
                                       const std::vector<std::pair<size_t, double>>& reports,
                                       const std::vector<ShaderDecision>& shader_unsure,
                                       const Payload& payload_in);
+  // A legal replay's trace that an earlier run of the same choices
+  // classified (legal_replays.h): `chosen` as its script says, and true; false
+  // where the trace is to be classified.
+  bool replayKnownTrace(std::optional<WhatIf>& chosen);
   bool anyHitMayTerminate(const Traversal& tr, const std::vector<ModelCandidate>& cands) const;
   // `leaks`: the answers of devices passing between the triangles of a
   // shared edge or vertex (no triangle of a group of two or more hit).

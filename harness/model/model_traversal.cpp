@@ -266,8 +266,10 @@ Committed ModelTracer::traverse(const TraceRay& r, uint32_t flags, uint32_t dept
   const Payload payload_in = payload;  // for the exact tier's what-if variants
   // A legal device's other answer (ModelFaultSeam) replays the trace from here.
   std::optional<LaunchState::Saved> before;
-  // So does a legal replay (legal_replays.h), at every ambiguous trace.
-  if (tr.exact && ((sh_.fault_seam.answersOtherwise() && !st_.ray_ambiguous) || st_.replay))
+  // So does a legal replay (legal_replays.h; the model's own run takes each
+  // trace's actual answer).
+  if (tr.exact && ((sh_.fault_seam.answersOtherwise() && !st_.ray_ambiguous) ||
+                   (st_.replay && !st_.replay->own)))
     before = st_.save();
   if (query && tr.exact) query->frame_before = saveQueryFrame(*query);
 
@@ -307,8 +309,9 @@ Committed ModelTracer::traverse(const TraceRay& r, uint32_t flags, uint32_t dept
   }
 
   if (cands && tr.exact && (!st_.ray_ambiguous || st_.replay)) {
-    const std::optional<WhatIf> chosen =
-        classifyTrace(tr, *cands, reports, shader_unsure, payload_in);
+    std::optional<WhatIf> chosen;
+    if (!replayKnownTrace(chosen))
+      chosen = classifyTrace(tr, *cands, reports, shader_unsure, payload_in);
     if (chosen && before && !chosen->actual) {
       st_.restore(*before);
       if (query) restoreQueryFrame(*query, query->frame_before);

@@ -1,6 +1,7 @@
 #include "mutate/legal_devices.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <string_view>
 
@@ -48,6 +49,40 @@ std::vector<Variant> answerVariants(const Case& c, const Plan& plan, const Resul
                          base,
                          "every ambiguous ray takes legal answer " + std::to_string(j) +
                              " (modulo its number of answers)"));
+  return out;
+}
+
+// replay-<j>: every ambiguous ray takes its j-th replayed legal answer
+// (RayAmbiguity::replays, modulo their number): its record as a whole, the
+// images' pixels from it, and the counters as that answer moves them.
+Results replayedAnswers(const Results& base, const Results& model, size_t j) {
+  Results d = base;
+  const uint32_t words = recordWords();
+  for (const RayAmbiguity& a : model.ambiguous) {
+    if (a.replays.empty() || a.replays[0].record.size() != words) continue;
+    const LegalReplay& r = a.replays[j % a.replays.size()];
+    std::copy(r.record.begin(), r.record.end(), &d.records[size_t{a.ray} * words]);
+    for (Image& im : d.images) {
+      const RecordField* f = findRecordField(im.field);
+      if (!f) continue;
+      for (uint32_t k = 0; k < im.channels; ++k)
+        im.texels[size_t{a.ray} * im.channels + k] =
+            k < f->words ? r.record[f->offset + k] : (k == 3 ? std::bit_cast<uint32_t>(1.0f) : 0u);
+    }
+    for (const auto& [name, move] : r.counter_moves)
+      d.counters[name] = static_cast<uint64_t>(static_cast<int64_t>(d.counters[name]) + move);
+  }
+  return d;
+}
+
+std::vector<Variant> replayVariants(const Results& model, const Results& base) {
+  size_t most = 0;
+  for (const RayAmbiguity& a : model.ambiguous) most = std::max(most, a.replays.size());
+  std::vector<Variant> out;
+  for (size_t j = 1; j < std::min<size_t>(most, kMaxAnswers); ++j)
+    out.push_back(madeBy("replay-" + std::to_string(j), replayedAnswers(base, model, j), base,
+                         "every ambiguous ray leaves its legal answer " + std::to_string(j) +
+                             " replayed through the launch ray (modulo their number)"));
   return out;
 }
 
@@ -158,6 +193,7 @@ std::vector<LegalDevice> judgeLegalDevices(const Case& c, const Plan& plan, cons
   std::vector<Variant> variants;
   if (!model.records.empty()) {
     variants = answerVariants(c, plan, model, base, threads);
+    for (Variant& v : replayVariants(model, base)) variants.push_back(std::move(v));
     variants.push_back(passBetween(c, plan, model, base, threads));
     variants.push_back(aabbNeighbours(c, plan, base, threads));
     variants.push_back(toleranceBound(base, model));

@@ -5,6 +5,9 @@
 //   answer-<j>          every ambiguous ray takes its j-th legal answer, its
 //                       shaders run as that answer makes them run (the model
 //                       replays the trace so: fault/planted_fault.h)
+//   replay-<j>          every ambiguous ray leaves its j-th legal answer
+//                       as the model replayed it through the launch ray
+//                       (its whole record, the counters as it moves them)
 //   pass-between-edges  every ray through a shared edge or vertex passes
 //                       between its triangles where that changes the answer
 //                       (R-WATERTIGHT, a "should": QualityWarning at most)
