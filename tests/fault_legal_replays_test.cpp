@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <set>
 
 #include "compare/compare_results.h"
 #include "fault/planted_fault.h"
@@ -37,12 +38,12 @@ pipeline:
     - - record: {value: 1}
   hit_groups:
     - closest_hit:
-        - record: {value: instance_custom_index}
+        - record: {value: instance_custom_index, primitive_id: primitive_id}
         - if: {eq: [instance_custom_index, 5]}
           then: [{count: five}]
           else: [{count: six}]
 outputs:
-  per_ray: [value]
+  per_ray: [value, primitive_id]
   counters: [five, six]
 )";
 
@@ -127,19 +128,21 @@ TEST(LegalReplays, CountersMoveOnlyAsTheReplaysMoveThem) {
   EXPECT_EQ(compareResults(j.c, j.plan, both, j.model).status, Status::Fail);
 }
 
-// Issue 62 class 1: the launch's closest-hit records the primitive and a
-// nested trace's closest-hit the instance of another hit. A record mixing
-// two hits is whole when it is one of the replays; the model's own run
-// judged as a device passes, and so does each legal answer.
+// Issue 62 class 1: the launch's closest-hit records the primitive (1) and
+// a nested trace's closest-hit the instance of another hit, a tie of two
+// instances of primitive 0. The record mixes two hits and fits no legal
+// answer of the nested trace by its identity fields (the old judge failed
+// the model's own results so); it is whole when it is one of the replays:
+// the model's own run judged as a device passes, and so does each legal
+// answer, and a third instance id fails.
 TEST(LegalReplays, IdentityFieldsOfTwoTracesAreJudgedAsOneRecord) {
-  TieRun j = tieRun();
   Case c = parseInline(R"(rules: [R-TIE]
 scene:
   blas:
     tri:
-      - triangles: {vertices: [[-5, -5, 0], [5, -5, 0], [0, 5, 0]]}
+      - triangles: {vertices: [[40, -5, 0], [50, -5, 0], [45, 5, 0], [-5, -5, 0], [5, -5, 0], [0, 5, 0]]}
     two:
-      - triangles: {vertices: [[-5, -5, -4], [5, -5, -4], [0, 5, -4], [-5, -5, -4], [5, -5, -4], [0, 5, -4]]}
+      - triangles: {vertices: [[-5, -5, -4], [5, -5, -4], [0, 5, -4]]}
   instances:
     - {blas: tri}
     - {blas: two}
@@ -169,12 +172,37 @@ outputs:
   ASSERT_EQ(model.ambiguous.size(), 1u);
   ASSERT_GE(model.ambiguous[0].replays.size(), 2u);
   EXPECT_EQ(compareResults(c, plan, perfectDevice(c, model), model).status, Status::Pass);
+  EXPECT_EQ(word(model, 0, "primitive_id"), 1u);
+  std::set<uint32_t> instances;
   for (const LegalReplay& r : model.ambiguous[0].replays) {
     Results d = perfectDevice(c, model);
     std::copy(r.record.begin(), r.record.end(), recordOf(d, 0));
+    instances.insert(r.record[findRecordField("instance_id")->offset]);
     EXPECT_EQ(compareResults(c, plan, d, model).status, Status::Pass);
   }
-  (void)j;
+  EXPECT_EQ(instances, (std::set<uint32_t>{1, 2}));
+  Results third = perfectDevice(c, model);
+  recordOf(third, 0)[findRecordField("instance_id")->offset] = 0;
+  EXPECT_EQ(compareResults(c, plan, third, model).status, Status::Fail);
+}
+
+// Issue 62 class 4: both answers of the tie record primitive 0, so the
+// identity fields cannot tell them apart; the old judge took the device's
+// record for the model's own answer and held its custom index to the
+// model's. The other answer, recorded whole, passes.
+TEST(LegalReplays, IdentityFieldsEveryAnswerSharesDoNotPickTheAnswer) {
+  TieRun j = tieRun();
+  ASSERT_EQ(j.model.ambiguous.size(), 1u);
+  ASSERT_EQ(j.model.ambiguous[0].replays.size(), 2u);
+  for (const LegalReplay& r : j.model.ambiguous[0].replays)
+    EXPECT_EQ(r.record[findRecordField("primitive_id")->offset], 0u);
+  Results other = perfectDevice(j.c, j.model);
+  const LegalReplay& r = j.model.ambiguous[0].replays[1];
+  std::copy(r.record.begin(), r.record.end(), recordOf(other, 0));
+  for (const auto& [name, move] : r.counter_moves)
+    other.counters[name] = static_cast<uint64_t>(static_cast<int64_t>(other.counters[name]) + move);
+  const Verdict v = compareResults(j.c, j.plan, other, j.model);
+  EXPECT_EQ(v.status, Status::Pass) << v.headline();
 }
 
 }  // namespace

@@ -151,7 +151,7 @@ uint64_t leakSlack(const Case& c, const std::string& name, const Results& device
   return leaky.ambiguous.empty() ? 0 : answersSlack(c, name, leaky);
 }
 
-void compareCounters(const Case& c, const Results& device, const Results& model,
+void compareCounters(const Case& c, const Plan& plan, const Results& device, const Results& model,
                      size_t undefined_rays, Verdict& v) {
   auto modes = counterModes(c);
   const std::map<std::string, CounterSource> sources = counterSources(c);
@@ -212,7 +212,7 @@ void compareCounters(const Case& c, const Results& device, const Results& model,
       v.add(f);
     }
   }
-  if (all_within) checkMovesTogether(c, together, model, v);
+  if (all_within) checkMovesTogether(c, plan, device, together, model, v);
 }
 
 }  // namespace rayspec

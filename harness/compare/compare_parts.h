@@ -19,7 +19,7 @@ namespace rayspec {
 // (the model names them) was rejected on the device side (compare_rejections.cpp).
 void compareRejections(const Case& c, const Results& device, const Results& model, Verdict& v);
 
-void compareCounters(const Case& c, const Results& device, const Results& model,
+void compareCounters(const Case& c, const Plan& plan, const Results& device, const Results& model,
                      size_t undefined_rays, Verdict& v);
 // `undefined`: rays left out (R-UB), as in compareAnyHitRuns.
 void compareRecords(const Case& c, const Plan& plan, const Results& device, const Results& model,
@@ -62,6 +62,9 @@ struct RayBounds {
 // within the field's tolerance, widened to the ray's bounds).
 bool sameField(const RecordField& f, const uint32_t* d, const uint32_t* m, const RayBounds& bounds);
 
+// Whether the device's record `d` is replay r's in every field of `fields`.
+bool replayMatches(const LegalReplay& r, const uint32_t* d,
+                   const std::vector<const RecordField*>& fields, const RayBounds& bounds);
 // An ambiguous ray with its legal answers replayed (RayAmbiguity::replays,
 // each with a record): nullptr where the device's record equals one of them
 // in every field of `fields` (as sameField compares); else the first field
@@ -74,8 +77,12 @@ const RecordField* fieldNoReplayLeaves(const RayAmbiguity& a, const uint32_t* d,
 // `device_moves`, each one's device count less the model's, must be the sum
 // of one replay's moves per ambiguous ray; a Fail where it is none (nothing
 // where the sums are too many to follow).
-void checkMovesTogether(const Case& c, const std::map<std::string, int64_t>& device_moves,
-                        const Results& model, Verdict& v);
+// A ray whose device record is one of its replays moves the counters only
+// as those replays do (the record tells which answer the device took); a
+// ray whose record is none of them, or a device without records: nothing.
+void checkMovesTogether(const Case& c, const Plan& plan, const Results& device,
+                        const std::map<std::string, int64_t>& device_moves, const Results& model,
+                        Verdict& v);
 // Collects the rays breaking one rule into one finding.
 struct FindingBuilder {
   Finding finding;

@@ -120,12 +120,21 @@ bool hasReplays(const RayAmbiguity& a) {
   return !a.replays.empty() && a.replays[0].record.size() == recordWords();
 }
 
+// The rules a record that is none of the replays breaks: those the field
+// evidences and the ambiguity's own (the device answered outside its legal
+// set), those the case claims; else the field's own rule.
+std::string unreplayedRule(const Case& c, const RayAmbiguity& a, const std::string& field) {
+  std::vector<std::string> evidenced = rulesEvidencedByField(field);
+  evidenced.push_back(ruleForAmbiguity(a.reason));
+  return findingRule(evidenced, c.rules, fieldRule(field));
+}
+
 // A record that is none of the replays of the legal answers it took.
 void addUnreplayed(const Case& c, const RayAmbiguity& a, const RecordField& f,
                    std::map<std::string, FindingBuilder>& wrongs) {
   FindingBuilder& b = wrongs[std::string("replay ") + f.name];
   if (b.finding.rule.empty())
-    b.finding = {Status::Fail, ruleForField(f.name, c.rules),
+    b.finding = {Status::Fail, unreplayedRule(c, a, f.name),
                  std::string("per-ray field '") + f.name +
                      "' is what none of the legal answers of a numerically ambiguous ray (" +
                      ambiguityReasonName(a.reason) +

@@ -88,7 +88,7 @@ Verdict compareResults(const Case& c, const Plan& plan, const Results& device,
   for (const UndefinedRay& u : model.undefined) undefined.insert(u.ray);
   std::set<uint32_t> masked = ambiguous;
   masked.insert(undefined.begin(), undefined.end());
-  compareCounters(c, device, model, undefined.size(), v);
+  compareCounters(c, plan, device, model, undefined.size(), v);
   compareRecords(c, plan, device, model, undefined, v);
   compareAnyHitRuns(c, device, model, undefined, v);
   compareImages(plan, device, model, masked, v);

@@ -1,12 +1,15 @@
 // Exact counters judged together against the replays of the ambiguous
 // rays' legal answers (RayAmbiguity::replays): one answer per ray moves
 // every counter at once, so per-counter ranges are not enough (one ray
-// counted on neither of its two branches stays within each range).
+// counted on neither of its two branches stays within each range), and the
+// answer a ray's record shows is the one that moves them.
 #include <set>
 #include <vector>
 
 #include "compare/compare_parts.h"
 #include "compare/finding_rules.h"
+#include "plan/plan.h"
+#include "results/record_layout.h"
 
 namespace rayspec {
 namespace {
@@ -17,10 +20,18 @@ constexpr size_t kMaxMoveSums = 4096;
 
 using Moves = std::vector<int64_t>;  // one per judged counter, in their order
 
-// The moves of each of a ray's replays over `names` (the model's own, none, among them).
-std::set<Moves> rayMoves(const RayAmbiguity& a, const std::vector<std::string>& names) {
-  std::set<Moves> out{Moves(names.size(), 0)};
-  for (const LegalReplay& r : a.replays) {
+// The moves over `names` of each of a ray's replays that its device record
+// `d` is; none where it is none of them (a leak, an answer outside the
+// legal set, one judged by its record already: its moves are unknown).
+std::set<Moves> rayMoves(const RayAmbiguity& a, const std::vector<std::string>& names,
+                         const uint32_t* d, const std::vector<const RecordField*>& fields) {
+  std::vector<const LegalReplay*> taken;
+  for (const LegalReplay& r : a.replays)
+    if (r.record.size() == recordWords() && replayMatches(r, d, fields, RayBounds{}))
+      taken.push_back(&r);
+  std::set<Moves> out;
+  for (const LegalReplay* rp : taken) {
+    const LegalReplay& r = *rp;
     Moves m(names.size(), 0);
     for (size_t k = 0; k < names.size(); ++k)
       if (const auto it = r.counter_moves.find(names[k]); it != r.counter_moves.end())
@@ -32,9 +43,14 @@ std::set<Moves> rayMoves(const RayAmbiguity& a, const std::vector<std::string>& 
 
 }  // namespace
 
-void checkMovesTogether(const Case& c, const std::map<std::string, int64_t>& device_moves,
-                        const Results& model, Verdict& v) {
-  if (device_moves.size() < 2) return;  // one counter: its range says it all
+void checkMovesTogether(const Case& c, const Plan& plan, const Results& device,
+                        const std::map<std::string, int64_t>& device_moves, const Results& model,
+                        Verdict& v) {
+  // Without records (or bundles without the replays' records) nothing tells
+  // which answer a ray took, nor whether it leaked (leakSlack).
+  if (device_moves.empty() || device.records.empty()) return;
+  const std::vector<const RecordField*> fields = comparedRecordFields(plan);
+  const uint32_t words = recordWords();
   std::vector<std::string> names;
   Moves want;
   for (const auto& [name, move] : device_moves) {
@@ -43,8 +59,11 @@ void checkMovesTogether(const Case& c, const std::map<std::string, int64_t>& dev
   }
   std::set<Moves> sums{Moves(names.size(), 0)};
   for (const RayAmbiguity& a : model.ambiguous) {
-    const std::set<Moves> moves = rayMoves(a, names);
-    if (moves.size() < 2) continue;
+    if ((size_t{a.ray} + 1) * words > device.records.size()) return;
+    const std::set<Moves> moves =
+        rayMoves(a, names, &device.records[size_t{a.ray} * words], fields);
+    if (moves.empty()) return;  // a ray whose moves are unknown
+    if (moves.size() == 1 && *moves.begin() == Moves(names.size(), 0)) continue;
     std::set<Moves> next;
     for (const Moves& s : sums)
       for (const Moves& m : moves) {

@@ -4,6 +4,13 @@
 
 namespace rayspec {
 
+bool replayMatches(const LegalReplay& r, const uint32_t* d,
+                   const std::vector<const RecordField*>& fields, const RayBounds& bounds) {
+  for (const RecordField* f : fields)
+    if (!sameField(*f, d, r.record.data(), bounds)) return false;
+  return true;
+}
+
 const RecordField* fieldNoReplayLeaves(const RayAmbiguity& a, const uint32_t* d,
                                        const std::vector<const RecordField*>& fields,
                                        const RayBounds& bounds) {
