@@ -2,28 +2,10 @@
 // commits, termination and getters, in every tier; generate outside its
 // interval is undefined; the fault seam's ray query knobs each change what
 // a case observes.
-#include "model_support.h"
-#include "suite_cases.h"
+#include "model_suite_runs.h"
 
 namespace rayspec::model_test {
 namespace {
-
-Results runSuiteCase(const char* name, ModelTier tier, const ModelFaults& faults = {}) {
-  const Case c = suiteCaseFile(name);
-  ModelOptions o;
-  o.tier = tier;
-  o.threads = 1;
-  o.faults = faults;
-  return runOnModel(c, derivePlan(c), o);
-}
-
-using V = std::vector<uint32_t>;
-
-V column(const Results& r, const char* field, uint32_t rays) {
-  V v;
-  for (uint32_t i = 0; i < rays; ++i) v.push_back(word(r, i, field));
-  return v;
-}
 
 TEST(ModelRayQuery, OffersNonOpaqueCandidatesInTheInterval) {
   for (ModelTier tier : kTiers) {

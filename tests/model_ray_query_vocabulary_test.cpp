@@ -2,28 +2,10 @@
 // the proceed loop, a query passed to a function, top levels named by a
 // dynamic index. Each in every tier, with the fault that breaks it and the
 // errors of its parse and check paths.
-#include "model_support.h"
-#include "suite_cases.h"
+#include "model_suite_runs.h"
 
 namespace rayspec::model_test {
 namespace query_vocabulary {  // named: the unity build joins model_ray_query_test's helpers
-
-Results runSuiteCase(const char* name, ModelTier tier, const ModelFaults& faults = {}) {
-  const Case c = suiteCaseFile(name);
-  ModelOptions o;
-  o.tier = tier;
-  o.threads = 1;
-  o.faults = faults;
-  return runOnModel(c, derivePlan(c), o);
-}
-
-using V = std::vector<uint32_t>;
-
-V column(const Results& r, const char* field, uint32_t rays) {
-  V v;
-  for (uint32_t i = 0; i < rays; ++i) v.push_back(word(r, i, field));
-  return v;
-}
 
 TEST(ModelRayQueryVocabulary, BreakLeavesTheLoopKeepingWhatIsCommitted) {
   for (ModelTier tier : kTiers) {

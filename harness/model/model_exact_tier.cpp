@@ -595,6 +595,14 @@ struct Digest {
     add(p.location);
     add(p.words);
   }
+  void add(const CallData& k) {
+    add(k.color);
+    add(k.position);
+    add(k.normal);
+    add(k.value);
+    add(k.location);
+    add(k.words);
+  }
   void add(const Val& v) {
     add(v.f);
     add(v.u);
@@ -625,13 +633,7 @@ uint64_t ModelTracer::effectOf(const Committed& b, const Payload& payload,
   if (query && query->env) {
     for (const Val& v : query->env->locals) d.add(v);
     d.add(query->env->child);
-    const CallData& k = query->env->callee;
-    d.add(k.color);
-    d.add(k.position);
-    d.add(k.normal);
-    d.add(k.value);
-    d.add(k.location);
-    d.add(k.words);
+    d.add(query->env->callee);
   }
   return d.h;
 }
