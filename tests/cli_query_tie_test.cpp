@@ -73,9 +73,13 @@ TEST_F(QueryTie, ACounterOnTheOtherAnswersBranchFails) {
   const std::string path = edited + "/" + kCase + "/device/results.json";
   auto results = nlohmann::json::parse(slurp(path));
   ASSERT_TRUE(results["counters"].contains("first")) << results.dump(1);
-  // The record keeps the answer the device took; the counter counts the other's branch.
-  std::swap(results["counters"]["first"], results["counters"]["second"]);
-  ASSERT_NE(results["counters"]["first"], results["counters"]["second"]);
+  // The records keep the answers the device took; one count of ray 0 moves
+  // to the other answer's branch (ray 1, clear, counts `second` either way).
+  const uint64_t first = results["counters"]["first"], second = results["counters"]["second"];
+  ASSERT_EQ(first + second, 2u) << results.dump(1);
+  const bool took_first = first == 1;
+  results["counters"]["first"] = took_first ? 0u : 1u;
+  results["counters"]["second"] = took_first ? 2u : 0u;
   std::ofstream(path) << results.dump(1);
   const std::string out = fresh("query-tie-counter");
   EXPECT_EQ(sh(cli::kBin + " run --no-validation -j 1 --device-results " + edited + caseArg(kCase) +
