@@ -6,23 +6,11 @@
 #include "model/model_engine.h"
 #include "mutate/kill_matrix.h"
 #include "mutate/mutate_case.h"
+#include "mutate_suite_case.h"
 #include "suite_cases.h"
 
 namespace rayspec {
 namespace {
-
-CaseMutation mutateQueryCase(const std::string& name) {
-  const std::vector<CaseFile> files = findCases(kSuiteCases, name);
-  EXPECT_EQ(files.size(), 1u) << name;
-  const ParseResult parsed = loadSuiteCase(files.at(0));
-  EXPECT_TRUE(parsed.value) << name;
-  const Case& c = *parsed.value;
-  const Plan plan = derivePlan(c);
-  const Results model = runOnModel(c, plan, {});
-  Results device = model;
-  device.backend = "vulkan";
-  return mutateCase(c, plan, device, model);
-}
 
 const MutantOutcome* findPlanted(const CaseMutation& m, const std::string& fault) {
   for (const MutantOutcome& o : m.mutants)
@@ -33,7 +21,7 @@ const MutantOutcome* findPlanted(const CaseMutation& m, const std::string& fault
 // Every order of the three triangles and the box commits the closest: the
 // faults that commit beyond it or drop the second confirm are killed.
 TEST(MutatePlanted, QueryFaultsKilledOnConfirmEveryCandidate) {
-  const CaseMutation m = mutateQueryCase("ray-query/confirm-every-candidate");
+  const CaseMutation m = mutateSuiteCase("ray-query/confirm-every-candidate");
   ASSERT_TRUE(m.judged) << m.not_judged;
   for (const char* fault :
        {"query-commit-beyond-committed-t", "query-confirm-only-first", "query-confirm-ignored",
@@ -53,7 +41,7 @@ TEST(MutatePlanted, QueryFaultsKilledOnConfirmEveryCandidate) {
 // The case's one ray is an exact tie (ambiguous): a fault that survives
 // there is a hole, not a legal survivor, and the matrix counts it so.
 TEST(MutatePlanted, ASurvivorOnAnAmbiguousRayIsAHole) {
-  const CaseMutation m = mutateQueryCase("ray-query/tie-two-instances");
+  const CaseMutation m = mutateSuiteCase("ray-query/tie-two-instances");
   ASSERT_TRUE(m.judged) << m.not_judged;
   const MutantOutcome* o = findPlanted(m, "query-custom-index-is-instance-id");
   ASSERT_NE(o, nullptr);

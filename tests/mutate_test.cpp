@@ -6,23 +6,11 @@
 #include "model/model_engine.h"
 #include "mutate/kill_matrix.h"
 #include "mutate/mutate_case.h"
+#include "mutate_suite_case.h"
 #include "suite_cases.h"
 
 namespace rayspec {
 namespace {
-
-CaseMutation mutateSuiteCase(const std::string& name) {
-  const std::vector<CaseFile> files = findCases(kSuiteCases, name);
-  EXPECT_EQ(files.size(), 1u) << name;
-  const ParseResult parsed = loadSuiteCase(files.at(0));
-  EXPECT_TRUE(parsed.value) << name;
-  const Case& c = *parsed.value;
-  const Plan plan = derivePlan(c);
-  const Results model = runOnModel(c, plan, {});
-  Results device = model;
-  device.backend = "vulkan";
-  return mutateCase(c, plan, device, model);
-}
 
 const MutantOutcome* find(const CaseMutation& m, const std::string& name) {
   for (const MutantOutcome& o : m.mutants)
