@@ -202,8 +202,8 @@ TEST(Shards, ShardsMergeIntoTheWholeRun) {
   EXPECT_NE(slurp(dir + "/bad.txt").find("I/N"), std::string::npos) << slurp(dir + "/bad.txt");
 }
 
-// The README's CI matrix recipe: each job a shard by GitLab's variables into
-// shard-$CI_NODE_INDEX, then `rayspec merge shard-*` into one report.
+// The README's CI matrix recipe ("Over several machines"): each job a shard
+// by GitLab's variables into shard-$CI_NODE_INDEX, then `rayspec merge shard-*` into one report.
 TEST(Shards, GitLabMatrixRecipeMergesIntoTheWholeRun) {
   const std::string dir = fresh("gitlab-matrix");
   const std::string run = kBin + " run --no-validation" + kThree;

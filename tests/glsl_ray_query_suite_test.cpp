@@ -33,7 +33,8 @@ size_t compileHosts(const std::string& name, const Case& c, std::set<std::string
   return hosts;
 }
 
-// The reasons a form refuses cases, counted (printed: the README's figures).
+// The reasons a form refuses cases, counted (printed: docs/ray-queries.md
+// lists them, references/runs/ keeps their counts).
 void tally(std::map<std::string, size_t>& reasons, const std::string& why) {
   std::string key = why;
   if (const size_t digits = key.find(" copies of"); digits != std::string::npos)

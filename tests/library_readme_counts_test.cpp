@@ -1,11 +1,15 @@
-// What the README says of the whole library is current or dated: every
-// "N cases" with N of a library's size (100 or more) either is the number of
-// cases in cases/ now, or sits in a paragraph that names its date (or follows
-// one that does, as a table follows its lead-in). A measurement of an older
-// library keeps its date; a figure that reads as current cannot go stale.
+// What the documentation says of the whole library is current or dated:
+// every "N cases" with N of a library's size (100 or more) in README.md,
+// docs/*.md and the measurements of references/runs/*.md either is the
+// number of cases in cases/ now, or sits in a paragraph that names its date
+// (or follows one that does, as a table follows its lead-in). A measurement
+// of an older library keeps its date; a figure that reads as current cannot
+// go stale.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -16,8 +20,21 @@
 namespace rayspec {
 namespace {
 
-std::vector<std::string> readmeParagraphs() {
-  std::ifstream in(RAYSPEC_SOURCE_DIR "/README.md");
+// README.md, then the markdown pages of docs/ and references/runs/, sorted.
+std::vector<std::string> documentationPages() {
+  std::vector<std::string> pages{RAYSPEC_SOURCE_DIR "/README.md"};
+  for (const char* dir : {RAYSPEC_SOURCE_DIR "/docs", RAYSPEC_SOURCE_DIR "/references/runs"}) {
+    std::vector<std::string> found;
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+      if (entry.path().extension() == ".md") found.push_back(entry.path().string());
+    std::sort(found.begin(), found.end());
+    pages.insert(pages.end(), found.begin(), found.end());
+  }
+  return pages;
+}
+
+std::vector<std::string> paragraphsOf(const std::string& page) {
+  std::ifstream in(page);
   std::vector<std::string> paragraphs(1);
   std::string line;
   while (std::getline(in, line)) {
@@ -61,18 +78,20 @@ std::vector<CountClaim> countClaims(const std::string& text) {
 
 TEST(ReadmeCounts, EveryWholeLibraryCountIsTodaysOrDated) {
   const long library = static_cast<long>(suiteCases().size());
-  const std::vector<std::string> paragraphs = readmeParagraphs();
   int checked = 0;
-  for (size_t i = 0; i < paragraphs.size(); ++i)
-    for (const CountClaim& c : countClaims(paragraphs[i])) {
-      if (c.count < 100) continue;  // a part of the library
-      ++checked;
-      const bool dated = namesADate(paragraphs[i]) || (i > 0 && namesADate(paragraphs[i - 1]));
-      EXPECT_TRUE(c.count == library || dated)
-          << "README: \"..." << c.context << "\" is neither the library's " << library
-          << " cases nor dated (YYYY-MM-DD in its paragraph or the one before)";
-    }
-  EXPECT_GT(checked, 5) << "the README's case counts were not found";
+  for (const std::string& page : documentationPages()) {
+    const std::vector<std::string> paragraphs = paragraphsOf(page);
+    for (size_t i = 0; i < paragraphs.size(); ++i)
+      for (const CountClaim& c : countClaims(paragraphs[i])) {
+        if (c.count < 100) continue;  // a part of the library
+        ++checked;
+        const bool dated = namesADate(paragraphs[i]) || (i > 0 && namesADate(paragraphs[i - 1]));
+        EXPECT_TRUE(c.count == library || dated)
+            << page << ": \"..." << c.context << "\" is neither the library's " << library
+            << " cases nor dated (YYYY-MM-DD in its paragraph or the one before)";
+      }
+  }
+  EXPECT_GT(checked, 5) << "the documentation's case counts were not found";
 }
 
 TEST(ReadmeCounts, FindsCountsAndSkipsLimits) {

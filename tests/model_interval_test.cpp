@@ -95,7 +95,8 @@ TEST(Model, TriangleIntervalIsOpen) {
     Case c = baseCase({quad()}, {a, b, d, e, f});
     Results r = run(c, tier);
     // Embree's robust kernel rounds t at tmax below it on AVX2-only
-    // processors (README, "Model tiers"): its tmax end is not checked.
+    // processors (docs/model-and-accuracy.md, "Model tiers"): its tmax end
+    // is not checked.
     const bool tmax_exact = tier != ModelTier::Robust;
     for (uint32_t ray : {0u, 1u, 3u, 4u}) {
       if (tmax_exact || ray == 1u || ray == 4u) {

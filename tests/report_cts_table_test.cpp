@@ -1,4 +1,4 @@
-// The README's tables of Khronos CTS groups ("Against the Khronos CTS"), one
+// The tables of Khronos CTS groups in docs/cts-map.md, one
 // for dEQP-VK.ray_tracing_pipeline and one for dEQP-VK.ray_query: every group
 // once, each row's count equal to the count under references/cts/ (derived
 // from the mustpass list, with its source), the counts summing to the
@@ -19,7 +19,7 @@
 namespace rayspec {
 namespace {
 
-// One table: where it sits in README.md, and what the mustpass list says.
+// One table: where it sits in docs/cts-map.md, and what the mustpass list says.
 struct CtsTable {
   const char* name;         // the gtest parameter name
   const char* begin;        // the marker line before the table
@@ -62,7 +62,7 @@ std::vector<std::string> ctsRowCells(const std::string& line) {
 // The rows between the table's markers; a table whose markers are missing
 // reads as no rows, which the group count then reports.
 std::vector<CtsGroupRow> readCtsTableRows(const CtsTable& table) {
-  std::ifstream in(RAYSPEC_SOURCE_DIR "/README.md");
+  std::ifstream in(RAYSPEC_SOURCE_DIR "/docs/cts-map.md");
   std::string line;
   bool inside = false;
   std::vector<CtsGroupRow> rows;
@@ -97,9 +97,9 @@ std::map<std::string, long> readCtsGroupCounts(const CtsTable& table) {
   return counts;
 }
 
-class ReadmeCtsTable : public testing::TestWithParam<CtsTable> {};
+class CtsMapTable : public testing::TestWithParam<CtsTable> {};
 
-TEST_P(ReadmeCtsTable, EveryGroupOnceAndTheCountsSumToTheMustpassTotal) {
+TEST_P(CtsMapTable, EveryGroupOnceAndTheCountsSumToTheMustpassTotal) {
   const CtsTable& table = GetParam();
   const std::vector<CtsGroupRow> rows = readCtsTableRows(table);
   ASSERT_EQ(rows.size(), table.groups) << table.name << " has " << table.groups << " groups";
@@ -116,7 +116,7 @@ TEST_P(ReadmeCtsTable, EveryGroupOnceAndTheCountsSumToTheMustpassTotal) {
 
 // Each row's count is the one counted from the mustpass list, and the file
 // itself holds the groups and the total the table is checked against.
-TEST_P(ReadmeCtsTable, EveryCountIsTheMustpassListsCount) {
+TEST_P(CtsMapTable, EveryCountIsTheMustpassListsCount) {
   const CtsTable& table = GetParam();
   std::map<std::string, long> counted = readCtsGroupCounts(table);
   ASSERT_EQ(counted.count("total"), 1u) << table.counts_file << ": no total line";
@@ -133,14 +133,14 @@ TEST_P(ReadmeCtsTable, EveryCountIsTheMustpassListsCount) {
       continue;
     }
     EXPECT_EQ(r.tests, it->second)
-        << r.group << ": the README's count against " << table.counts_file;
+        << r.group << ": docs/cts-map.md's count against " << table.counts_file;
   }
 }
 
 // A folder a row's notes name in parentheses, e.g. "(builtins/launch-zero)":
 // its cases exist and are among the row's globs, so the notes cannot place
 // a capability in a folder that does not hold it.
-TEST_P(ReadmeCtsTable, EveryFolderTheNotesNameIsAmongTheRowsCases) {
+TEST_P(CtsMapTable, EveryFolderTheNotesNameIsAmongTheRowsCases) {
   const std::regex folder("\\(([a-z0-9-]+/[a-z0-9/*-]+)\\)");
   for (const CtsGroupRow& r : readCtsTableRows(GetParam())) {
     std::set<std::string> row_cases;
@@ -159,14 +159,14 @@ TEST_P(ReadmeCtsTable, EveryFolderTheNotesNameIsAmongTheRowsCases) {
   }
 }
 
-TEST_P(ReadmeCtsTable, EveryCaseGlobMatchesSuiteCases) {
+TEST_P(CtsMapTable, EveryCaseGlobMatchesSuiteCases) {
   for (const CtsGroupRow& r : readCtsTableRows(GetParam()))
     for (const std::string& g : r.globs)
       EXPECT_FALSE(findCases(kSuiteCases, g).empty())
           << r.group << ": `" << g << "` matches no case of cases/";
 }
 
-INSTANTIATE_TEST_SUITE_P(ReadmeCts, ReadmeCtsTable, testing::ValuesIn(kCtsTables),
+INSTANTIATE_TEST_SUITE_P(CtsMap, CtsMapTable, testing::ValuesIn(kCtsTables),
                          [](const testing::TestParamInfo<CtsTable>& info) {
                            return std::string(info.param.name);
                          });

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # ctest style/exceptions: the one error convention (harness/base/error.h,
-# README "Errors"). A fallible function of rayspec returns Result<T>; nothing
-# in harness/ throws, and no exception type of rayspec's own is declared.
+# docs/layout-and-conventions.md, "Errors"). A fallible function of rayspec
+# returns Result<T>; nothing in harness/ throws, and no exception type of rayspec's own is declared.
 # Exceptions come only from the libraries and the standard library, and are
 # caught where they are thrown (yaml-cpp, nlohmann-json, CLI11, OpenImageIO,
 # std::filesystem ...), so a `catch` is fine and a `throw` is not.

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# ctest style/fault-seam: test-only hooks stay behind the fault seam (README
-# "The fault seam"). Planted faults live in harness/fault/ (and rayspec
-# mutate's generic wrong devices, harness/mutate/, build on them); the rest
-# of the product reaches them only through
+# ctest style/fault-seam: test-only hooks stay behind the fault seam
+# (docs/layout-and-conventions.md, "The fault seam"). Planted faults live in
+# harness/fault/ (and rayspec mutate's generic wrong devices, harness/mutate/,
+# build on them); the rest of the product reaches them only through
 #   run/fault_seam.h       the run's one entry: refuse, place, arm a fault
 #   model/model_faults.h   the model's hook (ModelOptions::faults), read in
 #                          the model by model/model_fault_seam.* alone

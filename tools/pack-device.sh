@@ -10,7 +10,8 @@
 #   RAYSPEC_CONFIG_DIR=config LD_LIBRARY_PATH=lib VK_LAYER_PATH=layer ./rayspec run --cases cases \
 #     --rules spec-rules.yaml --cache-dir cache --out DIR
 # It runs the device side only; bring DIR back and judge it where the full
-# build is: rayspec run --device-results DIR --out JUDGED (README.md).
+# build is: rayspec run --device-results DIR --out JUDGED (README.md,
+# docs/driver-only-machine.md).
 # PACK_STAGE=DIR (an empty or missing folder) leaves the pack unpacked there
 # instead (tools/second-driver.sh: no compression for a copy on this machine).
 set -euo pipefail

@@ -110,7 +110,7 @@ constexpr uint32_t kMaxTlases = 8;
 
 // Totals a case is held to, checked while it is read, before the parent
 // allocates beyond them (each a CaseError naming the field and the limit;
-// README.md, "Limits"): primitives of all geometries together (one grid
+// docs/robustness.md, "Limits"): primitives of all geometries together (one grid
 // alone may hold 2^23), instances, and the bytes of the per-ray records and
 // images a launch writes.
 constexpr uint64_t kMaxScenePrimitives = 1ull << 24;

@@ -108,8 +108,8 @@ void checkOutputBytes(YamlReader& r, const YAML::Node& outputs, const Case& c) {
   r.error(outputs, "outputs",
           "the launch's " + std::to_string(rays) + " rays would write " +
               std::to_string((record_bytes + image_bytes) >> 20) +
-              " MiB of per-ray records and images: at most 1 GiB (README.md, Limits); record "
-              "fewer rays, or only counters");
+              " MiB of per-ray records and images: at most 1 GiB (docs/robustness.md, "
+              "Limits); record fewer rays, or only counters");
 }
 
 // expect_rejected: [shader names] (R-STAGE-INTERFACE); checkPrograms finds

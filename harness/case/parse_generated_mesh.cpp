@@ -149,7 +149,7 @@ void parseInstanceGrid(YamlReader& r, const YAML::Node& n, const std::string& fi
   const uint64_t total = scene.instances.size() + uint64_t((*cells)[0]) * (*cells)[1];
   if (total > kMaxInstances) {
     r.error(grid, f + ".cells",
-            std::to_string(total) + " instances: at most 2^20 (README.md, Limits)");
+            std::to_string(total) + " instances: at most 2^20 (docs/robustness.md, Limits)");
     return;
   }
   Instance proto;

@@ -176,7 +176,7 @@ void parseBlases(YamlReader& r, const YAML::Node& n, Scene& scene) {
         if (primitives > kMaxScenePrimitives) {
           r.error(geoms[i], fi,
                   "the scene's geometries hold more than 2^24 primitives together (a "
-                  "limit of every case: README.md, Limits)");
+                  "limit of every case: docs/robustness.md, Limits)");
           return;
         }
         b.geometries.push_back(std::move(g));
@@ -359,7 +359,7 @@ void parseScene(YamlReader& r, const YAML::Node& n, Scene& scene) {
   const YAML::Node insts = YamlReader::get(n, "instances");
   if (insts.IsDefined() && !insts.IsNull() && insts.IsSequence() && insts.size() > kMaxInstances)
     r.error(insts, "scene.instances",
-            std::to_string(insts.size()) + " instances: at most 2^20 (README.md, Limits)");
+            std::to_string(insts.size()) + " instances: at most 2^20 (docs/robustness.md, Limits)");
   else if (insts.IsDefined() && !insts.IsNull() && r.expectSeq(insts, "scene.instances"))
     for (size_t i = 0; i < insts.size(); ++i) {
       const std::string field = "scene.instances[" + std::to_string(i) + "]";

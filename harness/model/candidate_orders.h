@@ -15,8 +15,7 @@
 namespace rayspec {
 
 // Up to this many candidates that matter, every order is tried (6! = 720
-// what-if runs; measured: README "Order-dependent candidate programs");
-// beyond it, sampleOrders.
+// what-if runs; cases/README.md, "Ray queries"); beyond it, sampleOrders.
 constexpr size_t kMaxOrderedCandidates = 6;
 
 // Every processing order of `n` candidates (indices 0 .. n-1 in the model's

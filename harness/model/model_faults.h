@@ -1,8 +1,8 @@
 // The model's fault-injection hook (test only). Planted faults (harness/fault/)
 // run the model as a device that breaks one rule; they reach the model through
 // ModelOptions::faults and nothing else. A product run leaves it at its
-// defaults, which are the model's own behaviour. README "The fault seam" lists
-// every such hook.
+// defaults, which are the model's own behaviour. docs/layout-and-conventions.md,
+// "The fault seam", lists every such hook.
 #pragma once
 
 namespace rayspec {

@@ -1,6 +1,6 @@
 // `rayspec reduce CASE`: a case that fails on a device (or under a planted
 // fault) shrunk to the smallest case that still fails the same way, with a
-// report to paste upstream (README "Reducing a failure to a bug report").
+// report to paste upstream (docs/reduce.md).
 #pragma once
 
 #include <cstddef>

@@ -2,8 +2,9 @@
 // harness/fault/) enter a run. The run's own steps (run/case_steps.h) know
 // only the three questions below; the hooks they arm are the model's
 // (model/model_faults.h, set by fault/'s case mutations) and the Vulkan
-// side's (vulkan/vk_fault_hook.h). README "The fault seam" lists them all,
-// and ctest style/fault-seam fails when product code outside them names one.
+// side's (vulkan/vk_fault_hook.h). docs/layout-and-conventions.md, "The fault
+// seam", lists them all, and ctest style/fault-seam fails when product code
+// outside them names one.
 #pragma once
 
 #include <memory>

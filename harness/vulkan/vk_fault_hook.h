@@ -5,7 +5,7 @@
 // (vulkan/vk_check.h) is the one place that obeys it. The layout faults
 // reach it through injectLayoutFault, read by vulkan/acceleration_structure.cpp
 // alone (which lays its inputs out by vulkan/build_layout.h with it). A product run never sets
-// either. README "The fault seam" lists every such hook.
+// either. docs/layout-and-conventions.md, "The fault seam", lists every such hook.
 #pragma once
 
 #include <vulkan/vulkan.h>
