@@ -494,7 +494,7 @@ struct Case {
   uint64_t source_hash =
       0;  // contentHash of the text parsed (a sweep: the variant's); --permute mixes in its seed
   std::string family;              // caseFamily(name): "anyhit"; "" for a file outside cases/
-  std::vector<std::string> rules;  // rule labels of spec-rules.md
+  std::vector<std::string> rules;  // rule labels (references/spec-rules.yaml)
   std::string description;
   Scene scene;
   Rays rays;

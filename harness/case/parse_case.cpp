@@ -48,9 +48,9 @@ void parseRules(YamlReader& r, const YAML::Node& n, const std::vector<std::strin
     auto s = r.string(n[i], f);
     if (!s) continue;
     if (!isRuleLabel(*s)) {
-      r.error(
-          n[i], f,
-          "'" + visibleText(*s, 80) + "' is not a rule label (R-NAME, see shared/spec-rules.md)");
+      r.error(n[i], f,
+              "'" + visibleText(*s, 80) +
+                  "' is not a rule label (R-NAME, see references/spec-rules.yaml)");
       continue;
     }
     if (catalog && std::find(catalog->begin(), catalog->end(), *s) == catalog->end()) {

@@ -38,7 +38,7 @@ bool isFailing(Status s);
 
 struct Finding {
   Status status = Status::Fail;
-  std::string rule;            // spec-rules.md label, e.g. "R-MISS-XOR-CHIT"
+  std::string rule;            // rule label (references/spec-rules.yaml), e.g. "R-MISS-XOR-CHIT"
   std::string message;         // what differed
   std::vector<uint32_t> rays;  // first rays that broke it (launch index)
   uint32_t ray_count = 0;      // how many rays broke it in all

@@ -1,5 +1,5 @@
 // The CPU reference model: runs a case on Embree with the Vulkan meaning of
-// every rule (../shared/spec-rules.md) and produces Results in the same schema
+// every rule (references/spec-rules.yaml) and produces Results in the same schema
 // as the device (results/results.h, results/record_layout.h).
 //
 // Candidate order (R-ORDER-UNSPEC): wherever a stage program can observe the

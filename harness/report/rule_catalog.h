@@ -1,5 +1,5 @@
-// The rule labels of the coverage contract (references/spec-rules.yaml, a copy
-// of the labels of ../shared/spec-rules.md with short titles), and which cases
+// The rule labels of the coverage contract (references/spec-rules.yaml: the
+// rule labels with short titles), and which cases
 // check which rule.
 #pragma once
 
