@@ -7,6 +7,7 @@
 
 #include "glsl/emit_compute.h"
 #include "glsl/generate_glsl.h"
+#include "program/ops.h"
 #include "spirv/compile_glsl.h"
 #include "suite_cases.h"
 
@@ -63,7 +64,7 @@ TEST(ComputeGlsl, RaygenRecordDataIsAConstantTable) {
   read.kind = Stmt::Kind::Record;
   Expr word;
   word.kind = Expr::Kind::Op;
-  word.name = "shader_record_uint";
+  setOp(word, Op::RecordUint);
   word.type = ValueType::Uint;
   Expr one;
   one.kind = Expr::Kind::Literal;

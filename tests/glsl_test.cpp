@@ -58,6 +58,7 @@ Expr op(const std::string& name, std::vector<Expr> args = {}) {
   Expr e;
   e.kind = Expr::Kind::Op;
   e.name = name;
+  e.op = opNamed(name);
   e.args = std::move(args);
   return e;
 }

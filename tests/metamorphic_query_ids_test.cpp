@@ -5,6 +5,7 @@
 #include "metamorphic/id_observations.h"
 #include "metamorphic/motion_spec.h"
 #include "metamorphic/transform_case.h"
+#include "program/ops.h"
 
 namespace rayspec {
 namespace {
@@ -23,6 +24,7 @@ Expr compare(const std::string& op, Expr a, double literal) {
   Expr e;
   e.kind = Expr::Kind::Op;
   e.name = op;
+  e.op = opNamed(op);
   e.args = {std::move(a), lit};
   return e;
 }

@@ -16,6 +16,7 @@
 #include "metamorphic/permute_case.h"
 #include "model/model_engine.h"
 #include "plan/plan.h"
+#include "program/ops.h"
 #include "results/record_layout.h"
 #include "suite_cases.h"
 
@@ -101,6 +102,7 @@ TEST(IdObservations, WhatProgramsObserveOfAnId) {
     Expr cmp;
     cmp.kind = Expr::Kind::Op;
     cmp.name = name;
+    cmp.op = opNamed(name);
     cmp.args = id_first ? std::vector<Expr>{id, three} : std::vector<Expr>{three, id};
     Stmt s;
     s.kind = Stmt::Kind::If;
@@ -113,7 +115,7 @@ TEST(IdObservations, WhatProgramsObserveOfAnId) {
   // Arithmetic on the id observes the id itself: nothing may move.
   Expr sum;
   sum.kind = Expr::Kind::Op;
-  sum.name = "add";
+  setOp(sum, Op::Add);
   sum.args = {id, three};
   t.pipeline.raygen[0].cond = sum;
   EXPECT_TRUE(observeId(t.pipeline, "primitive_id").exact);

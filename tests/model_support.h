@@ -92,6 +92,7 @@ inline Expr op(const std::string& n, std::vector<Expr> args) {
   Expr e;
   e.kind = Expr::Kind::Op;
   e.name = n;
+  e.op = opNamed(n);
   e.args = std::move(args);
   return e;
 }

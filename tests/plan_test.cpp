@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "plan/plan.h"
+#include "program/ops.h"
 
 namespace rayspec {
 namespace {
@@ -93,7 +94,7 @@ TEST(Plan, IntersectionAndSceneDataOnlyWithAabbs) {
   Stmt report;
   report.kind = Stmt::Kind::Report;
   report.t.kind = Expr::Kind::Op;
-  report.t.name = "sphere_near";
+  setOp(report.t, Op::SphereNear);
   c.pipeline.hit_groups[0].intersection = Program{report};
   Plan p = derivePlan(c);
   EXPECT_TRUE(p.aabbs);

@@ -3,6 +3,7 @@
 // the built-ins that read them.
 #include <gtest/gtest.h>
 
+#include "program/ops.h"
 #include "program/payload_words.h"
 
 namespace rayspec {
@@ -40,7 +41,7 @@ TEST(PayloadWords, IndexedArraysHaveOneNameEach) {
     const std::string name = wordArrayName(w);
     // The op is the array's name with "s" dropped and "." as "_".
     const std::string op = name.substr(0, name.find('.')) + "_word";
-    EXPECT_EQ(wordArrayOfOp(op), w) << op;
+    EXPECT_EQ(wordArrayOf(opNamed(op)), w) << op;
   }
   // Only the incoming data is written by a store.
   EXPECT_EQ(wordArrayOfStore("payload.words"), WordArray::Payload);
@@ -48,7 +49,8 @@ TEST(PayloadWords, IndexedArraysHaveOneNameEach) {
   EXPECT_FALSE(wordArrayOfStore("child.words"));
   EXPECT_FALSE(wordArrayOfStore("callee.words"));
   EXPECT_FALSE(wordArrayOfStore("words"));
-  EXPECT_FALSE(wordArrayOfOp("payload.word"));
+  EXPECT_FALSE(wordArrayOf(opNamed("payload.word")));
+  EXPECT_FALSE(wordArrayOf(Op::Add));
 }
 
 }  // namespace

@@ -35,6 +35,7 @@ Expr op(const std::string& name, std::vector<Expr> args, int line = 0) {
   Expr e;
   e.kind = Expr::Kind::Op;
   e.name = name;
+  e.op = opNamed(name);
   e.args = std::move(args);
   e.loc.line = line;
   return e;

@@ -10,6 +10,7 @@
 //   call.word<i> and call_data words (its `call_data:` location), and a
 //   stage's callee.word<i> (the last call's data).
 #include "case/case_parts.h"
+#include "program/ops.h"
 #include "program/walk_program.h"
 
 namespace rayspec {
@@ -33,7 +34,7 @@ class WordChecker {
     in_ = incoming;
     walkExpressions(prog, [&](const Expr& e) {
       if (e.kind == Expr::Kind::Builtin) read(e, field);
-      if (auto which = e.kind == Expr::Kind::Op ? wordArrayOfOp(e.name) : std::nullopt)
+      if (auto which = e.kind == Expr::Kind::Op ? wordArrayOf(e.op) : std::nullopt)
         indexed(e.loc, field, "{" + e.name + ": ...}", *which);
     });
     walkStatements(prog, [&](const Stmt& s) {

@@ -7,6 +7,7 @@
 // Where pipeline.sbt.record_layout declares the record's members, the block
 // holds those members only: every word or light read is an error.
 #include "case/case_parts.h"
+#include "program/ops.h"
 #include "program/walk_program.h"
 
 namespace rayspec {
@@ -20,7 +21,7 @@ uint32_t lightBytes(const std::string& kind) {
 // Bytes the expression itself reads (not its arguments); 0 when none or unknown.
 uint32_t bytesRead(const Expr& e, std::string* what) {
   if (e.kind != Expr::Kind::Op) return 0;
-  if (e.name == "shader_record_uint" || e.name == "shader_record_float") {
+  if (e.op == Op::RecordUint || e.op == Op::RecordFloat) {
     if (e.args.size() != 1 || e.args[0].kind != Expr::Kind::Literal ||
         e.args[0].literal.size() != 1)
       return 0;

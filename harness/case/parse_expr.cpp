@@ -67,7 +67,7 @@ bool parseScalarExpr(YamlReader& r, const YAML::Node& n, const std::string& fiel
   }
   if (const OpInfo* op = findOp(s); op && op->min_args == 0) {
     out.kind = Expr::Kind::Op;
-    out.name = s;
+    setOp(out, op->id);
     return true;
   }
   r.error(n, field,
@@ -110,7 +110,7 @@ bool parseOpExpr(YamlReader& r, const YAML::Node& n, const std::string& field, E
     return false;
   }
   out.kind = Expr::Kind::Op;
-  out.name = name;
+  setOp(out, op->id);
   const YAML::Node args = it->second;
   const std::string f = field + "." + name;
   if (args.IsNull()) return true;

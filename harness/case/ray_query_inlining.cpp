@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "program/ops.h"
 #include "program/walk_program.h"
 
 namespace rayspec {
@@ -13,7 +14,7 @@ std::string notInlinable(const Program& program) {
   walkExpressions(program, [&](const Expr& e) {
     if (e.kind == Expr::Kind::RecordMember)
       why = "it reads shader record members (pipeline.sbt.record_layout)";
-    if (e.kind == Expr::Kind::Op && e.name.rfind("light_", 0) == 0)
+    if (e.kind == Expr::Kind::Op && isLightOp(e.op))
       why = "a hit or miss stage lights (light_* reads its shader record)";
   });
   walkStatements(program, [&](const Stmt& s) {
@@ -48,7 +49,7 @@ std::string notComputable(const Program& program) {
   walkExpressions(program, [&](const Expr& e) {
     if (e.kind == Expr::Kind::RecordMember)
       why = "raygen reads shader record members, which a compute shader has no record for";
-    if (e.kind == Expr::Kind::Op && e.name.rfind("light_", 0) == 0)
+    if (e.kind == Expr::Kind::Op && isLightOp(e.op))
       why = "raygen lights (light_* reads a shader record)";
   });
   walkStatements(program, [&](const Stmt& s) {

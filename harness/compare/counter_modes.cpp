@@ -1,5 +1,6 @@
 #include "compare/counter_modes.h"
 
+#include "program/ops.h"
 #include "program/walk_program.h"
 
 namespace rayspec {
@@ -79,7 +80,7 @@ std::set<std::string> countersUndefinedRaysMayMove(const Case& c) {
       after_undefined = true;
     walkOwnExpressions(s, [&](const Expr& e) {
       if (e.kind == Expr::Kind::Op && e.type == ValueType::Uint &&
-          (e.name == "div" || e.name == "mod"))
+          (e.op == Op::Div || e.op == Op::Mod))
         after_undefined = true;
     });
   });

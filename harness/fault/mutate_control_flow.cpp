@@ -4,6 +4,7 @@
 // specialization constants a stage is created with.
 #include "fault/fault_impl.h"
 #include "fault/program_edit.h"
+#include "program/ops.h"
 #include "program/payload_words.h"
 #include "program/walk_program.h"
 
@@ -26,12 +27,12 @@ void forEachFunctionStmt(Case& c, const std::function<void(Stmt&)>& visit) {
 }
 
 // Every `from` op renamed `to` (an op of the same argument and result types).
-size_t renameOps(Case& c, const std::string& from, const std::string& to) {
+size_t renameOps(Case& c, Op from, Op to) {
   size_t n = 0;
   forEachProgram(c.pipeline, [&](Program& p, Stage) {
     editExpressions(p, [&](Expr& e) {
-      if (e.kind != Expr::Kind::Op || e.name != from) return;
-      e.name = to;
+      if (e.kind != Expr::Kind::Op || e.op != from) return;
+      setOp(e, to);
       ++n;
     });
   });
@@ -40,25 +41,20 @@ size_t renameOps(Case& c, const std::string& from, const std::string& to) {
 
 // `e` becomes e + 1 (a Uint expression), written where e was.
 void addOne(Expr& e) {
-  Expr more;
-  more.kind = Expr::Kind::Op;
-  more.name = "add";
-  more.type = ValueType::Uint;
-  more.loc = e.loc;
-  more.args = {std::move(e), uintLiteral(1, more.loc)};
-  e = std::move(more);
+  const SourceLoc loc = e.loc;
+  e = opExpr(Op::Add, {std::move(e), uintLiteral(1, loc)}, ValueType::Uint, loc);
 }
 
 }  // namespace
 
 // A compiler that emits an inclusive or for an exclusive one.
 std::string bitwiseXorAsOr(Case& c, ModelOptions&) {
-  return describeCount(renameOps(c, "bit_xor", "bit_or"), "bit_xor computed as bit_or");
+  return describeCount(renameOps(c, Op::BitXor, Op::BitOr), "bit_xor computed as bit_or");
 }
 
 // A compiler that drops a transpose: mat3_mul computed as mat3_tmul.
 std::string matrixTransposed(Case& c, ModelOptions&) {
-  return describeCount(renameOps(c, "mat3_mul", "mat3_tmul"),
+  return describeCount(renameOps(c, Op::Mat3Mul, Op::Mat3TMul),
                        "matrix products computed with the transpose");
 }
 
@@ -67,7 +63,7 @@ std::string crossOperandsSwapped(Case& c, ModelOptions&) {
   size_t n = 0;
   forEachProgram(c.pipeline, [&](Program& p, Stage) {
     editExpressions(p, [&](Expr& e) {
-      if (e.kind != Expr::Kind::Op || e.name != "cross" || e.args.size() != 2) return;
+      if (e.kind != Expr::Kind::Op || e.op != Op::Cross || e.args.size() != 2) return;
       std::swap(e.args[0], e.args[1]);
       ++n;
     });
@@ -78,8 +74,9 @@ std::string crossOperandsSwapped(Case& c, ModelOptions&) {
 // A compiler that converts where it should reinterpret: floatBitsToUint as
 // uint(), uintBitsToFloat as float().
 std::string floatBitsConverted(Case& c, ModelOptions&) {
-  return describeCount(renameOps(c, "float_bits", "uint") + renameOps(c, "bits_float", "float"),
-                       "bit casts converted as values");
+  return describeCount(
+      renameOps(c, Op::FloatBits, Op::ToUint) + renameOps(c, Op::BitsFloat, Op::ToFloat),
+      "bit casts converted as values");
 }
 
 // A compiler that addresses a data array one word too far: every payload,
@@ -92,8 +89,7 @@ std::string wordIndexOffByOne(Case& c, ModelOptions&) {
   };
   forEachProgram(c.pipeline, [&](Program& p, Stage) {
     editExpressions(p, [&](Expr& e) {
-      if (e.kind == Expr::Kind::Op && wordArrayOfOp(e.name) && e.args.size() == 1)
-        one_past(e.args[0]);
+      if (e.kind == Expr::Kind::Op && wordArrayOf(e.op) && e.args.size() == 1) one_past(e.args[0]);
     });
     forEachStmt(p, [&](Stmt& s) {
       if (s.kind == Stmt::Kind::Store && wordArrayOfStore(s.local)) one_past(s.index);

@@ -4,6 +4,7 @@
 // plus one).
 #include "fault/fault_impl.h"
 #include "fault/program_edit.h"
+#include "program/ops.h"
 #include "program/walk_program.h"
 
 namespace rayspec {
@@ -29,11 +30,8 @@ std::string wideLaunchTruncated(Case& c, ModelOptions&) {
   Stmt stop;
   stop.kind = Stmt::Kind::If;
   stop.loc = c.rays.defaults_loc;
-  stop.cond.kind = Expr::Kind::Op;
-  stop.cond.name = "ge";
-  stop.cond.type = ValueType::Bool;
-  stop.cond.loc = stop.loc;
-  stop.cond.args = {launchIdX(stop.loc), uintLiteral(kWrapIds, stop.loc)};
+  stop.cond = opExpr(Op::Ge, {launchIdX(stop.loc), uintLiteral(kWrapIds, stop.loc)},
+                     ValueType::Bool, stop.loc);
   Stmt end;
   end.kind = Stmt::Kind::Return;
   end.loc = stop.loc;
@@ -54,13 +52,7 @@ std::string launchIdXWrapped(Case& c, ModelOptions&) {
     });
   });
   for (Expr* e : reads) {
-    Expr wrapped;
-    wrapped.kind = Expr::Kind::Op;
-    wrapped.name = "mod";
-    wrapped.type = ValueType::Uint;
-    wrapped.loc = e->loc;
-    wrapped.args = {*e, uintLiteral(kWrapIds, e->loc)};
-    *e = std::move(wrapped);
+    *e = opExpr(Op::Mod, {*e, uintLiteral(kWrapIds, e->loc)}, ValueType::Uint, e->loc);
   }
   return describeCount(reads.size(), "reads of gl_LaunchIDEXT.x that wrap at 65536");
 }

@@ -3,6 +3,7 @@
 #include <functional>
 
 #include "fault/fault_impl.h"
+#include "program/ops.h"
 #include "results/record_layout.h"
 
 namespace rayspec {
@@ -136,7 +137,7 @@ FaultResult tmaxViewInitial(RecordFaultArgs& a) {
     if (!hitStage(w.stage)) continue;
     const Expr& e = *w.value;
     if (isBuiltin(e, "ray_tmax")) slots.push_back({w.field, 0});
-    if (e.kind == Expr::Kind::Op && e.name.rfind("vec", 0) == 0)
+    if (e.kind == Expr::Kind::Op && isVectorConstructor(e.op))
       for (size_t j = 0; j < e.args.size(); ++j)
         if (isBuiltin(e.args[j], "ray_tmax") &&
             e.args.size() == static_cast<size_t>(componentCount(e.type)))

@@ -1,10 +1,10 @@
 #include "glsl/emit_expr.h"
 
 #include <cctype>
-#include <map>
 
 #include "glsl/glsl_literal.h"
 #include "program/builtins.h"
+#include "program/ops.h"
 #include "program/payload_words.h"
 
 namespace rayspec {
@@ -66,61 +66,53 @@ std::string builtin(const std::string& name, const StageContext& ctx) {
   return spelled.empty() ? problem(name + " cannot be read by a ray query") : spelled;
 }
 
-std::string op(const Expr& e, const StageContext& ctx) {
-  std::vector<std::string> a;
-  for (const Expr& arg : e.args) a.push_back(emitExpr(arg, ctx));
-  const std::string& n = e.name;
-  auto need = [&](size_t count) {
-    return a.size() >= count;
-  };
-  auto join = [&](const char* sep) {
-    std::string s = "(";
-    for (size_t i = 0; i < a.size(); ++i) s += (i ? sep : "") + a[i];
-    return s + ")";
-  };
-  static const std::map<std::string, const char*> binary = {
-      {"add", " + "}, {"sub", " - "},     {"mul", " * "},    {"div", " / "},
-      {"mod", " % "}, {"eq", " == "},     {"ne", " != "},    {"lt", " < "},
-      {"le", " <= "}, {"gt", " > "},      {"ge", " >= "},    {"and", " && "},
-      {"or", " || "}, {"bit_and", " & "}, {"bit_or", " | "}, {"bit_xor", " ^ "}};
-  if (auto it = binary.find(n); it != binary.end() && need(2)) return join(it->second);
-  if ((n == "min" || n == "max" || n == "dot" || n == "cross") && need(2))
-    return n + "(" + a[0] + ", " + a[1] + ")";
-  if (n == "not" && need(1)) return "(!" + a[0] + ")";
-  if (n == "odd" && need(1)) return "((" + a[0] + " & 1u) != 0u)";
-  if (n == "bit_not" && need(1)) return "(~" + a[0] + ")";
-  if (n == "mat3_mul" && need(4))
-    return "(mat3(" + a[0] + ", " + a[1] + ", " + a[2] + ") * " + a[3] + ")";
-  if (n == "mat3_tmul" && need(4))
-    return "(transpose(mat3(" + a[0] + ", " + a[1] + ", " + a[2] + ")) * " + a[3] + ")";
-  // A shift of 32 or more is undefined in GLSL: the amount modulo 32, as the model.
-  if (n == "shl" && need(2)) return "(" + a[0] + " << (" + a[1] + " & 31u))";
-  if (n == "shr" && need(2)) return "(" + a[0] + " >> (" + a[1] + " & 31u))";
-  if (n == "float_bits" && need(1)) return "floatBitsToUint(" + a[0] + ")";
-  if (n == "bits_float" && need(1)) return "uintBitsToFloat(" + a[0] + ")";
-  if (n == "even" && need(1)) return "((" + a[0] + " & 1u) == 0u)";
-  if ((n == "float" || n == "uint" || n == "length" || n == "normalize") && need(1))
-    return n + "(" + a[0] + ")";
-  if (n == "round" && need(1)) return "roundEven(" + a[0] + ")";
-  if (n == "load" && need(2)) return a[0] + "[" + arrayIndex(a[0], a[1]) + "]";
-  if (const auto words = wordArrayOfOp(n); words && need(1)) {
+// An op's GLSL pattern (program/op_table.h) with its arguments' GLSL: $i
+// the i-th, $, $& $| all of them joined by ", ", " && ", " || ".
+std::string expandPattern(const std::string& pattern, const std::vector<std::string>& a) {
+  std::string out;
+  for (size_t i = 0; i < pattern.size(); ++i) {
+    if (pattern[i] != '$' || i + 1 == pattern.size()) {
+      out += pattern[i];
+      continue;
+    }
+    const char next = pattern[++i];
+    if (next >= '0' && next <= '9') {
+      const size_t k = static_cast<size_t>(next - '0');
+      out += k < a.size() ? a[k] : problem("missing argument " + std::to_string(k));
+      continue;
+    }
+    const char* sep = next == ',' ? ", " : next == '&' ? " && " : " || ";
+    for (size_t k = 0; k < a.size(); ++k) out += (k ? sep : "") + a[k];
+  }
+  return out;
+}
+
+// The ops whose GLSL depends on more than their arguments (a null pattern).
+std::string spelledOp(const Expr& e, const std::vector<std::string>& a, const StageContext& ctx) {
+  if (a.size() == 2 && e.op == Op::Load) return a[0] + "[" + arrayIndex(a[0], a[1]) + "]";
+  if (const auto words = wordArrayOf(e.op); words && a.size() == 1) {
     const std::string array = wordArrayName(*words);  // payload_word: payload.words[i % N]
     return array + "[" + arrayIndex(array, a[0]) + "]";
   }
-  if (n == "vec2" || n == "vec3" || n == "vec4") return n + join(", ");
-  if ((n == "x" || n == "y" || n == "z" || n == "w") && need(1)) return a[0] + "." + n;
-  if (n == "sphere_hit") return "rs_sphere_current().hit";
-  if (n == "sphere_near") return "rs_sphere_current().t_near";
-  if (n == "sphere_far") return "rs_sphere_current().t_far";
-  if (n.rfind("shader_record_", 0) == 0 && need(1) && ctx.inlined) {  // glsl/emit_ray_query.h
-    const std::string word =
+  const bool record_uint = e.op == Op::RecordUint, record_float = e.op == Op::RecordFloat;
+  if ((record_uint || record_float) && a.size() == 1) {
+    if (!ctx.inlined) return std::string("rs_") + e.name + "(" + a[0] + ")";
+    const std::string word =  // glsl/emit_ray_query.h
         std::string(ctx.stage == Stage::Miss ? "rs_miss" : "rs_hit") + "_record_word(" + a[0] + ")";
-    return n == "shader_record_float" ? "uintBitsToFloat(" + word + ")" : word;
+    return record_float ? "uintBitsToFloat(" + word + ")" : word;
   }
-  if (n == "shader_record_uint" && need(1)) return "rs_shader_record_uint(" + a[0] + ")";
-  if (n == "shader_record_float" && need(1)) return "rs_shader_record_float(" + a[0] + ")";
-  if (n.rfind("light_", 0) == 0 && need(2)) return "rs_" + n + "(" + a[0] + ", " + a[1] + ")";
-  return problem("op " + n + " with " + std::to_string(a.size()) + " args");
+  return problem("op " + e.name + " with " + std::to_string(a.size()) + " args");
+}
+
+std::string op(const Expr& e, const StageContext& ctx) {
+  std::vector<std::string> a;
+  for (const Expr& arg : e.args) a.push_back(emitExpr(arg, ctx));
+  if (e.op == Op::None) return problem("op " + e.name + " not resolved");
+  const OpInfo& info = opInfo(e.op);
+  if (!info.glsl) return spelledOp(e, a, ctx);
+  if (static_cast<int>(a.size()) < info.min_args)
+    return problem("op " + e.name + " with " + std::to_string(a.size()) + " args");
+  return expandPattern(info.glsl, a);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include "glsl/stage_context.h"
 #include "program/builtins.h"
+#include "program/ops.h"
 #include "program/payload_words.h"
 #include "results/record_layout.h"
 
@@ -14,9 +15,11 @@ bool kept(const std::vector<std::string>& names, const std::string& name) {
 
 void visitExpr(const Expr& e, StageUses& u) {
   if (e.kind == Expr::Kind::Builtin) {
-    if (e.name == "aabb_min" || e.name == "aabb_max") u.scene = true;
+    const BuiltinInfo* b = findBuiltin(e.name);
+    const BuiltinNeeds needs = b ? b->needs : builtin_needs::NoNeeds;
+    if (needs & builtin_needs::BoxData) u.scene = true;
     if (e.name == "barycentrics" || attributeWordBuiltin(e.name)) u.hit_attribute = true;
-    if (e.name == "cull_mask") u.cull_mask = true;
+    if (needs & builtin_needs::CullMask) u.cull_mask = true;
     if (e.name == "payload.color" || e.name == "payload.value" ||
         (payloadWordBuiltin(e.name) && !payloadWordBuiltin(e.name)->child))
       u.incoming_payload = true;
@@ -25,10 +28,10 @@ void visitExpr(const Expr& e, StageUses& u) {
     if (e.name.rfind("child.", 0) == 0) u.reads_child = true;
     if (e.name.rfind("callee.", 0) == 0) u.reads_callee = true;
   } else if (e.kind == Expr::Kind::Op) {
-    if (e.name.rfind("sphere_", 0) == 0) u.scene = u.sphere = true;
-    if (e.name.rfind("shader_record_", 0) == 0) u.shader_record = true;
-    if (e.name.rfind("light_", 0) == 0) u.light = u.shader_record = true;
-    if (const auto words = wordArrayOfOp(e.name)) {
+    if (isSphereOp(e.op)) u.scene = u.sphere = true;
+    if (e.op == Op::RecordUint || e.op == Op::RecordFloat) u.shader_record = true;
+    if (isLightOp(e.op)) u.light = u.shader_record = true;
+    if (const auto words = wordArrayOf(e.op)) {
       u.incoming_payload = u.incoming_payload || *words == WordArray::Payload;
       u.reads_child = u.reads_child || *words == WordArray::Child;
       u.reads_callee = u.reads_callee || *words == WordArray::Callee;

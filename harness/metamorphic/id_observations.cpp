@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "program/ops.h"
+
 namespace rayspec {
 namespace {
 
@@ -22,21 +24,20 @@ struct Observer {
 
   // A comparison of the id with a literal: which side of it the id lies.
   bool comparison(const Expr& e) {
-    static const std::vector<std::string> ops = {"eq", "ne", "lt", "le", "gt", "ge"};
-    if (e.args.size() != 2 || std::find(ops.begin(), ops.end(), e.name) == ops.end()) return false;
+    if (e.args.size() != 2 || !isComparison(e.op)) return false;
     const bool left = isId(e.args[0]) && isUintLiteral(e.args[1]);
     const bool right = isId(e.args[1]) && isUintLiteral(e.args[0]);
     if (!left && !right) return false;
     const uint64_t v = static_cast<uint64_t>((left ? e.args[1] : e.args[0]).literal[0]);
-    if (e.name == "eq" || e.name == "ne") {
+    if (e.op == Op::Eq || e.op == Op::Ne) {
       out.equals.push_back(v);
       return true;
     }
     // id < v, id <= v (id < v + 1), v < id (not id < v + 1), v <= id (not id < v): one threshold
     // each.
     const bool id_first = left;
-    const bool strict = e.name == "lt" || e.name == "gt";
-    const bool less_than = (e.name == "lt" || e.name == "le") == id_first;  // id on the small side
+    const bool strict = e.op == Op::Lt || e.op == Op::Gt;
+    const bool less_than = (e.op == Op::Lt || e.op == Op::Le) == id_first;  // id on the small side
     out.below.push_back(less_than == strict ? v : v + 1);
     return true;
   }
@@ -47,7 +48,7 @@ struct Observer {
       return;
     }
     if (e.kind != Expr::Kind::Op) return;
-    if ((e.name == "odd" || e.name == "even") && e.args.size() == 1 && isId(e.args[0])) {
+    if ((e.op == Op::Odd || e.op == Op::Even) && e.args.size() == 1 && isId(e.args[0])) {
       out.parity = true;
       return;
     }

@@ -20,8 +20,8 @@ uint32_t geometryFlags(const ModelScene& scene, const ModelCandidate& c) {
 }
 
 bool reportsSphereRoot(const CStmt& s, const StageEnv& env) {
-  return s.t.kind == Expr::Kind::Op &&
-         (s.t.op == OpCode::SphereNear || s.t.op == OpCode::SphereFar) && env.hit && env.ray;
+  return s.t.kind == Expr::Kind::Op && (s.t.op == Op::SphereNear || s.t.op == Op::SphereFar) &&
+         env.hit && env.ray;
 }
 
 }  // namespace
@@ -65,7 +65,7 @@ double HitProtocol::sphereRootError(const CStmt& s, const HitView& h, const Stag
   const SphereError se =
       sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
                   objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
-  return s.t.op == OpCode::SphereNear ? se.near_err : se.far_err;
+  return s.t.op == Op::SphereNear ? se.near_err : se.far_err;
 }
 
 bool HitProtocol::reportInside(const CStmt& s, StageEnv& env, Traversal& tr, float t) {

@@ -186,7 +186,7 @@ void LaunchState::divisionByZero(const CExpr& e) {
   const std::string field =
       e.src && !e.src->loc.field.empty() ? e.src->loc.field : std::string(e.src ? e.src->name : "");
   markUndefined(UndefinedReason::DivisionByZero,
-                field + ": uint " + (e.op == OpCode::Mod ? "modulo" : "division") + " by zero");
+                field + ": uint " + (e.op == Op::Mod ? "modulo" : "division") + " by zero");
 }
 
 }  // namespace rayspec

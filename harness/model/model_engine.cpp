@@ -180,7 +180,7 @@ ModelShared sharedState(const Case& c, const Plan& plan, const ModelOptions& opt
   shared.any_hit_repeat = opt.any_hit_repeat;
   shared.replays = opt.tier == ModelTier::Exact && opt.any_hit_repeat == AnyHitRepeat::None &&
                    !shared.fault_seam.answersOtherwise();
-  shared.need_facing = programs.reads(kBiHitKind);
+  shared.need_facing = programs.needs & builtin_needs::Facing;
   // Read by the candidate path only (ModelTracer::checkCandidates): a direct
   // run sees no candidates, so it is not worked out there.
   shared.check_candidates = !shared.direct && (hitRecordMayBeOutOfRange(c, false) ||
@@ -192,8 +192,7 @@ ModelShared sharedState(const Case& c, const Plan& plan, const ModelOptions& opt
       std::none_of(programs.raygen[0].has.begin(), programs.raygen[0].has.end(),
                    [](bool b) { return b; });
   shared.payload_types = c.pipeline.payload_words.size() > 1;
-  shared.need_object_ray = programs.reads(kBiObjectOrigin) || programs.reads(kBiObjectDirection) ||
-                           programs.reads_sphere;
+  shared.need_object_ray = (programs.needs & builtin_needs::ObjectRay) || programs.reads_sphere;
   return shared;
 }
 
@@ -320,10 +319,11 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
     const CPipeline programs = compilePipeline(c, plan);
     ModelScene scene;
     scene.aabbs_grown = ModelFaultSeam(opt).aabbNeighboursRun();
-    // Per-primitive triangles are read by candidates, own tests, the
-    // facing of a direct hit when a program reads hit_kind, and vertex_position<i>.
-    if (Result<void> built = buildModelScene(scene, c, opt.tier, needsCandidates(c, plan, opt.tier),
-                                             programs.reads(kBiHitKind) || plan.position_fetch);
+    // Per-primitive triangles are read by candidates, own tests, and the
+    // built-ins that need them (the facing of a direct hit, vertex_position<i>).
+    const bool keep_triangles = (programs.needs & builtin_needs::Triangles) || plan.position_fetch;
+    if (Result<void> built =
+            buildModelScene(scene, c, opt.tier, needsCandidates(c, plan, opt.tier), keep_triangles);
         !built) {
       r.setStatus(SideStatus::Crash, "model: " + built.error().message);
       return r;

@@ -12,66 +12,6 @@ namespace rayspec {
 
 namespace {
 
-struct OpName {
-  const char* name;
-  OpCode op;
-};
-const OpName kOps[] = {{"sphere_hit", OpCode::SphereHit},
-                       {"sphere_near", OpCode::SphereNear},
-                       {"sphere_far", OpCode::SphereFar},
-                       {"shader_record_uint", OpCode::RecordUint},
-                       {"shader_record_float", OpCode::RecordFloat},
-                       {"and", OpCode::And},
-                       {"or", OpCode::Or},
-                       {"not", OpCode::Not},
-                       {"bit_and", OpCode::BitAnd},
-                       {"bit_or", OpCode::BitOr},
-                       {"bit_xor", OpCode::BitXor},
-                       {"bit_not", OpCode::BitNot},
-                       {"shl", OpCode::Shl},
-                       {"shr", OpCode::Shr},
-                       {"float_bits", OpCode::FloatBits},
-                       {"bits_float", OpCode::BitsFloat},
-                       {"odd", OpCode::Odd},
-                       {"even", OpCode::Even},
-                       {"float", OpCode::ToFloat},
-                       {"uint", OpCode::ToUint},
-                       {"round", OpCode::RoundEven},
-                       {"vec2", OpCode::Vec},
-                       {"vec3", OpCode::Vec},
-                       {"vec4", OpCode::Vec},
-                       {"x", OpCode::X},
-                       {"y", OpCode::Y},
-                       {"z", OpCode::Z},
-                       {"w", OpCode::W},
-                       {"dot", OpCode::Dot},
-                       {"cross", OpCode::Cross},
-                       {"mat3_mul", OpCode::Mat3Mul},
-                       {"mat3_tmul", OpCode::Mat3TMul},
-                       {"length", OpCode::Length},
-                       {"normalize", OpCode::Normalize},
-                       {"eq", OpCode::Eq},
-                       {"ne", OpCode::Ne},
-                       {"lt", OpCode::Lt},
-                       {"le", OpCode::Le},
-                       {"gt", OpCode::Gt},
-                       {"ge", OpCode::Ge},
-                       {"mod", OpCode::Mod},
-                       {"add", OpCode::Add},
-                       {"sub", OpCode::Sub},
-                       {"mul", OpCode::Mul},
-                       {"div", OpCode::Div},
-                       {"min", OpCode::Min},
-                       {"max", OpCode::Max},
-                       {"light_point", OpCode::LightPoint},
-                       {"light_spot", OpCode::LightSpot},
-                       {"light_directional", OpCode::LightDirectional},
-                       {"load", OpCode::Load},
-                       {"payload_word", OpCode::DataWord},
-                       {"child_word", OpCode::DataWord},
-                       {"call_word", OpCode::DataWord},
-                       {"callee_word", OpCode::DataWord}};
-
 struct Compiler {
   const Plan& plan;
   CPipeline& out;
@@ -143,20 +83,21 @@ struct Compiler {
         if (attribute_word) r.index = *attribute_word;
         if (call_word) r.index = call_word->index;
         r.builtin = builtinId(findBuiltin(e.name));
-        if (r.builtin != kBiUnknown) out.read_bits.set(r.builtin);
+        if (r.builtin != kBiUnknown) {
+          out.read_bits.set(r.builtin);
+          out.needs |= builtins()[r.builtin].needs;
+        }
         break;
       }
       case Expr::Kind::Op:
-        for (const OpName& o : kOps)
-          if (e.name == o.name) r.op = o.op;
-        if (r.op == OpCode::SphereHit || r.op == OpCode::SphereNear || r.op == OpCode::SphereFar)
+        r.op = e.op;
+        if (r.op == Op::SphereHit || r.op == Op::SphereNear || r.op == Op::SphereFar)
           out.reads_sphere = true;
-        if (r.op == OpCode::Vec) r.index = e.name == "vec2" ? 2 : e.name == "vec3" ? 3 : 4;
-        if (const auto which = wordArrayOfOp(e.name)) {
+        if (const auto which = wordArrayOf(e.op)) {
           r.index = static_cast<uint32_t>(*which);
           r.size = indexedWords(*which);
         }
-        if (r.op == OpCode::RecordUint || r.op == OpCode::RecordFloat)
+        if (r.op == Op::RecordUint || r.op == Op::RecordFloat)
           r.index =
               e.args.empty()
                   ? 0

@@ -14,6 +14,7 @@
 #include "case/case.h"
 #include "plan/plan.h"
 #include "program/builtins.h"
+#include "program/ops.h"
 
 namespace rayspec {
 
@@ -44,67 +45,13 @@ inline Val fromFloat(float f) {
   return r;
 }
 
-enum class OpCode : uint8_t {
-  SphereHit,
-  SphereNear,
-  SphereFar,
-  RecordUint,
-  RecordFloat,
-  And,
-  Or,
-  Not,
-  Odd,
-  Even,
-  BitAnd,
-  BitOr,
-  BitXor,
-  BitNot,
-  Shl,
-  Shr,
-  FloatBits,
-  BitsFloat,
-  ToFloat,
-  ToUint,
-  RoundEven,
-  Vec,
-  X,
-  Y,
-  Z,
-  W,
-  Dot,
-  Cross,
-  Mat3Mul,
-  Mat3TMul,
-  Length,
-  Normalize,
-  Eq,
-  Ne,
-  Lt,
-  Le,
-  Gt,
-  Ge,
-  Mod,
-  Add,
-  Sub,
-  Mul,
-  Div,
-  Min,
-  Max,
-  LightPoint,
-  LightSpot,
-  LightDirectional,
-  Load,
-  DataWord,  // payload_word .. callee_word: CExpr::index the WordArray, size its words
-  Unknown
-};
-
 struct CExpr {
   Expr::Kind kind = Expr::Kind::Literal;
   ValueType type = ValueType::Uint;
   uint8_t builtin = kBiUnknown;  // Builtin
-  OpCode op = OpCode::Unknown;   // Op
-  uint32_t index = 0;  // RecordUint/RecordFloat: word; Vec: component count; payload/child
-                       // word; Local: its (first) slot in the frame
+  Op op = Op::None;              // Op
+  uint32_t index = 0;  // RecordUint/RecordFloat: word; payload/child word; Local: its (first)
+                       // slot in the frame
   uint32_t size = 0;   // Local: an array's elements (0: a scalar)
   Val literal;         // Literal
   std::vector<CExpr> args;
@@ -189,6 +136,7 @@ struct CPipeline {
   std::vector<CProgram> hit_programs;  // storage for the groups' programs
   std::vector<CHitGroup> groups;
   std::bitset<kBiCount> read_bits;  // every built-in any program reads
+  BuiltinNeeds needs = 0;           // every need of the built-ins read (program/builtins.h)
   bool reads_sphere = false;        // sphere_* ops (read the object-space ray and the box)
   bool any_hit_terminates = false;  // some group's any-hit has a `terminate`
   // Its any-hit or intersection programs may depend on the order candidates

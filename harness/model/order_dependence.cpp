@@ -96,7 +96,7 @@ class Scan {
       if (b == kBiPayloadColor || b == kBiPayloadValue || b == kBiPayloadWord)
         read({Place::Payload, 0}, s);
     }
-    if (e.kind == Expr::Kind::Op && e.op == OpCode::DataWord) read({Place::Payload, 0}, s);
+    if (e.kind == Expr::Kind::Op && wordArrayOf(e.op)) read({Place::Payload, 0}, s);
     for (const CExpr& a : e.args) expr(a, s);
   }
 
@@ -104,8 +104,7 @@ class Scan {
   // or a sphere root), not only from the interval or constants.
   static bool ownT(const CExpr& e) {
     if (e.kind == Expr::Kind::Builtin && e.builtin != kBiTmin && e.builtin != kBiTmax) return true;
-    if (e.kind == Expr::Kind::Op && (e.op == OpCode::SphereNear || e.op == OpCode::SphereFar))
-      return true;
+    if (e.kind == Expr::Kind::Op && (e.op == Op::SphereNear || e.op == Op::SphereFar)) return true;
     for (const CExpr& a : e.args)
       if (ownT(a)) return true;
     return false;

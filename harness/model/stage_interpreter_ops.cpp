@@ -18,20 +18,20 @@ bool isVec(ValueType t) {
 }
 
 // eq ne lt le gt ge: Uint x Uint exactly, else as doubles.
-Val compare(OpCode n, const Val* a, ValueType t0, ValueType t1) {
+Val compare(Op n, const Val* a, ValueType t0, ValueType t1) {
   Val r;
   const bool u = t0 == ValueType::Uint && t1 == ValueType::Uint;
   const double x = u ? a[0].u : static_cast<double>(t0 == ValueType::Uint ? a[0].u : a[0].f[0]);
   const double y = u ? a[1].u : static_cast<double>(t1 == ValueType::Uint ? a[1].u : a[1].f[0]);
-  if (n == OpCode::Eq)
+  if (n == Op::Eq)
     r.b = x == y;
-  else if (n == OpCode::Ne)
+  else if (n == Op::Ne)
     r.b = x != y;
-  else if (n == OpCode::Lt)
+  else if (n == Op::Lt)
     r.b = x < y;
-  else if (n == OpCode::Le)
+  else if (n == Op::Le)
     r.b = x <= y;
-  else if (n == OpCode::Gt)
+  else if (n == Op::Gt)
     r.b = x > y;
   else
     r.b = x >= y;
@@ -39,23 +39,23 @@ Val compare(OpCode n, const Val* a, ValueType t0, ValueType t1) {
 }
 
 // dot, length, normalize of vectors with cnt components.
-Val vectorLength(OpCode n, const Val* a, int cnt) {
+Val vectorLength(Op n, const Val* a, int cnt) {
   Val r;
   float d = 0;
-  const Val& b = n == OpCode::Dot ? a[1] : a[0];
+  const Val& b = n == Op::Dot ? a[1] : a[0];
   for (int k = 0; k < cnt; ++k) d = k == 0 ? a[0].f[0] * b.f[0] : d + a[0].f[k] * b.f[k];
-  if (n == OpCode::Dot) return fromFloat(d);
+  if (n == Op::Dot) return fromFloat(d);
   const float len = std::sqrt(d);
-  if (n == OpCode::Length) return fromFloat(len);
+  if (n == Op::Length) return fromFloat(len);
   for (int k = 0; k < cnt; ++k) r.f[k] = a[0].f[k] / len;
   return r;
 }
 
-Val lightOp(OpCode n, const Val* a, const std::vector<uint32_t>* record_data) {
+Val lightOp(Op n, const Val* a, const std::vector<uint32_t>* record_data) {
   static const std::vector<uint32_t> kNoRecord;
-  const LightKind kind = n == OpCode::LightPoint  ? LightKind::Point
-                         : n == OpCode::LightSpot ? LightKind::Spot
-                                                  : LightKind::Directional;
+  const LightKind kind = n == Op::LightPoint  ? LightKind::Point
+                         : n == Op::LightSpot ? LightKind::Spot
+                                              : LightKind::Directional;
   Val r;
   r.f = lightColor(kind, {a[0].f[0], a[0].f[1], a[0].f[2]}, {a[1].f[0], a[1].f[1], a[1].f[2]},
                    record_data ? *record_data : kNoRecord);
@@ -65,32 +65,32 @@ Val lightOp(OpCode n, const Val* a, const std::vector<uint32_t>* record_data) {
 }  // namespace
 
 bool StageInterpreter::opOnDemand(const CExpr& e, StageEnv& env, Val& r) {
-  const OpCode n = e.op;
+  const Op n = e.op;
   switch (n) {
-    case OpCode::SphereHit:
-    case OpCode::SphereNear:
-    case OpCode::SphereFar: {
+    case Op::SphereHit:
+    case Op::SphereNear:
+    case Op::SphereFar: {
       static const HitView kNone;
       const HitView* hv = env.hit ? env.hit : &kNone;
       SphereRoots s =
           sphereRoots(hv->aabb_min, hv->aabb_max, hv->object_origin, hv->object_direction);
-      if (n == OpCode::SphereHit)
+      if (n == Op::SphereHit)
         r.b = env.traversal ? hits_.sphereHitDecision(env, s.hit, s.disc) : s.hit;
       else
-        r.f[0] = n == OpCode::SphereNear ? s.t_near : s.t_far;
+        r.f[0] = n == Op::SphereNear ? s.t_near : s.t_far;
       return true;
     }
-    case OpCode::RecordUint:
-    case OpCode::RecordFloat: {
+    case Op::RecordUint:
+    case Op::RecordFloat: {
       const uint32_t i = e.index;
       const uint32_t w =
           env.record_data && i < env.record_data->size() ? (*env.record_data)[i] : 0u;
-      r = n == OpCode::RecordUint ? fromUint(w) : fromFloat(std::bit_cast<float>(w));
+      r = n == Op::RecordUint ? fromUint(w) : fromFloat(std::bit_cast<float>(w));
       return true;
     }
-    case OpCode::And:
-    case OpCode::Or: {
-      const bool is_and = n == OpCode::And;
+    case Op::And:
+    case Op::Or: {
+      const bool is_and = n == Op::And;
       r.b = is_and;
       for (const CExpr& a : e.args) {
         const bool b = eval(a, env).b;
@@ -101,20 +101,23 @@ bool StageInterpreter::opOnDemand(const CExpr& e, StageEnv& env, Val& r) {
       }
       return true;
     }
-    case OpCode::Load: {  // an element of an array local, index modulo its size
+    case Op::Load: {  // an element of an array local, index modulo its size
       const CExpr& array = e.args[0];
       const uint32_t n = std::max<uint32_t>(array.size, 1);
       const size_t slot = array.index + eval(e.args[1], env).u % n;
       r = slot < env.locals.size() ? env.locals[slot] : Val{};
       return true;
     }
-    case OpCode::DataWord: {
-      const uint32_t* w = ModelBuiltins::dataWord(static_cast<WordArray>(e.index), e.size,
-                                                  eval(e.args[0], env).u, env);
+    case Op::PayloadWord:
+    case Op::ChildWord:
+    case Op::CallWord:
+    case Op::CalleeWord: {
+      const uint32_t* w =
+          ModelBuiltins::dataWord(*wordArrayOf(n), e.size, eval(e.args[0], env).u, env);
       r = fromUint(w ? *w : 0u);
       return true;
     }
-    case OpCode::Unknown:
+    case Op::None:
       if (st_.error.empty())
         st_.error = "model: unknown op '" + (e.src ? e.src->name : std::string("?")) + "'";
       return true;
@@ -127,22 +130,22 @@ namespace {
 
 // bit_and .. shr on Uint (a shift by b % 32, as the generated GLSL does),
 // and the bit casts.
-Val bitOp(OpCode n, const Val* a) {
+Val bitOp(Op n, const Val* a) {
   const uint32_t x = a[0].u, y = a[1].u;
   switch (n) {
-    case OpCode::BitAnd:
+    case Op::BitAnd:
       return fromUint(x & y);
-    case OpCode::BitOr:
+    case Op::BitOr:
       return fromUint(x | y);
-    case OpCode::BitXor:
+    case Op::BitXor:
       return fromUint(x ^ y);
-    case OpCode::BitNot:
+    case Op::BitNot:
       return fromUint(~x);
-    case OpCode::Shl:
+    case Op::Shl:
       return fromUint(x << (y & 31u));
-    case OpCode::Shr:
+    case Op::Shr:
       return fromUint(x >> (y & 31u));
-    case OpCode::FloatBits:
+    case Op::FloatBits:
       return fromUint(std::bit_cast<uint32_t>(a[0].f[0]));
     default:  // BitsFloat
       return fromFloat(std::bit_cast<float>(x));
@@ -150,12 +153,12 @@ Val bitOp(OpCode n, const Val* a) {
 }
 
 // mat3_mul: c0 v.x + c1 v.y + c2 v.z; mat3_tmul: (c0.v, c1.v, c2.v).
-Val matrixTimes(OpCode n, const Val* a) {
+Val matrixTimes(Op n, const Val* a) {
   const auto& v = a[3].f;
   Val r;
   for (int k = 0; k < 3; ++k)
-    r.f[k] = n == OpCode::Mat3Mul ? a[0].f[k] * v[0] + a[1].f[k] * v[1] + a[2].f[k] * v[2]
-                                  : a[k].f[0] * v[0] + a[k].f[1] * v[1] + a[k].f[2] * v[2];
+    r.f[k] = n == Op::Mat3Mul ? a[0].f[k] * v[0] + a[1].f[k] * v[1] + a[2].f[k] * v[2]
+                              : a[k].f[0] * v[0] + a[k].f[1] * v[1] + a[k].f[2] * v[2];
   return r;
 }
 
@@ -190,104 +193,126 @@ union ArgSlots {
 }  // namespace
 
 Val StageInterpreter::op(const CExpr& e, StageEnv& env) {
-  const OpCode n = e.op;
+  const Op n = e.op;
   Val r;
   if (opOnDemand(e, env, r)) return r;
   ArgSlots a;  // every remaining op takes at most 4 arguments (vec4)
   const size_t na = a.fill(e.args.size(), [&](size_t i) { return eval(e.args[i], env); });
   switch (n) {
-    case OpCode::Not:
+    case Op::Not:
       r.b = !a[0].b;
       return r;
-    case OpCode::Odd:
+    case Op::Odd:
       r.b = (a[0].u & 1u) != 0;
       return r;
-    case OpCode::BitAnd:
-    case OpCode::BitOr:
-    case OpCode::BitXor:
-    case OpCode::BitNot:
-    case OpCode::Shl:
-    case OpCode::Shr:
-    case OpCode::FloatBits:
-    case OpCode::BitsFloat:
+    case Op::BitAnd:
+    case Op::BitOr:
+    case Op::BitXor:
+    case Op::BitNot:
+    case Op::Shl:
+    case Op::Shr:
+    case Op::FloatBits:
+    case Op::BitsFloat:
       return bitOp(n, a);
-    case OpCode::Even:
+    case Op::Even:
       r.b = (a[0].u & 1u) == 0;
       return r;
-    case OpCode::ToFloat:
+    case Op::ToFloat:
       return fromFloat(static_cast<float>(a[0].u));
-    case OpCode::ToUint: {
+    case Op::ToUint: {
       const float f = a[0].f[0];
       return fromUint(f <= 0 || std::isnan(f) ? 0u
                       : f >= 4294967295.0f    ? 0xFFFFFFFFu
                                               : static_cast<uint32_t>(f));
     }
-    case OpCode::RoundEven:  // the default rounding mode: to nearest, ties to even
+    case Op::RoundEven:  // the default rounding mode: to nearest, ties to even
       return fromFloat(std::nearbyint(a[0].f[0]));
-    case OpCode::Vec: {
-      const int cnt = static_cast<int>(e.index);
+    case Op::Vec2:
+    case Op::Vec3:
+    case Op::Vec4: {
+      const int cnt = 2 + static_cast<int>(n) - static_cast<int>(Op::Vec2);
       for (int k = 0; k < cnt; ++k)
         r.f[k] = na == 1 ? a[0].f[0] : (k < static_cast<int>(na) ? a[k].f[0] : 0.0f);
       return r;
     }
-    case OpCode::LightPoint:
-    case OpCode::LightSpot:
-    case OpCode::LightDirectional:
+    case Op::LightPoint:
+    case Op::LightSpot:
+    case Op::LightDirectional:
       return lightOp(n, a, env.record_data);
-    case OpCode::X:
+    case Op::CompX:
       return fromFloat(a[0].f[0]);
-    case OpCode::Y:
+    case Op::CompY:
       return fromFloat(a[0].f[1]);
-    case OpCode::Z:
+    case Op::CompZ:
       return fromFloat(a[0].f[2]);
-    case OpCode::W:
+    case Op::CompW:
       return fromFloat(a[0].f[3]);
-    case OpCode::Cross:
+    case Op::Cross:
       return crossProduct(a);
-    case OpCode::Mat3Mul:
-    case OpCode::Mat3TMul:
+    case Op::Mat3Mul:
+    case Op::Mat3TMul:
       return matrixTimes(n, a);
-    case OpCode::Dot:
-    case OpCode::Length:
-    case OpCode::Normalize:
+    case Op::Dot:
+    case Op::Length:
+    case Op::Normalize:
       return vectorLength(n, a, componentCount(e.args[0].type));
-    case OpCode::Eq:
-    case OpCode::Ne:
-    case OpCode::Lt:
-    case OpCode::Le:
-    case OpCode::Gt:
-    case OpCode::Ge:
+    case Op::Eq:
+    case Op::Ne:
+    case Op::Lt:
+    case Op::Le:
+    case Op::Gt:
+    case Op::Ge:
       return compare(n, a, e.args[0].type, e.args[1].type);
-    case OpCode::Mod:
+    case Op::Mod:
       // R-UB: the ray is undefined; the model goes on with 0.
       if (a[1].u == 0) st_.divisionByZero(e);
       r.u = a[1].u == 0 ? 0 : a[0].u % a[1].u;
       return r;
-    default:
+    case Op::Add:
+    case Op::Sub:
+    case Op::Mul:
+    case Op::Div:
+    case Op::Min:
+    case Op::Max:
       return arithmetic(e, a);
+    case Op::SphereHit:  // evaluated on demand (opOnDemand)
+    case Op::SphereNear:
+    case Op::SphereFar:
+    case Op::RecordUint:
+    case Op::RecordFloat:
+    case Op::And:
+    case Op::Or:
+    case Op::Load:
+    case Op::PayloadWord:
+    case Op::ChildWord:
+    case Op::CallWord:
+    case Op::CalleeWord:
+    case Op::None:
+      break;
   }
+  return r;
 }
 
 Val StageInterpreter::arithmetic(const CExpr& e, const Val* a) {
-  const OpCode n = e.op;
+  const Op n = e.op;
   Val r;
   // Uint x Uint, or float-wise with scalar broadcast.
   if (e.type == ValueType::Uint) {
     const uint32_t x = a[0].u, y = a[1].u;
-    if (n == OpCode::Add)
+    if (n == Op::Add)
       r.u = x + y;
-    else if (n == OpCode::Sub)
+    else if (n == Op::Sub)
       r.u = x - y;
-    else if (n == OpCode::Mul)
+    else if (n == Op::Mul)
       r.u = x * y;
-    else if (n == OpCode::Div && y == 0) {
+    else if (n == Op::Div && y == 0) {
       st_.divisionByZero(e);  // R-UB: the ray is undefined; the model goes on with all ones
       r.u = 0xFFFFFFFFu;
-    } else if (n == OpCode::Div)
+    } else if (n == Op::Div)
       r.u = x / y;
-    else if (n == OpCode::Min)
+    else if (n == Op::Min)
       r.u = std::min(x, y);
-    else if (n == OpCode::Max)
+    else if (n == Op::Max)
       r.u = std::max(x, y);
     return r;
   }
@@ -298,17 +323,17 @@ Val StageInterpreter::arithmetic(const CExpr& e, const Val* a) {
   };
   for (int k = 0; k < cnt; ++k) {
     const float x = comp(0, k), y = comp(1, k);
-    if (n == OpCode::Add)
+    if (n == Op::Add)
       r.f[k] = x + y;
-    else if (n == OpCode::Sub)
+    else if (n == Op::Sub)
       r.f[k] = x - y;
-    else if (n == OpCode::Mul)
+    else if (n == Op::Mul)
       r.f[k] = x * y;
-    else if (n == OpCode::Div)
+    else if (n == Op::Div)
       r.f[k] = x / y;
-    else if (n == OpCode::Min)
+    else if (n == Op::Min)
       r.f[k] = std::fmin(x, y);
-    else if (n == OpCode::Max)
+    else if (n == Op::Max)
       r.f[k] = std::fmax(x, y);
   }
   return r;

@@ -7,6 +7,7 @@
 #include "case/flag_names.h"
 #include "plan/walk_program.h"
 #include "program/builtins.h"
+#include "program/ops.h"
 
 namespace rayspec {
 namespace {
@@ -136,13 +137,13 @@ void planStatements(const std::vector<StageProgram>& programs, const Pipeline& p
       if (s.kind == Stmt::Kind::RayQuery) plan.ray_queries = true;
     });
     walkExpressions(*sp.program, [&](const Expr& e) {
-      if (e.kind == Expr::Kind::Builtin && e.name == "cull_mask") plan.cull_mask_builtin = true;
-      if (e.kind == Expr::Kind::Builtin &&
-          (isHitVertexPosition(e.name) || isQueryVertexPosition(e.name)))
-        plan.position_fetch = true;
-      if (sp.stage == Stage::Intersection &&
-          (e.name == "aabb_min" || e.name == "aabb_max" || e.name.rfind("sphere_", 0) == 0))
-        plan.scene_data = true;
+      const BuiltinInfo* b = e.kind == Expr::Kind::Builtin ? findBuiltin(e.name) : nullptr;
+      const BuiltinNeeds needs = b ? b->needs : builtin_needs::NoNeeds;
+      if (needs & builtin_needs::CullMask) plan.cull_mask_builtin = true;
+      if (needs & builtin_needs::PositionFetch) plan.position_fetch = true;
+      const bool reads_box =
+          (needs & builtin_needs::BoxData) || (e.kind == Expr::Kind::Op && isSphereOp(e.op));
+      if (sp.stage == Stage::Intersection && reads_box) plan.scene_data = true;
     });
   }
   plan.trace_depth = plan.nested_trace ? std::max<uint32_t>(pipe.max_recursion, 1) : 1;

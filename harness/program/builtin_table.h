@@ -5,9 +5,11 @@
 // model's meaning of each is one exhaustive switch (model/model_builtins.cpp),
 // which fails to build when a row has none.
 //
-// X(Id, "name", type, stages, "GLSL", "ray query GLSL", "meaning"):
+// X(Id, "name", type, stages, needs, "GLSL", "ray query GLSL", "meaning"):
 //   stages: the letters of program/builtins.h (R raygen, M miss, C
 //     closest-hit, A any-hit, I intersection, K callable);
+//   needs: what the model and the plan must keep or compute for a program
+//     that reads it (program/builtins.h BuiltinNeeds; NoNeeds for none);
 //   GLSL: the expression the stage reads, or nullptr where the emitter spells
 //     it itself (hit by stage; the word<i> families by index);
 //   ray query GLSL: the same value where the stage runs inlined in raygen
@@ -34,289 +36,293 @@
 // The ray query getters, a list of their own so that the model's one switch
 // can name them all at once (model/model_builtins.cpp).
 #define RAYSPEC_QUERY_BUILTINS(X)                                                                 \
-  X(QCandT, "candidate.t", Float, kAllStages, "rayQueryGetIntersectionTEXT(rs_query, false)",     \
-    nullptr, "the current candidate's t")                                                         \
-  X(QCandCustomIndex, "candidate.instance_custom_index", Uint, kAllStages,                        \
+  X(QCandT, "candidate.t", Float, kAllStages, NoNeeds,                                            \
+    "rayQueryGetIntersectionTEXT(rs_query, false)", nullptr, "the current candidate's t")         \
+  X(QCandCustomIndex, "candidate.instance_custom_index", Uint, kAllStages, NoNeeds,               \
     "uint(rayQueryGetIntersectionInstanceCustomIndexEXT(rs_query, false))", nullptr,              \
     "the current candidate's instance custom index")                                              \
-  X(QCandInstance, "candidate.instance_id", Uint, kAllStages,                                     \
+  X(QCandInstance, "candidate.instance_id", Uint, kAllStages, NoNeeds,                            \
     "uint(rayQueryGetIntersectionInstanceIdEXT(rs_query, false))", nullptr,                       \
     "the current candidate's instance id")                                                        \
-  X(QCandSbtOffset, "candidate.sbt_record_offset", Uint, kAllStages,                              \
+  X(QCandSbtOffset, "candidate.sbt_record_offset", Uint, kAllStages, NoNeeds,                     \
     "rayQueryGetIntersectionInstanceShaderBindingTableRecordOffsetEXT(rs_query, false)", nullptr, \
     "the current candidate's instance's SBT record offset")                                       \
-  X(QCandGeometry, "candidate.geometry_index", Uint, kAllStages,                                  \
+  X(QCandGeometry, "candidate.geometry_index", Uint, kAllStages, NoNeeds,                         \
     "uint(rayQueryGetIntersectionGeometryIndexEXT(rs_query, false))", nullptr,                    \
     "the current candidate's geometry index")                                                     \
-  X(QCandPrimitive, "candidate.primitive_id", Uint, kAllStages,                                   \
+  X(QCandPrimitive, "candidate.primitive_id", Uint, kAllStages, NoNeeds,                          \
     "uint(rayQueryGetIntersectionPrimitiveIndexEXT(rs_query, false))", nullptr,                   \
     "the current candidate's primitive index")                                                    \
-  X(QCandBarycentrics, "candidate.barycentrics", Vec2, kAllStages,                                \
+  X(QCandBarycentrics, "candidate.barycentrics", Vec2, kAllStages, NoNeeds,                       \
     "rayQueryGetIntersectionBarycentricsEXT(rs_query, false)", nullptr,                           \
     "the current candidate's barycentrics (triangles)")                                           \
-  X(QCandFrontFace, "candidate.front_face", Uint, kAllStages,                                     \
+  X(QCandFrontFace, "candidate.front_face", Uint, kAllStages, NoNeeds,                            \
     "uint(rayQueryGetIntersectionFrontFaceEXT(rs_query, false))", nullptr,                        \
     "the current candidate's 1 front face, 0 back face (triangles)")                              \
-  X(QCandObjectOrigin, "candidate.object_ray_origin", Vec3, kAllStages,                           \
+  X(QCandObjectOrigin, "candidate.object_ray_origin", Vec3, kAllStages, NoNeeds,                  \
     "rayQueryGetIntersectionObjectRayOriginEXT(rs_query, false)", nullptr,                        \
     "the current candidate's object-space ray origin")                                            \
-  X(QCandObjectDirection, "candidate.object_ray_direction", Vec3, kAllStages,                     \
+  X(QCandObjectDirection, "candidate.object_ray_direction", Vec3, kAllStages, NoNeeds,            \
     "rayQueryGetIntersectionObjectRayDirectionEXT(rs_query, false)", nullptr,                     \
     "the current candidate's object-space ray direction")                                         \
-  X(QCandObjectToWorld0, "candidate.object_to_world0", Vec3, kAllStages,                          \
+  X(QCandObjectToWorld0, "candidate.object_to_world0", Vec3, kAllStages, NoNeeds,                 \
     "rayQueryGetIntersectionObjectToWorldEXT(rs_query, false)[0]", nullptr,                       \
     "the current candidate's column 0 of the object-to-world matrix")                             \
-  X(QCandObjectToWorld1, "candidate.object_to_world1", Vec3, kAllStages,                          \
+  X(QCandObjectToWorld1, "candidate.object_to_world1", Vec3, kAllStages, NoNeeds,                 \
     "rayQueryGetIntersectionObjectToWorldEXT(rs_query, false)[1]", nullptr,                       \
     "the current candidate's column 1 of the object-to-world matrix")                             \
-  X(QCandObjectToWorld2, "candidate.object_to_world2", Vec3, kAllStages,                          \
+  X(QCandObjectToWorld2, "candidate.object_to_world2", Vec3, kAllStages, NoNeeds,                 \
     "rayQueryGetIntersectionObjectToWorldEXT(rs_query, false)[2]", nullptr,                       \
     "the current candidate's column 2 of the object-to-world matrix")                             \
-  X(QCandObjectToWorld3, "candidate.object_to_world3", Vec3, kAllStages,                          \
+  X(QCandObjectToWorld3, "candidate.object_to_world3", Vec3, kAllStages, NoNeeds,                 \
     "rayQueryGetIntersectionObjectToWorldEXT(rs_query, false)[3]", nullptr,                       \
     "the current candidate's column 3 of the object-to-world matrix")                             \
-  X(QCandWorldToObject0, "candidate.world_to_object0", Vec3, kAllStages,                          \
+  X(QCandWorldToObject0, "candidate.world_to_object0", Vec3, kAllStages, NoNeeds,                 \
     "rayQueryGetIntersectionWorldToObjectEXT(rs_query, false)[0]", nullptr,                       \
     "the current candidate's column 0 of the world-to-object matrix")                             \
-  X(QCandWorldToObject1, "candidate.world_to_object1", Vec3, kAllStages,                          \
+  X(QCandWorldToObject1, "candidate.world_to_object1", Vec3, kAllStages, NoNeeds,                 \
     "rayQueryGetIntersectionWorldToObjectEXT(rs_query, false)[1]", nullptr,                       \
     "the current candidate's column 1 of the world-to-object matrix")                             \
-  X(QCandWorldToObject2, "candidate.world_to_object2", Vec3, kAllStages,                          \
+  X(QCandWorldToObject2, "candidate.world_to_object2", Vec3, kAllStages, NoNeeds,                 \
     "rayQueryGetIntersectionWorldToObjectEXT(rs_query, false)[2]", nullptr,                       \
     "the current candidate's column 2 of the world-to-object matrix")                             \
-  X(QCandWorldToObject3, "candidate.world_to_object3", Vec3, kAllStages,                          \
+  X(QCandWorldToObject3, "candidate.world_to_object3", Vec3, kAllStages, NoNeeds,                 \
     "rayQueryGetIntersectionWorldToObjectEXT(rs_query, false)[3]", nullptr,                       \
     "the current candidate's column 3 of the world-to-object matrix")                             \
-  X(QCandVertex0, "candidate.vertex_position0", Vec3, kAllStages,                                 \
+  X(QCandVertex0, "candidate.vertex_position0", Vec3, kAllStages, PositionFetch,                  \
     "rs_query_positions(rs_query, 0u)[0]", nullptr,                                               \
     "the current candidate triangle's first vertex in object space (position fetch)")             \
-  X(QCandVertex1, "candidate.vertex_position1", Vec3, kAllStages,                                 \
+  X(QCandVertex1, "candidate.vertex_position1", Vec3, kAllStages, PositionFetch,                  \
     "rs_query_positions(rs_query, 0u)[1]", nullptr,                                               \
     "the current candidate triangle's second vertex in object space (position fetch)")            \
-  X(QCandVertex2, "candidate.vertex_position2", Vec3, kAllStages,                                 \
+  X(QCandVertex2, "candidate.vertex_position2", Vec3, kAllStages, PositionFetch,                  \
     "rs_query_positions(rs_query, 0u)[2]", nullptr,                                               \
     "the current candidate triangle's third vertex in object space (position fetch)")             \
-  X(QCandType, "candidate.type", Uint, kAllStages,                                                \
+  X(QCandType, "candidate.type", Uint, kAllStages, NoNeeds,                                       \
     "uint(rayQueryGetIntersectionTypeEXT(rs_query, false))", nullptr,                             \
     "the candidate's type: 0 triangle, 1 AABB")                                                   \
-  X(QCandAabbOpaque, "candidate.aabb_opaque", Uint, kAllStages,                                   \
+  X(QCandAabbOpaque, "candidate.aabb_opaque", Uint, kAllStages, NoNeeds,                          \
     "uint(rayQueryGetIntersectionCandidateAABBOpaqueEXT(rs_query))", nullptr,                     \
     "1 if the AABB candidate is opaque (after geometry, instance and ray flags)")                 \
-  X(QCommittedT, "committed.t", Float, kAllStages, "rayQueryGetIntersectionTEXT(rs_query, true)", \
-    nullptr, "the committed intersection's t")                                                    \
-  X(QCommittedCustomIndex, "committed.instance_custom_index", Uint, kAllStages,                   \
+  X(QCommittedT, "committed.t", Float, kAllStages, NoNeeds,                                       \
+    "rayQueryGetIntersectionTEXT(rs_query, true)", nullptr, "the committed intersection's t")     \
+  X(QCommittedCustomIndex, "committed.instance_custom_index", Uint, kAllStages, NoNeeds,          \
     "uint(rayQueryGetIntersectionInstanceCustomIndexEXT(rs_query, true))", nullptr,               \
     "the committed intersection's instance custom index")                                         \
-  X(QCommittedInstance, "committed.instance_id", Uint, kAllStages,                                \
+  X(QCommittedInstance, "committed.instance_id", Uint, kAllStages, NoNeeds,                       \
     "uint(rayQueryGetIntersectionInstanceIdEXT(rs_query, true))", nullptr,                        \
     "the committed intersection's instance id")                                                   \
-  X(QCommittedSbtOffset, "committed.sbt_record_offset", Uint, kAllStages,                         \
+  X(QCommittedSbtOffset, "committed.sbt_record_offset", Uint, kAllStages, NoNeeds,                \
     "rayQueryGetIntersectionInstanceShaderBindingTableRecordOffsetEXT(rs_query, true)", nullptr,  \
     "the committed intersection's instance's SBT record offset")                                  \
-  X(QCommittedGeometry, "committed.geometry_index", Uint, kAllStages,                             \
+  X(QCommittedGeometry, "committed.geometry_index", Uint, kAllStages, NoNeeds,                    \
     "uint(rayQueryGetIntersectionGeometryIndexEXT(rs_query, true))", nullptr,                     \
     "the committed intersection's geometry index")                                                \
-  X(QCommittedPrimitive, "committed.primitive_id", Uint, kAllStages,                              \
+  X(QCommittedPrimitive, "committed.primitive_id", Uint, kAllStages, NoNeeds,                     \
     "uint(rayQueryGetIntersectionPrimitiveIndexEXT(rs_query, true))", nullptr,                    \
     "the committed intersection's primitive index")                                               \
-  X(QCommittedBarycentrics, "committed.barycentrics", Vec2, kAllStages,                           \
+  X(QCommittedBarycentrics, "committed.barycentrics", Vec2, kAllStages, NoNeeds,                  \
     "rayQueryGetIntersectionBarycentricsEXT(rs_query, true)", nullptr,                            \
     "the committed intersection's barycentrics (triangles)")                                      \
-  X(QCommittedFrontFace, "committed.front_face", Uint, kAllStages,                                \
+  X(QCommittedFrontFace, "committed.front_face", Uint, kAllStages, NoNeeds,                       \
     "uint(rayQueryGetIntersectionFrontFaceEXT(rs_query, true))", nullptr,                         \
     "the committed intersection's 1 front face, 0 back face (triangles)")                         \
-  X(QCommittedObjectOrigin, "committed.object_ray_origin", Vec3, kAllStages,                      \
+  X(QCommittedObjectOrigin, "committed.object_ray_origin", Vec3, kAllStages, NoNeeds,             \
     "rayQueryGetIntersectionObjectRayOriginEXT(rs_query, true)", nullptr,                         \
     "the committed intersection's object-space ray origin")                                       \
-  X(QCommittedObjectDirection, "committed.object_ray_direction", Vec3, kAllStages,                \
+  X(QCommittedObjectDirection, "committed.object_ray_direction", Vec3, kAllStages, NoNeeds,       \
     "rayQueryGetIntersectionObjectRayDirectionEXT(rs_query, true)", nullptr,                      \
     "the committed intersection's object-space ray direction")                                    \
-  X(QCommittedObjectToWorld0, "committed.object_to_world0", Vec3, kAllStages,                     \
+  X(QCommittedObjectToWorld0, "committed.object_to_world0", Vec3, kAllStages, NoNeeds,            \
     "rayQueryGetIntersectionObjectToWorldEXT(rs_query, true)[0]", nullptr,                        \
     "the committed intersection's column 0 of the object-to-world matrix")                        \
-  X(QCommittedObjectToWorld1, "committed.object_to_world1", Vec3, kAllStages,                     \
+  X(QCommittedObjectToWorld1, "committed.object_to_world1", Vec3, kAllStages, NoNeeds,            \
     "rayQueryGetIntersectionObjectToWorldEXT(rs_query, true)[1]", nullptr,                        \
     "the committed intersection's column 1 of the object-to-world matrix")                        \
-  X(QCommittedObjectToWorld2, "committed.object_to_world2", Vec3, kAllStages,                     \
+  X(QCommittedObjectToWorld2, "committed.object_to_world2", Vec3, kAllStages, NoNeeds,            \
     "rayQueryGetIntersectionObjectToWorldEXT(rs_query, true)[2]", nullptr,                        \
     "the committed intersection's column 2 of the object-to-world matrix")                        \
-  X(QCommittedObjectToWorld3, "committed.object_to_world3", Vec3, kAllStages,                     \
+  X(QCommittedObjectToWorld3, "committed.object_to_world3", Vec3, kAllStages, NoNeeds,            \
     "rayQueryGetIntersectionObjectToWorldEXT(rs_query, true)[3]", nullptr,                        \
     "the committed intersection's column 3 of the object-to-world matrix")                        \
-  X(QCommittedWorldToObject0, "committed.world_to_object0", Vec3, kAllStages,                     \
+  X(QCommittedWorldToObject0, "committed.world_to_object0", Vec3, kAllStages, NoNeeds,            \
     "rayQueryGetIntersectionWorldToObjectEXT(rs_query, true)[0]", nullptr,                        \
     "the committed intersection's column 0 of the world-to-object matrix")                        \
-  X(QCommittedWorldToObject1, "committed.world_to_object1", Vec3, kAllStages,                     \
+  X(QCommittedWorldToObject1, "committed.world_to_object1", Vec3, kAllStages, NoNeeds,            \
     "rayQueryGetIntersectionWorldToObjectEXT(rs_query, true)[1]", nullptr,                        \
     "the committed intersection's column 1 of the world-to-object matrix")                        \
-  X(QCommittedWorldToObject2, "committed.world_to_object2", Vec3, kAllStages,                     \
+  X(QCommittedWorldToObject2, "committed.world_to_object2", Vec3, kAllStages, NoNeeds,            \
     "rayQueryGetIntersectionWorldToObjectEXT(rs_query, true)[2]", nullptr,                        \
     "the committed intersection's column 2 of the world-to-object matrix")                        \
-  X(QCommittedWorldToObject3, "committed.world_to_object3", Vec3, kAllStages,                     \
+  X(QCommittedWorldToObject3, "committed.world_to_object3", Vec3, kAllStages, NoNeeds,            \
     "rayQueryGetIntersectionWorldToObjectEXT(rs_query, true)[3]", nullptr,                        \
     "the committed intersection's column 3 of the world-to-object matrix")                        \
-  X(QCommittedVertex0, "committed.vertex_position0", Vec3, kAllStages,                            \
+  X(QCommittedVertex0, "committed.vertex_position0", Vec3, kAllStages, PositionFetch,             \
     "rs_query_positions(rs_query, 1u)[0]", nullptr,                                               \
     "the committed triangle's first vertex in object space (position fetch)")                     \
-  X(QCommittedVertex1, "committed.vertex_position1", Vec3, kAllStages,                            \
+  X(QCommittedVertex1, "committed.vertex_position1", Vec3, kAllStages, PositionFetch,             \
     "rs_query_positions(rs_query, 1u)[1]", nullptr,                                               \
     "the committed triangle's second vertex in object space (position fetch)")                    \
-  X(QCommittedVertex2, "committed.vertex_position2", Vec3, kAllStages,                            \
+  X(QCommittedVertex2, "committed.vertex_position2", Vec3, kAllStages, PositionFetch,             \
     "rs_query_positions(rs_query, 1u)[2]", nullptr,                                               \
     "the committed triangle's third vertex in object space (position fetch)")                     \
-  X(QCommittedType, "committed.type", Uint, kAllStages,                                           \
+  X(QCommittedType, "committed.type", Uint, kAllStages, NoNeeds,                                  \
     "uint(rayQueryGetIntersectionTypeEXT(rs_query, true))", nullptr,                              \
     "the committed type: 0 none, 1 triangle, 2 generated")                                        \
-  X(QTmin, "query.ray_tmin", Float, kAllStages, "rayQueryGetRayTMinEXT(rs_query)", nullptr,       \
-    "the tmin the query was initialized with")                                                    \
-  X(QFlags, "query.ray_flags", Uint, kAllStages, "rayQueryGetRayFlagsEXT(rs_query)", nullptr,     \
-    "the ray flags the query was initialized with")                                               \
-  X(QWorldOrigin, "query.world_ray_origin", Vec3, kAllStages,                                     \
+  X(QTmin, "query.ray_tmin", Float, kAllStages, NoNeeds, "rayQueryGetRayTMinEXT(rs_query)",       \
+    nullptr, "the tmin the query was initialized with")                                           \
+  X(QFlags, "query.ray_flags", Uint, kAllStages, NoNeeds, "rayQueryGetRayFlagsEXT(rs_query)",     \
+    nullptr, "the ray flags the query was initialized with")                                      \
+  X(QWorldOrigin, "query.world_ray_origin", Vec3, kAllStages, NoNeeds,                            \
     "rayQueryGetWorldRayOriginEXT(rs_query)", nullptr,                                            \
     "the world ray origin the query was initialized with")                                        \
-  X(QWorldDirection, "query.world_ray_direction", Vec3, kAllStages,                               \
+  X(QWorldDirection, "query.world_ray_direction", Vec3, kAllStages, NoNeeds,                      \
     "rayQueryGetWorldRayDirectionEXT(rs_query)", nullptr,                                         \
     "the world ray direction the query was initialized with")
 
 #define RAYSPEC_BUILTINS(X)                                                                        \
-  X(LaunchX, "launch_id_x", Uint, kAllStages, "RS_LAUNCH_ID.x", "RS_LAUNCH_ID.x",                  \
+  X(LaunchX, "launch_id_x", Uint, kAllStages, NoNeeds, "RS_LAUNCH_ID.x", "RS_LAUNCH_ID.x",         \
     "x of gl_LaunchIDEXT")                                                                         \
-  X(LaunchY, "launch_id_y", Uint, kAllStages, "RS_LAUNCH_ID.y", "RS_LAUNCH_ID.y",                  \
+  X(LaunchY, "launch_id_y", Uint, kAllStages, NoNeeds, "RS_LAUNCH_ID.y", "RS_LAUNCH_ID.y",         \
     "y of gl_LaunchIDEXT")                                                                         \
-  X(LaunchW, "launch_size_x", Uint, kAllStages, "RS_LAUNCH_SIZE.x", "RS_LAUNCH_SIZE.x",            \
+  X(LaunchW, "launch_size_x", Uint, kAllStages, NoNeeds, "RS_LAUNCH_SIZE.x", "RS_LAUNCH_SIZE.x",   \
     "x of gl_LaunchSizeEXT")                                                                       \
-  X(LaunchH, "launch_size_y", Uint, kAllStages, "RS_LAUNCH_SIZE.y", "RS_LAUNCH_SIZE.y",            \
+  X(LaunchH, "launch_size_y", Uint, kAllStages, NoNeeds, "RS_LAUNCH_SIZE.y", "RS_LAUNCH_SIZE.y",   \
     "y of gl_LaunchSizeEXT")                                                                       \
-  X(LaunchZ, "launch_id_z", Uint, kAllStages, "RS_LAUNCH_ID.z", "RS_LAUNCH_ID.z",                  \
+  X(LaunchZ, "launch_id_z", Uint, kAllStages, NoNeeds, "RS_LAUNCH_ID.z", "RS_LAUNCH_ID.z",         \
     "z of gl_LaunchIDEXT (rays.launch)")                                                           \
-  X(LaunchD, "launch_size_z", Uint, kAllStages, "RS_LAUNCH_SIZE.z", "RS_LAUNCH_SIZE.z",            \
+  X(LaunchD, "launch_size_z", Uint, kAllStages, NoNeeds, "RS_LAUNCH_SIZE.z", "RS_LAUNCH_SIZE.z",   \
     "z of gl_LaunchSizeEXT (rays.launch)")                                                         \
-  X(Primitive, "primitive_id", Uint, I | A | C, "uint(gl_PrimitiveID)",                            \
+  X(Primitive, "primitive_id", Uint, I | A | C, NoNeeds, "uint(gl_PrimitiveID)",                   \
     "uint(rayQueryGetIntersectionPrimitiveIndexEXT(rs_rq, $c))", "gl_PrimitiveID")                 \
-  X(Instance, "instance_id", Uint, I | A | C, "uint(gl_InstanceID)",                               \
+  X(Instance, "instance_id", Uint, I | A | C, NoNeeds, "uint(gl_InstanceID)",                      \
     "uint(rayQueryGetIntersectionInstanceIdEXT(rs_rq, $c))", "gl_InstanceID")                      \
-  X(CustomIndex, "instance_custom_index", Uint, I | A | C, "uint(gl_InstanceCustomIndexEXT)",      \
+  X(CustomIndex, "instance_custom_index", Uint, I | A | C, NoNeeds,                                \
+    "uint(gl_InstanceCustomIndexEXT)",                                                             \
     "uint(rayQueryGetIntersectionInstanceCustomIndexEXT(rs_rq, $c))", "gl_InstanceCustomIndexEXT") \
-  X(Geometry, "geometry_index", Uint, I | A | C, "uint(gl_GeometryIndexEXT)",                      \
+  X(Geometry, "geometry_index", Uint, I | A | C, NoNeeds, "uint(gl_GeometryIndexEXT)",             \
     "uint(rayQueryGetIntersectionGeometryIndexEXT(rs_rq, $c))", "gl_GeometryIndexEXT")             \
-  X(HitKind, "hit_kind", Uint, A | C, "gl_HitKindEXT", "rs_hit_kind", "gl_HitKindEXT")             \
-  X(HitT, "hit_t", Float, A | C, "gl_RayTmaxEXT", "rs_hit_t",                                      \
+  X(HitKind, "hit_kind", Uint, A | C, Facing | Triangles, "gl_HitKindEXT", "rs_hit_kind",          \
+    "gl_HitKindEXT")                                                                               \
+  X(HitT, "hit_t", Float, A | C, NoNeeds, "gl_RayTmaxEXT", "rs_hit_t",                             \
     "gl_HitTEXT: in any-hit the candidate's t, in closest-hit the hit's t")                        \
-  X(Hit, "hit", Uint, C | M, nullptr, nullptr, "1 in closest-hit, 0 in miss")                      \
-  X(Barycentrics, "barycentrics", Vec2, A | C, "rs_attr", "rs_attr",                               \
+  X(Hit, "hit", Uint, C | M, NoNeeds, nullptr, nullptr, "1 in closest-hit, 0 in miss")             \
+  X(Barycentrics, "barycentrics", Vec2, A | C, NoNeeds, "rs_attr", "rs_attr",                      \
     "the hit attribute: triangle barycentrics (b1, b2), or what the intersection shader reported") \
-  X(AabbMin, "aabb_min", Vec3, I, "rs_aabb_min()", "rs_aabb_min()",                                \
+  X(AabbMin, "aabb_min", Vec3, I, BoxData, "rs_aabb_min()", "rs_aabb_min()",                       \
     "min corner of the primitive's AABB (object space)")                                           \
-  X(AabbMax, "aabb_max", Vec3, I, "rs_aabb_max()", "rs_aabb_max()",                                \
+  X(AabbMax, "aabb_max", Vec3, I, BoxData, "rs_aabb_max()", "rs_aabb_max()",                       \
     "max corner of the primitive's AABB (object space)")                                           \
-  X(ObjectOrigin, "object_ray_origin", Vec3, I | A | C, "gl_ObjectRayOriginEXT",                   \
+  X(ObjectOrigin, "object_ray_origin", Vec3, I | A | C, ObjectRay, "gl_ObjectRayOriginEXT",        \
     "rayQueryGetIntersectionObjectRayOriginEXT(rs_rq, $c)", "gl_ObjectRayOriginEXT")               \
-  X(ObjectDirection, "object_ray_direction", Vec3, I | A | C, "gl_ObjectRayDirectionEXT",          \
-    "rayQueryGetIntersectionObjectRayDirectionEXT(rs_rq, $c)", "gl_ObjectRayDirectionEXT")         \
-  X(Tmin, "ray_tmin", Float, I | A | C | M, "gl_RayTminEXT", "rayQueryGetRayTMinEXT(rs_rq)",       \
-    "gl_RayTminEXT")                                                                               \
-  X(Tmax, "ray_tmax", Float, I | A | C | M, "gl_RayTmaxEXT", nullptr, "gl_RayTmaxEXT")             \
-  X(Flags, "incoming_ray_flags", Uint, I | A | C | M, "gl_IncomingRayFlagsEXT", "rs_q_flags",      \
-    "gl_IncomingRayFlagsEXT")                                                                      \
-  X(WorldOrigin, "world_ray_origin", Vec3, I | A | C | M, "gl_WorldRayOriginEXT",                  \
+  X(ObjectDirection, "object_ray_direction", Vec3, I | A | C, ObjectRay,                           \
+    "gl_ObjectRayDirectionEXT", "rayQueryGetIntersectionObjectRayDirectionEXT(rs_rq, $c)",         \
+    "gl_ObjectRayDirectionEXT")                                                                    \
+  X(Tmin, "ray_tmin", Float, I | A | C | M, NoNeeds, "gl_RayTminEXT",                              \
+    "rayQueryGetRayTMinEXT(rs_rq)", "gl_RayTminEXT")                                               \
+  X(Tmax, "ray_tmax", Float, I | A | C | M, NoNeeds, "gl_RayTmaxEXT", nullptr, "gl_RayTmaxEXT")    \
+  X(Flags, "incoming_ray_flags", Uint, I | A | C | M, NoNeeds, "gl_IncomingRayFlagsEXT",           \
+    "rs_q_flags", "gl_IncomingRayFlagsEXT")                                                        \
+  X(WorldOrigin, "world_ray_origin", Vec3, I | A | C | M, NoNeeds, "gl_WorldRayOriginEXT",         \
     "rayQueryGetWorldRayOriginEXT(rs_rq)", "gl_WorldRayOriginEXT")                                 \
-  X(WorldDirection, "world_ray_direction", Vec3, I | A | C | M, "gl_WorldRayDirectionEXT",         \
-    "rayQueryGetWorldRayDirectionEXT(rs_rq)", "gl_WorldRayDirectionEXT")                           \
-  X(HitPosition, "hit_position", Vec3, A | C,                                                      \
+  X(WorldDirection, "world_ray_direction", Vec3, I | A | C | M, NoNeeds,                           \
+    "gl_WorldRayDirectionEXT", "rayQueryGetWorldRayDirectionEXT(rs_rq)",                           \
+    "gl_WorldRayDirectionEXT")                                                                     \
+  X(HitPosition, "hit_position", Vec3, A | C, NoNeeds,                                             \
     "(gl_WorldRayOriginEXT + gl_RayTmaxEXT * gl_WorldRayDirectionEXT)",                            \
     "(rayQueryGetWorldRayOriginEXT(rs_rq) + rs_hit_t * rayQueryGetWorldRayDirectionEXT(rs_rq))",   \
     "world ray origin + hit_t * world ray direction")                                              \
-  X(PayloadColor, "payload.color", Vec4, M | C | A | R, "payload.color", "payload.color",          \
+  X(PayloadColor, "payload.color", Vec4, M | C | A | R, NoNeeds, "payload.color", "payload.color", \
     "color of the incoming payload; in raygen the payload of its last trace")                      \
-  X(PayloadValue, "payload.value", Uint, M | C | A | R, "payload.value", "payload.value",          \
+  X(PayloadValue, "payload.value", Uint, M | C | A | R, NoNeeds, "payload.value", "payload.value", \
     "value of the incoming payload; in raygen the payload of its last trace")                      \
-  X(Depth, "depth", Uint, M | C | A, "payload.depth", "payload.depth",                             \
+  X(Depth, "depth", Uint, M | C | A, NoNeeds, "payload.depth", "payload.depth",                    \
     "trace depth: 1 for a trace from raygen, +1 per nested trace")                                 \
-  X(ChildColor, "child.color", Vec4, C | M, "child.color", "child.color",                          \
+  X(ChildColor, "child.color", Vec4, C | M, NoNeeds, "child.color", "child.color",                 \
     "color of the payload of this stage's last trace")                                             \
-  X(ChildValue, "child.value", Uint, C | M, "child.value", "child.value",                          \
+  X(ChildValue, "child.value", Uint, C | M, NoNeeds, "child.value", "child.value",                 \
     "value of the payload of this stage's last trace")                                             \
-  X(CallPosition, "call.position", Vec3, K, "call.position", "call.position",                      \
+  X(CallPosition, "call.position", Vec3, K, NoNeeds, "call.position", "call.position",             \
     "position of the incoming callable data")                                                      \
-  X(CallNormal, "call.normal", Vec3, K, "call.normal", "call.normal",                              \
+  X(CallNormal, "call.normal", Vec3, K, NoNeeds, "call.normal", "call.normal",                     \
     "normal of the incoming callable data")                                                        \
-  X(CallColor, "call.color", Vec4, K, "call.color", "call.color",                                  \
+  X(CallColor, "call.color", Vec4, K, NoNeeds, "call.color", "call.color",                         \
     "color of the incoming callable data")                                                         \
-  X(CallValue, "call.value", Uint, K, "call.value", "call.value",                                  \
+  X(CallValue, "call.value", Uint, K, NoNeeds, "call.value", "call.value",                         \
     "value of the incoming callable data")                                                         \
-  X(CalleeColor, "callee.color", Vec4, R | C | M | K, "callee.color", "callee.color",              \
+  X(CalleeColor, "callee.color", Vec4, R | C | M | K, NoNeeds, "callee.color", "callee.color",     \
     "color of the callable data after this stage's last call")                                     \
-  X(CalleeValue, "callee.value", Uint, R | C | M | K, "callee.value", "callee.value",              \
+  X(CalleeValue, "callee.value", Uint, R | C | M | K, NoNeeds, "callee.value", "callee.value",     \
     "value of the callable data after this stage's last call")                                     \
-  X(PayloadWord, "payload.word<i>", Uint, M | C | A | R, nullptr, nullptr,                         \
+  X(PayloadWord, "payload.word<i>", Uint, M | C | A | R, NoNeeds, nullptr, nullptr,                \
     "word i (0..57) of the incoming payload, within its type's pipeline.payloads words; in "       \
     "raygen the payload of its last trace (0 beyond that trace's type)")                           \
-  X(ChildWord, "child.word<i>", Uint, C | M, nullptr, nullptr,                                     \
+  X(ChildWord, "child.word<i>", Uint, C | M, NoNeeds, nullptr, nullptr,                            \
     "word i of the payload of this stage's last trace (0 beyond that trace's type)")               \
-  X(CullMask, "cull_mask", Uint, I | A | C | M, "(gl_CullMaskEXT & 0xFFu)",                        \
+  X(CullMask, "cull_mask", Uint, I | A | C | M, CullMask, "(gl_CullMaskEXT & 0xFFu)",              \
     "(rs_q_cull_mask & 0xFFu)",                                                                    \
     "gl_CullMaskEXT & 0xFF: the low 8 bits of the cull mask the trace passed, the bits every "     \
     "reading of the specification agrees on (VK_KHR_ray_tracing_maintenance1; NotSupported "       \
     "without it)")                                                                                 \
-  X(Vertex0, "vertex_position0", Vec3, A | C, "rs_hit_positions[0]",                               \
+  X(Vertex0, "vertex_position0", Vec3, A | C, PositionFetch, "rs_hit_positions[0]",                \
     "rs_query_positions(rs_rq, uint($c))[0]",                                                      \
     "gl_HitTriangleVertexPositionsEXT[0]: the hit triangle's first vertex in object space, "       \
     "through the geometry transform (VK_KHR_ray_tracing_position_fetch; triangle hits only)")      \
-  X(Vertex1, "vertex_position1", Vec3, A | C, "rs_hit_positions[1]",                               \
+  X(Vertex1, "vertex_position1", Vec3, A | C, PositionFetch, "rs_hit_positions[1]",                \
     "rs_query_positions(rs_rq, uint($c))[1]",                                                      \
     "gl_HitTriangleVertexPositionsEXT[1]: the hit triangle's second vertex (as vertex_position0)") \
-  X(Vertex2, "vertex_position2", Vec3, A | C, "rs_hit_positions[2]",                               \
+  X(Vertex2, "vertex_position2", Vec3, A | C, PositionFetch, "rs_hit_positions[2]",                \
     "rs_query_positions(rs_rq, uint($c))[2]",                                                      \
     "gl_HitTriangleVertexPositionsEXT[2]: the hit triangle's third vertex (as vertex_position0)")  \
-  X(ObjectToWorld0, "object_to_world0", Vec3, I | A | C, "gl_ObjectToWorldEXT[0]",                 \
+  X(ObjectToWorld0, "object_to_world0", Vec3, I | A | C, NoNeeds, "gl_ObjectToWorldEXT[0]",        \
     "rayQueryGetIntersectionObjectToWorldEXT(rs_rq, $c)[0]",                                       \
     "gl_ObjectToWorldEXT[0]: column 0 of the instance's object-to-world matrix (4 columns of 3; "  \
     "object_to_world1..3 the others, 3 the translation)")                                          \
-  X(ObjectToWorld1, "object_to_world1", Vec3, I | A | C, "gl_ObjectToWorldEXT[1]",                 \
+  X(ObjectToWorld1, "object_to_world1", Vec3, I | A | C, NoNeeds, "gl_ObjectToWorldEXT[1]",        \
     "rayQueryGetIntersectionObjectToWorldEXT(rs_rq, $c)[1]", "gl_ObjectToWorldEXT[1]")             \
-  X(ObjectToWorld2, "object_to_world2", Vec3, I | A | C, "gl_ObjectToWorldEXT[2]",                 \
+  X(ObjectToWorld2, "object_to_world2", Vec3, I | A | C, NoNeeds, "gl_ObjectToWorldEXT[2]",        \
     "rayQueryGetIntersectionObjectToWorldEXT(rs_rq, $c)[2]", "gl_ObjectToWorldEXT[2]")             \
-  X(ObjectToWorld3, "object_to_world3", Vec3, I | A | C, "gl_ObjectToWorldEXT[3]",                 \
+  X(ObjectToWorld3, "object_to_world3", Vec3, I | A | C, NoNeeds, "gl_ObjectToWorldEXT[3]",        \
     "rayQueryGetIntersectionObjectToWorldEXT(rs_rq, $c)[3]", "gl_ObjectToWorldEXT[3]")             \
-  X(ObjectToWorld3x4_0, "object_to_world_3x4_0", Vec4, I | A | C,                                  \
+  X(ObjectToWorld3x4_0, "object_to_world_3x4_0", Vec4, I | A | C, NoNeeds,                         \
     "transpose(gl_ObjectToWorldEXT)[0]",                                                           \
     "transpose(rayQueryGetIntersectionObjectToWorldEXT(rs_rq, $c))[0]",                            \
     "gl_ObjectToWorld3x4EXT[0]: row 0 of the 3x4 object-to-world matrix (_1, _2 the others)")      \
-  X(ObjectToWorld3x4_1, "object_to_world_3x4_1", Vec4, I | A | C,                                  \
+  X(ObjectToWorld3x4_1, "object_to_world_3x4_1", Vec4, I | A | C, NoNeeds,                         \
     "transpose(gl_ObjectToWorldEXT)[1]",                                                           \
     "transpose(rayQueryGetIntersectionObjectToWorldEXT(rs_rq, $c))[1]",                            \
     "gl_ObjectToWorld3x4EXT[1]")                                                                   \
-  X(ObjectToWorld3x4_2, "object_to_world_3x4_2", Vec4, I | A | C,                                  \
+  X(ObjectToWorld3x4_2, "object_to_world_3x4_2", Vec4, I | A | C, NoNeeds,                         \
     "transpose(gl_ObjectToWorldEXT)[2]",                                                           \
     "transpose(rayQueryGetIntersectionObjectToWorldEXT(rs_rq, $c))[2]",                            \
     "gl_ObjectToWorld3x4EXT[2]")                                                                   \
-  X(WorldToObject0, "world_to_object0", Vec3, I | A | C, "gl_WorldToObjectEXT[0]",                 \
+  X(WorldToObject0, "world_to_object0", Vec3, I | A | C, NoNeeds, "gl_WorldToObjectEXT[0]",        \
     "rayQueryGetIntersectionWorldToObjectEXT(rs_rq, $c)[0]",                                       \
     "gl_WorldToObjectEXT[0]: column 0 of the inverse (world_to_object1..3 the others)")            \
-  X(WorldToObject1, "world_to_object1", Vec3, I | A | C, "gl_WorldToObjectEXT[1]",                 \
+  X(WorldToObject1, "world_to_object1", Vec3, I | A | C, NoNeeds, "gl_WorldToObjectEXT[1]",        \
     "rayQueryGetIntersectionWorldToObjectEXT(rs_rq, $c)[1]", "gl_WorldToObjectEXT[1]")             \
-  X(WorldToObject2, "world_to_object2", Vec3, I | A | C, "gl_WorldToObjectEXT[2]",                 \
+  X(WorldToObject2, "world_to_object2", Vec3, I | A | C, NoNeeds, "gl_WorldToObjectEXT[2]",        \
     "rayQueryGetIntersectionWorldToObjectEXT(rs_rq, $c)[2]", "gl_WorldToObjectEXT[2]")             \
-  X(WorldToObject3, "world_to_object3", Vec3, I | A | C, "gl_WorldToObjectEXT[3]",                 \
+  X(WorldToObject3, "world_to_object3", Vec3, I | A | C, NoNeeds, "gl_WorldToObjectEXT[3]",        \
     "rayQueryGetIntersectionWorldToObjectEXT(rs_rq, $c)[3]", "gl_WorldToObjectEXT[3]")             \
-  X(WorldToObject3x4_0, "world_to_object_3x4_0", Vec4, I | A | C,                                  \
+  X(WorldToObject3x4_0, "world_to_object_3x4_0", Vec4, I | A | C, NoNeeds,                         \
     "transpose(gl_WorldToObjectEXT)[0]",                                                           \
     "transpose(rayQueryGetIntersectionWorldToObjectEXT(rs_rq, $c))[0]",                            \
     "gl_WorldToObject3x4EXT[0]: row 0 of the 3x4 world-to-object matrix (_1, _2 the others)")      \
-  X(WorldToObject3x4_1, "world_to_object_3x4_1", Vec4, I | A | C,                                  \
+  X(WorldToObject3x4_1, "world_to_object_3x4_1", Vec4, I | A | C, NoNeeds,                         \
     "transpose(gl_WorldToObjectEXT)[1]",                                                           \
     "transpose(rayQueryGetIntersectionWorldToObjectEXT(rs_rq, $c))[1]",                            \
     "gl_WorldToObject3x4EXT[1]")                                                                   \
-  X(WorldToObject3x4_2, "world_to_object_3x4_2", Vec4, I | A | C,                                  \
+  X(WorldToObject3x4_2, "world_to_object_3x4_2", Vec4, I | A | C, NoNeeds,                         \
     "transpose(gl_WorldToObjectEXT)[2]",                                                           \
     "transpose(rayQueryGetIntersectionWorldToObjectEXT(rs_rq, $c))[2]",                            \
     "gl_WorldToObject3x4EXT[2]")                                                                   \
-  X(AttributeWord, "attribute.word<i>", Uint, A | C, nullptr, nullptr,                             \
+  X(AttributeWord, "attribute.word<i>", Uint, A | C, NoNeeds, nullptr, nullptr,                    \
     "word i (0..5) of the hit attribute (pipeline.hit_attribute.words), as the intersection "      \
     "shader reported it; hit groups with an intersection shader only")                             \
-  X(CallWord, "call.word<i>", Uint, K, nullptr, nullptr,                                           \
+  X(CallWord, "call.word<i>", Uint, K, NoNeeds, nullptr, nullptr,                                  \
     "word i (0..51) of the incoming callable data, within its type's pipeline.callable_data "      \
     "words")                                                                                       \
   RAYSPEC_QUERY_BUILTINS(X)                                                                        \
-  X(CalleeWord, "callee.word<i>", Uint, R | C | M | K, nullptr, nullptr,                           \
+  X(CalleeWord, "callee.word<i>", Uint, R | C | M | K, NoNeeds, nullptr, nullptr,                  \
     "word i of the callable data after this stage's last call (0 beyond that call's type)")

@@ -7,9 +7,10 @@ namespace rayspec {
 
 const std::vector<BuiltinInfo>& builtins() {
   using namespace stage_letters;
+  using namespace builtin_needs;
   static const std::vector<BuiltinInfo> table = {
-#define RAYSPEC_BUILTIN_ROW(id, name, type, stages, glsl, ray_query, meaning) \
-  {name, ValueType::type, stages, glsl, ray_query, meaning},
+#define RAYSPEC_BUILTIN_ROW(id, name, type, stages, needs, glsl, ray_query, meaning) \
+  {name, ValueType::type, stages, needs, glsl, ray_query, meaning},
       RAYSPEC_BUILTINS(RAYSPEC_BUILTIN_ROW)
 #undef RAYSPEC_BUILTIN_ROW
   };

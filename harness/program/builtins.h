@@ -30,10 +30,25 @@ constexpr StageMask I = stageBit(Stage::Intersection);
 constexpr StageMask K = stageBit(Stage::Callable);
 }  // namespace stage_letters
 
+// What reading a built-in needs beyond its value (builtin_table.h's needs
+// column), read by the model (model/model_engine.cpp) and the plan
+// (plan/plan.cpp), so that a new row cannot be forgotten there.
+using BuiltinNeeds = uint8_t;
+namespace builtin_needs {
+constexpr BuiltinNeeds NoNeeds = 0;
+constexpr BuiltinNeeds Facing = 1;         // the hit's facing (the model's fast path computes it)
+constexpr BuiltinNeeds Triangles = 2;      // the model keeps each triangle's vertices
+constexpr BuiltinNeeds ObjectRay = 4;      // the hit's object-space ray
+constexpr BuiltinNeeds PositionFetch = 8;  // VK_KHR_ray_tracing_position_fetch (and the vertices)
+constexpr BuiltinNeeds CullMask = 16;      // VK_KHR_ray_tracing_maintenance1's gl_CullMaskEXT
+constexpr BuiltinNeeds BoxData = 32;       // the primitive's AABB (the scene data buffer)
+}  // namespace builtin_needs
+
 struct BuiltinInfo {
   const char* name;
   ValueType type;
   StageMask stages;
+  BuiltinNeeds needs;
   const char* glsl;       // the GLSL a stage reads; nullptr: the emitter spells it
   const char* ray_query;  // inlined in raygen ($c: committed); nullptr: word<i>, hit, vertices
   const char* meaning;    // one line, shown by `rayspec show` and in errors

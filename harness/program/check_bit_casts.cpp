@@ -4,6 +4,7 @@
 #include <set>
 #include <string>
 
+#include "program/ops.h"
 #include "program/walk_program.h"
 
 namespace rayspec {
@@ -80,7 +81,7 @@ std::optional<ProgramError> checkBitCasts(const Program& p, Stage stage) {
   const Computed locals = computedLocals(p, stage);
   std::optional<ProgramError> error;
   walkExpressions(p, [&](const Expr& e) {
-    if (error || e.kind != Expr::Kind::Op || e.name != "float_bits" || e.args.size() != 1) return;
+    if (error || e.kind != Expr::Kind::Op || e.op != Op::FloatBits || e.args.size() != 1) return;
     if (!deviceComputed(e.args[0], stage, locals)) return;
     error = ProgramError{
         "'float_bits' of a Float the device computes is not portable: its bits depend on the "

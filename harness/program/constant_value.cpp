@@ -13,14 +13,24 @@ std::optional<uint32_t> constantUint(const Expr& e) {
   if (e.kind != Expr::Kind::Op || e.args.size() != 2) return std::nullopt;
   const std::optional<uint32_t> a = constantUint(e.args[0]), b = constantUint(e.args[1]);
   if (!a || !b) return std::nullopt;
-  if (e.name == "add") return *a + *b;
-  if (e.name == "sub") return *a - *b;
-  if (e.name == "mul") return *a * *b;
-  if (e.name == "div") return *b ? std::optional<uint32_t>(*a / *b) : std::nullopt;
-  if (e.name == "mod") return *b ? std::optional<uint32_t>(*a % *b) : std::nullopt;
-  if (e.name == "min") return std::min(*a, *b);
-  if (e.name == "max") return std::max(*a, *b);
-  return std::nullopt;
+  switch (e.op) {
+    case Op::Add:
+      return *a + *b;
+    case Op::Sub:
+      return *a - *b;
+    case Op::Mul:
+      return *a * *b;
+    case Op::Div:
+      return *b ? std::optional<uint32_t>(*a / *b) : std::nullopt;
+    case Op::Mod:
+      return *b ? std::optional<uint32_t>(*a % *b) : std::nullopt;
+    case Op::Min:
+      return std::min(*a, *b);
+    case Op::Max:
+      return std::max(*a, *b);
+    default:
+      return std::nullopt;
+  }
 }
 
 std::optional<double> constantFloat(const Expr& e) {

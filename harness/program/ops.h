@@ -1,5 +1,6 @@
-// The operators of the stage vocabulary: name, arity and typing rule. Both
-// backends give each op the meaning written here.
+// The operators of the stage vocabulary (program/op_table.h, the one list):
+// name, arity, stages, typing rule, GLSL and meaning. Both backends give each
+// op the meaning written there.
 #pragma once
 
 #include <optional>
@@ -8,54 +9,99 @@
 
 #include "base/result.h"
 #include "program/builtins.h"
+#include "program/op_table.h"
+#include "program/payload_words.h"
 #include "program/program.h"
 #include "program/stage_interface.h"
 
 namespace rayspec {
 
+// How an operator's arguments are typed (program/type_check.cpp, one rule each).
+enum class OpTyping : uint8_t {
+  Arithmetic,       // add sub mul div: the same numeric type, or a Float with a vector
+  Modulo,           // Uint % Uint
+  MinMax,           // the same numeric type
+  Comparison,       // the same scalar type -> Bool
+  Logic,            // Bool arguments -> Bool
+  Load,             // an array local and a Uint index -> the element
+  Bitwise,          // Uint, Uint -> Uint
+  UintToUint,       // one Uint -> Uint
+  UintToFloat,      // one Uint -> Float
+  UintToBool,       // one Uint -> Bool
+  FloatToUint,      // one Float -> Uint
+  FloatToFloat,     // one Float -> Float
+  VectorOf,         // 1 (splat) or N Float scalars -> VecN
+  Component,        // a vector with that component -> Float
+  Dot,              // two vectors of one size -> Float
+  Vec3Only,         // Vec3 arguments -> Vec3
+  Length,           // a vector -> Float
+  Normalize,        // a vector -> the same vector type
+  FixedBool,        // no arguments -> Bool
+  FixedFloat,       // no arguments -> Float
+  RecordWordUint,   // a Uint literal word index 0..7 -> Uint
+  RecordWordFloat,  // a Uint literal word index 0..7 -> Float
+  Light,            // a Vec3 position and a Vec3 normal -> Vec4
+};
+
+// One row of program/op_table.h.
 struct OpInfo {
+  Op id;
   const char* name;
   int min_args, max_args;
   StageMask stages;
+  OpTyping typing;
+  const char* glsl;  // $0..$3 the arguments, $, $& $| all of them joined; nullptr: spelled by
+                     // the emitter
   const char* meaning;
 };
 
-// Ops:
+// Ops (program/op_table.h holds each one's meaning):
 //   add, sub, mul, div    numeric; both args the same type, or a Float scalar
 //                         with a vector (either side). Uint div truncates; Uint
 //                         div by a constant 0 (program/constant_value.h) is a
 //                         case error; by a dynamic 0, undefined (the model says so).
 //   mod                   Uint % Uint (by a constant 0: a case error)
-//   min, max              same numeric type
-//   eq, ne, lt, le, gt, ge -> Bool; args the same scalar type
-//   and, or (2+ Bool args), not (1 Bool)
-//   bit_and, bit_or, bit_xor (Uint, Uint -> Uint), bit_not (Uint -> Uint)
-//   shl, shr              Uint, Uint -> Uint: a shifted by b % 32 (logical)
-//   float_bits (Float -> Uint: its bits), bits_float (Uint -> Float: as bits)
-//   odd, even             Uint -> Bool
-//   float (Uint -> Float), uint (Float -> Uint, truncation toward zero)
-//   vec2, vec3, vec4      Float scalars -> vector (a single Float splats)
-//   x, y, z, w            component of a vector -> Float
-//   dot (2 same vectors -> Float), cross (2 Vec3 -> Vec3), length (vector -> Float),
-//   mat3_mul, mat3_tmul (4 Vec3: columns c0 c1 c2 of a 3x3 matrix and v ->
-//       Vec3): the matrix times v, and its transpose times v
-//   normalize (vector -> same)
-//   sphere_hit (no args -> Bool), sphere_near, sphere_far (no args -> Float):
-//       intersection only. The sphere inscribed in the primitive's AABB
-//       (center = (min+max)/2, radius = smallest half extent), against the
-//       object-space ray o + t d (d not normalised): roots of
-//       |o + t d - c|^2 = r^2, near <= far; sphere_hit = discriminant >= 0.
-//       Computed in float with the formula in shaders/sphere.glsl and its
-//       model counterpart.
-//   shader_record_uint (1 Uint literal i in 0..7 -> Uint),
-//   shader_record_float (same -> Float): word i of this stage's own shader
-//       record data (raygen, miss, hit groups, callables); the case parser
-//       keeps i inside pipeline.sbt.record_data (case/check_record_reads.cpp).
-//   light_point, light_spot, light_directional (P Vec3, N Vec3 -> Vec4): the
-//       lights of shaders/lights.glsl at P with normal N, parameters from this
-//       stage's own shader record floats (what `light:` computes in a callable).
+//   sphere_hit, sphere_near, sphere_far (no args): intersection only. The
+//       sphere inscribed in the primitive's AABB (center = (min+max)/2, radius
+//       = smallest half extent), against the object-space ray o + t d (d not
+//       normalised): roots of |o + t d - c|^2 = r^2, near <= far; sphere_hit =
+//       discriminant >= 0. Computed in float with the formula in
+//       shaders/sphere.glsl and its model counterpart.
+//   shader_record_uint / _float: the case parser keeps i inside
+//       pipeline.sbt.record_data (case/check_record_reads.cpp).
+//   light_*: the lights of shaders/lights.glsl (what `light:` computes in a callable).
+
+// Every row, indexed by Op.
 const std::vector<OpInfo>& ops();
 const OpInfo* findOp(const std::string& name);
+const OpInfo& opInfo(Op op);
+// The op a name spells (Op::None for none).
+Op opNamed(const std::string& name);
+// Words indexed by a value: payload_word .. callee_word's array; nullopt for another op.
+std::optional<WordArray> wordArrayOf(Op op);
+// An operator expression of `op` over args, typed `type` (what a fault or a
+// rewrite builds after type checking); setOp makes e another op of the same types.
+Expr opExpr(Op op, std::vector<Expr> args, ValueType type, const SourceLoc& loc);
+void setOp(Expr& e, Op op);
+// The families of rows that stay together in program/op_table.h.
+static_assert(static_cast<int>(Op::Ge) - static_cast<int>(Op::Eq) == 5 &&
+                  static_cast<int>(Op::Vec4) - static_cast<int>(Op::Vec2) == 2 &&
+                  static_cast<int>(Op::CompW) - static_cast<int>(Op::CompX) == 3 &&
+                  static_cast<int>(Op::SphereFar) - static_cast<int>(Op::SphereHit) == 2 &&
+                  static_cast<int>(Op::LightDirectional) - static_cast<int>(Op::LightPoint) == 2,
+              "eq..ge, vec2..vec4, x..w, sphere_*, light_* rows together, in order");
+constexpr bool isComparison(Op op) {
+  return op >= Op::Eq && op <= Op::Ge;
+}
+constexpr bool isVectorConstructor(Op op) {
+  return op >= Op::Vec2 && op <= Op::Vec4;
+}
+constexpr bool isSphereOp(Op op) {  // reads the object-space ray and the box
+  return op >= Op::SphereHit && op <= Op::SphereFar;
+}
+constexpr bool isLightOp(Op op) {  // reads this stage's shader record floats
+  return op >= Op::LightPoint && op <= Op::LightDirectional;
+}
 
 // Fills Expr::type for e and its arguments, or the error (its message only:
 // checkExpr in check_expr.h keeps the node). `stage` decides which built-ins

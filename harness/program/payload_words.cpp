@@ -43,14 +43,6 @@ std::optional<uint32_t> attributeWordBuiltin(const std::string& name) {
   return i;
 }
 
-std::optional<WordArray> wordArrayOfOp(const std::string& op) {
-  if (op == "payload_word") return WordArray::Payload;
-  if (op == "child_word") return WordArray::Child;
-  if (op == "call_word") return WordArray::Call;
-  if (op == "callee_word") return WordArray::Callee;
-  return std::nullopt;
-}
-
 const char* wordArrayName(WordArray which) {
   return nameOf(which);
 }

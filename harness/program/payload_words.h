@@ -50,9 +50,9 @@ std::optional<uint32_t> attributeWordBuiltin(const std::string& name);
 
 // Words indexed by a value (cases/README.md, "Words indexed by a value"):
 // the ops {payload_word: i}, {child_word: i}, {call_word: i} and
-// {callee_word: i} read, and `store: {array: payload.words | call.words,
-// index: i, value: v}` writes, word i % N of one data array, N the words of
-// that array's type as the stage declares it (Pipeline::indexedWords).
+// {callee_word: i} read (program/ops.h wordArrayOf), and `store: {array: payload.words |
+// call.words, index: i, value: v}` writes, word i % N of one data array, N the words of that
+// array's type as the stage declares it (Pipeline::indexedWords).
 #define RAYSPEC_WORD_ARRAYS(X)                                                        \
   /* the incoming payload (miss, closest-hit, any-hit); in raygen the last trace's */ \
   X(Payload, "payload.words")                                                         \
@@ -61,8 +61,6 @@ std::optional<uint32_t> attributeWordBuiltin(const std::string& name);
   X(Callee, "callee.words") /* the last call's data */
 enum class WordArray : uint8_t { RAYSPEC_WORD_ARRAYS(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(WordArray, RAYSPEC_WORD_ARRAYS);
-// "payload_word" / "child_word" / "call_word" / "callee_word"; nullopt otherwise.
-std::optional<WordArray> wordArrayOfOp(const std::string& op);
 // The array's name: "payload.words", "child.words", "call.words",
 // "callee.words" (a store's `array:`, and the GLSL member it is).
 const char* wordArrayName(WordArray which);

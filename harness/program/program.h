@@ -10,6 +10,7 @@
 
 #include "base/enum_names.h"
 #include "base/source_loc.h"
+#include "program/op_table.h"
 
 namespace rayspec {
 
@@ -64,6 +65,8 @@ struct Expr {
   ValueType type = ValueType::Uint;  // filled by the type checker
   std::vector<double> literal;       // Literal: 1..4 components
   std::string name;                  // Builtin or Op name
+  Op op = Op::None;                  // Op: the operator the name spells, resolved once by
+                                     // the parser (or opExpr / setOp in program/ops.h)
   std::vector<Expr> args;            // Op arguments
   SourceLoc loc;
 };

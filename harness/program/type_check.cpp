@@ -2,7 +2,6 @@
 // A Uint literal (written without '.') is promoted to Float wherever its
 // partner or slot needs a Float, so `{lt: [hit_t, 2]}` means 2.0.
 #include <cmath>
-#include <map>
 #include <string>
 
 #include "program/builtins.h"
@@ -80,7 +79,7 @@ Typing typeArithmetic(Expr& e) {  // add sub mul div
     e.type = t1;
   else
     return badArguments(e, "need the same numeric type, or a Float with a vector");
-  if (e.name == "div" && e.type == ValueType::Uint && constantUint(a[1]) == 0u)
+  if (e.op == Op::Div && e.type == ValueType::Uint && constantUint(a[1]) == 0u)
     return err(e, "operator 'div': Uint division by a constant zero (undefined behaviour, R-UB)");
   return std::nullopt;
 }
@@ -136,7 +135,7 @@ Typing typeUnary(Expr& e) {
 }
 
 Typing typeVectorOf(Expr& e) {  // vec2 vec3 vec4
-  const int size = e.name[3] - '0';
+  const int size = 2 + static_cast<int>(e.op) - static_cast<int>(Op::Vec2);
   const int n = static_cast<int>(e.args.size());
   if (n != 1 && n != size)
     return err(e, "operator '" + e.name + "' takes 1 (splat) or " + std::to_string(size) +
@@ -150,10 +149,9 @@ Typing typeVectorOf(Expr& e) {  // vec2 vec3 vec4
 }
 
 Typing typeComponent(Expr& e) {  // x y z w
-  const std::string& name = e.name;
-  const int index = name == "x" ? 0 : name == "y" ? 1 : name == "z" ? 2 : 3;
+  const int index = static_cast<int>(e.op) - static_cast<int>(Op::CompX);
   if (!isVector(e.args[0].type) || componentCount(e.args[0].type) <= index)
-    return badArguments(e, "need a vector with a ." + name + " component");
+    return badArguments(e, "need a vector with a ." + e.name + " component");
   e.type = ValueType::Float;
   return std::nullopt;
 }
@@ -172,14 +170,13 @@ Typing typeVec3Only(Expr& e) {  // cross, mat3_mul, mat3_tmul
   return std::nullopt;
 }
 
-Typing typeLengthNormalize(Expr& e) {
+Typing typeVectorTo(Expr& e, ValueType result) {  // length, normalize
   if (!isVector(e.args[0].type)) return badArguments(e, "need a vector");
-  e.type = e.name == "length" ? ValueType::Float : e.args[0].type;
+  e.type = result;
   return std::nullopt;
 }
 
-template <ValueType type>
-Typing typeFixed(Expr& e) {  // sphere_hit, sphere_near, sphere_far
+Typing typeFixed(Expr& e, ValueType type) {  // sphere_hit, sphere_near, sphere_far
   e.type = type;
   return std::nullopt;
 }
@@ -191,73 +188,65 @@ Typing typeLight(Expr& e) {  // light_*
   return std::nullopt;
 }
 
-Typing typeShaderRecord(Expr& e) {  // shader_record_uint, shader_record_float
+Typing typeShaderRecord(Expr& e, ValueType type) {  // shader_record_uint, shader_record_float
   if (!isUintLiteral(e.args[0]) || e.args[0].literal[0] > 7)
     return err(e, "operator '" + e.name + "' takes a Uint literal word index 0..7");
-  e.type = e.name == "shader_record_uint" ? ValueType::Uint : ValueType::Float;
+  e.type = type;
   return std::nullopt;
 }
 
-// The typing rule of an operator, by name (light_* by its prefix); null when
-// it has none.
-Typing (*typingRule(const std::string& name))(Expr&) {
+// The typing rule of an operator (program/op_table.h's typing column).
+Typing typeOp(Expr& e, OpTyping typing) {
   using V = ValueType;
-  static const std::map<std::string, Typing (*)(Expr&)> rules = {
-      {"add", typeArithmetic},
-      {"sub", typeArithmetic},
-      {"mul", typeArithmetic},
-      {"div", typeArithmetic},
-      {"mod", typeMod},
-      {"min", typeMinMax},
-      {"max", typeMinMax},
-      {"eq", typeComparison},
-      {"ne", typeComparison},
-      {"lt", typeComparison},
-      {"le", typeComparison},
-      {"gt", typeComparison},
-      {"ge", typeComparison},
-      {"and", typeLogic},
-      {"or", typeLogic},
-      {"not", typeLogic},
-      {"bit_and", typeBitwise},
-      {"bit_or", typeBitwise},
-      {"bit_xor", typeBitwise},
-      {"shl", typeBitwise},
-      {"shr", typeBitwise},
-      {"bit_not", typeUnary<V::Uint, V::Uint>},
-      {"payload_word", typeUnary<V::Uint, V::Uint>},
-      {"child_word", typeUnary<V::Uint, V::Uint>},
-      {"call_word", typeUnary<V::Uint, V::Uint>},
-      {"callee_word", typeUnary<V::Uint, V::Uint>},
-      {"float_bits", typeUnary<V::Float, V::Uint>},
-      {"bits_float", typeUnary<V::Uint, V::Float>},
-      {"odd", typeUnary<V::Uint, V::Bool>},
-      {"even", typeUnary<V::Uint, V::Bool>},
-      {"float", typeUnary<V::Uint, V::Float>},
-      {"uint", typeUnary<V::Float, V::Uint>},
-      {"round", typeUnary<V::Float, V::Float>},
-      {"vec2", typeVectorOf},
-      {"vec3", typeVectorOf},
-      {"vec4", typeVectorOf},
-      {"x", typeComponent},
-      {"y", typeComponent},
-      {"z", typeComponent},
-      {"w", typeComponent},
-      {"dot", typeDot},
-      {"cross", typeVec3Only},
-      {"mat3_mul", typeVec3Only},
-      {"mat3_tmul", typeVec3Only},
-      {"length", typeLengthNormalize},
-      {"normalize", typeLengthNormalize},
-      {"sphere_hit", typeFixed<V::Bool>},
-      {"sphere_near", typeFixed<V::Float>},
-      {"sphere_far", typeFixed<V::Float>},
-      {"shader_record_uint", typeShaderRecord},
-      {"shader_record_float", typeShaderRecord},
-  };
-  if (auto it = rules.find(name); it != rules.end()) return it->second;
-  if (name.rfind("light_", 0) == 0) return typeLight;
-  return nullptr;
+  switch (typing) {
+    case OpTyping::Arithmetic:
+      return typeArithmetic(e);
+    case OpTyping::Modulo:
+      return typeMod(e);
+    case OpTyping::MinMax:
+      return typeMinMax(e);
+    case OpTyping::Comparison:
+      return typeComparison(e);
+    case OpTyping::Logic:
+      return typeLogic(e);
+    case OpTyping::Bitwise:
+      return typeBitwise(e);
+    case OpTyping::UintToUint:
+      return typeUnary<V::Uint, V::Uint>(e);
+    case OpTyping::UintToFloat:
+      return typeUnary<V::Uint, V::Float>(e);
+    case OpTyping::UintToBool:
+      return typeUnary<V::Uint, V::Bool>(e);
+    case OpTyping::FloatToUint:
+      return typeUnary<V::Float, V::Uint>(e);
+    case OpTyping::FloatToFloat:
+      return typeUnary<V::Float, V::Float>(e);
+    case OpTyping::VectorOf:
+      return typeVectorOf(e);
+    case OpTyping::Component:
+      return typeComponent(e);
+    case OpTyping::Dot:
+      return typeDot(e);
+    case OpTyping::Vec3Only:
+      return typeVec3Only(e);
+    case OpTyping::Length:
+      return typeVectorTo(e, ValueType::Float);
+    case OpTyping::Normalize:
+      return typeVectorTo(e, e.args[0].type);
+    case OpTyping::FixedBool:
+      return typeFixed(e, V::Bool);
+    case OpTyping::FixedFloat:
+      return typeFixed(e, V::Float);
+    case OpTyping::RecordWordUint:
+      return typeShaderRecord(e, V::Uint);
+    case OpTyping::RecordWordFloat:
+      return typeShaderRecord(e, V::Float);
+    case OpTyping::Light:
+      return typeLight(e);
+    case OpTyping::Load:  // typed before its arguments (typeLoad)
+      break;
+  }
+  return err(e, "operator '" + e.name + "' has no typing rule");
 }
 
 // {load: [var.NAME, index]}: an element of an array local.
@@ -326,11 +315,10 @@ std::optional<ProgramError> checkOp(Expr& e, Stage stage, const OpInfo& op,
     return err(e,
                "operator '" + name + "' takes " + want + " argument(s), got " + std::to_string(n));
   }
-  if (name == "load") return typeLoad(e, stage, locals);
+  if (op.typing == OpTyping::Load) return typeLoad(e, stage, locals);
   for (Expr& arg : e.args)
     if (auto r = checkExpr(arg, stage, locals)) return r;
-  if (const auto rule = typingRule(name)) return rule(e);
-  return err(e, "operator '" + name + "' has no typing rule");
+  return typeOp(e, op.typing);
 }
 
 }  // namespace
@@ -370,6 +358,7 @@ std::optional<ProgramError> checkExpr(Expr& e, Stage stage, const LocalScope* lo
     case Expr::Kind::Op: {
       const OpInfo* op = findOp(e.name);
       if (!op) return err(e, "unknown operator '" + e.name + "'");
+      e.op = op->id;
       return checkOp(e, stage, *op, locals);
     }
   }

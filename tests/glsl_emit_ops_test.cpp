@@ -1,0 +1,44 @@
+// glsl/emit_expr.cpp: an operator's GLSL is its row's pattern
+// (program/op_table.h) with its arguments, or spelled by the emitter.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "glsl/emit_expr.h"
+#include "program/ops.h"
+
+namespace rayspec {
+namespace {
+
+Expr uintArg(const std::string& local) {
+  Expr e;
+  e.kind = Expr::Kind::Local;
+  e.name = local;
+  e.type = ValueType::Uint;
+  return e;
+}
+
+TEST(EmitOps, FromThePattern) {
+  const Case c;
+  const Plan plan;
+  const StageContext ctx{c, plan, Stage::Raygen};
+  const SourceLoc at;
+  const Expr three = opExpr(Op::And,
+                            {opExpr(Op::Odd, {uintArg("a")}, ValueType::Bool, at),
+                             opExpr(Op::Even, {uintArg("b")}, ValueType::Bool, at),
+                             opExpr(Op::Odd, {uintArg("c")}, ValueType::Bool, at)},
+                            ValueType::Bool, at);
+  EXPECT_EQ(emitExpr(three, ctx),
+            "(((v_a & 1u) != 0u) && ((v_b & 1u) == 0u) && ((v_c & 1u) != 0u))");
+  const Expr shift = opExpr(Op::Shl, {uintArg("a"), uintArg("b")}, ValueType::Uint, at);
+  EXPECT_EQ(emitExpr(shift, ctx), "(v_a << (v_b & 31u))");
+  Expr word = opExpr(Op::CalleeWord, {uintArg("i")}, ValueType::Uint, at);
+  EXPECT_EQ(emitExpr(word, ctx), "callee.words[(v_i) % uint(callee.words.length())]");
+  // setOp makes it another op, name and id together.
+  setOp(word, Op::CallWord);
+  EXPECT_EQ(word.name, "call_word");
+  EXPECT_EQ(emitExpr(word, ctx), "call.words[(v_i) % uint(call.words.length())]");
+}
+
+}  // namespace
+}  // namespace rayspec
