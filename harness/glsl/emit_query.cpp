@@ -24,8 +24,7 @@ std::string queryVariable(uint32_t depth) {
   return "rs_query_" + std::to_string(depth);
 }
 
-void defineQuery(const std::pair<std::string, std::string>& named, bool defined,
-                 GlslWriter& out) {
+void defineQuery(const std::pair<std::string, std::string>& named, bool defined, GlslWriter& out) {
   if (defined) out.raw("#undef rs_query\n#undef rs_restarts\n");
   out.raw("#define rs_query " + named.first + "\n#define rs_restarts " + named.second + "\n");
 }
@@ -91,8 +90,7 @@ bool restarts(const Stmt& s) {
 
 // rayQueryInitializeEXT of rs_query with s's fields (declared in a scope
 // of their own).
-void initialize(const Stmt& s, const std::string& query, const StageContext& ctx,
-                GlslWriter& out) {
+void initialize(const Stmt& s, const std::string& query, const StageContext& ctx, GlslWriter& out) {
   fields(s, ctx, out);
   tlasIndexLocal(s.trace, ctx, out);
   out.line("rayQueryInitializeEXT(" + query + ", " + tlasOperand(s.trace, ctx) +

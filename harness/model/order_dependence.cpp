@@ -71,7 +71,6 @@ class Scan {
   }
 
  private:
-
   void dependsBecause(std::string why, const CStmt& s) {
     if (!found_.yes) found_ = {true, std::move(why), &s};
   }

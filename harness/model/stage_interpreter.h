@@ -47,9 +47,9 @@ class StageInterpreter {
   Flow execSwitch(const CStmt& s, StageEnv& env);
   Flow execInvoke(const CStmt& s, StageEnv& env);
   void loseLocals(StageEnv& env) const;
-  void execCall(const CStmt& s, StageEnv& env);      // executeCallableEXT
-  void execTrace(const CStmt& s, StageEnv& env);     // traceRayEXT
-  Flow execRayQuery(const CStmt& s, StageEnv& env);  // a ray_query statement (model_query.cpp)
+  void execCall(const CStmt& s, StageEnv& env);          // executeCallableEXT
+  void execTrace(const CStmt& s, StageEnv& env);         // traceRayEXT
+  Flow execRayQuery(const CStmt& s, StageEnv& env);      // a ray_query statement (model_query.cpp)
   Flow execRayQueries(const CStmt& s, StageEnv& env);    // ray_queries, stepped in turn
   Flow execRestartQuery(const CStmt& s, StageEnv& env);  // restart_query
   // A query as rayQueryInitializeEXT starts it (its ray, where it starts).
