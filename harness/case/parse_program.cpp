@@ -468,6 +468,12 @@ bool scalarStmt(YamlReader& r, const YAML::Node& n, const std::string& field, St
   return false;
 }
 
+// Every statement's key, for the error of an unknown one.
+const char* const kStatementNames =
+    "count, record, payload, call_data, ignore, terminate, report, trace, call, light, if, let, "
+    "set, array, store, repeat, switch, invoke, break, continue, return, ray_query, ray_queries, "
+    "confirm, generate, terminate_query, restart_query";
+
 bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt& s) {
   s.loc = r.loc(n, field);
   if (n.IsScalar()) return scalarStmt(r, n, field, s);
@@ -542,12 +548,7 @@ bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stm
     }
     return true;
   }
-  r.error(it->first, f,
-          "unknown statement '" + key +
-              "' (count, record, payload, call_data, ignore, terminate, report, trace, call, "
-              "light, if, let, set, array, store, repeat, switch, invoke, break, continue, "
-              "return, ray_query, ray_queries, confirm, generate, terminate_query, "
-              "restart_query)");
+  r.error(it->first, f, "unknown statement '" + key + "' (" + kStatementNames + ")");
   return false;
 }
 
