@@ -140,8 +140,7 @@ TEST(ModelSteppedQueries, ParseAndCheckErrorsNameTheField) {
   EXPECT_EQ(firstErrorAfter(text, "[{set: {b: {add: [var.b, 1]}}}]", "[restart_query: {miss: 1}]"),
             "pipeline.raygen[1].ray_queries[1].triangle[0].restart_query.miss: unknown key "
             "'miss' (expected one of: origin, direction, tmin, tmax, flags, cull_mask, tlas)");
-  EXPECT_EQ(firstErrorAfter(text, "[{set: {b: {add: [var.b, 1]}}}]",
-                            "[restart_query: {tlas: 1}]"),
+  EXPECT_EQ(firstErrorAfter(text, "[{set: {b: {add: [var.b, 1]}}}]", "[restart_query: {tlas: 1}]"),
             "pipeline.raygen[1].ray_queries[1].triangle[0].restart_query.tlas: top level 1, but "
             "the scene has 1 (scene.instances[].tlas)");
   // The file and line of the statement too.
