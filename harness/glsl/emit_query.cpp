@@ -114,13 +114,10 @@ void rayQuery(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
   const std::string q = queryVariable(depth);
   const std::string count = "rs_restarts_" + std::to_string(depth);
   out.open("{  // ray_query");
-  fields(s, ctx, out);
-  tlasIndexLocal(s.trace, ctx, out);
   out.line("rayQueryEXT " + q + ";");
   if (restarts(s)) out.line("uint " + count + " = 0u;");
+  initialize(s, q, ctx, out);  // its fields may read the enclosing query
   nameQuery(q, count, out);
-  out.line("rayQueryInitializeEXT(" + q + ", " + tlasOperand(s.trace, ctx) +
-           ", rs_flags, rs_cull_mask, rs_origin, rs_tmin, rs_direction, rs_tmax);");
   ++t_query_depth;
   out.open("while (rayQueryProceedEXT(" + q + ")) {");
   candidateBlocks(s, q, ctx, out);
