@@ -53,6 +53,8 @@ Results sampleResults() {
   r.repeat_dependent.push_back(
       {2, (1u << recordFieldIndex("value")) | (1u << recordFieldIndex("color"))});
   r.repeat_counters = {"miss"};
+  r.order_dependent = {"the ray_queries at a.yaml:3 (x): y"};
+  r.endless_restarts = {"the restart_query at a.yaml:4: z"};
   return r;
 }
 
@@ -81,6 +83,8 @@ TEST(ResultsIo, BundleRoundTripsEveryField) {
   EXPECT_EQ(back.repeat_dependent[0].ray, 2u);
   EXPECT_EQ(back.repeat_dependent[0].fields, r.repeat_dependent[0].fields);
   EXPECT_EQ(back.repeat_counters, r.repeat_counters);
+  EXPECT_EQ(back.order_dependent, r.order_dependent);
+  EXPECT_EQ(back.endless_restarts, r.endless_restarts);
   ASSERT_EQ(back.t_bounds.size(), 1u);
   EXPECT_EQ(back.t_bounds[0].ray, 5u);
   EXPECT_EQ(back.t_bounds[0].bound, 0.25f);

@@ -203,6 +203,7 @@ void writeRayNotes(const Results& r, json& j) {
   }
   j["repeat_counters"] = r.repeat_counters;
   if (!r.order_dependent.empty()) j["order_dependent"] = r.order_dependent;
+  if (!r.endless_restarts.empty()) j["endless_restarts"] = r.endless_restarts;
 }
 
 }  // namespace
@@ -468,6 +469,8 @@ Result<void> readRayNotes(const json& j, FieldReader& field, Results& r) {
     r.repeat_counters = field(j, "repeat_counters").get<std::vector<std::string>>();
   if (j.contains("order_dependent"))
     r.order_dependent = field(j, "order_dependent").get<std::vector<std::string>>();
+  if (j.contains("endless_restarts"))
+    r.endless_restarts = field(j, "endless_restarts").get<std::vector<std::string>>();
   for (const json& ja : field(j, "ambiguous")) {
     RayAmbiguity a;
     RAYSPEC_TRY(a.ray, field.count<uint32_t>(ja, "ambiguous.ray"));

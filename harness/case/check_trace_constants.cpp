@@ -114,6 +114,7 @@ class TraceChecker {
   void program(const Program& p, Stage stage) {
     walkStatements(p, [&](const Stmt& s) {
       if (s.kind == Stmt::Kind::Trace) trace(s, stage);
+      if (s.kind == Stmt::Kind::RayQuery || s.kind == Stmt::Kind::RestartQuery) topLevel(s.trace);
       if (s.kind == Stmt::Kind::Call) call(s);
     });
   }
@@ -125,11 +126,16 @@ class TraceChecker {
     r_.undefinedBehaviour(l, reason, message + ": undefined behaviour (R-UB)");
   }
 
-  void trace(const Stmt& s, Stage stage) {
-    const TraceArgs& t = s.trace;
+  // A constant top level the scene has (a trace's, a ray query's).
+  void topLevel(const TraceArgs& t) {
     if (t.tlas >= c_.scene.tlasCount())
       r_.error(t.tlas_loc, "top level " + std::to_string(t.tlas) + ", but the scene has " +
                                std::to_string(c_.scene.tlasCount()) + " (scene.instances[].tlas)");
+  }
+
+  void trace(const Stmt& s, Stage stage) {
+    const TraceArgs& t = s.trace;
+    topLevel(t);
     // In raygen a missing argument comes from each launch ray; elsewhere from the defaults.
     std::vector<LaunchParameters> bases = {{c_.rays.defaults, c_.rays.defaults_loc}};
     if (stage == Stage::Raygen && !launch_.empty()) bases = launch_;

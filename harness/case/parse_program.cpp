@@ -223,6 +223,43 @@ bool parseRayQuery(YamlReader& r, const YAML::Node& v, const std::string& f, Stm
   return ok;
 }
 
+// ray_queries: [{ray_query fields and blocks}, ...]: 2 to kMaxSteppedQueries
+// queries alive at once, stepped in turn, each a RayQuery in then_.
+bool parseRayQueries(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::RayQueries;
+  if (!v.IsSequence() || v.size() < 2 || v.size() > kMaxSteppedQueries) {
+    r.error(v, f,
+            "a list of 2 to " + std::to_string(kMaxSteppedQueries) +
+                " ray queries (each as a ray_query's fields and blocks), stepped in turn");
+    return false;
+  }
+  bool ok = true;
+  for (size_t i = 0; i < v.size(); ++i) {
+    const std::string fi = f + "[" + std::to_string(i) + "]";
+    Stmt q;
+    q.loc = r.loc(v[i], fi);
+    if (!v[i].IsMap()) {
+      r.error(v[i], fi, "a ray query: a map of a ray_query's fields and blocks");
+      ok = false;
+      continue;
+    }
+    ok = parseRayQuery(r, v[i], fi, q) && ok;
+    s.then_.push_back(std::move(q));
+  }
+  return ok;
+}
+
+// restart_query: {origin .., tlas}: the innermost query initialized again
+// with these fields (a ray_query's, defaulted alike).
+bool parseRestartQuery(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::RestartQuery;
+  if (v.IsNull()) return true;
+  if (!r.expectMap(v, f, {"origin", "direction", "tmin", "tmax", "flags", "cull_mask", "tlas"}))
+    return false;
+  bool ok = tlasField(r, v, f, s.trace);
+  return parseTraceSlots(r, v, f, s.trace) && ok;
+}
+
 bool parseReport(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
   s.kind = Stmt::Kind::Report;
   if (!r.expectMap(v, f,
@@ -431,6 +468,12 @@ bool scalarStmt(YamlReader& r, const YAML::Node& n, const std::string& field, St
   return false;
 }
 
+// Every statement's key, for the error of an unknown one.
+const char* const kStatementNames =
+    "count, record, payload, call_data, ignore, terminate, report, trace, call, light, if, let, "
+    "set, array, store, repeat, switch, invoke, break, continue, return, ray_query, ray_queries, "
+    "confirm, generate, terminate_query, restart_query";
+
 bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt& s) {
   s.loc = r.loc(n, field);
   if (n.IsScalar()) return scalarStmt(r, n, field, s);
@@ -487,6 +530,8 @@ bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stm
   if (key == "store") return parseStore(r, v, f, s);
   if (key == "trace") return parseTrace(r, v, f, s);
   if (key == "ray_query") return parseRayQuery(r, v, f, s);
+  if (key == "ray_queries") return parseRayQueries(r, v, f, s);
+  if (key == "restart_query") return parseRestartQuery(r, v, f, s);
   if (key == "generate") {
     s.kind = Stmt::Kind::Generate;
     return parseExpr(r, v, f, s.t);
@@ -503,11 +548,7 @@ bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stm
     }
     return true;
   }
-  r.error(it->first, f,
-          "unknown statement '" + key +
-              "' (count, record, payload, call_data, ignore, terminate, report, trace, call, "
-              "light, if, let, set, array, store, repeat, switch, invoke, break, continue, "
-              "return, ray_query, confirm, generate, terminate_query)");
+  r.error(it->first, f, "unknown statement '" + key + "' (" + kStatementNames + ")");
   return false;
 }
 

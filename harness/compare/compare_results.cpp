@@ -4,6 +4,7 @@
 
 #include "compare/any_hit_repeat_verdict.h"
 #include "compare/compare_parts.h"
+#include "compare/endless_restarts_verdict.h"
 #include "compare/order_dependent_verdict.h"
 #include "compare/undefined_behaviour.h"
 
@@ -81,6 +82,8 @@ Verdict compareResults(const Case& c, const Plan& plan, const Results& device,
   if (!judgeAnyHitRepeat(c, model, v)) return v;
   // R-ORDER-UNSPEC: answers that depend on more orders than the model tries.
   if (!judgeOrderDependence(model, v)) return v;
+  // R-RQ-INIT: a query restarted past the bound (endless restarts).
+  if (!judgeEndlessRestarts(model, v)) return v;
   // Rays left out of every per-ray comparison: the ambiguous ones are checked
   // against their legal answers instead; the undefined ones (R-UB) not at all.
   std::set<uint32_t> ambiguous, undefined;

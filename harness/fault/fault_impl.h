@@ -121,6 +121,8 @@ std::string queryGenerateIgnored(Case& c, ModelOptions& o);
 std::string queryTerminateIgnored(Case& c, ModelOptions& o);
 std::string queryBreakLosesCommit(Case& c, ModelOptions& o);
 std::string queryFunctionGetsCopy(Case& c, ModelOptions& o);
+std::string queryRestartKeepsCommitted(Case& c, ModelOptions& o);
+std::string queryStepWrongQuery(Case& c, ModelOptions& o);
 std::string queryCommittedReadsCandidate(Case& c, ModelOptions& o);
 std::string queryCustomIndexIsInstanceId(Case& c, ModelOptions& o);
 std::string queryCommitKeepsInterval(Case& c, ModelOptions& o);

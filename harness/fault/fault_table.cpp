@@ -371,6 +371,13 @@ std::vector<FaultImpl> rayQueryMutations() {
        "a function's rayQueryEXT parameter is a copy: its confirm, generate and terminate do not "
        "reach the caller's query",
        nullptr, queryFunctionGetsCopy},
+      {"query-restart-keeps-committed", K::CaseMutation,
+       "rayQueryInitializeEXT of a query in traversal (restart_query) keeps what is committed",
+       nullptr, queryRestartKeepsCommitted},
+      {"query-step-wrong-query", K::CaseMutation,
+       "stepping an array of ray queries (ray_queries) proceeds the next element: each query's "
+       "blocks decide the next query's candidates",
+       nullptr, queryStepWrongQuery},
       {"query-terminate-ignored", K::CaseMutation,
        "neither rayQueryTerminateEXT nor a commit under TerminateOnFirstHit ends a ray query's "
        "traversal",

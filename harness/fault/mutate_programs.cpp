@@ -230,7 +230,9 @@ std::string tlasIgnored(Case& c, ModelOptions&) {
   size_t n = 0;
   forEachProgram(c.pipeline, [&](Program& p, Stage) {
     forEachStmt(p, [&](Stmt& s) {
-      if (s.kind != Stmt::Kind::Trace && s.kind != Stmt::Kind::RayQuery) return;
+      if (s.kind != Stmt::Kind::Trace && s.kind != Stmt::Kind::RayQuery &&
+          s.kind != Stmt::Kind::RestartQuery)
+        return;
       if (s.trace.tlas == 0 && s.trace.tlas_index.empty()) return;
       s.trace.tlas = 0;
       s.trace.tlas_index.clear();  // a dynamic index too

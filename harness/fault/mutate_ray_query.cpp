@@ -161,4 +161,18 @@ std::string queryFunctionGetsCopy(Case& c, ModelOptions& o) {
   return describeCount(n, "calls of functions taking a ray query that get a copy of it");
 }
 
+std::string queryRestartKeepsCommitted(Case& c, ModelOptions& o) {
+  const size_t n = countStatements(c, Stmt::Kind::RestartQuery);
+  if (!n) return "";
+  o.faults.rq_restart_keeps_committed = true;
+  return describeCount(n, "restarts of a query in traversal that keep what is committed");
+}
+
+std::string queryStepWrongQuery(Case& c, ModelOptions& o) {
+  const size_t n = countStatements(c, Stmt::Kind::RayQueries);
+  if (!n) return "";
+  o.faults.rq_step_wrong_query = true;
+  return describeCount(n, "arrays of ray queries stepped one element off");
+}
+
 }  // namespace rayspec

@@ -99,7 +99,9 @@ std::vector<RuleFaults> pipelineRules() {
       // A ray query loop that decides candidates, commits or reads built-ins
       // otherwise than the pipeline's stages would (pipeline.traces: ray_query).
       // The ray_query statement (cases/ray-query/).
-      {"R-RQ-INIT", {"query-init-keeps-committed"}, {}},
+      {"R-RQ-INIT",
+       {"query-init-keeps-committed", "query-restart-keeps-committed", "query-step-wrong-query"},
+       {}},
       {"R-RQ-CANDIDATES",
        {"query-offers-opaque", "query-commit-beyond-committed-t", "tlas-ignored"},
        {}},

@@ -191,6 +191,8 @@ void emitProgram(const Program& program, const StageContext& ctx, GlslWriter& ou
         ifStmt(s, ctx, out);
         break;
       case Stmt::Kind::RayQuery:
+      case Stmt::Kind::RayQueries:
+      case Stmt::Kind::RestartQuery:
       case Stmt::Kind::Candidates:
       case Stmt::Kind::Confirm:
       case Stmt::Kind::Generate:

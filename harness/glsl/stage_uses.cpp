@@ -110,6 +110,7 @@ void visitProgram(const Program& p, Stage stage, const Plan& plan, StageUses& u)
         break;
       }
       case Stmt::Kind::RayQuery:
+      case Stmt::Kind::RestartQuery:
       case Stmt::Kind::Generate:
         visitQuery(s, stage, u);
         break;

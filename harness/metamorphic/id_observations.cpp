@@ -80,7 +80,8 @@ struct Observer {
       }
       if (s.kind == Stmt::Kind::Call) expr(s.call_index);
       if (s.kind == Stmt::Kind::Generate) expr(s.t);
-      if (s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::RayQuery)
+      if (s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::RayQuery ||
+          s.kind == Stmt::Kind::RestartQuery)
         for (const std::vector<Expr>* a :
              {&s.trace.origin, &s.trace.direction, &s.trace.tmin, &s.trace.tmax, &s.trace.flags,
               &s.trace.cull_mask, &s.trace.sbt_offset, &s.trace.sbt_stride, &s.trace.miss})

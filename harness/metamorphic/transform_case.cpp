@@ -30,7 +30,8 @@ bool tracesOnlyTheLaunchRay(const Case& c) {
 // constants in them would not move with the case.
 bool setsOwnRay(const Program& p) {
   return std::any_of(p.begin(), p.end(), [](const Stmt& s) {
-    const bool traces = s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::RayQuery;
+    const bool traces = s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::RayQuery ||
+                        s.kind == Stmt::Kind::RestartQuery;
     if (traces && (!s.trace.origin.empty() || !s.trace.direction.empty())) return true;
     return setsOwnRay(s.then_) || setsOwnRay(s.else_);
   });

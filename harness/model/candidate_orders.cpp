@@ -55,7 +55,10 @@ bool sameFrame(const QueryFrameSaved& a, const QueryFrameSaved& b) {
   return a.locals.size() == b.locals.size() &&
          std::equal(a.locals.begin(), a.locals.end(), b.locals.begin(), sameVal) &&
          samePayload(a.payload, b.payload) && samePayload(a.child, b.child) &&
-         sameCallData(a.callee, b.callee);
+         sameCallData(a.callee, b.callee) && a.restarts == b.restarts &&
+         a.restart.has_value() == b.restart.has_value() &&
+         (!a.restart || (sameRay(a.restart->ray, b.restart->ray) &&
+                         sameIdentity(a.restart->keep, b.restart->keep)));
 }
 
 }  // namespace

@@ -52,6 +52,15 @@ struct LaunchState {
       if (o.compare(0, place.size(), place) == 0) return;
     order_dependent.push_back(place + what);
   }
+  // restart_query statements that restarted their query more than
+  // kMaxQueryRestarts times in one run of it (Results::endless_restarts),
+  // each named once (`place`, then the first ray's `what`).
+  std::vector<std::string> endless_restarts;
+  void endlessRestarts(const std::string& place, const std::string& what) {
+    for (const std::string& o : endless_restarts)
+      if (o.compare(0, place.size(), place) == 0) return;
+    endless_restarts.push_back(place + what);
+  }
 
   // The launch ray now.
   uint32_t* records = nullptr;  // ray i's record at records + i * recordWords()

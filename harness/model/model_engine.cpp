@@ -271,6 +271,10 @@ void gatherMachines(const std::vector<std::unique_ptr<Machine>>& machines, const
       if (std::find(r.order_dependent.begin(), r.order_dependent.end(), o) ==
           r.order_dependent.end())
         r.order_dependent.push_back(o);
+    for (const std::string& o : m->state().endless_restarts)
+      if (std::find(r.endless_restarts.begin(), r.endless_restarts.end(), o) ==
+          r.endless_restarts.end())
+        r.endless_restarts.push_back(o);
     if (!m->state().error.empty() && r.ok()) r.setStatus(SideStatus::Crash, m->state().error);
   }
   std::sort(r.ambiguous.begin(), r.ambiguous.end(),

@@ -634,6 +634,24 @@ uint64_t ModelTracer::effectOf(const Committed& b, const Payload& payload,
     for (const Val& v : query->env->locals) d.add(v);
     d.add(query->env->child);
     d.add(query->env->callee);
+    // A restart goes on with its ray (and what it keeps committed).
+    d.add(query->restarts);
+    if (const std::optional<QueryRestart>& r = query->restart) {
+      const TraceRay& ray = r->ray;
+      d.add(ray.origin);
+      d.add(ray.direction);
+      d.add(ray.tmin);
+      d.add(ray.tmax);
+      d.add(ray.flags);
+      d.add(ray.cull_mask);
+      d.add(ray.tlas);
+      d.add(static_cast<uint8_t>(r->keep.valid));
+      if (r->keep.valid) {
+        d.add(r->keep.instance);
+        d.add(r->keep.geometry);
+        d.add(r->keep.primitive);
+      }
+    }
   }
   return d.h;
 }

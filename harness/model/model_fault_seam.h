@@ -60,12 +60,14 @@ class ModelFaultSeam {
   bool queryCustomIndexIsInstanceId() const {  // R-RQ-VALUES
     return f_.rq_custom_index_is_instance_id;
   }
-  bool queryCommitKeepsInterval() const { return f_.rq_commit_keeps_interval; }    // R-RQ-COMMIT
-  bool queryConfirmOnlyFirst() const { return f_.rq_confirm_only_first; }          // R-RQ-COMMIT
-  bool queryCandidateTypeSwapped() const { return f_.rq_candidate_type_swapped; }  // R-RQ-VALUES
-  bool queryFrontFaceInverted() const { return f_.rq_front_face_inverted; }        // R-RQ-VALUES
-  bool queryBreakLosesCommit() const { return f_.rq_break_loses_commit; }          // R-RQ-COMMIT
-  bool queryFunctionGetsCopy() const { return f_.rq_function_gets_copy; }          // R-RQ-COMMIT
+  bool queryCommitKeepsInterval() const { return f_.rq_commit_keeps_interval; }      // R-RQ-COMMIT
+  bool queryConfirmOnlyFirst() const { return f_.rq_confirm_only_first; }            // R-RQ-COMMIT
+  bool queryCandidateTypeSwapped() const { return f_.rq_candidate_type_swapped; }    // R-RQ-VALUES
+  bool queryFrontFaceInverted() const { return f_.rq_front_face_inverted; }          // R-RQ-VALUES
+  bool queryBreakLosesCommit() const { return f_.rq_break_loses_commit; }            // R-RQ-COMMIT
+  bool queryFunctionGetsCopy() const { return f_.rq_function_gets_copy; }            // R-RQ-COMMIT
+  bool queryRestartKeepsCommitted() const { return f_.rq_restart_keeps_committed; }  // R-RQ-INIT
+  bool queryStepWrongQuery() const { return f_.rq_step_wrong_query; }                // R-RQ-INIT
   // A legal device (rayspec mutate) or one passing between shared edges:
   // an ambiguous trace is replayed as another of its answers.
   bool answersOtherwise() const { return f_.legal_answer != 0 || f_.pass_between_edges; }

@@ -76,7 +76,13 @@ struct ModelFaults {
   //     rayQueryProceedEXT returns false has nothing committed (R-RQ-COMMIT:
   //     a device that commits only when traversal completes);
   //   rq_function_gets_copy: a function taking a query (query: true) gets a
-  //     copy: its confirm, generate and terminate_query reach nothing (R-RQ-COMMIT).
+  //     copy: its confirm, generate and terminate_query reach nothing (R-RQ-COMMIT);
+  //   rq_restart_keeps_committed: rayQueryInitializeEXT of a query in
+  //     traversal (restart_query) keeps what is committed (R-RQ-INIT: it
+  //     discards all previous state);
+  //   rq_step_wrong_query: stepping an array of queries (ray_queries)
+  //     proceeds the next element: each query's blocks decide the next
+  //     query's candidates (the next one's ray; R-RQ-INIT).
   bool rq_init_keeps_committed = false;
   bool rq_opaque_offered = false;
   bool rq_confirm_ignored = false;
@@ -90,6 +96,8 @@ struct ModelFaults {
   bool rq_front_face_inverted = false;
   bool rq_break_loses_commit = false;
   bool rq_function_gets_copy = false;
+  bool rq_restart_keeps_committed = false;
+  bool rq_step_wrong_query = false;
   // R-WATERTIGHT not met (a "should"): every trace through a shared edge or
   // vertex passes between its triangles, where that changes the answer.
   bool pass_between_edges = false;

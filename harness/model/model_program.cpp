@@ -228,7 +228,8 @@ struct Compiler {
       for (const Stmt& c : s.then_)
         if (leavesQueryLoop(c.then_)) r.size = 1;  // a break leaves its loop
     }
-    if (s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::RayQuery) {
+    if (s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::RayQuery ||
+        s.kind == Stmt::Kind::RestartQuery) {
       const std::vector<Expr>* a[CStmt::kTraceArgs] = {
           &s.trace.origin, &s.trace.direction, &s.trace.tmin,       &s.trace.tmax,
           &s.trace.flags,  &s.trace.cull_mask, &s.trace.sbt_offset, &s.trace.sbt_stride,
@@ -242,6 +243,9 @@ struct Compiler {
     r.then_ = program(s.then_);
     r.else_ = program(s.else_);
     if (s.kind == Stmt::Kind::RayQuery) r.order_dependent = queryOrderDependence(r).yes;
+    // Stepped queries whose blocks share what they read or write: the
+    // interleaving of their candidates would decide (order_dependence.h).
+    if (s.kind == Stmt::Kind::RayQueries) r.order_dependent = steppedQueriesShare(r).yes;
     return r;
   }
 };

@@ -104,7 +104,9 @@ struct CStmt {
   std::vector<CStmt> then_, else_;
   const Stmt* src = nullptr;  // for the case field a diagnosis names
   // RayQuery: its candidate blocks may depend on the order candidates
-  // arrive in (model/order_dependence.h).
+  // arrive in (model/order_dependence.h); RayQueries: its queries' blocks
+  // share what they read or write (steppedQueriesShare), so the interleaving
+  // of their candidates may decide.
   bool order_dependent = false;
 };
 

@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 #include <utility>
+#include <vector>
 
 #include "program/builtins.h"
 
@@ -36,18 +37,16 @@ class Scan {
     for (const CStmt& s : p) stmt(s);
   }
 
-  // The first reason found, or none.
-  OrderDependence result() const {
-    if (found_.yes) return found_;
-    for (const auto& [where, w] : writes_) {
-      if (w.varies) return {true, "writes " + name(where) + " with values an order decides", w.at};
-      if (const auto r = reads_.find(where); r != reads_.end())
-        return {true, "reads " + name(where) + ", which a candidate writes", r->second};
-    }
-    return tie_;
+  // Where a place is written (null: nowhere), and read.
+  const CStmt* writes(const Where& w) const {
+    const auto it = writes_.find(w);
+    return it == writes_.end() ? nullptr : it->second.at;
   }
-
- private:
+  const CStmt* reads(const Where& w) const {
+    const auto it = reads_.find(w);
+    return it == reads_.end() ? nullptr : it->second;
+  }
+  const std::map<Where, Write>& written() const { return writes_; }
   static std::string name(const Where& w) {
     switch (w.first) {
       case Place::Local:
@@ -60,6 +59,18 @@ class Scan {
     return "";
   }
 
+  // The first reason found, or none.
+  OrderDependence result() const {
+    if (found_.yes) return found_;
+    for (const auto& [where, w] : writes_) {
+      if (w.varies) return {true, "writes " + name(where) + " with values an order decides", w.at};
+      if (const auto r = reads_.find(where); r != reads_.end())
+        return {true, "reads " + name(where) + ", which a candidate writes", r->second};
+    }
+    return tie_;
+  }
+
+ private:
   void dependsBecause(std::string why, const CStmt& s) {
     if (!found_.yes) found_ = {true, std::move(why), &s};
   }
@@ -148,6 +159,11 @@ class Scan {
       case Stmt::Kind::TerminateQuery:
         dependsBecause("ends traversal", s);
         break;
+      case Stmt::Kind::RestartQuery:
+        // Which candidate restarts it, and what the candidates before it
+        // left behind, is the order's.
+        dependsBecause("restarts the query", s);
+        break;
       case Stmt::Kind::Array:
       case Stmt::Kind::Repeat:
         if (s.slot >= 0) declared_.insert(s.slot);
@@ -186,6 +202,32 @@ OrderDependence queryOrderDependence(const CStmt& query) {
   Scan scan(true, Stage::Raygen);
   for (const CStmt& block : query.then_) scan.program(block.then_);
   return scan.result();
+}
+
+OrderDependence steppedQueriesShare(const CStmt& stepped) {
+  std::vector<Scan> scans;
+  for (const CStmt& q : stepped.then_) {
+    scans.emplace_back(true, Stage::Raygen);
+    for (const CStmt& block : q.then_) scans.back().program(block.then_);
+  }
+  for (size_t i = 0; i < scans.size(); ++i)
+    for (const auto& [where, w] : scans[i].written())
+      for (size_t j = 0; j < scans.size(); ++j) {
+        if (j == i) continue;
+        const CStmt* other = scans[j].reads(where);
+        const char* how = "reads";
+        if (!other) {
+          other = scans[j].writes(where);
+          how = "writes";
+        }
+        if (!other) continue;
+        return {true,
+                "query " + std::to_string(i) + "'s block writes " + Scan::name(where) + " at " +
+                    statementPlace(w.at) + ", which query " + std::to_string(j) + "'s " + how +
+                    " at " + statementPlace(other),
+                w.at};
+      }
+  return {};
 }
 
 OrderDependence pipelineOrderDependence(const CPipeline& p) {

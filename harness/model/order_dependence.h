@@ -3,7 +3,8 @@
 // pipeline and per ray_query statement, so that the exact tier tries other
 // orders there (model_exact_tier.cpp) and nowhere else. A program may
 // depend on the order where it
-//   - ends traversal (terminate, terminate_query);
+//   - ends traversal (terminate, terminate_query) or restarts it
+//     (restart_query);
 //   - reads what earlier candidates committed (a query's committed.*
 //     getters; ray_tmax in an intersection program, the committed t);
 //   - reports a t that is not its box's own (ray_tmin, a constant: two
@@ -35,6 +36,12 @@ struct OrderDependence {
 
 // A ray_query statement's candidate blocks (its then_).
 OrderDependence queryOrderDependence(const CStmt& query);
+// A ray_queries statement (its queries in then_, stepped in turn): whether
+// one query's candidate blocks write a local of the frame, the payload or a
+// record field that another query's blocks read or write, so that the
+// interleaving of their candidates (unspecified) may decide. Counters are
+// left out: their atomic adds commute.
+OrderDependence steppedQueriesShare(const CStmt& stepped);
 // A pipeline's any-hit and intersection programs.
 OrderDependence pipelineOrderDependence(const CPipeline& p);
 // "file:line field" of a statement (its case source), for a diagnosis.

@@ -101,6 +101,10 @@ Flow StageInterpreter::execStmt(const CStmt& s, StageEnv& env) {
     }
     case Stmt::Kind::RayQuery:
       return execRayQuery(s, env);
+    case Stmt::Kind::RayQueries:
+      return execRayQueries(s, env);
+    case Stmt::Kind::RestartQuery:
+      return execRestartQuery(s, env);
     case Stmt::Kind::Confirm:
       hits_.confirm(env);
       return Flow::Continue;

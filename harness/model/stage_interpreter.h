@@ -14,6 +14,7 @@
 #include "model/model_shared.h"
 #include "model/model_stage_env.h"
 #include "model/model_what_if.h"
+#include "model/query_run.h"
 
 namespace rayspec {
 
@@ -46,9 +47,15 @@ class StageInterpreter {
   Flow execSwitch(const CStmt& s, StageEnv& env);
   Flow execInvoke(const CStmt& s, StageEnv& env);
   void loseLocals(StageEnv& env) const;
-  void execCall(const CStmt& s, StageEnv& env);      // executeCallableEXT
-  void execTrace(const CStmt& s, StageEnv& env);     // traceRayEXT
-  Flow execRayQuery(const CStmt& s, StageEnv& env);  // a ray_query statement (model_query.cpp)
+  void execCall(const CStmt& s, StageEnv& env);          // executeCallableEXT
+  void execTrace(const CStmt& s, StageEnv& env);         // traceRayEXT
+  Flow execRayQuery(const CStmt& s, StageEnv& env);      // a ray_query statement (model_query.cpp)
+  Flow execRayQueries(const CStmt& s, StageEnv& env);    // ray_queries, stepped in turn
+  Flow execRestartQuery(const CStmt& s, StageEnv& env);  // restart_query
+  // A query as rayQueryInitializeEXT starts it (its ray, where it starts).
+  void startQuery(QueryRun& q, const CStmt& s, StageEnv& env);
+  // Stepped queries whose blocks share what they write: a case error.
+  void steppedOrderDependent(const CStmt& s);
   Payload startPayload(const CStmt& s, StageEnv& env);
   TraceRay tracedRay(const CStmt& s, StageEnv& env);
   void callCallable(uint32_t index, CallData& data, uint32_t depth, const CStmt& site);

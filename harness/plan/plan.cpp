@@ -57,7 +57,9 @@ TraceFlags traceFlags(const Case& c, const std::vector<StageProgram>& programs) 
   for (const Ray& r : c.rays.rays) f.add(r.flags, r.cull_mask);
   for (const auto& sp : programs)
     walkStatements(*sp.program, [&](const Stmt& s) {
-      if (s.kind != Stmt::Kind::Trace && s.kind != Stmt::Kind::RayQuery) return;
+      if (s.kind != Stmt::Kind::Trace && s.kind != Stmt::Kind::RayQuery &&
+          s.kind != Stmt::Kind::RestartQuery)
+        return;
       // Nested traces take the case defaults unless they say otherwise.
       uint32_t flags = s.trace.flags.empty()
                            ? (sp.stage == Stage::Raygen ? 0 : c.rays.defaults.flags)

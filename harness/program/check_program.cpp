@@ -3,6 +3,7 @@
 // case's outputs.
 #include <algorithm>
 #include <string>
+#include <utility>
 
 #include "program/builtins.h"
 #include "program/check_bit_casts.h"
@@ -40,6 +41,8 @@ constexpr StmtRule kStmtRules[] = {
     {Stmt::Kind::Confirm, "confirm", kAllStages},
     {Stmt::Kind::Generate, "generate", kAllStages},
     {Stmt::Kind::TerminateQuery, "terminate_query", kAllStages},
+    {Stmt::Kind::RayQueries, "ray_queries", kAllStages},
+    {Stmt::Kind::RestartQuery, "restart_query", kAllStages},
     {Stmt::Kind::If, "if", kAllStages},
     {Stmt::Kind::Let, "let", kAllStages},
     {Stmt::Kind::Set, "set", kAllStages},
@@ -162,6 +165,10 @@ class Checker {
         return block(s.else_);
       case Stmt::Kind::RayQuery:
         return rayQuery(s);
+      case Stmt::Kind::RayQueries:
+        return rayQueries(s);
+      case Stmt::Kind::RestartQuery:
+        return restartQuery(s);
       case Stmt::Kind::Candidates:
       case Stmt::Kind::Confirm:
       case Stmt::Kind::Generate:
@@ -188,7 +195,15 @@ class Checker {
         return repeat(s);
       case Stmt::Kind::Break:
         // In a ray_query's candidate block, outside any repeat: leaves the
-        // query's proceed loop (GLSL's break leaves the innermost loop).
+        // query's proceed loop (GLSL's break leaves the innermost loop); in
+        // a stepped query's (ray_queries) it would leave the loop that steps
+        // them all.
+        if (breakable_.empty() && candidate_block_ && stepped_block_)
+          return ProgramError{
+              "'break' in a candidate block of a ray_queries query: the queries are stepped "
+              "in turn in one loop, which a break would leave for all of them (use "
+              "terminate_query to end this one)",
+              s.loc};
         if (breakable_.empty() && candidate_block_) return std::nullopt;
         if (breakable_.empty() || breakable_.back() != 'L')
           return ProgramError{breakable_.empty()
@@ -230,12 +245,13 @@ class Checker {
     if (auto r = traceFields(s, "ray_query", 6)) return r;
     using Block = LocalScope::QueryBlock;
     const Block outer = scope_.queryBlock();
-    const bool outer_candidates = candidate_block_;
+    const bool outer_candidates = candidate_block_, outer_stepped = stepped_block_;
     std::vector<char> loops;
     std::swap(loops, breakable_);
     ++query_depth_;
     std::optional<ProgramError> r;
     scope_.openBlock();  // as the model's compiler opens them (model_program.cpp)
+    stepped_block_ = std::exchange(stepped_member_, false);
     for (Stmt& c : s.then_) {
       scope_.setQueryBlock(c.size == 0 ? Block::Triangle : Block::Aabb);
       candidate_block_ = true;
@@ -244,11 +260,46 @@ class Checker {
     scope_.closeBlock();
     std::swap(loops, breakable_);
     candidate_block_ = outer_candidates;
+    stepped_block_ = outer_stepped;
     scope_.setQueryBlock(Block::After);
     if (!r) r = block(s.else_);
     --query_depth_;
     scope_.setQueryBlock(outer);
     return r;
+  }
+
+  // ray_queries: its ray queries checked as ray_query statements in one
+  // block (as the model's compiler opens then_), their candidate blocks
+  // marked stepped (no break: it would leave the loop stepping them all).
+  std::optional<ProgramError> rayQueries(Stmt& s) {
+    scope_.openBlock();
+    std::optional<ProgramError> r;
+    for (Stmt& q : s.then_) {
+      stepped_member_ = true;
+      if (!r) r = rayQuery(q);
+    }
+    stepped_member_ = false;
+    scope_.closeBlock();
+    return r;
+  }
+
+  // restart_query: in a candidate block of the innermost query, outside any
+  // repeat (the GLSL goes on to the next proceed with `continue`) and any
+  // function (a rayQueryEXT parameter's loop is the caller's).
+  std::optional<ProgramError> restartQuery(Stmt& s) {
+    using Block = LocalScope::QueryBlock;
+    const Block b = scope_.queryBlock();
+    if (!candidate_block_ || (b != Block::Triangle && b != Block::Aabb))
+      return ProgramError{
+          "'restart_query' initializes the query whose candidate it decides: only in a "
+          "ray_query's triangle or aabb block (not in `after`, nor in a function)",
+          s.loc};
+    if (std::find(breakable_.begin(), breakable_.end(), 'L') != breakable_.end())
+      return ProgramError{
+          "'restart_query' inside a repeat: the block ends at a restart (the query's loop "
+          "goes on with the new ray), which a repeat's loop would hold back",
+          s.loc};
+    return traceFields(s, "restart_query", 6);
   }
 
   // confirm (a triangle block), generate (an AABB block), terminate_query
@@ -517,6 +568,9 @@ class Checker {
   uint32_t query_depth_ = 0;      // ray_query statements around the one checked
   bool candidate_block_ = false;  // in a ray_query's triangle or aabb block
   bool candidate_frame_ = false;  // in a function invoked from one
+  bool stepped_block_ = false;    // in a candidate block of a ray_queries query
+  bool stepped_member_ = false;   // the ray_query checked next is one of ray_queries'
+
   const std::vector<std::string>& counters_;
   const std::vector<std::string>& fields_;
 };

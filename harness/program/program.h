@@ -113,6 +113,13 @@ struct Stmt {
     Confirm,         // rayQueryConfirmIntersectionEXT (a triangle block)
     Generate,        // rayQueryGenerateIntersectionEXT(t) (an AABB block)
     TerminateQuery,  // rayQueryTerminateEXT (a candidate block)
+    RayQueries,      // ray_queries: the RayQuery statements in then_, all alive at once
+                     // (one GLSL array of rayQueryEXT): each initialized in order, then
+                     // stepped in turn (one rayQueryProceedEXT each, its block for its
+                     // candidate) until all are done, then each one's `after` in order
+    RestartQuery,    // restart_query: rayQueryInitializeEXT of the innermost query with
+                     // `trace` (a candidate block; the block ends, the loop goes on
+                     // with the new ray: nothing committed)
     If,              // if (cond) then_ else else_
     // Control flow and local variables (cases/README.md, "Control flow"); kept
     // last: the model's compiler tells them by order (Kind >= Let).
@@ -141,7 +148,7 @@ struct Stmt {
                                // Pipeline::call_data_words)
   SourceLoc call_location_loc;
   std::string light;  // Light: point|spot|directional
-  TraceArgs trace;    // Trace; RayQuery (origin .. cull_mask, tlas)
+  TraceArgs trace;    // Trace; RayQuery, RestartQuery (origin .. cull_mask, tlas)
   std::string local;  // Array, Store: the array; Repeat: its variable (optional);
                       // Invoke: the function
   ValueType local_type = ValueType::Uint;  // Array: the element type
@@ -197,5 +204,11 @@ constexpr uint32_t kMaxArrayElements = 128;
 constexpr uint32_t kMaxFunctionNesting = 8;
 // ray_query statements nest at most this deep (one GLSL query variable each).
 constexpr uint32_t kMaxQueryNesting = 4;
+// A ray_queries statement steps 2 to this many queries in turn.
+constexpr uint32_t kMaxSteppedQueries = 8;
+// A query restarts (restart_query) at most this many times in one run of its
+// ray_query; a further restart_query does nothing on both sides (the GLSL
+// counts them) and the model names it a case error (endless restarts).
+constexpr uint32_t kMaxQueryRestarts = 8;
 
 }  // namespace rayspec

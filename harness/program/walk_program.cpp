@@ -43,6 +43,7 @@ void ownExpressions(S& s, const Visit& visit) {
       walkExpr(s.t, visit);
       break;
     case Stmt::Kind::RayQuery:
+    case Stmt::Kind::RestartQuery:
     case Stmt::Kind::Trace: {
       auto& t = s.trace;
       for (auto* list : {&t.origin, &t.direction, &t.tmin, &t.tmax, &t.flags, &t.cull_mask,
@@ -84,6 +85,9 @@ bool leavesQueryLoop(const Program& block) {
     if (s.kind == Stmt::Kind::If && (leavesQueryLoop(s.then_) || leavesQueryLoop(s.else_)))
       return true;
     if (s.kind == Stmt::Kind::RayQuery && leavesQueryLoop(s.else_)) return true;
+    if (s.kind == Stmt::Kind::RayQueries)
+      for (const Stmt& q : s.then_)
+        if (leavesQueryLoop(q.else_)) return true;
   }
   return false;
 }

@@ -208,6 +208,10 @@ struct Results {
   // depend on the order of more candidates than the model enumerates, each
   // named by its block and file:line (compare/order_dependent_verdict.h).
   std::vector<std::string> order_dependent;
+  // model: restart_query statements that restart their query past
+  // kMaxQueryRestarts times in one run of it, each named by its file:line
+  // (compare/endless_restarts_verdict.h).
+  std::vector<std::string> endless_restarts;
   std::vector<std::string> validation_messages;  // validation-layer errors (device)
   // Device: what the device broke that only the device shows, each a Fail of
   // its rule: R-LIBRARY (library group handles that differ from the linked
