@@ -77,6 +77,8 @@ struct ModelFaults {
   //     a device that commits only when traversal completes);
   //   rq_function_gets_copy: a function taking a query (query: true) gets a
   //     copy: its confirm, generate and terminate_query reach nothing (R-RQ-COMMIT).
+  // On a trace that a --through ray-query* run inlines as a query loop, each
+  // breaks that loop where it has a meaning there (ModelFaultSeam::inlinedQuery).
   bool rq_init_keeps_committed = false;
   bool rq_opaque_offered = false;
   bool rq_confirm_ignored = false;
