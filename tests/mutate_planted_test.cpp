@@ -90,5 +90,20 @@ TEST(MutatePlanted, InlinedTerminateAndIntervalFaultsKilled) {
   }
 }
 
+// Layers nearer than the terminating one are all ignored: a loop that goes
+// on after the terminate (far to near) commits what a legal order commits,
+// and runs any-hit as the order (0, 3, 2, 1) does. A survivor that shows only
+// what a legal device shows is legal, not a hole (mutate/legal_output.h).
+TEST(MutatePlanted, ASurvivorALegalDeviceMatchesIsLegal) {
+  const CaseMutation m =
+      mutateSuiteCase("control/any-hit-functions/loop-stop-1", FeaturePath::RayQuery);
+  ASSERT_TRUE(m.judged) << m.not_judged;
+  const MutantOutcome* o = findPlanted(m, "query-terminate-ignored");
+  ASSERT_NE(o, nullptr);
+  ASSERT_TRUE(o->mutation.applied) << o->mutation.what;
+  EXPECT_FALSE(o->killed) << o->headline;
+  EXPECT_EQ(o->legal_reason.rfind("R-ORDER-UNSPEC", 0), 0u) << o->legal_reason;
+}
+
 }  // namespace
 }  // namespace rayspec
