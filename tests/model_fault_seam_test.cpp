@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "case/case.h"
 #include "model/model_engine.h"
 
 namespace rayspec {
@@ -84,6 +85,33 @@ TEST(ModelFaultSeam, ALeakIsTakenFirstThenTheLegalAnswerModuloTheirNumber) {
   EXPECT_TRUE(leaking.answerTaken(3, 2)->leak);
   EXPECT_EQ(leaking.answerTaken(3, 2)->index, 0u);
   EXPECT_FALSE(leaking.answerTaken(3, 0)->leak);  // no leak answer: the legal one
+}
+
+// A planted query fault reaches a trace only where a --through ray-query*
+// run inlines it as a query loop: every depth under ray_query, depth 2 on
+// (closest-hit's and miss's traces) under ray_query_in_hit.
+TEST(ModelFaultSeam, QueryFaultsReachOnlyTracesInlinedAsQueries) {
+  ModelOptions o;
+  o.faults.rq_confirm_ignored = true;
+  Pipeline p;
+  EXPECT_FALSE(ModelFaultSeam(o).inlinedQueryFaulty());
+  EXPECT_FALSE(ModelFaultSeam(o, &p).inlinedQueryFaulty());
+  p.ray_query = true;
+  EXPECT_TRUE(ModelFaultSeam(o, &p).inlinedQuery(1).confirm_ignored);
+  EXPECT_FALSE(ModelFaultSeam(ModelOptions{}, &p).inlinedQueryFaulty());
+  p.ray_query = false;
+  p.ray_query_in_hit = true;
+  EXPECT_FALSE(ModelFaultSeam(o, &p).inlinedQuery(1).any());
+  EXPECT_TRUE(ModelFaultSeam(o, &p).inlinedQuery(2).confirm_ignored);
+  EXPECT_TRUE(ModelFaultSeam(o, &p).inlinedQuery(3).confirm_ignored);
+  // The faults that mean nothing on an inlined loop reach none of its traces.
+  for (bool ModelFaults::*knob :
+       {&ModelFaults::rq_break_loses_commit, &ModelFaults::rq_function_gets_copy,
+        &ModelFaults::rq_committed_reads_candidate, &ModelFaults::rq_init_keeps_committed}) {
+    o = {};
+    o.faults.*knob = true;
+    EXPECT_FALSE(ModelFaultSeam(o, &p).inlinedQueryFaulty());
+  }
 }
 
 }  // namespace

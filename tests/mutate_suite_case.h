@@ -1,11 +1,15 @@
 // A library case mutated as `rayspec mutate` does, the model's own answers
-// standing for the device (tests/mutate_*_test.cpp).
+// standing for the device (tests/mutate_*_test.cpp); with `through`, the
+// case as a run --through that path sends it.
 #pragma once
 
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "metamorphic/feature_path.h"
 
 #include "model/model_engine.h"
 #include "mutate/mutate_case.h"
@@ -13,12 +17,18 @@
 
 namespace rayspec {
 
-inline CaseMutation mutateSuiteCase(const std::string& name) {
+inline CaseMutation mutateSuiteCase(const std::string& name,
+                                    std::optional<FeaturePath> through = std::nullopt) {
   const std::vector<CaseFile> files = findCases(kSuiteCases, name);
   EXPECT_EQ(files.size(), 1u) << name;
   const ParseResult parsed = loadSuiteCase(files.at(0));
   EXPECT_TRUE(parsed.value) << name;
-  const Case& c = *parsed.value;
+  Case c = *parsed.value;
+  if (through) {
+    Result<Case> sent = throughPath(c, *through);
+    EXPECT_TRUE(sent) << name << ": " << (sent ? "" : sent.error().format());
+    if (sent) c = std::move(*sent);
+  }
   const Plan plan = derivePlan(c);
   const Results model = runOnModel(c, plan, {});
   Results device = model;

@@ -1,7 +1,9 @@
 // Ray query rules broken (R-RQ-INIT .. R-RQ-VALUES): a device whose
 // ray_query statements keep the last query's commit, offer opaque triangles,
 // ignore confirm or terminate, or read committed values from the candidate
-// (the model's test-only hooks, model/model_faults.h).
+// (the model's test-only hooks, model/model_faults.h). On a case a
+// --through ray-query* run sends its traces as query loops, each breaks
+// those loops as well where it has a meaning there (ModelFaultSeam::inlinedQuery).
 #include <initializer_list>
 
 #include "fault/fault_impl.h"
@@ -42,6 +44,33 @@ size_t loopLeavingBlocks(const Case& c) {
   return n;
 }
 
+// How many traces a --through ray-query* run inlines as ray query loops
+// (glsl/emit_ray_query.h): every trace under pipeline.ray_query, those of
+// closest-hit and miss under ray_query_in_hit. A planted query fault breaks
+// their loops too, where it has a meaning there (ModelFaultSeam::inlinedQuery).
+size_t inlinedTraces(const Case& c) {
+  const Pipeline& p = c.pipeline;
+  if (!p.ray_query && !p.ray_query_in_hit) return 0;
+  size_t n = 0;
+  forEachProgram(p, [&](const Program& program, Stage stage) {
+    if (stage == Stage::Raygen && !p.ray_query) return;
+    walkStatements(program, [&](const Stmt& s) { n += s.kind == Stmt::Kind::Trace; });
+  });
+  return n;
+}
+
+// What a fault breaks: `n` of the case's own statements (`what`), and its
+// inlined traces, whose loops `inlined` ("" where none).
+std::string plantedOn(size_t n, const std::string& what, const Case& c,
+                      const std::string& inlined) {
+  std::string out = describeCount(n, what);
+  const size_t traces = inlined.empty() ? 0 : inlinedTraces(c);
+  if (traces)
+    out += (out.empty() ? "" : "; ") +
+           describeCount(traces, "traces inlined as ray query loops that " + inlined);
+  return out;
+}
+
 }  // namespace
 
 std::string queryInitKeepsCommitted(Case& c, ModelOptions& o) {
@@ -52,33 +81,48 @@ std::string queryInitKeepsCommitted(Case& c, ModelOptions& o) {
 }
 
 std::string queryOffersOpaque(Case& c, ModelOptions& o) {
-  const size_t n = countStatements(c, Stmt::Kind::RayQuery);
-  if (!n) return "";
+  const std::string what =
+      plantedOn(countStatements(c, Stmt::Kind::RayQuery),
+                "ray queries that return opaque triangles as candidates", c,
+                "run the any-hit of an opaque triangle (committed where it accepts)");
+  if (what.empty()) return "";
   o.faults.rq_opaque_offered = true;
-  return describeCount(n, "ray queries that return opaque triangles as candidates");
+  return what;
 }
 
 std::string queryConfirmIgnored(Case& c, ModelOptions& o) {
-  const size_t n = countStatements(c, Stmt::Kind::Confirm);
-  if (!n) return "";
+  const std::string what =
+      plantedOn(countStatements(c, Stmt::Kind::Confirm), "confirms that commit nothing", c,
+                "commit no non-opaque triangle's accepted hit");
+  if (what.empty()) return "";
   o.faults.rq_confirm_ignored = true;
-  return describeCount(n, "confirms that commit nothing");
+  return what;
 }
 
 std::string queryGenerateIgnored(Case& c, ModelOptions& o) {
-  const size_t n = countStatements(c, Stmt::Kind::Generate);
-  if (!n) return "";
+  const std::string what =
+      plantedOn(countStatements(c, Stmt::Kind::Generate), "generates that commit nothing", c,
+                countStatements(c, Stmt::Kind::Report)
+                    ? "commit no accepted reportIntersectionEXT (which returns true)"
+                    : "");
+  if (what.empty()) return "";
   o.faults.rq_generate_ignored = true;
-  return describeCount(n, "generates that commit nothing");
+  return what;
 }
 
 // Ray flags come from the case's rays as well: every query may terminate on
-// its first hit.
+// its first hit. An inlined trace's candidates come far to near (a legal
+// order), so that what terminates is not the closest: near to far, the
+// farther ones lie beyond it and the traversal it did not end finds nothing.
 std::string queryTerminateIgnored(Case& c, ModelOptions& o) {
-  const size_t n = countStatements(c, Stmt::Kind::RayQuery);
-  if (!n) return "";
+  const std::string what = plantedOn(
+      countStatements(c, Stmt::Kind::RayQuery),
+      "ray queries that neither terminate_query nor TerminateOnFirstHit end", c,
+      "neither an any-hit's terminate nor TerminateOnFirstHit ends (candidates far to near)");
+  if (what.empty()) return "";
   o.faults.rq_terminate_ignored = true;
-  return describeCount(n, "ray queries that neither terminate_query nor TerminateOnFirstHit end");
+  if (inlinedTraces(c)) o.faults.order = CandidateOrder::ReverseDistance;
+  return what;
 }
 
 std::string queryCommittedReadsCandidate(Case& c, ModelOptions& o) {
@@ -98,9 +142,14 @@ std::string queryCommittedReadsCandidate(Case& c, ModelOptions& o) {
 std::string queryCustomIndexIsInstanceId(Case& c, ModelOptions& o) {
   const size_t reads =
       countGetters(c, {"committed.instance_custom_index", "candidate.instance_custom_index"});
-  if (!reads) return "";
+  const std::string what =
+      plantedOn(reads, "ray query custom index reads that give the instance id", c,
+                countGetters(c, {"instance_custom_index"})
+                    ? "give the instance id for gl_InstanceCustomIndexEXT"
+                    : "");
+  if (what.empty()) return "";
   o.faults.rq_custom_index_is_instance_id = true;
-  return describeCount(reads, "ray query custom index reads that give the instance id");
+  return what;
 }
 
 // R-RQ-COMMIT: the closest commit stays, because a commit shrinks the
@@ -108,40 +157,51 @@ std::string queryCustomIndexIsInstanceId(Case& c, ModelOptions& o) {
 std::string queryCommitKeepsInterval(Case& c, ModelOptions& o) {
   const size_t n =
       countStatements(c, Stmt::Kind::Confirm) + countStatements(c, Stmt::Kind::Generate);
-  if (!n) return "";
+  const std::string what =
+      plantedOn(n,
+                "commits that leave the query's interval at its tmax (triangles beyond "
+                "the committed t still offered, a generate beyond it accepted)",
+                c, "commit the last accepted triangle, not the closest (tmax never shrinks)");
+  if (what.empty()) return "";
   o.faults.rq_commit_keeps_interval = true;
-  return describeCount(n,
-                       "commits that leave the query's interval at its tmax (triangles beyond "
-                       "the committed t still offered, a generate beyond it accepted)");
+  return what;
 }
 
 // Candidates far to near (a legal order), so that the second confirm a
 // block makes is of a nearer candidate, which R-RQ-COMMIT commits.
 std::string queryConfirmOnlyFirst(Case& c, ModelOptions& o) {
-  const size_t n = countStatements(c, Stmt::Kind::Confirm);
-  if (!n) return "";
+  const std::string what = plantedOn(countStatements(c, Stmt::Kind::Confirm),
+                                     "confirms that commit nothing once something is committed "
+                                     "(candidates far to near)",
+                                     c,
+                                     "commit no accepted triangle once something is committed "
+                                     "(candidates far to near)");
+  if (what.empty()) return "";
   o.faults.rq_confirm_only_first = true;
   o.faults.order = CandidateOrder::ReverseDistance;
-  return describeCount(n,
-                       "confirms that commit nothing once something is committed "
-                       "(candidates far to near)");
+  return what;
 }
 
 // The blocks are chosen by rayQueryGetIntersectionTypeEXT (glsl/emit_query.cpp).
 std::string queryCandidateTypeSwapped(Case& c, ModelOptions& o) {
-  const size_t n = countStatements(c, Stmt::Kind::RayQuery);
-  if (!n) return "";
+  const std::string what =
+      plantedOn(countStatements(c, Stmt::Kind::RayQuery),
+                "ray queries whose candidates read the other type (and run the other block)", c,
+                "run no intersection for a box and no any-hit for a non-opaque triangle, and "
+                "commit neither");
+  if (what.empty()) return "";
   o.faults.rq_candidate_type_swapped = true;
-  return describeCount(n,
-                       "ray queries whose candidates read the other type (and run the other "
-                       "block)");
+  return what;
 }
 
 std::string queryFrontFaceInverted(Case& c, ModelOptions& o) {
   const size_t reads = countGetters(c, {"committed.front_face", "candidate.front_face"});
-  if (!reads) return "";
+  const std::string what = plantedOn(
+      reads, "ray query front face reads that give a triangle's other face", c,
+      countGetters(c, {"hit_kind"}) ? "give a triangle's other face as its hit_kind" : "");
+  if (what.empty()) return "";
   o.faults.rq_front_face_inverted = true;
-  return describeCount(reads, "ray query front face reads that give a triangle's other face");
+  return what;
 }
 
 std::string queryBreakLosesCommit(Case& c, ModelOptions& o) {

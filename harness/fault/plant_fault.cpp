@@ -10,6 +10,21 @@ const FaultImpl* findImpl(const std::string& name) {
   return nullptr;
 }
 
+// A fault a device shows only in another order than near to far (a legal
+// one, ModelFaults::order) that answers here as that order alone does: what
+// changed is the order, not the rule the fault breaks.
+bool onlyTheOrder(const FaultImpl& f, const Case& c, const ModelOptions& options,
+                  const Results& faulty) {
+  if (options.faults.order == CandidateOrder::Distance ||
+      std::string(f.breaks).rfind("legal:", 0) == 0)
+    return false;
+  ModelOptions legal;
+  legal.faults.order = options.faults.order;
+  legal.faults.order_seed = options.faults.order_seed;
+  const Results ordered = perfectDevice(c, runOnModel(c, derivePlan(c), legal));
+  return ordered.ok() && sameOutput(ordered, faulty);
+}
+
 // The model's exact tier on the case as the breaking device sees it.
 FaultResult runMutated(const FaultImpl& f, const Case& c, Results& device) {
   Case mutated = c;
@@ -20,6 +35,8 @@ FaultResult runMutated(const FaultImpl& f, const Case& c, Results& device) {
   const Results r = perfectDevice(mutated, runOnModel(mutated, derivePlan(mutated), options));
   if (!r.ok())
     return notApplicable("the mutated case does not run on the model: " + r.statusText());
+  if (onlyTheOrder(f, c, options, r))
+    return notApplicable("changes nothing a device deciding in its order does not: " + what);
   device.counters = r.counters;
   device.records = r.records;
   device.images = r.images;

@@ -40,7 +40,7 @@ void HitProtocol::runIntersection(Traversal& tr, const ModelCandidate& cand, siz
   tr.cur_group = grp;
   st_.bumpRuns(kRunsIntersection);
   StageEnv env = hitStage(Stage::Intersection, rec->data, nullptr, r, hv,
-                          static_cast<float>(tr.tmax_cur), tr.depth);
+                          static_cast<float>(tr.reportTmax()), tr.depth);
   env.traversal = &tr;
   interp_.exec(*grp->intersection, env);
   tr.cur = nullptr;
@@ -70,9 +70,9 @@ double HitProtocol::sphereRootError(const CStmt& s, const HitView& h, const Stag
 
 bool HitProtocol::reportInside(const CStmt& s, StageEnv& env, Traversal& tr, float t) {
   // R-ISECT-REPORT, R-CAND-AABB-CLOSED: tmin <= t <= current tmax.
-  bool inside = t >= tr.ray.tmin && static_cast<double>(t) <= tr.tmax_cur;
-  if (sh_.fault_seam.openAabbInterval())
-    inside = t > tr.ray.tmin && static_cast<double>(t) < tr.tmax_cur;
+  const double tmax = tr.reportTmax();
+  bool inside = t >= tr.ray.tmin && static_cast<double>(t) <= tmax;
+  if (sh_.fault_seam.openAabbInterval()) inside = t > tr.ray.tmin && static_cast<double>(t) < tmax;
   if (tr.reports && t >= tr.ray.tmin && t <= tr.ray.tmax + tr.tol(t))
     tr.reports->push_back({tr.cur_index, t});
   if (tr.exact) {
@@ -106,6 +106,17 @@ bool HitProtocol::reportInside(const CStmt& s, StageEnv& env, Traversal& tr, flo
   return inside;
 }
 
+void HitProtocol::commitReport(const CStmt& s, StageEnv& env, Traversal& tr, const HitView& hv,
+                               float t, uint32_t kind) {
+  tr.best = {true, static_cast<double>(t), hv.instance, hv.geometry, hv.primitive, kind, hv.b1,
+             hv.b2};
+  tr.best.words = hv.words;
+  // R-PREC: how far a device's root may lie from this one.
+  if (tr.exact && reportsSphereRoot(s, env)) tr.best.t_err = sphereRootError(s, hv, env);
+  if (!tr.inlined.commit_keeps_interval) tr.tmax_cur = t;
+  env.tmax_view = t;
+}
+
 Flow HitProtocol::report(const CStmt& s, StageEnv& env) {
   Traversal* tr = env.traversal;
   if (!tr || !tr->cur) return Flow::Continue;
@@ -131,15 +142,10 @@ Flow HitProtocol::report(const CStmt& s, StageEnv& env) {
     }
     if (ah != Flow::Ignore) {
       accepted = true;
-      tr->best = {true, static_cast<double>(t), hv.instance, hv.geometry, hv.primitive, kind, hv.b1,
-                  hv.b2};
-      tr->best.words = hv.words;
-      // R-PREC: how far a device's root may lie from this one.
-      if (tr->exact && reportsSphereRoot(s, env)) tr->best.t_err = sphereRootError(s, hv, env);
-      tr->tmax_cur = t;
-      env.tmax_view = t;
+      // Planted, inlined: the loop's generate commits nothing, its report still true.
+      if (!tr->inlined.generate_ignored) commitReport(s, env, *tr, hv, t, kind);
       if (ah == Flow::Terminate || (tr->flags & kRayTerminateOnFirstHit)) {
-        tr->stop = true;
+        tr->stop = !tr->inlined.terminate_ignored;
         return Flow::Terminate;  // R-TERMINATE: the intersection program stops too
       }
     }

@@ -51,6 +51,9 @@ class HitProtocol {
  private:
   // Whether a reported t becomes a candidate hit (report's first step).
   bool reportInside(const CStmt& s, StageEnv& env, Traversal& tr, float t);
+  // An accepted report committed: the hit hv at t, its kind (report's last step).
+  void commitReport(const CStmt& s, StageEnv& env, Traversal& tr, const HitView& hv, float t,
+                    uint32_t kind);
   // R-PREC: how far a device's sphere root (a report's t) may lie from the
   // model's, for the hit h.
   void endOnFirstHit(Traversal& tr) const;

@@ -167,8 +167,10 @@ Val ModelBuiltins::hitBuiltin(const CExpr& e, const StageEnv& env) const {
       return fromUint(hv->primitive);
     case kBiInstance:
       return fromUint(hv->instance);
-    case kBiCustomIndex:
-      return fromUint(hv->custom_index);
+    case kBiCustomIndex:  // planted, in an inlined query's hit stages: the instance id
+      return fromUint(sh_.fault_seam.inlinedQuery(env.depth).custom_index_is_instance_id
+                          ? hv->instance
+                          : hv->custom_index);
     case kBiGeometry:
       return fromUint(hv->geometry);
     case kBiHitKind:

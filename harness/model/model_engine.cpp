@@ -174,9 +174,9 @@ ModelShared sharedState(const Case& c, const Plan& plan, const ModelOptions& opt
   // (ModelTracer::checkCandidates), which a direct run does not see.
   const bool no_null_candidates =
       (c.pipeline.flags & (kPipelineNoNullAnyHit | kPipelineNoNullIntersection)) != 0;
-  shared.fault_seam = ModelFaultSeam(opt);
+  shared.fault_seam = ModelFaultSeam(opt, &c.pipeline);
   shared.direct = !scene.filters && !hasOwnTriangles(scene) && shared.fault_seam.distanceOrder() &&
-                  !no_null_candidates;
+                  !shared.fault_seam.inlinedQueryFaulty() && !no_null_candidates;
   shared.any_hit_repeat = opt.any_hit_repeat;
   shared.replays = opt.tier == ModelTier::Exact && opt.any_hit_repeat == AnyHitRepeat::None &&
                    !shared.fault_seam.answersOtherwise();

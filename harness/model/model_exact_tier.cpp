@@ -531,6 +531,7 @@ Committed ModelTracer::decideAs(const Traversal& actual, const std::vector<Model
   v.tmax_cur = actual.ray.tmax;
   v.exact = actual.exact;
   v.startQuery(actual.query);
+  v.inlined = actual.inlined;
   v.prefer = how.prefer;
   v.first = how.first;
   v.shader_force = how.shader ? &*how.shader : nullptr;

@@ -1,11 +1,32 @@
 // The model's fault seam (model_fault_seam.h): built from the options.
 #include "model/model_fault_seam.h"
 
+#include "case/case.h"
 #include "model/model_engine.h"
 
 namespace rayspec {
 
-ModelFaultSeam::ModelFaultSeam(const ModelOptions& opt) : f_(opt.faults) {}
+ModelFaultSeam::ModelFaultSeam(const ModelOptions& opt, const Pipeline* inlining)
+    : f_(opt.faults),
+      inlined_from_depth_(!inlining                    ? 0
+                          : inlining->ray_query        ? 1
+                          : inlining->ray_query_in_hit ? 2
+                                                       : 0) {}
+
+ModelFaultSeam::InlinedQuery ModelFaultSeam::inlinedQuery(uint32_t depth) const {
+  InlinedQuery q;
+  if (!inlined_from_depth_ || depth < inlined_from_depth_) return q;
+  q.opaque_offered = f_.rq_opaque_offered;
+  q.confirm_ignored = f_.rq_confirm_ignored;
+  q.confirm_only_first = f_.rq_confirm_only_first;
+  q.generate_ignored = f_.rq_generate_ignored;
+  q.terminate_ignored = f_.rq_terminate_ignored;
+  q.commit_keeps_interval = f_.rq_commit_keeps_interval;
+  q.candidate_type_swapped = f_.rq_candidate_type_swapped;
+  q.front_face_inverted = f_.rq_front_face_inverted;
+  q.custom_index_is_instance_id = f_.rq_custom_index_is_instance_id;
+  return q;
+}
 
 // splitmix64 of the key and the seed: a shuffle that is the same on every run.
 uint64_t ModelFaultSeam::permutedRank(uint32_t instance, uint32_t geometry,

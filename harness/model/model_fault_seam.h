@@ -15,11 +15,14 @@
 namespace rayspec {
 
 struct ModelOptions;
+struct Pipeline;
 
 class ModelFaultSeam {
  public:
   ModelFaultSeam() = default;
-  explicit ModelFaultSeam(const ModelOptions& opt);
+  // `inlining`: the pipeline whose traces a --through ray-query* run may
+  // inline as ray query loops (inlinedQuery); none: no trace is a query.
+  explicit ModelFaultSeam(const ModelOptions& opt, const Pipeline* inlining = nullptr);
 
   // R-CAND-TRI-OPEN broken: a triangle at exactly tmin or tmax is a candidate.
   bool closedTriangleInterval() const {
@@ -68,6 +71,35 @@ class ModelFaultSeam {
   bool queryFunctionGetsCopy() const { return f_.rq_function_gets_copy; }            // R-RQ-COMMIT
   bool queryRestartKeepsCommitted() const { return f_.rq_restart_keeps_committed; }  // R-RQ-INIT
   bool queryStepWrongQuery() const { return f_.rq_step_wrong_query; }                // R-RQ-INIT
+  // A trace that a --through ray-query* run inlines as a ray query loop
+  // (glsl/emit_ray_query.h: every trace under Pipeline::ray_query, those of
+  // closest-hit and miss, depth 2 on, under ray_query_in_hit): the query
+  // faults planted, as that loop breaks them. All false for a trace at
+  // `depth` that is no query loop. The faults that have no meaning on such a
+  // loop are not here: it never breaks out of its loop nor passes its query
+  // to a function; during a candidate it reads only the committed t, which
+  // a box candidate (the one that reads it) does not define; and its query
+  // restarting from the last commit is left to the case's own queries.
+  struct InlinedQuery {
+    bool opaque_offered = false;          // an opaque triangle runs the any-hit, confirmed or not
+    bool confirm_ignored = false;         // a non-opaque triangle's accepted hit is not committed
+    bool confirm_only_first = false;      // nor is it once something is committed
+    bool generate_ignored = false;        // a report accepted (true), its commit lost
+    bool terminate_ignored = false;       // terminateRay, TerminateOnFirstHit end no traversal
+    bool commit_keeps_interval = false;   // a triangle's commit leaves tmax where it was
+    bool candidate_type_swapped = false;  // a triangle runs no intersection, a box no program
+    bool front_face_inverted = false;     // a triangle's hit_kind is its other face's
+    bool custom_index_is_instance_id = false;  // instance_custom_index reads the instance id
+    bool any() const {
+      return opaque_offered || confirm_ignored || confirm_only_first || generate_ignored ||
+             terminate_ignored || commit_keeps_interval || candidate_type_swapped ||
+             front_face_inverted || custom_index_is_instance_id;
+    }
+  };
+  InlinedQuery inlinedQuery(uint32_t depth) const;
+  // Some trace's inlined query breaks a planted fault: every trace decides
+  // its candidates (no direct hit).
+  bool inlinedQueryFaulty() const { return inlinedQuery(UINT32_MAX).any(); }
   // A legal device (rayspec mutate) or one passing between shared edges:
   // an ambiguous trace is replayed as another of its answers.
   bool answersOtherwise() const { return f_.legal_answer != 0 || f_.pass_between_edges; }
@@ -86,6 +118,7 @@ class ModelFaultSeam {
 
  private:
   ModelFaults f_;
+  uint32_t inlined_from_depth_ = 0;  // the first trace depth inlined as a query loop (0: none)
 };
 
 }  // namespace rayspec

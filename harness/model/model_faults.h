@@ -83,6 +83,8 @@ struct ModelFaults {
   //   rq_step_wrong_query: stepping an array of queries (ray_queries)
   //     proceeds the next element: each query's blocks decide the next
   //     query's candidates (the next one's ray; R-RQ-INIT).
+  // On a trace that a --through ray-query* run inlines as a query loop, each
+  // breaks that loop where it has a meaning there (ModelFaultSeam::inlinedQuery).
   bool rq_init_keeps_committed = false;
   bool rq_opaque_offered = false;
   bool rq_confirm_ignored = false;

@@ -182,6 +182,19 @@ bool ModelTracer::triangleInside(const Traversal& tr, const ModelCandidate& cand
   return inside;
 }
 
+namespace {
+
+// Planted, inlined (ModelFaultSeam::inlinedQuery): the loop's confirm of
+// an accepted triangle commits nothing, though a terminate still ends it.
+bool inlinedConfirmLost(Traversal& tr, Flow any_hit) {
+  const ModelFaultSeam::InlinedQuery& q = tr.inlined;
+  if (!q.confirm_ignored && !(q.confirm_only_first && tr.best.valid)) return false;
+  if (any_hit == Flow::Terminate) tr.stop = true;
+  return true;
+}
+
+}  // namespace
+
 std::optional<ModelTracer::OrderedCandidate> ModelTracer::candidateAt(
     const Traversal& tr, const std::vector<ModelCandidate>& cands, size_t pos) const {
   const size_t first = tr.first >= 0 ? static_cast<size_t>(tr.first) : 0;
@@ -224,15 +237,22 @@ void ModelTracer::decide(Traversal& tr, const std::vector<ModelCandidate>& cands
       if (force && force[k] == 0) continue;
       // A preferred box entered at the committed t (within the error bound) still runs.
       if (cand.t > tr.tmax_cur && !(tr.prefer == static_cast<long>(k) && tr.ties(cand.t))) continue;
+      // Planted, inlined: a box runs the triangle block, whose confirm of a box commits nothing.
+      if (tr.inlined.candidate_type_swapped) continue;
       if (grp && grp->intersection) hits_.runIntersection(tr, cand, k, opaque, rec, grp);
       continue;
     }
     if (!(force && force[k] >= 0 ? force[k] == 1 : cand.hit)) continue;
     if (!triangleInside(tr, cand, k, force)) continue;
-    const Facing f = facing(scene, cand, r, tr.flags);
+    Facing f = facing(scene, cand, r, tr.flags);
     if (f.culled) continue;
+    if (tr.inlined.front_face_inverted) f.kind ^= 1u;  // 0xFE (front) and 0xFF swapped
+    // A candidate of the inlined query's loop, not committed by the query itself.
+    const bool offered = !opaque || tr.inlined.opaque_offered;
+    // Planted, inlined: a triangle runs the box block; a triangle group has no intersection.
+    if (offered && tr.inlined.candidate_type_swapped) continue;
     Flow ah = Flow::Continue;
-    if (!opaque && grp && grp->any_hit) {
+    if (offered && grp && grp->any_hit) {
       HitView hv = viewOf(scene, c, r, cand.instance, cand.geometry, cand.primitive);
       setHit(hv, static_cast<float>(cand.t), f.kind, cand.b1, cand.b2);
       st_.checkPayloadType(payload, grp->payload, "pipeline.hit_groups", *rec->group, ".any_hit");
@@ -242,11 +262,14 @@ void ModelTracer::decide(Traversal& tr, const std::vector<ModelCandidate>& cands
                            scene.blases[mi.blas].geometries[cand.geometry].flags);
       if (ah == Flow::Ignore) continue;
     }
+    if (offered && inlinedConfirmLost(tr, ah)) continue;
     // Exact tier, R-PREC: how far a device's t may lie (its frame's rounding).
     tr.best = {true,   cand.t,  cand.instance, cand.geometry, cand.primitive,
                f.kind, cand.b1, cand.b2,       cand.t_err};
-    tr.tmax_cur = cand.t;
-    if (ah == Flow::Terminate || (tr.flags & kRayTerminateOnFirstHit)) tr.stop = true;
+    if (!tr.inlined.commit_keeps_interval) tr.tmax_cur = cand.t;
+    if ((ah == Flow::Terminate || (tr.flags & kRayTerminateOnFirstHit)) &&
+        !tr.inlined.terminate_ignored)
+      tr.stop = true;
   }
 }
 
@@ -263,6 +286,7 @@ Committed ModelTracer::traverse(const TraceRay& r, uint32_t flags, uint32_t dept
   tr.exact = scene.tier == ModelTier::Exact;
   tr.payload = &payload;
   tr.startQuery(query);
+  if (!query) tr.inlined = sh_.fault_seam.inlinedQuery(depth);
   const Payload payload_in = payload;  // for the exact tier's what-if variants
   // A legal device's other answer (ModelFaultSeam) replays the trace from here.
   std::optional<LaunchState::Saved> before;

@@ -19,6 +19,7 @@
 
 #include "base/affine.h"
 #include "base/float_steps.h"
+#include "model/model_fault_seam.h"
 #include "model/model_program.h"
 #include "model/model_scene.h"
 #include "model/model_stage_env.h"
@@ -41,6 +42,9 @@ struct Traversal {
   // A ray_query's traversal (model_query.cpp): its candidate blocks decide,
   // no shader runs; null for traceRayEXT.
   QueryRun* query = nullptr;
+  // A trace a --through ray-query* run inlines as a query loop: the planted
+  // query faults as that loop breaks them (ModelFaultSeam::inlinedQuery).
+  ModelFaultSeam::InlinedQuery inlined;
   // The AABB candidate whose intersection program runs.
   bool cur_opaque = false;
   const SbtRecord* cur_rec = nullptr;
@@ -81,6 +85,12 @@ struct Traversal {
   }
   bool isPreferred(uint32_t i, uint32_t g, uint32_t p) const {
     return prefer >= 0 && prefer_key[0] == i && prefer_key[1] == g && prefer_key[2] == p;
+  }
+  // The t a report must not pass (R-CAND-AABB-CLOSED): the current tmax, or
+  // where an inlined query's commits keep the interval (planted), the
+  // committed t the loop holds reports to (glsl/emit_ray_query.cpp).
+  double reportTmax() const {
+    return inlined.commit_keeps_interval && best.valid ? best.t : tmax_cur;
   }
   bool ties(double t) const { return best.valid && std::fabs(t - best.t) <= tol(t); }
   // A triangle candidate's t against an interval end: its own error bound

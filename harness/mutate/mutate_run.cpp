@@ -9,6 +9,8 @@
 #include "library/case_discovery.h"
 #include "model/model_engine.h"
 #include "mutate/kill_matrix.h"
+#include "report/outcome_json.h"
+#include "run/case_as_run.h"
 #include "run/device_results.h"
 
 namespace rayspec {
@@ -23,14 +25,29 @@ CaseMutation notJudged(const std::string& name, const std::string& why) {
   return m;
 }
 
-CaseMutation mutateOne(const CaseFile& f, const MutateOptions& opt) {
+// The variant the run's cases ran as (its summary.json's; none there: as
+// written), so that each case is judged as it ran (--through ray-query*: the
+// traces its query faults break as query loops). The error names the file.
+Result<RunOptions> runVariantOf(const std::string& run_dir) {
+  RunOptions variant;
+  std::error_code ec;
+  if (!fs::exists(fs::path(run_dir) / "summary.json", ec)) return variant;
+  RAYSPEC_TRY(const SavedRun run, readSavedRun(run_dir));
+  if (const Result<void> read = variantOptions(run.info.variant, variant); !read)
+    return errorMessage(run_dir + "/summary.json: variant: " + read.error().message);
+  return variant;
+}
+
+CaseMutation mutateOne(const CaseFile& f, const MutateOptions& opt, const RunOptions& variant) {
   const ParseResult parsed = loadCase(f, opt.cases_dir);
   if (!parsed.value) {
     std::string why = "case file error";
     for (const Error& e : parsed.errors) why += "; " + e.format();
     return notJudged(f.name, why);
   }
-  const Case& c = *parsed.value;
+  const CaseAsRun as_run = caseAsRun(*parsed.value, variant);
+  if (as_run.not_run) return notJudged(f.name, as_run.not_run->headline);
+  const Case& c = *as_run.runs;
   const Plan plan = derivePlan(c);
   const Result<Results> saved = SavedDevice(opt.run_dir).run(c, plan);
   if (!saved) return notJudged(f.name, saved.error().format());
@@ -67,10 +84,15 @@ int runMutate(const MutateOptions& opt) {
     std::fprintf(stderr, "rayspec mutate: %s\n", held.error().format().c_str());
     return 2;
   }
+  const Result<RunOptions> variant = runVariantOf(opt.run_dir);
+  if (!variant) {
+    std::fprintf(stderr, "rayspec mutate: %s\n", variant.error().format().c_str());
+    return 2;
+  }
   std::vector<CaseMutation> cases;
   for (const CaseFile& f : findCases(opt.cases_dir, opt.filter)) {
     if (!fs::exists(fs::path(savedBundleDir(opt.run_dir, f.name)) / "results.json")) continue;
-    cases.push_back(mutateOne(f, opt));
+    cases.push_back(mutateOne(f, opt, *variant));
   }
   const KillMatrix m = buildKillMatrix(cases);
   const std::string text = killMatrixText(m);

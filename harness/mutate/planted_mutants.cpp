@@ -5,6 +5,7 @@
 
 #include "compare/compare_results.h"
 #include "fault/planted_fault.h"
+#include "mutate/legal_output.h"
 #include "results/record_layout.h"
 
 namespace rayspec {
@@ -58,6 +59,8 @@ MutantOutcome judgePlanted(const Case& c, const Plan& plan, const Results& model
   o.headline = v.headline();
   o.killed = isFailing(v.status);
   if (!o.killed) o.legal_reason = plantedSurvival(model, o.mutation.rays);
+  if (!o.killed && o.legal_reason.empty())
+    o.legal_reason = legalOutput(c, plan, model, base, device, o.mutation.rays);
   return o;
 }
 

@@ -2,9 +2,12 @@
 // ray query faults of fault/ (query-*, each a device breaking one R-RQ
 // rule), planted in the model's own answers as a device (perfectDevice) and
 // judged against the model. A survivor may survive legally only where every
-// ray it changed has undefined behaviour: an ambiguous ray is no excuse (the
-// device's record is held to its legal answers as a whole, issue 55), so a
-// fault that survives on a case whose rays are all ambiguous is a hole.
+// ray it changed has undefined behaviour, or where all it shows is what a
+// legal device shows too (mutate/legal_output.h: each changed record one of
+// the ray's legal answers replayed or another order's): an ambiguous ray is
+// no excuse (the device's record is held to its legal answers as a whole,
+// issue 55), so a fault that survives on a case whose rays are all
+// ambiguous with a record none of them gives is a hole.
 #pragma once
 
 #include <vector>
