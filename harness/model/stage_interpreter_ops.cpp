@@ -190,6 +190,66 @@ union ArgSlots {
   Val v[4];
 };
 
+// not, odd, even and the conversions of one scalar.
+Val unaryOp(Op n, const Val& a) {
+  Val r;
+  switch (n) {
+    case Op::Not:
+      r.b = !a.b;
+      return r;
+    case Op::Odd:
+      r.b = (a.u & 1u) != 0;
+      return r;
+    case Op::Even:
+      r.b = (a.u & 1u) == 0;
+      return r;
+    case Op::ToFloat:
+      return fromFloat(static_cast<float>(a.u));
+    case Op::ToUint: {
+      const float f = a.f[0];
+      return fromUint(f <= 0 || std::isnan(f) ? 0u
+                      : f >= 4294967295.0f    ? 0xFFFFFFFFu
+                                              : static_cast<uint32_t>(f));
+    }
+    case Op::RoundEven:  // the default rounding mode: to nearest, ties to even
+      return fromFloat(std::nearbyint(a.f[0]));
+    default:
+      return r;
+  }
+}
+
+// vec2..vec4 (na arguments), the components, cross, the 3x3 products, dot,
+// length and normalize of vectors of `components`.
+Val vectorOp(Op n, const Val* a, size_t na, int components) {
+  Val r;
+  switch (n) {
+    case Op::Vec2:
+    case Op::Vec3:
+    case Op::Vec4: {
+      const int cnt = 2 + static_cast<int>(n) - static_cast<int>(Op::Vec2);
+      for (int k = 0; k < cnt; ++k)
+        r.f[k] = na == 1 ? a[0].f[0] : (k < static_cast<int>(na) ? a[k].f[0] : 0.0f);
+      return r;
+    }
+    case Op::CompX:
+    case Op::CompY:
+    case Op::CompZ:
+    case Op::CompW:
+      return fromFloat(a[0].f[static_cast<int>(n) - static_cast<int>(Op::CompX)]);
+    case Op::Cross:
+      return crossProduct(a);
+    case Op::Mat3Mul:
+    case Op::Mat3TMul:
+      return matrixTimes(n, a);
+    case Op::Dot:
+    case Op::Length:
+    case Op::Normalize:
+      return vectorLength(n, a, components);
+    default:
+      return r;
+  }
+}
+
 }  // namespace
 
 Val StageInterpreter::op(const CExpr& e, StageEnv& env) {
@@ -199,12 +259,6 @@ Val StageInterpreter::op(const CExpr& e, StageEnv& env) {
   ArgSlots a;  // every remaining op takes at most 4 arguments (vec4)
   const size_t na = a.fill(e.args.size(), [&](size_t i) { return eval(e.args[i], env); });
   switch (n) {
-    case Op::Not:
-      r.b = !a[0].b;
-      return r;
-    case Op::Odd:
-      r.b = (a[0].u & 1u) != 0;
-      return r;
     case Op::BitAnd:
     case Op::BitOr:
     case Op::BitXor:
@@ -214,48 +268,31 @@ Val StageInterpreter::op(const CExpr& e, StageEnv& env) {
     case Op::FloatBits:
     case Op::BitsFloat:
       return bitOp(n, a);
+    case Op::Not:
+    case Op::Odd:
     case Op::Even:
-      r.b = (a[0].u & 1u) == 0;
-      return r;
     case Op::ToFloat:
-      return fromFloat(static_cast<float>(a[0].u));
-    case Op::ToUint: {
-      const float f = a[0].f[0];
-      return fromUint(f <= 0 || std::isnan(f) ? 0u
-                      : f >= 4294967295.0f    ? 0xFFFFFFFFu
-                                              : static_cast<uint32_t>(f));
-    }
-    case Op::RoundEven:  // the default rounding mode: to nearest, ties to even
-      return fromFloat(std::nearbyint(a[0].f[0]));
+    case Op::ToUint:
+    case Op::RoundEven:
+      return unaryOp(n, a[0]);
     case Op::Vec2:
     case Op::Vec3:
-    case Op::Vec4: {
-      const int cnt = 2 + static_cast<int>(n) - static_cast<int>(Op::Vec2);
-      for (int k = 0; k < cnt; ++k)
-        r.f[k] = na == 1 ? a[0].f[0] : (k < static_cast<int>(na) ? a[k].f[0] : 0.0f);
-      return r;
-    }
+    case Op::Vec4:
+    case Op::CompX:
+    case Op::CompY:
+    case Op::CompZ:
+    case Op::CompW:
+    case Op::Cross:
+    case Op::Mat3Mul:
+    case Op::Mat3TMul:
+    case Op::Dot:
+    case Op::Length:
+    case Op::Normalize:
+      return vectorOp(n, a, na, componentCount(e.args[0].type));
     case Op::LightPoint:
     case Op::LightSpot:
     case Op::LightDirectional:
       return lightOp(n, a, env.record_data);
-    case Op::CompX:
-      return fromFloat(a[0].f[0]);
-    case Op::CompY:
-      return fromFloat(a[0].f[1]);
-    case Op::CompZ:
-      return fromFloat(a[0].f[2]);
-    case Op::CompW:
-      return fromFloat(a[0].f[3]);
-    case Op::Cross:
-      return crossProduct(a);
-    case Op::Mat3Mul:
-    case Op::Mat3TMul:
-      return matrixTimes(n, a);
-    case Op::Dot:
-    case Op::Length:
-    case Op::Normalize:
-      return vectorLength(n, a, componentCount(e.args[0].type));
     case Op::Eq:
     case Op::Ne:
     case Op::Lt:
