@@ -7,8 +7,6 @@
 #include <filesystem>
 #include <fstream>
 
-#include "case/camera_rays.h"
-#include "case/transform.h"
 #include "parse/parse_case.h"
 #include "parse_support.h"
 
@@ -130,23 +128,6 @@ TEST(ParseCase, CameraRayDirections2x2) {
     for (int k = 0; k < 3; ++k)
       EXPECT_NEAR(rays[i].direction[k], expect[i][k], 1e-7) << i << "," << k;
   }
-}
-
-TEST(CameraRays, AspectAndDegenerate) {
-  CameraSpec cam;
-  cam.width = 4;
-  cam.height = 2;
-  cam.origin = {0, 0, 0};
-  cam.look_at = {0, 0, -1};
-  cam.fov_degrees = 90;
-  auto rays = cameraRays(cam, Ray{});
-  ASSERT_EQ(rays.size(), 8u);
-  // pixel (0, 0): u = -0.75 * 2 (aspect 2), v = 0.5
-  const double len = std::sqrt(1.5 * 1.5 + 0.25 + 1);
-  EXPECT_NEAR(rays[0].direction[0], -1.5 / len, 1e-7);
-  EXPECT_NEAR(rays[0].direction[1], 0.5 / len, 1e-7);
-  cam.up = {0, 0, 1};  // parallel to the view direction
-  EXPECT_TRUE(cameraRays(cam, Ray{}).empty());
 }
 
 TEST(ParseCase, GridAndListRays) {
@@ -300,22 +281,6 @@ outputs:
   std::string unknown = text;
   unknown.replace(unknown.find("ray_tmax"), 8, "ray_tmux");
   expectError(parse(unknown), 10, "pipeline.miss[0][4].if.and[0].lt[0]", "unknown name 'ray_tmux'");
-}
-
-TEST(Transform, ComposeAndDeterminant) {
-  TransformParts p;
-  p.translate = {1, 2, 3};
-  p.scale = {1, 2, 3};
-  Transform t = composeTransform(p);
-  EXPECT_EQ(t, (Transform{1, 0, 0, 1, 0, 2, 0, 2, 0, 0, 3, 3}));
-  EXPECT_DOUBLE_EQ(linearDeterminant(t), 6);
-  p.axis = {1, 0, 0};
-  p.degrees = 180;
-  p.scale = {1, 1, 1};
-  t = composeTransform(p);
-  EXPECT_NEAR(t[5], -1, 1e-7);
-  EXPECT_NEAR(t[10], -1, 1e-7);
-  EXPECT_NEAR(linearDeterminant(t), 1, 1e-6);
 }
 
 }  // namespace
