@@ -193,19 +193,10 @@ void parseTraces(YamlReader& r, const YAML::Node& v, Pipeline& p) {
   }
 }
 
-void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
-  p.raygen.clear();
-  Stmt trace;
-  trace.kind = Stmt::Kind::Trace;
-  trace.loc = r.loc(n, "pipeline.raygen");
-  p.raygen.push_back(trace);  // default raygen: [trace: {}]
-  if (!n.IsDefined()) return;
-  if (!r.expectMap(
-          n, "pipeline",
-          {"max_recursion", "flags", "raygen", "raygens", "raygen_group", "raygen_data", "miss",
-           "hit_groups", "callables", "sbt", "libraries", "payloads", "callable_depth", "functions",
-           "constants", "specialize", "hit_attribute", "callable_data", "traces"}))
-    return;
+namespace {
+
+// pipeline.max_recursion, pipeline.callable_depth and pipeline.flags.
+void parseDepthsAndFlags(YamlReader& r, const YAML::Node& n, Pipeline& p) {
   if (auto v = YamlReader::get(n, "max_recursion"); v.IsDefined())
     if (auto x = r.uint(v, "pipeline.max_recursion", 31)) {
       if (*x == 0) r.error(v, "pipeline.max_recursion", "must be at least 1 (raygen traces)");
@@ -218,26 +209,28 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
     }
   if (auto v = YamlReader::get(n, "flags"); v.IsDefined())
     if (auto x = r.flags(v, "pipeline.flags", pipelineFlagNames())) p.flags = *x;
-  if (auto v = YamlReader::get(n, "raygen"); v.IsDefined()) {
-    p.raygen.clear();
-    parseProgram(r, v, "pipeline.raygen", p.raygen);
-  }
-  parseRaygenGroups(r, n, p);
-  // The record shape first: the data of every record must fit in it.
-  const YAML::Node sbt = YamlReader::get(n, "sbt");
+}
+
+// The shape of every record of pipeline.sbt (record_data, padding,
+// record_layout); false when there is no pipeline.sbt or it is not a map of
+// its fields (then its regions are not read either).
+bool parseRecordShape(YamlReader& r, const YAML::Node& sbt, Pipeline& p) {
   const bool sbt_ok = sbt.IsDefined() && r.expectMap(sbt, "pipeline.sbt",
                                                      {"record_data", "padding", "miss", "hit",
                                                       "callable", "record_layout"});
-  if (sbt_ok) {
-    if (auto v = YamlReader::get(sbt, "record_data"); v.IsDefined()) parseRecordDataBytes(r, v, p);
-    if (auto v = YamlReader::get(sbt, "padding"); v.IsDefined()) parsePadding(r, v, p.sbt_padding);
-    if (auto v = YamlReader::get(sbt, "record_layout"); v.IsDefined()) parseRecordLayout(r, v, p);
-  }
-  if (auto v = YamlReader::get(n, "raygen_data"); v.IsDefined())
-    if (auto words = parseRecordData(r, v, "pipeline.raygen_data")) {
-      checkDataFits(r, v, "pipeline.raygen_data", words->size(), p.sbt_record_data);
-      p.raygen_data = *words;
-    }
+  if (!sbt_ok) return false;
+  if (auto v = YamlReader::get(sbt, "record_data"); v.IsDefined()) parseRecordDataBytes(r, v, p);
+  if (auto v = YamlReader::get(sbt, "padding"); v.IsDefined()) parsePadding(r, v, p.sbt_padding);
+  if (auto v = YamlReader::get(sbt, "record_layout"); v.IsDefined()) parseRecordLayout(r, v, p);
+  return true;
+}
+
+// The shaders after raygen, each after what it names: the payload types
+// before the shaders that name a location, the constants before the programs
+// that read them, the callable data types before the callables; then the
+// functions copied into every program and the specializations, which name
+// shaders.
+void parseShaders(YamlReader& r, const YAML::Node& n, Pipeline& p) {
   if (auto v = YamlReader::get(n, "payloads"); v.IsDefined()) parsePayloadTypes(r, v, p);
   if (auto v = YamlReader::get(n, "constants"); v.IsDefined()) parseConstants(r, v, p);
   if (auto v = YamlReader::get(n, "hit_attribute"); v.IsDefined()) parseHitAttribute(r, v, p);
@@ -248,12 +241,11 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
   if (auto v = YamlReader::get(n, "callables"); v.IsDefined()) parseCallables(r, v, p);
   expandFunctions(r, YamlReader::get(n, "functions"), p);
   if (auto v = YamlReader::get(n, "specialize"); v.IsDefined()) parseSpecialize(r, v, p);
+}
 
-  if (auto v = YamlReader::get(n, "libraries"); v.IsDefined()) parseLibraries(r, v, p);
-  checkNoNullGroups(r, p);
-  checkAttributeWords(r, p);
-  if (auto v = YamlReader::get(n, "traces"); v.IsDefined()) parseTraces(r, v, p);
-
+// The SBT's miss, hit and callable regions: a record a group, in order,
+// unless pipeline.sbt gives a region (sbt_ok: parseRecordShape's answer).
+void parseSbtRegions(YamlReader& r, const YAML::Node& sbt, bool sbt_ok, Pipeline& p) {
   p.sbt_miss = defaultRegion(p.miss.size());
   p.sbt_hit = defaultRegion(p.hit_groups.size());
   p.sbt_callable = defaultRegion(p.callables.size());
@@ -272,6 +264,43 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
     parseSbtRegion(r, v, "pipeline.sbt.callable", p.callables.size(), "callable", k,
                    p.sbt_callable);
   }
+}
+
+}  // namespace
+
+void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
+  p.raygen.clear();
+  Stmt trace;
+  trace.kind = Stmt::Kind::Trace;
+  trace.loc = r.loc(n, "pipeline.raygen");
+  p.raygen.push_back(trace);  // default raygen: [trace: {}]
+  if (!n.IsDefined()) return;
+  if (!r.expectMap(
+          n, "pipeline",
+          {"max_recursion", "flags", "raygen", "raygens", "raygen_group", "raygen_data", "miss",
+           "hit_groups", "callables", "sbt", "libraries", "payloads", "callable_depth", "functions",
+           "constants", "specialize", "hit_attribute", "callable_data", "traces"}))
+    return;
+  parseDepthsAndFlags(r, n, p);
+  if (auto v = YamlReader::get(n, "raygen"); v.IsDefined()) {
+    p.raygen.clear();
+    parseProgram(r, v, "pipeline.raygen", p.raygen);
+  }
+  parseRaygenGroups(r, n, p);
+  // The record shape first: the data of every record must fit in it.
+  const YAML::Node sbt = YamlReader::get(n, "sbt");
+  const bool sbt_ok = parseRecordShape(r, sbt, p);
+  if (auto v = YamlReader::get(n, "raygen_data"); v.IsDefined())
+    if (auto words = parseRecordData(r, v, "pipeline.raygen_data")) {
+      checkDataFits(r, v, "pipeline.raygen_data", words->size(), p.sbt_record_data);
+      p.raygen_data = *words;
+    }
+  parseShaders(r, n, p);
+  if (auto v = YamlReader::get(n, "libraries"); v.IsDefined()) parseLibraries(r, v, p);
+  checkNoNullGroups(r, p);
+  checkAttributeWords(r, p);
+  if (auto v = YamlReader::get(n, "traces"); v.IsDefined()) parseTraces(r, v, p);
+  parseSbtRegions(r, sbt, sbt_ok, p);
 }
 
 }  // namespace rayspec

@@ -474,6 +474,85 @@ const char* const kStatementNames =
     "set, array, store, repeat, switch, invoke, break, continue, return, ray_query, ray_queries, "
     "confirm, generate, terminate_query, restart_query";
 
+using StmtParser = bool (*)(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s);
+
+// if, repeat, switch and invoke: the statements whose map holds more keys
+// than their own (then/else, body, cases, arguments); nullopt when n is none
+// of them, else whether it parsed.
+std::optional<bool> parseControlStmt(YamlReader& r, const YAML::Node& n, const std::string& field,
+                                     Stmt& s) {
+  static const std::pair<const char*, StmtParser> kControl[] = {
+      {"if", parseIf}, {"repeat", parseRepeat}, {"switch", parseSwitch}, {"invoke", parseInvoke}};
+  for (const auto& [key, parse] : kControl)
+    if (YamlReader::has(n, key)) {
+      s.loc = r.loc(n, field + "." + key);
+      return parse(r, n, field, s);
+    }
+  return std::nullopt;
+}
+
+bool parseCount(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::Count;
+  auto name = r.string(v, f);
+  if (name) s.counter = *name;
+  return name.has_value();
+}
+
+bool parseSetPayload(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::SetPayload;
+  return parsePayloadAssigns(r, v, f, s);
+}
+
+bool parseSetCallData(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::SetCall;
+  return parsePayloadAssigns(r, v, f, s);  // color, value and the words
+}
+
+bool parseLet(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::Let;
+  return parseLocals(r, v, f, s);
+}
+
+bool parseSetLocals(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::Set;
+  return parseLocals(r, v, f, s);
+}
+
+bool parseGenerate(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::Generate;
+  return parseExpr(r, v, f, s.t);
+}
+
+bool parseLight(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::Light;
+  auto name = r.string(v, f);
+  if (!name) return false;
+  s.light = *name;
+  if (s.light != "point" && s.light != "spot" && s.light != "directional") {
+    r.error(v, f, "unknown light '" + s.light + "' (point, spot, directional)");
+    return false;
+  }
+  return true;
+}
+
+// The statements that are a map of one key, by that key.
+const std::pair<const char*, StmtParser> kKeyedStatements[] = {{"count", parseCount},
+                                                               {"record", parseRecord},
+                                                               {"payload", parseSetPayload},
+                                                               {"call_data", parseSetCallData},
+                                                               {"report", parseReport},
+                                                               {"let", parseLet},
+                                                               {"set", parseSetLocals},
+                                                               {"array", parseArray},
+                                                               {"store", parseStore},
+                                                               {"trace", parseTrace},
+                                                               {"ray_query", parseRayQuery},
+                                                               {"ray_queries", parseRayQueries},
+                                                               {"restart_query", parseRestartQuery},
+                                                               {"generate", parseGenerate},
+                                                               {"call", parseCall},
+                                                               {"light", parseLight}};
+
 bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt& s) {
   s.loc = r.loc(n, field);
   if (n.IsScalar()) return scalarStmt(r, n, field, s);
@@ -481,73 +560,17 @@ bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stm
     r.error(n, field, "expected a statement ({count: NAME}, {record: ...}, ignore, ...)");
     return false;
   }
-  if (YamlReader::has(n, "if")) {
-    s.loc = r.loc(n, field + ".if");
-    return parseIf(r, n, field, s);
-  }
-  if (YamlReader::has(n, "repeat")) {
-    s.loc = r.loc(n, field + ".repeat");
-    return parseRepeat(r, n, field, s);
-  }
-  if (YamlReader::has(n, "switch")) {
-    s.loc = r.loc(n, field + ".switch");
-    return parseSwitch(r, n, field, s);
-  }
-  if (YamlReader::has(n, "invoke")) {
-    s.loc = r.loc(n, field + ".invoke");
-    return parseInvoke(r, n, field, s);
-  }
+  if (const std::optional<bool> control = parseControlStmt(r, n, field, s)) return *control;
   if (n.size() != 1) {
     r.error(n, field, "one statement per list item (or if/then/else)");
     return false;
   }
   auto it = n.begin();
   const std::string key = it->first.IsScalar() ? it->first.Scalar() : "?";
-  const YAML::Node v = it->second;
   const std::string f = field + "." + key;
   s.loc = r.loc(it->first, f);
-  if (key == "count") {
-    s.kind = Stmt::Kind::Count;
-    auto name = r.string(v, f);
-    if (name) s.counter = *name;
-    return name.has_value();
-  }
-  if (key == "record") return parseRecord(r, v, f, s);
-  if (key == "payload") {
-    s.kind = Stmt::Kind::SetPayload;
-    return parsePayloadAssigns(r, v, f, s);
-  }
-  if (key == "call_data") {
-    s.kind = Stmt::Kind::SetCall;
-    return parsePayloadAssigns(r, v, f, s);  // color, value and the words
-  }
-  if (key == "report") return parseReport(r, v, f, s);
-  if (key == "let" || key == "set") {
-    s.kind = key == "let" ? Stmt::Kind::Let : Stmt::Kind::Set;
-    return parseLocals(r, v, f, s);
-  }
-  if (key == "array") return parseArray(r, v, f, s);
-  if (key == "store") return parseStore(r, v, f, s);
-  if (key == "trace") return parseTrace(r, v, f, s);
-  if (key == "ray_query") return parseRayQuery(r, v, f, s);
-  if (key == "ray_queries") return parseRayQueries(r, v, f, s);
-  if (key == "restart_query") return parseRestartQuery(r, v, f, s);
-  if (key == "generate") {
-    s.kind = Stmt::Kind::Generate;
-    return parseExpr(r, v, f, s.t);
-  }
-  if (key == "call") return parseCall(r, v, f, s);
-  if (key == "light") {
-    s.kind = Stmt::Kind::Light;
-    auto name = r.string(v, f);
-    if (!name) return false;
-    s.light = *name;
-    if (s.light != "point" && s.light != "spot" && s.light != "directional") {
-      r.error(v, f, "unknown light '" + s.light + "' (point, spot, directional)");
-      return false;
-    }
-    return true;
-  }
+  for (const auto& [name, parse] : kKeyedStatements)
+    if (key == name) return parse(r, it->second, f, s);
   r.error(it->first, f, "unknown statement '" + key + "' (" + kStatementNames + ")");
   return false;
 }
