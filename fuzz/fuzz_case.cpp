@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <string>
 
-#include "case/parse_case.h"
 #include "library/expand_sweep.h"
+#include "parse/parse_case.h"
 #include "plan/plan.h"
 
 namespace {

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "case/box_grid.h"
-#include "case_support.h"
+#include "parse_support.h"
 
 namespace rayspec {
 namespace {

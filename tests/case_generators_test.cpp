@@ -7,11 +7,11 @@
 #include <set>
 
 #include "case/aim_rays.h"
-#include "case/parse_case.h"
 #include "case/seeded_random.h"
 #include "case/triangle_fan.h"
 #include "case/triangle_grid.h"
 #include "case/triangulation.h"
+#include "parse/parse_case.h"
 
 namespace rayspec {
 namespace {

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <cstring>
 
-#include "case/parse_case.h"
 #include "case/vertex_format.h"
-#include "case_support.h"
+#include "parse/parse_case.h"
+#include "parse_support.h"
 
 namespace rayspec {
 namespace {

@@ -3,8 +3,8 @@
 // side did not reject (an accepting compiler, a null device) a Fail.
 #include <gtest/gtest.h>
 
-#include "case_support.h"
 #include "compare/compare_results.h"
+#include "parse_support.h"
 #include "plan/plan.h"
 
 namespace rayspec {

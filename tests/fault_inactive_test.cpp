@@ -4,10 +4,10 @@
 // after every active one) are untouched by it and pass.
 #include <gtest/gtest.h>
 
-#include "case/parse_case.h"
 #include "compare/compare_results.h"
 #include "fault/planted_fault.h"
 #include "model/model_engine.h"
+#include "parse/parse_case.h"
 #include "plan/plan.h"
 #include "suite_cases.h"
 

@@ -12,11 +12,11 @@
 #include <iostream>
 #include <set>
 
-#include "case/parse_case.h"
 #include "compare/compare_results.h"
 #include "fault/planted_fault.h"
 #include "fault/rule_faults.h"
 #include "model/model_engine.h"
+#include "parse/parse_case.h"
 #include "plan/plan.h"
 #include "suite_cases.h"
 

@@ -9,11 +9,11 @@
 #include <memory>
 #include <set>
 
-#include "case/parse_case.h"
 #include "compare/compare_results.h"
 #include "fault/planted_fault.h"
 #include "fault/record_edit.h"
 #include "model/model_engine.h"
+#include "parse/parse_case.h"
 #include "plan/plan.h"
 #include "result_support.h"
 #include "results/record_layout.h"

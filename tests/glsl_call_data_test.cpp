@@ -4,8 +4,8 @@
 // data in `callee`, and every module compiles and passes spirv-val.
 #include <gtest/gtest.h>
 
-#include "case_support.h"
 #include "glsl/generate_glsl.h"
+#include "parse_support.h"
 #include "plan/plan.h"
 #include "spirv/compile_glsl.h"
 

@@ -3,8 +3,8 @@
 // and every module compiles and passes spirv-val.
 #include <gtest/gtest.h>
 
-#include "case_support.h"
 #include "glsl/generate_glsl.h"
+#include "parse_support.h"
 #include "plan/plan.h"
 #include "spirv/compile_glsl.h"
 

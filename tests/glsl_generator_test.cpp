@@ -14,8 +14,8 @@
 #include <random>
 #include <set>
 
-#include "case/parse_case.h"
 #include "glsl/generate_glsl.h"
+#include "parse/parse_case.h"
 #include "plan/plan.h"
 #include "program/builtins.h"
 #include "program/ops.h"

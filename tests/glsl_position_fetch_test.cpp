@@ -8,8 +8,8 @@
 // (shaders/query_position_fetch.glsl).
 #include <gtest/gtest.h>
 
-#include "case_support.h"
 #include "glsl/generate_glsl.h"
+#include "parse_support.h"
 #include "plan/plan.h"
 #include "spirv/compile_glsl.h"
 #include "suite_cases.h"

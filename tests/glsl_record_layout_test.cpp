@@ -5,9 +5,9 @@
 // unknown member, members that do not fit the record's data.
 #include <gtest/gtest.h>
 
-#include "case/parse_case.h"
-#include "case_support.h"
 #include "glsl/generate_glsl.h"
+#include "parse/parse_case.h"
+#include "parse_support.h"
 #include "plan/plan.h"
 #include "spirv/compile_glsl.h"
 

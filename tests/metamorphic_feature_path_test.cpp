@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "case/flag_names.h"
-#include "case_support.h"
 #include "metamorphic/feature_path.h"
+#include "parse_support.h"
 #include "result_support.h"
 
 namespace rayspec {

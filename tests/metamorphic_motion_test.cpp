@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "case/parse_case.h"
 #include "metamorphic/motion_spec.h"
 #include "metamorphic/transform_case.h"
+#include "parse/parse_case.h"
 #include "result_support.h"
 
 namespace rayspec {

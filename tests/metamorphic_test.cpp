@@ -10,11 +10,11 @@
 #include <set>
 #include <string>
 
-#include "case/parse_case.h"
 #include "metamorphic/compare_permuted.h"
 #include "metamorphic/id_observations.h"
 #include "metamorphic/permute_case.h"
 #include "model/model_engine.h"
+#include "parse/parse_case.h"
 #include "plan/plan.h"
 #include "program/ops.h"
 #include "results/record_layout.h"

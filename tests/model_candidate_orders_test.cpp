@@ -10,10 +10,10 @@
 #include <set>
 #include <string>
 
-#include "case/parse_case.h"
 #include "compare/compare_results.h"
 #include "model/candidate_orders.h"
 #include "model_support.h"
+#include "parse/parse_case.h"
 
 namespace rayspec {
 namespace candidate_orders_test {

@@ -7,9 +7,9 @@
 #include <set>
 #include <string>
 
-#include "case/parse_case.h"
 #include "compare/compare_results.h"
 #include "model_support.h"
+#include "parse/parse_case.h"
 
 namespace rayspec {
 namespace {

@@ -8,11 +8,11 @@
 #include <map>
 #include <set>
 
-#include "case/parse_case.h"
 #include "model/model_engine.h"
 #include "model/model_scene.h"
 #include "model/sphere_error.h"
 #include "model_support.h"
+#include "parse/parse_case.h"
 
 namespace rayspec {
 namespace {

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "case/case.h"
-#include "case/parse_case.h"
 #include "model/model_engine.h"
+#include "parse/parse_case.h"
 #include "plan/plan.h"
 #include "program/ops.h"
 #include "results/record_layout.h"

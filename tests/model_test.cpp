@@ -13,11 +13,11 @@
 #include <map>
 #include <set>
 
-#include "case/parse_case.h"
 #include "model/model_scene.h"
 #include "model/sphere_error.h"
 #include "model/watertight.h"
 #include "model_support.h"
+#include "parse/parse_case.h"
 #include "plan/plan.h"
 #include "program/ops.h"
 #include "results/record_layout.h"

@@ -9,9 +9,9 @@
 #include <map>
 #include <string>
 
-#include "case/parse_case.h"
 #include "model/model_scene.h"
 #include "model_support.h"
+#include "parse/parse_case.h"
 
 namespace rayspec {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "case/parse_case.h"
+#include "parse/parse_case.h"
 #include "reduce/portability_check.h"
 
 namespace rayspec {

@@ -4,7 +4,7 @@
 
 #include <set>
 
-#include "case/parse_case.h"
+#include "parse/parse_case.h"
 #include "reduce/delta_debug.h"
 #include "reduce/failure_signature.h"
 #include "reduce/number_sites.h"

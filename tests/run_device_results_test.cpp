@@ -7,9 +7,9 @@
 #include <fstream>
 
 #include "bundle/results_io.h"
-#include "case/parse_case.h"
 #include "metamorphic/permute_case.h"
 #include "model/model_engine.h"
+#include "parse/parse_case.h"
 #include "result_support.h"
 #include "results/record_layout.h"
 #include "run/device_results.h"

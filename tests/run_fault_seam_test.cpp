@@ -2,7 +2,7 @@
 // is planted, and what each kind arms on the device side.
 #include <gtest/gtest.h>
 
-#include "case/parse_case.h"
+#include "parse/parse_case.h"
 #include "plan/plan.h"
 #include "result_support.h"
 #include "run/fault_seam.h"

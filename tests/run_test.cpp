@@ -18,8 +18,8 @@
 #include <nlohmann/json.hpp>
 
 #include "bundle/results_io.h"
-#include "case/parse_case.h"
 #include "compare/compare_results.h"
+#include "parse/parse_case.h"
 #include "report/case_journal.h"
 #include "report/rule_catalog.h"
 #include "result_support.h"

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "case/parse_case.h"
+#include "parse/parse_case.h"
 #include "plan/plan.h"
 #include "run/case_steps.h"
 #include "run/isolation.h"

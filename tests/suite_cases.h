@@ -11,8 +11,8 @@
 
 #include <gtest/gtest.h>
 
-#include "case/parse_case.h"
 #include "library/case_discovery.h"
+#include "parse/parse_case.h"
 
 namespace rayspec {
 

@@ -5,8 +5,8 @@
 // names no such shader, or the wrong one, is an error at its line.
 #include <gtest/gtest.h>
 
-#include "case/parse_case.h"
-#include "case_support.h"
+#include "parse/parse_case.h"
+#include "parse_support.h"
 #include "plan/plan.h"
 #include "vulkan/expected_rejections.h"
 

@@ -4,7 +4,7 @@
 // validation layer older than the extension the feature stays off.
 #include <gtest/gtest.h>
 
-#include "case_support.h"
+#include "parse_support.h"
 #include "plan/plan.h"
 #include "vulkan/vulkan_engine.h"
 

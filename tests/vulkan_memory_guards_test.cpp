@@ -4,7 +4,7 @@
 // named, with the region and the size the device reported.
 #include <gtest/gtest.h>
 
-#include "case_support.h"
+#include "parse_support.h"
 #include "plan/plan.h"
 #include "vulkan/memory_guards.h"
 #include "vulkan/vk_fault_hook.h"

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <vector>
 
-#include "case/parse_case.h"
+#include "parse/parse_case.h"
 #include "plan/plan.h"
 #include "result_support.h"
 #include "vulkan/pipeline_cache.h"

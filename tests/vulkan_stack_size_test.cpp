@@ -3,7 +3,7 @@
 // field's parse errors. The device side runs in callable/stack-depth.
 #include <gtest/gtest.h>
 
-#include "case/parse_case.h"
+#include "parse/parse_case.h"
 #include "vulkan/stack_size.h"
 
 namespace rayspec {

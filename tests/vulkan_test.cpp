@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <map>
 
-#include "case/parse_case.h"
+#include "parse/parse_case.h"
 #include "plan/plan.h"
 #include "result_support.h"
 #include "results/record_layout.h"

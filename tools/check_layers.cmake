@@ -2,6 +2,8 @@
 # its real compile flags (build/compile_commands.json) are used twice on an
 # empty file: with a header of its own module forced in (must compile), and with a
 # header of a module it does not declare, preferably one right above it (must fail: "No such file").
+# The modules that need only the case IR (kNoYaml below) must also refuse the
+# YAML reader of parse/: they see neither it nor yaml-cpp.
 # cmake -DBUILD=<build folder> -DSOURCE=<checkout> -P tools/check_layers.cmake
 cmake_minimum_required(VERSION 3.25)
 file(READ ${BUILD}/compile_commands.json db)
@@ -13,6 +15,8 @@ string(REGEX MATCHALL "\"command\": \"([^\"\\]|\\\\.)*\"" commands "${db}")
 file(GLOB modules RELATIVE ${SOURCE}/.layers ${SOURCE}/.layers/*)
 set(failures "")
 set(checked 0)
+set(kNoYaml case plan glsl vulkan model compare fault metamorphic)
+set(yaml_reader parse/yaml_reader.h)
 foreach(m ${modules})
   # One compile command of this module (its objects are under rayspec_<m>.dir).
   set(command "")
@@ -72,8 +76,20 @@ foreach(m ${modules})
       message(STATUS "${m}: refuses ${foreign}")
     endif()
   endif()
+  if(m IN_LIST kNoYaml)
+    execute_process(COMMAND ${args} -include ${yaml_reader} WORKING_DIRECTORY ${BUILD} RESULT_VARIABLE rc ERROR_VARIABLE err)
+    if(rc EQUAL 0 OR NOT err MATCHES "No such file")
+      string(APPEND failures "${m}: ${yaml_reader} was not refused (it needs only the case IR, not YAML):\n${err}\n")
+    else()
+      message(STATUS "${m}: refuses ${yaml_reader}")
+    endif()
+    list(REMOVE_ITEM kNoYaml ${m})
+  endif()
   math(EXPR checked "${checked} + 1")
 endforeach()
+if(kNoYaml)
+  string(APPEND failures "no compile command found for ${kNoYaml}, which must refuse ${yaml_reader}\n")
+endif()
 if(checked LESS 10)
   string(APPEND failures "only ${checked} modules found in ${SOURCE}/.layers\n")
 endif()

@@ -1,11 +1,11 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "case/parse_case.h"
 #include "cli/commands.h"
 #include "cli/describe_case.h"
 #include "glsl/generate_glsl.h"
 #include "library/case_discovery.h"
+#include "parse/parse_case.h"
 #include "plan/plan.h"
 #include "program/builtins.h"
 #include "program/ops.h"

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "case/parse_case.h"
+#include "parse/parse_case.h"
 
 namespace rayspec {
 

@@ -9,7 +9,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "base/result.h"
-#include "case/yaml_shape.h"
+#include "parse/yaml_shape.h"
 
 namespace rayspec {
 namespace {

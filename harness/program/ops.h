@@ -68,7 +68,7 @@ struct OpInfo {
 //       discriminant >= 0. Computed in float with the formula in
 //       shaders/sphere.glsl and its model counterpart.
 //   shader_record_uint / _float: the case parser keeps i inside
-//       pipeline.sbt.record_data (case/check_record_reads.cpp).
+//       pipeline.sbt.record_data (parse/check_record_reads.cpp).
 //   light_*: the lights of shaders/lights.glsl (what `light:` computes in a callable).
 
 // Every row, indexed by Op.

@@ -1,6 +1,6 @@
 #include "report/rule_catalog.h"
 #include "base/whole_file.h"
-#include "case/yaml_shape.h"
+#include "parse/yaml_shape.h"
 
 #include <filesystem>
 #include <fstream>

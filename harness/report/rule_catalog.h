@@ -19,7 +19,7 @@ struct Rule {
 // malformed at FILE:LINE:COL (with the rule's label where known).
 Result<std::vector<Rule>> loadRuleCatalog(const std::string& path);
 
-// The labels of the catalog, for the case parser (case/parse_case.h), which
+// The labels of the catalog, for the case parser (parse/parse_case.h), which
 // reports a label outside it at its line:col.
 std::vector<std::string> ruleLabels(const std::vector<Rule>& catalog);
 

@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "case/parse_case.h"
 #include "library/case_discovery.h"
+#include "parse/parse_case.h"
 #include "report/baseline.h"
 #include "report/case_outcome.h"
 #include "report/run_summary.h"
