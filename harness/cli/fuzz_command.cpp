@@ -62,6 +62,11 @@ Subcommand addFuzzCommand(CLI::App& app) {
                        : "unknown feature path '" + name + "' (" + featurePathNames() + ")";
           },
           "PATH");
+  fuzz->add_option("--reduce", o.reduce,
+                   "Reduce each new signature's first case with `rayspec reduce`, trying at most "
+                   "this many variants (0: no reduction)")
+      ->check(wholeCount())
+      ->capture_default_str();
   fuzz->add_option("--known", o.known,
                    "Known driver bug classes (lines `FEATURE REASON`): a finding whose case holds "
                    "one's feature is counted apart and does not fail the run")

@@ -10,6 +10,7 @@
 #include "base/whole_file.h"
 #include "fuzz/fuzz_tally.h"
 #include "fuzz/generate_case.h"
+#include "reduce/reduce_case.h"
 #include "report/case_journal.h"
 #include "run/interrupt.h"
 #include "run/run_loop.h"
@@ -104,6 +105,37 @@ bool runBatch(const FuzzOptions& opt, const std::vector<KnownClass>& known, size
   return status != kExitSetup;
 }
 
+void writeFuzzText(const FuzzOptions& opt, const FuzzTally& tally) {
+  const Result<void> written =
+      writeWholeFile((fs::path(opt.out) / "fuzz.txt").string(), tally.text());
+  if (!written) std::fprintf(stderr, "rayspec fuzz: %s\n", written.error().format().c_str());
+}
+
+// Each new signature's first case reduced (known classes and defects of
+// ours aside: a known bug needs no new report, a defect is triaged by hand).
+void reduceFindings(const FuzzOptions& opt, FuzzTally& tally) {
+  for (auto& [folder, g] : tally.findings) {
+    if (!g.known.empty() || g.rayspec_defect || interruptSignal()) continue;
+    const fs::path dir = fs::path(opt.out) / "findings" / folder;
+    ReduceOptions r;
+    r.case_path =
+        (fs::path(opt.out) / "cases" / (fuzzCaseName(g.seeds.front()) + ".yaml")).string();
+    r.out = (dir / "reduce").string();
+    r.max_attempts = opt.reduce;
+    r.run = opt.run;
+    r.run.cases_dir = (fs::path(opt.out) / "cases").string();
+    const int status = runReduce(r);
+    std::error_code ec;
+    if (status == kReduceDone)
+      fs::copy_file(dir / "reduce" / "reduced.yaml", dir / "reduced.yaml",
+                    fs::copy_options::overwrite_existing, ec);
+    g.reduced = status == kReduceDone         ? (ec ? "reduced, not copied: " + ec.message()
+                                                    : "reduced.yaml (reduce/report.md)")
+                : status == kReduceNotFailing ? "the case did not fail again (a flake?)"
+                                              : "reduce/ says why it stopped";
+  }
+}
+
 }  // namespace
 
 int runFuzz(const FuzzOptions& opt) {
@@ -135,9 +167,11 @@ int runFuzz(const FuzzOptions& opt) {
     const size_t count = opt.cases ? std::min(opt.batch, opt.cases - done) : opt.batch;
     ran = runBatch(opt, *known, b, opt.seed + done, count, tally);
     tally.seconds = elapsed();
-    const Result<void> written =
-        writeWholeFile((fs::path(opt.out) / "fuzz.txt").string(), tally.text());
-    if (!written) std::fprintf(stderr, "rayspec fuzz: %s\n", written.error().format().c_str());
+    writeFuzzText(opt, tally);
+  }
+  if (opt.reduce) {
+    reduceFindings(opt, tally);
+    writeFuzzText(opt, tally);
   }
   std::printf("%s", tally.text().c_str());
   if (interruptSignal()) return 128 + interruptSignal();

@@ -4,7 +4,9 @@
 // into OUT/runs/batch-<n>, each outcome tallied (fuzz/fuzz_tally.h); the
 // first case of each finding's signature kept as
 // OUT/findings/<signature>/{case.yaml, report.md}, and OUT/fuzz.txt
-// rewritten after every batch.
+// rewritten after every batch. With --reduce, each new signature's case is
+// then reduced by `rayspec reduce` (reduce/reduce_case.h) into
+// OUT/findings/<signature>/reduce/, its reduced.yaml copied beside case.yaml.
 #pragma once
 
 #include <cstdint>
@@ -20,6 +22,7 @@ struct FuzzOptions {
   double minutes = 0;  // --minutes: batches until this much time has passed
   size_t batch = 16;   // cases a run of the run loop
   std::string out = "rayspec-fuzz";
+  size_t reduce = 0;  // --reduce: attempts to reduce each new signature's case (0: none)
   std::string known;  // --known: known bug classes (fuzz/known_classes.h); "" none
   RunOptions run;     // the device, the model, --through, --plant-fault
 };

@@ -131,6 +131,7 @@ std::string FuzzTally::text() const {
          "\n      seeds:";
     for (size_t i = 0; i < g.seeds.size() && i < 20; ++i) t += " " + std::to_string(g.seeds[i]);
     t += g.seeds.size() > 20 ? " ...\n" : "\n";
+    if (!g.reduced.empty()) t += "      reduction: " + g.reduced + "\n";
   }
   return t;
 }

@@ -37,6 +37,7 @@ struct FuzzTally {
     bool rayspec_defect = false;
     std::string known;  // the known class's reason its cases hold ("" new)
     std::vector<uint64_t> seeds;
+    std::string reduced;  // how its reduction ended ("" not tried)
   };
   std::map<std::string, Group> findings;  // by folder ("known_" first for a known class)
   double seconds = 0;
