@@ -60,6 +60,7 @@ TEST(FuzzTriage, KnownClassesCountApart) {
   const FuzzTally::Group* g = t.add(3, fail, knownClassOf(known, {"aabbs", "nan-box"}));
   ASSERT_NE(g, nullptr);
   EXPECT_EQ(g->known, "nan-box: a NaN box hides others");
+  EXPECT_EQ(g->signature.folder.rfind("known_nan-box_Fail_", 0), 0u) << g->signature.folder;
   EXPECT_EQ(t.add(4, fail, knownClassOf(known, {"nan-box"})), nullptr);  // the same group
   EXPECT_EQ(t.findingCases(true), 2u);
   EXPECT_EQ(t.findingCases(false), 0u);

@@ -51,7 +51,7 @@ class CaseGenerator {
   void blasList();
   void triangleGeometry();
   void aabbGeometry();
-  void instance(size_t i);
+  void instance();
   std::string transform();
   std::string instanceFlags();
   // Ray parts (generate_rays.cpp).

@@ -86,7 +86,8 @@ const FuzzTally::Group* FuzzTally::add(uint64_t seed, const CaseOutcome& o,
   if (c != FuzzClass::Finding && c != FuzzClass::RayspecDefect) return nullptr;
   FuzzSignature s = signatureOf(o);
   // A defect of ours is never a driver's known bug.
-  if (known && c == FuzzClass::Finding) s.folder = "known_" + s.folder;
+  // Grouped by the known class too: one signature may show two known bugs.
+  if (known && c == FuzzClass::Finding) s.folder = "known_" + known->feature + "_" + s.folder;
   auto [it, opened] = findings.try_emplace(s.folder);
   Group& g = it->second;
   g.signature = s;

@@ -39,7 +39,7 @@ struct FuzzTally {
     std::vector<uint64_t> seeds;
     std::string reduced;  // how its reduction ended ("" not tried)
   };
-  std::map<std::string, Group> findings;  // by folder ("known_" first for a known class)
+  std::map<std::string, Group> findings;  // by folder ("known_<feature>_" first for a known class)
   double seconds = 0;
   uint64_t first_seed = 0;
   std::string variant;  // --through, --plant-fault, as the run said

@@ -139,8 +139,7 @@ std::string CaseGenerator::instanceFlags() {
   return flags;
 }
 
-void CaseGenerator::instance(size_t i) {
-  (void)i;
+void CaseGenerator::instance() {
   if (chance(0.06)) {
     features_.insert("inactive-instance");
     out_ += "    - {blas: null}\n";
@@ -178,7 +177,7 @@ void CaseGenerator::scene() {
   blasList();
   out_ += "  instances:\n";
   const size_t count = 1 + pick(4);
-  for (size_t i = 0; i < count; ++i) instance(i);
+  for (size_t i = 0; i < count; ++i) instance();
   if (hit_groups_ == 0) {  // every instance inactive: one group all the same
     group_aabbs_.push_back(false);
     hit_groups_ = 1;
