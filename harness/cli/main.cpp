@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
       addDevicesCommand(app),   addRunCommand(app),      addCompareCommand(app),
       addMergeCommand(app),     addShowCommand(app),     addListCommand(app),
       addStabilityCommand(app), addAccuracyCommand(app), addMutateCommand(app),
-      addCompileCommand(app),   addReduceCommand(app),
+      addCompileCommand(app),   addReduceCommand(app),   addFuzzCommand(app),
   };
   try {
     app.parse(argc, argv);

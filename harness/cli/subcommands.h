@@ -29,5 +29,7 @@ Subcommand addAccuracyCommand(CLI::App& app);
 Subcommand addMutateCommand(CLI::App& app);
 // cli/reduce_command.cpp
 Subcommand addReduceCommand(CLI::App& app);
+// cli/fuzz_command.cpp
+Subcommand addFuzzCommand(CLI::App& app);
 
 }  // namespace rayspec

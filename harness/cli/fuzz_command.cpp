@@ -1,0 +1,82 @@
+// `rayspec fuzz`: its own options, and those of `rayspec run` that choose
+// the device and how each case runs.
+#include <memory>
+#include <string>
+
+#include "cli/commands.h"
+#include "cli/option_checks.h"
+#include "cli/subcommands.h"
+#include "fuzz/fuzz_run.h"
+#include "metamorphic/feature_path.h"
+#include "run/fault_seam.h"
+
+namespace rayspec {
+namespace {
+
+void addDeviceOptions(CLI::App* fuzz, RunOptions& run) {
+  fuzz->add_option("--device", run.device, "Vulkan device name (substring)");
+  fuzz->add_option("--icd", run.icd_files, kIcdOptionHelp)->delimiter(':');
+  fuzz->add_option("--model", run.model_tier, "Model precision tier")->capture_default_str();
+  fuzz->add_option("--rules", run.rules_file, "Rule catalog")->capture_default_str();
+  fuzz->add_option("--timeout", run.timeout, "Seconds per case side")
+      ->check(positiveSeconds())
+      ->capture_default_str();
+  fuzz->add_option("--jobs", run.jobs, "Cases at once (0: one per core)")->capture_default_str();
+  fuzz->add_flag("--no-validation", run.no_validation, "Do not load the Khronos validation layer");
+  fuzz->add_flag("--strict-validation", run.strict_validation,
+                 "A validation error fails the case (as `rayspec run --strict-validation`)");
+  fuzz->add_option("--plant-fault", run.plant_fault,
+                   "Test only: corrupt the device's results in a known way, standing in for a "
+                   "wrong device (" +
+                       plantableFaultNames() + ")");
+}
+
+}  // namespace
+
+Subcommand addFuzzCommand(CLI::App& app) {
+  auto* fuzz = app.add_subcommand(
+      "fuzz",
+      "Generate random cases from consecutive seeds (OUT/cases/fuzz/seed-<seed>.yaml), run and "
+      "judge each as `rayspec run` does, keep every finding as OUT/findings/<signature>/ and "
+      "list them in OUT/fuzz.txt. Exit 0 nothing found, 1 findings, 2 bad input");
+  auto opt = std::make_shared<FuzzOptions>();
+  auto through = std::make_shared<std::string>();
+  FuzzOptions& o = *opt;
+  fuzz->add_option("--seed", o.seed, "The first seed")->check(decimalSeed())->capture_default_str();
+  auto* cases = fuzz->add_option("--cases", o.cases, "Cases to generate")->check(wholeCount());
+  fuzz->add_option("--minutes", o.minutes, "Generate batches until this many minutes have passed")
+      ->check(CLI::PositiveNumber)
+      ->excludes(cases);
+  fuzz->add_option("--batch", o.batch, "Cases a run of the run loop (its workers live that long)")
+      ->check(wholeCount())
+      ->capture_default_str();
+  fuzz->add_option("--out", o.out, "Folder for cases, runs, findings and fuzz.txt")
+      ->check(outputFolder())
+      ->capture_default_str();
+  fuzz->add_option("--through", *through,
+                   "Send every case through a feature path (" + featurePathNames() + ")")
+      ->check(
+          [](const std::string& name) {
+            return featurePathFromName(name)
+                       ? std::string()
+                       : "unknown feature path '" + name + "' (" + featurePathNames() + ")";
+          },
+          "PATH");
+  fuzz->add_option("--reduce", o.reduce,
+                   "Reduce each new signature's first case with `rayspec reduce`, trying at most "
+                   "this many variants (0: no reduction)")
+      ->check(wholeCount())
+      ->capture_default_str();
+  fuzz->add_option("--known", o.known,
+                   "Known driver bug classes (lines `FEATURE REASON`): a finding whose case holds "
+                   "one's feature is counted apart and does not fail the run")
+      ->check(CLI::ExistingFile);
+  addDeviceOptions(fuzz, o.run);
+  return {fuzz, [opt, through] {
+            if (!through->empty()) opt->run.through = featurePathFromName(*through);
+            if (!opt->cases && opt->minutes <= 0) opt->cases = 100;
+            return runFuzz(*opt);
+          }};
+}
+
+}  // namespace rayspec

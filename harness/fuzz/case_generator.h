@@ -1,0 +1,96 @@
+// The state of one case's generation (fuzz/generate_case.h): the seeded
+// sequence, the YAML written so far, and what the scene holds that the rays
+// and programs must fit. Each part is written by a file of its own:
+// generate_scene.cpp, generate_rays.cpp, generate_programs.cpp.
+#pragma once
+
+#include <cstdint>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "case/seeded_random.h"
+#include "program/program.h"
+
+namespace rayspec {
+
+class CaseGenerator {
+ public:
+  explicit CaseGenerator(uint64_t seed) : rng_(seed) {}
+
+  // The parts, in the order of the file.
+  void scene();
+  void rays();
+  void pipeline();
+  void outputs();
+
+  std::string& text() { return out_; }
+  std::set<std::string>& features() { return features_; }
+
+  // The seeded draws: a whole number in [0, n), a chance, a number in
+  // [lo, hi) rounded to eighths (printed exactly), one of a list.
+  uint64_t pick(uint64_t n) { return n ? rng_.next() % n : 0; }
+  bool chance(double p) { return rng_.unit() < p; }
+  double eighths(double lo, double hi);
+  template <typename T>
+  const T& oneOf(const std::vector<T>& v) {
+    return v[pick(v.size())];
+  }
+
+  // A number as the case file writes it (a Float always with a '.').
+  static std::string num(double v);
+  std::string vec3(double lo, double hi);
+
+  // A random Uint expression of `stage` (fuzz/stage_vocabulary.h), nested
+  // at most `depth` operators deep; a random Bool condition over one.
+  std::string uintExpr(Stage stage, int depth);
+  std::string condition(Stage stage);
+
+ private:
+  // Scene parts (generate_scene.cpp).
+  void blasList();
+  void triangleGeometry();
+  void aabbGeometry();
+  void instance();
+  std::string transform();
+  std::string instanceFlags();
+  // Ray parts (generate_rays.cpp).
+  std::string rayFlags();
+  std::string listRay();
+  // Programs (generate_programs.cpp).
+  std::string raygenProgram();
+  std::string missProgram(Stage stage);
+  std::string closestHitProgram();
+  std::string anyHitProgram();
+  std::string intersectionProgram();
+  std::string callableProgram();
+  void hitGroups();
+  std::string uintAtom(Stage stage);
+
+  struct Blas {
+    std::string name;
+    bool aabbs = false;
+    size_t geometries = 0;
+  };
+  // A range of hit groups one or more instances reach (sbt_offset .. + geometries).
+  struct GroupRange {
+    size_t first = 0, count = 0;
+    bool aabbs = false;
+    size_t blas = 0;
+  };
+
+  SeededRandom rng_;
+  std::string out_;
+  std::set<std::string> features_;
+  std::vector<Blas> blas_;
+  std::vector<GroupRange> ranges_;
+  size_t hit_groups_ = 0;
+  std::vector<bool> group_aabbs_;  // each hit group's kind
+  size_t miss_count_ = 1;
+  size_t callable_count_ = 0;
+  bool sbt_stride_zero_ = false;
+  std::set<std::string> fields_;    // per-ray fields some program records
+  std::set<std::string> counters_;  // counters some program counts
+};
+
+}  // namespace rayspec

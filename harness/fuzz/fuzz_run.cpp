@@ -1,0 +1,182 @@
+#include "fuzz/fuzz_run.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "base/output_folder.h"
+#include "base/whole_file.h"
+#include "fuzz/fuzz_tally.h"
+#include "fuzz/generate_case.h"
+#include "reduce/reduce_case.h"
+#include "report/case_journal.h"
+#include "run/interrupt.h"
+#include "run/run_loop.h"
+
+namespace rayspec {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The case of `seed` written under OUT/cases.
+Result<GeneratedCase> writeCase(const FuzzOptions& opt, uint64_t seed) {
+  const GeneratedCase g = generateCase(seed);
+  const fs::path file = fs::path(opt.out) / "cases" / (g.name + ".yaml");
+  std::error_code ec;
+  fs::create_directories(file.parent_path(), ec);
+  RAYSPEC_TRY_VOID(writeWholeFile(file.string(), g.yaml));
+  return g;
+}
+
+// report.md of a signature's first case.
+std::string findingReport(const FuzzOptions& opt, uint64_t seed, const CaseOutcome& o,
+                          const FuzzTally::Group& g) {
+  const FuzzSignature& s = g.signature;
+  const bool defect = g.rayspec_defect;
+  std::string r = "# " + s.status + " " + s.rule + ": " + s.kind + "\n\n";
+  r += "Seed " + std::to_string(seed) + " (case " + fuzzCaseName(seed) + ", case.yaml here).";
+  r += defect ? " Triage: a rayspec defect (a CaseError not of the model's checks, or the "
+                "model's own crash or hang).\n\n"
+              : "\n\n";
+  if (!g.known.empty())
+    r += "Known class (the case holds its feature; check that the bug is that one): " + g.known +
+         "\n\n";
+  r += "Headline: " + o.headline + "\n\nFindings:\n\n";
+  for (const Finding& f : o.verdict.findings) {
+    r += "- " + std::string(statusName(f.status)) + " " + f.rule + ": " + f.message;
+    if (f.ray_count) r += " (" + std::to_string(f.ray_count) + " rays)";
+    r += "\n";
+  }
+  r += "\nRun it again: `rayspec run --cases " + (fs::path(opt.out) / "cases").string() +
+       " --filter " + fuzzCaseName(seed) + " --out DIR`" +
+       (opt.run.plant_fault.empty() ? "" : " --plant-fault " + opt.run.plant_fault) +
+       (opt.run.through ? " --through " + std::string(featurePathName(*opt.run.through)) : "") +
+       "\n";
+  return r;
+}
+
+// Keeps the first case of a signature: case.yaml and report.md.
+void keepFinding(const FuzzOptions& opt, uint64_t seed, const CaseOutcome& o,
+                 const FuzzTally::Group& g) {
+  const fs::path dir = fs::path(opt.out) / "findings" / g.signature.folder;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  const Result<std::string> text = readWholeFile(
+      (fs::path(opt.out) / "cases" / (fuzzCaseName(seed) + ".yaml")).string(), uint64_t(1) << 20);
+  Result<void> written =
+      text ? writeWholeFile((dir / "case.yaml").string(), *text) : Result<void>(text.error());
+  if (written)
+    written = writeWholeFile((dir / "report.md").string(), findingReport(opt, seed, o, g));
+  if (!written) std::fprintf(stderr, "rayspec fuzz: %s\n", written.error().format().c_str());
+}
+
+// One batch: its cases written, run by the run loop, their outcomes
+// tallied. False: nothing could run (the run's own error is on stderr), or
+// a signal stopped it.
+bool runBatch(const FuzzOptions& opt, const std::vector<KnownClass>& known, size_t index,
+              uint64_t first, size_t count, FuzzTally& tally) {
+  RunOptions run = opt.run;
+  run.cases_dir = (fs::path(opt.out) / "cases").string();
+  run.out = (fs::path(opt.out) / "runs" / ("batch-" + std::to_string(index))).string();
+  run.brief = true;
+  run.filters.clear();
+  std::map<uint64_t, std::set<std::string>> features;
+  for (uint64_t seed = first; seed < first + count; ++seed) {
+    const Result<GeneratedCase> g = writeCase(opt, seed);
+    if (!g) {
+      std::fprintf(stderr, "rayspec fuzz: %s\n", g.error().format().c_str());
+      return false;
+    }
+    run.filters.push_back(g->name);
+    features[seed] = g->features;
+    ++tally.generated;
+  }
+  const int status = runCases(run);
+  if (status >= 128 || interruptSignal()) return false;
+  const auto journal = readJournal(run.out);
+  if (!journal || !*journal) return false;
+  for (const CaseOutcome& o : **journal) {
+    const uint64_t seed = std::stoull(o.name.substr(o.name.rfind('-') + 1));
+    if (const FuzzTally::Group* opened = tally.add(seed, o, knownClassOf(known, features[seed])))
+      keepFinding(opt, seed, o, *opened);
+  }
+  return status != kExitSetup;
+}
+
+void writeFuzzText(const FuzzOptions& opt, const FuzzTally& tally) {
+  const Result<void> written =
+      writeWholeFile((fs::path(opt.out) / "fuzz.txt").string(), tally.text());
+  if (!written) std::fprintf(stderr, "rayspec fuzz: %s\n", written.error().format().c_str());
+}
+
+// Each new signature's first case reduced (known classes and defects of
+// ours aside: a known bug needs no new report, a defect is triaged by hand).
+void reduceFindings(const FuzzOptions& opt, FuzzTally& tally) {
+  for (auto& [folder, g] : tally.findings) {
+    if (!g.known.empty() || g.rayspec_defect || interruptSignal()) continue;
+    const fs::path dir = fs::path(opt.out) / "findings" / folder;
+    ReduceOptions r;
+    r.case_path =
+        (fs::path(opt.out) / "cases" / (fuzzCaseName(g.seeds.front()) + ".yaml")).string();
+    r.out = (dir / "reduce").string();
+    r.max_attempts = opt.reduce;
+    r.run = opt.run;
+    r.run.cases_dir = (fs::path(opt.out) / "cases").string();
+    const int status = runReduce(r);
+    std::error_code ec;
+    if (status == kReduceDone)
+      fs::copy_file(dir / "reduce" / "reduced.yaml", dir / "reduced.yaml",
+                    fs::copy_options::overwrite_existing, ec);
+    g.reduced = status == kReduceDone         ? (ec ? "reduced, not copied: " + ec.message()
+                                                    : "reduced.yaml (reduce/report.md)")
+                : status == kReduceNotFailing ? "the case did not fail again (a flake?)"
+                                              : "reduce/ says why it stopped";
+  }
+}
+
+}  // namespace
+
+int runFuzz(const FuzzOptions& opt) {
+  Result<std::vector<KnownClass>> known = std::vector<KnownClass>{};
+  if (!opt.known.empty()) known = loadKnownClasses(opt.known);
+  if (!known) {
+    std::fprintf(stderr, "rayspec fuzz: %s\n", known.error().format().c_str());
+    return kExitSetup;
+  }
+  const Result<OutputFolder> held =
+      claimOutputFolder(opt.out, {"cases", "runs", "findings", "fuzz.txt"}, "fuzz");
+  if (!held) {
+    std::fprintf(stderr, "rayspec fuzz: %s\n", held.error().format().c_str());
+    return kExitSetup;
+  }
+  FuzzTally tally;
+  tally.first_seed = opt.seed;
+  tally.variant = runVariant(opt.run);
+  if (!opt.run.plant_fault.empty())
+    tally.variant += (tally.variant.empty() ? "" : "; ") + ("planted fault " + opt.run.plant_fault);
+  const auto start = std::chrono::steady_clock::now();
+  const auto elapsed = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  bool ran = true;
+  for (size_t b = 0; ran; ++b) {
+    const size_t done = tally.generated;
+    if (opt.cases ? done >= opt.cases : elapsed() >= 60.0 * opt.minutes) break;
+    const size_t count = opt.cases ? std::min(opt.batch, opt.cases - done) : opt.batch;
+    ran = runBatch(opt, *known, b, opt.seed + done, count, tally);
+    tally.seconds = elapsed();
+    writeFuzzText(opt, tally);
+  }
+  if (opt.reduce) {
+    reduceFindings(opt, tally);
+    writeFuzzText(opt, tally);
+  }
+  std::printf("%s", tally.text().c_str());
+  if (interruptSignal()) return 128 + interruptSignal();
+  if (tally.run == 0) return kExitSetup;
+  return tally.findingCases(false) == 0 ? 0 : 1;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,34 @@
+// `rayspec fuzz`: cases generated from consecutive seeds (fuzz/generate_case.h)
+// into OUT/cases/fuzz/seed-<seed>.yaml, run in batches by the run loop of
+// `rayspec run` (run/run_loop.h: its long-lived workers, its judgement)
+// into OUT/runs/batch-<n>, each outcome tallied (fuzz/fuzz_tally.h); the
+// first case of each finding's signature kept as
+// OUT/findings/<signature>/{case.yaml, report.md}, and OUT/fuzz.txt
+// rewritten after every batch. With --reduce, each new signature's case is
+// then reduced by `rayspec reduce` (reduce/reduce_case.h) into
+// OUT/findings/<signature>/reduce/, its reduced.yaml copied beside case.yaml.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "run/run_options.h"
+
+namespace rayspec {
+
+struct FuzzOptions {
+  uint64_t seed = 1;   // the first seed
+  size_t cases = 0;    // --cases: this many (0: by --minutes)
+  double minutes = 0;  // --minutes: batches until this much time has passed
+  size_t batch = 16;   // cases a run of the run loop
+  std::string out = "rayspec-fuzz";
+  size_t reduce = 0;  // --reduce: attempts to reduce each new signature's case (0: none)
+  std::string known;  // --known: known bug classes (fuzz/known_classes.h); "" none
+  RunOptions run;     // the device, the model, --through, --plant-fault
+};
+
+// 0: nothing found but known classes; 1: new findings (OUT/fuzz.txt lists them); 2: bad options
+// or nothing could run; 128 + a signal that stopped it.
+int runFuzz(const FuzzOptions& opt);
+
+}  // namespace rayspec

@@ -1,0 +1,41 @@
+#include "fuzz/generate_case.h"
+
+#include "fuzz/case_generator.h"
+
+namespace rayspec {
+
+const std::vector<std::string>& generatorFeatures() {
+  static const std::vector<std::string> kFeatures = {
+      // the scene
+      "several-blas", "several-geometries", "triangles", "aabbs", "indexed", "non-indexed",
+      "nan-vertex", "nan-box", "non-opaque-geometry", "inactive-instance", "rotation", "mirror",
+      "non-uniform-scale", "instance-mask", "sbt-offset", "instance-flags",
+      // the rays
+      "ray-list", "ray-grid", "ray-interval", "ray-flags", "cull-mask", "sbt-stride-0",
+      // the programs
+      "callables", "any-hit-ignore", "any-hit-terminate", "any-hit-payload", "conditional-report",
+      "two-reports"};
+  return kFeatures;
+}
+
+std::string fuzzCaseName(uint64_t seed) {
+  return "fuzz/seed-" + std::to_string(seed);
+}
+
+GeneratedCase generateCase(uint64_t seed) {
+  CaseGenerator g(seed);
+  g.text() = "# rayspec fuzz, seed " + std::to_string(seed) +
+             ": a generated case (harness/fuzz/generate_case.h)\n"
+             // R-AHIT-DUP: an any-hit that writes may run twice on geometry
+             // without no_duplicate_any_hit; the case is judged on the rest.
+             "rules: [R-BUILTIN, R-AHIT-DUP]\n"
+             "description: generated from seed " +
+             std::to_string(seed) + "\n";
+  g.scene();
+  g.rays();
+  g.pipeline();
+  g.outputs();
+  return {seed, fuzzCaseName(seed), g.text(), g.features()};
+}
+
+}  // namespace rayspec

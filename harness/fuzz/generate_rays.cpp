@@ -1,0 +1,81 @@
+// The rays of a generated case: a list aimed at the scene from around it,
+// or a grid looking down; tmin, tmax, flags, cull masks, miss indices.
+#include "fuzz/case_generator.h"
+
+namespace rayspec {
+
+// At most one flag of each group that the specification lets go together
+// (VUID-RuntimeSpirv-OpTraceRayKHR and the like: one opacity flag, one
+// culling or skipping flag).
+std::string CaseGenerator::rayFlags() {
+  static const std::vector<std::string> kOpacity = {"opaque", "no_opaque", "cull_opaque",
+                                                    "cull_no_opaque"};
+  static const std::vector<std::string> kCulling = {"cull_back_facing", "cull_front_facing",
+                                                    "skip_triangles", "skip_aabbs"};
+  std::string flags;
+  const auto add = [&](const std::string& f) {
+    flags += (flags.empty() ? "" : ", ") + f;
+  };
+  if (chance(0.3)) add(oneOf(kOpacity));
+  if (chance(0.3)) add(oneOf(kCulling));
+  if (chance(0.15)) add("terminate_on_first_hit");
+  if (chance(0.1)) add("skip_closest_hit");
+  if (!flags.empty()) features_.insert("ray-flags");
+  return flags;
+}
+
+// From a point around the scene towards one inside it.
+std::string CaseGenerator::listRay() {
+  const double ox = eighths(-6, 6), oy = eighths(-6, 6), oz = chance(0.5) ? 6.0 : -6.0;
+  const double tx = eighths(-1.5, 1.5), ty = eighths(-1.5, 1.5), tz = eighths(-1, 1);
+  std::string ray = "{origin: [" + num(ox) + ", " + num(oy) + ", " + num(oz) + "], direction: [" +
+                    num(tx - ox) + ", " + num(ty - oy) + ", " + num(tz - oz) + "]";
+  if (chance(0.2)) {
+    const double tmin = eighths(0, 0.5);
+    ray += ", tmin: " + num(tmin) + ", tmax: " + num(tmin + eighths(0.25, 2));
+    features_.insert("ray-interval");
+  }
+  const std::string flags = rayFlags();
+  if (!flags.empty()) ray += ", flags: [" + flags + "]";
+  if (chance(0.2)) {
+    features_.insert("cull-mask");
+    ray += ", cull_mask: " + std::to_string(oneOf<int>({1, 2, 0x7F, 0x80}));
+  }
+  if (miss_count_ > 1 && chance(0.5)) ray += ", miss: " + std::to_string(pick(miss_count_));
+  return ray + "}";
+}
+
+void CaseGenerator::rays() {
+  miss_count_ = 1 + pick(2);
+  out_ += "rays:\n";
+  if (chance(0.6)) {
+    features_.insert("ray-list");
+    out_ += "  list:\n";
+    const size_t count = 2 + pick(6);
+    for (size_t i = 0; i < count; ++i) out_ += "    - " + listRay() + "\n";
+  } else {
+    features_.insert("ray-grid");
+    const uint64_t w = 2 + pick(4), h = 2 + pick(4);
+    const double z = chance(0.5) ? 6.0 : -6.0;
+    out_ += "  grid: {size: [" + std::to_string(w) + ", " + std::to_string(h) + "], origin: [" +
+            num(eighths(-3, -2)) + ", " + num(eighths(-3, -2)) + ", " + num(z) + "], du: [" +
+            num(5.0 / double(w)) + ", 0.0, 0.0], dv: [0.0, " + num(5.0 / double(h)) +
+            ", 0.0], direction: [" + num(eighths(-0.5, 0.5)) + ", " + num(eighths(-0.5, 0.5)) +
+            ", " + num(-z / 6.0) + "]}\n";
+  }
+  const double tmin = chance(0.5) ? 0.001 : eighths(0, 0.5);
+  out_ += "  tmin: " + num(tmin) + "\n  tmax: " + num(chance(0.7) ? 100.0 : eighths(5, 9)) + "\n";
+  const std::string flags = rayFlags();
+  if (!flags.empty()) out_ += "  flags: [" + flags + "]\n";
+  if (chance(0.15)) {
+    features_.insert("cull-mask");
+    out_ += "  cull_mask: " + std::to_string(oneOf<int>({1, 2, 0xFE})) + "\n";
+  }
+  if (chance(0.1)) {
+    features_.insert("sbt-stride-0");
+    sbt_stride_zero_ = true;
+    out_ += "  sbt_stride: 0\n";
+  }
+}
+
+}  // namespace rayspec
