@@ -444,7 +444,7 @@ void addInlinedUses(StageContext& host) {
   }
   // The host's any-hit fields whether or not an any-hit is inlined (its
   // shared functions name them).
-  addPrologueFields(host.plan, Stage::AnyHit, host.uses);
+  addAnyHitSlotFields(host.plan, host.uses);
 }
 
 void emitInlinedStages(const StageContext& host, GlslWriter& out) {

@@ -32,12 +32,16 @@ bool intersectionRuns(const Plan& plan, const HitGroup& h) {
   return h.intersection && plan.intersection;
 }
 
+void addAnyHitSlotFields(const Plan& plan, StageUses& uses) {
+  if (!plan.records) return;
+  for (const char* f : {"any_hit_slots", "any_hit_repeats"})
+    uses.record_fields.insert(recordFieldIndex(f));
+}
+
 void addPrologueFields(const Plan& plan, Stage stage, StageUses& uses) {
   if (!plan.records) return;
   uses.record_fields.insert(recordFieldIndex(stageRunsField(stage)));
-  if (stage == Stage::AnyHit)
-    for (const char* f : {"any_hit_slots", "any_hit_repeats"})
-      uses.record_fields.insert(recordFieldIndex(f));
+  if (stage == Stage::AnyHit) addAnyHitSlotFields(plan, uses);
 }
 
 void emitStagePrologue(const StageContext& ctx, const PrologueHit& hit, GlslWriter& out) {

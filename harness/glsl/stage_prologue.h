@@ -24,6 +24,8 @@ bool intersectionRuns(const Plan& plan, const HitGroup& h);
 // The record fields the prologue of a stage writes, added to `uses` (none
 // where the plan keeps no records).
 void addPrologueFields(const Plan& plan, Stage stage, StageUses& uses);
+// Of those, the any-hit slot fields alone (any_hit_slots, any_hit_repeats).
+void addAnyHitSlotFields(const Plan& plan, StageUses& uses);
 
 // The GLSL of the hit an any-hit runs on: its instance, geometry and primitive.
 struct PrologueHit {
