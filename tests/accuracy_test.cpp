@@ -24,7 +24,7 @@ struct Ray {
 void set(uint32_t* rec, const char* field, uint32_t word) {
   rec[findRecordField(field)->offset] = word;
   const RecordField* f = findRecordField(field);
-  if (!f->automatic) rec[kRecordWrittenMaskWord] |= 1u << recordFieldIndex(field);
+  if (!f->automatic) markWritten(rec, f->index);
 }
 
 Results bundle(const std::vector<Ray>& rays) {

@@ -33,7 +33,7 @@ Results sampleResults() {
   r.records.assign(6 * recordWords(), 0);
   const RecordField* t = findRecordField("hit_t");
   r.records[recordWords() + t->offset] = std::bit_cast<uint32_t>(1.5f);
-  r.records[recordWords() + kRecordWrittenMaskWord] = 1u << recordFieldIndex("hit_t");
+  markWritten(&r.records[recordWords()], t->index);
   Image im{"primitive", "primitive_id", 3, 2, 1, false, {0, 1, 2, 3, 4, 5}};
   r.images.push_back(im);
   Image color{"color", "color", 3, 2, 4, true, BulkWords(24, 0x3f800000u)};

@@ -42,7 +42,7 @@ inline void setUint(Results& r, uint32_t ray, const char* field, uint32_t v) {
   const RecordField* f = findRecordField(field);
   uint32_t* rec = &r.records[ray * recordWords()];
   rec[f->offset] = v;
-  if (!f->automatic) rec[kRecordWrittenMaskWord] |= 1u << recordFieldIndex(field);
+  if (!f->automatic) markWritten(rec, f->index);
 }
 
 inline void setFloat(Results& r, uint32_t ray, const char* field, float v) {

@@ -158,7 +158,7 @@ TEST(Compare, AnAmbiguousRayWithNeitherClosestHitNorMissIsAHit) {
   m.ambiguous.push_back({0, AmbiguityReason::FirstHit, {{true, 0, 0, 0}, {true, 0, 0, 1}}});
   Results d = sampleResults("vulkan");
   uint32_t* rec = &d.records[0];
-  rec[kRecordWrittenMaskWord] = 0;  // closest-hit wrote nothing
+  std::fill(rec, rec + kWrittenMaskWords, 0u);  // closest-hit wrote nothing
   setUint(d, 0, "closest_hit_runs", 0);
   countFromRecords(d);
   const Verdict neither = compareResults(c, samplePlan(c), d, m);

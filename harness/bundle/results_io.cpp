@@ -93,7 +93,7 @@ void appendField(std::string& out, const RecordField& f, const uint32_t* rec) {
 
 // A recordable field is shown only where the ray wrote it.
 bool fieldWritten(const RecordField& f, int index, const uint32_t* rec) {
-  return f.automatic || (rec[kRecordWrittenMaskWord] >> index) & 1u;
+  return f.automatic || written(rec, index);
 }
 
 }  // namespace

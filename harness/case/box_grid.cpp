@@ -30,7 +30,7 @@ void appendInstanceGrid(const Instance& proto, uint32_t nx, uint32_t ny,
       inst.transform = {1, 0, 0, static_cast<float>(origin[0] + spacing[0] * i),
                         0, 1, 0, static_cast<float>(origin[1] + spacing[1] * j),
                         0, 0, 1, static_cast<float>(origin[2])};
-      inst.custom_index = (j * nx + i) & 0xFFFFFFu;
+      inst.custom_index = (j * nx + i) & kInstanceFieldMask;
       out.push_back(inst);
     }
 }

@@ -16,6 +16,7 @@
 #include "base/enum_names.h"
 #include "base/source_loc.h"
 #include "base/vec3.h"
+#include "case/bit_widths.h"
 #include "case/vertex_format.h"
 #include "program/payload_words.h"
 #include "program/program.h"
@@ -94,10 +95,10 @@ struct Blas {
 struct Instance {
   std::optional<uint32_t> blas;  // index into Scene::blases; empty = null reference (inactive)
   Transform transform = kIdentity;
-  uint32_t mask = 0xFF;       // 8 bits
-  uint32_t custom_index = 0;  // 24 bits
-  uint32_t sbt_offset = 0;    // 24 bits
-  uint32_t flags = 0;         // InstanceFlag bits
+  uint32_t mask = kVisibilityMask;  // 8 bits
+  uint32_t custom_index = 0;        // 24 bits
+  uint32_t sbt_offset = 0;          // 24 bits
+  uint32_t flags = 0;               // InstanceFlag bits
   // The top level it belongs to (0 .. kMaxTlases - 1). Every top level holds
   // all instances in this list's order, those of the other levels inactive
   // (a null BLAS reference), so gl_InstanceID is the position in this list
@@ -212,7 +213,7 @@ struct Scene {
 struct Ray {
   Vec3 origin{}, direction{};
   float tmin = 0.0f, tmax = 1e30f;
-  uint32_t flags = 0, cull_mask = 0xFF, sbt_offset = 0, sbt_stride = 1, miss = 0;
+  uint32_t flags = 0, cull_mask = kVisibilityMask, sbt_offset = 0, sbt_stride = 1, miss = 0;
 };
 
 // The command that launches the rays (R-INDIRECT): vkCmdTraceRaysKHR, or

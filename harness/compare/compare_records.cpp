@@ -18,20 +18,10 @@ std::string ruleForField(const std::string& field, const std::vector<std::string
   return findingRule(rulesEvidencedByField(field), case_rules, fieldRule(field));
 }
 
+// The rule column of results/record_field_table.h.
 std::string fieldRule(const std::string& field) {
-  static const std::map<std::string, std::string> rules = {{"hit", "R-MISS-XOR-CHIT"},
-                                                           {"miss_runs", "R-MISS-XOR-CHIT"},
-                                                           {"closest_hit_runs", "R-MISS-XOR-CHIT"},
-                                                           {"callable_runs", "R-CALLABLE"},
-                                                           {"raygen_runs", "R-BUILTIN"},
-                                                           {"hit_kind", "R-HITKIND-TRI"},
-                                                           {"hit_t", "R-PREC"},
-                                                           {"ray_tmax", "R-TMAX-VIEW"},
-                                                           {"ray_tmin", "R-TMAX-VIEW"},
-                                                           {"depth", "R-RECURSION"}};
-  if (isFreeField(field)) return "R-PAYLOAD";
-  const auto it = rules.find(field);
-  return it == rules.end() ? "R-BUILTIN" : it->second;
+  const RecordField* f = findRecordField(field);
+  return f ? f->rule : "R-BUILTIN";
 }
 
 // What checkAmbiguous made of the device's answer: one of the legal ones

@@ -45,11 +45,9 @@ struct FieldTolerance {
 const std::vector<FieldTolerance>& fieldTolerances() {
   static const std::vector<FieldTolerance> table = [] {
     std::vector<FieldTolerance> t;
-    for (const RecordField& f : recordFields()) {
-      const std::string_view name = f.name;
-      t.push_back({toleranceFor(f.name), name == "hit_t" || name == "ray_tmax",
-                   name == "object_ray_origin", name == "hit_position"});
-    }
+    for (const RecordField& f : recordFields())
+      t.push_back({toleranceOf(f.tolerance), f.bound == FieldBound::TBound,
+                   f.bound == FieldBound::OriginBound, f.bound == FieldBound::PositionBound});
     return t;
   }();
   return table;

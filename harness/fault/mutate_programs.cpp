@@ -204,7 +204,7 @@ std::string cullMaskBuiltinDefault(Case& c, ModelOptions&) {
   forEachProgram(c.pipeline, [&](Program& p, Stage) {
     editExpressions(p, [&](Expr& e) {
       if (e.kind != Expr::Kind::Builtin || e.name != "cull_mask") return;
-      e = uintLiteral(0xFF, e.loc);
+      e = uintLiteral(kVisibilityMask, e.loc);
       ++n;
     });
   });

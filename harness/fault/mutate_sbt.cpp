@@ -86,7 +86,7 @@ std::string callableIndexIgnored(Case& c, ModelOptions&) {
 std::string customIndexTruncated(Case& c, ModelOptions&) {
   size_t n = 0;
   for (Instance& inst : c.scene.instances) {
-    n += (inst.custom_index & 0xFFFFFF) > 0xFFFF;
+    n += (inst.custom_index & kInstanceFieldMask) > 0xFFFF;
     inst.custom_index &= 0xFFFF;
   }
   return n ? std::to_string(n) + " instance custom indices keep 16 bits" : std::string();

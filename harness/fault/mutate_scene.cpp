@@ -72,8 +72,8 @@ std::array<Vec3, 3> fattened(const std::array<DVec3, 3>& v) {
 std::string instanceMaskIgnored(Case& c, ModelOptions&) {
   size_t n = 0;
   for (Instance& inst : c.scene.instances) {
-    n += (inst.mask & 0xFF) != 0xFF;
-    inst.mask = 0xFF;
+    n += (inst.mask & kVisibilityMask) != kVisibilityMask;
+    inst.mask = kVisibilityMask;
   }
   return describeCount(n, "instance masks set to 0xFF");
 }
@@ -191,7 +191,7 @@ size_t hideLastActivePrimitives(Geometry& g) {
 std::string inactiveHidesLastActive(Case& c, ModelOptions&) {
   std::vector<Instance>& inst = c.scene.instances;
   size_t n = hideLastActive(
-      inst.size(), [&](size_t i) { return !inst[i].blas || (inst[i].mask & 0xFFu) == 0; },
+      inst.size(), [&](size_t i) { return !inst[i].blas || (inst[i].mask & kVisibilityMask) == 0; },
       [&](size_t i) { inst[i].blas.reset(); });
   for (Blas& b : c.scene.blases)
     for (Geometry& g : b.geometries) n += hideLastActivePrimitives(g);

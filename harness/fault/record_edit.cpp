@@ -16,7 +16,7 @@ bool RecordView::written(uint32_t ray, const std::string& field) const {
   const RecordField* f = findRecordField(field);
   if (!f) return false;
   if (f->automatic) return true;
-  return (r.records[ray * recordWords() + kRecordWrittenMaskWord] >> recordFieldIndex(field)) & 1u;
+  return rayspec::written(&r.records[ray * recordWords()], recordFieldIndex(field));
 }
 
 uint32_t RecordView::get(uint32_t ray, const std::string& field, uint32_t word) const {
@@ -31,7 +31,7 @@ void RecordEdit::set(uint32_t ray, const std::string& field, uint32_t value, uin
   const RecordField* f = findRecordField(field);
   uint32_t* rec = &w.records[ray * recordWords()];
   rec[f->offset + word] = value;
-  if (!f->automatic) rec[kRecordWrittenMaskWord] |= 1u << recordFieldIndex(field);
+  if (!f->automatic) markWritten(rec, f->index);
   for (Image& im : w.images) {
     if (im.field != field || ray >= static_cast<size_t>(im.width) * im.height ||
         word >= im.channels)

@@ -10,8 +10,10 @@
 #include "glsl/emit_stage.h"
 #include "glsl/emit_stmt.h"
 #include "glsl/emit_trace.h"
+#include "glsl/glsl_literal.h"
 #include "glsl/inlined_functions.h"
 #include "glsl/inlined_levels.h"
+#include "glsl/stage_prologue.h"
 #include "program/builtins.h"
 #include "program/walk_program.h"
 #include "results/record_layout.h"
@@ -54,14 +56,6 @@ std::string candidate(const char* name) {
   return rayQuerySpelling(*findBuiltin(name), false);
 }
 
-bool anyHitRuns(const StageContext& raygen, const HitGroup& h) {
-  return h.any_hit && raygen.plan.any_hit;
-}
-
-bool intersectionRuns(const StageContext& raygen, const HitGroup& h) {
-  return h.intersection && raygen.plan.intersection;
-}
-
 StageContext inlinedContext(const StageContext& host, Stage stage, uint32_t index,
                             const Program& program, uint32_t words, uint32_t level) {
   StageContext ctx{host.c, host.plan, stage, Pipeline::shaderName(stage, index),
@@ -86,13 +80,8 @@ bool invokes(const Program& program) {
 void inlinedBody(const StageContext& ctx, const Program& program, GlslWriter& out) {
   if (ctx.stage == Stage::AnyHit && invokes(program))
     out.line("uint rs_ah_verdict = kRsAccept;  // an invoked function's ignore or terminate");
-  if (ctx.plan.records)
-    out.line("rs_bump_runs(" + fieldOffsetMacro(stageRunsField(ctx.stage)) + ");");
-  if (ctx.plan.records && ctx.stage == Stage::AnyHit)
-    out.line("rs_mark_any_hit(" + fieldOffsetMacro("any_hit_slots") + ", " +
-             fieldOffsetMacro("any_hit_repeats") + ", (" + candidate("instance_id") + " * " +
-             str(kAnyHitSlotInstanceFactor) + "u + " + candidate("geometry_index") + " * " +
-             str(kAnyHitSlotGeometryFactor) + "u + " + candidate("primitive_id") + ") & 31u);");
+  emitStagePrologue(
+      ctx, {candidate("instance_id"), candidate("geometry_index"), candidate("primitive_id")}, out);
   if (ctx.uses.reads_child || ctx.uses.trace) {
     out.line(payloadTypeName(ctx.c.pipeline.maxPayloadWords()) + " child;");
     emitPayloadStart(ctx, out);
@@ -176,9 +165,10 @@ void recordWord(const std::string& region, const std::string& table, GlslWriter&
 // constant, as the getters want).
 void hitGroupFunction(GlslWriter& out) {
   out.open("uint rs_hit_group(uint instance_offset, uint geometry) {");
-  out.line(
-      "const uint record = (instance_offset & 0xFFFFFFu) + geometry * (rs_q_sbt_stride & "
-      "0xFu) + (rs_q_sbt_offset & 0xFu);");
+  // R-SBT-HIT, with the widths of case/bit_widths.h.
+  out.line("const uint record = (instance_offset & " + glslHexUint(kInstanceFieldMask) +
+           ") + geometry * (rs_q_sbt_stride & " + glslHexUint(kTraceSbtFieldMask) +
+           ") + (rs_q_sbt_offset & " + glslHexUint(kTraceSbtFieldMask) + ");");
   out.line("rs_q_hit_record = record;");
   out.line("return record < kRsHitRecords ? rs_sbt_tables[kRsHitGroups + record] : " +
            str(kSbtNoGroup) + "u;");
@@ -194,7 +184,7 @@ void reportFunction(const StageContext& host, uint32_t g, uint32_t level, GlslWr
            " rs_ah_payload, float rs_t, uint rs_kind, " + attributeType(words) + " rs_attr) {");
   out.line("if (rs_t < rayQueryGetRayTMinEXT(rs_rq) || rs_t > rs_current_tmax()) return false;");
   out.line("uint rs_verdict = kRsAccept;");
-  if (anyHitRuns(host, h))
+  if (anyHitRuns(host.plan, h))
     out.line("if (!rayQueryGetIntersectionCandidateAABBOpaqueEXT(rs_rq)) rs_verdict = " +
              atLevel("rs_any_hit_" + str(g), level) + "(rs_ah_payload, rs_attr, rs_t, rs_kind);");
   out.line("if (rs_verdict == kRsIgnore) return false;");
@@ -222,7 +212,7 @@ void hitGroupFunctions(const StageContext& host, uint32_t g, uint32_t level, Gls
   auto context = [&](Stage stage, const Program& program) {
     return inlinedContext(host, stage, g, program, words, level);
   };
-  if (anyHitRuns(host, h)) {
+  if (anyHitRuns(host.plan, h)) {
     const StageContext ctx = context(Stage::AnyHit, *h.any_hit);
     emitFunctions(*h.any_hit, ctx, out);
     out.open("uint " + atLevel("rs_any_hit_" + str(g), level) + "(" + hit_args);
@@ -230,7 +220,7 @@ void hitGroupFunctions(const StageContext& host, uint32_t g, uint32_t level, Gls
     out.line("return kRsAccept;");
     out.close();
   }
-  if (intersectionRuns(host, h)) {
+  if (intersectionRuns(host.plan, h)) {
     reportFunction(host, g, level, out);
     const StageContext ctx = context(Stage::Intersection, *h.intersection);
     emitFunctions(*h.intersection, ctx, out);
@@ -289,7 +279,7 @@ void candidateLoop(const StageContext& host, uint32_t level, GlslWriter& out) {
       "0xFFu;");
   out.line("uint rs_verdict = kRsAccept;");
   groupSwitch(
-      host, "rs_group", [&](const HitGroup& h) { return anyHitRuns(host, h); },
+      host, "rs_group", [&](const HitGroup& h) { return anyHitRuns(host.plan, h); },
       [&](uint32_t g) {
         const uint32_t words = attributeWords(p, p.hit_groups[g]);
         return "rs_verdict = " + atLevel("rs_any_hit_" + str(g), level) + "(" + payload + ", " +
@@ -301,7 +291,7 @@ void candidateLoop(const StageContext& host, uint32_t level, GlslWriter& out) {
   out.reopen("} else {");
   if (host.uses.scene) candidateBox(out);
   groupSwitch(
-      host, "rs_group", [&](const HitGroup& h) { return intersectionRuns(host, h); },
+      host, "rs_group", [&](const HitGroup& h) { return intersectionRuns(host.plan, h); },
       [&](uint32_t g) {
         return atLevel("rs_intersection_" + str(g), level) + "(" + payload + ");";
       },
@@ -316,7 +306,8 @@ void committedStage(const StageContext& host, uint32_t level, GlslWriter& out) {
   const std::string payload = "rs_trace_payload";
   out.line("const uint rs_committed = rayQueryGetIntersectionTypeEXT(rs_rq, true);");
   out.open("if (rs_committed == gl_RayQueryCommittedIntersectionNoneEXT) {");
-  out.line("rs_q_miss_record = rs_miss & 0xFFFFu;  // R-SBT-MISS: the low 16 bits");
+  out.line("rs_q_miss_record = rs_miss & " + glslHexUint(kTraceMissIndexMask) +
+           ";  // R-SBT-MISS: the low 16 bits");
   out.line(
       "const uint rs_miss_program = rs_q_miss_record < kRsMissRecords ? "
       "rs_sbt_tables[kRsMissGroups + rs_q_miss_record] : " +
@@ -438,7 +429,7 @@ void addInlinedUses(StageContext& host) {
     StageUses& r = host.uses;
     r.counters = r.counters || u.counters;
     r.record_fields.insert(u.record_fields.begin(), u.record_fields.end());
-    if (host.plan.records) r.record_fields.insert(recordFieldIndex(stageRunsField(stage)));
+    addPrologueFields(host.plan, stage, r);
     r.call = r.call || u.call;
     r.call_locations.insert(u.call_locations.begin(), u.call_locations.end());
     r.scene = r.scene || u.scene;
@@ -448,12 +439,12 @@ void addInlinedUses(StageContext& host) {
   for (const Program& m : p.miss) add(Stage::Miss, m);
   for (const HitGroup& h : p.hit_groups) {
     if (h.closest_hit) add(Stage::ClosestHit, *h.closest_hit);
-    if (anyHitRuns(host, h)) add(Stage::AnyHit, *h.any_hit);
-    if (intersectionRuns(host, h)) add(Stage::Intersection, *h.intersection);
+    if (anyHitRuns(host.plan, h)) add(Stage::AnyHit, *h.any_hit);
+    if (intersectionRuns(host.plan, h)) add(Stage::Intersection, *h.intersection);
   }
-  if (host.plan.records)
-    for (const char* f : {"any_hit_slots", "any_hit_repeats"})
-      host.uses.record_fields.insert(recordFieldIndex(f));
+  // The host's any-hit fields whether or not an any-hit is inlined (its
+  // shared functions name them).
+  addAnyHitSlotFields(host.plan, host.uses);
 }
 
 void emitInlinedStages(const StageContext& host, GlslWriter& out) {

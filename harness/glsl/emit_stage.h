@@ -6,9 +6,6 @@
 
 namespace rayspec {
 
-// The record field a stage's every run bumps ("raygen_runs", ...).
-const char* stageRunsField(Stage s);
-
 // incoming_location: the location whose payload type a miss, closest-hit or
 // any-hit receives (Pipeline::miss_payload, HitGroup::payload), or whose
 // callable data type a callable receives (Pipeline::callable_data);

@@ -1,12 +1,13 @@
 #include "glsl/generate_glsl.h"
 
 #include "glsl/emit_stage.h"
+#include "glsl/stage_prologue.h"
 
 namespace rayspec {
 
-// Stages the plan says cannot run are left out: an any-hit when no candidate
-// can be non-opaque (plan.any_hit), an intersection when no AABB is reached
-// (plan.intersection). Everything else present in the case is generated.
+// Stages the plan says cannot run are left out (glsl/stage_prologue.h
+// anyHitRuns, intersectionRuns). Everything else present in the case is
+// generated.
 GeneratedPipeline generateGlsl(const Case& c, const Plan& plan) {
   const Pipeline& p = c.pipeline;
   GeneratedPipeline g;
@@ -29,10 +30,10 @@ GeneratedPipeline generateGlsl(const Case& c, const Plan& plan) {
       group.closest_hit =
           emitStage(c, plan, Stage::ClosestHit, Pipeline::shaderName(Stage::ClosestHit, i),
                     *h.closest_hit, h.payload, words);
-    if (h.any_hit && plan.any_hit)
+    if (anyHitRuns(plan, h))
       group.any_hit = emitStage(c, plan, Stage::AnyHit, Pipeline::shaderName(Stage::AnyHit, i),
                                 *h.any_hit, h.payload, words);
-    if (h.intersection && plan.intersection)
+    if (intersectionRuns(plan, h))
       group.intersection =
           emitStage(c, plan, Stage::Intersection, Pipeline::shaderName(Stage::Intersection, i),
                     *h.intersection, 0, words);

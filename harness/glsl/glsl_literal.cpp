@@ -46,4 +46,10 @@ std::string glslUint(uint32_t u) {
   return std::to_string(u) + "u";
 }
 
+std::string glslHexUint(uint32_t u) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "0x%Xu", u);
+  return buf;
+}
+
 }  // namespace rayspec

@@ -28,7 +28,7 @@ class Records {
   }
   const uint32_t* of(uint32_t ray) const { return r_.records.data() + size_t{ray} * words_; }
   bool written(uint32_t ray, const char* field) const {
-    return (of(ray)[kRecordWrittenMaskWord] >> recordFieldIndex(field)) & 1u;
+    return rayspec::written(of(ray), recordFieldIndex(field));
   }
   uint32_t word(uint32_t ray, const char* field) const {
     return of(ray)[findRecordField(field)->offset];
@@ -101,7 +101,7 @@ std::string movedField(const CasePermutation& p, const Records& orig, const Reco
                        uint32_t ray) {
   const uint32_t* a = orig.of(ray);
   const uint32_t* b = perm.of(ray);
-  if (a[kRecordWrittenMaskWord] != b[kRecordWrittenMaskWord]) return "the fields written";
+  if (!sameWrittenMask(a, b)) return "the fields written";
   for (const RecordField& f : recordFields()) {
     const bool written = f.automatic || orig.written(ray, f.name);
     if (!written) continue;

@@ -45,7 +45,7 @@ void LaunchState::record(int idx, const Val& v, ValueType t) {
       rec[f.offset + k] = std::bit_cast<uint32_t>(
           t == ValueType::Uint && k == 0 ? static_cast<float>(v.u) : v.f[k]);
   }
-  rec[kRecordWrittenMaskWord] |= 1u << idx;
+  markWritten(rec, static_cast<uint32_t>(idx));
 }
 
 LaunchState::Saved LaunchState::save() const {

@@ -131,14 +131,15 @@ void LaunchState::hitRecordOutOfRange(uint32_t instance, uint32_t geometry, cons
                 "pipeline.sbt.hit: record " + std::to_string(sbt_.hitIndex(instance, geometry, r)) +
                     ", the hit region has " + std::to_string(sbt_.hitCount()) + " (instance " +
                     std::to_string(instance) + " sbt_offset " +
-                    std::to_string(inst.sbt_offset & 0xFFFFFF) + " + geometry " +
-                    std::to_string(geometry) + " x stride " + std::to_string(r.sbt_stride & 0xF) +
-                    " + sbt_offset " + std::to_string(r.sbt_offset & 0xF) + ")");
+                    std::to_string(inst.sbt_offset & kInstanceFieldMask) + " + geometry " +
+                    std::to_string(geometry) + " x stride " +
+                    std::to_string(r.sbt_stride & kTraceSbtFieldMask) + " + sbt_offset " +
+                    std::to_string(r.sbt_offset & kTraceSbtFieldMask) + ")");
 }
 
 void LaunchState::missRecordOutOfRange(const TraceRay& r) {
   markUndefined(UndefinedReason::MissRecordOutOfRange,
-                "pipeline.sbt.miss: miss index " + std::to_string(r.miss & 0xFFFF) +
+                "pipeline.sbt.miss: miss index " + std::to_string(r.miss & kTraceMissIndexMask) +
                     ", the miss region has " + std::to_string(sbt_.miss().size()));
 }
 

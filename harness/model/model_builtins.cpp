@@ -117,7 +117,7 @@ Val ModelBuiltins::rayBuiltin(const CExpr& e, const StageEnv& env) const {
     case kBiTmax:
       return fromFloat(env.tmax_view);
     case kBiCullMask:  // the low 8 bits only (program/builtin_table.h)
-      return fromUint(r->cull_mask & 0xFFu);
+      return fromUint(r->cull_mask & kVisibilityMask);
     case kBiFlags:
       return fromUint(r->flags);
     case kBiWorldOrigin:

@@ -22,7 +22,7 @@ Val ModelBuiltins::queryHit(int row, const HitView& hv) const {
       return fromUint(hv.instance);
     case 3:  // the instance's SBT record offset (24 bits)
       return fromUint(hv.instance < sh_.c->scene.instances.size()
-                          ? sh_.c->scene.instances[hv.instance].sbt_offset & 0xFFFFFFu
+                          ? sh_.c->scene.instances[hv.instance].sbt_offset & kInstanceFieldMask
                           : 0u);
     case 4:
       return fromUint(hv.geometry);

@@ -54,7 +54,8 @@ uint64_t hitRecordReach(const Case& c, bool non_opaque, uint32_t offset, uint32_
       const Geometry& geom = b.geometries[g];
       if (non_opaque && (geom.kind != Geometry::Kind::Triangles || (geom.flags & kGeometryOpaque)))
         continue;
-      top = std::max<uint64_t>(top, uint64_t{inst.sbt_offset & 0xFFFFFF} + stride * g + offset + 1);
+      top = std::max<uint64_t>(
+          top, uint64_t{inst.sbt_offset & kInstanceFieldMask} + stride * g + offset + 1);
     }
   }
   return top;
@@ -68,12 +69,13 @@ uint64_t hitRecordReach(const Case& c, bool non_opaque, uint32_t offset, uint32_
 bool hitRecordMayBeOutOfRange(const Case& c, bool non_opaque) {
   const size_t region =
       c.pipeline.sbt_hit.empty() ? c.pipeline.hit_groups.size() : c.pipeline.sbt_hit.size();
-  if (hitRecordReach(c, non_opaque, 0xF, 0xF) <= region) return false;
+  if (hitRecordReach(c, non_opaque, kTraceSbtFieldMask, kTraceSbtFieldMask) <= region) return false;
   if (setsSbtArguments(c.pipeline)) return true;
-  uint32_t offset = c.rays.defaults.sbt_offset & 0xF, stride = c.rays.defaults.sbt_stride & 0xF;
+  uint32_t offset = c.rays.defaults.sbt_offset & kTraceSbtFieldMask,
+           stride = c.rays.defaults.sbt_stride & kTraceSbtFieldMask;
   for (const Ray& r : c.rays.rays) {
-    offset = std::max(offset, r.sbt_offset & 0xF);
-    stride = std::max(stride, r.sbt_stride & 0xF);
+    offset = std::max(offset, r.sbt_offset & kTraceSbtFieldMask);
+    stride = std::max(stride, r.sbt_stride & kTraceSbtFieldMask);
   }
   return hitRecordReach(c, non_opaque, offset, stride) > region;
 }

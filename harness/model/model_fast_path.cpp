@@ -79,14 +79,14 @@ inline bool validLaunchRay(const Ray& ray) {
   return finiteBits(ray.origin[0]) & finiteBits(ray.origin[1]) & finiteBits(ray.origin[2]) &
          finiteBits(ray.direction[0]) & finiteBits(ray.direction[1]) &
          finiteBits(ray.direction[2]) & (ray.tmin >= 0.0f) & (ray.tmin <= ray.tmax) &
-         ((ray.cull_mask & 0xFF) != 0);
+         ((ray.cull_mask & kVisibilityMask) != 0);
 }
 
 // The miss shader a launch ray's miss index selects, when all it does is
 // count; null otherwise.
 const CountsOnly* ModelTracer::countedMiss(const TraceRay& r0) const {
   const CPipeline& programs = *sh_.programs;
-  const uint32_t mi = r0.miss & 0xFFFF;
+  const uint32_t mi = r0.miss & kTraceMissIndexMask;
   if (mi < sbt_.miss().size() && sbt_.miss()[mi].group &&
       *sbt_.miss()[mi].group < programs.miss.size() &&
       programs.miss_counts[*sbt_.miss()[mi].group].yes)

@@ -22,8 +22,9 @@ ModelSbt::ModelSbt(const Case& c) : c_(c) {
 
 uint64_t ModelSbt::hitIndex(uint32_t instance, uint32_t geometry, const TraceRay& r) const {
   const Instance& inst = c_.scene.instances[instance];
-  return static_cast<uint64_t>(inst.sbt_offset & 0xFFFFFF) +
-         static_cast<uint64_t>(geometry) * (r.sbt_stride & 0xF) + (r.sbt_offset & 0xF);
+  return static_cast<uint64_t>(inst.sbt_offset & kInstanceFieldMask) +
+         static_cast<uint64_t>(geometry) * (r.sbt_stride & kTraceSbtFieldMask) +
+         (r.sbt_offset & kTraceSbtFieldMask);
 }
 
 }  // namespace rayspec

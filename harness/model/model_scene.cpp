@@ -493,7 +493,7 @@ void commitInstances(ModelScene& s, const Case& c, RTCSceneFlags scene_flags) {
     RTCGeometry geom = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_INSTANCE);
     rtcSetGeometryInstancedScene(geom, s.blases[mi.blas].scene);
     rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, inst.transform.data());
-    rtcSetGeometryMask(geom, inst.mask & 0xFF);
+    rtcSetGeometryMask(geom, inst.mask & kVisibilityMask);
     rtcCommitGeometry(geom);
     rtcAttachGeometryByID(s.tops[inst.tlas], geom, static_cast<unsigned>(ii));
     rtcReleaseGeometry(geom);

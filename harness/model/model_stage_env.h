@@ -31,7 +31,7 @@ struct CallData {
 struct TraceRay {
   Vec3 origin{}, direction{};
   float tmin = 0, tmax = 0;
-  uint32_t flags = 0, cull_mask = 0xFF, sbt_offset = 0, sbt_stride = 1, miss = 0;
+  uint32_t flags = 0, cull_mask = kVisibilityMask, sbt_offset = 0, sbt_stride = 1, miss = 0;
   uint32_t tlas = 0;  // the top level traversed
 };
 

@@ -91,7 +91,7 @@ HitView viewOf(const ModelScene& s, const Case& c, const TraceRay& ray, uint32_t
   HitView hv;
   const ModelInstance& mi = s.instances[instance];
   hv.instance = instance;
-  hv.custom_index = c.scene.instances[instance].custom_index & 0xFFFFFF;
+  hv.custom_index = c.scene.instances[instance].custom_index & kInstanceFieldMask;
   hv.geometry = geometry;
   hv.primitive = primitive;
   if (object_ray) {
@@ -116,7 +116,7 @@ bool validRay(const TraceRay& r, const RTCRayHit& rh) {
   for (int k = 0; k < 3; ++k)
     if (!std::isfinite(r.origin[k]) || !std::isfinite(r.direction[k])) return false;
   if (!(r.tmin >= 0.0f) || !(r.tmin <= r.tmax)) return false;
-  return (rh.ray.mask & 0xFF) != 0;
+  return (rh.ray.mask & kVisibilityMask) != 0;
 }
 
 // R-ORDER-UNSPEC: the order the model decides candidates in (near to far,
@@ -348,7 +348,8 @@ Committed ModelTracer::traverse(const TraceRay& r, uint32_t flags, uint32_t dept
       for (const Candidate& k : st_.ambiguous.back().candidates) {
         if (k.hit && !(tr.flags & kRaySkipClosestHit) && !sbt_.hit(k.instance, k.geometry, r))
           st_.hitRecordOutOfRange(k.instance, k.geometry, r);
-        if (!k.hit && (r.miss & 0xFFFF) >= sbt_.miss().size()) st_.missRecordOutOfRange(r);
+        if (!k.hit && (r.miss & kTraceMissIndexMask) >= sbt_.miss().size())
+          st_.missRecordOutOfRange(r);
       }
   }
   return tr.best;
@@ -399,7 +400,7 @@ void ModelTracer::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const
       if (grp && grp->closest_hit) clobberCaller(r, best);
     }
   } else {
-    const uint32_t mi = r.miss & 0xFFFF;
+    const uint32_t mi = r.miss & kTraceMissIndexMask;
     // R-UB: beyond the miss region; the model runs no miss shader.
     if (mi >= sbt_.miss().size() && !st_.ray_undefined) st_.missRecordOutOfRange(r);
     if (mi < sbt_.miss().size()) {

@@ -140,7 +140,8 @@ inline RTCRayHit embreeRay(const AnyRay& r, uint32_t flags) {
   rh.ray.dir_y = r.direction[1];
   rh.ray.dir_z = r.direction[2];
   rh.ray.time = 0;
-  rh.ray.mask = (r.cull_mask & 0xFF) | ((flags & kRaySkipTriangles) ? 0u : kMaskTriangles) |
+  rh.ray.mask = (r.cull_mask & kVisibilityMask) |
+                ((flags & kRaySkipTriangles) ? 0u : kMaskTriangles) |
                 ((flags & kRaySkipAabbs) ? 0u : kMaskAabbs);
   rh.ray.id = 0;
   rh.ray.flags = 0;

@@ -91,7 +91,7 @@ bool recordsDiffer(const Results& d, uint32_t a, uint32_t b) {
   const uint32_t words = recordWords();
   const uint32_t* ra = &d.records[a * words];
   const uint32_t* rb = &d.records[b * words];
-  if (ra[kRecordWrittenMaskWord] != rb[kRecordWrittenMaskWord]) return true;
+  if (!sameWrittenMask(ra, rb)) return true;
   for (const RecordField& f : recordFields()) {
     if (!perturbedAsField(f)) continue;
     const Tolerance tol = toleranceFor(f.name);

@@ -85,16 +85,16 @@ std::string hitOutOfRange(const Case& c, const TraceValues& v) {
   for (size_t i = 0; i < c.scene.instances.size(); ++i) {
     const Instance& inst = c.scene.instances[i];
     if (!inst.blas || *inst.blas >= c.scene.blases.size()) continue;  // inactive
-    if ((inst.mask & *v.cull_mask & 0xFF) == 0) continue;             // R-MASK: never reached
+    if ((inst.mask & *v.cull_mask & kVisibilityMask) == 0) continue;  // R-MASK: never reached
     const Blas& blas = c.scene.blases[*inst.blas];
     for (size_t g = 0; g < blas.geometries.size(); ++g) {
       const Geometry& geom = blas.geometries[g];
       if (geom.primitiveCount() == 0) continue;
       if (geom.kind == Geometry::Kind::Triangles ? skip_triangles : skip_aabbs) continue;
       // R-SBT-HIT: only the low 4 bits of the trace's offset and stride count.
-      const uint64_t index = (inst.sbt_offset & 0xFFFFFF) +
-                             static_cast<uint64_t>(g) * (*v.sbt_stride & 0xF) +
-                             (*v.sbt_offset & 0xF);
+      const uint64_t index = (inst.sbt_offset & kInstanceFieldMask) +
+                             static_cast<uint64_t>(g) * (*v.sbt_stride & kTraceSbtFieldMask) +
+                             (*v.sbt_offset & kTraceSbtFieldMask);
       if (index < p.sbt_hit.size()) continue;
       std::ostringstream s;
       s << "hit record " << index << " is out of range: scene.instances[" << i << "] (blas "

@@ -233,8 +233,8 @@ void parseAim(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& rays
     else
       ok = false;
   };
-  uint_field("instance", 0xFFFFFF, spec.instance);
-  uint_field("geometry", 0xFFFFFF, spec.geometry);
+  uint_field("instance", kInstanceFieldMask, spec.instance);
+  uint_field("geometry", kInstanceFieldMask, spec.geometry);
   uint_field("edge_points", 64, spec.edge_points);
   if (YamlReader::has(n, "at") && !featureList(r, get("at"), field + ".at", spec)) ok = false;
   if (auto o = r.numbers<3>(get("offset"), field + ".offset"))

@@ -223,11 +223,11 @@ void parseInstance(YamlReader& r, const YAML::Node& n, const std::string& field,
     }
   }
   if (auto m = YamlReader::get(n, "mask"); m.IsDefined())
-    if (auto v = r.uint(m, field + ".mask", 0xFF)) inst.mask = *v;
+    if (auto v = r.uint(m, field + ".mask", kVisibilityMask)) inst.mask = *v;
   if (auto m = YamlReader::get(n, "custom_index"); m.IsDefined())
-    if (auto v = r.uint(m, field + ".custom_index", 0xFFFFFF)) inst.custom_index = *v;
+    if (auto v = r.uint(m, field + ".custom_index", kInstanceFieldMask)) inst.custom_index = *v;
   if (auto m = YamlReader::get(n, "sbt_offset"); m.IsDefined())
-    if (auto v = r.uint(m, field + ".sbt_offset", 0xFFFFFF)) inst.sbt_offset = *v;
+    if (auto v = r.uint(m, field + ".sbt_offset", kInstanceFieldMask)) inst.sbt_offset = *v;
   if (auto f = YamlReader::get(n, "flags"); f.IsDefined())
     if (auto bits = r.flags(f, field + ".flags", instanceFlagNames())) inst.flags = *bits;
   if (auto t = YamlReader::get(n, "tlas"); t.IsDefined())

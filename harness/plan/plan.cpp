@@ -48,7 +48,7 @@ struct TraceFlags {
   void add(uint32_t flags, uint32_t mask) {
     any |= flags;
     all &= flags;
-    if ((mask & 0xFF) != 0xFF) mask_bits_clear = true;
+    if ((mask & kVisibilityMask) != kVisibilityMask) mask_bits_clear = true;
   }
 };
 
@@ -93,7 +93,7 @@ bool planGeometry(const Scene& scene, Plan& plan) {
     }
     if (inst.flags & (kInstanceFacingCullDisable | kInstanceFlipFacing)) plan.facing_culls = true;
     if (inst.flags & (kInstanceForceOpaque | kInstanceForceNoOpaque)) plan.opacity_flags = true;
-    if ((inst.mask & 0xFF) != 0xFF) plan.masks = true;
+    if ((inst.mask & kVisibilityMask) != kVisibilityMask) plan.masks = true;
   }
   return non_opaque_geometry;
 }

@@ -1,70 +1,53 @@
 #include "results/record_layout.h"
 
-#include <set>
+#include <algorithm>
 #include <string_view>
 #include <unordered_map>
 
 namespace rayspec {
 namespace {
 
+struct Row {
+  const char* name;
+  FieldType type;
+  uint32_t words;
+  RecordWritten written;
+  FieldKind kind;
+  const char* rule;
+  ToleranceKind tolerance;
+  FieldBound bound;
+  const char* meaning;
+};
+
+#define RAYSPEC_RECORD_ROW(name, type, words, written, kind, rule, tolerance, bound, meaning) \
+  Row{#name,                                                                                  \
+      FieldType::type,                                                                        \
+      words,                                                                                  \
+      RecordWritten::written,                                                                 \
+      FieldKind::kind,                                                                        \
+      rule,                                                                                   \
+      ToleranceKind::tolerance,                                                               \
+      FieldBound::bound,                                                                      \
+      meaning},
+constexpr Row kRows[] = {RAYSPEC_RECORD_FIELDS(RAYSPEC_RECORD_ROW)};
+#undef RAYSPEC_RECORD_ROW
+
+// A field's index is its bit in the written mask: the Bit rows come first.
+constexpr bool bitRowsFirst() {
+  for (uint32_t i = 0; i < kWrittenFieldCount; ++i)
+    if (kRows[i].written != RecordWritten::Bit) return false;
+  return true;
+}
+static_assert(bitRowsFirst(), "record_field_table.h: every Bit row comes before the Auto rows");
+
 std::vector<RecordField> buildFields() {
-  struct Decl {
-    const char* name;
-    FieldType type;
-    uint32_t words;
-    bool automatic;
-  };
-  const Decl decls[] = {
-      {"hit", FieldType::Uint, 1, false},
-      {"instance_id", FieldType::Uint, 1, false},
-      {"instance_custom_index", FieldType::Uint, 1, false},
-      {"geometry_index", FieldType::Uint, 1, false},
-      {"primitive_id", FieldType::Uint, 1, false},
-      {"hit_kind", FieldType::Uint, 1, false},
-      {"hit_t", FieldType::Float, 1, false},
-      {"barycentrics", FieldType::Float, 2, false},
-      {"ray_tmin", FieldType::Float, 1, false},
-      {"ray_tmax", FieldType::Float, 1, false},
-      {"incoming_ray_flags", FieldType::Uint, 1, false},
-      {"world_ray_origin", FieldType::Float, 3, false},
-      {"world_ray_direction", FieldType::Float, 3, false},
-      {"object_ray_origin", FieldType::Float, 3, false},
-      {"object_ray_direction", FieldType::Float, 3, false},
-      {"hit_position", FieldType::Float, 3, false},
-      {"depth", FieldType::Uint, 1, false},
-      {"value", FieldType::Uint, 1, false},
-      {"color", FieldType::Float, 4, false},
-      {"color2", FieldType::Float, 4, false},
-      {"value1", FieldType::Uint, 1, false},
-      {"value2", FieldType::Uint, 1, false},
-      {"value3", FieldType::Uint, 1, false},
-      {"value4", FieldType::Uint, 1, false},
-      {"value5", FieldType::Uint, 1, false},
-      {"value6", FieldType::Uint, 1, false},
-      {"value7", FieldType::Uint, 1, false},
-      // Free fields beyond value7 and color2 (issue 43: loops folded their
-      // results into single numbers). The written mask is one word: every
-      // field a case writes has an index below 32 (record_layout.h).
-      {"value8", FieldType::Uint, 1, false},
-      {"value9", FieldType::Uint, 1, false},
-      {"value10", FieldType::Uint, 1, false},
-      {"value11", FieldType::Uint, 1, false},
-      {"color3", FieldType::Float, 4, false},
-      {"raygen_runs", FieldType::Uint, 1, true},
-      {"miss_runs", FieldType::Uint, 1, true},
-      {"closest_hit_runs", FieldType::Uint, 1, true},
-      {"any_hit_runs", FieldType::Uint, 1, true},
-      {"intersection_runs", FieldType::Uint, 1, true},
-      {"callable_runs", FieldType::Uint, 1, true},
-      {"any_hit_slots", FieldType::Uint, 1, true},
-      {"any_hit_repeats", FieldType::Uint, 1, true},
-  };
   std::vector<RecordField> fields;
-  uint32_t offset = kRecordWrittenMaskWord + 1;
-  for (const Decl& d : decls) {
-    fields.push_back(
-        {d.name, d.type, d.words, offset, d.automatic, static_cast<uint32_t>(fields.size())});
-    offset += d.words;
+  uint32_t offset = kRecordWrittenMaskWord + kWrittenMaskWords;
+  for (const Row& r : kRows) {
+    fields.push_back({r.name, r.type, r.words, offset, r.written == RecordWritten::Auto,
+                      static_cast<uint32_t>(fields.size()), r.kind, r.rule, r.tolerance, r.bound,
+                      r.meaning});
+    offset += r.words;
   }
   return fields;
 }
@@ -93,9 +76,7 @@ int recordFieldIndex(std::string_view name) {
 }
 
 bool traversalDependent(const RecordField& f) {
-  const std::string_view n = f.name;
-  return n == "any_hit_runs" || n == "intersection_runs" || n == "any_hit_slots" ||
-         n == "any_hit_repeats";
+  return f.kind == FieldKind::Traversal;
 }
 
 uint32_t recordWords() {
@@ -104,20 +85,28 @@ uint32_t recordWords() {
 }
 
 bool written(const uint32_t* rec, int field_index) {
-  return field_index >= 0 && field_index < 32 &&
-         ((rec[kRecordWrittenMaskWord] >> field_index) & 1u);
+  if (field_index < 0 || static_cast<uint32_t>(field_index) >= kWrittenFieldCount) return false;
+  const auto i = static_cast<uint32_t>(field_index);
+  return (rec[kRecordWrittenMaskWord + i / 32] >> (i % 32)) & 1u;
+}
+
+void markWritten(uint32_t* rec, uint32_t field_index) {
+  rec[kRecordWrittenMaskWord + field_index / 32] |= 1u << (field_index % 32);
+}
+
+bool sameWrittenMask(const uint32_t* a, const uint32_t* b) {
+  return std::equal(a + kRecordWrittenMaskWord, a + kRecordWrittenMaskWord + kWrittenMaskWords,
+                    b + kRecordWrittenMaskWord);
 }
 
 bool isFreeField(std::string_view name) {
-  static const std::set<std::string_view> kFree = {
-      "value",  "value1", "value2",  "value3",  "value4", "value5", "value6", "value7",
-      "value8", "value9", "value10", "value11", "color",  "color2", "color3"};
-  return kFree.count(name) > 0;
+  const RecordField* f = findRecordField(name);
+  return f && f->kind == FieldKind::Free;
 }
 
 bool isHitIdentityField(std::string_view name) {
-  return name == "primitive_id" || name == "instance_id" || name == "geometry_index" ||
-         name == "hit_t";
+  const RecordField* f = findRecordField(name);
+  return f && f->kind == FieldKind::HitIdentity;
 }
 
 }  // namespace rayspec

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "base/error_bounds.h"
+#include "results/record_layout.h"
 
 namespace rayspec {
 
@@ -14,10 +15,25 @@ bool Tolerance::matches(float device, float model) const {
   return diff <= abs + rel * std::max(std::fabs(static_cast<double>(model)), 1.0);
 }
 
-Tolerance toleranceFor(std::string_view field) {
-  if (field == "barycentrics") return {kBarycentricTolerance, 0.0};
-  if (field == "color" || field == "color2") return {kColorTolerance, kColorTolerance};
+Tolerance toleranceOf(ToleranceKind t) {
+  switch (t) {
+    case ToleranceKind::Exact:
+      return {0.0, 0.0};
+    case ToleranceKind::Field:
+      return {kFieldTolerance, kFieldTolerance};
+    case ToleranceKind::Barycentric:
+      return {kBarycentricTolerance, 0.0};
+    case ToleranceKind::Color:
+      return {kColorTolerance, kColorTolerance};
+  }
   return {kFieldTolerance, kFieldTolerance};
+}
+
+// A name no row has (an image of no field): the field tolerance, as before
+// the table.
+Tolerance toleranceFor(std::string_view field) {
+  const RecordField* f = findRecordField(field);
+  return f ? toleranceOf(f->tolerance) : Tolerance{kFieldTolerance, kFieldTolerance};
 }
 
 }  // namespace rayspec

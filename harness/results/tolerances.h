@@ -1,6 +1,7 @@
 // Documented tolerances for float fields (R-PREC: the specification promises
 // no numeric bound, so the suite states its own). A device value d matches the
-// model value m when |d - m| <= abs + rel * max(|m|, 1).
+// model value m when |d - m| <= abs + rel * max(|m|, 1). Each field's is the
+// tolerance column of results/record_field_table.h.
 //   hit_t, ray_tmin, ray_tmax       abs 1e-5, rel 1e-5
 //   barycentrics                    abs 1e-4 (float32 edge functions on a
 //                                   unit-size triangle)
@@ -19,6 +20,8 @@ struct Tolerance {
   bool matches(float device, float model) const;
 };
 
-Tolerance toleranceFor(std::string_view field);
+enum class ToleranceKind;
+Tolerance toleranceOf(ToleranceKind t);
+Tolerance toleranceFor(std::string_view field);  // the field's row's, by name
 
 }  // namespace rayspec

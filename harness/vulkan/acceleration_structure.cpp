@@ -228,10 +228,10 @@ std::vector<VkAccelerationStructureInstanceKHR> tlasInstances(const Scene& scene
   for (const Instance& inst : scene.instances) {
     VkAccelerationStructureInstanceKHR vi{};
     std::memcpy(&vi.transform, inst.transform.data(), sizeof(vi.transform));
-    vi.instanceCustomIndex = inst.custom_index & 0xFFFFFF;
-    vi.mask = inst.mask & 0xFF;
-    vi.instanceShaderBindingTableRecordOffset = inst.sbt_offset & 0xFFFFFF;
-    vi.flags = inst.flags & 0xFF;
+    vi.instanceCustomIndex = inst.custom_index & kInstanceFieldMask;
+    vi.mask = inst.mask & kVisibilityMask;
+    vi.instanceShaderBindingTableRecordOffset = inst.sbt_offset & kInstanceFieldMask;
+    vi.flags = inst.flags & kInstanceFlagsMask;
     vi.accelerationStructureReference =
         inst.tlas == level && inst.blas && *inst.blas < builds.size() ? builds[*inst.blas].address
                                                                       : 0;
