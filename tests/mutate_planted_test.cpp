@@ -12,12 +12,6 @@
 namespace rayspec {
 namespace {
 
-const MutantOutcome* findPlanted(const CaseMutation& m, const std::string& fault) {
-  for (const MutantOutcome& o : m.mutants)
-    if (o.name == "planted:" + fault) return &o;
-  return nullptr;
-}
-
 // Every order of the three triangles and the box commits the closest: the
 // faults that commit beyond it or drop the second confirm are killed.
 TEST(MutatePlanted, QueryFaultsKilledOnConfirmEveryCandidate) {

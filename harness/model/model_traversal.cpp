@@ -130,6 +130,9 @@ void sortCandidates(std::vector<ModelCandidate>& cands, const ModelFaultSeam& se
                      rb = seam.permutedRank(b.instance, b.geometry, b.primitive);
       return ra != rb ? ra < rb : key_less;
     }
+    const bool a_last = seam.decidedLast(a.instance, a.geometry, a.primitive),
+               b_last = seam.decidedLast(b.instance, b.geometry, b.primitive);
+    if (a_last != b_last) return b_last;  // a legal device's one candidate last
     return seam.decidedBefore(a.t, b.t, key_less);
   });
 }
