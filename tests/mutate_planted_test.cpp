@@ -12,12 +12,6 @@
 namespace rayspec {
 namespace {
 
-const MutantOutcome* findPlanted(const CaseMutation& m, const std::string& fault) {
-  for (const MutantOutcome& o : m.mutants)
-    if (o.name == "planted:" + fault) return &o;
-  return nullptr;
-}
-
 // Every order of the three triangles and the box commits the closest: the
 // faults that commit beyond it or drop the second confirm are killed.
 TEST(MutatePlanted, QueryFaultsKilledOnConfirmEveryCandidate) {
@@ -103,6 +97,20 @@ TEST(MutatePlanted, ASurvivorALegalDeviceMatchesIsLegal) {
   ASSERT_TRUE(o->mutation.applied) << o->mutation.what;
   EXPECT_FALSE(o->killed) << o->headline;
   EXPECT_EQ(o->legal_reason.rfind("R-ORDER-UNSPEC", 0), 0u) << o->legal_reason;
+}
+
+// Every ray misses whether or not its boxes run their intersection
+// programs; the color every any-hit sets shows a device that took them for
+// triangles (and ran none): the fault is killed, not an equivalent.
+TEST(MutatePlanted, CandidateTypeSwappedKilledWhereBoxesAllMiss) {
+  const CaseMutation m = mutateSuiteCase("anyhit/accumulate/aabbs-allowed", FeaturePath::RayQuery);
+  ASSERT_TRUE(m.judged) << m.not_judged;
+  const MutantOutcome* o = findPlanted(m, "query-candidate-type-swapped");
+  ASSERT_NE(o, nullptr);
+  ASSERT_TRUE(o->mutation.applied) << o->mutation.what;
+  EXPECT_TRUE(o->killed) << o->headline;
+  for (const LegalDevice& d : m.legal_devices)
+    EXPECT_FALSE(d.false_alarm) << d.name << ": " << d.headline;
 }
 
 }  // namespace

@@ -17,8 +17,9 @@
 
 namespace rayspec {
 
-inline CaseMutation mutateSuiteCase(const std::string& name,
-                                    std::optional<FeaturePath> through = std::nullopt) {
+// A library case, as a run --through `through` sends it (when given).
+inline Case suiteCaseThrough(const std::string& name,
+                             std::optional<FeaturePath> through = std::nullopt) {
   const std::vector<CaseFile> files = findCases(kSuiteCases, name);
   EXPECT_EQ(files.size(), 1u) << name;
   const ParseResult parsed = loadSuiteCase(files.at(0));
@@ -29,11 +30,24 @@ inline CaseMutation mutateSuiteCase(const std::string& name,
     EXPECT_TRUE(sent) << name << ": " << (sent ? "" : sent.error().format());
     if (sent) c = std::move(*sent);
   }
+  return c;
+}
+
+inline CaseMutation mutateSuiteCase(const std::string& name,
+                                    std::optional<FeaturePath> through = std::nullopt) {
+  const Case c = suiteCaseThrough(name, through);
   const Plan plan = derivePlan(c);
   const Results model = runOnModel(c, plan, {});
   Results device = model;
   device.backend = "vulkan";
   return mutateCase(c, plan, device, model);
+}
+
+// The outcome of planted fault `fault` in a case's mutation; none if not judged.
+inline const MutantOutcome* findPlanted(const CaseMutation& m, const std::string& fault) {
+  for (const MutantOutcome& o : m.mutants)
+    if (o.name == "planted:" + fault) return &o;
+  return nullptr;
 }
 
 }  // namespace rayspec

@@ -67,6 +67,19 @@ Results passBetweenEdgesDevice(const Case& c, const Plan& plan, unsigned threads
 // for every box grown by its own extent on each side.
 Results aabbNeighboursDevice(const Case& c, const Plan& plan, unsigned threads);
 
+// The model's exact tier as devices that decide one candidate after every
+// other, the rest near to far (R-ORDER-UNSPEC: a device may meet last the
+// candidate whose any-hit or query block terminates, and run every other's
+// first): one per key (instance, geometry, primitive) of a scene of at most
+// kMaxLastCandidates keys, none for a larger one. Each as perfectDevice gives
+// it, named "last-<instance>.<geometry>.<primitive>".
+constexpr size_t kMaxLastCandidates = 8;
+struct NamedDevice {
+  std::string name;
+  Results device;
+};
+std::vector<NamedDevice> lastCandidateDevices(const Case& c, const Plan& plan, unsigned threads);
+
 // crash: raises SIGSEGV; crash-once: the same, but only the first time the
 // case runs into the run folder run_dir (a flaky driver: the re-run passes);
 // crash-if-reused: the same, but only in a process that raised it for a case

@@ -119,33 +119,75 @@ void ModelTracer::shadeLaunchRay(uint32_t i, const Ray& ray, uint32_t flags, con
   shade(r, flags, 1, h, payload);
 }
 
+// The launch ray's closest hit as Embree finds it (embreeRay + validRay +
+// embreeClosestHit for the launch ray itself); R-UB: a ray with undefined
+// behaviour diagnosed, and not traced (a miss) or traced with its flags.
+RTCRayHit ModelTracer::launchClosestHit(uint32_t i, const Ray& ray, uint32_t flags, RTCScene top,
+                                        RTCIntersectContext& ctx) {
+  RTCRayHit rh = embreeRay(ray, flags);
+  const bool valid = validLaunchRay(ray);
+  st_.ray_undefined = false;
+  if (!valid || (ray.flags & kExclusiveRayFlags)) {
+    st_.index = i;
+    st_.checkRayParameters(launchRay(ray), &sh_.programs->raygen[0], 1);
+  }
+  if (valid) {
+    rh.ray.tnear = sh_.scene->tier == ModelTier::Robust ? nextUp(ray.tmin) : ray.tmin;
+    rh.ray.tfar = nextDown(ray.tmax);
+    rtcIntersect1(top, &ctx, &rh);
+  }
+  return rh;
+}
+
+void ModelTracer::flushCounts(const CountsOnly* k, uint64_t& n) {
+  if (k && n)
+    for (int c : k->counters) st_.counters[c] += n;
+  n = 0;
+}
+
+bool ModelTracer::countedAlone(const RTCRayHit& rh, bool hit, const TraceRay& r0, LaunchCounts& q,
+                               uint32_t* rec) {
+  if (!hit) {
+    if (!q.miss_counts) return false;
+    ++q.miss_pending;
+    if (rec) rec[q.runs_miss] += 1;
+    return true;
+  }
+  if (rh.hit.instID[0] != q.last_instance || rh.hit.geomID != q.last_geometry) {
+    q.last_instance = rh.hit.instID[0];
+    q.last_geometry = rh.hit.geomID;
+    const CHitGroup* grp = groupOf(*sh_.programs, sbt_.hit(q.last_instance, q.last_geometry, r0));
+    const CountsOnly* k =
+        grp && grp->closest_hit && grp->closest_hit_counts.yes ? &grp->closest_hit_counts : nullptr;
+    if (k != q.hit_counts) {
+      flushCounts(q.hit_counts, q.hit_pending);
+      q.hit_counts = k;
+    }
+  }
+  if (!q.hit_counts) return false;
+  ++q.hit_pending;
+  if (rec) rec[q.runs_hit] += 1;
+  return true;
+}
+
 void ModelTracer::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
   const Rays& rays = sh_.c->rays;
-  const CPipeline& programs = *sh_.programs;
   const uint32_t words = st_.records ? recordWords() : 0;
   uint32_t pipe_flags = 0;
   if (sh_.c->pipeline.flags & kPipelineSkipTriangles) pipe_flags |= kRaySkipTriangles;
   if (sh_.c->pipeline.flags & kPipelineSkipAabbs) pipe_flags |= kRaySkipAabbs;
-  const ModelScene& scene = *sh_.scene;
-  const RTCScene top = scene.tops[0];  // launch rays traverse the first top level
-  const bool robust = scene.tier == ModelTier::Robust;
+  const RTCScene top = sh_.scene->tops[0];  // launch rays traverse the first top level
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
 
   const Ray& first = rays.launchRay(begin);
   const TraceRay r0 = launchRay(first);
   const bool quick = !((first.flags | pipe_flags) & kRaySkipClosestHit);
-  const CountsOnly* miss_counts = quick ? countedMiss(r0) : nullptr;
-  uint32_t last_instance = ~0u, last_geometry = ~0u;
-  const CountsOnly* hit_counts = nullptr;
-  uint64_t hit_pending = 0, miss_pending = 0;  // quick hits (for hit_counts) and misses
-  auto flush = [this](const CountsOnly* k, uint64_t& n) {
-    if (k && n)
-      for (int c : k->counters) st_.counters[c] += n;
-    n = 0;
-  };
-  const uint32_t runs_raygen = st_.runsOffset(kRunsRaygen),
-                 runs_hit = st_.runsOffset(kRunsClosestHit), runs_miss = st_.runsOffset(kRunsMiss);
+  LaunchCounts q;
+  q.miss_counts = quick ? countedMiss(r0) : nullptr;
+  q.runs_hit = st_.runsOffset(kRunsClosestHit);
+  q.runs_miss = st_.runsOffset(kRunsMiss);
+  const uint32_t runs_raygen = st_.runsOffset(kRunsRaygen);
 
   for (uint32_t i = begin; i < end; ++i) {
     if (!rays.same && i + 8 < end) __builtin_prefetch(&rays.rays[i + 8]);
@@ -153,50 +195,13 @@ void ModelTracer::runLaunchRaysDirect(uint32_t begin, uint32_t end) {
     const uint32_t flags = ray.flags | pipe_flags;
     uint32_t* rec = st_.records ? st_.records + static_cast<size_t>(i) * words : nullptr;
     if (rec) rec[runs_raygen] += 1;
-    // embreeRay + validRay + embreeClosestHit, for the launch ray itself.
-    RTCRayHit rh = embreeRay(ray, flags);
-    const bool valid = validLaunchRay(ray);
-    st_.ray_undefined = false;
-    if (!valid || (ray.flags & kExclusiveRayFlags)) {
-      // R-UB: diagnosed; such a ray is not traced (a miss) or keeps its flags.
-      st_.index = i;
-      st_.checkRayParameters(launchRay(ray), &programs.raygen[0], 1);
-    }
-    if (valid) {
-      rh.ray.tnear = robust ? nextUp(ray.tmin) : ray.tmin;
-      rh.ray.tfar = nextDown(ray.tmax);
-      rtcIntersect1(top, &ctx, &rh);
-    }
+    const RTCRayHit rh = launchClosestHit(i, ray, flags, top, ctx);
     const bool hit = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
-    if (quick && sameTraceParameters(ray, first)) {
-      if (hit) {
-        if (rh.hit.instID[0] != last_instance || rh.hit.geomID != last_geometry) {
-          last_instance = rh.hit.instID[0];
-          last_geometry = rh.hit.geomID;
-          const CHitGroup* grp = groupOf(programs, sbt_.hit(last_instance, last_geometry, r0));
-          const CountsOnly* k = grp && grp->closest_hit && grp->closest_hit_counts.yes
-                                    ? &grp->closest_hit_counts
-                                    : nullptr;
-          if (k != hit_counts) {
-            flush(hit_counts, hit_pending);
-            hit_counts = k;
-          }
-        }
-        if (hit_counts) {
-          ++hit_pending;
-          if (rec) rec[runs_hit] += 1;
-          continue;
-        }
-      } else if (miss_counts) {
-        ++miss_pending;
-        if (rec) rec[runs_miss] += 1;
-        continue;
-      }
-    }
+    if (quick && sameTraceParameters(ray, first) && countedAlone(rh, hit, r0, q, rec)) continue;
     shadeLaunchRay(i, ray, flags, rh, hit, rec);
   }
-  flush(hit_counts, hit_pending);
-  flush(miss_counts, miss_pending);
+  flushCounts(q.hit_counts, q.hit_pending);
+  flushCounts(q.miss_counts, q.miss_pending);
 }
 
 }  // namespace rayspec

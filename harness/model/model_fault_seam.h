@@ -43,6 +43,12 @@ class ModelFaultSeam {
   // Permuted): whether it does, and a candidate's place in it, by its key.
   bool permutedOrder() const { return f_.order == CandidateOrder::Permuted; }
   uint64_t permutedRank(uint32_t instance, uint32_t geometry, uint32_t primitive) const;
+  // A legal device deciding one candidate after every other (CandidateOrder::
+  // OneLast), the rest near to far: whether this key is that candidate.
+  bool decidedLast(uint32_t instance, uint32_t geometry, uint32_t primitive) const {
+    return f_.order == CandidateOrder::OneLast && instance == f_.last_instance &&
+           geometry == f_.last_geometry && primitive == f_.last_primitive;
+  }
   // R-STACK broken: a callable nested past the default stack does nothing.
   bool stackSizeIgnored() const { return f_.stack_size_ignored; }
   // R-POSITION-FETCH broken: vertex_position<i> in world space.

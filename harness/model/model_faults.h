@@ -17,14 +17,18 @@ enum class ModelDeviation { None, ClosedTriangleInterval, OpenAabbInterval };
 // The order the model decides a trace's candidates in (R-ORDER-UNSPEC).
 // Distance is the model's own (near to far); the others stand for devices
 // that traverse otherwise: far to near, the order of the build (instance,
-// geometry, primitive), and a fixed shuffle of the candidates whatever their
-// t (ModelFaults::order_seed; boxes entered at one t reordered too).
-enum class CandidateOrder { Distance, ReverseDistance, BuildOrder, Permuted };
+// geometry, primitive), a fixed shuffle of the candidates whatever their
+// t (ModelFaults::order_seed; boxes entered at one t reordered too), and near
+// to far but one candidate last (ModelFaults::order_last: a device may meet
+// the candidate whose any-hit terminates after every other).
+enum class CandidateOrder { Distance, ReverseDistance, BuildOrder, Permuted, OneLast };
 
 struct ModelFaults {
   ModelDeviation deviation = ModelDeviation::None;
   CandidateOrder order = CandidateOrder::Distance;
   uint32_t order_seed = 0;  // CandidateOrder::Permuted: which shuffle
+  // CandidateOrder::OneLast: the key (instance, geometry, primitive) decided last.
+  uint32_t last_instance = 0, last_geometry = 0, last_primitive = 0;
   // R-STACK broken: the stack size a case sets is ignored, so a callable
   // nested deeper than the default stack's kDefaultCallableDepth frames does
   // nothing (its caller's data stays as it was).

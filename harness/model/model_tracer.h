@@ -49,6 +49,13 @@ class ModelTracer {
   Committed directHit(const TraceRay& r, uint32_t flags);
   Committed traverse(const TraceRay& r, uint32_t flags, uint32_t depth, Payload& payload,
                      QueryRun* query = nullptr);
+  // traverse's steps: the ray's candidates in the order they are decided
+  // (none for a ray Embree cannot trace: validRay), from the pool of its
+  // depth or query level; and R-UB where a legal answer of this trace (the
+  // ray ambiguous) has its hit or miss record beyond its region.
+  std::vector<ModelCandidate>* candidatesOf(const TraceRay& r, uint32_t flags, uint32_t depth,
+                                            const QueryRun* query);
+  void checkLegalAnswerRecords(const TraceRay& r, uint32_t flags);
   // decide() for a ray query (model_query.cpp): the candidate blocks decide,
   // opaque triangles commit unoffered (R-RQ-CANDIDATES).
   void decideQuery(Traversal& tr, const std::vector<ModelCandidate>& cands, const int8_t* force);
@@ -107,6 +114,23 @@ class ModelTracer {
   // runLaunchRaysDirect's way for a launch ray that is not only counted: as
   // trace() does, with the ray's launch state and Embree's answer.
   const CountsOnly* countedMiss(const TraceRay& r0) const;
+  // runLaunchRaysDirect's steps: the launch ray's closest hit (R-UB
+  // diagnosed); and, for a launch ray traced as the first one is, whether
+  // its closest-hit or miss only counts (CountsOnly), which is then counted
+  // in `q`, in a batch while the hit group stays the same (flushCounts adds
+  // a batch to the counters).
+  struct LaunchCounts {
+    uint32_t last_instance = ~0u, last_geometry = ~0u;
+    const CountsOnly* hit_counts = nullptr;
+    const CountsOnly* miss_counts = nullptr;
+    uint64_t hit_pending = 0, miss_pending = 0;
+    uint32_t runs_hit = 0, runs_miss = 0;  // the run counts' words in a record
+  };
+  RTCRayHit launchClosestHit(uint32_t i, const Ray& ray, uint32_t flags, RTCScene top,
+                             RTCIntersectContext& ctx);
+  bool countedAlone(const RTCRayHit& rh, bool hit, const TraceRay& r0, LaunchCounts& q,
+                    uint32_t* rec);
+  void flushCounts(const CountsOnly* k, uint64_t& n);
   void shadeLaunchRay(uint32_t i, const Ray& ray, uint32_t flags, const RTCRayHit& rh, bool hit,
                       uint32_t* rec);
 

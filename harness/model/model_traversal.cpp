@@ -130,6 +130,9 @@ void sortCandidates(std::vector<ModelCandidate>& cands, const ModelFaultSeam& se
                      rb = seam.permutedRank(b.instance, b.geometry, b.primitive);
       return ra != rb ? ra < rb : key_less;
     }
+    const bool a_last = seam.decidedLast(a.instance, a.geometry, a.primitive),
+               b_last = seam.decidedLast(b.instance, b.geometry, b.primitive);
+    if (a_last != b_last) return b_last;  // a legal device's one candidate last
     return seam.decidedBefore(a.t, b.t, key_less);
   });
 }
@@ -297,33 +300,10 @@ Committed ModelTracer::traverse(const TraceRay& r, uint32_t flags, uint32_t dept
     before = st_.save();
   if (query && tr.exact) query->frame_before = saveQueryFrame(*query);
 
-  RTCRayHit rh = embreeRay(r, tr.flags);
-  std::vector<ModelCandidate>* cands = nullptr;
+  std::vector<ModelCandidate>* cands = candidatesOf(r, tr.flags, depth, query);
   std::vector<std::pair<size_t, double>> reports;  // exact tier: every report of the actual run
   std::vector<ShaderDecision> shader_unsure;       // exact tier: decisions rounding may flip
-  if (validRay(r, rh)) {
-    // A query's candidates apart from the traces': a query's block may run
-    // another query, nested; a trace's by depth.
-    if (query) {
-      cands = &query_pool_[query->level % kMaxQueryNesting];
-    } else {
-      if (cand_pool_.size() < depth) cand_pool_.resize(depth);
-      cands = &cand_pool_[depth - 1];
-    }
-    cands->clear();
-    TraceContext tc;
-    rtcInitIntersectContext(&tc.rtc);
-    tc.scene = &scene;
-    tc.origin = {r.origin[0], r.origin[1], r.origin[2]};
-    tc.direction = {r.direction[0], r.direction[1], r.direction[2]};
-    tc.tmin = r.tmin;
-    tc.tmax = r.tmax;
-    tc.candidates = cands;
-    // Slightly wider than the interval: the model checks both ends itself.
-    rh.ray.tnear = std::max(0.0f, r.tmin - std::fabs(r.tmin) * kEnumerationPadRelF);
-    rh.ray.tfar = r.tmax + std::fabs(r.tmax) * kEnumerationPadRelF;
-    rtcIntersect1(scene.tops[r.tlas], &tc.rtc, &rh);
-    sortCandidates(*cands, sh_.fault_seam);
+  if (cands) {
     tr.reports = tr.exact ? &reports : nullptr;
     tr.shader_unsure = tr.exact && sh_.programs->reads_sphere ? &shader_unsure : nullptr;
     decide(tr, *cands, nullptr, payload);
@@ -342,17 +322,51 @@ Committed ModelTracer::traverse(const TraceRay& r, uint32_t flags, uint32_t dept
       payload = payload_in;
       tr.best = decideAs(tr, *cands, *chosen, payload);
     }
-    // R-UB: a legal answer of this trace whose record lies beyond its region.
-    if (!query && st_.ray_ambiguous && !st_.ray_undefined && !st_.ambiguous.empty() &&
-        st_.ambiguous.back().ray == st_.index)
-      for (const Candidate& k : st_.ambiguous.back().candidates) {
-        if (k.hit && !(tr.flags & kRaySkipClosestHit) && !sbt_.hit(k.instance, k.geometry, r))
-          st_.hitRecordOutOfRange(k.instance, k.geometry, r);
-        if (!k.hit && (r.miss & kTraceMissIndexMask) >= sbt_.miss().size())
-          st_.missRecordOutOfRange(r);
-      }
+    if (!query) checkLegalAnswerRecords(r, tr.flags);
   }
   return tr.best;
+}
+
+std::vector<ModelCandidate>* ModelTracer::candidatesOf(const TraceRay& r, uint32_t flags,
+                                                       uint32_t depth, const QueryRun* query) {
+  RTCRayHit rh = embreeRay(r, flags);
+  if (!validRay(r, rh)) return nullptr;
+  // A query's candidates apart from the traces': a query's block may run
+  // another query, nested; a trace's by depth.
+  std::vector<ModelCandidate>* cands = nullptr;
+  if (query) {
+    cands = &query_pool_[query->level % kMaxQueryNesting];
+  } else {
+    if (cand_pool_.size() < depth) cand_pool_.resize(depth);
+    cands = &cand_pool_[depth - 1];
+  }
+  cands->clear();
+  const ModelScene& scene = *sh_.scene;
+  TraceContext tc;
+  rtcInitIntersectContext(&tc.rtc);
+  tc.scene = &scene;
+  tc.origin = {r.origin[0], r.origin[1], r.origin[2]};
+  tc.direction = {r.direction[0], r.direction[1], r.direction[2]};
+  tc.tmin = r.tmin;
+  tc.tmax = r.tmax;
+  tc.candidates = cands;
+  // Slightly wider than the interval: the model checks both ends itself.
+  rh.ray.tnear = std::max(0.0f, r.tmin - std::fabs(r.tmin) * kEnumerationPadRelF);
+  rh.ray.tfar = r.tmax + std::fabs(r.tmax) * kEnumerationPadRelF;
+  rtcIntersect1(scene.tops[r.tlas], &tc.rtc, &rh);
+  sortCandidates(*cands, sh_.fault_seam);
+  return cands;
+}
+
+void ModelTracer::checkLegalAnswerRecords(const TraceRay& r, uint32_t flags) {
+  if (!st_.ray_ambiguous || st_.ray_undefined || st_.ambiguous.empty() ||
+      st_.ambiguous.back().ray != st_.index)
+    return;
+  for (const Candidate& k : st_.ambiguous.back().candidates) {
+    if (k.hit && !(flags & kRaySkipClosestHit) && !sbt_.hit(k.instance, k.geometry, r))
+      st_.hitRecordOutOfRange(k.instance, k.geometry, r);
+    if (!k.hit && (r.miss & kTraceMissIndexMask) >= sbt_.miss().size()) st_.missRecordOutOfRange(r);
+  }
 }
 
 // The planted fault nested_trace_clobbers_hit: the closest-hit that made

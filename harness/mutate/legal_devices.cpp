@@ -196,6 +196,11 @@ std::vector<LegalDevice> judgeLegalDevices(const Case& c, const Plan& plan, cons
     for (Variant& v : replayVariants(model, base)) variants.push_back(std::move(v));
     variants.push_back(passBetween(c, plan, model, base, threads));
     variants.push_back(aabbNeighbours(c, plan, base, threads));
+    for (NamedDevice& d : lastCandidateDevices(c, plan, threads))
+      variants.push_back(madeBy(d.name, std::move(d.device), base,
+                                "candidate " + d.name.substr(5) +
+                                    " (instance.geometry.primitive) decided after every other, "
+                                    "the rest near to far"));
     variants.push_back(toleranceBound(base, model));
   }
   for (Variant& v : legalFaults(c, plan, model, base)) variants.push_back(std::move(v));

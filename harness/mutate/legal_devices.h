@@ -15,6 +15,10 @@
 //                       repeated without NO_DUPLICATE, candidates far to near, ...)
 //   aabb-neighbours     intersection programs also run for the boxes beside
 //                       the entered ones (R-AABB-CONS: the test is conservative)
+//   last-<i>.<g>.<p>    candidate (instance i, geometry g, primitive p)
+//                       decided after every other, the rest near to far
+//                       (R-ORDER-UNSPEC; one per candidate of a scene of at
+//                       most kMaxLastCandidates: fault/planted_fault.h)
 //   tolerance-bound     every written hit_t, hit_position and barycentric
 //                       moved by 0.9 of the error the comparison allows (the
 //                       model's t bound of the ray, carried into hit_position)

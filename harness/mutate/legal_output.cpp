@@ -32,6 +32,8 @@ const LegalReplay* replayGiving(const Results& model, uint32_t ray,
   return nullptr;
 }
 
+// The legal devices of another candidate order: far to near, the shuffles,
+// and each candidate after every other (lastCandidateDevices).
 std::vector<Results> orderedDevices(const Case& c, const Plan& plan, const Results& model,
                                     const Results& base) {
   std::vector<Results> out;
@@ -39,6 +41,8 @@ std::vector<Results> orderedDevices(const Case& c, const Plan& plan, const Resul
     Results d = base;
     if (plantFault(name, c, plan, d, model).applied) out.push_back(std::move(d));
   }
+  for (NamedDevice& d : lastCandidateDevices(c, plan, 0))
+    if (d.device.ok()) out.push_back(std::move(d.device));
   return out;
 }
 

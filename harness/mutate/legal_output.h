@@ -3,7 +3,9 @@
 // the judge, for a judge must pass every legal device. Each changed ray's
 // record must be, bit for bit, one of its legal answers replayed whole
 // (Results' RayAmbiguity::replays) or the record a legal device deciding in
-// another order gives it (reverse-order, permuted-order-1..3); and each
+// another order gives it (reverse-order, permuted-order-1..3, and in a
+// scene of a few candidates each one decided last: lastCandidateDevices,
+// fault/planted_fault.h); and each
 // counter it moved must be one that traversal order moves (informational),
 // or, where every changed ray was a replay, moved as those replays move it.
 // An ambiguous ray alone is no excuse: a record that is none of these (the
