@@ -34,7 +34,7 @@ class TraceClassifier {
   }
 
   // Triangles near an edge, vertex or interval end, and grazed boxes.
-  void findUnsure();
+  void findUnsure(const std::vector<std::pair<size_t, double>>& reports);
   // The triangles around the shared edge or vertex a ray meets.
   void findSharedTriangles();
   // The what-if runs where the unsure candidates decide otherwise.
@@ -147,14 +147,19 @@ void TraceClassifier::addLeak(const Committed& b, const WhatIf& how) {
   leak_hows_.push_back(how);
 }
 
-void TraceClassifier::findUnsure() {
+void TraceClassifier::findUnsure(const std::vector<std::pair<size_t, double>>& reports) {
   const TraceRay& r = tr_.ray;
   const double final_t = tr_.best.valid ? tr_.best.t : INFINITY;
+  // R-ISECT-REPORT: a box's intersection program reports anywhere in the
+  // interval, before its slab entry too: a box it ran on is unsure wherever
+  // the committed t lies.
+  std::vector<bool> ran(cands_.size(), false);
+  for (const auto& [index, t] : reports) ran[index] = true;
   for (size_t k = 0; k < cands_.size(); ++k) {
     const ModelCandidate& cand = cands_[k];
     if (cand.aabb) {
       // A grazed box matters only if its what-if runs change the answer (tryUnsure).
-      if (cand.near_face && cand.t <= final_t + tr_.tol(cand.t)) {
+      if (cand.near_face && (ran[k] || cand.t <= final_t + tr_.tol(cand.t))) {
         unsure_.push_back(k);
         faces_ = true;
       }
@@ -495,7 +500,7 @@ std::optional<WhatIf> ModelTracer::classifyTrace(
     const std::vector<std::pair<size_t, double>>& reports,
     const std::vector<ShaderDecision>& shader_unsure, const Payload& payload_in) {
   TraceClassifier c(*this, tr, candidates, payload_in);
-  c.findUnsure();
+  c.findUnsure(reports);
   c.findSharedTriangles();
   c.tryUnsure();
   c.tryOrders(reports);
