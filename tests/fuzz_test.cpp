@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <map>
 
-#include "parse/parse_case.h"
 #include "fuzz/generate_case.h"
+#include "parse/parse_case.h"
 #include "plan/plan.h"
 
 namespace rayspec {
