@@ -55,13 +55,7 @@ Subcommand addFuzzCommand(CLI::App& app) {
       ->capture_default_str();
   fuzz->add_option("--through", *through,
                    "Send every case through a feature path (" + featurePathNames() + ")")
-      ->check(
-          [](const std::string& name) {
-            return featurePathFromName(name)
-                       ? std::string()
-                       : "unknown feature path '" + name + "' (" + featurePathNames() + ")";
-          },
-          "PATH");
+      ->check(featurePath());
   fuzz->add_option("--reduce", o.reduce,
                    "Reduce each new signature's first case with `rayspec reduce`, trying at most "
                    "this many variants (0: no reduction)")

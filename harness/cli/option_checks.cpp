@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <set>
 
+#include "metamorphic/feature_path.h"
+
 namespace rayspec {
 namespace fs = std::filesystem;
 
@@ -141,6 +143,16 @@ CLI::Validator decimalSeed() {
         return {};
       },
       "SEED");
+}
+
+CLI::Validator featurePath() {
+  return CLI::Validator(
+      [](const std::string& name) {
+        return featurePathFromName(name)
+                   ? std::string()
+                   : "unknown feature path '" + name + "' (" + featurePathNames() + ")";
+      },
+      "PATH");
 }
 
 }  // namespace rayspec

@@ -41,4 +41,7 @@ CLI::Validator memoryLimit();
 // An unsigned 64-bit integer written in decimal (no sign, no wrap-around).
 CLI::Validator decimalSeed();
 
+// A --through value: one of metamorphic/feature_path.h's names.
+CLI::Validator featurePath();
+
 }  // namespace rayspec

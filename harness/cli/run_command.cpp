@@ -163,13 +163,7 @@ void addVariantOptions(CLI::App* run, RunOptions& run_opt, VariantTexts& texts) 
                       featurePathNames() +
                       "; a case that takes its own way there is NotSupported, as is one the device "
                       "cannot take)")
-      ->check(
-          [](const std::string& name) {
-            return featurePathFromName(name)
-                       ? std::string()
-                       : "unknown feature path '" + name + "' (" + featurePathNames() + ")";
-          },
-          "PATH");
+      ->check(featurePath());
   run->add_option("--plant-fault", run_opt.plant_fault,
                   "Test only: corrupt the device's results in a known way (" + fault_list + ")");
   run->add_option("--plant-fault-in", run_opt.plant_fault_in,
