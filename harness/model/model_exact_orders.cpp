@@ -1,0 +1,209 @@
+// The exact tier's candidate orders (R-ORDER-UNSPEC, R-TIE, R-TOFH,
+// R-TERMINATE): which orders of a trace's candidates may change its answer,
+// each tried in a sandboxed what-if run; every distinct answer is legal.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
+
+#include "model/order_dependence.h"
+#include "model/trace_classifier.h"
+#include "results/record_layout.h"
+
+namespace rayspec {
+
+using namespace trace_detail;
+
+// R-TIE, R-ORDER-UNSPEC: candidates confirmed at the committed t (within the
+// error bound) may end in any order; R-TOFH: any candidate may be confirmed
+// first; R-ORDER-UNSPEC, R-TERMINATE: where an any-hit may terminate, the
+// candidate a device meets first may end the traversal. Each is tried in a
+// sandboxed what-if run (preferred in ties, or processed first, the rest in
+// order); those runs' answers are legal.
+void TraceClassifier::tryOrders(const std::vector<std::pair<size_t, double>>& reports) {
+  const bool tofh = (tr_.flags & kRayTerminateOnFirstHit) != 0;
+  const bool permuted = tryPermutations(reports);
+  const bool terminates = !tofh && !permuted && m_.anyHitMayTerminate(tr_, cands_);
+  std::vector<long> prefers, firsts, potential;
+  std::set<std::array<uint32_t, 3>> tied;  // distinct keys confirmable at the committed t
+  if ((tofh && !permuted) || terminates) {
+    for (size_t k = 0; k < cands_.size(); ++k) {
+      const ModelCandidate& cand = cands_[k];
+      if (cand.aabb || ((cand.hit || cand.ambiguity != TriAmbiguity::None) && eligible(cand)))
+        firsts.push_back(static_cast<long>(k));
+    }
+  }
+  if (!tofh && tr_.best.valid) {
+    tied.insert({tr_.best.instance, tr_.best.geometry, tr_.best.primitive});
+    // Per box: 1 its intersection program ran, 2 it reported at the committed t.
+    std::vector<uint8_t> boxes(cands_.size(), 0);
+    for (const auto& [index, t] : reports) boxes[index] |= tr_.ties(t) ? 3 : 1;
+    for (size_t k = 0; k < cands_.size(); ++k) {
+      const ModelCandidate& cand = cands_[k];
+      bool tie = false;
+      if (cand.aabb) {
+        tie = (boxes[k] & 2) != 0;
+        // A box entered just past the committed t may still report at it.
+        if (!boxes[k] && tr_.ties(cand.t)) potential.push_back(static_cast<long>(k));
+      } else {
+        tie = cand.hit && tr_.ties(cand.t) && eligible(cand);
+      }
+      if (!tie) continue;
+      tied.insert({cand.instance, cand.geometry, cand.primitive});
+      if (cand.instance != tr_.best.instance || cand.geometry != tr_.best.geometry ||
+          cand.primitive != tr_.best.primitive)
+        prefers.push_back(static_cast<long>(k));
+    }
+    if (tied.size() < 2) prefers.clear();
+    prefers.insert(prefers.end(), potential.begin(), potential.end());
+  }
+  if (prefers.empty() && firsts.size() <= 1) return;
+  const bool before = !amb_.candidates.empty();
+  bool differs = false, differs_first = false;
+  auto add_one = [&](const Committed& b, const WhatIf& how) {
+    addCommitted(b, how);
+    const bool d = b.valid != tr_.best.valid || (b.valid && (b.instance != tr_.best.instance ||
+                                                             b.geometry != tr_.best.geometry ||
+                                                             b.primitive != tr_.best.primitive));
+    differs = differs || d;
+    return d;
+  };
+  const size_t saved = amb_.candidates.size(), saved_replays = replay_hows_.size();
+  add_one(tr_.best, actual());
+  for (long k : prefers) {
+    const WhatIf how{false, {}, k, -1, {}};
+    add_one(m_.sandbox(tr_, cands_, how, payload_in_), how);
+  }
+  if (firsts.size() > 1)
+    for (long k : firsts) {
+      // An edge or vertex triangle the model left out may be the device's first hit.
+      WhatIf how{false, std::vector<int8_t>(cands_.size(), -1), -1, k, {}};
+      if (cands_[k].ambiguity != TriAmbiguity::None) how.force[k] = 1;
+      differs_first = add_one(m_.sandbox(tr_, cands_, how, payload_in_), how) || differs_first;
+    }
+  const bool ambiguous_now = tofh ? differs : (differs || tied.size() >= 2);
+  if (ambiguous_now && !reason_)
+    reason_ = tofh            ? AmbiguityReason::FirstHit
+              : differs_first ? AmbiguityReason::Order
+                              : AmbiguityReason::TTie;
+  if (!ambiguous_now && !before) {
+    amb_.candidates.resize(saved);
+    hows_.resize(saved);
+    replay_hows_.resize(saved_replays);
+    replay_effects_.resize(saved_replays);
+  }
+}
+
+// Hit or unsure triangles in the interval, and boxes; but a box whose
+// intersection program ran and reported nothing, where no intersection
+// program reads ray_tmax: no order makes it report.
+std::vector<uint32_t> TraceClassifier::orderedCandidates(
+    const std::vector<std::pair<size_t, double>>& reports) const {
+  std::vector<uint8_t> box(cands_.size(), 0);  // 1 ran, 2 reported
+  if (!tr_.query && !m_.sh_.programs->reads(kBiTmax))
+    for (const auto& [k, t] : reports) box[k] |= std::isnan(t) ? 1 : 2;
+  std::vector<uint32_t> matter;
+  for (size_t k = 0; k < cands_.size(); ++k) {
+    const ModelCandidate& cand = cands_[k];
+    if ((cand.aabb && box[k] != 1) ||
+        (!cand.aabb && (cand.hit || cand.ambiguity != TriAmbiguity::None) && eligible(cand)))
+      matter.push_back(static_cast<uint32_t>(k));
+  }
+  return matter;
+}
+
+// R-TIE: two reports (of two boxes, or two of one box) at one t within the
+// error bound: which stays depends on the order, and on whether a report at
+// the committed t replaces it (both legal).
+bool TraceClassifier::reportsTie(const std::vector<std::pair<size_t, double>>& reports) const {
+  for (size_t a = 0; a < reports.size(); ++a)
+    for (size_t b = a + 1; b < reports.size(); ++b) {
+      const double ta = reports[a].second, tb = reports[b].second;
+      if (!std::isnan(ta) && !std::isnan(tb) && std::fabs(ta - tb) <= tr_.tol(ta)) return true;
+    }
+  return false;
+}
+
+OrderOutcome TraceClassifier::actualOutcome() const {
+  OrderOutcome o;
+  o.best = tr_.best;
+  if (m_.st_.rec) o.record.assign(m_.st_.rec, m_.st_.rec + recordWords());
+  if (tr_.payload) o.payload = *tr_.payload;
+  if (tr_.query) o.frame = saveQueryFrame(*tr_.query);
+  return o;
+}
+
+// Past the bound the sample's answers differ: the case is not portable
+// (CaseError, compare/order_dependent_verdict.h), named by the block.
+void TraceClassifier::orderDependentPastBound(size_t candidates) {
+  const OrderDependence d = tr_.query ? queryOrderDependence(*tr_.query->stmt)
+                                      : pipelineOrderDependence(*m_.sh_.programs);
+  const CStmt* where = d.where ? d.where : tr_.query ? tr_.query->stmt : nullptr;
+  std::string place = tr_.query
+                          ? "the candidate blocks of the ray_query at " + statementPlace(where)
+                          : "the any-hit or intersection program at " + statementPlace(where);
+  if (!d.why.empty()) place += " (" + d.why + ")";
+  m_.st_.orderDependent(place, ": launch ray " + std::to_string(m_.st_.index) + " meets " +
+                                   std::to_string(candidates) + " candidates, more than the " +
+                                   std::to_string(kMaxOrderedCandidates) +
+                                   " whose every order the model tries, and the orders it "
+                                   "tried leave different answers behind");
+}
+
+// R-ORDER-UNSPEC, R-TOFH, R-TIE: candidates arrive in any order (and a report
+// at the committed t may keep or replace it). Where that may change what a
+// trace leaves behind, each order of the candidates that matter runs in a
+// sandboxed what-if run; each distinct outcome (the committed hit, or the
+// record, payload or query frame) is a legal answer.
+bool TraceClassifier::tryPermutations(const std::vector<std::pair<size_t, double>>& reports) {
+  const bool tofh = (tr_.flags & kRayTerminateOnFirstHit) != 0;
+  const bool dependent =
+      tr_.query ? tr_.query->stmt->order_dependent : m_.sh_.programs->order_dependent;
+  const bool ties = reportsTie(reports);
+  if (!tofh && !dependent && !ties) return false;
+  const std::vector<uint32_t> matter = orderedCandidates(reports);
+  const bool reported = std::any_of(reports.begin(), reports.end(),
+                                    [](const auto& r) { return !std::isnan(r.second); });
+  // One candidate has no other order: only its own tied reports matter.
+  if (matter.size() <= 1 && !ties) return true;
+  const bool keeps = !tr_.query && reported;  // a report may keep the committed hit
+  const bool sample = matter.size() > kMaxOrderedCandidates;
+  const std::vector<std::vector<uint32_t>> orders =
+      sample ? sampleOrders(cands_.size(), matter) : everyOrder(cands_.size(), matter);
+  std::vector<OrderOutcome> seen{actualOutcome()};
+  std::vector<WhatIf> hows{actual()};
+  for (const std::vector<uint32_t>& order : orders)
+    for (const bool keep : {false, true}) {
+      if (keep && !keeps) continue;
+      WhatIf how{false, {}, -1, -1, {}, order, keep};
+      // An edge or vertex triangle the model left out may be a device's first hit.
+      if (!matter.empty() && cands_[order[matter[0]]].ambiguity != TriAmbiguity::None) {
+        how.force.assign(cands_.size(), -1);
+        how.force[order[matter[0]]] = 1;
+      }
+      OrderOutcome o;
+      m_.sandbox(tr_, cands_, how, payload_in_, &o);
+      const bool known = std::any_of(seen.begin(), seen.end(), [&](const OrderOutcome& s) {
+        return sameOutcome(s, o, tr_.tol(o.best.t));
+      });
+      if (known) continue;
+      seen.push_back(std::move(o));
+      hows.push_back(std::move(how));
+    }
+  if (seen.size() < 2) return true;
+  // Past the bound a case error, but where only tied reports may differ.
+  if (sample && (tr_.query || !m_.sh_.programs->order_ties_only))
+    orderDependentPastBound(matter.size());
+  for (size_t k = 0; k < seen.size(); ++k) addCommitted(seen[k].best, hows[k]);
+  // A tie alone names the reason only if nothing else does (a sphere's two
+  // roots at tangency tie because of its arithmetic: shader-arith).
+  if (!tofh && !dependent)
+    tie_reason_ = AmbiguityReason::TTie;
+  else if (!reason_)
+    reason_ = tofh   ? AmbiguityReason::FirstHit
+              : ties ? AmbiguityReason::TTie
+                     : AmbiguityReason::Order;
+  return true;
+}
+
+}  // namespace rayspec

@@ -1,0 +1,82 @@
+// The exact tier's classifier of one trace (model_exact_tier.cpp: the unsure
+// candidates and the answer; model_exact_orders.cpp: the candidate orders).
+// Internal to the model.
+#pragma once
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "model/candidate_orders.h"
+#include "model/model_tracer.h"
+#include "model/traversal.h"
+
+namespace rayspec {
+
+// The steps of ModelTracer::classifyTrace over one trace: which candidates are
+// unsure, the answers the what-if runs give, the reason the ray is
+// ambiguous (the first found), and the answers it may legally have.
+class TraceClassifier {
+ public:
+  TraceClassifier(ModelTracer& m, Traversal& tr, const std::vector<ModelCandidate>& cands,
+                  const Payload& payload_in)
+      : m_(m), tr_(tr), cands_(cands), payload_in_(payload_in), scene_(*m.sh_.scene) {
+    amb_.ray = m.st_.index;
+  }
+
+  // Triangles near an edge, vertex or interval end, and grazed boxes.
+  void findUnsure(const std::vector<std::pair<size_t, double>>& reports);
+  // The triangles around the shared edge or vertex a ray meets.
+  void findSharedTriangles();
+  // The what-if runs where the unsure candidates decide otherwise.
+  void tryUnsure();
+  // Ties at the committed t, and the first candidate under TerminateOnFirstHit
+  // or a terminating any-hit.
+  void tryOrders(const std::vector<std::pair<size_t, double>>& reports);
+  // Every order of the candidates that matter (a stated sample past
+  // kMaxOrderedCandidates) where the candidate programs may depend on it,
+  // under TerminateOnFirstHit, or where reports tie: false when none applies.
+  bool tryPermutations(const std::vector<std::pair<size_t, double>>& reports);
+  // Intersection-program decisions within rounding.
+  void tryShaderDecisions(const std::vector<ShaderDecision>& shader_unsure);
+  // A committed t whose rounding may exceed hit_t's tolerance: its bound.
+  void boundT();
+  // Marks the ray ambiguous with its legal answers, if a reason was found;
+  // how to decide as the legal device the fault seam asks for, if any.
+  std::optional<WhatIf> finish();
+
+ private:
+  bool eligible(const ModelCandidate& cand) const;
+  void addCommitted(const Committed& b, const WhatIf& how);
+  void addLeak(const Committed& b, const WhatIf& how);
+  static WhatIf actual() { return {true, {}, -1, -1, {}}; }
+  bool sameAsCommitted(const Committed& b) const;
+  // tryPermutations' steps: the candidates whose order may matter, whether
+  // two reports tie, what the actual run left behind, and a case error
+  // where a sample of the orders past the bound answers otherwise.
+  std::vector<uint32_t> orderedCandidates(
+      const std::vector<std::pair<size_t, double>>& reports) const;
+  bool reportsTie(const std::vector<std::pair<size_t, double>>& reports) const;
+  OrderOutcome actualOutcome() const;
+  void orderDependentPastBound(size_t candidates);
+
+  ModelTracer& m_;
+  Traversal& tr_;
+  const std::vector<ModelCandidate>& cands_;
+  const Payload& payload_in_;
+  const ModelScene& scene_;
+  RayAmbiguity amb_;
+  std::vector<WhatIf> hows_;  // how each of amb_.candidates is reached
+  // Every legal answer with a distinct effect (Committed::effect), the
+  // actual run's first: each a legal replay's choice here (legal_replays.cpp).
+  std::vector<WhatIf> replay_hows_;
+  std::vector<uint64_t> replay_effects_;
+  std::vector<WhatIf> leak_hows_;              // how each of amb_.leak_answers is reached
+  std::optional<AmbiguityReason> reason_;      // the first reason found
+  std::optional<AmbiguityReason> tie_reason_;  // reports tie (tryPermutations), if nothing else
+  double reason_t_ = 0;                        // the t of the candidate that gave it
+  std::vector<size_t> unsure_;                 // candidates whose decision could flip
+  bool faces_ = false;                         // a grazed box among them
+};
+
+}  // namespace rayspec
