@@ -12,6 +12,7 @@
 # It runs the device side only; bring DIR back and judge it where the full
 # build is: rayspec run --device-results DIR --out JUDGED (README.md,
 # docs/driver-only-machine.md).
+# PACK_CASES=DIR packs DIR's cases instead of cases/ (see below).
 # PACK_STAGE=DIR (an empty or missing folder) leaves the pack unpacked there
 # instead (tools/second-driver.sh: no compression for a copy on this machine).
 set -euo pipefail
@@ -24,7 +25,10 @@ stage=${PACK_STAGE:-$(mktemp -d)}
 mkdir -p "$stage/lib" "$stage/layer" .device
 cp build-device/rayspec "$stage/" && strip "$stage/rayspec"
 # The cases as they are here: a saved bundle is judged only against the same case text.
-cp -r cases references/spec-rules.yaml "$stage/"
+# PACK_CASES=DIR packs that folder as the cases instead of the library (the
+# cases `rayspec fuzz --generate-only` wrote: OUT/cases).
+cp -r "${PACK_CASES:-cases}" "$stage/cases"
+cp references/spec-rules.yaml "$stage/"
 # The SPIR-V of every generated stage, compiled here by this very binary (the
 # cache key is the GLSL text and the compile options, not the machine), so
 # that the GPU machine compiles no GLSL. `rayspec compile` runs nothing: no
@@ -34,7 +38,7 @@ cp -r cases references/spec-rules.yaml "$stage/"
 # cache, not in it), so the user's own key (~/.config/rayspec) never leaves
 # this machine; RAYSPEC_CONFIG_DIR=config names it there. A run there without
 # it finds every module a miss and compiles it again (the binary has glslang).
-RAYSPEC_CONFIG_DIR="$stage/config" build-device/rayspec compile --cases cases --cache-dir "$stage/cache"
+RAYSPEC_CONFIG_DIR="$stage/config" build-device/rayspec compile --cases "$stage/cases" --cache-dir "$stage/cache"
 # The driver pipeline caches a GPU run brought back (tools/device-run-suite.sh:
 # OUT/pipelines, kept in .device/pipelines): a driver finds its own file
 # (named by device and driver version, its header checked) and creates its

@@ -44,9 +44,10 @@ Subcommand addFuzzCommand(CLI::App& app) {
   FuzzOptions& o = *opt;
   fuzz->add_option("--seed", o.seed, "The first seed")->check(decimalSeed())->capture_default_str();
   auto* cases = fuzz->add_option("--cases", o.cases, "Cases to generate")->check(wholeCount());
-  fuzz->add_option("--minutes", o.minutes, "Generate batches until this many minutes have passed")
-      ->check(CLI::PositiveNumber)
-      ->excludes(cases);
+  auto* minutes = fuzz->add_option("--minutes", o.minutes,
+                                   "Generate batches until this many minutes have passed")
+                      ->check(CLI::PositiveNumber)
+                      ->excludes(cases);
   fuzz->add_option("--batch", o.batch, "Cases a run of the run loop (its workers live that long)")
       ->check(wholeCount())
       ->capture_default_str();
@@ -65,6 +66,16 @@ Subcommand addFuzzCommand(CLI::App& app) {
                    "Known driver bug classes (lines `FEATURE REASON`): a finding whose case holds "
                    "one's feature is counted apart and does not fail the run")
       ->check(CLI::ExistingFile);
+  auto* generate_only = fuzz->add_flag(
+      "--generate-only", o.generate_only,
+      "Write the cases of --cases seeds under OUT/cases and stop: for a device elsewhere "
+      "(tools/pack-device.sh with PACK_CASES=OUT/cases), judged here by --device-results");
+  generate_only->excludes(minutes);
+  fuzz->add_option("--device-results", o.run.device_results,
+                   "Judge the device bundles a `rayspec run` of the same seeds' cases saved in "
+                   "this folder (elsewhere, as run --device-results) instead of running a device")
+      ->check(CLI::ExistingDirectory)
+      ->excludes(generate_only);
   addDeviceOptions(fuzz, o.run);
   return {fuzz, [opt, through] {
             if (!through->empty()) opt->run.through = featurePathFromName(*through);

@@ -136,6 +136,21 @@ void reduceFindings(const FuzzOptions& opt, FuzzTally& tally) {
   }
 }
 
+// --generate-only: the cases of opt.cases seeds written under OUT/cases.
+int generateCases(const FuzzOptions& opt) {
+  for (uint64_t seed = opt.seed; seed < opt.seed + opt.cases; ++seed) {
+    const Result<GeneratedCase> g = writeCase(opt, seed);
+    if (!g) {
+      std::fprintf(stderr, "rayspec fuzz: %s\n", g.error().format().c_str());
+      return kExitSetup;
+    }
+  }
+  std::printf("%zu cases written under %s (seeds %llu to %llu)\n", opt.cases,
+              (fs::path(opt.out) / "cases").string().c_str(), (unsigned long long)opt.seed,
+              (unsigned long long)(opt.seed + opt.cases - 1));
+  return 0;
+}
+
 }  // namespace
 
 int runFuzz(const FuzzOptions& opt) {
@@ -151,11 +166,17 @@ int runFuzz(const FuzzOptions& opt) {
     std::fprintf(stderr, "rayspec fuzz: %s\n", held.error().format().c_str());
     return kExitSetup;
   }
+  if (opt.generate_only) return generateCases(opt);
   FuzzTally tally;
   tally.first_seed = opt.seed;
   tally.variant = runVariant(opt.run);
-  if (!opt.run.plant_fault.empty())
-    tally.variant += (tally.variant.empty() ? "" : "; ") + ("planted fault " + opt.run.plant_fault);
+  const auto addVariant = [&](const std::string& v) {
+    tally.variant += (tally.variant.empty() ? "" : "; ") + v;
+  };
+  if (!opt.run.plant_fault.empty()) addVariant("planted fault " + opt.run.plant_fault);
+  if (!opt.run.device_results.empty())
+    addVariant("device results saved in " + opt.run.device_results +
+               ": cases a minute counts the judging here, not the device's run");
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -22,13 +22,16 @@ struct FuzzOptions {
   double minutes = 0;  // --minutes: batches until this much time has passed
   size_t batch = 16;   // cases a run of the run loop
   std::string out = "rayspec-fuzz";
-  size_t reduce = 0;  // --reduce: attempts to reduce each new signature's case (0: none)
-  std::string known;  // --known: known bug classes (fuzz/known_classes.h); "" none
-  RunOptions run;     // the device, the model, --through, --plant-fault
+  size_t reduce = 0;           // --reduce: attempts to reduce each new signature's case (0: none)
+  std::string known;           // --known: known bug classes (fuzz/known_classes.h); "" none
+  bool generate_only = false;  // --generate-only: write OUT/cases and stop (a device elsewhere
+                               // runs them; --device-results judges what it saved)
+  RunOptions run;              // the device, the model, --through, --plant-fault, --device-results
 };
 
-// 0: nothing found but known classes; 1: new findings (OUT/fuzz.txt lists them); 2: bad options
-// or nothing could run; 128 + a signal that stopped it.
+// 0: nothing found but known classes (or, with --generate-only, the cases
+// written); 1: new findings (OUT/fuzz.txt lists them); 2: bad options or
+// nothing could run; 128 + a signal that stopped it.
 int runFuzz(const FuzzOptions& opt);
 
 }  // namespace rayspec
