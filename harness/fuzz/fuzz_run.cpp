@@ -170,13 +170,13 @@ int runFuzz(const FuzzOptions& opt) {
   FuzzTally tally;
   tally.first_seed = opt.seed;
   tally.variant = runVariant(opt.run);
-  const auto addVariant = [&](const std::string& v) {
+  const auto add_variant = [&](const std::string& v) {
     tally.variant += (tally.variant.empty() ? "" : "; ") + v;
   };
-  if (!opt.run.plant_fault.empty()) addVariant("planted fault " + opt.run.plant_fault);
+  if (!opt.run.plant_fault.empty()) add_variant("planted fault " + opt.run.plant_fault);
   if (!opt.run.device_results.empty())
-    addVariant("device results saved in " + opt.run.device_results +
-               ": cases a minute counts the judging here, not the device's run");
+    add_variant("device results saved in " + opt.run.device_results +
+                ": cases a minute counts the judging here, not the device's run");
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
