@@ -408,6 +408,31 @@ TEST(ExitCodes, CompareWithAMissingOrEmptyReferenceIsAnError) {
       << slurp(out + "/c2.txt");
 }
 
+// A case re-run under a baseline keeps its re-run in <case>/rerun/device:
+// compared, it is that case's, not a case of its own (it was counted as
+// one, NotSupported for want of a counterpart). --brief lists nothing that
+// passes.
+TEST(ExitCodes, CompareCountsACasesRerunAsThatCase) {
+  const std::string out = fresh("compare-rerun");
+  const std::string name = "results/miss-xor-closest-hit";
+  ASSERT_EQ(sh(kBin + " run --no-validation" + caseArg(name) + " --out " + out + "/run",
+               out + "/run.txt"),
+            0)
+      << slurp(out + "/run.txt");
+  fs::create_directories(out + "/run/" + name + "/rerun");
+  fs::copy(out + "/run/" + name + "/device", out + "/run/" + name + "/rerun/device",
+           fs::copy_options::recursive);
+  fs::copy(out + "/run", out + "/reference", fs::copy_options::recursive);
+  ASSERT_EQ(sh(kBin + " compare --brief " + out + "/run " + out + "/reference --out " + out + "/c",
+               out + "/c.txt"),
+            0)
+      << slurp(out + "/c.txt");
+  EXPECT_EQ(readDeqpCsv(out + "/c/results.csv").size(), 1u) << slurp(out + "/c/results.csv");
+  EXPECT_EQ(slurp(out + "/c.txt").find(name), std::string::npos)
+      << "--brief: a passing case is not listed\n"
+      << slurp(out + "/c.txt");
+}
+
 // ---- item 7: ray lists up to the device's limits ---------------------------
 
 // 40,000 rays (beyond lavapipe's maxImageDimension2D of 16,384) in a list,

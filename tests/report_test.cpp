@@ -98,6 +98,48 @@ TEST(Reports, HtmlPutsFailingCasesFirstEscapesAndCarriesItsSelfCheck) {
   EXPECT_NE(html.find("<td>primitive_id</td><td>3</td><td>2</td>"), std::string::npos);
 }
 
+// Under a baseline: the gate's line second in summary.txt and at the top of
+// report.html, what fails the run listed first and apart from the failures
+// the baseline expects, each marked.
+TEST(Reports, GateLeadsTheReportsWithUnexpectedResultsFirst) {
+  const std::string dir = testing_support::testDir() + "/rayspec-report-test-gate";
+  std::vector<CaseOutcome> v = outcomes();
+  v[1].baseline = BaselineMatch::Expected;  // anyhit/failing: the baseline lists its Fail
+  v[1].baseline_note = "baseline.csv:3";
+  CaseOutcome unexpected = v[1];
+  unexpected.name = "zz/new-failure";
+  unexpected.baseline = BaselineMatch::None;
+  unexpected.baseline_note.clear();
+  v.push_back(unexpected);
+  RunInfo info;
+  info.baseline = "references/baselines/x.csv";
+  ASSERT_EQ(errorText(writeReports(v, info, dir)), "");
+  const std::string text = slurp(dir + "/summary.txt");
+  const std::string gate = gateLine(v, info.baseline);
+  EXPECT_EQ(gate,
+            "Gate (baseline references/baselines/x.csv): FAIL, 1 unexpected failure, 0 "
+            "unexpected passes (failures.csv); 1 expected failure, 0 flakes");
+  EXPECT_EQ(text.find(gate), text.find('\n') + 1) << text;
+  EXPECT_LT(text.find("Failing the run:"), text.find("zz/new-failure:")) << text;
+  EXPECT_LT(text.find("zz/new-failure:"), text.find("Other cases:")) << text;
+  EXPECT_LT(text.find("Other cases:"), text.find("anyhit/failing:")) << text;
+  EXPECT_NE(text.find("[expected]"), std::string::npos) << text;
+  const std::string html = slurp(dir + "/report.html");
+  EXPECT_NE(html.find("<p id=\"gate\" class=\"Fail\">" + gate), std::string::npos);
+  EXPECT_LT(html.find("<p id=\"gate\""), html.find("<h2>Summary"));
+  EXPECT_LT(html.find("id=\"zz/new-failure\""), html.find("<h2>Failing as the baseline expects ("));
+  EXPECT_LT(html.find("<h2>Failing as the baseline expects ("), html.find("id=\"anyhit/failing\""));
+
+  // Nothing unexpected: PASS; without a baseline, every failure fails the run.
+  v.pop_back();
+  EXPECT_EQ(gateLine(v, info.baseline),
+            "Gate (baseline references/baselines/x.csv): PASS; 1 expected failure, 0 flakes");
+  EXPECT_EQ(gateLine(outcomes(), ""),
+            "Gate (baseline none: every failing status fails the run): FAIL, 1 unexpected "
+            "failure, 0 unexpected passes (failures.csv)")
+      << "a QualityWarning does not fail the run";
+}
+
 // A probe whose undefined rays the device survived, and a case at fault itself.
 std::vector<CaseOutcome> outcomesWithUndefinedBehaviour() {
   std::vector<CaseOutcome> v = outcomes();
@@ -143,8 +185,8 @@ TEST(Reports, CaseErrorsAreGroupedApartInHtmlTextAndJson) {
   const std::string dir = testing_support::testDir() + "/rayspec-report-test-case-error-groups";
   ASSERT_EQ(errorText(writeReports(outcomesWithUndefinedBehaviour(), RunInfo{}, dir)), "");
   const std::string html = slurp(dir + "/report.html");
-  const size_t failing = html.find("<h2>Failing cases ("), errors = html.find("<h2>Case errors ("),
-               others = html.find("<h2>Other cases ("),
+  const size_t failing = html.find("<h2>Failing the run ("),
+               errors = html.find("<h2>Case errors ("), others = html.find("<h2>Other cases ("),
                broken = html.find("id=\"builtins/broken\"");
   ASSERT_NE(errors, std::string::npos);
   EXPECT_LT(failing, errors);

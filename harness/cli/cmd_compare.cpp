@@ -51,6 +51,8 @@ std::vector<Pair> pairsOf(const fs::path& a, const fs::path& b) {
     if (it->path().filename() != "results.json" || it->path().parent_path().filename() != "device")
       continue;
     const fs::path case_dir = it->path().parent_path().parent_path();
+    // A case's re-run (<case>/rerun/device) is that case's, not one of its own.
+    if (case_dir.filename() == "rerun" && isBundle(case_dir.parent_path() / "device")) continue;
     const std::string name = case_dir.lexically_relative(a).generic_string();
     fs::path ambiguity = b / name / "model";
     if (!isBundle(ambiguity)) ambiguity = case_dir / "model";
@@ -187,7 +189,8 @@ int runCompare(const CompareOptions& opt) {
   if (Result<std::vector<Rule>> catalog = loadRuleCatalog(opt.rules_file))
     info.catalog = std::move(*catalog);  // without one, the report lists no rule coverage
   std::printf("Comparing %s against %s\n", opt.a.c_str(), opt.b.c_str());
-  RunSummary summary(pairs.size());
+  RunSummary summary(pairs.size(),
+                     opt.brief ? RunSummary::Progress::Brief : RunSummary::Progress::Every);
   std::vector<std::pair<std::string, std::vector<std::string>>> case_rules;
   for (const Pair& p : pairs) {
     summary.starting(p.name);
@@ -198,7 +201,7 @@ int runCompare(const CompareOptions& opt) {
     summary.add(o);
   }
   info.coverage = ruleCoverage(info.catalog, case_rules);
-  summary.print();
+  summary.print(opt.brief);
   if (const Result<void> written = writeReports(summary.outcomes(), info, opt.out); !written) {
     std::fprintf(stderr, "rayspec compare: the reports are not complete: %s\n",
                  visibleLine(written.error().format()).c_str());

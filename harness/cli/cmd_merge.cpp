@@ -41,7 +41,7 @@ int runMerge(const MergeOptions& opt) {
   for (const std::string& m : merged.info.teardown_errors) summary.addTeardownError(m);
   std::printf("Merged %zu folders: %zu cases on %s\n", opt.dirs.size(), merged.outcomes.size(),
               visibleLine(merged.info.device).c_str());
-  summary.print();
+  summary.print(opt.brief, merged.info.baseline);
   if (merged.info.interrupted)
     std::printf("INTERRUPTED: %zu of %zu planned cases ran\n", merged.outcomes.size(),
                 merged.info.planned_cases);

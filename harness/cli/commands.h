@@ -28,6 +28,7 @@ struct CompareOptions {
   std::string out = "rayspec-compare";
   std::string cases_dir = RAYSPEC_SOURCE_DIR "/cases";
   std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
+  bool brief = false;  // --brief (kBriefHelp)
 };
 
 struct ListOptions {
@@ -49,7 +50,11 @@ struct MergeOptions {
   std::string cases_dir = RAYSPEC_SOURCE_DIR "/cases";  // the cases their bundles are judged by
   std::string baseline, flakes, skips;
   std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
+  bool brief = false;  // --brief (kBriefHelp)
 };
+inline constexpr const char* kBriefHelp =
+    "Print only the cases that fail the run as they end, and only them in the summary (the counts "
+    "stay; every case is in the reports)";
 inline constexpr const char* kIcdOptionHelp =
     "Vulkan driver manifest (ICD JSON) the loader may load; repeat it or separate files with ':'. "
     "Sets VK_DRIVER_FILES and VK_ICD_FILENAMES, overriding the environment's";

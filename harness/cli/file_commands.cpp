@@ -47,6 +47,7 @@ Subcommand addCompareCommand(CLI::App& app) {
       ->add_option("--cases", compare_opt.cases_dir,
                    "Folder of case files (each bundle's case, by name; its case_hash must match)")
       ->capture_default_str();
+  compare->add_flag("--brief", compare_opt.brief, kBriefHelp);
 
   return {compare, [opt] {
             return runCompare(*opt);
@@ -75,6 +76,7 @@ Subcommand addMergeCommand(CLI::App& app) {
                    "Folder of case files: every case is judged anew from its bundles by its case "
                    "here (its case_hash must match)")
       ->capture_default_str();
+  merge->add_flag("--brief", merge_opt.brief, kBriefHelp);
 
   return {merge, [opt] {
             return runMerge(*opt);

@@ -76,9 +76,7 @@ void addSideOptions(CLI::App* run, RunOptions& run_opt) {
   run->add_option("--threads", run_opt.threads, "Model threads (0: all cores)")
       ->check(wholeCount())
       ->capture_default_str();
-  run->add_flag("--brief", run_opt.brief,
-                "Print only the cases that fail the run as they end, and only them in the summary "
-                "(the counts stay; every case is in the reports)");
+  run->add_flag("--brief", run_opt.brief, kBriefHelp);
   run->add_flag("--records-csv", run_opt.records_csv,
                 "records.csv (the per-ray records as text) in every bundle; without it only where "
                 "the case did not pass");

@@ -103,6 +103,33 @@ Result<void> writeFailuresCsv(const std::vector<CaseOutcome>& outcomes,
   return writeWholeFile(path, out.str());
 }
 
+std::string gateLine(const std::vector<CaseOutcome>& outcomes, const std::string& baseline_file) {
+  size_t failing = 0, unexpected_passes = 0, expected = 0, flakes = 0;
+  for (const CaseOutcome& o : outcomes) {
+    failing += failsRun(o) && o.baseline != BaselineMatch::UnexpectedPass;
+    unexpected_passes += o.baseline == BaselineMatch::UnexpectedPass;
+    expected += o.baseline == BaselineMatch::Expected && isFailing(o.status);
+    flakes += o.baseline == BaselineMatch::Flake || o.baseline == BaselineMatch::KnownFlake;
+  }
+  const auto count = [](size_t n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+  };
+  std::string line =
+      "Gate (baseline " +
+      (baseline_file.empty() ? std::string("none: every failing status fails the run")
+                             : visibleLine(baseline_file)) +
+      "): ";
+  if (failing + unexpected_passes == 0)
+    line += "PASS";
+  else
+    line += "FAIL, " + count(failing, "unexpected failure", "unexpected failures") + ", " +
+            count(unexpected_passes, "unexpected pass", "unexpected passes") + " (failures.csv)";
+  if (!baseline_file.empty())
+    line += "; " + count(expected, "expected failure", "expected failures") + ", " +
+            count(flakes, "flake", "flakes");
+  return line;
+}
+
 const char* gateWord(BaselineMatch m) {
   switch (m) {
     case BaselineMatch::None:

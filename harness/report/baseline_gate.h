@@ -48,6 +48,13 @@ bool failsRun(const CaseOutcome& outcome);
 Result<void> writeFailuresCsv(const std::vector<CaseOutcome>& outcomes,
                               const std::string& baseline_file, const std::string& path);
 
+// The gate in one line, for the top of summary.txt and report.html and the
+// console: the baseline judged by ("none: every failing status fails the
+// run" when ""), PASS or FAIL with the results that fail the run (unexpected
+// failures and unexpected passes apart), the expected failures and the
+// flakes. Starts "Gate: ".
+std::string gateLine(const std::vector<CaseOutcome>& outcomes, const std::string& baseline_file);
+
 // A few words for the console and the reports: "expected", "known flake", ...
 const char* gateWord(BaselineMatch m);
 

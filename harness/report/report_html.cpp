@@ -3,6 +3,7 @@
 // by family and by rule and a filter; then the failing cases, each folded to
 // its findings; then every other case as one row, so the page grows with the
 // failures and only a row per passing case.
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <map>
@@ -11,6 +12,7 @@
 
 #include "base/visible_text.h"
 #include "base/whole_file.h"
+#include "report/baseline_gate.h"
 #include "report/escape.h"
 #include "report/report_case_html.h"
 #include "report/report_page_assets.h"
@@ -153,6 +155,9 @@ void header(std::ostream& out, const std::vector<CaseOutcome>& outcomes, const R
       << xmlEscape(info.icd.empty() ? "unknown" : info.icd) << ") &middot; model: embree "
       << xmlEscape(info.model_tier) << " tier &middot; validation layer "
       << (info.validation ? "on" : "off") << " &middot; " << xmlEscape(info.started) << "</p>\n";
+  out << "<p id=\"gate\" class=\""
+      << (std::any_of(outcomes.begin(), outcomes.end(), failsRun) ? "Fail" : "Pass") << "\">"
+      << xmlEscape(gateLine(outcomes, info.baseline)) << "</p>\n";
   out << "<p id=\"completeness\"" << (info.interrupted ? " class=\"Fail\"" : "") << ">"
       << xmlEscape(runCompleteness(outcomes, info)) << "</p>\n";
   for (const std::string& e : info.teardown_errors)
@@ -167,14 +172,24 @@ void groupHeading(std::ostream& out, const char* title, size_t cases) {
 
 void caseGroups(std::ostream& out, const std::vector<CaseOutcome>& outcomes,
                 const std::string& dir) {
-  size_t failures = 0, errors = 0;
+  size_t failures = 0, unexpected = 0, errors = 0;
   for (const CaseOutcome& o : outcomes)
-    failures += failing(o), errors += o.status == Status::CaseError;
+    failures += failing(o), unexpected += failing(o) && failsRun(o),
+        errors += o.status == Status::CaseError;
+  // Those that fail the run first (unexpected ones, under a baseline), then
+  // the failures the baseline expects.
   out << "<div class=\"group\">";
-  groupHeading(out, "Failing cases", failures);
+  groupHeading(out, "Failing the run", unexpected);
   for (const CaseOutcome& o : outcomes)
-    if (failing(o)) writeCaseBlock(out, o, dir);
+    if (failing(o) && failsRun(o)) writeCaseBlock(out, o, dir);
   out << "</div>\n";
+  if (failures > unexpected) {
+    out << "<div class=\"group\">";
+    groupHeading(out, "Failing as the baseline expects", failures - unexpected);
+    for (const CaseOutcome& o : outcomes)
+      if (failing(o) && !failsRun(o)) writeCaseBlock(out, o, dir);
+    out << "</div>\n";
+  }
   if (errors) {
     out << "<div class=\"group\">";
     groupHeading(out, "Case errors", errors);

@@ -83,7 +83,7 @@ bool RunSummary::allNotSupported() const {
   return !outcomes_.empty();
 }
 
-void RunSummary::print(bool brief) const {
+void RunSummary::print(bool brief, const std::string& baseline) const {
   std::map<Status, int> counts;
   for (const CaseOutcome& o : outcomes_) ++counts[o.status];
   std::printf("\n==== rayspec summary: %zu cases ====\n", outcomes_.size());
@@ -107,15 +107,7 @@ void RunSummary::print(bool brief) const {
     header = true;
     printCaseLine(o);
   }
-  size_t unexpected = 0, flakes = 0, gated = 0;
-  for (const CaseOutcome& o : outcomes_) {
-    unexpected += failsRun(o);
-    flakes += o.baseline == BaselineMatch::Flake;
-    gated += o.baseline != BaselineMatch::None;
-  }
-  if (gated)
-    std::printf("Gate: %zu unexpected results fail the run, %zu flakes (see failures.csv)\n",
-                unexpected, flakes);
+  if (!baseline.empty()) std::printf("%s\n", gateLine(outcomes_, baseline).c_str());
   for (const std::string& m : teardown_errors_)
     std::printf("  validation error at device teardown: %s\n", visibleLine(m).c_str());
 }

@@ -22,8 +22,9 @@ class RunSummary {
   void add(const CaseOutcome& outcome);         // prints the progress line
   void addTeardownError(const std::string& m);  // validation errors at device destruction
   // Counts, then the cases not passing or not as the baseline expects; brief:
-  // only those that fail the run.
-  void print(bool brief = false) const;
+  // only those that fail the run. With a baseline file (the one the run was
+  // judged by), the gate's line (report/baseline_gate.h gateLine) last.
+  void print(bool brief = false, const std::string& baseline = "") const;
   const std::vector<CaseOutcome>& outcomes() const { return outcomes_; }
   const std::vector<std::string>& teardownErrors() const { return teardown_errors_; }
   bool failed() const;

@@ -117,7 +117,9 @@ namespace {
 // Text from input (a case file's name, a saved run, the device's words) made
 // visible, each field on its line.
 void caseText(std::ostream& out, const CaseOutcome& o) {
-  out << visibleLine(o.name) << ": " << visibleLine(o.headline) << '\n';
+  out << visibleLine(o.name) << ": " << visibleLine(o.headline);
+  if (o.baseline != BaselineMatch::None) out << "  [" << gateWord(o.baseline) << "]";
+  out << '\n';
   for (const Finding& f : o.verdict.findings)
     out << "    [" << statusName(f.status) << "] " << visibleLine(f.rule) << ": "
         << visibleLine(f.message) << '\n';
@@ -134,16 +136,23 @@ void caseText(std::ostream& out, const CaseOutcome& o) {
 Result<void> writeSummaryText(const std::vector<CaseOutcome>& outcomes, const RunInfo& info,
                               const std::string& path) {
   std::ostringstream out;
-  out << runCompleteness(outcomes, info) << '\n';
-  for (const CaseOutcome& o : outcomes)
-    if (o.status != Status::CaseError) caseText(out, o);
-  bool header = false;
-  for (const CaseOutcome& o : outcomes) {
-    if (o.status != Status::CaseError) continue;
-    if (!header) out << "\nCase errors (the case itself is at fault, not the device):\n";
-    header = true;
-    caseText(out, o);
-  }
+  out << runCompleteness(outcomes, info) << '\n' << gateLine(outcomes, info.baseline) << '\n';
+  // The results that fail the run first, then every other; the cases at fault apart.
+  const auto group = [&](const char* title, auto in_group) {
+    bool header = false;
+    for (const CaseOutcome& o : outcomes) {
+      if (!in_group(o)) continue;
+      if (!header) out << '\n' << title << '\n';
+      header = true;
+      caseText(out, o);
+    }
+  };
+  group("Failing the run:",
+        [](const CaseOutcome& o) { return o.status != Status::CaseError && failsRun(o); });
+  group("Other cases:",
+        [](const CaseOutcome& o) { return o.status != Status::CaseError && !failsRun(o); });
+  group("Case errors (the case itself is at fault, not the device):",
+        [](const CaseOutcome& o) { return o.status == Status::CaseError; });
   out << '\n' << runCostText(outcomes);
   return writeWholeFile(path, out.str());
 }

@@ -375,7 +375,7 @@ int finishRun(RunBook& book, RunInfo& info, const RunOptions& opt, size_t planne
   RunSummary summary(planned, RunSummary::Progress::Quiet);
   for (const CaseOutcome& o : book.ended()) summary.add(o);
   for (const std::string& m : book.teardown()) summary.addTeardownError(m);
-  summary.print(opt.brief);
+  summary.print(opt.brief, info.baseline);
   if (info.interrupted) std::printf("INTERRUPTED: %zu of %zu cases ran\n", ended.size(), planned);
   if (!reported) {
     std::fprintf(stderr, "rayspec run: the reports are not complete: %s\n",
