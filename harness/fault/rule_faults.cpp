@@ -1,6 +1,8 @@
 // The table: every rule of the catalog and the faults that break it.
 #include "fault/rule_faults.h"
 
+#include <algorithm>
+
 namespace rayspec {
 
 namespace {
@@ -85,10 +87,20 @@ std::vector<RuleFaults> pipelineRules() {
       {"R-STACK", {"stack-size-ignored"}, {}},
       {"R-AS-COPY", {"copy-drops-instance"}, {}},
       {"R-AS-SIZE", {"build-counts-16-bit"}, {}},
-      {"R-AS-BUILD", {"shared-scratch-keeps-previous"}, {}},
-      {"R-AS-MEMORY", {"memory-guard-overwritten"}, {}},
+      {"R-AS-BUILD",
+       {"shared-scratch-keeps-previous"},
+       {},
+       fail,
+       "",
+       {"stride-ignored", "offsets-ignored", "pointers-reversed"}},
+      {"R-AS-MEMORY", {"memory-guard-overwritten"}, {}, fail, "", {"build-writes-past-size"}},
       {"R-AS-UPDATE", {"update-ignored", "later-updates-ignored", "copy-update-ignored"}, {}},
-      {"R-VERTEX-FORMAT", {"vertex-format-ignored", "vertex-format-confused"}, {}},
+      {"R-VERTEX-FORMAT",
+       {"vertex-format-ignored", "vertex-format-confused"},
+       {},
+       fail,
+       "",
+       {"vertex-format-misread"}},
       {"R-POSITION-FETCH", {"position-fetch-world-space"}, {}},
       {"R-LAUNCH-3D", {"launch-depth-lost", "zero-launch-runs", "wide-launch-truncated"}, {}},
       {"R-LIVE-STATE", {"locals-lost-across-calls"}, {}},
@@ -139,6 +151,18 @@ const RuleFaults* findRuleFaults(const std::string& rule) {
   for (const RuleFaults& r : ruleFaults())
     if (r.rule == rule) return &r;
   return nullptr;
+}
+
+RulesOfFault rulesOfFault(const std::string& fault) {
+  RulesOfFault out;
+  const auto names = [&fault](const std::vector<std::string>& list) {
+    return std::find(list.begin(), list.end(), fault) != list.end();
+  };
+  for (const RuleFaults& r : ruleFaults()) {
+    if (names(r.breaks) || names(r.live)) out.breaks.push_back(r.rule);
+    if (names(r.legal)) out.allows.push_back(r.rule);
+  }
+  return out;
 }
 
 }  // namespace rayspec
