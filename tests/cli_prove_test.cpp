@@ -48,12 +48,14 @@ TEST(Prove, ALibraryCaseHasEveryClaimProvedByAFault) {
   EXPECT_NE(r.out.find("inactive/nan-min-x-aabb-second ("), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("R-INACTIVE: proved by inactive-revived: Fail"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("R-BUILTIN: proved by "), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("1 cases, 2 claims: 2 proved, 0 not proved"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("1 cases, 2 claims: 2 proved, 0 not checked (R-UB), 0 not proved"),
+            std::string::npos)
+      << r.out;
 }
 
 // The case copied outside the tree, into a folder nobody may write, with a
-// claim of R-MASK: it has one instance and no mask, so no fault of R-MASK
-// changes anything and the claim is hollow.
+// claim of R-MASK (one instance, no mask: no fault of R-MASK changes
+// anything) and of R-AS-BUILD (one build): both claims are hollow.
 TEST(Prove, AHollowClaimOutsideTheTreeIsNamedWithTheFaultsTried) {
   const fs::path dir = fs::path(RAYSPEC_TEST_OUT) / "prove-read-only";
   if (fs::exists(dir)) fs::permissions(dir, fs::perms::owner_all, fs::perm_options::add);
@@ -61,7 +63,7 @@ TEST(Prove, AHollowClaimOutsideTheTreeIsNamedWithTheFaultsTried) {
   fs::create_directories(dir);
   std::string text = slurp(kCase);
   text.replace(text.find("rules: [R-INACTIVE, R-BUILTIN]"), 30,
-               "rules: [R-INACTIVE, R-BUILTIN, R-MASK]");
+               "rules: [R-INACTIVE, R-BUILTIN, R-MASK, R-AS-BUILD]");
   std::ofstream(dir / "my-case.yaml") << text;
   fs::permissions(dir, fs::perms::owner_read | fs::perms::owner_exec);
   const Ran r = rayspec("prove my-case.yaml", dir.string());
@@ -70,9 +72,19 @@ TEST(Prove, AHollowClaimOutsideTheTreeIsNamedWithTheFaultsTried) {
   EXPECT_NE(r.out.find("my-case (my-case.yaml)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("R-INACTIVE: proved by inactive-revived"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("NOT PROVED: R-MASK: hollow"), std::string::npos) << r.out;
-  for (const char* tried : {"break instance-mask-ignored: ", "break inactive-hides-last-active: "})
+  // R-AS-BUILD's fault on the model builds nothing here; those of a live
+  // device are named with the command that plants them.
+  EXPECT_NE(r.out.find("NOT PROVED: R-AS-BUILD: hollow"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("faults a live device alone shows: stride-ignored, offsets-ignored, "
+                       "pointers-reversed (rayspec run --case my-case.yaml --plant-fault NAME)"),
+            std::string::npos)
+      << r.out;
+  for (const char* tried : {"break instance-mask-ignored: ", "break inactive-hides-last-active: ",
+                            "break shared-scratch-keeps-previous: "})
     EXPECT_NE(r.out.find(tried), std::string::npos) << tried << " in\n" << r.out;
-  EXPECT_NE(r.out.find("3 claims: 2 proved, 1 not proved; 1 cases not proven"), std::string::npos)
+  EXPECT_NE(
+      r.out.find("4 claims: 2 proved, 0 not checked (R-UB), 2 not proved; 1 cases not proven"),
+      std::string::npos)
       << r.out;
   size_t files = 0;
   for (const auto& e : fs::directory_iterator(dir)) files += e.exists();

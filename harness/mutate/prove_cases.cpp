@@ -15,7 +15,7 @@ namespace rayspec {
 namespace {
 
 struct Tally {
-  size_t cases = 0, claims = 0, proved = 0, not_proved = 0, unprovable_cases = 0;
+  size_t cases = 0, claims = 0, proved = 0, not_checked = 0, not_proved = 0, unprovable_cases = 0;
   bool bad_input = false;
 };
 
@@ -26,13 +26,10 @@ constexpr const char* kWhere =
     "alone shows are named, not planted (rayspec run --case FILE --plant-fault NAME).\n";
 
 // One claim: the fault that proved it, or every fault tried and what each did.
-void printClaim(const ClaimProof& p, bool verbose, Tally& t) {
+void printClaim(const ClaimProof& p, const std::string& path, bool verbose, Tally& t) {
   ++t.claims;
   const FaultOutcome* by = provingFault(p);
-  if (claimHolds(p))
-    ++t.proved;
-  else
-    ++t.not_proved;
+  ++(p.result == ClaimResult::Proven ? t.proved : claimHolds(p) ? t.not_checked : t.not_proved);
   if (by && !verbose) {
     // The worst finding; -v prints the rest.
     const std::string first = by->headline.substr(0, by->headline.find("; also "));
@@ -49,8 +46,10 @@ void printClaim(const ClaimProof& p, bool verbose, Tally& t) {
   std::printf("  %s%s\n", holds ? "" : "NOT PROVED: ", p.describe().c_str());
   const RuleFaults* rf = findRuleFaults(p.rule);
   if (!holds && rf && !rf->live.empty())
-    std::printf("    a live device only: %s (rayspec run --case FILE --plant-fault NAME)\n",
-                commaList(rf->live).c_str());
+    std::printf(
+        "    faults a live device alone shows: %s (rayspec run --case %s --plant-fault "
+        "NAME)\n",
+        commaList(rf->live).c_str(), path.c_str());
 }
 
 // The case's proof, or why it cannot be proven (the model does not run or
@@ -68,7 +67,7 @@ void printProof(const CaseFile& f, const Case& c, const ProveOptions& opt, Tally
   else if (proof.clean.status != Status::Pass)
     std::printf("  CANNOT PROVE: the model as the device does not pass the case: %s\n",
                 proof.clean.headline().c_str());
-  for (const ClaimProof& p : proof.claims) printClaim(p, opt.verbose, t);
+  for (const ClaimProof& p : proof.claims) printClaim(p, f.path, opt.verbose, t);
   if (proof.model.ok() && proof.clean.status == Status::Pass &&
       proof.reversed.status != Status::Pass)
     std::printf(
@@ -109,8 +108,10 @@ int runProve(const ProveOptions& opt) {
   std::printf("%s", kWhere);
   Tally t;
   for (const std::string& path : opt.files) proveFile(path, opt, loaded ? &labels : nullptr, t);
-  std::printf("\n%zu cases, %zu claims: %zu proved, %zu not proved; %zu cases not proven\n",
-              t.cases, t.claims, t.proved, t.not_proved, t.unprovable_cases);
+  std::printf(
+      "\n%zu cases, %zu claims: %zu proved, %zu not checked (R-UB), %zu not proved; %zu cases not "
+      "proven\n",
+      t.cases, t.claims, t.proved, t.not_checked, t.not_proved, t.unprovable_cases);
   if (t.bad_input) return 2;
   return t.unprovable_cases == 0 ? 0 : 1;
 }
