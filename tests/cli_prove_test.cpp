@@ -46,6 +46,8 @@ TEST(Prove, ALibraryCaseHasEveryClaimProvedByAFault) {
   EXPECT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("Device: the model's exact tier"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("inactive/nan-min-x-aabb-second ("), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("nan-min-x-aabb-second.yaml), proved on the model in "), std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("R-INACTIVE: proved by inactive-revived: Fail"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("R-BUILTIN: proved by "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("1 cases, 2 claims: 2 proved, 0 not checked (R-UB), 0 not proved"),
@@ -71,12 +73,12 @@ TEST(Prove, AHollowClaimOutsideTheTreeIsNamedWithTheFaultsTried) {
   EXPECT_EQ(r.status, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("my-case (my-case.yaml)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("R-INACTIVE: proved by inactive-revived"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("NOT PROVED: R-MASK: hollow"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("NOT PROVED ON THE MODEL: R-MASK: hollow"), std::string::npos) << r.out;
   // R-AS-BUILD's fault on the model builds nothing here; those of a live
   // device are named with the command that plants them.
-  EXPECT_NE(r.out.find("NOT PROVED: R-AS-BUILD: hollow"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("NOT PROVED ON THE MODEL: R-AS-BUILD: hollow"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("faults a live device alone shows: stride-ignored, offsets-ignored, "
-                       "pointers-reversed (rayspec run --case my-case.yaml --plant-fault NAME)"),
+                       "pointers-reversed (rayspec run --case my-case.yaml --plant-fault NAME"),
             std::string::npos)
       << r.out;
   for (const char* tried : {"break instance-mask-ignored: ", "break inactive-hides-last-active: ",
@@ -89,6 +91,43 @@ TEST(Prove, AHollowClaimOutsideTheTreeIsNamedWithTheFaultsTried) {
   size_t files = 0;
   for (const auto& e : fs::directory_iterator(dir)) files += e.exists();
   EXPECT_EQ(files, 1u) << "prove wrote nothing beside the case";
+}
+
+// lavapipe's manifest where Mesa installs it (lvp_icd.json or lvp_icd.x86_64.json).
+std::string lavapipeManifest() {
+  for (const char* dir :
+       {"/usr/share/vulkan/icd.d", "/usr/local/share/vulkan/icd.d", "/etc/vulkan/icd.d"}) {
+    std::error_code ec;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir, ec))
+      if (e.path().filename().string().rfind("lvp_icd", 0) == 0) return e.path().string();
+  }
+  return {};
+}
+
+// R-AS-BUILD claimed by a case of strided vertices: the model has no fault
+// for it here (one build), a live device misreading the stride fails it. With
+// --icd the claim is proved on lavapipe by the planted stride-ignored.
+TEST(Prove, AClaimOnlyALiveDeviceBreaksIsProvedThere) {
+  const std::string icd = lavapipeManifest();
+  if (icd.empty()) GTEST_SKIP() << "no lavapipe manifest";
+  const fs::path file = fs::path(RAYSPEC_TEST_OUT) / "prove-live" / "layout-claim.yaml";
+  fs::create_directories(file.parent_path());
+  std::string text = slurp(RAYSPEC_SOURCE_DIR "/cases/accel/layouts-triangles.yaml");
+  text.replace(text.find("rules: [R-BUILTIN, R-INST-XFORM]"), 32, "rules: [R-BUILTIN, R-AS-BUILD]");
+  std::ofstream(file) << text;
+  const Ran model = rayspec("prove " + file.string());
+  EXPECT_EQ(model.status, 1) << model.out << model.err;
+  EXPECT_NE(model.out.find("NOT PROVED ON THE MODEL: R-AS-BUILD: hollow"), std::string::npos)
+      << model.out;
+  const Ran live = rayspec("prove " + file.string() + " --icd " + icd);
+  EXPECT_EQ(live.status, 0) << live.out << live.err;
+  EXPECT_NE(live.out.find("Live device: "), std::string::npos) << live.out;
+  EXPECT_NE(live.out.find("    on the device: stride-ignored: Fail: R-AS-BUILD/R-BUILTIN: "),
+            std::string::npos)
+      << live.out;
+  EXPECT_NE(live.out.find("  R-AS-BUILD: proved on the device by stride-ignored"),
+            std::string::npos)
+      << live.out;
 }
 
 TEST(Prove, AMissingOrBadCaseIsExit2NamingIt) {

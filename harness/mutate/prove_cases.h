@@ -18,6 +18,10 @@ struct ProveOptions {
   std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
   unsigned threads = 0;  // the model's (0: all cores)
   bool verbose = false;  // every fault's outcome, proven claims too
+  // --device or --icd: a claim the model's faults leave hollow is tried on
+  // this device with its rule's live faults (mutate/prove_live.h).
+  bool live = false;
+  RunOptions run;
 };
 
 // 0: every case proven; 1: a claim not proven (hollow, failing a legal
