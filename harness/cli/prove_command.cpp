@@ -13,7 +13,8 @@ Subcommand addProveCommand(CLI::App& app) {
       "prove",
       "Prove each rule a case claims: plant every fault of the rule (rayspec faults --rule R) and "
       "name the one that makes the case Fail; a claim no fault fails is hollow, listed with the "
-      "faults tried (exit 1). Runs on the model, no device; writes nothing");
+      "faults tried (exit 1). Runs on the model (a live device only with --device or --icd, for "
+      "the faults only it shows); writes nothing in the checkout or beside the case");
   auto opt = std::make_shared<ProveOptions>();
   prove->add_option("CASE_FILE", opt->files, "Case files or sweep files, anywhere")->required();
   prove
