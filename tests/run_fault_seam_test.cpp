@@ -2,10 +2,12 @@
 // is planted, and what each kind arms on the device side.
 #include <gtest/gtest.h>
 
+#include "fault/planted_fault.h"
 #include "parse/parse_case.h"
 #include "plan/plan.h"
 #include "result_support.h"
 #include "run/fault_seam.h"
+#include "vulkan/device_errors.h"
 #include "vulkan/vk_fault_hook.h"
 
 namespace rayspec {
@@ -15,7 +17,9 @@ TEST(FaultSeam, RefusesFaultsThatCannotBePlanted) {
   RunOptions opt;
   EXPECT_EQ(errorText(plantedFaultError(opt)), "") << "no fault";
   opt.plant_fault = "no-such-fault";
-  EXPECT_EQ(errorText(plantedFaultError(opt)), "unknown fault 'no-such-fault'");
+  const std::string unknown = errorText(plantedFaultError(opt));
+  EXPECT_EQ(unknown.rfind("unknown fault 'no-such-fault' (one of drop-miss, ", 0), 0u) << unknown;
+  EXPECT_NE(unknown.find("`rayspec faults` says what each breaks"), std::string::npos) << unknown;
   opt.plant_fault = "crash";
   EXPECT_EQ(errorText(plantedFaultError(opt)), "");
   opt.no_isolation = true;
@@ -32,6 +36,26 @@ TEST(FaultSeam, ListsEveryKindOfFault) {
   const std::string names = plantableFaultNames();
   for (const char* name : {"shift-t", "crash", "device-lost"})
     EXPECT_NE(names.find(name), std::string::npos) << name << " in " << names;
+}
+
+// The fault table (fault/planted_fault.h) describes the faults the Vulkan
+// side makes, and only those, as FaultKind::Vulkan.
+TEST(FaultSeam, TheFaultTableHoldsEveryVulkanFault) {
+  std::vector<std::string> vulkan = deviceErrorFaultNames();
+  for (const std::string& name : layoutFaultNames()) vulkan.push_back(name);
+  for (const std::string& name : vulkan) {
+    const FaultInfo* f = findFault(name);
+    ASSERT_NE(f, nullptr) << name << " is not in the fault table";
+    EXPECT_EQ(f->kind, FaultKind::Vulkan) << name;
+  }
+  size_t in_table = 0;
+  for (const FaultInfo& f : faultTable())
+    if (f.kind == FaultKind::Vulkan) {
+      ++in_table;
+      EXPECT_TRUE(deviceErrorFault(f.name) || layoutFault(f.name))
+          << f.name << ": no such Vulkan fault";
+    }
+  EXPECT_EQ(in_table, vulkan.size());
 }
 
 TEST(FaultSeam, PlantsOnlyInTheCasesThatMatch) {

@@ -59,6 +59,10 @@ inline constexpr const char* kIcdOptionHelp =
     "Vulkan driver manifest (ICD JSON) the loader may load; repeat it or separate files with ':'. "
     "Sets VK_DRIVER_FILES and VK_ICD_FILENAMES, overriding the environment's";
 
+inline constexpr const char* kPlantFaultHelp =
+    "Test only: corrupt the device's results in a known way, standing in for a wrong device "
+    "(`rayspec faults` lists every fault with the rules it breaks)";
+
 int runDevices(const DevicesOptions& opt);
 int runShow(const ShowOptions& opt);
 int runList(const ListOptions& opt);

@@ -25,10 +25,7 @@ void addDeviceOptions(CLI::App* fuzz, RunOptions& run) {
   fuzz->add_flag("--no-validation", run.no_validation, "Do not load the Khronos validation layer");
   fuzz->add_flag("--strict-validation", run.strict_validation,
                  "A validation error fails the case (as `rayspec run --strict-validation`)");
-  fuzz->add_option("--plant-fault", run.plant_fault,
-                   "Test only: corrupt the device's results in a known way, standing in for a "
-                   "wrong device (" +
-                       plantableFaultNames() + ")");
+  fuzz->add_option("--plant-fault", run.plant_fault, kPlantFaultHelp);
 }
 
 }  // namespace

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
       addMergeCommand(app),     addShowCommand(app),     addListCommand(app),
       addStabilityCommand(app), addAccuracyCommand(app), addMutateCommand(app),
       addCompileCommand(app),   addReduceCommand(app),   addFuzzCommand(app),
+      addFaultsCommand(app),    addProveCommand(app),
   };
   try {
     app.parse(argc, argv);

@@ -53,10 +53,7 @@ Subcommand addReduceCommand(CLI::App& app) {
                      "one, for the second driver");
   reduce->add_flag("--no-validation", o.run.no_validation,
                    "Do not load the Khronos validation layer");
-  reduce->add_option("--plant-fault", o.run.plant_fault,
-                     "Test only: corrupt the device's results in a known way, standing in for a "
-                     "wrong device (" +
-                         plantableFaultNames() + ")");
+  reduce->add_option("--plant-fault", o.run.plant_fault, kPlantFaultHelp);
   return {reduce, [opt] {
             return runReduce(*opt);
           }};

@@ -137,7 +137,6 @@ struct VariantTexts {
 void addVariantOptions(CLI::App* run, RunOptions& run_opt, VariantTexts& texts) {
   std::string& move_spec = texts.move_spec;
   std::string& through_name = texts.through_name;
-  const std::string fault_list = plantableFaultNames();
   run->add_option("--device-results", run_opt.device_results,
                   "Run no device: judge the device bundles a run saved in this folder "
                   "(DIR/<case>/device, e.g. from a run-only build) against the model run here");
@@ -162,8 +161,7 @@ void addVariantOptions(CLI::App* run, RunOptions& run_opt, VariantTexts& texts) 
                       "; a case that takes its own way there is NotSupported, as is one the device "
                       "cannot take)")
       ->check(featurePath());
-  run->add_option("--plant-fault", run_opt.plant_fault,
-                  "Test only: corrupt the device's results in a known way (" + fault_list + ")");
+  run->add_option("--plant-fault", run_opt.plant_fault, kPlantFaultHelp);
   run->add_option("--plant-fault-in", run_opt.plant_fault_in,
                   "Test only: plant the fault only in cases matching this glob")
       ->capture_default_str();

@@ -31,5 +31,9 @@ Subcommand addMutateCommand(CLI::App& app);
 Subcommand addReduceCommand(CLI::App& app);
 // cli/fuzz_command.cpp
 Subcommand addFuzzCommand(CLI::App& app);
+// cli/faults_command.cpp: the planted faults and the rules they break
+Subcommand addFaultsCommand(CLI::App& app);
+// cli/prove_command.cpp: a case's rule claims proven by planted faults
+Subcommand addProveCommand(CLI::App& app);
 
 }  // namespace rayspec

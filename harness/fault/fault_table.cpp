@@ -421,6 +421,38 @@ std::vector<FaultImpl> processFaults() {
   };
 }
 
+// Faults made on a live device (run/fault_seam.cpp arms them by name): a
+// Vulkan call that fails (vulkan/device_errors.cpp) or builds that misread
+// their inputs (vulkan/vk_fault_hook.h, LayoutFault).
+std::vector<FaultImpl> vulkanFaults() {
+  using K = FaultKind;
+  return {
+      {"device-lost", K::Vulkan,
+       "vkWaitForFences returns VK_ERROR_DEVICE_LOST: the case is a Crash and the next case gets "
+       "a new device"},
+      {"out-of-device-memory", K::Vulkan,
+       "vkAllocateMemory returns VK_ERROR_OUT_OF_DEVICE_MEMORY: the case is NotSupported, never "
+       "a pass"},
+      {"pipeline-refused", K::Vulkan,
+       "vkCreateRayTracingPipelinesKHR returns VK_ERROR_INITIALIZATION_FAILED for a pipeline the "
+       "validation layer accepts: the case Fails (Refused)"},
+      {"stride-ignored", K::Vulkan,
+       "the builds read vertices and AABBs tightly packed, whatever their stride "
+       "(scene.build.vertex_stride, aabb_stride)"},
+      {"offsets-ignored", K::Vulkan,
+       "the builds read primitiveOffset, firstVertex and transformOffset as 0"},
+      {"pointers-reversed", K::Vulkan,
+       "a top level built from an array of instance pointers reads them in reverse order"},
+      {"vertex-format-misread", K::Vulkan,
+       "the builds read each vertex format as another (unorm as snorm and back, float2 as half4 "
+       "and back, float4 as float3, half3 as half2, snorm16x3 as snorm16x2, half2 as unorm16x2, "
+       "unorm10x3 with R and B swapped)"},
+      {"build-writes-past-size", K::Vulkan,
+       "a build writes past the accelerationStructureSize it reported: 4 bytes of the guard "
+       "after the first structure overwritten"},
+  };
+}
+
 }  // namespace
 
 const std::vector<FaultImpl>& faultImpls() {
@@ -428,7 +460,7 @@ const std::vector<FaultImpl>& faultImpls() {
     std::vector<FaultImpl> all;
     for (auto part : {recordEdits, sceneAndFlagMutations, programMutations, sbtAndOrderMutations,
                       pipelineMutations, structureMutations, codeAndLaunchMutations,
-                      rayQueryMutations, processFaults})
+                      rayQueryMutations, processFaults, vulkanFaults})
       for (FaultImpl& f : part()) all.push_back(std::move(f));
     return all;
   }();
@@ -461,6 +493,20 @@ const std::vector<std::string>& faultNames() {
 
 bool isFaultName(const std::string& name) {
   return findFault(name) != nullptr;
+}
+
+const char* faultKindText(FaultKind kind) {
+  switch (kind) {
+    case FaultKind::RecordEdit:
+      return "the model's results, one record edited";
+    case FaultKind::CaseMutation:
+      return "the model run on the case as the faulty device sees it";
+    case FaultKind::Process:
+      return "the device's process (a live device)";
+    case FaultKind::Vulkan:
+      return "a live device's Vulkan calls";
+  }
+  return "";
 }
 
 bool isProcessFault(const std::string& name) {

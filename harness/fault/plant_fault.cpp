@@ -50,6 +50,8 @@ FaultResult plantFault(const std::string& name, const Case& c, const Plan& plan,
   const FaultImpl* f = findImpl(name);
   if (!f) return notApplicable("unknown fault '" + name + "'");
   if (f->kind == FaultKind::Process) return notApplicable("a process fault");
+  if (f->kind == FaultKind::Vulkan)
+    return notApplicable("made on a live device (rayspec run --plant-fault " + name + ")");
   // A zero-sized launch has no records, and its counters may still be wrong.
   // Nor does a case whose shaders are only compiled (expect_rejected), nor
   // one that keeps only counters (plan.records off).

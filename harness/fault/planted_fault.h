@@ -2,7 +2,8 @@
 // give, put in place of a device's results after it ran and before the
 // comparison, so tests can show that the comparison catches each rule break.
 // `rayspec run --plant-fault NAME`; `faultTable()` lists every fault with the
-// break it stands for (fault_table.cpp). Three kinds:
+// break it stands for (fault_table.cpp); `rayspec faults` prints it with the
+// rules each breaks. Four kinds:
 //   record edits    one field or run count of the device's own records
 //                   changed (e.g. drop-miss: a clear ray's miss did not run)
 //   case mutations  the model's exact tier run on the case as a device that
@@ -10,6 +11,9 @@
 //                   instance mask 0xFF); its results replace the device's
 //   process faults  raised in the device's child process: crash, crash-once,
 //                   crash-if-reused, hang
+//   Vulkan faults   made on a live device (run/fault_seam.h arms them): a
+//                   Vulkan call fails (vulkan/device_errors.h) or the builds
+//                   misread their inputs (vulkan/vk_fault_hook.h's layout faults)
 // rule_faults.h maps each rule of the catalog to the faults that break it.
 #pragma once
 
@@ -22,7 +26,7 @@
 
 namespace rayspec {
 
-enum class FaultKind { RecordEdit, CaseMutation, Process };
+enum class FaultKind { RecordEdit, CaseMutation, Process, Vulkan };
 
 struct FaultInfo {
   std::string name;
@@ -35,6 +39,7 @@ const FaultInfo* findFault(const std::string& name);
 const std::vector<std::string>& faultNames();
 bool isFaultName(const std::string& name);
 bool isProcessFault(const std::string& name);  // crash, crash-once, crash-if-reused, hang
+const char* faultKindText(FaultKind kind);     // where the fault is made, a few words
 
 struct FaultResult {
   bool applied = false;
@@ -44,7 +49,7 @@ struct FaultResult {
 // Corrupts `device` by the results fault `name`; `model` (the exact tier's
 // results) chooses the rays (clear or ambiguous). A case mutation replaces
 // the device's counters, records and images by the model's run of the mutated
-// case. Process faults and unknown names change nothing.
+// case. Process faults, Vulkan faults and unknown names change nothing.
 FaultResult plantFault(const std::string& name, const Case& c, const Plan& plan, Results& device,
                        const Results& model);
 

@@ -1,6 +1,8 @@
 // The table: every rule of the catalog and the faults that break it.
 #include "fault/rule_faults.h"
 
+#include <algorithm>
+
 namespace rayspec {
 
 namespace {
@@ -46,6 +48,30 @@ std::vector<RuleFaults> traversalRules() {
   };
 }
 
+// The rules of acceleration structures: copies, sizes, builds, memory,
+// updates and vertex formats.
+std::vector<RuleFaults> structureRules() {
+  const Status fail = Status::Fail;
+  return {
+      {"R-AS-COPY", {"copy-drops-instance"}, {}},
+      {"R-AS-SIZE", {"build-counts-16-bit"}, {}},
+      {"R-AS-BUILD",
+       {"shared-scratch-keeps-previous"},
+       {},
+       fail,
+       "",
+       {"stride-ignored", "offsets-ignored", "pointers-reversed"}},
+      {"R-AS-MEMORY", {"memory-guard-overwritten"}, {}, fail, "", {"build-writes-past-size"}},
+      {"R-AS-UPDATE", {"update-ignored", "later-updates-ignored", "copy-update-ignored"}, {}},
+      {"R-VERTEX-FORMAT",
+       {"vertex-format-ignored", "vertex-format-confused"},
+       {},
+       fail,
+       "",
+       {"vertex-format-misread"}},
+  };
+}
+
 // The rules of the pipeline around traversal: the SBT, data between stages,
 // built-ins, structures, launches and shader code.
 std::vector<RuleFaults> pipelineRules() {
@@ -83,12 +109,6 @@ std::vector<RuleFaults> pipelineRules() {
       {"R-NULL-SHADERS", {"no-null-shaders-dropped"}, {}},
       {"R-INDIRECT", {"indirect-launch-short"}, {}},
       {"R-STACK", {"stack-size-ignored"}, {}},
-      {"R-AS-COPY", {"copy-drops-instance"}, {}},
-      {"R-AS-SIZE", {"build-counts-16-bit"}, {}},
-      {"R-AS-BUILD", {"shared-scratch-keeps-previous"}, {}},
-      {"R-AS-MEMORY", {"memory-guard-overwritten"}, {}},
-      {"R-AS-UPDATE", {"update-ignored", "later-updates-ignored", "copy-update-ignored"}, {}},
-      {"R-VERTEX-FORMAT", {"vertex-format-ignored", "vertex-format-confused"}, {}},
       {"R-POSITION-FETCH", {"position-fetch-world-space"}, {}},
       {"R-LAUNCH-3D", {"launch-depth-lost", "zero-launch-runs", "wide-launch-truncated"}, {}},
       {"R-LIVE-STATE", {"locals-lost-across-calls"}, {}},
@@ -129,7 +149,8 @@ std::vector<RuleFaults> pipelineRules() {
 const std::vector<RuleFaults>& ruleFaults() {
   static const std::vector<RuleFaults> table = [] {
     std::vector<RuleFaults> all = traversalRules();
-    for (RuleFaults& r : pipelineRules()) all.push_back(std::move(r));
+    for (auto part : {pipelineRules, structureRules})
+      for (RuleFaults& r : part()) all.push_back(std::move(r));
     return all;
   }();
   return table;
@@ -139,6 +160,18 @@ const RuleFaults* findRuleFaults(const std::string& rule) {
   for (const RuleFaults& r : ruleFaults())
     if (r.rule == rule) return &r;
   return nullptr;
+}
+
+RulesOfFault rulesOfFault(const std::string& fault) {
+  RulesOfFault out;
+  const auto names = [&fault](const std::vector<std::string>& list) {
+    return std::find(list.begin(), list.end(), fault) != list.end();
+  };
+  for (const RuleFaults& r : ruleFaults()) {
+    if (names(r.breaks) || names(r.live)) out.breaks.push_back(r.rule);
+    if (names(r.legal)) out.allows.push_back(r.rule);
+  }
+  return out;
 }
 
 }  // namespace rayspec

@@ -26,11 +26,20 @@ struct RuleFaults {
   std::vector<std::string> legal;   // variations the rule allows a device
   Status expect = Status::Fail;     // QualityWarning for a "should" rule
   std::string pending;              // no fault yet: why (and whose)
+  std::vector<std::string> live;    // Vulkan faults that break it on a live device only
 };
 
 // One entry per rule of references/spec-rules.yaml (rule_faults.cpp).
 const std::vector<RuleFaults>& ruleFaults();
 const RuleFaults* findRuleFaults(const std::string& rule);
+
+// The rules whose entry names fault `fault`: as a break (breaks or live) or as
+// a variation the rule allows (legal). Both empty: a fault of the run itself
+// (a crash, a lost device), which breaks no rule of the catalog.
+struct RulesOfFault {
+  std::vector<std::string> breaks, allows;
+};
+RulesOfFault rulesOfFault(const std::string& fault);
 
 struct FaultOutcome {
   std::string fault;

@@ -1,6 +1,5 @@
-// The rule labels of the coverage contract (references/spec-rules.yaml: the
-// rule labels with short titles), and which cases
-// check which rule.
+// The rules of the coverage contract (references/spec-rules.yaml: each rule's
+// label, title, text and spec section), and which cases check which rule.
 #pragma once
 
 #include <map>
@@ -13,6 +12,8 @@ namespace rayspec {
 
 struct Rule {
   std::string label, title;
+  std::string text;  // the requirement in our words ("" in a catalog of titles only)
+  std::string spec;  // the specification's section it comes from
 };
 
 // Reads the catalog, or the error that says why not: the file is missing, or

@@ -79,7 +79,9 @@ Result<void> plantedFaultError(const RunOptions& opt) {
   const std::string& name = opt.plant_fault;
   if (name.empty()) return {};
   const bool vulkan_error = deviceErrorFault(name).has_value() || layoutFault(name).has_value();
-  if (!isFaultName(name) && !vulkan_error) return errorMessage("unknown fault '" + name + "'");
+  if (!isFaultName(name) && !vulkan_error)
+    return errorMessage("unknown fault '" + name + "' (one of " + plantableFaultNames() +
+                        "; `rayspec faults` says what each breaks)");
   if (isProcessFault(name) && opt.no_isolation)
     return errorMessage("the fault '" + name +
                         "' needs the device in a child process (no --no-isolation)");
@@ -96,9 +98,8 @@ Result<void> plantedFaultError(const RunOptions& opt) {
 
 std::string plantableFaultNames() {
   std::string list;
+  // The fault table holds the Vulkan faults too (FaultKind::Vulkan).
   for (const std::string& name : faultNames()) list += (list.empty() ? "" : ", ") + name;
-  for (const std::string& name : deviceErrorFaultNames()) list += ", " + name;
-  for (const std::string& name : layoutFaultNames()) list += ", " + name;
   return list;
 }
 

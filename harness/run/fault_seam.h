@@ -23,7 +23,8 @@ namespace rayspec {
 // results; an ErrorKind::Input error saying which.
 Result<void> plantedFaultError(const RunOptions& opt);
 
-// The names `--plant-fault` takes, comma-separated, for the option's help.
+// The names `--plant-fault` takes, comma-separated, for the message of an
+// unknown one (`rayspec faults` describes each).
 std::string plantableFaultNames();
 
 // The fault planted in this case ("" none).

@@ -1,0 +1,88 @@
+// `rayspec faults`: the fault table and the rules, printed.
+#include "mutate/fault_listing.h"
+
+#include <cstdio>
+#include <vector>
+
+#include "compare/verdict.h"
+#include "fault/planted_fault.h"
+#include "fault/rule_faults.h"
+#include "report/rule_catalog.h"
+
+namespace rayspec {
+namespace {
+
+// What a fault stands for: the rules it breaks or that allow it.
+std::string rulesLine(const FaultInfo& f) {
+  const RulesOfFault r = rulesOfFault(f.name);
+  std::string line;
+  if (!r.breaks.empty()) line = "breaks " + commaList(r.breaks);
+  if (!r.allows.empty()) line += (line.empty() ? "" : "; ") + ("allowed by " + commaList(r.allows));
+  if (line.empty()) line = "no rule: a fault of the run itself (how a run reports it)";
+  return line;
+}
+
+void printFault(const FaultInfo& f) {
+  const bool live = f.kind == FaultKind::Process || f.kind == FaultKind::Vulkan;
+  std::printf("%s  %s%s\n    %s\n", f.name.c_str(), rulesLine(f).c_str(),
+              live ? " (a live device only)" : "", f.breaks.c_str());
+}
+
+void printFaultList(const std::string& heading, const std::vector<std::string>& names) {
+  if (names.empty()) return;
+  std::printf("\n%s\n", heading.c_str());
+  for (const std::string& name : names)
+    if (const FaultInfo* f = findFault(name))
+      std::printf("  %s\n      %s\n", name.c_str(), f->breaks.c_str());
+}
+
+int printRule(const Rule& rule) {
+  std::printf("%s: %s\n", rule.label.c_str(), rule.title.c_str());
+  if (!rule.text.empty()) std::printf("  %s\n", rule.text.c_str());
+  if (!rule.spec.empty()) std::printf("  Specification: %s\n", rule.spec.c_str());
+  const RuleFaults* rf = findRuleFaults(rule.label);
+  if (!rf) {
+    std::printf("\nNo planted fault stands for this rule yet.\n");
+    return 0;
+  }
+  if (!rf->pending.empty()) std::printf("\nNo fault: %s\n", rf->pending.c_str());
+  printFaultList("Faults that break it (a case claiming it must " +
+                     std::string(statusName(rf->expect)) +
+                     " under one; rayspec prove plants each):",
+                 rf->breaks);
+  printFaultList("Faults that break it on a live device only (rayspec run --plant-fault NAME):",
+                 rf->live);
+  printFaultList("Variations it allows (a case claiming it must still pass each):", rf->legal);
+  return 0;
+}
+
+}  // namespace
+
+std::string commaList(const std::vector<std::string>& list) {
+  std::string out;
+  for (const std::string& s : list) out += (out.empty() ? "" : ", ") + s;
+  return out;
+}
+
+int runFaults(const FaultsOptions& opt) {
+  if (opt.rule.empty()) {
+    std::printf("Planted faults (rayspec run --plant-fault NAME, rayspec prove): %zu\n\n",
+                faultTable().size());
+    for (const FaultInfo& f : faultTable()) printFault(f);
+    return 0;
+  }
+  const Result<std::vector<Rule>> catalog = loadRuleCatalog(opt.rules_file);
+  if (!catalog) {
+    std::fprintf(stderr, "rayspec faults: %s\n", catalog.error().format().c_str());
+    return 2;
+  }
+  for (const Rule& r : *catalog)
+    if (r.label == opt.rule) return printRule(r);
+  std::fprintf(stderr,
+               "rayspec faults: --rule: unknown rule '%s' (not in %s; `rayspec list --rules` "
+               "lists the rules)\n",
+               opt.rule.c_str(), opt.rules_file.c_str());
+  return 2;
+}
+
+}  // namespace rayspec
