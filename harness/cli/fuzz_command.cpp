@@ -65,6 +65,9 @@ Subcommand addFuzzCommand(CLI::App& app) {
                    "Known driver bug classes (lines `FEATURE REASON`): a finding whose case holds "
                    "one's feature is counted apart and does not fail the run")
       ->check(CLI::ExistingFile);
+  fuzz->add_flag("--fault-matrix", o.fault_matrix,
+                 "Plant every rule-breaking fault in each passing case's device results until a "
+                 "case finds it: OUT/fault-matrix.txt (fault, rules, found, first case)");
   addDeviceOptions(fuzz, o.run);
   return {fuzz, [opt, through] {
             if (!through->empty()) opt->run.through = featurePathFromName(*through);

@@ -7,6 +7,9 @@
 // rewritten after every batch. With --reduce, each new signature's case is
 // then reduced by `rayspec reduce` (reduce/reduce_case.h) into
 // OUT/findings/<signature>/reduce/, its reduced.yaml copied beside case.yaml.
+// With --fault-matrix, every rule-breaking planted fault is planted in each
+// passing case's device results until a case finds it
+// (mutate/fault_matrix.h), OUT/fault-matrix.txt rewritten after every batch.
 #pragma once
 
 #include <cstdint>
@@ -22,9 +25,10 @@ struct FuzzOptions {
   double minutes = 0;  // --minutes: batches until this much time has passed
   size_t batch = 16;   // cases a run of the run loop
   std::string out = "rayspec-fuzz";
-  size_t reduce = 0;  // --reduce: attempts to reduce each new signature's case (0: none)
-  std::string known;  // --known: known bug classes (fuzz/known_classes.h); "" none
-  RunOptions run;     // the device, the model, --through, --plant-fault
+  size_t reduce = 0;          // --reduce: attempts to reduce each new signature's case (0: none)
+  std::string known;          // --known: known bug classes (fuzz/known_classes.h); "" none
+  bool fault_matrix = false;  // --fault-matrix: OUT/fault-matrix.txt
+  RunOptions run;             // the device, the model, --through, --plant-fault
 };
 
 // 0: nothing found but known classes; 1: new findings (OUT/fuzz.txt lists them); 2: bad options
