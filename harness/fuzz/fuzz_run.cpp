@@ -76,7 +76,7 @@ void keepFinding(const FuzzOptions& opt, uint64_t seed, const CaseOutcome& o,
 
 // Every fault the matrix has not found yet planted in the device results
 // of each case of the batch that passed.
-void plantFaults(const FuzzOptions& opt, const RunOptions& run,
+void fillFaultMatrix(const FuzzOptions& opt, const RunOptions& run,
                  const std::vector<CaseOutcome>& outcomes, FaultMatrix& matrix) {
   const Result<RunOptions> variant = savedRunVariant(run.out);
   if (!variant) {
@@ -128,7 +128,7 @@ bool runBatch(const FuzzOptions& opt, const std::vector<KnownClass>& known, size
     if (const FuzzTally::Group* opened = tally.add(seed, o, knownClassOf(known, features[seed])))
       keepFinding(opt, seed, o, *opened);
   }
-  if (matrix) plantFaults(opt, run, **journal, *matrix);
+  if (matrix) fillFaultMatrix(opt, run, **journal, *matrix);
   return status != kExitSetup;
 }
 
