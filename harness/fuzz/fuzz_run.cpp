@@ -77,7 +77,7 @@ void keepFinding(const FuzzOptions& opt, uint64_t seed, const CaseOutcome& o,
 // Every fault the matrix has not found yet planted in the device results
 // of each case of the batch that passed.
 void fillFaultMatrix(const FuzzOptions& opt, const RunOptions& run,
-                 const std::vector<CaseOutcome>& outcomes, FaultMatrix& matrix) {
+                     const std::vector<CaseOutcome>& outcomes, FaultMatrix& matrix) {
   const Result<RunOptions> variant = savedRunVariant(run.out);
   if (!variant) {
     std::fprintf(stderr, "rayspec fuzz: %s\n", variant.error().format().c_str());
