@@ -73,6 +73,10 @@ Subcommand addFuzzCommand(CLI::App& app) {
                    "this folder (elsewhere, as run --device-results) instead of running a device")
       ->check(CLI::ExistingDirectory)
       ->excludes(generate_only);
+  fuzz->add_flag("--fault-matrix", o.fault_matrix,
+                 "Plant every rule-breaking fault in each passing case's device results until a "
+                 "case finds it: OUT/fault-matrix.txt (fault, rules, found, first case)")
+      ->excludes(generate_only);
   addDeviceOptions(fuzz, o.run);
   return {fuzz, [opt, through] {
             if (!through->empty()) opt->run.through = featurePathFromName(*through);

@@ -5,10 +5,12 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "case/case.h"
 #include "case/seeded_random.h"
 #include "program/program.h"
 
@@ -49,14 +51,29 @@ class CaseGenerator {
  private:
   // Scene parts (generate_scene.cpp).
   void blasList();
-  void triangleGeometry();
-  void aabbGeometry();
+  bool triangleGeometry(Geometry& g);  // true: a mesh shape
+  void explicitTriangles(Geometry& g);
+  void aabbGeometry(Geometry& g);
   void instance();
-  std::string transform();
+  std::string transform(Transform& m);
   std::string instanceFlags();
+  // Layouts, updates and copies (generate_layout.cpp).
+  void buildLayout();
+  void updates();
+  std::string updateStep();
+  std::string drawFormat(Geometry& g);
+  Vec3 drawVertex(VertexFormat f);
+  std::array<float, 6> drawBox();
   // Ray parts (generate_rays.cpp).
   std::string rayFlags();
   std::string listRay();
+  std::string wanderingRay();
+  // Rays aimed at generated primitives (generate_aim.cpp).
+  struct Placed;
+  std::optional<std::string> aimedRay();
+  std::string aimedText(const Placed& inst, const Geometry& g, DVec3 at, DVec3 along,
+                        const std::string& feature);
+  std::string aimForm();
   // Programs (generate_programs.cpp).
   std::string raygenProgram();
   std::string missProgram(Stage stage);
@@ -71,6 +88,13 @@ class CaseGenerator {
     std::string name;
     bool aabbs = false;
     size_t geometries = 0;
+    std::vector<Geometry> data;  // as built, then as the last update left them
+    std::vector<bool> shaped;    // a mesh shape (fan, grid, triangulation): not updated
+  };
+  // An active instance: its BLAS, its transform as the last update left it.
+  struct Placed {
+    size_t blas = 0;
+    Transform transform = kIdentity;
   };
   // A range of hit groups one or more instances reach (sbt_offset .. + geometries).
   struct GroupRange {
@@ -84,6 +108,9 @@ class CaseGenerator {
   std::set<std::string> features_;
   std::vector<Blas> blas_;
   std::vector<GroupRange> ranges_;
+  std::vector<std::optional<Placed>> instances_;  // empty: an inactive instance
+  size_t updates_ = 0;                            // scene.update steps
+  std::string copy_ = "none";                     // scene.build.copy
   size_t hit_groups_ = 0;
   std::vector<bool> group_aabbs_;  // each hit group's kind
   size_t miss_count_ = 1;

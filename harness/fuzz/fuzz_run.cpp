@@ -4,12 +4,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "base/output_folder.h"
 #include "base/whole_file.h"
 #include "fuzz/fuzz_tally.h"
 #include "fuzz/generate_case.h"
+#include "mutate/fault_matrix.h"
 #include "reduce/reduce_case.h"
 #include "report/case_journal.h"
 #include "run/interrupt.h"
@@ -72,11 +74,35 @@ void keepFinding(const FuzzOptions& opt, uint64_t seed, const CaseOutcome& o,
   if (!written) std::fprintf(stderr, "rayspec fuzz: %s\n", written.error().format().c_str());
 }
 
+// Every fault the matrix has not found yet planted in the device results
+// of each case of the batch that passed.
+void fillFaultMatrix(const FuzzOptions& opt, const RunOptions& run,
+                     const std::vector<CaseOutcome>& outcomes, FaultMatrix& matrix) {
+  const Result<RunOptions> variant = savedRunVariant(run.out);
+  if (!variant) {
+    std::fprintf(stderr, "rayspec fuzz: %s\n", variant.error().format().c_str());
+    return;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  for (const CaseOutcome& o : outcomes) {
+    if (o.verdict.status != Status::Pass || interruptSignal()) continue;
+    CaseFile f;
+    f.name = o.name;
+    f.path = (fs::path(run.cases_dir) / (o.name + ".yaml")).string();
+    const Result<SavedCase> saved = loadSavedCase(f, run.cases_dir, run.out, *variant, 0);
+    if (saved) matrix.add(o.name, *saved);
+  }
+  matrix.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const Result<void> written =
+      writeWholeFile((fs::path(opt.out) / "fault-matrix.txt").string(), matrix.text());
+  if (!written) std::fprintf(stderr, "rayspec fuzz: %s\n", written.error().format().c_str());
+}
+
 // One batch: its cases written, run by the run loop, their outcomes
-// tallied. False: nothing could run (the run's own error is on stderr), or
-// a signal stopped it.
+// tallied (and, with a matrix, the faults planted in them). False: nothing
+// could run (the run's own error is on stderr), or a signal stopped it.
 bool runBatch(const FuzzOptions& opt, const std::vector<KnownClass>& known, size_t index,
-              uint64_t first, size_t count, FuzzTally& tally) {
+              uint64_t first, size_t count, FuzzTally& tally, FaultMatrix* matrix) {
   RunOptions run = opt.run;
   run.cases_dir = (fs::path(opt.out) / "cases").string();
   run.out = (fs::path(opt.out) / "runs" / ("batch-" + std::to_string(index))).string();
@@ -102,6 +128,7 @@ bool runBatch(const FuzzOptions& opt, const std::vector<KnownClass>& known, size
     if (const FuzzTally::Group* opened = tally.add(seed, o, knownClassOf(known, features[seed])))
       keepFinding(opt, seed, o, *opened);
   }
+  if (matrix) fillFaultMatrix(opt, run, **journal, *matrix);
   return status != kExitSetup;
 }
 
@@ -160,8 +187,8 @@ int runFuzz(const FuzzOptions& opt) {
     std::fprintf(stderr, "rayspec fuzz: %s\n", known.error().format().c_str());
     return kExitSetup;
   }
-  const Result<OutputFolder> held =
-      claimOutputFolder(opt.out, {"cases", "runs", "findings", "fuzz.txt"}, "fuzz");
+  const Result<OutputFolder> held = claimOutputFolder(
+      opt.out, {"cases", "runs", "findings", "fuzz.txt", "fault-matrix.txt"}, "fuzz");
   if (!held) {
     std::fprintf(stderr, "rayspec fuzz: %s\n", held.error().format().c_str());
     return kExitSetup;
@@ -181,12 +208,14 @@ int runFuzz(const FuzzOptions& opt) {
   const auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
+  std::optional<FaultMatrix> matrix;
+  if (opt.fault_matrix) matrix.emplace();
   bool ran = true;
   for (size_t b = 0; ran; ++b) {
     const size_t done = tally.generated;
     if (opt.cases ? done >= opt.cases : elapsed() >= 60.0 * opt.minutes) break;
     const size_t count = opt.cases ? std::min(opt.batch, opt.cases - done) : opt.batch;
-    ran = runBatch(opt, *known, b, opt.seed + done, count, tally);
+    ran = runBatch(opt, *known, b, opt.seed + done, count, tally, matrix ? &*matrix : nullptr);
     tally.seconds = elapsed();
     writeFuzzText(opt, tally);
   }
@@ -195,6 +224,7 @@ int runFuzz(const FuzzOptions& opt) {
     writeFuzzText(opt, tally);
   }
   std::printf("%s", tally.text().c_str());
+  if (matrix) std::printf("%s", matrix->text().substr(0, matrix->text().find('\n') + 1).c_str());
   if (interruptSignal()) return 128 + interruptSignal();
   if (tally.run == 0) return kExitSetup;
   return tally.findingCases(false) == 0 ? 0 : 1;

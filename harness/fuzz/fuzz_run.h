@@ -7,6 +7,9 @@
 // rewritten after every batch. With --reduce, each new signature's case is
 // then reduced by `rayspec reduce` (reduce/reduce_case.h) into
 // OUT/findings/<signature>/reduce/, its reduced.yaml copied beside case.yaml.
+// With --fault-matrix, every rule-breaking planted fault is planted in each
+// passing case's device results until a case finds it
+// (mutate/fault_matrix.h), OUT/fault-matrix.txt rewritten after every batch.
 #pragma once
 
 #include <cstdint>
@@ -26,6 +29,7 @@ struct FuzzOptions {
   std::string known;           // --known: known bug classes (fuzz/known_classes.h); "" none
   bool generate_only = false;  // --generate-only: write OUT/cases and stop (a device elsewhere
                                // runs them; --device-results judges what it saved)
+  bool fault_matrix = false;   // --fault-matrix: OUT/fault-matrix.txt
   RunOptions run;              // the device, the model, --through, --plant-fault, --device-results
 };
 

@@ -9,9 +9,17 @@ const std::vector<std::string>& generatorFeatures() {
       // the scene
       "several-blas", "several-geometries", "triangles", "aabbs", "indexed", "non-indexed",
       "nan-vertex", "nan-box", "non-opaque-geometry", "inactive-instance", "rotation", "mirror",
-      "non-uniform-scale", "instance-mask", "sbt-offset", "instance-flags",
+      "non-uniform-scale", "instance-mask", "sbt-offset", "instance-flags", "custom-index-24",
+      "mesh-shape", "geometry-transform", "vertex-format",
+      // layouts, copies and updates
+      "build-flags", "copy-clone", "copy-compact", "copy-serialize", "copy-before-update",
+      "copy-after-updates", "instances-as-pointers", "data-offsets", "first-vertex",
+      "vertex-stride", "aabb-stride", "one-by-one", "update-into-other", "tlas-rebuild",
+      "update-vertices", "update-boxes", "update-instances", "several-updates",
       // the rays
       "ray-list", "ray-grid", "ray-interval", "ray-flags", "cull-mask", "sbt-stride-0",
+      "aimed-centre", "aimed-edge", "aimed-vertex", "aimed-box-centre", "aimed-box-boundary",
+      "grazing-ray", "huge-ray", "aim-form",
       // the programs
       "callables", "any-hit-ignore", "any-hit-terminate", "any-hit-payload", "conditional-report",
       "two-reports"};

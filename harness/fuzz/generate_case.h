@@ -1,10 +1,14 @@
 // `rayspec fuzz`'s cases: from a seed, a random case as case-file YAML (a
 // file `rayspec run` runs again), the same text from the same seed on every
 // machine (case/seeded_random.h: no std:: distributions). The scene (random
-// instances with rotations, non-uniform scales and mirrors, masks, SBT
-// offsets and flags; several BLASes of triangles, indexed or not, or boxes,
-// several geometries each, opaque or not, inactive and NaN primitives mixed
-// in), the rays (a list or a grid; tmin, tmax, flags, cull masks, miss
+// instances with rotations, non-uniform scales and mirrors, masks, custom
+// indices over 24 bits, SBT offsets and flags; several BLASes of triangles,
+// indexed or not, in any vertex format, behind a geometry transform, or a
+// mesh shape, or boxes, several geometries each, opaque or not, inactive
+// and NaN primitives mixed in; build flags and input layouts; copies and
+// updates in random order), the rays (a list mostly aimed at centres,
+// edges and vertices of the primitives, grazing or from far away now and
+// then, a grid, or the aim form; tmin, tmax, flags, cull masks, miss
 // indices) and the stage programs (raygen, miss, closest-hit, any-hit that
 // ignores or terminates on a condition, intersection reports, callables;
 // records of built-ins and Uint expressions drawn from the vocabulary,

@@ -1,5 +1,6 @@
-// The rays of a generated case: a list aimed at the scene from around it,
-// or a grid looking down; tmin, tmax, flags, cull masks, miss indices.
+// The rays of a generated case: a list aimed at the scene's primitives or
+// from around it, a grid looking down, or the `aim` form over a mesh; tmin,
+// tmax, flags, cull masks, miss indices.
 #include "fuzz/case_generator.h"
 
 namespace rayspec {
@@ -25,11 +26,19 @@ std::string CaseGenerator::rayFlags() {
 }
 
 // From a point around the scene towards one inside it.
-std::string CaseGenerator::listRay() {
+std::string CaseGenerator::wanderingRay() {
   const double ox = eighths(-6, 6), oy = eighths(-6, 6), oz = chance(0.5) ? 6.0 : -6.0;
   const double tx = eighths(-1.5, 1.5), ty = eighths(-1.5, 1.5), tz = eighths(-1, 1);
-  std::string ray = "{origin: [" + num(ox) + ", " + num(oy) + ", " + num(oz) + "], direction: [" +
-                    num(tx - ox) + ", " + num(ty - oy) + ", " + num(tz - oz) + "]";
+  return "{origin: [" + num(ox) + ", " + num(oy) + ", " + num(oz) + "], direction: [" +
+         num(tx - ox) + ", " + num(ty - oy) + ", " + num(tz - oz) + "]";
+}
+
+// Aimed at a primitive (generate_aim.cpp: the point at t = 1) mostly, else
+// wandering; an interval, flags, a cull mask and a miss index now and then.
+std::string CaseGenerator::listRay() {
+  std::optional<std::string> aimed;
+  if (chance(0.75)) aimed = aimedRay();
+  std::string ray = aimed ? *aimed : wanderingRay();
   if (chance(0.2)) {
     const double tmin = eighths(0, 0.5);
     ray += ", tmin: " + num(tmin) + ", tmax: " + num(tmin + eighths(0.25, 2));
@@ -39,7 +48,8 @@ std::string CaseGenerator::listRay() {
   if (!flags.empty()) ray += ", flags: [" + flags + "]";
   if (chance(0.2)) {
     features_.insert("cull-mask");
-    ray += ", cull_mask: " + std::to_string(oneOf<int>({1, 2, 0x7F, 0x80}));
+    ray += ", cull_mask: " +
+           std::to_string(chance(0.5) ? oneOf<int>({1, 2, 0x7F, 0x80}) : int(pick(256)));
   }
   if (miss_count_ > 1 && chance(0.5)) ray += ", miss: " + std::to_string(pick(miss_count_));
   return ray + "}";
@@ -48,10 +58,13 @@ std::string CaseGenerator::listRay() {
 void CaseGenerator::rays() {
   miss_count_ = 1 + pick(2);
   out_ += "rays:\n";
-  if (chance(0.6)) {
+  const std::string aim = chance(0.25) ? aimForm() : "";
+  if (!aim.empty()) {
+    out_ += aim;
+  } else if (chance(0.7)) {
     features_.insert("ray-list");
     out_ += "  list:\n";
-    const size_t count = 2 + pick(6);
+    const size_t count = 2 + pick(8);
     for (size_t i = 0; i < count; ++i) out_ += "    - " + listRay() + "\n";
   } else {
     features_.insert("ray-grid");

@@ -25,10 +25,9 @@ CaseMutation notJudged(const std::string& name, const std::string& why) {
   return m;
 }
 
-// The variant the run's cases ran as (its summary.json's; none there: as
-// written), so that each case is judged as it ran (--through ray-query*: the
-// traces its query faults break as query loops). The error names the file.
-Result<RunOptions> runVariantOf(const std::string& run_dir) {
+}  // namespace
+
+Result<RunOptions> savedRunVariant(const std::string& run_dir) {
   RunOptions variant;
   std::error_code ec;
   if (!fs::exists(fs::path(run_dir) / "summary.json", ec)) return variant;
@@ -38,26 +37,12 @@ Result<RunOptions> runVariantOf(const std::string& run_dir) {
   return variant;
 }
 
+namespace {
+
 CaseMutation mutateOne(const CaseFile& f, const MutateOptions& opt, const RunOptions& variant) {
-  const ParseResult parsed = loadCase(f, opt.cases_dir);
-  if (!parsed.value) {
-    std::string why = "case file error";
-    for (const Error& e : parsed.errors) why += "; " + e.format();
-    return notJudged(f.name, why);
-  }
-  const CaseAsRun as_run = caseAsRun(*parsed.value, variant);
-  if (as_run.not_run) return notJudged(f.name, as_run.not_run->headline);
-  const Case& c = *as_run.runs;
-  const Plan plan = derivePlan(c);
-  const Result<Results> saved = SavedDevice(opt.run_dir).run(c, plan);
-  if (!saved) return notJudged(f.name, saved.error().format());
-  const Results& device = *saved;
-  if (!device.ok()) return notJudged(f.name, "device: " + device.statusText());
-  ModelOptions mo;
-  mo.threads = opt.threads;
-  const Results model = runOnModel(c, plan, mo);
-  if (!model.ok()) return notJudged(f.name, "model: " + model.statusText());
-  return mutateCase(c, plan, device, model, opt.threads);
+  Result<SavedCase> saved = loadSavedCase(f, opt.cases_dir, opt.run_dir, variant, opt.threads);
+  if (!saved) return notJudged(f.name, saved.error().message);
+  return mutateCase(saved->c, saved->plan, saved->device, saved->model, opt.threads);
 }
 
 // The reports of a kill matrix in --out.
@@ -65,6 +50,29 @@ constexpr const char* kMutateText = "mutate.txt";
 constexpr const char* kMutateJson = "mutate.json";
 
 }  // namespace
+
+Result<SavedCase> loadSavedCase(const CaseFile& f, const std::string& cases_dir,
+                                const std::string& run_dir, const RunOptions& variant,
+                                unsigned threads) {
+  const ParseResult parsed = loadCase(f, cases_dir);
+  if (!parsed.value) {
+    std::string why = "case file error";
+    for (const Error& e : parsed.errors) why += "; " + e.format();
+    return errorMessage(why);
+  }
+  const CaseAsRun as_run = caseAsRun(*parsed.value, variant);
+  if (as_run.not_run) return errorMessage(as_run.not_run->headline);
+  SavedCase s{*as_run.runs, derivePlan(*as_run.runs), {}, {}};
+  Result<Results> device = SavedDevice(run_dir).run(s.c, s.plan);
+  if (!device) return errorMessage(device.error().format());
+  if (!device->ok()) return errorMessage("device: " + device->statusText());
+  s.device = std::move(*device);
+  ModelOptions mo;
+  mo.threads = threads;
+  s.model = runOnModel(s.c, s.plan, mo);
+  if (!s.model.ok()) return errorMessage("model: " + s.model.statusText());
+  return s;
+}
 
 int runMutate(const MutateOptions& opt) {
   if (!modelInThisBuild()) {
@@ -84,7 +92,7 @@ int runMutate(const MutateOptions& opt) {
     std::fprintf(stderr, "rayspec mutate: %s\n", held.error().format().c_str());
     return 2;
   }
-  const Result<RunOptions> variant = runVariantOf(opt.run_dir);
+  const Result<RunOptions> variant = savedRunVariant(opt.run_dir);
   if (!variant) {
     std::fprintf(stderr, "rayspec mutate: %s\n", variant.error().format().c_str());
     return 2;

@@ -39,10 +39,12 @@ std::string plantedSurvival(const Results& model, const std::vector<uint32_t>& r
   return all ? "R-UB: every changed ray has undefined behaviour" : "";
 }
 
-MutantOutcome judgePlanted(const Case& c, const Plan& plan, const Results& model,
-                           const Results& base, const FaultInfo& f) {
+}  // namespace
+
+MutantOutcome judgePlantedFault(const Case& c, const Plan& plan, const Results& model,
+                                const Results& base, const FaultInfo& f, bool explain) {
   MutantOutcome o;
-  o.kind = "planted-query";
+  o.kind = "planted";
   o.name = "planted:" + f.name;
   Results device = base;
   const FaultResult r = plantFault(f.name, c, plan, device, model);
@@ -58,20 +60,22 @@ MutantOutcome judgePlanted(const Case& c, const Plan& plan, const Results& model
   o.status = v.status;
   o.headline = v.headline();
   o.killed = isFailing(v.status);
+  if (!explain) return o;
   if (!o.killed) o.legal_reason = plantedSurvival(model, o.mutation.rays);
   if (!o.killed && o.legal_reason.empty())
     o.legal_reason = legalOutput(c, plan, model, base, device, o.mutation.rays);
   return o;
 }
 
-}  // namespace
-
 std::vector<MutantOutcome> judgePlantedFaults(const Case& c, const Plan& plan,
                                               const Results& model) {
   std::vector<MutantOutcome> out;
   const Results base = perfectDevice(c, model);
   for (const FaultInfo& f : faultTable())
-    if (isQueryFault(f)) out.push_back(judgePlanted(c, plan, model, base, f));
+    if (isQueryFault(f)) {
+      out.push_back(judgePlantedFault(c, plan, model, base, f, true));
+      out.back().kind = "planted-query";
+    }
   return out;
 }
 

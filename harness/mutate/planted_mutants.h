@@ -12,9 +12,17 @@
 
 #include <vector>
 
+#include "fault/planted_fault.h"
 #include "mutate/mutate_case.h"
 
 namespace rayspec {
+
+// The planted fault `f` in `base` (a device's results that pass), judged
+// against `model`: killed when the comparison fails. Kind "planted", name
+// "planted:<fault>"; `explain`: a survivor gets its legal reason (or none:
+// a hole), which costs model runs.
+MutantOutcome judgePlantedFault(const Case& c, const Plan& plan, const Results& model,
+                                const Results& base, const FaultInfo& f, bool explain);
 
 // Kind "planted-query", name "planted:<fault>"; one per query fault.
 std::vector<MutantOutcome> judgePlantedFaults(const Case& c, const Plan& plan,
