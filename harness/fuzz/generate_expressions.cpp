@@ -112,7 +112,7 @@ std::string ProgramGenerator::floatExpr(Stage stage, int depth) {
 std::string ProgramGenerator::exactColor(Stage stage) {
   feature("float-color");
   std::string c = "{vec4: [";
-  for (int i = 0; i < 4; ++i) c += (i ? ", " : "") + floatExpr(stage, 2);
+  for (int i = 0; i < 4; ++i) c += (i ? ", " : "") + floatExpr(stage, 1 + int(g_.pick(2)));
   return c + "]}";
 }
 

@@ -18,7 +18,7 @@ std::string program(const std::vector<std::string>& parts) {
 }  // namespace
 
 bool ProgramGenerator::mayTraceNested() const {
-  return max_recursion_ > 1 && (!inlined_ || nested_sites_ < 4);
+  return max_recursion_ > 1 && nested_sites_ < 2;
 }
 
 std::string ProgramGenerator::raygenProgram() {
@@ -60,7 +60,7 @@ std::string ProgramGenerator::missProgram() {
     if (!c.empty()) calls += (calls.empty() ? "" : ", ") + c;
   }
   p.push_back(g_.chance(0.5) ? liveLocal(Stage::Miss, calls) : calls);
-  std::string payload = "{payload: {value: " + g_.uintExpr(Stage::Miss, 2);
+  std::string payload = "{payload: {value: " + g_.uintExpr(Stage::Miss, 1);
   if (g_.chance(0.4)) {
     colors_ = true;
     payload += ", color: " + (g_.chance(0.5) ? exactColor(Stage::Miss) : builtinColor(Stage::Miss));
@@ -91,7 +91,7 @@ std::string ProgramGenerator::closestHitProgram(bool aabbs) {
     if (!c.empty()) calls += (calls.empty() ? "" : ", ") + c;
   }
   p.push_back(g_.chance(0.5) ? liveLocal(Stage::ClosestHit, calls) : calls);
-  std::string payload = "{payload: {value: " + g_.uintExpr(Stage::ClosestHit, 2);
+  std::string payload = "{payload: {value: " + g_.uintExpr(Stage::ClosestHit, 1);
   if (g_.chance(0.4)) {
     colors_ = true;
     payload += ", color: " +
@@ -100,7 +100,7 @@ std::string ProgramGenerator::closestHitProgram(bool aabbs) {
   p.push_back(payload + "}}");
   if (g_.chance(0.5)) {
     g_.fields_.insert("value1");
-    p.push_back("{record: {value1: " + g_.uintExpr(Stage::ClosestHit, 3) + "}}");
+    p.push_back("{record: {value1: " + g_.uintExpr(Stage::ClosestHit, 2) + "}}");
   }
   // Barycentrics and a box's attribute aside (a known lavapipe class).
   if (!aabbs && g_.chance(0.3))
@@ -177,7 +177,7 @@ std::string ProgramGenerator::hitGroups() {
       group += (group.empty() ? "" : ", ") + key + ": " + program;
     };
     if (aabbs) add("intersection", intersectionProgram());
-    if (g_.chance(0.75)) add("any_hit", anyHitProgram(aabbs));
+    if (g_.chance(0.65)) add("any_hit", anyHitProgram(aabbs));
     if (g_.chance(0.85)) add("closest_hit", closestHitProgram(aabbs));
     out += "    - {" + group + "}\n";
   }
@@ -218,9 +218,11 @@ void ProgramGenerator::pipeline() {
   if (inlined_) feature(compute_ ? "traces-compute" : "traces-ray-query");
   g_.callable_count_ = !compute_ && g_.chance(0.5) ? 1 + g_.pick(2) : 0;
   if (g_.callable_count_) feature("callables");
-  max_recursion_ = g_.chance(0.45) ? 2 + static_cast<int>(g_.pick(2)) : 1;
+  max_recursion_ = g_.chance(0.45) ? (g_.chance(0.25) ? 3 : 2) : 1;
   // Inlined, every nested trace is a copy of the hit and miss programs per
-  // level (the parser refuses more than 64): two levels, few sites.
+  // level (the parser refuses more than 64): two levels. Lavapipe compiles
+  // the any-hit and intersection programs into every trace site: at most
+  // two nested sites a case (mayTraceNested), or a case takes minutes.
   if (inlined_) max_recursion_ = std::min(max_recursion_, 2);
   accumulates_ = g_.chance(0.5);
   // Drawn in the order their facts are needed: the colours and functions
