@@ -4,19 +4,20 @@
 #include "fuzz/program_generator.h"
 
 namespace rayspec {
-namespace {
+namespace {}  // namespace
 
-// Whether a closest-hit's expression reads a hit built-in that lavapipe
-// 25.0.7 reads from the nested hit after a trace (a known class:
-// builtins/after-nested in references/baselines/lavapipe.csv).
-bool readsHitBuiltin(const std::string& text) {
+// Whether a closest-hit program reads, after its nested trace, a hit
+// built-in that lavapipe 25.0.7 reads from the nested hit (a known class:
+// builtins/after-nested in references/baselines/lavapipe.csv): anything from
+// the statement that takes the nested payload on.
+bool ProgramGenerator::readsHitBuiltinAfterTrace(const std::string& program) {
+  const size_t after = program.find(kAfterNestedTrace);
+  if (after == std::string::npos) return false;
   for (const char* name : {"instance_id", "instance_custom_index", "primitive_id", "geometry_index",
                            "hit_kind", "object_to_world", "world_to_object"})
-    if (text.find(name) != std::string::npos) return true;
+    if (program.find(name, after) != std::string::npos) return true;
   return false;
 }
-
-}  // namespace
 
 // A trace from closest-hit or miss, only below max_recursion (the depth
 // built-in decides, so no ray goes deeper: R-UB), from the ray's origin or
@@ -41,10 +42,9 @@ std::string ProgramGenerator::nestedTrace(Stage stage) {
   std::string s = "{let: {" + before + ": " + g_.uintExpr(stage, 1) + "}}";
   std::string then = "{trace: {origin: " + origin + ", direction: " + direction +
                      ", payload: {value: " + g_.uintExpr(stage, 1) + "}}}";
-  then += ", {payload: {value: {add: [child.value, var." + before + "]}}}";
-  const std::string after = g_.uintExpr(stage, 1);
-  if (stage == Stage::ClosestHit && readsHitBuiltin(after)) feature("hit-builtin-after-trace");
-  then += ", {record: {" + freeField() + ": {bit_xor: [var." + before + ", " + after + "]}}}";
+  then += ", " + std::string(kAfterNestedTrace) + before + "]}}}";
+  then += ", {record: {" + freeField() + ": {bit_xor: [var." + before + ", " +
+          g_.uintExpr(stage, 1) + "]}}}";
   if (g_.chance(0.3)) then += ", {record: {" + colorField() + ": child.color}}";
   return s + ", {if: {lt: [depth, " + std::to_string(max_recursion_) + "]}, then: [" + then + "]}";
 }

@@ -107,7 +107,9 @@ std::string ProgramGenerator::closestHitProgram(bool aabbs) {
     p.push_back("{record: {" + colorField() + ": " + builtinColor(Stage::ClosestHit) + "}}");
   if (g_.chance(0.3)) p.push_back(controlFlow(Stage::ClosestHit));
   if (!inlined_ && g_.chance(0.1)) p.push_back(rayQuery(Stage::ClosestHit));
-  return program(p);
+  const std::string text = program(p);
+  if (readsHitBuiltinAfterTrace(text)) feature("hit-builtin-after-trace");
+  return text;
 }
 
 // Counts, accumulates into payload.word0 (a sum or a set of bits: the same

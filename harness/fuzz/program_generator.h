@@ -48,6 +48,10 @@ class ProgramGenerator {
   std::string controlFlow(Stage stage);
   std::string liveLocal(Stage stage, const std::string& across);
   std::string anyHitDecision(bool aabbs);
+  // The statement right after a nested trace (its payload folded in), up to
+  // the local's name.
+  static constexpr const char* kAfterNestedTrace = "{payload: {value: {add: [child.value, var.";
+  static bool readsHitBuiltinAfterTrace(const std::string& program);
 
   // Expressions (generate_expressions.cpp).
   std::string floatAtom(Stage stage);
