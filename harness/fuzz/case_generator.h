@@ -44,7 +44,8 @@ class CaseGenerator {
   std::string vec3(double lo, double hi);
 
   // A random Uint expression of `stage` (fuzz/stage_vocabulary.h), nested
-  // at most `depth` operators deep; a random Bool condition over one.
+  // at most `depth` operators deep; a random Bool condition over one
+  // (generate_expressions.cpp).
   std::string uintExpr(Stage stage, int depth);
   std::string condition(Stage stage);
 
@@ -74,14 +75,8 @@ class CaseGenerator {
   std::string aimedText(const Placed& inst, const Geometry& g, DVec3 at, DVec3 along,
                         const std::string& feature);
   std::string aimForm();
-  // Programs (generate_programs.cpp).
-  std::string raygenProgram();
-  std::string missProgram(Stage stage);
-  std::string closestHitProgram();
-  std::string anyHitProgram();
-  std::string intersectionProgram();
-  std::string callableProgram();
-  void hitGroups();
+  // The pipeline's programs (fuzz/program_generator.h).
+  friend class ProgramGenerator;
   std::string uintAtom(Stage stage);
 
   struct Blas {

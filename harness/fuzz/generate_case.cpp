@@ -22,7 +22,11 @@ const std::vector<std::string>& generatorFeatures() {
       "grazing-ray", "huge-ray", "aim-form",
       // the programs
       "callables", "any-hit-ignore", "any-hit-terminate", "any-hit-payload", "conditional-report",
-      "two-reports"};
+      "two-reports", "nested-trace", "nested-trace-from-miss", "hit-builtin-after-trace",
+      "call-in-hit", "call-in-miss", "call-in-callable", "if-else", "repeat", "switch", "function",
+      "local-across-call", "float-color", "float-builtin", "any-hit-accumulate",
+      "any-hit-on-payload", "any-hit-function", "ray-query", "ray-query-generate",
+      "ray-query-terminate", "traces-ray-query", "traces-compute"};
   return kFeatures;
 }
 

@@ -1,175 +1,246 @@
 // The programs of a generated case: every stage's, drawn from the
-// vocabulary as that stage may use it (fuzz/stage_vocabulary.h).
-#include <map>
-#include <mutex>
+// vocabulary as that stage may use it (fuzz/program_generator.h).
+#include <algorithm>
 
-#include "fuzz/case_generator.h"
-#include "fuzz/stage_vocabulary.h"
+#include "fuzz/program_generator.h"
 
 namespace rayspec {
 namespace {
 
-// The Uint built-ins `stage` reads in the skeleton, but those that need a
-// device feature lavapipe lacks or a scene part the generator does not make
-// (the cull mask built-in, vertex positions, box data), computed once.
-const std::vector<std::string>& uintBuiltins(Stage stage) {
-  static std::mutex mutex;
-  static std::map<Stage, std::vector<std::string>> found;
-  std::lock_guard<std::mutex> lock(mutex);
-  auto it = found.find(stage);
-  if (it != found.end()) return it->second;
-  using namespace builtin_needs;
-  std::vector<std::string> names, skipped;
-  for (const BuiltinInfo* b : readableBuiltins(stage, &skipped)) {
-    if (b->type != ValueType::Uint || (b->needs & (CullMask | PositionFetch | BoxData))) continue;
-    std::string name = b->name;
-    if (const size_t at = name.find("<i>"); at != std::string::npos) name.replace(at, 3, "0");
-    names.push_back(name);
-  }
-  return found.emplace(stage, std::move(names)).first->second;
+// Joins statements (each may be empty) into a program.
+std::string program(const std::vector<std::string>& parts) {
+  std::string p;
+  for (const std::string& s : parts)
+    if (!s.empty()) p += (p.empty() ? "" : ", ") + s;
+  return "[" + p + "]";
 }
 
 }  // namespace
 
-std::string CaseGenerator::uintAtom(Stage stage) {
-  const std::vector<std::string>& names = uintBuiltins(stage);
-  // Constants from 1: no division by a constant zero.
-  if (names.empty() || chance(0.3)) return std::to_string(1 + pick(15));
-  return oneOf(names);
+bool ProgramGenerator::mayTraceNested() const {
+  return max_recursion_ > 1 && nested_sites_ < 2;
 }
 
-std::string CaseGenerator::uintExpr(Stage stage, int depth) {
-  const std::vector<UintOperator>& operators = uintOperators(stage);
-  if (depth <= 0 || operators.empty() || chance(0.35)) return uintAtom(stage);
-  const UintOperator& op = oneOf(operators);
-  const int arity = oneOf(op.arities);
-  // A divisor with its low bit set is never zero: no division by zero
-  // (undefined: the model would refuse the case).
-  const bool divides = op.name == "div" || op.name == "mod";
-  std::string text = "{" + op.name + ": [";
-  for (int i = 0; i < arity; ++i) {
-    const std::string arg = uintExpr(stage, depth - 1);
-    text += (i ? ", " : "") + (divides && i == 1 ? "{bit_or: [" + arg + ", 1]}" : arg);
+std::string ProgramGenerator::raygenProgram() {
+  g_.counters_.insert("rg");
+  g_.fields_.insert("value");
+  std::vector<std::string> p = {"{count: rg}"};
+  if (g_.chance(0.4)) {
+    g_.fields_.insert("value2");
+    p.push_back("{record: {value2: " + g_.uintExpr(Stage::Raygen, 2) + "}}");
   }
-  return text + "]}";
-}
-
-std::string CaseGenerator::condition(Stage stage) {
-  if (chance(0.5)) return "{odd: " + uintExpr(stage, 1) + "}";
-  return "{lt: [" + uintExpr(stage, 1) + ", " + std::to_string(pick(8)) + "]}";
-}
-
-std::string CaseGenerator::raygenProgram() {
-  counters_.insert("rg");
-  fields_.insert("value");
-  std::string p = "[{count: rg}";
-  if (chance(0.4)) {
-    fields_.insert("value2");
-    p += ", {record: {value2: " + uintExpr(Stage::Raygen, 2) + "}}";
+  std::string trace = "{trace: {payload: {value: " + g_.uintExpr(Stage::Raygen, 1) + "}}}";
+  if (g_.chance(0.2)) {  // the launch ray traced twice, the answers folded
+    feature("repeat");
+    const std::string k = local(), sum = local();
+    p.push_back("{let: {" + sum + ": 0}}");
+    trace = "{repeat: 2, var: " + k + ", do: [{trace: {payload: {value: {add: [var." + k + ", " +
+            g_.uintExpr(Stage::Raygen, 1) + "]}}}}, {set: {" + sum + ": {add: [{mul: [var." + sum +
+            ", 5]}, payload.value]}}}]}, {record: {" + freeField() + ": var." + sum + "}}";
   }
-  p += ", {trace: {payload: {value: " + uintExpr(Stage::Raygen, 1) +
-       "}}}, {record: {value: payload.value}}";
-  if (callable_count_ && chance(0.8)) {
-    fields_.insert("value3");
-    p += ", {call: {index: " + std::to_string(pick(callable_count_)) +
-         ", value: " + uintExpr(Stage::Raygen, 1) + "}}, {record: {value3: callee.value}}";
+  trace += ", {record: {value: payload.value}}";
+  if (accumulates_) trace += ", {record: {" + freeField() + ": payload.word0}}";
+  if (colors_) trace += ", {record: {color: payload.color}}";
+  if (colors_) g_.fields_.insert("color");
+  if (g_.callable_count_ && g_.chance(0.8)) trace += ", " + call(Stage::Raygen, 0);
+  p.push_back(g_.chance(0.4) ? liveLocal(Stage::Raygen, trace) : trace);
+  if (g_.chance(0.35)) p.push_back(controlFlow(Stage::Raygen));
+  if (g_.chance(0.3)) p.push_back(rayQuery(Stage::Raygen));
+  return program(p);
+}
+
+std::string ProgramGenerator::missProgram() {
+  g_.counters_.insert("miss");
+  g_.fields_.insert("hit");
+  std::vector<std::string> p = {"{count: miss}", "{record: {hit: 0}}"};
+  std::string calls;
+  if (mayTraceNested() && g_.chance(0.5)) calls = nestedTrace(Stage::Miss);
+  if (g_.chance(0.3)) {
+    const std::string c = call(Stage::Miss, 0);
+    if (!c.empty()) calls += (calls.empty() ? "" : ", ") + c;
   }
-  return p + "]";
+  p.push_back(g_.chance(0.5) ? liveLocal(Stage::Miss, calls) : calls);
+  std::string payload = "{payload: {value: " + g_.uintExpr(Stage::Miss, 1);
+  if (g_.chance(0.4)) {
+    colors_ = true;
+    payload += ", color: " + (g_.chance(0.5) ? exactColor(Stage::Miss) : builtinColor(Stage::Miss));
+  }
+  p.push_back(payload + "}}");
+  if (g_.chance(0.3)) p.push_back(controlFlow(Stage::Miss));
+  if (!inlined_ && g_.chance(0.1)) p.push_back(rayQuery(Stage::Miss));
+  return program(p);
 }
 
-std::string CaseGenerator::missProgram(Stage stage) {
-  counters_.insert("miss");
-  fields_.insert("hit");
-  return "[{count: miss}, {record: {hit: 0}}, {payload: {value: " + uintExpr(stage, 2) + "}}]";
-}
-
-std::string CaseGenerator::closestHitProgram() {
+std::string ProgramGenerator::closestHitProgram(bool aabbs) {
   static const std::vector<std::string> kFields = {"instance_id",    "instance_custom_index",
                                                    "geometry_index", "primitive_id",
                                                    "hit_kind",       "hit_t"};
-  counters_.insert("chit");
-  fields_.insert("hit");
+  g_.counters_.insert("chit");
+  g_.fields_.insert("hit");
   std::string fields = "hit";
   for (const std::string& f : kFields)
-    if (chance(0.6)) {
+    if (g_.chance(0.6)) {
       fields += ", " + f;
-      fields_.insert(f);
+      g_.fields_.insert(f);
     }
-  std::string p = "[{count: chit}, {record: [" + fields +
-                  "]}, {payload: {value: " + uintExpr(Stage::ClosestHit, 2) + "}}";
-  if (chance(0.5)) {
-    fields_.insert("value1");
-    p += ", {record: {value1: " + uintExpr(Stage::ClosestHit, 3) + "}}";
+  std::vector<std::string> p = {"{count: chit}", "{record: [" + fields + "]}"};
+  std::string calls;
+  if (mayTraceNested() && g_.chance(0.6)) calls = nestedTrace(Stage::ClosestHit);
+  if (g_.chance(0.35)) {
+    const std::string c = call(Stage::ClosestHit, 0);
+    if (!c.empty()) calls += (calls.empty() ? "" : ", ") + c;
   }
-  return p + "]";
+  p.push_back(g_.chance(0.5) ? liveLocal(Stage::ClosestHit, calls) : calls);
+  std::string payload = "{payload: {value: " + g_.uintExpr(Stage::ClosestHit, 1);
+  if (g_.chance(0.4)) {
+    colors_ = true;
+    payload += ", color: " +
+               (g_.chance(0.5) ? exactColor(Stage::ClosestHit) : builtinColor(Stage::ClosestHit));
+  }
+  p.push_back(payload + "}}");
+  if (g_.chance(0.5)) {
+    g_.fields_.insert("value1");
+    p.push_back("{record: {value1: " + g_.uintExpr(Stage::ClosestHit, 2) + "}}");
+  }
+  // Barycentrics and a box's attribute aside (a known lavapipe class).
+  if (!aabbs && g_.chance(0.3))
+    p.push_back("{record: {" + colorField() + ": " + builtinColor(Stage::ClosestHit) + "}}");
+  if (g_.chance(0.3)) p.push_back(controlFlow(Stage::ClosestHit));
+  if (!inlined_ && g_.chance(0.1)) p.push_back(rayQuery(Stage::ClosestHit));
+  const std::string text = program(p);
+  if (readsHitBuiltinAfterTrace(text)) feature("hit-builtin-after-trace");
+  return text;
 }
 
-std::string CaseGenerator::anyHitProgram() {
-  counters_.insert("ahit");
-  std::string p = "[{count: ahit}";
-  if (chance(0.3)) {
-    features_.insert("any-hit-payload");
-    p += ", {payload: {value: {add: [payload.value, " + uintExpr(Stage::AnyHit, 1) + "]}}}";
+// Counts, accumulates into payload.word0 (a sum or a set of bits: the same
+// in any order and, but for the duplicates R-AHIT-DUP leaves out, the same
+// however often), and decides.
+std::string ProgramGenerator::anyHitProgram(bool aabbs) {
+  g_.counters_.insert("ahit");
+  std::vector<std::string> p = {"{count: ahit}"};
+  if (accumulates_ && g_.chance(0.8)) {
+    feature("any-hit-accumulate");
+    p.push_back(g_.chance(0.5)
+                    ? "{payload: {word0: {add: [payload.word0, 1]}}}"
+                    : "{payload: {word0: {bit_or: [payload.word0, {shl: [1, {add: [primitive_id, "
+                      "{mul: [instance_id, 4]}]}]}]}}}");
   }
-  const bool terminate = chance(0.35);
-  features_.insert(terminate ? "any-hit-terminate" : "any-hit-ignore");
-  p += ", {if: " + condition(Stage::AnyHit) + ", then: [" + (terminate ? "terminate" : "ignore") +
-       "]}";
-  return p + "]";
+  if (g_.chance(0.2)) {
+    feature("any-hit-payload");
+    p.push_back("{payload: {value: {add: [payload.value, " + g_.uintExpr(Stage::AnyHit, 1) +
+                "]}}}");
+  }
+  p.push_back(anyHitDecision(aabbs));
+  return program(p);
 }
 
-std::string CaseGenerator::intersectionProgram() {
-  counters_.insert("isect");
+std::string ProgramGenerator::intersectionProgram() {
+  g_.counters_.insert("isect");
   const auto report = [&] {
-    return "{report: {t: " + num(eighths(0.25, 8)) + ", kind: " + std::to_string(pick(128)) + "}}";
+    return "{report: {t: " + CaseGenerator::num(g_.eighths(0.25, 8)) +
+           ", kind: " + std::to_string(g_.pick(128)) + "}}";
   };
-  std::string p = "[{count: isect}";
-  if (chance(0.5)) {
-    features_.insert("conditional-report");
-    p += ", {if: " + condition(Stage::Intersection) + ", then: [" + report() + "], else: [" +
-         report() + "]}";
+  std::vector<std::string> p = {"{count: isect}"};
+  if (g_.chance(0.5)) {
+    feature("conditional-report");
+    p.push_back("{if: " + g_.condition(Stage::Intersection) + ", then: [" + report() +
+                "], else: [" + report() + "]}");
   } else {
-    p += ", " + report();
+    p.push_back(report());
   }
-  if (chance(0.3)) {
-    features_.insert("two-reports");
-    p += ", " + report();
+  if (g_.chance(0.3)) {
+    feature("two-reports");
+    p.push_back(report());
   }
-  return p + "]";
+  return program(p);
 }
 
-std::string CaseGenerator::callableProgram() {
-  counters_.insert("callable");
-  return "[{count: callable}, {call_data: {value: " + uintExpr(Stage::Callable, 2) + "}}]";
+std::string ProgramGenerator::callableProgram(size_t index) {
+  g_.counters_.insert("callable");
+  std::vector<std::string> p = {"{count: callable}"};
+  // Callable 0 may call callable 1: two frames, within the default stack.
+  if (index == 0 && g_.chance(0.4))
+    p.push_back(liveLocal(Stage::Callable, call(Stage::Callable, 1)));
+  if (g_.chance(0.3)) p.push_back(controlFlow(Stage::Callable));
+  std::string data = "{call_data: {value: " + g_.uintExpr(Stage::Callable, 2);
+  if (g_.chance(0.5))
+    data += ", color: " +
+            (g_.chance(0.5) ? exactColor(Stage::Callable) : builtinColor(Stage::Callable));
+  p.push_back(data + "}}");
+  return program(p);
 }
 
-void CaseGenerator::hitGroups() {
-  out_ += "  hit_groups:\n";
-  for (size_t g = 0; g < hit_groups_; ++g) {
+std::string ProgramGenerator::hitGroups() {
+  std::string out = "  hit_groups:\n";
+  for (size_t i = 0; i < g_.hit_groups_; ++i) {
+    const bool aabbs = g_.group_aabbs_[i];
     std::string group;
     const auto add = [&](const std::string& key, const std::string& program) {
       group += (group.empty() ? "" : ", ") + key + ": " + program;
     };
-    if (group_aabbs_[g]) add("intersection", intersectionProgram());
-    if (chance(0.5)) add("any_hit", anyHitProgram());
-    if (chance(0.85)) add("closest_hit", closestHitProgram());
-    out_ += "    - {" + group + "}\n";
+    if (aabbs) add("intersection", intersectionProgram());
+    if (g_.chance(0.65)) add("any_hit", anyHitProgram(aabbs));
+    if (g_.chance(0.85)) add("closest_hit", closestHitProgram(aabbs));
+    out += "    - {" + group + "}\n";
   }
+  return out;
+}
+
+// The functions the programs invoke: fold (a loop over a switch, recorded)
+// and decide (an any-hit's ignore).
+std::string ProgramGenerator::functions() {
+  std::string f;
+  if (uses_fold_) {
+    g_.fields_.insert("value11");
+    f += "fold: {params: {a: uint, b: uint}, do: [{let: {h: var.a}}, {repeat: {bit_and: [var.b, "
+         "3]}, var: k, do: [{switch: {mod: [var.k, 3]}, cases: {0: [{set: {h: {add: [{mul: "
+         "[var.h, 3]}, var.k]}}}], 1: [{set: {h: {bit_xor: [var.h, 90]}}}]}, default: [{set: {h: "
+         "{add: [var.h, 7]}}}]}]}, {record: {value11: var.h}}]}";
+  }
+  if (uses_decide_)
+    f += std::string(f.empty() ? "" : ", ") +
+         "decide: {params: {p: uint, q: uint}, do: [{if: {odd: {add: [var.p, var.q]}}, then: "
+         "[ignore]}]}";
+  return f.empty() ? "" : "  functions: {" + f + "}\n";
+}
+
+std::string ProgramGenerator::header() {
+  // The payload and callable data types of the skeleton the vocabulary was
+  // found in: every word a drawn built-in reads is there.
+  std::string h = "pipeline:\n";
+  if (max_recursion_ > 1) h += "  max_recursion: " + std::to_string(max_recursion_) + "\n";
+  if (inlined_) h += compute_ ? "  traces: ray_query_compute\n" : "  traces: ray_query\n";
+  return h + "  payloads: [{words: 3}]\n  callable_data: [{words: 2}]\n";
+}
+
+void ProgramGenerator::pipeline() {
+  const uint64_t traces = g_.pick(12);
+  inlined_ = traces < 2;
+  compute_ = traces == 1;
+  if (inlined_) feature(compute_ ? "traces-compute" : "traces-ray-query");
+  g_.callable_count_ = !compute_ && g_.chance(0.5) ? 1 + g_.pick(2) : 0;
+  if (g_.callable_count_) feature("callables");
+  max_recursion_ = g_.chance(0.45) ? (g_.chance(0.25) ? 3 : 2) : 1;
+  // Inlined, every nested trace is a copy of the hit and miss programs per
+  // level (the parser refuses more than 64): two levels. Lavapipe compiles
+  // the any-hit and intersection programs into every trace site: at most
+  // two nested sites a case (mayTraceNested), or a case takes minutes.
+  if (inlined_) max_recursion_ = std::min(max_recursion_, 2);
+  accumulates_ = g_.chance(0.5);
+  // Drawn in the order their facts are needed: the colours and functions
+  // the others use before raygen and the functions block.
+  std::string callables;
+  for (size_t k = 0; k < g_.callable_count_; ++k) callables += "    - " + callableProgram(k) + "\n";
+  std::string miss = "  miss:\n";
+  for (size_t m = 0; m < g_.miss_count_; ++m) miss += "    - " + missProgram() + "\n";
+  const std::string hits = hitGroups();
+  const std::string raygen = "  raygen: " + raygenProgram() + "\n";
+  g_.text() += header() + functions() + raygen + miss + hits;
+  if (!callables.empty()) g_.text() += "  callables:\n" + callables;
 }
 
 void CaseGenerator::pipeline() {
-  callable_count_ = chance(0.4) ? 1 + pick(2) : 0;
-  // The payload and callable data types of the skeleton the vocabulary was
-  // found in: every word a drawn built-in reads is there.
-  out_ += "pipeline:\n  payloads: [{words: 3}]\n  callable_data: [{words: 2}]\n";
-  if (callable_count_) features_.insert("callables");
-  out_ += "  raygen: " + raygenProgram() + "\n  miss:\n";
-  for (size_t m = 0; m < miss_count_; ++m) out_ += "    - " + missProgram(Stage::Miss) + "\n";
-  hitGroups();
-  if (callable_count_) {
-    out_ += "  callables:\n";
-    for (size_t k = 0; k < callable_count_; ++k) out_ += "    - " + callableProgram() + "\n";
-  }
+  ProgramGenerator(*this).pipeline();
 }
 
 void CaseGenerator::outputs() {

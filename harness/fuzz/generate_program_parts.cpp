@@ -1,0 +1,192 @@
+// The parts of the generated programs: nested traces, calls, ray queries,
+// control flow and locals live across calls, any-hit decisions. Each is a
+// statement list without its brackets.
+#include "fuzz/program_generator.h"
+
+namespace rayspec {
+namespace {}  // namespace
+
+// Whether a closest-hit program reads, after its nested trace, a hit
+// built-in that lavapipe 25.0.7 reads from the nested hit (a known class:
+// builtins/after-nested in references/baselines/lavapipe.csv): anything from
+// the statement that takes the nested payload on.
+bool ProgramGenerator::readsHitBuiltinAfterTrace(const std::string& program) {
+  const size_t after = program.find(kAfterNestedTrace);
+  if (after == std::string::npos) return false;
+  for (const char* name : {"instance_id", "instance_custom_index", "primitive_id", "geometry_index",
+                           "hit_kind", "object_to_world", "world_to_object"})
+    if (program.find(name, after) != std::string::npos) return true;
+  return false;
+}
+
+// A trace from closest-hit or miss, only below max_recursion (the depth
+// built-in decides, so no ray goes deeper: R-UB), from the ray's origin or
+// a point around the scene, with a payload it starts; built-ins read before
+// it (into a local) and after it, the nested payload folded into this one.
+std::string ProgramGenerator::nestedTrace(Stage stage) {
+  feature(stage == Stage::Miss ? "nested-trace-from-miss" : "nested-trace");
+  ++nested_sites_;
+  std::string origin = "world_ray_origin";
+  std::string direction = "[" + CaseGenerator::num(g_.eighths(-0.5, 0.5)) + ", " +
+                          CaseGenerator::num(g_.eighths(-0.5, 0.5)) +
+                          (g_.chance(0.7) ? ", -1.0]" : ", 1.0]");
+  if (g_.chance(0.5)) {
+    const double ox = g_.eighths(-4, 4), oy = g_.eighths(-4, 4), oz = g_.chance(0.5) ? 6.0 : -6.0;
+    const double tx = g_.eighths(-1.5, 1.5), ty = g_.eighths(-1.5, 1.5);
+    origin = "[" + CaseGenerator::num(ox) + ", " + CaseGenerator::num(oy) + ", " +
+             CaseGenerator::num(oz) + "]";
+    direction = "[" + CaseGenerator::num(tx - ox) + ", " + CaseGenerator::num(ty - oy) + ", " +
+                CaseGenerator::num(-oz) + "]";
+  }
+  const std::string before = local();
+  std::string s = "{let: {" + before + ": " + g_.uintExpr(stage, 1) + "}}";
+  std::string then = "{trace: {origin: " + origin + ", direction: " + direction +
+                     ", payload: {value: " + g_.uintExpr(stage, 1) + "}}}";
+  then += ", " + std::string(kAfterNestedTrace) + before + "]}}}";
+  then += ", {record: {" + freeField() + ": {bit_xor: [var." + before + ", " +
+          g_.uintExpr(stage, 1) + "]}}}";
+  if (g_.chance(0.3)) then += ", {record: {" + colorField() + ": child.color}}";
+  return s + ", {if: {lt: [depth, " + std::to_string(max_recursion_) + "]}, then: [" + then + "]}";
+}
+
+// executeCallableEXT of a callable from `first_callee` on (a callable calls
+// only those after it: no recursion, at most two frames deep), with
+// callable data, the result recorded.
+std::string ProgramGenerator::call(Stage stage, size_t first_callee) {
+  const size_t count = g_.callable_count_;
+  if (first_callee >= count) return "";
+  if (stage == Stage::ClosestHit) feature("call-in-hit");
+  if (stage == Stage::Miss) feature("call-in-miss");
+  if (stage == Stage::Callable) feature("call-in-callable");
+  std::string index = std::to_string(first_callee + g_.pick(count - first_callee));
+  if (first_callee == 0 && count > 1 && g_.chance(0.3))
+    index = "{mod: [" + g_.uintExpr(stage, 1) + ", " + std::to_string(count) + "]}";
+  std::string s = "{call: {index: " + index + ", value: " + g_.uintExpr(stage, 1);
+  if (g_.chance(0.4))
+    s += ", position: {vec3: [" + floatExpr(stage, 1) + ", " + floatExpr(stage, 1) + ", " +
+         floatExpr(stage, 1) + "]}";
+  s += "}}, {record: {" + freeField() + ": callee.value}}";
+  if (g_.chance(0.3)) s += ", {record: {" + colorField() + ": callee.color}}";
+  return s;
+}
+
+// A ray query: each triangle candidate confirmed (all, some, or the first
+// and then the traversal ended), each box committed at the query's tmin
+// (inside [tmin, committed t]: never undefined), the committed
+// intersection read after.
+std::string ProgramGenerator::rayQuery(Stage stage) {
+  feature("ray-query");
+  std::string q = "{ray_query: {";
+  if (stage != Stage::Raygen)
+    q += "origin: world_ray_origin, direction: [" + CaseGenerator::num(g_.eighths(-0.5, 0.5)) +
+         ", " + CaseGenerator::num(g_.eighths(-0.5, 0.5)) + ", -1.0], ";
+  switch (g_.pick(4)) {
+    case 0:
+      q += "triangle: [confirm]";
+      break;
+    case 1:
+      q += "triangle: [{if: {odd: {add: [candidate.primitive_id, " + std::to_string(g_.pick(2)) +
+           "]}}, then: [confirm]}]";
+      break;
+    case 2:
+      feature("ray-query-terminate");
+      q += "triangle: [{if: {eq: [candidate.instance_id, " + std::to_string(g_.pick(3)) +
+           "]}, then: [confirm, terminate_query]}]";
+      break;
+    default:
+      q += "triangle: [{if: {lt: [candidate.geometry_index, 2]}, then: [confirm]}]";
+  }
+  if (g_.chance(0.6)) {
+    feature("ray-query-generate");
+    q += ", aabb: [{if: {even: {add: [candidate.primitive_id, candidate.instance_id]}}, then: "
+         "[{generate: query.ray_tmin}]}]";
+  }
+  return q + ", after: [" + queryAfter() + "]}}";
+}
+
+std::string ProgramGenerator::queryAfter() {
+  std::string a = "{record: {" + freeField() + ": committed.type}}";
+  std::string then = "{record: {" + freeField() +
+                     ": {add: [{mul: [committed.instance_id, 64]}, {add: [{mul: "
+                     "[committed.geometry_index, 16]}, committed.primitive_id]}]}}}";
+  if (g_.chance(0.5))
+    then += ", {record: {" + colorField() +
+            ": {vec4: [committed.t, query.ray_tmin, {float: committed.instance_custom_index}, "
+            "1.0]}}}";
+  return a + ", {if: {ne: [committed.type, 0]}, then: [" + then + "]}";
+}
+
+// A local folded by an if/else, a bounded loop, a switch or a function, then
+// recorded.
+std::string ProgramGenerator::controlFlow(Stage stage) {
+  const std::string v = local(), var = "var." + v;
+  const auto set = [&](const std::string& value) {
+    return "{set: {" + v + ": " + value + "}}";
+  };
+  std::string s = "{let: {" + v + ": " + g_.uintExpr(stage, 1) + "}}, ";
+  switch (g_.pick(4)) {
+    case 0:
+      feature("if-else");
+      s += "{if: " + g_.condition(stage) + ", then: [" +
+           set("{add: [" + var + ", " + g_.uintExpr(stage, 1) + "]}") + "], else: [" +
+           set("{bit_xor: [" + var + ", " + g_.uintExpr(stage, 1) + "]}") + "]}";
+      break;
+    case 1: {
+      feature("repeat");
+      const std::string k = local();
+      s += "{repeat: " + std::to_string(1 + g_.pick(4)) + ", var: " + k + ", do: [" +
+           set("{add: [{mul: [" + var + ", 3]}, var." + k + "]}") + ", {if: {eq: [var." + k + ", " +
+           std::to_string(1 + g_.pick(3)) + "]}, then: [break]}]}";
+      break;
+    }
+    case 2:
+      feature("switch");
+      s += "{switch: {mod: [" + g_.uintExpr(stage, 1) + ", 4]}, cases: {0: [" +
+           set("{add: [" + var + ", 5]}") + "], 2: [" + set("{mul: [" + var + ", 7]}") +
+           "]}, default: [" + set("{shr: [" + var + ", 1]}") + "]}";
+      break;
+    default:
+      feature("function");
+      uses_fold_ = true;
+      s += "{invoke: fold, with: {a: " + var + ", b: " + g_.uintExpr(stage, 1) + "}}";
+  }
+  return s + ", {record: {" + freeField() + ": " + var + "}}";
+}
+
+// A value read before `across` (traces, calls) and recorded after it: every
+// local a stage holds is the same after them (R-LIVE-STATE).
+std::string ProgramGenerator::liveLocal(Stage stage, const std::string& across) {
+  if (across.empty()) return "";
+  feature("local-across-call");
+  const std::string v = local();
+  return "{let: {" + v + ": " + g_.uintExpr(stage, 2) + "}}, " + across + ", {record: {" +
+         freeField() + ": {add: [var." + v + ", 1]}}}";
+}
+
+// Whether an any-hit ignores or terminates: on a condition, a switch, or in
+// a function.
+std::string ProgramGenerator::anyHitDecision(bool aabbs) {
+  const bool terminate = g_.chance(0.35);
+  const std::string end = terminate ? "terminate" : "ignore";
+  const uint64_t shape = g_.pick(5);
+  feature(terminate && shape != 1 ? "any-hit-terminate" : "any-hit-ignore");
+  switch (shape) {
+    case 0:
+      feature("switch");
+      return "{switch: {mod: [primitive_id, 3]}, cases: {" + std::to_string(g_.pick(3)) + ": [" +
+             end + "]}}";
+    case 1:
+      feature("any-hit-function");
+      uses_decide_ = true;
+      return "{invoke: decide, with: {p: primitive_id, q: " + g_.uintExpr(Stage::AnyHit, 1) + "}}";
+    case 2:
+      feature("if-else");
+      return "{if: " + hitCondition(aabbs) + ", then: [" + end +
+             "], else: [{if: " + hitCondition(aabbs) + ", then: [" +
+             (terminate ? "ignore" : "terminate") + "]}]}";
+    default:
+      return "{if: " + hitCondition(aabbs) + ", then: [" + end + "]}";
+  }
+}
+
+}  // namespace rayspec
