@@ -93,7 +93,7 @@ TEST(FuzzTriage, TheLavapipeKnownFileLoads) {
   const Result<std::vector<KnownClass>> known =
       loadKnownClasses(RAYSPEC_SOURCE_DIR "/references/baselines/lavapipe-fuzz-known.txt");
   ASSERT_TRUE(known) << known.error().format();
-  EXPECT_EQ(known->size(), 3u);  // nan-box, nan-vertex, first-vertex
+  EXPECT_EQ(known->size(), 4u);  // nan-box, nan-vertex, first-vertex, hit-builtin-after-trace
 }
 
 }  // namespace
