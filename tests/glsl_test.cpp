@@ -49,10 +49,7 @@ Expr v3(double a, double b, double c) {
   return e;
 }
 Expr b(const std::string& name) {
-  Expr e;
-  e.kind = Expr::Kind::Builtin;
-  e.name = name;
-  return e;
+  return builtinExpr(name);
 }
 Expr op(const std::string& name, std::vector<Expr> args = {}) {
   Expr e;

@@ -11,10 +11,7 @@ namespace rayspec {
 namespace {
 
 Expr getter(const std::string& name) {
-  Expr e;
-  e.kind = Expr::Kind::Builtin;
-  e.name = name;
-  return e;
+  return builtinExpr(name);
 }
 
 Expr compare(const std::string& op, Expr a, double literal) {
@@ -53,17 +50,17 @@ Pipeline queryPipeline(Expr cond, Expr value) {
 TEST(QueryIdObservations, CandidateAndCommittedGettersObserveTheId) {
   const Pipeline p = queryPipeline(compare("lt", getter("candidate.instance_id"), 3),
                                    getter("committed.primitive_id"));
-  const IdObservations inst = observeId(p, "instance_id");
+  const IdObservations inst = observeId(p, kBiInstance);
   EXPECT_FALSE(inst.exact);
   ASSERT_EQ(inst.below.size(), 1u);
   EXPECT_EQ(inst.below[0], 3u);
   EXPECT_NE(inst.classOf(2), inst.classOf(3));
   EXPECT_EQ(inst.classOf(0), inst.classOf(2));
   // committed.primitive_id recorded in a free field: the id itself.
-  EXPECT_TRUE(observeId(p, "primitive_id").exact);
+  EXPECT_TRUE(observeId(p, kBiPrimitive).exact);
   EXPECT_FALSE(
       observeId(queryPipeline(compare("eq", getter("candidate.t"), 1), getter("query.ray_tmin")),
-                "primitive_id")
+                kBiPrimitive)
           .exact);
 }
 

@@ -73,21 +73,19 @@ outputs:
 
 TEST(IdObservations, WhatProgramsObserveOfAnId) {
   const Case c = parseCase(kGrid);
-  const IdObservations prim = observeId(c.pipeline, "primitive_id");
+  const IdObservations prim = observeId(c.pipeline, kBiPrimitive);
   EXPECT_FALSE(prim.exact);  // recorded as itself: led back
   EXPECT_TRUE(prim.parity);
   EXPECT_EQ(prim.classOf(3), prim.classOf(5));
   EXPECT_NE(prim.classOf(3), prim.classOf(4));
-  const IdObservations inst = observeId(c.pipeline, "instance_id");
+  const IdObservations inst = observeId(c.pipeline, kBiInstance);
   EXPECT_FALSE(inst.parity);
   EXPECT_EQ(inst.equals, (std::vector<uint64_t>{3}));
   EXPECT_EQ(inst.classOf(0), inst.classOf(2));
   EXPECT_NE(inst.classOf(3), inst.classOf(2));
   // The side of a threshold, whichever way it is written.
   Case t = c;
-  Expr id;
-  id.kind = Expr::Kind::Builtin;
-  id.name = "primitive_id";
+  Expr id = builtinExpr(kBiPrimitive, {});
   Expr three;
   three.literal = {3};
   for (const auto& [name, id_first, threshold] :
@@ -109,7 +107,7 @@ TEST(IdObservations, WhatProgramsObserveOfAnId) {
     s.cond = cmp;
     t.pipeline.raygen = {s};
     t.pipeline.hit_groups.clear();
-    EXPECT_EQ(observeId(t.pipeline, "primitive_id").below, (std::vector<uint64_t>{threshold}))
+    EXPECT_EQ(observeId(t.pipeline, kBiPrimitive).below, (std::vector<uint64_t>{threshold}))
         << name << id_first;
   }
   // Arithmetic on the id observes the id itself: nothing may move.
@@ -118,7 +116,7 @@ TEST(IdObservations, WhatProgramsObserveOfAnId) {
   setOp(sum, Op::Add);
   sum.args = {id, three};
   t.pipeline.raygen[0].cond = sum;
-  EXPECT_TRUE(observeId(t.pipeline, "primitive_id").exact);
+  EXPECT_TRUE(observeId(t.pipeline, kBiPrimitive).exact);
 }
 
 TEST(PermuteCase, DeterministicAndKeepsEveryPrimitiveAndInstance) {

@@ -63,10 +63,7 @@ TEST(ModelRayQuery, ACommittedValueWithNothingCommittedIsUndefined) {
   // after: record committed.t whether or not anything is committed.
   Stmt read;
   read.kind = Stmt::Kind::Record;
-  Expr t;
-  t.kind = Expr::Kind::Builtin;
-  t.name = "committed.t";
-  t.type = ValueType::Float;
+  Expr t = builtinExpr(kBiQCommittedT, {});
   read.assigns.emplace_back("value5", t);
   c.pipeline.raygen[0].else_.push_back(read);
   c.outputs.per_ray.push_back("value5");

@@ -83,10 +83,7 @@ inline Expr vec3(double x, double y, double z) {
   return e;
 }
 inline Expr bi(const std::string& n) {
-  Expr e;
-  e.kind = Expr::Kind::Builtin;
-  e.name = n;
-  return e;
+  return builtinExpr(n);
 }
 inline Expr op(const std::string& n, std::vector<Expr> args) {
   Expr e;

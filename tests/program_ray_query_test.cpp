@@ -10,10 +10,7 @@ namespace rayspec {
 namespace {
 
 Expr queryGetter(const std::string& name) {
-  Expr e;
-  e.kind = Expr::Kind::Builtin;
-  e.name = name;
-  return e;
+  return builtinExpr(name);
 }
 
 Stmt simple(Stmt::Kind kind) {

@@ -240,9 +240,7 @@ TEST(SbtLayout, BadRecordsAreErrors) {
 // ------------------------------------------------------------- on the device
 
 Expr builtin(const std::string& name, ValueType t) {
-  Expr e;
-  e.kind = Expr::Kind::Builtin;
-  e.name = name;
+  Expr e = builtinExpr(name);
   e.type = t;
   return e;
 }

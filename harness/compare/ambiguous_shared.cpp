@@ -3,6 +3,7 @@
 #include <set>
 
 #include "compare/compare_parts.h"
+#include "program/builtins.h"
 #include "program/walk_program.h"
 #include "results/tolerances.h"
 
@@ -54,8 +55,7 @@ bool sameForEveryAnswer(const Case& c, const std::string& field) {
       if (s.kind != Stmt::Kind::Record) return;
       for (const auto& [name, value] : s.assigns) {
         if (name != field) continue;
-        if (!values || (value.kind != Expr::Kind::Literal &&
-                        !(value.kind == Expr::Kind::Builtin && value.name == "hit"))) {
+        if (!values || (value.kind != Expr::Kind::Literal && !isBuiltin(value, kBiHit))) {
           invariant = false;
           continue;
         }

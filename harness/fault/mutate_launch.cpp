@@ -4,6 +4,7 @@
 // plus one).
 #include "fault/fault_impl.h"
 #include "fault/program_edit.h"
+#include "program/builtins.h"
 #include "program/ops.h"
 #include "program/walk_program.h"
 
@@ -11,15 +12,6 @@ namespace rayspec {
 namespace {
 
 constexpr uint32_t kWrapIds = 65536;
-
-Expr launchIdX(const SourceLoc& loc) {
-  Expr e;
-  e.kind = Expr::Kind::Builtin;
-  e.type = ValueType::Uint;
-  e.name = "launch_id_x";
-  e.loc = loc;
-  return e;
-}
 
 }  // namespace
 
@@ -30,7 +22,7 @@ std::string wideLaunchTruncated(Case& c, ModelOptions&) {
   Stmt stop;
   stop.kind = Stmt::Kind::If;
   stop.loc = c.rays.defaults_loc;
-  stop.cond = opExpr(Op::Ge, {launchIdX(stop.loc), uintLiteral(kWrapIds, stop.loc)},
+  stop.cond = opExpr(Op::Ge, {builtinExpr(kBiLaunchX, stop.loc), uintLiteral(kWrapIds, stop.loc)},
                      ValueType::Bool, stop.loc);
   Stmt end;
   end.kind = Stmt::Kind::Return;
@@ -48,7 +40,7 @@ std::string launchIdXWrapped(Case& c, ModelOptions&) {
   std::vector<Expr*> reads;
   forEachProgram(c.pipeline, [&](Program& p, Stage) {
     editExpressions(p, [&](Expr& e) {
-      if (e.kind == Expr::Kind::Builtin && e.name == "launch_id_x") reads.push_back(&e);
+      if (isBuiltin(e, kBiLaunchX)) reads.push_back(&e);
     });
   });
   for (Expr* e : reads) {

@@ -203,7 +203,7 @@ std::string cullMaskBuiltinDefault(Case& c, ModelOptions&) {
   size_t n = 0;
   forEachProgram(c.pipeline, [&](Program& p, Stage) {
     editExpressions(p, [&](Expr& e) {
-      if (e.kind != Expr::Kind::Builtin || e.name != "cull_mask") return;
+      if (!isBuiltin(e, kBiCullMask)) return;
       e = uintLiteral(kVisibilityMask, e.loc);
       ++n;
     });

@@ -7,6 +7,7 @@
 #include <initializer_list>
 
 #include "fault/fault_impl.h"
+#include "program/builtins.h"
 #include "program/walk_program.h"
 
 namespace rayspec {
@@ -21,13 +22,12 @@ size_t countStatements(const Case& c, Stmt::Kind kind) {
   return n;
 }
 
-// How many getters named in `names` the case's programs read.
-size_t countGetters(const Case& c, std::initializer_list<const char*> names) {
+// How many reads of the built-ins `ids` the case's programs hold.
+size_t countGetters(const Case& c, std::initializer_list<Builtin> ids) {
   size_t n = 0;
   forEachProgram(c.pipeline, [&](const Program& p, Stage) {
     walkExpressions(p, [&](const Expr& e) {
-      if (e.kind != Expr::Kind::Builtin) return;
-      for (const char* name : names) n += e.name == name;
+      for (Builtin id : ids) n += isBuiltin(e, id);
     });
   });
   return n;
@@ -129,8 +129,8 @@ std::string queryCommittedReadsCandidate(Case& c, ModelOptions& o) {
   size_t reads = 0;
   auto visit = [&](const Program& p) {
     walkExpressions(p, [&](const Expr& e) {
-      reads += e.kind == Expr::Kind::Builtin && e.name.rfind("committed.", 0) == 0 &&
-               e.name != "committed.type";
+      reads += e.kind == Expr::Kind::Builtin && isCommittedGetter(e.builtin) &&
+               e.builtin != kBiQCommittedType;
     });
   };
   forEachProgram(c.pipeline, [&](Program& p, Stage) { visit(p); });
@@ -140,13 +140,11 @@ std::string queryCommittedReadsCandidate(Case& c, ModelOptions& o) {
 }
 
 std::string queryCustomIndexIsInstanceId(Case& c, ModelOptions& o) {
-  const size_t reads =
-      countGetters(c, {"committed.instance_custom_index", "candidate.instance_custom_index"});
-  const std::string what =
-      plantedOn(reads, "ray query custom index reads that give the instance id", c,
-                countGetters(c, {"instance_custom_index"})
-                    ? "give the instance id for gl_InstanceCustomIndexEXT"
-                    : "");
+  const size_t reads = countGetters(c, {kBiQCommittedCustomIndex, kBiQCandCustomIndex});
+  const std::string what = plantedOn(
+      reads, "ray query custom index reads that give the instance id", c,
+      countGetters(c, {kBiCustomIndex}) ? "give the instance id for gl_InstanceCustomIndexEXT"
+                                        : "");
   if (what.empty()) return "";
   o.faults.rq_custom_index_is_instance_id = true;
   return what;
@@ -195,10 +193,10 @@ std::string queryCandidateTypeSwapped(Case& c, ModelOptions& o) {
 }
 
 std::string queryFrontFaceInverted(Case& c, ModelOptions& o) {
-  const size_t reads = countGetters(c, {"committed.front_face", "candidate.front_face"});
+  const size_t reads = countGetters(c, {kBiQCommittedFrontFace, kBiQCandFrontFace});
   const std::string what = plantedOn(
       reads, "ray query front face reads that give a triangle's other face", c,
-      countGetters(c, {"hit_kind"}) ? "give a triangle's other face as its hit_kind" : "");
+      countGetters(c, {kBiHitKind}) ? "give a triangle's other face as its hit_kind" : "");
   if (what.empty()) return "";
   o.faults.rq_front_face_inverted = true;
   return what;

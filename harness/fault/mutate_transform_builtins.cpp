@@ -2,6 +2,7 @@
 // gl_ObjectToWorldEXT and gl_WorldToObjectEXT (and their 3x4 forms) each give
 // the other matrix (the model's test-only hook, model/model_faults.h).
 #include "fault/fault_impl.h"
+#include "program/builtins.h"
 #include "program/walk_program.h"
 
 namespace rayspec {
@@ -10,8 +11,7 @@ std::string transformBuiltinsSwapped(Case& c, ModelOptions& o) {
   size_t reads = 0;
   auto visit = [&](const Program& p) {
     walkExpressions(p, [&](const Expr& e) {
-      reads += e.kind == Expr::Kind::Builtin &&
-               (e.name.rfind("object_to_world", 0) == 0 || e.name.rfind("world_to_object", 0) == 0);
+      reads += e.kind == Expr::Kind::Builtin && isInstanceTransform(e.builtin);
     });
   };
   forEachProgram(c.pipeline, [&](Program& p, Stage) { visit(p); });

@@ -3,27 +3,24 @@
 #include <functional>
 
 #include "fault/fault_impl.h"
+#include "program/builtins.h"
 #include "program/ops.h"
 #include "results/record_layout.h"
 
 namespace rayspec {
 namespace {
 
-bool readsBuiltin(const Expr& e, const std::function<bool(const std::string&)>& pred) {
-  if (e.kind == Expr::Kind::Builtin && pred(e.name)) return true;
+bool readsBuiltin(const Expr& e, const std::function<bool(Builtin)>& pred) {
+  if (e.kind == Expr::Kind::Builtin && pred(e.builtin)) return true;
   for (const Expr& a : e.args)
     if (readsBuiltin(a, pred)) return true;
   return false;
 }
 
-bool isBuiltin(const Expr& e, const char* name) {
-  return e.kind == Expr::Kind::Builtin && e.name == name;
-}
-
 // The case records `field` straight from the built-in of the same name.
 bool recordsOwnBuiltin(const Case& c, const std::string& field) {
   for (const FieldWrite& w : fieldWrites(c))
-    if (w.field == field && isBuiltin(*w.value, field.c_str())) return true;
+    if (w.field == field && isBuiltin(*w.value, builtinId(findBuiltin(field)))) return true;
   return false;
 }
 
@@ -32,10 +29,8 @@ bool hitStage(Stage s) {
 }
 
 // Values carried between stages, not built-ins of the API.
-bool isApiBuiltin(const std::string& name) {
-  for (const char* prefix : {"payload.", "child.", "call.", "callee."})
-    if (name.rfind(prefix, 0) == 0) return false;
-  return name != "hit" && name != "depth";
+bool isApiBuiltin(Builtin b) {
+  return !(builtinNeeds(b) & builtin_needs::CarriedData) && b != kBiHit && b != kBiDepth;
 }
 
 bool inactiveTriangle(const Geometry& g, uint32_t p) {
@@ -136,10 +131,10 @@ FaultResult tmaxViewInitial(RecordFaultArgs& a) {
   for (const FieldWrite& w : fieldWrites(c)) {
     if (!hitStage(w.stage)) continue;
     const Expr& e = *w.value;
-    if (isBuiltin(e, "ray_tmax")) slots.push_back({w.field, 0});
+    if (isBuiltin(e, kBiTmax)) slots.push_back({w.field, 0});
     if (e.kind == Expr::Kind::Op && isVectorConstructor(e.op))
       for (size_t j = 0; j < e.args.size(); ++j)
-        if (isBuiltin(e.args[j], "ray_tmax") &&
+        if (isBuiltin(e.args[j], kBiTmax) &&
             e.args.size() == static_cast<size_t>(componentCount(e.type)))
           slots.push_back({w.field, static_cast<uint32_t>(j)});
   }

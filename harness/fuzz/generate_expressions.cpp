@@ -24,9 +24,7 @@ const std::vector<std::string>& uintBuiltins(Stage stage) {
   std::vector<std::string> names, skipped;
   for (const BuiltinInfo* b : readableBuiltins(stage, &skipped)) {
     if (b->type != ValueType::Uint || (b->needs & (CullMask | PositionFetch | BoxData))) continue;
-    std::string name = b->name;
-    if (const size_t at = name.find("<i>"); at != std::string::npos) name.replace(at, 3, "0");
-    names.push_back(name);
+    names.push_back(builtinSpelling(builtinId(b), 0));  // payload.word<i>: word 0
   }
   return found.emplace(stage, std::move(names)).first->second;
 }

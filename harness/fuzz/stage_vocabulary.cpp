@@ -131,7 +131,7 @@ std::string skeletonCase(const std::map<Stage, std::string>& programs) {
 
 std::string readStatement(const BuiltinInfo& b, size_t i) {
   const std::string v = "v" + std::to_string(i);
-  const std::string name = replaceAll(b.name, "<i>", "0");  // payload.word<i>: word 0
+  const std::string name = builtinSpelling(builtinId(&b), 0);  // payload.word<i>: word 0
   std::string folded;
   switch (b.type) {
     case ValueType::Uint:

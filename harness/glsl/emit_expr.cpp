@@ -38,32 +38,35 @@ std::string literal(const Expr& e) {
   return problem("literal type");
 }
 
+// A word<i> family's word: payload.word3 -> payload.words[3].
+std::string wordOf(const Expr& e) {
+  const std::string i = "[" + std::to_string(e.word) + "]";
+  if (const auto which = wordArrayOf(e.builtin)) return wordArrayName(*which) + i;
+  return "rs_attr.words" + i;  // attribute.word<i>
+}
+
 // The GLSL a built-in is read as (program/builtin_table.h), the word<i>
 // families by their index and hit by the stage; inlined in raygen, through
 // the ray query (its candidate in any-hit and intersection, its committed
 // intersection in closest-hit).
-std::string builtin(const std::string& name, const StageContext& ctx) {
+std::string builtin(const Expr& e, const StageContext& ctx) {
   const Stage stage = ctx.stage;
-  if (auto w = attributeWordBuiltin(name)) return "rs_attr.words[" + std::to_string(*w) + "]";
-  if (auto w = callWordBuiltin(name))  // callee.word3 -> callee.words[3]
-    return std::string(w->callee ? "callee" : "call") + ".words[" + std::to_string(w->index) + "]";
-  if (auto w = payloadWordBuiltin(name))  // payload.word3 -> payload.words[3]
-    return std::string(w->child ? "child" : "payload") + ".words[" + std::to_string(w->index) + "]";
-  if (name == "hit") {
+  if (isWordFamily(e.builtin)) return wordOf(e);
+  if (e.builtin == kBiHit) {
     if (stage == Stage::ClosestHit) return "1u";
     if (stage == Stage::Miss) return "0u";
     return problem("hit outside closest_hit and miss");
   }
-  const BuiltinInfo* info = findBuiltin(name);
+  const BuiltinInfo* info = e.builtin < kBiCount ? &builtins()[e.builtin] : nullptr;
   // A ray_query's getters read its own query (rs_query), inlined or not.
-  if (!ctx.inlined || !info || isQueryBuiltin(builtinId(info)))
-    return info && info->glsl ? info->glsl : problem("unknown builtin " + name);
-  if (name == "ray_tmax")  // the hit's t, the committed t so far, the trace's tmax
+  if (!ctx.inlined || !info || isQueryBuiltin(e.builtin))
+    return info && info->glsl ? info->glsl : problem("unknown builtin " + e.name);
+  if (e.builtin == kBiTmax)  // the hit's t, the committed t so far, the trace's tmax
     return stage == Stage::Intersection ? "rs_current_tmax()"
            : stage == Stage::Miss       ? "rs_q_tmax"
                                         : "rs_hit_t";
   const std::string spelled = rayQuerySpelling(*info, stage == Stage::ClosestHit);
-  return spelled.empty() ? problem(name + " cannot be read by a ray query") : spelled;
+  return spelled.empty() ? problem(e.name + " cannot be read by a ray query") : spelled;
 }
 
 // An op's GLSL pattern (program/op_table.h) with its arguments' GLSL: $i
@@ -122,8 +125,8 @@ std::string emitExpr(const Expr& e, const StageContext& ctx) {
     case Expr::Kind::Literal:
       return literal(e);
     case Expr::Kind::Builtin:
-      if (e.name == "barycentrics" && ctx.attribute_words) return "rs_attr.bary";
-      return builtin(e.name, ctx);
+      if (e.builtin == kBiBarycentrics && ctx.attribute_words) return "rs_attr.bary";
+      return builtin(e, ctx);
     case Expr::Kind::Op:
       return op(e, ctx);
     case Expr::Kind::Local:

@@ -52,8 +52,8 @@ std::string zeroWords(uint32_t n) {
 }
 
 // A built-in of the query's candidate (program/builtin_table.h).
-std::string candidate(const char* name) {
-  return rayQuerySpelling(*findBuiltin(name), false);
+std::string candidate(Builtin b) {
+  return rayQuerySpelling(builtins()[b], false);
 }
 
 StageContext inlinedContext(const StageContext& host, Stage stage, uint32_t index,
@@ -80,8 +80,8 @@ bool invokes(const Program& program) {
 void inlinedBody(const StageContext& ctx, const Program& program, GlslWriter& out) {
   if (ctx.stage == Stage::AnyHit && invokes(program))
     out.line("uint rs_ah_verdict = kRsAccept;  // an invoked function's ignore or terminate");
-  emitStagePrologue(
-      ctx, {candidate("instance_id"), candidate("geometry_index"), candidate("primitive_id")}, out);
+  emitStagePrologue(ctx, {candidate(kBiInstance), candidate(kBiGeometry), candidate(kBiPrimitive)},
+                    out);
   if (ctx.uses.reads_child || ctx.uses.trace) {
     out.line(payloadTypeName(ctx.c.pipeline.maxPayloadWords()) + " child;");
     emitPayloadStart(ctx, out);
@@ -256,11 +256,11 @@ void groupSwitch(const StageContext& ctx, const std::string& on, Has has, Call c
 // (aabb_min, sphere_*: shaders/scene.glsl through emitCandidateMacros): the
 // level's query is not the one the shared functions were written with.
 void candidateBox(GlslWriter& out) {
-  out.line("rs_cand_instance = " + candidate("instance_id") + ";");
-  out.line("rs_cand_geometry = " + candidate("geometry_index") + ";");
-  out.line("rs_cand_primitive = " + candidate("primitive_id") + ";");
-  out.line("rs_cand_origin = " + candidate("object_ray_origin") + ";");
-  out.line("rs_cand_direction = " + candidate("object_ray_direction") + ";");
+  out.line("rs_cand_instance = " + candidate(kBiInstance) + ";");
+  out.line("rs_cand_geometry = " + candidate(kBiGeometry) + ";");
+  out.line("rs_cand_primitive = " + candidate(kBiPrimitive) + ";");
+  out.line("rs_cand_origin = " + candidate(kBiObjectOrigin) + ";");
+  out.line("rs_cand_direction = " + candidate(kBiObjectDirection) + ";");
 }
 
 // The loop: each candidate decided by its group's any-hit or intersection.

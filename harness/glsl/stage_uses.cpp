@@ -15,18 +15,16 @@ bool kept(const std::vector<std::string>& names, const std::string& name) {
 
 void visitExpr(const Expr& e, StageUses& u) {
   if (e.kind == Expr::Kind::Builtin) {
-    const BuiltinInfo* b = findBuiltin(e.name);
-    const BuiltinNeeds needs = b ? b->needs : builtin_needs::NoNeeds;
-    if (needs & builtin_needs::BoxData) u.scene = true;
-    if (e.name == "barycentrics" || attributeWordBuiltin(e.name)) u.hit_attribute = true;
-    if (needs & builtin_needs::CullMask) u.cull_mask = true;
-    if (e.name == "payload.color" || e.name == "payload.value" ||
-        (payloadWordBuiltin(e.name) && !payloadWordBuiltin(e.name)->child))
-      u.incoming_payload = true;
-    if (isHitVertexPosition(e.name)) u.position_fetch = true;
-    if (isQueryVertexPosition(e.name)) u.query_position_fetch = true;
-    if (e.name.rfind("child.", 0) == 0) u.reads_child = true;
-    if (e.name.rfind("callee.", 0) == 0) u.reads_callee = true;
+    using namespace builtin_needs;
+    const BuiltinNeeds needs = builtinNeeds(e.builtin);
+    if (needs & BoxData) u.scene = true;
+    if (needs & HitAttribute) u.hit_attribute = true;
+    if (needs & CullMask) u.cull_mask = true;
+    if (needs & InPayload) u.incoming_payload = true;
+    if (isHitVertexPosition(e.builtin)) u.position_fetch = true;
+    if (isQueryVertexPosition(e.builtin)) u.query_position_fetch = true;
+    if (needs & ChildPayload) u.reads_child = true;
+    if (needs & CalleeData) u.reads_callee = true;
   } else if (e.kind == Expr::Kind::Op) {
     if (isSphereOp(e.op)) u.scene = u.sphere = true;
     if (e.op == Op::RecordUint || e.op == Op::RecordFloat) u.shader_record = true;

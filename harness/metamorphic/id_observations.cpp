@@ -1,20 +1,34 @@
 #include "metamorphic/id_observations.h"
 
 #include <algorithm>
+#include <array>
 
 #include "program/ops.h"
 
 namespace rayspec {
 namespace {
 
+// The id built-in and a ray query's getters of it (candidate.*, committed.*).
+std::array<Builtin, 3> readsOf(Builtin id) {
+  switch (id) {
+    case kBiPrimitive:
+      return {id, kBiQCandPrimitive, kBiQCommittedPrimitive};
+    case kBiInstance:
+      return {id, kBiQCandInstance, kBiQCommittedInstance};
+    default:
+      return {id, id, id};
+  }
+}
+
 struct Observer {
-  const std::string& name;
+  const std::string name;  // the id's record field (the built-in's name)
+  const std::array<Builtin, 3> reads;
   IdObservations& out;
 
-  // The built-in, or a ray query's getter of it (candidate.NAME, committed.NAME).
+  // The built-in, or a ray query's getter of it.
   bool isId(const Expr& e) const {
     return e.kind == Expr::Kind::Builtin &&
-           (e.name == name || e.name == "candidate." + name || e.name == "committed." + name);
+           std::find(reads.begin(), reads.end(), e.builtin) != reads.end();
   }
   static bool isUintLiteral(const Expr& e) {
     return e.kind == Expr::Kind::Literal && e.literal.size() == 1 && e.literal[0] >= 0 &&
@@ -102,9 +116,9 @@ std::vector<uint64_t> IdObservations::classOf(uint64_t id) const {
   return key;
 }
 
-IdObservations observeId(const Pipeline& p, const std::string& builtin) {
+IdObservations observeId(const Pipeline& p, Builtin id) {
   IdObservations out;
-  Observer o{builtin, out};
+  Observer o{builtinSpelling(id), readsOf(id), out};
   o.program(p.raygen);
   for (const Program& m : p.miss) o.program(m);
   for (const HitGroup& g : p.hit_groups)

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "case/case.h"
+#include "program/builtins.h"
 
 namespace rayspec {
 
@@ -23,8 +24,8 @@ struct IdObservations {
   std::vector<uint64_t> classOf(uint64_t id) const;
 };
 
-// `builtin`: "primitive_id" or "instance_id" (a ray query's candidate.* and
+// `id`: kBiPrimitive or kBiInstance (a ray query's candidate.* and
 // committed.* getters of it count as it).
-IdObservations observeId(const Pipeline& p, const std::string& builtin);
+IdObservations observeId(const Pipeline& p, Builtin id);
 
 }  // namespace rayspec

@@ -88,8 +88,8 @@ CasePermutation permuteCase(const Case& c, uint64_t seed) {
   // A bundle of the permuted case is not one of the case as written.
   out.permuted.source_hash = contentHash(c.source_hash, &seed, sizeof seed);
   std::mt19937_64 rng(seed);
-  const IdObservations primitives = observeId(c.pipeline, "primitive_id");
-  const IdObservations instances = observeId(c.pipeline, "instance_id");
+  const IdObservations primitives = observeId(c.pipeline, kBiPrimitive);
+  const IdObservations instances = observeId(c.pipeline, kBiInstance);
   Scene& scene = out.permuted.scene;
   out.primitive_of.resize(scene.blases.size());
   for (size_t b = 0; b < scene.blases.size(); ++b) {

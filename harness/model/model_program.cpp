@@ -76,13 +76,8 @@ struct Compiler {
             r.literal.f[k] = static_cast<float>(e.literal[k]);
         break;
       case Expr::Kind::Builtin: {
-        const auto word = payloadWordBuiltin(e.name);  // payload.word3: word<i>, index 3
-        const auto attribute_word = attributeWordBuiltin(e.name);
-        const auto call_word = callWordBuiltin(e.name);
-        if (word) r.index = word->index;
-        if (attribute_word) r.index = *attribute_word;
-        if (call_word) r.index = call_word->index;
-        r.builtin = builtinId(findBuiltin(e.name));
+        r.index = e.word;  // payload.word3: word<i>, index 3
+        r.builtin = e.builtin;
         if (r.builtin != kBiUnknown) {
           out.read_bits.set(r.builtin);
           out.needs |= builtins()[r.builtin].needs;

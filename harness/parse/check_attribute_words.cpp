@@ -2,6 +2,7 @@
 // report writes and what any-hit and closest-hit read stay within them, and
 // only hit groups with an intersection shader read them.
 #include "parse/parse_parts.h"
+#include "program/builtins.h"
 #include "program/walk_program.h"
 
 namespace rayspec {
@@ -20,13 +21,12 @@ void reports(YamlReader& r, const Program& p, uint32_t words) {
 void reads(YamlReader& r, const Program& p, uint32_t words, bool procedural) {
   bool reported = false;
   walkExpressions(p, [&](const Expr& e) {
-    const auto i = e.kind == Expr::Kind::Builtin ? attributeWordBuiltin(e.name) : std::nullopt;
-    if (!i || reported) return;
+    if (!isBuiltin(e, kBiAttributeWord) || reported) return;
     if (!procedural)
       r.error(e.loc, e.name +
                          ": a hit group without an intersection shader hits triangles, whose "
                          "attribute is the barycentrics alone");
-    else if (*i >= words)
+    else if (e.word >= words)
       r.error(e.loc, e.name + ": the hit attribute has " + std::to_string(words) +
                          " word(s) (pipeline.hit_attribute.words)");
     else

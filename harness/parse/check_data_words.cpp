@@ -73,14 +73,8 @@ class WordChecker {
   }
 
   void read(const Expr& e, const std::string& field) {
-    if (auto w = payloadWordBuiltin(e.name)) {
-      const WordArray which = w->child ? WordArray::Child : WordArray::Payload;
-      within(e.loc, field, e.name, w->index, words(which), typeOf(which), kPayloads);
-    }
-    if (auto w = callWordBuiltin(e.name)) {
-      const WordArray which = w->callee ? WordArray::Callee : WordArray::Call;
-      within(e.loc, field, e.name, w->index, words(which), typeOf(which), kCallData);
-    }
+    if (const auto which = wordArrayOf(e.builtin))
+      within(e.loc, field, e.name, e.word, words(*which), typeOf(*which), listOf(*which));
   }
 
   // A read or store indexed by a value takes its index modulo the words: the

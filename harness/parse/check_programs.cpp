@@ -20,7 +20,7 @@ const Stmt* findTrace(const Program& p) {
 const Expr* findPositionFetch(const Program& p) {
   const Expr* found = nullptr;
   walkExpressions(p, [&](const Expr& e) {
-    if (!found && e.kind == Expr::Kind::Builtin && isHitVertexPosition(e.name)) found = &e;
+    if (!found && e.kind == Expr::Kind::Builtin && isHitVertexPosition(e.builtin)) found = &e;
   });
   return found;
 }

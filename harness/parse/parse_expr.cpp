@@ -60,9 +60,8 @@ bool parseScalarExpr(YamlReader& r, const YAML::Node& n, const std::string& fiel
     out.name = s.substr(6);
     return true;
   }
-  if (findBuiltin(s)) {
-    out.kind = Expr::Kind::Builtin;
-    out.name = s;
+  if (const std::optional<BuiltinName> b = builtinNamed(s)) {
+    setBuiltin(out, b->id, b->word);
     return true;
   }
   if (const OpInfo* op = findOp(s); op && op->min_args == 0) {

@@ -82,18 +82,15 @@ bool parseRecord(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt&
       ok = false;
       continue;
     }
-    if (!findBuiltin(*name)) {
+    const std::optional<BuiltinName> b = builtinNamed(*name);
+    if (!b) {
       r.error(v[i], fi,
               "record: [" + *name + "] needs a built-in named '" + *name + "'; write record: {" +
                   *name + ": EXPR}");
       ok = false;
       continue;
     }
-    Expr e;
-    e.kind = Expr::Kind::Builtin;
-    e.name = *name;
-    e.loc = r.loc(v[i], f + "." + *name);
-    s.assigns.emplace_back(*name, std::move(e));
+    s.assigns.emplace_back(*name, builtinExpr(b->id, r.loc(v[i], f + "." + *name), b->word));
   }
   return ok;
 }

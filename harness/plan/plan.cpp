@@ -139,8 +139,8 @@ void planStatements(const std::vector<StageProgram>& programs, const Pipeline& p
       if (s.kind == Stmt::Kind::RayQuery) plan.ray_queries = true;
     });
     walkExpressions(*sp.program, [&](const Expr& e) {
-      const BuiltinInfo* b = e.kind == Expr::Kind::Builtin ? findBuiltin(e.name) : nullptr;
-      const BuiltinNeeds needs = b ? b->needs : builtin_needs::NoNeeds;
+      const BuiltinNeeds needs =
+          e.kind == Expr::Kind::Builtin ? builtinNeeds(e.builtin) : builtin_needs::NoNeeds;
       if (needs & builtin_needs::CullMask) plan.cull_mask_builtin = true;
       if (needs & builtin_needs::PositionFetch) plan.position_fetch = true;
       const bool reads_box =

@@ -1,15 +1,17 @@
 // The one list of the built-in values a stage program may read. Everything
-// else is generated from it: the Builtin enum (kBi<Id>), the table `rayspec
-// show` prints and the parser checks (program/builtins.h), the GLSL each one
-// is emitted as (glsl/emit_expr.cpp) and the names the model resolves; the
-// model's meaning of each is one exhaustive switch (model/model_builtins.cpp),
-// which fails to build when a row has none.
+// else is generated from it: the Builtin enum (kBi<Id>, below) the parser
+// resolves each name to once (Expr::builtin), the table `rayspec show`
+// prints and the parser checks (program/builtins.h), the GLSL each one is
+// emitted as (glsl/emit_expr.cpp); the model's meaning of each is one
+// exhaustive switch (model/model_builtins.cpp), which fails to build when a
+// row has none.
 //
 // X(Id, "name", type, stages, needs, "GLSL", "ray query GLSL", "meaning"):
 //   stages: the letters of program/builtins.h (R raygen, M miss, C
 //     closest-hit, A any-hit, I intersection, K callable);
-//   needs: what the model and the plan must keep or compute for a program
-//     that reads it (program/builtins.h BuiltinNeeds; NoNeeds for none);
+//   needs: what the model, the plan and the GLSL must keep, compute or
+//     declare for a program that reads it (program/builtins.h BuiltinNeeds;
+//     NoNeeds for none);
 //   GLSL: the expression the stage reads, or nullptr where the emitter spells
 //     it itself (hit by stage; the word<i> families by index);
 //   ray query GLSL: the same value where the stage runs inlined in raygen
@@ -25,6 +27,8 @@
 // the emitter count from their first row): vertex_position0..2, the
 // transforms (object_to_world0..3, _3x4_0..2, then world_to_object's).
 #pragma once
+
+#include <cstdint>
 
 // hit_t reads gl_RayTmaxEXT, not gl_HitTEXT: GLSL_EXT_ray_tracing makes
 // gl_HitTEXT an alias of gl_RayTmaxEXT in any-hit and closest-hit, but glslang
@@ -207,7 +211,7 @@
   X(HitT, "hit_t", Float, A | C, NoNeeds, "gl_RayTmaxEXT", "rs_hit_t",                             \
     "gl_HitTEXT: in any-hit the candidate's t, in closest-hit the hit's t")                        \
   X(Hit, "hit", Uint, C | M, NoNeeds, nullptr, nullptr, "1 in closest-hit, 0 in miss")             \
-  X(Barycentrics, "barycentrics", Vec2, A | C, NoNeeds, "rs_attr", "rs_attr",                      \
+  X(Barycentrics, "barycentrics", Vec2, A | C, HitAttribute, "rs_attr", "rs_attr",                 \
     "the hit attribute: triangle barycentrics (b1, b2), or what the intersection shader reported") \
   X(AabbMin, "aabb_min", Vec3, I, BoxData, "rs_aabb_min()", "rs_aabb_min()",                       \
     "min corner of the primitive's AABB (object space)")                                           \
@@ -232,32 +236,32 @@
     "(gl_WorldRayOriginEXT + gl_RayTmaxEXT * gl_WorldRayDirectionEXT)",                            \
     "(rayQueryGetWorldRayOriginEXT(rs_rq) + rs_hit_t * rayQueryGetWorldRayDirectionEXT(rs_rq))",   \
     "world ray origin + hit_t * world ray direction")                                              \
-  X(PayloadColor, "payload.color", Vec4, M | C | A | R, NoNeeds, "payload.color", "payload.color", \
-    "color of the incoming payload; in raygen the payload of its last trace")                      \
-  X(PayloadValue, "payload.value", Uint, M | C | A | R, NoNeeds, "payload.value", "payload.value", \
-    "value of the incoming payload; in raygen the payload of its last trace")                      \
+  X(PayloadColor, "payload.color", Vec4, M | C | A | R, InPayload, "payload.color",                \
+    "payload.color", "color of the incoming payload; in raygen the payload of its last trace")     \
+  X(PayloadValue, "payload.value", Uint, M | C | A | R, InPayload, "payload.value",                \
+    "payload.value", "value of the incoming payload; in raygen the payload of its last trace")     \
   X(Depth, "depth", Uint, M | C | A, NoNeeds, "payload.depth", "payload.depth",                    \
     "trace depth: 1 for a trace from raygen, +1 per nested trace")                                 \
-  X(ChildColor, "child.color", Vec4, C | M, NoNeeds, "child.color", "child.color",                 \
+  X(ChildColor, "child.color", Vec4, C | M, ChildPayload, "child.color", "child.color",            \
     "color of the payload of this stage's last trace")                                             \
-  X(ChildValue, "child.value", Uint, C | M, NoNeeds, "child.value", "child.value",                 \
+  X(ChildValue, "child.value", Uint, C | M, ChildPayload, "child.value", "child.value",            \
     "value of the payload of this stage's last trace")                                             \
-  X(CallPosition, "call.position", Vec3, K, NoNeeds, "call.position", "call.position",             \
+  X(CallPosition, "call.position", Vec3, K, CallData, "call.position", "call.position",            \
     "position of the incoming callable data")                                                      \
-  X(CallNormal, "call.normal", Vec3, K, NoNeeds, "call.normal", "call.normal",                     \
+  X(CallNormal, "call.normal", Vec3, K, CallData, "call.normal", "call.normal",                    \
     "normal of the incoming callable data")                                                        \
-  X(CallColor, "call.color", Vec4, K, NoNeeds, "call.color", "call.color",                         \
+  X(CallColor, "call.color", Vec4, K, CallData, "call.color", "call.color",                        \
     "color of the incoming callable data")                                                         \
-  X(CallValue, "call.value", Uint, K, NoNeeds, "call.value", "call.value",                         \
+  X(CallValue, "call.value", Uint, K, CallData, "call.value", "call.value",                        \
     "value of the incoming callable data")                                                         \
-  X(CalleeColor, "callee.color", Vec4, R | C | M | K, NoNeeds, "callee.color", "callee.color",     \
+  X(CalleeColor, "callee.color", Vec4, R | C | M | K, CalleeData, "callee.color", "callee.color",  \
     "color of the callable data after this stage's last call")                                     \
-  X(CalleeValue, "callee.value", Uint, R | C | M | K, NoNeeds, "callee.value", "callee.value",     \
+  X(CalleeValue, "callee.value", Uint, R | C | M | K, CalleeData, "callee.value", "callee.value",  \
     "value of the callable data after this stage's last call")                                     \
-  X(PayloadWord, "payload.word<i>", Uint, M | C | A | R, NoNeeds, nullptr, nullptr,                \
+  X(PayloadWord, "payload.word<i>", Uint, M | C | A | R, InPayload, nullptr, nullptr,              \
     "word i (0..57) of the incoming payload, within its type's pipeline.payloads words; in "       \
     "raygen the payload of its last trace (0 beyond that trace's type)")                           \
-  X(ChildWord, "child.word<i>", Uint, C | M, NoNeeds, nullptr, nullptr,                            \
+  X(ChildWord, "child.word<i>", Uint, C | M, ChildPayload, nullptr, nullptr,                       \
     "word i of the payload of this stage's last trace (0 beyond that trace's type)")               \
   X(CullMask, "cull_mask", Uint, I | A | C | M, CullMask, "(gl_CullMaskEXT & 0xFFu)",              \
     "(rs_q_cull_mask & 0xFFu)",                                                                    \
@@ -317,12 +321,27 @@
     "transpose(gl_WorldToObjectEXT)[2]",                                                           \
     "transpose(rayQueryGetIntersectionWorldToObjectEXT(rs_rq, $c))[2]",                            \
     "gl_WorldToObject3x4EXT[2]")                                                                   \
-  X(AttributeWord, "attribute.word<i>", Uint, A | C, NoNeeds, nullptr, nullptr,                    \
+  X(AttributeWord, "attribute.word<i>", Uint, A | C, HitAttribute, nullptr, nullptr,               \
     "word i (0..5) of the hit attribute (pipeline.hit_attribute.words), as the intersection "      \
     "shader reported it; hit groups with an intersection shader only")                             \
-  X(CallWord, "call.word<i>", Uint, K, NoNeeds, nullptr, nullptr,                                  \
+  X(CallWord, "call.word<i>", Uint, K, CallData, nullptr, nullptr,                                 \
     "word i (0..51) of the incoming callable data, within its type's pipeline.callable_data "      \
     "words")                                                                                       \
   RAYSPEC_QUERY_BUILTINS(X)                                                                        \
-  X(CalleeWord, "callee.word<i>", Uint, R | C | M | K, NoNeeds, nullptr, nullptr,                  \
+  X(CalleeWord, "callee.word<i>", Uint, R | C | M | K, CalleeData, nullptr, nullptr,               \
     "word i of the callable data after this stage's last call (0 beyond that call's type)")
+
+namespace rayspec {
+
+// Every built-in, in the order of RAYSPEC_BUILTINS: kBi<Id>. An expression
+// carries the one it reads (Expr::builtin), resolved once by the parser.
+enum Builtin : uint8_t {
+#define RAYSPEC_BUILTIN_ID(id, ...) kBi##id,
+  RAYSPEC_BUILTINS(RAYSPEC_BUILTIN_ID)
+#undef RAYSPEC_BUILTIN_ID
+      kBiCount,
+  kBiUnknown = 0xFF
+};
+static_assert(kBiCount < kBiUnknown, "a Builtin is stored in a byte");
+
+}  // namespace rayspec

@@ -1,9 +1,22 @@
-// The table of built-ins, generated from program/builtin_table.h.
+// The table of built-ins, generated from program/builtin_table.h, and the
+// one resolution of a built-in's name.
 #include "program/builtins.h"
 
 #include "program/payload_words.h"
 
 namespace rayspec {
+namespace {
+
+constexpr const char kWordIndex[] = "<i>";  // the index in a word<i> family's name
+
+// The row `name` spells exactly, kBiUnknown for none.
+Builtin rowNamed(const std::string& name) {
+  for (size_t i = 0; i < builtins().size(); ++i)
+    if (name == builtins()[i].name) return static_cast<Builtin>(i);
+  return kBiUnknown;
+}
+
+}  // namespace
 
 const std::vector<BuiltinInfo>& builtins() {
   using namespace stage_letters;
@@ -17,31 +30,77 @@ const std::vector<BuiltinInfo>& builtins() {
   return table;
 }
 
-const BuiltinInfo* findBuiltin(const std::string& name) {
-  // payload.word3 is the table's payload.word<i>.
+BuiltinNeeds builtinNeeds(Builtin b) {
+  return b < kBiCount ? builtins()[b].needs : builtin_needs::NoNeeds;
+}
+
+std::optional<WordArray> wordArrayOf(Builtin b) {
+  switch (b) {
+    case kBiPayloadWord:
+      return WordArray::Payload;
+    case kBiChildWord:
+      return WordArray::Child;
+    case kBiCallWord:
+      return WordArray::Call;
+    case kBiCalleeWord:
+      return WordArray::Callee;
+    default:
+      return std::nullopt;
+  }
+}
+
+std::optional<BuiltinName> builtinNamed(const std::string& name) {
+  // payload.word3 is the table's payload.word<i>, word 3.
   if (auto w = payloadWordBuiltin(name))
-    return findBuiltin(w->child ? "child.word<i>" : "payload.word<i>");
-  if (attributeWordBuiltin(name)) return findBuiltin("attribute.word<i>");
+    return BuiltinName{w->child ? kBiChildWord : kBiPayloadWord, w->index};
+  if (auto i = attributeWordBuiltin(name)) return BuiltinName{kBiAttributeWord, *i};
   if (auto w = callWordBuiltin(name))
-    return findBuiltin(w->callee ? "callee.word<i>" : "call.word<i>");
-  for (const BuiltinInfo& b : builtins())
-    if (name == b.name) return &b;
-  return nullptr;
+    return BuiltinName{w->callee ? kBiCalleeWord : kBiCallWord, w->index};
+  const Builtin b = rowNamed(name);
+  if (b == kBiUnknown || isWordFamily(b)) return std::nullopt;
+  return BuiltinName{b, 0};
+}
+
+std::string builtinSpelling(Builtin id, uint32_t word) {
+  if (id >= kBiCount) return "?";
+  std::string s = builtins()[id].name;
+  if (const size_t at = s.find(kWordIndex); at != std::string::npos)
+    s.replace(at, sizeof kWordIndex - 1, std::to_string(word));
+  return s;
+}
+
+const BuiltinInfo* findBuiltin(const std::string& name) {
+  const std::optional<BuiltinName> b = builtinNamed(name);
+  return b ? &builtins()[b->id] : nullptr;
 }
 
 Builtin builtinId(const BuiltinInfo* info) {
   return info ? static_cast<Builtin>(info - builtins().data()) : kBiUnknown;
 }
 
-bool isHitVertexPosition(const std::string& name) {
-  const Builtin b = builtinId(findBuiltin(name));
-  return b >= kBiVertex0 && b <= kBiVertex2;
+Expr builtinExpr(Builtin id, const SourceLoc& loc, uint32_t word) {
+  Expr e;
+  e.loc = loc;
+  setBuiltin(e, id, word);
+  return e;
 }
 
-bool isQueryVertexPosition(const std::string& name) {
-  const Builtin b = builtinId(findBuiltin(name));
-  return (b >= kBiQCandVertex0 && b <= kBiQCandVertex2) ||
-         (b >= kBiQCommittedVertex0 && b <= kBiQCommittedVertex2);
+Expr builtinExpr(const std::string& name, const SourceLoc& loc) {
+  const std::optional<BuiltinName> b = builtinNamed(name);
+  Expr e = builtinExpr(b ? b->id : kBiUnknown, loc, b ? b->word : 0);
+  if (!b) e.name = name;
+  return e;
+}
+
+void setBuiltin(Expr& e, Builtin id, uint32_t word) {
+  e.kind = Expr::Kind::Builtin;
+  e.op = Op::None;
+  e.args.clear();
+  e.literal.clear();
+  e.builtin = id;
+  e.word = isWordFamily(id) ? word : 0;
+  e.name = builtinSpelling(id, e.word);
+  if (id < kBiCount) e.type = builtins()[id].type;
 }
 
 std::string rayQuerySpelling(const BuiltinInfo& info, bool committed) {

@@ -13,12 +13,20 @@ namespace {
 using Computed = std::map<std::string, bool>;  // local -> holds a device-computed value
 
 // Float built-ins that return what the case (or the shader) passed, unchanged.
-bool passedThrough(const std::string& name, Stage stage) {
-  static const std::set<std::string> ray = {
-      "ray_tmin",       "world_ray_origin",       "world_ray_direction",
-      "query.ray_tmin", "query.world_ray_origin", "query.world_ray_direction"};
-  // tmax is the trace's own only where no hit has shortened it.
-  return ray.count(name) || (name == "ray_tmax" && stage == Stage::Miss);
+bool passedThrough(Builtin b, Stage stage) {
+  switch (b) {
+    case kBiTmin:
+    case kBiWorldOrigin:
+    case kBiWorldDirection:
+    case kBiQTmin:
+    case kBiQWorldOrigin:
+    case kBiQWorldDirection:
+      return true;
+    case kBiTmax:  // the trace's own only where no hit has shortened it
+      return stage == Stage::Miss;
+    default:
+      return false;
+  }
 }
 
 // Ops whose Float result rounds (or may be fused, or folded in another precision).
@@ -41,7 +49,7 @@ bool deviceComputed(const Expr& e, Stage stage, const Computed& locals) {
     case Expr::Kind::RecordMember:
       return false;
     case Expr::Kind::Builtin:
-      return isFloat(e.type) && !passedThrough(e.name, stage);
+      return isFloat(e.type) && !passedThrough(e.builtin, stage);
     case Expr::Kind::Local: {
       const auto it = locals.find(e.name);
       return it == locals.end() || it->second;  // a parameter: whatever its caller passed

@@ -114,8 +114,9 @@ class Checker {
  private:
   std::optional<ProgramError> stmt(Stmt& s) {
     const StmtRule& rule = ruleOf(s.kind);
-    const bool waived = s.kind == Stmt::Kind::SetPayload && forbiddenInterface(stage_, "") &&
-                        scope_.letThrough(*forbiddenInterface(stage_, ""), "payload", s.loc);
+    const auto q = forbiddenInterface(stage_, builtin_needs::InPayload);
+    const bool waived =
+        s.kind == Stmt::Kind::SetPayload && q && scope_.letThrough(*q, "payload", s.loc);
     if (!(rule.stages & stageBit(stage_)) && !waived)
       return ProgramError{std::string("'") + rule.name + "' is not allowed in " +
                               stageName(stage_) + " (allowed in: " + stageList(rule.stages) + ")",
@@ -488,7 +489,7 @@ class Checker {
       if (!contains(fields_, name))
         return ProgramError{"per-ray field '" + name + "' is not declared in outputs.per_ray",
                             value.loc};
-      if (isHitIdentityField(name) && !(value.kind == Expr::Kind::Builtin && value.name == name))
+      if (isHitIdentityField(name) && !isBuiltin(value, builtinId(findBuiltin(name))))
         return ProgramError{"per-ray field '" + name +
                                 "' holds the built-in of that name: the judge reads it as the "
                                 "hit itself. Record `" +

@@ -10,6 +10,7 @@
 
 #include "base/enum_names.h"
 #include "base/source_loc.h"
+#include "program/builtin_table.h"
 #include "program/op_table.h"
 
 namespace rayspec {
@@ -64,9 +65,13 @@ struct Expr {
   Kind kind = Kind::Literal;
   ValueType type = ValueType::Uint;  // filled by the type checker
   std::vector<double> literal;       // Literal: 1..4 components
-  std::string name;                  // Builtin or Op name
+  std::string name;                  // Builtin or Op: its spelling (for messages)
   Op op = Op::None;                  // Op: the operator the name spells, resolved once by
                                      // the parser (or opExpr / setOp in program/ops.h)
+  Builtin builtin = kBiUnknown;      // Builtin: the row the name reads, resolved once by
+                                     // the parser (or builtinExpr / setBuiltin in
+                                     // program/builtins.h)
+  uint32_t word = 0;                 // Builtin of a word<i> family (payload.word3): i
   std::vector<Expr> args;            // Op arguments
   SourceLoc loc;
 };

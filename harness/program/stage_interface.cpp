@@ -1,17 +1,10 @@
 #include "program/stage_interface.h"
 
-#include "program/payload_words.h"
-
 namespace rayspec {
 
-std::optional<std::string> forbiddenInterface(Stage stage, const std::string& name) {
-  if (stage == Stage::Intersection) {
-    const bool payload = name.empty() || name == "payload.color" || name == "payload.value" ||
-                         (payloadWordBuiltin(name) && !payloadWordBuiltin(name)->child);
-    if (payload) return "rayPayloadInEXT";
-  }
-  if (stage == Stage::Miss && (name == "barycentrics" || attributeWordBuiltin(name)))
-    return "hitAttributeEXT";
+std::optional<std::string> forbiddenInterface(Stage stage, BuiltinNeeds uses) {
+  if (stage == Stage::Intersection && (uses & builtin_needs::InPayload)) return "rayPayloadInEXT";
+  if (stage == Stage::Miss && (uses & builtin_needs::HitAttribute)) return "hitAttributeEXT";
   return std::nullopt;
 }
 

@@ -10,14 +10,15 @@
 #include <optional>
 #include <string>
 
-#include "program/program.h"
+#include "program/builtins.h"
 
 namespace rayspec {
 
-// The GLSL qualifier a use of built-in `name` (or, with name empty, of a
-// payload write) needs in `stage` that the stage cannot declare:
-// "rayPayloadInEXT" or "hitAttributeEXT"; nullopt when it is no such use.
-std::optional<std::string> forbiddenInterface(Stage stage, const std::string& name);
+// The GLSL qualifier a use that needs `uses` (a built-in's needs,
+// program/builtin_table.h; InPayload for a payload write) needs in `stage`
+// that the stage cannot declare: "rayPayloadInEXT" or "hitAttributeEXT";
+// nullopt when it is no such use.
+std::optional<std::string> forbiddenInterface(Stage stage, BuiltinNeeds uses);
 
 // A use of a forbidden interface the checker let through (expect_rejected).
 struct InterfaceUse {

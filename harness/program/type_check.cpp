@@ -284,20 +284,20 @@ Typing typeQueryGetter(const Expr& e, const LocalScope* locals) {
   using Block = LocalScope::QueryBlock;
   const Block block = locals ? locals->queryBlock() : Block::None;
   const std::string& n = e.name;
+  const Builtin b = e.builtin;
   if (block == Block::None)
     return err(e, "'" + n +
                       "' reads a ray query: only inside a ray_query's triangle, aabb or "
                       "after block");
-  if (n.rfind("candidate.", 0) != 0) return std::nullopt;
+  if (!isCandidateGetter(b)) return std::nullopt;
   if (block == Block::After)
     return err(e, "'" + n +
                       "' reads the current candidate: only in a ray_query's triangle or aabb "
                       "block (after traversal it is undefined, R-RQ-VALUES)");
-  const bool triangle_only =
-      n == "candidate.t" || n == "candidate.barycentrics" || n == "candidate.front_face";
+  const bool triangle_only = b == kBiQCandT || b == kBiQCandBarycentrics || b == kBiQCandFrontFace;
   if (block == Block::Aabb && triangle_only)
     return err(e, "'" + n + "' is a triangle candidate's: not readable in an aabb block");
-  if (block == Block::Triangle && n == "candidate.aabb_opaque")
+  if (block == Block::Triangle && b == kBiQCandAabbOpaque)
     return err(e, "'" + n + "' is an AABB candidate's: not readable in a triangle block");
   return std::nullopt;
 }
@@ -344,15 +344,15 @@ std::optional<ProgramError> checkExpr(Expr& e, Stage stage, const LocalScope* lo
     case Expr::Kind::Literal:
       return checkLiteral(e);
     case Expr::Kind::Builtin: {
-      const BuiltinInfo* b = findBuiltin(e.name);
-      if (!b) return err(e, "unknown built-in '" + e.name + "'");
-      if (!(b->stages & stageBit(stage))) {
-        const auto q = forbiddenInterface(stage, e.name);
+      if (e.builtin >= kBiCount) return err(e, "unknown built-in '" + e.name + "'");
+      const BuiltinInfo& b = builtins()[e.builtin];
+      if (!(b.stages & stageBit(stage))) {
+        const auto q = forbiddenInterface(stage, b.needs);
         if (!q || !locals || !locals->letThrough(*q, e.name, e.loc))
           return err(e, "built-in '" + e.name + "' cannot be read in " + stageName(stage));
       }
-      e.type = b->type;
-      if (isQueryBuiltin(builtinId(b))) return typeQueryGetter(e, locals);
+      e.type = b.type;
+      if (isQueryBuiltin(e.builtin)) return typeQueryGetter(e, locals);
       return std::nullopt;
     }
     case Expr::Kind::Op: {
