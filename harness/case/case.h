@@ -461,6 +461,7 @@ struct Outputs {
   // exact, at_least, at_most or informational; the others are derived
   // (compare/counter_modes.h).
   std::map<std::string, std::string> counter_modes;
+  std::map<std::string, SourceLoc> counter_mode_locs;  // where each declared mode is written
   std::vector<std::string> per_ray;  // every field a `record` statement writes
   std::vector<ImageOutput> images;
 };

@@ -61,7 +61,7 @@ struct PreparedRun {
 
 PreparedRun prepareCases(const std::vector<CaseFile>& files, const RunOptions& opt,
                          const Baseline& baseline, const std::vector<std::string>& labels,
-                         std::map<std::string, CaseOutcome>& earlier) {
+                         std::map<std::string, CaseOutcome>& earlier, const CaseCheck& check) {
   PreparedRun run;
   for (const CaseFile& f : files) {
     PlannedCase p;
@@ -81,6 +81,11 @@ PreparedRun prepareCases(const std::vector<CaseFile>& files, const RunOptions& o
       } else {
         // --permute, --move, --through: the case as it runs, or why it does not.
         CaseAsRun as_run = caseAsRun(*parsed.value, opt);
+        if (!as_run.not_run && check && checksCase(opt, f))
+          if (std::optional<CaseOutcome> refused = checkedCase(check, *as_run.runs, opt)) {
+            applyBaseline(baseline, *refused);
+            as_run.not_run = std::move(refused);
+          }
         if (as_run.not_run) {
           p.ready = std::move(as_run.not_run);
         } else {
@@ -398,14 +403,14 @@ std::unique_ptr<ModelAdapter> inProcessModel(const RunOptions& opt) {
 // The cases in files, dealt to `jobs` slots, judged and reported.
 int runPreparedCases(const RunOptions& opt, const std::vector<CaseFile>& files,
                      const Baseline& baseline, RunInfo& info, ChosenDevice& device, unsigned jobs,
-                     std::map<std::string, CaseOutcome>& earlier) {
+                     std::map<std::string, CaseOutcome>& earlier, const CaseCheck& check) {
   std::unique_ptr<ModelAdapter> model = inProcessModel(opt);
   // Before the first fork: every case process inherits it.
   if (const Result<void> cached = useCacheDir(opt.cache_dir); !cached)
     std::fprintf(stderr, "rayspec run: %s\n", cached.error().format().c_str());
   // Unknown rule labels are case-file errors at their line:col (the parser checks them).
   const PreparedRun prepared =
-      prepareCases(files, opt, baseline, ruleLabels(info.catalog), earlier);
+      prepareCases(files, opt, baseline, ruleLabels(info.catalog), earlier, check);
   std::error_code ec;
   std::filesystem::create_directories(opt.out, ec);
   if (!opt.resume)
@@ -435,7 +440,7 @@ Result<OutputFolder> claimRunFolder(const RunOptions& opt, const std::vector<Cas
 
 // The steps of a run; a step that fails ends it before any case runs
 // (kExitSetup), naming why.
-int runCases(const RunOptions& requested) {
+int runCases(const RunOptions& requested, const CaseCheck& check) {
   RunOptions opt = optionsForThisBuild(requested);
   Result<std::vector<CaseFile>> files = selectedCaseFiles(opt);
   if (!files) return setupFailed(files.error());
@@ -461,7 +466,7 @@ int runCases(const RunOptions& requested) {
   announceRun(opt, jobs, *baseline);
   Result<std::map<std::string, CaseOutcome>> earlier = resumedCases(opt, info, *files);
   if (!earlier) return setupFailed(earlier.error());
-  return runPreparedCases(opt, *files, *baseline, info, *device, jobs, *earlier);
+  return runPreparedCases(opt, *files, *baseline, info, *device, jobs, *earlier, check);
 }
 
 int runExitStatus(const RunSummary& summary, size_t planned, bool device_found, int signal) {
