@@ -462,7 +462,7 @@ struct Outputs {
   // (compare/counter_modes.h).
   std::map<std::string, std::string> counter_modes;
   std::map<std::string, SourceLoc> counter_mode_locs;  // where each declared mode is written
-  std::vector<std::string> per_ray;  // every field a `record` statement writes
+  std::vector<std::string> per_ray;                    // every field a `record` statement writes
   std::vector<ImageOutput> images;
 };
 

@@ -44,9 +44,10 @@ bool checkOne(const CaseFile& f, const CheckOptions& opt, const std::vector<std:
   }
   const CasePortability p = checkPortability(*parsed.value, opt.threads);
   if (p.portable()) {
-    std::printf("portable      %s (%zu legal devices, %zu of them differ from the model here, "
-                "each passes; %.1f s)\n",
-                visibleLine(f.name).c_str(), p.devices, p.applied, p.seconds);
+    std::printf(
+        "portable      %s (%zu legal devices, %zu of them differ from the model here, "
+        "each passes; %.1f s)\n",
+        visibleLine(f.name).c_str(), p.devices, p.applied, p.seconds);
     return true;
   }
   if (!p.checked) {

@@ -133,8 +133,7 @@ std::vector<NotPortable> counterCauses(const Case& c, const Plan& plan, const Re
 // aabb-neighbours: the reports of intersection programs and aabb blocks.
 void boxReports(const Case& c, NotPortable& p) {
   std::string more;
-  p.declaration =
-      firstPlace(c, statementsOf(c, {Stmt::Kind::Report, Stmt::Kind::Generate}), &more);
+  p.declaration = firstPlace(c, statementsOf(c, {Stmt::Kind::Report, Stmt::Kind::Generate}), &more);
   p.change =
       "this report" + more +
       " is made without testing that the ray crosses its box, and a device with a conservative "
@@ -218,8 +217,9 @@ void causeOfKind(const Case& c, const Results& model, NotPortable& p) {
         "within their tolerance: record the float itself, or derive nothing exact from it";
     return;
   }
-  p.change = "the case relies on something this device, which the specification allows, "
-             "does otherwise";
+  p.change =
+      "the case relies on something this device, which the specification allows, "
+      "does otherwise";
 }
 
 std::string alsoText(const std::vector<std::string>& also) {

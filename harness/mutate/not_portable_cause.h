@@ -31,12 +31,12 @@ namespace rayspec {
 
 // One reason a legal device fails a case.
 struct NotPortable {
-  std::string device;     // the legal device (answer-1, aabb-neighbours, last-0.0.1, ...)
-  std::string what;       // what that device does
-  int64_t ray = -1;       // the first ray it fails (-1: none named, a counter)
-  std::string finding;    // why the judge fails it: "RULE: message" of its failing finding
-  SourceLoc declaration;  // the declaration to change (its file at least; line 0: unknown)
-  std::string change;     // what is wrong with it and how to change it
+  std::string device;             // the legal device (answer-1, aabb-neighbours, last-0.0.1, ...)
+  std::string what;               // what that device does
+  int64_t ray = -1;               // the first ray it fails (-1: none named, a counter)
+  std::string finding;            // why the judge fails it: "RULE: message" of its failing finding
+  SourceLoc declaration;          // the declaration to change (its file at least; line 0: unknown)
+  std::string change;             // what is wrong with it and how to change it
   std::vector<std::string> also;  // other legal devices that fail for the same declaration
 };
 

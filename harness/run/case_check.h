@@ -33,10 +33,15 @@ bool insideFolder(const std::string& path, const std::string& folder);
 // --no-check-case, else whether the file lies outside the library folder.
 bool checksCase(const RunOptions& opt, const CaseFile& file);
 
-// The CaseError outcome of a case the check refuses, or that the check did
-// not finish on (crash, timeout: each names --no-check-case); none when it
-// passes. A line on standard output says how the check went.
-std::optional<CaseOutcome> checkedCase(const CaseCheck& check, const Case& c,
-                                       const RunOptions& opt);
+// What the check made of a case: the CaseError outcome of a case it
+// refuses (then the case does not run), or, for a case it could not finish
+// on (the check crashed, ran out of memory or past --timeout: the case runs
+// unchecked, and shows its own crash or timeout), a note that joins the
+// case's findings. A line on standard output says how the check went.
+struct CheckedCase {
+  std::optional<CaseOutcome> refused;
+  std::string not_checked;
+};
+CheckedCase checkedCase(const CaseCheck& check, const Case& c, const RunOptions& opt);
 
 }  // namespace rayspec

@@ -50,7 +50,8 @@ struct PlannedCase {
   std::optional<CaseOutcome>
       ready;  // no run: resumed (as judged then), skipped, a case-file error, not moved
   bool resumed = false;
-  size_t index = 0;  // into PreparedRun::cases when it runs
+  std::string not_checked;  // the portability check did not finish (run/case_check.h)
+  size_t index = 0;         // into PreparedRun::cases when it runs
   StepCosts parse_cost;
 };
 
@@ -81,11 +82,12 @@ PreparedRun prepareCases(const std::vector<CaseFile>& files, const RunOptions& o
       } else {
         // --permute, --move, --through: the case as it runs, or why it does not.
         CaseAsRun as_run = caseAsRun(*parsed.value, opt);
-        if (!as_run.not_run && check && checksCase(opt, f))
-          if (std::optional<CaseOutcome> refused = checkedCase(check, *as_run.runs, opt)) {
-            applyBaseline(baseline, *refused);
-            as_run.not_run = std::move(refused);
-          }
+        if (!as_run.not_run && check && checksCase(opt, f)) {
+          CheckedCase checked = checkedCase(check, *as_run.runs, opt);
+          if (checked.refused) applyBaseline(baseline, *checked.refused);
+          as_run.not_run = std::move(checked.refused);
+          p.not_checked = checked.not_checked;
+        }
         if (as_run.not_run) {
           p.ready = std::move(as_run.not_run);
         } else {
@@ -235,6 +237,10 @@ std::optional<CaseOutcome> runOneCase(const CaseRunner& runner, const Case& c, c
   if (interrupted) return std::nullopt;
   if (!judgeCrashAlone(runner, c, slot, outcome, interrupted)) return std::nullopt;
   outcome.cost[CostSide::Parent] += p.parse_cost;
+  if (!p.not_checked.empty()) {
+    outcome.verdict.add({Status::Pass, "not-portable", p.not_checked, {}, 0});
+    outcome.deriveFromVerdict();
+  }
   if (applyBaseline(baseline, outcome)) {
     std::printf("        %s: unexpected %s: running it again\n", c.name.c_str(),
                 statusName(outcome.status));
