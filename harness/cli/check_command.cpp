@@ -46,7 +46,7 @@ bool checkOne(const CaseFile& f, const CheckOptions& opt, const std::vector<std:
   if (p.portable()) {
     std::printf(
         "portable      %s (%zu legal devices, %zu of them differ from the model here, "
-        "each passes; %.1f s)\n",
+        "each passes; %.2f s)\n",
         visibleLine(f.name).c_str(), p.devices, p.applied, p.seconds);
     return true;
   }
