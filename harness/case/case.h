@@ -461,7 +461,8 @@ struct Outputs {
   // exact, at_least, at_most or informational; the others are derived
   // (compare/counter_modes.h).
   std::map<std::string, std::string> counter_modes;
-  std::vector<std::string> per_ray;  // every field a `record` statement writes
+  std::map<std::string, SourceLoc> counter_mode_locs;  // where each declared mode is written
+  std::vector<std::string> per_ray;                    // every field a `record` statement writes
   std::vector<ImageOutput> images;
 };
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/check_command.h"
 #include "cli/option_checks.h"
 #include "cli/subcommands.h"
 
@@ -19,7 +20,7 @@ int main(int argc, char** argv) {
       addMergeCommand(app),     addShowCommand(app),     addListCommand(app),
       addStabilityCommand(app), addAccuracyCommand(app), addMutateCommand(app),
       addCompileCommand(app),   addReduceCommand(app),   addFuzzCommand(app),
-      addFaultsCommand(app),    addProveCommand(app),
+      addFaultsCommand(app),    addProveCommand(app),    addCheckCommand(app),
   };
   try {
     app.parse(argc, argv);

@@ -2,6 +2,7 @@
 #include <memory>
 #include <string>
 
+#include "cli/check_command.h"
 #include "cli/commands.h"
 #include "cli/option_checks.h"
 #include "cli/subcommands.h"
@@ -177,13 +178,14 @@ Subcommand addRunCommand(CLI::App& app) {
   addSideOptions(run, *opt);
   addIsolationOptions(run, *opt);
   addVariantOptions(run, *opt, *texts);
+  addCheckCaseOptions(run, *opt);
   return {run, [opt, texts] {
             if (!texts->move_spec.empty())  // checked while parsing
               if (Result<RigidMotion> motion = parseMotionSpec(texts->move_spec))
                 opt->move = *motion;
             if (!texts->through_name.empty())
               opt->through = featurePathFromName(texts->through_name);
-            return runCases(*opt);
+            return runCases(*opt, portabilityCheckFor(*opt));
           }};
 }
 

@@ -17,12 +17,7 @@ namespace {
 // The most legal answers tried per ray: answer-1 .. answer-7.
 constexpr uint32_t kMaxAnswers = 8;
 
-struct Variant {
-  std::string name;
-  Results device;
-  bool applied = false;
-  std::string what;
-};
+using Variant = LegalVariant;
 
 // A legal device made by the model, with whether it differs from `base`
 // (the model's own answers as a device: perfectDevice).
@@ -166,7 +161,10 @@ Variant toleranceBound(const Results& base, const Results& model) {
   return v;
 }
 
-LegalDevice judge(const Case& c, const Plan& plan, const Results& model, Variant v) {
+}  // namespace
+
+LegalDevice judgeLegalVariant(const Case& c, const Plan& plan, const Results& model,
+                              LegalVariant& v, Verdict* verdict_out) {
   LegalDevice d;
   d.name = v.name;
   d.applied = v.applied;
@@ -182,13 +180,12 @@ LegalDevice judge(const Case& c, const Plan& plan, const Results& model, Variant
       d.rule = f.rule;
       if (!f.rays.empty()) d.ray = f.rays[0];
     }
+  if (verdict_out) *verdict_out = verdict;
   return d;
 }
 
-}  // namespace
-
-std::vector<LegalDevice> judgeLegalDevices(const Case& c, const Plan& plan, const Results& model,
-                                           unsigned threads) {
+std::vector<LegalVariant> legalVariants(const Case& c, const Plan& plan, const Results& model,
+                                        unsigned threads) {
   const Results base = perfectDevice(c, model);
   std::vector<Variant> variants;
   if (!model.records.empty()) {
@@ -204,8 +201,14 @@ std::vector<LegalDevice> judgeLegalDevices(const Case& c, const Plan& plan, cons
     variants.push_back(toleranceBound(base, model));
   }
   for (Variant& v : legalFaults(c, plan, model, base)) variants.push_back(std::move(v));
+  return variants;
+}
+
+std::vector<LegalDevice> judgeLegalDevices(const Case& c, const Plan& plan, const Results& model,
+                                           unsigned threads) {
   std::vector<LegalDevice> out;
-  for (Variant& v : variants) out.push_back(judge(c, plan, model, std::move(v)));
+  for (LegalVariant& v : legalVariants(c, plan, model, threads))
+    out.push_back(judgeLegalVariant(c, plan, model, v));
   return out;
 }
 

@@ -46,9 +46,25 @@ struct LegalDevice {
   int64_t ray = -1;
 };
 
-// The legal devices of one case, each judged against `model` (the exact
-// tier's run of the case, as `rayspec mutate` makes it); `threads` for the
-// model's runs of the answer variants (0: every core).
+// One legal device's results, before they are judged.
+struct LegalVariant {
+  std::string name;
+  Results device;
+  bool applied = false;  // false: the variant does not differ from the model here
+  std::string what;      // what it changes, or why it does not apply
+};
+
+// The legal devices of one case made from `model` (the exact tier's run of
+// the case, as `rayspec mutate` makes it); `threads` for the model's runs of
+// the answer variants (0: every core).
+std::vector<LegalVariant> legalVariants(const Case& c, const Plan& plan, const Results& model,
+                                        unsigned threads);
+// One legal device judged against `model` by the usual comparison, as a
+// device's results (v.device.backend becomes "vulkan"); the verdict in
+// *verdict when given.
+LegalDevice judgeLegalVariant(const Case& c, const Plan& plan, const Results& model,
+                              LegalVariant& v, Verdict* verdict = nullptr);
+// Every legal device of one case, each judged against `model`.
 std::vector<LegalDevice> judgeLegalDevices(const Case& c, const Plan& plan, const Results& model,
                                            unsigned threads);
 

@@ -26,7 +26,7 @@ const char* const kCounterModes[] = {"exact", "at_least", "at_most", "informatio
 
 // A counter written as {name: mode}: returns the name, records the mode.
 std::optional<std::string> counterWithMode(YamlReader& r, const YAML::Node& n, const std::string& f,
-                                           std::map<std::string, std::string>* modes) {
+                                           Outputs* modes) {
   if (!modes || !n.IsMap()) return r.string(n, f);
   if (n.size() != 1) {
     r.error(n, f, "a counter with a mode is one `name: mode` pair");
@@ -44,13 +44,13 @@ std::optional<std::string> counterWithMode(YamlReader& r, const YAML::Node& n, c
             "unknown counter mode '" + *mode + "' (exact, at_least, at_most, informational)");
     return std::nullopt;
   }
-  (*modes)[name] = *mode;
+  modes->counter_modes[name] = *mode;
+  modes->counter_mode_locs[name] = r.loc(kv->second, f + "." + name);
   return name;
 }
 
 void parseNames(YamlReader& r, const YAML::Node& n, const std::string& field, bool record_fields,
-                std::vector<std::string>& out,
-                std::map<std::string, std::string>* modes = nullptr) {
+                std::vector<std::string>& out, Outputs* modes = nullptr) {
   if (!r.expectSeq(n, field)) return;
   for (size_t i = 0; i < n.size(); ++i) {
     const std::string f = field + "[" + std::to_string(i) + "]";
@@ -87,7 +87,7 @@ void parseNames(YamlReader& r, const YAML::Node& n, const std::string& field, bo
 void parseOutputs(YamlReader& r, const YAML::Node& n, Outputs& o) {
   if (!r.expectMap(n, "outputs", {"counters", "per_ray", "images"})) return;
   if (auto v = YamlReader::get(n, "counters"); v.IsDefined())
-    parseNames(r, v, "outputs.counters", false, o.counters, &o.counter_modes);
+    parseNames(r, v, "outputs.counters", false, o.counters, &o);
   if (auto v = YamlReader::get(n, "per_ray"); v.IsDefined())
     parseNames(r, v, "outputs.per_ray", true, o.per_ray);
   const YAML::Node images = YamlReader::get(n, "images");

@@ -50,7 +50,8 @@ struct PlannedCase {
   std::optional<CaseOutcome>
       ready;  // no run: resumed (as judged then), skipped, a case-file error, not moved
   bool resumed = false;
-  size_t index = 0;  // into PreparedRun::cases when it runs
+  std::string not_checked;  // the portability check did not finish (run/case_check.h)
+  size_t index = 0;         // into PreparedRun::cases when it runs
   StepCosts parse_cost;
 };
 
@@ -61,7 +62,7 @@ struct PreparedRun {
 
 PreparedRun prepareCases(const std::vector<CaseFile>& files, const RunOptions& opt,
                          const Baseline& baseline, const std::vector<std::string>& labels,
-                         std::map<std::string, CaseOutcome>& earlier) {
+                         std::map<std::string, CaseOutcome>& earlier, const CaseCheck& check) {
   PreparedRun run;
   for (const CaseFile& f : files) {
     PlannedCase p;
@@ -81,6 +82,12 @@ PreparedRun prepareCases(const std::vector<CaseFile>& files, const RunOptions& o
       } else {
         // --permute, --move, --through: the case as it runs, or why it does not.
         CaseAsRun as_run = caseAsRun(*parsed.value, opt);
+        if (!as_run.not_run && check && checksCase(opt, f)) {
+          CheckedCase checked = checkedCase(check, *as_run.runs, opt);
+          if (checked.refused) applyBaseline(baseline, *checked.refused);
+          as_run.not_run = std::move(checked.refused);
+          p.not_checked = checked.not_checked;
+        }
         if (as_run.not_run) {
           p.ready = std::move(as_run.not_run);
         } else {
@@ -230,6 +237,10 @@ std::optional<CaseOutcome> runOneCase(const CaseRunner& runner, const Case& c, c
   if (interrupted) return std::nullopt;
   if (!judgeCrashAlone(runner, c, slot, outcome, interrupted)) return std::nullopt;
   outcome.cost[CostSide::Parent] += p.parse_cost;
+  if (!p.not_checked.empty()) {
+    outcome.verdict.add({Status::Pass, "not-portable", p.not_checked, {}, 0});
+    outcome.deriveFromVerdict();
+  }
   if (applyBaseline(baseline, outcome)) {
     std::printf("        %s: unexpected %s: running it again\n", c.name.c_str(),
                 statusName(outcome.status));
@@ -398,14 +409,14 @@ std::unique_ptr<ModelAdapter> inProcessModel(const RunOptions& opt) {
 // The cases in files, dealt to `jobs` slots, judged and reported.
 int runPreparedCases(const RunOptions& opt, const std::vector<CaseFile>& files,
                      const Baseline& baseline, RunInfo& info, ChosenDevice& device, unsigned jobs,
-                     std::map<std::string, CaseOutcome>& earlier) {
+                     std::map<std::string, CaseOutcome>& earlier, const CaseCheck& check) {
   std::unique_ptr<ModelAdapter> model = inProcessModel(opt);
   // Before the first fork: every case process inherits it.
   if (const Result<void> cached = useCacheDir(opt.cache_dir); !cached)
     std::fprintf(stderr, "rayspec run: %s\n", cached.error().format().c_str());
   // Unknown rule labels are case-file errors at their line:col (the parser checks them).
   const PreparedRun prepared =
-      prepareCases(files, opt, baseline, ruleLabels(info.catalog), earlier);
+      prepareCases(files, opt, baseline, ruleLabels(info.catalog), earlier, check);
   std::error_code ec;
   std::filesystem::create_directories(opt.out, ec);
   if (!opt.resume)
@@ -435,7 +446,7 @@ Result<OutputFolder> claimRunFolder(const RunOptions& opt, const std::vector<Cas
 
 // The steps of a run; a step that fails ends it before any case runs
 // (kExitSetup), naming why.
-int runCases(const RunOptions& requested) {
+int runCases(const RunOptions& requested, const CaseCheck& check) {
   RunOptions opt = optionsForThisBuild(requested);
   Result<std::vector<CaseFile>> files = selectedCaseFiles(opt);
   if (!files) return setupFailed(files.error());
@@ -461,7 +472,7 @@ int runCases(const RunOptions& requested) {
   announceRun(opt, jobs, *baseline);
   Result<std::map<std::string, CaseOutcome>> earlier = resumedCases(opt, info, *files);
   if (!earlier) return setupFailed(earlier.error());
-  return runPreparedCases(opt, *files, *baseline, info, *device, jobs, *earlier);
+  return runPreparedCases(opt, *files, *baseline, info, *device, jobs, *earlier, check);
 }
 
 int runExitStatus(const RunSummary& summary, size_t planned, bool device_found, int signal) {

@@ -5,6 +5,7 @@
 #include <cstddef>
 
 #include "report/run_summary.h"
+#include "run/case_check.h"
 #include "run/run_options.h"
 
 namespace rayspec {
@@ -22,7 +23,10 @@ inline constexpr int kExitNotSupported =
     77;  // a single case, NotSupported on a device that exists (ctest's skip)
 // Interrupted by SIGINT / SIGTERM: 128 + the signal, reports marked interrupted.
 
-int runCases(const RunOptions& opt);
+// `check`: what a case must pass before it runs (the command line's
+// portability check, run/case_check.h), for the cases checksCase selects;
+// none: no case is checked.
+int runCases(const RunOptions& opt, const CaseCheck& check = {});
 
 // The exit status of a run that got as far as its cases: `planned` cases,
 // `device_found` when the device side had a device, `signal` the one that

@@ -71,6 +71,8 @@ struct RunOptions {
       through;  // run each case through this feature path (metamorphic/feature_path.h)
   std::string device_results;  // judge device bundles saved in this run folder instead of running a
                                // device (run/device_results.h)
+  std::optional<bool> check_case;  // --check-case / --no-check-case; none: the cases outside the
+                                   // library folder are checked (run/case_check.h)
 };
 
 // What the run does to every case (--through, --permute, --move), as the run

@@ -1,0 +1,85 @@
+#include "mutate/case_portability.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "compare/compare_results.h"
+#include "fault/planted_fault.h"
+#include "model/model_engine.h"
+#include "plan/plan.h"
+
+namespace rayspec {
+namespace {
+
+bool sameDeclaration(const NotPortable& a, const NotPortable& b) {
+  return a.declaration.file == b.declaration.file && a.declaration.line == b.declaration.line &&
+         a.declaration.column == b.declaration.column && a.change == b.change;
+}
+
+// A cause joins the problem of the same declaration (as one more device), or
+// is a problem of its own.
+void addCause(std::vector<NotPortable>& problems, NotPortable cause) {
+  for (NotPortable& p : problems)
+    if (sameDeclaration(p, cause)) {
+      if (p.device != cause.device &&
+          std::find(p.also.begin(), p.also.end(), cause.device) == p.also.end())
+        p.also.push_back(cause.device);
+      return;
+    }
+  problems.push_back(std::move(cause));
+}
+
+// Each legal device judged; those the judge fails diagnosed.
+void judgeDevices(const Case& c, const Plan& plan, const Results& model, const Results& base,
+                  unsigned threads, CasePortability& out) {
+  std::vector<LegalVariant> variants = legalVariants(c, plan, model, threads);
+  out.devices = variants.size();
+  for (LegalVariant& v : variants) {
+    Verdict verdict;
+    const LegalDevice d = judgeLegalVariant(c, plan, model, v, &verdict);
+    out.applied += d.applied;
+    if (!d.false_alarm) continue;
+    for (NotPortable& cause : notPortableCauses(c, plan, model, base, v, verdict))
+      addCause(out.problems, std::move(cause));
+  }
+}
+
+}  // namespace
+
+CasePortability checkPortability(const Case& c, unsigned threads) {
+  CasePortability out;
+  if (!modelInThisBuild()) {
+    out.not_checked = "this run-only build has no model to check by";
+    return out;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const Plan plan = derivePlan(c);
+  ModelOptions mo;
+  mo.tier = ModelTier::Exact;
+  mo.threads = threads;
+  const Results model = runOnModel(c, plan, mo);
+  if (!model.ok()) {
+    out.not_checked = "the model did not run it: " + model.statusText();
+    return out;
+  }
+  out.checked = true;
+  // The model's own answers must pass first: a case the model finds at
+  // fault fails every device alike.
+  Results base = perfectDevice(c, model);
+  base.backend = "vulkan";
+  if (const Verdict own = compareResults(c, plan, base, model); isFailing(own.status))
+    out.own_answers = own.headline();
+  else
+    judgeDevices(c, plan, model, base, threads, out);
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+std::string notPortableText(const CasePortability& p) {
+  std::string out;
+  for (const NotPortable& problem : p.problems)
+    out += (out.empty() ? "" : "\n  ") + notPortableMessage(problem);
+  return out;
+}
+
+}  // namespace rayspec
