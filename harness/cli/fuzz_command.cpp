@@ -3,6 +3,7 @@
 #include <memory>
 #include <string>
 
+#include "cli/check_command.h"
 #include "cli/commands.h"
 #include "cli/option_checks.h"
 #include "cli/subcommands.h"
@@ -78,9 +79,11 @@ Subcommand addFuzzCommand(CLI::App& app) {
                  "case finds it: OUT/fault-matrix.txt (fault, rules, found, first case)")
       ->excludes(generate_only);
   addDeviceOptions(fuzz, o.run);
+  addCheckCaseOptions(fuzz, o.run);  // generated cases lie outside the library: checked by default
   return {fuzz, [opt, through] {
             if (!through->empty()) opt->run.through = featurePathFromName(*through);
             if (!opt->cases && opt->minutes <= 0) opt->cases = 100;
+            opt->check = portabilityCheckFor(opt->run);
             return runFuzz(*opt);
           }};
 }

@@ -119,7 +119,7 @@ bool runBatch(const FuzzOptions& opt, const std::vector<KnownClass>& known, size
     features[seed] = g->features;
     ++tally.generated;
   }
-  const int status = runCases(run);
+  const int status = runCases(run, opt.check);
   if (status >= 128 || interruptSignal()) return false;
   const auto journal = readJournal(run.out);
   if (!journal || !*journal) return false;

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <string>
 
+#include "run/case_check.h"
 #include "run/run_options.h"
 
 namespace rayspec {
@@ -31,6 +32,10 @@ struct FuzzOptions {
                                // runs them; --device-results judges what it saved)
   bool fault_matrix = false;   // --fault-matrix: OUT/fault-matrix.txt
   RunOptions run;              // the device, the model, --through, --plant-fault, --device-results
+  // Each generated case held to every legal device before it runs (as `rayspec
+  // run` holds a case outside the library): a case one would fail is refused
+  // ("not-portable"), never a finding. None: unchecked.
+  CaseCheck check;
 };
 
 // 0: nothing found but known classes (or, with --generate-only, the cases

@@ -134,25 +134,37 @@ std::string ProgramGenerator::anyHitProgram(bool aabbs) {
   return program(p);
 }
 
+// Reports only where the ray crosses the box, ahead of tmin: a device may
+// run the program for a box the ray passes beside or behind (R-AABB-CONS),
+// so a report without the test would be a case no legal device need pass.
+// The sphere inscribed in the box stands for it (sphere_hit, as the library's
+// intersection cases do); t at the sphere's entry (not before tmin), its
+// exit, or a fixed t not before the entry (a report past the box is legal).
 std::string ProgramGenerator::intersectionProgram() {
   g_.counters_.insert("isect");
   const auto report = [&] {
-    return "{report: {t: " + CaseGenerator::num(g_.eighths(0.25, 8)) +
-           ", kind: " + std::to_string(g_.pick(128)) + "}}";
+    const size_t at = g_.pick(3);
+    const std::string t =
+        at == 0   ? "{max: [sphere_near, ray_tmin]}"
+        : at == 1 ? "sphere_far"
+                  : "{max: [sphere_near, " + CaseGenerator::num(g_.eighths(0.25, 8)) + "]}";
+    return "{report: {t: " + t + ", kind: " + std::to_string(g_.pick(128)) + "}}";
   };
-  std::vector<std::string> p = {"{count: isect}"};
+  std::vector<std::string> crossing;
   if (g_.chance(0.5)) {
     feature("conditional-report");
-    p.push_back("{if: " + g_.condition(Stage::Intersection) + ", then: [" + report() +
-                "], else: [" + report() + "]}");
+    crossing.push_back("{if: " + g_.condition(Stage::Intersection) + ", then: [" + report() +
+                       "], else: [" + report() + "]}");
   } else {
-    p.push_back(report());
+    crossing.push_back(report());
   }
   if (g_.chance(0.3)) {
     feature("two-reports");
-    p.push_back(report());
+    crossing.push_back(report());
   }
-  return program(p);
+  return program(
+      {"{count: isect}",
+       "{if: {and: [sphere_hit, {ge: [sphere_far, ray_tmin]}]}, then: " + program(crossing) + "}"});
 }
 
 std::string ProgramGenerator::callableProgram(size_t index) {
