@@ -7,13 +7,14 @@
 #include "fault/rule_faults.h"
 
 namespace rayspec {
-namespace {
 
 bool namesRule(const Verdict& v, const std::string& rule) {
   for (const Finding& f : v.findings)
     if (f.status == v.status && f.rule.find(rule) != std::string::npos) return true;
   return false;
 }
+
+namespace {
 
 FaultOutcome plant(const std::string& fault, bool legal, const Case& c, const Plan& plan,
                    const Results& model, const Results& perfect, const std::string& rule) {

@@ -52,6 +52,10 @@ struct FaultOutcome {
   std::string headline;     // the verdict's
 };
 
+// Whether a finding of the verdict's own status names `rule` (a proof's
+// "the fault broke that rule", FaultOutcome::names_rule).
+bool namesRule(const Verdict& v, const std::string& rule);
+
 #define RAYSPEC_CLAIM_RESULTS(X)                                                       \
   /* a break gives `expect` (and no legal variation fails) */                          \
   X(Proven, "proven")                                                                  \

@@ -13,12 +13,6 @@
 namespace rayspec {
 namespace {
 
-bool namesRule(const Verdict& v, const std::string& rule) {
-  for (const Finding& f : v.findings)
-    if (f.status == v.status && f.rule.find(rule) != std::string::npos) return true;
-  return false;
-}
-
 // One run of the case on the device, `fault` planted ("" none), its bundles
 // in a temporary folder removed after.
 CaseOutcome runOnDevice(RunOptions run, const Case& c, const std::string& fault) {
