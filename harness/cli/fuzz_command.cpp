@@ -5,6 +5,7 @@
 
 #include "cli/check_command.h"
 #include "cli/commands.h"
+#include "cli/device_options.h"
 #include "cli/option_checks.h"
 #include "cli/subcommands.h"
 #include "fuzz/fuzz_run.h"
@@ -15,17 +16,14 @@ namespace rayspec {
 namespace {
 
 void addDeviceOptions(CLI::App* fuzz, RunOptions& run) {
-  fuzz->add_option("--device", run.device, "Vulkan device name (substring)");
-  fuzz->add_option("--icd", run.icd_files, kIcdOptionHelp)->delimiter(':');
+  addDeviceChoice(fuzz, run);
   fuzz->add_option("--model", run.model_tier, "Model precision tier")->capture_default_str();
   fuzz->add_option("--rules", run.rules_file, "Rule catalog")->capture_default_str();
   fuzz->add_option("--timeout", run.timeout, "Seconds per case side")
       ->check(positiveSeconds())
       ->capture_default_str();
   fuzz->add_option("--jobs", run.jobs, "Cases at once (0: one per core)")->capture_default_str();
-  fuzz->add_flag("--no-validation", run.no_validation, "Do not load the Khronos validation layer");
-  fuzz->add_flag("--strict-validation", run.strict_validation,
-                 "A validation error fails the case (as `rayspec run --strict-validation`)");
+  addValidationOptions(fuzz, run);
   fuzz->add_option("--plant-fault", run.plant_fault, kPlantFaultHelp);
 }
 

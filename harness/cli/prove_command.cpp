@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/device_options.h"
 #include "cli/option_checks.h"
 #include "cli/subcommands.h"
 #include "mutate/prove_cases.h"
@@ -28,12 +29,8 @@ Subcommand addProveCommand(CLI::App& app) {
       ->capture_default_str();
   prove->add_flag("-v,--verbose", opt->verbose,
                   "Every fault tried for every claim, and its outcome");
-  prove->add_option("--device", opt->run.device,
-                    "Vulkan device name (substring): a claim the model's faults leave hollow is "
-                    "tried there with its rule's live-device faults (rayspec faults --rule R)");
-  prove->add_option("--icd", opt->run.icd_files, kIcdOptionHelp)->delimiter(':');
-  prove->add_flag("--no-validation", opt->run.no_validation,
-                  "On the device: do not load the Khronos validation layer");
+  addDeviceChoice(prove, opt->run);
+  addValidationOptions(prove, opt->run);
   prove->add_option("--timeout", opt->run.timeout, "On the device: seconds per case side")
       ->check(positiveSeconds())
       ->capture_default_str();

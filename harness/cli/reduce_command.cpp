@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cli/commands.h"
+#include "cli/device_options.h"
 #include "cli/option_checks.h"
 #include "cli/subcommands.h"
 #include "reduce/reduce_case.h"
@@ -32,8 +33,7 @@ Subcommand addReduceCommand(CLI::App& app) {
   reduce->add_option("--max-attempts", o.max_attempts, "Variants to try at most")
       ->check(wholeCount())
       ->capture_default_str();
-  reduce->add_option("--device", o.run.device, "Vulkan device name (substring)");
-  reduce->add_option("--icd", o.run.icd_files, kIcdOptionHelp)->delimiter(':');
+  addDeviceChoice(reduce, o.run);
   reduce->add_option("--cases", o.run.cases_dir, "Folder of case files")->capture_default_str();
   reduce->add_option("--model", o.run.model_tier, "Model precision tier")->capture_default_str();
   reduce->add_option("--rules", o.run.rules_file, "Rule catalog")->capture_default_str();
@@ -51,8 +51,7 @@ Subcommand addReduceCommand(CLI::App& app) {
                      "(its process group is killed); one that runs out of time, or fails leaving "
                      "no results, ends the reduction (exit 2). `tools/second-driver.sh device` is "
                      "one, for the second driver");
-  reduce->add_flag("--no-validation", o.run.no_validation,
-                   "Do not load the Khronos validation layer");
+  addValidationOptions(reduce, o.run);
   reduce->add_option("--plant-fault", o.run.plant_fault, kPlantFaultHelp);
   return {reduce, [opt] {
             return runReduce(*opt);

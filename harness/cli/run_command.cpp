@@ -4,6 +4,7 @@
 
 #include "cli/check_command.h"
 #include "cli/commands.h"
+#include "cli/device_options.h"
 #include "cli/option_checks.h"
 #include "cli/subcommands.h"
 #include "metamorphic/feature_path.h"
@@ -23,9 +24,7 @@ std::vector<std::string> modelTierNames() {
 
 // Which cases run, on which device, into which folder, judged against what.
 void addSelectionOptions(CLI::App* run, RunOptions& run_opt) {
-  run->add_option("--device", run_opt.device,
-                  "Vulkan device name (substring); default: first with ray tracing");
-  run->add_option("--icd", run_opt.icd_files, kIcdOptionHelp)->delimiter(':');
+  addDeviceChoice(run, run_opt);
   // One glob is RunOptions::filter; several are RunOptions::filters.
   run->add_option_function<std::vector<std::string>>(
       "--filter",
@@ -70,10 +69,7 @@ void addSelectionOptions(CLI::App* run, RunOptions& run_opt) {
 void addSideOptions(CLI::App* run, RunOptions& run_opt) {
   run->add_flag("--no-model", run_opt.no_model, "Run the device only");
   run->add_flag("--no-device", run_opt.no_device, "Run the model only");
-  run->add_flag("--no-validation", run_opt.no_validation,
-                "Do not load the Khronos validation layer");
-  run->add_flag("--strict-validation", run_opt.strict_validation,
-                "Fail when the validation layer is not installed (ctest sets this)");
+  addValidationOptions(run, run_opt);
   run->add_option("--threads", run_opt.threads, "Model threads (0: all cores)")
       ->check(wholeCount())
       ->capture_default_str();

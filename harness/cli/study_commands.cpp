@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "accuracy/run_accuracy.h"
+#include "cli/device_options.h"
 #include "cli/option_checks.h"
 #include "cli/subcommands.h"
 #include "mutate/mutate_run.h"
@@ -17,7 +18,7 @@ namespace {
 // report folder. `counted`: what happens to other devices' saved bundles.
 void addStudyOptions(CLI::App* study, RunOptions& run, std::vector<std::string>& saved_devices,
                      std::string& out, const std::string& counted) {
-  study->add_option("--device", run.device, "Vulkan device name (substring)");
+  addDeviceChoice(study, run);
   study->add_flag("--no-device", run.no_device, "The model tiers only");
   study->add_option("--device-results", saved_devices,
                     "Run folders of other devices (e.g. a run-only binary's run on a GPU "
@@ -30,8 +31,7 @@ void addStudyOptions(CLI::App* study, RunOptions& run, std::vector<std::string>&
   study->add_option("--timeout", run.timeout, "Seconds per case side")
       ->check(positiveSeconds())
       ->capture_default_str();
-  study->add_flag("--strict-validation", run.strict_validation,
-                  "Fail when the validation layer is not installed");
+  addValidationOptions(study, run);
 }
 
 }  // namespace
@@ -63,8 +63,6 @@ Subcommand addAccuracyCommand(CLI::App& app) {
   accuracy->add_option("--hard", opt->hard, "Hard cases (glob; repeat it for more)")
       ->capture_default_str();
   addStudyOptions(accuracy, opt->run, opt->saved_devices, opt->out, "compared");
-  accuracy->add_flag("--no-validation", opt->run.no_validation,
-                     "Do not load the Khronos validation layer");
   return {accuracy, [opt] {
             return runAccuracy(*opt);
           }};
