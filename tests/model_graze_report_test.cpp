@@ -49,34 +49,5 @@ TEST(ModelGrazeReport, GrazedBoxIsUnsureWhereverItsProgramReports) {
   }
 }
 
-// Two boxes sharing the face x = 1 ([-1, 1] and [1, 3] in x), a ray in
-// that plane: each box is entered or not on its own (no watertightness joins
-// boxes), so entering neither is a legal miss, not a leak as between two
-// triangles of a shared edge. Before, the two boxes were one group at their
-// common slab t and the miss was listed as a leak answer.
-TEST(ModelGrazeReport, TwoBoxesSharingAGrazedFaceMayBothBeMissed) {
-  Geometry g;
-  g.kind = Geometry::Kind::Aabbs;
-  g.aabbs = {{-1, -1, -1, 1, 1, 1}, {1, -1, -1, 3, 1, 1}};
-  g.flags = kGeometryOpaque;
-  Case c = baseCase({g}, {downRay(1.0f, 0)});
-  Stmt rep;
-  rep.kind = Stmt::Kind::Report;
-  rep.t = litf(4.5f);
-  rep.hit_kind = lit(3);
-  c.pipeline.hit_groups[0].intersection = Program{rep};
-  Results r = run(c, ModelTier::Exact);
-  ASSERT_EQ(r.statusText(), "ok");
-  ASSERT_EQ(r.ambiguous.size(), 1u);
-  const RayAmbiguity& a = r.ambiguous[0];
-  EXPECT_EQ(a.reason, AmbiguityReason::AabbFace);
-  std::map<uint32_t, bool> hit_primitive;
-  bool miss = false;
-  for (const Candidate& k : a.candidates) (k.hit ? hit_primitive[k.primitive] : miss) = true;
-  EXPECT_TRUE(miss);
-  EXPECT_TRUE(hit_primitive[0] && hit_primitive[1]);
-  EXPECT_TRUE(a.leak_answers.empty());
-}
-
 }  // namespace
 }  // namespace rayspec

@@ -402,86 +402,39 @@ uint64_t ModelTracer::effectOf(const Committed& b, const Payload& payload,
   return d.h;
 }
 
-namespace {
-
-std::vector<std::vector<size_t>> triangleGroups(const Traversal& actual,
-                                                const std::vector<ModelCandidate>& cands,
-                                                const std::vector<size_t>& unsure) {
-  std::vector<std::vector<size_t>> groups;
-  for (size_t u : unsure) {
-    if (cands[u].aabb) continue;
-    const bool joins = !groups.empty() && std::fabs(cands[u].t - cands[groups.back().back()].t) <=
-                                              actual.tol(cands[u].t);
-    if (joins)
-      groups.back().push_back(u);
-    else
-      groups.push_back({u});
-  }
-  return groups;
-}
-
-// The boxes entered, as force values of `boxes` (1 entered, 0 not), for
-// each what-if run over the unsure boxes of a trace: a grazed box is entered
-// or not whatever its neighbours do (no watertightness joins boxes, and its
-// intersection program may report anywhere in its interval). The model's
-// own run enters them all; the runs: each box alone, none, and all but
-// one, each once. Every subset up to three boxes; beyond (four boxes at a
-// shared corner), the subsets of two of four are not tried.
-std::vector<std::vector<int8_t>> boxChoices(size_t boxes) {
-  std::vector<std::vector<int8_t>> choices;
-  const auto add = [&](const std::vector<int8_t>& c) {
-    if (std::count(c.begin(), c.end(), int8_t(1)) == long(boxes)) return;  // the model's own
-    if (std::find(choices.begin(), choices.end(), c) == choices.end()) choices.push_back(c);
-  };
-  for (size_t b = 0; b < boxes; ++b) {
-    std::vector<int8_t> alone(boxes, 0);
-    alone[b] = 1;
-    add(alone);
-  }
-  add(std::vector<int8_t>(boxes, 0));
-  for (size_t b = 0; b < boxes; ++b) {
-    std::vector<int8_t> all_but(boxes, 1);
-    all_but[b] = 0;
-    add(all_but);
-  }
-  return choices;
-}
-
-}  // namespace
-
-// What-if runs of the decision for an ambiguous trace. Within a group of
-// unsure triangles (triangleGroups) each candidate alone is a hit
-// (watertight: at least one of a shared edge's triangles is hit); a group of
-// one may also be no hit. Unsure boxes are entered as boxChoices says. Stage programs run again, in
-// a sandbox: their counters, record and payload effects are undone.
+// What-if runs of the decision for an ambiguous trace: the unsure candidates
+// are grouped by distance (a group crosses one edge or vertex, shared or not).
+// Within a group each candidate alone is a hit (watertight: at least one of a
+// shared edge's triangles is hit); a group of one may also be no hit. Stage
+// programs run again, in a sandbox: their counters, record and payload
+// effects are undone.
 std::vector<WhatIfAnswer> ModelTracer::whatIf(const Traversal& actual,
                                               const std::vector<ModelCandidate>& cands,
                                               const std::vector<size_t>& unsure,
                                               const Payload& payload_in,
                                               std::vector<WhatIfAnswer>* leaks) {
   std::vector<WhatIfAnswer> out;
+  if (unsure.empty()) return out;
   WhatIf how{false, std::vector<int8_t>(cands.size(), -1), -1, -1, {}};
   auto run = [&](std::vector<WhatIfAnswer>& into) {
     into.push_back({sandbox(actual, cands, how, payload_in), how});
   };
-  for (const std::vector<size_t>& group : triangleGroups(actual, cands, unsure)) {
-    for (size_t a : group) {
-      for (size_t b : group) how.force[b] = a == b ? 1 : 0;
+  size_t g0 = 0;
+  while (g0 < unsure.size()) {
+    size_t g1 = g0 + 1;
+    while (g1 < unsure.size() && std::fabs(cands[unsure[g1]].t - cands[unsure[g1 - 1]].t) <=
+                                     actual.tol(cands[unsure[g1]].t))
+      ++g1;
+    for (size_t a = g0; a < g1; ++a) {
+      for (size_t b = g0; b < g1; ++b) how.force[unsure[b]] = a == b ? 1 : 0;
       run(out);
     }
     // No triangle of the group hit: legal for a group of one (a border), a
     // leak between the triangles of a group of two or more.
-    for (size_t b : group) how.force[b] = 0;
-    run(group.size() == 1 ? out : *leaks);
-    for (size_t b : group) how.force[b] = -1;
-  }
-  std::vector<size_t> boxes;
-  for (size_t u : unsure)
-    if (cands[u].aabb) boxes.push_back(u);
-  if (boxes.empty()) return out;
-  for (const std::vector<int8_t>& choice : boxChoices(boxes.size())) {
-    for (size_t b = 0; b < boxes.size(); ++b) how.force[boxes[b]] = choice[b];
-    run(out);
+    for (size_t b = g0; b < g1; ++b) how.force[unsure[b]] = 0;
+    run(g1 - g0 == 1 ? out : *leaks);
+    for (size_t b = g0; b < g1; ++b) how.force[unsure[b]] = -1;
+    g0 = g1;
   }
   return out;
 }
