@@ -94,6 +94,85 @@ TEST(Show, ARobustnessProbeListsItsUndefinedBehaviour) {
   EXPECT_NE(r.out.find("rays.list[4].tmin: tmin is NaN", at), std::string::npos) << r.out;
 }
 
+// Issue 61: show lists what each aimed ray is aimed at, and what the model
+// expects of each ray (which stage ran, the recorded fields, the legal
+// answers of an ambiguous ray).
+TEST(Show, AimedRaysTargetsAndWhatTheModelExpects) {
+  const std::string path = std::string(RAYSPEC_TEST_OUT) + "/show/aimed.yaml";
+  fs::create_directories(fs::path(path).parent_path());
+  std::ofstream(path) << R"(rules: [R-WATERTIGHT]
+scene:
+  blas:
+    grid: [{triangles: {grid: {cells: [2, 2], size: [2, 2], center: [0, 0, 0]}}, flags: [opaque]}]
+  instances: [{blas: grid, transform: {translate: [10, 0, 0]}}]
+rays:
+  aim: {at: [vertices, faces], offset: [0, 0, 1]}
+  tmax: 10
+pipeline:
+  miss: [[record: {hit: 0}]]
+  hit_groups: [{closest_hit: [record: [hit, primitive_id]]}]
+outputs: {per_ray: [hit, primitive_id]}
+)";
+  const ShowRun r = show(path + " --no-glsl");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const size_t aimed = r.out.find("Aimed rays (rays.aim: what each ray is aimed at):\n");
+  ASSERT_NE(aimed, std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  ray 0: vertex of instance 0 geometry 0 triangles ", aimed),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find(" at (0, 0, 0) (world (10, 0, 0))\n", aimed), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  ray 1: centroid of instance 0 geometry 0 triangle 0 at (", aimed),
+            std::string::npos)
+      << r.out;
+  const size_t model = r.out.find("Model (exact tier) expects:\n");
+  ASSERT_NE(model, std::string::npos) << r.out;
+  const size_t ray0 = r.out.find("  ray 0: closest-hit ran; hit 1, primitive_id ", model);
+  ASSERT_NE(ray0, std::string::npos) << r.out;
+  const std::string line0 = r.out.substr(ray0, r.out.find('\n', ray0) - ray0);
+  EXPECT_NE(line0.find("; ambiguous (vertex): legal answers instance 0 geometry 0 primitives "),
+            std::string::npos)
+      << "the vertex's triangles are its legal answers: " << line0;
+  EXPECT_NE(r.out.find("  ray 1: closest-hit ran; hit 1, primitive_id 0\n", model),
+            std::string::npos)
+      << r.out;
+}
+
+// Issue 61: a case traced by ray queries from a compute shader is launched
+// by a dispatch, not by trace_rays.
+TEST(Show, AComputeCaseIsLaunchedByADispatch) {
+  const ShowRun r = show("ray-query/compute-closest-hit-and-miss --no-glsl --no-model");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("launched by vkCmdDispatch of 7 x 1 x 1 workgroups of 64 "
+                       "(pipeline.traces: ray_query_compute"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("launched by trace_rays"), std::string::npos) << r.out;
+  const ShowRun pipeline = show("builtins/closest-hit-and-miss --no-glsl --no-model");
+  EXPECT_NE(pipeline.out.find(", launched by trace_rays\n"), std::string::npos) << pipeline.out;
+  EXPECT_EQ(pipeline.out.find("Model (exact tier)"), std::string::npos) << "--no-model";
+}
+
+// Issue 61: show runs `rayspec check`'s portability check and says its verdict.
+TEST(Show, SaysWhetherTheCaseIsPortable) {
+  const ShowRun bad =
+      show(RAYSPEC_SOURCE_DIR "/tests/data/not-portable/candidates-exact.yaml --no-glsl");
+  ASSERT_EQ(bad.status, 0) << bad.err;
+  const size_t at = bad.out.find("NOT PORTABLE:\n  ");
+  ASSERT_NE(at, std::string::npos) << bad.out;
+  EXPECT_NE(bad.out.find("counters[0].candidates: not portable: a device the specification "
+                         "allows",
+                         at),
+            std::string::npos)
+      << bad.out;
+  const ShowRun good =
+      show(RAYSPEC_SOURCE_DIR "/tests/data/portable/candidates-at-least.yaml --no-glsl");
+  ASSERT_EQ(good.status, 0) << good.err;
+  EXPECT_NE(good.out.find("Portable: every device the specification allows passes it ("),
+            std::string::npos)
+      << good.out;
+  EXPECT_EQ(good.out.find("NOT PORTABLE"), std::string::npos) << good.out;
+}
+
 // The coverage contract: every rule of the catalog but R-UB is claimed by a
 // case of the suite (sweep variants included).
 TEST(List, EveryRuleHasACase) {

@@ -19,10 +19,11 @@ Pos key(const Vec3& v) {
 
 }  // namespace
 
-std::vector<DVec3> meshAimPoints(const Geometry& g, const AimSpec& spec) {
-  std::vector<DVec3> out;
+std::vector<AimTarget> meshAimTargets(const Geometry& g, const AimSpec& spec) {
+  std::vector<AimTarget> out;
   if (g.kind != Geometry::Kind::Triangles) return out;
   std::vector<std::array<Vec3, 3>> tris;
+  std::vector<uint32_t> tri_ids;  // each triangle's primitive index
   for (uint32_t p = 0; p < g.primitiveCount(); ++p) {
     std::array<Vec3, 3> t;
     bool ok = true;
@@ -31,33 +32,40 @@ std::vector<DVec3> meshAimPoints(const Geometry& g, const AimSpec& spec) {
       t[v] = g.vertices[i];
       for (float x : t[v]) ok = ok && !std::isnan(x);
     }
-    if (ok) tris.push_back(t);
+    if (ok) {
+      tris.push_back(t);
+      tri_ids.push_back(p);
+    }
   }
-  // Edges by their two end positions (ordered), in order of first appearance.
-  std::map<std::pair<Pos, Pos>, int> edge_use;
+  // Edges by their two end positions (ordered), in order of first appearance,
+  // each with the triangles that have it; vertices likewise.
+  using EdgeKey = std::pair<Pos, Pos>;
+  std::map<EdgeKey, std::vector<uint32_t>> edge_tris;
   std::vector<std::pair<Vec3, Vec3>> edges;
   std::vector<Vec3> vertices;
-  std::map<Pos, bool> seen;
-  for (const auto& t : tris)
+  std::map<Pos, std::vector<uint32_t>> vertex_tris;
+  const auto edge_key = [](const Vec3& a, const Vec3& b) {
+    return key(a) < key(b) ? std::make_pair(key(a), key(b)) : std::make_pair(key(b), key(a));
+  };
+  for (size_t t = 0; t < tris.size(); ++t)
     for (int e = 0; e < 3; ++e) {
-      const Vec3 &a = t[e], &b = t[(e + 1) % 3];
-      auto k = key(a) < key(b) ? std::make_pair(key(a), key(b)) : std::make_pair(key(b), key(a));
-      if (edge_use[k]++ == 0) edges.push_back({a, b});
-      if (!seen.count(key(a))) {
-        seen[key(a)] = true;
-        vertices.push_back(a);
-      }
+      const Vec3 &a = tris[t][e], &b = tris[t][(e + 1) % 3];
+      std::vector<uint32_t>& users = edge_tris[edge_key(a, b)];
+      if (users.empty()) edges.push_back({a, b});
+      users.push_back(tri_ids[t]);
+      std::vector<uint32_t>& at = vertex_tris[key(a)];
+      if (at.empty()) vertices.push_back(a);
+      if (at.empty() || at.back() != tri_ids[t]) at.push_back(tri_ids[t]);
     }
   auto shared = [&](const Vec3& a, const Vec3& b) {
-    auto k = key(a) < key(b) ? std::make_pair(key(a), key(b)) : std::make_pair(key(b), key(a));
-    return edge_use[k] == 2;
+    return edge_tris[edge_key(a, b)].size() == 2;
   };
   if (spec.vertices)
     for (const Vec3& v : vertices) {
       bool closed = true;
       for (const auto& [a, b] : edges)
         if ((key(a) == key(v) || key(b) == key(v)) && !shared(a, b)) closed = false;
-      if (closed) out.push_back(toDouble(v));
+      if (closed) out.push_back({AimFeature::Vertex, 0, 0, vertex_tris[key(v)], toDouble(v), {}});
     }
   if (spec.edges)
     for (const auto& [a, b] : edges) {
@@ -66,19 +74,27 @@ std::vector<DVec3> meshAimPoints(const Geometry& g, const AimSpec& spec) {
         const double s = double(k) / (spec.edge_points + 1);
         DVec3 p;
         for (int c = 0; c < 3; ++c) p[c] = double(a[c]) + s * (double(b[c]) - double(a[c]));
-        out.push_back(p);
+        out.push_back({AimFeature::Edge, 0, 0, edge_tris[edge_key(a, b)], p, {}});
       }
     }
   if (spec.faces)
-    for (const auto& t : tris) {
+    for (size_t t = 0; t < tris.size(); ++t) {
       DVec3 p;
-      for (int c = 0; c < 3; ++c) p[c] = (double(t[0][c]) + double(t[1][c]) + double(t[2][c])) / 3;
-      out.push_back(p);
+      for (int c = 0; c < 3; ++c)
+        p[c] = (double(tris[t][0][c]) + double(tris[t][1][c]) + double(tris[t][2][c])) / 3;
+      out.push_back({AimFeature::Face, 0, 0, {tri_ids[t]}, p, {}});
     }
   return out;
 }
 
-Result<std::vector<Ray>> aimRays(const Scene& scene, const AimSpec& spec, const Ray& defaults) {
+std::vector<DVec3> meshAimPoints(const Geometry& g, const AimSpec& spec) {
+  std::vector<DVec3> out;
+  for (const AimTarget& t : meshAimTargets(g, spec)) out.push_back(t.object);
+  return out;
+}
+
+Result<std::vector<Ray>> aimRays(const Scene& scene, const AimSpec& spec, const Ray& defaults,
+                                 std::vector<AimTarget>* targets) {
   std::vector<Ray> rays;
   if (spec.instance >= scene.instances.size() || !scene.instances[spec.instance].blas)
     return errorMessage("instance " + std::to_string(spec.instance) +
@@ -90,9 +106,16 @@ Result<std::vector<Ray>> aimRays(const Scene& scene, const AimSpec& spec, const 
     return errorMessage("geometry " + std::to_string(spec.geometry) + " of BLAS '" + blas.name +
                         "' is not a triangle mesh");
   const Geometry& g = blas.geometries[spec.geometry];
-  for (DVec3 p : meshAimPoints(g, spec)) {
+  for (AimTarget& target : meshAimTargets(g, spec)) {
+    DVec3 p = target.object;
     if (g.transform) p = applyAffine(toDouble(*g.transform), p, 1.0);
     p = applyAffine(toDouble(inst.transform), p, 1.0);
+    if (targets) {
+      target.instance = spec.instance;
+      target.geometry = spec.geometry;
+      target.world = p;
+      targets->push_back(std::move(target));
+    }
     Ray r = defaults;
     for (int k = 0; k < 3; ++k) {
       r.origin[k] = static_cast<float>(p[k] + spec.offset[k]);

@@ -14,6 +14,18 @@
 
 namespace rayspec {
 
+// What a ray of the `aim` form is aimed at: a vertex closed all around, a
+// point of an edge two triangles share, or a triangle's centroid.
+#define RAYSPEC_AIM_FEATURES(X) X(Vertex, "vertex") X(Edge, "edge") X(Face, "centroid")
+enum class AimFeature { RAYSPEC_AIM_FEATURES(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(AimFeature, RAYSPEC_AIM_FEATURES);
+struct AimTarget {
+  AimFeature feature = AimFeature::Face;
+  uint32_t instance = 0, geometry = 0;
+  std::vector<uint32_t> primitives;  // the triangles that have the feature (a centroid: its own)
+  std::array<double, 3> object{}, world{};  // the aim point, and it through the transforms
+};
+
 struct AimSpec {
   uint32_t instance = 0, geometry = 0;
   bool vertices = true, edges = true, faces = true;  // which features to aim at
@@ -28,12 +40,16 @@ struct AimSpec {
 // centroids; in that order, each list in the order of first appearance.
 // Vertices are told apart by position. Triangles with a NaN are left out.
 std::vector<std::array<double, 3>> meshAimPoints(const Geometry& g, const AimSpec& spec);
+// The same points, each with its feature and the triangles that have it
+// (instance, geometry and world point left for aimRays).
+std::vector<AimTarget> meshAimTargets(const Geometry& g, const AimSpec& spec);
 
 // One ray per aim point (the other fields from `defaults`): the aim point
 // through the geometry's and the instance's transforms (in double) plus
 // `offset`, rounded to float, towards the point. An error when the instance
 // or geometry is not a triangle mesh of the scene or the mesh has no
-// interior feature.
-Result<std::vector<Ray>> aimRays(const Scene& scene, const AimSpec& spec, const Ray& defaults);
+// interior feature. *targets (when given) gets what each ray is aimed at.
+Result<std::vector<Ray>> aimRays(const Scene& scene, const AimSpec& spec, const Ray& defaults,
+                                 std::vector<AimTarget>* targets = nullptr);
 
 }  // namespace rayspec

@@ -1,10 +1,15 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "base/whole_file.h"
 #include "cli/commands.h"
 #include "cli/describe_case.h"
+#include "cli/model_expectations.h"
 #include "glsl/generate_glsl.h"
 #include "library/case_discovery.h"
+#include "model/model_engine.h"
+#include "mutate/case_portability.h"
+#include "parse/parse_aim.h"
 #include "parse/parse_case.h"
 #include "plan/plan.h"
 #include "program/builtins.h"
@@ -46,6 +51,36 @@ void printShader(const GeneratedShader& s) {
   std::printf("\n--- %s (%s) ---\n%s", s.name.c_str(), stageName(s.stage), s.glsl.c_str());
 }
 
+// The case's text: a sweep variant's substituted text, else its file's.
+std::string caseText(const CaseFile& f) {
+  if (f.generated) return f.text;
+  const Result<std::string> text = readWholeFile(f.path, kMaxCaseFileBytes);
+  return text ? *text : std::string();
+}
+
+// What the model expects of each ray, and whether every device the
+// specification allows passes the case (as `rayspec check`).
+void printModelAndPortability(const Case& c) {
+  if (!modelInThisBuild()) {
+    std::printf("\nModel: none in this run-only build (no expectations, no portability check)\n");
+    return;
+  }
+  Results model;
+  const CasePortability p = checkPortability(c, 0, &model);
+  std::printf("\n%s", describeModelExpectations(c, model).c_str());
+  if (p.portable())
+    std::printf(
+        "Portable: every device the specification allows passes it (%zu legal devices, "
+        "%zu of them differ from the model here)\n",
+        p.devices, p.applied);
+  else if (!p.checked)
+    std::printf("Portability not checked: %s\n", p.not_checked.c_str());
+  else if (!p.own_answers.empty())
+    std::printf("NOT PORTABLE: the model's own answers do not pass: %s\n", p.own_answers.c_str());
+  else
+    std::printf("NOT PORTABLE:\n  %s\n", notPortableText(p).c_str());
+}
+
 }  // namespace
 
 int runShow(const ShowOptions& opt) {
@@ -77,8 +112,10 @@ int runShow(const ShowOptions& opt) {
   const Case& c = *parsed.value;
   const Plan plan = derivePlan(c);
   std::printf("%s", describeCase(c).c_str());
+  std::printf("%s", describeAimTargets(aimTargetsOf(c, caseText(*file))).c_str());
   std::printf("\nPlan (what both backends build):\n");
   for (const std::string& line : plan.describe()) std::printf("%s\n", line.c_str());
+  if (!opt.no_model) printModelAndPortability(c);
   if (!opt.no_glsl) {
     const GeneratedPipeline g = generateGlsl(c, plan);
     printShader(g.raygen);

@@ -19,6 +19,7 @@ struct DevicesOptions {
 struct ShowOptions {
   std::string case_file;
   bool no_glsl = false;
+  bool no_model = false;  // no model expectations, no portability check
   bool vocabulary = false;
   std::string cases_dir = RAYSPEC_SOURCE_DIR "/cases";
 };

@@ -1,6 +1,10 @@
 #include "cli/describe_case.h"
 
+#include <cstdio>
 #include <sstream>
+
+#include "cli/model_expectations.h"
+#include "glsl/emit_compute.h"
 
 namespace rayspec {
 namespace {
@@ -66,7 +70,41 @@ void describeInterfaceTypes(const Pipeline& p, std::ostringstream& s) {
   }
 }
 
+// How the rays are launched: the trace command, or a compute dispatch.
+std::string launchText(const Case& c) {
+  if (!c.pipeline.from_compute)
+    return std::string("launched by ") + traceCommandName(c.rays.command);
+  const std::array<uint32_t, 3> g = computeGroups(c.rays.launchSize());
+  return "launched by vkCmdDispatch of " + std::to_string(g[0]) + " x " + std::to_string(g[1]) +
+         " x " + std::to_string(g[2]) + " workgroups of " + std::to_string(kComputeGroupSize) +
+         " (pipeline.traces: ray_query_compute: raygen runs as a compute shader whose traces "
+         "are ray queries; no ray tracing pipeline)";
+}
+
+std::string pointText(const std::array<double, 3>& p) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%.9g, %.9g, %.9g)", p[0], p[1], p[2]);
+  return buf;
+}
+
 }  // namespace
+
+std::string describeAimTargets(const std::vector<AimTarget>& aimed) {
+  std::ostringstream s;
+  if (aimed.empty()) return "";
+  s << "Aimed rays (rays.aim: what each ray is aimed at):\n";
+  for (size_t i = 0; i < aimed.size() && i < kShownRays; ++i) {
+    const AimTarget& t = aimed[i];
+    s << "  ray " << i << ": " << nameOf(t.feature) << " of instance " << t.instance << " geometry "
+      << t.geometry << (t.primitives.size() == 1 ? " triangle" : " triangles");
+    for (size_t k = 0; k < t.primitives.size(); ++k) s << (k ? ", " : " ") << t.primitives[k];
+    s << " at " << pointText(t.object);
+    if (t.world != t.object) s << " (world " << pointText(t.world) << ")";
+    s << '\n';
+  }
+  if (aimed.size() > kShownRays) s << "  ... " << aimed.size() - kShownRays << " more rays\n";
+  return s.str();
+}
 
 std::string describeCase(const Case& c) {
   std::ostringstream s;
@@ -97,7 +135,7 @@ std::string describeCase(const Case& c) {
     << c.rays.launchSize()[2] << " ("
     << (c.rays.same ? "every id the same ray" : std::to_string(c.rays.rays.size()) + " rays")
     << "), defaults tmin " << c.rays.defaults.tmin << " tmax " << c.rays.defaults.tmax << " flags "
-    << hex(c.rays.defaults.flags) << ", launched by " << traceCommandName(c.rays.command) << '\n';
+    << hex(c.rays.defaults.flags) << ", " << launchText(c) << '\n';
   const Pipeline& p = c.pipeline;
   s << "Pipeline: max recursion " << p.max_recursion << ", flags " << hex(p.flags) << ", "
     << (p.callable_depth

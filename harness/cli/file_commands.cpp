@@ -84,11 +84,18 @@ Subcommand addMergeCommand(CLI::App& app) {
 }
 
 Subcommand addShowCommand(CLI::App& app) {
-  auto* show = app.add_subcommand("show", "Print a parsed case, its plan and its generated GLSL");
+  auto* show = app.add_subcommand(
+      "show",
+      "Print a parsed case (aimed rays' targets too), its plan, what the model expects of each "
+      "ray, whether the case is portable (as `rayspec check`) and its generated GLSL");
   auto opt = std::make_shared<ShowOptions>();
   ShowOptions& show_opt = *opt;
   show->add_option("case", show_opt.case_file, "Case file (or case name under cases/)");
   show->add_flag("--no-glsl", show_opt.no_glsl, "Leave out the generated GLSL");
+  show->add_flag("--no-model", show_opt.no_model,
+                 "Leave out what the model expects of each ray and the portability check (as "
+                 "`rayspec check`: every device the specification allows judged on the case), "
+                 "both of which run the model");
   show->add_flag("--vocabulary", show_opt.vocabulary,
                  "List the built-ins and operators of the stage vocabulary");
   show->add_option("--cases", show_opt.cases_dir, "Folder of case files")->capture_default_str();

@@ -46,7 +46,7 @@ void judgeDevices(const Case& c, const Plan& plan, const Results& model, const R
 
 }  // namespace
 
-CasePortability checkPortability(const Case& c, unsigned threads) {
+CasePortability checkPortability(const Case& c, unsigned threads, Results* model_out) {
   CasePortability out;
   if (!modelInThisBuild()) {
     out.not_checked = "this run-only build has no model to check by";
@@ -58,6 +58,7 @@ CasePortability checkPortability(const Case& c, unsigned threads) {
   mo.tier = ModelTier::Exact;
   mo.threads = threads;
   const Results model = runOnModel(c, plan, mo);
+  if (model_out) *model_out = model;
   if (!model.ok()) {
     out.not_checked = "the model did not run it: " + model.statusText();
     return out;

@@ -15,6 +15,7 @@
 
 #include "case/case.h"
 #include "mutate/not_portable_cause.h"
+#include "results/results.h"
 
 namespace rayspec {
 
@@ -34,8 +35,8 @@ struct CasePortability {
 };
 
 // The model's exact tier and every legal device on `c`; `threads` for the
-// model (0: every core).
-CasePortability checkPortability(const Case& c, unsigned threads);
+// model (0: every core). *model (when given): the model's run of `c`.
+CasePortability checkPortability(const Case& c, unsigned threads, Results* model = nullptr);
 
 // The CaseError message of a case that is not portable: each problem's
 // notPortableMessage, one a line (the first unindented); "" when portable or

@@ -5,6 +5,7 @@
 #include "case/aim_rays.h"
 #include "case/camera_rays.h"
 #include "case/flag_names.h"
+#include "parse/parse_aim.h"
 #include "parse/parse_parts.h"
 
 namespace rayspec {
@@ -194,62 +195,10 @@ void parseSame(YamlReader& r, const YAML::Node& n, Rays& rays) {
   rays.same = true;
 }
 
-bool featureList(YamlReader& r, const YAML::Node& at, const std::string& f, AimSpec& spec) {
-  if (!r.expectSeq(at, f)) return false;
-  spec.vertices = spec.edges = spec.faces = false;
-  for (size_t i = 0; i < at.size(); ++i) {
-    const auto name = r.string(at[i], f + "[" + std::to_string(i) + "]");
-    if (!name) return false;
-    if (*name == "vertices")
-      spec.vertices = true;
-    else if (*name == "edges")
-      spec.edges = true;
-    else if (*name == "faces")
-      spec.faces = true;
-    else {
-      r.error(at[i], f + "[" + std::to_string(i) + "]",
-              "unknown feature '" + *name + "' (vertices, edges, faces)");
-      return false;
-    }
-  }
-  return true;
-}
-
 void parseAim(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& rays) {
   const std::string field = "rays.aim";
-  if (!r.expectMap(n, field,
-                   {"instance", "geometry", "at", "edge_points", "offset", "direction_scale"}) ||
-      !r.require(n, field, "offset"))
-    return;
   AimSpec spec;
-  auto get = [&](const char* key) {
-    return YamlReader::get(n, key);
-  };
-  bool ok = true;
-  auto uint_field = [&](const char* key, uint32_t max, uint32_t& out) {
-    if (!YamlReader::has(n, key)) return;
-    if (auto v = r.uint(get(key), field + "." + key, max))
-      out = *v;
-    else
-      ok = false;
-  };
-  uint_field("instance", kInstanceFieldMask, spec.instance);
-  uint_field("geometry", kInstanceFieldMask, spec.geometry);
-  uint_field("edge_points", 64, spec.edge_points);
-  if (YamlReader::has(n, "at") && !featureList(r, get("at"), field + ".at", spec)) ok = false;
-  if (auto o = r.numbers<3>(get("offset"), field + ".offset"))
-    spec.offset = *o;
-  else
-    ok = false;
-  if (YamlReader::has(n, "direction_scale")) {
-    auto s = r.number(get("direction_scale"), field + ".direction_scale");
-    if (s && *s > 0)
-      spec.direction_scale = *s;
-    else if (s)
-      r.error(get("direction_scale"), field + ".direction_scale", "must be positive");
-    ok = ok && s && *s > 0;
-  }
-  if (!ok) return;
+  if (!readAimSpec(r, n, spec)) return;
   Result<std::vector<Ray>> aimed = aimRays(scene, spec, rays.defaults);
   if (!aimed) {
     r.error(n, field, aimed.error().message);
