@@ -134,6 +134,11 @@ TEST(Reduce, ACaseThatPassesIsNotReduced) {
   EXPECT_EQ(sh(kBin + " reduce " + kCase + " --out " + dir + "/out", dir + "/log"), 1)
       << slurp(dir + "/log");
   EXPECT_FALSE(std::filesystem::exists(dir + "/out/reduced.yaml"));
+  // The verdict named once (issue 61: it said "Pass: Pass").
+  EXPECT_NE(
+      slurp(dir + "/log").find(std::string(kCase) + " does not fail to begin with: it passes\n"),
+      std::string::npos)
+      << slurp(dir + "/log");
 }
 
 // A word for the shell this test's command lines go through.

@@ -2,6 +2,7 @@
 // tests, the document's sites and their edits, the failure signature.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 #include "parse/parse_case.h"
@@ -10,6 +11,8 @@
 #include "reduce/number_sites.h"
 #include "reduce/operand_sites.h"
 #include "reduce/rays_to_list.h"
+#include "reduce/reduce_report.h"
+#include "reduce/used_vertices.h"
 #include "reduce/yaml_sites.h"
 
 namespace rayspec {
@@ -174,6 +177,107 @@ rays:
   const Site* build = findSite(sites, "scene.build");
   ASSERT_NE(build, nullptr);
   EXPECT_EQ(build->keys, std::vector<std::string>({"flags", "copy"}));
+}
+
+constexpr const char* kGridCase = R"(rules: [R-MISS-XOR-CHIT]
+scene:
+  blas:
+    tri:
+      - triangles: {vertices: [[-1, -1, 0], [2, -1, 0], [-1, 2, 0]]}
+  instances: [{blas: tri}]
+rays:
+  grid: {size: [3, 2], origin: [0.1, -0.3, 5], du: [0.37, 0, 0], dv: [0, 0.29, 0], direction: [0, 0.01, -1]}
+  tmax: 50
+pipeline:
+  miss: [[count: miss]]
+  hit_groups: [{closest_hit: [count: closesthit]}]
+outputs: {counters: [miss, closesthit]}
+)";
+
+// Issue 61: a reduced case printed `-0`. A zero is written 0 but in a ray
+// direction, where its sign decides 1 / d and the case had it.
+TEST(ReduceEmit, ANegativeZeroIsWrittenAsZeroButInADirection) {
+  EXPECT_EQ(floatText(-0.0f), "0");
+  EXPECT_EQ(floatText(0.0f), "0");
+  EXPECT_EQ(floatText(-0.5f), "-0.5");
+  EXPECT_EQ(exactFloatText(-0.0f), "-0");
+  ParseResult grid = parseCaseText(kGridCase, "g.yaml", "reduce/g");
+  ASSERT_TRUE(grid.value);
+  grid.value->rays.rays[1].origin = {-0.0f, 0.25f, 5};
+  grid.value->rays.rays[1].direction = {-0.0f, 0, -1};
+  const YAML::Node doc = YAML::Load(kGridCase);
+  const std::optional<YAML::Node> list = raysAsList(doc["rays"], *grid.value, {1});
+  ASSERT_TRUE(list);
+  const std::string text = emitYaml(*list);
+  EXPECT_NE(text.find("origin: [0, 0.25, 5]"), std::string::npos) << text;
+  EXPECT_NE(text.find("direction: [-0, 0, -1]"), std::string::npos) << text;
+  const ParseResult listed =
+      parseCaseText(emitYaml(replacedAt(doc, {{false, 0, "rays"}}, *list)), "l.yaml", "reduce/l");
+  ASSERT_TRUE(listed.value);
+  EXPECT_TRUE(std::signbit(listed.value->rays.rays[0].direction[0]));
+  EXPECT_FALSE(std::signbit(listed.value->rays.rays[0].origin[0]));
+}
+
+// Issue 61: a reduction that kept none of a geometry's indices left
+// `indices: []`, which is no index buffer (the vertices make the triangles
+// three by three): the key goes, and the vertices past the last whole
+// triangle; the same triangles.
+TEST(ReduceEmit, EmptiedIndicesGoAndTheVerticesMakeTheSameTriangles) {
+  const std::string tri = "{vertices: [[-1, -1, 0], [2, -1, 0], [-1, 2, 0]]}";
+  const auto geometry_of = [&](const std::string& triangles) {
+    std::string text = kGridCase;
+    text.replace(text.find(tri), tri.size(), triangles);
+    const ParseResult parsed = parseCaseText(text, "e.yaml", "reduce/e");
+    EXPECT_TRUE(parsed.value) << (parsed.errors.empty() ? "" : parsed.errors[0].format());
+    return parsed.value ? parsed.value->scene.blases[0].geometries[0] : Geometry{};
+  };
+  const std::string none = "{vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0], [5, 5, 5]], indices: []}";
+  const std::optional<YAML::Node> listed = usedVerticesOnly(YAML::Load(none));
+  ASSERT_TRUE(listed);
+  const std::string text = emitYaml(*listed);
+  EXPECT_EQ(text, "{vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}\n");
+  EXPECT_FALSE(usedVerticesOnly(*listed)) << "nothing more to drop";
+  const Geometry before = geometry_of(none), after = geometry_of(text.substr(0, text.size() - 1));
+  EXPECT_EQ(before.primitiveCount(), 1u);
+  EXPECT_EQ(after.primitiveCount(), 1u);
+  for (uint32_t v = 0; v < 3; ++v) EXPECT_EQ(after.vertices[v], before.vertices[v]);
+  const YAML::Node some =
+      YAML::Load("{vertices: [[9, 9, 9], [0, 0, 0], [1, 0, 0], [0, 1, 0]], indices: [3, 1, 2]}");
+  const std::optional<YAML::Node> used = usedVerticesOnly(some);
+  ASSERT_TRUE(used);
+  EXPECT_EQ(emitYaml(*used), "{vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]], indices: [2, 0, 1]}\n");
+  EXPECT_FALSE(usedVerticesOnly(*used)) << "every vertex used";
+}
+
+// Issue 61: emptied lists (`flags: []`, a ray query's `aabb: []`) are found
+// to be left out where the case still fails so.
+TEST(ReduceEmit, EmptyListsAreFound) {
+  const YAML::Node doc = YAML::Load(R"(scene:
+  instances: [{blas: b, flags: []}]
+pipeline:
+  raygen:
+    - ray_query: {triangle: [confirm], aabb: [], after: [record: {hit: 1}]}
+  miss: [[]]
+)");
+  std::vector<std::string> paths;
+  for (const YamlPath& p : emptyListKeys(doc)) paths.push_back(pathText(p));
+  EXPECT_EQ(paths, (std::vector<std::string>{"scene.instances[0].flags",
+                                             "pipeline.raygen[0].ray_query.aabb"}))
+      << "an empty miss program is a list element, not a key";
+}
+
+// Issue 61: "does not fail to begin with: Pass: Pass" named the verdict twice.
+TEST(ReduceReport, ACaseThatDoesNotFailNamesItsVerdictOnce) {
+  CaseOutcome pass;
+  pass.status = Status::Pass;
+  pass.headline = "Pass";
+  EXPECT_EQ(notFailingText("a/b", "", pass), "a/b does not fail to begin with: it passes");
+  CaseOutcome warned;
+  warned.status = Status::QualityWarning;
+  warned.headline = "QualityWarning: R-WATERTIGHT: ray 3 passed between two triangles";
+  EXPECT_EQ(notFailingText("a/b", "R-MASK", warned),
+            "a/b does not fail by R-MASK to begin with: QualityWarning: R-WATERTIGHT: ray 3 "
+            "passed between two triangles");
 }
 
 TEST(ReduceRays, GridBecomesAListOfTheSameRays) {

@@ -9,10 +9,10 @@
 namespace rayspec {
 namespace {
 
-YAML::Node vectorNode(const Vec3& v) {
+YAML::Node vectorNode(const Vec3& v, std::string (*text)(float)) {
   YAML::Node n(YAML::NodeType::Sequence);
   n.SetStyle(YAML::EmitterStyle::Flow);
-  for (int k = 0; k < 3; ++k) n.push_back(floatText(v[k]));
+  for (int k = 0; k < 3; ++k) n.push_back(text(v[k]));
   return n;
 }
 
@@ -29,8 +29,8 @@ YAML::Node flagsNode(uint32_t flags) {
 YAML::Node rayNode(const Ray& r, const Ray& d) {
   YAML::Node n(YAML::NodeType::Map);
   n.SetStyle(YAML::EmitterStyle::Flow);
-  n["origin"] = vectorNode(r.origin);
-  n["direction"] = vectorNode(r.direction);
+  n["origin"] = vectorNode(r.origin, floatText);
+  n["direction"] = vectorNode(r.direction, exactFloatText);
   const auto differs = [](float a, float b) {
     return std::memcmp(&a, &b, sizeof a) != 0;
   };
@@ -47,6 +47,10 @@ YAML::Node rayNode(const Ray& r, const Ray& d) {
 }  // namespace
 
 std::string floatText(float v) {
+  return exactFloatText(v == 0.0f ? 0.0f : v);
+}
+
+std::string exactFloatText(float v) {
   if (std::isnan(v)) return ".nan";
   if (std::isinf(v)) return v > 0 ? ".inf" : "-.inf";
   char buf[32];

@@ -190,9 +190,7 @@ int runReduce(const ReduceOptions& requested) {
   if (signature && failsWithoutTheFault(probe, *parsed.value, opt.run.plant_fault, &interrupted))
     return interrupted ? badInput("interrupted") : kReduceNotFailing;
   if (!signature) {
-    std::printf("%s does not fail%s to begin with: %s: %s\n", f->name.c_str(),
-                opt.keep.empty() ? "" : (" by " + visibleLine(opt.keep)).c_str(),
-                statusName(original.status), visibleLine(original.headline).c_str());
+    std::printf("%s\n", notFailingText(f->name, opt.keep, original).c_str());
     return kReduceNotFailing;
   }
   std::printf("Reducing %s: keeps %s: %s%s\n", f->name.c_str(), statusName(signature->status),

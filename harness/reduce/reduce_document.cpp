@@ -1,13 +1,13 @@
 #include "reduce/reduce_document.h"
 
 #include <algorithm>
-#include <map>
 #include <set>
 
 #include "reduce/delta_debug.h"
 #include "reduce/number_sites.h"
 #include "reduce/operand_sites.h"
 #include "reduce/rays_to_list.h"
+#include "reduce/used_vertices.h"
 #include "reduce/yaml_sites.h"
 
 namespace rayspec {
@@ -82,34 +82,37 @@ void writeOutMeshes(YAML::Node& doc, VariantJudge& judge) {
   }
 }
 
-// Indexed triangles keep only the vertices their indices name, renumbered.
+// Indexed triangles keep only the vertices their indices name, renumbered;
+// `indices: []` goes (reduce/used_vertices.h).
 void dropUnusedVertices(YAML::Node& doc, VariantJudge& judge) {
-  for (const Site& site : reductionSites(doc)) {
-    if (site.part != "primitives" || site.path.back().key != "indices") continue;
-    YamlPath tri(site.path.begin(), site.path.end() - 1);
-    const YAML::Node indices = nodeAt(doc, site.path);
-    const YAML::Node vertices = nodeAt(doc, [&] {
-      YamlPath p = tri;
-      p.push_back({false, 0, "vertices"});
-      return p;
-    }());
-    if (!vertices.IsSequence()) continue;
-    std::set<size_t> used;
-    for (size_t i = 0; i < indices.size(); ++i) used.insert(indices[i].as<size_t>(0));
-    if (used.size() >= vertices.size() || *used.rbegin() >= vertices.size()) continue;
-    std::map<size_t, size_t> renumbered;
-    YAML::Node new_vertices(YAML::NodeType::Sequence), new_indices = flowSeq();
-    new_vertices.SetStyle(vertices.Style());
-    for (size_t v : used) {
-      renumbered[v] = renumbered.size();
-      new_vertices.push_back(vertices[v]);
+  const YamlPath blas{{false, 0, "scene"}, {false, 0, "blas"}};
+  const YAML::Node blases = nodeAt(doc, blas);
+  if (!blases.IsMap()) return;
+  std::vector<std::string> names;
+  for (auto it = blases.begin(); it != blases.end(); ++it) names.push_back(it->first.Scalar());
+  for (const std::string& name : names) {
+    const YAML::Node geometries = nodeAt(doc, plus(blas, name));
+    for (size_t g = 0; geometries.IsSequence() && g < geometries.size(); ++g) {
+      const YamlPath tri = plus(plus(plus(blas, name), g), "triangles");
+      if (const std::optional<YAML::Node> used = usedVerticesOnly(nodeAt(doc, tri)))
+        tryReplace(doc, tri, *used, pathText(tri) + ": unused vertices dropped", judge);
     }
-    for (size_t i = 0; i < indices.size(); ++i)
-      new_indices.push_back(renumbered[indices[i].as<size_t>(0)]);
-    YAML::Node map = YAML::Clone(nodeAt(doc, tri));
-    map["vertices"] = new_vertices;
-    map["indices"] = new_indices;
-    tryReplace(doc, tri, map, pathText(tri) + ": unused vertices dropped", judge);
+  }
+}
+
+// Each key whose list was emptied (`flags: []`, a ray query's `aabb: []`,
+// ...) left out where the case still fails so; those the case format needs
+// (an empty box geometry's `aabbs: []`) stay. `settled`: the paths tried.
+void dropEmptyLists(YAML::Node& doc, VariantJudge& judge, std::set<std::string>& settled) {
+  for (const YamlPath& path : emptyListKeys(doc)) {
+    if (judge.stopped() || !settled.insert(pathText(path)).second) continue;
+    const YamlPath parent(path.begin(), path.end() - 1);
+    const YAML::Node map = nodeAt(doc, parent);
+    YAML::Node out(YAML::NodeType::Map);
+    out.SetStyle(map.Style());
+    for (auto it = map.begin(); it != map.end(); ++it)
+      if (it->first.Scalar() != path.back().key) out[it->first.Scalar()] = it->second;
+    tryReplace(doc, parent, out, pathText(path) + ": the empty list left out", judge);
   }
 }
 
@@ -232,7 +235,7 @@ YAML::Node reduceDocument(const YAML::Node& start, const Case& original,
                           const std::vector<uint32_t>& failing, VariantJudge& judge) {
   YAML::Node doc = YAML::Clone(start);
   listTheRays(doc, original, failing, judge);
-  std::set<std::string> settled, hoisted;
+  std::set<std::string> settled, hoisted, emptied;
   // The sizes first: every later variant builds and launches less.
   if (lowerNumbers(doc, judge, settled, {"generator", "launch"})) listTheRaysAgain(doc, judge);
   writeOutMeshes(doc, judge);
@@ -246,6 +249,7 @@ YAML::Node reduceDocument(const YAML::Node& start, const Case& original,
     }
     if (!progress) break;
   }
+  dropEmptyLists(doc, judge, emptied);
   return doc;
 }
 

@@ -89,6 +89,18 @@ std::string stepsText(const ReductionRecord& r) {
 
 }  // namespace
 
+std::string notFailingText(const std::string& name, const std::string& keep,
+                           const CaseOutcome& outcome) {
+  // The headline begins with the status's name (compare/verdict.h): alone,
+  // it says no more than the status.
+  const std::string verdict =
+      outcome.headline.empty() ? statusName(outcome.status) : outcome.headline;
+  const std::string said =
+      outcome.status == Status::Pass && verdict == statusName(Status::Pass) ? "it passes" : verdict;
+  return visibleLine(name + " does not fail" + (keep.empty() ? "" : " by " + keep) +
+                     " to begin with: " + said);
+}
+
 std::string reducedDescription(const ReductionRecord& r) {
   const FailureSignature& s = r.signature;
   std::string d = "Reduced by rayspec reduce from " + r.case_name + " (" + r.case_path +

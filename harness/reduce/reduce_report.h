@@ -31,6 +31,11 @@ struct ReductionRecord {
 // The `description:` of the reduced case.
 std::string reducedDescription(const ReductionRecord& r);
 
+// Why a case is not reduced: "NAME does not fail[ by KEEP] to begin with: "
+// and its verdict, named once ("it passes" for a Pass), made visible.
+std::string notFailingText(const std::string& name, const std::string& keep,
+                           const CaseOutcome& outcome);
+
 // What a reduction writes in its --out: the three files of writeReduction,
 // the runs of its variants (runs/) and, for a device command, the case files
 // it reads (cases/).

@@ -117,6 +117,21 @@ void flagSites(std::vector<Site>& sites, const YAML::Node& root) {
   addSeq(sites, root, plus(plus(scene, "build"), "flags"), "flags");
 }
 
+void collectEmptyLists(const YAML::Node& n, const YamlPath& path, std::vector<YamlPath>& out) {
+  if (n.IsSequence()) {
+    for (size_t i = 0; i < n.size(); ++i) collectEmptyLists(n[i], plus(path, i), out);
+  } else if (n.IsMap()) {
+    for (auto it = n.begin(); it != n.end(); ++it) {
+      if (!it->first.IsScalar()) continue;
+      const YamlPath at = plus(path, it->first.Scalar());
+      if (it->second.IsSequence() && it->second.size() == 0)
+        out.push_back(at);
+      else
+        collectEmptyLists(it->second, at, out);
+    }
+  }
+}
+
 void keySites(std::vector<Site>& sites, const YAML::Node& root) {
   const YamlPath rays{{false, 0, "rays"}};
   addKeys(sites, root, rays, "ray defaults", {"camera", "grid", "list", "aim", "same"});
@@ -179,6 +194,12 @@ std::vector<Site> reductionSites(const YAML::Node& root) {
   listSites(sites, root, pipeline, "statements");
   listSites(sites, root, {{false, 0, "outputs"}}, "outputs");
   return sites;
+}
+
+std::vector<YamlPath> emptyListKeys(const YAML::Node& root) {
+  std::vector<YamlPath> out;
+  collectEmptyLists(root, {}, out);
+  return out;
 }
 
 YAML::Node replacedAt(const YAML::Node& root, const YamlPath& path, const YAML::Node& value) {

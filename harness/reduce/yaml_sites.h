@@ -46,6 +46,11 @@ struct Site {
 // geometries, primitives, then the pipeline and the outputs.
 std::vector<Site> reductionSites(const YAML::Node& root);
 
+// The path of every map key whose value is an empty list (`indices: []`,
+// `flags: []`, ...), in document order: left by a reduction, each may go
+// where the case format does not need it.
+std::vector<YamlPath> emptyListKeys(const YAML::Node& root);
+
 // A deep copy of root keeping only the units `kept` (ascending) of the site.
 YAML::Node keepUnits(const YAML::Node& root, const Site& site, const std::vector<size_t>& kept);
 
