@@ -3,8 +3,11 @@
 // `{and: [sphere_hit, far >= tmin, near <= tmax]}` down to `far >= tmin`.
 #include <gtest/gtest.h>
 
+#include <set>
 #include <string>
 
+#include "library/case_discovery.h"
+#include "mutate/case_portability.h"
 #include "parse/parse_case.h"
 #include "reduce/portability_check.h"
 
@@ -57,6 +60,45 @@ TEST(ReducePortability, ADroppedSphereTestIsNotPortable) {
   // device runs it.
   const std::string why = check.whyNotPortable(withGuard("{ge: [sphere_far, ray_tmin]}"));
   EXPECT_NE(why.find("not portable: legal device aabb-neighbours fails"), std::string::npos) << why;
+}
+
+Case dataCase(const std::string& path) {
+  const std::string data = RAYSPEC_SOURCE_DIR "/tests/data/";
+  const std::vector<CaseFile> files = caseFilesFor(data + path, data);
+  EXPECT_EQ(files.size(), 1u) << path;
+  const ParseResult p = files.empty() ? ParseResult{} : loadCase(files.front(), data);
+  EXPECT_TRUE(p.value && p.errors.empty()) << path;
+  return p.value ? *p.value : Case{};
+}
+
+// The check is `rayspec check`'s (mutate/case_portability.h), not one of its
+// own: a variant it refuses is refused with the legal device and the finding
+// check names (a step from each fixed case of tests/data/portable to its
+// mistake in tests/data/not-portable, issue 61).
+TEST(ReducePortability, RefusesAsRayspecCheckDoes) {
+  for (const char* name : {"box-report", "candidates"}) {
+    const std::string fixed =
+        std::string(name) == "box-report" ? "box-report-tested.yaml" : "candidates-at-least.yaml";
+    const std::string broken =
+        std::string(name) == "box-report" ? "box-report-untested.yaml" : "candidates-exact.yaml";
+    const Case variant = dataCase("not-portable/" + broken);
+    const CasePortability checked = checkPortability(variant, 2);
+    ASSERT_FALSE(checked.problems.empty()) << broken;
+    // Each refusal check could give: a failing device, and check's finding
+    // (once: not the verdict's "Fail: " before it).
+    std::set<std::string> refusals;
+    for (const NotPortable& p : checked.problems) {
+      refusals.insert("not portable: legal device " + p.device + " fails: " + p.finding);
+      for (const std::string& also : p.also)
+        refusals.insert("not portable: legal device " + also + " fails: " + p.finding);
+    }
+    const PortabilityCheck check(dataCase("portable/" + fixed), 2);
+    EXPECT_EQ(check.whyNotPortable(dataCase("portable/" + fixed)), "") << fixed;
+    const std::string why = check.whyNotPortable(variant);
+    EXPECT_TRUE(refusals.count(why)) << why << "\ncheck's first: " << *refusals.begin();
+    // The reduction's own original is never held against it.
+    EXPECT_EQ(PortabilityCheck(variant, 2).whyNotPortable(variant), "") << broken;
+  }
 }
 
 }  // namespace

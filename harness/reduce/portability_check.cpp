@@ -1,24 +1,24 @@
 #include "reduce/portability_check.h"
 
-#include "model/model_engine.h"
-#include "mutate/legal_devices.h"
-#include "plan/plan.h"
+#include <map>
+
+#include "mutate/case_portability.h"
 
 namespace rayspec {
-
 namespace {
 
-// The legal devices of a case judged against the model's exact tier (as
-// `rayspec mutate` judges them); none when the model cannot run it.
-std::vector<LegalDevice> legalDevices(const Case& c, unsigned threads) {
-  if (!modelInThisBuild()) return {};
-  const Plan plan = derivePlan(c);
-  ModelOptions mo;
-  mo.tier = ModelTier::Exact;
-  mo.threads = threads;
-  const Results model = runOnModel(c, plan, mo);
-  if (!model.ok()) return {};
-  return judgeLegalDevices(c, plan, model, threads);
+// Each legal device that fails `p`'s case, with the finding it fails by (the
+// model's own answers failing count as one, kOwnAnswers).
+constexpr const char* kOwnAnswers = "the model's own answers";
+
+std::map<std::string, std::string> failingDevices(const CasePortability& p) {
+  std::map<std::string, std::string> out;
+  if (!p.own_answers.empty()) out[kOwnAnswers] = p.own_answers;
+  for (const NotPortable& problem : p.problems) {
+    out.emplace(problem.device, problem.finding);
+    for (const std::string& other : problem.also) out.emplace(other, problem.finding);
+  }
+  return out;
 }
 
 }  // namespace
@@ -28,15 +28,16 @@ PortabilityCheck::PortabilityCheck(const Case& original, unsigned threads)
 
 std::set<std::string> PortabilityCheck::falseAlarms(const Case& c) const {
   std::set<std::string> names;
-  for (const LegalDevice& d : legalDevices(c, threads_))
-    if (d.false_alarm) names.insert(d.name);
+  for (const auto& [name, finding] : failingDevices(checkPortability(c, threads_)))
+    names.insert(name);
   return names;
 }
 
 std::string PortabilityCheck::whyNotPortable(const Case& variant) const {
-  for (const LegalDevice& d : legalDevices(variant, threads_))
-    if (d.false_alarm && !original_false_alarms_.count(d.name))
-      return "not portable: legal device " + d.name + " fails: " + d.headline;
+  for (const auto& [name, finding] : failingDevices(checkPortability(variant, threads_)))
+    if (!original_false_alarms_.count(name))
+      return name == kOwnAnswers ? "not portable: " + name + " fail: " + finding
+                                 : "not portable: legal device " + name + " fails: " + finding;
   return "";
 }
 

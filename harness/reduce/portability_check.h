@@ -7,8 +7,9 @@
 // fail (R-AABB-CONS: it may run the program for a box the ray does not
 // enter): such a step is rejected. A legal device that already fails the
 // original case (a judge's false alarm, not the step's doing) is not held
-// against the variants. Needs the model: in a run-only build nothing is
-// checked.
+// against the variants. The check is `rayspec check`'s
+// (mutate/case_portability.h checkPortability). Needs the model: in a
+// run-only build nothing is checked.
 #pragma once
 
 #include <set>
@@ -23,7 +24,7 @@ class PortabilityCheck {
   // The original case's own false alarms noted; `threads` for the model.
   PortabilityCheck(const Case& original, unsigned threads);
   // "" when every legal device passes the variant (or fails the original
-  // too), else "not portable: legal device <name> fails: <headline>".
+  // too), else "not portable: legal device <name> fails: <finding>".
   std::string whyNotPortable(const Case& variant) const;
 
  private:
