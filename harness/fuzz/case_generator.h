@@ -113,6 +113,10 @@ class CaseGenerator {
   bool sbt_stride_zero_ = false;
   std::set<std::string> fields_;    // per-ray fields some program records
   std::set<std::string> counters_;  // counters some program counts
+  // Some ray is aimed at a shared edge or vertex, or grazes (rays()): its
+  // legal answers, a pass between the triangles among them (R-WATERTIGHT),
+  // differ in what it counts and records (see outputs()).
+  bool edge_rays_ = false;
 };
 
 }  // namespace rayspec

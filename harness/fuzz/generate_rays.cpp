@@ -61,11 +61,15 @@ void CaseGenerator::rays() {
   const std::string aim = chance(0.25) ? aimForm() : "";
   if (!aim.empty()) {
     out_ += aim;
+    edge_rays_ =
+        aim.find("vertices") != std::string::npos || aim.find("edges") != std::string::npos;
   } else if (chance(0.7)) {
     features_.insert("ray-list");
     out_ += "  list:\n";
     const size_t count = 2 + pick(8);
     for (size_t i = 0; i < count; ++i) out_ += "    - " + listRay() + "\n";
+    for (const char* f : {"aimed-edge", "aimed-vertex", "grazing-ray"})
+      edge_rays_ = edge_rays_ || features_.count(f);
   } else {
     features_.insert("ray-grid");
     const uint64_t w = 2 + pick(4), h = 2 + pick(4);
