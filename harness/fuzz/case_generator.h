@@ -69,6 +69,7 @@ class CaseGenerator {
   std::string rayFlags();
   std::string listRay();
   std::string wanderingRay();
+  std::string launch(uint64_t w, uint64_t h);
   // Rays aimed at generated primitives (generate_aim.cpp).
   struct Placed;
   std::optional<std::string> aimedRay();
@@ -117,6 +118,7 @@ class CaseGenerator {
   // legal answers, a pass between the triangles among them (R-WATERTIGHT),
   // differ in what it counts and records (see outputs()).
   bool edge_rays_ = false;
+  bool indirect_ = false;  // rays.command: indirect (a trace command: raygen not a compute shader)
 };
 
 }  // namespace rayspec

@@ -236,7 +236,7 @@ std::string ProgramGenerator::header() {
 void ProgramGenerator::pipeline() {
   const uint64_t traces = g_.pick(12);
   inlined_ = traces < 2;
-  compute_ = traces == 1;
+  compute_ = traces == 1 && !g_.indirect_;  // an indirect launch is a trace command's
   if (inlined_) feature(compute_ ? "traces-compute" : "traces-ray-query");
   g_.callable_count_ = !compute_ && g_.chance(0.5) ? 1 + g_.pick(2) : 0;
   if (g_.callable_count_) feature("callables");
