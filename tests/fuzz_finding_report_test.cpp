@@ -44,6 +44,19 @@ TEST(FuzzFindingReport, QuotesTheRuleOfItsSignature) {
   EXPECT_EQ(report.find(ruleOf(rules, "R-AABB-CONS").text), std::string::npos);
 }
 
+// A defect of ours has no rule of the catalog to quote.
+TEST(FuzzFindingReport, ADefectOfOursQuotesNoRule) {
+  FuzzTally::Group g;
+  g.signature = {"CaseError", "generated-shader", "vulkan: invalid", "CaseError_x"};
+  g.rayspec_defect = true;
+  CaseOutcome o;
+  o.verdict.add({Status::CaseError, "generated-shader", "vulkan: invalid", {}, 0});
+  o.deriveFromVerdict();
+  const std::string report = findingReport(FuzzOptions{}, catalog(), 3, o, g);
+  EXPECT_EQ(report.find("## "), std::string::npos) << report;
+  EXPECT_NE(report.find("a rayspec defect"), std::string::npos) << report;
+}
+
 TEST(FuzzFindingReport, EachRuleOfACombinedLabelAndAnUnknownOne) {
   const std::vector<Rule> rules = catalog();
   const std::string s = ruleSection(rules, "R-BUILTIN/R-NO-SUCH-RULE/R-AABB-CONS");

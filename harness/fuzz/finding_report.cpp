@@ -38,7 +38,8 @@ std::string findingReport(const FuzzOptions& opt, const std::vector<Rule>& catal
   if (!g.known.empty())
     r += "Known class (the case holds its feature; check that the bug is that one): " + g.known +
          "\n\n";
-  if (!s.rule.empty()) r += ruleSection(catalog, s.rule);
+  // A rule of the catalog (not a kind of our own: case-file, generated-shader).
+  if (s.rule.rfind("R-", 0) == 0) r += ruleSection(catalog, s.rule);
   r += "Headline: " + o.headline + "\n\nFindings:\n\n";
   for (const Finding& f : o.verdict.findings) {
     r += "- " + std::string(statusName(f.status)) + " " + f.rule + ": " + f.message;
