@@ -69,6 +69,7 @@ class CaseGenerator {
   std::string rayFlags();
   std::string listRay();
   std::string wanderingRay();
+  std::string launch(uint64_t w, uint64_t h);
   // Rays aimed at generated primitives (generate_aim.cpp).
   struct Placed;
   std::optional<std::string> aimedRay();
@@ -113,6 +114,11 @@ class CaseGenerator {
   bool sbt_stride_zero_ = false;
   std::set<std::string> fields_;    // per-ray fields some program records
   std::set<std::string> counters_;  // counters some program counts
+  // Some ray is aimed at a shared edge or vertex, or grazes (rays()): its
+  // legal answers, a pass between the triangles among them (R-WATERTIGHT),
+  // differ in what it counts and records (see outputs()).
+  bool edge_rays_ = false;
+  bool indirect_ = false;  // rays.command: indirect (a trace command: raygen not a compute shader)
 };
 
 }  // namespace rayspec

@@ -9,6 +9,7 @@
 
 #include "base/output_folder.h"
 #include "base/whole_file.h"
+#include "fuzz/finding_report.h"
 #include "fuzz/fuzz_tally.h"
 #include "fuzz/generate_case.h"
 #include "mutate/fault_matrix.h"
@@ -32,36 +33,9 @@ Result<GeneratedCase> writeCase(const FuzzOptions& opt, uint64_t seed) {
   return g;
 }
 
-// report.md of a signature's first case.
-std::string findingReport(const FuzzOptions& opt, uint64_t seed, const CaseOutcome& o,
-                          const FuzzTally::Group& g) {
-  const FuzzSignature& s = g.signature;
-  const bool defect = g.rayspec_defect;
-  std::string r = "# " + s.status + " " + s.rule + ": " + s.kind + "\n\n";
-  r += "Seed " + std::to_string(seed) + " (case " + fuzzCaseName(seed) + ", case.yaml here).";
-  r += defect ? " Triage: a rayspec defect (a CaseError not of the model's checks, or the "
-                "model's own crash or hang).\n\n"
-              : "\n\n";
-  if (!g.known.empty())
-    r += "Known class (the case holds its feature; check that the bug is that one): " + g.known +
-         "\n\n";
-  r += "Headline: " + o.headline + "\n\nFindings:\n\n";
-  for (const Finding& f : o.verdict.findings) {
-    r += "- " + std::string(statusName(f.status)) + " " + f.rule + ": " + f.message;
-    if (f.ray_count) r += " (" + std::to_string(f.ray_count) + " rays)";
-    r += "\n";
-  }
-  r += "\nRun it again: `rayspec run --cases " + (fs::path(opt.out) / "cases").string() +
-       " --filter " + fuzzCaseName(seed) + " --out DIR`" +
-       (opt.run.plant_fault.empty() ? "" : " --plant-fault " + opt.run.plant_fault) +
-       (opt.run.through ? " --through " + std::string(featurePathName(*opt.run.through)) : "") +
-       "\n";
-  return r;
-}
-
 // Keeps the first case of a signature: case.yaml and report.md.
-void keepFinding(const FuzzOptions& opt, uint64_t seed, const CaseOutcome& o,
-                 const FuzzTally::Group& g) {
+void keepFinding(const FuzzOptions& opt, const std::vector<Rule>& catalog, uint64_t seed,
+                 const CaseOutcome& o, const FuzzTally::Group& g) {
   const fs::path dir = fs::path(opt.out) / "findings" / g.signature.folder;
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -70,7 +44,7 @@ void keepFinding(const FuzzOptions& opt, uint64_t seed, const CaseOutcome& o,
   Result<void> written =
       text ? writeWholeFile((dir / "case.yaml").string(), *text) : Result<void>(text.error());
   if (written)
-    written = writeWholeFile((dir / "report.md").string(), findingReport(opt, seed, o, g));
+    written = writeWholeFile((dir / "report.md").string(), findingReport(opt, catalog, seed, o, g));
   if (!written) std::fprintf(stderr, "rayspec fuzz: %s\n", written.error().format().c_str());
 }
 
@@ -98,11 +72,18 @@ void fillFaultMatrix(const FuzzOptions& opt, const RunOptions& run,
   if (!written) std::fprintf(stderr, "rayspec fuzz: %s\n", written.error().format().c_str());
 }
 
+// What every batch reads: the known classes (--known), the rule catalog
+// (--rules: each finding's report quotes its rule).
+struct FuzzInputs {
+  std::vector<KnownClass> known;
+  std::vector<Rule> catalog;
+};
+
 // One batch: its cases written, run by the run loop, their outcomes
 // tallied (and, with a matrix, the faults planted in them). False: nothing
 // could run (the run's own error is on stderr), or a signal stopped it.
-bool runBatch(const FuzzOptions& opt, const std::vector<KnownClass>& known, size_t index,
-              uint64_t first, size_t count, FuzzTally& tally, FaultMatrix* matrix) {
+bool runBatch(const FuzzOptions& opt, const FuzzInputs& in, size_t index, uint64_t first,
+              size_t count, FuzzTally& tally, FaultMatrix* matrix) {
   RunOptions run = opt.run;
   run.cases_dir = (fs::path(opt.out) / "cases").string();
   run.out = (fs::path(opt.out) / "runs" / ("batch-" + std::to_string(index))).string();
@@ -125,8 +106,8 @@ bool runBatch(const FuzzOptions& opt, const std::vector<KnownClass>& known, size
   if (!journal || !*journal) return false;
   for (const CaseOutcome& o : **journal) {
     const uint64_t seed = std::stoull(o.name.substr(o.name.rfind('-') + 1));
-    if (const FuzzTally::Group* opened = tally.add(seed, o, knownClassOf(known, features[seed])))
-      keepFinding(opt, seed, o, *opened);
+    if (const FuzzTally::Group* opened = tally.add(seed, o, knownClassOf(in.known, features[seed])))
+      keepFinding(opt, in.catalog, seed, o, *opened);
   }
   if (matrix) fillFaultMatrix(opt, run, **journal, *matrix);
   return status != kExitSetup;
@@ -187,6 +168,12 @@ int runFuzz(const FuzzOptions& opt) {
     std::fprintf(stderr, "rayspec fuzz: %s\n", known.error().format().c_str());
     return kExitSetup;
   }
+  const Result<std::vector<Rule>> catalog = loadRuleCatalog(opt.run.rules_file);
+  if (!catalog) {
+    std::fprintf(stderr, "rayspec fuzz: %s\n", catalog.error().format().c_str());
+    return kExitSetup;
+  }
+  const FuzzInputs inputs{*known, *catalog};
   const Result<OutputFolder> held = claimOutputFolder(
       opt.out, {"cases", "runs", "findings", "fuzz.txt", "fault-matrix.txt"}, "fuzz");
   if (!held) {
@@ -215,7 +202,7 @@ int runFuzz(const FuzzOptions& opt) {
     const size_t done = tally.generated;
     if (opt.cases ? done >= opt.cases : elapsed() >= 60.0 * opt.minutes) break;
     const size_t count = opt.cases ? std::min(opt.batch, opt.cases - done) : opt.batch;
-    ran = runBatch(opt, *known, b, opt.seed + done, count, tally, matrix ? &*matrix : nullptr);
+    ran = runBatch(opt, inputs, b, opt.seed + done, count, tally, matrix ? &*matrix : nullptr);
     tally.seconds = elapsed();
     writeFuzzText(opt, tally);
   }

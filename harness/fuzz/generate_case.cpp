@@ -19,7 +19,7 @@ const std::vector<std::string>& generatorFeatures() {
       // the rays
       "ray-list", "ray-grid", "ray-interval", "ray-flags", "cull-mask", "sbt-stride-0",
       "aimed-centre", "aimed-edge", "aimed-vertex", "aimed-box-centre", "aimed-box-boundary",
-      "grazing-ray", "huge-ray", "aim-form",
+      "grazing-ray", "huge-ray", "aim-form", "launch-3d", "indirect-launch",
       // the programs
       "callables", "any-hit-ignore", "any-hit-terminate", "any-hit-payload", "conditional-report",
       "two-reports", "nested-trace", "nested-trace-from-miss", "hit-builtin-after-trace",

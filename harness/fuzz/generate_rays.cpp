@@ -1,6 +1,7 @@
 // The rays of a generated case: a list aimed at the scene's primitives or
 // from around it, a grid looking down, or the `aim` form over a mesh; tmin,
-// tmax, flags, cull masks, miss indices.
+// tmax, flags, cull masks, miss indices, 3D launches and the indirect
+// command.
 #include "fuzz/case_generator.h"
 
 namespace rayspec {
@@ -55,17 +56,52 @@ std::string CaseGenerator::listRay() {
   return ray + "}";
 }
 
+// Now and then the form's w x h rays launched in layers (rays.launch:
+// R-LAUNCH-3D), and the launch size read from a buffer (rays.command:
+// indirect, R-INDIRECT).
+std::string CaseGenerator::launch(uint64_t w, uint64_t h) {
+  // d: the smallest factor of the rows, or of the width for one row (the
+  // rays of a list).
+  const uint64_t rows = h > 1 ? h : w;
+  uint64_t d = 2;
+  while (rows % d) ++d;
+  const auto size = [](uint64_t x, uint64_t y, uint64_t z) {
+    return "  launch: [" + std::to_string(x) + ", " + std::to_string(y) + ", " + std::to_string(z) +
+           "]\n";
+  };
+  std::string out;
+  const bool layers = chance(0.2);
+  if (layers) {
+    features_.insert("launch-3d");
+    out += h > 1 ? size(w, h / d, d) : size(w / d, 1, d);
+  }
+  if (chance(0.12)) {
+    features_.insert("indirect-launch");
+    indirect_ = true;
+    out += "  command: indirect\n";
+    // A list in d rows: a launch of one row has no row for a wrong height
+    // to lose.
+    if (!layers && h == 1) out += size(w / d, d, 1);
+  }
+  return out;
+}
+
 void CaseGenerator::rays() {
   miss_count_ = 1 + pick(2);
   out_ += "rays:\n";
   const std::string aim = chance(0.25) ? aimForm() : "";
   if (!aim.empty()) {
     out_ += aim;
+    edge_rays_ =
+        aim.find("vertices") != std::string::npos || aim.find("edges") != std::string::npos;
   } else if (chance(0.7)) {
     features_.insert("ray-list");
     out_ += "  list:\n";
     const size_t count = 2 + pick(8);
     for (size_t i = 0; i < count; ++i) out_ += "    - " + listRay() + "\n";
+    for (const char* f : {"aimed-edge", "aimed-vertex", "grazing-ray"})
+      edge_rays_ = edge_rays_ || features_.count(f);
+    out_ += launch(count, 1);
   } else {
     features_.insert("ray-grid");
     const uint64_t w = 2 + pick(4), h = 2 + pick(4);
@@ -75,6 +111,7 @@ void CaseGenerator::rays() {
             num(5.0 / double(w)) + ", 0.0, 0.0], dv: [0.0, " + num(5.0 / double(h)) +
             ", 0.0], direction: [" + num(eighths(-0.5, 0.5)) + ", " + num(eighths(-0.5, 0.5)) +
             ", " + num(-z / 6.0) + "]}\n";
+    out_ += launch(w, h);
   }
   const double tmin = chance(0.5) ? 0.001 : eighths(0, 0.5);
   out_ += "  tmin: " + num(tmin) + "\n  tmax: " + num(chance(0.7) ? 100.0 : eighths(5, 9)) + "\n";
