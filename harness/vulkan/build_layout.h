@@ -25,7 +25,17 @@
 namespace rayspec {
 
 // Bytes before the data where scene.build.data_offsets is on.
-constexpr uint32_t kJunkOffsetBytes = 16;     // primitiveOffset of vertices and indices
+// primitiveOffset of vertices and indices: a multiple of every vertex format's
+// whole size, though the specification asks only for the component size of an
+// unpacked format (VUID-VkAccelerationStructureBuildRangeInfoKHR-primitiveOffset-03657):
+// the validation layer 1.4.363 asks for the whole size (16 bytes before float3
+// vertices: "not a multiple of 12"), and its false error would fail the case.
+constexpr uint32_t kJunkOffsetBytes = 48;
+#define RAYSPEC_JUNK_OFFSET_FITS(id, name, vk, encoding, bits, components, stride) \
+  &&kJunkOffsetBytes % (stride) == 0
+static_assert(true RAYSPEC_VERTEX_FORMATS(RAYSPEC_JUNK_OFFSET_FITS),
+              "kJunkOffsetBytes must be a multiple of every vertex format's size");
+#undef RAYSPEC_JUNK_OFFSET_FITS
 constexpr uint32_t kJunkTransformBytes = 48;  // transformOffset: one junk matrix
 constexpr uint32_t kJunkBoxes = 2;            // primitiveOffset of boxes, in strides
 
