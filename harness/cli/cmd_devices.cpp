@@ -87,8 +87,33 @@ int printProbe(const IcdProbe& p, LimitsRun& limits) {
     limits.verdict.expected += v.expected;
     limits.verdict.unexpected += v.unexpected;
     limits.verdict.unexpected_passes += v.unexpected_passes;
+    limits.verdict.unexpected_limits.insert(limits.verdict.unexpected_limits.end(),
+                                            v.unexpected_limits.begin(), v.unexpected_limits.end());
   }
   return usable;
+}
+
+// The folder of the limits baselines rayspec keeps.
+const char* const kLimitsBaselines = RAYSPEC_SOURCE_DIR "/references/baselines";
+
+// After violations no baseline given expects: the kept baseline that lists
+// them all (they are that driver's known ones) and how to pass it, or how to
+// write one.
+void printBaselineHint(const LimitsVerdict& v) {
+  if (v.unexpected == 0) return;
+  const std::vector<std::string> known = baselinesListing(kLimitsBaselines, v.unexpected_limits);
+  if (!known.empty()) {
+    std::printf(
+        "Known violations: %s lists %s as this driver's (a baseline of known limit "
+        "violations); judge against it with\n  rayspec devices --check-limits --baseline %s\n",
+        visibleLine(known.front()).c_str(), v.unexpected == 1 ? "it" : "them all",
+        visibleLine(shellWord(known.front())).c_str());
+    return;
+  }
+  std::printf(
+      "No baseline in %s lists %s. A driver's known violations go in a baseline of "
+      "`limits/<limit>,Fail` lines (as lavapipe-limits.csv there), passed with --baseline FILE.\n",
+      kLimitsBaselines, v.unexpected == 1 ? "it" : "them all");
 }
 
 }  // namespace
@@ -137,6 +162,7 @@ int runDevices(const DevicesOptions& opt) {
       "unexpected pass%s.\n",
       v.violations, v.violations == 1 ? "" : "s", v.expected, v.unexpected, v.unexpected_passes,
       v.unexpected_passes == 1 ? "" : "es");
+  printBaselineHint(v);
   return v.unexpected > 0 || v.unexpected_passes > 0 ? 1 : 0;
 }
 
