@@ -103,21 +103,21 @@ TEST(Show, ARobustnessProbeListsItsUndefinedBehaviour) {
 TEST(Show, VocabularyListsTheStagesOfEachBuiltinAndOperator) {
   const ShowRun r = rayspec("show --vocabulary");
   ASSERT_EQ(r.status, 0) << r.err;
-  const auto lineOf = [&](const std::string& start) {
+  const auto line_of = [&](const std::string& start) {
     const size_t at = r.out.find("\n  " + start + " ");
     return at == std::string::npos ? std::string()
                                    : r.out.substr(at, r.out.find('\n', at + 1) - at);
   };
-  EXPECT_NE(lineOf("hit_kind").find(" [closest_hit, any_hit]"), std::string::npos);
-  EXPECT_NE(lineOf("primitive_id").find(" [closest_hit, any_hit, intersection]"),
+  EXPECT_NE(line_of("hit_kind").find(" [closest_hit, any_hit]"), std::string::npos);
+  EXPECT_NE(line_of("primitive_id").find(" [closest_hit, any_hit, intersection]"),
             std::string::npos);
-  EXPECT_NE(lineOf("aabb_min").find(" [intersection]"), std::string::npos);
-  EXPECT_NE(lineOf("call.position").find(" [callable]"), std::string::npos);
-  EXPECT_NE(lineOf("callee.color").find(" [raygen, miss, closest_hit, callable]"),
+  EXPECT_NE(line_of("aabb_min").find(" [intersection]"), std::string::npos);
+  EXPECT_NE(line_of("call.position").find(" [callable]"), std::string::npos);
+  EXPECT_NE(line_of("callee.color").find(" [raygen, miss, closest_hit, callable]"),
             std::string::npos);
-  EXPECT_NE(lineOf("candidate.t").find(" [all stages]"), std::string::npos);
-  EXPECT_NE(lineOf("add").find(" [all stages]"), std::string::npos);
-  EXPECT_NE(lineOf("sphere_hit").find(" [intersection]"), std::string::npos);
+  EXPECT_NE(line_of("candidate.t").find(" [all stages]"), std::string::npos);
+  EXPECT_NE(line_of("add").find(" [all stages]"), std::string::npos);
+  EXPECT_NE(line_of("sphere_hit").find(" [intersection]"), std::string::npos);
   std::istringstream lines(r.out);
   int rows = 0;
   for (std::string line; std::getline(lines, line);) {
