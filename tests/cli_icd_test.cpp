@@ -66,6 +66,40 @@ TEST(Icd, DevicesListsLavapipeUsableWithItsManifest) {
   EXPECT_NE(log.find("usable device"), std::string::npos) << log;
 }
 
+// Issue 61: each device's identity (conformance version, driver ID, UUIDs),
+// the validation layer, and the library cases a usable one cannot run with
+// the missing feature that keeps them; an old layer's skips (Debian 12's
+// 1.3.239 predates position fetch) are gone with --no-validation.
+TEST(Icd, DevicesNamesIdentityLayerAndTheCasesEachMissingFeatureSkips) {
+  const std::string lvp = lavapipeManifest();
+  ASSERT_FALSE(lvp.empty()) << "lavapipe is not installed";
+  const std::string out = fresh("icd-devices-identity");
+  EXPECT_EQ(sh(kBin + " devices --icd " + lvp, out + "/log"), 0);
+  const std::string log = slurp(out + "/log");
+  const std::string block = manifestBlock(log, lvp);
+  for (const char* line : {"\n        conformance version 1.", ", driver ID MesaLlvmpipe (13)\n",
+                           "\n        device UUID ", ", driver UUID ",
+                           "\n        pipeline cache UUID ", " cases NotSupported here\n"})
+    EXPECT_NE(block.find(line), std::string::npos) << line << "\n" << block;
+  EXPECT_TRUE(std::regex_search(block, std::regex("\n        library: [0-9]+ of [0-9]+ cases "
+                                                  "NotSupported here\n")))
+      << block;
+  EXPECT_TRUE(std::regex_search(log, std::regex("\nValidation layer: (not installed|"
+                                                "VK_LAYER_KHRONOS_validation [0-9.]+ \\(on)")))
+      << log;
+  const bool old_layer = log.find("VK_LAYER_KHRONOS_validation 1.3.239 (on") != std::string::npos;
+  EXPECT_EQ(block.find(" cases under the validation layer 1.3.239 (older than an extension they "
+                       "use; --no-validation runs them)") != std::string::npos,
+            old_layer)
+      << block;
+  EXPECT_EQ(sh(kBin + " devices --no-validation --icd " + lvp, out + "/off"), 0);
+  const std::string off = slurp(out + "/off");
+  EXPECT_EQ(off.find("under the validation layer"), std::string::npos) << off;
+  if (old_layer) {
+    EXPECT_NE(off.find("1.3.239 (off: --no-validation)"), std::string::npos) << off;
+  }
+}
+
 // Every labelled row of vulkan/device_info_fields.h is a line of a usable
 // device's limits, scalarBlockLayout among them (lavapipe has it).
 TEST(Icd, DevicesPrintsEveryLimitOfTheFieldList) {
