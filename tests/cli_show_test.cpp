@@ -175,6 +175,38 @@ TEST(Show, SaysWhetherTheCaseIsPortable) {
 
 // The coverage contract: every rule of the catalog but R-UB is claimed by a
 // case of the suite (sweep variants included).
+// `show --vocabulary` lists each built-in's and each operator's stages from
+// their tables' stages column (cases/README.md says it does): a row read in
+// some stages names those, in the Stage enum's order, one of every stage says
+// so, and each row of both tables ends in its stages.
+TEST(Show, VocabularyListsTheStagesOfEachBuiltinAndOperator) {
+  const ShowRun r = rayspec("show --vocabulary");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto line_of = [&](const std::string& start) {
+    const size_t at = r.out.find("\n  " + start + " ");
+    return at == std::string::npos ? std::string()
+                                   : r.out.substr(at, r.out.find('\n', at + 1) - at);
+  };
+  EXPECT_NE(line_of("hit_kind").find(" [closest_hit, any_hit]"), std::string::npos);
+  EXPECT_NE(line_of("primitive_id").find(" [closest_hit, any_hit, intersection]"),
+            std::string::npos);
+  EXPECT_NE(line_of("aabb_min").find(" [intersection]"), std::string::npos);
+  EXPECT_NE(line_of("call.position").find(" [callable]"), std::string::npos);
+  EXPECT_NE(line_of("callee.color").find(" [raygen, miss, closest_hit, callable]"),
+            std::string::npos);
+  EXPECT_NE(line_of("candidate.t").find(" [all stages]"), std::string::npos);
+  EXPECT_NE(line_of("add").find(" [all stages]"), std::string::npos);
+  EXPECT_NE(line_of("sphere_hit").find(" [intersection]"), std::string::npos);
+  std::istringstream lines(r.out);
+  int rows = 0;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("  ", 0) != 0) continue;
+    ++rows;
+    EXPECT_EQ(line.back(), ']') << line;
+  }
+  EXPECT_GT(rows, 150) << r.out;
+}
+
 TEST(List, EveryRuleHasACase) {
   const ShowRun r = rayspec("list --rules");
   EXPECT_EQ(r.status, 0) << r.out << r.err;

@@ -104,11 +104,11 @@ VulkanContext ampleContext() {
   ctx.info.max_ray_recursion_depth = 31;
   for (uint64_t& size : ctx.info.max_launch_size) size = 1u << 16;
   ctx.info.max_ray_dispatch_invocation_count = 1u << 20;
-  ctx.rt_props.shaderGroupHandleSize = 32;
-  ctx.rt_props.shaderGroupHandleAlignment = 32;
-  ctx.rt_props.shaderGroupBaseAlignment = 64;
-  ctx.rt_props.maxShaderGroupStride = 4096;
-  ctx.primitive_culling = true;
+  ctx.info.shader_group_handle_size = 32;
+  ctx.info.shader_group_handle_alignment = 32;
+  ctx.info.shader_group_base_alignment = 64;
+  ctx.info.max_shader_group_stride = 4096;
+  ctx.info.ray_traversal_primitive_culling = true;
   return ctx;
 }
 

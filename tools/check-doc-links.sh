@@ -10,6 +10,8 @@
 #     named from its harness module (run/fault_seam.h is harness/run/...).
 #     Paths with a placeholder or a glob (<case>, *, {, $) are not checked;
 #     a ctest test's name (fuzz/inputs) is no path.
+#   - no page of those or of cases/*.md names a path up out of the checkout
+#     (../shared/...): a user's clone has only the repository.
 # Prints each one that does not; exits 1 if there is one.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -55,5 +57,23 @@ for page in "${pages[@]}"; do
     grep -qF "add_test(NAME $path " tests/CMakeLists.txt && continue  # a ctest test: fuzz/inputs
     complain "$page: $path: no such file or folder"
   done < <(grep -oP '(?<![A-Za-z0-9_./-])(?:(?:cases|harness|tools|references|tests|bench|fuzz|docs|shaders|\.ci)/[A-Za-z0-9_./<>*{}$-]*|[a-z_]+/[A-Za-z0-9_]+\.(?:h|cpp)(?![A-Za-z0-9_]))' "$page" || true)
+done
+
+# Nothing outside the checkout: a path up out of it (../shared/..., from
+# README.md, docs/ or cases/*.md) names what a user's clone does not have;
+# what a page cites must be readable from the repository (the rules' text:
+# references/spec-rules.yaml). A link's target is read from the page's
+# folder, a path in the text from the checkout's root (where ../ leaves it).
+root=$(pwd -P)
+for page in README.md docs/*.md cases/*.md; do
+  dir=$(dirname "$page")
+  while IFS= read -r target; do
+    [[ $(realpath -m "$dir/$target") == "$root"/* ]] ||
+      complain "$page: link to $target: outside the checkout"
+  done < <(grep -oE '\]\(\.\./[^) ]*\)' "$page" | sed -e 's/^](//' -e 's/)$//' || true)
+  while IFS= read -r path; do
+    complain "$page: $path: outside the checkout"
+  done < <(sed -E 's/\]\([^) ]*\)//g' "$page" |
+    grep -oE '(^|[^A-Za-z0-9_./-])(\.\./)+[A-Za-z0-9_./-]*' | sed -E 's/^[^.]*//' || true)
 done
 exit $bad

@@ -19,13 +19,20 @@
 namespace rayspec {
 namespace {
 
+// The stages column of a built-in or an operator: "all stages" or their names.
+std::string stagesText(StageMask stages) {
+  return "[" + (stages == kAllStages ? std::string("all stages") : stageList(stages)) + "]";
+}
+
 void printVocabulary() {
-  std::printf("Built-ins (name, type, meaning):\n");
+  std::printf("Built-ins (name, type, meaning, [the stages that may read it]):\n");
   for (const BuiltinInfo& b : builtins())
-    std::printf("  %-24s %-6s %s\n", b.name, valueTypeName(b.type), b.meaning);
-  std::printf("\nOperators (name, arguments, meaning):\n");
+    std::printf("  %-24s %-6s %s %s\n", b.name, valueTypeName(b.type), b.meaning,
+                stagesText(b.stages).c_str());
+  std::printf("\nOperators (name, arguments, meaning, [the stages that may use it]):\n");
   for (const OpInfo& o : ops())
-    std::printf("  %-20s %d..%d  %s\n", o.name, o.min_args, o.max_args, o.meaning);
+    std::printf("  %-20s %d..%d  %s %s\n", o.name, o.min_args, o.max_args, o.meaning,
+                stagesText(o.stages).c_str());
 }
 
 const char* const kRulesFile = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";

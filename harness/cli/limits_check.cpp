@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <set>
 #include <utility>
 #include <vector>
@@ -21,6 +22,7 @@ LimitsVerdict printLimitChecks(const DeviceInfo& d, const Baseline& baseline) {
     if (c.applies && !c.ok) {
       ++v.violations;
       ++(listed ? v.expected : v.unexpected);
+      if (!listed) v.unexpected_limits.push_back(c.caseName());
       note = listed ? " (expected by the baseline)" : " (UNEXPECTED)";
     } else if (listed) {
       ++v.unexpected_passes;
@@ -52,6 +54,31 @@ Result<Baseline> loadLimitsBaseline(const std::string& path) {
                           ": a limits baseline lists known violations only, each as Fail");
   }
   return b;
+}
+
+std::vector<std::string> baselinesListing(const std::string& folder,
+                                          const std::vector<std::string>& violations) {
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (const std::filesystem::directory_entry& e :
+       std::filesystem::directory_iterator(folder, ec)) {
+    const std::string name = e.path().filename().string();
+    const std::string suffix = "-limits.csv";
+    if (name.size() > suffix.size() &&
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
+      files.push_back(e.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  std::vector<std::string> listing;
+  for (const std::string& path : files) {
+    const Result<Baseline> b = loadLimitsBaseline(path);
+    if (b && !violations.empty() &&
+        std::all_of(violations.begin(), violations.end(), [&](const std::string& limit) {
+          return expectedStatus(*b, limit) == Status::Fail;
+        }))
+      listing.push_back(path);
+  }
+  return listing;
 }
 
 }  // namespace rayspec

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "report/baseline.h"
 #include "vulkan/vulkan_engine.h"
@@ -14,6 +15,7 @@ namespace rayspec {
 
 struct LimitsVerdict {
   int violations = 0, expected = 0, unexpected = 0, unexpected_passes = 0;
+  std::vector<std::string> unexpected_limits;  // limits/<name> of each unexpected violation
 };
 
 // Prints one line per limit; counts what the baseline says of them.
@@ -25,5 +27,12 @@ LimitsVerdict printLimitChecks(const DeviceInfo& d, const Baseline& baseline);
 // status but Fail would never apply: it is the error naming the file and
 // line, as is a malformed line.
 Result<Baseline> loadLimitsBaseline(const std::string& path);
+
+// The limits baselines in `folder` (its *-limits.csv files, those rayspec
+// keeps in references/baselines) that list every one of `violations` as a
+// known one: what to pass with --baseline when a driver's known violations
+// fail the check. A file that does not load is passed over.
+std::vector<std::string> baselinesListing(const std::string& folder,
+                                          const std::vector<std::string>& violations);
 
 }  // namespace rayspec

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include "base/output_folder.h"
 #include "base/whole_file.h"
@@ -43,6 +44,34 @@ CaseMutation mutateOne(const CaseFile& f, const MutateOptions& opt, const RunOpt
   Result<SavedCase> saved = loadSavedCase(f, opt.cases_dir, opt.run_dir, variant, opt.threads);
   if (!saved) return notJudged(f.name, saved.error().message);
   return mutateCase(saved->c, saved->plan, saved->device, saved->model, opt.threads);
+}
+
+// Why a run gave mutate no case: none of the cases it ran (its summary.json's,
+// or its <case> folders') is a case file under --cases, the folder the cases
+// are read from (a run of case files kept outside the library); or --filter
+// left none.
+std::string noCaseFoundText(const MutateOptions& opt) {
+  std::vector<std::string> ran;
+  if (const Result<SavedRun> run = readSavedRun(opt.run_dir))
+    for (const CaseOutcome& o : run->outcomes) ran.push_back(o.name);
+  std::error_code ec;
+  if (ran.empty())
+    for (const fs::directory_entry& e : fs::directory_iterator(opt.run_dir, ec))
+      if (fs::exists(e.path() / "device" / "results.json", ec))
+        ran.push_back(e.path().filename().string());
+  std::set<std::string> library;
+  for (const CaseFile& f : findCases(opt.cases_dir, "*")) library.insert(f.name);
+  for (const std::string& name : ran)
+    if (library.count(name))
+      return "no case of it under " + opt.cases_dir + " matches --filter '" + opt.filter +
+             "' and has a device bundle (<case>/device/results.json)";
+  std::string names;
+  for (size_t i = 0; i < ran.size() && i < 3; ++i) names += (i ? ", " : "") + ran[i];
+  if (ran.size() > 3) names += ", ...";
+  return "none of the " + std::to_string(ran.size()) + " case(s) " + opt.run_dir + " ran" +
+         (names.empty() ? "" : " (" + names + ")") + " is a case file under " + opt.cases_dir +
+         ", the folder mutate reads the cases from; for cases kept elsewhere, pass --cases "
+         "FOLDER, the folder that holds the run's case files";
 }
 
 // The reports of a kill matrix in --out.
@@ -113,8 +142,14 @@ int runMutate(const MutateOptions& opt) {
     std::fprintf(stderr, "rayspec mutate: %s\n", written.error().format().c_str());
     return 2;
   }
+  if (cases.empty()) {
+    std::fprintf(stderr, "rayspec mutate: no case of %s could be judged: %s\n", opt.run_dir.c_str(),
+                 noCaseFoundText(opt).c_str());
+    return 1;
+  }
   if (!m.judged) {
-    std::fprintf(stderr, "rayspec mutate: no case of %s could be judged\n", opt.run_dir.c_str());
+    std::fprintf(stderr, "rayspec mutate: no case of %s could be judged (why, for each: above)\n",
+                 opt.run_dir.c_str());
     return 1;
   }
   return m.unexplained() == 0 && m.nullKilled() == m.nullApplied() && m.false_alarms.empty() ? 0

@@ -18,6 +18,16 @@ Builtin rowNamed(const std::string& name) {
 
 }  // namespace
 
+std::string stageList(StageMask mask) {
+  std::string s;
+  for (int i = 0; i < 6; ++i) {
+    if (!(mask & (1u << i))) continue;
+    if (!s.empty()) s += ", ";
+    s += stageName(static_cast<Stage>(i));
+  }
+  return s;
+}
+
 const std::vector<BuiltinInfo>& builtins() {
   using namespace stage_letters;
   using namespace builtin_needs;

@@ -20,6 +20,8 @@ constexpr StageMask stageBit(Stage s) {
   return 1u << static_cast<unsigned>(s);
 }
 constexpr StageMask kAllStages = 0x3F;
+// The stages of a mask by name, in the Stage enum's order: "raygen, miss".
+std::string stageList(StageMask mask);
 
 // One-letter stage bits for the built-in, operator and statement tables.
 namespace stage_letters {

@@ -63,16 +63,6 @@ const StmtRule& ruleOf(Stmt::Kind k) {
   return kStmtRules[0];
 }
 
-std::string stageList(StageMask mask) {
-  std::string s;
-  for (int i = 0; i < 6; ++i) {
-    if (!(mask & (1u << i))) continue;
-    if (!s.empty()) s += ", ";
-    s += stageName(static_cast<Stage>(i));
-  }
-  return s;
-}
-
 ValueType fieldValueType(const RecordField& f) {
   if (f.type == FieldType::Uint) return ValueType::Uint;
   switch (f.words) {

@@ -1,5 +1,7 @@
 // Whether the device can run a case: the features, extensions and limits the
 // case needs, each missing one a NotSupported error that names it.
+#include "vulkan/case_support.h"
+
 #include <algorithm>
 
 #include "case/flag_names.h"
@@ -37,36 +39,30 @@ Result<void> checkLaunchSize(const DeviceInfo& d, const std::array<uint32_t, 3>&
 }
 
 // R-VERTEX-FORMAT: every vertex format the scene uses must be one the device
-// builds acceleration structures from.
-Result<void> checkVertexFormats(const VulkanContext& ctx, const Scene& scene) {
+// builds acceleration structures from (DeviceInfo::vertex_formats).
+Result<void> checkVertexFormats(const DeviceInfo& d, const Scene& scene) {
   for (const Blas& b : scene.blases)
     for (const Geometry& g : b.geometries) {
       if (g.kind != Geometry::Kind::Triangles || g.vertex_format == VertexFormat::Float3) continue;
-      VkFormatProperties props{};
-      vkGetPhysicalDeviceFormatProperties(ctx.physical, vkVertexFormat(g.vertex_format), &props);
-      if (!(props.bufferFeatures & VK_FORMAT_FEATURE_ACCELERATION_STRUCTURE_VERTEX_BUFFER_BIT_KHR))
-        return notSupported("triangles.vertex_format " +
-                            std::string(vertexFormatName(g.vertex_format)) +
+      const std::string name = vertexFormatName(g.vertex_format);
+      if (std::find(d.vertex_formats.begin(), d.vertex_formats.end(), name) ==
+          d.vertex_formats.end())
+        return notSupported("triangles.vertex_format " + name +
                             ": the device cannot build acceleration structures from it");
     }
   return {};
 }
 
-std::string versionText(uint32_t v) {
-  return std::to_string(VK_API_VERSION_MAJOR(v)) + "." + std::to_string(VK_API_VERSION_MINOR(v)) +
-         "." + std::to_string(VK_API_VERSION_PATCH(v));
-}
-
 // gl_HitTriangleVertexPositionsEXT: the device's feature, and a validation
 // layer (when on) that knows the extension.
-Result<void> checkPositionFetch(const VulkanContext& ctx) {
-  if (!ctx.info.position_fetch)
+Result<void> checkPositionFetch(const DeviceInfo& d, uint32_t validation_layer) {
+  if (!d.position_fetch)
     return notSupported(
         "vertex_position<i>: gl_HitTriangleVertexPositionsEXT needs "
         "VK_KHR_ray_tracing_position_fetch (rayTracingPositionFetch)");
-  if (!ctx.position_fetch)
+  if (!validationLayerKnows(validation_layer, kPositionFetchHeaderVersion))
     return notSupported(
-        "vertex_position<i>: the validation layer (" + versionText(ctx.validation_layer_version) +
+        "vertex_position<i>: the validation layer (" + vulkanVersionText(validation_layer) +
         ") predates VK_KHR_ray_tracing_position_fetch (1.3.249) and would report its SPIR-V as "
         "an error; a newer layer runs it (tools/second-driver.sh)");
   return {};
@@ -74,8 +70,12 @@ Result<void> checkPositionFetch(const VulkanContext& ctx) {
 
 }  // namespace
 
-Result<void> checkCaseSupport(const VulkanContext& ctx, const Case& c, const Plan& plan) {
-  const DeviceInfo& d = ctx.info;
+bool validationLayerKnows(uint32_t validation_layer, uint32_t since) {
+  return validation_layer == 0 || validation_layer >= since;
+}
+
+Result<void> checkCaseSupport(const DeviceInfo& d, uint32_t validation_layer, const Case& c,
+                              const Plan& plan) {
   const std::array<uint32_t, 3> launch = c.rays.launchSize();
   const uint64_t launch_rays = uint64_t(launch[0]) * launch[1] * launch[2];
   if (c.rays.launchRays() != static_cast<size_t>(c.rays.width) * c.rays.height ||
@@ -105,7 +105,7 @@ Result<void> checkCaseSupport(const VulkanContext& ctx, const Case& c, const Pla
             ? "scene.build.command host: rayspec records no host builds yet (the device has "
               "accelerationStructureHostCommands)"
             : "scene.build.command host: the device lacks accelerationStructureHostCommands");
-  if (plan.position_fetch) RAYSPEC_TRY_VOID(checkPositionFetch(ctx));
+  if (plan.position_fetch) RAYSPEC_TRY_VOID(checkPositionFetch(d, validation_layer));
   if ((c.pipeline.ray_query || c.pipeline.ray_query_in_hit) && !d.ray_query)
     return notSupported(
         "traces by ray query (--through ray-query, ray-query-compute, ray-query-in-hit): the "
@@ -126,19 +126,19 @@ Result<void> checkCaseSupport(const VulkanContext& ctx, const Case& c, const Pla
                         " > device maxRayRecursionDepth " +
                         std::to_string(d.max_ray_recursion_depth));
   RAYSPEC_TRY_VOID(checkLaunchSize(d, launch));
-  RAYSPEC_TRY_VOID(checkVertexFormats(ctx, c.scene));
+  RAYSPEC_TRY_VOID(checkVertexFormats(d, c.scene));
   if (launch_rays > d.max_ray_dispatch_invocation_count)
     return notSupported("launch of " + std::to_string(launch_rays) +
                         " rays > maxRayDispatchInvocationCount " +
                         std::to_string(d.max_ray_dispatch_invocation_count));
-  if (!ctx.primitive_culling &&
+  if (!d.ray_traversal_primitive_culling &&
       ((c.pipeline.flags & (kPipelineSkipTriangles | kPipelineSkipAabbs)) ||
        usesSkipRayFlags(c.rays)))
     return notSupported("skip_triangles / skip_aabbs need rayTraversalPrimitiveCulling");
   // The shader binding table's shape (pipeline.sbt.record_data / padding):
   // a stride above maxShaderGroupStride, or any layout the device's limits
   // refuse, before anything is built.
-  const SbtLimits limits = deviceSbtLimits(ctx);
+  const SbtLimits limits = sbtLimits(d);
   const Pipeline& p = c.pipeline;
   if (const Result<void> fits = checkSbtLayout(computeSbtLayout(limits, p), limits); !fits)
     return notSupported(
@@ -149,6 +149,10 @@ Result<void> checkCaseSupport(const VulkanContext& ctx, const Case& c, const Pla
         " bytes, aligned up to shaderGroupHandleAlignment " +
         std::to_string(limits.handle_alignment) + ")");
   return {};
+}
+
+Result<void> checkCaseSupport(const VulkanContext& ctx, const Case& c, const Plan& plan) {
+  return checkCaseSupport(ctx.info, ctx.validation ? ctx.validation_layer_version : 0, c, plan);
 }
 
 }  // namespace rayspec

@@ -31,7 +31,6 @@ struct VulkanContext {
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_PROPERTIES_KHR};
   VkPhysicalDeviceProperties props{};
   VkPhysicalDeviceMemoryProperties memory{};
-  bool primitive_culling = false;  // rayTraversalPrimitiveCulling enabled
   // rayTracingPositionFetch enabled: the device has it and no validation
   // layer older than the extension is on (vulkan/position_fetch.h).
   bool position_fetch = false;

@@ -2,6 +2,7 @@
 // the features listed in vulkan_engine.h.
 #include <vector>
 
+#include "vulkan/case_support.h"
 #include "vulkan/context.h"
 #include "vulkan/library_group_handles.h"
 #include "vulkan/position_fetch.h"
@@ -11,12 +12,12 @@ namespace rayspec {
 
 namespace {
 
-// Whether a feature newer than some validation layers may be enabled: no
-// layer is on, or the one on knows it (its header version `since` or later).
-// An older layer reports the feature structure and the SPIR-V that uses it as
-// errors (Debian 12's is 1.3.239).
+// Whether a feature newer than some validation layers may be enabled:
+// validationLayerKnows (vulkan/case_support.h). An older layer reports the
+// feature structure and the SPIR-V that uses it as errors (Debian 12's is
+// 1.3.239).
 bool layerKnows(const VulkanContext& ctx, uint32_t since) {
-  return !ctx.validation || ctx.validation_layer_version >= since;
+  return validationLayerKnows(ctx.validation ? ctx.validation_layer_version : 0, since);
 }
 
 template <typename Feature>
@@ -106,7 +107,7 @@ Result<void> createDevice(VulkanContext& ctx) {
   VkPhysicalDeviceRayTracingPipelineFeaturesKHR rt_on{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
   rt_on.rayTracingPipeline = VK_TRUE;
-  rt_on.rayTraversalPrimitiveCulling = rt.rayTraversalPrimitiveCulling;
+  rt_on.rayTraversalPrimitiveCulling = ctx.info.ray_traversal_primitive_culling;
   rt_on.rayTracingPipelineTraceRaysIndirect = ctx.info.trace_rays_indirect;
   VkPhysicalDeviceAccelerationStructureFeaturesKHR as_on{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
@@ -137,7 +138,6 @@ Result<void> createDevice(VulkanContext& ctx) {
   VkPhysicalDeviceRayQueryFeaturesKHR ray_query_on{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
   enableRayQuery(ctx, on, ray_query_on);
-  ctx.primitive_culling = rt.rayTraversalPrimitiveCulling == VK_TRUE;
 
   const std::vector<const char*> extensions = deviceExtensions(ctx);
   float priority = 1.0f;

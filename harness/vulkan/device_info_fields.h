@@ -13,8 +13,9 @@
 //   meaning: what the value is, in a line.
 // The ray tracing properties are 0 without VK_KHR_ray_tracing_pipeline, and
 // the features false on a device below Vulkan 1.2 (rayspec needs 1.2). From
-// pipeline_library to library_group_handles, what a case may need and the
-// device may lack: such a case is NotSupported there.
+// ray_traversal_primitive_culling to library_group_handles, what a case may
+// need and the device may lack: such a case is NotSupported there
+// (vulkan/case_support.h; `rayspec devices` counts the library's).
 #pragma once
 
 #include <array>
@@ -39,6 +40,11 @@ using DeviceLaunchSize = std::array<uint64_t, 3>;
     "VkPhysicalDeviceProperties::apiVersion")                                                      \
   X(std::string, device_uuid, "device_uuid", nullptr,                                              \
     "deviceUUID-driverUUID in hex (Vulkan 1.1; \"\" below)")                                       \
+  X(std::string, pipeline_cache_uuid, "pipeline_cache_uuid", nullptr, "pipelineCacheUUID in hex")  \
+  X(std::string, conformance_version, "conformance_version", nullptr,                              \
+    "conformanceVersion as major.minor.subminor.patch (Vulkan 1.2; \"\" below; 0.0.0.0: none)")    \
+  X(std::string, driver_id, "driver_id", nullptr,                                                  \
+    "driverID: the VkDriverId's name as vulkan.hpp spells it (Vulkan 1.2; \"\" below)")            \
   X(bool, ray_tracing_extension, "ray_tracing_extension", nullptr,                                 \
     "VK_KHR_ray_tracing_pipeline is offered")                                                      \
   X(bool, acceleration_structure_extension, "acceleration_structure_extension", nullptr,           \
@@ -99,6 +105,9 @@ using DeviceLaunchSize = std::array<uint64_t, 3>;
     "accelerationStructureHostCommands", "the acceleration structure feature")                     \
   X(bool, acceleration_structure_indirect_build, "acceleration_structure_indirect_build",          \
     "accelerationStructureIndirectBuild", "the acceleration structure feature")                    \
+  X(bool, ray_traversal_primitive_culling, "ray_traversal_primitive_culling",                      \
+    "rayTraversalPrimitiveCulling",                                                                \
+    "the ray tracing pipeline feature (skip_triangles, skip_aabbs)")                               \
   X(bool, pipeline_library, "pipeline_library", "VK_KHR_pipeline_library",                         \
     "VK_KHR_pipeline_library is offered")                                                          \
   X(bool, ray_query, "ray_query", "VK_KHR_ray_query",                                              \

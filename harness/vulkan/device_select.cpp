@@ -7,6 +7,7 @@
 #include "base/hex_text.h"
 #include "vulkan/acceleration_structure.h"
 #include "vulkan/context.h"
+#include "vulkan/driver_id_name.h"
 #include "vulkan/library_group_handles.h"
 #include "vulkan/position_fetch.h"
 #include "vulkan/vk_check.h"
@@ -18,11 +19,6 @@ bool hasDeviceExtension(const std::vector<VkExtensionProperties>& exts, const ch
   for (const VkExtensionProperties& e : exts)
     if (std::strcmp(e.extensionName, name) == 0) return true;
   return false;
-}
-
-std::string versionString(uint32_t v) {
-  return std::to_string(VK_API_VERSION_MAJOR(v)) + "." + std::to_string(VK_API_VERSION_MINOR(v)) +
-         "." + std::to_string(VK_API_VERSION_PATCH(v));
 }
 
 std::string lower(std::string s) {
@@ -91,9 +87,14 @@ void readProperties(VkPhysicalDevice physical, DeviceInfo& d) {
   if (vk11)
     d.device_uuid =
         hexBytes(id.deviceUUID, VK_UUID_SIZE) + "-" + hexBytes(id.driverUUID, VK_UUID_SIZE);
+  d.pipeline_cache_uuid = hexBytes(props.properties.pipelineCacheUUID, VK_UUID_SIZE);
   if (vk12) {
     d.driver_name = driver.driverName;
     d.driver_info = driver.driverInfo;
+    const VkConformanceVersion& c = driver.conformanceVersion;
+    d.conformance_version = std::to_string(c.major) + "." + std::to_string(c.minor) + "." +
+                            std::to_string(c.subminor) + "." + std::to_string(c.patch);
+    d.driver_id = driverIdName(driver.driverID);
   }
   if (d.ray_tracing_extension) {
     d.shader_group_handle_size = rt.shaderGroupHandleSize;
@@ -155,6 +156,8 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
   vkGetPhysicalDeviceFeatures2(physical, &features);
   d.scalar_block_layout = vk12 && v12_features.scalarBlockLayout;
   d.ray_tracing_pipeline = vk12 && d.ray_tracing_extension && rt_features.rayTracingPipeline;
+  d.ray_traversal_primitive_culling =
+      d.ray_tracing_pipeline && rt_features.rayTraversalPrimitiveCulling;
   d.acceleration_structure =
       vk12 && d.acceleration_structure_extension && as_features.accelerationStructure;
   d.acceleration_structure_host_commands =
@@ -176,13 +179,18 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
 
 }  // namespace
 
+std::string vulkanVersionText(uint32_t v) {
+  return std::to_string(VK_API_VERSION_MAJOR(v)) + "." + std::to_string(VK_API_VERSION_MINOR(v)) +
+         "." + std::to_string(VK_API_VERSION_PATCH(v));
+}
+
 DeviceInfo describeDevice(VkPhysicalDevice physical, uint32_t index) {
   DeviceInfo d;
   d.index = index;
   VkPhysicalDeviceProperties base{};
   vkGetPhysicalDeviceProperties(physical, &base);
   d.name = base.deviceName;
-  d.api_version = versionString(base.apiVersion);
+  d.api_version = vulkanVersionText(base.apiVersion);
   d.api_version_number = base.apiVersion;
   d.max_image_dimension_2d = base.limits.maxImageDimension2D;
   d.max_storage_buffer_range = base.limits.maxStorageBufferRange;

@@ -35,6 +35,10 @@ bool hasInstanceExtension(const char* name, const char* layer) {
 
 }  // namespace
 
+uint32_t installedValidationLayer() {
+  return layerVersion(kValidationLayer);
+}
+
 Result<void> createInstance(VulkanContext& ctx, bool want_validation) {
   const uint32_t layer_version = want_validation ? layerVersion(kValidationLayer) : 0;
   ctx.validation = layer_version != 0 &&

@@ -9,12 +9,7 @@
 namespace rayspec {
 
 SbtLimits deviceSbtLimits(const VulkanContext& ctx) {
-  SbtLimits l;
-  l.handle_size = ctx.rt_props.shaderGroupHandleSize;
-  l.handle_alignment = ctx.rt_props.shaderGroupHandleAlignment;
-  l.base_alignment = ctx.rt_props.shaderGroupBaseAlignment;
-  l.max_stride = ctx.rt_props.maxShaderGroupStride;
-  return l;
+  return sbtLimits(ctx.info);
 }
 
 Result<SbtBuffer> createSbtBuffer(const VulkanContext& ctx, const Pipeline& p,

@@ -7,6 +7,15 @@
 #include "base/align.h"
 
 namespace rayspec {
+
+SbtLimits sbtLimits(const DeviceInfo& d) {
+  SbtLimits l;
+  l.handle_size = d.shader_group_handle_size;
+  l.handle_alignment = d.shader_group_handle_alignment;
+  l.base_alignment = d.shader_group_base_alignment;
+  l.max_stride = d.max_shader_group_stride;
+  return l;
+}
 namespace {
 
 std::vector<SbtRecord> orDefault(const std::vector<SbtRecord>& given, size_t groups) {

@@ -29,6 +29,7 @@
 
 #include "base/result.h"
 #include "case/case.h"
+#include "vulkan/vulkan_engine.h"
 
 namespace rayspec {
 
@@ -40,6 +41,8 @@ struct SbtLimits {
   uint32_t base_alignment = 64;
   uint32_t max_stride = 4096;  // maxShaderGroupStride
 };
+// A device's (its DeviceInfo's ray tracing pipeline properties).
+SbtLimits sbtLimits(const DeviceInfo& d);
 
 struct SbtRegion {
   uint64_t offset = 0, stride = 0, size = 0;  // bytes from the table start

@@ -57,6 +57,12 @@ struct DeviceInfo {
 // Every physical device the loader sees (with or without ray tracing).
 Result<std::vector<DeviceInfo>> listDevices();
 
+// The Khronos validation layer installed (VK_LAYER_KHRONOS_validation): its
+// specVersion, the Vulkan header it was built with; 0 when none is.
+uint32_t installedValidationLayer();
+// A Vulkan version as major.minor.patch.
+std::string vulkanVersionText(uint32_t version);
+
 struct VulkanContext;  // internal (vulkan/context.h)
 
 // The Vulkan engine: one VkInstance and device that run cases. It is not a

@@ -1,0 +1,28 @@
+// Whether a device can run a case, from what rayspec knows of it (DeviceInfo)
+// alone: the features, extensions and limits the case needs, each missing one
+// a NotSupported error that names it. The one decision: VulkanEngine runs it
+// before building anything (vulkan/run_case.h), `rayspec devices` over the
+// library to count the cases each missing feature skips.
+#pragma once
+
+#include <cstdint>
+
+#include "base/result.h"
+#include "case/case.h"
+#include "plan/plan.h"
+#include "vulkan/vulkan_engine.h"
+
+namespace rayspec {
+
+// validation_layer: the Khronos validation layer's specVersion while it is
+// on, 0 while it is off. A layer older than an extension reports the SPIR-V
+// that uses it as an error, so a case that needs one (vertex_position<i>:
+// VK_KHR_ray_tracing_position_fetch, 1.3.249) is NotSupported under it.
+Result<void> checkCaseSupport(const DeviceInfo& d, uint32_t validation_layer, const Case& c,
+                              const Plan& plan);
+
+// Whether a feature of the Vulkan header version `since` may be enabled under
+// that layer: no layer is on (0), or it knows the feature.
+bool validationLayerKnows(uint32_t validation_layer, uint32_t since);
+
+}  // namespace rayspec
