@@ -1,5 +1,6 @@
 #include "compare/verdict.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace rayspec {
@@ -39,6 +40,16 @@ Status worse(Status a, Status b) {
 
 bool isFailing(Status s) {
   return severity(s) >= severity(Status::CaseError);
+}
+
+bool findingNames(const Finding& f, const std::string& rule) {
+  if (std::find(f.evidence.begin(), f.evidence.end(), rule) != f.evidence.end()) return true;
+  for (size_t start = 0; start <= f.rule.size();) {
+    const size_t end = std::min(f.rule.find('/', start), f.rule.size());
+    if (f.rule.compare(start, end - start, rule) == 0) return true;
+    start = end + 1;
+  }
+  return false;
 }
 
 void Verdict::add(Finding f) {

@@ -10,7 +10,7 @@ namespace rayspec {
 
 bool namesRule(const Verdict& v, const std::string& rule) {
   for (const Finding& f : v.findings)
-    if (f.status == v.status && f.rule.find(rule) != std::string::npos) return true;
+    if (f.status == v.status && findingNames(f, rule)) return true;
   return false;
 }
 
