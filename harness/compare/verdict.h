@@ -50,6 +50,10 @@ struct Finding {
 // Whether the finding names `rule`: in its label ("R-A/R-B") or among the
 // claimed rules it is evidence against.
 bool findingNames(const Finding& f, const std::string& rule);
+// Whether its label ("R-A/R-B") names `rule`.
+bool labelNames(const Finding& f, const std::string& rule);
+// One line of the finding: "Fail: R-IGNORE: ... (2 rays; first: 3 17)".
+std::string findingLine(const Finding& f);
 
 // The rays of one reason whose behaviour the model found undefined (R-UB):
 // never judged, reported apart from the findings.
