@@ -87,11 +87,12 @@ inline void countFromRecords(Results& r) {
   }
 }
 
-// A finding of status s whose rule or message holds text.
+// A finding of status s whose rule or message holds text, or that names the
+// rule text among the claims it is evidence against.
 inline bool findingNames(const Verdict& v, Status s, const std::string& text) {
   for (const Finding& f : v.findings)
-    if (f.status == s &&
-        (f.rule.find(text) != std::string::npos || f.message.find(text) != std::string::npos))
+    if (f.status == s && (f.rule.find(text) != std::string::npos ||
+                          f.message.find(text) != std::string::npos || findingNames(f, text)))
       return true;
   return false;
 }

@@ -141,18 +141,63 @@ TEST(CompareShared, AnyHitRepeatOnOnePrimitiveFails) {
   EXPECT_FALSE(findingNames(compareResults(c, samplePlan(c), d, m), Status::Fail, "ran twice"));
 }
 
-TEST(FindingRules, AFindingNamesTheClaimedRulesItsFieldEvidences) {
-  EXPECT_EQ(findingRule(rulesEvidencedByField("hit_kind"), {"R-FACE-DET", "R-RECURSION"},
-                        "R-HITKIND-TRI"),
-            "R-FACE-DET");
-  EXPECT_EQ(findingRule(rulesEvidencedByField("depth"), {"R-FACE-DET"}, "R-RECURSION"),
-            "R-RECURSION");
-  EXPECT_EQ(findingRule(rulesEvidencedByField("hit_kind"), {"R-HITKIND-TRI", "R-FACE-DET"},
-                        "R-HITKIND-TRI"),
-            "R-FACE-DET/R-HITKIND-TRI");
+TEST(FindingRules, AFindingNamesOneRuleAndKeepsTheClaimsItEvidences) {
+  // The one claim the field evidences, the field's own rule not claimed.
+  FindingRule r = findingRule(rulesEvidencedByField("hit_kind"), {"R-FACE-DET", "R-RECURSION"},
+                              "R-HITKIND-TRI");
+  EXPECT_EQ(r.rule, "R-FACE-DET");
+  EXPECT_EQ(r.evidence, (std::vector<std::string>{"R-FACE-DET"}));
+  // No claim evidenced: the field's own rule.
+  r = findingRule(rulesEvidencedByField("depth"), {"R-FACE-DET"}, "R-RECURSION");
+  EXPECT_EQ(r.rule, "R-RECURSION");
+  EXPECT_TRUE(r.evidence.empty());
+  // The field's own rule claimed: it, whatever else is claimed.
+  r = findingRule(rulesEvidencedByField("hit_kind"), {"R-HITKIND-TRI", "R-FACE-DET"},
+                  "R-HITKIND-TRI");
+  EXPECT_EQ(r.rule, "R-HITKIND-TRI");
+  EXPECT_EQ(r.evidence, (std::vector<std::string>{"R-HITKIND-TRI", "R-FACE-DET"}));
+  // Several claims evidenced, the own rule not among them: the one the value
+  // speaks of itself, not how the pipeline is built and run; else the own rule.
+  r = findingRule(rulesEvidencedByField("hit"), {"R-AS-BUILD", "R-BUILTIN"}, "R-MISS-XOR-CHIT");
+  EXPECT_EQ(r.rule, "R-BUILTIN");
+  EXPECT_EQ(r.evidence, (std::vector<std::string>{"R-AS-BUILD", "R-BUILTIN"}));
+  r = findingRule(rulesEvidencedByField("value3"), {"R-RQ-VALUES", "R-RQ-COMMIT"}, "R-PAYLOAD");
+  EXPECT_EQ(r.rule, "R-PAYLOAD");
+  // A counter (no rule of its own): the claims it evidences, joined.
+  r = findingRule({"R-FACE-DET", "R-INST-XFORM"}, {"R-INST-XFORM", "R-FACE-DET"}, "counter");
+  EXPECT_EQ(r.rule, "R-FACE-DET/R-INST-XFORM");
   const Case c = oneTraceCase();
   const auto callable = rulesEvidencedByCounter(c, "miss");
   EXPECT_NE(std::find(callable.begin(), callable.end(), "R-MISS-XOR-CHIT"), callable.end());
+}
+
+// Issue 61: "R-RQ-CANDIDATES/R-RQ-COMMIT/R-RQ-VALUES: per-ray field 'value3'
+// differs" named every claim of the case. The headline names the field's
+// rule; the finding still names each claim for a proof of it.
+TEST(FindingRules, AFieldOfACaseClaimingThreeRulesNamesOne) {
+  Case c = sampleCase();
+  c.rules = {"R-RQ-CANDIDATES", "R-RQ-COMMIT", "R-RQ-VALUES"};
+  c.outputs.per_ray.push_back("value3");
+  const Results m = sampleResults("model");
+  Results d = sampleResults("vulkan");
+  setUint(d, 1, "value3", 7);
+  const Verdict v = compareResults(c, samplePlan(c), d, m);
+  ASSERT_EQ(v.status, Status::Fail) << v.headline();
+  EXPECT_EQ(v.headline().rfind("Fail: R-PAYLOAD: per-ray field 'value3' differs", 0), 0u)
+      << v.headline();
+  const auto f_it = std::find_if(v.findings.begin(), v.findings.end(), [](const Finding& f) {
+    return f.message.find("'value3'") != std::string::npos;
+  });
+  ASSERT_NE(f_it, v.findings.end()) << v.headline();
+  const Finding& f = *f_it;
+  EXPECT_EQ(f.rule, "R-PAYLOAD");
+  for (const std::string& rule : c.rules) EXPECT_TRUE(findingNames(f, rule)) << rule;
+  EXPECT_FALSE(findingNames(f, "R-RECURSION"));
+  // One claim of the three, and it is named.
+  c.rules = {"R-RQ-VALUES"};
+  const Verdict one = compareResults(c, samplePlan(c), d, m);
+  EXPECT_EQ(one.headline().rfind("Fail: R-RQ-VALUES: per-ray field 'value3' differs", 0), 0u)
+      << one.headline();
 }
 
 }  // namespace

@@ -24,14 +24,12 @@ void checkAgainstRecords(const Case& c, const std::string& name, const CounterSo
                          uint64_t d, const Results& device, Verdict& v) {
   const uint64_t runs = runTotal(device, src.run_field);
   if (d == runs * src.per_run) return;
-  v.add({Status::Fail,
-         findingRule(rulesEvidencedByCounter(c, name), c.rules, "counter"),
-         "counter '" + name + "' is " + std::to_string(d) + ", but the device's own records say " +
-             src.run_field + " totals " + std::to_string(runs) + " and each run counts it " +
-             std::to_string(src.per_run) + " time(s): " + std::to_string(runs * src.per_run) +
-             " (the counter and the records disagree)",
-         {},
-         0});
+  v.add(findingOf(
+      Status::Fail, findingRule(rulesEvidencedByCounter(c, name), c.rules, "counter"),
+      "counter '" + name + "' is " + std::to_string(d) + ", but the device's own records say " +
+          src.run_field + " totals " + std::to_string(runs) + " and each run counts it " +
+          std::to_string(src.per_run) + " time(s): " + std::to_string(runs * src.per_run) +
+          " (the counter and the records disagree)"));
 }
 
 }  // namespace
@@ -173,8 +171,8 @@ void compareCounters(const Case& c, const Plan& plan, const Results& device, con
     // A case without per-ray records (plan.records off) has none to agree with.
     if (!undefined_rays && sources.count(name) && !device.records.empty())
       checkAgainstRecords(c, name, sources.at(name), d, device, v);
-    Finding f;
-    f.rule = findingRule(rulesEvidencedByCounter(c, name), c.rules, "counter");
+    Finding f = findingOf(Status::Fail,
+                          findingRule(rulesEvidencedByCounter(c, name), c.rules, "counter"), "");
     const std::string values = "counter '" + name + "' (" + counterModeName(mode) + "): device " +
                                std::to_string(d) + ", model " + std::to_string(m);
     const CounterSlack slack =
@@ -199,6 +197,7 @@ void compareCounters(const Case& c, const Plan& plan, const Results& device, con
     if (!ok && withinSlack(mode, d, m, {slack.below + leaks, slack.above + leaks, false})) {
       f.status = Status::QualityWarning;
       f.rule = "R-WATERTIGHT";
+      f.evidence.clear();
       f.message = values +
                   " (beyond what the legal answers allow, within what passing between "
                   "the triangles of shared edges moves it)";

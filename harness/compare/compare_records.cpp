@@ -11,10 +11,10 @@
 namespace rayspec {
 namespace {
 
-// The rules a mismatch of a field points at: those it evidences that the
-// case claims (finding_rules.h), else the field's own rule.
+// The rule a mismatch of a field names (finding_rules.h: the field's own,
+// or the one rule the case claims that it evidences) and what it evidences.
 std::string fieldRule(const std::string& field);
-std::string ruleForField(const std::string& field, const std::vector<std::string>& case_rules) {
+FindingRule ruleForField(const std::string& field, const std::vector<std::string>& case_rules) {
   return findingRule(rulesEvidencedByField(field), case_rules, fieldRule(field));
 }
 
@@ -110,10 +110,10 @@ bool hasReplays(const RayAmbiguity& a) {
   return !a.replays.empty() && a.replays[0].record.size() == recordWords();
 }
 
-// The rules a record that is none of the replays breaks: those the field
-// evidences and the ambiguity's own (the device answered outside its legal
-// set), those the case claims; else the field's own rule.
-std::string unreplayedRule(const Case& c, const RayAmbiguity& a, const std::string& field) {
+// The rule a record that is none of the replays breaks (finding_rules.h),
+// of those the field evidences and the ambiguity's own (the device answered
+// outside its legal set).
+FindingRule unreplayedRule(const Case& c, const RayAmbiguity& a, const std::string& field) {
   std::vector<std::string> evidenced = rulesEvidencedByField(field);
   evidenced.push_back(ruleForAmbiguity(a.reason));
   return findingRule(evidenced, c.rules, fieldRule(field));
@@ -124,11 +124,12 @@ void addUnreplayed(const Case& c, const RayAmbiguity& a, const RecordField& f,
                    std::map<std::string, FindingBuilder>& wrongs) {
   FindingBuilder& b = wrongs[std::string("replay ") + f.name];
   if (b.finding.rule.empty())
-    b.finding = {Status::Fail, unreplayedRule(c, a, f.name),
-                 std::string("per-ray field '") + f.name +
-                     "' is what none of the legal answers of a numerically ambiguous ray (" +
-                     ambiguityReasonName(a.reason) +
-                     ") leaves, each replayed through the launch ray (the nearest differs there)"};
+    b.finding =
+        findingOf(Status::Fail, unreplayedRule(c, a, f.name),
+                  std::string("per-ray field '") + f.name +
+                      "' is what none of the legal answers of a numerically ambiguous ray (" +
+                      ambiguityReasonName(a.reason) +
+                      ") leaves, each replayed through the launch ray (the nearest differs there)");
   b.addRay(a.ray);
 }
 
@@ -194,9 +195,9 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
       if ((repeat_fields & fieldBit(f->index)) || sameField(*f, d, m, bounds)) continue;
       FindingBuilder& b = mismatches[f->name];
       if (b.finding.message.empty())
-        b.finding = {
+        b.finding = findingOf(
             Status::Fail, ruleForField(f->name, c.rules),
-            std::string("per-ray field '") + f->name + "' differs from the model on clear rays"};
+            std::string("per-ray field '") + f->name + "' differs from the model on clear rays");
       b.addRay(ray);
     }
   }

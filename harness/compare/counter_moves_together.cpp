@@ -79,13 +79,10 @@ void checkMovesTogether(const Case& c, const Plan& plan, const Results& device,
   for (size_t k = 0; k < names.size(); ++k)
     list +=
         (k ? ", '" : "'") + names[k] + "' " + (want[k] >= 0 ? "+" : "") + std::to_string(want[k]);
-  v.add({Status::Fail,
-         findingRule(rulesEvidencedByCounter(c, names[0]), c.rules, "counter"),
-         "counters moved together from the model's as no choice of legal answers moves them (" +
-             list +
-             "): each ambiguous ray takes one answer, replayed, which moves every counter at once",
-         {},
-         0});
+  v.add(findingOf(
+      Status::Fail, findingRule(rulesEvidencedByCounter(c, names[0]), c.rules, "counter"),
+      "counters moved together from the model's as no choice of legal answers moves them (" + list +
+          "): each ambiguous ray takes one answer, replayed, which moves every counter at once"));
 }
 
 }  // namespace rayspec

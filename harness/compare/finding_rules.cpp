@@ -129,18 +129,49 @@ std::vector<std::string> rulesEvidencedByCounter(const Case& c, const std::strin
   return join({&pipelineRules()}, counterRules(c, counter));
 }
 
-std::string findingRule(const std::vector<std::string>& evidenced,
+namespace {
+
+// The one rule of `claimed` the finding names, "" when none is alone.
+std::string aloneAmong(const std::vector<std::string>& claimed, const std::string& own) {
+  if (std::find(claimed.begin(), claimed.end(), own) != claimed.end()) return own;
+  if (claimed.size() == 1) return claimed[0];
+  // The one claim the value speaks of itself, apart from how the pipeline is
+  // built and run (which every field and counter may show).
+  std::vector<std::string> own_kind;
+  for (const std::string& r : claimed)
+    if (std::find(pipelineRules().begin(), pipelineRules().end(), r) == pipelineRules().end())
+      own_kind.push_back(r);
+  return own_kind.size() == 1 ? own_kind[0] : "";
+}
+
+}  // namespace
+
+FindingRule findingRule(const std::vector<std::string>& evidenced,
                         const std::vector<std::string>& case_rules, const std::string& own) {
-  std::vector<std::string> named;
+  FindingRule out;
   for (const std::string& r : case_rules)
     if (std::find(evidenced.begin(), evidenced.end(), r) != evidenced.end() &&
-        std::find(named.begin(), named.end(), r) == named.end())
-      named.push_back(r);
-  if (named.empty()) return own;
+        std::find(out.evidence.begin(), out.evidence.end(), r) == out.evidence.end())
+      out.evidence.push_back(r);
+  out.rule = aloneAmong(out.evidence, own);
+  if (!out.rule.empty()) return out;
+  if (own.rfind("R-", 0) == 0 || out.evidence.empty()) {
+    out.rule = own;
+    return out;
+  }
+  std::vector<std::string> named = out.evidence;  // no rule of its own: the claims, joined
   std::sort(named.begin(), named.end());
-  std::string joined;
-  for (const std::string& r : named) joined += (joined.empty() ? "" : "/") + r;
-  return joined;
+  for (const std::string& r : named) out.rule += (out.rule.empty() ? "" : "/") + r;
+  return out;
+}
+
+Finding findingOf(Status status, const FindingRule& r, std::string message) {
+  Finding f;
+  f.status = status;
+  f.rule = r.rule;
+  f.message = std::move(message);
+  f.evidence = r.evidence;
+  return f;
 }
 
 }  // namespace rayspec

@@ -1,5 +1,6 @@
 #include "compare/verdict.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace rayspec {
@@ -41,9 +42,34 @@ bool isFailing(Status s) {
   return severity(s) >= severity(Status::CaseError);
 }
 
+bool findingNames(const Finding& f, const std::string& rule) {
+  return std::find(f.evidence.begin(), f.evidence.end(), rule) != f.evidence.end() ||
+         labelNames(f, rule);
+}
+
+bool labelNames(const Finding& f, const std::string& rule) {
+  for (size_t start = 0; start <= f.rule.size();) {
+    const size_t end = std::min(f.rule.find('/', start), f.rule.size());
+    if (f.rule.compare(start, end - start, rule) == 0) return true;
+    start = end + 1;
+  }
+  return false;
+}
+
 void Verdict::add(Finding f) {
   status = worse(status, f.status);
   findings.push_back(std::move(f));
+}
+
+std::string findingLine(const Finding& f) {
+  std::ostringstream s;
+  s << statusName(f.status) << ": " << (f.rule.empty() ? "" : f.rule + ": ") << f.message;
+  if (!f.rays.empty()) {
+    s << " (" << f.ray_count << " rays; first:";
+    for (uint32_t r : f.rays) s << ' ' << r;
+    s << ')';
+  }
+  return s.str();
 }
 
 namespace {
@@ -57,15 +83,9 @@ std::string Verdict::headline() const {
       worst = &f;
       break;
     }
+  if (!worst) return statusName(status);
   std::ostringstream s;
-  s << statusName(status);
-  if (!worst) return s.str();
-  s << ": " << (worst->rule.empty() ? "" : worst->rule + ": ") << worst->message;
-  if (!worst->rays.empty()) {
-    s << " (" << worst->ray_count << " rays; first:";
-    for (uint32_t r : worst->rays) s << ' ' << r;
-    s << ')';
-  }
+  s << findingLine(*worst);
   // Every other finding of the same status, with its ray count: a Fail in
   // three fields names all three.
   size_t also = 0;

@@ -42,7 +42,18 @@ struct Finding {
   std::string message;         // what differed
   std::vector<uint32_t> rays;  // first rays that broke it (launch index)
   uint32_t ray_count = 0;      // how many rays broke it in all
+  // The rules the case claims that the finding is evidence against, `rule`
+  // among them where claimed (compare/finding_rules.h): a claim's proof.
+  std::vector<std::string> evidence;
 };
+
+// Whether the finding names `rule`: in its label ("R-A/R-B") or among the
+// claimed rules it is evidence against.
+bool findingNames(const Finding& f, const std::string& rule);
+// Whether its label ("R-A/R-B") names `rule`.
+bool labelNames(const Finding& f, const std::string& rule);
+// One line of the finding: "Fail: R-IGNORE: ... (2 rays; first: 3 17)".
+std::string findingLine(const Finding& f);
 
 // The rays of one reason whose behaviour the model found undefined (R-UB):
 // never judged, reported apart from the findings.

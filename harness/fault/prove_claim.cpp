@@ -8,10 +8,22 @@
 
 namespace rayspec {
 
-bool namesRule(const Verdict& v, const std::string& rule) {
+const Finding* findingNaming(const Verdict& v, const std::string& rule) {
   for (const Finding& f : v.findings)
-    if (f.status == v.status && f.rule.find(rule) != std::string::npos) return true;
-  return false;
+    if (f.status == v.status && labelNames(f, rule)) return &f;
+  for (const Finding& f : v.findings)
+    if (f.status == v.status && findingNames(f, rule)) return &f;
+  return nullptr;
+}
+
+bool namesRule(const Verdict& v, const std::string& rule) {
+  return findingNaming(v, rule) != nullptr;
+}
+
+std::string claimLine(const Verdict& v, const std::string& rule) {
+  const Finding* f = findingNaming(v, rule);
+  if (!f) return {};
+  return findingLine(*f) + (labelNames(*f, rule) ? "" : " (evidence against " + rule + ")");
 }
 
 namespace {
@@ -31,6 +43,7 @@ FaultOutcome plant(const std::string& fault, bool legal, const Case& c, const Pl
   o.status = v.status;
   o.names_rule = namesRule(v, rule);
   o.headline = v.headline();
+  o.claim_line = claimLine(v, rule);
   return o;
 }
 
@@ -47,7 +60,7 @@ std::string ClaimProof::describe() const {
     else if (!o.changed)
       s << "changed nothing (" << o.what << ")";
     else
-      s << o.headline << (o.names_rule ? "" : " [no finding names the rule]");
+      s << (o.names_rule ? o.claim_line : o.headline + " [no finding names the rule]");
   }
   return s.str();
 }

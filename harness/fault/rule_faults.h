@@ -50,11 +50,19 @@ struct FaultOutcome {
   bool names_rule = false;  // a finding of that status names the rule
   std::string what;         // what the fault did, or why it did not apply
   std::string headline;     // the verdict's
+  std::string claim_line;   // the finding naming the rule (claimLine): what a proof shows
 };
 
 // Whether a finding of the verdict's own status names `rule` (a proof's
 // "the fault broke that rule", FaultOutcome::names_rule).
 bool namesRule(const Verdict& v, const std::string& rule);
+// The finding of the verdict's own status a proof of `rule` shows: the first
+// whose label names the rule, else the first evidence against it; null when
+// none names it.
+const Finding* findingNaming(const Verdict& v, const std::string& rule);
+// That finding's line, "(evidence against R-X)" added where its label names
+// other rules; "" when none names the rule.
+std::string claimLine(const Verdict& v, const std::string& rule);
 
 #define RAYSPEC_CLAIM_RESULTS(X)                                                       \
   /* a break gives `expect` (and no legal variation fails) */                          \

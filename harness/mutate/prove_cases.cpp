@@ -40,8 +40,8 @@ bool provedLive(const ClaimProof& p, const Case& c, const CaseFile& f, const Pro
     return false;
   }
   const LiveProof live = proveOnDevice(opt.run, c, *rf);
-  for (const std::string& tried : live.tried)  // the worst finding of each
-    std::printf("    on the device: %s\n", tried.substr(0, tried.find("; also ")).c_str());
+  for (const std::string& tried : live.tried)  // one finding of each
+    std::printf("    on the device: %s\n", tried.c_str());
   if (live.fault.empty()) {
     std::printf("    on the device: %s\n", live.headline.c_str());
     return false;
@@ -57,9 +57,9 @@ void printClaim(const ClaimProof& p, const Case& c, const CaseFile& f, const Pro
   const FaultOutcome* by = provingFault(p);
   if (by && !opt.verbose) {
     ++t.proved;
-    // The worst finding; -v prints the rest.
-    const std::string first = by->headline.substr(0, by->headline.find("; also "));
-    std::printf("  %s: proved by %s: %s\n", p.rule.c_str(), by->fault.c_str(), first.c_str());
+    // The finding naming the claim, not the verdict's worst; -v prints every fault's.
+    std::printf("  %s: proved by %s: %s\n", p.rule.c_str(), by->fault.c_str(),
+                by->claim_line.c_str());
     return;
   }
   if (p.result == ClaimResult::Proven && !opt.verbose) {

@@ -50,8 +50,11 @@ LiveProof proveOnDevice(const RunOptions& run, const Case& c, const RuleFaults& 
   }
   for (const std::string& fault : rf.live) {
     const CaseOutcome o = runOnDevice(run, c, fault);
-    p.tried.push_back(fault + ": " + o.headline);
-    if (o.status == rf.expect && namesRule(o.verdict, rf.rule)) {
+    // The finding naming the rule where one does, else the verdict's worst.
+    const std::string named = claimLine(o.verdict, rf.rule);
+    p.tried.push_back(fault + ": " +
+                      (named.empty() ? o.headline.substr(0, o.headline.find("; also ")) : named));
+    if (o.status == rf.expect && !named.empty()) {
       p.fault = fault;
       p.headline = o.headline;
       return p;

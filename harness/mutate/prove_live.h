@@ -19,7 +19,7 @@ namespace rayspec {
 struct LiveProof {
   std::string fault;               // the live fault that proved the claim ("" none)
   std::string headline;            // its verdict, or why the claim was not proved there
-  std::vector<std::string> tried;  // "fault: what the device's verdict was", one per fault
+  std::vector<std::string> tried;  // "fault: the finding naming the rule, else the worst"
 };
 
 // Chooses the device of `run` (its --icd manifests in the environment);

@@ -22,25 +22,14 @@ FailureSignature signatureOf(const CaseOutcome& o, const Finding& f, bool any_ki
   return s;
 }
 
-// Whether a finding's rule label ("R-A/R-B") names `rule`.
-bool labelNames(const std::string& label, const std::string& rule) {
-  size_t start = 0;
-  while (start <= label.size()) {
-    const size_t end = std::min(label.find('/', start), label.size());
-    if (label.compare(start, end - start, rule) == 0) return true;
-    start = end + 1;
-  }
-  return false;
-}
-
 bool ended(Status s) {
   return s == Status::Crash || s == Status::Timeout;
 }
 
 }  // namespace
 
-bool ruleMatches(const std::string& label, const FailureSignature& s) {
-  return s.rule_among_labels ? labelNames(label, s.rule) : label == s.rule;
+bool ruleMatches(const Finding& f, const FailureSignature& s) {
+  return s.rule_among_labels ? findingNames(f, s.rule) : f.rule == s.rule;
 }
 
 std::string findingKind(const std::string& message) {
@@ -69,7 +58,7 @@ std::optional<FailureSignature> failureToKeep(const CaseOutcome& o, const std::s
   for (const Finding& f : o.verdict.findings) {
     if (f.status != Status::Fail && f.status != Status::QualityWarning) continue;
     if (keep.empty() && f.status == o.status) return signatureOf(o, f, false);
-    if (!keep.empty() && isRuleLabel(keep) && labelNames(f.rule, keep)) {
+    if (!keep.empty() && isRuleLabel(keep) && findingNames(f, keep)) {
       FailureSignature s = signatureOf(o, f, true);
       s.rule = keep;
       s.rule_among_labels = true;
@@ -85,7 +74,7 @@ bool failsTheSameWay(const CaseOutcome& o, const FailureSignature& s) {
   if (o.status != s.status) return false;
   if (!s.undefined_allowed && !o.verdict.undefined.empty()) return false;
   for (const Finding& f : o.verdict.findings)
-    if (f.status == s.finding && ruleMatches(f.rule, s) &&
+    if (f.status == s.finding && ruleMatches(f, s) &&
         (s.kind.empty() || findingKind(f.message) == s.kind))
       return true;
   return false;
@@ -94,7 +83,7 @@ bool failsTheSameWay(const CaseOutcome& o, const FailureSignature& s) {
 std::vector<uint32_t> failingRays(const CaseOutcome& o, const FailureSignature& s) {
   std::set<uint32_t> rays;
   for (const Finding& f : o.verdict.findings)
-    if (ruleMatches(f.rule, s) && f.status == s.finding) rays.insert(f.rays.begin(), f.rays.end());
+    if (ruleMatches(f, s) && f.status == s.finding) rays.insert(f.rays.begin(), f.rays.end());
   return {rays.begin(), rays.end()};
 }
 

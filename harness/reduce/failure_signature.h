@@ -17,7 +17,8 @@ struct FailureSignature {
   Status finding = Status::Fail;  // the finding's own status
   std::string rule;               // its rule ("" for a crash or timeout)
   // --keep R-X: `rule` is that one rule, found among a finding's labels
-  // ("R-FACE-DET/R-INST-XFORM" has R-FACE-DET), whatever else they name.
+  // ("R-FACE-DET/R-INST-XFORM" has R-FACE-DET) or the claims it is evidence
+  // against (compare/verdict.h findingNames), whatever else they name.
   bool rule_among_labels = false;
   std::string kind;                // findingKind of its message ("" any)
   std::string message;             // as first seen, for the reports
@@ -25,8 +26,8 @@ struct FailureSignature {
 };
 
 // Whether a finding's rule label is the signature's rule (or, with
-// rule_among_labels, names it).
-bool ruleMatches(const std::string& label, const FailureSignature& s);
+// rule_among_labels, the finding names it).
+bool ruleMatches(const Finding& f, const FailureSignature& s);
 
 // The message with every run of digits, and every list of them, replaced by '#'.
 std::string findingKind(const std::string& message);

@@ -29,7 +29,8 @@ Result<void> outcomeVerdict(const nlohmann::json& j, CaseOutcome& o) {
     RAYSPEC_TRY(const Status status, statusField(f, "status"));
     o.verdict.findings.push_back(
         {status, f.at("rule").get<std::string>(), f.at("message").get<std::string>(),
-         f.at("rays").get<std::vector<uint32_t>>(), f.at("ray_count").get<uint32_t>()});
+         f.at("rays").get<std::vector<uint32_t>>(), f.at("ray_count").get<uint32_t>(),
+         f.value("evidence", std::vector<std::string>{})});
   }
   for (const nlohmann::json& u : j.at("undefined")) {
     UndefinedRays r;
@@ -94,12 +95,16 @@ nlohmann::json outcomeJson(const CaseOutcome& o) {
                    {"images", o.images}};
   c["cost"] = caseCostJson(o.cost);
   c["findings"] = nlohmann::json::array();
-  for (const Finding& f : o.verdict.findings)
-    c["findings"].push_back({{"status", statusName(f.status)},
-                             {"rule", f.rule},
-                             {"message", f.message},
-                             {"rays", f.rays},
-                             {"ray_count", f.ray_count}});
+  for (const Finding& f : o.verdict.findings) {
+    nlohmann::json finding{{"status", statusName(f.status)},
+                           {"rule", f.rule},
+                           {"message", f.message},
+                           {"rays", f.rays},
+                           {"ray_count", f.ray_count}};
+    // The claims it is evidence against, where the case claims any (compare/verdict.h).
+    if (!f.evidence.empty()) finding["evidence"] = f.evidence;
+    c["findings"].push_back(std::move(finding));
+  }
   // Apart from the findings: rays never judged (R-UB).
   c["undefined"] = nlohmann::json::array();
   for (const UndefinedRays& u : o.verdict.undefined)
