@@ -12,6 +12,7 @@
 #include "compare/compare_results.h"
 #include "fault/planted_fault.h"
 #include "model_support.h"
+#include "parse/parse_case.h"
 
 namespace rayspec {
 namespace {
@@ -203,6 +204,44 @@ TEST(LegalReplays, IdentityFieldsEveryAnswerSharesDoNotPickTheAnswer) {
     other.counters[name] = static_cast<uint64_t>(static_cast<int64_t>(other.counters[name]) + move);
   const Verdict v = compareResults(j.c, j.plan, other, j.model);
   EXPECT_EQ(v.status, Status::Pass) << v.headline();
+}
+
+// Fuzz seed 100492 on NVIDIA, reduced (cases/precision/tie-after-far-any-hit):
+// instance 1's far triangle met first (any-hit +1), then the tie of both
+// instances' near triangles, instance 1's kept (any-hit +16): value 17 with
+// instance 1, a legal answer the model's orders left out (each tie went to
+// the smaller key). Every (instance, value) the specification allows is a
+// replay and passes; instance 1 without its own any-hit's 16 is none and fails.
+TEST(LegalReplays, ATieAfterAFarAnyHitMayKeepEitherInstance) {
+  const std::string file = RAYSPEC_SOURCE_DIR "/cases/precision/tie-after-far-any-hit.yaml";
+  const ParseResult p = parseCaseFile(file, RAYSPEC_SOURCE_DIR "/cases");
+  ASSERT_TRUE(p.value.has_value());
+  const Case& c = *p.value;
+  const Plan plan = derivePlan(c);
+  const Results model = runOnModel(c, plan, ModelOptions{});
+  ASSERT_EQ(model.statusText(), "ok");
+  ASSERT_EQ(model.ambiguous.size(), 1u);
+  const uint32_t instance = findRecordField("instance_id")->offset;
+  const uint32_t value = findRecordField("value")->offset;
+  std::set<std::pair<uint32_t, uint32_t>> answers;
+  for (const LegalReplay& r : model.ambiguous[0].replays) {
+    answers.insert({r.record[instance], r.record[value]});
+    Results d = perfectDevice(c, model);
+    std::copy(r.record.begin(), r.record.end(), recordOf(d, 0));
+    EXPECT_EQ(compareResults(c, plan, d, model).status, Status::Pass);
+  }
+  const std::set<std::pair<uint32_t, uint32_t>> legal = {{0, 0},  {0, 1},  {0, 16},
+                                                         {0, 17}, {1, 16}, {1, 17}};
+  EXPECT_EQ(answers, legal);
+  for (const uint32_t wrong_value : {0u, 1u, 33u}) {
+    Results d = perfectDevice(c, model);
+    for (const LegalReplay& r : model.ambiguous[0].replays)
+      if (r.record[instance] == 1) std::copy(r.record.begin(), r.record.end(), recordOf(d, 0));
+    recordOf(d, 0)[value] = wrong_value;
+    EXPECT_TRUE(failsSaying(compareResults(c, plan, d, model),
+                            "is what none of the legal answers of a numerically ambiguous ray"))
+        << wrong_value;
+  }
 }
 
 }  // namespace

@@ -94,7 +94,7 @@ bool HitProtocol::reportInside(const CStmt& s, StageEnv& env, Traversal& tr, flo
   }
   // What-if run where a report at the committed t keeps the committed hit
   // (R-TIE: keeping and replacing are both legal).
-  if (tr.tie_keeps && t >= tr.ray.tmin && tr.ties(t)) inside = false;
+  if (tr.tie == TieRule::Keep && t >= tr.ray.tmin && tr.ties(t)) inside = false;
   // What-if run preferring one candidate (R-TIE): it wins every tie, and a
   // committed preferred hit loses none.
   if (tr.prefer >= 0 && t >= tr.ray.tmin && tr.ties(t)) {

@@ -124,6 +124,24 @@ bool TraceClassifier::reportsTie(const std::vector<std::pair<size_t, double>>& r
   return false;
 }
 
+// R-TIE: what the order runs try with a candidate at the committed t: the
+// model's rule; a report or triangle kept; and where two triangles tie, one
+// confirmed and replacing or dropped (legal_replays: each is a legal answer).
+// A ray query's candidates tie as its blocks decide.
+std::vector<TieRule> TraceClassifier::tieRules(const std::vector<uint32_t>& matter,
+                                               bool reported) const {
+  bool triangles = false;
+  for (size_t a = 0; a < matter.size() && !triangles; ++a)
+    for (size_t b = a + 1; b < matter.size() && !triangles; ++b) {
+      const ModelCandidate &x = cands_[matter[a]], &y = cands_[matter[b]];
+      triangles = !x.aabb && !y.aabb && std::fabs(x.t - y.t) <= tr_.tol(x.t);
+    }
+  if (tr_.query) return {TieRule::Model};
+  if (triangles) return {TieRule::Model, TieRule::Keep, TieRule::Replace, TieRule::ConfirmDrop};
+  if (reported) return {TieRule::Model, TieRule::Keep};
+  return {TieRule::Model};
+}
+
 OrderOutcome TraceClassifier::actualOutcome() const {
   OrderOutcome o;
   o.best = tr_.best;
@@ -166,16 +184,15 @@ bool TraceClassifier::tryPermutations(const std::vector<std::pair<size_t, double
                                     [](const auto& r) { return !std::isnan(r.second); });
   // One candidate has no other order: only its own tied reports matter.
   if (matter.size() <= 1 && !ties) return true;
-  const bool keeps = !tr_.query && reported;  // a report may keep the committed hit
+  const std::vector<TieRule> rules = tieRules(matter, reported);
   const bool sample = matter.size() > kMaxOrderedCandidates;
   const std::vector<std::vector<uint32_t>> orders =
       sample ? sampleOrders(cands_.size(), matter) : everyOrder(cands_.size(), matter);
   std::vector<OrderOutcome> seen{actualOutcome()};
   std::vector<WhatIf> hows{actual()};
   for (const std::vector<uint32_t>& order : orders)
-    for (const bool keep : {false, true}) {
-      if (keep && !keeps) continue;
-      WhatIf how{false, {}, -1, -1, {}, order, keep};
+    for (const TieRule rule : rules) {
+      WhatIf how{false, {}, -1, -1, {}, order, rule};
       // An edge or vertex triangle the model left out may be a device's first hit.
       if (!matter.empty() && cands_[order[matter[0]]].ambiguity != TriAmbiguity::None) {
         how.force.assign(cands_.size(), -1);

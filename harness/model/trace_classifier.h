@@ -57,6 +57,7 @@ class TraceClassifier {
   std::vector<uint32_t> orderedCandidates(
       const std::vector<std::pair<size_t, double>>& reports) const;
   bool reportsTie(const std::vector<std::pair<size_t, double>>& reports) const;
+  std::vector<TieRule> tieRules(const std::vector<uint32_t>& matter, bool reported) const;
   OrderOutcome actualOutcome() const;
   void orderDependentPastBound(size_t candidates);
 

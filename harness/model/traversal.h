@@ -57,10 +57,10 @@ struct Traversal {
   long prefer = -1, first = -1;
   uint32_t prefer_key[3] = {0, 0, 0};
   // Exact tier, what-if runs of another order (R-ORDER-UNSPEC): the candidate
-  // indices in the order processed (null: the model's own), and whether a
-  // report at the committed t keeps the committed hit (R-TIE).
+  // indices in the order processed (null: the model's own), and what a
+  // candidate at the committed t does (R-TIE, TieRule).
   const std::vector<uint32_t>* order = nullptr;
-  bool tie_keeps = false;
+  TieRule tie = TieRule::Model;
   // The actual run of the exact tier: every report (candidate index, t) in [tmin, tmax].
   std::vector<std::pair<size_t, double>>* reports = nullptr;
   // Exact tier, R-PREC: the actual run notes its intersection programs'
