@@ -244,5 +244,42 @@ TEST(LegalReplays, ATieAfterAFarAnyHitMayKeepEitherInstance) {
   }
 }
 
+// Fuzz seed 20094 on lavapipe 25.0.7, reduced
+// (cases/precision/vertex-after-far-any-hit): the far triangle met first
+// (any-hit +1), then the near triangle's corner, a vertex of no closed fan
+// the model misses, hit: value 1 with geometry 0, a legal answer the model's
+// orders left out (the corner forced a hit only where it came first). Every
+// (geometry, value) the specification allows is a replay and passes; the far
+// triangle without its any-hit, or the corner with it run twice, fails.
+TEST(LegalReplays, AVertexAfterAFarAnyHitKeepsItsEffect) {
+  const std::string file = RAYSPEC_SOURCE_DIR "/cases/precision/vertex-after-far-any-hit.yaml";
+  const ParseResult p = parseCaseFile(file, RAYSPEC_SOURCE_DIR "/cases");
+  ASSERT_TRUE(p.value.has_value());
+  const Case& c = *p.value;
+  const Plan plan = derivePlan(c);
+  const Results model = runOnModel(c, plan, ModelOptions{});
+  ASSERT_EQ(model.statusText(), "ok");
+  ASSERT_EQ(model.ambiguous.size(), 1u);
+  const uint32_t geometry = findRecordField("geometry_index")->offset;
+  const uint32_t value = findRecordField("value")->offset;
+  std::set<std::pair<uint32_t, uint32_t>> answers;
+  for (const LegalReplay& r : model.ambiguous[0].replays) {
+    answers.insert({r.record[geometry], r.record[value]});
+    Results d = perfectDevice(c, model);
+    std::copy(r.record.begin(), r.record.end(), recordOf(d, 0));
+    EXPECT_EQ(compareResults(c, plan, d, model).status, Status::Pass);
+  }
+  EXPECT_EQ(answers, (std::set<std::pair<uint32_t, uint32_t>>{{0, 0}, {0, 1}, {1, 1}}));
+  for (const auto& [g, wrong_value] : {std::pair<uint32_t, uint32_t>{1, 0}, {0, 2}}) {
+    Results d = perfectDevice(c, model);
+    for (const LegalReplay& r : model.ambiguous[0].replays)
+      if (r.record[geometry] == g) std::copy(r.record.begin(), r.record.end(), recordOf(d, 0));
+    recordOf(d, 0)[value] = wrong_value;
+    EXPECT_TRUE(failsSaying(compareResults(c, plan, d, model),
+                            "is what none of the legal answers of a numerically ambiguous ray"))
+        << g << " " << wrong_value;
+  }
+}
+
 }  // namespace
 }  // namespace rayspec
