@@ -148,10 +148,11 @@ std::vector<WhatIf> TraceClassifier::orderRuns(const std::vector<uint32_t>& orde
   return runs;
 }
 
-// R-TIE: what the order runs try with a candidate at the committed t: the
-// model's rule; a report or triangle kept; and where two triangles tie, one
-// confirmed and replacing or dropped (legal_replays: each is a legal answer).
-// A ray query's candidates tie as its blocks decide.
+// R-TIE: what the order runs try with a candidate at the committed t, where
+// two triangles tie or a report is made: the model's rule; the candidate
+// kept out before its any-hit; or confirmed and replacing or dropped
+// (legal_replays: each is a legal answer). A ray query's candidates tie as
+// its blocks decide.
 std::vector<TieRule> TraceClassifier::tieRules(const std::vector<uint32_t>& matter,
                                                bool reported) const {
   bool triangles = false;
@@ -161,8 +162,8 @@ std::vector<TieRule> TraceClassifier::tieRules(const std::vector<uint32_t>& matt
       triangles = !x.aabb && !y.aabb && std::fabs(x.t - y.t) <= tr_.tol(x.t);
     }
   if (tr_.query) return {TieRule::Model};
-  if (triangles) return {TieRule::Model, TieRule::Keep, TieRule::Replace, TieRule::ConfirmDrop};
-  if (reported) return {TieRule::Model, TieRule::Keep};
+  if (triangles || reported)
+    return {TieRule::Model, TieRule::Keep, TieRule::Replace, TieRule::ConfirmDrop};
   return {TieRule::Model};
 }
 

@@ -201,10 +201,10 @@ bool inlinedConfirmLost(Traversal& tr, Flow any_hit) {
 }
 
 // What-if run (R-TIE, TieRule::ConfirmDrop): a triangle confirmed at the
-// committed t is dropped there ("may be set as the current closest hit or
-// dropped"); an any-hit's terminate still ends the traversal.
+// committed t is dropped there (Traversal::confirmDrops); an any-hit's
+// terminate still ends the traversal.
 bool confirmedThenDropped(Traversal& tr, const ModelCandidate& cand, Flow any_hit) {
-  if (tr.tie != TieRule::ConfirmDrop || !tr.exact || !tr.ties(cand.t)) return false;
+  if (!tr.confirmDrops(cand.t)) return false;
   if (any_hit == Flow::Terminate) tr.stop = true;
   return true;
 }

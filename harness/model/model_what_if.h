@@ -48,7 +48,7 @@ struct Committed {
 // between candidates). Model: the model's own rule (a report replaces, a
 // triangle with the smaller key replaces); Keep: dropped before its any-hit;
 // Replace: its any-hit runs and it replaces; ConfirmDrop: its any-hit runs
-// and it is dropped (triangles; a report keeps or replaces).
+// and it is dropped (triangles and intersection-program reports alike).
 enum class TieRule : uint8_t { Model, Keep, Replace, ConfirmDrop };
 
 // How one what-if run of the exact tier decides (ModelTracer::sandbox):

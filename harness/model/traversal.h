@@ -93,6 +93,10 @@ struct Traversal {
     return inlined.commit_keeps_interval && best.valid ? best.t : tmax_cur;
   }
   bool ties(double t) const { return best.valid && std::fabs(t - best.t) <= tol(t); }
+  // What-if run (R-TIE, TieRule::ConfirmDrop): a triangle or report confirmed
+  // at the committed t is dropped there ("may be set as the current closest
+  // hit or dropped", Ray Closest Hit Determination).
+  bool confirmDrops(double t) const { return tie == TieRule::ConfirmDrop && exact && ties(t); }
   // A triangle candidate's t against an interval end: its own error bound
   // (translated frame, model/watertight.h) where known.
   double endTol(const ModelCandidate& c) const { return c.t_err > 0 ? c.t_err : tol(c.t); }
