@@ -12,6 +12,7 @@
 #include "compare/compare_results.h"
 #include "fault/planted_fault.h"
 #include "model_support.h"
+#include "parse/parse_case.h"
 
 namespace rayspec {
 namespace {
@@ -203,6 +204,149 @@ TEST(LegalReplays, IdentityFieldsEveryAnswerSharesDoNotPickTheAnswer) {
     other.counters[name] = static_cast<uint64_t>(static_cast<int64_t>(other.counters[name]) + move);
   const Verdict v = compareResults(j.c, j.plan, other, j.model);
   EXPECT_EQ(v.status, Status::Pass) << v.headline();
+}
+
+// Fuzz seed 100492 on NVIDIA, reduced (cases/precision/tie-after-far-any-hit):
+// instance 1's far triangle met first (any-hit +1), then the tie of both
+// instances' near triangles, instance 1's kept (any-hit +16): value 17 with
+// instance 1, a legal answer the model's orders left out (each tie went to
+// the smaller key). Every (instance, value) the specification allows is a
+// replay and passes; instance 1 without its own any-hit's 16 is none and fails.
+TEST(LegalReplays, ATieAfterAFarAnyHitMayKeepEitherInstance) {
+  const std::string file = RAYSPEC_SOURCE_DIR "/cases/precision/tie-after-far-any-hit.yaml";
+  const ParseResult p = parseCaseFile(file, RAYSPEC_SOURCE_DIR "/cases");
+  ASSERT_TRUE(p.value.has_value());
+  const Case& c = *p.value;
+  const Plan plan = derivePlan(c);
+  const Results model = runOnModel(c, plan, ModelOptions{});
+  ASSERT_EQ(model.statusText(), "ok");
+  ASSERT_EQ(model.ambiguous.size(), 1u);
+  const uint32_t instance = findRecordField("instance_id")->offset;
+  const uint32_t value = findRecordField("value")->offset;
+  std::set<std::pair<uint32_t, uint32_t>> answers;
+  for (const LegalReplay& r : model.ambiguous[0].replays) {
+    answers.insert({r.record[instance], r.record[value]});
+    Results d = perfectDevice(c, model);
+    std::copy(r.record.begin(), r.record.end(), recordOf(d, 0));
+    EXPECT_EQ(compareResults(c, plan, d, model).status, Status::Pass);
+  }
+  const std::set<std::pair<uint32_t, uint32_t>> legal = {{0, 0},  {0, 1},  {0, 16},
+                                                         {0, 17}, {1, 16}, {1, 17}};
+  EXPECT_EQ(answers, legal);
+  for (const uint32_t wrong_value : {0u, 1u, 33u}) {
+    Results d = perfectDevice(c, model);
+    for (const LegalReplay& r : model.ambiguous[0].replays)
+      if (r.record[instance] == 1) std::copy(r.record.begin(), r.record.end(), recordOf(d, 0));
+    recordOf(d, 0)[value] = wrong_value;
+    EXPECT_TRUE(failsSaying(compareResults(c, plan, d, model),
+                            "is what none of the legal answers of a numerically ambiguous ray"))
+        << wrong_value;
+  }
+}
+
+// Fuzz seed 20094 on lavapipe 25.0.7, reduced
+// (cases/precision/vertex-after-far-any-hit): the far triangle met first
+// (any-hit +1), then the near triangle's corner, a vertex of no closed fan
+// the model misses, hit: value 1 with geometry 0, a legal answer the model's
+// orders left out (the corner forced a hit only where it came first). Every
+// (geometry, value) the specification allows is a replay and passes; the far
+// triangle without its any-hit, or the corner with it run twice, fails.
+TEST(LegalReplays, AVertexAfterAFarAnyHitKeepsItsEffect) {
+  const std::string file = RAYSPEC_SOURCE_DIR "/cases/precision/vertex-after-far-any-hit.yaml";
+  const ParseResult p = parseCaseFile(file, RAYSPEC_SOURCE_DIR "/cases");
+  ASSERT_TRUE(p.value.has_value());
+  const Case& c = *p.value;
+  const Plan plan = derivePlan(c);
+  const Results model = runOnModel(c, plan, ModelOptions{});
+  ASSERT_EQ(model.statusText(), "ok");
+  ASSERT_EQ(model.ambiguous.size(), 1u);
+  const uint32_t geometry = findRecordField("geometry_index")->offset;
+  const uint32_t value = findRecordField("value")->offset;
+  std::set<std::pair<uint32_t, uint32_t>> answers;
+  for (const LegalReplay& r : model.ambiguous[0].replays) {
+    answers.insert({r.record[geometry], r.record[value]});
+    Results d = perfectDevice(c, model);
+    std::copy(r.record.begin(), r.record.end(), recordOf(d, 0));
+    EXPECT_EQ(compareResults(c, plan, d, model).status, Status::Pass);
+  }
+  EXPECT_EQ(answers, (std::set<std::pair<uint32_t, uint32_t>>{{0, 0}, {0, 1}, {1, 1}}));
+  for (const auto& [g, wrong_value] : {std::pair<uint32_t, uint32_t>{1, 0}, {0, 2}}) {
+    Results d = perfectDevice(c, model);
+    for (const LegalReplay& r : model.ambiguous[0].replays)
+      if (r.record[geometry] == g) std::copy(r.record.begin(), r.record.end(), recordOf(d, 0));
+    recordOf(d, 0)[value] = wrong_value;
+    EXPECT_TRUE(failsSaying(compareResults(c, plan, d, model),
+                            "is what none of the legal answers of a numerically ambiguous ray"))
+        << g << " " << wrong_value;
+  }
+}
+
+// Two instances of one box at one place, each reporting at its top face (t
+// 9.5 from the same arithmetic: a tie, R-TIE); each any-hit folds its
+// instance into the payload (value * 4 + instance + 1), so its order shows.
+// Whichever reports first commits; the other's report lands on t = tmax,
+// inside the closed interval (R-CAND-AABB-CLOSED), and may be dropped before
+// its any-hit (a step past tmax by rounding), or confirmed, its any-hit run,
+// then replacing or kept out (Ray Closest Hit Determination: "may be set as
+// the current closest hit or dropped"). Ray 1 misses.
+const char* kReportTieCase = R"(rules: [R-TIE]
+scene:
+  blas:
+    box:
+      - aabbs: [[-1, -1, -0.5, 1, 1, 0.5]]
+        flags: [no_duplicate_any_hit]
+  instances:
+    - {blas: box}
+    - {blas: box}
+rays:
+  list:
+    - {origin: [0, 0, 10], direction: [0, 0, -1]}
+    - {origin: [50, 0, 10], direction: [0, 0, -1]}
+pipeline:
+  raygen: [{trace: {payload: {value: 0}}}, {record: {value: payload.value}}]
+  miss:
+    - [record: {hit: 0}]
+  hit_groups:
+    - intersection: [report: {t: {sub: [{z: object_ray_origin}, {z: aabb_max}]}, kind: 1}]
+      any_hit: [payload: {value: {add: [{mul: [payload.value, 4]}, {add: [instance_id, 1]}]}}]
+      closest_hit: [record: [hit, instance_id]]
+outputs:
+  per_ray: [hit, instance_id, value]
+)";
+
+// Each order of the two reports, and each way of the second: kept out
+// before its any-hit (the first's alone: 0 with 1, 1 with 2), confirmed and
+// kept out (0 with 6, 1 with 9: the model listed these as none before), or
+// confirmed and replacing (1 with 6, 0 with 9). Each is a replay and passes;
+// an instance with a value its any-hits cannot leave fails.
+TEST(LegalReplays, AReportAtTheCommittedTRunsItsAnyHitThenMayBeKeptOut) {
+  const Case c = parseInline(kReportTieCase, "model/replay-report-tie");
+  const Plan plan = derivePlan(c);
+  const Results model = runOnModel(c, plan, ModelOptions{});
+  ASSERT_EQ(model.statusText(), "ok");
+  ASSERT_EQ(model.ambiguous.size(), 1u);
+  const uint32_t instance = findRecordField("instance_id")->offset;
+  const uint32_t value = findRecordField("value")->offset;
+  std::set<std::pair<uint32_t, uint32_t>> answers;
+  for (const LegalReplay& r : model.ambiguous[0].replays) {
+    answers.insert({r.record[instance], r.record[value]});
+    Results d = perfectDevice(c, model);
+    std::copy(r.record.begin(), r.record.end(), recordOf(d, 0));
+    const Verdict v = compareResults(c, plan, d, model);
+    EXPECT_EQ(v.status, Status::Pass) << v.headline();
+  }
+  const std::set<std::pair<uint32_t, uint32_t>> legal = {{0, 1}, {1, 2}, {0, 6},
+                                                         {1, 9}, {1, 6}, {0, 9}};
+  EXPECT_EQ(answers, legal);
+  for (const auto& [i, wrong_value] : {std::pair<uint32_t, uint32_t>{0, 2}, {1, 1}, {0, 5}}) {
+    Results d = perfectDevice(c, model);
+    for (const LegalReplay& r : model.ambiguous[0].replays)
+      if (r.record[instance] == i) std::copy(r.record.begin(), r.record.end(), recordOf(d, 0));
+    recordOf(d, 0)[value] = wrong_value;
+    EXPECT_TRUE(failsSaying(compareResults(c, plan, d, model),
+                            "is what none of the legal answers of a numerically ambiguous ray"))
+        << i << " " << wrong_value;
+  }
 }
 
 }  // namespace

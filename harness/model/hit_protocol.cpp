@@ -92,9 +92,12 @@ bool HitProtocol::reportInside(const CStmt& s, StageEnv& env, Traversal& tr, flo
       if (near_end) tr.shader_unsure->push_back({tr.cur_index, 1, ord, inside});
     }
   }
-  // What-if run where a report at the committed t keeps the committed hit
-  // (R-TIE: keeping and replacing are both legal).
-  if (tr.tie_keeps && t >= tr.ray.tmin && tr.ties(t)) inside = false;
+  // What-if run of another order (R-TIE), as for a triangle: a report at the
+  // committed t dropped before its any-hit (Keep: the device's t a step past
+  // its tmax), or confirmed, its any-hit run (R-CAND-AABB-CLOSED: t = tmax is
+  // inside), then replacing the committed hit or dropped (report).
+  if (tr.exact && tr.tie != TieRule::Model && t >= tr.ray.tmin && tr.ties(t))
+    inside = tr.tie != TieRule::Keep;
   // What-if run preferring one candidate (R-TIE): it wins every tie, and a
   // committed preferred hit loses none.
   if (tr.prefer >= 0 && t >= tr.ray.tmin && tr.ties(t)) {
@@ -142,8 +145,11 @@ Flow HitProtocol::report(const CStmt& s, StageEnv& env) {
     }
     if (ah != Flow::Ignore) {
       accepted = true;
-      // Planted, inlined: the loop's generate commits nothing, its report still true.
-      if (!tr->inlined.generate_ignored) commitReport(s, env, *tr, hv, t, kind);
+      // Planted, inlined: the loop's generate commits nothing, its report
+      // still true; so a what-if run's confirmed report at the committed t
+      // it drops (R-TIE, Traversal::confirmDrops).
+      if (!tr->inlined.generate_ignored && !tr->confirmDrops(t))
+        commitReport(s, env, *tr, hv, t, kind);
       if (ah == Flow::Terminate || (tr->flags & kRayTerminateOnFirstHit)) {
         tr->stop = !tr->inlined.terminate_ignored;
         return Flow::Terminate;  // R-TERMINATE: the intersection program stops too

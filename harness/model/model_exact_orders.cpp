@@ -124,6 +124,49 @@ bool TraceClassifier::reportsTie(const std::vector<std::pair<size_t, double>>& r
   return false;
 }
 
+// The what-if runs of one order: the model's own decisions, and where an
+// edge or vertex triangle the model left out (R-WATERTIGHT: a shared vertex
+// of no closed fan, or any the model missed within rounding) is among the
+// candidates, the first such in the order a hit there (a device may hit it
+// after a farther candidate's any-hit ran: no ordering guarantee between
+// candidates, Ray Intersection Candidate Determination); first in the order,
+// only that run (missed, its place does not matter).
+std::vector<WhatIf> TraceClassifier::orderRuns(const std::vector<uint32_t>& order,
+                                               const std::vector<uint32_t>& matter,
+                                               TieRule rule) const {
+  std::vector<WhatIf> runs{{false, {}, -1, -1, {}, order, rule}};
+  for (size_t p = 0; p < matter.size(); ++p) {
+    const uint32_t k = order[matter[p]];
+    if (cands_[k].ambiguity == TriAmbiguity::None) continue;
+    WhatIf forced = runs[0];
+    forced.force.assign(cands_.size(), -1);
+    forced.force[k] = 1;
+    if (p == 0) runs.clear();
+    runs.push_back(std::move(forced));
+    break;
+  }
+  return runs;
+}
+
+// R-TIE: what the order runs try with a candidate at the committed t, where
+// two triangles tie or a report is made: the model's rule; the candidate
+// kept out before its any-hit; or confirmed and replacing or dropped
+// (legal_replays: each is a legal answer). A ray query's candidates tie as
+// its blocks decide.
+std::vector<TieRule> TraceClassifier::tieRules(const std::vector<uint32_t>& matter,
+                                               bool reported) const {
+  bool triangles = false;
+  for (size_t a = 0; a < matter.size() && !triangles; ++a)
+    for (size_t b = a + 1; b < matter.size() && !triangles; ++b) {
+      const ModelCandidate &x = cands_[matter[a]], &y = cands_[matter[b]];
+      triangles = !x.aabb && !y.aabb && std::fabs(x.t - y.t) <= tr_.tol(x.t);
+    }
+  if (tr_.query) return {TieRule::Model};
+  if (triangles || reported)
+    return {TieRule::Model, TieRule::Keep, TieRule::Replace, TieRule::ConfirmDrop};
+  return {TieRule::Model};
+}
+
 OrderOutcome TraceClassifier::actualOutcome() const {
   OrderOutcome o;
   o.best = tr_.best;
@@ -166,30 +209,24 @@ bool TraceClassifier::tryPermutations(const std::vector<std::pair<size_t, double
                                     [](const auto& r) { return !std::isnan(r.second); });
   // One candidate has no other order: only its own tied reports matter.
   if (matter.size() <= 1 && !ties) return true;
-  const bool keeps = !tr_.query && reported;  // a report may keep the committed hit
+  const std::vector<TieRule> rules = tieRules(matter, reported);
   const bool sample = matter.size() > kMaxOrderedCandidates;
   const std::vector<std::vector<uint32_t>> orders =
       sample ? sampleOrders(cands_.size(), matter) : everyOrder(cands_.size(), matter);
   std::vector<OrderOutcome> seen{actualOutcome()};
   std::vector<WhatIf> hows{actual()};
   for (const std::vector<uint32_t>& order : orders)
-    for (const bool keep : {false, true}) {
-      if (keep && !keeps) continue;
-      WhatIf how{false, {}, -1, -1, {}, order, keep};
-      // An edge or vertex triangle the model left out may be a device's first hit.
-      if (!matter.empty() && cands_[order[matter[0]]].ambiguity != TriAmbiguity::None) {
-        how.force.assign(cands_.size(), -1);
-        how.force[order[matter[0]]] = 1;
+    for (const TieRule rule : rules)
+      for (WhatIf& how : orderRuns(order, matter, rule)) {
+        OrderOutcome o;
+        m_.sandbox(tr_, cands_, how, payload_in_, &o);
+        const bool known = std::any_of(seen.begin(), seen.end(), [&](const OrderOutcome& s) {
+          return sameOutcome(s, o, tr_.tol(o.best.t));
+        });
+        if (known) continue;
+        seen.push_back(std::move(o));
+        hows.push_back(std::move(how));
       }
-      OrderOutcome o;
-      m_.sandbox(tr_, cands_, how, payload_in_, &o);
-      const bool known = std::any_of(seen.begin(), seen.end(), [&](const OrderOutcome& s) {
-        return sameOutcome(s, o, tr_.tol(o.best.t));
-      });
-      if (known) continue;
-      seen.push_back(std::move(o));
-      hows.push_back(std::move(how));
-    }
   if (seen.size() < 2) return true;
   // Past the bound a case error, but where only tied reports may differ.
   if (sample && (tr_.query || !m_.sh_.programs->order_ties_only))

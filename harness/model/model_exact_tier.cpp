@@ -281,7 +281,7 @@ Committed ModelTracer::decideAs(const Traversal& actual, const std::vector<Model
   v.first = how.first;
   v.shader_force = how.shader ? &*how.shader : nullptr;
   v.order = how.order.empty() ? nullptr : &how.order;
-  v.tie_keeps = how.tie_keeps;
+  v.tie = how.tie;
   if (how.prefer >= 0) {
     const ModelCandidate& p = cands[static_cast<size_t>(how.prefer)];
     v.prefer_key[0] = p.instance;

@@ -176,6 +176,10 @@ bool ModelTracer::triangleInside(const Traversal& tr, const ModelCandidate& cand
   if (tie && (tr.prefer == static_cast<long>(k) || best_preferred)) {
     // What-if run preferring one candidate (R-TIE).
     inside = tr.prefer == static_cast<long>(k) && cand.t > tr.tmin;
+  } else if (tie && tr.tie != TieRule::Model) {
+    // What-if run of another order (R-TIE): dropped before its any-hit, or
+    // confirmed (then replacing the committed hit, or dropped in decide).
+    inside = tr.tie != TieRule::Keep && cand.t > tr.tmin;
   } else if (!inside && tie &&
              keyLess(cand.instance, cand.geometry, cand.primitive, tr.best.instance,
                      tr.best.geometry, tr.best.primitive)) {
@@ -192,6 +196,15 @@ namespace {
 bool inlinedConfirmLost(Traversal& tr, Flow any_hit) {
   const ModelFaultSeam::InlinedQuery& q = tr.inlined;
   if (!q.confirm_ignored && !(q.confirm_only_first && tr.best.valid)) return false;
+  if (any_hit == Flow::Terminate) tr.stop = true;
+  return true;
+}
+
+// What-if run (R-TIE, TieRule::ConfirmDrop): a triangle confirmed at the
+// committed t is dropped there (Traversal::confirmDrops); an any-hit's
+// terminate still ends the traversal.
+bool confirmedThenDropped(Traversal& tr, const ModelCandidate& cand, Flow any_hit) {
+  if (!tr.confirmDrops(cand.t)) return false;
   if (any_hit == Flow::Terminate) tr.stop = true;
   return true;
 }
@@ -266,6 +279,7 @@ void ModelTracer::decide(Traversal& tr, const std::vector<ModelCandidate>& cands
       if (ah == Flow::Ignore) continue;
     }
     if (offered && inlinedConfirmLost(tr, ah)) continue;
+    if (confirmedThenDropped(tr, cand, ah)) continue;
     // Exact tier, R-PREC: how far a device's t may lie (its frame's rounding).
     tr.best = {true,   cand.t,  cand.instance, cand.geometry, cand.primitive,
                f.kind, cand.b1, cand.b2,       cand.t_err};

@@ -40,20 +40,31 @@ struct Committed {
   uint64_t effect = 0;
 };
 
+// R-TIE: what a what-if run of another order (R-ORDER-UNSPEC) does with a
+// candidate confirmable at the committed t (within the error bound), which
+// the specification lets a device set as the closest hit or drop ("If t =
+// tmax", Ray Closest Hit Determination), its any-hit run or not (a triangle
+// found before the commit lowered tmax, there being no ordering guarantee
+// between candidates). Model: the model's own rule (a report replaces, a
+// triangle with the smaller key replaces); Keep: dropped before its any-hit;
+// Replace: its any-hit runs and it replaces; ConfirmDrop: its any-hit runs
+// and it is dropped (triangles and intersection-program reports alike).
+enum class TieRule : uint8_t { Model, Keep, Replace, ConfirmDrop };
+
 // How one what-if run of the exact tier decides (ModelTracer::sandbox):
 // candidates forced to be a hit (1) or not (0), -1 the model's own decision;
 // the candidate that wins every tie (prefer) or is processed first (first),
 // -1 none; an intersection program's decision flipped; the order candidates
 // are processed in (a permutation of their indices; empty: the model's own,
-// R-ORDER-UNSPEC); whether a report at the committed t keeps the committed
-// hit instead of replacing it (R-TIE). `actual`: the trace's own run, no what-if.
+// R-ORDER-UNSPEC); what a candidate at the committed t does (R-TIE, TieRule).
+// `actual`: the trace's own run, no what-if.
 struct WhatIf {
   bool actual = false;
   std::vector<int8_t> force;  // empty: none forced
   long prefer = -1, first = -1;
   std::optional<ShaderDecision> shader;
   std::vector<uint32_t> order;
-  bool tie_keeps = false;
+  TieRule tie = TieRule::Model;
 };
 struct WhatIfAnswer {
   Committed best;

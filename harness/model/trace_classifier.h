@@ -57,6 +57,9 @@ class TraceClassifier {
   std::vector<uint32_t> orderedCandidates(
       const std::vector<std::pair<size_t, double>>& reports) const;
   bool reportsTie(const std::vector<std::pair<size_t, double>>& reports) const;
+  std::vector<TieRule> tieRules(const std::vector<uint32_t>& matter, bool reported) const;
+  std::vector<WhatIf> orderRuns(const std::vector<uint32_t>& order,
+                                const std::vector<uint32_t>& matter, TieRule rule) const;
   OrderOutcome actualOutcome() const;
   void orderDependentPastBound(size_t candidates);
 

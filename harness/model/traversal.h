@@ -57,10 +57,10 @@ struct Traversal {
   long prefer = -1, first = -1;
   uint32_t prefer_key[3] = {0, 0, 0};
   // Exact tier, what-if runs of another order (R-ORDER-UNSPEC): the candidate
-  // indices in the order processed (null: the model's own), and whether a
-  // report at the committed t keeps the committed hit (R-TIE).
+  // indices in the order processed (null: the model's own), and what a
+  // candidate at the committed t does (R-TIE, TieRule).
   const std::vector<uint32_t>* order = nullptr;
-  bool tie_keeps = false;
+  TieRule tie = TieRule::Model;
   // The actual run of the exact tier: every report (candidate index, t) in [tmin, tmax].
   std::vector<std::pair<size_t, double>>* reports = nullptr;
   // Exact tier, R-PREC: the actual run notes its intersection programs'
@@ -93,6 +93,10 @@ struct Traversal {
     return inlined.commit_keeps_interval && best.valid ? best.t : tmax_cur;
   }
   bool ties(double t) const { return best.valid && std::fabs(t - best.t) <= tol(t); }
+  // What-if run (R-TIE, TieRule::ConfirmDrop): a triangle or report confirmed
+  // at the committed t is dropped there ("may be set as the current closest
+  // hit or dropped", Ray Closest Hit Determination).
+  bool confirmDrops(double t) const { return tie == TieRule::ConfirmDrop && exact && ties(t); }
   // A triangle candidate's t against an interval end: its own error bound
   // (translated frame, model/watertight.h) where known.
   double endTol(const ModelCandidate& c) const { return c.t_err > 0 ? c.t_err : tol(c.t); }
