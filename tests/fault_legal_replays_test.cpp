@@ -8,6 +8,9 @@
 #include <algorithm>
 #include <bit>
 #include <set>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "compare/compare_results.h"
 #include "fault/planted_fault.h"
@@ -206,6 +209,48 @@ TEST(LegalReplays, IdentityFieldsEveryAnswerSharesDoNotPickTheAnswer) {
   EXPECT_EQ(v.status, Status::Pass) << v.headline();
 }
 
+// One ambiguous ray (ray 0) of a case, judged both ways by the pairs of two
+// record fields: every legal answer the model replays is a device that passes,
+// and the pairs they leave are `legal`; each pair of `wrong` (a record of a
+// replay with that first field, its second field changed) is a device that fails.
+using FieldPair = std::pair<uint32_t, uint32_t>;
+
+void expectLegalPairs(const Case& c, const std::string& first_field,
+                      const std::string& second_field, const std::set<FieldPair>& legal,
+                      const std::vector<FieldPair>& wrong) {
+  const Plan plan = derivePlan(c);
+  const Results model = runOnModel(c, plan, ModelOptions{});
+  ASSERT_EQ(model.statusText(), "ok");
+  ASSERT_EQ(model.ambiguous.size(), 1u);
+  const uint32_t first = findRecordField(first_field)->offset;
+  const uint32_t second = findRecordField(second_field)->offset;
+  std::set<FieldPair> answers;
+  for (const LegalReplay& r : model.ambiguous[0].replays) {
+    answers.insert({r.record[first], r.record[second]});
+    Results d = perfectDevice(c, model);
+    std::copy(r.record.begin(), r.record.end(), recordOf(d, 0));
+    const Verdict v = compareResults(c, plan, d, model);
+    EXPECT_EQ(v.status, Status::Pass) << v.headline();
+  }
+  EXPECT_EQ(answers, legal);
+  for (const auto& [f, wrong_value] : wrong) {
+    Results d = perfectDevice(c, model);
+    for (const LegalReplay& r : model.ambiguous[0].replays)
+      if (r.record[first] == f) std::copy(r.record.begin(), r.record.end(), recordOf(d, 0));
+    recordOf(d, 0)[second] = wrong_value;
+    EXPECT_TRUE(failsSaying(compareResults(c, plan, d, model),
+                            "is what none of the legal answers of a numerically ambiguous ray"))
+        << f << " " << wrong_value;
+  }
+}
+
+Case libraryCase(const std::string& name) {
+  const ParseResult p =
+      parseCaseFile(RAYSPEC_SOURCE_DIR "/cases/" + name + ".yaml", RAYSPEC_SOURCE_DIR "/cases");
+  EXPECT_TRUE(p.value.has_value()) << name;
+  return p.value.value_or(Case{});
+}
+
 // Fuzz seed 100492 on NVIDIA, reduced (cases/precision/tie-after-far-any-hit):
 // instance 1's far triangle met first (any-hit +1), then the tie of both
 // instances' near triangles, instance 1's kept (any-hit +16): value 17 with
@@ -213,35 +258,8 @@ TEST(LegalReplays, IdentityFieldsEveryAnswerSharesDoNotPickTheAnswer) {
 // the smaller key). Every (instance, value) the specification allows is a
 // replay and passes; instance 1 without its own any-hit's 16 is none and fails.
 TEST(LegalReplays, ATieAfterAFarAnyHitMayKeepEitherInstance) {
-  const std::string file = RAYSPEC_SOURCE_DIR "/cases/precision/tie-after-far-any-hit.yaml";
-  const ParseResult p = parseCaseFile(file, RAYSPEC_SOURCE_DIR "/cases");
-  ASSERT_TRUE(p.value.has_value());
-  const Case& c = *p.value;
-  const Plan plan = derivePlan(c);
-  const Results model = runOnModel(c, plan, ModelOptions{});
-  ASSERT_EQ(model.statusText(), "ok");
-  ASSERT_EQ(model.ambiguous.size(), 1u);
-  const uint32_t instance = findRecordField("instance_id")->offset;
-  const uint32_t value = findRecordField("value")->offset;
-  std::set<std::pair<uint32_t, uint32_t>> answers;
-  for (const LegalReplay& r : model.ambiguous[0].replays) {
-    answers.insert({r.record[instance], r.record[value]});
-    Results d = perfectDevice(c, model);
-    std::copy(r.record.begin(), r.record.end(), recordOf(d, 0));
-    EXPECT_EQ(compareResults(c, plan, d, model).status, Status::Pass);
-  }
-  const std::set<std::pair<uint32_t, uint32_t>> legal = {{0, 0},  {0, 1},  {0, 16},
-                                                         {0, 17}, {1, 16}, {1, 17}};
-  EXPECT_EQ(answers, legal);
-  for (const uint32_t wrong_value : {0u, 1u, 33u}) {
-    Results d = perfectDevice(c, model);
-    for (const LegalReplay& r : model.ambiguous[0].replays)
-      if (r.record[instance] == 1) std::copy(r.record.begin(), r.record.end(), recordOf(d, 0));
-    recordOf(d, 0)[value] = wrong_value;
-    EXPECT_TRUE(failsSaying(compareResults(c, plan, d, model),
-                            "is what none of the legal answers of a numerically ambiguous ray"))
-        << wrong_value;
-  }
+  expectLegalPairs(libraryCase("precision/tie-after-far-any-hit"), "instance_id", "value",
+                   {{0, 0}, {0, 1}, {0, 16}, {0, 17}, {1, 16}, {1, 17}}, {{1, 0}, {1, 1}, {1, 33}});
 }
 
 // Fuzz seed 20094 on lavapipe 25.0.7, reduced
@@ -252,33 +270,8 @@ TEST(LegalReplays, ATieAfterAFarAnyHitMayKeepEitherInstance) {
 // (geometry, value) the specification allows is a replay and passes; the far
 // triangle without its any-hit, or the corner with it run twice, fails.
 TEST(LegalReplays, AVertexAfterAFarAnyHitKeepsItsEffect) {
-  const std::string file = RAYSPEC_SOURCE_DIR "/cases/precision/vertex-after-far-any-hit.yaml";
-  const ParseResult p = parseCaseFile(file, RAYSPEC_SOURCE_DIR "/cases");
-  ASSERT_TRUE(p.value.has_value());
-  const Case& c = *p.value;
-  const Plan plan = derivePlan(c);
-  const Results model = runOnModel(c, plan, ModelOptions{});
-  ASSERT_EQ(model.statusText(), "ok");
-  ASSERT_EQ(model.ambiguous.size(), 1u);
-  const uint32_t geometry = findRecordField("geometry_index")->offset;
-  const uint32_t value = findRecordField("value")->offset;
-  std::set<std::pair<uint32_t, uint32_t>> answers;
-  for (const LegalReplay& r : model.ambiguous[0].replays) {
-    answers.insert({r.record[geometry], r.record[value]});
-    Results d = perfectDevice(c, model);
-    std::copy(r.record.begin(), r.record.end(), recordOf(d, 0));
-    EXPECT_EQ(compareResults(c, plan, d, model).status, Status::Pass);
-  }
-  EXPECT_EQ(answers, (std::set<std::pair<uint32_t, uint32_t>>{{0, 0}, {0, 1}, {1, 1}}));
-  for (const auto& [g, wrong_value] : {std::pair<uint32_t, uint32_t>{1, 0}, {0, 2}}) {
-    Results d = perfectDevice(c, model);
-    for (const LegalReplay& r : model.ambiguous[0].replays)
-      if (r.record[geometry] == g) std::copy(r.record.begin(), r.record.end(), recordOf(d, 0));
-    recordOf(d, 0)[value] = wrong_value;
-    EXPECT_TRUE(failsSaying(compareResults(c, plan, d, model),
-                            "is what none of the legal answers of a numerically ambiguous ray"))
-        << g << " " << wrong_value;
-  }
+  expectLegalPairs(libraryCase("precision/vertex-after-far-any-hit"), "geometry_index", "value",
+                   {{0, 0}, {0, 1}, {1, 1}}, {{1, 0}, {0, 2}});
 }
 
 // Two instances of one box at one place, each reporting at its top face (t
@@ -320,33 +313,8 @@ outputs:
 // confirmed and replacing (1 with 6, 0 with 9). Each is a replay and passes;
 // an instance with a value its any-hits cannot leave fails.
 TEST(LegalReplays, AReportAtTheCommittedTRunsItsAnyHitThenMayBeKeptOut) {
-  const Case c = parseInline(kReportTieCase, "model/replay-report-tie");
-  const Plan plan = derivePlan(c);
-  const Results model = runOnModel(c, plan, ModelOptions{});
-  ASSERT_EQ(model.statusText(), "ok");
-  ASSERT_EQ(model.ambiguous.size(), 1u);
-  const uint32_t instance = findRecordField("instance_id")->offset;
-  const uint32_t value = findRecordField("value")->offset;
-  std::set<std::pair<uint32_t, uint32_t>> answers;
-  for (const LegalReplay& r : model.ambiguous[0].replays) {
-    answers.insert({r.record[instance], r.record[value]});
-    Results d = perfectDevice(c, model);
-    std::copy(r.record.begin(), r.record.end(), recordOf(d, 0));
-    const Verdict v = compareResults(c, plan, d, model);
-    EXPECT_EQ(v.status, Status::Pass) << v.headline();
-  }
-  const std::set<std::pair<uint32_t, uint32_t>> legal = {{0, 1}, {1, 2}, {0, 6},
-                                                         {1, 9}, {1, 6}, {0, 9}};
-  EXPECT_EQ(answers, legal);
-  for (const auto& [i, wrong_value] : {std::pair<uint32_t, uint32_t>{0, 2}, {1, 1}, {0, 5}}) {
-    Results d = perfectDevice(c, model);
-    for (const LegalReplay& r : model.ambiguous[0].replays)
-      if (r.record[instance] == i) std::copy(r.record.begin(), r.record.end(), recordOf(d, 0));
-    recordOf(d, 0)[value] = wrong_value;
-    EXPECT_TRUE(failsSaying(compareResults(c, plan, d, model),
-                            "is what none of the legal answers of a numerically ambiguous ray"))
-        << i << " " << wrong_value;
-  }
+  expectLegalPairs(parseInline(kReportTieCase, "model/replay-report-tie"), "instance_id", "value",
+                   {{0, 1}, {1, 2}, {0, 6}, {1, 9}, {1, 6}, {0, 9}}, {{0, 2}, {1, 1}, {0, 5}});
 }
 
 }  // namespace
