@@ -7,6 +7,7 @@
 #include "fault/planted_fault.h"
 #include "model_support.h"
 #include "mutate/fault_matrix.h"
+#include "mutate/legal_devices.h"
 
 namespace rayspec {
 namespace {
@@ -47,6 +48,34 @@ SavedCase savedOf(const char* text) {
   device.backend = "vulkan";
   return {c, plan, device, model};
 }
+
+// Two triangles share the diagonal x = y of a square; ray 0 meets it exactly
+// (two legal answers), ray 1 hits clearly. The instance's mask 3 meets every
+// ray's cull mask (0xFF), so ignoring masks changes nothing.
+const char* kMaskedEdgeCase = R"(rules: [R-WATERTIGHT]
+scene:
+  blas:
+    square:
+      - triangles:
+          vertices: [[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]]
+          indices: [0, 1, 2, 0, 2, 3]
+        flags: [opaque]
+  instances: [{blas: square, mask: 3}]
+rays:
+  list:
+    - {origin: [0.25, 0.25, 5], direction: [0, 0, -1]}
+    - {origin: [0.5, -0.5, 5], direction: [0, 0, -1]}
+  tmin: 0.001
+  tmax: 100
+pipeline:
+  miss:
+    - [count: miss, record: {hit: 0}]
+  hit_groups:
+    - closest_hit: [count: chit, record: [hit, primitive_id]]
+outputs:
+  counters: [miss, chit]
+  per_ray: [hit, primitive_id]
+)";
 
 const FaultRow& row(const FaultMatrix& m, const std::string& fault) {
   for (const FaultRow& r : m.rows())
@@ -94,6 +123,29 @@ TEST(FaultMatrix, FoundByTheFirstCaseThatShowsIt) {
       << text;
   EXPECT_NE(text.find("- instance-mask-ignored ("), std::string::npos) << text;
   EXPECT_EQ(text.find("- drop-miss ("), std::string::npos) << text;
+}
+
+// A device that took the other legal answer of an ambiguous ray is not
+// "changed" by a case mutation that changes nothing the model sees: the
+// mutated case's answers are compared with the model's own device on the
+// case, not with the saved device (which made every mutation look applied).
+TEST(FaultMatrix, ACaseMutationChangesNothingWhereTheModelSeesNoDifference) {
+  SavedCase saved = savedOf(kMaskedEdgeCase);
+  bool other_answer = false;
+  for (LegalVariant& v : legalVariants(saved.c, saved.plan, saved.model, 1))
+    if (v.name == "answer-1" && v.applied) {
+      saved.device = v.device;
+      other_answer = true;
+    }
+  ASSERT_TRUE(other_answer) << "the edge ray has a second legal answer";
+  saved.device.backend = "vulkan";
+  FaultMatrix m;
+  m.add("fuzz/seed-1", saved);
+  const FaultRow& mask = row(m, "instance-mask-ignored");
+  EXPECT_EQ(mask.applied, 0u) << mask.what;
+  EXPECT_NE(mask.what.find("changed nothing"), std::string::npos) << mask.what;
+  // A record fault still changes the saved device's records, and is found.
+  EXPECT_EQ(row(m, "builtin-wrong").found_by, "fuzz/seed-1") << row(m, "builtin-wrong").what;
 }
 
 }  // namespace

@@ -49,12 +49,16 @@ MutantOutcome judgePlantedFault(const Case& c, const Plan& plan, const Results& 
   Results device = base;
   const FaultResult r = plantFault(f.name, c, plan, device, model);
   o.mutation.what = r.what;
-  o.mutation.applied = r.applied && !sameOutput(device, base);
+  // A case mutation answers as the model's perfect device on the mutated
+  // case, so it changed something only where it differs from that device on
+  // the case itself (base may be a real device's other legal answers).
+  const Results unchanged = f.kind == FaultKind::CaseMutation ? perfectDevice(c, model) : base;
+  o.mutation.applied = r.applied && !sameOutput(device, unchanged);
   if (!o.mutation.applied) {
     if (r.applied) o.mutation.what = "changed nothing: " + r.what;
     return o;
   }
-  o.mutation.rays = changedRays(device, base);
+  o.mutation.rays = changedRays(device, unchanged);
   device.backend = "vulkan";
   const Verdict v = compareResults(c, plan, device, model);
   o.status = v.status;
