@@ -3,7 +3,9 @@
 // the reason it may legally survive.
 #include <gtest/gtest.h>
 
+#include "fault/planted_fault.h"
 #include "model/model_engine.h"
+#include "model_support.h"
 #include "mutate/kill_matrix.h"
 #include "mutate/mutate_case.h"
 #include "mutate_suite_case.h"
@@ -92,6 +94,60 @@ TEST(Mutate, NullDeviceFailsTheUndefinedRaysProbe) {
   ASSERT_NE(o, nullptr);
   EXPECT_TRUE(o->mutation.applied) << o->mutation.what;
   EXPECT_TRUE(o->killed) << o->headline;
+}
+
+// Eight stacked non-opaque triangles under one ray, an any-hit that leaves
+// the candidate's primitive in the payload and ignores it: the last one run
+// decides, among more candidates than the model orders, so the case is
+// refused as order-dependent on every device.
+std::string stackedLastWriter() {
+  std::string vertices;
+  for (int k = 0; k < 8; ++k) {
+    const std::string z = std::to_string(-k);
+    vertices += (k ? ", " : "") + ("[-1, -1, " + z + "], [2, -1, " + z + "], [-1, 2, " + z + "]");
+  }
+  return R"(rules: [R-ORDER-UNSPEC]
+scene:
+  blas:
+    layers:
+      - triangles:
+          vertices: [)" +
+         vertices + R"(]
+        flags: []
+  instances: [{blas: layers}]
+rays:
+  list:
+    - {origin: [0, 0, 1], direction: [0, 0, -1]}
+  tmin: 0.001
+  tmax: 100
+pipeline:
+  payloads: [{words: 1}]
+  raygen: [{trace: {payload: {value: 0}}}, {record: {value: payload.value}}]
+  miss:
+    - [count: miss]
+  hit_groups:
+    - any_hit: [{payload: {value: primitive_id}}, ignore]
+      closest_hit: [count: chit]
+outputs:
+  counters: [miss, chit]
+  per_ray: [value]
+)";
+}
+
+// A refused case is not judged, and its legal devices are not judged either:
+// each would repeat the refusal and be counted a false alarm of the judge.
+TEST(Mutate, ARefusedCaseHasNoLegalDevicesToJudge) {
+  const Case c = model_test::parseInline(stackedLastWriter(), "anyhit/last-writer");
+  const Plan plan = derivePlan(c);
+  const Results model = runOnModel(c, plan, {});
+  ASSERT_EQ(model.statusText(), "ok");
+  ASSERT_FALSE(model.order_dependent.empty()) << "the case must be order-dependent";
+  Results device = perfectDevice(c, model);
+  device.backend = "vulkan";
+  const CaseMutation m = mutateCase(c, plan, device, model, 1);
+  EXPECT_FALSE(m.judged);
+  EXPECT_TRUE(m.legal_devices.empty()) << m.legal_devices.size() << " legal devices judged";
+  EXPECT_EQ(m.not_judged.rfind("refused on every device: CaseError", 0), 0u) << m.not_judged;
 }
 
 // The matrix counts per kind and family, and a survivor with no reason is a hole.

@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "compare/compare_results.h"
+#include "fault/planted_fault.h"
 
 #include "mutate/legal_survival.h"
 #include "mutate/planted_mutants.h"
@@ -36,6 +37,14 @@ CaseMutation mutateCase(const Case& c, const Plan& plan, const Results& device,
   CaseMutation out;
   out.name = c.name;
   out.family = c.family;
+  // A case the checks refuse (order-dependent, not portable) is refused on
+  // every device, the model's own included: its legal devices would only
+  // repeat the refusal, each counted a false alarm.
+  const Verdict refused = compareResults(c, plan, perfectDevice(c, model), model);
+  if (refused.status == Status::CaseError) {
+    out.not_judged = "refused on every device: " + refused.headline();
+    return out;
+  }
   const auto start = std::chrono::steady_clock::now();
   out.legal_devices = judgeLegalDevices(c, plan, model, threads);
   const auto legal_done = std::chrono::steady_clock::now();
