@@ -50,8 +50,9 @@ Result<std::vector<VkDeviceSize>> compactedSizes(const VulkanContext& ctx,
       queriedSizes(ctx, from, VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR, cleanup));
   for (size_t i = 0; i < sizes.size(); ++i)
     if (sizes[i] == 0 || sizes[i] > from[i].size)
-      return deviceError("compacted size " + std::to_string(sizes[i]) + " of a structure of " +
-                         std::to_string(from[i].size) + " bytes: VK_ERROR_UNKNOWN");
+      return deviceError("compacted size " + std::to_string(sizes[i]) + " of " + from[i].name +
+                         ", a structure of " + std::to_string(from[i].size) +
+                         " bytes: VK_ERROR_UNKNOWN");
   return sizes;
 }
 
@@ -96,7 +97,7 @@ Result<Serialized> serialize(const VulkanContext& ctx, const std::vector<BuiltSt
   for (size_t i = 0; i < sizes.size(); ++i)
     if (sizes[i] < kDeserializedSizeOffset + 16)  // the header: two UUIDs, three sizes
       return deviceError("the serialization size query gave " + std::to_string(sizes[i]) +
-                         " bytes for structure " + std::to_string(i) +
+                         " bytes for " + from[i].name +
                          ", less than the header every serialized structure holds: "
                          "VK_ERROR_UNKNOWN");
   Serialized s;
@@ -119,7 +120,7 @@ Result<Serialized> serialize(const VulkanContext& ctx, const std::vector<BuiltSt
   RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx, cleanup));
   for (size_t i = 0; i < from.size(); ++i)
     guards.add(s.memory.buffer, s.offsets[i] + base, sizes[i],
-               "structure " + std::to_string(i) + " serialized (" + std::to_string(sizes[i]) +
+               from[i].name + " serialized (" + std::to_string(sizes[i]) +
                    " bytes, its serialization size)");
   guards.recordFill(cmd);
   for (size_t i = 0; i < from.size(); ++i) {
@@ -157,11 +158,11 @@ Result<std::vector<BuiltStructure>> serializeAndBack(const VulkanContext& ctx,
   RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx, cleanup));
   for (size_t i = 0; i < from.size(); ++i) {
     const VkDeviceSize size = s.deserialized_sizes[i];
-    RAYSPEC_TRY(const VkAccelerationStructureKHR copy_handle,
-                createStructure(ctx, type, size, cleanup, guards,
-                                "structure " + std::to_string(i) +
-                                    " deserialized, the deserialized size its data names"));
-    to.push_back({copy_handle, size});
+    RAYSPEC_TRY(
+        const VkAccelerationStructureKHR copy_handle,
+        createStructure(ctx, type, size, cleanup, guards,
+                        from[i].name + " deserialized, the deserialized size its data names"));
+    to.push_back({copy_handle, size, from[i].name});
   }
   guards.recordFill(cmd);
   for (size_t i = 0; i < from.size(); ++i) {
@@ -198,10 +199,10 @@ Result<std::vector<BuiltStructure>> copyStructures(const VulkanContext& ctx,
         const VkAccelerationStructureKHR copy_handle,
         createStructure(
             ctx, type, sizes[i], cleanup, guards,
-            "the " + std::string(mode == AsCopy::Compact ? "compacted" : "cloned") +
-                " copy of structure " + std::to_string(i) +
+            "the " + std::string(mode == AsCopy::Compact ? "compacted" : "cloned") + " copy of " +
+                from[i].name +
                 (mode == AsCopy::Compact ? ", its compacted size" : ", the source's size")));
-    to.push_back({copy_handle, sizes[i]});
+    to.push_back({copy_handle, sizes[i], from[i].name});
   }
   guards.recordFill(cmd);
   for (size_t i = 0; i < from.size(); ++i) {

@@ -9,6 +9,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <string>
 #include <vector>
 
 #include "case/case.h"
@@ -18,18 +19,21 @@
 
 namespace rayspec {
 
-// One structure to copy: the handle and the size it was created with.
+// One structure to copy: the handle, the size it was created with, and what
+// the guards call it ("BLAS 2", "TLAS 0").
 struct BuiltStructure {
   VkAccelerationStructureKHR handle = VK_NULL_HANDLE;
   VkDeviceSize size = 0;
+  std::string name;
 };
 
 // The copies of `from` (all of `type`, built and complete), in order, made by
 // vkCmdCopyAccelerationStructureKHR in `mode` (Clone or Compact), or through
 // memory (Serialize), readable by
-// builds and ray tracing shaders once this returns. Each copy, and each
-// structure's serialized bytes, guarded after the size the device reported
-// for it (R-AS-MEMORY; the guards are filled here, checked by the caller).
+// builds and ray tracing shaders once this returns; each copy keeps its
+// source's name. Each copy, and each structure's serialized bytes, guarded
+// after the size the device reported for it (R-AS-MEMORY; the guards are
+// filled here, checked by the caller).
 // Or the Device error.
 Result<std::vector<BuiltStructure>> copyStructures(const VulkanContext& ctx,
                                                    const std::vector<BuiltStructure>& from,

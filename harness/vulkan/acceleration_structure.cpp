@@ -213,6 +213,7 @@ Result<Builds> createBlases(const VulkanContext& ctx, std::vector<BlasBuild>& bu
     out.update_scratch.push_back(sizes.updateScratchSize);
     out.build_scratch.push_back(sizes.buildScratchSize);
     out.sizes.push_back(b.size);
+    out.room.push_back(b.size);
     out.blas.push_back(i);
   }
   return out;
@@ -290,12 +291,13 @@ Result<Builds> createTlases(
                 createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
                                 sizes.accelerationStructureSize, cleanup, guards,
                                 name + ", its accelerationStructureSize"));
-    structures.push_back({info.dstAccelerationStructure, sizes.accelerationStructureSize});
+    structures.push_back({info.dstAccelerationStructure, sizes.accelerationStructureSize, name});
     out.add(info, &ranges[level], scratch.add(sizes.buildScratchSize, scratchName(name, sizes)));
     out.names.push_back(name);
     out.update_scratch.push_back(sizes.updateScratchSize);
     out.build_scratch.push_back(sizes.buildScratchSize);
     out.sizes.push_back(sizes.accelerationStructureSize);
+    out.room.push_back(sizes.accelerationStructureSize);
   }
   return out;
 }
@@ -339,7 +341,7 @@ class SceneBuilder {
     scratch_.shared = scene.build.one_by_one;
   }
 
-  Result<std::vector<VkAccelerationStructureKHR>> run() {
+  Result<std::vector<BuiltStructure>> run() {
     RAYSPEC_TRY_VOID(describeBlases());
     RAYSPEC_TRY_VOID(createTopLevels());
     RAYSPEC_TRY(const VkDeviceAddress scratch, createScratch(ctx_, scratch_, guards_, cleanup_));
@@ -357,10 +359,8 @@ class SceneBuilder {
                                   VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
                               [this] { return copyTlases(); }));
     RAYSPEC_TRY_VOID(submitAndWait(ctx_, cmd));
-    RAYSPEC_TRY(overruns_, guards_.check(ctx_, cleanup_));
-    std::vector<VkAccelerationStructureKHR> out;
-    for (const BuiltStructure& t : tlas_structures_) out.push_back(t.handle);
-    return out;
+    RAYSPEC_TRY_VOID(checkGuards(since_copy_));
+    return tlas_structures_;
   }
 
   // R-AS-MEMORY: each guard the builds, updates and copies changed.
@@ -385,6 +385,24 @@ class SceneBuilder {
     for (Builds& b : tlas_updates_) b.placeScratch(base);
   }
 
+  // R-AS-MEMORY: the guards filled so far, each changed one not reported
+  // before a line of overruns_ (`when`: which commands it follows).
+  Result<void> checkGuards(const std::string& when) {
+    RAYSPEC_TRY(const std::vector<std::string> changed, guards_.check(ctx_, cleanup_, when));
+    overruns_.insert(overruns_.end(), changed.begin(), changed.end());
+    return {};
+  }
+
+  // Once the copy of `levels` ended, the guards are checked, so that a guard
+  // the commands after it change is not laid on the copy (or anything
+  // before it); each check names the commands since the one before.
+  Result<void> checkGuardsAtCopy(const std::string& levels) {
+    RAYSPEC_TRY_VOID(checkGuards((since_copy_.empty() ? "" : since_copy_ + ", ") +
+                                 "by the end of the copy of the " + levels));
+    since_copy_ = "after the copy of the " + levels;
+    return {};
+  }
+
   // One level: its builds, then each update in turn, the copy (submitted and
   // waited on, then the updates after it retargeted to the copies) where
   // scene.build.order puts it.
@@ -399,8 +417,11 @@ class SceneBuilder {
         RAYSPEC_TRY_VOID(submitAndWait(ctx_, cmd));
         RAYSPEC_TRY_VOID(copy());
         RAYSPEC_TRY(cmd, beginCommands(ctx_, cleanup_));
+        guards_.recordFill(cmd);  // those of structures the copy made room for
       }
-      if (k < updates.size()) updates[k].record(ctx_, cmd, next, scene_.build.one_by_one);
+      if (k == updates.size()) break;
+      RAYSPEC_TRY_VOID(updates[k].checkRoom());
+      updates[k].record(ctx_, cmd, next, scene_.build.one_by_one);
     }
     return {};
   }
@@ -493,43 +514,90 @@ class SceneBuilder {
     std::memcpy(buffer.mapped, bytes.data(), bytes.size());
   }
 
-  // The updates from the copy on act on the copies (R-AS-COPY, R-AS-UPDATE).
+  // The updates from the copy on act on the copies (R-AS-COPY, R-AS-UPDATE):
+  // an update reads and writes its structure in place, a rebuild
+  // (tlas_update rebuild, MODE_BUILD) only writes it. room: each one's room
+  // for a build (Builds::room).
   static void retarget(std::vector<Builds>& updates, size_t from,
-                       const std::vector<VkAccelerationStructureKHR>& handles) {
+                       const std::vector<BuiltStructure>& structures,
+                       const std::vector<VkDeviceSize>& room) {
     for (size_t k = from; k < updates.size(); ++k)
-      for (size_t i = 0; i < updates[k].infos.size() && i < handles.size(); ++i)
-        updates[k].infos[i].srcAccelerationStructure =
-            updates[k].infos[i].dstAccelerationStructure = handles[i];
+      for (size_t i = 0; i < updates[k].infos.size() && i < structures.size(); ++i) {
+        VkAccelerationStructureBuildGeometryInfoKHR& info = updates[k].infos[i];
+        info.dstAccelerationStructure = structures[i].handle;
+        info.srcAccelerationStructure = info.mode == VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR
+                                            ? structures[i].handle
+                                            : VK_NULL_HANDLE;
+        updates[k].room[i] = room[i];
+      }
+  }
+
+  // Each copy's room for a build: its size, but none for a compacted copy
+  // (a compacted size is enough only to update it, however large).
+  std::vector<VkDeviceSize> roomOf(const std::vector<BuiltStructure>& copies) const {
+    std::vector<VkDeviceSize> room;
+    for (const BuiltStructure& s : copies)
+      room.push_back(scene_.build.copy == AsCopy::Compact ? 0 : s.size);
+    return room;
   }
 
   // R-AS-COPY: the BLASes replaced by their copies (the instance buffers,
   // written after, reference the copies).
   Result<void> copyBlases() {
     std::vector<BuiltStructure> from;
-    for (size_t i : blases_.blas) from.push_back({builds_[i].handle, builds_[i].size});
+    for (size_t k = 0; k < blases_.blas.size(); ++k) {
+      const BlasBuild& b = builds_[blases_.blas[k]];
+      from.push_back({b.handle, b.size, blases_.names[k]});
+    }
     RAYSPEC_TRY(const std::vector<BuiltStructure> to,
                 copyStructures(ctx_, from, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR,
                                scene_.build.copy, guards_, cleanup_));
-    std::vector<VkAccelerationStructureKHR> handles;
+    RAYSPEC_TRY_VOID(checkGuardsAtCopy("bottom levels"));
     for (size_t k = 0; k < to.size(); ++k) {
       BlasBuild& b = builds_[blases_.blas[k]];
       b.handle = to[k].handle;
       b.size = to[k].size;
       b.address = structureAddress(ctx_, b.handle);
-      handles.push_back(b.handle);
     }
-    retarget(blas_updates_, scene_.updatesBeforeCopy(), handles);
+    retarget(blas_updates_, scene_.updatesBeforeCopy(), to, roomOf(to));
     return {};
   }
 
-  // The TLASes replaced by their copies.
+  // The TLASes replaced by their copies (or, to be rebuilt, by structures
+  // with room for a build).
   Result<void> copyTlases() {
     RAYSPEC_TRY(tlas_structures_,
                 copyStructures(ctx_, tlas_structures_, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
                                scene_.build.copy, guards_, cleanup_));
-    std::vector<VkAccelerationStructureKHR> handles;
-    for (const BuiltStructure& t : tlas_structures_) handles.push_back(t.handle);
-    retarget(tlas_updates_, scene_.updatesBeforeCopy(), handles);
+    RAYSPEC_TRY_VOID(checkGuardsAtCopy("top levels"));
+    std::vector<VkDeviceSize> room = roomOf(tlas_structures_);
+    if (scene_.build.tlas_rebuilt && scene_.updatesBeforeCopy() < updates())
+      RAYSPEC_TRY_VOID(makeRoomForRebuilds(room));
+    retarget(tlas_updates_, scene_.updatesBeforeCopy(), tlas_structures_, room);
+    return {};
+  }
+
+  // R-AS-UPDATE by rebuild after the copy (tlas_update rebuild): a build
+  // (MODE_BUILD) needs a destination of the build's accelerationStructureSize
+  // (VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-10126, formerly 03675:
+  // a compacted size is enough only to update a compacted structure). A top
+  // level whose copy has no room for it (a compacted copy, whatever its
+  // size: roomOf) is rebuilt into a new structure of that size, which the
+  // traces then use; a clone has the room, and is rebuilt itself.
+  Result<void> makeRoomForRebuilds(std::vector<VkDeviceSize>& room) {
+    for (size_t i = 0; i < tlas_structures_.size(); ++i) {
+      const VkDeviceSize size = tlases_.sizes[i];
+      if (room[i] >= size) continue;
+      const std::string name = tlases_.names[i];
+      RAYSPEC_TRY(const VkAccelerationStructureKHR into,
+                  createStructure(ctx_, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, size,
+                                  cleanup_, guards_,
+                                  "the structure " + name +
+                                      " is rebuilt into after its copy, its "
+                                      "accelerationStructureSize"));
+      tlas_structures_[i] = {into, size, name};
+      room[i] = size;
+    }
     return {};
   }
 
@@ -541,6 +609,7 @@ class SceneBuilder {
   ScratchPlan scratch_;
   MemoryGuards guards_;
   std::vector<std::string> overruns_;
+  std::string since_copy_;  // "after the copy of the top levels": what the last guard check follows
   std::vector<BlasBuild> builds_;
   std::vector<std::vector<BlasBuild>> updates_;  // per update: each BLAS's new geometry
   Builds blases_, tlases_;
@@ -555,11 +624,12 @@ class SceneBuilder {
 
 }  // namespace
 
-Result<std::vector<VkAccelerationStructureKHR>> buildScene(
-    const VulkanContext& ctx, const Scene& scene, VkBuildAccelerationStructureFlagsKHR extra_flags,
-    Cleanup& cleanup, std::vector<std::string>& overruns) {
+Result<std::vector<BuiltStructure>> buildScene(const VulkanContext& ctx, const Scene& scene,
+                                               VkBuildAccelerationStructureFlagsKHR extra_flags,
+                                               Cleanup& cleanup,
+                                               std::vector<std::string>& overruns) {
   SceneBuilder builder(ctx, scene, extra_flags, cleanup);
-  RAYSPEC_TRY(std::vector<VkAccelerationStructureKHR> tlases, builder.run());
+  RAYSPEC_TRY(std::vector<BuiltStructure> tlases, builder.run());
   overruns = builder.overruns();
   return tlases;
 }

@@ -5,6 +5,7 @@
 #include <vulkan/vulkan.h>
 
 #include "case/case.h"
+#include "vulkan/acceleration_copy.h"
 #include "vulkan/cleanup.h"
 #include "vulkan/context.h"
 #include "vulkan/memory_guards.h"
@@ -22,14 +23,19 @@ VkFormat vkVertexFormat(VertexFormat f);
 // over all instances in order, those of the other levels with reference 0.
 // One submission; with scene.build.copy (R-AS-COPY) the BLASes are copied
 // before the TLASes are built over the copies, and the TLASes are copied in
-// turn: the traces see only copies. extra_flags join scene.build's flags on
+// turn: the traces see only copies (but a top level rebuilt after a copy
+// too small for a build, which is rebuilt into a structure of its build
+// size: tlas_update rebuild after a compact copy). extra_flags join scene.build's flags on
 // every build (ALLOW_DATA_ACCESS where a stage fetches vertex positions).
-// Buffers and structures live until cleanup runs. Every structure, scratch
-// region and serialized copy is guarded (R-AS-MEMORY): each guard the
-// commands changed is a line of `overruns`. Or the Device error.
-Result<std::vector<VkAccelerationStructureKHR>> buildScene(
-    const VulkanContext& ctx, const Scene& scene, VkBuildAccelerationStructureFlagsKHR extra_flags,
-    Cleanup& cleanup, std::vector<std::string>& overruns);
+// Each top level comes with the size it was created with. Buffers and
+// structures live until cleanup runs. Every structure, scratch region and
+// serialized copy is guarded (R-AS-MEMORY): each guard the commands changed
+// is a line of `overruns`, checked once each copy ended and once at the end.
+// Or the Device error.
+Result<std::vector<BuiltStructure>> buildScene(const VulkanContext& ctx, const Scene& scene,
+                                               VkBuildAccelerationStructureFlagsKHR extra_flags,
+                                               Cleanup& cleanup,
+                                               std::vector<std::string>& overruns);
 
 // The structure's storage buffer and the structure (size bytes), destroyed
 // by cleanup; a guard after its size (R-AS-MEMORY), `what` naming the

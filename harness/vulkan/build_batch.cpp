@@ -115,6 +115,20 @@ Result<void> Builds::placeRangesForIndirect(const VulkanContext& ctx, Cleanup& c
   return {};
 }
 
+Result<void> Builds::checkRoom() const {
+  for (size_t i = 0; i < infos.size(); ++i) {
+    if (infos[i].mode != VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR || room[i] >= sizes[i])
+      continue;
+    return errorOf(ErrorKind::Harness,
+                   "a build of " + names[i] + " into a structure with room for " +
+                       (room[i] ? std::to_string(room[i]) + " bytes"
+                                : std::string("an update only (a compacted copy)")) +
+                       ", less than its accelerationStructureSize " + std::to_string(sizes[i]) +
+                       " (VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-10126): a rayspec bug");
+  }
+  return {};
+}
+
 Builds updatesOf(
     const Builds& built,
     const std::vector<const std::vector<VkAccelerationStructureGeometryKHR>*>& geometries,
@@ -133,6 +147,8 @@ Builds updatesOf(
     const VkDeviceSize size = rebuild ? built.build_scratch[i] : built.update_scratch[i];
     out.add(info, ranges[i], scratch.add(size, what + std::to_string(size) + " bytes)"));
     out.names.push_back(built.names[i]);
+    out.sizes.push_back(built.sizes[i]);
+    out.room.push_back(built.room[i]);
   }
   return out;
 }

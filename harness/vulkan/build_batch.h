@@ -46,8 +46,11 @@ struct Builds {
   std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
   std::vector<VkDeviceSize> scratch_offsets, update_scratch, build_scratch;
   std::vector<VkDeviceSize> sizes;  // each structure's accelerationStructureSize
-  std::vector<size_t> blas;         // BLAS builds: the scene's BLAS index of each
-  std::vector<std::string> names;   // "BLAS 2", "TLAS 0": what the guards call each
+  // Each destination's room for a build: the size it was created with; 0 for
+  // a compacted copy, which has room to be updated only.
+  std::vector<VkDeviceSize> room;
+  std::vector<size_t> blas;        // BLAS builds: the scene's BLAS index of each
+  std::vector<std::string> names;  // "BLAS 2", "TLAS 0": what the guards call each
   // scene.build.command indirect: where the device reads each build's ranges
   // (vkCmdBuildAccelerationStructuresIndirectKHR), their stride, and each
   // build's most primitives per geometry (its ranges' counts).
@@ -65,6 +68,11 @@ struct Builds {
   // structures' writes made visible to `next`.
   void record(const VulkanContext& ctx, VkCommandBuffer cmd, VkPipelineStageFlags next,
               bool one_by_one) const;
+  // VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-10126: each build
+  // (MODE_BUILD) writes a destination with room for its
+  // accelerationStructureSize. Or the Harness error naming the first that
+  // does not (a rayspec bug: the validation layer of 1.3.239 misses it).
+  Result<void> checkRoom() const;
   // scene.build.command indirect: every build's ranges copied into one
   // buffer the device reads them from.
   Result<void> placeRangesForIndirect(const VulkanContext& ctx, Cleanup& cleanup);

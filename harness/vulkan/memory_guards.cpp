@@ -37,17 +37,38 @@ void MemoryGuards::recordOverrun(VkCommandBuffer cmd) const {
   vkCmdFillBuffer(cmd, guards_.front().buffer, guards_.front().offset, 4, 0);
 }
 
-Result<std::vector<std::string>> MemoryGuards::check(const VulkanContext& ctx,
-                                                     Cleanup& cleanup) const {
+namespace {
+
+// How many of a guard's bytes differ from the pattern, and the first that does.
+struct GuardChange {
+  size_t differ = 0, first = kGuardBytes;
+};
+
+GuardChange compareGuard(const uint8_t* bytes) {
+  uint8_t pattern[4];
+  std::memcpy(pattern, &kGuardPattern, 4);
+  GuardChange c;
+  for (size_t b = 0; b < kGuardBytes; ++b) {
+    if (bytes[b] == pattern[b % 4]) continue;
+    ++c.differ;
+    if (c.first == kGuardBytes) c.first = b;
+  }
+  return c;
+}
+
+}  // namespace
+
+Result<std::vector<std::string>> MemoryGuards::check(const VulkanContext& ctx, Cleanup& cleanup,
+                                                     const std::string& when) {
   std::vector<std::string> changed;
-  if (guards_.empty()) return changed;
+  if (filled_ == 0) return changed;
   RAYSPEC_TRY(const Buffer back,
-              createBuffer(ctx, guards_.size() * kGuardBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+              createBuffer(ctx, filled_ * kGuardBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                            MemoryUse::Host, cleanup));
   RAYSPEC_TRY(const VkCommandBuffer cmd, beginCommands(ctx, cleanup));
   recordMemoryBarrier(cmd, {VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_WRITE_BIT},
                       {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT});
-  for (size_t i = 0; i < guards_.size(); ++i) {
+  for (size_t i = 0; i < filled_; ++i) {
     const VkBufferCopy region{guards_[i].offset, i * kGuardBytes, kGuardBytes};
     vkCmdCopyBuffer(cmd, guards_[i].buffer, back.buffer, 1, &region);
   }
@@ -55,20 +76,14 @@ Result<std::vector<std::string>> MemoryGuards::check(const VulkanContext& ctx,
                       {VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT});
   RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd));
   const auto* bytes = static_cast<const uint8_t*>(back.mapped);
-  uint8_t pattern[4];
-  std::memcpy(pattern, &kGuardPattern, 4);
-  for (size_t i = 0; i < guards_.size(); ++i) {
-    size_t differ = 0, first = kGuardBytes;
-    for (size_t b = 0; b < kGuardBytes; ++b) {
-      if (bytes[i * kGuardBytes + b] == pattern[b % 4]) continue;
-      ++differ;
-      if (first == kGuardBytes) first = b;
-    }
-    if (differ)
-      changed.push_back(guards_[i].what + ": " + std::to_string(differ) + " of the " +
-                        std::to_string(kGuardBytes) +
-                        " guard bytes after it changed (the first at guard byte " +
-                        std::to_string(first) + "): written past the size the device reported");
+  for (size_t i = 0; i < filled_; ++i) {
+    const GuardChange c = compareGuard(bytes + i * kGuardBytes);
+    if (!c.differ || guards_[i].reported) continue;
+    guards_[i].reported = true;
+    changed.push_back(guards_[i].what + ": " + std::to_string(c.differ) + " of the " +
+                      std::to_string(kGuardBytes) + " guard bytes after it changed" +
+                      (when.empty() ? "" : " " + when) + " (the first at guard byte " +
+                      std::to_string(c.first) + "): written past the size the device reported");
   }
   return changed;
 }

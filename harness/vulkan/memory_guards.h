@@ -40,15 +40,19 @@ class MemoryGuards {
   // Test only (fault build-writes-past-size): 4 bytes of the first guard
   // overwritten, as a build that ran past its size would.
   void recordOverrun(VkCommandBuffer cmd) const;
-  // After every command that could write them ended: each guard copied back
-  // and compared. One line per changed guard; none when all held.
-  Result<std::vector<std::string>> check(const VulkanContext& ctx, Cleanup& cleanup) const;
+  // After every command that could write them ended: each guard filled so
+  // far copied back and compared. One line per changed guard that no earlier
+  // check reported, `when` (if any) saying which commands it follows ("after
+  // the copy of the top levels"); none when all held.
+  Result<std::vector<std::string>> check(const VulkanContext& ctx, Cleanup& cleanup,
+                                         const std::string& when = "");
 
  private:
   struct Guard {
     VkBuffer buffer;
     VkDeviceSize offset;
     std::string what;
+    bool reported = false;
   };
   std::vector<Guard> guards_;
   size_t filled_ = 0;

@@ -117,9 +117,11 @@ Result<void> runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, 
   // before the trace, across submissions on the one queue).
   StepTimer build_time(r.cost, CostStep::AccelerationBuild);
   std::vector<std::string> overruns;
-  RAYSPEC_TRY(const std::vector<VkAccelerationStructureKHR> tlases,
+  RAYSPEC_TRY(const std::vector<BuiltStructure> built,
               buildScene(ctx, c.scene, plan.position_fetch ? kBuildAllowDataAccess : 0u, cleanup,
                          overruns));
+  std::vector<VkAccelerationStructureKHR> tlases;
+  for (const BuiltStructure& t : built) tlases.push_back(t.handle);
   for (const std::string& m : overruns) r.device_findings.push_back({"R-AS-MEMORY", m});
   build_time.stop();
 
