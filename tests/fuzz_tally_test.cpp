@@ -96,5 +96,14 @@ TEST(FuzzTriage, TheLavapipeKnownFileLoads) {
   EXPECT_EQ(known->size(), 4u);  // nan-box, nan-vertex, first-vertex, hit-builtin-after-trace
 }
 
+TEST(FuzzTriage, TheMesa26KnownFileLoads) {
+  const Result<std::vector<KnownClass>> known =
+      loadKnownClasses(RAYSPEC_SOURCE_DIR "/references/baselines/mesa26-fuzz-known.txt");
+  ASSERT_TRUE(known) << known.error().format();
+  ASSERT_EQ(known->size(), 4u);  // nan-vertex, nan-box, inactive-instance, hit-builtin-after-trace
+  for (const KnownClass& k : *known)
+    EXPECT_NE(k.reason.find("references/driver-reports/"), std::string::npos) << k.feature;
+}
+
 }  // namespace
 }  // namespace rayspec

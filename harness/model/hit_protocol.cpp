@@ -19,9 +19,34 @@ uint32_t geometryFlags(const ModelScene& scene, const ModelCandidate& c) {
   return scene.blases[scene.instances[c.instance].blas].geometries[c.geometry].flags;
 }
 
+bool isSphereRoot(const CExpr& e) {
+  return e.kind == Expr::Kind::Op && (e.op == Op::SphereNear || e.op == Op::SphereFar);
+}
+
+// The sphere root a report's t is: sphere_near or sphere_far itself, or the
+// max or min of one and an exact operand (a literal or ray_tmin), which moves
+// by no more than the root does (the generator's {max: [sphere_near,
+// ray_tmin]}); nullptr for any other t.
+const CExpr* sphereRootOf(const CExpr& t) {
+  if (isSphereRoot(t)) return &t;
+  if (t.kind != Expr::Kind::Op || (t.op != Op::Max && t.op != Op::Min) || t.args.size() != 2)
+    return nullptr;
+  const auto exact = [](const CExpr& e) {
+    return e.kind == Expr::Kind::Literal || (e.kind == Expr::Kind::Builtin && e.builtin == kBiTmin);
+  };
+  for (size_t k = 0; k < 2; ++k)
+    if (isSphereRoot(t.args[k]) && exact(t.args[1 - k])) return &t.args[k];
+  return nullptr;
+}
+
+// A report at a bare root (whose t may round across an interval end on a
+// device; a max or min clamps it), or at one within a max or min (whose t a
+// device's rounding of the root moves as far, and no farther).
 bool reportsSphereRoot(const CStmt& s, const StageEnv& env) {
-  return s.t.kind == Expr::Kind::Op && (s.t.op == Op::SphereNear || s.t.op == Op::SphereFar) &&
-         env.hit && env.ray;
+  return isSphereRoot(s.t) && env.hit && env.ray;
+}
+bool reportsBoundedRoot(const CStmt& s, const StageEnv& env) {
+  return sphereRootOf(s.t) && env.hit && env.ray;
 }
 
 }  // namespace
@@ -65,7 +90,7 @@ double HitProtocol::sphereRootError(const CStmt& s, const HitView& h, const Stag
   const SphereError se =
       sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
                   objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
-  return s.t.op == Op::SphereNear ? se.near_err : se.far_err;
+  return sphereRootOf(s.t)->op == Op::SphereNear ? se.near_err : se.far_err;
 }
 
 bool HitProtocol::reportInside(const CStmt& s, StageEnv& env, Traversal& tr, float t) {
@@ -115,7 +140,7 @@ void HitProtocol::commitReport(const CStmt& s, StageEnv& env, Traversal& tr, con
              hv.b2};
   tr.best.words = hv.words;
   // R-PREC: how far a device's root may lie from this one.
-  if (tr.exact && reportsSphereRoot(s, env)) tr.best.t_err = sphereRootError(s, hv, env);
+  if (tr.exact && reportsBoundedRoot(s, env)) tr.best.t_err = sphereRootError(s, hv, env);
   if (!tr.inlined.commit_keeps_interval) tr.tmax_cur = t;
   env.tmax_view = t;
 }
