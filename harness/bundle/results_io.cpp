@@ -182,6 +182,8 @@ void writeRayNotes(const Results& r, json& j) {
                               {"shared_triangles", candidatesJson(a.shared_triangles)},
                               {"leak_answers", candidatesJson(a.leak_answers)},
                               {"replays", replaysJson(a.replays)}});
+  for (size_t k = 0; k < r.ambiguous.size(); ++k)  // written only where not 1
+    if (r.ambiguous[k].traces != 1) j["ambiguous"][k]["traces"] = r.ambiguous[k].traces;
   j["t_bounds"] = json::array();
   for (const TBound& b : r.t_bounds) j["t_bounds"].push_back({{"ray", b.ray}, {"bound", b.bound}});
   j["object_origin_bounds"] = json::array();
@@ -481,6 +483,9 @@ Result<void> readRayNotes(const json& j, FieldReader& field, Results& r) {
     RAYSPEC_TRY(a.shared_triangles, readCandidates(field, ja, "shared_triangles", false));
     RAYSPEC_TRY(a.leak_answers, readCandidates(field, ja, "leak_answers", false));
     RAYSPEC_TRY(a.replays, readReplays(field, ja, r));
+    if (ja.contains("traces")) {  // absent: 1
+      RAYSPEC_TRY(a.traces, field.count<uint32_t>(ja, "ambiguous.traces"));
+    }
     r.ambiguous.push_back(std::move(a));
   }
   return {};

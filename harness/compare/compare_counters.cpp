@@ -40,7 +40,7 @@ void checkAgainstRecords(const Case& c, const std::string& name, const CounterSo
 // both a hit and a miss among their answers (one trace per ray: the rest
 // differ in which hit, not in whether); one that only the programs run decide
 // (trace_shape.h) moves only on rays whose answers run other programs;
-// anything else, once per ambiguous ray.
+// anything else, once per ambiguous trace of a ray.
 namespace {
 
 uint64_t answersSlack(const Case& c, const std::string& name, const Results& model) {
@@ -64,7 +64,10 @@ uint64_t answersSlack(const Case& c, const std::string& name, const Results& mod
   // run other programs, each by at most every count of it.
   if (shape.single_trace && countedByProgramsAlone(c, name))
     return raysRunningOtherPrograms(model) * countStatements(c, name);
-  return model.ambiguous.size();
+  // Once per ambiguous trace: a ray traced twice through a vertex moves it twice.
+  uint64_t traces = 0;
+  for (const RayAmbiguity& a : model.ambiguous) traces += std::max<uint32_t>(a.traces, 1);
+  return traces;
 }
 
 // Whether device count d stands within `slack` of the model's m, as the mode says.

@@ -25,10 +25,6 @@ bool triangleOf(const Case& c, const Candidate& k, Tri* out) {
   return true;
 }
 
-std::pair<Pos, Pos> edge(const Pos& a, const Pos& b) {
-  return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
-}
-
 // The hit candidates' triangles, grouped by (instance, geometry); false when
 // some candidate is not a triangle of the case.
 bool groupTriangles(const Case& c, const RayAmbiguity& a,
@@ -67,23 +63,32 @@ bool crossesSharedEdge(const Case& c, const RayAmbiguity& a) {
     if (k.hit && triangleOf(c, k, &t)) groups[{k.instance, k.geometry}].push_back(t);
   }
   for (const auto& [key, tris] : groups) {
-    std::map<std::pair<Pos, Pos>, int> edges;
+    // Directed edges, corner k to corner k + 1: two triangles of the same
+    // winding meet their shared edge in opposite directions (one triangle
+    // twice, in both windings, too: the model tells such a fold by facing).
+    std::map<std::pair<Pos, Pos>, int> directed;
     for (const Tri& t : tris)
-      for (int e = 0; e < 3; ++e) ++edges[edge(t[e], t[(e + 1) % 3])];
+      for (int e = 0; e < 3; ++e) ++directed[{t[e], t[(e + 1) % 3]}];
+    auto count = [&](const Pos& from, const Pos& to) {
+      const auto it = directed.find({from, to});
+      return it == directed.end() ? 0 : it->second;
+    };
     if (a.reason == AmbiguityReason::Edge) {
-      for (const auto& [e, n] : edges)
-        if (n >= 2) return true;
+      for (const auto& [e, n] : directed)
+        if (count(e.second, e.first) > 0) return true;
       continue;
     }
-    // A vertex every candidate shares, closed when each of its edges is shared.
+    // A vertex every candidate shares, closed when each of its edges is
+    // shared, once in each direction.
     std::map<Pos, int> vertex_use;
     for (const Tri& t : tris)
       for (const Pos& p : t) ++vertex_use[p];
     for (const auto& [p, n] : vertex_use) {
       if (n < 3) continue;  // a closed fan has at least 3 triangles
       bool closed = true;
-      for (const auto& [e, count] : edges)
-        if ((e.first == p || e.second == p) && count != 2) closed = false;
+      for (const auto& [e, m] : directed)
+        if ((e.first == p || e.second == p) && (m != 1 || count(e.second, e.first) != 1))
+          closed = false;
       if (closed) return true;
     }
   }

@@ -9,6 +9,7 @@
 #include <optional>
 #include <type_traits>
 
+#include "model/closed_fan.h"
 #include "model/model_tracer.h"
 #include "model/sphere_error.h"
 #include "model/trace_classifier.h"
@@ -210,7 +211,10 @@ std::optional<WhatIf> TraceClassifier::finish() {
   if (script && (!script->own || m_.st_.ray_ambiguous)) {
     // A legal replay (legal_replays.cpp), or a later ambiguous trace of the
     // model's own run: this trace takes the answer its script chooses; the
-    // ray's ambiguity is its first ambiguous trace's, kept already.
+    // ray's ambiguity is its first ambiguous trace's, kept already; the own
+    // run counts its ambiguous traces there.
+    if (script->own && !m_.st_.ambiguous.empty() && m_.st_.ambiguous.back().ray == amb_.ray)
+      ++m_.st_.ambiguous.back().traces;
     chosen = replay_hows_[script->choose(replay_hows_.size())];
     m_.st_.ray_ambiguous = true;
     return chosen;
@@ -405,7 +409,8 @@ uint64_t ModelTracer::effectOf(const Committed& b, const Payload& payload,
 // What-if runs of the decision for an ambiguous trace: the unsure candidates
 // are grouped by distance (a group crosses one edge or vertex, shared or not).
 // Within a group each candidate alone is a hit (watertight: at least one of a
-// shared edge's triangles is hit); a group of one may also be no hit. Stage
+// shared edge's triangles is hit); a group that does not close around the
+// ray may also be no hit. Stage
 // programs run again, in a sandbox: their counters, record and payload
 // effects are undone.
 std::vector<WhatIfAnswer> ModelTracer::whatIf(const Traversal& actual,
@@ -429,10 +434,13 @@ std::vector<WhatIfAnswer> ModelTracer::whatIf(const Traversal& actual,
       for (size_t b = g0; b < g1; ++b) how.force[unsure[b]] = a == b ? 1 : 0;
       run(out);
     }
-    // No triangle of the group hit: legal for a group of one (a border), a
-    // leak between the triangles of a group of two or more.
+    // No triangle of the group hit: a leak where they close around the ray
+    // (a shared edge, a closed fan: closed_fan.h), else legal (a border, an
+    // open fan, a side culled away).
     for (size_t b = g0; b < g1; ++b) how.force[unsure[b]] = 0;
-    run(g1 - g0 == 1 ? out : *leaks);
+    const std::vector<size_t> group(unsure.begin() + static_cast<long>(g0),
+                                    unsure.begin() + static_cast<long>(g1));
+    run(closesAroundRay(*sh_.scene, cands, group, actual.ray, actual.flags) ? *leaks : out);
     for (size_t b = g0; b < g1; ++b) how.force[unsure[b]] = -1;
     g0 = g1;
   }

@@ -169,6 +169,7 @@ void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
   c.b1 = static_cast<float>(h.b1);
   c.b2 = static_cast<float>(h.b2);
   c.ambiguity = g->tier == ModelTier::Exact ? h.ambiguity : TriAmbiguity::None;
+  c.near_edges = g->tier == ModelTier::Exact ? h.near_edges : 0;
   c.t_err = h.t_err;
   if (g->tier == ModelTier::Exact && g->vertex_err == DVec3{} && tc->object_exact) {
     const ExactEnds ends = exactEnds(o, d, v0, v1, v2, h.t, tc->tmin, tc->tmax);

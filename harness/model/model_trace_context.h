@@ -20,6 +20,7 @@ struct ModelCandidate {
   bool hit = true;  // triangles: the model's decision (false: kept only as ambiguous)
   float b1 = 0, b2 = 0;
   TriAmbiguity ambiguity = TriAmbiguity::None;
+  uint8_t near_edges = 0;  // triangles, exact tier: WatertightHit::near_edges
   bool near_face = false;  // AABBs, exact tier: the ray passes within the error
                            // bound of a face (a device may or may not see it)
   // Triangles, exact tier: every device compares t with the trace's tmin /

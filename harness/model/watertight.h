@@ -32,6 +32,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 
 #include "base/float_steps.h"
 #include "base/vec3.h"
@@ -45,7 +46,10 @@ struct WatertightHit {
                      // watertight.cpp)
   double t = 0, b1 = 0, b2 = 0;                 // barycentrics: weights of v1 and v2
   TriAmbiguity ambiguity = TriAmbiguity::None;  // near an edge / vertex
-  bool valid = true;                            // false: NaN somewhere (never a hit)
+  // Bit i: the edge from vertex (i + 1) % 3 to vertex (i + 2) % 3 within its
+  // bound (set with `ambiguity`): which edge or vertex the ray is near.
+  uint8_t near_edges = 0;
+  bool valid = true;  // false: NaN somewhere (never a hit)
   // How far a device's t may lie from `t` (same frame: each vertex's depth
   // error, and the edge functions' errors weighted by how far each vertex's
   // depth lies from t); 0 when there is no t (zero determinant).

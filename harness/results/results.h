@@ -146,6 +146,9 @@ struct RayAmbiguity {
   // (kMaxLegalReplays) or a bundle saved without them: then only what every
   // answer shares is judged.
   std::vector<LegalReplay> replays;
+  // How many of the ray's traces were ambiguous in the model's own run (a
+  // ray traced twice through one vertex: 2); each may move a counter.
+  uint32_t traces = 1;
 };
 
 // A ray whose hit t a device may compute further from the model's than the
