@@ -20,8 +20,7 @@ uint32_t geometryFlags(const ModelScene& scene, const ModelCandidate& c) {
 }
 
 bool reportsSphereRoot(const CStmt& s, const StageEnv& env) {
-  return s.t.kind == Expr::Kind::Op && (s.t.op == Op::SphereNear || s.t.op == Op::SphereFar) &&
-         env.hit && env.ray;
+  return isSphereRoot(s) && env.hit && env.ray;
 }
 
 }  // namespace
@@ -60,11 +59,10 @@ Flow HitProtocol::runAnyHit(const CProgram& p, StageEnv& a, const HitView& hv,
   return interp_.exec(p, a);
 }
 
-double HitProtocol::sphereRootError(const CStmt& s, const HitView& h, const StageEnv& env) const {
+double HitProtocol::sphereRootError(const CStmt& s, const HitView& h, const TraceRay& ray) const {
   const ModelInstance& mi = sh_.scene->instances[h.instance];
-  const SphereError se =
-      sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
-                  objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
+  const SphereError se = sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
+                                     objectRayError(mi.inverse_f, ray.origin, ray.direction));
   return s.t.op == Op::SphereNear ? se.near_err : se.far_err;
 }
 
@@ -84,7 +82,7 @@ bool HitProtocol::reportInside(const CStmt& s, StageEnv& env, Traversal& tr, flo
       inside = f->value;
     } else if (tr.shader_unsure && reportsSphereRoot(s, env)) {
       const HitView& h = *env.hit;
-      const double et = sphereRootError(s, h, env) + tr.tol(t);
+      const double et = sphereRootError(s, h, *env.ray) + tr.tol(t);
       const bool own = tr.best.valid && tr.best.instance == h.instance &&
                        tr.best.geometry == h.geometry && tr.best.primitive == h.primitive;
       const bool near_end = std::fabs(double(t) - tr.ray.tmin) <= et ||
@@ -115,7 +113,7 @@ void HitProtocol::commitReport(const CStmt& s, StageEnv& env, Traversal& tr, con
              hv.b2};
   tr.best.words = hv.words;
   // R-PREC: how far a device's root may lie from this one.
-  if (tr.exact && reportsSphereRoot(s, env)) tr.best.t_err = sphereRootError(s, hv, env);
+  if (tr.exact && reportsSphereRoot(s, env)) tr.best.t_err = sphereRootError(s, hv, *env.ray);
   if (!tr.inlined.commit_keeps_interval) tr.tmax_cur = t;
   env.tmax_view = t;
 }
@@ -159,19 +157,17 @@ Flow HitProtocol::report(const CStmt& s, StageEnv& env) {
   return interp_.exec(accepted ? s.then_ : s.else_, env);
 }
 
-bool HitProtocol::sphereHitDecision(StageEnv& env, bool model_value, float disc) {
-  Traversal* tr = env.traversal;
-  if (!tr->exact || !tr->cur || env.stage != Stage::Intersection) return model_value;
-  const uint32_t ord = tr->sphere_ord++;
-  if (const ShaderDecision* f = tr->forced(0, ord)) return f->value;
-  if (tr->shader_unsure && env.hit && env.ray) {
-    const HitView& h = *env.hit;
+bool HitProtocol::sphereHitDecision(Traversal& tr, const HitView& h, bool model_value, float disc) {
+  if (!tr.exact || !tr.cur) return model_value;
+  const uint32_t ord = tr.sphere_ord++;
+  if (const ShaderDecision* f = tr.forced(0, ord)) return f->value;
+  if (tr.shader_unsure) {
     const ModelInstance& mi = sh_.scene->instances[h.instance];
     const SphereError se =
         sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
-                    objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
+                    objectRayError(mi.inverse_f, tr.ray.origin, tr.ray.direction));
     if (std::fabs(double(disc)) <= se.disc_err)
-      tr->shader_unsure->push_back({tr->cur_index, 0, ord, model_value});
+      tr.shader_unsure->push_back({tr.cur_index, 0, ord, model_value});
   }
   return model_value;
 }
