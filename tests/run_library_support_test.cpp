@@ -6,6 +6,7 @@
 
 #include <filesystem>
 
+#include "device_info_support.h"
 #include "run/device_description.h"
 #include "run/library_support.h"
 
@@ -13,27 +14,7 @@ namespace rayspec {
 namespace {
 namespace fs = std::filesystem;
 
-constexpr uint32_t kVulkan13 = (1u << 22) | (3u << 12);
-constexpr uint32_t kLayer239 = kVulkan13 | 239;  // Debian 12's validation layer
-
-// A device with every feature and room for every library case's limits.
-DeviceInfo capableDevice() {
-  DeviceInfo d;
-  d.api_version_number = kVulkan13;
-  d.max_ray_recursion_depth = 31;
-  d.max_launch_size = {1u << 30, 1u << 30, 1u << 30};
-  d.max_ray_dispatch_invocation_count = 1u << 30;
-  d.shader_group_handle_size = 32;
-  d.shader_group_handle_alignment = 32;
-  d.shader_group_base_alignment = 64;
-  d.max_shader_group_stride = 4096;
-  d.ray_traversal_primitive_culling = d.pipeline_library = d.ray_query = d.opacity_micromap = true;
-  d.ray_tracing_maintenance1 = d.trace_rays_indirect = d.trace_rays_indirect2 = true;
-  d.position_fetch = d.scalar_block_layout = d.library_group_handles = true;
-  d.acceleration_structure_host_commands = d.acceleration_structure_indirect_build = true;
-  d.acceleration_structure_update_after_bind = true;
-  return d;
-}
+constexpr uint32_t kLayer239 = kTestVulkan13 | 239;  // Debian 12's validation layer
 
 // Four library cases in a folder of their own: one plain, one skipping
 // triangles (rayTraversalPrimitiveCulling), two ray query ones (VK_KHR_ray_query),
@@ -97,7 +78,7 @@ TEST(LibrarySupport, AnOldValidationLayerSkipsThePositionFetchCase) {
   EXPECT_TRUE(on.missing[0].validation_layer);
   EXPECT_EQ(on.missing[0].feature, "1.3.239");
   EXPECT_EQ(on.missing[0].cases, 1);
-  const LibrarySupport newer = librarySupport(cases, capableDevice(), kVulkan13 | 250);
+  const LibrarySupport newer = librarySupport(cases, capableDevice(), kTestVulkan13 | 250);
   EXPECT_EQ(newer.not_supported, 0);
   EXPECT_TRUE(newer.missing.empty());
 }

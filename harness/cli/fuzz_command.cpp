@@ -11,6 +11,7 @@
 #include "fuzz/fuzz_run.h"
 #include "metamorphic/feature_path.h"
 #include "run/fault_seam.h"
+#include "run/run_loop.h"
 
 namespace rayspec {
 namespace {
@@ -37,6 +38,7 @@ Subcommand addFuzzCommand(CLI::App& app) {
       "list them in OUT/fuzz.txt. Exit 0 nothing found, 1 findings, 2 bad input");
   auto opt = std::make_shared<FuzzOptions>();
   auto through = std::make_shared<std::string>();
+  auto without = std::make_shared<std::vector<std::string>>();
   FuzzOptions& o = *opt;
   fuzz->add_option("--seed", o.seed, "The first seed")->check(decimalSeed())->capture_default_str();
   auto* cases = fuzz->add_option("--cases", o.cases, "Cases to generate")->check(wholeCount());
@@ -62,6 +64,11 @@ Subcommand addFuzzCommand(CLI::App& app) {
                    "Known driver bug classes (lines `FEATURE REASON`): a finding whose case holds "
                    "one's feature is counted apart and does not fail the run")
       ->check(CLI::ExistingFile);
+  fuzz->add_option("--without", *without,
+                   "Leave a device feature out of the generated cases, for a device that lacks it "
+                   "(as `rayspec devices` names it: " +
+                       leavableFeatureNames() + "); a seed then makes another case")
+      ->check(leavableFeature());
   auto* generate_only = fuzz->add_flag(
       "--generate-only", o.generate_only,
       "Write the cases of --cases seeds under OUT/cases and stop: for a device elsewhere "
@@ -78,8 +85,10 @@ Subcommand addFuzzCommand(CLI::App& app) {
       ->excludes(generate_only);
   addDeviceOptions(fuzz, o.run);
   addCheckCaseOptions(fuzz, o.run);  // generated cases lie outside the library: checked by default
-  return {fuzz, [opt, through] {
+  return {fuzz, [opt, through, without] {
             if (!through->empty()) opt->run.through = featurePathFromName(*through);
+            for (const std::string& name : *without)
+              if (!leaveOut(opt->allowed, name)) return kExitSetup;  // checked as parsed
             if (!opt->cases && opt->minutes <= 0) opt->cases = 100;
             opt->check = portabilityCheckFor(opt->run);
             return runFuzz(*opt);

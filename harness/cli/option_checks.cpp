@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <set>
 
+#include "fuzz/generator_features.h"
 #include "metamorphic/feature_path.h"
 
 namespace rayspec {
@@ -153,6 +154,16 @@ CLI::Validator featurePath() {
                    : "unknown feature path '" + name + "' (" + featurePathNames() + ")";
       },
       "PATH");
+}
+
+CLI::Validator leavableFeature() {
+  return CLI::Validator(
+      [](const std::string& name) {
+        GeneratorFeatures scratch;
+        const Result<void> known = leaveOut(scratch, name);
+        return known ? std::string() : known.error().format();
+      },
+      "FEATURE");
 }
 
 }  // namespace rayspec

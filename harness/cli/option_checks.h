@@ -44,4 +44,8 @@ CLI::Validator decimalSeed();
 // A --through value: one of metamorphic/feature_path.h's names.
 CLI::Validator featurePath();
 
+// A fuzz --without value: a device feature the generator leaves out
+// (fuzz/generator_features.h).
+CLI::Validator leavableFeature();
+
 }  // namespace rayspec

@@ -129,6 +129,7 @@ std::string queryCommitKeepsInterval(Case& c, ModelOptions& o);
 std::string queryConfirmOnlyFirst(Case& c, ModelOptions& o);
 std::string queryCandidateTypeSwapped(Case& c, ModelOptions& o);
 std::string queryFrontFaceInverted(Case& c, ModelOptions& o);
+std::string queryObjectRayWorld(Case& c, ModelOptions& o);
 std::string wideLaunchTruncated(Case& c, ModelOptions& o);
 std::string launchIdXWrapped(Case& c, ModelOptions& o);
 std::string specializationIgnored(Case& c, ModelOptions& o);

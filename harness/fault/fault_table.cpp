@@ -404,6 +404,10 @@ std::vector<FaultImpl> rayQueryMutations() {
       {"query-front-face-inverted", K::CaseMutation,
        "a ray query's front face getters read a triangle's other face (culling unchanged)", nullptr,
        queryFrontFaceInverted},
+      {"query-object-ray-world", K::CaseMutation,
+       "a ray query candidate's object-space ray getters read the world-space ray (the "
+       "crossing of a box, sphere_*, computed from it)",
+       nullptr, queryObjectRayWorld},
   };
 }
 

@@ -8,6 +8,7 @@
 
 #include "fault/fault_impl.h"
 #include "program/builtins.h"
+#include "program/ops.h"
 #include "program/walk_program.h"
 
 namespace rayspec {
@@ -200,6 +201,21 @@ std::string queryFrontFaceInverted(Case& c, ModelOptions& o) {
   if (what.empty()) return "";
   o.faults.rq_front_face_inverted = true;
   return what;
+}
+
+// What a block reads of its candidate's object-space ray: the getters, and
+// the crossing of its box (sphere_* in an aabb block: program/ops.h).
+std::string queryObjectRayWorld(Case& c, ModelOptions& o) {
+  size_t n = countGetters(c, {kBiQCandObjectOrigin, kBiQCandObjectDirection});
+  forEachProgram(c.pipeline, [&](const Program& p, Stage stage) {
+    if (stage == Stage::Intersection) return;  // its own box's, not a query's
+    walkExpressions(p, [&](const Expr& e) { n += e.kind == Expr::Kind::Op && isSphereOp(e.op); });
+  });
+  if (!n) return "";
+  o.faults.rq_object_ray_world = true;
+  return describeCount(n,
+                       "reads of a ray query candidate's object-space ray (getters, sphere_*) "
+                       "that give the world-space ray");
 }
 
 std::string queryBreakLosesCommit(Case& c, ModelOptions& o) {

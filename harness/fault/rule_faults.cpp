@@ -132,7 +132,7 @@ std::vector<RuleFaults> pipelineRules() {
       {"R-RQ-TERMINATE", {"query-terminate-ignored"}, {}},
       {"R-RQ-VALUES",
        {"query-committed-reads-candidate", "query-custom-index-is-instance-id",
-        "query-candidate-type-swapped", "query-front-face-inverted"},
+        "query-candidate-type-swapped", "query-front-face-inverted", "query-object-ray-world"},
        {}},
       {"R-RQ-EQUIV",
        {"ignore-accepts", "terminate-continues", "any-hit-on-opaque", "report-return-inverted",

@@ -12,13 +12,14 @@
 
 #include "case/case.h"
 #include "case/seeded_random.h"
+#include "fuzz/generator_features.h"
 #include "program/program.h"
 
 namespace rayspec {
 
 class CaseGenerator {
  public:
-  explicit CaseGenerator(uint64_t seed) : rng_(seed) {}
+  CaseGenerator(uint64_t seed, const GeneratorFeatures& allowed) : rng_(seed), allowed_(allowed) {}
 
   // The parts, in the order of the file.
   void scene();
@@ -100,6 +101,7 @@ class CaseGenerator {
   };
 
   SeededRandom rng_;
+  GeneratorFeatures allowed_;  // the device features drawn (--without leaves some out)
   std::string out_;
   std::set<std::string> features_;
   std::vector<Blas> blas_;

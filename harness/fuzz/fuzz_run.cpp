@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 
 // The case of `seed` written under OUT/cases.
 Result<GeneratedCase> writeCase(const FuzzOptions& opt, uint64_t seed) {
-  const GeneratedCase g = generateCase(seed);
+  const GeneratedCase g = generateCase(seed, opt.allowed);
   const fs::path file = fs::path(opt.out) / "cases" / (g.name + ".yaml");
   std::error_code ec;
   fs::create_directories(file.parent_path(), ec);
@@ -187,6 +187,7 @@ int runFuzz(const FuzzOptions& opt) {
   const auto add_variant = [&](const std::string& v) {
     tally.variant += (tally.variant.empty() ? "" : "; ") + v;
   };
+  if (!leftOutText(opt.allowed).empty()) add_variant("cases " + leftOutText(opt.allowed));
   if (!opt.run.plant_fault.empty()) add_variant("planted fault " + opt.run.plant_fault);
   if (!opt.run.device_results.empty())
     add_variant("device results saved in " + opt.run.device_results +

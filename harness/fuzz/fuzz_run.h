@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <string>
 
+#include "fuzz/generator_features.h"
 #include "run/case_check.h"
 #include "run/run_options.h"
 
@@ -31,6 +32,7 @@ struct FuzzOptions {
   bool generate_only = false;  // --generate-only: write OUT/cases and stop (a device elsewhere
                                // runs them; --device-results judges what it saved)
   bool fault_matrix = false;   // --fault-matrix: OUT/fault-matrix.txt
+  GeneratorFeatures allowed;   // --without: device features the cases leave out
   RunOptions run;              // the device, the model, --through, --plant-fault, --device-results
   // Each generated case held to every legal device before it runs (as `rayspec
   // run` holds a case outside the library): a case one would fail is refused

@@ -34,15 +34,17 @@ std::string fuzzCaseName(uint64_t seed) {
   return "fuzz/seed-" + std::to_string(seed);
 }
 
-GeneratedCase generateCase(uint64_t seed) {
-  CaseGenerator g(seed);
+GeneratedCase generateCase(uint64_t seed, const GeneratorFeatures& allowed) {
+  CaseGenerator g(seed, allowed);
+  // What was left out, so that the description says how to make it again.
+  const std::string without = leftOutText(allowed);
   g.text() = "# rayspec fuzz, seed " + std::to_string(seed) +
              ": a generated case (harness/fuzz/generate_case.h)\n"
              // R-AHIT-DUP: an any-hit that writes may run twice on geometry
              // without no_duplicate_any_hit; the case is judged on the rest.
              "rules: [R-BUILTIN, R-AHIT-DUP]\n"
              "description: generated from seed " +
-             std::to_string(seed) + "\n";
+             std::to_string(seed) + (without.empty() ? "" : " " + without) + "\n";
   g.scene();
   g.rays();
   g.pipeline();

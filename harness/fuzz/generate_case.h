@@ -23,6 +23,8 @@
 #include <string>
 #include <vector>
 
+#include "fuzz/generator_features.h"
+
 namespace rayspec {
 
 struct GeneratedCase {
@@ -40,6 +42,8 @@ const std::vector<std::string>& generatorFeatures();
 // The case name of a seed.
 std::string fuzzCaseName(uint64_t seed);
 
-GeneratedCase generateCase(uint64_t seed);
+// The case of `seed` with the device features `allowed` leaves out never
+// drawn (a case of its own: the default makes another).
+GeneratedCase generateCase(uint64_t seed, const GeneratorFeatures& allowed = {});
 
 }  // namespace rayspec

@@ -71,15 +71,18 @@ std::string ProgramGenerator::call(Stage stage, size_t first_callee) {
 }
 
 // A ray query: each triangle candidate confirmed (all, some, or the first
-// and then the traversal ended), each box committed at the query's tmin
-// (inside [tmin, committed t]: never undefined), the committed
-// intersection read after.
+// and then the traversal ended), boxes committed where the ray crosses them
+// (queryCrossing), the committed intersection read after.
 std::string ProgramGenerator::rayQuery(Stage stage) {
   feature("ray-query");
   std::string q = "{ray_query: {";
   if (stage != Stage::Raygen)
     q += "origin: world_ray_origin, direction: [" + CaseGenerator::num(g_.eighths(-0.5, 0.5)) +
          ", " + CaseGenerator::num(g_.eighths(-0.5, 0.5)) + ", -1.0], ";
+  // The query's tmax, which its aabb block holds a generate's t to (in
+  // raygen the launch ray's origin, direction and tmin stay).
+  const double tmax = g_.chance(0.6) ? 100.0 : g_.eighths(5, 9);
+  q += "tmax: " + CaseGenerator::num(tmax) + ", ";
   switch (g_.pick(4)) {
     case 0:
       q += "triangle: [confirm]";
@@ -98,10 +101,27 @@ std::string ProgramGenerator::rayQuery(Stage stage) {
   }
   if (g_.chance(0.6)) {
     feature("ray-query-generate");
-    q += ", aabb: [{if: {even: {add: [candidate.primitive_id, candidate.instance_id]}}, then: "
-         "[{generate: query.ray_tmin}]}]";
+    q += ", aabb: [" + queryCrossing(tmax) + "]";
   }
   return q + ", after: [" + queryAfter() + "]}}";
+}
+
+// An AABB candidate committed only where the ray crosses the sphere inscribed
+// in its box (sphere_hit, the query's candidate's: program/ops.h), at the
+// sphere's near root, ahead of tmin and not beyond what is committed (the
+// query's tmax before a commit): inside [tmin, committed t], never
+// undefined (R-RQ-COMMIT), and the same whichever order the candidates come
+// in. A box the test only bounds (R-AABB-CONS: a device may offer one the
+// ray passes beside or behind) commits nothing. Now and then only the boxes
+// of some primitives.
+std::string ProgramGenerator::queryCrossing(double tmax) {
+  const std::string top = local();
+  std::string cross =
+      "sphere_hit, {ge: [sphere_near, query.ray_tmin]}, {le: [sphere_near, var." + top + "]}";
+  if (g_.chance(0.5)) cross += ", {even: {add: [candidate.primitive_id, candidate.instance_id]}}";
+  return "{let: {" + top + ": " + CaseGenerator::num(tmax) +
+         "}}, {if: {ne: [committed.type, 0]}, then: [{set: {" + top +
+         ": committed.t}}]}, {if: {and: [" + cross + "]}, then: [{generate: sphere_near}]}";
 }
 
 std::string ProgramGenerator::queryAfter() {

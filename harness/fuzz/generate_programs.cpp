@@ -47,7 +47,7 @@ std::string ProgramGenerator::raygenProgram() {
   if (g_.callable_count_ && g_.chance(0.8)) trace += ", " + call(Stage::Raygen, 0);
   p.push_back(g_.chance(0.4) ? liveLocal(Stage::Raygen, trace) : trace);
   if (g_.chance(0.35)) p.push_back(controlFlow(Stage::Raygen));
-  if (g_.chance(0.3)) p.push_back(rayQuery(Stage::Raygen));
+  if (g_.chance(0.3) && g_.allowed_.ray_query) p.push_back(rayQuery(Stage::Raygen));
   return program(p);
 }
 
@@ -69,7 +69,7 @@ std::string ProgramGenerator::missProgram() {
   }
   p.push_back(payload + "}}");
   if (g_.chance(0.3)) p.push_back(controlFlow(Stage::Miss));
-  if (!inlined_ && g_.chance(0.1)) p.push_back(rayQuery(Stage::Miss));
+  if (!inlined_ && g_.chance(0.1) && g_.allowed_.ray_query) p.push_back(rayQuery(Stage::Miss));
   return program(p);
 }
 
@@ -114,7 +114,8 @@ std::string ProgramGenerator::closestHitProgram(bool aabbs) {
   if (!aabbs && g_.chance(0.3))
     p.push_back("{record: {" + colorField() + ": " + builtinColor(Stage::ClosestHit) + "}}");
   if (g_.chance(0.3)) p.push_back(controlFlow(Stage::ClosestHit));
-  if (!inlined_ && g_.chance(0.1)) p.push_back(rayQuery(Stage::ClosestHit));
+  if (!inlined_ && g_.chance(0.1) && g_.allowed_.ray_query)
+    p.push_back(rayQuery(Stage::ClosestHit));
   const std::string text = program(p);
   if (readsHitBuiltinAfterTrace(text)) feature("hit-builtin-after-trace");
   return text;
@@ -234,9 +235,11 @@ std::string ProgramGenerator::header() {
 }
 
 void ProgramGenerator::pipeline() {
+  // Traces inlined as ray queries, from raygen or a compute shader (drawn
+  // whether or not ray queries are left out, so that the default draws stay).
   const uint64_t traces = g_.pick(12);
-  inlined_ = traces < 2;
-  compute_ = traces == 1 && !g_.indirect_;  // an indirect launch is a trace command's
+  inlined_ = traces < 2 && g_.allowed_.ray_query;
+  compute_ = inlined_ && traces == 1 && !g_.indirect_;  // an indirect launch is a trace command's
   if (inlined_) feature(compute_ ? "traces-compute" : "traces-ray-query");
   g_.callable_count_ = !compute_ && g_.chance(0.5) ? 1 + g_.pick(2) : 0;
   if (g_.callable_count_) feature("callables");

@@ -44,6 +44,7 @@ class ProgramGenerator {
   std::string nestedTrace(Stage stage);
   std::string call(Stage stage, size_t first_callee);
   std::string rayQuery(Stage stage);
+  std::string queryCrossing(double tmax);
   std::string queryAfter();
   std::string controlFlow(Stage stage);
   std::string liveLocal(Stage stage, const std::string& across);

@@ -113,6 +113,12 @@ std::string op(const Expr& e, const StageContext& ctx) {
   if (e.op == Op::None) return problem("op " + e.name + " not resolved");
   const OpInfo& info = opInfo(e.op);
   if (!info.glsl) return spelledOp(e, a, ctx);
+  // sphere_* outside intersection: in a ray_query's aabb block, the
+  // query's candidate's (program/ops.h; shaders/query_sphere.glsl).
+  if (isSphereOp(e.op) && ctx.stage != Stage::Intersection) {
+    const std::string own = "rs_sphere_current()";
+    return "rs_cand_sphere(rs_query)" + std::string(info.glsl).substr(own.size());
+  }
   if (static_cast<int>(a.size()) < info.min_args)
     return problem("op " + e.name + " with " + std::to_string(a.size()) + " args");
   return expandPattern(info.glsl, a);

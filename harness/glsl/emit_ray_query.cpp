@@ -434,6 +434,7 @@ void addInlinedUses(StageContext& host) {
     r.call_locations.insert(u.call_locations.begin(), u.call_locations.end());
     r.scene = r.scene || u.scene;
     r.sphere = r.sphere || u.sphere;
+    r.query_sphere = r.query_sphere || u.query_sphere;
     r.query_position_fetch = r.query_position_fetch || u.position_fetch;
   };
   for (const Program& m : p.miss) add(Stage::Miss, m);

@@ -252,9 +252,13 @@ void declarations(const StageContext& ctx, bool ray_query, const Program& progra
   emitPayloadStructs(ctx, out);
   emitCallDataStructs(ctx, out);
   if (ray_query) out.line("rayQueryEXT rs_rq;  // every trace's (glsl/emit_ray_query.h)");
-  if (u.scene && ray_query) emitCandidateMacros(out);
-  if (u.scene && (stage == Stage::Intersection || ray_query)) include("scene.glsl", out);
-  if (u.sphere && (stage == Stage::Intersection || ray_query)) include("sphere.glsl", out);
+  // The box of an inlined intersection program's candidate, or of a ray
+  // query's AABB candidate (shaders/query_sphere.glsl), as scene.glsl reads it.
+  const bool candidates = ray_query || u.query_sphere;
+  if (u.scene && candidates) emitCandidateMacros(out);
+  if (u.scene && (stage == Stage::Intersection || candidates)) include("scene.glsl", out);
+  if (u.sphere && (stage == Stage::Intersection || candidates)) include("sphere.glsl", out);
+  if (u.query_sphere) include("query_sphere.glsl", out);
   if (u.light) include("lights.glsl", out);
   if (u.position_fetch) include("position_fetch.glsl", out);
   if (u.query_position_fetch) include("query_position_fetch.glsl", out);

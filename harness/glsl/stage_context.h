@@ -25,6 +25,7 @@ struct StageUses {
   bool record_members = false;         // shader_record.NAME (pipeline.sbt.record_layout)
   bool scene = false;                  // aabb_min / aabb_max / sphere_*
   bool sphere = false;                 // sphere_*
+  bool query_sphere = false;           // sphere_* of a query's AABB candidate (query_sphere.glsl)
   bool hit_attribute = false;          // barycentrics read, or a report written
   bool incoming_payload = false;       // payload.* read (outside raygen) or written
   bool cull_mask = false;              // gl_CullMaskEXT read (GL_EXT_ray_cull_mask)

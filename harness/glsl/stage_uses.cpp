@@ -143,6 +143,7 @@ void visitProgram(const Program& p, Stage stage, const Plan& plan, StageUses& u)
 StageUses findStageUses(const Program& program, Stage stage, const Plan& plan) {
   StageUses u;
   visitProgram(program, stage, plan, u);
+  u.query_sphere = u.sphere && stage != Stage::Intersection;  // in aabb blocks (program/ops.h)
   if (stage == Stage::Raygen && plan.records) {
     // Raygen copies the image fields from the record into the images.
     for (const ImageOutput& img : plan.images)

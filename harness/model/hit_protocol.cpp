@@ -19,7 +19,7 @@ uint32_t geometryFlags(const ModelScene& scene, const ModelCandidate& c) {
   return scene.blases[scene.instances[c.instance].blas].geometries[c.geometry].flags;
 }
 
-bool isSphereRoot(const CExpr& e) {
+bool isSphereRootExpr(const CExpr& e) {
   return e.kind == Expr::Kind::Op && (e.op == Op::SphereNear || e.op == Op::SphereFar);
 }
 
@@ -28,14 +28,14 @@ bool isSphereRoot(const CExpr& e) {
 // by no more than the root does (the generator's {max: [sphere_near,
 // ray_tmin]}); nullptr for any other t.
 const CExpr* sphereRootOf(const CExpr& t) {
-  if (isSphereRoot(t)) return &t;
+  if (isSphereRootExpr(t)) return &t;
   if (t.kind != Expr::Kind::Op || (t.op != Op::Max && t.op != Op::Min) || t.args.size() != 2)
     return nullptr;
   const auto exact = [](const CExpr& e) {
     return e.kind == Expr::Kind::Literal || (e.kind == Expr::Kind::Builtin && e.builtin == kBiTmin);
   };
   for (size_t k = 0; k < 2; ++k)
-    if (isSphereRoot(t.args[k]) && exact(t.args[1 - k])) return &t.args[k];
+    if (isSphereRootExpr(t.args[k]) && exact(t.args[1 - k])) return &t.args[k];
   return nullptr;
 }
 
@@ -43,7 +43,7 @@ const CExpr* sphereRootOf(const CExpr& t) {
 // device; a max or min clamps it), or at one within a max or min (whose t a
 // device's rounding of the root moves as far, and no farther).
 bool reportsSphereRoot(const CStmt& s, const StageEnv& env) {
-  return isSphereRoot(s.t) && env.hit && env.ray;
+  return isSphereRoot(s) && env.hit && env.ray;
 }
 bool reportsBoundedRoot(const CStmt& s, const StageEnv& env) {
   return sphereRootOf(s.t) && env.hit && env.ray;
@@ -85,11 +85,10 @@ Flow HitProtocol::runAnyHit(const CProgram& p, StageEnv& a, const HitView& hv,
   return interp_.exec(p, a);
 }
 
-double HitProtocol::sphereRootError(const CStmt& s, const HitView& h, const StageEnv& env) const {
+double HitProtocol::sphereRootError(const CStmt& s, const HitView& h, const TraceRay& ray) const {
   const ModelInstance& mi = sh_.scene->instances[h.instance];
-  const SphereError se =
-      sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
-                  objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
+  const SphereError se = sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
+                                     objectRayError(mi.inverse_f, ray.origin, ray.direction));
   return sphereRootOf(s.t)->op == Op::SphereNear ? se.near_err : se.far_err;
 }
 
@@ -109,7 +108,7 @@ bool HitProtocol::reportInside(const CStmt& s, StageEnv& env, Traversal& tr, flo
       inside = f->value;
     } else if (tr.shader_unsure && reportsSphereRoot(s, env)) {
       const HitView& h = *env.hit;
-      const double et = sphereRootError(s, h, env) + tr.tol(t);
+      const double et = sphereRootError(s, h, *env.ray) + tr.tol(t);
       const bool own = tr.best.valid && tr.best.instance == h.instance &&
                        tr.best.geometry == h.geometry && tr.best.primitive == h.primitive;
       const bool near_end = std::fabs(double(t) - tr.ray.tmin) <= et ||
@@ -140,7 +139,7 @@ void HitProtocol::commitReport(const CStmt& s, StageEnv& env, Traversal& tr, con
              hv.b2};
   tr.best.words = hv.words;
   // R-PREC: how far a device's root may lie from this one.
-  if (tr.exact && reportsBoundedRoot(s, env)) tr.best.t_err = sphereRootError(s, hv, env);
+  if (tr.exact && reportsBoundedRoot(s, env)) tr.best.t_err = sphereRootError(s, hv, *env.ray);
   if (!tr.inlined.commit_keeps_interval) tr.tmax_cur = t;
   env.tmax_view = t;
 }
@@ -184,19 +183,17 @@ Flow HitProtocol::report(const CStmt& s, StageEnv& env) {
   return interp_.exec(accepted ? s.then_ : s.else_, env);
 }
 
-bool HitProtocol::sphereHitDecision(StageEnv& env, bool model_value, float disc) {
-  Traversal* tr = env.traversal;
-  if (!tr->exact || !tr->cur || env.stage != Stage::Intersection) return model_value;
-  const uint32_t ord = tr->sphere_ord++;
-  if (const ShaderDecision* f = tr->forced(0, ord)) return f->value;
-  if (tr->shader_unsure && env.hit && env.ray) {
-    const HitView& h = *env.hit;
+bool HitProtocol::sphereHitDecision(Traversal& tr, const HitView& h, bool model_value, float disc) {
+  if (!tr.exact || !tr.cur) return model_value;
+  const uint32_t ord = tr.sphere_ord++;
+  if (const ShaderDecision* f = tr.forced(0, ord)) return f->value;
+  if (tr.shader_unsure) {
     const ModelInstance& mi = sh_.scene->instances[h.instance];
     const SphereError se =
         sphereError(h.aabb_min, h.aabb_max, h.object_origin, h.object_direction,
-                    objectRayError(mi.inverse_f, env.ray->origin, env.ray->direction));
+                    objectRayError(mi.inverse_f, tr.ray.origin, tr.ray.direction));
     if (std::fabs(double(disc)) <= se.disc_err)
-      tr->shader_unsure->push_back({tr->cur_index, 0, ord, model_value});
+      tr.shader_unsure->push_back({tr.cur_index, 0, ord, model_value});
   }
   return model_value;
 }

@@ -20,6 +20,11 @@ namespace rayspec {
 struct Traversal;
 class StageInterpreter;
 
+// Whether a report's or generate's t is a sphere root (sphere_near, sphere_far).
+inline bool isSphereRoot(const CStmt& s) {
+  return s.t.kind == Expr::Kind::Op && (s.t.op == Op::SphereNear || s.t.op == Op::SphereFar);
+}
+
 class HitProtocol {
  public:
   HitProtocol(const ModelShared& shared, LaunchState& state, StageInterpreter& interp)
@@ -34,9 +39,10 @@ class HitProtocol {
   Flow runAnyHit(const CProgram& p, StageEnv& a, const HitView& hv, uint32_t geometry_flags);
   // reportIntersectionEXT in the intersection program of env.traversal.
   Flow report(const CStmt& s, StageEnv& env);
-  // sphere_hit in an intersection program: the model's value, or the forced
-  // one of a what-if run; notes an unsure decision (exact tier).
-  bool sphereHitDecision(StageEnv& env, bool model_value, float disc);
+  // sphere_hit of the candidate `h` that `tr` decides (an intersection
+  // program's own box, or a ray_query's AABB candidate): the model's value,
+  // or the forced one of a what-if run; notes an unsure decision (exact tier).
+  bool sphereHitDecision(Traversal& tr, const HitView& h, bool model_value, float disc);
 
   // Ray queries (hit_protocol_query.cpp): a candidate offered to its block
   // (kind: a triangle's facing hit kind), the statements of the blocks, and
@@ -57,7 +63,7 @@ class HitProtocol {
   // R-PREC: how far a device's sphere root (a report's t) may lie from the
   // model's, for the hit h.
   void endOnFirstHit(Traversal& tr) const;
-  double sphereRootError(const CStmt& s, const HitView& h, const StageEnv& env) const;
+  double sphereRootError(const CStmt& s, const HitView& h, const TraceRay& ray) const;
 
   const ModelShared& sh_;
   LaunchState& st_;

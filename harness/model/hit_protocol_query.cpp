@@ -19,6 +19,10 @@ void HitProtocol::runQueryCandidate(Traversal& tr, const ModelCandidate& cand, s
   QueryRun& q = *tr.query;
   HitView hv = viewOf(*sh_.scene, *sh_.c, tr.ray, cand.instance, cand.geometry, cand.primitive);
   if (!cand.aabb) setHit(hv, static_cast<float>(cand.t), kind, cand.b1, cand.b2);
+  if (sh_.fault_seam.queryObjectRayWorld()) {  // planted: the world ray as the object ray
+    hv.object_origin = {tr.ray.origin[0], tr.ray.origin[1], tr.ray.origin[2]};
+    hv.object_direction = {tr.ray.direction[0], tr.ray.direction[1], tr.ray.direction[2]};
+  }
   // A nested query's block may run while this one's runs: each keeps its own.
   Traversal* const outer_tr = q.tr;
   const ModelCandidate* const outer_cand = q.cand;
@@ -30,6 +34,7 @@ void HitProtocol::runQueryCandidate(Traversal& tr, const ModelCandidate& cand, s
   q.cand_opaque = opaque;
   tr.cur = &cand;
   tr.cur_index = k;
+  tr.sphere_ord = 0;  // its block's sphere_hit decisions (the exact tier's what-if runs)
   if (cand.aabb && tr.reports) tr.reports->push_back({k, NAN});  // it ran (R-TIE's check)
   // The planted fault rq_candidate_type_swapped runs the other kind's block.
   const bool aabb_block = cand.aabb != sh_.fault_seam.queryCandidateTypeSwapped();
@@ -91,6 +96,8 @@ void HitProtocol::generate(const CStmt& s, StageEnv& env) {
   if (tr.reports) tr.reports->push_back({tr.cur_index, t});
   const HitView& hv = q->cand_view;
   tr.best = {true, static_cast<double>(t), hv.instance, hv.geometry, hv.primitive, 0, 0, 0};
+  // R-PREC: how far a device's root of the candidate's sphere may lie from this one.
+  if (tr.exact && isSphereRoot(s)) tr.best.t_err = sphereRootError(s, hv, tr.ray);
   if (!sh_.fault_seam.queryCommitKeepsInterval()) tr.tmax_cur = t;
   endOnFirstHit(tr);
 }

@@ -77,6 +77,7 @@ class ModelFaultSeam {
   bool queryFunctionGetsCopy() const { return f_.rq_function_gets_copy; }            // R-RQ-COMMIT
   bool queryRestartKeepsCommitted() const { return f_.rq_restart_keeps_committed; }  // R-RQ-INIT
   bool queryStepWrongQuery() const { return f_.rq_step_wrong_query; }                // R-RQ-INIT
+  bool queryObjectRayWorld() const { return f_.rq_object_ray_world; }                // R-RQ-VALUES
   // A trace that a --through ray-query* run inlines as a ray query loop
   // (glsl/emit_ray_query.h: every trace under Pipeline::ray_query, those of
   // closest-hit and miss, depth 2 on, under ray_query_in_hit): the query

@@ -86,7 +86,11 @@ struct ModelFaults {
   //     discards all previous state);
   //   rq_step_wrong_query: stepping an array of queries (ray_queries)
   //     proceeds the next element: each query's blocks decide the next
-  //     query's candidates (the next one's ray; R-RQ-INIT).
+  //     query's candidates (the next one's ray; R-RQ-INIT);
+  //   rq_object_ray_world: a ray query's candidate object-space ray getters
+  //     read the world-space ray (the instance transform not applied), and
+  //     so does what its aabb block computes of the crossing (sphere_*;
+  //     R-RQ-VALUES).
   // On a trace that a --through ray-query* run inlines as a query loop, each
   // breaks that loop where it has a meaning there (ModelFaultSeam::inlinedQuery).
   bool rq_init_keeps_committed = false;
@@ -104,6 +108,7 @@ struct ModelFaults {
   bool rq_function_gets_copy = false;
   bool rq_restart_keeps_committed = false;
   bool rq_step_wrong_query = false;
+  bool rq_object_ray_world = false;
   // R-WATERTIGHT not met (a "should"): every trace through a shared edge or
   // vertex passes between its triangles, where that changes the answer.
   bool pass_between_edges = false;

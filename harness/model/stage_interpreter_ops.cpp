@@ -8,6 +8,7 @@
 
 #include "model/hit_protocol.h"
 #include "model/model_shading.h"
+#include "model/query_run.h"
 #include "model/stage_interpreter.h"
 
 namespace rayspec {
@@ -70,12 +71,19 @@ bool StageInterpreter::opOnDemand(const CExpr& e, StageEnv& env, Val& r) {
     case Op::SphereHit:
     case Op::SphereNear:
     case Op::SphereFar: {
+      // An intersection program's own box, decided by its trace; elsewhere
+      // (a ray_query's aabb block) the query's AABB candidate's, decided by
+      // the query's traversal (program/ops.h).
       static const HitView kNone;
-      const HitView* hv = env.hit ? env.hit : &kNone;
+      const bool own = env.stage == Stage::Intersection;
+      const QueryRun* q = env.query;
+      const HitView* hv = own ? env.hit : q && q->cand ? &q->cand_view : nullptr;
+      if (!hv) hv = &kNone;
+      Traversal* tr = own ? env.traversal : q ? q->tr : nullptr;
       SphereRoots s =
           sphereRoots(hv->aabb_min, hv->aabb_max, hv->object_origin, hv->object_direction);
       if (n == Op::SphereHit)
-        r.b = env.traversal ? hits_.sphereHitDecision(env, s.hit, s.disc) : s.hit;
+        r.b = tr && hv != &kNone ? hits_.sphereHitDecision(*tr, *hv, s.hit, s.disc) : s.hit;
       else
         r.f[0] = n == Op::SphereNear ? s.t_near : s.t_far;
       return true;

@@ -145,7 +145,8 @@ void planStatements(const std::vector<StageProgram>& programs, const Pipeline& p
       if (needs & builtin_needs::PositionFetch) plan.position_fetch = true;
       const bool reads_box =
           (needs & builtin_needs::BoxData) || (e.kind == Expr::Kind::Op && isSphereOp(e.op));
-      if (sp.stage == Stage::Intersection && reads_box) plan.scene_data = true;
+      // In another stage, sphere_* of a ray_query's AABB candidate (program/ops.h).
+      if (reads_box) plan.scene_data = true;
     });
   }
   plan.trace_depth = plan.nested_trace ? std::max<uint32_t>(pipe.max_recursion, 1) : 1;
@@ -238,7 +239,7 @@ std::vector<std::string> Plan::describe() const {
   line(facing_culls, "facing culls / facing instance flags");
   line(masks, "instance masks / cull masks");
   line(opacity_flags, "opacity ray / instance flags");
-  line(scene_data, "scene data buffer (AABBs read by intersection programs)");
+  line(scene_data, "scene data buffer (AABBs read by intersection programs and query sphere_*)");
   line(shader_record_data, "shader record data");
   line(zero_records, "all-zero SBT records");
   line(sbt_tables, "SBT tables buffer (hit groups, miss programs, record data for ray queries)");

@@ -27,7 +27,8 @@ struct Plan {
   bool facing_culls = false;   // cull_back/front_facing used, or flip/cull-disable instance flags
   bool masks = false;          // an instance mask or a cull mask is not 0xFF
   bool opacity_flags = false;  // opaque/no_opaque/cull_opaque/cull_no_opaque or force_* flags
-  bool scene_data = false;     // an intersection program reads the AABBs (aabb_*, sphere_*)
+  bool scene_data = false;     // a program reads the AABBs (aabb_*, sphere_*: intersection's own,
+                               // a ray_query's AABB candidate's)
   bool cull_mask_builtin = false;          // a stage reads cull_mask (gl_CullMaskEXT: needs
                                            // VK_KHR_ray_tracing_maintenance1)
   bool ray_queries = false;                // a stage runs a ray_query statement (VK_KHR_ray_query)

@@ -61,12 +61,15 @@ struct OpInfo {
 //                         div by a constant 0 (program/constant_value.h) is a
 //                         case error; by a dynamic 0, undefined (the model says so).
 //   mod                   Uint % Uint (by a constant 0: a case error)
-//   sphere_hit, sphere_near, sphere_far (no args): intersection only. The
-//       sphere inscribed in the primitive's AABB (center = (min+max)/2, radius
-//       = smallest half extent), against the object-space ray o + t d (d not
-//       normalised): roots of |o + t d - c|^2 = r^2, near <= far; sphere_hit =
-//       discriminant >= 0. Computed in float with the formula in
-//       shaders/sphere.glsl and its model counterpart.
+//   sphere_hit, sphere_near, sphere_far (no args): intersection, or a
+//       ray_query's aabb block in any other stage (program/type_check.cpp).
+//       The sphere inscribed in the primitive's AABB (center = (min+max)/2,
+//       radius = smallest half extent), against the object-space ray o + t d
+//       (d not normalised): roots of |o + t d - c|^2 = r^2, near <= far;
+//       sphere_hit = discriminant >= 0. The primitive is the intersection
+//       program's own, or the query's AABB candidate (its object-space ray).
+//       Computed in float with the formula in shaders/sphere.glsl
+//       (shaders/query_sphere.glsl for a candidate) and its model counterpart.
 //   shader_record_uint / _float: the case parser keeps i inside
 //       pipeline.sbt.record_data (parse/check_record_reads.cpp).
 //   light_*: the lights of shaders/lights.glsl (what `light:` computes in a callable).

@@ -302,12 +302,32 @@ Typing typeQueryGetter(const Expr& e, const LocalScope* locals) {
   return std::nullopt;
 }
 
+// sphere_hit, sphere_near, sphere_far: an intersection program's own box,
+// or in a ray_query's aabb block (of any other stage) the query's AABB
+// candidate's (its box and object-space ray). Not in an intersection
+// program's aabb block, where one function's GLSL would read either box.
+std::optional<ProgramError> checkSphereOp(const Expr& e, Stage stage, const LocalScope* locals) {
+  const bool aabb_block = locals && locals->queryBlock() == LocalScope::QueryBlock::Aabb;
+  if (stage == Stage::Intersection && aabb_block)
+    return err(e, "operator '" + e.name +
+                      "' in an intersection program reads its own box: not in a ray_query's "
+                      "aabb block");
+  if (stage != Stage::Intersection && !aabb_block)
+    return err(e, "operator '" + e.name +
+                      "' reads a box: only in intersection, or in a ray_query's aabb block (its "
+                      "candidate's)");
+  return std::nullopt;
+}
+
 std::optional<ProgramError> checkOp(Expr& e, Stage stage, const OpInfo& op,
                                     const LocalScope* locals) {
   const std::string& name = e.name;
   const int n = static_cast<int>(e.args.size());
-  if (!(op.stages & stageBit(stage)))
+  if (isSphereOp(op.id)) {
+    if (auto r = checkSphereOp(e, stage, locals)) return r;
+  } else if (!(op.stages & stageBit(stage))) {
     return err(e, "operator '" + name + "' is not available in " + stageName(stage));
+  }
   if (n < op.min_args || n > op.max_args) {
     std::string want = op.min_args == op.max_args
                            ? std::to_string(op.min_args)

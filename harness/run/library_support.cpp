@@ -9,23 +9,10 @@
 namespace rayspec {
 namespace {
 
-using FeatureRow = std::pair<const char*, bool DeviceInfo::*>;
-
 template <typename T>
 void addFeatureRow(std::vector<FeatureRow>&, const char*, T DeviceInfo::*) {}
 void addFeatureRow(std::vector<FeatureRow>& rows, const char* label, bool DeviceInfo::*member) {
   if (label) rows.emplace_back(label, member);
-}
-
-// The yes/no rows of vulkan/device_info_fields.h that `rayspec devices`
-// prints: what a case may need and a device may lack.
-std::vector<FeatureRow> featureRows() {
-  std::vector<FeatureRow> rows;
-#define RAYSPEC_FEATURE_ROW(type, member, key, label, meaning) \
-  addFeatureRow(rows, label, &DeviceInfo::member);
-  RAYSPEC_DEVICE_INFO_FIELDS(RAYSPEC_FEATURE_ROW)
-#undef RAYSPEC_FEATURE_ROW
-  return rows;
 }
 
 bool runs(const LibraryCase& l, const DeviceInfo& d, uint32_t validation_layer) {
@@ -43,6 +30,15 @@ int skippedBy(const std::vector<LibraryCase>& cases, const DeviceInfo& with, uin
 }
 
 }  // namespace
+
+std::vector<FeatureRow> featureRows() {
+  std::vector<FeatureRow> rows;
+#define RAYSPEC_FEATURE_ROW(type, member, key, label, meaning) \
+  addFeatureRow(rows, label, &DeviceInfo::member);
+  RAYSPEC_DEVICE_INFO_FIELDS(RAYSPEC_FEATURE_ROW)
+#undef RAYSPEC_FEATURE_ROW
+  return rows;
+}
 
 std::vector<LibraryCase> libraryCases(const std::string& cases_dir) {
   std::vector<LibraryCase> cases;

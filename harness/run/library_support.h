@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "case/case.h"
@@ -14,6 +15,12 @@
 #include "vulkan/vulkan_engine.h"
 
 namespace rayspec {
+
+// A yes/no row of vulkan/device_info_fields.h that `rayspec devices` prints
+// (what a case may need and a device may lack): its label
+// (rayTraversalPrimitiveCulling, VK_KHR_ray_query, ...) and its member.
+using FeatureRow = std::pair<const char*, bool DeviceInfo::*>;
+std::vector<FeatureRow> featureRows();
 
 // A library case as a plain run runs it, with its plan.
 struct LibraryCase {
