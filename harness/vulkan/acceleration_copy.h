@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "case/case.h"
+#include "vulkan/acceleration_structure.h"
 #include "vulkan/cleanup.h"
 #include "vulkan/context.h"
 #include "vulkan/memory_guards.h"
@@ -24,7 +25,8 @@ struct BuiltStructure {
   VkDeviceSize size = 0;
 };
 
-// The copies of `from` (all of `type`, built and complete), in order, made by
+// The copies of `from` (all of level `type`, built and complete; each copy
+// created as `making` says), in order, made by
 // vkCmdCopyAccelerationStructureKHR in `mode` (Clone or Compact), or through
 // memory (Serialize), readable by
 // builds and ray tracing shaders once this returns. Each copy, and each
@@ -33,7 +35,8 @@ struct BuiltStructure {
 // Or the Device error.
 Result<std::vector<BuiltStructure>> copyStructures(const VulkanContext& ctx,
                                                    const std::vector<BuiltStructure>& from,
-                                                   VkAccelerationStructureTypeKHR type, AsCopy mode,
+                                                   VkAccelerationStructureTypeKHR type,
+                                                   const StructureMaking& making, AsCopy mode,
                                                    MemoryGuards& guards, Cleanup& cleanup);
 
 }  // namespace rayspec
