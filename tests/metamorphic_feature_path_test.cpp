@@ -31,11 +31,11 @@ Case simpleCase(const std::string& extra_scene = "", const std::string& extra_ra
 }
 
 TEST(FeaturePath, NamesRoundTrip) {
-  for (FeaturePath p :
-       {FeaturePath::Indirect, FeaturePath::Indirect2, FeaturePath::Libraries, FeaturePath::Clone,
-        FeaturePath::Compact, FeaturePath::Serialize, FeaturePath::Update, FeaturePath::RayQuery,
-        FeaturePath::RayQueryCompute, FeaturePath::RayQueryInHit, FeaturePath::Layouts,
-        FeaturePath::OneByOne, FeaturePath::UpdateIntoOther})
+  for (FeaturePath p : {FeaturePath::Indirect, FeaturePath::Indirect2, FeaturePath::Libraries,
+                        FeaturePath::Clone, FeaturePath::Compact, FeaturePath::Serialize,
+                        FeaturePath::Update, FeaturePath::RayQuery, FeaturePath::RayQueryCompute,
+                        FeaturePath::RayQueryInHit, FeaturePath::Layouts, FeaturePath::OneByOne,
+                        FeaturePath::UpdateIntoOther, FeaturePath::Generic, FeaturePath::Sparse})
     EXPECT_EQ(featurePathFromName(featurePathName(p)), p) << featurePathName(p);
   EXPECT_FALSE(featurePathFromName("sideways"));
   EXPECT_NE(featurePathNames().find("serialize"), std::string::npos);
@@ -77,6 +77,25 @@ TEST(FeaturePath, EachPathChangesItsOwnField) {
   copied.scene.build.copy = AsCopy::Clone;
   EXPECT_FALSE(valueOrMessage(throughPath(copied, FeaturePath::UpdateIntoOther), &why));
   EXPECT_NE(why.find("copies"), std::string::npos) << why;
+}
+
+// generic creates every structure of both levels GENERIC, sparse binds
+// them sparsely; a case that already does is not sent again.
+TEST(FeaturePath, GenericAndSparseSetTheirBuildFields) {
+  const Case c = simpleCase();
+  std::string why;
+  const Case generic = *valueOrMessage(throughPath(c, FeaturePath::Generic), &why);
+  EXPECT_EQ(generic.scene.build.generic, GenericLevels::Both);
+  EXPECT_FALSE(generic.scene.build.sparse);
+  const Case sparse = *valueOrMessage(throughPath(c, FeaturePath::Sparse), &why);
+  EXPECT_TRUE(sparse.scene.build.sparse);
+  EXPECT_EQ(sparse.scene.build.generic, GenericLevels::None);
+  Case own = c;
+  own.scene.build.generic = GenericLevels::Top;
+  EXPECT_FALSE(valueOrMessage(throughPath(own, FeaturePath::Generic), &why));
+  EXPECT_NE(why.find("GENERIC"), std::string::npos) << why;
+  EXPECT_FALSE(valueOrMessage(throughPath(sparse, FeaturePath::Sparse), &why));
+  EXPECT_NE(why.find("sparsely"), std::string::npos) << why;
 }
 
 // What the ray query form cannot express keeps a case off the path, named.

@@ -39,7 +39,10 @@ TEST(SceneBuild, ErrorsNameTheLineAndField) {
              {"{flags: [fastest]}", "scene.build.flags", "fastest"},
              {"{copies: clone}", "scene.build", "unknown key 'copies'"},
              {"{command: cpu}", "scene.build.command",
-              "unknown build command 'cpu' (device, indirect, host)"}};
+              "unknown build command 'cpu' (device, indirect, host)"},
+             {"{generic: middle}", "scene.build.generic",
+              "unknown levels 'middle' (none, bottom, top, both)"},
+             {"{sparse: yes please}", "scene.build.sparse", "true or false"}};
   for (const Bad& b : bad) {
     const ParseResult r = parseBuild(b.build);
     EXPECT_FALSE(r.value) << b.build;
@@ -78,6 +81,17 @@ TEST(SceneBuild, OneByOneAndUpdateIntoAreRead) {
     EXPECT_FALSE(b.value) << bad;
     EXPECT_NE(firstError(b).find("scene.build."), std::string::npos) << firstError(b);
   }
+}
+
+TEST(SceneBuild, GenericAndSparseAreRead) {
+  const ParseResult r = parseBuild("{generic: top, sparse: true}");
+  ASSERT_TRUE(r.value) << firstError(r);
+  EXPECT_EQ(r.value->scene.build.generic, GenericLevels::Top);
+  EXPECT_TRUE(r.value->scene.build.sparse);
+  const ParseResult none = parseBuild("{}");
+  EXPECT_EQ(none.value->scene.build.generic, GenericLevels::None);
+  EXPECT_FALSE(none.value->scene.build.sparse);
+  EXPECT_EQ(parseBuild("{generic: both}").value->scene.build.generic, GenericLevels::Both);
 }
 
 // A stride that does not fit the float3 vertices (12 bytes, 4 a component)

@@ -138,6 +138,12 @@ const char* asCopyName(AsCopy c);  // none, clone, compact, serialize
 #define RAYSPEC_BUILD_COMMANDS(X) X(Device, "device") X(Indirect, "indirect") X(Host, "host")
 enum class BuildCommand { RAYSPEC_BUILD_COMMANDS(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(BuildCommand, RAYSPEC_BUILD_COMMANDS);
+// scene.build.generic: which levels' structures are created with
+// VK_ACCELERATION_STRUCTURE_TYPE_GENERIC_KHR (their copies and update
+// targets too); every build still names the real type, bottom or top.
+#define RAYSPEC_GENERIC_LEVELS(X) X(None, "none") X(Bottom, "bottom") X(Top, "top") X(Both, "both")
+enum class GenericLevels { RAYSPEC_GENERIC_LEVELS(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(GenericLevels, RAYSPEC_GENERIC_LEVELS);
 struct AsBuild {
   uint32_t flags = 0x4;
   BuildCommand command = BuildCommand::Device;
@@ -172,6 +178,12 @@ struct AsBuild {
   // built anew (MODE_BUILD) over the updated BLASes and new instances, not
   // updated.
   bool tlas_rebuilt = false;
+  GenericLevels generic = GenericLevels::None;
+  // scene.build.sparse: every structure's buffer and the scratch buffer
+  // created with SPARSE_BINDING and bound page by page through
+  // vkQueueBindSparse, out of order over two allocations, each structure
+  // across a page boundary (vulkan/sparse_buffer.h; sparseBinding).
+  bool sparse = false;
   bool customLayout() const {
     return instances_as_pointers || data_offsets || first_vertex || vertex_stride || aabb_stride;
   }

@@ -114,6 +114,22 @@ Result<void> updatedIntoOther(Case& c) {
   return {};
 }
 
+// Every structure, copies and update targets too, created with the GENERIC
+// type and built with its real one.
+Result<void> createdGeneric(Case& c) {
+  if (c.scene.build.generic != GenericLevels::None)
+    return errorMessage("the case chooses its own GENERIC levels");
+  c.scene.build.generic = GenericLevels::Both;
+  return {};
+}
+
+// Every structure and the scratch in sparse-bound memory.
+Result<void> sparselyBound(Case& c) {
+  if (c.scene.build.sparse) return errorMessage("the case binds its memory sparsely itself");
+  c.scene.build.sparse = true;
+  return {};
+}
+
 }  // namespace
 
 const char* featurePathName(FeaturePath p) {
@@ -170,6 +186,12 @@ Result<Case> throughPath(const Case& c, FeaturePath path) {
       break;
     case FeaturePath::UpdateIntoOther:
       RAYSPEC_TRY_VOID(updatedIntoOther(out));
+      break;
+    case FeaturePath::Generic:
+      RAYSPEC_TRY_VOID(createdGeneric(out));
+      break;
+    case FeaturePath::Sparse:
+      RAYSPEC_TRY_VOID(sparselyBound(out));
       break;
   }
   return out;

@@ -36,7 +36,11 @@ namespace rayspec {
   /* every build and update in a command of its own, one scratch (scene.build.one_by_one) */  \
   X(OneByOne, "one-by-one")                                                                   \
   /* updated into a second structure (scene.build.update_into other; no update: to itself) */ \
-  X(UpdateIntoOther, "update-into-other")
+  X(UpdateIntoOther, "update-into-other")                                                     \
+  /* every structure created GENERIC, built as bottom or top (scene.build.generic both) */    \
+  X(Generic, "generic")                                                                       \
+  /* structures and scratch in sparse-bound memory, page by page (scene.build.sparse) */      \
+  X(Sparse, "sparse")
 enum class FeaturePath { RAYSPEC_FEATURE_PATHS(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(FeaturePath, RAYSPEC_FEATURE_PATHS);
 

@@ -304,10 +304,10 @@ void checkStrides(YamlReader& r, const YAML::Node& n, const Scene& scene) {
 // (R-AS-COPY).
 void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
   const std::string f = "scene.build";
-  if (!r.expectMap(
-          n, f,
-          {"flags", "copy", "order", "instances_as_pointers", "data_offsets", "first_vertex",
-           "vertex_stride", "aabb_stride", "one_by_one", "update_into", "tlas_update", "command"}))
+  if (!r.expectMap(n, f,
+                   {"flags", "copy", "order", "instances_as_pointers", "data_offsets",
+                    "first_vertex", "vertex_stride", "aabb_stride", "one_by_one", "update_into",
+                    "tlas_update", "command", "generic", "sparse"}))
     return;
   parseBuildLayout(r, n, build);
   if (auto v = YamlReader::get(n, "command"); v.IsDefined())
@@ -319,6 +319,16 @@ void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
                 "unknown build command '" + *name + "' (" + namesJoined(enumNames<BuildCommand>()) +
                     ")");
     }
+  if (auto v = YamlReader::get(n, "generic"); v.IsDefined())
+    if (const auto name = r.string(v, f + ".generic")) {
+      if (const auto levels = valueNamed<GenericLevels>(*name))
+        build.generic = *levels;
+      else
+        r.error(v, f + ".generic",
+                "unknown levels '" + *name + "' (" + namesJoined(enumNames<GenericLevels>()) + ")");
+    }
+  if (auto v = YamlReader::get(n, "sparse"); v.IsDefined())
+    build.sparse = parseTrueFalse(r, v, f + ".sparse").value_or(false);
   if (auto v = YamlReader::get(n, "one_by_one"); v.IsDefined())
     build.one_by_one = parseTrueFalse(r, v, f + ".one_by_one").value_or(false);
   if (auto v = YamlReader::get(n, "update_into"); v.IsDefined())

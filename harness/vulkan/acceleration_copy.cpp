@@ -152,6 +152,7 @@ Result<Serialized> serialize(const VulkanContext& ctx, const std::vector<BuiltSt
 Result<std::vector<BuiltStructure>> serializeAndBack(const VulkanContext& ctx,
                                                      const std::vector<BuiltStructure>& from,
                                                      VkAccelerationStructureTypeKHR type,
+                                                     const StructureMaking& making,
                                                      MemoryGuards& guards, Cleanup& cleanup) {
   RAYSPEC_TRY(const Serialized s, serialize(ctx, from, guards, cleanup));
   std::vector<BuiltStructure> to;
@@ -160,7 +161,7 @@ Result<std::vector<BuiltStructure>> serializeAndBack(const VulkanContext& ctx,
     const VkDeviceSize size = s.deserialized_sizes[i];
     RAYSPEC_TRY(
         const VkAccelerationStructureKHR copy_handle,
-        createStructure(ctx, type, size, cleanup, guards,
+        createStructure(ctx, type, making, size, cleanup, guards,
                         from[i].name + " deserialized, the deserialized size its data names"));
     to.push_back({copy_handle, size, from[i].name});
   }
@@ -183,10 +184,11 @@ Result<std::vector<BuiltStructure>> serializeAndBack(const VulkanContext& ctx,
 
 Result<std::vector<BuiltStructure>> copyStructures(const VulkanContext& ctx,
                                                    const std::vector<BuiltStructure>& from,
-                                                   VkAccelerationStructureTypeKHR type, AsCopy mode,
+                                                   VkAccelerationStructureTypeKHR type,
+                                                   const StructureMaking& making, AsCopy mode,
                                                    MemoryGuards& guards, Cleanup& cleanup) {
   if (from.empty() || mode == AsCopy::None) return from;
-  if (mode == AsCopy::Serialize) return serializeAndBack(ctx, from, type, guards, cleanup);
+  if (mode == AsCopy::Serialize) return serializeAndBack(ctx, from, type, making, guards, cleanup);
   std::vector<VkDeviceSize> sizes;
   for (const BuiltStructure& s : from) sizes.push_back(s.size);
   if (mode == AsCopy::Compact) {
@@ -198,7 +200,7 @@ Result<std::vector<BuiltStructure>> copyStructures(const VulkanContext& ctx,
     RAYSPEC_TRY(
         const VkAccelerationStructureKHR copy_handle,
         createStructure(
-            ctx, type, sizes[i], cleanup, guards,
+            ctx, type, making, sizes[i], cleanup, guards,
             "the " + std::string(mode == AsCopy::Compact ? "compacted" : "cloned") + " copy of " +
                 from[i].name +
                 (mode == AsCopy::Compact ? ", its compacted size" : ", the source's size")));

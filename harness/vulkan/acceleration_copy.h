@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "case/case.h"
+#include "vulkan/acceleration_structure.h"
 #include "vulkan/cleanup.h"
 #include "vulkan/context.h"
 #include "vulkan/memory_guards.h"
@@ -27,7 +28,8 @@ struct BuiltStructure {
   std::string name;
 };
 
-// The copies of `from` (all of `type`, built and complete), in order, made by
+// The copies of `from` (all of level `type`, built and complete; each copy
+// created as `making` says), in order, made by
 // vkCmdCopyAccelerationStructureKHR in `mode` (Clone or Compact), or through
 // memory (Serialize), readable by
 // builds and ray tracing shaders once this returns; each copy keeps its
@@ -37,7 +39,8 @@ struct BuiltStructure {
 // Or the Device error.
 Result<std::vector<BuiltStructure>> copyStructures(const VulkanContext& ctx,
                                                    const std::vector<BuiltStructure>& from,
-                                                   VkAccelerationStructureTypeKHR type, AsCopy mode,
+                                                   VkAccelerationStructureTypeKHR type,
+                                                   const StructureMaking& making, AsCopy mode,
                                                    MemoryGuards& guards, Cleanup& cleanup);
 
 }  // namespace rayspec

@@ -10,34 +10,69 @@
 #include "vulkan/acceleration_copy.h"
 #include "vulkan/build_batch.h"
 #include "vulkan/build_layout.h"
+#include "vulkan/build_log.h"
 #include "vulkan/commands.h"
 #include "vulkan/memory.h"
+#include "vulkan/sparse_buffer.h"
 #include "vulkan/vk_check.h"
 #include "vulkan/vk_fault_hook.h"
 
 namespace rayspec {
+namespace {
+
+constexpr VkBufferUsageFlags kStorageUsage =
+    VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR |
+    VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+    VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+
+// A structure's buffer and where in it the structure starts: bound whole, or
+// sparsely with the structure across the first page boundary.
+Result<SparseBuffer> storageFor(const VulkanContext& ctx, VkDeviceSize size, bool sparse,
+                                Cleanup& cleanup) {
+  if (sparse) return createSparseBuffer(ctx, guardedSize(size), kStorageUsage, true, cleanup);
+  SparseBuffer whole;
+  RAYSPEC_TRY(whole.buffer,
+              createBuffer(ctx, guardedSize(size), kStorageUsage, MemoryUse::Device, cleanup));
+  return whole;
+}
+
+void logStructure(VkAccelerationStructureKHR as, const VkAccelerationStructureCreateInfoKHR& info,
+                  VkAccelerationStructureTypeKHR level, VkDeviceSize page) {
+  if (BuildLog* log = buildLog())
+    log->structures.push_back({as, info.type, level, info.offset, info.size, page});
+}
+
+}  // namespace
+
+VkAccelerationStructureTypeKHR StructureMaking::createdAs(
+    VkAccelerationStructureTypeKHR level) const {
+  const bool bottom = level == VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR;
+  const bool named = generic == GenericLevels::Both ||
+                     generic == (bottom ? GenericLevels::Bottom : GenericLevels::Top);
+  return named ? VK_ACCELERATION_STRUCTURE_TYPE_GENERIC_KHR : level;
+}
+
 Result<VkAccelerationStructureKHR> createStructure(const VulkanContext& ctx,
-                                                   VkAccelerationStructureTypeKHR type,
-                                                   VkDeviceSize size, Cleanup& cleanup,
-                                                   MemoryGuards& guards, const std::string& what) {
-  RAYSPEC_TRY(const Buffer storage,
-              createBuffer(ctx, guardedSize(size),
-                           VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR |
-                               VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
-                               VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                           MemoryUse::Device, cleanup));
-  guards.add(storage.buffer, 0, size, what + " (" + std::to_string(size) + " bytes)");
+                                                   VkAccelerationStructureTypeKHR level,
+                                                   const StructureMaking& making, VkDeviceSize size,
+                                                   Cleanup& cleanup, MemoryGuards& guards,
+                                                   const std::string& what) {
+  RAYSPEC_TRY(const SparseBuffer storage, storageFor(ctx, size, making.sparse, cleanup));
+  guards.add(storage.buffer.buffer, storage.offset, size,
+             what + " (" + std::to_string(size) + " bytes)");
   VkAccelerationStructureCreateInfoKHR info{
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR};
-  info.buffer = storage.buffer;
+  info.buffer = storage.buffer.buffer;
+  info.offset = storage.offset;
   info.size = size;
-  info.type = type;
+  info.type = making.createdAs(level);
   VkAccelerationStructureKHR as = VK_NULL_HANDLE;
   RAYSPEC_TRY_VOID(vkCheck(ctx.fn.createAccelerationStructure(ctx.device, &info, nullptr, &as),
                            "vkCreateAccelerationStructureKHR"));
   VkDevice device = ctx.device;
   auto destroy = ctx.fn.destroyAccelerationStructure;
   cleanup.add([device, destroy, as] { destroy(device, as, nullptr); });
+  logStructure(as, info, level, storage.page);
   return as;
 }
 
@@ -188,7 +223,8 @@ std::string scratchName(const std::string& structure,
 // for, their scratch placed. Only BLASes some instance reaches are built.
 Result<Builds> createBlases(const VulkanContext& ctx, std::vector<BlasBuild>& builds,
                             const std::vector<bool>& used,
-                            VkBuildAccelerationStructureFlagsKHR flags, ScratchPlan& scratch,
+                            VkBuildAccelerationStructureFlagsKHR flags,
+                            const StructureMaking& making, ScratchPlan& scratch,
                             MemoryGuards& guards, Cleanup& cleanup) {
   Builds out;
   for (size_t i = 0; i < builds.size(); ++i) {
@@ -204,8 +240,8 @@ Result<Builds> createBlases(const VulkanContext& ctx, std::vector<BlasBuild>& bu
     b.size = sizes.accelerationStructureSize;
     const std::string name = "BLAS " + std::to_string(i);
     RAYSPEC_TRY(b.handle,
-                createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, b.size,
-                                cleanup, guards, name + ", its accelerationStructureSize"));
+                createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, making,
+                                b.size, cleanup, guards, name + ", its accelerationStructureSize"));
     info.dstAccelerationStructure = b.handle;
     b.address = structureAddress(ctx, b.handle);
     out.add(info, b.ranges.data(), scratch.add(sizes.buildScratchSize, scratchName(name, sizes)));
@@ -274,7 +310,7 @@ Result<Builds> createTlases(
     const VulkanContext& ctx,
     const std::vector<std::vector<VkAccelerationStructureGeometryKHR>>& geometry,
     uint32_t instance_count, const std::vector<VkAccelerationStructureBuildRangeInfoKHR>& ranges,
-    VkBuildAccelerationStructureFlagsKHR flags, ScratchPlan& scratch,
+    VkBuildAccelerationStructureFlagsKHR flags, const StructureMaking& making, ScratchPlan& scratch,
     std::vector<BuiltStructure>& structures, MemoryGuards& guards, Cleanup& cleanup) {
   Builds out;
   for (size_t level = 0; level < geometry.size(); ++level) {
@@ -288,7 +324,7 @@ Result<Builds> createTlases(
                                               &info, &instance_count, &sizes);
     const std::string name = "TLAS " + std::to_string(level);
     RAYSPEC_TRY(info.dstAccelerationStructure,
-                createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
+                createStructure(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, making,
                                 sizes.accelerationStructureSize, cleanup, guards,
                                 name + ", its accelerationStructureSize"));
     structures.push_back({info.dstAccelerationStructure, sizes.accelerationStructureSize, name});
@@ -307,7 +343,8 @@ Result<Builds> createTlases(
 // differ); returns the structures the last update wrote, which the traces use.
 Result<std::vector<VkAccelerationStructureKHR>> updateIntoOthers(
     const VulkanContext& ctx, std::vector<Builds>& updates, const Builds& built,
-    VkAccelerationStructureTypeKHR type, MemoryGuards& guards, Cleanup& cleanup) {
+    VkAccelerationStructureTypeKHR type, const StructureMaking& making, MemoryGuards& guards,
+    Cleanup& cleanup) {
   std::vector<VkAccelerationStructureKHR> current;
   for (const auto& info : built.infos) current.push_back(info.dstAccelerationStructure);
   for (size_t k = 0; k < updates.size(); ++k)
@@ -315,7 +352,7 @@ Result<std::vector<VkAccelerationStructureKHR>> updateIntoOthers(
       Builds& update = updates[k];
       RAYSPEC_TRY(
           VkAccelerationStructureKHR into,
-          createStructure(ctx, type, built.sizes[i], cleanup, guards,
+          createStructure(ctx, type, making, built.sizes[i], cleanup, guards,
                           "the structure update " + std::to_string(k + 1) + " of " +
                               built.names[i] + " wrote into, its accelerationStructureSize"));
       if (update.infos[i].mode == VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR)
@@ -334,11 +371,16 @@ class SceneBuilder {
  public:
   SceneBuilder(const VulkanContext& ctx, const Scene& scene,
                VkBuildAccelerationStructureFlagsKHR extra_flags, Cleanup& cleanup)
-      : ctx_(ctx), scene_(scene), flags_(buildFlags(scene.build) | extra_flags), cleanup_(cleanup) {
+      : ctx_(ctx),
+        scene_(scene),
+        flags_(buildFlags(scene.build) | extra_flags),
+        making_(StructureMaking::of(scene.build)),
+        cleanup_(cleanup) {
     for (const auto& e : scene.earlier) states_.push_back(e.get());
     states_.push_back(&scene);
     scratch_.align = ctx.as_props.minAccelerationStructureScratchOffsetAlignment;
     scratch_.shared = scene.build.one_by_one;
+    scratch_.sparse = scene.build.sparse;
   }
 
   Result<std::vector<BuiltStructure>> run() {
@@ -447,7 +489,8 @@ class SceneBuilder {
       for (auto& state : updates_)
         for (BlasBuild& b : state) patchAddresses(b, inputs.address);
     }
-    RAYSPEC_TRY(blases_, createBlases(ctx_, builds_, used, flags_, scratch_, guards_, cleanup_));
+    RAYSPEC_TRY(blases_,
+                createBlases(ctx_, builds_, used, flags_, making_, scratch_, guards_, cleanup_));
     for (const auto& state : updates_) {
       std::vector<const std::vector<VkAccelerationStructureGeometryKHR>*> geometries;
       std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
@@ -458,10 +501,10 @@ class SceneBuilder {
       blas_updates_.push_back(updatesOf(blases_, geometries, ranges, scratch_));
     }
     if (scene_.build.update_into_other && !blas_updates_.empty()) {
-      RAYSPEC_TRY(
-          const std::vector<VkAccelerationStructureKHR> last,
-          updateIntoOthers(ctx_, blas_updates_, blases_,
-                           VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, guards_, cleanup_));
+      RAYSPEC_TRY(const std::vector<VkAccelerationStructureKHR> last,
+                  updateIntoOthers(ctx_, blas_updates_, blases_,
+                                   VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, making_,
+                                   guards_, cleanup_));
       for (size_t k = 0; k < last.size(); ++k) {  // the instances reference these
         BlasBuild& b = builds_[blases_.blas[k]];
         b.handle = last[k];
@@ -489,7 +532,7 @@ class SceneBuilder {
       geometry_.push_back(instanceGeometry(instances_.back().address, *layout_, levels));
     }
     RAYSPEC_TRY(tlases_, createTlases(ctx_, geometry_[0], instance_count_, tlas_ranges_, flags_,
-                                      scratch_, tlas_structures_, guards_, cleanup_));
+                                      making_, scratch_, tlas_structures_, guards_, cleanup_));
     std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> ranges;
     for (const auto& range : tlas_ranges_) ranges.push_back(&range);
     for (size_t k = 1; k < states_.size(); ++k) {
@@ -499,10 +542,10 @@ class SceneBuilder {
           updatesOf(tlases_, geometries, ranges, scratch_, scene_.build.tlas_rebuilt));
     }
     if (scene_.build.update_into_other && !tlas_updates_.empty()) {
-      RAYSPEC_TRY(
-          const std::vector<VkAccelerationStructureKHR> last,
-          updateIntoOthers(ctx_, tlas_updates_, tlases_,
-                           VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, guards_, cleanup_));
+      RAYSPEC_TRY(const std::vector<VkAccelerationStructureKHR> last,
+                  updateIntoOthers(ctx_, tlas_updates_, tlases_,
+                                   VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, making_, guards_,
+                                   cleanup_));
       for (size_t k = 0; k < last.size(); ++k) tlas_structures_[k].handle = last[k];
     }
     return {};
@@ -550,7 +593,7 @@ class SceneBuilder {
       from.push_back({b.handle, b.size, blases_.names[k]});
     }
     RAYSPEC_TRY(const std::vector<BuiltStructure> to,
-                copyStructures(ctx_, from, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR,
+                copyStructures(ctx_, from, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, making_,
                                scene_.build.copy, guards_, cleanup_));
     RAYSPEC_TRY_VOID(checkGuardsAtCopy("bottom levels"));
     for (size_t k = 0; k < to.size(); ++k) {
@@ -568,7 +611,7 @@ class SceneBuilder {
   Result<void> copyTlases() {
     RAYSPEC_TRY(tlas_structures_,
                 copyStructures(ctx_, tlas_structures_, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
-                               scene_.build.copy, guards_, cleanup_));
+                               making_, scene_.build.copy, guards_, cleanup_));
     RAYSPEC_TRY_VOID(checkGuardsAtCopy("top levels"));
     std::vector<VkDeviceSize> room = roomOf(tlas_structures_);
     if (scene_.build.tlas_rebuilt && scene_.updatesBeforeCopy() < updates())
@@ -590,7 +633,7 @@ class SceneBuilder {
       if (room[i] >= size) continue;
       const std::string name = tlases_.names[i];
       RAYSPEC_TRY(const VkAccelerationStructureKHR into,
-                  createStructure(ctx_, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, size,
+                  createStructure(ctx_, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, making_, size,
                                   cleanup_, guards_,
                                   "the structure " + name +
                                       " is rebuilt into after its copy, its "
@@ -605,6 +648,7 @@ class SceneBuilder {
   const Scene& scene_;                // as the traces see it
   std::vector<const Scene*> states_;  // as first built, after each update (the last: scene_)
   const VkBuildAccelerationStructureFlagsKHR flags_;  // every build's and update's
+  const StructureMaking making_;
   Cleanup& cleanup_;
   ScratchPlan scratch_;
   MemoryGuards guards_;

@@ -37,12 +37,25 @@ Result<std::vector<BuiltStructure>> buildScene(const VulkanContext& ctx, const S
                                                Cleanup& cleanup,
                                                std::vector<std::string>& overruns);
 
+// How a scene's structures are made (scene.build.generic, scene.build.sparse).
+struct StructureMaking {
+  GenericLevels generic = GenericLevels::None;
+  bool sparse = false;
+  static StructureMaking of(const AsBuild& build) { return {build.generic, build.sparse}; }
+  // The type a structure of level `level` (bottom or top) is created with:
+  // GENERIC where scene.build.generic names its level.
+  VkAccelerationStructureTypeKHR createdAs(VkAccelerationStructureTypeKHR level) const;
+};
+
 // The structure's storage buffer and the structure (size bytes), destroyed
 // by cleanup; a guard after its size (R-AS-MEMORY), `what` naming the
-// structure and which of its sizes the device reported.
+// structure and which of its sizes the device reported. `level` is the type
+// its builds name; it is created as `making` says: with the GENERIC type, or
+// in a sparse buffer (vulkan/sparse_buffer.h), placed across a page boundary.
 Result<VkAccelerationStructureKHR> createStructure(const VulkanContext& ctx,
-                                                   VkAccelerationStructureTypeKHR type,
-                                                   VkDeviceSize size, Cleanup& cleanup,
-                                                   MemoryGuards& guards, const std::string& what);
+                                                   VkAccelerationStructureTypeKHR level,
+                                                   const StructureMaking& making, VkDeviceSize size,
+                                                   Cleanup& cleanup, MemoryGuards& guards,
+                                                   const std::string& what);
 
 }  // namespace rayspec

@@ -3,8 +3,10 @@
 #include <algorithm>
 
 #include "base/align.h"
+#include "vulkan/build_log.h"
 #include "vulkan/commands.h"
 #include "vulkan/memory.h"
+#include "vulkan/sparse_buffer.h"
 
 namespace rayspec {
 namespace {
@@ -40,12 +42,17 @@ VkDeviceSize ScratchPlan::add(VkDeviceSize size, const std::string& what) {
 
 Result<VkDeviceAddress> createScratch(const VulkanContext& ctx, const ScratchPlan& scratch,
                                       MemoryGuards& guards, Cleanup& cleanup) {
-  RAYSPEC_TRY(
-      const Buffer buffer,
-      createBuffer(ctx, scratch.total + scratch.align,
-                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
-                       VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                   MemoryUse::Device, cleanup));
+  constexpr VkBufferUsageFlags usage =
+      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
+      VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+  const VkDeviceSize size = scratch.total + scratch.align;
+  Buffer buffer;
+  if (scratch.sparse) {
+    RAYSPEC_TRY(const SparseBuffer sparse, createSparseBuffer(ctx, size, usage, false, cleanup));
+    buffer = sparse.buffer;
+  } else {
+    RAYSPEC_TRY(buffer, createBuffer(ctx, size, usage, MemoryUse::Device, cleanup));
+  }
   const VkDeviceAddress base = alignUp(buffer.address, scratch.align);
   for (const ScratchPlan::Region& r : scratch.regions)
     guards.add(buffer.buffer, base - buffer.address + r.offset, r.size, r.what);
@@ -82,6 +89,9 @@ void Builds::record(const VulkanContext& ctx, VkCommandBuffer cmd, VkPipelineSta
 void Builds::recordBuilds(const VulkanContext& ctx, VkCommandBuffer cmd, size_t first,
                           size_t count) const {
   const uint32_t n = static_cast<uint32_t>(count);
+  if (BuildLog* log = buildLog())
+    for (size_t i = first; i < first + count; ++i)
+      log->builds.push_back({infos[i].dstAccelerationStructure, infos[i].type});
   if (indirect_ranges.empty())
     ctx.fn.cmdBuildAccelerationStructures(cmd, n, &infos[first], &ranges[first]);
   else

@@ -24,6 +24,7 @@ struct ScratchPlan {
   VkDeviceSize align = 0;
   VkDeviceSize total = 0;
   bool shared = false;  // scene.build.one_by_one: every build at offset 0, one after another
+  bool sparse = false;  // scene.build.sparse: the buffer in sparse-bound memory
   struct Region {
     VkDeviceSize offset, size;
     std::string what;

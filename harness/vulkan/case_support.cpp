@@ -68,6 +68,26 @@ Result<void> checkPositionFetch(const DeviceInfo& d, uint32_t validation_layer) 
   return {};
 }
 
+// How scene.build records its builds and binds its memory.
+Result<void> checkBuildSupport(const DeviceInfo& d, const AsBuild& build) {
+  if (build.command == BuildCommand::Indirect && !d.acceleration_structure_indirect_build)
+    return notSupported(
+        "scene.build.command indirect: the device lacks accelerationStructureIndirectBuild");
+  if (build.sparse && !d.sparse_binding)
+    return notSupported("scene.build.sparse: the device lacks sparseBinding");
+  if (build.sparse && !d.sparse_binding_queue)
+    return notSupported(
+        "scene.build.sparse: the queue family rayspec runs on (the first with compute) lacks "
+        "VK_QUEUE_SPARSE_BINDING_BIT");
+  if (build.command == BuildCommand::Host)
+    return notSupported(
+        d.acceleration_structure_host_commands
+            ? "scene.build.command host: rayspec records no host builds yet (the device has "
+              "accelerationStructureHostCommands)"
+            : "scene.build.command host: the device lacks accelerationStructureHostCommands");
+  return {};
+}
+
 }  // namespace
 
 bool validationLayerKnows(uint32_t validation_layer, uint32_t since) {
@@ -96,15 +116,7 @@ Result<void> checkCaseSupport(const DeviceInfo& d, uint32_t validation_layer, co
     return notSupported(
         "rays.command indirect2: the device lacks VK_KHR_ray_tracing_maintenance1's "
         "rayTracingPipelineTraceRaysIndirect2");
-  if (c.scene.build.command == BuildCommand::Indirect && !d.acceleration_structure_indirect_build)
-    return notSupported(
-        "scene.build.command indirect: the device lacks accelerationStructureIndirectBuild");
-  if (c.scene.build.command == BuildCommand::Host)
-    return notSupported(
-        d.acceleration_structure_host_commands
-            ? "scene.build.command host: rayspec records no host builds yet (the device has "
-              "accelerationStructureHostCommands)"
-            : "scene.build.command host: the device lacks accelerationStructureHostCommands");
+  RAYSPEC_TRY_VOID(checkBuildSupport(d, c.scene.build));
   if (plan.position_fetch) RAYSPEC_TRY_VOID(checkPositionFetch(d, validation_layer));
   if ((c.pipeline.ray_query || c.pipeline.ray_query_in_hit) && !d.ray_query)
     return notSupported(

@@ -127,6 +127,7 @@ Result<void> createDevice(VulkanContext& ctx) {
   maintenance1_on.rayTracingPipelineTraceRaysIndirect2 = ctx.info.trace_rays_indirect2;
   VkPhysicalDeviceFeatures2 on{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   on.features.shaderInt64 = have.features.shaderInt64;
+  on.features.sparseBinding = have.features.sparseBinding;  // scene.build.sparse
   on.pNext = &v12_on;
   v12_on.pNext = &rt_on;
   rt_on.pNext = &as_on;

@@ -105,6 +105,10 @@ using DeviceLaunchSize = std::array<uint64_t, 3>;
     "accelerationStructureHostCommands", "the acceleration structure feature")                     \
   X(bool, acceleration_structure_indirect_build, "acceleration_structure_indirect_build",          \
     "accelerationStructureIndirectBuild", "the acceleration structure feature")                    \
+  X(bool, sparse_binding, "sparse_binding", "sparseBinding",                                       \
+    "the device feature (scene.build.sparse, --through sparse)")                                   \
+  X(bool, sparse_binding_queue, "sparse_binding_queue", "sparse binding queue",                    \
+    "the queue family rayspec runs on (the first with compute) has VK_QUEUE_SPARSE_BINDING_BIT")   \
   X(bool, ray_traversal_primitive_culling, "ray_traversal_primitive_culling",                      \
     "rayTraversalPrimitiveCulling",                                                                \
     "the ray tracing pipeline feature (skip_triangles, skip_aabbs)")                               \

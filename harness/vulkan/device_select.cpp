@@ -175,6 +175,21 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
       d.position_fetch && d.acceleration_structure && position_fetch.ray_tracing_position_fetch;
   d.library_group_handles = d.library_group_handles && group_handles.pipeline_library_group_handles;
   d.ray_query = d.ray_query && ray_query.rayQuery;
+  d.sparse_binding = features.features.sparseBinding;
+}
+
+// Whether the queue family rayspec runs on, the first with compute
+// (vulkan/device.cpp), binds sparse memory.
+void readQueues(VkPhysicalDevice physical, DeviceInfo& d) {
+  uint32_t count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, families.data());
+  for (const VkQueueFamilyProperties& f : families)
+    if (f.queueFlags & VK_QUEUE_COMPUTE_BIT) {
+      d.sparse_binding_queue = f.queueFlags & VK_QUEUE_SPARSE_BINDING_BIT;
+      return;
+    }
 }
 
 }  // namespace
@@ -200,6 +215,7 @@ DeviceInfo describeDevice(VkPhysicalDevice physical, uint32_t index) {
   readExtensions(physical, d);
   readProperties(physical, d);
   readFeatures(physical, d);
+  readQueues(physical, d);
   readVertexFormats(physical, d);
   return d;
 }

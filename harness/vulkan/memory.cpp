@@ -131,13 +131,21 @@ Result<Buffer> createBuffer(const VulkanContext& ctx, VkDeviceSize size, VkBuffe
   RAYSPEC_TRY_VOID(
       vkCheck(vkBindBufferMemory(device, b.buffer, at->memory, at->offset), "vkBindBufferMemory"));
   if (use == MemoryUse::Host) b.mapped = at->mapped;
-  const bool device_address = usage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
-  if (device_address) {
-    VkBufferDeviceAddressInfo ai{VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO};
-    ai.buffer = b.buffer;
-    b.address = vkGetBufferDeviceAddress(device, &ai);
-  }
+  if (usage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT)
+    b.address = bufferAddress(device, b.buffer);
   return b;
+}
+
+VkDeviceAddress bufferAddress(VkDevice device, VkBuffer buffer) {
+  VkBufferDeviceAddressInfo ai{VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO};
+  ai.buffer = buffer;
+  return vkGetBufferDeviceAddress(device, &ai);
+}
+
+Result<VkDeviceMemory> allocateMemory(const VulkanContext& ctx, VkDeviceSize size,
+                                      uint32_t type_bits, MemoryUse use) {
+  RAYSPEC_TRY(const uint32_t type, memoryTypeFor(ctx, type_bits, use));
+  return allocate(ctx, size, type, true);
 }
 
 Result<Buffer> createUploadBuffer(const VulkanContext& ctx, const void* data, VkDeviceSize bytes,

@@ -35,6 +35,13 @@ Result<Buffer> createBuffer(const VulkanContext& ctx, VkDeviceSize size, VkBuffe
 Result<Buffer> createUploadBuffer(const VulkanContext& ctx, const void* data, VkDeviceSize bytes,
                                   VkBufferUsageFlags usage, Cleanup& cleanup);
 
+// A VkDeviceMemory of its own for `size` bytes: a type in type_bits that fits
+// `use`, allocated with DEVICE_ADDRESS; the caller frees it.
+Result<VkDeviceMemory> allocateMemory(const VulkanContext& ctx, VkDeviceSize size,
+                                      uint32_t type_bits, MemoryUse use);
+// The device address of a buffer made with SHADER_DEVICE_ADDRESS usage.
+VkDeviceAddress bufferAddress(VkDevice device, VkBuffer buffer);
+
 struct StorageImage {
   VkImage image = VK_NULL_HANDLE;
   VkDeviceMemory memory = VK_NULL_HANDLE;
