@@ -13,6 +13,7 @@
 
 #include "export/c_text.h"
 #include "export/export_c.h"
+#include "export/export_support.h"
 #include "library/case_discovery.h"
 #include "model/model_engine.h"
 #include "results/record_layout.h"
@@ -179,6 +180,18 @@ TEST(ExportC, RefusesWhatItDoesNotPlayNamingTheFeature) {
     EXPECT_EQ(text.error().kind, ErrorKind::NotSupported) << name;
     EXPECT_EQ(text.error().message, message) << name;
   }
+}
+
+TEST(ExportC, RefusesALaunchTooWideToEmbed) {
+  Loaded l = load("culling/facing-cull");
+  const Results model = modelOf(l);
+  l.c.rays.width = static_cast<uint32_t>(kMaxExportedRays) + 1;
+  l.c.rays.height = 1;
+  const Result<std::string> text = exportCaseAsC(l.c, l.plan, model);
+  ASSERT_FALSE(text);
+  EXPECT_EQ(text.error().message,
+            "export: case uses a launch of 65537 rays (at most 65536 are "
+            "embedded), not yet exported");
 }
 
 TEST(ExportC, ANotSupportedVertexFormatExitsSeventySevenNamingIt) {

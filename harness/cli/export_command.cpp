@@ -45,7 +45,7 @@ int runExport(const ExportOptions& opt) {
                  "expectations from\n");
     return 2;
   }
-  const std::optional<CaseFile> file = caseToShow(opt.case_file, opt.cases_dir);
+  const std::optional<CaseFile> file = caseToShow(opt.case_file, opt.cases_dir, "exporting");
   if (!file) {
     std::fprintf(stderr,
                  "rayspec export: no such case file: '%s' (neither a file nor a case "

@@ -41,6 +41,9 @@ std::string sceneFeature(const Case& c) {
       if (g.kind != Geometry::Kind::Triangles) return "AABB geometry";
   }
   if (c.rays.command != TraceCommand::Direct) return "an indirect trace (rays.command)";
+  if (const uint64_t rays = uint64_t(c.rays.width) * c.rays.height; rays > kMaxExportedRays)
+    return "a launch of " + std::to_string(rays) + " rays (at most " +
+           std::to_string(kMaxExportedRays) + " are embedded)";
   return "";
 }
 

@@ -3,6 +3,7 @@
 // plays and its expectations are ones the player's comparison can hold.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "case/case.h"
@@ -10,6 +11,10 @@
 #include "results/results.h"
 
 namespace rayspec {
+
+// The most rays a reproducer embeds the records of (61 words a ray: a file
+// of about 25 MB of C at most).
+constexpr uint64_t kMaxExportedRays = 1u << 16;
 
 // "" when the case can be exported; else the feature it uses that the export
 // does not handle yet, named for "export: case uses X, not yet exported".
