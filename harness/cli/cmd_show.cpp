@@ -37,23 +37,6 @@ void printVocabulary() {
 
 const char* const kRulesFile = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
 
-// The case a `show` argument names: a case file (a sweep file: its first
-// variant, the others listed), or a case name under cases_dir.
-std::optional<CaseFile> caseToShow(const std::string& given, const std::string& cases_dir) {
-  std::error_code ec;
-  if (std::filesystem::is_regular_file(given, ec)) {
-    std::vector<CaseFile> files = caseFilesFor(given, cases_dir);
-    if (files.size() > 1) {
-      std::printf("%s is a sweep of %zu cases; showing the first (name one to see it):\n",
-                  given.c_str(), files.size());
-      for (const CaseFile& f : files) std::printf("  %s\n", f.name.c_str());
-      std::printf("\n");
-    }
-    return files.front();
-  }
-  return findCase(given, "", cases_dir);
-}
-
 void printShader(const GeneratedShader& s) {
   std::printf("\n--- %s (%s) ---\n%s", s.name.c_str(), stageName(s.stage), s.glsl.c_str());
 }
@@ -90,6 +73,22 @@ void printModelAndPortability(const Case& c) {
 
 }  // namespace
 
+std::optional<CaseFile> caseToShow(const std::string& given, const std::string& cases_dir,
+                                   const char* verb) {
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(given, ec)) {
+    std::vector<CaseFile> files = caseFilesFor(given, cases_dir);
+    if (files.size() > 1) {
+      std::printf("%s is a sweep of %zu cases; %s the first (name one to take it):\n",
+                  given.c_str(), files.size(), verb);
+      for (const CaseFile& f : files) std::printf("  %s\n", f.name.c_str());
+      std::printf("\n");
+    }
+    return files.front();
+  }
+  return findCase(given, "", cases_dir);
+}
+
 int runShow(const ShowOptions& opt) {
   if (opt.vocabulary) {
     printVocabulary();
@@ -99,7 +98,7 @@ int runShow(const ShowOptions& opt) {
     std::fprintf(stderr, "rayspec show: give a case file or name\n");
     return 2;
   }
-  const std::optional<CaseFile> file = caseToShow(opt.case_file, opt.cases_dir);
+  const std::optional<CaseFile> file = caseToShow(opt.case_file, opt.cases_dir, "showing");
   if (!file) {
     std::fprintf(
         stderr, "rayspec show: no such case file: '%s' (neither a file nor a case name under %s)\n",

@@ -2,9 +2,11 @@
 // (runCases with run/run_options.h); the others are here.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "library/case_discovery.h"
 #include "run/run_options.h"  // RAYSPEC_SOURCE_DIR
 
 namespace rayspec {
@@ -66,6 +68,11 @@ inline constexpr const char* kPlantFaultHelp =
 
 int runDevices(const DevicesOptions& opt);
 int runShow(const ShowOptions& opt);
+// The case a `show` or `export` argument names: a case file (a sweep file:
+// its first variant, the others listed after "showing" or "exporting", the
+// verb), or a case name under cases_dir.
+std::optional<CaseFile> caseToShow(const std::string& given, const std::string& cases_dir,
+                                   const char* verb);
 int runList(const ListOptions& opt);
 int runCompile(const CompileOptions& opt);
 int runCompare(const CompareOptions& opt);

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
       addStabilityCommand(app), addAccuracyCommand(app), addMutateCommand(app),
       addCompileCommand(app),   addReduceCommand(app),   addFuzzCommand(app),
       addFaultsCommand(app),    addProveCommand(app),    addCheckCommand(app),
+      addExportCommand(app),
   };
   try {
     app.parse(argc, argv);

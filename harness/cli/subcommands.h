@@ -35,5 +35,7 @@ Subcommand addFuzzCommand(CLI::App& app);
 Subcommand addFaultsCommand(CLI::App& app);
 // cli/prove_command.cpp: a case's rule claims proven by planted faults
 Subcommand addProveCommand(CLI::App& app);
+// cli/export_command.cpp: a case as a standalone C reproducer
+Subcommand addExportCommand(CLI::App& app);
 
 }  // namespace rayspec

@@ -1,0 +1,62 @@
+#include "export/export_c.h"
+
+#include "export/c_text.h"
+#include "export/export_sections.h"
+#include "export/export_support.h"
+#include "glsl/generate_glsl.h"
+#include "vulkan/pipeline.h"
+#include "vulkan/vk_check.h"
+
+namespace rayspec {
+namespace {
+
+constexpr const char* kDataMarker = "/* RAYSPEC_CASE_DATA */";
+
+std::string rulesText(const Case& c) {
+  std::string out;
+  for (const std::string& r : c.rules) out += (out.empty() ? "" : ", ") + r;
+  return out.empty() ? "(none)" : out;
+}
+
+// The file's opening comment: what it is, how to build and run it.
+std::string header(const Case& c) {
+  return "/* rayspec export of case " + c.name + " (" + c.file +
+         ")\n"
+         " * Rules it checks: " +
+         rulesText(c) +
+         "\n"
+         " * A standalone reproducer: the case's scene, pipeline (SPIR-V, with the GLSL it was\n"
+         " * compiled from in comments), shader binding table and rays, traced on a Vulkan\n"
+         " * device, and each result compared with what rayspec's reference model expects.\n"
+         " *\n"
+         " * Build: cc repro.c -lvulkan -o repro   (add -DRAYSPEC_VALIDATION for the\n"
+         " *        validation layer, when installed)\n"
+         " * Run:   ./repro [DEVICE]   (DEVICE: an index, or a part of the device's name;\n"
+         " *        default: the first device with VK_KHR_ray_tracing_pipeline)\n"
+         " * Exit:  0 PASS; 1 FAIL, printing the rule, the ray, the field, the expected and\n"
+         " *        the observed value; 77 NotSupported, naming the missing feature;\n"
+         " *        2 a Vulkan call failed.\n"
+         " */\n";
+}
+
+}  // namespace
+
+Result<std::string> exportCaseAsC(const Case& c, const Plan& plan, const Results& model) {
+  if (const std::string feature = unexportedFeature(c, plan, model); !feature.empty())
+    return notSupported("export: case uses " + feature + ", not yet exported");
+  const GeneratedPipeline generated = generateGlsl(c, plan);
+  RAYSPEC_TRY(const CompiledPipeline compiled, compilePipeline(generated));
+  RAYSPEC_TRY(const std::string launch, launchSection(c, plan, compiled));
+  const std::string data = "#define RS_CASE_NAME " + cString(c.name) + "\n\n" +
+                           sceneSection(c.scene) +
+                           pipelineSection(c.pipeline, generated, compiled) + launch +
+                           expectationsSection(c, plan, model);
+  std::string player = exportPlayerSource();
+  const size_t at = player.find(kDataMarker);
+  if (at == std::string::npos)
+    return errorOf(ErrorKind::Harness, "export: the embedded player has no data marker");
+  player.replace(at, std::string(kDataMarker).size(), data);
+  return header(c) + player;
+}
+
+}  // namespace rayspec
