@@ -20,14 +20,6 @@
 
 namespace rayspec {
 
-// One structure to copy: the handle, the size it was created with, and what
-// the guards call it ("BLAS 2", "TLAS 0").
-struct BuiltStructure {
-  VkAccelerationStructureKHR handle = VK_NULL_HANDLE;
-  VkDeviceSize size = 0;
-  std::string name;
-};
-
 // The copies of `from` (all of level `type`, built and complete; each copy
 // created as `making` says), in order, made by
 // vkCmdCopyAccelerationStructureKHR in `mode` (Clone or Compact), or through

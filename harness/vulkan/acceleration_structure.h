@@ -5,7 +5,7 @@
 #include <vulkan/vulkan.h>
 
 #include "case/case.h"
-#include "vulkan/acceleration_copy.h"
+#include "vulkan/built_structure.h"
 #include "vulkan/cleanup.h"
 #include "vulkan/context.h"
 #include "vulkan/memory_guards.h"
