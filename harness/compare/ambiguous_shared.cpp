@@ -90,10 +90,13 @@ bool sameIdentity(const uint32_t* d, const uint32_t* m) {
 }
 
 // Ambiguities whose legal answers' t the model knows to the device's
-// rounding: triangles through an edge or vertex, ties, interval ends.
+// rounding: triangles through an edge or vertex, ties, interval ends; and to
+// the ray's t bound, a triangle the ray runs in the plane of (hit anywhere
+// across it).
 bool legalTKnown(AmbiguityReason r) {
   return r == AmbiguityReason::Edge || r == AmbiguityReason::Vertex || r == AmbiguityReason::TTie ||
-         r == AmbiguityReason::TmaxTie || r == AmbiguityReason::TminTie;
+         r == AmbiguityReason::TmaxTie || r == AmbiguityReason::TminTie ||
+         r == AmbiguityReason::InPlane;
 }
 
 // The device's hit_t is the t of a legal hit (or of a hit behind a shared
