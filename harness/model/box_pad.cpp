@@ -191,7 +191,8 @@ double instanceBoxPad(const Instance& inst, const Box& box, const std::vector<DV
     FrameError err;
     objectRayFrameError(form, inv, inv_f, q, {1, 1, 1}, err);
     const DVec3 o = form == InstanceForm::Identity ? q : applyAffine(inv, q, 1.0);
-    const double p = kDeviceRelTolerance * std::max(largestMagnitude(o), magnitude) + largestMagnitude(err.origin) +
+    const double p = kDeviceRelTolerance * std::max(largestMagnitude(o), magnitude) +
+                     largestMagnitude(err.origin) +
                      (largestMagnitude(q) + world) * largestMagnitude(err.direction);
     if (std::isfinite(p)) pad = std::max(pad, p);
   }

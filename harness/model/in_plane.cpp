@@ -13,7 +13,8 @@ double planeSlack(const WatertightRay& w, const DVec3* const v[3], const DVec3& 
   double reach = 0;  // S: the largest translated coordinate
   for (int j = 0; j < 3; ++j) reach = std::max(reach, largestMagnitude(sub(*v[j], w.o)));
   return kDeviceRelTolerance * reach + largestMagnitude(w.origin_err) +
-         reach / largestMagnitude(w.d) * largestMagnitude(w.direction_err) + largestMagnitude(vertex_err);
+         reach / largestMagnitude(w.d) * largestMagnitude(w.direction_err) +
+         largestMagnitude(vertex_err);
 }
 
 }  // namespace

@@ -307,8 +307,7 @@ bool ModelTracer::anyHitMayTerminate(const Traversal& tr,
   if (!sh_.programs->any_hit_terminates) return false;
   const ModelScene& scene = *sh_.scene;
   for (const ModelCandidate& cand : cands) {
-    if (cand.outside || (!cand.aabb && !cand.hit && cand.ambiguity == TriAmbiguity::None))
-      continue;
+    if (cand.outside || (!cand.aabb && !cand.hit && cand.ambiguity == TriAmbiguity::None)) continue;
     const ModelInstance& mi = scene.instances[cand.instance];
     const ModelGeometry& g = scene.blases[mi.blas].geometries[cand.geometry];
     if (resolveOpaque(g.flags, mi.src->flags, tr.flags)) continue;
@@ -478,7 +477,9 @@ std::vector<WhatIfAnswer> ModelTracer::whatIf(const Traversal& actual,
     size_t g1 = g0 + 1;
     // A triangle the ray runs in the plane of, or a box its ray misses, is a
     // group of its own (none of it hit is no leak: the model's own answer).
-    auto alone = [&](size_t u) { return cands[unsure[u]].in_plane || cands[unsure[u]].outside; };
+    auto alone = [&](size_t u) {
+      return cands[unsure[u]].in_plane || cands[unsure[u]].outside;
+    };
     while (g1 < unsure.size() && !alone(g0) && !alone(g1) &&
            std::fabs(cands[unsure[g1]].t - cands[unsure[g1 - 1]].t) <=
                actual.tol(cands[unsure[g1]].t))

@@ -126,7 +126,8 @@ const WatertightRay& objectRay(TraceContext& tc, ModelTier tier, uint32_t inst) 
     objectRayFrameError(mi.form, mi.inverse, mi.inverse_f, tc.origin, tc.direction, err);
   tc.object_ray = prepareWatertightRay(applyAffine(mi.inverse, tc.origin, 1.0),
                                        applyAffine(mi.inverse, tc.direction, 0.0), err);
-  tc.object_exact = tier == ModelTier::Exact && objectRayExact(mi.form, mi.src->transform, tc.origin);
+  tc.object_exact =
+      tier == ModelTier::Exact && objectRayExact(mi.form, mi.src->transform, tc.origin);
   return tc.object_ray;
 }
 
@@ -198,7 +199,8 @@ void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
   c.b2 = static_cast<float>(h.b2);
   c.ambiguity = g->tier == ModelTier::Exact ? h.ambiguity : TriAmbiguity::None;
   c.t_err = h.t_err;
-  if (h.in_plane && g->tier == ModelTier::Exact && !placeInPlane(c, *tc, wr, v0, v1, v2, vertex_err))
+  if (h.in_plane && g->tier == ModelTier::Exact &&
+      !placeInPlane(c, *tc, wr, v0, v1, v2, vertex_err))
     return;
   if (g->tier == ModelTier::Exact && g->vertex_err == DVec3{} && tc->object_exact && !c.in_plane) {
     const ExactEnds ends = exactEnds(o, d, v0, v1, v2, h.t, tc->tmin, tc->tmax);
