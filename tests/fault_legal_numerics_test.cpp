@@ -18,17 +18,17 @@ namespace {
 
 using namespace model_test;
 
-uint32_t* recordOf(Results& r, uint32_t ray) {
+uint32_t* rayRecord(Results& r, uint32_t ray) {
   return &r.records[static_cast<size_t>(ray) * recordWords()];
 }
 
 // Ray `to`'s record made ray `from`'s (a device answering there as there).
 void copyRecord(Results& d, uint32_t from, uint32_t to) {
-  std::copy(recordOf(d, from), recordOf(d, from) + recordWords(), recordOf(d, to));
+  std::copy(rayRecord(d, from), rayRecord(d, from) + recordWords(), rayRecord(d, to));
 }
 
 void setHitT(Results& d, uint32_t ray, float t) {
-  recordOf(d, ray)[findRecordField("hit_t")->offset] = std::bit_cast<uint32_t>(t);
+  rayRecord(d, ray)[findRecordField("hit_t")->offset] = std::bit_cast<uint32_t>(t);
 }
 
 // A unit box whose intersection program reports where the ray meets its
