@@ -21,7 +21,9 @@ namespace rayspec {
 // with S the largest |v - o| (the translated frame the device computes in,
 // as watertight.h; the line's points near the triangle lie at t <= S / |d|).
 // Empty where the line passes the triangle by more; nullopt where the
-// triangle has no plane (zero area: no face to lie in).
+// triangle has no plane (zero area: no face to lie in), or where every
+// device sees the ray exactly in it (no frame error, a coordinate plane the
+// ray runs in: a zero-area projection, culled, R-FACE-DET).
 std::optional<Span> inPlaneSpan(const WatertightRay& ray, const DVec3& v0, const DVec3& v1,
                                 const DVec3& v2, const DVec3& vertex_err);
 
