@@ -1,5 +1,6 @@
 #include "base/vec3.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rayspec {
@@ -26,6 +27,10 @@ double dot(const DVec3& a, const DVec3& b) {
 
 double length(const DVec3& a) {
   return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+}
+
+double largestMagnitude(const DVec3& a) {
+  return std::max({std::fabs(a[0]), std::fabs(a[1]), std::fabs(a[2])});
 }
 
 DVec3 scaled(const DVec3& a, double s) {

@@ -17,6 +17,7 @@ DVec3 sub(const DVec3& a, const DVec3& b);
 DVec3 cross(const DVec3& a, const DVec3& b);
 double dot(const DVec3& a, const DVec3& b);
 double length(const DVec3& a);
+double largestMagnitude(const DVec3& a);  // the infinity norm: max |a_k|
 DVec3 scaled(const DVec3& a, double s);
 DVec3 axpy(const DVec3& p, const DVec3& u, double s);  // p + u s
 

@@ -90,10 +90,13 @@ bool sameIdentity(const uint32_t* d, const uint32_t* m) {
 }
 
 // Ambiguities whose legal answers' t the model knows to the device's
-// rounding: triangles through an edge or vertex, ties, interval ends.
+// rounding: triangles through an edge or vertex, ties, interval ends; and to
+// the ray's t bound, a triangle the ray runs in the plane of (hit anywhere
+// across it).
 bool legalTKnown(AmbiguityReason r) {
   return r == AmbiguityReason::Edge || r == AmbiguityReason::Vertex || r == AmbiguityReason::TTie ||
-         r == AmbiguityReason::TmaxTie || r == AmbiguityReason::TminTie;
+         r == AmbiguityReason::TmaxTie || r == AmbiguityReason::TminTie ||
+         r == AmbiguityReason::InPlane;
 }
 
 // The device's hit_t is the t of a legal hit (or of a hit behind a shared
@@ -171,8 +174,12 @@ void checkAmbiguousShared(const Case& c, const TraceShape& shape, const RayAmbig
                  a.ray);
     return;
   }
-  if (d_chit && m_chit && legalTKnown(a.reason) && written(d, recordFieldIndex("hit_t")) &&
-      written(m, recordFieldIndex("hit_t")) && !tOfALegalHit(a, d, bounds.t))
+  // The model's own answer on a ray in a triangle's plane is a miss: its
+  // legal hit's t is known all the same.
+  const bool model_t = (d_chit && m_chit && written(m, recordFieldIndex("hit_t"))) ||
+                       (d_chit && a.reason == AmbiguityReason::InPlane);
+  if (model_t && legalTKnown(a.reason) && written(d, recordFieldIndex("hit_t")) &&
+      !tOfALegalHit(a, d, bounds.t))
     addWrong(wrongs, "legal hit_t", "R-PREC",
              "hit_t is the t of no legal hit that fits the recorded identity" + why, a.ray);
 }

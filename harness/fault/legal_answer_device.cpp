@@ -72,4 +72,10 @@ Results aabbNeighboursDevice(const Case& c, const Plan& plan, unsigned threads) 
   return modelAs(c, plan, f, threads);
 }
 
+Results aabbNearDevice(const Case& c, const Plan& plan, unsigned threads) {
+  ModelFaults f;
+  f.aabb_near_offered = true;
+  return modelAs(c, plan, f, threads);
+}
+
 }  // namespace rayspec

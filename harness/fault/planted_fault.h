@@ -71,6 +71,10 @@ Results passBetweenEdgesDevice(const Case& c, const Plan& plan, unsigned threads
 // neighbours (R-AABB-CONS: conservative, legal): intersection programs run
 // for every box grown by its own extent on each side.
 Results aabbNeighboursDevice(const Case& c, const Plan& plan, unsigned threads);
+// The model's exact tier as a device that offers every box a ray passes
+// within its error bound of (R-AABB-CONS, R-PREC: model/box_bound.h), the
+// boxes the model's own ray misses among them (a far origin's rounding).
+Results aabbNearDevice(const Case& c, const Plan& plan, unsigned threads);
 
 // The model's exact tier as devices that decide one candidate after every
 // other, the rest near to far (R-ORDER-UNSPEC: a device may meet last the

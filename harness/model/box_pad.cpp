@@ -60,6 +60,7 @@
 #include "base/float_steps.h"
 #include "case/transform.h"
 #include "model/frame_error.h"
+#include "model/watertight.h"
 
 namespace rayspec {
 
@@ -104,21 +105,26 @@ DVec3 corner(const Box& b, int i) {
   return {(i & 1) ? b.hi[0] : b.lo[0], (i & 2) ? b.hi[1] : b.lo[1], (i & 4) ? b.hi[2] : b.lo[2]};
 }
 
-}  // namespace
-
-std::vector<double> blasRayPads(const Case& c, double exact_pairs) {
-  const size_t nb = c.scene.blases.size();
-  std::vector<Box> boxes(nb);
-  for (size_t b = 0; b < nb; ++b) boxes[b] = blasBox(c.scene.blases[b]);
-  // The ray origins: launch rays, and the corners of the world box.
+// The BLASes' boxes and the ray origins (box_pad.h): the launch rays', and
+// the corners of the world box.
+struct PadScene {
+  std::vector<Box> boxes;
   std::vector<DVec3> origins;
+};
+
+PadScene padScene(const Case& c, double exact_pairs) {
+  PadScene ps;
+  const size_t nb = c.scene.blases.size();
+  ps.boxes.resize(nb);
+  for (size_t b = 0; b < nb; ++b) ps.boxes[b] = blasBox(c.scene.blases[b]);
+  std::vector<DVec3>& origins = ps.origins;
   origins.reserve(c.rays.rays.size() + 8);
   for (const Ray& r : c.rays.rays) origins.push_back({r.origin[0], r.origin[1], r.origin[2]});
   Box world;
   for (const Instance& inst : c.scene.instances) {
-    if (!inst.blas || *inst.blas >= nb || boxes[*inst.blas].empty()) continue;
+    if (!inst.blas || *inst.blas >= nb || ps.boxes[*inst.blas].empty()) continue;
     const DTransform m = toDouble(inst.transform);
-    for (int i = 0; i < 8; ++i) world.add(applyAffine(m, corner(boxes[*inst.blas], i), 1.0));
+    for (int i = 0; i < 8; ++i) world.add(applyAffine(m, corner(ps.boxes[*inst.blas], i), 1.0));
   }
   if (!world.empty())
     for (int i = 0; i < 8; ++i) origins.push_back(corner(world, i));
@@ -132,6 +138,16 @@ std::vector<double> blasRayPads(const Case& c, double exact_pairs) {
     origins.clear();
     for (int i = 0; i < 8; ++i) origins.push_back(corner(hull, i));
   }
+  return ps;
+}
+
+}  // namespace
+
+std::vector<double> blasRayPads(const Case& c, double exact_pairs) {
+  const PadScene ps = padScene(c, exact_pairs);
+  const size_t nb = c.scene.blases.size();
+  const std::vector<Box>& boxes = ps.boxes;
+  const std::vector<DVec3>& origins = ps.origins;
   std::vector<double> pad(nb, 0.0);
   for (const Instance& inst : c.scene.instances) {
     if (!inst.blas || *inst.blas >= nb || boxes[*inst.blas].empty()) continue;
@@ -151,6 +167,52 @@ std::vector<double> blasRayPads(const Case& c, double exact_pairs) {
     double p = kZoneSteps * kUnitRoundoff * rho + kTraversalSteps * rho;
     if (!identity) p += instancePad(inv, inst.transform) + kTraversalSteps * std::min(reach, cap);
     if (std::isfinite(p)) pad[*inst.blas] = std::max(pad[*inst.blas], p);
+  }
+  return pad;
+}
+
+namespace {
+
+// One instance's part of blasBoxPads: the largest bound (model/box_bound.h)
+// over the origins, for a box within the BLAS's box.
+double instanceBoxPad(const Instance& inst, const Box& box, const std::vector<DVec3>& origins) {
+  const DTransform inv = invertTransform(inst.transform);
+  std::array<float, 12> inv_f;
+  for (int k = 0; k < 12; ++k) inv_f[k] = static_cast<float>(inv[k]);
+  const InstanceForm form = instanceForm(inst.transform);
+  const DTransform m = toDouble(inst.transform);
+  double magnitude = 0, world = 0;  // the box's largest |x|, in object and in world space
+  for (int i = 0; i < 8; ++i) {
+    magnitude = std::max(magnitude, largestMagnitude(corner(box, i)));
+    world = std::max(world, largestMagnitude(applyAffine(m, corner(box, i), 1.0)));
+  }
+  double pad = 0;
+  for (const DVec3& q : origins) {
+    FrameError err;
+    objectRayFrameError(form, inv, inv_f, q, {1, 1, 1}, err);
+    const DVec3 o = form == InstanceForm::Identity ? q : applyAffine(inv, q, 1.0);
+    const double p = kDeviceRelTolerance * std::max(largestMagnitude(o), magnitude) +
+                     largestMagnitude(err.origin) +
+                     (largestMagnitude(q) + world) * largestMagnitude(err.direction);
+    if (std::isfinite(p)) pad = std::max(pad, p);
+  }
+  return pad;
+}
+
+}  // namespace
+
+std::vector<double> blasBoxPads(const Case& c, double exact_pairs) {
+  const size_t nb = c.scene.blases.size();
+  std::vector<double> pad(nb, 0.0);
+  bool boxes = false;
+  for (const Blas& b : c.scene.blases)
+    for (const Geometry& g : b.geometries) boxes = boxes || g.kind == Geometry::Kind::Aabbs;
+  if (!boxes) return pad;
+  const PadScene ps = padScene(c, exact_pairs);
+  for (const Instance& inst : c.scene.instances) {
+    if (!inst.blas || *inst.blas >= nb || ps.boxes[*inst.blas].empty()) continue;
+    const double p = kBoxPadMargin * instanceBoxPad(inst, ps.boxes[*inst.blas], ps.origins);
+    pad[*inst.blas] = std::max(pad[*inst.blas], p);
   }
   return pad;
 }

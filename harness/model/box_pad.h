@@ -24,4 +24,19 @@ constexpr double kBoxMagnitudeSteps = 4.0;
 constexpr double kExactPadPairs = double(1 << 24);  // about 0.2 s
 std::vector<double> blasRayPads(const Case& c, double exact_pairs = kExactPadPairs);
 
+// Per BLAS of the case: how far its AABBs are grown for Embree (exact tier,
+// model_scene.cpp aabbBounds), so that every box within a device's error
+// bound of a ray (model/box_bound.h; ModelCandidate::outside) is enumerated.
+// Over the ray origins as blasRayPads takes them and the instances of the
+// BLAS, uncapped (a box a far ray may be offered is enumerated, however far):
+//   kDeviceRelTolerance max(|o|, M) + |origin error| + (|q| + W) |direction error|
+// with o the object-space origin, q the world one, M and W the BLAS box's
+// largest coordinate in object and world space (W + |q| bounds how far the
+// ray travels to it), the frame errors for a direction of (1, 1, 1) (they
+// grow with it linearly); times kBoxPadMargin for Embree's own float object
+// ray (the same roundings as a device's) and traversal. 0 for a case
+// without AABBs.
+constexpr double kBoxPadMargin = 2.0;
+std::vector<double> blasBoxPads(const Case& c, double exact_pairs = kExactPadPairs);
+
 }  // namespace rayspec

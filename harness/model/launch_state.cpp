@@ -23,6 +23,7 @@ void LaunchState::startRay(uint32_t i) {
   rec = records ? records + static_cast<size_t>(i) * recordWords() : nullptr;
   ray_ambiguous = false;
   ray_undefined = false;
+  ray_t_free = false;
   repeated_any_hit = false;
   call_nesting = 0;
 }

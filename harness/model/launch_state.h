@@ -69,6 +69,9 @@ struct LaunchState {
   std::array<uint32_t, 3> launch{};  // Rays::launchSize()
   bool ray_ambiguous = false;
   bool ray_undefined = false;
+  // A legal answer of the launch ray hits a triangle it runs in the plane
+  // of, at no one t (ModelCandidate::in_plane): the ray keeps no replays.
+  bool ray_t_free = false;
   bool repeated_any_hit = false;  // AnyHitRepeat::First: this launch ray repeated one
   uint32_t call_nesting = 0;      // callables running now (Pipeline::callableDepth)
   // A legal replay of this launch ray (legal_replays.h): which answer each

@@ -22,6 +22,9 @@ void Machine::replayLegalAnswers(uint32_t i, size_t ambiguity, ReplayScript& scr
   const size_t undefined_before = state_.undefined.size();
   std::vector<LegalReplay> replays{replayOutcome(own)};
   bool complete = true;
+  // A legal hit at no one t (LaunchState::ray_t_free): a replay pins what is
+  // computed from its t, so the ray keeps none (held to what its answers share).
+  bool t_free = state_.ray_t_free;
   size_t runs = 1;
   state_.replay = &script;
   while (complete && script.advance()) {
@@ -34,6 +37,7 @@ void Machine::replayLegalAnswers(uint32_t i, size_t ambiguity, ReplayScript& scr
     runRay(i);
     // A legal answer whose path is undefined makes the ray undefined (R-UB).
     if (state_.undefined.size() > undefined_before) complete = false;
+    t_free = t_free || state_.ray_t_free;
     LegalReplay r = replayOutcome(own);
     if (std::find(replays.begin(), replays.end(), r) == replays.end())
       replays.push_back(std::move(r));
@@ -45,7 +49,7 @@ void Machine::replayLegalAnswers(uint32_t i, size_t ambiguity, ReplayScript& scr
   state_.restore(own);
   state_.ray_ambiguous = true;
   state_.ray_undefined = undefined;
-  if (complete) state_.ambiguous[ambiguity].replays = std::move(replays);
+  if (complete && !t_free) state_.ambiguous[ambiguity].replays = std::move(replays);
 }
 
 }  // namespace rayspec

@@ -29,7 +29,9 @@ void TraceClassifier::tryOrders(const std::vector<std::pair<size_t, double>>& re
   if ((tofh && !permuted) || terminates) {
     for (size_t k = 0; k < cands_.size(); ++k) {
       const ModelCandidate& cand = cands_[k];
-      if (cand.aabb || ((cand.hit || cand.ambiguity != TriAmbiguity::None) && eligible(cand)))
+      // A box the model's ray misses is offered in tryUnsure's runs alone.
+      if ((cand.aabb && !cand.outside) ||
+          (!cand.aabb && (cand.hit || cand.ambiguity != TriAmbiguity::None) && eligible(cand)))
         firsts.push_back(static_cast<long>(k));
     }
   }
@@ -44,7 +46,8 @@ void TraceClassifier::tryOrders(const std::vector<std::pair<size_t, double>>& re
       if (cand.aabb) {
         tie = (boxes[k] & 2) != 0;
         // A box entered just past the committed t may still report at it.
-        if (!boxes[k] && tr_.ties(cand.t)) potential.push_back(static_cast<long>(k));
+        if (!boxes[k] && !cand.outside && tr_.ties(cand.t))
+          potential.push_back(static_cast<long>(k));
       } else {
         tie = cand.hit && tr_.ties(cand.t) && eligible(cand);
       }
@@ -105,7 +108,7 @@ std::vector<uint32_t> TraceClassifier::orderedCandidates(
   std::vector<uint32_t> matter;
   for (size_t k = 0; k < cands_.size(); ++k) {
     const ModelCandidate& cand = cands_[k];
-    if ((cand.aabb && box[k] != 1) ||
+    if ((cand.aabb && !cand.outside && box[k] != 1) ||
         (!cand.aabb && (cand.hit || cand.ambiguity != TriAmbiguity::None) && eligible(cand)))
       matter.push_back(static_cast<uint32_t>(k));
   }

@@ -56,6 +56,9 @@ bool listed(const std::vector<Candidate>& list, const Candidate& k) {
 }  // namespace
 
 void TraceClassifier::addCommitted(const Committed& b, const WhatIf& how) {
+  // A legal answer's t (a sphere root) a device may round further than
+  // hit_t's tolerance: its bound, as boundT gives the model's own.
+  if (!how.actual && b.valid && b.t_err > 0) boundTOf(b.t, b.t_err);
   // The actual run's effect is the launch state's now, before any what-if.
   const uint64_t effect = how.actual ? m_.effectOf(tr_.best, *tr_.payload, tr_.query) : b.effect;
   if (std::find(replay_effects_.begin(), replay_effects_.end(), effect) == replay_effects_.end()) {
@@ -88,12 +91,15 @@ void TraceClassifier::findUnsure(const std::vector<std::pair<size_t, double>>& r
   // the committed t lies.
   std::vector<bool> ran(cands_.size(), false);
   for (const auto& [index, t] : reports) ran[index] = true;
+  // After the others, each a what-if group of its own (whatIf): boxes the
+  // model's ray misses, triangles it runs in the plane of.
+  std::vector<size_t> alone;
   for (size_t k = 0; k < cands_.size(); ++k) {
     const ModelCandidate& cand = cands_[k];
     if (cand.aabb) {
       // A grazed box matters only if its what-if runs change the answer (tryUnsure).
       if (cand.near_face && (ran[k] || cand.t <= final_t + tr_.tol(cand.t))) {
-        unsure_.push_back(k);
+        (cand.outside ? alone : unsure_).push_back(k);
         faces_ = true;
       }
       continue;
@@ -101,7 +107,9 @@ void TraceClassifier::findUnsure(const std::vector<std::pair<size_t, double>>& r
     if (!eligible(cand)) continue;
     const double tl = tr_.tol(cand.t);
     std::optional<AmbiguityReason> why;
-    if (cand.ambiguity != TriAmbiguity::None && cand.t <= final_t + tl)
+    if (cand.in_plane && cand.t - cand.t_err <= final_t + tl)
+      why = AmbiguityReason::InPlane;
+    else if (cand.ambiguity != TriAmbiguity::None && cand.t <= final_t + tl)
       why =
           cand.ambiguity == TriAmbiguity::Vertex ? AmbiguityReason::Vertex : AmbiguityReason::Edge;
     // R-CAND-TRI-OPEN: an interval end is a tie only where a device's t may
@@ -119,8 +127,9 @@ void TraceClassifier::findUnsure(const std::vector<std::pair<size_t, double>>& r
       reason_ = why;
       reason_t_ = cand.t;
     }
-    unsure_.push_back(k);
+    (cand.in_plane ? alone : unsure_).push_back(k);
   }
+  unsure_.insert(unsure_.end(), alone.begin(), alone.end());
 }
 
 void TraceClassifier::findSharedTriangles() {
@@ -131,7 +140,8 @@ void TraceClassifier::findSharedTriangles() {
   // device finds one of them, so a double hit shows as extra any-hit runs.
   const ModelCandidate* first = nullptr;
   for (const ModelCandidate& cand : cands_) {
-    if (cand.aabb || cand.ambiguity == TriAmbiguity::None || !eligible(cand)) continue;
+    if (cand.aabb || cand.in_plane || cand.ambiguity == TriAmbiguity::None || !eligible(cand))
+      continue;
     if (!first) first = &cand;
     if (cand.instance == first->instance && std::fabs(cand.t - first->t) <= tr_.tol(first->t))
       amb_.shared_triangles.push_back({cand.hit, cand.instance, cand.geometry, cand.primitive});
@@ -159,6 +169,31 @@ void TraceClassifier::tryUnsure() {
   for (const WhatIfAnswer& a : leaks) addLeak(a.best, a.how);
 }
 
+// R-PREC on a box the model's ray misses (ModelCandidate::outside): offered
+// in a what-if run, its intersection program's decisions within rounding
+// (a sphere test from a far origin) are noted there and each flipped in a
+// run of its own, the box offered.
+void TraceClassifier::tryNearBoxDecisions() {
+  if (!m_.sh_.programs->reads_sphere) return;
+  bool any = false;
+  for (size_t k : unsure_) {
+    if (!cands_[k].outside) continue;
+    WhatIf offered{false, std::vector<int8_t>(cands_.size(), -1), -1, -1, {}};
+    offered.force[k] = 1;
+    std::vector<ShaderDecision> noted;
+    m_.sandbox(tr_, cands_, offered, payload_in_, nullptr, &noted);
+    for (const ShaderDecision& d : noted) {
+      if (d.cand != k) continue;
+      WhatIf flipped = offered;
+      flipped.shader = d;
+      flipped.shader->value = !d.value;
+      addCommitted(m_.sandbox(tr_, cands_, flipped, payload_in_), flipped);
+      any = true;
+    }
+  }
+  if (any && !reason_) reason_ = AmbiguityReason::ShaderArith;
+}
+
 // R-PREC: an intersection program's decision that rounding may flip (sphere
 // discriminant or root near an end): each flipped alone in a what-if run;
 // the ray is ambiguous, as the device's counters may differ.
@@ -178,21 +213,28 @@ void TraceClassifier::tryShaderDecisions(const std::vector<ShaderDecision>& shad
 // against this wider bound. hit_position (origin + t x direction) carries
 // the same error, each component scaled by the direction's: its bound is t's
 // times the direction's largest component.
+// An unsure triangle the ray runs in the plane of is hit anywhere across it
+// on a device: its t within t_err of cand.t (ModelCandidate::in_plane).
 void TraceClassifier::boundT() {
-  if (!tr_.best.valid || tr_.best.t_err <= 0) return;
+  for (size_t k : unsure_)
+    if (cands_[k].in_plane) boundTOf(cands_[k].t, cands_[k].t_err);
+  if (tr_.best.valid && tr_.best.t_err > 0) boundTOf(tr_.best.t, tr_.best.t_err);
+}
+
+void TraceClassifier::boundTOf(double t, double t_err) {
   const Tolerance tol = toleranceFor("hit_t");
-  if (tr_.best.t_err > tol.abs + tol.rel * std::max(std::fabs(tr_.best.t), 1.0))
-    m_.st_.t_bounds.push_back({m_.st_.index, static_cast<float>(tr_.best.t_err)});
+  if (t_err > tol.abs + tol.rel * std::max(std::fabs(t), 1.0))
+    m_.st_.t_bounds.push_back({m_.st_.index, static_cast<float>(t_err)});
   const Vec3& o = tr_.ray.origin;
   const Vec3& d = tr_.ray.direction;
   double scale = 0, position = 1;
   for (int k = 0; k < 3; ++k) {
     scale = std::max(scale, std::fabs(static_cast<double>(d[k])));
-    position = std::max(position, std::fabs(o[k] + tr_.best.t * static_cast<double>(d[k])));
+    position = std::max(position, std::fabs(o[k] + t * static_cast<double>(d[k])));
   }
   const Tolerance ptol = toleranceFor("hit_position");
-  if (tr_.best.t_err * scale > ptol.abs + ptol.rel * position)
-    m_.st_.position_bounds.push_back({m_.st_.index, static_cast<float>(tr_.best.t_err * scale)});
+  if (t_err * scale > ptol.abs + ptol.rel * position)
+    m_.st_.position_bounds.push_back({m_.st_.index, static_cast<float>(t_err * scale)});
 }
 
 std::optional<WhatIf> TraceClassifier::finish() {
@@ -201,6 +243,13 @@ std::optional<WhatIf> TraceClassifier::finish() {
   if (script) script->classified(reason_ ? replay_hows_ : std::vector<WhatIf>{});
   if (!reason_) return std::nullopt;
   amb_.reason = *reason_;
+  // A legal hit on a triangle the ray runs in the plane of: at no one t, so
+  // the ray's replays would pin what is computed from it (legal_replays.cpp).
+  for (const Candidate& k : amb_.candidates)
+    for (size_t u : unsure_)
+      if (k.hit && cands_[u].in_plane && cands_[u].instance == k.instance &&
+          cands_[u].geometry == k.geometry && cands_[u].primitive == k.primitive)
+        m_.st_.ray_t_free = true;
   // A leak answer that is also a legal one is legal.
   for (size_t k = amb_.leak_answers.size(); k-- > 0;)
     if (listed(amb_.candidates, amb_.leak_answers[k])) {
@@ -247,6 +296,7 @@ std::optional<WhatIf> ModelTracer::classifyTrace(
   c.findUnsure(reports);
   c.findSharedTriangles();
   c.tryUnsure();
+  c.tryNearBoxDecisions();
   c.tryOrders(reports);
   c.tryShaderDecisions(shader_unsure);
   c.boundT();
@@ -261,7 +311,7 @@ bool ModelTracer::anyHitMayTerminate(const Traversal& tr,
   if (!sh_.programs->any_hit_terminates) return false;
   const ModelScene& scene = *sh_.scene;
   for (const ModelCandidate& cand : cands) {
-    if (!cand.aabb && !cand.hit && cand.ambiguity == TriAmbiguity::None) continue;
+    if (cand.outside || (!cand.aabb && !cand.hit && cand.ambiguity == TriAmbiguity::None)) continue;
     const ModelInstance& mi = scene.instances[cand.instance];
     const ModelGeometry& g = scene.blases[mi.blas].geometries[cand.geometry];
     if (resolveOpaque(g.flags, mi.src->flags, tr.flags)) continue;
@@ -272,7 +322,8 @@ bool ModelTracer::anyHitMayTerminate(const Traversal& tr,
 }
 
 Committed ModelTracer::decideAs(const Traversal& actual, const std::vector<ModelCandidate>& cands,
-                                const WhatIf& how, Payload& payload) {
+                                const WhatIf& how, Payload& payload,
+                                std::vector<ShaderDecision>* noted) {
   Traversal v(actual.ray);
   v.flags = actual.flags;
   v.depth = actual.depth;
@@ -286,6 +337,7 @@ Committed ModelTracer::decideAs(const Traversal& actual, const std::vector<Model
   v.shader_force = how.shader ? &*how.shader : nullptr;
   v.order = how.order.empty() ? nullptr : &how.order;
   v.tie = how.tie;
+  v.shader_unsure = noted;
   if (how.prefer >= 0) {
     const ModelCandidate& p = cands[static_cast<size_t>(how.prefer)];
     v.prefer_key[0] = p.instance;
@@ -300,7 +352,8 @@ Committed ModelTracer::decideAs(const Traversal& actual, const std::vector<Model
 // One what-if run of the decision in a sandbox: counters, record and error
 // are restored afterwards, the payload is a copy of the trace's incoming one.
 Committed ModelTracer::sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands,
-                               const WhatIf& how, const Payload& payload_in, OrderOutcome* left) {
+                               const WhatIf& how, const Payload& payload_in, OrderOutcome* left,
+                               std::vector<ShaderDecision>* noted) {
   const LaunchState::Saved saved = st_.save();
   // A query's blocks change the frame of the stage that runs it: the what-if
   // run starts from the frame as traversal began, and is undone.
@@ -310,7 +363,7 @@ Committed ModelTracer::sandbox(const Traversal& actual, const std::vector<ModelC
     restoreQueryFrame(*actual.query, actual.query->frame_before);
   }
   Payload p = payload_in;
-  Committed best = decideAs(actual, cands, how, p);
+  Committed best = decideAs(actual, cands, how, p, noted);
   best.effect = effectOf(best, p, actual.query);
   if (left) {  // what this run leaves behind (tryPermutations)
     left->best = best;
@@ -427,8 +480,14 @@ std::vector<WhatIfAnswer> ModelTracer::whatIf(const Traversal& actual,
   size_t g0 = 0;
   while (g0 < unsure.size()) {
     size_t g1 = g0 + 1;
-    while (g1 < unsure.size() && std::fabs(cands[unsure[g1]].t - cands[unsure[g1 - 1]].t) <=
-                                     actual.tol(cands[unsure[g1]].t))
+    // A triangle the ray runs in the plane of, or a box its ray misses, is a
+    // group of its own (none of it hit is no leak: the model's own answer).
+    auto alone = [&](size_t u) {
+      return cands[unsure[u]].in_plane || cands[unsure[u]].outside;
+    };
+    while (g1 < unsure.size() && !alone(g0) && !alone(g1) &&
+           std::fabs(cands[unsure[g1]].t - cands[unsure[g1 - 1]].t) <=
+               actual.tol(cands[unsure[g1]].t))
       ++g1;
     for (size_t a = g0; a < g1; ++a) {
       for (size_t b = g0; b < g1; ++b) how.force[unsure[b]] = a == b ? 1 : 0;

@@ -122,6 +122,9 @@ class ModelFaultSeam {
   // A legal device (rayspec mutate, R-AABB-CONS): every box tested as if grown
   // by its own extent on each side, so its neighbours' intersection programs run.
   bool aabbNeighboursRun() const { return f_.aabb_neighbours_run; }
+  // A legal device (rayspec mutate, R-AABB-CONS, R-PREC): every box the ray
+  // misses by no more than a device's error bound is offered all the same.
+  bool nearBoxesOffered() const { return f_.aabb_near_offered; }
 
  private:
   ModelFaults f_;

@@ -118,6 +118,10 @@ struct ModelFaults {
   // a case whose intersection program reports without testing its box then
   // answers otherwise.
   bool aabb_neighbours_run = false;
+  // R-AABB-CONS and R-PREC, legal: every box a ray passes within a device's
+  // error bound of (model/box_bound.h) is offered, its intersection program
+  // run, though the model's own ray misses it (far ray origins: whole units).
+  bool aabb_near_offered = false;
 };
 
 }  // namespace rayspec

@@ -133,7 +133,7 @@ void ModelTracer::decideQuery(Traversal& tr, const std::vector<ModelCandidate>& 
     const bool opaque = at->opaque;
     const ModelCandidate& cand = cands[k];
     if (cand.aabb) {
-      if (force && force[k] == 0) continue;
+      if (!boxOffered(cand, k, force)) continue;
       // A box entered beyond the committed t may or may not be offered: the
       // model offers none (a preferred one at the committed t still is).
       if (cand.t > tr.tmax_cur && !(tr.prefer == static_cast<long>(k) && tr.ties(cand.t))) continue;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -10,9 +11,11 @@
 #include "base/float_steps.h"
 #include "base/slab.h"
 #include "case/transform.h"
+#include "model/box_bound.h"
 #include "model/box_pad.h"
 #include "model/exact_interval.h"
 #include "model/frame_error.h"
+#include "model/in_plane.h"
 #include "model/model_trace_context.h"
 #include "model/watertight.h"
 #include "model/watertight_rejection.h"
@@ -97,6 +100,11 @@ void aabbBounds(const RTCBoundsFunctionArguments* args) {
   for (int k = 0; k < 3; ++k) {
     // Conservative (R-AABB-CONS): a little slack, so grazing rays are enumerated.
     const float pad = boxSlackF(v[k], v[k + 3]) + (g->aabbs_grown ? v[k + 3] - v[k] : 0.0f);
+    if (g->box_pad > 0) {  // exact tier: boxes a device may offer (rounded outward)
+      v[k] = clampLarge(floatBelow(v[k] - pad - g->box_pad));
+      v[k + 3] = clampLarge(floatAbove(v[k + 3] + pad + g->box_pad));
+      continue;
+    }
     v[k] = clampLarge(v[k] - pad);
     v[k + 3] = clampLarge(v[k + 3] + pad);
   }
@@ -107,23 +115,44 @@ TraceContext* traceContext(RTCIntersectContext* ctx) {
   return reinterpret_cast<TraceContext*>(ctx);
 }
 
+// The object-space ray of instance `inst` in double, with a device's frame
+// error (exact tier), kept for the instance seen last.
+const WatertightRay& objectRay(TraceContext& tc, ModelTier tier, uint32_t inst) {
+  if (tc.object_instance == inst) return tc.object_ray;
+  const auto& mi = tc.scene->instances[inst];
+  tc.object_instance = inst;
+  FrameError err;
+  if (tier == ModelTier::Exact)
+    objectRayFrameError(mi.form, mi.inverse, mi.inverse_f, tc.origin, tc.direction, err);
+  tc.object_ray = prepareWatertightRay(applyAffine(mi.inverse, tc.origin, 1.0),
+                                       applyAffine(mi.inverse, tc.direction, 0.0), err);
+  tc.object_exact =
+      tier == ModelTier::Exact && objectRayExact(mi.form, mi.src->transform, tc.origin);
+  return tc.object_ray;
+}
+
+// A triangle whose plane the ray's line lies in (WatertightHit::in_plane):
+// its candidate spans where the line runs across it within the trace's
+// interval (t its middle, t_err half its length); false where it does not.
+// A triangle of no area keeps the watertight test's candidate.
+bool placeInPlane(ModelCandidate& c, const TraceContext& tc, const WatertightRay& wr,
+                  const DVec3& v0, const DVec3& v1, const DVec3& v2, const DVec3& vertex_err) {
+  const std::optional<Span> across = inPlaneSpan(wr, v0, v1, v2, vertex_err);
+  if (!across) return true;
+  const double t0 = std::max(across->t0, tc.tmin), t1 = std::min(across->t1, tc.tmax);
+  if (!(t0 <= t1)) return false;
+  c.in_plane = true;
+  c.t = 0.5 * (t0 + t1);
+  c.t_err = 0.5 * (t1 - t0);
+  return true;
+}
+
 void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
   if (!args->valid[0]) return;
   const auto* g = static_cast<const ModelGeometry*>(args->geometryUserPtr);
   TraceContext* tc = traceContext(args->context);
   const uint32_t inst = args->context->instID[0];
-  const auto& mi = tc->scene->instances[inst];
-  if (tc->object_instance != inst) {
-    tc->object_instance = inst;
-    FrameError err;
-    if (g->tier == ModelTier::Exact)
-      objectRayFrameError(mi.form, mi.inverse, mi.inverse_f, tc->origin, tc->direction, err);
-    tc->object_ray = prepareWatertightRay(applyAffine(mi.inverse, tc->origin, 1.0),
-                                          applyAffine(mi.inverse, tc->direction, 0.0), err);
-    tc->object_exact =
-        g->tier == ModelTier::Exact && objectRayExact(mi.form, mi.src->transform, tc->origin);
-  }
-  const WatertightRay& wr = tc->object_ray;
+  const WatertightRay& wr = objectRay(*tc, g->tier, inst);
   const DVec3& o = wr.o;
   const DVec3& d = wr.d;
   const auto& tri = g->triangles[args->primID];
@@ -171,12 +200,33 @@ void ownTriangleIntersect(const RTCIntersectFunctionNArguments* args) {
   c.ambiguity = g->tier == ModelTier::Exact ? h.ambiguity : TriAmbiguity::None;
   c.near_edges = g->tier == ModelTier::Exact ? h.near_edges : 0;
   c.t_err = h.t_err;
-  if (g->tier == ModelTier::Exact && g->vertex_err == DVec3{} && tc->object_exact) {
+  if (h.in_plane && g->tier == ModelTier::Exact &&
+      !placeInPlane(c, *tc, wr, v0, v1, v2, vertex_err))
+    return;
+  if (g->tier == ModelTier::Exact && g->vertex_err == DVec3{} && tc->object_exact && !c.in_plane) {
     const ExactEnds ends = exactEnds(o, d, v0, v1, v2, h.t, tc->tmin, tc->tmax);
     c.exact_tmin = ends.tmin;
     c.exact_tmax = ends.tmax;
   }
   tc->candidates->push_back(c);
+}
+
+// Whether the ray's interval meets span s.
+bool meets(const Span& s, const TraceContext& tc) {
+  return !(s.t0 > s.t1 || s.t1 < tc.tmin || s.t0 > tc.tmax);
+}
+
+// Exact tier: where the model's object-space ray meets the box grown (sign
+// +1) or shrunk (-1) by a device's error bound (model/box_bound.h).
+Span boundedSpan(const std::array<float, 6>& a, const WatertightRay& w, double sign) {
+  const DVec3 lo{a[0], a[1], a[2]}, hi{a[3], a[4], a[5]};
+  const DVec3 bound = boxFaceBounds(lo, hi, w);
+  DVec3 blo, bhi;
+  for (int k = 0; k < 3; ++k) {
+    blo[k] = lo[k] - sign * bound[k];
+    bhi[k] = hi[k] + sign * bound[k];
+  }
+  return slabSpan(blo, bhi, w.o, w.d);
 }
 
 void aabbIntersect(const RTCIntersectFunctionNArguments* args) {
@@ -189,6 +239,8 @@ void aabbIntersect(const RTCIntersectFunctionNArguments* args) {
   const DVec3 d{RTCRayN_dir_x(ray, args->N, 0), RTCRayN_dir_y(ray, args->N, 0),
                 RTCRayN_dir_z(ray, args->N, 0)};
   const auto& a = g->aabbs[args->primID];
+  const uint32_t inst = args->context->instID[0];
+  const bool exact = g->tier == ModelTier::Exact;
   DVec3 lo, hi;  // the box with a little slack
   for (int k = 0; k < 3; ++k) {
     const double slack = boxSlack(a[k], a[k + 3]);
@@ -196,7 +248,8 @@ void aabbIntersect(const RTCIntersectFunctionNArguments* args) {
     hi[k] = a[k + 3] + slack;
   }
   Span s = slabSpan(lo, hi, o, d);
-  const bool entered = !(s.t0 > s.t1 || s.t1 < tc->tmin || s.t0 > tc->tmax);
+  const bool entered = meets(s, *tc);
+  ModelCandidate c;
   if (!entered && g->aabbs_grown) {  // a neighbour's intersection program runs too
     for (int k = 0; k < 3; ++k) {
       const double extent = double(a[k + 3]) - double(a[k]);
@@ -204,28 +257,22 @@ void aabbIntersect(const RTCIntersectFunctionNArguments* args) {
       hi[k] += extent;
     }
     s = slabSpan(lo, hi, o, d);
-    if (s.t0 > s.t1 || s.t1 < tc->tmin || s.t0 > tc->tmax) return;
-  } else if (!entered) {
-    return;
   }
-  ModelCandidate c;
-  if (g->tier == ModelTier::Exact && entered) {
+  if (!meets(s, *tc)) {
+    // Exact tier: missed, but within a device's error bound of the box
+    // (R-AABB-CONS): a device may offer it.
+    if (!exact) return;
+    s = boundedSpan(a, objectRay(*tc, g->tier, inst), 1.0);
+    if (!meets(s, *tc)) return;
+    c.outside = c.near_face = true;
+  } else if (exact && entered) {
     // Does the ray still cross the box shrunk by the device's error bound?
     // If not, it only grazes a face (or passes just outside, within the slack).
-    DVec3 in_lo, in_hi;
-    for (int k = 0; k < 3; ++k) {
-      const double l = a[k], h = a[k + 3];
-      const double bound = kDeviceRelTolerance * std::max({std::fabs(l), std::fabs(h),
-                                                           std::fabs(o[k]), kMagnitudeFloor}) +
-                           boxSlack(l, h);
-      in_lo[k] = l + bound;
-      in_hi[k] = h - bound;
-    }
-    c.near_face = slabSpan(in_lo, in_hi, o, d).empty();
+    c.near_face = boundedSpan(a, objectRay(*tc, g->tier, inst), -1.0).empty();
   }
   c.aabb = true;
   c.t = std::max(s.t0, tc->tmin);
-  c.instance = args->context->instID[0];
+  c.instance = inst;
   c.geometry = args->geomID;
   c.primitive = args->primID;
   tc->candidates->push_back(c);
@@ -514,6 +561,8 @@ Result<void> buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool 
   // and how far the exact test's ambiguity reaches, per BLAS (box_pad.h).
   const std::vector<double> ray_pad =
       tier == ModelTier::Exact ? blasRayPads(c) : std::vector<double>();
+  const std::vector<double> box_pad =
+      tier == ModelTier::Exact ? blasBoxPads(c) : std::vector<double>();
   bool any_own = false;
   for (size_t bi = 0; bi < c.scene.blases.size(); ++bi) {
     const Blas& src = c.scene.blases[bi];
@@ -523,6 +572,7 @@ Result<void> buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool 
       describeGeometry(mg, src.geometries[gi], bi, gi, tier,
                        tier == ModelTier::Exact ? ray_pad[bi] : 0.0, keep_triangles, filters,
                        s.aabbs_grown);
+      if (mg.kind == Geometry::Kind::Aabbs && tier == ModelTier::Exact) mg.box_pad = box_pad[bi];
       if (mg.kind == Geometry::Kind::Triangles) s.blases[bi].triangles = true;
       any_own = any_own || mg.own_triangles;
     }

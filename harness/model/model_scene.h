@@ -42,6 +42,9 @@ struct ModelGeometry {
   // and the exact test's ambiguity zone: model/box_pad.h).
   DVec3 vertex_err{};
   double ray_pad = 0;
+  // Exact tier, AABBs: how far the boxes are grown for Embree, so that every
+  // box a device may offer a ray is enumerated (model/box_pad.h blasBoxPads).
+  double box_pad = 0;
   // AABBs: tested as grown by their own extent on each side (a legal device:
   // ModelFaultSeam::aabbNeighboursRun); a ray that crosses only the grown box
   // runs its intersection program all the same.

@@ -23,6 +23,15 @@ struct ModelCandidate {
   uint8_t near_edges = 0;  // triangles, exact tier: WatertightHit::near_edges
   bool near_face = false;  // AABBs, exact tier: the ray passes within the error
                            // bound of a face (a device may or may not see it)
+  // AABBs, exact tier: the model's ray misses the box, by no more than that
+  // bound (near_face too): a device may offer it; the model does not (its
+  // what-if runs do, and a legal device offering every such box).
+  bool outside = false;
+  // Triangles, exact tier: the ray's line lies in the triangle's plane (to
+  // rounding, in_plane.h): no hit of the model's, a device's hit anywhere in
+  // [t - t_err, t + t_err] (the line across the triangle, within the
+  // trace's interval).
+  bool in_plane = false;
   // Triangles, exact tier: every device compares t with the trace's tmin /
   // tmax exactly (model/exact_interval.h): no tie at that end.
   bool exact_tmin = false, exact_tmax = false;

@@ -74,6 +74,10 @@ class ModelTracer {
   std::optional<OrderedCandidate> candidateAt(const Traversal& tr,
                                               const std::vector<ModelCandidate>& cands,
                                               size_t pos) const;
+  // Whether a box candidate is offered (decide's step): as a what-if run
+  // forces it, else unless the model's ray misses it (ModelCandidate::
+  // outside), where only a legal device offering such boxes offers it.
+  bool boxOffered(const ModelCandidate& cand, size_t k, const int8_t* force) const;
   // Whether a triangle candidate's t counts (decide's step).
   bool triangleInside(const Traversal& tr, const ModelCandidate& cand, size_t k,
                       const int8_t* force) const;
@@ -84,11 +88,15 @@ class ModelTracer {
   // One decision of the trace as `how` says, on `payload` (decideAs), and the
   // same in a sandbox: the launch state restored, the payload a copy of the
   // trace's incoming one (sandbox).
+  // `noted`, when given, gets the run's intersection-program decisions that
+  // rounding may flip (as the actual run notes them: Traversal::shader_unsure).
   Committed decideAs(const Traversal& actual, const std::vector<ModelCandidate>& cands,
-                     const WhatIf& how, Payload& payload);
+                     const WhatIf& how, Payload& payload,
+                     std::vector<ShaderDecision>* noted = nullptr);
   // `left`, when given, gets what the run leaves behind (the exact tier's orders).
   Committed sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands,
-                    const WhatIf& how, const Payload& payload_in, OrderOutcome* left = nullptr);
+                    const WhatIf& how, const Payload& payload_in, OrderOutcome* left = nullptr,
+                    std::vector<ShaderDecision>* noted = nullptr);
   // The digest of what a decision left behind (Committed::effect): `best`,
   // the payload, the launch state's record and counters, a query's frame.
   uint64_t effectOf(const Committed& best, const Payload& payload, const QueryRun* query) const;

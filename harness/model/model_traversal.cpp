@@ -55,8 +55,15 @@ Facing facing(const ModelScene& s, const ModelCandidate& c, const TraceRay& ray,
   Facing f;
   f.front = sdot < 0;
   if (mi.src->flags & kInstanceFlipFacing) f.front = !f.front;
+  if (c.in_plane) {
+    // The ray in the triangle's plane: a zero-area projection in exact
+    // arithmetic, either face on a device a step off it (R-PREC): the face
+    // the ray's culling keeps, if one.
+    f.front = !(flags & kRayCullFrontFacing) || (mi.src->flags & kInstanceFacingCullDisable);
+  } else if (sdot == 0) {
+    f.culled = true;  // zero-area projection (R-FACE-DET)
+  }
   f.kind = f.front ? 0xFEu : 0xFFu;
-  if (sdot == 0) f.culled = true;  // zero-area projection (R-FACE-DET)
   if (!(mi.src->flags & kInstanceFacingCullDisable)) {
     if ((flags & kRayCullBackFacing) && !f.front) f.culled = true;
     if ((flags & kRayCullFrontFacing) && f.front) f.culled = true;
@@ -155,11 +162,19 @@ Payload ModelTracer::trace(const TraceRay& r, uint32_t depth, const CStmt* site,
   return payload;
 }
 
+bool ModelTracer::boxOffered(const ModelCandidate& cand, size_t k, const int8_t* force) const {
+  if (force && force[k] >= 0) return force[k] == 1;
+  return !cand.outside || sh_.fault_seam.nearBoxesOffered();
+}
+
 // Whether a triangle candidate's t is in the interval (open, R-CAND-TRI-OPEN),
 // with the what-if runs' forced hits and preferences and the exact tier's
 // tie rule.
 bool ModelTracer::triangleInside(const Traversal& tr, const ModelCandidate& cand, size_t k,
                                  const int8_t* force) const {
+  // A triangle the ray runs in the plane of (forced: never the model's own
+  // hit): a device's t anywhere across it, within t_err of cand.t.
+  if (cand.in_plane) return cand.t - cand.t_err < tr.tmax_cur && cand.t + cand.t_err > tr.tmin;
   bool inside = cand.t > tr.tmin && cand.t < tr.tmax_cur;
   if (sh_.fault_seam.closedTriangleInterval() && !tr.best.valid)
     inside = cand.t >= tr.tmin && cand.t <= tr.tmax_cur;
@@ -250,7 +265,7 @@ void ModelTracer::decide(Traversal& tr, const std::vector<ModelCandidate>& cands
     const SbtRecord* rec = sbt_.hit(cand.instance, cand.geometry, r);
     const CHitGroup* grp = groupOf(*sh_.programs, rec);
     if (cand.aabb) {
-      if (force && force[k] == 0) continue;
+      if (!boxOffered(cand, k, force)) continue;
       // A preferred box entered at the committed t (within the error bound) still runs.
       if (cand.t > tr.tmax_cur && !(tr.prefer == static_cast<long>(k) && tr.ties(cand.t))) continue;
       // Planted, inlined: a box runs the triangle block, whose confirm of a box commits nothing.

@@ -30,6 +30,9 @@ class TraceClassifier {
   void findSharedTriangles();
   // The what-if runs where the unsure candidates decide otherwise.
   void tryUnsure();
+  // The decisions within rounding of the intersection programs of boxes the
+  // model's ray misses but a device may offer, each flipped.
+  void tryNearBoxDecisions();
   // Ties at the committed t, and the first candidate under TerminateOnFirstHit
   // or a terminating any-hit.
   void tryOrders(const std::vector<std::pair<size_t, double>>& reports);
@@ -39,7 +42,8 @@ class TraceClassifier {
   bool tryPermutations(const std::vector<std::pair<size_t, double>>& reports);
   // Intersection-program decisions within rounding.
   void tryShaderDecisions(const std::vector<ShaderDecision>& shader_unsure);
-  // A committed t whose rounding may exceed hit_t's tolerance: its bound.
+  // A committed t whose rounding may exceed hit_t's tolerance, and the span
+  // of an unsure in-plane triangle: their bounds.
   void boundT();
   // Marks the ray ambiguous with its legal answers, if a reason was found;
   // how to decide as the legal device the fault seam asks for, if any.
@@ -51,6 +55,7 @@ class TraceClassifier {
   void addLeak(const Committed& b, const WhatIf& how);
   static WhatIf actual() { return {true, {}, -1, -1, {}}; }
   bool sameAsCommitted(const Committed& b) const;
+  void boundTOf(double t, double t_err);
   // tryPermutations' steps: the candidates whose order may matter, whether
   // two reports tie, what the actual run left behind, and a case error
   // where a sample of the orders past the bound answers otherwise.

@@ -189,6 +189,8 @@ WatertightHit watertightIntersectPrepared(const WatertightRay& w, const DVec3& v
   }
   r.hit = !(any_neg && any_pos) && det != 0.0;
   if (clear_neg && clear_pos) return r;  // clearly outside
+  r.in_plane = det == 0.0 && std::fabs(e[0]) <= bound[0] && std::fabs(e[1]) <= bound[1] &&
+               std::fabs(e[2]) <= bound[2];
   r.ambiguity = nearEdges(e, bound, det);
   for (int i = 0; i < 3; ++i)
     if (std::fabs(e[i]) <= bound[i]) r.near_edges |= static_cast<uint8_t>(1u << i);

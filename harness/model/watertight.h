@@ -54,6 +54,9 @@ struct WatertightHit {
   // error, and the edge functions' errors weighted by how far each vertex's
   // depth lies from t); 0 when there is no t (zero determinant).
   double t_err = 0;
+  // Zero determinant with every edge function within its bound: the ray's
+  // line lies in the triangle's plane, to rounding (no t; in_plane.h).
+  bool in_plane = false;
 };
 
 // Per component, how far a device's object-space ray and vertices may lie

@@ -91,15 +91,28 @@ Variant passBetween(const Case& c, const Plan& plan, const Results& model, const
                 "rays through a shared edge or vertex pass between its triangles");
 }
 
-// aabb-neighbours: intersection programs run for the boxes beside the
-// entered ones too (R-AABB-CONS).
-Variant aabbNeighbours(const Case& c, const Plan& plan, const Results& base, unsigned threads) {
+bool hasBoxes(const Case& c) {
   bool boxes = false;
   for (const Blas& b : c.scene.blases)
     for (const Geometry& g : b.geometries) boxes = boxes || g.kind == Geometry::Kind::Aabbs;
-  if (!boxes) return {"aabb-neighbours", {}, false, "no AABB geometry"};
+  return boxes;
+}
+
+// aabb-neighbours: intersection programs run for the boxes beside the
+// entered ones too (R-AABB-CONS).
+Variant aabbNeighbours(const Case& c, const Plan& plan, const Results& base, unsigned threads) {
+  if (!hasBoxes(c)) return {"aabb-neighbours", {}, false, "no AABB geometry"};
   return madeBy("aabb-neighbours", aabbNeighboursDevice(c, plan, threads), base,
                 "intersection programs run for every box grown by its own extent on each side");
+}
+
+// aabb-near: intersection programs run for every box a ray passes within a
+// device's error bound of, missed or not (R-AABB-CONS, R-PREC).
+Variant aabbNear(const Case& c, const Plan& plan, const Results& base, unsigned threads) {
+  if (!hasBoxes(c)) return {"aabb-near", {}, false, "no AABB geometry"};
+  return madeBy("aabb-near", aabbNearDevice(c, plan, threads), base,
+                "intersection programs run for every box a ray misses by no more than a "
+                "device's error bound (the origin's magnitude's rounding)");
 }
 
 // Each planted fault the catalog calls legal, on the model's own answer.
@@ -193,6 +206,7 @@ std::vector<LegalVariant> legalVariants(const Case& c, const Plan& plan, const R
     for (Variant& v : replayVariants(model, base)) variants.push_back(std::move(v));
     variants.push_back(passBetween(c, plan, model, base, threads));
     variants.push_back(aabbNeighbours(c, plan, base, threads));
+    variants.push_back(aabbNear(c, plan, base, threads));
     for (NamedDevice& d : lastCandidateDevices(c, plan, threads))
       variants.push_back(madeBy(d.name, std::move(d.device), base,
                                 "candidate " + d.name.substr(5) +

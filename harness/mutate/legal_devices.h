@@ -15,6 +15,9 @@
 //                       repeated without NO_DUPLICATE, candidates far to near, ...)
 //   aabb-neighbours     intersection programs also run for the boxes beside
 //                       the entered ones (R-AABB-CONS: the test is conservative)
+//   aabb-near           intersection programs also run for every box a ray
+//                       misses by no more than a device's error bound (R-PREC:
+//                       model/box_bound.h; whole units from a far origin)
 //   last-<i>.<g>.<p>    candidate (instance i, geometry g, primitive p)
 //                       decided after every other, the rest near to far
 //                       (R-ORDER-UNSPEC; one per candidate of a scene of at

@@ -130,7 +130,7 @@ std::vector<NotPortable> counterCauses(const Case& c, const Plan& plan, const Re
   return out;
 }
 
-// aabb-neighbours: the reports of intersection programs and aabb blocks.
+// aabb-neighbours, aabb-near: the reports of intersection programs and aabb blocks.
 void boxReports(const Case& c, NotPortable& p) {
   std::string more;
   p.declaration = firstPlace(c, statementsOf(c, {Stmt::Kind::Report, Stmt::Kind::Generate}), &more);
@@ -201,7 +201,7 @@ void ambiguousRay(const Case& c, const Results& model, NotPortable& p) {
 
 // What the device's kind says about the declaration to change.
 void causeOfKind(const Case& c, const Results& model, NotPortable& p) {
-  if (p.device == "aabb-neighbours") return boxReports(c, p);
+  if (p.device == "aabb-neighbours" || p.device == "aabb-near") return boxReports(c, p);
   if (p.device == "reverse-order" || startsWith(p.device, "permuted-order-") ||
       startsWith(p.device, "last-"))
     return orderDependentBlocks(c, p);

@@ -3,7 +3,7 @@
 //   a counter declared `exact` (or `at_least` / `at_most`) that the device
 //                  moves: proved by judging the device again with that
 //                  declaration left out, which must then pass;
-//   aabb-neighbours  an intersection program (or a ray query's aabb block)
+//   aabb-neighbours, aabb-near  an intersection program (or a ray query's aabb block)
 //                  that reports without testing its box: a conservative AABB
 //                  test (R-AABB-CONS) runs it for boxes the ray misses;
 //   another candidate order (reverse-order, permuted-order-<k>, last-<i>.<g>.<p>)

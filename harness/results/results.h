@@ -90,7 +90,9 @@ inline bool parseSideStatus(const std::string& name, SideStatus* out) {
   X(Order, "order", "R-ORDER-UNSPEC")                                                          \
   X(AabbFace, "aabb-face", "R-AABB-CONS") /* the ray passes within rounding of an AABB face */ \
   /* an intersection program's decision within rounding (R-PREC) */                            \
-  X(ShaderArith, "shader-arith", "R-PREC")
+  X(ShaderArith, "shader-arith", "R-PREC")                                                     \
+  /* the ray runs in a triangle's plane: a hit anywhere across it, or none (R-PREC) */         \
+  X(InPlane, "in-plane", "R-PREC")
 enum class AmbiguityReason { RAYSPEC_AMBIGUITY_REASONS(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(AmbiguityReason, RAYSPEC_AMBIGUITY_REASONS);
 inline const char* ambiguityReasonName(AmbiguityReason r) {
