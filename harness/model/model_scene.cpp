@@ -220,7 +220,12 @@ void aabbIntersect(const RTCIntersectFunctionNArguments* args) {
       in_lo[k] = l + bound;
       in_hi[k] = h - bound;
     }
-    c.near_face = slabSpan(in_lo, in_hi, o, d).empty();
+    const Span inner = slabSpan(in_lo, in_hi, o, d);
+    c.near_face = inner.empty();
+    if (!c.near_face) {
+      c.inner_t0 = inner.t0;
+      c.inner_t1 = inner.t1;
+    }
   }
   c.aabb = true;
   c.t = std::max(s.t0, tc->tmin);

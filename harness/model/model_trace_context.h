@@ -5,6 +5,7 @@
 #include <embree3/rtcore.h>
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "model/watertight.h"
@@ -22,6 +23,11 @@ struct ModelCandidate {
   TriAmbiguity ambiguity = TriAmbiguity::None;
   bool near_face = false;  // AABBs, exact tier: the ray passes within the error
                            // bound of a face (a device may or may not see it)
+  // AABBs, exact tier: where the ray is inside the box shrunk by the
+  // device's error bound (every device enters the box there); empty (NaN)
+  // where it grazes a face or in other tiers (model/counter_floors.cpp).
+  double inner_t0 = std::numeric_limits<double>::quiet_NaN();
+  double inner_t1 = std::numeric_limits<double>::quiet_NaN();
   // Triangles, exact tier: every device compares t with the trace's tmin /
   // tmax exactly (model/exact_interval.h): no tie at that end.
   bool exact_tmin = false, exact_tmax = false;
