@@ -65,7 +65,8 @@ void ModelTracer::countFloors(const Traversal& tr, const std::vector<ModelCandid
       // the device's error bound: entered there on every device.
       const double lo = std::max(cand.inner_t0, start), hi = std::min(cand.inner_t1, end);
       const bool entered = !cand.near_face && lo + tr.tol(lo) < hi - tr.tol(hi);
-      if (grp->intersection && (entered || committed)) countRun(grp->intersection_leading, st_.ray_floors);
+      if (grp->intersection && (entered || committed))
+        countRun(grp->intersection_leading, st_.ray_floors);
       // A committed report of a non-opaque box ran its any-hit.
       if (committed && !at->opaque && grp->any_hit) countRun(grp->any_hit_leading, st_.ray_floors);
       continue;

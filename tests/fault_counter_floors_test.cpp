@@ -113,8 +113,8 @@ TEST(CounterFloors, BoxesBeforeAMissAllRun) {
 
 TEST(CounterFloors, ACountAfterAConditionRaisesNoFloor) {
   // Not the program's leading statement: how often it counts is not known.
-  const Case c = parsed(boxesText("[[-1, -1, -1, 1, 1, 1]]",
-                                  "[{if: sphere_hit, then: [count: isect]}]"));
+  const Case c =
+      parsed(boxesText("[[-1, -1, -1, 1, 1, 1]]", "[{if: sphere_hit, then: [count: isect]}]"));
   const Results model = runOnModel(c, derivePlan(c), ModelOptions{});
   ASSERT_TRUE(model.ok()) << model.statusText();
   EXPECT_FALSE(model.counter_floors.count("isect"));
