@@ -206,6 +206,7 @@ void writeRayNotes(const Results& r, json& j) {
   j["repeat_counters"] = r.repeat_counters;
   if (!r.order_dependent.empty()) j["order_dependent"] = r.order_dependent;
   if (!r.endless_restarts.empty()) j["endless_restarts"] = r.endless_restarts;
+  if (!r.counter_floors.empty()) j["counter_floors"] = r.counter_floors;
 }
 
 }  // namespace
@@ -469,6 +470,8 @@ Result<void> readRayNotes(const json& j, FieldReader& field, Results& r) {
     }
   if (j.contains("repeat_counters"))
     r.repeat_counters = field(j, "repeat_counters").get<std::vector<std::string>>();
+  if (j.contains("counter_floors"))
+    r.counter_floors = field(j, "counter_floors").get<std::map<std::string, uint64_t>>();
   if (j.contains("order_dependent"))
     r.order_dependent = field(j, "order_dependent").get<std::vector<std::string>>();
   if (j.contains("endless_restarts"))

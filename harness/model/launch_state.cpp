@@ -11,6 +11,8 @@ namespace rayspec {
 LaunchState::LaunchState(const ModelShared& shared, const ModelSbt& sbt, uint32_t* records_in)
     : records(records_in), launch(shared.c->rays.launchSize()), sh_(shared), sbt_(sbt) {
   counters.assign(sh_.plan->counters.size(), 0);
+  floors.assign(counters.size(), 0);
+  ray_floors.assign(counters.size(), 0);
   const char* runs[6] = {"raygen_runs",  "miss_runs",         "closest_hit_runs",
                          "any_hit_runs", "intersection_runs", "callable_runs"};
   for (int k = 0; k < 6; ++k) runs_offset_[k] = findRecordField(runs[k])->offset;
@@ -26,6 +28,14 @@ void LaunchState::startRay(uint32_t i) {
   ray_t_free = false;
   repeated_any_hit = false;
   call_nesting = 0;
+  std::fill(ray_floors.begin(), ray_floors.end(), 0);
+}
+
+// A launch ray whose answer is not clear (ambiguous: its legal answers run
+// other traces and programs) or undefined bounds nothing.
+void LaunchState::keepRayFloors() {
+  if (ray_ambiguous || ray_undefined) return;
+  for (size_t k = 0; k < floors.size(); ++k) floors[k] += ray_floors[k];
 }
 
 void LaunchState::markAnyHit(const HitView& hv) {

@@ -43,6 +43,11 @@ struct LaunchState {
   // undefined behaviour makes the ray undefined.
   std::vector<UndefinedRay> undefined;
   std::string error;  // first case error (an unknown built-in or op)
+  // Exact tier: the least each counter any-hit or intersection programs
+  // count may reach on a device (Results::counter_floors), over the clear
+  // launch rays; the launch ray's own so far in ray_floors (keepRayFloors).
+  std::vector<uint64_t> floors, ray_floors;
+  void keepRayFloors();
   // Exact tier, R-ORDER-UNSPEC: candidate programs whose answers depend on
   // the order past what the model enumerates (Results::order_dependent),
   // each named once (`place`, then the first ray's `what`).

@@ -261,6 +261,8 @@ void gatherMachines(const std::vector<std::unique_ptr<Machine>>& machines, const
     if (!m) continue;
     for (size_t k = 0; k < plan.counters.size(); ++k)
       r.counters[plan.counters[k]] += m->state().counters[k];
+    for (size_t k = 0; k < plan.counters.size(); ++k)
+      if (m->state().floors[k]) r.counter_floors[plan.counters[k]] += m->state().floors[k];
     r.ambiguous.insert(r.ambiguous.end(), m->state().ambiguous.begin(), m->state().ambiguous.end());
     r.t_bounds.insert(r.t_bounds.end(), m->state().t_bounds.begin(), m->state().t_bounds.end());
     r.object_origin_bounds.insert(r.object_origin_bounds.end(),

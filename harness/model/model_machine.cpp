@@ -26,6 +26,7 @@ void Machine::runRays(uint32_t begin, uint32_t end) {
     if (!rays.same && i + 8 < end) __builtin_prefetch(&rays.rays[i + 8]);  // rays stream in
     if (!sh_.replays) {
       runRay(i);
+      state_.keepRayFloors();
     } else {
       counters_before_ = state_.counters;
       const size_t ambiguous_before = state_.ambiguous.size();
@@ -33,6 +34,7 @@ void Machine::runRays(uint32_t begin, uint32_t end) {
       state_.replay = &script_;
       runRay(i);
       state_.replay = nullptr;
+      state_.keepRayFloors();  // the model's own run's, before the replays
       if (state_.ambiguous.size() > ambiguous_before && !state_.ray_undefined)
         replayLegalAnswers(i, ambiguous_before, script_);
     }

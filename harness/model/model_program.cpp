@@ -264,6 +264,15 @@ CountsOnly countsOnly(const CProgram& p) {
   return r;
 }
 
+std::vector<int> leadingCounts(const CProgram& p) {
+  std::vector<int> counters;
+  for (const CStmt& s : p) {
+    if (s.kind != Stmt::Kind::Count) break;
+    if (s.counter >= 0) counters.push_back(s.counter);
+  }
+  return counters;
+}
+
 CPipeline compilePipeline(const Case& c, const Plan& plan) {
   CPipeline out;
   const Pipeline& p = c.pipeline;
@@ -292,6 +301,8 @@ CPipeline compilePipeline(const Case& c, const Plan& plan) {
     cg.any_hit = add(g.any_hit, Stage::AnyHit);
     cg.intersection = add(g.intersection, Stage::Intersection);
     if (cg.closest_hit) cg.closest_hit_counts = countsOnly(*cg.closest_hit);
+    if (cg.any_hit) cg.any_hit_leading = leadingCounts(*cg.any_hit);
+    if (cg.intersection) cg.intersection_leading = leadingCounts(*cg.intersection);
     cg.any_hit_terminates = cg.any_hit && hasTerminate(*cg.any_hit);
     cg.payload = g.payload;
     out.any_hit_terminates = out.any_hit_terminates || cg.any_hit_terminates;

@@ -119,12 +119,17 @@ struct CountsOnly {
   std::vector<int> counters;  // kept counters only
 };
 CountsOnly countsOnly(const CProgram& p);
+// The counters the `count` statements a program starts with bump (kept
+// counters only, once per statement): every run of it bumps each so, whatever
+// it does next (model/counter_floors.cpp).
+std::vector<int> leadingCounts(const CProgram& p);
 
 struct CHitGroup {
   const CProgram* closest_hit = nullptr;
   const CProgram* any_hit = nullptr;
   const CProgram* intersection = nullptr;
   CountsOnly closest_hit_counts;
+  std::vector<int> any_hit_leading, intersection_leading;  // leadingCounts of each
   bool any_hit_terminates = false;  // the any-hit has a `terminate` (R-ORDER-UNSPEC)
   uint32_t payload = 0;             // HitGroup::payload: the location whose type it takes
 };

@@ -268,7 +268,12 @@ void aabbIntersect(const RTCIntersectFunctionNArguments* args) {
   } else if (exact && entered) {
     // Does the ray still cross the box shrunk by the device's error bound?
     // If not, it only grazes a face (or passes just outside, within the slack).
-    c.near_face = boundedSpan(a, objectRay(*tc, g->tier, inst), -1.0).empty();
+    const Span inner = boundedSpan(a, objectRay(*tc, g->tier, inst), -1.0);
+    c.near_face = inner.empty();
+    if (!c.near_face) {
+      c.inner_t0 = inner.t0;
+      c.inner_t1 = inner.t1;
+    }
   }
   c.aabb = true;
   c.t = std::max(s.t0, tc->tmin);

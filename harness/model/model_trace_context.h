@@ -5,6 +5,7 @@
 #include <embree3/rtcore.h>
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "model/watertight.h"
@@ -32,6 +33,11 @@ struct ModelCandidate {
   // [t - t_err, t + t_err] (the line across the triangle, within the
   // trace's interval).
   bool in_plane = false;
+  // AABBs, exact tier: where the ray is inside the box shrunk by the
+  // device's error bound (every device enters the box there); empty (NaN)
+  // where it grazes a face or in other tiers (model/counter_floors.cpp).
+  double inner_t0 = std::numeric_limits<double>::quiet_NaN();
+  double inner_t1 = std::numeric_limits<double>::quiet_NaN();
   // Triangles, exact tier: every device compares t with the trace's tmin /
   // tmax exactly (model/exact_interval.h): no tie at that end.
   bool exact_tmin = false, exact_tmax = false;

@@ -113,6 +113,11 @@ class ModelTracer {
   // where the trace is to be classified.
   bool replayKnownTrace(std::optional<WhatIf>& chosen);
   bool anyHitMayTerminate(const Traversal& tr, const std::vector<ModelCandidate>& cands) const;
+  // Exact tier: what this trace's clear candidates must count on any device
+  // into LaunchState::ray_floors (counter_floors.cpp), with its steps.
+  void countFloors(const Traversal& tr, const std::vector<ModelCandidate>& cands);
+  bool floorsHold(const Traversal& tr, const std::vector<ModelCandidate>& cands) const;
+  double floorEnd(const Traversal& tr) const;
   // `leaks`: the answers of devices passing between the triangles of a
   // shared edge or vertex (no triangle of a group of two or more hit).
   std::vector<WhatIfAnswer> whatIf(const Traversal& actual,

@@ -352,6 +352,7 @@ Committed ModelTracer::traverse(const TraceRay& r, uint32_t flags, uint32_t dept
       tr.best = decideAs(tr, *cands, *chosen, payload);
     }
     if (!query) checkLegalAnswerRecords(r, tr.flags);
+    countFloors(tr, *cands);
   }
   return tr.best;
 }

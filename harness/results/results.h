@@ -209,6 +209,11 @@ struct Results {
   // change, and the counters it may move.
   std::vector<RepeatDependentRay> repeat_dependent;
   std::vector<std::string> repeat_counters;
+  // model, exact tier: the least a counter that any-hit or intersection
+  // programs count must reach on any device (model/counter_floors.cpp):
+  // each program's leading counts, once for every candidate that every
+  // legal order offers it on the clear launch rays; absent where none.
+  std::map<std::string, uint64_t> counter_floors;
   // model, exact tier (R-ORDER-UNSPEC): candidate programs whose answers
   // depend on the order of more candidates than the model enumerates, each
   // named by its block and file:line (compare/order_dependent_verdict.h).
