@@ -6,6 +6,9 @@
 // of `rayspec mutate` (mutate/legal_devices.h) find no false alarm there.
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <string_view>
+
 #include "compare/compare_results.h"
 #include "fault/planted_fault.h"
 #include "model_support.h"
@@ -235,6 +238,135 @@ TEST(LegalDevices, AnIntersectionProgramRunForANeighbourBoxIsHeldToTheCase) {
     }
     EXPECT_TRUE(found);
   }
+}
+
+// A ray in a triangle's plane (model/in_plane.h): the tilted triangle of
+// plane y = z, ray 0 runs along x in it and across the triangle for t in
+// [4.5, 5.5] (to rounding); ray 1 hits it from above. Both programs write a
+// number and a colour the hit's t does not reach, and `hit_t` straight into
+// its field: the ray keeps its replays (the model's miss, a hit at the
+// span's middle), held as a whole, hit_t to the span.
+std::string inPlaneCase(const std::string& value) {
+  return R"(rules: [R-PREC]
+description: a ray in a tilted triangle's plane
+scene:
+  blas:
+    tri:
+      - triangles: {vertices: [[-1, -1, -1], [1, -1, -1], [0, 1, 1]]}
+  instances: [{blas: tri}]
+rays:
+  list:
+    - {origin: [-5, 0, 0], direction: [1, 0, 0]}
+    - {origin: [0, 0, 5], direction: [0, 0, -1]}
+  tmin: 0.001
+  tmax: 100
+pipeline:
+  miss:
+    - [record: {hit: 0, value: 3, color: [0.0, 0.0, 0.0, 1.0]}]
+  hit_groups:
+    - closest_hit:
+        - record: {hit: 1, primitive_id: primitive_id, hit_t: hit_t, value: )" +
+         value + R"(, color: [0.25, 0.5, 0.75, 1.0]}
+outputs:
+  per_ray: [hit, primitive_id, hit_t, value, color]
+)";
+}
+
+TEST(LegalDevices, ARayInATrianglesPlaneKeepsItsReplaysWhereItsTReachesNoFreeField) {
+  const Case c = parseInline(inPlaneCase("{add: [primitive_id, 7]}"));
+  const Plan plan = derivePlan(c);
+  const Results model = runOnModel(c, plan, ModelOptions{ModelTier::Exact, 1});
+  const RayAmbiguity* a = rayZero(model);
+  ASSERT_NE(a, nullptr);
+  EXPECT_EQ(a->reason, AmbiguityReason::InPlane);
+  EXPECT_EQ(a->replays.size(), 2u) << "the miss and a hit across the triangle";
+  std::map<std::string, LegalDevice> by_name;
+  for (const LegalDevice& d : judgeLegalDevices(c, plan, model, 1)) by_name[d.name] = d;
+  for (const auto& [name, d] : by_name) EXPECT_FALSE(d.false_alarm) << name << ": " << d.headline;
+  ASSERT_TRUE(by_name.count("answer-1"));
+  EXPECT_TRUE(by_name["answer-1"].applied) << by_name["answer-1"].what;
+  ASSERT_TRUE(by_name.count("tolerance-bound"));
+  EXPECT_TRUE(by_name["tolerance-bound"].applied) << by_name["tolerance-bound"].what;
+  // The hit anywhere across the triangle (entry, middle, exit): Pass; the
+  // hit's number or colour wrong, or the miss's number: Fail (before, with
+  // no replays, only what the miss and the hit share was judged).
+  const Results hit = runAs(c, 1, false);
+  ASSERT_EQ(hit.records[findRecordField("hit")->offset], 1u);
+  auto at = [](Results& r, const char* field) {
+    return reinterpret_cast<float*>(&r.records[findRecordField(field)->offset]);
+  };
+  for (const float t : {4.5f, 5.0f, 5.5f}) {
+    Results d = hit;
+    *at(d, "hit_t") = t;
+    EXPECT_EQ(compareResults(c, plan, d, model).status, Status::Pass) << t;
+  }
+  Results past = hit;
+  *at(past, "hit_t") = 6.5f;  // x 1.5: beyond the triangle
+  EXPECT_EQ(compareResults(c, plan, past, model).status, Status::Fail);
+  for (const char* field : {"value", "color"}) {
+    for (const Results* answer : {&hit, &model}) {
+      Results d = *answer;
+      d.backend = "vulkan";
+      uint32_t& word = d.records[findRecordField(field)->offset];
+      word = std::string_view(field) == "value" ? word + 1 : std::bit_cast<uint32_t>(0.125f);
+      const Verdict v = compareResults(c, plan, d, model);
+      EXPECT_EQ(v.status, Status::Fail) << field << ": " << v.headline();
+    }
+  }
+}
+
+// A number computed from the hit's t: each t across the triangle leaves
+// another, so the ray keeps no replays (held to what its answers share).
+TEST(LegalDevices, ARayInATrianglesPlaneKeepsNoReplaysWhereItsTReachesAFreeField) {
+  const Case c = parseInline(inPlaneCase("{uint: {mul: [hit_t, 1000.0]}}"));
+  const Plan plan = derivePlan(c);
+  const Results model = runOnModel(c, plan, ModelOptions{ModelTier::Exact, 1});
+  const RayAmbiguity* a = rayZero(model);
+  ASSERT_NE(a, nullptr);
+  EXPECT_TRUE(a->replays.empty());
+  for (const LegalDevice& d : judgeLegalDevices(c, plan, model, 1))
+    EXPECT_FALSE(d.false_alarm) << d.name << ": " << d.headline;
+}
+
+// A ray nearly in the tilted triangle's plane: its line crosses the plane
+// beside the triangle (t 8), under it by about 3e-6 where it runs across
+// (t in [4.5, 5.5]), its determinant within its bound and the edge functions
+// clearly of both signs (model/watertight.cpp, nearlyInPlane): no longer
+// clearly outside, a hit anywhere across (either face) is legal, and so is
+// the miss; a hit past the triangle still fails, and so does a miss of the
+// clear ray 1.
+TEST(LegalDevices, ARayNearlyInATrianglesPlaneMayHitItAnywhereAcross) {
+  std::string text = inPlaneCase("{add: [primitive_id, 7]}");
+  const std::string in_plane = "{origin: [-5, 0, 0], direction: [1, 0, 0]}";
+  text.replace(
+      text.find(in_plane), in_plane.size(),
+      "{origin: [-5, -5.04765876030433e-06, 0], direction: [1, 6.309573450380412e-07, 0]}");
+  const Case c = parseInline(text);
+  const Plan plan = derivePlan(c);
+  const Results model = runOnModel(c, plan, ModelOptions{ModelTier::Exact, 1});
+  const RayAmbiguity* a = rayZero(model);
+  ASSERT_NE(a, nullptr) << "a clear miss before";
+  EXPECT_EQ(a->reason, AmbiguityReason::InPlane);
+  for (const LegalDevice& d : judgeLegalDevices(c, plan, model, 1))
+    EXPECT_FALSE(d.false_alarm) << d.name << ": " << d.headline;
+  const Results hit = runAs(c, 1, false);
+  ASSERT_EQ(hit.records[findRecordField("hit")->offset], 1u);
+  auto hitT = [](Results& r) {
+    return reinterpret_cast<float*>(&r.records[findRecordField("hit_t")->offset]);
+  };
+  for (const float t : {4.5f, 5.5f}) {
+    Results d = hit;
+    *hitT(d) = t;
+    EXPECT_EQ(compareResults(c, plan, d, model).status, Status::Pass) << t;
+  }
+  Results past = hit;
+  *hitT(past) = 8.0f;  // where the line crosses the plane, beside the triangle
+  EXPECT_EQ(compareResults(c, plan, past, model).status, Status::Fail);
+  Results missed = perfectDevice(c, model);
+  missed.backend = "vulkan";
+  std::copy(missed.records.begin(), missed.records.begin() + recordWords(),
+            missed.records.begin() + recordWords());
+  EXPECT_EQ(compareResults(c, plan, missed, model).status, Status::Fail);
 }
 
 }  // namespace

@@ -75,7 +75,9 @@ struct LaunchState {
   bool ray_ambiguous = false;
   bool ray_undefined = false;
   // A legal answer of the launch ray hits a triangle it runs in the plane
-  // of, at no one t (ModelCandidate::in_plane): the ray keeps no replays.
+  // of, at no one t (ModelCandidate::in_plane), where that t matters beyond
+  // the fields its bound widens (TraceClassifier::inPlaneTMatters): the ray
+  // keeps no replays.
   bool ray_t_free = false;
   bool repeated_any_hit = false;  // AnyHitRepeat::First: this launch ray repeated one
   uint32_t call_nesting = 0;      // callables running now (Pipeline::callableDepth)

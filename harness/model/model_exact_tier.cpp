@@ -237,18 +237,42 @@ void TraceClassifier::boundTOf(double t, double t_err) {
     m_.st_.position_bounds.push_back({m_.st_.index, static_cast<float>(t_err * scale)});
 }
 
+// A replay hits an in-plane triangle (candidate u) at the middle of its
+// span; a device anywhere across it. Its record differs from the replay's
+// only in hit_t, ray_tmax and hit_position (each within the ray's t bound,
+// boundT) where the programs read nothing else of the hit that the span
+// leaves free (CPipeline::reads_in_plane_free) and no other candidate of the
+// trace may lie within the span (then the order of the hits, and which one a
+// committed t culls, is the same for every t across it; an intersection
+// program may report any t): else the t matters.
+bool TraceClassifier::inPlaneTMatters(size_t u) const {
+  if (m_.sh_.programs->reads_in_plane_free) return true;
+  const ModelCandidate& c = cands_[u];
+  const double lo = c.t - c.t_err - tr_.tol(c.t), hi = c.t + c.t_err + tr_.tol(c.t);
+  for (size_t k = 0; k < cands_.size(); ++k) {
+    const ModelCandidate& o = cands_[k];
+    if (k == u || o.nan_triangle ||
+        (!o.aabb && !o.hit && !o.in_plane && o.ambiguity == TriAmbiguity::None))
+      continue;
+    if (o.aabb || (o.t + o.t_err >= lo && o.t - o.t_err <= hi)) return true;
+  }
+  return false;
+}
+
 std::optional<WhatIf> TraceClassifier::finish() {
   if (!reason_) reason_ = tie_reason_;
   ReplayScript* script = m_.st_.replay;
   if (script) script->classified(reason_ ? replay_hows_ : std::vector<WhatIf>{});
   if (!reason_) return std::nullopt;
   amb_.reason = *reason_;
-  // A legal hit on a triangle the ray runs in the plane of: at no one t, so
-  // the ray's replays would pin what is computed from it (legal_replays.cpp).
+  // A legal hit on a triangle the ray runs in the plane of, at no one t:
+  // where its t may matter beyond the fields the t bound widens, the ray's
+  // replays would pin it (legal_replays.cpp).
   for (const Candidate& k : amb_.candidates)
     for (size_t u : unsure_)
       if (k.hit && cands_[u].in_plane && cands_[u].instance == k.instance &&
-          cands_[u].geometry == k.geometry && cands_[u].primitive == k.primitive)
+          cands_[u].geometry == k.geometry && cands_[u].primitive == k.primitive &&
+          inPlaneTMatters(u))
         m_.st_.ray_t_free = true;
   // A leak answer that is also a legal one is legal.
   for (size_t k = amb_.leak_answers.size(); k-- > 0;)

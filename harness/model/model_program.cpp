@@ -12,6 +12,38 @@ namespace rayspec {
 
 namespace {
 
+// The built-ins a hit on a triangle the ray runs in the plane of leaves free
+// (CPipeline::reads_in_plane_free): the hit's t and what follows from it,
+// where on the triangle, which face.
+bool isInPlaneFree(Builtin b) {
+  switch (b) {
+    case kBiHitT:
+    case kBiTmax:
+    case kBiHitPosition:
+    case kBiBarycentrics:
+    case kBiHitKind:
+    case kBiQCandT:
+    case kBiQCommittedT:
+    case kBiQCandBarycentrics:
+    case kBiQCommittedBarycentrics:
+    case kBiQCandFrontFace:
+    case kBiQCommittedFrontFace:
+      return true;
+    default:
+      return false;
+  }
+}
+
+// `record: {field: e}` with e the built-in of the field's own name, a field
+// the comparison widens by the ray's t bound (hit_t, ray_tmax, hit_position).
+bool isOwnBoundedField(const std::string& field, const Expr& e) {
+  const int index = recordFieldIndex(field);
+  if (index < 0 || e.kind != Expr::Kind::Builtin || e.builtin == kBiUnknown) return false;
+  const FieldBound bound = recordFields()[index].bound;
+  return (bound == FieldBound::TBound || bound == FieldBound::PositionBound) &&
+         field == builtins()[e.builtin].name;
+}
+
 struct Compiler {
   const Plan& plan;
   CPipeline& out;
@@ -19,7 +51,8 @@ struct Compiler {
   LocalScope scope;             // the locals visible where the compiler is (their slots)
   std::string shader;           // the shader compiled (its name picks pipeline.specialize's values)
   Stage stage = Stage::Raygen;  // the stage compiled
-  uint32_t incoming_location = 0;  // its incoming payload's or callable data's location
+  uint32_t incoming_location = 0;   // its incoming payload's or callable data's location
+  bool into_bounded_field = false;  // compiling isOwnBoundedField's e
 
   // Starts a shader: its name, stage and incoming data location.
   void begin(Stage s, size_t index, uint32_t location) {
@@ -81,6 +114,8 @@ struct Compiler {
         if (r.builtin != kBiUnknown) {
           out.read_bits.set(r.builtin);
           out.needs |= builtins()[r.builtin].needs;
+          if (!into_bounded_field && isInPlaneFree(static_cast<Builtin>(r.builtin)))
+            out.reads_in_plane_free = true;
         }
         break;
       }
@@ -189,7 +224,9 @@ struct Compiler {
     }
     for (const auto& [field, e] : s.assigns) {
       CAssign a;
+      into_bounded_field = s.kind == Stmt::Kind::Record && isOwnBoundedField(field, e);
       a.value = expr(e);
+      into_bounded_field = false;
       if (s.kind == Stmt::Kind::Record) {
         a.field = recordFieldIndex(field);
         if (a.field >= 0 && recordFields()[a.field].automatic) a.field = -1;

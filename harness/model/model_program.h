@@ -145,6 +145,12 @@ struct CPipeline {
   std::bitset<kBiCount> read_bits;  // every built-in any program reads
   BuiltinNeeds needs = 0;           // every need of the built-ins read (program/builtins.h)
   bool reads_sphere = false;        // sphere_* ops (read the object-space ray and the box)
+  // A built-in a hit on a triangle the ray runs in the plane of leaves free
+  // (ModelCandidate::in_plane: its t anywhere across the triangle, either
+  // face; isInPlaneFree) is read other than straight into its own record
+  // field of bounded t (hit_t, ray_tmax, hit_position: a replay's record
+  // holds those to the ray's t bound): such a ray keeps no replays.
+  bool reads_in_plane_free = false;
   bool any_hit_terminates = false;  // some group's any-hit has a `terminate`
   // Its any-hit or intersection programs may depend on the order candidates
   // arrive in (model/order_dependence.h).

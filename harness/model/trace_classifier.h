@@ -56,6 +56,7 @@ class TraceClassifier {
   static WhatIf actual() { return {true, {}, -1, -1, {}}; }
   bool sameAsCommitted(const Committed& b) const;
   void boundTOf(double t, double t_err);
+  bool inPlaneTMatters(size_t u) const;
   // tryPermutations' steps: the candidates whose order may matter, whether
   // two reports tie, what the actual run left behind, and a case error
   // where a sample of the orders past the bound answers otherwise.

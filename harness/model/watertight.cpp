@@ -135,6 +135,21 @@ bool solveHit(const WatertightRay& w, const DVec3* const v[3], const DVec3& vert
   return true;
 }
 
+// A determinant of no sure sign: the ray's line nearly in the triangle's
+// plane (the triangle seen edge-on, to rounding). A watertight device takes
+// det as the sum of the edge functions and tests their signs alone, but a
+// device may compute det apart from them (Moller-Trumbore: det = E1 . (D x
+// E2), the barycentrics T . P / det and D . Q / det tested against 0 and 1,
+// by a division or a reciprocal's product, fused or not): a det of the
+// other sign turns its inside into the cone opposite a vertex, a det near 0
+// makes its barycentrics and t ratios of rounding. So no sign of an edge
+// function is sure there, however clear: a hit on either face anywhere along
+// the line's near-overlap with the triangle is legal, and so is none
+// (in_plane.h; lavapipe 25.0.7 and Mesa 26.2.6 hit such rays).
+bool nearlyInPlane(double det, const double bound[3]) {
+  return det != 0.0 && std::fabs(det) <= bound[0] + bound[1] + bound[2];
+}
+
 // Edge functions within their bound: one is an edge, two meeting at a vertex
 // (the third clear) is that vertex, three is no shape at all; nearly edge-on
 // or degenerate, a device may see no triangle at all.
@@ -188,9 +203,11 @@ WatertightHit watertightIntersectPrepared(const WatertightRay& w, const DVec3& v
     return r;
   }
   r.hit = !(any_neg && any_pos) && det != 0.0;
-  if (clear_neg && clear_pos) return r;  // clearly outside
-  r.in_plane = det == 0.0 && std::fabs(e[0]) <= bound[0] && std::fabs(e[1]) <= bound[1] &&
-               std::fabs(e[2]) <= bound[2];
+  const bool near_plane = nearlyInPlane(det, bound);
+  if (clear_neg && clear_pos && !near_plane) return r;  // clearly outside
+  r.in_plane = (det == 0.0 && std::fabs(e[0]) <= bound[0] && std::fabs(e[1]) <= bound[1] &&
+                std::fabs(e[2]) <= bound[2]) ||
+               (near_plane && clear_neg && clear_pos);
   r.ambiguity = nearEdges(e, bound, det);
   for (int i = 0; i < 3; ++i)
     if (std::fabs(e[i]) <= bound[i]) r.near_edges |= static_cast<uint8_t>(1u << i);

@@ -30,10 +30,14 @@
 // underflowing B): e < -M here implies e < -bound there, and e > M implies
 // e > bound.
 //
-// Rejection: some edge function below -M and another above +M. Then, in
-// watertightIntersect, clear_neg and clear_pos both hold, the perturbed sides
-// equal the (non-zero) edge functions, so any_neg and any_pos hold: hit is
-// false, and it returns before any ambiguity is set (ambiguity None). Unless
+// Rejection: some edge function below -M and another above +M, and their
+// sum det beyond 3 M (1 + 2^-20). Then, in watertightIntersect, clear_neg and
+// clear_pos both hold, the perturbed sides equal the (non-zero) edge
+// functions, so any_neg and any_pos hold: hit is false; its det (the same
+// sum, of edge functions within 2^-30 B each of these, rounded alike) lies
+// beyond the sum of the three bounds (each <= B (1 + 2^-40)), so the ray is
+// not nearly in the plane (nearlyInPlane), and it returns before any
+// ambiguity is set (ambiguity None). Unless
 // a NaN turns up there first: then valid is false. Either way the model drops
 // the triangle (ownTriangleIntersect). A NaN or an infinity here fails every
 // comparison: no rejection, the full test decides.
@@ -87,7 +91,7 @@ bool watertightCertainMiss(const WatertightRay& w, const DVec3& v0, const DVec3&
     neg = neg || x < -margin;
     pos = pos || x > margin;
   }
-  return neg && pos;
+  return neg && pos && std::fabs(e[0] + e[1] + e[2]) > 3 * margin * (1 + 0x1p-20);
 }
 
 }  // namespace rayspec
