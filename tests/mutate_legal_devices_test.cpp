@@ -351,16 +351,16 @@ TEST(LegalDevices, ARayNearlyInATrianglesPlaneMayHitItAnywhereAcross) {
     EXPECT_FALSE(d.false_alarm) << d.name << ": " << d.headline;
   const Results hit = runAs(c, 1, false);
   ASSERT_EQ(hit.records[findRecordField("hit")->offset], 1u);
-  auto hitT = [](Results& r) {
+  auto hit_t_of = [](Results& r) {
     return reinterpret_cast<float*>(&r.records[findRecordField("hit_t")->offset]);
   };
   for (const float t : {4.5f, 5.5f}) {
     Results d = hit;
-    *hitT(d) = t;
+    *hit_t_of(d) = t;
     EXPECT_EQ(compareResults(c, plan, d, model).status, Status::Pass) << t;
   }
   Results past = hit;
-  *hitT(past) = 8.0f;  // where the line crosses the plane, beside the triangle
+  *hit_t_of(past) = 8.0f;  // where the line crosses the plane, beside the triangle
   EXPECT_EQ(compareResults(c, plan, past, model).status, Status::Fail);
   Results missed = perfectDevice(c, model);
   missed.backend = "vulkan";
