@@ -35,7 +35,10 @@ struct CompareOptions {
 };
 
 struct ListOptions {
-  bool rules = false;  // rule -> cases instead of case -> rules
+  bool rules = false;    // rule -> cases instead of case -> rules
+  bool cts_map = false;  // docs/cts-map.md with its tables made from references/cts-map.yaml
+  std::string cts_map_file = RAYSPEC_SOURCE_DIR "/references/cts-map.yaml";
+  std::string cts_doc = RAYSPEC_SOURCE_DIR "/docs/cts-map.md";
   std::string filter = "*";
   std::string cases_dir = RAYSPEC_SOURCE_DIR "/cases";
   std::string rules_file = RAYSPEC_SOURCE_DIR "/references/spec-rules.yaml";
@@ -74,6 +77,7 @@ int runShow(const ShowOptions& opt);
 std::optional<CaseFile> caseToShow(const std::string& given, const std::string& cases_dir,
                                    const char* verb);
 int runList(const ListOptions& opt);
+int runCtsMap(const ListOptions& opt);  // `rayspec list --cts-map`
 int runCompile(const CompileOptions& opt);
 int runCompare(const CompareOptions& opt);
 int runMerge(const MergeOptions& opt);

@@ -113,13 +113,20 @@ Subcommand addListCommand(CLI::App& app) {
   list->add_flag(
       "--rules", list_opt.rules,
       "Rule -> cases for every rule of the catalog; exits 1 when a rule (R-UB apart) has no case");
+  list->add_flag("--cts-map", list_opt.cts_map,
+                 "Print --cts-doc with its CTS tables made from --cts-map-file (the counts from "
+                 "the files it names); exits 1 when a group, count, case glob or path is wrong");
+  list->add_option("--cts-map-file", list_opt.cts_map_file, "The map of CTS groups")
+      ->capture_default_str();
+  list->add_option("--cts-doc", list_opt.cts_doc, "The page holding the CTS tables")
+      ->capture_default_str();
   list->add_option("--filter", list_opt.filter, "Only cases whose name matches this glob")
       ->capture_default_str();
   list->add_option("--cases", list_opt.cases_dir, "Folder of case files")->capture_default_str();
   list->add_option("--rules-file", list_opt.rules_file, "Rule catalog")->capture_default_str();
 
   return {list, [opt] {
-            return runList(*opt);
+            return opt->cts_map ? runCtsMap(*opt) : runList(*opt);
           }};
 }
 

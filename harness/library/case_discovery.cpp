@@ -93,6 +93,11 @@ std::vector<CaseFile> caseFilesFor(const std::string& path, const std::string& c
   return expand(path, name);
 }
 
+bool caseMatches(const CaseFile& f, const std::string& dir, const std::string& glob) {
+  const bool whole = f.generated && fnmatch(glob.c_str(), nameOf(f.path, dir).c_str(), 0) == 0;
+  return whole || fnmatch(glob.c_str(), f.name.c_str(), 0) == 0;
+}
+
 std::vector<CaseFile> findCases(const std::string& dir, const std::string& glob) {
   std::vector<CaseFile> out;
   std::error_code ec;
@@ -109,10 +114,8 @@ std::vector<CaseFile> findCases(const std::string& dir, const std::string& glob)
     for (CaseFile& f : expand(p.string(), name)) all.push_back(std::move(f));
   }
   checkCaseNames(all);
-  for (CaseFile& f : all) {
-    const bool whole = f.generated && fnmatch(glob.c_str(), nameOf(f.path, dir).c_str(), 0) == 0;
-    if (whole || fnmatch(glob.c_str(), f.name.c_str(), 0) == 0) out.push_back(std::move(f));
-  }
+  for (CaseFile& f : all)
+    if (caseMatches(f, dir, glob)) out.push_back(std::move(f));
   std::sort(out.begin(), out.end(),
             [](const CaseFile& a, const CaseFile& b) { return a.name < b.name; });
   return out;

@@ -24,6 +24,9 @@ struct CaseFile {
 // variant matches by its own name or by the sweep's (`sbt/indexing` runs all).
 // Names are checked over the whole folder (checkCaseNames).
 std::vector<CaseFile> findCases(const std::string& dir, const std::string& glob);
+// Whether findCases(dir, glob) takes `f` (one of dir's cases): to match many
+// globs against the folder's cases listed once.
+bool caseMatches(const CaseFile& f, const std::string& dir, const std::string& glob);
 // The cases matching any of the globs, sorted by name, each once.
 std::vector<CaseFile> findCasesAny(const std::string& dir, const std::vector<std::string>& globs);
 
