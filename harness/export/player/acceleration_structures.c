@@ -48,6 +48,25 @@ static VkDeviceAddress rs_input(const uint8_t* bytes, size_t n) {
   return n ? rs_make_buffer(n, rs_input_usage, bytes).address : 0;
 }
 
+static void rs_describe_triangles(VkAccelerationStructureGeometryTrianglesDataKHR* t,
+                                  const rs_geometry* g) {
+  t->sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR;
+  t->vertexFormat = g->format;
+  t->vertexStride = g->stride;
+  t->maxVertex = g->max_vertex;
+  t->indexType = g->index_type;
+  t->vertexData.deviceAddress = rs_input(g->vertices, g->vertex_bytes);
+  t->indexData.deviceAddress = rs_input(g->indices, g->index_bytes);
+  t->transformData.deviceAddress = rs_input(g->transform, g->transform_bytes);
+}
+
+static void rs_describe_aabbs(VkAccelerationStructureGeometryAabbsDataKHR* a,
+                              const rs_geometry* g) {
+  a->sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_AABBS_DATA_KHR;
+  a->stride = g->stride;
+  a->data.deviceAddress = rs_input(g->vertices, g->vertex_bytes);
+}
+
 static VkDeviceAddress rs_build_blas(const rs_blas* b) {
   VkAccelerationStructureGeometryKHR geos[RS_MAX_GEOMETRIES];
   VkAccelerationStructureBuildRangeInfoKHR ranges[RS_MAX_GEOMETRIES];
@@ -55,19 +74,14 @@ static VkDeviceAddress rs_build_blas(const rs_blas* b) {
   uint32_t i;
   for (i = 0; i < b->geometry_count; ++i) {
     const rs_geometry* g = &rs_geometries[b->first_geometry + i];
-    VkAccelerationStructureGeometryTrianglesDataKHR* t = &geos[i].geometry.triangles;
     memset(&geos[i], 0, sizeof geos[i]);
     geos[i].sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR;
-    geos[i].geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
+    geos[i].geometryType = g->type;
     geos[i].flags = g->flags;
-    t->sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR;
-    t->vertexFormat = g->format;
-    t->vertexStride = g->stride;
-    t->maxVertex = g->max_vertex;
-    t->indexType = g->index_type;
-    t->vertexData.deviceAddress = rs_input(g->vertices, g->vertex_bytes);
-    t->indexData.deviceAddress = rs_input(g->indices, g->index_bytes);
-    t->transformData.deviceAddress = rs_input(g->transform, g->transform_bytes);
+    if (g->type == VK_GEOMETRY_TYPE_AABBS_KHR)
+      rs_describe_aabbs(&geos[i].geometry.aabbs, g);
+    else
+      rs_describe_triangles(&geos[i].geometry.triangles, g);
     ranges[i] = g->range;
   }
   return rs_build(VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, geos, b->geometry_count, ranges,
@@ -79,6 +93,7 @@ static void rs_check_vertex_formats(void) {
   uint32_t i;
   for (i = 0; i < sizeof rs_geometries / sizeof rs_geometries[0]; ++i) {
     VkFormatProperties p;
+    if (rs_geometries[i].type != VK_GEOMETRY_TYPE_TRIANGLES_KHR) continue;
     vkGetPhysicalDeviceFormatProperties(rs_physical, rs_geometries[i].format, &p);
     if (p.bufferFeatures & VK_FORMAT_FEATURE_ACCELERATION_STRUCTURE_VERTEX_BUFFER_BIT_KHR) continue;
     printf(
@@ -115,4 +130,3 @@ static VkAccelerationStructureKHR rs_build_scene(void) {
   rs_build(VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, &geo, 1, &range, &tlas);
   return tlas;
 }
-

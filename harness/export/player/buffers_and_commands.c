@@ -74,4 +74,3 @@ static void rs_submit(VkCommandBuffer cmd) {
   rs_check(vkQueueSubmit(rs_queue, 1, &submit, VK_NULL_HANDLE), "vkQueueSubmit");
   rs_check(vkQueueWaitIdle(rs_queue), "vkQueueWaitIdle");
 }
-

@@ -32,6 +32,9 @@ typedef struct {
   uint32_t general, closest_hit, any_hit, intersection; /* shader indices or RS_NONE */
 } rs_group;
 typedef struct {
+  /* Triangles, or AABBs: then `vertices` holds the boxes (VkAabbPositionsKHR,
+     `stride` apart) and the format and index fields are unused. */
+  VkGeometryTypeKHR type;
   VkFormat format;
   const char* format_name; /* the case's name of it (triangles.vertex_format) */
   uint32_t stride, max_vertex;
@@ -53,14 +56,25 @@ typedef struct {
   uint32_t data_words;
   uint32_t data[8];
 } rs_record;
-enum rs_binding_kind { RS_BIND_TLAS, RS_BIND_RAYS, RS_BIND_RECORDS, RS_BIND_COUNTERS };
+/* RS_BIND_WORDS: a read-only buffer of fixed words (the scene data of
+   intersection programs, the SBT as tables). */
+enum rs_binding_kind {
+  RS_BIND_TLAS,
+  RS_BIND_RAYS,
+  RS_BIND_RECORDS,
+  RS_BIND_COUNTERS,
+  RS_BIND_WORDS
+};
 typedef struct {
   uint32_t binding;
   enum rs_binding_kind kind;
+  const uint32_t* words; /* RS_BIND_WORDS: the buffer's contents */
+  size_t bytes;
 } rs_binding;
 typedef struct {
   const char *name, *rule;
   uint32_t offset, words, is_float, automatic, bit;
+  uint32_t bound; /* the rs_bound.by a ray's bound widens its abs with (0: none) */
   double abs, rel;
 } rs_field;
 typedef struct {
@@ -71,6 +85,13 @@ typedef struct {
   const char *name, *rule;
   uint64_t lo, hi;
 } rs_counter;
+typedef struct {
+  uint32_t ray;
+  uint64_t fields; /* bit rs_field.bit: a field a repeated any-hit may change */
+} rs_repeat;
+typedef struct {
+  uint32_t ray;
+  float by[4]; /* 0, then the ray's t, object-origin and hit-position bounds (R-PREC) */
+} rs_bound;
 
 /* RAYSPEC_CASE_DATA */
-

@@ -17,8 +17,17 @@ static int rs_written(const uint32_t* rec, const rs_field* f) {
   return f->automatic || ((rec[f->bit / 32] >> (f->bit % 32)) & 1u);
 }
 
-/* One field of a record as the expected one has it (the judge's sameField). */
-static int rs_same(const rs_field* f, const uint32_t* d, const uint32_t* m) {
+/* What a ray's fields are compared under: the fields left out (bit
+   rs_field.bit) and the ray's bounds (rs_bound.by). */
+typedef struct {
+  uint64_t skip;
+  const float* widen;
+} rs_ray_rules;
+
+/* One field of a record as the expected one has it (the judge's sameField):
+   floats within the field's tolerance, its abs widened to the ray's bound. */
+static int rs_same(const rs_field* f, const uint32_t* d, const uint32_t* m, const float* widen) {
+  const double abs = f->abs > widen[f->bound] ? f->abs : (double)widen[f->bound];
   uint32_t k;
   if (rs_written(d, f) != rs_written(m, f)) return 0;
   if (!rs_written(d, f)) return 1;
@@ -31,7 +40,7 @@ static int rs_same(const rs_field* f, const uint32_t* d, const uint32_t* m) {
       double diff = rs_abs((double)df - (double)mf), scale = rs_abs((double)mf);
       if (rs_nan(df) || rs_nan(mf)) {
         if (!(rs_nan(df) && rs_nan(mf))) return 0;
-      } else if (df != mf && diff > f->abs + f->rel * (scale > 1.0 ? scale : 1.0)) {
+      } else if (df != mf && diff > abs + f->rel * (scale > 1.0 ? scale : 1.0)) {
         return 0;
       }
     }
@@ -56,7 +65,9 @@ static void rs_print_value(const rs_field* f, const uint32_t* rec) {
 /* The counts as variables: a loop up to a count of 0 draws no warning. */
 static const uint32_t rs_ambiguous_count = RS_AMBIGUOUS_COUNT;
 static const uint32_t rs_counter_count = RS_COUNTER_COUNT;
-static const uint32_t rs_ray_count = RS_RAY_COUNT;
+static const uint32_t rs_ray_count = RS_RECORDS_JUDGED ? RS_RAY_COUNT : 0; /* rays judged */
+static const uint32_t rs_repeat_count = RS_REPEAT_COUNT;
+static const uint32_t rs_bound_count = RS_BOUND_COUNT;
 
 static const rs_ambiguous* rs_ambiguity(uint32_t ray) {
   uint32_t i;
@@ -65,39 +76,61 @@ static const rs_ambiguous* rs_ambiguity(uint32_t ray) {
   return NULL;
 }
 
-/* The first field of `d` that differs from `m`, or NULL. */
-static const rs_field* rs_differs(const uint32_t* d, const uint32_t* m) {
+/* The ray's rules: the fields a repeated any-hit may change (R-AHIT-DUP),
+   not judged, and the model's wider bounds of its t, origin and position. */
+static rs_ray_rules rs_rules_of(uint32_t ray) {
+  static const float none[4] = {0, 0, 0, 0};
+  rs_ray_rules r;
+  uint32_t i;
+  r.skip = 0;
+  r.widen = none;
+  for (i = 0; i < rs_repeat_count; ++i)
+    if (rs_repeat_rays[i].ray == ray) r.skip = rs_repeat_rays[i].fields;
+  for (i = 0; i < rs_bound_count; ++i)
+    if (rs_bounds[i].ray == ray) r.widen = rs_bounds[i].by;
+  return r;
+}
+
+/* The first field of `d` that differs from `m` under `r`, or NULL. */
+static const rs_field* rs_differs(const uint32_t* d, const uint32_t* m, rs_ray_rules r) {
   uint32_t i;
   for (i = 0; i < RS_FIELD_COUNT; ++i)
-    if (!rs_same(&rs_fields[i], d, m)) return &rs_fields[i];
+    if (!((r.skip >> rs_fields[i].bit) & 1u) && !rs_same(&rs_fields[i], d, m, r.widen))
+      return &rs_fields[i];
   return NULL;
+}
+
+static void rs_print_difference(const rs_field* f, const uint32_t* expected, const uint32_t* d) {
+  printf("field '%s': expected ", f->name);
+  rs_print_value(f, expected);
+  printf(", observed ");
+  rs_print_value(f, d);
+  printf("\n");
 }
 
 static int rs_check_ray(uint32_t ray, const uint32_t* d) {
   const rs_ambiguous* a = rs_ambiguity(ray);
+  rs_ray_rules r = rs_rules_of(ray);
+  const uint32_t* m = rs_expected + (size_t)ray * RS_RECORD_WORDS;
   const rs_field* f;
   uint32_t i;
   if (!a) {
-    f = rs_differs(d, rs_expected + (size_t)ray * RS_RECORD_WORDS);
+    f = rs_differs(d, m, r);
     if (!f) return 1;
-    printf("FAIL: %s: ray %u: field '%s': expected ", f->rule, ray, f->name);
-    rs_print_value(f, rs_expected + (size_t)ray * RS_RECORD_WORDS);
-    printf(", observed ");
-    rs_print_value(f, d);
-    printf("\n");
+    printf("FAIL: %s: ray %u: ", f->rule, ray);
+    rs_print_difference(f, m, d);
     return 0;
   }
+  if (r.skip) return 1; /* its legal answers and what repetition changes: not judged */
   for (i = 0; i < a->replays; ++i)
-    if (!rs_differs(d, rs_replays + (size_t)(a->first_replay + i) * RS_RECORD_WORDS)) return 1;
-  f = rs_differs(d, rs_replays + (size_t)a->first_replay * RS_RECORD_WORDS);
+    if (!rs_differs(d, rs_replays + (size_t)(a->first_replay + i) * RS_RECORD_WORDS, r)) return 1;
+  m = rs_replays + (size_t)a->first_replay * RS_RECORD_WORDS;
+  f = rs_differs(d, m, r);
   printf(
       "FAIL: %s: ray %u (numerically ambiguous: %s): the record is none of its %u legal answers; "
-      "field '%s' of the first: expected ",
-      a->rule, ray, a->reason, a->replays, f->name);
-  rs_print_value(f, rs_replays + (size_t)a->first_replay * RS_RECORD_WORDS);
-  printf(", observed ");
-  rs_print_value(f, d);
-  printf("\n");
+      "of the first: ",
+      a->rule, ray, a->reason, a->replays);
+  rs_print_difference(f, m, d);
   return 0;
 }
 
@@ -116,4 +149,3 @@ static int rs_compare(const uint32_t* records, const uint32_t* counters) {
   }
   return failures;
 }
-

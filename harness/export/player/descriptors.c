@@ -2,7 +2,42 @@
 
 typedef struct {
   rs_buffer rays, records, records_ref, counters;
+  rs_buffer words[RS_BINDING_COUNT]; /* each RS_BIND_WORDS binding's, by its index */
 } rs_io;
+
+/* The buffers the descriptor set binds: the rays, the records (by address),
+   the counters and each binding of fixed words. */
+static rs_io rs_make_io(void) {
+  const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+  rs_io io;
+  uint32_t i;
+  memset(&io, 0, sizeof io);
+  io.rays = rs_make_buffer(sizeof rs_rays, storage, rs_rays);
+  io.records = rs_make_buffer((VkDeviceSize)RS_RAY_COUNT * RS_RECORD_WORDS * 4, storage, NULL);
+  io.records_ref = rs_make_buffer(8, storage, &io.records.address);
+  io.counters = rs_make_buffer(4 * (RS_COUNTER_COUNT ? RS_COUNTER_COUNT : 1), storage, NULL);
+  for (i = 0; i < RS_BINDING_COUNT; ++i)
+    if (rs_bindings[i].kind == RS_BIND_WORDS)
+      io.words[i] = rs_make_buffer(rs_bindings[i].bytes, storage, rs_bindings[i].words);
+  return io;
+}
+
+/* The buffer binding i reads (the top level's binding: none). */
+static const rs_buffer* rs_bound_buffer(uint32_t i, const rs_io* io) {
+  switch (rs_bindings[i].kind) {
+    case RS_BIND_RAYS:
+      return &io->rays;
+    case RS_BIND_RECORDS:
+      return &io->records_ref;
+    case RS_BIND_COUNTERS:
+      return &io->counters;
+    case RS_BIND_WORDS:
+      return &io->words[i];
+    case RS_BIND_TLAS:
+      break;
+  }
+  return NULL;
+}
 
 static VkDescriptorSet rs_bind(VkDescriptorSetLayout* set_layout, VkAccelerationStructureKHR tlas,
                                const rs_io* io) {
@@ -22,9 +57,7 @@ static VkDescriptorSet rs_bind(VkDescriptorSetLayout* set_layout, VkAcceleration
   as.accelerationStructureCount = 1;
   as.pAccelerationStructures = &tlas;
   for (i = 0; i < RS_BINDING_COUNT; ++i) {
-    const rs_buffer* src = rs_bindings[i].kind == RS_BIND_RAYS      ? &io->rays
-                           : rs_bindings[i].kind == RS_BIND_RECORDS ? &io->records_ref
-                                                                    : &io->counters;
+    const rs_buffer* src = rs_bound_buffer(i, io);
     int is_tlas = rs_bindings[i].kind == RS_BIND_TLAS;
     memset(&b[i], 0, sizeof b[i]);
     memset(&w[i], 0, sizeof w[i]);
@@ -36,7 +69,7 @@ static VkDescriptorSet rs_bind(VkDescriptorSetLayout* set_layout, VkAcceleration
                       VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR | VK_SHADER_STAGE_ANY_HIT_BIT_KHR |
                       VK_SHADER_STAGE_INTERSECTION_BIT_KHR | VK_SHADER_STAGE_CALLABLE_BIT_KHR;
     w[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-    buffers[i].buffer = src->buffer;
+    buffers[i].buffer = src ? src->buffer : VK_NULL_HANDLE;
     buffers[i].offset = 0;
     buffers[i].range = VK_WHOLE_SIZE;
     if (is_tlas)
@@ -60,4 +93,3 @@ static VkDescriptorSet rs_bind(VkDescriptorSetLayout* set_layout, VkAcceleration
   vkUpdateDescriptorSets(rs_device, RS_BINDING_COUNT, w, 0, NULL);
   return set;
 }
-

@@ -166,4 +166,3 @@ static void rs_load_functions(void) {
   pool.queueFamilyIndex = rs_queue_family;
   rs_check(vkCreateCommandPool(rs_device, &pool, NULL, &rs_pool), "vkCreateCommandPool");
 }
-

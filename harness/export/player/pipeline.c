@@ -41,4 +41,3 @@ static VkPipeline rs_create_pipeline(VkPipelineLayout layout) {
       "vkCreateRayTracingPipelinesKHR");
   return pipeline;
 }
-

@@ -28,44 +28,53 @@ static VkStridedDeviceAddressRegionKHR rs_region(uint8_t* table, VkDeviceAddress
   return r;
 }
 
+/* The regions in table order (raygen, miss, hit, callable): each one's
+   records and padding. The raygen region holds one record, unpadded. */
+typedef struct {
+  const rs_record* records;
+  uint32_t count, padding;
+} rs_region_records;
+
 static rs_regions rs_write_sbt(VkPipeline pipeline) {
   VkPhysicalDeviceRayTracingPipelinePropertiesKHR rt = {
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_PROPERTIES_KHR};
   VkPhysicalDeviceProperties2 props = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &rt};
+  const rs_region_records regions[4] = {
+      {&rs_raygen_record, 1, 0},
+      {rs_miss_records, RS_MISS_RECORDS, RS_MISS_PADDING},
+      {rs_hit_records, RS_HIT_RECORDS, RS_HIT_PADDING},
+      {rs_callable_records, RS_CALLABLE_RECORDS, RS_CALLABLE_PADDING}};
+  VkStridedDeviceAddressRegionKHR* made[4];
+  VkDeviceSize stride[4], at[4], end = 0;
   rs_regions out;
-  uint8_t* handles;
-  VkDeviceSize raygen_stride, miss_stride, hit_stride, miss_at, hit_at, total;
+  uint8_t *handles, *bytes;
+  VkDeviceAddress base;
   rs_buffer table;
+  uint32_t r;
   vkGetPhysicalDeviceProperties2(rs_physical, &props);
   handles = malloc((size_t)RS_GROUP_COUNT * rt.shaderGroupHandleSize);
   rs_check(rs_group_handles(rs_device, pipeline, 0, RS_GROUP_COUNT,
                             (size_t)RS_GROUP_COUNT * rt.shaderGroupHandleSize, handles),
            "vkGetRayTracingShaderGroupHandlesKHR");
-  raygen_stride =
-      rs_align(rt.shaderGroupHandleSize + RS_RECORD_DATA_BYTES, rt.shaderGroupHandleAlignment);
-  miss_stride = rs_align(rt.shaderGroupHandleSize + RS_RECORD_DATA_BYTES + RS_MISS_PADDING,
+  for (r = 0; r < 4; ++r) {
+    stride[r] = rs_align(rt.shaderGroupHandleSize + RS_RECORD_DATA_BYTES + regions[r].padding,
                          rt.shaderGroupHandleAlignment);
-  hit_stride = rs_align(rt.shaderGroupHandleSize + RS_RECORD_DATA_BYTES + RS_HIT_PADDING,
-                        rt.shaderGroupHandleAlignment);
-  if (miss_stride > rt.maxShaderGroupStride || hit_stride > rt.maxShaderGroupStride)
-    rs_unsupported("an SBT stride within maxShaderGroupStride");
-  miss_at = rs_align(raygen_stride, rt.shaderGroupBaseAlignment);
-  hit_at = rs_align(miss_at + miss_stride * RS_MISS_RECORDS, rt.shaderGroupBaseAlignment);
-  total = hit_at + hit_stride * RS_HIT_RECORDS;
-  table = rs_make_buffer(total + rt.shaderGroupBaseAlignment,
-                         VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR, NULL);
-  {
-    VkDeviceAddress base = rs_align(table.address, rt.shaderGroupBaseAlignment);
-    uint8_t* bytes = (uint8_t*)table.mapped + (base - table.address);
-    out.raygen = rs_region(bytes, base, 0, raygen_stride, &rs_raygen_record, 1, handles,
-                           rt.shaderGroupHandleSize);
-    out.miss = rs_region(bytes, base, miss_at, miss_stride, rs_miss_records, RS_MISS_RECORDS,
-                         handles, rt.shaderGroupHandleSize);
-    out.hit = rs_region(bytes, base, hit_at, hit_stride, rs_hit_records, RS_HIT_RECORDS, handles,
-                        rt.shaderGroupHandleSize);
-    memset(&out.callable, 0, sizeof out.callable);
+    if (r && stride[r] > rt.maxShaderGroupStride)
+      rs_unsupported("an SBT stride within maxShaderGroupStride");
+    at[r] = rs_align(end, rt.shaderGroupBaseAlignment);
+    end = at[r] + stride[r] * regions[r].count;
   }
+  table = rs_make_buffer(end + rt.shaderGroupBaseAlignment,
+                         VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR, NULL);
+  base = rs_align(table.address, rt.shaderGroupBaseAlignment);
+  bytes = (uint8_t*)table.mapped + (base - table.address);
+  made[0] = &out.raygen;
+  made[1] = &out.miss;
+  made[2] = &out.hit;
+  made[3] = &out.callable;
+  for (r = 0; r < 4; ++r)
+    *made[r] = rs_region(bytes, base, at[r], stride[r], regions[r].records, regions[r].count,
+                         handles, rt.shaderGroupHandleSize);
   free(handles);
   return out;
 }
-

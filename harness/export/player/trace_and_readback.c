@@ -17,12 +17,7 @@ int main(int argc, char** argv) {
   rs_create_device();
   rs_load_functions();
   tlas = rs_build_scene();
-  io.rays = rs_make_buffer(sizeof rs_rays, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, rs_rays);
-  io.records = rs_make_buffer((VkDeviceSize)RS_RAY_COUNT * RS_RECORD_WORDS * 4,
-                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, NULL);
-  io.records_ref = rs_make_buffer(8, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, &io.records.address);
-  io.counters = rs_make_buffer(4 * (RS_COUNTER_COUNT ? RS_COUNTER_COUNT : 1),
-                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, NULL);
+  io = rs_make_io();
   set = rs_bind(&set_layout, tlas, &io);
   layout_info.setLayoutCount = 1;
   layout_info.pSetLayouts = &set_layout;
@@ -42,7 +37,7 @@ int main(int argc, char** argv) {
     printf("FAIL: %d of the checks differ from the reference model\n", failures);
     return 1;
   }
-  printf("PASS: %u rays and %u counters as the reference model expects\n", (unsigned)RS_RAY_COUNT,
+  printf("PASS: %u rays and %u counters as the reference model expects\n", (unsigned)rs_ray_count,
          (unsigned)RS_COUNTER_COUNT);
   return 0;
 }
