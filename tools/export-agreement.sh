@@ -7,15 +7,16 @@
 #   bash tools/export-agreement.sh OUT [DEVICE] [BASELINE]
 # (DEVICE default llvmpipe, BASELINE default references/baselines/lavapipe.csv;
 # OUT/summary.txt: the counts per family, the refusals by reason, every
-# disagreement.) JOBS (default 2) cases at a time.
+# disagreement.) JOBS (default 2) cases at a time; RAYSPEC: the binary (build/rayspec).
 set -uo pipefail
 cd "$(dirname "$0")/.."
 out=${1:?usage: export-agreement.sh OUT [DEVICE] [BASELINE]}
 device=${2:-llvmpipe}
 baseline=${3:-references/baselines/lavapipe.csv}
+rayspec=${RAYSPEC:-build/rayspec}
 jobs=${JOBS:-2}
 mkdir -p "$out"
-export out device baseline
+export out device baseline rayspec
 # One case file: exported, built and run; one line "family, verdict, case, detail" printed.
 one_case() {
   local file=$1 rel dir family rc reason name want want_rc got verdict
@@ -23,7 +24,7 @@ one_case() {
   dir="$out/${rel%.yaml}"
   family=${rel%%/*}
   mkdir -p "$dir"
-  build/rayspec export "$file" --out "$dir" >"$dir/export.txt" 2>"$dir/refused.txt"
+  "$rayspec" export "$file" --out "$dir" >"$dir/export.txt" 2>"$dir/refused.txt"
   rc=$?
   if [[ $rc -ne 0 ]]; then
     reason=$(sed -n 's/.*export: case uses \(.*\), not yet exported.*/\1/p' "$dir/refused.txt" | head -1)

@@ -32,6 +32,9 @@ std::string sceneFeature(const Case& c) {
   if (s.build.command != BuildCommand::Device) return "indirect builds (scene.build.command)";
   if (s.build.instances_as_pointers) return "instances as pointers (scene.build)";
   if (s.tlasCount() > 1) return "several top levels";
+  for (const Instance& i : s.instances)
+    if (i.flags & kInstanceOpacityMicromapFlags)
+      return "opacity micromap instance flags (VK_EXT_opacity_micromap)";
   if (s.blases.empty() || s.instances.empty()) return "an empty scene";
   for (const Blas& b : s.blases)
     if (b.geometries.empty()) return "an empty bottom level";

@@ -137,7 +137,9 @@ std::string pipelineSection(const Pipeline& p, const GeneratedPipeline& generate
          "static const rs_group rs_groups[] = {\n" + groups + "};\n#define RS_SHADER_COUNT " +
          std::to_string(stages.count) + "\n#define RS_GROUP_COUNT " +
          std::to_string(sbtGroupCount(p)) + "\n#define RS_MAX_RECURSION " +
-         std::to_string(p.max_recursion) + "\n\n" + sbtText(p) + callableSbtText(p);
+         std::to_string(p.max_recursion) + "u\n#define RS_NEEDS_SCALAR_LAYOUT " +
+         (p.record_layout.declared() && p.record_layout.scalar ? "1" : "0") + "\n\n" + sbtText(p) +
+         callableSbtText(p);
 }
 
 }  // namespace rayspec

@@ -126,6 +126,10 @@ static void rs_create_device(void) {
   if (!as.accelerationStructure) rs_unsupported("accelerationStructure");
   if (!v12.bufferDeviceAddress) rs_unsupported("bufferDeviceAddress");
   rt_on.rayTracingPipeline = as_on.accelerationStructure = v12_on.bufferDeviceAddress = VK_TRUE;
+  if (RS_NEEDS_SCALAR_LAYOUT && !v12.scalarBlockLayout)
+    rs_unsupported(
+        "pipeline.sbt.record_layout: a scalar shader record block needs "
+        "scalarBlockLayout");
   v12_on.scalarBlockLayout = v12.scalarBlockLayout;
   v12_on.vulkanMemoryModel = v12.vulkanMemoryModel;
   v12_on.vulkanMemoryModelDeviceScope = v12.vulkanMemoryModelDeviceScope;

@@ -1,11 +1,25 @@
 /* ---- The ray tracing pipeline ------------------------------------------- */
 
+/* NotSupported where the case recurses deeper than the device allows. */
+static void rs_check_recursion(void) {
+  VkPhysicalDeviceRayTracingPipelinePropertiesKHR rt = {
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_PROPERTIES_KHR};
+  VkPhysicalDeviceProperties2 props = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &rt};
+  vkGetPhysicalDeviceProperties2(rs_physical, &props);
+  if (RS_MAX_RECURSION > rt.maxRayRecursionDepth) {
+    printf("NotSupported: max_recursion %u > device maxRayRecursionDepth %u\n",
+           (unsigned)RS_MAX_RECURSION, (unsigned)rt.maxRayRecursionDepth);
+    exit(77);
+  }
+}
+
 static VkPipeline rs_create_pipeline(VkPipelineLayout layout) {
   VkPipelineShaderStageCreateInfo stages[RS_SHADER_COUNT];
   VkRayTracingShaderGroupCreateInfoKHR groups[RS_GROUP_COUNT];
   VkRayTracingPipelineCreateInfoKHR info = {VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR};
   VkPipeline pipeline;
   uint32_t i;
+  rs_check_recursion();
   for (i = 0; i < RS_SHADER_COUNT; ++i) {
     VkShaderModuleCreateInfo module = {VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     memset(&stages[i], 0, sizeof stages[i]);
