@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <set>
@@ -27,7 +28,8 @@ std::string fieldsText(const Case& c, const Plan& plan) {
     out += "  {" + cString(f->name) + ", " + cString(fieldRule(c, *f)) + ", " +
            std::to_string(f->offset) + ", " + std::to_string(f->words) + ", " +
            (f->type == FieldType::Float ? "1" : "0") + ", " + (f->automatic ? "1" : "0") + ", " +
-           std::to_string(f->index) + ", " + numbers + "},\n";
+           std::to_string(f->index) + ", " + std::to_string(static_cast<int>(f->bound)) + ", " +
+           numbers + "},\n";
   }
   return out + "};\n#define RS_FIELD_COUNT (sizeof rs_fields / sizeof rs_fields[0])\n";
 }
@@ -59,6 +61,42 @@ std::string undefinedText(const Results& model, uint64_t rays) {
          cByteArray("rs_undefined", undefined);
 }
 
+// R-PREC: the rays the model bounds more widely than the fields' tolerances
+// (t, the object-space origin, the hit position), each with its bounds in
+// FieldBound's order.
+std::string boundsText(const Results& model) {
+  std::map<uint32_t, std::array<float, 4>> by_ray;
+  const std::pair<const std::vector<TBound>*, FieldBound> lists[] = {
+      {&model.t_bounds, FieldBound::TBound},
+      {&model.object_origin_bounds, FieldBound::OriginBound},
+      {&model.position_bounds, FieldBound::PositionBound}};
+  for (const auto& [list, kind] : lists)
+    for (const TBound& b : *list) by_ray[b.ray][static_cast<size_t>(kind)] = b.bound;
+  std::string table;
+  for (const auto& [ray, by] : by_ray)
+    table += "  {" + std::to_string(ray) + ", {0, " + cFloat(by[1]) + ", " + cFloat(by[2]) + ", " +
+             cFloat(by[3]) + "}},\n";
+  if (table.empty()) table = "  {0, {0, 0, 0, 0}},\n";
+  return "/* Rays whose t, object-space origin or hit position the model bounds more widely\n"
+         "   than the field's tolerance (R-PREC): the bound widens the field's abs. */\n"
+         "static const rs_bound rs_bounds[] = {\n" +
+         table + "};\n#define RS_BOUND_COUNT " + std::to_string(by_ray.size()) + "u\n";
+}
+
+// R-AHIT-DUP: the rays whose fields a repeated any-hit may change, and those fields.
+std::string repeatText(const Results& model) {
+  std::string table;
+  for (const RepeatDependentRay& r : model.repeat_dependent)
+    table += "  {" + std::to_string(r.ray) + ", " + std::to_string(r.fields) + "ull},\n";
+  if (table.empty()) table = "  {0, 0},\n";
+  return "/* Rays a device that runs any-hit more than once for a primitive may change\n"
+         "   (R-AHIT-DUP), with the fields it may change: those not judged (an ambiguous one\n"
+         "   not at all). */\n"
+         "static const rs_repeat rs_repeat_rays[] = {\n" +
+         table + "};\n#define RS_REPEAT_COUNT " + std::to_string(model.repeat_dependent.size()) +
+         "u\n";
+}
+
 // The rule a counter's mismatch names, as the judge names it (compare_counters.cpp).
 std::string counterRule(const Case& c, const std::string& name) {
   return findingRule(rulesEvidencedByCounter(c, name), c.rules, "counter").rule;
@@ -83,20 +121,31 @@ std::pair<int64_t, int64_t> replayedMoves(const Results& model, const std::strin
   return {down, up};
 }
 
-// A counter's range: the model's count, moved as far as the legal answers
-// move it, then opened below (at_least), above (at_most) or both
-// (informational, or moved by a ray with undefined behaviour).
+// A counter's range, as compare_counters.cpp judges it: the model's count,
+// moved as far as the legal answers move it (not where the case declares it
+// exact), then opened below (at_least), above (at_most) or both
+// (informational; moved by a ray with undefined behaviour, or by a repeated
+// any-hit, R-AHIT-DUP), and never below the model's floor (the leading
+// counts of the programs every legal order runs) but where undefined.
 std::pair<uint64_t, uint64_t> counterRange(const Case& c, const Results& model,
                                            const std::string& name, CounterMode how) {
   const auto found = model.counters.find(name);
   const int64_t m = found == model.counters.end() ? 0 : static_cast<int64_t>(found->second);
-  const auto [down, up] = replayedMoves(model, name);
+  const auto declared = c.outputs.counter_modes.find(name);
+  const bool exact = declared != c.outputs.counter_modes.end() && declared->second == "exact";
+  const auto [down, up] = exact ? std::pair<int64_t, int64_t>{0, 0} : replayedMoves(model, name);
   uint64_t lo = static_cast<uint64_t>(std::max<int64_t>(0, m + down));
   uint64_t hi = static_cast<uint64_t>(m + up);
   const bool undefined = !model.undefined.empty() && countersUndefinedRaysMayMove(c).count(name);
-  if (how == CounterMode::AtMost || how == CounterMode::Informational || undefined) lo = 0;
-  if (how == CounterMode::AtLeast || how == CounterMode::Informational || undefined)
+  const bool repeated =
+      std::count(model.repeat_counters.begin(), model.repeat_counters.end(), name);
+  if (undefined || repeated) how = CounterMode::Informational;
+  if (how == CounterMode::AtMost || how == CounterMode::Informational) lo = 0;
+  if (how == CounterMode::AtLeast || how == CounterMode::Informational)
     hi = std::numeric_limits<uint64_t>::max();
+  if (const auto floor = model.counter_floors.find(name);
+      !undefined && floor != model.counter_floors.end())
+    lo = std::max(lo, floor->second);
   return {lo, hi};
 }
 
@@ -127,9 +176,11 @@ std::string expectationsSection(const Case& c, const Plan& plan, const Results& 
          std::to_string(recordWords()) +
          " words (a written mask, the fields, the stage run counts), the fields compared. */\n"
          "#define RS_RECORD_WORDS " +
-         std::to_string(recordWords()) + "u\n" + cWordArray("rs_expected", records) +
-         fieldsText(c, plan) + undefinedText(model, uint64_t(c.rays.width) * c.rays.height) +
-         ambiguousText(model) + countersText(c, plan, model) + "\n";
+         std::to_string(recordWords()) + "u\n#define RS_RECORDS_JUDGED " +
+         (plan.records ? "1" : "0 /* a case of counters only */") + "\n" +
+         cWordArray("rs_expected", records) + fieldsText(c, plan) +
+         undefinedText(model, uint64_t(c.rays.width) * c.rays.height) + ambiguousText(model) +
+         repeatText(model) + boundsText(model) + countersText(c, plan, model) + "\n";
 }
 
 }  // namespace rayspec

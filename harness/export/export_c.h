@@ -2,7 +2,7 @@
 // file that a driver developer builds with `cc repro.c -lvulkan -o repro`
 // and runs without rayspec (issue 57). Design:
 //
-//  - The file is a fixed, generic player (player.c, embedded in the binary
+//  - The file is a fixed, generic player (harness/export/player/, embedded in the binary
 //    at build time) with the case's data spliced in. The player creates the
 //    instance and device, builds bottom levels, the top level, the pipeline,
 //    the SBT and the descriptor set, traces, reads back and compares; it
@@ -44,7 +44,7 @@ namespace rayspec {
 // error of a stage that does not compile.
 Result<std::string> exportCaseAsC(const Case& c, const Plan& plan, const Results& model);
 
-// The player's text (player.c), as embedded at build time.
+// The player's text (the files of harness/export/player/ joined), as embedded at build time.
 const std::string& exportPlayerSource();
 
 }  // namespace rayspec

@@ -1,5 +1,5 @@
 // The data sections of an exported C file (internal to export/): each the
-// C definitions the player (player.c) reads, from what the Vulkan engine
+// C definitions the player (harness/export/player/) reads, from what the Vulkan engine
 // computes for the case (scene_section.cpp, pipeline_section.cpp) and what
 // the model expects (expectations_section.cpp).
 #pragma once

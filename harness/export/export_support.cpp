@@ -1,32 +1,30 @@
 #include "export/export_support.h"
 
+#include <algorithm>
+
+#include "compare/counter_modes.h"
+
 namespace rayspec {
 namespace {
 
-// The pipeline's shape: raygen, miss and closest-hit stages, one pipeline.
+// The pipeline's shape: one pipeline of every stage, without flags,
+// specialization or a dynamic stack size.
 std::string pipelineFeature(const Case& c, const Plan& plan) {
   const Pipeline& p = c.pipeline;
   if (!c.expected_rejections.empty()) return "expected compiler rejections (expect_rejected)";
   if (p.from_compute || p.ray_query || p.ray_query_in_hit || plan.ray_queries) return "ray queries";
-  if (!p.other_raygens.empty()) return "several raygen groups (pipeline.raygens)";
-  if (!p.callables.empty()) return "callable shaders";
   if (!p.libraries.empty()) return "pipeline libraries";
   if (p.callable_depth) return "a dynamic stack size (pipeline.callable_depth)";
   if (p.flags) return "pipeline create flags (pipeline.flags)";
   if (!p.constants.empty() || !p.specialize.empty()) return "specialization constants";
-  for (const HitGroup& g : p.hit_groups) {
-    if (g.any_hit) return "any-hit shaders";
-    if (g.intersection) return "intersection shaders";
-  }
   if (plan.position_fetch) return "position fetch (vertex_position)";
   if (plan.cull_mask_builtin) return "the cull_mask built-in (VK_KHR_ray_tracing_maintenance1)";
   if (!plan.images.empty()) return "images (outputs.images)";
-  if (!plan.records) return "no per-ray records";
   return "";
 }
 
-// The scene: triangle bottom levels built once, one top level, its
-// instances read directly.
+// The scene: bottom levels of triangles or boxes built once, one top level,
+// its instances read directly.
 std::string sceneFeature(const Case& c) {
   const Scene& s = c.scene;
   if (s.updates()) return "acceleration structure updates (scene.update)";
@@ -34,12 +32,12 @@ std::string sceneFeature(const Case& c) {
   if (s.build.command != BuildCommand::Device) return "indirect builds (scene.build.command)";
   if (s.build.instances_as_pointers) return "instances as pointers (scene.build)";
   if (s.tlasCount() > 1) return "several top levels";
+  for (const Instance& i : s.instances)
+    if (i.flags & kInstanceOpacityMicromapFlags)
+      return "opacity micromap instance flags (VK_EXT_opacity_micromap)";
   if (s.blases.empty() || s.instances.empty()) return "an empty scene";
-  for (const Blas& b : s.blases) {
+  for (const Blas& b : s.blases)
     if (b.geometries.empty()) return "an empty bottom level";
-    for (const Geometry& g : b.geometries)
-      if (g.kind != Geometry::Kind::Triangles) return "AABB geometry";
-  }
   if (c.rays.command != TraceCommand::Direct) return "an indirect trace (rays.command)";
   if (const uint64_t rays = uint64_t(c.rays.width) * c.rays.height; rays > kMaxExportedRays)
     return "a launch of " + std::to_string(rays) + " rays (at most " +
@@ -47,13 +45,26 @@ std::string sceneFeature(const Case& c) {
   return "";
 }
 
+// Whether any-hit repetition may change a record or a counter not
+// informational (compare/any_hit_repeat_verdict.cpp).
+bool repeatChangesJudged(const Case& c, const Results& model) {
+  const std::map<std::string, CounterMode> modes = counterModes(c);
+  return !model.repeat_dependent.empty() ||
+         std::any_of(model.repeat_counters.begin(), model.repeat_counters.end(),
+                     [&](const std::string& name) {
+                       const auto it = modes.find(name);
+                       return it != modes.end() && it->second != CounterMode::Informational;
+                     });
+}
+
 // What the model expects, as the player compares it: clear rays, ambiguous
 // rays (but on shared edges and vertices) with their legal answers replayed.
-std::string expectationFeature(const Results& model) {
-  if (!model.t_bounds.empty() || !model.object_origin_bounds.empty() ||
-      !model.position_bounds.empty())
-    return "rays with widened t, origin or position bounds (R-PREC)";
-  if (!model.repeat_dependent.empty()) return "rays any-hit repetition may change (R-AHIT-DUP)";
+std::string expectationFeature(const Case& c, const Results& model) {
+  // R-AHIT-DUP: what any-hit repetition may change is left out where the
+  // case claims the rule; else rayspec judges the case not portable.
+  if (repeatChangesJudged(c, model) &&
+      std::find(c.rules.begin(), c.rules.end(), "R-AHIT-DUP") == c.rules.end())
+    return "rays any-hit repetition may change, R-AHIT-DUP not claimed (not portable)";
   if (!model.order_dependent.empty() || !model.endless_restarts.empty())
     return "order-dependent candidate programs";
   for (const RayAmbiguity& a : model.ambiguous) {
@@ -74,7 +85,7 @@ std::string unexportedFeature(const Case& c, const Plan& plan, const Results& mo
   if (!model.ok()) return "a case the model does not run (" + model.statusText() + ")";
   if (std::string f = pipelineFeature(c, plan); !f.empty()) return f;
   if (std::string f = sceneFeature(c); !f.empty()) return f;
-  return expectationFeature(model);
+  return expectationFeature(c, model);
 }
 
 }  // namespace rayspec

@@ -1,5 +1,5 @@
 // What `rayspec export --format c` exports so far, and the refusal of the
-// rest: a case is exported when its shape is one the player (player.c)
+// rest: a case is exported when its shape is one the player (harness/export/player/)
 // plays and its expectations are ones the player's comparison can hold.
 #pragma once
 

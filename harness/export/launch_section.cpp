@@ -18,9 +18,23 @@ std::string bindingKind(uint32_t binding) {
       return "RS_BIND_RECORDS";
     case kBindingCounters:
       return "RS_BIND_COUNTERS";
+    case kBindingScene:
+    case kBindingSbtTables:
+      return "RS_BIND_WORDS";
     default:
       return "";
   }
+}
+
+// A binding's fixed words as the engine uploads them (case_buffers.cpp),
+// their array into `arrays`; "NULL, 0" for a binding of another kind.
+std::string wordsOf(const Case& c, uint32_t binding, std::string& arrays) {
+  if (binding != kBindingScene && binding != kBindingSbtTables) return "NULL, 0";
+  const std::string name = "rs_binding" + std::to_string(binding) + "_words";
+  const std::vector<uint32_t> words =
+      binding == kBindingScene ? packSceneData(c.scene) : packSbtTables(c.pipeline).words;
+  arrays += cWordArray(name, words);
+  return name + ", sizeof " + name;
 }
 
 }  // namespace
@@ -28,13 +42,13 @@ std::string bindingKind(uint32_t binding) {
 Result<std::string> launchSection(const Case& c, const Plan& plan,
                                   const CompiledPipeline& compiled) {
   RAYSPEC_TRY(const std::set<uint32_t> bindings, caseBindings(plan, declaredBindings(compiled)));
-  std::string table;
+  std::string arrays, table;
   for (uint32_t b : bindings) {
     const std::string kind = bindingKind(b);
     if (kind.empty())
       return notSupported("export: case uses descriptor binding " + std::to_string(b) +
-                          " (scene data, SBT tables or images), not yet exported");
-    table += "  {" + std::to_string(b) + ", " + kind + "},\n";
+                          " (images), not yet exported");
+    table += "  {" + std::to_string(b) + ", " + kind + ", " + wordsOf(c, b, arrays) + "},\n";
   }
   const std::array<uint32_t, 3> launch = c.rays.launchSize();
   return "/* The rays as rayspec uploads them (" + std::to_string(kRayWords) +
@@ -42,7 +56,7 @@ Result<std::string> launchSection(const Case& c, const Plan& plan,
          cWordArray("rs_rays", packRays(c.rays)) + "#define RS_LAUNCH_WIDTH " +
          std::to_string(launch[0]) + "u\n#define RS_LAUNCH_HEIGHT " + std::to_string(launch[1]) +
          "u\n#define RS_LAUNCH_DEPTH " + std::to_string(launch[2]) + "u\n#define RS_RAY_COUNT " +
-         std::to_string(uint64_t(c.rays.width) * c.rays.height) + "u\n" +
+         std::to_string(uint64_t(c.rays.width) * c.rays.height) + "u\n" + arrays +
          "static const rs_binding rs_bindings[] = {\n" + table + "};\n#define RS_BINDING_COUNT " +
          std::to_string(bindings.size()) + "u\n\n";
 }

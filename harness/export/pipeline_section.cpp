@@ -13,9 +13,14 @@ const char* stageBitName(Stage s) {
       return "VK_SHADER_STAGE_MISS_BIT_KHR";
     case Stage::ClosestHit:
       return "VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR";
-    default:
-      return "0 /* a stage the export does not play */";
+    case Stage::AnyHit:
+      return "VK_SHADER_STAGE_ANY_HIT_BIT_KHR";
+    case Stage::Intersection:
+      return "VK_SHADER_STAGE_INTERSECTION_BIT_KHR";
+    case Stage::Callable:
+      return "VK_SHADER_STAGE_CALLABLE_BIT_KHR";
   }
+  return "0";
 }
 
 // The stages in pipeline order, each one's GLSL as a comment above its SPIR-V.
@@ -30,6 +35,12 @@ struct Stages {
     return count++;
   }
 };
+
+// The shader's index among the stages as C ("RS_NONE" where it has none).
+std::string optionalStage(Stages& stages, const std::optional<GeneratedShader>& g,
+                          const std::optional<CompiledShader>& s) {
+  return g && s ? std::to_string(stages.add(*g, *s)) + "u" : std::string("RS_NONE");
+}
 
 std::string generalGroup(uint32_t shader) {
   return "  {VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, " + std::to_string(shader) +
@@ -64,7 +75,48 @@ std::string sbtText(const Pipeline& p) {
          std::to_string(miss.size()) + "\n#define RS_HIT_RECORDS " + std::to_string(hit.size()) +
          "\n#define RS_RECORD_DATA_BYTES " + std::to_string(p.sbt_record_data) +
          "\n#define RS_MISS_PADDING " + std::to_string(p.sbt_padding.miss) +
-         "\n#define RS_HIT_PADDING " + std::to_string(p.sbt_padding.hit) + "\n\n";
+         "\n#define RS_HIT_PADDING " + std::to_string(p.sbt_padding.hit) + "\n";
+}
+
+// The callable region's records (after sbtText's).
+std::string callableSbtText(const Pipeline& p) {
+  const std::vector<SbtRecord> callable = sbtCallableRecords(p);
+  return recordArray("rs_callable_records", callable, sbtCallableGroup(p, 0)) +
+         "#define RS_CALLABLE_RECORDS " + std::to_string(callable.size()) +
+         "\n#define RS_CALLABLE_PADDING " + std::to_string(p.sbt_padding.callable) + "\n\n";
+}
+
+// The raygen groups' rows of rs_groups: the one the raygen record selects is
+// `raygen`, the others in the case's order around it.
+std::string raygenGroups(const Pipeline& p, const GeneratedPipeline& generated,
+                         const CompiledPipeline& compiled, Stages& stages) {
+  std::string groups;
+  for (uint32_t r = 0; r < p.raygenGroupCount(); ++r) {
+    const uint32_t other = r < compiled.raygen_group ? r : r - 1;
+    groups +=
+        generalGroup(r == compiled.raygen_group ? stages.add(generated.raygen, compiled.raygen)
+                                                : stages.add(generated.other_raygens[other],
+                                                             compiled.other_raygens[other]));
+  }
+  return groups;
+}
+
+// The hit groups' rows of rs_groups: triangles, or procedural with an intersection shader.
+std::string hitGroups(const GeneratedPipeline& generated, const CompiledPipeline& compiled,
+                      Stages& stages) {
+  std::string groups;
+  for (size_t i = 0; i < compiled.hit_groups.size(); ++i) {
+    const CompiledGroup& g = compiled.hit_groups[i];
+    const GeneratedGroup& gen = generated.hit_groups[i];
+    const std::string chit = optionalStage(stages, gen.closest_hit, g.closest_hit);
+    const std::string ahit = optionalStage(stages, gen.any_hit, g.any_hit);
+    const std::string isect = optionalStage(stages, gen.intersection, g.intersection);
+    groups += std::string("  {") +
+              (g.intersection ? "VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR"
+                              : "VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR") +
+              ", RS_NONE, " + chit + ", " + ahit + ", " + isect + "},\n";
+  }
+  return groups;
 }
 
 }  // namespace
@@ -72,25 +124,22 @@ std::string sbtText(const Pipeline& p) {
 std::string pipelineSection(const Pipeline& p, const GeneratedPipeline& generated,
                             const CompiledPipeline& compiled) {
   Stages stages;
-  std::string groups = generalGroup(stages.add(generated.raygen, compiled.raygen));
+  std::string groups = raygenGroups(p, generated, compiled, stages);
   for (size_t i = 0; i < compiled.miss.size(); ++i)
     groups += generalGroup(stages.add(generated.miss[i], compiled.miss[i]));
-  for (size_t i = 0; i < compiled.hit_groups.size(); ++i) {
-    const CompiledGroup& g = compiled.hit_groups[i];
-    const std::string chit =
-        g.closest_hit
-            ? std::to_string(stages.add(*generated.hit_groups[i].closest_hit, *g.closest_hit)) + "u"
-            : "RS_NONE";
-    groups += "  {VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR, RS_NONE, " + chit +
-              ", RS_NONE, RS_NONE},\n";
-  }
+  groups += hitGroups(generated, compiled, stages);
+  for (size_t i = 0; i < compiled.callables.size(); ++i)
+    groups += generalGroup(stages.add(generated.callables[i], compiled.callables[i]));
   return "/* The pipeline's stages: SPIR-V as rayspec compiled it. */\n" + stages.arrays +
          "static const rs_shader rs_shaders[] = {\n" + stages.table + "};\n" +
-         "/* Shader groups: raygen, miss shaders, hit groups (rayspec's group order). */\n" +
+         "/* Shader groups: raygens, miss shaders, hit groups, callables (rayspec's group "
+         "order). */\n" +
          "static const rs_group rs_groups[] = {\n" + groups + "};\n#define RS_SHADER_COUNT " +
          std::to_string(stages.count) + "\n#define RS_GROUP_COUNT " +
          std::to_string(sbtGroupCount(p)) + "\n#define RS_MAX_RECURSION " +
-         std::to_string(p.max_recursion) + "\n\n" + sbtText(p);
+         std::to_string(p.max_recursion) + "u\n#define RS_NEEDS_SCALAR_LAYOUT " +
+         (p.record_layout.declared() && p.record_layout.scalar ? "1" : "0") + "\n\n" + sbtText(p) +
+         callableSbtText(p);
 }
 
 }  // namespace rayspec

@@ -19,24 +19,45 @@ std::string bytesField(const std::string& name, const std::vector<uint8_t>& byte
   return bytes.empty() ? "NULL" : name;
 }
 
+std::string rangeText(const VkAccelerationStructureBuildRangeInfoKHR& r) {
+  return "{" + std::to_string(r.primitiveCount) + ", " + std::to_string(r.primitiveOffset) + ", " +
+         std::to_string(r.firstVertex) + ", " + std::to_string(r.transformOffset) + "}";
+}
+
 // One geometry's inputs as the engine's build lays them out (layTriangles),
 // its arrays into `arrays` and its rs_geometry initialiser returned.
-std::string geometryEntry(const Geometry& g, const AsBuild& build, const std::string& prefix,
+std::string triangleEntry(const Geometry& g, const AsBuild& build, const std::string& prefix,
                           std::string& arrays) {
   const TriangleInputs in = layTriangles(g, build, LayoutFault::None);
   arrays += cByteArray(prefix + "_vertices", in.vertices);
   if (!in.indices.empty()) arrays += cByteArray(prefix + "_indices", in.indices);
   if (!in.transform.empty()) arrays += cByteArray(prefix + "_transform", in.transform);
-  const VkAccelerationStructureBuildRangeInfoKHR& r = in.range;
-  return "  {(VkFormat)" + std::to_string(vkVertexFormat(in.format)) + ", " +
-         cString(vertexFormatName(in.format)) + ", " + std::to_string(in.stride) + ", " +
-         std::to_string(in.max_vertex) + ", " + indexType(g) + ", " + std::to_string(g.flags) +
-         ", " + prefix + "_vertices, " + bytesField(prefix + "_indices", in.indices) + ", " +
+  return "  {VK_GEOMETRY_TYPE_TRIANGLES_KHR, (VkFormat)" +
+         std::to_string(vkVertexFormat(in.format)) + ", " + cString(vertexFormatName(in.format)) +
+         ", " + std::to_string(in.stride) + ", " + std::to_string(in.max_vertex) + ", " +
+         indexType(g) + ", " + std::to_string(g.flags) + ", " + prefix + "_vertices, " +
+         bytesField(prefix + "_indices", in.indices) + ", " +
          bytesField(prefix + "_transform", in.transform) + ", " +
          std::to_string(in.vertices.size()) + ", " + std::to_string(in.indices.size()) + ", " +
-         std::to_string(in.transform.size()) + ", {" + std::to_string(r.primitiveCount) + ", " +
-         std::to_string(r.primitiveOffset) + ", " + std::to_string(r.firstVertex) + ", " +
-         std::to_string(r.transformOffset) + "}},\n";
+         std::to_string(in.transform.size()) + ", " + rangeText(in.range) + "},\n";
+}
+
+// One AABB geometry's boxes as the engine's build lays them out (layAabbs):
+// rs_geometry's vertex fields hold them.
+std::string aabbEntry(const Geometry& g, const AsBuild& build, const std::string& prefix,
+                      std::string& arrays) {
+  const AabbInputs in = layAabbs(g, build, LayoutFault::None);
+  arrays += cByteArray(prefix + "_boxes", in.boxes);
+  return "  {VK_GEOMETRY_TYPE_AABBS_KHR, VK_FORMAT_UNDEFINED, \"aabbs\", " +
+         std::to_string(in.stride) + ", 0, VK_INDEX_TYPE_NONE_KHR, " + std::to_string(g.flags) +
+         ", " + prefix + "_boxes, NULL, NULL, " + std::to_string(in.boxes.size()) + ", 0, 0, " +
+         rangeText(in.range) + "},\n";
+}
+
+std::string geometryEntry(const Geometry& g, const AsBuild& build, const std::string& prefix,
+                          std::string& arrays) {
+  return g.kind == Geometry::Kind::Aabbs ? aabbEntry(g, build, prefix, arrays)
+                                         : triangleEntry(g, build, prefix, arrays);
 }
 
 std::string instanceEntry(const Instance& inst) {
@@ -70,8 +91,8 @@ std::string sceneSection(const Scene& scene) {
   }
   std::string instances;
   for (const Instance& inst : scene.instances) instances += instanceEntry(inst);
-  return "/* The scene: each bottom level's triangle inputs, laid out as rayspec's builds lay\n"
-         "   them out, and the top level's instances. */\n" +
+  return "/* The scene: each bottom level's triangles or boxes, laid out as rayspec's builds\n"
+         "   lay them out, and the top level's instances. */\n" +
          arrays + "static const rs_geometry rs_geometries[] = {\n" + geometries + "};\n" +
          "static const rs_blas rs_blases[] = {\n" + blases + "};\n" +
          "static const rs_instance rs_instances[] = {\n" + instances + "};\n" +

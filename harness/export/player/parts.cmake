@@ -1,0 +1,14 @@
+# The player of an exported reproducer (harness/export/export_c.h): its files
+# in the order tools/embed_player.cmake joins them into the one C file the
+# export writes. Each file holds one step; a later one uses what the earlier
+# ones define (C: no prototypes, every function static).
+set(RAYSPEC_PLAYER_PARTS
+    case_data_types.c          # the types of the case's data, and the marker it is spliced at
+    instance_and_device.c      # the instance, the device picked and created, its functions
+    buffers_and_commands.c     # host-visible buffers with addresses, command submission
+    acceleration_structures.c  # the bottom levels and the top level built
+    pipeline.c                 # the ray tracing pipeline from the embedded SPIR-V
+    shader_binding_table.c     # the SBT written with the device's group handles
+    descriptors.c              # the descriptor set: the top level and the buffers
+    comparison.c               # the records and counters against the expectations, printed
+    trace_and_readback.c)      # main: every step in order, the trace, the verdict

@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# The C exports of the library (docs/export.md) against rayspec's verdicts on
+# one driver: every case file (a sweep's first variant) exported with
+# build/rayspec export; each refusal counted by its reason; each export built
+# with cc and run on DEVICE, its exit status held to the verdict the driver's
+# baseline expects (0 where the case passes, 1 Fail, 77 NotSupported).
+#   bash tools/export-agreement.sh OUT [DEVICE] [BASELINE]
+# (DEVICE default llvmpipe, BASELINE default references/baselines/lavapipe.csv;
+# OUT/summary.txt: the counts per family, the refusals by reason, every
+# disagreement.) JOBS (default 2) cases at a time; RAYSPEC: the binary (build/rayspec).
+set -uo pipefail
+cd "$(dirname "$0")/.."
+out=${1:?usage: export-agreement.sh OUT [DEVICE] [BASELINE]}
+device=${2:-llvmpipe}
+baseline=${3:-references/baselines/lavapipe.csv}
+rayspec=${RAYSPEC:-build/rayspec}
+jobs=${JOBS:-2}
+mkdir -p "$out"
+export out device baseline rayspec
+# One case file: exported, built and run; one line "family, verdict, case, detail" printed.
+one_case() {
+  local file=$1 rel dir family rc reason name want want_rc got verdict
+  rel=${file#cases/}
+  dir="$out/${rel%.yaml}"
+  family=${rel%%/*}
+  mkdir -p "$dir"
+  "$rayspec" export "$file" --out "$dir" >"$dir/export.txt" 2>"$dir/refused.txt"
+  rc=$?
+  if [[ $rc -ne 0 ]]; then
+    reason=$(sed -n 's/.*export: case uses \(.*\), not yet exported.*/\1/p' "$dir/refused.txt" | head -1)
+    printf '%s\trefused\t%s\t%s\n' "$family" "$rel" "${reason:-exit $rc: $(head -1 "$dir/refused.txt")}"
+    return
+  fi
+  name=$(sed -n '1s/^\/\* rayspec export of case \([^ ]*\) .*/\1/p' "$dir/repro.c")
+  # The status the baseline expects of the case: Pass where it lists none.
+  want=$(grep -v '^#' "$baseline" | awk -F, -v c="$name" '$1 == c {print $2}' | head -1)
+  case ${want:-Pass} in Pass) want_rc=0 ;; Fail) want_rc=1 ;; NotSupported) want_rc=77 ;; *) want_rc=$want ;; esac
+  if ! cc -std=c99 "$dir/repro.c" -lvulkan -o "$dir/repro" 2>"$dir/build.txt"; then
+    printf '%s\tbuild-error\t%s\t%s\n' "$family" "$name" "$(head -1 "$dir/build.txt")"
+    return
+  fi
+  "$dir/repro" "$device" >"$dir/run.txt" 2>&1
+  got=$?
+  verdict=$([[ "$got" == "$want_rc" ]] && echo agrees || echo DISAGREES)
+  printf '%s\t%s\t%s\texit %s, expected %s (%s)\n' "$family" "$verdict" "$name" "$got" "$want_rc" "${want:-Pass}"
+}
+export -f one_case
+find cases -name '*.yaml' | sort | xargs -P "$jobs" -I{} bash -c 'one_case "$1"' _ {} | sort >"$out/cases.txt"
+{
+  echo "exports per family (exported / case files; agreeing with $baseline on $device):"
+  awk -F'\t' '{n[$1]++; if ($2 != "refused") e[$1]++; if ($2 == "agrees") a[$1]++}
+    END {for (f in n) printf "  %-14s %3d / %3d, %3d agree\n", f, e[f], n[f], a[f]}' "$out/cases.txt" | sort
+  awk -F'\t' '{n++; if ($2 != "refused") e++; if ($2 == "agrees") a++}
+    END {printf "  %-14s %3d / %3d, %3d agree\n", "all", e, n, a}' "$out/cases.txt"
+  echo "refused, by reason:"
+  awk -F'\t' '$2 == "refused" {print $4}' "$out/cases.txt" | sort | uniq -c | sort -rn
+  echo "disagreements and build errors:"
+  awk -F'\t' '$2 == "DISAGREES" || $2 == "build-error"' "$out/cases.txt"
+} >"$out/summary.txt"
+cat "$out/summary.txt"
