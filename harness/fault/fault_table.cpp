@@ -98,6 +98,9 @@ std::vector<FaultImpl> sceneAndFlagMutations() {
       {"box-entered-from-inside-missed", K::CaseMutation,
        "a box the ray starts inside never runs its intersection shader", nullptr,
        boxEnteredFromInsideMissed},
+      {"zero-length-ray-box-missed", K::CaseMutation,
+       "a ray whose tmin equals its tmax is offered no box, even one holding its point", nullptr,
+       zeroLengthRayBoxMissed},
       {"closest-box-skipped", K::CaseMutation,
        "the closest box a ray crosses never runs its intersection shader", nullptr,
        closestBoxSkipped},
@@ -117,6 +120,9 @@ std::vector<FaultImpl> sceneAndFlagMutations() {
        nullptr, skipTrianglesIgnored},
       {"skip-aabbs-ignored", K::CaseMutation, "SkipAABBs (ray or pipeline flag) is ignored",
        nullptr, skipAabbsIgnored},
+      {"incoming-flags-with-pipeline-skip", K::CaseMutation,
+       "gl_IncomingRayFlagsEXT holds the pipeline's SKIP_TRIANGLES / SKIP_AABBS as ray flags",
+       nullptr, incomingFlagsWithPipelineSkip},
   };
 }
 

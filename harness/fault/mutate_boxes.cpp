@@ -59,6 +59,19 @@ std::string boxEnteredFromInsideMissed(Case& c, ModelOptions&) {
   return deactivate(c, inside, "that launch rays start inside");
 }
 
+// A device that takes an interval of zero length (tmin = tmax) as empty: the
+// boxes such launch rays meet (inside, on a face or at a corner) are never
+// offered to them. They are made inactive for every ray, so the fault is
+// exactly this device's on a case whose rays meeting them are all of zero
+// length (intersection/ and ray-query/zero-length-in-box).
+std::string zeroLengthRayBoxMissed(Case& c, ModelOptions&) {
+  std::set<BoxKey> met;
+  for (const Ray& r : c.rays.rays)
+    if (r.tmin == r.tmax)
+      for (const Crossing& x : crossings(c, r)) met.insert(x.box);
+  return deactivate(c, met, "that zero-length launch rays (tmin = tmax) meet");
+}
+
 std::string closestBoxSkipped(Case& c, ModelOptions&) {
   for (const Ray& r : c.rays.rays) {
     const std::vector<Crossing> xs = crossings(c, r);

@@ -6,6 +6,7 @@
 #include "fault/fault_impl.h"
 #include "fault/program_edit.h"
 #include "program/builtins.h"
+#include "program/ops.h"
 #include "program/payload_words.h"
 #include "program/walk_program.h"
 
@@ -209,6 +210,27 @@ std::string cullMaskBuiltinDefault(Case& c, ModelOptions&) {
     });
   });
   return describeCount(n, "reads of gl_CullMaskEXT give 0xFF");
+}
+
+// R-BUILTIN: a device whose gl_IncomingRayFlagsEXT holds the pipeline's skip
+// flags (SKIP_TRIANGLES, SKIP_AABBS) as the ray flags they act as, which the
+// specification forbids (Built-In Variables, IncomingRayFlagsKHR).
+std::string incomingFlagsWithPipelineSkip(Case& c, ModelOptions&) {
+  uint32_t added = 0;
+  if (c.pipeline.flags & kPipelineSkipTriangles) added |= kRaySkipTriangles;
+  if (c.pipeline.flags & kPipelineSkipAabbs) added |= kRaySkipAabbs;
+  if (!added) return {};
+  // The reads first, then the edits: an edited read holds a read of its own.
+  std::vector<Expr*> reads;
+  forEachProgram(c.pipeline, [&](Program& p, Stage) {
+    editExpressions(p, [&](Expr& e) {
+      if (isBuiltin(e, kBiFlags)) reads.push_back(&e);
+    });
+  });
+  for (Expr* e : reads)
+    *e = opExpr(Op::BitOr, {*e, uintLiteral(added, e->loc)}, ValueType::Uint, e->loc);
+  return describeCount(reads.size(),
+                       "reads of gl_IncomingRayFlagsEXT that hold the pipeline's skip flags");
 }
 
 // R-NULL-SHADERS: a device that reads a NO_NULL_*_SHADERS flag backwards,

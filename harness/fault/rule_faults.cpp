@@ -20,7 +20,7 @@ std::vector<RuleFaults> traversalRules() {
       {"R-INST-XFORM", {"instance-transform-inverted"}, {}},
       {"R-PREC", {"shift-t"}, {}},
       {"R-WATERTIGHT", {"leak-edge", "double-hit-edge", "pass-between-edges"}, {}, qw},
-      {"R-AABB-CONS", {"box-entered-from-inside-missed"}, {}},
+      {"R-AABB-CONS", {"box-entered-from-inside-missed", "zero-length-ray-box-missed"}, {}},
       {"R-ISECT-MULTI", {}, {"intersection-runs-twice"}},
       {"R-ISECT-CLOSEST", {"closest-box-skipped"}, {}},
       {"R-SKIP-TRI", {"skip-triangles-ignored"}, {}},
@@ -94,7 +94,8 @@ std::vector<RuleFaults> pipelineRules() {
        {}},
       {"R-BUILTIN",
        {"builtin-wrong", "swap-primitive-id", "shift-t", "empty-geometry-renumbered",
-        "transform-builtins-swapped", "launch-id-x-wrapped", "nested-trace-clobbers-hit"},
+        "transform-builtins-swapped", "launch-id-x-wrapped", "nested-trace-clobbers-hit",
+        "incoming-flags-with-pipeline-skip"},
        {}},
       // Several top levels are built as copies of the instance list, the other
       // levels' instances inactive (Instance::tlas): which instances a trace

@@ -266,10 +266,13 @@ void aabbIntersect(const RTCIntersectFunctionNArguments* args) {
     if (!meets(s, *tc)) return;
     c.outside = c.near_face = true;
   } else if (exact && entered) {
-    // Does the ray still cross the box shrunk by the device's error bound?
-    // If not, it only grazes a face (or passes just outside, within the slack).
+    // Does the ray still cross the box shrunk by the device's error bound,
+    // within its interval? If not, it only grazes a face (or passes just
+    // outside, within the slack), or its interval only reaches a face: one
+    // that ends (or starts) on the box's surface, as a ray of zero length
+    // (tmin = tmax) at a face or corner does.
     const Span inner = boundedSpan(a, objectRay(*tc, g->tier, inst), -1.0);
-    c.near_face = inner.empty();
+    c.near_face = inner.empty() || !meets(inner, *tc);
     if (!c.near_face) {
       c.inner_t0 = inner.t0;
       c.inner_t1 = inner.t1;

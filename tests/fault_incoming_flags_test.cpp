@@ -1,0 +1,58 @@
+// incoming-flags-with-pipeline-skip (gl_IncomingRayFlagsEXT holding the
+// pipeline's SKIP_TRIANGLES / SKIP_AABBS, which the specification forbids) on
+// builtins/incoming-flags-pipeline-skip, the model's exact tier as the device:
+// every variant whose pipeline has a skip flag fails, R-BUILTIN on the flags
+// closest-hit and miss record (the field incoming_ray_flags; intersection and
+// any-hit record theirs in value and value1); the variants without one are
+// untouched.
+#include <gtest/gtest.h>
+
+#include "compare/compare_results.h"
+#include "fault/planted_fault.h"
+#include "model/model_engine.h"
+#include "parse/parse_case.h"
+#include "plan/plan.h"
+#include "suite_cases.h"
+
+namespace rayspec {
+namespace {
+
+// Whether a failing finding of rule `rule` names the per-ray field `field`.
+bool failsField(const Verdict& v, const std::string& rule, const std::string& field) {
+  for (const Finding& f : v.findings)
+    if (f.status == Status::Fail && labelNames(f, rule) &&
+        f.message.find("'" + field + "'") != std::string::npos)
+      return true;
+  return false;
+}
+
+TEST(IncomingFlagsWithPipelineSkip, FailsEveryVariantWithAPipelineSkipFlag) {
+  size_t failed = 0, untouched = 0;
+  for (const CaseFile& f : findCases(kSuiteCases, "builtins/incoming-flags-pipeline-skip/*")) {
+    ParseResult parsed = loadSuiteCase(f);
+    ASSERT_TRUE(parsed.value) << f.name << ": " << parsed.errors.at(0).format();
+    const Case& c = *parsed.value;
+    const Plan plan = derivePlan(c);
+    const Results model = runOnModel(c, plan, ModelOptions{});
+    ASSERT_TRUE(model.ok()) << f.name << ": " << model.statusText();
+    Results device = perfectDevice(c, model);
+    const FaultResult planted =
+        plantFault("incoming-flags-with-pipeline-skip", c, plan, device, model);
+    const Verdict v = compareResults(c, plan, device, model);
+    if (f.name.find("/none-") != std::string::npos) {
+      EXPECT_FALSE(planted.applied) << f.name << ": " << planted.what;
+      EXPECT_EQ(v.status, Status::Pass) << f.name << ": " << v.headline();
+      ++untouched;
+      continue;
+    }
+    EXPECT_TRUE(planted.applied) << f.name << ": " << planted.what;
+    EXPECT_EQ(v.status, Status::Fail) << f.name << ": " << v.headline();
+    EXPECT_TRUE(failsField(v, "R-BUILTIN", "incoming_ray_flags")) << f.name << ": " << v.headline();
+    failed += v.status == Status::Fail;
+  }
+  EXPECT_EQ(untouched, 5u);
+  EXPECT_EQ(failed, 2u * 5u);
+}
+
+}  // namespace
+}  // namespace rayspec
