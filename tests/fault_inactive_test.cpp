@@ -65,5 +65,39 @@ TEST(InactiveHidesLastActive, FailsTheSeedCasesItBreaksOnLavapipe26) {
   }
 }
 
+// accel/update-inactive (inactive and degenerate primitives inside an
+// update): the perfect device passes; a device whose update ignores it,
+// revives the inactive primitives, or left the degenerate ones out for good
+// fails each variant. Without an update, update-degenerate-lost changes nothing.
+TEST(UpdateInactive, EachFaultOfAnUpdateFailsTheCase) {
+  size_t cases = 0;
+  for (const CaseFile& f : findCases(kSuiteCases, "accel/update-inactive/*")) {
+    ParseResult parsed = loadSuiteCase(f);
+    ASSERT_TRUE(parsed.value) << f.name << ": " << parsed.errors.at(0).format();
+    const Case& c = *parsed.value;
+    const Plan plan = derivePlan(c);
+    const Results model = runOnModel(c, plan, ModelOptions{});
+    ASSERT_TRUE(model.ok()) << f.name << ": " << model.statusText();
+    ASSERT_EQ(compareResults(c, plan, perfectDevice(c, model), model).status, Status::Pass);
+    for (const char* fault : {"update-ignored", "inactive-revived", "update-degenerate-lost"}) {
+      Results device = perfectDevice(c, model);
+      const FaultResult planted = plantFault(fault, c, plan, device, model);
+      EXPECT_TRUE(planted.applied) << f.name << " " << fault << ": " << planted.what;
+      EXPECT_EQ(compareResults(c, plan, device, model).status, Status::Fail)
+          << f.name << " " << fault << ": " << planted.what;
+    }
+    ++cases;
+  }
+  EXPECT_EQ(cases, 2u);
+  const std::optional<CaseFile> built = suiteCase("inactive/degenerate-triangles");
+  ASSERT_TRUE(built);
+  ParseResult parsed = loadSuiteCase(*built);
+  ASSERT_TRUE(parsed.value);
+  const Plan plan = derivePlan(*parsed.value);
+  const Results model = runOnModel(*parsed.value, plan, ModelOptions{});
+  Results device = perfectDevice(*parsed.value, model);
+  EXPECT_FALSE(plantFault("update-degenerate-lost", *parsed.value, plan, device, model).applied);
+}
+
 }  // namespace
 }  // namespace rayspec

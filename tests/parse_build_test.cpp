@@ -83,6 +83,16 @@ TEST(SceneBuild, OneByOneAndUpdateIntoAreRead) {
   }
 }
 
+TEST(SceneBuild, StorageIsRead) {
+  EXPECT_EQ(parseBuild("{}").value->scene.build.storage, StructureStorage::Own);
+  EXPECT_EQ(parseBuild("{storage: shared}").value->scene.build.storage, StructureStorage::Shared);
+  EXPECT_EQ(parseBuild("{storage: reused}").value->scene.build.storage, StructureStorage::Reused);
+  expectError(parseBuild("{storage: pooled}"), 3, "scene.build.storage",
+              "unknown storage 'pooled' (own, shared, reused)");
+  expectError(parseBuild("{sparse: true, storage: shared}"), 3, "scene.build.storage",
+              "not combined with scene.build.sparse");
+}
+
 TEST(SceneBuild, GenericAndSparseAreRead) {
   const ParseResult r = parseBuild("{generic: top, sparse: true}");
   ASSERT_TRUE(r.value) << firstError(r);
@@ -173,6 +183,48 @@ TEST(SceneUpdate, ErrorsNameTheLineAndField) {
     EXPECT_NE(e.find(b.field), std::string::npos) << e;
     EXPECT_NE(e.find(b.message), std::string::npos) << e;
   }
+}
+
+// R-AS-UPDATE: an update may move an inactive primitive's other coordinates,
+// and make a triangle degenerate, but may not change which primitives are
+// inactive (VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03663, -03664).
+TEST(SceneUpdate, AnUpdateKeepsWhichPrimitivesAreInactive) {
+  const ParseResult made_inactive =
+      parseUpdate("{blas: {t: [{vertices: [[.nan, 0, 1], [1, 0, 1], [0, 1, 1]]}]}}");
+  expectError(made_inactive, 7, "scene.update.blas.t[0].vertices",
+              "triangle 0 was active and the update makes it inactive");
+  const ParseResult degenerate =
+      parseUpdate("{blas: {t: [{vertices: [[0, 0, 1], [1, 0, 1], [2, 0, 1]]}]}}");
+  EXPECT_TRUE(degenerate.value) << firstError(degenerate);
+  const std::string text =
+      "rules: [R-AS-UPDATE]\n"
+      "scene:\n"
+      "  blas:\n"
+      "    t: [{triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0], [.nan, 1, 0]],\n"
+      "                     indices: [0, 1, 2, 2, 1, 3]}}]\n"
+      "    b: [{aabbs: [[.nan, 0, 0, 1, 1, 1], [0, 0, 0, 1, 1, 1]]}]\n"
+      "  instances: [{blas: t}, {blas: b}]\n"
+      "  update: {blas: {t: [{vertices: [[0, 0, 1], [1, 0, 1], [0, 1, 1], [UPDATED]]}], "
+      "b: [{aabbs: [BOXES]}]}}\n"
+      "rays:\n"
+      "  list: [{origin: [0.2, 0.2, 1], direction: [0, 0, -1]}]\n"
+      "pipeline:\n"
+      "  hit_groups: [{closest_hit: [record: [hit]]}]\n"
+      "outputs:\n"
+      "  per_ray: [hit]\n";
+  auto with = [&text](const std::string& vertex, const std::string& boxes) {
+    std::string t = text;
+    t.replace(t.find("UPDATED"), 7, vertex);
+    t.replace(t.find("BOXES"), 5, boxes);
+    return parseCaseText(t, "t.yaml", "t/t");
+  };
+  const ParseResult kept = with(".nan, 5, 5", "[.nan, 2, 2, 3, 3, 3], [1, 1, 1, 1, 1, 1]");
+  EXPECT_TRUE(kept.value) << firstError(kept);
+  expectError(with("0, 1, 0", "[.nan, 0, 0, 1, 1, 1], [0, 0, 0, 1, 1, 1]"), 8,
+              "scene.update.blas.t[0].vertices",
+              "triangle 1 was inactive (NaN X) and the update makes it active");
+  expectError(with(".nan, 1, 0", "[0, 0, 0, 1, 1, 1], [0, 0, 0, 1, 1, 1]"), 8,
+              "scene.update.blas.b[0].aabbs", "box 0 was inactive");
 }
 
 TEST(SceneUpdate, AListUpdatesInTurnAndKeepsEveryState) {

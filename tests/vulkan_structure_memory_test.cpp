@@ -2,7 +2,9 @@
 // each structure created GENERIC where its level is named, and every build
 // still naming its real type; every structure and the scratch in a buffer
 // created with SPARSE_BINDING, bound by vkQueueBindSparse page by page out
-// of order, each structure across a page boundary. The traces see the same
+// of order, each structure across a page boundary; scene.build.storage
+// places them in shared buffers (and reused over a decoy's memory, with
+// another structure created over each). The traces see the same
 // scene, with the validation layer silent. Without sparseBinding, or a
 // queue that binds sparse memory, the case is NotSupported naming it.
 #include <gtest/gtest.h>
@@ -140,6 +142,47 @@ TEST_F(StructureRun, SparseStructuresAndScratchAreBoundPageByPageAcrossPages) {
   size_t many = 0;
   for (const LoggedSparseBuffer& s : log.sparse) many += s.binds > 1;
   EXPECT_GE(many, log.structures.size());
+}
+
+// scene.build.storage shared: the six structures (and copies) one after
+// another in one buffer, each at a multiple of 256 bytes, its guard before
+// the next (R-AS-MEMORY holds: runClean finds no overrun).
+TEST_F(StructureRun, SharedStorageStructuresLieInOneBufferAt256ByteOffsets) {
+  runClean(updatedAndCompacted("storage: shared"));
+  const BuildLog& log = *buildLog();
+  ASSERT_EQ(log.structures.size(), 6u);
+  std::map<VkBuffer, std::vector<const LoggedStructure*>> in;
+  for (const LoggedStructure& s : log.structures) {
+    EXPECT_EQ(s.offset % 256, 0u);
+    in[s.buffer].push_back(&s);
+  }
+  ASSERT_EQ(in.size(), 1u);  // small structures: all in the arena's first buffer
+  const std::vector<const LoggedStructure*>& all = in.begin()->second;
+  for (size_t i = 1; i < all.size(); ++i)
+    EXPECT_GE(all[i]->offset, all[i - 1]->offset + all[i - 1]->size + 256) << i;
+}
+
+// scene.build.storage reused: the decoy (two BLASes and the top level, no
+// copy) first, the scene's six structures over its memory (the first at the
+// decoy's first offset of the same buffer), then one more structure created
+// over each of the six, never built; the traces see the scene alone.
+TEST_F(StructureRun, ReusedStorageBuildsOverADecoyAndCreatesOverEachStructure) {
+  runClean(updatedAndCompacted("storage: reused"));
+  const BuildLog& log = *buildLog();
+  ASSERT_EQ(log.structures.size(), 3u + 6u + 6u);
+  const LoggedStructure &decoy = log.structures[0], &first = log.structures[3];
+  EXPECT_EQ(first.buffer, decoy.buffer);
+  EXPECT_EQ(first.offset, decoy.offset);
+  std::map<VkAccelerationStructureKHR, bool> built;
+  for (const LoggedBuild& b : log.builds) built[b.dst] = true;
+  for (size_t i = 0; i < 6; ++i) {
+    const LoggedStructure &s = log.structures[3 + i], &over = log.structures[9 + i];
+    EXPECT_EQ(over.buffer, s.buffer) << i;
+    EXPECT_EQ(over.offset, s.offset) << i;
+    EXPECT_EQ(over.size, s.size) << i;
+    EXPECT_EQ(over.created, s.created) << i;
+    EXPECT_FALSE(built.count(over.handle)) << i;
+  }
 }
 
 // A device the engine never opens: what the support check reads.

@@ -144,6 +144,17 @@ RAYSPEC_ENUM_NAMES(BuildCommand, RAYSPEC_BUILD_COMMANDS);
 #define RAYSPEC_GENERIC_LEVELS(X) X(None, "none") X(Bottom, "bottom") X(Top, "top") X(Both, "both")
 enum class GenericLevels { RAYSPEC_GENERIC_LEVELS(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(GenericLevels, RAYSPEC_GENERIC_LEVELS);
+// scene.build.storage: where the structures' memory lies. own: each in a
+// buffer of its own. shared: one after another in a few large buffers, each
+// at a multiple of 256 bytes with its guard between it and the next (as the
+// CTS's pooled BLASes). reused: shared, and every structure created over
+// memory a destroyed one used (a decoy scene, every position moved, built
+// there first, then destroyed), then another structure created over each
+// built one and never built (the CTS's reuse_creation_buffer): creating it
+// must leave the memory as it is (R-AS-CREATE).
+#define RAYSPEC_STRUCTURE_STORAGES(X) X(Own, "own") X(Shared, "shared") X(Reused, "reused")
+enum class StructureStorage { RAYSPEC_STRUCTURE_STORAGES(RAYSPEC_ENUMERATOR) };
+RAYSPEC_ENUM_NAMES(StructureStorage, RAYSPEC_STRUCTURE_STORAGES);
 struct AsBuild {
   uint32_t flags = 0x4;
   BuildCommand command = BuildCommand::Device;
@@ -184,6 +195,7 @@ struct AsBuild {
   // vkQueueBindSparse, out of order over two allocations, each structure
   // across a page boundary (vulkan/sparse_buffer.h; sparseBinding).
   bool sparse = false;
+  StructureStorage storage = StructureStorage::Own;
   bool customLayout() const {
     return instances_as_pointers || data_offsets || first_vertex || vertex_stride || aabb_stride;
   }

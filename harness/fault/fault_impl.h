@@ -2,10 +2,13 @@
 // function per fault, a record edit or a case mutation.
 #pragma once
 
+#include <array>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "base/vec3.h"
 #include "fault/planted_fault.h"
 #include "fault/record_edit.h"
 #include "model/model_engine.h"
@@ -70,6 +73,12 @@ std::string instanceTransformInverted(Case& c, ModelOptions& o);
 std::string inactiveRevived(Case& c, ModelOptions& o);
 std::string inactiveHidesLastActive(Case& c, ModelOptions& o);
 std::string degenerateHit(Case& c, ModelOptions& o);
+// Triangle p of g (through its indices): its vertices when they are finite
+// and span no area (R-DEGEN: a segment or a point), else none.
+std::optional<std::array<DVec3, 3>> degenerateTriangle(const Geometry& g, uint32_t p);
+// Triangle p of g given the vertices t (an indexed one its own new vertices,
+// as others may share its old ones).
+void setTriangle(Geometry& g, uint32_t p, const std::array<Vec3, 3>& t);
 std::string boxEnteredFromInsideMissed(Case& c, ModelOptions& o);
 std::string zeroLengthRayBoxMissed(Case& c, ModelOptions& o);
 std::string closestBoxSkipped(Case& c, ModelOptions& o);
@@ -103,6 +112,8 @@ std::string copyDropsInstance(Case& c, ModelOptions& o);
 std::string updateIgnored(Case& c, ModelOptions& o);
 std::string laterUpdatesIgnored(Case& c, ModelOptions& o);
 std::string copyUpdateIgnored(Case& c, ModelOptions& o);
+std::string updateDegenerateLost(Case& c, ModelOptions& o);
+std::string creationEmptiesStructure(Case& c, ModelOptions& o);
 std::string vertexFormatIgnored(Case& c, ModelOptions& o);
 std::string vertexFormatConfused(Case& c, ModelOptions& o);
 std::string positionFetchWorldSpace(Case& c, ModelOptions& o);

@@ -278,6 +278,14 @@ std::vector<FaultImpl> structureMutations() {
       {"later-updates-ignored", K::CaseMutation,
        "only the first update of a structure takes effect: a second update changes nothing",
        nullptr, laterUpdatesIgnored},
+      {"update-degenerate-lost", K::CaseMutation,
+       "triangles and boxes degenerate when first built are left out and stay out when an "
+       "update makes them whole",
+       nullptr, updateDegenerateLost},
+      {"creation-empties-structure", K::CaseMutation,
+       "creating an acceleration structure over a built one (scene.build.storage reused) leaves "
+       "the built one empty: the top level holds no instance",
+       nullptr, creationEmptiesStructure},
       {"copy-update-ignored", K::CaseMutation,
        "an update of a cloned, compacted or deserialized structure changes nothing", nullptr,
        copyUpdateIgnored},
@@ -460,6 +468,8 @@ std::vector<FaultImpl> vulkanFaults() {
       {"build-writes-past-size", K::Vulkan,
        "a build writes past the accelerationStructureSize it reported: 4 bytes of the guard "
        "after the first structure overwritten"},
+      {"creation-clears-memory", K::Vulkan,
+       "creating an acceleration structure over memory a built one holds zeroes that memory"},
   };
 }
 

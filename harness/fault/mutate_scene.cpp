@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 
 #include "base/vec3.h"
 #include "case/transform.h"
@@ -198,34 +199,40 @@ std::string inactiveHidesLastActive(Case& c, ModelOptions&) {
   return describeCount(n, "active instances or primitives after inactive ones made inactive");
 }
 
+std::optional<std::array<DVec3, 3>> degenerateTriangle(const Geometry& g, uint32_t p) {
+  std::array<DVec3, 3> v;
+  for (uint32_t k = 0; k < 3; ++k) {
+    const uint32_t i = g.indices.empty() ? p * 3 + k : g.indices[p * 3 + k];
+    if (i >= g.vertices.size()) return std::nullopt;
+    v[k] = {g.vertices[i][0], g.vertices[i][1], g.vertices[i][2]};
+    for (double x : v[k])
+      if (!std::isfinite(x)) return std::nullopt;
+  }
+  if (length(cross(sub(v[1], v[0]), sub(v[2], v[0]))) != 0) return std::nullopt;
+  return v;
+}
+
+void setTriangle(Geometry& g, uint32_t p, const std::array<Vec3, 3>& t) {
+  for (uint32_t k = 0; k < 3; ++k) {
+    if (g.indices.empty()) {
+      g.vertices[p * 3 + k] = t[k];
+    } else {  // its own vertices: others may share the old ones
+      g.indices[p * 3 + k] = static_cast<uint32_t>(g.vertices.size());
+      g.vertices.push_back(t[k]);
+    }
+  }
+}
+
 std::string degenerateHit(Case& c, ModelOptions&) {
   size_t n = 0;
   for (Blas& b : c.scene.blases)
     for (Geometry& g : b.geometries) {
       if (g.kind != Geometry::Kind::Triangles) continue;
-      for (uint32_t p = 0; p < g.primitiveCount(); ++p) {
-        std::array<DVec3, 3> v;
-        bool finite = true;
-        for (uint32_t k = 0; k < 3; ++k) {
-          const uint32_t i = g.indices.empty() ? p * 3 + k : g.indices[p * 3 + k];
-          if (i >= g.vertices.size())
-            finite = false;
-          else
-            v[k] = {g.vertices[i][0], g.vertices[i][1], g.vertices[i][2]};
-          for (double x : v[k]) finite = finite && std::isfinite(x);
+      for (uint32_t p = 0; p < g.primitiveCount(); ++p)
+        if (const auto v = degenerateTriangle(g, p)) {
+          setTriangle(g, p, fattened(*v));
+          ++n;
         }
-        if (!finite || length(cross(sub(v[1], v[0]), sub(v[2], v[0]))) != 0) continue;
-        const std::array<Vec3, 3> t = fattened(v);
-        for (uint32_t k = 0; k < 3; ++k) {
-          if (g.indices.empty()) {
-            g.vertices[p * 3 + k] = t[k];
-          } else {  // its own vertices: others may share the old ones
-            g.indices[p * 3 + k] = static_cast<uint32_t>(g.vertices.size());
-            g.vertices.push_back(t[k]);
-          }
-        }
-        ++n;
-      }
     }
   return describeCount(n, "degenerate triangles made hittable");
 }

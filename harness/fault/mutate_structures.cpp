@@ -1,8 +1,11 @@
 // Acceleration structure operations broken. R-AS-COPY: a copy of a top level (scene.build.copy:
 // clone or compact) that loses an instance, as a device whose copy drops the last instance record:
 // the scene as that device traces it.
+#include <cmath>
+
 #include "case/vertex_format_misread.h"
 #include "fault/fault_impl.h"
+#include "fault/program_edit.h"
 
 namespace rayspec {
 
@@ -47,6 +50,70 @@ std::string copyUpdateIgnored(Case& c, ModelOptions&) {
   const std::shared_ptr<const Scene> at_copy = c.scene.earlier[before];
   c.scene = *at_copy;
   return "the " + std::to_string(updates - before) + " update(s) of the copies were ignored";
+}
+
+// R-AS-UPDATE broken for primitives degenerate when first built (R-DEGEN: a
+// triangle of no area, a box that is a point): a device whose build leaves
+// them out of the structure (legal there: they give no intersection) and
+// whose update then cannot refit them, so those the updates make whole are
+// never hit, as if inactive.
+namespace {
+
+bool boxIsPoint(const std::array<float, 6>& a) {
+  return a[0] == a[3] && a[1] == a[4] && a[2] == a[5];
+}
+
+// Primitive p of g, degenerate in `built` and whole in g, made inactive.
+bool loseIfMadeWhole(const Geometry& built, Geometry& g, uint32_t p) {
+  if (g.kind == Geometry::Kind::Aabbs) {
+    if (!boxIsPoint(built.aabbs[p]) || boxIsPoint(g.aabbs[p]) || std::isnan(g.aabbs[p][0]))
+      return false;
+    g.aabbs[p][0] = std::nanf("");
+    return true;
+  }
+  if (!degenerateTriangle(built, p) || degenerateTriangle(g, p)) return false;
+  std::array<Vec3, 3> t;
+  for (uint32_t k = 0; k < 3; ++k) {
+    const uint32_t i = g.indices.empty() ? p * 3 + k : g.indices[p * 3 + k];
+    if (i >= g.vertices.size() || std::isnan(g.vertices[i][0])) return false;
+    t[k] = g.vertices[i];
+  }
+  t[0][0] = std::nanf("");
+  setTriangle(g, p, t);
+  return true;
+}
+
+}  // namespace
+
+std::string updateDegenerateLost(Case& c, ModelOptions&) {
+  if (!c.scene.updates()) return "";
+  const Scene& built = *c.scene.earlier.front();
+  size_t n = 0;
+  for (size_t b = 0; b < c.scene.blases.size() && b < built.blases.size(); ++b) {
+    std::vector<Geometry>& now = c.scene.blases[b].geometries;
+    for (size_t k = 0; k < now.size() && k < built.blases[b].geometries.size(); ++k) {
+      const Geometry& then = built.blases[b].geometries[k];
+      for (uint32_t p = 0; p < now[k].primitiveCount() && p < then.primitiveCount(); ++p)
+        n += loseIfMadeWhole(then, now[k], p);
+    }
+  }
+  return describeCount(n,
+                       "primitives degenerate as first built and made whole by the updates "
+                       "left out");
+}
+
+// R-AS-CREATE broken (scene.build.storage reused): a device whose
+// vkCreateAccelerationStructureKHR writes the memory it is given, so the
+// structure created over the built top level leaves it empty, as the model
+// sees a cleared structure (creation-clears-memory does it on a live device).
+std::string creationEmptiesStructure(Case& c, ModelOptions&) {
+  if (c.scene.build.storage != StructureStorage::Reused) return "";
+  size_t n = 0;
+  for (Instance& inst : c.scene.instances) {
+    n += inst.blas.has_value();
+    inst.blas.reset();
+  }
+  return describeCount(n, "instances of the top level a structure was created over lost");
 }
 
 // R-VERTEX-FORMAT broken: a device that does not round positions to their

@@ -126,7 +126,19 @@ Result<void> createdGeneric(Case& c) {
 // Every structure and the scratch in sparse-bound memory.
 Result<void> sparselyBound(Case& c) {
   if (c.scene.build.sparse) return errorMessage("the case binds its memory sparsely itself");
+  if (c.scene.build.storage != StructureStorage::Own)
+    return errorMessage("the case places its structures in shared buffers");
   c.scene.build.sparse = true;
+  return {};
+}
+
+// Every structure in shared buffers, over the memory of a decoy scene built
+// and destroyed first, with another structure created over each.
+Result<void> reusedStorage(Case& c) {
+  if (c.scene.build.storage != StructureStorage::Own)
+    return errorMessage("the case chooses its own structure storage");
+  if (c.scene.build.sparse) return errorMessage("the case binds its memory sparsely");
+  c.scene.build.storage = StructureStorage::Reused;
   return {};
 }
 
@@ -192,6 +204,9 @@ Result<Case> throughPath(const Case& c, FeaturePath path) {
       break;
     case FeaturePath::Sparse:
       RAYSPEC_TRY_VOID(sparselyBound(out));
+      break;
+    case FeaturePath::ReusedStorage:
+      RAYSPEC_TRY_VOID(reusedStorage(out));
       break;
   }
   return out;

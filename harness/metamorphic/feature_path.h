@@ -40,7 +40,9 @@ namespace rayspec {
   /* every structure created GENERIC, built as bottom or top (scene.build.generic both) */    \
   X(Generic, "generic")                                                                       \
   /* structures and scratch in sparse-bound memory, page by page (scene.build.sparse) */      \
-  X(Sparse, "sparse")
+  X(Sparse, "sparse")                                                                         \
+  /* structures in shared buffers over a destroyed decoy's memory (scene.build.storage) */    \
+  X(ReusedStorage, "reused-storage")
 enum class FeaturePath { RAYSPEC_FEATURE_PATHS(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(FeaturePath, RAYSPEC_FEATURE_PATHS);
 

@@ -301,10 +301,6 @@ void triangleFilter(const RTCFilterFunctionNArguments* args) {
 
 }  // namespace
 
-bool triangleInactive(const std::array<Vec3, 3>& tri) {
-  return std::isnan(tri[0][0]) || std::isnan(tri[1][0]) || std::isnan(tri[2][0]);
-}
-
 bool triangleNanYZ(const std::array<Vec3, 3>& tri) {
   if (triangleInactive(tri)) return false;
   for (const Vec3& v : tri)

@@ -14,6 +14,7 @@
 
 #include "base/result.h"
 #include "case/case.h"
+#include "case/inactive.h"  // triangleInactive
 #include "model/frame_error.h"
 #include "model/model_engine.h"
 
@@ -100,9 +101,6 @@ Result<void> buildModelScene(ModelScene& s, const Case& c, ModelTier tier, bool 
 
 // True when Embree would drop this triangle although Vulkan keeps it active.
 bool needsOwnTriangleTest(const std::array<Vec3, 3>& tri);
-// R-INACTIVE: NaN in the X component of any vertex (as given, before a
-// geometry transform).
-bool triangleInactive(const std::array<Vec3, 3>& tri);
 // R-UB: an active triangle with NaN in Y or Z of a vertex. Its region: the
 // box of its finite coordinates, unbounded along a component with a NaN,
 // through the geometry transform (if any), conservatively.

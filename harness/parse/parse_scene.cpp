@@ -300,6 +300,23 @@ void checkStrides(YamlReader& r, const YAML::Node& n, const Scene& scene) {
     }
 }
 
+// scene.build.storage: own, shared or reused; not with sparse (whose
+// buffers place each structure across a page boundary of its own).
+void parseStorage(YamlReader& r, const YAML::Node& n, AsBuild& build) {
+  const std::string f = "scene.build.storage";
+  const YAML::Node v = YamlReader::get(n, "storage");
+  if (!v.IsDefined()) return;
+  const auto name = r.string(v, f);
+  if (!name) return;
+  if (const auto storage = valueNamed<StructureStorage>(*name))
+    build.storage = *storage;
+  else
+    r.error(v, f,
+            "unknown storage '" + *name + "' (" + namesJoined(enumNames<StructureStorage>()) + ")");
+  if (build.storage != StructureStorage::Own && build.sparse)
+    r.error(v, f, "a shared or reused storage is not combined with scene.build.sparse");
+}
+
 // scene.build: {flags: [..], copy: none | clone | compact, layout fields}
 // (R-AS-COPY).
 void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
@@ -307,7 +324,7 @@ void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
   if (!r.expectMap(n, f,
                    {"flags", "copy", "order", "instances_as_pointers", "data_offsets",
                     "first_vertex", "vertex_stride", "aabb_stride", "one_by_one", "update_into",
-                    "tlas_update", "command", "generic", "sparse"}))
+                    "tlas_update", "command", "generic", "sparse", "storage"}))
     return;
   parseBuildLayout(r, n, build);
   if (auto v = YamlReader::get(n, "command"); v.IsDefined())
@@ -329,6 +346,7 @@ void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
     }
   if (auto v = YamlReader::get(n, "sparse"); v.IsDefined())
     build.sparse = parseTrueFalse(r, v, f + ".sparse").value_or(false);
+  parseStorage(r, n, build);
   if (auto v = YamlReader::get(n, "one_by_one"); v.IsDefined())
     build.one_by_one = parseTrueFalse(r, v, f + ".one_by_one").value_or(false);
   if (auto v = YamlReader::get(n, "update_into"); v.IsDefined())

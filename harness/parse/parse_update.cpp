@@ -10,10 +10,15 @@
 // many as before), `{}` keeps a geometry; an instance gets a new transform,
 // mask, custom index or SBT offset. Counts, indices, flags and the BLAS an
 // instance references stay: an update that changed them would be undefined
-// (VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03758 and the like).
+// (VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03758 and the like), and
+// so would one that made an inactive primitive active or an active one
+// inactive (-03663, -03664): new positions that do are an error naming the
+// primitive. Positions may otherwise go anywhere: a triangle or box may
+// become degenerate or stop being so (both are active).
 #include <cmath>
 
 #include "case/flag_names.h"
+#include "case/inactive.h"
 #include "case/transform.h"
 #include "parse/parse_parts.h"
 
@@ -29,6 +34,25 @@ void setVertex(YamlReader& r, const YAML::Node& n, const std::string& f, Geometr
   }
   if (!g.written.empty()) g.written[i] = v;
   g.vertices[i] = storedVertex(g.vertex_format, v);
+}
+
+// R-AS-UPDATE: the first primitive of `g` whose inactive state (R-INACTIVE)
+// differs from `before`'s, an error at `list` (field fl).
+void checkActiveStateKept(YamlReader& r, const YAML::Node& list, const std::string& fl,
+                          const Geometry& before, const Geometry& g) {
+  for (uint32_t p = 0; p < g.primitiveCount(); ++p) {
+    const bool was = primitiveInactive(before, p), is = primitiveInactive(g, p);
+    if (was == is) continue;
+    const std::string what = g.kind == Geometry::Kind::Triangles ? "triangle " : "box ";
+    r.error(list, fl,
+            what + std::to_string(p) +
+                (was ? " was inactive (NaN X) and the update makes it active"
+                     : " was active and the update makes it inactive "
+                       "(NaN X)") +
+                ": an update may not change which primitives are active "
+                "(VUID-vkCmdBuildAccelerationStructuresKHR-pInfos-03663, -03664), a rebuild may");
+    return;
+  }
 }
 
 // One geometry's new positions or boxes, the same count as before.
@@ -47,6 +71,7 @@ void updateGeometry(YamlReader& r, const YAML::Node& n, const std::string& f, Ge
                 std::to_string(count) + " (an update keeps every count)");
     return;
   }
+  const Geometry before = g;
   for (size_t i = 0; i < count; ++i) {
     const std::string fi = fl + "[" + std::to_string(i) + "]";
     if (triangles) {
@@ -58,6 +83,7 @@ void updateGeometry(YamlReader& r, const YAML::Node& n, const std::string& f, Ge
       for (int k = 0; k < 6; ++k) g.aabbs[i][k] = static_cast<float>((*v)[k]);
     }
   }
+  checkActiveStateKept(r, list, fl, before, g);
 }
 
 void updateBlases(YamlReader& r, const YAML::Node& n, const std::string& field, Scene& after) {

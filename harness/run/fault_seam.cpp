@@ -36,6 +36,10 @@ std::string layoutFaultMisses(const Case& c, LayoutFault f) {
   }
   if (f == LayoutFault::WritesPastSize)
     return c.scene.instances.empty() ? "the case builds no structure" : "";
+  if (f == LayoutFault::CreationClears)
+    return b.storage == StructureStorage::Reused ? ""
+                                                 : "the case does not reuse memory "
+                                                   "(scene.build.storage reused)";
   const bool applies = f == LayoutFault::StrideIgnored    ? b.vertex_stride || b.aabb_stride
                        : f == LayoutFault::OffsetsIgnored ? b.data_offsets || b.first_vertex
                                                           : b.instances_as_pointers;
@@ -51,8 +55,10 @@ void armLayoutFault(Side& s, const std::string& fault, LayoutFault f) {
   s.after = [fault, f](const Case& c, const Plan&, Results&) -> std::string {
     injectLayoutFault(LayoutFault::None);
     const std::string misses = layoutFaultMisses(c, f);
-    const char* what = f == LayoutFault::WritesPastSize
-                           ? "a build wrote past the size the device reported"
+    const char* what = f == LayoutFault::WritesPastSize ? "a build wrote past the size the device "
+                                                          "reported"
+                       : f == LayoutFault::CreationClears
+                           ? "creating a structure over a built one zeroed its memory"
                            : "the builds misread the input layout";
     return misses.empty() ? "planted fault " + fault + ": " + what
                           : "planted fault not applicable: " + fault + ": " + misses;

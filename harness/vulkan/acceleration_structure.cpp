@@ -14,6 +14,7 @@
 #include "vulkan/commands.h"
 #include "vulkan/memory.h"
 #include "vulkan/sparse_buffer.h"
+#include "vulkan/structure_arena.h"
 #include "vulkan/vk_check.h"
 #include "vulkan/vk_fault_hook.h"
 
@@ -39,7 +40,7 @@ Result<SparseBuffer> storageFor(const VulkanContext& ctx, VkDeviceSize size, boo
 void logStructure(VkAccelerationStructureKHR as, const VkAccelerationStructureCreateInfoKHR& info,
                   VkAccelerationStructureTypeKHR level, VkDeviceSize page) {
   if (BuildLog* log = buildLog())
-    log->structures.push_back({as, info.type, level, info.offset, info.size, page});
+    log->structures.push_back({as, info.type, level, info.offset, info.size, page, info.buffer});
 }
 
 }  // namespace
@@ -57,7 +58,10 @@ Result<VkAccelerationStructureKHR> createStructure(const VulkanContext& ctx,
                                                    const StructureMaking& making, VkDeviceSize size,
                                                    Cleanup& cleanup, MemoryGuards& guards,
                                                    const std::string& what) {
-  RAYSPEC_TRY(const SparseBuffer storage, storageFor(ctx, size, making.sparse, cleanup));
+  const VkAccelerationStructureTypeKHR created = making.createdAs(level);
+  RAYSPEC_TRY(const SparseBuffer storage, making.arena
+                                              ? making.arena->place(ctx, size, created)
+                                              : storageFor(ctx, size, making.sparse, cleanup));
   guards.add(storage.buffer.buffer, storage.offset, size,
              what + " (" + std::to_string(size) + " bytes)");
   VkAccelerationStructureCreateInfoKHR info{
@@ -65,7 +69,7 @@ Result<VkAccelerationStructureKHR> createStructure(const VulkanContext& ctx,
   info.buffer = storage.buffer.buffer;
   info.offset = storage.offset;
   info.size = size;
-  info.type = making.createdAs(level);
+  info.type = created;
   VkAccelerationStructureKHR as = VK_NULL_HANDLE;
   RAYSPEC_TRY_VOID(vkCheck(ctx.fn.createAccelerationStructure(ctx.device, &info, nullptr, &as),
                            "vkCreateAccelerationStructureKHR"));
@@ -363,6 +367,11 @@ Result<std::vector<VkAccelerationStructureKHR>> updateIntoOthers(
   return current;
 }
 
+StructureMaking withArena(StructureMaking making, StructureArena* arena) {
+  making.arena = arena;
+  return making;
+}
+
 // The builds of one scene: BLASes, their updates and copy in the order of
 // scene.build.order, then TLASes over the final BLASes, their updates and
 // copy in the same order. Each state's instances (as first built, after each
@@ -370,11 +379,12 @@ Result<std::vector<VkAccelerationStructureKHR>> updateIntoOthers(
 class SceneBuilder {
  public:
   SceneBuilder(const VulkanContext& ctx, const Scene& scene,
-               VkBuildAccelerationStructureFlagsKHR extra_flags, Cleanup& cleanup)
+               VkBuildAccelerationStructureFlagsKHR extra_flags, StructureArena* arena,
+               Cleanup& cleanup)
       : ctx_(ctx),
         scene_(scene),
         flags_(buildFlags(scene.build) | extra_flags),
-        making_(StructureMaking::of(scene.build)),
+        making_(withArena(StructureMaking::of(scene.build), arena)),
         cleanup_(cleanup) {
     for (const auto& e : scene.earlier) states_.push_back(e.get());
     states_.push_back(&scene);
@@ -668,13 +678,81 @@ class SceneBuilder {
 
 }  // namespace
 
+namespace {
+
+// One scene's builds (in the arena, if any); its overruns joined to `overruns`.
+Result<std::vector<BuiltStructure>> buildOnce(const VulkanContext& ctx, const Scene& scene,
+                                              VkBuildAccelerationStructureFlagsKHR extra_flags,
+                                              StructureArena* arena, Cleanup& cleanup,
+                                              std::vector<std::string>& overruns,
+                                              const std::string& what = "") {
+  SceneBuilder builder(ctx, scene, extra_flags, arena, cleanup);
+  RAYSPEC_TRY(std::vector<BuiltStructure> tlases, builder.run());
+  for (const std::string& o : builder.overruns()) overruns.push_back(what + o);
+  return tlases;
+}
+
+// scene.build.storage reused: the decoy scene built in the arena, waited on
+// (SceneBuilder::run submits and waits) and destroyed, the arena rewound so
+// that the scene's structures take the decoy's memory.
+Result<void> buildDecoy(const VulkanContext& ctx, const Scene& scene,
+                        VkBuildAccelerationStructureFlagsKHR extra_flags, StructureArena& arena,
+                        std::vector<std::string>& overruns) {
+  Cleanup decoy;
+  RAYSPEC_TRY_VOID(buildOnce(ctx, decoyScene(scene), extra_flags, &arena, decoy, overruns,
+                             "the decoy built first in the memory of the structures: "));
+  decoy.run();
+  arena.rewind();
+  return {};
+}
+
+// R-AS-CREATE (reuse_creation_buffer): another structure created over each
+// built one, at its offset and size, kept until cleanup and never built.
+// Planted fault creation-clears-memory: each such creation zeroes the
+// memory, as a driver whose vkCreateAccelerationStructureKHR wrote it would.
+Result<void> createOverlays(const VulkanContext& ctx, const StructureArena& arena,
+                            Cleanup& cleanup) {
+  const bool clears = injectedLayoutFault() == LayoutFault::CreationClears;
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  if (clears) {
+    RAYSPEC_TRY(cmd, beginCommands(ctx, cleanup));
+  }
+  for (const ArenaPlace& p : arena.places()) {
+    VkAccelerationStructureCreateInfoKHR info{
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR};
+    info.buffer = p.buffer;
+    info.offset = p.offset;
+    info.size = p.size;
+    info.type = p.type;
+    VkAccelerationStructureKHR as = VK_NULL_HANDLE;
+    RAYSPEC_TRY_VOID(vkCheck(ctx.fn.createAccelerationStructure(ctx.device, &info, nullptr, &as),
+                             "vkCreateAccelerationStructureKHR"));
+    VkDevice device = ctx.device;
+    auto destroy = ctx.fn.destroyAccelerationStructure;
+    cleanup.add([device, destroy, as] { destroy(device, as, nullptr); });
+    logStructure(as, info, p.type, 0);
+    if (clears) vkCmdFillBuffer(cmd, p.buffer, p.offset, alignUp(p.size, 4), 0);
+  }
+  if (clears) RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd));
+  return {};
+}
+
+}  // namespace
+
 Result<std::vector<BuiltStructure>> buildScene(const VulkanContext& ctx, const Scene& scene,
                                                VkBuildAccelerationStructureFlagsKHR extra_flags,
                                                Cleanup& cleanup,
                                                std::vector<std::string>& overruns) {
-  SceneBuilder builder(ctx, scene, extra_flags, cleanup);
-  RAYSPEC_TRY(std::vector<BuiltStructure> tlases, builder.run());
-  overruns = builder.overruns();
+  overruns.clear();
+  const StructureStorage storage = scene.build.storage;
+  if (storage == StructureStorage::Own)
+    return buildOnce(ctx, scene, extra_flags, nullptr, cleanup, overruns);
+  StructureArena arena(cleanup);
+  if (storage == StructureStorage::Reused)
+    RAYSPEC_TRY_VOID(buildDecoy(ctx, scene, extra_flags, arena, overruns));
+  RAYSPEC_TRY(std::vector<BuiltStructure> tlases,
+              buildOnce(ctx, scene, extra_flags, &arena, cleanup, overruns));
+  if (storage == StructureStorage::Reused) RAYSPEC_TRY_VOID(createOverlays(ctx, arena, cleanup));
   return tlases;
 }
 

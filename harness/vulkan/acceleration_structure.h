@@ -31,16 +31,25 @@ VkFormat vkVertexFormat(VertexFormat f);
 // structures live until cleanup runs. Every structure, scratch region and
 // serialized copy is guarded (R-AS-MEMORY): each guard the commands changed
 // is a line of `overruns`, checked once each copy ended and once at the end.
+// scene.build.storage shared: every structure placed in a StructureArena;
+// reused: the decoy scene (structure_arena.h) built there first, waited on
+// and destroyed, the scene built over its memory, then another structure
+// created over each built one and kept, never built (R-AS-CREATE).
 // Or the Device error.
 Result<std::vector<BuiltStructure>> buildScene(const VulkanContext& ctx, const Scene& scene,
                                                VkBuildAccelerationStructureFlagsKHR extra_flags,
                                                Cleanup& cleanup,
                                                std::vector<std::string>& overruns);
 
-// How a scene's structures are made (scene.build.generic, scene.build.sparse).
+class StructureArena;
+
+// How a scene's structures are made (scene.build.generic, scene.build.sparse;
+// arena: where scene.build.storage shared or reused places them, none: each
+// in a buffer of its own).
 struct StructureMaking {
   GenericLevels generic = GenericLevels::None;
   bool sparse = false;
+  StructureArena* arena = nullptr;
   static StructureMaking of(const AsBuild& build) { return {build.generic, build.sparse}; }
   // The type a structure of level `level` (bottom or top) is created with:
   // GENERIC where scene.build.generic names its level.
@@ -51,7 +60,8 @@ struct StructureMaking {
 // by cleanup; a guard after its size (R-AS-MEMORY), `what` naming the
 // structure and which of its sizes the device reported. `level` is the type
 // its builds name; it is created as `making` says: with the GENERIC type, or
-// in a sparse buffer (vulkan/sparse_buffer.h), placed across a page boundary.
+// in a sparse buffer (vulkan/sparse_buffer.h), placed across a page boundary,
+// or in the arena (vulkan/structure_arena.h).
 Result<VkAccelerationStructureKHR> createStructure(const VulkanContext& ctx,
                                                    VkAccelerationStructureTypeKHR level,
                                                    const StructureMaking& making, VkDeviceSize size,

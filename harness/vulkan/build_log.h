@@ -17,6 +17,7 @@ struct LoggedStructure {
       level;                          // VkAccelerationStructureCreateInfoKHR::type; real
   VkDeviceSize offset = 0, size = 0;  // in its buffer
   VkDeviceSize page = 0;              // its sparse buffer's page size; 0: bound whole
+  VkBuffer buffer = VK_NULL_HANDLE;
 };
 
 struct LoggedBuild {

@@ -44,13 +44,18 @@ std::optional<VkResult> injectedVkError(const char* call);
 //   build-writes-past-size  after the BLAS builds, 4 bytes of the first guard
 //                      after a structure's reported size overwritten, as a
 //                      build that ran past it (R-AS-MEMORY, memory_guards.h)
+//   creation-clears-memory  scene.build.storage reused: each structure
+//                      created over a built one zeroes its memory, as a
+//                      vkCreateAccelerationStructureKHR that wrote it would
+//                      (R-AS-CREATE)
 #define RAYSPEC_LAYOUT_FAULTS(X)                      \
   X(None, "")                          /* no fault */ \
   X(StrideIgnored, "stride-ignored")   /* tight */    \
   X(OffsetsIgnored, "offsets-ignored") /* zeros */    \
   X(PointersReversed, "pointers-reversed")            \
   X(FormatMisread, "vertex-format-misread")           \
-  X(WritesPastSize, "build-writes-past-size")
+  X(WritesPastSize, "build-writes-past-size")         \
+  X(CreationClears, "creation-clears-memory")
 enum class LayoutFault { RAYSPEC_LAYOUT_FAULTS(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(LayoutFault, RAYSPEC_LAYOUT_FAULTS);
 
