@@ -83,9 +83,11 @@ void TraceClassifier::addLeak(const Committed& b, const WhatIf& how) {
   leak_hows_.push_back(how);
 }
 
-void TraceClassifier::findUnsure(const std::vector<std::pair<size_t, double>>& reports) {
+void TraceClassifier::findUnsure(const std::vector<std::pair<size_t, double>>& reports,
+                                 double final_t) {
   const TraceRay& r = tr_.ray;
-  const double final_t = tr_.best.valid ? tr_.best.t : INFINITY;
+  unsure_.clear();
+  faces_ = false;
   // R-ISECT-REPORT: a box's intersection program reports anywhere in the
   // interval, before its slab entry too: a box it ran on is unsure wherever
   // the committed t lies.
@@ -156,13 +158,46 @@ bool TraceClassifier::sameAsCommitted(const Committed& b) const {
                        std::fabs(b.t - best.t) <= tr_.tol(b.t)));
 }
 
+void TraceClassifier::findUnsure(const std::vector<std::pair<size_t, double>>& reports) {
+  reports_ = &reports;
+  findUnsure(reports, tr_.best.valid ? tr_.best.t : INFINITY);
+}
+
+namespace {
+
+// The farthest t a legal answer commits (a miss: infinity).
+double farthestCommit(const std::vector<WhatIfAnswer>& answers, double t) {
+  for (const WhatIfAnswer& a : answers) t = std::max(t, a.best.valid ? a.best.t : INFINITY);
+  return t;
+}
+
+}  // namespace
+
+// The what-if runs where the unsure candidates decide otherwise (whatIf).
+// A legal answer that passes the committed hit reaches candidates behind
+// it: those unsure there (a shared edge behind a border edge) join, and the
+// runs are made again with them, until no answer reaches farther.
+std::vector<WhatIfAnswer> TraceClassifier::unsureAnswers(std::vector<WhatIfAnswer>& leaks) {
+  double reach = tr_.best.valid ? tr_.best.t : INFINITY;
+  std::vector<WhatIfAnswer> answers = m_.whatIf(tr_, cands_, unsure_, payload_in_, &leaks);
+  for (;;) {
+    const double further = farthestCommit(answers, reach);
+    if (!(further > reach + tr_.tol(reach))) return answers;
+    const size_t before = unsure_.size();
+    findUnsure(*reports_, further);
+    if (unsure_.size() == before) return answers;
+    reach = further;
+    leaks.clear();
+    answers = m_.whatIf(tr_, cands_, unsure_, payload_in_, &leaks);
+  }
+}
+
 void TraceClassifier::tryUnsure() {
   if (!reason_ && !faces_) return;
-  // The legal answers: this run's, and those of the what-if runs where the
-  // unsure candidates decide otherwise (whatIf).
+  // The legal answers: this run's, and those of the what-if runs.
   addCommitted(tr_.best, actual());
   std::vector<WhatIfAnswer> leaks;
-  for (const WhatIfAnswer& a : m_.whatIf(tr_, cands_, unsure_, payload_in_, &leaks)) {
+  for (const WhatIfAnswer& a : unsureAnswers(leaks)) {
     if (!sameAsCommitted(a.best) && !reason_) reason_ = AmbiguityReason::AabbFace;
     addCommitted(a.best, a.how);
   }
@@ -483,13 +518,75 @@ uint64_t ModelTracer::effectOf(const Committed& b, const Payload& payload,
   return d.h;
 }
 
-// What-if runs of the decision for an ambiguous trace: the unsure candidates
-// are grouped by distance (a group crosses one edge or vertex, shared or not).
-// Within a group each candidate alone is a hit (watertight: at least one of a
-// shared edge's triangles is hit); a group that does not close around the
-// ray may also be no hit. Stage
-// programs run again, in a sandbox: their counters, record and payload
-// effects are undone.
+namespace {
+
+// The unsure candidates grouped by distance, each group [first, last) in
+// `unsure`: a group crosses one edge or vertex, shared or not; a triangle
+// the ray runs in the plane of, or a box its ray misses, is a group of its
+// own.
+std::vector<std::pair<size_t, size_t>> unsureGroups(const Traversal& actual,
+                                                    const std::vector<ModelCandidate>& cands,
+                                                    const std::vector<size_t>& unsure) {
+  auto alone = [&](size_t u) {
+    return cands[unsure[u]].in_plane || cands[unsure[u]].outside;
+  };
+  std::vector<std::pair<size_t, size_t>> groups;
+  size_t g0 = 0;
+  while (g0 < unsure.size()) {
+    size_t g1 = g0 + 1;
+    while (g1 < unsure.size() && !alone(g0) && !alone(g1) &&
+           std::fabs(cands[unsure[g1]].t - cands[unsure[g1 - 1]].t) <=
+               actual.tol(cands[unsure[g1]].t))
+      ++g1;
+    groups.emplace_back(g0, g1);
+    g0 = g1;
+  }
+  return groups;
+}
+
+// What one group's choice forces: kOwn leaves its candidates to the model,
+// a choice below the group's size makes that one alone a hit, kNone makes
+// none of them one.
+constexpr size_t kOwn = ~size_t{0}, kNone = kOwn - 1;
+
+void forceGroup(WhatIf& how, const std::vector<size_t>& unsure, std::pair<size_t, size_t> g,
+                size_t choice) {
+  for (size_t b = g.first; b < g.second; ++b)
+    how.force[unsure[b]] = choice == kOwn ? -1 : static_cast<int8_t>(choice == b - g.first ? 1 : 0);
+}
+
+// Every combination of the groups' choices, each group's kOwn among them,
+// but all kOwn (the actual run): visit(pick), pick[g] group g's choice.
+template <typename Visit>
+void forEachCombination(const std::vector<std::vector<size_t>>& choices, Visit visit) {
+  std::vector<size_t> at(choices.size(), 0);  // 0: kOwn, j > 0: choices[g][j - 1]
+  std::vector<size_t> pick(choices.size(), kOwn);
+  for (;;) {
+    size_t g = 0;
+    while (g < at.size() && at[g] == choices[g].size()) at[g++] = 0;
+    if (g == at.size()) return;
+    ++at[g];
+    for (size_t h = 0; h < at.size(); ++h) pick[h] = at[h] == 0 ? kOwn : choices[h][at[h] - 1];
+    visit(pick);
+  }
+}
+
+}  // namespace
+
+// The most what-if runs of one trace's combined groups (ModelTracer::whatIf).
+constexpr size_t kMaxWhatIfCombinations = 256;
+
+// What-if runs of the decision for an ambiguous trace: within a group of
+// unsure candidates (unsureGroups) each candidate alone is a hit (watertight:
+// at least one of a shared edge's triangles is hit); a group that does not
+// close around the ray may also be no hit. A ray may meet several groups
+// one behind the other (a border edge in front of a shared edge): every
+// combination of the groups' choices is a legal answer, each group also left
+// to the model, up to kMaxWhatIfCombinations runs; past it, each group's
+// choices are tried with the others left to the model (stated: a device
+// combining them is then judged on what the answers share). Stage programs
+// run again, in a sandbox: their counters, record and payload effects are
+// undone.
 std::vector<WhatIfAnswer> ModelTracer::whatIf(const Traversal& actual,
                                               const std::vector<ModelCandidate>& cands,
                                               const std::vector<size_t>& unsure,
@@ -497,35 +594,46 @@ std::vector<WhatIfAnswer> ModelTracer::whatIf(const Traversal& actual,
                                               std::vector<WhatIfAnswer>* leaks) {
   std::vector<WhatIfAnswer> out;
   if (unsure.empty()) return out;
+  const std::vector<std::pair<size_t, size_t>> groups = unsureGroups(actual, cands, unsure);
+  // Each group's choices: its candidates alone, then none where that is
+  // legal (a border, an open fan, a side culled away); none where they close
+  // around the ray (a shared edge, a closed fan: closed_fan.h) is a leak.
+  std::vector<std::vector<size_t>> choices(groups.size());
+  std::vector<bool> closes(groups.size());
+  size_t combinations = 1;
+  for (size_t g = 0; g < groups.size(); ++g) {
+    const auto [g0, g1] = groups[g];
+    for (size_t a = 0; a < g1 - g0; ++a) choices[g].push_back(a);
+    const std::vector<size_t> members(unsure.begin() + static_cast<long>(g0),
+                                      unsure.begin() + static_cast<long>(g1));
+    closes[g] = closesAroundRay(*sh_.scene, cands, members, actual.ray, actual.flags);
+    if (!closes[g]) choices[g].push_back(kNone);
+    combinations = std::min(combinations * (choices[g].size() + 1), kMaxWhatIfCombinations + 1);
+  }
   WhatIf how{false, std::vector<int8_t>(cands.size(), -1), -1, -1, {}};
   auto run = [&](std::vector<WhatIfAnswer>& into) {
     into.push_back({sandbox(actual, cands, how, payload_in), how});
   };
-  size_t g0 = 0;
-  while (g0 < unsure.size()) {
-    size_t g1 = g0 + 1;
-    // A triangle the ray runs in the plane of, or a box its ray misses, is a
-    // group of its own (none of it hit is no leak: the model's own answer).
-    auto alone = [&](size_t u) {
-      return cands[unsure[u]].in_plane || cands[unsure[u]].outside;
-    };
-    while (g1 < unsure.size() && !alone(g0) && !alone(g1) &&
-           std::fabs(cands[unsure[g1]].t - cands[unsure[g1 - 1]].t) <=
-               actual.tol(cands[unsure[g1]].t))
-      ++g1;
-    for (size_t a = g0; a < g1; ++a) {
-      for (size_t b = g0; b < g1; ++b) how.force[unsure[b]] = a == b ? 1 : 0;
+  if (groups.size() > 1 && combinations <= kMaxWhatIfCombinations) {
+    forEachCombination(choices, [&](const std::vector<size_t>& pick) {
+      for (size_t g = 0; g < groups.size(); ++g) forceGroup(how, unsure, groups[g], pick[g]);
       run(out);
+    });
+    for (size_t g = 0; g < groups.size(); ++g) forceGroup(how, unsure, groups[g], kOwn);
+  } else {
+    for (size_t g = 0; g < groups.size(); ++g) {
+      for (size_t c : choices[g]) {
+        forceGroup(how, unsure, groups[g], c);
+        run(out);
+      }
+      forceGroup(how, unsure, groups[g], kOwn);
     }
-    // No triangle of the group hit: a leak where they close around the ray
-    // (a shared edge, a closed fan: closed_fan.h), else legal (a border, an
-    // open fan, a side culled away).
-    for (size_t b = g0; b < g1; ++b) how.force[unsure[b]] = 0;
-    const std::vector<size_t> group(unsure.begin() + static_cast<long>(g0),
-                                    unsure.begin() + static_cast<long>(g1));
-    run(closesAroundRay(*sh_.scene, cands, group, actual.ray, actual.flags) ? *leaks : out);
-    for (size_t b = g0; b < g1; ++b) how.force[unsure[b]] = -1;
-    g0 = g1;
+  }
+  for (size_t g = 0; g < groups.size(); ++g) {
+    if (!closes[g]) continue;
+    forceGroup(how, unsure, groups[g], kNone);
+    run(*leaks);
+    forceGroup(how, unsure, groups[g], kOwn);
   }
   return out;
 }

@@ -24,7 +24,8 @@ class TraceClassifier {
     amb_.ray = m.st_.index;
   }
 
-  // Triangles near an edge, vertex or interval end, and grazed boxes.
+  // Triangles near an edge, vertex or interval end, and grazed boxes, up to
+  // the committed hit (tryUnsure reaches farther where a legal answer does).
   void findUnsure(const std::vector<std::pair<size_t, double>>& reports);
   // The triangles around the shared edge or vertex a ray meets.
   void findSharedTriangles();
@@ -51,6 +52,9 @@ class TraceClassifier {
 
  private:
   bool eligible(const ModelCandidate& cand) const;
+  // findUnsure up to final_t; tryUnsure's answers, reaching as far as they do.
+  void findUnsure(const std::vector<std::pair<size_t, double>>& reports, double final_t);
+  std::vector<WhatIfAnswer> unsureAnswers(std::vector<WhatIfAnswer>& leaks);
   void addCommitted(const Committed& b, const WhatIf& how);
   void addLeak(const Committed& b, const WhatIf& how);
   static WhatIf actual() { return {true, {}, -1, -1, {}}; }
@@ -85,7 +89,8 @@ class TraceClassifier {
   std::optional<AmbiguityReason> tie_reason_;  // reports tie (tryPermutations), if nothing else
   double reason_t_ = 0;                        // the t of the candidate that gave it
   std::vector<size_t> unsure_;                 // candidates whose decision could flip
-  bool faces_ = false;                         // a grazed box among them
+  const std::vector<std::pair<size_t, double>>* reports_ = nullptr;  // findUnsure's
+  bool faces_ = false;                                               // a grazed box among them
 };
 
 }  // namespace rayspec
