@@ -17,6 +17,7 @@
 #include "base/source_loc.h"
 #include "base/vec3.h"
 #include "case/bit_widths.h"
+#include "case/structure_queries.h"
 #include "case/vertex_format.h"
 #include "program/payload_words.h"
 #include "program/program.h"
@@ -184,6 +185,8 @@ struct AsBuild {
   // vkQueueBindSparse, out of order over two allocations, each structure
   // across a page boundary (vulkan/sparse_buffer.h; sparseBinding).
   bool sparse = false;
+  // scene.build.queries, query_command (case/structure_queries.h).
+  StructureQueries queries;
   bool customLayout() const {
     return instances_as_pointers || data_offsets || first_vertex || vertex_stride || aabb_stride;
   }

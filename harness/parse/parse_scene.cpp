@@ -307,9 +307,10 @@ void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
   if (!r.expectMap(n, f,
                    {"flags", "copy", "order", "instances_as_pointers", "data_offsets",
                     "first_vertex", "vertex_stride", "aabb_stride", "one_by_one", "update_into",
-                    "tlas_update", "command", "generic", "sparse"}))
+                    "tlas_update", "command", "generic", "sparse", "queries", "query_command"}))
     return;
   parseBuildLayout(r, n, build);
+  parseStructureQueries(r, n, build);
   if (auto v = YamlReader::get(n, "command"); v.IsDefined())
     if (const auto name = r.string(v, f + ".command")) {
       if (const auto command = valueNamed<BuildCommand>(*name))

@@ -5,6 +5,7 @@
 #include <vulkan/vulkan.h>
 
 #include "case/case.h"
+#include "results/results.h"
 #include "vulkan/built_structure.h"
 #include "vulkan/cleanup.h"
 #include "vulkan/context.h"
@@ -31,17 +32,24 @@ VkFormat vkVertexFormat(VertexFormat f);
 // structures live until cleanup runs. Every structure, scratch region and
 // serialized copy is guarded (R-AS-MEMORY): each guard the commands changed
 // is a line of `overruns`, checked once each copy ended and once at the end.
+// scene.build.queries asks each level's structures before its copy (or after
+// its last update), each broken guarantee a line of `query_findings`
+// (vulkan/structure_queries.h).
 // Or the Device error.
 Result<std::vector<BuiltStructure>> buildScene(const VulkanContext& ctx, const Scene& scene,
                                                VkBuildAccelerationStructureFlagsKHR extra_flags,
-                                               Cleanup& cleanup,
-                                               std::vector<std::string>& overruns);
+                                               Cleanup& cleanup, std::vector<std::string>& overruns,
+                                               std::vector<DeviceFinding>& query_findings);
 
-// How a scene's structures are made (scene.build.generic, scene.build.sparse).
+// How a scene's structures are made (scene.build.generic, scene.build.sparse;
+// in host-visible memory where the host queries them: scene.build.query_command host).
 struct StructureMaking {
   GenericLevels generic = GenericLevels::None;
   bool sparse = false;
-  static StructureMaking of(const AsBuild& build) { return {build.generic, build.sparse}; }
+  bool host_visible = false;
+  static StructureMaking of(const AsBuild& build) {
+    return {build.generic, build.sparse, build.queries.command == QueryCommand::Host};
+  }
   // The type a structure of level `level` (bottom or top) is created with:
   // GENERIC where scene.build.generic names its level.
   VkAccelerationStructureTypeKHR createdAs(VkAccelerationStructureTypeKHR level) const;
