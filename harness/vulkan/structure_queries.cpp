@@ -217,9 +217,7 @@ class LevelChecks {
     return dash == std::string::npos ? std::string() : both.substr(dash + 1);
   }
   const std::string& name(size_t i) const { return level_.structures[i].name; }
-  void add(const char* rule, const std::string& message) {
-    findings_.push_back({rule, message});
-  }
+  void add(const char* rule, const std::string& message) { findings_.push_back({rule, message}); }
 
   const VulkanContext& ctx_;
   const QueriedLevel& level_;
