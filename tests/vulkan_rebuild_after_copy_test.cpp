@@ -84,12 +84,13 @@ class RebuildAfterCopy : public ::testing::Test {
   // The top level the traces use and its size; the guards' findings in overruns_.
   BuiltStructure build(const Case& c, Cleanup& cleanup) {
     const Result<std::vector<BuiltStructure>> built =
-        buildScene(ctx_, c.scene, 0, cleanup, overruns_);
+        buildScene(ctx_, c.scene, 0, cleanup, overruns_, query_findings_);
     EXPECT_TRUE(built.ok()) << built.error().format();
     return built.ok() && built->size() == 1 ? built->front() : BuiltStructure{};
   }
   VulkanContext ctx_;
   std::vector<std::string> overruns_;
+  std::vector<DeviceFinding> query_findings_;
 };
 
 TEST_F(RebuildAfterCopy, ARebuildAfterACompactCopyWritesAStructureOfTheBuildSize) {

@@ -17,6 +17,7 @@
 #include "base/source_loc.h"
 #include "base/vec3.h"
 #include "case/bit_widths.h"
+#include "case/structure_queries.h"
 #include "case/vertex_format.h"
 #include "program/payload_words.h"
 #include "program/program.h"
@@ -196,6 +197,8 @@ struct AsBuild {
   // across a page boundary (vulkan/sparse_buffer.h; sparseBinding).
   bool sparse = false;
   StructureStorage storage = StructureStorage::Own;
+  // scene.build.queries, query_command (case/structure_queries.h).
+  StructureQueries queries;
   bool customLayout() const {
     return instances_as_pointers || data_offsets || first_vertex || vertex_stride || aabb_stride;
   }

@@ -40,6 +40,14 @@ const std::vector<FaultImpl>& faultImpls();
 FaultResult describeRay(uint32_t ray, const std::string& what);  // applied, "ray N: what"
 FaultResult notApplicable(const std::string& why);
 
+// A finding only the device shows (Results::device_findings), as the device
+// side's own check would make it; the fault's description when it applies
+// (record_faults_rules.cpp).
+FaultResult plantDeviceFinding(RecordFaultArgs& a, DeviceFinding finding, std::string what);
+// The faults of scene.build.queries: record edits and their live Vulkan
+// faults (record_faults_queries.cpp).
+std::vector<FaultImpl> queryFaults();
+
 // Record edits (record_faults.cpp, record_faults_rules.cpp).
 FaultResult dropMiss(RecordFaultArgs& a);
 FaultResult swapPrimitiveId(RecordFaultArgs& a);

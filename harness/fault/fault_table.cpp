@@ -480,7 +480,7 @@ const std::vector<FaultImpl>& faultImpls() {
     std::vector<FaultImpl> all;
     for (auto part : {recordEdits, sceneAndFlagMutations, programMutations, sbtAndOrderMutations,
                       pipelineMutations, structureMutations, codeAndLaunchMutations,
-                      rayQueryMutations, processFaults, vulkanFaults})
+                      rayQueryMutations, processFaults, vulkanFaults, queryFaults})
       for (FaultImpl& f : part()) all.push_back(std::move(f));
     return all;
   }();

@@ -229,16 +229,10 @@ FaultResult builtinWrong(RecordFaultArgs& a) {
 
 namespace rayspec {
 
-namespace {
-
-// A finding only the device shows (Results::device_findings), as the device
-// side's own check would make it; the fault's description when it applies.
 FaultResult plantDeviceFinding(RecordFaultArgs& a, DeviceFinding finding, std::string what) {
   a.dev.w.device_findings.push_back(std::move(finding));
   return {true, std::move(what)};
 }
-
-}  // namespace
 
 // R-LIBRARY with VK_EXT_pipeline_library_group_handles: a device whose group
 // handle read from a library differs from the same group's handle in the

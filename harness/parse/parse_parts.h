@@ -16,6 +16,8 @@ std::optional<bool> parseSwitch(YamlReader& r, const YAML::Node& n, const std::s
 // scene.update (parse_update.cpp): `scene` as parsed becomes Scene::built,
 // and `scene` the scene after the update.
 void parseSceneUpdate(YamlReader& r, const YAML::Node& n, Scene& scene);
+// scene.build.queries and query_command (parse_structure_queries.cpp).
+void parseStructureQueries(YamlReader& r, const YAML::Node& n, AsBuild& build);
 // scene.build.order, once scene.update and scene.build.copy are known.
 void parseBuildOrder(YamlReader& r, const YAML::Node& n, Scene& scene);
 // One instance of scene.instances (its blas named among scene.blases).

@@ -301,7 +301,8 @@ void checkStrides(YamlReader& r, const YAML::Node& n, const Scene& scene) {
 }
 
 // scene.build.storage: own, shared or reused; not with sparse (whose
-// buffers place each structure across a page boundary of its own).
+// buffers place each structure across a page boundary of its own) nor with
+// host queries (whose structures are in host-visible memory).
 void parseStorage(YamlReader& r, const YAML::Node& n, AsBuild& build) {
   const std::string f = "scene.build.storage";
   const YAML::Node v = YamlReader::get(n, "storage");
@@ -315,6 +316,10 @@ void parseStorage(YamlReader& r, const YAML::Node& n, AsBuild& build) {
             "unknown storage '" + *name + "' (" + namesJoined(enumNames<StructureStorage>()) + ")");
   if (build.storage != StructureStorage::Own && build.sparse)
     r.error(v, f, "a shared or reused storage is not combined with scene.build.sparse");
+  if (build.storage != StructureStorage::Own && build.queries.command == QueryCommand::Host)
+    r.error(v, f,
+            "a shared or reused storage is device memory: not combined with "
+            "scene.build.query_command host");
 }
 
 // scene.build: {flags: [..], copy: none | clone | compact, layout fields}
@@ -324,9 +329,11 @@ void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
   if (!r.expectMap(n, f,
                    {"flags", "copy", "order", "instances_as_pointers", "data_offsets",
                     "first_vertex", "vertex_stride", "aabb_stride", "one_by_one", "update_into",
-                    "tlas_update", "command", "generic", "sparse", "storage"}))
+                    "tlas_update", "command", "generic", "sparse", "storage", "queries",
+                    "query_command"}))
     return;
   parseBuildLayout(r, n, build);
+  parseStructureQueries(r, n, build);
   if (auto v = YamlReader::get(n, "command"); v.IsDefined())
     if (const auto name = r.string(v, f + ".command")) {
       if (const auto command = valueNamed<BuildCommand>(*name))

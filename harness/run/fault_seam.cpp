@@ -24,6 +24,31 @@ void armVulkanError(Side& s, const std::string& fault, const InjectedVkError& e)
   };
 }
 
+// Whether query fault f changes an answer of this case's scene.build.queries,
+// and if not, why; "-": f is no query fault.
+std::string queryFaultMisses(const Case& c, LayoutFault f) {
+  const StructureQueries& q = c.scene.build.queries;
+  const auto needs = [&q](bool asked, const char* what) {
+    return asked ? std::string() : std::string("the case asks for no ") + what + " query";
+  };
+  switch (f) {
+    case LayoutFault::CompactedTooLarge:
+      return needs(q.asks(StructureQuery::CompactedSize), "compacted_size");
+    case LayoutFault::SizeTooLarge:
+      return needs(q.asks(StructureQuery::Size), "size");
+    case LayoutFault::AvailabilityLost:
+      return needs(!q.queries.empty() && q.command == QueryCommand::Device, "device-form");
+    case LayoutFault::UuidWrong:
+      return needs(
+          q.asks(StructureQuery::SerializationSize) || q.asks(StructureQuery::BottomLevelPointers),
+          "serialization_size or bottom_level_pointers");
+    case LayoutFault::PointerCountOff:
+      return needs(q.asks(StructureQuery::BottomLevelPointers), "bottom_level_pointers");
+    default:
+      return "-";
+  }
+}
+
 // Whether layout fault f changes what this case's builds read, and if not,
 // why.
 std::string layoutFaultMisses(const Case& c, LayoutFault f) {
@@ -40,6 +65,7 @@ std::string layoutFaultMisses(const Case& c, LayoutFault f) {
     return b.storage == StructureStorage::Reused ? ""
                                                  : "the case does not reuse memory "
                                                    "(scene.build.storage reused)";
+  if (const std::string query = queryFaultMisses(c, f); query != "-") return query;
   const bool applies = f == LayoutFault::StrideIgnored    ? b.vertex_stride || b.aabb_stride
                        : f == LayoutFault::OffsetsIgnored ? b.data_offsets || b.first_vertex
                                                           : b.instances_as_pointers;
@@ -59,7 +85,8 @@ void armLayoutFault(Side& s, const std::string& fault, LayoutFault f) {
                                                           "reported"
                        : f == LayoutFault::CreationClears
                            ? "creating a structure over a built one zeroed its memory"
-                           : "the builds misread the input layout";
+                       : queryFaultMisses(c, f) != "-" ? "a structure query answered wrong"
+                                                       : "the builds misread the input layout";
     return misses.empty() ? "planted fault " + fault + ": " + what
                           : "planted fault not applicable: " + fault + ": " + misses;
   };

@@ -8,37 +8,19 @@
 #include "vulkan/build_batch.h"
 #include "vulkan/commands.h"
 #include "vulkan/memory.h"
+#include "vulkan/structure_queries.h"
 #include "vulkan/vk_check.h"
 
 namespace rayspec {
 namespace {
 
-// A size of each structure the device reports (compacted or serialized).
+// A size of each structure the device reports (compacted or serialized),
+// through a query pool (vulkan/structure_queries.h).
 Result<std::vector<VkDeviceSize>> queriedSizes(const VulkanContext& ctx,
                                                const std::vector<BuiltStructure>& from,
                                                VkQueryType query, Cleanup& cleanup) {
-  const uint32_t count = static_cast<uint32_t>(from.size());
-  VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-  info.queryType = query;
-  info.queryCount = count;
-  VkQueryPool pool = VK_NULL_HANDLE;
-  RAYSPEC_TRY_VOID(
-      vkCheck(vkCreateQueryPool(ctx.device, &info, nullptr, &pool), "vkCreateQueryPool"));
-  VkDevice device = ctx.device;
-  cleanup.add([device, pool] { vkDestroyQueryPool(device, pool, nullptr); });
-  std::vector<VkAccelerationStructureKHR> handles;
-  for (const BuiltStructure& s : from) handles.push_back(s.handle);
-  RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx, cleanup));
-  vkCmdResetQueryPool(cmd, pool, 0, count);
-  ctx.fn.cmdWriteAccelerationStructuresProperties(cmd, count, handles.data(), query, pool, 0);
-  RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd));
-  std::vector<VkDeviceSize> sizes(count);
-  RAYSPEC_TRY_VOID(
-      vkCheck(vkGetQueryPoolResults(ctx.device, pool, 0, count, count * sizeof(VkDeviceSize),
-                                    sizes.data(), sizeof(VkDeviceSize),
-                                    VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-              "vkGetQueryPoolResults"));
-  return sizes;
+  RAYSPEC_TRY(const QueriedValues read, queryProperty(ctx, handlesOf(from), query, cleanup));
+  return read.values;
 }
 
 // The compacted size of each structure, as the device reports it.
@@ -56,95 +38,23 @@ Result<std::vector<VkDeviceSize>> compactedSizes(const VulkanContext& ctx,
   return sizes;
 }
 
-// Serialized data: driverUUID, compatibility UUID, then 64-bit sizes (the
-// serialized size, the deserialized size, the handle count) and the handles.
-constexpr VkDeviceSize kSerializedAlignment = 256;  // of src / dst device addresses
-constexpr VkDeviceSize kDeserializedSizeOffset = 2 * VK_UUID_SIZE + 8;
-
-// Each structure serialized into host-visible memory (one buffer, each at
-// a 256-byte aligned offset), its header checked: the device must call its
-// own data compatible, and the sizes must be those it reported.
-struct Serialized {
-  Buffer memory;
-  std::vector<VkDeviceSize> offsets, deserialized_sizes;
-};
-
-Result<void> checkSerializedHeader(const VulkanContext& ctx, const uint8_t* data,
-                                   VkDeviceSize size) {
-  VkAccelerationStructureVersionInfoKHR version{
-      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_VERSION_INFO_KHR};
-  version.pVersionData = data;
-  VkAccelerationStructureCompatibilityKHR compatible =
-      VK_ACCELERATION_STRUCTURE_COMPATIBILITY_INCOMPATIBLE_KHR;
-  ctx.fn.getDeviceAccelerationStructureCompatibility(ctx.device, &version, &compatible);
-  if (compatible != VK_ACCELERATION_STRUCTURE_COMPATIBILITY_COMPATIBLE_KHR)
-    return deviceError(
-        "vkGetDeviceAccelerationStructureCompatibilityKHR calls the device's own serialized "
-        "structure incompatible: VK_ERROR_INCOMPATIBLE_DRIVER");
-  uint64_t serialized = 0;
-  std::memcpy(&serialized, data + 2 * VK_UUID_SIZE, sizeof(serialized));
-  if (serialized != size)
-    return deviceError("serialized data says it holds " + std::to_string(serialized) +
-                       " bytes, the query said " + std::to_string(size) + ": VK_ERROR_UNKNOWN");
+// The header of each serialized copy checked before it is deserialized:
+// the device must call its own data compatible, and the sizes must be
+// those it reported (a Device error otherwise; scene.build.queries holds
+// the header to every rule instead, vulkan/structure_queries.h).
+Result<void> checkHeaders(const VulkanContext& ctx, const SerializedCopies& s) {
+  for (size_t i = 0; i < s.sizes.size(); ++i) {
+    const SerializedHeader h = s.header(i);
+    if (!deviceCallsCompatible(ctx, s.data(i)))
+      return deviceError(
+          "vkGetDeviceAccelerationStructureCompatibilityKHR calls the device's own serialized "
+          "structure incompatible: VK_ERROR_INCOMPATIBLE_DRIVER");
+    if (h.serialized_size != s.sizes[i])
+      return deviceError("serialized data says it holds " + std::to_string(h.serialized_size) +
+                         " bytes, the query said " + std::to_string(s.sizes[i]) +
+                         ": VK_ERROR_UNKNOWN");
+  }
   return {};
-}
-
-Result<Serialized> serialize(const VulkanContext& ctx, const std::vector<BuiltStructure>& from,
-                             MemoryGuards& guards, Cleanup& cleanup) {
-  RAYSPEC_TRY(const std::vector<VkDeviceSize> sizes,
-              queriedSizes(ctx, from, VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_SIZE_KHR,
-                           cleanup));
-  for (size_t i = 0; i < sizes.size(); ++i)
-    if (sizes[i] < kDeserializedSizeOffset + 16)  // the header: two UUIDs, three sizes
-      return deviceError("the serialization size query gave " + std::to_string(sizes[i]) +
-                         " bytes for " + from[i].name +
-                         ", less than the header every serialized structure holds: "
-                         "VK_ERROR_UNKNOWN");
-  Serialized s;
-  VkDeviceSize total = 0;
-  for (VkDeviceSize size : sizes) {
-    s.offsets.push_back(total);
-    total += alignUp(guardedSize(size), kSerializedAlignment);
-  }
-  RAYSPEC_TRY(
-      s.memory,
-      createBuffer(ctx, total + kSerializedAlignment,
-                   VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
-                       VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
-                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
-                       VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                   MemoryUse::Host, cleanup));
-  const VkDeviceSize base =
-      (s.memory.address + kSerializedAlignment - 1) / kSerializedAlignment * kSerializedAlignment -
-      s.memory.address;
-  RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx, cleanup));
-  for (size_t i = 0; i < from.size(); ++i)
-    guards.add(s.memory.buffer, s.offsets[i] + base, sizes[i],
-               from[i].name + " serialized (" + std::to_string(sizes[i]) +
-                   " bytes, its serialization size)");
-  guards.recordFill(cmd);
-  for (size_t i = 0; i < from.size(); ++i) {
-    s.offsets[i] += base;
-    VkCopyAccelerationStructureToMemoryInfoKHR copy{
-        VK_STRUCTURE_TYPE_COPY_ACCELERATION_STRUCTURE_TO_MEMORY_INFO_KHR};
-    copy.src = from[i].handle;
-    copy.dst.deviceAddress = s.memory.address + s.offsets[i];
-    copy.mode = VK_COPY_ACCELERATION_STRUCTURE_MODE_SERIALIZE_KHR;
-    ctx.fn.cmdCopyAccelerationStructureToMemory(cmd, &copy);
-  }
-  // The serialized bytes, written as transfers in the build stage, read by
-  // the host.
-  recordMemoryBarrier(cmd, {kBuildStage, VK_ACCESS_TRANSFER_WRITE_BIT},
-                      {VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT});
-  RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd));
-  for (size_t i = 0; i < from.size(); ++i) {
-    const auto* data = static_cast<const uint8_t*>(s.memory.mapped) + s.offsets[i];
-    RAYSPEC_TRY_VOID(checkSerializedHeader(ctx, data, sizes[i]));
-    uint64_t deserialized = 0;
-    std::memcpy(&deserialized, data + kDeserializedSizeOffset, sizeof(deserialized));
-    s.deserialized_sizes.push_back(deserialized);
-  }
-  return s;
 }
 
 // R-AS-COPY by serialization: each structure to memory, then from memory
@@ -154,11 +64,12 @@ Result<std::vector<BuiltStructure>> serializeAndBack(const VulkanContext& ctx,
                                                      VkAccelerationStructureTypeKHR type,
                                                      const StructureMaking& making,
                                                      MemoryGuards& guards, Cleanup& cleanup) {
-  RAYSPEC_TRY(const Serialized s, serialize(ctx, from, guards, cleanup));
+  RAYSPEC_TRY(SerializedCopies s, serializeToHost(ctx, from, guards, cleanup));
+  RAYSPEC_TRY_VOID(checkHeaders(ctx, s));
   std::vector<BuiltStructure> to;
   RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx, cleanup));
   for (size_t i = 0; i < from.size(); ++i) {
-    const VkDeviceSize size = s.deserialized_sizes[i];
+    const VkDeviceSize size = s.deserializedSize(i);
     RAYSPEC_TRY(
         const VkAccelerationStructureKHR copy_handle,
         createStructure(ctx, type, making, size, cleanup, guards,
@@ -181,6 +92,91 @@ Result<std::vector<BuiltStructure>> serializeAndBack(const VulkanContext& ctx,
 }
 
 }  // namespace
+
+std::vector<VkAccelerationStructureKHR> handlesOf(const std::vector<BuiltStructure>& from) {
+  std::vector<VkAccelerationStructureKHR> handles;
+  for (const BuiltStructure& s : from) handles.push_back(s.handle);
+  return handles;
+}
+
+SerializedHeader SerializedCopies::header(size_t i) const {
+  const uint8_t* d = data(i);
+  SerializedHeader h;
+  std::memcpy(h.driver_uuid.data(), d, VK_UUID_SIZE);
+  std::memcpy(h.compatibility_uuid.data(), d + VK_UUID_SIZE, VK_UUID_SIZE);
+  std::memcpy(&h.serialized_size, d + 2 * VK_UUID_SIZE, 8);
+  std::memcpy(&h.deserialized_size, d + kDeserializedSizeOffset, 8);
+  return h;
+}
+
+const uint8_t* SerializedCopies::data(size_t i) const {
+  return static_cast<const uint8_t*>(memory.mapped) + offsets[i];
+}
+
+VkDeviceSize SerializedCopies::deserializedSize(size_t i) const {
+  return header(i).deserialized_size;
+}
+
+bool deviceCallsCompatible(const VulkanContext& ctx, const uint8_t* version_data) {
+  VkAccelerationStructureVersionInfoKHR version{
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_VERSION_INFO_KHR};
+  version.pVersionData = version_data;
+  VkAccelerationStructureCompatibilityKHR compatible =
+      VK_ACCELERATION_STRUCTURE_COMPATIBILITY_INCOMPATIBLE_KHR;
+  ctx.fn.getDeviceAccelerationStructureCompatibility(ctx.device, &version, &compatible);
+  return compatible == VK_ACCELERATION_STRUCTURE_COMPATIBILITY_COMPATIBLE_KHR;
+}
+
+Result<SerializedCopies> serializeToHost(const VulkanContext& ctx,
+                                         const std::vector<BuiltStructure>& from,
+                                         MemoryGuards& guards, Cleanup& cleanup) {
+  RAYSPEC_TRY(const std::vector<VkDeviceSize> sizes,
+              queriedSizes(ctx, from, VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_SIZE_KHR,
+                           cleanup));
+  for (size_t i = 0; i < sizes.size(); ++i)
+    if (sizes[i] < kSerializedHeaderBytes)
+      return deviceError("the serialization size query gave " + std::to_string(sizes[i]) +
+                         " bytes for " + from[i].name +
+                         ", less than the header every serialized structure holds: "
+                         "VK_ERROR_UNKNOWN");
+  SerializedCopies s;
+  s.sizes = sizes;
+  VkDeviceSize total = 0;
+  for (VkDeviceSize size : sizes) {
+    s.offsets.push_back(total);
+    total += alignUp(guardedSize(size), kSerializedAlignment);
+  }
+  RAYSPEC_TRY(
+      s.memory,
+      createBuffer(ctx, total + kSerializedAlignment,
+                   VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT |
+                       VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
+                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                       VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                   MemoryUse::Host, cleanup));
+  const VkDeviceSize base = alignUp(s.memory.address, kSerializedAlignment) - s.memory.address;
+  for (VkDeviceSize& offset : s.offsets) offset += base;
+  RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx, cleanup));
+  for (size_t i = 0; i < from.size(); ++i)
+    guards.add(s.memory.buffer, s.offsets[i], sizes[i],
+               from[i].name + " serialized (" + std::to_string(sizes[i]) +
+                   " bytes, its serialization size)");
+  guards.recordFill(cmd);
+  for (size_t i = 0; i < from.size(); ++i) {
+    VkCopyAccelerationStructureToMemoryInfoKHR copy{
+        VK_STRUCTURE_TYPE_COPY_ACCELERATION_STRUCTURE_TO_MEMORY_INFO_KHR};
+    copy.src = from[i].handle;
+    copy.dst.deviceAddress = s.memory.address + s.offsets[i];
+    copy.mode = VK_COPY_ACCELERATION_STRUCTURE_MODE_SERIALIZE_KHR;
+    ctx.fn.cmdCopyAccelerationStructureToMemory(cmd, &copy);
+  }
+  // The serialized bytes, written as transfers in the build stage, read by
+  // the host.
+  recordMemoryBarrier(cmd, {kBuildStage, VK_ACCESS_TRANSFER_WRITE_BIT},
+                      {VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT});
+  RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd));
+  return s;
+}
 
 Result<std::vector<BuiltStructure>> copyStructures(const VulkanContext& ctx,
                                                    const std::vector<BuiltStructure>& from,

@@ -9,6 +9,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -16,9 +18,47 @@
 #include "vulkan/acceleration_structure.h"
 #include "vulkan/cleanup.h"
 #include "vulkan/context.h"
+#include "vulkan/memory.h"
 #include "vulkan/memory_guards.h"
 
 namespace rayspec {
+
+// Serialized data (the specification's serialized-as-header): driverUUID,
+// the compatibility UUID, then 64-bit sizes (the serialized size, the
+// deserialized size; a top level: the handle count, then the handles).
+constexpr VkDeviceSize kSerializedAlignment = 256;  // of src / dst device addresses
+constexpr VkDeviceSize kDeserializedSizeOffset = 2 * VK_UUID_SIZE + 8;
+constexpr VkDeviceSize kHandleCountOffset = 2 * VK_UUID_SIZE + 16;
+constexpr VkDeviceSize kSerializedHeaderBytes = 2 * VK_UUID_SIZE + 16;  // the two UUIDs, two sizes
+
+struct SerializedHeader {
+  std::array<uint8_t, VK_UUID_SIZE> driver_uuid{}, compatibility_uuid{};
+  uint64_t serialized_size = 0, deserialized_size = 0;
+};
+
+// Each structure serialized into host-visible memory (one buffer, each at a
+// 256-byte aligned offset), at the serialization size the device reported
+// (`sizes`), the bytes guarded after it (R-AS-MEMORY).
+struct SerializedCopies {
+  Buffer memory;
+  std::vector<VkDeviceSize> offsets, sizes;
+  const uint8_t* data(size_t i) const;
+  SerializedHeader header(size_t i) const;
+  VkDeviceSize deserializedSize(size_t i) const;
+};
+
+// The structures serialized (vkCmdCopyAccelerationStructureToMemoryKHR) at
+// the size a query pool reports, readable by the host once this returns; or
+// the Device error (a size smaller than the header).
+Result<SerializedCopies> serializeToHost(const VulkanContext& ctx,
+                                         const std::vector<BuiltStructure>& from,
+                                         MemoryGuards& guards, Cleanup& cleanup);
+
+// Whether vkGetDeviceAccelerationStructureCompatibilityKHR calls the
+// serialized data at version_data (its two UUIDs) compatible.
+bool deviceCallsCompatible(const VulkanContext& ctx, const uint8_t* version_data);
+
+std::vector<VkAccelerationStructureKHR> handlesOf(const std::vector<BuiltStructure>& from);
 
 // The copies of `from` (all of level `type`, built and complete; each copy
 // created as `making` says), in order, made by

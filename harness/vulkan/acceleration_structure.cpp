@@ -15,6 +15,7 @@
 #include "vulkan/memory.h"
 #include "vulkan/sparse_buffer.h"
 #include "vulkan/structure_arena.h"
+#include "vulkan/structure_queries.h"
 #include "vulkan/vk_check.h"
 #include "vulkan/vk_fault_hook.h"
 
@@ -28,12 +29,15 @@ constexpr VkBufferUsageFlags kStorageUsage =
 
 // A structure's buffer and where in it the structure starts: bound whole, or
 // sparsely with the structure across the first page boundary.
-Result<SparseBuffer> storageFor(const VulkanContext& ctx, VkDeviceSize size, bool sparse,
-                                Cleanup& cleanup) {
-  if (sparse) return createSparseBuffer(ctx, guardedSize(size), kStorageUsage, true, cleanup);
+// Host-visible where the host queries it (scene.build.query_command host).
+Result<SparseBuffer> storageFor(const VulkanContext& ctx, VkDeviceSize size,
+                                const StructureMaking& making, Cleanup& cleanup) {
+  if (making.sparse)
+    return createSparseBuffer(ctx, guardedSize(size), kStorageUsage, true, cleanup);
   SparseBuffer whole;
   RAYSPEC_TRY(whole.buffer,
-              createBuffer(ctx, guardedSize(size), kStorageUsage, MemoryUse::Device, cleanup));
+              createBuffer(ctx, guardedSize(size), kStorageUsage,
+                           making.host_visible ? MemoryUse::Host : MemoryUse::Device, cleanup));
   return whole;
 }
 
@@ -61,7 +65,7 @@ Result<VkAccelerationStructureKHR> createStructure(const VulkanContext& ctx,
   const VkAccelerationStructureTypeKHR created = making.createdAs(level);
   RAYSPEC_TRY(const SparseBuffer storage, making.arena
                                               ? making.arena->place(ctx, size, created)
-                                              : storageFor(ctx, size, making.sparse, cleanup));
+                                              : storageFor(ctx, size, making, cleanup));
   guards.add(storage.buffer.buffer, storage.offset, size,
              what + " (" + std::to_string(size) + " bytes)");
   VkAccelerationStructureCreateInfoKHR info{
@@ -183,9 +187,12 @@ void patchAddresses(BlasBuild& b, VkDeviceAddress base) {
   }
 }
 
-// scene.build's flags, and ALLOW_COMPACTION where the structures are compacted.
+// scene.build's flags, and ALLOW_COMPACTION where the structures are
+// compacted or their compacted size is queried.
 VkBuildAccelerationStructureFlagsKHR buildFlags(const AsBuild& build) {
-  return build.flags | (build.copy == AsCopy::Compact ? kBuildAllowCompaction : 0u);
+  const bool compacted =
+      build.copy == AsCopy::Compact || build.queries.asks(StructureQuery::CompactedSize);
+  return build.flags | (compacted ? kBuildAllowCompaction : 0u);
 }
 
 VkAccelerationStructureBuildGeometryInfoKHR buildInfo(
@@ -401,15 +408,16 @@ class SceneBuilder {
     if (scene_.build.command == BuildCommand::Indirect) RAYSPEC_TRY_VOID(placeRangesForIndirect());
     RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx_, cleanup_));
     guards_.recordFill(cmd);
-    RAYSPEC_TRY_VOID(runLevel(cmd, blases_, blas_updates_,
-                              VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-                              [this] { return copyBlases(); }));
+    RAYSPEC_TRY_VOID(runLevel(
+        cmd, blases_, blas_updates_, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+        [this] { return queryBlases(); }, [this] { return copyBlases(); }));
     if (injectedLayoutFault() == LayoutFault::WritesPastSize) guards_.recordOverrun(cmd);
     for (size_t k = 0; k < states_.size(); ++k) writeInstances(*states_[k], instances_[k]);
-    RAYSPEC_TRY_VOID(runLevel(cmd, tlases_, tlas_updates_,
-                              VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
-                                  VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
-                              [this] { return copyTlases(); }));
+    RAYSPEC_TRY_VOID(runLevel(
+        cmd, tlases_, tlas_updates_,
+        VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
+            VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+        [this] { return queryTlases(); }, [this] { return copyTlases(); }));
     RAYSPEC_TRY_VOID(submitAndWait(ctx_, cmd));
     RAYSPEC_TRY_VOID(checkGuards(since_copy_));
     return tlas_structures_;
@@ -417,6 +425,8 @@ class SceneBuilder {
 
   // R-AS-MEMORY: each guard the builds, updates and copies changed.
   const std::vector<std::string>& overruns() const { return overruns_; }
+  // R-AS-QUERY-*, R-AS-SERIAL-*: each answer of scene.build.queries that broke a guarantee.
+  const std::vector<DeviceFinding>& queryFindings() const { return query_findings_; }
 
  private:
   const Scene& first() const { return *states_.front(); }
@@ -455,19 +465,29 @@ class SceneBuilder {
     return {};
   }
 
-  // One level: its builds, then each update in turn, the copy (submitted and
-  // waited on, then the updates after it retargeted to the copies) where
-  // scene.build.order puts it.
+  // Where scene.build.queries asks the level's structures: before the copy,
+  // or once the last update ran (none: never).
+  size_t queryAt(size_t updates) const {
+    if (scene_.build.queries.queries.empty()) return updates + 1;
+    return scene_.build.copy == AsCopy::None ? updates : scene_.updatesBeforeCopy();
+  }
+
+  // One level: its builds, then each update in turn, the queries and the
+  // copy (submitted and waited on, then the updates after it retargeted to
+  // the copies) where scene.build.order puts it.
   Result<void> runLevel(VkCommandBuffer& cmd, const Builds& builds,
                         const std::vector<Builds>& updates, VkPipelineStageFlags next,
+                        const std::function<Result<void>()>& query,
                         const std::function<Result<void>()>& copy) {
     builds.record(ctx_, cmd, next, scene_.build.one_by_one);
     const size_t copy_at =
         scene_.build.copy == AsCopy::None ? updates.size() + 1 : scene_.updatesBeforeCopy();
+    const size_t query_at = queryAt(updates.size());
     for (size_t k = 0; k <= updates.size(); ++k) {
-      if (k == copy_at) {
+      if (k == copy_at || k == query_at) {
         RAYSPEC_TRY_VOID(submitAndWait(ctx_, cmd));
-        RAYSPEC_TRY_VOID(copy());
+        if (k == query_at) RAYSPEC_TRY_VOID(query());
+        if (k == copy_at) RAYSPEC_TRY_VOID(copy());
         RAYSPEC_TRY(cmd, beginCommands(ctx_, cleanup_));
         guards_.recordFill(cmd);  // those of structures the copy made room for
       }
@@ -594,14 +614,40 @@ class SceneBuilder {
     return room;
   }
 
-  // R-AS-COPY: the BLASes replaced by their copies (the instance buffers,
-  // written after, reference the copies).
-  Result<void> copyBlases() {
+  // The BLASes as the instances reference them now.
+  std::vector<BuiltStructure> currentBlases() const {
     std::vector<BuiltStructure> from;
     for (size_t k = 0; k < blases_.blas.size(); ++k) {
       const BlasBuild& b = builds_[blases_.blas[k]];
       from.push_back({b.handle, b.size, blases_.names[k]});
     }
+    return from;
+  }
+
+  // scene.build.queries of the BLASes (vulkan/structure_queries.h).
+  Result<void> queryBlases() {
+    return checkStructureQueries(ctx_, scene_.build.queries, {currentBlases(), false, {}},
+                                 injectedLayoutFault(), guards_, cleanup_, query_findings_);
+  }
+
+  // scene.build.queries of the TLASes, each with the addresses of the
+  // BLASes its instances reference (in the state they were built or last
+  // updated to).
+  Result<void> queryTlases() {
+    QueriedLevel level{tlas_structures_, true, {}};
+    const Scene& state = *states_[std::min(queryAt(updates()), updates())];
+    for (const std::set<uint32_t>& blases : referencedBlases(state)) {
+      std::set<VkDeviceAddress>& addresses = level.referenced.emplace_back();
+      for (uint32_t i : blases) addresses.insert(builds_[i].address);
+    }
+    return checkStructureQueries(ctx_, scene_.build.queries, level, injectedLayoutFault(), guards_,
+                                 cleanup_, query_findings_);
+  }
+
+  // R-AS-COPY: the BLASes replaced by their copies (the instance buffers,
+  // written after, reference the copies).
+  Result<void> copyBlases() {
+    const std::vector<BuiltStructure> from = currentBlases();
     RAYSPEC_TRY(const std::vector<BuiltStructure> to,
                 copyStructures(ctx_, from, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, making_,
                                scene_.build.copy, guards_, cleanup_));
@@ -663,6 +709,7 @@ class SceneBuilder {
   ScratchPlan scratch_;
   MemoryGuards guards_;
   std::vector<std::string> overruns_;
+  std::vector<DeviceFinding> query_findings_;
   std::string since_copy_;  // "after the copy of the top levels": what the last guard check follows
   std::vector<BlasBuild> builds_;
   std::vector<std::vector<BlasBuild>> updates_;  // per update: each BLAS's new geometry
@@ -680,15 +727,18 @@ class SceneBuilder {
 
 namespace {
 
-// One scene's builds (in the arena, if any); its overruns joined to `overruns`.
+// One scene's builds (in the arena, if any); its overruns joined to
+// `overruns`, its query findings to `query_findings`.
 Result<std::vector<BuiltStructure>> buildOnce(const VulkanContext& ctx, const Scene& scene,
                                               VkBuildAccelerationStructureFlagsKHR extra_flags,
                                               StructureArena* arena, Cleanup& cleanup,
                                               std::vector<std::string>& overruns,
+                                              std::vector<DeviceFinding>& query_findings,
                                               const std::string& what = "") {
   SceneBuilder builder(ctx, scene, extra_flags, arena, cleanup);
   RAYSPEC_TRY(std::vector<BuiltStructure> tlases, builder.run());
   for (const std::string& o : builder.overruns()) overruns.push_back(what + o);
+  for (const DeviceFinding& f : builder.queryFindings()) query_findings.push_back(f);
   return tlases;
 }
 
@@ -699,7 +749,10 @@ Result<void> buildDecoy(const VulkanContext& ctx, const Scene& scene,
                         VkBuildAccelerationStructureFlagsKHR extra_flags, StructureArena& arena,
                         std::vector<std::string>& overruns) {
   Cleanup decoy;
-  RAYSPEC_TRY_VOID(buildOnce(ctx, decoyScene(scene), extra_flags, &arena, decoy, overruns,
+  Scene decoy_scene = decoyScene(scene);
+  decoy_scene.build.queries = {};  // the decoy is not queried
+  std::vector<DeviceFinding> unasked;
+  RAYSPEC_TRY_VOID(buildOnce(ctx, decoy_scene, extra_flags, &arena, decoy, overruns, unasked,
                              "the decoy built first in the memory of the structures: "));
   decoy.run();
   arena.rewind();
@@ -741,17 +794,18 @@ Result<void> createOverlays(const VulkanContext& ctx, const StructureArena& aren
 
 Result<std::vector<BuiltStructure>> buildScene(const VulkanContext& ctx, const Scene& scene,
                                                VkBuildAccelerationStructureFlagsKHR extra_flags,
-                                               Cleanup& cleanup,
-                                               std::vector<std::string>& overruns) {
+                                               Cleanup& cleanup, std::vector<std::string>& overruns,
+                                               std::vector<DeviceFinding>& query_findings) {
   overruns.clear();
+  query_findings.clear();
   const StructureStorage storage = scene.build.storage;
   if (storage == StructureStorage::Own)
-    return buildOnce(ctx, scene, extra_flags, nullptr, cleanup, overruns);
+    return buildOnce(ctx, scene, extra_flags, nullptr, cleanup, overruns, query_findings);
   StructureArena arena(cleanup);
   if (storage == StructureStorage::Reused)
     RAYSPEC_TRY_VOID(buildDecoy(ctx, scene, extra_flags, arena, overruns));
   RAYSPEC_TRY(std::vector<BuiltStructure> tlases,
-              buildOnce(ctx, scene, extra_flags, &arena, cleanup, overruns));
+              buildOnce(ctx, scene, extra_flags, &arena, cleanup, overruns, query_findings));
   if (storage == StructureStorage::Reused) RAYSPEC_TRY_VOID(createOverlays(ctx, arena, cleanup));
   return tlases;
 }

@@ -5,6 +5,7 @@
 #include <vulkan/vulkan.h>
 
 #include "case/case.h"
+#include "results/results.h"
 #include "vulkan/built_structure.h"
 #include "vulkan/cleanup.h"
 #include "vulkan/context.h"
@@ -35,22 +36,29 @@ VkFormat vkVertexFormat(VertexFormat f);
 // reused: the decoy scene (structure_arena.h) built there first, waited on
 // and destroyed, the scene built over its memory, then another structure
 // created over each built one and kept, never built (R-AS-CREATE).
+// scene.build.queries asks each level's structures before its copy (or after
+// its last update), each broken guarantee a line of `query_findings`
+// (vulkan/structure_queries.h).
 // Or the Device error.
 Result<std::vector<BuiltStructure>> buildScene(const VulkanContext& ctx, const Scene& scene,
                                                VkBuildAccelerationStructureFlagsKHR extra_flags,
-                                               Cleanup& cleanup,
-                                               std::vector<std::string>& overruns);
+                                               Cleanup& cleanup, std::vector<std::string>& overruns,
+                                               std::vector<DeviceFinding>& query_findings);
 
 class StructureArena;
 
 // How a scene's structures are made (scene.build.generic, scene.build.sparse;
-// arena: where scene.build.storage shared or reused places them, none: each
-// in a buffer of its own).
+// in host-visible memory where the host queries them: scene.build.query_command
+// host; arena: where scene.build.storage shared or reused places them, none:
+// each in a buffer of its own).
 struct StructureMaking {
   GenericLevels generic = GenericLevels::None;
   bool sparse = false;
+  bool host_visible = false;
   StructureArena* arena = nullptr;
-  static StructureMaking of(const AsBuild& build) { return {build.generic, build.sparse}; }
+  static StructureMaking of(const AsBuild& build) {
+    return {build.generic, build.sparse, build.queries.command == QueryCommand::Host};
+  }
   // The type a structure of level `level` (bottom or top) is created with:
   // GENERIC where scene.build.generic names its level.
   VkAccelerationStructureTypeKHR createdAs(VkAccelerationStructureTypeKHR level) const;

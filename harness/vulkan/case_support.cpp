@@ -79,6 +79,14 @@ Result<void> checkBuildSupport(const DeviceInfo& d, const AsBuild& build) {
     return notSupported(
         "scene.build.sparse: the queue family rayspec runs on (the first with compute) lacks "
         "VK_QUEUE_SPARSE_BINDING_BIT");
+  if (build.queries.command == QueryCommand::Host && !d.acceleration_structure_host_commands)
+    return notSupported(
+        "scene.build.query_command host: vkWriteAccelerationStructuresPropertiesKHR needs "
+        "accelerationStructureHostCommands, which the device lacks");
+  if (build.queries.needsMaintenance1() && !d.ray_tracing_maintenance1)
+    return notSupported(
+        "scene.build.queries size, bottom_level_pointers: the device lacks "
+        "VK_KHR_ray_tracing_maintenance1 (rayTracingMaintenance1)");
   if (build.command == BuildCommand::Host)
     return notSupported(
         d.acceleration_structure_host_commands

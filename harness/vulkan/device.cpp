@@ -113,6 +113,8 @@ Result<void> createDevice(VulkanContext& ctx) {
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
   as_on.accelerationStructure = VK_TRUE;
   as_on.accelerationStructureIndirectBuild = ctx.info.acceleration_structure_indirect_build;
+  // scene.build.query_command host (vkWriteAccelerationStructuresPropertiesKHR).
+  as_on.accelerationStructureHostCommands = ctx.info.acceleration_structure_host_commands;
   VkPhysicalDeviceVulkan12Features v12_on{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
   if (!v12.bufferDeviceAddress)
     return deviceError("bufferDeviceAddress not supported: VK_ERROR_FEATURE_NOT_PRESENT");

@@ -38,6 +38,9 @@ Result<DeviceFunctions> loadDeviceFunctions(VkDevice device) {
        &f.getDeviceAccelerationStructureCompatibility, missing);
   load(device, "vkCmdWriteAccelerationStructuresPropertiesKHR",
        &f.cmdWriteAccelerationStructuresProperties, missing);
+  f.writeAccelerationStructuresProperties =
+      reinterpret_cast<PFN_vkWriteAccelerationStructuresPropertiesKHR>(
+          vkGetDeviceProcAddr(device, "vkWriteAccelerationStructuresPropertiesKHR"));
   load(device, "vkCreateRayTracingPipelinesKHR", &f.createRayTracingPipelines, missing);
   load(device, "vkGetRayTracingShaderGroupHandlesKHR", &f.getRayTracingShaderGroupHandles, missing);
   load(device, "vkGetRayTracingShaderGroupStackSizeKHR", &f.getRayTracingShaderGroupStackSize,

@@ -23,6 +23,8 @@ struct DeviceFunctions {
       nullptr;
   PFN_vkCmdWriteAccelerationStructuresPropertiesKHR cmdWriteAccelerationStructuresProperties =
       nullptr;
+  // Called only where accelerationStructureHostCommands is enabled (may be null elsewhere).
+  PFN_vkWriteAccelerationStructuresPropertiesKHR writeAccelerationStructuresProperties = nullptr;
   PFN_vkCreateRayTracingPipelinesKHR createRayTracingPipelines = nullptr;
   PFN_vkGetRayTracingShaderGroupHandlesKHR getRayTracingShaderGroupHandles = nullptr;
   PFN_vkGetRayTracingShaderGroupStackSizeKHR getRayTracingShaderGroupStackSize = nullptr;

@@ -117,12 +117,14 @@ Result<void> runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, 
   // before the trace, across submissions on the one queue).
   StepTimer build_time(r.cost, CostStep::AccelerationBuild);
   std::vector<std::string> overruns;
+  std::vector<DeviceFinding> query_findings;
   RAYSPEC_TRY(const std::vector<BuiltStructure> built,
               buildScene(ctx, c.scene, plan.position_fetch ? kBuildAllowDataAccess : 0u, cleanup,
-                         overruns));
+                         overruns, query_findings));
   std::vector<VkAccelerationStructureKHR> tlases;
   for (const BuiltStructure& t : built) tlases.push_back(t.handle);
   for (const std::string& m : overruns) r.device_findings.push_back({"R-AS-MEMORY", m});
+  r.device_findings.insert(r.device_findings.end(), query_findings.begin(), query_findings.end());
   build_time.stop();
 
   StepTimer layout_time(r.cost, CostStep::Buffers);

@@ -48,6 +48,17 @@ std::optional<VkResult> injectedVkError(const char* call);
 //                      created over a built one zeroes its memory, as a
 //                      vkCreateAccelerationStructureKHR that wrote it would
 //                      (R-AS-CREATE)
+// and the query faults, the answers of scene.build.queries
+// (vulkan/structure_queries.h) given wrong, as a device would give them:
+//   compacted-size-too-large  the compacted size 256 bytes past the size the
+//                      structure was created with (R-AS-QUERY-COMPACTED)
+//   structure-size-too-large  the size query likewise (R-AS-QUERY-SIZE)
+//   query-availability-lost   availability read 0 after the wait
+//                      (R-AS-QUERY-AVAILABILITY)
+//   serialized-uuid-wrong     the serialized header's driverUUID with its
+//                      first byte flipped (R-AS-SERIAL-HEADER)
+//   pointer-count-off  the bottom-level pointers query one more than the
+//                      header's handle count (R-AS-SERIAL-POINTERS)
 #define RAYSPEC_LAYOUT_FAULTS(X)                      \
   X(None, "")                          /* no fault */ \
   X(StrideIgnored, "stride-ignored")   /* tight */    \
@@ -55,7 +66,12 @@ std::optional<VkResult> injectedVkError(const char* call);
   X(PointersReversed, "pointers-reversed")            \
   X(FormatMisread, "vertex-format-misread")           \
   X(WritesPastSize, "build-writes-past-size")         \
-  X(CreationClears, "creation-clears-memory")
+  X(CreationClears, "creation-clears-memory")         \
+  X(CompactedTooLarge, "compacted-size-too-large")    \
+  X(SizeTooLarge, "structure-size-too-large")         \
+  X(AvailabilityLost, "query-availability-lost")      \
+  X(UuidWrong, "serialized-uuid-wrong")               \
+  X(PointerCountOff, "pointer-count-off")
 enum class LayoutFault { RAYSPEC_LAYOUT_FAULTS(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(LayoutFault, RAYSPEC_LAYOUT_FAULTS);
 
