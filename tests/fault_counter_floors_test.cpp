@@ -1,13 +1,17 @@
-// The floor of a counter that intersection or any-hit programs count
-// (Results::counter_floors, model/counter_floors.cpp): a device that runs
-// fewer programs than every legal order offers before the committed hit
-// fails; one that runs them once or again passes; a candidate beyond the
-// committed hit (offered in some orders only) raises no floor.
+// The floor of a counter that intersection or any-hit programs or ray query
+// blocks count (Results::counter_floors, model/counter_floors.cpp): a device
+// that runs fewer programs than every legal order offers before the
+// committed hit fails; one that runs them once or again passes; a candidate
+// beyond the committed hit (offered in some orders only) raises no floor.
+// The any-hit of a box's leading report and a query's candidate blocks are
+// in it: the planted faults ignore-discards-writes and
+// query-candidate-shrinks-interval are caught by the floor alone.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
 #include "compare/compare_results.h"
+#include "fault/planted_fault.h"
 #include "model/model_engine.h"
 #include "parse/parse_case.h"
 #include "plan/plan.h"
@@ -118,6 +122,140 @@ TEST(CounterFloors, ACountAfterAConditionRaisesNoFloor) {
   const Results model = runOnModel(c, derivePlan(c), ModelOptions{});
   ASSERT_TRUE(model.ok()) << model.statusText();
   EXPECT_FALSE(model.counter_floors.count("isect"));
+}
+
+// Two non-opaque boxes along the ray (the near one reported at t 4, the far
+// at t 8); each intersection program's leading statement after its count
+// reports, and the any-hit counts, then ignores the near box's report.
+std::string reportedBoxesText(const std::string& intersection) {
+  return "rules: [R-ISECT-REPORT, R-IGNORE]\n"
+         "description: report floors\n"
+         "scene:\n"
+         "  blas:\n"
+         "    b: [{aabbs: [[-1, -1, -1, 1, 1, 1], [3, -1, -1, 5, 1, 1]], flags: []}]\n"
+         "  instances: [{blas: b}]\n"
+         "rays:\n"
+         "  list: [{origin: [-5, 0.125, 0.0625], direction: [1, 0, 0]}]\n"
+         "  tmin: 0.001\n"
+         "  tmax: 100\n"
+         "pipeline:\n"
+         "  miss: [[count: miss, record: {hit: 0}]]\n"
+         "  hit_groups:\n"
+         "    - intersection: " +
+         intersection +
+         "\n"
+         "      any_hit: [count: ahit, {if: {eq: [primitive_id, 0]}, then: [ignore]}]\n"
+         "      closest_hit: [count: chit, record: [hit, primitive_id]]\n"
+         "outputs:\n"
+         "  counters: [isect, ahit, miss, chit]\n"
+         "  per_ray: [hit, primitive_id]\n";
+}
+
+const char* kLeadingReport = "[count: isect, report: {t: {max: [sphere_near, ray_tmin]}, kind: 1}]";
+
+// The device as the planted fault `name` makes it from the model's own answers.
+Results planted(const std::string& name, const Case& c, const Results& model) {
+  Results d = perfectDevice(c, model);
+  const FaultResult f = plantFault(name, c, derivePlan(c), d, model);
+  EXPECT_TRUE(f.applied) << f.what;
+  return d;
+}
+
+TEST(CounterFloors, AnIgnoredReportBeforeTheCommittedHitRunsItsAnyHit) {
+  const Case c = parsed(reportedBoxesText(kLeadingReport));
+  const Results model = runOnModel(c, derivePlan(c), ModelOptions{});
+  ASSERT_TRUE(model.ok()) << model.statusText();
+  ASSERT_EQ(model.counters.at("ahit"), 2u);
+  // The near box's report (ignored) and the far box's (committed).
+  EXPECT_EQ(model.counter_floors.at("ahit"), 2u);
+  EXPECT_EQ(model.counter_floors.at("isect"), 2u);
+  // Planted: the ignoring any-hit's count is lost; nothing else the case
+  // compares changes (the records and the other counters agree).
+  const Results d = planted("ignore-discards-writes", c, model);
+  EXPECT_EQ(d.counters.at("ahit"), 1u);
+  const Verdict v = compareResults(c, derivePlan(c), d, model);
+  EXPECT_EQ(v.status, Status::Fail) << v.headline();
+  EXPECT_NE(v.headline().find("R-ISECT-REPORT"), std::string::npos) << v.headline();
+  EXPECT_NE(v.headline().find("counter 'ahit': device 1, at least 2"), std::string::npos)
+      << v.headline();
+}
+
+TEST(CounterFloors, AReportThatReadsTheIntervalRaisesNoAnyHitFloor) {
+  // Its t (ray_tmax, the committed t so far) depends on the order: only
+  // the committed report's any-hit is sure.
+  const Case c = parsed(reportedBoxesText(
+      "[count: isect, report: {t: {min: [{max: [sphere_near, ray_tmin]}, ray_tmax]}, kind: 1}]"));
+  const Results model = runOnModel(c, derivePlan(c), ModelOptions{});
+  ASSERT_TRUE(model.ok()) << model.statusText();
+  EXPECT_EQ(model.counter_floors.at("ahit"), 1u);
+}
+
+TEST(CounterFloors, AConditionalReportRaisesNoAnyHitFloorButTheCommittedOne) {
+  const Case c = parsed(reportedBoxesText(
+      "[count: isect, {if: sphere_hit, then: [report: {t: {max: [sphere_near, ray_tmin]}, kind: "
+      "1}]}]"));
+  const Results model = runOnModel(c, derivePlan(c), ModelOptions{});
+  ASSERT_TRUE(model.ok()) << model.statusText();
+  EXPECT_EQ(model.counter_floors.at("ahit"), 1u);
+}
+
+// Three non-opaque triangles along a ray query's ray; its triangle block
+// counts each candidate and confirms none (`confirm`: confirms each).
+std::string queryText(const std::string& block) {
+  return "rules: [R-RQ-CANDIDATES]\n"
+         "description: query floors\n"
+         "scene:\n"
+         "  blas:\n"
+         "    tri: [{triangles: {vertices: [[-5, -5, 0], [5, -5, 0], [0, 5, 0]]}, flags: []}]\n"
+         "  instances:\n"
+         "    - {blas: tri}\n"
+         "    - {blas: tri, transform: {translate: [0, 0, -1]}}\n"
+         "    - {blas: tri, transform: {translate: [0, 0, -2]}}\n"
+         "rays:\n"
+         "  list: [{origin: [0.1, 0.2, 10], direction: [0, 0, -1]}]\n"
+         "  tmin: 0.001\n"
+         "  tmax: 100\n"
+         "pipeline:\n"
+         "  raygen:\n"
+         "    - ray_query:\n"
+         "        triangle: " +
+         block +
+         "\n"
+         "        after: [record: {value: committed.type}]\n"
+         "outputs:\n"
+         "  counters: [candidates]\n"
+         "  per_ray: [value]\n";
+}
+
+TEST(CounterFloors, AQueryOffersEveryCandidateBeforeItsCommittedHit) {
+  const Case c = parsed(queryText("[count: candidates]"));
+  const Results model = runOnModel(c, derivePlan(c), ModelOptions{});
+  ASSERT_TRUE(model.ok()) << model.statusText();
+  EXPECT_EQ(model.counter_floors.at("candidates"), 3u) << "none committed: all three";
+  // Planted: the interval shrinks to the first candidate returned; nothing
+  // is committed either way, so only the count shows it.
+  const Results d = planted("query-candidate-shrinks-interval", c, model);
+  EXPECT_EQ(d.counters.at("candidates"), 1u);
+  const Verdict v = compareResults(c, derivePlan(c), d, model);
+  EXPECT_EQ(v.status, Status::Fail) << v.headline();
+  EXPECT_NE(v.headline().find("R-RQ-CANDIDATES"), std::string::npos) << v.headline();
+  EXPECT_NE(v.headline().find("device 1, at least 3"), std::string::npos) << v.headline();
+}
+
+TEST(CounterFloors, AConfirmingQueryOffersOnlyWhatLiesBeforeItsCommit) {
+  // Near to far, the first is confirmed: the others lie beyond it (offered
+  // in some orders only).
+  const Case c = parsed(queryText("[count: candidates, confirm]"));
+  const Results model = runOnModel(c, derivePlan(c), ModelOptions{});
+  ASSERT_TRUE(model.ok()) << model.statusText();
+  EXPECT_EQ(model.counter_floors.at("candidates"), 1u);
+}
+
+TEST(CounterFloors, AQueryBlockThatMayEndTheLoopRaisesNoFloor) {
+  const Case c = parsed(queryText("[count: candidates, terminate_query]"));
+  const Results model = runOnModel(c, derivePlan(c), ModelOptions{});
+  ASSERT_TRUE(model.ok()) << model.statusText();
+  EXPECT_FALSE(model.counter_floors.count("candidates"));
 }
 
 }  // namespace

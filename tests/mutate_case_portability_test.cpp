@@ -2,9 +2,10 @@
 // of a new case writer (tests/data/not-portable: an aabb block that
 // generates without testing its box, a candidate count declared exact, an
 // any-hit count declared exact on a strip with edge rays) are each not
-// portable, with the declaration to change at its line; each fixed
-// (tests/data/portable) is portable; and the diagnosis and the message of
-// each kind of legal device (mutate/not_portable_cause.h).
+// portable, with the declaration to change at its line (an intersection
+// program of a second hit group that reports without testing is blamed at
+// its own); each fixed (tests/data/portable) is portable; and the diagnosis
+// and the message of each kind of legal device (mutate/not_portable_cause.h).
 #include <gtest/gtest.h>
 
 #include "library/case_discovery.h"
@@ -60,6 +61,22 @@ TEST(CasePortability, AnAabbBlockThatGeneratesWithoutTestingItsBoxIsNotPortable)
   EXPECT_NE(text.find("would fail ray 0 because R-RQ-COMMIT: per-ray field 'value1'"),
             std::string::npos)
       << text;
+}
+
+// The statement blamed is the one that reported for the box the ray misses
+// (the device's run notes it: Results::missed_box_reports), not the first
+// report of the pipeline (hit group 0's, which tests its box).
+TEST(CasePortability, TheReportMadeForTheMissedBoxIsBlamed) {
+  std::string text;
+  const std::vector<NotPortable> problems =
+      problemsOf("not-portable/box-report-in-second-group.yaml", &text);
+  ASSERT_EQ(problems.size(), 1u) << text;
+  const NotPortable& p = problems[0];
+  EXPECT_TRUE(hasDevice(p, "aabb-neighbours")) << text;
+  EXPECT_EQ(p.ray, 0) << text;
+  EXPECT_EQ(p.declaration.line, 36) << text;
+  EXPECT_EQ(p.declaration.field, "pipeline.hit_groups[1].intersection[0].report") << text;
+  EXPECT_NE(p.change.find("without testing that the ray crosses its box"), std::string::npos);
 }
 
 TEST(CasePortability, ACandidateCountDeclaredExactIsNotPortable) {

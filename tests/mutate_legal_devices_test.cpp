@@ -369,5 +369,76 @@ TEST(LegalDevices, ARayNearlyInATrianglesPlaneMayHitItAnywhereAcross) {
   EXPECT_EQ(compareResults(c, plan, missed, model).status, Status::Fail);
 }
 
+// The counter floors (model/counter_floors.cpp) hold on every legal device:
+// a box's leading report's any-hit before the committed hit, a ray query's
+// blocks for the candidates before its commit. Non-opaque boxes (the near
+// box's report ignored, the far one's committed), and three triangles
+// under a ray query whose block counts (and confirms, or not).
+const char* kReportedBoxes = R"(rules: [R-ISECT-REPORT]
+description: reports before the committed hit
+scene:
+  blas:
+    b: [{aabbs: [[-1, -1, -1, 1, 1, 1], [3, -1, -1, 5, 1, 1]], flags: []}]
+  instances: [{blas: b}]
+rays:
+  list: [{origin: [-5, 0.125, 0.0625], direction: [1, 0, 0]}]
+  tmin: 0.001
+  tmax: 100
+pipeline:
+  miss: [[record: {hit: 0}]]
+  hit_groups:
+    - intersection: [count: isect, report: {t: {max: [sphere_near, ray_tmin]}, kind: 1}]
+      any_hit: [count: ahit, {if: {eq: [primitive_id, 0]}, then: [ignore]}]
+      closest_hit: [record: [hit, primitive_id]]
+outputs:
+  counters: [isect, ahit]
+  per_ray: [hit, primitive_id]
+)";
+
+std::string queriedTriangles(const std::string& block) {
+  return R"(rules: [R-RQ-CANDIDATES]
+description: a query's candidates before its commit
+scene:
+  blas:
+    tri: [{triangles: {vertices: [[-5, -5, 0], [5, -5, 0], [0, 5, 0]]}, flags: []}]
+  instances:
+    - {blas: tri}
+    - {blas: tri, transform: {translate: [0, 0, -1]}}
+    - {blas: tri, transform: {translate: [0, 0, -2]}}
+rays:
+  list: [{origin: [0.1, 0.2, 10], direction: [0, 0, -1]}]
+  tmin: 0.001
+  tmax: 100
+pipeline:
+  raygen:
+    - ray_query:
+        triangle: )" +
+         block + R"(
+        after: [record: {value: committed.type}]
+outputs:
+  counters: [candidates]
+  per_ray: [value]
+)";
+}
+
+TEST(LegalDevices, NoLegalDeviceFallsBelowTheCounterFloors) {
+  size_t applied = 0;  // devices that differ from the model (a query confirming none: none)
+  for (const std::string& text :
+       {std::string(kReportedBoxes), queriedTriangles("[count: candidates]"),
+        queriedTriangles("[count: candidates, {if: {eq: [candidate.instance_id, 1]}, then: "
+                         "[confirm]}]")}) {
+    const Case c = parseInline(text);
+    const Plan plan = derivePlan(c);
+    const Results model = runOnModel(c, plan, ModelOptions{ModelTier::Exact, 1});
+    ASSERT_TRUE(model.ok()) << model.statusText();
+    ASSERT_FALSE(model.counter_floors.empty()) << text;
+    for (const LegalDevice& d : judgeLegalDevices(c, plan, model, 1)) {
+      applied += d.applied;
+      EXPECT_FALSE(d.false_alarm) << d.name << ": " << d.headline << "\n" << text;
+    }
+  }
+  EXPECT_GE(applied, 4u) << "other orders (and runs) than the model's";
+}
+
 }  // namespace
 }  // namespace rayspec

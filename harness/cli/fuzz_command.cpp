@@ -74,11 +74,20 @@ Subcommand addFuzzCommand(CLI::App& app) {
       "Write the cases of --cases seeds under OUT/cases and stop: for a device elsewhere "
       "(tools/pack-device.sh with PACK_CASES=OUT/cases), judged here by --device-results");
   generate_only->excludes(minutes);
-  fuzz->add_option("--device-results", o.run.device_results,
-                   "Judge the device bundles a `rayspec run` of the same seeds' cases saved in "
-                   "this folder (elsewhere, as run --device-results) instead of running a device")
-      ->check(CLI::ExistingDirectory)
-      ->excludes(generate_only);
+  auto* device_results =
+      fuzz->add_option("--device-results", o.run.device_results,
+                       "Judge the device bundles a `rayspec run` of the same seeds' cases saved "
+                       "in this folder (elsewhere, as run --device-results) instead of running a "
+                       "device; with --saved-cases")
+          ->check(CLI::ExistingDirectory)
+          ->excludes(generate_only);
+  auto* saved = fuzz->add_option("--saved-cases", o.saved_cases,
+                                 "The cases folder that device run ran (--generate-only's "
+                                 "OUT/cases, as packed): its texts are judged, never the cases "
+                                 "this build's generator makes from the seeds")
+                    ->check(CLI::ExistingDirectory)
+                    ->needs(device_results);
+  device_results->needs(saved);
   fuzz->add_flag("--fault-matrix", o.fault_matrix,
                  "Plant every rule-breaking fault in each passing case's device results until a "
                  "case finds it: OUT/fault-matrix.txt (fault, rules, found, first case)")

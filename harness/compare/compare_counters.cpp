@@ -33,34 +33,66 @@ void checkAgainstRecords(const Case& c, const std::string& name, const CounterSo
           " (the counter and the records disagree)"));
 }
 
-// Whether an intersection program of the case counts `name` (else an any-hit does).
-bool countedInIntersection(const Case& c, const std::string& name) {
+// Whether a `count` of `name` stands in a program.
+bool countsIn(const Program& p, const std::string& name) {
   bool counted = false;
-  for (const HitGroup& g : c.pipeline.hit_groups)
-    if (g.intersection)
-      walkStatements(*g.intersection, [&](const Stmt& s) {
-        counted = counted || (s.kind == Stmt::Kind::Count && s.counter == name);
-      });
+  walkStatements(p, [&](const Stmt& s) {
+    counted = counted || (s.kind == Stmt::Kind::Count && s.counter == name);
+  });
   return counted;
 }
 
-// The model's floor (Results::counter_floors): in any order, with any
-// duplicates, a device runs the intersection program of each box a clear
-// ray enters before its committed hit (R-AABB-CONS) and the any-hit of each
-// non-opaque triangle hit there (R-AHIT-CLOSEST), each counting its leading
-// counts. Checked whatever the counter's mode; rays with undefined behaviour
-// may move it anywhere (`undefined`: none checked).
+// Whether a ray_query's candidate block of any stage counts `name`.
+bool countedInQueryBlock(const Case& c, const std::string& name) {
+  bool counted = false;
+  const auto scan = [&](const Program& p) {
+    walkStatements(p, [&](const Stmt& s) {
+      if (s.kind == Stmt::Kind::Candidates) counted = counted || countsIn(s.then_, name);
+    });
+  };
+  const Pipeline& p = c.pipeline;
+  scan(p.raygen);
+  for (const Program& m : p.miss) scan(m);
+  for (const Program& k : p.callables) scan(k);
+  for (const HitGroup& g : p.hit_groups)
+    for (const std::optional<Program>* h : {&g.closest_hit, &g.any_hit, &g.intersection})
+      if (*h) scan(**h);
+  return counted;
+}
+
+// The rules a count below the floor breaks: where `name` is counted.
+std::vector<std::string> floorRules(const Case& c, const std::string& name) {
+  if (countedInQueryBlock(c, name)) return {"R-RQ-CANDIDATES"};
+  bool boxes = false;
+  for (const HitGroup& g : c.pipeline.hit_groups) {
+    if (g.intersection && countsIn(*g.intersection, name)) return {"R-AABB-CONS"};
+    boxes = boxes || g.intersection.has_value();
+  }
+  if (boxes) return {"R-AHIT-CLOSEST", "R-ISECT-REPORT"};
+  return {"R-AHIT-CLOSEST"};
+}
+
+// The model's floor (Results::counter_floors, model/counter_floors.cpp): in
+// any order, with any duplicates, a device runs the intersection program of
+// each box a clear ray enters before its committed hit (R-AABB-CONS), the
+// any-hit of each non-opaque triangle hit there and of a non-opaque box's
+// leading report there (R-AHIT-CLOSEST, R-ISECT-REPORT), and a ray query's
+// blocks for each such candidate (R-RQ-CANDIDATES), each counting its
+// leading counts. Checked whatever the counter's mode; rays with undefined
+// behaviour may move it anywhere (`undefined`: none checked).
 bool belowFloor(const Case& c, const std::string& name, uint64_t d, const Results& model,
                 Verdict& v) {
   const auto it = model.counter_floors.find(name);
   if (it == model.counter_floors.end() || d >= it->second) return false;
-  const std::string own = countedInIntersection(c, name) ? "R-AABB-CONS" : "R-AHIT-CLOSEST";
-  v.add(findingOf(Status::Fail, findingRule({own}, c.rules, own),
+  const std::vector<std::string> rules = floorRules(c, name);
+  v.add(findingOf(Status::Fail, findingRule(rules, c.rules, rules.front()),
                   "counter '" + name + "': device " + std::to_string(d) + ", at least " +
                       std::to_string(it->second) +
                       " (the leading counts of the intersection programs of the boxes the "
-                      "clear rays enter, and of the any-hits of the non-opaque triangles they "
-                      "hit, before the committed hit: run in every order)"));
+                      "clear rays enter, of the any-hits of the non-opaque triangles they hit "
+                      "and of the non-opaque boxes' leading reports, and of the ray query "
+                      "blocks of those candidates, before the committed hit: run in every "
+                      "order)"));
   return true;
 }
 

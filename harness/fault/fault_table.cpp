@@ -146,6 +146,10 @@ std::vector<FaultImpl> programMutations() {
        nullptr, reportKindDropped},
       {"closest-any-hit-skipped", K::CaseMutation,
        "any-hit never runs (the closest hit's included)", nullptr, closestAnyHitSkipped},
+      {"ignore-discards-writes", K::CaseMutation,
+       "an any-hit that ignores its candidate loses its counts and record writes made before "
+       "the ignore (as a fragment discard)",
+       nullptr, ignoreDiscardsWrites},
       {"unused-any-hit-ignores", K::CaseMutation,
        "a hit group without any-hit (or all-zero) ignores candidates", nullptr,
        unusedAnyHitIgnores},
@@ -377,6 +381,9 @@ std::vector<FaultImpl> rayQueryMutations() {
        nullptr, queryConfirmIgnored},
       {"query-generate-ignored", K::CaseMutation, "rayQueryGenerateIntersectionEXT commits nothing",
        nullptr, queryGenerateIgnored},
+      {"query-candidate-shrinks-interval", K::CaseMutation,
+       "a ray query's interval shrinks to each candidate it returns, committed or not", nullptr,
+       queryCandidateShrinksInterval},
       {"query-break-loses-commit", K::CaseMutation,
        "a ray query whose loop a break leaves before rayQueryProceedEXT returns false has "
        "nothing committed",

@@ -119,6 +119,16 @@ std::string closestAnyHitSkipped(Case& c, ModelOptions&) {
   return describeCount(n, "any-hit shaders never run");
 }
 
+std::string ignoreDiscardsWrites(Case& c, ModelOptions& o) {
+  size_t n = 0;
+  for (const HitGroup& g : c.pipeline.hit_groups)
+    if (g.any_hit)
+      walkStatements(*g.any_hit, [&](const Stmt& s) { n += s.kind == Stmt::Kind::Ignore; });
+  if (!n) return "";
+  o.faults.ignore_discards_writes = true;
+  return describeCount(n, "ignores in any-hit that discard what the invocation wrote before");
+}
+
 std::string unusedAnyHitIgnores(Case& c, ModelOptions&) {
   size_t n = 0;
   for (HitGroup& g : c.pipeline.hit_groups)

@@ -111,6 +111,13 @@ std::string queryGenerateIgnored(Case& c, ModelOptions& o) {
   return what;
 }
 
+std::string queryCandidateShrinksInterval(Case& c, ModelOptions& o) {
+  const size_t n = countStatements(c, Stmt::Kind::RayQuery);
+  if (!n) return "";
+  o.faults.rq_candidate_shrinks_interval = true;
+  return describeCount(n, "ray queries whose interval shrinks to each candidate they return");
+}
+
 // Ray flags come from the case's rays as well: every query may terminate on
 // its first hit. An inlined trace's candidates come far to near (a legal
 // order), so that what terminates is not the closest: near to far, the

@@ -12,6 +12,7 @@
 #include "fuzz/finding_report.h"
 #include "fuzz/fuzz_tally.h"
 #include "fuzz/generate_case.h"
+#include "fuzz/saved_cases.h"
 #include "mutate/fault_matrix.h"
 #include "reduce/reduce_case.h"
 #include "report/case_journal.h"
@@ -23,14 +24,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The case of `seed` written under OUT/cases.
+// The case of `seed` written under OUT/cases: generated here, or with
+// --saved-cases the text the saved device run ran.
 Result<GeneratedCase> writeCase(const FuzzOptions& opt, uint64_t seed) {
-  const GeneratedCase g = generateCase(seed, opt.allowed);
+  Result<GeneratedCase> made =
+      opt.saved_cases.empty()
+          ? Result<GeneratedCase>(generateCase(seed, opt.allowed))
+          : savedCase(opt.saved_cases, opt.run.device_results, seed, opt.allowed);
+  if (!made) return made;
+  const GeneratedCase& g = *made;
   const fs::path file = fs::path(opt.out) / "cases" / (g.name + ".yaml");
   std::error_code ec;
   fs::create_directories(file.parent_path(), ec);
   RAYSPEC_TRY_VOID(writeWholeFile(file.string(), g.yaml));
-  return g;
+  return made;
 }
 
 // Keeps the first case of a signature: case.yaml and report.md.
@@ -92,14 +99,17 @@ bool runBatch(const FuzzOptions& opt, const FuzzInputs& in, size_t index, uint64
   std::map<uint64_t, std::set<std::string>> features;
   for (uint64_t seed = first; seed < first + count; ++seed) {
     const Result<GeneratedCase> g = writeCase(opt, seed);
+    ++tally.generated;
     if (!g) {
       std::fprintf(stderr, "rayspec fuzz: %s\n", g.error().format().c_str());
-      return false;
+      if (opt.saved_cases.empty()) return false;
+      ++tally.unjudged;  // that seed's saved case: the others are judged
+      continue;
     }
     run.filters.push_back(g->name);
     features[seed] = g->features;
-    ++tally.generated;
   }
+  if (run.filters.empty()) return true;  // (no filter would run every case)
   const int status = runCases(run, opt.check);
   if (status >= 128 || interruptSignal()) return false;
   const auto journal = readJournal(run.out);
@@ -214,7 +224,7 @@ int runFuzz(const FuzzOptions& opt) {
   std::printf("%s", tally.text().c_str());
   if (matrix) std::printf("%s", matrix->text().substr(0, matrix->text().find('\n') + 1).c_str());
   if (interruptSignal()) return 128 + interruptSignal();
-  if (tally.run == 0) return kExitSetup;
+  if (tally.run == 0 || tally.unjudged) return kExitSetup;
   return tally.findingCases(false) == 0 ? 0 : 1;
 }
 

@@ -34,6 +34,10 @@ struct FuzzOptions {
   bool fault_matrix = false;   // --fault-matrix: OUT/fault-matrix.txt
   GeneratorFeatures allowed;   // --without: device features the cases leave out
   RunOptions run;              // the device, the model, --through, --plant-fault, --device-results
+  // --saved-cases (with --device-results): the cases folder the saved device
+  // run ran (--generate-only's OUT/cases), whose texts are judged
+  // (fuzz/saved_cases.h) instead of the generator's here.
+  std::string saved_cases;
   // Each generated case held to every legal device before it runs (as `rayspec
   // run` holds a case outside the library): a case one would fail is refused
   // ("not-portable"), never a finding. None: unchecked.
@@ -41,8 +45,10 @@ struct FuzzOptions {
 };
 
 // 0: nothing found but known classes (or, with --generate-only, the cases
-// written); 1: new findings (OUT/fuzz.txt lists them); 2: bad options or
-// nothing could run; 128 + a signal that stopped it.
+// written); 1: new findings (OUT/fuzz.txt lists them); 2: bad options,
+// nothing could run, or a seed's saved case missing or not the one its
+// bundle ran (each named on stderr; the other seeds judged); 128 + a signal
+// that stopped it.
 int runFuzz(const FuzzOptions& opt);
 
 }  // namespace rayspec

@@ -114,6 +114,10 @@ std::string FuzzTally::text() const {
                 "minute\n",
                 generated, run, refused, seconds, seconds > 0 ? 60.0 * double(run) / seconds : 0.0);
   t += line;
+  if (unjudged)
+    t += "not judged: " + std::to_string(unjudged) +
+         " seeds whose saved case is missing or not the text their bundle ran (stderr names "
+         "each)\n";
   t += "statuses:";
   for (const auto& [name, n] : statuses) t += " " + name + " " + std::to_string(n);
   t += "\nrefused by rule:";

@@ -31,6 +31,7 @@ struct FuzzTally {
   size_t generated = 0, run = 0;
   std::map<std::string, size_t> statuses;  // by status name
   size_t refused = 0;
+  size_t unjudged = 0;  // --saved-cases: seeds whose saved case is missing or not the one run
   std::map<std::string, size_t> refusals;  // by rule of the refusing finding
   struct Group {
     FuzzSignature signature;

@@ -73,6 +73,16 @@ void HitProtocol::runIntersection(Traversal& tr, const ModelCandidate& cand, siz
 
 Flow HitProtocol::runAnyHit(const CProgram& p, StageEnv& a, const HitView& hv,
                             uint32_t geometry_flags) {
+  if (!sh_.fault_seam.ignoreDiscardsWrites()) return runAnyHitRepeated(p, a, hv, geometry_flags);
+  // Planted: an ignoring invocation's writes are lost.
+  const LaunchState::Saved before = st_.save();
+  const Flow f = runAnyHitRepeated(p, a, hv, geometry_flags);
+  if (f == Flow::Ignore) st_.restore(before);
+  return f;
+}
+
+Flow HitProtocol::runAnyHitRepeated(const CProgram& p, StageEnv& a, const HitView& hv,
+                                    uint32_t geometry_flags) {
   st_.markAnyHit(hv);
   const Flow first = interp_.exec(p, a);
   const AnyHitRepeat repeat = sh_.any_hit_repeat;
@@ -144,16 +154,35 @@ void HitProtocol::commitReport(const CStmt& s, StageEnv& env, Traversal& tr, con
   env.tmax_view = t;
 }
 
+// A legal device's conservative AABB test: a report or generate for a box
+// the model's own ray misses (mutate/not_portable_cause.cpp names it).
+void HitProtocol::noteMissedBox(const CStmt& s, const Traversal& tr) const {
+  if (!tr.cur || !tr.cur->missed || !s.src) return;
+  if (sh_.fault_seam.aabbNeighboursRun() || sh_.fault_seam.nearBoxesOffered())
+    st_.missedBoxReport(s.src->loc);
+}
+
+// Exact tier: the t of a box's leading report, wherever it lies (the
+// counter floors' any-hit of it, counter_floors.cpp).
+void HitProtocol::noteLeadReport(const CStmt& s, const StageEnv& env, Traversal& tr,
+                                 float t) const {
+  if (!tr.lead_reports || !tr.cur_group || &s != tr.cur_group->leading_report) return;
+  const double err = reportsBoundedRoot(s, env) ? sphereRootError(s, *env.hit, *env.ray) : 0.0;
+  tr.lead_reports->push_back({tr.cur_index, static_cast<double>(t), err});
+}
+
 Flow HitProtocol::report(const CStmt& s, StageEnv& env) {
   Traversal* tr = env.traversal;
   if (!tr || !tr->cur) return Flow::Continue;
   const Val tv = interp_.eval(s.t, env);
   const float t = s.t.type == ValueType::Uint ? static_cast<float>(tv.u) : tv.f[0];
   const uint32_t kind = interp_.eval(s.hit_kind, env).u;
+  noteLeadReport(s, env, *tr, t);
   Val attr;
   if (s.has_attribute) attr = interp_.eval(s.attribute, env);
   bool accepted = false;
   if (reportInside(s, env, *tr, t)) {
+    noteMissedBox(s, *tr);
     HitView hv = *env.hit;
     setHit(hv, t, kind, attr.f[0], attr.f[1]);
     for (const CAssign& a : s.assigns)

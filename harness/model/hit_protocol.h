@@ -57,6 +57,12 @@ class HitProtocol {
  private:
   // Whether a reported t becomes a candidate hit (report's first step).
   bool reportInside(const CStmt& s, StageEnv& env, Traversal& tr, float t);
+  void noteMissedBox(const CStmt& s, const Traversal& tr) const;
+  // runAnyHit's run, and again as AnyHitRepeat says.
+  Flow runAnyHitRepeated(const CProgram& p, StageEnv& a, const HitView& hv,
+                         uint32_t geometry_flags);
+  // Exact tier: notes a box's leading report (Traversal::lead_reports).
+  void noteLeadReport(const CStmt& s, const StageEnv& env, Traversal& tr, float t) const;
   // An accepted report committed: the hit hv at t, its kind (report's last step).
   void commitReport(const CStmt& s, StageEnv& env, Traversal& tr, const HitView& hv, float t,
                     uint32_t kind);

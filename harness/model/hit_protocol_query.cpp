@@ -2,6 +2,7 @@
 // block runs in the query's frame; confirm, generate and terminate_query
 // act on the traversal deciding it (R-RQ-COMMIT, R-RQ-TERMINATE), and a
 // break out of its loop ends it.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -45,6 +46,8 @@ void HitProtocol::runQueryCandidate(Traversal& tr, const ModelCandidate& cand, s
     tr.stop = true;
     if (sh_.fault_seam.queryBreakLosesCommit()) tr.best = Committed{};
   }
+  // Planted: the interval shrinks to the candidate returned, committed or not.
+  if (sh_.fault_seam.queryCandidateShrinksInterval()) tr.tmax_cur = std::min(tr.tmax_cur, cand.t);
   tr.cur = nullptr;
   q.tr = outer_tr;
   q.cand = outer_cand;
@@ -93,6 +96,7 @@ void HitProtocol::generate(const CStmt& s, StageEnv& env) {
     return;
   }
   if (sh_.fault_seam.queryGenerateIgnored()) return;
+  noteMissedBox(s, tr);
   if (tr.reports) tr.reports->push_back({tr.cur_index, t});
   const HitView& hv = q->cand_view;
   tr.best = {true, static_cast<double>(t), hv.instance, hv.geometry, hv.primitive, 0, 0, 0};

@@ -60,7 +60,7 @@ void LaunchState::record(int idx, const Val& v, ValueType t) {
 }
 
 LaunchState::Saved LaunchState::save() const {
-  Saved s{counters, {}, error};
+  Saved s{counters, {}, error, ray_floors};
   if (rec) s.record.assign(rec, rec + recordWords());
   return s;
 }
@@ -68,6 +68,7 @@ LaunchState::Saved LaunchState::save() const {
 void LaunchState::restore(const Saved& s) {
   counters = s.counters;
   error = s.error;
+  ray_floors = s.ray_floors;
   if (rec) std::copy(s.record.begin(), s.record.end(), rec);
 }
 

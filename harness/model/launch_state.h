@@ -67,6 +67,18 @@ struct LaunchState {
     endless_restarts.push_back(place + what);
   }
 
+  // A legal device with a conservative AABB test (aabb-neighbours,
+  // aabb-near): the statements that reported (or generated) inside the
+  // interval for a box the model's own ray misses, each once, in the order
+  // first made (Results::missed_box_reports).
+  std::vector<SourceLoc> missed_box_reports;
+  void missedBoxReport(const SourceLoc& at) {
+    for (const SourceLoc& o : missed_box_reports)
+      if (o.file == at.file && o.line == at.line && o.column == at.column && o.field == at.field)
+        return;
+    missed_box_reports.push_back(at);
+  }
+
   // The launch ray now.
   uint32_t* records = nullptr;  // ray i's record at records + i * recordWords()
   uint32_t* rec = nullptr;      // this launch ray's record
@@ -103,11 +115,14 @@ struct LaunchState {
     for (int i : k.counters) counters[i] += 1;
   }
 
-  // What a sandbox keeps: the counters, the launch's record and the error.
+  // What a sandbox keeps: the counters, the launch's record, the error, and
+  // the launch ray's floors so far (a what-if run's nested queries count
+  // none).
   struct Saved {
     std::vector<uint64_t> counters;
     std::vector<uint32_t> record;
     std::string error;
+    std::vector<uint64_t> ray_floors;
   };
   Saved save() const;
   void restore(const Saved& s);

@@ -8,6 +8,7 @@
 #include <memory>
 #include <stdexcept>
 #include <thread>
+#include <tuple>
 
 #ifdef __linux__
 #include <sys/mman.h>
@@ -255,6 +256,18 @@ void keepWidestPerRay(std::vector<TBound>& bounds) {
                bounds.end());
 }
 
+// Each place once, in the order of the case file (whichever thread met it first).
+void keepOnceInFileOrder(std::vector<SourceLoc>& at) {
+  const auto key = [](const SourceLoc& l) {
+    return std::tie(l.file, l.line, l.column, l.field);
+  };
+  std::sort(at.begin(), at.end(),
+            [&](const SourceLoc& a, const SourceLoc& b) { return key(a) < key(b); });
+  at.erase(std::unique(at.begin(), at.end(),
+                       [&](const SourceLoc& a, const SourceLoc& b) { return key(a) == key(b); }),
+           at.end());
+}
+
 void gatherMachines(const std::vector<std::unique_ptr<Machine>>& machines, const Plan& plan,
                     Results& r) {
   for (auto& m : machines) {
@@ -275,6 +288,7 @@ void gatherMachines(const std::vector<std::unique_ptr<Machine>>& machines, const
       if (std::find(r.order_dependent.begin(), r.order_dependent.end(), o) ==
           r.order_dependent.end())
         r.order_dependent.push_back(o);
+    for (const SourceLoc& at : m->state().missed_box_reports) r.missed_box_reports.push_back(at);
     for (const std::string& o : m->state().endless_restarts)
       if (std::find(r.endless_restarts.begin(), r.endless_restarts.end(), o) ==
           r.endless_restarts.end())
@@ -288,6 +302,7 @@ void gatherMachines(const std::vector<std::unique_ptr<Machine>>& machines, const
   keepWidestPerRay(r.t_bounds);
   keepWidestPerRay(r.object_origin_bounds);
   keepWidestPerRay(r.position_bounds);
+  keepOnceInFileOrder(r.missed_box_reports);
 }
 
 // The empty results of the model's run of c: names, size, counters at 0.

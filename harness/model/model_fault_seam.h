@@ -69,10 +69,14 @@ class ModelFaultSeam {
   bool queryCustomIndexIsInstanceId() const {  // R-RQ-VALUES
     return f_.rq_custom_index_is_instance_id;
   }
-  bool queryCommitKeepsInterval() const { return f_.rq_commit_keeps_interval; }      // R-RQ-COMMIT
-  bool queryConfirmOnlyFirst() const { return f_.rq_confirm_only_first; }            // R-RQ-COMMIT
-  bool queryCandidateTypeSwapped() const { return f_.rq_candidate_type_swapped; }    // R-RQ-VALUES
-  bool queryFrontFaceInverted() const { return f_.rq_front_face_inverted; }          // R-RQ-VALUES
+  bool queryCommitKeepsInterval() const { return f_.rq_commit_keeps_interval; }    // R-RQ-COMMIT
+  bool queryConfirmOnlyFirst() const { return f_.rq_confirm_only_first; }          // R-RQ-COMMIT
+  bool queryCandidateTypeSwapped() const { return f_.rq_candidate_type_swapped; }  // R-RQ-VALUES
+  bool queryFrontFaceInverted() const { return f_.rq_front_face_inverted; }        // R-RQ-VALUES
+  bool queryCandidateShrinksInterval() const {  // R-RQ-CANDIDATES
+    return f_.rq_candidate_shrinks_interval;
+  }
+  bool ignoreDiscardsWrites() const { return f_.ignore_discards_writes; }            // R-IGNORE
   bool queryBreakLosesCommit() const { return f_.rq_break_loses_commit; }            // R-RQ-COMMIT
   bool queryFunctionGetsCopy() const { return f_.rq_function_gets_copy; }            // R-RQ-COMMIT
   bool queryRestartKeepsCommitted() const { return f_.rq_restart_keeps_committed; }  // R-RQ-INIT

@@ -109,6 +109,13 @@ struct ModelFaults {
   bool rq_restart_keeps_committed = false;
   bool rq_step_wrong_query = false;
   bool rq_object_ray_world = false;
+  // R-RQ-CANDIDATES broken: the query's interval shrinks to each candidate it
+  // returns, committed or not, so candidates beyond it are never returned.
+  bool rq_candidate_shrinks_interval = false;
+  // R-IGNORE broken: an any-hit that ignores its candidate loses what it
+  // wrote before the ignore (counters, records), as if ignoreIntersectionEXT
+  // discarded the invocation as a fragment's discard may.
+  bool ignore_discards_writes = false;
   // R-WATERTIGHT not met (a "should"): every trace through a shared edge or
   // vertex passes between its triangles, where that changes the answer.
   bool pass_between_edges = false;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "model/order_dependence.h"
+#include "program/builtins.h"
 #include "program/locals.h"
 #include "program/payload_words.h"
 #include "program/walk_program.h"
@@ -310,6 +311,42 @@ std::vector<int> leadingCounts(const CProgram& p) {
   return counters;
 }
 
+namespace {
+
+bool readsTmax(const CExpr& e) {
+  if (e.kind == Expr::Kind::Builtin && e.builtin == kBiTmax) return true;
+  return std::any_of(e.args.begin(), e.args.end(), readsTmax);
+}
+
+bool mayEndQuery(const CProgram& p) {
+  for (const CStmt& s : p) {
+    switch (s.kind) {
+      case Stmt::Kind::Break:
+      case Stmt::Kind::Return:
+      case Stmt::Kind::TerminateQuery:
+      case Stmt::Kind::RestartQuery:
+        return true;
+      default:
+        if (mayEndQuery(s.then_) || mayEndQuery(s.else_)) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+const CStmt* leadingReport(const CProgram& p) {
+  for (const CStmt& s : p) {
+    if (s.kind == Stmt::Kind::Count) continue;
+    return s.kind == Stmt::Kind::Report && !readsTmax(s.t) ? &s : nullptr;
+  }
+  return nullptr;
+}
+
+bool queryBlocksMayEnd(const CStmt& query) {
+  return mayEndQuery(query.then_);
+}
+
 CPipeline compilePipeline(const Case& c, const Plan& plan) {
   CPipeline out;
   const Pipeline& p = c.pipeline;
@@ -340,6 +377,7 @@ CPipeline compilePipeline(const Case& c, const Plan& plan) {
     if (cg.closest_hit) cg.closest_hit_counts = countsOnly(*cg.closest_hit);
     if (cg.any_hit) cg.any_hit_leading = leadingCounts(*cg.any_hit);
     if (cg.intersection) cg.intersection_leading = leadingCounts(*cg.intersection);
+    if (cg.intersection) cg.leading_report = leadingReport(*cg.intersection);
     cg.any_hit_terminates = cg.any_hit && hasTerminate(*cg.any_hit);
     cg.payload = g.payload;
     out.any_hit_terminates = out.any_hit_terminates || cg.any_hit_terminates;

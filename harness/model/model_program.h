@@ -123,6 +123,15 @@ CountsOnly countsOnly(const CProgram& p);
 // counters only, once per statement): every run of it bumps each so, whatever
 // it does next (model/counter_floors.cpp).
 std::vector<int> leadingCounts(const CProgram& p);
+// An intersection program's leading report: the first statement after its
+// leading counts, when a report whose t reads nothing an order decides (no
+// ray_tmax): every run of the program makes it at one t (counter_floors.cpp);
+// null otherwise.
+const CStmt* leadingReport(const CProgram& p);
+// Whether a ray_query's candidate blocks (its then_) may end or restart its
+// traversal early: a break, return, terminate_query or restart_query anywhere
+// in them (conservative: a break inside a repeat only leaves the repeat).
+bool queryBlocksMayEnd(const CStmt& query);
 
 struct CHitGroup {
   const CProgram* closest_hit = nullptr;
@@ -130,6 +139,7 @@ struct CHitGroup {
   const CProgram* intersection = nullptr;
   CountsOnly closest_hit_counts;
   std::vector<int> any_hit_leading, intersection_leading;  // leadingCounts of each
+  const CStmt* leading_report = nullptr;                   // leadingReport(*intersection)
   bool any_hit_terminates = false;  // the any-hit has a `terminate` (R-ORDER-UNSPEC)
   uint32_t payload = 0;             // HitGroup::payload: the location whose type it takes
 };

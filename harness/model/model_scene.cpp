@@ -279,6 +279,7 @@ void aabbIntersect(const RTCIntersectFunctionNArguments* args) {
     }
   }
   c.aabb = true;
+  c.missed = !entered;
   c.t = std::max(s.t0, tc->tmin);
   c.instance = inst;
   c.geometry = args->geomID;

@@ -28,6 +28,10 @@ struct ModelCandidate {
   // bound (near_face too): a device may offer it; the model does not (its
   // what-if runs do, and a legal device offering every such box).
   bool outside = false;
+  // AABBs: the model's own ray misses the box (outside, or met only as grown
+  // by ModelFaultSeam::aabbNeighboursRun): only a legal device with a
+  // conservative AABB test (R-AABB-CONS) runs its program.
+  bool missed = false;
   // Triangles, exact tier: the ray's line lies in the triangle's plane (to
   // rounding, in_plane.h): no hit of the model's, a device's hit anywhere in
   // [t - t_err, t + t_err] (the line across the triangle, within the

@@ -23,6 +23,7 @@
 namespace rayspec {
 
 struct Traversal;
+struct LeadReport;
 struct QueryRun;
 struct OrderOutcome;
 class StageInterpreter;
@@ -115,7 +116,8 @@ class ModelTracer {
   bool anyHitMayTerminate(const Traversal& tr, const std::vector<ModelCandidate>& cands) const;
   // Exact tier: what this trace's clear candidates must count on any device
   // into LaunchState::ray_floors (counter_floors.cpp), with its steps.
-  void countFloors(const Traversal& tr, const std::vector<ModelCandidate>& cands);
+  void countFloors(const Traversal& tr, const std::vector<ModelCandidate>& cands,
+                   const std::vector<LeadReport>& leads);
   bool floorsHold(const Traversal& tr, const std::vector<ModelCandidate>& cands) const;
   double floorEnd(const Traversal& tr) const;
   // `leaks`: the answers of devices passing between the triangles of a

@@ -332,11 +332,14 @@ Committed ModelTracer::traverse(const TraceRay& r, uint32_t flags, uint32_t dept
   std::vector<ModelCandidate>* cands = candidatesOf(r, tr.flags, depth, query);
   std::vector<std::pair<size_t, double>> reports;  // exact tier: every report of the actual run
   std::vector<ShaderDecision> shader_unsure;       // exact tier: decisions rounding may flip
+  std::vector<LeadReport> leads;                   // exact tier: the boxes' leading reports
   if (cands) {
     tr.reports = tr.exact ? &reports : nullptr;
+    tr.lead_reports = tr.exact ? &leads : nullptr;
     tr.shader_unsure = tr.exact && sh_.programs->reads_sphere ? &shader_unsure : nullptr;
     decide(tr, *cands, nullptr, payload);
     tr.reports = nullptr;
+    tr.lead_reports = nullptr;
     tr.shader_unsure = nullptr;
     if (!query) checkCandidates(tr, *cands);  // a query reads no hit record
   }
@@ -352,7 +355,7 @@ Committed ModelTracer::traverse(const TraceRay& r, uint32_t flags, uint32_t dept
       tr.best = decideAs(tr, *cands, *chosen, payload);
     }
     if (!query) checkLegalAnswerRecords(r, tr.flags);
-    countFloors(tr, *cands);
+    countFloors(tr, *cands, leads);
   }
   return tr.best;
 }

@@ -30,6 +30,14 @@
 
 namespace rayspec {
 
+// A box's leading report (CHitGroup::leading_report) as the model's run made
+// it: the candidate, its t, and how far a device's t may lie (a sphere
+// root's error bound; 0 otherwise).
+struct LeadReport {
+  size_t k = 0;
+  double t = 0, err = 0;
+};
+
 struct Traversal {
   const TraceRay& ray;
   uint32_t flags = 0;  // ray flags with the pipeline's skip flags
@@ -63,6 +71,9 @@ struct Traversal {
   TieRule tie = TieRule::Model;
   // The actual run of the exact tier: every report (candidate index, t) in [tmin, tmax].
   std::vector<std::pair<size_t, double>>* reports = nullptr;
+  // ... and every report of an intersection program's leading report
+  // (CHitGroup::leading_report), in or out of the interval (counter_floors.cpp).
+  std::vector<LeadReport>* lead_reports = nullptr;
   // Exact tier, R-PREC: the actual run notes its intersection programs'
   // decisions that rounding may flip; a what-if run flips one of them.
   std::vector<ShaderDecision>* shader_unsure = nullptr;

@@ -130,10 +130,20 @@ std::vector<NotPortable> counterCauses(const Case& c, const Plan& plan, const Re
   return out;
 }
 
-// aabb-neighbours, aabb-near: the reports of intersection programs and aabb blocks.
-void boxReports(const Case& c, NotPortable& p) {
+// aabb-neighbours, aabb-near: the statement that reported (or generated)
+// for a box the model's own ray misses, as the device's run noted it
+// (Results::missed_box_reports); else the first report or generate of the
+// pipeline.
+void boxReports(const Case& c, const Results& device, NotPortable& p) {
   std::string more;
-  p.declaration = firstPlace(c, statementsOf(c, {Stmt::Kind::Report, Stmt::Kind::Generate}), &more);
+  const std::vector<SourceLoc>& made = device.missed_box_reports;
+  if (!made.empty()) {
+    p.declaration = made.front();
+    if (made.size() > 1) more = " (and " + std::to_string(made.size() - 1) + " more like it)";
+  } else {
+    p.declaration =
+        firstPlace(c, statementsOf(c, {Stmt::Kind::Report, Stmt::Kind::Generate}), &more);
+  }
   p.change =
       "this report" + more +
       " is made without testing that the ray crosses its box, and a device with a conservative "
@@ -200,8 +210,8 @@ void ambiguousRay(const Case& c, const Results& model, NotPortable& p) {
 }
 
 // What the device's kind says about the declaration to change.
-void causeOfKind(const Case& c, const Results& model, NotPortable& p) {
-  if (p.device == "aabb-neighbours" || p.device == "aabb-near") return boxReports(c, p);
+void causeOfKind(const Case& c, const Results& model, const Results& device, NotPortable& p) {
+  if (p.device == "aabb-neighbours" || p.device == "aabb-near") return boxReports(c, device, p);
   if (p.device == "reverse-order" || startsWith(p.device, "permuted-order-") ||
       startsWith(p.device, "last-"))
     return orderDependentBlocks(c, p);
@@ -242,7 +252,7 @@ std::vector<NotPortable> notPortableCauses(const Case& c, const Plan& plan, cons
     p.finding = failingFinding(rest, &p.ray);
     if (p.ray < 0) p.ray = changed;
     p.device = v.name;
-    causeOfKind(c, model, p);
+    causeOfKind(c, model, v.device, p);
     out.push_back(std::move(p));
   }
   for (NotPortable& p : out) {

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "base/source_loc.h"
 #include "results/record_layout.h"
 #include "results/step_cost.h"
 #include "results/undefined_reason.h"
@@ -222,6 +223,12 @@ struct Results {
   // kMaxQueryRestarts times in one run of it, each named by its file:line
   // (compare/endless_restarts_verdict.h).
   std::vector<std::string> endless_restarts;
+  // model as a legal device with a conservative AABB test (aabb-neighbours,
+  // aabb-near): where the statements are written that reported (or
+  // generated) inside the interval for a box the model's own ray misses, in
+  // the order first made (mutate/not_portable_cause.cpp names the first).
+  // Not saved in a bundle: only the legal devices' runs, in memory, have it.
+  std::vector<SourceLoc> missed_box_reports;
   std::vector<std::string> validation_messages;  // validation-layer errors (device)
   // Device: what the device broke that only the device shows, each a Fail of
   // its rule: R-LIBRARY (library group handles that differ from the linked
