@@ -326,11 +326,11 @@ void parseStorage(YamlReader& r, const YAML::Node& n, AsBuild& build) {
 // (R-AS-COPY).
 void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
   const std::string f = "scene.build";
-  if (!r.expectMap(n, f,
-                   {"flags", "copy", "order", "instances_as_pointers", "data_offsets",
-                    "first_vertex", "vertex_stride", "aabb_stride", "one_by_one", "update_into",
-                    "tlas_update", "command", "generic", "sparse", "storage", "queries",
-                    "query_command"}))
+  if (!r.expectMap(
+          n, f,
+          {"flags", "copy", "order", "instances_as_pointers", "data_offsets", "first_vertex",
+           "vertex_stride", "aabb_stride", "one_by_one", "update_into", "tlas_update", "command",
+           "generic", "sparse", "storage", "queries", "query_command"}))
     return;
   parseBuildLayout(r, n, build);
   parseStructureQueries(r, n, build);

@@ -63,9 +63,8 @@ Result<VkAccelerationStructureKHR> createStructure(const VulkanContext& ctx,
                                                    Cleanup& cleanup, MemoryGuards& guards,
                                                    const std::string& what) {
   const VkAccelerationStructureTypeKHR created = making.createdAs(level);
-  RAYSPEC_TRY(const SparseBuffer storage, making.arena
-                                              ? making.arena->place(ctx, size, created)
-                                              : storageFor(ctx, size, making, cleanup));
+  RAYSPEC_TRY(const SparseBuffer storage, making.arena ? making.arena->place(ctx, size, created)
+                                                       : storageFor(ctx, size, making, cleanup));
   guards.add(storage.buffer.buffer, storage.offset, size,
              what + " (" + std::to_string(size) + " bytes)");
   VkAccelerationStructureCreateInfoKHR info{
