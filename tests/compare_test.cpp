@@ -8,6 +8,7 @@
 #include "compare/image_pair.h"
 #include "compare/shared_edge.h"
 #include "compare_samples.h"
+#include "program/builtins.h"
 #include "results/record_layout.h"
 #include "results/tolerances.h"
 
@@ -115,6 +116,57 @@ TEST(Compare, ModelTBoundWidensTheTToleranceOfThatRayOnly) {
   setFloat(other, 1, "hit_t", 2.0f + 1e-3f);
   EXPECT_EQ(compareResults(c, samplePlan(c), other, m).status, Status::Fail)
       << "ray 1 has no wider bound";
+}
+
+// fuzz/seed-120491 on NVIDIA 580 (ray 13): closest-hit records
+// color2 = vec4(hit_position, hit_t) on a ray whose t the model bounds to
+// 0.017; the device's t lay 3e-4 from the model's, past the colour
+// tolerance. The colour holds what the model knows only to the ray's bound.
+Case caseRecordingTInAColour() {
+  Case c = sampleCase();
+  Expr colour;
+  colour.kind = Expr::Kind::Op;
+  colour.op = Op::Vec4;
+  for (const char* b : {"hit_position", "hit_position", "hit_position", "hit_t"})
+    colour.args.push_back(builtinExpr(b));
+  Stmt rec;
+  rec.kind = Stmt::Kind::Record;
+  rec.assigns = {{"color2", colour}, {"hit_t", builtinExpr("hit_t")}};
+  c.pipeline.hit_groups[0].closest_hit->push_back(rec);
+  c.outputs.per_ray.push_back("color2");
+  return c;
+}
+
+void setColour2(Results& r, uint32_t ray, float x, float w) {
+  const RecordField* f = findRecordField("color2");
+  uint32_t* rec = &r.records[ray * recordWords()];
+  for (uint32_t k = 0; k < 4; ++k) rec[f->offset + k] = std::bit_cast<uint32_t>(k == 3 ? w : x);
+  markWritten(rec, f->index);
+}
+
+TEST(Compare, ModelTBoundWidensAColourThatCarriesHitT) {
+  const Case c = caseRecordingTInAColour();
+  Results m = sampleResults("model"), d = sampleResults("vulkan");
+  m.t_bounds.push_back({0, 2e-2f});
+  m.position_bounds.push_back({0, 1e-2f});
+  for (uint32_t ray : {0u, 1u}) {
+    setColour2(m, ray, -2.0673695f, 1.9999652f);
+    setColour2(d, ray, -2.0673695f, 1.9999652f);
+  }
+  setColour2(d, 0, -2.0674081f, 2.0012f);  // within ray 0's bound, past the colour tolerance
+  EXPECT_EQ(compareResults(c, samplePlan(c), d, m).status, Status::Pass);
+  setColour2(d, 0, -2.0674081f, 2.05f);
+  EXPECT_EQ(compareResults(c, samplePlan(c), d, m).status, Status::Fail) << "beyond the bound";
+  Results other = d;
+  setColour2(other, 0, -2.0673695f, 1.9999652f);
+  setColour2(other, 1, -2.0674081f, 2.0012f);
+  EXPECT_EQ(compareResults(c, samplePlan(c), other, m).status, Status::Fail)
+      << "ray 1 has no wider bound";
+  Case exact = c;  // a colour of no bounded built-in keeps the colour tolerance
+  for (Expr& a : exact.pipeline.hit_groups[0].closest_hit->back().assigns[0].second.args)
+    a = builtinExpr("ray_tmin");
+  setColour2(d, 0, -2.0674081f, 2.0012f);
+  EXPECT_EQ(compareResults(exact, samplePlan(exact), d, m).status, Status::Fail);
 }
 
 TEST(Compare, MissAndClosestHitRunTogetherFails) {

@@ -57,7 +57,18 @@ struct RayBounds {
   float t = 0;              // hit_t and ray_tmax
   float object_origin = 0;  // object_ray_origin
   float position = 0;       // hit_position: t's bound carried through the direction
+  // A free float field (color, color2, color3): the widest of the three
+  // where the case carries a bounded built-in into other fields
+  // (carriesBoundedBuiltins: a colour of hit_position and hit_t).
+  float carried = 0;
 };
+// Whether some program reads hit_t, ray_tmax, object_ray_origin or
+// hit_position other than straight into its own record field: a colour
+// (`vec4: [{x: hit_position}, ..., hit_t]`, a payload's colour) then holds
+// what the model knows only to the ray's bound (carried_bounds.cpp).
+bool carriesBoundedBuiltins(const Case& c);
+// The widest of a ray's bounds (RayBounds::carried).
+float carriedBound(const RayBounds& b);
 // One field of one ray as the model has it: written alike, and equal (floats
 // within the field's tolerance, widened to the ray's bounds).
 bool sameField(const RecordField& f, const uint32_t* d, const uint32_t* m, const RayBounds& bounds);

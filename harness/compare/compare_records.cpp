@@ -147,6 +147,7 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
   for (const TBound& b : model.position_bounds) position_bounds[b.ray] = b.bound;
 
   const std::vector<const RecordField*> fields = comparedRecordFields(plan);
+  const bool carries = carriesBoundedBuiltins(c);
 
   // R-AHIT-DUP: per ray, the fields a repeated any-hit may change.
   std::map<uint32_t, FieldMask> repeat;
@@ -168,8 +169,9 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
     const uint32_t* m = &model.records[i * words];
     const uint32_t ray = static_cast<uint32_t>(i);
     if (undefined.count(ray)) continue;  // R-UB: never judged
-    const RayBounds bounds{tBound(t_bounds, ray), tBound(origin_bounds, ray),
-                           tBound(position_bounds, ray)};
+    RayBounds bounds{tBound(t_bounds, ray), tBound(origin_bounds, ray),
+                     tBound(position_bounds, ray)};
+    if (carries) bounds.carried = carriedBound(bounds);
     const auto repeated = repeat.find(ray);
     const FieldMask repeat_fields = repeated == repeat.end() ? 0 : repeated->second;
     if (const auto it = ambiguous.find(ray); it != ambiguous.end()) {

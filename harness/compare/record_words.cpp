@@ -70,6 +70,7 @@ bool sameField(const RecordField& f, const uint32_t* d, const uint32_t* m,
     tol.abs = std::max(tol.abs, static_cast<double>(bounds.object_origin));
   if (ft.widened_by_position_bound)
     tol.abs = std::max(tol.abs, static_cast<double>(bounds.position));
+  if (f.kind == FieldKind::Free) tol.abs = std::max(tol.abs, static_cast<double>(bounds.carried));
   for (uint32_t k = 0; k < f.words; ++k)
     if (!tol.matches(asFloat(d[f.offset + k]), asFloat(m[f.offset + k]))) return false;
   return true;
