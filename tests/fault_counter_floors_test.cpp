@@ -20,17 +20,19 @@
 namespace rayspec {
 namespace {
 
-// Boxes of the unit cube's size along x at the given centres, one ray along
-// +x from x = -5; the intersection program counts, then reports its sphere's
-// near root (or nothing), and the closest-hit records the primitive.
-std::string boxesText(const std::string& aabbs, const std::string& intersection) {
-  return "rules: [R-AABB-CONS, R-ORDER-UNSPEC]\n"
-         "description: floors\n"
+// Boxes along x (the blas's one geometry `geometry`), one ray along +x from
+// x = -5; the intersection program `intersection` (then the hit group's
+// `any_hit` line, if any), and the closest-hit records the primitive.
+// `head`: the rules and description; `counters`: those the case counts.
+std::string boxCaseText(const std::string& head, const std::string& geometry,
+                        const std::string& intersection, const std::string& any_hit,
+                        const std::string& counters) {
+  return head +
          "scene:\n"
          "  blas:\n"
-         "    b: [{aabbs: " +
-         aabbs +
-         ", flags: [opaque]}]\n"
+         "    b: [" +
+         geometry +
+         "]\n"
          "  instances: [{blas: b}]\n"
          "rays:\n"
          "  list: [{origin: [-5, 0.125, 0.0625], direction: [1, 0, 0]}]\n"
@@ -40,12 +42,22 @@ std::string boxesText(const std::string& aabbs, const std::string& intersection)
          "  miss: [[count: miss, record: {hit: 0}]]\n"
          "  hit_groups:\n"
          "    - intersection: " +
-         intersection +
-         "\n"
+         intersection + "\n" + any_hit +
          "      closest_hit: [count: chit, record: [hit, primitive_id]]\n"
          "outputs:\n"
-         "  counters: [isect, miss, chit]\n"
+         "  counters: [" +
+         counters +
+         "]\n"
          "  per_ray: [hit, primitive_id]\n";
+}
+
+// Opaque boxes of the unit cube's size along x at the given centres; the
+// intersection program counts, then reports its sphere's near root (or
+// nothing).
+std::string boxesText(const std::string& aabbs, const std::string& intersection) {
+  return boxCaseText("rules: [R-AABB-CONS, R-ORDER-UNSPEC]\ndescription: floors\n",
+                     "{aabbs: " + aabbs + ", flags: [opaque]}", intersection, "",
+                     "isect, miss, chit");
 }
 
 Case parsed(const std::string& text) {
@@ -128,27 +140,11 @@ TEST(CounterFloors, ACountAfterAConditionRaisesNoFloor) {
 // at t 8); each intersection program's leading statement after its count
 // reports, and the any-hit counts, then ignores the near box's report.
 std::string reportedBoxesText(const std::string& intersection) {
-  return "rules: [R-ISECT-REPORT, R-IGNORE]\n"
-         "description: report floors\n"
-         "scene:\n"
-         "  blas:\n"
-         "    b: [{aabbs: [[-1, -1, -1, 1, 1, 1], [3, -1, -1, 5, 1, 1]], flags: []}]\n"
-         "  instances: [{blas: b}]\n"
-         "rays:\n"
-         "  list: [{origin: [-5, 0.125, 0.0625], direction: [1, 0, 0]}]\n"
-         "  tmin: 0.001\n"
-         "  tmax: 100\n"
-         "pipeline:\n"
-         "  miss: [[count: miss, record: {hit: 0}]]\n"
-         "  hit_groups:\n"
-         "    - intersection: " +
-         intersection +
-         "\n"
-         "      any_hit: [count: ahit, {if: {eq: [primitive_id, 0]}, then: [ignore]}]\n"
-         "      closest_hit: [count: chit, record: [hit, primitive_id]]\n"
-         "outputs:\n"
-         "  counters: [isect, ahit, miss, chit]\n"
-         "  per_ray: [hit, primitive_id]\n";
+  return boxCaseText(
+      "rules: [R-ISECT-REPORT, R-IGNORE]\ndescription: report floors\n",
+      "{aabbs: [[-1, -1, -1, 1, 1, 1], [3, -1, -1, 5, 1, 1]], flags: []}", intersection,
+      "      any_hit: [count: ahit, {if: {eq: [primitive_id, 0]}, then: [ignore]}]\n",
+      "isect, ahit, miss, chit");
 }
 
 const char* kLeadingReport = "[count: isect, report: {t: {max: [sphere_near, ray_tmin]}, kind: 1}]";

@@ -4,12 +4,7 @@
 // after every active one) are untouched by it and pass.
 #include <gtest/gtest.h>
 
-#include "compare/compare_results.h"
-#include "fault/planted_fault.h"
-#include "model/model_engine.h"
-#include "parse/parse_case.h"
-#include "plan/plan.h"
-#include "suite_cases.h"
+#include "planted_suite_case.h"
 
 namespace rayspec {
 namespace {
@@ -21,16 +16,10 @@ bool endsWith(const std::string& s, const std::string& tail) {
 TEST(InactiveHidesLastActive, FailsEveryIsolatingCaseButTheControls) {
   size_t failed = 0, controls = 0;
   for (const CaseFile& f : findCases(kSuiteCases, "inactive/before-active-*")) {
-    ParseResult parsed = loadSuiteCase(f);
-    ASSERT_TRUE(parsed.value) << f.name << ": " << parsed.errors.at(0).format();
-    const Case& c = *parsed.value;
-    const Plan plan = derivePlan(c);
-    const Results model = runOnModel(c, plan, ModelOptions{});
-    ASSERT_TRUE(model.ok()) << f.name << ": " << model.statusText();
-    Results device = perfectDevice(c, model);
-    ASSERT_EQ(compareResults(c, plan, device, model).status, Status::Pass) << f.name;
-    const FaultResult planted = plantFault("inactive-hides-last-active", c, plan, device, model);
-    const Verdict v = compareResults(c, plan, device, model);
+    const std::optional<SuiteModelRun> run = suiteModelRun(f);
+    ASSERT_TRUE(run);
+    ASSERT_EQ(perfectStatus(*run), Status::Pass) << f.name;
+    const auto [planted, v] = plantOnModel(*run, "inactive-hides-last-active");
     if (endsWith(f.name, "-last")) {
       EXPECT_FALSE(planted.applied) << f.name << ": " << planted.what;
       EXPECT_EQ(v.status, Status::Pass) << f.name << ": " << v.headline();
@@ -50,18 +39,11 @@ TEST(InactiveHidesLastActive, FailsEveryIsolatingCaseButTheControls) {
 TEST(InactiveHidesLastActive, FailsTheSeedCasesItBreaksOnLavapipe26) {
   for (const char* name :
        {"inactive/null-instance", "inactive/nan-x-triangle", "inactive/nan-min-x-aabb"}) {
-    const std::optional<CaseFile> f = suiteCase(name);
-    ASSERT_TRUE(f) << name;
-    ParseResult parsed = loadSuiteCase(*f);
-    ASSERT_TRUE(parsed.value) << name;
-    const Plan plan = derivePlan(*parsed.value);
-    const Results model = runOnModel(*parsed.value, plan, ModelOptions{});
-    Results device = perfectDevice(*parsed.value, model);
-    const FaultResult planted =
-        plantFault("inactive-hides-last-active", *parsed.value, plan, device, model);
+    const std::optional<SuiteModelRun> run = suiteModelRun(name);
+    ASSERT_TRUE(run) << name;
+    const auto [planted, v] = plantOnModel(*run, "inactive-hides-last-active");
     EXPECT_TRUE(planted.applied) << name;
-    EXPECT_EQ(compareResults(*parsed.value, plan, device, model).status, Status::Fail)
-        << name << ": " << planted.what;
+    EXPECT_EQ(v.status, Status::Fail) << name << ": " << planted.what;
   }
 }
 
@@ -72,31 +54,20 @@ TEST(InactiveHidesLastActive, FailsTheSeedCasesItBreaksOnLavapipe26) {
 TEST(UpdateInactive, EachFaultOfAnUpdateFailsTheCase) {
   size_t cases = 0;
   for (const CaseFile& f : findCases(kSuiteCases, "accel/update-inactive/*")) {
-    ParseResult parsed = loadSuiteCase(f);
-    ASSERT_TRUE(parsed.value) << f.name << ": " << parsed.errors.at(0).format();
-    const Case& c = *parsed.value;
-    const Plan plan = derivePlan(c);
-    const Results model = runOnModel(c, plan, ModelOptions{});
-    ASSERT_TRUE(model.ok()) << f.name << ": " << model.statusText();
-    ASSERT_EQ(compareResults(c, plan, perfectDevice(c, model), model).status, Status::Pass);
+    const std::optional<SuiteModelRun> run = suiteModelRun(f);
+    ASSERT_TRUE(run);
+    ASSERT_EQ(perfectStatus(*run), Status::Pass);
     for (const char* fault : {"update-ignored", "inactive-revived", "update-degenerate-lost"}) {
-      Results device = perfectDevice(c, model);
-      const FaultResult planted = plantFault(fault, c, plan, device, model);
+      const auto [planted, v] = plantOnModel(*run, fault);
       EXPECT_TRUE(planted.applied) << f.name << " " << fault << ": " << planted.what;
-      EXPECT_EQ(compareResults(c, plan, device, model).status, Status::Fail)
-          << f.name << " " << fault << ": " << planted.what;
+      EXPECT_EQ(v.status, Status::Fail) << f.name << " " << fault << ": " << planted.what;
     }
     ++cases;
   }
   EXPECT_EQ(cases, 2u);
-  const std::optional<CaseFile> built = suiteCase("inactive/degenerate-triangles");
+  const std::optional<SuiteModelRun> built = suiteModelRun("inactive/degenerate-triangles");
   ASSERT_TRUE(built);
-  ParseResult parsed = loadSuiteCase(*built);
-  ASSERT_TRUE(parsed.value);
-  const Plan plan = derivePlan(*parsed.value);
-  const Results model = runOnModel(*parsed.value, plan, ModelOptions{});
-  Results device = perfectDevice(*parsed.value, model);
-  EXPECT_FALSE(plantFault("update-degenerate-lost", *parsed.value, plan, device, model).applied);
+  EXPECT_FALSE(plantOnModel(*built, "update-degenerate-lost").fault.applied);
 }
 
 }  // namespace

@@ -7,12 +7,7 @@
 // untouched.
 #include <gtest/gtest.h>
 
-#include "compare/compare_results.h"
-#include "fault/planted_fault.h"
-#include "model/model_engine.h"
-#include "parse/parse_case.h"
-#include "plan/plan.h"
-#include "suite_cases.h"
+#include "planted_suite_case.h"
 
 namespace rayspec {
 namespace {
@@ -29,16 +24,9 @@ bool failsField(const Verdict& v, const std::string& rule, const std::string& fi
 TEST(IncomingFlagsWithPipelineSkip, FailsEveryVariantWithAPipelineSkipFlag) {
   size_t failed = 0, untouched = 0;
   for (const CaseFile& f : findCases(kSuiteCases, "builtins/incoming-flags-pipeline-skip/*")) {
-    ParseResult parsed = loadSuiteCase(f);
-    ASSERT_TRUE(parsed.value) << f.name << ": " << parsed.errors.at(0).format();
-    const Case& c = *parsed.value;
-    const Plan plan = derivePlan(c);
-    const Results model = runOnModel(c, plan, ModelOptions{});
-    ASSERT_TRUE(model.ok()) << f.name << ": " << model.statusText();
-    Results device = perfectDevice(c, model);
-    const FaultResult planted =
-        plantFault("incoming-flags-with-pipeline-skip", c, plan, device, model);
-    const Verdict v = compareResults(c, plan, device, model);
+    const std::optional<SuiteModelRun> run = suiteModelRun(f);
+    ASSERT_TRUE(run);
+    const auto [planted, v] = plantOnModel(*run, "incoming-flags-with-pipeline-skip");
     if (f.name.find("/none-") != std::string::npos) {
       EXPECT_FALSE(planted.applied) << f.name << ": " << planted.what;
       EXPECT_EQ(v.status, Status::Pass) << f.name << ": " << v.headline();

@@ -7,37 +7,17 @@
 
 #include <algorithm>
 
-#include "compare/compare_results.h"
-#include "fault/planted_fault.h"
-#include "model/model_engine.h"
-#include "parse/parse_case.h"
-#include "plan/plan.h"
-#include "suite_cases.h"
+#include "planted_suite_case.h"
 
 namespace rayspec {
 namespace {
 
-struct Planted {
-  FaultResult fault;
-  Verdict verdict;
-};
-
-Planted plantOn(const std::string& name, const std::string& fault) {
-  const std::optional<CaseFile> f = suiteCase(name);
-  EXPECT_TRUE(f) << name;
-  if (!f) return {};
-  ParseResult parsed = loadSuiteCase(*f);
-  EXPECT_TRUE(parsed.value) << name;
-  if (!parsed.value) return {};
-  const Case& c = *parsed.value;
-  const Plan plan = derivePlan(c);
-  const Results model = runOnModel(c, plan, ModelOptions{});
-  Results device = perfectDevice(c, model);
-  EXPECT_EQ(compareResults(c, plan, device, model).status, Status::Pass) << name;
-  Planted p;
-  p.fault = plantFault(fault, c, plan, device, model);
-  p.verdict = compareResults(c, plan, device, model);
-  return p;
+// The fault planted in library case `name` (whose model answers pass).
+PlantedVerdict plantOn(const std::string& name, const std::string& fault) {
+  const std::optional<SuiteModelRun> run = suiteModelRun(name);
+  if (!run) return {};
+  EXPECT_EQ(perfectStatus(*run), Status::Pass) << name;
+  return plantOnModel(*run, fault);
 }
 
 bool failsOn(const Verdict& v, const std::string& rule) {
@@ -48,7 +28,7 @@ bool failsOn(const Verdict& v, const std::string& rule) {
 
 TEST(ZeroLengthRayBoxMissed, FailsTheZeroLengthCasesPipelineAndInline) {
   for (const char* name : {"intersection/zero-length-in-box", "ray-query/zero-length-in-box"}) {
-    const Planted p = plantOn(name, "zero-length-ray-box-missed");
+    const PlantedVerdict p = plantOn(name, "zero-length-ray-box-missed");
     EXPECT_TRUE(p.fault.applied) << name << ": " << p.fault.what;
     EXPECT_EQ(p.verdict.status, Status::Fail) << name << ": " << p.verdict.headline();
     EXPECT_TRUE(failsOn(p.verdict, "R-AABB-CONS")) << name << ": " << p.verdict.headline();
@@ -56,7 +36,7 @@ TEST(ZeroLengthRayBoxMissed, FailsTheZeroLengthCasesPipelineAndInline) {
 }
 
 TEST(ZeroLengthRayBoxMissed, LeavesACaseWithoutZeroLengthRaysAlone) {
-  const Planted p = plantOn("candidates/aabb-closed-interval", "zero-length-ray-box-missed");
+  const PlantedVerdict p = plantOn("candidates/aabb-closed-interval", "zero-length-ray-box-missed");
   EXPECT_FALSE(p.fault.applied) << p.fault.what;
   EXPECT_EQ(p.verdict.status, Status::Pass) << p.verdict.headline();
 }

@@ -42,6 +42,18 @@ inline std::string firstErrorAfter(std::string text, const std::string& from,
   return p.errors[0].loc.field + ": " + p.errors[0].message;
 }
 
+// The YAML of a BLAS `square` (under scene.blas): the square [-1, 1]^2 at
+// z = 0 of two triangles sharing its diagonal x = y, its geometry's flags
+// `flags` (a YAML list).
+inline std::string diagonalSquareBlas(const std::string& flags) {
+  return "    square:\n"
+         "      - triangles:\n"
+         "          vertices: [[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]]\n"
+         "          indices: [0, 1, 2, 0, 2, 3]\n"
+         "        flags: " +
+         flags + "\n";
+}
+
 // One triangle under ray 0 (it hits) and nothing under ray 1 (it misses):
 // the scene and rays of a case whose pipeline follows.
 inline const char* kTriangleHitAndMiss = R"(scene:
@@ -227,6 +239,13 @@ inline bool written(const Results& r, uint32_t ray, const char* field) {
 }
 
 inline const ModelTier kTiers[] = {ModelTier::Fast, ModelTier::Robust, ModelTier::Exact};
+
+// The ambiguity of ray `ray`; nullptr when the ray is not ambiguous.
+inline const RayAmbiguity* ambiguityOf(const Results& r, uint32_t ray) {
+  for (const RayAmbiguity& a : r.ambiguous)
+    if (a.ray == ray) return &a;
+  return nullptr;
+}
 
 inline std::map<uint32_t, const RayAmbiguity*> byRay(const Results& r) {
   std::map<uint32_t, const RayAmbiguity*> m;

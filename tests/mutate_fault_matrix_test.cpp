@@ -12,6 +12,7 @@
 namespace rayspec {
 namespace {
 
+using model_test::diagonalSquareBlas;
 using model_test::parseInline;
 
 // One opaque triangle: ray 0 hits it, ray 1 misses everything. No mask, no
@@ -40,7 +41,7 @@ outputs:
   per_ray: [hit, primitive_id, instance_custom_index, hit_t]
 )";
 
-SavedCase savedOf(const char* text) {
+SavedCase savedOf(const std::string& text) {
   const Case c = parseInline(text);
   const Plan plan = derivePlan(c);
   Results model = runOnModel(c, plan, ModelOptions{ModelTier::Exact, 1});
@@ -52,15 +53,11 @@ SavedCase savedOf(const char* text) {
 // Two triangles share the diagonal x = y of a square; ray 0 meets it exactly
 // (two legal answers), ray 1 hits clearly. The instance's mask 3 meets every
 // ray's cull mask (0xFF), so ignoring masks changes nothing.
-const char* kMaskedEdgeCase = R"(rules: [R-WATERTIGHT]
+const std::string kMaskedEdgeCase = R"(rules: [R-WATERTIGHT]
 scene:
   blas:
-    square:
-      - triangles:
-          vertices: [[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]]
-          indices: [0, 1, 2, 0, 2, 3]
-        flags: [opaque]
-  instances: [{blas: square, mask: 3}]
+)" + diagonalSquareBlas("[opaque]") +
+                                    R"(  instances: [{blas: square, mask: 3}]
 rays:
   list:
     - {origin: [0.25, 0.25, 5], direction: [0, 0, -1]}

@@ -17,6 +17,8 @@
 namespace rayspec {
 namespace {
 
+using model_test::ambiguityOf;
+using model_test::diagonalSquareBlas;
 using model_test::parseInline;
 
 // Two non-opaque triangles share the diagonal x = y of a square at z = 0; a
@@ -27,12 +29,8 @@ std::string edgeCase(const std::string& any_hit) {
 description: an edge ray with a floor behind
 scene:
   blas:
-    square:
-      - triangles:
-          vertices: [[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]]
-          indices: [0, 1, 2, 0, 2, 3]
-        flags: []
-    floor:
+)" + diagonalSquareBlas("[]") +
+         R"(    floor:
       - triangles:
           vertices: [[-9, -9, -2], [9, -9, -2], [0, 9, -2]]
         flags: []
@@ -67,18 +65,12 @@ Results runAs(const Case& c, uint32_t legal_answer, bool pass_between) {
   return r;
 }
 
-const RayAmbiguity* rayZero(const Results& model) {
-  for (const RayAmbiguity& a : model.ambiguous)
-    if (a.ray == 0) return &a;
-  return nullptr;
-}
-
 TEST(LegalAnswers, EveryLegalAnswerOfAnEdgeRayPassesWithItsOwnT) {
   // The odd triangle is ignored: the ray may take the even one (t 5) or, by
   // the odd one, the floor behind (t 7). Each is a legal, watertight answer.
   const Case c = parseInline(edgeCase("[{if: {odd: primitive_id}, then: [ignore]}]"));
   const Results model = runOnModel(c, derivePlan(c), ModelOptions{ModelTier::Exact, 1});
-  const RayAmbiguity* a = rayZero(model);
+  const RayAmbiguity* a = ambiguityOf(model, 0);
   ASSERT_NE(a, nullptr);
   EXPECT_EQ(a->reason, AmbiguityReason::Edge);
   std::set<uint32_t> instances;
@@ -111,7 +103,7 @@ TEST(LegalAnswers, PassingBetweenTheTrianglesOfASharedEdgeIsAQualityWarning) {
   // the floor is reached only between them.
   const Case c = parseInline(edgeCase("[{if: {eq: [primitive_id, 7]}, then: [ignore]}]"));
   const Results model = runOnModel(c, derivePlan(c), ModelOptions{ModelTier::Exact, 1});
-  const RayAmbiguity* a = rayZero(model);
+  const RayAmbiguity* a = ambiguityOf(model, 0);
   ASSERT_NE(a, nullptr);
   ASSERT_EQ(a->leak_answers.size(), 1u);
   EXPECT_EQ(a->leak_answers[0].instance, 1u);
@@ -276,7 +268,7 @@ TEST(LegalDevices, ARayInATrianglesPlaneKeepsItsReplaysWhereItsTReachesNoFreeFie
   const Case c = parseInline(inPlaneCase("{add: [primitive_id, 7]}"));
   const Plan plan = derivePlan(c);
   const Results model = runOnModel(c, plan, ModelOptions{ModelTier::Exact, 1});
-  const RayAmbiguity* a = rayZero(model);
+  const RayAmbiguity* a = ambiguityOf(model, 0);
   ASSERT_NE(a, nullptr);
   EXPECT_EQ(a->reason, AmbiguityReason::InPlane);
   EXPECT_EQ(a->replays.size(), 2u) << "the miss and a hit across the triangle";
@@ -321,7 +313,7 @@ TEST(LegalDevices, ARayInATrianglesPlaneKeepsNoReplaysWhereItsTReachesAFreeField
   const Case c = parseInline(inPlaneCase("{uint: {mul: [hit_t, 1000.0]}}"));
   const Plan plan = derivePlan(c);
   const Results model = runOnModel(c, plan, ModelOptions{ModelTier::Exact, 1});
-  const RayAmbiguity* a = rayZero(model);
+  const RayAmbiguity* a = ambiguityOf(model, 0);
   ASSERT_NE(a, nullptr);
   EXPECT_TRUE(a->replays.empty());
   for (const LegalDevice& d : judgeLegalDevices(c, plan, model, 1))
@@ -344,7 +336,7 @@ TEST(LegalDevices, ARayNearlyInATrianglesPlaneMayHitItAnywhereAcross) {
   const Case c = parseInline(text);
   const Plan plan = derivePlan(c);
   const Results model = runOnModel(c, plan, ModelOptions{ModelTier::Exact, 1});
-  const RayAmbiguity* a = rayZero(model);
+  const RayAmbiguity* a = ambiguityOf(model, 0);
   ASSERT_NE(a, nullptr) << "a clear miss before";
   EXPECT_EQ(a->reason, AmbiguityReason::InPlane);
   for (const LegalDevice& d : judgeLegalDevices(c, plan, model, 1))

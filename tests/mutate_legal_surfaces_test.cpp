@@ -19,6 +19,8 @@
 namespace rayspec {
 namespace {
 
+using model_test::ambiguityOf;
+using model_test::diagonalSquareBlas;
 using model_test::parseInline;
 
 // A plate of one triangle at z = 0 whose border edge is the diagonal x = y
@@ -76,18 +78,12 @@ Results deviceAnswering(const Case& c, const Results& model, const Answer& a) {
   return r;
 }
 
-const RayAmbiguity* rayZeroAmbiguity(const Results& model) {
-  for (const RayAmbiguity& a : model.ambiguous)
-    if (a.ray == 0) return &a;
-  return nullptr;
-}
-
 TEST(TwoSurfaces, EveryCombinationOfTheTwoEdgesIsALegalAnswer) {
   for (bool upper : {true, false}) {
     const Case c = parseInline(twoSurfaces(upper));
     const Plan plan = derivePlan(c);
     const Results model = runOnModel(c, plan, ModelOptions{ModelTier::Exact, 1});
-    const RayAmbiguity* a = rayZeroAmbiguity(model);
+    const RayAmbiguity* a = ambiguityOf(model, 0);
     ASSERT_NE(a, nullptr);
     std::set<std::pair<uint32_t, uint32_t>> hits;
     for (const Candidate& k : a->candidates)
@@ -128,16 +124,11 @@ TEST(TwoSurfaces, AnAnswerOfNoCombinationStillFails) {
 // border edge's middle. A device may meet no triangle at each: a miss, no
 // any-hit run (the miss records the payload any-hit sets: 7 after it, 0
 // without).
-const char* kBorderVertices = R"(rules: [R-WATERTIGHT]
+const std::string kBorderVertices = R"(rules: [R-WATERTIGHT]
 description: rays through a non-opaque mesh's border vertices
 scene:
   blas:
-    square:
-      - triangles:
-          vertices: [[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]]
-          indices: [0, 1, 2, 0, 2, 3]
-        flags: []
-  instances: [{blas: square}]
+)" + diagonalSquareBlas("[]") + R"(  instances: [{blas: square}]
 rays:
   list:
     - {origin: [1, -1, 5], direction: [0, 0, -1]}

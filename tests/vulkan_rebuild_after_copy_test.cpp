@@ -15,11 +15,11 @@
 #include <vector>
 
 #include "case/flag_names.h"
+#include "live_device.h"
 #include "parse_support.h"
 #include "vulkan/acceleration_structure.h"
 #include "vulkan/context.h"
 #include "vulkan/vk_fault_hook.h"
-#include "vulkan_support.h"
 
 namespace rayspec {
 namespace {
@@ -47,19 +47,8 @@ Case copiedThenUpdated(const std::string& tlas_update) {
       "  per_ray: [hit]\n");
 }
 
-class RebuildAfterCopy : public ::testing::Test {
+class RebuildAfterCopy : public LiveDevice {
  protected:
-  void SetUp() override {
-    if (!rayTracingDeviceExists()) GTEST_SKIP() << "no ray tracing device on this machine";
-    ASSERT_TRUE(createInstance(ctx_, true).ok());
-    ASSERT_TRUE(selectDevice(ctx_, "").ok());
-    ASSERT_TRUE(createDevice(ctx_).ok());
-  }
-  void TearDown() override {
-    injectLayoutFault(LayoutFault::None);
-    if (ctx_.device) destroyDevice(ctx_);
-    if (ctx_.instance) destroyInstance(ctx_);
-  }
   // The accelerationStructureSize the device reports for a top level of
   // the case's instances, built with the case's flags and compaction.
   VkDeviceSize topLevelBuildSize(const Case& c) const {
@@ -88,7 +77,6 @@ class RebuildAfterCopy : public ::testing::Test {
     EXPECT_TRUE(built.ok()) << built.error().format();
     return built.ok() && built->size() == 1 ? built->front() : BuiltStructure{};
   }
-  VulkanContext ctx_;
   std::vector<std::string> overruns_;
   std::vector<DeviceFinding> query_findings_;
 };

@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
+#include "live_device.h"
 #include "parse_support.h"
 #include "vulkan/acceleration_structure.h"
 #include "vulkan/context.h"
 #include "vulkan/vk_fault_hook.h"
-#include "vulkan_support.h"
 
 namespace rayspec {
 namespace {
@@ -45,19 +45,12 @@ Case queried(const std::string& queries, const std::string& copy) {
       "  per_ray: [hit]\n");
 }
 
-class StructureQueryRun : public ::testing::Test {
+class StructureQueryRun : public LiveDevice {
  protected:
   void SetUp() override {
-    if (!rayTracingDeviceExists()) GTEST_SKIP() << "no ray tracing device on this machine";
-    ASSERT_TRUE(createInstance(ctx_, true).ok());
-    ASSERT_TRUE(selectDevice(ctx_, "").ok());
-    ASSERT_TRUE(createDevice(ctx_).ok());
+    LiveDevice::SetUp();
+    if (IsSkipped() || HasFatalFailure()) return;
     if (!ctx_.info.ray_tracing_maintenance1) GTEST_SKIP() << "no VK_KHR_ray_tracing_maintenance1";
-  }
-  void TearDown() override {
-    injectLayoutFault(LayoutFault::None);
-    if (ctx_.device) destroyDevice(ctx_);
-    if (ctx_.instance) destroyInstance(ctx_);
   }
   // The findings the scene's queries gave.
   std::vector<DeviceFinding> findings(const Case& c) {
@@ -71,7 +64,6 @@ class StructureQueryRun : public ::testing::Test {
     cleanup.run();
     return found;
   }
-  VulkanContext ctx_;
 };
 
 std::string joined(const std::vector<DeviceFinding>& found) {

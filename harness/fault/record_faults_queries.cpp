@@ -28,20 +28,25 @@ FaultResult plantIfAsked(RecordFaultArgs& a, std::initializer_list<StructureQuer
   return plantDeviceFinding(a, std::move(finding), std::move(what));
 }
 
+// Query q of `structure` answering 4352 bytes, more than the 4096 it was
+// created with, as the device side's check words it.
+FaultResult sizeReportedLarge(RecordFaultArgs& a, StructureQuery q, const char* rule,
+                              const std::string& structure, std::string what) {
+  return plantIfAsked(a, {q},
+                      {rule, structure + ", query " + nameOf(q) +
+                                 ": 4352 bytes, more than the 4096 bytes it was created with "
+                                 "(its build's accelerationStructureSize) (planted)"},
+                      std::move(what));
+}
+
 FaultResult compactedSizeReportedLarge(RecordFaultArgs& a) {
-  return plantIfAsked(a, {StructureQuery::CompactedSize},
-                      {"R-AS-QUERY-COMPACTED",
-                       "BLAS 0, query compacted_size: 4352 bytes, more than the 4096 bytes it was "
-                       "created with (its build's accelerationStructureSize) (planted)"},
-                      "a compacted size larger than the structure");
+  return sizeReportedLarge(a, StructureQuery::CompactedSize, "R-AS-QUERY-COMPACTED", "BLAS 0",
+                           "a compacted size larger than the structure");
 }
 
 FaultResult structureSizeReportedLarge(RecordFaultArgs& a) {
-  return plantIfAsked(a, {StructureQuery::Size},
-                      {"R-AS-QUERY-SIZE",
-                       "TLAS 0, query size: 4352 bytes, more than the 4096 bytes it was created "
-                       "with (its build's accelerationStructureSize) (planted)"},
-                      "a structure size larger than the structure");
+  return sizeReportedLarge(a, StructureQuery::Size, "R-AS-QUERY-SIZE", "TLAS 0",
+                           "a structure size larger than the structure");
 }
 
 FaultResult queryUnavailable(RecordFaultArgs& a) {

@@ -41,12 +41,6 @@ Result<SparseBuffer> storageFor(const VulkanContext& ctx, VkDeviceSize size,
   return whole;
 }
 
-void logStructure(VkAccelerationStructureKHR as, const VkAccelerationStructureCreateInfoKHR& info,
-                  VkAccelerationStructureTypeKHR level, VkDeviceSize page) {
-  if (BuildLog* log = buildLog())
-    log->structures.push_back({as, info.type, level, info.offset, info.size, page, info.buffer});
-}
-
 }  // namespace
 
 VkAccelerationStructureTypeKHR StructureMaking::createdAs(
@@ -73,13 +67,20 @@ Result<VkAccelerationStructureKHR> createStructure(const VulkanContext& ctx,
   info.offset = storage.offset;
   info.size = size;
   info.type = created;
+  return createStructureOver(ctx, info, level, storage.page, cleanup);
+}
+
+Result<VkAccelerationStructureKHR> createStructureOver(
+    const VulkanContext& ctx, const VkAccelerationStructureCreateInfoKHR& info,
+    VkAccelerationStructureTypeKHR level, VkDeviceSize page, Cleanup& cleanup) {
   VkAccelerationStructureKHR as = VK_NULL_HANDLE;
   RAYSPEC_TRY_VOID(vkCheck(ctx.fn.createAccelerationStructure(ctx.device, &info, nullptr, &as),
                            "vkCreateAccelerationStructureKHR"));
   VkDevice device = ctx.device;
   auto destroy = ctx.fn.destroyAccelerationStructure;
   cleanup.add([device, destroy, as] { destroy(device, as, nullptr); });
-  logStructure(as, info, level, storage.page);
+  if (BuildLog* log = buildLog())
+    log->structures.push_back({as, info.type, level, info.offset, info.size, page, info.buffer});
   return as;
 }
 
@@ -758,37 +759,6 @@ Result<void> buildDecoy(const VulkanContext& ctx, const Scene& scene,
   return {};
 }
 
-// R-AS-CREATE (reuse_creation_buffer): another structure created over each
-// built one, at its offset and size, kept until cleanup and never built.
-// Planted fault creation-clears-memory: each such creation zeroes the
-// memory, as a driver whose vkCreateAccelerationStructureKHR wrote it would.
-Result<void> createOverlays(const VulkanContext& ctx, const StructureArena& arena,
-                            Cleanup& cleanup) {
-  const bool clears = injectedLayoutFault() == LayoutFault::CreationClears;
-  VkCommandBuffer cmd = VK_NULL_HANDLE;
-  if (clears) {
-    RAYSPEC_TRY(cmd, beginCommands(ctx, cleanup));
-  }
-  for (const ArenaPlace& p : arena.places()) {
-    VkAccelerationStructureCreateInfoKHR info{
-        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR};
-    info.buffer = p.buffer;
-    info.offset = p.offset;
-    info.size = p.size;
-    info.type = p.type;
-    VkAccelerationStructureKHR as = VK_NULL_HANDLE;
-    RAYSPEC_TRY_VOID(vkCheck(ctx.fn.createAccelerationStructure(ctx.device, &info, nullptr, &as),
-                             "vkCreateAccelerationStructureKHR"));
-    VkDevice device = ctx.device;
-    auto destroy = ctx.fn.destroyAccelerationStructure;
-    cleanup.add([device, destroy, as] { destroy(device, as, nullptr); });
-    logStructure(as, info, p.type, 0);
-    if (clears) vkCmdFillBuffer(cmd, p.buffer, p.offset, alignUp(p.size, 4), 0);
-  }
-  if (clears) RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd));
-  return {};
-}
-
 }  // namespace
 
 Result<std::vector<BuiltStructure>> buildScene(const VulkanContext& ctx, const Scene& scene,
@@ -805,7 +775,8 @@ Result<std::vector<BuiltStructure>> buildScene(const VulkanContext& ctx, const S
     RAYSPEC_TRY_VOID(buildDecoy(ctx, scene, extra_flags, arena, overruns));
   RAYSPEC_TRY(std::vector<BuiltStructure> tlases,
               buildOnce(ctx, scene, extra_flags, &arena, cleanup, overruns, query_findings));
-  if (storage == StructureStorage::Reused) RAYSPEC_TRY_VOID(createOverlays(ctx, arena, cleanup));
+  if (storage == StructureStorage::Reused)
+    RAYSPEC_TRY_VOID(createOverlays(ctx, arena, injectedLayoutFault(), cleanup));
   return tlases;
 }
 

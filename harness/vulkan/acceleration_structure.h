@@ -76,4 +76,12 @@ Result<VkAccelerationStructureKHR> createStructure(const VulkanContext& ctx,
                                                    Cleanup& cleanup, MemoryGuards& guards,
                                                    const std::string& what);
 
+// The structure `info` describes (its buffer, offset, size and created
+// type), destroyed by cleanup; the build log (vulkan/build_log.h) notes it
+// with `level`, the type its builds name, and `page`, its sparse buffer's
+// page size (0: bound whole). Or the Device error.
+Result<VkAccelerationStructureKHR> createStructureOver(
+    const VulkanContext& ctx, const VkAccelerationStructureCreateInfoKHR& info,
+    VkAccelerationStructureTypeKHR level, VkDeviceSize page, Cleanup& cleanup);
+
 }  // namespace rayspec

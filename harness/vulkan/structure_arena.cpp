@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "base/align.h"
+#include "vulkan/acceleration_structure.h"
+#include "vulkan/commands.h"
 #include "vulkan/memory_guards.h"
 
 namespace rayspec {
@@ -56,6 +58,27 @@ void StructureArena::rewind() {
   for (Chunk& c : chunks_) c.used = 0;
   current_ = 0;
   places_.clear();
+}
+
+Result<void> createOverlays(const VulkanContext& ctx, const StructureArena& arena,
+                            LayoutFault fault, Cleanup& cleanup) {
+  const bool clears = fault == LayoutFault::CreationClears;
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  if (clears) {
+    RAYSPEC_TRY(cmd, beginCommands(ctx, cleanup));
+  }
+  for (const ArenaPlace& p : arena.places()) {
+    VkAccelerationStructureCreateInfoKHR info{
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR};
+    info.buffer = p.buffer;
+    info.offset = p.offset;
+    info.size = p.size;
+    info.type = p.type;
+    RAYSPEC_TRY_VOID(createStructureOver(ctx, info, p.type, 0, cleanup));
+    if (clears) vkCmdFillBuffer(cmd, p.buffer, p.offset, alignUp(p.size, 4), 0);
+  }
+  if (clears) RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd));
+  return {};
 }
 
 }  // namespace rayspec

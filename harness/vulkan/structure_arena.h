@@ -18,6 +18,7 @@
 #include "vulkan/context.h"
 #include "vulkan/memory.h"
 #include "vulkan/sparse_buffer.h"
+#include "vulkan/vk_fault_hook.h"
 
 namespace rayspec {
 
@@ -61,6 +62,14 @@ class StructureArena {
   size_t current_ = 0;
   std::vector<ArenaPlace> places_;
 };
+
+// R-AS-CREATE (scene.build.storage reused; reuse_creation_buffer): another
+// structure created over each of the arena's places, at its offset and size,
+// kept until cleanup and never built. `fault` CreationClears (the planted
+// fault creation-clears-memory): each such creation zeroes the memory, as a
+// driver whose vkCreateAccelerationStructureKHR wrote it would.
+Result<void> createOverlays(const VulkanContext& ctx, const StructureArena& arena,
+                            LayoutFault fault, Cleanup& cleanup);
 
 // What scene.build.storage reused builds first and destroys: the scene as
 // first built (no update, no copy), every box and every float vertex moved
