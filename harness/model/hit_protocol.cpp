@@ -111,18 +111,24 @@ bool HitProtocol::reportInside(const CStmt& s, StageEnv& env, Traversal& tr, flo
     tr.reports->push_back({tr.cur_index, t});
   if (tr.exact) {
     // R-PREC: a sphere root within its error bound of an interval end may
-    // fall on either side on a device. Not against the current candidate's
-    // own committed report: the device compares its own roots consistently.
+    // fall on either side on a device; the current tmax is a committed t
+    // (a root) of its own error. Against the current candidate's own
+    // committed report, only past it: the device orders its own roots as
+    // the model does, but they coincide where its discriminant rounds to 0
+    // (then sphere_far = sphere_near, at tmax: inside; fuzz seed 111014 on
+    // NVIDIA reported its far root so).
     const uint32_t ord = tr.report_ord++;
     if (const ShaderDecision* f = tr.forced(1, ord)) {
       inside = f->value;
     } else if (tr.shader_unsure && reportsSphereRoot(s, env)) {
       const HitView& h = *env.hit;
       const double et = sphereRootError(s, h, *env.ray) + tr.tol(t);
+      const double committed_err = tr.best.valid ? tr.best.t_err : 0.0;
       const bool own = tr.best.valid && tr.best.instance == h.instance &&
                        tr.best.geometry == h.geometry && tr.best.primitive == h.primitive;
       const bool near_end = std::fabs(double(t) - tr.ray.tmin) <= et ||
-                            (!own && std::fabs(double(t) - tr.tmax_cur) <= et);
+                            ((!own || double(t) > tr.tmax_cur) &&
+                             std::fabs(double(t) - tr.tmax_cur) <= et + committed_err);
       if (near_end) tr.shader_unsure->push_back({tr.cur_index, 1, ord, inside});
     }
   }

@@ -59,6 +59,7 @@ void TraceClassifier::addCommitted(const Committed& b, const WhatIf& how) {
   // A legal answer's t (a sphere root) a device may round further than
   // hit_t's tolerance: its bound, as boundT gives the model's own.
   if (!how.actual && b.valid && b.t_err > 0) boundTOf(b.t, b.t_err);
+  noteRootTFree(b);
   // The actual run's effect is the launch state's now, before any what-if.
   const uint64_t effect = how.actual ? m_.effectOf(tr_.best, *tr_.payload, tr_.query) : b.effect;
   if (std::find(replay_effects_.begin(), replay_effects_.end(), effect) == replay_effects_.end()) {
@@ -207,7 +208,8 @@ void TraceClassifier::tryUnsure() {
 // R-PREC on a box the model's ray misses (ModelCandidate::outside): offered
 // in a what-if run, its intersection program's decisions within rounding
 // (a sphere test from a far origin) are noted there and each flipped in a
-// run of its own, the box offered.
+// run of its own, the box offered (flipNoted: with the decisions its flip
+// leaves within rounding).
 void TraceClassifier::tryNearBoxDecisions() {
   if (!m_.sh_.programs->reads_sphere) return;
   bool any = false;
@@ -217,30 +219,42 @@ void TraceClassifier::tryNearBoxDecisions() {
     offered.force[k] = 1;
     std::vector<ShaderDecision> noted;
     m_.sandbox(tr_, cands_, offered, payload_in_, nullptr, &noted);
-    for (const ShaderDecision& d : noted) {
-      if (d.cand != k) continue;
-      WhatIf flipped = offered;
-      flipped.shader = d;
-      flipped.shader->value = !d.value;
-      addCommitted(m_.sandbox(tr_, cands_, flipped, payload_in_), flipped);
-      any = true;
-    }
+    std::erase_if(noted, [&](const ShaderDecision& d) { return d.cand != k; });
+    any = flipNoted(offered, noted, kShaderFlipDepth) || any;
   }
   if (any && !reason_) reason_ = AmbiguityReason::ShaderArith;
 }
 
 // R-PREC: an intersection program's decision that rounding may flip (sphere
-// discriminant or root near an end): each flipped alone in a what-if run;
-// the ray is ambiguous, as the device's counters may differ.
+// discriminant or root near an end): each flipped in a what-if run, with
+// the decisions its flip leaves within rounding (flipNoted); the ray is
+// ambiguous, as the device's counters may differ.
 void TraceClassifier::tryShaderDecisions(const std::vector<ShaderDecision>& shader_unsure) {
   if (shader_unsure.empty()) return;
   addCommitted(tr_.best, actual());
-  for (const ShaderDecision& d : shader_unsure) {
-    WhatIf how{false, {}, -1, -1, d};
-    how.shader->value = !d.value;
-    addCommitted(m_.sandbox(tr_, cands_, how, payload_in_), how);
-  }
+  flipNoted(WhatIf{false, {}, -1, -1, {}}, shader_unsure, kShaderFlipDepth);
   if (!reason_) reason_ = AmbiguityReason::ShaderArith;
+}
+
+// Each decision of `noted` (those a what-if run `base` left within rounding)
+// flipped in a run of its own, base's flips kept; then, `depth` - 1 deep,
+// those that run leaves within rounding. A device rounds every decision of
+// a trace, not one: from a far origin (fuzz seeds 120524, 120641 on
+// NVIDIA) one box's sphere test misses while another's hits, or a box's
+// root passes the committed one's, both within rounding. False when none.
+bool TraceClassifier::flipNoted(const WhatIf& base, const std::vector<ShaderDecision>& noted,
+                                size_t depth) {
+  for (const ShaderDecision& d : noted) {
+    WhatIf flipped = base;
+    flipped.shaders.push_back(d);
+    flipped.shaders.back().value = !d.value;
+    std::vector<ShaderDecision> further;
+    addCommitted(
+        m_.sandbox(tr_, cands_, flipped, payload_in_, nullptr, depth > 1 ? &further : nullptr),
+        flipped);
+    if (depth > 1) flipNoted(flipped, further, depth - 1);
+  }
+  return !noted.empty();
 }
 
 // R-PREC: the committed t is a root whose rounding on a device may exceed
@@ -254,6 +268,20 @@ void TraceClassifier::boundT() {
   for (size_t k : unsure_)
     if (cands_[k].in_plane) boundTOf(cands_[k].t, cands_[k].t_err);
   if (tr_.best.valid && tr_.best.t_err > 0) boundTOf(tr_.best.t, tr_.best.t_err);
+  noteRootTFree(tr_.best);
+}
+
+// A legal hit on a box at a sphere root a device may round past hit_t's
+// tolerance, where the programs read the t into a value of their own (a
+// colour of hit_t or hit_position): a replay pins that value, a device's
+// lies anywhere in the bound (fuzz seeds 120121, 120641, 120778 on
+// NVIDIA): the ray keeps no replays (LaunchState::ray_t_free).
+void TraceClassifier::noteRootTFree(const Committed& b) {
+  if (!b.valid || !m_.sh_.programs->reads_root_t_free) return;
+  const ModelInstance& mi = scene_.instances[b.instance];
+  if (scene_.blases[mi.blas].geometries[b.geometry].kind != Geometry::Kind::Aabbs) return;
+  const Tolerance tol = toleranceFor("hit_t");
+  if (b.t_err > tol.abs + tol.rel * std::max(std::fabs(b.t), 1.0)) m_.st_.ray_t_free = true;
 }
 
 void TraceClassifier::boundTOf(double t, double t_err) {
@@ -393,7 +421,7 @@ Committed ModelTracer::decideAs(const Traversal& actual, const std::vector<Model
   v.inlined = actual.inlined;
   v.prefer = how.prefer;
   v.first = how.first;
-  v.shader_force = how.shader ? &*how.shader : nullptr;
+  v.shader_force = how.shaders.empty() ? nullptr : &how.shaders;
   v.order = how.order.empty() ? nullptr : &how.order;
   v.tie = how.tie;
   v.shader_unsure = noted;

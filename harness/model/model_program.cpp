@@ -35,6 +35,21 @@ bool isInPlaneFree(Builtin b) {
   }
 }
 
+// The built-ins a sphere root's rounding moves (CPipeline::reads_root_t_free):
+// the hit's t and what follows from it, no more.
+bool isRootTFree(Builtin b) {
+  switch (b) {
+    case kBiHitT:
+    case kBiTmax:
+    case kBiHitPosition:
+    case kBiQCandT:
+    case kBiQCommittedT:
+      return true;
+    default:
+      return false;
+  }
+}
+
 // `record: {field: e}` with e the built-in of the field's own name, a field
 // the comparison widens by the ray's t bound (hit_t, ray_tmax, hit_position).
 bool isOwnBoundedField(const std::string& field, const Expr& e) {
@@ -117,6 +132,8 @@ struct Compiler {
           out.needs |= builtins()[r.builtin].needs;
           if (!into_bounded_field && isInPlaneFree(static_cast<Builtin>(r.builtin)))
             out.reads_in_plane_free = true;
+          if (!into_bounded_field && isRootTFree(static_cast<Builtin>(r.builtin)))
+            out.reads_root_t_free = true;
         }
         break;
       }

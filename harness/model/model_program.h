@@ -161,6 +161,11 @@ struct CPipeline {
   // field of bounded t (hit_t, ray_tmax, hit_position: a replay's record
   // holds those to the ray's t bound): such a ray keeps no replays.
   bool reads_in_plane_free = false;
+  // The hit's t or what follows from it (hit_t, ray_tmax, hit_position, a
+  // query's t) is read other than straight into its own record field: a
+  // ray whose t a device may round past hit_t's tolerance (a sphere root
+  // from a far origin, TraceClassifier::noteRootTFree) keeps no replays.
+  bool reads_root_t_free = false;
   bool any_hit_terminates = false;  // some group's any-hit has a `terminate`
   // Its any-hit or intersection programs may depend on the order candidates
   // arrive in (model/order_dependence.h).

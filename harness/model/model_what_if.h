@@ -54,7 +54,7 @@ enum class TieRule : uint8_t { Model, Keep, Replace, ConfirmDrop };
 // How one what-if run of the exact tier decides (ModelTracer::sandbox):
 // candidates forced to be a hit (1) or not (0), -1 the model's own decision;
 // the candidate that wins every tie (prefer) or is processed first (first),
-// -1 none; an intersection program's decision flipped; the order candidates
+// -1 none; intersection programs' decisions flipped; the order candidates
 // are processed in (a permutation of their indices; empty: the model's own,
 // R-ORDER-UNSPEC); what a candidate at the committed t does (R-TIE, TieRule).
 // `actual`: the trace's own run, no what-if.
@@ -62,7 +62,7 @@ struct WhatIf {
   bool actual = false;
   std::vector<int8_t> force;  // empty: none forced
   long prefer = -1, first = -1;
-  std::optional<ShaderDecision> shader;
+  std::vector<ShaderDecision> shaders;  // each with the value it is forced to
   std::vector<uint32_t> order;
   TieRule tie = TieRule::Model;
 };

@@ -43,6 +43,8 @@ class TraceClassifier {
   bool tryPermutations(const std::vector<std::pair<size_t, double>>& reports);
   // Intersection-program decisions within rounding.
   void tryShaderDecisions(const std::vector<ShaderDecision>& shader_unsure);
+  // How many of them one what-if run flips at most (flipNoted).
+  static constexpr size_t kShaderFlipDepth = 2;
   // A committed t whose rounding may exceed hit_t's tolerance, and the span
   // of an unsure in-plane triangle: their bounds.
   void boundT();
@@ -55,11 +57,13 @@ class TraceClassifier {
   // findUnsure up to final_t; tryUnsure's answers, reaching as far as they do.
   void findUnsure(const std::vector<std::pair<size_t, double>>& reports, double final_t);
   std::vector<WhatIfAnswer> unsureAnswers(std::vector<WhatIfAnswer>& leaks);
+  bool flipNoted(const WhatIf& base, const std::vector<ShaderDecision>& noted, size_t depth);
   void addCommitted(const Committed& b, const WhatIf& how);
   void addLeak(const Committed& b, const WhatIf& how);
   static WhatIf actual() { return {true, {}, -1, -1, {}}; }
   bool sameAsCommitted(const Committed& b) const;
   void boundTOf(double t, double t_err);
+  void noteRootTFree(const Committed& b);
   bool inPlaneTMatters(size_t u) const;
   // tryPermutations' steps: the candidates whose order may matter, whether
   // two reports tie, what the actual run left behind, and a case error

@@ -75,14 +75,16 @@ struct Traversal {
   // (CHitGroup::leading_report), in or out of the interval (counter_floors.cpp).
   std::vector<LeadReport>* lead_reports = nullptr;
   // Exact tier, R-PREC: the actual run notes its intersection programs'
-  // decisions that rounding may flip; a what-if run flips one of them.
+  // decisions that rounding may flip; a what-if run flips some of them.
   std::vector<ShaderDecision>* shader_unsure = nullptr;
-  const ShaderDecision* shader_force = nullptr;
+  const std::vector<ShaderDecision>* shader_force = nullptr;
   uint32_t sphere_ord = 0, report_ord = 0;  // within the current intersection run
-  // The forced value of this decision, if it is the one forced.
+  // The forced value of this decision, if it is one of those forced.
   const ShaderDecision* forced(uint8_t kind, uint32_t ordinal) const {
-    const ShaderDecision* f = shader_force;
-    return f && f->kind == kind && f->ordinal == ordinal && f->cand == cur_index ? f : nullptr;
+    if (!shader_force) return nullptr;
+    for (const ShaderDecision& f : *shader_force)
+      if (f.kind == kind && f.ordinal == ordinal && f.cand == cur_index) return &f;
+    return nullptr;
   }
 
   explicit Traversal(const TraceRay& r) : ray(r) {}
