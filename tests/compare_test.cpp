@@ -257,6 +257,26 @@ TEST(Compare, DoubleHitAtASharedEdgeIsAQualityWarning) {
   EXPECT_NE(v.headline().find("double hit"), std::string::npos);
 }
 
+// NVIDIA fuzz seeds 120111, 120380 and 120598 (issue 63): the model decided
+// the shared triangles as hits but ran no any-hit on them (opaque, or their
+// hit group has none); a device that ran any-hit no more often, or once on
+// another candidate at the same t (another instance), hit no edge twice.
+TEST(Compare, NoDoubleHitWhereTheSharedTrianglesRanNoAnyHit) {
+  Case c = squareCase();
+  c.scene.blases[0].geometries[0].flags = kGeometryNoDuplicateAnyHit;
+  Results model = sampleResults("model");
+  setUint(model, 2, "any_hit_runs", 0);
+  model.ambiguous.push_back(
+      {2, AmbiguityReason::Edge, {{false, 0, 0, 0}}, {{true, 0, 0, 0}, {true, 0, 0, 1}}});
+  for (uint32_t runs : {0u, 1u}) {
+    Results d = sampleResults("vulkan");
+    setUint(d, 2, "any_hit_runs", runs);
+    countFromRecords(d);
+    const Verdict v = compareResults(c, samplePlan(c), d, model);
+    EXPECT_EQ(v.status, Status::Pass) << runs << ": " << v.headline();
+  }
+}
+
 TEST(Compare, MissAtASharedEdgeIsALeakEvenWhenAMissIsLegal) {
   const Case c = squareCase();
   Results leak = sampleResults("vulkan");

@@ -187,6 +187,30 @@ TEST(ExactInterval, SharedEdgeAtAnExactEndIsAClearMiss) {
   EXPECT_EQ(amb[1]->reason, AmbiguityReason::Edge);
 }
 
+// A shared edge whose t rounds across tmin or tmax on a device (NVIDIA fuzz
+// seed 110968, issue 63: edges aimed at t = tmin): a device may find
+// neither triangle, so a miss is a legal answer, no leak, and the reason is
+// the interval end. The model's own t is above tmin (below tmax): it hits.
+TEST(ExactInterval, SharedEdgeAtARoundedEndMayMissBoth) {
+  const float z = 0.1f;
+  Ray near_tmin = downRay(0.25f, 0.25f);
+  near_tmin.tmin = std::nextafter(5 - z, 0.0f);
+  Ray near_tmax = downRay(0.25f, 0.25f);
+  near_tmax.tmax = 5 - z;
+  Case c = baseCase({quad(z)}, {near_tmin, near_tmax});
+  Results r = run(c, ModelTier::Exact);
+  auto amb = byRay(r);
+  const std::set<std::array<uint32_t, 3>> either_or_miss = {{~0u, ~0u, ~0u}, {0, 0, 0}, {0, 0, 1}};
+  for (uint32_t ray : {0u, 1u}) {
+    EXPECT_EQ(word(r, ray, "hit"), 1u) << ray;
+    ASSERT_EQ(amb.count(ray), 1u) << ray;
+    EXPECT_EQ(legal(*amb[ray]), either_or_miss) << ray;
+    EXPECT_TRUE(amb[ray]->leak_answers.empty()) << ray;
+  }
+  EXPECT_EQ(amb[0]->reason, AmbiguityReason::TminTie);
+  EXPECT_EQ(amb[1]->reason, AmbiguityReason::TmaxTie);
+}
+
 // R-CAND-AABB-CLOSED: reports at exactly the ray's tmin and tmax are
 // accepted, and no tie: nothing is committed yet.
 TEST(ExactInterval, AabbReportsAtTheEndsAreAccepted) {

@@ -170,7 +170,7 @@ void compareAnyHitRuns(const Case& c, const Results& device, const Results& mode
     if (const auto it = ambiguous.find(static_cast<uint32_t>(i)); it != ambiguous.end()) {
       // Only where the triangles really share the edge, or close a fan around
       // the vertex: on the outer border of a mesh hitting two is no rule's break.
-      const SharedCrossing s = sharedCrossing(c, *it->second);
+      const SharedCrossing s = anyHitCrossing(c, *it->second, m[ahit]);
       if (s.triangles && d[ahit] + s.model_hits > m[ahit] + 1)
         doubled.addRay(static_cast<uint32_t>(i));
       continue;

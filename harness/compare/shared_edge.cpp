@@ -107,4 +107,9 @@ SharedCrossing sharedCrossing(const Case& c, const RayAmbiguity& a) {
   return s;
 }
 
+SharedCrossing anyHitCrossing(const Case& c, const RayAmbiguity& a, uint32_t model_any_hit_runs) {
+  const SharedCrossing s = sharedCrossing(c, a);
+  return model_any_hit_runs >= s.model_hits ? s : SharedCrossing{};
+}
+
 }  // namespace rayspec

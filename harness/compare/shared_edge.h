@@ -31,4 +31,12 @@ struct SharedCrossing {
 };
 SharedCrossing sharedCrossing(const Case& c, const RayAmbiguity& a);
 
+// sharedCrossing where the model's any-hit ran for each shared triangle it
+// decided as a hit (model_any_hit_runs at least model_hits): only there do
+// any-hit runs of a device beyond the model's tell a double hit. Empty where
+// those triangles ran none (opaque, or a hit group without any-hit): there
+// a device's extra run is on another candidate (a tie with another
+// instance, whose triangles share no edge with these).
+SharedCrossing anyHitCrossing(const Case& c, const RayAmbiguity& a, uint32_t model_any_hit_runs);
+
 }  // namespace rayspec

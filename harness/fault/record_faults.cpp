@@ -29,10 +29,10 @@ std::string counterNote(const std::string& counter, int delta) {
 // candidates any-hit ignored: the model ran any-hit for each of the
 // triangles sharing it that it decided as hits. Empty when not such a ray.
 SharedCrossing sharedEdgeAnyHitRay(const RecordFaultArgs& a, const RayAmbiguity& amb) {
-  const SharedCrossing s = sharedCrossing(a.c, amb);
-  if (!s.triangles || amb.ray >= a.dev.rays() || a.mod.get(amb.ray, "closest_hit_runs") != 0 ||
-      a.mod.get(amb.ray, "intersection_runs") != 0 ||
-      a.mod.get(amb.ray, "any_hit_runs") < s.model_hits)
+  if (amb.ray >= a.dev.rays()) return {};
+  const SharedCrossing s = anyHitCrossing(a.c, amb, a.mod.get(amb.ray, "any_hit_runs"));
+  if (!s.triangles || a.mod.get(amb.ray, "closest_hit_runs") != 0 ||
+      a.mod.get(amb.ray, "intersection_runs") != 0)
     return {};
   return s;
 }

@@ -13,6 +13,7 @@ struct FanTriangle {
   std::array<Vec3, 3> v{};
   uint8_t near = 0;
   bool front = true;
+  bool degenerate = false;  // TriAmbiguity::Degenerate: a device may see no triangle
 };
 
 bool sameCorner(const Vec3& a, const Vec3& b) {
@@ -76,8 +77,30 @@ std::vector<Vec3> nearVertices(const std::vector<FanTriangle>& tris) {
   return out;
 }
 
+// A near edge that no other triangle of the group, facing alike, has in the
+// opposite direction: a border, which the ray may pass beside.
+bool borderEdgeNear(const std::vector<FanTriangle>& tris) {
+  for (const FanTriangle& t : tris)
+    for (int i = 0; i < 3; ++i) {
+      if (!(t.near & (1u << i))) continue;
+      bool partner = false;
+      for (const FanTriangle& u : tris)
+        partner = partner || (u.front == t.front &&
+                              directedEdges({u}, t.v[(i + 2) % 3], t.v[(i + 1) % 3]) > 0);
+      if (!partner) return true;
+    }
+  return false;
+}
+
 bool closes(const std::vector<FanTriangle>& tris) {
   if (tris.size() < 2) return false;
+  // Nearly edge-on or within reach of all its edges (a ray nearly in the
+  // plane, an error larger than the triangle): a device may see it with no
+  // area (culled, R-FACE-DET) or pass outside; no longer closed either
+  // where a near edge is the border.
+  for (const FanTriangle& t : tris)
+    if (t.degenerate) return false;
+  if (borderEdgeNear(tris)) return false;
   const std::vector<Vec3> vertices = nearVertices(tris);
   if (vertices.empty()) return sharedEdgeNear(tris);
   for (const Vec3& p : vertices)
@@ -97,7 +120,8 @@ bool closesAroundRay(const ModelScene& scene, const std::vector<ModelCandidate>&
     const ModelGeometry& g = scene.blases[scene.instances[c.instance].blas].geometries[c.geometry];
     if (c.primitive >= g.triangles.size()) return true;  // no corners kept: as before
     by_geometry[{c.instance, c.geometry}].push_back(
-        {g.triangles[c.primitive], c.near_edges, trace_detail::facing(scene, c, ray, flags).front});
+        {g.triangles[c.primitive], c.near_edges, trace_detail::facing(scene, c, ray, flags).front,
+         c.ambiguity == TriAmbiguity::Degenerate});
   }
   for (const auto& [key, tris] : by_geometry)
     if (closes(tris)) return true;

@@ -10,7 +10,10 @@
 // vertex whose every edge at that vertex is shared by exactly two of them.
 // The model asks in addition that the triangles face the ray alike: a fold
 // (one triangle twice, in both windings) or a silhouette edge puts both on
-// one side of the edge, and a watertight device may pass beside them both.
+// one side of the edge, and a watertight device may pass beside them both;
+// that no edge near the ray is a border (no other triangle of the group has
+// it: the error reaches past the mesh); and that none of them is degenerate
+// (TriAmbiguity::Degenerate: nearly edge-on, a zero area a device culls).
 #pragma once
 
 #include <cstddef>

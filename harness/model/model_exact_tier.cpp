@@ -86,7 +86,6 @@ void TraceClassifier::addLeak(const Committed& b, const WhatIf& how) {
 
 void TraceClassifier::findUnsure(const std::vector<std::pair<size_t, double>>& reports,
                                  double final_t) {
-  const TraceRay& r = tr_.ray;
   unsure_.clear();
   faces_ = false;
   // R-ISECT-REPORT: a box's intersection program reports anywhere in the
@@ -109,18 +108,20 @@ void TraceClassifier::findUnsure(const std::vector<std::pair<size_t, double>>& r
     }
     if (!eligible(cand)) continue;
     const double tl = tr_.tol(cand.t);
+    const bool near_edge = cand.ambiguity != TriAmbiguity::None && cand.t <= final_t + tl;
     std::optional<AmbiguityReason> why;
-    if (cand.in_plane && cand.t - cand.t_err <= final_t + tl)
-      why = AmbiguityReason::InPlane;
-    else if (cand.ambiguity != TriAmbiguity::None && cand.t <= final_t + tl)
+    if (cand.in_plane && cand.t - cand.t_err <= final_t + tl) why = AmbiguityReason::InPlane;
+    // R-CAND-TRI-OPEN: an interval end is a tie only where a device's t may
+    // round across it (model/exact_interval.h). It outranks an edge or
+    // vertex there: a device may find none of the triangles around it, a
+    // miss that is no leak (whatIf).
+    else if ((cand.hit || near_edge) && tr_.nearTmin(cand))
+      why = AmbiguityReason::TminTie;
+    else if ((cand.hit || near_edge) && tr_.nearTmax(cand))
+      why = AmbiguityReason::TmaxTie;
+    else if (near_edge)
       why =
           cand.ambiguity == TriAmbiguity::Vertex ? AmbiguityReason::Vertex : AmbiguityReason::Edge;
-    // R-CAND-TRI-OPEN: an interval end is a tie only where a device's t may
-    // round across it (model/exact_interval.h).
-    else if (cand.hit && !cand.exact_tmin && std::fabs(cand.t - r.tmin) <= tr_.endTol(cand))
-      why = AmbiguityReason::TminTie;
-    else if (cand.hit && !cand.exact_tmax && std::fabs(cand.t - r.tmax) <= tr_.endTol(cand))
-      why = AmbiguityReason::TmaxTie;
     if (!why) continue;
     // The first reason found, except that a vertex outranks an edge met at
     // the same t (the triangles around a vertex include ones that see only
@@ -634,7 +635,11 @@ std::vector<WhatIfAnswer> ModelTracer::whatIf(const Traversal& actual,
     for (size_t a = 0; a < g1 - g0; ++a) choices[g].push_back(a);
     const std::vector<size_t> members(unsure.begin() + static_cast<long>(g0),
                                       unsure.begin() + static_cast<long>(g1));
-    closes[g] = closesAroundRay(*sh_.scene, cands, members, actual.ray, actual.flags);
+    // At an interval end a device may find none of them (nearTmin): no leak.
+    closes[g] = closesAroundRay(*sh_.scene, cands, members, actual.ray, actual.flags) &&
+                std::none_of(members.begin(), members.end(), [&](size_t k) {
+                  return actual.nearTmin(cands[k]) || actual.nearTmax(cands[k]);
+                });
     if (!closes[g]) choices[g].push_back(kNone);
     combinations = std::min(combinations * (choices[g].size() + 1), kMaxWhatIfCombinations + 1);
   }

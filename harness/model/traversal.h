@@ -113,6 +113,15 @@ struct Traversal {
   // A triangle candidate's t against an interval end: its own error bound
   // (translated frame, model/watertight.h) where known.
   double endTol(const ModelCandidate& c) const { return c.t_err > 0 ? c.t_err : tol(c.t); }
+  // R-CAND-TRI-OPEN: the candidate's t within rounding of tmin (of tmax),
+  // where a device's t may round across that end (model/exact_interval.h):
+  // a device may find no candidate there at all.
+  bool nearTmin(const ModelCandidate& c) const {
+    return !c.exact_tmin && std::fabs(c.t - ray.tmin) <= endTol(c);
+  }
+  bool nearTmax(const ModelCandidate& c) const {
+    return !c.exact_tmax && std::fabs(c.t - ray.tmax) <= endTol(c);
+  }
   double tol(double t) const {
     const double om =
         std::max({std::fabs(ray.origin[0]), std::fabs(ray.origin[1]), std::fabs(ray.origin[2])});
