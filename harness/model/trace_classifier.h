@@ -57,6 +57,8 @@ class TraceClassifier {
   std::vector<WhatIfAnswer> unsureAnswers(std::vector<WhatIfAnswer>& leaks);
   void addCommitted(const Committed& b, const WhatIf& how);
   void addLeak(const Committed& b, const WhatIf& how);
+  // Drops the leak answers that are legal answers too.
+  void dropLegalLeaks();
   static WhatIf actual() { return {true, {}, -1, -1, {}}; }
   bool sameAsCommitted(const Committed& b) const;
   void boundTOf(double t, double t_err);
