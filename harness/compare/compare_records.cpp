@@ -189,10 +189,8 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
       if (answer == DeviceAnswer::Finding) continue;
       // A record only a leak leaves, where the record names no hit to tell
       // it from a legal one: passed between (R-WATERTIGHT, a "should").
-      if (unreplayed && answer == DeviceAnswer::Legal && leak_replayed)
-        passed.addRay(ray);
-      else if (unreplayed && answer == DeviceAnswer::Legal)
-        addUnreplayed(c, a, *unreplayed, wrongs);
+      if (unreplayed && answer == DeviceAnswer::Legal)
+        leak_replayed ? passed.addRay(ray) : addUnreplayed(c, a, *unreplayed, wrongs);
       else
         checkAmbiguousShared(c, shape, a, d, m, fields, bounds, wrongs);
       continue;
