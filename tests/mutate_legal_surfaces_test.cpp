@@ -3,8 +3,11 @@
 // floor's shared edge behind, which either of its triangles may take. Every
 // combination is legal, a device passing the plate and taking the floor
 // triangle the model does not take among them; the judge still fails an
-// answer that is none of them. And a ray through a border vertex of a
-// non-opaque mesh may meet no triangle there (its any-hit not run).
+// answer that is none of them. A shared edge in front, passed between (a
+// leak, R-WATERTIGHT's "should"), then either triangle of a shared edge
+// behind: each a QualityWarning, and one where only a value tells the leak
+// (accel/sparse). And a ray through a border vertex of a non-opaque mesh
+// may meet no triangle there (its any-hit not run).
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -116,6 +119,133 @@ TEST(TwoSurfaces, AnAnswerOfNoCombinationStillFails) {
           << wrong.primitive << ": " << v.headline();
     }
   }
+}
+
+// Two squares, each of two triangles sharing the diagonal x = y: one at
+// z = 0, the floor at z = -2. Ray 0 runs down the diagonal at (0.25, 0.25)
+// (a device may pass between the front square's triangles, then take
+// either floor triangle); ray 1 hits the front square clearly.
+const char* kLeakThenSharedEdge = R"(rules: [R-WATERTIGHT]
+description: a shared edge leaked through in front of a floor's shared edge
+scene:
+  blas:
+    square:
+      - triangles:
+          vertices: [[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]]
+          indices: [0, 1, 2, 0, 2, 3]
+    floor:
+      - triangles:
+          vertices: [[-1, -1, -2], [1, -1, -2], [1, 1, -2], [-1, 1, -2]]
+          indices: [0, 1, 2, 0, 2, 3]
+  instances: [{blas: square}, {blas: floor}]
+rays:
+  list:
+    - {origin: [0.25, 0.25, 5], direction: [0, 0, -1]}
+    - {origin: [0.5, -0.5, 5], direction: [0, 0, -1]}
+  tmin: 0.001
+  tmax: 100
+pipeline:
+  miss:
+    - [record: {hit: 0}]
+  hit_groups:
+    - closest_hit: [record: [hit, instance_id, primitive_id, hit_t]]
+outputs:
+  per_ray: [hit, instance_id, primitive_id, hit_t]
+)";
+
+TEST(LeakThenSharedEdge, PassingBetweenThenEitherFloorTriangleIsAQualityWarning) {
+  const Case c = parseInline(kLeakThenSharedEdge);
+  const Plan plan = derivePlan(c);
+  const Results model = runOnModel(c, plan, ModelOptions{ModelTier::Exact, 1});
+  const RayAmbiguity* a = rayZeroAmbiguity(model);
+  ASSERT_NE(a, nullptr);
+  std::set<std::pair<uint32_t, uint32_t>> leaks;
+  for (const Candidate& k : a->leak_answers)
+    if (k.hit) leaks.insert({k.instance, k.primitive});
+  EXPECT_EQ(leaks, (std::set<std::pair<uint32_t, uint32_t>>{{1, 0}, {1, 1}}))
+      << "past the front square, each floor triangle";
+  // The model's own floor triangle and the other: each passed between.
+  for (const Answer& leak : {Answer{1, 0, 7.0f}, Answer{1, 1, 7.0f}}) {
+    const Verdict v = compareResults(c, plan, deviceAnswering(c, model, leak), model);
+    EXPECT_EQ(v.status, Status::QualityWarning)
+        << "floor triangle " << leak.primitive << ": " << v.headline();
+  }
+  for (const LegalDevice& d : judgeLegalDevices(c, plan, model, 1))
+    EXPECT_FALSE(d.false_alarm) << d.name << ": " << d.headline;
+}
+
+TEST(LeakThenSharedEdge, AnAnswerOfNoCombinationStillFails) {
+  const Case c = parseInline(kLeakThenSharedEdge);
+  const Plan plan = derivePlan(c);
+  const Results model = runOnModel(c, plan, ModelOptions{ModelTier::Exact, 1});
+  // A floor triangle at the square's t, the square at the floor's, a
+  // primitive the floor has not.
+  for (const Answer& wrong : {Answer{1, 1, 5.0f}, Answer{0, 1, 7.0f}, Answer{1, 2, 7.0f}}) {
+    const Verdict v = compareResults(c, plan, deviceAnswering(c, model, wrong), model);
+    EXPECT_EQ(v.status, Status::Fail) << "answer " << wrong.instance << "." << wrong.primitive
+                                      << " at " << wrong.t << ": " << v.headline();
+  }
+}
+
+// accel/sparse's shape: a square of two triangles sharing the diagonal x =
+// y, a floor clear behind it, and only a value recorded (the hit's custom
+// index * 1000 + primitive; 99999 on a miss): the record names no hit, so
+// only the replay of the leak tells a device that passed between (value
+// 3000) from one that answers wrongly.
+const char* kLeakToAValue = R"(rules: [R-WATERTIGHT]
+description: an edge ray with a clear floor behind, only a value recorded
+scene:
+  blas:
+    square:
+      - triangles:
+          vertices: [[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]]
+          indices: [0, 1, 2, 0, 2, 3]
+    floor:
+      - triangles: {vertices: [[-9, -9, -2], [9, -9, -2], [0, 9, -2]]}
+  instances: [{blas: square, custom_index: 1}, {blas: floor, custom_index: 3}]
+rays:
+  list:
+    - {origin: [0.25, 0.25, 5], direction: [0, 0, -1]}
+    - {origin: [0.5, -0.5, 5], direction: [0, 0, -1]}
+  tmin: 0.001
+  tmax: 100
+pipeline:
+  raygen:
+    - trace: {}
+    - record: {value: payload.value}
+  miss:
+    - [payload: {value: 99999}]
+  hit_groups:
+    - closest_hit: [payload: {value: {add: [{mul: [instance_custom_index, 1000]}, primitive_id]}}]
+outputs:
+  per_ray: [value]
+)";
+
+Results deviceValuing(const Case& c, const Results& model, uint32_t value) {
+  Results r = perfectDevice(c, model);
+  r.backend = "vulkan";
+  r.records[findRecordField("value")->offset] = value;
+  return r;
+}
+
+TEST(LeakToAValue, ARecordOnlyALeakLeavesIsAQualityWarning) {
+  const Case c = parseInline(kLeakToAValue);
+  const Plan plan = derivePlan(c);
+  const Results model = runOnModel(c, plan, ModelOptions{ModelTier::Exact, 1});
+  const RayAmbiguity* a = rayZeroAmbiguity(model);
+  ASSERT_NE(a, nullptr);
+  EXPECT_EQ(a->leak_replays.size(), 1u) << "the floor's value, past the square";
+  for (uint32_t legal : {1000u, 1001u})
+    EXPECT_EQ(compareResults(c, plan, deviceValuing(c, model, legal), model).status, Status::Pass)
+        << legal;
+  Verdict v = compareResults(c, plan, deviceValuing(c, model, 3000), model);
+  EXPECT_EQ(v.status, Status::QualityWarning) << v.headline();
+  for (uint32_t wrong : {3001u, 2000u, 1002u}) {
+    v = compareResults(c, plan, deviceValuing(c, model, wrong), model);
+    EXPECT_EQ(v.status, Status::Fail) << wrong << ": " << v.headline();
+  }
+  for (const LegalDevice& d : judgeLegalDevices(c, plan, model, 1))
+    EXPECT_FALSE(d.false_alarm) << d.name << ": " << d.headline;
 }
 
 // A non-opaque square of two triangles sharing the diagonal from (-1, -1)

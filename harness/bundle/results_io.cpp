@@ -161,13 +161,14 @@ json replaysJson(const std::vector<LegalReplay>& replays) {
   return out;
 }
 
-// The records of every ambiguous ray's replays, ray after ray, into
-// replays.bin (none where the case keeps no records).
+// The records of every ambiguous ray's replays, then its leak replays, ray
+// after ray, into replays.bin (none where the case keeps no records).
 Result<void> writeReplayRecords(const Results& r, const fs::path& dir) {
   std::vector<uint32_t> words;
   for (const RayAmbiguity& a : r.ambiguous)
-    for (const LegalReplay& k : a.replays)
-      words.insert(words.end(), k.record.begin(), k.record.end());
+    for (const auto* list : {&a.replays, &a.leak_replays})
+      for (const LegalReplay& k : *list)
+        words.insert(words.end(), k.record.begin(), k.record.end());
   return writeWords(dir / "replays.bin", words);
 }
 
@@ -181,7 +182,8 @@ void writeRayNotes(const Results& r, json& j) {
                               {"candidates", candidatesJson(a.candidates)},
                               {"shared_triangles", candidatesJson(a.shared_triangles)},
                               {"leak_answers", candidatesJson(a.leak_answers)},
-                              {"replays", replaysJson(a.replays)}});
+                              {"replays", replaysJson(a.replays)},
+                              {"leak_replays", replaysJson(a.leak_replays)}});
   for (size_t k = 0; k < r.ambiguous.size(); ++k)  // written only where not 1
     if (r.ambiguous[k].traces != 1) j["ambiguous"][k]["traces"] = r.ambiguous[k].traces;
   j["t_bounds"] = json::array();
@@ -397,19 +399,21 @@ Result<std::vector<Candidate>> readCandidates(FieldReader& field, const json& ja
   return out;
 }
 
-// An ambiguous ray's replays (ambiguous.replays; absent in older bundles:
-// none), each one's counter moves: a counter of the bundle's, by a signed
-// 64-bit integer. Their records come from replays.bin (readReplayRecords).
-Result<std::vector<LegalReplay>> readReplays(FieldReader& field, const json& ja, const Results& r) {
+// An ambiguous ray's replays or leak replays (ambiguous.replays,
+// ambiguous.leak_replays: `key`; absent in older bundles: none), each one's
+// counter moves: a counter of the bundle's, by a signed 64-bit integer.
+// Their records come from replays.bin (readReplayRecords).
+Result<std::vector<LegalReplay>> readReplays(FieldReader& field, const json& ja, const Results& r,
+                                             const std::string& key) {
   std::vector<LegalReplay> out;
-  if (!ja.contains("replays")) return out;
-  for (const json& jr : field(ja, "ambiguous.replays")) {
+  if (!ja.contains(key)) return out;
+  const std::string at = "ambiguous." + key + ".counter_moves";
+  for (const json& jr : field(ja, "ambiguous." + key)) {
     LegalReplay k;
-    const json& moves = field(jr, "ambiguous.replays.counter_moves");
-    if (!moves.is_object())
-      return badValue(field.dir, "ambiguous.replays.counter_moves: not an object");
+    const json& moves = field(jr, at);
+    if (!moves.is_object()) return badValue(field.dir, at + ": not an object");
     for (const auto& [name, value] : moves.items()) {
-      const std::string where = "ambiguous.replays.counter_moves." + visibleText(name, 80);
+      const std::string where = at + "." + visibleText(name, 80);
       if (!r.counters.count(name)) return badValue(field.dir, where + ": no such counter");
       if (!value.is_number_integer() ||
           (value.is_number_unsigned() &&
@@ -485,7 +489,8 @@ Result<void> readRayNotes(const json& j, FieldReader& field, Results& r) {
     RAYSPEC_TRY(a.candidates, readCandidates(field, ja, "candidates", true));
     RAYSPEC_TRY(a.shared_triangles, readCandidates(field, ja, "shared_triangles", false));
     RAYSPEC_TRY(a.leak_answers, readCandidates(field, ja, "leak_answers", false));
-    RAYSPEC_TRY(a.replays, readReplays(field, ja, r));
+    RAYSPEC_TRY(a.replays, readReplays(field, ja, r, "replays"));
+    RAYSPEC_TRY(a.leak_replays, readReplays(field, ja, r, "leak_replays"));
     if (ja.contains("traces")) {  // absent: 1
       RAYSPEC_TRY(a.traces, field.count<uint32_t>(ja, "ambiguous.traces"));
     }
@@ -520,11 +525,11 @@ Result<void> readResultsJson(const std::string& text, const fs::path& dir, Resul
   }
 }
 
-// The records of the replays results.json lists, from replays.bin: one
-// each where the bundle has records, none where it has not.
+// The records of the replays and leak replays results.json lists, from
+// replays.bin: one each where the bundle has records, none where it has not.
 Result<void> readReplayRecords(const fs::path& dir, Results& r) {
   uint64_t replays = 0;
-  for (const RayAmbiguity& a : r.ambiguous) replays += a.replays.size();
+  for (const RayAmbiguity& a : r.ambiguous) replays += a.replays.size() + a.leak_replays.size();
   const uint64_t words = r.records.empty() ? 0 : replays * recordWords();
   if (words == 0) return {};
   BulkWords all;
@@ -534,10 +539,11 @@ Result<void> readReplayRecords(const fs::path& dir, Results& r) {
       all));
   const uint32_t* w = all.data();
   for (RayAmbiguity& a : r.ambiguous)
-    for (LegalReplay& k : a.replays) {
-      k.record.assign(w, w + recordWords());
-      w += recordWords();
-    }
+    for (auto* list : {&a.replays, &a.leak_replays})
+      for (LegalReplay& k : *list) {
+        k.record.assign(w, w + recordWords());
+        w += recordWords();
+      }
   return {};
 }
 

@@ -31,10 +31,11 @@ enum class DeviceAnswer { Legal, Finding, Outside };
 
 // The device's answer for an ambiguous ray, checked against the legal set.
 // A hit only a device passing between the triangles of a shared edge or
-// vertex reaches goes to `passed` (R-WATERTIGHT, a "should").
+// vertex reaches goes to `passed` (R-WATERTIGHT, a "should"), where its
+// record is one of the leak replays if the model has any (`leak_replayed`).
 DeviceAnswer checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t* rec,
-                            std::map<std::string, FindingBuilder>& wrongs, FindingBuilder& leak,
-                            FindingBuilder& passed) {
+                            bool leak_replayed, std::map<std::string, FindingBuilder>& wrongs,
+                            FindingBuilder& leak, FindingBuilder& passed) {
   // A trace that ran no miss shader hit, whether or not closest-hit ran
   // (SkipClosestHit, or a hit group without one, runs neither): a hit of
   // unknown identity. Unless a miss may run nothing too (an all-zero miss
@@ -85,7 +86,8 @@ DeviceAnswer checkAmbiguous(const Case& c, const RayAmbiguity& a, const uint32_t
     }
     return miss_legal ? DeviceAnswer::Legal : DeviceAnswer::Outside;
   }
-  const bool behind_edge = std::any_of(a.leak_answers.begin(), a.leak_answers.end(),
+  const bool behind_edge = (a.leak_replays.empty() || leak_replayed) &&
+                           std::any_of(a.leak_answers.begin(), a.leak_answers.end(),
                                        [&](const Candidate& k) { return hitFits(rec, k); });
   if (!legal && behind_edge) {
     passed.addRay(a.ray);
@@ -184,13 +186,15 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
       const RecordField* unreplayed =
           hasReplays(a) ? fieldNoReplayLeaves(a, d, fields, bounds) : nullptr;
       if (hasReplays(a) && !unreplayed) continue;
-      const DeviceAnswer answer = checkAmbiguous(c, a, d, wrongs, leak, passed);
+      const bool leak_replayed = leakReplayMatches(a, d, fields, bounds);
+      const DeviceAnswer answer = checkAmbiguous(c, a, d, leak_replayed, wrongs, leak, passed);
       if (answer == DeviceAnswer::Finding) continue;
-      if (unreplayed && answer == DeviceAnswer::Legal) {
-        addUnreplayed(c, a, *unreplayed, wrongs);
-        continue;
-      }
-      checkAmbiguousShared(c, shape, a, d, m, fields, bounds, wrongs);
+      // A record only a leak leaves, where the record names no hit to tell
+      // it from a legal one: passed between (R-WATERTIGHT, a "should").
+      if (unreplayed && answer == DeviceAnswer::Legal)
+        leak_replayed ? passed.addRay(ray) : addUnreplayed(c, a, *unreplayed, wrongs);
+      else
+        checkAmbiguousShared(c, shape, a, d, m, fields, bounds, wrongs);
       continue;
     }
     for (const RecordField* f : fields) {

@@ -1,5 +1,7 @@
 // An ambiguous ray's record held to its legal answers as a whole: the
 // model's replays of each (model/legal_replays.h, RayAmbiguity::replays).
+#include <algorithm>
+
 #include "compare/compare_parts.h"
 
 namespace rayspec {
@@ -9,6 +11,12 @@ bool replayMatches(const LegalReplay& r, const uint32_t* d,
   for (const RecordField* f : fields)
     if (!sameField(*f, d, r.record.data(), bounds)) return false;
   return true;
+}
+
+bool leakReplayMatches(const RayAmbiguity& a, const uint32_t* d,
+                       const std::vector<const RecordField*>& fields, const RayBounds& bounds) {
+  return std::any_of(a.leak_replays.begin(), a.leak_replays.end(),
+                     [&](const LegalReplay& r) { return replayMatches(r, d, fields, bounds); });
 }
 
 const RecordField* fieldNoReplayLeaves(const RayAmbiguity& a, const uint32_t* d,

@@ -17,6 +17,41 @@ LegalReplay Machine::replayOutcome(const LaunchState::Saved& own) const {
   return r;
 }
 
+LegalReplay Machine::replayRun(uint32_t i, const LaunchState::Saved& own) {
+  state_.counters = counters_before_;
+  if (state_.rec) std::fill(state_.rec, state_.rec + recordWords(), 0u);
+  runRay(i);
+  return replayOutcome(own);
+}
+
+std::vector<LegalReplay> Machine::replayLeaks(uint32_t i, const LaunchState::Saved& own,
+                                              const std::vector<LegalReplay>& legal,
+                                              ReplayScript& script) {
+  auto kept = [](const std::vector<LegalReplay>& list, const LegalReplay& r) {
+    return std::find(list.begin(), list.end(), r) != list.end();
+  };
+  const size_t undefined_before = state_.undefined.size();
+  std::vector<LegalReplay> leaks;
+  script.reset();
+  script.own = false;
+  script.leaks = true;
+  bool complete = true;
+  size_t runs = 0;
+  do {
+    LegalReplay r = replayRun(i, own);
+    // A leak whose path is undefined, or pins a t no one t is, keeps none.
+    if (++runs > kMaxReplayRuns || state_.undefined.size() > undefined_before ||
+        state_.ray_t_free) {
+      complete = false;
+      break;
+    }
+    if (script.leaked && !kept(legal, r) && !kept(leaks, r)) leaks.push_back(std::move(r));
+    complete = leaks.size() <= kMaxLegalReplays;
+  } while (complete && script.advance());
+  state_.undefined.resize(undefined_before);
+  return complete ? leaks : std::vector<LegalReplay>{};
+}
+
 void Machine::replayLegalAnswers(uint32_t i, size_t ambiguity, ReplayScript& script) {
   const LaunchState::Saved own = state_.save();
   const size_t undefined_before = state_.undefined.size();
@@ -32,24 +67,27 @@ void Machine::replayLegalAnswers(uint32_t i, size_t ambiguity, ReplayScript& scr
       complete = false;
       break;
     }
-    state_.counters = counters_before_;
-    if (state_.rec) std::fill(state_.rec, state_.rec + recordWords(), 0u);
-    runRay(i);
+    LegalReplay r = replayRun(i, own);
     // A legal answer whose path is undefined makes the ray undefined (R-UB).
     if (state_.undefined.size() > undefined_before) complete = false;
     t_free = t_free || state_.ray_t_free;
-    LegalReplay r = replayOutcome(own);
     if (std::find(replays.begin(), replays.end(), r) == replays.end())
       replays.push_back(std::move(r));
     if (replays.size() > kMaxLegalReplays) complete = false;
   }
+  std::vector<LegalReplay> leaks;
+  if (complete && !t_free && !state_.ambiguous[ambiguity].leak_answers.empty())
+    leaks = replayLeaks(i, own, replays, script);
   state_.replay = nullptr;
   const bool undefined = state_.undefined.size() > undefined_before;
   state_.undefined.resize(undefined ? undefined_before + 1 : undefined_before);
   state_.restore(own);
   state_.ray_ambiguous = true;
   state_.ray_undefined = undefined;
-  if (complete && !t_free) state_.ambiguous[ambiguity].replays = std::move(replays);
+  if (complete && !t_free) {
+    state_.ambiguous[ambiguity].replays = std::move(replays);
+    state_.ambiguous[ambiguity].leak_replays = std::move(leaks);
+  }
 }
 
 }  // namespace rayspec

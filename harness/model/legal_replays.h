@@ -7,7 +7,11 @@
 // them (an odometer over a tree), and a trace before the one whose choice
 // changed is not classified again. Each distinct outcome (record, counters)
 // is kept in RayAmbiguity::replays; the judge holds the device's record to
-// one of them as a whole (compare/compare_records.cpp).
+// one of them as a whole (compare/compare_records.cpp). Where the ray's
+// first ambiguous trace has leak answers, a second pass (the leak pass)
+// runs the scripts again with each trace's leak answers among its choices:
+// the outcomes of runs that took one, none of the legal ones, are kept in
+// RayAmbiguity::leak_replays.
 #pragma once
 
 #include <cstddef>
@@ -35,7 +39,14 @@ struct ReplayScript {
   // trace), kept for the next run up to the trace whose choice it changes:
   // the same launch ray, the same choices before, the same classification.
   std::vector<std::vector<WhatIf>> known;
+  // How many of each known trace's answers are legal (the rest are leaks).
+  std::vector<size_t> known_legal;
   size_t traces = 0;  // classified traces so far in this run
+  // The leak pass (Machine::replayLeaks): each trace's answers are its
+  // legal ones, then its leak answers (RayAmbiguity::leak_answers);
+  // `leaked`: this run took a leak answer at some trace.
+  bool leaks = false;
+  bool leaked = false;
   // The model's own run (the choices all 0): its first ambiguous trace is
   // the ray's RayAmbiguity.
   bool own = true;
@@ -46,16 +57,23 @@ struct ReplayScript {
     options.clear();
     ambiguous_at.clear();
     known.clear();
+    known_legal.clear();
     traces = 0;
     own = true;
+    leaks = false;
+    leaked = false;
   }
   // The legal answers of the trace now, if an earlier run classified it.
   const std::vector<WhatIf>* knownAnswers() const {
     return traces < known.size() ? &known[traces] : nullptr;
   }
-  // The trace now classified, with its legal answers (none: clear).
-  void classified(const std::vector<WhatIf>& answers) {
-    if (traces == known.size()) known.push_back(answers);
+  // The trace now classified, with its answers (none: clear), the first
+  // `legal` of them legal.
+  void classified(const std::vector<WhatIf>& answers, size_t legal) {
+    if (traces == known.size()) {
+      known.push_back(answers);
+      known_legal.push_back(legal);
+    }
     ++traces;
   }
   // The answer the trace just classified takes, of `answers`.
@@ -64,7 +82,9 @@ struct ReplayScript {
     options.push_back(static_cast<uint32_t>(answers));
     ambiguous_at.push_back(traces - 1);
     const size_t c = j < choices.size() ? choices[j] : 0;
-    return c < answers ? c : 0;
+    const size_t taken = c < answers ? c : 0;
+    leaked = leaked || taken >= known_legal[traces - 1];
+    return taken;
   }
   // The next script after this run's, false after the last: the last trace
   // with an answer left takes its next, the traces after it their first.
@@ -75,10 +95,12 @@ struct ReplayScript {
         ++choices[j];
         choices.resize(j + 1);
         known.resize(ambiguous_at[j] + 1);
+        known_legal.resize(ambiguous_at[j] + 1);
         options.clear();
         ambiguous_at.clear();
         traces = 0;
         own = false;
+        leaked = false;
         return true;
       }
     return false;

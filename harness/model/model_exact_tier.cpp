@@ -167,23 +167,26 @@ void TraceClassifier::findUnsure(const std::vector<std::pair<size_t, double>>& r
 
 namespace {
 
-// The farthest t a legal answer commits (a miss: infinity).
-double farthestCommit(const std::vector<WhatIfAnswer>& answers, double t) {
-  for (const WhatIfAnswer& a : answers) t = std::max(t, a.best.valid ? a.best.t : INFINITY);
+// The farthest t a legal or leak answer commits (a miss: infinity).
+double farthestCommit(const std::vector<WhatIfAnswer>& answers,
+                      const std::vector<WhatIfAnswer>& leaks, double t) {
+  for (const auto* list : {&answers, &leaks})
+    for (const WhatIfAnswer& a : *list) t = std::max(t, a.best.valid ? a.best.t : INFINITY);
   return t;
 }
 
 }  // namespace
 
 // The what-if runs where the unsure candidates decide otherwise (whatIf).
-// A legal answer that passes the committed hit reaches candidates behind
-// it: those unsure there (a shared edge behind a border edge) join, and the
-// runs are made again with them, until no answer reaches farther.
+// A legal or leak answer that passes the committed hit reaches candidates
+// behind it: those unsure there (a shared edge behind a border edge or
+// behind a shared edge leaked through) join, and the runs are made again
+// with them, until no answer reaches farther.
 std::vector<WhatIfAnswer> TraceClassifier::unsureAnswers(std::vector<WhatIfAnswer>& leaks) {
   double reach = tr_.best.valid ? tr_.best.t : INFINITY;
   std::vector<WhatIfAnswer> answers = m_.whatIf(tr_, cands_, unsure_, payload_in_, &leaks);
   for (;;) {
-    const double further = farthestCommit(answers, reach);
+    const double further = farthestCommit(answers, leaks, reach);
     if (!(further > reach + tr_.tol(reach))) return answers;
     const size_t before = unsure_.size();
     findUnsure(*reports_, further);
@@ -325,8 +328,12 @@ bool TraceClassifier::inPlaneTMatters(size_t u) const {
 
 std::optional<WhatIf> TraceClassifier::finish() {
   if (!reason_) reason_ = tie_reason_;
+  dropLegalLeaks();
   ReplayScript* script = m_.st_.replay;
-  if (script) script->classified(reason_ ? replay_hows_ : std::vector<WhatIf>{});
+  std::vector<WhatIf> answers = reason_ ? replay_hows_ : std::vector<WhatIf>{};
+  if (script && script->leaks && reason_)
+    answers.insert(answers.end(), leak_hows_.begin(), leak_hows_.end());
+  if (script) script->classified(answers, reason_ ? replay_hows_.size() : 0);
   if (!reason_) return std::nullopt;
   amb_.reason = *reason_;
   // A legal hit on a triangle the ray runs in the plane of, at no one t:
@@ -338,12 +345,6 @@ std::optional<WhatIf> TraceClassifier::finish() {
           cands_[u].geometry == k.geometry && cands_[u].primitive == k.primitive &&
           inPlaneTMatters(u))
         m_.st_.ray_t_free = true;
-  // A leak answer that is also a legal one is legal.
-  for (size_t k = amb_.leak_answers.size(); k-- > 0;)
-    if (listed(amb_.candidates, amb_.leak_answers[k])) {
-      amb_.leak_answers.erase(amb_.leak_answers.begin() + static_cast<long>(k));
-      leak_hows_.erase(leak_hows_.begin() + static_cast<long>(k));
-    }
   std::optional<WhatIf> chosen;
   if (script && (!script->own || m_.st_.ray_ambiguous)) {
     // A legal replay (legal_replays.cpp), or a later ambiguous trace of the
@@ -352,11 +353,11 @@ std::optional<WhatIf> TraceClassifier::finish() {
     // run counts its ambiguous traces there.
     if (script->own && !m_.st_.ambiguous.empty() && m_.st_.ambiguous.back().ray == amb_.ray)
       ++m_.st_.ambiguous.back().traces;
-    chosen = replay_hows_[script->choose(replay_hows_.size())];
+    chosen = answers[script->choose(answers.size())];
     m_.st_.ray_ambiguous = true;
     return chosen;
   }
-  if (script) script->choose(replay_hows_.size());  // the own run's first: its actual answer
+  if (script) script->choose(answers.size());  // the own run's first: its actual answer
   if (const auto taken = m_.sh_.fault_seam.answerTaken(hows_.size(), leak_hows_.size()))
     chosen = taken->leak ? leak_hows_[taken->index] : hows_[taken->index];
   m_.st_.ambiguous.push_back(std::move(amb_));
@@ -364,11 +365,20 @@ std::optional<WhatIf> TraceClassifier::finish() {
   return chosen;
 }
 
+// A leak answer that is also a legal one is legal.
+void TraceClassifier::dropLegalLeaks() {
+  for (size_t k = amb_.leak_answers.size(); k-- > 0;)
+    if (listed(amb_.candidates, amb_.leak_answers[k])) {
+      amb_.leak_answers.erase(amb_.leak_answers.begin() + static_cast<long>(k));
+      leak_hows_.erase(leak_hows_.begin() + static_cast<long>(k));
+    }
+}
+
 bool ModelTracer::replayKnownTrace(std::optional<WhatIf>& chosen) {
   ReplayScript* script = st_.replay;
   const std::vector<WhatIf>* known = script ? script->knownAnswers() : nullptr;
   if (!known) return false;
-  script->classified(*known);
+  script->classified(*known, script->known_legal[script->traces]);
   chosen.reset();
   if (known->empty()) return true;
   chosen = (*known)[script->choose(known->size())];
@@ -608,14 +618,16 @@ constexpr size_t kMaxWhatIfCombinations = 256;
 // What-if runs of the decision for an ambiguous trace: within a group of
 // unsure candidates (unsureGroups) each candidate alone is a hit (watertight:
 // at least one of a shared edge's triangles is hit); a group that does not
-// close around the ray may also be no hit. A ray may meet several groups
-// one behind the other (a border edge in front of a shared edge): every
-// combination of the groups' choices is a legal answer, each group also left
-// to the model, up to kMaxWhatIfCombinations runs; past it, each group's
-// choices are tried with the others left to the model (stated: a device
-// combining them is then judged on what the answers share). Stage programs
-// run again, in a sandbox: their counters, record and payload effects are
-// undone.
+// close around the ray may also be no hit, and one that closes (a shared
+// edge, a closed fan: closed_fan.h) no hit only as a leak. A ray may meet
+// several groups one behind the other (a border edge or a leaked shared
+// edge in front of a shared edge): every combination of the groups'
+// choices is an answer, each group also left to the model, up to
+// kMaxWhatIfCombinations runs; a combination where a closing group is no
+// hit goes to `leaks`. Past the bound, each group's choices are tried with
+// the others left to the model (stated: a device combining them is then
+// judged on what the answers share). Stage programs run again, in a
+// sandbox: their counters, record and payload effects are undone.
 std::vector<WhatIfAnswer> ModelTracer::whatIf(const Traversal& actual,
                                               const std::vector<ModelCandidate>& cands,
                                               const std::vector<size_t>& unsure,
@@ -624,15 +636,14 @@ std::vector<WhatIfAnswer> ModelTracer::whatIf(const Traversal& actual,
   std::vector<WhatIfAnswer> out;
   if (unsure.empty()) return out;
   const std::vector<std::pair<size_t, size_t>> groups = unsureGroups(actual, cands, unsure);
-  // Each group's choices: its candidates alone, then none where that is
-  // legal (a border, an open fan, a side culled away); none where they close
-  // around the ray (a shared edge, a closed fan: closed_fan.h) is a leak.
+  // Each group's choices: its candidates alone, then none.
   std::vector<std::vector<size_t>> choices(groups.size());
   std::vector<bool> closes(groups.size());
   size_t combinations = 1;
   for (size_t g = 0; g < groups.size(); ++g) {
     const auto [g0, g1] = groups[g];
     for (size_t a = 0; a < g1 - g0; ++a) choices[g].push_back(a);
+    choices[g].push_back(kNone);
     const std::vector<size_t> members(unsure.begin() + static_cast<long>(g0),
                                       unsure.begin() + static_cast<long>(g1));
     // At an interval end a device may find none of them (nearTmin): no leak.
@@ -640,33 +651,28 @@ std::vector<WhatIfAnswer> ModelTracer::whatIf(const Traversal& actual,
                 std::none_of(members.begin(), members.end(), [&](size_t k) {
                   return actual.nearTmin(cands[k]) || actual.nearTmax(cands[k]);
                 });
-    if (!closes[g]) choices[g].push_back(kNone);
     combinations = std::min(combinations * (choices[g].size() + 1), kMaxWhatIfCombinations + 1);
   }
   WhatIf how{false, std::vector<int8_t>(cands.size(), -1), -1, -1, {}};
-  auto run = [&](std::vector<WhatIfAnswer>& into) {
-    into.push_back({sandbox(actual, cands, how, payload_in), how});
-  };
-  if (groups.size() > 1 && combinations <= kMaxWhatIfCombinations) {
-    forEachCombination(choices, [&](const std::vector<size_t>& pick) {
-      for (size_t g = 0; g < groups.size(); ++g) forceGroup(how, unsure, groups[g], pick[g]);
-      run(out);
-    });
-    for (size_t g = 0; g < groups.size(); ++g) forceGroup(how, unsure, groups[g], kOwn);
-  } else {
+  auto run = [&](const std::vector<size_t>& pick) {
+    bool leak = false;
     for (size_t g = 0; g < groups.size(); ++g) {
-      for (size_t c : choices[g]) {
-        forceGroup(how, unsure, groups[g], c);
-        run(out);
-      }
-      forceGroup(how, unsure, groups[g], kOwn);
+      forceGroup(how, unsure, groups[g], pick[g]);
+      leak = leak || (closes[g] && pick[g] == kNone);
     }
+    (leak ? *leaks : out).push_back({sandbox(actual, cands, how, payload_in), how});
+  };
+  if (combinations <= kMaxWhatIfCombinations) {
+    forEachCombination(choices, run);
+    return out;
   }
+  std::vector<size_t> pick(groups.size(), kOwn);
   for (size_t g = 0; g < groups.size(); ++g) {
-    if (!closes[g]) continue;
-    forceGroup(how, unsure, groups[g], kNone);
-    run(*leaks);
-    forceGroup(how, unsure, groups[g], kOwn);
+    for (size_t c : choices[g]) {
+      pick[g] = c;
+      run(pick);
+    }
+    pick[g] = kOwn;
   }
   return out;
 }

@@ -47,6 +47,13 @@ class alignas(64) Machine {
   // error stay the model's own.
   void replayLegalAnswers(uint32_t i, size_t ambiguity, ReplayScript& script);
   LegalReplay replayOutcome(const LaunchState::Saved& own) const;
+  // One scripted run of launch ray i from the counters before it: its outcome.
+  LegalReplay replayRun(uint32_t i, const LaunchState::Saved& own);
+  // The leak pass (legal_replays.h) after the legal one left `legal`: the
+  // distinct outcomes of the runs that take a leak answer, none of `legal`;
+  // none where one's path is undefined, pins a t, or past the bounds.
+  std::vector<LegalReplay> replayLeaks(uint32_t i, const LaunchState::Saved& own,
+                                       const std::vector<LegalReplay>& legal, ReplayScript& script);
 
   const ModelShared& sh_;
   ModelSbt sbt_;

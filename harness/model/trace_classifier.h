@@ -60,6 +60,8 @@ class TraceClassifier {
   bool flipNoted(const WhatIf& base, const std::vector<ShaderDecision>& noted, size_t depth);
   void addCommitted(const Committed& b, const WhatIf& how);
   void addLeak(const Committed& b, const WhatIf& how);
+  // Drops the leak answers that are legal answers too.
+  void dropLegalLeaks();
   static WhatIf actual() { return {true, {}, -1, -1, {}}; }
   bool sameAsCommitted(const Committed& b) const;
   void boundTOf(double t, double t_err);

@@ -149,6 +149,13 @@ struct RayAmbiguity {
   // (kMaxLegalReplays) or a bundle saved without them: then only what every
   // answer shares is judged.
   std::vector<LegalReplay> replays;
+  // Each distinct outcome, none of `replays`, of the ray replayed with a
+  // leak answer taken where its first ambiguous trace or a later one has
+  // one (model/legal_replays.h): a record that is one of them passed
+  // between triangles (R-WATERTIGHT, a QualityWarning) where the record
+  // names no hit to tell; empty where there are none, past the bounds, or
+  // in a bundle saved without them.
+  std::vector<LegalReplay> leak_replays;
   // How many of the ray's traces were ambiguous in the model's own run (a
   // ray traced twice through one vertex: 2); each may move a counter.
   uint32_t traces = 1;
