@@ -141,6 +141,8 @@ Result<void> checkCaseSupport(const DeviceInfo& d, uint32_t validation_layer, co
         "cull_mask: gl_CullMaskEXT needs VK_KHR_ray_tracing_maintenance1 (rayTracingMaintenance1)");
   if (!c.pipeline.libraries.empty() && !d.pipeline_library)
     return notSupported("pipeline.libraries: the device lacks VK_KHR_pipeline_library");
+  if (c.pipeline.deferred_threads && !d.acceleration_structure_extension)
+    return notSupported("pipeline.deferred: the device lacks VK_KHR_deferred_host_operations");
   if (c.pipeline.max_recursion > d.max_ray_recursion_depth)
     return notSupported("max_recursion " + std::to_string(c.pipeline.max_recursion) +
                         " > device maxRayRecursionDepth " +
