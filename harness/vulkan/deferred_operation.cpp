@@ -50,11 +50,16 @@ DeferredCalls driverCalls(const VulkanContext& ctx, VkDeferredOperationKHR op) {
           }};
 }
 
-// The operation's result after the create call answered `answer`.
+// The operation's result after the create call answered `answer`. A
+// success not deferred is joined as well (each join answers VK_SUCCESS when
+// nothing was deferred): the validation layer (Debian 12's) wraps the
+// pipeline's handle only when a join or a result read sees the operation
+// complete, and a handle used before that crashes in the driver.
 VkResult finish(const DeferredCalls& calls, VkResult answer, uint32_t threads) {
-  if (answer == VK_OPERATION_DEFERRED_KHR) return joinDeferred(calls, threads).result;
+  if (answer == VK_OPERATION_DEFERRED_KHR || answer == VK_SUCCESS)
+    return joinDeferred(calls, threads).result;
   if (answer == VK_OPERATION_NOT_DEFERRED_KHR) return operationResult(calls);
-  return answer;  // as if no operation was given
+  return answer;  // a failure, as if no operation was given
 }
 
 }  // namespace
