@@ -340,8 +340,18 @@ constexpr size_t kMaxPipelineLibraries = 16;
 constexpr uint32_t kDefaultCallableDepth = 2;
 constexpr uint32_t kMaxCallableDepth = 16;
 
+// pipeline.deferred: at most this many threads join one deferred operation.
+constexpr uint32_t kMaxDeferredThreads = 64;
+
 struct Pipeline {
   uint32_t max_recursion = 1;
+  // Set: every pipeline object of the case (each library and the linked or
+  // only pipeline) is created through a VkDeferredOperationKHR
+  // (VK_KHR_deferred_host_operations) joined by this many threads; 0: as
+  // many as vkGetDeferredOperationMaxConcurrencyKHR answers, at most
+  // kMaxDeferredThreads (pipeline.deferred, --through deferred, R-DEFERRED).
+  // Shaders observe the same.
+  std::optional<uint32_t> deferred_threads;
   // Empty: the default stack size (kDefaultCallableDepth callable frames).
   // Set: the pipeline has the dynamic stack size state and the trace sets a
   // size that covers callables nested this deep (R-STACK).

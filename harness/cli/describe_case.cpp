@@ -87,6 +87,15 @@ std::string pointText(const std::array<double, 3>& p) {
   return buf;
 }
 
+// pipeline.deferred: the threads that join each pipeline's deferred operation.
+void describeDeferred(const Pipeline& p, std::ostringstream& s) {
+  if (!p.deferred_threads) return;
+  s << "  created through a deferred operation joined by "
+    << (*p.deferred_threads ? std::to_string(*p.deferred_threads) + " threads"
+                            : std::string("its maximum concurrency of threads"))
+    << '\n';
+}
+
 }  // namespace
 
 std::string describeAimTargets(const std::vector<AimTarget>& aimed) {
@@ -166,6 +175,7 @@ std::string describeCase(const Case& c) {
     s << "  raygen groups: " << p.raygenGroupCount() << ", the region selects " << p.raygen_group
       << '\n';
   describeLibraries(p.libraries, "  ", s);
+  describeDeferred(p, s);
   describeInterfaceTypes(p, s);
   if (p.sbt_record_data != kMaxShaderRecordDataBytes || p.sbt_padding.miss || p.sbt_padding.hit ||
       p.sbt_padding.callable)

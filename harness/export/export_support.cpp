@@ -14,6 +14,7 @@ std::string pipelineFeature(const Case& c, const Plan& plan) {
   if (!c.expected_rejections.empty()) return "expected compiler rejections (expect_rejected)";
   if (p.from_compute || p.ray_query || p.ray_query_in_hit || plan.ray_queries) return "ray queries";
   if (!p.libraries.empty()) return "pipeline libraries";
+  if (p.deferred_threads) return "deferred pipeline creation (pipeline.deferred)";
   if (p.callable_depth) return "a dynamic stack size (pipeline.callable_depth)";
   if (p.flags) return "pipeline create flags (pipeline.flags)";
   if (!p.constants.empty() || !p.specialize.empty()) return "specialization constants";

@@ -116,6 +116,7 @@ std::string noNullShadersDropped(Case& c, ModelOptions& o);
 std::string tlasIgnored(Case& c, ModelOptions& o);
 std::string raygenGroupIgnored(Case& c, ModelOptions& o);
 std::string libraryGroupsLost(Case& c, ModelOptions& o);
+std::string deferredGroupsLost(Case& c, ModelOptions& o);
 std::string stackSizeIgnored(Case& c, ModelOptions& o);
 std::string copyDropsInstance(Case& c, ModelOptions& o);
 std::string updateIgnored(Case& c, ModelOptions& o);

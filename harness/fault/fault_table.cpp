@@ -255,6 +255,11 @@ std::vector<FaultImpl> pipelineMutations() {
        "the groups a pipeline library holds do nothing once linked (their shaders run empty, "
        "any-hit and intersection absent)",
        nullptr, libraryGroupsLost},
+      {"deferred-groups-lost", K::CaseMutation,
+       "a pipeline created through a deferred operation is used before the operation completed: "
+       "its miss, hit and callable groups do nothing (shaders empty, any-hit and intersection "
+       "absent)",
+       nullptr, deferredGroupsLost},
       {"raygen-group-ignored", K::CaseMutation,
        "the launch runs raygen group 0, whichever group the raygen region's record holds", nullptr,
        raygenGroupIgnored},
@@ -477,6 +482,10 @@ std::vector<FaultImpl> vulkanFaults() {
        "after the first structure overwritten"},
       {"creation-clears-memory", K::Vulkan,
        "creating an acceleration structure over memory a built one holds zeroes that memory"},
+      {"deferred-handle-early", K::Vulkan,
+       "a pipeline created through a deferred operation is taken as its output slot held it "
+       "before the operation wrote it (VK_NULL_HANDLE), as a harness reading the handle before "
+       "the operation completes sees it on a driver that writes it at completion"},
   };
 }
 

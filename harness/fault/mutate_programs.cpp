@@ -299,6 +299,20 @@ std::string libraryGroupsLost(Case& c, ModelOptions&) {
                        "groups of pipeline libraries do nothing");
 }
 
+// R-DEFERRED: a pipeline used before its deferred operation completed, its
+// groups after raygen not made yet.
+std::string deferredGroupsLost(Case& c, ModelOptions&) {
+  Pipeline& p = c.pipeline;
+  if (!p.deferred_threads) return "";
+  PipelineLibrary all;
+  for (uint32_t i = 0; i < p.miss.size(); ++i) all.miss.push_back(i);
+  for (uint32_t i = 0; i < p.hit_groups.size(); ++i) all.hit_groups.push_back(i);
+  for (uint32_t i = 0; i < p.callables.size(); ++i) all.callables.push_back(i);
+  return describeCount(loseLibraryGroups(p, {all}),
+                       "groups of a pipeline used before its deferred operation completed do "
+                       "nothing");
+}
+
 // R-RAYGEN-REGION: the launch runs group 0 (other_raygens[0] when another
 // group is selected).
 std::string raygenGroupIgnored(Case& c, ModelOptions&) {

@@ -127,6 +127,7 @@ std::vector<RuleFaults> pipelineRules() {
        {}},
       {"R-DEGEN", {"degenerate-hit"}, {}},
       {"R-LIBRARY", {"library-groups-lost", "library-handle-differs"}, {}},
+      {"R-DEFERRED", {"deferred-groups-lost"}, {}, fail, "", {"deferred-handle-early"}},
       {"R-RAYGEN-REGION", {"raygen-group-ignored"}, {}},
       {"R-CULLMASK-BUILTIN", {"cull-mask-builtin-default"}, {}},
       {"R-NULL-SHADERS", {"no-null-shaders-dropped"}, {}},

@@ -142,6 +142,17 @@ Result<void> reusedStorage(Case& c) {
   return {};
 }
 
+// Every pipeline object created through a deferred operation joined by
+// kDeferredPathThreads threads.
+Result<void> createdDeferred(Case& c) {
+  if (c.pipeline.deferred_threads)
+    return errorMessage("the case creates its pipelines through a deferred operation itself");
+  if (c.pipeline.from_compute)
+    return errorMessage("the case makes no ray tracing pipeline (raygen runs as compute)");
+  c.pipeline.deferred_threads = kDeferredPathThreads;
+  return {};
+}
+
 }  // namespace
 
 const char* featurePathName(FeaturePath p) {
@@ -207,6 +218,9 @@ Result<Case> throughPath(const Case& c, FeaturePath path) {
       break;
     case FeaturePath::ReusedStorage:
       RAYSPEC_TRY_VOID(reusedStorage(out));
+      break;
+    case FeaturePath::Deferred:
+      RAYSPEC_TRY_VOID(createdDeferred(out));
       break;
   }
   return out;

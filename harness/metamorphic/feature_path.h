@@ -1,7 +1,7 @@
 // Feature paths (--through): a way of building and launching that must not
 // change what shaders observe, applied to every case of a run so that the
 // path meets every family (R-INDIRECT, R-LIBRARY, R-AS-COPY, R-AS-UPDATE,
-// R-RQ-EQUIV, R-AS-BUILD), or laying the build inputs out another way (layouts).
+// R-RQ-EQUIV, R-AS-BUILD, R-DEFERRED), or laying the build inputs out another way (layouts).
 // The model's expectation stays the case's own; a case that already takes
 // another way of the same kind (its own launch command, libraries, copy or
 // update) is not sent through it, and says why.
@@ -42,13 +42,18 @@ namespace rayspec {
   /* structures and scratch in sparse-bound memory, page by page (scene.build.sparse) */      \
   X(Sparse, "sparse")                                                                         \
   /* structures in shared buffers over a destroyed decoy's memory (scene.build.storage) */    \
-  X(ReusedStorage, "reused-storage")
+  X(ReusedStorage, "reused-storage")                                                          \
+  /* made through a deferred operation joined by 4 threads (pipeline.deferred) */             \
+  X(Deferred, "deferred")
 enum class FeaturePath { RAYSPEC_FEATURE_PATHS(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(FeaturePath, RAYSPEC_FEATURE_PATHS);
 
 // The strides of the layouts path.
 constexpr uint32_t kLayoutsVertexStride = 20;
 constexpr uint32_t kLayoutsAabbStride = 40;
+// The threads that join each deferred operation of the deferred path: more
+// than one, so that a thread may find no work left (VK_THREAD_DONE_KHR).
+constexpr uint32_t kDeferredPathThreads = 4;
 
 const char* featurePathName(FeaturePath p);
 std::optional<FeaturePath> featurePathFromName(const std::string& name);

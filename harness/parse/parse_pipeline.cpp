@@ -211,6 +211,25 @@ void parseDepthsAndFlags(YamlReader& r, const YAML::Node& n, Pipeline& p) {
     if (auto x = r.flags(v, "pipeline.flags", pipelineFlagNames())) p.flags = *x;
 }
 
+// pipeline.deferred: {threads: N} (1..kMaxDeferredThreads) or {threads: max}.
+void parseDeferred(YamlReader& r, const YAML::Node& n, Pipeline& p) {
+  if (!r.expectMap(n, "pipeline.deferred", {"threads"})) return;
+  const YAML::Node v = YamlReader::get(n, "threads");
+  if (!v.IsDefined()) {
+    r.error(n, "pipeline.deferred",
+            "needs threads: a count of 1 to " + std::to_string(kMaxDeferredThreads) + ", or max");
+    return;
+  }
+  if (v.IsScalar() && v.Scalar() == "max") {
+    p.deferred_threads = 0;
+    return;
+  }
+  if (auto x = r.uint(v, "pipeline.deferred.threads", kMaxDeferredThreads)) {
+    if (*x == 0) r.error(v, "pipeline.deferred.threads", "must be at least 1 (or max)");
+    p.deferred_threads = *x;
+  }
+}
+
 // The shape of every record of pipeline.sbt (record_data, padding,
 // record_layout); false when there is no pipeline.sbt or it is not a map of
 // its fields (then its regions are not read either).
@@ -275,13 +294,14 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
   trace.loc = r.loc(n, "pipeline.raygen");
   p.raygen.push_back(trace);  // default raygen: [trace: {}]
   if (!n.IsDefined()) return;
-  if (!r.expectMap(
-          n, "pipeline",
-          {"max_recursion", "flags", "raygen", "raygens", "raygen_group", "raygen_data", "miss",
-           "hit_groups", "callables", "sbt", "libraries", "payloads", "callable_depth", "functions",
-           "constants", "specialize", "hit_attribute", "callable_data", "traces"}))
+  if (!r.expectMap(n, "pipeline",
+                   {"max_recursion", "flags",         "raygen",         "raygens",   "raygen_group",
+                    "raygen_data",   "miss",          "hit_groups",     "callables", "sbt",
+                    "libraries",     "payloads",      "callable_depth", "functions", "constants",
+                    "specialize",    "hit_attribute", "callable_data",  "traces",    "deferred"}))
     return;
   parseDepthsAndFlags(r, n, p);
+  if (auto v = YamlReader::get(n, "deferred"); v.IsDefined()) parseDeferred(r, v, p);
   if (auto v = YamlReader::get(n, "raygen"); v.IsDefined()) {
     p.raygen.clear();
     parseProgram(r, v, "pipeline.raygen", p.raygen);

@@ -65,6 +65,10 @@ std::string layoutFaultMisses(const Case& c, LayoutFault f) {
     return b.storage == StructureStorage::Reused ? ""
                                                  : "the case does not reuse memory "
                                                    "(scene.build.storage reused)";
+  if (f == LayoutFault::DeferredHandleEarly)
+    return c.pipeline.deferred_threads ? ""
+                                       : "the case creates no pipeline through a deferred "
+                                         "operation (pipeline.deferred, --through deferred)";
   if (const std::string query = queryFaultMisses(c, f); query != "-") return query;
   const bool applies = f == LayoutFault::StrideIgnored    ? b.vertex_stride || b.aabb_stride
                        : f == LayoutFault::OffsetsIgnored ? b.data_offsets || b.first_vertex
@@ -85,6 +89,9 @@ void armLayoutFault(Side& s, const std::string& fault, LayoutFault f) {
                                                           "reported"
                        : f == LayoutFault::CreationClears
                            ? "creating a structure over a built one zeroed its memory"
+                       : f == LayoutFault::DeferredHandleEarly
+                           ? "a deferred pipeline's handle was taken before the operation "
+                             "completed"
                        : queryFaultMisses(c, f) != "-" ? "a structure query answered wrong"
                                                        : "the builds misread the input layout";
     return misses.empty() ? "planted fault " + fault + ": " + what

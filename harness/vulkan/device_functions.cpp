@@ -51,6 +51,12 @@ Result<DeviceFunctions> loadDeviceFunctions(VkDevice device) {
   load(device, "vkCmdTraceRaysIndirectKHR", &f.cmdTraceRaysIndirect, missing);
   f.cmdTraceRaysIndirect2 = reinterpret_cast<PFN_vkCmdTraceRaysIndirect2KHR>(
       vkGetDeviceProcAddr(device, "vkCmdTraceRaysIndirect2KHR"));
+  load(device, "vkCreateDeferredOperationKHR", &f.createDeferredOperation, missing);
+  load(device, "vkDestroyDeferredOperationKHR", &f.destroyDeferredOperation, missing);
+  load(device, "vkGetDeferredOperationMaxConcurrencyKHR", &f.getDeferredOperationMaxConcurrency,
+       missing);
+  load(device, "vkGetDeferredOperationResultKHR", &f.getDeferredOperationResult, missing);
+  load(device, "vkDeferredOperationJoinKHR", &f.deferredOperationJoin, missing);
   if (!missing.empty()) return deviceError("vkGetDeviceProcAddr(" + missing + "): missing");
   return f;
 }

@@ -33,6 +33,12 @@ struct DeviceFunctions {
   PFN_vkCmdTraceRaysIndirectKHR cmdTraceRaysIndirect = nullptr;
   // Only where VK_KHR_ray_tracing_maintenance1 is enabled (else null).
   PFN_vkCmdTraceRaysIndirect2KHR cmdTraceRaysIndirect2 = nullptr;
+  // VK_KHR_deferred_host_operations (enabled on every device: vulkan/deferred_operation.h).
+  PFN_vkCreateDeferredOperationKHR createDeferredOperation = nullptr;
+  PFN_vkDestroyDeferredOperationKHR destroyDeferredOperation = nullptr;
+  PFN_vkGetDeferredOperationMaxConcurrencyKHR getDeferredOperationMaxConcurrency = nullptr;
+  PFN_vkGetDeferredOperationResultKHR getDeferredOperationResult = nullptr;
+  PFN_vkDeferredOperationJoinKHR deferredOperationJoin = nullptr;
 };
 
 // The entry points, or the Device error naming the first one the device

@@ -5,6 +5,7 @@
 #include <deque>
 
 #include "spirv/compile_glsl.h"
+#include "vulkan/deferred_operation.h"
 #include "vulkan/vk_check.h"
 
 namespace rayspec {
@@ -230,10 +231,17 @@ Result<VkPipeline> createPipelineObject(const VulkanContext& ctx, const Compiled
     info.pDynamicState = &dynamic;
   }
   VkPipeline pipeline = VK_NULL_HANDLE;
-  RAYSPEC_TRY_VOID(vkCall("vkCreateRayTracingPipelinesKHR", [&] {
-    return ctx.fn.createRayTracingPipelines(ctx.device, VK_NULL_HANDLE, ctx.pipeline_cache, 1,
-                                            &info, nullptr, &pipeline);
-  }));
+  const auto create = [&](VkDeferredOperationKHR op) {
+    return ctx.fn.createRayTracingPipelines(ctx.device, op, ctx.pipeline_cache, 1, &info, nullptr,
+                                            &pipeline);
+  };
+  const char* what = "vkCreateRayTracingPipelinesKHR";
+  if (part.deferred_threads) {
+    RAYSPEC_TRY(pipeline,
+                createDeferred(ctx, *part.deferred_threads, what, create, pipeline, cleanup));
+  } else {
+    RAYSPEC_TRY_VOID(vkCall(what, [&] { return create(VK_NULL_HANDLE); }));
+  }
   VkDevice device = ctx.device;
   cleanup.add([device, pipeline] { vkDestroyPipeline(device, pipeline, nullptr); });
   return pipeline;

@@ -75,6 +75,9 @@ struct PipelinePart {
   uint32_t max_payload_bytes = 0;  // the library interface's (interfacePayloadBytes)
   VkPipelineLayout layout = VK_NULL_HANDLE;
   bool dynamic_stack_size = false;  // VK_DYNAMIC_STATE_RAY_TRACING_PIPELINE_STACK_SIZE_KHR
+  // Set: created through a deferred operation joined by this many threads
+  // (Pipeline::deferred_threads; vulkan/deferred_operation.h).
+  std::optional<uint32_t> deferred_threads;
 };
 Result<VkPipeline> createPipelineObject(const VulkanContext& ctx, const CompiledPipeline& compiled,
                                         const PipelinePart& part, Cleanup& cleanup);

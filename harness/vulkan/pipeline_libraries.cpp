@@ -45,6 +45,7 @@ struct Linker {
     out.max_recursion = p.max_recursion;
     out.max_payload_bytes = interfacePayloadBytes(p);
     out.layout = layout;
+    out.deferred_threads = p.deferred_threads;
     return out;
   }
 

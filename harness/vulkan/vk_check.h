@@ -27,11 +27,18 @@ Error notSupported(std::string message);
 // The Device error "<what>: <VkResult name>" unless r == VK_SUCCESS.
 Result<void> vkCheck(VkResult r, const char* what);
 
+// make()'s answer, unless an injected error stands for the call (then the
+// call is not made).
+template <typename F>
+VkResult vkAnswer(const char* what, F make) {
+  const std::optional<VkResult> injected = injectedVkError(what);  // test only: the fault seam
+  return injected ? *injected : make();
+}
+
 // vkCheck(make(), what), unless an injected error stands for the call.
 template <typename F>
 Result<void> vkCall(const char* what, F make) {
-  const std::optional<VkResult> injected = injectedVkError(what);  // test only: the fault seam
-  return vkCheck(injected ? *injected : make(), what);
+  return vkCheck(vkAnswer(what, make), what);
 }
 
 }  // namespace rayspec

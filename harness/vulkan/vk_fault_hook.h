@@ -2,9 +2,10 @@
 // device-lost, out-of-device-memory and pipeline-refused (vulkan/
 // device_errors.h) make one Vulkan call fail on purpose; they reach the
 // Vulkan side through injectVkError and nothing else, and vkCall
-// (vulkan/vk_check.h) is the one place that obeys it. The layout faults
+// (vulkan/vk_check.h, with vkAnswer) is the one place that obeys it. The layout faults
 // reach it through injectLayoutFault, read by vulkan/acceleration_structure.cpp
-// alone (which lays its inputs out by vulkan/build_layout.h with it). A product run never sets
+// (which lays its inputs out by vulkan/build_layout.h with it) and, for
+// deferred-handle-early alone, vulkan/deferred_operation.cpp. A product run never sets
 // either. docs/layout-and-conventions.md, "The fault seam", lists every such hook.
 #pragma once
 
@@ -59,6 +60,12 @@ std::optional<VkResult> injectedVkError(const char* call);
 //                      first byte flipped (R-AS-SERIAL-HEADER)
 //   pointer-count-off  the bottom-level pointers query one more than the
 //                      header's handle count (R-AS-SERIAL-POINTERS)
+// and a pipeline fault, read by vulkan/deferred_operation.cpp alone:
+//   deferred-handle-early  a pipeline created through a deferred operation
+//                      is taken as its output slot held it before the
+//                      operation wrote it, as a harness that reads the handle
+//                      before the operation completes sees it on a driver
+//                      that writes it at completion (R-DEFERRED)
 #define RAYSPEC_LAYOUT_FAULTS(X)                      \
   X(None, "")                          /* no fault */ \
   X(StrideIgnored, "stride-ignored")   /* tight */    \
@@ -71,7 +78,8 @@ std::optional<VkResult> injectedVkError(const char* call);
   X(SizeTooLarge, "structure-size-too-large")         \
   X(AvailabilityLost, "query-availability-lost")      \
   X(UuidWrong, "serialized-uuid-wrong")               \
-  X(PointerCountOff, "pointer-count-off")
+  X(PointerCountOff, "pointer-count-off")             \
+  X(DeferredHandleEarly, "deferred-handle-early")
 enum class LayoutFault { RAYSPEC_LAYOUT_FAULTS(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(LayoutFault, RAYSPEC_LAYOUT_FAULTS);
 
