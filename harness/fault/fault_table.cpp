@@ -477,6 +477,9 @@ std::vector<FaultImpl> vulkanFaults() {
        "after the first structure overwritten"},
       {"creation-clears-memory", K::Vulkan,
        "creating an acceleration structure over memory a built one holds zeroes that memory"},
+      {"sparse-page-lost", K::Vulkan,
+       "the second page of each sparse geometry and instance buffer (scene.build.sparse) loses "
+       "its binding once filled: the builds read zeros there"},
   };
 }
 

@@ -65,6 +65,10 @@ std::string layoutFaultMisses(const Case& c, LayoutFault f) {
     return b.storage == StructureStorage::Reused ? ""
                                                  : "the case does not reuse memory "
                                                    "(scene.build.storage reused)";
+  if (f == LayoutFault::SparsePageLost)
+    return b.sparse.geometry || b.sparse.instances
+               ? ""
+               : "no input buffer of the case is sparse (scene.build.sparse geometry, instances)";
   if (const std::string query = queryFaultMisses(c, f); query != "-") return query;
   const bool applies = f == LayoutFault::StrideIgnored    ? b.vertex_stride || b.aabb_stride
                        : f == LayoutFault::OffsetsIgnored ? b.data_offsets || b.first_vertex
@@ -85,6 +89,8 @@ void armLayoutFault(Side& s, const std::string& fault, LayoutFault f) {
                                                           "reported"
                        : f == LayoutFault::CreationClears
                            ? "creating a structure over a built one zeroed its memory"
+                       : f == LayoutFault::SparsePageLost
+                           ? "a page of each sparse input buffer lost its binding (zeros there)"
                        : queryFaultMisses(c, f) != "-" ? "a structure query answered wrong"
                                                        : "the builds misread the input layout";
     return misses.empty() ? "planted fault " + fault + ": " + what
