@@ -83,7 +83,8 @@ Result<void> losePage(const VulkanContext& ctx, const SparseBuffer& lost, Cleanu
   VkMemoryRequirements req{};
   vkGetBufferMemoryRequirements(ctx.device, buffer, &req);
   const VkDeviceSize end = lost.offset + std::max<VkDeviceSize>(lost.buffer.size, 16);
-  if (end <= req.alignment) return {};
+  const VkDeviceSize zeroed = std::min(end - std::min(end, req.alignment), req.alignment) / 4 * 4;
+  if (zeroed == 0) return {};
   RAYSPEC_TRY(const std::vector<VkDeviceMemory> memory, allocatePages(ctx, req, 1, cleanup));
   VkSparseMemoryBind bind{};
   bind.resourceOffset = req.alignment;
@@ -91,8 +92,7 @@ Result<void> losePage(const VulkanContext& ctx, const SparseBuffer& lost, Cleanu
   bind.memory = memory.front();
   RAYSPEC_TRY_VOID(bindPages(ctx, buffer, {bind}));
   RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx, cleanup));
-  vkCmdFillBuffer(cmd, buffer, req.alignment, std::min(end - req.alignment, req.alignment) / 4 * 4,
-                  0);
+  vkCmdFillBuffer(cmd, buffer, req.alignment, zeroed, 0);
   return submitAndWait(ctx, cmd);
 }
 
