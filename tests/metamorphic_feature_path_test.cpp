@@ -86,9 +86,9 @@ TEST(FeaturePath, GenericAndSparseSetTheirBuildFields) {
   std::string why;
   const Case generic = *valueOrMessage(throughPath(c, FeaturePath::Generic), &why);
   EXPECT_EQ(generic.scene.build.generic, GenericLevels::Both);
-  EXPECT_FALSE(generic.scene.build.sparse);
+  EXPECT_FALSE(generic.scene.build.sparse.any());
   const Case sparse = *valueOrMessage(throughPath(c, FeaturePath::Sparse), &why);
-  EXPECT_TRUE(sparse.scene.build.sparse);
+  EXPECT_TRUE(sparse.scene.build.sparse.all());
   EXPECT_EQ(sparse.scene.build.generic, GenericLevels::None);
   Case own = c;
   own.scene.build.generic = GenericLevels::Top;

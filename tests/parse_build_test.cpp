@@ -42,7 +42,10 @@ TEST(SceneBuild, ErrorsNameTheLineAndField) {
               "unknown build command 'cpu' (device, indirect, host)"},
              {"{generic: middle}", "scene.build.generic",
               "unknown levels 'middle' (none, bottom, top, both)"},
-             {"{sparse: yes please}", "scene.build.sparse", "true or false"}};
+             {"{sparse: yes please}", "scene.build.sparse",
+              "unknown buffer 'yes please' (true, false, all, none, structures, scratch, "
+              "instances, geometry)"},
+             {"{sparse: [scratch, vertices]}", "scene.build.sparse", "unknown buffer 'vertices'"}};
   for (const Bad& b : bad) {
     const ParseResult r = parseBuild(b.build);
     EXPECT_FALSE(r.value) << b.build;
@@ -90,17 +93,27 @@ TEST(SceneBuild, StorageIsRead) {
   expectError(parseBuild("{storage: pooled}"), 3, "scene.build.storage",
               "unknown storage 'pooled' (own, shared, reused)");
   expectError(parseBuild("{sparse: true, storage: shared}"), 3, "scene.build.storage",
-              "not combined with scene.build.sparse");
+              "not combined with scene.build.sparse structures");
+  const ParseResult inputs = parseBuild("{sparse: [geometry], storage: shared}");
+  EXPECT_TRUE(inputs.value) << firstError(inputs);
 }
 
 TEST(SceneBuild, GenericAndSparseAreRead) {
   const ParseResult r = parseBuild("{generic: top, sparse: true}");
   ASSERT_TRUE(r.value) << firstError(r);
   EXPECT_EQ(r.value->scene.build.generic, GenericLevels::Top);
-  EXPECT_TRUE(r.value->scene.build.sparse);
+  EXPECT_TRUE(r.value->scene.build.sparse.all());
   const ParseResult none = parseBuild("{}");
   EXPECT_EQ(none.value->scene.build.generic, GenericLevels::None);
-  EXPECT_FALSE(none.value->scene.build.sparse);
+  EXPECT_FALSE(none.value->scene.build.sparse.any());
+  EXPECT_TRUE(parseBuild("{sparse: all}").value->scene.build.sparse.all());
+  EXPECT_FALSE(parseBuild("{sparse: false}").value->scene.build.sparse.any());
+  const SparseBuffers two = parseBuild("{sparse: [scratch, instances]}").value->scene.build.sparse;
+  EXPECT_TRUE(two.scratch && two.instances);
+  EXPECT_FALSE(two.structures || two.geometry);
+  const SparseBuffers one = parseBuild("{sparse: geometry}").value->scene.build.sparse;
+  EXPECT_TRUE(one.geometry);
+  EXPECT_FALSE(one.structures || one.scratch || one.instances);
   EXPECT_EQ(parseBuild("{generic: both}").value->scene.build.generic, GenericLevels::Both);
 }
 

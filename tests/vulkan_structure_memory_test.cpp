@@ -17,6 +17,7 @@
 #include "vulkan/build_log.h"
 #include "vulkan/context.h"
 #include "vulkan/run_case.h"
+#include "vulkan/vk_fault_hook.h"
 #include "vulkan/vulkan_engine.h"
 
 namespace rayspec {
@@ -114,7 +115,7 @@ TEST_F(StructureRun, GenericLevelsAreCreatedGenericAndBuiltWithTheirOwnType) {
 }
 
 TEST_F(StructureRun, SparseStructuresAndScratchAreBoundPageByPageAcrossPages) {
-  runClean(updatedAndCompacted("sparse: true"));
+  runClean(updatedAndCompacted("sparse: [structures, scratch]"));
   const BuildLog& log = *buildLog();
   ASSERT_EQ(log.structures.size(), 6u);
   // Six structures and one scratch buffer, each its own sparse buffer.
@@ -183,6 +184,46 @@ TEST_F(StructureRun, ReusedStorageBuildsOverADecoyAndCreatesOverEachStructure) {
     EXPECT_EQ(over.created, s.created) << i;
     EXPECT_FALSE(built.count(over.handle)) << i;
   }
+}
+
+// scene.build.sparse instances and geometry: the input buffer and each
+// state's instance buffer (as built, after the update) sparse, their
+// contents on two pages from two allocations out of order; the rest bound
+// whole (sparse: true binds all ten).
+TEST_F(StructureRun, SparseInputsAreBoundPageByPageAcrossPages) {
+  runClean(updatedAndCompacted("sparse: [instances, geometry]"));
+  const BuildLog& log = *buildLog();
+  ASSERT_EQ(log.sparse.size(), 3u);
+  for (const LoggedSparseBuffer& s : log.sparse) {
+    EXPECT_EQ(s.binds, 2u);
+    EXPECT_EQ(s.allocations, 2u);
+    EXPECT_FALSE(s.in_order);
+  }
+  for (const LoggedStructure& s : log.structures) EXPECT_EQ(s.page, 0u);
+  recordBuildLog(true);
+  runClean(updatedAndCompacted("sparse: true"));
+  EXPECT_EQ(buildLog()->sparse.size(), 10u);
+}
+
+// The planted fault sparse-page-lost: the second page of a sparse input
+// buffer bound elsewhere once filled, zeros there. Instances: the second
+// instance (the box) lies on it and vanishes; geometry: the updated
+// triangle's vertices lie on it (zeros: degenerate) and the first ray
+// misses (the second meets a box cut to a point, which it may hit).
+TEST_F(StructureRun, ALostPageOfSparseInputsChangesTheTraces) {
+  injectLayoutFault(LayoutFault::SparsePageLost);
+  const RecordField* hit = findRecordField("hit");
+  for (const char* buffers : {"instances", "geometry"}) {
+    SCOPED_TRACE(buffers);
+    const Case c = updatedAndCompacted(std::string("sparse: [") + buffers + "]");
+    const Results r = engine->run(c, derivePlan(c));
+    ASSERT_TRUE(r.ok()) << r.statusText();
+    ASSERT_EQ(r.records.size(), 2u * recordWords());
+    const bool instances = std::string(buffers) == "instances";
+    EXPECT_EQ(r.records[hit->offset], instances ? 1u : 0u);
+    if (instances) EXPECT_EQ(r.records[recordWords() + hit->offset], 0u);
+  }
+  injectLayoutFault(LayoutFault::None);
 }
 
 // A device the engine never opens: what the support check reads.

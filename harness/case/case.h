@@ -145,6 +145,21 @@ RAYSPEC_ENUM_NAMES(BuildCommand, RAYSPEC_BUILD_COMMANDS);
 #define RAYSPEC_GENERIC_LEVELS(X) X(None, "none") X(Bottom, "bottom") X(Top, "top") X(Both, "both")
 enum class GenericLevels { RAYSPEC_GENERIC_LEVELS(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(GenericLevels, RAYSPEC_GENERIC_LEVELS);
+// scene.build.sparse: the buffers of the builds in sparse-bound memory.
+// structures: every structure's buffer (the CTS's sparse_binding_structures);
+// scratch: the scratch buffer; instances: each top level's instance buffer;
+// geometry: the buffer of every BLAS's vertices, indices, transforms and
+// boxes. The last two are filled by a copy from a host buffer.
+// The names, each the member it sets (parse/parse_scene.cpp reads them).
+#define RAYSPEC_SPARSE_BUFFERS(X) \
+  X(structures, "structures")     \
+  X(scratch, "scratch") X(instances, "instances") X(geometry, "geometry")
+struct SparseBuffers {
+  bool structures = false, scratch = false, instances = false, geometry = false;
+  bool any() const { return structures || scratch || instances || geometry; }
+  bool all() const { return structures && scratch && instances && geometry; }
+  static SparseBuffers every() { return {true, true, true, true}; }
+};
 // scene.build.storage: where the structures' memory lies. own: each in a
 // buffer of its own. shared: one after another in a few large buffers, each
 // at a multiple of 256 bytes with its guard between it and the next (as the
@@ -191,11 +206,11 @@ struct AsBuild {
   // updated.
   bool tlas_rebuilt = false;
   GenericLevels generic = GenericLevels::None;
-  // scene.build.sparse: every structure's buffer and the scratch buffer
-  // created with SPARSE_BINDING and bound page by page through
-  // vkQueueBindSparse, out of order over two allocations, each structure
-  // across a page boundary (vulkan/sparse_buffer.h; sparseBinding).
-  bool sparse = false;
+  // scene.build.sparse: which buffers of the builds are created with
+  // SPARSE_BINDING and bound page by page through vkQueueBindSparse, out of
+  // order over two allocations, their contents across a page boundary
+  // (vulkan/sparse_buffer.h; sparseBinding).
+  SparseBuffers sparse;
   StructureStorage storage = StructureStorage::Own;
   // scene.build.queries, query_command (case/structure_queries.h).
   StructureQueries queries;

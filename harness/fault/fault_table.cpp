@@ -486,6 +486,9 @@ std::vector<FaultImpl> vulkanFaults() {
        "a pipeline created through a deferred operation is taken as its output slot held it "
        "before the operation wrote it (VK_NULL_HANDLE), as a harness reading the handle before "
        "the operation completes sees it on a driver that writes it at completion"},
+      {"sparse-page-lost", K::Vulkan,
+       "the second page of each sparse geometry and instance buffer (scene.build.sparse) loses "
+       "its binding once filled: the builds read zeros there"},
   };
 }
 

@@ -63,7 +63,7 @@ std::vector<RuleFaults> structureRules() {
        {},
        fail,
        "",
-       {"stride-ignored", "offsets-ignored", "pointers-reversed"}},
+       {"stride-ignored", "offsets-ignored", "pointers-reversed", "sparse-page-lost"}},
       {"R-AS-MEMORY", {"memory-guard-overwritten"}, {}, fail, "", {"build-writes-past-size"}},
       {"R-AS-CREATE", {"creation-empties-structure"}, {}, fail, "", {"creation-clears-memory"}},
       // scene.build.queries (vulkan/structure_queries.h, fault/record_faults_queries.cpp).

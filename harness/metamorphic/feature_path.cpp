@@ -123,12 +123,13 @@ Result<void> createdGeneric(Case& c) {
   return {};
 }
 
-// Every structure and the scratch in sparse-bound memory.
+// Every buffer of the builds in sparse-bound memory: structures, scratch,
+// instances and geometry.
 Result<void> sparselyBound(Case& c) {
-  if (c.scene.build.sparse) return errorMessage("the case binds its memory sparsely itself");
+  if (c.scene.build.sparse.any()) return errorMessage("the case binds its memory sparsely itself");
   if (c.scene.build.storage != StructureStorage::Own)
     return errorMessage("the case places its structures in shared buffers");
-  c.scene.build.sparse = true;
+  c.scene.build.sparse = SparseBuffers::every();
   return {};
 }
 
@@ -137,7 +138,8 @@ Result<void> sparselyBound(Case& c) {
 Result<void> reusedStorage(Case& c) {
   if (c.scene.build.storage != StructureStorage::Own)
     return errorMessage("the case chooses its own structure storage");
-  if (c.scene.build.sparse) return errorMessage("the case binds its memory sparsely");
+  if (c.scene.build.sparse.structures)
+    return errorMessage("the case binds its structures sparsely");
   c.scene.build.storage = StructureStorage::Reused;
   return {};
 }

@@ -39,7 +39,7 @@ namespace rayspec {
   X(UpdateIntoOther, "update-into-other")                                                     \
   /* every structure created GENERIC, built as bottom or top (scene.build.generic both) */    \
   X(Generic, "generic")                                                                       \
-  /* structures and scratch in sparse-bound memory, page by page (scene.build.sparse) */      \
+  /* every buffer of the builds in sparse-bound memory, page by page (scene.build.sparse) */  \
   X(Sparse, "sparse")                                                                         \
   /* structures in shared buffers over a destroyed decoy's memory (scene.build.storage) */    \
   X(ReusedStorage, "reused-storage")                                                          \

@@ -300,6 +300,36 @@ void checkStrides(YamlReader& r, const YAML::Node& n, const Scene& scene) {
     }
 }
 
+// One name of scene.build.sparse set in `sparse`; false when it names none.
+bool setSparse(const std::string& name, SparseBuffers& sparse) {
+#define RAYSPEC_SPARSE_NAMED(id, text) \
+  if (name == text) return sparse.id = true;
+  RAYSPEC_SPARSE_BUFFERS(RAYSPEC_SPARSE_NAMED)
+#undef RAYSPEC_SPARSE_NAMED
+  return false;
+}
+
+// scene.build.sparse: true or all (every buffer), false or none, one name
+// or a list of names (structures, scratch, instances, geometry).
+void parseSparse(YamlReader& r, const YAML::Node& v, SparseBuffers& sparse) {
+  const std::string f = "scene.build.sparse";
+  std::vector<YAML::Node> items;
+  if (v.IsSequence())
+    for (const YAML::Node& item : v) items.push_back(item);
+  else
+    items.push_back(v);
+  for (const YAML::Node& item : items) {
+    const auto name = r.string(item, f);
+    if (!name) continue;
+    if (*name == "true" || *name == "all")
+      sparse = SparseBuffers::every();
+    else if (*name != "false" && *name != "none" && !setSparse(*name, sparse))
+      r.error(item, f,
+              "unknown buffer '" + *name +
+                  "' (true, false, all, none, structures, scratch, instances, geometry)");
+  }
+}
+
 // scene.build.storage: own, shared or reused; not with sparse (whose
 // buffers place each structure across a page boundary of its own) nor with
 // host queries (whose structures are in host-visible memory).
@@ -314,8 +344,8 @@ void parseStorage(YamlReader& r, const YAML::Node& n, AsBuild& build) {
   else
     r.error(v, f,
             "unknown storage '" + *name + "' (" + namesJoined(enumNames<StructureStorage>()) + ")");
-  if (build.storage != StructureStorage::Own && build.sparse)
-    r.error(v, f, "a shared or reused storage is not combined with scene.build.sparse");
+  if (build.storage != StructureStorage::Own && build.sparse.structures)
+    r.error(v, f, "a shared or reused storage is not combined with scene.build.sparse structures");
   if (build.storage != StructureStorage::Own && build.queries.command == QueryCommand::Host)
     r.error(v, f,
             "a shared or reused storage is device memory: not combined with "
@@ -351,8 +381,7 @@ void parseBuild(YamlReader& r, const YAML::Node& n, AsBuild& build) {
         r.error(v, f + ".generic",
                 "unknown levels '" + *name + "' (" + namesJoined(enumNames<GenericLevels>()) + ")");
     }
-  if (auto v = YamlReader::get(n, "sparse"); v.IsDefined())
-    build.sparse = parseTrueFalse(r, v, f + ".sparse").value_or(false);
+  if (auto v = YamlReader::get(n, "sparse"); v.IsDefined()) parseSparse(r, v, build.sparse);
   parseStorage(r, n, build);
   if (auto v = YamlReader::get(n, "one_by_one"); v.IsDefined())
     build.one_by_one = parseTrueFalse(r, v, f + ".one_by_one").value_or(false);

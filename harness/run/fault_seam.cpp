@@ -69,6 +69,10 @@ std::string layoutFaultMisses(const Case& c, LayoutFault f) {
     return c.pipeline.deferred_threads ? ""
                                        : "the case creates no pipeline through a deferred "
                                          "operation (pipeline.deferred, --through deferred)";
+  if (f == LayoutFault::SparsePageLost)
+    return b.sparse.geometry || b.sparse.instances
+               ? ""
+               : "no input buffer of the case is sparse (scene.build.sparse geometry, instances)";
   if (const std::string query = queryFaultMisses(c, f); query != "-") return query;
   const bool applies = f == LayoutFault::StrideIgnored    ? b.vertex_stride || b.aabb_stride
                        : f == LayoutFault::OffsetsIgnored ? b.data_offsets || b.first_vertex
@@ -92,6 +96,8 @@ void armLayoutFault(Side& s, const std::string& fault, LayoutFault f) {
                        : f == LayoutFault::DeferredHandleEarly
                            ? "a deferred pipeline's handle was taken before the operation "
                              "completed"
+                       : f == LayoutFault::SparsePageLost
+                           ? "a page of each sparse input buffer lost its binding (zeros there)"
                        : queryFaultMisses(c, f) != "-" ? "a structure query answered wrong"
                                                        : "the builds misread the input layout";
     return misses.empty() ? "planted fault " + fault + ": " + what

@@ -33,7 +33,7 @@ constexpr VkBufferUsageFlags kStorageUsage =
 Result<SparseBuffer> storageFor(const VulkanContext& ctx, VkDeviceSize size,
                                 const StructureMaking& making, Cleanup& cleanup) {
   if (making.sparse)
-    return createSparseBuffer(ctx, guardedSize(size), kStorageUsage, true, cleanup);
+    return createSparseBuffer(ctx, guardedSize(size), kStorageUsage, kBeforePageBoundary, cleanup);
   SparseBuffer whole;
   RAYSPEC_TRY(whole.buffer,
               createBuffer(ctx, guardedSize(size), kStorageUsage,
@@ -126,6 +126,13 @@ struct BlasBuild {
 };
 
 constexpr uint64_t kNone = ~0ull;
+
+// The copies that filled sparse input buffers (uploadToSparse, waited on)
+// made visible to the builds that read them.
+void recordUploadBarrier(VkCommandBuffer cmd) {
+  recordMemoryBarrier(cmd, {VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT},
+                      {kBuildStage, VK_ACCESS_SHADER_READ_BIT});
+}
 
 // First pass: pack the inputs (laid out as scene.build asks, with the
 // planted layout fault if any) and fill the geometry descriptions with
@@ -397,7 +404,7 @@ class SceneBuilder {
     states_.push_back(&scene);
     scratch_.align = ctx.as_props.minAccelerationStructureScratchOffsetAlignment;
     scratch_.shared = scene.build.one_by_one;
-    scratch_.sparse = scene.build.sparse;
+    scratch_.sparse = scene.build.sparse.scratch;
   }
 
   Result<std::vector<BuiltStructure>> run() {
@@ -407,12 +414,13 @@ class SceneBuilder {
     placeScratch(scratch);
     if (scene_.build.command == BuildCommand::Indirect) RAYSPEC_TRY_VOID(placeRangesForIndirect());
     RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx_, cleanup_));
+    if (scene_.build.sparse.geometry) recordUploadBarrier(cmd);
     guards_.recordFill(cmd);
     RAYSPEC_TRY_VOID(runLevel(
         cmd, blases_, blas_updates_, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
         [this] { return queryBlases(); }, [this] { return copyBlases(); }));
     if (injectedLayoutFault() == LayoutFault::WritesPastSize) guards_.recordOverrun(cmd);
-    for (size_t k = 0; k < states_.size(); ++k) writeInstances(*states_[k], instances_[k]);
+    RAYSPEC_TRY_VOID(writeAllInstances(cmd));
     RAYSPEC_TRY_VOID(runLevel(
         cmd, tlases_, tlas_updates_,
         VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR |
@@ -498,6 +506,41 @@ class SceneBuilder {
     return {};
   }
 
+  // The planted fault sparse-page-lost: each sparse input buffer loses its
+  // second page once filled.
+  static bool losesPage() { return injectedLayoutFault() == LayoutFault::SparsePageLost; }
+
+  // A buffer of build inputs, filled by a copy: sparse, the contents
+  // straddling a page boundary (scene.build.sparse geometry, instances).
+  Result<SparseBuffer> sparseInputs(VkDeviceSize bytes) {
+    return createSparseBuffer(ctx_, bytes, kInputUsage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                              straddlingStart(bytes), cleanup_);
+  }
+
+  // The BLASes' input bytes in one buffer, host-visible or (scene.build.sparse
+  // geometry) sparse: the address where they start.
+  Result<VkDeviceAddress> uploadInputs(const std::vector<uint8_t>& bytes) {
+    if (!scene_.build.sparse.geometry) {
+      RAYSPEC_TRY(const Buffer inputs,
+                  createUploadBuffer(ctx_, bytes.data(), bytes.size(), kInputUsage, cleanup_));
+      return inputs.address;
+    }
+    RAYSPEC_TRY(const SparseBuffer inputs, sparseInputs(bytes.size()));
+    RAYSPEC_TRY_VOID(
+        uploadToSparse(ctx_, inputs, bytes.data(), bytes.size(), losesPage(), cleanup_));
+    return inputs.buffer.address + inputs.offset;
+  }
+
+  // A state's instance buffer: host-visible, or (scene.build.sparse
+  // instances) sparse, filled by a copy.
+  Result<SparseBuffer> instanceBuffer() {
+    if (scene_.build.sparse.instances) return sparseInputs(layout_->bytes());
+    SparseBuffer whole;
+    RAYSPEC_TRY(whole.buffer,
+                createBuffer(ctx_, layout_->bytes(), kInputUsage, MemoryUse::Host, cleanup_));
+    return whole;
+  }
+
   // Every reached BLAS of the scene as first built, and the geometry each
   // update moves it to: one input buffer for all.
   Result<void> describeBlases() {
@@ -512,12 +555,10 @@ class SceneBuilder {
         describeBlas(states_[k + 1]->blases[i], scene_.build, packer, updates_[k][i]);
     }
     if (!packer.bytes().empty()) {
-      RAYSPEC_TRY(const Buffer inputs,
-                  createUploadBuffer(ctx_, packer.bytes().data(), packer.bytes().size(),
-                                     kInputUsage, cleanup_));
-      for (BlasBuild& b : builds_) patchAddresses(b, inputs.address);
+      RAYSPEC_TRY(const VkDeviceAddress inputs, uploadInputs(packer.bytes()));
+      for (BlasBuild& b : builds_) patchAddresses(b, inputs);
       for (auto& state : updates_)
-        for (BlasBuild& b : state) patchAddresses(b, inputs.address);
+        for (BlasBuild& b : state) patchAddresses(b, inputs);
     }
     RAYSPEC_TRY(blases_,
                 createBlases(ctx_, builds_, used, flags_, making_, scratch_, guards_, cleanup_));
@@ -557,9 +598,9 @@ class SceneBuilder {
       tlas_ranges_.push_back(range);
     }
     for (size_t k = 0; k < states_.size(); ++k) {
-      RAYSPEC_TRY(instances_.emplace_back(),
-                  createBuffer(ctx_, layout_->bytes(), kInputUsage, MemoryUse::Host, cleanup_));
-      geometry_.push_back(instanceGeometry(instances_.back().address, *layout_, levels));
+      RAYSPEC_TRY(instances_.emplace_back(), instanceBuffer());
+      const SparseBuffer& at = instances_.back();
+      geometry_.push_back(instanceGeometry(at.buffer.address + at.offset, *layout_, levels));
     }
     RAYSPEC_TRY(tlases_, createTlases(ctx_, geometry_[0], instance_count_, tlas_ranges_, flags_,
                                       making_, scratch_, tlas_structures_, guards_, cleanup_));
@@ -581,10 +622,30 @@ class SceneBuilder {
     return {};
   }
 
-  // The state's instances (and pointers to them) where the layout puts them.
-  void writeInstances(const Scene& scene, Buffer& buffer) const {
-    const std::vector<uint8_t> bytes = layout_->write(allInstances(scene, builds_), buffer.address);
-    std::memcpy(buffer.mapped, bytes.data(), bytes.size());
+  // The state's instances (and pointers to them) where the layout puts them:
+  // written into the mapped buffer, or copied into the sparse one.
+  Result<void> writeInstances(const Scene& scene, const SparseBuffer& to) const {
+    const std::vector<uint8_t> bytes =
+        layout_->write(allInstances(scene, builds_), to.buffer.address + to.offset);
+    if (!to.buffer.mapped)
+      return uploadToSparse(ctx_, to, bytes.data(), bytes.size(), losesPage(), cleanup_);
+    std::memcpy(to.buffer.mapped, bytes.data(), bytes.size());
+    return {};
+  }
+
+  // Every state's instances, once the BLASes are final. Sparse instance
+  // buffers are filled by copies of their own: the commands recorded so far
+  // are submitted first, and the top levels' builds wait for the copies.
+  Result<void> writeAllInstances(VkCommandBuffer& cmd) {
+    const bool sparse = scene_.build.sparse.instances;
+    if (sparse) RAYSPEC_TRY_VOID(submitAndWait(ctx_, cmd));
+    for (size_t k = 0; k < states_.size(); ++k)
+      RAYSPEC_TRY_VOID(writeInstances(*states_[k], instances_[k]));
+    if (!sparse) return {};
+    RAYSPEC_TRY(cmd, beginCommands(ctx_, cleanup_));
+    recordUploadBarrier(cmd);
+    guards_.recordFill(cmd);
+    return {};
   }
 
   // The updates from the copy on act on the copies (R-AS-COPY, R-AS-UPDATE):
@@ -718,7 +779,7 @@ class SceneBuilder {
   uint32_t instance_count_ = 0;
   std::optional<InstanceLayout> layout_;
   std::vector<VkAccelerationStructureBuildRangeInfoKHR> tlas_ranges_;                   // per level
-  std::vector<Buffer> instances_;                                                       // per state
+  std::vector<SparseBuffer> instances_;                                                 // per state
   std::vector<std::vector<std::vector<VkAccelerationStructureGeometryKHR>>> geometry_;  // per state
   std::vector<BuiltStructure> tlas_structures_;
 };

@@ -57,7 +57,7 @@ struct StructureMaking {
   bool host_visible = false;
   StructureArena* arena = nullptr;
   static StructureMaking of(const AsBuild& build) {
-    return {build.generic, build.sparse, build.queries.command == QueryCommand::Host};
+    return {build.generic, build.sparse.structures, build.queries.command == QueryCommand::Host};
   }
   // The type a structure of level `level` (bottom or top) is created with:
   // GENERIC where scene.build.generic names its level.

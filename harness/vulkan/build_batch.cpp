@@ -48,7 +48,7 @@ Result<VkDeviceAddress> createScratch(const VulkanContext& ctx, const ScratchPla
   const VkDeviceSize size = scratch.total + scratch.align;
   Buffer buffer;
   if (scratch.sparse) {
-    RAYSPEC_TRY(const SparseBuffer sparse, createSparseBuffer(ctx, size, usage, false, cleanup));
+    RAYSPEC_TRY(const SparseBuffer sparse, createSparseBuffer(ctx, size, usage, 0, cleanup));
     buffer = sparse.buffer;
   } else {
     RAYSPEC_TRY(buffer, createBuffer(ctx, size, usage, MemoryUse::Device, cleanup));

@@ -76,9 +76,9 @@ Result<void> checkBuildSupport(const DeviceInfo& d, const AsBuild& build) {
   if (build.command == BuildCommand::Indirect && !d.acceleration_structure_indirect_build)
     return notSupported(
         "scene.build.command indirect: the device lacks accelerationStructureIndirectBuild");
-  if (build.sparse && !d.sparse_binding)
+  if (build.sparse.any() && !d.sparse_binding)
     return notSupported("scene.build.sparse: the device lacks sparseBinding");
-  if (build.sparse && !d.sparse_binding_queue)
+  if (build.sparse.any() && !d.sparse_binding_queue)
     return notSupported(
         "scene.build.sparse: the queue family rayspec runs on (the first with compute) lacks "
         "VK_QUEUE_SPARSE_BINDING_BIT");

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "vulkan/build_log.h"
+#include "vulkan/commands.h"
 #include "vulkan/vk_check.h"
 
 namespace rayspec {
@@ -75,6 +76,26 @@ void logBinding(const VkBufferCreateInfo& info, const VkMemoryRequirements& req,
   log->sparse.push_back(s);
 }
 
+// The planted fault sparse-page-lost: the buffer's second page (if it has
+// one) bound to an allocation of its own and zeroed through the buffer.
+Result<void> losePage(const VulkanContext& ctx, const SparseBuffer& lost, Cleanup& cleanup) {
+  const VkBuffer buffer = lost.buffer.buffer;
+  VkMemoryRequirements req{};
+  vkGetBufferMemoryRequirements(ctx.device, buffer, &req);
+  const VkDeviceSize end = lost.offset + std::max<VkDeviceSize>(lost.buffer.size, 16);
+  const VkDeviceSize zeroed = std::min(end - std::min(end, req.alignment), req.alignment) / 4 * 4;
+  if (zeroed == 0) return {};
+  RAYSPEC_TRY(const std::vector<VkDeviceMemory> memory, allocatePages(ctx, req, 1, cleanup));
+  VkSparseMemoryBind bind{};
+  bind.resourceOffset = req.alignment;
+  bind.size = req.alignment;
+  bind.memory = memory.front();
+  RAYSPEC_TRY_VOID(bindPages(ctx, buffer, {bind}));
+  RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx, cleanup));
+  vkCmdFillBuffer(cmd, buffer, req.alignment, zeroed, 0);
+  return submitAndWait(ctx, cmd);
+}
+
 Result<VkBuffer> sparseBuffer(VkDevice device, const VkBufferCreateInfo& info) {
   VkBuffer buffer = VK_NULL_HANDLE;
   RAYSPEC_TRY_VOID(vkCheck(vkCreateBuffer(device, &info, nullptr, &buffer), "vkCreateBuffer"));
@@ -83,8 +104,12 @@ Result<VkBuffer> sparseBuffer(VkDevice device, const VkBufferCreateInfo& info) {
 
 }  // namespace
 
+VkDeviceSize straddlingStart(VkDeviceSize size) {
+  return std::clamp<VkDeviceSize>(size / 2 / 16 * 16, 16, kBeforePageBoundary);
+}
+
 Result<SparseBuffer> createSparseBuffer(const VulkanContext& ctx, VkDeviceSize size,
-                                        VkBufferUsageFlags usage, bool across_page,
+                                        VkBufferUsageFlags usage, VkDeviceSize before_boundary,
                                         Cleanup& cleanup) {
   VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
   info.flags = VK_BUFFER_CREATE_SPARSE_BINDING_BIT;
@@ -96,9 +121,9 @@ Result<SparseBuffer> createSparseBuffer(const VulkanContext& ctx, VkDeviceSize s
   RAYSPEC_TRY(VkBuffer buffer, sparseBuffer(device, info));
   VkMemoryRequirements req{};
   vkGetBufferMemoryRequirements(device, buffer, &req);
-  if (across_page && req.alignment > kBeforePageBoundary) {  // made again, longer
+  if (before_boundary && req.alignment > before_boundary) {  // made again, longer
     vkDestroyBuffer(device, buffer, nullptr);
-    out.offset = req.alignment - kBeforePageBoundary;
+    out.offset = req.alignment - before_boundary;
     info.size += out.offset;
     RAYSPEC_TRY(buffer, sparseBuffer(device, info));
     vkGetBufferMemoryRequirements(device, buffer, &req);
@@ -120,6 +145,19 @@ Result<SparseBuffer> createSparseBuffer(const VulkanContext& ctx, VkDeviceSize s
   if (usage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT)
     out.buffer.address = bufferAddress(device, buffer);
   return out;
+}
+
+Result<void> uploadToSparse(const VulkanContext& ctx, const SparseBuffer& to, const void* data,
+                            VkDeviceSize bytes, bool lose_page, Cleanup& cleanup) {
+  if (bytes) {
+    RAYSPEC_TRY(const Buffer from,
+                createUploadBuffer(ctx, data, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, cleanup));
+    RAYSPEC_TRY(VkCommandBuffer cmd, beginCommands(ctx, cleanup));
+    const VkBufferCopy region{0, to.offset, bytes};
+    vkCmdCopyBuffer(cmd, from.buffer, to.buffer.buffer, 1, &region);
+    RAYSPEC_TRY_VOID(submitAndWait(ctx, cmd));
+  }
+  return lose_page ? losePage(ctx, to, cleanup) : Result<void>{};
 }
 
 }  // namespace rayspec

@@ -45,6 +45,10 @@ std::optional<VkResult> injectedVkError(const char* call);
 //   build-writes-past-size  after the BLAS builds, 4 bytes of the first guard
 //                      after a structure's reported size overwritten, as a
 //                      build that ran past it (R-AS-MEMORY, memory_guards.h)
+//   sparse-page-lost   scene.build.sparse geometry or instances: once each
+//                      such buffer is filled, its second page is bound to a
+//                      new allocation, zeroed, as a driver that lost that
+//                      binding would show it (vulkan/sparse_buffer.h)
 //   creation-clears-memory  scene.build.storage reused: each structure
 //                      created over a built one zeroes its memory, as a
 //                      vkCreateAccelerationStructureKHR that wrote it would
@@ -74,6 +78,7 @@ std::optional<VkResult> injectedVkError(const char* call);
   X(FormatMisread, "vertex-format-misread")           \
   X(WritesPastSize, "build-writes-past-size")         \
   X(CreationClears, "creation-clears-memory")         \
+  X(SparsePageLost, "sparse-page-lost")               \
   X(CompactedTooLarge, "compacted-size-too-large")    \
   X(SizeTooLarge, "structure-size-too-large")         \
   X(AvailabilityLost, "query-availability-lost")      \
