@@ -53,9 +53,9 @@ TEST(TlasFunction, EveryTraceAndQueryPassesTheElementToAFunction) {
     EXPECT_TRUE(has(
         t,
         "void rs_query_through(rayQueryEXT rs_q, nonuniformEXT accelerationStructureEXT rs_as, "));
-    EXPECT_TRUE(has(t, "rs_query_through(rs_query_1, " + std::string(kIndexed) + ", rs_flags"));
+    EXPECT_TRUE(has(t, "rs_query_through(rs_query_0, " + std::string(kIndexed) + ", rs_flags"));
     EXPECT_FALSE(has(t, "traceRayEXT(rs_tlas")) << t;
-    EXPECT_FALSE(has(t, "rayQueryInitializeEXT(rs_query_1, rs_tlas")) << t;
+    EXPECT_FALSE(has(t, "rayQueryInitializeEXT(rs_query_0, rs_tlas")) << t;
     const SpirvResult r = compileGlsl(t, s->stage);
     EXPECT_TRUE(r.error.empty()) << r.error;
   }
