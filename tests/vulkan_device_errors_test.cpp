@@ -162,5 +162,29 @@ TEST(DeviceErrors, TheCullMaskBuiltinWithoutMaintenance1IsNotSupported) {
       << lacking.error().message;
 }
 
+// tlas: expr indexes the array of top levels with nonuniformEXT: a device
+// without descriptorIndexing (VK_EXT_descriptor_indexing) is NotSupported,
+// the feature named.
+TEST(DeviceErrors, ADynamicTopLevelIndexWithoutDescriptorIndexingIsNotSupported) {
+  for (const char* name : {"ray-query/dynamic-tlas-index", "descriptors/tlas-array/indexed",
+                           "descriptors/tlas-array/through-function"}) {
+    SCOPED_TRACE(name);
+    const Case c = suiteCase(name);
+    ASSERT_FALSE(c.name.empty());
+    const Plan plan = derivePlan(c);
+    ASSERT_TRUE(plan.dynamic_tlas_index);
+    VulkanContext ctx = ampleContext();
+    ctx.info.ray_query = ctx.info.descriptor_indexing = true;
+    EXPECT_TRUE(checkCaseSupport(ctx, c, plan).ok());
+    ctx.info.descriptor_indexing = false;
+    const Result<void> lacking = checkCaseSupport(ctx, c, plan);
+    ASSERT_FALSE(lacking);
+    EXPECT_EQ(lacking.error().kind, ErrorKind::NotSupported);
+    EXPECT_NE(lacking.error().message.find("descriptorIndexing"), std::string::npos)
+        << lacking.error().message;
+  }
+  EXPECT_FALSE(derivePlan(suiteCase("inactive/top-levels")).dynamic_tlas_index);  // constants
+}
+
 }  // namespace
 }  // namespace rayspec

@@ -389,6 +389,12 @@ struct Pipeline {
   // query loop in that stage running the programs inlined, as above
   // (pipeline.traces: ray_query_in_hit, --through ray-query-in-hit).
   bool ray_query_in_hit = false;
+  // pipeline.tlas_function: every traceRayEXT and rayQueryInitializeEXT is
+  // made inside a function that takes the top level as an
+  // accelerationStructureEXT parameter (glsl/emit_trace.h), the caller
+  // passing rs_tlas, rs_tlas[k] or rs_tlas[nonuniformEXT(i)]. What is traced
+  // is the same: the model runs the case as it is.
+  bool tlas_function = false;
   // Several raygen groups (pipeline.raygens): `raygen` is group raygen_group,
   // other_raygens the rest in group order. The raygen region's record
   // selects raygen_group (R-RAYGEN-REGION); the others never run.

@@ -14,7 +14,8 @@ using Rules = std::vector<std::string>;
 
 // Rules that decide whether a trace hits and which candidate it commits: any
 // of them shows in the hit, the identity fields, t, and which shaders ran
-// (facing among them: with a culling flag it decides what is culled).
+// (facing among them: with a culling flag it decides what is culled; the
+// top level a trace names decides which instances it can find).
 const Rules& decisionRules() {
   static const Rules r = {
       "R-CAND-TRI-OPEN", "R-CAND-AABB-CLOSED", "R-TIE",       "R-ORDER-UNSPEC",     "R-INST-XFORM",
@@ -22,7 +23,7 @@ const Rules& decisionRules() {
       "R-FACE-CULL",     "R-OPACITY",          "R-CULL-OPQ",  "R-AHIT-OPAQUE-SKIP", "R-AHIT-UNUSED",
       "R-AHIT-CLOSEST",  "R-IGNORE",           "R-TERMINATE", "R-ISECT-REPORT",     "R-TOFH",
       "R-MISS-XOR-CHIT", "R-SBT-HIT",          "R-SBT-MISS",  "R-SBT-ZERO",         "R-INACTIVE",
-      "R-DEGEN",         "R-WATERTIGHT",       "R-PREC",      "R-FACE-DET"};
+      "R-DEGEN",         "R-WATERTIGHT",       "R-PREC",      "R-FACE-DET",         "R-TLAS-ARRAY"};
   return r;
 }
 

@@ -132,6 +132,7 @@ std::string loopTripOffByOne(Case& c, ModelOptions& o);
 std::string bitwiseXorAsOr(Case& c, ModelOptions& o);
 std::string crossOperandsSwapped(Case& c, ModelOptions& o);
 std::string wordIndexOffByOne(Case& c, ModelOptions& o);
+std::string tlasIndexOffByOne(Case& c, ModelOptions& o);
 std::string matrixTransposed(Case& c, ModelOptions& o);
 std::string floatBitsConverted(Case& c, ModelOptions& o);
 std::string functionIgnoreLost(Case& c, ModelOptions& o);

@@ -267,6 +267,10 @@ std::vector<FaultImpl> pipelineMutations() {
        "every trace and ray query traverses the first top level, whichever one it names (a "
        "constant or a dynamic index)",
        nullptr, tlasIgnored},
+      {"tlas-index-off-by-one", K::CaseMutation,
+       "a dynamically indexed array of top levels is read one element on: tlas: expr traverses "
+       "level (expr + 1) % the levels (a descriptor stride or base misread)",
+       nullptr, tlasIndexOffByOne},
       {"stack-size-ignored", K::CaseMutation,
        "the pipeline stack size a trace sets is ignored: callables nested deeper than the "
        "default stack's two frames do nothing",

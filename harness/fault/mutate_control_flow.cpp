@@ -98,6 +98,21 @@ std::string wordIndexOffByOne(Case& c, ModelOptions&) {
   return describeCount(n, "indexed payload and callable data words one word too far");
 }
 
+// R-TLAS-ARRAY: a device that reads a dynamically indexed array of top
+// levels one element on (a descriptor stride or base misread): the level of
+// index i is (i + 1) % the levels.
+std::string tlasIndexOffByOne(Case& c, ModelOptions&) {
+  size_t n = 0;
+  forEachProgram(c.pipeline, [&](Program& p, Stage) {
+    forEachStmt(p, [&](Stmt& s) {
+      if (s.trace.tlas_index.empty()) return;
+      addOne(s.trace.tlas_index[0]);
+      ++n;
+    });
+  });
+  return describeCount(n, "dynamic top-level indices read one element on");
+}
+
 std::string localsLostAcrossCalls(Case& c, ModelOptions& o) {
   bool locals = false;
   size_t calls = 0;

@@ -125,6 +125,9 @@ std::vector<RuleFaults> pipelineRules() {
       {"R-INACTIVE",
        {"inactive-renumbered", "inactive-revived", "inactive-hides-last-active", "tlas-ignored"},
        {}},
+      // A descriptor array of top levels (tlas: k, tlas: expr) and a top level
+      // passed to a function.
+      {"R-TLAS-ARRAY", {"tlas-ignored", "tlas-index-off-by-one"}, {}},
       {"R-DEGEN", {"degenerate-hit"}, {}},
       {"R-LIBRARY", {"library-groups-lost", "library-handle-differs"}, {}},
       {"R-DEFERRED", {"deferred-groups-lost"}, {}, fail, "", {"deferred-handle-early"}},

@@ -8,6 +8,7 @@
 #include "glsl/emit_stmt.h"
 #include "glsl/emit_trace.h"
 #include "glsl/glsl_literal.h"
+#include "glsl/tlas_function.h"
 #include "program/walk_program.h"
 
 namespace rayspec {
@@ -93,8 +94,7 @@ bool restarts(const Stmt& s) {
 void initialize(const Stmt& s, const std::string& query, const StageContext& ctx, GlslWriter& out) {
   fields(s, ctx, out);
   tlasIndexLocal(s.trace, ctx, out);
-  out.line("rayQueryInitializeEXT(" + query + ", " + tlasOperand(s.trace, ctx) +
-           ", rs_flags, rs_cull_mask, rs_origin, rs_tmin, rs_direction, rs_tmax);");
+  out.line(queryInitCall(ctx, query, tlasOperand(s.trace, ctx)));
 }
 
 // The body of a proceed loop for its candidate: the triangle block or the

@@ -16,6 +16,7 @@
 #include "glsl/inlined_levels.h"
 #include "glsl/stage_context.h"
 #include "glsl/stage_prologue.h"
+#include "glsl/tlas_function.h"
 #include "results/record_layout.h"
 
 namespace rayspec {
@@ -267,6 +268,7 @@ void declarations(const StageContext& ctx, bool ray_query, const Program& progra
   specializationConstants(ctx, out);
   // Raygen's launch ray is global: a function's trace may take its fields.
   if (stage == Stage::Raygen && u.launch_ray) out.line("RsRay rs_ray;");
+  emitTlasFunctions(ctx, out);  // before anything that traces or queries
   if (ray_query) emitInlinedStages(ctx, out);
   emitFunctions(program, ctx, out);
 }

@@ -5,6 +5,7 @@
 #include "glsl/emit_ray_query.h"
 #include "glsl/glsl_literal.h"
 #include "glsl/inlined_levels.h"
+#include "glsl/tlas_function.h"
 #include "program/payload_words.h"
 
 namespace rayspec {
@@ -103,10 +104,7 @@ void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
     return;
   }
   startPayload(s, ctx, out);
-  out.line("traceRayEXT(" + tlasOperand(t, ctx) +
-           ", rs_flags, rs_cull_mask, rs_sbt_offset, rs_sbt_stride, rs_miss,");
-  out.line("            rs_origin, rs_tmin, rs_direction, rs_tmax, " +
-           std::to_string(outgoingLocation(ctx, s.trace.location)) + ");");
+  out.line(traceCall(ctx, tlasOperand(t, ctx), outgoingLocation(ctx, s.trace.location)));
   emitPayloadResult(ctx, s.trace.location, out);
   out.close();
 }

@@ -298,10 +298,13 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
                    {"max_recursion", "flags",         "raygen",         "raygens",   "raygen_group",
                     "raygen_data",   "miss",          "hit_groups",     "callables", "sbt",
                     "libraries",     "payloads",      "callable_depth", "functions", "constants",
-                    "specialize",    "hit_attribute", "callable_data",  "traces",    "deferred"}))
+                    "specialize",    "hit_attribute", "callable_data",  "traces",    "deferred",
+                    "tlas_function"}))
     return;
   parseDepthsAndFlags(r, n, p);
   if (auto v = YamlReader::get(n, "deferred"); v.IsDefined()) parseDeferred(r, v, p);
+  if (auto v = YamlReader::get(n, "tlas_function"); v.IsDefined())
+    p.tlas_function = parseTrueFalse(r, v, "pipeline.tlas_function").value_or(false);
   if (auto v = YamlReader::get(n, "raygen"); v.IsDefined()) {
     p.raygen.clear();
     parseProgram(r, v, "pipeline.raygen", p.raygen);

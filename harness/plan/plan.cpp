@@ -137,6 +137,7 @@ void planStatements(const std::vector<StageProgram>& programs, const Pipeline& p
       if (s.kind == Stmt::Kind::Call) plan.callables = true;
       if (s.kind == Stmt::Kind::Trace && sp.stage != Stage::Raygen) plan.nested_trace = true;
       if (s.kind == Stmt::Kind::RayQuery) plan.ray_queries = true;
+      if (!s.trace.tlas_index.empty()) plan.dynamic_tlas_index = true;
     });
     walkExpressions(*sp.program, [&](const Expr& e) {
       const BuiltinNeeds needs =
@@ -245,6 +246,7 @@ std::vector<std::string> Plan::describe() const {
   line(sbt_tables, "SBT tables buffer (hit groups, miss programs, record data for ray queries)");
   line(cull_mask_builtin, "gl_CullMaskEXT read (VK_KHR_ray_tracing_maintenance1)");
   line(ray_queries, "ray_query statements (VK_KHR_ray_query)");
+  line(dynamic_tlas_index, "top levels indexed dynamically (nonuniformEXT: descriptorIndexing)");
   line(position_fetch,
        "vertex positions read (gl_HitTriangleVertexPositionsEXT or a ray query's: "
        "VK_KHR_ray_tracing_position_fetch, structures "

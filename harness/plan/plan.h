@@ -32,6 +32,9 @@ struct Plan {
   bool cull_mask_builtin = false;          // a stage reads cull_mask (gl_CullMaskEXT: needs
                                            // VK_KHR_ray_tracing_maintenance1)
   bool ray_queries = false;                // a stage runs a ray_query statement (VK_KHR_ray_query)
+  bool dynamic_tlas_index = false;         // a trace or ray query names its top level by an
+                                           // expression (rs_tlas[nonuniformEXT(i)]: descriptor
+                                           // indexing)
   bool position_fetch = false;             // a stage reads vertex_position<i> or a ray query's
                                            // (gl_HitTriangleVertexPositionsEXT: needs
                                            // VK_KHR_ray_tracing_position_fetch, and

@@ -149,6 +149,10 @@ Result<void> checkCaseSupport(const DeviceInfo& d, uint32_t validation_layer, co
     return notSupported(
         "traces by ray query (--through ray-query, ray-query-compute, ray-query-in-hit): the "
         "device lacks VK_KHR_ray_query's rayQuery");
+  if (plan.dynamic_tlas_index && !d.descriptor_indexing)
+    return notSupported(
+        "tlas: expr: top levels indexed dynamically (rs_tlas[nonuniformEXT(i)]) need "
+        "descriptorIndexing (VK_EXT_descriptor_indexing), which the device lacks");
   if (plan.ray_queries && !d.ray_query)
     return notSupported("ray_query statements: the device lacks VK_KHR_ray_query's rayQuery");
   if (c.pipeline.record_layout.declared() && c.pipeline.record_layout.scalar &&

@@ -121,6 +121,7 @@ Result<void> createDevice(VulkanContext& ctx) {
   v12_on.bufferDeviceAddress = VK_TRUE;
   v12_on.scalarBlockLayout = v12.scalarBlockLayout;
   ctx.info.scalar_block_layout = v12.scalarBlockLayout;
+  v12_on.descriptorIndexing = v12.descriptorIndexing;  // rs_tlas[nonuniformEXT(i)]
   v12_on.vulkanMemoryModel = v12.vulkanMemoryModel;
   v12_on.vulkanMemoryModelDeviceScope = v12.vulkanMemoryModelDeviceScope;
   VkPhysicalDeviceRayTracingMaintenance1FeaturesKHR maintenance1_on{

@@ -128,6 +128,9 @@ using DeviceLaunchSize = std::array<uint64_t, 3>;
     "the extension with its rayTracingPositionFetch feature (the vertex_position<i> built-ins)")   \
   X(bool, scalar_block_layout, "scalar_block_layout", "scalarBlockLayout",                         \
     "Vulkan 1.2's feature (a scalar shader record block, pipeline.sbt.record_layout)")             \
+  X(bool, descriptor_indexing, "descriptor_indexing", "descriptorIndexing",                        \
+    "Vulkan 1.2's feature (VK_EXT_descriptor_indexing: top levels indexed dynamically, tlas: "     \
+    "expr)")                                                                                       \
   X(bool, library_group_handles, "library_group_handles", "VK_EXT_pipeline_library_group_handles", \
     "the extension with its pipelineLibraryGroupHandles feature (a library's group handles "       \
     "are the linked pipeline's)")                                                                  \

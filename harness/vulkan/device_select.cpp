@@ -155,6 +155,7 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
   }
   vkGetPhysicalDeviceFeatures2(physical, &features);
   d.scalar_block_layout = vk12 && v12_features.scalarBlockLayout;
+  d.descriptor_indexing = vk12 && v12_features.descriptorIndexing;
   d.ray_tracing_pipeline = vk12 && d.ray_tracing_extension && rt_features.rayTracingPipeline;
   d.ray_traversal_primitive_culling =
       d.ray_tracing_pipeline && rt_features.rayTraversalPrimitiveCulling;
