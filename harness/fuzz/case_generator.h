@@ -77,6 +77,7 @@ class CaseGenerator {
   std::string aimedText(const Placed& inst, const Geometry& g, DVec3 at, DVec3 along,
                         const std::string& feature);
   std::string aimForm();
+  bool activeBoxes() const;
   // The pipeline's programs (fuzz/program_generator.h).
   friend class ProgramGenerator;
   std::string uintAtom(Stage stage);

@@ -4,8 +4,8 @@
 // and instance transforms (double), so most rays hit something and those
 // at edges and vertices meet the ambiguity rules. Now and then a grazing
 // ray (in the triangle's plane, along the box's face) or one from far away
-// (huge coordinates). And the case format's own `aim` form (rays.aim) over
-// a triangle instance.
+// (huge coordinates), only where no active instance holds boxes. And the
+// case format's own `aim` form (rays.aim) over a triangle instance.
 #include <cmath>
 
 #include "fuzz/case_generator.h"
@@ -104,12 +104,24 @@ std::string CaseGenerator::aimedText(const Placed& inst, const Geometry& g, DVec
   DVec3 d{eighths(-1, 1), eighths(-1, 1), eighths(-1, 1)};
   if (length(d) < 0.25) d[2] = chance(0.5) ? 1 : -1;
   double reach = eighths(2, 6);
-  if (chance(0.05)) {
+  // Not where boxes are: every box's programs test the sphere inscribed in
+  // it (sphere_hit, sphere_near, sphere_far), and one rounding of a far
+  // ray's object-space origin flips those decisions and moves the roots by
+  // more than R-PREC allows: no legal set to judge by. The draw stays, so
+  // that the other cases' sequences do not move.
+  if (chance(0.05) && !activeBoxes()) {
     features_.insert("huge-ray");
     reach = double(1 + pick(100)) * 1e5;
   }
   // The point at t = 1.
   return "{origin: " + vec(axpy(at, d, reach)) + ", direction: " + vec(scaled(d, -reach));
+}
+
+// Whether an active instance (as the last update left them) holds boxes.
+bool CaseGenerator::activeBoxes() const {
+  for (const auto& inst : instances_)
+    if (inst && blas_[inst->blas].aabbs) return true;
+  return false;
 }
 
 // rays.aim over a triangle geometry of an active instance: its vertices
