@@ -110,6 +110,15 @@ bool hasReplays(const RayAmbiguity& a) {
   return !a.replays.empty() && a.replays[0].record.size() == recordWords();
 }
 
+// Whether checkAmbiguous cannot tell the ambiguous trace's answer from the
+// record: no replays (a legal hit at no one t drops them, legal_replays.cpp)
+// where the ray makes more than one trace, its hit fields maybe a later
+// trace's (a miss shader's child hit: fuzz/seed-120385 ray 5 on NVIDIA 580).
+// Held to what its answers share (checkAmbiguousShared).
+bool identityUnknown(const RayAmbiguity& a, const TraceShape& shape) {
+  return !hasReplays(a) && !shape.single_trace;
+}
+
 // The rule a record that is none of the replays breaks (finding_rules.h),
 // of those the field evidences and the ambiguity's own (the device answered
 // outside its legal set).
@@ -182,15 +191,9 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
       const RecordField* unreplayed =
           hasReplays(a) ? fieldNoReplayLeaves(a, d, fields, bounds) : nullptr;
       if (hasReplays(a) && !unreplayed) continue;
-      // No replays (a legal hit at no one t, legal_replays.cpp) where the ray
-      // makes more than one trace: its record's hit fields may be a later
-      // trace's (a miss shader's child hit), not the ambiguous one's; held
-      // to what its answers share (fuzz/seed-120385 ray 5 on NVIDIA 580).
-      if (!hasReplays(a) && !shape.single_trace) {
-        checkAmbiguousShared(c, shape, a, d, m, fields, bounds, wrongs);
-        continue;
-      }
-      const DeviceAnswer answer = checkAmbiguous(c, a, d, wrongs, leak, passed);
+      const DeviceAnswer answer = identityUnknown(a, shape)
+                                      ? DeviceAnswer::Legal
+                                      : checkAmbiguous(c, a, d, wrongs, leak, passed);
       if (answer == DeviceAnswer::Finding) continue;
       if (unreplayed && answer == DeviceAnswer::Legal) {
         addUnreplayed(c, a, *unreplayed, wrongs);
