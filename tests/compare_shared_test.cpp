@@ -106,6 +106,32 @@ TEST(CompareShared, AmbiguousRaysKeepWhatEveryAnswerShares) {
       findingNames(compareResults(c, samplePlan(c), image, m), Status::Fail, "own records"));
 }
 
+// A ray in a triangle's plane (the model's own answer a miss, a legal hit
+// on primitive 1 anywhere across it) with no replays (a hit at no one t:
+// legal_replays.cpp). Where raygen alone traces, its record's hit fields
+// are that trace's: another primitive, or primitive 1 at a t outside the
+// span, fails. Where the miss shader traces too, they may be its child's
+// (fuzz/seed-120385 ray 5 on NVIDIA 580: the miss's child hit instance 0):
+// held to what the answers share, no false Fail.
+TEST(CompareShared, AnInPlaneRayWithoutReplaysIsHeldToItsOwnTrace) {
+  Results m = sampleResults("model");  // ray 0's record: primitive 0 at t 2.0
+  m.ambiguous.push_back({0, AmbiguityReason::InPlane, {{false, 0, 0, 0}, {true, 0, 0, 1, 2.0}}});
+  const Case one = oneTraceCase();
+  const Results child = sampleResults("vulkan");  // the model's record, primitive 0
+  EXPECT_TRUE(findingNames(compareResults(one, samplePlan(one), child, m), Status::Fail,
+                           "not one of its legal answers"));
+  Results outside = child;  // primitive 1, at a t outside the in-plane span
+  setUint(outside, 0, "primitive_id", 1);
+  outside.images[0].texels[0] = 1;
+  setFloat(outside, 0, "hit_t", 5.0f);
+  EXPECT_TRUE(
+      findingNames(compareResults(one, samplePlan(one), outside, m), Status::Fail, "hit_t"));
+  Case traced = oneTraceCase();
+  traced.pipeline.miss[0].push_back(traceStmt());  // the miss shader traces a child ray
+  const Verdict v = compareResults(traced, samplePlan(traced), child, m);
+  EXPECT_FALSE(findingNames(v, Status::Fail, "not one of its legal answers")) << v.headline();
+}
+
 // The miss counter follows miss runs: only a ray that may hit or miss lets
 // it move; the edge ray above (two hits) does not.
 TEST(CompareShared, CounterSlackOnlyWhereLegalAnswersDiffer) {

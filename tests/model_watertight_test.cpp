@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <vector>
 
+#include "case/transform.h"
 #include "model/frame_error.h"
+#include "model/in_plane.h"
 #include "model/sphere_error.h"
 #include "model/watertight.h"
 #include "model/watertight_rejection.h"
@@ -136,6 +139,54 @@ TEST(Watertight, ARayNearlyInTheTrianglesPlaneIsNotClearlyOutside) {
     if (step > 1e-5) EXPECT_EQ(h.ambiguity, TriAmbiguity::None) << step;
   }
   EXPECT_GT(near, 0);
+}
+
+// fuzz/seed-120327 (NVIDIA 580 hit it at t 2.2276): the world ray lies
+// exactly in the plane of a triangle of an instance scaled by (1.625, 1,
+// 1.125); the model's double inverse (1 / 1.625 is not a double) leaves the
+// object-space ray a rounding off the plane: a determinant not exactly 0 but
+// within its bound, every edge function within its bound (no side sure at
+// all). That is the ray in the plane as much as a zero determinant is
+// (in_plane), not a degenerate triangle whose t (a ratio of roundings) puts
+// it outside the interval. A triangle the ray crosses stays no in-plane one.
+TEST(Watertight, ARayInThePlaneOfAScaledInstancesTriangleIsInPlane) {
+  const Transform m = {1.625f, 0, 0, 0.75f, 0, 1, 0, -0.125f, 0, 0, 1.125f, 1.125f};
+  const DTransform inv = invertTransform(m);
+  std::array<float, 12> inv_f{};
+  for (int k = 0; k < 12; ++k) inv_f[k] = static_cast<float>(inv[k]);
+  const DVec3 world_o{5.37109375, 0.75, 3.76171875}, world_d{-2.28515625, -0.875, -1.01953125};
+  FrameError err;
+  objectRayFrameError(instanceForm(m), inv, inv_f, world_o, world_d, err);
+  const DVec3 o = applyAffine(inv, world_o, 1.0), d = applyAffine(inv, world_d, 0.0);
+  const DVec3 v0{-1.375, -1.75, -0.375}, v1{0.5, -1.625, 0.625}, v2{-0.125, -0.625, 0.5};
+  const WatertightHit h = watertightIntersect(o, d, v0, v1, v2, err);
+  EXPECT_TRUE(h.in_plane);
+  EXPECT_FALSE(h.hit) << "the model's own answer in the plane";
+  const std::optional<Span> across = inPlaneSpan(prepareWatertightRay(o, d, err), v0, v1, v2, {});
+  ASSERT_TRUE(across.has_value());
+  EXPECT_LE(across->t0, 2.2275862);
+  EXPECT_GE(across->t1, 2.2275862) << "the device's hit lies in the span";
+  const WatertightHit through = watertightIntersect(o, {0, 0, -1}, v0, v1, v2, err);
+  EXPECT_FALSE(through.in_plane);
+}
+
+// fuzz/seed-120531 ray 5: from 3.5e6 away through a translated triangle's
+// edge; the device's origin error (a float step of the translated origin)
+// puts every edge function and the determinant within their bounds, but the
+// line crosses the plane: a degenerate candidate, not one in the plane.
+TEST(Watertight, AFarRayThroughATriangleIsNotInItsPlane) {
+  const Transform m = {1, 0, 0, 1.5f, 0, 1, 0, -1.5f, 0, 0, 1, 0.125f};
+  const DTransform inv = invertTransform(m);
+  std::array<float, 12> inv_f{};
+  for (int k = 0; k < 12; ++k) inv_f[k] = static_cast<float>(inv[k]);
+  const DVec3 world_o{-3587498.5, -1537500.25, 1537500.5}, world_d{3587500, 1537500, -1537500};
+  FrameError err;
+  objectRayFrameError(instanceForm(m), inv, inv_f, world_o, world_d, err);
+  const DVec3 o = applyAffine(inv, world_o, 1.0), d = applyAffine(inv, world_d, 0.0);
+  const WatertightHit h = watertightIntersect(o, d, {0.125, 0.5, -0.5}, {1.875, -0.375, -0.25},
+                                              {-1.375, 1.125, -0.375}, err);
+  EXPECT_FALSE(h.in_plane);
+  EXPECT_EQ(h.ambiguity, TriAmbiguity::Degenerate);
 }
 
 TEST(FrameError, InstanceForms) {

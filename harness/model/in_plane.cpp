@@ -39,6 +39,19 @@ bool exactlyInPlane(const WatertightRay& w, const DVec3* const v[3], const DVec3
 
 }  // namespace
 
+bool lineNearPlane(const WatertightRay& w, const DVec3& v0, const DVec3& v1, const DVec3& v2,
+                   const DVec3& vertex_err) {
+  const DVec3* const v[3] = {&v0, &v1, &v2};
+  const DVec3 n = cross(sub(v1, v0), sub(v2, v0));
+  const double area = length(n), dn = largestMagnitude(w.d);
+  if (!(area > 0) || !std::isfinite(area) || !(dn > 0)) return false;
+  double reach = 0;
+  for (int j = 0; j < 3; ++j) reach = std::max(reach, largestMagnitude(sub(*v[j], w.o)));
+  const double slack = planeSlack(w, v, vertex_err);
+  return std::fabs(dot(sub(w.o, v0), n)) / area <= slack &&
+         std::fabs(dot(w.d, n)) / area * (reach / dn) <= slack;
+}
+
 std::optional<Span> inPlaneSpan(const WatertightRay& w, const DVec3& v0, const DVec3& v1,
                                 const DVec3& v2, const DVec3& vertex_err) {
   const DVec3* const v[3] = {&v0, &v1, &v2};

@@ -27,4 +27,13 @@ namespace rayspec {
 std::optional<Span> inPlaneSpan(const WatertightRay& ray, const DVec3& v0, const DVec3& v1,
                                 const DVec3& v2, const DVec3& vertex_err);
 
+// Whether the ray's line lies within inPlaneSpan's slack of the triangle's
+// plane along its reach S: the origin's distance from the plane, and the
+// direction's part along the normal times S / |d|, both within it (the
+// watertight test's in_plane where the determinant is a rounding off 0). A
+// ray from far away through the triangle (its origin off the plane) is not
+// in it, however much of the triangle its frame error covers.
+bool lineNearPlane(const WatertightRay& ray, const DVec3& v0, const DVec3& v1, const DVec3& v2,
+                   const DVec3& vertex_err);
+
 }  // namespace rayspec

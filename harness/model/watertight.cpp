@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "base/float_steps.h"
+#include "model/in_plane.h"
 
 namespace rayspec {
 
@@ -205,9 +206,17 @@ WatertightHit watertightIntersectPrepared(const WatertightRay& w, const DVec3& v
   r.hit = !(any_neg && any_pos) && det != 0.0;
   const bool near_plane = nearlyInPlane(det, bound);
   if (clear_neg && clear_pos && !near_plane) return r;  // clearly outside
-  r.in_plane = (det == 0.0 && std::fabs(e[0]) <= bound[0] && std::fabs(e[1]) <= bound[1] &&
-                std::fabs(e[2]) <= bound[2]) ||
-               (near_plane && clear_neg && clear_pos);
+  // Every edge function within its bound: the triangle seen edge-on with the
+  // origin on its line, the ray in its plane whether det is 0 or a rounding
+  // off it (the model's own object-space ray through a double inverse that
+  // is not exact: fuzz/seed-120327), where the line lies near the plane
+  // (not a ray from far away whose frame error covers the whole triangle:
+  // fuzz/seed-120531, a degenerate candidate as before).
+  const bool all_near =
+      std::fabs(e[0]) <= bound[0] && std::fabs(e[1]) <= bound[1] && std::fabs(e[2]) <= bound[2];
+  r.in_plane = (det == 0.0 && all_near) || (near_plane && clear_neg && clear_pos) ||
+               (near_plane && all_near && lineNearPlane(w, v0, v1, v2, vertex_err));
+  r.hit = r.hit && !r.in_plane;  // the model's own answer there: no hit (in_plane.h)
   r.ambiguity = nearEdges(e, bound, det);
   for (int i = 0; i < 3; ++i)
     if (std::fabs(e[i]) <= bound[i]) r.near_edges |= static_cast<uint8_t>(1u << i);

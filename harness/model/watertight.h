@@ -54,11 +54,12 @@ struct WatertightHit {
   // error, and the edge functions' errors weighted by how far each vertex's
   // depth lies from t); 0 when there is no t (zero determinant).
   double t_err = 0;
-  // Zero determinant with every edge function within its bound, or a
-  // determinant within its bound with edge functions clearly of both signs
-  // (nearlyInPlane, watertight.cpp: a device may hit it all the same): the
-  // ray's line lies in the triangle's plane, to rounding (no one t;
-  // in_plane.h).
+  // A determinant of 0, or within its bound (nearlyInPlane, watertight.cpp)
+  // with the line near the plane (lineNearPlane, in_plane.h), with every
+  // edge function within its bound; or a determinant within its
+  // bound with edge functions clearly of both signs (a device may hit it all
+  // the same): the ray's line lies in the triangle's plane, to rounding (no
+  // one t, and `hit` false: in_plane.h).
   bool in_plane = false;
 };
 
