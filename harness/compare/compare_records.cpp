@@ -130,6 +130,13 @@ FindingRule unreplayedRule(const Case& c, const RayAmbiguity& a, const std::stri
   return findingRule(evidenced, c.rules, fieldRule(field));
 }
 
+// A finding of R-WATERTIGHT, a "should" of the specification.
+FindingBuilder watertightWarning(const char* message) {
+  FindingBuilder b;
+  b.finding = {Status::QualityWarning, "R-WATERTIGHT", message};
+  return b;
+}
+
 // A record that is none of the replays of the legal answers it took.
 void addUnreplayed(const Case& c, const RayAmbiguity& a, const RecordField& f,
                    std::map<std::string, FindingBuilder>& wrongs) {
@@ -167,13 +174,10 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
   const TraceShape shape = traceShape(c);
   std::map<std::string, FindingBuilder> mismatches;
   std::map<std::string, FindingBuilder> wrongs;
-  FindingBuilder leak;
-  leak.finding = {Status::QualityWarning, "R-WATERTIGHT",
-                  "ray on a shared edge or vertex leaked (missed every candidate)"};
-  FindingBuilder passed;
-  passed.finding = {Status::QualityWarning, "R-WATERTIGHT",
-                    "ray on a shared edge or vertex passed between its triangles and hit what lies "
-                    "behind them"};
+  FindingBuilder leak =
+      watertightWarning("ray on a shared edge or vertex leaked (missed every candidate)");
+  FindingBuilder passed = watertightWarning(
+      "ray on a shared edge or vertex passed between its triangles and hit what lies behind them");
 
   for (size_t i = 0; i < rays; ++i) {
     const uint32_t* d = &device.records[i * words];
