@@ -157,7 +157,7 @@ TEST(LeakThenSharedEdge, PassingBetweenThenEitherFloorTriangleIsAQualityWarning)
   const Case c = parseInline(kLeakThenSharedEdge);
   const Plan plan = derivePlan(c);
   const Results model = runOnModel(c, plan, ModelOptions{ModelTier::Exact, 1});
-  const RayAmbiguity* a = rayZeroAmbiguity(model);
+  const RayAmbiguity* a = ambiguityOf(model, 0);
   ASSERT_NE(a, nullptr);
   std::set<std::pair<uint32_t, uint32_t>> leaks;
   for (const Candidate& k : a->leak_answers)
@@ -232,7 +232,7 @@ TEST(LeakToAValue, ARecordOnlyALeakLeavesIsAQualityWarning) {
   const Case c = parseInline(kLeakToAValue);
   const Plan plan = derivePlan(c);
   const Results model = runOnModel(c, plan, ModelOptions{ModelTier::Exact, 1});
-  const RayAmbiguity* a = rayZeroAmbiguity(model);
+  const RayAmbiguity* a = ambiguityOf(model, 0);
   ASSERT_NE(a, nullptr);
   EXPECT_EQ(a->leak_replays.size(), 1u) << "the floor's value, past the square";
   for (uint32_t legal : {1000u, 1001u})
