@@ -189,6 +189,28 @@ TEST(Watertight, AFarRayThroughATriangleIsNotInItsPlane) {
   EXPECT_EQ(h.ambiguity, TriAmbiguity::Degenerate);
 }
 
+// Lavapipe fuzz seed 140242, reduced: a ray along a rotated instance's
+// triangle in z = 0, its object-space line 1e-8 under the plane and
+// crossing it behind the origin (t -0.47), with the rotation's frame error:
+// every edge function and the determinant lie within their bounds (a sliver
+// of a projection around the ray), so no sign is sure: in_plane (lavapipe
+// hits it), not the clear miss it was.
+TEST(Watertight, ARayInTheRoundedPlaneWithEveryEdgeNearIsInPlane) {
+  const DVec3 v0{-1.625, -0.0625, 0}, v1{1.125, -0.0625, 0}, v2{1.125, 1.5625, 0};
+  const DVec3 o{0.2656249947262339, 0.1406251114013619, -8.898396033907296e-09};
+  const DVec3 d{-0.1718749982658384, 0.47395829813156276, -1.897618474855367e-08};
+  FrameError err;
+  err.origin = {1e-7, 1e-7, 1e-7};
+  err.direction = {1e-7, 1e-7, 1e-7};
+  const WatertightHit h =
+      watertightIntersectPrepared(prepareWatertightRay(o, d, err), v0, v1, v2, {});
+  EXPECT_FALSE(h.hit);
+  EXPECT_TRUE(h.in_plane);
+  // Without the frame error the line is clearly off: no in-plane answer.
+  EXPECT_FALSE(
+      watertightIntersectPrepared(prepareWatertightRay(o, d, {}), v0, v1, v2, {}).in_plane);
+}
+
 TEST(FrameError, InstanceForms) {
   EXPECT_EQ(instanceForm(kIdentity), InstanceForm::Identity);
   EXPECT_EQ(instanceForm({1, 0, 0, 1e5f, 0, 1, 0, 1e5f, 0, 0, 1, 0}),
