@@ -118,7 +118,7 @@ bool hasReplays(const RayAmbiguity& a) {
 // trace's (a miss shader's child hit: fuzz/seed-120385 ray 5 on NVIDIA 580).
 // Held to what its answers share (checkAmbiguousShared).
 bool identityUnknown(const RayAmbiguity& a, const TraceShape& shape) {
-  return !hasReplays(a) && !shape.single_trace;
+  return !hasReplays(a) && shape.several_traces;
 }
 
 // The rule a record that is none of the replays breaks (finding_rules.h),

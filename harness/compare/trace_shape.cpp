@@ -96,6 +96,8 @@ TraceShape traceShape(const Case& c) {
                    [&](const Program& p) { other_traces += countKind(p, Stmt::Kind::Trace); });
   t.single_trace =
       top_traces == 1 && countKind(pipe.raygen, Stmt::Kind::Trace) == 1 && other_traces == 0;
+  t.several_traces =
+      !t.single_trace && countKind(pipe.raygen, Stmt::Kind::Trace) + other_traces > 0;
   size_t top_calls = 0, other_calls = 0;
   for (const Stmt& s : pipe.raygen) top_calls += s.kind == Stmt::Kind::Call;
   forEachNonRaygen(pipe, [&](const Program& p) { other_calls += countKind(p, Stmt::Kind::Call); });

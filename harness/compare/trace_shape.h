@@ -16,6 +16,9 @@ struct TraceShape {
   // raygen traces exactly once, at its top level, and no other stage traces
   // (or calls): a launch ray makes one trace, whatever it hits
   bool single_trace = false;
+  // a launch ray may make more than one trace: not single_trace, and some
+  // stage traces at all (a later trace may write the record's hit fields)
+  bool several_traces = false;
   // each hit of that trace runs exactly one closest-hit: every hit group has
   // one, no hit record is all zero, no ray or trace may skip closest-hit
   bool hit_runs_closest_hit = false;
