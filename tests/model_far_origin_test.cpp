@@ -80,7 +80,9 @@ bool rayPasses(const Verdict& v, uint32_t ray) {
 // A colour of hit_t (120641) or of hit_position and hit_t (120778):
 // the device's sphere root lies within the ray's t bound of the model's, and
 // the colour with it, past the colour's own tolerance: the ray keeps no
-// replays. A hit on a primitive outside the legal set still fails.
+// replays. Its closest-hit traces again, so the record's identity may be the
+// child trace's: held to what every answer shares (compare_records.cpp
+// identityUnknown), where a raygen run count no answer gives still fails.
 TEST(ModelFarOrigin, ColourOfABoundedTIsHeldToTheAnswersShared) {
   for (const auto& [seed, ray] : {std::pair<std::string, uint32_t>{"120641", 2}, {"120778", 4}}) {
     Judged j = judged(seed);
@@ -88,9 +90,8 @@ TEST(ModelFarOrigin, ColourOfABoundedTIsHeldToTheAnswersShared) {
     const Verdict v = verdictOf(j);
     EXPECT_TRUE(rayPasses(v, ray)) << seed << ": " << v.headline();
   }
-  // 120778 ray 4 on instance 0 (masked out by the ray's cull mask).
   Judged j = judged("120778");
-  deviceWord(j, 4, "instance_id") = 0;
+  deviceWord(j, 4, "raygen_runs") = 2;
   EXPECT_FALSE(rayPasses(verdictOf(j), 4));
 }
 
