@@ -113,7 +113,8 @@ TEST(Prove, AHollowClaimOutsideTheTreeIsNamedWithTheFaultsTried) {
   // device are named with the command that plants them.
   EXPECT_NE(r.out.find("NOT PROVED ON THE MODEL: R-AS-BUILD: hollow"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("faults a live device alone shows: stride-ignored, offsets-ignored, "
-                       "pointers-reversed (rayspec run --case my-case.yaml --plant-fault NAME"),
+                       "pointers-reversed, sparse-page-lost (rayspec run --case my-case.yaml "
+                       "--plant-fault NAME"),
             std::string::npos)
       << r.out;
   for (const char* tried : {"break instance-mask-ignored: ", "break inactive-hides-last-active: ",

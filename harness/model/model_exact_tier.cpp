@@ -279,9 +279,11 @@ void TraceClassifier::boundT() {
 // tolerance, where the programs read the t into a value of their own (a
 // colour of hit_t or hit_position): a replay pins that value, a device's
 // lies anywhere in the bound (fuzz seeds 120121, 120641, 120778 on
-// NVIDIA): the ray keeps no replays (LaunchState::ray_t_free).
+// NVIDIA): the ray keeps no replays (LaunchState::ray_t_free). Not for a ray
+// query's commits: its records are held to their replays (without them the
+// planted query-commit-beyond-committed-t survived ray-query/sphere-crossing).
 void TraceClassifier::noteRootTFree(const Committed& b) {
-  if (!b.valid || !m_.sh_.programs->reads_root_t_free) return;
+  if (!b.valid || tr_.query || !m_.sh_.programs->reads_root_t_free) return;
   const ModelInstance& mi = scene_.instances[b.instance];
   if (scene_.blases[mi.blas].geometries[b.geometry].kind != Geometry::Kind::Aabbs) return;
   const Tolerance tol = toleranceFor("hit_t");
