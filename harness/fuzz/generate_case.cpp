@@ -26,7 +26,8 @@ const std::vector<std::string>& generatorFeatures() {
       "call-in-hit", "call-in-miss", "call-in-callable", "if-else", "repeat", "switch", "function",
       "local-across-call", "float-color", "float-builtin", "any-hit-accumulate",
       "any-hit-on-payload", "any-hit-function", "ray-query", "ray-query-generate",
-      "ray-query-terminate", "traces-ray-query", "traces-compute"};
+      "ray-query-terminate", "traces-ray-query", "traces-compute", "code-after-end", "vector-math",
+      "float-bits", "call-words", "miss-world-ray-beside-empty-group"};
   return kFeatures;
 }
 

@@ -110,8 +110,30 @@ std::string ProgramGenerator::floatExpr(Stage stage, int depth) {
 std::string ProgramGenerator::exactColor(Stage stage) {
   feature("float-color");
   std::string c = "{vec4: [";
-  for (int i = 0; i < 4; ++i) c += (i ? ", " : "") + floatExpr(stage, 1 + int(g_.pick(2)));
+  for (int i = 0; i < 4; ++i)
+    c += (i ? ", " : "") + (i < 3 && g_.chance(0.15) ? vectorComponent(stage, i)
+                                                     : floatExpr(stage, 1 + int(g_.pick(2))));
   return c + "]}";
+}
+
+// Component `i` of a cross product or a 3x3 matrix (or its transpose) times
+// a vector, of vectors of atoms: every product and sum exact in float32
+// (faults cross-operands-swapped, matrix-transposed).
+std::string ProgramGenerator::vectorComponent(Stage stage, int i) {
+  feature("vector-math");
+  const auto vec3 = [&] {
+    return "{vec3: [" + floatAtom(stage) + ", " + floatAtom(stage) + ", " + floatAtom(stage) + "]}";
+  };
+  static const char* const kAxes[] = {"x", "y", "z"};
+  std::string v;
+  if (g_.chance(0.5)) {
+    v = "{cross: [" + vec3() + ", " + vec3() + "]}";
+  } else {
+    v = std::string(g_.chance(0.5) ? "{mat3_mul: [" : "{mat3_tmul: [");
+    for (int k = 0; k < 4; ++k) v += (k ? ", " : "") + vec3();
+    v += "]}";
+  }
+  return "{" + std::string(kAxes[i]) + ": " + v + "}";
 }
 
 // The components of a float built-in as given (no arithmetic): compared

@@ -62,10 +62,18 @@ std::string ProgramGenerator::call(Stage stage, size_t first_callee) {
   if (first_callee == 0 && count > 1 && g_.chance(0.3))
     index = "{mod: [" + g_.uintExpr(stage, 1) + ", " + std::to_string(count) + "]}";
   std::string s = "{call: {index: " + index + ", value: " + g_.uintExpr(stage, 1);
+  // The data's words beyond the plain 48 bytes, in and out (R-CALLABLE:
+  // fault call-data-words-lost).
+  const bool words = g_.chance(0.4);
+  if (words) s += ", word0: " + g_.uintExpr(stage, 1);
   if (g_.chance(0.4))
     s += ", position: {vec3: [" + floatExpr(stage, 1) + ", " + floatExpr(stage, 1) + ", " +
          floatExpr(stage, 1) + "]}";
   s += "}}, {record: {" + freeField() + ": callee.value}}";
+  if (words) {
+    feature("call-words");
+    s += ", {record: {" + freeField() + ": callee.word1}}";
+  }
   if (g_.chance(0.3)) s += ", {record: {" + colorField() + ": callee.color}}";
   return s;
 }
@@ -143,7 +151,15 @@ std::string ProgramGenerator::controlFlow(Stage stage) {
   const auto set = [&](const std::string& value) {
     return "{set: {" + v + ": " + value + "}}";
   };
-  std::string s = "{let: {" + v + ": " + g_.uintExpr(stage, 1) + "}}, ";
+  std::string start = g_.uintExpr(stage, 1);
+  // The bits of a Float the case gives (floatBitsToUint: fault
+  // float-bits-converted); only a literal is the same bits on every device.
+  if (g_.chance(0.2)) {
+    feature("float-bits");
+    start =
+        "{bit_xor: [" + start + ", {float_bits: " + CaseGenerator::num(g_.eighths(-4, 4)) + "}]}";
+  }
+  std::string s = "{let: {" + v + ": " + start + "}}, ";
   switch (g_.pick(4)) {
     case 0:
       feature("if-else");
@@ -187,7 +203,13 @@ std::string ProgramGenerator::liveLocal(Stage stage, const std::string& across) 
 // a function.
 std::string ProgramGenerator::anyHitDecision(bool aabbs) {
   const bool terminate = g_.chance(0.35);
-  const std::string end = terminate ? "terminate" : "ignore";
+  std::string end = terminate ? "terminate" : "ignore";
+  // Now and then a statement after it, which must never run (R-IGNORE,
+  // R-TERMINATE: faults code-after-ignore-runs, code-after-terminate-runs).
+  if (g_.chance(0.3)) {
+    feature("code-after-end");
+    end += ", {payload: {value: " + g_.uintExpr(Stage::AnyHit, 1) + "}}";
+  }
   const uint64_t shape = g_.pick(5);
   feature(terminate && shape != 1 ? "any-hit-terminate" : "any-hit-ignore");
   switch (shape) {

@@ -184,6 +184,8 @@ std::string ProgramGenerator::callableProgram(size_t index) {
     p.push_back(liveLocal(Stage::Callable, call(Stage::Callable, 1)));
   if (g_.chance(0.3)) p.push_back(controlFlow(Stage::Callable));
   std::string data = "{call_data: {value: " + g_.uintExpr(Stage::Callable, 2);
+  if (g_.chance(0.6))
+    data += ", word1: {add: [call.word0, " + g_.uintExpr(Stage::Callable, 1) + "]}";
   if (g_.chance(0.5))
     data += ", color: " +
             (g_.chance(0.5) ? exactColor(Stage::Callable) : builtinColor(Stage::Callable));
@@ -202,6 +204,7 @@ std::string ProgramGenerator::hitGroups() {
     if (aabbs) add("intersection", intersectionProgram());
     if (g_.chance(0.65)) add("any_hit", anyHitProgram(aabbs));
     if (g_.chance(0.85)) add("closest_hit", closestHitProgram(aabbs));
+    if (group.empty()) empty_group_ = true;
     out += "    - {" + group + "}\n";
   }
   return out;
@@ -257,6 +260,11 @@ void ProgramGenerator::pipeline() {
   std::string miss = "  miss:\n";
   for (size_t m = 0; m < g_.miss_count_; ++m) miss += "    - " + missProgram() + "\n";
   const std::string hits = hitGroups();
+  // A known lavapipe class: a miss beside a hit of a group without shaders
+  // reads that hit's barycentrics as its world ray
+  // (references/driver-reports/lavapipe-miss-reads-neighbour-barycentrics.md).
+  if (empty_group_ && miss.find("world_ray_") != std::string::npos)
+    feature("miss-world-ray-beside-empty-group");
   const std::string raygen = "  raygen: " + raygenProgram() + "\n";
   g_.text() += header() + functions() + raygen + miss + hits;
   if (!callables.empty()) g_.text() += "  callables:\n" + callables;

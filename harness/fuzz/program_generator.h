@@ -58,6 +58,7 @@ class ProgramGenerator {
   std::string floatAtom(Stage stage);
   std::string floatExpr(Stage stage, int depth);
   std::string exactColor(Stage stage);
+  std::string vectorComponent(Stage stage, int i);
   std::string builtinColor(Stage stage);
   std::string hitCondition(bool aabbs);
 
@@ -76,6 +77,7 @@ class ProgramGenerator {
   bool uses_fold_ = false, uses_decide_ = false;  // the functions invoked
   bool accumulates_ = false;                      // any-hit counts in payload.word0
   bool colors_ = false;                           // a program writes payload.color
+  bool empty_group_ = false;                      // a hit group without shaders
 };
 
 }  // namespace rayspec
