@@ -3,97 +3,23 @@
 // held to rayspec's (references/baselines/lavapipe.csv); expectations
 // planted wrong (a flipped value, a model fault, a legal answer left out)
 // make it fail; what the export does not play is refused by name.
-#include <sys/wait.h>
-
-#include <cstdlib>
-#include <fstream>
-#include <sstream>
-
 #include <gtest/gtest.h>
 
 #include "export/c_text.h"
-#include "export/export_c.h"
 #include "export/export_support.h"
-#include "library/case_discovery.h"
-#include "model/model_engine.h"
+#include "export_play.h"
 #include "results/record_layout.h"
-#include "temp_dir.h"
 
 namespace rayspec {
 namespace {
-
-const std::string kCasesDir = RAYSPEC_SOURCE_DIR "/cases";
-
-struct Loaded {
-  Case c;
-  Plan plan;
-};
-
-Loaded load(const std::string& name) {
-  const std::optional<CaseFile> f = findCase(name, "", kCasesDir);
-  EXPECT_TRUE(f) << name;
-  ParseResult parsed = loadCase(*f, kCasesDir);
-  EXPECT_TRUE(parsed.value) << name;
-  Loaded out{*parsed.value, {}};
-  out.plan = derivePlan(out.c);
-  return out;
-}
-
-Results modelOf(const Loaded& l, const ModelFaults& faults = {}) {
-  ModelOptions opt;
-  opt.faults = faults;
-  return runOnModel(l.c, l.plan, opt);
-}
-
-struct Played {
-  int status = -1;  // the player's exit status; -1: it did not build
-  std::string output;
-};
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// The exported text built (C99, every warning an error) and run on lavapipe.
-Played play(const std::string& text, const std::string& dir_name) {
-  const std::string dir = freshTempDir("export/" + dir_name);
-  std::ofstream(dir + "/repro.c") << text;
-  const std::string build = std::string(RAYSPEC_C_COMPILER) +
-                            " -std=c99 -Wall -Wextra -Wno-missing-field-initializers -Werror " +
-                            dir + "/repro.c -lvulkan -o " + dir + "/repro > " + dir +
-                            "/build.txt 2>&1";
-  Played p;
-  if (std::system(build.c_str()) != 0) {
-    p.output = slurp(dir + "/build.txt");
-    return p;
-  }
-  const int s = std::system((dir + "/repro llvmpipe > " + dir + "/out.txt 2>&1").c_str());
-  p.status = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
-  p.output = slurp(dir + "/out.txt");
-  return p;
-}
-
-Played exportAndPlay(const Loaded& l, const Results& model, const std::string& dir_name) {
-  const Result<std::string> text = exportCaseAsC(l.c, l.plan, model);
-  EXPECT_TRUE(text) << l.c.name << ": " << (text ? "" : text.error().format());
-  if (!text) return {};
-  Played p = play(*text, dir_name);
-  EXPECT_NE(p.status, -1) << "did not build:\n" << p.output;
-  if (p.status == 77 && p.output.find("llvmpipe") == std::string::npos)
-    ADD_FAILURE() << "no lavapipe device to run on:\n" << p.output;
-  return p;
-}
 
 TEST(ExportC, CasesRayspecPassesPassOnLavapipe) {
   // Clear rays, a nested trace, shader record data, and two rays at tmin
   // and tmax whose legal answers (a hit or a miss) are replayed.
   for (const char* name : {"culling/facing-cull", "sbt/shader-record-data", "recursion/depth-three",
                            "candidates/triangle-open-interval"}) {
-    const Loaded l = load(name);
-    const Played p = exportAndPlay(l, modelOf(l), l.c.name);
+    const ExportCase l = loadExportCase(name);
+    const Played p = exportAndPlay(l, exportModelOf(l), l.c.name);
     EXPECT_EQ(p.status, 0) << name << ":\n" << p.output;
     EXPECT_NE(p.output.find("PASS: "), std::string::npos) << p.output;
   }
@@ -110,8 +36,8 @@ TEST(ExportC, HitGroupsOfEveryKindAndCallablesAgreeWithRayspecOnLavapipe) {
       {"intersection/tmax-after-report", 1},
   };
   for (const auto& [name, status] : sample) {
-    const Loaded l = load(name);
-    const Played p = exportAndPlay(l, modelOf(l), l.c.name);
+    const ExportCase l = loadExportCase(name);
+    const Played p = exportAndPlay(l, exportModelOf(l), l.c.name);
     EXPECT_EQ(p.status, status) << name << ":\n" << p.output;
   }
 }
@@ -119,18 +45,18 @@ TEST(ExportC, HitGroupsOfEveryKindAndCallablesAgreeWithRayspecOnLavapipe) {
 TEST(ExportC, ExpectationsOfAModelWithOpenAabbIntervalsFail) {
   // The model as a device whose reportIntersectionEXT rejects t == tmin and
   // t == tmax (R-CAND-AABB-CLOSED broken): lavapipe, closed, fails it.
-  const Loaded l = load("candidates/aabb-closed-interval");
+  const ExportCase l = loadExportCase("candidates/aabb-closed-interval");
   ModelFaults faults;
   faults.deviation = ModelDeviation::OpenAabbInterval;
-  const Played p = exportAndPlay(l, modelOf(l, faults), "open-aabb-interval");
+  const Played p = exportAndPlay(l, exportModelOf(l, faults), "open-aabb-interval");
   EXPECT_EQ(p.status, 1) << p.output;
   EXPECT_NE(p.output.find("FAIL: "), std::string::npos) << p.output;
 }
 
 TEST(ExportC, LavapipesFirstVertexBugFailsAsRayspecSays) {
   // lavapipe.csv: accel/layouts-first-vertex,Fail (firstVertex added twice).
-  const Loaded l = load("accel/layouts-first-vertex");
-  const Played p = exportAndPlay(l, modelOf(l), "first-vertex");
+  const ExportCase l = loadExportCase("accel/layouts-first-vertex");
+  const Played p = exportAndPlay(l, exportModelOf(l), "first-vertex");
   EXPECT_EQ(p.status, 1) << p.output;
   EXPECT_NE(p.output.find("FAIL: R-MISS-XOR-CHIT: ray 0: field 'hit': expected 1, observed 0"),
             std::string::npos)
@@ -138,8 +64,8 @@ TEST(ExportC, LavapipesFirstVertexBugFailsAsRayspecSays) {
 }
 
 TEST(ExportC, AFlippedExpectedValueFails) {
-  const Loaded l = load("culling/facing-cull");
-  Results model = modelOf(l);
+  const ExportCase l = loadExportCase("culling/facing-cull");
+  Results model = exportModelOf(l);
   const RecordField* f = findRecordField("closest_hit_runs");
   ASSERT_TRUE(f);
   // The first ray that ran closest-hit expects it to have run twice.
@@ -159,10 +85,10 @@ TEST(ExportC, AFlippedExpectedValueFails) {
 TEST(ExportC, ExpectationsOfAModelWithAPlantedFaultFail) {
   // The model as a device that takes triangles at exactly tmin and tmax
   // (R-CAND-TRI-OPEN broken): lavapipe, which keeps the interval open, fails it.
-  const Loaded l = load("candidates/triangle-open-interval");
+  const ExportCase l = loadExportCase("candidates/triangle-open-interval");
   ModelFaults faults;
   faults.deviation = ModelDeviation::ClosedTriangleInterval;
-  const Played p = exportAndPlay(l, modelOf(l, faults), "closed-interval");
+  const Played p = exportAndPlay(l, exportModelOf(l, faults), "closed-interval");
   EXPECT_EQ(p.status, 1) << p.output;
   EXPECT_NE(p.output.find("FAIL: "), std::string::npos) << p.output;
 }
@@ -170,8 +96,8 @@ TEST(ExportC, ExpectationsOfAModelWithAPlantedFaultFail) {
 TEST(ExportC, AnAmbiguousRayIsHeldToItsLegalAnswers) {
   // Ray 20 of triangle-open-interval: two legal answers. With one of them
   // left out the player passes only where the device took the one kept.
-  const Loaded l = load("candidates/triangle-open-interval");
-  const Results model = modelOf(l);
+  const ExportCase l = loadExportCase("candidates/triangle-open-interval");
+  const Results model = exportModelOf(l);
   const auto it = std::find_if(model.ambiguous.begin(), model.ambiguous.end(),
                                [](const RayAmbiguity& a) { return a.replays.size() == 2; });
   ASSERT_NE(it, model.ambiguous.end());
@@ -200,16 +126,16 @@ TEST(ExportC, RefusesWhatItDoesNotPlayNamingTheFeature) {
       {"accel/sparse",
        "export: case uses acceleration structure updates (scene.update), not yet "
        "exported"},
-      {"callable/lights", "export: case uses images (outputs.images), not yet exported"},
-      {"ray-query/any-hit-and-intersection", "export: case uses ray queries, not yet exported"},
+      {"ray-query/dynamic-tlas-index",
+       "export: case uses top levels indexed dynamically (tlas: expr), not yet exported"},
       // lavapipe.csv: NotSupported (no VK_EXT_opacity_micromap), which the player does not enable.
       {"cts-amber/basic2/as-written",
        "export: case uses opacity micromap instance flags (VK_EXT_opacity_micromap), not yet "
        "exported"},
   };
   for (const auto& [name, message] : refused) {
-    const Loaded l = load(name);
-    const Result<std::string> text = exportCaseAsC(l.c, l.plan, modelOf(l));
+    const ExportCase l = loadExportCase(name);
+    const Result<std::string> text = exportCaseAsC(l.c, l.plan, exportModelOf(l));
     ASSERT_FALSE(text) << name;
     EXPECT_EQ(text.error().kind, ErrorKind::NotSupported) << name;
     EXPECT_EQ(text.error().message, message) << name;
@@ -217,8 +143,8 @@ TEST(ExportC, RefusesWhatItDoesNotPlayNamingTheFeature) {
 }
 
 TEST(ExportC, RefusesALaunchTooWideToEmbed) {
-  Loaded l = load("culling/facing-cull");
-  const Results model = modelOf(l);
+  ExportCase l = loadExportCase("culling/facing-cull");
+  const Results model = exportModelOf(l);
   l.c.rays.width = static_cast<uint32_t>(kMaxExportedRays) + 1;
   l.c.rays.height = 1;
   const Result<std::string> text = exportCaseAsC(l.c, l.plan, model);
@@ -230,8 +156,8 @@ TEST(ExportC, RefusesALaunchTooWideToEmbed) {
 
 TEST(ExportC, ANotSupportedVertexFormatExitsSeventySevenNamingIt) {
   // lavapipe.csv: accel/vertex-formats-listed/snorm16x3,NotSupported.
-  const Loaded l = load("accel/vertex-formats-listed/snorm16x3");
-  const Played p = exportAndPlay(l, modelOf(l), "snorm16x3");
+  const ExportCase l = loadExportCase("accel/vertex-formats-listed/snorm16x3");
+  const Played p = exportAndPlay(l, exportModelOf(l), "snorm16x3");
   EXPECT_EQ(p.status, 77) << p.output;
   EXPECT_NE(p.output.find("NotSupported: triangles.vertex_format snorm16x3"), std::string::npos)
       << p.output;

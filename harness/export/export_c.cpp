@@ -48,9 +48,9 @@ Result<std::string> exportCaseAsC(const Case& c, const Plan& plan, const Results
   RAYSPEC_TRY(const CompiledPipeline compiled, compilePipeline(generated));
   RAYSPEC_TRY(const std::string launch, launchSection(c, plan, compiled));
   const std::string data = "#define RS_CASE_NAME " + cString(c.name) + "\n\n" +
-                           sceneSection(c.scene) +
-                           pipelineSection(c.pipeline, generated, compiled) + launch +
-                           expectationsSection(c, plan, model);
+                           sceneSection(c.scene) + pipelineSection(c, plan, generated, compiled) +
+                           launch + expectationsSection(c, plan, model) +
+                           imagesSection(c, plan, model);
   std::string player = exportPlayerSource();
   const size_t at = player.find(kDataMarker);
   if (at == std::string::npos)

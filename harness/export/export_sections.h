@@ -17,13 +17,18 @@ namespace rayspec {
 // RS_BLAS_COUNT, rs_geometries, rs_blases, rs_instances, RS_BUILD_FLAGS.
 std::string sceneSection(const Scene& scene);
 // The SPIR-V of every stage (its GLSL in comments), rs_shaders, rs_groups,
-// the SBT records, RS_MAX_RECURSION.
-std::string pipelineSection(const Pipeline& p, const GeneratedPipeline& generated,
+// the SBT records, RS_MAX_RECURSION, what the stages need of the device
+// (RS_NEEDS_*); raygen alone as a compute shader and its dispatch
+// (RS_COMPUTE*) where the case runs it so (Pipeline::from_compute).
+std::string pipelineSection(const Case& c, const Plan& plan, const GeneratedPipeline& generated,
                             const CompiledPipeline& compiled);
 // rs_rays, the launch size, rs_bindings; the NotSupported error for a
 // binding the player does not back.
 Result<std::string> launchSection(const Case& c, const Plan& plan,
                                   const CompiledPipeline& compiled);
+// rs_images, each with the model's texels; RS_IMAGE_* (the launch's extent,
+// the first image binding, the count).
+std::string imagesSection(const Case& c, const Plan& plan, const Results& model);
 // rs_expected, rs_fields, rs_undefined, the ambiguous rays' replays, rs_counters.
 std::string expectationsSection(const Case& c, const Plan& plan, const Results& model);
 

@@ -7,12 +7,13 @@
 namespace rayspec {
 namespace {
 
-// The pipeline's shape: one pipeline of every stage, without flags,
-// specialization or a dynamic stack size.
+// The pipeline's shape: one pipeline of every stage (its traces by ray
+// query too, or raygen as a compute shader), without flags, specialization
+// or a dynamic stack size.
 std::string pipelineFeature(const Case& c, const Plan& plan) {
   const Pipeline& p = c.pipeline;
   if (!c.expected_rejections.empty()) return "expected compiler rejections (expect_rejected)";
-  if (p.from_compute || p.ray_query || p.ray_query_in_hit || plan.ray_queries) return "ray queries";
+  if (plan.dynamic_tlas_index) return "top levels indexed dynamically (tlas: expr)";
   if (!p.libraries.empty()) return "pipeline libraries";
   if (p.deferred_threads) return "deferred pipeline creation (pipeline.deferred)";
   if (p.callable_depth) return "a dynamic stack size (pipeline.callable_depth)";
@@ -20,7 +21,6 @@ std::string pipelineFeature(const Case& c, const Plan& plan) {
   if (!p.constants.empty() || !p.specialize.empty()) return "specialization constants";
   if (plan.position_fetch) return "position fetch (vertex_position)";
   if (plan.cull_mask_builtin) return "the cull_mask built-in (VK_KHR_ray_tracing_maintenance1)";
-  if (!plan.images.empty()) return "images (outputs.images)";
   return "";
 }
 
@@ -80,12 +80,33 @@ std::string expectationFeature(const Case& c, const Results& model) {
   return "";
 }
 
+// The images: the model draws each, and those the case declares equal
+// (equal_to) are equal in the model (else rayspec's verdict is a CaseError).
+std::string imageFeature(const Plan& plan, const Results& model) {
+  for (const ImageOutput& out : plan.images) {
+    const Image* im = imageNamed(model, out.name);
+    if (!im) return "an image the model does not draw (" + out.name + ")";
+    if (out.equal_to.empty()) continue;
+    const Image* other = imageNamed(model, out.equal_to);
+    if (!other || other->texels != im->texels)
+      return "images declared equal (equal_to) that the model draws differently (a CaseError)";
+  }
+  return "";
+}
+
 }  // namespace
+
+const Image* imageNamed(const Results& r, const std::string& name) {
+  for (const Image& im : r.images)
+    if (im.name == name) return &im;
+  return nullptr;
+}
 
 std::string unexportedFeature(const Case& c, const Plan& plan, const Results& model) {
   if (!model.ok()) return "a case the model does not run (" + model.statusText() + ")";
   if (std::string f = pipelineFeature(c, plan); !f.empty()) return f;
   if (std::string f = sceneFeature(c); !f.empty()) return f;
+  if (std::string f = imageFeature(plan, model); !f.empty()) return f;
   return expectationFeature(c, model);
 }
 

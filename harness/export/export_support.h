@@ -21,4 +21,7 @@ constexpr uint64_t kMaxExportedRays = 1u << 16;
 // model: the model's exact tier run of the case.
 std::string unexportedFeature(const Case& c, const Plan& plan, const Results& model);
 
+// r's image `name`, or null.
+const Image* imageNamed(const Results& r, const std::string& name);
+
 }  // namespace rayspec

@@ -8,7 +8,9 @@ namespace rayspec {
 namespace {
 
 // The player's kind of a binding, or "" for one it does not back.
-std::string bindingKind(uint32_t binding) {
+std::string bindingKind(const Plan& plan, uint32_t binding) {
+  if (binding >= kBindingFirstImage && binding - kBindingFirstImage < plan.images.size())
+    return "RS_BIND_IMAGE";
   switch (binding) {
     case kBindingTlas:
       return "RS_BIND_TLAS";
@@ -44,10 +46,10 @@ Result<std::string> launchSection(const Case& c, const Plan& plan,
   RAYSPEC_TRY(const std::set<uint32_t> bindings, caseBindings(plan, declaredBindings(compiled)));
   std::string arrays, table;
   for (uint32_t b : bindings) {
-    const std::string kind = bindingKind(b);
+    const std::string kind = bindingKind(plan, b);
     if (kind.empty())
       return notSupported("export: case uses descriptor binding " + std::to_string(b) +
-                          " (images), not yet exported");
+                          " (no plan output backs it), not yet exported");
     table += "  {" + std::to_string(b) + ", " + kind + ", " + wordsOf(c, b, arrays) + "},\n";
   }
   const std::array<uint32_t, 3> launch = c.rays.launchSize();

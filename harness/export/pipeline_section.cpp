@@ -1,12 +1,16 @@
+#include <array>
+
 #include "export/c_text.h"
 #include "export/export_sections.h"
+#include "glsl/emit_compute.h"
 #include "vulkan/sbt_layout.h"
 
 namespace rayspec {
 namespace {
 
-const char* stageBitName(Stage s) {
-  switch (s) {
+const char* stageBitName(const CompiledShader& shader) {
+  if (shader.compute) return "VK_SHADER_STAGE_COMPUTE_BIT";
+  switch (shader.stage) {
     case Stage::Raygen:
       return "VK_SHADER_STAGE_RAYGEN_BIT_KHR";
     case Stage::Miss:
@@ -31,7 +35,7 @@ struct Stages {
     const std::string name = "rs_spirv_" + std::to_string(count);
     arrays += "/* " + g.name + ": its GLSL, as rayspec generated it */\n" + cComment(g.glsl) +
               cWordArray(name, s.spirv);
-    table += "  {" + std::string(stageBitName(s.stage)) + ", " + name + ", sizeof " + name + "},\n";
+    table += "  {" + std::string(stageBitName(s)) + ", " + name + ", sizeof " + name + "},\n";
     return count++;
   }
 };
@@ -119,10 +123,46 @@ std::string hitGroups(const GeneratedPipeline& generated, const CompiledPipeline
   return groups;
 }
 
+// What the device must offer the stages: ray queries (VK_KHR_ray_query),
+// a scalar shader record block (scalarBlockLayout).
+std::string needsText(const Pipeline& p, const Plan& plan) {
+  const bool ray_queries = p.ray_query || p.ray_query_in_hit || plan.ray_queries;
+  return "#define RS_NEEDS_RAY_QUERY " + std::string(ray_queries ? "1" : "0") +
+         "\n#define RS_NEEDS_SCALAR_LAYOUT " +
+         (p.record_layout.declared() && p.record_layout.scalar ? "1" : "0") + "\n";
+}
+
+// Raygen run as a compute shader (Pipeline::from_compute): the one stage,
+// the dispatch's group counts (computeGroups), and no ray tracing pipeline
+// or SBT (their tables left empty).
+std::string computeSection(const Case& c, const Plan& plan, const GeneratedPipeline& generated,
+                           const CompiledPipeline& compiled) {
+  Stages stages;
+  stages.add(generated.raygen, compiled.raygen);
+  const std::array<uint32_t, 3> groups = computeGroups(c.rays.launchSize());
+  return "/* Raygen as a compute shader (pipeline.traces: ray_query_compute): SPIR-V as rayspec "
+         "compiled it,\n   dispatched in groups of " +
+         std::to_string(kComputeGroupSize) + "; no ray tracing pipeline, no SBT. */\n" +
+         stages.arrays + "static const rs_shader rs_shaders[] = {\n" + stages.table + "};\n" +
+         "static const rs_group rs_groups[] = {\n" + generalGroup(0) +
+         "};\n#define RS_SHADER_COUNT 1\n#define RS_GROUP_COUNT 1\n#define RS_MAX_RECURSION 1u\n" +
+         needsText(c.pipeline, plan) + "#define RS_COMPUTE 1\n#define RS_COMPUTE_GROUPS_X " +
+         std::to_string(groups[0]) + "u\n#define RS_COMPUTE_GROUPS_Y " + std::to_string(groups[1]) +
+         "u\n#define RS_COMPUTE_GROUPS_Z " + std::to_string(groups[2]) + "u\n" +
+         "static const rs_record rs_raygen_record = {RS_NONE, 0u, {0}};\n" +
+         recordArray("rs_miss_records", {}, 0) + recordArray("rs_hit_records", {}, 0) +
+         recordArray("rs_callable_records", {}, 0) +
+         "#define RS_MISS_RECORDS 0\n#define RS_HIT_RECORDS 0\n#define RS_CALLABLE_RECORDS 0\n"
+         "#define RS_RECORD_DATA_BYTES 0\n#define RS_MISS_PADDING 0\n#define RS_HIT_PADDING 0\n"
+         "#define RS_CALLABLE_PADDING 0\n\n";
+}
+
 }  // namespace
 
-std::string pipelineSection(const Pipeline& p, const GeneratedPipeline& generated,
+std::string pipelineSection(const Case& c, const Plan& plan, const GeneratedPipeline& generated,
                             const CompiledPipeline& compiled) {
+  const Pipeline& p = c.pipeline;
+  if (p.from_compute) return computeSection(c, plan, generated, compiled);
   Stages stages;
   std::string groups = raygenGroups(p, generated, compiled, stages);
   for (size_t i = 0; i < compiled.miss.size(); ++i)
@@ -137,9 +177,10 @@ std::string pipelineSection(const Pipeline& p, const GeneratedPipeline& generate
          "static const rs_group rs_groups[] = {\n" + groups + "};\n#define RS_SHADER_COUNT " +
          std::to_string(stages.count) + "\n#define RS_GROUP_COUNT " +
          std::to_string(sbtGroupCount(p)) + "\n#define RS_MAX_RECURSION " +
-         std::to_string(p.max_recursion) + "u\n#define RS_NEEDS_SCALAR_LAYOUT " +
-         (p.record_layout.declared() && p.record_layout.scalar ? "1" : "0") + "\n\n" + sbtText(p) +
-         callableSbtText(p);
+         std::to_string(p.max_recursion) + "u\n" + needsText(p, plan) +
+         "#define RS_COMPUTE 0\n#define RS_COMPUTE_GROUPS_X 0u\n#define RS_COMPUTE_GROUPS_Y "
+         "0u\n#define RS_COMPUTE_GROUPS_Z 0u\n\n" +
+         sbtText(p) + callableSbtText(p);
 }
 
 }  // namespace rayspec

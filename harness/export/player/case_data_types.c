@@ -57,13 +57,15 @@ typedef struct {
   uint32_t data[8];
 } rs_record;
 /* RS_BIND_WORDS: a read-only buffer of fixed words (the scene data of
-   intersection programs, the SBT as tables). */
+   intersection programs, the SBT as tables). RS_BIND_IMAGE: a storage image
+   (outputs.images), image binding - RS_FIRST_IMAGE_BINDING. */
 enum rs_binding_kind {
   RS_BIND_TLAS,
   RS_BIND_RAYS,
   RS_BIND_RECORDS,
   RS_BIND_COUNTERS,
-  RS_BIND_WORDS
+  RS_BIND_WORDS,
+  RS_BIND_IMAGE
 };
 typedef struct {
   uint32_t binding;
@@ -93,5 +95,16 @@ typedef struct {
   uint32_t ray;
   float by[4]; /* 0, then the ray's t, object-origin and hit-position bounds (R-PREC) */
 } rs_bound;
+
+typedef struct {
+  const char *name, *field;
+  uint32_t is_float;      /* rgba32f (4 channels), else r32ui (1) */
+  double abs, rel, scale; /* the field's tolerance, times the image's scale */
+  uint32_t max_failing;   /* pixels allowed to differ */
+  uint32_t equal_to;      /* an image it must equal texel for texel, or RS_NONE */
+  uint32_t has_field;     /* the field's place in a record: */
+  uint32_t offset, words, bit, automatic;
+  const uint32_t* expected; /* the model's texels */
+} rs_image;
 
 /* RAYSPEC_CASE_DATA */

@@ -98,6 +98,23 @@ static void rs_pick_device(int argc, char** argv) {
   if (!rs_physical) rs_unsupported("no device with VK_KHR_ray_tracing_pipeline (or none named so)");
 }
 
+/* VK_KHR_ray_query's rayQuery chained onto `on`, where the case's stages run
+ * ray queries; NotSupported where the device lacks it. */
+static void rs_chain_ray_query(VkPhysicalDeviceRayQueryFeaturesKHR* on_rq,
+                               VkPhysicalDeviceFeatures2* on) {
+  VkPhysicalDeviceRayQueryFeaturesKHR rq = {
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
+  VkPhysicalDeviceFeatures2 have = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &rq};
+  if (!RS_NEEDS_RAY_QUERY) return;
+  if (!rs_has_extension(rs_physical, VK_KHR_RAY_QUERY_EXTENSION_NAME))
+    rs_unsupported("ray queries: the device lacks VK_KHR_ray_query");
+  vkGetPhysicalDeviceFeatures2(rs_physical, &have);
+  if (!rq.rayQuery) rs_unsupported("ray queries: the device lacks VK_KHR_ray_query's rayQuery");
+  on_rq->rayQuery = VK_TRUE;
+  on_rq->pNext = on->pNext;
+  on->pNext = on_rq;
+}
+
 static void rs_create_device(void) {
   VkPhysicalDeviceAccelerationStructureFeaturesKHR as = {
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
@@ -113,9 +130,11 @@ static void rs_create_device(void) {
   VkPhysicalDeviceVulkan12Features v12_on = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
                                              &rt_on};
   VkPhysicalDeviceFeatures2 on = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v12_on};
-  const char* extensions[] = {VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
-                              VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
-                              VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
+  VkPhysicalDeviceRayQueryFeaturesKHR rq_on = {
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
+  const char* extensions[] = {
+      VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
+      VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME, VK_KHR_RAY_QUERY_EXTENSION_NAME};
   float priority = 1.0f;
   VkDeviceQueueCreateInfo queue = {VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
   VkDeviceCreateInfo info = {VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &on};
@@ -134,6 +153,7 @@ static void rs_create_device(void) {
   v12_on.vulkanMemoryModel = v12.vulkanMemoryModel;
   v12_on.vulkanMemoryModelDeviceScope = v12.vulkanMemoryModelDeviceScope;
   on.features.shaderInt64 = have.features.shaderInt64;
+  rs_chain_ray_query(&rq_on, &on);
   vkGetPhysicalDeviceQueueFamilyProperties(rs_physical, &count, families);
   for (rs_queue_family = 0; rs_queue_family < count; ++rs_queue_family)
     if (families[rs_queue_family].queueFlags & VK_QUEUE_COMPUTE_BIT) break;
@@ -143,7 +163,7 @@ static void rs_create_device(void) {
   queue.pQueuePriorities = &priority;
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queue;
-  info.enabledExtensionCount = 3;
+  info.enabledExtensionCount = RS_NEEDS_RAY_QUERY ? 4 : 3; /* VK_KHR_ray_query last */
   info.ppEnabledExtensionNames = extensions;
   rs_check(vkCreateDevice(rs_physical, &info, NULL, &rs_device), "vkCreateDevice");
   vkGetDeviceQueue(rs_device, rs_queue_family, 0, &rs_queue);

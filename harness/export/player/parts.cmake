@@ -6,9 +6,11 @@ set(RAYSPEC_PLAYER_PARTS
     case_data_types.c          # the types of the case's data, and the marker it is spliced at
     instance_and_device.c      # the instance, the device picked and created, its functions
     buffers_and_commands.c     # host-visible buffers with addresses, command submission
+    images.c                   # the storage images (outputs.images): made, cleared, copied back
     acceleration_structures.c  # the bottom levels and the top level built
-    pipeline.c                 # the ray tracing pipeline from the embedded SPIR-V
+    pipeline.c                 # the ray tracing pipeline (or raygen's compute pipeline) from the SPIR-V
     shader_binding_table.c     # the SBT written with the device's group handles
     descriptors.c              # the descriptor set: the top level and the buffers
     comparison.c               # the records and counters against the expectations, printed
-    trace_and_readback.c)      # main: every step in order, the trace, the verdict
+    image_comparison.c         # the images against the model's, within the tolerances
+    trace_and_readback.c)      # main: every step in order, the trace or dispatch, the verdict

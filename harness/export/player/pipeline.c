@@ -55,3 +55,22 @@ static VkPipeline rs_create_pipeline(VkPipelineLayout layout) {
       "vkCreateRayTracingPipelinesKHR");
   return pipeline;
 }
+
+/* Raygen as a compute shader (pipeline.traces: ray_query_compute): a compute
+   pipeline of the one stage. */
+static VkPipeline rs_create_compute_pipeline(VkPipelineLayout layout) {
+  VkShaderModuleCreateInfo module = {VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  VkComputePipelineCreateInfo info = {VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  VkPipeline pipeline;
+  module.codeSize = rs_shaders[0].bytes;
+  module.pCode = rs_shaders[0].code;
+  info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+  info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  info.stage.pName = "main";
+  rs_check(vkCreateShaderModule(rs_device, &module, NULL, &info.stage.module),
+           "vkCreateShaderModule");
+  info.layout = layout;
+  rs_check(vkCreateComputePipelines(rs_device, VK_NULL_HANDLE, 1, &info, NULL, &pipeline),
+           "vkCreateComputePipelines");
+  return pipeline;
+}
