@@ -8,9 +8,11 @@
 #   tools/driver-reproducers.sh check OUT        # ctest driver-reports/reproducers: the two below
 #   tools/driver-reproducers.sh stale OUT        # every NAME.c as rayspec exports it now (else: stale),
 #                                                # a case the export refuses as NAME.md's row "rayspec export" says
+#   tools/driver-reproducers.sh build OUT        # every NAME.c built into OUT/NAME (for a machine without headers)
 #   tools/driver-reproducers.sh play OUT LABEL [RUNNER...]
-#       every NAME.c built into OUT/NAME and run (by RUNNER, e.g. `bash tools/second-driver.sh exec`),
-#       its exit status and output held to NAME.md's row LABEL ("lavapipe 25.0.7")
+#       every NAME.c built into OUT/NAME (kept where OUT/NAME is there: `build OUT` made it) and run
+#       (by RUNNER, e.g. `bash tools/second-driver.sh exec`), its exit status and output held to
+#       NAME.md's row LABEL ("lavapipe 25.0.7")
 #
 # A report's rows (its section "Reproducer"): `| LABEL | EXIT | `TEXT` |`, EXIT
 # the status expected (0 PASS, 1 FAIL, 77 NotSupported; words after the number
@@ -87,14 +89,30 @@ stale() {
   return $bad
 }
 
-# One C file built and run, held to its report's row; prints one line.
+# C file $1 built into folder $2, named as the file without .c.
+build_one() {
+  local name
+  name=$(basename "$1" .c)
+  "$cc" -std=c99 "$1" -lvulkan -o "$2/$name" 2>"$2/$name.build.txt"
+}
+
+build() {
+  local c bad=0
+  mkdir -p "$1"
+  for c in "$reports"/*.c; do
+    build_one "$c" "$1" && echo "built $1/$(basename "$c" .c)" || { echo "$c does not build"; bad=1; }
+  done
+  return $bad
+}
+
+# One C file built (where not yet) and run, held to its report's row; prints one line.
 play_one() {
   local c=$1 out=$2 label=$3 name want rc
   shift 3
   name=$(basename "$c" .c)
   want=$(row "$reports/$name.md" "$label")
   [[ -n $want ]] || { echo "DISAGREES $name: no row \"$label\" in $name.md"; return; }
-  "$cc" -std=c99 "$c" -lvulkan -o "$out/$name" 2>"$out/$name.build.txt" ||
+  [[ -x $out/$name ]] || build_one "$c" "$out" ||
     { echo "DISAGREES $name: does not build ($out/$name.build.txt)"; return; }
   "$@" "$out/$name" "$device" >"$out/$name.txt" 2>&1
   rc=$?
@@ -122,11 +140,12 @@ case ${1:-} in
   write) write ;;
   stale) shift; [[ $# -eq 1 ]] || die "usage: tools/driver-reproducers.sh stale OUT"; stale "$1" ;;
   play) shift; play "$@" ;;
+  build) shift; [[ $# -eq 1 ]] || die "usage: tools/driver-reproducers.sh build OUT"; build "$1" ;;
   check)
     shift; [[ $# -eq 1 ]] || die "usage: tools/driver-reproducers.sh check OUT"
     rm -rf "$1"; rc=0
     stale "$1" || rc=1
     play "$1/play" "lavapipe 25.0.7" || rc=1
     exit $rc ;;
-  *) die "usage: tools/driver-reproducers.sh write | check OUT | stale OUT | play OUT LABEL [RUNNER...]" ;;
+  *) die "usage: tools/driver-reproducers.sh write | check OUT | stale OUT | build OUT | play OUT LABEL [RUNNER...]" ;;
 esac
