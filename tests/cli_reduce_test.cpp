@@ -32,6 +32,13 @@ TEST(Reduce, ReducedCaseFailsWithTheFaultAndPassesWithout) {
   EXPECT_NE(report.find("rayspec run --case"), std::string::npos);
   EXPECT_NE(report.find("R-MASK: instance mask"), std::string::npos);  // the rule's text
   EXPECT_NE(slurp(dir + "/out/steps.txt").find("-> kept"), std::string::npos);
+  // A case mutation is made in rayspec's results, not in what a device is
+  // given: no repro.c, and the report says why first.
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out/repro.c"));
+  EXPECT_LT(report.find("No repro.c: the planted fault instance-mask-ignored is made in the model "
+                        "run on the case"),
+            report.find("## Reproduce"))
+      << report;
   // Smaller: the six rays and six instances of the original went.
   std::smatch m;
   const std::string out = slurp(log);
@@ -76,6 +83,68 @@ TEST(Reduce, ADeviceCommandRunsEachVariantsDeviceSide) {
   // Every variant's device side ran through the command, none here.
   EXPECT_TRUE(std::filesystem::exists(dir + "/out/runs/variant-1/device"));
   EXPECT_TRUE(std::filesystem::exists(dir + "/out/cases/accel/layouts-triangles.yaml"));
+}
+
+// repro.c, built (C99, warnings as errors) and run on lavapipe; its exit status.
+int buildAndPlay(const std::string& file, const std::string& dir) {
+  const std::string build = std::string(RAYSPEC_C_COMPILER) +
+                            " -std=c99 -Wall -Wextra -Wno-missing-field-initializers -Werror " +
+                            file + " -lvulkan -o " + dir + "/repro";
+  if (sh(build, dir + "/build.txt") != 0) {
+    ADD_FAILURE() << file << " does not build:\n" << slurp(dir + "/build.txt");
+    return -1;
+  }
+  return sh(dir + "/repro llvmpipe", dir + "/play.txt");
+}
+
+// The reduced case as a standalone C file (export/export_c.h): a reduction
+// under a planted layout fault leaves a repro.c whose builds misread their
+// inputs as the fault does, so it FAILs on lavapipe, and report.md leads
+// with its build line; the same case exported without the fault PASSes.
+TEST(Reduce, TheReproducerCarriesALayoutFaultAndFailsOnLavapipe) {
+  const std::string dir = cli::fresh("reduce-repro");
+  // accel/layouts-triangles' indexed quad behind junk (small: the
+  // reduction tries a few variants).
+  const std::string input = dir + "/offsets.yaml";
+  std::ofstream(input) << R"(rules: [R-BUILTIN]
+scene:
+  build: {data_offsets: true, vertex_stride: 24}
+  blas:
+    quad:
+      - triangles:
+          vertices: [[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]]
+          indices: [0, 1, 2, 0, 2, 3]
+          index_type: uint16
+  instances: [{blas: quad, custom_index: 10}]
+rays:
+  list:
+    - {origin: [0.5, -0.5, 1], direction: [0, 0, -1]}
+    - {origin: [-0.5, 0.5, 1], direction: [0, 0, -1]}
+pipeline:
+  miss: [[record: {hit: 0}]]
+  hit_groups:
+    - closest_hit: [record: [hit, instance_custom_index, primitive_id]]
+outputs:
+  per_ray: [hit, instance_custom_index, primitive_id]
+)";
+  const std::string log = dir + "/reduce.log";
+  ASSERT_EQ(
+      sh(kBin + " reduce " + input + " --plant-fault offsets-ignored --out " + dir + "/out", log),
+      0)
+      << slurp(log);
+  const std::string report = slurp(dir + "/out/report.md");
+  EXPECT_LT(report.find("cc repro.c -lvulkan -o repro\n./repro [DEVICE]"),
+            report.find("## Reproduce"))
+      << report;
+  EXPECT_NE(report.find("It carries the planted fault offsets-ignored"), std::string::npos)
+      << report;
+  EXPECT_EQ(buildAndPlay(dir + "/out/repro.c", dir), 1) << slurp(dir + "/play.txt");
+  EXPECT_NE(slurp(dir + "/play.txt").find("FAIL: "), std::string::npos) << slurp(dir + "/play.txt");
+  ASSERT_EQ(sh(kBin + " export " + dir + "/out/reduced.yaml --out " + dir + "/plain",
+               dir + "/export.log"),
+            0)
+      << slurp(dir + "/export.log");
+  EXPECT_EQ(buildAndPlay(dir + "/plain/repro.c", dir), 0) << slurp(dir + "/play.txt");
 }
 
 // Sizes, numbers and operators: a generated 4 x 4 grid, a 4 x 4 launch and a

@@ -16,6 +16,8 @@
 #   RAYSPEC_VARIANT_CASES=DIR RAYSPEC_VARIANT_NAME=NAME RAYSPEC_VARIANT_OUT=OUT tools/second-driver.sh device
 #       the device side of case NAME (DIR/NAME.yaml) by the environment's lavapipe, left in OUT as
 #       `rayspec run --out` leaves it: rayspec reduce --device-command 'bash tools/second-driver.sh device'
+#   tools/second-driver.sh exec PROGRAM [ARGS...]  # a program built here (a reproducer of
+#       tools/driver-reproducers.sh) run inside, on the environment's loader and lavapipe; its exit status
 #   tools/second-driver.sh generated OUT    # the generator test's modules (tests/glsl_generator_test.cpp:
 #       random programs over the whole vocabulary) through the environment's spirv-val: OUT/spirv-val.txt
 #
@@ -176,6 +178,23 @@ device() {
   mv "$ENV_DIR$WORK/variant/out" "$RAYSPEC_VARIANT_OUT"
 }
 
+# A program built here run inside (glibc of sid runs what bookworm builds),
+# with the environment's lavapipe as its only driver; exits as it does.
+exec_inside() {
+  [[ $# -ge 1 && -f $1 ]] || die "usage: tools/second-driver.sh exec PROGRAM [ARGS...]"
+  ready || { echo "second-driver: SKIPPED: no environment in $ENV_DIR"; exit 77; }
+  [[ $(id -u) -eq 0 ]] || die "exec needs root (chroot)"
+  rm -rf "$ENV_DIR$WORK/exec" && mkdir -p "$ENV_DIR$WORK/exec"
+  cp "$1" "$ENV_DIR$WORK/exec/program"
+  shift
+  trap unmount_inside EXIT
+  mount_inside
+  local rc=0
+  inside env VK_DRIVER_FILES="$ICD" VK_ICD_FILENAMES="$ICD" "$WORK/exec/program" "$@" || rc=$?
+  unmount_inside
+  exit $rc
+}
+
 # The generator test (build/tests/test_glsl, GeneratedStages.*) writes every
 # module it compiled into the environment, whose spirv-val checks them all.
 generated() {
@@ -225,5 +244,6 @@ case ${1:-} in
   compare) shift; exec ./build/rayspec compare "$@" ;;
   generated) shift; generated "$@" ;;
   device) device ;;
-  *) die "usage: tools/second-driver.sh prepare | versions | run OUT [--baseline FILE] [options] | limits [BASELINE] | compare A B | generated OUT | device (RAYSPEC_VARIANT_*)" ;;
+  exec) shift; exec_inside "$@" ;;
+  *) die "usage: tools/second-driver.sh prepare | versions | run OUT [--baseline FILE] [options] | limits [BASELINE] | compare A B | generated OUT | device (RAYSPEC_VARIANT_*) | exec PROGRAM [ARGS]" ;;
 esac

@@ -26,7 +26,7 @@ struct ExportOptions {
 bool writeReproducer(const std::string& dir, const std::string& text) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  const std::string path = (std::filesystem::path(dir) / "repro.c").string();
+  const std::string path = (std::filesystem::path(dir) / kReproducerFile).string();
   std::ofstream out(path, std::ios::binary);
   out << text;
   if (!out) {

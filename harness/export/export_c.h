@@ -35,14 +35,26 @@
 #include "case/case.h"
 #include "plan/plan.h"
 #include "results/results.h"
+#include "vulkan/vk_fault_hook.h"
 
 namespace rayspec {
+
+// The file an export writes, and how its header says to build and run it
+// (`rayspec export` and `rayspec reduce` write it; report.md quotes these).
+inline constexpr const char* kReproducerFile = "repro.c";
+inline constexpr const char* kReproducerBuildLine = "cc repro.c -lvulkan -o repro";
+inline constexpr const char* kReproducerRunLine = "./repro [DEVICE]";
 
 // The C file of case c, its expectations from `model` (the model's exact
 // tier run of c); the NotSupported error "export: case uses X, not yet
 // exported" for a case the export does not handle, or the ShaderCompile
-// error of a stage that does not compile.
-Result<std::string> exportCaseAsC(const Case& c, const Plan& plan, const Results& model);
+// error of a stage that does not compile. `layout`: LayoutFault::None, but
+// where a reduction ran with a planted layout fault (test only; which ones
+// a file carries: run/fault_seam.h's exportedLayoutFault) the build inputs
+// are laid out as that fault misreads them, as the engine's builds lay them
+// out under it, and the header says so.
+Result<std::string> exportCaseAsC(const Case& c, const Plan& plan, const Results& model,
+                                  LayoutFault layout = LayoutFault::None);
 
 // The player's text (the files of harness/export/player/ joined), as embedded at build time.
 const std::string& exportPlayerSource();

@@ -11,11 +11,13 @@
 #include "plan/plan.h"
 #include "results/results.h"
 #include "vulkan/pipeline.h"
+#include "vulkan/vk_fault_hook.h"
 
 namespace rayspec {
 
-// RS_BLAS_COUNT, rs_geometries, rs_blases, rs_instances, RS_BUILD_FLAGS.
-std::string sceneSection(const Scene& scene);
+// RS_BLAS_COUNT, rs_geometries, rs_blases, rs_instances, RS_BUILD_FLAGS;
+// the geometries laid out as the builds lay them out under `layout`.
+std::string sceneSection(const Scene& scene, LayoutFault layout);
 // The SPIR-V of every stage (its GLSL in comments), rs_shaders, rs_groups,
 // the SBT records, RS_MAX_RECURSION, what the stages need of the device
 // (RS_NEEDS_*); raygen alone as a compute shader and its dispatch

@@ -30,6 +30,8 @@ std::string sceneFeature(const Case& c) {
   const Scene& s = c.scene;
   if (s.updates()) return "acceleration structure updates (scene.update)";
   if (s.build.copy != AsCopy::None) return "acceleration structure copies (scene.build.copy)";
+  if (!s.build.queries.queries.empty())
+    return "acceleration structure queries (scene.build.queries)";
   if (s.build.command != BuildCommand::Device) return "indirect builds (scene.build.command)";
   if (s.build.instances_as_pointers) return "instances as pointers (scene.build)";
   if (s.tlasCount() > 1) return "several top levels";

@@ -26,9 +26,9 @@ std::string rangeText(const VkAccelerationStructureBuildRangeInfoKHR& r) {
 
 // One geometry's inputs as the engine's build lays them out (layTriangles),
 // its arrays into `arrays` and its rs_geometry initialiser returned.
-std::string triangleEntry(const Geometry& g, const AsBuild& build, const std::string& prefix,
-                          std::string& arrays) {
-  const TriangleInputs in = layTriangles(g, build, LayoutFault::None);
+std::string triangleEntry(const Geometry& g, const AsBuild& build, LayoutFault layout,
+                          const std::string& prefix, std::string& arrays) {
+  const TriangleInputs in = layTriangles(g, build, layout);
   arrays += cByteArray(prefix + "_vertices", in.vertices);
   if (!in.indices.empty()) arrays += cByteArray(prefix + "_indices", in.indices);
   if (!in.transform.empty()) arrays += cByteArray(prefix + "_transform", in.transform);
@@ -44,9 +44,9 @@ std::string triangleEntry(const Geometry& g, const AsBuild& build, const std::st
 
 // One AABB geometry's boxes as the engine's build lays them out (layAabbs):
 // rs_geometry's vertex fields hold them.
-std::string aabbEntry(const Geometry& g, const AsBuild& build, const std::string& prefix,
-                      std::string& arrays) {
-  const AabbInputs in = layAabbs(g, build, LayoutFault::None);
+std::string aabbEntry(const Geometry& g, const AsBuild& build, LayoutFault layout,
+                      const std::string& prefix, std::string& arrays) {
+  const AabbInputs in = layAabbs(g, build, layout);
   arrays += cByteArray(prefix + "_boxes", in.boxes);
   return "  {VK_GEOMETRY_TYPE_AABBS_KHR, VK_FORMAT_UNDEFINED, \"aabbs\", " +
          std::to_string(in.stride) + ", 0, VK_INDEX_TYPE_NONE_KHR, " + std::to_string(g.flags) +
@@ -54,10 +54,10 @@ std::string aabbEntry(const Geometry& g, const AsBuild& build, const std::string
          rangeText(in.range) + "},\n";
 }
 
-std::string geometryEntry(const Geometry& g, const AsBuild& build, const std::string& prefix,
-                          std::string& arrays) {
-  return g.kind == Geometry::Kind::Aabbs ? aabbEntry(g, build, prefix, arrays)
-                                         : triangleEntry(g, build, prefix, arrays);
+std::string geometryEntry(const Geometry& g, const AsBuild& build, LayoutFault layout,
+                          const std::string& prefix, std::string& arrays) {
+  return g.kind == Geometry::Kind::Aabbs ? aabbEntry(g, build, layout, prefix, arrays)
+                                         : triangleEntry(g, build, layout, prefix, arrays);
 }
 
 std::string instanceEntry(const Instance& inst) {
@@ -73,7 +73,7 @@ std::string instanceEntry(const Instance& inst) {
 
 }  // namespace
 
-std::string sceneSection(const Scene& scene) {
+std::string sceneSection(const Scene& scene, LayoutFault layout) {
   std::string arrays, geometries, blases;
   uint32_t first = 0;
   size_t most = 1;
@@ -81,7 +81,7 @@ std::string sceneSection(const Scene& scene) {
     const Blas& blas = scene.blases[b];
     for (size_t g = 0; g < blas.geometries.size(); ++g)
       geometries +=
-          geometryEntry(blas.geometries[g], scene.build,
+          geometryEntry(blas.geometries[g], scene.build, layout,
                         "rs_blas" + std::to_string(b) + "_geometry" + std::to_string(g), arrays);
     const uint32_t count = static_cast<uint32_t>(blas.geometries.size());
     blases += "  {" + std::to_string(first) + ", " + std::to_string(count) + "},  /* " + blas.name +

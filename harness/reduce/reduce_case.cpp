@@ -10,8 +10,10 @@
 #include "base/shell_word.h"
 #include "base/visible_text.h"
 #include "base/whole_file.h"
+#include "export/export_c.h"
 #include "library/case_discovery.h"
 #include "model/model_engine.h"
+#include "plan/plan.h"
 #include "reduce/case_size.h"
 #include "reduce/reduce_document.h"
 #include "reduce/reduce_report.h"
@@ -154,6 +156,28 @@ void nameTheDevice(ReductionRecord& r, const RunInfo& info, const VariantJudge& 
   }
 }
 
+// The reduced case as a standalone C file (export/export_c.h: the one
+// export, its expectations from the model's exact tier), carrying the
+// planted fault where a C file can; or why there is none.
+void exportReduced(ReductionRecord& r, const ParseResult& reduced, const std::string& fault) {
+  const Result<LayoutFault> layout = exportedLayoutFault(fault);
+  if (!layout) {
+    r.reproducer_refused = layout.error().format();
+    return;
+  }
+  if (!reduced.value) {
+    r.reproducer_refused = "the reduced case does not parse";
+    return;
+  }
+  const Case& c = *reduced.value;
+  const Plan plan = derivePlan(c);
+  const Result<std::string> text = exportCaseAsC(c, plan, runOnModel(c, plan, {}), *layout);
+  if (text)
+    r.reproducer = *text;
+  else
+    r.reproducer_refused = text.error().format();
+}
+
 }  // namespace
 
 int runReduce(const ReduceOptions& requested) {
@@ -219,6 +243,7 @@ int runReduce(const ReduceOptions& requested) {
   reduced["description"] = reducedDescription(r);
   r.reduced_text =
       commentLines("Made by rayspec reduce; shown by: " + r.command) + emitYaml(reduced);
+  exportReduced(r, after, opt.run.plant_fault);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (std::string e = writeReduction(r, opt.out); !e.empty()) return badInput(e);
   if (!opt.device_command.empty()) {  // where the reproduction's command reads it

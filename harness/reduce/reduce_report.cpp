@@ -52,10 +52,35 @@ std::string raysTable(const CaseOutcome& o) {
   return t;
 }
 
+// The report's lead: how to build and run repro.c without rayspec, and what
+// it prints where the case was reduced; or why there is no repro.c.
+std::string reproducerSection(const ReductionRecord& r) {
+  std::string m = "## Without rayspec: " + std::string(kReproducerFile) + "\n\n";
+  if (r.reproducer.empty())
+    return m + "No " + kReproducerFile + ": " + visibleLine(r.reproducer_refused) + "\n\n";
+  m += std::string(kReproducerFile) +
+       ", beside this report, is the reduced case as one C file that needs only a C compiler "
+       "and the Vulkan loader: it traces the case and compares each result with what "
+       "rayspec's model expects.\n\n" +
+       fenced(std::string(kReproducerBuildLine) + "\n" + kReproducerRunLine +
+              "   # DEVICE: an index, or a part of the device's name") +
+       "\nIt prints PASS (exit 0), or FAIL (exit 1) with the rule, the ray, the field, the "
+       "expected and the observed value; 77: the device lacks a feature it names. ";
+  if (!r.fault.empty())
+    return m + "It carries the planted fault " + r.fault +
+           " (its builds misread their inputs as the fault does), so it FAILs on a correct "
+           "device; `rayspec export " +
+           kReducedCaseFile + "` writes it without.\n\n";
+  const std::string on = r.device.empty() ? std::string("the device it was reduced on") : r.device;
+  return m + "rayspec judged the case " + statusName(r.signature.status) + " on " + on +
+         (r.signature.status == Status::Fail ? ": expect FAIL there" : "") + ".\n\n";
+}
+
 std::string reportMarkdown(const ReductionRecord& r) {
   const FailureSignature& s = r.signature;
   std::string m =
       "# " + r.case_name + ": " + (s.rule.empty() ? "" : s.rule + ": ") + s.message + "\n\n";
+  m += reproducerSection(r);
   m += "Reduced by `rayspec reduce` from `" + r.case_path + "` in " + seconds(r.seconds) + " (" +
        std::to_string(r.attempts.size()) + " variants tried): " + sizeChange(r.before, r.after) +
        ".\n\n";
@@ -114,10 +139,17 @@ std::string reducedDescription(const ReductionRecord& r) {
 std::string writeReduction(const ReductionRecord& r, const std::string& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  for (const auto& [name, text] : {std::pair{kReducedCaseFile, r.reduced_text},
-                                   std::pair{kReductionReportFile, reportMarkdown(r)},
-                                   std::pair{kReductionStepsFile, stepsText(r)}})
-    if (!writeText(dir + "/" + name, text)) return "cannot write " + dir + "/" + name;
+  for (const auto& [name, text] :
+       {std::pair{kReducedCaseFile, r.reduced_text}, std::pair{kReproducerFile, r.reproducer},
+        std::pair{kReductionReportFile, reportMarkdown(r)},
+        std::pair{kReductionStepsFile, stepsText(r)}}) {
+    const std::string path = dir + "/" + name;
+    if (text.empty()) {  // no repro.c: none of an earlier reduction stays
+      std::filesystem::remove(path, ec);
+      continue;
+    }
+    if (!writeText(path, text)) return "cannot write " + path;
+  }
   return "";
 }
 
@@ -128,7 +160,8 @@ std::string reductionSummary(const ReductionRecord& r, const std::string& dir) {
          std::to_string(r.attempts.size()) + " variants (" + std::to_string(ran) + " ran, " +
          std::to_string(kept) + " kept) in " + seconds(r.seconds) + "\n" +
          "  still: " + visibleLine(r.outcome.headline.substr(0, 300)) + "\n" + "  " + dir +
-         "/reduced.yaml, report.md, steps.txt\n";
+         "/reduced.yaml, " + (r.reproducer.empty() ? "" : std::string(kReproducerFile) + ", ") +
+         "report.md, steps.txt\n";
 }
 
 }  // namespace rayspec

@@ -1,6 +1,8 @@
-// What a reduction writes: DIR/reduced.yaml (a case file), DIR/report.md (the
-// bug report: the case, the command that shows it, the failing rays device
-// against model, the rule's text, the driver and device), DIR/steps.txt
+// What a reduction writes: DIR/reduced.yaml (a case file), DIR/repro.c (the
+// reduced case as a standalone C file, export/export_c.h, where it can be
+// exported), DIR/report.md (the bug report: how to build and run repro.c or
+// why there is none, the case, the command that shows it, the failing rays
+// device against model, the rule's text, the driver and device), DIR/steps.txt
 // (every attempt and its verdict).
 #pragma once
 
@@ -9,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "export/export_c.h"
 #include "reduce/case_size.h"
 #include "reduce/failure_signature.h"
 #include "reduce/variant_judge.h"
@@ -19,6 +22,8 @@ namespace rayspec {
 struct ReductionRecord {
   std::string case_name, case_path;
   std::string reduced_text;  // reduced.yaml
+  std::string reproducer;    // repro.c ("": none, for the reason below)
+  std::string reproducer_refused;
   FailureSignature signature;
   CaseOutcome outcome;  // the reduced case's
   CaseSize before, after;
@@ -36,19 +41,20 @@ std::string reducedDescription(const ReductionRecord& r);
 std::string notFailingText(const std::string& name, const std::string& keep,
                            const CaseOutcome& outcome);
 
-// What a reduction writes in its --out: the three files of writeReduction,
-// the runs of its variants (runs/) and, for a device command, the case files
-// it reads (cases/).
+// What a reduction writes in its --out: the files of writeReduction, the
+// runs of its variants (runs/) and, for a device command, the case files it
+// reads (cases/).
 inline constexpr const char* kReducedCaseFile = "reduced.yaml";
 inline constexpr const char* kReductionReportFile = "report.md";
 inline constexpr const char* kReductionStepsFile = "steps.txt";
 inline constexpr const char* kReductionRunsFolder = "runs";
 inline constexpr const char* kReductionCasesFolder = "cases";
-inline constexpr std::array<const char*, 5> kReductionWrites = {
-    kReducedCaseFile, kReductionReportFile, kReductionStepsFile, kReductionRunsFolder,
-    kReductionCasesFolder};
+inline constexpr std::array<const char*, 6> kReductionWrites = {
+    kReducedCaseFile,    kReproducerFile,      kReductionReportFile,
+    kReductionStepsFile, kReductionRunsFolder, kReductionCasesFolder};
 
-// The three files into dir; the error ("" none).
+// reduced.yaml, report.md, steps.txt and repro.c (where there is one; an
+// earlier run's removed where not) into dir; the error ("" none).
 std::string writeReduction(const ReductionRecord& r, const std::string& dir);
 
 // The summary printed at the end.

@@ -158,6 +158,20 @@ bool faultReadsModel(const std::string& fault) {
   return !fault.empty() && !deviceErrorFault(fault) && !layoutFault(fault);
 }
 
+Result<LayoutFault> exportedLayoutFault(const std::string& fault) {
+  if (fault.empty()) return LayoutFault::None;
+  const std::optional<LayoutFault> layout = layoutFault(fault);
+  if (layout == LayoutFault::StrideIgnored || layout == LayoutFault::OffsetsIgnored ||
+      layout == LayoutFault::FormatMisread)
+    return *layout;
+  const FaultInfo* info = findFault(fault);
+  const std::string where = layout ? std::string("in a step of the builds the file does not take")
+                            : info ? std::string("in ") + faultKindText(info->kind)
+                                   : std::string("nowhere a C file holds");
+  return errorMessage("the planted fault " + fault + " is made " + where +
+                      ", not in the inputs a device is given: a C file cannot carry it");
+}
+
 void armDeviceSide(Side& s, const std::string& fault, std::shared_ptr<const Results> model,
                    const std::string& run_dir) {
   if (fault.empty()) return;

@@ -14,6 +14,7 @@
 #include "results/results.h"
 #include "run/isolation.h"
 #include "run/run_options.h"
+#include "vulkan/vk_fault_hook.h"
 
 namespace rayspec {
 
@@ -33,6 +34,14 @@ std::string plantedFaultIn(const RunOptions& opt, const std::string& case_name);
 // True when the fault picks its rays by the model's results of the case, so
 // the device side needs them before it runs.
 bool faultReadsModel(const std::string& fault);
+
+// The layout fault a standalone C reproducer of a case (export/export_c.h)
+// is given for the planted fault `fault`: None for none; the fault itself
+// where the builds' input layout obeys it (stride-ignored, offsets-ignored,
+// vertex-format-misread: vulkan/build_layout.h), so the file's builds misread
+// as the run's did; else an Input error saying why a C file cannot carry it
+// (the fault is made in rayspec's results or in a step the file does not take).
+Result<LayoutFault> exportedLayoutFault(const std::string& fault);
 
 // Arms the device side with the fault: a Vulkan call made to fail (`before`,
 // cleared in `after`), a crash or hang in the device's process, or the
