@@ -40,5 +40,32 @@ TEST(EmitOps, FromThePattern) {
   EXPECT_EQ(emitExpr(word, ctx), "call.words[(v_i) % uint(call.words.length())]");
 }
 
+// A sized scalar's literal is its constructor of a value it holds exactly.
+TEST(EmitOps, SizedLiteralsAndConversions) {
+  const Case c;
+  const Plan plan;
+  const StageContext ctx{c, plan, Stage::Raygen};
+  const SourceLoc at;
+  Expr big;
+  big.kind = Expr::Kind::Literal;
+  big.type = ValueType::Uint64;
+  big.literal = {1099511627776.0};
+  EXPECT_EQ(emitExpr(big, ctx), "uint64_t(1099511627776ul)");
+  Expr d = big;
+  d.type = ValueType::Float64;
+  d.literal = {0.1};
+  EXPECT_EQ(emitExpr(d, ctx), "float64_t((0.10000000000000001lf))");
+  Expr h = big;
+  h.type = ValueType::Float16;
+  h.literal = {-20.5};
+  EXPECT_EQ(emitExpr(h, ctx), "float16_t((-20.5))");
+  Expr i8 = big;
+  i8.type = ValueType::Int8;
+  i8.literal = {100};
+  const Expr narrowed = opExpr(Op::ToInt8, {uintArg("a")}, ValueType::Int8, at);
+  EXPECT_EQ(emitExpr(opExpr(Op::Add, {narrowed, i8}, ValueType::Int8, at), ctx),
+            "(int8_t(v_a) + int8_t(100u))");
+}
+
 }  // namespace
 }  // namespace rayspec

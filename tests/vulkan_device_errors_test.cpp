@@ -2,6 +2,9 @@
 // on after each (a lost device is made again), and limits a case exceeds.
 #include <gtest/gtest.h>
 
+#include <tuple>
+#include <vector>
+
 #include "plan/plan.h"
 #include "result_support.h"
 #include "suite_cases.h"
@@ -160,6 +163,31 @@ TEST(DeviceErrors, TheCullMaskBuiltinWithoutMaintenance1IsNotSupported) {
   EXPECT_EQ(lacking.error().kind, ErrorKind::NotSupported);
   EXPECT_NE(lacking.error().message.find("VK_KHR_ray_tracing_maintenance1"), std::string::npos)
       << lacking.error().message;
+}
+
+// A sized scalar needs its device feature: each missing one is
+// NotSupported, the feature named (program/sized_types.h's column).
+TEST(DeviceErrors, ASizedScalarWithoutItsFeatureIsNotSupported) {
+  const std::vector<std::tuple<const char*, bool DeviceInfo::*, const char*>> rows = {
+      {"control/live-state-sized/int8", &DeviceInfo::shader_int8, "shaderInt8"},
+      {"control/live-state-sized/uint16", &DeviceInfo::shader_int16, "shaderInt16"},
+      {"control/live-state-sized/float16", &DeviceInfo::shader_float16, "shaderFloat16"},
+      {"control/live-state-sized/uint64", &DeviceInfo::shader_int64, "shaderInt64"},
+      {"control/live-state-sized/float64", &DeviceInfo::shader_float64, "shaderFloat64"}};
+  for (const auto& [name, feature, feature_name] : rows) {
+    SCOPED_TRACE(name);
+    const Case c = suiteCase(name);
+    ASSERT_FALSE(c.name.empty());
+    VulkanContext ctx = ampleContext();
+    ctx.info.*feature = true;
+    EXPECT_TRUE(checkCaseSupport(ctx, c, derivePlan(c)).ok());
+    ctx.info.*feature = false;
+    const Result<void> lacking = checkCaseSupport(ctx, c, derivePlan(c));
+    ASSERT_FALSE(lacking);
+    EXPECT_EQ(lacking.error().kind, ErrorKind::NotSupported);
+    EXPECT_NE(lacking.error().message.find(feature_name), std::string::npos)
+        << lacking.error().message;
+  }
 }
 
 // tlas: expr indexes the array of top levels with nonuniformEXT: a device

@@ -128,6 +128,7 @@ std::string vertexFormatIgnored(Case& c, ModelOptions& o);
 std::string vertexFormatConfused(Case& c, ModelOptions& o);
 std::string positionFetchWorldSpace(Case& c, ModelOptions& o);
 std::string localsLostAcrossCalls(Case& c, ModelOptions& o);
+std::string sizedLocalsHalved(Case& c, ModelOptions& o);
 std::string loopTripOffByOne(Case& c, ModelOptions& o);
 std::string bitwiseXorAsOr(Case& c, ModelOptions& o);
 std::string crossOperandsSwapped(Case& c, ModelOptions& o);

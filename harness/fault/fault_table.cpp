@@ -335,6 +335,11 @@ std::vector<FaultImpl> codeAndLaunchMutations() {
        "a shader's local variables read zero after its traceRayEXT, executeCallableEXT or "
        "reportIntersectionEXT (live values spilled and restored wrongly)",
        nullptr, localsLostAcrossCalls},
+      {"sized-locals-halved-across-calls", K::CaseMutation,
+       "a local of a sized scalar type (int8 .. float64) comes back from its "
+       "traceRayEXT, executeCallableEXT or reportIntersectionEXT through a slot half its "
+       "width (narrow and wide registers spilled wrongly): the lower half of its bits zero",
+       nullptr, sizedLocalsHalved},
       {"loop-trip-off-by-one", K::CaseMutation, "every repeat runs one trip more than its count",
        nullptr, loopTripOffByOne},
       {"bitwise-xor-as-or", K::CaseMutation, "bit_xor (^) is computed as bit_or (|)", nullptr,

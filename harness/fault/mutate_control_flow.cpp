@@ -128,6 +128,23 @@ std::string localsLostAcrossCalls(Case& c, ModelOptions& o) {
   return describeCount(calls, "traces, calls and reports after which every local reads zero");
 }
 
+// A device whose spills of narrow and wide registers keep half their bits.
+std::string sizedLocalsHalved(Case& c, ModelOptions& o) {
+  size_t sized = 0;
+  forEachProgram(c.pipeline, [&](Program& p, Stage) {
+    forEachStmt(p, [&](Stmt& s) {
+      if (s.kind == Stmt::Kind::Array) sized += isSized(s.local_type);
+      if (s.kind == Stmt::Kind::Let)
+        for (const auto& [name, value] : s.assigns) sized += isSized(value.type);
+    });
+  });
+  if (!sized) return "";
+  o.faults.sized_locals_halved = true;
+  return describeCount(sized,
+                       "sized scalar locals (int8 .. float64) that keep only their upper "
+                       "half of bits after each trace, call and report");
+}
+
 std::string loopTripOffByOne(Case& c, ModelOptions&) {
   size_t n = 0;
   forEachProgram(c.pipeline, [&](Program& p, Stage) {

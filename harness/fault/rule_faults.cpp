@@ -138,7 +138,7 @@ std::vector<RuleFaults> pipelineRules() {
       {"R-STACK", {"stack-size-ignored"}, {}},
       {"R-POSITION-FETCH", {"position-fetch-world-space"}, {}},
       {"R-LAUNCH-3D", {"launch-depth-lost", "zero-launch-runs", "wide-launch-truncated"}, {}},
-      {"R-LIVE-STATE", {"locals-lost-across-calls"}, {}},
+      {"R-LIVE-STATE", {"locals-lost-across-calls", "sized-locals-halved-across-calls"}, {}},
       {"R-CONTROL-FLOW",
        {"loop-trip-off-by-one", "function-ignore-lost", "specialization-ignored",
         "bitwise-xor-as-or", "float-bits-converted", "cross-operands-swapped", "matrix-transposed"},

@@ -21,6 +21,7 @@ std::string zeroOf(ValueType t) {
     case ValueType::Float:
       return "0.0";
     default:
+      if (isSized(t)) return std::string(glslType(t)) + "(0)";
       return std::string(glslType(t)) + "(0.0)";
   }
 }

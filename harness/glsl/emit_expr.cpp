@@ -16,6 +16,19 @@ std::string problem(const std::string& what) {
   return id + "()";
 }
 
+// A sized scalar's literal: a Uint or Float constant converted (the
+// checker holds the value to the type, so the conversion is exact).
+std::string sizedLiteral(ValueType t, double v) {
+  if (t == ValueType::Float64) return std::string(valueTypeGlsl(t)) + "(" + glslDouble(v) + ")";
+  if (t == ValueType::Float16)
+    return std::string(valueTypeGlsl(t)) + "(" + glslFloat(static_cast<float>(v)) + ")";
+  const bool wide = v > 4294967295.0;
+  return std::string(valueTypeGlsl(t)) + "(" +
+         (wide ? std::to_string(static_cast<uint64_t>(v)) + "ul"
+               : glslUint(static_cast<uint32_t>(v))) +
+         ")";
+}
+
 std::string literal(const Expr& e) {
   if (e.literal.empty()) return problem("empty literal");
   auto f = [&](size_t i) {
@@ -34,8 +47,9 @@ std::string literal(const Expr& e) {
       return "vec3(" + f(0) + ", " + f(1) + ", " + f(2) + ")";
     case ValueType::Vec4:
       return "vec4(" + f(0) + ", " + f(1) + ", " + f(2) + ", " + f(3) + ")";
+    default:
+      return sizedLiteral(e.type, e.literal[0]);
   }
-  return problem("literal type");
 }
 
 // A word<i> family's word: payload.word3 -> payload.words[3].
@@ -154,21 +168,7 @@ std::string arrayIndex(const std::string& array, const std::string& index) {
 }
 
 const char* glslType(ValueType t) {
-  switch (t) {
-    case ValueType::Bool:
-      return "bool";
-    case ValueType::Uint:
-      return "uint";
-    case ValueType::Float:
-      return "float";
-    case ValueType::Vec2:
-      return "vec2";
-    case ValueType::Vec3:
-      return "vec3";
-    case ValueType::Vec4:
-      return "vec4";
-  }
-  return "uint";
+  return valueTypeGlsl(t);
 }
 
 }  // namespace rayspec

@@ -195,6 +195,17 @@ std::vector<std::pair<uint32_t, uint32_t>> specializationOf(const Case& c,
   return out;
 }
 
+// GL_EXT_shader_explicit_arithmetic_types_*: each the case's sized scalars
+// need, once (int8 and uint8 share one).
+void sizedTypeExtensions(const Plan& plan, GlslWriter& out) {
+  std::string last;
+  for (ValueType t : enumValues<ValueType>()) {
+    if (!plan.usesSized(t) || sizedType(t)->extension == last) continue;
+    last = sizedType(t)->extension;
+    out.line("#extension " + last + " : require");
+  }
+}
+
 // The #extension lines the stage's GLSL needs.
 void extensions(const StageContext& ctx, bool ray_query, GlslWriter& out) {
   const StageUses& u = ctx.uses;
@@ -210,6 +221,7 @@ void extensions(const StageContext& ctx, bool ray_query, GlslWriter& out) {
     out.line("#extension GL_EXT_spirv_intrinsics : require");
   if (u.record_members && ctx.c.pipeline.record_layout.scalar)
     out.line("#extension GL_EXT_scalar_block_layout : require");
+  sizedTypeExtensions(ctx.plan, out);
 }
 
 }  // namespace

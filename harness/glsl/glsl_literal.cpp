@@ -42,6 +42,14 @@ std::string glslFloat(float f) {
   return bitsLiteral(f);
 }
 
+std::string glslDouble(double d) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", d);
+  std::string s = buf;
+  if (s.find_first_of(".e") == std::string::npos) s += ".0";
+  return "(" + s + "lf)";
+}
+
 std::string glslUint(uint32_t u) {
   return std::to_string(u) + "u";
 }

@@ -59,6 +59,8 @@ class ModelFaultSeam {
   bool nestedTraceClobbersHit() const { return f_.nested_trace_clobbers_hit; }
   // Live state broken: locals read zero after a trace, call or report.
   bool localsLostAcrossCalls() const { return f_.locals_lost_across_calls; }
+  // Live state broken for sized scalars: they come back with half their bits.
+  bool sizedLocalsHalvedAcrossCalls() const { return f_.sized_locals_halved; }
   // Ray queries: the rule each question stands for broken (ModelFaults' rq_*).
   bool queryInitKeepsCommitted() const { return f_.rq_init_keeps_committed; }  // R-RQ-INIT
   bool queryOffersOpaque() const { return f_.rq_opaque_offered; }              // R-RQ-CANDIDATES

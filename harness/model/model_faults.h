@@ -39,6 +39,12 @@ struct ModelFaults {
   // Live state broken: a shader's local variables read zero after a trace,
   // a callable call or a report (a driver that spills and restores them wrongly).
   bool locals_lost_across_calls = false;
+  // Live state broken for the sized scalars only: after a trace, a callable
+  // call or a report, a local of a sized type (program/sized_types.h) comes
+  // back through a slot half its width: only the upper half of its bits (of
+  // a float's encoding) kept (a driver that spills narrow and wide registers
+  // wrongly).
+  bool sized_locals_halved = false;
   // R-BUILTIN broken: gl_ObjectToWorldEXT and gl_WorldToObjectEXT (and their
   // 3x4 forms) each read the other matrix.
   bool transform_builtins_swapped = false;

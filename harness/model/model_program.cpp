@@ -6,12 +6,19 @@
 #include "program/builtins.h"
 #include "program/locals.h"
 #include "program/payload_words.h"
+#include "program/sized_values.h"
 #include "program/walk_program.h"
 #include "results/record_layout.h"
 
 namespace rayspec {
 
 namespace {
+
+// A sized scalar's literal (the checker held it to its type's values).
+Val sizedLiteral(ValueType t, double v) {
+  if (isSizedFloat(t)) return fromSizedDouble(t, v);
+  return fromSized(t, wrapToType(t, static_cast<uint64_t>(v)));
+}
 
 // The built-ins a hit on a triangle the ray runs in the plane of leaves free
 // (CPipeline::reads_in_plane_free): the hit's t and what follows from it,
@@ -116,7 +123,9 @@ struct Compiler {
         }
         break;
       case Expr::Kind::Literal:
-        if (e.type == ValueType::Uint)
+        if (isSized(e.type))
+          r.literal = sizedLiteral(e.type, e.literal.empty() ? 0 : e.literal[0]);
+        else if (e.type == ValueType::Uint)
           r.literal.u = static_cast<uint32_t>(e.literal.empty() ? 0 : e.literal[0]);
         else if (e.type == ValueType::Bool)
           r.literal.b = !e.literal.empty() && e.literal[0] != 0;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <bitset>
 #include <cstdint>
 #include <optional>
@@ -20,8 +21,13 @@ namespace rayspec {
 
 struct Val {
   std::array<float, 4> f{};
+  // A sized scalar (program/sized_types.h): an integer's value wrapped to
+  // its type (program/sized_values.h, wrapToType), a float16's or float64's
+  // value as a double's bits.
+  uint64_t x = 0;
   uint32_t u = 0;
   bool b = false;
+  ValueType sized = ValueType::Bool;  // the sized type x holds (Bool: none)
 };
 
 inline Val fromVec3(const Vec3& v) {
@@ -43,6 +49,19 @@ inline Val fromFloat(float f) {
   Val r;
   r.f[0] = f;
   return r;
+}
+
+inline Val fromSized(ValueType t, uint64_t x) {
+  Val r;
+  r.x = x;
+  r.sized = t;
+  return r;
+}
+inline Val fromSizedDouble(ValueType t, double d) {
+  return fromSized(t, std::bit_cast<uint64_t>(d));
+}
+inline double sizedDouble(const Val& v) {
+  return std::bit_cast<double>(v.x);
 }
 
 struct CExpr {

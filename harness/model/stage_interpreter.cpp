@@ -124,9 +124,14 @@ Flow StageInterpreter::execStmt(const CStmt& s, StageEnv& env) {
 
 // The planted fault locals_lost_across_calls: a device that does not keep a
 // shader's live values across a trace, call or report reads them as zero.
+// The planted fault sized_locals_halved: a sized scalar local (int8 ..
+// float64) keeps only the upper half of its bits.
 void StageInterpreter::loseLocals(StageEnv& env) const {
   if (sh_.fault_seam.localsLostAcrossCalls())
     std::fill(env.locals.begin(), env.locals.end(), Val{});
+  if (sh_.fault_seam.sizedLocalsHalvedAcrossCalls())
+    for (Val& v : env.locals)
+      if (isSized(v.sized)) v = halvedSized(v);
 }
 
 namespace {

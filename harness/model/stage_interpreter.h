@@ -21,6 +21,13 @@ namespace rayspec {
 class ModelTracer;
 class HitProtocol;
 
+// Comparisons of two values of a sized scalar type t (model/sized_ops.cpp).
+bool sizedLess(ValueType t, const Val& a, const Val& b);
+bool sizedEqual(ValueType t, const Val& a, const Val& b);
+// A sized scalar through a slot half its width: its upper half of bits kept,
+// the lower half (of a float16's or float64's encoding) zero.
+Val halvedSized(const Val& v);
+
 class StageInterpreter {
  public:
   StageInterpreter(const ModelShared& shared, LaunchState& state, const ModelSbt& sbt,
@@ -38,8 +45,13 @@ class StageInterpreter {
   // The ops op() runs before evaluating arguments (spheres, shader record
   // words, short-circuit and/or); false for any other op.
   bool opOnDemand(const CExpr& e, StageEnv& env, Val& r);
-  // add sub mul div min max on evaluated arguments.
+  // add sub mul div mod min max on evaluated arguments.
   Val arithmetic(const CExpr& e, const Val* a);
+  // The sized scalars' add sub mul min max, and the conversions (float and
+  // uint of a sized scalar, high, int8 .. float64): model/sized_ops.cpp.
+  Val sizedArithmetic(const CExpr& e, const Val* a);
+  Val convert(const CExpr& e, const Val& a);
+  void inexact(const CExpr& e);  // a sized float result not exact: a case error
   Flow execStmt(const CStmt& s, StageEnv& env);
   void execSet(const CStmt& s, StageEnv& env);      // set payload / set call data
   Flow execControl(const CStmt& s, StageEnv& env);  // let .. return (model_control_flow.cpp)

@@ -18,8 +18,23 @@ bool isVec(ValueType t) {
   return t == ValueType::Vec2 || t == ValueType::Vec3 || t == ValueType::Vec4;
 }
 
-// eq ne lt le gt ge: Uint x Uint exactly, else as doubles.
+// eq ne lt le gt ge of two sized scalars of type t.
+Val compareSized(Op n, const Val* a, ValueType t) {
+  Val r;
+  const bool lt = sizedLess(t, a[0], a[1]), eq = sizedEqual(t, a[0], a[1]);
+  r.b = n == Op::Eq   ? eq
+        : n == Op::Ne ? !eq
+        : n == Op::Lt ? lt
+        : n == Op::Le ? lt || eq
+        : n == Op::Gt ? !lt && !eq
+                      : !lt;
+  return r;
+}
+
+// eq ne lt le gt ge: Uint x Uint exactly, sized scalars by their type, else
+// as doubles.
 Val compare(Op n, const Val* a, ValueType t0, ValueType t1) {
+  if (isSized(t0)) return compareSized(n, a, t0);
   Val r;
   const bool u = t0 == ValueType::Uint && t1 == ValueType::Uint;
   const double x = u ? a[0].u : static_cast<double>(t0 == ValueType::Uint ? a[0].u : a[0].f[0]);
@@ -226,6 +241,14 @@ Val unaryOp(Op n, const Val& a) {
   }
 }
 
+// The conversions of model/sized_ops.cpp: to a sized scalar, high, and
+// float and uint of a sized scalar.
+bool convertsSized(const CExpr& e) {
+  const Op n = e.op;
+  if (isConversion(n) || n == Op::HighWord) return true;
+  return (n == Op::ToFloat || n == Op::ToUint) && isSized(e.args[0].type);
+}
+
 // vec2..vec4 (na arguments), the components, cross, the 3x3 products, dot,
 // length and normalize of vectors of `components`.
 Val vectorOp(Op n, const Val* a, size_t na, int components) {
@@ -266,6 +289,7 @@ Val StageInterpreter::op(const CExpr& e, StageEnv& env) {
   if (opOnDemand(e, env, r)) return r;
   ArgSlots a;  // every remaining op takes at most 4 arguments (vec4)
   const size_t na = a.fill(e.args.size(), [&](size_t i) { return eval(e.args[i], env); });
+  if (convertsSized(e)) return convert(e, a[0]);
   switch (n) {
     case Op::BitAnd:
     case Op::BitOr:
@@ -309,10 +333,6 @@ Val StageInterpreter::op(const CExpr& e, StageEnv& env) {
     case Op::Ge:
       return compare(n, a, e.args[0].type, e.args[1].type);
     case Op::Mod:
-      // R-UB: the ray is undefined; the model goes on with 0.
-      if (a[1].u == 0) st_.divisionByZero(e);
-      r.u = a[1].u == 0 ? 0 : a[0].u % a[1].u;
-      return r;
     case Op::Add:
     case Op::Sub:
     case Op::Mul:
@@ -332,6 +352,10 @@ Val StageInterpreter::op(const CExpr& e, StageEnv& env) {
     case Op::ChildWord:
     case Op::CallWord:
     case Op::CalleeWord:
+    case Op::HighWord:  // converted before the switch (convertsSized)
+#define RAYSPEC_CONVERSION_CASE(X, id, ...) case Op::To##id:
+      RAYSPEC_SIZED_TYPES(RAYSPEC_CONVERSION_CASE, )
+#undef RAYSPEC_CONVERSION_CASE
     case Op::None:
       break;
   }
@@ -341,6 +365,7 @@ Val StageInterpreter::op(const CExpr& e, StageEnv& env) {
 Val StageInterpreter::arithmetic(const CExpr& e, const Val* a) {
   const Op n = e.op;
   Val r;
+  if (isSized(e.type)) return sizedArithmetic(e, a);
   // Uint x Uint, or float-wise with scalar broadcast.
   if (e.type == ValueType::Uint) {
     const uint32_t x = a[0].u, y = a[1].u;
@@ -350,6 +375,11 @@ Val StageInterpreter::arithmetic(const CExpr& e, const Val* a) {
       r.u = x - y;
     else if (n == Op::Mul)
       r.u = x * y;
+    else if (n == Op::Mod && y == 0) {
+      st_.divisionByZero(e);  // R-UB: the ray is undefined; the model goes on with 0
+      r.u = 0;
+    } else if (n == Op::Mod)
+      r.u = x % y;
     else if (n == Op::Div && y == 0) {
       st_.divisionByZero(e);  // R-UB: the ray is undefined; the model goes on with all ones
       r.u = 0xFFFFFFFFu;

@@ -41,7 +41,7 @@ bool parseParams(YamlReader& r, const YAML::Node& n, const std::string& field, F
     const auto type = type_name ? valueTypeNamed(*type_name) : std::nullopt;
     if (!isLocalName(name) || !type) {
       r.error(it->first, f,
-              "a parameter is NAME: TYPE (a lower-case name; bool, uint, float, vec2, vec3, vec4)");
+              "a parameter is NAME: TYPE (a lower-case name; bool, " + arrayTypeSpellings() + ")");
       ok = false;
       continue;
     }

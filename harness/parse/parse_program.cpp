@@ -403,7 +403,7 @@ bool parseArray(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& 
     auto type_name = r.string(t, f + ".of");
     const auto type = type_name ? valueTypeNamed(*type_name) : std::nullopt;
     if (!type || *type == ValueType::Bool) {
-      if (type_name) r.error(t, f + ".of", "an array holds uint, float, vec2, vec3 or vec4");
+      if (type_name) r.error(t, f + ".of", "an array holds " + arrayTypeSpellings());
       return false;
     }
     s.local_type = *type;

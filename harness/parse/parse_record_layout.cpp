@@ -14,8 +14,8 @@ namespace {
 constexpr size_t kMaxRecordMembers = 8;
 
 std::optional<ValueType> memberType(const std::string& s) {
-  const auto t = valueTypeNamed(s);  // bool is no member
-  return t == ValueType::Bool ? std::nullopt : t;
+  const auto t = valueTypeNamed(s);  // bool and the sized scalars are no member
+  return t == ValueType::Bool || (t && isSized(*t)) ? std::nullopt : t;
 }
 
 void parseMembers(YamlReader& r, const YAML::Node& n, const std::string& f,

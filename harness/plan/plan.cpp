@@ -129,8 +129,12 @@ void planStages(const Pipeline& pipe, const TraceFlags& flags, bool non_opaque_g
   if (pipe.flags & kPipelineNoNullAnyHit) plan.any_hit = group_any_hit;
 }
 
+void noteSized(ValueType t, Plan& plan) {
+  if (isSized(t)) plan.sized_types |= 1u << static_cast<int>(t);
+}
+
 // What the statements do: callables, nested traces (and the depth), scene
-// data read by intersection programs.
+// data read by intersection programs, the sized scalars computed with.
 void planStatements(const std::vector<StageProgram>& programs, const Pipeline& pipe, Plan& plan) {
   for (const auto& sp : programs) {
     walkStatements(*sp.program, [&](const Stmt& s) {
@@ -138,6 +142,8 @@ void planStatements(const std::vector<StageProgram>& programs, const Pipeline& p
       if (s.kind == Stmt::Kind::Trace && sp.stage != Stage::Raygen) plan.nested_trace = true;
       if (s.kind == Stmt::Kind::RayQuery) plan.ray_queries = true;
       if (!s.trace.tlas_index.empty()) plan.dynamic_tlas_index = true;
+      if (s.kind == Stmt::Kind::Array) noteSized(s.local_type, plan);
+      for (const auto& [name, type] : s.params) noteSized(type, plan);
     });
     walkExpressions(*sp.program, [&](const Expr& e) {
       const BuiltinNeeds needs =
@@ -148,6 +154,7 @@ void planStatements(const std::vector<StageProgram>& programs, const Pipeline& p
           (needs & builtin_needs::BoxData) || (e.kind == Expr::Kind::Op && isSphereOp(e.op));
       // In another stage, sphere_* of a ray_query's AABB candidate (program/ops.h).
       if (reads_box) plan.scene_data = true;
+      noteSized(e.type, plan);
     });
   }
   plan.trace_depth = plan.nested_trace ? std::max<uint32_t>(pipe.max_recursion, 1) : 1;
@@ -251,6 +258,10 @@ std::vector<std::string> Plan::describe() const {
        "vertex positions read (gl_HitTriangleVertexPositionsEXT or a ray query's: "
        "VK_KHR_ray_tracing_position_fetch, structures "
        "built with ALLOW_DATA_ACCESS)");
+  std::string sized_line;
+  for (ValueType t : enumValues<ValueType>())
+    if (usesSized(t)) sized_line += std::string(" ") + valueTypeSpelling(t);
+  if (!sized_line.empty()) lines.push_back("  sized scalars:" + sized_line);
   std::string counters_line = "counters:";
   for (const auto& c : counters) counters_line += " " + c;
   lines.push_back("  " + counters_line);

@@ -29,16 +29,20 @@ struct Plan {
   bool opacity_flags = false;  // opaque/no_opaque/cull_opaque/cull_no_opaque or force_* flags
   bool scene_data = false;     // a program reads the AABBs (aabb_*, sphere_*: intersection's own,
                                // a ray_query's AABB candidate's)
-  bool cull_mask_builtin = false;          // a stage reads cull_mask (gl_CullMaskEXT: needs
-                                           // VK_KHR_ray_tracing_maintenance1)
-  bool ray_queries = false;                // a stage runs a ray_query statement (VK_KHR_ray_query)
-  bool dynamic_tlas_index = false;         // a trace or ray query names its top level by an
-                                           // expression (rs_tlas[nonuniformEXT(i)]: descriptor
-                                           // indexing)
-  bool position_fetch = false;             // a stage reads vertex_position<i> or a ray query's
-                                           // (gl_HitTriangleVertexPositionsEXT: needs
-                                           // VK_KHR_ray_tracing_position_fetch, and
-                                           // every structure built with ALLOW_DATA_ACCESS)
+  bool cull_mask_builtin = false;   // a stage reads cull_mask (gl_CullMaskEXT: needs
+                                    // VK_KHR_ray_tracing_maintenance1)
+  bool ray_queries = false;         // a stage runs a ray_query statement (VK_KHR_ray_query)
+  bool dynamic_tlas_index = false;  // a trace or ray query names its top level by an
+                                    // expression (rs_tlas[nonuniformEXT(i)]: descriptor
+                                    // indexing)
+  bool position_fetch = false;      // a stage reads vertex_position<i> or a ray query's
+                                    // (gl_HitTriangleVertexPositionsEXT: needs
+                                    // VK_KHR_ray_tracing_position_fetch, and
+                                    // every structure built with ALLOW_DATA_ACCESS)
+  // The sized scalars a stage computes with (program/sized_types.h), bit
+  // 1 << ValueType: their #extension lines, the device features they need.
+  uint32_t sized_types = 0;
+  bool usesSized(ValueType t) const { return sized_types >> static_cast<int>(t) & 1u; }
   bool shader_record_data = false;         // some SBT record carries data
   bool zero_records = false;               // some SBT record is all zero
   bool sbt_tables = false;                 // the SBT as tables in a buffer: traced by ray

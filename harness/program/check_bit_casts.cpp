@@ -38,8 +38,10 @@ bool rounds(const std::string& op) {
   return ops.count(op) > 0;
 }
 
+// Float and the vectors: the sized floats' arithmetic is exact (the model
+// names an inexact result a case error), so every device gives its bits.
 bool isFloat(ValueType t) {
-  return t != ValueType::Uint && t != ValueType::Bool;
+  return t != ValueType::Uint && t != ValueType::Bool && !isSized(t);
 }
 
 bool deviceComputed(const Expr& e, Stage stage, const Computed& locals) {

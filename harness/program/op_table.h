@@ -15,12 +15,14 @@
 //     emitter spells it (load, the word arrays, the shader record words).
 // Rows that are families stay together in this order (the model and the
 // emitter count from their first row): vec2..vec4, x..w, payload_word ..
-// callee_word (in program/payload_words.h's WordArray order).
+// callee_word (in program/payload_words.h's WordArray order), the
+// conversions to the sized scalars last (generated from RAYSPEC_SIZED_TYPES).
 #pragma once
 
 #include <cstdint>
 
 #include "base/enum_names.h"
+#include "program/sized_types.h"
 
 // clang-format off
 #define RAYSPEC_OPS(X)                                                                             \
@@ -66,9 +68,11 @@
     "a Uint's bits as Float (uintBitsToFloat)")                                                    \
   X(Odd, "odd", 1, 1, kAllStages, UintToBool, "(($0 & 1u) != 0u)", "Uint is odd -> Bool")          \
   X(Even, "even", 1, 1, kAllStages, UintToBool, "(($0 & 1u) == 0u)", "Uint is even -> Bool")       \
-  X(ToFloat, "float", 1, 1, kAllStages, UintToFloat, "float($0)", "Uint -> Float")                 \
-  X(ToUint, "uint", 1, 1, kAllStages, FloatToUint, "uint($0)",                                     \
-    "Float -> Uint, truncation toward zero")                                                       \
+  X(ToFloat, "float", 1, 1, kAllStages, ToFloat, "float($0)",                                     \
+    "Uint, Float16 or Float64 -> Float (from Float64: exact values only)")                         \
+  X(ToUint, "uint", 1, 1, kAllStages, ToUint, "uint($0)",                                          \
+    "Float, Float16 or Float64 -> Uint, truncation toward zero; a sized integer -> Uint, its low " \
+    "32 bits (an 8- or 16-bit one extended by its own signedness)")                                \
   X(RoundEven, "round", 1, 1, kAllStages, FloatToFloat, "roundEven($0)",                           \
     "Float -> the nearest whole Float, halfway cases to even (GLSL roundEven: the same on "        \
     "every device)")                                                                               \
@@ -113,7 +117,15 @@
   X(LightDirectional, "light_directional", 2, 2, kAllStages, Light,                                \
     "rs_light_directional($0, $1)",                                                                \
     "light_directional(P, N): the directional light of shaders/lights.glsl, parameters from "      \
-    "this stage's record floats")
+    "this stage's record floats")                                                                 \
+  X(HighWord, "high", 1, 1, kAllStages, HighWord, "uint(($0) >> 32)",                              \
+    "bits 32..63 of an Int64 or Uint64 -> Uint")                                                   \
+  RAYSPEC_SIZED_TYPES(RAYSPEC_CONVERSION_OP, X)
+// {int8: x} .. {float64: x}: one conversion a sized scalar (program/program.h).
+#define RAYSPEC_CONVERSION_OP(X, id, name, spelling, glsl, ...)                                    \
+  X(To##id, spelling, 1, 1, kAllStages, Convert, glsl "($0)",                                      \
+    "-> " name ": an integer from Uint or a sized integer (truncated to its bits, or extended by "  \
+    "the source's signedness), a float from Uint, Float or a sized float (exact values only)")
 // clang-format on
 
 namespace rayspec {

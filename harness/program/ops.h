@@ -41,6 +41,10 @@ enum class OpTyping : uint8_t {
   RecordWordUint,   // a Uint literal word index 0..7 -> Uint
   RecordWordFloat,  // a Uint literal word index 0..7 -> Float
   Light,            // a Vec3 position and a Vec3 normal -> Vec4
+  ToFloat,          // Uint, Float16 or Float64 -> Float
+  ToUint,           // Float, a sized integer or a sized float -> Uint
+  HighWord,         // Int64 or Uint64 -> Uint
+  Convert,          // -> the op's sized scalar (conversionTarget)
 };
 
 // One row of program/op_table.h.
@@ -93,6 +97,18 @@ static_assert(static_cast<int>(Op::Ge) - static_cast<int>(Op::Eq) == 5 &&
                   static_cast<int>(Op::SphereFar) - static_cast<int>(Op::SphereHit) == 2 &&
                   static_cast<int>(Op::LightDirectional) - static_cast<int>(Op::LightPoint) == 2,
               "eq..ge, vec2..vec4, x..w, sphere_*, light_* rows together, in order");
+static_assert(static_cast<int>(Op::ToFloat64) - static_cast<int>(Op::ToInt8) ==
+                      static_cast<int>(ValueType::Float64) - static_cast<int>(ValueType::Int8) &&
+                  static_cast<int>(Op::ToFloat64) + 1 == static_cast<int>(Op::None),
+              "the conversions last, in the order of RAYSPEC_SIZED_TYPES");
+constexpr bool isConversion(Op op) {  // int8 .. float64
+  return op >= Op::ToInt8 && op <= Op::ToFloat64;
+}
+// The sized scalar a conversion makes.
+constexpr ValueType conversionTarget(Op op) {
+  return static_cast<ValueType>(static_cast<int>(ValueType::Int8) + static_cast<int>(op) -
+                                static_cast<int>(Op::ToInt8));
+}
 constexpr bool isComparison(Op op) {
   return op >= Op::Eq && op <= Op::Ge;
 }

@@ -12,6 +12,7 @@
 #include "base/source_loc.h"
 #include "program/builtin_table.h"
 #include "program/op_table.h"
+#include "program/sized_types.h"
 
 namespace rayspec {
 
@@ -31,23 +32,45 @@ inline const char* stageName(Stage s) {
 }
 
 // Value types of expressions. Bool only appears in conditions.
-// Rows: X(ValueType, "name", "the case's and GLSL's spelling", components).
+// Rows: X(ValueType, "name", "the case's spelling", components, "GLSL").
 // clang-format off
-#define RAYSPEC_VALUE_TYPES(X)      \
-  X(Bool, "Bool", "bool", 1)        \
-  X(Uint, "Uint", "uint", 1)        \
-  X(Float, "Float", "float", 1)     \
-  X(Vec2, "Vec2", "vec2", 2)        \
-  X(Vec3, "Vec3", "vec3", 3)        \
-  X(Vec4, "Vec4", "vec4", 4)
+#define RAYSPEC_VALUE_TYPES(X)                                      \
+  X(Bool, "Bool", "bool", 1, "bool")                                \
+  X(Uint, "Uint", "uint", 1, "uint")                                \
+  X(Float, "Float", "float", 1, "float")                            \
+  X(Vec2, "Vec2", "vec2", 2, "vec2")                                \
+  X(Vec3, "Vec3", "vec3", 3, "vec3")                                \
+  X(Vec4, "Vec4", "vec4", 4, "vec4")                                \
+  RAYSPEC_SIZED_TYPES(RAYSPEC_SIZED_AS_VALUE_TYPE, X)
+
 // clang-format on
 enum class ValueType { RAYSPEC_VALUE_TYPES(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(ValueType, RAYSPEC_VALUE_TYPES);
 inline const char* valueTypeName(ValueType t) {
   return nameOf(t);
 }
-const char* valueTypeSpelling(ValueType t);  // "bool", "uint", ..., "vec4"
+const char* valueTypeSpelling(ValueType t);  // "bool", "uint", ..., "vec4", "int8", ...
+const char* valueTypeGlsl(ValueType t);      // "bool", ..., "int8_t", ..., "float64_t"
 int componentCount(ValueType t);             // Bool/Uint/Float 1, Vec2 2, ...
+
+// A sized scalar's row of RAYSPEC_SIZED_TYPES.
+enum class SizedKind : uint8_t { Signed, Unsigned, Floating };
+struct SizedType {
+  ValueType type;
+  int bits;
+  SizedKind kind;
+  const char* extension;  // the #extension its GLSL needs
+  const char* feature;    // the device feature (NotSupported names it)
+};
+// Its row, or null for Bool, Uint, Float and the vectors.
+const SizedType* sizedType(ValueType t);
+inline bool isSized(ValueType t) {
+  return sizedType(t) != nullptr;
+}
+bool isSizedInteger(ValueType t);  // int8 .. uint64
+bool isSizedFloat(ValueType t);    // float16, float64
+// The spellings of the types an array may hold, joined by ", " (messages).
+std::string arrayTypeSpellings();
 
 // An expression, written in YAML as
 //   a number            -> literal (Uint if written without '.', 'e', or sign

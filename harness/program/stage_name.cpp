@@ -1,20 +1,57 @@
-// Names of stages and value types, and component counts of value types.
+// Names of stages and value types, component counts of value types, and the
+// sized scalars' rows (program/program.h).
 #include "program/program.h"
 
 namespace rayspec {
 
 const char* valueTypeSpelling(ValueType t) {
-#define RAYSPEC_VALUE_TYPE_SPELLING(id, name, spelling, components) spelling,
+#define RAYSPEC_VALUE_TYPE_SPELLING(id, name, spelling, ...) spelling,
   static constexpr const char* kSpellings[] = {RAYSPEC_VALUE_TYPES(RAYSPEC_VALUE_TYPE_SPELLING)};
 #undef RAYSPEC_VALUE_TYPE_SPELLING
   return kSpellings[static_cast<size_t>(t)];
 }
 
+const char* valueTypeGlsl(ValueType t) {
+#define RAYSPEC_VALUE_TYPE_GLSL(id, name, spelling, components, glsl) glsl,
+  static constexpr const char* kGlsl[] = {RAYSPEC_VALUE_TYPES(RAYSPEC_VALUE_TYPE_GLSL)};
+#undef RAYSPEC_VALUE_TYPE_GLSL
+  return kGlsl[static_cast<size_t>(t)];
+}
+
 int componentCount(ValueType t) {
-#define RAYSPEC_VALUE_TYPE_COMPONENTS(id, name, spelling, components) components,
+#define RAYSPEC_VALUE_TYPE_COMPONENTS(id, name, spelling, components, ...) components,
   static constexpr int kComponents[] = {RAYSPEC_VALUE_TYPES(RAYSPEC_VALUE_TYPE_COMPONENTS)};
 #undef RAYSPEC_VALUE_TYPE_COMPONENTS
   return kComponents[static_cast<size_t>(t)];
+}
+
+const SizedType* sizedType(ValueType t) {
+#define RAYSPEC_SIZED_TYPE_ROW(X, id, name, spelling, glsl, bits, kind, extension, feature) \
+  SizedType{ValueType::id, bits, SizedKind::kind, extension, feature},
+  static constexpr SizedType kRows[] = {RAYSPEC_SIZED_TYPES(RAYSPEC_SIZED_TYPE_ROW, )};
+#undef RAYSPEC_SIZED_TYPE_ROW
+  for (const SizedType& row : kRows)
+    if (row.type == t) return &row;
+  return nullptr;
+}
+
+bool isSizedInteger(ValueType t) {
+  const SizedType* s = sizedType(t);
+  return s && s->kind != SizedKind::Floating;
+}
+
+bool isSizedFloat(ValueType t) {
+  const SizedType* s = sizedType(t);
+  return s && s->kind == SizedKind::Floating;
+}
+
+std::string arrayTypeSpellings() {
+  std::string out;
+  for (ValueType t : enumValues<ValueType>()) {
+    if (t == ValueType::Bool) continue;
+    out += (out.empty() ? "" : ", ") + std::string(valueTypeSpelling(t));
+  }
+  return out;
 }
 
 }  // namespace rayspec

@@ -2,12 +2,14 @@
 // A Uint literal (written without '.') is promoted to Float wherever its
 // partner or slot needs a Float, so `{lt: [hit_t, 2]}` means 2.0.
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "program/builtins.h"
 #include "program/check_expr.h"
 #include "program/constant_value.h"
 #include "program/ops.h"
+#include "program/sized_values.h"
 
 namespace rayspec {
 namespace {
@@ -16,7 +18,7 @@ bool isVector(ValueType t) {
   return t == ValueType::Vec2 || t == ValueType::Vec3 || t == ValueType::Vec4;
 }
 bool isScalarNumber(ValueType t) {
-  return t == ValueType::Uint || t == ValueType::Float;
+  return t == ValueType::Uint || t == ValueType::Float || isSized(t);
 }
 bool isUintLiteral(const Expr& e) {
   return e.kind == Expr::Kind::Literal && e.type == ValueType::Uint;
@@ -25,12 +27,30 @@ ValueType vectorOf(int n) {
   return n == 2 ? ValueType::Vec2 : n == 3 ? ValueType::Vec3 : ValueType::Vec4;
 }
 
-// Promotes a Uint literal to Float when the other side is Float or a vector.
-void unifyLiterals(Expr& a, Expr& b) {
+std::optional<ProgramError> checkLiteral(Expr& e);
+
+// A literal that a sized scalar's partner takes that type: a Uint literal
+// next to any sized scalar, a Float literal next to Float16 or Float64.
+bool takesSizedType(const Expr& literal, ValueType partner) {
+  if (!isSized(partner) || literal.kind != Expr::Kind::Literal) return false;
+  return literal.type == ValueType::Uint ||
+         (literal.type == ValueType::Float && isSizedFloat(partner));
+}
+
+// Promotes a Uint literal to Float when the other side is Float or a
+// vector, and a literal to the sized scalar type of the other side
+// (checkLiteral then holds it to that type's values).
+std::optional<ProgramError> unifyLiterals(Expr& a, Expr& b) {
   if ((b.type == ValueType::Float || isVector(b.type)) && isUintLiteral(a))
     a.type = ValueType::Float;
   if ((a.type == ValueType::Float || isVector(a.type)) && isUintLiteral(b))
     b.type = ValueType::Float;
+  for (auto [literal, partner] : {std::pair<Expr*, Expr*>{&a, &b}, {&b, &a}}) {
+    if (!takesSizedType(*literal, partner->type)) continue;
+    literal->type = partner->type;
+    if (auto r = checkLiteral(*literal)) return r;
+  }
+  return std::nullopt;
 }
 
 std::string typeList(const std::vector<Expr>& args) {
@@ -46,6 +66,27 @@ ProgramError err(const Expr& e, const std::string& msg) {
   return {msg, e.loc};
 }
 
+// A sized scalar's literal (a Uint or Float literal its partner typed): ""
+// when the type holds the value exactly, else why not.
+std::string sizedLiteralProblem(ValueType t, double v) {
+  const SizedType* s = sizedType(t);
+  if (!s) return "";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", v);
+  const std::string what = std::string(valueTypeName(t)) + " literal " + text;
+  if (s->kind == SizedKind::Floating)
+    return s->bits == 64 || exactInFloat16(v)
+               ? ""
+               : what +
+                     " is not a Float16 value (11 significant bits, 2^-14 <= |v| <= 65504, "
+                     "or 0)";
+  const double top = s->bits == 64 ? 9007199254740992.0  // a literal's double holds 2^53
+                                   : std::ldexp(1.0, s->bits - (s->kind == SizedKind::Signed));
+  if (v < 0 || v >= top || v != std::floor(v))
+    return what + " out of range 0.." + std::to_string(static_cast<uint64_t>(top) - 1);
+  return "";
+}
+
 std::optional<ProgramError> checkLiteral(Expr& e) {
   const size_t n = e.literal.size();
   if (n < 1 || n > 4 || static_cast<size_t>(componentCount(e.type)) != n)
@@ -56,6 +97,8 @@ std::optional<ProgramError> checkLiteral(Expr& e) {
     if (!(v >= 0 && v <= 4294967295.0) || v != std::floor(v))
       return err(e, "Uint literal out of range 0..4294967295");
   }
+  if (const std::string why = sizedLiteralProblem(e.type, e.literal[0]); !why.empty())
+    return err(e, why);
   return std::nullopt;
 }
 
@@ -69,7 +112,7 @@ using Typing = std::optional<ProgramError>;
 // The typing rules, one an operator family; each sets e.type or says why not.
 Typing typeArithmetic(Expr& e) {  // add sub mul div
   auto& a = e.args;
-  unifyLiterals(a[0], a[1]);
+  if (auto r = unifyLiterals(a[0], a[1])) return r;
   ValueType t0 = a[0].type, t1 = a[1].type;
   if (t0 == t1 && t0 != ValueType::Bool)
     e.type = t0;
@@ -79,6 +122,10 @@ Typing typeArithmetic(Expr& e) {  // add sub mul div
     e.type = t1;
   else
     return badArguments(e, "need the same numeric type, or a Float with a vector");
+  if (e.op == Op::Div && isSized(e.type))
+    return badArguments(e,
+                        "div is not offered on the sized scalars (not exact in floats; "
+                        "signed overflow in integers)");
   if (e.op == Op::Div && e.type == ValueType::Uint && constantUint(a[1]) == 0u)
     return err(e, "operator 'div': Uint division by a constant zero (undefined behaviour, R-UB)");
   return std::nullopt;
@@ -103,7 +150,7 @@ Typing typeBitwise(Expr& e) {  // bit_and bit_or bit_xor shl shr
 
 Typing typeMinMax(Expr& e) {
   auto& a = e.args;
-  unifyLiterals(a[0], a[1]);
+  if (auto r = unifyLiterals(a[0], a[1])) return r;
   if (a[0].type != a[1].type || a[0].type == ValueType::Bool)
     return badArguments(e, "need the same numeric type");
   e.type = a[0].type;
@@ -112,9 +159,9 @@ Typing typeMinMax(Expr& e) {
 
 Typing typeComparison(Expr& e) {  // eq ne lt le gt ge
   auto& a = e.args;
-  unifyLiterals(a[0], a[1]);
+  if (auto r = unifyLiterals(a[0], a[1])) return r;
   if (a[0].type != a[1].type || !isScalarNumber(a[0].type))
-    return badArguments(e, "need the same scalar type (Uint or Float)");
+    return badArguments(e, "need the same scalar type (Uint, Float or a sized scalar)");
   e.type = ValueType::Bool;
   return std::nullopt;
 }
@@ -195,6 +242,38 @@ Typing typeShaderRecord(Expr& e, ValueType type) {  // shader_record_uint, shade
   return std::nullopt;
 }
 
+// One argument of one of the types `accepted` says yes to, a result of type `to`.
+Typing typeFrom(Expr& e, bool (*accepted)(ValueType), const char* need, ValueType to) {
+  if (!accepted(e.args[0].type)) return badArguments(e, need);
+  e.type = to;
+  return std::nullopt;
+}
+
+// float: Uint, Float16, Float64. uint: Float, a sized scalar. high: 64-bit integers.
+bool convertsToFloat(ValueType t) {
+  return t == ValueType::Uint || isSizedFloat(t);
+}
+bool convertsToUint(ValueType t) {
+  return t == ValueType::Float || isSized(t);
+}
+bool hasHighWord(ValueType t) {
+  return t == ValueType::Int64 || t == ValueType::Uint64;
+}
+
+// {int8: x} .. {float64: x}: an integer from Uint or a sized integer, a float
+// from Uint, Float or a sized float.
+Typing typeConversion(Expr& e) {
+  const ValueType to = conversionTarget(e.op), from = e.args[0].type;
+  const bool integer = isSizedInteger(to);
+  const bool ok = from == ValueType::Uint ||
+                  (integer ? isSizedInteger(from) : from == ValueType::Float || isSizedFloat(from));
+  if (!ok)
+    return badArguments(
+        e, integer ? "need Uint or a sized integer" : "need Uint, Float, Float16 or Float64");
+  e.type = to;
+  return std::nullopt;
+}
+
 // The typing rule of an operator (program/op_table.h's typing column).
 Typing typeOp(Expr& e, OpTyping typing) {
   using V = ValueType;
@@ -243,6 +322,14 @@ Typing typeOp(Expr& e, OpTyping typing) {
       return typeShaderRecord(e, V::Float);
     case OpTyping::Light:
       return typeLight(e);
+    case OpTyping::ToFloat:
+      return typeFrom(e, convertsToFloat, "need Uint, Float16 or Float64", V::Float);
+    case OpTyping::ToUint:
+      return typeFrom(e, convertsToUint, "need Float or a sized scalar", V::Uint);
+    case OpTyping::HighWord:
+      return typeFrom(e, hasHighWord, "need Int64 or Uint64", V::Uint);
+    case OpTyping::Convert:
+      return typeConversion(e);
     case OpTyping::Load:  // typed before its arguments (typeLoad)
       break;
   }
@@ -389,6 +476,10 @@ std::optional<ProgramError> checkExprAs(Expr& e, Stage stage, ValueType want,
                                         const std::string& what, const LocalScope* locals) {
   if (auto r = checkExpr(e, stage, locals)) return r;
   if (want == ValueType::Float && isUintLiteral(e)) e.type = ValueType::Float;
+  if (takesSizedType(e, want)) {
+    e.type = want;
+    if (auto r = checkLiteral(e)) return r;
+  }
   if (e.type != want)
     return err(e, what + ": expected " + valueTypeName(want) + ", got " + valueTypeName(e.type));
   return std::nullopt;

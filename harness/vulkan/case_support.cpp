@@ -122,6 +122,24 @@ Result<void> checkDeferred(const DeviceInfo& d, uint32_t validation_layer) {
   return {};
 }
 
+// The device feature each sized scalar the case computes with needs
+// (program/sized_types.h's feature column names it).
+Result<void> checkSizedTypes(const DeviceInfo& d, const Plan& plan) {
+  for (ValueType t : enumValues<ValueType>()) {
+    const SizedType* s = sizedType(t);
+    if (!s || !plan.usesSized(t)) continue;
+    const bool integer = s->kind != SizedKind::Floating;
+    const bool has = integer ? (s->bits == 8    ? d.shader_int8
+                                : s->bits == 16 ? d.shader_int16
+                                                : d.shader_int64)
+                             : (s->bits == 16 ? d.shader_float16 : d.shader_float64);
+    if (!has)
+      return notSupported(std::string(valueTypeSpelling(t)) + " locals: the device lacks " +
+                          s->feature);
+  }
+  return {};
+}
+
 }  // namespace
 
 bool validationLayerKnows(uint32_t validation_layer, uint32_t since) {
@@ -151,6 +169,7 @@ Result<void> checkCaseSupport(const DeviceInfo& d, uint32_t validation_layer, co
         "rays.command indirect2: the device lacks VK_KHR_ray_tracing_maintenance1's "
         "rayTracingPipelineTraceRaysIndirect2");
   RAYSPEC_TRY_VOID(checkBuildSupport(d, c.scene.build));
+  RAYSPEC_TRY_VOID(checkSizedTypes(d, plan));
   if (plan.position_fetch) RAYSPEC_TRY_VOID(checkPositionFetch(d, validation_layer));
   if ((c.pipeline.ray_query || c.pipeline.ray_query_in_hit) && !d.ray_query)
     return notSupported(

@@ -124,12 +124,16 @@ Result<void> createDevice(VulkanContext& ctx) {
   v12_on.descriptorIndexing = v12.descriptorIndexing;  // rs_tlas[nonuniformEXT(i)]
   v12_on.vulkanMemoryModel = v12.vulkanMemoryModel;
   v12_on.vulkanMemoryModelDeviceScope = v12.vulkanMemoryModelDeviceScope;
+  v12_on.shaderInt8 = v12.shaderInt8;  // the sized scalars (program/sized_types.h)
+  v12_on.shaderFloat16 = v12.shaderFloat16;
   VkPhysicalDeviceRayTracingMaintenance1FeaturesKHR maintenance1_on{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_MAINTENANCE_1_FEATURES_KHR};
   maintenance1_on.rayTracingMaintenance1 = VK_TRUE;
   maintenance1_on.rayTracingPipelineTraceRaysIndirect2 = ctx.info.trace_rays_indirect2;
   VkPhysicalDeviceFeatures2 on{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   on.features.shaderInt64 = have.features.shaderInt64;
+  on.features.shaderInt16 = have.features.shaderInt16;
+  on.features.shaderFloat64 = have.features.shaderFloat64;
   on.features.sparseBinding = have.features.sparseBinding;  // scene.build.sparse
   on.pNext = &v12_on;
   v12_on.pNext = &rt_on;

@@ -131,6 +131,13 @@ using DeviceLaunchSize = std::array<uint64_t, 3>;
   X(bool, descriptor_indexing, "descriptor_indexing", "descriptorIndexing",                        \
     "Vulkan 1.2's feature (VK_EXT_descriptor_indexing: top levels indexed dynamically, tlas: "     \
     "expr)")                                                                                       \
+  X(bool, shader_int8, "shader_int8", "shaderInt8",                                                \
+    "Vulkan 1.2's feature (VK_KHR_shader_float16_int8: int8, uint8 locals)")                       \
+  X(bool, shader_int16, "shader_int16", "shaderInt16", "the core feature (int16, uint16 locals)")  \
+  X(bool, shader_int64, "shader_int64", "shaderInt64", "the core feature (int64, uint64 locals)")  \
+  X(bool, shader_float16, "shader_float16", "shaderFloat16",                                       \
+    "Vulkan 1.2's feature (VK_KHR_shader_float16_int8: float16 locals)")                           \
+  X(bool, shader_float64, "shader_float64", "shaderFloat64", "the core feature (float64 locals)")  \
   X(bool, library_group_handles, "library_group_handles", "VK_EXT_pipeline_library_group_handles", \
     "the extension with its pipelineLibraryGroupHandles feature (a library's group handles "       \
     "are the linked pipeline's)")                                                                  \

@@ -156,6 +156,11 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
   vkGetPhysicalDeviceFeatures2(physical, &features);
   d.scalar_block_layout = vk12 && v12_features.scalarBlockLayout;
   d.descriptor_indexing = vk12 && v12_features.descriptorIndexing;
+  d.shader_int8 = vk12 && v12_features.shaderInt8;
+  d.shader_float16 = vk12 && v12_features.shaderFloat16;
+  d.shader_int16 = features.features.shaderInt16;
+  d.shader_int64 = features.features.shaderInt64;
+  d.shader_float64 = features.features.shaderFloat64;
   d.ray_tracing_pipeline = vk12 && d.ray_tracing_extension && rt_features.rayTracingPipeline;
   d.ray_traversal_primitive_culling =
       d.ray_tracing_pipeline && rt_features.rayTraversalPrimitiveCulling;

@@ -153,6 +153,11 @@ static void rs_create_device(void) {
   v12_on.vulkanMemoryModel = v12.vulkanMemoryModel;
   v12_on.vulkanMemoryModelDeviceScope = v12.vulkanMemoryModelDeviceScope;
   on.features.shaderInt64 = have.features.shaderInt64;
+  /* the sized scalars a case's locals may use (harness/program/sized_types.h) */
+  on.features.shaderInt16 = have.features.shaderInt16;
+  on.features.shaderFloat64 = have.features.shaderFloat64;
+  v12_on.shaderInt8 = v12.shaderInt8;
+  v12_on.shaderFloat16 = v12.shaderFloat16;
   rs_chain_ray_query(&rq_on, &on);
   vkGetPhysicalDeviceQueueFamilyProperties(rs_physical, &count, families);
   for (rs_queue_family = 0; rs_queue_family < count; ++rs_queue_family)

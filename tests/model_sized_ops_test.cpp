@@ -1,0 +1,93 @@
+// The model's meaning of the sized scalars (model/sized_ops.cpp): integers
+// wrap modulo 2^bits, conversions as GLSL's constructors, float16 and
+// float64 exact or a case error, and the planted fault that halves them
+// across a call.
+#include "model_support.h"
+
+namespace rayspec::model_test {
+namespace {
+
+// Two rays (launch_id_x 0, 1) that miss; `raygen` is the raygen program
+// (YAML, indented by four).
+Case sizedCase(const std::string& raygen) {
+  return parseInline(
+      "rules: [R-LIVE-STATE]\n"
+      "scene:\n"
+      "  blas:\n"
+      "    t: [{triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}}]\n"
+      "  instances: [{blas: t}]\n"
+      "rays:\n"
+      "  grid: {size: [2, 1], origin: [10, 10, 1], du: [1, 0, 0], dv: [0, 1, 0], "
+      "direction: [0, 0, -1]}\n"
+      "pipeline:\n"
+      "  miss: [[payload: {value: 5}]]\n"
+      "  hit_groups: [{closest_hit: [payload: {value: 6}]}]\n"
+      "  raygen:\n" +
+      raygen +
+      "outputs:\n"
+      "  per_ray: [value, value1, value2]\n");
+}
+
+using Pair = std::vector<uint32_t>;
+V sizedValues(const Results& r, const char* field) {
+  return {word(r, 0, field), word(r, 1, field)};
+}
+
+TEST(ModelSizedOps, IntegersWrapAndConvertByTheirSignedness) {
+  const Case c = sizedCase(
+      "    - let: {a: {sub: [{int8: launch_id_x}, 100]}}\n"  // -100, -99
+      "    - let: {b: {mul: [var.a, 3]}}\n"                  // -300 -> -44, -297 -> -41
+      "    - let: {w: {mul: [{uint64: 4294967295}, {uint64: {add: [launch_id_x, 2]}}]}}\n"
+      "    - record: {value: {uint: var.b}, value1: {high: var.w}, value2: {uint: var.w}}\n");
+  const Results r = runTier(c, ModelTier::Fast);
+  ASSERT_TRUE(r.ok()) << r.status_detail;
+  EXPECT_EQ(sizedValues(r, "value"),
+            (Pair{static_cast<uint32_t>(-44), static_cast<uint32_t>(-41)}));
+  EXPECT_EQ(sizedValues(r, "value1"), (Pair{1, 2}));  // (2^32 - 1) * 2 = 2^33 - 2
+  EXPECT_EQ(sizedValues(r, "value2"), (Pair{0xFFFFFFFEu, 0xFFFFFFFDu}));
+}
+
+TEST(ModelSizedOps, Float64KeepsWhatFloatLoses) {
+  const Case c = sizedCase(
+      "    - let: {d: {add: [{mul: [{float64: {add: [launch_id_x, 1]}}, 1099511627776.0]}, 7.5]}}\n"
+      "    - record: {value: {uint: {mul: [{sub: [var.d, 7.5]}, 9.0949470177292824e-13]}},\n"
+      "              value1: {uint: {sub: [var.d, {mul: [{float64: {add: [launch_id_x, 1]}}, "
+      "1099511627776.0]}]}}}\n");
+  const Results r = runTier(c, ModelTier::Fast);
+  ASSERT_TRUE(r.ok()) << r.status_detail;
+  EXPECT_EQ(sizedValues(r, "value"), (Pair{1, 2}));
+  EXPECT_EQ(sizedValues(r, "value1"), (Pair{7, 7}));  // 7.5 truncated
+}
+
+TEST(ModelSizedOps, AnInexactFloat16IsACaseError) {
+  const Case c = sizedCase(
+      "    - let: {h: {add: [{float16: 2048}, {float16: {add: [launch_id_x, 1]}}]}}\n"
+      "    - record: {value: {uint: var.h}}\n");
+  const Results r = runTier(c, ModelTier::Fast);
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.status_detail.find("Float16 result not exact"), std::string::npos) << r.status_detail;
+}
+
+TEST(ModelSizedOps, TheHalvingFaultKeepsTheUpperHalfAcrossATrace) {
+  const Case c = sizedCase(
+      "    - let: {a: {int16: {add: [launch_id_x, 0x1234]}}, h: {float16: 1.8828125}}\n"
+      "    - let: {w: {mul: [{mul: [{int64: 65536}, 65536]}, {int64: {add: [launch_id_x, 5]}}]}}\n"
+      "    - set: {w: {add: [var.w, 9]}}\n"
+      "    - trace: {}\n"
+      "    - record: {value: {uint: var.a}, value1: {float_bits: {float: var.h}},\n"
+      "              value2: {bit_xor: [{uint: var.w}, {high: var.w}]}}\n");
+  const Results kept = runTier(c, ModelTier::Fast);
+  EXPECT_EQ(sizedValues(kept, "value"), (Pair{0x1234, 0x1235}));
+  EXPECT_EQ(sizedValues(kept, "value1"), (Pair{0x3FF10000u, 0x3FF10000u}));  // 1.8828125
+  EXPECT_EQ(sizedValues(kept, "value2"), (Pair{9 ^ 5, 9 ^ 6}));
+  ModelOptions o{ModelTier::Fast, 1};
+  o.faults.sized_locals_halved = true;
+  const Results halved = runOnModel(c, derivePlan(c), o);
+  EXPECT_EQ(sizedValues(halved, "value"), (Pair{0x1200, 0x1200}));
+  EXPECT_EQ(sizedValues(halved, "value1"),
+            (Pair{0x3FE00000u, 0x3FE00000u}));  // 1.75: the low byte 0
+  EXPECT_EQ(sizedValues(halved, "value2"), (Pair{5, 6}));
+}
+
+}  // namespace
+}  // namespace rayspec::model_test

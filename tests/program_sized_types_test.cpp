@@ -1,0 +1,122 @@
+// The sized scalars (program/sized_types.h): their rows, the conversion ops
+// generated from them, the typing of literals and ops on them, and the
+// values each type holds exactly (program/sized_values.h).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "program/locals.h"
+#include "program/ops.h"
+#include "program/sized_values.h"
+
+namespace rayspec {
+namespace {
+
+Expr sizedLit(double v, ValueType t = ValueType::Uint) {
+  Expr e;
+  e.kind = Expr::Kind::Literal;
+  e.type = t;
+  e.literal = {v};
+  return e;
+}
+Expr sizedOp(const std::string& name, std::vector<Expr> args) {
+  Expr e;
+  e.kind = Expr::Kind::Op;
+  e.name = name;
+  e.op = opNamed(name);
+  e.args = std::move(args);
+  return e;
+}
+std::string sizedTypeMessage(Expr& e) {
+  const Result<void> r = typeCheck(e, Stage::Raygen);
+  return r ? std::string() : r.error().message;
+}
+
+TEST(SizedTypes, EachRowIsAValueTypeAndAConversionOp) {
+  int rows = 0;
+  for (ValueType t : enumValues<ValueType>()) {
+    const SizedType* s = sizedType(t);
+    if (!s) continue;
+    ++rows;
+    EXPECT_EQ(s->type, t);
+    EXPECT_EQ(valueTypeNamed(valueTypeSpelling(t)), t);
+    const Op convert = opNamed(valueTypeSpelling(t));  // {int8: x} .. {float64: x}
+    ASSERT_TRUE(isConversion(convert)) << valueTypeSpelling(t);
+    EXPECT_EQ(conversionTarget(convert), t);
+    EXPECT_EQ(std::string(opInfo(convert).glsl), std::string(valueTypeGlsl(t)) + "($0)");
+    EXPECT_EQ(componentCount(t), 1);
+  }
+  EXPECT_EQ(rows, 8);
+  EXPECT_EQ(sizedType(ValueType::Uint), nullptr);
+  EXPECT_STREQ(valueTypeGlsl(ValueType::Float64), "float64_t");
+  EXPECT_EQ(sizedType(ValueType::Int16)->bits, 16);
+  EXPECT_EQ(sizedType(ValueType::Uint64)->kind, SizedKind::Unsigned);
+  EXPECT_TRUE(isSizedFloat(ValueType::Float16));
+  EXPECT_FALSE(isSizedInteger(ValueType::Float64));
+  EXPECT_NE(arrayTypeSpellings().find("vec4, int8"), std::string::npos);
+}
+
+TEST(SizedTypes, LiteralsTakeTheirPartnersTypeWithinItsValues) {
+  Expr a = sizedOp("add", {sizedOp("int8", {sizedLit(3)}), sizedLit(100)});
+  EXPECT_EQ(sizedTypeMessage(a), "");
+  EXPECT_EQ(a.type, ValueType::Int8);
+  EXPECT_EQ(a.args[1].type, ValueType::Int8);
+  Expr wide =
+      sizedOp("add", {sizedOp("int8", {sizedLit(3)}), sizedLit(128)});  // 127 is int8's largest
+  EXPECT_NE(sizedTypeMessage(wide).find("out of range 0..127"), std::string::npos);
+  Expr half = sizedOp("mul", {sizedOp("float16", {sizedLit(3)}), sizedLit(1.5, ValueType::Float)});
+  EXPECT_EQ(sizedTypeMessage(half), "");
+  EXPECT_EQ(half.type, ValueType::Float16);
+  Expr fine = sizedOp("mul", {sizedOp("float16", {sizedLit(3)}), sizedLit(0.1, ValueType::Float)});
+  EXPECT_NE(sizedTypeMessage(fine).find("not a Float16 value"), std::string::npos);
+  Expr big = sizedOp("mul", {sizedOp("uint64", {sizedLit(7)}), sizedLit(4294967295)});
+  EXPECT_EQ(sizedTypeMessage(big), "");
+  EXPECT_EQ(big.type, ValueType::Uint64);
+}
+
+TEST(SizedTypes, OnlyExactOpsAndDefinedConversionsType) {
+  Expr div = sizedOp("div", {sizedOp("int16", {sizedLit(9)}), sizedLit(3)});
+  EXPECT_NE(sizedTypeMessage(div).find("div is not offered"), std::string::npos);
+  Expr mixed = sizedOp("add", {sizedOp("int16", {sizedLit(9)}), sizedOp("uint16", {sizedLit(3)})});
+  EXPECT_NE(sizedTypeMessage(mixed), "");
+  Expr from_float = sizedOp("int64", {sizedLit(2.5, ValueType::Float)});  // no float -> integer
+  EXPECT_NE(sizedTypeMessage(from_float).find("need Uint or a sized integer"), std::string::npos);
+  Expr narrow = sizedOp("int8", {sizedOp("uint64", {sizedLit(5)})});
+  EXPECT_EQ(sizedTypeMessage(narrow), "");
+  Expr to_float = sizedOp("float", {sizedOp("float64", {sizedLit(5)})});
+  EXPECT_EQ(sizedTypeMessage(to_float), "");
+  EXPECT_EQ(to_float.type, ValueType::Float);
+  Expr high = sizedOp("high", {sizedOp("int64", {sizedLit(5)})});
+  EXPECT_EQ(sizedTypeMessage(high), "");
+  Expr high32 = sizedOp("high", {sizedOp("int16", {sizedLit(5)})});
+  EXPECT_NE(sizedTypeMessage(high32).find("need Int64 or Uint64"), std::string::npos);
+  Expr lt = sizedOp("lt", {sizedOp("float16", {sizedLit(5)}), sizedLit(2)});
+  EXPECT_EQ(sizedTypeMessage(lt), "");
+  EXPECT_EQ(lt.args[1].type, ValueType::Float16);
+  Expr to_uint = sizedOp("uint", {sizedOp("int8", {sizedLit(5)})});
+  EXPECT_EQ(sizedTypeMessage(to_uint), "");
+}
+
+TEST(SizedValues, Float16HoldsElevenSignificantBitsOfNormalNumbers) {
+  EXPECT_TRUE(exactInFloat16(0));
+  EXPECT_TRUE(exactInFloat16(-20.5));
+  EXPECT_TRUE(exactInFloat16(2047));
+  EXPECT_FALSE(exactInFloat16(2049));  // 12 significant bits
+  EXPECT_TRUE(exactInFloat16(65504));
+  EXPECT_FALSE(exactInFloat16(65536));
+  EXPECT_TRUE(exactInFloat16(std::ldexp(1.0, -14)));
+  EXPECT_FALSE(exactInFloat16(std::ldexp(1.0, -15)));  // a denormal: a device may flush it
+  EXPECT_TRUE(exactInFloat32(16777216.0));
+  EXPECT_FALSE(exactInFloat32(16777217.0));
+}
+
+TEST(SizedValues, IntegersWrapToTheirBitsAndSignedness) {
+  EXPECT_EQ(wrapToType(ValueType::Int8, 300), 44u);
+  EXPECT_EQ(wrapToType(ValueType::Int8, 200), static_cast<uint64_t>(-56));
+  EXPECT_EQ(wrapToType(ValueType::Uint8, static_cast<uint64_t>(-1)), 255u);
+  EXPECT_EQ(wrapToType(ValueType::Int16, 0x18000), static_cast<uint64_t>(-32768));
+  EXPECT_EQ(wrapToType(ValueType::Uint64, 0xFFFFFFFFFFFFFFFFull), 0xFFFFFFFFFFFFFFFFull);
+}
+
+}  // namespace
+}  // namespace rayspec
