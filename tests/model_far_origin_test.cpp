@@ -129,5 +129,20 @@ TEST(ModelFarOrigin, CoincidingRootsReportTheFarKind) {
   EXPECT_FALSE(rayPasses(verdictOf(j), 3));
 }
 
+// An offered box whose report ties the committed one (160921 ray 8, from
+// 4.5e6 away): instance 2's box 1, outside the model's ray but within a
+// device's error bound of it (R-AABB-CONS), its sphere root rounding onto
+// instance 1's committed t; a device keeps either report (R-TIE). NVIDIA
+// kept instance 2's.
+TEST(ModelFarOrigin, AnOfferedBoxTyingTheCommittedReportMayWin) {
+  Judged j = judged("160921");
+  ASSERT_EQ(j.model.statusText(), "ok");
+  const Verdict v = verdictOf(j);
+  EXPECT_TRUE(rayPasses(v, 8)) << v.headline();
+  // A primitive no answer gives still fails: instance 2's geometry 2 box 1.
+  deviceWord(j, 8, "geometry_index") = 2;
+  EXPECT_FALSE(rayPasses(verdictOf(j), 8));
+}
+
 }  // namespace
 }  // namespace rayspec

@@ -139,5 +139,47 @@ TEST(ModelTies, TerminateOnFirstHitAllowsEveryConfirmableCandidate) {
     EXPECT_TRUE(run(c, tier).ambiguous.empty());
 }
 
+// A tie behind a leak (fuzz seed 160964 on NVIDIA): the ray passes exactly
+// through a border vertex of a triangle at z = 2 (hit or miss, both legal),
+// then meets one triangle given twice, in both windings, at z = 0, no
+// culling: where the vertex is missed, either twin is the closest hit
+// (R-TIE), not only the one the model's tie rule keeps.
+TEST(ModelTies, ATieBehindAMissedVertexListsEveryTwin) {
+  Case c = parseInline(R"(rules: [R-WATERTIGHT, R-TIE]
+scene:
+  blas:
+    corner:
+      - triangles:
+          vertices: [[0, 0, 2], [1, 0, 2], [0, 1, 2]]
+        flags: [opaque]
+    twins:
+      - triangles:
+          vertices: [[-1, -1, 0], [2, -1, 0], [-1, 2, 0]]
+          indices: [0, 1, 2, 0, 2, 1]
+        flags: [opaque]
+  instances: [{blas: corner}, {blas: twins}]
+rays:
+  list:
+    - {origin: [0, 0, 5], direction: [0, 0, -1]}
+pipeline:
+  raygen: [trace: {}]
+  miss: [[count: miss]]
+  hit_groups:
+    - closest_hit: [{count: closesthit}, {record: [hit, instance_id, geometry_index, primitive_id]}]
+outputs:
+  counters: [miss, closesthit]
+  per_ray: [hit, instance_id, geometry_index, primitive_id]
+)");
+  Results r = run(c, ModelTier::Exact);
+  ASSERT_EQ(r.statusText(), "ok");
+  auto amb = byRay(r);
+  ASSERT_EQ(amb.count(0), 1u);
+  const std::set<std::array<uint32_t, 3>> got = legal(*amb[0]);
+  EXPECT_TRUE(got.count({1, 0, 0})) << "twin 0 behind the vertex";
+  EXPECT_TRUE(got.count({1, 0, 1})) << "twin 1 behind the vertex";
+  EXPECT_TRUE(got.count({0, 0, 0})) << "the vertex's triangle";
+  EXPECT_TRUE(got.count(answer(r, 0))) << "the model's own answer is legal";
+}
+
 }  // namespace
 }  // namespace rayspec

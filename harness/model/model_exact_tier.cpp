@@ -202,11 +202,56 @@ void TraceClassifier::tryUnsure() {
   // The legal answers: this run's, and those of the what-if runs.
   addCommitted(tr_.best, actual());
   std::vector<WhatIfAnswer> leaks;
-  for (const WhatIfAnswer& a : unsureAnswers(leaks)) {
-    if (!sameAsCommitted(a.best) && !reason_) reason_ = AmbiguityReason::AabbFace;
-    addCommitted(a.best, a.how);
+  for (const WhatIfAnswer& a : unsureAnswers(leaks))
+    for (const WhatIfAnswer& b : withTies(a)) {
+      if (!sameAsCommitted(b.best) && !reason_) reason_ = AmbiguityReason::AabbFace;
+      addCommitted(b.best, b.how);
+    }
+  for (const WhatIfAnswer& a : leaks)
+    for (const WhatIfAnswer& b : withTies(a)) addLeak(b.best, b.how);
+}
+
+// The candidates a what-if run's committed hit ties with (within the error
+// bound, another primitive): triangles it made a hit, boxes that reported
+// at that t in the run.
+std::vector<long> TraceClassifier::tiedWith(const WhatIfAnswer& a) const {
+  std::vector<long> tied;
+  const Committed& b = a.best;
+  if (!b.valid) return tied;
+  const double tol = tr_.tol(b.t);
+  for (size_t k = 0; k < cands_.size(); ++k) {
+    const ModelCandidate& c = cands_[k];
+    if (c.instance == b.instance && c.geometry == b.geometry && c.primitive == b.primitive)
+      continue;
+    bool tie = false;
+    if (c.aabb) {
+      tie = std::any_of(a.reports.begin(), a.reports.end(), [&](const auto& r) {
+        return r.first == k && !std::isnan(r.second) && std::fabs(r.second - b.t) <= tol;
+      });
+    } else {
+      const int8_t f = a.how.force.empty() ? int8_t{-1} : a.how.force[k];
+      tie =
+          (f == 1 || (f < 0 && c.hit)) && !c.in_plane && eligible(c) && std::fabs(c.t - b.t) <= tol;
+    }
+    if (tie) tied.push_back(static_cast<long>(k));
   }
-  for (const WhatIfAnswer& a : leaks) addLeak(a.best, a.how);
+  return tied;
+}
+
+// R-TIE at a what-if run's committed t, as tryOrders at the actual run's: a
+// leak or an unsure group's other choice reaches a hit behind that ties
+// with another (fuzz seed 160964 on NVIDIA: two coincident triangles of
+// opposite winding behind a border vertex), or an offered box reports at
+// the committed t (160921: two boxes' sphere roots from a far origin). The
+// run, then each tied candidate preferred in a run of its own.
+std::vector<WhatIfAnswer> TraceClassifier::withTies(const WhatIfAnswer& a) {
+  std::vector<WhatIfAnswer> out{a};
+  for (long k : tiedWith(a)) {
+    WhatIf how = a.how;
+    how.prefer = k;
+    out.push_back({m_.sandbox(tr_, cands_, how, payload_in_), how, {}});
+  }
+  return out;
 }
 
 // R-PREC on a box the model's ray misses (ModelCandidate::outside): offered
@@ -423,7 +468,8 @@ bool ModelTracer::anyHitMayTerminate(const Traversal& tr,
 
 Committed ModelTracer::decideAs(const Traversal& actual, const std::vector<ModelCandidate>& cands,
                                 const WhatIf& how, Payload& payload,
-                                std::vector<ShaderDecision>* noted) {
+                                std::vector<ShaderDecision>* noted,
+                                std::vector<std::pair<size_t, double>>* reports) {
   Traversal v(actual.ray);
   v.flags = actual.flags;
   v.depth = actual.depth;
@@ -438,6 +484,7 @@ Committed ModelTracer::decideAs(const Traversal& actual, const std::vector<Model
   v.order = how.order.empty() ? nullptr : &how.order;
   v.tie = how.tie;
   v.shader_unsure = noted;
+  v.reports = reports;
   if (how.prefer >= 0) {
     const ModelCandidate& p = cands[static_cast<size_t>(how.prefer)];
     v.prefer_key[0] = p.instance;
@@ -453,7 +500,8 @@ Committed ModelTracer::decideAs(const Traversal& actual, const std::vector<Model
 // are restored afterwards, the payload is a copy of the trace's incoming one.
 Committed ModelTracer::sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands,
                                const WhatIf& how, const Payload& payload_in, OrderOutcome* left,
-                               std::vector<ShaderDecision>* noted) {
+                               std::vector<ShaderDecision>* noted,
+                               std::vector<std::pair<size_t, double>>* reports) {
   const LaunchState::Saved saved = st_.save();
   // A query's blocks change the frame of the stage that runs it: the what-if
   // run starts from the frame as traversal began, and is undone.
@@ -463,7 +511,7 @@ Committed ModelTracer::sandbox(const Traversal& actual, const std::vector<ModelC
     restoreQueryFrame(*actual.query, actual.query->frame_before);
   }
   Payload p = payload_in;
-  Committed best = decideAs(actual, cands, how, p, noted);
+  Committed best = decideAs(actual, cands, how, p, noted, reports);
   best.effect = effectOf(best, p, actual.query);
   if (left) {  // what this run leaves behind (tryPermutations)
     left->best = best;
@@ -662,7 +710,9 @@ std::vector<WhatIfAnswer> ModelTracer::whatIf(const Traversal& actual,
       forceGroup(how, unsure, groups[g], pick[g]);
       leak = leak || (closes[g] && pick[g] == kNone);
     }
-    (leak ? *leaks : out).push_back({sandbox(actual, cands, how, payload_in), how});
+    WhatIfAnswer a{{}, how, {}};
+    a.best = sandbox(actual, cands, how, payload_in, nullptr, nullptr, &a.reports);
+    (leak ? *leaks : out).push_back(std::move(a));
   };
   if (combinations <= kMaxWhatIfCombinations) {
     forEachCombination(choices, run);

@@ -91,13 +91,17 @@ class ModelTracer {
   // trace's incoming one (sandbox).
   // `noted`, when given, gets the run's intersection-program decisions that
   // rounding may flip (as the actual run notes them: Traversal::shader_unsure).
+  // `reports`, when given, gets its intersection programs' reports
+  // (Traversal::reports).
   Committed decideAs(const Traversal& actual, const std::vector<ModelCandidate>& cands,
                      const WhatIf& how, Payload& payload,
-                     std::vector<ShaderDecision>* noted = nullptr);
+                     std::vector<ShaderDecision>* noted = nullptr,
+                     std::vector<std::pair<size_t, double>>* reports = nullptr);
   // `left`, when given, gets what the run leaves behind (the exact tier's orders).
   Committed sandbox(const Traversal& actual, const std::vector<ModelCandidate>& cands,
                     const WhatIf& how, const Payload& payload_in, OrderOutcome* left = nullptr,
-                    std::vector<ShaderDecision>* noted = nullptr);
+                    std::vector<ShaderDecision>* noted = nullptr,
+                    std::vector<std::pair<size_t, double>>* reports = nullptr);
   // The digest of what a decision left behind (Committed::effect): `best`,
   // the payload, the launch state's record and counters, a query's frame.
   uint64_t effectOf(const Committed& best, const Payload& payload, const QueryRun* query) const;

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "model/model_program.h"
@@ -69,6 +70,9 @@ struct WhatIf {
 struct WhatIfAnswer {
   Committed best;
   WhatIf how;
+  // The run's intersection-program reports (candidate, t; NAN: it ran),
+  // where collected (ModelTracer::whatIf): which boxes tie with `best`.
+  std::vector<std::pair<size_t, double>> reports;
 };
 
 }  // namespace rayspec

@@ -57,6 +57,10 @@ class TraceClassifier {
   // findUnsure up to final_t; tryUnsure's answers, reaching as far as they do.
   void findUnsure(const std::vector<std::pair<size_t, double>>& reports, double final_t);
   std::vector<WhatIfAnswer> unsureAnswers(std::vector<WhatIfAnswer>& leaks);
+  // A what-if answer and those of its committed hit's ties (R-TIE), each
+  // tied candidate preferred.
+  std::vector<long> tiedWith(const WhatIfAnswer& a) const;
+  std::vector<WhatIfAnswer> withTies(const WhatIfAnswer& a);
   bool flipNoted(const WhatIf& base, const std::vector<ShaderDecision>& noted, size_t depth);
   void addCommitted(const Committed& b, const WhatIf& how);
   void addLeak(const Committed& b, const WhatIf& how);
