@@ -13,6 +13,28 @@
 //   RS_USE_SHADER_RECORD  this stage's shader record data (8 words)
 // Model counterpart: harness/model (records, counters, shader record data).
 
+#ifdef RS_EMPTY_LAYOUT
+// pipeline.layout: empty. The pipeline layout has no descriptor set (and no
+// push constant): every buffer of set 0 below is reached through its device
+// address instead, the address of binding b being word pair b of the address
+// table, whose own address the specialization constants RS_TABLE_LO_ID and
+// RS_TABLE_HI_ID hold (harness/vulkan/address_table.h); the top level is
+// made from its address (accelerationStructureEXT(uvec2)).
+layout(constant_id = RS_TABLE_LO_ID) const uint rs_table_lo = 0u;
+layout(constant_id = RS_TABLE_HI_ID) const uint rs_table_hi = 0u;
+layout(buffer_reference, std430, buffer_reference_align = 8) readonly buffer RsAddressTable {
+  uvec2 address[];
+};
+uvec2 rs_address(uint binding) {
+  return RsAddressTable(uvec2(rs_table_lo, rs_table_hi)).address[binding];
+}
+// The uint words of the buffer of a binding.
+layout(buffer_reference, std430, buffer_reference_align = 4) buffer RsBoundWords {
+  uint words[];
+};
+#define RS_BOUND_WORDS(binding) RsBoundWords(rs_address(binding)).words
+#endif
+
 // Launch index of this ray: (z * height + y) * width + x (a 3D launch's z
 // layers one below the other).
 uint rs_launch_index() {
@@ -30,7 +52,9 @@ ivec2 rs_image_texel(int width) {
 }
 
 #ifdef RS_USE_TLAS
-#ifdef RS_TLAS_COUNT
+#if defined(RS_EMPTY_LAYOUT)
+#define rs_tlas accelerationStructureEXT(rs_address(RS_BINDING_TLAS))
+#elif defined(RS_TLAS_COUNT)
 // Several top levels (scene.instances[].tlas): a trace names one by a constant.
 layout(set = 0, binding = RS_BINDING_TLAS) uniform accelerationStructureEXT rs_tlas[RS_TLAS_COUNT];
 #else
@@ -39,9 +63,13 @@ layout(set = 0, binding = RS_BINDING_TLAS) uniform accelerationStructureEXT rs_t
 #endif
 
 #ifdef RS_USE_RAYS
+#ifdef RS_EMPTY_LAYOUT
+#define rs_rays RS_BOUND_WORDS(RS_BINDING_RAYS)
+#else
 layout(set = 0, binding = RS_BINDING_RAYS, std430) readonly buffer RsRays {
   uint rs_rays[];
 };
+#endif
 
 // One ray of the launch, as packed by packRays (RS_RAY_WORDS words).
 struct RsRay {
@@ -78,10 +106,17 @@ RsRay rs_load_ray(uint index) {
 layout(buffer_reference, std430, buffer_reference_align = 4) buffer RsRecordWords {
   uint words[];
 };
+#ifdef RS_EMPTY_LAYOUT
+layout(buffer_reference, std430, buffer_reference_align = 8) readonly buffer RsRecordsRef {
+  RsRecordWords words_ref;
+};
+#define rs_records RsRecordsRef(rs_address(RS_BINDING_RECORDS)).words_ref.words
+#else
 layout(set = 0, binding = RS_BINDING_RECORDS, std430) readonly buffer RsRecords {
   RsRecordWords rs_records_ref;
 };
 #define rs_records rs_records_ref.words
+#endif
 
 // First word of this launch's record.
 uint rs_record_base() {
@@ -147,9 +182,13 @@ void rs_mark_any_hit(uint slots_offset, uint repeats_offset, uint slot) {
 #endif
 
 #ifdef RS_USE_COUNTERS
+#ifdef RS_EMPTY_LAYOUT
+#define rs_counters RS_BOUND_WORDS(RS_BINDING_COUNTERS)
+#else
 layout(set = 0, binding = RS_BINDING_COUNTERS, std430) buffer RsCounters {
   uint rs_counters[];
 };
+#endif
 
 // Global counter `index` (position of its name in the plan's counters): +1.
 void rs_count(uint index) {

@@ -17,9 +17,13 @@
 #define RS_HIT_PRIMITIVE uint(gl_PrimitiveID)
 #endif
 
+#ifdef RS_EMPTY_LAYOUT
+#define rs_scene RS_BOUND_WORDS(RS_BINDING_SCENE)
+#else
 layout(set = 0, binding = RS_BINDING_SCENE, std430) readonly buffer RsScene {
   uint rs_scene[];
 };
+#endif
 
 // First word of the current primitive's box.
 uint rs_scene_box_word() {

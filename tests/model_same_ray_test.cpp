@@ -68,5 +68,64 @@ TEST(ModelSameRay, CountersAloneKeepNoRecords) {
   EXPECT_EQ(r.counters.at("miss"), 35001u);
 }
 
+// Every id alike (no program reads the launch id, no records): the model
+// traces one id and multiplies its counts (model/uniform_launch.h). The
+// same case with a read of the id that changes nothing is traced id by id,
+// and counts the same; 2^30 ids take no longer than one.
+const std::string kUniform = R"(rules: [R-LAUNCH-3D]
+scene:
+  blas:
+    tri:
+      - triangles:
+          vertices: [[-1, -1, 0], [2, -1, 0], [-1, 2, 0]]
+  instances: [{blas: tri}]
+rays:
+  same: {origin: [0, 0, 1], direction: [0, 0, -1]}
+  launch: [@SIZE@]
+pipeline:
+  raygen:
+    - if: "@IF@"
+      then: [count: raygen]
+    - trace: {}
+    - trace: {cull_mask: 0}
+  miss:
+    - [count: miss]
+  hit_groups:
+    - closest_hit: [count: closesthit]
+      any_hit: [count: anyhit]
+outputs:
+  counters: [raygen, miss, closesthit, anyhit]
+)";
+
+Case uniformCase(const std::string& launch, const std::string& condition) {
+  std::string text = kUniform;
+  text.replace(text.find("@SIZE@"), 6, launch);
+  text.replace(text.find("\"@IF@\""), 6, condition);
+  return parseInline(text);
+}
+
+TEST(ModelSameRay, AUniformLaunchCountsAsIdById) {
+  const Results one =
+      runTier(uniformCase("300, 7, 2", "{eq: [launch_size_z, 2]}"), ModelTier::Fast);
+  const Results each = runTier(uniformCase("300, 7, 2", "{ge: [launch_id_x, 0]}"), ModelTier::Fast);
+  ASSERT_TRUE(one.ok()) << one.statusText();
+  ASSERT_TRUE(each.ok()) << each.statusText();
+  EXPECT_EQ(one.counters.at("raygen"), 4200u);
+  EXPECT_EQ(one.counters.at("closesthit"), 4200u);
+  EXPECT_EQ(one.counters.at("miss"), 4200u);
+  EXPECT_EQ(one.counters, each.counters);
+  EXPECT_EQ(one.counter_floors, each.counter_floors);
+}
+
+TEST(ModelSameRay, TheLargestLaunchIsOneIdMultiplied) {
+  const Case c = uniformCase("131072, 8192, 1", "{eq: [launch_size_y, 8192]}");
+  const Results r = runTier(c, ModelTier::Exact);
+  ASSERT_TRUE(r.ok()) << r.statusText();
+  EXPECT_EQ(r.counters.at("raygen"), uint64_t{1} << 30);
+  EXPECT_EQ(r.counters.at("miss"), uint64_t{1} << 30);
+  EXPECT_EQ(r.counters.at("closesthit"), uint64_t{1} << 30);
+  EXPECT_LT(r.seconds, 5.0);
+}
+
 }  // namespace
 }  // namespace rayspec::model_test

@@ -76,8 +76,9 @@ TEST(Launch, AZeroLaunchCannotHaveImages) {
   EXPECT_NE(firstError(r).find("has no texels"), std::string::npos) << firstError(r);
 }
 
-// rays.same: a launch of any size up to 2^24 ids, every id the one ray.
-ParseResult parseSame(const std::string& same, const std::string& launch) {
+// rays.same: a launch of any size up to 2^30 ids, every id the one ray.
+ParseResult parseSame(const std::string& same, const std::string& launch,
+                      const std::string& raygen = "[count: raygen]") {
   return parseCaseText(
       "rules: [R-LAUNCH-3D]\n"
       "rays:\n"
@@ -85,7 +86,9 @@ ParseResult parseSame(const std::string& same, const std::string& launch) {
           same + "\n" + (launch.empty() ? std::string() : "  launch: " + launch + "\n") +
           "  tmax: 7\n"
           "pipeline:\n"
-          "  raygen: [count: raygen]\n"
+          "  raygen: " +
+          raygen +
+          "\n"
           "outputs:\n"
           "  counters: [raygen]\n",
       "t.yaml", "t/t");
@@ -119,8 +122,8 @@ TEST(Launch, TheSameRayErrorsNameTheLineAndField) {
     std::string same, launch, where, message;
   } bad[] = {
       {"{origin: [0, 0, 1], direction: [0, 0, -1]}", "", "t.yaml:3", "rays.same needs rays.launch"},
-      {"{origin: [0, 0, 1], direction: [0, 0, -1]}", "[4096, 4096, 2]", "t.yaml:4",
-       "at most 2^24 rays in a launch"},
+      {"{origin: [0, 0, 1], direction: [0, 0, -1]}", "[65536, 16384, 2]", "t.yaml:4",
+       "at most 2^30 ids in a rays.same launch"},
       {"{origin: [0, 0, 1]}", "[8, 1, 1]", "t.yaml:3",
        "rays.same.direction: missing required key 'direction'"},
       {"{origin: [0, 0, 1], direction: [0, 0, -1], size: 4}", "[8, 1, 1]", "t.yaml:3", "rays.same"},
@@ -132,6 +135,25 @@ TEST(Launch, TheSameRayErrorsNameTheLineAndField) {
     EXPECT_NE(e.find(b.where), std::string::npos) << e;
     EXPECT_NE(e.find(b.message), std::string::npos) << e;
   }
+}
+
+// Above 2^24 ids the model traces one id for all (model/uniform_launch.h):
+// the launch size may be read, the launch id not.
+TEST(Launch, TheSameRayAbove2To24IdsReadsNoLaunchId) {
+  const std::string ray = "{origin: [0, 0, 1], direction: [0, 0, -1]}";
+  const ParseResult sized = parseSame(ray, "[131072, 8192, 1]",
+                                      "[{if: {eq: [launch_size_y, 8192]}, then: [count: raygen]}]");
+  ASSERT_TRUE(sized.value) << firstError(sized);
+  EXPECT_EQ(sized.value->rays.launchRays(), uint64_t{1} << 30);
+  const ParseResult id =
+      parseSame(ray, "[131072, 512, 1]", "[{if: {odd: launch_id_y}, then: [count: raygen]}]");
+  EXPECT_FALSE(id.value);
+  const std::string e = firstError(id);
+  EXPECT_NE(e.find("t.yaml:3"), std::string::npos) << e;
+  EXPECT_NE(e.find("rays.launch"), std::string::npos) << e;
+  EXPECT_NE(e.find("reads launch_id_x/_y/_z"), std::string::npos) << e;
+  EXPECT_TRUE(
+      parseSame(ray, "[4096, 4096, 1]", "[{if: {odd: launch_id_y}, then: [count: raygen]}]").value);
 }
 
 }  // namespace

@@ -268,6 +268,13 @@ enum class TraceCommand { RAYSPEC_TRACE_COMMANDS(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(TraceCommand, RAYSPEC_TRACE_COMMANDS);
 const char* traceCommandName(TraceCommand c);  // trace_rays, indirect, indirect2
 
+// The most launch ids whose rays a case lists or the model traces one by one
+// (2^24), and the most a rays.same launch may have (2^30, the spec's minimum
+// maxRayDispatchInvocationCount): above 2^24 no program may read the launch
+// id, and the model traces one id for all (model/uniform_launch.h).
+constexpr uint64_t kMaxTracedLaunchIds = uint64_t{1} << 24;
+constexpr uint64_t kMaxSameLaunchIds = uint64_t{1} << 30;
+
 struct Rays {
   // The records' shape: width = launch[0], height = launch[1] x launch[2]
   // (a 3D launch's z layers one below the other); width*height == launchRays().
@@ -282,7 +289,7 @@ struct Rays {
   TraceCommand command = TraceCommand::Direct;
   std::vector<Ray> rays;  // row-major, index = y * width + x
   // rays.same: every launch id traces rays[0], the one ray kept (a launch
-  // too wide to list, up to 2^24 ids; zero ids keep none).
+  // too wide to list, up to kMaxSameLaunchIds; zero ids keep none).
   bool same = false;
   const Ray& launchRay(size_t index) const { return same ? rays.front() : rays[index]; }
   size_t launchRays() const { return same ? static_cast<size_t>(width) * height : rays.size(); }
@@ -395,6 +402,11 @@ struct Pipeline {
   // passing rs_tlas, rs_tlas[k] or rs_tlas[nonuniformEXT(i)]. What is traced
   // is the same: the model runs the case as it is.
   bool tlas_function = false;
+  // pipeline.layout: empty (R-EMPTY-LAYOUT): the pipeline is created with a
+  // pipeline layout of no descriptor set and no push constant, binds nothing,
+  // and its shaders reach the case's buffers and top level through their
+  // device addresses (glsl/bindings.h); they observe the same.
+  bool empty_layout = false;
   // Several raygen groups (pipeline.raygens): `raygen` is group raygen_group,
   // other_raygens the rest in group order. The raygen region's record
   // selects raygen_group (R-RAYGEN-REGION); the others never run.

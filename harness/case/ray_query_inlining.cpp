@@ -103,6 +103,8 @@ std::string commonObstacle(const Case& c, bool own) {
   const Pipeline& p = c.pipeline;
   if ((p.ray_query || p.ray_query_in_hit) && !own) return "the case traces by ray query itself";
   if (!c.expected_rejections.empty()) return "the case expects a shader to be rejected";
+  // The SBT tables the forms read are bound in set 0 (glsl/bindings.h).
+  if (p.empty_layout) return "its pipeline layout is empty (pipeline.layout)";
   if (p.payload_words.size() > 1) return "it declares several payload types";
   // The inlined programs read the host's constants; callables stay stages.
   for (const auto& [shader, values] : p.specialize)

@@ -56,7 +56,7 @@ const Rules& pipelineRules() {
       "R-LAUNCH-3D",    "R-AS-COPY",       "R-AS-UPDATE",     "R-AS-SIZE",        "R-AS-BUILD",
       "R-AS-MEMORY",    "R-AS-CREATE",     "R-VERTEX-FORMAT", "R-POSITION-FETCH", "R-LIVE-STATE",
       "R-CONTROL-FLOW", "R-RQ-EQUIV",      "R-RQ-INIT",       "R-RQ-CANDIDATES",  "R-RQ-COMMIT",
-      "R-RQ-TERMINATE", "R-RQ-VALUES",     "R-DEFERRED"};
+      "R-RQ-TERMINATE", "R-RQ-VALUES",     "R-DEFERRED",      "R-EMPTY-LAYOUT"};
   return r;
 }
 

@@ -64,6 +64,8 @@ FaultResult builtinWrong(RecordFaultArgs& a);
 FaultResult indirectLaunchShort(RecordFaultArgs& a);
 FaultResult launchDepthLost(RecordFaultArgs& a);
 FaultResult zeroLaunchRuns(RecordFaultArgs& a);
+FaultResult launchRowRepeated(RecordFaultArgs& a);
+FaultResult launchRowLost(RecordFaultArgs& a);
 FaultResult libraryHandleDiffers(RecordFaultArgs& a);
 FaultResult memoryGuardOverwritten(RecordFaultArgs& a);
 FaultResult tieAnsweredNeither(RecordFaultArgs& a);  // record_faults_ties.cpp
@@ -158,6 +160,7 @@ std::string queryFrontFaceInverted(Case& c, ModelOptions& o);
 std::string queryObjectRayWorld(Case& c, ModelOptions& o);
 std::string wideLaunchTruncated(Case& c, ModelOptions& o);
 std::string launchIdXWrapped(Case& c, ModelOptions& o);
+std::string addressWritesLost(Case& c, ModelOptions& o);
 std::string specializationIgnored(Case& c, ModelOptions& o);
 std::string emptyGeometryRenumbered(Case& c, ModelOptions& o);
 std::string buildCounts16Bit(Case& c, ModelOptions& o);

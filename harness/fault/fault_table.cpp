@@ -48,6 +48,12 @@ std::vector<FaultImpl> recordEdits() {
        "a 3D launch runs only its first z layer: raygen never runs for z >= 1", launchDepthLost},
       {"zero-launch-runs", K::RecordEdit,
        "a launch with a zero dimension runs raygen once (its counter counts 1)", zeroLaunchRuns},
+      {"launch-row-repeated", K::RecordEdit,
+       "a launch of ids all alike (rays.same, counters only) runs its last row of ids twice",
+       launchRowRepeated},
+      {"launch-row-lost", K::RecordEdit,
+       "a launch of ids all alike (rays.same, counters only) never runs its last row of ids",
+       launchRowLost},
       {"library-handle-differs", K::RecordEdit,
        "a group handle read from a pipeline library differs from its handle in the linked "
        "pipeline",
@@ -362,6 +368,10 @@ std::vector<FaultImpl> codeAndLaunchMutations() {
       {"wide-launch-truncated", K::CaseMutation,
        "a launch wider than 65536 ids in x runs raygen only for x below 65536", nullptr,
        wideLaunchTruncated},
+      {"address-writes-lost", K::CaseMutation,
+       "with an empty pipeline layout, what the stages other than raygen write through device "
+       "addresses is lost",
+       nullptr, addressWritesLost},
       {"launch-id-x-wrapped", K::CaseMutation,
        "gl_LaunchIDEXT.x reads modulo 65536 in every stage (a launch wider than that repeats "
        "the first ids)",

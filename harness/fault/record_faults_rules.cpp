@@ -201,6 +201,41 @@ FaultResult zeroLaunchRuns(RecordFaultArgs& a) {
   return {true, "the zero-sized launch ran raygen once: counter '" + counter + "' + 1"};
 }
 
+namespace {
+
+// R-LAUNCH-3D: a launch of ids all alike (rays.same, and no per-ray record
+// to tell them apart) whose last row of ids (y = height - 1, each z) runs
+// `times` more times (1: twice, -1: never): each counter a multiple of the
+// ids moves by that row's share of it.
+FaultResult lastRowRuns(RecordFaultArgs& a, int64_t times) {
+  const Rays& rays = a.c.rays;
+  const uint64_t ids = rays.launchRays();
+  const std::array<uint32_t, 3> size = rays.launchSize();
+  if (!rays.same || !a.c.outputs.per_ray.empty() || ids == 0 || size[1] < 2)
+    return notApplicable("not a rays.same launch of counters only with rows to tell apart");
+  const uint64_t row = uint64_t{size[0]} * size[2];
+  std::string moved;
+  for (auto& [name, count] : a.dev.w.counters) {
+    if (count == 0 || count % ids != 0) continue;
+    count = static_cast<uint64_t>(static_cast<int64_t>(count) +
+                                  times * static_cast<int64_t>(count / ids * row));
+    moved += (moved.empty() ? "" : ", ") + name;
+  }
+  if (moved.empty()) return notApplicable("no counter counts every id alike");
+  return {true, std::string("the last row of ") + std::to_string(row) + " ids ran " +
+                    (times > 0 ? "twice" : "never") + ": counters " + moved + " moved"};
+}
+
+}  // namespace
+
+FaultResult launchRowRepeated(RecordFaultArgs& a) {
+  return lastRowRuns(a, 1);
+}
+
+FaultResult launchRowLost(RecordFaultArgs& a) {
+  return lastRowRuns(a, -1);
+}
+
 FaultResult builtinWrong(RecordFaultArgs& a) {
   const std::vector<FieldWrite> writes = fieldWrites(a.c);
   for (const std::string& field : a.c.outputs.per_ray) {

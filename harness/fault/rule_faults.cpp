@@ -130,14 +130,16 @@ std::vector<RuleFaults> pipelineRules() {
       {"R-TLAS-ARRAY", {"tlas-ignored", "tlas-index-off-by-one"}, {}},
       {"R-DEGEN", {"degenerate-hit"}, {}},
       {"R-LIBRARY", {"library-groups-lost", "library-handle-differs"}, {}},
-      {"R-DEFERRED", {"deferred-groups-lost"}, {}, fail, "", {"deferred-handle-early"}},
       {"R-RAYGEN-REGION", {"raygen-group-ignored"}, {}},
       {"R-CULLMASK-BUILTIN", {"cull-mask-builtin-default"}, {}},
       {"R-NULL-SHADERS", {"no-null-shaders-dropped"}, {}},
       {"R-INDIRECT", {"indirect-launch-short"}, {}},
       {"R-STACK", {"stack-size-ignored"}, {}},
       {"R-POSITION-FETCH", {"position-fetch-world-space"}, {}},
-      {"R-LAUNCH-3D", {"launch-depth-lost", "zero-launch-runs", "wide-launch-truncated"}, {}},
+      {"R-LAUNCH-3D",
+       {"launch-depth-lost", "zero-launch-runs", "wide-launch-truncated", "launch-row-repeated",
+        "launch-row-lost"},
+       {}},
       {"R-LIVE-STATE", {"locals-lost-across-calls", "sized-locals-halved-across-calls"}, {}},
       {"R-CONTROL-FLOW",
        {"loop-trip-off-by-one", "function-ignore-lost", "specialization-ignored",
@@ -172,12 +174,23 @@ std::vector<RuleFaults> pipelineRules() {
   };
 }
 
+// The rules of how a pipeline is created.
+std::vector<RuleFaults> creationRules() {
+  const Status fail = Status::Fail;
+  return {
+      {"R-DEFERRED", {"deferred-groups-lost"}, {}, fail, "", {"deferred-handle-early"}},
+      // pipeline.layout: empty: the CTS's empty_pipeline_layout asks only that
+      // the pipeline is made (pipeline-refused); rayspec also runs it.
+      {"R-EMPTY-LAYOUT", {"address-writes-lost"}, {}, fail, "", {"pipeline-refused"}},
+  };
+}
+
 }  // namespace
 
 const std::vector<RuleFaults>& ruleFaults() {
   static const std::vector<RuleFaults> table = [] {
     std::vector<RuleFaults> all = traversalRules();
-    for (auto part : {pipelineRules, structureRules})
+    for (auto part : {pipelineRules, creationRules, structureRules})
       for (RuleFaults& r : part()) all.push_back(std::move(r));
     return all;
   }();

@@ -20,6 +20,15 @@ constexpr uint32_t kBindingScene = 4;      // readonly buffer: scene data for in
 constexpr uint32_t kBindingSbtTables = 5;  // readonly buffer: the SBT as tables (ray query forms)
 constexpr uint32_t kBindingFirstImage = 6;  // one storage image per plan.images entry
 
+// pipeline.layout: empty (shaders/common.glsl RS_EMPTY_LAYOUT): no set at
+// all; the buffer of binding b is reached through its device address, the
+// uvec2 at word pair b of the address table (the TLAS's from
+// vkGetAccelerationStructureDeviceAddressKHR), and the table's own address
+// is the uint specialization constants of these ids (low word, high word),
+// which every shader of the pipeline is given (vulkan/address_table.h).
+constexpr uint32_t kTableLowConstantId = 1000;
+constexpr uint32_t kTableHighConstantId = 1001;
+
 // Ray layout, in 32-bit words: origin xyz, tmin, direction xyz, tmax, flags,
 // cull_mask, sbt_offset, sbt_stride, miss, 3 words padding.
 constexpr uint32_t kRayWords = 16;

@@ -52,6 +52,11 @@ void defines(const StageContext& ctx, GlslWriter& out) {
   out.line(define("RS_BINDING_COUNTERS", kBindingCounters));
   out.line(define("RS_BINDING_SCENE", kBindingScene));
   out.line(define("RS_BINDING_SBT_TABLES", kBindingSbtTables));
+  if (ctx.c.pipeline.empty_layout) {
+    out.line("#define RS_EMPTY_LAYOUT");
+    out.line(define("RS_TABLE_LO_ID", kTableLowConstantId));
+    out.line(define("RS_TABLE_HI_ID", kTableHighConstantId));
+  }
   out.line(define("RS_RAY_WORDS", kRayWords));
   if (!ctx.compute) {  // a compute shader's: glsl/emit_compute.h
     out.line("#define RS_LAUNCH_ID gl_LaunchIDEXT");
@@ -215,7 +220,10 @@ void extensions(const StageContext& ctx, bool ray_query, GlslWriter& out) {
   if (ctx.c.scene.tlasCount() > 1) out.line("#extension GL_EXT_nonuniform_qualifier : require");
   // The records live behind a buffer reference (shaders/common.glsl): a large
   // launch's records may exceed maxStorageBufferRange (128 MiB on lavapipe).
-  if (ctx.plan.records) out.line("#extension GL_EXT_buffer_reference : require");
+  // pipeline.layout: empty reaches every buffer so (RS_EMPTY_LAYOUT).
+  if (ctx.plan.records || ctx.c.pipeline.empty_layout)
+    out.line("#extension GL_EXT_buffer_reference : require");
+  if (ctx.c.pipeline.empty_layout) out.line("#extension GL_EXT_buffer_reference_uvec2 : require");
   if (u.cull_mask) out.line("#extension GL_EXT_ray_cull_mask : require");
   if (u.position_fetch || u.query_position_fetch)
     out.line("#extension GL_EXT_spirv_intrinsics : require");

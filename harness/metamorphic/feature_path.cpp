@@ -24,6 +24,7 @@ Result<void> intoLibrary(Case& c) {
   if (!p.libraries.empty()) {
     return errorMessage("the case builds its own pipeline libraries");
   }
+  if (p.empty_layout) return errorMessage("its pipeline layout is empty (pipeline.layout)");
   PipelineLibrary lib;
   for (uint32_t i = 0; i < p.miss.size(); ++i) lib.miss.push_back(i);
   for (uint32_t i = 0; i < p.hit_groups.size(); ++i) lib.hit_groups.push_back(i);

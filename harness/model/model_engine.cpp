@@ -19,6 +19,7 @@
 #include "model/model_machine.h"
 #include "model/model_program.h"
 #include "model/model_scene.h"
+#include "model/uniform_launch.h"
 #include "results/record_layout.h"
 
 namespace rayspec {
@@ -317,6 +318,31 @@ Results emptyResults(const Case& c, const Plan& plan, const ModelOptions& opt) {
   return r;
 }
 
+// Every id of the launch traced, into r cleared first of what a one-id run
+// of a uniform launch gathered that could not stand for all (its ray is
+// ambiguous or undefined, which the judge reads per ray).
+void traceWholeLaunch(const ModelShared& shared, size_t n, const ModelOptions& opt,
+                      uint32_t* records, Results& r,
+                      const std::vector<const RecordField*>& image_fields) {
+  if (n > kMaxTracedLaunchIds) {
+    r.setStatus(SideStatus::Crash,
+                "model: a launch of " + std::to_string(n) +
+                    " ids: above 2^24 the model traces one id for all, which needs every id "
+                    "alike and its ray neither ambiguous nor undefined (model/uniform_launch.h)");
+    return;
+  }
+  for (auto& [name, count] : r.counters) count = 0;
+  r.counter_floors.clear();
+  r.ambiguous.clear();
+  r.t_bounds.clear();
+  r.object_origin_bounds.clear();
+  r.position_bounds.clear();
+  r.undefined.clear();
+  unsigned threads = opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+  threads = static_cast<unsigned>(std::min<size_t>(threads, std::max<size_t>(1, n / 64)));
+  gatherMachines(traceInThreads(shared, n, threads, records, r, image_fields), *shared.plan, r);
+}
+
 }  // namespace
 
 bool modelInThisBuild() {
@@ -365,10 +391,13 @@ Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt) {
         plan.records ? prepareImages(r, plan) : std::vector<const RecordField*>{};
     for (Image& img : r.images)
       adviseHugePages(img.texels.data(), img.texels.size() * sizeof(uint32_t));
-    unsigned threads =
-        opt.threads ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
-    threads = static_cast<unsigned>(std::min<size_t>(threads, std::max<size_t>(1, n / 64)));
-    gatherMachines(traceInThreads(shared, n, threads, records, r, image_fields), plan, r);
+    // Every id alike: one traced for all where its rays stand for every id's.
+    const bool uniform = n > 1 && launchUniform(c, plan, programs);
+    if (uniform) gatherMachines(traceInThreads(shared, 1, 1, records, r, image_fields), plan, r);
+    if (!uniform || (r.ok() && !oneIdStandsForAll(r)))
+      traceWholeLaunch(shared, n, opt, records, r, image_fields);
+    else if (r.ok())
+      scaleToLaunch(r, n);
   } catch (const std::exception& e) {
     r.setStatus(SideStatus::Crash, std::string("model: ") + e.what());
     r.records.clear();  // chunks no worker reached were never zeroed

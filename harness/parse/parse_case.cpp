@@ -153,6 +153,8 @@ void parseTop(YamlReader& r, const YAML::Node& root, const std::vector<std::stri
   checkRayQueryForm(r, c, pipeline);
   checkRecordReads(r, c);
   checkDataWords(r, c);
+  checkWideLaunch(r, c);
+  checkEmptyLayout(r, c, pipeline);
   if (r.errorCount() == 0) checkTraceConstants(r, c);
   judgeStaticUndefined(r, c);
 }

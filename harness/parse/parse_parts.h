@@ -109,5 +109,15 @@ void checkTraceConstants(YamlReader& r, const Case& c);
 // names, and every word a program reads or writes, within the type it has
 // (pipeline.payloads, pipeline.callable_data; check_data_words.cpp).
 void checkDataWords(YamlReader& r, const Case& c);
+// A rays.same launch above kMaxTracedLaunchIds ids: no program may read
+// gl_LaunchIDEXT (launch_id_x, _y, _z), so that the model may trace one id
+// for all (model/uniform_launch.h); an error at rays.launch otherwise.
+void checkWideLaunch(YamlReader& r, const Case& c);
+
+// pipeline.layout: empty with what needs set 0 itself: an image (a storage
+// image has no address), several top levels, pipeline libraries or
+// pipeline.tlas_function: an error at pipeline.layout each
+// (check_empty_layout.cpp; the ray query forms refuse it themselves).
+void checkEmptyLayout(YamlReader& r, const Case& c, const YAML::Node& pipeline);
 
 }  // namespace rayspec

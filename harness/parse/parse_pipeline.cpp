@@ -285,6 +285,18 @@ void parseSbtRegions(YamlReader& r, const YAML::Node& sbt, bool sbt_ok, Pipeline
   }
 }
 
+// pipeline.layout: sets (the default: descriptor set 0) or empty (no set, no
+// push constant: R-EMPTY-LAYOUT, checkEmptyLayout).
+void parseLayout(YamlReader& r, const YAML::Node& v, Pipeline& p) {
+  const std::optional<std::string> name = r.string(v, "pipeline.layout");
+  if (!name) return;
+  if (*name == "empty" || *name == "sets") {
+    p.empty_layout = *name == "empty";
+    return;
+  }
+  r.error(v, "pipeline.layout", "unknown layout '" + *name + "' (sets, empty)");
+}
+
 }  // namespace
 
 void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
@@ -299,12 +311,13 @@ void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& p) {
                     "raygen_data",   "miss",          "hit_groups",     "callables", "sbt",
                     "libraries",     "payloads",      "callable_depth", "functions", "constants",
                     "specialize",    "hit_attribute", "callable_data",  "traces",    "deferred",
-                    "tlas_function"}))
+                    "tlas_function", "layout"}))
     return;
   parseDepthsAndFlags(r, n, p);
   if (auto v = YamlReader::get(n, "deferred"); v.IsDefined()) parseDeferred(r, v, p);
   if (auto v = YamlReader::get(n, "tlas_function"); v.IsDefined())
     p.tlas_function = parseTrueFalse(r, v, "pipeline.tlas_function").value_or(false);
+  if (auto v = YamlReader::get(n, "layout"); v.IsDefined()) parseLayout(r, v, p);
   if (auto v = YamlReader::get(n, "raygen"); v.IsDefined()) {
     p.raygen.clear();
     parseProgram(r, v, "pipeline.raygen", p.raygen);

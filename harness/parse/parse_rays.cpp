@@ -231,8 +231,9 @@ void parseTraceCommand(YamlReader& r, const YAML::Node& v, Rays& rays) {
 // rays.launch: [width, height, depth], the launch the trace command gets
 // (R-LAUNCH-3D). Its size must equal the number of rays the form gave
 // (taken in launch order), unless a dimension is 0: such a launch runs
-// nothing, and the case keeps no rays. With rays.same any size up to 2^24
-// rays goes: every id traces the one ray.
+// nothing, and the case keeps no rays. With rays.same any size up to 2^30
+// ids goes (above 2^24 only where no program reads the launch id:
+// checkWideLaunch): every id traces the one ray.
 void parseLaunch(YamlReader& r, const YAML::Node& n, Rays& rays) {
   const std::string field = "rays.launch";
   if (!n.IsSequence() || n.size() != 3) {
@@ -246,7 +247,11 @@ void parseLaunch(YamlReader& r, const YAML::Node& n, Rays& rays) {
     launch[k] = *v;
   }
   const uint64_t count = uint64_t(launch[0]) * launch[1] * launch[2];
-  if (rays.same && count > (1u << 24)) {
+  if (rays.same && count > kMaxSameLaunchIds) {
+    r.error(n, field, "at most 2^30 ids in a rays.same launch");
+    return;
+  }
+  if (!rays.same && count > kMaxTracedLaunchIds) {
     r.error(n, field, "at most 2^24 rays in a launch");
     return;
   }

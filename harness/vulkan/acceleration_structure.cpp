@@ -216,12 +216,16 @@ VkAccelerationStructureBuildGeometryInfoKHR buildInfo(
   return info;
 }
 
+}  // namespace
+
 VkDeviceAddress structureAddress(const VulkanContext& ctx, VkAccelerationStructureKHR as) {
   VkAccelerationStructureDeviceAddressInfoKHR ai{
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_DEVICE_ADDRESS_INFO_KHR};
   ai.accelerationStructure = as;
   return ctx.fn.getAccelerationStructureDeviceAddress(ctx.device, &ai);
 }
+
+namespace {
 
 std::vector<bool> reachedBlases(const Scene& scene) {
   std::vector<bool> used(scene.blases.size(), false);

@@ -16,6 +16,9 @@ namespace rayspec {
 // The VkFormat of a vertex format (R-VERTEX-FORMAT).
 VkFormat vkVertexFormat(VertexFormat f);
 
+// The device address of an acceleration structure (vkGetAccelerationStructureDeviceAddressKHR).
+VkDeviceAddress structureAddress(const VulkanContext& ctx, VkAccelerationStructureKHR as);
+
 // Builds the scene and returns its top levels, ready for ray tracing
 // shaders: one BLAS build per case Blas that some instance references (all
 // in one vkCmdBuildAccelerationStructuresKHR), a barrier, the TLAS builds (an

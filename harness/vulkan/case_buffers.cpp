@@ -10,7 +10,10 @@
 namespace rayspec {
 namespace {
 
-constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+// With their device address: pipeline.layout: empty reaches them so
+// (vulkan/address_table.h).
+constexpr VkBufferUsageFlags kStorage =
+    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
 
 bool isFloatField(const std::string& field) {
   const RecordField* f = findRecordField(field);
@@ -64,9 +67,7 @@ Result<CaseBuffers> createCaseBuffers(const VulkanContext& ctx, const Case& c, c
   if (bindings.count(kBindingRecords)) {
     uint64_t bytes = rays * recordWords() * 4;
     // Reached by device address (shaders/common.glsl): no maxStorageBufferRange limit.
-    RAYSPEC_TRY(out.records,
-                createBuffer(ctx, bytes, kStorage | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-                             MemoryUse::Host, cleanup));
+    RAYSPEC_TRY(out.records, createBuffer(ctx, bytes, kStorage, MemoryUse::Host, cleanup));
     std::memset(out.records.mapped, 0, bytes);
     const uint64_t address = out.records.address;
     RAYSPEC_TRY(out.records_ref,

@@ -167,8 +167,8 @@ Result<CompiledPipeline> compilePipeline(const GeneratedPipeline& generated, Ste
 Result<VkPipelineLayout> createPipelineLayout(const VulkanContext& ctx,
                                               VkDescriptorSetLayout set_layout, Cleanup& cleanup) {
   VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  info.setLayoutCount = 1;
-  info.pSetLayouts = &set_layout;
+  info.setLayoutCount = set_layout ? 1 : 0;  // none: pipeline.layout: empty
+  info.pSetLayouts = set_layout ? &set_layout : nullptr;
   VkPipelineLayout layout = VK_NULL_HANDLE;
   RAYSPEC_TRY_VOID(vkCheck(vkCreatePipelineLayout(ctx.device, &info, nullptr, &layout),
                            "vkCreatePipelineLayout"));

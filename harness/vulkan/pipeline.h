@@ -48,6 +48,8 @@ Result<CompiledPipeline> compilePipeline(const GeneratedPipeline& generated,
 // Binding numbers (descriptor set 0) the SPIR-V of any stage declares.
 std::set<uint32_t> declaredBindings(const CompiledPipeline& compiled);
 
+// A layout of set_layout as set 0, or of no set at all for VK_NULL_HANDLE
+// (pipeline.layout: empty); no push constant either way.
 Result<VkPipelineLayout> createPipelineLayout(const VulkanContext& ctx,
                                               VkDescriptorSetLayout set_layout, Cleanup& cleanup);
 

@@ -5,6 +5,7 @@
 #include "case/flag_names.h"
 #include "glsl/generate_glsl.h"
 #include "vulkan/acceleration_structure.h"
+#include "vulkan/address_table.h"
 #include "vulkan/case_buffers.h"
 #include "vulkan/commands.h"
 #include "vulkan/descriptors.h"
@@ -92,6 +93,27 @@ Result<void> recordAndSubmit(const VulkanContext& ctx, const Case& c, const Laun
   return submitAndWait(ctx, cmd);
 }
 
+// The pipeline layout: set 0 of the case's items, or with pipeline.layout:
+// empty no set at all, the items' addresses in a table every shader of
+// `compiled` is given (vulkan/address_table.h).
+struct CaseLayout {
+  VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;  // none: pipeline.layout: empty
+  VkPipelineLayout pipeline_layout = VK_NULL_HANDLE;
+};
+Result<CaseLayout> caseLayout(const VulkanContext& ctx, const Case& c,
+                              const std::vector<DescriptorItem>& items, CompiledPipeline& compiled,
+                              Cleanup& cleanup) {
+  CaseLayout l;
+  if (c.pipeline.empty_layout) {
+    RAYSPEC_TRY(const VkDeviceAddress table, createAddressTable(ctx, items, cleanup));
+    specializeTableAddress(compiled, table);
+  } else {
+    RAYSPEC_TRY(l.set_layout, createSetLayout(ctx, items, cleanup));
+  }
+  RAYSPEC_TRY(l.pipeline_layout, createPipelineLayout(ctx, l.set_layout, cleanup));
+  return l;
+}
+
 }  // namespace
 
 Result<void> runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results& r) {
@@ -103,7 +125,7 @@ Result<void> runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, 
   StepTimer glsl(r.cost, CostStep::GlslGeneration);
   const GeneratedPipeline generated = generateGlsl(c, plan);
   glsl.stop();
-  RAYSPEC_TRY(const CompiledPipeline compiled, compilePipeline(generated, &r.cost));
+  RAYSPEC_TRY(CompiledPipeline compiled, compilePipeline(generated, &r.cost));
 
   CaseScope scope(ctx.device, r.cost);
   Cleanup& cleanup = scope.cleanup;
@@ -129,16 +151,16 @@ Result<void> runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, 
 
   StepTimer layout_time(r.cost, CostStep::Buffers);
   std::vector<DescriptorItem> items = descriptorItems(buffers, tlases);
-  RAYSPEC_TRY(const VkDescriptorSetLayout set_layout, createSetLayout(ctx, items, cleanup));
-  RAYSPEC_TRY(const VkPipelineLayout pipeline_layout,
-              createPipelineLayout(ctx, set_layout, cleanup));
+  RAYSPEC_TRY(const CaseLayout layout, caseLayout(ctx, c, items, compiled, cleanup));
   layout_time.stop();
-  RAYSPEC_TRY(Launch launch, c.pipeline.from_compute
-                                 ? computeLaunch(ctx, compiled, pipeline_layout, cleanup, r)
-                                 : rayTracingLaunch(ctx, c, compiled, pipeline_layout, cleanup, r));
-  StepTimer set_time(r.cost, CostStep::Buffers);
-  RAYSPEC_TRY(launch.bound.set, createDescriptorSet(ctx, set_layout, items, cleanup));
-  set_time.stop();
+  RAYSPEC_TRY(Launch launch,
+              c.pipeline.from_compute
+                  ? computeLaunch(ctx, compiled, layout.pipeline_layout, cleanup, r)
+                  : rayTracingLaunch(ctx, c, compiled, layout.pipeline_layout, cleanup, r));
+  if (layout.set_layout) {
+    StepTimer set_time(r.cost, CostStep::Buffers);
+    RAYSPEC_TRY(launch.bound.set, createDescriptorSet(ctx, layout.set_layout, items, cleanup));
+  }
 
   RAYSPEC_TRY_VOID(recordAndSubmit(ctx, c, launch, buffers, cleanup, r));
   StepTimer read_time(r.cost, CostStep::ReadBack);

@@ -57,8 +57,9 @@ Result<void> recordTrace(const VulkanContext& ctx, VkCommandBuffer cmd, const Tr
                          const SbtLayout& sbt, VkDeviceAddress sbt_base, const Rays& rays,
                          Cleanup& cleanup) {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, bound.pipeline);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, bound.layout, 0, 1,
-                          &bound.set, 0, nullptr);
+  if (bound.set)  // none: pipeline.layout: empty
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, bound.layout, 0, 1,
+                            &bound.set, 0, nullptr);
   if (bound.stack_size)
     ctx.fn.cmdSetRayTracingPipelineStackSize(cmd, static_cast<uint32_t>(*bound.stack_size));
   VkStridedDeviceAddressRegionKHR raygen = region(sbt_base, sbt.raygen);
