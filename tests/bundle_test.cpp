@@ -47,6 +47,7 @@ Results sampleResults() {
   replay[findRecordField("hit_t")->offset] = std::bit_cast<uint32_t>(2.5f);
   r.ambiguous[0].replays = {{replay, {}},
                             {std::vector<uint32_t>(recordWords(), 7), {{"miss", -1}}}};
+  r.ambiguous[0].from_query = true;
   r.t_bounds.push_back({5, 0.25f});
   r.object_origin_bounds.push_back({3, 0.0625f});
   r.position_bounds.push_back({4, 0.125f});
@@ -79,6 +80,7 @@ TEST(ResultsIo, BundleRoundTripsEveryField) {
   EXPECT_EQ(back.ambiguous[0].candidates[1].primitive, 2u);
   EXPECT_EQ(back.ambiguous[0].shared_triangles.size(), 2u);
   EXPECT_EQ(back.ambiguous[0].replays, r.ambiguous[0].replays);
+  EXPECT_TRUE(back.ambiguous[0].from_query);
   ASSERT_EQ(back.repeat_dependent.size(), 1u);
   EXPECT_EQ(back.repeat_dependent[0].ray, 2u);
   EXPECT_EQ(back.repeat_dependent[0].fields, r.repeat_dependent[0].fields);

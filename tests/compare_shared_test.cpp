@@ -25,6 +25,28 @@ Case oneTraceCase() {
   return c;
 }
 
+// A ray_query whose `after` records `field` (a literal: what it records is
+// of no matter here).
+Stmt queryStmt(const std::string& field) {
+  Stmt record;
+  record.kind = Stmt::Kind::Record;
+  Expr one;
+  one.literal = {1};
+  record.assigns = {{field, one}};
+  Stmt q;
+  q.kind = Stmt::Kind::RayQuery;
+  q.else_ = {record};
+  return q;
+}
+
+// The sample case with raygen tracing once, then running a ray query that
+// records `field` after it.
+Case traceThenQueryCase(const std::string& field) {
+  Case c = oneTraceCase();
+  c.pipeline.raygen.push_back(queryStmt(field));
+  return c;
+}
+
 TEST(TraceShape, OneTraceFromRaygen) {
   Case c = oneTraceCase();
   EXPECT_TRUE(traceShape(c).single_trace);
@@ -34,6 +56,30 @@ TEST(TraceShape, OneTraceFromRaygen) {
   Case skip = oneTraceCase();
   skip.rays.defaults.flags = kRaySkipClosestHit;
   EXPECT_FALSE(traceShape(skip).hit_runs_closest_hit);
+}
+
+// Ray queries count: one that records a hit field may have written the
+// record's after the trace (several traversals), one that records another
+// field not; a query in closest-hit is a query all the same.
+TEST(TraceShape, RayQueriesCount) {
+  const Case value = traceThenQueryCase("value");
+  EXPECT_EQ(traceShape(value).ray_queries, 1u);
+  EXPECT_TRUE(traceShape(value).single_trace);  // a query runs no shader
+  EXPECT_FALSE(traceShape(value).several_traces);
+  EXPECT_TRUE(traceShape(traceThenQueryCase("primitive_id")).several_traces);
+  Case in_hit = oneTraceCase();
+  in_hit.pipeline.hit_groups[0].closest_hit->push_back(queryStmt("hit"));
+  EXPECT_EQ(traceShape(in_hit).ray_queries, 1u);
+  EXPECT_TRUE(traceShape(in_hit).several_traces);
+  // What a query's answer may reach: from the query on, in raygen alone.
+  Case later = traceThenQueryCase("value");
+  Stmt record = queryStmt("value1").else_[0];
+  later.pipeline.raygen.push_back(record);
+  EXPECT_EQ(queryReachedFields(later), (std::set<std::string>{"value", "value1"}));
+  later.pipeline.raygen.push_back(traceStmt());  // a trace after it: its shaders' fields too
+  EXPECT_EQ(queryReachedFields(later), std::nullopt);
+  EXPECT_EQ(queryReachedFields(in_hit), std::nullopt);
+  EXPECT_EQ(queryReachedFields(oneTraceCase()), std::nullopt);
 }
 
 TEST(TraceShape, CountersThatFollowOneStagesRuns) {
@@ -130,6 +176,37 @@ TEST(CompareShared, AnInPlaneRayWithoutReplaysIsHeldToItsOwnTrace) {
   traced.pipeline.miss[0].push_back(traceStmt());  // the miss shader traces a child ray
   const Verdict v = compareResults(traced, samplePlan(traced), child, m);
   EXPECT_FALSE(findingNames(v, Status::Fail, "not one of its legal answers")) << v.headline();
+}
+
+// A ray whose ambiguous traversal is the ray query after raygen's one trace
+// (fuzz/seed-150445 ray 3 and 150663 ray 6 on Mesa 26.2.6: the trace missed,
+// every legal answer of the query hit): the trace's miss is no answer of
+// the query's. Before, the judge read the query's answer from the trace's
+// miss ("missed, and no legal answer is a miss"): the model's own record
+// failed. Every field the query cannot reach is still the model's: a trace
+// that hit there fails, as raygen run twice does; and an ambiguity of the
+// trace itself is still read from the trace's fields.
+TEST(CompareShared, ARayQuerysAmbiguityIsHeldToTheFieldsItCannotReach) {
+  const Case c = traceThenQueryCase("value");
+  Results m = sampleResults("model");  // ray 2: the trace missed
+  RayAmbiguity query{2, AmbiguityReason::Order, {{true, 0, 0, 1, 2.0}}};
+  query.from_query = true;
+  m.ambiguous.push_back(query);
+  const Results legal = sampleResults("vulkan");  // the model's own record
+  const Verdict v = compareResults(c, samplePlan(c), legal, m);
+  EXPECT_EQ(v.status, Status::Pass) << v.headline();
+  Results hit = legal;  // the trace, clear, hit
+  setUint(hit, 2, "hit", 1);
+  EXPECT_TRUE(findingNames(compareResults(c, samplePlan(c), hit, m), Status::Fail,
+                           "writes it neither in its blocks nor after"));
+  Results twice = legal;
+  setUint(twice, 2, "raygen_runs", 2);
+  EXPECT_TRUE(
+      findingNames(compareResults(c, samplePlan(c), twice, m), Status::Fail, "raygen did not run"));
+  Results trace_model = m;  // the trace's own ambiguity: its miss is no legal answer
+  trace_model.ambiguous[0].from_query = false;
+  EXPECT_TRUE(findingNames(compareResults(c, samplePlan(c), legal, trace_model), Status::Fail,
+                           "no legal answer is a miss"));
 }
 
 // The miss counter follows miss runs: only a ray that may hit or miss lets

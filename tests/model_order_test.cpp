@@ -63,6 +63,7 @@ TEST(ModelOrder, TerminatingAnyHitMakesEitherStackedTriangleLegal) {
   EXPECT_EQ(r.ambiguous[0].ray, 0u);
   EXPECT_EQ(r.ambiguous[0].reason, AmbiguityReason::Order);
   EXPECT_STREQ(ruleForAmbiguity(r.ambiguous[0].reason), "R-ORDER-UNSPEC");
+  EXPECT_FALSE(r.ambiguous[0].from_query);  // a trace's
   EXPECT_EQ(legal(r.ambiguous[0]), (std::set<Key>{{0, 0, 0}, {0, 0, 1}}));
   // The model's own order: nearest first; its what-if runs leave no trace.
   EXPECT_EQ(answer(r, 0), (Key{0, 0, 0}));

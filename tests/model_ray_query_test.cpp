@@ -31,6 +31,16 @@ TEST(ModelRayQuery, ConfirmCommitsTheClosestAndGettersReadIt) {
   }
 }
 
+// An ambiguity of a ray query says so (RayAmbiguity::from_query): the
+// judge reads its answer from no trace's fields. tie-two-instances ray 0: a
+// t tie of the query's, in raygen, which traces nothing.
+TEST(ModelRayQuery, AQuerysAmbiguityIsNotedAsTheQuerys) {
+  const Results r = runSuiteCase("ray-query/tie-two-instances", ModelTier::Exact);
+  ASSERT_EQ(r.ambiguous.size(), 1u);
+  EXPECT_EQ(r.ambiguous[0].ray, 0u);
+  EXPECT_TRUE(r.ambiguous[0].from_query);
+}
+
 TEST(ModelRayQuery, GenerateCommitsAtTheEndsOfItsInterval) {
   const Results r = runSuiteCase("ray-query/generate-at-tmin", ModelTier::Exact);
   EXPECT_EQ(column(r, "value", 4), (V{2, 2, 2, 0}));

@@ -305,5 +305,22 @@ TEST(NotPortableMessage, TheCaseErrorHoldsEveryProblemOneALine) {
   EXPECT_EQ(text, notPortableMessage(p.problems[0]) + "\n  " + notPortableMessage(p.problems[1]));
 }
 
+// The model's own answers as a device failing the case (not by a CaseError,
+// which the run gives itself): the check refuses it with that reason, where
+// it let it through before (fuzz/seed-150445 and 150663 on Mesa 26.2.6:
+// `rayspec show` said NOT PORTABLE, `rayspec fuzz` ran and failed them).
+TEST(NotPortableMessage, TheModelFailingItsOwnAnswersRefusesTheCase) {
+  CasePortability p;
+  p.checked = true;
+  p.own_answers = "Fail R-TOFH: numerically ambiguous ray (first-hit) missed (1 rays; first: 6)";
+  p.own_status = Status::Fail;
+  const std::string text = notPortableText(p);
+  EXPECT_NE(text.find("the model's own answers, as a device, do not pass"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find(p.own_answers), std::string::npos) << text;
+  p.own_status = Status::CaseError;  // the run gives it, by its own rule
+  EXPECT_EQ(notPortableText(p), "");
+}
+
 }  // namespace
 }  // namespace rayspec

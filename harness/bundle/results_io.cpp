@@ -186,6 +186,8 @@ void writeRayNotes(const Results& r, json& j) {
                               {"leak_replays", replaysJson(a.leak_replays)}});
   for (size_t k = 0; k < r.ambiguous.size(); ++k)  // written only where not 1
     if (r.ambiguous[k].traces != 1) j["ambiguous"][k]["traces"] = r.ambiguous[k].traces;
+  for (size_t k = 0; k < r.ambiguous.size(); ++k)  // written only where a ray query's
+    if (r.ambiguous[k].from_query) j["ambiguous"][k]["from"] = "ray_query";
   j["t_bounds"] = json::array();
   for (const TBound& b : r.t_bounds) j["t_bounds"].push_back({{"ray", b.ray}, {"bound", b.bound}});
   j["object_origin_bounds"] = json::array();
@@ -493,6 +495,12 @@ Result<void> readRayNotes(const json& j, FieldReader& field, Results& r) {
     RAYSPEC_TRY(a.leak_replays, readReplays(field, ja, r, "leak_replays"));
     if (ja.contains("traces")) {  // absent: 1
       RAYSPEC_TRY(a.traces, field.count<uint32_t>(ja, "ambiguous.traces"));
+    }
+    if (ja.contains("from")) {  // absent: a trace's
+      const std::string from = field(ja, "ambiguous.from").get<std::string>();
+      if (from != "ray_query")
+        return badValue(field.dir, "ambiguous.from: unknown value '" + from + "'");
+      a.from_query = true;
     }
     r.ambiguous.push_back(std::move(a));
   }

@@ -128,7 +128,9 @@ void checkAmbiguousShared(const Case& c, const TraceShape& shape, const RayAmbig
     addWrong(wrongs, "callable_runs", "R-CALLABLE",
              "callables ran other than raygen's calls, which no answer of the trace changes" + why,
              a.ray);
-  if (!shape.single_trace) return;
+  // The rest reads the one trace's answer: of no use where the ambiguous
+  // traversal is a ray query's (its legal answers run no shader).
+  if (!shape.single_trace || a.from_query) return;
   const uint32_t d_miss = fieldWord(d, "miss_runs"), d_chit = fieldWord(d, "closest_hit_runs");
   const uint32_t m_miss = fieldWord(m, "miss_runs"), m_chit = fieldWord(m, "closest_hit_runs");
   const bool miss_legal = std::any_of(a.candidates.begin(), a.candidates.end(),
@@ -162,8 +164,11 @@ void checkAmbiguousShared(const Case& c, const TraceShape& shape, const RayAmbig
                    "miss) writes it alike" +
                    why,
                a.ray);
+  // A ray query's answer too may differ where the trace's is the model's,
+  // and reach any field: then only the trace's own fields are read.
   const bool same_answer =
       (d_chit && m_chit && sameIdentity(d, m)) || (d_miss && m_miss && !d_chit && !m_chit);
+  if (shape.ray_queries > 0) return;
   if (same_answer && answerDecidesRecord(c)) {
     for (const RecordField* f : fields)
       if (!sameField(*f, d, m, bounds))

@@ -111,12 +111,14 @@ struct FindingBuilder {
 };
 
 // What every legal answer of an ambiguous ray shares (trace_shape.h), each
-// broken rule into `wrongs` by rule: raygen ran once; with one trace per ray,
-// one of miss and closest-hit (exactly one where each answer runs one), never
-// a miss where no answer is one, the identity fields closest-hit records in
-// every program never left unwritten; the model's own answer with the model's
-// record (its fields, where no any-hit or intersection program writes
-// anything); a hit through an edge, vertex or t tie at the model's t.
+// broken rule into `wrongs` by rule: raygen ran once; with one trace per ray
+// whose answer is the ambiguous one (not a ray query's), one of miss and
+// closest-hit (exactly one where each answer runs one), never a miss where no
+// answer is one, the identity fields closest-hit records in every program
+// never left unwritten; and where no ray query may write the record too, the
+// model's own answer with the model's record (its fields, where no any-hit or
+// intersection program writes anything); a hit through an edge, vertex or t
+// tie at the model's t.
 // `fields`: the record fields compared on clear rays.
 void checkAmbiguousShared(const Case& c, const TraceShape& shape, const RayAmbiguity& a,
                           const uint32_t* d, const uint32_t* m,

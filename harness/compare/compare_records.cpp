@@ -1,6 +1,8 @@
 #include <algorithm>
 #include <bit>
 #include <map>
+#include <optional>
+#include <set>
 
 #include "compare/compare_parts.h"
 #include "compare/finding_rules.h"
@@ -114,11 +116,14 @@ bool hasReplays(const RayAmbiguity& a) {
 
 // Whether checkAmbiguous cannot tell the ambiguous trace's answer from the
 // record: no replays (a legal hit at no one t drops them, legal_replays.cpp)
-// where the ray makes more than one trace, its hit fields maybe a later
-// trace's (a miss shader's child hit: fuzz/seed-120385 ray 5 on NVIDIA 580).
+// where the ray makes more than one traversal, its hit fields maybe a later
+// trace's (a miss shader's child hit: fuzz/seed-120385 ray 5 on NVIDIA 580)
+// or query's; or where the ambiguous traversal is a ray query's, whose
+// answer no trace's hit, miss and run fields show (fuzz/seed-150445 and
+// 150663 on Mesa 26.2.6: the trace missed, the query's legal answers hit).
 // Held to what its answers share (checkAmbiguousShared).
 bool identityUnknown(const RayAmbiguity& a, const TraceShape& shape) {
-  return !hasReplays(a) && shape.several_traces;
+  return !hasReplays(a) && (a.from_query || shape.several_traces);
 }
 
 // The rule a record that is none of the replays breaks (finding_rules.h),
@@ -151,6 +156,65 @@ void addUnreplayed(const Case& c, const RayAmbiguity& a, const RecordField& f,
   b.addRay(a.ray);
 }
 
+// A ray whose ambiguous traversal is a ray query (RayAmbiguity::from_query):
+// every compared field its answer cannot reach (queryReachedFields) is the
+// model's, as on a clear ray.
+void checkQueryUnreached(const Case& c, const std::set<std::string>& reached, const RayAmbiguity& a,
+                         const uint32_t* d, const uint32_t* m,
+                         const std::vector<const RecordField*>& fields, const RayBounds& bounds,
+                         std::map<std::string, FindingBuilder>& wrongs) {
+  for (const RecordField* f : fields) {
+    if (reached.count(f->name) || sameField(*f, d, m, bounds)) continue;
+    FindingBuilder& b = wrongs[std::string("query unreached ") + f->name];
+    if (b.finding.rule.empty())
+      b.finding = findingOf(Status::Fail, ruleForField(f->name, c.rules),
+                            std::string("per-ray field '") + f->name +
+                                "' differs from the model on a ray whose ambiguous ray query (" +
+                                ambiguityReasonName(a.reason) +
+                                ") writes it neither in its blocks nor after");
+    b.addRay(a.ray);
+  }
+}
+
+// What an ambiguous ray is held to, the same for every ray of the case.
+struct AmbiguousJudge {
+  const Case& c;
+  const TraceShape shape;
+  const std::optional<std::set<std::string>> query_reached;
+  const std::vector<const RecordField*>& fields;
+  std::map<std::string, FindingBuilder>& wrongs;
+  FindingBuilder& leak;
+  FindingBuilder& passed;
+};
+
+// Held to its legal answers as a whole where the model replayed them: a
+// record that is one of them is legal; one that is none fails, unless it is
+// a leak or an answer outside the legal set that no rule forbids (then held
+// to what every answer shares, as without replays). A ray query's answer is
+// read from no trace's fields: without replays, the fields it cannot reach
+// are the model's.
+void judgeAmbiguousRay(const AmbiguousJudge& j, const RayAmbiguity& a, const uint32_t* d,
+                       const uint32_t* m, const RayBounds& bounds) {
+  const RecordField* unreplayed =
+      hasReplays(a) ? fieldNoReplayLeaves(a, d, j.fields, bounds) : nullptr;
+  if (hasReplays(a) && !unreplayed) return;
+  const bool leak_replayed = leakReplayMatches(a, d, j.fields, bounds);
+  const DeviceAnswer answer =
+      identityUnknown(a, j.shape)
+          ? DeviceAnswer::Legal
+          : checkAmbiguous(j.c, a, d, leak_replayed, j.wrongs, j.leak, j.passed);
+  if (answer == DeviceAnswer::Finding) return;
+  // A record only a leak leaves, where the record names no hit to tell it
+  // from a legal one: passed between (R-WATERTIGHT, a "should").
+  if (unreplayed && answer == DeviceAnswer::Legal) {
+    leak_replayed ? j.passed.addRay(a.ray) : addUnreplayed(j.c, a, *unreplayed, j.wrongs);
+    return;
+  }
+  checkAmbiguousShared(j.c, j.shape, a, d, m, j.fields, bounds, j.wrongs);
+  if (a.from_query && j.query_reached)
+    checkQueryUnreached(j.c, *j.query_reached, a, d, m, j.fields, bounds, j.wrongs);
+}
+
 }  // namespace
 
 void compareRecords(const Case& c, const Plan& plan, const Results& device, const Results& model,
@@ -171,13 +235,13 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
   std::map<uint32_t, FieldMask> repeat;
   for (const RepeatDependentRay& d : model.repeat_dependent) repeat[d.ray] = d.fields;
 
-  const TraceShape shape = traceShape(c);
   std::map<std::string, FindingBuilder> mismatches;
   std::map<std::string, FindingBuilder> wrongs;
   FindingBuilder leak =
       watertightWarning("ray on a shared edge or vertex leaked (missed every candidate)");
   FindingBuilder passed = watertightWarning(
       "ray on a shared edge or vertex passed between its triangles and hit what lies behind them");
+  const AmbiguousJudge judge{c, traceShape(c), queryReachedFields(c), fields, wrongs, leak, passed};
 
   for (size_t i = 0; i < rays; ++i) {
     const uint32_t* d = &device.records[i * words];
@@ -190,26 +254,8 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
     const auto repeated = repeat.find(ray);
     const FieldMask repeat_fields = repeated == repeat.end() ? 0 : repeated->second;
     if (const auto it = ambiguous.find(ray); it != ambiguous.end()) {
-      if (repeat_fields) continue;  // its legal answers and what repetition changes: not judged
-      // Held to its legal answers as a whole where the model replayed them:
-      // a record that is one of them is legal; one that is none fails,
-      // unless it is a leak or an answer outside the legal set that no rule
-      // forbids (then held to what every answer shares, as without replays).
-      const RayAmbiguity& a = *it->second;
-      const RecordField* unreplayed =
-          hasReplays(a) ? fieldNoReplayLeaves(a, d, fields, bounds) : nullptr;
-      if (hasReplays(a) && !unreplayed) continue;
-      const bool leak_replayed = leakReplayMatches(a, d, fields, bounds);
-      const DeviceAnswer answer =
-          identityUnknown(a, shape) ? DeviceAnswer::Legal
-                                    : checkAmbiguous(c, a, d, leak_replayed, wrongs, leak, passed);
-      if (answer == DeviceAnswer::Finding) continue;
-      // A record only a leak leaves, where the record names no hit to tell
-      // it from a legal one: passed between (R-WATERTIGHT, a "should").
-      if (unreplayed && answer == DeviceAnswer::Legal)
-        leak_replayed ? passed.addRay(ray) : addUnreplayed(c, a, *unreplayed, wrongs);
-      else
-        checkAmbiguousShared(c, shape, a, d, m, fields, bounds, wrongs);
+      // Its legal answers and what repetition changes: not judged.
+      if (!repeat_fields) judgeAmbiguousRay(judge, *it->second, d, m, bounds);
       continue;
     }
     for (const RecordField* f : fields) {

@@ -1,5 +1,6 @@
 #include "compare/trace_shape.h"
 
+#include <algorithm>
 #include <functional>
 #include <set>
 
@@ -11,6 +12,31 @@ namespace {
 size_t countKind(const Program& p, Stmt::Kind kind) {
   size_t n = 0;
   walkStatements(p, [&](const Stmt& s) { n += s.kind == kind; });
+  return n;
+}
+
+// A ray_queries statement holds its RayQuery statements: each counts once.
+size_t countQueries(const Program& p) {
+  return countKind(p, Stmt::Kind::RayQuery);
+}
+
+// The ray queries of p whose blocks or `after` record a field that shows a
+// trace's answer (the hit flag, the hit's identity: checkAmbiguous reads them).
+size_t queriesWritingHitFields(const Program& p) {
+  auto writes = [](const Program& body) {
+    bool any = false;
+    walkStatements(body, [&](const Stmt& s) {
+      if (s.kind == Stmt::Kind::Record)
+        for (const auto& [field, value] : s.assigns)
+          any = any || field == "hit" || field == "primitive_id" || field == "instance_id" ||
+                field == "geometry_index";
+    });
+    return any;
+  };
+  size_t n = 0;
+  walkStatements(p, [&](const Stmt& s) {
+    n += s.kind == Stmt::Kind::RayQuery && (writes(s.then_) || writes(s.else_));
+  });
   return n;
 }
 
@@ -96,8 +122,14 @@ TraceShape traceShape(const Case& c) {
                    [&](const Program& p) { other_traces += countKind(p, Stmt::Kind::Trace); });
   t.single_trace =
       top_traces == 1 && countKind(pipe.raygen, Stmt::Kind::Trace) == 1 && other_traces == 0;
-  t.several_traces =
-      !t.single_trace && countKind(pipe.raygen, Stmt::Kind::Trace) + other_traces > 0;
+  size_t hit_queries = queriesWritingHitFields(pipe.raygen);
+  t.ray_queries = countQueries(pipe.raygen);
+  forEachNonRaygen(pipe, [&](const Program& p) {
+    t.ray_queries += countQueries(p);
+    hit_queries += queriesWritingHitFields(p);
+  });
+  t.several_traces = (!t.single_trace || hit_queries > 0) &&
+                     countKind(pipe.raygen, Stmt::Kind::Trace) + other_traces + hit_queries > 0;
   size_t top_calls = 0, other_calls = 0;
   for (const Stmt& s : pipe.raygen) top_calls += s.kind == Stmt::Kind::Call;
   forEachNonRaygen(pipe, [&](const Program& p) { other_calls += countKind(p, Stmt::Kind::Call); });
@@ -110,6 +142,29 @@ TraceShape traceShape(const Case& c) {
   t.miss_runs_miss = !pipe.miss.empty();
   for (const SbtRecord& r : pipe.sbt_miss) t.miss_runs_miss = t.miss_runs_miss && r.group;
   return t;
+}
+
+std::optional<std::set<std::string>> queryReachedFields(const Case& c) {
+  size_t elsewhere = 0;
+  forEachNonRaygen(c.pipeline, [&](const Program& p) { elsewhere += countQueries(p); });
+  const Program& raygen = c.pipeline.raygen;
+  const auto first = std::find_if(raygen.begin(), raygen.end(), [](const Stmt& s) {
+    return s.kind == Stmt::Kind::RayQuery || s.kind == Stmt::Kind::RayQueries;
+  });
+  // The first query in raygen's order at its top level: none before it, nested.
+  size_t before = 0;
+  for (auto it = raygen.begin(); it != first; ++it) before += countQueries({*it});
+  if (elsewhere || first == raygen.end() || before) return std::nullopt;
+  std::set<std::string> reached;
+  bool beyond = false;  // a trace or callable after it
+  for (auto it = first; it != raygen.end(); ++it)
+    walkStatements({*it}, [&](const Stmt& s) {
+      beyond = beyond || s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::Call;
+      if (s.kind == Stmt::Kind::Record)
+        for (const auto& [field, value] : s.assigns) reached.insert(field);
+    });
+  if (beyond) return std::nullopt;
+  return reached;
 }
 
 std::map<std::string, CounterSource> counterSources(const Case& c) {

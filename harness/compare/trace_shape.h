@@ -5,6 +5,8 @@
 #pragma once
 
 #include <map>
+#include <optional>
+#include <set>
 #include <string>
 
 #include "case/case.h"
@@ -14,10 +16,15 @@ namespace rayspec {
 
 struct TraceShape {
   // raygen traces exactly once, at its top level, and no other stage traces
-  // (or calls): a launch ray makes one trace, whatever it hits
+  // (or calls): a launch ray makes one trace, whatever it hits (ray queries
+  // aside: they run no shader)
   bool single_trace = false;
-  // a launch ray may make more than one trace: not single_trace, and some
-  // stage traces at all (a later trace may write the record's hit fields)
+  // ray_query statements in every program (each query of a ray_queries one)
+  size_t ray_queries = 0;
+  // a launch ray may make more than one traversal that writes the record's
+  // hit fields (a later one may have written them): not single_trace, or a
+  // ray query that records the hit flag or a hit's identity; and some stage
+  // traces, or some such query, at all
   bool several_traces = false;
   // each hit of that trace runs exactly one closest-hit: every hit group has
   // one, no hit record is all zero, no ray or trace may skip closest-hit
@@ -29,6 +36,15 @@ struct TraceShape {
   bool calls_fixed = false;
 };
 TraceShape traceShape(const Case& c);
+
+// The record fields an ambiguous ray query's answer may reach: every field
+// recorded from raygen's first ray query on (its blocks, its `after` and
+// every statement after it), where that query stands at raygen's top level,
+// no trace or callable call follows it and no other program holds a query.
+// Every other field is written before the query or by the shaders of a
+// trace before it, alike for each of the query's answers. nullopt where
+// the answer may reach further.
+std::optional<std::set<std::string>> queryReachedFields(const Case& c);
 
 // A counter every run of one stage counts the same number of times: counted
 // only by `count` statements at the top level of that stage's programs (the

@@ -22,6 +22,7 @@ class TraceClassifier {
                   const Payload& payload_in)
       : m_(m), tr_(tr), cands_(cands), payload_in_(payload_in), scene_(*m.sh_.scene) {
     amb_.ray = m.st_.index;
+    amb_.from_query = tr.query != nullptr;
   }
 
   // Triangles near an edge, vertex or interval end, and grazed boxes, up to

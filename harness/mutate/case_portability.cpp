@@ -68,15 +68,23 @@ CasePortability checkPortability(const Case& c, unsigned threads, Results* model
   // fault fails every device alike.
   Results base = perfectDevice(c, model);
   base.backend = "vulkan";
-  if (const Verdict own = compareResults(c, plan, base, model); isFailing(own.status))
+  if (const Verdict own = compareResults(c, plan, base, model); isFailing(own.status)) {
     out.own_answers = own.headline();
-  else
+    out.own_status = own.status;
+  } else {
     judgeDevices(c, plan, model, base, threads, out);
+  }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }
 
 std::string notPortableText(const CasePortability& p) {
+  // A Fail of the model against itself: every device that answers as the
+  // model does would fail, the judge or the case is at fault, not the device.
+  if (!p.own_answers.empty() && p.own_status != Status::CaseError)
+    return "the model's own answers, as a device, do not pass the case (the judge or the case "
+           "is at fault, not the device): " +
+           p.own_answers;
   std::string out;
   for (const NotPortable& problem : p.problems)
     out += (out.empty() ? "" : "\n  ") + notPortableMessage(problem);

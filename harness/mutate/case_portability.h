@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "case/case.h"
+#include "compare/verdict.h"
 #include "mutate/not_portable_cause.h"
 #include "results/results.h"
 
@@ -23,8 +24,11 @@ struct CasePortability {
   bool checked = false;
   std::string not_checked;  // why not: no model here, the model did not run it
   // The model's own answers as a device fail the case (a CaseError the
-  // model diagnosed: undefined behaviour, order dependence, ...): its headline.
+  // model diagnosed: undefined behaviour, order dependence, ...; or a Fail,
+  // where the judge holds the model to what the model does not do): its
+  // headline, and that verdict's status.
   std::string own_answers;
+  Status own_status = Status::Pass;
   size_t devices = 0;  // legal devices made
   size_t applied = 0;  // those that differ from the model's own answers here
   // One per declaration to change, the first device that shows it and the
@@ -38,9 +42,10 @@ struct CasePortability {
 // model (0: every core). *model (when given): the model's run of `c`.
 CasePortability checkPortability(const Case& c, unsigned threads, Results* model = nullptr);
 
-// The CaseError message of a case that is not portable: each problem's
-// notPortableMessage, one a line (the first unindented); "" when portable or
-// not checked.
+// The CaseError message of a case that is not portable: the model's own
+// answers failing it other than by a CaseError (the run gives that one
+// itself, by its own rule), or each problem's notPortableMessage, one a line
+// (the first unindented); "" when portable or not checked.
 std::string notPortableText(const CasePortability& p);
 
 }  // namespace rayspec

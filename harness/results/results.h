@@ -159,6 +159,11 @@ struct RayAmbiguity {
   // How many of the ray's traces were ambiguous in the model's own run (a
   // ray traced twice through one vertex: 2); each may move a counter.
   uint32_t traces = 1;
+  // The ambiguous traversal (the ray's first) is a ray query's, not a
+  // trace's: its answer runs no shader and shows only in what the query's
+  // blocks and the statements after it write (compare/trace_shape.h
+  // queryReachedFields), never in the trace's hit, miss and run fields.
+  bool from_query = false;
 };
 
 // A ray whose hit t a device may compute further from the model's than the
