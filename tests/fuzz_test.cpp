@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <map>
 
+#include "case/huge_rays.h"
 #include "compare/compare_results.h"
 #include "fault/planted_fault.h"
 #include "fuzz/fuzz_tally.h"
@@ -129,6 +130,10 @@ TEST(FuzzGenerator, HugeRaysMeetNoSphereTests) {
       // (a box BLAS no active instance holds, a query's candidate block in
       // a scene of triangles: no box is ever tested).
       EXPECT_EQ(g.yaml.find("intersection: "), std::string::npos) << g.name;
+      // Nor what the portability check refuses (case/huge_rays.h).
+      const ParseResult p = parseCaseText(g.yaml, g.name + ".yaml", g.name);
+      ASSERT_TRUE(p.value) << g.name;
+      EXPECT_FALSE(hugeRayAtSphereBox(*p.value)) << g.name;
     }
   EXPECT_GE(huge, 20u);
 }

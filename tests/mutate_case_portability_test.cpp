@@ -108,9 +108,34 @@ TEST(CasePortability, AnAnyHitCountDeclaredExactOnEdgeRaysIsNotPortable) {
   EXPECT_TRUE(counter) << text;
 }
 
+// A ray from far away at boxes whose programs test their inscribed spheres
+// (case/huge_rays.h): refused at the ray's line, whatever the legal devices
+// say; the same ray started near the boxes is accepted (EachMistakeFixedIsPortable).
+TEST(CasePortability, AHugeRayAtASphereTestingBoxIsNotPortable) {
+  std::string text;
+  const std::vector<NotPortable> problems =
+      problemsOf("not-portable/huge-ray-at-sphere-box.yaml", &text);
+  ASSERT_FALSE(problems.empty());
+  const NotPortable& p = problems.front();
+  EXPECT_EQ(p.device, "object-ray-rounding") << text;
+  EXPECT_EQ(p.ray, 1) << text;
+  EXPECT_EQ(p.declaration.line, 20) << text;
+  EXPECT_EQ(p.declaration.field, "rays.list[1]") << text;
+  EXPECT_NE(text.find("huge-ray-at-sphere-box.yaml:20:7: rays.list[1]: not portable: a device "
+                      "the specification allows (object-ray-rounding"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(p.finding.find("of geometry 0 of instance 0, whose intersection program (hit group "
+                           "0) tests the sphere inscribed in the box"),
+            std::string::npos)
+      << p.finding;
+  EXPECT_NE(p.change.find("start the ray nearer the boxes"), std::string::npos) << p.change;
+}
+
 TEST(CasePortability, EachMistakeFixedIsPortable) {
-  for (const char* path : {"portable/box-report-tested.yaml", "portable/candidates-at-least.yaml",
-                           "portable/anyhit-undeclared-edges.yaml"}) {
+  for (const char* path :
+       {"portable/box-report-tested.yaml", "portable/candidates-at-least.yaml",
+        "portable/anyhit-undeclared-edges.yaml", "portable/near-ray-at-sphere-box.yaml"}) {
     const CasePortability p = checkPortability(loadDataCase(path), 1);
     EXPECT_TRUE(p.portable()) << path << ": " << p.not_checked << p.own_answers
                               << notPortableText(p);

@@ -27,10 +27,9 @@ namespace fs = std::filesystem;
 // The case of `seed` written under OUT/cases: generated here, or with
 // --saved-cases the text the saved device run ran.
 Result<GeneratedCase> writeCase(const FuzzOptions& opt, uint64_t seed) {
-  Result<GeneratedCase> made =
-      opt.saved_cases.empty()
-          ? Result<GeneratedCase>(generateCase(seed, opt.allowed))
-          : savedCase(opt.saved_cases, opt.run.device_results, seed, opt.allowed);
+  Result<GeneratedCase> made = opt.saved_cases.empty()
+                                   ? Result<GeneratedCase>(generateCase(seed, opt.allowed))
+                                   : savedCase(opt.saved_cases, opt.run.device_results, seed);
   if (!made) return made;
   const GeneratedCase& g = *made;
   const fs::path file = fs::path(opt.out) / "cases" / (g.name + ".yaml");

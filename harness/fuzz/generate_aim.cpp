@@ -8,6 +8,7 @@
 // case format's own `aim` form (rays.aim) over a triangle instance.
 #include <cmath>
 
+#include "case/huge_rays.h"
 #include "fuzz/case_generator.h"
 
 namespace rayspec {
@@ -105,13 +106,13 @@ std::string CaseGenerator::aimedText(const Placed& inst, const Geometry& g, DVec
   if (length(d) < 0.25) d[2] = chance(0.5) ? 1 : -1;
   double reach = eighths(2, 6);
   // Not where boxes are: every box's programs test the sphere inscribed in
-  // it (sphere_hit, sphere_near, sphere_far), and one rounding of a far
-  // ray's object-space origin flips those decisions and moves the roots by
-  // more than R-PREC allows: no legal set to judge by. The draw stays, so
-  // that the other cases' sequences do not move.
+  // it (sphere_hit, sphere_near, sphere_far), and a huge ray at such a box
+  // has no legal set to judge it by (case/huge_rays.h, the definition the
+  // portability check refuses a case by). The draw stays, so that the other
+  // cases' sequences do not move.
   if (chance(0.05) && !activeBoxes()) {
     features_.insert("huge-ray");
-    reach = double(1 + pick(100)) * 1e5;
+    reach = double(1 + pick(100)) * kHugeRayReach;
   }
   // The point at t = 1.
   return "{origin: " + vec(axpy(at, d, reach)) + ", direction: " + vec(scaled(d, -reach));

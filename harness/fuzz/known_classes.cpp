@@ -4,9 +4,18 @@
 #include <sstream>
 
 #include "base/whole_file.h"
-#include "fuzz/generate_case.h"
+#include "fuzz/content_features.h"
 
 namespace rayspec {
+namespace {
+
+std::string featureList() {
+  std::string list;
+  for (const std::string& f : contentFeatureNames()) list += (list.empty() ? "" : ", ") + f;
+  return list;
+}
+
+}  // namespace
 
 Result<std::vector<KnownClass>> loadKnownClasses(const std::string& path) {
   const Result<std::string> text = readWholeFile(path, uint64_t(1) << 20);
@@ -23,10 +32,11 @@ Result<std::vector<KnownClass>> loadKnownClasses(const std::string& path) {
       const size_t reason = line.find_first_not_of(" \t", end);
       if (reason != std::string::npos) k.reason = line.substr(reason);
     }
-    const std::vector<std::string>& features = generatorFeatures();
+    const std::vector<std::string>& features = contentFeatureNames();
     if (std::find(features.begin(), features.end(), k.feature) == features.end())
       return Error{{path, n, int(start) + 1, "feature"},
-                   "'" + k.feature + "' is no feature of the generator (fuzz/generate_case.cpp)"};
+                   "'" + k.feature + "' is no feature a case's text shows (" + featureList() +
+                       ": fuzz/content_features.h)"};
     if (k.reason.empty())
       return Error{{path, n, int(start) + 1, "reason"},
                    "a known class needs its reason after the feature"};

@@ -1,7 +1,8 @@
 // Known driver bug classes a fuzz finding may belong to, by what its case
-// holds: a file of lines `FEATURE REASON` (a feature name of
-// generatorFeatures(), fuzz/generate_case.h; the reason names the baseline
-// entry or driver report), `#` comments. A finding whose case holds a known
+// holds: a file of lines `FEATURE REASON` (a feature its text shows,
+// contentFeatureNames() of fuzz/content_features.h, so that a saved case
+// made by another generator is classified as well; the reason names the
+// baseline entry or driver report), `#` comments. A finding whose case holds a known
 // class's feature is counted apart, as probably that bug, and does not
 // fail the fuzz run: a coarse match (another bug in such a case hides
 // behind it), said so in fuzz.txt.

@@ -6,6 +6,7 @@
 
 #include "base/whole_file.h"
 #include "bundle/results_io.h"
+#include "fuzz/content_features.h"
 #include "results/content_hash.h"
 #include "run/device_results.h"
 
@@ -46,7 +47,7 @@ Result<void> matchesBundle(const std::string& device_results, const std::string&
 }  // namespace
 
 Result<GeneratedCase> savedCase(const std::string& cases, const std::string& device_results,
-                                uint64_t seed, const GeneratorFeatures& allowed) {
+                                uint64_t seed) {
   GeneratedCase g;
   g.seed = seed;
   g.name = fuzzCaseName(seed);
@@ -61,8 +62,7 @@ Result<GeneratedCase> savedCase(const std::string& cases, const std::string& dev
   if (!text) return text.error();
   RAYSPEC_TRY_VOID(matchesBundle(device_results, g.name, file, *text));
   g.yaml = std::move(*text);
-  GeneratedCase here = generateCase(seed, allowed);
-  if (here.yaml == g.yaml) g.features = std::move(here.features);
+  g.features = contentFeatures(g.yaml);
   return g;
 }
 

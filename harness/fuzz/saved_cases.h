@@ -4,9 +4,9 @@
 // the same seeds (a generator changed since makes other cases). The text of
 // seed S is CASES/fuzz/seed-S.yaml; where DIR holds its device bundle, the
 // bundle's case_hash must be that text's (run/device_results.h checks the
-// same of any saved run). Known classes (fuzz/known_classes.h) match the
-// features the generator here draws for the seed only where it makes that
-// very text again.
+// same of any saved run). Its features are those its text shows
+// (fuzz/content_features.h), whatever the generator here makes of the seed:
+// the known classes (fuzz/known_classes.h) match what the case holds.
 #pragma once
 
 #include <cstdint>
@@ -22,6 +22,6 @@ namespace rayspec {
 // DIR/fuzz/seed-S/device/results.json and its field case_hash when the
 // bundle there ran another text.
 Result<GeneratedCase> savedCase(const std::string& cases, const std::string& device_results,
-                                uint64_t seed, const GeneratorFeatures& allowed);
+                                uint64_t seed);
 
 }  // namespace rayspec

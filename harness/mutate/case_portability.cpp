@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 
+#include "case/huge_rays.h"
 #include "compare/compare_results.h"
 #include "fault/planted_fault.h"
 #include "model/model_engine.h"
@@ -44,6 +46,33 @@ void judgeDevices(const Case& c, const Plan& plan, const Results& model, const R
   }
 }
 
+// A huge ray at a sphere-testing box (case/huge_rays.h): no legal set lists
+// what a device's one rounding of its object-space ray leaves, so no legal
+// device stands for it; the case is not portable by that definition.
+NotPortable hugeRayProblem(const Case& c, const HugeSphereRay& h) {
+  char distance[32];
+  std::snprintf(distance, sizeof distance, "%.3g", h.distance);
+  NotPortable p;
+  p.device = "object-ray-rounding";
+  p.what = "rounds the ray's object-space origin once, in float, as every device does";
+  p.ray = int64_t(h.ray);
+  const std::string tester =
+      h.hit_group ? "whose intersection program (hit group " + std::to_string(*h.hit_group) + ")"
+                  : "where a ray query's aabb block";
+  p.finding =
+      "R-PREC: its object-space origin lies " + std::string(distance) + " from box " +
+      std::to_string(h.primitive) + " of geometry " + std::to_string(h.geometry) + " of instance " +
+      std::to_string(h.instance) + ", " + tester +
+      " tests the sphere inscribed in the box: that far away one rounding of the origin flips "
+      "several of the program's decisions together and moves its roots beyond R-PREC's "
+      "bound, and no legal set of answers can list them";
+  p.declaration = h.ray < c.rays.list_locs.size() ? c.rays.list_locs[h.ray] : c.rays.defaults_loc;
+  p.change = "start the ray nearer the boxes (under " + std::to_string(int(kHugeRayDistance)) +
+             " in their object space) or test them without sphere_hit, sphere_near and "
+             "sphere_far (case/huge_rays.h)";
+  return p;
+}
+
 }  // namespace
 
 CasePortability checkPortability(const Case& c, unsigned threads, Results* model_out) {
@@ -64,6 +93,8 @@ CasePortability checkPortability(const Case& c, unsigned threads, Results* model
     return out;
   }
   out.checked = true;
+  if (const std::optional<HugeSphereRay> huge = hugeRayAtSphereBox(c))
+    out.problems.push_back(hugeRayProblem(c, *huge));
   // The model's own answers must pass first: a case the model finds at
   // fault fails every device alike.
   Results base = perfectDevice(c, model);
