@@ -44,11 +44,37 @@ bool readsHitBuiltinAfterTrace(const Program& p) {
   return reads;
 }
 
+// A program reads gl_WorldRayOriginEXT or gl_WorldRayDirectionEXT.
+bool readsWorldRay(const Program& p) {
+  bool reads = false;
+  walkStatements(p, [&](const Stmt& s) {
+    walkOwnExpressions(s, [&](const Expr& e) {
+      reads = reads || (e.kind == Expr::Kind::Builtin &&
+                        (e.builtin == kBiWorldOrigin || e.builtin == kBiWorldDirection));
+    });
+  });
+  return reads;
+}
+
+// A hit group without shaders beside a miss program that reads the world
+// ray (references/driver-reports/lavapipe-miss-reads-neighbour-barycentrics.md).
+bool missBesideEmptyGroup(const Pipeline& p) {
+  bool empty = false, reads = false;
+  for (const HitGroup& h : p.hit_groups)
+    empty = empty || (!h.closest_hit && !h.any_hit && !h.intersection);
+  for (const Program& m : p.miss) reads = reads || readsWorldRay(m);
+  return empty && reads;
+}
+
 }  // namespace
 
 const std::vector<std::string>& contentFeatureNames() {
-  static const std::vector<std::string> kNames = {"nan-vertex", "nan-box", "inactive-instance",
-                                                  "first-vertex", "hit-builtin-after-trace"};
+  static const std::vector<std::string> kNames = {"nan-vertex",
+                                                  "nan-box",
+                                                  "inactive-instance",
+                                                  "first-vertex",
+                                                  "hit-builtin-after-trace",
+                                                  "miss-world-ray-beside-empty-group"};
   return kNames;
 }
 
@@ -65,6 +91,7 @@ std::set<std::string> contentFeatures(const Case& c) {
   for (const HitGroup& h : c.pipeline.hit_groups)
     if (h.closest_hit && readsHitBuiltinAfterTrace(*h.closest_hit))
       out.insert("hit-builtin-after-trace");
+  if (missBesideEmptyGroup(c.pipeline)) out.insert("miss-world-ray-beside-empty-group");
   return out;
 }
 

@@ -9,6 +9,8 @@
 //   first-vertex             geometries built with firstVertex (scene.build.first_vertex)
 //   hit-builtin-after-trace  a closest-hit that reads a hit built-in the
 //                            nested hit may overwrite (nestedHitBuiltin) after a trace
+//   miss-world-ray-beside-empty-group  a hit group without shaders and a miss
+//                            program that reads the world ray origin or direction
 // Read from the scene as built and as each update leaves it (case/inactive.h
 // says which objects are inactive).
 #pragma once
