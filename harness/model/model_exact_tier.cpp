@@ -205,8 +205,36 @@ void TraceClassifier::tryUnsure() {
   for (const WhatIfAnswer& a : unsureAnswers(leaks)) {
     if (!sameAsCommitted(a.best) && !reason_) reason_ = AmbiguityReason::AabbFace;
     addCommitted(a.best, a.how);
+    noteUnsureForce(a.how.force);
   }
   for (const WhatIfAnswer& a : leaks) addLeak(a.best, a.how);
+}
+
+// Whether forcing candidate k to be a hit (or not) decides it as the
+// model's own run does in every order: a triangle the model's ray misses
+// forced out, or one it hits strictly inside the interval (not in its
+// plane, not a ray query's) forced in; a box the model's ray misses forced
+// out (no legal device offering near boxes), or one it enters forced in.
+bool TraceClassifier::forcedAsOwn(size_t k, bool hit) const {
+  const ModelCandidate& cand = cands_[k];
+  if (cand.aabb) return hit ? !cand.outside : cand.outside && !m_.sh_.fault_seam.nearBoxesOffered();
+  if (!hit) return !cand.hit;
+  return cand.hit && !cand.in_plane && !tr_.query && cand.t > tr_.tmin && cand.t < tr_.ray.tmax;
+}
+
+// A legal what-if run's decisions, kept for the candidate orders
+// (tryPermutations combines each with every order): those it makes as the
+// model's own run does left to the model, kept where some decision is left
+// that is not kept already.
+void TraceClassifier::noteUnsureForce(std::vector<int8_t> force) {
+  bool otherwise = false;
+  for (size_t k = 0; k < force.size(); ++k) {
+    if (force[k] >= 0 && forcedAsOwn(k, force[k] == 1)) force[k] = -1;
+    otherwise = otherwise || force[k] >= 0;
+  }
+  if (otherwise &&
+      std::find(unsure_forces_.begin(), unsure_forces_.end(), force) == unsure_forces_.end())
+    unsure_forces_.push_back(std::move(force));
 }
 
 // R-PREC on a box the model's ray misses (ModelCandidate::outside): offered
