@@ -224,42 +224,42 @@ size_t orderCount(size_t m) {
 
 }  // namespace
 
-// The decisions each set of order runs starts from: the model's own (none
-// forced), then each legal what-if run's of the unsure candidates (an edge
-// or vertex triangle missed or hit, a grazed box offered or not: tryUnsure),
-// every one combined with every order (a device may both miss a lone vertex
-// and meet a farther candidate first: fuzz seed 150215 on Mesa 26.2.6).
-// Past kMaxCombinedOrderRuns the model's own alone, and the case is a
-// CaseError saying so: a combination left untried may be the device's.
-std::vector<std::vector<int8_t>> TraceClassifier::orderBases(const std::vector<uint32_t>& matter,
-                                                             size_t rules) {
-  std::vector<std::vector<int8_t>> bases{{}};
+// The sets of decisions the orders combine with beyond the model's own:
+// each legal what-if run's of the unsure candidates (an edge or vertex
+// triangle missed or hit, a grazed box offered or not: tryUnsure), each
+// with every order (a device may both miss a lone vertex and meet a farther
+// candidate first: fuzz seed 150215 on Mesa 26.2.6). Past
+// kMaxCombinedOrderRuns none, and the case is a CaseError saying so: a
+// combination left untried may be the device's.
+std::vector<std::vector<int8_t>> TraceClassifier::combinedBases(const std::vector<uint32_t>& matter,
+                                                                bool reported) {
   size_t runs = 0;
-  for (const std::vector<int8_t>& force : unsure_forces_)
-    runs += orderCount(inPlay(matter, force).size()) * rules;
-  if (runs > kMaxCombinedOrderRuns) {
-    orderDependentPastBound(
-        "meets " + std::to_string(matter.size()) + " candidates whose order may matter and " +
-        std::to_string(unsure_forces_.size()) +
-        " legal decisions of its unsure candidates (edge, vertex, interval end, box face): "
-        "their combinations make " +
-        std::to_string(runs) + " what-if runs, more than the " +
-        std::to_string(kMaxCombinedOrderRuns) +
-        " the model makes, and each may leave another answer");
-    return bases;
+  for (const std::vector<int8_t>& force : unsure_forces_) {
+    const std::vector<uint32_t> in_play = inPlay(matter, force);
+    runs += orderCount(in_play.size()) * tieRules(in_play, reported).size();
   }
-  bases.insert(bases.end(), unsure_forces_.begin(), unsure_forces_.end());
-  return bases;
+  if (runs <= kMaxCombinedOrderRuns) return unsure_forces_;
+  orderDependentPastBound("meets " + std::to_string(matter.size()) +
+                          " candidates whose order may matter and " +
+                          std::to_string(unsure_forces_.size()) +
+                          " legal decisions of its unsure candidates (edge, vertex, interval "
+                          "end, box face): their combinations make " +
+                          std::to_string(runs) + " what-if runs, more than the " +
+                          std::to_string(kMaxCombinedOrderRuns) +
+                          " the model makes, and each may leave another answer");
+  return {};
 }
 
 // Every order (a stated sample past kMaxOrderedCandidates) of the candidates
-// that matter and `force` leaves in play, under each tie rule, from the
-// decisions `force`: each outcome not seen yet joins `runs`. True when the
-// orders were a sample and their outcomes differ (from the trace's actual
-// one, from the model's own decisions; else from the first run's).
+// that matter and `force` leaves in play, under each tie rule they call
+// for, from the decisions `force`: each outcome not seen yet joins `runs`.
+// True when the orders were a sample and their outcomes differ (from the
+// trace's actual one, from the model's own decisions; else from the first
+// run's), where that makes the case an error (past the bound, but where
+// only tied reports may differ): then it is one.
 bool TraceClassifier::tryOrdersFrom(const std::vector<int8_t>& force,
-                                    const std::vector<uint32_t>& matter,
-                                    const std::vector<TieRule>& rules, OrderRunsSeen& runs) {
+                                    const std::vector<uint32_t>& matter, bool reported,
+                                    OrderRunsSeen& runs) {
   const std::vector<uint32_t> in_play = inPlay(matter, force);
   const bool sample = in_play.size() > kMaxOrderedCandidates;
   const std::vector<std::vector<uint32_t>> orders =
@@ -268,7 +268,7 @@ bool TraceClassifier::tryOrdersFrom(const std::vector<int8_t>& force,
   if (force.empty()) first = runs.outcomes[0];
   bool differs = false;
   for (const std::vector<uint32_t>& order : orders)
-    for (const TieRule rule : rules)
+    for (const TieRule rule : tieRules(in_play, reported))
       for (WhatIf& how : orderRuns(order, in_play, rule, force)) {
         OrderOutcome o;
         m_.sandbox(tr_, cands_, how, payload_in_, &o);
@@ -282,7 +282,13 @@ bool TraceClassifier::tryOrdersFrom(const std::vector<int8_t>& force,
         runs.outcomes.push_back(std::move(o));
         runs.hows.push_back(std::move(how));
       }
-  return sample && differs;
+  if (!sample || !differs || (!tr_.query && m_.sh_.programs->order_ties_only)) return false;
+  orderDependentPastBound("meets " + std::to_string(in_play.size()) + " candidates" +
+                          (force.empty() ? "" : " under a legal decision of its unsure ones") +
+                          ", more than the " + std::to_string(kMaxOrderedCandidates) +
+                          " whose every order the model tries, and the orders it tried leave "
+                          "different answers behind");
+  return true;
 }
 
 // R-ORDER-UNSPEC, R-TOFH, R-TIE: candidates arrive in any order (and a report
@@ -301,18 +307,13 @@ bool TraceClassifier::tryPermutations(const std::vector<std::pair<size_t, double
                                     [](const auto& r) { return !std::isnan(r.second); });
   // One candidate has no other order: only its own tied reports matter.
   if (matter.size() <= 1 && !ties) return true;
-  const std::vector<TieRule> rules = tieRules(matter, reported);
   OrderRunsSeen runs{{actualOutcome()}, {actual()}};
-  bool sampled_differ = false;
-  for (const std::vector<int8_t>& force : orderBases(matter, rules.size()))
-    sampled_differ = tryOrdersFrom(force, matter, rules, runs) || sampled_differ;
+  // The model's own decisions in every order, then (unless that made the
+  // case an error) each legal set of the unsure candidates' in every order.
+  if (!tryOrdersFrom({}, matter, reported, runs))
+    for (const std::vector<int8_t>& force : combinedBases(matter, reported))
+      if (tryOrdersFrom(force, matter, reported, runs)) break;
   if (runs.outcomes.size() < 2) return true;
-  // Past the bound a case error, but where only tied reports may differ.
-  if (sampled_differ && (tr_.query || !m_.sh_.programs->order_ties_only))
-    orderDependentPastBound("meets " + std::to_string(matter.size()) +
-                            " candidates, more than the " + std::to_string(kMaxOrderedCandidates) +
-                            " whose every order the model tries, and the orders it tried leave "
-                            "different answers behind");
   for (size_t k = 0; k < runs.outcomes.size(); ++k)
     addCommitted(runs.outcomes[k].best, runs.hows[k]);
   // A tie alone names the reason only if nothing else does (a sphere's two

@@ -86,9 +86,10 @@ class TraceClassifier {
     std::vector<OrderOutcome> outcomes;  // each distinct outcome once, the actual first
     std::vector<WhatIf> hows;            // how each was reached
   };
-  std::vector<std::vector<int8_t>> orderBases(const std::vector<uint32_t>& matter, size_t rules);
+  std::vector<std::vector<int8_t>> combinedBases(const std::vector<uint32_t>& matter,
+                                                 bool reported);
   bool tryOrdersFrom(const std::vector<int8_t>& force, const std::vector<uint32_t>& matter,
-                     const std::vector<TieRule>& rules, OrderRunsSeen& runs);
+                     bool reported, OrderRunsSeen& runs);
   // A legal what-if run's decisions of the unsure candidates, kept where
   // they differ from the model's own (tryUnsure, for tryPermutations).
   void noteUnsureForce(std::vector<int8_t> force);
