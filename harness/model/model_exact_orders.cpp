@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <set>
+#include <string>
 
 #include "model/order_dependence.h"
 #include "model/trace_classifier.h"
@@ -127,22 +129,24 @@ bool TraceClassifier::reportsTie(const std::vector<std::pair<size_t, double>>& r
   return false;
 }
 
-// The what-if runs of one order: the model's own decisions, and where an
-// edge or vertex triangle the model left out (R-WATERTIGHT: a shared vertex
-// of no closed fan, or any the model missed within rounding) is among the
-// candidates, the first such in the order a hit there (a device may hit it
-// after a farther candidate's any-hit ran: no ordering guarantee between
-// candidates, Ray Intersection Candidate Determination); first in the order,
-// only that run (missed, its place does not matter).
+// The what-if runs of one order from one set of decisions (`force`: none,
+// the model's own; or a legal what-if run's of the unsure candidates,
+// noteUnsureForce): those decisions; and where an edge or vertex triangle
+// they leave to the model (R-WATERTIGHT: a shared vertex of no closed fan,
+// or any the model missed within rounding) is among the candidates, the
+// first such in the order a hit there (a device may hit it after a farther
+// candidate's any-hit ran: no ordering guarantee between candidates, Ray
+// Intersection Candidate Determination); first in the order, only that run
+// (missed, its place does not matter).
 std::vector<WhatIf> TraceClassifier::orderRuns(const std::vector<uint32_t>& order,
-                                               const std::vector<uint32_t>& matter,
-                                               TieRule rule) const {
-  std::vector<WhatIf> runs{{false, {}, -1, -1, {}, order, rule}};
+                                               const std::vector<uint32_t>& matter, TieRule rule,
+                                               const std::vector<int8_t>& force) const {
+  std::vector<WhatIf> runs{{false, force, -1, -1, {}, order, rule}};
   for (size_t p = 0; p < matter.size(); ++p) {
     const uint32_t k = order[matter[p]];
-    if (cands_[k].ambiguity == TriAmbiguity::None) continue;
+    if (cands_[k].ambiguity == TriAmbiguity::None || (!force.empty() && force[k] >= 0)) continue;
     WhatIf forced = runs[0];
-    forced.force.assign(cands_.size(), -1);
+    if (forced.force.empty()) forced.force.assign(cands_.size(), -1);
     forced.force[k] = 1;
     if (p == 0) runs.clear();
     runs.push_back(std::move(forced));
@@ -179,9 +183,10 @@ OrderOutcome TraceClassifier::actualOutcome() const {
   return o;
 }
 
-// Past the bound the sample's answers differ: the case is not portable
-// (CaseError, compare/order_dependent_verdict.h), named by the block.
-void TraceClassifier::orderDependentPastBound(size_t candidates) {
+// Past a bound the model cannot list every answer the orders leave: the
+// case is not portable (CaseError, compare/order_dependent_verdict.h), named
+// by the block, `what` saying why for the launch ray now.
+void TraceClassifier::orderDependentPastBound(const std::string& what) {
   const OrderDependence d = tr_.query ? queryOrderDependence(*tr_.query->stmt)
                                       : pipelineOrderDependence(*m_.sh_.programs);
   const CStmt* where = d.where ? d.where : tr_.query ? tr_.query->stmt : nullptr;
@@ -189,11 +194,101 @@ void TraceClassifier::orderDependentPastBound(size_t candidates) {
                           ? "the candidate blocks of the ray_query at " + statementPlace(where)
                           : "the any-hit or intersection program at " + statementPlace(where);
   if (!d.why.empty()) place += " (" + d.why + ")";
-  m_.st_.orderDependent(place, ": launch ray " + std::to_string(m_.st_.index) + " meets " +
-                                   std::to_string(candidates) + " candidates, more than the " +
-                                   std::to_string(kMaxOrderedCandidates) +
-                                   " whose every order the model tries, and the orders it "
-                                   "tried leave different answers behind");
+  m_.st_.orderDependent(place, ": launch ray " + std::to_string(m_.st_.index) + " " + what);
+}
+
+namespace {
+
+// The candidates whose order may matter under a set of decisions: those of
+// `matter` it does not force to be no hit (one forced out does nothing
+// wherever it comes), and those it forces in that the model's own run
+// leaves out (a box its ray misses, offered), in index order.
+std::vector<uint32_t> inPlay(const std::vector<uint32_t>& matter,
+                             const std::vector<int8_t>& force) {
+  if (force.empty()) return matter;
+  std::vector<uint32_t> in;
+  for (uint32_t k = 0; k < force.size(); ++k)
+    if (force[k] == 1 || (force[k] < 0 && std::binary_search(matter.begin(), matter.end(), k)))
+      in.push_back(k);
+  return in;
+}
+
+// How many orders of `m` candidates tryOrdersFrom tries (everyOrder, or
+// past kMaxOrderedCandidates sampleOrders).
+size_t orderCount(size_t m) {
+  if (m > kMaxOrderedCandidates) return 2 * m + kSampledOrders;
+  size_t n = 1;
+  for (size_t k = 2; k <= m; ++k) n *= k;
+  return n;
+}
+
+}  // namespace
+
+// The sets of decisions the orders combine with beyond the model's own:
+// each legal what-if run's of the unsure candidates (an edge or vertex
+// triangle missed or hit, a grazed box offered or not: tryUnsure), each
+// with every order (a device may both miss a lone vertex and meet a farther
+// candidate first: fuzz seed 150215 on Mesa 26.2.6). Past
+// kMaxCombinedOrderRuns none, and the case is a CaseError saying so: a
+// combination left untried may be the device's.
+std::vector<std::vector<int8_t>> TraceClassifier::combinedBases(const std::vector<uint32_t>& matter,
+                                                                bool reported) {
+  size_t runs = 0;
+  for (const std::vector<int8_t>& force : unsure_forces_) {
+    const std::vector<uint32_t> in_play = inPlay(matter, force);
+    runs += orderCount(in_play.size()) * tieRules(in_play, reported).size();
+  }
+  if (runs <= kMaxCombinedOrderRuns) return unsure_forces_;
+  orderDependentPastBound("meets " + std::to_string(matter.size()) +
+                          " candidates whose order may matter and " +
+                          std::to_string(unsure_forces_.size()) +
+                          " legal decisions of its unsure candidates (edge, vertex, interval "
+                          "end, box face): their combinations make " +
+                          std::to_string(runs) + " what-if runs, more than the " +
+                          std::to_string(kMaxCombinedOrderRuns) +
+                          " the model makes, and each may leave another answer");
+  return {};
+}
+
+// Every order (a stated sample past kMaxOrderedCandidates) of the candidates
+// that matter and `force` leaves in play, under each tie rule they call
+// for, from the decisions `force`: each outcome not seen yet joins `runs`.
+// True when the orders were a sample and their outcomes differ (from the
+// trace's actual one, from the model's own decisions; else from the first
+// run's), where that makes the case an error (past the bound, but where
+// only tied reports may differ): then it is one.
+bool TraceClassifier::tryOrdersFrom(const std::vector<int8_t>& force,
+                                    const std::vector<uint32_t>& matter, bool reported,
+                                    OrderRunsSeen& runs) {
+  const std::vector<uint32_t> in_play = inPlay(matter, force);
+  const bool sample = in_play.size() > kMaxOrderedCandidates;
+  const std::vector<std::vector<uint32_t>> orders =
+      sample ? sampleOrders(cands_.size(), in_play) : everyOrder(cands_.size(), in_play);
+  std::optional<OrderOutcome> first;
+  if (force.empty()) first = runs.outcomes[0];
+  bool differs = false;
+  for (const std::vector<uint32_t>& order : orders)
+    for (const TieRule rule : tieRules(in_play, reported))
+      for (WhatIf& how : orderRuns(order, in_play, rule, force)) {
+        OrderOutcome o;
+        m_.sandbox(tr_, cands_, how, payload_in_, &o);
+        const double tol = tr_.tol(o.best.t);
+        if (!first) first = o;
+        differs = differs || !sameOutcome(*first, o, tol);
+        const bool known =
+            std::any_of(runs.outcomes.begin(), runs.outcomes.end(),
+                        [&](const OrderOutcome& s) { return sameOutcome(s, o, tol); });
+        if (known) continue;
+        runs.outcomes.push_back(std::move(o));
+        runs.hows.push_back(std::move(how));
+      }
+  if (!sample || !differs || (!tr_.query && m_.sh_.programs->order_ties_only)) return false;
+  orderDependentPastBound("meets " + std::to_string(in_play.size()) + " candidates" +
+                          (force.empty() ? "" : " under a legal decision of its unsure ones") +
+                          ", more than the " + std::to_string(kMaxOrderedCandidates) +
+                          " whose every order the model tries, and the orders it tried leave "
+                          "different answers behind");
+  return true;
 }
 
 // R-ORDER-UNSPEC, R-TOFH, R-TIE: candidates arrive in any order (and a report
@@ -212,29 +307,15 @@ bool TraceClassifier::tryPermutations(const std::vector<std::pair<size_t, double
                                     [](const auto& r) { return !std::isnan(r.second); });
   // One candidate has no other order: only its own tied reports matter.
   if (matter.size() <= 1 && !ties) return true;
-  const std::vector<TieRule> rules = tieRules(matter, reported);
-  const bool sample = matter.size() > kMaxOrderedCandidates;
-  const std::vector<std::vector<uint32_t>> orders =
-      sample ? sampleOrders(cands_.size(), matter) : everyOrder(cands_.size(), matter);
-  std::vector<OrderOutcome> seen{actualOutcome()};
-  std::vector<WhatIf> hows{actual()};
-  for (const std::vector<uint32_t>& order : orders)
-    for (const TieRule rule : rules)
-      for (WhatIf& how : orderRuns(order, matter, rule)) {
-        OrderOutcome o;
-        m_.sandbox(tr_, cands_, how, payload_in_, &o);
-        const bool known = std::any_of(seen.begin(), seen.end(), [&](const OrderOutcome& s) {
-          return sameOutcome(s, o, tr_.tol(o.best.t));
-        });
-        if (known) continue;
-        seen.push_back(std::move(o));
-        hows.push_back(std::move(how));
-      }
-  if (seen.size() < 2) return true;
-  // Past the bound a case error, but where only tied reports may differ.
-  if (sample && (tr_.query || !m_.sh_.programs->order_ties_only))
-    orderDependentPastBound(matter.size());
-  for (size_t k = 0; k < seen.size(); ++k) addCommitted(seen[k].best, hows[k]);
+  OrderRunsSeen runs{{actualOutcome()}, {actual()}};
+  // The model's own decisions in every order, then (unless that made the
+  // case an error) each legal set of the unsure candidates' in every order.
+  if (!tryOrdersFrom({}, matter, reported, runs))
+    for (const std::vector<int8_t>& force : combinedBases(matter, reported))
+      if (tryOrdersFrom(force, matter, reported, runs)) break;
+  if (runs.outcomes.size() < 2) return true;
+  for (size_t k = 0; k < runs.outcomes.size(); ++k)
+    addCommitted(runs.outcomes[k].best, runs.hows[k]);
   // A tie alone names the reason only if nothing else does (a sphere's two
   // roots at tangency tie because of its arithmetic: shader-arith).
   if (!tofh && !dependent)

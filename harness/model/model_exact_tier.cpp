@@ -202,11 +202,13 @@ void TraceClassifier::tryUnsure() {
   // The legal answers: this run's, and those of the what-if runs.
   addCommitted(tr_.best, actual());
   std::vector<WhatIfAnswer> leaks;
-  for (const WhatIfAnswer& a : unsureAnswers(leaks))
+  for (const WhatIfAnswer& a : unsureAnswers(leaks)) {
+    noteUnsureForce(a.how.force);
     for (const WhatIfAnswer& b : withTies(a)) {
       if (!sameAsCommitted(b.best) && !reason_) reason_ = AmbiguityReason::AabbFace;
       addCommitted(b.best, b.how);
     }
+  }
   for (const WhatIfAnswer& a : leaks)
     for (const WhatIfAnswer& b : withTies(a)) addLeak(b.best, b.how);
 }
@@ -252,6 +254,33 @@ std::vector<WhatIfAnswer> TraceClassifier::withTies(const WhatIfAnswer& a) {
     out.push_back({m_.sandbox(tr_, cands_, how, payload_in_), how, {}});
   }
   return out;
+}
+
+// Whether forcing candidate k to be a hit (or not) decides it as the
+// model's own run does in every order: a triangle the model's ray misses
+// forced out, or one it hits strictly inside the interval (not in its
+// plane, not a ray query's) forced in; a box the model's ray misses forced
+// out (no legal device offering near boxes), or one it enters forced in.
+bool TraceClassifier::forcedAsOwn(size_t k, bool hit) const {
+  const ModelCandidate& cand = cands_[k];
+  if (cand.aabb) return hit ? !cand.outside : cand.outside && !m_.sh_.fault_seam.nearBoxesOffered();
+  if (!hit) return !cand.hit;
+  return cand.hit && !cand.in_plane && !tr_.query && cand.t > tr_.tmin && cand.t < tr_.ray.tmax;
+}
+
+// A legal what-if run's decisions, kept for the candidate orders
+// (tryPermutations combines each with every order): those it makes as the
+// model's own run does left to the model, kept where some decision is left
+// that is not kept already.
+void TraceClassifier::noteUnsureForce(std::vector<int8_t> force) {
+  bool otherwise = false;
+  for (size_t k = 0; k < force.size(); ++k) {
+    if (force[k] >= 0 && forcedAsOwn(k, force[k] == 1)) force[k] = -1;
+    otherwise = otherwise || force[k] >= 0;
+  }
+  if (otherwise &&
+      std::find(unsure_forces_.begin(), unsure_forces_.end(), force) == unsure_forces_.end())
+    unsure_forces_.push_back(std::move(force));
 }
 
 // R-PREC on a box the model's ray misses (ModelCandidate::outside): offered

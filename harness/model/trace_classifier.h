@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -80,9 +81,24 @@ class TraceClassifier {
   bool reportsTie(const std::vector<std::pair<size_t, double>>& reports) const;
   std::vector<TieRule> tieRules(const std::vector<uint32_t>& matter, bool reported) const;
   std::vector<WhatIf> orderRuns(const std::vector<uint32_t>& order,
-                                const std::vector<uint32_t>& matter, TieRule rule) const;
+                                const std::vector<uint32_t>& matter, TieRule rule,
+                                const std::vector<int8_t>& force) const;
   OrderOutcome actualOutcome() const;
-  void orderDependentPastBound(size_t candidates);
+  void orderDependentPastBound(const std::string& what);
+  // The orders combined with the unsure candidates' legal decisions: the
+  // decisions each set of order runs starts from, and one set's runs.
+  struct OrderRunsSeen {
+    std::vector<OrderOutcome> outcomes;  // each distinct outcome once, the actual first
+    std::vector<WhatIf> hows;            // how each was reached
+  };
+  std::vector<std::vector<int8_t>> combinedBases(const std::vector<uint32_t>& matter,
+                                                 bool reported);
+  bool tryOrdersFrom(const std::vector<int8_t>& force, const std::vector<uint32_t>& matter,
+                     bool reported, OrderRunsSeen& runs);
+  // A legal what-if run's decisions of the unsure candidates, kept where
+  // they differ from the model's own (tryUnsure, for tryPermutations).
+  void noteUnsureForce(std::vector<int8_t> force);
+  bool forcedAsOwn(size_t k, bool hit) const;
 
   ModelTracer& m_;
   Traversal& tr_;
@@ -100,6 +116,9 @@ class TraceClassifier {
   std::optional<AmbiguityReason> tie_reason_;  // reports tie (tryPermutations), if nothing else
   double reason_t_ = 0;                        // the t of the candidate that gave it
   std::vector<size_t> unsure_;                 // candidates whose decision could flip
+  // The decisions (WhatIf::force) of tryUnsure's legal answers that decide
+  // some candidate otherwise than the model, each once.
+  std::vector<std::vector<int8_t>> unsure_forces_;
   const std::vector<std::pair<size_t, double>>* reports_ = nullptr;  // findUnsure's
   bool faces_ = false;                                               // a grazed box among them
 };
