@@ -157,9 +157,9 @@ TEST(ExportC, RefusesALaunchTooWideToEmbed) {
 TEST(ExportC, RefusesStructureQueriesItDoesNotAsk) {
   // accel/queries/* copy too; a reduced case may keep the queries alone,
   // whose findings a file that never asks them would pass.
-  Loaded l = load("culling/facing-cull");
+  ExportCase l = loadExportCase("culling/facing-cull");
   l.c.scene.build.queries.queries = {StructureQuery::SerializationSize};
-  const Result<std::string> text = exportCaseAsC(l.c, l.plan, modelOf(l));
+  const Result<std::string> text = exportCaseAsC(l.c, l.plan, exportModelOf(l));
   ASSERT_FALSE(text);
   EXPECT_EQ(text.error().message,
             "export: case uses acceleration structure queries (scene.build.queries), not yet "
@@ -170,13 +170,13 @@ TEST(ExportC, ALayoutFaultIsCarriedIntoTheFile) {
   // What a reduction under offsets-ignored writes (run/fault_seam.h's
   // exportedLayoutFault): the builds are told offsets 0 over the same bytes,
   // reading the junk before them, so lavapipe FAILs; without it, PASS.
-  Loaded l = load("accel/layouts-triangles");
+  ExportCase l = loadExportCase("accel/layouts-triangles");
   l.c.scene.build.instances_as_pointers = false;  // refused by the export; the rest stays
-  const Results model = modelOf(l);
+  const Results model = exportModelOf(l);
   const Result<std::string> text = exportCaseAsC(l.c, l.plan, model, LayoutFault::OffsetsIgnored);
   ASSERT_TRUE(text) << text.error().format();
   EXPECT_NE(text->find("the fault `offsets-ignored` misreads them"), std::string::npos);
-  const Played faulty = play(*text, "offsets-ignored");
+  const Played faulty = playExport(*text, "offsets-ignored");
   EXPECT_EQ(faulty.status, 1) << faulty.output;
   const Played plain = exportAndPlay(l, model, "layouts-triangles");
   EXPECT_EQ(plain.status, 0) << plain.output;

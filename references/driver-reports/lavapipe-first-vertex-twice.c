@@ -71,13 +71,15 @@ typedef struct {
   uint32_t data[8];
 } rs_record;
 /* RS_BIND_WORDS: a read-only buffer of fixed words (the scene data of
-   intersection programs, the SBT as tables). */
+   intersection programs, the SBT as tables). RS_BIND_IMAGE: a storage image
+   (outputs.images), image binding - RS_FIRST_IMAGE_BINDING. */
 enum rs_binding_kind {
   RS_BIND_TLAS,
   RS_BIND_RAYS,
   RS_BIND_RECORDS,
   RS_BIND_COUNTERS,
-  RS_BIND_WORDS
+  RS_BIND_WORDS,
+  RS_BIND_IMAGE
 };
 typedef struct {
   uint32_t binding;
@@ -107,6 +109,17 @@ typedef struct {
   uint32_t ray;
   float by[4]; /* 0, then the ray's t, object-origin and hit-position bounds (R-PREC) */
 } rs_bound;
+
+typedef struct {
+  const char *name, *field;
+  uint32_t is_float;      /* rgba32f (4 channels), else r32ui (1) */
+  double abs, rel, scale; /* the field's tolerance, times the image's scale */
+  uint32_t max_failing;   /* pixels allowed to differ */
+  uint32_t equal_to;      /* an image it must equal texel for texel, or RS_NONE */
+  uint32_t has_field;     /* the field's place in a record: */
+  uint32_t offset, words, bit, automatic;
+  const uint32_t* expected; /* the model's texels */
+} rs_image;
 
 #define RS_CASE_NAME "lavapipe-first-vertex-twice"
 
@@ -169,6 +182,28 @@ static const rs_instance rs_instances[] = {
 // //   RS_USE_SHADER_RECORD  this stage's shader record data (8 words)
 // // Model counterpart: harness/model (records, counters, shader record data).
 //
+// #ifdef RS_EMPTY_LAYOUT
+// // pipeline.layout: empty. The pipeline layout has no descriptor set (and no
+// // push constant): every buffer of set 0 below is reached through its device
+// // address instead, the address of binding b being word pair b of the address
+// // table, whose own address the specialization constants RS_TABLE_LO_ID and
+// // RS_TABLE_HI_ID hold (harness/vulkan/address_table.h); the top level is
+// // made from its address (accelerationStructureEXT(uvec2)).
+// layout(constant_id = RS_TABLE_LO_ID) const uint rs_table_lo = 0u;
+// layout(constant_id = RS_TABLE_HI_ID) const uint rs_table_hi = 0u;
+// layout(buffer_reference, std430, buffer_reference_align = 8) readonly buffer RsAddressTable {
+//   uvec2 address[];
+// };
+// uvec2 rs_address(uint binding) {
+//   return RsAddressTable(uvec2(rs_table_lo, rs_table_hi)).address[binding];
+// }
+// // The uint words of the buffer of a binding.
+// layout(buffer_reference, std430, buffer_reference_align = 4) buffer RsBoundWords {
+//   uint words[];
+// };
+// #define RS_BOUND_WORDS(binding) RsBoundWords(rs_address(binding)).words
+// #endif
+//
 // // Launch index of this ray: (z * height + y) * width + x (a 3D launch's z
 // // layers one below the other).
 // uint rs_launch_index() {
@@ -186,7 +221,9 @@ static const rs_instance rs_instances[] = {
 // }
 //
 // #ifdef RS_USE_TLAS
-// #ifdef RS_TLAS_COUNT
+// #if defined(RS_EMPTY_LAYOUT)
+// #define rs_tlas accelerationStructureEXT(rs_address(RS_BINDING_TLAS))
+// #elif defined(RS_TLAS_COUNT)
 // // Several top levels (scene.instances[].tlas): a trace names one by a constant.
 // layout(set = 0, binding = RS_BINDING_TLAS) uniform accelerationStructureEXT rs_tlas[RS_TLAS_COUNT];
 // #else
@@ -195,9 +232,13 @@ static const rs_instance rs_instances[] = {
 // #endif
 //
 // #ifdef RS_USE_RAYS
+// #ifdef RS_EMPTY_LAYOUT
+// #define rs_rays RS_BOUND_WORDS(RS_BINDING_RAYS)
+// #else
 // layout(set = 0, binding = RS_BINDING_RAYS, std430) readonly buffer RsRays {
 //   uint rs_rays[];
 // };
+// #endif
 //
 // // One ray of the launch, as packed by packRays (RS_RAY_WORDS words).
 // struct RsRay {
@@ -234,10 +275,17 @@ static const rs_instance rs_instances[] = {
 // layout(buffer_reference, std430, buffer_reference_align = 4) buffer RsRecordWords {
 //   uint words[];
 // };
+// #ifdef RS_EMPTY_LAYOUT
+// layout(buffer_reference, std430, buffer_reference_align = 8) readonly buffer RsRecordsRef {
+//   RsRecordWords words_ref;
+// };
+// #define rs_records RsRecordsRef(rs_address(RS_BINDING_RECORDS)).words_ref.words
+// #else
 // layout(set = 0, binding = RS_BINDING_RECORDS, std430) readonly buffer RsRecords {
 //   RsRecordWords rs_records_ref;
 // };
 // #define rs_records rs_records_ref.words
+// #endif
 //
 // // First word of this launch's record.
 // uint rs_record_base() {
@@ -303,9 +351,13 @@ static const rs_instance rs_instances[] = {
 // #endif
 //
 // #ifdef RS_USE_COUNTERS
+// #ifdef RS_EMPTY_LAYOUT
+// #define rs_counters RS_BOUND_WORDS(RS_BINDING_COUNTERS)
+// #else
 // layout(set = 0, binding = RS_BINDING_COUNTERS, std430) buffer RsCounters {
 //   uint rs_counters[];
 // };
+// #endif
 //
 // // Global counter `index` (position of its name in the plan's counters): +1.
 // void rs_count(uint index) {
@@ -595,6 +647,28 @@ static const uint32_t rs_spirv_0[] = {
 // //   RS_USE_SHADER_RECORD  this stage's shader record data (8 words)
 // // Model counterpart: harness/model (records, counters, shader record data).
 //
+// #ifdef RS_EMPTY_LAYOUT
+// // pipeline.layout: empty. The pipeline layout has no descriptor set (and no
+// // push constant): every buffer of set 0 below is reached through its device
+// // address instead, the address of binding b being word pair b of the address
+// // table, whose own address the specialization constants RS_TABLE_LO_ID and
+// // RS_TABLE_HI_ID hold (harness/vulkan/address_table.h); the top level is
+// // made from its address (accelerationStructureEXT(uvec2)).
+// layout(constant_id = RS_TABLE_LO_ID) const uint rs_table_lo = 0u;
+// layout(constant_id = RS_TABLE_HI_ID) const uint rs_table_hi = 0u;
+// layout(buffer_reference, std430, buffer_reference_align = 8) readonly buffer RsAddressTable {
+//   uvec2 address[];
+// };
+// uvec2 rs_address(uint binding) {
+//   return RsAddressTable(uvec2(rs_table_lo, rs_table_hi)).address[binding];
+// }
+// // The uint words of the buffer of a binding.
+// layout(buffer_reference, std430, buffer_reference_align = 4) buffer RsBoundWords {
+//   uint words[];
+// };
+// #define RS_BOUND_WORDS(binding) RsBoundWords(rs_address(binding)).words
+// #endif
+//
 // // Launch index of this ray: (z * height + y) * width + x (a 3D launch's z
 // // layers one below the other).
 // uint rs_launch_index() {
@@ -612,7 +686,9 @@ static const uint32_t rs_spirv_0[] = {
 // }
 //
 // #ifdef RS_USE_TLAS
-// #ifdef RS_TLAS_COUNT
+// #if defined(RS_EMPTY_LAYOUT)
+// #define rs_tlas accelerationStructureEXT(rs_address(RS_BINDING_TLAS))
+// #elif defined(RS_TLAS_COUNT)
 // // Several top levels (scene.instances[].tlas): a trace names one by a constant.
 // layout(set = 0, binding = RS_BINDING_TLAS) uniform accelerationStructureEXT rs_tlas[RS_TLAS_COUNT];
 // #else
@@ -621,9 +697,13 @@ static const uint32_t rs_spirv_0[] = {
 // #endif
 //
 // #ifdef RS_USE_RAYS
+// #ifdef RS_EMPTY_LAYOUT
+// #define rs_rays RS_BOUND_WORDS(RS_BINDING_RAYS)
+// #else
 // layout(set = 0, binding = RS_BINDING_RAYS, std430) readonly buffer RsRays {
 //   uint rs_rays[];
 // };
+// #endif
 //
 // // One ray of the launch, as packed by packRays (RS_RAY_WORDS words).
 // struct RsRay {
@@ -660,10 +740,17 @@ static const uint32_t rs_spirv_0[] = {
 // layout(buffer_reference, std430, buffer_reference_align = 4) buffer RsRecordWords {
 //   uint words[];
 // };
+// #ifdef RS_EMPTY_LAYOUT
+// layout(buffer_reference, std430, buffer_reference_align = 8) readonly buffer RsRecordsRef {
+//   RsRecordWords words_ref;
+// };
+// #define rs_records RsRecordsRef(rs_address(RS_BINDING_RECORDS)).words_ref.words
+// #else
 // layout(set = 0, binding = RS_BINDING_RECORDS, std430) readonly buffer RsRecords {
 //   RsRecordWords rs_records_ref;
 // };
 // #define rs_records rs_records_ref.words
+// #endif
 //
 // // First word of this launch's record.
 // uint rs_record_base() {
@@ -729,9 +816,13 @@ static const uint32_t rs_spirv_0[] = {
 // #endif
 //
 // #ifdef RS_USE_COUNTERS
+// #ifdef RS_EMPTY_LAYOUT
+// #define rs_counters RS_BOUND_WORDS(RS_BINDING_COUNTERS)
+// #else
 // layout(set = 0, binding = RS_BINDING_COUNTERS, std430) buffer RsCounters {
 //   uint rs_counters[];
 // };
+// #endif
 //
 // // Global counter `index` (position of its name in the plan's counters): +1.
 // void rs_count(uint index) {
@@ -838,7 +929,12 @@ static const rs_group rs_groups[] = {
 #define RS_SHADER_COUNT 2
 #define RS_GROUP_COUNT 2
 #define RS_MAX_RECURSION 1u
+#define RS_NEEDS_RAY_QUERY 0
 #define RS_NEEDS_SCALAR_LAYOUT 0
+#define RS_COMPUTE 0
+#define RS_COMPUTE_GROUPS_X 0u
+#define RS_COMPUTE_GROUPS_Y 0u
+#define RS_COMPUTE_GROUPS_Z 0u
 
 /* The shader binding table: each record's group (in the order above) and data. */
 static const rs_record rs_raygen_record = {0u, 0u, {0}};
@@ -920,6 +1016,22 @@ static const rs_counter rs_counters[] = {
   {"closesthit", "R-BUILTIN/R-INST-XFORM", 1ull, 1ull},  /* exact */
 };
 #define RS_COUNTER_COUNT 1u
+
+/* The storage images (outputs.images), one texel a ray (r32ui, or rgba32f for a float
+   field), at bindings from RS_FIRST_IMAGE_BINDING: each compared with the model's
+   texels within the field's tolerance times the image's scale, the pixels of
+   ambiguous and undefined rays left out, at most max_failing pixels differing. */
+#define RS_IMAGE_WIDTH 1u
+#define RS_IMAGE_HEIGHT 1u
+#define RS_FIRST_IMAGE_BINDING 6u
+#define RS_IMAGE_COUNT 0u
+#define RS_IMAGE_SLOTS 1
+static const uint32_t rs_image_none[] = {
+  0
+};
+static const rs_image rs_images[] = {
+  {"", "", 0, 0, 0, 0, 0u, RS_NONE, 0, 0u, 0u, 0u, 0, rs_image_none},
+};
 
 
 
@@ -1023,6 +1135,23 @@ static void rs_pick_device(int argc, char** argv) {
   if (!rs_physical) rs_unsupported("no device with VK_KHR_ray_tracing_pipeline (or none named so)");
 }
 
+/* VK_KHR_ray_query's rayQuery chained onto `on`, where the case's stages run
+ * ray queries; NotSupported where the device lacks it. */
+static void rs_chain_ray_query(VkPhysicalDeviceRayQueryFeaturesKHR* on_rq,
+                               VkPhysicalDeviceFeatures2* on) {
+  VkPhysicalDeviceRayQueryFeaturesKHR rq = {
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
+  VkPhysicalDeviceFeatures2 have = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &rq};
+  if (!RS_NEEDS_RAY_QUERY) return;
+  if (!rs_has_extension(rs_physical, VK_KHR_RAY_QUERY_EXTENSION_NAME))
+    rs_unsupported("ray queries: the device lacks VK_KHR_ray_query");
+  vkGetPhysicalDeviceFeatures2(rs_physical, &have);
+  if (!rq.rayQuery) rs_unsupported("ray queries: the device lacks VK_KHR_ray_query's rayQuery");
+  on_rq->rayQuery = VK_TRUE;
+  on_rq->pNext = on->pNext;
+  on->pNext = on_rq;
+}
+
 static void rs_create_device(void) {
   VkPhysicalDeviceAccelerationStructureFeaturesKHR as = {
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
@@ -1038,9 +1167,11 @@ static void rs_create_device(void) {
   VkPhysicalDeviceVulkan12Features v12_on = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
                                              &rt_on};
   VkPhysicalDeviceFeatures2 on = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v12_on};
-  const char* extensions[] = {VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
-                              VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
-                              VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
+  VkPhysicalDeviceRayQueryFeaturesKHR rq_on = {
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
+  const char* extensions[] = {
+      VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
+      VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME, VK_KHR_RAY_QUERY_EXTENSION_NAME};
   float priority = 1.0f;
   VkDeviceQueueCreateInfo queue = {VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
   VkDeviceCreateInfo info = {VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &on};
@@ -1059,6 +1190,12 @@ static void rs_create_device(void) {
   v12_on.vulkanMemoryModel = v12.vulkanMemoryModel;
   v12_on.vulkanMemoryModelDeviceScope = v12.vulkanMemoryModelDeviceScope;
   on.features.shaderInt64 = have.features.shaderInt64;
+  /* the sized scalars a case's locals may use (harness/program/sized_types.h) */
+  on.features.shaderInt16 = have.features.shaderInt16;
+  on.features.shaderFloat64 = have.features.shaderFloat64;
+  v12_on.shaderInt8 = v12.shaderInt8;
+  v12_on.shaderFloat16 = v12.shaderFloat16;
+  rs_chain_ray_query(&rq_on, &on);
   vkGetPhysicalDeviceQueueFamilyProperties(rs_physical, &count, families);
   for (rs_queue_family = 0; rs_queue_family < count; ++rs_queue_family)
     if (families[rs_queue_family].queueFlags & VK_QUEUE_COMPUTE_BIT) break;
@@ -1068,7 +1205,7 @@ static void rs_create_device(void) {
   queue.pQueuePriorities = &priority;
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queue;
-  info.enabledExtensionCount = 3;
+  info.enabledExtensionCount = RS_NEEDS_RAY_QUERY ? 4 : 3; /* VK_KHR_ray_query last */
   info.ppEnabledExtensionNames = extensions;
   rs_check(vkCreateDevice(rs_physical, &info, NULL, &rs_device), "vkCreateDevice");
   vkGetDeviceQueue(rs_device, rs_queue_family, 0, &rs_queue);
@@ -1171,6 +1308,109 @@ static void rs_submit(VkCommandBuffer cmd) {
   submit.pCommandBuffers = &cmd;
   rs_check(vkQueueSubmit(rs_queue, 1, &submit, VK_NULL_HANDLE), "vkQueueSubmit");
   rs_check(vkQueueWaitIdle(rs_queue), "vkQueueWaitIdle");
+}
+
+/* ---- Storage images (outputs.images) ------------------------------------ */
+
+/* One image: the storage image, its view, and the host buffer it is copied into. */
+typedef struct {
+  VkImage image;
+  VkImageView view;
+  rs_buffer readback;
+} rs_image_target;
+
+static uint32_t rs_image_extent[2]; /* every image's width and height */
+/* The count as a variable: a loop up to a count of 0 draws no warning. */
+static const uint32_t rs_image_count = RS_IMAGE_COUNT;
+
+/* The images' extent, as rayspec's: the launch's, or where that is wider than
+   maxImageDimension2D, the rays in order folded into rows as wide as allowed. */
+static void rs_choose_image_extent(void) {
+  VkPhysicalDeviceProperties p;
+  uint64_t rays = (uint64_t)RS_IMAGE_WIDTH * RS_IMAGE_HEIGHT, most, rows;
+  vkGetPhysicalDeviceProperties(rs_physical, &p);
+  most = p.limits.maxImageDimension2D;
+  rs_image_extent[0] = RS_IMAGE_WIDTH;
+  rs_image_extent[1] = RS_IMAGE_HEIGHT;
+  if (RS_IMAGE_WIDTH <= most && RS_IMAGE_HEIGHT <= most) return;
+  rows = (rays + most - 1) / most;
+  if (rows > most) rs_unsupported("an image of the launch's rays within maxImageDimension2D");
+  rs_image_extent[0] = (uint32_t)most;
+  rs_image_extent[1] = (uint32_t)rows;
+}
+
+static rs_image_target rs_make_image(const rs_image* im) {
+  VkImageCreateInfo info = {VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+  VkImageViewCreateInfo view = {VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+  VkMemoryAllocateInfo alloc = {VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  VkMemoryRequirements req;
+  VkDeviceMemory memory;
+  rs_image_target t;
+  info.imageType = VK_IMAGE_TYPE_2D;
+  info.format = im->is_float ? VK_FORMAT_R32G32B32A32_SFLOAT : VK_FORMAT_R32_UINT;
+  info.extent.width = rs_image_extent[0];
+  info.extent.height = rs_image_extent[1];
+  info.extent.depth = 1;
+  info.mipLevels = info.arrayLayers = 1;
+  info.samples = VK_SAMPLE_COUNT_1_BIT;
+  info.tiling = VK_IMAGE_TILING_OPTIMAL;
+  info.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+               VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  rs_check(vkCreateImage(rs_device, &info, NULL, &t.image), "vkCreateImage");
+  vkGetImageMemoryRequirements(rs_device, t.image, &req);
+  alloc.allocationSize = req.size;
+  alloc.memoryTypeIndex = rs_memory_type(req.memoryTypeBits, 0);
+  rs_check(vkAllocateMemory(rs_device, &alloc, NULL, &memory), "vkAllocateMemory");
+  rs_check(vkBindImageMemory(rs_device, t.image, memory, 0), "vkBindImageMemory");
+  view.image = t.image;
+  view.viewType = VK_IMAGE_VIEW_TYPE_2D;
+  view.format = info.format;
+  view.subresourceRange.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
+  view.subresourceRange.levelCount = view.subresourceRange.layerCount = 1;
+  rs_check(vkCreateImageView(rs_device, &view, NULL, &t.view), "vkCreateImageView");
+  t.readback = rs_make_buffer(
+      (VkDeviceSize)rs_image_extent[0] * rs_image_extent[1] * (im->is_float ? 16 : 4),
+      VK_BUFFER_USAGE_TRANSFER_DST_BIT, NULL);
+  return t;
+}
+
+static const VkImageSubresourceRange rs_whole_image = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+
+/* Before the launch: each image in the general layout, cleared to zero. */
+static void rs_clear_images(VkCommandBuffer cmd, const rs_image_target* images) {
+  const VkClearColorValue zero = {{0, 0, 0, 0}};
+  uint32_t i;
+  for (i = 0; i < rs_image_count; ++i) {
+    VkImageMemoryBarrier b = {VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    b.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    b.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    b.newLayout = VK_IMAGE_LAYOUT_GENERAL;
+    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = images[i].image;
+    b.subresourceRange = rs_whole_image;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                         0, NULL, 0, NULL, 1, &b);
+    vkCmdClearColorImage(cmd, images[i].image, VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &rs_whole_image);
+  }
+  rs_barrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+             VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
+}
+
+/* After the launch: each image copied into its host buffer (tightly packed rows). */
+static void rs_copy_images(VkCommandBuffer cmd, const rs_image_target* images) {
+  uint32_t i;
+  rs_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+  for (i = 0; i < rs_image_count; ++i) {
+    VkBufferImageCopy copy;
+    memset(&copy, 0, sizeof copy);
+    copy.imageSubresource.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
+    copy.imageSubresource.layerCount = 1;
+    copy.imageExtent.width = rs_image_extent[0];
+    copy.imageExtent.height = rs_image_extent[1];
+    copy.imageExtent.depth = 1;
+    vkCmdCopyImageToBuffer(cmd, images[i].image, VK_IMAGE_LAYOUT_GENERAL, images[i].readback.buffer,
+                           1, &copy);
+  }
 }
 
 /* ---- Acceleration structures -------------------------------------------- */
@@ -1364,6 +1604,25 @@ static VkPipeline rs_create_pipeline(VkPipelineLayout layout) {
   return pipeline;
 }
 
+/* Raygen as a compute shader (pipeline.traces: ray_query_compute): a compute
+   pipeline of the one stage. */
+static VkPipeline rs_create_compute_pipeline(VkPipelineLayout layout) {
+  VkShaderModuleCreateInfo module = {VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  VkComputePipelineCreateInfo info = {VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  VkPipeline pipeline;
+  module.codeSize = rs_shaders[0].bytes;
+  module.pCode = rs_shaders[0].code;
+  info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+  info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  info.stage.pName = "main";
+  rs_check(vkCreateShaderModule(rs_device, &module, NULL, &info.stage.module),
+           "vkCreateShaderModule");
+  info.layout = layout;
+  rs_check(vkCreateComputePipelines(rs_device, VK_NULL_HANDLE, 1, &info, NULL, &pipeline),
+           "vkCreateComputePipelines");
+  return pipeline;
+}
+
 /* ---- The shader binding table ------------------------------------------- */
 
 static VkDeviceSize rs_align(VkDeviceSize v, VkDeviceSize a) {
@@ -1449,11 +1708,12 @@ static rs_regions rs_write_sbt(VkPipeline pipeline) {
 
 typedef struct {
   rs_buffer rays, records, records_ref, counters;
-  rs_buffer words[RS_BINDING_COUNT]; /* each RS_BIND_WORDS binding's, by its index */
+  rs_buffer words[RS_BINDING_COUNT];      /* each RS_BIND_WORDS binding's, by its index */
+  rs_image_target images[RS_IMAGE_SLOTS]; /* in rs_images' order */
 } rs_io;
 
 /* The buffers the descriptor set binds: the rays, the records (by address),
-   the counters and each binding of fixed words. */
+   the counters and each binding of fixed words; and the storage images. */
 static rs_io rs_make_io(void) {
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
   rs_io io;
@@ -1466,6 +1726,8 @@ static rs_io rs_make_io(void) {
   for (i = 0; i < RS_BINDING_COUNT; ++i)
     if (rs_bindings[i].kind == RS_BIND_WORDS)
       io.words[i] = rs_make_buffer(rs_bindings[i].bytes, storage, rs_bindings[i].words);
+  if (rs_image_count) rs_choose_image_extent();
+  for (i = 0; i < rs_image_count; ++i) io.images[i] = rs_make_image(&rs_images[i]);
   return io;
 }
 
@@ -1481,9 +1743,16 @@ static const rs_buffer* rs_bound_buffer(uint32_t i, const rs_io* io) {
     case RS_BIND_WORDS:
       return &io->words[i];
     case RS_BIND_TLAS:
+    case RS_BIND_IMAGE:
       break;
   }
   return NULL;
+}
+
+static VkDescriptorType rs_descriptor_type(enum rs_binding_kind kind) {
+  if (kind == RS_BIND_TLAS) return VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+  return kind == RS_BIND_IMAGE ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE
+                               : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 }
 
 static VkDescriptorSet rs_bind(VkDescriptorSetLayout* set_layout, VkAccelerationStructureKHR tlas,
@@ -1491,10 +1760,12 @@ static VkDescriptorSet rs_bind(VkDescriptorSetLayout* set_layout, VkAcceleration
   VkDescriptorSetLayoutBinding b[RS_BINDING_COUNT];
   VkWriteDescriptorSet w[RS_BINDING_COUNT];
   VkDescriptorBufferInfo buffers[RS_BINDING_COUNT];
+  VkDescriptorImageInfo images[RS_BINDING_COUNT];
   VkWriteDescriptorSetAccelerationStructureKHR as = {
       VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
-  VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1},
-                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, RS_BINDING_COUNT}};
+  VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1},
+                                   {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, RS_BINDING_COUNT},
+                                   {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, RS_BINDING_COUNT}};
   VkDescriptorSetLayoutCreateInfo layout = {VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   VkDescriptorPoolCreateInfo pool = {VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   VkDescriptorSetAllocateInfo alloc = {VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
@@ -1506,21 +1777,29 @@ static VkDescriptorSet rs_bind(VkDescriptorSetLayout* set_layout, VkAcceleration
   for (i = 0; i < RS_BINDING_COUNT; ++i) {
     const rs_buffer* src = rs_bound_buffer(i, io);
     int is_tlas = rs_bindings[i].kind == RS_BIND_TLAS;
+    int is_image = rs_bindings[i].kind == RS_BIND_IMAGE;
     memset(&b[i], 0, sizeof b[i]);
     memset(&w[i], 0, sizeof w[i]);
     b[i].binding = w[i].dstBinding = rs_bindings[i].binding;
-    b[i].descriptorType = w[i].descriptorType =
-        is_tlas ? VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    b[i].descriptorType = w[i].descriptorType = rs_descriptor_type(rs_bindings[i].kind);
     b[i].descriptorCount = w[i].descriptorCount = 1;
     b[i].stageFlags = VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_MISS_BIT_KHR |
                       VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR | VK_SHADER_STAGE_ANY_HIT_BIT_KHR |
-                      VK_SHADER_STAGE_INTERSECTION_BIT_KHR | VK_SHADER_STAGE_CALLABLE_BIT_KHR;
+                      VK_SHADER_STAGE_INTERSECTION_BIT_KHR | VK_SHADER_STAGE_CALLABLE_BIT_KHR |
+                      VK_SHADER_STAGE_COMPUTE_BIT;
     w[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
     buffers[i].buffer = src ? src->buffer : VK_NULL_HANDLE;
     buffers[i].offset = 0;
     buffers[i].range = VK_WHOLE_SIZE;
+    memset(&images[i], 0, sizeof images[i]);
+    if (is_image) {
+      images[i].imageView = io->images[rs_bindings[i].binding - RS_FIRST_IMAGE_BINDING].view;
+      images[i].imageLayout = VK_IMAGE_LAYOUT_GENERAL;
+    }
     if (is_tlas)
       w[i].pNext = &as;
+    else if (is_image)
+      w[i].pImageInfo = &images[i];
     else
       w[i].pBufferInfo = &buffers[i];
   }
@@ -1529,7 +1808,7 @@ static VkDescriptorSet rs_bind(VkDescriptorSetLayout* set_layout, VkAcceleration
   rs_check(vkCreateDescriptorSetLayout(rs_device, &layout, NULL, set_layout),
            "vkCreateDescriptorSetLayout");
   pool.maxSets = 1;
-  pool.poolSizeCount = 2;
+  pool.poolSizeCount = 3;
   pool.pPoolSizes = sizes;
   rs_check(vkCreateDescriptorPool(rs_device, &pool, NULL, &pool_handle), "vkCreateDescriptorPool");
   alloc.descriptorPool = pool_handle;
@@ -1693,7 +1972,139 @@ static int rs_compare(const uint32_t* records, const uint32_t* counters) {
   return failures;
 }
 
-/* ---- main: build, trace, read back, compare ----------------------------- */
+/* ---- The images against the model's ------------------------------------- */
+
+static const uint32_t rs_image_rays = RS_RAY_COUNT; /* a texel a ray */
+
+/* Whether a ray's pixel is left out of image `im`, as the judge leaves it out:
+   an ambiguous ray (its legal answers differ by design), a ray with undefined
+   behaviour (R-UB), or one whose field a repeated any-hit may change (R-AHIT-DUP). */
+static int rs_pixel_left_out(const rs_image* im, uint32_t ray) {
+  return rs_undefined[ray] || rs_ambiguity(ray) ||
+         (im->has_field && ((rs_rules_of(ray).skip >> im->bit) & 1u));
+}
+
+/* How far an observed texel is from the expected one, in allowances (the
+   judge's prepareImagePair; above 1 fails): ids 2 where they differ; floats
+   |observed - expected| over the field's tolerance times the image's scale, NaN
+   equal only to NaN. */
+static float rs_texel_error(const rs_image* im, uint32_t d, uint32_t m) {
+  float df = rs_float(d), mf = rs_float(m);
+  double allowance, error;
+  if (d == m) return 0.0f;
+  if (!im->is_float) return 2.0f;
+  if (rs_nan(df) || rs_nan(mf)) return rs_nan(df) && rs_nan(mf) ? 0.0f : 1e30f;
+  if (df == mf) return 0.0f;
+  allowance =
+      (im->abs + im->rel * (rs_abs((double)mf) > 1.0 ? rs_abs((double)mf) : 1.0)) * im->scale;
+  error = rs_abs((double)df - (double)mf) / allowance;
+  return (float)(error < 1e30 ? error : 1e30);
+}
+
+static void rs_print_texel(const rs_image* im, uint32_t t) {
+  if (im->is_float)
+    printf("%.9g", (double)rs_float(t));
+  else
+    printf("%u", t);
+}
+
+/* The pixels of image i that differ from the model's beyond the tolerance
+   (the left-out ones aside); FAIL printed when more than the case allows. */
+static int rs_check_image(uint32_t i, const uint32_t* texels) {
+  const rs_image* im = &rs_images[i];
+  const uint32_t channels = im->is_float ? 4 : 1;
+  uint32_t ray, k, failing = 0, first = 0, first_channel = 0;
+  for (ray = 0; ray < rs_image_rays; ++ray) {
+    int fails = 0;
+    if (rs_pixel_left_out(im, ray)) continue;
+    for (k = 0; k < channels && !fails; ++k) {
+      const size_t at = (size_t)ray * channels + k;
+      fails = rs_texel_error(im, texels[at], im->expected[at]) > 1.0f;
+      if (fails && !failing) first = ray, first_channel = k;
+    }
+    failing += fails ? 1u : 0u;
+  }
+  if (failing <= im->max_failing) return 1;
+  printf(
+      "FAIL: image: image '%s' differs from the model in %u pixels (%u allowed); first: "
+      "pixel %u, channel %u: expected ",
+      im->name, failing, im->max_failing, first, first_channel);
+  rs_print_texel(im, im->expected[(size_t)first * channels + first_channel]);
+  printf(", observed ");
+  rs_print_texel(im, texels[(size_t)first * channels + first_channel]);
+  printf(" ('%s')\n", im->field);
+  return 0;
+}
+
+/* On the ambiguous rays, image i shows the device's own record of its field
+   (the judge's compareImagesToRecords): the first ray where it does not, or RS_NONE. */
+static uint32_t rs_image_unlike_records(uint32_t i, const uint32_t* texels,
+                                        const uint32_t* records) {
+  const rs_image* im = &rs_images[i];
+  const uint32_t channels = im->is_float ? 4 : 1;
+  const uint32_t shown = im->words < channels ? im->words : channels;
+  uint32_t a, k;
+  if (!RS_RECORDS_JUDGED || !im->has_field) return RS_NONE;
+  for (a = 0; a < rs_ambiguous_count; ++a) {
+    const uint32_t ray = rs_ambiguous_rays[a].ray;
+    const uint32_t* rec = records + (size_t)ray * RS_RECORD_WORDS;
+    if (!im->automatic && !((rec[im->bit / 32] >> (im->bit % 32)) & 1u)) continue;
+    for (k = 0; k < shown; ++k)
+      if (texels[(size_t)ray * channels + k] != rec[im->offset + k]) return ray;
+  }
+  return RS_NONE;
+}
+
+/* Images the case declares equal (equal_to) are equal texel for texel. */
+static int rs_check_equal_images(uint32_t i, const rs_image_target* targets) {
+  const rs_image* im = &rs_images[i];
+  const size_t words = (size_t)rs_image_rays * (im->is_float ? 4 : 1);
+  if (im->equal_to == RS_NONE) return 1;
+  if (!memcmp(targets[i].readback.mapped, targets[im->equal_to].readback.mapped, words * 4))
+    return 1;
+  printf("FAIL: image: images '%s' and '%s' differ on the device (equal_to: texel for texel)\n",
+         im->name, rs_images[im->equal_to].name);
+  return 0;
+}
+
+static int rs_compare_images(const rs_image_target* targets, const uint32_t* records) {
+  uint32_t i, ray;
+  int failures = 0;
+  for (i = 0; i < rs_image_count; ++i) {
+    const uint32_t* texels = (const uint32_t*)targets[i].readback.mapped;
+    failures += !rs_check_image(i, texels);
+    failures += !rs_check_equal_images(i, targets);
+    ray = rs_image_unlike_records(i, texels, records);
+    if (ray == RS_NONE) continue;
+    printf(
+        "FAIL: image: ray %u (numerically ambiguous): image '%s' shows another value than "
+        "the device's own record of '%s'\n",
+        ray, rs_images[i].name, rs_images[i].field);
+    ++failures;
+  }
+  return failures;
+}
+
+/* ---- main: build, trace (or dispatch), read back, compare --------------- */
+
+/* The ray tracing pipeline, its SBT and the trace, recorded into cmd. */
+static void rs_record_trace(VkCommandBuffer cmd, VkPipelineLayout layout, VkDescriptorSet set) {
+  VkPipeline pipeline = rs_create_pipeline(layout);
+  rs_regions sbt = rs_write_sbt(pipeline);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, layout, 0, 1, &set, 0, NULL);
+  rs_cmd_trace(cmd, &sbt.raygen, &sbt.miss, &sbt.hit, &sbt.callable, RS_LAUNCH_WIDTH,
+               RS_LAUNCH_HEIGHT, RS_LAUNCH_DEPTH);
+}
+
+/* Raygen's compute pipeline and the dispatch that covers the launch (RS_COMPUTE). */
+static void rs_record_dispatch(VkCommandBuffer cmd, VkPipelineLayout layout, VkDescriptorSet set) {
+  VkPipeline pipeline = rs_create_compute_pipeline(layout);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout, 0, 1, &set, 0, NULL);
+  if (RS_COMPUTE_GROUPS_X)
+    vkCmdDispatch(cmd, RS_COMPUTE_GROUPS_X, RS_COMPUTE_GROUPS_Y, RS_COMPUTE_GROUPS_Z);
+}
 
 int main(int argc, char** argv) {
   rs_io io;
@@ -1701,10 +2112,8 @@ int main(int argc, char** argv) {
   VkDescriptorSetLayout set_layout;
   VkPipelineLayoutCreateInfo layout_info = {VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   VkPipelineLayout layout;
-  VkPipeline pipeline;
   VkDescriptorSet set;
   VkCommandBuffer cmd;
-  rs_regions sbt;
   int failures;
   printf("case: %s\n", RS_CASE_NAME);
   rs_create_instance();
@@ -1718,21 +2127,22 @@ int main(int argc, char** argv) {
   layout_info.pSetLayouts = &set_layout;
   rs_check(vkCreatePipelineLayout(rs_device, &layout_info, NULL, &layout),
            "vkCreatePipelineLayout");
-  pipeline = rs_create_pipeline(layout);
-  sbt = rs_write_sbt(pipeline);
   cmd = rs_begin();
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, layout, 0, 1, &set, 0, NULL);
-  rs_cmd_trace(cmd, &sbt.raygen, &sbt.miss, &sbt.hit, &sbt.callable, RS_LAUNCH_WIDTH,
-               RS_LAUNCH_HEIGHT, RS_LAUNCH_DEPTH);
+  rs_clear_images(cmd, io.images);
+  if (RS_COMPUTE)
+    rs_record_dispatch(cmd, layout, set);
+  else
+    rs_record_trace(cmd, layout, set);
+  rs_copy_images(cmd, io.images);
   rs_submit(cmd);
   failures = rs_compare((const uint32_t*)io.records.mapped, (const uint32_t*)io.counters.mapped);
+  failures += rs_compare_images(io.images, (const uint32_t*)io.records.mapped);
   vkDeviceWaitIdle(rs_device);
   if (failures) {
     printf("FAIL: %d of the checks differ from the reference model\n", failures);
     return 1;
   }
-  printf("PASS: %u rays and %u counters as the reference model expects\n", (unsigned)rs_ray_count,
-         (unsigned)RS_COUNTER_COUNT);
+  printf("PASS: %u rays, %u counters and %u images as the reference model expects\n",
+         (unsigned)rs_ray_count, (unsigned)RS_COUNTER_COUNT, (unsigned)RS_IMAGE_COUNT);
   return 0;
 }
