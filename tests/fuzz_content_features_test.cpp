@@ -43,11 +43,12 @@ rays:
   list: [{origin: [0.2, 0.2, 5], direction: [0, 0, -1]}]
 pipeline:
   max_recursion: 2
-  miss: [[{record: {hit: 0}}]]
+  miss: [[{record: {hit: 0, color: {vec4: [{x: world_ray_direction}, 0.0, 0.0, 1.0]}}}]]
   hit_groups:
     - closest_hit: [{trace: {origin: world_ray_origin, direction: [0, 0, -1]}}, {record: {value: primitive_id}}]
+    - {}
 outputs:
-  per_ray: [hit, value]
+  per_ray: [hit, value, color]
 )";
   const std::set<std::string> all(contentFeatureNames().begin(), contentFeatureNames().end());
   EXPECT_EQ(contentFeatures(text), all);
@@ -60,6 +61,11 @@ outputs:
   other.replace(other.find("[{trace:"), before.size(), before);
   EXPECT_EQ(contentFeatures(other).count("nan-vertex"), 0u);
   EXPECT_EQ(contentFeatures(other).count("hit-builtin-after-trace"), 0u);
+  // A miss that reads no world ray beside the group without shaders.
+  std::string plain = text;
+  plain.replace(plain.find("{x: world_ray_direction}"), 24, "0.5");
+  EXPECT_EQ(contentFeatures(plain).count("miss-world-ray-beside-empty-group"), 0u);
+  EXPECT_EQ(contentFeatures(plain).size(), all.size() - 1);
   EXPECT_TRUE(contentFeatures("not: [a case").empty());
 }
 
