@@ -26,6 +26,7 @@ inline DeviceInfo capableDevice() {
   d.descriptor_indexing = true;
   d.acceleration_structure_host_commands = d.acceleration_structure_indirect_build = true;
   d.acceleration_structure_update_after_bind = d.sparse_binding = d.sparse_binding_queue = true;
+  d.shader_int8 = d.shader_int16 = d.shader_int64 = d.shader_float16 = d.shader_float64 = true;
   for (const auto& row : enumNames<VertexFormat>()) d.vertex_formats.push_back(row.name);
   return d;
 }

@@ -204,8 +204,10 @@ void TraceClassifier::tryUnsure() {
   std::vector<WhatIfAnswer> leaks;
   for (const WhatIfAnswer& a : unsureAnswers(leaks)) {
     noteUnsureForce(a.how.force);
+    if (!sameAsCommitted(a.best) && !reason_) reason_ = AmbiguityReason::AabbFace;
+    // A tied candidate preferred (withTies) answers a t-tie, not a box face.
     for (const WhatIfAnswer& b : withTies(a)) {
-      if (!sameAsCommitted(b.best) && !reason_) reason_ = AmbiguityReason::AabbFace;
+      if (!sameAsCommitted(b.best) && !reason_) reason_ = AmbiguityReason::TTie;
       addCommitted(b.best, b.how);
     }
   }
