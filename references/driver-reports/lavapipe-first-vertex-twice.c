@@ -276,10 +276,14 @@ static const rs_instance rs_instances[] = {
 //   uint words[];
 // };
 // #ifdef RS_EMPTY_LAYOUT
+// // The words' address read as two uints, not as a reference: a reference
+// // loaded through a PhysicalStorageBuffer pointer needs an 8-byte Aligned
+// // operand that Debian 12's glslang does not give it (newer spirv-val:
+// // VUID-StandaloneSpirv-PhysicalStorageBuffer64-06314).
 // layout(buffer_reference, std430, buffer_reference_align = 8) readonly buffer RsRecordsRef {
-//   RsRecordWords words_ref;
+//   uvec2 words_address;
 // };
-// #define rs_records RsRecordsRef(rs_address(RS_BINDING_RECORDS)).words_ref.words
+// #define rs_records RsRecordWords(RsRecordsRef(rs_address(RS_BINDING_RECORDS)).words_address).words
 // #else
 // layout(set = 0, binding = RS_BINDING_RECORDS, std430) readonly buffer RsRecords {
 //   RsRecordWords rs_records_ref;
@@ -741,10 +745,14 @@ static const uint32_t rs_spirv_0[] = {
 //   uint words[];
 // };
 // #ifdef RS_EMPTY_LAYOUT
+// // The words' address read as two uints, not as a reference: a reference
+// // loaded through a PhysicalStorageBuffer pointer needs an 8-byte Aligned
+// // operand that Debian 12's glslang does not give it (newer spirv-val:
+// // VUID-StandaloneSpirv-PhysicalStorageBuffer64-06314).
 // layout(buffer_reference, std430, buffer_reference_align = 8) readonly buffer RsRecordsRef {
-//   RsRecordWords words_ref;
+//   uvec2 words_address;
 // };
-// #define rs_records RsRecordsRef(rs_address(RS_BINDING_RECORDS)).words_ref.words
+// #define rs_records RsRecordWords(RsRecordsRef(rs_address(RS_BINDING_RECORDS)).words_address).words
 // #else
 // layout(set = 0, binding = RS_BINDING_RECORDS, std430) readonly buffer RsRecords {
 //   RsRecordWords rs_records_ref;
