@@ -165,6 +165,26 @@ TEST(DeviceErrors, TheCullMaskBuiltinWithoutMaintenance1IsNotSupported) {
       << lacking.error().message;
 }
 
+// The link-time pipeline flags need VK_EXT_graphics_pipeline_library
+// (enabled where offered); without it the case is NotSupported, named.
+TEST(DeviceErrors, LinkTimeFlagsWithoutGraphicsPipelineLibraryAreNotSupported) {
+  for (const char* name : {"anyhit/through-libraries/nested-link-time-optimization",
+                           "anyhit/through-libraries/nested-retain-link-time-info"}) {
+    SCOPED_TRACE(name);
+    const Case c = suiteCase(name);
+    ASSERT_FALSE(c.name.empty());
+    VulkanContext ctx = ampleContext();
+    ctx.info.pipeline_library = ctx.info.graphics_pipeline_library = true;
+    EXPECT_TRUE(checkCaseSupport(ctx, c, derivePlan(c)).ok());
+    ctx.info.graphics_pipeline_library = false;
+    const Result<void> lacking = checkCaseSupport(ctx, c, derivePlan(c));
+    ASSERT_FALSE(lacking);
+    EXPECT_EQ(lacking.error().kind, ErrorKind::NotSupported);
+    EXPECT_NE(lacking.error().message.find("VK_EXT_graphics_pipeline_library"), std::string::npos)
+        << lacking.error().message;
+  }
+}
+
 // A sized scalar needs its device feature: each missing one is
 // NotSupported, the feature named (program/sized_types.h's column).
 TEST(DeviceErrors, ASizedScalarWithoutItsFeatureIsNotSupported) {

@@ -37,12 +37,15 @@ const FlagTable& rayFlagNames() {
 }
 
 const FlagTable& pipelineFlagNames() {
-  static const FlagTable t = {{"skip_triangles", kPipelineSkipTriangles},
-                              {"skip_aabbs", kPipelineSkipAabbs},
-                              {"no_null_any_hit", kPipelineNoNullAnyHit},
-                              {"no_null_closest_hit", kPipelineNoNullClosestHit},
-                              {"no_null_miss", kPipelineNoNullMiss},
-                              {"no_null_intersection", kPipelineNoNullIntersection}};
+  static const FlagTable t = {
+      {"skip_triangles", kPipelineSkipTriangles},
+      {"skip_aabbs", kPipelineSkipAabbs},
+      {"no_null_any_hit", kPipelineNoNullAnyHit},
+      {"no_null_closest_hit", kPipelineNoNullClosestHit},
+      {"no_null_miss", kPipelineNoNullMiss},
+      {"no_null_intersection", kPipelineNoNullIntersection},
+      {"link_time_optimization", kPipelineLinkTimeOptimization},
+      {"retain_link_time_optimization_info", kPipelineRetainLinkTimeOptimizationInfo}};
   return t;
 }
 

@@ -12,7 +12,7 @@ using FlagTable = std::vector<std::pair<const char*, uint32_t>>;
 const FlagTable& geometryFlagNames();  // opaque, no_duplicate_any_hit
 const FlagTable& instanceFlagNames();  // triangle_facing_cull_disable, ...
 const FlagTable& rayFlagNames();       // opaque, no_opaque, terminate_on_first_hit, ...
-const FlagTable& pipelineFlagNames();  // skip_triangles, skip_aabbs, no_null_*
+const FlagTable& pipelineFlagNames();  // skip_triangles, skip_aabbs, no_null_*, link-time
 const FlagTable& buildFlagNames();     // prefer_fast_trace, prefer_fast_build, ...
 
 // VkPipelineCreateFlagBits values of the pipeline flags.
@@ -26,6 +26,13 @@ constexpr uint32_t kPipelineNoNullMiss = 0x10000;
 constexpr uint32_t kPipelineNoNullIntersection = 0x20000;
 constexpr uint32_t kPipelineNoNullShaders = kPipelineNoNullAnyHit | kPipelineNoNullClosestHit |
                                             kPipelineNoNullMiss | kPipelineNoNullIntersection;
+// VK_EXT_graphics_pipeline_library's link-time bits, set on the pipeline
+// and every library it links (as VK-GL-CTS's pipeline_library misc cases
+// do): they may change how a driver compiles, never what a shader observes.
+constexpr uint32_t kPipelineLinkTimeOptimization = 0x400;
+constexpr uint32_t kPipelineRetainLinkTimeOptimizationInfo = 0x800000;
+constexpr uint32_t kPipelineLinkTimeFlags =
+    kPipelineLinkTimeOptimization | kPipelineRetainLinkTimeOptimizationInfo;
 
 // VkBuildAccelerationStructureFlagBitsKHR values of scene.build.flags.
 constexpr uint32_t kBuildAllowUpdate = 0x1;

@@ -190,6 +190,10 @@ Result<void> checkCaseSupport(const DeviceInfo& d, uint32_t validation_layer, co
         "cull_mask: gl_CullMaskEXT needs VK_KHR_ray_tracing_maintenance1 (rayTracingMaintenance1)");
   if (!c.pipeline.libraries.empty() && !d.pipeline_library)
     return notSupported("pipeline.libraries: the device lacks VK_KHR_pipeline_library");
+  if ((c.pipeline.flags & kPipelineLinkTimeFlags) && !d.graphics_pipeline_library)
+    return notSupported(
+        "pipeline.flags link_time_optimization, retain_link_time_optimization_info: the device "
+        "lacks VK_EXT_graphics_pipeline_library");
   if (c.pipeline.deferred_threads) RAYSPEC_TRY_VOID(checkDeferred(d, validation_layer));
   if (c.pipeline.max_recursion > d.max_ray_recursion_depth)
     return notSupported("max_recursion " + std::to_string(c.pipeline.max_recursion) +

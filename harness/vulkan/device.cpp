@@ -61,6 +61,8 @@ std::vector<const char*> deviceExtensions(const VulkanContext& ctx) {
                                          VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
                                          VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
   if (ctx.info.pipeline_library) extensions.push_back(VK_KHR_PIPELINE_LIBRARY_EXTENSION_NAME);
+  if (ctx.info.graphics_pipeline_library)
+    extensions.push_back(VK_EXT_GRAPHICS_PIPELINE_LIBRARY_EXTENSION_NAME);
   if (ctx.info.ray_tracing_maintenance1)
     extensions.push_back(VK_KHR_RAY_TRACING_MAINTENANCE_1_EXTENSION_NAME);
   if (ctx.position_fetch) extensions.push_back(kPositionFetchExtension);

@@ -114,6 +114,10 @@ using DeviceLaunchSize = std::array<uint64_t, 3>;
     "the ray tracing pipeline feature (skip_triangles, skip_aabbs)")                               \
   X(bool, pipeline_library, "pipeline_library", "VK_KHR_pipeline_library",                         \
     "VK_KHR_pipeline_library is offered")                                                          \
+  X(bool, graphics_pipeline_library, "graphics_pipeline_library",                                  \
+    "VK_EXT_graphics_pipeline_library",                                                            \
+    "offered with VK_KHR_pipeline_library (pipeline.flags link_time_optimization, "                \
+    "retain_link_time_optimization_info)")                                                         \
   X(bool, ray_query, "ray_query", "VK_KHR_ray_query",                                              \
     "VK_KHR_ray_query and its rayQuery feature (--through ray-query)")                             \
   X(bool, opacity_micromap, "opacity_micromap", "VK_EXT_opacity_micromap",                         \

@@ -49,6 +49,9 @@ void readExtensions(VkPhysicalDevice physical, DeviceInfo& d) {
   d.ray_tracing_maintenance1 =
       hasDeviceExtension(exts, VK_KHR_RAY_TRACING_MAINTENANCE_1_EXTENSION_NAME);
   d.position_fetch = hasDeviceExtension(exts, kPositionFetchExtension);
+  d.graphics_pipeline_library =
+      d.pipeline_library &&
+      hasDeviceExtension(exts, VK_EXT_GRAPHICS_PIPELINE_LIBRARY_EXTENSION_NAME);
   d.library_group_handles =
       d.pipeline_library && hasDeviceExtension(exts, kLibraryGroupHandlesExtension);
 }
