@@ -227,7 +227,8 @@ uint64_t doubleHitSlack(const Plan& plan, const std::string& name, const Results
   const std::vector<const RecordField*> fields = comparedRecordFields(plan);
   uint64_t slack = 0;
   for (const RayAmbiguity& a : model.ambiguous) {
-    if (a.double_replays.empty() || (static_cast<size_t>(a.ray) + 1) * words > device.records.size())
+    if (a.double_replays.empty() ||
+        (static_cast<size_t>(a.ray) + 1) * words > device.records.size())
       continue;
     const uint32_t* d = &device.records[static_cast<size_t>(a.ray) * words];
     uint64_t most = 0;

@@ -251,8 +251,8 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
   FindingBuilder doubled = watertightWarning(
       "double hit: any-hit ran on several of the triangles closing around a shared edge or vertex "
       "(the record is what the model leaves running their any-hits so)");
-  const AmbiguousJudge judge{c,     traceShape(c), queryReachedFields(c), fields, wrongs,
-                             leak,  passed,        doubled};
+  const AmbiguousJudge judge{c,      traceShape(c), queryReachedFields(c), fields, wrongs, leak,
+                             passed, doubled};
 
   for (size_t i = 0; i < rays; ++i) {
     const uint32_t* d = &device.records[i * words];

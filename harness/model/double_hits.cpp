@@ -35,8 +35,8 @@ bool TraceClassifier::anyHitRunsOn(const std::vector<size_t>& group) const {
     const ModelCandidate& cand = cands_[k];
     const ModelInstance& mi = scene.instances[cand.instance];
     const ModelGeometry& g = scene.blases[mi.blas].geometries[cand.geometry];
-    const CHitGroup* grp = groupOf(*m_.sh_.programs, m_.sbt_.hit(cand.instance, cand.geometry,
-                                                                 tr_.ray));
+    const CHitGroup* grp =
+        groupOf(*m_.sh_.programs, m_.sbt_.hit(cand.instance, cand.geometry, tr_.ray));
     return !resolveOpaque(g.flags, mi.src->flags, tr_.flags) && grp && grp->any_hit;
   });
 }
@@ -56,7 +56,8 @@ WhatIf TraceClassifier::doubleHit(const std::vector<size_t>& group,
   std::iota(how.order.begin(), how.order.end(), 0u);
   std::vector<size_t> places = group;
   std::sort(places.begin(), places.end());
-  for (size_t p = 0; p < places.size(); ++p) how.order[places[p]] = static_cast<uint32_t>(members[p]);
+  for (size_t p = 0; p < places.size(); ++p)
+    how.order[places[p]] = static_cast<uint32_t>(members[p]);
   return how;
 }
 
@@ -67,9 +68,8 @@ bool TraceClassifier::doubleHitsShow() const {
   const std::vector<size_t>& group = shared_group_;
   return !tr_.query && group.size() >= 2 && group.size() <= 64 && anyHitRunsOn(group) &&
          closesAroundRay(scene_, cands_, group, tr_.ray, tr_.flags) &&
-         std::none_of(group.begin(), group.end(), [&](size_t k) {
-           return tr_.nearTmin(cands_[k]) || tr_.nearTmax(cands_[k]);
-         });
+         std::none_of(group.begin(), group.end(),
+                      [&](size_t k) { return tr_.nearTmin(cands_[k]) || tr_.nearTmax(cands_[k]); });
 }
 
 // A device that is not watertight may hit two or more of the triangles that
