@@ -60,9 +60,12 @@ struct FanRun {
   Results model;
 };
 
-FanRun fanRun() {
+// `flags`: the fan geometry's.
+FanRun fanRun(const std::string& flags = "[]") {
+  std::string yaml = kFanCase;
+  yaml.replace(yaml.find("flags: []"), 9, "flags: " + flags);
   FanRun j;
-  j.c = parseInline(kFanCase, "model/double-hit-fan");
+  j.c = parseInline(yaml, "model/double-hit-fan");
   j.plan = derivePlan(j.c);
   j.model = runOnModel(j.c, j.plan, ModelOptions{});
   return j;
@@ -153,6 +156,20 @@ TEST(DoubleHit, OneTriangleOfTheFanPassesAndSeveralAreAQualityWarning) {
   EXPECT_TRUE(hasFinding(three, Status::QualityWarning, "R-WATERTIGHT", "double hit"));
   // All six.
   EXPECT_EQ(judgeValue(j, 0, 63u).status, Status::QualityWarning);
+}
+
+// With NO_DUPLICATE_ANY_HIT_INVOCATION (the ahit counter exact): the same
+// QualityWarning, and more any-hit runs counted than the records show fail.
+TEST(DoubleHit, UnderNoDuplicateAnyHitTooAndCountsBeyondItFail) {
+  const FanRun j = fanRun("[no_duplicate_any_hit]");
+  const Verdict three = judgeValue(j, 0, (1u << 1) | (1u << 2) | (1u << 4));
+  EXPECT_EQ(three.status, Status::QualityWarning) << three.headline();
+  // The model's records with three any-hit runs more counted than they show.
+  Results device = perfectDevice(j.c, j.model);
+  const Verdict own = compareResults(j.c, j.plan, device, j.model);
+  EXPECT_EQ(own.status, Status::Pass) << own.headline();
+  device.counters["ahit"] += 3;
+  EXPECT_EQ(compareResults(j.c, j.plan, device, j.model).status, Status::Fail);
 }
 
 TEST(DoubleHit, AValueNoSetOfTheTrianglesLeavesStillFails) {

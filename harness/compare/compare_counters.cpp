@@ -1,5 +1,4 @@
 #include <algorithm>
-#include <cstdlib>
 #include <optional>
 #include <set>
 
@@ -217,30 +216,6 @@ uint64_t leakSlack(const Case& c, const std::string& name, const Results& device
   return leaky.ambiguous.empty() ? 0 : answersSlack(c, name, leaky);
 }
 
-// R-WATERTIGHT: how far the rays whose device records are double-hit
-// replays (RayAmbiguity::double_replays: any-hit ran on several triangles
-// closing around the ray) may move the counter besides, each by the most
-// the replays its record is move it; 0 where the records show none.
-uint64_t doubleHitSlack(const Plan& plan, const std::string& name, const Results& device,
-                        const Results& model) {
-  const uint32_t words = recordWords();
-  const std::vector<const RecordField*> fields = comparedRecordFields(plan);
-  uint64_t slack = 0;
-  for (const RayAmbiguity& a : model.ambiguous) {
-    if (a.double_replays.empty() ||
-        (static_cast<size_t>(a.ray) + 1) * words > device.records.size())
-      continue;
-    const uint32_t* d = &device.records[static_cast<size_t>(a.ray) * words];
-    uint64_t most = 0;
-    for (const LegalReplay& r : a.double_replays)
-      if (const auto it = r.counter_moves.find(name);
-          it != r.counter_moves.end() && replayMatches(r, d, fields, RayBounds{}))
-        most = std::max(most, static_cast<uint64_t>(std::llabs(it->second)));
-    slack += most;
-  }
-  return slack;
-}
-
 void compareCounters(const Case& c, const Plan& plan, const Results& device, const Results& model,
                      size_t undefined_rays, Verdict& v) {
   auto modes = counterModes(c);
@@ -289,15 +264,14 @@ void compareCounters(const Case& c, const Plan& plan, const Results& device, con
     all_within = all_within && ok;
     if (ok && mode == CounterMode::Exact && slack.replayed)
       together[name] = static_cast<int64_t>(d) - static_cast<int64_t>(m);
-    const uint64_t leaks =
-        ok ? 0 : leakSlack(c, name, device, model) + doubleHitSlack(plan, name, device, model);
+    const uint64_t leaks = ok ? 0 : leakSlack(c, name, device, model);
     if (!ok && withinSlack(mode, d, m, {slack.below + leaks, slack.above + leaks, false})) {
       f.status = Status::QualityWarning;
       f.rule = "R-WATERTIGHT";
       f.evidence.clear();
       f.message = values +
                   " (beyond what the legal answers allow, within what passing between "
-                  "the triangles of shared edges, or hitting several of them, moves it)";
+                  "the triangles of shared edges moves it)";
       v.add(f);
     } else if (!ok) {
       f.status = Status::Fail;
