@@ -62,7 +62,9 @@ Results sampleResults() {
 TEST(ResultsIo, BundleRoundTripsEveryField) {
   const std::string dir = testing::TempDir() + "/rayspec-results-io";
   std::filesystem::remove_all(dir);
-  const Results r = sampleResults();
+  Results r = sampleResults();
+  // A double-hit replay (RayAmbiguity::double_replays) after the two.
+  r.ambiguous[0].double_replays = {{std::vector<uint32_t>(recordWords(), 9), {{"miss", 2}}}};
   ASSERT_TRUE(writeResults(r, dir, {"hit_t"}).ok());
   std::string error;
   const Results back = orError(readResults(dir), &error);
@@ -80,6 +82,7 @@ TEST(ResultsIo, BundleRoundTripsEveryField) {
   EXPECT_EQ(back.ambiguous[0].candidates[1].primitive, 2u);
   EXPECT_EQ(back.ambiguous[0].shared_triangles.size(), 2u);
   EXPECT_EQ(back.ambiguous[0].replays, r.ambiguous[0].replays);
+  EXPECT_EQ(back.ambiguous[0].double_replays, r.ambiguous[0].double_replays);
   EXPECT_TRUE(back.ambiguous[0].from_query);
   ASSERT_EQ(back.repeat_dependent.size(), 1u);
   EXPECT_EQ(back.repeat_dependent[0].ray, 2u);

@@ -161,12 +161,13 @@ json replaysJson(const std::vector<LegalReplay>& replays) {
   return out;
 }
 
-// The records of every ambiguous ray's replays, then its leak replays, ray
-// after ray, into replays.bin (none where the case keeps no records).
+// The records of every ambiguous ray's replays, then its leak replays and
+// double-hit replays, ray after ray, into replays.bin (none where the case
+// keeps no records).
 Result<void> writeReplayRecords(const Results& r, const fs::path& dir) {
   std::vector<uint32_t> words;
   for (const RayAmbiguity& a : r.ambiguous)
-    for (const auto* list : {&a.replays, &a.leak_replays})
+    for (const auto* list : {&a.replays, &a.leak_replays, &a.double_replays})
       for (const LegalReplay& k : *list)
         words.insert(words.end(), k.record.begin(), k.record.end());
   return writeWords(dir / "replays.bin", words);
@@ -183,7 +184,8 @@ void writeRayNotes(const Results& r, json& j) {
                               {"shared_triangles", candidatesJson(a.shared_triangles)},
                               {"leak_answers", candidatesJson(a.leak_answers)},
                               {"replays", replaysJson(a.replays)},
-                              {"leak_replays", replaysJson(a.leak_replays)}});
+                              {"leak_replays", replaysJson(a.leak_replays)},
+                              {"double_replays", replaysJson(a.double_replays)}});
   for (size_t k = 0; k < r.ambiguous.size(); ++k)  // written only where not 1
     if (r.ambiguous[k].traces != 1) j["ambiguous"][k]["traces"] = r.ambiguous[k].traces;
   for (size_t k = 0; k < r.ambiguous.size(); ++k)  // written only where a ray query's
@@ -401,8 +403,9 @@ Result<std::vector<Candidate>> readCandidates(FieldReader& field, const json& ja
   return out;
 }
 
-// An ambiguous ray's replays or leak replays (ambiguous.replays,
-// ambiguous.leak_replays: `key`; absent in older bundles: none), each one's
+// An ambiguous ray's replays, leak or double-hit replays (ambiguous.replays,
+// ambiguous.leak_replays, ambiguous.double_replays: `key`; absent in older
+// bundles: none), each one's
 // counter moves: a counter of the bundle's, by a signed 64-bit integer.
 // Their records come from replays.bin (readReplayRecords).
 Result<std::vector<LegalReplay>> readReplays(FieldReader& field, const json& ja, const Results& r,
@@ -493,6 +496,7 @@ Result<void> readRayNotes(const json& j, FieldReader& field, Results& r) {
     RAYSPEC_TRY(a.leak_answers, readCandidates(field, ja, "leak_answers", false));
     RAYSPEC_TRY(a.replays, readReplays(field, ja, r, "replays"));
     RAYSPEC_TRY(a.leak_replays, readReplays(field, ja, r, "leak_replays"));
+    RAYSPEC_TRY(a.double_replays, readReplays(field, ja, r, "double_replays"));
     if (ja.contains("traces")) {  // absent: 1
       RAYSPEC_TRY(a.traces, field.count<uint32_t>(ja, "ambiguous.traces"));
     }
@@ -533,11 +537,12 @@ Result<void> readResultsJson(const std::string& text, const fs::path& dir, Resul
   }
 }
 
-// The records of the replays and leak replays results.json lists, from
+// The records of the replays, leak and double-hit replays results.json lists, from
 // replays.bin: one each where the bundle has records, none where it has not.
 Result<void> readReplayRecords(const fs::path& dir, Results& r) {
   uint64_t replays = 0;
-  for (const RayAmbiguity& a : r.ambiguous) replays += a.replays.size() + a.leak_replays.size();
+  for (const RayAmbiguity& a : r.ambiguous)
+    replays += a.replays.size() + a.leak_replays.size() + a.double_replays.size();
   const uint64_t words = r.records.empty() ? 0 : replays * recordWords();
   if (words == 0) return {};
   BulkWords all;
@@ -547,7 +552,7 @@ Result<void> readReplayRecords(const fs::path& dir, Results& r) {
       all));
   const uint32_t* w = all.data();
   for (RayAmbiguity& a : r.ambiguous)
-    for (auto* list : {&a.replays, &a.leak_replays})
+    for (auto* list : {&a.replays, &a.leak_replays, &a.double_replays})
       for (LegalReplay& k : *list) {
         k.record.assign(w, w + recordWords());
         w += recordWords();

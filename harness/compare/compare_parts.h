@@ -87,6 +87,10 @@ const RecordField* fieldNoReplayLeaves(const RayAmbiguity& a, const uint32_t* d,
 // (RayAmbiguity::leak_replays) in every field of `fields`.
 bool leakReplayMatches(const RayAmbiguity& a, const uint32_t* d,
                        const std::vector<const RecordField*>& fields, const RayBounds& bounds);
+// Whether the device's record `d` is one of the ray's double-hit replays
+// (RayAmbiguity::double_replays) in every field of `fields`.
+bool doubleReplayMatches(const RayAmbiguity& a, const uint32_t* d,
+                         const std::vector<const RecordField*>& fields, const RayBounds& bounds);
 // The exact counters whose slack the replays give (CounterSlack::replayed),
 // each within its own range, judged together (counter_moves_together.cpp):
 // `device_moves`, each one's device count less the model's, must be the sum

@@ -185,12 +185,15 @@ struct AmbiguousJudge {
   std::map<std::string, FindingBuilder>& wrongs;
   FindingBuilder& leak;
   FindingBuilder& passed;
+  FindingBuilder& doubled;
 };
 
 // Held to its legal answers as a whole where the model replayed them: a
 // record that is one of them is legal; one that is none fails, unless it is
-// a leak or an answer outside the legal set that no rule forbids (then held
-// to what every answer shares, as without replays). A ray query's answer is
+// one of the double-hit replays (any-hit ran on several triangles closing
+// around the ray: R-WATERTIGHT, a "should"), a leak or an answer outside
+// the legal set that no rule forbids (then held to what every answer
+// shares, as without replays). A ray query's answer is
 // read from no trace's fields: without replays, the fields it cannot reach
 // are the model's.
 void judgeAmbiguousRay(const AmbiguousJudge& j, const RayAmbiguity& a, const uint32_t* d,
@@ -198,6 +201,10 @@ void judgeAmbiguousRay(const AmbiguousJudge& j, const RayAmbiguity& a, const uin
   const RecordField* unreplayed =
       hasReplays(a) ? fieldNoReplayLeaves(a, d, j.fields, bounds) : nullptr;
   if (hasReplays(a) && !unreplayed) return;
+  if (unreplayed && doubleReplayMatches(a, d, j.fields, bounds)) {
+    j.doubled.addRay(a.ray);
+    return;
+  }
   const bool leak_replayed = leakReplayMatches(a, d, j.fields, bounds);
   const DeviceAnswer answer =
       identityUnknown(a, j.shape)
@@ -241,7 +248,11 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
       watertightWarning("ray on a shared edge or vertex leaked (missed every candidate)");
   FindingBuilder passed = watertightWarning(
       "ray on a shared edge or vertex passed between its triangles and hit what lies behind them");
-  const AmbiguousJudge judge{c, traceShape(c), queryReachedFields(c), fields, wrongs, leak, passed};
+  FindingBuilder doubled = watertightWarning(
+      "double hit: any-hit ran on several of the triangles closing around a shared edge or vertex "
+      "(the record is what the model leaves running their any-hits so)");
+  const AmbiguousJudge judge{c,      traceShape(c), queryReachedFields(c), fields, wrongs, leak,
+                             passed, doubled};
 
   for (size_t i = 0; i < rays; ++i) {
     const uint32_t* d = &device.records[i * words];
@@ -272,6 +283,7 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
   for (auto& [rule, b] : wrongs) b.flush(v);
   leak.flush(v);
   passed.flush(v);
+  doubled.flush(v);
   if (!ambiguous.empty()) {
     Finding note{Status::Pass, "R-PREC",
                  std::to_string(ambiguous.size()) +

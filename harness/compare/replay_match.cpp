@@ -13,10 +13,24 @@ bool replayMatches(const LegalReplay& r, const uint32_t* d,
   return true;
 }
 
+namespace {
+
+bool anyReplayMatches(const std::vector<LegalReplay>& replays, const uint32_t* d,
+                      const std::vector<const RecordField*>& fields, const RayBounds& bounds) {
+  return std::any_of(replays.begin(), replays.end(),
+                     [&](const LegalReplay& r) { return replayMatches(r, d, fields, bounds); });
+}
+
+}  // namespace
+
 bool leakReplayMatches(const RayAmbiguity& a, const uint32_t* d,
                        const std::vector<const RecordField*>& fields, const RayBounds& bounds) {
-  return std::any_of(a.leak_replays.begin(), a.leak_replays.end(),
-                     [&](const LegalReplay& r) { return replayMatches(r, d, fields, bounds); });
+  return anyReplayMatches(a.leak_replays, d, fields, bounds);
+}
+
+bool doubleReplayMatches(const RayAmbiguity& a, const uint32_t* d,
+                         const std::vector<const RecordField*>& fields, const RayBounds& bounds) {
+  return anyReplayMatches(a.double_replays, d, fields, bounds);
 }
 
 const RecordField* fieldNoReplayLeaves(const RayAmbiguity& a, const uint32_t* d,

@@ -24,8 +24,8 @@ LegalReplay Machine::replayRun(uint32_t i, const LaunchState::Saved& own) {
   return replayOutcome(own);
 }
 
-std::vector<LegalReplay> Machine::replayLeaks(uint32_t i, const LaunchState::Saved& own,
-                                              const std::vector<LegalReplay>& legal,
+std::vector<LegalReplay> Machine::replayExtra(uint32_t i, const LaunchState::Saved& own,
+                                              const std::vector<LegalReplay>& legal, bool doubles,
                                               ReplayScript& script) {
   auto kept = [](const std::vector<LegalReplay>& list, const LegalReplay& r) {
     return std::find(list.begin(), list.end(), r) != list.end();
@@ -34,7 +34,8 @@ std::vector<LegalReplay> Machine::replayLeaks(uint32_t i, const LaunchState::Sav
   std::vector<LegalReplay> leaks;
   script.reset();
   script.own = false;
-  script.leaks = true;
+  script.leaks = !doubles;
+  script.doubles = doubles;
   bool complete = true;
   size_t runs = 0;
   do {
@@ -75,9 +76,15 @@ void Machine::replayLegalAnswers(uint32_t i, size_t ambiguity, ReplayScript& scr
       replays.push_back(std::move(r));
     if (replays.size() > kMaxLegalReplays) complete = false;
   }
-  std::vector<LegalReplay> leaks;
+  std::vector<LegalReplay> leaks, doubles;
+  const bool has_doubles = script.has_doubles;
   if (complete && !t_free && !state_.ambiguous[ambiguity].leak_answers.empty())
-    leaks = replayLeaks(i, own, replays, script);
+    leaks = replayExtra(i, own, replays, false, script);
+  if (complete && !t_free && has_doubles) {
+    std::vector<LegalReplay> known = replays;
+    known.insert(known.end(), leaks.begin(), leaks.end());
+    doubles = replayExtra(i, own, known, true, script);
+  }
   state_.replay = nullptr;
   const bool undefined = state_.undefined.size() > undefined_before;
   state_.undefined.resize(undefined ? undefined_before + 1 : undefined_before);
@@ -87,6 +94,7 @@ void Machine::replayLegalAnswers(uint32_t i, size_t ambiguity, ReplayScript& scr
   if (complete && !t_free) {
     state_.ambiguous[ambiguity].replays = std::move(replays);
     state_.ambiguous[ambiguity].leak_replays = std::move(leaks);
+    state_.ambiguous[ambiguity].double_replays = std::move(doubles);
   }
 }
 

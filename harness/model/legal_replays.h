@@ -11,7 +11,11 @@
 // first ambiguous trace has leak answers, a second pass (the leak pass)
 // runs the scripts again with each trace's leak answers among its choices:
 // the outcomes of runs that took one, none of the legal ones, are kept in
-// RayAmbiguity::leak_replays.
+// RayAmbiguity::leak_replays. Where a trace of the ray has double hits
+// (TraceClassifier::tryDoubleHits: two or more triangles of a group closing
+// around the ray hit, R-WATERTIGHT), a third pass (the double pass) runs
+// the scripts with each trace's double hits among its choices, and keeps
+// the new outcomes of runs that took one in RayAmbiguity::double_replays.
 #pragma once
 
 #include <cstddef>
@@ -39,14 +43,20 @@ struct ReplayScript {
   // trace), kept for the next run up to the trace whose choice it changes:
   // the same launch ray, the same choices before, the same classification.
   std::vector<std::vector<WhatIf>> known;
-  // How many of each known trace's answers are legal (the rest are leaks).
+  // How many of each known trace's answers are legal (the rest are leaks,
+  // or double hits in the double pass).
   std::vector<size_t> known_legal;
   size_t traces = 0;  // classified traces so far in this run
-  // The leak pass (Machine::replayLeaks): each trace's answers are its
+  // The leak pass (Machine::replayExtra): each trace's answers are its
   // legal ones, then its leak answers (RayAmbiguity::leak_answers);
   // `leaked`: this run took a leak answer at some trace.
   bool leaks = false;
   bool leaked = false;
+  // The double pass (Machine::replayExtra): each trace's answers are its
+  // legal ones, then its double hits; `leaked` then says this run took one.
+  bool doubles = false;
+  // Some trace classified so far has double hits (the double pass is run).
+  bool has_doubles = false;
   // The model's own run (the choices all 0): its first ambiguous trace is
   // the ray's RayAmbiguity.
   bool own = true;
@@ -62,6 +72,8 @@ struct ReplayScript {
     own = true;
     leaks = false;
     leaked = false;
+    doubles = false;
+    has_doubles = false;
   }
   // The legal answers of the trace now, if an earlier run classified it.
   const std::vector<WhatIf>* knownAnswers() const {

@@ -147,8 +147,10 @@ void TraceClassifier::findSharedTriangles() {
     if (cand.aabb || cand.in_plane || cand.ambiguity == TriAmbiguity::None || !eligible(cand))
       continue;
     if (!first) first = &cand;
-    if (cand.instance == first->instance && std::fabs(cand.t - first->t) <= tr_.tol(first->t))
+    if (cand.instance == first->instance && std::fabs(cand.t - first->t) <= tr_.tol(first->t)) {
       amb_.shared_triangles.push_back({cand.hit, cand.instance, cand.geometry, cand.primitive});
+      shared_group_.push_back(static_cast<size_t>(&cand - cands_.data()));
+    }
   }
 }
 
@@ -411,6 +413,9 @@ std::optional<WhatIf> TraceClassifier::finish() {
   std::vector<WhatIf> answers = reason_ ? replay_hows_ : std::vector<WhatIf>{};
   if (script && script->leaks && reason_)
     answers.insert(answers.end(), leak_hows_.begin(), leak_hows_.end());
+  if (script && script->doubles && reason_)
+    answers.insert(answers.end(), double_hows_.begin(), double_hows_.end());
+  if (script && reason_ && !double_hows_.empty()) script->has_doubles = true;
   if (script) script->classified(answers, reason_ ? replay_hows_.size() : 0);
   if (!reason_) return std::nullopt;
   amb_.reason = *reason_;
@@ -472,6 +477,7 @@ std::optional<WhatIf> ModelTracer::classifyTrace(
   c.findUnsure(reports);
   c.findSharedTriangles();
   c.tryUnsure();
+  c.tryDoubleHits();
   c.tryNearBoxDecisions();
   c.tryOrders(reports);
   c.tryShaderDecisions(shader_unsure);

@@ -49,11 +49,13 @@ class alignas(64) Machine {
   LegalReplay replayOutcome(const LaunchState::Saved& own) const;
   // One scripted run of launch ray i from the counters before it: its outcome.
   LegalReplay replayRun(uint32_t i, const LaunchState::Saved& own);
-  // The leak pass (legal_replays.h) after the legal one left `legal`: the
-  // distinct outcomes of the runs that take a leak answer, none of `legal`;
-  // none where one's path is undefined, pins a t, or past the bounds.
-  std::vector<LegalReplay> replayLeaks(uint32_t i, const LaunchState::Saved& own,
-                                       const std::vector<LegalReplay>& legal, ReplayScript& script);
+  // The leak pass, or with `doubles` the double pass (legal_replays.h),
+  // after the legal one left `legal`: the distinct outcomes of the runs that
+  // take a leak answer (a double hit), none of `legal`; none where one's
+  // path is undefined, pins a t, or past the bounds.
+  std::vector<LegalReplay> replayExtra(uint32_t i, const LaunchState::Saved& own,
+                                       const std::vector<LegalReplay>& legal, bool doubles,
+                                       ReplayScript& script);
 
   const ModelShared& sh_;
   ModelSbt sbt_;

@@ -33,6 +33,11 @@ class TraceClassifier {
   void findSharedTriangles();
   // The what-if runs where the unsure candidates decide otherwise.
   void tryUnsure();
+  // R-WATERTIGHT: the double hits, where two or more triangles that close
+  // around the ray may be hit (double_hits.cpp).
+  void tryDoubleHits();
+  // The most what-if runs tryDoubleHits makes for one trace.
+  static constexpr size_t kMaxDoubleHitRuns = 256;
   // The decisions within rounding of the intersection programs of boxes the
   // model's ray misses but a device may offer, each flipped.
   void tryNearBoxDecisions();
@@ -56,6 +61,11 @@ class TraceClassifier {
 
  private:
   bool eligible(const ModelCandidate& cand) const;
+  // tryDoubleHits' steps: whether a double hit may show in this trace, some
+  // triangle of `group` running any-hit, and the run hitting `hits` of it.
+  bool doubleHitsShow() const;
+  bool anyHitRunsOn(const std::vector<size_t>& group) const;
+  WhatIf doubleHit(const std::vector<size_t>& group, const std::vector<size_t>& hits) const;
   // findUnsure up to final_t; tryUnsure's answers, reaching as far as they do.
   void findUnsure(const std::vector<std::pair<size_t, double>>& reports, double final_t);
   std::vector<WhatIfAnswer> unsureAnswers(std::vector<WhatIfAnswer>& leaks);
@@ -112,6 +122,8 @@ class TraceClassifier {
   std::vector<WhatIf> replay_hows_;
   std::vector<uint64_t> replay_effects_;
   std::vector<WhatIf> leak_hows_;              // how each of amb_.leak_answers is reached
+  std::vector<WhatIf> double_hows_;            // how each double hit is reached (tryDoubleHits)
+  std::vector<size_t> shared_group_;           // amb_.shared_triangles' candidates
   std::optional<AmbiguityReason> reason_;      // the first reason found
   std::optional<AmbiguityReason> tie_reason_;  // reports tie (tryPermutations), if nothing else
   double reason_t_ = 0;                        // the t of the candidate that gave it

@@ -156,6 +156,14 @@ struct RayAmbiguity {
   // names no hit to tell; empty where there are none, past the bounds, or
   // in a bundle saved without them.
   std::vector<LegalReplay> leak_replays;
+  // Each distinct outcome, none of `replays` or `leak_replays`, of the ray
+  // replayed with a double hit taken where a trace has one: two or more
+  // triangles of a group closing around the ray decided as hits, each subset
+  // in the orders whose effects differ (model/legal_replays.h): a record
+  // that is one of them ran any-hit on several triangles of one edge or
+  // vertex (R-WATERTIGHT, a QualityWarning); empty where there are none,
+  // past the bounds, or in a bundle saved without them.
+  std::vector<LegalReplay> double_replays;
   // How many of the ray's traces were ambiguous in the model's own run (a
   // ray traced twice through one vertex: 2); each may move a counter.
   uint32_t traces = 1;
