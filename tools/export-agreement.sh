@@ -8,6 +8,9 @@
 # (DEVICE default llvmpipe, BASELINE default references/baselines/lavapipe.csv;
 # OUT/summary.txt: the counts per family, the refusals by reason, every
 # disagreement.) JOBS (default 2) cases at a time; RAYSPEC: the binary (build/rayspec).
+# FORMAT=amber: the Amber exports (repro.amber) instead, each run with $AMBER
+# (amber -v 1.2 -d: no validation layer) where AMBER names the binary, and
+# only counted where it does not.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 out=${1:?usage: export-agreement.sh OUT [DEVICE] [BASELINE]}
@@ -16,7 +19,9 @@ baseline=${3:-references/baselines/lavapipe.csv}
 rayspec=${RAYSPEC:-build/rayspec}
 jobs=${JOBS:-2}
 mkdir -p "$out"
-export out device baseline rayspec
+format=${FORMAT:-c}
+amber=${AMBER:-}
+export out device baseline rayspec format amber
 # One case file: exported, built and run; one line "family, verdict, case, detail" printed.
 one_case() {
   local file=$1 rel dir family rc reason name want want_rc got verdict
@@ -24,23 +29,36 @@ one_case() {
   dir="$out/${rel%.yaml}"
   family=${rel%%/*}
   mkdir -p "$dir"
-  "$rayspec" export "$file" --out "$dir" >"$dir/export.txt" 2>"$dir/refused.txt"
+  "$rayspec" export "$file" --format "$format" --out "$dir" >"$dir/export.txt" 2>"$dir/refused.txt"
   rc=$?
   if [[ $rc -ne 0 ]]; then
-    reason=$(sed -n 's/.*export: case uses \(.*\), not yet exported.*/\1/p' "$dir/refused.txt" | head -1)
+    reason=$(sed -n 's/.*export: case uses \(.*\), \(not yet exported\|which an Amber script cannot express\).*/\1/p' "$dir/refused.txt" | head -1)
     printf '%s\trefused\t%s\t%s\n' "$family" "$rel" "${reason:-exit $rc: $(head -1 "$dir/refused.txt")}"
     return
   fi
-  name=$(sed -n '1s/^\/\* rayspec export of case \([^ ]*\) .*/\1/p' "$dir/repro.c")
+  if [[ $format == amber ]]; then
+    name=$(sed -n '2s/^# rayspec export of case \([^ ]*\) .*/\1/p' "$dir/repro.amber")
+  else
+    name=$(sed -n '1s/^\/\* rayspec export of case \([^ ]*\) .*/\1/p' "$dir/repro.c")
+  fi
   # The status the baseline expects of the case: Pass where it lists none.
   want=$(grep -v '^#' "$baseline" | awk -F, -v c="$name" '$1 == c {print $2}' | head -1)
   case ${want:-Pass} in Pass) want_rc=0 ;; Fail) want_rc=1 ;; NotSupported) want_rc=77 ;; *) want_rc=$want ;; esac
-  if ! cc -std=c99 "$dir/repro.c" -lvulkan -o "$dir/repro" 2>"$dir/build.txt"; then
-    printf '%s\tbuild-error\t%s\t%s\n' "$family" "$name" "$(head -1 "$dir/build.txt")"
-    return
+  if [[ $format == amber ]]; then
+    if [[ -z $amber ]]; then
+      printf '%s\texported\t%s\t(not run: no AMBER)\n' "$family" "$name"
+      return
+    fi
+    "$amber" -v 1.2 -d "$dir/repro.amber" >"$dir/run.txt" 2>&1
+    got=$?
+  else
+    if ! cc -std=c99 "$dir/repro.c" -lvulkan -o "$dir/repro" 2>"$dir/build.txt"; then
+      printf '%s\tbuild-error\t%s\t%s\n' "$family" "$name" "$(head -1 "$dir/build.txt")"
+      return
+    fi
+    "$dir/repro" "$device" >"$dir/run.txt" 2>&1
+    got=$?
   fi
-  "$dir/repro" "$device" >"$dir/run.txt" 2>&1
-  got=$?
   verdict=$([[ "$got" == "$want_rc" ]] && echo agrees || echo DISAGREES)
   printf '%s\t%s\t%s\texit %s, expected %s (%s)\n' "$family" "$verdict" "$name" "$got" "$want_rc" "${want:-Pass}"
 }

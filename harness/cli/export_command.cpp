@@ -1,5 +1,5 @@
-// rayspec export CASE [--format c] [--out DIR]: the case as a standalone
-// reproducer (export/export_c.h), DIR/repro.c.
+// rayspec export CASE [--format c|amber] [--out DIR]: the case as a standalone
+// reproducer, DIR/repro.c (export/export_c.h) or DIR/repro.amber (export/export_amber.h).
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -7,6 +7,7 @@
 
 #include "cli/commands.h"
 #include "cli/subcommands.h"
+#include "export/export_amber.h"
 #include "export/export_c.h"
 #include "model/model_engine.h"
 #include "parse/parse_case.h"
@@ -22,18 +23,23 @@ struct ExportOptions {
   std::string cases_dir = RAYSPEC_SOURCE_DIR "/cases";
 };
 
-// Writes text to DIR/repro.c; false (said on stderr) where it cannot.
-bool writeReproducer(const std::string& dir, const std::string& text) {
+// Writes text to DIR/repro.c or DIR/repro.amber; false (said on stderr) where it cannot.
+bool writeReproducer(const std::string& dir, const std::string& format, const std::string& text) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  const std::string path = (std::filesystem::path(dir) / kReproducerFile).string();
+  const bool amber = format == "amber";
+  const std::string path =
+      (std::filesystem::path(dir) / (amber ? kAmberScriptFile : kReproducerFile)).string();
   std::ofstream out(path, std::ios::binary);
   out << text;
   if (!out) {
     std::fprintf(stderr, "rayspec export: cannot write %s\n", path.c_str());
     return false;
   }
-  std::printf("wrote %s (build: cc %s -lvulkan -o repro)\n", path.c_str(), path.c_str());
+  if (amber)
+    std::printf("wrote %s (run: amber -v 1.2 %s)\n", path.c_str(), path.c_str());
+  else
+    std::printf("wrote %s (build: cc %s -lvulkan -o repro)\n", path.c_str(), path.c_str());
   return true;
 }
 
@@ -59,12 +65,13 @@ int runExport(const ExportOptions& opt) {
   const Case& c = *parsed.value;
   const Plan plan = derivePlan(c);
   const Results model = runOnModel(c, plan, ModelOptions{});
-  const Result<std::string> text = exportCaseAsC(c, plan, model);
+  const Result<std::string> text =
+      opt.format == "amber" ? exportCaseAsAmber(c, plan, model) : exportCaseAsC(c, plan, model);
   if (!text) {
     std::fprintf(stderr, "%s\n", text.error().format().c_str());
     return text.error().kind == ErrorKind::NotSupported ? 77 : 1;
   }
-  return writeReproducer(opt.out, *text) ? 0 : 1;
+  return writeReproducer(opt.out, opt.format, *text) ? 0 : 1;
 }
 
 }  // namespace
@@ -74,14 +81,16 @@ Subcommand addExportCommand(CLI::App& app) {
       "export",
       "Write a case as a standalone reproducer, DIR/repro.c: one C file that builds with "
       "`cc repro.c -lvulkan`, traces the case on a device and compares with the model's "
-      "expectations (exit 0 PASS, 1 FAIL, 77 NotSupported); exits 77 naming the feature a "
-      "case uses that the export does not handle yet");
+      "expectations (exit 0 PASS, 1 FAIL, 77 NotSupported); or with --format amber "
+      "DIR/repro.amber, an Amber script of the CTS's ray tracing subset; exits 77 naming the "
+      "feature a case uses that the export does not handle");
   auto opt = std::make_shared<ExportOptions>();
   cmd->add_option("case", opt->case_file, "Case file (or case name under cases/)")->required();
-  cmd->add_option("--format", opt->format, "c (a C file)")
-      ->check(CLI::IsMember({"c"}))
+  cmd->add_option("--format", opt->format, "c (a C file) or amber (an Amber script)")
+      ->check(CLI::IsMember({"c", "amber"}))
       ->capture_default_str();
-  cmd->add_option("--out", opt->out, "Folder to write repro.c into")->capture_default_str();
+  cmd->add_option("--out", opt->out, "Folder to write repro.c or repro.amber into")
+      ->capture_default_str();
   cmd->add_option("--cases", opt->cases_dir, "Folder of case files")->capture_default_str();
   return {cmd, [opt] {
             return runExport(*opt);

@@ -7,6 +7,7 @@
 #include "compare/compare_results.h"
 #include "compare/trace_shape.h"
 #include "results/record_layout.h"
+#include "results/tolerances.h"
 
 namespace rayspec {
 
@@ -69,6 +70,20 @@ struct RayBounds {
 bool carriesBoundedBuiltins(const Case& c);
 // The widest of a ray's bounds (RayBounds::carried).
 float carriedBound(const RayBounds& b);
+// Every ray's bounds as the model gives them (Results::t_bounds,
+// object_origin_bounds, position_bounds; the carried one where the case
+// carries bounded built-ins), looked up by ray.
+class ModelRayBounds {
+ public:
+  ModelRayBounds(const Case& c, const Results& model);
+  RayBounds of(uint32_t ray) const;
+
+ private:
+  std::map<uint32_t, float> t_, origin_, position_;
+  bool carries_;
+};
+// A float field's tolerance on one ray: its own, widened to the ray's bounds.
+Tolerance fieldTolerance(const RecordField& f, const RayBounds& bounds);
 // One field of one ray as the model has it: written alike, and equal (floats
 // within the field's tolerance, widened to the ray's bounds).
 bool sameField(const RecordField& f, const uint32_t* d, const uint32_t* m, const RayBounds& bounds);

@@ -230,13 +230,8 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
   const size_t rays = device.records.size() / words;
   const auto ambiguous = ambiguityByRay(model);
   // R-PREC: clear rays whose t the model bounds more widely than the default.
-  std::map<uint32_t, float> t_bounds, origin_bounds, position_bounds;
-  for (const TBound& b : model.t_bounds) t_bounds[b.ray] = b.bound;
-  for (const TBound& b : model.object_origin_bounds) origin_bounds[b.ray] = b.bound;
-  for (const TBound& b : model.position_bounds) position_bounds[b.ray] = b.bound;
-
+  const ModelRayBounds model_bounds(c, model);
   const std::vector<const RecordField*> fields = comparedRecordFields(plan);
-  const bool carries = carriesBoundedBuiltins(c);
 
   // R-AHIT-DUP: per ray, the fields a repeated any-hit may change.
   std::map<uint32_t, FieldMask> repeat;
@@ -259,9 +254,7 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
     const uint32_t* m = &model.records[i * words];
     const uint32_t ray = static_cast<uint32_t>(i);
     if (undefined.count(ray)) continue;  // R-UB: never judged
-    RayBounds bounds{tBound(t_bounds, ray), tBound(origin_bounds, ray),
-                     tBound(position_bounds, ray)};
-    if (carries) bounds.carried = carriedBound(bounds);
+    const RayBounds bounds = model_bounds.of(ray);
     const auto repeated = repeat.find(ray);
     const FieldMask repeat_fields = repeated == repeat.end() ? 0 : repeated->second;
     if (const auto it = ambiguous.find(ray); it != ambiguous.end()) {

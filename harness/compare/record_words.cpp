@@ -55,14 +55,7 @@ const std::vector<FieldTolerance>& fieldTolerances() {
 
 }  // namespace
 
-bool sameField(const RecordField& f, const uint32_t* d, const uint32_t* m,
-               const RayBounds& bounds) {
-  const int index = static_cast<int>(f.index);
-  if (!f.automatic && written(d, index) != written(m, index)) return false;
-  if (!f.automatic && !written(d, index)) return true;
-  if (f.type == FieldType::Uint)  // most are one word: no memcmp call for those
-    return f.words == 1 ? d[f.offset] == m[f.offset]
-                        : std::equal(d + f.offset, d + f.offset + f.words, m + f.offset);
+Tolerance fieldTolerance(const RecordField& f, const RayBounds& bounds) {
   const FieldTolerance& ft = fieldTolerances()[f.index];
   Tolerance tol = ft.tol;
   if (ft.widened_by_t_bound) tol.abs = std::max(tol.abs, static_cast<double>(bounds.t));
@@ -71,6 +64,31 @@ bool sameField(const RecordField& f, const uint32_t* d, const uint32_t* m,
   if (ft.widened_by_position_bound)
     tol.abs = std::max(tol.abs, static_cast<double>(bounds.position));
   if (f.kind == FieldKind::Free) tol.abs = std::max(tol.abs, static_cast<double>(bounds.carried));
+  return tol;
+}
+
+ModelRayBounds::ModelRayBounds(const Case& c, const Results& model)
+    : carries_(carriesBoundedBuiltins(c)) {
+  for (const TBound& b : model.t_bounds) t_[b.ray] = b.bound;
+  for (const TBound& b : model.object_origin_bounds) origin_[b.ray] = b.bound;
+  for (const TBound& b : model.position_bounds) position_[b.ray] = b.bound;
+}
+
+RayBounds ModelRayBounds::of(uint32_t ray) const {
+  RayBounds bounds{tBound(t_, ray), tBound(origin_, ray), tBound(position_, ray)};
+  if (carries_) bounds.carried = carriedBound(bounds);
+  return bounds;
+}
+
+bool sameField(const RecordField& f, const uint32_t* d, const uint32_t* m,
+               const RayBounds& bounds) {
+  const int index = static_cast<int>(f.index);
+  if (!f.automatic && written(d, index) != written(m, index)) return false;
+  if (!f.automatic && !written(d, index)) return true;
+  if (f.type == FieldType::Uint)  // most are one word: no memcmp call for those
+    return f.words == 1 ? d[f.offset] == m[f.offset]
+                        : std::equal(d + f.offset, d + f.offset + f.words, m + f.offset);
+  const Tolerance tol = fieldTolerance(f, bounds);
   for (uint32_t k = 0; k < f.words; ++k)
     if (!tol.matches(asFloat(d[f.offset + k]), asFloat(m[f.offset + k]))) return false;
   return true;

@@ -1,6 +1,7 @@
 #include "export/export_c.h"
 
 #include "export/c_text.h"
+#include "export/expected_values.h"
 #include "export/export_sections.h"
 #include "export/export_support.h"
 #include "glsl/generate_glsl.h"
@@ -11,12 +12,6 @@ namespace rayspec {
 namespace {
 
 constexpr const char* kDataMarker = "/* RAYSPEC_CASE_DATA */";
-
-std::string rulesText(const Case& c) {
-  std::string out;
-  for (const std::string& r : c.rules) out += (out.empty() ? "" : ", ") + r;
-  return out.empty() ? "(none)" : out;
-}
 
 // The header's line for a planted layout fault (none: "").
 std::string faultLine(LayoutFault layout) {
@@ -34,7 +29,7 @@ std::string header(const Case& c, LayoutFault layout) {
   return "/* rayspec export of case " + c.name + " (" + c.file +
          ")\n"
          " * Rules it checks: " +
-         rulesText(c) +
+         caseRulesText(c) +
          "\n"
          " * A standalone reproducer: the case's scene, pipeline (SPIR-V, with the GLSL it was\n"
          " * compiled from in comments), shader binding table and rays, traced on a Vulkan\n"

@@ -81,6 +81,7 @@ void defines(const StageContext& ctx, GlslWriter& out) {
   if (raygen && u.launch_ray) out.line("#define RS_USE_RAYS");
   if (u.trace || u.ray_query) out.line("#define RS_USE_TLAS");
   if (ctx.plan.records) out.line("#define RS_USE_RECORDS");
+  if (ctx.plan.records && ctx.plan.records_bound) out.line("#define RS_RECORDS_BOUND");
   if (u.counters) out.line("#define RS_USE_COUNTERS");
   if (u.shader_record && !ctx.compute) {
     // The record block holds exactly the case's data bytes (pipeline.sbt.record_data):

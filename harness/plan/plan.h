@@ -50,7 +50,12 @@ struct Plan {
   std::vector<std::string> counters;       // counters kept
   std::vector<std::string> record_fields;  // per-ray fields kept (recordable ones)
   bool records = false;                    // a per-ray record buffer is needed
-  std::vector<ImageOutput> images;         // images kept
+  // The record words bound as the storage buffer of RS_BINDING_RECORDS
+  // itself, not reached through a device address (shaders/common.glsl
+  // RS_RECORDS_BOUND): never derived; the Amber export sets it, since an
+  // Amber script cannot hand a shader a buffer's address.
+  bool records_bound = false;
+  std::vector<ImageOutput> images;  // images kept
 
   // One line per effect, for `rayspec show`.
   std::vector<std::string> describe() const;

@@ -11,8 +11,11 @@ namespace rayspec {
 bool Tolerance::matches(float device, float model) const {
   if (std::isnan(device) || std::isnan(model)) return std::isnan(device) && std::isnan(model);
   if (device == model) return true;  // also equal infinities
-  const double diff = std::fabs(static_cast<double>(device) - model);
-  return diff <= abs + rel * std::max(std::fabs(static_cast<double>(model)), 1.0);
+  return std::fabs(static_cast<double>(device) - model) <= allowance(model);
+}
+
+double Tolerance::allowance(float model) const {
+  return abs + rel * std::max(std::fabs(static_cast<double>(model)), 1.0);
 }
 
 Tolerance toleranceOf(ToleranceKind t) {

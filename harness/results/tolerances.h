@@ -18,6 +18,8 @@ namespace rayspec {
 struct Tolerance {
   double abs = 0.0, rel = 0.0;
   bool matches(float device, float model) const;
+  // How far a device value may lie from a finite model value: abs + rel * max(|model|, 1).
+  double allowance(float model) const;
 };
 
 enum class ToleranceKind;

@@ -8,6 +8,7 @@
 
 #include <spirv-tools/libspirv.hpp>
 
+#include <algorithm>
 #include <map>
 #include <mutex>
 
@@ -60,15 +61,8 @@ void glslToSpirv(const std::string& glsl, EShLanguage lang, std::vector<uint32_t
 constexpr uint32_t kPositionFetchCapabilities[] = {5336, 5391};
 
 bool declaresCapability(const std::vector<uint32_t>& words, uint32_t capability) {
-  constexpr uint32_t kOpCapability = 17, kHeaderWords = 5;
-  for (size_t i = kHeaderWords; i < words.size();) {
-    const uint32_t count = words[i] >> 16;
-    if ((words[i] & 0xFFFF) == kOpCapability && count == 2 && i + 1 < words.size() &&
-        words[i + 1] == capability)
-      return true;
-    i += count ? count : 1;
-  }
-  return false;
+  const std::vector<uint32_t> declared = declaredCapabilities(words);
+  return std::find(declared.begin(), declared.end(), capability) != declared.end();
 }
 
 // Whether the linked SPIRV-Tools knows position fetch: 2023.1 (Debian 12)
@@ -127,6 +121,18 @@ SpirvResult compileGlsl(const std::string& glsl, Stage stage, bool compute) {
   }
   if (!key.empty()) spirvCacheStore(key, result.words);
   return result;
+}
+
+std::vector<uint32_t> declaredCapabilities(const std::vector<uint32_t>& words) {
+  constexpr uint32_t kOpCapability = 17, kHeaderWords = 5;
+  std::vector<uint32_t> out;
+  for (size_t i = kHeaderWords; i < words.size();) {
+    const uint32_t count = words[i] >> 16;
+    if ((words[i] & 0xFFFF) == kOpCapability && count == 2 && i + 1 < words.size())
+      out.push_back(words[i + 1]);
+    i += count ? count : 1;
+  }
+  return out;
 }
 
 }  // namespace rayspec

@@ -21,6 +21,9 @@ struct SpirvResult {
 // `compute`: the text is raygen run as a compute shader (glsl/emit_compute.h).
 SpirvResult compileGlsl(const std::string& glsl, Stage stage, bool compute = false);
 
+// The capabilities a module declares (the operand of each OpCapability), in order.
+std::vector<uint32_t> declaredCapabilities(const std::vector<uint32_t>& words);
+
 // Folder for the on-disk cache (created when missing); empty disables it.
 // The error when the key of its sums (spirv/cache_secret.h) can be neither
 // read nor made: the cache stays in memory only then.

@@ -288,6 +288,12 @@ static const rs_instance rs_instances[] = {
 //   uvec2 words_address;
 // };
 // #define rs_records RsRecordWords(RsRecordsRef(rs_address(RS_BINDING_RECORDS)).words_address).words
+// #elif defined(RS_RECORDS_BOUND)
+// // The words bound directly (the Amber export: a script cannot hand a shader an address).
+// layout(set = 0, binding = RS_BINDING_RECORDS, std430) buffer RsRecordsBound {
+//   uint rs_records_bound[];
+// };
+// #define rs_records rs_records_bound
 // #else
 // layout(set = 0, binding = RS_BINDING_RECORDS, std430) readonly buffer RsRecords {
 //   RsRecordWords rs_records_ref;
@@ -791,6 +797,12 @@ static const uint32_t rs_spirv_0[] = {
 //   uvec2 words_address;
 // };
 // #define rs_records RsRecordWords(RsRecordsRef(rs_address(RS_BINDING_RECORDS)).words_address).words
+// #elif defined(RS_RECORDS_BOUND)
+// // The words bound directly (the Amber export: a script cannot hand a shader an address).
+// layout(set = 0, binding = RS_BINDING_RECORDS, std430) buffer RsRecordsBound {
+//   uint rs_records_bound[];
+// };
+// #define rs_records rs_records_bound
 // #else
 // layout(set = 0, binding = RS_BINDING_RECORDS, std430) readonly buffer RsRecords {
 //   RsRecordWords rs_records_ref;
@@ -1180,6 +1192,12 @@ static const uint32_t rs_spirv_1[] = {
 //   uvec2 words_address;
 // };
 // #define rs_records RsRecordWords(RsRecordsRef(rs_address(RS_BINDING_RECORDS)).words_address).words
+// #elif defined(RS_RECORDS_BOUND)
+// // The words bound directly (the Amber export: a script cannot hand a shader an address).
+// layout(set = 0, binding = RS_BINDING_RECORDS, std430) buffer RsRecordsBound {
+//   uint rs_records_bound[];
+// };
+// #define rs_records rs_records_bound
 // #else
 // layout(set = 0, binding = RS_BINDING_RECORDS, std430) readonly buffer RsRecords {
 //   RsRecordWords rs_records_ref;
