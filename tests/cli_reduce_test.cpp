@@ -138,6 +138,11 @@ outputs:
       << report;
   EXPECT_NE(report.find("It carries the planted fault offsets-ignored"), std::string::npos)
       << report;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out/repro.amber"));
+  EXPECT_NE(report.find("No repro.amber: an Amber script cannot carry the planted fault "
+                        "offsets-ignored"),
+            std::string::npos)
+      << report;
   EXPECT_EQ(buildAndPlay(dir + "/out/repro.c", dir), 1) << slurp(dir + "/play.txt");
   EXPECT_NE(slurp(dir + "/play.txt").find("FAIL: "), std::string::npos) << slurp(dir + "/play.txt");
   ASSERT_EQ(sh(kBin + " export " + dir + "/out/reduced.yaml --out " + dir + "/plain",

@@ -3,6 +3,8 @@
 // in the command, quoted for sh) does not end their code blocks.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "read_text.h"
 #include "reduce/reduce_report.h"
 #include "test_dir.h"
@@ -33,6 +35,27 @@ TEST(ReduceReport, CodeBlocksHoldTheirTextWhateverItHolds) {
   EXPECT_EQ(blockAfter(report, "## Reproduce"), r.command) << report;
   EXPECT_EQ(blockAfter(report, "## The case") + "\n", r.reduced_text) << report;
   EXPECT_NE(report.find("## Failing rays"), std::string::npos) << report;
+}
+
+// repro.amber is written beside the report where the export made one, its
+// run line in report.md; where it refused, no file (an earlier one removed)
+// and the report says why.
+TEST(ReduceReport, TheAmberScriptIsWrittenOrItsRefusalSaid) {
+  ReductionRecord r;
+  r.case_name = "fam/case";
+  r.reduced_text = "rules: [R-X]\n";
+  r.amber = "#!amber\nSET ENGINE_DATA fence_timeout_ms 1000\n";
+  const std::string dir = testing_support::testDir();
+  ASSERT_EQ(writeReduction(r, dir), "");
+  EXPECT_EQ(slurp(dir + "/repro.amber"), r.amber);
+  EXPECT_EQ(blockAfter(slurp(dir + "/report.md"), "## Without rayspec: repro.amber"),
+            kAmberRunLine);
+  r.amber.clear();
+  r.amber_refused = "an Amber script cannot carry the planted fault offsets-ignored";
+  ASSERT_EQ(writeReduction(r, dir), "");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/repro.amber"));
+  EXPECT_NE(slurp(dir + "/report.md").find("No repro.amber: " + r.amber_refused), std::string::npos)
+      << slurp(dir + "/report.md");
 }
 
 }  // namespace

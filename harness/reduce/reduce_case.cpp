@@ -156,26 +156,34 @@ void nameTheDevice(ReductionRecord& r, const RunInfo& info, const VariantJudge& 
   }
 }
 
-// The reduced case as a standalone C file (export/export_c.h: the one
-// export, its expectations from the model's exact tier), carrying the
-// planted fault where a C file can; or why there is none.
+// The reduced case as a standalone C file and as an Amber script
+// (export/export_c.h, export/export_amber.h: their expectations from the
+// model's exact tier), the C file carrying the planted fault where it can
+// (a script cannot: none with a fault); or why there is none.
 void exportReduced(ReductionRecord& r, const ParseResult& reduced, const std::string& fault) {
   const Result<LayoutFault> layout = exportedLayoutFault(fault);
-  if (!layout) {
-    r.reproducer_refused = layout.error().format();
-    return;
-  }
+  if (!layout) r.reproducer_refused = layout.error().format();
+  if (!fault.empty()) r.amber_refused = "an Amber script cannot carry the planted fault " + fault;
   if (!reduced.value) {
-    r.reproducer_refused = "the reduced case does not parse";
+    r.reproducer_refused = r.amber_refused = "the reduced case does not parse";
     return;
   }
   const Case& c = *reduced.value;
   const Plan plan = derivePlan(c);
-  const Result<std::string> text = exportCaseAsC(c, plan, runOnModel(c, plan, {}), *layout);
-  if (text)
-    r.reproducer = *text;
+  const Results model = runOnModel(c, plan, {});
+  if (layout) {
+    const Result<std::string> text = exportCaseAsC(c, plan, model, *layout);
+    if (text)
+      r.reproducer = *text;
+    else
+      r.reproducer_refused = text.error().format();
+  }
+  if (!fault.empty()) return;
+  const Result<std::string> script = exportCaseAsAmber(c, plan, model);
+  if (script)
+    r.amber = *script;
   else
-    r.reproducer_refused = text.error().format();
+    r.amber_refused = script.error().format();
 }
 
 }  // namespace

@@ -76,11 +76,24 @@ std::string reproducerSection(const ReductionRecord& r) {
          (r.signature.status == Status::Fail ? ": expect FAIL there" : "") + ".\n\n";
 }
 
+// How to run repro.amber (Amber's ray tracing subset, as VK-GL-CTS's
+// scripts use it), or why there is none.
+std::string amberSection(const ReductionRecord& r) {
+  std::string m = "## Without rayspec: " + std::string(kAmberScriptFile) + "\n\n";
+  if (r.amber.empty())
+    return m + "No " + kAmberScriptFile + ": " + visibleLine(r.amber_refused) + "\n\n";
+  return m + std::string(kAmberScriptFile) +
+         ", beside this report, is the reduced case as an Amber script (the SPIR-V rayspec "
+         "compiled, with the model's expected buffers), for a test of Amber's kind:\n\n" +
+         fenced(kAmberRunLine) + "\n";
+}
+
 std::string reportMarkdown(const ReductionRecord& r) {
   const FailureSignature& s = r.signature;
   std::string m =
       "# " + r.case_name + ": " + (s.rule.empty() ? "" : s.rule + ": ") + s.message + "\n\n";
   m += reproducerSection(r);
+  m += amberSection(r);
   m += "Reduced by `rayspec reduce` from `" + r.case_path + "` in " + seconds(r.seconds) + " (" +
        std::to_string(r.attempts.size()) + " variants tried): " + sizeChange(r.before, r.after) +
        ".\n\n";
@@ -141,10 +154,10 @@ std::string writeReduction(const ReductionRecord& r, const std::string& dir) {
   std::filesystem::create_directories(dir, ec);
   for (const auto& [name, text] :
        {std::pair{kReducedCaseFile, r.reduced_text}, std::pair{kReproducerFile, r.reproducer},
-        std::pair{kReductionReportFile, reportMarkdown(r)},
+        std::pair{kAmberScriptFile, r.amber}, std::pair{kReductionReportFile, reportMarkdown(r)},
         std::pair{kReductionStepsFile, stepsText(r)}}) {
     const std::string path = dir + "/" + name;
-    if (text.empty()) {  // no repro.c: none of an earlier reduction stays
+    if (text.empty()) {  // no repro.c or repro.amber: none of an earlier reduction stays
       std::filesystem::remove(path, ec);
       continue;
     }
@@ -161,7 +174,7 @@ std::string reductionSummary(const ReductionRecord& r, const std::string& dir) {
          std::to_string(kept) + " kept) in " + seconds(r.seconds) + "\n" +
          "  still: " + visibleLine(r.outcome.headline.substr(0, 300)) + "\n" + "  " + dir +
          "/reduced.yaml, " + (r.reproducer.empty() ? "" : std::string(kReproducerFile) + ", ") +
-         "report.md, steps.txt\n";
+         (r.amber.empty() ? "" : std::string(kAmberScriptFile) + ", ") + "report.md, steps.txt\n";
 }
 
 }  // namespace rayspec

@@ -1,9 +1,10 @@
 // What a reduction writes: DIR/reduced.yaml (a case file), DIR/repro.c (the
 // reduced case as a standalone C file, export/export_c.h, where it can be
-// exported), DIR/report.md (the bug report: how to build and run repro.c or
-// why there is none, the case, the command that shows it, the failing rays
-// device against model, the rule's text, the driver and device), DIR/steps.txt
-// (every attempt and its verdict).
+// exported), DIR/repro.amber (the same as an Amber script,
+// export/export_amber.h), DIR/report.md (the bug report: how to build and
+// run repro.c and repro.amber or why there is none, the case, the command that shows it, the
+// failing rays device against model, the rule's text, the driver and device), DIR/steps.txt (every
+// attempt and its verdict).
 #pragma once
 
 #include <array>
@@ -11,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "export/export_amber.h"
 #include "export/export_c.h"
 #include "reduce/case_size.h"
 #include "reduce/failure_signature.h"
@@ -24,6 +26,8 @@ struct ReductionRecord {
   std::string reduced_text;  // reduced.yaml
   std::string reproducer;    // repro.c ("": none, for the reason below)
   std::string reproducer_refused;
+  std::string amber;  // repro.amber ("": none, for the reason below)
+  std::string amber_refused;
   FailureSignature signature;
   CaseOutcome outcome;  // the reduced case's
   CaseSize before, after;
@@ -49,12 +53,12 @@ inline constexpr const char* kReductionReportFile = "report.md";
 inline constexpr const char* kReductionStepsFile = "steps.txt";
 inline constexpr const char* kReductionRunsFolder = "runs";
 inline constexpr const char* kReductionCasesFolder = "cases";
-inline constexpr std::array<const char*, 6> kReductionWrites = {
-    kReducedCaseFile,    kReproducerFile,      kReductionReportFile,
+inline constexpr std::array<const char*, 7> kReductionWrites = {
+    kReducedCaseFile,    kReproducerFile,      kAmberScriptFile,     kReductionReportFile,
     kReductionStepsFile, kReductionRunsFolder, kReductionCasesFolder};
 
-// reduced.yaml, report.md, steps.txt and repro.c (where there is one; an
-// earlier run's removed where not) into dir; the error ("" none).
+// reduced.yaml, report.md, steps.txt, repro.c and repro.amber (where there
+// is one; an earlier run's removed where not) into dir; the error ("" none).
 std::string writeReduction(const ReductionRecord& r, const std::string& dir);
 
 // The summary printed at the end.
