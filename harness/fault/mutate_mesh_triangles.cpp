@@ -2,7 +2,9 @@
 // mesh (its primitive index kept, as an inactive one keeps it) or that keeps
 // one twice (the copy appended as a primitive of its own), as a device whose
 // build drops or duplicates a leaf. The middle triangle of the first mesh of
-// four or more triangles in float3 vertices: one a watertight mesh needs.
+// 4 to 65,536 triangles in float3 vertices: one a watertight mesh needs.
+// Larger meshes (accel/size-triangles) are left to build-counts-16-bit: each
+// planted fault runs the model again on the whole case, 12 s at 2^20.
 #include <cmath>
 #include <limits>
 
@@ -11,15 +13,16 @@
 namespace rayspec {
 namespace {
 
-// The first geometry of a BLAS some instance uses that is a mesh of at least
-// four float3 triangles; null when none is.
+// The first geometry of a BLAS some instance uses that is a mesh of 4 to
+// 2^16 float3 triangles; null when none is.
 Geometry* firstMesh(Case& c) {
   if (c.scene.updates()) return nullptr;
   for (const Instance& inst : c.scene.instances) {
     if (!inst.blas) continue;
     for (Geometry& g : c.scene.blases[*inst.blas].geometries)
       if (g.kind == Geometry::Kind::Triangles && g.primitiveCount() >= 4 &&
-          g.vertex_format == VertexFormat::Float3 && g.written.empty())
+          g.primitiveCount() <= (1u << 16) && g.vertex_format == VertexFormat::Float3 &&
+          g.written.empty())
         return &g;
   }
   return nullptr;
