@@ -36,17 +36,18 @@ bool thickEnough(const Vec3& a, const Vec3& b, const Vec3& c, double least) {
 }
 
 // A point strictly inside triangle t, rounded to float, or nothing when one
-// of its three triangles would keep less than 1/100 of t's area or be
-// thinner than `least`.
+// of its three triangles would keep less than 1/100 of t's area or
+// `least_area`, or be thinner than `least_width`.
 std::optional<Vec3> splitPoint(const SubdivisionSpec& spec, const std::vector<Vec3>& v,
-                               const Tri& t, double least_width, SeededRandom& rnd) {
+                               const Tri& t, double least_width, double least_area,
+                               SeededRandom& rnd) {
   const Vec3 &a = v[t[0]], &b = v[t[1]], &c = v[t[2]];
   double w[3], sum = 0;
   for (double& x : w) sum += (x = rnd.range(0.05, 1.0));
   double p[2];
   for (int k = 0; k < 2; ++k) p[k] = (w[0] * a[k] + w[1] * b[k] + w[2] * c[k]) / sum;
   const Vec3 q = toFloat(p[0], p[1], spec.center[2] + spec.relief * rnd.unit());
-  const double least = doubledArea(a, b, c) / 100;
+  const double least = std::max(doubledArea(a, b, c) / 100, least_area);
   if (!(doubledArea(a, b, q) >= least && doubledArea(b, c, q) >= least &&
         doubledArea(c, a, q) >= least && least > 0))
     return std::nullopt;
@@ -77,13 +78,17 @@ Result<void> makeSubdivision(const SubdivisionSpec& spec, Geometry& out) {
   const auto far =
       static_cast<float>(std::max({std::fabs(x0), std::fabs(x1), std::fabs(y0), std::fabs(y1)}));
   const double least_width = 4 * (double(std::nextafter(far, INFINITY)) - far);
+  // A 64th of the mean (doubled) area: no triangle so thin that a float
+  // device may take it as degenerate (model/watertight.h) for a ray that
+  // crosses it.
+  const double least_area = 2 * spec.size[0] * spec.size[1] / spec.triangles / 64;
   SeededRandom rnd(spec.seed);
   uint64_t refused = 0;
   const uint64_t most_refused = 64ull * spec.triangles + 1024;
   while (tris.size() < spec.triangles) {
     const size_t k = rnd.next() % tris.size();
     const Tri t = tris[k];
-    const std::optional<Vec3> p = splitPoint(spec, out.vertices, t, least_width, rnd);
+    const std::optional<Vec3> p = splitPoint(spec, out.vertices, t, least_width, least_area, rnd);
     if (!p) {
       if (++refused > most_refused)
         return errorMessage("the rectangle is too small for " + std::to_string(spec.triangles) +

@@ -30,7 +30,8 @@ struct SubdivisionSpec {
 // z = 0 plane tiles the rectangle, so the mesh is a height field that a ray
 // along -z crosses once. A new vertex is rounded to float and kept only if
 // its three triangles keep at least 1/100 of their parent's area in x and y
-// and are each at least four float steps (at the rectangle's largest
+// and a 64th of the mean area (none near degenerate), and are each at least
+// four float steps (at the rectangle's largest
 // coordinate) wide, so that rounding folds nothing and a ray aimed at a face
 // or an edge, its origin rounded to float, still crosses the triangles it
 // is aimed at; else other weights or another triangle are drawn. An error when `triangles` is odd,
