@@ -1,4 +1,4 @@
-// The seeded mesh generators (fan, triangulation), the aim rays and their
+// The seeded mesh generators (fan, triangulation, subdivision), the aim rays and their
 // case syntax.
 #include <gtest/gtest.h>
 
@@ -8,6 +8,7 @@
 
 #include "case/aim_rays.h"
 #include "case/seeded_random.h"
+#include "case/subdivision.h"
 #include "case/triangle_fan.h"
 #include "case/triangle_grid.h"
 #include "case/triangulation.h"
@@ -89,6 +90,69 @@ TEST(Triangulation, CoversTheRectangleCounterClockwise) {
   Geometry grid;
   makeTriangleGrid(4, 4, {4, 4}, {0, 0, 0}, grid);
   EXPECT_EQ(flat.vertices, grid.vertices);  // no jitter: the grid's vertices
+}
+
+TEST(Subdivision, TilesTheRectangleNonPlanarAndClosed) {
+  for (uint32_t n : {2u, 4u, 64u, 4096u}) {
+    Geometry g;
+    ASSERT_TRUE(makeSubdivision({n, {3, 2}, {10, 20, 5}, 0.5, 7}, g));
+    ASSERT_EQ(g.primitiveCount(), n);
+    EXPECT_EQ(g.vertices.size(), 4u + (n - 2) / 2);
+    double area = 0;
+    for (uint32_t p = 0; p < n; ++p) {
+      EXPECT_GT(signedArea(g, p), 0) << n << " " << p;
+      area += signedArea(g, p) / 2;
+    }
+    EXPECT_NEAR(area, 6.0, 1e-3);  // the projections tile the 3 x 2 rectangle
+    expectManifold(g);
+    bool raised = false;
+    for (size_t v = 4; v < g.vertices.size(); ++v) {
+      EXPECT_GE(g.vertices[v][2], 5.0f);
+      EXPECT_LE(g.vertices[v][2], 5.5f);
+      raised = raised || g.vertices[v][2] != 5.0f;
+    }
+    EXPECT_EQ(raised, n > 2);
+  }
+}
+
+TEST(Subdivision, SeededTheSameEverywhere) {
+  Geometry a, b, c;
+  ASSERT_TRUE(makeSubdivision({16, {1, 1}, {0, 0, 0}, 1, 11}, a));
+  ASSERT_TRUE(makeSubdivision({16, {1, 1}, {0, 0, 0}, 1, 11}, b));
+  ASSERT_TRUE(makeSubdivision({16, {1, 1}, {0, 0, 0}, 1, 12}, c));
+  EXPECT_EQ(a.vertices, b.vertices);
+  EXPECT_EQ(a.indices, b.indices);
+  EXPECT_NE(a.vertices, c.vertices);
+  // The first split of seed 11, as every machine makes it (splitmix64 and
+  // IEEE double only): a change of the generator shows here.
+  ASSERT_EQ(a.vertices.size(), 11u);
+  EXPECT_EQ(a.vertices[4], (Vec3{-0x1.dbd80ep-5f, 0x1.319e64p-2f, 0x1.525078p-3f}))
+      << a.vertices[4][0] << " " << a.vertices[4][1] << " " << a.vertices[4][2];
+}
+
+TEST(Subdivision, AtLargeCoordinatesOrRefused) {
+  // 65,536 triangles over 1024 x 1024 at x, y = 1e6 (a float step of 1/16):
+  // every split point rounded to float still lies well inside its triangle.
+  Geometry g;
+  ASSERT_TRUE(makeSubdivision({65536, {1024, 1024}, {1e6, 1e6, 0}, 64, 3}, g));
+  for (uint32_t p = 0; p < g.primitiveCount(); ++p) ASSERT_GT(signedArea(g, p), 0) << p;
+  expectManifold(g);
+  // Too many triangles for a rectangle of 4 float steps at that magnitude.
+  Geometry small;
+  const Result<void> refused = makeSubdivision({4096, {0.25, 0.25}, {1e6, 1e6, 0}, 0, 3}, small);
+  ASSERT_FALSE(refused);
+  EXPECT_NE(refused.error().message.find("too small"), std::string::npos);
+  EXPECT_FALSE(makeSubdivision({5, {1, 1}, {0, 0, 0}, 0, 1}, small));
+}
+
+TEST(AimRays, EveryInnerVertexOfASubdivision) {
+  // Only the four corners are open: (n - 2) / 2 inner vertices, 3 n / 2 - 2
+  // shared edges, n faces.
+  Geometry g;
+  ASSERT_TRUE(makeSubdivision({1024, {8, 8}, {0, 0, 0}, 2, 5}, g));
+  AimSpec spec;
+  spec.edge_points = 1;
+  EXPECT_EQ(meshAimTargets(g, spec).size(), 511u + 1534u + 1024u);
 }
 
 TEST(AimRays, InteriorFeaturesOfAGrid) {
@@ -189,7 +253,13 @@ TEST(GeneratedMesh, Errors) {
   expect(parse_blas("{triangulation: {cells: [2, 2], size: [1, 1]}}"), "triangulation", "seed");
   expect(parse_blas("{fan: {triangles: 5}, grid: {cells: [1, 1], size: [1, 1]}}"), "triangles",
          "one of them alone");
+  expect(parse_blas("{subdivision: {triangles: 7, size: [1, 1], seed: 1}}"),
+         "subdivision.triangles", "even number");
+  expect(parse_blas("{subdivision: {triangles: 8, size: [1, 1], seed: 1, relief: -1}}"),
+         "subdivision", "relief not negative");
+  expect(parse_blas("{subdivision: {triangles: 8, size: [1, 1]}}"), "subdivision", "seed");
   EXPECT_TRUE(parse_blas("{fan: {triangles: 5, seed: 2}}").value);
+  EXPECT_TRUE(parse_blas("{subdivision: {triangles: 8, size: [1, 1], seed: 2, relief: 1}}").value);
 }
 
 }  // namespace

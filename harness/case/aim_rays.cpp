@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <map>
+#include <set>
 #include <tuple>
 
 #include "base/affine.h"
@@ -60,13 +61,18 @@ std::vector<AimTarget> meshAimTargets(const Geometry& g, const AimSpec& spec) {
   auto shared = [&](const Vec3& a, const Vec3& b) {
     return edge_tris[edge_key(a, b)].size() == 2;
   };
+  // A vertex is open where one of its edges is not shared (one pass over
+  // the edges: meshes of 2^16 triangles and more are aimed at too).
+  std::set<Pos> open;
+  for (const auto& [a, b] : edges) {
+    if (shared(a, b)) continue;
+    open.insert(key(a));
+    open.insert(key(b));
+  }
   if (spec.vertices)
-    for (const Vec3& v : vertices) {
-      bool closed = true;
-      for (const auto& [a, b] : edges)
-        if ((key(a) == key(v) || key(b) == key(v)) && !shared(a, b)) closed = false;
-      if (closed) out.push_back({AimFeature::Vertex, 0, 0, vertex_tris[key(v)], toDouble(v), {}});
-    }
+    for (const Vec3& v : vertices)
+      if (!open.count(key(v)))
+        out.push_back({AimFeature::Vertex, 0, 0, vertex_tris[key(v)], toDouble(v), {}});
   if (spec.edges)
     for (const auto& [a, b] : edges) {
       if (!shared(a, b)) continue;

@@ -2,6 +2,7 @@
 #include <map>
 
 #include "compare/compare_parts.h"
+#include "compare/finding_rules.h"
 #include "compare/shared_edge.h"
 #include "program/walk_program.h"
 #include "results/record_layout.h"
@@ -43,19 +44,26 @@ bool anyHitMayTerminate(const Case& c) {
   return terminates;
 }
 
+// The rule an any-hit count off the primitives a clear ray crosses names:
+// `own`, and R-AS-SIZE where the case claims it (a build that lost a
+// primitive runs one any-hit fewer there, one that kept it twice one more).
+FindingRule primitiveRunsRule(const Case& c, const std::string& own) {
+  return findingRule({own, "R-AS-SIZE"}, c.rules, own);
+}
+
 // R-AHIT-CLOSEST: on a clear ray through triangles, the model runs any-hit
 // exactly for the candidates every device must show it: those no nearer hit
 // was accepted before (in t order: every ignored one, and the one accepted).
 // Another order or a duplicate invocation only adds runs; not so where an
 // any-hit may terminate, which ends traversal before nearer candidates a
 // far-to-near order has not reached yet.
-void compareAnyHitMinimum(const Results& device, const Results& model,
+void compareAnyHitMinimum(const Case& c, const Results& device, const Results& model,
                           const std::set<uint32_t>& skip, Verdict& v) {
   const uint32_t words = recordWords(), ahit = findRecordField("any_hit_runs")->offset;
   FindingBuilder b;
-  b.finding = {Status::Fail, "R-AHIT-CLOSEST",
-               "any-hit ran fewer times than the candidates every device must show it (the nearer "
-               "ignored ones and the closest hit's)"};
+  b.finding = findingOf(Status::Fail, primitiveRunsRule(c, "R-AHIT-CLOSEST"),
+                        "any-hit ran fewer times than the candidates every device must show it "
+                        "(the nearer ignored ones and the closest hit's)");
   for (size_t i = 0; i < device.records.size() / words; ++i)
     if (!skip.count(static_cast<uint32_t>(i)) &&
         device.records[i * words + ahit] < model.records[i * words + ahit])
@@ -141,7 +149,7 @@ void compareAnyHitRuns(const Case& c, const Results& device, const Results& mode
   if (allTriangles(c) && !anyHitMayTerminate(c)) {
     std::set<uint32_t> skip = undefined;
     for (const RayAmbiguity& a : model.ambiguous) skip.insert(a.ray);
-    compareAnyHitMinimum(device, model, skip, v);
+    compareAnyHitMinimum(c, device, model, skip, v);
   }
   if (!allNoDuplicateTriangles(c)) return;
   const uint32_t words = recordWords();
@@ -159,9 +167,9 @@ void compareAnyHitRuns(const Case& c, const Results& device, const Results& mode
       Status::QualityWarning, "R-WATERTIGHT",
       "double hit: any-hit ran for more than one of the triangles sharing an edge or vertex"};
   FindingBuilder b;
-  b.finding = {Status::Fail, "R-AHIT-DUP",
-               "any-hit ran more often than once per primitive the ray crosses "
-               "(NO_DUPLICATE_ANY_HIT_INVOCATION)"};
+  b.finding = findingOf(Status::Fail, primitiveRunsRule(c, "R-AHIT-DUP"),
+                        "any-hit ran more often than once per primitive the ray crosses "
+                        "(NO_DUPLICATE_ANY_HIT_INVOCATION)");
   size_t checked = 0;
   for (size_t i = 0; i < device.records.size() / words; ++i) {
     const uint32_t* d = &device.records[i * words];

@@ -164,6 +164,8 @@ std::string addressWritesLost(Case& c, ModelOptions& o);
 std::string specializationIgnored(Case& c, ModelOptions& o);
 std::string emptyGeometryRenumbered(Case& c, ModelOptions& o);
 std::string buildCounts16Bit(Case& c, ModelOptions& o);
+std::string meshTriangleDropped(Case& c, ModelOptions& o);
+std::string meshTriangleDuplicated(Case& c, ModelOptions& o);
 std::string sharedScratchKeepsPrevious(Case& c, ModelOptions& o);
 std::string hitAttributesLost(Case& c, ModelOptions& o);
 std::string callableDataNotReturned(Case& c, ModelOptions& o);

@@ -326,6 +326,14 @@ std::vector<FaultImpl> structureMutations() {
        "a build keeps each geometry's primitive count and its instance count in 16 bits: "
        "2^16 primitives or instances become none, 2^16 + k the first k",
        nullptr, buildCounts16Bit},
+      {"mesh-triangle-dropped", K::CaseMutation,
+       "a build loses the middle triangle of a mesh (the first of 4 to 65,536 triangles): "
+       "nothing is found where it lay",
+       nullptr, meshTriangleDropped},
+      {"mesh-triangle-duplicated", K::CaseMutation,
+       "a build keeps the middle triangle of a mesh (as above) twice, the copy a primitive of its "
+       "own: a ray through it finds two",
+       nullptr, meshTriangleDuplicated},
       {"shared-scratch-keeps-previous", K::CaseMutation,
        "builds one after another in the same scratch memory (scene.build.one_by_one) build "
        "what the one before left there: every BLAS after the first traces as the one before it",

@@ -57,7 +57,9 @@ std::vector<RuleFaults> structureRules() {
   const Status fail = Status::Fail;
   return {
       {"R-AS-COPY", {"copy-drops-instance"}, {}},
-      {"R-AS-SIZE", {"build-counts-16-bit"}, {}},
+      {"R-AS-SIZE",
+       {"build-counts-16-bit", "mesh-triangle-dropped", "mesh-triangle-duplicated"},
+       {}},
       {"R-AS-BUILD",
        {"shared-scratch-keeps-previous"},
        {},

@@ -1,6 +1,8 @@
-// The generated meshes of a `triangles` map: grid, fan, triangulation; the
+// The generated meshes of a `triangles` map: grid, fan, triangulation,
+// subdivision; the
 // generated boxes of an `aabbs` map and instances of a `scene.instances` entry.
 #include "case/box_grid.h"
+#include "case/subdivision.h"
 #include "case/triangle_fan.h"
 #include "case/triangle_grid.h"
 #include "case/triangulation.h"
@@ -109,6 +111,35 @@ bool parseTriangulation(YamlReader& r, const YAML::Node& m, const std::string& f
   return true;
 }
 
+// subdivision: {triangles: N, size: [w, h], center, relief, seed}.
+bool parseSubdivision(YamlReader& r, const YAML::Node& m, const std::string& f, Geometry& g) {
+  if (!r.expectMap(m, f, {"triangles", "size", "center", "relief", "seed"}) ||
+      !(r.require(m, f, "triangles") & r.require(m, f, "size") & r.require(m, f, "seed")))
+    return false;
+  SubdivisionSpec spec;
+  auto n = r.uint(YamlReader::get(m, "triangles"), f + ".triangles", 1u << 20);
+  auto size = r.numbers<2>(YamlReader::get(m, "size"), f + ".size");
+  auto center = parseCenter(r, m, f);
+  auto seed = r.uint(YamlReader::get(m, "seed"), f + ".seed");
+  std::optional<double> relief = 0.0;
+  if (YamlReader::has(m, "relief")) relief = r.number(YamlReader::get(m, "relief"), f + ".relief");
+  if (!n || !size || !center || !seed || !relief) return false;
+  if (!((*size)[0] > 0 && (*size)[1] > 0 && *relief >= 0)) {
+    r.error(m, f, "size must be positive and relief not negative");
+    return false;
+  }
+  spec.triangles = *n;
+  spec.size = *size;
+  spec.center = *center;
+  spec.relief = *relief;
+  spec.seed = *seed;
+  if (Result<void> made = makeSubdivision(spec, g); !made) {
+    r.error(YamlReader::get(m, "triangles"), f + ".triangles", made.error().message);
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool parseBoxGrid(YamlReader& r, const YAML::Node& n, const std::string& field, Geometry& g) {
@@ -165,7 +196,7 @@ void parseInstanceGrid(YamlReader& r, const YAML::Node& n, const std::string& fi
 
 std::optional<bool> parseGeneratedMesh(YamlReader& r, const YAML::Node& n, const std::string& field,
                                        Geometry& g) {
-  const char* names[] = {"grid", "fan", "triangulation"};
+  const char* names[] = {"grid", "fan", "triangulation", "subdivision"};
   int given = 0;
   const char* name = nullptr;
   for (const char* k : names)
@@ -176,7 +207,8 @@ std::optional<bool> parseGeneratedMesh(YamlReader& r, const YAML::Node& n, const
   if (!given) return std::nullopt;
   if (given > 1 || YamlReader::has(n, "vertices") || YamlReader::has(n, "indices")) {
     r.error(n, field,
-            "a generated mesh (grid, fan or triangulation) is one of them alone, without vertices "
+            "a generated mesh (grid, fan, triangulation or subdivision) is one of them alone, "
+            "without vertices "
             "or indices");
     return false;
   }
@@ -184,6 +216,7 @@ std::optional<bool> parseGeneratedMesh(YamlReader& r, const YAML::Node& n, const
   const YAML::Node m = YamlReader::get(n, name);
   if (name == std::string("grid")) return parseGrid(r, m, f, g);
   if (name == std::string("fan")) return parseFan(r, m, f, g);
+  if (name == std::string("subdivision")) return parseSubdivision(r, m, f, g);
   return parseTriangulation(r, m, f, g);
 }
 

@@ -10,9 +10,9 @@ namespace {
 
 bool parseTriangleData(YamlReader& r, const YAML::Node& n, const std::string& field, Geometry& g) {
   g.kind = Geometry::Kind::Triangles;
-  if (!r.expectMap(
-          n, field,
-          {"grid", "fan", "triangulation", "vertices", "indices", "vertex_format", "index_type"}))
+  if (!r.expectMap(n, field,
+                   {"grid", "fan", "triangulation", "subdivision", "vertices", "indices",
+                    "vertex_format", "index_type"}))
     return false;
   if (const std::optional<bool> generated = parseGeneratedMesh(r, n, field, g)) return *generated;
   if (!r.require(n, field, "vertices")) return false;
