@@ -2,6 +2,7 @@
 // gl_ObjectToWorldEXT and gl_WorldToObjectEXT (and their 3x4 forms) each give
 // the other matrix (the model's test-only hook, model/model_faults.h).
 #include "fault/fault_impl.h"
+#include "fault/program_edit.h"
 #include "program/builtins.h"
 #include "program/walk_program.h"
 
