@@ -71,8 +71,9 @@ TEST(PositionFetch, TheWorldSpaceFaultMovesThem) {
 }
 
 TEST(PositionFetch, AGroupWithAnIntersectionShaderMayNotReadIt) {
-  const ParseResult p = parseCaseText(
-      caseText(kIdentityRows, "      intersection: [report: {t: 1.0, kind: 1}]\n"), "t.yaml", "t/t");
+  const ParseResult p =
+      parseCaseText(caseText(kIdentityRows, "      intersection: [report: {t: 1.0, kind: 1}]\n"),
+                    "t.yaml", "t/t");
   ASSERT_FALSE(p.errors.empty());
   const std::string e = p.errors[0].format();
   EXPECT_NE(e.find("t.yaml:"), std::string::npos) << e;
