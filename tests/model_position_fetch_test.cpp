@@ -36,10 +36,10 @@ std::string caseText(const std::string& geometry_transform, const std::string& g
          "  per_ray: [hit_position, color]\n";
 }
 
-const std::string kIdentity = "[1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0]";
+const std::string kIdentityRows = "[1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0]";
 
 TEST(PositionFetch, ObjectSpaceVerticesInTheGeometrysOrder) {
-  const Case c = parseInline(caseText(kIdentity));
+  const Case c = parseInline(caseText(kIdentityRows));
   const Results r = runTier(c, ModelTier::Exact);
   // Ray 0 (world 11, -0.5: object 0.5, -0.25) is in triangle 0 (0, 1, 2).
   EXPECT_EQ(fword(r, 0, "color", 0), -1.0f);
@@ -63,7 +63,7 @@ TEST(PositionFetch, TheGeometryTransformApplies) {
 }
 
 TEST(PositionFetch, TheWorldSpaceFaultMovesThem) {
-  Case c = parseInline(caseText(kIdentity));
+  Case c = parseInline(caseText(kIdentityRows));
   ModelOptions o{ModelTier::Exact, 2};
   o.faults.position_fetch_world_space = true;
   const Results r = runOnModel(c, derivePlan(c), o);
@@ -71,8 +71,9 @@ TEST(PositionFetch, TheWorldSpaceFaultMovesThem) {
 }
 
 TEST(PositionFetch, AGroupWithAnIntersectionShaderMayNotReadIt) {
-  const ParseResult p = parseCaseText(
-      caseText(kIdentity, "      intersection: [report: {t: 1.0, kind: 1}]\n"), "t.yaml", "t/t");
+  const ParseResult p =
+      parseCaseText(caseText(kIdentityRows, "      intersection: [report: {t: 1.0, kind: 1}]\n"),
+                    "t.yaml", "t/t");
   ASSERT_FALSE(p.errors.empty());
   const std::string e = p.errors[0].format();
   EXPECT_NE(e.find("t.yaml:"), std::string::npos) << e;

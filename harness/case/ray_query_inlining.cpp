@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "program/hit_object.h"
 #include "program/ops.h"
 #include "program/walk_program.h"
 
@@ -98,9 +99,21 @@ std::string tooManyCopies(uint64_t sites, uint64_t nested, uint32_t levels) {
          " levels of max_recursion; GLSL has no recursion)";
 }
 
+// Whether a stage of the pipeline uses a hit object (program/hit_object.h),
+// which has no ray query form.
+bool usesHitObjects(const Pipeline& p) {
+  bool uses = usesHitObject(p.raygen);
+  for (const Program& g : p.other_raygens) uses = uses || usesHitObject(g);
+  for (const Program& m : p.miss) uses = uses || usesHitObject(m);
+  for (const HitGroup& h : p.hit_groups)
+    if (h.closest_hit) uses = uses || usesHitObject(*h.closest_hit);
+  return uses;
+}
+
 // What both forms refuse.
 std::string commonObstacle(const Case& c, bool own) {
   const Pipeline& p = c.pipeline;
+  if (usesHitObjects(p)) return "it uses hit objects (VK_NV_ray_tracing_invocation_reorder)";
   if ((p.ray_query || p.ray_query_in_hit) && !own) return "the case traces by ray query itself";
   if (!c.expected_rejections.empty()) return "the case expects a shader to be rejected";
   // The SBT tables the forms read are bound in set 0 (glsl/bindings.h).

@@ -4,6 +4,7 @@
 #include <functional>
 #include <set>
 
+#include "program/hit_object.h"
 #include "program/walk_program.h"
 
 namespace rayspec {
@@ -141,6 +142,11 @@ TraceShape traceShape(const Case& c) {
     t.hit_runs_closest_hit = t.hit_runs_closest_hit && r.group;
   t.miss_runs_miss = !pipe.miss.empty();
   for (const SbtRecord& r : pipe.sbt_miss) t.miss_runs_miss = t.miss_runs_miss && r.group;
+  // A trace into a hit object runs its closest-hit or miss only when (and
+  // each time) it is executed.
+  bool hit_objects = usesHitObject(pipe.raygen);
+  forEachNonRaygen(pipe, [&](const Program& p) { hit_objects = hit_objects || usesHitObject(p); });
+  if (hit_objects) t.hit_runs_closest_hit = t.miss_runs_miss = false;
   return t;
 }
 

@@ -21,6 +21,7 @@ std::string pipelineFeature(const Case& c, const Plan& plan) {
   if (!p.constants.empty() || !p.specialize.empty()) return "specialization constants";
   if (p.empty_layout) return "an empty pipeline layout (pipeline.layout)";
   if (plan.position_fetch) return "position fetch (vertex_position)";
+  if (plan.hit_objects) return "hit objects (VK_NV_ray_tracing_invocation_reorder)";
   if (plan.cull_mask_builtin) return "the cull_mask built-in (VK_KHR_ray_tracing_maintenance1)";
   return "";
 }

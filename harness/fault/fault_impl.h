@@ -140,6 +140,15 @@ std::string matrixTransposed(Case& c, ModelOptions& o);
 std::string floatBitsConverted(Case& c, ModelOptions& o);
 std::string functionIgnoreLost(Case& c, ModelOptions& o);
 std::string transformBuiltinsSwapped(Case& c, ModelOptions& o);
+// Hit objects (mutate_hit_objects.cpp).
+std::string hitObjectTraceShades(Case& c, ModelOptions& o);
+std::string hitObjectStateWrong(Case& c, ModelOptions& o);
+std::string hitObjectIdsSwapped(Case& c, ModelOptions& o);
+std::string hitObjectTInitial(Case& c, ModelOptions& o);
+std::string hitObjectObjectRayWorld(Case& c, ModelOptions& o);
+std::string hitObjectMatricesSwapped(Case& c, ModelOptions& o);
+std::string hitObjectAttributesLost(Case& c, ModelOptions& o);
+std::string hitObjectSbtIndexOfInstance(Case& c, ModelOptions& o);
 // Ray query statements (mutate_ray_query.cpp).
 std::string queryInitKeepsCommitted(Case& c, ModelOptions& o);
 std::string queryOffersOpaque(Case& c, ModelOptions& o);

@@ -341,6 +341,39 @@ std::vector<FaultImpl> structureMutations() {
   };
 }
 
+// Hit objects (VK_NV_ray_tracing_invocation_reorder), broken on the model.
+std::vector<FaultImpl> hitObjectMutations() {
+  using K = FaultKind;
+  return {
+      {"hit-object-trace-shades", K::CaseMutation,
+       "hitObjectTraceRayNV runs closest-hit or miss at once, as traceRayEXT does (and "
+       "executing the hit object runs it again)",
+       nullptr, hitObjectTraceShades},
+      {"hit-object-state-wrong", K::CaseMutation,
+       "hitObjectIsMissNV and hitObjectIsEmptyNV each answer the other", nullptr,
+       hitObjectStateWrong},
+      {"hit-object-ids-swapped", K::CaseMutation,
+       "the hit object's instance id and custom index each read the other, so do its primitive "
+       "and geometry index, and its hit kind is the other face's",
+       nullptr, hitObjectIdsSwapped},
+      {"hit-object-t-initial", K::CaseMutation,
+       "hitObjectGetRayTMaxNV of a hit reads the tmax its trace started with", nullptr,
+       hitObjectTInitial},
+      {"hit-object-object-ray-world", K::CaseMutation,
+       "the hit object's object-space ray reads the world-space ray", nullptr,
+       hitObjectObjectRayWorld},
+      {"hit-object-matrices-swapped", K::CaseMutation,
+       "the hit object's object-to-world and world-to-object matrices each read the other", nullptr,
+       hitObjectMatricesSwapped},
+      {"hit-object-attributes-lost", K::CaseMutation,
+       "hitObjectGetAttributesNV writes zero attributes", nullptr, hitObjectAttributesLost},
+      {"hit-object-sbt-index-of-instance", K::CaseMutation,
+       "hitObjectGetShaderBindingTableRecordIndexNV reads the hit instance's SBT offset alone "
+       "(no geometry index times the stride, no trace offset), a miss's 0",
+       nullptr, hitObjectSbtIndexOfInstance},
+  };
+}
+
 // Faults of shader code, launches and geometry numbering.
 std::vector<FaultImpl> codeAndLaunchMutations() {
   using K = FaultKind;
@@ -524,9 +557,10 @@ std::vector<FaultImpl> vulkanFaults() {
 const std::vector<FaultImpl>& faultImpls() {
   static const std::vector<FaultImpl> table = [] {
     std::vector<FaultImpl> all;
-    for (auto part : {recordEdits, sceneAndFlagMutations, programMutations, sbtAndOrderMutations,
-                      pipelineMutations, structureMutations, codeAndLaunchMutations,
-                      rayQueryMutations, processFaults, vulkanFaults, queryFaults})
+    for (auto part :
+         {recordEdits, sceneAndFlagMutations, programMutations, sbtAndOrderMutations,
+          pipelineMutations, structureMutations, codeAndLaunchMutations, rayQueryMutations,
+          hitObjectMutations, processFaults, vulkanFaults, queryFaults})
       for (FaultImpl& f : part()) all.push_back(std::move(f));
     return all;
   }();

@@ -187,12 +187,25 @@ std::vector<RuleFaults> creationRules() {
   };
 }
 
+// The rules of hit objects (VK_NV_ray_tracing_invocation_reorder), broken on
+// the model: one getter family each, and closest-hit run at the trace.
+std::vector<RuleFaults> hitObjectRules() {
+  return {
+      {"R-HIT-OBJECT",
+       {"hit-object-state-wrong", "hit-object-ids-swapped", "hit-object-t-initial",
+        "hit-object-object-ray-world", "hit-object-matrices-swapped", "hit-object-attributes-lost",
+        "hit-object-sbt-index-of-instance"},
+       {}},
+      {"R-HIT-OBJECT-DEFERRED", {"hit-object-trace-shades"}, {}},
+  };
+}
+
 }  // namespace
 
 const std::vector<RuleFaults>& ruleFaults() {
   static const std::vector<RuleFaults> table = [] {
     std::vector<RuleFaults> all = traversalRules();
-    for (auto part : {pipelineRules, creationRules, structureRules})
+    for (auto part : {pipelineRules, creationRules, structureRules, hitObjectRules})
       for (RuleFaults& r : part()) all.push_back(std::move(r));
     return all;
   }();

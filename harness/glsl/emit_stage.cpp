@@ -104,6 +104,19 @@ void recordMembersBlock(const StageContext& ctx, GlslWriter& out) {
   out.close("} rs_members;");
 }
 
+// The stage's hit object (GL_NV_shader_invocation_reorder), global so that
+// functions reach it, and its attributes as hitObjectGetAttributesNV writes
+// them (hit_object.attributes: a vec2, the hit attribute's first 8 bytes).
+void hitObjectVariables(const StageContext& ctx, GlslWriter& out) {
+  if (!ctx.uses.hit_object) return;
+  out.line("hitObjectNV rs_hit_object;");
+  out.line("layout(location = 0) hitObjectAttributeNV vec2 rs_hit_object_attr;");
+  out.open("vec2 rs_hit_object_attributes() {");
+  out.line("hitObjectGetAttributesNV(rs_hit_object, 0);");
+  out.line("return rs_hit_object_attr;");
+  out.close();
+}
+
 void interfaceVariables(const StageContext& ctx, GlslWriter& out) {
   const StageUses& u = ctx.uses;
   const Stage s = ctx.stage;
@@ -122,6 +135,7 @@ void interfaceVariables(const StageContext& ctx, GlslWriter& out) {
       out.line("hitAttributeEXT vec2 rs_attr;");
     }
   }
+  hitObjectVariables(ctx, out);
   if (s == Stage::Raygen && ctx.plan.records) {
     for (size_t i = 0; i < ctx.plan.images.size(); ++i) {
       const ImageOutput& img = ctx.plan.images[i];
@@ -226,6 +240,7 @@ void extensions(const StageContext& ctx, bool ray_query, GlslWriter& out) {
     out.line("#extension GL_EXT_buffer_reference : require");
   if (ctx.c.pipeline.empty_layout) out.line("#extension GL_EXT_buffer_reference_uvec2 : require");
   if (u.cull_mask) out.line("#extension GL_EXT_ray_cull_mask : require");
+  if (u.hit_object) out.line("#extension GL_NV_shader_invocation_reorder : require");
   if (u.position_fetch || u.query_position_fetch)
     out.line("#extension GL_EXT_spirv_intrinsics : require");
   if (u.record_members && ctx.c.pipeline.record_layout.scalar)
@@ -309,6 +324,7 @@ void mainFunction(const StageContext& ctx, const Program& program, GlslWriter& o
                              : "rs_ray = rs_load_ray(rs_launch_index());");
   emitPayloadStart(ctx, out);
   emitCallDataStart(ctx, out);
+  if (ctx.uses.hit_object) out.line("hitObjectRecordEmptyNV(rs_hit_object);");
   out.line("// ---- program ----");
   emitProgram(program, ctx, out);
   if (stage == Stage::Raygen && !ctx.plan.images.empty()) {

@@ -184,6 +184,12 @@ void emitProgram(const Program& program, const StageContext& ctx, GlslWriter& ou
       case Stmt::Kind::Call:
         emitCall(s, ctx, out);
         break;
+      case Stmt::Kind::ExecuteHitObject:
+      case Stmt::Kind::RecordMiss:
+      case Stmt::Kind::RecordEmpty:
+      case Stmt::Kind::Reorder:
+        emitHitObjectStatement(s, ctx, out);
+        break;
       case Stmt::Kind::Light:
         light(s, out);
         break;

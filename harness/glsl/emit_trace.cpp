@@ -62,13 +62,12 @@ void tlasIndexLocal(const TraceArgs& t, const StageContext& ctx, GlslWriter& out
   if (!t.tlas_index.empty()) out.line("uint rs_tlas_i = " + emitExpr(t.tlas_index[0], ctx) + ";");
 }
 
-void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
+namespace {
+
+// The trace's arguments as locals rs_flags .. rs_tmax: the case's
+// expressions, else raygen's launch ray or the rays defaults.
+void traceLocals(const TraceArgs& t, const StageContext& ctx, GlslWriter& out) {
   const bool raygen = ctx.stage == Stage::Raygen;
-  if (!raygen && ctx.stage != Stage::ClosestHit && ctx.stage != Stage::Miss) {
-    out.raw(std::string("#error rayspec: trace is not allowed in ") + stageName(ctx.stage) + "\n");
-    return;
-  }
-  const TraceArgs& t = s.trace;
   const Ray& d = ctx.c.rays.defaults;
   auto def = [&](const std::string& launch, const std::string& nested) {
     return raygen ? launch : nested;
@@ -84,7 +83,6 @@ void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
       {"vec3", "rs_direction", &t.direction, def("rs_ray.direction", "")},
       {"float", "rs_tmax", &t.tmax, def("rs_ray.tmax", glslFloat(d.tmax))},
   };
-  out.open("{  // trace");
   for (const Arg& a : args) {
     std::string value = a.given->empty() ? a.fallback : emitExpr(a.given->front(), ctx);
     if (value.empty()) {
@@ -93,6 +91,66 @@ void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
     }
     out.line(std::string(a.type) + " " + a.local + " = " + value + ";");
   }
+}
+
+// execute: the payload started as a trace starts it, the hit object's
+// shader run on it, the result read as a trace's.
+void emitExecute(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
+  out.open("{  // execute");
+  startPayload(s, ctx, out);
+  out.line("hitObjectExecuteShaderNV(rs_hit_object, " +
+           std::to_string(outgoingLocation(ctx, s.trace.location)) + ");");
+  emitPayloadResult(ctx, s.trace.location, out);
+  out.close();
+}
+
+// reorder: with the hit object, the hint, or both.
+std::string reorderCall(const Stmt& s, const StageContext& ctx) {
+  std::string args = s.size ? "rs_hit_object" : "";
+  for (const auto& [name, value] : s.assigns)
+    args += (args.empty() ? "" : ", ") + emitExpr(value, ctx);
+  return "reorderThreadNV(" + args + ");";
+}
+
+}  // namespace
+
+void emitHitObjectStatement(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
+  if (tracesByRayQuery(ctx)) {  // refused before (case/ray_query_inlining.h)
+    out.raw("#error rayspec: hit objects have no ray query form\n");
+    return;
+  }
+  switch (s.kind) {
+    case Stmt::Kind::ExecuteHitObject:
+      emitExecute(s, ctx, out);
+      break;
+    case Stmt::Kind::RecordMiss:
+      out.open("{  // record_miss");
+      traceLocals(s.trace, ctx, out);
+      out.line(
+          "hitObjectRecordMissNV(rs_hit_object, rs_miss, rs_origin, rs_tmin, rs_direction, "
+          "rs_tmax);");
+      out.close();
+      break;
+    case Stmt::Kind::RecordEmpty:
+      out.line("hitObjectRecordEmptyNV(rs_hit_object);");
+      break;
+    case Stmt::Kind::Reorder:
+      out.line(reorderCall(s, ctx));
+      break;
+    default:
+      break;
+  }
+}
+
+void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
+  const bool raygen = ctx.stage == Stage::Raygen;
+  if (!raygen && ctx.stage != Stage::ClosestHit && ctx.stage != Stage::Miss) {
+    out.raw(std::string("#error rayspec: trace is not allowed in ") + stageName(ctx.stage) + "\n");
+    return;
+  }
+  const TraceArgs& t = s.trace;
+  out.open("{  // trace");
+  traceLocals(t, ctx, out);
   tlasIndexLocal(t, ctx, out);
   if (tracesByRayQuery(ctx)) {  // a ray query loop (glsl/emit_ray_query.h)
     const uint32_t l = s.trace.location;
@@ -104,7 +162,9 @@ void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
     return;
   }
   startPayload(s, ctx, out);
-  out.line(traceCall(ctx, tlasOperand(t, ctx), outgoingLocation(ctx, s.trace.location)));
+  const uint32_t location = outgoingLocation(ctx, s.trace.location);
+  out.line(t.hit_object ? hitObjectTraceCall(tlasOperand(t, ctx), location)
+                        : traceCall(ctx, tlasOperand(t, ctx), location));
   emitPayloadResult(ctx, s.trace.location, out);
   out.close();
 }

@@ -10,6 +10,11 @@
 namespace rayspec {
 
 void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out);
+// The hit object's statements (GL_NV_shader_invocation_reorder): execute
+// (hitObjectExecuteShaderNV, its payload as a trace's), record_miss,
+// record_empty and reorder (reorderThreadNV). A trace into the hit object is
+// emitTrace's (hitObjectTraceRayNV).
+void emitHitObjectStatement(const Stmt& s, const StageContext& ctx, GlslWriter& out);
 
 // The top level a trace or ray_query names (TraceArgs::tlas or tlas_index):
 // its index as GLSL (a constant, or rs_tlas_i % the top levels: a dynamic

@@ -14,6 +14,7 @@ namespace rayspec {
 struct StageUses {
   bool trace = false;                  // a traceRayEXT (raygen: payload; else: child)
   bool ray_query = false;              // a ray_query statement (GL_EXT_ray_query)
+  bool hit_object = false;             // the stage's hit object (program/hit_object.h)
   std::set<uint32_t> trace_locations;  // the payload locations its traces pass
   bool launch_ray = false;             // raygen: some trace takes a field from this launch's ray
   bool reads_child = false;            // child.* read (closest-hit, miss): zero before a trace

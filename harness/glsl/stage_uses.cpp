@@ -2,6 +2,7 @@
 
 #include "glsl/stage_context.h"
 #include "program/builtins.h"
+#include "program/hit_object.h"
 #include "program/ops.h"
 #include "program/payload_words.h"
 #include "results/record_layout.h"
@@ -25,6 +26,7 @@ void visitExpr(const Expr& e, StageUses& u) {
     if (isQueryVertexPosition(e.builtin)) u.query_position_fetch = true;
     if (needs & ChildPayload) u.reads_child = true;
     if (needs & CalleeData) u.reads_callee = true;
+    if (needs & HitObject) u.hit_object = true;
   } else if (e.kind == Expr::Kind::Op) {
     if (isSphereOp(e.op)) u.scene = u.sphere = true;
     if (e.op == Op::RecordUint || e.op == Op::RecordFloat) u.shader_record = true;
@@ -57,6 +59,27 @@ void visitQuery(const Stmt& s, Stage stage, StageUses& u) {
     visitExprs(*v, u);
     if (v->empty() && stage == Stage::Raygen) u.launch_ray = true;
   }
+}
+
+// A trace's fields (a record_miss's too): in raygen a missing one reads the
+// launch ray.
+void visitTraceArgs(const TraceArgs& t, Stage stage, StageUses& u) {
+  for (const auto* v : {&t.origin, &t.direction, &t.tmin, &t.tmax, &t.flags, &t.cull_mask,
+                        &t.sbt_offset, &t.sbt_stride, &t.miss}) {
+    visitExprs(*v, u);
+    if (v->empty() && stage == Stage::Raygen) u.launch_ray = true;
+  }
+}
+
+// execute (its payload is a trace's), record_miss, record_empty, reorder.
+void visitHitObjectStatement(const Stmt& s, Stage stage, StageUses& u) {
+  if (!isHitObjectStatement(s)) return;
+  u.hit_object = true;
+  for (const auto& a : s.assigns) visitExpr(a.second, u);
+  if (s.kind == Stmt::Kind::RecordMiss) visitTraceArgs(s.trace, stage, u);
+  if (s.kind != Stmt::Kind::ExecuteHitObject) return;
+  u.trace = true;
+  u.trace_locations.insert(s.trace.location);
 }
 
 void visitProgram(const Program& p, Stage stage, const Plan& plan, StageUses& u) {
@@ -97,14 +120,10 @@ void visitProgram(const Program& p, Stage stage, const Plan& plan, StageUses& u)
         break;
       case Stmt::Kind::Trace: {
         u.trace = true;
+        u.hit_object = u.hit_object || s.trace.hit_object;
         u.trace_locations.insert(s.trace.location);
         for (const auto& a : s.assigns) visitExpr(a.second, u);
-        const TraceArgs& t = s.trace;
-        for (const auto* v : {&t.origin, &t.direction, &t.tmin, &t.tmax, &t.flags, &t.cull_mask,
-                              &t.sbt_offset, &t.sbt_stride, &t.miss}) {
-          visitExprs(*v, u);
-          if (v->empty() && stage == Stage::Raygen) u.launch_ray = true;
-        }
+        visitTraceArgs(s.trace, stage, u);
         break;
       }
       case Stmt::Kind::RayQuery:
@@ -130,7 +149,8 @@ void visitProgram(const Program& p, Stage stage, const Plan& plan, StageUses& u)
       case Stmt::Kind::Invoke:
         for (const auto& a : s.assigns) visitExpr(a.second, u);
         break;
-      default:  // ignore, terminate, array, break, continue, return, case
+      default:  // the hit object's; ignore, terminate, array, break, continue, return, case
+        visitHitObjectStatement(s, stage, u);
         break;
     }
     visitProgram(s.then_, stage, plan, u);

@@ -60,6 +60,11 @@ std::string traceCall(const StageContext& ctx, const std::string& tlas, uint32_t
   return "traceRayEXT(" + tlas + ", " + kTraceArgs + ", " + std::to_string(location) + ");";
 }
 
+std::string hitObjectTraceCall(const std::string& tlas, uint32_t location) {
+  return "hitObjectTraceRayNV(rs_hit_object, " + tlas + ", " + kTraceArgs + ", " +
+         std::to_string(location) + ");";
+}
+
 std::string queryInitCall(const StageContext& ctx, const std::string& query,
                           const std::string& tlas) {
   const std::string args = query + ", " + tlas + ", " + kQueryArgs + ");";

@@ -20,6 +20,9 @@ void emitTlasFunctions(const StageContext& ctx, GlslWriter& out);
 // to the GLSL payload location `location`: traceRayEXT itself, or the
 // function above.
 std::string traceCall(const StageContext& ctx, const std::string& tlas, uint32_t location);
+// hitObjectTraceRayNV into the stage's hit object (rs_hit_object) with the
+// same locals; never through pipeline.tlas_function's functions.
+std::string hitObjectTraceCall(const std::string& tlas, uint32_t location);
 // The same for rayQueryInitializeEXT of `query` (rs_flags, rs_cull_mask,
 // rs_origin, rs_tmin, rs_direction, rs_tmax).
 std::string queryInitCall(const StageContext& ctx, const std::string& query,

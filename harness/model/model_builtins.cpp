@@ -271,10 +271,12 @@ Val ModelBuiltins::read(const CExpr& e, StageEnv& env) const {
     case kBiCalleeValue:
     case kBiCalleeWord:
       return dataBuiltin(e, env);
-#define RAYSPEC_QUERY_CASE(id, ...) case kBi##id:
-      RAYSPEC_QUERY_BUILTINS(RAYSPEC_QUERY_CASE)
-#undef RAYSPEC_QUERY_CASE
+#define RAYSPEC_BUILTIN_CASE(id, ...) case kBi##id:
+      RAYSPEC_QUERY_BUILTINS(RAYSPEC_BUILTIN_CASE)
       return queryBuiltin(e, env);
+      RAYSPEC_HIT_OBJECT_BUILTINS(RAYSPEC_BUILTIN_CASE)
+#undef RAYSPEC_BUILTIN_CASE
+      return hitObjectBuiltin(e, env);
     case kBiCount:
     case kBiUnknown:
       break;

@@ -30,6 +30,9 @@ class ModelBuiltins {
   Val queryBuiltin(const CExpr& e, const StageEnv& env) const;
   Val queryHit(int row, const HitView& hv) const;
   Val queryVertexPosition(const HitView& hv, int i) const;
+  // hit_object.* of the stage's hit object (model_builtins_hit_object.cpp).
+  Val hitObjectBuiltin(const CExpr& e, const StageEnv& env) const;
+  Val hitObjectOwn(const CExpr& e, const HitObjectState& h) const;
   void unknown(const CExpr& e) const;
   // Widens this ray's object_ray_origin tolerance where hv's world-to-object
   // terms of the world origin are large beside the result (R-PREC).

@@ -192,7 +192,7 @@ ModelShared sharedState(const Case& c, const Plan& plan, const ModelOptions& opt
   shared.raygen_traces_launch_ray =
       programs.raygen.size() == 1 && programs.raygen[0].kind == Stmt::Kind::Trace &&
       programs.raygen[0].assigns.empty() && programs.raygen[0].src->trace.tlas == 0 &&
-      c.pipeline.payload_words.size() == 1 &&
+      !programs.raygen[0].src->trace.hit_object && c.pipeline.payload_words.size() == 1 &&
       std::none_of(programs.raygen[0].has.begin(), programs.raygen[0].has.end(),
                    [](bool b) { return b; });
   shared.payload_types = c.pipeline.payload_words.size() > 1;

@@ -55,6 +55,17 @@ class ModelFaultSeam {
   bool positionFetchWorldSpace() const { return f_.position_fetch_world_space; }
   // R-BUILTIN broken: object_to_world and world_to_object swapped.
   bool transformBuiltinsSwapped() const { return f_.transform_builtins_swapped; }
+  bool hitObjectTraceShades() const { return f_.hit_object_trace_shades; }  // R-HIT-OBJECT-DEFERRED
+  // R-HIT-OBJECT: one family of the hit object's getters read wrong (HitObjectGetterFault).
+  bool hitObjectStateWrong() const { return getter(HitObjectGetterFault::StateWrong); }
+  bool hitObjectIdsSwapped() const { return getter(HitObjectGetterFault::IdsSwapped); }
+  bool hitObjectTInitial() const { return getter(HitObjectGetterFault::TInitial); }
+  bool hitObjectObjectRayWorld() const { return getter(HitObjectGetterFault::ObjectRayWorld); }
+  bool hitObjectMatricesSwapped() const { return getter(HitObjectGetterFault::MatricesSwapped); }
+  bool hitObjectAttributesLost() const { return getter(HitObjectGetterFault::AttributesLost); }
+  bool hitObjectSbtIndexOfInstance() const {
+    return getter(HitObjectGetterFault::SbtIndexOfInstance);
+  }
   // R-BUILTIN, R-RQ-EQUIV broken: a nested hit's built-ins replace its caller's.
   bool nestedTraceClobbersHit() const { return f_.nested_trace_clobbers_hit; }
   // Live state broken: locals read zero after a trace, call or report.
@@ -133,6 +144,7 @@ class ModelFaultSeam {
   bool nearBoxesOffered() const { return f_.aabb_near_offered; }
 
  private:
+  bool getter(HitObjectGetterFault family) const { return f_.hit_object_getter == family; }
   ModelFaults f_;
   uint32_t inlined_from_depth_ = 0;  // the first trace depth inlined as a query loop (0: none)
 };

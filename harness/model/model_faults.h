@@ -23,6 +23,26 @@ enum class ModelDeviation { None, ClosedTriangleInterval, OpenAabbInterval };
 // the candidate whose any-hit terminates after every other).
 enum class CandidateOrder { Distance, ReverseDistance, BuildOrder, Permuted, OneLast };
 
+// Hit objects (GL_NV_shader_invocation_reorder) broken, one getter family
+// each (R-HIT-OBJECT): StateWrong: is_miss and is_empty each read the other;
+// IdsSwapped: instance_id and instance_custom_index each read the other, so
+// do primitive_id and geometry_index, and hit_kind its other face's;
+// TInitial: t reads the tmax the trace started with, not the hit's;
+// ObjectRayWorld: the object-space ray reads the world ray; MatricesSwapped:
+// object_to_world and world_to_object each read the other; AttributesLost:
+// attributes read zero; SbtIndexOfInstance: sbt_record_index reads the hit
+// instance's SBT offset alone (no geometry or trace offset), a miss's 0.
+enum class HitObjectGetterFault : uint8_t {
+  None,
+  StateWrong,
+  IdsSwapped,
+  TInitial,
+  ObjectRayWorld,
+  MatricesSwapped,
+  AttributesLost,
+  SbtIndexOfInstance
+};
+
 struct ModelFaults {
   ModelDeviation deviation = ModelDeviation::None;
   CandidateOrder order = CandidateOrder::Distance;
@@ -135,6 +155,10 @@ struct ModelFaults {
   // error bound of (model/box_bound.h) is offered, its intersection program
   // run, though the model's own ray misses it (far ray origins: whole units).
   bool aabb_near_offered = false;
+  // R-HIT-OBJECT-DEFERRED broken: hitObjectTraceRayNV runs closest-hit or
+  // miss as traceRayEXT does (and executing the hit object runs it again).
+  bool hit_object_trace_shades = false;
+  HitObjectGetterFault hit_object_getter = HitObjectGetterFault::None;
 };
 
 }  // namespace rayspec

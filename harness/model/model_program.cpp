@@ -36,6 +36,9 @@ bool isInPlaneFree(Builtin b) {
     case kBiQCommittedBarycentrics:
     case kBiQCandFrontFace:
     case kBiQCommittedFrontFace:
+    case kBiHoT:
+    case kBiHoAttributes:
+    case kBiHoHitKind:
       return true;
     default:
       return false;
@@ -51,6 +54,7 @@ bool isRootTFree(Builtin b) {
     case kBiHitPosition:
     case kBiQCandT:
     case kBiQCommittedT:
+    case kBiHoT:
       return true;
     default:
       return false;
@@ -288,7 +292,7 @@ struct Compiler {
         if (leavesQueryLoop(c.then_)) r.size = 1;  // a break leaves its loop
     }
     if (s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::RayQuery ||
-        s.kind == Stmt::Kind::RestartQuery) {
+        s.kind == Stmt::Kind::RestartQuery || s.kind == Stmt::Kind::RecordMiss) {
       const std::vector<Expr>* a[CStmt::kTraceArgs] = {
           &s.trace.origin, &s.trace.direction, &s.trace.tmin,       &s.trace.tmax,
           &s.trace.flags,  &s.trace.cull_mask, &s.trace.sbt_offset, &s.trace.sbt_stride,

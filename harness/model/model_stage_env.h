@@ -63,6 +63,21 @@ struct HitView {
   std::array<uint32_t, kMaxAttributeWords> words{};
 };
 
+// A stage's hit object (GL_NV_shader_invocation_reorder): empty, the
+// committed hit of a trace into it (hitObjectTraceRayNV: its any-hit and
+// intersection programs ran, closest-hit and miss did not) or its miss, or a
+// miss recorded by hand; with the ray and SBT record executing it runs
+// (ModelTracer::executeHitObject).
+struct HitObjectState {
+  enum class Kind : uint8_t { Empty, Hit, Miss };
+  Kind kind = Kind::Empty;
+  TraceRay ray;            // the ray traced or recorded (a miss: its miss index in ray.miss)
+  uint32_t flags = 0;      // the ray flags traversal resolved (the pipeline's skip flags added)
+  uint32_t depth = 0;      // the trace's depth, which the executed shader runs at
+  uint32_t sbt_index = 0;  // the record executing it runs: a hit's in the hit region, a miss's
+  HitView hit;             // a hit's built-ins (its object-space ray always computed)
+};
+
 struct Traversal;
 struct QueryRun;
 
@@ -77,9 +92,10 @@ struct StageEnv {
   const HitView* hit = nullptr;
   float tmax_view = 0;
   uint32_t depth = 0;
-  Traversal* traversal = nullptr;  // intersection (report) and any-hit
-  std::vector<Val> locals;         // the frame's local variables (program/locals.h slots)
-  QueryRun* query = nullptr;       // the innermost ray_query running (model/query_run.h)
+  Traversal* traversal = nullptr;        // intersection (report) and any-hit
+  std::vector<Val> locals;               // the frame's local variables (program/locals.h slots)
+  QueryRun* query = nullptr;             // the innermost ray_query running (model/query_run.h)
+  HitObjectState* hit_object = nullptr;  // raygen, closest-hit, miss: the stage's hit object
 };
 
 // How a statement ends: go on, ignore / terminate (any-hit), or leave a

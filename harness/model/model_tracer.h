@@ -38,6 +38,16 @@ class ModelTracer {
   // launch ray), named when the trace is undefined; `payload` is what the
   // trace starts with.
   Payload trace(const TraceRay& r, uint32_t depth, const CStmt* site, Payload payload = {});
+  // hitObjectTraceRayNV (model/hit_object_trace.cpp): the trace's traversal
+  // (any-hit and intersection programs run), its committed hit or miss, ray
+  // and SBT record kept in `into`, no closest-hit or miss run; the payload as
+  // traversal left it.
+  Payload traceIntoHitObject(const TraceRay& r, uint32_t depth, const CStmt* site, Payload payload,
+                             HitObjectState& into);
+  // hitObjectExecuteShaderNV: the closest-hit or miss the hit object's trace
+  // would have run, with that hit's built-ins, on `payload`; nothing for an
+  // empty one.
+  void executeHitObject(const HitObjectState& h, Payload& payload);
   // Raygen is `trace: {}` and traces take Embree's closest hit: the launch
   // rays [begin, end) are traced and shaded in one pass (model_fast_path.cpp).
   void runLaunchRaysDirect(uint32_t begin, uint32_t end);
@@ -48,6 +58,10 @@ class ModelTracer {
  private:
   friend class TraceClassifier;  // model_exact_tier.cpp: classifyTrace's steps
   Committed directHit(const TraceRay& r, uint32_t flags);
+  // trace's first steps: the flags the pipeline adds, the ray's parameters
+  // checked, the committed hit (directHit or traverse); `flags` gets the flags.
+  Committed committedHit(const TraceRay& r, uint32_t depth, const CStmt* site, Payload& payload,
+                         uint32_t& flags);
   Committed traverse(const TraceRay& r, uint32_t flags, uint32_t depth, Payload& payload,
                      QueryRun* query = nullptr);
   // traverse's steps: the ray's candidates in the order they are decided

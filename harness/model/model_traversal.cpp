@@ -148,8 +148,9 @@ void sortCandidates(std::vector<ModelCandidate>& cands, const ModelFaultSeam& se
 
 using namespace trace_detail;
 
-Payload ModelTracer::trace(const TraceRay& r, uint32_t depth, const CStmt* site, Payload payload) {
-  uint32_t flags = r.flags;
+Committed ModelTracer::committedHit(const TraceRay& r, uint32_t depth, const CStmt* site,
+                                    Payload& payload, uint32_t& flags) {
+  flags = r.flags;
   if (sh_.c->pipeline.flags & kPipelineSkipTriangles) flags |= kRaySkipTriangles;
   if (sh_.c->pipeline.flags & kPipelineSkipAabbs) flags |= kRaySkipAabbs;
   payload.depth = depth;
@@ -157,7 +158,12 @@ Payload ModelTracer::trace(const TraceRay& r, uint32_t depth, const CStmt* site,
   // (validRay keeps it from Embree) and misses; one with an illegal flag
   // combination is traced with its flags as the model resolves them.
   st_.checkRayParameters(r, site, depth);
-  const Committed best = sh_.direct ? directHit(r, flags) : traverse(r, flags, depth, payload);
+  return sh_.direct ? directHit(r, flags) : traverse(r, flags, depth, payload);
+}
+
+Payload ModelTracer::trace(const TraceRay& r, uint32_t depth, const CStmt* site, Payload payload) {
+  uint32_t flags = 0;
+  const Committed best = committedHit(r, depth, site, payload, flags);
   shade(r, flags, depth, best, payload);
   return payload;
 }
@@ -440,6 +446,8 @@ void ModelTracer::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const
         hv.words = best.words;
         st_.bumpRuns(kRunsClosestHit);
         StageEnv env = hitStage(Stage::ClosestHit, rec->data, &payload, r, hv, hv.t, depth);
+        HitObjectState own;  // the stage's hit object, empty at its start
+        env.hit_object = &own;
         HitView* caller = std::exchange(shading_hit_, &hv);
         interp_.exec(*grp->closest_hit, env);
         shading_hit_ = caller;
@@ -469,6 +477,8 @@ void ModelTracer::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const
         env.ray = &r;
         env.tmax_view = r.tmax;
         env.depth = depth;
+        HitObjectState own;
+        env.hit_object = &own;
         HitView* caller = std::exchange(shading_hit_, nullptr);
         interp_.exec(sh_.programs->miss[*rec.group], env);
         shading_hit_ = caller;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "program/builtins.h"
+#include "results/record_layout.h"
 
 namespace rayspec {
 namespace {

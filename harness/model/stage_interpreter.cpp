@@ -94,6 +94,12 @@ Flow StageInterpreter::execStmt(const CStmt& s, StageEnv& env) {
       execTrace(s, env);
       loseLocals(env);
       return Flow::Continue;
+    case Stmt::Kind::ExecuteHitObject:
+    case Stmt::Kind::RecordMiss:
+    case Stmt::Kind::RecordEmpty:
+    case Stmt::Kind::Reorder:
+      execHitObject(s, env);
+      return Flow::Continue;
     case Stmt::Kind::Report: {
       const Flow f = hits_.report(s, env);
       loseLocals(env);
@@ -230,7 +236,9 @@ void StageInterpreter::execTrace(const CStmt& s, StageEnv& env) {
               std::to_string(sh_.c->pipeline.max_recursion));
     return;
   }
-  Payload p = tracer_.trace(r, depth, &s, start);
+  Payload p = s.src && s.src->trace.hit_object && env.hit_object
+                  ? tracer_.traceIntoHitObject(r, depth, &s, start, *env.hit_object)
+                  : tracer_.trace(r, depth, &s, start);
   if (env.stage == Stage::Raygen && env.payload)
     *env.payload = p;
   else
@@ -287,6 +295,8 @@ void StageInterpreter::runRaygen() {
   env.record_data = &sh_.c->pipeline.raygen_data;
   Payload last;
   env.payload = &last;
+  HitObjectState hit_object;
+  env.hit_object = &hit_object;
   exec(sh_.programs->raygen, env);
 }
 

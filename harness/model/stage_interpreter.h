@@ -59,8 +59,10 @@ class StageInterpreter {
   Flow execSwitch(const CStmt& s, StageEnv& env);
   Flow execInvoke(const CStmt& s, StageEnv& env);
   void loseLocals(StageEnv& env) const;
-  void execCall(const CStmt& s, StageEnv& env);          // executeCallableEXT
-  void execTrace(const CStmt& s, StageEnv& env);         // traceRayEXT
+  void execCall(const CStmt& s, StageEnv& env);   // executeCallableEXT
+  void execTrace(const CStmt& s, StageEnv& env);  // traceRayEXT
+  // execute, record_miss, record_empty, reorder (stage_interpreter_hit_object.cpp).
+  void execHitObject(const CStmt& s, StageEnv& env);
   Flow execRayQuery(const CStmt& s, StageEnv& env);      // a ray_query statement (model_query.cpp)
   Flow execRayQueries(const CStmt& s, StageEnv& env);    // ray_queries, stepped in turn
   Flow execRestartQuery(const CStmt& s, StageEnv& env);  // restart_query

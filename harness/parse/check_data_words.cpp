@@ -45,7 +45,8 @@ class WordChecker {
         writes(s, field, "call_data.", words(WordArray::Call), typeOf(WordArray::Call), kCallData);
       if (auto which = s.kind == Stmt::Kind::Store ? wordArrayOfStore(s.local) : std::nullopt)
         indexed(s.loc, field, "store to " + s.local, *which);
-      if (s.kind == Stmt::Kind::Trace) trace(s, field);
+      // execute passes a payload location as a trace does.
+      if (s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::ExecuteHitObject) trace(s, field);
       if (s.kind == Stmt::Kind::Call) call(s, field);
     });
   }

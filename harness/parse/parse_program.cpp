@@ -169,9 +169,14 @@ bool parseTrace(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& 
   if (v.IsNull()) return true;
   if (!r.expectMap(v, f,
                    {"origin", "direction", "tmin", "tmax", "flags", "cull_mask", "sbt_offset",
-                    "sbt_stride", "miss", "payload", "tlas", "location"}))
+                    "sbt_stride", "miss", "payload", "tlas", "location", "hit_object"}))
     return false;
   bool ok = tlasField(r, v, f, s.trace);
+  if (const YAML::Node h = YamlReader::get(v, "hit_object"); h.IsDefined()) {
+    const std::optional<bool> yes = parseSwitch(r, h, f + ".hit_object");
+    ok = yes.has_value() && ok;
+    s.trace.hit_object = yes.value_or(false);
+  }
   ok = constantIndex(r, v, f, "location", kMaxPayloadLocations - 1, s.trace.location,
                      s.trace.location_loc) &&
        ok;
@@ -255,6 +260,53 @@ bool parseRestartQuery(YamlReader& r, const YAML::Node& v, const std::string& f,
     return false;
   bool ok = tlasField(r, v, f, s.trace);
   return parseTraceSlots(r, v, f, s.trace) && ok;
+}
+
+// execute: {payload: {..}, location: k}: the hit object's shader run with
+// that payload (as a trace starts it).
+bool parseExecute(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::ExecuteHitObject;
+  if (v.IsNull()) return true;
+  if (!r.expectMap(v, f, {"payload", "location"})) return false;
+  bool ok = constantIndex(r, v, f, "location", kMaxPayloadLocations - 1, s.trace.location,
+                          s.trace.location_loc);
+  if (const YAML::Node p = YamlReader::get(v, "payload"); p.IsDefined())
+    ok = parsePayloadAssigns(r, p, f + ".payload", s) && ok;
+  return ok;
+}
+
+// record_miss: {miss, origin, direction, tmin, tmax}: a miss recorded into
+// the hit object without tracing, its fields defaulted as a trace's.
+bool parseRecordMiss(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::RecordMiss;
+  if (v.IsNull()) return true;
+  if (!r.expectMap(v, f, {"miss", "origin", "direction", "tmin", "tmax"})) return false;
+  return parseTraceSlots(r, v, f, s.trace);
+}
+
+// reorder: {hit_object: true, hint: expr, bits: expr}: reorderThreadNV with
+// the hit object, the hint, or both.
+bool parseReorder(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::Reorder;
+  if (!r.expectMap(v, f, {"hit_object", "hint", "bits"})) return false;
+  bool ok = true;
+  if (const YAML::Node h = YamlReader::get(v, "hit_object"); h.IsDefined()) {
+    const std::optional<bool> yes = parseSwitch(r, h, f + ".hit_object");
+    ok = yes.has_value();
+    s.size = yes.value_or(false) ? 1 : 0;
+  }
+  const bool hint = YamlReader::has(v, "hint"), bits = YamlReader::has(v, "bits");
+  if (hint != bits || (!hint && s.size == 0)) {
+    r.error(v, f, "reorder takes hit_object: true, hint and bits, or all three");
+    return false;
+  }
+  for (const char* key : {"hint", "bits"})
+    if (hint) {
+      Expr e;
+      ok = parseExpr(r, YamlReader::get(v, key), f + "." + key, e) && ok;
+      s.assigns.emplace_back(key, std::move(e));
+    }
+  return ok;
 }
 
 bool parseReport(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
@@ -453,7 +505,8 @@ bool scalarStmt(YamlReader& r, const YAML::Node& n, const std::string& field, St
       {"continue", Stmt::Kind::Continue},
       {"return", Stmt::Kind::Return},
       {"confirm", Stmt::Kind::Confirm},
-      {"terminate_query", Stmt::Kind::TerminateQuery}};
+      {"terminate_query", Stmt::Kind::TerminateQuery},
+      {"record_empty", Stmt::Kind::RecordEmpty}};
   for (const auto& [name, kind] : kScalars)
     if (n.Scalar() == name) {
       s.kind = kind;
@@ -461,7 +514,8 @@ bool scalarStmt(YamlReader& r, const YAML::Node& n, const std::string& field, St
     }
   r.error(n, field,
           "unknown statement '" + n.Scalar() +
-              "' (ignore, terminate, break, continue, return, confirm, terminate_query)");
+              "' (ignore, terminate, break, continue, return, confirm, terminate_query, "
+              "record_empty)");
   return false;
 }
 
@@ -469,7 +523,8 @@ bool scalarStmt(YamlReader& r, const YAML::Node& n, const std::string& field, St
 const char* const kStatementNames =
     "count, record, payload, call_data, ignore, terminate, report, trace, call, light, if, let, "
     "set, array, store, repeat, switch, invoke, break, continue, return, ray_query, ray_queries, "
-    "confirm, generate, terminate_query, restart_query";
+    "confirm, generate, terminate_query, restart_query, execute, record_miss, record_empty, "
+    "reorder";
 
 using StmtParser = bool (*)(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s);
 
@@ -548,7 +603,10 @@ const std::pair<const char*, StmtParser> kKeyedStatements[] = {{"count", parseCo
                                                                {"restart_query", parseRestartQuery},
                                                                {"generate", parseGenerate},
                                                                {"call", parseCall},
-                                                               {"light", parseLight}};
+                                                               {"light", parseLight},
+                                                               {"execute", parseExecute},
+                                                               {"record_miss", parseRecordMiss},
+                                                               {"reorder", parseReorder}};
 
 bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt& s) {
   s.loc = r.loc(n, field);

@@ -7,6 +7,7 @@
 #include "case/flag_names.h"
 #include "plan/walk_program.h"
 #include "program/builtins.h"
+#include "program/hit_object.h"
 #include "program/ops.h"
 
 namespace rayspec {
@@ -141,6 +142,7 @@ void planStatements(const std::vector<StageProgram>& programs, const Pipeline& p
       if (s.kind == Stmt::Kind::Call) plan.callables = true;
       if (s.kind == Stmt::Kind::Trace && sp.stage != Stage::Raygen) plan.nested_trace = true;
       if (s.kind == Stmt::Kind::RayQuery) plan.ray_queries = true;
+      if (isHitObjectStatement(s)) plan.hit_objects = true;
       if (!s.trace.tlas_index.empty()) plan.dynamic_tlas_index = true;
       if (s.kind == Stmt::Kind::Array) noteSized(s.local_type, plan);
       for (const auto& [name, type] : s.params) noteSized(type, plan);
@@ -150,6 +152,7 @@ void planStatements(const std::vector<StageProgram>& programs, const Pipeline& p
           e.kind == Expr::Kind::Builtin ? builtinNeeds(e.builtin) : builtin_needs::NoNeeds;
       if (needs & builtin_needs::CullMask) plan.cull_mask_builtin = true;
       if (needs & builtin_needs::PositionFetch) plan.position_fetch = true;
+      if (needs & builtin_needs::HitObject) plan.hit_objects = true;
       const bool reads_box =
           (needs & builtin_needs::BoxData) || (e.kind == Expr::Kind::Op && isSphereOp(e.op));
       // In another stage, sphere_* of a ray_query's AABB candidate (program/ops.h).
@@ -253,6 +256,7 @@ std::vector<std::string> Plan::describe() const {
   line(sbt_tables, "SBT tables buffer (hit groups, miss programs, record data for ray queries)");
   line(cull_mask_builtin, "gl_CullMaskEXT read (VK_KHR_ray_tracing_maintenance1)");
   line(ray_queries, "ray_query statements (VK_KHR_ray_query)");
+  line(hit_objects, "hit objects (VK_NV_ray_tracing_invocation_reorder)");
   line(dynamic_tlas_index, "top levels indexed dynamically (nonuniformEXT: descriptorIndexing)");
   line(position_fetch,
        "vertex positions read (gl_HitTriangleVertexPositionsEXT or a ray query's: "

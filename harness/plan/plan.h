@@ -32,6 +32,8 @@ struct Plan {
   bool cull_mask_builtin = false;   // a stage reads cull_mask (gl_CullMaskEXT: needs
                                     // VK_KHR_ray_tracing_maintenance1)
   bool ray_queries = false;         // a stage runs a ray_query statement (VK_KHR_ray_query)
+  bool hit_objects = false;         // a stage uses a hit object (program/hit_object.h:
+                                    // VK_NV_ray_tracing_invocation_reorder)
   bool dynamic_tlas_index = false;  // a trace or ray query names its top level by an
                                     // expression (rs_tlas[nonuniformEXT(i)]: descriptor
                                     // indexing)

@@ -184,6 +184,79 @@
     "rayQueryGetWorldRayDirectionEXT(rs_query)", nullptr,                                         \
     "the world ray direction the query was initialized with")
 
+// The hit object getters (GL_NV_shader_invocation_reorder), a list of their own
+// so that the model's one switch can name them all at once
+// (model/model_builtins.cpp); they read the stage's hit object, rs_hit_object.
+#define RAYSPEC_HIT_OBJECT_BUILTINS(X)                                                            \
+  X(HoIsHit, "hit_object.is_hit", Uint, R | C | M, HitObject,                                     \
+    "uint(hitObjectIsHitNV(rs_hit_object))", nullptr,                                             \
+    "1 if the hit object holds a hit, else 0 (hitObjectIsHitNV)")                                 \
+  X(HoIsMiss, "hit_object.is_miss", Uint, R | C | M, HitObject,                                   \
+    "uint(hitObjectIsMissNV(rs_hit_object))", nullptr,                                            \
+    "1 if the hit object holds a miss, else 0 (hitObjectIsMissNV)")                               \
+  X(HoIsEmpty, "hit_object.is_empty", Uint, R | C | M, HitObject,                                 \
+    "uint(hitObjectIsEmptyNV(rs_hit_object))", nullptr,                                           \
+    "1 if the hit object is empty, else 0 (hitObjectIsEmptyNV)")                                  \
+  X(HoInstance, "hit_object.instance_id", Uint, R | C | M, HitObject,                             \
+    "uint(hitObjectGetInstanceIdNV(rs_hit_object))", nullptr, "the hit's instance id")            \
+  X(HoCustomIndex, "hit_object.instance_custom_index", Uint, R | C | M, HitObject,                \
+    "uint(hitObjectGetInstanceCustomIndexNV(rs_hit_object))", nullptr,                            \
+    "the hit's instance custom index")                                                            \
+  X(HoPrimitive, "hit_object.primitive_id", Uint, R | C | M, HitObject,                           \
+    "uint(hitObjectGetPrimitiveIndexNV(rs_hit_object))", nullptr, "the hit's primitive index")    \
+  X(HoGeometry, "hit_object.geometry_index", Uint, R | C | M, HitObject,                          \
+    "uint(hitObjectGetGeometryIndexNV(rs_hit_object))", nullptr, "the hit's geometry index")      \
+  X(HoHitKind, "hit_object.hit_kind", Uint, R | C | M, HitObject,                                 \
+    "hitObjectGetHitKindNV(rs_hit_object)", nullptr,                                              \
+    "the hit's hit kind (gl_HitKindEXT's values)")                                                \
+  X(HoT, "hit_object.t", Float, R | C | M, HitObject, "hitObjectGetRayTMaxNV(rs_hit_object)",     \
+    nullptr, "the hit's t; of a miss its ray's tmax (hitObjectGetRayTMaxNV)")                     \
+  X(HoTmin, "hit_object.ray_tmin", Float, R | C | M, HitObject,                                   \
+    "hitObjectGetRayTMinNV(rs_hit_object)", nullptr, "the tmin of the hit object's ray")          \
+  X(HoWorldOrigin, "hit_object.world_ray_origin", Vec3, R | C | M, HitObject,                     \
+    "hitObjectGetWorldRayOriginNV(rs_hit_object)", nullptr,                                       \
+    "the world-space origin of the hit object's ray")                                             \
+  X(HoWorldDirection, "hit_object.world_ray_direction", Vec3, R | C | M, HitObject,               \
+    "hitObjectGetWorldRayDirectionNV(rs_hit_object)", nullptr,                                    \
+    "the world-space direction of the hit object's ray")                                          \
+  X(HoObjectOrigin, "hit_object.object_ray_origin", Vec3, R | C | M, HitObject,                   \
+    "hitObjectGetObjectRayOriginNV(rs_hit_object)", nullptr, "the hit's object-space ray origin") \
+  X(HoObjectDirection, "hit_object.object_ray_direction", Vec3, R | C | M, HitObject,             \
+    "hitObjectGetObjectRayDirectionNV(rs_hit_object)", nullptr,                                   \
+    "the hit's object-space ray direction")                                                       \
+  X(HoObjectToWorld0, "hit_object.object_to_world0", Vec3, R | C | M, HitObject,                  \
+    "hitObjectGetObjectToWorldNV(rs_hit_object)[0]", nullptr,                                     \
+    "column 0 of the hit instance's object-to-world matrix")                                      \
+  X(HoObjectToWorld1, "hit_object.object_to_world1", Vec3, R | C | M, HitObject,                  \
+    "hitObjectGetObjectToWorldNV(rs_hit_object)[1]", nullptr,                                     \
+    "column 1 of the hit instance's object-to-world matrix")                                      \
+  X(HoObjectToWorld2, "hit_object.object_to_world2", Vec3, R | C | M, HitObject,                  \
+    "hitObjectGetObjectToWorldNV(rs_hit_object)[2]", nullptr,                                     \
+    "column 2 of the hit instance's object-to-world matrix")                                      \
+  X(HoObjectToWorld3, "hit_object.object_to_world3", Vec3, R | C | M, HitObject,                  \
+    "hitObjectGetObjectToWorldNV(rs_hit_object)[3]", nullptr,                                     \
+    "column 3 of the hit instance's object-to-world matrix")                                      \
+  X(HoWorldToObject0, "hit_object.world_to_object0", Vec3, R | C | M, HitObject,                  \
+    "hitObjectGetWorldToObjectNV(rs_hit_object)[0]", nullptr,                                     \
+    "column 0 of the hit instance's world-to-object matrix")                                      \
+  X(HoWorldToObject1, "hit_object.world_to_object1", Vec3, R | C | M, HitObject,                  \
+    "hitObjectGetWorldToObjectNV(rs_hit_object)[1]", nullptr,                                     \
+    "column 1 of the hit instance's world-to-object matrix")                                      \
+  X(HoWorldToObject2, "hit_object.world_to_object2", Vec3, R | C | M, HitObject,                  \
+    "hitObjectGetWorldToObjectNV(rs_hit_object)[2]", nullptr,                                     \
+    "column 2 of the hit instance's world-to-object matrix")                                      \
+  X(HoWorldToObject3, "hit_object.world_to_object3", Vec3, R | C | M, HitObject,                  \
+    "hitObjectGetWorldToObjectNV(rs_hit_object)[3]", nullptr,                                     \
+    "column 3 of the hit instance's world-to-object matrix")                                      \
+  X(HoAttributes, "hit_object.attributes", Vec2, R | C | M, HitObject,                            \
+    "rs_hit_object_attributes()", nullptr,                                                        \
+    "the hit's attribute (hitObjectGetAttributesNV): a triangle's barycentrics, or what the "     \
+    "intersection shader reported")                                                               \
+  X(HoSbtIndex, "hit_object.sbt_record_index", Uint, R | C | M, HitObject,                        \
+    "hitObjectGetShaderBindingTableRecordIndexNV(rs_hit_object)", nullptr,                        \
+    "the SBT record the hit object runs: a hit's index in the hit region, a miss's in the miss "  \
+    "region")
+
 #define RAYSPEC_BUILTINS(X)                                                                        \
   X(LaunchX, "launch_id_x", Uint, kAllStages, NoNeeds, "RS_LAUNCH_ID.x", "RS_LAUNCH_ID.x",         \
     "x of gl_LaunchIDEXT")                                                                         \
@@ -329,7 +402,8 @@
     "words")                                                                                       \
   RAYSPEC_QUERY_BUILTINS(X)                                                                        \
   X(CalleeWord, "callee.word<i>", Uint, R | C | M | K, CalleeData, nullptr, nullptr,               \
-    "word i of the callable data after this stage's last call (0 beyond that call's type)")
+    "word i of the callable data after this stage's last call (0 beyond that call's type)")        \
+  RAYSPEC_HIT_OBJECT_BUILTINS(X)
 
 namespace rayspec {
 

@@ -53,6 +53,8 @@ constexpr BuiltinNeeds InPayload = 128;     // the incoming payload (rayPayloadI
 constexpr BuiltinNeeds ChildPayload = 256;  // the payload of this stage's last trace
 constexpr BuiltinNeeds CallData = 512;      // the incoming callable data (callable)
 constexpr BuiltinNeeds CalleeData = 1024;   // the callable data of this stage's last call
+constexpr BuiltinNeeds HitObject = 2048;    // the stage's hit object (VK_NV_ray_tracing_
+                                            // invocation_reorder's hitObjectNV)
 // Data carried between stages (payloads, callable data), not a value of the API.
 constexpr BuiltinNeeds CarriedData = InPayload | ChildPayload | CallData | CalleeData;
 }  // namespace builtin_needs

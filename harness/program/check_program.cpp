@@ -9,6 +9,7 @@
 #include "program/check_bit_casts.h"
 #include "program/check_expr.h"
 #include "program/constant_value.h"
+#include "program/hit_object.h"
 #include "program/ops.h"
 #include "program/payload_words.h"
 #include "results/record_layout.h"
@@ -43,6 +44,10 @@ constexpr StmtRule kStmtRules[] = {
     {Stmt::Kind::TerminateQuery, "terminate_query", kAllStages},
     {Stmt::Kind::RayQueries, "ray_queries", kAllStages},
     {Stmt::Kind::RestartQuery, "restart_query", kAllStages},
+    {Stmt::Kind::ExecuteHitObject, "execute", R | C | M},
+    {Stmt::Kind::RecordMiss, "record_miss", R | C | M},
+    {Stmt::Kind::RecordEmpty, "record_empty", R | C | M},
+    {Stmt::Kind::Reorder, "reorder", R},
     {Stmt::Kind::If, "if", kAllStages},
     {Stmt::Kind::Let, "let", kAllStages},
     {Stmt::Kind::Set, "set", kAllStages},
@@ -149,6 +154,17 @@ class Checker {
       case Stmt::Kind::Light:
         if (s.light != "point" && s.light != "spot" && s.light != "directional")
           return ProgramError{"unknown light '" + s.light + "' (point, spot, directional)", s.loc};
+        return std::nullopt;
+      case Stmt::Kind::ExecuteHitObject:
+        if (auto r = notInCandidates(s, "execute")) return r;
+        return dataFields(s, Data::Payload);  // the payload it starts with, as a trace's
+      case Stmt::Kind::RecordMiss:            // origin .. tmax and miss, as a trace gives them
+        return traceFields(s, "record_miss", 9);
+      case Stmt::Kind::RecordEmpty:
+        return std::nullopt;
+      case Stmt::Kind::Reorder:
+        for (auto& [name, value] : s.assigns)
+          if (auto r = as(value, ValueType::Uint, "reorder " + name)) return r;
         return std::nullopt;
       case Stmt::Kind::If:
         if (auto r = as(s.cond, ValueType::Bool, "if condition")) return r;
@@ -479,13 +495,15 @@ class Checker {
       if (!contains(fields_, name))
         return ProgramError{"per-ray field '" + name + "' is not declared in outputs.per_ray",
                             value.loc};
-      if (isHitIdentityField(name) && !isBuiltin(value, builtinId(findBuiltin(name))))
+      if (isHitIdentityField(name) && !isBuiltin(value, builtinId(findBuiltin(name))) &&
+          !isBuiltin(value, builtinId(findBuiltin(hitObjectGetterOf(name)))))
         return ProgramError{"per-ray field '" + name +
                                 "' holds the built-in of that name: the judge reads it as the "
                                 "hit itself. Record `" +
-                                name +
-                                "` there, and other values in a free field (value, "
-                                "value1 .. value11)",
+                                name + "` (or in raygen, closest-hit and miss its hit object's " +
+                                hitObjectGetterOf(name) +
+                                ") there, and other values in a free field (value, value1 .. "
+                                "value11)",
                             value.loc};
       if (auto r = as(value, fieldValueType(*f), "record " + name)) return r;
     }

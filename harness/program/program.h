@@ -113,6 +113,10 @@ struct TraceArgs {
   SourceLoc tlas_loc;
   uint32_t location = 0;  // the payload location passed (a constant: Pipeline::payload_words)
   SourceLoc location_loc;
+  // Trace: `hit_object: true`, hitObjectTraceRayNV into the stage's hit object
+  // (GL_NV_shader_invocation_reorder): any-hit and intersection run, closest-hit
+  // and miss do not; `execute` runs them later.
+  bool hit_object = false;
 };
 
 struct Stmt {
@@ -148,7 +152,18 @@ struct Stmt {
     RestartQuery,    // restart_query: rayQueryInitializeEXT of the innermost query with
                      // `trace` (a candidate block; the block ends, the loop goes on
                      // with the new ray: nothing committed)
-    If,              // if (cond) then_ else else_
+    // Hit objects (GL_NV_shader_invocation_reorder, cases/README.md "Hit objects"):
+    // each stage that uses them holds one, empty at its start.
+    ExecuteHitObject,  // hitObjectExecuteShaderNV: the hit object's closest-hit or miss runs
+                       // with the payload (location `trace.location`) starting as `assigns`
+                       // (as a trace's); the result readable as a trace's
+    RecordMiss,        // hitObjectRecordMissNV: miss index `trace.miss`, the ray of `trace`
+                       // (origin, direction, tmin, tmax; defaulted as a trace's)
+    RecordEmpty,       // hitObjectRecordEmptyNV
+    Reorder,           // reorderThreadNV: with the hit object when `size` is 1, with the
+                       // assigns ("hint", "bits": the hint and how many of its low bits
+                       // count) when given (raygen only)
+    If,                // if (cond) then_ else else_
     // Control flow and local variables (cases/README.md, "Control flow"); kept
     // last: the model's compiler tells them by order (Kind >= Let).
     Let,       // declare locals: assigns[i] = (name, initial value)

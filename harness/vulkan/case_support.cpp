@@ -179,6 +179,11 @@ Result<void> checkCaseSupport(const DeviceInfo& d, uint32_t validation_layer, co
     return notSupported(
         "tlas: expr: top levels indexed dynamically (rs_tlas[nonuniformEXT(i)]) need "
         "descriptorIndexing (VK_EXT_descriptor_indexing), which the device lacks");
+  if (plan.hit_objects && !d.invocation_reorder)
+    return notSupported(
+        "hit objects (hit_object.*, trace hit_object, execute, record_miss, record_empty, "
+        "reorder): the device lacks VK_NV_ray_tracing_invocation_reorder "
+        "(rayTracingInvocationReorder)");
   if (plan.ray_queries && !d.ray_query)
     return notSupported("ray_query statements: the device lacks VK_KHR_ray_query's rayQuery");
   if (c.pipeline.record_layout.declared() && c.pipeline.record_layout.scalar &&

@@ -44,6 +44,16 @@ void enableNewerFeatures(VulkanContext& ctx, VkPhysicalDeviceFeatures2& on,
   }
 }
 
+// Hit objects and reordering (VK_NV_ray_tracing_invocation_reorder) where
+// the device has them.
+void enableInvocationReorder(const VulkanContext& ctx, VkPhysicalDeviceFeatures2& on,
+                             VkPhysicalDeviceRayTracingInvocationReorderFeaturesNV& reorder) {
+  if (!ctx.info.invocation_reorder) return;
+  reorder.rayTracingInvocationReorder = VK_TRUE;
+  reorder.pNext = on.pNext;
+  on.pNext = &reorder;
+}
+
 // Ray queries (Pipeline::ray_query) where the device has them
 // (describeDevice found the extension and its feature).
 void enableRayQuery(const VulkanContext& ctx, VkPhysicalDeviceFeatures2& on,
@@ -68,6 +78,8 @@ std::vector<const char*> deviceExtensions(const VulkanContext& ctx) {
   if (ctx.position_fetch) extensions.push_back(kPositionFetchExtension);
   if (ctx.library_group_handles) extensions.push_back(kLibraryGroupHandlesExtension);
   if (ctx.info.ray_query) extensions.push_back(VK_KHR_RAY_QUERY_EXTENSION_NAME);
+  if (ctx.info.invocation_reorder)
+    extensions.push_back(VK_NV_RAY_TRACING_INVOCATION_REORDER_EXTENSION_NAME);
   // Its dependency synchronization2 is core from Vulkan 1.3.
   if (ctx.info.opacity_micromap && ctx.info.api_version_number >= VK_API_VERSION_1_3)
     extensions.push_back(VK_EXT_OPACITY_MICROMAP_EXTENSION_NAME);
@@ -148,6 +160,9 @@ Result<void> createDevice(VulkanContext& ctx) {
   VkPhysicalDeviceRayQueryFeaturesKHR ray_query_on{
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
   enableRayQuery(ctx, on, ray_query_on);
+  VkPhysicalDeviceRayTracingInvocationReorderFeaturesNV reorder_on{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_INVOCATION_REORDER_FEATURES_NV};
+  enableInvocationReorder(ctx, on, reorder_on);
 
   const std::vector<const char*> extensions = deviceExtensions(ctx);
   float priority = 1.0f;

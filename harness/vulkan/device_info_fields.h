@@ -130,6 +130,9 @@ using DeviceLaunchSize = std::array<uint64_t, 3>;
     "maintenance1's rayTracingPipelineTraceRaysIndirect2")                                         \
   X(bool, position_fetch, "position_fetch", "VK_KHR_ray_tracing_position_fetch",                   \
     "the extension with its rayTracingPositionFetch feature (the vertex_position<i> built-ins)")   \
+  X(bool, invocation_reorder, "invocation_reorder", "VK_NV_ray_tracing_invocation_reorder",        \
+    "the extension with its rayTracingInvocationReorder feature (hit objects: hit_object.*, "      \
+    "execute, record_miss, record_empty, reorder)")                                                \
   X(bool, scalar_block_layout, "scalar_block_layout", "scalarBlockLayout",                         \
     "Vulkan 1.2's feature (a scalar shader record block, pipeline.sbt.record_layout)")             \
   X(bool, descriptor_indexing, "descriptor_indexing", "descriptorIndexing",                        \

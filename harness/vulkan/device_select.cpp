@@ -52,6 +52,8 @@ void readExtensions(VkPhysicalDevice physical, DeviceInfo& d) {
   d.graphics_pipeline_library =
       d.pipeline_library &&
       hasDeviceExtension(exts, VK_EXT_GRAPHICS_PIPELINE_LIBRARY_EXTENSION_NAME);
+  d.invocation_reorder =
+      hasDeviceExtension(exts, VK_NV_RAY_TRACING_INVOCATION_REORDER_EXTENSION_NAME);
   d.library_group_handles =
       d.pipeline_library && hasDeviceExtension(exts, kLibraryGroupHandlesExtension);
 }
@@ -140,6 +142,8 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
   PositionFetchFeatures position_fetch;
   LibraryGroupHandlesFeatures group_handles;
+  VkPhysicalDeviceRayTracingInvocationReorderFeaturesNV reorder{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_INVOCATION_REORDER_FEATURES_NV};
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   void** next = &features.pNext;
   const bool vk12 = d.api_version_number >= VK_API_VERSION_1_2;
@@ -148,6 +152,7 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
   if (d.acceleration_structure_extension) chain(next, as_features);
   if (d.ray_tracing_maintenance1) chain(next, maintenance1);
   if (d.ray_query) chain(next, ray_query);
+  if (d.invocation_reorder) chain(next, reorder);
   if (d.position_fetch) {
     *next = &position_fetch;
     next = &position_fetch.p_next;
@@ -184,6 +189,8 @@ void readFeatures(VkPhysicalDevice physical, DeviceInfo& d) {
       d.position_fetch && d.acceleration_structure && position_fetch.ray_tracing_position_fetch;
   d.library_group_handles = d.library_group_handles && group_handles.pipeline_library_group_handles;
   d.ray_query = d.ray_query && ray_query.rayQuery;
+  d.invocation_reorder =
+      d.invocation_reorder && d.ray_tracing_pipeline && reorder.rayTracingInvocationReorder;
   d.sparse_binding = features.features.sparseBinding;
 }
 
