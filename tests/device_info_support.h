@@ -23,6 +23,7 @@ inline DeviceInfo capableDevice() {
   d.ray_traversal_primitive_culling = d.pipeline_library = d.ray_query = d.opacity_micromap = true;
   d.ray_tracing_maintenance1 = d.trace_rays_indirect = d.trace_rays_indirect2 = true;
   d.position_fetch = d.scalar_block_layout = d.library_group_handles = d.invocation_reorder = true;
+  d.graphics_pipeline_library = true;
   d.descriptor_indexing = true;
   d.acceleration_structure_host_commands = d.acceleration_structure_indirect_build = true;
   d.acceleration_structure_update_after_bind = d.sparse_binding = d.sparse_binding_queue = true;
