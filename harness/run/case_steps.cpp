@@ -15,6 +15,7 @@
 #include "run/judge_case.h"
 #include "run/model_adapter.h"
 #include "run/vulkan_adapter.h"
+#include "vulkan/case_support.h"
 
 namespace rayspec {
 namespace {
@@ -105,6 +106,12 @@ CaseOutcome judgeSides(const Case& c, const Plan& plan, const Results* device, c
   CaseOutcome out;
   if (model && ended(*model)) {
     out = noReferenceOutcome(c, plan, *model);
+  } else if (device && !model && device->status == SideStatus::NotSupported &&
+             device->validation_messages.empty()) {
+    // The device cannot run the case (decided before the model ran, or in a
+    // run without it): its NotSupported, as judgeCase gives it with a model.
+    out = unjudged(c, plan, *device, Results{}, backendVerdict(*device));
+    out.device_name = device->device;
   } else if (device && model) {
     out = judgeCase(c, plan, *device, *model, dir);
     out.device_name = device->device;
@@ -178,12 +185,34 @@ CaseOutcome guardCase(const std::string& name, const std::vector<std::string>& r
   }
 }
 
-CaseRunner::CaseRunner(const RunOptions& options, Backend* device, Backend* model)
-    : opt_(options), device_(device), model_(model) {
+CaseRunner::CaseRunner(const RunOptions& options, Backend* device, Backend* model,
+                       std::optional<ProbedDevice> probed)
+    : opt_(options), device_(device), model_(model), probed_(std::move(probed)) {
   if (!opt_.device_results.empty() && opt_.no_isolation) {
     saved_device_ = std::make_unique<SavedDevice>(opt_.device_results);
     device_ = saved_device_.get();
   }
+}
+
+Result<std::optional<Results>> CaseRunner::refusedHere(const Case& c, const Plan& plan,
+                                                       const std::string& dir) const {
+  if (!probed_ || !plantedFaultIn(opt_, c.name).empty()) return std::optional<Results>();
+  const Result<void> runs = checkCaseRuns(probed_->info, probed_->validation_layer, c, plan);
+  if (runs || runs.error().kind != ErrorKind::NotSupported) return std::optional<Results>();
+  Results r;  // as VulkanEngine::run gives it
+  r.backend = "vulkan";
+  r.device = probed_->info.name;
+  r.case_name = c.name;
+  r.case_file = c.file;
+  r.case_hash = c.source_hash;
+  r.width = c.rays.width;
+  r.height = c.rays.height;
+  r.setStatus(SideStatus::NotSupported, runs.error().format());
+  if (const Result<void> written =
+          writeResults(r, dir, plan.record_fields, BundleFiles{false, false});
+      !written)
+    return errorOf(ErrorKind::Harness, "device side: " + written.error().format());
+  return std::optional<Results>(std::move(r));
 }
 
 Result<SideResult> CaseRunner::runSide(const std::function<Side()>& side, Backend* in_process,
@@ -212,6 +241,10 @@ Result<CaseOutcome> CaseRunner::run(const Case& c, bool* interrupted, const std:
   removeCaseOutputs(dir);  // no stale bundle from an earlier run
   Results device, model;
   const bool want_device = !opt_.no_device, want_model = !opt_.no_model;
+  if (want_device) {
+    RAYSPEC_TRY(const std::optional<Results> refused, refusedHere(c, plan, dir + "/device"));
+    if (refused) return costed(judgeSides(c, plan, &*refused, nullptr, dir), *refused, model);
+  }
   if (want_model) {
     RAYSPEC_TRY(SideResult m, runSide([&] { return modelSide(opt_); }, model_,
                                       slot ? slot->model : nullptr, slot, c, plan, dir + "/model"));

@@ -4,7 +4,9 @@
 //                  fault, not the device)
 //   CaseRunner     the model side first (a planted fault chooses its rays by
 //                  the model's answer), then the device side, which gets the
-//                  model's results; then the judgement
+//                  model's results; then the judgement. A case the probed
+//                  device cannot run (vulkan/case_support.h) is its
+//                  NotSupported at once: neither side runs
 //   guardCase      an error in any of it is that case's CaseError
 //   journalCase    the case joins the run's journal as it ends
 //   writeRunReports  the reports in full (now and then, and at the end); a
@@ -25,6 +27,7 @@
 #include "report/run_summary.h"
 #include "report/write_reports.h"
 #include "run/backend.h"
+#include "run/device_probe.h"
 #include "run/isolation.h"
 #include "run/run_options.h"
 
@@ -44,8 +47,9 @@ CaseOutcome guardCase(const std::string& name, const std::vector<std::string>& r
 
 // A case's outcome from what its sides gave (nullptr: that side did not
 // run): judged, device against model; the model's crash or hang (nothing to
-// judge the device by); or one side's own status, validation errors
-// included (never a pass: nothing was compared). `dir`: where the difference
+// judge the device by); a device's NotSupported without a model as with one;
+// or one side's own status, validation errors included (never a pass:
+// nothing was compared). `dir`: where the difference
 // images go ("" none). Shared by the run and by a saved run judged anew
 // (run/saved_case.h).
 CaseOutcome judgeSides(const Case& c, const Plan& plan, const Results* device, const Results* model,
@@ -70,7 +74,10 @@ class CaseRunner {
   // runs that side of every case in its own child process. With
   // --device-results and --no-isolation the runner reads the saved bundles
   // in this process itself.
-  CaseRunner(const RunOptions& options, Backend* device, Backend* model);
+  // probed: the live device as its side will see it (run/device_probe.h);
+  // none: the device side decides every case itself.
+  CaseRunner(const RunOptions& options, Backend* device, Backend* model,
+             std::optional<ProbedDevice> probed = std::nullopt);
   // Runs the case on the sides asked for and judges it; or the Harness error.
   // *interrupted: a signal stopped a side; the outcome means nothing then.
   // The bundles go to <out>/<case name><subfolder> (a re-run: "/rerun").
@@ -82,9 +89,15 @@ class CaseRunner {
   Result<SideResult> runSide(const std::function<Side()>& side, Backend* in_process,
                              SideWorker* worker, const CaseSlot* slot, const Case& c,
                              const Plan& plan, const std::string& dir) const;
+  // The device side's NotSupported results of a case it cannot run, decided
+  // here and its bundle written where that side writes it; none when the
+  // side must run (a planted fault in the case: it may change the answer).
+  Result<std::optional<Results>> refusedHere(const Case& c, const Plan& plan,
+                                             const std::string& dir) const;
   const RunOptions& opt_;
   Backend* device_;
   Backend* model_;
+  std::optional<ProbedDevice> probed_;
   std::unique_ptr<Backend> saved_device_;  // --device-results in this process
 };
 

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "run/device_info_json.h"
 #include "run/icd_probe.h"
 #include "run/vulkan_adapter.h"
 #include "vulkan/device_usability.h"
@@ -18,6 +19,41 @@ void listWhatThereIs(DeviceProbe& p) {
         "[" + std::to_string(d.index) + "] " + d.name +
         (u == DeviceUsability::Usable ? " (ray tracing)" : " (" + usabilityReason(u, d) + ")"));
   }
+}
+
+// What the probe's child tells its parent.
+nlohmann::json probeJson(const DeviceProbe& p) {
+  nlohmann::json j{{"found", p.found},     {"description", p.description},
+                   {"icd", p.icd},         {"device_uuid", p.device_uuid},
+                   {"cpu", p.cpu},         {"error", p.error},
+                   {"devices", p.devices}, {"no_device", p.no_device}};
+  if (p.probed) {
+    j["device_info"] = deviceInfoJson(p.probed->info);
+    j["validation_layer"] = p.probed->validation_layer;
+  }
+  return j;
+}
+
+// The probe as its child told it. A device whose details do not read back
+// is left unprobed: the device side then decides every case itself.
+DeviceProbe probeFromJson(const nlohmann::json& j) {
+  DeviceProbe p;
+  p.found = j.value("found", false);
+  p.description = j.value("description", "");
+  p.icd = j.value("icd", "");
+  p.cpu = j.value("cpu", false);
+  p.device_uuid = j.value("device_uuid", "");
+  p.error = j.value("error", "");
+  p.devices = j.value("devices", std::vector<std::string>{});
+  p.no_device = j.value("no_device", "");
+  if (!p.found || !j.contains("device_info")) return p;
+  try {
+    p.probed = ProbedDevice{deviceInfoFromJson(j.at("device_info")),
+                            j.at("validation_layer").get<uint32_t>()};
+  } catch (const nlohmann::json::exception&) {
+    p.probed.reset();
+  }
+  return p;
 }
 
 }  // namespace
@@ -37,6 +73,7 @@ DeviceProbe describeAdapter(const VulkanAdapter& adapter) {
     p.icd = icdOfLibrary(adapter.driverLibrary());
     p.device_uuid = adapter.deviceUuid();
     p.cpu = adapter.cpuDevice();
+    p.probed = ProbedDevice{adapter.deviceInfo(), adapter.validationLayerVersion()};
   } else {
     listWhatThereIs(p);
   }
@@ -53,12 +90,11 @@ DeviceProbe probeDeviceInProcess(const VulkanOptions& options) {
 DeviceProbe probeDevice(const VulkanOptions& options, const ChildLimits& limits) {
   const ChildEnd end = runChild(
       [&](std::string& message) {
-        const DeviceProbe p = probeDeviceInProcess(options);
-        message = nlohmann::json{{"found", p.found},     {"description", p.description},
-                                 {"icd", p.icd},         {"device_uuid", p.device_uuid},
-                                 {"cpu", p.cpu},         {"error", p.error},
-                                 {"devices", p.devices}, {"no_device", p.no_device}}
-                      .dump();
+        VulkanOptions quick = options;
+        quick.validation = false;  // what there is, not what the layer says of it
+        DeviceProbe p = probeDeviceInProcess(quick);
+        if (p.probed) p.probed->validation_layer = validationLayerFor(options.validation);
+        message = probeJson(p).dump();
         return 0;
       },
       limits);
@@ -72,16 +108,9 @@ DeviceProbe probeDevice(const VulkanOptions& options, const ChildLimits& limits)
     p.error = "the device probe answered nothing readable";
     return p;
   }
-  p.found = j.value("found", false);
-  p.description = j.value("description", "");
-  p.icd = j.value("icd", "");
-  p.cpu = j.value("cpu", false);
-  p.device_uuid = j.value("device_uuid", "");
+  p = probeFromJson(j);
   if (p.found && p.icd.empty())
     p.icd = icdOfDevice(p.device_uuid, ChildLimits{kProbeSeconds, limits.memory_limit});
-  p.error = j.value("error", "");
-  p.devices = j.value("devices", std::vector<std::string>{});
-  p.no_device = j.value("no_device", "");
   return p;
 }
 

@@ -4,6 +4,7 @@
 // matches nothing stops there, naming the devices there are.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,15 @@
 
 namespace rayspec {
 
+// What the device side will find of the device a probe found: what it
+// offers and the validation layer the side runs it under (0: none). The
+// NotSupported reasons of vulkan/case_support.h follow from these and the
+// case alone, so the run decides them before either side of a case runs.
+struct ProbedDevice {
+  DeviceInfo info;
+  uint32_t validation_layer = 0;
+};
+
 struct DeviceProbe {
   bool found = false;
   std::string description;  // the device the cases will run on: "llvmpipe (...) (Mesa ...)"
@@ -19,14 +29,17 @@ struct DeviceProbe {
   std::string device_uuid;  // DeviceInfo::device_uuid of that device
   bool cpu = false;         // DeviceInfo::cpu: a CPU device (lavapipe)
   std::string error;        // why none was found
-  std::vector<std::string> devices;  // every device the loader sees, for people
-  std::string no_device;             // no device at all: why, per driver manifest
+  std::vector<std::string> devices;    // every device the loader sees, for people
+  std::string no_device;               // no device at all: why, per driver manifest
+  std::optional<ProbedDevice> probed;  // found: the device as the device side will see it
 };
 
 class VulkanAdapter;
 
-DeviceProbe probeDevice(const VulkanOptions& options,
-                        const ChildLimits& limits);  // in a child process
+// In a child process, which makes the device without the validation layer
+// (only what is there matters) and tells which layer a device side made with
+// `options` runs under (validationLayerFor).
+DeviceProbe probeDevice(const VulkanOptions& options, const ChildLimits& limits);
 DeviceProbe probeDeviceInProcess(const VulkanOptions& options);
 // What an adapter already created found (the device, its ICD manifest when
 // its driver library tells, see icdOfLibrary), and when it found none, the

@@ -428,7 +428,7 @@ int runPreparedCases(const RunOptions& opt, const std::vector<CaseFile>& files,
     std::fprintf(stderr, "rayspec run: %s\n", visibleLine(written.error().format()).c_str());
   const std::vector<size_t> order = dealOrder(prepared, opt, jobs, book);
   catchInterrupts();
-  const CaseRunner runner(opt, device.adapter.get(), model.get());
+  const CaseRunner runner(opt, device.adapter.get(), model.get(), device.probed);
   runSlots(jobs, runner, opt, prepared, order, baseline, book);
   if (device.adapter) book.teardownErrors(device.adapter->close());
   return finishRun(book, info, opt, files.size(), device.found);

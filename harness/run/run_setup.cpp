@@ -111,10 +111,8 @@ DeviceProbe adapterInThisProcess(const VulkanOptions& vopt, ChosenDevice& chosen
 // A device probed by a short child process (the parent never initialises
 // Vulkan when cases are isolated).
 DeviceProbe deviceInAChild(const RunOptions& opt, const VulkanOptions& vopt, RunInfo& info) {
-  VulkanOptions quick = vopt;
-  quick.validation = false;  // only whether a device matches
   info.validation = vopt.validation && validationLayerInstalled();
-  return probeDevice(quick, ChildLimits{opt.timeout, opt.memory_limit});
+  return probeDevice(vopt, ChildLimits{opt.timeout, opt.memory_limit});
 }
 
 // --device-results: the devices that saved the bundles.
@@ -207,6 +205,7 @@ Result<ChosenDevice> chooseDevice(const RunOptions& opt, const std::vector<CaseF
   if (!probe.found) return errorMessage("no device to run on: " + probeFailure(probe));
   chosen.found = true;
   chosen.gpu = !probe.cpu;
+  chosen.probed = probe.probed;
   info.device = probe.description;
   info.icd = !probe.icd.empty() || icd.files.size() != 1 ? probe.icd : icd.files[0];
   std::printf("Device: %s, ICD %s%s%s\n", visibleLine(info.device).c_str(),

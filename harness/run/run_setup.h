@@ -6,6 +6,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "library/case_discovery.h"
 #include "report/baseline.h"
 #include "report/write_reports.h"
+#include "run/device_probe.h"
 #include "run/run_options.h"
 #include "run/vulkan_adapter.h"
 #include "vulkan/icd_environment.h"
@@ -41,6 +43,9 @@ struct ChosenDevice {
   std::unique_ptr<VulkanAdapter> adapter;  // without isolation: the one device of every case
   bool found = false;                      // a device runs (or saved device results exist)
   bool gpu = false;                        // the device is not this machine's CPU
+  // The device as the device side will see it (a live device only): the
+  // cases it cannot run are decided before they run (run/case_steps.h).
+  std::optional<ProbedDevice> probed;
 };
 // The device, which must exist before any case runs: saved results
 // (--device-results), one in this process (--no-isolation), or one a short

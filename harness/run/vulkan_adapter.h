@@ -25,6 +25,11 @@ class VulkanAdapter : public Backend {
   bool found() const { return backend_ != nullptr; }
   const std::string& error() const { return error_; }
   bool validationEnabled() const { return backend_ && backend_->validationEnabled(); }
+  uint32_t validationLayerVersion() const {
+    return backend_ ? backend_->validationLayerVersion() : 0;
+  }
+  // What the device offers (found() only).
+  const DeviceInfo& deviceInfo() const { return backend_->device(); }
   std::string driverLibrary() const { return backend_ ? backend_->driverLibrary() : std::string(); }
   bool cpuDevice() const { return backend_ && backend_->device().cpu; }
   std::string deviceUuid() const {

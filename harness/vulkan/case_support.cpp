@@ -230,8 +230,18 @@ Result<void> checkCaseSupport(const DeviceInfo& d, uint32_t validation_layer, co
   return {};
 }
 
+Result<void> checkCaseRuns(const DeviceInfo& d, uint32_t validation_layer, const Case& c,
+                           const Plan& plan) {
+  if (!c.expected_rejections.empty()) return {};
+  return checkCaseSupport(d, validation_layer, c, plan);
+}
+
 Result<void> checkCaseSupport(const VulkanContext& ctx, const Case& c, const Plan& plan) {
   return checkCaseSupport(ctx.info, ctx.validation ? ctx.validation_layer_version : 0, c, plan);
+}
+
+Result<void> checkCaseRuns(const VulkanContext& ctx, const Case& c, const Plan& plan) {
+  return checkCaseRuns(ctx.info, ctx.validation ? ctx.validation_layer_version : 0, c, plan);
 }
 
 }  // namespace rayspec

@@ -1,7 +1,8 @@
 // Whether a device can run a case, from what rayspec knows of it (DeviceInfo)
 // alone: the features, extensions and limits the case needs, each missing one
 // a NotSupported error that names it. The one decision: VulkanEngine runs it
-// before building anything (vulkan/run_case.h), `rayspec devices` over the
+// before building anything (vulkan/run_case.h), the run's parent before
+// either side of a case runs (run/case_steps.h), `rayspec devices` over the
 // library to count the cases each missing feature skips.
 #pragma once
 
@@ -24,5 +25,13 @@ Result<void> checkCaseSupport(const DeviceInfo& d, uint32_t validation_layer, co
 // Whether a feature of the Vulkan header version `since` may be enabled under
 // that layer: no layer is on (0), or it knows the feature.
 bool validationLayerKnows(uint32_t validation_layer, uint32_t since);
+
+// The device side's first step on a case (runCase), before it builds
+// anything: a case only compiled, never launched (expected_rejections), runs
+// on any device; any other case as checkCaseSupport says. The run's parent
+// asks it of the probed device, so that a case the device cannot run costs
+// no model time (run/case_steps.h).
+Result<void> checkCaseRuns(const DeviceInfo& d, uint32_t validation_layer, const Case& c,
+                           const Plan& plan);
 
 }  // namespace rayspec

@@ -39,11 +39,17 @@ uint32_t installedValidationLayer() {
   return layerVersion(kValidationLayer);
 }
 
+uint32_t validationLayerFor(bool want) {
+  const uint32_t version = want ? layerVersion(kValidationLayer) : 0;
+  const bool messenger =
+      version != 0 && (hasInstanceExtension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME, nullptr) ||
+                       hasInstanceExtension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME, kValidationLayer));
+  return messenger ? version : 0;
+}
+
 Result<void> createInstance(VulkanContext& ctx, bool want_validation) {
-  const uint32_t layer_version = want_validation ? layerVersion(kValidationLayer) : 0;
-  ctx.validation = layer_version != 0 &&
-                   (hasInstanceExtension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME, nullptr) ||
-                    hasInstanceExtension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME, kValidationLayer));
+  const uint32_t layer_version = validationLayerFor(want_validation);
+  ctx.validation = layer_version != 0;
 
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "rayspec";

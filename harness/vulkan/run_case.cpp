@@ -117,11 +117,11 @@ Result<CaseLayout> caseLayout(const VulkanContext& ctx, const Case& c,
 }  // namespace
 
 Result<void> runCase(const VulkanContext& ctx, const Case& c, const Plan& plan, Results& r) {
+  RAYSPEC_TRY_VOID(checkCaseRuns(ctx, c, plan));
   if (!c.expected_rejections.empty()) {  // compiled, never launched
     compileExpectedRejections(c, plan, r);
     return {};
   }
-  RAYSPEC_TRY_VOID(checkCaseSupport(ctx, c, plan));
   StepTimer glsl(r.cost, CostStep::GlslGeneration);
   const GeneratedPipeline generated = generateGlsl(c, plan);
   glsl.stop();

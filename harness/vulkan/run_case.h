@@ -12,6 +12,8 @@ namespace rayspec {
 // the case (recursion depth, launch size, dispatch size, primitive culling,
 // the SBT's strides), before anything is built.
 Result<void> checkCaseSupport(const VulkanContext& ctx, const Case& c, const Plan& plan);
+// checkCaseRuns (vulkan/case_support.h) of this device under its layer.
+Result<void> checkCaseRuns(const VulkanContext& ctx, const Case& c, const Plan& plan);
 
 // Fills r's outputs, or returns a ShaderCompile, NotSupported or Device
 // error (VulkanEngine::run turns it into the status). Every object it

@@ -47,6 +47,10 @@ bool VulkanEngine::validationEnabled() const {
   return ctx_->validation;
 }
 
+uint32_t VulkanEngine::validationLayerVersion() const {
+  return ctx_->validation ? ctx_->validation_layer_version : 0;
+}
+
 Results VulkanEngine::run(const Case& c, const Plan& plan) {
   auto start = std::chrono::steady_clock::now();
   Results r;

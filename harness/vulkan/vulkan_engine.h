@@ -60,6 +60,10 @@ Result<std::vector<DeviceInfo>> listDevices();
 // The Khronos validation layer installed (VK_LAYER_KHRONOS_validation): its
 // specVersion, the Vulkan header it was built with; 0 when none is.
 uint32_t installedValidationLayer();
+// The validation layer an engine made with VulkanOptions::validation `want`
+// runs under: the installed layer's specVersion where it is wanted and the
+// debug messenger it reports through is there; 0 when none is on.
+uint32_t validationLayerFor(bool want);
 // A Vulkan version as major.minor.patch.
 std::string vulkanVersionText(uint32_t version);
 
@@ -76,6 +80,8 @@ class VulkanEngine {
 
   const DeviceInfo& device() const;
   bool validationEnabled() const;
+  // The layer's specVersion while it is on (validationLayerFor), 0 while off.
+  uint32_t validationLayerVersion() const;
   // The driver library the device's commands live in (its path, as loaded),
   // found with dladdr on a device command; "" when unknown. With the
   // validation layer on, asks a second, layer-free instance (driver_library.cpp).
