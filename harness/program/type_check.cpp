@@ -127,8 +127,8 @@ Typing typeArithmetic(Expr& e) {  // add sub mul div
     e.type = t1;
   else
     return badArguments(e,
-                        "need the same numeric type, or a vector with a scalar of its "
-                        "component type");
+                        "need the same numeric type, or a Float with a vector, or a sized "
+                        "vector with a scalar of its component type");
   if (e.op == Op::Div && isSized(e.type))
     return badArguments(e,
                         "div is not offered on the sized scalars (not exact in floats; "
