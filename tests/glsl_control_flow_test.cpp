@@ -94,6 +94,34 @@ TEST(GlslControlFlow, ALoopEvaluatesItsCountOnceAndClampsIt) {
   EXPECT_TRUE(spirv.error.empty()) << spirv.error;
 }
 
+// A sized array is declared with a null initialiser (OpConstantNull), the
+// extensions its types need enabled once each; sized vectors compile.
+TEST(GlslControlFlow, SizedArraysAreNullInitialisedAndCompile) {
+  const Case c = triangleCase(
+      "  raygen:\n"
+      "    - array: {name: a, of: i16vec3, size: 5}\n"
+      "    - array: {name: b, of: int8, size: 2}\n"
+      "    - store: {array: a, index: 1, value: {i16vec3: [1, 2, {int16: launch_id_x}]}}\n"
+      "    - trace: {}\n"
+      "    - record: {value: {uint: {add: [{z: {load: [var.a, 1]}}, {int16: {load: [var.b, "
+      "0]}}]}}}\n"
+      "  hit_groups: [{closest_hit: [count: c]}]\n"
+      "outputs:\n"
+      "  counters: [c]\n"
+      "  per_ray: [value]\n");
+  const GeneratedPipeline g = generateGlsl(c, derivePlan(c));
+  const std::string& glsl = g.raygen.glsl;
+  EXPECT_NE(glsl.find("i16vec3 v_a[5] = {};"), std::string::npos) << glsl;
+  EXPECT_NE(glsl.find("int8_t v_b[2] = {};"), std::string::npos);
+  EXPECT_NE(glsl.find("#extension GL_EXT_null_initializer : require"), std::string::npos);
+  const size_t int16 = glsl.find("#extension GL_EXT_shader_explicit_arithmetic_types_int16");
+  ASSERT_NE(int16, std::string::npos);
+  EXPECT_EQ(glsl.find("#extension GL_EXT_shader_explicit_arithmetic_types_int16", int16 + 1),
+            std::string::npos);
+  const SpirvResult spirv = compileGlsl(glsl, Stage::Raygen);
+  EXPECT_TRUE(spirv.error.empty()) << spirv.error;
+}
+
 // Each shader gets the values pipeline.specialize sets for it, as 32-bit
 // words by constant_id; every stage declares every constant with its default.
 TEST(GlslControlFlow, SpecializationReachesEachShader) {

@@ -79,7 +79,8 @@ TEST(ModelRayQueryVocabulary, ParseAndCheckErrorsNameTheField) {
   EXPECT_EQ(firstErrorAfter(text, "tlas: 1", "tlas: launch_id_x"), "(no error)");
   EXPECT_EQ(firstErrorAfter(text, "tlas: 1", "tlas: {add: [launch_id_x, 0.5]}"),
             "pipeline.raygen[0].ray_query.tlas: operator 'add': arguments are (Uint, Float); need "
-            "the same numeric type, or a Float with a vector");
+            "the same numeric type, or a Float with a vector, or a sized vector with a scalar "
+            "of its component type");
   EXPECT_EQ(firstErrorAfter(text, "tlas: 1", "tlas: 1.0"),
             "pipeline.raygen[0].ray_query.tlas: expected an unsigned integer (decimal or 0x hex)");
   EXPECT_EQ(firstErrorAfter(text, "tlas: 1", "tlas: {mul: [0.5, 2.0]}"),

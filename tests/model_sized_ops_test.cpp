@@ -1,7 +1,8 @@
-// The model's meaning of the sized scalars (model/sized_ops.cpp): integers
-// wrap modulo 2^bits, conversions as GLSL's constructors, float16 and
-// float64 exact or a case error, and the planted fault that halves them
-// across a call.
+// The model's meaning of the sized scalars and vectors (model/sized_ops.cpp):
+// integers wrap modulo 2^bits, conversions as GLSL's constructors, float16
+// and float64 exact or a case error, vectors lane by lane, and the planted
+// faults that halve them or rotate a vector's lanes across a call, or start
+// a sized array at one.
 #include "model_support.h"
 
 namespace rayspec::model_test {
@@ -87,6 +88,44 @@ TEST(ModelSizedOps, TheHalvingFaultKeepsTheUpperHalfAcrossATrace) {
   EXPECT_EQ(sizedValues(halved, "value1"),
             (Pair{0x3FE00000u, 0x3FE00000u}));  // 1.75: the low byte 0
   EXPECT_EQ(sizedValues(halved, "value2"), (Pair{5, 6}));
+}
+
+TEST(ModelSizedOps, VectorsComputeLaneByLaneAndTheirArraysStartAtZero) {
+  const Case c = sizedCase(
+      "    - array: {name: a, of: i8vec3, size: 2}\n"
+      "    - store: {array: a, index: 0, value: {i8vec3: [{int8: launch_id_x}, 100, 120]}}\n"
+      "    - let: {v: {mul: [{load: [var.a, 0]}, 3]}, h: {f16vec2: [1.5, 2.25]}}\n"
+      "    - set: {h: {add: [var.h, {f16vec2: 0.5}]}}\n"
+      "    - record: {value: {uint: {z: var.v}}, value1: {uint: {x: {load: [var.a, 1]}}},\n"
+      "              value2: {float_bits: {float: {sub: [{y: var.h}, {x: var.h}]}}}}\n");
+  const Results r = runTier(c, ModelTier::Fast);
+  ASSERT_TRUE(r.ok()) << r.status_detail;
+  EXPECT_EQ(sizedValues(r, "value"), (Pair{104, 104}));  // 360 wraps to 104
+  EXPECT_EQ(sizedValues(r, "value1"), (Pair{0, 0}));     // the null initialiser's zero
+  EXPECT_EQ(sizedValues(r, "value2"), (Pair{0x3F400000u, 0x3F400000u}));  // 0.75
+}
+
+TEST(ModelSizedOps, TheVectorFaultsRotateLanesAndTheNullFaultStartsAtOne) {
+  const Case c = sizedCase(
+      "    - array: {name: a, of: u16vec3, size: 2}\n"
+      "    - store: {array: a, index: 0, value: {u16vec3: [{uint16: launch_id_x}, 7, 9]}}\n"
+      "    - trace: {}\n"
+      "    - record: {value: {uint: {x: {load: [var.a, 0]}}}, value1: {uint: {z: {load: [var.a, "
+      "0]}}},\n"
+      "              value2: {uint: {y: {load: [var.a, 1]}}}}\n");
+  const Results kept = runTier(c, ModelTier::Fast);
+  EXPECT_EQ(sizedValues(kept, "value"), (Pair{0, 1}));
+  EXPECT_EQ(sizedValues(kept, "value1"), (Pair{9, 9}));
+  EXPECT_EQ(sizedValues(kept, "value2"), (Pair{0, 0}));
+  ModelOptions o{ModelTier::Fast, 1};
+  o.faults.sized_vectors_rotated = true;
+  const Results rotated = runOnModel(c, derivePlan(c), o);
+  EXPECT_EQ(sizedValues(rotated, "value"), (Pair{7, 7}));   // x takes y's
+  EXPECT_EQ(sizedValues(rotated, "value1"), (Pair{0, 1}));  // z takes x's
+  ModelOptions n{ModelTier::Fast, 1};
+  n.faults.sized_null_not_zero = true;
+  const Results ones = runOnModel(c, derivePlan(c), n);
+  EXPECT_EQ(sizedValues(ones, "value2"), (Pair{1, 1}));
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
-// The sized scalars (program/sized_types.h): their rows, the conversion ops
-// generated from them, the typing of literals and ops on them, and the
-// values each type holds exactly (program/sized_values.h).
+// The sized scalars and vectors (program/sized_types.h): their rows, the
+// conversion ops and constructors generated from them, the typing of
+// literals and ops on them, and the values each type holds exactly
+// (program/sized_values.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -36,7 +37,7 @@ TEST(SizedTypes, EachRowIsAValueTypeAndAConversionOp) {
   int rows = 0;
   for (ValueType t : enumValues<ValueType>()) {
     const SizedType* s = sizedType(t);
-    if (!s) continue;
+    if (!s || isSizedVector(t)) continue;
     ++rows;
     EXPECT_EQ(s->type, t);
     EXPECT_EQ(valueTypeNamed(valueTypeSpelling(t)), t);
@@ -95,6 +96,57 @@ TEST(SizedTypes, OnlyExactOpsAndDefinedConversionsType) {
   EXPECT_EQ(lt.args[1].type, ValueType::Float16);
   Expr to_uint = sizedOp("uint", {sizedOp("int8", {sizedLit(5)})});
   EXPECT_EQ(sizedTypeMessage(to_uint), "");
+}
+
+TEST(SizedTypes, EachScalarHasVectorsOfTwoThreeAndFourWithConstructors) {
+  int vectors = 0;
+  for (ValueType t : enumValues<ValueType>()) {
+    if (!isSizedVector(t)) continue;
+    ++vectors;
+    const ValueType component = sizedComponent(t);
+    EXPECT_TRUE(isSizedScalar(component));
+    EXPECT_EQ(sizedType(t), sizedType(component));  // the component's row
+    EXPECT_EQ(sizedVectorOf(component, componentCount(t)), t);
+    EXPECT_EQ(valueTypeNamed(valueTypeSpelling(t)), t);
+    const Op make = opNamed(valueTypeSpelling(t));  // {i8vec2: ..} .. {f64vec4: ..}
+    ASSERT_TRUE(isSizedConstructor(make)) << valueTypeSpelling(t);
+    EXPECT_EQ(constructorTarget(make), t);
+  }
+  EXPECT_EQ(vectors, 24);
+  EXPECT_STREQ(valueTypeSpelling(ValueType::Uint8Vec3), "u8vec3");
+  EXPECT_STREQ(valueTypeGlsl(ValueType::Float64Vec4), "f64vec4");
+  EXPECT_EQ(componentCount(ValueType::Int16Vec2), 2);
+  EXPECT_EQ(sizedComponent(ValueType::Float16Vec4), ValueType::Float16);
+  EXPECT_EQ(sizedComponent(ValueType::Vec3), ValueType::Vec3);
+  EXPECT_FALSE(isSizedVector(ValueType::Vec2));
+  EXPECT_TRUE(isSizedFloat(ValueType::Float64Vec2));
+}
+
+TEST(SizedTypes, VectorsTypeLaneByLaneAndTheirLiteralsTakeTheComponentType) {
+  Expr make = sizedOp("i8vec3", {sizedLit(1), sizedLit(2), sizedOp("int8", {sizedLit(3)})});
+  EXPECT_EQ(sizedTypeMessage(make), "");
+  EXPECT_EQ(make.type, ValueType::Int8Vec3);
+  EXPECT_EQ(make.args[0].type, ValueType::Int8);
+  Expr splat = sizedOp("f16vec4", {sizedLit(1.5, ValueType::Float)});
+  EXPECT_EQ(sizedTypeMessage(splat), "");
+  Expr two = sizedOp("u16vec3", {sizedLit(1), sizedLit(2)});
+  EXPECT_NE(sizedTypeMessage(two).find("takes 1 (splat) or 3"), std::string::npos);
+  Expr wrong = sizedOp("i64vec2", {sizedOp("uint64", {sizedLit(1)}), sizedLit(2)});
+  EXPECT_NE(sizedTypeMessage(wrong).find("need Int64 scalars"), std::string::npos);
+  Expr scaled = sizedOp("mul", {sizedOp("i16vec2", {sizedLit(7)}), sizedLit(3)});
+  EXPECT_EQ(sizedTypeMessage(scaled), "");
+  EXPECT_EQ(scaled.type, ValueType::Int16Vec2);
+  EXPECT_EQ(scaled.args[1].type, ValueType::Int16);
+  Expr y = sizedOp("y", {sizedOp("f64vec3", {sizedLit(2)})});
+  EXPECT_EQ(sizedTypeMessage(y), "");
+  EXPECT_EQ(y.type, ValueType::Float64);
+  Expr w = sizedOp("w", {sizedOp("u8vec3", {sizedLit(2)})});
+  EXPECT_NE(sizedTypeMessage(w).find("need a vector with a .w component"), std::string::npos);
+  Expr compared =
+      sizedOp("lt", {sizedOp("i8vec2", {sizedLit(2)}), sizedOp("i8vec2", {sizedLit(3)})});
+  EXPECT_NE(sizedTypeMessage(compared), "");  // comparisons are of scalars
+  Expr to_uint = sizedOp("uint", {sizedOp("u8vec2", {sizedLit(2)})});
+  EXPECT_NE(sizedTypeMessage(to_uint), "");
 }
 
 TEST(SizedValues, Float16HoldsElevenSignificantBitsOfNormalNumbers) {

@@ -193,7 +193,10 @@ TEST(DeviceErrors, ASizedScalarWithoutItsFeatureIsNotSupported) {
       {"control/live-state-sized/uint16", &DeviceInfo::shader_int16, "shaderInt16"},
       {"control/live-state-sized/float16", &DeviceInfo::shader_float16, "shaderFloat16"},
       {"control/live-state-sized/uint64", &DeviceInfo::shader_int64, "shaderInt64"},
-      {"control/live-state-sized/float64", &DeviceInfo::shader_float64, "shaderFloat64"}};
+      {"control/live-state-sized/float64", &DeviceInfo::shader_float64, "shaderFloat64"},
+      {"control/live-state-sized-vectors/uint8", &DeviceInfo::shader_int8, "shaderInt8"},
+      {"control/live-state-sized-vectors/float16", &DeviceInfo::shader_float16, "shaderFloat16"},
+      {"control/live-state-sized-vectors/int64", &DeviceInfo::shader_int64, "shaderInt64"}};
   for (const auto& [name, feature, feature_name] : rows) {
     SCOPED_TRACE(name);
     const Case c = suiteCase(name);

@@ -131,6 +131,8 @@ std::string vertexFormatConfused(Case& c, ModelOptions& o);
 std::string positionFetchWorldSpace(Case& c, ModelOptions& o);
 std::string localsLostAcrossCalls(Case& c, ModelOptions& o);
 std::string sizedLocalsHalved(Case& c, ModelOptions& o);
+std::string sizedVectorsRotated(Case& c, ModelOptions& o);
+std::string sizedNullNotZero(Case& c, ModelOptions& o);
 std::string loopTripOffByOne(Case& c, ModelOptions& o);
 std::string bitwiseXorAsOr(Case& c, ModelOptions& o);
 std::string crossOperandsSwapped(Case& c, ModelOptions& o);

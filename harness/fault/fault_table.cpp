@@ -383,10 +383,20 @@ std::vector<FaultImpl> codeAndLaunchMutations() {
        "reportIntersectionEXT (live values spilled and restored wrongly)",
        nullptr, localsLostAcrossCalls},
       {"sized-locals-halved-across-calls", K::CaseMutation,
-       "a local of a sized scalar type (int8 .. float64) comes back from its "
+       "a local of a sized scalar or vector type (int8 .. f64vec4) comes back from its "
        "traceRayEXT, executeCallableEXT or reportIntersectionEXT through a slot half its "
        "width (narrow and wide registers spilled wrongly): the lower half of its bits zero",
        nullptr, sizedLocalsHalved},
+      {"sized-vectors-rotated-across-calls", K::CaseMutation,
+       "a local of a sized vector type (i8vec2 .. f64vec4) comes back from its traceRayEXT, "
+       "executeCallableEXT or reportIntersectionEXT with its components rotated (x takes "
+       "y's, the last takes x's: a vector's lanes spilled to the wrong slots)",
+       nullptr, sizedVectorsRotated},
+      {"sized-null-initialiser-lost", K::CaseMutation,
+       "an array of a sized type, declared with a null initialiser (= {}, an "
+       "OpConstantNull), starts with every element one (1 or 1.0 in each lane) instead of "
+       "zero",
+       nullptr, sizedNullNotZero},
       {"loop-trip-off-by-one", K::CaseMutation, "every repeat runs one trip more than its count",
        nullptr, loopTripOffByOne},
       {"bitwise-xor-as-or", K::CaseMutation, "bit_xor (^) is computed as bit_or (|)", nullptr,

@@ -128,21 +128,51 @@ std::string localsLostAcrossCalls(Case& c, ModelOptions& o) {
   return describeCount(calls, "traces, calls and reports after which every local reads zero");
 }
 
-// A device whose spills of narrow and wide registers keep half their bits.
-std::string sizedLocalsHalved(Case& c, ModelOptions& o) {
-  size_t sized = 0;
+// The locals (arrays and lets) of the case whose type `which` says yes to.
+size_t countLocals(Case& c, bool (*which)(ValueType)) {
+  size_t n = 0;
   forEachProgram(c.pipeline, [&](Program& p, Stage) {
     forEachStmt(p, [&](Stmt& s) {
-      if (s.kind == Stmt::Kind::Array) sized += isSized(s.local_type);
+      if (s.kind == Stmt::Kind::Array) n += which(s.local_type);
       if (s.kind == Stmt::Kind::Let)
-        for (const auto& [name, value] : s.assigns) sized += isSized(value.type);
+        for (const auto& [name, value] : s.assigns) n += which(value.type);
     });
   });
+  return n;
+}
+
+// A device whose spills of narrow and wide registers keep half their bits.
+std::string sizedLocalsHalved(Case& c, ModelOptions& o) {
+  const size_t sized = countLocals(c, isSized);
   if (!sized) return "";
   o.faults.sized_locals_halved = true;
   return describeCount(sized,
-                       "sized scalar locals (int8 .. float64) that keep only their upper "
-                       "half of bits after each trace, call and report");
+                       "sized scalar and vector locals (int8 .. f64vec4) that keep only their "
+                       "upper half of bits after each trace, call and report");
+}
+
+// A device that spills a vector's lanes to the wrong slots.
+std::string sizedVectorsRotated(Case& c, ModelOptions& o) {
+  const size_t vectors = countLocals(c, isSizedVector);
+  if (!vectors) return "";
+  o.faults.sized_vectors_rotated = true;
+  return describeCount(vectors,
+                       "sized vector locals (i8vec2 .. f64vec4) whose components come back "
+                       "rotated after each trace, call and report");
+}
+
+// A device that drops the OpConstantNull a sized array is initialised from.
+std::string sizedNullNotZero(Case& c, ModelOptions& o) {
+  size_t arrays = 0;
+  forEachProgram(c.pipeline, [&](Program& p, Stage) {
+    forEachStmt(p,
+                [&](Stmt& s) { arrays += s.kind == Stmt::Kind::Array && isSized(s.local_type); });
+  });
+  if (!arrays) return "";
+  o.faults.sized_null_not_zero = true;
+  return describeCount(arrays,
+                       "sized arrays (declared = {}, an OpConstantNull) whose elements start "
+                       "as one instead of zero");
 }
 
 std::string loopTripOffByOne(Case& c, ModelOptions&) {

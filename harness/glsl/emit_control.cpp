@@ -26,9 +26,17 @@ std::string zeroOf(ValueType t) {
   }
 }
 
+// An array of a sized type is zero-initialised by its declaration (`= {}`,
+// GL_EXT_null_initializer: an OpConstantNull), any other by a loop.
 void array(const Stmt& s, GlslWriter& out) {
   const std::string name = localName(s.local), n = std::to_string(s.size) + "u";
-  out.line(std::string(glslType(s.local_type)) + " " + name + "[" + std::to_string(s.size) + "];");
+  const std::string declared =
+      std::string(glslType(s.local_type)) + " " + name + "[" + std::to_string(s.size) + "]";
+  if (isSized(s.local_type)) {
+    out.line(declared + " = {};");
+    return;
+  }
+  out.line(declared + ";");
   out.line("for (uint rs_z = 0u; rs_z < " + n + "; ++rs_z) " + name +
            "[rs_z] = " + zeroOf(s.local_type) + ";");
 }

@@ -216,14 +216,16 @@ std::vector<std::pair<uint32_t, uint32_t>> specializationOf(const Case& c,
 }
 
 // GL_EXT_shader_explicit_arithmetic_types_*: each the case's sized scalars
-// need, once (int8 and uint8 share one).
+// and vectors need, once (int8 and uint8 share one); GL_EXT_null_initializer
+// for their arrays (declared `= {}`: OpConstantNull, glsl/emit_control.h).
 void sizedTypeExtensions(const Plan& plan, GlslWriter& out) {
   std::string last;
   for (ValueType t : enumValues<ValueType>()) {
-    if (!plan.usesSized(t) || sizedType(t)->extension == last) continue;
+    if (!isSizedScalar(t) || !plan.usesSized(t) || sizedType(t)->extension == last) continue;
     last = sizedType(t)->extension;
     out.line("#extension " + last + " : require");
   }
+  if (plan.sized_types) out.line("#extension GL_EXT_null_initializer : require");
 }
 
 // The #extension lines the stage's GLSL needs.

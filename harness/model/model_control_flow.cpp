@@ -16,6 +16,12 @@ void setLocal(StageEnv& env, size_t slot, const Val& v) {
 
 }  // namespace
 
+Val StageInterpreter::zeroElement(const CStmt& s) const {
+  const ValueType t = s.src ? s.src->local_type : ValueType::Uint;
+  if (!isSized(t)) return Val{};
+  return sh_.fault_seam.sizedNullNotZero() ? onesSized(t) : fromSized(t, 0);
+}
+
 Flow StageInterpreter::execControl(const CStmt& s, StageEnv& env) {
   switch (s.kind) {
     case Stmt::Kind::Let:
@@ -26,7 +32,7 @@ Flow StageInterpreter::execControl(const CStmt& s, StageEnv& env) {
     case Stmt::Kind::Array:
       if (s.slot < 0) return Flow::Continue;
       env.locals.resize(std::max(env.locals.size(), static_cast<size_t>(s.slot) + s.size));
-      std::fill_n(env.locals.begin() + s.slot, s.size, Val{});
+      std::fill_n(env.locals.begin() + s.slot, s.size, zeroElement(s));
       return Flow::Continue;
     case Stmt::Kind::Store: {
       if (s.words) {  // payload.words / call.words

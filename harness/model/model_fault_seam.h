@@ -72,6 +72,10 @@ class ModelFaultSeam {
   bool localsLostAcrossCalls() const { return f_.locals_lost_across_calls; }
   // Live state broken for sized scalars: they come back with half their bits.
   bool sizedLocalsHalvedAcrossCalls() const { return f_.sized_locals_halved; }
+  // ... sized vectors come back with their components rotated.
+  bool sizedVectorsRotatedAcrossCalls() const { return f_.sized_vectors_rotated; }
+  // Zero-initialised sized arrays start as one.
+  bool sizedNullNotZero() const { return f_.sized_null_not_zero; }
   // Ray queries: the rule each question stands for broken (ModelFaults' rq_*).
   bool queryInitKeepsCommitted() const { return f_.rq_init_keeps_committed; }  // R-RQ-INIT
   bool queryOffersOpaque() const { return f_.rq_opaque_offered; }              // R-RQ-CANDIDATES

@@ -65,6 +65,15 @@ struct ModelFaults {
   // a float's encoding) kept (a driver that spills narrow and wide registers
   // wrongly).
   bool sized_locals_halved = false;
+  // Live state broken for the sized vectors only: after a trace, a callable
+  // call or a report, a sized vector local (i8vec2 .. f64vec4) comes back
+  // with its components rotated (x takes y's, .., the last takes x's: a
+  // driver that spills a vector's lanes to the wrong slots).
+  bool sized_vectors_rotated = false;
+  // Zero-initialised sized arrays broken: a sized array's elements start as
+  // one (1 or 1.0 in each lane) instead of zero (a driver that drops the
+  // OpConstantNull the declaration is initialised from).
+  bool sized_null_not_zero = false;
   // R-BUILTIN broken: gl_ObjectToWorldEXT and gl_WorldToObjectEXT (and their
   // 3x4 forms) each read the other matrix.
   bool transform_builtins_swapped = false;

@@ -21,13 +21,13 @@ namespace rayspec {
 
 struct Val {
   std::array<float, 4> f{};
-  // A sized scalar (program/sized_types.h): an integer's value wrapped to
-  // its type (program/sized_values.h, wrapToType), a float16's or float64's
-  // value as a double's bits.
-  uint64_t x = 0;
+  // A sized scalar or vector (program/sized_types.h), one component a lane:
+  // an integer's value wrapped to its type (program/sized_values.h,
+  // wrapToType), a float16's or float64's value as a double's bits.
+  std::array<uint64_t, 4> x{};
   uint32_t u = 0;
   bool b = false;
-  ValueType sized = ValueType::Bool;  // the sized type x holds (Bool: none)
+  ValueType sized = ValueType::Bool;  // the sized type x holds (Bool: none), scalar or vector
 };
 
 inline Val fromVec3(const Vec3& v) {
@@ -53,15 +53,15 @@ inline Val fromFloat(float f) {
 
 inline Val fromSized(ValueType t, uint64_t x) {
   Val r;
-  r.x = x;
+  r.x[0] = x;
   r.sized = t;
   return r;
 }
 inline Val fromSizedDouble(ValueType t, double d) {
   return fromSized(t, std::bit_cast<uint64_t>(d));
 }
-inline double sizedDouble(const Val& v) {
-  return std::bit_cast<double>(v.x);
+inline double sizedDouble(const Val& v, int lane = 0) {
+  return std::bit_cast<double>(v.x[static_cast<size_t>(lane)]);
 }
 
 struct CExpr {

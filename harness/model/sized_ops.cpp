@@ -1,7 +1,9 @@
-// The model's meaning of the sized scalars' ops (program/sized_types.h):
-// integers wrap modulo 2^bits; a float16 or float64 result is the exact one,
-// and one that is not exact (or not normal) is a case error, since rounding
-// and denormals are the device's choice; conversions as GLSL's constructors.
+// The model's meaning of the sized scalars' and vectors' ops
+// (program/sized_types.h): integers wrap modulo 2^bits; a float16 or float64
+// result is the exact one, and one that is not exact (or not normal) is a
+// case error, since rounding and denormals are the device's choice;
+// conversions and constructors as GLSL's; a vector's ops lane by lane.
+#include <bit>
 #include <cmath>
 #include <optional>
 
@@ -51,46 +53,92 @@ double asDouble(ValueType t, const Val& v) {
   return t == ValueType::Uint ? v.u : t == ValueType::Float ? v.f[0] : sizedDouble(v);
 }
 
-}  // namespace
-
-Val halvedSized(const Val& v) {
-  const SizedType* s = sizedType(v.sized);
+// One lane's bits through a slot half its width.
+uint64_t halvedLane(ValueType component, uint64_t x) {
+  const SizedType* s = sizedType(component);
   const uint64_t low_half = (uint64_t{1} << (s->bits / 2)) - 1;
-  if (v.sized == ValueType::Float64) return fromSized(v.sized, v.x & ~low_half);
-  if (v.sized != ValueType::Float16) return fromSized(v.sized, v.x & ~low_half);
+  if (component != ValueType::Float16) return x & ~low_half;
   // A normal float16: 11 significant bits, the low 8 of them (its
   // encoding's low byte) zero.
-  const double d = sizedDouble(v);
-  if (d == 0) return v;
+  const double d = std::bit_cast<double>(x);
+  if (d == 0) return x;
   int exponent = 0;
   const double significand = std::ldexp(std::frexp(d, &exponent), 11);  // +-[1024, 2048)
   const double kept = std::trunc(significand / 256) * 256;
-  return fromSizedDouble(v.sized, std::ldexp(kept, exponent - 11));
+  return std::bit_cast<uint64_t>(std::ldexp(kept, exponent - 11));
+}
+
+}  // namespace
+
+Val halvedSized(const Val& v) {
+  Val r = v;
+  for (int k = 0; k < componentCount(v.sized); ++k)
+    r.x[k] = halvedLane(sizedComponent(v.sized), v.x[k]);
+  return r;
+}
+
+Val rotatedSized(const Val& v) {
+  Val r = v;
+  const int n = componentCount(v.sized);
+  for (int k = 0; k < n; ++k) r.x[k] = v.x[(k + 1) % n];
+  return r;
+}
+
+Val onesSized(ValueType t) {
+  Val r = fromSized(t, 0);
+  const uint64_t one = isSizedFloat(t) ? std::bit_cast<uint64_t>(1.0) : 1;
+  for (int k = 0; k < componentCount(t); ++k) r.x[k] = one;
+  return r;
 }
 
 bool sizedLess(ValueType t, const Val& a, const Val& b) {
   const SizedKind kind = sizedType(t)->kind;
   if (kind == SizedKind::Floating) return sizedDouble(a) < sizedDouble(b);
-  if (kind == SizedKind::Signed) return static_cast<int64_t>(a.x) < static_cast<int64_t>(b.x);
-  return a.x < b.x;
+  if (kind == SizedKind::Signed) return static_cast<int64_t>(a.x[0]) < static_cast<int64_t>(b.x[0]);
+  return a.x[0] < b.x[0];
 }
 
 bool sizedEqual(ValueType t, const Val& a, const Val& b) {
-  return isSizedFloat(t) ? sizedDouble(a) == sizedDouble(b) : a.x == b.x;
+  return isSizedFloat(t) ? sizedDouble(a) == sizedDouble(b) : a.x[0] == b.x[0];
 }
 
+// Lane by lane; a scalar beside a vector is every lane's.
 Val StageInterpreter::sizedArithmetic(const CExpr& e, const Val* a) {
-  const ValueType t = e.type;
-  if (isSizedInteger(t)) return fromSized(t, integerOp(e.op, t, a[0].x, a[1].x));
-  const std::optional<double> r = exactDouble(e.op, sizedDouble(a[0]), sizedDouble(a[1]));
-  if (!r || (t == ValueType::Float16 && !exactInFloat16(*r))) inexact(e);
-  return fromSizedDouble(t, r.value_or(0));
+  const ValueType t = e.type, component = sizedComponent(t);
+  const auto lane = [&](int i, int k) {
+    return isSizedVector(e.args[i].type) ? a[i].x[k] : a[i].x[0];
+  };
+  Val r = fromSized(t, 0);
+  for (int k = 0; k < componentCount(t); ++k) {
+    if (isSizedInteger(t)) {
+      r.x[k] = integerOp(e.op, component, lane(0, k), lane(1, k));
+      continue;
+    }
+    const std::optional<double> d =
+        exactDouble(e.op, std::bit_cast<double>(lane(0, k)), std::bit_cast<double>(lane(1, k)));
+    if (!d || (component == ValueType::Float16 && !exactInFloat16(*d))) inexact(e);
+    r.x[k] = std::bit_cast<uint64_t>(d.value_or(0));
+  }
+  return r;
+}
+
+Val StageInterpreter::constructSized(const CExpr& e, const Val* a, size_t n) const {
+  if (e.op >= Op::CompX && e.op <= Op::CompW) {  // x .. w of a sized vector
+    const ValueType t = e.args[0].type;
+    return fromSized(sizedComponent(t),
+                     a[0].x[static_cast<int>(e.op) - static_cast<int>(Op::CompX)]);
+  }
+  const ValueType t = constructorTarget(e.op);
+  Val r = fromSized(t, 0);
+  for (size_t k = 0; k < static_cast<size_t>(componentCount(t)); ++k)
+    r.x[k] = a[n == 1 ? 0 : k].x[0];
+  return r;
 }
 
 Val StageInterpreter::convert(const CExpr& e, const Val& a) {
   const ValueType from = e.args[0].type;
-  if (e.op == Op::HighWord) return fromUint(static_cast<uint32_t>(a.x >> 32));
-  if (e.op == Op::ToUint && isSizedInteger(from)) return fromUint(static_cast<uint32_t>(a.x));
+  if (e.op == Op::HighWord) return fromUint(static_cast<uint32_t>(a.x[0] >> 32));
+  if (e.op == Op::ToUint && isSizedInteger(from)) return fromUint(static_cast<uint32_t>(a.x[0]));
   if (e.op == Op::ToUint) {  // a sized float, truncated toward zero as Float's is
     const double d = sizedDouble(a);
     return fromUint(d <= 0 || std::isnan(d) ? 0u
@@ -104,7 +152,7 @@ Val StageInterpreter::convert(const CExpr& e, const Val& a) {
   }
   const ValueType to = conversionTarget(e.op);
   if (isSizedInteger(to))
-    return fromSized(to, wrapToType(to, from == ValueType::Uint ? uint64_t{a.u} : a.x));
+    return fromSized(to, wrapToType(to, from == ValueType::Uint ? uint64_t{a.u} : a.x[0]));
   const double d = asDouble(from, a);
   if (!normalOrZero(d) || (to == ValueType::Float16 && !exactInFloat16(d))) inexact(e);
   return fromSizedDouble(to, d);

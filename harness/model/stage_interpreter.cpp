@@ -130,14 +130,18 @@ Flow StageInterpreter::execStmt(const CStmt& s, StageEnv& env) {
 
 // The planted fault locals_lost_across_calls: a device that does not keep a
 // shader's live values across a trace, call or report reads them as zero.
-// The planted fault sized_locals_halved: a sized scalar local (int8 ..
-// float64) keeps only the upper half of its bits.
+// The planted fault sized_locals_halved: a sized scalar or vector local
+// (int8 .. f64vec4) keeps only the upper half of its bits; sized_vectors_rotated:
+// a sized vector's components come back rotated.
 void StageInterpreter::loseLocals(StageEnv& env) const {
   if (sh_.fault_seam.localsLostAcrossCalls())
     std::fill(env.locals.begin(), env.locals.end(), Val{});
   if (sh_.fault_seam.sizedLocalsHalvedAcrossCalls())
     for (Val& v : env.locals)
       if (isSized(v.sized)) v = halvedSized(v);
+  if (sh_.fault_seam.sizedVectorsRotatedAcrossCalls())
+    for (Val& v : env.locals)
+      if (isSizedVector(v.sized)) v = rotatedSized(v);
 }
 
 namespace {

@@ -27,6 +27,10 @@ bool sizedEqual(ValueType t, const Val& a, const Val& b);
 // A sized scalar through a slot half its width: its upper half of bits kept,
 // the lower half (of a float16's or float64's encoding) zero.
 Val halvedSized(const Val& v);
+// A sized vector with its components rotated (x takes y's, .., the last x's).
+Val rotatedSized(const Val& v);
+// A sized scalar or vector of type t whose every lane is one (1 or 1.0).
+Val onesSized(ValueType t);
 
 class StageInterpreter {
  public:
@@ -51,10 +55,16 @@ class StageInterpreter {
   // uint of a sized scalar, high, int8 .. float64): model/sized_ops.cpp.
   Val sizedArithmetic(const CExpr& e, const Val* a);
   Val convert(const CExpr& e, const Val& a);
+  // {i8vec2: ..} .. {f64vec4: ..} and x .. w of a sized vector.
+  Val constructSized(const CExpr& e, const Val* a, size_t n) const;
   void inexact(const CExpr& e);  // a sized float result not exact: a case error
   Flow execStmt(const CStmt& s, StageEnv& env);
   void execSet(const CStmt& s, StageEnv& env);      // set payload / set call data
   Flow execControl(const CStmt& s, StageEnv& env);  // let .. return (model_control_flow.cpp)
+  // An array's elements before any store: zero (a sized array's the
+  // OpConstantNull it is declared with), or under the planted fault
+  // sized_null_not_zero one.
+  Val zeroElement(const CStmt& s) const;
   Flow execRepeat(const CStmt& s, StageEnv& env);
   Flow execSwitch(const CStmt& s, StageEnv& env);
   Flow execInvoke(const CStmt& s, StageEnv& env);

@@ -281,7 +281,21 @@ Val vectorOp(Op n, const Val* a, size_t na, int components) {
   }
 }
 
+// The sized vectors' constructors and components (model/sized_ops.cpp).
+bool makesSized(const CExpr& e) {
+  const Op n = e.op;
+  if (isSizedConstructor(n)) return true;
+  return n >= Op::CompX && n <= Op::CompW && isSizedVector(e.args[0].type);
+}
+
 }  // namespace
+
+// The case labels of the ops made before op()'s switch.
+#define RAYSPEC_CONVERSION_CASE(X, id, ...) case Op::To##id:
+#define RAYSPEC_CONSTRUCTOR_CASE(X, id, ...) \
+  case Op::Make##id##Vec2:                   \
+  case Op::Make##id##Vec3:                   \
+  case Op::Make##id##Vec4:
 
 Val StageInterpreter::op(const CExpr& e, StageEnv& env) {
   const Op n = e.op;
@@ -290,6 +304,7 @@ Val StageInterpreter::op(const CExpr& e, StageEnv& env) {
   ArgSlots a;  // every remaining op takes at most 4 arguments (vec4)
   const size_t na = a.fill(e.args.size(), [&](size_t i) { return eval(e.args[i], env); });
   if (convertsSized(e)) return convert(e, a[0]);
+  if (makesSized(e)) return constructSized(e, a, na);
   switch (n) {
     case Op::BitAnd:
     case Op::BitOr:
@@ -353,14 +368,15 @@ Val StageInterpreter::op(const CExpr& e, StageEnv& env) {
     case Op::CallWord:
     case Op::CalleeWord:
     case Op::HighWord:  // converted before the switch (convertsSized)
-#define RAYSPEC_CONVERSION_CASE(X, id, ...) case Op::To##id:
       RAYSPEC_SIZED_TYPES(RAYSPEC_CONVERSION_CASE, )
-#undef RAYSPEC_CONVERSION_CASE
+      RAYSPEC_SIZED_TYPES(RAYSPEC_CONSTRUCTOR_CASE, )  // made before the switch (makesSized)
     case Op::None:
       break;
   }
   return r;
 }
+#undef RAYSPEC_CONVERSION_CASE
+#undef RAYSPEC_CONSTRUCTOR_CASE
 
 Val StageInterpreter::arithmetic(const CExpr& e, const Val* a) {
   const Op n = e.op;

@@ -131,7 +131,7 @@ void planStages(const Pipeline& pipe, const TraceFlags& flags, bool non_opaque_g
 }
 
 void noteSized(ValueType t, Plan& plan) {
-  if (isSized(t)) plan.sized_types |= 1u << static_cast<int>(t);
+  if (isSized(t)) plan.sized_types |= 1u << static_cast<int>(sizedComponent(t));
 }
 
 // What the statements do: callables, nested traces (and the depth), scene
@@ -264,7 +264,7 @@ std::vector<std::string> Plan::describe() const {
        "built with ALLOW_DATA_ACCESS)");
   std::string sized_line;
   for (ValueType t : enumValues<ValueType>())
-    if (usesSized(t)) sized_line += std::string(" ") + valueTypeSpelling(t);
+    if (isSizedScalar(t) && usesSized(t)) sized_line += std::string(" ") + valueTypeSpelling(t);
   if (!sized_line.empty()) lines.push_back("  sized scalars:" + sized_line);
   std::string counters_line = "counters:";
   for (const auto& c : counters) counters_line += " " + c;

@@ -44,7 +44,10 @@ struct Plan {
   // The sized scalars a stage computes with (program/sized_types.h), bit
   // 1 << ValueType: their #extension lines, the device features they need.
   uint32_t sized_types = 0;
-  bool usesSized(ValueType t) const { return sized_types >> static_cast<int>(t) & 1u; }
+  // Whether t, or a sized vector's component type, is among them.
+  bool usesSized(ValueType t) const {
+    return sized_types >> static_cast<int>(sizedComponent(t)) & 1u;
+  }
   bool shader_record_data = false;         // some SBT record carries data
   bool zero_records = false;               // some SBT record is all zero
   bool sbt_tables = false;                 // the SBT as tables in a buffer: traced by ray

@@ -15,8 +15,9 @@
 //     emitter spells it (load, the word arrays, the shader record words).
 // Rows that are families stay together in this order (the model and the
 // emitter count from their first row): vec2..vec4, x..w, payload_word ..
-// callee_word (in program/payload_words.h's WordArray order), the
-// conversions to the sized scalars last (generated from RAYSPEC_SIZED_TYPES).
+// callee_word (in program/payload_words.h's WordArray order), the sized
+// vectors' constructors, then the conversions to the sized scalars last (both
+// generated from RAYSPEC_SIZED_TYPES).
 #pragma once
 
 #include <cstdint>
@@ -120,7 +121,17 @@
     "this stage's record floats")                                                                 \
   X(HighWord, "high", 1, 1, kAllStages, HighWord, "uint(($0) >> 32)",                              \
     "bits 32..63 of an Int64 or Uint64 -> Uint")                                                   \
+  RAYSPEC_SIZED_TYPES(RAYSPEC_CONSTRUCTOR_OPS, X)                                                  \
   RAYSPEC_SIZED_TYPES(RAYSPEC_CONVERSION_OP, X)
+// {i8vec2: [a, b]} .. {f64vec4: [a, b, c, d]}: a sized vector of its
+// component type's scalars (one splats).
+#define RAYSPEC_CONSTRUCTOR_OPS(X, id, name, spelling, glsl, bits, kind, extension, feature, vec) \
+  X(Make##id##Vec2, vec "2", 1, 2, kAllStages, ConstructSized, vec "2($,)",                        \
+    name " scalars -> " name "Vec2 (a single one splats)")                                         \
+  X(Make##id##Vec3, vec "3", 1, 3, kAllStages, ConstructSized, vec "3($,)",                        \
+    name " scalars -> " name "Vec3 (a single one splats)")                                         \
+  X(Make##id##Vec4, vec "4", 1, 4, kAllStages, ConstructSized, vec "4($,)",                        \
+    name " scalars -> " name "Vec4 (a single one splats)")
 // {int8: x} .. {float64: x}: one conversion a sized scalar (program/program.h).
 #define RAYSPEC_CONVERSION_OP(X, id, name, spelling, glsl, ...)                                    \
   X(To##id, spelling, 1, 1, kAllStages, Convert, glsl "($0)",                                      \

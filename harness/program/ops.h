@@ -45,6 +45,7 @@ enum class OpTyping : uint8_t {
   ToUint,           // Float, a sized integer or a sized float -> Uint
   HighWord,         // Int64 or Uint64 -> Uint
   Convert,          // -> the op's sized scalar (conversionTarget)
+  ConstructSized,   // the component type's scalars -> the op's sized vector (constructorTarget)
 };
 
 // One row of program/op_table.h.
@@ -108,6 +109,19 @@ constexpr bool isConversion(Op op) {  // int8 .. float64
 constexpr ValueType conversionTarget(Op op) {
   return static_cast<ValueType>(static_cast<int>(ValueType::Int8) + static_cast<int>(op) -
                                 static_cast<int>(Op::ToInt8));
+}
+static_assert(static_cast<int>(Op::MakeFloat64Vec4) - static_cast<int>(Op::MakeInt8Vec2) ==
+                      static_cast<int>(ValueType::Float64Vec4) -
+                          static_cast<int>(ValueType::Int8Vec2) &&
+                  static_cast<int>(Op::MakeFloat64Vec4) + 1 == static_cast<int>(Op::ToInt8),
+              "the sized vectors' constructors in the order of their ValueType rows");
+constexpr bool isSizedConstructor(Op op) {  // i8vec2 .. f64vec4
+  return op >= Op::MakeInt8Vec2 && op <= Op::MakeFloat64Vec4;
+}
+// The sized vector a constructor ({i8vec2: ..} .. {f64vec4: ..}) makes.
+constexpr ValueType constructorTarget(Op op) {
+  return static_cast<ValueType>(static_cast<int>(ValueType::Int8Vec2) + static_cast<int>(op) -
+                                static_cast<int>(Op::MakeInt8Vec2));
 }
 constexpr bool isComparison(Op op) {
   return op >= Op::Eq && op <= Op::Ge;

@@ -41,17 +41,23 @@ inline const char* stageName(Stage s) {
   X(Vec2, "Vec2", "vec2", 2, "vec2")                                \
   X(Vec3, "Vec3", "vec3", 3, "vec3")                                \
   X(Vec4, "Vec4", "vec4", 4, "vec4")                                \
-  RAYSPEC_SIZED_TYPES(RAYSPEC_SIZED_AS_VALUE_TYPE, X)
+  RAYSPEC_SIZED_TYPES(RAYSPEC_SIZED_AS_VALUE_TYPE, X)              \
+  RAYSPEC_SIZED_TYPES(RAYSPEC_SIZED_VECTORS_AS_VALUE_TYPES, X)
 
 // clang-format on
 enum class ValueType { RAYSPEC_VALUE_TYPES(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(ValueType, RAYSPEC_VALUE_TYPES);
+static_assert(
+    static_cast<int>(ValueType::Float64Vec4) - static_cast<int>(ValueType::Int8Vec2) ==
+            3 * (static_cast<int>(ValueType::Float64) - static_cast<int>(ValueType::Int8)) + 2 &&
+        static_cast<int>(ValueType::Int8Vec2) == static_cast<int>(ValueType::Float64) + 1,
+    "the sized scalars, then their vectors (2, 3, 4 each) in the same order");
 inline const char* valueTypeName(ValueType t) {
   return nameOf(t);
 }
 const char* valueTypeSpelling(ValueType t);  // "bool", "uint", ..., "vec4", "int8", ...
 const char* valueTypeGlsl(ValueType t);      // "bool", ..., "int8_t", ..., "float64_t"
-int componentCount(ValueType t);             // Bool/Uint/Float 1, Vec2 2, ...
+int componentCount(ValueType t);             // Bool/Uint/Float 1, Vec2 2, I8Vec3 3, ...
 
 // A sized scalar's row of RAYSPEC_SIZED_TYPES.
 enum class SizedKind : uint8_t { Signed, Unsigned, Floating };
@@ -62,13 +68,22 @@ struct SizedType {
   const char* extension;  // the #extension its GLSL needs
   const char* feature;    // the device feature (NotSupported names it)
 };
-// Its row, or null for Bool, Uint, Float and the vectors.
+// Its row (a sized vector's: its component's), or null for Bool, Uint,
+// Float and Vec2..Vec4.
 const SizedType* sizedType(ValueType t);
-inline bool isSized(ValueType t) {
+inline bool isSized(ValueType t) {  // a sized scalar or a sized vector
   return sizedType(t) != nullptr;
 }
-bool isSizedInteger(ValueType t);  // int8 .. uint64
-bool isSizedFloat(ValueType t);    // float16, float64
+bool isSizedVector(ValueType t);  // i8vec2 .. f64vec4
+inline bool isSizedScalar(ValueType t) {
+  return isSized(t) && !isSizedVector(t);
+}
+bool isSizedInteger(ValueType t);  // int8 .. uint64, scalar or vector
+bool isSizedFloat(ValueType t);    // float16, float64, scalar or vector
+// A sized vector's component type (Int8 for Int8Vec3); any other type itself.
+ValueType sizedComponent(ValueType t);
+// The sized scalar s's vector of n (2..4) components.
+ValueType sizedVectorOf(ValueType s, int n);
 // The spellings of the types an array may hold, joined by ", " (messages).
 std::string arrayTypeSpellings();
 

@@ -26,13 +26,29 @@ int componentCount(ValueType t) {
 }
 
 const SizedType* sizedType(ValueType t) {
-#define RAYSPEC_SIZED_TYPE_ROW(X, id, name, spelling, glsl, bits, kind, extension, feature) \
+#define RAYSPEC_SIZED_TYPE_ROW(X, id, name, spelling, glsl, bits, kind, extension, feature, vec) \
   SizedType{ValueType::id, bits, SizedKind::kind, extension, feature},
   static constexpr SizedType kRows[] = {RAYSPEC_SIZED_TYPES(RAYSPEC_SIZED_TYPE_ROW, )};
 #undef RAYSPEC_SIZED_TYPE_ROW
+  const ValueType scalar = sizedComponent(t);
   for (const SizedType& row : kRows)
-    if (row.type == t) return &row;
+    if (row.type == scalar) return &row;
   return nullptr;
+}
+
+bool isSizedVector(ValueType t) {
+  return t >= ValueType::Int8Vec2 && t <= ValueType::Float64Vec4;
+}
+
+ValueType sizedComponent(ValueType t) {
+  if (!isSizedVector(t)) return t;
+  const int k = static_cast<int>(t) - static_cast<int>(ValueType::Int8Vec2);
+  return static_cast<ValueType>(static_cast<int>(ValueType::Int8) + k / 3);
+}
+
+ValueType sizedVectorOf(ValueType s, int n) {
+  const int k = static_cast<int>(s) - static_cast<int>(ValueType::Int8);
+  return static_cast<ValueType>(static_cast<int>(ValueType::Int8Vec2) + 3 * k + n - 2);
 }
 
 bool isSizedInteger(ValueType t) {

@@ -18,7 +18,7 @@ bool isVector(ValueType t) {
   return t == ValueType::Vec2 || t == ValueType::Vec3 || t == ValueType::Vec4;
 }
 bool isScalarNumber(ValueType t) {
-  return t == ValueType::Uint || t == ValueType::Float || isSized(t);
+  return t == ValueType::Uint || t == ValueType::Float || isSizedScalar(t);
 }
 bool isUintLiteral(const Expr& e) {
   return e.kind == Expr::Kind::Literal && e.type == ValueType::Uint;
@@ -30,7 +30,8 @@ ValueType vectorOf(int n) {
 std::optional<ProgramError> checkLiteral(Expr& e);
 
 // A literal that a sized scalar's partner takes that type: a Uint literal
-// next to any sized scalar, a Float literal next to Float16 or Float64.
+// next to any sized scalar, a Float literal next to Float16 or Float64 (next
+// to a sized vector: its component type).
 bool takesSizedType(const Expr& literal, ValueType partner) {
   if (!isSized(partner) || literal.kind != Expr::Kind::Literal) return false;
   return literal.type == ValueType::Uint ||
@@ -47,7 +48,7 @@ std::optional<ProgramError> unifyLiterals(Expr& a, Expr& b) {
     b.type = ValueType::Float;
   for (auto [literal, partner] : {std::pair<Expr*, Expr*>{&a, &b}, {&b, &a}}) {
     if (!takesSizedType(*literal, partner->type)) continue;
-    literal->type = partner->type;
+    literal->type = sizedComponent(partner->type);
     if (auto r = checkLiteral(*literal)) return r;
   }
   return std::nullopt;
@@ -120,8 +121,14 @@ Typing typeArithmetic(Expr& e) {  // add sub mul div
     e.type = t0;
   else if (t0 == ValueType::Float && isVector(t1))
     e.type = t1;
+  else if (isSizedVector(t0) && t1 == sizedComponent(t0))
+    e.type = t0;
+  else if (isSizedVector(t1) && t0 == sizedComponent(t1))
+    e.type = t1;
   else
-    return badArguments(e, "need the same numeric type, or a Float with a vector");
+    return badArguments(e,
+                        "need the same numeric type, or a Float with a vector, or a sized "
+                        "vector with a scalar of its component type");
   if (e.op == Op::Div && isSized(e.type))
     return badArguments(e,
                         "div is not offered on the sized scalars (not exact in floats; "
@@ -197,9 +204,30 @@ Typing typeVectorOf(Expr& e) {  // vec2 vec3 vec4
 
 Typing typeComponent(Expr& e) {  // x y z w
   const int index = static_cast<int>(e.op) - static_cast<int>(Op::CompX);
-  if (!isVector(e.args[0].type) || componentCount(e.args[0].type) <= index)
+  const ValueType t = e.args[0].type;
+  if (!(isVector(t) || isSizedVector(t)) || componentCount(t) <= index)
     return badArguments(e, "need a vector with a ." + e.name + " component");
-  e.type = ValueType::Float;
+  e.type = isSizedVector(t) ? sizedComponent(t) : ValueType::Float;
+  return std::nullopt;
+}
+
+// {i8vec2: ..} .. {f64vec4: ..}: 1 (splat) or n scalars of the component
+// type (a literal takes it).
+Typing typeConstructSized(Expr& e) {
+  const ValueType to = constructorTarget(e.op), component = sizedComponent(to);
+  const int size = componentCount(to), n = static_cast<int>(e.args.size());
+  if (n != 1 && n != size)
+    return err(e, "operator '" + e.name + "' takes 1 (splat) or " + std::to_string(size) + " " +
+                      valueTypeName(component) + " arguments, got " + std::to_string(n));
+  for (Expr& x : e.args) {
+    if (takesSizedType(x, component)) {
+      x.type = component;
+      if (auto r = checkLiteral(x)) return r;
+    }
+    if (x.type != component)
+      return badArguments(e, std::string("need ") + valueTypeName(component) + " scalars");
+  }
+  e.type = to;
   return std::nullopt;
 }
 
@@ -251,10 +279,10 @@ Typing typeFrom(Expr& e, bool (*accepted)(ValueType), const char* need, ValueTyp
 
 // float: Uint, Float16, Float64. uint: Float, a sized scalar. high: 64-bit integers.
 bool convertsToFloat(ValueType t) {
-  return t == ValueType::Uint || isSizedFloat(t);
+  return t == ValueType::Uint || (isSizedFloat(t) && isSizedScalar(t));
 }
 bool convertsToUint(ValueType t) {
-  return t == ValueType::Float || isSized(t);
+  return t == ValueType::Float || isSizedScalar(t);
 }
 bool hasHighWord(ValueType t) {
   return t == ValueType::Int64 || t == ValueType::Uint64;
@@ -266,7 +294,8 @@ Typing typeConversion(Expr& e) {
   const ValueType to = conversionTarget(e.op), from = e.args[0].type;
   const bool integer = isSizedInteger(to);
   const bool ok = from == ValueType::Uint ||
-                  (integer ? isSizedInteger(from) : from == ValueType::Float || isSizedFloat(from));
+                  (isSizedScalar(from) && integer == isSizedInteger(from)) ||
+                  (!integer && from == ValueType::Float);
   if (!ok)
     return badArguments(
         e, integer ? "need Uint or a sized integer" : "need Uint, Float, Float16 or Float64");
@@ -330,6 +359,8 @@ Typing typeOp(Expr& e, OpTyping typing) {
       return typeFrom(e, hasHighWord, "need Int64 or Uint64", V::Uint);
     case OpTyping::Convert:
       return typeConversion(e);
+    case OpTyping::ConstructSized:
+      return typeConstructSized(e);
     case OpTyping::Load:  // typed before its arguments (typeLoad)
       break;
   }

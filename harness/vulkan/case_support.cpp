@@ -127,15 +127,15 @@ Result<void> checkDeferred(const DeviceInfo& d, uint32_t validation_layer) {
 Result<void> checkSizedTypes(const DeviceInfo& d, const Plan& plan) {
   for (ValueType t : enumValues<ValueType>()) {
     const SizedType* s = sizedType(t);
-    if (!s || !plan.usesSized(t)) continue;
+    if (!s || !isSizedScalar(t) || !plan.usesSized(t)) continue;
     const bool integer = s->kind != SizedKind::Floating;
     const bool has = integer ? (s->bits == 8    ? d.shader_int8
                                 : s->bits == 16 ? d.shader_int16
                                                 : d.shader_int64)
                              : (s->bits == 16 ? d.shader_float16 : d.shader_float64);
     if (!has)
-      return notSupported(std::string(valueTypeSpelling(t)) + " locals: the device lacks " +
-                          s->feature);
+      return notSupported(std::string(valueTypeSpelling(t)) +
+                          " locals (scalars or vectors): the device lacks " + s->feature);
   }
   return {};
 }
