@@ -140,6 +140,30 @@ Result<void> checkSizedTypes(const DeviceInfo& d, const Plan& plan) {
   return {};
 }
 
+// How the pipeline object is made: its record block layout, libraries,
+// flags, deferred creation and recursion depth.
+Result<void> checkPipelineObjects(const DeviceInfo& d, uint32_t validation_layer, const Pipeline& p,
+                                  const Plan& plan) {
+  if (p.record_layout.declared() && p.record_layout.scalar && !d.scalar_block_layout)
+    return notSupported(
+        "pipeline.sbt.record_layout: a scalar shader record block needs scalarBlockLayout");
+  if (plan.cull_mask_builtin && !d.ray_tracing_maintenance1)
+    return notSupported(
+        "cull_mask: gl_CullMaskEXT needs VK_KHR_ray_tracing_maintenance1 (rayTracingMaintenance1)");
+  if (!p.libraries.empty() && !d.pipeline_library)
+    return notSupported("pipeline.libraries: the device lacks VK_KHR_pipeline_library");
+  if ((p.flags & kPipelineLinkTimeFlags) && !d.graphics_pipeline_library)
+    return notSupported(
+        "pipeline.flags link_time_optimization, retain_link_time_optimization_info: the device "
+        "lacks VK_EXT_graphics_pipeline_library");
+  if (p.deferred_threads) RAYSPEC_TRY_VOID(checkDeferred(d, validation_layer));
+  if (p.max_recursion > d.max_ray_recursion_depth)
+    return notSupported("max_recursion " + std::to_string(p.max_recursion) +
+                        " > device maxRayRecursionDepth " +
+                        std::to_string(d.max_ray_recursion_depth));
+  return {};
+}
+
 }  // namespace
 
 bool validationLayerKnows(uint32_t validation_layer, uint32_t since) {
@@ -186,24 +210,7 @@ Result<void> checkCaseSupport(const DeviceInfo& d, uint32_t validation_layer, co
         "(rayTracingInvocationReorder)");
   if (plan.ray_queries && !d.ray_query)
     return notSupported("ray_query statements: the device lacks VK_KHR_ray_query's rayQuery");
-  if (c.pipeline.record_layout.declared() && c.pipeline.record_layout.scalar &&
-      !d.scalar_block_layout)
-    return notSupported(
-        "pipeline.sbt.record_layout: a scalar shader record block needs scalarBlockLayout");
-  if (plan.cull_mask_builtin && !d.ray_tracing_maintenance1)
-    return notSupported(
-        "cull_mask: gl_CullMaskEXT needs VK_KHR_ray_tracing_maintenance1 (rayTracingMaintenance1)");
-  if (!c.pipeline.libraries.empty() && !d.pipeline_library)
-    return notSupported("pipeline.libraries: the device lacks VK_KHR_pipeline_library");
-  if ((c.pipeline.flags & kPipelineLinkTimeFlags) && !d.graphics_pipeline_library)
-    return notSupported(
-        "pipeline.flags link_time_optimization, retain_link_time_optimization_info: the device "
-        "lacks VK_EXT_graphics_pipeline_library");
-  if (c.pipeline.deferred_threads) RAYSPEC_TRY_VOID(checkDeferred(d, validation_layer));
-  if (c.pipeline.max_recursion > d.max_ray_recursion_depth)
-    return notSupported("max_recursion " + std::to_string(c.pipeline.max_recursion) +
-                        " > device maxRayRecursionDepth " +
-                        std::to_string(d.max_ray_recursion_depth));
+  RAYSPEC_TRY_VOID(checkPipelineObjects(d, validation_layer, c.pipeline, plan));
   RAYSPEC_TRY_VOID(checkLaunchSize(d, launch));
   RAYSPEC_TRY_VOID(checkVertexFormats(d, c.scene));
   if (launch_rays > d.max_ray_dispatch_invocation_count)
