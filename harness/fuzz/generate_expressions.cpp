@@ -13,7 +13,8 @@ namespace {
 
 // The Uint built-ins `stage` reads in the skeleton, but those that need a
 // device feature lavapipe lacks or a scene part the generator does not make
-// (the cull mask built-in, vertex positions, box data), computed once.
+// (the cull mask built-in, vertex positions, box data, hit objects), computed
+// once.
 const std::vector<std::string>& uintBuiltins(Stage stage) {
   static std::mutex mutex;
   static std::map<Stage, std::vector<std::string>> found;
@@ -23,7 +24,8 @@ const std::vector<std::string>& uintBuiltins(Stage stage) {
   using namespace builtin_needs;
   std::vector<std::string> names, skipped;
   for (const BuiltinInfo* b : readableBuiltins(stage, &skipped)) {
-    if (b->type != ValueType::Uint || (b->needs & (CullMask | PositionFetch | BoxData))) continue;
+    if (b->type != ValueType::Uint || (b->needs & (CullMask | PositionFetch | BoxData | HitObject)))
+      continue;
     names.push_back(builtinSpelling(builtinId(b), 0));  // payload.word<i>: word 0
   }
   return found.emplace(stage, std::move(names)).first->second;
