@@ -10,7 +10,9 @@
 # disagreement.) JOBS (default 2) cases at a time; RAYSPEC: the binary (build/rayspec).
 # FORMAT=amber: the Amber exports (repro.amber) instead, each run with $AMBER
 # (amber -v 1.2 -d: no validation layer) where AMBER names the binary, and
-# only counted where it does not.
+# only counted where it does not. PREBUILT=1: OUT holds an earlier run's
+# exports and builds (made here, carried to a GPU machine without a compiler):
+# each built reproducer is only run on DEVICE, against BASELINE.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 out=${1:?usage: export-agreement.sh OUT [DEVICE] [BASELINE]}
@@ -29,8 +31,16 @@ one_case() {
   dir="$out/${rel%.yaml}"
   family=${rel%%/*}
   mkdir -p "$dir"
-  "$rayspec" export "$file" --format "$format" --out "$dir" >"$dir/export.txt" 2>"$dir/refused.txt"
-  rc=$?
+  if [[ -n ${PREBUILT:-} ]]; then
+    # The exports and their builds of an earlier run (OUT carried to a machine
+    # without rayspec's build or a compiler): a refusal stays one, a built
+    # reproducer is only run.
+    rc=0
+    [[ -s "$dir/refused.txt" && ! -e "$dir/repro.c" ]] && rc=1
+  else
+    "$rayspec" export "$file" --format "$format" --out "$dir" >"$dir/export.txt" 2>"$dir/refused.txt"
+    rc=$?
+  fi
   if [[ $rc -ne 0 ]]; then
     reason=$(sed -n 's/.*export: case uses \(.*\), \(not yet exported\|which an Amber script cannot express\).*/\1/p' "$dir/refused.txt" | head -1)
     printf '%s\trefused\t%s\t%s\n' "$family" "$rel" "${reason:-exit $rc: $(head -1 "$dir/refused.txt")}"
@@ -52,7 +62,7 @@ one_case() {
     "$amber" -v 1.2 -d "$dir/repro.amber" >"$dir/run.txt" 2>&1
     got=$?
   else
-    if ! cc -std=c99 "$dir/repro.c" -lvulkan -o "$dir/repro" 2>"$dir/build.txt"; then
+    if [[ -z ${PREBUILT:-} ]] && ! cc -std=c99 "$dir/repro.c" -lvulkan -o "$dir/repro" 2>"$dir/build.txt"; then
       printf '%s\tbuild-error\t%s\t%s\n' "$family" "$name" "$(head -1 "$dir/build.txt")"
       return
     fi
