@@ -169,6 +169,25 @@ TEST(AimRays, InteriorFeaturesOfAGrid) {
   EXPECT_EQ(meshAimPoints(g, spec).size(), 24u);
 }
 
+// Faces alone (the edges and vertices not sorted out then) are the faces of
+// every feature, target for target, in the same order.
+TEST(AimRays, FacesAloneAreTheFacesOfEveryFeature) {
+  Geometry g;
+  makeTriangleGrid(8, 4, {8, 4}, {0, 0, 0}, g);
+  AimSpec all, faces;
+  faces.vertices = faces.edges = false;
+  const std::vector<AimTarget> every = meshAimTargets(g, all), alone = meshAimTargets(g, faces);
+  ASSERT_EQ(alone.size(), 64u);
+  ASSERT_GE(every.size(), alone.size());
+  for (size_t k = 0; k < alone.size(); ++k) {
+    const AimTarget& t = every[every.size() - alone.size() + k];
+    EXPECT_EQ(alone[k].feature, AimFeature::Face);
+    EXPECT_EQ(alone[k].feature, t.feature);
+    EXPECT_EQ(alone[k].primitives, t.primitives);
+    EXPECT_EQ(alone[k].object, t.object);
+  }
+}
+
 TEST(AimRays, ThroughTheInstanceTransform) {
   Scene s;
   Blas b;

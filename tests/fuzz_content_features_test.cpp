@@ -9,10 +9,10 @@
 namespace rayspec {
 namespace {
 
-// What the generator says it drew and what the text shows agree for every
-// feature the text shows: a generated case (classified by the generator's
-// features) and the same text saved and judged elsewhere (by its content)
-// fall in the same known class. 200 cases: about 1 s.
+// A generated case's features of these names are what its text shows (the
+// generator reads them from its text: one definition), so a generated case
+// and the same text saved and judged elsewhere fall in the same known class;
+// the generator draws each now and then. 200 cases: about 1 s.
 TEST(ContentFeatures, AgreeWithWhatTheGeneratorDrew) {
   std::map<std::string, size_t> seen;
   for (uint64_t seed = 0; seed < 200; ++seed) {

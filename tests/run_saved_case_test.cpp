@@ -6,7 +6,9 @@
 #include <filesystem>
 
 #include "bundle/results_io.h"
+#include "metamorphic/motion_spec.h"
 #include "model/model_engine.h"
+#include "parse/parse_case.h"
 #include "result_support.h"
 #include "run/case_as_run.h"
 #include "run/model_adapter.h"
@@ -85,6 +87,35 @@ TEST(CaseAsRun, APermutedCaseHasTheHashItsRunRecorded) {
   EXPECT_NE(permuted.runs->source_hash, c.source_hash);
   RunOptions none;
   EXPECT_EQ(caseAsRun(c, none).runs->source_hash, c.source_hash);
+}
+
+// A case --permute moves nothing in is not run under --permute alone (its
+// run would repeat the plain run), saying so; with --move it runs.
+TEST(CaseAsRun, ACaseNothingToPermuteInIsNotRunUnderPermuteAlone) {
+  const ParseResult p = parseCaseText(R"(rules: [R-ORDER-UNSPEC]
+scene:
+  blas:
+    t: [{triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}}]
+  instances: [{blas: t}]
+rays:
+  list: [{origin: [0.2, 0.2, 1], direction: [0, 0, -1]}]
+pipeline:
+  hit_groups: [{closest_hit: [record: [primitive_id]]}]
+outputs:
+  per_ray: [primitive_id]
+)",
+                                      "one.yaml", "one");
+  ASSERT_TRUE(p.value);
+  RunOptions opt;
+  opt.permute = 3;
+  const CaseAsRun alone = caseAsRun(*p.value, opt);
+  ASSERT_TRUE(alone.not_run);
+  EXPECT_FALSE(alone.runs);
+  EXPECT_EQ(alone.not_run->status, Status::NotSupported);
+  EXPECT_NE(alone.not_run->headline.find("moves nothing"), std::string::npos)
+      << alone.not_run->headline;
+  opt.move = *parseMotionSpec("-y,x,z");
+  EXPECT_TRUE(caseAsRun(*p.value, opt).runs);
 }
 
 TEST(SavedCase, TheVerdictIsWhatTheBundlesShow) {

@@ -18,13 +18,14 @@ Pos key(const Vec3& v) {
   return {v[0], v[1], v[2]};
 }
 
-}  // namespace
-
-std::vector<AimTarget> meshAimTargets(const Geometry& g, const AimSpec& spec) {
-  std::vector<AimTarget> out;
-  if (g.kind != Geometry::Kind::Triangles) return out;
+// The triangles without a NaN, each with its primitive index.
+struct MeshTriangles {
   std::vector<std::array<Vec3, 3>> tris;
-  std::vector<uint32_t> tri_ids;  // each triangle's primitive index
+  std::vector<uint32_t> ids;
+};
+
+MeshTriangles usableTriangles(const Geometry& g) {
+  MeshTriangles m;
   for (uint32_t p = 0; p < g.primitiveCount(); ++p) {
     std::array<Vec3, 3> t;
     bool ok = true;
@@ -34,12 +35,18 @@ std::vector<AimTarget> meshAimTargets(const Geometry& g, const AimSpec& spec) {
       for (float x : t[v]) ok = ok && !std::isnan(x);
     }
     if (ok) {
-      tris.push_back(t);
-      tri_ids.push_back(p);
+      m.tris.push_back(t);
+      m.ids.push_back(p);
     }
   }
-  // Edges by their two end positions (ordered), in order of first appearance,
-  // each with the triangles that have it; vertices likewise.
+  return m;
+}
+
+// The closed vertices and the points on shared edges, appended to `out`.
+// Edges by their two end positions (ordered), in order of first appearance,
+// each with the triangles that have it; vertices likewise.
+void vertexAndEdgeTargets(const MeshTriangles& m, const AimSpec& spec,
+                          std::vector<AimTarget>& out) {
   using EdgeKey = std::pair<Pos, Pos>;
   std::map<EdgeKey, std::vector<uint32_t>> edge_tris;
   std::vector<std::pair<Vec3, Vec3>> edges;
@@ -48,15 +55,15 @@ std::vector<AimTarget> meshAimTargets(const Geometry& g, const AimSpec& spec) {
   const auto edge_key = [](const Vec3& a, const Vec3& b) {
     return key(a) < key(b) ? std::make_pair(key(a), key(b)) : std::make_pair(key(b), key(a));
   };
-  for (size_t t = 0; t < tris.size(); ++t)
+  for (size_t t = 0; t < m.tris.size(); ++t)
     for (int e = 0; e < 3; ++e) {
-      const Vec3 &a = tris[t][e], &b = tris[t][(e + 1) % 3];
+      const Vec3 &a = m.tris[t][e], &b = m.tris[t][(e + 1) % 3];
       std::vector<uint32_t>& users = edge_tris[edge_key(a, b)];
       if (users.empty()) edges.push_back({a, b});
-      users.push_back(tri_ids[t]);
+      users.push_back(m.ids[t]);
       std::vector<uint32_t>& at = vertex_tris[key(a)];
       if (at.empty()) vertices.push_back(a);
-      if (at.empty() || at.back() != tri_ids[t]) at.push_back(tri_ids[t]);
+      if (at.empty() || at.back() != m.ids[t]) at.push_back(m.ids[t]);
     }
   auto shared = [&](const Vec3& a, const Vec3& b) {
     return edge_tris[edge_key(a, b)].size() == 2;
@@ -83,12 +90,23 @@ std::vector<AimTarget> meshAimTargets(const Geometry& g, const AimSpec& spec) {
         out.push_back({AimFeature::Edge, 0, 0, edge_tris[edge_key(a, b)], p, {}});
       }
     }
+}
+
+}  // namespace
+
+std::vector<AimTarget> meshAimTargets(const Geometry& g, const AimSpec& spec) {
+  std::vector<AimTarget> out;
+  if (g.kind != Geometry::Kind::Triangles) return out;
+  const MeshTriangles m = usableTriangles(g);
+  // The mesh's edges and vertices are sorted out only where they are aimed
+  // at (accel/size-triangles aims at the faces of 2^20 triangles alone).
+  if (spec.vertices || spec.edges) vertexAndEdgeTargets(m, spec, out);
   if (spec.faces)
-    for (size_t t = 0; t < tris.size(); ++t) {
+    for (size_t t = 0; t < m.tris.size(); ++t) {
       DVec3 p;
       for (int c = 0; c < 3; ++c)
-        p[c] = (double(tris[t][0][c]) + double(tris[t][1][c]) + double(tris[t][2][c])) / 3;
-      out.push_back({AimFeature::Face, 0, 0, {tri_ids[t]}, p, {}});
+        p[c] = (double(m.tris[t][0][c]) + double(m.tris[t][1][c]) + double(m.tris[t][2][c])) / 3;
+      out.push_back({AimFeature::Face, 0, 0, {m.ids[t]}, p, {}});
     }
   return out;
 }

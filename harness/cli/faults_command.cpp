@@ -1,4 +1,4 @@
-// `rayspec faults [--rule R-X]`: its options (mutate/fault_listing.h runs it).
+// `rayspec faults [--rule R-X] [--doc]`: its options (mutate/fault_listing.h runs it).
 #include <memory>
 
 #include "cli/subcommands.h"
@@ -14,6 +14,11 @@ Subcommand addFaultsCommand(CLI::App& app) {
   auto opt = std::make_shared<FaultsOptions>();
   faults->add_option("--rule", opt->rule, "Only this rule (R-NAME): its text and its faults");
   faults->add_option("--rules", opt->rules_file, "Rule catalog")->capture_default_str();
+  faults->add_flag("--doc", opt->doc,
+                   "Print --doc-file with its list of the planted faults made from the fault "
+                   "table (redirect it over the page)");
+  faults->add_option("--doc-file", opt->doc_file, "The page that lists the planted faults")
+      ->capture_default_str();
   return {faults, [opt] {
             return runFaults(*opt);
           }};

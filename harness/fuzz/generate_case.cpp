@@ -1,6 +1,7 @@
 #include "fuzz/generate_case.h"
 
 #include "fuzz/case_generator.h"
+#include "fuzz/content_features.h"
 
 namespace rayspec {
 
@@ -50,6 +51,9 @@ GeneratedCase generateCase(uint64_t seed, const GeneratorFeatures& allowed) {
   g.rays();
   g.pipeline();
   g.outputs();
+  // What the text shows is read from it (one definition: the known classes
+  // key on it, and a saved case is classified by it the same).
+  g.features().merge(contentFeatures(g.text()));
   return {seed, fuzzCaseName(seed), g.text(), g.features()};
 }
 

@@ -1,27 +1,10 @@
 // The parts of the generated programs: nested traces, calls, ray queries,
 // control flow and locals live across calls, any-hit decisions. Each is a
 // statement list without its brackets.
-#include "fuzz/content_features.h"
 #include "fuzz/program_generator.h"
 
 namespace rayspec {
 namespace {}  // namespace
-
-// Whether a closest-hit program reads, after its nested trace, a hit
-// built-in that lavapipe reads from the nested hit (a known class:
-// builtins/after-nested in references/baselines/lavapipe.csv;
-// fuzz/content_features.h nestedHitBuiltin): anything from the statement that
-// takes the nested payload on, a ray query's getters of the same names aside.
-bool ProgramGenerator::readsHitBuiltinAfterTrace(const std::string& program) {
-  const size_t after = program.find(kAfterNestedTrace);
-  if (after == std::string::npos) return false;
-  for (const BuiltinInfo& b : builtins())
-    if (nestedHitBuiltin(builtinId(&b)))
-      for (size_t at = program.find(b.name, after); at != std::string::npos;
-           at = program.find(b.name, at + 1))
-        if (at == 0 || program[at - 1] != '.') return true;
-  return false;
-}
 
 // A trace from closest-hit or miss, only below max_recursion (the depth
 // built-in decides, so no ray goes deeper: R-UB), from the ray's origin or

@@ -116,9 +116,7 @@ std::string ProgramGenerator::closestHitProgram(bool aabbs) {
   if (g_.chance(0.3)) p.push_back(controlFlow(Stage::ClosestHit));
   if (!inlined_ && g_.chance(0.1) && g_.allowed_.ray_query)
     p.push_back(rayQuery(Stage::ClosestHit));
-  const std::string text = program(p);
-  if (readsHitBuiltinAfterTrace(text)) feature("hit-builtin-after-trace");
-  return text;
+  return program(p);
 }
 
 // Counts, accumulates into payload.word0 (a sum or a set of bits: the same
@@ -204,7 +202,6 @@ std::string ProgramGenerator::hitGroups() {
     if (aabbs) add("intersection", intersectionProgram());
     if (g_.chance(0.65)) add("any_hit", anyHitProgram(aabbs));
     if (g_.chance(0.85)) add("closest_hit", closestHitProgram(aabbs));
-    if (group.empty()) empty_group_ = true;
     out += "    - {" + group + "}\n";
   }
   return out;
@@ -260,11 +257,6 @@ void ProgramGenerator::pipeline() {
   std::string miss = "  miss:\n";
   for (size_t m = 0; m < g_.miss_count_; ++m) miss += "    - " + missProgram() + "\n";
   const std::string hits = hitGroups();
-  // A known lavapipe class: a miss beside a hit of a group without shaders
-  // reads that hit's barycentrics as its world ray
-  // (references/driver-reports/lavapipe-miss-reads-neighbour-barycentrics.md).
-  if (empty_group_ && miss.find("world_ray_") != std::string::npos)
-    feature("miss-world-ray-beside-empty-group");
   const std::string raygen = "  raygen: " + raygenProgram() + "\n";
   g_.text() += header() + functions() + raygen + miss + hits;
   if (!callables.empty()) g_.text() += "  callables:\n" + callables;

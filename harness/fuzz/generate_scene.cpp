@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "case/inactive.h"
 #include "case/transform.h"
 #include "case/triangle_fan.h"
 #include "case/triangle_grid.h"
@@ -79,12 +78,6 @@ void CaseGenerator::explicitTriangles(Geometry& g) {
     out_ += "          indices: [" + idx + "]\n";
     if (chance(0.3)) out_ += "          index_type: uint16\n";
   }
-  // Only where a triangle goes through it (fuzz/content_features.h).
-  for (uint32_t t = 0; nan_vertex < vertices && t < triangles; ++t)
-    if (primitiveInactive(g, t)) {
-      features_.insert("nan-vertex");
-      break;
-    }
   out_ += format;
 }
 
@@ -148,10 +141,7 @@ void CaseGenerator::aabbGeometry(Geometry& g) {
   std::string b;
   for (size_t i = 0; i < boxes; ++i) {
     std::array<float, 6> box = drawBox();
-    if (chance(0.12)) {
-      features_.insert("nan-box");
-      box[0] = NAN;
-    }
+    if (chance(0.12)) box[0] = NAN;
     g.aabbs.push_back(box);
     std::string text;
     for (float v : box) text += (text.empty() ? "" : ", ") + num(v);
@@ -246,7 +236,6 @@ static uint64_t customIndex(CaseGenerator& g, std::set<std::string>& features) {
 
 void CaseGenerator::instance() {
   if (chance(0.06)) {
-    features_.insert("inactive-instance");
     out_ += "    - {blas: null}\n";
     instances_.emplace_back();
     return;

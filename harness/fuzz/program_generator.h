@@ -52,7 +52,6 @@ class ProgramGenerator {
   // The statement right after a nested trace (its payload folded in), up to
   // the local's name.
   static constexpr const char* kAfterNestedTrace = "{payload: {value: {add: [child.value, var.";
-  static bool readsHitBuiltinAfterTrace(const std::string& program);
 
   // Expressions (generate_expressions.cpp).
   std::string floatAtom(Stage stage);
@@ -77,7 +76,6 @@ class ProgramGenerator {
   bool uses_fold_ = false, uses_decide_ = false;  // the functions invoked
   bool accumulates_ = false;                      // any-hit counts in payload.word0
   bool colors_ = false;                           // a program writes payload.color
-  bool empty_group_ = false;                      // a hit group without shaders
 };
 
 }  // namespace rayspec

@@ -38,13 +38,20 @@ std::vector<uint32_t> anyPermutation(uint32_t n, std::mt19937_64& rng) {
   return v;
 }
 
-void permuteTriangles(Geometry& g, const std::vector<uint32_t>& old_of, std::mt19937_64& rng) {
+bool moved(const std::vector<uint32_t>& old_of) {
+  for (uint32_t i = 0; i < old_of.size(); ++i)
+    if (old_of[i] != i) return true;
+  return false;
+}
+
+// Whether the vertex buffer moved (an indexed geometry's is shuffled too).
+bool permuteTriangles(Geometry& g, const std::vector<uint32_t>& old_of, std::mt19937_64& rng) {
   const uint32_t n = static_cast<uint32_t>(old_of.size());
   if (g.indices.empty()) {
     const std::vector<Vec3> old = g.vertices;
     for (uint32_t p = 0; p < n; ++p)
       for (int k = 0; k < 3; ++k) g.vertices[p * 3 + k] = old[old_of[p] * 3 + k];
-    return;
+    return false;
   }
   const std::vector<uint32_t> old_indices = g.indices;
   for (uint32_t p = 0; p < n; ++p)
@@ -60,12 +67,7 @@ void permuteTriangles(Geometry& g, const std::vector<uint32_t>& old_of, std::mt1
     g.vertices[v] = old_vertices[vertex_old_of[v]];
   for (uint32_t& i : g.indices)
     if (i < vertex_new_of.size()) i = vertex_new_of[i];  // an index out of range stays out of range
-}
-
-bool moved(const std::vector<uint32_t>& old_of) {
-  for (uint32_t i = 0; i < old_of.size(); ++i)
-    if (old_of[i] != i) return true;
-  return false;
+  return moved(vertex_old_of);
 }
 
 }  // namespace
@@ -98,8 +100,8 @@ CasePermutation permuteCase(const Case& c, uint64_t seed) {
       if (g.kind == Geometry::Kind::Aabbs) {
         const auto old = g.aabbs;
         for (uint32_t p = 0; p < old_of.size(); ++p) g.aabbs[p] = old[old_of[p]];
-      } else {
-        permuteTriangles(g, old_of, rng);
+      } else if (permuteTriangles(g, old_of, rng)) {
+        out.vertices_moved = true;
       }
       out.primitive_of[b].push_back(old_of);
     }

@@ -30,8 +30,13 @@ struct CasePermutation {
   std::vector<uint32_t> instance_of;  // permuted instance index -> original
   // [blas][geometry][permuted primitive] -> original primitive
   std::vector<std::vector<std::vector<uint32_t>>> primitive_of;
+  bool vertices_moved = false;  // an indexed geometry's vertex buffer reordered
   bool primitivesMoved() const;
   bool instancesMoved() const;
+  // False: the permuted case is the case as written (each geometry of one
+  // primitive or its ids kept where a program observes them, one instance,
+  // or the seed's shuffle the identity), so a run of it repeats the plain run.
+  bool movedAnything() const { return primitivesMoved() || instancesMoved() || vertices_moved; }
 };
 
 CasePermutation permuteCase(const Case& c, uint64_t seed);

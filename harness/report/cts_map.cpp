@@ -6,6 +6,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "base/generated_part.h"
 #include "base/whole_file.h"
 #include "parse/yaml_shape.h"
 
@@ -291,13 +292,8 @@ Result<std::string> ctsMapDocument(const std::string& doc, const std::vector<Cts
                                    const std::vector<std::string>& sections) {
   std::string out = doc;
   for (size_t i = 0; i < lists.size() && i < sections.size(); ++i) {
-    const std::string begin = ctsSectionBegin(lists[i]), end = ctsSectionEnd(lists[i]);
-    const size_t b = out.find(begin);
-    const size_t e = b == std::string::npos ? b : out.find(end, b);
-    if (e == std::string::npos)
-      return errorMessage("the document lacks the lines " + begin + " and " + end);
-    const size_t from = b + begin.size();
-    out.replace(from, e - from, "\n" + sections[i]);
+    RAYSPEC_TRY(out, withGeneratedPart(out, ctsSectionBegin(lists[i]), ctsSectionEnd(lists[i]),
+                                       sections[i]));
   }
   return out;
 }

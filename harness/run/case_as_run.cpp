@@ -48,11 +48,36 @@ Result<void> variantPart(const std::string& part, RunOptions& opt) {
   return {};
 }
 
+// The case permuted as --permute asks; in place of it, when the permutation
+// moves nothing and no other part of the variant changes the case, the
+// NotSupported outcome saying so: the run would repeat the plain run's, and
+// its verdict cannot move (builtins/launch-wide: one triangle, 4M ids).
+CaseAsRun permutedCase(const Case& parsed, const RunOptions& opt) {
+  CaseAsRun out;
+  CasePermutation p = permuteCase(parsed, *opt.permute);
+  if (p.movedAnything() || opt.move || opt.through) {
+    out.runs = std::move(p.permuted);
+    return out;
+  }
+  out.not_run = notRunOutcome(
+      parsed.name, "permute",
+      "not run: --permute " + std::to_string(*opt.permute) +
+          " moves nothing in this case (each geometry's primitives, its vertices and the "
+          "instances keep their order: one of each, ids its programs observe exactly, or the "
+          "seed's shuffle leaves them), so the permuted case is the case as written",
+      "not run under --permute: nothing to permute");
+  return out;
+}
+
 }  // namespace
 
 CaseAsRun caseAsRun(const Case& parsed, const RunOptions& opt) {
   CaseAsRun out;
-  Case c = opt.permute ? permuteCase(parsed, *opt.permute).permuted : parsed;
+  if (opt.permute) {
+    out = permutedCase(parsed, opt);
+    if (out.not_run) return out;
+  }
+  Case c = opt.permute ? std::move(*out.runs) : parsed;
   if (opt.move) {
     Result<Case> moved = moveCase(c, *opt.move, MoveScope::Verdict);
     if (!moved) {
