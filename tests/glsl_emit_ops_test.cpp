@@ -51,6 +51,13 @@ TEST(EmitOps, SizedLiteralsAndConversions) {
   big.type = ValueType::Uint64;
   big.literal = {1099511627776.0};
   EXPECT_EQ(emitExpr(big, ctx), "uint64_t(1099511627776ul)");
+  Expr wide = big;  // over 2^53: as written (Expr::wide), not as its double
+  wide.literal = {18446744047939747845.0};
+  wide.wide = 18446744047939747845ull;
+  EXPECT_EQ(emitExpr(wide, ctx), "uint64_t(18446744047939747845ul)");
+  wide.type = ValueType::Int64;
+  wide.wide = 0x7FFFFFFFFFFFFFFDull;
+  EXPECT_EQ(emitExpr(wide, ctx), "int64_t(9223372036854775805ul)");
   Expr d = big;
   d.type = ValueType::Float64;
   d.literal = {0.1};

@@ -29,6 +29,25 @@ Case sizedCase(const std::string& raygen) {
       "  per_ray: [value, value1, value2]\n");
 }
 
+// A case whose raygen records @V@ (to replace) as value: line 12.
+std::string sizedCaseTextForErrors() {
+  return "rules: [R-LIVE-STATE]\n"
+         "scene:\n"
+         "  blas:\n"
+         "    t: [{triangles: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}}]\n"
+         "  instances: [{blas: t}]\n"
+         "rays:\n"
+         "  grid: {size: [2, 1], origin: [10, 10, 1], du: [1, 0, 0], dv: [0, 1, 0], "
+         "direction: [0, 0, -1]}\n"
+         "pipeline:\n"
+         "  miss: [[payload: {value: 5}]]\n"
+         "  hit_groups: [{closest_hit: [payload: {value: 6}]}]\n"
+         "  raygen:\n"
+         "    - record: {value: @V@}\n"
+         "outputs:\n"
+         "  per_ray: [value]\n";
+}
+
 using Pair = std::vector<uint32_t>;
 V sizedValues(const Results& r, const char* field) {
   return {word(r, 0, field), word(r, 1, field)};
@@ -46,6 +65,52 @@ TEST(ModelSizedOps, IntegersWrapAndConvertByTheirSignedness) {
             (Pair{static_cast<uint32_t>(-44), static_cast<uint32_t>(-41)}));
   EXPECT_EQ(sizedValues(r, "value1"), (Pair{1, 2}));  // (2^32 - 1) * 2 = 2^33 - 2
   EXPECT_EQ(sizedValues(r, "value2"), (Pair{0xFFFFFFFEu, 0xFFFFFFFDu}));
+}
+
+// Integer literals over 32 bits (Expr::wide) are exact in int64 and uint64
+// places, beyond the 2^53 a double holds.
+TEST(ModelSizedOps, WideLiteralsAreExactIn64BitPlaces) {
+  const Case c = sizedCase(
+      "    - let: {u: {add: [{uint64: launch_id_x}, 18446744073709551615]}}\n"
+      "    - let: {i: {add: [{int64: launch_id_x}, 0x7FFFFFFFFFFFFFFD]}}\n"
+      "    - record: {value: {high: var.u}, value1: {uint: var.u}, value2: {uint: var.i}}\n");
+  const Results r = runTier(c, ModelTier::Fast);
+  ASSERT_TRUE(r.ok()) << r.status_detail;
+  EXPECT_EQ(sizedValues(r, "value"), (Pair{0xFFFFFFFFu, 0}));   // 2^64 - 1, then 0
+  EXPECT_EQ(sizedValues(r, "value1"), (Pair{0xFFFFFFFFu, 0}));  // the low bits a double loses
+  EXPECT_EQ(sizedValues(r, "value2"), (Pair{0xFFFFFFFDu, 0xFFFFFFFEu}));
+}
+
+// Elsewhere a literal over 32 bits is an error naming its line and field.
+TEST(ModelSizedOps, AWideLiteralOutsideA64BitPlaceIsAnErrorAtItsField) {
+  const std::string text = sizedCaseTextForErrors();
+  EXPECT_NE(firstErrorAfter(text, "@V@", "{add: [launch_id_x, 4294967296]}")
+                .find("integer literal 4294967296 does not fit in 32 bits: only an int64 or "
+                      "uint64 value takes one (here Uint)"),
+            std::string::npos);
+  EXPECT_NE(firstErrorAfter(text, "@V@", "{uint: {add: [{int8: 1}, 4294967296]}}")
+                .find("does not fit in 32 bits"),
+            std::string::npos);
+  EXPECT_NE(firstErrorAfter(text, "@V@", "{uint: {add: [{int64: 1}, 9223372036854775808]}}")
+                .find("out of range 0..9223372036854775807"),
+            std::string::npos);
+  EXPECT_EQ(firstErrorAfter(text, "@V@", "{high: {add: [{uint64: 1}, 9223372036854775808]}}"),
+            "(no error)");
+  EXPECT_EQ(firstErrorAfter(std::string(text).replace(text.find("@V@"), 3, "1"), "  raygen:\n",
+                            "  constants: {k: 4294967296}\n  raygen:\n"),
+            "pipeline.constants.k: integer literal 4294967296 does not fit in 32 bits");
+  const ParseResult p = parseCaseText(
+      [&] {
+        std::string t = text;
+        t.replace(t.find("@V@"), 3, "{uint: {mul: [{float: launch_id_x}, 5000000000]}}");
+        return t;
+      }(),
+      "model/inline.yaml", "model/inline");
+  ASSERT_FALSE(p.errors.empty());
+  EXPECT_EQ(p.errors[0].loc.file, "model/inline.yaml");
+  EXPECT_EQ(p.errors[0].loc.line, 12);
+  EXPECT_NE(p.errors[0].loc.field.find("pipeline.raygen"), std::string::npos)
+      << p.errors[0].loc.field;
 }
 
 TEST(ModelSizedOps, Float64KeepsWhatFloatLoses) {

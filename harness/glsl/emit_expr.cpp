@@ -28,6 +28,11 @@ std::string sizedLiteral(ValueType t, double v) {
                : glslUint(static_cast<uint32_t>(v))) +
          ")";
 }
+// An int64's or uint64's literal over 32 bits (Expr::wide), exactly.
+std::string sizedLiteral(const Expr& e) {
+  if (!e.wide) return sizedLiteral(e.type, e.literal[0]);
+  return std::string(valueTypeGlsl(e.type)) + "(" + std::to_string(e.wide) + "ul)";
+}
 
 std::string literal(const Expr& e) {
   if (e.literal.empty()) return problem("empty literal");
@@ -48,7 +53,7 @@ std::string literal(const Expr& e) {
     case ValueType::Vec4:
       return "vec4(" + f(0) + ", " + f(1) + ", " + f(2) + ", " + f(3) + ")";
     default:
-      return sizedLiteral(e.type, e.literal[0]);
+      return sizedLiteral(e);
   }
 }
 

@@ -14,10 +14,12 @@ namespace rayspec {
 
 namespace {
 
-// A sized scalar's literal (the checker held it to its type's values).
-Val sizedLiteral(ValueType t, double v) {
-  if (isSizedFloat(t)) return fromSizedDouble(t, v);
-  return fromSized(t, wrapToType(t, static_cast<uint64_t>(v)));
+// A sized scalar's literal (the checker held it to its type's values; one
+// over 32 bits, an int64's or uint64's, exactly as written: Expr::wide).
+Val sizedLiteral(const Expr& e) {
+  const double v = e.literal.empty() ? 0 : e.literal[0];
+  if (isSizedFloat(e.type)) return fromSizedDouble(e.type, v);
+  return fromSized(e.type, wrapToType(e.type, e.wide ? e.wide : static_cast<uint64_t>(v)));
 }
 
 // The built-ins a hit on a triangle the ray runs in the plane of leaves free
@@ -128,7 +130,7 @@ struct Compiler {
         break;
       case Expr::Kind::Literal:
         if (isSized(e.type))
-          r.literal = sizedLiteral(e.type, e.literal.empty() ? 0 : e.literal[0]);
+          r.literal = sizedLiteral(e);
         else if (e.type == ValueType::Uint)
           r.literal.u = static_cast<uint32_t>(e.literal.empty() ? 0 : e.literal[0]);
         else if (e.type == ValueType::Bool)

@@ -18,6 +18,10 @@ std::optional<SpecConstant> constantLiteral(YamlReader& r, const YAML::Node& n,
     r.error(n, field, "a constant is true, false or a number");
     return std::nullopt;
   }
+  if (e.wide) {  // a constant is 32 bits wide (bool, uint or float)
+    r.error(n, field, "integer literal " + n.Scalar() + " does not fit in 32 bits");
+    return std::nullopt;
+  }
   SpecConstant k;
   k.type = e.type;
   k.value = e.literal[0];

@@ -37,8 +37,10 @@ bool parseScalarExpr(YamlReader& r, const YAML::Node& n, const std::string& fiel
     return true;
   }
   if (uint64_t u = 0; isPlainScalar(n) && parseUintText(s, u) && u > 0xFFFFFFFFull) {
-    r.error(n, field, "integer literal " + s + " does not fit in 32 bits");
-    return false;
+    out.type = ValueType::Uint;  // the type checker holds it to an int64 or uint64 place
+    out.literal = {static_cast<double>(u)};
+    out.wide = u;
+    return true;
   }
   if (numberLiteral(n, out)) return true;
   if (s.rfind("var.", 0) == 0) {  // a local variable (program/locals.h)

@@ -18,4 +18,8 @@ std::optional<ProgramError> checkExprAs(Expr& e, Stage stage, ValueType want,
                                         const std::string& what,
                                         const LocalScope* locals = nullptr);
 
+// After typing: an integer literal over 32 bits (Expr::wide) that did not
+// become an int64 (below 2^63) or uint64 value is an error at its place.
+std::optional<ProgramError> checkWideLiterals(const Program& p);
+
 }  // namespace rayspec

@@ -595,6 +595,7 @@ std::optional<ProgramError> checkProgram(Program& p, Stage stage,
   std::optional<ProgramError> error =
       Checker(stage, counters, per_ray_fields, constants, record_layout, interface_uses).block(p);
   if (!error) error = checkBitCasts(p, stage);  // exactness claims: after typing
+  if (!error) error = checkWideLiterals(p);     // a literal over 32 bits: in a 64-bit place
   return error;
 }
 

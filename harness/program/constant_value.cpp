@@ -7,7 +7,7 @@ namespace rayspec {
 std::optional<uint32_t> constantUint(const Expr& e) {
   if (e.type != ValueType::Uint) return std::nullopt;
   if (e.kind == Expr::Kind::Literal) {
-    if (e.literal.size() != 1) return std::nullopt;
+    if (e.literal.size() != 1 || e.wide) return std::nullopt;  // over 32 bits: no Uint
     return static_cast<uint32_t>(e.literal[0]);
   }
   if (e.kind != Expr::Kind::Op || e.args.size() != 2) return std::nullopt;

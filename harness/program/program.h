@@ -103,14 +103,17 @@ struct Expr {
   Kind kind = Kind::Literal;
   ValueType type = ValueType::Uint;  // filled by the type checker
   std::vector<double> literal;       // Literal: 1..4 components
-  std::string name;                  // Builtin or Op: its spelling (for messages)
-  Op op = Op::None;                  // Op: the operator the name spells, resolved once by
-                                     // the parser (or opExpr / setOp in program/ops.h)
-  Builtin builtin = kBiUnknown;      // Builtin: the row the name reads, resolved once by
-                                     // the parser (or builtinExpr / setBuiltin in
-                                     // program/builtins.h)
-  uint32_t word = 0;                 // Builtin of a word<i> family (payload.word3): i
-  std::vector<Expr> args;            // Op arguments
+  // Literal: an integer over 32 bits written in the case, exactly (literal[0]
+  // holds it rounded); only an int64 or uint64 place takes one. 0: none.
+  uint64_t wide = 0;
+  std::string name;              // Builtin or Op: its spelling (for messages)
+  Op op = Op::None;              // Op: the operator the name spells, resolved once by
+                                 // the parser (or opExpr / setOp in program/ops.h)
+  Builtin builtin = kBiUnknown;  // Builtin: the row the name reads, resolved once by
+                                 // the parser (or builtinExpr / setBuiltin in
+                                 // program/builtins.h)
+  uint32_t word = 0;             // Builtin of a word<i> family (payload.word3): i
+  std::vector<Expr> args;        // Op arguments
   SourceLoc loc;
 };
 

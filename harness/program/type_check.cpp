@@ -10,6 +10,7 @@
 #include "program/constant_value.h"
 #include "program/ops.h"
 #include "program/sized_values.h"
+#include "program/walk_program.h"
 
 namespace rayspec {
 namespace {
@@ -88,11 +89,26 @@ std::string sizedLiteralProblem(ValueType t, double v) {
   return "";
 }
 
+// An integer literal over 32 bits (Expr::wide): "" where its place is an
+// int64 (below 2^63) or a uint64, else why not.
+std::string wideLiteralProblem(const Expr& e) {
+  const std::string what = "integer literal " + std::to_string(e.wide);
+  if (e.type == ValueType::Uint64) return "";
+  if (e.type == ValueType::Int64)
+    return e.wide >> 63 ? what + " out of range 0..9223372036854775807 (Int64)" : "";
+  return what + " does not fit in 32 bits: only an int64 or uint64 value takes one (here " +
+         valueTypeName(e.type) + ")";
+}
+
 std::optional<ProgramError> checkLiteral(Expr& e) {
   const size_t n = e.literal.size();
   if (n < 1 || n > 4 || static_cast<size_t>(componentCount(e.type)) != n)
     return err(e, "malformed literal (" + std::to_string(n) + " components, type " +
                       valueTypeName(e.type) + ")");
+  if (e.wide) {  // still Uint: its place may make it a 64-bit one (checkWideLiterals)
+    const std::string why = e.type == ValueType::Uint ? "" : wideLiteralProblem(e);
+    return why.empty() ? std::nullopt : std::optional<ProgramError>(err(e, why));
+  }
   if (e.type == ValueType::Uint) {
     double v = e.literal[0];
     if (!(v >= 0 && v <= 4294967295.0) || v != std::floor(v))
@@ -514,6 +530,15 @@ std::optional<ProgramError> checkExprAs(Expr& e, Stage stage, ValueType want,
   if (e.type != want)
     return err(e, what + ": expected " + valueTypeName(want) + ", got " + valueTypeName(e.type));
   return std::nullopt;
+}
+
+std::optional<ProgramError> checkWideLiterals(const Program& p) {
+  std::optional<ProgramError> first;
+  walkExpressions(p, [&](const Expr& e) {
+    if (first || e.kind != Expr::Kind::Literal || !e.wide) return;
+    if (const std::string why = wideLiteralProblem(e); !why.empty()) first = err(e, why);
+  });
+  return first;
 }
 
 Result<void> typeCheck(Expr& e, Stage stage) {
