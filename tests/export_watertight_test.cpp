@@ -74,6 +74,30 @@ TEST(ExportWatertight, SharedEdgesPassAndLegalAnswersOnTheWrongTriangleFail) {
   EXPECT_NE(p.output.find("field 'primitive_id'"), std::string::npos) << p.output;
 }
 
+TEST(ExportWatertight, ARecordTheJudgeWarnsOfWarnsNotFails) {
+  // lavapipe leaks nowhere; so the model is planted: on the first edge or
+  // vertex ray with leak replays, its legal answers and its leaks trade
+  // places (their counter moves 0). lavapipe's record, a legal answer, is
+  // then one the judge reads as a pass between triangles (a QualityWarning,
+  // as AmbiguousRecordJudge says): the file warns of that ray and exits 0.
+  const ExportCase l = loadExportCase("watertight/shared-edges");
+  Results model = exportModelOf(l);
+  const auto it = std::find_if(
+      model.ambiguous.begin(), model.ambiguous.end(),
+      [](const RayAmbiguity& a) { return onEdgeOrVertex(a) && !a.leak_replays.empty(); });
+  ASSERT_NE(it, model.ambiguous.end());
+  std::swap(it->replays, it->leak_replays);
+  for (LegalReplay& r : it->replays) r.counter_moves.clear();
+  const Played p = exportAndPlay(l, model, "shared-edges-traded");
+  EXPECT_EQ(p.status, 0) << p.output;
+  EXPECT_NE(p.output.find("WARNING: ray " + std::to_string(it->ray) +
+                          " (numerically ambiguous: " + ambiguityReasonName(it->reason) +
+                          "): R-WATERTIGHT: ray on a shared edge or vertex"),
+            std::string::npos)
+      << p.output;
+  EXPECT_NE(p.output.find("QualityWarning: R-WATERTIGHT: 1 rays"), std::string::npos) << p.output;
+}
+
 TEST(ExportWatertight, AFreeFieldIsWidenedByTheCarriedBoundAsTheJudgeWidensIt) {
   // callable/data-flow carries hit_position and hit_t into a colour. A ray
   // given a t bound of 0.01 (planted in the model): its colour the judge
