@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <map>
+#include <optional>
 
 #include "compare/compare_parts.h"
 #include "compare/finding_rules.h"
@@ -142,6 +143,17 @@ void compareAnyHitRepeats(const Case& c, const Results& device, const std::set<u
 
 }  // namespace
 
+std::optional<uint32_t> watertightAnyHitLimit(const Case& c, const RayAmbiguity& a,
+                                              const uint32_t* m) {
+  if (!allNoDuplicateTriangles(c) || fieldWord(m, "closest_hit_runs") != 0 ||
+      fieldWord(m, "intersection_runs") != 0)
+    return std::nullopt;
+  const uint32_t runs = fieldWord(m, "any_hit_runs");
+  const SharedCrossing s = anyHitCrossing(c, a, runs);
+  if (!s.triangles) return std::nullopt;
+  return runs + 1 - s.model_hits;
+}
+
 void compareAnyHitRuns(const Case& c, const Results& device, const Results& model,
                        const std::set<uint32_t>& undefined, Verdict& v) {
   if (device.records.size() != model.records.size()) return;
@@ -157,15 +169,8 @@ void compareAnyHitRuns(const Case& c, const Results& device, const Results& mode
                  chit = findRecordField("closest_hit_runs")->offset,
                  isect = findRecordField("intersection_runs")->offset;
   const auto ambiguous = ambiguityByRay(model);
-  // A double hit (R-WATERTIGHT, a "should"): on a ray through a shared edge
-  // or vertex whose candidates were all ignored, the model ran any-hit once
-  // for each of the h triangles sharing it that it decided as hits (one
-  // where the mesh is closed); a watertight device runs it for one of them,
-  // so at most (model - (h - 1)) times in all.
   FindingBuilder doubled;
-  doubled.finding = {
-      Status::QualityWarning, "R-WATERTIGHT",
-      "double hit: any-hit ran for more than one of the triangles sharing an edge or vertex"};
+  doubled.finding = {Status::QualityWarning, "R-WATERTIGHT", kAnyHitDoubleHit};
   FindingBuilder b;
   b.finding = findingOf(Status::Fail, primitiveRunsRule(c, "R-AHIT-DUP"),
                         "any-hit ran more often than once per primitive the ray crosses "
@@ -176,11 +181,8 @@ void compareAnyHitRuns(const Case& c, const Results& device, const Results& mode
     const uint32_t* m = &model.records[i * words];
     if (m[chit] != 0 || m[isect] != 0 || undefined.count(static_cast<uint32_t>(i))) continue;
     if (const auto it = ambiguous.find(static_cast<uint32_t>(i)); it != ambiguous.end()) {
-      // Only where the triangles really share the edge, or close a fan around
-      // the vertex: on the outer border of a mesh hitting two is no rule's break.
-      const SharedCrossing s = anyHitCrossing(c, *it->second, m[ahit]);
-      if (s.triangles && d[ahit] + s.model_hits > m[ahit] + 1)
-        doubled.addRay(static_cast<uint32_t>(i));
+      const std::optional<uint32_t> most = watertightAnyHitLimit(c, *it->second, m);
+      if (most && d[ahit] > *most) doubled.addRay(static_cast<uint32_t>(i));
       continue;
     }
     ++checked;

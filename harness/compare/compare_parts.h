@@ -2,6 +2,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <set>
 
 #include "compare/compare_results.h"
@@ -82,7 +83,17 @@ class ModelRayBounds {
   std::map<uint32_t, float> t_, origin_, position_;
   bool carries_;
 };
-// A float field's tolerance on one ray: its own, widened to the ray's bounds.
+// Which of a ray's bounds widens a field's tolerance (fieldTolerance): its
+// FieldBound's (hit_t and ray_tmax: t, object_ray_origin: the origin's,
+// hit_position: the position's), the carried one for a free field (which
+// no other bound widens), none for the rest. The C export embeds each
+// ray's bounds in this order (export/expectations_section.cpp).
+enum class RayBoundSlot { None, T, ObjectOrigin, Position, Carried };
+RayBoundSlot boundSlotOf(const RecordField& f);
+// The bound of `bounds` in slot s; 0 for None.
+float boundIn(const RayBounds& bounds, RayBoundSlot s);
+// A float field's tolerance on one ray: its own, its abs widened to the
+// ray's bound in the field's slot.
 Tolerance fieldTolerance(const RecordField& f, const RayBounds& bounds);
 // One field of one ray as the model has it: written alike, and equal (floats
 // within the field's tolerance, widened to the ray's bounds).
@@ -128,6 +139,40 @@ struct FindingBuilder {
     if (finding.ray_count) v.add(finding);
   }
 };
+
+// What the judge makes of one ambiguous ray's record `d` alone, as
+// compareRecords judges it among the case's rays (the C export asks it of
+// each answer it embeds, export/expectations_section.cpp): status Pass where
+// it breaks no rule, else the finding (a Fail, or R-WATERTIGHT's
+// QualityWarning: a leak, a pass between triangles, a double hit) with the
+// ray alone. `m`: the model's record of the ray.
+class AmbiguousRecordJudge {
+ public:
+  AmbiguousRecordJudge(const Case& c, const Plan& plan);
+  Finding judge(const RayAmbiguity& a, const uint32_t* d, const uint32_t* m,
+                const RayBounds& bounds) const;
+
+ private:
+  const Case& c_;
+  const TraceShape shape_;
+  const std::optional<std::set<std::string>> query_reached_;
+  const std::vector<const RecordField*> fields_;
+};
+
+// A double hit told by any-hit runs (R-WATERTIGHT, a "should";
+// compareAnyHitRuns): on a ray through a shared edge or vertex whose
+// candidates were all ignored (the model's record m ran no closest-hit nor
+// intersection), in a scene of NO_DUPLICATE_ANY_HIT triangles only, the
+// model ran any-hit once for each of the h triangles sharing it that it
+// decided as hits (one where the mesh is closed); a watertight device runs
+// it for one of them, so at most (model - (h - 1)) times in all: that most,
+// or nullopt where the ray is not judged so (only where the triangles
+// really share the edge, or close a fan around the vertex: on the outer
+// border of a mesh hitting two is no rule's break).
+std::optional<uint32_t> watertightAnyHitLimit(const Case& c, const RayAmbiguity& a,
+                                              const uint32_t* m);
+inline constexpr const char* kAnyHitDoubleHit =
+    "double hit: any-hit ran for more than one of the triangles sharing an edge or vertex";
 
 // What every legal answer of an ambiguous ray shares (trace_shape.h), each
 // broken rule into `wrongs` by rule: raygen ran once; with one trace per ray

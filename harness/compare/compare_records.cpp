@@ -222,7 +222,37 @@ void judgeAmbiguousRay(const AmbiguousJudge& j, const RayAmbiguity& a, const uin
     checkQueryUnreached(j.c, *j.query_reached, a, d, m, j.fields, bounds, j.wrongs);
 }
 
+// R-WATERTIGHT's three findings, one builder each.
+struct WatertightFindings {
+  FindingBuilder leak =
+      watertightWarning("ray on a shared edge or vertex leaked (missed every candidate)");
+  FindingBuilder passed = watertightWarning(
+      "ray on a shared edge or vertex passed between its triangles and hit what lies behind them");
+  FindingBuilder doubled = watertightWarning(
+      "double hit: any-hit ran on several of the triangles closing around a shared edge or vertex "
+      "(the record is what the model leaves running their any-hits so)");
+};
+
 }  // namespace
+
+AmbiguousRecordJudge::AmbiguousRecordJudge(const Case& c, const Plan& plan)
+    : c_(c),
+      shape_(traceShape(c)),
+      query_reached_(queryReachedFields(c)),
+      fields_(comparedRecordFields(plan)) {}
+
+Finding AmbiguousRecordJudge::judge(const RayAmbiguity& a, const uint32_t* d, const uint32_t* m,
+                                    const RayBounds& bounds) const {
+  std::map<std::string, FindingBuilder> wrongs;
+  WatertightFindings w;
+  const AmbiguousJudge j{c_, shape_, query_reached_, fields_, wrongs, w.leak, w.passed, w.doubled};
+  judgeAmbiguousRay(j, a, d, m, bounds);
+  for (const auto& [key, b] : wrongs)
+    if (b.finding.ray_count) return b.finding;
+  for (const FindingBuilder* b : {&w.leak, &w.passed, &w.doubled})
+    if (b->finding.ray_count) return b->finding;
+  return {Status::Pass, "", "", {}, 0, {}};
+}
 
 void compareRecords(const Case& c, const Plan& plan, const Results& device, const Results& model,
                     const std::set<uint32_t>& undefined, Verdict& v) {
@@ -239,15 +269,9 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
 
   std::map<std::string, FindingBuilder> mismatches;
   std::map<std::string, FindingBuilder> wrongs;
-  FindingBuilder leak =
-      watertightWarning("ray on a shared edge or vertex leaked (missed every candidate)");
-  FindingBuilder passed = watertightWarning(
-      "ray on a shared edge or vertex passed between its triangles and hit what lies behind them");
-  FindingBuilder doubled = watertightWarning(
-      "double hit: any-hit ran on several of the triangles closing around a shared edge or vertex "
-      "(the record is what the model leaves running their any-hits so)");
-  const AmbiguousJudge judge{c,      traceShape(c), queryReachedFields(c), fields, wrongs, leak,
-                             passed, doubled};
+  WatertightFindings w;
+  const AmbiguousJudge judge{c,        traceShape(c), queryReachedFields(c), fields, wrongs, w.leak,
+                             w.passed, w.doubled};
 
   for (size_t i = 0; i < rays; ++i) {
     const uint32_t* d = &device.records[i * words];
@@ -274,9 +298,9 @@ void compareRecords(const Case& c, const Plan& plan, const Results& device, cons
   }
   for (auto& [name, b] : mismatches) b.flush(v);
   for (auto& [rule, b] : wrongs) b.flush(v);
-  leak.flush(v);
-  passed.flush(v);
-  doubled.flush(v);
+  w.leak.flush(v);
+  w.passed.flush(v);
+  w.doubled.flush(v);
   if (!ambiguous.empty()) {
     Finding note{Status::Pass, "R-PREC",
                  std::to_string(ambiguous.size()) +

@@ -32,22 +32,18 @@ float tBound(const std::map<uint32_t, float>& t_bounds, uint32_t ray) {
 
 namespace {
 
-// Each field's tolerance by field index, and which of the model's bounds
-// widens it (hit_t, ray_tmax: t; object_ray_origin; hit_position: t's bound
-// carried through the direction): looked up once, not per ray.
+// Each field's tolerance by field index, and which of the ray's bounds
+// widens it: looked up once, not per ray.
 struct FieldTolerance {
   Tolerance tol;
-  bool widened_by_t_bound;
-  bool widened_by_origin_bound;
-  bool widened_by_position_bound;
+  RayBoundSlot slot;
 };
 
 const std::vector<FieldTolerance>& fieldTolerances() {
   static const std::vector<FieldTolerance> table = [] {
     std::vector<FieldTolerance> t;
     for (const RecordField& f : recordFields())
-      t.push_back({toleranceOf(f.tolerance), f.bound == FieldBound::TBound,
-                   f.bound == FieldBound::OriginBound, f.bound == FieldBound::PositionBound});
+      t.push_back({toleranceOf(f.tolerance), boundSlotOf(f)});
     return t;
   }();
   return table;
@@ -55,15 +51,40 @@ const std::vector<FieldTolerance>& fieldTolerances() {
 
 }  // namespace
 
+RayBoundSlot boundSlotOf(const RecordField& f) {
+  switch (f.bound) {
+    case FieldBound::TBound:
+      return RayBoundSlot::T;
+    case FieldBound::OriginBound:
+      return RayBoundSlot::ObjectOrigin;
+    case FieldBound::PositionBound:
+      return RayBoundSlot::Position;
+    case FieldBound::NoBound:
+      break;
+  }
+  return f.kind == FieldKind::Free ? RayBoundSlot::Carried : RayBoundSlot::None;
+}
+
+float boundIn(const RayBounds& bounds, RayBoundSlot s) {
+  switch (s) {
+    case RayBoundSlot::T:
+      return bounds.t;
+    case RayBoundSlot::ObjectOrigin:
+      return bounds.object_origin;
+    case RayBoundSlot::Position:
+      return bounds.position;
+    case RayBoundSlot::Carried:
+      return bounds.carried;
+    case RayBoundSlot::None:
+      break;
+  }
+  return 0;
+}
+
 Tolerance fieldTolerance(const RecordField& f, const RayBounds& bounds) {
   const FieldTolerance& ft = fieldTolerances()[f.index];
   Tolerance tol = ft.tol;
-  if (ft.widened_by_t_bound) tol.abs = std::max(tol.abs, static_cast<double>(bounds.t));
-  if (ft.widened_by_origin_bound)
-    tol.abs = std::max(tol.abs, static_cast<double>(bounds.object_origin));
-  if (ft.widened_by_position_bound)
-    tol.abs = std::max(tol.abs, static_cast<double>(bounds.position));
-  if (f.kind == FieldKind::Free) tol.abs = std::max(tol.abs, static_cast<double>(bounds.carried));
+  tol.abs = std::max(tol.abs, static_cast<double>(boundIn(bounds, ft.slot)));
   return tol;
 }
 

@@ -44,9 +44,12 @@ std::string header(const Case& c, LayoutFault layout) {
          kReproducerRunLine +
          "   (DEVICE: an index, or a part of the device's name;\n"
          " *        default: the first device with VK_KHR_ray_tracing_pipeline)\n"
-         " * Exit:  0 PASS; 1 FAIL, printing the rule, the ray, the field, the expected and\n"
-         " *        the observed value; 77 NotSupported, naming the missing feature;\n"
-         " *        2 a Vulkan call failed.\n"
+         " * Exit:  0 PASS; 0 too for a QualityWarning, as rayspec (a \"should\" broken, no\n"
+         " *        failure: a ray on a shared edge or vertex that leaked or hit twice,\n"
+         " *        R-WATERTIGHT), a WARNING line per ray (the first 8) and a last line\n"
+         " *        starting \"QualityWarning:\" where PASS would stand; 1 FAIL, printing the\n"
+         " *        rule, the ray, the field, the expected and the observed value;\n"
+         " *        77 NotSupported, naming the missing feature; 2 a Vulkan call failed.\n"
          " */\n";
 }
 

@@ -21,12 +21,18 @@
 //    compared fields (comparedRecordFields: integers exact, floats within
 //    the field's tolerance), each ambiguous ray against every legal answer
 //    the model replayed through the launch ray (the record must be one of
-//    them), undefined rays (R-UB) not judged, and each counter exact,
-//    bounded (at_least, at_most) or not judged (informational).
+//    them; or one of the double hits and leaks at a shared edge or vertex
+//    the model replayed too, which the judge accepts with a QualityWarning,
+//    AmbiguousRecordJudge saying which), undefined rays (R-UB) not judged,
+//    and each counter exact, bounded (at_least, at_most) or not judged
+//    (informational). Float tolerances are the judge's (fieldTolerance),
+//    each ray's bounds as the judge widens them (ModelRayBounds).
 //  - What the player does not play yet is refused (export_support.h):
 //    "export: case uses X, not yet exported".
-// The player's exit status: 0 PASS, 1 FAIL (rule, ray, field, expected,
-// observed), 77 NotSupported (the feature named), 2 a Vulkan error.
+// The player's exit status: 0 PASS (or QualityWarning: R-WATERTIGHT warned,
+// a last line "QualityWarning: ..." for PASS's, as rayspec run exits 0 on
+// it), 1 FAIL (rule, ray, field, expected, observed), 77 NotSupported (the
+// feature named), 2 a Vulkan error.
 #pragma once
 
 #include <string>

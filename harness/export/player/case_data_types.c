@@ -5,9 +5,11 @@
  * creates the ray tracing pipeline from the embedded SPIR-V, writes the
  * shader binding table with the device's handles, binds the buffers, traces,
  * reads the per-ray records and counters back and compares them with the
- * reference model's expectations, embedded. Exit status: 0 PASS, 1 FAIL (the
- * first wrong value: rule, ray, field, expected, observed), 77 NotSupported
- * (the missing feature named), 2 a Vulkan error.
+ * reference model's expectations, embedded. Exit status: 0 PASS, or a
+ * QualityWarning (a last line "QualityWarning: ...": R-WATERTIGHT broken, a
+ * "should", as rayspec exits 0 on it), 1 FAIL (each wrong value: rule, ray,
+ * field, expected, observed), 77 NotSupported (the missing feature named),
+ * 2 a Vulkan error.
  * The player is the files of harness/export/player/ joined, in the order
  * parts.cmake lists them, by tools/embed_player.cmake: this one (the types
  * of the case's data, and the marker), then one file a step; they are
@@ -79,8 +81,13 @@ typedef struct {
   uint32_t bound; /* the rs_bound.by a ray's bound widens its abs with (0: none) */
   double abs, rel;
 } rs_field;
+/* An ambiguous ray's answers in rs_replays from first_replay: `replays` legal
+   ones, then `warnings` the judge accepts with a QualityWarning (R-WATERTIGHT),
+   their words in rs_warning_notes from first_warning. ahit_limit: the most
+   any-hit runs of a device that hits one triangle of the shared edge or
+   vertex (more: a double hit, R-WATERTIGHT), RS_NONE where not judged so. */
 typedef struct {
-  uint32_t ray, first_replay, replays;
+  uint32_t ray, first_replay, replays, warnings, first_warning, ahit_limit;
   const char *reason, *rule;
 } rs_ambiguous;
 typedef struct {
@@ -93,7 +100,9 @@ typedef struct {
 } rs_repeat;
 typedef struct {
   uint32_t ray;
-  float by[4]; /* 0, then the ray's t, object-origin and hit-position bounds (R-PREC) */
+  /* 0, then the ray's t, object-origin, hit-position and carried bounds (R-PREC; the
+     carried one: the widest, where the case carries them into a free field) */
+  float by[5];
 } rs_bound;
 
 typedef struct {

@@ -19,6 +19,27 @@ static void rs_record_dispatch(VkCommandBuffer cmd, VkPipelineLayout layout, VkD
     vkCmdDispatch(cmd, RS_COMPUTE_GROUPS_X, RS_COMPUTE_GROUPS_Y, RS_COMPUTE_GROUPS_Z);
 }
 
+/* The verdict printed, and the exit status: FAIL (1); a QualityWarning (0, as
+   rayspec exits on it: R-WATERTIGHT, a "should", broken; no failure); PASS (0). */
+static int rs_verdict(int failures) {
+  if (failures) {
+    printf("FAIL: %d of the checks differ from the reference model\n", failures);
+    return 1;
+  }
+  if (rs_warned_rays) {
+    /* rayspec's QualityWarning: a "should" broken, not a failure (exit 0). */
+    printf(
+        "QualityWarning: R-WATERTIGHT: %u rays on a shared edge or vertex leaked or hit twice "
+        "(a \"should\" of the specification, not a failure); the rest as the reference model "
+        "expects\n",
+        (unsigned)rs_warned_rays);
+    return 0;
+  }
+  printf("PASS: %u rays, %u counters and %u images as the reference model expects\n",
+         (unsigned)rs_ray_count, (unsigned)RS_COUNTER_COUNT, (unsigned)RS_IMAGE_COUNT);
+  return 0;
+}
+
 int main(int argc, char** argv) {
   rs_io io;
   VkAccelerationStructureKHR tlas;
@@ -51,11 +72,5 @@ int main(int argc, char** argv) {
   failures = rs_compare((const uint32_t*)io.records.mapped, (const uint32_t*)io.counters.mapped);
   failures += rs_compare_images(io.images, (const uint32_t*)io.records.mapped);
   vkDeviceWaitIdle(rs_device);
-  if (failures) {
-    printf("FAIL: %d of the checks differ from the reference model\n", failures);
-    return 1;
-  }
-  printf("PASS: %u rays, %u counters and %u images as the reference model expects\n",
-         (unsigned)rs_ray_count, (unsigned)RS_COUNTER_COUNT, (unsigned)RS_IMAGE_COUNT);
-  return 0;
+  return rs_verdict(failures);
 }
