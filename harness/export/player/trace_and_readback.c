@@ -21,7 +21,7 @@ static void rs_record_dispatch(VkCommandBuffer cmd, VkPipelineLayout layout, VkD
 
 int main(int argc, char** argv) {
   rs_io io;
-  VkAccelerationStructureKHR tlas;
+  VkAccelerationStructureKHR tlas[RS_TLAS_COUNT];
   VkDescriptorSetLayout set_layout;
   VkPipelineLayoutCreateInfo layout_info = {VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   VkPipelineLayout layout;
@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
   rs_pick_device(argc, argv);
   rs_create_device();
   rs_load_functions();
-  tlas = rs_build_scene();
+  rs_build_scene(tlas);
   io = rs_make_io();
   set = rs_bind(&set_layout, tlas, &io);
   layout_info.setLayoutCount = 1;
@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
   rs_submit(cmd);
   failures = rs_compare((const uint32_t*)io.records.mapped, (const uint32_t*)io.counters.mapped);
   failures += rs_compare_images(io.images, (const uint32_t*)io.records.mapped);
+  failures += rs_structure_failures;
   vkDeviceWaitIdle(rs_device);
   if (failures) {
     printf("FAIL: %d of the checks differ from the reference model\n", failures);
