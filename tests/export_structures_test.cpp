@@ -41,6 +41,20 @@ TEST(ExportStructures, ExpectationsOfTheSceneAsFirstBuiltFail) {
   EXPECT_NE(p.output.find("FAIL: "), std::string::npos) << p.output;
 }
 
+TEST(ExportStructures, ExpectationsOfACopyThatLostAnInstanceFail) {
+  // The planted fault copy-drops-instance on rayspec's side: the model
+  // traces the scene without its last instance; the file's compacted copies
+  // keep it.
+  const ExportCase l = loadExportCase("accel/copy/compact-fast-trace");
+  ExportCase dropped = l;
+  Instance& last = dropped.c.scene.instances.back();
+  ASSERT_TRUE(last.blas);
+  last.blas.reset();
+  const Played p = exportAndPlay(l, exportModelOf(dropped), "copy-drops-instance");
+  EXPECT_EQ(p.status, 1) << p.output;
+  EXPECT_NE(p.output.find("FAIL: "), std::string::npos) << p.output;
+}
+
 TEST(ExportStructures, QueriesAreAskedAndHeldToTheSpecification) {
   // The sizes lavapipe answers within the rules: PASS. With the
   // serialization size, every serialized header is checked: lavapipe 25.0.7
