@@ -112,6 +112,12 @@ TEST(ExportAmber, RefusesWhatTheSubsetCannotExpressNamingIt) {
 TEST(ExportAmber, RefusesIndicesAndRecordData) {
   ExportCase l = loadExportCase("culling/facing-cull");
   const Results model = exportModelOf(l);
+  // Structure queries, which the C export asks: a script would skip them.
+  l.c.scene.build.queries.queries = {StructureQuery::CompactedSize};
+  Result<std::string> asked = exportCaseAsAmber(l.c, l.plan, model);
+  ASSERT_FALSE(asked);
+  EXPECT_NE(asked.error().message.find("acceleration structure queries"), std::string::npos);
+  l = loadExportCase("culling/facing-cull");
   l.c.scene.blases[0].geometries[0].indices = {0, 1, 2};
   Result<std::string> text = exportCaseAsAmber(l.c, l.plan, model);
   ASSERT_FALSE(text);

@@ -48,10 +48,12 @@ std::string aabbConstruct(const Geometry& g, const AsBuild& build) {
 }
 
 // The operations of rayspec's builds an Amber script has no command for: it
-// builds each structure once, one top level.
+// builds each structure once, one top level, and asks nothing of it.
 std::string buildConstruct(const Scene& s) {
   if (s.updates()) return "acceleration structure updates (scene.update)";
   if (s.build.copy != AsCopy::None) return "acceleration structure copies (scene.build.copy)";
+  if (!s.build.queries.queries.empty())
+    return "acceleration structure queries (scene.build.queries)";
   if (s.tlasCount() > 1) return "several top levels";
   for (const Blas& b : s.blases)
     if (b.geometries.empty()) return "an empty bottom level";
