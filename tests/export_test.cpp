@@ -123,9 +123,8 @@ TEST(ExportC, AnAmbiguousRayIsHeldToItsLegalAnswers) {
 
 TEST(ExportC, RefusesWhatItDoesNotPlayNamingTheFeature) {
   const std::pair<const char*, const char*> refused[] = {
-      {"accel/sparse",
-       "export: case uses acceleration structure updates (scene.update), not yet "
-       "exported"},
+      {"accel/build-command/indirect",
+       "export: case uses indirect builds (scene.build.command), not yet exported"},
       {"ray-query/dynamic-tlas-index",
        "export: case uses top levels indexed dynamically (tlas: expr), not yet exported"},
       // lavapipe.csv: NotSupported (no VK_EXT_opacity_micromap), which the player does not enable.
@@ -154,16 +153,17 @@ TEST(ExportC, RefusesALaunchTooWideToEmbed) {
             "embedded), not yet exported");
 }
 
-TEST(ExportC, RefusesStructureQueriesItDoesNotAsk) {
-  // accel/queries/* copy too; a reduced case may keep the queries alone,
-  // whose findings a file that never asks them would pass.
+TEST(ExportC, RefusesStructureQueriesOnTheHost) {
+  // The player asks queries on the device only (tests/export_structures_test.cpp);
+  // one that never asked them would pass a case whose findings it skipped.
   ExportCase l = loadExportCase("culling/facing-cull");
   l.c.scene.build.queries.queries = {StructureQuery::SerializationSize};
+  l.c.scene.build.queries.command = QueryCommand::Host;
   const Result<std::string> text = exportCaseAsC(l.c, l.plan, exportModelOf(l));
   ASSERT_FALSE(text);
   EXPECT_EQ(text.error().message,
-            "export: case uses acceleration structure queries (scene.build.queries), not yet "
-            "exported");
+            "export: case uses structure queries on the host (scene.build.query_command host), "
+            "not yet exported");
 }
 
 TEST(ExportC, ALayoutFaultIsCarriedIntoTheFile) {

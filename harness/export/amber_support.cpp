@@ -47,7 +47,21 @@ std::string aabbConstruct(const Geometry& g, const AsBuild& build) {
   return "";
 }
 
+// The operations of rayspec's builds an Amber script has no command for: it
+// builds each structure once, one top level, and asks nothing of it.
+std::string buildConstruct(const Scene& s) {
+  if (s.updates()) return "acceleration structure updates (scene.update)";
+  if (s.build.copy != AsCopy::None) return "acceleration structure copies (scene.build.copy)";
+  if (!s.build.queries.queries.empty())
+    return "acceleration structure queries (scene.build.queries)";
+  if (s.tlasCount() > 1) return "several top levels";
+  for (const Blas& b : s.blases)
+    if (b.geometries.empty()) return "an empty bottom level";
+  return "";
+}
+
 std::string sceneConstruct(const Scene& s) {
+  if (std::string k = buildConstruct(s); !k.empty()) return k;
   if (s.build.flags & ~kHintBuildFlags)
     return "build flags beyond the performance hints (scene.build.flags " +
            std::to_string(s.build.flags) + ")";

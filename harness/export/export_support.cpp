@@ -26,23 +26,36 @@ std::string pipelineFeature(const Case& c, const Plan& plan) {
   return "";
 }
 
-// The scene: bottom levels of triangles or boxes built once, one top level,
-// its instances read directly.
+// Whether every update (scene.update) keeps the scene's shape: its BLASes'
+// geometry counts and its instance count (the player's tables hold one
+// shape for every state, as the updates of rayspec's builds need).
+bool updatesKeepShape(const Scene& s) {
+  for (const auto& e : s.earlier) {
+    if (e->blases.size() != s.blases.size() || e->instances.size() != s.instances.size())
+      return false;
+    for (size_t b = 0; b < s.blases.size(); ++b)
+      if (e->blases[b].geometries.size() != s.blases[b].geometries.size()) return false;
+  }
+  return true;
+}
+
+// The scene: bottom levels of triangles or boxes, top levels over instances
+// read directly; built with device commands, updated (scene.update) and
+// copied (scene.build.copy) as rayspec's builds do.
 std::string sceneFeature(const Case& c) {
   const Scene& s = c.scene;
-  if (s.updates()) return "acceleration structure updates (scene.update)";
-  if (s.build.copy != AsCopy::None) return "acceleration structure copies (scene.build.copy)";
-  if (!s.build.queries.queries.empty())
-    return "acceleration structure queries (scene.build.queries)";
+  if (!updatesKeepShape(s)) return "updates that change the scene's shape (scene.update)";
+  if (!s.build.queries.queries.empty() && s.build.queries.command == QueryCommand::Host)
+    return "structure queries on the host (scene.build.query_command host)";
   if (s.build.command != BuildCommand::Device) return "indirect builds (scene.build.command)";
   if (s.build.instances_as_pointers) return "instances as pointers (scene.build)";
-  if (s.tlasCount() > 1) return "several top levels";
   for (const Instance& i : s.instances)
     if (i.flags & kInstanceOpacityMicromapFlags)
       return "opacity micromap instance flags (VK_EXT_opacity_micromap)";
   if (s.blases.empty() || s.instances.empty()) return "an empty scene";
-  for (const Blas& b : s.blases)
-    if (b.geometries.empty()) return "an empty bottom level";
+  if (std::all_of(s.blases.begin(), s.blases.end(),
+                  [](const Blas& b) { return b.geometries.empty(); }))
+    return "an empty bottom level";
   if (c.rays.command != TraceCommand::Direct) return "an indirect trace (rays.command)";
   if (const uint64_t rays = uint64_t(c.rays.width) * c.rays.height; rays > kMaxExportedRays)
     return "a launch of " + std::to_string(rays) + " rays (at most " +

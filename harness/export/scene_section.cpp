@@ -1,9 +1,12 @@
+#include <cctype>
 #include <cstring>
+#include <set>
 
 #include "export/c_text.h"
 #include "export/export_sections.h"
 #include "vulkan/acceleration_structure.h"
 #include "vulkan/build_layout.h"
+#include "vulkan/structure_queries.h"
 
 namespace rayspec {
 namespace {
@@ -68,38 +71,112 @@ std::string instanceEntry(const Instance& inst) {
          std::to_string(inst.mask & kVisibilityMask) + "u, " +
          std::to_string(inst.sbt_offset & kInstanceFieldMask) + "u, " +
          std::to_string(inst.flags & kInstanceFlagsMask) + "u, " +
-         (inst.blas ? std::to_string(*inst.blas) + "u" : std::string("RS_NONE")) + "},\n";
+         (inst.blas ? std::to_string(*inst.blas) + "u" : std::string("RS_NONE")) + ", " +
+         std::to_string(inst.tlas) + "u},\n";
+}
+
+// The scene as first built, then after each update (scene.update): the
+// last is `scene` itself.
+std::vector<const Scene*> statesOf(const Scene& scene) {
+  std::vector<const Scene*> states;
+  for (const auto& e : scene.earlier) states.push_back(e.get());
+  states.push_back(&scene);
+  return states;
+}
+
+// The name prefix of state k's arrays: the scene as first built has none.
+std::string statePrefix(size_t k) {
+  return k ? "rs_update" + std::to_string(k) + "_" : "rs_";
+}
+
+// Every state's geometries, bottom levels (each state's after the one
+// before) and instances, as C arrays.
+struct SceneTables {
+  std::string arrays, geometries, blases, instances;
+  size_t most = 1;
+};
+
+void addState(const Scene& state, size_t k, const std::vector<bool>& reached, const AsBuild& build,
+              LayoutFault layout, uint32_t& first, SceneTables& t) {
+  for (size_t b = 0; b < state.blases.size(); ++b) {
+    const Blas& blas = state.blases[b];
+    for (size_t g = 0; g < blas.geometries.size(); ++g)
+      t.geometries += geometryEntry(
+          blas.geometries[g], build, layout,
+          statePrefix(k) + "blas" + std::to_string(b) + "_geometry" + std::to_string(g), t.arrays);
+    const uint32_t count = static_cast<uint32_t>(blas.geometries.size());
+    t.blases += "  {" + std::to_string(first) + ", " + std::to_string(count) + ", " +
+                (reached[b] ? "1" : "0") + "},  /* " + blas.name + (k ? ", update " : "") +
+                (k ? std::to_string(k) : "") + " */\n";
+    first += count;
+    t.most = std::max<size_t>(t.most, count);
+  }
+  for (const Instance& inst : state.instances) t.instances += instanceEntry(inst);
+}
+
+// RS_COPY, RS_COPY_AT, RS_UPDATE_INTO_OTHER, RS_TLAS_REBUILT: the order of
+// the builds, updates and copy as the Vulkan engine runs them.
+std::string operationDefines(const Scene& scene) {
+  const AsBuild& b = scene.build;
+  const size_t copy_at = b.copy == AsCopy::None ? scene.updates() + 1 : scene.updatesBeforeCopy();
+  std::string copy = asCopyName(b.copy);
+  for (char& ch : copy) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  return "#define RS_COPY RS_COPY_" + copy + "\n#define RS_COPY_AT " + std::to_string(copy_at) +
+         "u\n#define RS_UPDATE_INTO_OTHER " + (b.update_into_other ? "1" : "0") +
+         "\n#define RS_TLAS_REBUILT " + (b.tlas_rebuilt ? "1" : "0") + "\n";
+}
+
+// Where scene.build.queries asks each level: before the copy, or once the
+// last update ran (none: never), as the Vulkan engine asks them.
+size_t queryAt(const Scene& scene) {
+  if (scene.build.queries.queries.empty()) return scene.updates() + 1;
+  return scene.build.copy == AsCopy::None ? scene.updates() : scene.updatesBeforeCopy();
+}
+
+// rs_queries, rs_query_count (the device queries in the case's order), RS_QUERY_AT,
+// RS_NEEDS_MAINTENANCE1, and rs_referenced: per top level, per BLAS, whether
+// its active instances reference the BLAS when the queries are asked.
+std::string queryTables(const Scene& scene, const std::vector<const Scene*>& states) {
+  std::string queries;
+  for (StructureQuery q : scene.build.queries.queries)
+    queries += "  (VkQueryType)" + std::to_string(vkQueryType(q)) + ",  /* " + nameOf(q) + " */\n";
+  std::string referenced;
+  const size_t at = queryAt(scene);
+  for (const std::set<uint32_t>& level : referencedBlases(*states[std::min(at, scene.updates())])) {
+    referenced += " ";
+    for (uint32_t b = 0; b < scene.blases.size(); ++b) referenced += level.count(b) ? " 1," : " 0,";
+    referenced += "\n";
+  }
+  return "static const VkQueryType rs_queries[] = {\n" + (queries.empty() ? "  0\n" : queries) +
+         "};\nstatic const uint32_t rs_query_count = " +
+         std::to_string(scene.build.queries.queries.size()) + ";\n#define RS_QUERY_AT " +
+         std::to_string(at) + "u\n#define RS_NEEDS_MAINTENANCE1 " +
+         (scene.build.queries.needsMaintenance1() ? "1" : "0") +
+         "\nstatic const uint8_t rs_referenced[] = {\n" + referenced + "};\n";
 }
 
 }  // namespace
 
 std::string sceneSection(const Scene& scene, LayoutFault layout) {
-  std::string arrays, geometries, blases;
+  const std::vector<const Scene*> states = statesOf(scene);
+  const std::vector<bool> reached = reachedBlases(*states.front());
+  SceneTables t;
   uint32_t first = 0;
-  size_t most = 1;
-  for (size_t b = 0; b < scene.blases.size(); ++b) {
-    const Blas& blas = scene.blases[b];
-    for (size_t g = 0; g < blas.geometries.size(); ++g)
-      geometries +=
-          geometryEntry(blas.geometries[g], scene.build, layout,
-                        "rs_blas" + std::to_string(b) + "_geometry" + std::to_string(g), arrays);
-    const uint32_t count = static_cast<uint32_t>(blas.geometries.size());
-    blases += "  {" + std::to_string(first) + ", " + std::to_string(count) + "},  /* " + blas.name +
-              " */\n";
-    first += count;
-    most = std::max<size_t>(most, count);
-  }
-  std::string instances;
-  for (const Instance& inst : scene.instances) instances += instanceEntry(inst);
+  for (size_t k = 0; k < states.size(); ++k)
+    addState(*states[k], k, reached, scene.build, layout, first, t);
   return "/* The scene: each bottom level's triangles or boxes, laid out as rayspec's builds\n"
-         "   lay them out, and the top level's instances. */\n" +
-         arrays + "static const rs_geometry rs_geometries[] = {\n" + geometries + "};\n" +
-         "static const rs_blas rs_blases[] = {\n" + blases + "};\n" +
-         "static const rs_instance rs_instances[] = {\n" + instances + "};\n" +
+         "   lay them out, and the instances of the top levels; the same again for each\n"
+         "   update (scene.update), in order. */\n" +
+         t.arrays + "static const rs_geometry rs_geometries[] = {\n" + t.geometries + "};\n" +
+         "static const rs_blas rs_blases[] = {\n" + t.blases + "};\n" +
+         "static const rs_instance rs_instances[] = {\n" + t.instances + "};\n" +
          "#define RS_BLAS_COUNT " + std::to_string(scene.blases.size()) + "\n" +
-         "#define RS_MAX_GEOMETRIES " + std::to_string(most) + "\n" + "#define RS_INSTANCE_COUNT " +
-         std::to_string(scene.instances.size()) + "\n" + "#define RS_BUILD_FLAGS " +
-         std::to_string(scene.build.flags) + "u\n\n";
+         "#define RS_MAX_GEOMETRIES " + std::to_string(t.most) + "\n" +
+         "#define RS_INSTANCE_COUNT " + std::to_string(scene.instances.size()) +
+         "\n#define RS_TLAS_COUNT " + std::to_string(scene.tlasCount()) +
+         "u\n#define RS_STATE_COUNT " + std::to_string(states.size()) +
+         "u\n#define RS_BUILD_FLAGS " + std::to_string(buildFlags(scene.build)) + "u\n" +
+         operationDefines(scene) + queryTables(scene, states) + "\n";
 }
 
 }  // namespace rayspec

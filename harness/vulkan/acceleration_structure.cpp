@@ -194,14 +194,6 @@ void patchAddresses(BlasBuild& b, VkDeviceAddress base) {
   }
 }
 
-// scene.build's flags, and ALLOW_COMPACTION where the structures are
-// compacted or their compacted size is queried.
-VkBuildAccelerationStructureFlagsKHR buildFlags(const AsBuild& build) {
-  const bool compacted =
-      build.copy == AsCopy::Compact || build.queries.asks(StructureQuery::CompactedSize);
-  return build.flags | (compacted ? kBuildAllowCompaction : 0u);
-}
-
 VkAccelerationStructureBuildGeometryInfoKHR buildInfo(
     VkAccelerationStructureTypeKHR type,
     const std::vector<VkAccelerationStructureGeometryKHR>& geos,
@@ -218,6 +210,19 @@ VkAccelerationStructureBuildGeometryInfoKHR buildInfo(
 
 }  // namespace
 
+VkBuildAccelerationStructureFlagsKHR buildFlags(const AsBuild& build) {
+  const bool compacted =
+      build.copy == AsCopy::Compact || build.queries.asks(StructureQuery::CompactedSize);
+  return build.flags | (compacted ? kBuildAllowCompaction : 0u);
+}
+
+std::vector<bool> reachedBlases(const Scene& scene) {
+  std::vector<bool> used(scene.blases.size(), false);
+  for (const Instance& inst : scene.instances)
+    if (inst.blas && *inst.blas < scene.blases.size()) used[*inst.blas] = true;
+  return used;
+}
+
 VkDeviceAddress structureAddress(const VulkanContext& ctx, VkAccelerationStructureKHR as) {
   VkAccelerationStructureDeviceAddressInfoKHR ai{
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_DEVICE_ADDRESS_INFO_KHR};
@@ -226,13 +231,6 @@ VkDeviceAddress structureAddress(const VulkanContext& ctx, VkAccelerationStructu
 }
 
 namespace {
-
-std::vector<bool> reachedBlases(const Scene& scene) {
-  std::vector<bool> used(scene.blases.size(), false);
-  for (const Instance& inst : scene.instances)
-    if (inst.blas && *inst.blas < scene.blases.size()) used[*inst.blas] = true;
-  return used;
-}
 
 // What the guard after a build's scratch region calls it.
 std::string scratchName(const std::string& structure,

@@ -19,6 +19,13 @@ VkFormat vkVertexFormat(VertexFormat f);
 // The device address of an acceleration structure (vkGetAccelerationStructureDeviceAddressKHR).
 VkDeviceAddress structureAddress(const VulkanContext& ctx, VkAccelerationStructureKHR as);
 
+// Every build's and update's flags: scene.build's, and ALLOW_COMPACTION where
+// the structures are compacted or their compacted size is queried.
+VkBuildAccelerationStructureFlagsKHR buildFlags(const AsBuild& build);
+
+// Which of the scene's BLASes some instance references: only those are built.
+std::vector<bool> reachedBlases(const Scene& scene);
+
 // Builds the scene and returns its top levels, ready for ray tracing
 // shaders: one BLAS build per case Blas that some instance references (all
 // in one vkCmdBuildAccelerationStructuresKHR), a barrier, the TLAS builds (an

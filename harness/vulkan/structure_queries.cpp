@@ -8,7 +8,6 @@
 #include "vulkan/vk_check.h"
 
 namespace rayspec {
-namespace {
 
 VkQueryType vkQueryType(StructureQuery q) {
   switch (q) {
@@ -23,6 +22,8 @@ VkQueryType vkQueryType(StructureQuery q) {
   }
   return VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SIZE_KHR;
 }
+
+namespace {
 
 Result<VkQueryPool> createQueryPool(const VulkanContext& ctx, VkQueryType type, uint32_t count,
                                     Cleanup& cleanup) {

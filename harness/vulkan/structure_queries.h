@@ -39,6 +39,9 @@
 
 namespace rayspec {
 
+// The query type of a scene.build.queries entry.
+VkQueryType vkQueryType(StructureQuery q);
+
 // One query type's answers, one per structure: as read without the
 // availability word, and (the command form) as read with it, with that word.
 struct QueriedValues {

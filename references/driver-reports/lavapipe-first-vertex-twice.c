@@ -65,11 +65,15 @@ typedef struct {
 } rs_geometry;
 typedef struct {
   uint32_t first_geometry, geometry_count;
+  uint32_t reached; /* some instance of the scene as first built references it: built */
 } rs_blas;
 typedef struct {
   float transform[12];
   uint32_t custom_index, mask, sbt_offset, flags, blas; /* blas: RS_NONE for none */
+  uint32_t tlas;                                        /* the top level it belongs to */
 } rs_instance;
+/* scene.build.copy: the structures the traces use are copies (R-AS-COPY). */
+enum rs_copy { RS_COPY_NONE, RS_COPY_CLONE, RS_COPY_COMPACT, RS_COPY_SERIALIZE };
 typedef struct {
   uint32_t group; /* RS_NONE: an all-zero record */
   uint32_t data_words;
@@ -136,7 +140,8 @@ typedef struct {
 #define RS_CASE_NAME "lavapipe-first-vertex-twice"
 
 /* The scene: each bottom level's triangles or boxes, laid out as rayspec's builds
-   lay them out, and the top level's instances. */
+   lay them out, and the instances of the top levels; the same again for each
+   update (scene.update), in order. */
 static const uint8_t rs_blas0_geometry0_vertices[] = {
   0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff, 0xff,
   0x00, 0x42, 0x00, 0xbc, 0x00, 0x00, 0x00, 0x3c, 0x00, 0x45, 0x00, 0xbc, 0x00, 0x00, 0x00, 0x3c,
@@ -147,15 +152,30 @@ static const rs_geometry rs_geometries[] = {
   {VK_GEOMETRY_TYPE_TRIANGLES_KHR, (VkFormat)97, "half4", 8, 4, VK_INDEX_TYPE_NONE_KHR, 0, rs_blas0_geometry0_vertices, NULL, NULL, 56, 0, 0, {1, 0, 2, 0}},
 };
 static const rs_blas rs_blases[] = {
-  {0, 1},  /* pair */
+  {0, 1, 1},  /* pair */
 };
 static const rs_instance rs_instances[] = {
-  {{0x1p+0f, 0x0p+0f, 0x0p+0f, 0x0p+0f, 0x0p+0f, 0x1p+0f, 0x0p+0f, 0x1p+3f, 0x0p+0f, 0x0p+0f, 0x1p+0f, 0x0p+0f}, 0u, 255u, 0u, 0u, 0u},
+  {{0x1p+0f, 0x0p+0f, 0x0p+0f, 0x0p+0f, 0x0p+0f, 0x1p+0f, 0x0p+0f, 0x1p+3f, 0x0p+0f, 0x0p+0f, 0x1p+0f, 0x0p+0f}, 0u, 255u, 0u, 0u, 0u, 0u},
 };
 #define RS_BLAS_COUNT 1
 #define RS_MAX_GEOMETRIES 1
 #define RS_INSTANCE_COUNT 1
+#define RS_TLAS_COUNT 1u
+#define RS_STATE_COUNT 1u
 #define RS_BUILD_FLAGS 4u
+#define RS_COPY RS_COPY_NONE
+#define RS_COPY_AT 1u
+#define RS_UPDATE_INTO_OTHER 0
+#define RS_TLAS_REBUILT 0
+static const VkQueryType rs_queries[] = {
+  0
+};
+static const uint32_t rs_query_count = 0;
+#define RS_QUERY_AT 1u
+#define RS_NEEDS_MAINTENANCE1 0
+static const uint8_t rs_referenced[] = {
+  1,
+};
 
 /* The pipeline's stages: SPIR-V as rayspec compiled it. */
 /* raygen: its GLSL, as rayspec generated it */
@@ -1086,6 +1106,11 @@ static PFN_vkGetAccelerationStructureDeviceAddressKHR rs_as_address;
 static PFN_vkCreateRayTracingPipelinesKHR rs_create_pipelines;
 static PFN_vkGetRayTracingShaderGroupHandlesKHR rs_group_handles;
 static PFN_vkCmdTraceRaysKHR rs_cmd_trace;
+static PFN_vkCmdWriteAccelerationStructuresPropertiesKHR rs_cmd_write_properties;
+static PFN_vkCmdCopyAccelerationStructureKHR rs_cmd_copy;
+static PFN_vkCmdCopyAccelerationStructureToMemoryKHR rs_cmd_copy_to_memory;
+static PFN_vkCmdCopyMemoryToAccelerationStructureKHR rs_cmd_copy_from_memory;
+static PFN_vkGetDeviceAccelerationStructureCompatibilityKHR rs_compatibility;
 
 static VkInstance rs_instance_handle;
 static VkPhysicalDevice rs_physical;
@@ -1194,6 +1219,27 @@ static void rs_chain_ray_query(VkPhysicalDeviceRayQueryFeaturesKHR* on_rq,
   on->pNext = on_rq;
 }
 
+/* VK_KHR_ray_tracing_maintenance1's feature chained onto `on`, where the
+ * case queries a structure's size or its bottom-level pointers; NotSupported
+ * where the device lacks it. */
+static void rs_chain_maintenance1(VkPhysicalDeviceRayTracingMaintenance1FeaturesKHR* on_m1,
+                                  VkPhysicalDeviceFeatures2* on) {
+  VkPhysicalDeviceRayTracingMaintenance1FeaturesKHR m1 = {
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_MAINTENANCE_1_FEATURES_KHR};
+  VkPhysicalDeviceFeatures2 have = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &m1};
+  if (!RS_NEEDS_MAINTENANCE1) return;
+  if (!rs_has_extension(rs_physical, VK_KHR_RAY_TRACING_MAINTENANCE_1_EXTENSION_NAME))
+    rs_unsupported(
+        "scene.build.queries size, bottom_level_pointers: the device lacks "
+        "VK_KHR_ray_tracing_maintenance1");
+  vkGetPhysicalDeviceFeatures2(rs_physical, &have);
+  if (!m1.rayTracingMaintenance1)
+    rs_unsupported("scene.build.queries size, bottom_level_pointers: rayTracingMaintenance1");
+  on_m1->rayTracingMaintenance1 = VK_TRUE;
+  on_m1->pNext = on->pNext;
+  on->pNext = on_m1;
+}
+
 static void rs_create_device(void) {
   VkPhysicalDeviceAccelerationStructureFeaturesKHR as = {
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
@@ -1211,9 +1257,12 @@ static void rs_create_device(void) {
   VkPhysicalDeviceFeatures2 on = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v12_on};
   VkPhysicalDeviceRayQueryFeaturesKHR rq_on = {
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
-  const char* extensions[] = {
-      VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
-      VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME, VK_KHR_RAY_QUERY_EXTENSION_NAME};
+  VkPhysicalDeviceRayTracingMaintenance1FeaturesKHR m1_on = {
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_MAINTENANCE_1_FEATURES_KHR};
+  const char* extensions[5] = {VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
+                               VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
+                               VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
+  uint32_t extension_count = 3;
   float priority = 1.0f;
   VkDeviceQueueCreateInfo queue = {VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
   VkDeviceCreateInfo info = {VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &on};
@@ -1238,6 +1287,10 @@ static void rs_create_device(void) {
   v12_on.shaderInt8 = v12.shaderInt8;
   v12_on.shaderFloat16 = v12.shaderFloat16;
   rs_chain_ray_query(&rq_on, &on);
+  rs_chain_maintenance1(&m1_on, &on);
+  if (RS_NEEDS_RAY_QUERY) extensions[extension_count++] = VK_KHR_RAY_QUERY_EXTENSION_NAME;
+  if (RS_NEEDS_MAINTENANCE1)
+    extensions[extension_count++] = VK_KHR_RAY_TRACING_MAINTENANCE_1_EXTENSION_NAME;
   vkGetPhysicalDeviceQueueFamilyProperties(rs_physical, &count, families);
   for (rs_queue_family = 0; rs_queue_family < count; ++rs_queue_family)
     if (families[rs_queue_family].queueFlags & VK_QUEUE_COMPUTE_BIT) break;
@@ -1247,7 +1300,7 @@ static void rs_create_device(void) {
   queue.pQueuePriorities = &priority;
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queue;
-  info.enabledExtensionCount = RS_NEEDS_RAY_QUERY ? 4 : 3; /* VK_KHR_ray_query last */
+  info.enabledExtensionCount = extension_count;
   info.ppEnabledExtensionNames = extensions;
   rs_check(vkCreateDevice(rs_physical, &info, NULL, &rs_device), "vkCreateDevice");
   vkGetDeviceQueue(rs_device, rs_queue_family, 0, &rs_queue);
@@ -1256,6 +1309,19 @@ static void rs_create_device(void) {
 #define RS_PROC(var, type, name)                    \
   var = (type)vkGetDeviceProcAddr(rs_device, name); \
   if (!var) rs_unsupported(name)
+
+/* The commands that copy structures (scene.build.copy) and ask their sizes. */
+static void rs_load_copy_functions(void) {
+  RS_PROC(rs_cmd_write_properties, PFN_vkCmdWriteAccelerationStructuresPropertiesKHR,
+          "vkCmdWriteAccelerationStructuresPropertiesKHR");
+  RS_PROC(rs_cmd_copy, PFN_vkCmdCopyAccelerationStructureKHR, "vkCmdCopyAccelerationStructureKHR");
+  RS_PROC(rs_cmd_copy_to_memory, PFN_vkCmdCopyAccelerationStructureToMemoryKHR,
+          "vkCmdCopyAccelerationStructureToMemoryKHR");
+  RS_PROC(rs_cmd_copy_from_memory, PFN_vkCmdCopyMemoryToAccelerationStructureKHR,
+          "vkCmdCopyMemoryToAccelerationStructureKHR");
+  RS_PROC(rs_compatibility, PFN_vkGetDeviceAccelerationStructureCompatibilityKHR,
+          "vkGetDeviceAccelerationStructureCompatibilityKHR");
+}
 
 static void rs_load_functions(void) {
   VkCommandPoolCreateInfo pool = {VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -1271,6 +1337,7 @@ static void rs_load_functions(void) {
   RS_PROC(rs_group_handles, PFN_vkGetRayTracingShaderGroupHandlesKHR,
           "vkGetRayTracingShaderGroupHandlesKHR");
   RS_PROC(rs_cmd_trace, PFN_vkCmdTraceRaysKHR, "vkCmdTraceRaysKHR");
+  rs_load_copy_functions();
   pool.queueFamilyIndex = rs_queue_family;
   rs_check(vkCreateCommandPool(rs_device, &pool, NULL, &rs_pool), "vkCreateCommandPool");
 }
@@ -1457,45 +1524,121 @@ static void rs_copy_images(VkCommandBuffer cmd, const rs_image_target* images) {
 
 /* ---- Acceleration structures -------------------------------------------- */
 
-/* One structure of `type` over `geos`, built by its own submission. */
-static VkDeviceAddress rs_build(VkAccelerationStructureTypeKHR type,
-                                const VkAccelerationStructureGeometryKHR* geos, uint32_t count,
-                                const VkAccelerationStructureBuildRangeInfoKHR* ranges,
-                                VkAccelerationStructureKHR* out) {
-  VkAccelerationStructureBuildGeometryInfoKHR info = {
-      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
-  VkAccelerationStructureBuildSizesInfoKHR sizes = {
-      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
+/* The structures of one level, bottom or top, as rayspec's builds make them
+   (harness/vulkan/acceleration_structure.cpp): each built from the scene as
+   first built, then updated to each later state (scene.update) and copied
+   (scene.build.copy) where the case orders it. */
+#define RS_MAX_LEVEL (RS_BLAS_COUNT > RS_TLAS_COUNT ? RS_BLAS_COUNT : RS_TLAS_COUNT)
+typedef struct {
+  VkAccelerationStructureGeometryKHR geos[RS_MAX_GEOMETRIES];
+  VkAccelerationStructureBuildRangeInfoKHR ranges[RS_MAX_GEOMETRIES];
+  uint32_t count;
+} rs_inputs;
+typedef struct {
+  VkAccelerationStructureTypeKHR type;
+  const char* name;             /* "BLAS", "TLAS" */
+  uint32_t count;               /* its structures */
+  uint32_t index[RS_MAX_LEVEL]; /* each one's BLAS or top level */
+  VkAccelerationStructureKHR handle[RS_MAX_LEVEL];
+  VkDeviceSize built[RS_MAX_LEVEL]; /* accelerationStructureSize as first built */
+  VkDeviceSize size[RS_MAX_LEVEL];  /* the size the current structure was created with */
+  VkDeviceSize room[RS_MAX_LEVEL];  /* room for a build: 0 in a compacted copy */
+  VkDeviceSize build_scratch[RS_MAX_LEVEL], update_scratch[RS_MAX_LEVEL];
+  /* the inputs of structure `index` in state `state` (0: as first built) */
+  void (*describe)(uint32_t state, uint32_t index, rs_inputs* in);
+} rs_level;
+
+/* Each BLAS's address once the bottom levels are final (0: not built). */
+static VkDeviceAddress rs_blas_address[RS_BLAS_COUNT];
+
+/* A structure of `size` bytes over a buffer of its own. */
+static VkAccelerationStructureKHR rs_create_structure(VkAccelerationStructureTypeKHR type,
+                                                      VkDeviceSize size) {
   VkAccelerationStructureCreateInfoKHR create = {
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR};
+  VkAccelerationStructureKHR as;
+  rs_buffer storage =
+      rs_make_buffer(size, VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR, NULL);
+  create.buffer = storage.buffer;
+  create.size = size;
+  create.type = type;
+  rs_check(rs_create_as(rs_device, &create, NULL, &as), "vkCreateAccelerationStructureKHR");
+  return as;
+}
+
+static VkDeviceAddress rs_structure_address(VkAccelerationStructureKHR as) {
   VkAccelerationStructureDeviceAddressInfoKHR where = {
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_DEVICE_ADDRESS_INFO_KHR};
-  uint32_t *max_primitives = calloc(count ? count : 1, sizeof(uint32_t)), i;
-  rs_buffer storage, scratch;
-  VkCommandBuffer cmd;
-  for (i = 0; i < count; ++i) max_primitives[i] = ranges[i].primitiveCount;
+  where.accelerationStructure = as;
+  return rs_as_address(rs_device, &where);
+}
+
+static VkAccelerationStructureBuildGeometryInfoKHR rs_build_info(
+    VkAccelerationStructureTypeKHR type, const rs_inputs* in) {
+  VkAccelerationStructureBuildGeometryInfoKHR info = {
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
   info.type = type;
   info.flags = RS_BUILD_FLAGS;
   info.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
-  info.geometryCount = count;
-  info.pGeometries = geos;
-  rs_build_sizes(rs_device, VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &info, max_primitives,
-                 &sizes);
-  free(max_primitives);
-  storage = rs_make_buffer(sizes.accelerationStructureSize,
-                           VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR, NULL);
-  scratch = rs_make_buffer(sizes.buildScratchSize + 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, NULL);
-  create.buffer = storage.buffer;
-  create.size = sizes.accelerationStructureSize;
-  create.type = type;
-  rs_check(rs_create_as(rs_device, &create, NULL, out), "vkCreateAccelerationStructureKHR");
-  info.dstAccelerationStructure = *out;
+  info.geometryCount = in->count;
+  info.pGeometries = in->geos;
+  return info;
+}
+
+/* One build (src VK_NULL_HANDLE) or update (MODE_UPDATE from src) into dst,
+   by its own submission, in scratch of scratch_size bytes. */
+static void rs_build_into(VkAccelerationStructureTypeKHR type, VkAccelerationStructureKHR src,
+                          VkAccelerationStructureKHR dst, const rs_inputs* in,
+                          VkDeviceSize scratch_size) {
+  VkAccelerationStructureBuildGeometryInfoKHR info = rs_build_info(type, in);
+  const VkAccelerationStructureBuildRangeInfoKHR* ranges = in->ranges;
+  rs_buffer scratch = rs_make_buffer(scratch_size + 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, NULL);
+  VkCommandBuffer cmd;
+  if (src != VK_NULL_HANDLE) info.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR;
+  info.srcAccelerationStructure = src;
+  info.dstAccelerationStructure = dst;
   info.scratchData.deviceAddress = (scratch.address + 255) & ~(VkDeviceAddress)255;
   cmd = rs_begin();
   rs_cmd_build(cmd, 1, &info, &ranges);
   rs_submit(cmd);
-  where.accelerationStructure = *out;
-  return rs_as_address(rs_device, &where);
+}
+
+/* Structure i of the level built from the first state: created at the size
+   the device asks for, its scratch sizes kept for its updates. */
+static void rs_build_first(rs_level* l, uint32_t i) {
+  VkAccelerationStructureBuildSizesInfoKHR sizes = {
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
+  VkAccelerationStructureBuildGeometryInfoKHR info;
+  uint32_t max_primitives[RS_MAX_GEOMETRIES], g;
+  rs_inputs in;
+  l->describe(0, l->index[i], &in);
+  for (g = 0; g < in.count; ++g) max_primitives[g] = in.ranges[g].primitiveCount;
+  info = rs_build_info(l->type, &in);
+  rs_build_sizes(rs_device, VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &info, max_primitives,
+                 &sizes);
+  l->built[i] = l->size[i] = l->room[i] = sizes.accelerationStructureSize;
+  l->build_scratch[i] = sizes.buildScratchSize;
+  l->update_scratch[i] = sizes.updateScratchSize;
+  l->handle[i] = rs_create_structure(l->type, sizes.accelerationStructureSize);
+  rs_build_into(l->type, VK_NULL_HANDLE, l->handle[i], &in, sizes.buildScratchSize);
+}
+
+/* Structure i updated to `state` (R-AS-UPDATE): in place, or into a new
+   structure (scene.build.update_into other); a top level rebuilt instead
+   (scene.build.tlas_update rebuild, MODE_BUILD), into a new structure of its
+   build size where it has no room for a build (a compacted copy). */
+static void rs_update(rs_level* l, uint32_t state, uint32_t i) {
+  const int rebuild = RS_TLAS_REBUILT && l->type == VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR;
+  VkAccelerationStructureKHR dst = l->handle[i];
+  rs_inputs in;
+  l->describe(state, l->index[i], &in);
+  if (RS_UPDATE_INTO_OTHER || (rebuild && l->room[i] < l->built[i])) {
+    dst = rs_create_structure(l->type, l->built[i]);
+    l->size[i] = l->room[i] = l->built[i];
+  }
+  rs_build_into(l->type, rebuild ? VK_NULL_HANDLE : l->handle[i], dst, &in,
+                rebuild ? l->build_scratch[i] : l->update_scratch[i]);
+  l->handle[i] = dst;
 }
 
 static const VkBufferUsageFlags rs_input_usage =
@@ -1504,6 +1647,341 @@ static const VkBufferUsageFlags rs_input_usage =
 static VkDeviceAddress rs_input(const uint8_t* bytes, size_t n) {
   return n ? rs_make_buffer(n, rs_input_usage, bytes).address : 0;
 }
+
+/* ---- Copies of acceleration structures (scene.build.copy, R-AS-COPY) ---- */
+
+static void rs_copy_failed(const rs_level* l, uint32_t i, const char* what,
+                           unsigned long long bytes) {
+  printf("FAIL: R-AS-COPY: %s %u: %s (%llu bytes)\n", l->name, (unsigned)l->index[i], what, bytes);
+  exit(1);
+}
+
+/* A property of each structure of the level written into a new query pool
+   (vkCmdWriteAccelerationStructuresPropertiesKHR) after the builds. */
+static VkQueryPool rs_write_properties(const rs_level* l, VkQueryType type) {
+  VkQueryPoolCreateInfo info = {VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+  VkQueryPool pool;
+  VkCommandBuffer cmd;
+  info.queryType = type;
+  info.queryCount = l->count;
+  rs_check(vkCreateQueryPool(rs_device, &info, NULL, &pool), "vkCreateQueryPool");
+  cmd = rs_begin();
+  vkCmdResetQueryPool(cmd, pool, 0, l->count);
+  rs_cmd_write_properties(cmd, l->count, l->handle, type, pool, 0);
+  rs_submit(cmd);
+  return pool;
+}
+
+/* The pool's `count` results, 64-bit, waited for: `words` words each (2:
+   the value and, with VK_QUERY_RESULT_WITH_AVAILABILITY_BIT in flags, its
+   availability). */
+static void rs_pool_results(VkQueryPool pool, uint32_t count, uint32_t words,
+                            VkQueryResultFlags flags, uint64_t* out) {
+  rs_check(vkGetQueryPoolResults(rs_device, pool, 0, count, (size_t)count * words * 8, out,
+                                 (VkDeviceSize)words * 8,
+                                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT | flags),
+           "vkGetQueryPoolResults");
+}
+
+/* A size of each structure of the level as the device reports it
+   (compacted or serialized). */
+static void rs_query_sizes(const rs_level* l, VkQueryType type, VkDeviceSize* out) {
+  uint64_t values[RS_MAX_LEVEL];
+  uint32_t i;
+  rs_pool_results(rs_write_properties(l, type), l->count, 1, 0, values);
+  for (i = 0; i < l->count; ++i) out[i] = values[i];
+}
+
+/* Clones at each structure's size, or compacted copies at the compacted
+   size the device reports (R-AS-COPY), by one submission. */
+static void rs_copy_level(rs_level* l, int compact) {
+  VkCopyAccelerationStructureInfoKHR copy = {
+      VK_STRUCTURE_TYPE_COPY_ACCELERATION_STRUCTURE_INFO_KHR};
+  VkAccelerationStructureKHR to[RS_MAX_LEVEL];
+  VkDeviceSize sizes[RS_MAX_LEVEL];
+  VkCommandBuffer cmd;
+  uint32_t i;
+  if (compact)
+    rs_query_sizes(l, VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR, sizes);
+  else
+    memcpy(sizes, l->size, sizeof sizes);
+  for (i = 0; i < l->count; ++i) {
+    if (sizes[i] == 0 || sizes[i] > l->size[i])
+      rs_copy_failed(l, i, "compacted size outside (0, the structure's size]",
+                     (unsigned long long)sizes[i]);
+    to[i] = rs_create_structure(l->type, sizes[i]);
+  }
+  cmd = rs_begin();
+  copy.mode = compact ? VK_COPY_ACCELERATION_STRUCTURE_MODE_COMPACT_KHR
+                      : VK_COPY_ACCELERATION_STRUCTURE_MODE_CLONE_KHR;
+  for (i = 0; i < l->count; ++i) {
+    copy.src = l->handle[i];
+    copy.dst = to[i];
+    rs_cmd_copy(cmd, &copy);
+  }
+  rs_submit(cmd);
+  for (i = 0; i < l->count; ++i) {
+    l->handle[i] = to[i];
+    l->size[i] = sizes[i];
+    l->room[i] = compact ? 0 : sizes[i];
+  }
+}
+
+/* Serialized data: the two UUIDs, then 64-bit sizes (serialized, deserialized). */
+#define RS_SERIAL_HEADER (2 * VK_UUID_SIZE + 16)
+
+/* The serialized data checked as rayspec checks it before deserializing:
+   the device calls it compatible, its size is the one the query gave. */
+static VkDeviceSize rs_check_serialized(const rs_level* l, uint32_t i, const uint8_t* data,
+                                        VkDeviceSize queried) {
+  VkAccelerationStructureVersionInfoKHR version = {
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_VERSION_INFO_KHR};
+  VkAccelerationStructureCompatibilityKHR compatible =
+      VK_ACCELERATION_STRUCTURE_COMPATIBILITY_INCOMPATIBLE_KHR;
+  uint64_t serialized, deserialized;
+  version.pVersionData = data;
+  rs_compatibility(rs_device, &version, &compatible);
+  if (compatible != VK_ACCELERATION_STRUCTURE_COMPATIBILITY_COMPATIBLE_KHR)
+    rs_copy_failed(l, i, "the device calls its own serialized data incompatible",
+                   (unsigned long long)queried);
+  memcpy(&serialized, data + 2 * VK_UUID_SIZE, 8);
+  memcpy(&deserialized, data + 2 * VK_UUID_SIZE + 8, 8);
+  if (serialized != queried)
+    rs_copy_failed(l, i, "serialized data names another size than the query gave",
+                   (unsigned long long)serialized);
+  return deserialized;
+}
+
+/* A level's structures serialized into host-visible memory, each at the
+   size the query reports and at a 256-byte aligned address. */
+typedef struct {
+  rs_buffer memory;
+  VkDeviceAddress at[RS_MAX_LEVEL]; /* each one's address */
+  VkDeviceSize sizes[RS_MAX_LEVEL]; /* each one's serialization size */
+} rs_serialized;
+
+static const uint8_t* rs_serialized_data(const rs_serialized* s, uint32_t i) {
+  return (const uint8_t*)s->memory.mapped + (s->at[i] - s->memory.address);
+}
+
+/* The serialization sizes asked (each at least the header, else a FAIL:
+   rayspec stops there before anything is written past a region), then every
+   structure serialized, readable by the host once this returns. */
+static void rs_serialize(const rs_level* l, rs_serialized* s) {
+  VkCopyAccelerationStructureToMemoryInfoKHR out = {
+      VK_STRUCTURE_TYPE_COPY_ACCELERATION_STRUCTURE_TO_MEMORY_INFO_KHR};
+  VkDeviceSize offsets[RS_MAX_LEVEL], total = 0;
+  VkDeviceAddress base;
+  VkCommandBuffer cmd;
+  uint32_t i;
+  rs_query_sizes(l, VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_SIZE_KHR, s->sizes);
+  for (i = 0; i < l->count; ++i) {
+    if (s->sizes[i] < RS_SERIAL_HEADER)
+      rs_copy_failed(l, i,
+                     "the serialization size query gave less than the header every serialized "
+                     "structure holds",
+                     (unsigned long long)s->sizes[i]);
+    offsets[i] = total;
+    total += (s->sizes[i] + 255) & ~(VkDeviceSize)255;
+  }
+  s->memory =
+      rs_make_buffer(total + 256, rs_input_usage | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, NULL);
+  base = (s->memory.address + 255) & ~(VkDeviceAddress)255;
+  cmd = rs_begin();
+  out.mode = VK_COPY_ACCELERATION_STRUCTURE_MODE_SERIALIZE_KHR;
+  for (i = 0; i < l->count; ++i) {
+    s->at[i] = base + offsets[i];
+    out.src = l->handle[i];
+    out.dst.deviceAddress = s->at[i];
+    rs_cmd_copy_to_memory(cmd, &out);
+  }
+  rs_submit(cmd);
+}
+
+/* Each structure serialized, checked, and deserialized into a new structure
+   of the size its data names. */
+static void rs_serialize_level(rs_level* l) {
+  VkCopyMemoryToAccelerationStructureInfoKHR back = {
+      VK_STRUCTURE_TYPE_COPY_MEMORY_TO_ACCELERATION_STRUCTURE_INFO_KHR};
+  static rs_serialized s;
+  VkCommandBuffer cmd;
+  uint32_t i;
+  rs_serialize(l, &s);
+  cmd = rs_begin();
+  back.mode = VK_COPY_ACCELERATION_STRUCTURE_MODE_DESERIALIZE_KHR;
+  for (i = 0; i < l->count; ++i) {
+    l->size[i] = l->room[i] = rs_check_serialized(l, i, rs_serialized_data(&s, i), s.sizes[i]);
+    l->handle[i] = rs_create_structure(l->type, l->size[i]);
+    back.src.deviceAddress = s.at[i];
+    back.dst = l->handle[i];
+    rs_cmd_copy_from_memory(cmd, &back);
+  }
+  rs_submit(cmd);
+}
+
+/* The level's structures replaced by their copies (scene.build.copy). */
+static void rs_copy_structures(rs_level* l) {
+  if (!l->count) return;
+  if (RS_COPY == RS_COPY_SERIALIZE)
+    rs_serialize_level(l);
+  else if (RS_COPY != RS_COPY_NONE)
+    rs_copy_level(l, RS_COPY == RS_COPY_COMPACT);
+}
+
+/* ---- Structure queries (scene.build.queries) held to the specification -- */
+
+/* Each answer that breaks a guarantee: printed, counted into the verdict. */
+static int rs_structure_failures;
+
+static void rs_query_finding(const rs_level* l, uint32_t i, const char* rule, const char* what) {
+  printf("FAIL: %s: %s %u: %s\n", rule, l->name, (unsigned)l->index[i], what);
+  ++rs_structure_failures;
+}
+
+/* A finding with the value observed and what it is held to. */
+static void rs_query_numbers(const rs_level* l, uint32_t i, const char* rule, const char* what,
+                             unsigned long long observed, unsigned long long against) {
+  rs_query_finding(l, i, rule, what);
+  printf("  observed %llu, against %llu\n", observed, against);
+}
+
+/* R-AS-QUERY-AVAILABILITY: each query available after the wait, its value
+   the same read with the availability word; R-AS-QUERY-COMPACTED and
+   R-AS-QUERY-SIZE: nonzero, at most the size the structure was created with. */
+static void rs_check_query(const rs_level* l, VkQueryType type, uint64_t* values) {
+  VkQueryPool pool = rs_write_properties(l, type);
+  uint64_t pairs[2 * RS_MAX_LEVEL];
+  const int sized = type == VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR ||
+                    type == VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SIZE_KHR;
+  const char* rule = type == VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR
+                         ? "R-AS-QUERY-COMPACTED"
+                         : "R-AS-QUERY-SIZE";
+  uint32_t i;
+  rs_pool_results(pool, l->count, 1, 0, values);
+  rs_pool_results(pool, l->count, 2, VK_QUERY_RESULT_WITH_AVAILABILITY_BIT, pairs);
+  for (i = 0; i < l->count; ++i) {
+    if (pairs[2 * i + 1] == 0)
+      rs_query_numbers(l, i, "R-AS-QUERY-AVAILABILITY",
+                       "the availability word after VK_QUERY_RESULT_WAIT_BIT is 0 (query type)",
+                       type, 0);
+    if (pairs[2 * i] != values[i])
+      rs_query_numbers(l, i, "R-AS-QUERY-AVAILABILITY",
+                       "the value read with the availability word differs from the one without",
+                       pairs[2 * i], values[i]);
+    if (sized && (values[i] == 0 || values[i] > l->size[i]))
+      rs_query_numbers(l, i, rule, "queried size outside (0, the size it was created with]",
+                       values[i], l->size[i]);
+  }
+}
+
+/* The device's VkPhysicalDeviceIDProperties::driverUUID. */
+static void rs_driver_uuid(uint8_t* uuid) {
+  VkPhysicalDeviceIDProperties id = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ID_PROPERTIES};
+  VkPhysicalDeviceProperties2 p = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &id};
+  vkGetPhysicalDeviceProperties2(rs_physical, &p);
+  memcpy(uuid, id.driverUUID, VK_UUID_SIZE);
+}
+
+static void rs_print_uuid(const char* what, const uint8_t* uuid) {
+  uint32_t k;
+  printf("  %s ", what);
+  for (k = 0; k < VK_UUID_SIZE; ++k) printf("%02x", uuid[k]);
+  printf("\n");
+}
+
+/* R-AS-SERIAL-HEADER: the header's driverUUID the device's, its UUIDs
+   compatible, its serialized size the queried one. */
+static void rs_check_header(const rs_level* l, uint32_t i, const uint8_t* data, uint64_t queried) {
+  VkAccelerationStructureVersionInfoKHR version = {
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_VERSION_INFO_KHR};
+  VkAccelerationStructureCompatibilityKHR compatible =
+      VK_ACCELERATION_STRUCTURE_COMPATIBILITY_INCOMPATIBLE_KHR;
+  uint8_t uuid[VK_UUID_SIZE];
+  uint64_t serialized;
+  rs_driver_uuid(uuid);
+  if (memcmp(uuid, data, VK_UUID_SIZE) != 0) {
+    rs_query_finding(l, i, "R-AS-SERIAL-HEADER",
+                     "serialized header's driverUUID is not the device's driverUUID");
+    rs_print_uuid("header driverUUID", data);
+    rs_print_uuid("device driverUUID", uuid);
+  }
+  version.pVersionData = data;
+  rs_compatibility(rs_device, &version, &compatible);
+  if (compatible != VK_ACCELERATION_STRUCTURE_COMPATIBILITY_COMPATIBLE_KHR)
+    rs_query_finding(l, i, "R-AS-SERIAL-HEADER",
+                     "the device calls its own serialized header's UUIDs incompatible");
+  memcpy(&serialized, data + 2 * VK_UUID_SIZE, 8);
+  if (serialized != queried)
+    rs_query_numbers(l, i, "R-AS-SERIAL-HEADER",
+                     "the header's serialized size is not the serialization size query's",
+                     serialized, queried);
+}
+
+/* R-AS-SERIAL-POINTERS of top level i: its handle count the pointers
+   query's (when asked), each handle the address of a BLAS it references. */
+static void rs_check_pointers(const rs_level* l, uint32_t i, const uint8_t* data, uint64_t bytes,
+                              const uint64_t* queried) {
+  uint64_t count, k, handle;
+  uint32_t b;
+  memcpy(&count, data + RS_SERIAL_HEADER, 8);
+  if (queried && count != *queried)
+    rs_query_numbers(l, i, "R-AS-SERIAL-POINTERS",
+                     "the header's handle count is not the bottom-level pointers query's", count,
+                     *queried);
+  if (bytes < RS_SERIAL_HEADER + 8 || count > (bytes - RS_SERIAL_HEADER - 8) / 8) {
+    rs_query_numbers(l, i, "R-AS-SERIAL-POINTERS",
+                     "the header's handle count is more than the serialized bytes hold", count,
+                     bytes);
+    return;
+  }
+  for (k = 0; k < count; ++k) {
+    int known = 0;
+    memcpy(&handle, data + RS_SERIAL_HEADER + 8 + 8 * k, 8);
+    for (b = 0; b < RS_BLAS_COUNT; ++b)
+      if (rs_referenced[l->index[i] * RS_BLAS_COUNT + b] && rs_blas_address[b] == handle) known = 1;
+    if (!known)
+      rs_query_numbers(l, i, "R-AS-SERIAL-POINTERS",
+                       "a handle of the header (its index, its value) is no address of a BLAS "
+                       "its instances reference",
+                       k, handle);
+  }
+}
+
+/* scene.build.queries of the level's structures, in the case's order (the
+   bottom-level pointers of top levels only); then, where a serialization
+   size or the pointers were asked, each structure serialized and its header
+   checked (rayspec's vulkan/structure_queries.cpp). */
+static void rs_query_level(const rs_level* l) {
+  uint64_t values[RS_MAX_LEVEL], sizes[RS_MAX_LEVEL], pointers[RS_MAX_LEVEL];
+  int top = l->type == VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, serialize = 0, counted = 0;
+  static rs_serialized s;
+  uint32_t q, i;
+  if (!l->count) return;
+  for (q = 0; q < rs_query_count; ++q) {
+    const VkQueryType type = rs_queries[q];
+    const int is_pointers =
+        type == VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_BOTTOM_LEVEL_POINTERS_KHR;
+    if (is_pointers && !top) continue; /* VUID-...-12425: top levels only */
+    rs_check_query(l, type, values);
+    if (type == VK_QUERY_TYPE_ACCELERATION_STRUCTURE_SERIALIZATION_SIZE_KHR) {
+      serialize = 1;
+      memcpy(sizes, values, sizeof sizes);
+    }
+    if (is_pointers) {
+      counted = 1;
+      memcpy(pointers, values, sizeof pointers);
+    }
+  }
+  if (!serialize && !counted) return;
+  rs_serialize(l, &s);
+  for (i = 0; i < l->count; ++i) {
+    rs_check_header(l, i, rs_serialized_data(&s, i), serialize ? sizes[i] : s.sizes[i]);
+    if (top)
+      rs_check_pointers(l, i, rs_serialized_data(&s, i), s.sizes[i], counted ? &pointers[i] : NULL);
+  }
+}
+
+/* ---- The scene built: bottom levels, then the top levels over them ------ */
 
 static void rs_describe_triangles(VkAccelerationStructureGeometryTrianglesDataKHR* t,
                                   const rs_geometry* g) {
@@ -1524,25 +2002,64 @@ static void rs_describe_aabbs(VkAccelerationStructureGeometryAabbsDataKHR* a,
   a->data.deviceAddress = rs_input(g->vertices, g->vertex_bytes);
 }
 
-static VkDeviceAddress rs_build_blas(const rs_blas* b) {
-  VkAccelerationStructureGeometryKHR geos[RS_MAX_GEOMETRIES];
-  VkAccelerationStructureBuildRangeInfoKHR ranges[RS_MAX_GEOMETRIES];
-  VkAccelerationStructureKHR as;
+/* BLAS b's geometries in `state`. */
+static void rs_describe_blas(uint32_t state, uint32_t b, rs_inputs* in) {
+  const rs_blas* blas = &rs_blases[state * RS_BLAS_COUNT + b];
   uint32_t i;
-  for (i = 0; i < b->geometry_count; ++i) {
-    const rs_geometry* g = &rs_geometries[b->first_geometry + i];
-    memset(&geos[i], 0, sizeof geos[i]);
-    geos[i].sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR;
-    geos[i].geometryType = g->type;
-    geos[i].flags = g->flags;
+  memset(in, 0, sizeof *in);
+  in->count = blas->geometry_count;
+  for (i = 0; i < blas->geometry_count; ++i) {
+    const rs_geometry* g = &rs_geometries[blas->first_geometry + i];
+    in->geos[i].sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR;
+    in->geos[i].geometryType = g->type;
+    in->geos[i].flags = g->flags;
     if (g->type == VK_GEOMETRY_TYPE_AABBS_KHR)
-      rs_describe_aabbs(&geos[i].geometry.aabbs, g);
+      rs_describe_aabbs(&in->geos[i].geometry.aabbs, g);
     else
-      rs_describe_triangles(&geos[i].geometry.triangles, g);
-    ranges[i] = g->range;
+      rs_describe_triangles(&in->geos[i].geometry.triangles, g);
+    in->ranges[i] = g->range;
   }
-  return rs_build(VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, geos, b->geometry_count, ranges,
-                  &as);
+}
+
+/* Top level `level` in `state`: every instance of the state in order, those
+   of the other levels (and those without a BLAS) with reference 0. */
+static void rs_describe_tlas(uint32_t state, uint32_t level, rs_inputs* in) {
+  VkAccelerationStructureInstanceKHR instances[RS_INSTANCE_COUNT];
+  uint32_t i;
+  memset(instances, 0, sizeof instances);
+  for (i = 0; i < RS_INSTANCE_COUNT; ++i) {
+    const rs_instance* inst = &rs_instances[state * RS_INSTANCE_COUNT + i];
+    memcpy(&instances[i].transform, inst->transform, sizeof inst->transform);
+    instances[i].instanceCustomIndex = inst->custom_index;
+    instances[i].mask = inst->mask;
+    instances[i].instanceShaderBindingTableRecordOffset = inst->sbt_offset;
+    instances[i].flags = inst->flags;
+    instances[i].accelerationStructureReference =
+        inst->tlas == level && inst->blas != RS_NONE ? rs_blas_address[inst->blas] : 0;
+  }
+  memset(in, 0, sizeof *in);
+  in->count = 1;
+  in->geos[0].sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR;
+  in->geos[0].geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
+  in->geos[0].geometry.instances.sType =
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
+  in->geos[0].geometry.instances.data.deviceAddress =
+      rs_input((const uint8_t*)instances, sizeof instances);
+  in->ranges[0].primitiveCount = RS_INSTANCE_COUNT;
+}
+
+/* One level: built, then each update in turn, the queries and the copy where
+   scene.build.order puts them (RS_QUERY_AT, RS_COPY_AT: before that update;
+   after the last: RS_STATE_COUNT - 1). */
+static void rs_run_level(rs_level* l) {
+  uint32_t i, k;
+  for (i = 0; i < l->count; ++i) rs_build_first(l, i);
+  for (k = 0; k < RS_STATE_COUNT; ++k) {
+    if (k == RS_QUERY_AT) rs_query_level(l);
+    if (k == RS_COPY_AT) rs_copy_structures(l);
+    if (k + 1 == RS_STATE_COUNT) break;
+    for (i = 0; i < l->count; ++i) rs_update(l, k + 1, i);
+  }
 }
 
 /* NotSupported where the device cannot build from a geometry's vertex format. */
@@ -1561,31 +2078,27 @@ static void rs_check_vertex_formats(void) {
   }
 }
 
-static VkAccelerationStructureKHR rs_build_scene(void) {
-  VkDeviceAddress blas[RS_BLAS_COUNT];
-  VkAccelerationStructureInstanceKHR instances[RS_INSTANCE_COUNT];
-  VkAccelerationStructureGeometryKHR geo = {VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
-  VkAccelerationStructureBuildRangeInfoKHR range = {RS_INSTANCE_COUNT, 0, 0, 0};
-  VkAccelerationStructureKHR tlas;
+/* The BLASes some instance of the first state references, then the top
+   levels over them as they end up (copied, updated): the top levels'
+   structures into `tlas`. */
+static void rs_build_scene(VkAccelerationStructureKHR* tlas) {
+  static rs_level bottom, top;
   uint32_t i;
   rs_check_vertex_formats();
-  for (i = 0; i < RS_BLAS_COUNT; ++i) blas[i] = rs_build_blas(&rs_blases[i]);
-  memset(instances, 0, sizeof instances);
-  for (i = 0; i < RS_INSTANCE_COUNT; ++i) {
-    const rs_instance* in = &rs_instances[i];
-    memcpy(&instances[i].transform, in->transform, sizeof in->transform);
-    instances[i].instanceCustomIndex = in->custom_index;
-    instances[i].mask = in->mask;
-    instances[i].instanceShaderBindingTableRecordOffset = in->sbt_offset;
-    instances[i].flags = in->flags;
-    instances[i].accelerationStructureReference = in->blas == RS_NONE ? 0 : blas[in->blas];
-  }
-  geo.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
-  geo.geometry.instances.sType =
-      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
-  geo.geometry.instances.data.deviceAddress = rs_input((const uint8_t*)instances, sizeof instances);
-  rs_build(VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, &geo, 1, &range, &tlas);
-  return tlas;
+  bottom.type = VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR;
+  bottom.name = "BLAS";
+  bottom.describe = rs_describe_blas;
+  for (i = 0; i < RS_BLAS_COUNT; ++i)
+    if (rs_blases[i].reached) bottom.index[bottom.count++] = i;
+  rs_run_level(&bottom);
+  for (i = 0; i < bottom.count; ++i)
+    rs_blas_address[bottom.index[i]] = rs_structure_address(bottom.handle[i]);
+  top.type = VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR;
+  top.name = "TLAS";
+  top.describe = rs_describe_tlas;
+  for (i = 0; i < RS_TLAS_COUNT; ++i) top.index[top.count++] = i;
+  rs_run_level(&top);
+  for (i = 0; i < RS_TLAS_COUNT; ++i) tlas[i] = top.handle[i];
 }
 
 /* ---- The ray tracing pipeline ------------------------------------------- */
@@ -1797,15 +2310,16 @@ static VkDescriptorType rs_descriptor_type(enum rs_binding_kind kind) {
                                : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 }
 
-static VkDescriptorSet rs_bind(VkDescriptorSetLayout* set_layout, VkAccelerationStructureKHR tlas,
-                               const rs_io* io) {
+/* The set: the top levels (an array where there are several) and the buffers. */
+static VkDescriptorSet rs_bind(VkDescriptorSetLayout* set_layout,
+                               const VkAccelerationStructureKHR* tlas, const rs_io* io) {
   VkDescriptorSetLayoutBinding b[RS_BINDING_COUNT];
   VkWriteDescriptorSet w[RS_BINDING_COUNT];
   VkDescriptorBufferInfo buffers[RS_BINDING_COUNT];
   VkDescriptorImageInfo images[RS_BINDING_COUNT];
   VkWriteDescriptorSetAccelerationStructureKHR as = {
       VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
-  VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1},
+  VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, RS_TLAS_COUNT},
                                    {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, RS_BINDING_COUNT},
                                    {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, RS_BINDING_COUNT}};
   VkDescriptorSetLayoutCreateInfo layout = {VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
@@ -1814,8 +2328,8 @@ static VkDescriptorSet rs_bind(VkDescriptorSetLayout* set_layout, VkAcceleration
   VkDescriptorPool pool_handle;
   VkDescriptorSet set;
   uint32_t i;
-  as.accelerationStructureCount = 1;
-  as.pAccelerationStructures = &tlas;
+  as.accelerationStructureCount = RS_TLAS_COUNT;
+  as.pAccelerationStructures = tlas;
   for (i = 0; i < RS_BINDING_COUNT; ++i) {
     const rs_buffer* src = rs_bound_buffer(i, io);
     int is_tlas = rs_bindings[i].kind == RS_BIND_TLAS;
@@ -1824,7 +2338,7 @@ static VkDescriptorSet rs_bind(VkDescriptorSetLayout* set_layout, VkAcceleration
     memset(&w[i], 0, sizeof w[i]);
     b[i].binding = w[i].dstBinding = rs_bindings[i].binding;
     b[i].descriptorType = w[i].descriptorType = rs_descriptor_type(rs_bindings[i].kind);
-    b[i].descriptorCount = w[i].descriptorCount = 1;
+    b[i].descriptorCount = w[i].descriptorCount = is_tlas ? RS_TLAS_COUNT : 1;
     b[i].stageFlags = VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_MISS_BIT_KHR |
                       VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR | VK_SHADER_STAGE_ANY_HIT_BIT_KHR |
                       VK_SHADER_STAGE_INTERSECTION_BIT_KHR | VK_SHADER_STAGE_CALLABLE_BIT_KHR |
@@ -2211,7 +2725,7 @@ static int rs_verdict(int failures) {
 
 int main(int argc, char** argv) {
   rs_io io;
-  VkAccelerationStructureKHR tlas;
+  VkAccelerationStructureKHR tlas[RS_TLAS_COUNT];
   VkDescriptorSetLayout set_layout;
   VkPipelineLayoutCreateInfo layout_info = {VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   VkPipelineLayout layout;
@@ -2223,7 +2737,7 @@ int main(int argc, char** argv) {
   rs_pick_device(argc, argv);
   rs_create_device();
   rs_load_functions();
-  tlas = rs_build_scene();
+  rs_build_scene(tlas);
   io = rs_make_io();
   set = rs_bind(&set_layout, tlas, &io);
   layout_info.setLayoutCount = 1;
@@ -2240,6 +2754,7 @@ int main(int argc, char** argv) {
   rs_submit(cmd);
   failures = rs_compare((const uint32_t*)io.records.mapped, (const uint32_t*)io.counters.mapped);
   failures += rs_compare_images(io.images, (const uint32_t*)io.records.mapped);
+  failures += rs_structure_failures;
   vkDeviceWaitIdle(rs_device);
   return rs_verdict(failures);
 }

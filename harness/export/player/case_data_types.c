@@ -48,11 +48,15 @@ typedef struct {
 } rs_geometry;
 typedef struct {
   uint32_t first_geometry, geometry_count;
+  uint32_t reached; /* some instance of the scene as first built references it: built */
 } rs_blas;
 typedef struct {
   float transform[12];
   uint32_t custom_index, mask, sbt_offset, flags, blas; /* blas: RS_NONE for none */
+  uint32_t tlas;                                        /* the top level it belongs to */
 } rs_instance;
+/* scene.build.copy: the structures the traces use are copies (R-AS-COPY). */
+enum rs_copy { RS_COPY_NONE, RS_COPY_CLONE, RS_COPY_COMPACT, RS_COPY_SERIALIZE };
 typedef struct {
   uint32_t group; /* RS_NONE: an all-zero record */
   uint32_t data_words;

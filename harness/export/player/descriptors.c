@@ -49,15 +49,16 @@ static VkDescriptorType rs_descriptor_type(enum rs_binding_kind kind) {
                                : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 }
 
-static VkDescriptorSet rs_bind(VkDescriptorSetLayout* set_layout, VkAccelerationStructureKHR tlas,
-                               const rs_io* io) {
+/* The set: the top levels (an array where there are several) and the buffers. */
+static VkDescriptorSet rs_bind(VkDescriptorSetLayout* set_layout,
+                               const VkAccelerationStructureKHR* tlas, const rs_io* io) {
   VkDescriptorSetLayoutBinding b[RS_BINDING_COUNT];
   VkWriteDescriptorSet w[RS_BINDING_COUNT];
   VkDescriptorBufferInfo buffers[RS_BINDING_COUNT];
   VkDescriptorImageInfo images[RS_BINDING_COUNT];
   VkWriteDescriptorSetAccelerationStructureKHR as = {
       VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
-  VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1},
+  VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, RS_TLAS_COUNT},
                                    {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, RS_BINDING_COUNT},
                                    {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, RS_BINDING_COUNT}};
   VkDescriptorSetLayoutCreateInfo layout = {VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
@@ -66,8 +67,8 @@ static VkDescriptorSet rs_bind(VkDescriptorSetLayout* set_layout, VkAcceleration
   VkDescriptorPool pool_handle;
   VkDescriptorSet set;
   uint32_t i;
-  as.accelerationStructureCount = 1;
-  as.pAccelerationStructures = &tlas;
+  as.accelerationStructureCount = RS_TLAS_COUNT;
+  as.pAccelerationStructures = tlas;
   for (i = 0; i < RS_BINDING_COUNT; ++i) {
     const rs_buffer* src = rs_bound_buffer(i, io);
     int is_tlas = rs_bindings[i].kind == RS_BIND_TLAS;
@@ -76,7 +77,7 @@ static VkDescriptorSet rs_bind(VkDescriptorSetLayout* set_layout, VkAcceleration
     memset(&w[i], 0, sizeof w[i]);
     b[i].binding = w[i].dstBinding = rs_bindings[i].binding;
     b[i].descriptorType = w[i].descriptorType = rs_descriptor_type(rs_bindings[i].kind);
-    b[i].descriptorCount = w[i].descriptorCount = 1;
+    b[i].descriptorCount = w[i].descriptorCount = is_tlas ? RS_TLAS_COUNT : 1;
     b[i].stageFlags = VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_MISS_BIT_KHR |
                       VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR | VK_SHADER_STAGE_ANY_HIT_BIT_KHR |
                       VK_SHADER_STAGE_INTERSECTION_BIT_KHR | VK_SHADER_STAGE_CALLABLE_BIT_KHR |

@@ -7,6 +7,11 @@ static PFN_vkGetAccelerationStructureDeviceAddressKHR rs_as_address;
 static PFN_vkCreateRayTracingPipelinesKHR rs_create_pipelines;
 static PFN_vkGetRayTracingShaderGroupHandlesKHR rs_group_handles;
 static PFN_vkCmdTraceRaysKHR rs_cmd_trace;
+static PFN_vkCmdWriteAccelerationStructuresPropertiesKHR rs_cmd_write_properties;
+static PFN_vkCmdCopyAccelerationStructureKHR rs_cmd_copy;
+static PFN_vkCmdCopyAccelerationStructureToMemoryKHR rs_cmd_copy_to_memory;
+static PFN_vkCmdCopyMemoryToAccelerationStructureKHR rs_cmd_copy_from_memory;
+static PFN_vkGetDeviceAccelerationStructureCompatibilityKHR rs_compatibility;
 
 static VkInstance rs_instance_handle;
 static VkPhysicalDevice rs_physical;
@@ -115,6 +120,27 @@ static void rs_chain_ray_query(VkPhysicalDeviceRayQueryFeaturesKHR* on_rq,
   on->pNext = on_rq;
 }
 
+/* VK_KHR_ray_tracing_maintenance1's feature chained onto `on`, where the
+ * case queries a structure's size or its bottom-level pointers; NotSupported
+ * where the device lacks it. */
+static void rs_chain_maintenance1(VkPhysicalDeviceRayTracingMaintenance1FeaturesKHR* on_m1,
+                                  VkPhysicalDeviceFeatures2* on) {
+  VkPhysicalDeviceRayTracingMaintenance1FeaturesKHR m1 = {
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_MAINTENANCE_1_FEATURES_KHR};
+  VkPhysicalDeviceFeatures2 have = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &m1};
+  if (!RS_NEEDS_MAINTENANCE1) return;
+  if (!rs_has_extension(rs_physical, VK_KHR_RAY_TRACING_MAINTENANCE_1_EXTENSION_NAME))
+    rs_unsupported(
+        "scene.build.queries size, bottom_level_pointers: the device lacks "
+        "VK_KHR_ray_tracing_maintenance1");
+  vkGetPhysicalDeviceFeatures2(rs_physical, &have);
+  if (!m1.rayTracingMaintenance1)
+    rs_unsupported("scene.build.queries size, bottom_level_pointers: rayTracingMaintenance1");
+  on_m1->rayTracingMaintenance1 = VK_TRUE;
+  on_m1->pNext = on->pNext;
+  on->pNext = on_m1;
+}
+
 static void rs_create_device(void) {
   VkPhysicalDeviceAccelerationStructureFeaturesKHR as = {
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
@@ -132,9 +158,12 @@ static void rs_create_device(void) {
   VkPhysicalDeviceFeatures2 on = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v12_on};
   VkPhysicalDeviceRayQueryFeaturesKHR rq_on = {
       VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
-  const char* extensions[] = {
-      VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
-      VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME, VK_KHR_RAY_QUERY_EXTENSION_NAME};
+  VkPhysicalDeviceRayTracingMaintenance1FeaturesKHR m1_on = {
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_MAINTENANCE_1_FEATURES_KHR};
+  const char* extensions[5] = {VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
+                               VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
+                               VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
+  uint32_t extension_count = 3;
   float priority = 1.0f;
   VkDeviceQueueCreateInfo queue = {VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
   VkDeviceCreateInfo info = {VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &on};
@@ -159,6 +188,10 @@ static void rs_create_device(void) {
   v12_on.shaderInt8 = v12.shaderInt8;
   v12_on.shaderFloat16 = v12.shaderFloat16;
   rs_chain_ray_query(&rq_on, &on);
+  rs_chain_maintenance1(&m1_on, &on);
+  if (RS_NEEDS_RAY_QUERY) extensions[extension_count++] = VK_KHR_RAY_QUERY_EXTENSION_NAME;
+  if (RS_NEEDS_MAINTENANCE1)
+    extensions[extension_count++] = VK_KHR_RAY_TRACING_MAINTENANCE_1_EXTENSION_NAME;
   vkGetPhysicalDeviceQueueFamilyProperties(rs_physical, &count, families);
   for (rs_queue_family = 0; rs_queue_family < count; ++rs_queue_family)
     if (families[rs_queue_family].queueFlags & VK_QUEUE_COMPUTE_BIT) break;
@@ -168,7 +201,7 @@ static void rs_create_device(void) {
   queue.pQueuePriorities = &priority;
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queue;
-  info.enabledExtensionCount = RS_NEEDS_RAY_QUERY ? 4 : 3; /* VK_KHR_ray_query last */
+  info.enabledExtensionCount = extension_count;
   info.ppEnabledExtensionNames = extensions;
   rs_check(vkCreateDevice(rs_physical, &info, NULL, &rs_device), "vkCreateDevice");
   vkGetDeviceQueue(rs_device, rs_queue_family, 0, &rs_queue);
@@ -177,6 +210,19 @@ static void rs_create_device(void) {
 #define RS_PROC(var, type, name)                    \
   var = (type)vkGetDeviceProcAddr(rs_device, name); \
   if (!var) rs_unsupported(name)
+
+/* The commands that copy structures (scene.build.copy) and ask their sizes. */
+static void rs_load_copy_functions(void) {
+  RS_PROC(rs_cmd_write_properties, PFN_vkCmdWriteAccelerationStructuresPropertiesKHR,
+          "vkCmdWriteAccelerationStructuresPropertiesKHR");
+  RS_PROC(rs_cmd_copy, PFN_vkCmdCopyAccelerationStructureKHR, "vkCmdCopyAccelerationStructureKHR");
+  RS_PROC(rs_cmd_copy_to_memory, PFN_vkCmdCopyAccelerationStructureToMemoryKHR,
+          "vkCmdCopyAccelerationStructureToMemoryKHR");
+  RS_PROC(rs_cmd_copy_from_memory, PFN_vkCmdCopyMemoryToAccelerationStructureKHR,
+          "vkCmdCopyMemoryToAccelerationStructureKHR");
+  RS_PROC(rs_compatibility, PFN_vkGetDeviceAccelerationStructureCompatibilityKHR,
+          "vkGetDeviceAccelerationStructureCompatibilityKHR");
+}
 
 static void rs_load_functions(void) {
   VkCommandPoolCreateInfo pool = {VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -192,6 +238,7 @@ static void rs_load_functions(void) {
   RS_PROC(rs_group_handles, PFN_vkGetRayTracingShaderGroupHandlesKHR,
           "vkGetRayTracingShaderGroupHandlesKHR");
   RS_PROC(rs_cmd_trace, PFN_vkCmdTraceRaysKHR, "vkCmdTraceRaysKHR");
+  rs_load_copy_functions();
   pool.queueFamilyIndex = rs_queue_family;
   rs_check(vkCreateCommandPool(rs_device, &pool, NULL, &rs_pool), "vkCreateCommandPool");
 }

@@ -7,7 +7,10 @@ set(RAYSPEC_PLAYER_PARTS
     instance_and_device.c      # the instance, the device picked and created, its functions
     buffers_and_commands.c     # host-visible buffers with addresses, command submission
     images.c                   # the storage images (outputs.images): made, cleared, copied back
-    acceleration_structures.c  # the bottom levels and the top level built
+    acceleration_structures.c  # a level's structures: created, built, updated
+    structure_copies.c         # their copies: cloned, compacted, serialized and back
+    structure_queries.c        # their properties queried (scene.build.queries), checked
+    scene_builds.c             # the bottom levels, then the top levels over them
     pipeline.c                 # the ray tracing pipeline (or raygen's compute pipeline) from the SPIR-V
     shader_binding_table.c     # the SBT written with the device's group handles
     descriptors.c              # the descriptor set: the top level and the buffers

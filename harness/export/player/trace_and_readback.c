@@ -42,7 +42,7 @@ static int rs_verdict(int failures) {
 
 int main(int argc, char** argv) {
   rs_io io;
-  VkAccelerationStructureKHR tlas;
+  VkAccelerationStructureKHR tlas[RS_TLAS_COUNT];
   VkDescriptorSetLayout set_layout;
   VkPipelineLayoutCreateInfo layout_info = {VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   VkPipelineLayout layout;
@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
   rs_pick_device(argc, argv);
   rs_create_device();
   rs_load_functions();
-  tlas = rs_build_scene();
+  rs_build_scene(tlas);
   io = rs_make_io();
   set = rs_bind(&set_layout, tlas, &io);
   layout_info.setLayoutCount = 1;
@@ -71,6 +71,7 @@ int main(int argc, char** argv) {
   rs_submit(cmd);
   failures = rs_compare((const uint32_t*)io.records.mapped, (const uint32_t*)io.counters.mapped);
   failures += rs_compare_images(io.images, (const uint32_t*)io.records.mapped);
+  failures += rs_structure_failures;
   vkDeviceWaitIdle(rs_device);
   return rs_verdict(failures);
 }
