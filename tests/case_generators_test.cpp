@@ -1,5 +1,5 @@
-// The seeded mesh generators (fan, triangulation, subdivision), the aim rays and their
-// case syntax.
+// The seeded mesh generators (fan, triangulation, subdivision), scene.split and the
+// share frames, the aim rays and their case syntax.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,6 +8,7 @@
 
 #include "case/aim_rays.h"
 #include "case/seeded_random.h"
+#include "case/share_frame.h"
 #include "case/subdivision.h"
 #include "case/triangle_fan.h"
 #include "case/triangle_grid.h"
@@ -279,6 +280,116 @@ TEST(GeneratedMesh, Errors) {
   expect(parse_blas("{subdivision: {triangles: 8, size: [1, 1]}}"), "subdivision", "seed");
   EXPECT_TRUE(parse_blas("{fan: {triangles: 5, seed: 2}}").value);
   EXPECT_TRUE(parse_blas("{subdivision: {triangles: 8, size: [1, 1], seed: 2, relief: 1}}").value);
+}
+
+// scene.split: the fan's triangles in geometries or instances of their own,
+// every world position bit identical to the fan's; the rays aimed at the
+// whole fan first.
+ParseResult parseSplit(const std::string& split, const std::string& center = "[0, 0, 0]") {
+  return parseCaseText(
+      "rules: [R-WATERTIGHT]\nscene:\n  blas:\n    m:\n      - triangles: {fan: {triangles: 6, "
+      "radius: 2, center: " +
+          center + "}}\n  instances: [{blas: m}]\n  split: " + split +
+          "\nrays:\n  aim: {offset: [0, 0, 3]}\n  sbt_stride: 0\npipeline: {miss: [[]], "
+          "hit_groups: "
+          "[{}]}\n",
+      "t.yaml", "family/t");
+}
+
+// The world corners of every triangle of the scene, in instance, geometry
+// and primitive order.
+std::vector<std::array<Vec3, 3>> worldTriangles(const Scene& s) {
+  std::vector<std::array<Vec3, 3>> out;
+  for (const Instance& inst : s.instances)
+    for (const Geometry& g : s.blases[*inst.blas].geometries)
+      for (uint32_t p = 0; p < g.primitiveCount(); ++p) {
+        std::array<Vec3, 3> t;
+        for (uint32_t v = 0; v < 3; ++v) {
+          const Vec3& o = g.vertices[g.indices.empty() ? 3 * p + v : g.indices[3 * p + v]];
+          for (int row = 0; row < 3; ++row) {
+            double w = inst.transform[4 * row + 3];
+            for (int col = 0; col < 3; ++col) w += double(inst.transform[4 * row + col]) * o[col];
+            t[v][row] = static_cast<float>(w);
+            EXPECT_EQ(double(t[v][row]), w);  // exact
+          }
+        }
+        out.push_back(t);
+      }
+  return out;
+}
+
+TEST(SplitMesh, GeometriesAndInstancesKeepTheWorldFan) {
+  Geometry fan;
+  makeTriangleFan({6, 2, {0, 0, 0}, 0}, fan);
+  Scene whole;
+  whole.blases.push_back({"m", {fan}, {}});
+  whole.instances.push_back(Instance{});
+  whole.instances[0].blas = 0;
+  const auto expected = worldTriangles(whole);
+  const ParseResult geoms = parseSplit("{blas: m, into: geometries}");
+  ASSERT_TRUE(geoms.value) << geoms.errors[0].format();
+  EXPECT_EQ(geoms.value->rays.rays.size(), 1u + 6u + 6u);  // aimed at the whole fan
+  ASSERT_EQ(geoms.value->scene.blases[0].geometries.size(), 6u);
+  EXPECT_EQ(worldTriangles(geoms.value->scene), expected);
+  const ParseResult insts = parseSplit("{blas: m, into: instances}");
+  ASSERT_TRUE(insts.value) << insts.errors[0].format();
+  ASSERT_EQ(insts.value->scene.instances.size(), 6u);
+  ASSERT_EQ(insts.value->scene.blases.size(), 6u);
+  EXPECT_EQ(worldTriangles(insts.value->scene), expected);
+  const ParseResult moved =
+      parseSplit("{blas: m, into: instances, translate: [0, 0, 4], cycle_axes: true}");
+  ASSERT_TRUE(moved.value) << moved.errors[0].format();
+  EXPECT_EQ(worldTriangles(moved.value->scene), expected);
+  const Scene& ms = moved.value->scene;
+  EXPECT_EQ(ms.instances[1].transform, (Transform{0, 0, 1, 0, 1, 0, 0, 0, 0, 1, 0, 4}));
+  EXPECT_EQ(ms.instances[2].transform, (Transform{0, 1, 0, 0, 0, 0, 1, 0, 1, 0, 0, 0}));
+}
+
+TEST(SplitMesh, ErrorsNameTheField) {
+  auto expect = [](const ParseResult& r, const std::string& text) {
+    ASSERT_FALSE(r.value);
+    ASSERT_FALSE(r.errors.empty());
+    EXPECT_EQ(r.errors[0].loc.line, 7) << r.errors[0].format();
+    EXPECT_NE(r.errors[0].loc.field.find("scene.split"), std::string::npos);
+    EXPECT_NE(r.errors[0].message.find(text), std::string::npos) << r.errors[0].format();
+  };
+  expect(parseSplit("{blas: n, into: geometries}"), "unknown BLAS 'n'");
+  expect(parseSplit("{blas: m, into: boxes}"), "unknown split 'boxes'");
+  expect(parseSplit("{blas: m, into: geometries, translate: [1, 0, 0]}"), "only with into");
+  // A fan about the origin moved by 0.1: its rim's coordinates leave the float grid.
+  expect(parseSplit("{blas: m, into: instances, translate: [0.1, 0, 0]}"), "off the float grid");
+}
+
+// R-WATERTIGHT's frames (case/share_frame.h): the instances of the identity
+// transform share one; any other transform, or another geometry transform,
+// frames its triangles apart.
+TEST(ShareFrame, IdentityInstancesShareGeometryTransformsApart) {
+  Instance a, b, moved;
+  moved.transform = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 4};
+  EXPECT_EQ(shareFrame(a, 0, std::nullopt), shareFrame(b, 7, std::nullopt));
+  EXPECT_EQ(shareFrame(a, 0, std::nullopt), shareFrame(a, 0, kIdentity));
+  EXPECT_NE(shareFrame(moved, 1, std::nullopt), shareFrame(a, 0, std::nullopt));
+  EXPECT_NE(shareFrame(moved, 1, std::nullopt), shareFrame(moved, 2, std::nullopt));
+  EXPECT_EQ(shareFrame(moved, 1, std::nullopt), shareFrame(moved, 1, std::nullopt));
+  const Transform scaled = {2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0};
+  EXPECT_NE(shareFrame(a, 0, scaled), shareFrame(a, 0, std::nullopt));
+  EXPECT_EQ(shareFrame(a, 0, scaled), shareFrame(b, 3, scaled));
+}
+
+// aim.every: each k-th point of each feature, from the first.
+TEST(AimRays, EveryKthPointOfEachFeature) {
+  Geometry g;
+  makeTriangleFan({8, 2, {0, 0, 0}, 0}, g);
+  AimSpec spec;
+  const std::vector<AimTarget> all = meshAimTargets(g, spec);
+  ASSERT_EQ(all.size(), 1u + 8u + 8u);
+  spec.every = 3;
+  const std::vector<AimTarget> some = meshAimTargets(g, spec);
+  ASSERT_EQ(some.size(), 1u + 3u + 3u);  // the centre; spokes 0, 3, 6; faces 0, 3, 6
+  EXPECT_EQ(some[0].feature, AimFeature::Vertex);
+  EXPECT_EQ(some[1].object, all[1].object);
+  EXPECT_EQ(some[2].object, all[4].object);
+  EXPECT_EQ(some[6].primitives, std::vector<uint32_t>{6});
 }
 
 }  // namespace

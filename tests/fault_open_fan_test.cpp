@@ -135,5 +135,33 @@ TEST(OpenFan, AClosedFanOrSharedEdgeMissedOnBothTracesLeaks) {
   }
 }
 
+// The closed fan of four split into geometries of one instance, or into
+// instances of the identity transform, still closes (case/share_frame.h): a
+// miss on both traces leaks. Into instances moved apart (axes cycled, every
+// other one lifted), each triangle is a frame of its own: the miss is one of
+// the legal answers, a plain tie, no leak.
+TEST(OpenFan, AFanSplitIntoGeometriesOrIdentityInstancesStillCloses) {
+  const std::string fan = "[0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 1]";
+  std::string yaml = twiceTracedCase(fan, "[0, 0, 10]", "[]");
+  const std::string instances = "  instances:\n    - {blas: mesh}\n";
+  yaml.replace(yaml.find("[{trace: {}}]"), 13, "[{trace: {sbt_stride: 0}}]");
+  for (const auto& [split, status] :
+       {std::pair{"{blas: mesh, into: geometries}", Status::QualityWarning},
+        std::pair{"{blas: mesh, into: instances}", Status::QualityWarning},
+        std::pair{"{blas: mesh, into: instances, translate: [0, 0, 4], cycle_axes: true}",
+                  Status::Pass}}) {
+    std::string split_yaml = yaml;
+    split_yaml.replace(split_yaml.find(instances), instances.size(),
+                       instances + "  split: " + split + "\n");
+    const FanRun r = fanRunOf(split_yaml);
+    ASSERT_EQ(r.model.statusText(), "ok") << split;
+    ASSERT_EQ(r.model.ambiguous.size(), 1u) << split;
+    EXPECT_EQ(r.model.ambiguous[0].leak_answers.empty(), status == Status::Pass) << split;
+    EXPECT_EQ(hasMissReplay(r.model.ambiguous[0]), status == Status::Pass) << split;
+    const Verdict v = compareResults(r.c, r.plan, missedTwice(r), r.model);
+    EXPECT_EQ(v.status, status) << split << ": " << v.headline();
+  }
+}
+
 }  // namespace
 }  // namespace rayspec

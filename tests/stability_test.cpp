@@ -47,16 +47,42 @@ TEST(StabilityTable, SumsVariantsAndListsEachSourcesRates) {
   const std::string t = formatStabilityTable(e);
   // grid at 1: 200 rays, exact 0 / 0, lavapipe 4 leaks (20 per 1000) and 40 double hits (200 per
   // 1000).
-  EXPECT_NE(t.find("grid                   1    200 |      0.0      0.0 |     20.0    200.0"),
-            std::string::npos)
+  EXPECT_NE(
+      t.find("grid                          1    200 |      0.0      0.0 |     20.0    200.0"),
+      std::string::npos)
       << t;
   // Magnitudes ascend within a family; a source without a run shows '-'.
-  EXPECT_LT(t.find("grid                   1 "), t.find("grid                 1e6"));
+  EXPECT_LT(t.find("grid                          1 "), t.find("grid                        1e6"));
   EXPECT_NE(t.find("1e6    100 |      0.0      0.0 |                 -"), std::string::npos) << t;
   const nlohmann::json j = stabilityJson(e);
   EXPECT_EQ(j["entries"].size(), 4u);
   EXPECT_EQ(j["entries"][2]["double_hits"], 40u);
   EXPECT_DOUBLE_EQ(j["entries"][2]["double_hits_per_1000"].get<double>(), 200.0);
+}
+
+// The header names no planar meshes (the watertight meshes are not
+// planar), and two drivers of one device name keep a column each: a bundle
+// that names its driver is labelled by it, one that does not by its whole
+// device name.
+TEST(StabilityTable, TwoDriversOfOneDeviceNameKeepColumnsOfTheirOwn) {
+  const std::string old_lvp =
+      stabilityDeviceSource("llvmpipe (LLVM 15.0.6, 256 bits)", "Mesa 25.0.7");
+  const std::string new_lvp =
+      stabilityDeviceSource("llvmpipe (LLVM 15.0.6, 256 bits)", "Mesa 26.2.6 (git-1234)");
+  EXPECT_EQ(old_lvp, "llvmpipe Mesa 25.0.7");
+  EXPECT_EQ(new_lvp, "llvmpipe Mesa 26.2.6");
+  EXPECT_EQ(stabilityDeviceSource("llvmpipe (LLVM 22.1.8, 256 bits)", ""),
+            "llvmpipe (LLVM 22.1.8, 256 bits)");
+  std::vector<StabilityEntry> e;
+  addCounts(e, {"closed-fan-instances", 1, "1", old_lvp, {100, 0, 40}});
+  addCounts(e, {"closed-fan-instances", 1, "1", new_lvp, {100, 0, 0}});
+  ASSERT_EQ(e.size(), 2u);
+  EXPECT_EQ(stabilitySources(e), (std::vector<std::string>{old_lvp, new_lvp}));
+  const std::string t = formatStabilityTable(e);
+  EXPECT_EQ(t.find("planar"), std::string::npos) << t;
+  EXPECT_NE(t.find("| llvmpipe Mesa 25.0.7 | llvmpipe Mesa 26.2.6"), std::string::npos) << t;
+  EXPECT_NE(t.find("closed-fan-instances          1    100 |"), std::string::npos) << t;
+  EXPECT_NE(t.find("|         0.0    400.0 |         0.0      0.0"), std::string::npos) << t;
 }
 
 // Small multiples: a row per family, a panel per source in it, leaks and

@@ -234,6 +234,7 @@ Result<void> writeResults(const Results& r, const std::string& dir_name,
   j["case"] = r.case_name;
   j["backend"] = r.backend;
   j["device"] = r.device;
+  if (!r.driver.empty()) j["driver"] = r.driver;
   j["status"] = sideStatusName(r.status);
   j["status_detail"] = r.status_detail;
   j["case_file"] = r.case_file;
@@ -313,6 +314,8 @@ Result<void> readHeader(const json& j, FieldReader& field, Results& r) {
                     "case: '" + r.case_name.substr(0, 120) + "' is no case name: " + problem);
   r.backend = field(j, "backend");
   r.device = field(j, "device");
+  if (j.contains("driver") && j.at("driver").is_string())
+    r.driver = j.at("driver").get<std::string>();
   if (!parseSideStatus(field(j, "status").get<std::string>(), &r.status))
     return badValue(field.dir,
                     "status: unknown value '" + field(j, "status").get<std::string>() + "'");

@@ -18,6 +18,16 @@ Pos key(const Vec3& v) {
   return {v[0], v[1], v[2]};
 }
 
+// Each every-th target of each feature, from the first.
+std::vector<AimTarget> everyNth(std::vector<AimTarget> all, uint32_t every) {
+  if (every <= 1) return all;
+  std::vector<AimTarget> out;
+  std::map<AimFeature, uint32_t> seen;
+  for (AimTarget& t : all)
+    if (seen[t.feature]++ % every == 0) out.push_back(std::move(t));
+  return out;
+}
+
 // The triangles without a NaN, each with its primitive index.
 struct MeshTriangles {
   std::vector<std::array<Vec3, 3>> tris;
@@ -108,7 +118,7 @@ std::vector<AimTarget> meshAimTargets(const Geometry& g, const AimSpec& spec) {
         p[c] = (double(m.tris[t][0][c]) + double(m.tris[t][1][c]) + double(m.tris[t][2][c])) / 3;
       out.push_back({AimFeature::Face, 0, 0, {m.ids[t]}, p, {}});
     }
-  return out;
+  return everyNth(std::move(out), spec.every);
 }
 
 std::vector<DVec3> meshAimPoints(const Geometry& g, const AimSpec& spec) {

@@ -32,6 +32,7 @@ struct AimSpec {
   uint32_t edge_points = 1;                          // points per edge, at k / (edge_points + 1)
   std::array<double, 3> offset{0, 0, 1};             // world origin = aim point + offset
   double direction_scale = 1;                        // world direction = -offset * direction_scale
+  uint32_t every = 1;  // only each every-th point of each feature, from the first (large meshes)
 };
 
 // The interior features of a triangle mesh, in object space (double):

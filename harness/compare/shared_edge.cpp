@@ -4,6 +4,8 @@
 #include <map>
 #include <tuple>
 
+#include "case/share_frame.h"
+
 namespace rayspec {
 namespace {
 
@@ -25,15 +27,22 @@ bool triangleOf(const Case& c, const Candidate& k, Tri* out) {
   return true;
 }
 
-// The hit candidates' triangles, grouped by (instance, geometry); false when
-// some candidate is not a triangle of the case.
-bool groupTriangles(const Case& c, const RayAmbiguity& a,
-                    std::map<std::pair<uint32_t, uint32_t>, std::vector<Tri>>* groups) {
+using Groups = std::map<ShareFrame, std::vector<Tri>>;
+
+// The frame candidate k's triangle shares edges in (triangleOf checked it).
+ShareFrame frameOf(const Case& c, const Candidate& k) {
+  const Instance& inst = c.scene.instances[k.instance];
+  return shareFrame(inst, k.instance, c.scene.blases[*inst.blas].geometries[k.geometry].transform);
+}
+
+// The hit candidates' triangles, grouped by frame (case/share_frame.h);
+// false when some candidate is not a triangle of the case.
+bool groupTriangles(const Case& c, const RayAmbiguity& a, Groups* groups) {
   for (const Candidate& k : a.candidates) {
     Tri t;
     if (!k.hit) continue;
     if (!triangleOf(c, k, &t)) return false;
-    (*groups)[{k.instance, k.geometry}].push_back(t);
+    (*groups)[frameOf(c, k)].push_back(t);
   }
   return true;
 }
@@ -41,7 +50,7 @@ bool groupTriangles(const Case& c, const RayAmbiguity& a,
 }  // namespace
 
 bool crossesBorderOnly(const Case& c, const RayAmbiguity& a) {
-  std::map<std::pair<uint32_t, uint32_t>, std::vector<Tri>> groups;
+  Groups groups;
   if (!groupTriangles(c, a, &groups) || groups.size() != 1 || crossesSharedEdge(c, a)) return false;
   const std::vector<Tri>& tris = groups.begin()->second;
   if (a.reason == AmbiguityReason::Edge) return tris.size() == 1;
@@ -56,11 +65,11 @@ bool crossesBorderOnly(const Case& c, const RayAmbiguity& a) {
 
 bool crossesSharedEdge(const Case& c, const RayAmbiguity& a) {
   if (a.reason != AmbiguityReason::Edge && a.reason != AmbiguityReason::Vertex) return false;
-  // Group the hit candidates by (instance, geometry).
-  std::map<std::pair<uint32_t, uint32_t>, std::vector<Tri>> groups;
+  // Group the hit candidates by frame (case/share_frame.h).
+  Groups groups;
   for (const Candidate& k : a.candidates) {
     Tri t;
-    if (k.hit && triangleOf(c, k, &t)) groups[{k.instance, k.geometry}].push_back(t);
+    if (k.hit && triangleOf(c, k, &t)) groups[frameOf(c, k)].push_back(t);
   }
   for (const auto& [key, tris] : groups) {
     // Directed edges, corner k to corner k + 1: two triangles of the same

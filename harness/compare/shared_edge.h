@@ -8,8 +8,8 @@
 
 namespace rayspec {
 
-// From the case's geometry: the ray's hit candidates of one instance and
-// geometry that contain a common edge (reason "edge": the edge belongs to two
+// From the case's geometry: the ray's hit candidates of one frame
+// (case/share_frame.h) that contain a common edge (reason "edge": the edge belongs to two
 // of them) or a common vertex (reason "vertex": every edge of the candidates
 // at that vertex belongs to two of them).
 bool crossesSharedEdge(const Case& c, const RayAmbiguity& a);

@@ -327,8 +327,8 @@ std::vector<FaultImpl> structureMutations() {
        "2^16 primitives or instances become none, 2^16 + k the first k",
        nullptr, buildCounts16Bit},
       {"mesh-triangle-dropped", K::CaseMutation,
-       "a build loses the middle triangle of a mesh (the first of 4 to 65,536 triangles): "
-       "nothing is found where it lay",
+       "a build loses the middle triangle of a mesh (the first of 4 to 65,536 triangles, or a "
+       "mesh split into as many geometries or instances): nothing is found where it lay",
        nullptr, meshTriangleDropped},
       {"mesh-triangle-duplicated", K::CaseMutation,
        "a build keeps the middle triangle of a mesh (as above) twice, the copy a primitive of its "

@@ -4,6 +4,8 @@
 #include <map>
 #include <utility>
 
+#include "case/share_frame.h"
+
 namespace rayspec {
 namespace {
 
@@ -113,17 +115,18 @@ bool closes(const std::vector<FanTriangle>& tris) {
 bool closesAroundRay(const ModelScene& scene, const std::vector<ModelCandidate>& cands,
                      const std::vector<size_t>& group, const TraceRay& ray, uint32_t flags) {
   if (group.size() < 2) return false;  // one triangle or box: its border
-  std::map<std::pair<uint32_t, uint32_t>, std::vector<FanTriangle>> by_geometry;
+  std::map<ShareFrame, std::vector<FanTriangle>> by_frame;
   for (const size_t k : group) {
     const ModelCandidate& c = cands[k];
     if (c.aabb) return true;
-    const ModelGeometry& g = scene.blases[scene.instances[c.instance].blas].geometries[c.geometry];
+    const ModelInstance& mi = scene.instances[c.instance];
+    const ModelGeometry& g = scene.blases[mi.blas].geometries[c.geometry];
     if (c.primitive >= g.triangles.size()) return true;  // no corners kept: as before
-    by_geometry[{c.instance, c.geometry}].push_back(
+    by_frame[shareFrame(*mi.src, c.instance, g.transform)].push_back(
         {g.triangles[c.primitive], c.near_edges, trace_detail::facing(scene, c, ray, flags).front,
          c.ambiguity == TriAmbiguity::Degenerate});
   }
-  for (const auto& [key, tris] : by_geometry)
+  for (const auto& [frame, tris] : by_frame)
     if (closes(tris)) return true;
   return false;
 }

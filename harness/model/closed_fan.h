@@ -4,8 +4,8 @@
 // vertex of an open fan, an edge whose other triangle was culled, masked or
 // faces the other way), a miss is one of the legal answers.
 //
-// Vulkan, Ray Traversal, Watertightness: two triangles of one instance with
-// the same winding share an edge (its two vertices bit identical, met in
+// Vulkan, Ray Traversal, Watertightness: two triangles of one frame
+// (case/share_frame.h) with the same winding share an edge (its two vertices bit identical, met in
 // opposite order); a closed fan is three or more triangles around a shared
 // vertex whose every edge at that vertex is shared by exactly two of them.
 // The model asks in addition that the triangles face the ray alike: a fold
@@ -26,7 +26,8 @@
 namespace rayspec {
 
 // Whether the triangle candidates `group` (indices into `cands`, met at one
-// distance) of one instance and geometry close around the ray: where one
+// distance) of one frame (case/share_frame.h: one instance and geometry
+// transform, or instances of the identity transform) close around the ray: where one
 // of them is near a vertex (two of its edges within their bounds), a closed
 // fan around that vertex; else an edge shared by two of them, one near it.
 // A box among two or more counts as closing (boxes are decided together);

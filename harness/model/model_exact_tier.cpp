@@ -9,6 +9,7 @@
 #include <optional>
 #include <type_traits>
 
+#include "case/share_frame.h"
 #include "model/closed_fan.h"
 #include "model/model_tracer.h"
 #include "model/sphere_error.h"
@@ -37,6 +38,14 @@ bool TraceClassifier::eligible(const ModelCandidate& cand) const {
 }
 
 namespace {
+
+// The share frame of a triangle candidate (case/share_frame.h); boxes all
+// in one.
+ShareFrame candidateFrame(const ModelScene& scene, const ModelCandidate& c) {
+  if (c.aabb) return {};
+  const ModelInstance& mi = scene.instances[c.instance];
+  return shareFrame(*mi.src, c.instance, scene.blases[mi.blas].geometries[c.geometry].transform);
+}
 
 Candidate answerOf(const Committed& b) {
   if (!b.valid) return {};
@@ -138,16 +147,18 @@ void TraceClassifier::findUnsure(const std::vector<std::pair<size_t, double>>& r
 
 void TraceClassifier::findSharedTriangles() {
   if (reason_ != AmbiguityReason::Edge && reason_ != AmbiguityReason::Vertex) return;
-  // The triangles of one instance within the bound of the same shared edge
-  // or vertex (same t), each with the model's own decision (one of them
-  // where the mesh is closed around the ray: watertight.cpp): a watertight
-  // device finds one of them, so a double hit shows as extra any-hit runs.
+  // The triangles of one frame (case/share_frame.h) within the bound of the
+  // same shared edge or vertex (same t), each with the model's own decision
+  // (one of them where the mesh is closed around the ray: watertight.cpp): a
+  // watertight device finds one of them, so a double hit shows as extra
+  // any-hit runs.
   const ModelCandidate* first = nullptr;
   for (const ModelCandidate& cand : cands_) {
     if (cand.aabb || cand.in_plane || cand.ambiguity == TriAmbiguity::None || !eligible(cand))
       continue;
     if (!first) first = &cand;
-    if (cand.instance == first->instance && std::fabs(cand.t - first->t) <= tr_.tol(first->t)) {
+    if (candidateFrame(scene_, cand) == candidateFrame(scene_, *first) &&
+        std::fabs(cand.t - first->t) <= tr_.tol(first->t)) {
       amb_.shared_triangles.push_back({cand.hit, cand.instance, cand.geometry, cand.primitive});
       shared_group_.push_back(static_cast<size_t>(&cand - cands_.data()));
     }
@@ -646,11 +657,35 @@ uint64_t ModelTracer::effectOf(const Committed& b, const Payload& payload,
 
 namespace {
 
-// The unsure candidates grouped by distance, each group [first, last) in
-// `unsure`: a group crosses one edge or vertex, shared or not; a triangle
-// the ray runs in the plane of, or a box its ray misses, is a group of its
-// own.
-std::vector<std::pair<size_t, size_t>> unsureGroups(const Traversal& actual,
+// `unsure` with the candidates of each run met at one distance put in order
+// of their share frames (stable): triangles of different frames decide apart
+// (a device's object rays round apart there: one of each frame's may be hit,
+// several in all), so unsureGroups makes each frame a group of its own.
+std::vector<size_t> byFrame(const ModelScene& scene, const Traversal& actual,
+                            const std::vector<ModelCandidate>& cands,
+                            const std::vector<size_t>& unsure) {
+  std::vector<size_t> out = unsure;
+  size_t g0 = 0;
+  while (g0 < out.size()) {
+    size_t g1 = g0 + 1;
+    while (g1 < out.size() &&
+           std::fabs(cands[out[g1]].t - cands[out[g1 - 1]].t) <= actual.tol(cands[out[g1]].t))
+      ++g1;
+    std::stable_sort(out.begin() + static_cast<long>(g0), out.begin() + static_cast<long>(g1),
+                     [&](size_t a, size_t b) {
+                       return candidateFrame(scene, cands[a]) < candidateFrame(scene, cands[b]);
+                     });
+    g0 = g1;
+  }
+  return out;
+}
+
+// The unsure candidates grouped by distance and share frame, each group
+// [first, last) in `unsure` (byFrame's order): a group crosses one edge or
+// vertex, shared or not; a triangle the ray runs in the plane of, or a box
+// its ray misses, is a group of its own.
+std::vector<std::pair<size_t, size_t>> unsureGroups(const ModelScene& scene,
+                                                    const Traversal& actual,
                                                     const std::vector<ModelCandidate>& cands,
                                                     const std::vector<size_t>& unsure) {
   auto alone = [&](size_t u) {
@@ -662,7 +697,8 @@ std::vector<std::pair<size_t, size_t>> unsureGroups(const Traversal& actual,
     size_t g1 = g0 + 1;
     while (g1 < unsure.size() && !alone(g0) && !alone(g1) &&
            std::fabs(cands[unsure[g1]].t - cands[unsure[g1 - 1]].t) <=
-               actual.tol(cands[unsure[g1]].t))
+               actual.tol(cands[unsure[g1]].t) &&
+           candidateFrame(scene, cands[unsure[g1]]) == candidateFrame(scene, cands[unsure[g0]]))
       ++g1;
     groups.emplace_back(g0, g1);
     g0 = g1;
@@ -703,7 +739,9 @@ void forEachCombination(const std::vector<std::vector<size_t>>& choices, Visit v
 constexpr size_t kMaxWhatIfCombinations = 256;
 
 // What-if runs of the decision for an ambiguous trace: within a group of
-// unsure candidates (unsureGroups) each candidate alone is a hit (watertight:
+// unsure candidates (unsureGroups: one distance, one share frame, so the
+// triangles of instances moved apart decide apart and several of them may be
+// hit) each candidate alone is a hit (watertight:
 // at least one of a shared edge's triangles is hit); a group that does not
 // close around the ray may also be no hit, and one that closes (a shared
 // edge, a closed fan: closed_fan.h) no hit only as a leak. A ray may meet
@@ -717,12 +755,14 @@ constexpr size_t kMaxWhatIfCombinations = 256;
 // sandbox: their counters, record and payload effects are undone.
 std::vector<WhatIfAnswer> ModelTracer::whatIf(const Traversal& actual,
                                               const std::vector<ModelCandidate>& cands,
-                                              const std::vector<size_t>& unsure,
+                                              const std::vector<size_t>& unsure_found,
                                               const Payload& payload_in,
                                               std::vector<WhatIfAnswer>* leaks) {
   std::vector<WhatIfAnswer> out;
-  if (unsure.empty()) return out;
-  const std::vector<std::pair<size_t, size_t>> groups = unsureGroups(actual, cands, unsure);
+  if (unsure_found.empty()) return out;
+  const std::vector<size_t> unsure = byFrame(*sh_.scene, actual, cands, unsure_found);
+  const std::vector<std::pair<size_t, size_t>> groups =
+      unsureGroups(*sh_.scene, actual, cands, unsure);
   // Each group's choices: its candidates alone, then none.
   std::vector<std::vector<size_t>> choices(groups.size());
   std::vector<bool> closes(groups.size());

@@ -441,6 +441,7 @@ void describeGeometry(ModelGeometry& mg, const Geometry& g, size_t bi, size_t gi
                       double ray_pad, bool keep_triangles, bool filters, bool grown) {
   mg.kind = g.kind;
   mg.flags = g.flags;
+  mg.transform = g.transform;
   mg.blas = static_cast<uint32_t>(bi);
   mg.index = static_cast<uint32_t>(gi);
   mg.tier = tier;

@@ -36,6 +36,7 @@ struct ModelGeometry {
   // coordinates' bounds, unbounded along a NaN component), by primitive.
   std::unordered_map<uint32_t, std::array<double, 6>> nan_regions;
   uint32_t blas = 0, index = 0;
+  std::optional<Transform> transform;  // the geometry transform (case/share_frame.h)
   ModelTier tier = ModelTier::Exact;
   // Exact tier: how far a device's vertices may differ from `triangles` (a
   // geometry transform rounded in another order; zero without one), and the

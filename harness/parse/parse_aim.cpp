@@ -30,8 +30,9 @@ bool featureList(YamlReader& r, const YAML::Node& at, const std::string& f, AimS
 
 bool readAimSpec(YamlReader& r, const YAML::Node& n, AimSpec& spec) {
   const std::string field = "rays.aim";
-  if (!r.expectMap(n, field,
-                   {"instance", "geometry", "at", "edge_points", "offset", "direction_scale"}) ||
+  if (!r.expectMap(
+          n, field,
+          {"instance", "geometry", "at", "edge_points", "offset", "direction_scale", "every"}) ||
       !r.require(n, field, "offset"))
     return false;
   auto get = [&](const char* key) {
@@ -48,6 +49,11 @@ bool readAimSpec(YamlReader& r, const YAML::Node& n, AimSpec& spec) {
   uint_field("instance", kInstanceFieldMask, spec.instance);
   uint_field("geometry", kInstanceFieldMask, spec.geometry);
   uint_field("edge_points", 64, spec.edge_points);
+  uint_field("every", 1u << 20, spec.every);
+  if (spec.every == 0) {
+    r.error(get("every"), field + ".every", "must be at least 1");
+    ok = false;
+  }
   if (YamlReader::has(n, "at") && !featureList(r, get("at"), field + ".at", spec)) ok = false;
   if (auto o = r.numbers<3>(get("offset"), field + ".offset"))
     spec.offset = *o;

@@ -138,6 +138,8 @@ void parseTop(YamlReader& r, const YAML::Node& root, const std::vector<std::stri
   if (auto s = YamlReader::get(root, "scene"); s.IsDefined() && !s.IsNull())
     parseScene(r, s, c.scene);
   if (r.require(root, "", "rays")) parseRays(r, YamlReader::get(root, "rays"), c.scene, c.rays);
+  if (const YAML::Node s = YamlReader::get(root, "scene"); s.IsMap() && YamlReader::has(s, "split"))
+    parseSceneSplit(r, YamlReader::get(s, "split"), c.scene);
   if (auto o = YamlReader::get(root, "outputs"); o.IsDefined() && !o.IsNull()) {
     parseOutputs(r, o, c.outputs);
     if (!c.outputs.images.empty() && c.rays.rays.empty() && r.errorCount() == 0)

@@ -23,6 +23,9 @@ void parseBuildOrder(YamlReader& r, const YAML::Node& n, Scene& scene);
 // One instance of scene.instances (its blas named among scene.blases).
 void parseInstance(YamlReader& r, const YAML::Node& n, const std::string& field, const Scene& scene,
                    Instance& inst);
+// scene.split (parse_split.cpp), once the rays are aimed: a mesh's
+// triangles each in a geometry or an instance of its own (case/split_mesh.h).
+void parseSceneSplit(YamlReader& r, const YAML::Node& n, Scene& scene);
 // The scene first: the `aim` form aims at one of its meshes.
 void parseRays(YamlReader& r, const YAML::Node& n, const Scene& scene, Rays& rays);
 void parsePipeline(YamlReader& r, const YAML::Node& n, Pipeline& pipeline);

@@ -417,7 +417,7 @@ const char* asCopyName(AsCopy c) {
 }
 
 void parseScene(YamlReader& r, const YAML::Node& n, Scene& scene) {
-  if (!r.expectMap(n, "scene", {"blas", "instances", "build", "update"})) return;
+  if (!r.expectMap(n, "scene", {"blas", "instances", "build", "update", "split"})) return;
   if (auto b = YamlReader::get(n, "build"); b.IsDefined()) parseBuild(r, b, scene.build);
   if (auto b = YamlReader::get(n, "blas"); b.IsDefined() && !b.IsNull()) parseBlases(r, b, scene);
   const YAML::Node insts = YamlReader::get(n, "instances");

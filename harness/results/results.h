@@ -208,6 +208,7 @@ struct Results {
   std::string case_name;
   std::string backend;  // "vulkan" or "model"
   std::string device;   // Vulkan device name, or "embree-<tier>"
+  std::string driver;   // Vulkan driverInfo ("Mesa 25.0.7"); "" for the model or unknown
   SideStatus status = SideStatus::Ok;
   std::string status_detail;  // why, when status is not Ok
   uint32_t width = 0, height = 0;

@@ -50,7 +50,7 @@ bool countBundle(const std::string& dir, LeakCounts* counts, std::string* device
   const std::optional<Results> r = readRunBundle(dir, "stability");
   if (!r) return false;
   *counts = countLeaks(*r);
-  if (device) *device = r->device;
+  if (device) *device = stabilityDeviceSource(r->device, r->driver);
   return true;
 }
 
@@ -96,7 +96,7 @@ int runStability(const StabilityOptions& opt) {
       }
       std::string device;
       if (with_device && tier == "exact" && countBundle(dir + "/device", &e.counts, &device)) {
-        e.source = shortDeviceName(device);
+        e.source = device;
         addCounts(entries, e);
       }
     }
@@ -105,7 +105,7 @@ int runStability(const StabilityOptions& opt) {
       StabilityEntry e{c.family, c.magnitude, c.magnitude_text, "", {}};
       std::string device;
       if (!countBundle(saved + "/" + c.name + "/device", &e.counts, &device)) continue;
-      e.source = shortDeviceName(device);
+      e.source = device;
       addCounts(entries, e);
     }
   std::filesystem::create_directories(opt.out);

@@ -5,6 +5,9 @@
 #include <cstdio>
 #include <map>
 
+#include "base/visible_text.h"
+#include "tiers/tier_runs.h"
+
 namespace rayspec {
 namespace {
 
@@ -33,6 +36,11 @@ const StabilityEntry* find(const std::vector<StabilityEntry>& entries, const std
 
 }  // namespace
 
+std::string stabilityDeviceSource(const std::string& device, const std::string& driver) {
+  if (driver.empty()) return visibleLine(device);
+  return shortDeviceName(device) + " " + shortDeviceName(driver);
+}
+
 void addCounts(std::vector<StabilityEntry>& entries, const StabilityEntry& e) {
   for (StabilityEntry& x : entries)
     if (x.family == e.family && x.magnitude == e.magnitude && x.source == e.source) {
@@ -49,15 +57,21 @@ std::vector<std::string> stabilitySources(const std::vector<StabilityEntry>& ent
   return out;
 }
 
+namespace {
+// A source's column: its two rates, or its name where that is wider (up to 40).
+int columnWidth(const std::string& source) {
+  return std::clamp(static_cast<int>(source.size()), 17, 40);
+}
+}  // namespace
+
 std::string formatStabilityTable(const std::vector<StabilityEntry>& entries) {
   const std::vector<std::string> sources = stabilitySources(entries);
   char buf[128];
-  std::string out =
-      "Leaks and double hits per 1000 rays aimed inside planar meshes (leak / double)\n";
-  std::snprintf(buf, sizeof buf, "%-14s %9s %6s", "family", "magnitude", "rays");
+  std::string out = "Leaks and double hits per 1000 rays aimed inside the meshes (leak / double)\n";
+  std::snprintf(buf, sizeof buf, "%-21s %9s %6s", "family", "magnitude", "rays");
   out += buf;
   for (const std::string& s : sources) {
-    std::snprintf(buf, sizeof buf, " | %17s", s.substr(0, 17).c_str());
+    std::snprintf(buf, sizeof buf, " | %*s", columnWidth(s), s.substr(0, 40).c_str());
     out += buf;
   }
   out += "\n";
@@ -66,16 +80,16 @@ std::string formatStabilityTable(const std::vector<StabilityEntry>& entries) {
       uint64_t rays = 0;
       for (const std::string& s : sources)
         if (const StabilityEntry* e = find(entries, f, m, s)) rays = std::max(rays, e->counts.rays);
-      std::snprintf(buf, sizeof buf, "%-14s %9s %6llu", f.c_str(), text.c_str(),
+      std::snprintf(buf, sizeof buf, "%-21s %9s %6llu", f.c_str(), text.c_str(),
                     (unsigned long long)rays);
       out += buf;
       for (const std::string& s : sources) {
         const StabilityEntry* e = find(entries, f, m, s);
         if (e)
-          std::snprintf(buf, sizeof buf, " | %8.1f %8.1f", e->counts.leakRate(),
+          std::snprintf(buf, sizeof buf, " | %*.1f %8.1f", columnWidth(s) - 9, e->counts.leakRate(),
                         e->counts.doubleRate());
         else
-          std::snprintf(buf, sizeof buf, " | %17s", "-");
+          std::snprintf(buf, sizeof buf, " | %*s", columnWidth(s), "-");
         out += buf;
       }
       out += "\n";

@@ -21,6 +21,12 @@ struct StabilityEntry {
   LeakCounts counts;           // summed over the family's variants at this magnitude
 };
 
+// A device's column: its short name and its driver's version where the
+// bundle names the driver ("llvmpipe Mesa 25.0.7"), else the whole device
+// name ("llvmpipe (LLVM 15.0.6, 256 bits)"), so that two drivers of one
+// device name (two lavapipe versions) keep columns of their own.
+std::string stabilityDeviceSource(const std::string& device, const std::string& driver);
+
 // Adds one case run's counts to its (family, magnitude, source) entry,
 // keeping the order of first appearance.
 void addCounts(std::vector<StabilityEntry>& entries, const StabilityEntry& e);

@@ -57,6 +57,7 @@ Results VulkanEngine::run(const Case& c, const Plan& plan) {
   r.case_name = c.name;
   r.backend = "vulkan";
   r.device = ctx_->info.name;
+  r.driver = ctx_->info.driver_info;
   r.width = c.rays.width;
   r.height = c.rays.height;
   ctx_->capture->take();  // messages from before this run are not its own
