@@ -4,7 +4,6 @@
 
 #include "glsl/glsl_literal.h"
 #include "program/builtins.h"
-#include "program/hit_object.h"
 #include "program/ops.h"
 #include "program/payload_words.h"
 
@@ -118,12 +117,6 @@ std::string spelledOp(const Expr& e, const std::vector<std::string>& a, const St
     const std::string word =  // glsl/emit_ray_query.h
         std::string(ctx.stage == Stage::Miss ? "rs_miss" : "rs_hit") + "_record_word(" + a[0] + ")";
     return record_float ? "uintBitsToFloat(" + word + ")" : word;
-  }
-  if (isHitObjectRecordRead(e) && a.size() == 1) {  // glsl/emit_stage.cpp's RsHitObjectRecord
-    const std::string word =
-        "RsHitObjectRecord(hitObjectGetShaderRecordBufferHandleNV(rs_hit_object)).words[" + a[0] +
-        "]";
-    return e.op == Op::HitObjectRecordFloat ? "uintBitsToFloat(" + word + ")" : word;
   }
   return problem("op " + e.name + " with " + std::to_string(a.size()) + " args");
 }
