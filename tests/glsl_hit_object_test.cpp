@@ -29,8 +29,9 @@ TEST(GlslHitObject, TheRaygenTracesIntoItsHitObjectAndExecutesIt) {
 }
 
 TEST(GlslHitObject, EveryStageOfTheSerCasesCompiles) {
-  for (const char* name : {"ser/getters", "ser/execute", "ser/record-miss", "ser/reorder",
-                           "ser/nested", "ser/matrices"}) {
+  for (const char* name :
+       {"ser/getters", "ser/execute", "ser/record-miss", "ser/reorder", "ser/nested",
+        "ser/matrices", "ser/record-hit", "ser/record-hit-index", "ser/record-handle"}) {
     const Case c = suiteCaseFile(name);
     const GeneratedPipeline g = generateGlsl(c, derivePlan(c));
     for (const GeneratedShader* s : everyStage(g)) {
@@ -46,6 +47,26 @@ TEST(GlslHitObject, ReorderTakesTheHitObjectTheHintOrBoth) {
   EXPECT_NE(raygen.find("reorderThreadNV(rs_hit_object);"), std::string::npos) << raygen;
   EXPECT_NE(raygen.find("reorderThreadNV(RS_LAUNCH_ID.x, 3u);"), std::string::npos);
   EXPECT_NE(raygen.find("reorderThreadNV(rs_hit_object, uint(hitObjectGetPrimitiveIndexNV("),
+            std::string::npos);
+}
+
+TEST(GlslHitObject, ARecordedHitAndTheRecordHandle) {
+  const Case c = suiteCaseFile("ser/record-hit");
+  const std::string raygen = generateGlsl(c, derivePlan(c)).raygen.glsl;
+  EXPECT_NE(raygen.find("hitObjectRecordHitNV(rs_hit_object, rs_tlas, int("), std::string::npos)
+      << raygen;
+  EXPECT_NE(raygen.find("rs_sbt_offset, rs_sbt_stride, rs_origin, rs_tmin, rs_direction, "
+                        "rs_tmax, 0);"),
+            std::string::npos);
+  EXPECT_NE(raygen.find("rs_hit_object_attr = vec2("), std::string::npos);
+  EXPECT_NE(raygen.find("#extension GL_EXT_buffer_reference_uvec2 : require"), std::string::npos);
+  EXPECT_NE(raygen.find("hitobjectshaderrecordnv) buffer RsHitObjectRecord"), std::string::npos);
+  EXPECT_NE(raygen.find("RsHitObjectRecord(hitObjectGetShaderRecordBufferHandleNV(rs_hit_object))"
+                        ".words[0u]"),
+            std::string::npos);
+  const Case by_index = suiteCaseFile("ser/record-hit-index");
+  EXPECT_NE(generateGlsl(by_index, derivePlan(by_index))
+                .raygen.glsl.find("hitObjectRecordHitWithIndexNV(rs_hit_object, rs_tlas, int("),
             std::string::npos);
 }
 

@@ -51,19 +51,33 @@ Rules join(std::initializer_list<const Rules*> parts, Rules own = {}) {
 // it runs through ray queries): whatever shaders observe, any field or
 // counter may show them broken.
 const Rules& pipelineRules() {
-  static const Rules r = {"R-LIBRARY",       "R-RAYGEN-REGION",
-                          "R-NULL-SHADERS",  "R-INDIRECT",
-                          "R-STACK",         "R-LAUNCH-3D",
-                          "R-AS-COPY",       "R-AS-UPDATE",
-                          "R-AS-SIZE",       "R-AS-BUILD",
-                          "R-AS-MEMORY",     "R-AS-CREATE",
-                          "R-VERTEX-FORMAT", "R-POSITION-FETCH",
-                          "R-LIVE-STATE",    "R-CONTROL-FLOW",
-                          "R-RQ-EQUIV",      "R-RQ-INIT",
-                          "R-RQ-CANDIDATES", "R-RQ-COMMIT",
-                          "R-RQ-TERMINATE",  "R-RQ-VALUES",
-                          "R-DEFERRED",      "R-EMPTY-LAYOUT",
-                          "R-HIT-OBJECT",    "R-HIT-OBJECT-DEFERRED"};
+  static const Rules r = {"R-LIBRARY",
+                          "R-RAYGEN-REGION",
+                          "R-NULL-SHADERS",
+                          "R-INDIRECT",
+                          "R-STACK",
+                          "R-LAUNCH-3D",
+                          "R-AS-COPY",
+                          "R-AS-UPDATE",
+                          "R-AS-SIZE",
+                          "R-AS-BUILD",
+                          "R-AS-MEMORY",
+                          "R-AS-CREATE",
+                          "R-VERTEX-FORMAT",
+                          "R-POSITION-FETCH",
+                          "R-LIVE-STATE",
+                          "R-CONTROL-FLOW",
+                          "R-RQ-EQUIV",
+                          "R-RQ-INIT",
+                          "R-RQ-CANDIDATES",
+                          "R-RQ-COMMIT",
+                          "R-RQ-TERMINATE",
+                          "R-RQ-VALUES",
+                          "R-DEFERRED",
+                          "R-EMPTY-LAYOUT",
+                          "R-HIT-OBJECT",
+                          "R-HIT-OBJECT-DEFERRED",
+                          "R-HIT-OBJECT-RECORD"};
   return r;
 }
 

@@ -151,6 +151,10 @@ std::string hitObjectObjectRayWorld(Case& c, ModelOptions& o);
 std::string hitObjectMatricesSwapped(Case& c, ModelOptions& o);
 std::string hitObjectAttributesLost(Case& c, ModelOptions& o);
 std::string hitObjectSbtIndexOfInstance(Case& c, ModelOptions& o);
+std::string hitObjectRecordSbtNoInstanceOffset(Case& c, ModelOptions& o);
+std::string hitObjectRecordIndexPlusInstanceOffset(Case& c, ModelOptions& o);
+std::string hitObjectRecordCustomIndexIsId(Case& c, ModelOptions& o);
+std::string hitObjectRecordHandleOwn(Case& c, ModelOptions& o);
 // Ray query statements (mutate_ray_query.cpp).
 std::string queryInitKeepsCommitted(Case& c, ModelOptions& o);
 std::string queryOffersOpaque(Case& c, ModelOptions& o);

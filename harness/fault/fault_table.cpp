@@ -371,6 +371,21 @@ std::vector<FaultImpl> hitObjectMutations() {
        "hitObjectGetShaderBindingTableRecordIndexNV reads the hit instance's SBT offset alone "
        "(no geometry index times the stride, no trace offset), a miss's 0",
        nullptr, hitObjectSbtIndexOfInstance},
+      {"hit-object-record-sbt-no-instance-offset", K::CaseMutation,
+       "hitObjectRecordHitNV's record leaves out the instance's SBT offset (only the given "
+       "offset plus geometry index times stride)",
+       nullptr, hitObjectRecordSbtNoInstanceOffset},
+      {"hit-object-record-index-plus-instance-offset", K::CaseMutation,
+       "hitObjectRecordHitWithIndexNV adds the instance's SBT offset to the record index given",
+       nullptr, hitObjectRecordIndexPlusInstanceOffset},
+      {"hit-object-record-custom-index-is-id", K::CaseMutation,
+       "a hit recorded by hand reports its instance id as its custom index "
+       "(hitObjectGetInstanceCustomIndexNV)",
+       nullptr, hitObjectRecordCustomIndexIsId},
+      {"hit-object-record-handle-own", K::CaseMutation,
+       "hitObjectGetShaderRecordBufferHandleNV addresses the calling stage's own shader record, "
+       "not the hit object's",
+       nullptr, hitObjectRecordHandleOwn},
   };
 }
 

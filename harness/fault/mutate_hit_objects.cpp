@@ -1,11 +1,15 @@
 // Hit objects (GL_NV_shader_invocation_reorder) broken as a faulty device
 // would break them, each on the model's test-only hook (model/model_faults.h):
 // closest-hit or miss run at hitObjectTraceRayNV (R-HIT-OBJECT-DEFERRED),
-// and one family of the getters reading wrong each (R-HIT-OBJECT). A case
-// that reads none of the family is not applicable.
+// one family of the getters reading wrong each (R-HIT-OBJECT), a hit
+// recorded by hand or the shader record handle wrong (R-HIT-OBJECT-RECORD).
+// A case that has none of what a fault breaks is not applicable.
+#include <optional>
+
 #include "fault/fault_impl.h"
 #include "fault/program_edit.h"
 #include "program/builtins.h"
+#include "program/hit_object.h"
 #include "program/walk_program.h"
 
 namespace rayspec {
@@ -30,7 +34,52 @@ std::string getterFault(Case& c, ModelOptions& o, HitObjectGetterFault family, i
   return describeCount(reads, what);
 }
 
+// record_hit statements by their SBT record index (`by_index`: size 1) or
+// either form (nullopt).
+size_t recordHits(const Case& c, std::optional<bool> by_index) {
+  size_t n = 0;
+  forEachProgram(c.pipeline, [&](const Program& p, Stage) {
+    walkStatements(p, [&](const Stmt& s) {
+      n += s.kind == Stmt::Kind::RecordHit && (!by_index || (s.size == 1) == *by_index);
+    });
+  });
+  return n;
+}
+
+std::string recordFault(Case& c, ModelOptions& o, HitObjectRecordFault f, size_t sites,
+                        const std::string& what) {
+  if (!sites) return "";
+  o.faults.hit_object_record = f;
+  return describeCount(sites, what);
+}
+
 }  // namespace
+
+std::string hitObjectRecordSbtNoInstanceOffset(Case& c, ModelOptions& o) {
+  return recordFault(c, o, HitObjectRecordFault::SbtNoInstanceOffset, recordHits(c, false),
+                     "hits recorded by SBT offset and stride whose record leaves out the "
+                     "instance's SBT offset");
+}
+
+std::string hitObjectRecordIndexPlusInstanceOffset(Case& c, ModelOptions& o) {
+  return recordFault(c, o, HitObjectRecordFault::IndexPlusInstanceOffset, recordHits(c, true),
+                     "hits recorded by SBT record index whose record adds the instance's SBT "
+                     "offset");
+}
+
+std::string hitObjectRecordCustomIndexIsId(Case& c, ModelOptions& o) {
+  return recordFault(c, o, HitObjectRecordFault::CustomIndexIsId, recordHits(c, std::nullopt),
+                     "recorded hits whose custom index is their instance id");
+}
+
+std::string hitObjectRecordHandleOwn(Case& c, ModelOptions& o) {
+  size_t reads = 0;
+  forEachProgram(c.pipeline, [&](const Program& p, Stage) {
+    walkExpressions(p, [&](const Expr& e) { reads += isHitObjectRecordRead(e); });
+  });
+  return recordFault(c, o, HitObjectRecordFault::HandleOwn, reads,
+                     "reads of the hit object's shader record that read the stage's own");
+}
 
 std::string hitObjectTraceShades(Case& c, ModelOptions& o) {
   size_t traces = 0;

@@ -191,7 +191,8 @@ std::vector<RuleFaults> creationRules() {
 }
 
 // The rules of hit objects (VK_NV_ray_tracing_invocation_reorder), broken on
-// the model: one getter family each, and closest-hit run at the trace.
+// the model: one getter family each, closest-hit run at the trace, and hits
+// recorded by hand and the shader record handle.
 std::vector<RuleFaults> hitObjectRules() {
   return {
       {"R-HIT-OBJECT",
@@ -200,6 +201,10 @@ std::vector<RuleFaults> hitObjectRules() {
         "hit-object-sbt-index-of-instance"},
        {}},
       {"R-HIT-OBJECT-DEFERRED", {"hit-object-trace-shades"}, {}},
+      {"R-HIT-OBJECT-RECORD",
+       {"hit-object-record-sbt-no-instance-offset", "hit-object-record-index-plus-instance-offset",
+        "hit-object-record-custom-index-is-id", "hit-object-record-handle-own"},
+       {}},
   };
 }
 

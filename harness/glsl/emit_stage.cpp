@@ -111,6 +111,12 @@ void hitObjectVariables(const StageContext& ctx, GlslWriter& out) {
   if (!ctx.uses.hit_object) return;
   out.line("hitObjectNV rs_hit_object;");
   out.line("layout(location = 0) hitObjectAttributeNV vec2 rs_hit_object_attr;");
+  // Its shader record's data (hitObjectGetShaderRecordBufferHandleNV): the
+  // words hit_object_record_uint / _float read.
+  if (ctx.uses.hit_object_record)
+    out.line(
+        "layout(buffer_reference, std430, buffer_reference_align = 4, hitobjectshaderrecordnv) "
+        "buffer RsHitObjectRecord { uint words[]; };");
   out.open("vec2 rs_hit_object_attributes() {");
   out.line("hitObjectGetAttributesNV(rs_hit_object, 0);");
   out.line("return rs_hit_object_attr;");
@@ -238,9 +244,11 @@ void extensions(const StageContext& ctx, bool ray_query, GlslWriter& out) {
   // The records live behind a buffer reference (shaders/common.glsl): a large
   // launch's records may exceed maxStorageBufferRange (128 MiB on lavapipe).
   // pipeline.layout: empty reaches every buffer so (RS_EMPTY_LAYOUT).
-  if (ctx.plan.records || ctx.c.pipeline.empty_layout)
+  // The hit object's shader record is read through a uvec2 buffer reference.
+  if (ctx.plan.records || ctx.c.pipeline.empty_layout || u.hit_object_record)
     out.line("#extension GL_EXT_buffer_reference : require");
-  if (ctx.c.pipeline.empty_layout) out.line("#extension GL_EXT_buffer_reference_uvec2 : require");
+  if (ctx.c.pipeline.empty_layout || u.hit_object_record)
+    out.line("#extension GL_EXT_buffer_reference_uvec2 : require");
   if (u.cull_mask) out.line("#extension GL_EXT_ray_cull_mask : require");
   if (u.hit_object) out.line("#extension GL_NV_shader_invocation_reorder : require");
   if (u.position_fetch || u.query_position_fetch)

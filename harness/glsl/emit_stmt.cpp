@@ -187,6 +187,7 @@ void emitProgram(const Program& program, const StageContext& ctx, GlslWriter& ou
       case Stmt::Kind::ExecuteHitObject:
       case Stmt::Kind::RecordMiss:
       case Stmt::Kind::RecordEmpty:
+      case Stmt::Kind::RecordHit:
       case Stmt::Kind::Reorder:
         emitHitObjectStatement(s, ctx, out);
         break;

@@ -112,6 +112,30 @@ std::string reorderCall(const Stmt& s, const StageContext& ctx) {
   return "reorderThreadNV(" + args + ");";
 }
 
+// record_hit: the ray's locals, the attributes stored where
+// hitObjectGetAttributesNV reads them (location 0), then
+// hitObjectRecordHitNV (the record by offset and stride) or
+// hitObjectRecordHitWithIndexNV (by index) into the stage's hit object.
+void emitRecordHit(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
+  out.open("{  // record_hit");
+  traceLocals(s.trace, ctx, out);
+  std::string ids;
+  for (const auto& [name, value] : s.assigns) {
+    const std::string v = emitExpr(value, ctx);
+    if (name == "attributes")
+      out.line("rs_hit_object_attr = " + v + ";");
+    else if (name == "hit_kind" || name == "sbt_index")
+      ids += ", " + v;
+    else  // the instance, primitive and geometry: int operands
+      ids += ", int(" + v + ")";
+  }
+  const std::string sbt = s.size ? "" : ", rs_sbt_offset, rs_sbt_stride";
+  out.line(std::string(s.size ? "hitObjectRecordHitWithIndexNV" : "hitObjectRecordHitNV") +
+           "(rs_hit_object, " + tlasOperand(s.trace, ctx) + ids + sbt +
+           ", rs_origin, rs_tmin, rs_direction, rs_tmax, 0);");
+  out.close();
+}
+
 }  // namespace
 
 void emitHitObjectStatement(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
@@ -133,6 +157,9 @@ void emitHitObjectStatement(const Stmt& s, const StageContext& ctx, GlslWriter& 
       break;
     case Stmt::Kind::RecordEmpty:
       out.line("hitObjectRecordEmptyNV(rs_hit_object);");
+      break;
+    case Stmt::Kind::RecordHit:
+      emitRecordHit(s, ctx, out);
       break;
     case Stmt::Kind::Reorder:
       out.line(reorderCall(s, ctx));

@@ -15,6 +15,7 @@ struct StageUses {
   bool trace = false;                  // a traceRayEXT (raygen: payload; else: child)
   bool ray_query = false;              // a ray_query statement (GL_EXT_ray_query)
   bool hit_object = false;             // the stage's hit object (program/hit_object.h)
+  bool hit_object_record = false;      // hit_object_record_uint / _float: its shader record
   std::set<uint32_t> trace_locations;  // the payload locations its traces pass
   bool launch_ray = false;             // raygen: some trace takes a field from this launch's ray
   bool reads_child = false;            // child.* read (closest-hit, miss): zero before a trace

@@ -30,6 +30,7 @@ void visitExpr(const Expr& e, StageUses& u) {
   } else if (e.kind == Expr::Kind::Op) {
     if (isSphereOp(e.op)) u.scene = u.sphere = true;
     if (e.op == Op::RecordUint || e.op == Op::RecordFloat) u.shader_record = true;
+    if (isHitObjectRecordRead(e)) u.hit_object = u.hit_object_record = true;
     if (isLightOp(e.op)) u.light = u.shader_record = true;
     if (const auto words = wordArrayOf(e.op)) {
       u.incoming_payload = u.incoming_payload || *words == WordArray::Payload;
@@ -76,7 +77,8 @@ void visitHitObjectStatement(const Stmt& s, Stage stage, StageUses& u) {
   if (!isHitObjectStatement(s)) return;
   u.hit_object = true;
   for (const auto& a : s.assigns) visitExpr(a.second, u);
-  if (s.kind == Stmt::Kind::RecordMiss) visitTraceArgs(s.trace, stage, u);
+  if (s.kind == Stmt::Kind::RecordMiss || s.kind == Stmt::Kind::RecordHit)
+    visitTraceArgs(s.trace, stage, u);
   if (s.kind != Stmt::Kind::ExecuteHitObject) return;
   u.trace = true;
   u.trace_locations.insert(s.trace.location);

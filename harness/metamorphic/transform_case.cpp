@@ -31,7 +31,8 @@ bool tracesOnlyTheLaunchRay(const Case& c) {
 bool setsOwnRay(const Program& p) {
   return std::any_of(p.begin(), p.end(), [](const Stmt& s) {
     const bool traces = s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::RayQuery ||
-                        s.kind == Stmt::Kind::RestartQuery || s.kind == Stmt::Kind::RecordMiss;
+                        s.kind == Stmt::Kind::RestartQuery || s.kind == Stmt::Kind::RecordMiss ||
+                        s.kind == Stmt::Kind::RecordHit;
     if (traces && (!s.trace.origin.empty() || !s.trace.direction.empty())) return true;
     return setsOwnRay(s.then_) || setsOwnRay(s.else_);
   });

@@ -29,6 +29,7 @@ Payload ModelTracer::traceIntoHitObject(const TraceRay& r, uint32_t depth, const
     into.kind = HitObjectState::Kind::Miss;
     into.sbt_index = r.miss & kTraceMissIndexMask;
   }
+  noteRecordData(into);
   // Planted (R-HIT-OBJECT-DEFERRED broken): closest-hit or miss runs at the
   // trace, as traceRayEXT runs it.
   if (sh_.fault_seam.hitObjectTraceShades()) shade(r, flags, depth, best, payload);
@@ -48,7 +49,8 @@ void ModelTracer::executeHitObject(const HitObjectState& h, Payload& payload) {
   best.b2 = h.hit.b2;
   best.words = h.hit.words;
   payload.depth = h.depth;
-  shade(h.ray, h.flags, h.depth, best, payload);
+  shade(h.ray, h.flags, h.depth, best, payload,
+        best.valid ? std::optional<uint64_t>(h.sbt_index) : std::nullopt);
 }
 
 }  // namespace rayspec

@@ -66,6 +66,8 @@ class ModelFaultSeam {
   bool hitObjectSbtIndexOfInstance() const {
     return getter(HitObjectGetterFault::SbtIndexOfInstance);
   }
+  // R-HIT-OBJECT-RECORD: a hit recorded by hand, or the record handle, wrong.
+  bool hitObjectRecord(HitObjectRecordFault f) const { return f_.hit_object_record == f; }
   // R-BUILTIN, R-RQ-EQUIV broken: a nested hit's built-ins replace its caller's.
   bool nestedTraceClobbersHit() const { return f_.nested_trace_clobbers_hit; }
   // Live state broken: locals read zero after a trace, call or report.

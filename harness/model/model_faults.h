@@ -43,6 +43,22 @@ enum class HitObjectGetterFault : uint8_t {
   SbtIndexOfInstance
 };
 
+// Hits recorded by hand and the hit object's shader record broken, one each
+// (R-HIT-OBJECT-RECORD): SbtNoInstanceOffset: hitObjectRecordHitNV's record
+// leaves out the instance's SBT offset; IndexPlusInstanceOffset:
+// hitObjectRecordHitWithIndexNV adds the instance's SBT offset to the index
+// given; CustomIndexIsId: a recorded hit's custom index is its instance id
+// (nothing read from the instance); HandleOwn:
+// hitObjectGetShaderRecordBufferHandleNV addresses the calling stage's own
+// record.
+enum class HitObjectRecordFault : uint8_t {
+  None,
+  SbtNoInstanceOffset,
+  IndexPlusInstanceOffset,
+  CustomIndexIsId,
+  HandleOwn
+};
+
 struct ModelFaults {
   ModelDeviation deviation = ModelDeviation::None;
   CandidateOrder order = CandidateOrder::Distance;
@@ -168,6 +184,7 @@ struct ModelFaults {
   // miss as traceRayEXT does (and executing the hit object runs it again).
   bool hit_object_trace_shades = false;
   HitObjectGetterFault hit_object_getter = HitObjectGetterFault::None;
+  HitObjectRecordFault hit_object_record = HitObjectRecordFault::None;
 };
 
 }  // namespace rayspec

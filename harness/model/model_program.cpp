@@ -4,6 +4,7 @@
 
 #include "model/order_dependence.h"
 #include "program/builtins.h"
+#include "program/hit_object.h"
 #include "program/locals.h"
 #include "program/payload_words.h"
 #include "program/sized_values.h"
@@ -160,7 +161,7 @@ struct Compiler {
           r.index = static_cast<uint32_t>(*which);
           r.size = indexedWords(*which);
         }
-        if (r.op == Op::RecordUint || r.op == Op::RecordFloat)
+        if (r.op == Op::RecordUint || r.op == Op::RecordFloat || isHitObjectRecordRead(e))
           r.index =
               e.args.empty()
                   ? 0
@@ -294,7 +295,8 @@ struct Compiler {
         if (leavesQueryLoop(c.then_)) r.size = 1;  // a break leaves its loop
     }
     if (s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::RayQuery ||
-        s.kind == Stmt::Kind::RestartQuery || s.kind == Stmt::Kind::RecordMiss) {
+        s.kind == Stmt::Kind::RestartQuery || s.kind == Stmt::Kind::RecordMiss ||
+        s.kind == Stmt::Kind::RecordHit) {
       const std::vector<Expr>* a[CStmt::kTraceArgs] = {
           &s.trace.origin, &s.trace.direction, &s.trace.tmin,       &s.trace.tmax,
           &s.trace.flags,  &s.trace.cull_mask, &s.trace.sbt_offset, &s.trace.sbt_stride,

@@ -21,6 +21,8 @@ class ModelSbt {
     const uint64_t idx = hitIndex(instance, geometry, r);
     return idx < hit_.size() ? &hit_[idx] : nullptr;
   }
+  // The hit record at index `idx` (hitObjectRecordHitWithIndexNV's); nullptr beyond.
+  const SbtRecord* hitAt(uint64_t idx) const { return idx < hit_.size() ? &hit_[idx] : nullptr; }
   size_t hitCount() const { return hit_.size(); }
   const std::vector<SbtRecord>& miss() const { return miss_; }
   const std::vector<SbtRecord>& callables() const { return callable_; }

@@ -76,6 +76,9 @@ struct HitObjectState {
   uint32_t depth = 0;      // the trace's depth, which the executed shader runs at
   uint32_t sbt_index = 0;  // the record executing it runs: a hit's in the hit region, a miss's
   HitView hit;             // a hit's built-ins (its object-space ray always computed)
+  // The data of the record sbt_index names (hitObjectGetShaderRecordBufferHandleNV);
+  // null where it lies beyond its region, or the hit object is empty.
+  const std::vector<uint32_t>* record_data = nullptr;
 };
 
 struct Traversal;

@@ -48,6 +48,20 @@ class ModelTracer {
   // would have run, with that hit's built-ins, on `payload`; nothing for an
   // empty one.
   void executeHitObject(const HitObjectState& h, Payload& payload);
+  // hitObjectRecordHitNV / hitObjectRecordHitWithIndexNV: a hit of `r` on
+  // `hit`'s instance, geometry and primitive, its hit kind and attributes
+  // (hit.b1, b2) as given, t the ray's tmax; every other built-in derived from
+  // the instance (model/hit_object_record.cpp). `index`: the record given;
+  // else the instance's offset and the ray's sbt_offset and sbt_stride pick it.
+  // A hit outside the scene leaves the ray undefined (R-UB) and `into` empty.
+  void recordHit(const TraceRay& r, const HitView& hit, std::optional<uint32_t> index,
+                 uint32_t depth, const CStmt* site, HitObjectState& into);
+  // The record data `h` names (its sbt_index in the hit or miss region).
+  void noteRecordData(HitObjectState& h) const;
+  // The hit record a recorded hit runs: `index`, or the instance's SBT offset
+  // plus r's sbt_offset and geometry times sbt_stride (R-SBT-HIT).
+  uint64_t recordedHitIndex(const HitView& h, const TraceRay& r,
+                            std::optional<uint32_t> index) const;
   // Raygen is `trace: {}` and traces take Embree's closest hit: the launch
   // rays [begin, end) are traced and shaded in one pass (model_fast_path.cpp).
   void runLaunchRaysDirect(uint32_t begin, uint32_t end);
@@ -74,9 +88,10 @@ class ModelTracer {
   // decide() for a ray query (model_query.cpp): the candidate blocks decide,
   // opaque triangles commit unoffered (R-RQ-CANDIDATES).
   void decideQuery(Traversal& tr, const std::vector<ModelCandidate>& cands, const int8_t* force);
-  // R-MISS-XOR-CHIT: closest-hit or miss for the committed hit.
+  // R-MISS-XOR-CHIT: closest-hit or miss for the committed hit; a hit
+  // object's hit runs the record of its `hit_index`.
   void shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Committed& best,
-             Payload& payload);
+             Payload& payload, std::optional<uint64_t> hit_index = std::nullopt);
   void decide(Traversal& tr, const std::vector<ModelCandidate>& cands, const int8_t* force,
               Payload& payload);
   // The candidate decided at position `pos` (R-TOFH what-if: `tr.first`

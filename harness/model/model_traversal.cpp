@@ -421,18 +421,19 @@ void ModelTracer::clobberCaller(const TraceRay& r, const Committed& best) {
 
 // R-MISS-XOR-CHIT: closest-hit or miss for the committed hit.
 void ModelTracer::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const Committed& best,
-                        Payload& payload) {
+                        Payload& payload, std::optional<uint64_t> hit_index) {
   const Case& c = *sh_.c;
   const ModelScene& scene = *sh_.scene;
   if (best.valid) {
     if (!(flags & kRaySkipClosestHit)) {
-      const SbtRecord* rec = sbt_.hit(best.instance, best.geometry, r);
+      const uint64_t index = hit_index.value_or(sbt_.hitIndex(best.instance, best.geometry, r));
+      const SbtRecord* rec = sbt_.hitAt(index);
       // R-UB: the closest-hit's record beyond the hit region; the model runs none.
       if (!rec && !st_.ray_undefined) st_.hitRecordOutOfRange(best.instance, best.geometry, r);
       const CHitGroup* grp = groupOf(*sh_.programs, rec);
       if (rec && !rec->group)
         st_.nullShader(kPipelineNoNullClosestHit, "a closest-hit", "hit",
-                       static_cast<uint32_t>(sbt_.hitIndex(best.instance, best.geometry, r)));
+                       static_cast<uint32_t>(index));
       if (grp && grp->closest_hit)
         st_.checkPayloadType(payload, grp->payload, "pipeline.hit_groups", *rec->group,
                              ".closest_hit");

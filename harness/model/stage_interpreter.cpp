@@ -97,6 +97,7 @@ Flow StageInterpreter::execStmt(const CStmt& s, StageEnv& env) {
     case Stmt::Kind::ExecuteHitObject:
     case Stmt::Kind::RecordMiss:
     case Stmt::Kind::RecordEmpty:
+    case Stmt::Kind::RecordHit:
     case Stmt::Kind::Reorder:
       execHitObject(s, env);
       return Flow::Continue;

@@ -73,6 +73,8 @@ class StageInterpreter {
   void execTrace(const CStmt& s, StageEnv& env);  // traceRayEXT
   // execute, record_miss, record_empty, reorder (stage_interpreter_hit_object.cpp).
   void execHitObject(const CStmt& s, StageEnv& env);
+  void recordHit(const CStmt& s, StageEnv& env, uint32_t depth);  // record_hit
+  const std::vector<uint32_t>* recordDataRead(Op n, const StageEnv& env) const;
   Flow execRayQuery(const CStmt& s, StageEnv& env);      // a ray_query statement (model_query.cpp)
   Flow execRayQueries(const CStmt& s, StageEnv& env);    // ray_queries, stepped in turn
   Flow execRestartQuery(const CStmt& s, StageEnv& env);  // restart_query

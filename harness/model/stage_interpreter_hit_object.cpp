@@ -8,6 +8,22 @@
 
 namespace rayspec {
 
+// record_hit's values (assigns: instance, primitive, geometry, hit kind,
+// attributes, then the SBT record index where given) and the ray.
+void StageInterpreter::recordHit(const CStmt& s, StageEnv& env, uint32_t depth) {
+  HitView given;
+  given.instance = eval(s.assigns[0].value, env).u;
+  given.primitive = eval(s.assigns[1].value, env).u;
+  given.geometry = eval(s.assigns[2].value, env).u;
+  given.hit_kind = eval(s.assigns[3].value, env).u;
+  const Val attributes = eval(s.assigns[4].value, env);
+  given.b1 = attributes.f[0];
+  given.b2 = attributes.f[1];
+  std::optional<uint32_t> index;
+  if (s.assigns.size() > 5) index = eval(s.assigns[5].value, env).u;
+  tracer_.recordHit(tracedRay(s, env), given, index, depth, &s, *env.hit_object);
+}
+
 void StageInterpreter::execHitObject(const CStmt& s, StageEnv& env) {
   if (!env.hit_object) return;  // a stage without one (refused by the checker)
   HitObjectState& h = *env.hit_object;
@@ -31,8 +47,12 @@ void StageInterpreter::execHitObject(const CStmt& s, StageEnv& env) {
       h.ray.flags = 0;
       h.depth = depth;
       h.sbt_index = h.ray.miss & kTraceMissIndexMask;
+      tracer_.noteRecordData(h);
       return;
     }
+    case Stmt::Kind::RecordHit:
+      recordHit(s, env, depth);
+      return;
     case Stmt::Kind::RecordEmpty:
       h = HitObjectState{};
       return;

@@ -80,6 +80,16 @@ Val lightOp(Op n, const Val* a, const std::vector<uint32_t>* record_data) {
 
 }  // namespace
 
+// The record data a shader record read reads: the stage's own, or its hit
+// object's (hitObjectGetShaderRecordBufferHandleNV; the planted HandleOwn
+// fault reads the stage's own there too).
+const std::vector<uint32_t>* StageInterpreter::recordDataRead(Op n, const StageEnv& env) const {
+  if (n == Op::RecordUint || n == Op::RecordFloat ||
+      sh_.fault_seam.hitObjectRecord(HitObjectRecordFault::HandleOwn))
+    return env.record_data;
+  return env.hit_object ? env.hit_object->record_data : nullptr;
+}
+
 bool StageInterpreter::opOnDemand(const CExpr& e, StageEnv& env, Val& r) {
   const Op n = e.op;
   switch (n) {
@@ -104,11 +114,14 @@ bool StageInterpreter::opOnDemand(const CExpr& e, StageEnv& env, Val& r) {
       return true;
     }
     case Op::RecordUint:
-    case Op::RecordFloat: {
+    case Op::RecordFloat:
+    case Op::HitObjectRecordUint:
+    case Op::HitObjectRecordFloat: {
+      const std::vector<uint32_t>* data = recordDataRead(n, env);
       const uint32_t i = e.index;
-      const uint32_t w =
-          env.record_data && i < env.record_data->size() ? (*env.record_data)[i] : 0u;
-      r = n == Op::RecordUint ? fromUint(w) : fromFloat(std::bit_cast<float>(w));
+      const uint32_t w = data && i < data->size() ? (*data)[i] : 0u;
+      r = n == Op::RecordUint || n == Op::HitObjectRecordUint ? fromUint(w)
+                                                              : fromFloat(std::bit_cast<float>(w));
       return true;
     }
     case Op::And:
@@ -360,6 +373,8 @@ Val StageInterpreter::op(const CExpr& e, StageEnv& env) {
     case Op::SphereFar:
     case Op::RecordUint:
     case Op::RecordFloat:
+    case Op::HitObjectRecordUint:
+    case Op::HitObjectRecordFloat:
     case Op::And:
     case Op::Or:
     case Op::Load:

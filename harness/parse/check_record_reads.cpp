@@ -1,6 +1,7 @@
 // The shader record reads of every stage program against the record's data
 // bytes (pipeline.sbt.record_data): shader_record_uint / shader_record_float(i)
-// read bytes 4i..4i+3, the lights (the `light:` statement and the light_*
+// (and hit_object_record_uint / _float(i), of the hit object's record) read
+// bytes 4i..4i+3, the lights (the `light:` statement and the light_*
 // ops) read floats 0..5 (point, directional) or 0..7 (spot). A read past the
 // data would read the record's padding or the next record: an error at the
 // read. Every index is a literal (program/type_check.cpp), so all are known.
@@ -21,7 +22,8 @@ uint32_t lightBytes(const std::string& kind) {
 // Bytes the expression itself reads (not its arguments); 0 when none or unknown.
 uint32_t bytesRead(const Expr& e, std::string* what) {
   if (e.kind != Expr::Kind::Op) return 0;
-  if (e.op == Op::RecordUint || e.op == Op::RecordFloat) {
+  if (e.op == Op::RecordUint || e.op == Op::RecordFloat || e.op == Op::HitObjectRecordUint ||
+      e.op == Op::HitObjectRecordFloat) {
     if (e.args.size() != 1 || e.args[0].kind != Expr::Kind::Literal ||
         e.args[0].literal.size() != 1)
       return 0;

@@ -154,6 +154,7 @@ void parseTop(YamlReader& r, const YAML::Node& root, const std::vector<std::stri
   checkPrograms(r, c, pipeline);
   checkRayQueryForm(r, c, pipeline);
   checkRecordReads(r, c);
+  checkRecordHits(r, c);
   checkDataWords(r, c);
   checkWideLaunch(r, c);
   checkEmptyLayout(r, c, pipeline);

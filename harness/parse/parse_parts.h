@@ -102,6 +102,8 @@ void checkPrograms(YamlReader& r, Case& c, const YAML::Node& pipeline_node);
 // Errors for shader record reads (shader_record_uint / _float, the lights)
 // past the record's data bytes (pipeline.sbt.record_data).
 void checkRecordReads(YamlReader& r, const Case& c);
+// record_hit: a vec2 hit attribute and one top level (check_record_hit.cpp).
+void checkRecordHits(YamlReader& r, const Case& c);
 
 // Notes the undefined behaviour (R-UB) of traces and calls whose values are
 // constants: SBT indices beyond their regions, a trace's bad tmin / tmax.

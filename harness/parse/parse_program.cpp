@@ -284,6 +284,38 @@ bool parseRecordMiss(YamlReader& r, const YAML::Node& v, const std::string& f, S
   return parseTraceSlots(r, v, f, s.trace);
 }
 
+// record_hit: {instance, primitive, geometry, hit_kind, attributes, sbt_offset
+// and sbt_stride or sbt_index, origin, direction, tmin, tmax}: a hit recorded
+// into the hit object without tracing (size 1: by its SBT record index).
+bool parseRecordHit(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::RecordHit;
+  if (!r.expectMap(v, f,
+                   {"instance", "primitive", "geometry", "hit_kind", "attributes", "sbt_offset",
+                    "sbt_stride", "sbt_index", "origin", "direction", "tmin", "tmax"}))
+    return false;
+  const bool by_index = YamlReader::has(v, "sbt_index");
+  if (by_index && (YamlReader::has(v, "sbt_offset") || YamlReader::has(v, "sbt_stride"))) {
+    r.error(v, f, "record_hit takes sbt_index or sbt_offset and sbt_stride, not both");
+    return false;
+  }
+  s.size = by_index ? 1 : 0;
+  bool ok = true;
+  for (const char* key :
+       {"instance", "primitive", "geometry", "hit_kind", "attributes", "sbt_index"}) {
+    const YAML::Node e = YamlReader::get(v, key);
+    if (!e.IsDefined() && std::string(key) == "sbt_index") continue;
+    if (!e.IsDefined()) {
+      r.error(v, f, std::string("record_hit needs '") + key + "'");
+      ok = false;
+      continue;
+    }
+    Expr x;
+    ok = parseExpr(r, e, f + "." + key, x) && ok;
+    s.assigns.emplace_back(key, std::move(x));
+  }
+  return parseTraceSlots(r, v, f, s.trace) && ok;
+}
+
 // reorder: {hit_object: true, hint: expr, bits: expr}: reorderThreadNV with
 // the hit object, the hint, or both.
 bool parseReorder(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
@@ -524,7 +556,7 @@ const char* const kStatementNames =
     "count, record, payload, call_data, ignore, terminate, report, trace, call, light, if, let, "
     "set, array, store, repeat, switch, invoke, break, continue, return, ray_query, ray_queries, "
     "confirm, generate, terminate_query, restart_query, execute, record_miss, record_empty, "
-    "reorder";
+    "record_hit, reorder";
 
 using StmtParser = bool (*)(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s);
 
@@ -606,6 +638,7 @@ const std::pair<const char*, StmtParser> kKeyedStatements[] = {{"count", parseCo
                                                                {"light", parseLight},
                                                                {"execute", parseExecute},
                                                                {"record_miss", parseRecordMiss},
+                                                               {"record_hit", parseRecordHit},
                                                                {"reorder", parseReorder}};
 
 bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt& s) {

@@ -152,7 +152,7 @@ void planStatements(const std::vector<StageProgram>& programs, const Pipeline& p
           e.kind == Expr::Kind::Builtin ? builtinNeeds(e.builtin) : builtin_needs::NoNeeds;
       if (needs & builtin_needs::CullMask) plan.cull_mask_builtin = true;
       if (needs & builtin_needs::PositionFetch) plan.position_fetch = true;
-      if (needs & builtin_needs::HitObject) plan.hit_objects = true;
+      if ((needs & builtin_needs::HitObject) || isHitObjectRecordRead(e)) plan.hit_objects = true;
       const bool reads_box =
           (needs & builtin_needs::BoxData) || (e.kind == Expr::Kind::Op && isSphereOp(e.op));
       // In another stage, sphere_* of a ray_query's AABB candidate (program/ops.h).

@@ -47,6 +47,7 @@ constexpr StmtRule kStmtRules[] = {
     {Stmt::Kind::ExecuteHitObject, "execute", R | C | M},
     {Stmt::Kind::RecordMiss, "record_miss", R | C | M},
     {Stmt::Kind::RecordEmpty, "record_empty", R | C | M},
+    {Stmt::Kind::RecordHit, "record_hit", R | C | M},
     {Stmt::Kind::Reorder, "reorder", R},
     {Stmt::Kind::If, "if", kAllStages},
     {Stmt::Kind::Let, "let", kAllStages},
@@ -156,16 +157,11 @@ class Checker {
           return ProgramError{"unknown light '" + s.light + "' (point, spot, directional)", s.loc};
         return std::nullopt;
       case Stmt::Kind::ExecuteHitObject:
-        if (auto r = notInCandidates(s, "execute")) return r;
-        return dataFields(s, Data::Payload);  // the payload it starts with, as a trace's
-      case Stmt::Kind::RecordMiss:            // origin .. tmax and miss, as a trace gives them
-        return traceFields(s, "record_miss", 9);
+      case Stmt::Kind::RecordMiss:
       case Stmt::Kind::RecordEmpty:
-        return std::nullopt;
+      case Stmt::Kind::RecordHit:
       case Stmt::Kind::Reorder:
-        for (auto& [name, value] : s.assigns)
-          if (auto r = as(value, ValueType::Uint, "reorder " + name)) return r;
-        return std::nullopt;
+        return hitObjectStatement(s);
       case Stmt::Kind::If:
         if (auto r = as(s.cond, ValueType::Bool, "if condition")) return r;
         if (auto r = block(s.then_)) return r;
@@ -539,6 +535,35 @@ class Checker {
   }
 
   // The first `slots` fields of a trace (origin .. miss), as `what` names them.
+  // execute, record_miss, record_empty, record_hit, reorder.
+  std::optional<ProgramError> hitObjectStatement(Stmt& s) {
+    switch (s.kind) {
+      case Stmt::Kind::ExecuteHitObject:
+        if (auto r = notInCandidates(s, "execute")) return r;
+        return dataFields(s, Data::Payload);  // the payload it starts with, as a trace's
+      case Stmt::Kind::RecordMiss:            // origin .. tmax and miss, as a trace gives them
+        return traceFields(s, "record_miss", 9);
+      case Stmt::Kind::RecordHit:
+        return recordHit(s);
+      case Stmt::Kind::Reorder:
+        for (auto& [name, value] : s.assigns)
+          if (auto r = as(value, ValueType::Uint, "reorder " + name)) return r;
+        return std::nullopt;
+      default:  // record_empty
+        return std::nullopt;
+    }
+  }
+
+  // record_hit: the ids, hit kind and record index Uint, the attributes a
+  // Vec2, the ray as a trace's (sbt_offset and sbt_stride among its fields).
+  std::optional<ProgramError> recordHit(Stmt& s) {
+    for (auto& [name, value] : s.assigns)
+      if (auto r = as(value, name == "attributes" ? ValueType::Vec2 : ValueType::Uint,
+                      "record_hit " + name))
+        return r;
+    return traceFields(s, "record_hit", 8);
+  }
+
   std::optional<ProgramError> traceFields(Stmt& s, const std::string& what, size_t slots_used) {
     TraceArgs& t = s.trace;
     struct Slot {

@@ -11,6 +11,7 @@ bool isHitObjectStatement(const Stmt& s) {
       return s.trace.hit_object;
     case Stmt::Kind::ExecuteHitObject:
     case Stmt::Kind::RecordMiss:
+    case Stmt::Kind::RecordHit:
     case Stmt::Kind::RecordEmpty:
     case Stmt::Kind::Reorder:
       return true;
@@ -19,11 +20,16 @@ bool isHitObjectStatement(const Stmt& s) {
   }
 }
 
+bool isHitObjectRecordRead(const Expr& e) {
+  return e.kind == Expr::Kind::Op &&
+         (e.op == Op::HitObjectRecordUint || e.op == Op::HitObjectRecordFloat);
+}
+
 bool usesHitObject(const Program& p) {
   bool uses = false;
   walkStatements(p, [&](const Stmt& s) { uses = uses || isHitObjectStatement(s); });
   walkExpressions(p, [&](const Expr& e) {
-    uses = uses ||
+    uses = uses || isHitObjectRecordRead(e) ||
            (e.kind == Expr::Kind::Builtin && (builtinNeeds(e.builtin) & builtin_needs::HitObject));
   });
   return uses;

@@ -12,6 +12,9 @@ namespace rayspec {
 
 // The statement itself (not the statements nested in it) uses the hit object.
 bool isHitObjectStatement(const Stmt& s);
+// hit_object_record_uint / _float: a read of the hit object's shader record
+// (hitObjectGetShaderRecordBufferHandleNV).
+bool isHitObjectRecordRead(const Expr& e);
 // The program (nested statements and every expression included) uses it.
 bool usesHitObject(const Program& p);
 // The hit object getter that reads a hit stage's built-in `name` of the

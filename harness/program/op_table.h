@@ -109,6 +109,15 @@
   X(RecordFloat, "shader_record_float", 1, 1, kAllStages, RecordWordFloat, nullptr,                \
     "word i (Uint literal 0..7, 4 i + 4 <= pipeline.sbt.record_data) of this stage's shader "      \
     "record data, as Float")                                                                       \
+  X(HitObjectRecordUint, "hit_object_record_uint", 1, 1, R | C | M, RecordWordUint,              \
+    "RsHitObjectRecord(hitObjectGetShaderRecordBufferHandleNV(rs_hit_object)).words[$0]",          \
+    "word i (Uint literal 0..7, 4 i + 4 <= pipeline.sbt.record_data) of the shader record data "   \
+    "of the record the stage's hit object holds (hitObjectGetShaderRecordBufferHandleNV read "     \
+    "through a buffer reference), as Uint")                                                        \
+  X(HitObjectRecordFloat, "hit_object_record_float", 1, 1, R | C | M, RecordWordFloat,           \
+    "uintBitsToFloat(RsHitObjectRecord(hitObjectGetShaderRecordBufferHandleNV(rs_hit_object))"     \
+    ".words[$0])",                                                                                 \
+    "word i of the shader record data of the record the stage's hit object holds, as Float")      \
   X(LightPoint, "light_point", 2, 2, kAllStages, Light, "rs_light_point($0, $1)",                  \
     "light_point(P, N): the point light of shaders/lights.glsl, parameters from this stage's "     \
     "record floats")                                                                               \

@@ -178,6 +178,11 @@ struct Stmt {
     RecordMiss,        // hitObjectRecordMissNV: miss index `trace.miss`, the ray of `trace`
                        // (origin, direction, tmin, tmax; defaulted as a trace's)
     RecordEmpty,       // hitObjectRecordEmptyNV
+    RecordHit,         // hitObjectRecordHitNV (size 0: SBT record of the instance's offset and
+                       // `trace.sbt_offset` / `sbt_stride`) or hitObjectRecordHitWithIndexNV
+                       // (size 1: the record index given): assigns "instance", "primitive",
+                       // "geometry", "hit_kind", "attributes" (a Vec2) and, size 1,
+                       // "sbt_index"; the ray of `trace` (program/hit_object.h)
     Reorder,           // reorderThreadNV: with the hit object when `size` is 1, with the
                        // assigns ("hint", "bits": the hint and how many of its low bits
                        // count) when given (raygen only)

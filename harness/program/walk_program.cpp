@@ -45,6 +45,7 @@ void ownExpressions(S& s, const Visit& visit) {
     case Stmt::Kind::RayQuery:
     case Stmt::Kind::RestartQuery:
     case Stmt::Kind::RecordMiss:
+    case Stmt::Kind::RecordHit:
     case Stmt::Kind::Trace: {
       auto& t = s.trace;
       for (auto* list : {&t.origin, &t.direction, &t.tmin, &t.tmax, &t.flags, &t.cull_mask,

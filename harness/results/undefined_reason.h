@@ -32,7 +32,10 @@ namespace rayspec {
   /* a ray query's committed value read with nothing committed */                    \
   X(QueryNothingCommitted, "query-nothing-committed")                                \
   /* a ray query's vertex positions read of a box (a candidate or committed AABB) */ \
-  X(QueryPositionsOfBox, "query-positions-of-box")
+  X(QueryPositionsOfBox, "query-positions-of-box")                                   \
+  /* a hit recorded by hand (hitObjectRecordHitNV) of an instance, geometry or */    \
+  /* primitive outside the top level, or by an SBT record index of 16 or more */     \
+  X(HitObjectRecordOutsideScene, "hit-object-record-outside-scene")
 enum class UndefinedReason { RAYSPEC_UNDEFINED_REASONS(RAYSPEC_ENUMERATOR) };
 RAYSPEC_ENUM_NAMES(UndefinedReason, RAYSPEC_UNDEFINED_REASONS);
 inline const char* undefinedReasonName(UndefinedReason r) {

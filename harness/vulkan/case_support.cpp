@@ -205,9 +205,9 @@ Result<void> checkCaseSupport(const DeviceInfo& d, uint32_t validation_layer, co
         "descriptorIndexing (VK_EXT_descriptor_indexing), which the device lacks");
   if (plan.hit_objects && !d.invocation_reorder)
     return notSupported(
-        "hit objects (hit_object.*, trace hit_object, execute, record_miss, record_empty, "
-        "reorder): the device lacks VK_NV_ray_tracing_invocation_reorder "
-        "(rayTracingInvocationReorder)");
+        "hit objects (hit_object.*, hit_object_record_*, trace hit_object, execute, record_hit, "
+        "record_miss, record_empty, reorder): the device lacks "
+        "VK_NV_ray_tracing_invocation_reorder (rayTracingInvocationReorder)");
   if (plan.ray_queries && !d.ray_query)
     return notSupported("ray_query statements: the device lacks VK_KHR_ray_query's rayQuery");
   RAYSPEC_TRY_VOID(checkPipelineObjects(d, validation_layer, c.pipeline, plan));
