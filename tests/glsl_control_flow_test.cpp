@@ -122,6 +122,29 @@ TEST(GlslControlFlow, SizedArraysAreNullInitialisedAndCompile) {
   EXPECT_TRUE(spirv.error.empty()) << spirv.error;
 }
 
+// int32 vectors are core GLSL's ivec: no #extension line of their own
+// (only the null initialiser's), and they compile.
+TEST(GlslControlFlow, Int32VectorsAreCoreIvec) {
+  const Case c = triangleCase(
+      "  raygen:\n"
+      "    - array: {name: a, of: ivec3, size: 2}\n"
+      "    - store: {array: a, index: 1, value: {ivec3: [1, 2, {int32: launch_id_x}]}}\n"
+      "    - trace: {}\n"
+      "    - record: {value: {uint: {sub: [{z: {load: [var.a, 1]}}, 2000000000]}}}\n"
+      "  hit_groups: [{closest_hit: [count: c]}]\n"
+      "outputs:\n"
+      "  counters: [c]\n"
+      "  per_ray: [value]\n");
+  const GeneratedPipeline g = generateGlsl(c, derivePlan(c));
+  const std::string& glsl = g.raygen.glsl;
+  EXPECT_NE(glsl.find("ivec3 v_a[2] = {};"), std::string::npos) << glsl;
+  EXPECT_NE(glsl.find("int(2000000000u)"), std::string::npos) << glsl;
+  EXPECT_EQ(glsl.find("explicit_arithmetic"), std::string::npos) << glsl;
+  EXPECT_EQ(glsl.find("#extension  "), std::string::npos) << glsl;
+  const SpirvResult spirv = compileGlsl(glsl, Stage::Raygen);
+  EXPECT_TRUE(spirv.error.empty()) << spirv.error;
+}
+
 // Each shader gets the values pipeline.specialize sets for it, as 32-bit
 // words by constant_id; every stage declares every constant with its default.
 TEST(GlslControlFlow, SpecializationReachesEachShader) {

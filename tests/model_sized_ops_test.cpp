@@ -67,6 +67,24 @@ TEST(ModelSizedOps, IntegersWrapAndConvertByTheirSignedness) {
   EXPECT_EQ(sizedValues(r, "value2"), (Pair{0xFFFFFFFEu, 0xFFFFFFFDu}));
 }
 
+// int32 (ivec2 .. ivec4) wraps modulo 2^32 and compares signed, where the
+// same bits as uint would compare unsigned.
+TEST(ModelSizedOps, Int32VectorsWrapAndCompareSigned) {
+  const Case c = sizedCase(
+      "    - let: {v: {ivec2: [{sub: [{int32: launch_id_x}, 2000000000]}, 2000000000]}}\n"
+      "    - let: {w: {mul: [var.v, 3]}}\n"  // x: -6e9 -> -1705032704 (+2^32 * 2)
+      "    - record: {value: {uint: {x: var.w}}, value1: {uint: {y: var.w}},\n"
+      "              value2: {uint: {min: [{x: var.v}, {y: var.v}]}}}\n");
+  const Results r = runTier(c, ModelTier::Fast);
+  ASSERT_TRUE(r.ok()) << r.status_detail;
+  EXPECT_EQ(sizedValues(r, "value"),
+            (Pair{static_cast<uint32_t>(-6000000000LL), static_cast<uint32_t>(-5999999997LL)}));
+  EXPECT_EQ(sizedValues(r, "value1"),
+            (Pair{6000000000ULL & 0xFFFFFFFFu, 6000000000ULL & 0xFFFFFFFFu}));
+  EXPECT_EQ(sizedValues(r, "value2"),
+            (Pair{static_cast<uint32_t>(-2000000000), static_cast<uint32_t>(-1999999999)}));
+}
+
 // Integer literals over 32 bits (Expr::wide) are exact in int64 and uint64
 // places, beyond the 2^53 a double holds.
 TEST(ModelSizedOps, WideLiteralsAreExactIn64BitPlaces) {

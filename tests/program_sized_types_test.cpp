@@ -47,7 +47,7 @@ TEST(SizedTypes, EachRowIsAValueTypeAndAConversionOp) {
     EXPECT_EQ(std::string(opInfo(convert).glsl), std::string(valueTypeGlsl(t)) + "($0)");
     EXPECT_EQ(componentCount(t), 1);
   }
-  EXPECT_EQ(rows, 8);
+  EXPECT_EQ(rows, 9);
   EXPECT_EQ(sizedType(ValueType::Uint), nullptr);
   EXPECT_STREQ(valueTypeGlsl(ValueType::Float64), "float64_t");
   EXPECT_EQ(sizedType(ValueType::Int16)->bits, 16);
@@ -112,7 +112,7 @@ TEST(SizedTypes, EachScalarHasVectorsOfTwoThreeAndFourWithConstructors) {
     ASSERT_TRUE(isSizedConstructor(make)) << valueTypeSpelling(t);
     EXPECT_EQ(constructorTarget(make), t);
   }
-  EXPECT_EQ(vectors, 24);
+  EXPECT_EQ(vectors, 27);
   EXPECT_STREQ(valueTypeSpelling(ValueType::Uint8Vec3), "u8vec3");
   EXPECT_STREQ(valueTypeGlsl(ValueType::Float64Vec4), "f64vec4");
   EXPECT_EQ(componentCount(ValueType::Int16Vec2), 2);
@@ -120,6 +120,27 @@ TEST(SizedTypes, EachScalarHasVectorsOfTwoThreeAndFourWithConstructors) {
   EXPECT_EQ(sizedComponent(ValueType::Vec3), ValueType::Vec3);
   EXPECT_FALSE(isSizedVector(ValueType::Vec2));
   EXPECT_TRUE(isSizedFloat(ValueType::Float64Vec2));
+}
+
+// int32 is core GLSL's int (its vectors ivec2 .. ivec4): no #extension, no
+// device feature; the 32-bit unsigned scalar stays `uint`, spelled once.
+TEST(SizedTypes, Int32IsCoreIntAndUintHasNoSecondSpelling) {
+  const SizedType* s = sizedType(ValueType::Int32Vec3);
+  ASSERT_NE(s, nullptr);
+  EXPECT_EQ(s->type, ValueType::Int32);
+  EXPECT_EQ(s->bits, 32);
+  EXPECT_EQ(s->kind, SizedKind::Signed);
+  EXPECT_STREQ(s->extension, "");
+  EXPECT_STREQ(s->feature, "");
+  EXPECT_STREQ(valueTypeGlsl(ValueType::Int32), "int");
+  EXPECT_STREQ(valueTypeSpelling(ValueType::Int32Vec4), "ivec4");
+  EXPECT_EQ(valueTypeNamed("ivec2"), ValueType::Int32Vec2);
+  EXPECT_FALSE(valueTypeNamed("uint32").has_value());
+  EXPECT_FALSE(valueTypeNamed("uvec2").has_value());
+  EXPECT_EQ(wrapToType(ValueType::Int32, 0x80000000u), static_cast<uint64_t>(INT32_MIN));
+  Expr big = sizedOp("add", {sizedOp("int32", {sizedLit(3)}), sizedLit(2147483648.0)});
+  EXPECT_NE(sizedTypeMessage(big).find("out of range 0..2147483647"), std::string::npos)
+      << sizedTypeMessage(big);
 }
 
 TEST(SizedTypes, VectorsTypeLaneByLaneAndTheirLiteralsTakeTheComponentType) {

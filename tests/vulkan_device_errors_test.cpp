@@ -213,6 +213,17 @@ TEST(DeviceErrors, ASizedScalarWithoutItsFeatureIsNotSupported) {
   }
 }
 
+// int32 (ivec2 .. ivec4) is core: a device without any of the sized
+// features still runs it (its row's feature is empty).
+TEST(DeviceErrors, Int32VectorsNeedNoFeature) {
+  const Case c = suiteCase("control/live-state-sized-vectors/int32");
+  ASSERT_FALSE(c.name.empty());
+  VulkanContext ctx = ampleContext();
+  ctx.info.shader_int8 = ctx.info.shader_int16 = ctx.info.shader_int64 = false;
+  ctx.info.shader_float16 = ctx.info.shader_float64 = false;
+  EXPECT_TRUE(checkCaseSupport(ctx, c, derivePlan(c)).ok());
+}
+
 // tlas: expr indexes the array of top levels with nonuniformEXT: a device
 // without descriptorIndexing (VK_EXT_descriptor_indexing) is NotSupported,
 // the feature named.

@@ -227,7 +227,8 @@ std::vector<std::pair<uint32_t, uint32_t>> specializationOf(const Case& c,
 void sizedTypeExtensions(const Plan& plan, GlslWriter& out) {
   std::string last;
   for (ValueType t : enumValues<ValueType>()) {
-    if (!isSizedScalar(t) || !plan.usesSized(t) || sizedType(t)->extension == last) continue;
+    if (!isSizedScalar(t) || !plan.usesSized(t)) continue;
+    if (!*sizedType(t)->extension || sizedType(t)->extension == last) continue;  // int32: core
     last = sizedType(t)->extension;
     out.line("#extension " + last + " : require");
   }

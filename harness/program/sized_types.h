@@ -9,6 +9,9 @@
 // member holds one). Rows: Y(X, ValueType, "name", "the case's spelling",
 // "GLSL", bits, SizedKind, "the #extension it needs", "the device feature",
 // "its vectors' GLSL and spelling less the component count").
+// int32 is core GLSL's signed int (no #extension, no device feature: both
+// columns empty); its vectors are ivec2 .. ivec4. The 32-bit unsigned scalar
+// is `uint` (program/program.h), once: there is no uint32 row.
 // Only what is exact in each is offered: integer add, sub, mul (wrapping
 // modulo 2^bits), min, max and comparisons; float16/float64 add, sub, mul,
 // min, max and comparisons whose results are exact (the model names an
@@ -28,6 +31,7 @@
     "GL_EXT_shader_explicit_arithmetic_types_int16", "shaderInt16", "i16vec")                   \
   Y(X, Uint16, "Uint16", "uint16", "uint16_t", 16, Unsigned,                                   \
     "GL_EXT_shader_explicit_arithmetic_types_int16", "shaderInt16", "u16vec")                   \
+  Y(X, Int32, "Int32", "int32", "int", 32, Signed, "", "", "ivec")                              \
   Y(X, Float16, "Float16", "float16", "float16_t", 16, Floating,                               \
     "GL_EXT_shader_explicit_arithmetic_types_float16",                                          \
     "shaderFloat16 (VK_KHR_shader_float16_int8)", "f16vec")                                     \

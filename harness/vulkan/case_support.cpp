@@ -123,11 +123,11 @@ Result<void> checkDeferred(const DeviceInfo& d, uint32_t validation_layer) {
 }
 
 // The device feature each sized scalar the case computes with needs
-// (program/sized_types.h's feature column names it).
+// (program/sized_types.h's feature column names it; int32 needs none).
 Result<void> checkSizedTypes(const DeviceInfo& d, const Plan& plan) {
   for (ValueType t : enumValues<ValueType>()) {
     const SizedType* s = sizedType(t);
-    if (!s || !isSizedScalar(t) || !plan.usesSized(t)) continue;
+    if (!s || !isSizedScalar(t) || !plan.usesSized(t) || !*s->feature) continue;
     const bool integer = s->kind != SizedKind::Floating;
     const bool has = integer ? (s->bits == 8    ? d.shader_int8
                                 : s->bits == 16 ? d.shader_int16
