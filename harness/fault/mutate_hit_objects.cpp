@@ -46,7 +46,7 @@ size_t recordHits(const Case& c, std::optional<bool> by_index) {
   return n;
 }
 
-std::string recordFault(Case& c, ModelOptions& o, HitObjectRecordFault f, size_t sites,
+std::string recordFault(ModelOptions& o, HitObjectRecordFault f, size_t sites,
                         const std::string& what) {
   if (!sites) return "";
   o.faults.hit_object_record = f;
@@ -56,19 +56,19 @@ std::string recordFault(Case& c, ModelOptions& o, HitObjectRecordFault f, size_t
 }  // namespace
 
 std::string hitObjectRecordSbtNoInstanceOffset(Case& c, ModelOptions& o) {
-  return recordFault(c, o, HitObjectRecordFault::SbtNoInstanceOffset, recordHits(c, false),
+  return recordFault(o, HitObjectRecordFault::SbtNoInstanceOffset, recordHits(c, false),
                      "hits recorded by SBT offset and stride whose record leaves out the "
                      "instance's SBT offset");
 }
 
 std::string hitObjectRecordIndexPlusInstanceOffset(Case& c, ModelOptions& o) {
-  return recordFault(c, o, HitObjectRecordFault::IndexPlusInstanceOffset, recordHits(c, true),
+  return recordFault(o, HitObjectRecordFault::IndexPlusInstanceOffset, recordHits(c, true),
                      "hits recorded by SBT record index whose record adds the instance's SBT "
                      "offset");
 }
 
 std::string hitObjectRecordCustomIndexIsId(Case& c, ModelOptions& o) {
-  return recordFault(c, o, HitObjectRecordFault::CustomIndexIsId, recordHits(c, std::nullopt),
+  return recordFault(o, HitObjectRecordFault::CustomIndexIsId, recordHits(c, std::nullopt),
                      "recorded hits whose custom index is their instance id");
 }
 
@@ -77,7 +77,7 @@ std::string hitObjectRecordHandleOwn(Case& c, ModelOptions& o) {
   forEachProgram(c.pipeline, [&](const Program& p, Stage) {
     walkExpressions(p, [&](const Expr& e) { reads += isHitObjectRecordRead(e); });
   });
-  return recordFault(c, o, HitObjectRecordFault::HandleOwn, reads,
+  return recordFault(o, HitObjectRecordFault::HandleOwn, reads,
                      "reads of the hit object's shader record that read the stage's own");
 }
 
