@@ -37,7 +37,7 @@ rays:
   EXPECT_EQ(r.errors.size(), 2u) << allErrors(r);
   EXPECT_EQ(r.errors[0].format(),
             "t.yaml:3:3: scene.instancess: unknown key 'instancess' (expected one of: blas, "
-            "instances, build, update)");
+            "instances, build, update, split)");
 }
 
 const char* kScene = R"(rules: [R-MASK]

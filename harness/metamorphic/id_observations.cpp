@@ -4,6 +4,7 @@
 #include <array>
 
 #include "program/ops.h"
+#include "program/walk_program.h"
 
 namespace rayspec {
 namespace {
@@ -119,12 +120,18 @@ std::vector<uint64_t> IdObservations::classOf(uint64_t id) const {
 IdObservations observeId(const Pipeline& p, Builtin id) {
   IdObservations out;
   Observer o{builtinSpelling(id), readsOf(id), out};
-  o.program(p.raygen);
-  for (const Program& m : p.miss) o.program(m);
+  const auto observe = [&](const Program& prog) {
+    o.program(prog);
+    // A hit recorded by hand (record_hit) names its instance, geometry and
+    // primitive by index: no id may move.
+    walkStatements(prog, [&](const Stmt& s) { out.exact |= s.kind == Stmt::Kind::RecordHit; });
+  };
+  observe(p.raygen);
+  for (const Program& m : p.miss) observe(m);
   for (const HitGroup& g : p.hit_groups)
     for (const std::optional<Program>* prog : {&g.closest_hit, &g.any_hit, &g.intersection})
-      if (*prog) o.program(**prog);
-  for (const Program& k : p.callables) o.program(k);
+      if (*prog) observe(**prog);
+  for (const Program& k : p.callables) observe(k);
   return out;
 }
 
