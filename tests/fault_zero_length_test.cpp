@@ -12,14 +12,6 @@
 namespace rayspec {
 namespace {
 
-// The fault planted in library case `name` (whose model answers pass).
-PlantedVerdict plantOn(const std::string& name, const std::string& fault) {
-  const std::optional<SuiteModelRun> run = suiteModelRun(name);
-  if (!run) return {};
-  EXPECT_EQ(perfectStatus(*run), Status::Pass) << name;
-  return plantOnModel(*run, fault);
-}
-
 bool failsOn(const Verdict& v, const std::string& rule) {
   return std::any_of(v.findings.begin(), v.findings.end(), [&](const Finding& f) {
     return f.status == Status::Fail && findingNames(f, rule);
@@ -28,7 +20,7 @@ bool failsOn(const Verdict& v, const std::string& rule) {
 
 TEST(ZeroLengthRayBoxMissed, FailsTheZeroLengthCasesPipelineAndInline) {
   for (const char* name : {"intersection/zero-length-in-box", "ray-query/zero-length-in-box"}) {
-    const PlantedVerdict p = plantOn(name, "zero-length-ray-box-missed");
+    const PlantedVerdict p = plantOnSuiteCase(name, "zero-length-ray-box-missed");
     EXPECT_TRUE(p.fault.applied) << name << ": " << p.fault.what;
     EXPECT_EQ(p.verdict.status, Status::Fail) << name << ": " << p.verdict.headline();
     EXPECT_TRUE(failsOn(p.verdict, "R-AABB-CONS")) << name << ": " << p.verdict.headline();
@@ -36,7 +28,8 @@ TEST(ZeroLengthRayBoxMissed, FailsTheZeroLengthCasesPipelineAndInline) {
 }
 
 TEST(ZeroLengthRayBoxMissed, LeavesACaseWithoutZeroLengthRaysAlone) {
-  const PlantedVerdict p = plantOn("candidates/aabb-closed-interval", "zero-length-ray-box-missed");
+  const PlantedVerdict p =
+      plantOnSuiteCase("candidates/aabb-closed-interval", "zero-length-ray-box-missed");
   EXPECT_FALSE(p.fault.applied) << p.fault.what;
   EXPECT_EQ(p.verdict.status, Status::Pass) << p.verdict.headline();
 }

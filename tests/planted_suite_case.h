@@ -64,4 +64,12 @@ inline PlantedVerdict plantOnModel(const SuiteModelRun& run, const std::string& 
   return p;
 }
 
+// The fault planted in library case `name`, whose model answers must pass.
+inline PlantedVerdict plantOnSuiteCase(const std::string& name, const std::string& fault) {
+  const std::optional<SuiteModelRun> run = suiteModelRun(name);
+  if (!run) return {};
+  EXPECT_EQ(perfectStatus(*run), Status::Pass) << name;
+  return plantOnModel(*run, fault);
+}
+
 }  // namespace rayspec

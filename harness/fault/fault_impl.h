@@ -175,6 +175,7 @@ std::string queryFrontFaceInverted(Case& c, ModelOptions& o);
 std::string queryObjectRayWorld(Case& c, ModelOptions& o);
 std::string wideLaunchTruncated(Case& c, ModelOptions& o);
 std::string launchIdXWrapped(Case& c, ModelOptions& o);
+std::string launchIdYzWrapped(Case& c, ModelOptions& o);
 std::string addressWritesLost(Case& c, ModelOptions& o);
 std::string specializationIgnored(Case& c, ModelOptions& o);
 std::string emptyGeometryRenumbered(Case& c, ModelOptions& o);

@@ -442,6 +442,10 @@ std::vector<FaultImpl> codeAndLaunchMutations() {
        "gl_LaunchIDEXT.x reads modulo 65536 in every stage (a launch wider than that repeats "
        "the first ids)",
        nullptr, launchIdXWrapped},
+      {"launch-id-yz-wrapped", K::CaseMutation,
+       "gl_LaunchIDEXT.y and .z read modulo 4096 in every stage (a launch deeper than that "
+       "repeats the first rows and layers)",
+       nullptr, launchIdYzWrapped},
       {"specialization-ignored", K::CaseMutation,
        "every shader runs with the specialization constants' defaults, whatever its "
        "VkSpecializationInfo sets",

@@ -176,13 +176,60 @@ FaultResult indirectLaunchShort(RecordFaultArgs& a) {
                     ": raygen_runs 0 on row " + std::to_string(height - 1)};
 }
 
+namespace {
+
+// A launch of ids all alike (rays.same, and no per-ray record to tell them
+// apart): each counter a multiple of the ids moves by `ids_moved` ids' share
+// of it (negative: those ids never ran); the counters moved, by name.
+std::string moveUniformCounters(RecordFaultArgs& a, int64_t ids_moved) {
+  const uint64_t ids = a.c.rays.launchRays();
+  std::string moved;
+  for (auto& [name, count] : a.dev.w.counters) {
+    if (count == 0 || count % ids != 0) continue;
+    count = static_cast<uint64_t>(static_cast<int64_t>(count) +
+                                  ids_moved * static_cast<int64_t>(count / ids));
+    moved += (moved.empty() ? "" : ", ") + name;
+  }
+  return moved;
+}
+
+bool uniformCountersOnly(const Case& c) {
+  return c.rays.same && c.outputs.per_ray.empty() && c.rays.launchRays() != 0;
+}
+
+// R-LAUNCH-3D: a launch of ids all alike whose last row of ids (y = height -
+// 1, each z) runs `times` more times (1: twice, -1: never).
+FaultResult lastRowRuns(RecordFaultArgs& a, int64_t times) {
+  const std::array<uint32_t, 3> size = a.c.rays.launchSize();
+  if (!uniformCountersOnly(a.c) || size[1] < 2)
+    return notApplicable("not a rays.same launch of counters only with rows to tell apart");
+  const uint64_t row = uint64_t{size[0]} * size[2];
+  const std::string moved = moveUniformCounters(a, times * static_cast<int64_t>(row));
+  if (moved.empty()) return notApplicable("no counter counts every id alike");
+  return {true, std::string("the last row of ") + std::to_string(row) + " ids ran " +
+                    (times > 0 ? "twice" : "never") + ": counters " + moved + " moved"};
+}
+
+// launchDepthLost for a launch of ids all alike: the counters of the layers
+// beyond the first are lost.
+FaultResult uniformDepthLost(RecordFaultArgs& a, uint64_t layer) {
+  const uint64_t lost = a.c.rays.launchRays() - layer;
+  const std::string moved = moveUniformCounters(a, -static_cast<int64_t>(lost));
+  if (moved.empty()) return notApplicable("no counter counts every id alike");
+  return {true, "the launch ran its first z layer of " + std::to_string(layer) + " ids, not " +
+                    std::to_string(lost) + " more: counters " + moved + " moved"};
+}
+
+}  // namespace
+
 // R-LAUNCH-3D: a device that launches only the first z layer of a 3D
 // launch: raygen never runs for z >= 1.
 FaultResult launchDepthLost(RecordFaultArgs& a) {
   const std::array<uint32_t, 3> launch = a.c.rays.launchSize();
+  const uint32_t layer = launch[0] * launch[1];
+  if (launch[2] >= 2 && uniformCountersOnly(a.c)) return uniformDepthLost(a, layer);
   if (launch[2] < 2 || a.c.rays.rays.empty())
     return notApplicable("the launch has one z layer (rays.launch)");
-  const uint32_t layer = launch[0] * launch[1];
   for (uint32_t ray = layer; ray < a.dev.rays(); ++ray) a.dev.set(ray, "raygen_runs", 0);
   return {true, "the launch ran " + std::to_string(launch[0]) + " x " + std::to_string(launch[1]) +
                     " x 1 of " + std::to_string(launch[2]) + " layers: raygen_runs 0 on " +
@@ -200,33 +247,6 @@ FaultResult zeroLaunchRuns(RecordFaultArgs& a) {
   if (counter.empty()) return notApplicable("raygen counts nothing");
   return {true, "the zero-sized launch ran raygen once: counter '" + counter + "' + 1"};
 }
-
-namespace {
-
-// R-LAUNCH-3D: a launch of ids all alike (rays.same, and no per-ray record
-// to tell them apart) whose last row of ids (y = height - 1, each z) runs
-// `times` more times (1: twice, -1: never): each counter a multiple of the
-// ids moves by that row's share of it.
-FaultResult lastRowRuns(RecordFaultArgs& a, int64_t times) {
-  const Rays& rays = a.c.rays;
-  const uint64_t ids = rays.launchRays();
-  const std::array<uint32_t, 3> size = rays.launchSize();
-  if (!rays.same || !a.c.outputs.per_ray.empty() || ids == 0 || size[1] < 2)
-    return notApplicable("not a rays.same launch of counters only with rows to tell apart");
-  const uint64_t row = uint64_t{size[0]} * size[2];
-  std::string moved;
-  for (auto& [name, count] : a.dev.w.counters) {
-    if (count == 0 || count % ids != 0) continue;
-    count = static_cast<uint64_t>(static_cast<int64_t>(count) +
-                                  times * static_cast<int64_t>(count / ids * row));
-    moved += (moved.empty() ? "" : ", ") + name;
-  }
-  if (moved.empty()) return notApplicable("no counter counts every id alike");
-  return {true, std::string("the last row of ") + std::to_string(row) + " ids ran " +
-                    (times > 0 ? "twice" : "never") + ": counters " + moved + " moved"};
-}
-
-}  // namespace
 
 FaultResult launchRowRepeated(RecordFaultArgs& a) {
   return lastRowRuns(a, 1);

@@ -118,8 +118,8 @@ std::vector<RuleFaults> pipelineRules() {
        {}},
       {"R-BUILTIN",
        {"builtin-wrong", "swap-primitive-id", "shift-t", "empty-geometry-renumbered",
-        "transform-builtins-swapped", "launch-id-x-wrapped", "nested-trace-clobbers-hit",
-        "incoming-flags-with-pipeline-skip"},
+        "transform-builtins-swapped", "launch-id-x-wrapped", "launch-id-yz-wrapped",
+        "nested-trace-clobbers-hit", "incoming-flags-with-pipeline-skip"},
        {}},
       // Several top levels are built as copies of the instance list, the other
       // levels' instances inactive (Instance::tlas): which instances a trace
