@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "case/build_order.h"
 #include "vulkan/acceleration_copy.h"
 #include "vulkan/acceleration_structure.h"
 #include "vulkan/build_batch.h"
@@ -204,13 +205,6 @@ class SceneBuilder {
     return {};
   }
 
-  // Where scene.build.queries asks the level's structures: before the copy,
-  // or once the last update ran (none: never).
-  size_t queryAt(size_t updates) const {
-    if (scene_.build.queries.queries.empty()) return updates + 1;
-    return scene_.build.copy == AsCopy::None ? updates : scene_.updatesBeforeCopy();
-  }
-
   // One level: its builds, then each update in turn, the queries and the
   // copy (submitted and waited on, then the updates after it retargeted to
   // the copies) where scene.build.order puts it.
@@ -219,9 +213,7 @@ class SceneBuilder {
                         const std::function<Result<void>()>& query,
                         const std::function<Result<void>()>& copy) {
     builds.record(ctx_, cmd, next, scene_.build.one_by_one);
-    const size_t copy_at =
-        scene_.build.copy == AsCopy::None ? updates.size() + 1 : scene_.updatesBeforeCopy();
-    const size_t query_at = queryAt(updates.size());
+    const size_t copy_at = copyAt(scene_), query_at = queryAt(scene_);
     for (size_t k = 0; k <= updates.size(); ++k) {
       if (k == copy_at || k == query_at) {
         RAYSPEC_TRY_VOID(submitAndWait(ctx_, cmd));
@@ -427,7 +419,7 @@ class SceneBuilder {
   // updated to).
   Result<void> queryTlases() {
     QueriedLevel level{tlas_structures_, true, {}};
-    const Scene& state = *states_[std::min(queryAt(updates()), updates())];
+    const Scene& state = *states_[std::min(queryAt(scene_), updates())];
     for (const std::set<uint32_t>& blases : referencedBlases(state)) {
       std::set<VkDeviceAddress>& addresses = level.referenced.emplace_back();
       for (uint32_t i : blases) addresses.insert(builds_[i].address);
