@@ -94,6 +94,27 @@ TEST(Show, ARobustnessProbeListsItsUndefinedBehaviour) {
   EXPECT_NE(r.out.find("rays.list[4].tmin: tmin is NaN", at), std::string::npos) << r.out;
 }
 
+// scene.split moves a mesh's triangles into geometries or instances of
+// their own after rays.aim aimed at the mesh (parse_case.cpp): show lists
+// each ray's target in the mesh as aimed (it listed none, aiming again at
+// the split scene).
+TEST(Show, AimedRaysOfASplitMesh) {
+  for (const char* name : {"watertight/closed-fan-geometries/mag-1-n-4",
+                           "watertight/closed-fan-instances/moved-mag-1e3-n-4"}) {
+    const ShowRun r = show(std::string(name) + " --no-glsl --no-model");
+    ASSERT_EQ(r.status, 0) << name << ": " << r.err;
+    const size_t aimed = r.out.find("Aimed rays (rays.aim: what each ray is aimed at):\n");
+    ASSERT_NE(aimed, std::string::npos) << name << ": " << r.out;
+    EXPECT_NE(
+        r.out.find("  ray 0: vertex of instance 0 geometry 0 triangles 0, 1, 2, 3 at (", aimed),
+        std::string::npos)
+        << name << ": " << r.out;
+    EXPECT_NE(r.out.find("  ray 1: edge of instance 0 geometry 0 triangles ", aimed),
+              std::string::npos)
+        << name << ": " << r.out;
+  }
+}
+
 // Issue 61: show lists what each aimed ray is aimed at, and what the model
 // expects of each ray (which stage ran, the recorded fields, the legal
 // answers of an ambiguous ray).

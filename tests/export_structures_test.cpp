@@ -2,7 +2,7 @@
 // (scene.update: in place, into other structures, top levels rebuilt),
 // copies (scene.build.copy: clone, compact, serialize) in the order
 // scene.build.order gives, and several top levels, each played on lavapipe as
-// rayspec's builds run them (harness/vulkan/acceleration_structure.cpp) and
+// rayspec's builds run them (harness/vulkan/scene_builder.cpp) and
 // held to rayspec's verdict (references/baselines/lavapipe.csv: Pass);
 // expectations of the scene as first built (an update the model ignored)
 // make an update case fail. Structure queries (scene.build.queries) asked

@@ -133,8 +133,12 @@ TEST(DoubleHit, TheModelReplaysEverySetOfTheTrianglesClosingAroundTheRay) {
   const std::set<uint32_t> doubled = values(vertex->double_replays);
   for (uint32_t v = 1; v < 64; ++v) {
     EXPECT_NE(legal.count(v) + doubled.count(v), 0u) << v;
-    if (std::popcount(v) == 1) EXPECT_EQ(legal.count(v), 1u) << v;
-    if (std::popcount(v) >= 3) EXPECT_EQ(doubled.count(v), 1u) << v;
+    if (std::popcount(v) == 1) {
+      EXPECT_EQ(legal.count(v), 1u) << v;
+    }
+    if (std::popcount(v) >= 3) {
+      EXPECT_EQ(doubled.count(v), 1u) << v;
+    }
   }
   EXPECT_EQ(legal.size() + doubled.size(), 63u);
   // The spoke's two triangles: both any-hits are a legal answer already.

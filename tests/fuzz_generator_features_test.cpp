@@ -123,8 +123,11 @@ TEST(FuzzWithout, TheRestStillVaries) {
     for (const std::string& f : g.features) ++seen[f];
     pipelines.insert(g.yaml.substr(g.yaml.find("\npipeline:")));
   }
-  for (const std::string& f : generatorFeatures())
-    if (!kRayQueryFeatures.count(f)) EXPECT_GE(seen[f], 5u) << f;
+  for (const std::string& f : generatorFeatures()) {
+    if (!kRayQueryFeatures.count(f)) {
+      EXPECT_GE(seen[f], 5u) << f;
+    }
+  }
   EXPECT_EQ(pipelines.size(), 200u);
 }
 

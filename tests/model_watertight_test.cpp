@@ -136,7 +136,9 @@ TEST(Watertight, ARayNearlyInTheTrianglesPlaneIsNotClearlyOutside) {
       EXPECT_EQ(h.ambiguity, TriAmbiguity::Degenerate) << step;
       EXPECT_FALSE(watertightCertainMiss(w, v0, v1, v2, {})) << step;
     }
-    if (step > 1e-5) EXPECT_EQ(h.ambiguity, TriAmbiguity::None) << step;
+    if (step > 1e-5) {
+      EXPECT_EQ(h.ambiguity, TriAmbiguity::None) << step;
+    }
   }
   EXPECT_GT(near, 0);
 }

@@ -43,7 +43,9 @@ TEST(MutatePlanted, ASurvivorOnAnAmbiguousRayIsAHole) {
   EXPECT_TRUE(o->killed || o->legal_reason.empty())
       << "a legal reason on an ambiguous ray: " << o->legal_reason;
   const KillMatrix k = buildKillMatrix({m});
-  if (!o->killed) EXPECT_GE(k.unexplained(), 1u);
+  if (!o->killed) {
+    EXPECT_GE(k.unexplained(), 1u);
+  }
 }
 
 // A --through ray-query run inlines every trace as a ray query loop: the

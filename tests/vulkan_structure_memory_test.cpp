@@ -221,7 +221,9 @@ TEST_F(StructureRun, ALostPageOfSparseInputsChangesTheTraces) {
     ASSERT_EQ(r.records.size(), 2u * recordWords());
     const bool instances = std::string(buffers) == "instances";
     EXPECT_EQ(r.records[hit->offset], instances ? 1u : 0u);
-    if (instances) EXPECT_EQ(r.records[recordWords() + hit->offset], 0u);
+    if (instances) {
+      EXPECT_EQ(r.records[recordWords() + hit->offset], 0u);
+    }
   }
   injectLayoutFault(LayoutFault::None);
 }

@@ -11,8 +11,8 @@
 
 #include "live_device.h"
 #include "parse_support.h"
-#include "vulkan/acceleration_structure.h"
 #include "vulkan/context.h"
+#include "vulkan/scene_builder.h"
 #include "vulkan/vk_fault_hook.h"
 
 namespace rayspec {

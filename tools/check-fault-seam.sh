@@ -8,7 +8,7 @@
 #                          the model by model/model_fault_seam.* alone
 #   vulkan/vk_fault_hook.h the Vulkan side's hooks (a failing call, obeyed by
 #                          vkCall only; a build layout fault, read by
-#                          vulkan/acceleration_structure.cpp only, and the
+#                          vulkan/scene_builder.cpp only, and the
 #                          deferred pipeline fault, read by
 #                          vulkan/deferred_operation.cpp only)
 # Prints each use outside them; exits 1 if there is one.
@@ -37,7 +37,7 @@ check "the Vulkan fault hook" 'injectVkError|injectedVkError|InjectedVkError' \
   harness/vulkan/vk_fault_hook. harness/vulkan/vk_check.h harness/vulkan/device_errors. \
   harness/run/fault_seam.cpp
 check "the build layout fault hook" 'injectLayoutFault|injectedLayoutFault' \
-  harness/vulkan/vk_fault_hook. harness/vulkan/acceleration_structure.cpp \
+  harness/vulkan/vk_fault_hook. harness/vulkan/scene_builder.cpp \
   harness/vulkan/deferred_operation.cpp harness/run/fault_seam.cpp
 # Inside the model only its seam reads a knob; model_faults.h defines them
 # and model_engine.h carries them in (ModelOptions::faults).

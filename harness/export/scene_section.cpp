@@ -2,6 +2,7 @@
 #include <cstring>
 #include <set>
 
+#include "case/build_order.h"
 #include "export/c_text.h"
 #include "export/export_sections.h"
 #include "vulkan/acceleration_structure.h"
@@ -118,19 +119,12 @@ void addState(const Scene& state, size_t k, const std::vector<bool>& reached, co
 // the builds, updates and copy as the Vulkan engine runs them.
 std::string operationDefines(const Scene& scene) {
   const AsBuild& b = scene.build;
-  const size_t copy_at = b.copy == AsCopy::None ? scene.updates() + 1 : scene.updatesBeforeCopy();
   std::string copy = asCopyName(b.copy);
   for (char& ch : copy) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
-  return "#define RS_COPY RS_COPY_" + copy + "\n#define RS_COPY_AT " + std::to_string(copy_at) +
-         "u\n#define RS_UPDATE_INTO_OTHER " + (b.update_into_other ? "1" : "0") +
-         "\n#define RS_TLAS_REBUILT " + (b.tlas_rebuilt ? "1" : "0") + "\n";
-}
-
-// Where scene.build.queries asks each level: before the copy, or once the
-// last update ran (none: never), as the Vulkan engine asks them.
-size_t queryAt(const Scene& scene) {
-  if (scene.build.queries.queries.empty()) return scene.updates() + 1;
-  return scene.build.copy == AsCopy::None ? scene.updates() : scene.updatesBeforeCopy();
+  return "#define RS_COPY RS_COPY_" + copy + "\n#define RS_COPY_AT " +
+         std::to_string(copyAt(scene)) + "u\n#define RS_UPDATE_INTO_OTHER " +
+         (b.update_into_other ? "1" : "0") + "\n#define RS_TLAS_REBUILT " +
+         (b.tlas_rebuilt ? "1" : "0") + "\n";
 }
 
 // rs_queries, rs_query_count (the device queries in the case's order), RS_QUERY_AT,

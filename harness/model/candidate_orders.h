@@ -1,7 +1,7 @@
 // The candidate orders the exact tier tries where a trace's candidate
 // programs may depend on the order candidates arrive in (R-ORDER-UNSPEC,
 // model/order_dependence.h), and what each order's what-if run leaves
-// behind (model_exact_tier.cpp, TraceClassifier::tryPermutations).
+// behind (model_exact_orders.cpp, TraceClassifier::tryPermutations).
 #pragma once
 
 #include <cstddef>

@@ -1,5 +1,6 @@
-// The exact tier's classifier of one trace (model_exact_tier.cpp: the unsure
-// candidates and the answer; model_exact_orders.cpp: the candidate orders).
+// The exact tier's classifier of one trace (trace_classifier.cpp: the unsure
+// candidates and the answer; model_exact_orders.cpp: the candidate orders;
+// double_hits.cpp: the double hits).
 // Internal to the model.
 #pragma once
 
@@ -8,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "case/share_frame.h"
 #include "model/candidate_orders.h"
 #include "model/model_tracer.h"
 #include "model/traversal.h"
@@ -134,5 +136,9 @@ class TraceClassifier {
   const std::vector<std::pair<size_t, double>>* reports_ = nullptr;  // findUnsure's
   bool faces_ = false;                                               // a grazed box among them
 };
+
+// The share frame of a triangle candidate (case/share_frame.h); boxes all
+// in one.
+ShareFrame candidateFrame(const ModelScene& scene, const ModelCandidate& c);
 
 }  // namespace rayspec

@@ -75,13 +75,23 @@ std::vector<AimTarget> aimTargetsOf(const Case& c, const std::string& text) {
   YamlReader r(c.file, errors);
   AimSpec spec;
   std::vector<AimTarget> targets;
+  // rays.aim aims at the scene as parsed before scene.split moves the mesh's
+  // triangles apart (parse_case.cpp): where the case splits, that scene again.
+  Scene unsplit;
+  const Scene* aimed = &c.scene;
   try {
-    const YAML::Node aim = YamlReader::get(YamlReader::get(YAML::Load(text), "rays"), "aim");
+    const YAML::Node root = YAML::Load(text);
+    const YAML::Node aim = YamlReader::get(YamlReader::get(root, "rays"), "aim");
     if (!aim.IsDefined() || !readAimSpec(r, aim, spec)) return {};
+    const YAML::Node scene = YamlReader::get(root, "scene");
+    if (scene.IsMap() && YamlReader::has(scene, "split")) {
+      parseScene(r, scene, unsplit);
+      aimed = &unsplit;
+    }
   } catch (const YAML::Exception&) {
     return {};
   }
-  if (!aimRays(c.scene, spec, c.rays.defaults, &targets)) return {};
+  if (!errors.empty() || !aimRays(*aimed, spec, c.rays.defaults, &targets)) return {};
   // rays.launch may run fewer (none): then no ray is aimed.
   if (targets.size() != c.rays.rays.size()) return {};
   return targets;

@@ -19,7 +19,8 @@ bool readAimSpec(YamlReader& r, const YAML::Node& n, AimSpec& spec);
 
 // What each ray of `c` is aimed at, by ray, where its text (the case's
 // file, or a sweep variant's substituted text) gives its rays by `aim`;
-// empty otherwise.
+// empty otherwise. With scene.split, the instance, geometry and triangles
+// of the mesh as aimed, before the split.
 std::vector<AimTarget> aimTargetsOf(const Case& c, const std::string& text);
 
 }  // namespace rayspec

@@ -4,7 +4,6 @@
 
 #include "case/flag_names.h"
 #include "glsl/generate_glsl.h"
-#include "vulkan/acceleration_structure.h"
 #include "vulkan/address_table.h"
 #include "vulkan/case_buffers.h"
 #include "vulkan/commands.h"
@@ -13,6 +12,7 @@
 #include "vulkan/library_group_handles.h"
 #include "vulkan/pipeline.h"
 #include "vulkan/sbt_buffer.h"
+#include "vulkan/scene_builder.h"
 #include "vulkan/stack_size.h"
 #include "vulkan/trace.h"
 #include "vulkan/vk_check.h"

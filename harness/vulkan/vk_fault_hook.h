@@ -3,7 +3,7 @@
 // device_errors.h) make one Vulkan call fail on purpose; they reach the
 // Vulkan side through injectVkError and nothing else, and vkCall
 // (vulkan/vk_check.h, with vkAnswer) is the one place that obeys it. The layout faults
-// reach it through injectLayoutFault, read by vulkan/acceleration_structure.cpp
+// reach it through injectLayoutFault, read by vulkan/scene_builder.cpp
 // (which lays its inputs out by vulkan/build_layout.h with it) and, for
 // deferred-handle-early alone, vulkan/deferred_operation.cpp. A product run never sets
 // either. docs/layout-and-conventions.md, "The fault seam", lists every such hook.

@@ -1,0 +1,461 @@
+// The exact tier's classifier of one trace (trace_classifier.h): which
+// candidates are unsure, the what-if runs where they decide otherwise and
+// the answers those give, the t bounds, and the ambiguity it finishes with
+// (results/results.h, RayAmbiguity).
+#include "model/trace_classifier.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "model/traversal.h"
+#include "results/tolerances.h"
+
+namespace rayspec {
+
+using namespace trace_detail;
+
+ShareFrame candidateFrame(const ModelScene& scene, const ModelCandidate& c) {
+  if (c.aabb) return {};
+  const ModelInstance& mi = scene.instances[c.instance];
+  return shareFrame(*mi.src, c.instance, scene.blases[mi.blas].geometries[c.geometry].transform);
+}
+
+// A triangle candidate that a device may see as a hit in the interval.
+bool TraceClassifier::eligible(const ModelCandidate& cand) const {
+  const TraceRay& r = tr_.ray;
+  const ModelInstance& mi = scene_.instances[cand.instance];
+  const ModelGeometry& g = scene_.blases[mi.blas].geometries[cand.geometry];
+  const bool opaque = resolveOpaque(g.flags, mi.src->flags, tr_.flags);
+  if (((tr_.flags & kRayCullOpaque) && opaque) || ((tr_.flags & kRayCullNoOpaque) && !opaque))
+    return false;
+  if (facing(scene_, cand, r, tr_.flags).culled) return false;
+  // R-CAND-TRI-OPEN: at or beyond an end every device judges exactly.
+  if ((cand.exact_tmin && cand.t <= r.tmin) || (cand.exact_tmax && cand.t >= r.tmax)) return false;
+  const double tl = tr_.endTol(cand);
+  return !(cand.t < r.tmin - tl || cand.t > r.tmax + tl);
+}
+
+namespace {
+
+Candidate answerOf(const Committed& b) {
+  if (!b.valid) return {};
+  return {true, b.instance, b.geometry, b.primitive, b.t};
+}
+
+bool sameAnswer(const Candidate& a, const Candidate& b) {
+  return a.hit == b.hit && (!a.hit || (a.instance == b.instance && a.geometry == b.geometry &&
+                                       a.primitive == b.primitive));
+}
+
+bool listed(const std::vector<Candidate>& list, const Candidate& k) {
+  return std::any_of(list.begin(), list.end(),
+                     [&](const Candidate& l) { return sameAnswer(l, k); });
+}
+
+}  // namespace
+
+void TraceClassifier::addCommitted(const Committed& b, const WhatIf& how) {
+  // A legal answer's t (a sphere root) a device may round further than
+  // hit_t's tolerance: its bound, as boundT gives the model's own.
+  if (!how.actual && b.valid && b.t_err > 0) boundTOf(b.t, b.t_err);
+  noteRootTFree(b);
+  // The actual run's effect is the launch state's now, before any what-if.
+  const uint64_t effect = how.actual ? m_.effectOf(tr_.best, *tr_.payload, tr_.query) : b.effect;
+  if (std::find(replay_effects_.begin(), replay_effects_.end(), effect) == replay_effects_.end()) {
+    replay_effects_.push_back(effect);
+    replay_hows_.push_back(how);
+  }
+  const Candidate k = answerOf(b);
+  for (Candidate& l : amb_.candidates)
+    if (sameAnswer(l, k)) {
+      // One primitive committed at two t (a box's reports): its t is not one.
+      if (k.hit && !(std::fabs(l.t - k.t) <= tr_.tol(k.t))) l.t = NAN;
+      return;
+    }
+  amb_.candidates.push_back(k);
+  hows_.push_back(how);
+}
+
+void TraceClassifier::addLeak(const Committed& b, const WhatIf& how) {
+  const Candidate k = answerOf(b);
+  if (listed(amb_.leak_answers, k)) return;
+  amb_.leak_answers.push_back(k);
+  leak_hows_.push_back(how);
+}
+
+void TraceClassifier::findUnsure(const std::vector<std::pair<size_t, double>>& reports,
+                                 double final_t) {
+  unsure_.clear();
+  faces_ = false;
+  // R-ISECT-REPORT: a box's intersection program reports anywhere in the
+  // interval, before its slab entry too: a box it ran on is unsure wherever
+  // the committed t lies.
+  std::vector<bool> ran(cands_.size(), false);
+  for (const auto& [index, t] : reports) ran[index] = true;
+  // After the others, each a what-if group of its own (whatIf): boxes the
+  // model's ray misses, triangles it runs in the plane of.
+  std::vector<size_t> alone;
+  for (size_t k = 0; k < cands_.size(); ++k) {
+    const ModelCandidate& cand = cands_[k];
+    if (cand.aabb) {
+      // A grazed box matters only if its what-if runs change the answer (tryUnsure).
+      if (cand.near_face && (ran[k] || cand.t <= final_t + tr_.tol(cand.t))) {
+        (cand.outside ? alone : unsure_).push_back(k);
+        faces_ = true;
+      }
+      continue;
+    }
+    if (!eligible(cand)) continue;
+    const double tl = tr_.tol(cand.t);
+    const bool near_edge = cand.ambiguity != TriAmbiguity::None && cand.t <= final_t + tl;
+    std::optional<AmbiguityReason> why;
+    if (cand.in_plane && cand.t - cand.t_err <= final_t + tl) why = AmbiguityReason::InPlane;
+    // R-CAND-TRI-OPEN: an interval end is a tie only where a device's t may
+    // round across it (model/exact_interval.h). It outranks an edge or
+    // vertex there: a device may find none of the triangles around it, a
+    // miss that is no leak (whatIf).
+    else if ((cand.hit || near_edge) && tr_.nearTmin(cand))
+      why = AmbiguityReason::TminTie;
+    else if ((cand.hit || near_edge) && tr_.nearTmax(cand))
+      why = AmbiguityReason::TmaxTie;
+    else if (near_edge)
+      why =
+          cand.ambiguity == TriAmbiguity::Vertex ? AmbiguityReason::Vertex : AmbiguityReason::Edge;
+    if (!why) continue;
+    // The first reason found, except that a vertex outranks an edge met at
+    // the same t (the triangles around a vertex include ones that see only
+    // one of its edges within the bound).
+    if (!reason_ || (*reason_ == AmbiguityReason::Edge && *why == AmbiguityReason::Vertex &&
+                     std::fabs(cand.t - reason_t_) <= tl)) {
+      reason_ = why;
+      reason_t_ = cand.t;
+    }
+    (cand.in_plane ? alone : unsure_).push_back(k);
+  }
+  unsure_.insert(unsure_.end(), alone.begin(), alone.end());
+}
+
+void TraceClassifier::findSharedTriangles() {
+  if (reason_ != AmbiguityReason::Edge && reason_ != AmbiguityReason::Vertex) return;
+  // The triangles of one frame (case/share_frame.h) within the bound of the
+  // same shared edge or vertex (same t), each with the model's own decision
+  // (one of them where the mesh is closed around the ray: watertight.cpp): a
+  // watertight device finds one of them, so a double hit shows as extra
+  // any-hit runs.
+  const ModelCandidate* first = nullptr;
+  for (const ModelCandidate& cand : cands_) {
+    if (cand.aabb || cand.in_plane || cand.ambiguity == TriAmbiguity::None || !eligible(cand))
+      continue;
+    if (!first) first = &cand;
+    if (candidateFrame(scene_, cand) == candidateFrame(scene_, *first) &&
+        std::fabs(cand.t - first->t) <= tr_.tol(first->t)) {
+      amb_.shared_triangles.push_back({cand.hit, cand.instance, cand.geometry, cand.primitive});
+      shared_group_.push_back(static_cast<size_t>(&cand - cands_.data()));
+    }
+  }
+}
+
+bool TraceClassifier::sameAsCommitted(const Committed& b) const {
+  const Committed& best = tr_.best;
+  return b.valid == best.valid &&
+         (!b.valid || (b.instance == best.instance && b.geometry == best.geometry &&
+                       b.primitive == best.primitive && b.kind == best.kind &&
+                       std::fabs(b.t - best.t) <= tr_.tol(b.t)));
+}
+
+void TraceClassifier::findUnsure(const std::vector<std::pair<size_t, double>>& reports) {
+  reports_ = &reports;
+  findUnsure(reports, tr_.best.valid ? tr_.best.t : INFINITY);
+}
+
+namespace {
+
+// The farthest t a legal or leak answer commits (a miss: infinity).
+double farthestCommit(const std::vector<WhatIfAnswer>& answers,
+                      const std::vector<WhatIfAnswer>& leaks, double t) {
+  for (const auto* list : {&answers, &leaks})
+    for (const WhatIfAnswer& a : *list) t = std::max(t, a.best.valid ? a.best.t : INFINITY);
+  return t;
+}
+
+}  // namespace
+
+// The what-if runs where the unsure candidates decide otherwise (whatIf).
+// A legal or leak answer that passes the committed hit reaches candidates
+// behind it: those unsure there (a shared edge behind a border edge or
+// behind a shared edge leaked through) join, and the runs are made again
+// with them, until no answer reaches farther.
+std::vector<WhatIfAnswer> TraceClassifier::unsureAnswers(std::vector<WhatIfAnswer>& leaks) {
+  double reach = tr_.best.valid ? tr_.best.t : INFINITY;
+  std::vector<WhatIfAnswer> answers = m_.whatIf(tr_, cands_, unsure_, payload_in_, &leaks);
+  for (;;) {
+    const double further = farthestCommit(answers, leaks, reach);
+    if (!(further > reach + tr_.tol(reach))) return answers;
+    const size_t before = unsure_.size();
+    findUnsure(*reports_, further);
+    if (unsure_.size() == before) return answers;
+    reach = further;
+    leaks.clear();
+    answers = m_.whatIf(tr_, cands_, unsure_, payload_in_, &leaks);
+  }
+}
+
+void TraceClassifier::tryUnsure() {
+  if (!reason_ && !faces_) return;
+  // The legal answers: this run's, and those of the what-if runs.
+  addCommitted(tr_.best, actual());
+  std::vector<WhatIfAnswer> leaks;
+  for (const WhatIfAnswer& a : unsureAnswers(leaks)) {
+    noteUnsureForce(a.how.force);
+    if (!sameAsCommitted(a.best) && !reason_) reason_ = AmbiguityReason::AabbFace;
+    // A tied candidate preferred (withTies) answers a t-tie, not a box face.
+    for (const WhatIfAnswer& b : withTies(a)) {
+      if (!sameAsCommitted(b.best) && !reason_) reason_ = AmbiguityReason::TTie;
+      addCommitted(b.best, b.how);
+    }
+  }
+  for (const WhatIfAnswer& a : leaks)
+    for (const WhatIfAnswer& b : withTies(a)) addLeak(b.best, b.how);
+}
+
+// The candidates a what-if run's committed hit ties with (within the error
+// bound, another primitive): triangles it made a hit, boxes that reported
+// at that t in the run.
+std::vector<long> TraceClassifier::tiedWith(const WhatIfAnswer& a) const {
+  std::vector<long> tied;
+  const Committed& b = a.best;
+  if (!b.valid) return tied;
+  const double tol = tr_.tol(b.t);
+  for (size_t k = 0; k < cands_.size(); ++k) {
+    const ModelCandidate& c = cands_[k];
+    if (c.instance == b.instance && c.geometry == b.geometry && c.primitive == b.primitive)
+      continue;
+    bool tie = false;
+    if (c.aabb) {
+      tie = std::any_of(a.reports.begin(), a.reports.end(), [&](const auto& r) {
+        return r.first == k && !std::isnan(r.second) && std::fabs(r.second - b.t) <= tol;
+      });
+    } else {
+      const int8_t f = a.how.force.empty() ? int8_t{-1} : a.how.force[k];
+      tie =
+          (f == 1 || (f < 0 && c.hit)) && !c.in_plane && eligible(c) && std::fabs(c.t - b.t) <= tol;
+    }
+    if (tie) tied.push_back(static_cast<long>(k));
+  }
+  return tied;
+}
+
+// R-TIE at a what-if run's committed t, as tryOrders at the actual run's: a
+// leak or an unsure group's other choice reaches a hit behind that ties
+// with another (fuzz seed 160964 on NVIDIA: two coincident triangles of
+// opposite winding behind a border vertex), or an offered box reports at
+// the committed t (160921: two boxes' sphere roots from a far origin). The
+// run, then each tied candidate preferred in a run of its own.
+std::vector<WhatIfAnswer> TraceClassifier::withTies(const WhatIfAnswer& a) {
+  std::vector<WhatIfAnswer> out{a};
+  for (long k : tiedWith(a)) {
+    WhatIf how = a.how;
+    how.prefer = k;
+    out.push_back({m_.sandbox(tr_, cands_, how, payload_in_), how, {}});
+  }
+  return out;
+}
+
+// Whether forcing candidate k to be a hit (or not) decides it as the
+// model's own run does in every order: a triangle the model's ray misses
+// forced out, or one it hits strictly inside the interval (not in its
+// plane, not a ray query's) forced in; a box the model's ray misses forced
+// out (no legal device offering near boxes), or one it enters forced in.
+bool TraceClassifier::forcedAsOwn(size_t k, bool hit) const {
+  const ModelCandidate& cand = cands_[k];
+  if (cand.aabb) return hit ? !cand.outside : cand.outside && !m_.sh_.fault_seam.nearBoxesOffered();
+  if (!hit) return !cand.hit;
+  return cand.hit && !cand.in_plane && !tr_.query && cand.t > tr_.tmin && cand.t < tr_.ray.tmax;
+}
+
+// A legal what-if run's decisions, kept for the candidate orders
+// (tryPermutations combines each with every order): those it makes as the
+// model's own run does left to the model, kept where some decision is left
+// that is not kept already.
+void TraceClassifier::noteUnsureForce(std::vector<int8_t> force) {
+  bool otherwise = false;
+  for (size_t k = 0; k < force.size(); ++k) {
+    if (force[k] >= 0 && forcedAsOwn(k, force[k] == 1)) force[k] = -1;
+    otherwise = otherwise || force[k] >= 0;
+  }
+  if (otherwise &&
+      std::find(unsure_forces_.begin(), unsure_forces_.end(), force) == unsure_forces_.end())
+    unsure_forces_.push_back(std::move(force));
+}
+
+// R-PREC on a box the model's ray misses (ModelCandidate::outside): offered
+// in a what-if run, its intersection program's decisions within rounding
+// (a sphere test from a far origin) are noted there and each flipped in a
+// run of its own, the box offered (flipNoted: with the decisions its flip
+// leaves within rounding).
+void TraceClassifier::tryNearBoxDecisions() {
+  if (!m_.sh_.programs->reads_sphere) return;
+  bool any = false;
+  for (size_t k : unsure_) {
+    if (!cands_[k].outside) continue;
+    WhatIf offered{false, std::vector<int8_t>(cands_.size(), -1), -1, -1, {}};
+    offered.force[k] = 1;
+    std::vector<ShaderDecision> noted;
+    m_.sandbox(tr_, cands_, offered, payload_in_, nullptr, &noted);
+    std::erase_if(noted, [&](const ShaderDecision& d) { return d.cand != k; });
+    any = flipNoted(offered, noted, kShaderFlipDepth) || any;
+  }
+  if (any && !reason_) reason_ = AmbiguityReason::ShaderArith;
+}
+
+// R-PREC: an intersection program's decision that rounding may flip (sphere
+// discriminant or root near an end): each flipped in a what-if run, with
+// the decisions its flip leaves within rounding (flipNoted); the ray is
+// ambiguous, as the device's counters may differ.
+void TraceClassifier::tryShaderDecisions(const std::vector<ShaderDecision>& shader_unsure) {
+  if (shader_unsure.empty()) return;
+  addCommitted(tr_.best, actual());
+  flipNoted(WhatIf{false, {}, -1, -1, {}}, shader_unsure, kShaderFlipDepth);
+  if (!reason_) reason_ = AmbiguityReason::ShaderArith;
+}
+
+// Each decision of `noted` (those a what-if run `base` left within rounding)
+// flipped in a run of its own, base's flips kept; then, `depth` - 1 deep,
+// those that run leaves within rounding. A device rounds every decision of
+// a trace, not one: from a far origin (fuzz seeds 120524, 120641 on
+// NVIDIA) one box's sphere test misses while another's hits, or a box's
+// root passes the committed one's, both within rounding. False when none.
+bool TraceClassifier::flipNoted(const WhatIf& base, const std::vector<ShaderDecision>& noted,
+                                size_t depth) {
+  for (const ShaderDecision& d : noted) {
+    WhatIf flipped = base;
+    flipped.shaders.push_back(d);
+    flipped.shaders.back().value = !d.value;
+    std::vector<ShaderDecision> further;
+    addCommitted(
+        m_.sandbox(tr_, cands_, flipped, payload_in_, nullptr, depth > 1 ? &further : nullptr),
+        flipped);
+    if (depth > 1) flipNoted(flipped, further, depth - 1);
+  }
+  return !noted.empty();
+}
+
+// R-PREC: the committed t is a root whose rounding on a device may exceed
+// the comparison's tolerance for hit_t: the answer is sure, its t is checked
+// against this wider bound. hit_position (origin + t x direction) carries
+// the same error, each component scaled by the direction's: its bound is t's
+// times the direction's largest component.
+// An unsure triangle the ray runs in the plane of is hit anywhere across it
+// on a device: its t within t_err of cand.t (ModelCandidate::in_plane).
+void TraceClassifier::boundT() {
+  for (size_t k : unsure_)
+    if (cands_[k].in_plane) boundTOf(cands_[k].t, cands_[k].t_err);
+  if (tr_.best.valid && tr_.best.t_err > 0) boundTOf(tr_.best.t, tr_.best.t_err);
+  noteRootTFree(tr_.best);
+}
+
+// A legal hit on a box at a sphere root a device may round past hit_t's
+// tolerance, where the programs read the t into a value of their own (a
+// colour of hit_t or hit_position): a replay pins that value, a device's
+// lies anywhere in the bound (fuzz seeds 120121, 120641, 120778 on
+// NVIDIA): the ray keeps no replays (LaunchState::ray_t_free). Not for a ray
+// query's commits: its records are held to their replays (without them the
+// planted query-commit-beyond-committed-t survived ray-query/sphere-crossing).
+void TraceClassifier::noteRootTFree(const Committed& b) {
+  if (!b.valid || tr_.query || !m_.sh_.programs->reads_root_t_free) return;
+  const ModelInstance& mi = scene_.instances[b.instance];
+  if (scene_.blases[mi.blas].geometries[b.geometry].kind != Geometry::Kind::Aabbs) return;
+  const Tolerance tol = toleranceFor("hit_t");
+  if (b.t_err > tol.abs + tol.rel * std::max(std::fabs(b.t), 1.0)) m_.st_.ray_t_free = true;
+}
+
+void TraceClassifier::boundTOf(double t, double t_err) {
+  const Tolerance tol = toleranceFor("hit_t");
+  if (t_err > tol.abs + tol.rel * std::max(std::fabs(t), 1.0))
+    m_.st_.t_bounds.push_back({m_.st_.index, static_cast<float>(t_err)});
+  const Vec3& o = tr_.ray.origin;
+  const Vec3& d = tr_.ray.direction;
+  double scale = 0, position = 1;
+  for (int k = 0; k < 3; ++k) {
+    scale = std::max(scale, std::fabs(static_cast<double>(d[k])));
+    position = std::max(position, std::fabs(o[k] + t * static_cast<double>(d[k])));
+  }
+  const Tolerance ptol = toleranceFor("hit_position");
+  if (t_err * scale > ptol.abs + ptol.rel * position)
+    m_.st_.position_bounds.push_back({m_.st_.index, static_cast<float>(t_err * scale)});
+}
+
+// A replay hits an in-plane triangle (candidate u) at the middle of its
+// span; a device anywhere across it. Its record differs from the replay's
+// only in hit_t, ray_tmax and hit_position (each within the ray's t bound,
+// boundT) where the programs read nothing else of the hit that the span
+// leaves free (CPipeline::reads_in_plane_free) and no other candidate of the
+// trace may lie within the span (then the order of the hits, and which one a
+// committed t culls, is the same for every t across it; an intersection
+// program may report any t): else the t matters.
+bool TraceClassifier::inPlaneTMatters(size_t u) const {
+  if (m_.sh_.programs->reads_in_plane_free) return true;
+  const ModelCandidate& c = cands_[u];
+  const double lo = c.t - c.t_err - tr_.tol(c.t), hi = c.t + c.t_err + tr_.tol(c.t);
+  for (size_t k = 0; k < cands_.size(); ++k) {
+    const ModelCandidate& o = cands_[k];
+    if (k == u || o.nan_triangle ||
+        (!o.aabb && !o.hit && !o.in_plane && o.ambiguity == TriAmbiguity::None))
+      continue;
+    if (o.aabb || (o.t + o.t_err >= lo && o.t - o.t_err <= hi)) return true;
+  }
+  return false;
+}
+
+std::optional<WhatIf> TraceClassifier::finish() {
+  if (!reason_) reason_ = tie_reason_;
+  dropLegalLeaks();
+  ReplayScript* script = m_.st_.replay;
+  std::vector<WhatIf> answers = reason_ ? replay_hows_ : std::vector<WhatIf>{};
+  if (script && script->leaks && reason_)
+    answers.insert(answers.end(), leak_hows_.begin(), leak_hows_.end());
+  if (script && script->doubles && reason_)
+    answers.insert(answers.end(), double_hows_.begin(), double_hows_.end());
+  if (script && reason_ && !double_hows_.empty()) script->has_doubles = true;
+  if (script) script->classified(answers, reason_ ? replay_hows_.size() : 0);
+  if (!reason_) return std::nullopt;
+  amb_.reason = *reason_;
+  // A legal hit on a triangle the ray runs in the plane of, at no one t:
+  // where its t may matter beyond the fields the t bound widens, the ray's
+  // replays would pin it (legal_replays.cpp).
+  for (const Candidate& k : amb_.candidates)
+    for (size_t u : unsure_)
+      if (k.hit && cands_[u].in_plane && cands_[u].instance == k.instance &&
+          cands_[u].geometry == k.geometry && cands_[u].primitive == k.primitive &&
+          inPlaneTMatters(u))
+        m_.st_.ray_t_free = true;
+  std::optional<WhatIf> chosen;
+  if (script && (!script->own || m_.st_.ray_ambiguous)) {
+    // A legal replay (legal_replays.cpp), or a later ambiguous trace of the
+    // model's own run: this trace takes the answer its script chooses; the
+    // ray's ambiguity is its first ambiguous trace's, kept already; the own
+    // run counts its ambiguous traces there.
+    if (script->own && !m_.st_.ambiguous.empty() && m_.st_.ambiguous.back().ray == amb_.ray)
+      ++m_.st_.ambiguous.back().traces;
+    chosen = answers[script->choose(answers.size())];
+    m_.st_.ray_ambiguous = true;
+    return chosen;
+  }
+  if (script) script->choose(answers.size());  // the own run's first: its actual answer
+  if (const auto taken = m_.sh_.fault_seam.answerTaken(hows_.size(), leak_hows_.size()))
+    chosen = taken->leak ? leak_hows_[taken->index] : hows_[taken->index];
+  m_.st_.ambiguous.push_back(std::move(amb_));
+  m_.st_.ray_ambiguous = true;
+  return chosen;
+}
+
+// A leak answer that is also a legal one is legal.
+void TraceClassifier::dropLegalLeaks() {
+  for (size_t k = amb_.leak_answers.size(); k-- > 0;)
+    if (listed(amb_.candidates, amb_.leak_answers[k])) {
+      amb_.leak_answers.erase(amb_.leak_answers.begin() + static_cast<long>(k));
+      leak_hows_.erase(leak_hows_.begin() + static_cast<long>(k));
+    }
+}
+}  // namespace rayspec
