@@ -175,8 +175,8 @@ TEST(ModelAlikeRays, ALaunchIdReadInAnAnyHitKeepsIdsApart) {
 // The memo's own bookkeeping on a LaunchState: what a traced ray left (its
 // record, counter and floor moves, entries named by its index) is added
 // again for a ray bit for bit the same, named by that ray; a ray differing
-// in one bit (-0 against 0), an undefined ray, or any ray with the memo off,
-// is not.
+// in one bit (-0 against 0), a ray the next launch ray differs from, an
+// undefined ray, or any ray with the memo off, is not.
 TEST(ModelAlikeRays, ARepeatAddsWhatTheTracedRayLeft) {
   const Case c = parseInline(kAlike);
   const Plan plan = derivePlan(c);
@@ -190,7 +190,7 @@ TEST(ModelAlikeRays, ARepeatAddsWhatTheTracedRayLeft) {
   const Ray ray = c.rays.rays[0];
   EXPECT_FALSE(alike.repeat(st, ray, 0));  // nothing traced yet
   st.counters[0] = 5;
-  alike.starting(st, ray);
+  alike.starting(st, ray, &ray);
   st.startRay(0);
   st.counters[0] += 2;
   st.floors[1] += 3;
@@ -210,17 +210,23 @@ TEST(ModelAlikeRays, ARepeatAddsWhatTheTracedRayLeft) {
   Ray other = ray;
   other.origin[2] = -0.0f;
   EXPECT_FALSE(alike.repeat(st, other, 1));
+  // Not kept where the launch ray after it differs; the one kept before stays.
+  alike.starting(st, other, &ray);
+  alike.traced(st, 1);
+  EXPECT_FALSE(alike.repeat(st, other, 2));
+  EXPECT_TRUE(alike.repeat(st, ray, 2));
+  EXPECT_EQ(st.counters[0], 11u);
   // An undefined ray is not kept (its diagnosis names its index in text).
-  alike.starting(st, other);
+  alike.starting(st, other, &other);
   st.undefined.push_back({1, UndefinedReason::RayParameters, "rays: launch ray 1 tmax"});
   alike.traced(st, 1);
   EXPECT_FALSE(alike.repeat(st, other, 2));
   EXPECT_EQ(st.undefined.size(), 1u);
   AlikeRays off(false);
-  off.starting(st, ray);
+  off.starting(st, ray, &ray);
   off.traced(st, 0);
   EXPECT_FALSE(off.repeat(st, ray, 1));
-  EXPECT_EQ(st.counters[0], 9u);
+  EXPECT_EQ(st.counters[0], 11u);
 }
 
 }  // namespace

@@ -56,9 +56,10 @@ bool AlikeRays::repeat(LaunchState& st, const Ray& ray, uint32_t i) const {
   return true;
 }
 
-void AlikeRays::starting(const LaunchState& st, const Ray& ray) {
+void AlikeRays::starting(const LaunchState& st, const Ray& ray, const Ray* next) {
+  keeping_ = on_ && next && sameBits(ray, *next);
+  if (!keeping_) return;
   kept_ = false;
-  if (!on_) return;
   ray_ = ray;
   counter_moves_ = st.counters;
   floor_moves_ = st.floors;
@@ -70,7 +71,7 @@ void AlikeRays::starting(const LaunchState& st, const Ray& ray) {
 }
 
 void AlikeRays::traced(const LaunchState& st, uint32_t i) {
-  if (!on_) return;
+  if (!keeping_) return;
   index_ = i;
   movesSince(counter_moves_, st.counters);
   movesSince(floor_moves_, st.floors);

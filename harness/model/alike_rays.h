@@ -13,8 +13,11 @@
 // such rays are few. cts-amber/basic2 launches 20,736 rays alike, each
 // an ambiguous tie of four boxes that the exact tier replays.
 //
-// Only the last ray is kept: rays alike lie side by side (a grid with no
-// step, rays.same); a ray repeated further on is traced again.
+// A traced ray is kept only where the launch ray after it is alike: rays
+// alike lie side by side (a grid with no step, rays.same), and a launch of
+// rays all different pays one comparison a ray. The last ray kept stays
+// until another is (what it left stays valid); a ray alike an earlier one
+// that was not kept is traced again.
 #pragma once
 
 #include <cstddef>
@@ -34,8 +37,9 @@ class AlikeRays {
   // one left is added to `st` for i. False otherwise (trace it, between
   // starting and traced).
   bool repeat(LaunchState& st, const Ray& ray, uint32_t i) const;
-  // Before launch ray i, whose ray is `ray`, is traced.
-  void starting(const LaunchState& st, const Ray& ray);
+  // Before launch ray i, whose ray is `ray`, is traced; `next`: the launch
+  // ray after it (null: none). Kept only where `next` is alike.
+  void starting(const LaunchState& st, const Ray& ray, const Ray* next);
   // After launch ray i is traced (its replays too): what it left, kept
   // unless the ray is undefined.
   void traced(const LaunchState& st, uint32_t i);
@@ -45,7 +49,8 @@ class AlikeRays {
     size_t begin = 0, end = 0;
   };
   bool on_ = false;
-  bool kept_ = false;  // ray_ and what it left are known
+  bool keeping_ = false;  // the ray being traced is to be kept
+  bool kept_ = false;     // ray_ and what it left are known
   Ray ray_;
   uint32_t index_ = 0;
   std::vector<uint64_t> counter_moves_, floor_moves_;  // before it, then its moves

@@ -23,11 +23,12 @@ void Machine::runRays(uint32_t begin, uint32_t end) {
   state_.x = begin % width;
   state_.y = begin / width;
   const Rays& rays = sh_.c->rays;
+  const size_t launch_rays = rays.launchRays();
   for (uint32_t i = begin; i < end; ++i) {
     if (!rays.same && i + 8 < end) __builtin_prefetch(&rays.rays[i + 8]);  // rays stream in
     const Ray& ray = rays.launchRay(i);
     if (!alike_.repeat(state_, ray, i)) {
-      alike_.starting(state_, ray);
+      alike_.starting(state_, ray, i + 1 < launch_rays ? &rays.launchRay(i + 1) : nullptr);
       runWithReplays(i);
       alike_.traced(state_, i);
     }
