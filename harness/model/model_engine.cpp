@@ -197,6 +197,7 @@ ModelShared sharedState(const Case& c, const Plan& plan, const ModelOptions& opt
                    [](bool b) { return b; });
   shared.payload_types = c.pipeline.payload_words.size() > 1;
   shared.need_object_ray = (programs.needs & builtin_needs::ObjectRay) || programs.reads_sphere;
+  shared.alike_rays = !opt.trace_each_ray && !launchIdRead(programs);
   return shared;
 }
 

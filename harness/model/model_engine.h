@@ -48,6 +48,10 @@ struct ModelOptions {
   unsigned threads = 0;  // 0 = all cores
   AnyHitRepeat any_hit_repeat = AnyHitRepeat::None;
   ModelFaults faults;  // test only: the planted faults' hook (model/model_faults.h)
+  // Trace every launch ray, also one alike the ray traced before it, whose
+  // outcome the model otherwise copies (model/alike_rays.h): the tests and
+  // bench/alike_rays.cpp compare the two.
+  bool trace_each_ray = false;
 };
 
 Results runOnModel(const Case& c, const Plan& plan, const ModelOptions& opt);

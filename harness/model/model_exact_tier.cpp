@@ -8,7 +8,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <optional>
+#include <string>
+#include <string_view>
 #include <type_traits>
 
 #include "case/share_frame.h"
@@ -129,18 +132,29 @@ Committed ModelTracer::sandbox(const Traversal& actual, const std::vector<ModelC
 
 namespace {
 
-// FNV-1a, 64 bits, over the bytes of values without padding.
+// The bytes of values without padding, gathered whole (`bytes`, cleared
+// first) and hashed once by the standard library's hash of a byte string
+// (libstdc++: 64-bit MurmurHash2, eight bytes a step). A digest held in
+// memory for one run, never written: its value need not be stable.
 struct Digest {
-  uint64_t h = 14695981039346656037ull;
+  std::string& bytes;
+  explicit Digest(std::string& b) : bytes(b) { bytes.clear(); }
   template <typename T>
   void add(const T& v) {
     static_assert(std::has_unique_object_representations_v<T> || std::is_floating_point_v<T>);
-    const auto* p = reinterpret_cast<const unsigned char*>(&v);
-    for (size_t i = 0; i < sizeof(T); ++i) h = (h ^ p[i]) * 1099511628211ull;
+    bytes.append(reinterpret_cast<const char*>(&v), sizeof(T));
   }
+  // Arrays of 4-byte elements (floats, words): no padding, one append.
   template <typename T, size_t N>
   void add(const std::array<T, N>& a) {
-    for (const T& v : a) add(v);
+    static_assert(sizeof(T) == 4 && sizeof(a) == 4 * N);
+    static_assert(std::has_unique_object_representations_v<T> || std::is_floating_point_v<T>);
+    bytes.append(reinterpret_cast<const char*>(a.data()), sizeof(a));
+  }
+  template <typename T>
+  void addAll(const T* p, size_t n) {
+    static_assert(std::has_unique_object_representations_v<T>);
+    bytes.append(reinterpret_cast<const char*>(p), n * sizeof(T));
   }
   void add(const Payload& p) {
     add(p.color);
@@ -162,13 +176,13 @@ struct Digest {
     add(v.u);
     add(static_cast<uint8_t>(v.b));
   }
+  uint64_t hash() const { return std::hash<std::string_view>{}(bytes); }
 };
 
 }  // namespace
 
-uint64_t ModelTracer::effectOf(const Committed& b, const Payload& payload,
-                               const QueryRun* query) const {
-  Digest d;
+uint64_t ModelTracer::effectOf(const Committed& b, const Payload& payload, const QueryRun* query) {
+  Digest d(effect_bytes_);
   d.add(static_cast<uint8_t>(b.valid));
   if (b.valid) {
     d.add(b.t);
@@ -181,9 +195,8 @@ uint64_t ModelTracer::effectOf(const Committed& b, const Payload& payload,
     d.add(b.words);
   }
   d.add(payload);
-  if (st_.rec)
-    for (uint32_t i = 0, n = recordWords(); i < n; ++i) d.add(st_.rec[i]);
-  for (uint64_t c : st_.counters) d.add(c);
+  if (st_.rec) d.addAll(st_.rec, recordWords());
+  d.addAll(st_.counters.data(), st_.counters.size());
   if (query && query->env) {
     for (const Val& v : query->env->locals) d.add(v);
     d.add(query->env->child);
@@ -207,7 +220,7 @@ uint64_t ModelTracer::effectOf(const Committed& b, const Payload& payload,
       }
     }
   }
-  return d.h;
+  return d.hash();
 }
 
 namespace {

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "model/alike_rays.h"
 #include "model/hit_protocol.h"
 #include "model/launch_state.h"
 #include "model/model_builtins.h"
@@ -32,13 +33,17 @@ class alignas(64) Machine {
   Machine(const Machine&) = delete;
   Machine& operator=(const Machine&) = delete;
   // Runs raygen for launch indices [begin, end) (records for ray i start at
-  // records + i * words).
+  // records + i * words); a ray alike the one traced last is not traced
+  // again (alike_rays.h).
   void runRays(uint32_t begin, uint32_t end);
   // What the rays run so far left behind (counters, ambiguous, bounded and
   // undefined rays, the first case error).
   const LaunchState& state() const { return state_; }
 
  private:
+  // Launch ray i, and in the exact tier each legal answer of it where it is
+  // ambiguous (replayLegalAnswers).
+  void runWithReplays(uint32_t i);
   // Raygen for launch ray i.
   void runRay(uint32_t i);
   // Exact tier: each legal answer of ambiguous launch ray i replayed through
@@ -66,6 +71,7 @@ class alignas(64) Machine {
   ModelTracer tracer_;
   std::vector<uint64_t> counters_before_;  // the counters before the launch ray now
   ReplayScript script_;                    // the launch ray's replays (legal_replays.h)
+  AlikeRays alike_;                        // the launch ray traced last (alike_rays.h)
 };
 
 }  // namespace rayspec

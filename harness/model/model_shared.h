@@ -30,6 +30,9 @@ struct ModelShared {
   // Some candidate may be undefined (a hit record beyond the region, a NaN
   // triangle): ModelTracer::checkCandidates looks at every candidate.
   bool check_candidates = true;
+  // No program reads the launch id: a launch ray alike the one its Machine
+  // traced last leaves what that one left (alike_rays.h).
+  bool alike_rays = false;
 };
 
 }  // namespace rayspec

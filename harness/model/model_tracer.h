@@ -133,7 +133,7 @@ class ModelTracer {
                     std::vector<std::pair<size_t, double>>* reports = nullptr);
   // The digest of what a decision left behind (Committed::effect): `best`,
   // the payload, the launch state's record and counters, a query's frame.
-  uint64_t effectOf(const Committed& best, const Payload& payload, const QueryRun* query) const;
+  uint64_t effectOf(const Committed& best, const Payload& payload, const QueryRun* query);
   // Exact tier: marks the current ray ambiguous when this trace's answer could
   // differ on a device, with the legal answers (model_exact_tier.cpp).
   // Returns how to decide the trace as a legal device that takes another of
@@ -196,6 +196,7 @@ class ModelTracer {
   // The hit of the closest-hit running now (nullptr: none, or a miss): the
   // planted fault nested_trace_clobbers_hit overwrites it with a nested hit.
   HitView* shading_hit_ = nullptr;
+  std::string effect_bytes_;  // effectOf's bytes, kept to reuse their memory
 };
 
 }  // namespace rayspec

@@ -2,9 +2,12 @@
 
 namespace rayspec {
 
+bool launchIdRead(const CPipeline& programs) {
+  return programs.reads(kBiLaunchX) || programs.reads(kBiLaunchY) || programs.reads(kBiLaunchZ);
+}
+
 bool launchUniform(const Case& c, const Plan& plan, const CPipeline& programs) {
-  return c.rays.same && !plan.records && c.outputs.images.empty() && !programs.reads(kBiLaunchX) &&
-         !programs.reads(kBiLaunchY) && !programs.reads(kBiLaunchZ);
+  return c.rays.same && !plan.records && c.outputs.images.empty() && !launchIdRead(programs);
 }
 
 bool oneIdStandsForAll(const Results& one_id) {

@@ -14,6 +14,10 @@
 
 namespace rayspec {
 
+// Some program reads the launch id (launch_id_x, _y or _z): ids of one ray
+// may run otherwise; launch_size_* is the launch's, the same for every id.
+bool launchIdRead(const CPipeline& programs);
+
 // Every id of c's launch runs alike (see above); launch_size_* may be read.
 bool launchUniform(const Case& c, const Plan& plan, const CPipeline& programs);
 
