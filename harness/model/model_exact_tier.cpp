@@ -175,6 +175,8 @@ struct Digest {
     add(v.f);
     add(v.u);
     add(static_cast<uint8_t>(v.b));
+    addAll(v.x.data(), v.x.size());
+    add(static_cast<uint32_t>(v.sized));
   }
   uint64_t hash() const { return std::hash<std::string_view>{}(bytes); }
 };

@@ -70,7 +70,7 @@ class ModelTracer {
   void rayQuery(QueryRun& q, const CStmt* site);
 
  private:
-  friend class TraceClassifier;  // model_exact_tier.cpp: classifyTrace's steps
+  friend class TraceClassifier;  // trace_classifier.cpp: classifyTrace's steps
   Committed directHit(const TraceRay& r, uint32_t flags);
   // trace's first steps: the flags the pipeline adds, the ray's parameters
   // checked, the committed hit (directHit or traverse); `flags` gets the flags.
