@@ -385,6 +385,7 @@ Val StageInterpreter::op(const CExpr& e, StageEnv& env) {
     case Op::HighWord:  // converted before the switch (convertsSized)
       RAYSPEC_SIZED_TYPES(RAYSPEC_CONVERSION_CASE, )
       RAYSPEC_SIZED_TYPES(RAYSPEC_CONSTRUCTOR_CASE, )  // made before the switch (makesSized)
+      RAYSPEC_UINT_VECTORS(RAYSPEC_CONSTRUCTOR_CASE, )
     case Op::None:
       break;
   }
