@@ -12,8 +12,7 @@ namespace rayspec {
 namespace {
 
 bool declaresLocal(const Stmt& s) {
-  return s.kind == Stmt::Kind::Let || s.kind == Stmt::Kind::Array ||
-         s.kind == Stmt::Kind::Struct ||
+  return s.kind == Stmt::Kind::Let || s.kind == Stmt::Kind::Array || s.kind == Stmt::Kind::Struct ||
          (s.kind == Stmt::Kind::Repeat && !s.local.empty()) ||
          (s.kind == Stmt::Kind::Invoke && !s.params.empty());
 }

@@ -35,8 +35,7 @@ Stmt loseLastMembers(const std::vector<LastMember>& visible, const SourceLoc& lo
 }
 
 bool isCall(const Stmt& s) {
-  return s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::Call ||
-         s.kind == Stmt::Kind::Report;
+  return s.kind == Stmt::Kind::Trace || s.kind == Stmt::Kind::Call || s.kind == Stmt::Kind::Report;
 }
 
 // After each trace, call and report of `block` and the blocks in it, the

@@ -72,8 +72,7 @@ uint64_t halvedLane(ValueType t, uint64_t x) {
 
 Val halvedSized(const Val& v) {
   Val r = v;
-  for (int k = 0; k < componentCount(v.sized); ++k)
-    r.x[k] = halvedLane(v.sized, v.x[k]);
+  for (int k = 0; k < componentCount(v.sized); ++k) r.x[k] = halvedLane(v.sized, v.x[k]);
   return r;
 }
 
@@ -111,7 +110,8 @@ uint64_t scalarLane(ValueType t, const Val& v) {
 
 // A lane of a sized vector of component `component` as a value.
 Val fromLane(ValueType component, uint64_t x) {
-  return component == ValueType::Uint ? fromUint(static_cast<uint32_t>(x)) : fromSized(component, x);
+  return component == ValueType::Uint ? fromUint(static_cast<uint32_t>(x))
+                                      : fromSized(component, x);
 }
 
 }  // namespace
@@ -140,7 +140,8 @@ Val StageInterpreter::sizedArithmetic(const CExpr& e, const Val* a) {
 Val StageInterpreter::constructSized(const CExpr& e, const Val* a, size_t n) const {
   if (e.op >= Op::CompX && e.op <= Op::CompW) {  // x .. w of a sized vector
     const ValueType t = e.args[0].type;
-    return fromLane(sizedComponent(t), a[0].x[static_cast<int>(e.op) - static_cast<int>(Op::CompX)]);
+    return fromLane(sizedComponent(t),
+                    a[0].x[static_cast<int>(e.op) - static_cast<int>(Op::CompX)]);
   }
   const ValueType t = constructorTarget(e.op);
   Val r = fromSized(t, 0);

@@ -586,7 +586,8 @@ bool scalarStmt(YamlReader& r, const YAML::Node& n, const std::string& field, St
 // Every statement's key, for the error of an unknown one.
 const char* const kStatementNames =
     "count, record, payload, call_data, ignore, terminate, report, trace, call, light, if, let, "
-    "set, array, struct, store, repeat, switch, invoke, break, continue, return, ray_query, ray_queries, "
+    "set, array, struct, store, repeat, switch, invoke, break, continue, return, ray_query, "
+    "ray_queries, "
     "confirm, generate, terminate_query, restart_query, execute, record_miss, record_empty, "
     "record_hit, reorder";
 

@@ -385,9 +385,8 @@ class Checker {
   // each member a local NAME.MEMBER of its type, zero.
   std::optional<ProgramError> structure(Stmt& s) {
     if (s.params.empty() || s.params.size() > kMaxStructMembers)
-      return ProgramError{"struct " + s.local + ": 1 to " + std::to_string(kMaxStructMembers) +
-                              " members",
-                          s.loc};
+      return ProgramError{
+          "struct " + s.local + ": 1 to " + std::to_string(kMaxStructMembers) + " members", s.loc};
     for (size_t i = 0; i < s.params.size(); ++i) {
       const std::string& member = s.params[i].first;
       if (!isLocalName(member))

@@ -130,8 +130,7 @@
     "this stage's record floats")                                                                 \
   X(HighWord, "high", 1, 1, kAllStages, HighWord, "uint(($0) >> 32)",                              \
     "bits 32..63 of an Int64 or Uint64 -> Uint")                                                   \
-  RAYSPEC_SIZED_TYPES(RAYSPEC_CONSTRUCTOR_OPS, X)                                                  \
-  RAYSPEC_UINT_VECTORS(RAYSPEC_CONSTRUCTOR_OPS, X)                                                 \
+  RAYSPEC_VECTOR_ROWS(RAYSPEC_CONSTRUCTOR_OPS, X)                                                  \
   RAYSPEC_SIZED_TYPES(RAYSPEC_CONVERSION_OP, X)
 // {i8vec2: [a, b]} .. {f64vec4: [a, b, c, d]}, {uvec2: ..} .. {uvec4: ..}: a
 // sized vector of its component type's scalars (one splats).

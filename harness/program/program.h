@@ -42,8 +42,7 @@ inline const char* stageName(Stage s) {
   X(Vec3, "Vec3", "vec3", 3, "vec3")                                \
   X(Vec4, "Vec4", "vec4", 4, "vec4")                                \
   RAYSPEC_SIZED_TYPES(RAYSPEC_SIZED_AS_VALUE_TYPE, X)              \
-  RAYSPEC_SIZED_TYPES(RAYSPEC_SIZED_VECTORS_AS_VALUE_TYPES, X)      \
-  RAYSPEC_UINT_VECTORS(RAYSPEC_SIZED_VECTORS_AS_VALUE_TYPES, X)
+  RAYSPEC_VECTOR_ROWS(RAYSPEC_SIZED_VECTORS_AS_VALUE_TYPES, X)
 
 // clang-format on
 enum class ValueType { RAYSPEC_VALUE_TYPES(RAYSPEC_ENUMERATOR) };

@@ -48,6 +48,8 @@
 // no second spelling), so this row makes vectors only. No #extension, no
 // device feature.
 #define RAYSPEC_UINT_VECTORS(Y, X) Y(X, Uint, "Uint", "uint", "uint", 32, Unsigned, "", "", "uvec")
+// Every row that has vectors: the sized scalars', then uint's.
+#define RAYSPEC_VECTOR_ROWS(Y, X) RAYSPEC_SIZED_TYPES(Y, X) RAYSPEC_UINT_VECTORS(Y, X)
 #define RAYSPEC_SIZED_AS_VALUE_TYPE(X, id, name, spelling, glsl, ...) X(id, name, spelling, 1, glsl)
 // A sized scalar's vectors as ValueType rows: Int8Vec2 "i8vec2" .. Int8Vec4.
 #define RAYSPEC_SIZED_VECTORS_AS_VALUE_TYPES(X, id, name, spelling, glsl, bits, kind, extension, \

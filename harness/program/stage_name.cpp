@@ -50,7 +50,8 @@ ValueType sizedComponent(ValueType t) {
 }
 
 ValueType sizedVectorOf(ValueType s, int n) {
-  if (s == ValueType::Uint) return static_cast<ValueType>(static_cast<int>(ValueType::UintVec2) + n - 2);
+  if (s == ValueType::Uint)
+    return static_cast<ValueType>(static_cast<int>(ValueType::UintVec2) + n - 2);
   const int k = static_cast<int>(s) - static_cast<int>(ValueType::Int8);
   return static_cast<ValueType>(static_cast<int>(ValueType::Int8Vec2) + 3 * k + n - 2);
 }
