@@ -145,6 +145,38 @@ TEST(GlslControlFlow, Int32VectorsAreCoreIvec) {
   EXPECT_TRUE(spirv.error.empty()) << spirv.error;
 }
 
+// A struct local is one GLSL struct, its type defined once at file scope
+// for each distinct member list (in every stage), its members prefixed
+// (a member may be named as a GLSL keyword); it compiles.
+TEST(GlslControlFlow, StructTypesAreDefinedOnceAndCompile) {
+  const Case c = triangleCase(
+      "  raygen:\n"
+      "    - struct: {name: s, members: {in: int8, b: f16vec2, c: ivec3}}\n"
+      "    - struct: {name: t, members: {in: int8, b: f16vec2, c: ivec3}}\n"
+      "    - set: {s.in: {int8: launch_id_x}, t.c: {ivec3: 7}}\n"
+      "    - trace: {}\n"
+      "    - record: {value: {add: [{uint: var.s.in}, {uint: {z: var.t.c}}]}}\n"
+      "  hit_groups: [{closest_hit: [{struct: {name: s, members: {x: float64}}}]}]\n"
+      "outputs:\n"
+      "  per_ray: [value]\n");
+  const GeneratedPipeline g = generateGlsl(c, derivePlan(c));
+  const std::string& glsl = g.raygen.glsl;
+  const std::string type = "RsStruct_int8_in_f16vec2_b_ivec3_c";
+  const size_t defined = glsl.find("struct " + type + " {");
+  ASSERT_NE(defined, std::string::npos) << glsl;
+  EXPECT_EQ(glsl.find("struct " + type + " {", defined + 1), std::string::npos);
+  EXPECT_NE(glsl.find("int8_t m_in;"), std::string::npos) << glsl;
+  EXPECT_NE(glsl.find(type + " v_s = " + type + "(int8_t(0), f16vec2(0), ivec3(0));"),
+            std::string::npos)
+      << glsl;
+  EXPECT_NE(glsl.find("v_s.m_in = "), std::string::npos);
+  EXPECT_NE(glsl.find("struct RsStruct_float64_x {"), std::string::npos);  // the hit group's
+  ASSERT_TRUE(g.hit_groups[0].closest_hit.has_value());
+  EXPECT_NE(g.hit_groups[0].closest_hit->glsl.find("RsStruct_float64_x v_s"), std::string::npos);
+  const SpirvResult spirv = compileGlsl(glsl, Stage::Raygen);
+  EXPECT_TRUE(spirv.error.empty()) << spirv.error;
+}
+
 // Each shader gets the values pipeline.specialize sets for it, as 32-bit
 // words by constant_id; every stage declares every constant with its default.
 TEST(GlslControlFlow, SpecializationReachesEachShader) {

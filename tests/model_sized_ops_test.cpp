@@ -173,6 +173,48 @@ TEST(ModelSizedOps, TheHalvingFaultKeepsTheUpperHalfAcrossATrace) {
   EXPECT_EQ(sizedValues(halved, "value2"), (Pair{5, 6}));
 }
 
+// A struct's members keep their own types, start at zero, and are locals
+// the halving fault reaches like any other.
+TEST(ModelSizedOps, StructMembersKeepTheirTypesAndAreHalvedLikeLocals) {
+  const Case c = sizedCase(
+      "    - struct: {name: s, members: {a: int16, b: vec3, c: uint, d: i8vec2}}\n"
+      "    - record: {value2: {add: [{uint: var.s.a}, {add: [var.s.c, {uint: {y: var.s.d}}]}]}}\n"
+      "    - set: {s.a: {int16: {add: [launch_id_x, 0x1234]}}, s.b: [1.5, 2.5, 3.5]}\n"
+      "    - set: {s.c: 0x5678, s.d: {i8vec2: [{sub: [{int8: 0}, 3]}, 0x35]}}\n"
+      "    - trace: {}\n"
+      "    - record: {value: {bit_xor: [{uint: var.s.a}, {uint: {z: var.s.b}}]},\n"
+      "              value1: {add: [var.s.c, {uint: {y: var.s.d}}]}}\n");
+  const Results kept = runTier(c, ModelTier::Fast);
+  ASSERT_TRUE(kept.ok()) << kept.status_detail;
+  EXPECT_EQ(sizedValues(kept, "value2"), (Pair{0, 0}));
+  EXPECT_EQ(sizedValues(kept, "value"), (Pair{0x1234 ^ 3, 0x1235 ^ 3}));
+  EXPECT_EQ(sizedValues(kept, "value1"), (Pair{0x5678 + 0x35, 0x5678 + 0x35}));
+  ModelOptions o{ModelTier::Fast, 1};
+  o.faults.sized_locals_halved = true;
+  const Results halved = runOnModel(c, derivePlan(c), o);
+  EXPECT_EQ(sizedValues(halved, "value"), (Pair{0x1200 ^ 3, 0x1200 ^ 3}));  // vec3 kept
+  EXPECT_EQ(sizedValues(halved, "value1"), (Pair{0x5678 + 0x30, 0x5678 + 0x30}));
+}
+
+// uint's vectors wrap modulo 2^32 lane by lane, a uint beside one is every
+// lane's, a lane reads back as a uint; the rotating fault reaches them.
+TEST(ModelSizedOps, UintVectorsWrapLaneByLane) {
+  const Case c = sizedCase(
+      "    - let: {v: {mul: [{uvec3: [4000000000, {add: [launch_id_x, 7]}, 5]}, 3]}}\n"
+      "    - let: {w: {max: [var.v, {uvec3: 20}]}}\n"
+      "    - trace: {}\n"
+      "    - record: {value: {x: var.v}, value1: {y: var.w}, value2: {z: var.w}}\n");
+  const Results r = runTier(c, ModelTier::Fast);
+  ASSERT_TRUE(r.ok()) << r.status_detail;
+  EXPECT_EQ(sizedValues(r, "value"), (Pair{3410065408u, 3410065408u}));  // 12e9 mod 2^32
+  EXPECT_EQ(sizedValues(r, "value1"), (Pair{21, 24}));
+  EXPECT_EQ(sizedValues(r, "value2"), (Pair{20, 20}));
+  ModelOptions o{ModelTier::Fast, 1};
+  o.faults.sized_vectors_rotated = true;
+  const Results rotated = runOnModel(c, derivePlan(c), o);
+  EXPECT_EQ(sizedValues(rotated, "value"), (Pair{21, 24}));
+}
+
 TEST(ModelSizedOps, VectorsComputeLaneByLaneAndTheirArraysStartAtZero) {
   const Case c = sizedCase(
       "    - array: {name: a, of: i8vec3, size: 2}\n"

@@ -47,6 +47,32 @@ TEST(CaseControlFlow, ArraysAreBoundedAndReadThroughLoad) {
               11, "value", "array local");
 }
 
+// A struct's members are typed by name; each error names its line and field.
+TEST(CaseControlFlow, StructMembersAreTypedAndReadByName) {
+  expectError(parse(withRaygen("    - struct: {name: s, members: {a: int8, b: int9}}\n")), 10,
+              "members.b", "unknown member type 'int9'");
+  expectError(parse(withRaygen("    - struct: {name: s, members: {a: bool}}\n")), 10, "members.a",
+              "unknown member type");
+  const std::string s = "    - struct: {name: s, members: {a: int8, c: vec3}}\n";
+  expectError(parse(withRaygen(s + "    - record: {value: {uint: var.s.b}}\n")), 11, "value",
+              "struct 's' has no member 'b' (its members: a, c)");
+  expectError(parse(withRaygen(s + "    - set: {s.b: 1}\n")), 11, "set.s.b", "no member 'b'");
+  expectError(parse(withRaygen(s + "    - record: {value: var.s}\n")), 11, "value",
+              "'s' is a struct");
+  expectError(parse(withRaygen("    - let: {x: 1}\n    - record: {value: var.x.a}\n")), 11, "value",
+              "'x' is not a struct");
+  expectError(parse(withRaygen("    - record: {value: var.t.a}\n")), 10, "value", "no struct 't'");
+  expectError(parse(withRaygen(s + "    - set: {s.a: 1.5}\n")), 11, "set.s.a", "expected Int8");
+  expectError(parse(withRaygen(s + "    - let: {s: 1}\n")), 11, "raygen", "already declared");
+  expectError(parse(withRaygen("    - let: {s.a: 1}\n")), 10, "let.s.a", "lower-case");
+  expectError(parse(withRaygen("    - struct: {name: s, members: {}}\n")), 10, "raygen",
+              "1 to 16 members");
+  const ParseResult good =
+      parse(withRaygen(s + "    - set: {s.a: {int8: 3}, s.c: [1.0, 2.0, 3.0]}\n"
+                           "    - record: {value: {uint: {add: [var.s.a, 1]}}}\n"));
+  EXPECT_TRUE(good.value.has_value()) << allErrors(good);
+}
+
 TEST(CaseControlFlow, BreakAndContinueNeedARepeat) {
   expectError(parse(withRaygen("    - break\n")), 10, "raygen", "outside a repeat");
   expectError(parse(withRaygen("    - continue\n")), 10, "raygen", "outside a repeat");

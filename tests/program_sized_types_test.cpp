@@ -104,15 +104,16 @@ TEST(SizedTypes, EachScalarHasVectorsOfTwoThreeAndFourWithConstructors) {
     if (!isSizedVector(t)) continue;
     ++vectors;
     const ValueType component = sizedComponent(t);
-    EXPECT_TRUE(isSizedScalar(component));
-    EXPECT_EQ(sizedType(t), sizedType(component));  // the component's row
+    EXPECT_TRUE(isSizedScalar(component) || component == ValueType::Uint);  // uvec2 .. uvec4
+    if (component != ValueType::Uint)
+      EXPECT_EQ(sizedType(t), sizedType(component));  // the component's row
     EXPECT_EQ(sizedVectorOf(component, componentCount(t)), t);
     EXPECT_EQ(valueTypeNamed(valueTypeSpelling(t)), t);
     const Op make = opNamed(valueTypeSpelling(t));  // {i8vec2: ..} .. {f64vec4: ..}
     ASSERT_TRUE(isSizedConstructor(make)) << valueTypeSpelling(t);
     EXPECT_EQ(constructorTarget(make), t);
   }
-  EXPECT_EQ(vectors, 27);
+  EXPECT_EQ(vectors, 30);  // 9 sized scalars' and uint's
   EXPECT_STREQ(valueTypeSpelling(ValueType::Uint8Vec3), "u8vec3");
   EXPECT_STREQ(valueTypeGlsl(ValueType::Float64Vec4), "f64vec4");
   EXPECT_EQ(componentCount(ValueType::Int16Vec2), 2);
@@ -136,11 +137,40 @@ TEST(SizedTypes, Int32IsCoreIntAndUintHasNoSecondSpelling) {
   EXPECT_STREQ(valueTypeSpelling(ValueType::Int32Vec4), "ivec4");
   EXPECT_EQ(valueTypeNamed("ivec2"), ValueType::Int32Vec2);
   EXPECT_FALSE(valueTypeNamed("uint32").has_value());
-  EXPECT_FALSE(valueTypeNamed("uvec2").has_value());
   EXPECT_EQ(wrapToType(ValueType::Int32, 0x80000000u), static_cast<uint64_t>(INT32_MIN));
   Expr big = sizedOp("add", {sizedOp("int32", {sizedLit(3)}), sizedLit(2147483648.0)});
   EXPECT_NE(sizedTypeMessage(big).find("out of range 0..2147483647"), std::string::npos)
       << sizedTypeMessage(big);
+}
+
+// uvec2 .. uvec4 are uint's vectors: the sized vectors' machinery with the
+// core Uint as component (its row makes no scalar: uint is not sized).
+TEST(SizedTypes, UintVectorsTakeUintAsTheirComponent) {
+  EXPECT_EQ(valueTypeNamed("uvec3"), ValueType::UintVec3);
+  EXPECT_STREQ(valueTypeGlsl(ValueType::UintVec4), "uvec4");
+  EXPECT_EQ(componentCount(ValueType::UintVec2), 2);
+  EXPECT_TRUE(isSizedVector(ValueType::UintVec3));
+  EXPECT_TRUE(isSizedInteger(ValueType::UintVec3));
+  EXPECT_FALSE(isSized(ValueType::Uint));
+  EXPECT_EQ(sizedComponent(ValueType::UintVec4), ValueType::Uint);
+  EXPECT_EQ(sizedVectorOf(ValueType::Uint, 3), ValueType::UintVec3);
+  const SizedType* s = sizedType(ValueType::UintVec2);
+  ASSERT_NE(s, nullptr);
+  EXPECT_EQ(s->bits, 32);
+  EXPECT_EQ(s->kind, SizedKind::Unsigned);
+  EXPECT_STREQ(s->feature, "");
+  EXPECT_EQ(wrapToType(ValueType::UintVec2, 0x1FFFFFFFFull), 0xFFFFFFFFu);
+  Expr make = sizedOp("uvec3", {sizedLit(1), sizedLit(4000000000.0), sizedLit(3)});
+  EXPECT_EQ(sizedTypeMessage(make), "");
+  EXPECT_EQ(make.type, ValueType::UintVec3);
+  Expr scaled = sizedOp("mul", {sizedOp("uvec2", {sizedLit(7)}), sizedLit(3)});
+  EXPECT_EQ(sizedTypeMessage(scaled), "");
+  EXPECT_EQ(scaled.type, ValueType::UintVec2);
+  Expr z = sizedOp("z", {sizedOp("uvec4", {sizedLit(2)})});
+  EXPECT_EQ(sizedTypeMessage(z), "");
+  EXPECT_EQ(z.type, ValueType::Uint);
+  Expr wrong = sizedOp("uvec2", {sizedLit(1.5, ValueType::Float), sizedLit(2)});
+  EXPECT_NE(sizedTypeMessage(wrong).find("need Uint scalars"), std::string::npos);
 }
 
 TEST(SizedTypes, VectorsTypeLaneByLaneAndTheirLiteralsTakeTheComponentType) {

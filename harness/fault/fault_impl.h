@@ -133,6 +133,7 @@ std::string localsLostAcrossCalls(Case& c, ModelOptions& o);
 std::string sizedLocalsHalved(Case& c, ModelOptions& o);
 std::string sizedVectorsRotated(Case& c, ModelOptions& o);
 std::string sizedNullNotZero(Case& c, ModelOptions& o);
+std::string structMemberLost(Case& c, ModelOptions& o);
 std::string loopTripOffByOne(Case& c, ModelOptions& o);
 std::string bitwiseXorAsOr(Case& c, ModelOptions& o);
 std::string crossOperandsSwapped(Case& c, ModelOptions& o);

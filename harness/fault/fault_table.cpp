@@ -398,7 +398,8 @@ std::vector<FaultImpl> codeAndLaunchMutations() {
        "reportIntersectionEXT (live values spilled and restored wrongly)",
        nullptr, localsLostAcrossCalls},
       {"sized-locals-halved-across-calls", K::CaseMutation,
-       "a local of a sized scalar or vector type (int8 .. f64vec4) comes back from its "
+       "a local (a struct member too) of a sized scalar or vector type (int8 .. f64vec4, "
+       "uvec2 .. uvec4) comes back from its "
        "traceRayEXT, executeCallableEXT or reportIntersectionEXT through a slot half its "
        "width (narrow and wide registers spilled wrongly): the lower half of its bits zero",
        nullptr, sizedLocalsHalved},
@@ -412,6 +413,11 @@ std::vector<FaultImpl> codeAndLaunchMutations() {
        "OpConstantNull), starts with every element one (1 or 1.0 in each lane) instead of "
        "zero",
        nullptr, sizedNullNotZero},
+      {"struct-member-lost-across-calls", K::CaseMutation,
+       "a struct local comes back from its traceRayEXT, executeCallableEXT or "
+       "reportIntersectionEXT short by its last member, which reads zero (a struct spilled "
+       "and restored one member short)",
+       nullptr, structMemberLost},
       {"loop-trip-off-by-one", K::CaseMutation, "every repeat runs one trip more than its count",
        nullptr, loopTripOffByOne},
       {"bitwise-xor-as-or", K::CaseMutation, "bit_xor (^) is computed as bit_or (|)", nullptr,

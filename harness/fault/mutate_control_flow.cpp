@@ -12,7 +12,7 @@ namespace rayspec {
 namespace {
 
 bool declaresLocal(const Stmt& s) {
-  return s.kind == Stmt::Kind::Let || s.kind == Stmt::Kind::Array ||
+  return s.kind == Stmt::Kind::Let || s.kind == Stmt::Kind::Array || s.kind == Stmt::Kind::Struct ||
          (s.kind == Stmt::Kind::Repeat && !s.local.empty()) ||
          (s.kind == Stmt::Kind::Invoke && !s.params.empty());
 }
@@ -128,12 +128,14 @@ std::string localsLostAcrossCalls(Case& c, ModelOptions& o) {
   return describeCount(calls, "traces, calls and reports after which every local reads zero");
 }
 
-// The locals (arrays and lets) of the case whose type `which` says yes to.
+// The locals (arrays, lets and struct members) of the case whose type `which` says yes to.
 size_t countLocals(Case& c, bool (*which)(ValueType)) {
   size_t n = 0;
   forEachProgram(c.pipeline, [&](Program& p, Stage) {
     forEachStmt(p, [&](Stmt& s) {
       if (s.kind == Stmt::Kind::Array) n += which(s.local_type);
+      if (s.kind == Stmt::Kind::Struct)  // its members
+        for (const auto& [member, type] : s.params) n += which(type);
       if (s.kind == Stmt::Kind::Let)
         for (const auto& [name, value] : s.assigns) n += which(value.type);
     });

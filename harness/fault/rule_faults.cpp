@@ -99,7 +99,6 @@ std::vector<RuleFaults> structureRules() {
 // The rules of the pipeline around traversal: the SBT, data between stages,
 // built-ins, structures, launches and shader code.
 std::vector<RuleFaults> pipelineRules() {
-  const Status fail = Status::Fail;
   return {
       {"R-SBT-HIT",
        {"hit-record-shifted", "instance-sbt-offset-ignored", "custom-index-truncated",
@@ -144,15 +143,21 @@ std::vector<RuleFaults> pipelineRules() {
        {}},
       {"R-LIVE-STATE",
        {"locals-lost-across-calls", "sized-locals-halved-across-calls",
-        "sized-vectors-rotated-across-calls", "sized-null-initialiser-lost"},
+        "sized-vectors-rotated-across-calls", "sized-null-initialiser-lost",
+        "struct-member-lost-across-calls"},
        {}},
       {"R-CONTROL-FLOW",
        {"loop-trip-off-by-one", "function-ignore-lost", "specialization-ignored",
         "bitwise-xor-as-or", "float-bits-converted", "cross-operands-swapped", "matrix-transposed"},
        {}},
-      // A ray query loop that decides candidates, commits or reads built-ins
-      // otherwise than the pipeline's stages would (pipeline.traces: ray_query).
-      // The ray_query statement (cases/ray-query/).
+  };
+}
+
+// A ray query loop that decides candidates, commits or reads built-ins
+// otherwise than the pipeline's stages would (pipeline.traces: ray_query).
+// The ray_query statement (cases/ray-query/).
+std::vector<RuleFaults> rayQueryRules() {
+  return {
       {"R-RQ-INIT",
        {"query-init-keeps-committed", "query-restart-keeps-committed", "query-step-wrong-query"},
        {}},
@@ -175,7 +180,7 @@ std::vector<RuleFaults> pipelineRules() {
         "tmax-view-initial", "transform-builtins-swapped", "builtin-wrong",
         "nested-trace-clobbers-hit"},
        {}},
-      {"R-UB", {}, {}, fail, "never checked for a result (robustness probe only)"},
+      {"R-UB", {}, {}, Status::Fail, "never checked for a result (robustness probe only)"},
   };
 }
 
@@ -213,7 +218,7 @@ std::vector<RuleFaults> hitObjectRules() {
 const std::vector<RuleFaults>& ruleFaults() {
   static const std::vector<RuleFaults> table = [] {
     std::vector<RuleFaults> all = traversalRules();
-    for (auto part : {pipelineRules, creationRules, structureRules, hitObjectRules})
+    for (auto part : {pipelineRules, rayQueryRules, creationRules, structureRules, hitObjectRules})
       for (RuleFaults& r : part()) all.push_back(std::move(r));
     return all;
   }();

@@ -41,6 +41,14 @@ void array(const Stmt& s, GlslWriter& out) {
            "[rs_z] = " + zeroOf(s.local_type) + ";");
 }
 
+// A struct local, each member zero (a constructor: no null initialiser).
+void structure(const Stmt& s, GlslWriter& out) {
+  const std::string type = structTypeName(s.params);
+  std::string zeros;
+  for (const auto& [member, t] : s.params) zeros += (zeros.empty() ? "" : ", ") + zeroOf(t);
+  out.line(type + " " + localName(s.local) + " = " + type + "(" + zeros + ");");
+}
+
 // The count and the first value are evaluated once, before the first trip.
 void repeat(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
   const std::string id = std::to_string(out.nextId());
@@ -127,6 +135,9 @@ void emitControl(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
     case Stmt::Kind::Array:
       array(s, out);
       return;
+    case Stmt::Kind::Struct:
+      structure(s, out);
+      return;
     case Stmt::Kind::Store: {
       if (s.assigns.empty()) return;
       // An array local, or a data array: store: {array: payload.words} -> payload.words[..]
@@ -157,6 +168,23 @@ void emitControl(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
     default:
       out.raw("#error rayspec: a case label outside a switch\n");
       return;
+  }
+}
+
+std::string structTypeName(const std::vector<std::pair<std::string, ValueType>>& members) {
+  std::string name = "RsStruct";
+  for (const auto& [member, type] : members)
+    name += "_" + std::string(valueTypeSpelling(type)) + "_" + member;
+  return name;
+}
+
+void emitStructTypes(const StageContext& ctx, GlslWriter& out) {
+  for (const auto& members : ctx.plan.struct_types) {
+    out.line("");
+    out.open("struct " + structTypeName(members) + " {");
+    for (const auto& [member, type] : members)
+      out.line(std::string(glslType(type)) + " m_" + member + ";");
+    out.close("};");
   }
 }
 

@@ -165,6 +165,8 @@ std::string emitExpr(const Expr& e, const StageContext& ctx) {
 }
 
 std::string localName(const std::string& name) {
+  const size_t dot = name.find('.');  // a struct's member: STRUCT.MEMBER
+  if (dot != std::string::npos) return "v_" + name.substr(0, dot) + ".m_" + name.substr(dot + 1);
   return "v_" + name;
 }
 

@@ -17,6 +17,7 @@ std::string emitExpr(const Expr& e, const StageContext& ctx);
 const char* glslType(ValueType t);
 
 // A local variable's GLSL name (var.NAME -> v_NAME).
+// A member STRUCT.MEMBER is v_STRUCT.m_MEMBER (GLSL keywords free as names).
 std::string localName(const std::string& name);
 // An array local's index expression: index modulo its size, as the model does.
 std::string arrayIndex(const std::string& array, const std::string& index);

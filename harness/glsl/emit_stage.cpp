@@ -299,6 +299,7 @@ void declarations(const StageContext& ctx, bool ray_query, const Program& progra
   include("payload.glsl", out);
   emitPayloadStructs(ctx, out);
   emitCallDataStructs(ctx, out);
+  emitStructTypes(ctx, out);
   if (ray_query) out.line("rayQueryEXT rs_rq;  // every trace's (glsl/emit_ray_query.h)");
   // The box of an inlined intersection program's candidate, or of a ray
   // query's AABB candidate (shaders/query_sphere.glsl), as scene.glsl reads it.

@@ -22,6 +22,19 @@ Val StageInterpreter::zeroElement(const CStmt& s) const {
   return sh_.fault_seam.sizedNullNotZero() ? onesSized(t) : fromSized(t, 0);
 }
 
+namespace {
+
+// A struct's members, zero (the GLSL constructs it from zeros: no null initialiser).
+void zeroMembers(const CStmt& s, StageEnv& env) {
+  if (s.slot < 0 || !s.src) return;
+  for (uint32_t k = 0; k < s.size && k < s.src->params.size(); ++k) {
+    const ValueType t = s.src->params[k].second;
+    setLocal(env, static_cast<size_t>(s.slot) + k, isSized(t) ? fromSized(t, 0) : Val{});
+  }
+}
+
+}  // namespace
+
 Flow StageInterpreter::execControl(const CStmt& s, StageEnv& env) {
   switch (s.kind) {
     case Stmt::Kind::Let:
@@ -33,6 +46,9 @@ Flow StageInterpreter::execControl(const CStmt& s, StageEnv& env) {
       if (s.slot < 0) return Flow::Continue;
       env.locals.resize(std::max(env.locals.size(), static_cast<size_t>(s.slot) + s.size));
       std::fill_n(env.locals.begin() + s.slot, s.size, zeroElement(s));
+      return Flow::Continue;
+    case Stmt::Kind::Struct:
+      zeroMembers(s, env);
       return Flow::Continue;
     case Stmt::Kind::Store: {
       if (s.words) {  // payload.words / call.words

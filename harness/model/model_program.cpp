@@ -208,6 +208,13 @@ struct Compiler {
     if (s.kind == Stmt::Kind::Array) {
       r.slot = static_cast<int>(scope.declare(s.local, {s.local_type, s.size}).slot);
       r.size = s.size;
+    } else if (s.kind == Stmt::Kind::Struct) {  // its members, one slot each, in order
+      scope.declare(s.local, {ValueType::Uint, 0, true, true});
+      for (const auto& [member, type] : s.params) {
+        const int slot = static_cast<int>(scope.declare(memberLocal(s.local, member), {type}).slot);
+        if (r.slot < 0) r.slot = slot;
+      }
+      r.size = static_cast<uint32_t>(s.params.size());
     } else if (const auto which =
                    s.kind == Stmt::Kind::Store ? wordArrayOfStore(s.local) : std::nullopt) {
       r.words = *which;

@@ -169,6 +169,10 @@ class Scan {
       case Stmt::Kind::Repeat:
         if (s.slot >= 0) declared_.insert(s.slot);
         break;
+      case Stmt::Kind::Struct:
+        for (uint32_t k = 0; s.slot >= 0 && k < s.size; ++k)
+          declared_.insert(s.slot + static_cast<int>(k));
+        break;
       case Stmt::Kind::Store:
         if (s.words && *s.words == WordArray::Payload)
           write({Place::Payload, 0}, nullptr, s);

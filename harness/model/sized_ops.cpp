@@ -53,11 +53,11 @@ double asDouble(ValueType t, const Val& v) {
   return t == ValueType::Uint ? v.u : t == ValueType::Float ? v.f[0] : sizedDouble(v);
 }
 
-// One lane's bits through a slot half its width.
-uint64_t halvedLane(ValueType component, uint64_t x) {
-  const SizedType* s = sizedType(component);
+// One lane's bits of a value of type t through a slot half its width.
+uint64_t halvedLane(ValueType t, uint64_t x) {
+  const SizedType* s = sizedType(t);
   const uint64_t low_half = (uint64_t{1} << (s->bits / 2)) - 1;
-  if (component != ValueType::Float16) return x & ~low_half;
+  if (sizedComponent(t) != ValueType::Float16) return x & ~low_half;
   // A normal float16: 11 significant bits, the low 8 of them (its
   // encoding's low byte) zero.
   const double d = std::bit_cast<double>(x);
@@ -72,8 +72,7 @@ uint64_t halvedLane(ValueType component, uint64_t x) {
 
 Val halvedSized(const Val& v) {
   Val r = v;
-  for (int k = 0; k < componentCount(v.sized); ++k)
-    r.x[k] = halvedLane(sizedComponent(v.sized), v.x[k]);
+  for (int k = 0; k < componentCount(v.sized); ++k) r.x[k] = halvedLane(v.sized, v.x[k]);
   return r;
 }
 
@@ -102,16 +101,32 @@ bool sizedEqual(ValueType t, const Val& a, const Val& b) {
   return isSizedFloat(t) ? sizedDouble(a) == sizedDouble(b) : a.x[0] == b.x[0];
 }
 
+namespace {
+
+// A scalar's bits as a lane: a sized scalar's, or a uint's (beside a uvec).
+uint64_t scalarLane(ValueType t, const Val& v) {
+  return t == ValueType::Uint ? uint64_t{v.u} : v.x[0];
+}
+
+// A lane of a sized vector of component `component` as a value.
+Val fromLane(ValueType component, uint64_t x) {
+  return component == ValueType::Uint ? fromUint(static_cast<uint32_t>(x))
+                                      : fromSized(component, x);
+}
+
+}  // namespace
+
 // Lane by lane; a scalar beside a vector is every lane's.
 Val StageInterpreter::sizedArithmetic(const CExpr& e, const Val* a) {
   const ValueType t = e.type, component = sizedComponent(t);
   const auto lane = [&](int i, int k) {
-    return isSizedVector(e.args[i].type) ? a[i].x[k] : a[i].x[0];
+    const ValueType at = e.args[i].type;
+    return isSizedVector(at) ? a[i].x[k] : scalarLane(at, a[i]);
   };
   Val r = fromSized(t, 0);
   for (int k = 0; k < componentCount(t); ++k) {
     if (isSizedInteger(t)) {
-      r.x[k] = integerOp(e.op, component, lane(0, k), lane(1, k));
+      r.x[k] = integerOp(e.op, t, lane(0, k), lane(1, k));
       continue;
     }
     const std::optional<double> d =
@@ -125,13 +140,13 @@ Val StageInterpreter::sizedArithmetic(const CExpr& e, const Val* a) {
 Val StageInterpreter::constructSized(const CExpr& e, const Val* a, size_t n) const {
   if (e.op >= Op::CompX && e.op <= Op::CompW) {  // x .. w of a sized vector
     const ValueType t = e.args[0].type;
-    return fromSized(sizedComponent(t),
-                     a[0].x[static_cast<int>(e.op) - static_cast<int>(Op::CompX)]);
+    return fromLane(sizedComponent(t),
+                    a[0].x[static_cast<int>(e.op) - static_cast<int>(Op::CompX)]);
   }
   const ValueType t = constructorTarget(e.op);
   Val r = fromSized(t, 0);
   for (size_t k = 0; k < static_cast<size_t>(componentCount(t)); ++k)
-    r.x[k] = a[n == 1 ? 0 : k].x[0];
+    r.x[k] = scalarLane(sizedComponent(t), a[n == 1 ? 0 : k]);
   return r;
 }
 

@@ -384,7 +384,7 @@ Val StageInterpreter::op(const CExpr& e, StageEnv& env) {
     case Op::CalleeWord:
     case Op::HighWord:  // converted before the switch (convertsSized)
       RAYSPEC_SIZED_TYPES(RAYSPEC_CONVERSION_CASE, )
-      RAYSPEC_SIZED_TYPES(RAYSPEC_CONSTRUCTOR_CASE, )  // made before the switch (makesSized)
+      RAYSPEC_VECTOR_ROWS(RAYSPEC_CONSTRUCTOR_CASE, )  // made before the switch (makesSized)
     case Op::None:
       break;
   }

@@ -46,10 +46,11 @@ bool parseScalarExpr(YamlReader& r, const YAML::Node& n, const std::string& fiel
   if (s.rfind("var.", 0) == 0) {  // a local variable (program/locals.h)
     out.kind = Expr::Kind::Local;
     out.name = s.substr(4);
-    if (isLocalName(out.name)) return true;
+    if (isLocalName(out.name) || isMemberName(out.name)) return true;
     r.error(n, field,
             "'" + s +
-                "': a local's name is a lower-case letter, then letters, digits or _ (at most 32)");
+                "': a local's name is a lower-case letter, then letters, digits or _ (at most "
+                "32); a struct's member is var.STRUCT.MEMBER");
     return false;
   }
   if (s.rfind("shader_record.", 0) == 0) {  // a member of pipeline.sbt.record_layout

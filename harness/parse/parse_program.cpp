@@ -510,15 +510,47 @@ bool parseStore(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& 
   return ok;
 }
 
-// let / set: {NAME: expr, ...}
+// struct: {name: NAME, members: {MEMBER: TYPE, ...}}, in the order written.
+bool parseStruct(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
+  s.kind = Stmt::Kind::Struct;
+  if (!r.expectMap(v, f, {"name", "members"}) || !r.require(v, f, "name") ||
+      !r.require(v, f, "members"))
+    return false;
+  auto name = r.string(YamlReader::get(v, "name"), f + ".name");
+  if (name) s.local = *name;
+  const YAML::Node members = YamlReader::get(v, "members");
+  if (!anyMap(r, members, f + ".members")) return false;
+  bool ok = name.has_value();
+  for (auto it = members.begin(); it != members.end(); ++it) {
+    const std::string member = it->first.IsScalar() ? it->first.Scalar() : "?";
+    const std::string mf = f + ".members." + member;
+    auto type_name = r.string(it->second, mf);
+    const auto type = type_name ? valueTypeNamed(*type_name) : std::nullopt;
+    if (!type || *type == ValueType::Bool) {
+      if (type_name)
+        r.error(it->second, mf,
+                "unknown member type '" + *type_name + "': a member is " + arrayTypeSpellings());
+      ok = false;
+      continue;
+    }
+    s.params.emplace_back(member, *type);
+  }
+  return ok;
+}
+
+// let / set: {NAME: expr, ...}; set also {STRUCT.MEMBER: expr}.
 bool parseLocals(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
   if (!anyMap(r, v, f)) return false;
   bool ok = true;
   for (auto it = v.begin(); it != v.end(); ++it) {
     const std::string name = it->first.IsScalar() ? it->first.Scalar() : "?";
-    if (!isLocalName(name)) {
+    if (!isLocalName(name) && !(s.kind == Stmt::Kind::Set && isMemberName(name))) {
       r.error(it->first, f + "." + name,
-              "a local's name is a lower-case letter, then letters, digits or _ (at most 32)");
+              s.kind == Stmt::Kind::Set
+                  ? "set names a local (a lower-case letter, then letters, digits or _, at most "
+                    "32) or a struct's member, STRUCT.MEMBER"
+                  : "a local's name is a lower-case letter, then letters, digits or _ (at most "
+                    "32)");
       ok = false;
       continue;
     }
@@ -554,7 +586,8 @@ bool scalarStmt(YamlReader& r, const YAML::Node& n, const std::string& field, St
 // Every statement's key, for the error of an unknown one.
 const char* const kStatementNames =
     "count, record, payload, call_data, ignore, terminate, report, trace, call, light, if, let, "
-    "set, array, store, repeat, switch, invoke, break, continue, return, ray_query, ray_queries, "
+    "set, array, struct, store, repeat, switch, invoke, break, continue, return, ray_query, "
+    "ray_queries, "
     "confirm, generate, terminate_query, restart_query, execute, record_miss, record_empty, "
     "record_hit, reorder";
 
@@ -628,6 +661,7 @@ const std::pair<const char*, StmtParser> kKeyedStatements[] = {{"count", parseCo
                                                                {"let", parseLet},
                                                                {"set", parseSetLocals},
                                                                {"array", parseArray},
+                                                               {"struct", parseStruct},
                                                                {"store", parseStore},
                                                                {"trace", parseTrace},
                                                                {"ray_query", parseRayQuery},

@@ -145,6 +145,10 @@ void planStatements(const std::vector<StageProgram>& programs, const Pipeline& p
       if (isHitObjectStatement(s)) plan.hit_objects = true;
       if (!s.trace.tlas_index.empty()) plan.dynamic_tlas_index = true;
       if (s.kind == Stmt::Kind::Array) noteSized(s.local_type, plan);
+      auto& structs = plan.struct_types;
+      if (s.kind == Stmt::Kind::Struct &&
+          std::find(structs.begin(), structs.end(), s.params) == structs.end())
+        structs.push_back(s.params);
       for (const auto& [name, type] : s.params) noteSized(type, plan);
     });
     walkExpressions(*sp.program, [&](const Expr& e) {

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "case/case.h"
@@ -48,6 +49,9 @@ struct Plan {
   bool usesSized(ValueType t) const {
     return sized_types >> static_cast<int>(sizedComponent(t)) & 1u;
   }
+  // Each distinct member list of the struct locals (Stmt::Kind::Struct) of
+  // every stage, in the order met: one GLSL struct type each.
+  std::vector<std::vector<std::pair<std::string, ValueType>>> struct_types;
   bool shader_record_data = false;         // some SBT record carries data
   bool zero_records = false;               // some SBT record is all zero
   bool sbt_tables = false;                 // the SBT as tables in a buffer: traced by ray

@@ -4,6 +4,7 @@
 #include <set>
 #include <string>
 
+#include "program/locals.h"
 #include "program/ops.h"
 #include "program/walk_program.h"
 
@@ -75,6 +76,8 @@ Computed computedLocals(const Program& p, Stage stage) {
     if (s.kind == Stmt::Kind::Store && !s.assigns.empty())
       assigned.emplace(s.local, &s.assigns[0].second);
     if (s.kind == Stmt::Kind::Array || s.kind == Stmt::Kind::Repeat) locals[s.local] = false;
+    if (s.kind == Stmt::Kind::Struct)
+      for (const auto& [member, type] : s.params) locals[memberLocal(s.local, member)] = false;
   });
   for (const auto& [name, value] : assigned) locals[name] = false;
   for (bool changed = true; changed;) {

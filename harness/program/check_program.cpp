@@ -53,6 +53,7 @@ constexpr StmtRule kStmtRules[] = {
     {Stmt::Kind::Let, "let", kAllStages},
     {Stmt::Kind::Set, "set", kAllStages},
     {Stmt::Kind::Array, "array", kAllStages},
+    {Stmt::Kind::Struct, "struct", kAllStages},
     {Stmt::Kind::Store, "store", kAllStages},
     {Stmt::Kind::Repeat, "repeat", kAllStages},
     {Stmt::Kind::Break, "break", kAllStages},
@@ -192,6 +193,8 @@ class Checker {
         return set(s);
       case Stmt::Kind::Array:
         return array(s);
+      case Stmt::Kind::Struct:
+        return structure(s);
       case Stmt::Kind::Store:
         return store(s);
       case Stmt::Kind::Repeat:
@@ -356,6 +359,8 @@ class Checker {
 
   std::optional<ProgramError> set(Stmt& s) {
     for (auto& [name, value] : s.assigns) {
+      if (auto problem = scope_.memberProblem(name))
+        return ProgramError{"set " + name + ": " + *problem, value.loc};
       const LocalInfo* info = scope_.find(name);
       if (!info || info->elements || info->read_only)
         return ProgramError{"set " + name + ": " +
@@ -374,6 +379,28 @@ class Checker {
                               " elements of uint, float, vec2, vec3 or vec4",
                           s.loc};
     return declare(s, s.local, {s.local_type, s.size});
+  }
+
+  // struct: the struct (a name only: read or set whole it is an error) and
+  // each member a local NAME.MEMBER of its type, zero.
+  std::optional<ProgramError> structure(Stmt& s) {
+    if (s.params.empty() || s.params.size() > kMaxStructMembers)
+      return ProgramError{
+          "struct " + s.local + ": 1 to " + std::to_string(kMaxStructMembers) + " members", s.loc};
+    for (size_t i = 0; i < s.params.size(); ++i) {
+      const std::string& member = s.params[i].first;
+      if (!isLocalName(member))
+        return ProgramError{"struct " + s.local + ": member name '" + member +
+                                "': a lower-case letter, then letters, digits or _ (at most 32)",
+                            s.loc};
+      for (size_t j = 0; j < i; ++j)
+        if (s.params[j].first == member)
+          return ProgramError{"struct " + s.local + ": member '" + member + "' twice", s.loc};
+    }
+    if (auto r = declare(s, s.local, {ValueType::Uint, 0, true, true})) return r;
+    for (const auto& [member, type] : s.params)
+      scope_.declare(memberLocal(s.local, member), {type});
+    return std::nullopt;
   }
 
   std::optional<ProgramError> store(Stmt& s) {

@@ -11,6 +11,12 @@ bool isLocalName(const std::string& name) {
   });
 }
 
+bool isMemberName(const std::string& name) {
+  const size_t dot = name.find('.');
+  return dot != std::string::npos && isLocalName(name.substr(0, dot)) &&
+         isLocalName(name.substr(dot + 1));
+}
+
 std::optional<ValueType> valueTypeNamed(const std::string& name) {
   for (ValueType t : enumValues<ValueType>())
     if (name == valueTypeSpelling(t)) return t;
@@ -28,6 +34,31 @@ const LocalInfo* LocalScope::find(const std::string& name) const {
   for (auto it = names_.rbegin(); it != names_.rend(); ++it)
     if (it->first == name) return &it->second;
   return nullptr;
+}
+
+std::vector<std::string> LocalScope::membersOf(const std::string& name) const {
+  std::vector<std::string> members;
+  const std::string prefix = name + ".";
+  for (const auto& [local, info] : names_)
+    if (local.rfind(prefix, 0) == 0) members.push_back(local.substr(prefix.size()));
+  return members;
+}
+
+std::optional<std::string> LocalScope::memberProblem(const std::string& name) const {
+  const size_t dot = name.find('.');
+  const LocalInfo* whole = find(name.substr(0, dot));
+  if (dot == std::string::npos) {
+    if (whole && whole->is_struct)
+      return "'" + name + "' is a struct: name one of its members (" + name + ".MEMBER)";
+    return std::nullopt;
+  }
+  const std::string base = name.substr(0, dot), member = name.substr(dot + 1);
+  if (!whole) return "no struct '" + base + "' is declared here";
+  if (!whole->is_struct) return "'" + base + "' is not a struct: it has no member '" + member + "'";
+  if (find(name)) return std::nullopt;
+  std::string known;
+  for (const std::string& m : membersOf(base)) known += (known.empty() ? "" : ", ") + m;
+  return "struct '" + base + "' has no member '" + member + "' (its members: " + known + ")";
 }
 
 const LocalInfo& LocalScope::declare(const std::string& name, LocalInfo info) {

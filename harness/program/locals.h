@@ -16,6 +16,11 @@ namespace rayspec {
 
 // A lower-case letter, then lower-case letters, digits or '_', 32 at most.
 bool isLocalName(const std::string& name);
+// A struct's member as a local: STRUCT.MEMBER, each part a local's name.
+bool isMemberName(const std::string& name);
+inline std::string memberLocal(const std::string& structure, const std::string& member) {
+  return structure + "." + member;
+}
 
 // The type a case file names in lower case, as GLSL does: bool, uint, float,
 // vec2, vec3, vec4.
@@ -25,6 +30,7 @@ struct LocalInfo {
   ValueType type = ValueType::Uint;  // an array's element type
   uint32_t elements = 0;             // an array's size; 0 for a scalar
   bool read_only = false;            // a repeat's variable
+  bool is_struct = false;            // a struct (its members are the locals NAME.MEMBER)
   uint32_t slot = 0;                 // first slot in the frame (model)
 };
 
@@ -32,6 +38,11 @@ struct LocalInfo {
 class LocalScope {
  public:
   const LocalInfo* find(const std::string& name) const;
+  // The members of the struct `name` visible here, in declaration order.
+  std::vector<std::string> membersOf(const std::string& name) const;
+  // Why `var.NAME` (a member read or written, STRUCT.MEMBER, or a struct
+  // read whole) names no value here; nullopt when it does.
+  std::optional<std::string> memberProblem(const std::string& name) const;
   // Declares a local in the innermost block; its slot is the frame's next.
   const LocalInfo& declare(const std::string& name, LocalInfo info);
   void openBlock() { blocks_.push_back(names_.size()); }

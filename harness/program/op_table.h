@@ -130,10 +130,10 @@
     "this stage's record floats")                                                                 \
   X(HighWord, "high", 1, 1, kAllStages, HighWord, "uint(($0) >> 32)",                              \
     "bits 32..63 of an Int64 or Uint64 -> Uint")                                                   \
-  RAYSPEC_SIZED_TYPES(RAYSPEC_CONSTRUCTOR_OPS, X)                                                  \
+  RAYSPEC_VECTOR_ROWS(RAYSPEC_CONSTRUCTOR_OPS, X)                                                  \
   RAYSPEC_SIZED_TYPES(RAYSPEC_CONVERSION_OP, X)
-// {i8vec2: [a, b]} .. {f64vec4: [a, b, c, d]}: a sized vector of its
-// component type's scalars (one splats).
+// {i8vec2: [a, b]} .. {f64vec4: [a, b, c, d]}, {uvec2: ..} .. {uvec4: ..}: a
+// sized vector of its component type's scalars (one splats).
 #define RAYSPEC_CONSTRUCTOR_OPS(X, id, name, spelling, glsl, bits, kind, extension, feature, vec) \
   X(Make##id##Vec2, vec "2", 1, 2, kAllStages, ConstructSized, vec "2($,)",                        \
     name " scalars -> " name "Vec2 (a single one splats)")                                         \

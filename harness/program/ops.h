@@ -110,15 +110,15 @@ constexpr ValueType conversionTarget(Op op) {
   return static_cast<ValueType>(static_cast<int>(ValueType::Int8) + static_cast<int>(op) -
                                 static_cast<int>(Op::ToInt8));
 }
-static_assert(static_cast<int>(Op::MakeFloat64Vec4) - static_cast<int>(Op::MakeInt8Vec2) ==
-                      static_cast<int>(ValueType::Float64Vec4) -
+static_assert(static_cast<int>(Op::MakeUintVec4) - static_cast<int>(Op::MakeInt8Vec2) ==
+                      static_cast<int>(ValueType::UintVec4) -
                           static_cast<int>(ValueType::Int8Vec2) &&
-                  static_cast<int>(Op::MakeFloat64Vec4) + 1 == static_cast<int>(Op::ToInt8),
+                  static_cast<int>(Op::MakeUintVec4) + 1 == static_cast<int>(Op::ToInt8),
               "the sized vectors' constructors in the order of their ValueType rows");
-constexpr bool isSizedConstructor(Op op) {  // i8vec2 .. f64vec4
-  return op >= Op::MakeInt8Vec2 && op <= Op::MakeFloat64Vec4;
+constexpr bool isSizedConstructor(Op op) {  // i8vec2 .. f64vec4, uvec2 .. uvec4
+  return op >= Op::MakeInt8Vec2 && op <= Op::MakeUintVec4;
 }
-// The sized vector a constructor ({i8vec2: ..} .. {f64vec4: ..}) makes.
+// The sized vector a constructor ({i8vec2: ..} .. {uvec4: ..}) makes.
 constexpr ValueType constructorTarget(Op op) {
   return static_cast<ValueType>(static_cast<int>(ValueType::Int8Vec2) + static_cast<int>(op) -
                                 static_cast<int>(Op::MakeInt8Vec2));

@@ -42,7 +42,7 @@ inline const char* stageName(Stage s) {
   X(Vec3, "Vec3", "vec3", 3, "vec3")                                \
   X(Vec4, "Vec4", "vec4", 4, "vec4")                                \
   RAYSPEC_SIZED_TYPES(RAYSPEC_SIZED_AS_VALUE_TYPE, X)              \
-  RAYSPEC_SIZED_TYPES(RAYSPEC_SIZED_VECTORS_AS_VALUE_TYPES, X)
+  RAYSPEC_VECTOR_ROWS(RAYSPEC_SIZED_VECTORS_AS_VALUE_TYPES, X)
 
 // clang-format on
 enum class ValueType { RAYSPEC_VALUE_TYPES(RAYSPEC_ENUMERATOR) };
@@ -50,8 +50,9 @@ RAYSPEC_ENUM_NAMES(ValueType, RAYSPEC_VALUE_TYPES);
 static_assert(
     static_cast<int>(ValueType::Float64Vec4) - static_cast<int>(ValueType::Int8Vec2) ==
             3 * (static_cast<int>(ValueType::Float64) - static_cast<int>(ValueType::Int8)) + 2 &&
-        static_cast<int>(ValueType::Int8Vec2) == static_cast<int>(ValueType::Float64) + 1,
-    "the sized scalars, then their vectors (2, 3, 4 each) in the same order");
+        static_cast<int>(ValueType::Int8Vec2) == static_cast<int>(ValueType::Float64) + 1 &&
+        static_cast<int>(ValueType::UintVec2) == static_cast<int>(ValueType::Float64Vec4) + 1,
+    "the sized scalars, then their vectors (2, 3, 4 each) in the same order, then uint's");
 inline const char* valueTypeName(ValueType t) {
   return nameOf(t);
 }
@@ -68,21 +69,22 @@ struct SizedType {
   const char* extension;  // the #extension its GLSL needs
   const char* feature;    // the device feature (NotSupported names it)
 };
-// Its row (a sized vector's: its component's), or null for Bool, Uint,
-// Float and Vec2..Vec4.
+// Its row (a sized vector's: its component's; uvec2 .. uvec4: uint's row of
+// RAYSPEC_UINT_VECTORS), or null for Bool, Uint, Float and Vec2..Vec4.
 const SizedType* sizedType(ValueType t);
-inline bool isSized(ValueType t) {  // a sized scalar or a sized vector
+inline bool isSized(ValueType t) {  // a sized scalar or a sized vector (uvecs included)
   return sizedType(t) != nullptr;
 }
-bool isSizedVector(ValueType t);  // i8vec2 .. f64vec4
+bool isSizedVector(ValueType t);  // i8vec2 .. f64vec4, uvec2 .. uvec4
 inline bool isSizedScalar(ValueType t) {
   return isSized(t) && !isSizedVector(t);
 }
 bool isSizedInteger(ValueType t);  // int8 .. uint64, scalar or vector
 bool isSizedFloat(ValueType t);    // float16, float64, scalar or vector
-// A sized vector's component type (Int8 for Int8Vec3); any other type itself.
+// A sized vector's component type (Int8 for Int8Vec3, Uint for UintVec3); any
+// other type itself.
 ValueType sizedComponent(ValueType t);
-// The sized scalar s's vector of n (2..4) components.
+// The sized scalar s's (or Uint's) vector of n (2..4) components.
 ValueType sizedVectorOf(ValueType s, int n);
 // The spellings of the types an array may hold, joined by ", " (messages).
 std::string arrayTypeSpellings();
@@ -193,6 +195,8 @@ struct Stmt {
     Set,       // assign declared locals: assigns[i] = (name, value)
     Array,     // declare `local`: an array of `size` elements of `local_type`, all zero
     Store,     // local[index % size] = assigns[0].second
+    Struct,    // declare `local`: a struct of the members `params` (name, type), each
+               // zero; a member is the local `local.member` (set: {s.a: ..}, var.s.a)
     Repeat,    // for k in 0 .. min(count, kMaxLoopTrips)-1: local := from + k; then_
     Break,     // leave the innermost repeat
     Continue,  // next iteration of the innermost repeat
@@ -221,7 +225,8 @@ struct Stmt {
   uint32_t size = 0;        // Array: elements; Case: the label; RayQuery: 1 when declared
                             // order_dependent (model/order_dependence.h)
   Expr count, from, index;  // Repeat: trip count, first value; Store: index
-  std::vector<std::pair<std::string, ValueType>> params;  // Invoke: the function's parameters
+  std::vector<std::pair<std::string, ValueType>> params;  // Invoke: the function's parameters;
+                                                          // Struct: its members
   bool query_param = false;  // Invoke: the function takes the caller's innermost ray query
                              // (pipeline.functions' `query: true`; GLSL: a rayQueryEXT parameter)
   std::vector<Stmt> then_, else_;  // If, Report, Repeat (body), Switch (cases, default),
@@ -268,6 +273,8 @@ struct ShaderRecordLayout {
 constexpr uint32_t kMaxLoopTrips = 1024;
 constexpr uint32_t kMaxArrayElements = 128;
 constexpr uint32_t kMaxFunctionNesting = 8;
+// A struct local holds 1 to this many members.
+constexpr uint32_t kMaxStructMembers = 16;
 // ray_query statements nest at most this deep (one GLSL query variable each).
 constexpr uint32_t kMaxQueryNesting = 4;
 // A ray_queries statement steps 2 to this many queries in turn.

@@ -41,6 +41,15 @@
     "GL_EXT_shader_explicit_arithmetic_types_int64", "shaderInt64", "u64vec")                   \
   Y(X, Float64, "Float64", "float64", "float64_t", 64, Floating,                               \
     "GL_EXT_shader_explicit_arithmetic_types_float64", "shaderFloat64", "f64vec")
+// uint's vectors, uvec2 .. uvec4: the sized vectors' machinery (add, sub,
+// mul wrapping modulo 2^32, min, max, x .. w, {uvec3: [a, b, c]} and splat)
+// with the core uint as their component; uint itself stays the one 32-bit
+// unsigned scalar (program/program.h's Uint, no row of RAYSPEC_SIZED_TYPES:
+// no second spelling), so this row makes vectors only. No #extension, no
+// device feature.
+#define RAYSPEC_UINT_VECTORS(Y, X) Y(X, Uint, "Uint", "uint", "uint", 32, Unsigned, "", "", "uvec")
+// Every row that has vectors: the sized scalars', then uint's.
+#define RAYSPEC_VECTOR_ROWS(Y, X) RAYSPEC_SIZED_TYPES(Y, X) RAYSPEC_UINT_VECTORS(Y, X)
 #define RAYSPEC_SIZED_AS_VALUE_TYPE(X, id, name, spelling, glsl, ...) X(id, name, spelling, 1, glsl)
 // A sized scalar's vectors as ValueType rows: Int8Vec2 "i8vec2" .. Int8Vec4.
 #define RAYSPEC_SIZED_VECTORS_AS_VALUE_TYPES(X, id, name, spelling, glsl, bits, kind, extension, \

@@ -29,7 +29,9 @@ const SizedType* sizedType(ValueType t) {
 #define RAYSPEC_SIZED_TYPE_ROW(X, id, name, spelling, glsl, bits, kind, extension, feature, vec) \
   SizedType{ValueType::id, bits, SizedKind::kind, extension, feature},
   static constexpr SizedType kRows[] = {RAYSPEC_SIZED_TYPES(RAYSPEC_SIZED_TYPE_ROW, )};
+  static constexpr SizedType kUintRow[] = {RAYSPEC_UINT_VECTORS(RAYSPEC_SIZED_TYPE_ROW, )};
 #undef RAYSPEC_SIZED_TYPE_ROW
+  if (t >= ValueType::UintVec2 && t <= ValueType::UintVec4) return &kUintRow[0];
   const ValueType scalar = sizedComponent(t);
   for (const SizedType& row : kRows)
     if (row.type == scalar) return &row;
@@ -37,16 +39,19 @@ const SizedType* sizedType(ValueType t) {
 }
 
 bool isSizedVector(ValueType t) {
-  return t >= ValueType::Int8Vec2 && t <= ValueType::Float64Vec4;
+  return t >= ValueType::Int8Vec2 && t <= ValueType::UintVec4;
 }
 
 ValueType sizedComponent(ValueType t) {
   if (!isSizedVector(t)) return t;
+  if (t >= ValueType::UintVec2) return ValueType::Uint;
   const int k = static_cast<int>(t) - static_cast<int>(ValueType::Int8Vec2);
   return static_cast<ValueType>(static_cast<int>(ValueType::Int8) + k / 3);
 }
 
 ValueType sizedVectorOf(ValueType s, int n) {
+  if (s == ValueType::Uint)
+    return static_cast<ValueType>(static_cast<int>(ValueType::UintVec2) + n - 2);
   const int k = static_cast<int>(s) - static_cast<int>(ValueType::Int8);
   return static_cast<ValueType>(static_cast<int>(ValueType::Int8Vec2) + 3 * k + n - 2);
 }

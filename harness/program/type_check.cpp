@@ -398,6 +398,8 @@ Typing typeLoad(Expr& e, Stage stage, const LocalScope* locals) {
 }
 
 Typing typeLocal(Expr& e, const LocalScope* locals) {
+  if (auto problem = locals ? locals->memberProblem(e.name) : std::nullopt)
+    return err(e, "'var." + e.name + "': " + *problem);
   const LocalInfo* info = locals ? locals->find(e.name) : nullptr;
   if (!info)
     return err(e, "local 'var." + e.name +
