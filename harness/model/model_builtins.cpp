@@ -45,6 +45,14 @@ Val ModelBuiltins::dataBuiltin(const CExpr& e, StageEnv& env) const {
       return fromUint(cd->words[e.index % kMaxCallDataWords]);
     case kBiCalleeWord:
       return fromUint(env.callee.words[e.index % kMaxCallDataWords]);
+    case kBiPayloadSized:
+      return pl->sized.read(static_cast<ValueType>(e.index));
+    case kBiChildSized:
+      return env.child.sized.read(static_cast<ValueType>(e.index));
+    case kBiCallSized:
+      return cd->sized.read(static_cast<ValueType>(e.index));
+    case kBiCalleeSized:
+      return env.callee.sized.read(static_cast<ValueType>(e.index));
     default:
       break;
   }
@@ -198,6 +206,8 @@ Val ModelBuiltins::hitBuiltin(const CExpr& e, const StageEnv& env) const {
     }
     case kBiAttributeWord:
       return fromUint(hv->words[e.index % kMaxAttributeWords]);
+    case kBiAttributeSized:
+      return hv->sized.read(static_cast<ValueType>(e.index));
     default:
       return Val{};  // builtin() sends no other
   }
@@ -236,6 +246,7 @@ Val ModelBuiltins::read(const CExpr& e, StageEnv& env) const {
     case kBiObjectDirection:
     case kBiHitPosition:
     case kBiAttributeWord:
+    case kBiAttributeSized:
       return hitBuiltin(e, env);
     case kBiVertex0:
     case kBiVertex1:
@@ -270,6 +281,10 @@ Val ModelBuiltins::read(const CExpr& e, StageEnv& env) const {
     case kBiCalleeColor:
     case kBiCalleeValue:
     case kBiCalleeWord:
+    case kBiPayloadSized:
+    case kBiChildSized:
+    case kBiCallSized:
+    case kBiCalleeSized:
       return dataBuiltin(e, env);
 #define RAYSPEC_BUILTIN_CASE(id, ...) case kBi##id:
       RAYSPEC_QUERY_BUILTINS(RAYSPEC_BUILTIN_CASE)
