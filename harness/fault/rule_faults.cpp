@@ -153,9 +153,15 @@ std::vector<RuleFaults> pipelineRules() {
        {"loop-trip-off-by-one", "function-ignore-lost", "specialization-ignored",
         "bitwise-xor-as-or", "float-bits-converted", "cross-operands-swapped", "matrix-transposed"},
        {}},
-      // A ray query loop that decides candidates, commits or reads built-ins
-      // otherwise than the pipeline's stages would (pipeline.traces: ray_query).
-      // The ray_query statement (cases/ray-query/).
+      {"R-UB", {}, {}, fail, "never checked for a result (robustness probe only)"},
+  };
+}
+
+// The rules of ray queries: a ray query loop that decides candidates,
+// commits or reads built-ins otherwise than the pipeline's stages would
+// (pipeline.traces: ray_query), and the ray_query statement (cases/ray-query/).
+std::vector<RuleFaults> rayQueryRules() {
+  return {
       {"R-RQ-INIT",
        {"query-init-keeps-committed", "query-restart-keeps-committed", "query-step-wrong-query"},
        {}},
@@ -178,7 +184,6 @@ std::vector<RuleFaults> pipelineRules() {
         "tmax-view-initial", "transform-builtins-swapped", "builtin-wrong",
         "nested-trace-clobbers-hit"},
        {}},
-      {"R-UB", {}, {}, fail, "never checked for a result (robustness probe only)"},
   };
 }
 
@@ -216,7 +221,7 @@ std::vector<RuleFaults> hitObjectRules() {
 const std::vector<RuleFaults>& ruleFaults() {
   static const std::vector<RuleFaults> table = [] {
     std::vector<RuleFaults> all = traversalRules();
-    for (auto part : {pipelineRules, creationRules, structureRules, hitObjectRules})
+    for (auto part : {pipelineRules, rayQueryRules, creationRules, structureRules, hitObjectRules})
       for (RuleFaults& r : part()) all.push_back(std::move(r));
     return all;
   }();

@@ -213,6 +213,27 @@ Val ModelBuiltins::hitBuiltin(const CExpr& e, const StageEnv& env) const {
   }
 }
 
+// The rows dataBuiltin reads: the payload and callable data.
+#define RAYSPEC_DATA_BUILTIN_CASES \
+  case kBiPayloadColor:            \
+  case kBiPayloadValue:            \
+  case kBiPayloadWord:             \
+  case kBiPayloadSized:            \
+  case kBiChildColor:              \
+  case kBiChildValue:              \
+  case kBiChildWord:               \
+  case kBiChildSized:              \
+  case kBiCallPosition:            \
+  case kBiCallNormal:              \
+  case kBiCallColor:               \
+  case kBiCallValue:               \
+  case kBiCallWord:                \
+  case kBiCallSized:               \
+  case kBiCalleeColor:             \
+  case kBiCalleeValue:             \
+  case kBiCalleeWord:              \
+  case kBiCalleeSized:
+
 // Every row of program/builtin_table.h, with no default: a row the model
 // gives no meaning fails the build (-Werror=switch).
 Val ModelBuiltins::read(const CExpr& e, StageEnv& env) const {
@@ -267,24 +288,7 @@ Val ModelBuiltins::read(const CExpr& e, StageEnv& env) const {
     case kBiWorldToObject3x4_1:
     case kBiWorldToObject3x4_2:
       return transformBuiltin(env.hit ? *env.hit : kNone, e.builtin - kBiObjectToWorld0);
-    case kBiPayloadColor:
-    case kBiPayloadValue:
-    case kBiPayloadWord:
-    case kBiChildColor:
-    case kBiChildValue:
-    case kBiChildWord:
-    case kBiCallPosition:
-    case kBiCallNormal:
-    case kBiCallColor:
-    case kBiCallValue:
-    case kBiCallWord:
-    case kBiCalleeColor:
-    case kBiCalleeValue:
-    case kBiCalleeWord:
-    case kBiPayloadSized:
-    case kBiChildSized:
-    case kBiCallSized:
-    case kBiCalleeSized:
+      RAYSPEC_DATA_BUILTIN_CASES
       return dataBuiltin(e, env);
 #define RAYSPEC_BUILTIN_CASE(id, ...) case kBi##id:
       RAYSPEC_QUERY_BUILTINS(RAYSPEC_BUILTIN_CASE)
@@ -299,6 +303,7 @@ Val ModelBuiltins::read(const CExpr& e, StageEnv& env) const {
   unknown(e);
   return Val{};
 }
+#undef RAYSPEC_DATA_BUILTIN_CASES
 
 void ModelBuiltins::unknown(const CExpr& e) const {
   if (st_.error.empty())
