@@ -515,12 +515,10 @@ struct Pipeline {
   // (pipeline.hit_attribute.words, 0..kMaxAttributeWords).
   uint32_t attribute_words = 0;
   // Its sized members after the words (pipeline.hit_attribute.sized); the
-  // whole attribute, laid out scalar (sizedMembersEnd), within
+  // whole attribute, as Vulkan counts it (hitAttributeBytes), within
   // kMaxAttributeBytes.
   SizedMembers attribute_sized;
-  uint32_t attributeBytes() const {
-    return sizedMembersEnd(attribute_sized, 8 + 4 * attribute_words);
-  }
+  uint32_t attributeBytes() const { return hitAttributeBytes(attribute_words, attribute_sized); }
   // Specialization constants (pipeline.constants), and the values some
   // shaders take (pipeline.specialize, by GeneratedShader name: "raygen",
   // "miss0", "hit1.any_hit", "callable2", ...), by constant index.

@@ -175,12 +175,12 @@ void parseHitAttribute(YamlReader& r, const YAML::Node& v, Pipeline& p) {
   p.attribute_sized =
       parseSizedMembers(r, sized, "pipeline.hit_attribute.sized").value_or(SizedMembers{});
   if (p.attributeBytes() > kMaxAttributeBytes)
-    r.error(sized, "pipeline.hit_attribute.sized",
-            "the hit attribute holds " + std::to_string(p.attributeBytes()) + " bytes (its vec2, " +
-                std::to_string(p.attribute_words) +
-                " word(s) and these members, each aligned to its component), over the " +
-                std::to_string(kMaxAttributeBytes) +
-                " every device allows (maxRayHitAttributeSize)");
+    r.error(
+        sized, "pipeline.hit_attribute.sized",
+        "the hit attribute holds " + std::to_string(p.attributeBytes()) + " bytes (its vec2, " +
+            std::to_string(p.attribute_words) +
+            " word(s) and these members, each aligned to the largest scalar of any), over the " +
+            std::to_string(kMaxAttributeBytes) + " every device allows (maxRayHitAttributeSize)");
 }
 
 }  // namespace

@@ -72,13 +72,17 @@ std::string sizedMemberGlsl(ValueType t) {
   return std::string("rs_") + valueTypeSpelling(t);
 }
 
-uint32_t sizedMembersEnd(const SizedMembers& members, uint32_t start) {
-  uint32_t end = start;
-  for (ValueType t : members) {
-    const uint32_t component = static_cast<uint32_t>(sizedType(t)->bits) / 8;
-    end = (end + component - 1) / component * component +
-          component * static_cast<uint32_t>(componentCount(t));
-  }
+uint32_t hitAttributeBytes(uint32_t words, const SizedMembers& members) {
+  uint32_t align = 4;  // the vec2's and the words' scalars
+  for (ValueType t : members)
+    align = std::max(align, static_cast<uint32_t>(sizedType(t)->bits) / 8);
+  auto place = [&](uint32_t at, uint32_t size) {
+    return (at + align - 1) / align * align + size;
+  };
+  uint32_t end = 8;  // the vec2
+  if (words) end = place(end, 4 * words);
+  for (ValueType t : members)
+    end = place(end, static_cast<uint32_t>(sizedType(t)->bits / 8 * componentCount(t)));
   return end;
 }
 

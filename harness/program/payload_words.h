@@ -72,10 +72,11 @@ struct SizedMemberRead {
 std::optional<SizedMemberRead> sizedMemberBuiltin(const std::string& name);
 // The GLSL struct member holding a sized type's member: "rs_int8".
 std::string sizedMemberGlsl(ValueType t);
-// Where the members end when they follow `start` bytes of 4-byte members,
-// each aligned to its component's size and as large as its components (the
-// scalar layout: what the hit attribute's size rule counts).
-uint32_t sizedMembersEnd(const SizedMembers& members, uint32_t start);
+// Bytes of a hit attribute block of a vec2, `words` uint words and these
+// members, as Vulkan counts it for maxRayHitAttributeSize (the block has no
+// explicit offsets: every member aligned to the largest scalar alignment of
+// any member, each as large as its components).
+uint32_t hitAttributeBytes(uint32_t words, const SizedMembers& members);
 // The members of `a` and `b`, in ValueType order (a result type that holds
 // any location's).
 SizedMembers sizedMembersUnion(const SizedMembers& a, const SizedMembers& b);
