@@ -23,7 +23,10 @@ Expr parsedExpr(const std::string& text, std::vector<Error>& errors) {
 TEST(ParseBuiltinIds, EverySpellingOfTheTableReadsAsItsRow) {
   for (int i = 0; i < kBiCount; ++i) {
     const Builtin b = static_cast<Builtin>(i);
-    for (uint32_t word : isWordFamily(b) ? std::vector<uint32_t>{0, 5} : std::vector<uint32_t>{0}) {
+    std::vector<uint32_t> words{0};
+    if (isWordFamily(b)) words = {0, 5};
+    if (isSizedFamily(b)) words = {static_cast<uint32_t>(ValueType::Float16Vec3)};
+    for (uint32_t word : words) {
       const std::string spelled = builtinSpelling(b, word);
       std::vector<Error> errors;
       const Expr e = parsedExpr(spelled, errors);

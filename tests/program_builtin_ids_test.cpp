@@ -25,13 +25,22 @@ bool startsWith(const std::string& s, const char* prefix) {
   return s.rfind(prefix, 0) == 0;
 }
 
+// The indices a row's names take: a word<i> family's words, a <type>
+// family's sized types (as ValueType), 0 elsewhere.
+std::vector<uint32_t> indicesOf(Builtin b) {
+  if (isWordFamily(b)) return {0, 3, lastWord(b)};
+  if (isSizedFamily(b))
+    return {static_cast<uint32_t>(ValueType::Int8), static_cast<uint32_t>(ValueType::Int32),
+            static_cast<uint32_t>(ValueType::Float64Vec4)};
+  return {0};
+}
+
 TEST(BuiltinIds, EverySpellingOfTheTableResolvesToItsRow) {
   for (int i = 0; i < kBiCount; ++i) {
     const Builtin b = static_cast<Builtin>(i);
-    const bool family = isWordFamily(b);
-    EXPECT_EQ(family, nameOfRow(b).find("<i>") != std::string::npos) << nameOfRow(b);
-    for (uint32_t word :
-         family ? std::vector<uint32_t>{0, 3, lastWord(b)} : std::vector<uint32_t>{0}) {
+    EXPECT_EQ(isWordFamily(b), nameOfRow(b).find("<i>") != std::string::npos) << nameOfRow(b);
+    EXPECT_EQ(isSizedFamily(b), nameOfRow(b).find("<type>") != std::string::npos) << nameOfRow(b);
+    for (uint32_t word : indicesOf(b)) {
       const std::string spelled = builtinSpelling(b, word);
       const std::optional<BuiltinName> named = builtinNamed(spelled);
       ASSERT_TRUE(named.has_value()) << spelled;
@@ -43,20 +52,24 @@ TEST(BuiltinIds, EverySpellingOfTheTableResolvesToItsRow) {
       EXPECT_EQ(e.builtin, b) << spelled;
       EXPECT_EQ(e.word, word) << spelled;
       EXPECT_EQ(e.name, spelled);
-      EXPECT_EQ(e.type, builtins()[b].type) << spelled;
+      EXPECT_EQ(e.type, isSizedFamily(b) ? static_cast<ValueType>(word) : builtins()[b].type)
+          << spelled;
     }
   }
   EXPECT_EQ(builtinSpelling(kBiPayloadWord, 3), "payload.word3");
   EXPECT_EQ(builtinSpelling(kBiAttributeWord, 5), "attribute.word5");
   EXPECT_EQ(builtinSpelling(kBiHitT, 3), "hit_t");  // no family: the index is no part of it
+  EXPECT_EQ(builtinSpelling(kBiCalleeSized, static_cast<uint32_t>(ValueType::Uint16Vec3)),
+            "callee.u16vec3");
 }
 
 // A family's own row name, an index beyond the family or written with a
 // leading zero, and a near miss name no row.
 TEST(BuiltinIds, NamesNoRowReadsAreUnknown) {
-  for (const char* name : {"payload.word<i>", "attribute.word<i>", "payload.word58",
-                           "attribute.word6", "callee.word58", "payload.word03", "payload.word",
-                           "primitive", "hit_tt", "committed.", ""}) {
+  for (const char* name :
+       {"payload.word<i>", "attribute.word<i>", "payload.word58", "attribute.word6",
+        "callee.word58", "payload.word03", "payload.word", "payload.<type>", "payload.uint",
+        "payload.vec3", "child.i8vec5", "primitive", "hit_tt", "committed.", ""}) {
     EXPECT_FALSE(builtinNamed(name).has_value()) << name;
     EXPECT_EQ(findBuiltin(name), nullptr) << name;
     const Expr e = builtinExpr(std::string(name));
@@ -92,12 +105,13 @@ TEST(BuiltinIds, SetBuiltinKeepsNameIdWordAndTypeInStep) {
   EXPECT_FALSE(isBuiltin(sum, kBiLaunchX));
   // Every row: what setBuiltin writes reads back as that row.
   for (int i = 0; i < kBiCount; ++i) {
-    setBuiltin(e, static_cast<Builtin>(i), 2);
+    const Builtin b = static_cast<Builtin>(i);
+    setBuiltin(e, b, indicesOf(b).back());
     const std::optional<BuiltinName> back = builtinNamed(e.name);
     ASSERT_TRUE(back.has_value()) << e.name;
     EXPECT_EQ(back->id, e.builtin) << e.name;
     EXPECT_EQ(back->word, e.word) << e.name;
-    EXPECT_EQ(e.type, builtins()[i].type) << e.name;
+    EXPECT_EQ(e.type, builtinType(b, e.word)) << e.name;
   }
 }
 
@@ -113,7 +127,9 @@ TEST(BuiltinIds, NeedsColumnNamesTheDataARowReads) {
     EXPECT_EQ((needs & ChildPayload) != 0, startsWith(n, "child.")) << n;
     EXPECT_EQ((needs & CallData) != 0, startsWith(n, "call.")) << n;
     EXPECT_EQ((needs & CalleeData) != 0, startsWith(n, "callee.")) << n;
-    EXPECT_EQ((needs & HitAttribute) != 0, n == "barycentrics" || n == "attribute.word<i>") << n;
+    EXPECT_EQ((needs & HitAttribute) != 0,
+              n == "barycentrics" || n == "attribute.word<i>" || n == "attribute.<type>")
+        << n;
     EXPECT_EQ(isHitVertexPosition(b), startsWith(n, "vertex_position")) << n;
     EXPECT_EQ(isQueryVertexPosition(b), n.find(".vertex_position") != std::string::npos) << n;
     EXPECT_EQ(isCandidateGetter(b), startsWith(n, "candidate.")) << n;

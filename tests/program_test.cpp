@@ -60,14 +60,16 @@ TEST(Builtins, TableMatchesDocumentation) {
   std::set<std::string> names;
   for (const BuiltinInfo& b : builtins()) EXPECT_TRUE(names.insert(b.name).second) << b.name;
   // One row per Builtin, each name finding its own row and id; every row but
-  // the word<i> families and hit (spelled by the emitter) has its GLSL.
+  // the word<i> and <type> families and hit (spelled by the emitter) has its GLSL.
   ASSERT_EQ(builtins().size(), size_t{kBiCount});
+  const uint32_t int8 = static_cast<uint32_t>(ValueType::Int8);
   for (size_t i = 0; i < builtins().size(); ++i) {
     const BuiltinInfo& b = builtins()[i];
-    EXPECT_EQ(findBuiltin(builtinSpelling(static_cast<Builtin>(i), 3)), &b) << b.name;
-    EXPECT_EQ(builtinId(&b), static_cast<Builtin>(i)) << b.name;
-    const bool spelled_by_emitter =
-        std::string(b.name).find("<i>") != std::string::npos || std::string(b.name) == "hit";
+    const Builtin id = static_cast<Builtin>(i);
+    EXPECT_EQ(findBuiltin(builtinSpelling(id, isSizedFamily(id) ? int8 : 3)), &b) << b.name;
+    EXPECT_EQ(builtinId(&b), id) << b.name;
+    const bool spelled_by_emitter = std::string(b.name).find("<i>") != std::string::npos ||
+                                    isSizedFamily(id) || std::string(b.name) == "hit";
     EXPECT_EQ(b.glsl == nullptr, spelled_by_emitter) << b.name;
   }
   EXPECT_EQ(builtinId(findBuiltin("payload.word3")), kBiPayloadWord);

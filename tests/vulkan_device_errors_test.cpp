@@ -196,7 +196,9 @@ TEST(DeviceErrors, ASizedScalarWithoutItsFeatureIsNotSupported) {
       {"control/live-state-sized/float64", &DeviceInfo::shader_float64, "shaderFloat64"},
       {"control/live-state-sized-vectors/uint8", &DeviceInfo::shader_int8, "shaderInt8"},
       {"control/live-state-sized-vectors/float16", &DeviceInfo::shader_float16, "shaderFloat16"},
-      {"control/live-state-sized-vectors/int64", &DeviceInfo::shader_int64, "shaderInt64"}};
+      {"control/live-state-sized-vectors/int64", &DeviceInfo::shader_int64, "shaderInt64"},
+      {"interface/sized-data/int16", &DeviceInfo::shader_int16, "shaderInt16"},
+      {"interface/sized-hit-attributes/f64vec3", &DeviceInfo::shader_float64, "shaderFloat64"}};
   for (const auto& [name, feature, feature_name] : rows) {
     SCOPED_TRACE(name);
     const Case c = suiteCase(name);
@@ -209,6 +211,29 @@ TEST(DeviceErrors, ASizedScalarWithoutItsFeatureIsNotSupported) {
     ASSERT_FALSE(lacking);
     EXPECT_EQ(lacking.error().kind, ErrorKind::NotSupported);
     EXPECT_NE(lacking.error().message.find(feature_name), std::string::npos)
+        << lacking.error().message;
+  }
+}
+
+// A sized member a payload, callable data or hit attribute type declares
+// needs its feature though no program reads it: every stage declares the
+// type (the plan notes it as a sized local's).
+TEST(DeviceErrors, ADeclaredSizedMemberWithoutItsFeatureIsNotSupported) {
+  VulkanContext ctx = ampleContext();
+  ctx.info.shader_float16 = false;
+  for (int where = 0; where < 3; ++where) {
+    SCOPED_TRACE(where);
+    Case c = suiteCase("interface/indexed-words");
+    ASSERT_FALSE(c.name.empty());
+    ASSERT_TRUE(checkCaseSupport(ctx, c, derivePlan(c)).ok());
+    const SizedMembers f16{ValueType::Float16Vec3};
+    if (where == 0) c.pipeline.payload_sized.back() = f16;
+    if (where == 1) c.pipeline.call_data_sized.back() = f16;
+    if (where == 2) c.pipeline.attribute_sized = f16;
+    const Result<void> lacking = checkCaseSupport(ctx, c, derivePlan(c));
+    ASSERT_FALSE(lacking);
+    EXPECT_EQ(lacking.error().kind, ErrorKind::NotSupported);
+    EXPECT_NE(lacking.error().message.find("shaderFloat16"), std::string::npos)
         << lacking.error().message;
   }
 }

@@ -331,6 +331,9 @@ struct HitGroup {
 // (a pipeline linked from libraries declares the case's largest:
 // vulkan/pipeline.h interfacePayloadBytes).
 constexpr uint32_t kMaxPayloadLocations = 4;
+// The hit attribute's bytes every device allows (maxRayHitAttributeSize's
+// minimum): pipeline.hit_attribute's vec2, words and sized members.
+constexpr uint32_t kMaxAttributeBytes = 32;
 constexpr uint32_t kMaxPayloadWords = kPayloadWordNames;
 constexpr uint32_t kPayloadBaseBytes = 24;   // RsPayload (shaders/payload.glsl)
 constexpr uint32_t kCallDataBaseBytes = 48;  // RsCallData
@@ -428,9 +431,31 @@ struct Pipeline {
   uint32_t payloadWords(size_t location) const {
     return location < payload_words.size() ? payload_words[location] : 0;
   }
-  // Bytes of a location's payload type: RsPayload (vec4, uint, uint) + 4 per word.
+  // The sized members of each location's payload type (pipeline.payloads[].sized).
+  std::vector<SizedMembers> payload_sized{{}};
+  const SizedMembers& payloadSized(size_t location) const {
+    static const SizedMembers kNone;
+    return location < payload_sized.size() ? payload_sized[location] : kNone;
+  }
+  // Every location's sized members: those of raygen's payload and a stage's
+  // child, which hold any trace's result.
+  SizedMembers allPayloadSized() const {
+    SizedMembers all;
+    for (const SizedMembers& m : payload_sized) all = sizedMembersUnion(all, m);
+    return all;
+  }
+  // Bytes of a data type: its fixed members and words, then its sized
+  // members: an upper bound under any alignment rule (each member at most
+  // 32 bytes, aligned to at most 32), what a library's interface declares.
+  static uint32_t dataBytes(uint32_t base, uint32_t words, const SizedMembers& sized) {
+    const uint32_t fixed = base + 4 * words;
+    if (sized.empty()) return fixed;
+    return (fixed + 31) / 32 * 32 + 32 * static_cast<uint32_t>(sized.size());
+  }
+  // Bytes of a location's payload type: RsPayload (vec4, uint, uint) + 4 per
+  // word, then its sized members.
   uint32_t payloadBytes(size_t location) const {
-    return kPayloadBaseBytes + 4 * payloadWords(location);
+    return dataBytes(kPayloadBaseBytes, payloadWords(location), payloadSized(location));
   }
   uint32_t maxPayloadWords() const {
     uint32_t n = 0;
@@ -445,8 +470,24 @@ struct Pipeline {
   uint32_t callDataWords(size_t location) const {
     return location < call_data_words.size() ? call_data_words[location] : 0;
   }
-  // Bytes of callable data with that many words: RsCallData (48 bytes) + 4 per word.
-  static uint32_t callDataBytes(uint32_t words) { return kCallDataBaseBytes + 4 * words; }
+  // The sized members of each location's callable data type
+  // (pipeline.callable_data[].sized).
+  std::vector<SizedMembers> call_data_sized{{}};
+  const SizedMembers& callDataSized(size_t location) const {
+    static const SizedMembers kNone;
+    return location < call_data_sized.size() ? call_data_sized[location] : kNone;
+  }
+  // Every location's sized members: those of a stage's callee.
+  SizedMembers allCallDataSized() const {
+    SizedMembers all;
+    for (const SizedMembers& m : call_data_sized) all = sizedMembersUnion(all, m);
+    return all;
+  }
+  // Bytes of callable data with that many words and sized members:
+  // RsCallData (48 bytes) + 4 per word, then the members.
+  static uint32_t callDataBytes(uint32_t words, const SizedMembers& sized = {}) {
+    return dataBytes(kCallDataBaseBytes, words, sized);
+  }
   uint32_t maxCallDataWords() const {
     uint32_t n = 0;
     for (uint32_t w : call_data_words) n = std::max(n, w);
@@ -473,6 +514,11 @@ struct Pipeline {
   // Extra uint words of the hit attribute after its vec2
   // (pipeline.hit_attribute.words, 0..kMaxAttributeWords).
   uint32_t attribute_words = 0;
+  // Its sized members after the words (pipeline.hit_attribute.sized); the
+  // whole attribute, as Vulkan counts it (hitAttributeBytes), within
+  // kMaxAttributeBytes.
+  SizedMembers attribute_sized;
+  uint32_t attributeBytes() const { return hitAttributeBytes(attribute_words, attribute_sized); }
   // Specialization constants (pipeline.constants), and the values some
   // shaders take (pipeline.specialize, by GeneratedShader name: "raygen",
   // "miss0", "hit1.any_hit", "callable2", ...), by constant index.

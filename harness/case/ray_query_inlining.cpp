@@ -119,6 +119,8 @@ std::string commonObstacle(const Case& c, bool own) {
   // The SBT tables the forms read are bound in set 0 (glsl/bindings.h).
   if (p.empty_layout) return "its pipeline layout is empty (pipeline.layout)";
   if (p.payload_words.size() > 1) return "it declares several payload types";
+  if (!p.allPayloadSized().empty() || !p.allCallDataSized().empty() || !p.attribute_sized.empty())
+    return "it declares sized payload, callable data or hit attribute members";
   // The inlined programs read the host's constants; callables stay stages.
   for (const auto& [shader, values] : p.specialize)
     if (shader.rfind("miss", 0) == 0 || shader.rfind("hit", 0) == 0)

@@ -418,6 +418,19 @@ std::vector<FaultImpl> codeAndLaunchMutations() {
        "reportIntersectionEXT short by its last member, which reads zero (a struct spilled "
        "and restored one member short)",
        nullptr, structMemberLost},
+      {"sized-payload-halved-across-trace", K::CaseMutation,
+       "a payload's sized members (pipeline.payloads[].sized: int8 .. f64vec4) come back "
+       "from traceRayEXT through slots half their width (narrow and wide interface members "
+       "laid out or spilled wrongly): the lower half of each one's bits zero",
+       nullptr, sizedPayloadHalved},
+      {"sized-call-data-halved-across-call", K::CaseMutation,
+       "callable data's sized members (pipeline.callable_data[].sized) come back from "
+       "executeCallableEXT with the lower half of each one's bits zero",
+       nullptr, sizedCallDataHalved},
+      {"sized-attribute-halved-to-candidate", K::CaseMutation,
+       "the sized members of the hit attribute (pipeline.hit_attribute.sized) reach any-hit "
+       "and closest-hit from reportIntersectionEXT with the lower half of each one's bits zero",
+       nullptr, sizedAttributeHalved},
       {"loop-trip-off-by-one", K::CaseMutation, "every repeat runs one trip more than its count",
        nullptr, loopTripOffByOne},
       {"bitwise-xor-as-or", K::CaseMutation, "bit_xor (^) is computed as bit_or (|)", nullptr,

@@ -110,10 +110,13 @@ std::vector<RuleFaults> pipelineRules() {
       {"R-SBT-RECORD", {"shader-record-data-zeroed", "record-layout-swapped"}, {}},
       {"R-STAGE-INTERFACE", {"stage-interface-accepted"}, {}},
       {"R-RECURSION", {"nested-trace-dropped"}, {}},
-      {"R-CALLABLE", {"callable-data-not-returned", "call-data-words-lost"}, {}},
+      {"R-CALLABLE",
+       {"callable-data-not-returned", "call-data-words-lost", "sized-call-data-halved-across-call"},
+       {}},
       {"R-PAYLOAD",
        {"payload-writes-lost", "payload-start-lost", "payload-words-lost", "hit-attributes-lost",
-        "word-index-off-by-one"},
+        "word-index-off-by-one", "sized-payload-halved-across-trace",
+        "sized-attribute-halved-to-candidate"},
        {}},
       {"R-BUILTIN",
        {"builtin-wrong", "swap-primitive-id", "shift-t", "empty-geometry-renumbered",
@@ -153,9 +156,9 @@ std::vector<RuleFaults> pipelineRules() {
   };
 }
 
-// A ray query loop that decides candidates, commits or reads built-ins
-// otherwise than the pipeline's stages would (pipeline.traces: ray_query).
-// The ray_query statement (cases/ray-query/).
+// The rules of ray queries: a ray query loop that decides candidates,
+// commits or reads built-ins otherwise than the pipeline's stages would
+// (pipeline.traces: ray_query), and the ray_query statement (cases/ray-query/).
 std::vector<RuleFaults> rayQueryRules() {
   return {
       {"R-RQ-INIT",

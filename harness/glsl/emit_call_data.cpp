@@ -3,6 +3,7 @@
 #include <set>
 
 #include "glsl/emit_expr.h"
+#include "glsl/emit_payloads.h"
 #include "program/payload_words.h"
 
 namespace rayspec {
@@ -26,38 +27,59 @@ uint32_t calleeLocation(const StageContext& ctx, uint32_t location) {
   return location + (ctx.stage == Stage::Callable ? 1 : 0);
 }
 
-// `to` = `from` member by member; words beyond `from_words` are zero.
-void copyData(const std::string& to, const std::string& from, uint32_t from_words,
-              uint32_t to_words, GlslWriter& out) {
-  for (const Member& m : kMembers) out.line(to + "." + m.name + " = " + from + "." + m.name + ";");
-  for (uint32_t i = 0; i < to_words; ++i) {
-    const std::string w = "words[" + std::to_string(i) + "]";
-    out.line(to + "." + w + " = " + (i < from_words ? from + "." + w : std::string("0u")) + ";");
+// The call's data at `location` into `callee`, member by member; words
+// beyond the location's and sized members it lacks are zero.
+void copyToCallee(const Pipeline& p, uint32_t location, GlslWriter& out) {
+  const std::string from = calleeVariable(location);
+  if (callDataTypeOf(p, location) == resultCallDataType(p)) {
+    out.line("callee = " + from + ";");
+    return;
   }
+  for (const Member& m : kMembers)
+    out.line(std::string("callee.") + m.name + " = " + from + "." + m.name + ";");
+  const uint32_t from_words = p.callDataWords(location);
+  for (uint32_t i = 0; i < p.maxCallDataWords(); ++i) {
+    const std::string w = "words[" + std::to_string(i) + "]";
+    out.line("callee." + w + " = " + (i < from_words ? from + "." + w : std::string("0u")) + ";");
+  }
+  copySizedMembers("callee", p.allCallDataSized(), from, p.callDataSized(location), out);
 }
 
 }  // namespace
 
-std::string callDataTypeName(uint32_t words) {
-  return words == 0 ? "RsCallData" : "RsCallDataW" + std::to_string(words);
+std::string callDataTypeName(uint32_t words, const SizedMembers& sized) {
+  return dataTypeName("RsCallData", words, sized);
+}
+
+std::string callDataTypeOf(const Pipeline& p, uint32_t location) {
+  return callDataTypeName(p.callDataWords(location), p.callDataSized(location));
+}
+
+std::string resultCallDataType(const Pipeline& p) {
+  return callDataTypeName(p.maxCallDataWords(), p.allCallDataSized());
 }
 
 void emitCallDataStructs(const StageContext& ctx, GlslWriter& out) {
-  std::set<uint32_t> counts(ctx.c.pipeline.call_data_words.begin(),
-                            ctx.c.pipeline.call_data_words.end());
-  counts.erase(0);
-  if (counts.empty()) return;
+  const Pipeline& p = ctx.c.pipeline;
+  std::set<std::pair<uint32_t, SizedMembers>> types;
+  for (uint32_t l = 0; l < p.call_data_words.size(); ++l)
+    types.insert({p.callDataWords(l), p.callDataSized(l)});
+  types.insert({p.maxCallDataWords(), p.allCallDataSized()});  // the result's
+  types.erase({0, {}});
+  if (types.empty()) return;
   out.line("");
   out.line(
-      "// ---- callable data types of pipeline.callable_data: RsCallData and N more words ----");
-  for (uint32_t n : counts) {
-    out.open("struct " + callDataTypeName(n) + " {");
+      "// ---- callable data types of pipeline.callable_data: RsCallData, N more words, sized "
+      "members ----");
+  for (const auto& [n, sized] : types) {
+    out.open("struct " + callDataTypeName(n, sized) + " {");
     out.line("vec4 color;");
     out.line("vec3 position;");
     out.line("uint value;");
     out.line("vec3 normal;");
     out.line("uint pad;");
-    out.line("uint words[" + std::to_string(n) + "];");
+    if (n) out.line("uint words[" + std::to_string(n) + "];");
+    emitSizedMembers(sized, out);
     out.close("};");
   }
 }
@@ -65,18 +87,17 @@ void emitCallDataStructs(const StageContext& ctx, GlslWriter& out) {
 void emitCallDataVariables(const StageContext& ctx, GlslWriter& out) {
   const Pipeline& p = ctx.c.pipeline;
   if (ctx.stage == Stage::Callable)
-    out.line("layout(location = 0) callableDataInEXT " +
-             callDataTypeName(p.callDataWords(ctx.call_data_location)) + " call;");
+    out.line("layout(location = 0) callableDataInEXT " + callDataTypeOf(p, ctx.call_data_location) +
+             " call;");
   if (!ctx.uses.call) {
     // callee.* read in a stage that never calls: all zero, as the model has it.
-    if (ctx.uses.reads_callee)
-      out.line(callDataTypeName(p.maxCallDataWords()) + " callee;  // no call: all zero");
+    if (ctx.uses.reads_callee) out.line(resultCallDataType(p) + " callee;  // no call: all zero");
     return;
   }
   for (uint32_t l : ctx.uses.call_locations)
     out.line("layout(location = " + std::to_string(calleeLocation(ctx, l)) + ") callableDataEXT " +
-             callDataTypeName(p.callDataWords(l)) + " " + calleeVariable(l) + ";");
-  out.line(callDataTypeName(p.maxCallDataWords()) + " callee;  // the last call's data");
+             callDataTypeOf(p, l) + " " + calleeVariable(l) + ";");
+  out.line(resultCallDataType(p) + " callee;  // the last call's data");
 }
 
 void emitCallDataStart(const StageContext& ctx, GlslWriter& out) {
@@ -85,6 +106,7 @@ void emitCallDataStart(const StageContext& ctx, GlslWriter& out) {
   out.line("callee.pad = 0u;");
   const uint32_t n = ctx.c.pipeline.maxCallDataWords();
   if (n) out.line("for (int i = 0; i < " + std::to_string(n) + "; ++i) callee.words[i] = 0u;");
+  copySizedMembers("callee", ctx.c.pipeline.allCallDataSized(), "", {}, out);
 }
 
 void emitCall(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
@@ -107,9 +129,12 @@ void emitCall(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
   for (uint32_t i = 0; i < words; ++i)
     out.line(d + ".words[" + std::to_string(i) + "] = " + given("word" + std::to_string(i), "0u") +
              ";");
+  for (ValueType t : p.callDataSized(location))
+    out.line(d + "." + sizedMemberGlsl(t) + " = " + given(valueTypeSpelling(t), sizedZero(t)) +
+             ";");
   out.line("uint rs_index = " + emitExpr(s.call_index, ctx) + ";");
   out.line("executeCallableEXT(rs_index, " + std::to_string(calleeLocation(ctx, location)) + ");");
-  copyData("callee", d, words, p.maxCallDataWords(), out);
+  copyToCallee(p, location, out);
   out.close();
 }
 

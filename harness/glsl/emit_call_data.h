@@ -11,12 +11,19 @@
 
 #include "glsl/glsl_writer.h"
 #include "glsl/stage_context.h"
+#include "program/payload_words.h"
 
 namespace rayspec {
 
-// RsCallData (no words) or RsCallDataW<N>.
-std::string callDataTypeName(uint32_t words);
-// struct RsCallDataW<N> for each word count N > 0 of the case.
+// RsCallData (no words, no sized members) or RsCallDataW<N>[_<type>..]
+// (glsl/emit_payloads.h dataTypeName).
+std::string callDataTypeName(uint32_t words, const SizedMembers& sized = {});
+// Location l's callable data type, and that of a call's result (the
+// largest words, every location's sized members).
+std::string callDataTypeOf(const Pipeline& p, uint32_t location);
+std::string resultCallDataType(const Pipeline& p);
+// struct RsCallDataW<N>[_<type>..] for each callable data type of the case
+// but the plain one, and the result type.
 void emitCallDataStructs(const StageContext& ctx, GlslWriter& out);
 void emitCallDataVariables(const StageContext& ctx, GlslWriter& out);
 // main()'s first lines: the last-call result starts zero.

@@ -64,6 +64,15 @@ std::string wordOf(const Expr& e) {
   return "rs_attr.words" + i;  // attribute.word<i>
 }
 
+// A sized family's member: payload.int8 -> payload.rs_int8,
+// attribute.int8 -> rs_attr.rs_int8.
+std::string sizedMemberOf(const Expr& e) {
+  static const char* const kData[] = {"payload", "child", "call", "callee", "rs_attr"};
+  const auto data = sizedDataOf(static_cast<Builtin>(e.builtin));
+  return std::string(kData[static_cast<size_t>(*data)]) + "." +
+         sizedMemberGlsl(static_cast<ValueType>(e.word));
+}
+
 // The GLSL a built-in is read as (program/builtin_table.h), the word<i>
 // families by their index and hit by the stage; inlined in raygen, through
 // the ray query (its candidate in any-hit and intersection, its committed
@@ -71,6 +80,7 @@ std::string wordOf(const Expr& e) {
 std::string builtin(const Expr& e, const StageContext& ctx) {
   const Stage stage = ctx.stage;
   if (isWordFamily(e.builtin)) return wordOf(e);
+  if (isSizedFamily(e.builtin)) return sizedMemberOf(e);
   if (e.builtin == kBiHit) {
     if (stage == Stage::ClosestHit) return "1u";
     if (stage == Stage::Miss) return "0u";
@@ -150,7 +160,7 @@ std::string emitExpr(const Expr& e, const StageContext& ctx) {
     case Expr::Kind::Literal:
       return literal(e);
     case Expr::Kind::Builtin:
-      if (e.builtin == kBiBarycentrics && ctx.attribute_words) return "rs_attr.bary";
+      if (e.builtin == kBiBarycentrics && ctx.attributeStruct()) return "rs_attr.bary";
       return builtin(e, ctx);
     case Expr::Kind::Op:
       return op(e, ctx);

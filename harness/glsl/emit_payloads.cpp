@@ -16,23 +16,59 @@ std::string resultName(const StageContext& ctx) {
 
 }  // namespace
 
-std::string payloadTypeName(uint32_t words) {
-  return words == 0 ? "RsPayload" : "RsPayloadW" + std::to_string(words);
+std::string dataTypeName(const std::string& base, uint32_t words, const SizedMembers& sized) {
+  if (words == 0 && sized.empty()) return base;
+  std::string name = base + "W" + std::to_string(words);
+  for (ValueType t : sized) name += std::string("_") + valueTypeSpelling(t);
+  return name;
+}
+
+std::string payloadTypeName(uint32_t words, const SizedMembers& sized) {
+  return dataTypeName("RsPayload", words, sized);
+}
+
+std::string payloadTypeOf(const Pipeline& p, uint32_t location) {
+  return payloadTypeName(p.payloadWords(location), p.payloadSized(location));
+}
+
+std::string resultPayloadType(const Pipeline& p) {
+  return payloadTypeName(p.maxPayloadWords(), p.allPayloadSized());
+}
+
+std::string sizedZero(ValueType t) {
+  return std::string(valueTypeGlsl(t)) + "(0)";
+}
+
+void emitSizedMembers(const SizedMembers& sized, GlslWriter& out) {
+  for (ValueType t : sized)
+    out.line(std::string(valueTypeGlsl(t)) + " " + sizedMemberGlsl(t) + ";");
+}
+
+void copySizedMembers(const std::string& to, const SizedMembers& to_members,
+                      const std::string& from, const SizedMembers& from_members, GlslWriter& out) {
+  for (ValueType t : to_members)
+    out.line(to + "." + sizedMemberGlsl(t) + " = " +
+             (holdsSized(from_members, t) ? from + "." + sizedMemberGlsl(t) : sizedZero(t)) + ";");
 }
 
 void emitPayloadStructs(const StageContext& ctx, GlslWriter& out) {
-  std::set<uint32_t> counts(ctx.c.pipeline.payload_words.begin(),
-                            ctx.c.pipeline.payload_words.end());
-  counts.erase(0);
-  if (counts.empty()) return;
+  const Pipeline& p = ctx.c.pipeline;
+  std::set<std::pair<uint32_t, SizedMembers>> types;
+  for (uint32_t l = 0; l < p.payload_words.size(); ++l)
+    types.insert({p.payloadWords(l), p.payloadSized(l)});
+  types.insert({p.maxPayloadWords(), p.allPayloadSized()});  // the result's
+  types.erase({0, {}});
+  if (types.empty()) return;
   out.line("");
-  out.line("// ---- payload types of pipeline.payloads: RsPayload and N more words ----");
-  for (uint32_t n : counts) {
-    out.open("struct " + payloadTypeName(n) + " {");
+  out.line(
+      "// ---- payload types of pipeline.payloads: RsPayload, N more words, sized members ----");
+  for (const auto& [n, sized] : types) {
+    out.open("struct " + payloadTypeName(n, sized) + " {");
     out.line("vec4 color;");
     out.line("uint value;");
     out.line("uint depth;");
-    out.line("uint words[" + std::to_string(n) + "];");
+    if (n) out.line("uint words[" + std::to_string(n) + "];");
+    emitSizedMembers(sized, out);
     out.close("};");
   }
 }
@@ -48,12 +84,12 @@ uint32_t outgoingLocation(const StageContext& ctx, uint32_t location) {
 void emitPayloadVariables(const StageContext& ctx, GlslWriter& out) {
   if (receivesPayload(ctx.stage) || (ctx.rejected && ctx.uses.incoming_payload))
     out.line("layout(location = 0) rayPayloadInEXT " +
-             payloadTypeName(ctx.c.pipeline.payloadWords(ctx.payload_location)) + " payload;");
+             payloadTypeOf(ctx.c.pipeline, ctx.payload_location) + " payload;");
   if (!ctx.uses.trace) {
     // Raygen reads `payload`, closest-hit and miss `child`, even when they
     // never trace (all zero, as the model has it).
     if (ctx.stage == Stage::Raygen || ctx.uses.reads_child)
-      out.line(payloadTypeName(ctx.c.pipeline.maxPayloadWords()) + " " + resultName(ctx) + ";");
+      out.line(resultPayloadType(ctx.c.pipeline) + " " + resultName(ctx) + ";");
     return;
   }
   // A compute shader's traces are ray query loops: their payloads are plain.
@@ -61,8 +97,8 @@ void emitPayloadVariables(const StageContext& ctx, GlslWriter& out) {
     out.line((ctx.compute ? std::string()
                           : "layout(location = " + std::to_string(outgoingLocation(ctx, l)) +
                                 ") rayPayloadEXT ") +
-             payloadTypeName(ctx.c.pipeline.payloadWords(l)) + " " + outgoingPayload(l) + ";");
-  out.line(payloadTypeName(ctx.c.pipeline.maxPayloadWords()) + " " + resultName(ctx) +
+             payloadTypeOf(ctx.c.pipeline, l) + " " + outgoingPayload(l) + ";");
+  out.line(resultPayloadType(ctx.c.pipeline) + " " + resultName(ctx) +
            ";  // the last trace's payload");
 }
 
@@ -75,13 +111,14 @@ void emitPayloadStart(const StageContext& ctx, GlslWriter& out) {
   out.line(r + ".depth = " + (raygen ? std::string("1u") : "payload.depth + 1u") + ";");
   const uint32_t n = ctx.c.pipeline.maxPayloadWords();
   if (n) out.line("for (int i = 0; i < " + std::to_string(n) + "; ++i) " + r + ".words[i] = 0u;");
+  copySizedMembers(r, ctx.c.pipeline.allPayloadSized(), "", {}, out);
 }
 
 void emitPayloadResult(const StageContext& ctx, uint32_t location, GlslWriter& out) {
   const std::string r = resultName(ctx), p = outgoingPayload(location);
-  const uint32_t n = ctx.c.pipeline.payloadWords(location),
-                 largest = ctx.c.pipeline.maxPayloadWords();
-  if (n == largest) {
+  const Pipeline& pipe = ctx.c.pipeline;
+  const uint32_t n = pipe.payloadWords(location), largest = pipe.maxPayloadWords();
+  if (payloadTypeOf(pipe, location) == resultPayloadType(pipe)) {
     out.line(r + " = " + p + ";");
     return;
   }
@@ -91,6 +128,7 @@ void emitPayloadResult(const StageContext& ctx, uint32_t location, GlslWriter& o
   for (uint32_t i = 0; i < largest; ++i)
     out.line(r + ".words[" + std::to_string(i) +
              "] = " + (i < n ? p + ".words[" + std::to_string(i) + "]" : std::string("0u")) + ";");
+  copySizedMembers(r, pipe.allPayloadSized(), p, pipe.payloadSized(location), out);
 }
 
 }  // namespace rayspec

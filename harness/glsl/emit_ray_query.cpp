@@ -27,7 +27,7 @@ std::string str(uint32_t v) {
 
 // The one payload type (case/ray_query_inlining.h refuses several).
 std::string payloadType(const Case& c) {
-  return payloadTypeName(c.pipeline.payloadWords(0));
+  return payloadTypeOf(c.pipeline, 0);
 }
 
 uint32_t attributeWords(const Pipeline& p, const HitGroup& h) {
@@ -83,11 +83,11 @@ void inlinedBody(const StageContext& ctx, const Program& program, GlslWriter& ou
   emitStagePrologue(ctx, {candidate(kBiInstance), candidate(kBiGeometry), candidate(kBiPrimitive)},
                     out);
   if (ctx.uses.reads_child || ctx.uses.trace) {
-    out.line(payloadTypeName(ctx.c.pipeline.maxPayloadWords()) + " child;");
+    out.line(resultPayloadType(ctx.c.pipeline) + " child;");
     emitPayloadStart(ctx, out);
   }
   if (ctx.uses.call || ctx.uses.reads_callee) {
-    out.line(callDataTypeName(ctx.c.pipeline.maxCallDataWords()) + " callee;");
+    out.line(resultCallDataType(ctx.c.pipeline) + " callee;");
     emitCallDataStart(ctx, out);
   }
   emitProgram(program, ctx, out);

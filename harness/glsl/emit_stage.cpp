@@ -133,9 +133,12 @@ void interfaceVariables(const StageContext& ctx, GlslWriter& out) {
   emitCallDataVariables(ctx, out);
   if (u.hit_attribute &&
       (s == Stage::ClosestHit || s == Stage::AnyHit || s == Stage::Intersection || ctx.rejected)) {
-    if (ctx.attribute_words) {  // pipeline.hit_attribute.words: 8 + 4 x words bytes
-      out.line("struct RsAttr { vec2 bary; uint words[" + std::to_string(ctx.attribute_words) +
-               "]; };");
+    if (ctx.attributeStruct()) {  // pipeline.hit_attribute: 8 + 4 x words bytes, sized members
+      out.open("struct RsAttr {");
+      out.line("vec2 bary;");
+      if (ctx.attribute_words) out.line("uint words[" + std::to_string(ctx.attribute_words) + "];");
+      emitSizedMembers(ctx.attribute_sized, out);
+      out.close("};");
       out.line("hitAttributeEXT RsAttr rs_attr;");
     } else {
       out.line("hitAttributeEXT vec2 rs_attr;");
@@ -267,14 +270,15 @@ namespace {
 // program uses, the prologue's fields and (raygen hosting --through
 // ray-query) what its inlined stages use.
 StageContext stageContext(const Case& c, const Plan& plan, Stage stage, const std::string& name,
-                          const Program& program, uint32_t incoming_location,
-                          uint32_t attribute_words) {
+                          const Program& program, uint32_t incoming_location, bool procedural) {
   StageContext ctx{c, plan, stage, name, findStageUses(program, stage, plan)};
   (stage == Stage::Callable ? ctx.call_data_location : ctx.payload_location) = incoming_location;
-  ctx.attribute_words = attribute_words;
   for (const ExpectedRejection& e : c.expected_rejections)
     if (e.shader == name) ctx.rejected = true;
-  if (ctx.rejected && stage == Stage::Miss) ctx.attribute_words = c.pipeline.attribute_words;
+  if (procedural || (ctx.rejected && stage == Stage::Miss)) {
+    ctx.attribute_words = c.pipeline.attribute_words;
+    ctx.attribute_sized = c.pipeline.attribute_sized;
+  }
   addPrologueFields(plan, stage, ctx.uses);
   ctx.compute = stage == Stage::Raygen && c.pipeline.ray_query && c.pipeline.from_compute;
   return ctx;
@@ -349,10 +353,8 @@ void mainFunction(const StageContext& ctx, const Program& program, GlslWriter& o
 }  // namespace
 
 GeneratedShader emitStage(const Case& c, const Plan& plan, Stage stage, const std::string& name,
-                          const Program& program, uint32_t incoming_location,
-                          uint32_t attribute_words) {
-  StageContext ctx =
-      stageContext(c, plan, stage, name, program, incoming_location, attribute_words);
+                          const Program& program, uint32_t incoming_location, bool procedural) {
+  StageContext ctx = stageContext(c, plan, stage, name, program, incoming_location, procedural);
   const bool ray_query = hostsInlinedStages(c, stage, ctx.uses);
   if (ray_query) addInlinedUses(ctx);
   GlslWriter out;

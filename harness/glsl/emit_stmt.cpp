@@ -6,6 +6,7 @@
 #include "glsl/emit_call_data.h"
 #include "glsl/emit_control.h"
 #include "glsl/emit_expr.h"
+#include "glsl/emit_payloads.h"
 #include "glsl/emit_query.h"
 #include "glsl/emit_trace.h"
 #include "glsl/inlined_functions.h"
@@ -60,8 +61,11 @@ void record(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
 void assignFields(const Stmt& s, const std::string& target, const StageContext& ctx,
                   GlslWriter& out) {
   for (const auto& [field, value] : s.assigns) {
-    const auto word = payloadWordField(field);  // word3 -> words[3]
-    const std::string member = word ? "words[" + std::to_string(*word) + "]" : field;
+    const auto word = payloadWordField(field);   // word3 -> words[3]
+    const auto sized = sizedMemberField(field);  // int8 -> rs_int8
+    const std::string member = word    ? "words[" + std::to_string(*word) + "]"
+                               : sized ? sizedMemberGlsl(*sized)
+                                       : field;
     out.line(target + "." + member + " = " + emitExpr(value, ctx) + ";");
   }
 }
@@ -87,7 +91,7 @@ void reportInlined(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
 }
 
 void report(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
-  const std::string bary = ctx.attribute_words ? "rs_attr.bary" : "rs_attr";
+  const std::string bary = ctx.attributeStruct() ? "rs_attr.bary" : "rs_attr";
   out.line(bary + " = " +
            (s.attribute.empty() ? std::string("vec2(0.0)") : emitExpr(s.attribute[0], ctx)) + ";");
   // Words the report does not give are zero.
@@ -96,6 +100,12 @@ void report(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
     for (const auto& [name, e] : s.assigns)
       if (payloadWordField(name) == i) value = emitExpr(e, ctx);
     out.line("rs_attr.words[" + std::to_string(i) + "] = " + value + ";");
+  }
+  for (ValueType t : ctx.attribute_sized) {  // and sized members
+    std::string value = sizedZero(t);
+    for (const auto& [name, e] : s.assigns)
+      if (sizedMemberField(name) == t) value = emitExpr(e, ctx);
+    out.line("rs_attr." + sizedMemberGlsl(t) + " = " + value + ";");
   }
   if (ctx.inlined) {
     reportInlined(s, ctx, out);

@@ -19,6 +19,8 @@ struct Arg {
   std::string fallback;  // GLSL; empty = required
 };
 
+void startSized(const Stmt& s, const StageContext& ctx, GlslWriter& out);
+
 // The payload a trace starts with, in the variable of its location: every
 // value read before any is written; depth 1 from raygen, else this stage's + 1.
 void startPayload(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
@@ -36,6 +38,7 @@ void startPayload(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
   out.line("uint rs_start_value = " + value + ";");
   for (uint32_t i = 0; i < words; ++i)
     out.line("uint rs_start_word" + std::to_string(i) + " = " + word[i] + ";");
+  startSized(s, ctx, out);
   const std::string p = outgoingPayload(location);
   out.line(p + ".color = rs_start_color;");
   out.line(p + ".value = rs_start_value;");
@@ -43,6 +46,20 @@ void startPayload(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
            (ctx.stage == Stage::Raygen ? std::string("1u") : "payload.depth + 1u") + ";");
   for (uint32_t i = 0; i < words; ++i)
     out.line(p + ".words[" + std::to_string(i) + "] = rs_start_word" + std::to_string(i) + ";");
+  for (ValueType t : ctx.c.pipeline.payloadSized(location))
+    out.line(p + "." + sizedMemberGlsl(t) + " = rs_start_" + valueTypeSpelling(t) + ";");
+}
+
+// A trace's starting sized members (zero where not given), into locals
+// rs_start_<type> before the payload is written.
+void startSized(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
+  for (ValueType t : ctx.c.pipeline.payloadSized(s.trace.location)) {
+    std::string value = sizedZero(t);
+    for (const auto& [field, expr] : s.assigns)
+      if (sizedMemberField(field) == t) value = emitExpr(expr, ctx);
+    out.line(std::string(valueTypeGlsl(t)) + " rs_start_" + valueTypeSpelling(t) + " = " + value +
+             ";");
+  }
 }
 
 }  // namespace
@@ -182,7 +199,7 @@ void emitTrace(const Stmt& s, const StageContext& ctx, GlslWriter& out) {
   if (tracesByRayQuery(ctx)) {  // a ray query loop (glsl/emit_ray_query.h)
     const uint32_t l = s.trace.location;
     if (ctx.inlined)  // a function's payload, not the stage's
-      out.line(payloadTypeName(ctx.c.pipeline.payloadWords(l)) + " " + outgoingPayload(l) + ";");
+      out.line(payloadTypeOf(ctx.c.pipeline, l) + " " + outgoingPayload(l) + ";");
     startPayload(s, ctx, out);
     if (emitRayQueryTrace(s, ctx, out)) emitPayloadResult(ctx, l, out);
     out.close();

@@ -25,18 +25,18 @@ GeneratedPipeline generateGlsl(const Case& c, const Plan& plan) {
   for (size_t i = 0; i < p.hit_groups.size(); ++i) {
     const HitGroup& h = p.hit_groups[i];
     GeneratedGroup group;
-    const uint32_t words = h.intersection ? p.attribute_words : 0;
+    const bool procedural = h.intersection.has_value();
     if (h.closest_hit)
       group.closest_hit =
           emitStage(c, plan, Stage::ClosestHit, Pipeline::shaderName(Stage::ClosestHit, i),
-                    *h.closest_hit, h.payload, words);
+                    *h.closest_hit, h.payload, procedural);
     if (anyHitRuns(plan, h))
       group.any_hit = emitStage(c, plan, Stage::AnyHit, Pipeline::shaderName(Stage::AnyHit, i),
-                                *h.any_hit, h.payload, words);
+                                *h.any_hit, h.payload, procedural);
     if (intersectionRuns(plan, h))
       group.intersection =
           emitStage(c, plan, Stage::Intersection, Pipeline::shaderName(Stage::Intersection, i),
-                    *h.intersection, 0, words);
+                    *h.intersection, 0, procedural);
     g.hit_groups.push_back(std::move(group));
   }
   for (size_t i = 0; i < p.callables.size(); ++i)

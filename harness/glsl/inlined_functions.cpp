@@ -19,8 +19,8 @@ std::string identifier(const std::string& shader) {
 // parameters and the locals it declares), as {type, name}.
 std::vector<std::pair<std::string, std::string>> inlinedInterface(const StageContext& ctx) {
   const Pipeline& p = ctx.c.pipeline;
-  const std::string payload = "inout " + payloadTypeName(p.payloadWords(0));
-  const std::string attribute = ctx.attribute_words ? "RsAttr" : "vec2";
+  const std::string payload = "inout " + payloadTypeOf(p, 0);
+  const std::string attribute = ctx.attributeStruct() ? "RsAttr" : "vec2";
   std::vector<std::pair<std::string, std::string>> v;
   switch (ctx.stage) {
     case Stage::Intersection:
@@ -42,9 +42,9 @@ std::vector<std::pair<std::string, std::string>> inlinedInterface(const StageCon
       break;
   }
   if (ctx.uses.trace || ctx.uses.reads_child)
-    v.push_back({"inout " + payloadTypeName(p.maxPayloadWords()), "child"});
+    v.push_back({"inout " + resultPayloadType(p), "child"});
   if (ctx.uses.call || ctx.uses.reads_callee)
-    v.push_back({"inout " + callDataTypeName(p.maxCallDataWords()), "callee"});
+    v.push_back({"inout " + resultCallDataType(p), "callee"});
   return v;
 }
 

@@ -7,6 +7,7 @@
 
 #include "case/case.h"
 #include "plan/plan.h"
+#include "program/payload_words.h"
 
 namespace rayspec {
 
@@ -51,6 +52,10 @@ struct StageContext {
   // A stage of a hit group with an intersection shader: the hit attribute's
   // words (pipeline.hit_attribute.words); 0 elsewhere (a plain vec2).
   uint32_t attribute_words = 0;
+  // ... and its sized members (pipeline.hit_attribute.sized); none elsewhere.
+  SizedMembers attribute_sized;
+  // The hit attribute is the struct RsAttr (its vec2 rs_attr.bary), not a vec2.
+  bool attributeStruct() const { return attribute_words || !attribute_sized.empty(); }
   // The case expects the compiler to reject this shader (expect_rejected):
   // it declares the interface its program uses even where its stage cannot
   // (program/stage_interface.h), so that the compiler sees the real misuse.

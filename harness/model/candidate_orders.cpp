@@ -35,17 +35,17 @@ const std::vector<bool>& comparedWords() {
 }
 
 bool sameVal(const Val& a, const Val& b) {
-  return a.u == b.u && a.b == b.b &&
+  return a.u == b.u && a.b == b.b && a.x == b.x && a.sized == b.sized &&
          std::memcmp(a.f.data(), b.f.data(), sizeof(float) * a.f.size()) == 0;
 }
 
 bool samePayload(const Payload& a, const Payload& b) {
-  return a.value == b.value && a.words == b.words &&
+  return a.value == b.value && a.words == b.words && a.sized == b.sized &&
          std::memcmp(a.color.data(), b.color.data(), sizeof(float) * a.color.size()) == 0;
 }
 
 bool sameCallData(const CallData& a, const CallData& b) {
-  return a.value == b.value && a.words == b.words &&
+  return a.value == b.value && a.words == b.words && a.sized == b.sized &&
          std::memcmp(&a.color, &b.color, sizeof a.color) == 0 &&
          std::memcmp(&a.position, &b.position, sizeof a.position) == 0 &&
          std::memcmp(&a.normal, &b.normal, sizeof a.normal) == 0;
@@ -104,7 +104,7 @@ bool sameIdentity(const Committed& a, const Committed& b) {
 bool sameOutcome(const OrderOutcome& a, const OrderOutcome& b, double t_tol) {
   if (!sameIdentity(a.best, b.best)) return false;
   if (a.best.valid && (a.best.kind != b.best.kind || a.best.words != b.best.words ||
-                       !(std::fabs(a.best.t - b.best.t) <= t_tol)))
+                       a.best.sized != b.best.sized || !(std::fabs(a.best.t - b.best.t) <= t_tol)))
     return false;
   const std::vector<bool>& compared = comparedWords();
   if (a.record.size() != b.record.size()) return false;

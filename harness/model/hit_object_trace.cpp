@@ -24,6 +24,7 @@ Payload ModelTracer::traceIntoHitObject(const TraceRay& r, uint32_t depth, const
     into.hit = viewOf(*sh_.scene, *sh_.c, r, best.instance, best.geometry, best.primitive, true);
     setHit(into.hit, static_cast<float>(best.t), best.kind, best.b1, best.b2);
     into.hit.words = best.words;
+    into.hit.sized = best.sized;
     into.sbt_index = static_cast<uint32_t>(sbt_.hitIndex(best.instance, best.geometry, r));
   } else {
     into.kind = HitObjectState::Kind::Miss;
@@ -48,6 +49,7 @@ void ModelTracer::executeHitObject(const HitObjectState& h, Payload& payload) {
   best.b1 = h.hit.b1;
   best.b2 = h.hit.b2;
   best.words = h.hit.words;
+  best.sized = h.hit.sized;
   payload.depth = h.depth;
   shade(h.ray, h.flags, h.depth, best, payload,
         best.valid ? std::optional<uint64_t>(h.sbt_index) : std::nullopt);

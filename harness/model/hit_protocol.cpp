@@ -154,6 +154,7 @@ void HitProtocol::commitReport(const CStmt& s, StageEnv& env, Traversal& tr, con
   tr.best = {true, static_cast<double>(t), hv.instance, hv.geometry, hv.primitive, kind, hv.b1,
              hv.b2};
   tr.best.words = hv.words;
+  tr.best.sized = hv.sized;
   // R-PREC: how far a device's root may lie from this one.
   if (tr.exact && reportsBoundedRoot(s, env)) tr.best.t_err = sphereRootError(s, hv, *env.ray);
   if (!tr.inlined.commit_keeps_interval) tr.tmax_cur = t;
@@ -177,6 +178,19 @@ void HitProtocol::noteLeadReport(const CStmt& s, const StageEnv& env, Traversal&
   tr.lead_reports->push_back({tr.cur_index, static_cast<double>(t), err});
 }
 
+// What a report gives the hit attribute: its words and sized members (the
+// planted fault sized_attribute_halved: each member with half its bits).
+void HitProtocol::reportedAttribute(const CStmt& s, StageEnv& env, HitView& hv) {
+  for (const CAssign& a : s.assigns) {
+    const Val v = interp_.eval(a.value, env);
+    if (a.slot == Slot::Sized)
+      hv.sized.write(static_cast<ValueType>(a.word), v);
+    else
+      hv.words[a.word % kMaxAttributeWords] = v.u;
+  }
+  if (sh_.fault_seam.sizedAttributeHalvedToCandidate()) halveMembers(hv.sized);
+}
+
 Flow HitProtocol::report(const CStmt& s, StageEnv& env) {
   Traversal* tr = env.traversal;
   if (!tr || !tr->cur) return Flow::Continue;
@@ -191,8 +205,7 @@ Flow HitProtocol::report(const CStmt& s, StageEnv& env) {
     noteMissedBox(s, *tr);
     HitView hv = *env.hit;
     setHit(hv, t, kind, attr.f[0], attr.f[1]);
-    for (const CAssign& a : s.assigns)
-      hv.words[a.word % kMaxAttributeWords] = interp_.eval(a.value, env).u;
+    reportedAttribute(s, env, hv);
     Flow ah = Flow::Continue;
     if (!tr->cur_opaque && tr->cur_group && tr->cur_group->any_hit) {
       // R-TMAX-VIEW: any-hit sees the candidate's t.

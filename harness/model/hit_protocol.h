@@ -64,6 +64,7 @@ class HitProtocol {
   // Exact tier: notes a box's leading report (Traversal::lead_reports).
   void noteLeadReport(const CStmt& s, const StageEnv& env, Traversal& tr, float t) const;
   // An accepted report committed: the hit hv at t, its kind (report's last step).
+  void reportedAttribute(const CStmt& s, StageEnv& env, HitView& hv);
   void commitReport(const CStmt& s, StageEnv& env, Traversal& tr, const HitView& hv, float t,
                     uint32_t kind);
   // R-PREC: how far a device's sphere root (a report's t) may lie from the

@@ -145,18 +145,21 @@ void LaunchState::missRecordOutOfRange(const TraceRay& r) {
 
 void LaunchState::payloadTypeDiffers(const Payload& p, uint32_t shader_location, const char* list,
                                      uint32_t index, const char* stage) {
-  const std::vector<uint32_t>& words = sh_.c->pipeline.payload_words;
+  const Pipeline& pipe = sh_.c->pipeline;
   const std::string shader = std::string(list) + "[" + std::to_string(index) + "]" + stage;
-  auto words_of = [&](uint32_t location) {
-    return location < words.size() ? words[location] : 0u;
+  if (pipe.payloadWords(p.location) == pipe.payloadWords(shader_location) &&
+      pipe.payloadSized(p.location) == pipe.payloadSized(shader_location))
+    return;
+  auto type_of = [&](uint32_t location) {
+    const size_t sized = pipe.payloadSized(location).size();
+    return std::to_string(pipe.payloadWords(location)) + " words" +
+           (sized ? ", " + std::to_string(sized) + " sized members" : std::string());
   };
-  if (words_of(p.location) == words_of(shader_location)) return;
   markUndefined(UndefinedReason::PayloadType,
                 shader + ": its incoming payload has the type of location " +
-                    std::to_string(shader_location) + " (" +
-                    std::to_string(words_of(shader_location)) +
-                    " words), the trace passes location " + std::to_string(p.location) + " (" +
-                    std::to_string(words_of(p.location)) + " words)");
+                    std::to_string(shader_location) + " (" + type_of(shader_location) +
+                    "), the trace passes location " + std::to_string(p.location) + " (" +
+                    type_of(p.location) + ")");
 }
 
 void LaunchState::callDataTypeDiffers(const CallData& d, uint32_t callable) {

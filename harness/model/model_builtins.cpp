@@ -45,6 +45,14 @@ Val ModelBuiltins::dataBuiltin(const CExpr& e, StageEnv& env) const {
       return fromUint(cd->words[e.index % kMaxCallDataWords]);
     case kBiCalleeWord:
       return fromUint(env.callee.words[e.index % kMaxCallDataWords]);
+    case kBiPayloadSized:
+      return pl->sized.read(static_cast<ValueType>(e.index));
+    case kBiChildSized:
+      return env.child.sized.read(static_cast<ValueType>(e.index));
+    case kBiCallSized:
+      return cd->sized.read(static_cast<ValueType>(e.index));
+    case kBiCalleeSized:
+      return env.callee.sized.read(static_cast<ValueType>(e.index));
     default:
       break;
   }
@@ -198,10 +206,33 @@ Val ModelBuiltins::hitBuiltin(const CExpr& e, const StageEnv& env) const {
     }
     case kBiAttributeWord:
       return fromUint(hv->words[e.index % kMaxAttributeWords]);
+    case kBiAttributeSized:
+      return hv->sized.read(static_cast<ValueType>(e.index));
     default:
       return Val{};  // builtin() sends no other
   }
 }
+
+// The rows dataBuiltin reads: the payload and callable data.
+#define RAYSPEC_DATA_BUILTIN_CASES \
+  case kBiPayloadColor:            \
+  case kBiPayloadValue:            \
+  case kBiPayloadWord:             \
+  case kBiPayloadSized:            \
+  case kBiChildColor:              \
+  case kBiChildValue:              \
+  case kBiChildWord:               \
+  case kBiChildSized:              \
+  case kBiCallPosition:            \
+  case kBiCallNormal:              \
+  case kBiCallColor:               \
+  case kBiCallValue:               \
+  case kBiCallWord:                \
+  case kBiCallSized:               \
+  case kBiCalleeColor:             \
+  case kBiCalleeValue:             \
+  case kBiCalleeWord:              \
+  case kBiCalleeSized:
 
 // Every row of program/builtin_table.h, with no default: a row the model
 // gives no meaning fails the build (-Werror=switch).
@@ -236,6 +267,7 @@ Val ModelBuiltins::read(const CExpr& e, StageEnv& env) const {
     case kBiObjectDirection:
     case kBiHitPosition:
     case kBiAttributeWord:
+    case kBiAttributeSized:
       return hitBuiltin(e, env);
     case kBiVertex0:
     case kBiVertex1:
@@ -256,20 +288,7 @@ Val ModelBuiltins::read(const CExpr& e, StageEnv& env) const {
     case kBiWorldToObject3x4_1:
     case kBiWorldToObject3x4_2:
       return transformBuiltin(env.hit ? *env.hit : kNone, e.builtin - kBiObjectToWorld0);
-    case kBiPayloadColor:
-    case kBiPayloadValue:
-    case kBiPayloadWord:
-    case kBiChildColor:
-    case kBiChildValue:
-    case kBiChildWord:
-    case kBiCallPosition:
-    case kBiCallNormal:
-    case kBiCallColor:
-    case kBiCallValue:
-    case kBiCallWord:
-    case kBiCalleeColor:
-    case kBiCalleeValue:
-    case kBiCalleeWord:
+      RAYSPEC_DATA_BUILTIN_CASES
       return dataBuiltin(e, env);
 #define RAYSPEC_BUILTIN_CASE(id, ...) case kBi##id:
       RAYSPEC_QUERY_BUILTINS(RAYSPEC_BUILTIN_CASE)
@@ -284,6 +303,7 @@ Val ModelBuiltins::read(const CExpr& e, StageEnv& env) const {
   unknown(e);
   return Val{};
 }
+#undef RAYSPEC_DATA_BUILTIN_CASES
 
 void ModelBuiltins::unknown(const CExpr& e) const {
   if (st_.error.empty())

@@ -162,6 +162,13 @@ struct Digest {
     add(p.depth);
     add(p.location);
     add(p.words);
+    add(p.sized);
+  }
+  void add(const SizedSlots& s) {
+    for (const auto& [type, lanes] : s.members) {
+      add(static_cast<uint8_t>(type));
+      add(lanes);
+    }
   }
   void add(const CallData& k) {
     add(k.color);
@@ -170,6 +177,7 @@ struct Digest {
     add(k.value);
     add(k.location);
     add(k.words);
+    add(k.sized);
   }
   void add(const Val& v) {
     add(v.f);
@@ -195,6 +203,7 @@ uint64_t ModelTracer::effectOf(const Committed& b, const Payload& payload, const
     d.add(b.b1);
     d.add(b.b2);
     d.add(b.words);
+    d.add(b.sized);
   }
   d.add(payload);
   if (st_.rec) d.addAll(st_.rec, recordWords());

@@ -74,6 +74,11 @@ class ModelFaultSeam {
   bool localsLostAcrossCalls() const { return f_.locals_lost_across_calls; }
   // Live state broken for sized scalars: they come back with half their bits.
   bool sizedLocalsHalvedAcrossCalls() const { return f_.sized_locals_halved; }
+  // Sized payload, callable data and hit attribute members come back with
+  // half their bits: from a trace, from a call, from a report.
+  bool sizedPayloadHalvedAcrossTrace() const { return f_.sized_payload_halved; }
+  bool sizedCallDataHalvedAcrossCall() const { return f_.sized_call_data_halved; }
+  bool sizedAttributeHalvedToCandidate() const { return f_.sized_attribute_halved; }
   // ... sized vectors come back with their components rotated.
   bool sizedVectorsRotatedAcrossCalls() const { return f_.sized_vectors_rotated; }
   // Zero-initialised sized arrays start as one.

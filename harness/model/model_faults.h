@@ -81,6 +81,16 @@ struct ModelFaults {
   // a float's encoding) kept (a driver that spills narrow and wide registers
   // wrongly).
   bool sized_locals_halved = false;
+  // The pipeline interface broken for the sized members
+  // (pipeline.payloads[].sized, callable_data[].sized, hit_attribute.sized):
+  // each comes back through a slot half its width (only the upper half of
+  // its bits kept), a payload's at the trace's return, callable data's at
+  // the call's return, a hit attribute's from the report to the candidate
+  // (a driver that lays out or spills narrow and wide interface members
+  // wrongly).
+  bool sized_payload_halved = false;
+  bool sized_call_data_halved = false;
+  bool sized_attribute_halved = false;
   // Live state broken for the sized vectors only: after a trace, a callable
   // call or a report, a sized vector local (i8vec2 .. f64vec4) comes back
   // with its components rotated (x takes y's, .., the last takes x's: a

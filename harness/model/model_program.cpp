@@ -178,6 +178,7 @@ struct Compiler {
     if (f == "position") return Slot::Position;
     if (f == "normal") return Slot::Normal;
     if (payloadWordField(f)) return Slot::Word;
+    if (sizedMemberField(f)) return Slot::Sized;
     return Slot::None;
   }
 
@@ -274,6 +275,7 @@ struct Compiler {
       } else {
         a.slot = slotOf(field);
         if (auto w = payloadWordField(field)) a.word = static_cast<uint8_t>(*w);
+        if (auto t = sizedMemberField(field)) a.word = static_cast<uint8_t>(*t);
       }
       r.assigns.push_back(std::move(a));
     }

@@ -30,6 +30,30 @@ struct Val {
   ValueType sized = ValueType::Bool;  // the sized type x holds (Bool: none), scalar or vector
 };
 
+// The sized members a payload, callable data or hit attribute holds
+// (program/payload_words.h SizedMembers): each member's lanes (Val::x)
+// under its type, in the order written. A member never written reads zero,
+// as the GLSL's zeroed members do.
+struct SizedSlots {
+  std::vector<std::pair<ValueType, std::array<uint64_t, 4>>> members;
+  Val read(ValueType t) const {
+    Val v;
+    v.sized = t;
+    for (const auto& [type, lanes] : members)
+      if (type == t) v.x = lanes;
+    return v;
+  }
+  void write(ValueType t, const Val& v) {
+    for (auto& [type, lanes] : members)
+      if (type == t) {
+        lanes = v.x;
+        return;
+      }
+    members.emplace_back(t, v.x);
+  }
+  bool operator==(const SizedSlots&) const = default;
+};
+
 inline Val fromVec3(const Vec3& v) {
   Val r;
   r.f = {v[0], v[1], v[2], 0};
@@ -77,13 +101,14 @@ struct CExpr {
   const Expr* src = nullptr;  // for error messages
 };
 
-enum class Slot : uint8_t { Color, Value, Position, Normal, Word, None };
+// Sized: a sized member (program/payload_words.h SizedMembers), its type in `word`.
+enum class Slot : uint8_t { Color, Value, Position, Normal, Word, Sized, None };
 enum class LightKind : uint8_t { Point, Spot, Directional };
 
 struct CAssign {
   int field = -1;  // Record: record field index (-1: unknown or automatic); Let/Set: the slot
   Slot slot = Slot::None;  // SetPayload / SetCall / Call
-  uint8_t word = 0;        // Slot::Word: which payload word
+  uint8_t word = 0;        // Slot::Word: which payload word; Slot::Sized: the member's ValueType
   CExpr value;
 };
 

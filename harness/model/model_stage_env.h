@@ -18,6 +18,7 @@ struct Payload {
   uint32_t depth = 0;
   uint32_t location = 0;  // the trace's payload location (its type: Pipeline::payload_words)
   std::array<uint32_t, kMaxPayloadWords> words{};
+  SizedSlots sized;  // its type's sized members (Pipeline::payload_sized)
 };
 
 struct CallData {
@@ -26,6 +27,7 @@ struct CallData {
   uint32_t value = 0;
   uint32_t location = 0;  // the call's data location (its type: Pipeline::call_data_words)
   std::array<uint32_t, kMaxCallDataWords> words{};
+  SizedSlots sized;  // its type's sized members (Pipeline::call_data_sized)
 };
 
 struct TraceRay {
@@ -61,6 +63,7 @@ struct HitView {
   const std::array<Vec3, 3>* vertices = nullptr;
   // The words a report gave the hit attribute (attribute.word<i>).
   std::array<uint32_t, kMaxAttributeWords> words{};
+  SizedSlots sized;  // the sized members a report gave it (attribute.int8 ..)
 };
 
 // A stage's hit object (GL_NV_shader_invocation_reorder): empty, the

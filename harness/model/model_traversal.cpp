@@ -416,6 +416,7 @@ void ModelTracer::clobberCaller(const TraceRay& r, const Committed& best) {
                           sh_.need_object_ray);
   setHit(nested, static_cast<float>(best.t), best.kind, best.b1, best.b2);
   nested.words = best.words;
+  nested.sized = best.sized;
   *shading_hit_ = nested;
 }
 
@@ -445,6 +446,7 @@ void ModelTracer::shade(const TraceRay& r, uint32_t flags, uint32_t depth, const
             viewOf(scene, c, r, best.instance, best.geometry, best.primitive, sh_.need_object_ray);
         setHit(hv, static_cast<float>(best.t), best.kind, best.b1, best.b2);
         hv.words = best.words;
+        hv.sized = best.sized;
         st_.bumpRuns(kRunsClosestHit);
         StageEnv env = hitStage(Stage::ClosestHit, rec->data, &payload, r, hv, hv.t, depth);
         HitObjectState own;  // the stage's hit object, empty at its start

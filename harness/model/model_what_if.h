@@ -35,6 +35,7 @@ struct Committed {
   // rounding, a triangle's frame error).
   double t_err = 0;
   std::array<uint32_t, kMaxAttributeWords> words{};  // a report's attribute words
+  SizedSlots sized;                                  // a report's sized attribute members
   // Exact tier: a digest of what the decision left behind (this hit, the
   // payload, the launch ray's record and counters, a query's frame): two
   // what-if runs with the same digest go on alike (ModelTracer::effectOf).

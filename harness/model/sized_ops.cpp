@@ -76,6 +76,15 @@ Val halvedSized(const Val& v) {
   return r;
 }
 
+void halveMembers(SizedSlots& members) {
+  for (auto& [type, lanes] : members.members) {
+    Val v;
+    v.sized = type;
+    v.x = lanes;
+    lanes = halvedSized(v).x;
+  }
+}
+
 Val rotatedSized(const Val& v) {
   Val r = v;
   const int n = componentCount(v.sized);

@@ -157,6 +157,7 @@ void writeSlot(Data& d, const CAssign& a, const Val& v) {
   if constexpr (requires { d.words; }) {
     if (slot == Slot::Word) d.words[a.word % kMaxPayloadWords] = v.u;
   }
+  if (slot == Slot::Sized) d.sized.write(static_cast<ValueType>(a.word), v);
   if constexpr (requires { d.position; }) {
     if (slot == Slot::Position) d.position = {v.f[0], v.f[1], v.f[2]};
     if (slot == Slot::Normal) d.normal = {v.f[0], v.f[1], v.f[2]};
@@ -180,6 +181,7 @@ void StageInterpreter::execCall(const CStmt& s, StageEnv& env) {
   for (const CAssign& a : s.assigns) writeSlot(d, a, eval(a.value, env));
   if (s.src) d.location = s.src->call_location;
   callCallable(eval(s.call_index, env).u, d, env.depth, s);
+  if (sh_.fault_seam.sizedCallDataHalvedAcrossCall()) halveMembers(d.sized);
   env.callee = d;
 }
 
@@ -244,6 +246,7 @@ void StageInterpreter::execTrace(const CStmt& s, StageEnv& env) {
   Payload p = s.src && s.src->trace.hit_object && env.hit_object
                   ? tracer_.traceIntoHitObject(r, depth, &s, start, *env.hit_object)
                   : tracer_.trace(r, depth, &s, start);
+  if (sh_.fault_seam.sizedPayloadHalvedAcrossTrace()) halveMembers(p.sized);
   if (env.stage == Stage::Raygen && env.payload)
     *env.payload = p;
   else
@@ -280,7 +283,9 @@ void StageInterpreter::callCallable(uint32_t index, CallData& data, uint32_t dep
   if (st_.call_nesting >= kDefaultCallableDepth && sh_.fault_seam.stackSizeIgnored()) return;
   const SbtRecord& rec = sbt_.callables()[index];
   if (!rec.group || *rec.group >= sh_.c->pipeline.callables.size()) return;  // R-SBT-ZERO
-  if (p.callDataWords(p.callableData(*rec.group)) != p.callDataWords(data.location))
+  const uint32_t own = p.callableData(*rec.group);
+  if (p.callDataWords(own) != p.callDataWords(data.location) ||
+      p.callDataSized(own) != p.callDataSized(data.location))
     st_.callDataTypeDiffers(data, *rec.group);
   st_.bumpRuns(kRunsCallable);
   StageEnv env;

@@ -27,6 +27,8 @@ bool sizedEqual(ValueType t, const Val& a, const Val& b);
 // A sized scalar through a slot half its width: its upper half of bits kept,
 // the lower half (of a float16's or float64's encoding) zero.
 Val halvedSized(const Val& v);
+// Each sized member of a payload, callable data or hit attribute halved so.
+void halveMembers(SizedSlots& members);
 // A sized vector with its components rotated (x takes y's, .., the last x's).
 Val rotatedSized(const Val& v);
 // A sized scalar or vector of type t whose every lane is one (1 or 1.0).

@@ -6,6 +6,8 @@
 //   or any-hit reads and writes words of its own incoming type only (its
 //   `payload:` location); raygen's payload.word<i> and a stage's
 //   child.word<i> (the last trace's payload) are within the largest type;
+// - the same for the sized members (pipeline.payloads[].sized): a read or
+//   write names a member its type declares;
 // - the same for a call (call.location, call.word<i>), a callable's
 //   call.word<i> and call_data words (its `call_data:` location), and a
 //   stage's callee.word<i> (the last call's data).
@@ -39,10 +41,11 @@ class WordChecker {
     });
     walkStatements(prog, [&](const Stmt& s) {
       if (s.kind == Stmt::Kind::SetPayload)
-        writes(s, field, "payload.", words(WordArray::Payload), typeOf(WordArray::Payload),
-               kPayloads);
+        writes(s, field, "payload.", words(WordArray::Payload), sized(WordArray::Payload),
+               typeOf(WordArray::Payload), kPayloads);
       if (s.kind == Stmt::Kind::SetCall)
-        writes(s, field, "call_data.", words(WordArray::Call), typeOf(WordArray::Call), kCallData);
+        writes(s, field, "call_data.", words(WordArray::Call), sized(WordArray::Call),
+               typeOf(WordArray::Call), kCallData);
       if (auto which = s.kind == Stmt::Kind::Store ? wordArrayOfStore(s.local) : std::nullopt)
         indexed(s.loc, field, "store to " + s.local, *which);
       // execute passes a payload location as a trace does.
@@ -76,6 +79,36 @@ class WordChecker {
   void read(const Expr& e, const std::string& field) {
     if (const auto which = wordArrayOf(e.builtin))
       within(e.loc, field, e.name, e.word, words(*which), typeOf(*which), listOf(*which));
+    if (const auto data = sizedDataOf(static_cast<Builtin>(e.builtin))) {
+      const WordArray which = static_cast<WordArray>(*data);  // the same order, less Attribute
+      if (*data != SizedData::Attribute)
+        member(e.loc, field, e.name, static_cast<ValueType>(e.word), sized(which), typeOf(which),
+               listOf(which));
+    }
+  }
+
+  // The sized members of `which` as this stage declares it.
+  SizedMembers sized(WordArray which) const {
+    const bool raygen = in_.stage == Stage::Raygen;
+    switch (which) {
+      case WordArray::Payload:
+        return raygen ? p_.allPayloadSized() : p_.payloadSized(in_.location);
+      case WordArray::Child:
+        return p_.allPayloadSized();
+      case WordArray::Call:
+        return p_.callDataSized(in_.location);
+      case WordArray::Callee:
+        return p_.allCallDataSized();
+    }
+    return {};
+  }
+
+  void member(const SourceLoc& at, const std::string& field, const std::string& what, ValueType t,
+              const SizedMembers& members, const std::string& type, const char* list) {
+    if (holdsSized(members, t)) return;
+    error(
+        at, field,
+        what + ": " + type + " has no " + valueTypeSpelling(t) + " member (" + list + "[].sized)");
   }
 
   // A read or store indexed by a value takes its index modulo the words: the
@@ -89,10 +122,13 @@ class WordChecker {
   }
 
   void writes(const Stmt& s, const std::string& field, const std::string& prefix, uint32_t words,
-              const std::string& type, const char* list) {
-    for (const auto& [name, value] : s.assigns)
+              const SizedMembers& sized, const std::string& type, const char* list) {
+    for (const auto& [name, value] : s.assigns) {
       if (auto i = payloadWordField(name))
         within(value.loc, field, prefix + name, *i, words, type, list);
+      if (auto t = sizedMemberField(name))
+        member(value.loc, field, prefix + name, *t, sized, type, list);
+    }
   }
 
   void trace(const Stmt& s, const std::string& field) {
@@ -100,7 +136,7 @@ class WordChecker {
     if (!declared(location, p_.payload_words.size(), s.trace.location_loc, field,
                   "payload location", kPayloads))
       return;
-    writes(s, field, "trace.payload.", p_.payload_words[location],
+    writes(s, field, "trace.payload.", p_.payload_words[location], p_.payloadSized(location),
            "location " + std::to_string(location) + "'s payload type", kPayloads);
   }
 
@@ -110,7 +146,7 @@ class WordChecker {
                   s.call_location_loc.line ? s.call_location_loc : s.loc, field,
                   "callable data location", kCallData))
       return;
-    writes(s, field, "call.", p_.call_data_words[location],
+    writes(s, field, "call.", p_.call_data_words[location], p_.callDataSized(location),
            "location " + std::to_string(location) + "'s callable data type", kCallData);
   }
 

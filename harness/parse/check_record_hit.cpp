@@ -11,10 +11,11 @@ namespace {
 void checkProgram(YamlReader& r, const Case& c, const Program& p) {
   walkStatements(p, [&](const Stmt& s) {
     if (s.kind != Stmt::Kind::RecordHit) return;
-    if (c.pipeline.attribute_words)
+    if (c.pipeline.attribute_words || !c.pipeline.attribute_sized.empty())
       r.error(s.loc,
               "record_hit stores a vec2 attribute, but the hit attribute has more "
-              "(pipeline.hit_attribute.words): the shaders it runs would read words never stored");
+              "(pipeline.hit_attribute words or sized members): the shaders it runs would read "
+              "words never stored");
     if (c.scene.tlasCount() > 1)
       r.error(s.loc, "record_hit names an instance of the scene's one top level; this scene has " +
                          std::to_string(c.scene.tlasCount()));

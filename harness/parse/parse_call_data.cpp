@@ -1,6 +1,6 @@
 // Callable data types by location (pipeline.callable_data) and the
 // callables, each of which may name the location whose data type it takes:
-//   callable_data: [{}, {words: 4}]          # location 0, location 1
+//   callable_data: [{}, {words: 4, sized: [int16]}]  # location 0, location 1
 //   callables: [[...], {call_data: 1, program: [...]}]
 // A call names its location with `call: {location: k}` (parse_program.cpp).
 #include "parse/parse_parts.h"
@@ -14,7 +14,7 @@ const WordTypes kCallDataTypes{"pipeline.callable_data", "callable data", kMaxCa
 }  // namespace
 
 void parseCallDataTypes(YamlReader& r, const YAML::Node& n, Pipeline& p) {
-  parseWordTypes(r, n, kCallDataTypes, p.call_data_words);
+  parseWordTypes(r, n, kCallDataTypes, p.call_data_words, p.call_data_sized);
 }
 
 void parseCallables(YamlReader& r, const YAML::Node& n, Pipeline& p) {

@@ -45,8 +45,13 @@ struct WordTypes {
   const char* what;   // "payload"
   uint32_t max_locations, max_words;
 };
+// Each location's words into `out`, its sized members (`sized: [int8,
+// f16vec4]`, program/payload_words.h) into `sized`.
 void parseWordTypes(YamlReader& r, const YAML::Node& n, const WordTypes& types,
-                    std::vector<uint32_t>& out);
+                    std::vector<uint32_t>& out, std::vector<SizedMembers>& sized);
+// A list of sized types, each once (an error at the entry otherwise).
+std::optional<SizedMembers> parseSizedMembers(YamlReader& r, const YAML::Node& n,
+                                              const std::string& field);
 // A location among `declared` (a constant); nullopt, with an error, when none.
 std::optional<uint32_t> parseWordLocation(YamlReader& r, const YAML::Node& n,
                                           const std::string& field, const WordTypes& types,

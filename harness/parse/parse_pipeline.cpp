@@ -163,12 +163,24 @@ void checkNoNullGroups(YamlReader& r, const Pipeline& p) {
   }
 }
 
-// pipeline.hit_attribute: {words: N}, the hit attribute's words after its vec2.
+// pipeline.hit_attribute: {words: N, sized: [types]}, the hit attribute's
+// words and sized members after its vec2, 32 bytes in all.
 void parseHitAttribute(YamlReader& r, const YAML::Node& v, Pipeline& p) {
-  if (!r.expectMap(v, "pipeline.hit_attribute", {"words"})) return;
+  if (!r.expectMap(v, "pipeline.hit_attribute", {"words", "sized"})) return;
   if (auto w = YamlReader::get(v, "words"); w.IsDefined())
     if (auto x = r.uint(w, "pipeline.hit_attribute.words", kMaxAttributeWords))
       p.attribute_words = *x;
+  const YAML::Node sized = YamlReader::get(v, "sized");
+  if (!sized.IsDefined()) return;
+  p.attribute_sized =
+      parseSizedMembers(r, sized, "pipeline.hit_attribute.sized").value_or(SizedMembers{});
+  if (p.attributeBytes() > kMaxAttributeBytes)
+    r.error(
+        sized, "pipeline.hit_attribute.sized",
+        "the hit attribute holds " + std::to_string(p.attributeBytes()) + " bytes (its vec2, " +
+            std::to_string(p.attribute_words) +
+            " word(s) and these members, each aligned to the largest scalar of any), over the " +
+            std::to_string(kMaxAttributeBytes) + " every device allows (maxRayHitAttributeSize)");
 }
 
 }  // namespace

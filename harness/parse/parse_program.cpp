@@ -24,13 +24,14 @@ bool parseBlock(YamlReader& r, const YAML::Node& n, const std::string& field,
   return ok;
 }
 
-// The words a payload or callable data type may have (payload_words.h),
-// as the key lists of errors name them.
+// The words and sized members a payload, callable data or hit attribute
+// type may have (payload_words.h), as the key lists of errors name them.
 bool isWordKey(const std::string& key) {
-  return payloadWordField(key).has_value();
+  return payloadWordField(key).has_value() || sizedMemberField(key).has_value();
 }
 std::string wordKeys() {
-  return "word0 .. word" + std::to_string(kPayloadWordNames - 1);
+  return "word0 .. word" + std::to_string(kPayloadWordNames - 1) +
+         ", a sized member int8 .. f64vec4";
 }
 
 // {name: expr, ...} with names from `allowed` and the words, into s.assigns.
@@ -343,9 +344,12 @@ bool parseReorder(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt
 
 bool parseReport(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
   s.kind = Stmt::Kind::Report;
-  if (!r.expectMap(v, f,
-                   {"t", "kind", "attribute", "word0", "word1", "word2", "word3", "word4", "word5",
-                    "accepted", "rejected"}))
+  auto attribute_key = [](const std::string& key) {
+    const auto w = payloadWordField(key);
+    return (w && *w < kMaxAttributeWords) || sizedMemberField(key).has_value();
+  };
+  if (!r.expectMap(v, f, {"t", "kind", "attribute", "accepted", "rejected"}, attribute_key,
+                   "word0 .. word5, a sized member int8 .. f64vec4"))
     return false;
   if (!(r.require(v, f, "t") & r.require(v, f, "kind"))) return false;
   bool ok = parseExpr(r, YamlReader::get(v, "t"), f + ".t", s.t);
@@ -355,12 +359,13 @@ bool parseReport(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt&
     ok = parseExpr(r, a, f + ".attribute", e) && ok;
     s.attribute.push_back(std::move(e));
   }
-  for (const char* key : {"word0", "word1", "word2", "word3", "word4", "word5"})
-    if (auto a = YamlReader::get(v, key); a.IsDefined()) {
-      Expr e;
-      ok = parseExpr(r, a, f + "." + key, e) && ok;
-      s.assigns.emplace_back(key, std::move(e));
-    }
+  for (auto it = v.begin(); it != v.end(); ++it) {
+    const std::string key = it->first.Scalar();
+    if (!attribute_key(key)) continue;
+    Expr e;
+    ok = parseExpr(r, it->second, f + "." + key, e) && ok;
+    s.assigns.emplace_back(key, std::move(e));
+  }
   if (auto a = YamlReader::get(v, "accepted"); a.IsDefined())
     ok = parseBlock(r, a, f + ".accepted", s.then_) && ok;
   if (auto a = YamlReader::get(v, "rejected"); a.IsDefined())

@@ -134,6 +134,16 @@ void noteSized(ValueType t, Plan& plan) {
   if (isSized(t)) plan.sized_types |= 1u << static_cast<int>(sizedComponent(t));
 }
 
+// The sized members the payload, callable data and hit attribute types
+// declare: each stage declaring one needs its type's extension and feature,
+// read or not.
+void planSizedMembers(const Pipeline& pipe, Plan& plan) {
+  for (const auto* all : {&pipe.payload_sized, &pipe.call_data_sized})
+    for (const SizedMembers& m : *all)
+      for (ValueType t : m) noteSized(t, plan);
+  for (ValueType t : pipe.attribute_sized) noteSized(t, plan);
+}
+
 // What the statements do: callables, nested traces (and the depth), scene
 // data read by intersection programs, the sized scalars computed with.
 void planStatements(const std::vector<StageProgram>& programs, const Pipeline& pipe, Plan& plan) {
@@ -205,6 +215,7 @@ Plan derivePlan(const Case& c) {
   applyRayFlags(flags, c.pipeline.flags, plan);
   planStages(c.pipeline, flags, non_opaque_geometry, plan);
   planStatements(programs, c.pipeline, plan);
+  planSizedMembers(c.pipeline, plan);
   planShaderRecords(c.pipeline, plan);
   planOutputs(c, plan);
   if (!c.expected_rejections.empty()) {

@@ -13,7 +13,8 @@
 //     declare for a program that reads it (program/builtins.h BuiltinNeeds;
 //     NoNeeds for none);
 //   GLSL: the expression the stage reads, or nullptr where the emitter spells
-//     it itself (hit by stage; the word<i> families by index);
+//     it itself (hit by stage; the word<i> families by index, the <type>
+//     families by type: their type column stands for the member's own);
 //   ray query GLSL: the same value where the stage runs inlined in raygen
 //     (--through ray-query, glsl/emit_ray_query.h): read through the query
 //     rs_rq, $c standing for its committed flag (false in any-hit and
@@ -403,6 +404,22 @@
   RAYSPEC_QUERY_BUILTINS(X)                                                                        \
   X(CalleeWord, "callee.word<i>", Uint, R | C | M | K, CalleeData, nullptr, nullptr,               \
     "word i of the callable data after this stage's last call (0 beyond that call's type)")        \
+  X(PayloadSized, "payload.<type>", Uint, M | C | A | R, InPayload, nullptr, nullptr,              \
+    "the sized member <type> (int8 .. f64vec4) of the incoming payload, of that type, where its "  \
+    "pipeline.payloads[].sized lists it; in raygen the payload of its last trace (0 where that "   \
+    "trace's type has none)")                                                                      \
+  X(ChildSized, "child.<type>", Uint, C | M, ChildPayload, nullptr, nullptr,                       \
+    "the sized member <type> of the payload of this stage's last trace (0 where its type has "     \
+    "none)")                                                                                       \
+  X(CallSized, "call.<type>", Uint, K, CallData, nullptr, nullptr,                                 \
+    "the sized member <type> of the incoming callable data, where its "                            \
+    "pipeline.callable_data[].sized lists it")                                                     \
+  X(CalleeSized, "callee.<type>", Uint, R | C | M | K, CalleeData, nullptr, nullptr,               \
+    "the sized member <type> of the callable data after this stage's last call (0 where that "     \
+    "call's type has none)")                                                                       \
+  X(AttributeSized, "attribute.<type>", Uint, A | C, HitAttribute, nullptr, nullptr,               \
+    "the sized member <type> of the hit attribute (pipeline.hit_attribute.sized), as the "         \
+    "intersection shader reported it; hit groups with an intersection shader only")                \
   RAYSPEC_HIT_OBJECT_BUILTINS(X)
 
 namespace rayspec {

@@ -2,12 +2,18 @@
 // one resolution of a built-in's name.
 #include "program/builtins.h"
 
+#include <iterator>
+
 #include "program/payload_words.h"
 
 namespace rayspec {
 namespace {
 
-constexpr const char kWordIndex[] = "<i>";  // the index in a word<i> family's name
+constexpr const char kWordIndex[] = "<i>";      // the index in a word<i> family's name
+constexpr const char kSizedIndex[] = "<type>";  // the type in a sized family's name
+
+constexpr Builtin kSizedRows[] = {kBiPayloadSized, kBiChildSized, kBiCallSized, kBiCalleeSized,
+                                  kBiAttributeSized};  // in SizedData order
 
 // The row `name` spells exactly, kBiUnknown for none.
 Builtin rowNamed(const std::string& name) {
@@ -59,6 +65,12 @@ std::optional<WordArray> wordArrayOf(Builtin b) {
   }
 }
 
+std::optional<SizedData> sizedDataOf(Builtin b) {
+  for (size_t i = 0; i < std::size(kSizedRows); ++i)
+    if (kSizedRows[i] == b) return static_cast<SizedData>(i);
+  return std::nullopt;
+}
+
 std::optional<BuiltinName> builtinNamed(const std::string& name) {
   // payload.word3 is the table's payload.word<i>, word 3.
   if (auto w = payloadWordBuiltin(name))
@@ -66,8 +78,10 @@ std::optional<BuiltinName> builtinNamed(const std::string& name) {
   if (auto i = attributeWordBuiltin(name)) return BuiltinName{kBiAttributeWord, *i};
   if (auto w = callWordBuiltin(name))
     return BuiltinName{w->callee ? kBiCalleeWord : kBiCallWord, w->index};
+  if (auto m = sizedMemberBuiltin(name))
+    return BuiltinName{kSizedRows[static_cast<size_t>(m->data)], static_cast<uint32_t>(m->type)};
   const Builtin b = rowNamed(name);
-  if (b == kBiUnknown || isWordFamily(b)) return std::nullopt;
+  if (b == kBiUnknown || isWordFamily(b) || isSizedFamily(b)) return std::nullopt;
   return BuiltinName{b, 0};
 }
 
@@ -76,12 +90,18 @@ std::string builtinSpelling(Builtin id, uint32_t word) {
   std::string s = builtins()[id].name;
   if (const size_t at = s.find(kWordIndex); at != std::string::npos)
     s.replace(at, sizeof kWordIndex - 1, std::to_string(word));
+  if (const size_t at = s.find(kSizedIndex); at != std::string::npos)
+    s.replace(at, sizeof kSizedIndex - 1, valueTypeSpelling(static_cast<ValueType>(word)));
   return s;
 }
 
 const BuiltinInfo* findBuiltin(const std::string& name) {
   const std::optional<BuiltinName> b = builtinNamed(name);
   return b ? &builtins()[b->id] : nullptr;
+}
+
+ValueType builtinType(Builtin id, uint32_t word) {
+  return isSizedFamily(id) ? static_cast<ValueType>(word) : builtins()[id].type;
 }
 
 Builtin builtinId(const BuiltinInfo* info) {
@@ -108,9 +128,9 @@ void setBuiltin(Expr& e, Builtin id, uint32_t word) {
   e.args.clear();
   e.literal.clear();
   e.builtin = id;
-  e.word = isWordFamily(id) ? word : 0;
+  e.word = isWordFamily(id) || isSizedFamily(id) ? word : 0;
   e.name = builtinSpelling(id, e.word);
-  if (id < kBiCount) e.type = builtins()[id].type;
+  if (id < kBiCount) e.type = builtinType(id, e.word);
 }
 
 std::string rayQuerySpelling(const BuiltinInfo& info, bool committed) {

@@ -114,6 +114,16 @@ constexpr bool isWordFamily(int b) {
   return b == kBiPayloadWord || b == kBiChildWord || b == kBiAttributeWord || b == kBiCallWord ||
          b == kBiCalleeWord;
 }
+// The rows that stand for a family of names by sized type (the index is the
+// ValueType): payload.<type>, child.<type>, call.<type>, callee.<type>,
+// attribute.<type> (program/payload_words.h SizedMembers). An expression of
+// one has the member's type.
+constexpr bool isSizedFamily(int b) {
+  return b == kBiPayloadSized || b == kBiChildSized || b == kBiCallSized || b == kBiCalleeSized ||
+         b == kBiAttributeSized;
+}
+// The data a sized family row reads (nullopt for another row).
+std::optional<SizedData> sizedDataOf(Builtin b);
 // The data a word<i> read indexes: payload.word<i> the payload's words,
 // child.word<i> the child's, call.word<i> and callee.word<i> the callable
 // data's; nullopt for another row (attribute.word<i> included).
@@ -139,6 +149,8 @@ std::string builtinSpelling(Builtin id, uint32_t word = 0);
 const BuiltinInfo* findBuiltin(const std::string& name);
 // Its Builtin (kBiUnknown for nullptr).
 Builtin builtinId(const BuiltinInfo* info);
+// The type a read of row `id` has: its row's, a sized family's member's own.
+ValueType builtinType(Builtin id, uint32_t word = 0);
 
 // A read of built-in `id` (word i of a word<i> family), typed as its row
 // (what a fault or a rewrite builds); setBuiltin makes e such a read. Both

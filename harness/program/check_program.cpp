@@ -142,7 +142,9 @@ class Checker {
         for (Expr& e : s.attribute)
           if (auto r = as(e, ValueType::Vec2, "report attribute")) return r;
         for (auto& [name, value] : s.assigns)
-          if (auto r = as(value, ValueType::Uint, "report " + name)) return r;
+          if (auto r =
+                  as(value, sizedMemberField(name).value_or(ValueType::Uint), "report " + name))
+            return r;
         if (auto r = block(s.then_)) return r;
         return block(s.else_);
       }
@@ -544,13 +546,16 @@ class Checker {
         want = ValueType::Vec4;
       else if (name == "value" || payloadWordField(name))
         want = ValueType::Uint;
+      else if (const auto sized = sizedMemberField(name))
+        want = *sized;  // a sized member: its own type
       else if (call && (name == "position" || name == "normal"))
         want = ValueType::Vec3;
       else
-        return ProgramError{
-            "unknown field '" + name + "' (" +
-                (call ? "position, normal, color, value, word<i>" : "color, value, word<i>") + ")",
-            value.loc};
+        return ProgramError{"unknown field '" + name + "' (" +
+                                (call ? "position, normal, color, value, word<i>, a sized member"
+                                      : "color, value, word<i>, a sized member") +
+                                ")",
+                            value.loc};
       if (auto r = as(value, want, name)) return r;
     }
     return std::nullopt;

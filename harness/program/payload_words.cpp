@@ -1,5 +1,9 @@
 #include "program/payload_words.h"
 
+#include <algorithm>
+
+#include "program/locals.h"
+
 namespace rayspec {
 
 std::optional<uint32_t> payloadWordField(const std::string& field) {
@@ -41,6 +45,55 @@ std::optional<uint32_t> attributeWordBuiltin(const std::string& name) {
   const auto i = payloadWordField(name.substr(prefix.size()));
   if (!i || *i >= kMaxAttributeWords) return std::nullopt;
   return i;
+}
+
+std::optional<ValueType> sizedMemberField(const std::string& field) {
+  const std::optional<ValueType> t = valueTypeNamed(field);
+  if (!t || !isSized(*t)) return std::nullopt;
+  return t;
+}
+
+std::optional<SizedMemberRead> sizedMemberBuiltin(const std::string& name) {
+  static const std::pair<const char*, SizedData> kPrefixes[] = {
+      {"payload.", SizedData::Payload},
+      {"child.", SizedData::Child},
+      {"call.", SizedData::Call},
+      {"callee.", SizedData::Callee},
+      {"attribute.", SizedData::Attribute}};
+  for (const auto& [prefix, data] : kPrefixes) {
+    const std::string p = prefix;
+    if (name.compare(0, p.size(), p) != 0) continue;
+    if (auto t = sizedMemberField(name.substr(p.size()))) return SizedMemberRead{data, *t};
+  }
+  return std::nullopt;
+}
+
+std::string sizedMemberGlsl(ValueType t) {
+  return std::string("rs_") + valueTypeSpelling(t);
+}
+
+uint32_t hitAttributeBytes(uint32_t words, const SizedMembers& members) {
+  uint32_t align = 4;  // the vec2's and the words' scalars
+  for (ValueType t : members)
+    align = std::max(align, static_cast<uint32_t>(sizedType(t)->bits) / 8);
+  auto place = [&](uint32_t at, uint32_t size) {
+    return (at + align - 1) / align * align + size;
+  };
+  uint32_t end = 8;  // the vec2
+  if (words) end = place(end, 4 * words);
+  for (ValueType t : members)
+    end = place(end, static_cast<uint32_t>(sizedType(t)->bits / 8 * componentCount(t)));
+  return end;
+}
+
+SizedMembers sizedMembersUnion(const SizedMembers& a, const SizedMembers& b) {
+  SizedMembers out;
+  std::set_union(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
+  return out;
+}
+
+bool holdsSized(const SizedMembers& members, ValueType t) {
+  return std::find(members.begin(), members.end(), t) != members.end();
 }
 
 const char* wordArrayName(WordArray which) {

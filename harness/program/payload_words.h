@@ -9,6 +9,9 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "program/program.h"
 
 namespace rayspec {
 
@@ -47,6 +50,38 @@ std::optional<CallWordRead> callWordBuiltin(const std::string& name);
 constexpr uint32_t kMaxAttributeWords = 6;
 // "attribute.word<i>" -> i for i < kMaxAttributeWords; nullopt otherwise.
 std::optional<uint32_t> attributeWordBuiltin(const std::string& name);
+
+// The sized members of a payload, callable data or hit attribute type
+// (pipeline.payloads[].sized, pipeline.callable_data[].sized,
+// pipeline.hit_attribute.sized): each a sized scalar or vector of
+// program/sized_types.h, at most once, named by its spelling (payload.int8,
+// child.u16vec3, call.f16vec4, callee.int64, attribute.f64vec2; a payload,
+// call, call_data or report writes `int8: expr`), kept in ValueType order.
+using SizedMembers = std::vector<ValueType>;
+// "int8", "u16vec3", ... -> its type, for a sized scalar or vector (int32 and
+// ivec2..4 included); nullopt for any other name.
+std::optional<ValueType> sizedMemberField(const std::string& field);
+// The data a sized member read names, by its prefix.
+enum class SizedData : uint8_t { Payload, Child, Call, Callee, Attribute };
+struct SizedMemberRead {
+  SizedData data = SizedData::Payload;
+  ValueType type = ValueType::Int8;
+};
+// "payload.int8", "child.int8", "call.int8", "callee.int8",
+// "attribute.int8": which and the type; nullopt for any other name.
+std::optional<SizedMemberRead> sizedMemberBuiltin(const std::string& name);
+// The GLSL struct member holding a sized type's member: "rs_int8".
+std::string sizedMemberGlsl(ValueType t);
+// Bytes of a hit attribute block of a vec2, `words` uint words and these
+// members, as Vulkan counts it for maxRayHitAttributeSize (the block has no
+// explicit offsets: every member aligned to the largest scalar alignment of
+// any member, each as large as its components).
+uint32_t hitAttributeBytes(uint32_t words, const SizedMembers& members);
+// The members of `a` and `b`, in ValueType order (a result type that holds
+// any location's).
+SizedMembers sizedMembersUnion(const SizedMembers& a, const SizedMembers& b);
+// Whether `members` holds `t`.
+bool holdsSized(const SizedMembers& members, ValueType t);
 
 // Words indexed by a value (cases/README.md, "Words indexed by a value"):
 // the ops {payload_word: i}, {child_word: i}, {call_word: i} and

@@ -507,7 +507,7 @@ std::optional<ProgramError> checkExpr(Expr& e, Stage stage, const LocalScope* lo
         if (!q || !locals || !locals->letThrough(*q, e.name, e.loc))
           return err(e, "built-in '" + e.name + "' cannot be read in " + stageName(stage));
       }
-      e.type = b.type;
+      e.type = builtinType(static_cast<Builtin>(e.builtin), e.word);
       if (isQueryBuiltin(e.builtin)) return typeQueryGetter(e, locals);
       return std::nullopt;
     }

@@ -134,8 +134,10 @@ Result<void> checkSizedTypes(const DeviceInfo& d, const Plan& plan) {
                                                 : d.shader_int64)
                              : (s->bits == 16 ? d.shader_float16 : d.shader_float64);
     if (!has)
-      return notSupported(std::string(valueTypeSpelling(t)) +
-                          " locals (scalars or vectors): the device lacks " + s->feature);
+      return notSupported(
+          std::string(valueTypeSpelling(t)) +
+          " values (locals, payload, callable data or hit attribute members): the device lacks " +
+          s->feature);
   }
   return {};
 }

@@ -73,7 +73,7 @@ uint32_t interfacePayloadBytes(const Pipeline& p) {
   uint32_t payload = 0;
   for (size_t location = 0; location < p.payload_words.size(); ++location)
     payload = std::max(payload, p.payloadBytes(location));
-  return std::max(payload, p.callDataBytes(p.maxCallDataWords()));
+  return std::max(payload, p.callDataBytes(p.maxCallDataWords(), p.allCallDataSized()));
 }
 
 Result<RayTracingPipeline> createRayTracingPipeline(const VulkanContext& ctx,
