@@ -105,8 +105,9 @@ TEST(SizedTypes, EachScalarHasVectorsOfTwoThreeAndFourWithConstructors) {
     ++vectors;
     const ValueType component = sizedComponent(t);
     EXPECT_TRUE(isSizedScalar(component) || component == ValueType::Uint);  // uvec2 .. uvec4
-    if (component != ValueType::Uint)
+    if (component != ValueType::Uint) {
       EXPECT_EQ(sizedType(t), sizedType(component));  // the component's row
+    }
     EXPECT_EQ(sizedVectorOf(component, componentCount(t)), t);
     EXPECT_EQ(valueTypeNamed(valueTypeSpelling(t)), t);
     const Op make = opNamed(valueTypeSpelling(t));  // {i8vec2: ..} .. {f64vec4: ..}

@@ -144,10 +144,10 @@ struct Digest {
     static_assert(std::has_unique_object_representations_v<T> || std::is_floating_point_v<T>);
     bytes.append(reinterpret_cast<const char*>(&v), sizeof(T));
   }
-  // Arrays of 4-byte elements (floats, words): no padding, one append.
+  // Arrays of floats, words or 64-bit lanes: no padding, one append.
   template <typename T, size_t N>
   void add(const std::array<T, N>& a) {
-    static_assert(sizeof(T) == 4 && sizeof(a) == 4 * N);
+    static_assert(sizeof(a) == sizeof(T) * N);
     static_assert(std::has_unique_object_representations_v<T> || std::is_floating_point_v<T>);
     bytes.append(reinterpret_cast<const char*>(a.data()), sizeof(a));
   }
@@ -183,7 +183,7 @@ struct Digest {
     add(v.f);
     add(v.u);
     add(static_cast<uint8_t>(v.b));
-    addAll(v.x.data(), v.x.size());
+    add(v.x);
     add(static_cast<uint32_t>(v.sized));
   }
   uint64_t hash() const { return std::hash<std::string_view>{}(bytes); }
