@@ -389,8 +389,9 @@ std::vector<FaultImpl> hitObjectMutations() {
   };
 }
 
-// Faults of shader code, launches and geometry numbering.
-std::vector<FaultImpl> codeAndLaunchMutations() {
+// Faults of values live across calls and of the sized members of the
+// pipeline interface.
+std::vector<FaultImpl> liveStateMutations() {
   using K = FaultKind;
   return {
       {"locals-lost-across-calls", K::CaseMutation,
@@ -431,6 +432,13 @@ std::vector<FaultImpl> codeAndLaunchMutations() {
        "the sized members of the hit attribute (pipeline.hit_attribute.sized) reach any-hit "
        "and closest-hit from reportIntersectionEXT with the lower half of each one's bits zero",
        nullptr, sizedAttributeHalved},
+  };
+}
+
+// Faults of shader code, launches and geometry numbering.
+std::vector<FaultImpl> codeAndLaunchMutations() {
+  using K = FaultKind;
+  return {
       {"loop-trip-off-by-one", K::CaseMutation, "every repeat runs one trip more than its count",
        nullptr, loopTripOffByOne},
       {"bitwise-xor-as-or", K::CaseMutation, "bit_xor (^) is computed as bit_or (|)", nullptr,
@@ -607,8 +615,8 @@ const std::vector<FaultImpl>& faultImpls() {
     std::vector<FaultImpl> all;
     for (auto part :
          {recordEdits, sceneAndFlagMutations, programMutations, sbtAndOrderMutations,
-          pipelineMutations, structureMutations, codeAndLaunchMutations, rayQueryMutations,
-          hitObjectMutations, processFaults, vulkanFaults, queryFaults})
+          pipelineMutations, structureMutations, liveStateMutations, codeAndLaunchMutations,
+          rayQueryMutations, hitObjectMutations, processFaults, vulkanFaults, queryFaults})
       for (FaultImpl& f : part()) all.push_back(std::move(f));
     return all;
   }();
