@@ -460,7 +460,7 @@ static const uint8_t rs_referenced[] = {
 // };
 // // ---- end of shaders/payload.glsl ----
 //
-// // ---- payload types of pipeline.payloads: RsPayload and N more words ----
+// // ---- payload types of pipeline.payloads: RsPayload, N more words, sized members ----
 // struct RsPayloadW1 {
 //   vec4 color;
 //   uint value;
@@ -1038,7 +1038,7 @@ static const uint32_t rs_spirv_0[] = {
 // };
 // // ---- end of shaders/payload.glsl ----
 //
-// // ---- payload types of pipeline.payloads: RsPayload and N more words ----
+// // ---- payload types of pipeline.payloads: RsPayload, N more words, sized members ----
 // struct RsPayloadW1 {
 //   vec4 color;
 //   uint value;
