@@ -130,4 +130,21 @@ void checkWideLaunch(YamlReader& r, const Case& c);
 // (check_empty_layout.cpp; the ray query forms refuse it themselves).
 void checkEmptyLayout(YamlReader& r, const Case& c, const YAML::Node& pipeline);
 
+// Parts of the stage programs' statements (parse_program.cpp), shared with
+// the hit-object statements (parse_hit_objects.cpp).
+// A payload's fields: color, value and the words of its type, into s.assigns.
+bool parsePayloadAssigns(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt& s);
+// A trace's constant index `key` (tlas, location) up to max, and where it is
+// written; false when it is there but not such a number.
+bool constantIndex(YamlReader& r, const YAML::Node& v, const std::string& f, const char* key,
+                   uint32_t max, uint32_t& out, SourceLoc& loc);
+// The trace fields a trace or ray_query gives (origin .. miss), each an expression.
+bool parseTraceSlots(YamlReader& r, const YAML::Node& v, const std::string& f, TraceArgs& t);
+// The hit-object statements (parse_hit_objects.cpp): execute, record_miss,
+// record_hit and reorder, each from its map.
+bool parseExecute(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s);
+bool parseRecordMiss(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s);
+bool parseRecordHit(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s);
+bool parseReorder(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s);
+
 }  // namespace rayspec

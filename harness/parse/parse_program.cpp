@@ -54,11 +54,6 @@ bool parseAssigns(YamlReader& r, const YAML::Node& n, const std::string& field,
   return ok;
 }
 
-// A payload's fields: color, value and the words of its type (checkDataWords).
-bool parsePayloadAssigns(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt& s) {
-  return parseAssigns(r, n, field, {"color", "value"}, s);
-}
-
 bool parseRecord(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
   s.kind = Stmt::Kind::Record;
   if (v.IsMap()) {
@@ -96,18 +91,6 @@ bool parseRecord(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt&
   return ok;
 }
 
-// A trace's constant index `key` (tlas, location) up to max, and where it is
-// written; false when it is there but not such a number.
-bool constantIndex(YamlReader& r, const YAML::Node& v, const std::string& f, const char* key,
-                   uint32_t max, uint32_t& out, SourceLoc& loc) {
-  const YAML::Node n = YamlReader::get(v, key);
-  if (!n.IsDefined()) return true;
-  loc = r.loc(n, f + "." + key);
-  const auto index = r.uint(n, f + "." + key, max);
-  if (index) out = *index;
-  return index.has_value();
-}
-
 // tlas: k (a constant: scene.instances[].tlas), or an expression that
 // indexes the top levels (one that starts with a digit is a constant).
 bool tlasField(YamlReader& r, const YAML::Node& v, const std::string& f, TraceArgs& t) {
@@ -121,48 +104,6 @@ bool tlasField(YamlReader& r, const YAML::Node& v, const std::string& f, TraceAr
   if (!parseExpr(r, n, f + ".tlas", e)) return false;
   t.tlas_index.push_back(std::move(e));
   return true;
-}
-
-// The trace fields a trace or ray_query gives (origin .. miss), each an
-// expression; flags also a list of ray flag names.
-bool parseTraceSlots(YamlReader& r, const YAML::Node& v, const std::string& f, TraceArgs& t) {
-  bool ok = true;
-  struct Slot {
-    const char* key;
-    std::vector<Expr>* exprs;
-  };
-  const Slot slots[] = {{"origin", &t.origin},
-                        {"direction", &t.direction},
-                        {"tmin", &t.tmin},
-                        {"tmax", &t.tmax},
-                        {"flags", &t.flags},
-                        {"cull_mask", &t.cull_mask},
-                        {"sbt_offset", &t.sbt_offset},
-                        {"sbt_stride", &t.sbt_stride},
-                        {"miss", &t.miss}};
-  for (const Slot& slot : slots) {
-    const YAML::Node a = YamlReader::get(v, slot.key);
-    if (!a.IsDefined()) continue;
-    const std::string fa = f + "." + slot.key;
-    Expr e;
-    if (std::string(slot.key) == "flags" && a.IsSequence()) {
-      // A list of ray flag names is a Uint literal.
-      auto bits = r.flags(a, fa, rayFlagNames());
-      if (!bits) {
-        ok = false;
-        continue;
-      }
-      e.kind = Expr::Kind::Literal;
-      e.type = ValueType::Uint;
-      e.literal = {static_cast<double>(*bits)};
-      e.loc = r.loc(a, fa);
-    } else if (!parseExpr(r, a, fa, e)) {
-      ok = false;
-      continue;
-    }
-    slot.exprs->push_back(std::move(e));
-  }
-  return ok;
 }
 
 bool parseTrace(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
@@ -261,85 +202,6 @@ bool parseRestartQuery(YamlReader& r, const YAML::Node& v, const std::string& f,
     return false;
   bool ok = tlasField(r, v, f, s.trace);
   return parseTraceSlots(r, v, f, s.trace) && ok;
-}
-
-// execute: {payload: {..}, location: k}: the hit object's shader run with
-// that payload (as a trace starts it).
-bool parseExecute(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
-  s.kind = Stmt::Kind::ExecuteHitObject;
-  if (v.IsNull()) return true;
-  if (!r.expectMap(v, f, {"payload", "location"})) return false;
-  bool ok = constantIndex(r, v, f, "location", kMaxPayloadLocations - 1, s.trace.location,
-                          s.trace.location_loc);
-  if (const YAML::Node p = YamlReader::get(v, "payload"); p.IsDefined())
-    ok = parsePayloadAssigns(r, p, f + ".payload", s) && ok;
-  return ok;
-}
-
-// record_miss: {miss, origin, direction, tmin, tmax}: a miss recorded into
-// the hit object without tracing, its fields defaulted as a trace's.
-bool parseRecordMiss(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
-  s.kind = Stmt::Kind::RecordMiss;
-  if (v.IsNull()) return true;
-  if (!r.expectMap(v, f, {"miss", "origin", "direction", "tmin", "tmax"})) return false;
-  return parseTraceSlots(r, v, f, s.trace);
-}
-
-// record_hit: {instance, primitive, geometry, hit_kind, attributes, sbt_offset
-// and sbt_stride or sbt_index, origin, direction, tmin, tmax}: a hit recorded
-// into the hit object without tracing (size 1: by its SBT record index).
-bool parseRecordHit(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
-  s.kind = Stmt::Kind::RecordHit;
-  if (!r.expectMap(v, f,
-                   {"instance", "primitive", "geometry", "hit_kind", "attributes", "sbt_offset",
-                    "sbt_stride", "sbt_index", "origin", "direction", "tmin", "tmax"}))
-    return false;
-  const bool by_index = YamlReader::has(v, "sbt_index");
-  if (by_index && (YamlReader::has(v, "sbt_offset") || YamlReader::has(v, "sbt_stride"))) {
-    r.error(v, f, "record_hit takes sbt_index or sbt_offset and sbt_stride, not both");
-    return false;
-  }
-  s.size = by_index ? 1 : 0;
-  bool ok = true;
-  for (const char* key :
-       {"instance", "primitive", "geometry", "hit_kind", "attributes", "sbt_index"}) {
-    const YAML::Node e = YamlReader::get(v, key);
-    if (!e.IsDefined() && std::string(key) == "sbt_index") continue;
-    if (!e.IsDefined()) {
-      r.error(v, f, std::string("record_hit needs '") + key + "'");
-      ok = false;
-      continue;
-    }
-    Expr x;
-    ok = parseExpr(r, e, f + "." + key, x) && ok;
-    s.assigns.emplace_back(key, std::move(x));
-  }
-  return parseTraceSlots(r, v, f, s.trace) && ok;
-}
-
-// reorder: {hit_object: true, hint: expr, bits: expr}: reorderThreadNV with
-// the hit object, the hint, or both.
-bool parseReorder(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
-  s.kind = Stmt::Kind::Reorder;
-  if (!r.expectMap(v, f, {"hit_object", "hint", "bits"})) return false;
-  bool ok = true;
-  if (const YAML::Node h = YamlReader::get(v, "hit_object"); h.IsDefined()) {
-    const std::optional<bool> yes = parseSwitch(r, h, f + ".hit_object");
-    ok = yes.has_value();
-    s.size = yes.value_or(false) ? 1 : 0;
-  }
-  const bool hint = YamlReader::has(v, "hint"), bits = YamlReader::has(v, "bits");
-  if (hint != bits || (!hint && s.size == 0)) {
-    r.error(v, f, "reorder takes hit_object: true, hint and bits, or all three");
-    return false;
-  }
-  for (const char* key : {"hint", "bits"})
-    if (hint) {
-      Expr e;
-      ok = parseExpr(r, YamlReader::get(v, key), f + "." + key, e) && ok;
-      s.assigns.emplace_back(key, std::move(e));
-    }
-  return ok;
 }
 
 bool parseReport(YamlReader& r, const YAML::Node& v, const std::string& f, Stmt& s) {
@@ -703,6 +565,65 @@ bool parseStmt(YamlReader& r, const YAML::Node& n, const std::string& field, Stm
 }
 
 }  // namespace
+
+// A payload's fields: color, value and the words of its type (checkDataWords).
+bool parsePayloadAssigns(YamlReader& r, const YAML::Node& n, const std::string& field, Stmt& s) {
+  return parseAssigns(r, n, field, {"color", "value"}, s);
+}
+
+// A trace's constant index `key` (tlas, location) up to max, and where it is
+// written; false when it is there but not such a number.
+bool constantIndex(YamlReader& r, const YAML::Node& v, const std::string& f, const char* key,
+                   uint32_t max, uint32_t& out, SourceLoc& loc) {
+  const YAML::Node n = YamlReader::get(v, key);
+  if (!n.IsDefined()) return true;
+  loc = r.loc(n, f + "." + key);
+  const auto index = r.uint(n, f + "." + key, max);
+  if (index) out = *index;
+  return index.has_value();
+}
+
+// The trace fields a trace or ray_query gives (origin .. miss), each an
+// expression; flags also a list of ray flag names.
+bool parseTraceSlots(YamlReader& r, const YAML::Node& v, const std::string& f, TraceArgs& t) {
+  bool ok = true;
+  struct Slot {
+    const char* key;
+    std::vector<Expr>* exprs;
+  };
+  const Slot slots[] = {{"origin", &t.origin},
+                        {"direction", &t.direction},
+                        {"tmin", &t.tmin},
+                        {"tmax", &t.tmax},
+                        {"flags", &t.flags},
+                        {"cull_mask", &t.cull_mask},
+                        {"sbt_offset", &t.sbt_offset},
+                        {"sbt_stride", &t.sbt_stride},
+                        {"miss", &t.miss}};
+  for (const Slot& slot : slots) {
+    const YAML::Node a = YamlReader::get(v, slot.key);
+    if (!a.IsDefined()) continue;
+    const std::string fa = f + "." + slot.key;
+    Expr e;
+    if (std::string(slot.key) == "flags" && a.IsSequence()) {
+      // A list of ray flag names is a Uint literal.
+      auto bits = r.flags(a, fa, rayFlagNames());
+      if (!bits) {
+        ok = false;
+        continue;
+      }
+      e.kind = Expr::Kind::Literal;
+      e.type = ValueType::Uint;
+      e.literal = {static_cast<double>(*bits)};
+      e.loc = r.loc(a, fa);
+    } else if (!parseExpr(r, a, fa, e)) {
+      ok = false;
+      continue;
+    }
+    slot.exprs->push_back(std::move(e));
+  }
+  return ok;
+}
 
 bool parseProgram(YamlReader& r, const YAML::Node& n, const std::string& field, Program& out) {
   out.clear();
