@@ -2400,7 +2400,7 @@ static void rs_copy_images(VkCommandBuffer cmd, const rs_image_target* images) {
 /* ---- Acceleration structures -------------------------------------------- */
 
 /* The structures of one level, bottom or top, as rayspec's builds make them
-   (harness/vulkan/acceleration_structure.cpp): each built from the scene as
+   (harness/vulkan/level_builds.cpp): each built from the scene as
    first built, then updated to each later state (scene.update) and copied
    (scene.build.copy) where the case orders it. */
 #define RS_MAX_LEVEL (RS_BLAS_COUNT > RS_TLAS_COUNT ? RS_BLAS_COUNT : RS_TLAS_COUNT)
