@@ -1,6 +1,7 @@
 // Devices the specification allows that answer ambiguous rays otherwise than
 // the model (rayspec mutate's legal devices, mutate/legal_devices.h).
 #include <array>
+#include <optional>
 #include <set>
 
 #include "fault/planted_fault.h"
@@ -18,8 +19,9 @@ Results modelAs(const Case& c, const Plan& plan, const ModelFaults& faults, unsi
 
 // Every key (instance, geometry, primitive) a candidate of the scene may
 // have: an instance counted both among all instances and within its own top
-// level (whichever the traversal names it by); empty past `most`.
-std::vector<std::array<uint32_t, 3>> candidateKeys(const Scene& scene, size_t most) {
+// level (whichever the traversal names it by); nullopt past `most`.
+std::optional<std::vector<std::array<uint32_t, 3>>> candidateKeys(const Scene& scene,
+                                                                   size_t most) {
   std::set<std::array<uint32_t, 3>> keys;
   std::vector<uint32_t> in_level(scene.tlasCount(), 0);
   for (uint32_t i = 0; i < scene.instances.size(); ++i) {
@@ -31,17 +33,23 @@ std::vector<std::array<uint32_t, 3>> candidateKeys(const Scene& scene, size_t mo
       for (uint32_t p = 0; p < b.geometries[g].primitiveCount(); ++p) {
         keys.insert({i, g, p});
         keys.insert({own, g, p});
-        if (keys.size() > most) return {};
+        if (keys.size() > most) return std::nullopt;
       }
   }
-  return {keys.begin(), keys.end()};
+  return std::vector<std::array<uint32_t, 3>>(keys.begin(), keys.end());
 }
 
 }  // namespace
 
+bool oneCandidateAtMost(const Scene& scene) {
+  return candidateKeys(scene, 1).has_value();
+}
+
 std::vector<NamedDevice> lastCandidateDevices(const Case& c, const Plan& plan, unsigned threads) {
   std::vector<NamedDevice> out;
-  for (const auto& [instance, geometry, primitive] : candidateKeys(c.scene, kMaxLastCandidates)) {
+  const auto keys = candidateKeys(c.scene, kMaxLastCandidates);
+  if (!keys || keys->size() < 2) return out;  // one candidate is never decided after another
+  for (const auto& [instance, geometry, primitive] : *keys) {
     ModelFaults f;
     f.order = CandidateOrder::OneLast;
     f.last_instance = instance;

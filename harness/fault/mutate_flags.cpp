@@ -1,6 +1,7 @@
 // Case mutations of ray and pipeline flags: a device that ignores a flag.
 #include "case/flag_names.h"
 #include "fault/fault_impl.h"
+#include "fault/planted_fault.h"
 #include "fault/program_edit.h"
 
 namespace rayspec {
@@ -48,8 +49,10 @@ std::string skipAabbsIgnored(Case& c, ModelOptions&) {
   return ignoreFlags(c, kRaySkipAabbs, kPipelineSkipAabbs, "SkipAABBs");
 }
 
-// R-ORDER-UNSPEC, legal: the candidates decided far to near.
-std::string reverseOrder(Case&, ModelOptions& o) {
+// R-ORDER-UNSPEC, legal: the candidates decided far to near (nothing to
+// change in a scene of one candidate at most).
+std::string reverseOrder(Case& c, ModelOptions& o) {
+  if (oneCandidateAtMost(c.scene)) return "";
   o.faults.order = CandidateOrder::ReverseDistance;
   return "candidates decided far to near";
 }
@@ -58,7 +61,8 @@ std::string reverseOrder(Case&, ModelOptions& o) {
 // 1, 2 or 3), whatever their t: boxes entered at one t, ties and
 // order-dependent programs meet another order than near to far or far to near.
 template <uint32_t Seed>
-std::string permutedOrder(Case&, ModelOptions& o) {
+std::string permutedOrder(Case& c, ModelOptions& o) {
+  if (oneCandidateAtMost(c.scene)) return "";
   o.faults.order = CandidateOrder::Permuted;
   o.faults.order_seed = Seed;
   return "candidates decided in shuffle " + std::to_string(Seed);

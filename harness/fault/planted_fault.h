@@ -80,14 +80,19 @@ Results aabbNearDevice(const Case& c, const Plan& plan, unsigned threads);
 // other, the rest near to far (R-ORDER-UNSPEC: a device may meet last the
 // candidate whose any-hit or query block terminates, and run every other's
 // first): one per key (instance, geometry, primitive) of a scene of at most
-// kMaxLastCandidates keys, none for a larger one. Each as perfectDevice gives
-// it, named "last-<instance>.<geometry>.<primitive>".
+// kMaxLastCandidates keys, none for a larger one nor for a scene of one key
+// (its one order is the model's). Each as perfectDevice gives it, named
+// "last-<instance>.<geometry>.<primitive>".
 constexpr size_t kMaxLastCandidates = 8;
 struct NamedDevice {
   std::string name;
   Results device;
 };
 std::vector<NamedDevice> lastCandidateDevices(const Case& c, const Plan& plan, unsigned threads);
+// Whether the scene holds one candidate key (instance, geometry, primitive)
+// at most: every trace then meets its candidates in the one order there is,
+// and a device deciding them in another order answers as the model does.
+bool oneCandidateAtMost(const Scene& scene);
 
 // crash: raises SIGSEGV; crash-once: the same, but only the first time the
 // case runs into the run folder run_dir (a flaky driver: the re-run passes);
