@@ -20,8 +20,7 @@ Results modelAs(const Case& c, const Plan& plan, const ModelFaults& faults, unsi
 // Every key (instance, geometry, primitive) a candidate of the scene may
 // have: an instance counted both among all instances and within its own top
 // level (whichever the traversal names it by); nullopt past `most`.
-std::optional<std::vector<std::array<uint32_t, 3>>> candidateKeys(const Scene& scene,
-                                                                   size_t most) {
+std::optional<std::vector<std::array<uint32_t, 3>>> candidateKeys(const Scene& scene, size_t most) {
   std::set<std::array<uint32_t, 3>> keys;
   std::vector<uint32_t> in_level(scene.tlasCount(), 0);
   for (uint32_t i = 0; i < scene.instances.size(); ++i) {
