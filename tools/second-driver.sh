@@ -131,10 +131,13 @@ run() {
   # with inactive objects (inactive/*, culling/mask-combinations/*, accel/*:
   # top levels with inactive instances, empty BLASes) run in processes of
   # their own, for a verdict that does not depend on the order of the run.
+  # --timeout 300: builtins/launch-largest/2p30 (2^30 ids) takes this llvmpipe
+  # about 110 s on a quiet 2-core machine, past the default 120 s under load
+  # (2026-12-07: a Timeout twice while other jobs ran).
   echo "== the run inside (device side only; exit 3 is the run-only build's)"
   local rc=0
   inside sh -c 'icd=$1; shift; cd "$0/pack" && RAYSPEC_CACHE_DIR="$0/pack/cache" RAYSPEC_CONFIG_DIR="$0/pack/config" MESA_SHADER_CACHE_DIR="$0/mesa-cache" LD_LIBRARY_PATH=lib \
-    ./rayspec run --cases cases --rules spec-rules.yaml --icd "$icd" --strict-validation \
+    ./rayspec run --cases cases --rules spec-rules.yaml --icd "$icd" --strict-validation --timeout 300 \
       --process-per-case-for "inactive/*" --process-per-case-for "culling/mask-combinations/*" \
       --process-per-case-for "accel/*" --out "$0/out" "$@" >"$0/run.log" 2>&1' \
     "$WORK" "$ICD" "${args[@]}" || rc=$?
