@@ -47,6 +47,8 @@ pipeline:
   hit_groups:
     - closest_hit: [{trace: {origin: world_ray_origin, direction: [0, 0, -1]}}, {record: {value: primitive_id}}]
     - {}
+  callables:
+    - [{struct: {name: s, members: {a: int16, b: uint}}}, {set: {s.a: {int16: call.value}}}, {call_data: {value: {uint: var.s.a}}}]
 outputs:
   per_ray: [hit, value, color]
 )";
@@ -66,6 +68,19 @@ outputs:
   plain.replace(plain.find("{x: world_ray_direction}"), 24, "0.5");
   EXPECT_EQ(contentFeatures(plain).count("miss-world-ray-beside-empty-group"), 0u);
   EXPECT_EQ(contentFeatures(plain).size(), all.size() - 1);
+  // A struct of a uint alone holds no sized value; a sized local without a struct.
+  std::string uints = text;
+  uints.replace(uints.find("a: int16"), 8, "a: uint");
+  uints.replace(uints.find("{int16: call.value}"), 19, "call.value");
+  uints.replace(uints.find("{uint: var.s.a}"), 15, "var.s.a");
+  EXPECT_EQ(contentFeatures(uints).count("sized-values"), 0u);
+  EXPECT_EQ(contentFeatures(uints).count("struct-local"), 1u);
+  std::string local = text;
+  const std::string declared = "{struct: {name: s, members: {a: int16, b: uint}}}, {set: {s.a: ";
+  local.replace(local.find(declared), declared.size(), "{let: {s: ");
+  local.replace(local.find("var.s.a"), 7, "var.s");
+  EXPECT_EQ(contentFeatures(local).count("sized-values"), 1u);
+  EXPECT_EQ(contentFeatures(local).count("struct-local"), 0u);
   EXPECT_TRUE(contentFeatures("not: [a case").empty());
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "device_info_support.h"
+#include "fuzz/content_features.h"
 #include "fuzz/generate_case.h"
 #include "parse/parse_case.h"
 #include "plan/plan.h"
@@ -39,19 +40,25 @@ std::vector<LibraryCase> parsedCases(uint64_t first, uint64_t n, const Generator
   return cases;
 }
 
-// How many of `cases` a device without VK_KHR_ray_query alone cannot run.
-int raysQuerySkips(const std::vector<LibraryCase>& cases) {
+// How many of `cases` a device without each leavable feature alone cannot
+// run, by the feature's name.
+std::map<std::string, int> skipsByFeature(const std::vector<LibraryCase>& cases) {
   DeviceInfo d = capableDevice();
-  d.ray_query = false;
-  const LibrarySupport s = librarySupport(cases, d, 0);
-  for (const FeatureSkips& f : s.missing)
-    if (f.feature == "VK_KHR_ray_query") return f.cases;
-  ADD_FAILURE() << "no VK_KHR_ray_query row";
-  return -1;
+  const std::string names = leavableFeatureNames();
+  for (const auto& [label, member] : featureRows())
+    if (names.find(label) != std::string::npos) d.*member = false;
+  std::map<std::string, int> skips;
+  for (const FeatureSkips& f : librarySupport(cases, d, 0).missing) skips[f.feature] = f.cases;
+  EXPECT_EQ(skips.size(), 6u) << names;
+  return skips;
 }
 
+const std::vector<std::string> kSizedFeatures = {"shaderInt8", "shaderInt16", "shaderInt64",
+                                                 "shaderFloat16", "shaderFloat64"};
+
 TEST(FuzzWithout, NamesAreTheDeviceRows) {
-  EXPECT_EQ(leavableFeatureNames(), "VK_KHR_ray_query");
+  EXPECT_EQ(leavableFeatureNames(),
+            "VK_KHR_ray_query, shaderInt8, shaderInt16, shaderInt64, shaderFloat16, shaderFloat64");
   GeneratorFeatures f;
   EXPECT_EQ(leftOutText(f), "");
   const Result<void> unknown = leaveOut(f, "ray-query");
@@ -64,19 +71,48 @@ TEST(FuzzWithout, NamesAreTheDeviceRows) {
   ASSERT_TRUE(leaveOut(f, "VK_KHR_ray_query"));
   EXPECT_FALSE(f.ray_query);
   EXPECT_EQ(leftOutText(f), "without VK_KHR_ray_query");
+  // The sized types by the feature of their row (a vector's: its component's).
+  EXPECT_TRUE(allowsType(f, ValueType::Int8Vec3));
+  ASSERT_TRUE(leaveOut(f, "shaderInt8"));
+  EXPECT_FALSE(allowsType(f, ValueType::Int8Vec3));
+  EXPECT_FALSE(allowsType(f, ValueType::Uint8));
+  EXPECT_TRUE(allowsType(f, ValueType::Int16));
+  EXPECT_TRUE(allowsType(f, ValueType::Int32));
+  EXPECT_TRUE(allowsType(f, ValueType::UintVec3));
+  EXPECT_EQ(leftOutText(f), "without VK_KHR_ray_query, shaderInt8");
 }
 
 // The check a device runs before each case: by default some cases need
-// VK_KHR_ray_query (so the count can fail), without it none does.
-TEST(FuzzWithout, NoCaseNeedsRayQuery) {
-  EXPECT_GT(raysQuerySkips(parsedCases(1, 200, {})), 40);
-  const std::vector<LibraryCase> without = parsedCases(1, 200, withoutRayQuery());
+// each leavable feature (so the counts can fail), without them all none
+// does, and typed state of the types no feature gates (int32, ivec, uvec) is
+// still drawn. 2 x 200 cases: about 5 s.
+TEST(FuzzWithout, NoCaseNeedsALeftOutFeature) {
+  std::map<std::string, int> skips = skipsByFeature(parsedCases(1, 200, {}));
+  EXPECT_GT(skips["VK_KHR_ray_query"], 40);
+  for (const std::string& f : kSizedFeatures) EXPECT_GE(skips[f], 8) << f;
+  GeneratorFeatures none = withoutRayQuery();
+  for (const std::string& f : kSizedFeatures) ASSERT_TRUE(leaveOut(none, f));
+  const std::vector<LibraryCase> without = parsedCases(1, 200, none);
   EXPECT_GE(without.size(), 195u);
-  EXPECT_EQ(raysQuerySkips(without), 0);
+  for (const auto& [feature, cases] : skipsByFeature(without)) EXPECT_EQ(cases, 0) << feature;
+  size_t typed = 0;
   for (const LibraryCase& l : without) {
     EXPECT_FALSE(l.plan.ray_queries) << l.c.name;
     EXPECT_FALSE(l.c.pipeline.ray_query || l.c.pipeline.ray_query_in_hit) << l.c.name;
+    typed += contentFeatures(l.c).count("sized-values");
   }
+  EXPECT_GE(typed, 20u);
+}
+
+// One sized type's feature left out, the others' types are still drawn.
+// 100 cases: about 1 s.
+TEST(FuzzWithout, OneSizedFeatureLeavesTheOthers) {
+  GeneratorFeatures no64;
+  ASSERT_TRUE(leaveOut(no64, "shaderInt64"));
+  std::map<std::string, int> skips = skipsByFeature(parsedCases(1, 100, no64));
+  EXPECT_EQ(skips["shaderInt64"], 0);
+  for (const char* f : {"shaderInt8", "shaderInt16", "shaderFloat16", "shaderFloat64"})
+    EXPECT_GE(skips[f], 4) << f;
 }
 
 TEST(FuzzWithout, SameSeedSameCase) {

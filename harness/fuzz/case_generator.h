@@ -8,6 +8,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "case/case.h"
@@ -19,7 +20,8 @@ namespace rayspec {
 
 class CaseGenerator {
  public:
-  CaseGenerator(uint64_t seed, const GeneratorFeatures& allowed) : rng_(seed), allowed_(allowed) {}
+  CaseGenerator(uint64_t seed, const GeneratorFeatures& allowed)
+      : rng_(seed), typed_rng_(seed ^ kTypedStream), allowed_(allowed) {}
 
   // The parts, in the order of the file.
   void scene();
@@ -102,6 +104,12 @@ class CaseGenerator {
   };
 
   SeededRandom rng_;
+  // The stream typed live state is drawn from (generate_typed_state.cpp:
+  // swapStreams while it draws), so that its draws leave rng_'s sequence as
+  // it was: a case without typed state is the case of the generator before it.
+  static constexpr uint64_t kTypedStream = 0x5DEECE66DA3B6F1Full;
+  SeededRandom typed_rng_;
+  void swapStreams() { std::swap(rng_, typed_rng_); }
   GeneratorFeatures allowed_;  // the device features drawn (--without leaves some out)
   std::string out_;
   std::set<std::string> features_;

@@ -66,6 +66,27 @@ bool missBesideEmptyGroup(const Pipeline& p) {
   return empty && reads;
 }
 
+// What the programs compute with: a value of a sized type, a struct local.
+void typedState(const Pipeline& p, std::set<std::string>& out) {
+  const auto program = [&](const Program& prog) {
+    walkStatements(prog, [&](const Stmt& s) {
+      if (s.kind == Stmt::Kind::Struct) out.insert("struct-local");
+      for (const auto& [member, type] : s.params)
+        if (isSized(type)) out.insert("sized-values");
+      if (s.kind == Stmt::Kind::Array && isSized(s.local_type)) out.insert("sized-values");
+    });
+    walkExpressions(prog, [&](const Expr& e) {
+      if (isSized(e.type)) out.insert("sized-values");
+    });
+  };
+  program(p.raygen);
+  for (const Program& m : p.miss) program(m);
+  for (const HitGroup& h : p.hit_groups)
+    for (const std::optional<Program>* s : {&h.closest_hit, &h.any_hit, &h.intersection})
+      if (*s) program(**s);
+  for (const Program& k : p.callables) program(k);
+}
+
 }  // namespace
 
 const std::vector<std::string>& contentFeatureNames() {
@@ -74,7 +95,9 @@ const std::vector<std::string>& contentFeatureNames() {
                                                   "inactive-instance",
                                                   "first-vertex",
                                                   "hit-builtin-after-trace",
-                                                  "miss-world-ray-beside-empty-group"};
+                                                  "miss-world-ray-beside-empty-group",
+                                                  "sized-values",
+                                                  "struct-local"};
   return kNames;
 }
 
@@ -92,6 +115,7 @@ std::set<std::string> contentFeatures(const Case& c) {
     if (h.closest_hit && readsHitBuiltinAfterTrace(*h.closest_hit))
       out.insert("hit-builtin-after-trace");
   if (missBesideEmptyGroup(c.pipeline)) out.insert("miss-world-ray-beside-empty-group");
+  typedState(c.pipeline, out);
   return out;
 }
 

@@ -11,6 +11,11 @@
 //                            nested hit may overwrite (nestedHitBuiltin) after a trace
 //   miss-world-ray-beside-empty-group  a hit group without shaders and a miss
 //                            program that reads the world ray origin or direction
+//   sized-values             a program computes with a value of a sized type
+//                            (program/sized_types.h: int8 .. f64vec4, int32,
+//                            uvec2 .. uvec4): a local, a struct member, an
+//                            array element, a payload or callable data member
+//   struct-local             a struct local (struct: {name, members})
 // Read from the scene as built and as each update leaves it (case/inactive.h
 // says which objects are inactive).
 #pragma once

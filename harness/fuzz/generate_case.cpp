@@ -28,7 +28,9 @@ const std::vector<std::string>& generatorFeatures() {
       "local-across-call", "float-color", "float-builtin", "any-hit-accumulate",
       "any-hit-on-payload", "any-hit-function", "ray-query", "ray-query-generate",
       "ray-query-terminate", "traces-ray-query", "traces-compute", "code-after-end", "vector-math",
-      "float-bits", "call-words", "miss-world-ray-beside-empty-group"};
+      "float-bits", "call-words", "miss-world-ray-beside-empty-group",
+      // typed live state
+      "sized-values", "sized-vector", "struct-local", "sized-array", "sized-across-report"};
   return kFeatures;
 }
 

@@ -12,7 +12,9 @@
 // indices) and the stage programs (raygen, miss, closest-hit, any-hit that
 // ignores or terminates on a condition, intersection reports, callables;
 // records of built-ins and Uint expressions drawn from the vocabulary,
-// fuzz/stage_vocabulary.h; counters) are all drawn from the seed. The case
+// fuzz/stage_vocabulary.h; counters; in some cases typed live state: locals,
+// a struct and an array of the sized types across the traces, calls and
+// reports) are all drawn from the seed. The case
 // is judged by the rules of any case: a case the checks refuse (undefined
 // behaviour, results that depend on what no device must keep) is refused,
 // not a finding.

@@ -176,14 +176,19 @@ std::string ProgramGenerator::controlFlow(Stage stage) {
   return s + ", {record: {" + freeField() + ": " + var + "}}";
 }
 
-// A value read before `across` (traces, calls) and recorded after it: every
-// local a stage holds is the same after them (R-LIVE-STATE).
+// A value read before `across` (traces, calls) and recorded after it, now
+// and then with typed state beside it: every local a stage holds is the same
+// after them (R-LIVE-STATE).
 std::string ProgramGenerator::liveLocal(Stage stage, const std::string& across) {
   if (across.empty()) return "";
   feature("local-across-call");
   const std::string v = local();
-  return "{let: {" + v + ": " + g_.uintExpr(stage, 2) + "}}, " + across + ", {record: {" +
-         freeField() + ": {add: [var." + v + ", 1]}}}";
+  std::string s = "{let: {" + v + ": " + g_.uintExpr(stage, 2) + "}}, ";
+  const TypedState typed = typedState(stage);
+  if (!typed.before.empty()) s += typed.before + ", ";
+  s += across + ", {record: {" + freeField() + ": {add: [var." + v + ", 1]}}}";
+  if (!typed.fold.empty()) s += ", {record: {" + freeField() + ": " + typed.fold + "}}";
+  return s;
 }
 
 // Whether an any-hit ignores or terminates: on a condition, a switch, or in

@@ -87,7 +87,8 @@ std::string ProgramGenerator::closestHitProgram(bool aabbs) {
   };
   std::string fields = "hit";
   for (const std::string& f : kFields)
-    if (g_.chance(0.6) || identity(f)) {
+    // The kind an intersection program reports of its typed state, always.
+    if (g_.chance(0.6) || identity(f) || (f == "hit_kind" && typed_kind_)) {
       fields += ", " + f;
       g_.fields_.insert(f);
     }
@@ -169,6 +170,7 @@ std::string ProgramGenerator::intersectionProgram() {
     feature("two-reports");
     crossing.push_back(report());
   }
+  typedReports(crossing);
   return program(
       {"{count: isect}",
        "{if: {and: [sphere_hit, {ge: [sphere_far, ray_tmin]}]}, then: " + program(crossing) + "}"});
@@ -195,6 +197,7 @@ std::string ProgramGenerator::hitGroups() {
   std::string out = "  hit_groups:\n";
   for (size_t i = 0; i < g_.hit_groups_; ++i) {
     const bool aabbs = g_.group_aabbs_[i];
+    typed_kind_ = false;
     std::string group;
     const auto add = [&](const std::string& key, const std::string& program) {
       group += (group.empty() ? "" : ", ") + key + ": " + program;

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "run/library_support.h"
+#include "vulkan/case_support.h"
 
 namespace rayspec {
 namespace {
@@ -14,7 +15,13 @@ struct Leavable {
   bool DeviceInfo::*device;
   bool GeneratorFeatures::*generator;
 };
-constexpr Leavable kLeavable[] = {{&DeviceInfo::ray_query, &GeneratorFeatures::ray_query}};
+constexpr Leavable kLeavable[] = {
+    {&DeviceInfo::ray_query, &GeneratorFeatures::ray_query},
+    {&DeviceInfo::shader_int8, &GeneratorFeatures::shader_int8},
+    {&DeviceInfo::shader_int16, &GeneratorFeatures::shader_int16},
+    {&DeviceInfo::shader_int64, &GeneratorFeatures::shader_int64},
+    {&DeviceInfo::shader_float16, &GeneratorFeatures::shader_float16},
+    {&DeviceInfo::shader_float64, &GeneratorFeatures::shader_float64}};
 
 // The leavable features by their rows' labels, in the rows' order.
 std::vector<std::pair<std::string, bool GeneratorFeatures::*>> leavable() {
@@ -42,6 +49,13 @@ Result<void> leaveOut(GeneratorFeatures& features, const std::string& name) {
   return errorMessage("unknown feature '" + name + "': the generator leaves out only " +
                       leavableFeatureNames() +
                       " (as `rayspec devices` names the features a device lacks)");
+}
+
+bool allowsType(const GeneratorFeatures& features, ValueType t) {
+  const bool DeviceInfo::*device = sizedTypeFeature(t);
+  for (const Leavable& l : kLeavable)
+    if (device && l.device == device) return features.*l.generator;
+  return true;
 }
 
 std::string leftOutText(const GeneratorFeatures& features) {

@@ -9,7 +9,9 @@
 // programs that accumulate (commutative, so legal under duplicates and any
 // order) and ignore or terminate on a condition, ray queries with
 // confirm/generate/terminate and committed reads, and the traces inlined as
-// ray queries (from raygen or a compute shader).
+// ray queries (from raygen or a compute shader), and now and then typed live
+// state (locals, a struct and an array of the sized types, across the traces,
+// calls and reports: generate_typed_state.cpp).
 #pragma once
 
 #include <string>
@@ -49,6 +51,18 @@ class ProgramGenerator {
   std::string controlFlow(Stage stage);
   std::string liveLocal(Stage stage, const std::string& across);
   std::string anyHitDecision(bool aabbs);
+
+  // Typed live state (generate_typed_state.cpp), drawn from a stream of its
+  // own (CaseGenerator::swapStreams): `before` declares and sets it, `fold`
+  // reads all of it back as one Uint; both empty where none is drawn.
+  struct TypedState {
+    std::string before, fold;
+  };
+  TypedState typedState(Stage stage);
+  std::vector<ValueType> typedTypes() const;
+  // The intersection program's reports (`crossing`) with typed state set
+  // before them and a last report whose hit kind folds it.
+  void typedReports(std::vector<std::string>& crossing);
   // The statement right after a nested trace (its payload folded in), up to
   // the local's name.
   static constexpr const char* kAfterNestedTrace = "{payload: {value: {add: [child.value, var.";
@@ -76,6 +90,7 @@ class ProgramGenerator {
   bool uses_fold_ = false, uses_decide_ = false;  // the functions invoked
   bool accumulates_ = false;                      // any-hit counts in payload.word0
   bool colors_ = false;                           // a program writes payload.color
+  bool typed_kind_ = false;  // the hit group's intersection reports a kind of typed state
 };
 
 }  // namespace rayspec

@@ -126,18 +126,12 @@ Result<void> checkDeferred(const DeviceInfo& d, uint32_t validation_layer) {
 // (program/sized_types.h's feature column names it; int32 needs none).
 Result<void> checkSizedTypes(const DeviceInfo& d, const Plan& plan) {
   for (ValueType t : enumValues<ValueType>()) {
-    const SizedType* s = sizedType(t);
-    if (!s || !isSizedScalar(t) || !plan.usesSized(t) || !*s->feature) continue;
-    const bool integer = s->kind != SizedKind::Floating;
-    const bool has = integer ? (s->bits == 8    ? d.shader_int8
-                                : s->bits == 16 ? d.shader_int16
-                                                : d.shader_int64)
-                             : (s->bits == 16 ? d.shader_float16 : d.shader_float64);
-    if (!has)
-      return notSupported(
-          std::string(valueTypeSpelling(t)) +
-          " values (locals, payload, callable data or hit attribute members): the device lacks " +
-          s->feature);
+    const bool DeviceInfo::*feature = sizedTypeFeature(t);
+    if (!feature || !isSizedScalar(t) || !plan.usesSized(t) || d.*feature) continue;
+    return notSupported(std::string(valueTypeSpelling(t)) +
+                        " values (locals, payload, callable data or hit attribute members): the "
+                        "device lacks " +
+                        sizedType(t)->feature);
   }
   return {};
 }
@@ -167,6 +161,16 @@ Result<void> checkPipelineObjects(const DeviceInfo& d, uint32_t validation_layer
 }
 
 }  // namespace
+
+bool DeviceInfo::*sizedTypeFeature(ValueType t) {
+  const SizedType* s = sizedType(t);
+  if (!s || !*s->feature) return nullptr;
+  if (s->kind == SizedKind::Floating)
+    return s->bits == 16 ? &DeviceInfo::shader_float16 : &DeviceInfo::shader_float64;
+  return s->bits == 8    ? &DeviceInfo::shader_int8
+         : s->bits == 16 ? &DeviceInfo::shader_int16
+                         : &DeviceInfo::shader_int64;
+}
 
 bool validationLayerKnows(uint32_t validation_layer, uint32_t since) {
   return validation_layer == 0 || validation_layer >= since;

@@ -22,6 +22,12 @@ namespace rayspec {
 Result<void> checkCaseSupport(const DeviceInfo& d, uint32_t validation_layer, const Case& c,
                               const Plan& plan);
 
+// The device feature a sized type's values need (int8 .. f64vec4: shaderInt8,
+// shaderInt16, shaderInt64, shaderFloat16, shaderFloat64, as the feature
+// column of program/sized_types.h names it; a vector's is its component's),
+// or null for one that needs none (int32, uint's vectors) and every other type.
+bool DeviceInfo::*sizedTypeFeature(ValueType t);
+
 // Whether a feature of the Vulkan header version `since` may be enabled under
 // that layer: no layer is on (0), or it knows the feature.
 bool validationLayerKnows(uint32_t validation_layer, uint32_t since);
