@@ -19,6 +19,7 @@ namespace {
 
 using model_test::ambiguityOf;
 using model_test::diagonalSquareBlas;
+using model_test::kTriangleHitAndMiss;
 using model_test::parseInline;
 
 // Two non-opaque triangles share the diagonal x = y of a square at z = 0; a
@@ -438,19 +439,8 @@ TEST(LegalDevices, NoLegalDeviceFallsBelowTheCounterFloors) {
 // the 48 s `rayspec mutate` took on a launch of 2^23 ids); a scene of
 // several keys keeps them all.
 TEST(LegalDevices, OnlyScenesOfSeveralCandidatesGetOtherOrders) {
-  const Case one = parseInline(R"(rules: [R-BUILTIN]
-description: one triangle
-scene:
-  blas:
-    one:
-      - triangles:
-          vertices: [[-1, -1, 0], [2, -1, 0], [-1, 2, 0]]
-        flags: []
-  instances: [{blas: one}]
-rays:
-  list:
-    - {origin: [0.1, 0.1, 5], direction: [0, 0, -1]}
-  tmin: 0.001
+  const Case one = parseInline(std::string("rules: [R-BUILTIN]\ndescription: one triangle\n") +
+                               kTriangleHitAndMiss + R"(  tmin: 0.001
   tmax: 100
 pipeline:
   miss:
