@@ -10,6 +10,8 @@
 #       OUT/device   the run inside (lavapipe of the environment, --strict-validation: its layers)
 #       OUT/spirv-val.txt  every SPIR-V module that run compiled, checked by the environment's spirv-val
 #       OUT/judged   that run judged here against FILE (default references/baselines/lavapipe-26.csv)
+#       PACK_CASES=DIR before it: DIR's cases run inside and are judged here (rayspec fuzz
+#       --generate-only's OUT/cases), instead of the library's
 #   tools/second-driver.sh compare RUN_A RUN_B    # rayspec compare of two judged or saved runs
 #   tools/second-driver.sh limits [BASELINE]  # the environment's lavapipe: rayspec devices --check-limits
 #       judged against BASELINE (default references/baselines/lavapipe-26-limits.csv)
@@ -152,7 +154,11 @@ run() {
   unmount_inside
   echo "== judged here against $baseline"
   local judged=0
-  ./build/rayspec run --device-results "$out/device" --out "$out/judged" --baseline "$baseline" "${args[@]}" || judged=$?
+  # PACK_CASES=DIR (tools/pack-device.sh) ran DIR's cases inside: judge those.
+  local cases=()
+  [[ -n ${PACK_CASES:-} ]] && cases=(--cases "$PACK_CASES")
+  ./build/rayspec run --device-results "$out/device" --out "$out/judged" --baseline "$baseline" \
+    "${cases[@]}" "${args[@]}" || judged=$?
   [[ $spirv_ok -eq 0 ]] || { echo "second-driver: spirv-val rejected modules: $out/spirv-val.txt"; exit 1; }
   exit "$judged"
 }
